@@ -1,0 +1,73 @@
+"""The error hierarchy: every problem a user can cause is one of these.
+
+Each class is also a builtin exception, so callers that know nothing of
+graphplan can still catch ``ValueError`` or ``ArithmeticError``.  Messages are
+built from structured fields and use the user's own names: the key path of
+the scene, the joint, the position.
+"""
+
+from __future__ import annotations
+
+
+class GraphplanError(Exception):
+    """Base of every error graphplan raises on purpose."""
+
+
+class SceneError(GraphplanError, ValueError):
+    """A scene file that cannot be read or does not describe a mechanism.
+
+    Parameters
+    ----------
+    where
+        The key path, such as ``groups[0].lengths[1]``; empty for the file itself.
+    problem
+        What is wrong, in words, for instance ``must be > 0``.
+    value
+        The offending value, shown after the problem when given.
+    """
+
+    _NO_VALUE = object()
+
+    def __init__(self, where: str, problem: str, value: object = _NO_VALUE) -> None:
+        self.where = where
+        self.problem = problem
+        self.value = value
+        message = f"{where}: {problem}" if where else problem
+        if value is not SceneError._NO_VALUE:
+            message += f" (got {value!r})"
+        super().__init__(message)
+
+
+class AssemblyError(GraphplanError, ValueError):
+    """A position the mechanism cannot reach.
+
+    ``position`` says where (``φ = 212°``, or ``position 7 (φ = 212°)``),
+    ``group`` names the group (``II(3,4)``), ``joint`` the joint that cannot be
+    placed, and ``reason`` the arithmetic that shows why.
+    """
+
+    def __init__(self, joint: str, position: str, group: str, reason: str) -> None:
+        self.joint = joint
+        self.position = position
+        self.group = group
+        self.reason = reason
+        super().__init__(f"{joint} cannot be assembled at {position} in group {group}: {reason}")
+
+
+class SingularPositionError(GraphplanError, ArithmeticError):
+    """A position where velocities are not determined by the driver's motion.
+
+    At such a position (a toggle: the two lines of action of a group are
+    parallel) the velocity equations have no unique solution; graphplan reports
+    it instead of guessing.
+    """
+
+    def __init__(self, position: str, group: str, reason: str) -> None:
+        self.position = position
+        self.group = group
+        self.reason = reason
+        super().__init__(f"singular position at {position} in group {group}: {reason}")
+
+
+class OutputError(GraphplanError, OSError):
+    """The output folder could not be written."""

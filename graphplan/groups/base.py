@@ -1,0 +1,194 @@
+"""What every group kind shares: guides, the solving context, the group record.
+
+A group kind is one module holding one :class:`Group` subclass that reads
+its own keys from the scene, names the joints it needs and the joints it
+finds, and solves its position, velocity and acceleration over all positions
+at once.  The registry in ``groups/__init__.py`` maps ``kind`` to the class.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable, ClassVar, Protocol
+
+import numpy as np
+
+from ..errors import AssemblyError, SceneError, SingularPositionError
+from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
+from ..reader import Table, check_number, check_str, check_xy
+
+# Below this sine of the angle between two lines of action a position is
+# treated as exactly singular: the velocities are not determined by the
+# driver any more, and a number would be a guess.
+SINGULAR_SINE = 1e-12
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A straight line along which a slider moves.
+
+    ``link`` carries the line (the frame's number for a fixed guide);
+    ``through`` is a named point of that link or fixed coordinates on the
+    frame; ``angle`` is in radians, measured from the carrying link's
+    reference line (from +x on the frame).  ``line`` names a frame line of
+    ``[frame] lines`` instead, resolved when the mechanism is built.
+    """
+
+    where: str
+    link: int | None = None
+    through: str | tuple[float, float] | None = None
+    angle: float = 0.0
+    line: str | None = None
+
+    @property
+    def on_frame(self) -> bool:
+        return self.link is None
+
+
+def read_guide(value: object, where: str) -> Guide:
+    """A guide as the scene writes it: a frame line's name or a table."""
+    if isinstance(value, str):
+        return Guide(where=where, line=check_str(value, where))
+    table = Table(value, where)
+    link = table.integer("link", None, minimum=1)
+    through_raw = table.raw("through")
+    if isinstance(through_raw, str):
+        through: str | tuple[float, float] = check_str(through_raw, table.where("through"))
+    elif link is None:
+        through = check_xy(through_raw, table.where("through"))
+    else:
+        raise SceneError(table.where("through"), "on a moving link must name a point of that link", through_raw)
+    angle = math.radians(table.number("angle", 0.0))
+    table.done()
+    return Guide(where=where, link=link, through=through, angle=angle)
+
+
+@dataclass(frozen=True)
+class GuideMotion:
+    """A guide in motion: a point of the line, its direction, its link's rotation."""
+
+    link: int
+    origin: PointMotion
+    u: Vector
+    omega: Scalar
+    epsilon: Scalar
+
+    def carried(self, r: Vector) -> tuple[Vector, Vector]:
+        """Velocity and acceleration of the guide's link at ``r``: the point under a slider."""
+        arm = r - self.origin.r
+        return (self.origin.v + 1j * self.omega * arm,
+                self.origin.a + (1j * self.epsilon - self.omega * self.omega) * arm)
+
+
+class Context(Protocol):
+    """What a group may ask while it solves: the motion found so far."""
+
+    def point(self, name: str) -> PointMotion: ...
+
+    def link(self, number: int) -> LinkMotion: ...
+
+    def guide(self, guide: Guide) -> GuideMotion: ...
+
+    def fail_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
+        """Raise ``error(i, position_text)`` for the first position where ``bad`` holds."""
+        ...
+
+
+@dataclass(frozen=True)
+class GroupMotion:
+    """What a group found: its new points, its links' motion, its sliding pairs.
+
+    ``conditioning`` is the sine of the angle between the two lines of action
+    of the group's velocity equation at every position (1 is best, 0 is a
+    toggle): the group's transmission quality and the error amplification of
+    the plan construction alike.
+    """
+
+    points: dict[str, PointMotion]
+    links: dict[int, LinkMotion]
+    slides: tuple[SlideMotion, ...] = ()
+    conditioning: Scalar = 1.0
+
+
+@dataclass(frozen=True)
+class Group:
+    """A class-II Assur group: two links, three kinematic pairs.
+
+    Subclasses set ``kind`` and ``joint_roles`` and implement :meth:`read`,
+    :meth:`solve` and the membership queries.
+    """
+
+    kind: ClassVar[str]
+    joint_roles: ClassVar[tuple[str, ...]]
+    where: str
+    links: tuple[int, int]
+    joints: tuple[str, ...]
+
+    @property
+    def label(self) -> str:
+        """The group as the structure formula writes it: ``II(3,4)``."""
+        return f"II({self.links[0]},{self.links[1]})"
+
+    # Membership, used to check the structure and to place named points.
+    def known_joints(self) -> tuple[str, ...]:
+        """Joints that must be known before this group is solved."""
+        raise NotImplementedError
+
+    def new_joints(self) -> tuple[str, ...]:
+        """Joints this group finds."""
+        raise NotImplementedError
+
+    def guides(self) -> tuple[Guide, ...]:
+        return ()
+
+    def fixed_points(self) -> dict[int, tuple[str, ...]]:
+        """For each of the group's links, the joints fixed on it."""
+        raise NotImplementedError
+
+    def sliding_points(self) -> dict[int, dict[str, complex]]:
+        """For each link carrying a slide, the sliding joint and the slide's
+        direction in the link's own frame (a unit complex)."""
+        return {}
+
+    def with_branch(self, context: Context) -> int:
+        """The branch sign fixed at the first position; 1 for kinds with one solution."""
+        return 1
+
+    def solve(self, context: Context, branch: int) -> GroupMotion:
+        raise NotImplementedError
+
+
+def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -> None:
+    """Report a position where the two lines of action are parallel."""
+    bad = np.abs(sine) < SINGULAR_SINE
+    context.fail_where(
+        np.atleast_1d(bad),
+        lambda i, at: SingularPositionError(at, group.label, f"{what} are parallel (sine {float(np.atleast_1d(sine)[i] if np.ndim(sine) else sine):.1e})"),
+    )
+
+
+def conditioning(e1: Vector, e2: Vector) -> Scalar:
+    """Sine of the angle between two lines of action with directions ``e1``, ``e2``."""
+    return cross(e1, e2) / np.sqrt((e1.real**2 + e1.imag**2) * (e2.real**2 + e2.imag**2))
+
+
+def reject(group_where: str, problem: str, value: object = SceneError._NO_VALUE) -> SceneError:
+    return SceneError(group_where, problem, value)
+
+
+def read_branch(table: Table, choices: tuple[str, ...]) -> tuple[str | None, tuple[float, float] | None]:
+    """``assembly`` or ``near``, exactly one of them."""
+    assembly = table.choice("assembly", choices, None)
+    near = table.xy("near", None)
+    if assembly is None and near is None:
+        raise SceneError(table.path, f"needs assembly ({' or '.join(choices)}) or near = [x, y] to choose the branch")
+    if assembly is not None and near is not None:
+        raise SceneError(table.path, "give assembly or near, not both")
+    return assembly, near
+
+
+def nearest_branch(candidates: dict[int, Vector], near: tuple[float, float]) -> int:
+    """The branch whose joint lies nearest ``near`` at the first position."""
+    target = complex(*near)
+    return min(candidates, key=lambda sign: abs(complex(np.atleast_1d(candidates[sign])[0]) - target))

@@ -1,0 +1,154 @@
+"""Groups of class I: the input link and its prescribed motion.
+
+``crank``: link turning about a frame pivot O, its joint A at OA·e^{iφ};
+``ω`` and ``ε`` are those of the instant analysed at every position (the
+plan method's data), so vA = ω × OA and aA = ε × OA − ω²·OA.
+
+``slider``: link translating along a frame guide, its joint at G + s·u with
+velocity ``ṡ`` and acceleration ``s̈`` along u.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import SceneError
+from ..kinematics import LinkMotion, PointMotion, SlideMotion
+from ..reader import Table
+from .base import Context, GroupMotion, Guide, read_guide
+
+
+@dataclass(frozen=True)
+class Crank:
+    kind = "crank"
+    where: str
+    link: int
+    pivot: str
+    joint: str
+    length: float
+    omega: float
+    epsilon: float
+    rpm_given: bool = False
+
+    symbol = "φ"
+    unit = "°"
+
+    @classmethod
+    def read(cls, table: Table, link: int) -> Crank:
+        pivot = table.string("pivot")
+        joint = table.string("joint")
+        length = table.number("length", positive=True)
+        if table.has("omega") and table.has("rpm"):
+            raise SceneError(table.path, "give omega or rpm, not both")
+        if table.has("rpm"):
+            omega = table.number("rpm") * math.pi / 30.0
+            table.raw("omega", None)
+        else:
+            omega = table.number("omega")
+            table.raw("rpm", None)
+        if omega == 0.0:
+            raise SceneError(table.where("rpm" if table.has("rpm") else "omega"), "must not be zero: the driver must move")
+        epsilon = table.number("epsilon", 0.0)
+        table.done()
+        return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
+                   epsilon=epsilon, rpm_given=table.has("rpm"))
+
+    def known_joints(self) -> tuple[str, ...]:
+        return (self.pivot,)
+
+    def new_joints(self) -> tuple[str, ...]:
+        return (self.joint,)
+
+    def guides(self) -> tuple[Guide, ...]:
+        return ()
+
+    def fixed_points(self) -> dict[int, tuple[str, ...]]:
+        return {self.link: (self.pivot, self.joint)}
+
+    def sliding_points(self) -> dict[int, dict[str, complex]]:
+        return {}
+
+    @property
+    def sense(self) -> float:
+        """+1 for a counter-clockwise crank, −1 for clockwise: the direction positions are counted in."""
+        return math.copysign(1.0, self.omega)
+
+    def describe(self, value: float) -> str:
+        return f"φ = {math.degrees(value) % 360.0:.6g}°"
+
+    def solve(self, context: Context, values: np.ndarray) -> GroupMotion:
+        pivot = context.point(self.pivot)
+        u = np.cos(values) + 1j * np.sin(values)
+        arm = self.length * u
+        joint = PointMotion(pivot.r + arm, 1j * self.omega * arm,
+                            (1j * self.epsilon - self.omega * self.omega) * arm)
+        return GroupMotion(points={self.joint: joint},
+                           links={self.link: LinkMotion(self.pivot, u, values, self.omega, self.epsilon)})
+
+
+@dataclass(frozen=True)
+class Slider:
+    kind = "slider"
+    where: str
+    link: int
+    joint: str
+    guide: Guide
+    velocity: float
+    acceleration: float
+    travel: tuple[float, float]
+
+    symbol = "s"
+    unit = " m"
+
+    @classmethod
+    def read(cls, table: Table, link: int) -> Slider:
+        joint = table.string("joint")
+        guide = read_guide(table.raw("guide"), table.where("guide"))
+        if not guide.on_frame:
+            raise SceneError(table.where("guide"), "a driving slider must slide on a frame guide")
+        velocity = table.number("velocity")
+        if velocity == 0.0:
+            raise SceneError(table.where("velocity"), "must not be zero: the driver must move")
+        acceleration = table.number("acceleration", 0.0)
+        travel = table.numbers("travel", 2)
+        if travel[0] == travel[1]:
+            raise SceneError(table.where("travel"), "must span a stroke: [from, to] with from ≠ to", list(travel))
+        table.done()
+        return cls(where=table.path, link=link, joint=joint, guide=guide, velocity=velocity,
+                   acceleration=acceleration, travel=travel)
+
+    def known_joints(self) -> tuple[str, ...]:
+        return ()
+
+    def new_joints(self) -> tuple[str, ...]:
+        return (self.joint,)
+
+    def guides(self) -> tuple[Guide, ...]:
+        return (self.guide,)
+
+    def fixed_points(self) -> dict[int, tuple[str, ...]]:
+        return {self.link: (self.joint,)}
+
+    def sliding_points(self) -> dict[int, dict[str, complex]]:
+        return {}
+
+    @property
+    def sense(self) -> float:
+        return math.copysign(1.0, self.velocity)
+
+    def describe(self, value: float) -> str:
+        return f"s = {value:.6g} m"
+
+    def solve(self, context: Context, values: np.ndarray) -> GroupMotion:
+        guide = context.guide(self.guide)
+        r = guide.origin.r + values * guide.u
+        joint = PointMotion(r, self.velocity * guide.u + 0.0 * values, self.acceleration * guide.u + 0.0 * values)
+        return GroupMotion(
+            points={self.joint: joint},
+            links={self.link: LinkMotion(self.joint, guide.u, np.angle(guide.u), 0.0, 0.0)},
+            slides=(SlideMotion(self.link, guide.link, self.joint, guide.u, values, self.velocity,
+                                self.acceleration),),
+        )

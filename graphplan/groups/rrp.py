@@ -1,0 +1,108 @@
+"""RRP: link a pivoted at a known A and at B to a slider (link b) moving along a guide.
+
+The guide is a line through G with direction u, on the frame or on a moving
+link g.  Closure: B = A + AB·e^{iθa} = G + s·u.  Differentiated:
+
+    vB = vA + ωa × AB = vG + ωg × GB + ṡ·u
+    aB = aA + εa × AB − ωa²·AB = aG + εg × GB − ωg²·GB + 2·ωg × ṡu + s̈·u
+
+the last line with the Coriolis term of the slider on a rotating guide.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import AssemblyError
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, cross, dot, solve_pair
+from ..reader import Table
+from .base import Context, Group, GroupMotion, Guide, check_lines_cross, nearest_branch, read_branch, read_guide
+
+# B ahead of (forward) or behind (backward) the foot of A on the guide,
+# counted along the guide's direction.
+_BRANCHES = {"forward": 1, "backward": -1}
+
+
+@dataclass(frozen=True)
+class RRP(Group):
+    kind = "RRP"
+    joint_roles = ("outer A (link a)", "inner B (slider, link b)")
+    length: float = 0.0
+    guide: Guide = Guide(where="")
+    assembly: str | None = None
+    near: tuple[float, float] | None = None
+
+    @classmethod
+    def read(cls, table: Table, links: tuple[int, int], joints: tuple[str, ...]) -> RRP:
+        length = table.number("length", positive=True)
+        guide = read_guide(table.raw("guide"), table.where("guide"))
+        assembly, near = read_branch(table, tuple(_BRANCHES))
+        table.done()
+        return cls(where=table.path, links=links, joints=joints, length=length, guide=guide,
+                   assembly=assembly, near=near)
+
+    def known_joints(self) -> tuple[str, ...]:
+        return (self.joints[0],)
+
+    def new_joints(self) -> tuple[str, ...]:
+        return (self.joints[1],)
+
+    def guides(self) -> tuple[Guide, ...]:
+        return (self.guide,)
+
+    def fixed_points(self) -> dict[int, tuple[str, ...]]:
+        a, b = self.joints
+        return {self.links[0]: (a, b), self.links[1]: (b,)}
+
+    def _candidates(self, context: Context, branch: int):
+        a = context.point(self.joints[0])
+        guide = context.guide(self.guide)
+        ga = a.r - guide.origin.r
+        foot = dot(ga, guide.u)
+        height = cross(guide.u, ga)
+        reach2 = self.length * self.length - height * height
+
+        def reason(i: int, at: str) -> AssemblyError:
+            gap = abs(float(np.atleast_1d(height)[i]))
+            a_name, b_name = self.joints
+            return AssemblyError(b_name, at, self.label,
+                                 f"{a_name} is {gap:.6g} m from the guide > {a_name}{b_name} = {self.length:.6g} m")
+
+        context.fail_where(np.atleast_1d(~(reach2 >= 0)), reason)
+        s = foot + branch * np.sqrt(reach2)
+        return a, guide, s, guide.origin.r + s * guide.u
+
+    def with_branch(self, context: Context) -> int:
+        if self.assembly is not None:
+            return _BRANCHES[self.assembly]
+        assert self.near is not None
+        return nearest_branch({s: self._candidates(context, s)[3] for s in (1, -1)}, self.near)
+
+    def solve(self, context: Context, branch: int) -> GroupMotion:
+        a, guide, s, b_r = self._candidates(context, branch)
+        ab_vec = b_r - a.r
+        e1, e2 = 1j * ab_vec, -guide.u
+        det = cross(e1, e2)
+        sine = det / self.length
+        check_lines_cross(context, self, sine, f"link {self.links[0]} and the guide")
+        omega_g, epsilon_g = guide.omega, guide.epsilon
+        guide_point_v, guide_point_a = guide.carried(b_r)
+        omega_a, s_dot = solve_pair(e1, e2, guide_point_v - a.v, det)
+        coriolis = 2j * omega_g * s_dot * guide.u
+        w = guide_point_a + coriolis - a.a + omega_a * omega_a * ab_vec
+        epsilon_a, s_ddot = solve_pair(e1, e2, w, det)
+        b_v = a.v + omega_a * e1
+        b_a = a.a + (1j * epsilon_a - omega_a * omega_a) * ab_vec
+        a_name, b_name = self.joints
+        u_a = ab_vec / self.length
+        return GroupMotion(
+            points={b_name: PointMotion(b_r, b_v, b_a)},
+            links={
+                self.links[0]: LinkMotion(a_name, u_a, np.angle(u_a), omega_a, epsilon_a),
+                self.links[1]: LinkMotion(b_name, guide.u, np.angle(guide.u), omega_g, epsilon_g),
+            },
+            slides=(SlideMotion(self.links[1], guide.link, b_name, guide.u, s, s_dot, s_ddot),),
+            conditioning=sine,
+        )

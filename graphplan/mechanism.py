@@ -1,0 +1,256 @@
+"""The mechanism: frame, driver and groups in structure order, with every name checked.
+
+:func:`build` turns a :class:`~graphplan.scene.Scene` into a
+:class:`Mechanism` after checking that the names refer to each other: every
+joint a group needs is known by then, every link of a group is new, every
+guide, point, centre and load names something that exists.  The mechanism
+also knows, for every link, which points are fixed on it and which slide on
+it, which the placement of named points needs.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Mapping
+
+from .errors import SceneError
+from .groups import Driver, Group, Guide
+from .scene import PointSpec, Scene
+
+_ROMAN = {1: "I", 2: "II", 3: "III"}
+
+
+@dataclass(frozen=True)
+class Unit:
+    """One step of the solution order: the driver, a group, or named points placed after it."""
+
+    solver: Driver | Group
+    points: tuple[PointSpec, ...]
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A checked mechanism, ready to be solved."""
+
+    scene: Scene
+    units: tuple[Unit, ...]
+    fixed_on: Mapping[int, frozenset[str]]
+    sliding_on: Mapping[int, Mapping[str, complex]]
+    translating: frozenset[int]
+
+    @property
+    def driver(self) -> Driver:
+        return self.units[0].solver  # type: ignore[return-value]
+
+    @property
+    def groups(self) -> tuple[Group, ...]:
+        return tuple(unit.solver for unit in self.units[1:])  # type: ignore[misc]
+
+    @property
+    def moving_links(self) -> tuple[int, ...]:
+        numbers = [self.driver.link]
+        for group in self.groups:
+            numbers.extend(group.links)
+        return tuple(numbers)
+
+    @property
+    def degrees_of_freedom(self) -> tuple[int, int, int]:
+        """Chebyshev's formula W = 3n − 2p5 − p4 as (n, p5, W): every pair here is a lower pair."""
+        moving = len(self.moving_links)
+        lower_pairs = 1 + 3 * len(self.groups)
+        return moving, lower_pairs, 3 * moving - 2 * lower_pairs
+
+    @property
+    def structure(self) -> str:
+        """The structure formula, ``I(1,2) → II2(3,4)``: class, order, links of each group."""
+        parts = [f"I({self.scene.frame_link},{self.driver.link})"]
+        parts += [f"{_ROMAN[2]}2({group.links[0]},{group.links[1]})" for group in self.groups]
+        return " → ".join(parts)
+
+    def point_names(self) -> tuple[str, ...]:
+        """Every point with a motion, in solution order: frame points first."""
+        names = list(self.scene.frame_points)
+        for unit in self.units:
+            names.extend(unit.solver.new_joints())
+            names.extend(spec.name for spec in unit.points)
+        return tuple(names)
+
+
+def build(scene: Scene) -> Mechanism:
+    """Check the names of ``scene`` against each other and order the solution."""
+    frame = scene.frame_link
+    known_points = set(scene.frame_points)
+    known_links = {frame}
+    fixed_on: dict[int, set[str]] = {frame: set(scene.frame_points)}
+    sliding_on: dict[int, dict[str, complex]] = {}
+    pending = list(scene.points)
+    _check_point_names(scene)
+    units = []
+    solvers: list[Driver | Group] = [scene.driver, *scene.groups]
+    for index, solver in enumerate(solvers):
+        where = solver.where
+        links = (solver.link,) if index == 0 else solver.links  # type: ignore[union-attr]
+        for number in links:
+            if number in known_links:
+                raise SceneError(f"{where}.link" if index == 0 else f"{where}.links",
+                                 f"link {number} already belongs to {'the frame' if number == frame else 'an earlier group'}; a group's links are new")
+        for position, name in enumerate(solver.known_joints()):
+            if name not in known_points:
+                raise SceneError(_joint_where(solver, name, index), _unknown_point(name, known_points))
+        if index == 0 and scene.driver.kind == "crank" and scene.driver.pivot not in scene.frame_points:
+            raise SceneError(f"{where}.pivot", f"must be a point of [frame] points: {_known(scene.frame_points)}",
+                             scene.driver.pivot)
+        for guide in solver.guides():
+            _check_guide(scene, guide, known_links, fixed_on)
+        for name in solver.new_joints():
+            if name in known_points:
+                raise SceneError(_joint_where(solver, name, index), f"{name!r} is already a known point; a group's inner joint is new")
+            known_points.add(name)
+        known_links.update(links)
+        for number, names in solver.fixed_points().items():
+            fixed_on.setdefault(number, set()).update(names)
+        for number, slides in solver.sliding_points().items():
+            sliding_on.setdefault(number, {}).update(slides)
+        placed, pending = _place_points(pending, known_links, fixed_on, sliding_on, known_points)
+        units.append(Unit(solver, placed))
+    if pending:
+        spec = pending[0]
+        if spec.link not in known_links:
+            raise SceneError(f"{spec.where}.link", f"no link {spec.link} in the mechanism; links are {_known(sorted(known_links))}", spec.link)
+        problem = _point_reference_problem(spec, fixed_on, sliding_on, {p.name for p in pending})
+        raise SceneError(spec.where, problem)
+    mechanism = Mechanism(
+        scene=scene,
+        units=tuple(units),
+        fixed_on=MappingProxyType({k: frozenset(v) for k, v in fixed_on.items()}),
+        sliding_on=MappingProxyType({k: MappingProxyType(v) for k, v in sliding_on.items()}),
+        translating=frozenset(_translating_links(scene, solvers)),
+    )
+    _check_references(mechanism, known_points, known_links)
+    return mechanism
+
+
+def _joint_where(solver: Driver | Group, name: str, index: int) -> str:
+    if index == 0:
+        driver = solver
+        return f"{driver.where}.{'pivot' if getattr(driver, 'pivot', None) == name else 'joint'}"
+    return f"{solver.where}.joints[{solver.joints.index(name)}]" if name in solver.joints else f"{solver.where}.joints"  # type: ignore[union-attr]
+
+
+def _known(names) -> str:
+    names = list(names)
+    return ", ".join(str(n) for n in names) if names else "none"
+
+
+def _unknown_point(name: str, known: set[str]) -> str:
+    import difflib
+    close = difflib.get_close_matches(name, sorted(known), n=1, cutoff=0.5)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    return (f"{name!r} is not known at this stage: it must be a frame point, a joint of the driver or "
+            f"of an earlier group, or a named point of a link already found{hint}")
+
+
+def _check_point_names(scene: Scene) -> None:
+    joints = set(scene.frame_points)
+    for solver in (scene.driver, *scene.groups):
+        joints.update(solver.new_joints())
+    for spec in scene.points:
+        if spec.name in joints:
+            raise SceneError(spec.where, f"{spec.name!r} is already a joint's name")
+
+
+def _check_guide(scene: Scene, guide: Guide, known_links: set[int], fixed_on: dict[int, set[str]]) -> None:
+    if guide.line is not None:
+        if guide.line not in scene.frame_lines:
+            raise SceneError(guide.where, f"no frame line {guide.line!r}; [frame] lines has {_known(scene.frame_lines)}")
+        return
+    link = scene.frame_link if guide.link is None else guide.link
+    if link not in known_links:
+        raise SceneError(f"{guide.where}.link", f"link {link} is not known before this group", link)
+    if isinstance(guide.through, str) and guide.through not in fixed_on.get(link, ()):
+        raise SceneError(f"{guide.where}.through", f"must be a point fixed on link {link}: {_known(sorted(fixed_on.get(link, ())))}",
+                         guide.through)
+
+
+def _place_points(pending, known_links, fixed_on, sliding_on, known_points):
+    """Named points that can be placed now, in an order where each one's references come first."""
+    placed = []
+    progress = True
+    while progress:
+        progress = False
+        for spec in list(pending):
+            on_link = fixed_on.get(spec.link, set())
+            toward_ok = spec.toward in on_link or spec.toward in sliding_on.get(spec.link, {})
+            if spec.link in known_links and spec.start in on_link and toward_ok and spec.start != spec.toward:
+                placed.append(spec)
+                pending.remove(spec)
+                on_link.add(spec.name)
+                known_points.add(spec.name)
+                progress = True
+    return tuple(placed), pending
+
+
+def _point_reference_problem(spec: PointSpec, fixed_on, sliding_on, pending_names: set[str]) -> str:
+    on_link = fixed_on.get(spec.link, set())
+    if spec.start == spec.toward:
+        return f"from and toward are both {spec.start!r}; they must be two points of link {spec.link}"
+    for key, name in (("from", spec.start), ("toward", spec.toward)):
+        if name in on_link or (key == "toward" and name in sliding_on.get(spec.link, {})):
+            continue
+        if name in pending_names:
+            return f"{key} = {name!r} refers back to itself through other named points (a cyclic reference)"
+        return f"{key} = {name!r} is not a point of link {spec.link}; its points are {_known(sorted(on_link))}"
+    return "cannot be placed"
+
+
+def on_frame(scene: Scene, guide: Guide) -> bool:
+    return guide.link is None or guide.link == scene.frame_link
+
+
+def _translating_links(scene: Scene, solvers) -> set[int]:
+    """Links whose motion is a translation along a frame guide (their working sense is forward/backward)."""
+    links = set()
+    if scene.driver.kind == "slider":
+        links.add(scene.driver.link)
+    for group in scene.groups:
+        if group.kind == "RRP" and on_frame(scene, group.guide):
+            links.add(group.links[1])
+        if group.kind == "RPP" and on_frame(scene, group.guide):
+            links.update(group.links)
+        if group.kind == "PRP":
+            for guide, link in zip(group.guide_pair, group.links):
+                if on_frame(scene, guide):
+                    links.add(link)
+    return links
+
+
+def _check_references(mechanism: Mechanism, known_points: set[str], known_links: set[int]) -> None:
+    scene = mechanism.scene
+    for number, spec in scene.links.items():
+        if number not in known_links:
+            raise SceneError(spec.where, f"no link {number} in the mechanism; links are {_known(sorted(known_links))}")
+        if spec.centre is not None and spec.centre not in mechanism.fixed_on.get(number, ()):
+            raise SceneError(f"{spec.where}.centre", f"must be a point fixed on link {number}: {_known(sorted(mechanism.fixed_on.get(number, ())))}",
+                             spec.centre)
+    for load in scene.loads:
+        if load.link not in known_links:
+            raise SceneError(f"{load.where}.link", f"no link {load.link} in the mechanism", load.link)
+        if load.point is not None and load.point not in mechanism.fixed_on.get(load.link, ()):
+            raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point)
+    working = scene.positions.working
+    if working is not None:
+        if working.link not in known_links or working.link == scene.frame_link:
+            raise SceneError(f"{working.where}.link", f"must be a moving link of the mechanism: {_known(mechanism.moving_links)}", working.link)
+        translates = working.link in mechanism.translating
+        if translates and working.sense in ("ccw", "cw"):
+            raise SceneError(f"{working.where}.sense", f"link {working.link} translates: use forward or backward (along its guide)", working.sense)
+        if not translates and working.sense in ("forward", "backward"):
+            raise SceneError(f"{working.where}.sense", f"link {working.link} turns: use ccw or cw", working.sense)
+    first = scene.positions.number_from
+    last = first + scene.positions.count - 1
+    for number in scene.measured:
+        if number not in scene.positions.plans:
+            raise SceneError(f"measured.{number}", f"position {number} is not in positions.plans {list(scene.positions.plans)}")
+        if not first <= number <= last:
+            raise SceneError(f"measured.{number}", f"no position {number}; positions are {first}..{last}")

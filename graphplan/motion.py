@@ -1,0 +1,233 @@
+"""The exact analytic solution over all positions at once.
+
+:func:`solve` runs the driver, then every group in structure order, each one
+a closed-form position solution and two linear solves (velocities,
+accelerations) vectorised over the positions; named points are placed on
+their links as soon as those are known.  Assembly branches are chosen once,
+at the first position (:func:`choose_branches`), and kept: the branch of a
+group only changes where the group passes a toggle, which raises an error or
+a warning, never silently.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable, Mapping, Sequence
+
+import numpy as np
+
+from .errors import SceneError
+from .groups.base import Guide, GuideMotion
+from .kinematics import LinkMotion, PointMotion, SlideMotion, as_xy, point_on_link, unit
+from .mechanism import Mechanism, on_frame
+from .scene import PointSpec
+
+# A group whose lines of action cross at less than this angle (degrees) has
+# a transmission angle near 0° or 180°: it is solved, and it is warned of.
+ILL_CONDITIONED_DEG = 1.0
+
+_STILL = 0j
+
+
+@dataclass(frozen=True)
+class Warning:
+    """Something the user should know about one position (``position`` is its array index)."""
+
+    position: int
+    code: str
+    detail: str
+
+
+@dataclass(frozen=True)
+class PointArrays:
+    """A point's r, v, a as ``(N, 2)`` arrays, SI."""
+
+    r: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+
+
+@dataclass(frozen=True)
+class LinkArrays:
+    """A link's angle (rad), ω (rad/s), ε (rad/s²) as ``(N,)`` arrays, counter-clockwise positive."""
+
+    angle: np.ndarray
+    omega: np.ndarray
+    epsilon: np.ndarray
+
+
+@dataclass(frozen=True)
+class Motion:
+    """The analytic motion of every point, link and sliding pair at every position.
+
+    ``driver`` holds the driver's coordinate (crank angle in rad, or slider
+    displacement in m) at each position.  Vectors are complex internally;
+    :meth:`point` hands them out as ``(N, 2)`` float arrays.
+    """
+
+    mechanism: Mechanism
+    driver: np.ndarray
+    points: Mapping[str, PointMotion]
+    links: Mapping[int, LinkMotion]
+    slides: tuple[SlideMotion, ...]
+    conditioning: Mapping[str, np.ndarray]
+    warnings: tuple[Warning, ...]
+
+    @property
+    def count(self) -> int:
+        return len(self.driver)
+
+    def point(self, name: str) -> PointArrays:
+        if name not in self.points:
+            raise KeyError(f"no point {name!r}; points are {', '.join(self.points)}")
+        motion = self.points[name]
+        return PointArrays(*(as_xy(value, self.count) for value in (motion.r, motion.v, motion.a)))
+
+    def link(self, number: int) -> LinkArrays:
+        if number not in self.links:
+            raise KeyError(f"no link {number}; links are {', '.join(map(str, self.links))}")
+        motion = self.links[number]
+        shape = (self.count,)
+        return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
+                            for value in (motion.angle, motion.omega, motion.epsilon)))
+
+    def slide(self, slider: int) -> SlideMotion:
+        """The sliding pair in which link ``slider`` slides."""
+        for slide in self.slides:
+            if slide.slider == slider:
+                return slide
+        raise KeyError(f"link {slider} slides in no pair")
+
+
+class _Context:
+    """The motion found so far, as the groups ask for it while they solve."""
+
+    def __init__(self, mechanism: Mechanism, values: np.ndarray, describe: Callable[[int], str]) -> None:
+        scene = mechanism.scene
+        self._scene = scene
+        self._describe = describe
+        self.points: dict[str, PointMotion] = {
+            name: PointMotion(r, _STILL, _STILL) for name, r in scene.frame_points.items()
+        }
+        self.links: dict[int, LinkMotion] = {scene.frame_link: LinkMotion("", 1 + 0j, 0.0, 0.0, 0.0)}
+        self.values = values
+
+    def point(self, name: str) -> PointMotion:
+        return self.points[name]
+
+    def link(self, number: int) -> LinkMotion:
+        return self.links[number]
+
+    def guide(self, guide: Guide) -> GuideMotion:
+        if guide.line is not None:
+            guide = self._scene.frame_lines[guide.line]
+        if on_frame(self._scene, guide):
+            origin = self.points[guide.through] if isinstance(guide.through, str) else PointMotion(complex(*guide.through), _STILL, _STILL)
+            return GuideMotion(self._scene.frame_link, origin, unit(guide.angle), 0.0, 0.0)
+        assert guide.link is not None and isinstance(guide.through, str)
+        link = self.links[guide.link]
+        return GuideMotion(guide.link, self.points[guide.through], link.u * unit(guide.angle), link.omega, link.epsilon)
+
+    def fail_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
+        if bad.any():
+            index = int(np.argmax(bad))
+            raise error(index, self._describe(index))
+
+
+def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, branches: Sequence[int] | None = None,
+          numbers: Sequence[int] | None = None) -> Motion:
+    """The motion at every driver coordinate in ``values`` (rad for a crank, m for a slider).
+
+    ``branches`` fixes the assembly branch of each group (see
+    :func:`choose_branches`); without it they are chosen at ``values[0]``.
+    ``numbers`` are the positions' numbers for error messages.
+    """
+    values = np.atleast_1d(np.asarray(values, dtype=float))
+    if values.ndim != 1 or len(values) == 0:
+        raise SceneError("driver", "must be a non-empty 1-D array of driver positions")
+    if not np.all(np.isfinite(values)):
+        raise SceneError("driver", "driver positions must be finite numbers")
+    if branches is None:
+        branches = choose_branches(mechanism, float(values[0]))
+    driver = mechanism.driver
+
+    def describe(index: int) -> str:
+        text = driver.describe(float(values[index]))
+        return f"position {numbers[index]} ({text})" if numbers is not None else text
+
+    context = _Context(mechanism, values, describe)
+    slides: list[SlideMotion] = []
+    conditioning: dict[str, np.ndarray] = {}
+    for step, unit_ in enumerate(mechanism.units):
+        if step == 0:
+            found = driver.solve(context, values)
+        else:
+            found = unit_.solver.solve(context, branches[step - 1])  # type: ignore[union-attr]
+            conditioning[unit_.solver.label] = np.broadcast_to(np.abs(found.conditioning), values.shape)  # type: ignore[union-attr]
+        context.points.update(found.points)
+        context.links.update(found.links)
+        slides.extend(found.slides)
+        for spec in unit_.points:
+            context.points[spec.name] = _place(context, spec, mechanism)
+    return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
+                  slides=tuple(slides), conditioning=conditioning,
+                  warnings=_conditioning_warnings(conditioning))
+
+
+def choose_branches(mechanism: Mechanism, value: float) -> tuple[int, ...]:
+    """The branch of every group at the driver coordinate ``value``, from its ``assembly`` or ``near``."""
+    values = np.array([value])
+    context = _Context(mechanism, values, lambda _: mechanism.driver.describe(value))
+    branches = []
+    for step, unit_ in enumerate(mechanism.units):
+        if step == 0:
+            found = mechanism.driver.solve(context, values)
+        else:
+            branch = unit_.solver.with_branch(context)  # type: ignore[union-attr]
+            branches.append(branch)
+            found = unit_.solver.solve(context, branch)  # type: ignore[union-attr]
+        context.points.update(found.points)
+        context.links.update(found.links)
+        for spec in unit_.points:
+            context.points[spec.name] = _place(context, spec, mechanism)
+    return tuple(branches)
+
+
+def _place(context: _Context, spec: PointSpec, mechanism: Mechanism) -> PointMotion:
+    """A named point by the similarity of its link: from its local coordinates in the link's frame.
+
+    The local coordinates are fixed by the point's definition at the first
+    position, then the link's pose carries the point to every position.
+    """
+    start = _first(context.point(spec.start).r)
+    link = context.link(spec.link)
+    if spec.toward in mechanism.fixed_on.get(spec.link, ()):
+        chord = _first(context.point(spec.toward).r) - start
+        if chord == 0:
+            raise SceneError(spec.where, f"from {spec.start!r} and toward {spec.toward!r} coincide, so they give no direction")
+        direction = chord / abs(chord)
+    else:
+        direction = _first(link.u) * mechanism.sliding_on[spec.link][spec.toward]
+    first = start + (spec.at + 1j * spec.offset) * direction
+    if spec.link == mechanism.scene.frame_link:
+        return PointMotion(first, _STILL, _STILL)
+    origin = context.point(link.origin)
+    local = (first - _first(origin.r)) / _first(link.u)
+    return point_on_link(origin, link, origin.r + link.u * local)
+
+
+def _first(value: complex | np.ndarray) -> complex:
+    """The value at the first position."""
+    return complex(np.atleast_1d(value)[0])
+
+
+def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Warning, ...]:
+    limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
+    warnings = []
+    for label, sine in conditioning.items():
+        for index in np.flatnonzero(sine < limit):
+            angle = math.degrees(math.asin(min(1.0, float(sine[index]))))
+            warnings.append(Warning(int(index), "ill-conditioned",
+                                    f"lines of action at {angle:.3g}° in group {label} (condition number {1.0 / max(float(sine[index]), 1e-300):.3g})"))
+    return tuple(sorted(warnings, key=lambda w: w.position))

@@ -1,0 +1,141 @@
+"""The positions to analyse: equally spaced driver positions from a start.
+
+``start = "extreme"`` puts the first position where the working stroke
+begins: the output link's velocity changes sign there, from the idle sense
+to the working sense, as the driver advances.  That zero is bracketed on a
+fine sweep and then found to machine precision by Brent's method.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .kinematics import dot
+from .mechanism import Mechanism
+from .motion import Motion, choose_branches, solve
+
+# Driver positions per cycle of the sweep that brackets the extremes.
+_BRACKET_SWEEP = 720
+
+
+@dataclass(frozen=True)
+class PositionSet:
+    """The analysed positions: driver coordinates, their numbers, stroke, branches.
+
+    ``extremes`` are the driver coordinates where the working stroke starts
+    and where it ends (the idle stroke starts), when the scene names the
+    working link; ``working_fraction`` is the share of the driver's cycle
+    the working stroke takes.
+    """
+
+    values: np.ndarray
+    numbers: np.ndarray
+    strokes: tuple[str, ...] | None
+    branches: tuple[int, ...]
+    extremes: tuple[float, float] | None
+
+
+def make_positions(mechanism: Mechanism) -> PositionSet:
+    """The positions of the scene's ``[positions]`` table."""
+    scene = mechanism.scene
+    spec = scene.positions
+    driver = mechanism.driver
+    numbers = np.arange(spec.number_from, spec.number_from + spec.count)
+    if driver.kind == "slider":
+        values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
+        branches = choose_branches(mechanism, float(values[0]))
+        extremes = None
+    else:
+        start = 0.0 if spec.start == "extreme" else math.radians(float(spec.start))
+        branches = choose_branches(mechanism, start)
+        extremes = None
+        if spec.working is not None:
+            extremes, branches = _settle_extremes(mechanism, start, branches)
+            if spec.start == "extreme":
+                start = extremes[0]
+        values = start + driver.sense * 2.0 * math.pi * np.arange(spec.count) / spec.count
+    strokes = None
+    if spec.working is not None:
+        motion = solve(mechanism, values, branches, numbers)
+        strokes = tuple("working" if working else "idle" for working in _in_working_stroke(motion))
+    return PositionSet(values=values, numbers=numbers, strokes=strokes, branches=branches, extremes=extremes)
+
+
+def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
+    """The output link's velocity and acceleration, signed so that positive is the working sense.
+
+    A turning link gives ω and ε, a translating one its velocity and
+    acceleration along its own direction.
+    """
+    mechanism = motion.mechanism
+    working = mechanism.scene.positions.working
+    assert working is not None
+    link = motion.links[working.link]
+    if working.link in mechanism.translating:
+        origin = motion.points[link.origin]
+        speed, rate = dot(link.u, origin.v), dot(link.u, origin.a)
+    else:
+        speed, rate = link.omega, link.epsilon
+    sign = 1.0 if working.sense in ("ccw", "forward") else -1.0
+    shape = motion.driver.shape
+    return np.broadcast_to(sign * speed, shape), np.broadcast_to(sign * rate, shape)
+
+
+def _in_working_stroke(motion: Motion) -> np.ndarray:
+    speed, rate = working_speed(motion)
+    scale = float(np.max(np.abs(speed))) or 1.0
+    at_rest = np.abs(speed) <= 1e-9 * scale
+    # At an extreme the link is at rest; it belongs to the stroke it is about to begin.
+    return np.where(at_rest, rate > 0, speed > 0)
+
+
+def _settle_extremes(mechanism: Mechanism, start: float, branches: tuple[int, ...]):
+    """The extremes, with branches chosen at the first position (a ``near`` branch may depend on it)."""
+    for _ in range(3):
+        extremes = _find_extremes(mechanism, start, branches)
+        first = extremes[0] if mechanism.scene.positions.start == "extreme" else start
+        settled = choose_branches(mechanism, first)
+        if settled == branches:
+            return extremes, branches
+        branches = settled
+    return extremes, branches
+
+
+def _find_extremes(mechanism: Mechanism, start: float, branches: tuple[int, ...]) -> tuple[float, float]:
+    """Driver angles where the working stroke starts and ends, to machine precision."""
+    from .errors import SceneError
+
+    driver = mechanism.driver
+    steps = start + driver.sense * 2.0 * math.pi * np.arange(_BRACKET_SWEEP + 1) / _BRACKET_SWEEP
+    speed, _ = working_speed(solve(mechanism, steps, branches))
+
+    def speed_at(angle: float) -> float:
+        return float(working_speed(solve(mechanism, [angle], branches))[0][0])
+
+    found = {}
+    for name, rising in (("working", True), ("idle", False)):
+        before, after = speed[:-1], speed[1:]
+        crossing = (before <= 0) & (after > 0) if rising else (before >= 0) & (after < 0)
+        candidates = np.flatnonzero(crossing)
+        if len(candidates) == 0:
+            working = mechanism.scene.positions.working
+            raise SceneError(working.where if working else "positions.working",
+                             f"link {working.link if working else '?'} never reverses its motion, so it has no extreme position")
+        # Several reversals (a dwell, a six-bar): take the one that begins the longest stroke.
+        index = max(candidates, key=lambda i: _stroke_length(speed, i, rising))
+        lo, hi = steps[index], steps[index + 1]
+        if speed[index] == 0:
+            found[name] = float(lo)
+        else:
+            found[name] = float(brentq(speed_at, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200))
+    return found["working"], found["idle"]
+
+
+def _stroke_length(speed: np.ndarray, index: int, rising: bool) -> int:
+    following = speed[index + 1:] > 0 if rising else speed[index + 1:] < 0
+    stops = np.flatnonzero(~following)
+    return int(stops[0]) if len(stops) else len(following)

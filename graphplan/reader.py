@@ -1,0 +1,204 @@
+"""Typed access to a parsed TOML table that knows its own key path.
+
+Every value a scene supplies is taken through a :class:`Table`, so that each
+error names the exact key (``groups[0].lengths[1]``), what was expected and
+what was found, and so that a key nobody took is reported as unknown with the
+nearest valid key suggested.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from typing import Any, Callable, Iterator
+
+from .errors import SceneError
+
+_REQUIRED = object()
+
+
+def _type_name(value: object) -> str:
+    if isinstance(value, bool):
+        return "a boolean"
+    if isinstance(value, int):
+        return "an integer"
+    if isinstance(value, float):
+        return "a number"
+    if isinstance(value, str):
+        return "a string"
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, dict):
+        return "a table"
+    return type(value).__name__
+
+
+def join_path(path: str, key: str | int) -> str:
+    """The key path of ``key`` inside ``path``: ``a.b``, ``a[0]``."""
+    if isinstance(key, int):
+        return f"{path}[{key}]"
+    return f"{path}.{key}" if path else key
+
+
+def check_number(value: Any, where: str) -> float:
+    """``value`` as a finite float, or a SceneError naming ``where``."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SceneError(where, f"must be a number, not {_type_name(value)}", value)
+    if not math.isfinite(value):
+        raise SceneError(where, "must be a finite number", value)
+    return float(value)
+
+
+def check_int(value: Any, where: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise SceneError(where, f"must be an integer, not {_type_name(value)}", value)
+    return value
+
+
+def check_str(value: Any, where: str) -> str:
+    if not isinstance(value, str):
+        raise SceneError(where, f"must be a string, not {_type_name(value)}", value)
+    if not value.strip():
+        raise SceneError(where, "must not be empty")
+    return value
+
+
+def check_xy(value: Any, where: str) -> tuple[float, float]:
+    """A point given as ``[x, y]``."""
+    if not isinstance(value, list) or len(value) != 2:
+        raise SceneError(where, "must be a point [x, y]", value)
+    return (check_number(value[0], join_path(where, 0)), check_number(value[1], join_path(where, 1)))
+
+
+def check_choice(value: Any, where: str, choices: tuple[str, ...]) -> str:
+    text = check_str(value, where)
+    if text not in choices:
+        raise SceneError(where, f"must be one of {', '.join(choices)}{_suggestion(text, choices)}", value)
+    return text
+
+
+def _suggestion(word: str, choices: Any) -> str:
+    close = difflib.get_close_matches(word, [str(c) for c in choices], n=1, cutoff=0.5)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+class Table:
+    """A TOML table being read: each key is taken once, the rest are unknown.
+
+    Parameters
+    ----------
+    data
+        The table as :mod:`tomllib` parsed it.
+    path
+        Its key path, used as the prefix of every error message.
+    """
+
+    def __init__(self, data: Any, path: str) -> None:
+        if not isinstance(data, dict):
+            raise SceneError(path, f"must be a table, not {_type_name(data)}", data)
+        self.data = data
+        self.path = path
+        self._taken: set[str] = set()
+
+    def where(self, key: str | int) -> str:
+        return join_path(self.path, key)
+
+    def has(self, key: str) -> bool:
+        return key in self.data
+
+    def raw(self, key: str, default: Any = _REQUIRED) -> Any:
+        """The value of ``key`` unchecked; a missing required key is an error."""
+        self._taken.add(key)
+        if key in self.data:
+            return self.data[key]
+        if default is _REQUIRED:
+            raise SceneError(self.where(key), "is required but missing")
+        return default
+
+    def _take(self, key: str, default: Any, check: Callable[[Any, str], Any]) -> Any:
+        value = self.raw(key, default)
+        if key not in self.data:
+            return value
+        return check(value, self.where(key))
+
+    def number(self, key: str, default: Any = _REQUIRED, *, positive: bool = False,
+               non_negative: bool = False) -> Any:
+        value = self._take(key, default, check_number)
+        if key in self.data:
+            if positive and not value > 0:
+                raise SceneError(self.where(key), "must be > 0", self.data[key])
+            if non_negative and value < 0:
+                raise SceneError(self.where(key), "must be >= 0", self.data[key])
+        return value
+
+    def integer(self, key: str, default: Any = _REQUIRED, *, minimum: int | None = None,
+                maximum: int | None = None) -> Any:
+        value = self._take(key, default, check_int)
+        if key in self.data:
+            if minimum is not None and value < minimum:
+                raise SceneError(self.where(key), f"must be >= {minimum}", value)
+            if maximum is not None and value > maximum:
+                raise SceneError(self.where(key), f"must be <= {maximum}", value)
+        return value
+
+    def string(self, key: str, default: Any = _REQUIRED) -> Any:
+        return self._take(key, default, check_str)
+
+    def boolean(self, key: str, default: Any = _REQUIRED) -> Any:
+        def check(value: Any, where: str) -> bool:
+            if not isinstance(value, bool):
+                raise SceneError(where, f"must be true or false, not {_type_name(value)}", value)
+            return value
+        return self._take(key, default, check)
+
+    def choice(self, key: str, choices: tuple[str, ...], default: Any = _REQUIRED) -> Any:
+        return self._take(key, default, lambda v, w: check_choice(v, w, choices))
+
+    def xy(self, key: str, default: Any = _REQUIRED) -> Any:
+        return self._take(key, default, check_xy)
+
+    def table(self, key: str, default: Any = _REQUIRED) -> Table | None:
+        value = self.raw(key, default)
+        if key not in self.data:
+            return value
+        return Table(value, self.where(key))
+
+    def items(self, key: str, *, length: int | None = None, default: Any = _REQUIRED) -> list[tuple[str, Any]] | None:
+        """A list under ``key`` as ``(path, item)`` pairs, its length checked."""
+        value = self.raw(key, default)
+        if key not in self.data:
+            return value
+        where = self.where(key)
+        if not isinstance(value, list):
+            raise SceneError(where, f"must be a list, not {_type_name(value)}", value)
+        if length is not None and len(value) != length:
+            raise SceneError(where, f"must have {length} entries, not {len(value)}", value)
+        return [(join_path(where, i), item) for i, item in enumerate(value)]
+
+    def numbers(self, key: str, length: int, default: Any = _REQUIRED, *, positive: bool = False) -> Any:
+        pairs = self.items(key, length=length, default=default)
+        if pairs is None or key not in self.data:
+            return pairs if pairs is None else default
+        result = []
+        for where, item in pairs:
+            number = check_number(item, where)
+            if positive and not number > 0:
+                raise SceneError(where, "must be > 0", item)
+            result.append(number)
+        return tuple(result)
+
+    def names(self, key: str, length: int) -> tuple[str, ...]:
+        pairs = self.items(key, length=length)
+        assert pairs is not None
+        return tuple(check_str(item, where) for where, item in pairs)
+
+    def subtables(self) -> Iterator[tuple[str, Table]]:
+        """Every entry of a table of tables (``[links.3]``), keyed by its name."""
+        for key in list(self.data):
+            yield key, self.table(key)  # type: ignore[misc]
+
+    def done(self) -> None:
+        """Reject the first key that nobody took, suggesting the nearest valid one."""
+        for key in self.data:
+            if key not in self._taken:
+                raise SceneError(self.where(key), "unknown key" + _suggestion(key, sorted(self._taken)))

@@ -1,0 +1,356 @@
+"""The scene file: TOML in, a frozen :class:`Scene` out, every key checked.
+
+This module checks syntax, types and ranges, key by key, and rejects keys it
+does not know.  Whether the names refer to each other correctly (the
+structure of the mechanism) is checked by :mod:`graphplan.mechanism`.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from types import MappingProxyType
+from typing import Mapping
+
+from .errors import SceneError
+from .groups import DRIVERS, GROUPS, Driver, Group, Guide
+from .groups.base import read_guide
+from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
+
+MAX_SCENE_BYTES = 1_000_000
+MAX_POSITIONS = 100_000
+LOCALES = ("en", "ru", "zh")
+SHEETS = ("A1", "A2", "A3", "A4", "none")
+SENSES = ("ccw", "cw", "forward", "backward")
+STROKES = ("working", "idle", "always")
+OUTPUT_PIECES = ("positions", "velocity", "acceleration", "forces", "lever", "errors", "note")
+
+
+@dataclass(frozen=True)
+class PointSpec:
+    """A named point fixed on ``link``: ``at`` m from ``start`` toward ``toward``, then ``offset`` m to the left."""
+
+    name: str
+    where: str
+    link: int
+    start: str
+    toward: str
+    at: float
+    offset: float
+
+
+@dataclass(frozen=True)
+class LinkSpec:
+    number: int
+    where: str
+    mass: float
+    centre: str | None
+    inertia: float
+
+
+@dataclass(frozen=True)
+class LoadSpec:
+    """An external force or moment; ``during`` is a stroke name or a (from, to) window of the working stroke."""
+
+    where: str
+    kind: str
+    link: int
+    value: float
+    resisting: bool
+    during: str | tuple[float, float]
+    point: str | None
+    angle_deg: float | None
+
+
+@dataclass(frozen=True)
+class Working:
+    link: int
+    sense: str
+    where: str
+
+
+@dataclass(frozen=True)
+class Positions:
+    count: int
+    start: str | float
+    number_from: int
+    working: Working | None
+    plans: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Drawing:
+    length_scale: float | None
+    velocity_pole: float | None
+    acceleration_pole: float | None
+    velocity_scale: float | None
+    acceleration_scale: float | None
+    drafting_precision: float
+    sheet: str
+
+
+@dataclass(frozen=True)
+class Scene:
+    """Everything one scene file says, checked for syntax and range."""
+
+    title: str
+    locale: str
+    gravity: float
+    frame_link: int
+    frame_points: Mapping[str, complex]
+    frame_lines: Mapping[str, Guide]
+    driver: Driver
+    groups: tuple[Group, ...]
+    points: tuple[PointSpec, ...]
+    links: Mapping[int, LinkSpec]
+    loads: tuple[LoadSpec, ...]
+    positions: Positions
+    drawing: Drawing
+    measured: Mapping[int, Mapping[str, Mapping[str, float]]]
+    include: tuple[str, ...] | None
+    source: str = "<scene>"
+
+
+def load(path: str | Path) -> Scene:
+    """Read and check the scene file at ``path``.
+
+    Raises
+    ------
+    SceneError
+        naming the key path and what is wrong, for any problem of the file.
+    """
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if size > MAX_SCENE_BYTES:
+            raise SceneError(str(path), f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")
+        data = path.read_bytes()
+    except OSError as error:
+        raise SceneError(str(path), f"cannot be read: {error.strerror or error}") from None
+    return loads(data, source=str(path))
+
+
+def loads(data: bytes | str, source: str = "<scene>") -> Scene:
+    """Read and check a scene given as TOML text or bytes."""
+    if isinstance(data, bytes):
+        if len(data) > MAX_SCENE_BYTES:
+            raise SceneError(source, f"is {len(data)} bytes; a scene may have at most {MAX_SCENE_BYTES}")
+        try:
+            data = data.decode("utf-8")
+        except UnicodeDecodeError as error:
+            raise SceneError(source, f"is not UTF-8 text (byte {error.start})") from None
+    try:
+        document = tomllib.loads(data)
+    except tomllib.TOMLDecodeError as error:
+        raise SceneError(source, f"is not valid TOML: {error}") from None
+    return _read_scene(Table(document, ""), source)
+
+
+def _read_scene(top: Table, source: str) -> Scene:
+    scene = top.table("scene", None) or Table({}, "scene")
+    title = scene.string("title", Path(source).stem)
+    locale = scene.choice("locale", LOCALES, "en")
+    gravity = scene.number("gravity", 9.81, non_negative=True)
+    scene.done()
+
+    frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
+    driver = _read_driver(top.table("driver"))
+    groups = tuple(_read_group(where, item) for where, item in top.items("groups", default=[]) or [])
+    points = _read_points(top.table("points", None))
+    links = _read_links(top.table("links", None))
+    loads_ = tuple(_read_load(where, item) for where, item in top.items("loads", default=[]) or [])
+    positions = _read_positions(top.table("positions", None) or Table({}, "positions"), driver)
+    drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
+    measured = _read_measured(top.table("measured", None))
+    include = _read_output(top.table("output", None))
+    top.done()
+    return Scene(title=title, locale=locale, gravity=gravity, frame_link=frame_link,
+                 frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
+                 driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_,
+                 positions=positions, drawing=drawing, measured=MappingProxyType(measured), include=include,
+                 source=source)
+
+
+def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str, Guide]]:
+    assert frame is not None
+    link = frame.integer("link", 1, minimum=1)
+    points: dict[str, complex] = {}
+    table = frame.table("points", None)
+    if table is not None:
+        for name in table.data:
+            x, y = check_xy(table.raw(name), table.where(name))
+            points[check_str(name, table.where(name))] = complex(x, y)
+    lines: dict[str, Guide] = {}
+    table = frame.table("lines", None)
+    if table is not None:
+        for name in table.data:
+            guide = read_guide(table.raw(name), table.where(name))
+            if guide.line is not None or not guide.on_frame:
+                raise SceneError(table.where(name), "a frame line needs through and angle, on the frame")
+            lines[name] = guide
+    frame.done()
+    return link, points, lines
+
+
+def _read_driver(table: Table | None) -> Driver:
+    assert table is not None
+    kind = table.choice("kind", tuple(DRIVERS))
+    link = table.integer("link", minimum=1)
+    return DRIVERS[kind].read(table, link)
+
+
+def _read_group(where: str, item: object) -> Group:
+    table = Table(item, where)
+    kind = table.choice("kind", tuple(GROUPS))
+    cls = GROUPS[kind]
+    pairs = table.items("links", length=2)
+    assert pairs is not None
+    links = tuple(check_int(value, w) for w, value in pairs)
+    for (w, _), number in zip(pairs, links):
+        if number < 1:
+            raise SceneError(w, "must be a link number >= 1", number)
+    if links[0] == links[1]:
+        raise SceneError(table.where("links"), "must name two different links", list(links))
+    joints = table.names("joints", len(cls.joint_roles))
+    if len(set(joints)) != len(joints):
+        raise SceneError(table.where("joints"), "must name different joints", list(joints))
+    return cls.read(table, (links[0], links[1]), joints)
+
+
+def _read_points(table: Table | None) -> tuple[PointSpec, ...]:
+    if table is None:
+        return ()
+    specs = []
+    for name, entry in table.subtables():
+        assert entry is not None
+        specs.append(PointSpec(
+            name=name, where=entry.path,
+            link=entry.integer("link", minimum=1),
+            start=entry.string("from"),
+            toward=entry.string("toward"),
+            at=entry.number("at"),
+            offset=entry.number("offset", 0.0),
+        ))
+        entry.done()
+    return tuple(specs)
+
+
+def _read_links(table: Table | None) -> dict[int, LinkSpec]:
+    if table is None:
+        return {}
+    links = {}
+    for key, entry in table.subtables():
+        assert entry is not None
+        if not key.isdigit() or int(key) < 1:
+            raise SceneError(entry.path, "links are numbered: write [links.3]")
+        links[int(key)] = LinkSpec(
+            number=int(key), where=entry.path,
+            mass=entry.number("mass", 0.0, non_negative=True),
+            centre=entry.string("centre", None),
+            inertia=entry.number("inertia", 0.0, non_negative=True),
+        )
+        entry.done()
+    return links
+
+
+def _read_load(where: str, item: object) -> LoadSpec:
+    table = Table(item, where)
+    kind = table.choice("kind", ("moment", "force"))
+    link = table.integer("link", minimum=1)
+    value = table.number("value")
+    resisting = table.boolean("resisting", False)
+    during_raw = table.raw("during", "always")
+    during: str | tuple[float, float]
+    if isinstance(during_raw, dict):
+        window = Table(during_raw, table.where("during"))
+        start = window.number("from")
+        end = window.number("to")
+        window.done()
+        if not 0.0 <= start < end <= 1.0:
+            raise SceneError(window.path, "must be a window 0 <= from < to <= 1 of the working stroke", during_raw)
+        during = (start, end)
+    else:
+        during = check_choice(during_raw, table.where("during"), STROKES)
+    point = table.string("point", None)
+    angle = table.number("angle", None)
+    if kind == "force" and (point is None or angle is None):
+        raise SceneError(where, "a force needs point (where it acts) and angle (its direction, degrees)")
+    table.done()
+    return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
+                    point=point, angle_deg=angle)
+
+
+def _read_positions(table: Table, driver: Driver) -> Positions:
+    count = table.integer("count", 12, minimum=1, maximum=MAX_POSITIONS)
+    start_raw = table.raw("start", 0.0)
+    start: str | float
+    if isinstance(start_raw, str):
+        start = check_choice(start_raw, table.where("start"), ("extreme",))
+    else:
+        start = check_number(start_raw, table.where("start"))
+    if driver.kind == "slider" and table.has("start"):
+        raise SceneError(table.where("start"), "a slider driver's positions run over driver.travel: leave start out")
+    number_from = table.integer("number_from", 1, minimum=0, maximum=1)
+    working_table = table.table("working", None)
+    working = None
+    if working_table is not None:
+        working = Working(link=working_table.integer("link", minimum=1),
+                          sense=working_table.choice("sense", SENSES), where=working_table.path)
+        working_table.done()
+    if start == "extreme" and working is None:
+        raise SceneError(table.where("start"), "\"extreme\" needs working = { link, sense } to know which extreme")
+    plans = []
+    for where, item in table.items("plans", default=[]) or []:
+        index = check_int(item, where)
+        if not number_from <= index < number_from + count:
+            raise SceneError(where, f"must be a position number from {number_from} to {number_from + count - 1}", index)
+        plans.append(index)
+    table.done()
+    return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans))
+
+
+def _read_drawing(table: Table) -> Drawing:
+    drawing = Drawing(
+        length_scale=table.number("length_scale", None, positive=True),
+        velocity_pole=table.number("velocity_pole", None, positive=True),
+        acceleration_pole=table.number("acceleration_pole", None, positive=True),
+        velocity_scale=table.number("velocity_scale", None, positive=True),
+        acceleration_scale=table.number("acceleration_scale", None, positive=True),
+        drafting_precision=table.number("drafting_precision", 0.5, positive=True),
+        sheet=table.choice("sheet", SHEETS, "A1"),
+    )
+    for plan in ("velocity", "acceleration"):
+        if table.has(f"{plan}_pole") and table.has(f"{plan}_scale"):
+            raise SceneError(table.path, f"give {plan}_pole or {plan}_scale, not both")
+    table.done()
+    return drawing
+
+
+def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]]:
+    if table is None:
+        return {}
+    measured: dict[int, dict[str, dict[str, float]]] = {}
+    for key, entry in table.subtables():
+        assert entry is not None
+        if not key.isdigit():
+            raise SceneError(entry.path, "must be a position number: write [measured.5]")
+        readings: dict[str, dict[str, float]] = {}
+        for plan in ("velocity", "acceleration"):
+            lengths = entry.table(plan, None)
+            if lengths is None:
+                continue
+            readings[plan] = {name: lengths.number(name, non_negative=True) for name in list(lengths.data)}
+        entry.done()
+        measured[int(key)] = readings
+    return measured
+
+
+def _read_output(table: Table | None) -> tuple[str, ...] | None:
+    if table is None:
+        return None
+    pieces = table.items("include", default=None)
+    table.done()
+    if pieces is None:
+        return None
+    return tuple(check_choice(item, where, OUTPUT_PIECES) for where, item in pieces)
