@@ -1,0 +1,1 @@
+"""Drawings: layouts turn records into primitives, the svg backend writes them."""

@@ -1,0 +1,182 @@
+"""The plan of positions: the mechanism at μl in all analysed positions, overlaid.
+
+Thin grey outlines for every position, the extreme positions bold, each
+position numbered at the driver's joint, the paths of the named points as
+thin dashed curves, the frame pivots and guides drawn once.  The layout reads
+solved motions and the mechanism's membership tables; it computes no
+mechanics.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+from shapely.geometry import MultiPoint
+
+from ..mechanism import Mechanism
+from ..motion import Motion
+from .labels import Anchor, obstacles_of, place_labels
+from .primitives import (BOLD, MAIN, THIN, Layer, Polyline, Primitive, Stroke, Text, bounds, dot_marker,
+                         frame_pivot, hatching, pin, slider_block)
+
+_POSITION_STROKE = Stroke(0.3, "#7a7a7a")
+_PATH_STROKE = Stroke(0.25, "#1f5fa8", (2.0, 1.2))
+_LABEL = 3.0
+
+Paper = Callable[[complex], tuple[float, float]]
+
+
+@dataclass(frozen=True)
+class PositionsPlan:
+    """What the plan of positions shows: the motions it reads and how to letter them.
+
+    ``emphasised`` holds the positions drawn bold: the two extremes of the
+    working link, or the first position when the scene names none.
+    """
+
+    mechanism: Mechanism
+    positions: Motion
+    numbers: tuple[int, ...]
+    emphasised: Motion
+    paths: Motion
+    length_scale: float
+    title: str
+    caption: str
+
+
+def layout(plan: PositionsPlan) -> list[Layer]:
+    """The layers of the plan of positions, in paper millimetres (y up)."""
+    mm_per_m = 1.0 / plan.length_scale
+
+    def paper(r: complex) -> tuple[float, float]:
+        return (r.real * mm_per_m, r.imag * mm_per_m)
+
+    outlines = _outline_points(plan.mechanism, plan.positions)
+    every = _mechanism_at(plan.positions, outlines, paper, _POSITION_STROKE, bold=False)
+    bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
+    frame = _frame(plan, paper)
+    paths = _paths(plan, paper)
+    drawn = every + bold + frame + paths
+    labels = place_labels(_position_anchors(plan, paper) + _point_anchors(plan, paper), obstacles_of(drawn))
+    layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
+              Layer("frame", tuple(frame)), Layer("labels", tuple(labels) + tuple(_centre_marks(plan, paper)))]
+    xmin, _, _, ymax = bounds(layers)
+    layers.append(Layer("caption", (Text((xmin, ymax + 12.0), plan.title, 5.0, "start", weight="bold"),
+                                    Text((xmin, ymax + 5.0), plan.caption, 3.5, "start"))))
+    return layers
+
+
+def _outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]:
+    """For every moving link, the points whose convex hull is its outline.
+
+    Centres of mass lie inside a link and are left out; the line a slider
+    runs on is drawn long enough to carry the slider, so sliding joints count.
+    """
+    centres = {spec.centre for spec in mechanism.scene.links.values() if spec.centre}
+    outlines = {link: [name for name in sorted(mechanism.fixed_on.get(link, ())) if name not in centres]
+                for link in mechanism.moving_links}
+    for slide in motion.slides:
+        if slide.guide in outlines and slide.joint not in outlines[slide.guide]:
+            outlines[slide.guide].append(slide.joint)
+    return outlines
+
+
+def _mechanism_at(motion: Motion, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
+                  bold: bool) -> list[Primitive]:
+    items: list[Primitive] = []
+    frame_points = set(motion.mechanism.scene.frame_points)
+    named = {spec.name for spec in motion.mechanism.scene.points}
+    for index in range(motion.count):
+        for names in outlines.values():
+            points = [paper(_at(motion.points[name].r, index)) for name in names]
+            if len(points) < 2:
+                continue
+            hull = MultiPoint(points).convex_hull
+            if hull.geom_type == "Polygon":
+                items.append(Polyline(tuple(hull.exterior.coords)[:-1], stroke, closed=True))
+            elif hull.geom_type == "LineString":
+                items.append(Polyline(tuple(hull.coords), stroke))
+        for slide in motion.slides:
+            items.append(slider_block(paper(_at(motion.points[slide.joint].r, index)),
+                                      float(np.angle(_at(slide.u, index))), stroke=MAIN if bold else stroke))
+        if bold:
+            joints = {n for names in outlines.values() for n in names} - frame_points - named
+            items.extend(pin(paper(_at(motion.points[name].r, index))) for name in sorted(joints))
+    return items
+
+
+def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
+    """Fixed pivots and frame guides, drawn once; a guide spans its slider's whole travel."""
+    mechanism, motion = plan.mechanism, plan.paths
+    frame = mechanism.scene.frame_link
+    items: list[Primitive] = []
+    for slide in motion.slides:
+        if slide.guide != frame:
+            continue
+        track = np.atleast_1d(motion.points[slide.joint].r)
+        u = _at(slide.u, 0)
+        along = (track * np.conj(u)).real
+        base = complex(track[0]) - float(along[0]) * u
+        margin = 8.0 * plan.length_scale
+        start, end = base + (along.min() - margin) * u, base + (along.max() + margin) * u
+        # The ground lies under the block, half the block's height off the line.
+        below = -2.5 * plan.length_scale * 1j * u
+        items.extend(hatching(paper(start + below), paper(end + below), side=-1.0))
+        items.append(Polyline((paper(start), paper(end)), THIN))
+    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
+    for name, r in mechanism.scene.frame_points.items():
+        if name in pivots:
+            items.extend(frame_pivot(paper(r)))
+    return items
+
+
+def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
+    closed = plan.mechanism.driver.kind == "crank"
+    items: list[Primitive] = []
+    for spec in plan.mechanism.scene.points:
+        track = np.atleast_1d(plan.paths.points[spec.name].r)
+        if len(track) > 1 and np.ptp(track.real) + np.ptp(track.imag) > 0:
+            items.append(Polyline(tuple(paper(r) for r in track), _PATH_STROKE, closed=closed))
+    return items
+
+
+def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
+    """Each position's number at the driver's joint, on the side away from the driver's centre."""
+    driver = plan.mechanism.driver
+    joint = plan.positions.points[driver.joint].r
+    if driver.kind == "crank":
+        centre = plan.mechanism.scene.frame_points[driver.pivot]
+    else:
+        centre = complex(np.mean(np.atleast_1d(joint))) + 1j * _at(plan.positions.links[driver.link].u, 0)
+    anchors = []
+    for index, number in enumerate(plan.numbers):
+        outward = _at(joint, index) - centre
+        anchors.append(Anchor(paper(_at(joint, index)), str(number), _LABEL, math.atan2(outward.imag, outward.real),
+                              "#333333"))
+    return anchors
+
+
+def _point_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
+    """Names of the joints and named points at the first emphasised position."""
+    motion = plan.emphasised
+    names = list(motion.points)
+    centroid = sum(_at(motion.points[n].r, 0) for n in names) / len(names)
+    anchors = []
+    for name in names:
+        r = _at(motion.points[name].r, 0)
+        away = r - centroid
+        anchors.append(Anchor(paper(r), name, _LABEL, math.atan2(away.imag, away.real) if away else math.pi / 2))
+    return anchors
+
+
+def _centre_marks(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
+    return [dot_marker(paper(_at(plan.emphasised.points[spec.name].r, 0))) for spec in plan.mechanism.scene.points]
+
+
+def _at(value: complex | np.ndarray, index: int) -> complex:
+    """The value at position ``index`` (a scalar is the same at every position)."""
+    array = np.atleast_1d(value)
+    return complex(array[index if len(array) > 1 else 0])

@@ -1,0 +1,74 @@
+"""The svgwrite backend: layers of primitives in, an SVG document out.
+
+Paper coordinates are millimetres with y up; the flip to SVG's y-down happens
+here and nowhere else.  Numbers are written by one formatter at a fixed
+precision and every group has an explicit id, so that the same drawing gives
+the same bytes every time.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+import svgwrite
+
+from .primitives import Circle, Layer, Polyline, Stroke, Text, bounds
+
+FONT_FAMILY = "DejaVu Sans, Noto Sans CJK SC, Noto Sans CJK JP, Noto Sans, sans-serif"
+# Cap height is about 0.72 of the font size in DejaVu Sans.
+_CAP_TO_FONT_SIZE = 1.0 / 0.72
+
+
+def _n(value: float) -> str:
+    text = f"{value:.3f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def _stroke_attributes(stroke: Stroke) -> dict[str, str]:
+    attributes = {"stroke": stroke.colour, "stroke-width": _n(stroke.width),
+                  "stroke-linecap": "round", "stroke-linejoin": "round"}
+    if stroke.dash:
+        attributes["stroke-dasharray"] = " ".join(_n(d) for d in stroke.dash)
+    return attributes
+
+
+def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, float] | None = None) -> str:
+    """The SVG text of ``layers``; the page is the drawing's bounds plus ``margin`` unless given (mm)."""
+    xmin, ymin, xmax, ymax = bounds(layers)
+    if page is None:
+        left, top = xmin - margin, ymax + margin
+        width, height = xmax - xmin + 2 * margin, ymax - ymin + 2 * margin
+    else:
+        left, top = 0.0, page[1]
+        width, height = page
+
+    def xy(point: tuple[float, float]) -> tuple[str, str]:
+        return _n(point[0] - left), _n(top - point[1])
+
+    document = svgwrite.Drawing(size=(f"{_n(width)}mm", f"{_n(height)}mm"), profile="full", debug=False)
+    document.viewbox(0, 0, float(_n(width)), float(_n(height)))
+    document.add(document.rect(insert=(0, 0), size=(_n(width), _n(height)), fill="white", id="background"))
+    for layer in layers:
+        group = document.g(id=layer.name)
+        for item in layer.items:
+            if isinstance(item, Polyline):
+                # A path with our own number formatting: svgwrite's polyline formats points itself.
+                path = "M" + " L".join(",".join(xy(p)) for p in item.points) + (" Z" if item.closed else "")
+                element = document.path(d=path)
+                element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
+            elif isinstance(item, Circle):
+                cx, cy = xy(item.centre)
+                element = document.circle(center=(cx, cy), r=_n(item.radius))
+                element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
+            elif isinstance(item, Text):
+                x, y = xy(item.at)
+                element = document.text(item.text, insert=(x, y))
+                element.update({"font-size": _n(item.size * _CAP_TO_FONT_SIZE), "font-family": FONT_FAMILY,
+                                "text-anchor": item.anchor, "fill": item.colour})
+                if item.weight != "normal":
+                    element.update({"font-weight": item.weight})
+            else:  # pragma: no cover - the Primitive union is closed
+                raise TypeError(f"unknown primitive {item!r}")
+            group.add(element)
+        document.add(group)
+    return document.tostring()

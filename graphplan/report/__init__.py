@@ -1,0 +1,1 @@
+"""Reports: results.json now; tables and the explanatory note as they come."""

@@ -1,0 +1,86 @@
+"""``results.json``: the analysis as the public contract of ``scene-format.md`` spells it.
+
+Values are SI, angles in degrees; numbers are rounded to 12 significant
+digits so that the file reads cleanly and is byte-identical across runs.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from .. import __version__
+from ..analysis import Analysis
+from ..kinematics import as_xy
+
+SIGNIFICANT = 12
+
+
+def number(value: float) -> float:
+    """``value`` rounded to :data:`SIGNIFICANT` digits, with −0 written as 0."""
+    rounded = float(f"{float(value):.{SIGNIFICANT}g}")
+    return 0.0 if rounded == 0 else rounded
+
+
+def _pair(xy: np.ndarray) -> list[float]:
+    return [number(xy[0]), number(xy[1])]
+
+
+def results(analysis: Analysis) -> dict[str, Any]:
+    """The results document of one analysis."""
+    mechanism, motion, positions = analysis.mechanism, analysis.motion, analysis.positions
+    count = motion.count
+    driver = mechanism.driver
+    points = {name: [as_xy(getattr(p, field), count) for field in ("r", "v", "a")] for name, p in motion.points.items()}
+    links = {number_: motion.link(number_) for number_ in mechanism.moving_links}
+    entries = []
+    for i in range(count):
+        if driver.kind == "crank":
+            driver_entry = {"angle_deg": number(math.degrees(positions.values[i]) % 360.0),
+                            "omega": number(driver.omega), "epsilon": number(driver.epsilon)}
+        else:
+            driver_entry = {"displacement": number(positions.values[i]), "velocity": number(driver.velocity),
+                            "acceleration": number(driver.acceleration)}
+        entry: dict[str, Any] = {"index": int(positions.numbers[i]), "driver": driver_entry}
+        if positions.strokes is not None:
+            entry["stroke"] = positions.strokes[i]
+        entry["points"] = {name: {"r": _pair(r[i]), "v": _pair(v[i]), "a": _pair(a[i])}
+                           for name, (r, v, a) in points.items()}
+        entry["links"] = {str(n): {"angle_deg": number(math.degrees(float(link.angle[i]))),
+                                   "omega": number(link.omega[i]), "epsilon": number(link.epsilon[i])}
+                          for n, link in links.items()}
+        slides = [_slide(slide, i) for slide in motion.slides]
+        if slides:
+            entry["slides"] = slides
+        entries.append(entry)
+    n, p5, w = mechanism.degrees_of_freedom
+    document: dict[str, Any] = {
+        "graphplan": __version__,
+        "scene": analysis.scene.title,
+        "structure": mechanism.structure,
+        "degrees_of_freedom": {"moving_links": n, "lower_pairs": p5, "W": w},
+        "groups": [{"label": g.label, "kind": g.kind, "links": list(g.links), "joints": list(g.joints)}
+                   for g in mechanism.groups],
+    }
+    if positions.extremes is not None:
+        document["extremes_deg"] = [number(math.degrees(value) % 360.0) for value in positions.extremes]
+    document["positions"] = entries
+    document["warnings"] = [{"position": int(positions.numbers[w.position]), "code": w.code, "detail": w.detail}
+                            for w in motion.warnings]
+    return document
+
+
+def _slide(slide, i: int) -> dict[str, Any]:
+    def at(value) -> float:
+        array = np.atleast_1d(value)
+        return float(array[i if len(array) > 1 else 0])
+
+    return {"slider": slide.slider, "guide": slide.guide, "joint": slide.joint,
+            "velocity": number(at(slide.velocity)), "acceleration": number(at(slide.acceleration))}
+
+
+def dumps(document: dict[str, Any]) -> str:
+    return json.dumps(document, ensure_ascii=False, indent=1) + "\n"

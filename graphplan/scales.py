@@ -1,0 +1,38 @@
+"""Scale factors as the textbooks choose them: round standard values.
+
+A scale factor μ says how many units of a quantity one millimetre of the
+drawing stands for (m/mm, (m/s)/mm, ...).  When the scene does not fix one,
+the smallest standard value is taken that still fits the drawing into its
+field, so that the drawing is as large as the field allows and every length
+read off it is a round multiple.
+"""
+
+from __future__ import annotations
+
+import math
+
+# Mantissas of the standard scale factors, as in drafting scales 1:1, 1:2, 1:2.5, 1:4, 1:5.
+STANDARD_MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0)
+
+
+def standard_scale(least: float) -> float:
+    """The smallest standard scale factor ≥ ``least`` (which must be > 0)."""
+    if not least > 0 or not math.isfinite(least):
+        raise ValueError(f"a scale factor must be positive and finite, not {least!r}")
+    exponent = math.floor(math.log10(least))
+    for power in (exponent, exponent + 1):
+        for mantissa in STANDARD_MANTISSAS:
+            value = float(f"{mantissa}e{power}")
+            if value >= least * (1 - 1e-12):
+                return value
+    raise AssertionError("unreachable: 10^(exponent+1) ≥ least")
+
+
+def fit_scale(extent: float, field_mm: float) -> float:
+    """The standard scale at which ``extent`` (SI units) fits in ``field_mm`` millimetres."""
+    return standard_scale(max(extent, 1e-300) / field_mm)
+
+
+def format_scale(value: float) -> str:
+    """A scale factor as written on a drawing: 0.0025, not 2.5e-03."""
+    return f"{value:.10f}".rstrip("0").rstrip(".") if value < 1000 else f"{value:g}"

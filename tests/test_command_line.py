@@ -1,0 +1,107 @@
+"""The command line: what `graphplan run` writes, and how it fails."""
+
+import json
+import math
+import xml.etree.ElementTree as ElementTree
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.cli import main
+
+FIXTURE = "fixtures/ratchet_crank_rocker.toml"
+
+
+@pytest.fixture(scope="module")
+def run_folder(tmp_path_factory):
+    out = tmp_path_factory.mktemp("run") / "ratchet"
+    assert main(["run", FIXTURE, "--out", str(out)]) == 0
+    return out
+
+
+def test_results_json_follows_the_contract(run_folder):
+    document = json.loads((run_folder / "results.json").read_text(encoding="utf-8"))
+    assert document["structure"] == "I(1,2) → II2(3,4)"
+    assert document["scene"] == "Crank-rocker of a ratchet feed"
+    assert [p["index"] for p in document["positions"]] == list(range(12))
+    fifth = document["positions"][5]
+    assert fifth["stroke"] == "working"
+    assert fifth["driver"]["omega"] == -17.0
+    # The driver angle of position 5: five 30° steps clockwise from the extended dead centre.
+    assert fifth["driver"]["angle_deg"] == pytest.approx((115.0476 - 150.0) % 360, abs=1e-3)
+    assert set(fifth["points"]) >= {"O", "A", "B", "C", "S2", "S3", "E", "S4"}
+    assert set(fifth["links"]) == {"2", "3", "4"}
+    # The same numbers as the Python interface.
+    motion = graphplan.solve(graphplan.load(FIXTURE))
+    assert fifth["points"]["B"]["v"] == pytest.approx(list(motion.point("B").v[5]), rel=1e-11)
+    assert fifth["links"]["4"]["omega"] == pytest.approx(float(motion.link(4).omega[5]), rel=1e-11)
+    assert fifth["links"]["3"]["angle_deg"] == pytest.approx(math.degrees(motion.link(3).angle[5]), rel=1e-11)
+
+
+def test_positions_svg_draws_every_position_and_the_paths(run_folder):
+    root = ElementTree.parse(run_folder / "positions.svg").getroot()
+    ns = {"svg": "http://www.w3.org/2000/svg"}
+    groups = {g.get("id"): g for g in root.findall("svg:g", ns)}
+    assert {"paths", "positions", "extremes", "frame", "labels", "caption"} <= set(groups)
+    numbers = {t.text for t in groups["labels"].findall("svg:text", ns)}
+    assert {str(i) for i in range(12)} <= numbers
+    assert {"O", "A", "B", "C", "E"} <= numbers
+    # Four named points, four closed paths (the crank turns a full cycle).
+    assert len(groups["paths"].findall("svg:path", ns)) == 4
+    caption = " ".join(t.text for t in groups["caption"].findall("svg:text", ns))
+    assert "0.0025" in caption
+
+
+def test_the_same_scene_gives_the_same_bytes(tmp_path, run_folder):
+    again = tmp_path / "again"
+    assert main(["run", FIXTURE, "--out", str(again)]) == 0
+    for name in ("results.json", "positions.svg"):
+        assert (again / name).read_bytes() == (run_folder / name).read_bytes()
+
+
+def test_a_bad_scene_exits_2_with_one_line_and_writes_nothing(tmp_path, capsys):
+    scene = tmp_path / "bad.toml"
+    text = open(FIXTURE, encoding="utf-8").read().replace("lengths  = [0.55, 0.325]", "lengths  = [0.55, -0.325]")
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert error.strip() == "graphplan: error: groups[0].lengths[1]: must be > 0 (got -0.325)"
+    assert not out.exists()
+    assert list(tmp_path.iterdir()) == [scene]
+
+
+def test_an_unreachable_position_names_the_position_and_the_group(tmp_path, capsys):
+    scene = tmp_path / "short.toml"
+    text = open(FIXTURE, encoding="utf-8").read().replace("lengths  = [0.55, 0.325]", "lengths  = [0.35, 0.325]")
+    scene.write_text(text, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    error = capsys.readouterr().err
+    assert error.startswith("graphplan: error: B cannot be assembled at φ = ")
+    assert "in group II(3,4): A–C = " in error and "> AB + BC = 0.675 m" in error
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_failed_run_leaves_an_existing_output_untouched(tmp_path, run_folder):
+    out = tmp_path / "kept"
+    assert main(["run", FIXTURE, "--out", str(out)]) == 0
+    before = (out / "results.json").read_bytes()
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[scene]\ntitle = 3\n", encoding="utf-8")
+    assert main(["run", str(bad), "--out", str(out)]) == 2
+    assert (out / "results.json").read_bytes() == before
+
+
+def test_check_prints_the_structure_formula(capsys):
+    assert main(["check", FIXTURE]) == 0
+    printed = capsys.readouterr().out
+    assert "structure: I(1,2) → II2(3,4)" in printed
+    assert "W = 3·3 − 2·4 = 1" in printed
+
+
+def test_the_driver_array_interface_matches_the_scene_positions():
+    scene = graphplan.load(FIXTURE)
+    by_scene = graphplan.solve(scene)
+    by_array = graphplan.solve(scene, driver=by_scene.driver)
+    np.testing.assert_array_equal(by_scene.point("E").a, by_array.point("E").a)
