@@ -40,8 +40,8 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     if driver is None or uses_near:
         positions = make_positions(mechanism)
         if driver is None:
-            return solve_motion(mechanism, positions.values, positions.branches, positions.numbers)
-        return solve_motion(mechanism, driver, positions.branches)
+            return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
+        return solve_motion(mechanism, driver, positions.reference)
     return solve_motion(mechanism, driver)
 
 

@@ -33,14 +33,14 @@ def analyse(scene: Scene) -> Analysis:
     """Build the mechanism, place the positions and solve them, with the extremes and a dense sweep."""
     mechanism = build(scene)
     positions = make_positions(mechanism)
-    motion = solve(mechanism, positions.values, positions.branches, positions.numbers)
+    motion = solve(mechanism, positions.values, positions.reference, positions.numbers)
     # The positions drawn bold: the working link's two extremes, or else the first position.
     bold = positions.extremes if positions.extremes is not None else positions.values[:1]
-    emphasised = solve(mechanism, bold, positions.branches)
+    emphasised = solve(mechanism, bold, positions.reference)
     driver = mechanism.driver
     if driver.kind == "crank":
         sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * np.pi, PATH_SAMPLES + 1)
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
-    paths = solve(mechanism, sweep, positions.branches)
+    paths = solve(mechanism, sweep, positions.reference)
     return Analysis(scene, mechanism, positions, motion, emphasised, paths)

@@ -12,6 +12,7 @@ interface hands vectors out.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Union
 
 import numpy as np
@@ -40,15 +41,28 @@ def as_xy(vector: Vector, count: int) -> np.ndarray:
     return array.view(np.float64).reshape(count, 2)
 
 
-def solve_pair(e1: Vector, e2: Vector, w: Vector, det: Scalar) -> tuple[Scalar, Scalar]:
-    """x1, x2 of the vector equation ``x1·e1 + x2·e2 = w`` (Cramer's rule).
+class TwoLines:
+    """The vector equation ``x1·e1 + x2·e2 = w`` that every class-II group reduces to.
 
-    This is the one equation every class-II group reduces to: two lines of
-    action with known directions ``e1``, ``e2`` and unknown magnitudes closing
-    the known vector ``w``.  ``det`` is ``cross(e1, e2)``, passed in because the
-    caller has already checked it for singularity.
+    Two lines of action with known directions ``e1``, ``e2`` and unknown
+    magnitudes close a known vector ``w``; a group solves it twice with the
+    same lines (velocities, then accelerations), so Cramer's rule is set up
+    once: ``det = e1 × e2``, then ``x1 = (w × e2)/det``, ``x2 = (e1 × w)/det``.
     """
-    return cross(w, e2) / det, cross(e1, w) / det
+
+    __slots__ = ("det", "_e1_conj", "_e2_conj", "_inverse")
+
+    def __init__(self, e1: Vector, e2: Vector) -> None:
+        self._e1_conj = np.conj(e1)
+        self._e2_conj = np.conj(e2)
+        self.det = (self._e1_conj * e2).imag
+        with np.errstate(divide="ignore"):
+            self._inverse = 1.0 / self.det
+
+    def solve(self, w: Vector) -> tuple[Scalar, Scalar]:
+        """x1, x2 for the known vector ``w``."""
+        # w × e2 = −Im(w·conj(e2)),  e1 × w = Im(conj(e1)·w)
+        return -(w * self._e2_conj).imag * self._inverse, (self._e1_conj * w).imag * self._inverse
 
 
 @dataclass(frozen=True)
@@ -76,6 +90,14 @@ class LinkMotion:
     omega: Scalar
     epsilon: Scalar
 
+    @cached_property
+    def turning(self) -> tuple[Vector, Vector]:
+        """The factors that turn an arm r of the link into ω × r and into ε × r − ω²·r.
+
+        Computed once per link, they serve every point the link carries.
+        """
+        return 1j * self.omega, 1j * self.epsilon - self.omega * self.omega
+
 
 @dataclass(frozen=True)
 class SlideMotion:
@@ -95,17 +117,13 @@ class SlideMotion:
     acceleration: Scalar
 
 
-def point_on_link(origin: PointMotion, link: LinkMotion, r: Vector) -> PointMotion:
-    """Motion of the point at ``r`` fixed on ``link`` whose point ``origin`` is known.
+def point_on_link(origin: PointMotion, link: LinkMotion, arm: Vector) -> PointMotion:
+    """Motion of the point P fixed on ``link`` at ``arm`` = OP from its known point O.
 
     v = v_O + ω × OP,  a = a_O + ε × OP − ω²·OP.
     """
-    arm = r - origin.r
-    return PointMotion(
-        r=r,
-        v=origin.v + 1j * link.omega * arm,
-        a=origin.a + (1j * link.epsilon - link.omega * link.omega) * arm,
-    )
+    spin, whirl = link.turning
+    return PointMotion(r=origin.r + arm, v=origin.v + spin * arm, a=origin.a + whirl * arm)
 
 
 def unit(angle: float) -> complex:

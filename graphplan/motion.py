@@ -135,51 +135,25 @@ class _Context:
             raise error(index, self._describe(index))
 
 
-def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, branches: Sequence[int] | None = None,
-          numbers: Sequence[int] | None = None) -> Motion:
-    """The motion at every driver coordinate in ``values`` (rad for a crank, m for a slider).
+@dataclass(frozen=True)
+class Reference:
+    """What is fixed once, at one reference position, and kept for every solve.
 
-    ``branches`` fixes the assembly branch of each group (see
-    :func:`choose_branches`); without it they are chosen at ``values[0]``.
-    ``numbers`` are the positions' numbers for error messages.
+    ``branches`` is the assembly branch of each group; ``local`` the
+    coordinates of each named point in its link's frame (link origin, link
+    direction), so that the point rides rigidly with its link.
     """
-    values = np.atleast_1d(np.asarray(values, dtype=float))
-    if values.ndim != 1 or len(values) == 0:
-        raise SceneError("driver", "must be a non-empty 1-D array of driver positions")
-    if not np.all(np.isfinite(values)):
-        raise SceneError("driver", "driver positions must be finite numbers")
-    if branches is None:
-        branches = choose_branches(mechanism, float(values[0]))
-    driver = mechanism.driver
 
-    def describe(index: int) -> str:
-        text = driver.describe(float(values[index]))
-        return f"position {numbers[index]} ({text})" if numbers is not None else text
-
-    context = _Context(mechanism, values, describe)
-    slides: list[SlideMotion] = []
-    conditioning: dict[str, np.ndarray] = {}
-    for step, unit_ in enumerate(mechanism.units):
-        if step == 0:
-            found = driver.solve(context, values)
-        else:
-            found = unit_.solver.solve(context, branches[step - 1])  # type: ignore[union-attr]
-            conditioning[unit_.solver.label] = np.broadcast_to(np.abs(found.conditioning), values.shape)  # type: ignore[union-attr]
-        context.points.update(found.points)
-        context.links.update(found.links)
-        slides.extend(found.slides)
-        for spec in unit_.points:
-            context.points[spec.name] = _place(context, spec, mechanism)
-    return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
-                  slides=tuple(slides), conditioning=conditioning,
-                  warnings=_conditioning_warnings(conditioning))
+    branches: tuple[int, ...]
+    local: Mapping[str, complex]
 
 
-def choose_branches(mechanism: Mechanism, value: float) -> tuple[int, ...]:
-    """The branch of every group at the driver coordinate ``value``, from its ``assembly`` or ``near``."""
-    values = np.array([value])
-    context = _Context(mechanism, values, lambda _: mechanism.driver.describe(value))
+def reference_at(mechanism: Mechanism, value: float) -> Reference:
+    """Branches (from ``assembly`` or ``near``) and named points' local coordinates at driver coordinate ``value``."""
+    values = np.array([float(value)])
+    context = _Context(mechanism, values, lambda _: mechanism.driver.describe(float(value)))
     branches = []
+    local: dict[str, complex] = {}
     for step, unit_ in enumerate(mechanism.units):
         if step == 0:
             found = mechanism.driver.solve(context, values)
@@ -190,16 +164,57 @@ def choose_branches(mechanism: Mechanism, value: float) -> tuple[int, ...]:
         context.points.update(found.points)
         context.links.update(found.links)
         for spec in unit_.points:
-            context.points[spec.name] = _place(context, spec, mechanism)
-    return tuple(branches)
+            local[spec.name] = _local_coordinates(context, spec, mechanism)
+            context.points[spec.name] = _place(context, spec, mechanism, local[spec.name])
+    return Reference(tuple(branches), local)
 
 
-def _place(context: _Context, spec: PointSpec, mechanism: Mechanism) -> PointMotion:
-    """A named point by the similarity of its link: from its local coordinates in the link's frame.
+def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference: Reference | None = None,
+          numbers: Sequence[int] | None = None) -> Motion:
+    """The motion at every driver coordinate in ``values`` (rad for a crank, m for a slider).
 
-    The local coordinates are fixed by the point's definition at the first
-    position, then the link's pose carries the point to every position.
+    ``reference`` fixes the branches and named points (see
+    :func:`reference_at`); without it they are fixed at ``values[0]``.
+    ``numbers`` are the positions' numbers for error messages.
     """
+    values = np.atleast_1d(np.asarray(values, dtype=float))
+    if values.ndim != 1 or len(values) == 0:
+        raise SceneError("driver", "must be a non-empty 1-D array of driver positions")
+    if not np.all(np.isfinite(values)):
+        raise SceneError("driver", "driver positions must be finite numbers")
+    if reference is None:
+        reference = reference_at(mechanism, float(values[0]))
+    driver = mechanism.driver
+
+    def describe(index: int) -> str:
+        text = driver.describe(float(values[index]))
+        return f"position {numbers[index]} ({text})" if numbers is not None else text
+
+    return _solve(mechanism, values, reference, describe)
+
+
+def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
+                describe: Callable[[int], str]) -> Motion:
+    context = _Context(mechanism, values, describe)
+    slides: list[SlideMotion] = []
+    conditioning: dict[str, np.ndarray] = {}
+    for step, unit_ in enumerate(mechanism.units):
+        if step == 0:
+            found = mechanism.driver.solve(context, values)
+        else:
+            found = unit_.solver.solve(context, reference.branches[step - 1])  # type: ignore[union-attr]
+            conditioning[unit_.solver.label] = np.broadcast_to(np.abs(found.conditioning), values.shape)  # type: ignore[union-attr]
+        context.points.update(found.points)
+        context.links.update(found.links)
+        slides.extend(found.slides)
+        for spec in unit_.points:
+            context.points[spec.name] = _place(context, spec, mechanism, reference.local[spec.name])
+    return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
+                  slides=tuple(slides), conditioning=conditioning, warnings=_conditioning_warnings(conditioning))
+
+
+def _local_coordinates(context: _Context, spec: PointSpec, mechanism: Mechanism) -> complex:
+    """Where a named point sits in its link's frame, from its definition at the reference position."""
     start = _first(context.point(spec.start).r)
     link = context.link(spec.link)
     if spec.toward in mechanism.fixed_on.get(spec.link, ()):
@@ -209,12 +224,19 @@ def _place(context: _Context, spec: PointSpec, mechanism: Mechanism) -> PointMot
         direction = chord / abs(chord)
     else:
         direction = _first(link.u) * mechanism.sliding_on[spec.link][spec.toward]
-    first = start + (spec.at + 1j * spec.offset) * direction
+    at = start + (spec.at + 1j * spec.offset) * direction
     if spec.link == mechanism.scene.frame_link:
-        return PointMotion(first, _STILL, _STILL)
+        return at
+    return (at - _first(context.point(link.origin).r)) / _first(link.u)
+
+
+def _place(context: _Context, spec: PointSpec, mechanism: Mechanism, local: complex) -> PointMotion:
+    """A named point by the similarity of its link: its local coordinates carried by the link's pose."""
+    if spec.link == mechanism.scene.frame_link:
+        return PointMotion(local, _STILL, _STILL)
+    link = context.link(spec.link)
     origin = context.point(link.origin)
-    local = (first - _first(origin.r)) / _first(link.u)
-    return point_on_link(origin, link, origin.r + link.u * local)
+    return point_on_link(origin, link, link.u * local)
 
 
 def _first(value: complex | np.ndarray) -> complex:

@@ -16,7 +16,7 @@ from scipy.optimize import brentq
 
 from .kinematics import dot
 from .mechanism import Mechanism
-from .motion import Motion, choose_branches, solve
+from .motion import Motion, Reference, reference_at, solve
 
 # Driver positions per cycle of the sweep that brackets the extremes.
 _BRACKET_SWEEP = 720
@@ -24,7 +24,10 @@ _BRACKET_SWEEP = 720
 
 @dataclass(frozen=True)
 class PositionSet:
-    """The analysed positions: driver coordinates, their numbers, stroke, branches.
+    """The analysed positions: driver coordinates, their numbers, stroke, and the reference.
+
+    ``reference`` holds the branches and named points fixed at the first
+    position; every later solve of this mechanism should use it.
 
     ``extremes`` are the driver coordinates where the working stroke starts
     and where it ends (the idle stroke starts), when the scene names the
@@ -35,7 +38,7 @@ class PositionSet:
     values: np.ndarray
     numbers: np.ndarray
     strokes: tuple[str, ...] | None
-    branches: tuple[int, ...]
+    reference: Reference
     extremes: tuple[float, float] | None
 
 
@@ -47,22 +50,23 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     numbers = np.arange(spec.number_from, spec.number_from + spec.count)
     if driver.kind == "slider":
         values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
-        branches = choose_branches(mechanism, float(values[0]))
+        reference = reference_at(mechanism, float(values[0]))
         extremes = None
     else:
         start = 0.0 if spec.start == "extreme" else math.radians(float(spec.start))
-        branches = choose_branches(mechanism, start)
+        reference = reference_at(mechanism, start)
         extremes = None
         if spec.working is not None:
-            extremes, branches = _settle_extremes(mechanism, start, branches)
+            extremes, reference = _settle_extremes(mechanism, start, reference)
             if spec.start == "extreme":
                 start = extremes[0]
+                reference = reference_at(mechanism, start)
         values = start + driver.sense * 2.0 * math.pi * np.arange(spec.count) / spec.count
     strokes = None
     if spec.working is not None:
-        motion = solve(mechanism, values, branches, numbers)
+        motion = solve(mechanism, values, reference, numbers)
         strokes = tuple("working" if working else "idle" for working in _in_working_stroke(motion))
-    return PositionSet(values=values, numbers=numbers, strokes=strokes, branches=branches, extremes=extremes)
+    return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes)
 
 
 def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
@@ -93,28 +97,28 @@ def _in_working_stroke(motion: Motion) -> np.ndarray:
     return np.where(at_rest, rate > 0, speed > 0)
 
 
-def _settle_extremes(mechanism: Mechanism, start: float, branches: tuple[int, ...]):
+def _settle_extremes(mechanism: Mechanism, start: float, reference: Reference):
     """The extremes, with branches chosen at the first position (a ``near`` branch may depend on it)."""
     for _ in range(3):
-        extremes = _find_extremes(mechanism, start, branches)
+        extremes = _find_extremes(mechanism, start, reference)
         first = extremes[0] if mechanism.scene.positions.start == "extreme" else start
-        settled = choose_branches(mechanism, first)
-        if settled == branches:
-            return extremes, branches
-        branches = settled
-    return extremes, branches
+        settled = reference_at(mechanism, first)
+        if settled.branches == reference.branches:
+            return extremes, reference
+        reference = settled
+    return extremes, reference
 
 
-def _find_extremes(mechanism: Mechanism, start: float, branches: tuple[int, ...]) -> tuple[float, float]:
+def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> tuple[float, float]:
     """Driver angles where the working stroke starts and ends, to machine precision."""
     from .errors import SceneError
 
     driver = mechanism.driver
     steps = start + driver.sense * 2.0 * math.pi * np.arange(_BRACKET_SWEEP + 1) / _BRACKET_SWEEP
-    speed, _ = working_speed(solve(mechanism, steps, branches))
+    speed, _ = working_speed(solve(mechanism, steps, reference))
 
     def speed_at(angle: float) -> float:
-        return float(working_speed(solve(mechanism, [angle], branches))[0][0])
+        return float(working_speed(solve(mechanism, [angle], reference))[0][0])
 
     found = {}
     for name, rising in (("working", True), ("idle", False)):

@@ -161,20 +161,12 @@ class Group:
 
 def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -> None:
     """Report a position where the two lines of action are parallel."""
-    bad = np.abs(sine) < SINGULAR_SINE
+    if np.min(np.abs(sine)) >= SINGULAR_SINE:
+        return
     context.fail_where(
-        np.atleast_1d(bad),
+        np.atleast_1d(np.abs(sine) < SINGULAR_SINE),
         lambda i, at: SingularPositionError(at, group.label, f"{what} are parallel (sine {float(np.atleast_1d(sine)[i] if np.ndim(sine) else sine):.1e})"),
     )
-
-
-def conditioning(e1: Vector, e2: Vector) -> Scalar:
-    """Sine of the angle between two lines of action with directions ``e1``, ``e2``."""
-    return cross(e1, e2) / np.sqrt((e1.real**2 + e1.imag**2) * (e2.real**2 + e2.imag**2))
-
-
-def reject(group_where: str, problem: str, value: object = SceneError._NO_VALUE) -> SceneError:
-    return SceneError(group_where, problem, value)
 
 
 def read_branch(table: Table, choices: tuple[str, ...]) -> tuple[str | None, tuple[float, float] | None]:

@@ -81,7 +81,8 @@ class Crank:
 
     def solve(self, context: Context, values: np.ndarray) -> GroupMotion:
         pivot = context.point(self.pivot)
-        u = np.cos(values) + 1j * np.sin(values)
+        u = np.empty(values.shape, dtype=complex)
+        u.real, u.imag = np.cos(values), np.sin(values)
         arm = self.length * u
         joint = PointMotion(pivot.r + arm, 1j * self.omega * arm,
                             (1j * self.epsilon - self.omega * self.omega) * arm)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SingularPositionError
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, cross, solve_pair
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines
 from ..reader import Table
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide
 
@@ -54,21 +54,22 @@ class PRP(Group):
         g1, g2 = (context.guide(g) for g in self.guide_pair)
         o1, o2 = self.offsets
         u1, u2 = g1.u, g2.u
-        det = cross(u1, -u2)
+        lines = TwoLines(u1, -u2)
+        det = lines.det
         context.fail_where(
             np.atleast_1d(np.abs(det) < SINGULAR_SINE),
             lambda i, at: SingularPositionError(at, self.label, "the two guides are parallel"),
         )
         # Position: s1·u1 − s2·u2 = G2 − G1 + i·(o2·u2 − o1·u1).
         gap = g2.origin.r - g1.origin.r + 1j * (o2 * u2 - o1 * u1)
-        s1, s2 = solve_pair(u1, -u2, gap, det)
+        s1, s2 = lines.solve(gap)
         b_r = g1.origin.r + (s1 + 1j * o1) * u1
         v1, a1 = g1.carried(b_r)
         v2, a2 = g2.carried(b_r)
-        s1_dot, s2_dot = solve_pair(u1, -u2, v2 - v1, det)
+        s1_dot, s2_dot = lines.solve(v2 - v1)
         coriolis1 = 2j * g1.omega * s1_dot * u1
         coriolis2 = 2j * g2.omega * s2_dot * u2
-        s1_ddot, s2_ddot = solve_pair(u1, -u2, a2 + coriolis2 - a1 - coriolis1, det)
+        s1_ddot, s2_ddot = lines.solve(a2 + coriolis2 - a1 - coriolis1)
         b_name = self.joints[0]
         b = PointMotion(b_r, v1 + s1_dot * u1, a1 + coriolis1 + s1_ddot * u1)
         link_a, link_b = self.links

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SceneError
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, solve_pair, unit
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, unit
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, read_guide
 
@@ -63,13 +63,14 @@ class RPP(Group):
         guide = context.guide(self.guide)
         u = guide.u
         w = u * unit(self.angle)
-        det = math.sin(self.angle)  # cross(u, w) for unit vectors
-        s_b, s_a = solve_pair(u, w, a.r - guide.origin.r, det)
+        lines = TwoLines(u, w)
+        det = math.sin(self.angle)  # u × w, the same at every position
+        s_b, s_a = lines.solve(a.r - guide.origin.r)
         b_r = guide.origin.r + s_b * u
         carried_v, carried_a = guide.carried(a.r)
-        s_b_dot, s_a_dot = solve_pair(u, w, a.v - carried_v, det)
+        s_b_dot, s_a_dot = lines.solve(a.v - carried_v)
         coriolis = 2j * guide.omega * (s_b_dot * u + s_a_dot * w)
-        s_b_ddot, s_a_ddot = solve_pair(u, w, a.a - carried_a - coriolis, det)
+        s_b_ddot, s_a_ddot = lines.solve(a.a - carried_a - coriolis)
         b_carried_v, b_carried_a = guide.carried(b_r)
         b = PointMotion(b_r, b_carried_v + s_b_dot * u,
                         b_carried_a + 2j * guide.omega * s_b_dot * u + s_b_ddot * u)

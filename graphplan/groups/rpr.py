@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, cross, norm2, solve_pair
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, norm2
 from ..reader import Table
 from .base import Context, Group, GroupMotion, check_lines_cross
 
@@ -68,18 +68,19 @@ class RPR(Group):
             return AssemblyError(a_name, at, self.label,
                                  f"{a_name}–{c_name} = {gap:.6g} m is less than the slide's offset {abs(e):.6g} m")
 
-        context.fail_where(np.atleast_1d(~(s2 > 0)), reason)
+        if not np.min(s2) > 0:
+            context.fail_where(np.atleast_1d(~(s2 > 0)), reason)
         s = np.sqrt(s2)
         u = ca * (s - 1j * e) / ca2
         # Unknowns ωb and ṡ: ωb·(i·CA) + ṡ·u = vA − vC.
         e1, e2 = 1j * ca, u
-        det = cross(e1, e2)
-        sine = det / np.sqrt(ca2)
+        lines = TwoLines(e1, e2)
+        sine = lines.det / np.sqrt(ca2)
         check_lines_cross(context, self, sine, f"the slide on link {self.links[1]} and its normal")
-        omega, s_dot = solve_pair(e1, e2, a.v - c.v, det)
+        omega, s_dot = lines.solve(a.v - c.v)
         coriolis = 2j * omega * s_dot * u
         w = a.a - c.a + omega * omega * ca - coriolis
-        epsilon, s_ddot = solve_pair(e1, e2, w, det)
+        epsilon, s_ddot = lines.solve(w)
         angle = np.angle(u)
         lever = LinkMotion(c_name, u, angle, omega, epsilon)
         block = LinkMotion(a_name, u, angle, omega, epsilon)

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, cross, dot, solve_pair
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, dot
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, check_lines_cross, nearest_branch, read_branch, read_guide
 
@@ -70,7 +70,8 @@ class RRP(Group):
             return AssemblyError(b_name, at, self.label,
                                  f"{a_name} is {gap:.6g} m from the guide > {a_name}{b_name} = {self.length:.6g} m")
 
-        context.fail_where(np.atleast_1d(~(reach2 >= 0)), reason)
+        if not np.min(reach2) >= 0:
+            context.fail_where(np.atleast_1d(~(reach2 >= 0)), reason)
         s = foot + branch * np.sqrt(reach2)
         return a, guide, s, guide.origin.r + s * guide.u
 
@@ -84,15 +85,15 @@ class RRP(Group):
         a, guide, s, b_r = self._candidates(context, branch)
         ab_vec = b_r - a.r
         e1, e2 = 1j * ab_vec, -guide.u
-        det = cross(e1, e2)
-        sine = det / self.length
+        lines = TwoLines(e1, e2)
+        sine = lines.det / self.length
         check_lines_cross(context, self, sine, f"link {self.links[0]} and the guide")
         omega_g, epsilon_g = guide.omega, guide.epsilon
         guide_point_v, guide_point_a = guide.carried(b_r)
-        omega_a, s_dot = solve_pair(e1, e2, guide_point_v - a.v, det)
+        omega_a, s_dot = lines.solve(guide_point_v - a.v)
         coriolis = 2j * omega_g * s_dot * guide.u
         w = guide_point_a + coriolis - a.a + omega_a * omega_a * ab_vec
-        epsilon_a, s_ddot = solve_pair(e1, e2, w, det)
+        epsilon_a, s_ddot = lines.solve(w)
         b_v = a.v + omega_a * e1
         b_a = a.a + (1j * epsilon_a - omega_a * omega_a) * ab_vec
         a_name, b_name = self.joints

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
-from ..kinematics import LinkMotion, PointMotion, norm2, solve_pair
+from ..kinematics import LinkMotion, PointMotion, TwoLines, norm2
 from ..reader import Table
-from .base import Context, Group, GroupMotion, check_lines_cross, conditioning, nearest_branch, read_branch
+from .base import Context, Group, GroupMotion, check_lines_cross, nearest_branch, read_branch
 
 # B left of the directed line A→C is the counter-clockwise turn of A→C.
 _BRANCHES = {"left": 1, "right": -1}
@@ -68,7 +68,8 @@ class RRR(Group):
                 why = f"{a_name}–{c_name} = {span:.6g} m < |{a_name}{b_name} − {b_name}{c_name}| = {abs(ab - bc):.6g} m"
             return AssemblyError(b_name, at, self.label, why)
 
-        context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
+        if not np.min(h2) >= 0:  # NaN fails too
+            context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
         return a, c, a.r + d * (x + 1j * branch * np.sqrt(h2))
 
     def with_branch(self, context: Context) -> int:
@@ -81,13 +82,13 @@ class RRR(Group):
         a, c, b_r = self._candidates(context, branch)
         ab_vec, cb_vec = b_r - a.r, b_r - c.r
         e1, e2 = 1j * ab_vec, -1j * cb_vec
-        sine = conditioning(e1, e2)
+        lines = TwoLines(e1, e2)
+        sine = lines.det / (self.lengths[0] * self.lengths[1])
         check_lines_cross(context, self, sine, f"links {self.links[0]} and {self.links[1]}")
-        det = sine * self.lengths[0] * self.lengths[1]
-        omega_a, omega_b = solve_pair(e1, e2, c.v - a.v, det)
+        omega_a, omega_b = lines.solve(c.v - a.v)
         b_v = a.v + omega_a * e1
         w = c.a - a.a + omega_a * omega_a * ab_vec - omega_b * omega_b * cb_vec
-        epsilon_a, epsilon_b = solve_pair(e1, e2, w, det)
+        epsilon_a, epsilon_b = lines.solve(w)
         b_a = a.a + (1j * epsilon_a - omega_a * omega_a) * ab_vec
         u_a, u_b = ab_vec / self.lengths[0], cb_vec / self.lengths[1]
         a_name, b_name, c_name = self.joints
