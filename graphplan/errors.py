@@ -34,7 +34,8 @@ class SceneError(GraphplanError, ValueError):
         self.value = value
         message = f"{where}: {problem}" if where else problem
         if value is not SceneError._NO_VALUE:
-            message += f" (got {value!r})"
+            shown = value.isoformat() if hasattr(value, "isoformat") else repr(value)
+            message += f" (got {shown})"
         super().__init__(message)
 
 

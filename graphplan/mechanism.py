@@ -95,17 +95,19 @@ def build(scene: Scene) -> Mechanism:
             if number in known_links:
                 raise SceneError(f"{where}.link" if index == 0 else f"{where}.links",
                                  f"link {number} already belongs to {'the frame' if number == frame else 'an earlier group'}; a group's links are new")
-        for position, name in enumerate(solver.known_joints()):
-            if name not in known_points:
-                raise SceneError(_joint_where(solver, name, index), _unknown_point(name, known_points))
         if index == 0 and scene.driver.kind == "crank" and scene.driver.pivot not in scene.frame_points:
             raise SceneError(f"{where}.pivot", f"must be a point of [frame] points: {_known(scene.frame_points)}",
                              scene.driver.pivot)
+        for name in solver.known_joints():
+            if name not in known_points:
+                raise SceneError(_joint_where(solver, name), _unknown_point(name, known_points))
+        if index == 0 and scene.driver.kind == "slider" and not on_frame(scene, scene.driver.guide):
+            raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
         for guide in solver.guides():
             _check_guide(scene, guide, known_links, fixed_on)
         for name in solver.new_joints():
             if name in known_points:
-                raise SceneError(_joint_where(solver, name, index), f"{name!r} is already a known point; a group's inner joint is new")
+                raise SceneError(*_clash(solver, name))
             known_points.add(name)
         known_links.update(links)
         for number, names in solver.fixed_points().items():
@@ -115,11 +117,7 @@ def build(scene: Scene) -> Mechanism:
         placed, pending = _place_points(pending, known_links, fixed_on, sliding_on, known_points)
         units.append(Unit(solver, placed))
     if pending:
-        spec = pending[0]
-        if spec.link not in known_links:
-            raise SceneError(f"{spec.where}.link", f"no link {spec.link} in the mechanism; links are {_known(sorted(known_links))}", spec.link)
-        problem = _point_reference_problem(spec, fixed_on, sliding_on, {p.name for p in pending})
-        raise SceneError(spec.where, problem)
+        raise _unplaceable(pending, known_links, fixed_on, sliding_on)
     mechanism = Mechanism(
         scene=scene,
         units=tuple(units),
@@ -131,11 +129,24 @@ def build(scene: Scene) -> Mechanism:
     return mechanism
 
 
-def _joint_where(solver: Driver | Group, name: str, index: int) -> str:
-    if index == 0:
-        driver = solver
-        return f"{driver.where}.{'pivot' if getattr(driver, 'pivot', None) == name else 'joint'}"
-    return f"{solver.where}.joints[{solver.joints.index(name)}]" if name in solver.joints else f"{solver.where}.joints"  # type: ignore[union-attr]
+def _joint_where(solver: Driver | Group, name: str) -> str:
+    """The key that names a joint the solver needs: ``driver.pivot``, ``groups[1].joints[0]``."""
+    if not hasattr(solver, "joints"):
+        return f"{solver.where}.pivot"
+    return f"{solver.where}.joints[{solver.joints.index(name)}]"  # type: ignore[union-attr]
+
+
+def _clash(solver: Driver | Group, name: str) -> tuple[str, str]:
+    """Where and why a joint the solver finds has a name already taken."""
+    if not hasattr(solver, "joints"):
+        return f"{solver.where}.joint", f"{name!r} is already a frame point; the driver's joint is new"
+    if name not in solver.joints:  # type: ignore[union-attr]
+        first, lever = solver.joints[0], solver.links[1]  # type: ignore[union-attr]
+        return (f"{solver.where}.joints",
+                f"graphplan names the point of lever {lever} that coincides with {first} {name!r}, "
+                f"but {name!r} is already a point; rename that point")
+    return (f"{solver.where}.joints[{solver.joints.index(name)}]",  # type: ignore[union-attr]
+            f"{name!r} is already a known point; a group's inner joint is new")
 
 
 def _known(names) -> str:
@@ -168,6 +179,8 @@ def _check_guide(scene: Scene, guide: Guide, known_links: set[int], fixed_on: di
     link = scene.frame_link if guide.link is None else guide.link
     if link not in known_links:
         raise SceneError(f"{guide.where}.link", f"link {link} is not known before this group", link)
+    if not isinstance(guide.through, str) and link != scene.frame_link:
+        raise SceneError(f"{guide.where}.through", f"on a moving link must name a point of link {link}", list(guide.through or ()))
     if isinstance(guide.through, str) and guide.through not in fixed_on.get(link, ()):
         raise SceneError(f"{guide.where}.through", f"must be a point fixed on link {link}: {_known(sorted(fixed_on.get(link, ())))}",
                          guide.through)
@@ -191,17 +204,25 @@ def _place_points(pending, known_links, fixed_on, sliding_on, known_points):
     return tuple(placed), pending
 
 
-def _point_reference_problem(spec: PointSpec, fixed_on, sliding_on, pending_names: set[str]) -> str:
-    on_link = fixed_on.get(spec.link, set())
-    if spec.start == spec.toward:
-        return f"from and toward are both {spec.start!r}; they must be two points of link {spec.link}"
-    for key, name in (("from", spec.start), ("toward", spec.toward)):
-        if name in on_link or (key == "toward" and name in sliding_on.get(spec.link, {})):
-            continue
-        if name in pending_names:
-            return f"{key} = {name!r} refers back to itself through other named points (a cyclic reference)"
-        return f"{key} = {name!r} is not a point of link {spec.link}; its points are {_known(sorted(on_link))}"
-    return "cannot be placed"
+def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on) -> SceneError:
+    """Why the named points left over cannot be placed: a missing reference, or else a cycle."""
+    pending_names = {spec.name for spec in pending}
+    for spec in pending:
+        if spec.link not in known_links:
+            return SceneError(f"{spec.where}.link", f"no link {spec.link} in the mechanism; links are {_known(sorted(known_links))}", spec.link)
+        if spec.start == spec.toward:
+            return SceneError(f"{spec.where}.toward", f"from and toward are both {spec.start!r}; they must be two points of link {spec.link}")
+        on_link = fixed_on.get(spec.link, set())
+        for key, name in (("from", spec.start), ("toward", spec.toward)):
+            usable = name in on_link or (key == "toward" and name in sliding_on.get(spec.link, {}))
+            if not usable and name not in pending_names:
+                return SceneError(f"{spec.where}.{key}", f"{name!r} is not a point of link {spec.link}; its points are {_known(sorted(on_link))}")
+    spec = pending[0]
+    key, name = ("from", spec.start) if spec.start in pending_names else ("toward", spec.toward)
+    if name == spec.name:
+        return SceneError(f"{spec.where}.{key}", f"{name!r} is the point itself; name two other points of link {spec.link}")
+    return SceneError(f"{spec.where}.{key}", f"{name!r} refers back to {spec.name!r} through the named points "
+                                             f"{', '.join(sorted(pending_names))} (a cyclic reference)")
 
 
 def on_frame(scene: Scene, guide: Guide) -> bool:

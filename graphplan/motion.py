@@ -177,7 +177,10 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
     :func:`reference_at`); without it they are fixed at ``values[0]``.
     ``numbers`` are the positions' numbers for error messages.
     """
-    values = np.atleast_1d(np.asarray(values, dtype=float))
+    try:
+        values = np.atleast_1d(np.asarray(values, dtype=float))
+    except (TypeError, ValueError):
+        raise SceneError("driver", "must be an array of numbers (crank angles in rad, or slider positions in m)") from None
     if values.ndim != 1 or len(values) == 0:
         raise SceneError("driver", "must be a non-empty 1-D array of driver positions")
     if not np.all(np.isfinite(values)):

@@ -8,6 +8,7 @@ nearest valid key suggested.
 
 from __future__ import annotations
 
+import datetime
 import difflib
 import math
 from typing import Any, Callable, Iterator
@@ -18,6 +19,12 @@ _REQUIRED = object()
 
 
 def _type_name(value: object) -> str:
+    if isinstance(value, datetime.datetime):
+        return "a date-time"
+    if isinstance(value, datetime.date):
+        return "a date"
+    if isinstance(value, datetime.time):
+        return "a time"
     if isinstance(value, bool):
         return "a boolean"
     if isinstance(value, int):
@@ -77,8 +84,17 @@ def check_choice(value: Any, where: str, choices: tuple[str, ...]) -> str:
     return text
 
 
+# Words people write for a value that has a shorter name here.
+ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw",
+           "anti-clockwise": "ccw"}
+
+
 def _suggestion(word: str, choices: Any) -> str:
-    close = difflib.get_close_matches(word, [str(c) for c in choices], n=1, cutoff=0.5)
+    names = [str(c) for c in choices]
+    alias = ALIASES.get(word.strip().lower())
+    if alias in names:
+        return f"; did you mean {alias!r}?"
+    close = difflib.get_close_matches(word, names, n=1, cutoff=0.5)
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
@@ -112,6 +128,11 @@ class Table:
         if key in self.data:
             return self.data[key]
         if default is _REQUIRED:
+            # A required key that is missing is often there, misspelt: name the misspelling.
+            strangers = [k for k in self.data if k not in self._taken]
+            close = difflib.get_close_matches(key, strangers, n=1, cutoff=0.7)
+            if close:
+                raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
             raise SceneError(self.where(key), "is required but missing")
         return default
 

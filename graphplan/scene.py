@@ -133,13 +133,15 @@ def load(path: str | Path) -> Scene:
 
 def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     """Read and check a scene given as TOML text or bytes."""
+    size = len(data) if isinstance(data, bytes) else len(data.encode("utf-8", "surrogatepass"))
+    if size > MAX_SCENE_BYTES:
+        raise SceneError(source, f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")
     if isinstance(data, bytes):
-        if len(data) > MAX_SCENE_BYTES:
-            raise SceneError(source, f"is {len(data)} bytes; a scene may have at most {MAX_SCENE_BYTES}")
         try:
-            data = data.decode("utf-8")
+            data = data.decode("utf-8-sig")  # an editor's byte-order mark is no reason to refuse a scene
         except UnicodeDecodeError as error:
             raise SceneError(source, f"is not UTF-8 text (byte {error.start})") from None
+    data = data.removeprefix("\ufeff")
     try:
         document = tomllib.loads(data)
     except tomllib.TOMLDecodeError as error:
@@ -188,6 +190,9 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
             guide = read_guide(table.raw(name), table.where(name))
             if guide.line is not None or not guide.on_frame:
                 raise SceneError(table.where(name), "a frame line needs through and angle, on the frame")
+            if isinstance(guide.through, str) and guide.through not in points:
+                raise SceneError(f"{table.where(name)}.through", f"must be a point of [frame] points: {', '.join(points) or 'none'}",
+                                 guide.through)
             lines[name] = guide
     frame.done()
     return link, points, lines
@@ -242,10 +247,13 @@ def _read_links(table: Table | None) -> dict[int, LinkSpec]:
     links = {}
     for key, entry in table.subtables():
         assert entry is not None
-        if not key.isdigit() or int(key) < 1:
+        number = _numbered(key, entry.path, "links are numbered: write [links.3]")
+        if number < 1:
             raise SceneError(entry.path, "links are numbered: write [links.3]")
-        links[int(key)] = LinkSpec(
-            number=int(key), where=entry.path,
+        if number in links:
+            raise SceneError(entry.path, f"link {number} is given twice")
+        links[number] = LinkSpec(
+            number=number, where=entry.path,
             mass=entry.number("mass", 0.0, non_negative=True),
             centre=entry.string("centre", None),
             inertia=entry.number("inertia", 0.0, non_negative=True),
@@ -333,8 +341,9 @@ def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]
     measured: dict[int, dict[str, dict[str, float]]] = {}
     for key, entry in table.subtables():
         assert entry is not None
-        if not key.isdigit():
-            raise SceneError(entry.path, "must be a position number: write [measured.5]")
+        number = _numbered(key, entry.path, "must be a position number: write [measured.5]")
+        if number in measured:
+            raise SceneError(entry.path, f"position {number} is given twice")
         readings: dict[str, dict[str, float]] = {}
         for plan in ("velocity", "acceleration"):
             lengths = entry.table(plan, None)
@@ -342,8 +351,15 @@ def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]
                 continue
             readings[plan] = {name: lengths.number(name, non_negative=True) for name in list(lengths.data)}
         entry.done()
-        measured[int(key)] = readings
+        measured[number] = readings
     return measured
+
+
+def _numbered(key: str, where: str, problem: str) -> int:
+    """A table name that must be a number, such as the 3 of ``[links.3]``."""
+    if not (key.isascii() and key.isdigit()):
+        raise SceneError(where, problem)
+    return int(key)
 
 
 def _read_output(table: Table | None) -> tuple[str, ...] | None:

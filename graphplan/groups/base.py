@@ -55,10 +55,8 @@ def read_guide(value: object, where: str) -> Guide:
     through_raw = table.raw("through")
     if isinstance(through_raw, str):
         through: str | tuple[float, float] = check_str(through_raw, table.where("through"))
-    elif link is None:
-        through = check_xy(through_raw, table.where("through"))
     else:
-        raise SceneError(table.where("through"), "on a moving link must name a point of that link", through_raw)
+        through = check_xy(through_raw, table.where("through"))
     angle = math.radians(table.number("angle", 0.0))
     table.done()
     return Guide(where=where, link=link, through=through, angle=angle)
@@ -165,7 +163,9 @@ def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -
         return
     context.fail_where(
         np.atleast_1d(np.abs(sine) < SINGULAR_SINE),
-        lambda i, at: SingularPositionError(at, group.label, f"{what} are parallel (sine {float(np.atleast_1d(sine)[i] if np.ndim(sine) else sine):.1e})"),
+        lambda i, at: SingularPositionError(
+            at, group.label, f"{what}: the lines of action of the velocity plan are parallel "
+                             f"(sine {float(np.atleast_1d(sine)[i] if np.ndim(sine) else sine):.1e})"),
     )
 
 

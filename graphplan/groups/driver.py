@@ -108,8 +108,6 @@ class Slider:
     def read(cls, table: Table, link: int) -> Slider:
         joint = table.string("joint")
         guide = read_guide(table.raw("guide"), table.where("guide"))
-        if not guide.on_frame:
-            raise SceneError(table.where("guide"), "a driving slider must slide on a frame guide")
         velocity = table.number("velocity")
         if velocity == 0.0:
             raise SceneError(table.where("velocity"), "must not be zero: the driver must move")

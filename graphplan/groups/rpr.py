@@ -65,8 +65,11 @@ class RPR(Group):
 
         def reason(i: int, at: str) -> AssemblyError:
             gap = float(np.sqrt(np.atleast_1d(ca2)[i]))
-            return AssemblyError(a_name, at, self.label,
-                                 f"{a_name}–{c_name} = {gap:.6g} m is less than the slide's offset {abs(e):.6g} m")
+            if gap == 0:
+                why = f"{a_name} lies on {c_name}, so nothing fixes the direction of link {self.links[1]}"
+            else:
+                why = f"{a_name}–{c_name} = {gap:.6g} m is not more than the slide's offset {abs(e):.6g} m"
+            return AssemblyError(a_name, at, self.label, why)
 
         if not np.min(s2) > 0:
             context.fail_where(np.atleast_1d(~(s2 > 0)), reason)

@@ -87,7 +87,7 @@ class RRP(Group):
         e1, e2 = 1j * ab_vec, -guide.u
         lines = TwoLines(e1, e2)
         sine = lines.det / self.length
-        check_lines_cross(context, self, sine, f"link {self.links[0]} and the guide")
+        check_lines_cross(context, self, sine, f"link {self.links[0]} stands square to the guide (a dead point)")
         omega_g, epsilon_g = guide.omega, guide.epsilon
         guide_point_v, guide_point_a = guide.carried(b_r)
         omega_a, s_dot = lines.solve(guide_point_v - a.v)

@@ -62,7 +62,9 @@ class RRR(Group):
 
         def reason(i: int, at: str) -> AssemblyError:
             span = float(np.sqrt(np.atleast_1d(d2)[i]))
-            if span > ab + bc:
+            if span == 0:
+                why = f"{a_name} and {c_name} coincide, so nothing fixes where {b_name} lies"
+            elif span > ab + bc:
                 why = f"{a_name}–{c_name} = {span:.6g} m > {a_name}{b_name} + {b_name}{c_name} = {ab + bc:.6g} m"
             else:
                 why = f"{a_name}–{c_name} = {span:.6g} m < |{a_name}{b_name} − {b_name}{c_name}| = {abs(ab - bc):.6g} m"
@@ -84,7 +86,7 @@ class RRR(Group):
         e1, e2 = 1j * ab_vec, -1j * cb_vec
         lines = TwoLines(e1, e2)
         sine = lines.det / (self.lengths[0] * self.lengths[1])
-        check_lines_cross(context, self, sine, f"links {self.links[0]} and {self.links[1]}")
+        check_lines_cross(context, self, sine, f"links {self.links[0]} and {self.links[1]} lie in one line (a toggle)")
         omega_a, omega_b = lines.solve(c.v - a.v)
         b_v = a.v + omega_a * e1
         w = c.a - a.a + omega_a * omega_a * ab_vec - omega_b * omega_b * cb_vec

@@ -1,0 +1,1142 @@
+"""Every way a scene can be wrong, and the message each one gets.
+
+Each case takes a valid base scene (a dict, written out as TOML by the small
+writer below), changes one thing, and pins three facts about the error that
+follows: its class, the stage that raises it (``load``: reading and checking
+the file, ``build``: checking the names against each other, ``solve``: the
+motion), and its whole message, key path first.
+
+A case with ``gap=`` set is a strict xfail documenting a gap in the package: it
+assert the behaviour wanted, and fail today.  When the gap is closed they
+pass, and the strict marker turns that into a failure so the marker is removed.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan import AssemblyError, GraphplanError, SceneError, SingularPositionError
+from graphplan import scene as scene_module
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
+
+
+# --- a TOML writer small enough to trust -----------------------------------------------------
+#
+# Every table is written inline (``frame = { link = 1, ... }``), which TOML 1.0 allows at any
+# depth; keys are always quoted, so ``"3"`` and ``"³"`` are keys like any other.
+
+
+def _toml_value(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml_value(item) for item in value) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{json.dumps(k, ensure_ascii=False)} = {_toml_value(v)}" for k, v in value.items()) + " }"
+    raise TypeError(f"cannot write {value!r} as TOML")
+
+
+def to_toml(document: dict[str, Any]) -> str:
+    return "".join(f"{json.dumps(key, ensure_ascii=False)} = {_toml_value(value)}\n" for key, value in document.items())
+
+
+DELETE = object()
+
+
+def variant(base: dict[str, Any], changes: dict[str, Any]) -> dict[str, Any]:
+    """A deep copy of ``base`` with each dotted path set to its value (or removed, for DELETE).
+
+    A path step into a list is its index: ``groups.0.lengths.1``; into a table, its key: ``links.3.mass``.
+    """
+    document = copy.deepcopy(base)
+    for path, value in changes.items():
+        *steps, last = path.split(".")
+        node: Any = document
+        for step in steps:
+            node = node[int(step)] if isinstance(node, list) else node[step]
+        key: Any = int(last) if isinstance(node, list) else last
+        if value is DELETE:
+            del node[key]
+        else:
+            node[key] = value
+    return document
+
+
+# --- valid base scenes -----------------------------------------------------------------------
+
+# The bundled crank-rocker (fixtures/ratchet_crank_rocker.toml), plus [measured] and [output].
+RATCHET: dict[str, Any] = {
+    "scene": {"title": "Crank-rocker of a ratchet feed", "locale": "ru", "gravity": 9.81},
+    "frame": {"link": 1, "points": {"O": [0.0, 0.0], "C": [0.0, 0.55]}},
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.175,
+               "omega": -17.0, "epsilon": 0.0},
+    "groups": [{"kind": "RRR", "links": [3, 4], "joints": ["A", "B", "C"], "lengths": [0.55, 0.325],
+                "assembly": "left"}],
+    "points": {
+        "S2": {"link": 2, "from": "O", "toward": "A", "at": 0.08},
+        "S3": {"link": 3, "from": "A", "toward": "B", "at": 0.24},
+        "E": {"link": 3, "from": "A", "toward": "B", "at": 0.24, "offset": 0.125},
+        "S4": {"link": 4, "from": "C", "toward": "B", "at": 0.14},
+    },
+    "links": {
+        "2": {"mass": 16.0, "centre": "S2"},
+        "3": {"mass": 17.0, "centre": "S3", "inertia": 0.51},
+        "4": {"mass": 17.0, "centre": "S4", "inertia": 0.18},
+    },
+    "loads": [{"kind": "moment", "link": 4, "value": 1500.0, "resisting": True,
+               "during": {"from": 0.0, "to": 0.881}}],
+    "positions": {"count": 12, "start": "extreme", "number_from": 0, "working": {"link": 4, "sense": "ccw"},
+                  "plans": [5, 11]},
+    "drawing": {"length_scale": 0.0025, "velocity_pole": 150.0, "acceleration_pole": 100.0,
+                "drafting_precision": 0.5, "sheet": "A1"},
+    "measured": {"5": {"velocity": {"pb": 39.0, "ab": 149.0}, "acceleration": {"pb": 65.0}}},
+    "output": {"include": ["positions", "velocity", "acceleration"]},
+}
+
+# A four-bar that assembles everywhere: |AC| runs over [0.3, 0.7] m, AB + BC = 0.75, |AB − BC| = 0.05.
+FOUR_BAR: dict[str, Any] = {
+    "frame": {"points": {"O": [0.0, 0.0], "C": [0.5, 0.0]}},
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.2, "omega": 10.0},
+    "groups": [{"kind": "RRR", "links": [3, 4], "joints": ["A", "B", "C"], "lengths": [0.4, 0.35],
+                "assembly": "left"}],
+    "positions": {"count": 12, "start": 0.0},
+}
+
+# A central slider-crank: RRP on a frame guide along +x.
+SLIDER_CRANK: dict[str, Any] = {
+    "frame": {"points": {"O": [0.0, 0.0]}},
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0},
+    "groups": [{"kind": "RRP", "links": [3, 4], "joints": ["A", "B"], "length": 0.4,
+                "guide": {"through": [0.0, 0.0], "angle": 0.0}, "assembly": "forward"}],
+    "points": {"S3": {"link": 3, "from": "A", "toward": "B", "at": 0.2}},
+    "positions": {"count": 12, "start": "extreme", "working": {"link": 4, "sense": "forward"}, "plans": [3]},
+}
+
+# A slider driver followed by an RRR.
+SLIDER_DRIVEN: dict[str, Any] = {
+    "frame": {"points": {"O": [0.0, 0.0], "C": [0.3, 0.2]}},
+    "driver": {"kind": "slider", "link": 2, "joint": "A", "guide": {"through": [0.0, 0.0], "angle": 0.0},
+               "velocity": 1.0, "travel": [0.0, 0.2]},
+    "groups": [{"kind": "RRR", "links": [3, 4], "joints": ["A", "B", "C"], "lengths": [0.3, 0.3],
+                "assembly": "left"}],
+    "positions": {"count": 5},
+}
+
+# A crank-slotted lever: RPR, the block on A slides on lever 4 turning about C.
+SLOTTED_LEVER: dict[str, Any] = {
+    "frame": {"points": {"O": [0.0, 0.0], "C": [0.0, -0.3]}},
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0},
+    "groups": [{"kind": "RPR", "links": [3, 4], "joints": ["A", "C"]}],
+    "positions": {"count": 12},
+}
+
+# PRP: two frame guides crossing at right angles (B stays put; only the reading is exercised).
+CROSSED_SLIDERS: dict[str, Any] = {
+    "frame": {"points": {"O": [0.0, 0.0]}},
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0},
+    "groups": [{"kind": "PRP", "links": [3, 4], "joints": ["B"],
+                "guides": [{"through": [0.0, 0.0], "angle": 0.0}, {"through": [0.0, 0.0], "angle": 90.0}]}],
+    "positions": {"count": 12},
+}
+
+# A Scotch yoke: RPP, the block on A in the slot of link 4 that slides along +x.
+SCOTCH_YOKE: dict[str, Any] = {
+    "frame": {"points": {"O": [0.0, 0.0]}},
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0},
+    "groups": [{"kind": "RPP", "links": [3, 4], "joints": ["A", "B"], "guide": {"through": [0.0, 0.0], "angle": 0.0},
+                "angle": 90.0}],
+    "positions": {"count": 12},
+}
+
+BASES = {"RATCHET": RATCHET, "FOUR_BAR": FOUR_BAR, "SLIDER_CRANK": SLIDER_CRANK, "SLIDER_DRIVEN": SLIDER_DRIVEN,
+         "SLOTTED_LEVER": SLOTTED_LEVER, "CROSSED_SLIDERS": CROSSED_SLIDERS, "SCOTCH_YOKE": SCOTCH_YOKE}
+
+
+def first_error(text: str | bytes, driver: Any = None) -> tuple[str, GraphplanError]:
+    """The stage (load, build, solve) whose GraphplanError stops ``text``, and that error.
+
+    Any other exception propagates: on bad input the package raises only GraphplanError.
+    """
+    try:
+        scene = scene_module.loads(text)
+    except GraphplanError as error:
+        return "load", error
+    try:
+        graphplan.build(scene)
+    except GraphplanError as error:
+        return "build", error
+    try:
+        graphplan.solve(scene, driver=driver)
+    except GraphplanError as error:
+        return "solve", error
+    raise AssertionError("the scene was accepted: load, build and solve raised nothing")
+
+
+@pytest.mark.parametrize("name", list(BASES))
+def test_base_scene_is_valid(name: str) -> None:
+    scene = scene_module.loads(to_toml(BASES[name]))
+    motion = graphplan.solve(scene)
+    assert motion.count == scene.positions.count
+
+
+def test_writer_reproduces_the_bundled_fixture() -> None:
+    ours = scene_module.loads(to_toml(variant(RATCHET, {"measured": DELETE, "output": DELETE})))
+    theirs = graphplan.load(FIXTURE)
+    assert ours.driver == theirs.driver and ours.groups == theirs.groups and ours.points == theirs.points
+    assert ours.links == theirs.links and ours.loads == theirs.loads and ours.positions == theirs.positions
+
+
+def test_error_classes_are_builtin_exceptions_too() -> None:
+    assert issubclass(SceneError, GraphplanError) and issubclass(SceneError, ValueError)
+    assert issubclass(AssemblyError, GraphplanError) and issubclass(AssemblyError, ValueError)
+    assert issubclass(SingularPositionError, GraphplanError) and issubclass(SingularPositionError, ArithmeticError)
+    error = SceneError("groups[0].lengths[1]", "must be > 0", -0.325)
+    assert str(error) == "groups[0].lengths[1]: must be > 0 (got -0.325)"
+    assert (error.where, error.problem, error.value) == ("groups[0].lengths[1]", "must be > 0", -0.325)
+    assert str(SceneError("", "is empty")) == "is empty"
+
+
+# --- the case table --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Case:
+    """One malformed scene: ``changes`` applied to ``base``, the SceneError expected, and where it arises."""
+
+    id: str
+    changes: dict[str, Any]
+    where: str
+    problem: str
+    stage: str = "load"
+    base: str = "RATCHET"
+    gap: str | None = None  # set when the package falls short: the case is then a strict xfail
+
+    @property
+    def message(self) -> str:
+        return f"{self.where}: {self.problem}"
+
+
+NAN, INF = float("nan"), float("inf")
+UNKNOWN_AT_THIS_STAGE = ("is not known at this stage: it must be a frame point, a joint of the driver or "
+                         "of an earlier group, or a named point of a link already found")
+
+CASES: list[Case] = [
+    # -- the document's own tables: missing, or of the wrong type
+    Case("top-frame-missing", {"frame": DELETE}, "frame", "is required but missing"),
+    Case("top-driver-missing", {"driver": DELETE}, "driver", "is required but missing"),
+    Case("top-frame-list", {"frame": [1, 2]}, "frame", "must be a table, not a list (got [1, 2])"),
+    Case("top-driver-string", {"driver": "crank"}, "driver", "must be a table, not a string (got 'crank')"),
+    Case("top-scene-string", {"scene": "ratchet"}, "scene", "must be a table, not a string (got 'ratchet')"),
+    Case("top-groups-table", {"groups": {"kind": "RRR"}}, "groups",
+         "must be a list, not a table (got {'kind': 'RRR'})"),
+    Case("top-groups-item-number", {"groups": [1]}, "groups[0]", "must be a table, not an integer (got 1)"),
+    Case("top-points-list", {"points": ["S2"]}, "points", "must be a table, not a list (got ['S2'])"),
+    Case("top-links-list", {"links": [16.0]}, "links", "must be a table, not a list (got [16.0])"),
+    Case("top-loads-table", {"loads": {"kind": "moment"}}, "loads",
+         "must be a list, not a table (got {'kind': 'moment'})"),
+    Case("top-loads-item-string", {"loads": ["moment"]}, "loads[0]", "must be a table, not a string (got 'moment')"),
+    Case("top-positions-number", {"positions": 12}, "positions", "must be a table, not an integer (got 12)"),
+    Case("top-drawing-bool", {"drawing": True}, "drawing", "must be a table, not a boolean (got True)"),
+    Case("top-measured-list", {"measured": [5]}, "measured", "must be a table, not a list (got [5])"),
+    Case("top-output-list", {"output": ["note"]}, "output", "must be a table, not a list (got ['note'])"),
+    Case("top-unknown-key", {"pionts": {}}, "pionts", "unknown key; did you mean 'points'?"),
+    Case("top-unknown-key-no-suggestion", {"colour": "red"}, "colour", "unknown key"),
+
+    # -- [scene]
+    Case("scene-title-number", {"scene.title": 3}, "scene.title", "must be a string, not an integer (got 3)"),
+    Case("scene-title-empty", {"scene.title": "  "}, "scene.title", "must not be empty"),
+    Case("scene-locale-unknown", {"scene.locale": "it"}, "scene.locale", "must be one of en, ru, zh (got 'it')"),
+    Case("scene-locale-near-miss", {"scene.locale": "rus"}, "scene.locale",
+         "must be one of en, ru, zh; did you mean 'ru'? (got 'rus')"),
+    Case("scene-gravity-string", {"scene.gravity": "9.81"}, "scene.gravity",
+         "must be a number, not a string (got '9.81')"),
+    Case("scene-gravity-bool", {"scene.gravity": True}, "scene.gravity", "must be a number, not a boolean (got True)"),
+    Case("scene-gravity-negative", {"scene.gravity": -9.81}, "scene.gravity", "must be >= 0 (got -9.81)"),
+    Case("scene-gravity-nan", {"scene.gravity": NAN}, "scene.gravity", "must be a finite number (got nan)"),
+    Case("scene-gravity-inf", {"scene.gravity": INF}, "scene.gravity", "must be a finite number (got inf)"),
+    Case("scene-unknown-key", {"scene.titel": "x"}, "scene.titel", "unknown key; did you mean 'title'?"),
+
+    # -- [frame]
+    Case("frame-link-zero", {"frame.link": 0}, "frame.link", "must be >= 1 (got 0)"),
+    Case("frame-link-float", {"frame.link": 1.0}, "frame.link", "must be an integer, not a number (got 1.0)"),
+    Case("frame-link-bool", {"frame.link": True}, "frame.link", "must be an integer, not a boolean (got True)"),
+    Case("frame-points-list", {"frame.points": [[0.0, 0.0]]}, "frame.points",
+         "must be a table, not a list (got [[0.0, 0.0]])"),
+    Case("frame-point-one-coordinate", {"frame.points.O": [0.0]}, "frame.points.O", "must be a point [x, y] (got [0.0])"),
+    Case("frame-point-table", {"frame.points.O": {"x": 0.0, "y": 0.0}}, "frame.points.O",
+         "must be a point [x, y] (got {'x': 0.0, 'y': 0.0})"),
+    Case("frame-point-string", {"frame.points.C": ["0", 0.55]}, "frame.points.C[0]",
+         "must be a number, not a string (got '0')"),
+    Case("frame-point-nan", {"frame.points.C": [0.0, NAN]}, "frame.points.C[1]", "must be a finite number (got nan)"),
+    Case("frame-point-inf", {"frame.points.O": [-INF, 0.0]}, "frame.points.O[0]", "must be a finite number (got -inf)"),
+    Case("frame-unknown-key", {"frame.pionts": {}}, "frame.pionts", "unknown key; did you mean 'points'?"),
+    Case("frame-line-name", {"frame.lines": {"L": "M"}}, "frame.lines.L",
+         "a frame line needs through and angle, on the frame"),
+    Case("frame-line-on-moving-link", {"frame.lines": {"L": {"link": 2, "through": "A"}}}, "frame.lines.L",
+         "a frame line needs through and angle, on the frame"),
+    Case("frame-line-number", {"frame.lines": {"L": 0.0}}, "frame.lines.L", "must be a table, not a number (got 0.0)"),
+    Case("frame-line-through-missing", {"frame.lines": {"L": {"angle": 0.0}}}, "frame.lines.L.through",
+         "is required but missing"),
+    Case("frame-line-angle-nan", {"frame.lines": {"L": {"through": [0.0, 0.0], "angle": NAN}}}, "frame.lines.L.angle",
+         "must be a finite number (got nan)"),
+    Case("frame-line-unknown-key", {"frame.lines": {"L": {"through": [0.0, 0.0], "angel": 0.0}}},
+         "frame.lines.L.angel", "unknown key; did you mean 'angle'?"),
+
+    # -- [driver], a crank
+    Case("crank-kind-missing", {"driver.kind": DELETE}, "driver.kind", "is required but missing"),
+    Case("crank-kind-unknown", {"driver.kind": "rocker"}, "driver.kind", "must be one of crank, slider (got 'rocker')"),
+    Case("crank-kind-near-miss", {"driver.kind": "crnak"}, "driver.kind",
+         "must be one of crank, slider; did you mean 'crank'? (got 'crnak')"),
+    Case("crank-kind-number", {"driver.kind": 1}, "driver.kind", "must be a string, not an integer (got 1)"),
+    Case("crank-link-missing", {"driver.link": DELETE}, "driver.link", "is required but missing"),
+    Case("crank-link-zero", {"driver.link": 0}, "driver.link", "must be >= 1 (got 0)"),
+    Case("crank-link-string", {"driver.link": "2"}, "driver.link", "must be an integer, not a string (got '2')"),
+    Case("crank-link-is-frame", {"driver.link": 1}, "driver.link",
+         "link 1 already belongs to the frame; a group's links are new", stage="build"),
+    Case("crank-pivot-missing", {"driver.pivot": DELETE}, "driver.pivot", "is required but missing"),
+    Case("crank-pivot-number", {"driver.pivot": 0}, "driver.pivot", "must be a string, not an integer (got 0)"),
+    Case("crank-pivot-unknown", {"driver.pivot": "Q"}, "driver.pivot",
+         "must be a point of [frame] points: O, C (got 'Q')", stage="build"),
+    Case("crank-joint-missing", {"driver.joint": DELETE}, "driver.joint", "is required but missing"),
+    Case("crank-joint-empty", {"driver.joint": ""}, "driver.joint", "must not be empty"),
+    Case("crank-joint-is-frame-point", {"driver.joint": "C"}, "driver.joint",
+         "'C' is already a frame point; the driver's joint is new", stage="build"),
+    Case("crank-joint-is-pivot", {"driver.joint": "O"}, "driver.joint",
+         "'O' is already a frame point; the driver's joint is new", stage="build"),
+    Case("crank-length-missing", {"driver.length": DELETE}, "driver.length", "is required but missing"),
+    Case("crank-length-string", {"driver.length": "0.175"}, "driver.length",
+         "must be a number, not a string (got '0.175')"),
+    Case("crank-length-bool", {"driver.length": True}, "driver.length", "must be a number, not a boolean (got True)"),
+    Case("crank-length-list", {"driver.length": [0.175]}, "driver.length", "must be a number, not a list (got [0.175])"),
+    Case("crank-length-zero", {"driver.length": 0}, "driver.length", "must be > 0 (got 0)"),
+    Case("crank-length-negative", {"driver.length": -0.175}, "driver.length", "must be > 0 (got -0.175)"),
+    Case("crank-length-nan", {"driver.length": NAN}, "driver.length", "must be a finite number (got nan)"),
+    Case("crank-length-inf", {"driver.length": INF}, "driver.length", "must be a finite number (got inf)"),
+    Case("crank-omega-and-rpm", {"driver.rpm": -162.3}, "driver", "give omega or rpm, not both"),
+    Case("crank-omega-zero", {"driver.omega": 0.0}, "driver.omega", "must not be zero: the driver must move"),
+    Case("crank-omega-integer-zero", {"driver.omega": 0}, "driver.omega", "must not be zero: the driver must move"),
+    Case("crank-rpm-zero", {"driver.omega": DELETE, "driver.rpm": 0.0}, "driver.rpm",
+         "must not be zero: the driver must move"),
+    Case("crank-omega-missing", {"driver.omega": DELETE}, "driver.omega", "is required but missing"),
+    Case("crank-omega-string", {"driver.omega": "-17"}, "driver.omega", "must be a number, not a string (got '-17')"),
+    Case("crank-omega-nan", {"driver.omega": NAN}, "driver.omega", "must be a finite number (got nan)"),
+    Case("crank-omega-minus-inf", {"driver.omega": -INF}, "driver.omega", "must be a finite number (got -inf)"),
+    Case("crank-rpm-string", {"driver.omega": DELETE, "driver.rpm": "162"}, "driver.rpm",
+         "must be a number, not a string (got '162')"),
+    Case("crank-rpm-inf", {"driver.omega": DELETE, "driver.rpm": INF}, "driver.rpm", "must be a finite number (got inf)"),
+    Case("crank-epsilon-nan", {"driver.epsilon": NAN}, "driver.epsilon", "must be a finite number (got nan)"),
+    Case("crank-epsilon-bool", {"driver.epsilon": False}, "driver.epsilon",
+         "must be a number, not a boolean (got False)"),
+    Case("crank-unknown-key", {"driver.lenght": 0.2}, "driver.lenght", "unknown key; did you mean 'length'?"),
+    Case("crank-unknown-key-omega", {"driver.omgea": 1.0}, "driver.omgea", "unknown key; did you mean 'omega'?"),
+    Case("crank-slider-key", {"driver.travel": [0.0, 1.0]}, "driver.travel", "unknown key"),
+
+    # -- [driver], a slider
+    Case("slider-guide-missing", {"driver.guide": DELETE}, "driver.guide", "is required but missing",
+         base="SLIDER_DRIVEN"),
+    Case("slider-guide-list", {"driver.guide": [0.0, 0.0]}, "driver.guide",
+         "must be a table, not a list (got [0.0, 0.0])", base="SLIDER_DRIVEN"),
+    Case("slider-guide-on-moving-link", {"driver.guide": {"link": 3, "through": "B"}}, "driver.guide",
+         "a driving slider must slide on a frame guide", stage="build", base="SLIDER_DRIVEN"),
+    Case("slider-guide-unknown-line", {"driver.guide": "rail"}, "driver.guide",
+         "no frame line 'rail'; [frame] lines has none", stage="build", base="SLIDER_DRIVEN"),
+    Case("slider-guide-unknown-point", {"driver.guide": {"through": "Z"}}, "driver.guide.through",
+         "must be a point fixed on link 1: C, O (got 'Z')", stage="build", base="SLIDER_DRIVEN"),
+    Case("slider-guide-unknown-key", {"driver.guide.angel": 0.0}, "driver.guide.angel",
+         "unknown key; did you mean 'angle'?", base="SLIDER_DRIVEN"),
+    Case("slider-velocity-missing", {"driver.velocity": DELETE}, "driver.velocity", "is required but missing",
+         base="SLIDER_DRIVEN"),
+    Case("slider-velocity-zero", {"driver.velocity": 0.0}, "driver.velocity",
+         "must not be zero: the driver must move", base="SLIDER_DRIVEN"),
+    Case("slider-velocity-nan", {"driver.velocity": NAN}, "driver.velocity", "must be a finite number (got nan)",
+         base="SLIDER_DRIVEN"),
+    Case("slider-acceleration-string", {"driver.acceleration": "0"}, "driver.acceleration",
+         "must be a number, not a string (got '0')", base="SLIDER_DRIVEN"),
+    Case("slider-travel-missing", {"driver.travel": DELETE}, "driver.travel", "is required but missing",
+         base="SLIDER_DRIVEN"),
+    Case("slider-travel-empty-stroke", {"driver.travel": [0.2, 0.2]}, "driver.travel",
+         "must span a stroke: [from, to] with from ≠ to (got [0.2, 0.2])", base="SLIDER_DRIVEN"),
+    Case("slider-travel-three", {"driver.travel": [0.0, 0.1, 0.2]}, "driver.travel",
+         "must have 2 entries, not 3 (got [0.0, 0.1, 0.2])", base="SLIDER_DRIVEN"),
+    Case("slider-travel-number", {"driver.travel": 0.2}, "driver.travel", "must be a list, not a number (got 0.2)",
+         base="SLIDER_DRIVEN"),
+    Case("slider-travel-inf", {"driver.travel": [0.0, INF]}, "driver.travel[1]", "must be a finite number (got inf)",
+         base="SLIDER_DRIVEN"),
+    Case("slider-unknown-key", {"driver.omega": 1.0}, "driver.omega", "unknown key", base="SLIDER_DRIVEN"),
+    Case("slider-positions-start", {"positions.start": 0.0}, "positions.start",
+         "a slider driver's positions run over driver.travel: leave start out", base="SLIDER_DRIVEN"),
+
+    # -- [[groups]]: what every kind shares
+    Case("group-kind-missing", {"groups.0.kind": DELETE}, "groups[0].kind", "is required but missing"),
+    Case("group-kind-unknown", {"groups.0.kind": "triad"}, "groups[0].kind",
+         "must be one of RRR, RRP, RPR, PRP, RPP (got 'triad')"),
+    Case("group-kind-near-miss", {"groups.0.kind": "RRRR"}, "groups[0].kind",
+         "must be one of RRR, RRP, RPR, PRP, RPP; did you mean 'RRR'? (got 'RRRR')"),
+    Case("group-links-missing", {"groups.0.links": DELETE}, "groups[0].links", "is required but missing"),
+    Case("group-links-string", {"groups.0.links": "3,4"}, "groups[0].links", "must be a list, not a string (got '3,4')"),
+    Case("group-links-one", {"groups.0.links": [3]}, "groups[0].links", "must have 2 entries, not 1 (got [3])"),
+    Case("group-links-item-string", {"groups.0.links": [3, "4"]}, "groups[0].links[1]",
+         "must be an integer, not a string (got '4')"),
+    Case("group-links-item-float", {"groups.0.links": [3.0, 4]}, "groups[0].links[0]",
+         "must be an integer, not a number (got 3.0)"),
+    Case("group-links-zero", {"groups.0.links": [0, 4]}, "groups[0].links[0]", "must be a link number >= 1 (got 0)"),
+    Case("group-links-same", {"groups.0.links": [3, 3]}, "groups[0].links", "must name two different links (got [3, 3])"),
+    Case("group-links-reuse-driver", {"groups.0.links": [2, 4]}, "groups[0].links",
+         "link 2 already belongs to an earlier group; a group's links are new", stage="build"),
+    Case("group-links-reuse-frame", {"groups.0.links": [3, 1]}, "groups[0].links",
+         "link 1 already belongs to the frame; a group's links are new", stage="build"),
+    Case("group-joints-missing", {"groups.0.joints": DELETE}, "groups[0].joints", "is required but missing"),
+    Case("group-joints-two", {"groups.0.joints": ["A", "B"]}, "groups[0].joints",
+         "must have 3 entries, not 2 (got ['A', 'B'])"),
+    Case("group-joints-same", {"groups.0.joints": ["A", "A", "C"]}, "groups[0].joints",
+         "must name different joints (got ['A', 'A', 'C'])"),
+    Case("group-joints-number", {"groups.0.joints": [1, "B", "C"]}, "groups[0].joints[0]",
+         "must be a string, not an integer (got 1)"),
+    Case("group-joints-empty", {"groups.0.joints": ["A", "", "C"]}, "groups[0].joints[1]", "must not be empty"),
+    Case("group-joint-unknown", {"groups.0.joints": ["A", "B", "X"]}, "groups[0].joints[2]",
+         f"'X' {UNKNOWN_AT_THIS_STAGE}", stage="build"),
+    Case("group-joint-unknown-near-miss", {"groups.0.joints": ["A", "B", "CC"]}, "groups[0].joints[2]",
+         f"'CC' {UNKNOWN_AT_THIS_STAGE}; did you mean 'C'?", stage="build"),
+    Case("group-new-joint-exists", {"groups.0.joints": ["A", "C", "O"]}, "groups[0].joints[1]",
+         "'C' is already a known point; a group's inner joint is new", stage="build"),
+
+    # -- RRR
+    Case("rrr-lengths-missing", {"groups.0.lengths": DELETE}, "groups[0].lengths", "is required but missing"),
+    Case("rrr-lengths-table", {"groups.0.lengths": {"AB": 0.55, "BC": 0.325}}, "groups[0].lengths",
+         "must be a list, not a table (got {'AB': 0.55, 'BC': 0.325})"),
+    Case("rrr-lengths-one", {"groups.0.lengths": [0.55]}, "groups[0].lengths", "must have 2 entries, not 1 (got [0.55])"),
+    Case("rrr-lengths-negative", {"groups.0.lengths.1": -0.325}, "groups[0].lengths[1]", "must be > 0 (got -0.325)"),
+    Case("rrr-lengths-zero", {"groups.0.lengths.0": 0}, "groups[0].lengths[0]", "must be > 0 (got 0)"),
+    Case("rrr-lengths-nan", {"groups.0.lengths.1": NAN}, "groups[0].lengths[1]", "must be a finite number (got nan)"),
+    Case("rrr-lengths-inf", {"groups.0.lengths.0": INF}, "groups[0].lengths[0]", "must be a finite number (got inf)"),
+    Case("rrr-lengths-string", {"groups.0.lengths.0": "0.55"}, "groups[0].lengths[0]",
+         "must be a number, not a string (got '0.55')"),
+    Case("rrr-lengths-bool", {"groups.0.lengths.1": True}, "groups[0].lengths[1]",
+         "must be a number, not a boolean (got True)"),
+    Case("rrr-unknown-key-beside-lengths", {"groups.0.lenghts": [0.55, 0.325]}, "groups[0].lenghts",
+         "unknown key; did you mean 'lengths'?"),
+    Case("rrr-rrp-key", {"groups.0.length": 0.55}, "groups[0].length", "unknown key; did you mean 'lengths'?"),
+    Case("rrr-assembly-unknown", {"groups.0.assembly": "up"}, "groups[0].assembly",
+         "must be one of left, right (got 'up')"),
+    Case("rrr-assembly-near-miss", {"groups.0.assembly": "lefft"}, "groups[0].assembly",
+         "must be one of left, right; did you mean 'left'? (got 'lefft')"),
+    Case("rrr-assembly-of-rrp", {"groups.0.assembly": "forward"}, "groups[0].assembly",
+         "must be one of left, right (got 'forward')"),
+    Case("rrr-assembly-and-near", {"groups.0.near": [0.3, 0.6]}, "groups[0]", "give assembly or near, not both"),
+    Case("rrr-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0]",
+         "needs assembly (left or right) or near = [x, y] to choose the branch"),
+    Case("rrr-near-short", {"groups.0.assembly": DELETE, "groups.0.near": [0.3]}, "groups[0].near",
+         "must be a point [x, y] (got [0.3])"),
+    Case("rrr-near-nan", {"groups.0.assembly": DELETE, "groups.0.near": [NAN, 0.6]}, "groups[0].near[0]",
+         "must be a finite number (got nan)"),
+
+    # -- RRP
+    Case("rrp-length-missing", {"groups.0.length": DELETE}, "groups[0].length", "is required but missing",
+         base="SLIDER_CRANK"),
+    Case("rrp-length-zero", {"groups.0.length": 0.0}, "groups[0].length", "must be > 0 (got 0.0)", base="SLIDER_CRANK"),
+    Case("rrp-length-negative", {"groups.0.length": -0.4}, "groups[0].length", "must be > 0 (got -0.4)",
+         base="SLIDER_CRANK"),
+    Case("rrp-length-list", {"groups.0.length": [0.4]}, "groups[0].length",
+         "must be a number, not a list (got [0.4])", base="SLIDER_CRANK"),
+    Case("rrp-guide-missing", {"groups.0.guide": DELETE}, "groups[0].guide", "is required but missing",
+         base="SLIDER_CRANK"),
+    Case("rrp-guide-number", {"groups.0.guide": 0.0}, "groups[0].guide", "must be a table, not a number (got 0.0)",
+         base="SLIDER_CRANK"),
+    Case("rrp-guide-through-missing", {"groups.0.guide.through": DELETE}, "groups[0].guide.through",
+         "is required but missing", base="SLIDER_CRANK"),
+    Case("rrp-guide-through-short", {"groups.0.guide.through": [0.0]}, "groups[0].guide.through",
+         "must be a point [x, y] (got [0.0])", base="SLIDER_CRANK"),
+    Case("rrp-guide-angle-string", {"groups.0.guide.angle": "0"}, "groups[0].guide.angle",
+         "must be a number, not a string (got '0')", base="SLIDER_CRANK"),
+    Case("rrp-guide-angle-inf", {"groups.0.guide.angle": INF}, "groups[0].guide.angle",
+         "must be a finite number (got inf)", base="SLIDER_CRANK"),
+    Case("rrp-guide-link-zero", {"groups.0.guide": {"link": 0, "through": "O"}}, "groups[0].guide.link",
+         "must be >= 1 (got 0)", base="SLIDER_CRANK"),
+    Case("rrp-guide-unknown-key", {"groups.0.guide.angel": 0.0}, "groups[0].guide.angel",
+         "unknown key; did you mean 'angle'?", base="SLIDER_CRANK"),
+    Case("rrp-guide-coordinates-on-moving-link", {"groups.0.guide": {"link": 2, "through": [0.0, 0.0]}},
+         "groups[0].guide.through", "on a moving link must name a point of link 2 (got [0.0, 0.0])",
+         stage="build", base="SLIDER_CRANK"),
+    Case("rrp-guide-unknown-line", {"groups.0.guide": "rail"}, "groups[0].guide",
+         "no frame line 'rail'; [frame] lines has none", stage="build", base="SLIDER_CRANK"),
+    Case("rrp-guide-unknown-line-with-lines",
+         {"frame.lines": {"track": {"through": [0.0, 0.0]}}, "groups.0.guide": "rail"}, "groups[0].guide",
+         "no frame line 'rail'; [frame] lines has track", stage="build", base="SLIDER_CRANK"),
+    Case("rrp-guide-unknown-link", {"groups.0.guide": {"link": 9, "through": "A"}}, "groups[0].guide.link",
+         "link 9 is not known before this group (got 9)", stage="build", base="SLIDER_CRANK"),
+    Case("rrp-guide-on-own-link", {"groups.0.guide": {"link": 4, "through": "B"}}, "groups[0].guide.link",
+         "link 4 is not known before this group (got 4)", stage="build", base="SLIDER_CRANK"),
+    Case("rrp-guide-point-not-on-link", {"groups.0.guide": {"link": 2, "through": "Z"}}, "groups[0].guide.through",
+         "must be a point fixed on link 2: A, O (got 'Z')", stage="build", base="SLIDER_CRANK"),
+    Case("rrp-guide-point-not-on-frame", {"groups.0.guide": {"through": "A"}}, "groups[0].guide.through",
+         "must be a point fixed on link 1: O (got 'A')", stage="build", base="SLIDER_CRANK"),
+    Case("rrp-assembly-of-rrr", {"groups.0.assembly": "left"}, "groups[0].assembly",
+         "must be one of forward, backward (got 'left')", base="SLIDER_CRANK"),
+    Case("rrp-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0]",
+         "needs assembly (forward or backward) or near = [x, y] to choose the branch", base="SLIDER_CRANK"),
+    Case("rrp-unknown-key", {"groups.0.lenght": 0.4}, "groups[0].lenght", "unknown key; did you mean 'length'?",
+         base="SLIDER_CRANK"),
+    Case("rrp-joints-three", {"groups.0.joints": ["A", "B", "C"]}, "groups[0].joints",
+         "must have 2 entries, not 3 (got ['A', 'B', 'C'])", base="SLIDER_CRANK"),
+
+    # -- RPR
+    Case("rpr-offset-string", {"groups.0.offset": "0.1"}, "groups[0].offset",
+         "must be a number, not a string (got '0.1')", base="SLOTTED_LEVER"),
+    Case("rpr-offset-nan", {"groups.0.offset": NAN}, "groups[0].offset", "must be a finite number (got nan)",
+         base="SLOTTED_LEVER"),
+    Case("rpr-unknown-key", {"groups.0.offest": 0.1}, "groups[0].offest", "unknown key; did you mean 'offset'?",
+         base="SLOTTED_LEVER"),
+    Case("rpr-joint-unknown", {"groups.0.joints": ["A", "D"]}, "groups[0].joints[1]",
+         f"'D' {UNKNOWN_AT_THIS_STAGE}", stage="build", base="SLOTTED_LEVER"),
+
+    # -- PRP
+    Case("prp-guides-missing", {"groups.0.guides": DELETE}, "groups[0].guides", "is required but missing",
+         base="CROSSED_SLIDERS"),
+    Case("prp-guides-one", {"groups.0.guides": [{"through": [0.0, 0.0]}]}, "groups[0].guides",
+         "must have 2 entries, not 1 (got [{'through': [0.0, 0.0]}])", base="CROSSED_SLIDERS"),
+    Case("prp-guide-item-number", {"groups.0.guides.1": 90.0}, "groups[0].guides[1]",
+         "must be a table, not a number (got 90.0)", base="CROSSED_SLIDERS"),
+    Case("prp-guide-unknown-link", {"groups.0.guides.1": {"link": 9, "through": "A"}}, "groups[0].guides[1].link",
+         "link 9 is not known before this group (got 9)", stage="build", base="CROSSED_SLIDERS"),
+    Case("prp-guide-unknown-line", {"groups.0.guides.0": "rail"}, "groups[0].guides[0]",
+         "no frame line 'rail'; [frame] lines has none", stage="build", base="CROSSED_SLIDERS"),
+    Case("prp-offsets-string", {"groups.0.offsets": ["a", 0.0]}, "groups[0].offsets[0]",
+         "must be a number, not a string (got 'a')", base="CROSSED_SLIDERS"),
+    Case("prp-offsets-one", {"groups.0.offsets": [0.1]}, "groups[0].offsets",
+         "must have 2 entries, not 1 (got [0.1])", base="CROSSED_SLIDERS"),
+    Case("prp-unknown-key", {"groups.0.ofsets": [0.0, 0.0]}, "groups[0].ofsets",
+         "unknown key; did you mean 'offsets'?", base="CROSSED_SLIDERS"),
+    Case("prp-joint-exists", {"groups.0.joints": ["A"]}, "groups[0].joints[0]",
+         "'A' is already a known point; a group's inner joint is new", stage="build", base="CROSSED_SLIDERS"),
+
+    # -- RPP
+    Case("rpp-slot-along-guide", {"groups.0.angle": 0.0}, "groups[0].angle",
+         "the slot must not be parallel to the guide (got 0.0)", base="SCOTCH_YOKE"),
+    Case("rpp-slot-against-guide", {"groups.0.angle": 180.0}, "groups[0].angle",
+         "the slot must not be parallel to the guide (got 180.0)", base="SCOTCH_YOKE"),
+    Case("rpp-angle-nan", {"groups.0.angle": NAN}, "groups[0].angle", "must be a finite number (got nan)",
+         base="SCOTCH_YOKE"),
+    Case("rpp-guide-missing", {"groups.0.guide": DELETE}, "groups[0].guide", "is required but missing",
+         base="SCOTCH_YOKE"),
+    Case("rpp-guide-unknown-point", {"groups.0.guide": {"link": 2, "through": "B"}}, "groups[0].guide.through",
+         "must be a point fixed on link 2: A, O (got 'B')", stage="build", base="SCOTCH_YOKE"),
+    Case("rpp-unknown-key", {"groups.0.slot": 90.0}, "groups[0].slot", "unknown key", base="SCOTCH_YOKE"),
+
+    # -- [points]
+    Case("point-not-a-table", {"points.S2": 0.08}, "points.S2", "must be a table, not a number (got 0.08)"),
+    Case("point-link-missing", {"points.S3.link": DELETE}, "points.S3.link", "is required but missing"),
+    Case("point-link-zero", {"points.S3.link": 0}, "points.S3.link", "must be >= 1 (got 0)"),
+    Case("point-from-missing", {"points.S3.from": DELETE}, "points.S3.from", "is required but missing"),
+    Case("point-from-number", {"points.S3.from": 1}, "points.S3.from", "must be a string, not an integer (got 1)"),
+    Case("point-toward-missing", {"points.S3.toward": DELETE}, "points.S3.toward", "is required but missing"),
+    Case("point-at-missing", {"points.S3.at": DELETE}, "points.S3.at", "is required but missing"),
+    Case("point-at-string", {"points.S3.at": "0.24"}, "points.S3.at", "must be a number, not a string (got '0.24')"),
+    Case("point-at-nan", {"points.S3.at": NAN}, "points.S3.at", "must be a finite number (got nan)"),
+    Case("point-offset-inf", {"points.E.offset": INF}, "points.E.offset", "must be a finite number (got inf)"),
+    Case("point-unknown-key", {"points.S3.ofset": 0.1}, "points.S3.ofset", "unknown key; did you mean 'offset'?"),
+    Case("point-named-like-joint", {"points.B": {"link": 3, "from": "A", "toward": "E", "at": 0.1}}, "points.B",
+         "'B' is already a joint's name", stage="build"),
+    Case("point-named-like-frame-point", {"points.C": {"link": 3, "from": "A", "toward": "B", "at": 0.1}}, "points.C",
+         "'C' is already a joint's name", stage="build"),
+    Case("point-on-unknown-link", {"points.S3.link": 9}, "points.S3.link",
+         "no link 9 in the mechanism; links are 1, 2, 3, 4 (got 9)", stage="build"),
+    Case("point-from-not-on-link", {"points.S3.from": "C"}, "points.S3.from",
+         "'C' is not a point of link 3; its points are A, B, E", stage="build"),
+    Case("point-toward-not-on-link", {"points.S4.toward": "A"}, "points.S4.toward",
+         "'A' is not a point of link 4; its points are B, C", stage="build"),
+    Case("point-from-is-toward", {"points.S3.toward": "A"}, "points.S3.toward",
+         "from and toward are both 'A'; they must be two points of link 3", stage="build"),
+    Case("point-cycle", {"points.S": {"link": 3, "from": "T", "toward": "A", "at": 0.1},
+                         "points.T": {"link": 3, "from": "S", "toward": "A", "at": 0.1}}, "points.S.from",
+         "'T' refers back to 'S' through the named points S, T (a cyclic reference)", stage="build"),
+    Case("point-refers-to-itself", {"points.S": {"link": 3, "from": "S", "toward": "A", "at": 0.1}}, "points.S.from",
+         "'S' is the point itself; name two other points of link 3", stage="build"),
+    Case("point-from-and-toward-coincide",
+         {"frame.points.P": [0.0, 0.0], "points.Q": {"link": 1, "from": "O", "toward": "P", "at": 0.1}}, "points.Q",
+         "from 'O' and toward 'P' coincide, so they give no direction", stage="solve"),
+
+    # -- [links]
+    Case("links-not-numbered", {"links.x": {"mass": 1.0}}, "links.x", "links are numbered: write [links.3]"),
+    Case("links-zero", {"links.0": {"mass": 1.0}}, "links.0", "links are numbered: write [links.3]"),
+    Case("links-entry-number", {"links.3": 17.0}, "links.3", "must be a table, not a number (got 17.0)"),
+    Case("links-mass-negative", {"links.3.mass": -17.0}, "links.3.mass", "must be >= 0 (got -17.0)"),
+    Case("links-mass-string", {"links.3.mass": "17"}, "links.3.mass", "must be a number, not a string (got '17')"),
+    Case("links-mass-nan", {"links.3.mass": NAN}, "links.3.mass", "must be a finite number (got nan)"),
+    Case("links-inertia-negative", {"links.4.inertia": -0.18}, "links.4.inertia", "must be >= 0 (got -0.18)"),
+    Case("links-inertia-inf", {"links.4.inertia": INF}, "links.4.inertia", "must be a finite number (got inf)"),
+    Case("links-centre-number", {"links.3.centre": 3}, "links.3.centre", "must be a string, not an integer (got 3)"),
+    Case("links-unknown-key", {"links.3.center": "S3"}, "links.3.center", "unknown key; did you mean 'centre'?"),
+    Case("links-missing-link", {"links.9": {"mass": 1.0}}, "links.9", "no link 9 in the mechanism; links are 1, 2, 3, 4",
+         stage="build"),
+    Case("links-centre-not-on-link", {"links.3.centre": "S4"}, "links.3.centre",
+         "must be a point fixed on link 3: A, B, E, S3 (got 'S4')", stage="build"),
+    Case("links-centre-unknown", {"links.2.centre": "S9"}, "links.2.centre",
+         "must be a point fixed on link 2: A, O, S2 (got 'S9')", stage="build"),
+
+    # -- [[loads]]
+    Case("load-kind-missing", {"loads.0.kind": DELETE}, "loads[0].kind", "is required but missing"),
+    Case("load-kind-unknown", {"loads.0.kind": "pressure"}, "loads[0].kind",
+         "must be one of moment, force (got 'pressure')"),
+    Case("load-kind-near-miss", {"loads.0.kind": "momnet"}, "loads[0].kind",
+         "must be one of moment, force; did you mean 'moment'? (got 'momnet')"),
+    Case("load-link-missing", {"loads.0.link": DELETE}, "loads[0].link", "is required but missing"),
+    Case("load-link-zero", {"loads.0.link": 0}, "loads[0].link", "must be >= 1 (got 0)"),
+    Case("load-value-missing", {"loads.0.value": DELETE}, "loads[0].value", "is required but missing"),
+    Case("load-value-string", {"loads.0.value": "1500"}, "loads[0].value", "must be a number, not a string (got '1500')"),
+    Case("load-value-nan", {"loads.0.value": NAN}, "loads[0].value", "must be a finite number (got nan)"),
+    Case("load-resisting-string", {"loads.0.resisting": "yes"}, "loads[0].resisting",
+         "must be true or false, not a string (got 'yes')"),
+    Case("load-resisting-number", {"loads.0.resisting": 1}, "loads[0].resisting",
+         "must be true or false, not an integer (got 1)"),
+    Case("load-during-unknown", {"loads.0.during": "sometimes"}, "loads[0].during",
+         "must be one of working, idle, always (got 'sometimes')"),
+    Case("load-during-near-miss", {"loads.0.during": "work"}, "loads[0].during",
+         "must be one of working, idle, always; did you mean 'working'? (got 'work')"),
+    Case("load-during-number", {"loads.0.during": 0.5}, "loads[0].during", "must be a string, not a number (got 0.5)"),
+    Case("load-during-window-backwards", {"loads.0.during": {"from": 0.9, "to": 0.2}}, "loads[0].during",
+         "must be a window 0 <= from < to <= 1 of the working stroke (got {'from': 0.9, 'to': 0.2})"),
+    Case("load-during-window-past-end", {"loads.0.during.to": 1.5}, "loads[0].during",
+         "must be a window 0 <= from < to <= 1 of the working stroke (got {'from': 0.0, 'to': 1.5})"),
+    Case("load-during-window-to-missing", {"loads.0.during.to": DELETE}, "loads[0].during.to",
+         "is required but missing"),
+    Case("load-during-window-nan", {"loads.0.during.from": NAN}, "loads[0].during.from",
+         "must be a finite number (got nan)"),
+    Case("load-during-window-unknown-key", {"loads.0.during.too": 1.0}, "loads[0].during.too",
+         "unknown key; did you mean 'to'?"),
+    Case("load-force-without-point", {"loads.0.kind": "force"}, "loads[0]",
+         "a force needs point (where it acts) and angle (its direction, degrees)"),
+    Case("load-force-without-angle", {"loads.0.kind": "force", "loads.0.point": "B"}, "loads[0]",
+         "a force needs point (where it acts) and angle (its direction, degrees)"),
+    Case("load-angle-string", {"loads.0.kind": "force", "loads.0.point": "B", "loads.0.angle": "90"},
+         "loads[0].angle", "must be a number, not a string (got '90')"),
+    Case("load-unknown-key", {"loads.0.resistant": True}, "loads[0].resistant",
+         "unknown key; did you mean 'resisting'?"),
+    Case("load-on-missing-link", {"loads.0.link": 9}, "loads[0].link", "no link 9 in the mechanism (got 9)",
+         stage="build"),
+    Case("load-point-not-on-link", {"loads.0.kind": "force", "loads.0.point": "A", "loads.0.angle": 90.0},
+         "loads[0].point", "must be a point fixed on link 4 (got 'A')", stage="build"),
+
+    # -- [positions]
+    Case("positions-count-zero", {"positions.count": 0}, "positions.count", "must be >= 1 (got 0)"),
+    Case("positions-count-negative", {"positions.count": -12}, "positions.count", "must be >= 1 (got -12)"),
+    Case("positions-count-too-many", {"positions.count": 100_001}, "positions.count", "must be <= 100000 (got 100001)"),
+    Case("positions-count-float", {"positions.count": 12.0}, "positions.count",
+         "must be an integer, not a number (got 12.0)"),
+    Case("positions-count-string", {"positions.count": "12"}, "positions.count",
+         "must be an integer, not a string (got '12')"),
+    Case("positions-count-bool", {"positions.count": True}, "positions.count",
+         "must be an integer, not a boolean (got True)"),
+    Case("positions-start-unknown", {"positions.start": "middle"}, "positions.start",
+         "must be one of extreme (got 'middle')"),
+    Case("positions-start-near-miss", {"positions.start": "extremes"}, "positions.start",
+         "must be one of extreme; did you mean 'extreme'? (got 'extremes')"),
+    Case("positions-start-bool", {"positions.start": True}, "positions.start",
+         "must be a number, not a boolean (got True)"),
+    Case("positions-start-nan", {"positions.start": NAN}, "positions.start", "must be a finite number (got nan)"),
+    Case("positions-extreme-without-working", {"positions.working": DELETE}, "positions.start",
+         "\"extreme\" needs working = { link, sense } to know which extreme"),
+    Case("positions-number-from-two", {"positions.number_from": 2}, "positions.number_from", "must be <= 1 (got 2)"),
+    Case("positions-number-from-negative", {"positions.number_from": -1}, "positions.number_from",
+         "must be >= 0 (got -1)"),
+    Case("positions-working-string", {"positions.working": "4"}, "positions.working",
+         "must be a table, not a string (got '4')"),
+    Case("positions-working-link-missing", {"positions.working.link": DELETE}, "positions.working.link",
+         "is required but missing"),
+    Case("positions-working-sense-missing", {"positions.working.sense": DELETE}, "positions.working.sense",
+         "is required but missing"),
+    Case("positions-working-sense-unknown", {"positions.working.sense": "up"}, "positions.working.sense",
+         "must be one of ccw, cw, forward, backward (got 'up')"),
+    Case("positions-working-sense-near-miss", {"positions.working.sense": "cww"}, "positions.working.sense",
+         "must be one of ccw, cw, forward, backward; did you mean 'cw'? (got 'cww')"),
+    Case("positions-working-unknown-key", {"positions.working.sens": "cw"}, "positions.working.sens",
+         "unknown key; did you mean 'sense'?"),
+    Case("positions-working-missing-link", {"positions.working.link": 9}, "positions.working.link",
+         "must be a moving link of the mechanism: 2, 3, 4 (got 9)", stage="build"),
+    Case("positions-working-frame", {"positions.working.link": 1}, "positions.working.link",
+         "must be a moving link of the mechanism: 2, 3, 4 (got 1)", stage="build"),
+    Case("positions-working-translating-ccw", {"positions.working.sense": "ccw"}, "positions.working.sense",
+         "link 4 translates: use forward or backward (along its guide) (got 'ccw')", stage="build",
+         base="SLIDER_CRANK"),
+    Case("positions-working-turning-forward", {"positions.working.link": 3}, "positions.working.sense",
+         "link 3 turns: use ccw or cw (got 'forward')", stage="build", base="SLIDER_CRANK"),
+    Case("positions-working-never-reverses", {"positions.working.link": 2, "positions.working.sense": "cw"},
+         "positions.working", "link 2 never reverses its motion, so it has no extreme position", stage="solve"),
+    Case("positions-plans-past-end", {"positions.plans": [5, 12]}, "positions.plans[1]",
+         "must be a position number from 0 to 11 (got 12)"),
+    Case("positions-plans-negative", {"positions.plans": [-1]}, "positions.plans[0]",
+         "must be a position number from 0 to 11 (got -1)"),
+    Case("positions-plans-zero-numbered-from-one", {"positions.number_from": 1, "positions.plans": [0],
+                                                   "measured": DELETE}, "positions.plans[0]",
+         "must be a position number from 1 to 12 (got 0)"),
+    Case("positions-plans-string", {"positions.plans": ["5"]}, "positions.plans[0]",
+         "must be an integer, not a string (got '5')"),
+    Case("positions-plans-float", {"positions.plans": [5.0]}, "positions.plans[0]",
+         "must be an integer, not a number (got 5.0)"),
+    Case("positions-plans-number", {"positions.plans": 5}, "positions.plans", "must be a list, not an integer (got 5)"),
+    Case("positions-unknown-key", {"positions.cuont": 12}, "positions.cuont", "unknown key; did you mean 'count'?"),
+
+    # -- [drawing]
+    Case("drawing-length-scale-zero", {"drawing.length_scale": 0}, "drawing.length_scale", "must be > 0 (got 0)"),
+    Case("drawing-length-scale-negative", {"drawing.length_scale": -0.0025}, "drawing.length_scale",
+         "must be > 0 (got -0.0025)"),
+    Case("drawing-length-scale-nan", {"drawing.length_scale": NAN}, "drawing.length_scale",
+         "must be a finite number (got nan)"),
+    Case("drawing-velocity-pole-string", {"drawing.velocity_pole": "150"}, "drawing.velocity_pole",
+         "must be a number, not a string (got '150')"),
+    Case("drawing-acceleration-pole-inf", {"drawing.acceleration_pole": INF}, "drawing.acceleration_pole",
+         "must be a finite number (got inf)"),
+    Case("drawing-precision-zero", {"drawing.drafting_precision": 0.0}, "drawing.drafting_precision",
+         "must be > 0 (got 0.0)"),
+    Case("drawing-velocity-scale-negative", {"drawing.velocity_pole": DELETE, "drawing.velocity_scale": -0.02},
+         "drawing.velocity_scale", "must be > 0 (got -0.02)"),
+    Case("drawing-velocity-pole-and-scale", {"drawing.velocity_scale": 0.02}, "drawing",
+         "give velocity_pole or velocity_scale, not both"),
+    Case("drawing-acceleration-pole-and-scale", {"drawing.acceleration_scale": 0.5}, "drawing",
+         "give acceleration_pole or acceleration_scale, not both"),
+    Case("drawing-sheet-unknown", {"drawing.sheet": "letter"}, "drawing.sheet",
+         "must be one of A1, A2, A3, A4, none (got 'letter')"),
+    Case("drawing-sheet-near-miss", {"drawing.sheet": "A5"}, "drawing.sheet",
+         "must be one of A1, A2, A3, A4, none; did you mean 'A4'? (got 'A5')"),
+    Case("drawing-sheet-number", {"drawing.sheet": 1}, "drawing.sheet", "must be a string, not an integer (got 1)"),
+    Case("drawing-unknown-key", {"drawing.sheets": "A1"}, "drawing.sheets", "unknown key; did you mean 'sheet'?"),
+
+    # -- [measured]
+    Case("measured-not-numbered", {"measured.five": {"velocity": {"pb": 39.0}}}, "measured.five",
+         "must be a position number: write [measured.5]"),
+    Case("measured-entry-number", {"measured.5": 39.0}, "measured.5", "must be a table, not a number (got 39.0)"),
+    Case("measured-plan-number", {"measured.5.velocity": 39.0}, "measured.5.velocity",
+         "must be a table, not a number (got 39.0)"),
+    Case("measured-reading-string", {"measured.5.velocity.pb": "39"}, "measured.5.velocity.pb",
+         "must be a number, not a string (got '39')"),
+    Case("measured-reading-negative", {"measured.5.velocity.pb": -39.0}, "measured.5.velocity.pb",
+         "must be >= 0 (got -39.0)"),
+    Case("measured-reading-nan", {"measured.5.acceleration.pb": NAN}, "measured.5.acceleration.pb",
+         "must be a finite number (got nan)"),
+    Case("measured-unknown-key", {"measured.5.velocty": {"pb": 39.0}}, "measured.5.velocty",
+         "unknown key; did you mean 'velocity'?"),
+    Case("measured-not-in-plans", {"measured.7": {"velocity": {"pb": 39.0}}}, "measured.7",
+         "position 7 is not in positions.plans [5, 11]", stage="build"),
+
+    # -- [output]
+    Case("output-include-string", {"output.include": "all"}, "output.include", "must be a list, not a string (got 'all')"),
+    Case("output-include-unknown", {"output.include": ["positions", "plans"]}, "output.include[1]",
+         "must be one of positions, velocity, acceleration, forces, lever, errors, note (got 'plans')"),
+    Case("output-include-near-miss", {"output.include": ["velocities"]}, "output.include[0]",
+         "must be one of positions, velocity, acceleration, forces, lever, errors, note; "
+         "did you mean 'velocity'? (got 'velocities')"),
+    Case("output-include-number", {"output.include": [1]}, "output.include[0]",
+         "must be a string, not an integer (got 1)"),
+    Case("output-unknown-key", {"output.include": DELETE, "output.includes": ["note"]}, "output.includes",
+         "unknown key; did you mean 'include'?"),
+]
+
+
+def test_case_ids_are_unique() -> None:
+    ids = [case.id for case in CASES]
+    assert len(ids) == len(set(ids))
+
+
+def _params(cases: list[Case]) -> list[Any]:
+    return [pytest.param(case, id=case.id,
+                         marks=[pytest.mark.xfail(strict=True, raises=AssertionError, reason=case.gap)] if case.gap else [])
+            for case in cases]
+
+
+@pytest.mark.parametrize("case", _params(CASES))
+def test_scene_error(case: Case) -> None:
+    stage, error = first_error(to_toml(variant(BASES[case.base], case.changes)))
+    assert type(error) is SceneError, f"{type(error).__name__}: {error}"
+    assert (stage, str(error)) == (case.stage, case.message)
+    assert error.where == case.where
+    assert isinstance(error, ValueError)
+
+
+# --- groups that need a second group ---------------------------------------------------------
+
+
+def two_groups(second: dict[str, Any], *, second_first: bool = False) -> str:
+    """The ratchet scene with a second group after (or, wrongly, before) the first."""
+    groups = [copy.deepcopy(RATCHET["groups"][0]), second]
+    return to_toml(variant(RATCHET, {"groups": groups[::-1] if second_first else groups}))
+
+
+def test_group_uses_a_joint_found_only_by_a_later_group() -> None:
+    second = {"kind": "RRR", "links": [5, 6], "joints": ["B", "D", "C"], "lengths": [0.3, 0.4], "assembly": "left"}
+    stage, error = first_error(two_groups(second, second_first=True))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == f"groups[0].joints[0]: 'B' {UNKNOWN_AT_THIS_STAGE}"
+
+
+def test_second_group_reuses_a_link() -> None:
+    second = {"kind": "RRR", "links": [4, 5], "joints": ["B", "D", "C"], "lengths": [0.3, 0.4], "assembly": "left"}
+    stage, error = first_error(two_groups(second))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == "groups[1].links: link 4 already belongs to an earlier group; a group's links are new"
+
+
+def test_second_group_finds_a_joint_the_first_found() -> None:
+    second = {"kind": "RRR", "links": [5, 6], "joints": ["A", "B", "C"], "lengths": [0.3, 0.4], "assembly": "left"}
+    stage, error = first_error(two_groups(second))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == "groups[1].joints[1]: 'B' is already a known point; a group's inner joint is new"
+
+
+def test_second_group_guide_on_a_link_of_the_first() -> None:
+    """A guide on a moving link names a point fixed on that link; here one that is not."""
+    second = {"kind": "RRP", "links": [5, 6], "joints": ["B", "D"], "length": 0.3,
+              "guide": {"link": 3, "through": "C"}, "assembly": "forward"}
+    stage, error = first_error(two_groups(second))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error) == "groups[1].guide.through: must be a point fixed on link 3: A, B, E, S3 (got 'C')"
+
+
+# --- the file itself: bytes, syntax, size, existence ----------------------------------------
+
+
+def test_non_utf8_bytes() -> None:
+    data = to_toml(RATCHET).encode("utf-8").replace(b"Crank-rocker", "Kurbelschwinge für".encode("cp1252"))
+    stage, error = first_error(data)
+    assert stage == "load" and type(error) is SceneError
+    position = data.index("ü".encode("cp1252"))
+    assert str(error) == f"<scene>: is not UTF-8 text (byte {position})"
+    assert error.where == "<scene>"
+
+
+def test_non_utf8_file(tmp_path: Path) -> None:
+    path = tmp_path / "latin1.toml"
+    path.write_bytes(b'[scene]\ntitle = "\xe9"\n')
+    with pytest.raises(SceneError) as caught:
+        graphplan.load(path)
+    assert str(caught.value) == f"{path}: is not UTF-8 text (byte 17)"
+    assert caught.value.where == str(path)
+
+
+@pytest.mark.parametrize("text, line", [
+    ('[scene]\ntitle = "x"\n[frame\n', 3),                       # unclosed table header
+    ('[scene]\ntitle = "x"\ngravity 9.81\n', 3),                 # no '='
+    ('[scene]\ntitle = "x"\ntitle = "y"\n', 3),                  # a key given twice
+    ('[driver]\nlength = 0.175.0\n', 2),                         # a malformed number
+    ('[driver]\nomega = NaN\n', 2),                              # TOML spells it nan
+], ids=["unclosed-header", "no-equals", "duplicate-key", "bad-number", "capital-nan"])
+def test_invalid_toml(text: str, line: int) -> None:
+    stage, error = first_error(text)
+    assert stage == "load" and type(error) is SceneError
+    assert str(error).startswith("<scene>: is not valid TOML: ")
+    assert f"line {line}" in str(error)
+    assert error.__cause__ is None and error.__suppress_context__
+
+
+def test_invalid_toml_names_the_file(tmp_path: Path) -> None:
+    path = tmp_path / "broken.toml"
+    path.write_text("[frame\n", encoding="utf-8")
+    with pytest.raises(SceneError, match=r"broken\.toml: is not valid TOML: .*line 1"):
+        graphplan.load(path)
+
+
+def test_file_over_the_size_limit(tmp_path: Path) -> None:
+    limit = scene_module.MAX_SCENE_BYTES
+    path = tmp_path / "huge.toml"
+    text = to_toml(RATCHET)
+    path.write_text(text + "#" * (limit + 1 - len(text.encode("utf-8")) - 1) + "\n", encoding="utf-8")
+    assert path.stat().st_size == limit + 1
+    with pytest.raises(SceneError) as caught:
+        graphplan.load(path)
+    assert str(caught.value) == f"{path}: is {limit + 1} bytes; a scene may have at most {limit}"
+
+
+def test_file_at_the_size_limit_is_read(tmp_path: Path) -> None:
+    limit = scene_module.MAX_SCENE_BYTES
+    path = tmp_path / "big.toml"
+    text = to_toml(RATCHET)
+    path.write_text(text + "#" * (limit - len(text.encode("utf-8")) - 1) + "\n", encoding="utf-8")
+    assert path.stat().st_size == limit
+    assert graphplan.load(path).title == "Crank-rocker of a ratchet feed"
+
+
+def test_bytes_over_the_size_limit() -> None:
+    limit = scene_module.MAX_SCENE_BYTES
+    with pytest.raises(SceneError) as caught:
+        scene_module.loads(b"#" * (limit + 1))
+    assert str(caught.value) == f"<scene>: is {limit + 1} bytes; a scene may have at most {limit}"
+
+
+def test_missing_file(tmp_path: Path) -> None:
+    path = tmp_path / "nowhere.toml"
+    with pytest.raises(SceneError) as caught:
+        graphplan.load(path)
+    assert str(caught.value) == f"{path}: cannot be read: No such file or directory"
+    assert caught.value.where == str(path)
+
+
+def test_directory_instead_of_file(tmp_path: Path) -> None:
+    with pytest.raises(SceneError) as caught:
+        graphplan.load(tmp_path)
+    assert str(caught.value) == f"{tmp_path}: cannot be read: Is a directory"
+
+
+def test_empty_document() -> None:
+    stage, error = first_error("")
+    assert (stage, str(error)) == ("load", "frame: is required but missing")
+
+
+# --- positions the mechanism cannot reach, or where it locks -------------------------------
+
+
+def test_rrr_too_short_to_reach() -> None:
+    """|AC| = √(0.29 − 0.2·cos φ) passes AB + BC = 0.6 m at φ ≈ 110.5°: position 5 (φ = 120°) is the first out."""
+    text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.4, 0.2]}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error) == ("B cannot be assembled at position 5 (φ = 120°) in group II(3,4): "
+                          "A–C = 0.6245 m > AB + BC = 0.6 m")
+    assert (error.joint, error.position, error.group) == ("B", "position 5 (φ = 120°)", "II(3,4)")
+    assert error.reason == "A–C = 0.6245 m > AB + BC = 0.6 m"
+    assert isinstance(error, ValueError)
+
+
+def test_rrr_too_short_position_numbers_follow_number_from() -> None:
+    text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.4, 0.2], "positions.number_from": 0}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert error.position == "position 4 (φ = 120°)"
+
+
+def test_rrr_too_short_for_an_explicit_driver_array() -> None:
+    scene = scene_module.loads(to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.4, 0.2]})))
+    with pytest.raises(AssemblyError) as caught:
+        graphplan.solve(scene, driver=np.radians([0.0, 90.0, 150.0]))
+    assert str(caught.value) == ("B cannot be assembled at φ = 150° in group II(3,4): "
+                                 "A–C = 0.680592 m > AB + BC = 0.6 m")
+
+
+def test_rrr_too_long_difference_at_the_first_position() -> None:
+    """|AB − BC| = 0.4 m > |AC| = 0.3 m at φ = 0: the branch cannot even be chosen."""
+    text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.5, 0.1]}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error) == "B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m"
+
+
+def test_rrr_too_short_with_near() -> None:
+    text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.5, 0.1], "groups.0.assembly": DELETE,
+                                      "groups.0.near": [0.3, 0.4]}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error) == "B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m"
+
+
+def test_rrr_toggle_is_singular() -> None:
+    """O–C = 1.25 m, OA = 0.25 m, AB = BC = 0.5 m: at φ = 0 the group is stretched straight."""
+    text = to_toml(variant(FOUR_BAR, {"frame.points.C": [1.25, 0.0], "driver.length": 0.25,
+                                      "groups.0.lengths": [0.5, 0.5]}))
+    stage, error = first_error(text, driver=[0.0])
+    assert stage == "solve" and type(error) is SingularPositionError
+    assert str(error) == "singular position at φ = 0° in group II(3,4): links 3 and 4 lie in one line (a toggle): the lines of action of the velocity plan are parallel (sine 0.0e+00)"
+    assert (error.position, error.group) == ("φ = 0°", "II(3,4)")
+    assert isinstance(error, ArithmeticError)
+
+
+def test_rrp_too_short_to_reach_the_guide() -> None:
+    text = to_toml(variant(SLIDER_CRANK, {"groups.0.length": 0.05, "positions.start": 0.0,
+                                          "positions.working": DELETE, "positions.plans": DELETE}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error) == ("B cannot be assembled at position 3 (φ = 60°) in group II(3,4): "
+                          "A is 0.0866025 m from the guide > AB = 0.05 m")
+
+
+def _rrp_toggle() -> str:
+    """O 0.5 m above the guide, OA = 0.2 m, AB = 0.7 m: at φ = 90° AB stands square on the guide."""
+    return to_toml(variant(SLIDER_CRANK, {"frame.points.O": [0.0, 0.5], "driver.length": 0.2,
+                                          "groups.0.length": 0.7, "positions.start": 0.0,
+                                          "positions.working": DELETE, "positions.plans": DELETE}))
+
+
+def test_rrp_toggle_is_singular() -> None:
+    stage, error = first_error(_rrp_toggle(), driver=[math.pi / 2])
+    assert stage == "solve" and type(error) is SingularPositionError
+    assert str(error).startswith("singular position at φ = 90° in group II(3,4): ")
+    assert error.reason.endswith("(sine 0.0e+00)")
+
+
+def test_rpr_offset_wider_than_the_reach() -> None:
+    text = to_toml(variant(SLOTTED_LEVER, {"groups.0.offset": 0.3}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error) == ("A cannot be assembled at position 8 (φ = 210°) in group II(3,4): "
+                          "A–C = 0.264575 m is not more than the slide's offset 0.3 m")
+
+
+def test_prp_parallel_guides_are_singular() -> None:
+    text = to_toml(variant(CROSSED_SLIDERS, {"groups.0.guides.1.angle": 180.0}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is SingularPositionError
+    assert str(error) == "singular position at φ = 0° in group II(3,4): the two guides are parallel"
+
+
+@pytest.mark.parametrize("driver, problem", [
+    ([], "must be a non-empty 1-D array of driver positions"),
+    ([[0.0, 1.0]], "must be a non-empty 1-D array of driver positions"),
+    ([0.0, float("nan")], "driver positions must be finite numbers"),
+    ([float("inf")], "driver positions must be finite numbers"),
+], ids=["empty", "two-dimensional", "nan", "inf"])
+def test_solve_rejects_bad_driver_arrays(driver: list[Any], problem: str) -> None:
+    scene = scene_module.loads(to_toml(FOUR_BAR))
+    with pytest.raises(SceneError) as caught:
+        graphplan.solve(scene, driver=driver)
+    assert str(caught.value) == f"driver: {problem}"
+
+
+def test_motion_lookups_name_what_exists() -> None:
+    """The Python interface: asking a solved motion for a point, link or slide it does not have."""
+    motion = graphplan.solve(graphplan.load(FIXTURE))
+    with pytest.raises(KeyError) as caught:
+        motion.point("Z")
+    assert caught.value.args[0] == "no point 'Z'; points are O, C, A, S2, B, S3, E, S4"
+    with pytest.raises(KeyError) as caught:
+        motion.link(9)
+    assert caught.value.args[0] == "no link 9; links are 1, 2, 3, 4"
+    with pytest.raises(KeyError) as caught:
+        motion.slide(3)
+    assert caught.value.args[0] == "link 3 slides in no pair"
+
+
+def test_toml_date_where_a_number_belongs() -> None:
+    """TOML's own types (dates, times) reach the type check as Python objects."""
+    stage, error = first_error('[scene]\ngravity = 2024-01-01\n')
+    assert stage == "load" and type(error) is SceneError
+    assert error.where == "scene.gravity" and str(error).startswith("scene.gravity: must be a number, not ")
+
+
+# --- once gaps, now fixed: each test pins the better behaviour ----------------------------------
+
+
+def test_misspelt_required_key_suggests_the_right_one() -> None:
+    groups = [{k if k != "lengths" else "lenghts": v for k, v in RATCHET["groups"][0].items()}]
+    stage, error = first_error(to_toml(variant(RATCHET, {"groups": groups})))
+    assert stage == "load" and type(error) is SceneError
+    assert "lenghts" in str(error) and "did you mean 'lengths'?" in str(error)
+
+
+def test_misspelt_omega_suggests_omega() -> None:
+    driver = {k if k != "omega" else "omgea": v for k, v in RATCHET["driver"].items()}
+    stage, error = first_error(to_toml(variant(RATCHET, {"driver": driver})))
+    assert stage == "load" and "omgea" in str(error)
+
+
+def test_frame_line_through_unknown_point() -> None:
+    text = to_toml(variant(SLIDER_CRANK, {"frame.lines": {"rail": {"through": "Z", "angle": 0.0}},
+                                          "groups.0.guide": "rail"}))
+    stage, error = first_error(text)
+    assert stage in ("load", "build") and type(error) is SceneError
+    assert "frame.lines.rail.through" in str(error) and "'Z'" in str(error)
+
+
+def test_links_key_with_a_unicode_digit() -> None:
+    stage, error = first_error(to_toml(variant(RATCHET, {"links.³": {"mass": 1.0}})))
+    assert (stage, str(error)) == ("load", "links.³: links are numbered: write [links.3]")
+
+
+def test_measured_key_with_a_unicode_digit() -> None:
+    stage, error = first_error(to_toml(variant(RATCHET, {"measured.⁵": {"velocity": {"pb": 1.0}}})))
+    assert (stage, str(error)) == ("load", "measured.⁵: must be a position number: write [measured.5]")
+
+
+def test_point_depending_on_an_unplaceable_point_is_not_called_cyclic() -> None:
+    text = to_toml(variant(RATCHET, {"points.T1": {"link": 3, "from": "T2", "toward": "A", "at": 0.1},
+                                     "points.T2": {"link": 3, "from": "Z", "toward": "A", "at": 0.1}}))
+    stage, error = first_error(text)
+    assert stage == "build" and type(error) is SceneError
+    assert "cyclic" not in str(error)
+    assert str(error).startswith("points.T2")
+
+
+def test_point_reference_errors_name_the_key() -> None:
+    stage, error = first_error(to_toml(variant(RATCHET, {"points.S3.from": "C"})))
+    assert error.where == "points.S3.from"
+
+
+def test_unknown_pivot_lists_the_frame_points() -> None:
+    stage, error = first_error(to_toml(variant(RATCHET, {"driver.pivot": "Q"})))
+    assert stage == "build"
+    assert str(error) == "driver.pivot: must be a point of [frame] points: O, C (got 'Q')"
+
+
+def test_rrp_toggle_message_describes_the_geometry() -> None:
+    stage, error = first_error(_rrp_toggle(), driver=[math.pi / 2])
+    assert type(error) is SingularPositionError
+    assert "are parallel" not in str(error) or "lines of action" in str(error)
+
+
+def test_rpr_joint_on_the_lever_pivot() -> None:
+    text = to_toml(variant(SLOTTED_LEVER, {"frame.points.C": [0.2, 0.0], "driver.length": 0.2}))
+    stage, error = first_error(text, driver=[0.0])
+    assert stage == "solve" and isinstance(error, GraphplanError)
+    assert "is less than the slide's offset 0 m" not in str(error)
+
+
+def test_rrr_outer_joints_coincide() -> None:
+    text = to_toml(variant(FOUR_BAR, {"frame.points.C": [0.2, 0.0], "groups.0.lengths": [0.1, 0.1]}))
+    stage, error = first_error(text, driver=[0.0])
+    assert stage == "solve" and isinstance(error, GraphplanError)
+    assert "0 m < |AB − BC| = 0 m" not in str(error)
+
+
+def test_rpr_coincident_point_clash_is_explained() -> None:
+    text = to_toml(variant(SLOTTED_LEVER, {"frame.points.A4": [1.0, 1.0]}))
+    stage, error = first_error(text)
+    assert stage == "build" and type(error) is SceneError
+    assert "inner joint" not in str(error) and "A4" in str(error)
+
+
+def test_slider_driver_on_explicit_frame_link() -> None:
+    scene = scene_module.loads(to_toml(variant(SLIDER_DRIVEN, {"driver.guide": {"link": 1, "through": "O"}})))
+    graphplan.build(scene)
+
+
+def test_clockwise_is_not_suggested_as_ccw() -> None:
+    stage, error = first_error(to_toml(variant(RATCHET, {"positions.working.sense": "clockwise"})))
+    assert type(error) is SceneError and "'ccw'" not in str(error)
+
+
+def test_utf8_byte_order_mark() -> None:
+    scene = scene_module.loads(b"\xef\xbb\xbf" + to_toml(RATCHET).encode("utf-8"))
+    assert scene.title == "Crank-rocker of a ratchet feed"
+
+
+def test_text_over_the_size_limit() -> None:
+    limit = scene_module.MAX_SCENE_BYTES
+    with pytest.raises(SceneError, match="a scene may have at most"):
+        scene_module.loads(to_toml(RATCHET) + "#" * limit + "\n")
+
+
+def test_toml_date_is_named_in_words() -> None:
+    stage, error = first_error('[scene]\ngravity = 2024-01-01\n')
+    assert str(error) == "scene.gravity: must be a number, not a date (got 2024-01-01)"
+
+
+def test_link_given_twice_under_two_spellings() -> None:
+    text = to_toml(variant(RATCHET, {"links.03": {"mass": 99.0}}))
+    stage, error = first_error(text)
+    assert stage == "load" and type(error) is SceneError
+    assert error.where == "links.03"
