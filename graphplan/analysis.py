@@ -34,8 +34,13 @@ def analyse(scene: Scene) -> Analysis:
     mechanism = build(scene)
     positions = make_positions(mechanism)
     motion = solve(mechanism, positions.values, positions.reference, positions.numbers)
-    # The positions drawn bold: the working link's two extremes, or else the first position.
-    bold = positions.extremes if positions.extremes is not None else positions.values[:1]
+    # The positions drawn bold: the working link's two extremes, a slider driver's two ends, or the first position.
+    if positions.extremes is not None:
+        bold = np.array(positions.extremes)
+    elif mechanism.driver.kind == "slider":
+        bold = positions.values[[0, -1]]
+    else:
+        bold = positions.values[:1]
     emphasised = solve(mechanism, bold, positions.reference)
     driver = mechanism.driver
     if driver.kind == "crank":

@@ -114,7 +114,8 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
     from .errors import SceneError
 
     driver = mechanism.driver
-    steps = start + driver.sense * 2.0 * math.pi * np.arange(_BRACKET_SWEEP + 1) / _BRACKET_SWEEP
+    # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
+    steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
     speed, _ = working_speed(solve(mechanism, steps, reference))
 
     def speed_at(angle: float) -> float:

@@ -72,11 +72,17 @@ def layout(plan: PositionsPlan) -> list[Layer]:
 def _outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]:
     """For every moving link, the points whose convex hull is its outline.
 
-    Centres of mass lie inside a link and are left out; the line a slider
-    runs on is drawn long enough to carry the slider, so sliding joints count.
+    A link's own centre of mass lies inside it and is left out, unless it
+    is a joint; the line a slider runs on is drawn long enough to carry the
+    slider, so sliding joints count.
     """
-    centres = {spec.centre for spec in mechanism.scene.links.values() if spec.centre}
-    outlines = {link: [name for name in sorted(mechanism.fixed_on.get(link, ())) if name not in centres]
+    named = {spec.name for spec in mechanism.scene.points}
+
+    def inside(link: int, name: str) -> bool:
+        spec = mechanism.scene.links.get(link)
+        return spec is not None and spec.centre == name and name in named
+
+    outlines = {link: [name for name in sorted(mechanism.fixed_on.get(link, ())) if not inside(link, name)]
                 for link in mechanism.moving_links}
     for slide in motion.slides:
         if slide.guide in outlines and slide.joint not in outlines[slide.guide]:
@@ -162,7 +168,9 @@ def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
 def _point_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     """Names of the joints and named points at the first emphasised position."""
     motion = plan.emphasised
-    names = list(motion.points)
+    # Points fixed on a link only: an RPR lever's point under the block (A4) would just repeat A's label.
+    drawn = {name for names in plan.mechanism.fixed_on.values() for name in names}
+    names = [name for name in motion.points if name in drawn]
     centroid = sum(_at(motion.points[n].r, 0) for n in names) / len(names)
     anchors = []
     for name in names:
