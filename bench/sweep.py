@@ -2,7 +2,7 @@
 
     python bench/sweep.py            # needs the bench extra: pip install ".[bench]"
 
-For the four-bar (the ratchet fixture) and a Watt six-bar built on it, at
+For the four-bar (the ratchet fixture) and a Stephenson six-bar built on it (an RRR dyad from coupler point E to a frame pivot), at
 10⁵ crank positions, it times graphplan's full sweep (every point's r, v, a
 and every link's angle, ω, ε) and the peers' sweeps of the same linkages,
 checks that all of them give the same answers (largest differences against
