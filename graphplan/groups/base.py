@@ -156,6 +156,14 @@ class Group:
     def solve(self, context: Context, branch: int) -> GroupMotion:
         raise NotImplementedError
 
+    # The plans (graphplan.plans): the same vector equations, solved by crossing lines of action
+    # on a Builder from the positions of the instant alone.
+    def construct_velocity(self, board) -> None:
+        raise NotImplementedError(f"the velocity plan of a {self.kind} group is not constructed yet")
+
+    def construct_acceleration(self, board, velocities) -> None:
+        raise NotImplementedError(f"the acceleration plan of a {self.kind} group is not constructed yet")
+
 
 def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -> None:
     """Report a position where the two lines of action are parallel."""

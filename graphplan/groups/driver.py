@@ -17,6 +17,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..kinematics import LinkMotion, PointMotion, SlideMotion
+from ..plans import Builder, LaidVector, Plan, Step
 from ..reader import Table
 from .base import Context, GroupMotion, Guide, read_guide
 
@@ -89,6 +90,34 @@ class Crank:
         return GroupMotion(points={self.joint: joint},
                            links={self.link: LinkMotion(self.pivot, u, values, self.omega, self.epsilon)})
 
+    def construct_velocity(self, board: Builder) -> None:
+        """vA = ω × OA: pa perpendicular to OA, in the sense of ω."""
+        pivot, joint = board.positions[self.pivot], board.positions[self.joint]
+        a = board.fix(self.joint, 1j * self.omega * (joint - pivot))
+        board.on_link(self.link, pivot, board.images[self.pivot])
+        board.on_link(self.link, joint, a)
+        board.step(Step(f"v{self.joint} = ω{self.link} × {self.pivot}{self.joint}",
+                        (LaidVector("p", a, f"v{self.joint}"),), fixes=(a,)))
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aA = aAⁿ + aA^τ: ω²·OA toward O, and ε × OA only when ε ≠ 0."""
+        pivot, joint = board.positions[self.pivot], board.positions[self.joint]
+        arm = joint - pivot
+        normal = -self.omega**2 * arm
+        if self.epsilon == 0.0:
+            a = board.fix(self.joint, normal)
+            vectors: tuple[LaidVector, ...] = (LaidVector("p", a, f"a{self.joint}"),)
+            equation = f"a{self.joint} = a{self.joint}ⁿ = ω{self.link}²·l{self.pivot}{self.joint}"
+        else:
+            end = board.mark(f"n{self.link}", normal)
+            a = board.fix(self.joint, normal + 1j * self.epsilon * arm)
+            vectors = (LaidVector("p", end, f"a{self.joint}ⁿ"), LaidVector(end, a, f"a{self.joint}^τ"),
+                       LaidVector("p", a, f"a{self.joint}"))
+            equation = f"a{self.joint} = a{self.joint}ⁿ + a{self.joint}^τ"
+        board.on_link(self.link, pivot, board.images[self.pivot])
+        board.on_link(self.link, joint, a)
+        board.step(Step(equation, vectors, fixes=(a,)))
+
 
 @dataclass(frozen=True)
 class Slider:
@@ -151,3 +180,15 @@ class Slider:
             slides=(SlideMotion(self.link, guide.link, self.joint, guide.u, values, self.velocity,
                                 self.acceleration),),
         )
+
+    def construct_velocity(self, board: Builder) -> None:
+        """vA = ṡ along the guide: the driver's given velocity, laid off from the pole."""
+        a = board.fix(self.joint, self.velocity * board.guide_direction(self.guide))
+        board.on_link(self.link, board.positions[self.joint], a)
+        board.step(Step(f"v{self.joint} = ṡ", (LaidVector("p", a, f"v{self.joint}"),), fixes=(a,)))
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aA = s̈ along the guide."""
+        a = board.fix(self.joint, self.acceleration * board.guide_direction(self.guide))
+        board.on_link(self.link, board.positions[self.joint], a)
+        board.step(Step(f"a{self.joint} = s̈", (LaidVector("p", a, f"a{self.joint}"),), fixes=(a,)))

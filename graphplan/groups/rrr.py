@@ -15,7 +15,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, TwoLines, norm2
+from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import Context, Group, GroupMotion, check_lines_cross, nearest_branch, read_branch
 
@@ -102,3 +104,50 @@ class RRR(Group):
             },
             conditioning=sine,
         )
+
+    # The plans: the same equations, solved by crossing lines of action.
+
+    def construct_velocity(self, board: Builder) -> None:
+        """vB = vA + vBA (⊥ AB) = vC + vBC (⊥ CB): lines through a and c, crossed at b."""
+        a_name, b_name, c_name = self.joints
+        a_pos, b_pos, c_pos = (board.positions[n] for n in self.joints)
+        a, c = board.images[a_name], board.images[c_name]
+        along_ab, along_cb = 1j * (b_pos - a_pos), 1j * (b_pos - c_pos)
+        b_value, angle = board.cross(Line(board.points[a], along_ab, f"⊥{a_name}{b_name}"),
+                                     Line(board.points[c], along_cb, f"⊥{c_name}{b_name}"))
+        b = board.fix(b_name, b_value)
+        board.on_link(self.links[0], a_pos, a)
+        board.on_link(self.links[0], b_pos, b)
+        board.on_link(self.links[1], c_pos, c)
+        board.on_link(self.links[1], b_pos, b)
+        board.step(Step(
+            equation=f"v{b_name} = v{a_name} + v{b_name}{a_name} = v{c_name} + v{b_name}{c_name}",
+            vectors=(LaidVector(a, b, f"v{b_name}{a_name}"), LaidVector(c, b, f"v{b_name}{c_name}"),
+                     LaidVector("p", b, f"v{b_name}")),
+            lines=(DrawnLine(a, along_ab, f"⊥ {a_name}{b_name}"), DrawnLine(c, along_cb, f"⊥ {c_name}{b_name}")),
+            fixes=(b,), crossing_deg=angle))
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aB = aA + aBA^n + aBA^τ = aC + aBC^n + aBC^τ, the normal parts ω²·l toward A and C."""
+        a_name, b_name, c_name = self.joints
+        a_pos, b_pos, c_pos = (board.positions[n] for n in self.joints)
+        a, c = board.images[a_name], board.images[c_name]
+        omega_a, omega_b = velocities.rates[self.links[0]], velocities.rates[self.links[1]]
+        normal_a = board.mark(f"n{self.links[0]}", board.points[a] - omega_a**2 * (b_pos - a_pos))
+        normal_b = board.mark(f"n{self.links[1]}", board.points[c] - omega_b**2 * (b_pos - c_pos))
+        along_ab, along_cb = 1j * (b_pos - a_pos), 1j * (b_pos - c_pos)
+        b_value, angle = board.cross(Line(board.points[normal_a], along_ab, f"⊥{a_name}{b_name}"),
+                                     Line(board.points[normal_b], along_cb, f"⊥{c_name}{b_name}"))
+        b = board.fix(b_name, b_value)
+        for link, first, letter in ((self.links[0], a_pos, a), (self.links[1], c_pos, c)):
+            board.on_link(link, first, letter)
+            board.on_link(link, b_pos, b)
+        board.step(Step(
+            equation=(f"a{b_name} = a{a_name} + a{b_name}{a_name}ⁿ + a{b_name}{a_name}^τ"
+                      f" = a{c_name} + a{b_name}{c_name}ⁿ + a{b_name}{c_name}^τ"),
+            vectors=(LaidVector(a, normal_a, f"a{b_name}{a_name}ⁿ"), LaidVector(normal_a, b, f"a{b_name}{a_name}^τ"),
+                     LaidVector(c, normal_b, f"a{b_name}{c_name}ⁿ"), LaidVector(normal_b, b, f"a{b_name}{c_name}^τ"),
+                     LaidVector("p", b, f"a{b_name}")),
+            lines=(DrawnLine(normal_a, along_ab, f"⊥ {a_name}{b_name}"),
+                   DrawnLine(normal_b, along_cb, f"⊥ {c_name}{b_name}")),
+            fixes=(normal_a, normal_b, b), crossing_deg=angle))

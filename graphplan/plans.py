@@ -1,0 +1,269 @@
+"""Velocity and acceleration plans, constructed as a student draws them.
+
+A plan is built group by group in the order of the structure formula, from
+the positions of the mechanism at one instant and the driver's motion alone:
+known vectors are laid off, lines of action are drawn through their ends and
+crossed (:mod:`graphplan.geometry`), further points follow by similarity.
+Nothing here reads the analytic velocities or accelerations, so that the
+error table compares two independent methods.
+
+Each plan is a record of its construction (:class:`Plan`): the steps with
+their vector equations, the vectors laid off, the lines drawn, the points
+fixed, and the scale.  The construction itself runs in SI units (m/s, m/s²);
+the scale turns it into millimetres once the plan's size is known.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Mapping
+
+from .geometry import Line, ParallelLinesError, cross_lines, crossing_angle_deg, similar_point
+from .scales import standard_scale
+
+if TYPE_CHECKING:
+    from .mechanism import Mechanism
+
+# The field a plan gets on the sheet when the scene fixes no scale, in mm.
+PLAN_FIELD_MM = 150.0
+# Lines of action crossing at less than this angle make a reading untrustworthy.
+SHALLOW_CROSSING_DEG = 5.0
+
+
+def image_name(point: str) -> str:
+    """The plan's letter for a point of the mechanism: ``B`` → ``b``, ``S3`` → ``s3``."""
+    return point.lower()
+
+
+@dataclass(frozen=True)
+class LaidVector:
+    """A vector of the plan from ``start`` to ``end`` (plan letters); ``meaning`` is its name (``vBA``)."""
+
+    start: str
+    end: str
+    meaning: str
+
+
+@dataclass(frozen=True)
+class DrawnLine:
+    """A line of action through the plan point ``through``, along ``direction``, described by ``meaning``."""
+
+    through: str
+    direction: complex
+    meaning: str
+
+
+@dataclass(frozen=True)
+class Step:
+    """One vector equation solved on the plan.
+
+    ``equation`` is written as the textbook writes it (``vB = vA + vBA =
+    vC + vBC``); ``vectors`` are the known vectors laid off and the unknown
+    ones found; ``lines`` the lines of action drawn; ``fixes`` the plan points
+    the step fixes; ``crossing_deg`` the angle at which its lines crossed.
+    """
+
+    equation: str
+    vectors: tuple[LaidVector, ...]
+    lines: tuple[DrawnLine, ...] = ()
+    fixes: tuple[str, ...] = ()
+    crossing_deg: float | None = None
+
+
+@dataclass(frozen=True)
+class Plan:
+    """A velocity or acceleration plan of one position, as constructed.
+
+    ``points`` are in SI units (m/s or m/s²) relative to the pole; divided by
+    ``scale`` they are the millimetres of the drawing (:meth:`mm`).
+    ``images`` maps each mechanism point to its plan letter; ``rates`` holds
+    the angular velocity (velocity plan) or angular acceleration
+    (acceleration plan) of each link as read off the plan, ccw positive.
+    """
+
+    kind: str
+    scale: float
+    points: Mapping[str, complex]
+    steps: tuple[Step, ...]
+    images: Mapping[str, str]
+    rates: Mapping[int, float]
+    sliding: Mapping[int, complex]
+
+    def mm(self, letter: str) -> complex:
+        return self.points[letter] / self.scale
+
+    def value(self, point: str) -> complex:
+        """The absolute velocity or acceleration of a mechanism point, SI."""
+        return self.points[self.images[point]]
+
+
+@dataclass
+class Builder:
+    """The drawing board while a plan is being built (mutable only during construction).
+
+    ``positions`` are the mechanism's points at the instant (m); plan points
+    are kept in SI.  Groups call :meth:`lay`, :meth:`cross`, :meth:`step` and
+    :meth:`on_link` as they construct.
+    """
+
+    kind: str
+    mechanism: Mechanism
+    positions: Mapping[str, complex]
+    directions: Mapping[int, complex]
+    size: float
+    points: dict[str, complex] = field(default_factory=lambda: {"p": 0j})
+    steps: list[Step] = field(default_factory=list)
+    images: dict[str, str] = field(default_factory=dict)
+    link_images: dict[int, list[tuple[complex, str]]] = field(default_factory=dict)
+    turns_with: dict[int, int] = field(default_factory=dict)
+    sliding: dict[int, complex] = field(default_factory=dict)
+
+    def image(self, point: str) -> complex:
+        return self.points[self.images[point]]
+
+    def guide_line(self, guide) -> tuple[complex, complex, int]:
+        """A guide at this instant: a point of it (m), its unit direction, the link that carries it."""
+        scene = self.mechanism.scene
+        if guide.line is not None:
+            guide = scene.frame_lines[guide.line]
+        link = scene.frame_link if guide.link is None else guide.link
+        through = self.positions[guide.through] if isinstance(guide.through, str) else complex(*guide.through)
+        direction = self.directions.get(link, 1 + 0j) * complex(math.cos(guide.angle), math.sin(guide.angle))
+        return through, direction, link
+
+    def guide_direction(self, guide) -> complex:
+        return self.guide_line(guide)[1]
+
+    def fix(self, point: str, value: complex, letter: str | None = None) -> str:
+        """Put the image of mechanism ``point`` on the plan."""
+        letter = letter or image_name(point)
+        self.points[letter] = value
+        self.images[point] = letter
+        return letter
+
+    def mark(self, letter: str, value: complex) -> str:
+        """An auxiliary point of the plan (the end of a normal component ``n3``, of a Coriolis one ``k``)."""
+        self.points[letter] = value
+        return letter
+
+    def cross(self, first: Line, second: Line) -> tuple[complex, float]:
+        """The crossing of two lines of action, and the angle they cross at."""
+        return cross_lines(first, second, self.size), crossing_angle_deg(first, second)
+
+    def on_link(self, link: int, position: complex, letter: str) -> None:
+        """Record that the plan point ``letter`` is the image of the link's point at ``position``."""
+        self.link_images.setdefault(link, []).append((position, letter))
+
+    def step(self, step: Step) -> None:
+        self.steps.append(step)
+
+
+def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
+                  scale: float | None = None) -> Plan:
+    """The velocity plan of the instant whose point positions are ``positions`` (m).
+
+    ``directions`` are the unit vectors of the links' reference lines at the
+    instant (the drawing of the mechanism shows them), which guides on moving
+    links need.
+    """
+    board = Builder("velocity", mechanism, positions, directions, _size(positions, mechanism))
+    _frame_at_pole(board, mechanism)
+    for unit in mechanism.units:
+        unit.solver.construct_velocity(board)  # type: ignore[union-attr]
+        _place_named(board, mechanism, unit.points)
+    rates = _read_rates(board, mechanism, board.points)
+    return _finish(board, rates, scale, mechanism, pole_mm_key="velocity")
+
+
+def acceleration_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
+                      velocities: Plan, scale: float | None = None) -> Plan:
+    """The acceleration plan of the same instant, using ω and relative velocities read off ``velocities``."""
+    board = Builder("acceleration", mechanism, positions, directions, _size(positions, mechanism))
+    _frame_at_pole(board, mechanism)
+    for unit in mechanism.units:
+        unit.solver.construct_acceleration(board, velocities)  # type: ignore[union-attr]
+        _place_named(board, mechanism, unit.points)
+    rates = _read_rates(board, mechanism, board.points, acceleration=True, velocities=velocities)
+    return _finish(board, rates, scale, mechanism, pole_mm_key="acceleration")
+
+
+def _frame_at_pole(board: Builder, mechanism: Mechanism) -> None:
+    """The frame's points stand still: their images are all at the pole."""
+    for name, position in mechanism.scene.frame_points.items():
+        board.images[name] = "p"
+        board.on_link(mechanism.scene.frame_link, position, "p")
+
+
+def _size(positions: Mapping[str, complex], mechanism: Mechanism) -> float:
+    values = list(positions.values())
+    return max(max(abs(a - b) for a in values for b in values), 1e-9)
+
+
+def _place_named(board: Builder, mechanism: Mechanism, specs) -> None:
+    """Images of named points by the similarity theorem, from two images already on their link."""
+    for spec in specs:
+        position = board.positions[spec.name]
+        if spec.link == mechanism.scene.frame_link:
+            board.fix(spec.name, 0j)
+            continue
+        known = board.link_images.get(spec.link, [])
+        (pa, la), (pb, lb) = _widest_pair(known)
+        value = similar_point(board.points[la], board.points[lb], pa, pb, position)
+        letter = board.fix(spec.name, value)
+        board.on_link(spec.link, position, letter)
+        board.step(Step(
+            equation=f"{letter[0]}{letter[1:]}: {la}{lb}{letter} ∼ {_upper(la)}{_upper(lb)}{spec.name} (similarity)",
+            vectors=(), fixes=(letter,)))
+
+
+def _upper(letter: str) -> str:
+    return letter.upper()
+
+
+def _widest_pair(known: list[tuple[complex, str]]):
+    if len(known) < 2:
+        raise ValueError("a named point needs two points of its link on the plan")
+    return max(((a, b) for i, a in enumerate(known) for b in known[i + 1:]), key=lambda ab: abs(ab[0][0] - ab[1][0]))
+
+
+def _read_rates(board: Builder, mechanism: Mechanism, points, acceleration: bool = False,
+                velocities: Plan | None = None) -> dict[int, float]:
+    """ω (or ε) of every moving link from the images of two of its points.
+
+    On a velocity plan qp = ω × PQ, so ω = (PQ × pq)/PQ²; on an acceleration
+    plan the tangential part gives ε the same way.  A block that has a single
+    point on the plan turns with the link it slides in.
+    """
+    rates: dict[int, float] = {}
+    for link in mechanism.moving_links:
+        known = board.link_images.get(link, [])
+        if len(known) >= 2:
+            (pa, la), (pb, lb) = _widest_pair(known)
+            ratio = (points[lb] - points[la]) / (pb - pa)
+            rates[link] = ratio.imag
+    for link, other in board.turns_with.items():
+        rates[link] = rates.get(other, 0.0)
+    for link in mechanism.moving_links:
+        rates.setdefault(link, 0.0)
+    return rates
+
+
+def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechanism: Mechanism,
+            pole_mm_key: str) -> Plan:
+    drawing = mechanism.scene.drawing
+    pole_mm = drawing.velocity_pole if pole_mm_key == "velocity" else drawing.acceleration_pole
+    given = drawing.velocity_scale if pole_mm_key == "velocity" else drawing.acceleration_scale
+    if scale is None:
+        scale = given
+    if scale is None and pole_mm is not None and abs(board.image(mechanism.driver.joint)) > 0:
+        scale = abs(board.image(mechanism.driver.joint)) / pole_mm
+    if scale is None:
+        extent = max(abs(a - b) for a in board.points.values() for b in board.points.values())
+        scale = standard_scale(max(extent, 1e-300) / PLAN_FIELD_MM)
+    return Plan(kind=board.kind, scale=scale, points=dict(board.points), steps=tuple(board.steps),
+                images=dict(board.images), rates=rates, sliding=dict(board.sliding))
+
+
+__all__ = ["Builder", "DrawnLine", "LaidVector", "Plan", "ParallelLinesError", "Step", "acceleration_plan",
+           "image_name", "velocity_plan", "math", "SHALLOW_CROSSING_DEG"]
