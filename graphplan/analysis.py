@@ -6,17 +6,39 @@ so that the numbers in ``results.json``, the drawings and a notebook agree.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from .check import ErrorRow, Reading, analytic_values, error_rows, readings
+from .geometry import ParallelLinesError
 from .mechanism import Mechanism, build
-from .motion import Motion, solve
+from .motion import Motion, Warning, solve
+from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
 from .positions import PositionSet, make_positions
 from .scene import Scene
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
 PATH_SAMPLES = 360
+
+
+@dataclass(frozen=True)
+class PlanPosition:
+    """The plans of one position listed in ``positions.plans``, their readings and errors."""
+
+    number: int
+    index: int
+    positions: dict[str, complex]
+    directions: dict[int, complex]
+    velocity: Plan
+    acceleration: Plan
+    readings: tuple[Reading, ...]
+    errors: tuple[ErrorRow, ...]
+
+    @property
+    def plans(self) -> dict[str, Plan]:
+        return {"velocity": self.velocity, "acceleration": self.acceleration}
 
 
 @dataclass(frozen=True)
@@ -27,6 +49,8 @@ class Analysis:
     motion: Motion
     emphasised: Motion
     paths: Motion
+    plans: tuple[PlanPosition, ...] = ()
+    warnings: tuple[Warning, ...] = ()
 
 
 def analyse(scene: Scene) -> Analysis:
@@ -48,4 +72,58 @@ def analyse(scene: Scene) -> Analysis:
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
     paths = solve(mechanism, sweep, positions.reference)
-    return Analysis(scene, mechanism, positions, motion, emphasised, paths)
+    plans, warnings = _plans(mechanism, positions, motion)
+    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, motion.warnings + warnings)
+
+
+def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:
+    """The drawing of the mechanism at one position: where its points are, how its links lie."""
+    def at(value) -> complex:
+        return complex(np.atleast_1d(value)[index if np.ndim(value) else 0])
+
+    return ({name: at(point.r) for name, point in motion.points.items()},
+            {number: at(link.u) for number, link in motion.links.items()})
+
+
+def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
+    """Plans, readings and errors for every position of ``positions.plans``; singular ones are reported."""
+    scene = mechanism.scene
+    found, warnings = [], []
+    for number in scene.positions.plans:
+        index = int(number - scene.positions.number_from)
+        where, directions = instant(motion, index)
+        try:
+            velocity = velocity_plan(mechanism, where, directions)
+            acceleration = acceleration_plan(mechanism, where, directions, velocity)
+        except ParallelLinesError as error:
+            warnings.append(Warning(index, "singular", f"no plan: {error}"))
+            continue
+        except NotImplementedError as error:  # a group kind whose construction has not landed yet
+            warnings.append(Warning(index, "no-plan", str(error)))
+            continue
+        plans = {"velocity": velocity, "acceleration": acceleration}
+        table = readings(mechanism, plans, where)
+        exact = analytic_values(
+            mechanism, table,
+            {name: complex(np.atleast_1d(p.v)[index if np.ndim(p.v) else 0]) for name, p in motion.points.items()},
+            {name: complex(np.atleast_1d(p.a)[index if np.ndim(p.a) else 0]) for name, p in motion.points.items()},
+            {n: float(np.atleast_1d(l.omega)[index if np.ndim(l.omega) else 0]) for n, l in motion.links.items()},
+            {n: float(np.atleast_1d(l.epsilon)[index if np.ndim(l.epsilon) else 0]) for n, l in motion.links.items()})
+        rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, scene.measured.get(number))
+        warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
+        found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows)))
+    return tuple(found), tuple(warnings)
+
+
+def _shallow_crossings(index: int, plans: dict[str, Plan], precision: float) -> list[Warning]:
+    """A warning for every crossing of lines of action at less than SHALLOW_CROSSING_DEG."""
+    warnings = []
+    for kind, plan in plans.items():
+        for step in plan.steps:
+            if step.crossing_deg is not None and step.crossing_deg < SHALLOW_CROSSING_DEG:
+                bound = precision / math.sin(math.radians(max(step.crossing_deg, 1e-9)))
+                warnings.append(Warning(index, "ill-conditioned",
+                                        f"lines of action cross at {step.crossing_deg:.3g}° in the {kind} plan "
+                                        f"({step.equation}): a drafting error of {precision:g} mm moves the crossing "
+                                        f"by up to {bound:.3g} mm"))
+    return warnings

@@ -73,11 +73,16 @@ def _run(path: Path, out: Path | None) -> int:
     scene = load(path)
     analysis = analyse(scene)
     files = {"results.json": dumps(results(analysis)), "positions.svg": positions_svg(analysis)}
+    if analysis.plans:
+        from .report.tables import csv_text, markdown
+
+        files["errors.md"] = markdown(analysis)
+        files["errors.csv"] = csv_text(analysis)
     target = out if out is not None else Path("output") / path.stem
     written = write_folder(target, files)
     print(f"{scene.title}")
     print(f"structure: {analysis.mechanism.structure}")
-    for warning in analysis.motion.warnings:
+    for warning in analysis.warnings:
         number = int(analysis.positions.numbers[warning.position])
         print(f"warning: position {number}: {warning.detail}")
     for file in written:

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from .. import __version__
-from ..analysis import Analysis
+from ..analysis import Analysis, PlanPosition
 from ..kinematics import as_xy
 
 SIGNIFICANT = 12
@@ -36,6 +36,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     driver = mechanism.driver
     points = {name: [as_xy(getattr(p, field), count) for field in ("r", "v", "a")] for name, p in motion.points.items()}
     links = {number_: motion.link(number_) for number_ in mechanism.moving_links}
+    planned = {plan.index: plan for plan in analysis.plans}
     entries = []
     for i in range(count):
         if driver.kind == "crank":
@@ -55,6 +56,8 @@ def results(analysis: Analysis) -> dict[str, Any]:
         slides = [_slide(slide, i) for slide in motion.slides]
         if slides:
             entry["slides"] = slides
+        if i in planned:
+            entry["plans"] = _plans(planned[i])
         entries.append(entry)
     n, p5, w = mechanism.degrees_of_freedom
     document: dict[str, Any] = {
@@ -68,9 +71,26 @@ def results(analysis: Analysis) -> dict[str, Any]:
     if positions.extremes is not None:
         document["extremes_deg"] = [number(math.degrees(value) % 360.0) for value in positions.extremes]
     document["positions"] = entries
+    errors = [row for plan in analysis.plans for row in plan.errors]
+    if errors:
+        document["errors"] = [{"position": row.position, "quantity": row.quantity, "analytic": number(row.analytic),
+                               "plan": number(row.plan), "source": row.source, "percent": number(row.percent)}
+                              for row in errors]
     document["warnings"] = [{"position": int(positions.numbers[w.position]), "code": w.code, "detail": w.detail}
-                            for w in motion.warnings]
+                            for w in analysis.warnings]
     return document
+
+
+def _plans(plan: PlanPosition) -> dict[str, Any]:
+    """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed."""
+    result = {}
+    for kind, drawn in plan.plans.items():
+        values = {reading.quantity: number(reading.value(plan.plans)) for reading in plan.readings if reading.plan == kind}
+        result[kind] = {"scale": number(drawn.scale),
+                        "points_mm": {letter: _pair(np.array([drawn.mm(letter).real, drawn.mm(letter).imag]))
+                                      for letter in drawn.points},
+                        "values": values}
+    return result
 
 
 def _slide(slide, i: int) -> dict[str, Any]:
