@@ -17,10 +17,8 @@ after a warm-up, and the ratios compare figures taken in the same run.
 from __future__ import annotations
 
 import json
-import math
 import platform
 import sys
-import time
 from pathlib import Path
 
 import numpy as np

@@ -74,7 +74,11 @@ def _run(path: Path, out: Path | None) -> int:
     analysis = analyse(scene)
     files = {"results.json": dumps(results(analysis)), "positions.svg": positions_svg(analysis)}
     if analysis.plans:
+        from .render.drawings import plan_svg
         from .report.tables import csv_text, markdown
+
+        for plan in analysis.plans:
+            files[f"plan_{plan.number}.svg"] = plan_svg(analysis, plan.index, plan.velocity, plan.acceleration)
 
         files["errors.md"] = markdown(analysis)
         files["errors.csv"] = csv_text(analysis)

@@ -265,5 +265,5 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
                 images=dict(board.images), rates=rates, sliding=dict(board.sliding))
 
 
-__all__ = ["Builder", "DrawnLine", "LaidVector", "Plan", "ParallelLinesError", "Step", "acceleration_plan",
-           "image_name", "velocity_plan", "math", "SHALLOW_CROSSING_DEG"]
+__all__ = ["Builder", "DrawnLine", "LaidVector", "Plan", "ParallelLinesError", "SHALLOW_CROSSING_DEG", "Step",
+           "acceleration_plan", "image_name", "velocity_plan"]

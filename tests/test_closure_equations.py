@@ -17,7 +17,6 @@ import numpy as np
 import pytest
 
 import graphplan
-from graphplan.errors import SceneError
 from graphplan.mechanism import build
 
 # Every fixture, and the variants that exercise what no fixture has (moving guides of RRP and

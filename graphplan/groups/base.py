@@ -14,9 +14,9 @@ from typing import Callable, ClassVar, Protocol
 
 import numpy as np
 
-from ..errors import AssemblyError, SceneError, SingularPositionError
-from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
-from ..reader import Table, check_number, check_str, check_xy
+from ..errors import SceneError, SingularPositionError
+from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector
+from ..reader import Table, check_str, check_xy
 
 # Below this sine of the angle between two lines of action a position is
 # treated as exactly singular: the velocities are not determined by the

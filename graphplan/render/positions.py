@@ -11,22 +11,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable
-
 import numpy as np
-from shapely.geometry import MultiPoint
 
 from ..mechanism import Mechanism
 from ..motion import Motion
 from .labels import Anchor, obstacles_of, place_labels
-from .primitives import (BOLD, MAIN, THIN, Layer, Polyline, Primitive, Stroke, Text, bounds, dot_marker,
-                         frame_pivot, hatching, pin, slider_block)
+from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points, value_at
+from .primitives import BOLD, Layer, Polyline, Primitive, Stroke, Text, bounds, dot_marker
 
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
 _PATH_STROKE = Stroke(0.25, "#1f5fa8", (2.0, 1.2))
 _LABEL = 3.0
-
-Paper = Callable[[complex], tuple[float, float]]
 
 
 @dataclass(frozen=True)
@@ -54,7 +49,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     def paper(r: complex) -> tuple[float, float]:
         return (r.real * mm_per_m, r.imag * mm_per_m)
 
-    outlines = _outline_points(plan.mechanism, plan.positions)
+    outlines = outline_points(plan.mechanism, plan.positions)
     every = _mechanism_at(plan.positions, outlines, paper, _POSITION_STROKE, bold=False)
     bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
     frame = _frame(plan, paper)
@@ -69,49 +64,9 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     return layers
 
 
-def _outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]:
-    """For every moving link, the points whose convex hull is its outline.
-
-    A link's own centre of mass lies inside it and is left out, unless it
-    is a joint; the line a slider runs on is drawn long enough to carry the
-    slider, so sliding joints count.
-    """
-    named = {spec.name for spec in mechanism.scene.points}
-
-    def inside(link: int, name: str) -> bool:
-        spec = mechanism.scene.links.get(link)
-        return spec is not None and spec.centre == name and name in named
-
-    outlines = {link: [name for name in sorted(mechanism.fixed_on.get(link, ())) if not inside(link, name)]
-                for link in mechanism.moving_links}
-    for slide in motion.slides:
-        if slide.guide in outlines and slide.joint not in outlines[slide.guide]:
-            outlines[slide.guide].append(slide.joint)
-    return outlines
-
-
 def _mechanism_at(motion: Motion, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
                   bold: bool) -> list[Primitive]:
-    items: list[Primitive] = []
-    frame_points = set(motion.mechanism.scene.frame_points)
-    named = {spec.name for spec in motion.mechanism.scene.points}
-    for index in range(motion.count):
-        for names in outlines.values():
-            points = [paper(_at(motion.points[name].r, index)) for name in names]
-            if len(points) < 2:
-                continue
-            hull = MultiPoint(points).convex_hull
-            if hull.geom_type == "Polygon":
-                items.append(Polyline(tuple(hull.exterior.coords)[:-1], stroke, closed=True))
-            elif hull.geom_type == "LineString":
-                items.append(Polyline(tuple(hull.coords), stroke))
-        for slide in motion.slides:
-            items.append(slider_block(paper(_at(motion.points[slide.joint].r, index)),
-                                      float(np.angle(_at(slide.u, index))), stroke=MAIN if bold else stroke))
-        if bold:
-            joints = {n for names in outlines.values() for n in names} - frame_points - named
-            items.extend(pin(paper(_at(motion.points[name].r, index))) for name in sorted(joints))
-    return items
+    return [item for index in range(motion.count) for item in links_at(motion, index, outlines, paper, stroke, bold)]
 
 
 def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
@@ -123,19 +78,13 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
         if slide.guide != frame:
             continue
         track = np.atleast_1d(motion.points[slide.joint].r)
-        u = _at(slide.u, 0)
+        u = value_at(slide.u, 0)
         along = (track * np.conj(u)).real
         base = complex(track[0]) - float(along[0]) * u
         margin = 8.0 * plan.length_scale
         start, end = base + (along.min() - margin) * u, base + (along.max() + margin) * u
-        # The ground lies under the block, half the block's height off the line.
-        below = -2.5 * plan.length_scale * 1j * u
-        items.extend(hatching(paper(start + below), paper(end + below), side=-1.0))
-        items.append(Polyline((paper(start), paper(end)), THIN))
-    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
-    for name, r in mechanism.scene.frame_points.items():
-        if name in pivots:
-            items.extend(frame_pivot(paper(r)))
+        items.extend(frame_guide(start, end, u, plan.length_scale, paper))
+    items.extend(frame_pivots(mechanism, paper))
     return items
 
 
@@ -156,11 +105,11 @@ def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     if driver.kind == "crank":
         centre = plan.mechanism.scene.frame_points[driver.pivot]
     else:
-        centre = complex(np.mean(np.atleast_1d(joint))) + 1j * _at(plan.positions.links[driver.link].u, 0)
+        centre = complex(np.mean(np.atleast_1d(joint))) + 1j * value_at(plan.positions.links[driver.link].u, 0)
     anchors = []
     for index, number in enumerate(plan.numbers):
-        outward = _at(joint, index) - centre
-        anchors.append(Anchor(paper(_at(joint, index)), str(number), _LABEL, math.atan2(outward.imag, outward.real),
+        outward = value_at(joint, index) - centre
+        anchors.append(Anchor(paper(value_at(joint, index)), str(number), _LABEL, math.atan2(outward.imag, outward.real),
                               "#333333"))
     return anchors
 
@@ -171,20 +120,14 @@ def _point_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     # Points fixed on a link only: an RPR lever's point under the block (A4) would just repeat A's label.
     drawn = {name for names in plan.mechanism.fixed_on.values() for name in names}
     names = [name for name in motion.points if name in drawn]
-    centroid = sum(_at(motion.points[n].r, 0) for n in names) / len(names)
+    centroid = sum(value_at(motion.points[n].r, 0) for n in names) / len(names)
     anchors = []
     for name in names:
-        r = _at(motion.points[name].r, 0)
+        r = value_at(motion.points[name].r, 0)
         away = r - centroid
         anchors.append(Anchor(paper(r), name, _LABEL, math.atan2(away.imag, away.real) if away else math.pi / 2))
     return anchors
 
 
 def _centre_marks(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
-    return [dot_marker(paper(_at(plan.emphasised.points[spec.name].r, 0))) for spec in plan.mechanism.scene.points]
-
-
-def _at(value: complex | np.ndarray, index: int) -> complex:
-    """The value at position ``index`` (a scalar is the same at every position)."""
-    array = np.atleast_1d(value)
-    return complex(array[index if len(array) > 1 else 0])
+    return [dot_marker(paper(value_at(plan.emphasised.points[spec.name].r, 0))) for spec in plan.mechanism.scene.points]

@@ -3,14 +3,15 @@
 A drawing is a list of :class:`Layer` objects, each a named list of
 primitives.  Layouts (one module per drawing) compute primitives from
 records; a backend (:mod:`graphplan.render.svg`) only translates them.
-Symbols (pins, frame pivots, slider blocks, hatching) are drawn once in a
-unit frame and placed by :func:`place`, so that their shape lives in one place.
+Symbols (pins, frame pivots, slider blocks, hatching, arrowheads) are drawn
+once in a unit frame and placed by :func:`place`, so that their shape lives
+in one place.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Iterable, Sequence
 
 Point = tuple[float, float]
@@ -53,7 +54,45 @@ class Text:
     weight: str = "normal"
 
 
-Primitive = Polyline | Circle | Text
+@dataclass(frozen=True)
+class Arrow:
+    """A vector drawn from ``start`` to ``end``, its head's tip exactly at ``end``.
+
+    ``head`` is the length of the arrowhead in mm; the head takes at most
+    :data:`HEAD_SHARE` of the vector's length, so that a short vector still
+    shows its shaft.  ``key`` names the vector for
+    the backend (an svg id such as ``velocity-p-b``) and for tests.
+    """
+
+    start: Point
+    end: Point
+    stroke: Stroke = Stroke(0.5)
+    head: float = 3.5
+    key: str = ""
+
+    @property
+    def length(self) -> float:
+        return math.dist(self.start, self.end)
+
+    @property
+    def angle(self) -> float:
+        return math.atan2(self.end[1] - self.start[1], self.end[0] - self.start[0])
+
+    @property
+    def head_length(self) -> float:
+        return min(self.head, HEAD_SHARE * self.length)
+
+    def shaft(self) -> Polyline:
+        """The line of the arrow, stopped inside the head so that its round cap cannot poke past the tip."""
+        back = min(self.length, 0.7 * self.head_length)
+        c, s = math.cos(self.angle), math.sin(self.angle)
+        return Polyline((self.start, (self.end[0] - back * c, self.end[1] - back * s)), self.stroke)
+
+    def tip(self) -> Polyline:
+        return arrowhead(self.end, self.angle, self.head_length, self.stroke.colour)
+
+
+Primitive = Polyline | Circle | Text | Arrow
 
 
 @dataclass(frozen=True)
@@ -73,6 +112,41 @@ def place(points: Iterable[Point], at: Point, angle: float = 0.0, scale: float =
     """Points of a symbol drawn in its unit frame, turned by ``angle`` and moved to ``at``."""
     c, s = math.cos(angle), math.sin(angle)
     return tuple((at[0] + scale * (c * x - s * y), at[1] + scale * (s * x + c * y)) for x, y in points)
+
+
+# The largest share of a vector's length its arrowhead may take.
+HEAD_SHARE = 0.4
+# An arrowhead in its unit frame: the tip at the origin, pointing along +x, one unit long.
+_ARROWHEAD = ((0.0, 0.0), (-1.0, 0.17), (-0.82, 0.0), (-1.0, -0.17))
+
+
+def arrowhead(tip: Point, angle: float, length: float = 3.5, colour: str = "black") -> Polyline:
+    """A slender filled arrowhead with its tip at ``tip``, pointing along ``angle``."""
+    return Polyline(place(_ARROWHEAD, tip, angle, length), Stroke(0.1, colour), closed=True, fill=colour)
+
+
+def curved_arrow(centre: Point, radius: float, start: float, sweep: float, stroke: Stroke = Stroke(0.35),
+                 head: float = 2.5) -> list[Primitive]:
+    """An arc about ``centre`` from angle ``start`` through ``sweep`` (radians, ccw positive), headed at its end.
+
+    The head points along the chord of its own length, so it sits on the arc
+    rather than on the tangent's overshoot.
+    """
+    steps = max(8, int(abs(sweep) / math.radians(5)))
+    arc = [(centre[0] + radius * math.cos(start + sweep * k / steps),
+            centre[1] + radius * math.sin(start + sweep * k / steps)) for k in range(steps + 1)]
+    end_angle = start + sweep
+    back = end_angle - math.copysign(min(head / radius, abs(sweep) / 2), sweep)
+    tail = (centre[0] + radius * math.cos(back), centre[1] + radius * math.sin(back))
+    tip = arc[-1]
+    direction = math.atan2(tip[1] - tail[1], tip[0] - tail[0])
+    shaft = [p for p in arc if _behind(p, tip, direction, 0.7 * head)] or arc[:1]
+    return [Polyline(tuple(shaft), stroke), arrowhead(tip, direction, head, stroke.colour)]
+
+
+def _behind(point: Point, tip: Point, direction: float, distance: float) -> bool:
+    """Whether ``point`` lies at least ``distance`` behind ``tip`` along ``direction``."""
+    return (tip[0] - point[0]) * math.cos(direction) + (tip[1] - point[1]) * math.sin(direction) >= distance
 
 
 def hatching(start: Point, end: Point, side: float = -1.0, pitch: float = 2.0, depth: float = 2.0,
@@ -117,23 +191,60 @@ def dot_marker(at: Point, radius: float = 0.6, colour: str = "black") -> Circle:
     return Circle(at, radius, Stroke(0.1, colour), colour)
 
 
+# Width of a character as a fraction of the cap height (DejaVu Sans, mixed text): generous, so
+# that a box estimated from it holds the text as rendered.
+CHARACTER_WIDTH = 0.75
+
+
+def text_extent(text: Text) -> tuple[float, float, float, float]:
+    """(xmin, ymin, xmax, ymax) of a text as rendered: its width estimated, descenders and accents included."""
+    width = CHARACTER_WIDTH * text.size * len(text.text)
+    x0 = text.at[0] + {"start": 0.0, "middle": -width / 2, "end": -width}[text.anchor]
+    return (x0, text.at[1] - 0.25 * text.size, x0 + width, text.at[1] + 1.1 * text.size)
+
+
 def bounds(layers: Sequence[Layer]) -> tuple[float, float, float, float]:
-    """(xmin, ymin, xmax, ymax) of every primitive, text by its anchor point with a margin for its size."""
+    """(xmin, ymin, xmax, ymax) of every primitive, text by its estimated extent."""
+    return bounds_of(item for layer in layers for item in layer.items)
+
+
+def bounds_of(items: Iterable[Primitive]) -> tuple[float, float, float, float]:
+    """(xmin, ymin, xmax, ymax) of ``items``; a unit square for none."""
     xs: list[float] = []
     ys: list[float] = []
-    for layer in layers:
-        for item in layer.items:
-            if isinstance(item, Polyline):
-                xs.extend(p[0] for p in item.points)
-                ys.extend(p[1] for p in item.points)
-            elif isinstance(item, Circle):
-                xs.extend((item.centre[0] - item.radius, item.centre[0] + item.radius))
-                ys.extend((item.centre[1] - item.radius, item.centre[1] + item.radius))
-            else:
-                width = 0.6 * item.size * len(item.text)
-                x0 = {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor]
-                xs.extend((item.at[0] + x0, item.at[0] + x0 + width))
-                ys.extend((item.at[1], item.at[1] + item.size))
+    for item in items:
+        if isinstance(item, Polyline):
+            xs.extend(p[0] for p in item.points)
+            ys.extend(p[1] for p in item.points)
+        elif isinstance(item, Arrow):
+            xs.extend((item.start[0], item.end[0]))
+            ys.extend((item.start[1], item.end[1]))
+        elif isinstance(item, Circle):
+            xs.extend((item.centre[0] - item.radius, item.centre[0] + item.radius))
+            ys.extend((item.centre[1] - item.radius, item.centre[1] + item.radius))
+        else:
+            x0, y0, x1, y1 = text_extent(item)
+            xs.extend((x0, x1))
+            ys.extend((y0, y1))
     if not xs:
         return (0.0, 0.0, 1.0, 1.0)
     return (min(xs), min(ys), max(xs), max(ys))
+
+
+def moved(item: Primitive, dx: float, dy: float) -> Primitive:
+    """``item`` shifted by (dx, dy) mm."""
+    def shift(p: Point) -> Point:
+        return (p[0] + dx, p[1] + dy)
+
+    if isinstance(item, Polyline):
+        return replace(item, points=tuple(shift(p) for p in item.points))
+    if isinstance(item, Arrow):
+        return replace(item, start=shift(item.start), end=shift(item.end))
+    if isinstance(item, Circle):
+        return replace(item, centre=shift(item.centre))
+    return replace(item, at=shift(item.at))
+
+
+def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
+    """``layers`` shifted by (dx, dy) mm."""
+    return [Layer(layer.name, tuple(moved(item, dx, dy) for item in layer.items)) for layer in layers]

@@ -12,7 +12,7 @@ from typing import Sequence
 
 import svgwrite
 
-from .primitives import Circle, Layer, Polyline, Stroke, Text, bounds
+from .primitives import Arrow, Circle, Layer, Polyline, Stroke, Text, bounds
 
 FONT_FAMILY = "DejaVu Sans, Noto Sans CJK SC, Noto Sans CJK JP, Noto Sans, sans-serif"
 # Cap height is about 0.72 of the font size in DejaVu Sans.
@@ -48,14 +48,22 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
     document = svgwrite.Drawing(size=(f"{_n(width)}mm", f"{_n(height)}mm"), profile="full", debug=False)
     document.viewbox(0, 0, float(_n(width)), float(_n(height)))
     document.add(document.rect(insert=(0, 0), size=(_n(width), _n(height)), fill="white", id="background"))
+    def polyline(item: Polyline):
+        # A path with our own number formatting: svgwrite's polyline formats points itself.
+        path = "M" + " L".join(",".join(xy(p)) for p in item.points) + (" Z" if item.closed else "")
+        element = document.path(d=path)
+        element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
+        return element
+
     for layer in layers:
         group = document.g(id=layer.name)
         for item in layer.items:
             if isinstance(item, Polyline):
-                # A path with our own number formatting: svgwrite's polyline formats points itself.
-                path = "M" + " L".join(",".join(xy(p)) for p in item.points) + (" Z" if item.closed else "")
-                element = document.path(d=path)
-                element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
+                element = polyline(item)
+            elif isinstance(item, Arrow):
+                element = document.g(id=item.key) if item.key else document.g()
+                element.add(polyline(item.shaft()))
+                element.add(polyline(item.tip()))
             elif isinstance(item, Circle):
                 cx, cy = xy(item.centre)
                 element = document.circle(center=(cx, cy), r=_n(item.radius))

@@ -1,0 +1,338 @@
+"""The plan sheet of one position: the mechanism, its velocity plan and its acceleration plan, side by side.
+
+The mechanism is drawn at μl in the position, with the sense of each
+point's velocity as a short arrow and the senses of ω and ε as curved arrows
+on the links, all read off the plans.  Each plan is drawn from its record
+(:class:`graphplan.plans.Plan`) as the student draws it: for every step the
+lines of action, thin and dashed beyond their crossing, and the vectors laid
+off, as arrows; then the absolute vectors of the points found by similarity
+and the similar figures of the links; every point lettered once.  The layout
+reads only what the step lists say, so a new group kind is drawn as soon as
+it constructs its plans; it computes no mechanics.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Callable
+
+from shapely.geometry import MultiPoint
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry.base import BaseGeometry
+from shapely.ops import unary_union
+
+from ..mechanism import Mechanism
+from ..motion import Motion
+from ..plans import Plan
+from .labels import Anchor, obstacles_of, open_direction, place_labels
+from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points, value_at
+from .primitives import (Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds_of, curved_arrow, dot_marker,
+                         moved_layers)
+
+# A vector shorter than this on the paper (mm) is not drawn, and plan points closer than this share
+# one label: half the usual drafting precision, below what a pencil resolves.
+ZERO_MM = 0.25
+# How far a line of action runs on, dashed, beyond the point where it crosses the other line (mm).
+RUN_ON_MM = 12.0
+# Length of the arrow that shows the sense of a point's velocity on the mechanism (mm).
+SENSE_ARROW_MM = 12.0
+# How far a fixed guide runs past its slider block (mm).
+GUIDE_REACH_MM = 20.0
+# Radius of the curved arrows of ω and ε on the links (mm).
+TURN_RADIUS_MM = 7.0
+# Space between the three drawings, and between a drawing and its caption (mm).
+GAP_MM = 25.0
+CAPTION_GAP_MM = 12.0
+
+LETTER_SIZE = 4.0
+CAPTION_SIZE = 5.0
+TITLE_SIZE = 7.0
+
+_ABSOLUTE = Stroke(0.6)
+_RELATIVE = Stroke(0.45)
+_ACTION = Stroke(0.25, "#333333")
+_ACTION_RUN_ON = Stroke(0.25, "#333333", (2.5, 1.5))
+_FIGURE = Stroke(0.3)
+_LINK = Stroke(0.8)
+_VELOCITY_COLOUR = "#1f5fa8"
+_ACCELERATION_COLOUR = "#a83a1f"
+
+
+@dataclass(frozen=True)
+class PlanSheet:
+    """What the plan sheet of one position shows.
+
+    ``motion`` is the run's motion and ``index`` the position's index in it:
+    the sheet reads only where the points are and how the links lie there;
+    ``number`` is the position's number as the scene counts them.
+    ``velocity`` and ``acceleration`` are the plans of that instant; the
+    senses shown on the mechanism come from them.  ``length_scale`` is μl
+    (m/mm); each caption is a tuple of lines (the drawing's name, its scale);
+    ``velocity_pole`` and ``acceleration_pole`` letter the poles (``p``, ``π``).
+    """
+
+    mechanism: Mechanism
+    motion: Motion
+    index: int
+    number: int
+    velocity: Plan
+    acceleration: Plan
+    length_scale: float
+    title: str
+    mechanism_caption: tuple[str, ...]
+    velocity_caption: tuple[str, ...]
+    acceleration_caption: tuple[str, ...]
+    velocity_pole: str = "p"
+    acceleration_pole: str = "π"
+
+
+def layout(sheet: PlanSheet) -> list[Layer]:
+    """The layers of the plan sheet, in paper millimetres (y up), the three drawings left to right."""
+    panels = [
+        (_mechanism(sheet), sheet.mechanism_caption, "mechanism"),
+        (_plan(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism), sheet.velocity_caption, "velocity"),
+        (_plan(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
+         sheet.acceleration_caption, "acceleration"),
+    ]
+    layers: list[Layer] = []
+    cursor = 0.0
+    for drawing, caption, name in panels:
+        xmin, ymin, xmax, ymax = bounds_of(item for layer in drawing for item in layer.items)
+        middle = (xmin + xmax) / 2
+        lines = tuple(Text((middle, ymin - CAPTION_GAP_MM - k * 1.6 * CAPTION_SIZE), text, CAPTION_SIZE, "middle",
+                           weight="bold" if k == 0 else "normal") for k, text in enumerate(caption))
+        panel = [*drawing, Layer(f"{name}-caption", lines)]
+        left, _, right, _ = bounds_of(item for layer in panel for item in layer.items)
+        # Drawings side by side, their middles on one level.
+        layers.extend(moved_layers(panel, cursor - left, -(ymin + ymax) / 2))
+        cursor += right - left + GAP_MM
+    _, _, _, top = bounds_of(item for layer in layers for item in layer.items)
+    layers.append(Layer("sheet-title", (Text((0.0, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
+    return layers
+
+
+# The mechanism in the position.
+
+def _mechanism(sheet: PlanSheet) -> list[Layer]:
+    mechanism, motion, index = sheet.mechanism, sheet.motion, sheet.index
+    mm_per_m = 1.0 / sheet.length_scale
+
+    def paper(r: complex) -> tuple[float, float]:
+        return (r.real * mm_per_m, r.imag * mm_per_m)
+
+    def where(name: str) -> complex:
+        return value_at(motion.points[name].r, index)
+
+    outlines = outline_points(mechanism, motion)
+    links = links_at(motion, index, outlines, paper, _LINK, bold=True)
+    frame: list[Primitive] = []
+    for slide in motion.slides:
+        if slide.guide == mechanism.scene.frame_link:
+            u, r = value_at(slide.u, index), where(slide.joint)
+            # The guide carries the block with room to spare, and runs to the frame points on its line.
+            reach = GUIDE_REACH_MM * sheet.length_scale
+            along = [0.0] + [((q - r) * u.conjugate()).real for q in mechanism.scene.frame_points.values()
+                             if abs(((q - r) * u.conjugate()).imag) < 1e-9 * max(abs(q - r), 1.0)]
+            frame.extend(frame_guide(r + (min(along) - reach) * u, r + (max(along) + reach) * u, u,
+                                     sheet.length_scale, paper))
+    frame.extend(frame_pivots(mechanism, paper))
+    # Named points, and frame points that are no pivot (the end of a guide), as dots.
+    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
+    marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
+    marks += [dot_marker(paper(r)) for name, r in mechanism.scene.frame_points.items() if name not in pivots]
+    senses, turn_anchors = _senses(sheet, outlines, where, paper)
+    drawn = links + frame + marks + senses
+    # Points fixed on a link only: an RPR lever's point under the block would just repeat a label.
+    names = [name for name in motion.points if any(name in on for on in mechanism.fixed_on.values())]
+    anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn))
+               for name in names]
+    labels = place_labels(anchors + turn_anchors, obstacles_of(drawn))
+    return [Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
+            Layer("mechanism-senses", tuple(senses)), Layer("mechanism-points", tuple(marks)),
+            Layer("mechanism-labels", tuple(labels))]
+
+
+def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[str], complex],
+            paper: Paper) -> tuple[list[Primitive], list[Anchor]]:
+    """Short arrows along the velocities of the joints; curved arrows of ω and ε on each turning link.
+
+    The senses are read off the plans: a point's velocity is along its
+    vector pb, a link's ω and ε are those the plans give.  Centres of mass
+    that are not joints get no arrow, to keep the links legible.
+    """
+    velocity, acceleration = sheet.velocity, sheet.acceleration
+    named = {spec.name for spec in sheet.mechanism.scene.points}
+    centres = {spec.centre for spec in sheet.mechanism.scene.links.values()} & named
+    items: list[Primitive] = []
+    for name, letter in velocity.images.items():
+        if letter == "p" or name in centres or name not in sheet.motion.points or abs(velocity.mm(letter)) < ZERO_MM:
+            continue
+        sense = velocity.points[letter] / abs(velocity.points[letter])
+        # From the rim of the pin, so that the pin does not hide the start.
+        start = paper(where(name) + 1.6 * sheet.length_scale * sense)
+        end = (start[0] + SENSE_ARROW_MM * sense.real, start[1] + SENSE_ARROW_MM * sense.imag)
+        items.append(Arrow(start, end, Stroke(0.45, _VELOCITY_COLOUR), 3.0, _key("mechanism", "v", name)))
+    points = MultiPoint([paper(where(name)) for name in sheet.motion.points])
+    anchors: list[Anchor] = []
+    for link in sheet.mechanism.moving_links:
+        names = outlines.get(link, [])
+        if len(names) < 2:
+            continue
+        others = unary_union([points] + [_outline(MultiPoint([paper(where(n)) for n in other]))
+                                         for number, other in outlines.items() if number != link and len(other) > 1])
+        first, second = max(((a, b) for i, a in enumerate(names) for b in names[i + 1:]),
+                            key=lambda ab: abs(where(ab[0]) - where(ab[1])))
+        start_mm, end_mm = paper(where(first)), paper(where(second))
+        along = math.atan2(end_mm[1] - start_mm[1], end_mm[0] - start_mm[0])
+        centre = _clear_spot(start_mm, end_mm, others)
+        for symbol, rates, colour, side in (("ω", velocity.rates, _VELOCITY_COLOUR, 0.0),
+                                            ("ε", acceleration.rates, _ACCELERATION_COLOUR, math.pi)):
+            rate = rates.get(link, 0.0)
+            if abs(rate) <= 1e-9 * max([1.0, *(abs(r) for r in rates.values())]):
+                continue
+            sweep = math.copysign(math.radians(100.0), rate)
+            start = along + side - sweep / 2
+            items.extend(curved_arrow(centre, TURN_RADIUS_MM, start, sweep, Stroke(0.45, colour), 2.8))
+            tail = (centre[0] + TURN_RADIUS_MM * math.cos(start), centre[1] + TURN_RADIUS_MM * math.sin(start))
+            anchors.append(Anchor(tail, f"{symbol}{link}", LETTER_SIZE - 0.5, start, colour))
+    return items, anchors
+
+
+def _outline(points: MultiPoint) -> BaseGeometry:
+    """The lines of a link drawn as the hull of its points: the segment, or the polygon's boundary."""
+    hull = points.convex_hull
+    return hull.boundary if hull.geom_type == "Polygon" else hull
+
+
+def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: BaseGeometry) -> tuple[float, float]:
+    """The spot on the segment, among a few, farthest from the mechanism's points and its other links."""
+    spots = [(start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]))
+             for t in (0.5, 0.65, 0.35, 0.75, 0.25)]
+    return max(spots, key=lambda spot: round(others.distance(ShapelyPoint(spot)), 6))
+
+
+# A plan.
+
+def _plan(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list[Layer]:
+    """The plan's lines of action, similar figures, vectors, points and letters."""
+    actions = _lines_of_action(plan)
+    figures = _similar_figures(plan, mechanism)
+    vectors = _vectors(plan, kind)
+    groups = _coincident(plan)
+    dots = [dot_marker(_xy(plan.mm(group[0])), 0.7 if group[0] == "p" else 0.5) for group in groups]
+    drawn = actions + figures + vectors + dots
+    anchors = []
+    for group in groups:
+        at = _xy(plan.mm(group[0]))
+        text = ", ".join(pole if letter == "p" else letter for letter in group)
+        anchors.append(Anchor(at, text, LETTER_SIZE, open_direction(at, actions + figures + vectors)))
+    labels = place_labels(anchors, obstacles_of(drawn))
+    return [Layer(f"{kind}-lines", tuple(actions + figures)), Layer(f"{kind}-vectors", tuple(vectors)),
+            Layer(f"{kind}-points", tuple(dots)), Layer(f"{kind}-labels", tuple(labels))]
+
+
+def _vectors(plan: Plan, kind: str) -> list[Primitive]:
+    """Every vector the steps lay off, once, then the absolute vector of every point from the pole.
+
+    A vector repeated by a later step (vBC = vB when C is at the pole) is drawn
+    once; a vector of zero length is not drawn at all.
+    """
+    arrows: list[Primitive] = []
+    seen: set[tuple[str, str]] = set()
+
+    def lay(start: str, end: str) -> None:
+        if (start, end) in seen or start == end:
+            return
+        seen.add((start, end))
+        if abs(plan.mm(end) - plan.mm(start)) < ZERO_MM:
+            return
+        stroke = _ABSOLUTE if start == "p" else _RELATIVE
+        arrows.append(Arrow(_xy(plan.mm(start)), _xy(plan.mm(end)), stroke, key=_key(kind, start, end)))
+
+    for step in plan.steps:
+        for vector in step.vectors:
+            lay(vector.start, vector.end)
+    for letter in plan.images.values():
+        lay("p", letter)
+    return arrows
+
+
+def _lines_of_action(plan: Plan) -> list[Primitive]:
+    """Each line of action: thin from its point to where it crosses, dashed for a run beyond.
+
+    The crossing is the point the step fixes on the line; a line whose
+    crossing coincides with its own point (a zero vector) is drawn dashed
+    both ways.
+    """
+    items: list[Primitive] = []
+    for step in plan.steps:
+        candidates = list(step.fixes) + [v.end for v in step.vectors]
+        for line in step.lines:
+            through = plan.mm(line.through)
+            unit = line.direction / abs(line.direction)
+            crossing = next((plan.mm(c) for c in candidates
+                             if abs(_off_line(plan.mm(c), through, unit)) < 0.05 and abs(plan.mm(c) - through) >= ZERO_MM),
+                            None)
+            if crossing is None:
+                items.append(Polyline((_xy(through - RUN_ON_MM * unit), _xy(through + RUN_ON_MM * unit)),
+                                      _ACTION_RUN_ON))
+                continue
+            onward = (crossing - through) / abs(crossing - through)
+            items.append(Polyline((_xy(through), _xy(crossing)), _ACTION))
+            items.append(Polyline((_xy(crossing), _xy(crossing + RUN_ON_MM * onward)), _ACTION_RUN_ON))
+    return items
+
+
+def _similar_figures(plan: Plan, mechanism: Mechanism) -> list[Primitive]:
+    """The figure of each link on the plan (abe ∼ ABE) when it is more than a segment."""
+    items: list[Primitive] = []
+    for link in mechanism.moving_links:
+        letters = sorted({plan.images[name] for name in mechanism.fixed_on.get(link, ()) if name in plan.images})
+        if len(letters) < 3:
+            continue
+        hull = MultiPoint([_xy(plan.mm(letter)) for letter in letters]).convex_hull
+        if hull.geom_type == "Polygon" and hull.area > ZERO_MM ** 2:
+            items.append(Polyline(_corners(tuple(hull.exterior.coords)[:-1]), _FIGURE, closed=True))
+    return items
+
+
+def _corners(ring: tuple[tuple[float, float], ...]) -> tuple[tuple[float, float], ...]:
+    """The corners of a closed ring: a vertex on the line of its neighbours (s3 on ab) is none."""
+    kept = []
+    for k, (x, y) in enumerate(ring):
+        (x0, y0), (x1, y1) = ring[k - 1], ring[(k + 1) % len(ring)]
+        if abs((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)) > 0.01 * math.hypot(x1 - x0, y1 - y0):
+            kept.append((x, y))
+    return tuple(kept)
+
+
+def _coincident(plan: Plan) -> list[list[str]]:
+    """The plan's letters grouped by where they stand: points closer than :data:`ZERO_MM` share a label."""
+    groups: list[list[str]] = []
+    for letter in sorted(plan.points, key=lambda name: name != "p"):
+        for group in groups:
+            if abs(plan.mm(letter) - plan.mm(group[0])) < ZERO_MM:
+                group.append(letter)
+                break
+        else:
+            groups.append([letter])
+    return groups
+
+
+def _off_line(point: complex, through: complex, unit: complex) -> float:
+    """The signed distance of ``point`` from the line through ``through`` along ``unit``."""
+    return ((point - through) * unit.conjugate()).imag
+
+
+def _xy(value: complex) -> tuple[float, float]:
+    return (value.real, value.imag)
+
+
+def _key(*parts: str) -> str:
+    """An svg id from plan letters: ``velocity-p-b``."""
+    return "-".join(re.sub(r"[^A-Za-z0-9_]", "_", part) for part in parts)
+
+
+__all__ = ["PlanSheet", "ZERO_MM", "layout"]
