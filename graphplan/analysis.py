@@ -98,9 +98,6 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
         except ParallelLinesError as error:
             warnings.append(Warning(index, "singular", f"no plan: {error}"))
             continue
-        except NotImplementedError as error:  # a group kind whose construction has not landed yet
-            warnings.append(Warning(index, "no-plan", str(error)))
-            continue
         plans = {"velocity": velocity, "acceleration": acceleration}
         table = readings(mechanism, plans, where)
         exact = analytic_values(

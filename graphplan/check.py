@@ -101,32 +101,38 @@ def _relative_pairs(mechanism: Mechanism, velocity: Plan) -> list[tuple[str, str
 
 def _angular(mechanism: Mechanism, plans: Mapping[str, Plan], kind: str, link: int,
              positions: Mapping[str, complex]) -> Reading | None:
-    """ω or ε of ``link`` from a relative vector of two of its points, as the textbook reads it."""
+    """ω or ε of ``link`` from a relative vector of two of its points, as the textbook reads it.
+
+    ω from the relative velocity of the link's two points farthest apart;
+    ε from a tangential component the acceleration plan laid off on the link
+    (``n3b`` for ``aBA^τ``), divided by the length between its points.
+    """
     plan = plans[kind]
-    velocity = plans["velocity"]
-    on_link = [name for name in sorted(mechanism.fixed_on.get(link, ())) if name in plan.images and name in positions]
-    if len(on_link) < 2:
-        return None
-    first, second = max(((a, b) for i, a in enumerate(on_link) for b in on_link[i + 1:]),
-                        key=lambda ab: abs(positions[ab[0]] - positions[ab[1]]))
-    length = abs(positions[second] - positions[first])
-    rate = plan.rates[link]
-    sign = 1.0 if rate >= 0 else -1.0
+    members = plan.members.get(link, ())
+    sign = 1.0 if plan.rates[link] >= 0 else -1.0
     if kind == "velocity":
-        return Reading(f"omega{link}", kind, (velocity.images[first], velocity.images[second]), length, sign)
-    # ε from the tangential part: the segment from the end of the normal component to the point's image.
-    tangential = _tangential_segment(plan, first, second)
-    if tangential is None:
-        return None
-    return Reading(f"epsilon{link}", kind, tangential, length, sign)
-
-
-def _tangential_segment(plan: Plan, first: str, second: str) -> tuple[str, str] | None:
-    wanted = {f"a{second}{first}^τ", f"a{first}{second}^τ"}
+        pairs = [(a, b) for i, a in enumerate(members) for b in members[i + 1:] if a[0] != b[0]]
+        if not pairs:
+            return None
+        (first, first_letter), (second, second_letter) = max(pairs, key=lambda ab: abs(ab[0][0] - ab[1][0]))
+        return Reading(f"omega{link}", kind, (first_letter, second_letter), abs(second - first), sign)
+    named = [name for name in plan.images if name in positions and (positions[name], plan.images[name]) in members]
     for step in plan.steps:
         for vector in step.vectors:
-            if vector.meaning in wanted:
-                return (vector.start, vector.end)
+            if not vector.meaning.endswith("^τ"):
+                continue
+            pair = _point_pair(vector.meaning[1:-2], named)
+            if pair is not None and positions[pair[0]] != positions[pair[1]]:
+                return Reading(f"epsilon{link}", kind, (vector.start, vector.end),
+                               abs(positions[pair[0]] - positions[pair[1]]), sign)
+    return None
+
+
+def _point_pair(text: str, names: list[str]) -> tuple[str, str] | None:
+    """``"BA"`` → ``("B", "A")`` when both are among ``names`` (longest names tried first)."""
+    for first in sorted(names, key=len, reverse=True):
+        if text.startswith(first) and text[len(first):] in names:
+            return first, text[len(first):]
     return None
 
 

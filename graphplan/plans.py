@@ -32,8 +32,12 @@ SHALLOW_CROSSING_DEG = 5.0
 
 
 def image_name(point: str) -> str:
-    """The plan's letter for a point of the mechanism: ``B`` → ``b``, ``S3`` → ``s3``."""
-    return point.lower()
+    """The plan's letter for a point of the mechanism: ``B`` → ``b``, ``S3`` → ``s3``.
+
+    ``p`` is the pole's, so a point named P is lettered ``p′``.
+    """
+    letter = point.lower()
+    return f"{letter}′" if letter == "p" else letter
 
 
 @dataclass(frozen=True)
@@ -79,7 +83,8 @@ class Plan:
     ``scale`` they are the millimetres of the drawing (:meth:`mm`).
     ``images`` maps each mechanism point to its plan letter; ``rates`` holds
     the angular velocity (velocity plan) or angular acceleration
-    (acceleration plan) of each link as read off the plan, ccw positive.
+    (acceleration plan) of each link as read off the plan, ccw positive;
+    ``members`` lists each link's points on the plan as (position, letter).
     """
 
     kind: str
@@ -89,6 +94,7 @@ class Plan:
     images: Mapping[str, str]
     rates: Mapping[int, float]
     sliding: Mapping[int, complex]
+    members: Mapping[int, tuple[tuple[complex, str], ...]] = field(default_factory=dict)
 
     def mm(self, letter: str) -> complex:
         return self.points[letter] / self.scale
@@ -148,8 +154,49 @@ class Builder:
         return letter
 
     def cross(self, first: Line, second: Line) -> tuple[complex, float]:
-        """The crossing of two lines of action, and the angle they cross at."""
-        return cross_lines(first, second, self.size), crossing_angle_deg(first, second)
+        """The crossing of two lines of action, and the angle they cross at.
+
+        The lines are drawn out to a multiple of the plan's own extent (an
+        acceleration plan may measure thousands of m/s² on a mechanism of a
+        few decimetres), so that two lines that are not parallel always meet.
+        """
+        extent = max([abs(first.through), abs(second.through), *(abs(z) for z in self.points.values())])
+        return cross_lines(first, second, max(extent, self.size)), crossing_angle_deg(first, second)
+
+    def widest(self, link: int):
+        """The two images of ``link`` farthest apart on the mechanism, or None without two distinct ones."""
+        known = self.link_images.get(link, [])
+        pairs = [(a, b) for i, a in enumerate(known) for b in known[i + 1:] if a[0] != b[0]]
+        return max(pairs, key=lambda pair: abs(pair[0][0] - pair[1][0])) if pairs else None
+
+    def figure_ratio(self, link: int) -> complex:
+        """(q − p)/(Q − P) for two points P, Q of ``link`` and their images p, q.
+
+        The image of a link is its figure turned and scaled: iω on a velocity
+        plan, iε − ω² on an acceleration plan.  A link with one point on the
+        plan takes the ratio of the link it turns with; with none it
+        translates, and the ratio is 0.
+        """
+        if link == self.mechanism.scene.frame_link:
+            return 0j
+        pair = self.widest(link)
+        if pair is not None:
+            (pa, la), (pb, lb) = pair
+            return (self.points[lb] - self.points[la]) / (pb - pa)
+        if link in self.turns_with:
+            return self.figure_ratio(self.turns_with[link])
+        return 0j
+
+    def image_on(self, link: int, position: complex) -> complex:
+        """The image of the point of ``link`` at ``position``, by the similarity theorem."""
+        if link == self.mechanism.scene.frame_link:
+            return 0j
+        pair = self.widest(link)
+        if pair is not None:
+            (pa, la), (pb, lb) = pair
+            return similar_point(self.points[la], self.points[lb], pa, pb, position)
+        (pa, la), *_ = self.link_images[link]
+        return self.points[la] + self.figure_ratio(link) * (position - pa)
 
     def on_link(self, link: int, position: complex, letter: str) -> None:
         """Record that the plan point ``letter`` is the image of the link's point at ``position``."""
@@ -172,7 +219,7 @@ def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], direct
     for unit in mechanism.units:
         unit.solver.construct_velocity(board)  # type: ignore[union-attr]
         _place_named(board, mechanism, unit.points)
-    rates = _read_rates(board, mechanism, board.points)
+    rates = _read_rates(board, mechanism)
     return _finish(board, rates, scale, mechanism, pole_mm_key="velocity")
 
 
@@ -184,7 +231,7 @@ def acceleration_plan(mechanism: Mechanism, positions: Mapping[str, complex], di
     for unit in mechanism.units:
         unit.solver.construct_acceleration(board, velocities)  # type: ignore[union-attr]
         _place_named(board, mechanism, unit.points)
-    rates = _read_rates(board, mechanism, board.points, acceleration=True, velocities=velocities)
+    rates = _read_rates(board, mechanism)
     return _finish(board, rates, scale, mechanism, pole_mm_key="acceleration")
 
 
@@ -201,52 +248,30 @@ def _size(positions: Mapping[str, complex], mechanism: Mechanism) -> float:
 
 
 def _place_named(board: Builder, mechanism: Mechanism, specs) -> None:
-    """Images of named points by the similarity theorem, from two images already on their link."""
+    """Images of named points by the similarity theorem, from the images already on their link."""
     for spec in specs:
         position = board.positions[spec.name]
         if spec.link == mechanism.scene.frame_link:
-            board.fix(spec.name, 0j)
+            board.images[spec.name] = "p"
             continue
-        known = board.link_images.get(spec.link, [])
-        (pa, la), (pb, lb) = _widest_pair(known)
-        value = similar_point(board.points[la], board.points[lb], pa, pb, position)
-        letter = board.fix(spec.name, value)
+        pair = board.widest(spec.link)
+        letter = board.fix(spec.name, board.image_on(spec.link, position))
         board.on_link(spec.link, position, letter)
-        board.step(Step(
-            equation=f"{letter[0]}{letter[1:]}: {la}{lb}{letter} ∼ {_upper(la)}{_upper(lb)}{spec.name} (similarity)",
-            vectors=(), fixes=(letter,)))
+        if pair is not None:
+            (_, la), (_, lb) = pair
+            basis = f"{la}{lb}{letter} ∼ {la.upper()}{lb.upper()}{spec.name}"
+        else:
+            basis = f"link {spec.link} turns with link {board.turns_with.get(spec.link)}"
+        board.step(Step(equation=f"{letter}: {basis} (similarity)", vectors=(), fixes=(letter,)))
 
 
-def _upper(letter: str) -> str:
-    return letter.upper()
-
-
-def _widest_pair(known: list[tuple[complex, str]]):
-    if len(known) < 2:
-        raise ValueError("a named point needs two points of its link on the plan")
-    return max(((a, b) for i, a in enumerate(known) for b in known[i + 1:]), key=lambda ab: abs(ab[0][0] - ab[1][0]))
-
-
-def _read_rates(board: Builder, mechanism: Mechanism, points, acceleration: bool = False,
-                velocities: Plan | None = None) -> dict[int, float]:
-    """ω (or ε) of every moving link from the images of two of its points.
+def _read_rates(board: Builder, mechanism: Mechanism) -> dict[int, float]:
+    """ω (velocity plan) or ε (acceleration plan) of every moving link, read off its image.
 
     On a velocity plan qp = ω × PQ, so ω = (PQ × pq)/PQ²; on an acceleration
-    plan the tangential part gives ε the same way.  A block that has a single
-    point on the plan turns with the link it slides in.
+    plan the tangential part gives ε the same way.
     """
-    rates: dict[int, float] = {}
-    for link in mechanism.moving_links:
-        known = board.link_images.get(link, [])
-        if len(known) >= 2:
-            (pa, la), (pb, lb) = _widest_pair(known)
-            ratio = (points[lb] - points[la]) / (pb - pa)
-            rates[link] = ratio.imag
-    for link, other in board.turns_with.items():
-        rates[link] = rates.get(other, 0.0)
-    for link in mechanism.moving_links:
-        rates.setdefault(link, 0.0)
-    return rates
+    return {link: board.figure_ratio(link).imag for link in mechanism.moving_links}
 
 
 def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechanism: Mechanism,
@@ -262,7 +287,8 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
         extent = max(abs(a - b) for a in board.points.values() for b in board.points.values())
         scale = standard_scale(max(extent, 1e-300) / PLAN_FIELD_MM)
     return Plan(kind=board.kind, scale=scale, points=dict(board.points), steps=tuple(board.steps),
-                images=dict(board.images), rates=rates, sliding=dict(board.sliding))
+                images=dict(board.images), rates=rates, sliding=dict(board.sliding),
+                members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()})
 
 
 __all__ = ["Builder", "DrawnLine", "LaidVector", "Plan", "ParallelLinesError", "SHALLOW_CROSSING_DEG", "Step",

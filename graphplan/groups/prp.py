@@ -7,7 +7,10 @@ Differentiated, with B_k the point of guide k's link under B:
     vB = vB_1 + ṡ1·u1 = vB_2 + ṡ2·u2
     aB = aB_1 + 2·ω1 × ṡ1u1 + s̈1·u1 = aB_2 + 2·ω2 × ṡ2u2 + s̈2·u2
 
-Each slider turns with its guide.
+Each slider turns with its guide.  On the plans B_k is the image of guide
+k's point under B, by similarity from its link's images (the pole on the
+frame), and each line of action runs along its guide through B_k, or through
+the end k of the Coriolis component when that guide turns.
 """
 
 from __future__ import annotations
@@ -17,9 +20,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SingularPositionError
+from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines
+from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide
+from .sliding import coriolis, coriolis_letter, guide_label, guide_link, guide_point, turns
 
 
 @dataclass(frozen=True)
@@ -83,3 +89,79 @@ class PRP(Group):
                     SlideMotion(link_b, g2.link, b_name, u2, s2, s2_dot, s2_ddot)),
             conditioning=det,
         )
+
+    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
+        """Each slider whose guide turns."""
+        return tuple(link for link, guide in zip(self.links, self.guide_pair)
+                     if turns(mechanism, guide_link(mechanism, guide)))
+
+    # The plans: the same equations, solved by crossing lines of action.
+
+    def construct_velocity(self, board: Builder) -> None:
+        """vB = vB_1 + vBB_1 (∥ guide 1) = vB_2 + vBB_2 (∥ guide 2): lines through b_1 and b_2, crossed at b."""
+        b_name = self.joints[0]
+        b_pos = board.positions[b_name]
+        sides = []
+        for slider, guide in zip(self.links, self.guide_pair):
+            _, along, carrier = board.guide_line(guide)
+            sides.append((slider, guide, along, carrier, guide_point(board, carrier, b_name)))
+        (_, g1, u1, _, b1), (_, g2, u2, _, b2) = sides
+        value, angle = board.cross(Line(board.points[b1], u1, guide_label(g1)),
+                                   Line(board.points[b2], u2, guide_label(g2)))
+        b = board.fix(b_name, value)
+        laid, terms = [], []
+        for slider, guide, along, carrier, under in sides:
+            board.on_link(slider, b_pos, b)
+            board.turns_with[slider] = carrier
+            board.sliding[slider] = value - board.points[under]
+            g = f"{b_name}{carrier}"
+            terms.append(f"v{g} + v{b_name}{g}")
+            if under != "p":
+                laid.append(LaidVector(under, b, f"v{b_name}{g}"))
+        board.step(Step(
+            equation=f"v{b_name} = {terms[0]} = {terms[1]}",
+            vectors=(*laid, LaidVector("p", b, f"v{b_name}")),
+            lines=(DrawnLine(b1, u1, guide_label(g1)), DrawnLine(b2, u2, guide_label(g2))),
+            fixes=(b,), crossing_deg=angle))
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aB = aB_1 + aBB_1ᵏ + aBB_1^r (∥ guide 1) = aB_2 + aBB_2ᵏ + aBB_2^r (∥ guide 2).
+
+        On a turning guide k the Coriolis part 2·ωk × vBB_k, its relative
+        velocity read off the velocity plan and turned 90° in the sense of ωk,
+        is laid from b_k; the line along the guide goes through its end.
+        """
+        b_name = self.joints[0]
+        b_pos = board.positions[b_name]
+        turning = self.coriolis_sliders(board.mechanism)
+        sides, laid, terms, marks = [], [], [], []
+        for slider, guide in zip(self.links, self.guide_pair):
+            _, along, carrier = board.guide_line(guide)
+            under = guide_point(board, carrier, b_name)
+            g = f"{b_name}{carrier}"
+            term = f"a{g}"
+            start = under
+            if slider in turning:
+                v_rel = velocities.value(b_name) - velocities.points[under]
+                start = board.mark(coriolis_letter(board, slider),
+                                   board.points[under] + coriolis(velocities.rates.get(carrier, 0.0), v_rel))
+                laid.append(LaidVector(under, start, f"a{b_name}{g}ᵏ"))
+                marks.append(start)
+                term += f" + a{b_name}{g}ᵏ"
+            terms.append(f"{term} + a{b_name}{g}^r")
+            sides.append((slider, guide, along, carrier, start, g))
+        (_, g1, u1, _, k1, _), (_, g2, u2, _, k2, _) = sides
+        value, angle = board.cross(Line(board.points[k1], u1, guide_label(g1)),
+                                   Line(board.points[k2], u2, guide_label(g2)))
+        b = board.fix(b_name, value)
+        for slider, guide, along, carrier, start, g in sides:
+            board.on_link(slider, b_pos, b)
+            board.turns_with[slider] = carrier
+            board.sliding[slider] = value - board.points[start]
+            if start != "p":  # from the pole it would be aB itself
+                laid.append(LaidVector(start, b, f"a{b_name}{g}^r"))
+        board.step(Step(
+            equation=f"a{b_name} = {terms[0]} = {terms[1]}",
+            vectors=(*laid, LaidVector("p", b, f"a{b_name}")),
+            lines=(DrawnLine(k1, u1, guide_label(g1)), DrawnLine(k2, u2, guide_label(g2))),
+            fixes=(*marks, b), crossing_deg=angle))

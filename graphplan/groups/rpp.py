@@ -10,6 +10,12 @@ of the guide, u its direction and w = u·e^{i·angle} the slot's:
 
 Both links keep the guide's orientation (b) or the slot's (a), so they turn
 with the guide's link.
+
+On the plans the unknown is A_b (``A4``), link b's point under the block:
+vA_b = vA + vA_bA (∥ slot) = vA_g + vA_bA_g (∥ guide), with A_g the guide
+link's point under A; link b slides on the guide without turning relative to
+it, so every point of it has the same motion relative to the guide link, and
+B follows as vB = vB_g + vA_bA_g (on a frame guide link b translates: b = a_b).
 """
 
 from __future__ import annotations
@@ -20,9 +26,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SceneError
+from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, unit
+from ..plans import Builder, DrawnLine, LaidVector, Plan, Step, image_name
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, read_guide
+from .sliding import (coriolis, coriolis_letter, free_letter, guide_label, guide_link,
+                  guide_point, turns)
+
+# Link b's images must be this far apart (a fraction of the mechanism's size) to carry its figure.
+_SPAN = 1e-6
 
 
 @dataclass(frozen=True)
@@ -85,3 +98,122 @@ class RPP(Group):
                     SlideMotion(link_b, guide.link, b_name, u, s_b, s_b_dot, s_b_ddot)),
             conditioning=det,
         )
+
+    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
+        """Both links when the guide turns: the block in the turning slot, link b on the turning guide."""
+        return self.links if turns(mechanism, guide_link(mechanism, self.guide)) else ()
+
+    # The plans: the same equations, solved by crossing lines of action.
+
+    def construct_velocity(self, board: Builder) -> None:
+        """vA4 = vA3 + vA4A3 (∥ slot) = vAg + vA4Ag (∥ guide): lines through a and a_g, crossed at a4.
+
+        A3 is the block's point A (image ``a``), A4 link b's point under it,
+        Ag the guide link's point under it (the pole on a frame guide).
+        """
+        a_name, b_name = self.joints
+        block, slotted = self.links
+        along_guide, along_slot, carrier = self._lines(board)
+        a = board.images[a_name]
+        ag = guide_point(board, carrier, a_name)
+        value, angle = board.cross(Line(board.points[a], along_slot, "∥ slot"),
+                                   Line(board.points[ag], along_guide, guide_label(self.guide)))
+        a4 = board.mark(self._coincident(board), value)
+        board.sliding[block] = board.points[a] - value
+        board.sliding[slotted] = value - board.points[ag]
+        pin, point, g = f"{a_name}{block}", f"{a_name}{slotted}", f"{a_name}{carrier}"
+        relative = () if ag == "p" else (LaidVector(ag, a4, f"v{point}{g}"),)
+        board.step(Step(
+            equation=f"v{point} = v{pin} + v{point}{pin} = v{g} + v{point}{g}",
+            vectors=(LaidVector(a, a4, f"v{point}{pin}"), *relative, LaidVector("p", a4, f"v{point}")),
+            lines=(DrawnLine(a, along_slot, "∥ slot"), DrawnLine(ag, along_guide, guide_label(self.guide))),
+            fixes=(a4,), crossing_deg=angle))
+        self._place_b(board, "v", carrier, ag, a4)
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aA4 = aA3 + aA4A3ᵏ + aA4A3^r (∥ slot) = aAg + aA4Agᵏ + aA4Ag^r (∥ guide).
+
+        On a turning guide both Coriolis parts are laid: 2·ω4 × vA4A3 from a
+        (link b turns with the guide, ω4 = ωg) and 2·ωg × vA4Ag from a_g, each
+        the relative velocity read off the velocity plan turned 90° in the
+        sense of ω; the lines along the slot and the guide go through their ends.
+        """
+        a_name, b_name = self.joints
+        block, slotted = self.links
+        along_guide, along_slot, carrier = self._lines(board)
+        a = board.images[a_name]
+        ag = guide_point(board, carrier, a_name)
+        coincident = self._coincident(board)
+        pin, point, g = f"{a_name}{block}", f"{a_name}{slotted}", f"{a_name}{carrier}"
+        k_slot, k_guide, laid = a, ag, []
+        equation = [f"a{point} = a{pin}", f" = a{g}"]
+        if self.coriolis_sliders(board.mechanism):
+            v_slot = velocities.points[coincident] - velocities.value(a_name)
+            v_guide = velocities.points[coincident] - velocities.points[ag]
+            k_slot = board.mark(coriolis_letter(board, block),
+                                board.points[a] + coriolis(velocities.rates[slotted], v_slot))
+            k_guide = board.mark(coriolis_letter(board, slotted),
+                                 board.points[ag] + coriolis(velocities.rates.get(carrier, 0.0), v_guide))
+            laid += [LaidVector(a, k_slot, f"a{point}{pin}ᵏ"), LaidVector(ag, k_guide, f"a{point}{g}ᵏ")]
+            equation = [f"{equation[0]} + a{point}{pin}ᵏ", f"{equation[1]} + a{point}{g}ᵏ"]
+        value, angle = board.cross(Line(board.points[k_slot], along_slot, "∥ slot"),
+                                   Line(board.points[k_guide], along_guide, guide_label(self.guide)))
+        a4 = board.mark(coincident, value)
+        board.sliding[block] = board.points[k_slot] - value
+        board.sliding[slotted] = value - board.points[k_guide]
+        laid.append(LaidVector(k_slot, a4, f"a{point}{pin}^r"))
+        if k_guide != "p":  # from the pole it would be aA4 itself
+            laid.append(LaidVector(k_guide, a4, f"a{point}{g}^r"))
+        laid.append(LaidVector("p", a4, f"a{point}"))
+        board.step(Step(
+            equation=f"{equation[0]} + a{point}{pin}^r{equation[1]} + a{point}{g}^r",
+            vectors=tuple(laid),
+            lines=(DrawnLine(k_slot, along_slot, "∥ slot"), DrawnLine(k_guide, along_guide, guide_label(self.guide))),
+            fixes=(*(m for m in (k_slot, k_guide) if m not in (a, ag)), a4), crossing_deg=angle))
+        self._place_b(board, "a", carrier, ag, a4)
+
+    def _lines(self, board: Builder) -> tuple[complex, complex, int]:
+        """The guide's and the slot's directions, and the guide's link."""
+        _, along_guide, carrier = board.guide_line(self.guide)
+        return along_guide, along_guide * unit(self.angle), carrier
+
+    def _coincident(self, board: Builder) -> str:
+        """The plan letter of link b's point under A (``a4``)."""
+        return free_letter(board, f"{image_name(self.joints[0])}{self.links[1]}")
+
+    def _place_b(self, board: Builder, symbol: str, carrier: int, ag: str, a4: str) -> None:
+        """B, link b's reference point: its motion relative to the guide link is A4's (link b does not turn on it).
+
+        Then link b's figure (A4, B) and the block's (A, turning with link b)
+        are registered for the similarity of named points.
+        """
+        a_name, b_name = self.joints
+        block, slotted = self.links
+        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
+        point, g = f"{a_name}{slotted}", f"{b_name}{carrier}"
+        if carrier == board.mechanism.scene.frame_link:
+            b = board.fix(b_name, board.points[a4])
+            step = Step(f"{symbol}{b_name} = {symbol}{point} (link {slotted} translates on the frame's guide)",
+                        (LaidVector("p", b, f"{symbol}{b_name}"),), fixes=(b,))
+        else:
+            bg = guide_point(board, carrier, b_name)
+            b = board.fix(b_name, board.points[bg] + board.points[a4] - board.points[ag])
+            relative = f"{symbol}{b_name}{g}" if symbol == "v" else f"{symbol}{b_name}{g}ᵏ + {symbol}{b_name}{g}^r"
+            same = (f"{symbol}{point}{a_name}{carrier}" if symbol == "v"
+                    else f"{symbol}{point}{a_name}{carrier}ᵏ + {symbol}{point}{a_name}{carrier}^r")
+            step = Step(f"{symbol}{b_name} = {symbol}{g} + {relative}, {relative} = {same}",
+                        (LaidVector(bg, b, f"{symbol}{b_name}{g}"), LaidVector("p", b, f"{symbol}{b_name}")),
+                        fixes=(b,))
+        board.step(step)
+        board.on_link(slotted, a_pos, a4)
+        board.on_link(slotted, b_pos, b)
+        if abs(a_pos - b_pos) < _SPAN * board.size:
+            # The block sits on B: one more point of link b, along the guide, carries its figure.
+            far = b_pos + board.guide_line(self.guide)[1] * board.size
+            ratio = board.figure_ratio(carrier)
+            letter = b if ratio == 0 else board.mark(free_letter(board, f"{b}′"),
+                                                     board.points[b] + ratio * (far - b_pos))
+            board.on_link(slotted, far, letter)
+        board.on_link(block, a_pos, board.images[a_name])
+        board.turns_with[slotted] = carrier
+        board.turns_with[block] = slotted

@@ -11,6 +11,10 @@ The block turns with the lever: ωa = ωb, εa = εb.  The lever's direction u
 points from C's foot on the slide line toward A, so s > 0 everywhere; the
 block cannot pass that foot without the lever turning through a singular
 position.
+
+The plans lay the same equations off as the textbook writes them, with the
+lever's point A_b (``A4``) as the unknown (see :meth:`RPR.construct_velocity`
+and :meth:`RPR.construct_acceleration`).
 """
 
 from __future__ import annotations
@@ -20,9 +24,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, norm2
+from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import Context, Group, GroupMotion, check_lines_cross
+from .sliding import coriolis, coriolis_letter
 
 
 @dataclass(frozen=True)
@@ -94,3 +101,81 @@ class RPR(Group):
             slides=(SlideMotion(self.links[0], self.links[1], a_name, u, s, s_dot, s_ddot),),
             conditioning=sine,
         )
+
+    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
+        """The block: it slides on the turning lever."""
+        return (self.links[0],)
+
+    # The plans: the same equations, solved by crossing lines of action.
+
+    def _slide(self, board: Builder) -> tuple[complex, complex, complex, str]:
+        """A's and C's positions, the slide's direction (the lever's line) and how its line of action is described."""
+        a_name, c_name = self.joints
+        a_pos, c_pos = board.positions[a_name], board.positions[c_name]
+        along = board.directions[self.links[1]]
+        label = f"∥ {c_name}{a_name}" if self.offset == 0.0 else f"∥ slide of link {self.links[1]}"
+        return a_pos, c_pos, along, label
+
+    def construct_velocity(self, board: Builder) -> None:
+        """vA4 = vA3 + vA4A3 (∥ slide) = vC + vA4C (⊥ CA): lines through a3 and c, crossed at a4.
+
+        A3 is the block's point A (its image ``a`` is known), A4 the lever's
+        point under it.  vA3A4 = a − a4 is the block's sliding velocity; the
+        block turns with the lever.
+        """
+        a_name, c_name = self.joints
+        block, lever = self.links
+        a_pos, c_pos, along, label = self._slide(board)
+        a, c = board.images[a_name], board.images[c_name]
+        across_ca = 1j * (a_pos - c_pos)
+        value, angle = board.cross(Line(board.points[a], along, label),
+                                   Line(board.points[c], across_ca, f"⊥{c_name}{a_name}"))
+        a4 = board.fix(self.coincident, value)
+        board.on_link(lever, c_pos, c)
+        board.on_link(lever, a_pos, a4)
+        board.on_link(block, a_pos, a)
+        board.turns_with[block] = lever
+        board.sliding[block] = board.points[a] - value
+        pin, point = f"{a_name}{block}", self.coincident
+        board.step(Step(
+            equation=f"v{point} = v{pin} + v{point}{pin} = v{c_name} + v{point}{c_name}",
+            vectors=(LaidVector(a, a4, f"v{point}{pin}"), LaidVector(c, a4, f"v{point}{c_name}"),
+                     LaidVector("p", a4, f"v{point}")),
+            lines=(DrawnLine(a, along, label), DrawnLine(c, across_ca, f"⊥ {c_name}{a_name}")),
+            fixes=(a4,), crossing_deg=angle))
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aA4 = aA3 + aA4A3ᵏ + aA4A3^r (∥ slide) = aC + aA4Cⁿ + aA4C^τ (⊥ CA).
+
+        The Coriolis part 2·ω3 × vA4A3 (ω3 = ω4, read off the velocity plan,
+        as is vA4A3 = a4 − a there) is laid from a3 and ends at k; the normal
+        part ω4²·CA points from A toward C and ends at n4; the lines through
+        k along the slide and through n4 square to CA cross at a4.  The
+        block's relative acceleration is then aA3A4^r = k − a4.
+        """
+        a_name, c_name = self.joints
+        block, lever = self.links
+        a_pos, c_pos, along, label = self._slide(board)
+        a, c = board.images[a_name], board.images[c_name]
+        omega = velocities.rates[lever]
+        v_rel = velocities.value(self.coincident) - velocities.value(a_name)
+        k = board.mark(coriolis_letter(board, block), board.points[a] + coriolis(omega, v_rel))
+        normal = board.mark(f"n{lever}", board.points[c] - omega**2 * (a_pos - c_pos))
+        across_ca = 1j * (a_pos - c_pos)
+        value, angle = board.cross(Line(board.points[k], along, label),
+                                   Line(board.points[normal], across_ca, f"⊥{c_name}{a_name}"))
+        a4 = board.fix(self.coincident, value)
+        board.on_link(lever, c_pos, c)
+        board.on_link(lever, a_pos, a4)
+        board.on_link(block, a_pos, a)
+        board.turns_with[block] = lever
+        board.sliding[block] = board.points[k] - value
+        pin, point = f"{a_name}{block}", self.coincident
+        board.step(Step(
+            equation=(f"a{point} = a{pin} + a{point}{pin}ᵏ + a{point}{pin}^r"
+                      f" = a{c_name} + a{point}{c_name}ⁿ + a{point}{c_name}^τ"),
+            vectors=(LaidVector(a, k, f"a{point}{pin}ᵏ"), LaidVector(k, a4, f"a{point}{pin}^r"),
+                     LaidVector(c, normal, f"a{point}{c_name}ⁿ"), LaidVector(normal, a4, f"a{point}{c_name}^τ"),
+                     LaidVector("p", a4, f"a{point}")),
+            lines=(DrawnLine(k, along, label), DrawnLine(normal, across_ca, f"⊥ {c_name}{a_name}")),
+            fixes=(k, normal, a4), crossing_deg=angle))

@@ -7,6 +7,12 @@ link g.  Closure: B = A + AB·e^{iθa} = G + s·u.  Differentiated:
     aB = aA + εa × AB − ωa²·AB = aG + εg × GB − ωg²·GB + 2·ωg × ṡu + s̈·u
 
 the last line with the Coriolis term of the slider on a rotating guide.
+
+The plans solve the same equations by crossing lines of action (see
+:meth:`RRP.construct_velocity`).  The helpers at the end of this module are
+shared by the sliding kinds (RPR, PRP, RPP import them): the image of a guide
+link's point under a slider by similarity, the Coriolis component, and the
+crossing of two lines of action at the plan's own size.
 """
 
 from __future__ import annotations
@@ -16,9 +22,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, dot
+from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, check_lines_cross, nearest_branch, read_branch, read_guide
+from .sliding import coriolis, coriolis_letter, guide_label, guide_link, guide_point, turns
 
 # B ahead of (forward) or behind (backward) the foot of A on the guide,
 # counted along the guide's direction.
@@ -107,3 +116,85 @@ class RRP(Group):
             slides=(SlideMotion(self.links[1], guide.link, b_name, guide.u, s, s_dot, s_ddot),),
             conditioning=sine,
         )
+
+    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
+        """The slider, when its guide turns (its acceleration then has a Coriolis component)."""
+        return (self.links[1],) if turns(mechanism, guide_link(mechanism, self.guide)) else ()
+
+    # The plans: the same equations, solved by crossing lines of action.
+
+    def construct_velocity(self, board: Builder) -> None:
+        """vB = vA + vBA (⊥ AB) = vBg + vBBg (∥ guide): lines through a and bg, crossed at b.
+
+        bg is the image of the guide link g's point under B, by similarity from
+        g's images already on the plan; on a frame guide it is the pole.
+        """
+        a_name, b_name = self.joints
+        rod, slider = self.links
+        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
+        _, along_guide, carrier = board.guide_line(self.guide)
+        a = board.images[a_name]
+        bg = guide_point(board, carrier, b_name)
+        across_ab = 1j * (b_pos - a_pos)
+        label = guide_label(self.guide)
+        value, angle = board.cross(Line(board.points[a], across_ab, f"⊥{a_name}{b_name}"),
+                                   Line(board.points[bg], along_guide, label))
+        b = board.fix(b_name, value)
+        board.on_link(rod, a_pos, a)
+        board.on_link(rod, b_pos, b)
+        board.on_link(slider, b_pos, b)
+        board.turns_with[slider] = carrier
+        board.sliding[slider] = value - board.points[bg]
+        g = f"{b_name}{carrier}"
+        relative = () if bg == "p" else (LaidVector(bg, b, f"v{b_name}{g}"),)
+        board.step(Step(
+            equation=f"v{b_name} = v{a_name} + v{b_name}{a_name} = v{g} + v{b_name}{g}",
+            vectors=(LaidVector(a, b, f"v{b_name}{a_name}"), *relative, LaidVector("p", b, f"v{b_name}")),
+            lines=(DrawnLine(a, across_ab, f"⊥ {a_name}{b_name}"), DrawnLine(bg, along_guide, label)),
+            fixes=(b,), crossing_deg=angle))
+
+    def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
+        """aB = aA + aBAⁿ + aBA^τ (⊥ AB) = aBg + aBBgᵏ + aBBg^r (∥ guide).
+
+        The normal part ω²·AB points from B toward A; the Coriolis part
+        2·ωg × vBBg (only on a turning guide) is vBBg, read off the velocity
+        plan, turned 90° in the sense of ωg; the relative part runs along the
+        guide.
+        """
+        a_name, b_name = self.joints
+        rod, slider = self.links
+        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
+        _, along_guide, carrier = board.guide_line(self.guide)
+        a = board.images[a_name]
+        omega = velocities.rates[rod]
+        normal = board.mark(f"n{rod}", board.points[a] - omega**2 * (b_pos - a_pos))
+        bg = guide_point(board, carrier, b_name)
+        g = f"{b_name}{carrier}"
+        laid = [LaidVector(a, normal, f"a{b_name}{a_name}ⁿ")]
+        equation = f"a{b_name} = a{a_name} + a{b_name}{a_name}ⁿ + a{b_name}{a_name}^τ = a{g}"
+        start = bg
+        if self.coriolis_sliders(board.mechanism):
+            v_rel = velocities.value(b_name) - velocities.points[bg]
+            start = board.mark(coriolis_letter(board, slider),
+                               board.points[bg] + coriolis(velocities.rates.get(carrier, 0.0), v_rel))
+            laid.append(LaidVector(bg, start, f"a{b_name}{g}ᵏ"))
+            equation += f" + a{b_name}{g}ᵏ"
+        equation += f" + a{b_name}{g}^r"
+        across_ab = 1j * (b_pos - a_pos)
+        label = guide_label(self.guide)
+        value, angle = board.cross(Line(board.points[normal], across_ab, f"⊥{a_name}{b_name}"),
+                                   Line(board.points[start], along_guide, label))
+        b = board.fix(b_name, value)
+        board.on_link(rod, a_pos, a)
+        board.on_link(rod, b_pos, b)
+        board.on_link(slider, b_pos, b)
+        board.turns_with[slider] = carrier
+        board.sliding[slider] = value - board.points[start]
+        laid.append(LaidVector(normal, b, f"a{b_name}{a_name}^τ"))
+        if start != "p":  # from the pole it would be aB itself
+            laid.append(LaidVector(start, b, f"a{b_name}{g}^r"))
+        laid.append(LaidVector("p", b, f"a{b_name}"))
+        board.step(Step(
+            equation=equation, vectors=tuple(laid),
+            lines=(DrawnLine(normal, across_ab, f"⊥ {a_name}{b_name}"), DrawnLine(start, along_guide, label)),
+            fixes=(normal, *((start,) if start != bg else ()), b), crossing_deg=angle))
