@@ -57,7 +57,7 @@ def analyse(scene: Scene) -> Analysis:
     """Build the mechanism, place the positions and solve them, with the extremes and a dense sweep."""
     mechanism = build(scene)
     positions = make_positions(mechanism)
-    motion = solve(mechanism, positions.values, positions.reference, positions.numbers)
+    motion = solve(mechanism, positions.values, positions.reference, positions.numbers, tolerant=True)
     # The positions drawn bold: the working link's two extremes, a slider driver's two ends, or the first position.
     if positions.extremes is not None:
         bold = np.array(positions.extremes)
@@ -65,13 +65,13 @@ def analyse(scene: Scene) -> Analysis:
         bold = positions.values[[0, -1]]
     else:
         bold = positions.values[:1]
-    emphasised = solve(mechanism, bold, positions.reference)
+    emphasised = solve(mechanism, bold, positions.reference, tolerant=True)
     driver = mechanism.driver
     if driver.kind == "crank":
         sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * np.pi, PATH_SAMPLES + 1)
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
-    paths = solve(mechanism, sweep, positions.reference)
+    paths = solve(mechanism, sweep, positions.reference, tolerant=True)
     plans, warnings = _plans(mechanism, positions, motion)
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, motion.warnings + warnings)
 
@@ -91,6 +91,8 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
     found, warnings = [], []
     for number in scene.positions.plans:
         index = int(number - scene.positions.number_from)
+        if index in motion.singular:  # already among the motion's warnings
+            continue
         where, directions = instant(motion, index)
         try:
             velocity = velocity_plan(mechanism, where, directions)

@@ -12,7 +12,7 @@ a warning, never silently.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Mapping, Sequence
 
 import numpy as np
@@ -73,6 +73,7 @@ class Motion:
     slides: tuple[SlideMotion, ...]
     conditioning: Mapping[str, np.ndarray]
     warnings: tuple[Warning, ...]
+    singular: Mapping[int, str] = field(default_factory=dict)
 
     @property
     def count(self) -> int:
@@ -103,7 +104,10 @@ class Motion:
 class _Context:
     """The motion found so far, as the groups ask for it while they solve."""
 
-    def __init__(self, mechanism: Mechanism, values: np.ndarray, describe: Callable[[int], str]) -> None:
+    def __init__(self, mechanism: Mechanism, values: np.ndarray, describe: Callable[[int], str],
+                 tolerant: bool = False) -> None:
+        self.tolerant = tolerant
+        self.singular: dict[int, str] = {}
         scene = mechanism.scene
         self._scene = scene
         self._describe = describe
@@ -133,6 +137,13 @@ class _Context:
         if bad.any():
             index = int(np.argmax(bad))
             raise error(index, self._describe(index))
+
+    def singular_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
+        if not self.tolerant:
+            self.fail_where(bad, error)
+            return
+        for index in np.flatnonzero(bad):
+            self.singular.setdefault(int(index), str(error(int(index), self._describe(int(index)))))
 
 
 @dataclass(frozen=True)
@@ -170,12 +181,16 @@ def reference_at(mechanism: Mechanism, value: float) -> Reference:
 
 
 def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference: Reference | None = None,
-          numbers: Sequence[int] | None = None) -> Motion:
+          numbers: Sequence[int] | None = None, tolerant: bool = False) -> Motion:
     """The motion at every driver coordinate in ``values`` (rad for a crank, m for a slider).
 
     ``reference`` fixes the branches and named points (see
     :func:`reference_at`); without it they are fixed at ``values[0]``.
-    ``numbers`` are the positions' numbers for error messages.
+    ``numbers`` are the positions' numbers for error messages.  A position
+    where a group's lines of action are parallel has no determined velocity:
+    it raises :class:`SingularPositionError`, or, when ``tolerant``, is listed
+    in ``Motion.singular`` with its reason (its velocities and accelerations
+    are then not numbers and must not be read).
     """
     try:
         values = np.atleast_1d(np.asarray(values, dtype=float))
@@ -193,12 +208,15 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
         text = driver.describe(float(values[index]))
         return f"position {numbers[index]} ({text})" if numbers is not None else text
 
-    return _solve(mechanism, values, reference, describe)
+    if not tolerant:
+        return _solve(mechanism, values, reference, describe, tolerant)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return _solve(mechanism, values, reference, describe, tolerant)
 
 
 def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
-                describe: Callable[[int], str]) -> Motion:
-    context = _Context(mechanism, values, describe)
+           describe: Callable[[int], str], tolerant: bool) -> Motion:
+    context = _Context(mechanism, values, describe, tolerant)
     slides: list[SlideMotion] = []
     conditioning: dict[str, np.ndarray] = {}
     for step, unit_ in enumerate(mechanism.units):
@@ -212,8 +230,12 @@ def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
         slides.extend(found.slides)
         for spec in unit_.points:
             context.points[spec.name] = _place(context, spec, mechanism, reference.local[spec.name])
+    singular = tuple(Warning(index, "singular", reason) for index, reason in sorted(context.singular.items()))
+    conditioned = tuple(w for w in _conditioning_warnings(conditioning) if w.position not in context.singular)
     return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
-                  slides=tuple(slides), conditioning=conditioning, warnings=_conditioning_warnings(conditioning))
+                  slides=tuple(slides), conditioning=conditioning,
+                  warnings=tuple(sorted(singular + conditioned, key=lambda w: w.position)),
+                  singular=dict(context.singular))
 
 
 def _local_coordinates(context: _Context, spec: PointSpec, mechanism: Mechanism) -> complex:

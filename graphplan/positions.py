@@ -64,7 +64,7 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         values = start + driver.sense * 2.0 * math.pi * np.arange(spec.count) / spec.count
     strokes = None
     if spec.working is not None:
-        motion = solve(mechanism, values, reference, numbers)
+        motion = solve(mechanism, values, reference, numbers, tolerant=True)
         strokes = tuple("working" if working else "idle" for working in _in_working_stroke(motion))
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes)
 

@@ -22,6 +22,14 @@ from ..reader import Table, check_str, check_xy
 # treated as exactly singular: the velocities are not determined by the
 # driver any more, and a number would be a guess.
 SINGULAR_SINE = 1e-12
+# A squared height this small (relative to the squares it is the difference
+# of) is rounding at a toggle: the joint lies on the line, and is placed there.
+TOGGLE_ROUNDING = 1e-12
+
+
+def at_toggle(square: np.ndarray | float, scale: float) -> np.ndarray | float:
+    """``square`` with rounding below zero at a toggle set to zero; a real shortfall stays negative."""
+    return np.where((square < 0) & (square > -TOGGLE_ROUNDING * scale), 0.0, square)
 
 
 @dataclass(frozen=True)
@@ -90,6 +98,10 @@ class Context(Protocol):
 
     def fail_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
         """Raise ``error(i, position_text)`` for the first position where ``bad`` holds."""
+        ...
+
+    def singular_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
+        """Positions where the velocities are undetermined: an error, or noted when the solve tolerates them."""
         ...
 
 
@@ -169,7 +181,7 @@ def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -
     """Report a position where the two lines of action are parallel."""
     if np.min(np.abs(sine)) >= SINGULAR_SINE:
         return
-    context.fail_where(
+    context.singular_where(
         np.atleast_1d(np.abs(sine) < SINGULAR_SINE),
         lambda i, at: SingularPositionError(
             at, group.label, f"{what}: the lines of action of the velocity plan are parallel "

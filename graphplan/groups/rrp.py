@@ -26,7 +26,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, dot
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
-from .base import Context, Group, GroupMotion, Guide, check_lines_cross, nearest_branch, read_branch, read_guide
+from .base import Context, Group, GroupMotion, Guide, at_toggle, check_lines_cross, nearest_branch, read_branch, read_guide
 from .sliding import coriolis, coriolis_letter, guide_label, guide_link, guide_point, turns
 
 # B ahead of (forward) or behind (backward) the foot of A on the guide,
@@ -71,7 +71,7 @@ class RRP(Group):
         ga = a.r - guide.origin.r
         foot = dot(ga, guide.u)
         height = cross(guide.u, ga)
-        reach2 = self.length * self.length - height * height
+        reach2 = at_toggle(self.length * self.length - height * height, self.length * self.length)
 
         def reason(i: int, at: str) -> AssemblyError:
             gap = abs(float(np.atleast_1d(height)[i]))

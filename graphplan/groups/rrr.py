@@ -19,7 +19,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, TwoLines, norm2
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
-from .base import Context, Group, GroupMotion, check_lines_cross, nearest_branch, read_branch
+from .base import Context, Group, GroupMotion, at_toggle, check_lines_cross, nearest_branch, read_branch
 
 # B left of the directed line A→C is the counter-clockwise turn of A→C.
 _BRANCHES = {"left": 1, "right": -1}
@@ -60,7 +60,7 @@ class RRR(Group):
         # both as fractions of |AC| (law of cosines, no trigonometry needed).
         with np.errstate(divide="ignore", invalid="ignore"):
             x = (ab * ab - bc * bc + d2) / (2.0 * d2)
-            h2 = ab * ab / d2 - x * x
+            h2 = at_toggle(ab * ab / d2 - x * x, 1.0)
 
         def reason(i: int, at: str) -> AssemblyError:
             span = float(np.sqrt(np.atleast_1d(d2)[i]))

@@ -19,14 +19,21 @@ from ..kinematics import as_xy
 SIGNIFICANT = 12
 
 
-def number(value: float) -> float:
-    """``value`` rounded to :data:`SIGNIFICANT` digits, with −0 written as 0."""
+def number(value: float) -> float | None:
+    """``value`` rounded to :data:`SIGNIFICANT` digits, with −0 written as 0.
+
+    A value that is not a number (a velocity at a singular position) is
+    written as null, never as NaN.
+    """
+    if not math.isfinite(float(value)):
+        return None
     rounded = float(f"{float(value):.{SIGNIFICANT}g}")
     return 0.0 if rounded == 0 else rounded
 
 
-def _pair(xy: np.ndarray) -> list[float]:
-    return [number(xy[0]), number(xy[1])]
+def _pair(xy: np.ndarray) -> list[float | None] | None:
+    pair = [number(xy[0]), number(xy[1])]
+    return None if None in pair else pair
 
 
 def results(analysis: Analysis) -> dict[str, Any]:
@@ -37,6 +44,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     points = {name: [as_xy(getattr(p, field), count) for field in ("r", "v", "a")] for name, p in motion.points.items()}
     links = {number_: motion.link(number_) for number_ in mechanism.moving_links}
     planned = {plan.index: plan for plan in analysis.plans}
+    settled = {*analysis.scene.frame_points, driver.joint, driver.link}
     entries = []
     for i in range(count):
         if driver.kind == "crank":
@@ -48,12 +56,16 @@ def results(analysis: Analysis) -> dict[str, Any]:
         entry: dict[str, Any] = {"index": int(positions.numbers[i]), "driver": driver_entry}
         if positions.strokes is not None:
             entry["stroke"] = positions.strokes[i]
-        entry["points"] = {name: {"r": _pair(r[i]), "v": _pair(v[i]), "a": _pair(a[i])}
+        # At a singular position the velocities past the driver are not determined: they are null.
+        known = (lambda name: True) if i not in motion.singular else (lambda name: name in settled)
+        entry["points"] = {name: {"r": _pair(r[i]), "v": _pair(v[i]) if known(name) else None,
+                                  "a": _pair(a[i]) if known(name) else None}
                            for name, (r, v, a) in points.items()}
         entry["links"] = {str(n): {"angle_deg": number(math.degrees(float(link.angle[i]))),
-                                   "omega": number(link.omega[i]), "epsilon": number(link.epsilon[i])}
+                                   "omega": number(link.omega[i]) if known(n) else None,
+                                   "epsilon": number(link.epsilon[i]) if known(n) else None}
                           for n, link in links.items()}
-        slides = [_slide(slide, i) for slide in motion.slides]
+        slides = [_slide(slide, i) for slide in motion.slides] if i not in motion.singular else []
         if slides:
             entry["slides"] = slides
         if i in planned:
@@ -103,4 +115,4 @@ def _slide(slide, i: int) -> dict[str, Any]:
 
 
 def dumps(document: dict[str, Any]) -> str:
-    return json.dumps(document, ensure_ascii=False, indent=1) + "\n"
+    return json.dumps(document, ensure_ascii=False, indent=1, allow_nan=False) + "\n"
