@@ -30,7 +30,8 @@ class Reading:
     ``segment`` is the pair of plan letters whose distance is measured;
     ``length`` the link length it is divided by (1 for a linear quantity);
     ``sign`` the sense the construction gives it (+1 ccw, −1 cw) for ω and ε,
-    and 1 for magnitudes.
+    and 1 for magnitudes; ``points`` the two mechanism points (B, A) of a
+    relative vector vBA.
     """
 
     quantity: str
@@ -38,6 +39,7 @@ class Reading:
     segment: tuple[str, str]
     length: float = 1.0
     sign: float = 1.0
+    points: tuple[str, str] | None = None
 
     def value(self, plans: Mapping[str, Plan], millimetres: float | None = None) -> float:
         """The quantity from the segment's length (``millimetres`` overrides the plan's own)."""
@@ -74,28 +76,42 @@ def readings(mechanism: Mechanism, plans: Mapping[str, Plan], positions: Mapping
         plan = plans[kind]
         moving = [name for name in plan.images if name not in frame and name in positions]
         result += [Reading(f"{symbol}{name}", kind, ("p", plan.images[name])) for name in moving]
-        for first, second in _relative_pairs(mechanism, plans["velocity"]):
-            result.append(Reading(f"{symbol}{second}{first}", kind,
-                                  (plan.images[first], plan.images[second])))
+        for name, first, second in _relative_pairs(mechanism, plans["velocity"]):
+            result.append(Reading(f"{symbol}{name}", kind, (plan.images[first], plan.images[second]),
+                                  points=(second, first)))
         for link in mechanism.moving_links:
+            if link in mechanism.translating:  # never turns: an ω or ε row would only show zeros
+                continue
             reading = _angular(mechanism, plans, kind, link, positions)
             if reading is not None:
                 result.append(reading)
     return result
 
 
-def _relative_pairs(mechanism: Mechanism, velocity: Plan) -> list[tuple[str, str]]:
-    """(A, B) for every relative velocity vBA the velocity plan laid off, B's about A."""
-    names = sorted(velocity.images, key=len, reverse=True)
+def _relative_pairs(mechanism: Mechanism, velocity: Plan) -> list[tuple[str, str, str]]:
+    """(name, A, B) for every relative velocity vBA the velocity plan laid off between two images.
+
+    ``name`` is the vector's own name (``BA``, or ``A4A3`` for a block sliding
+    on a lever, whose two points share a position); A and B are the points
+    whose images it joins.
+    """
+    names: dict[str, str] = {}
+    for name, letter in velocity.images.items():
+        names.setdefault(letter, name)
     pairs = []
     for step in velocity.steps:
         for vector in step.vectors:
-            if not vector.meaning.startswith("v"):
+            if not vector.meaning.startswith("v") or vector.end == "p" or vector.end not in names:
                 continue
-            moving = next((n for n in names if vector.meaning[1:].startswith(n)), None)
-            about = vector.meaning[1 + len(moving):] if moving else ""
-            if moving and about in velocity.images and (about, moving) not in pairs:
-                pairs.append((about, moving))
+            moving = names[vector.end]
+            about = vector.meaning[1 + len(moving):] if vector.meaning[1:].startswith(moving) else ""
+            if not (about in velocity.images and velocity.images[about] == vector.start):
+                # the pole stands for every frame point, so only a name can say which one
+                about = names.get(vector.start) if vector.start != "p" else None
+            if about and about != moving:
+                pair = (vector.meaning[1:], about, moving)
+                if pair not in pairs:
+                    pairs.append(pair)
     return pairs
 
 
@@ -196,7 +212,10 @@ def analytic_values(mechanism: Mechanism, table: list[Reading], velocities: Mapp
             values[reading.quantity] = epsilon[int(rest)]
         else:
             source = velocities if kind == "V" else accelerations
-            values[reading.quantity] = abs(_vector(rest, source))
+            if reading.points is not None:
+                values[reading.quantity] = abs(source[reading.points[0]] - source[reading.points[1]])
+            else:
+                values[reading.quantity] = abs(_vector(rest, source))
     return values
 
 
