@@ -13,6 +13,7 @@ import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, readings
 from .geometry import ParallelLinesError
+from .kinematics import at
 from .mechanism import Mechanism, build
 from .motion import Motion, Warning, solve
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
@@ -78,11 +79,8 @@ def analyse(scene: Scene) -> Analysis:
 
 def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:
     """The drawing of the mechanism at one position: where its points are, how its links lie."""
-    def at(value) -> complex:
-        return complex(np.atleast_1d(value)[index if np.ndim(value) else 0])
-
-    return ({name: at(point.r) for name, point in motion.points.items()},
-            {number: at(link.u) for number, link in motion.links.items()})
+    return ({name: complex(at(point.r, index)) for name, point in motion.points.items()},
+            {number: complex(at(link.u, index)) for number, link in motion.links.items()})
 
 
 def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
@@ -104,10 +102,10 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
         table = readings(mechanism, plans, where)
         exact = analytic_values(
             mechanism, table,
-            {name: complex(np.atleast_1d(p.v)[index if np.ndim(p.v) else 0]) for name, p in motion.points.items()},
-            {name: complex(np.atleast_1d(p.a)[index if np.ndim(p.a) else 0]) for name, p in motion.points.items()},
-            {n: float(np.atleast_1d(l.omega)[index if np.ndim(l.omega) else 0]) for n, l in motion.links.items()},
-            {n: float(np.atleast_1d(l.epsilon)[index if np.ndim(l.epsilon) else 0]) for n, l in motion.links.items()})
+            {name: complex(at(p.v, index)) for name, p in motion.points.items()},
+            {name: complex(at(p.a, index)) for name, p in motion.points.items()},
+            {n: float(at(link.omega, index)) for n, link in motion.links.items()},
+            {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
         rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, scene.measured.get(number))
         warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
         found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows)))

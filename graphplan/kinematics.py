@@ -31,6 +31,11 @@ def cross(a: Vector, b: Vector) -> Scalar:
     return (np.conj(a) * b).imag
 
 
+def at(value: Vector | Scalar, index: int):
+    """The value at position ``index``: a scalar is the same at every position."""
+    return np.atleast_1d(value)[index if np.ndim(value) else 0]
+
+
 def norm2(a: Vector) -> Scalar:
     return a.real * a.real + a.imag * a.imag
 

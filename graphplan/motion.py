@@ -19,7 +19,7 @@ import numpy as np
 
 from .errors import SceneError
 from .groups.base import Guide, GuideMotion
-from .kinematics import LinkMotion, PointMotion, SlideMotion, as_xy, point_on_link, unit
+from .kinematics import LinkMotion, PointMotion, SlideMotion, as_xy, at, point_on_link, unit
 from .mechanism import Mechanism, on_frame
 from .scene import PointSpec
 
@@ -240,19 +240,19 @@ def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
 
 def _local_coordinates(context: _Context, spec: PointSpec, mechanism: Mechanism) -> complex:
     """Where a named point sits in its link's frame, from its definition at the reference position."""
-    start = _first(context.point(spec.start).r)
+    start = complex(at(context.point(spec.start).r, 0))
     link = context.link(spec.link)
     if spec.toward in mechanism.fixed_on.get(spec.link, ()):
-        chord = _first(context.point(spec.toward).r) - start
+        chord = complex(at(context.point(spec.toward).r, 0)) - start
         if chord == 0:
             raise SceneError(spec.where, f"from {spec.start!r} and toward {spec.toward!r} coincide, so they give no direction")
         direction = chord / abs(chord)
     else:
-        direction = _first(link.u) * mechanism.sliding_on[spec.link][spec.toward]
-    at = start + (spec.at + 1j * spec.offset) * direction
+        direction = complex(at(link.u, 0)) * mechanism.sliding_on[spec.link][spec.toward]
+    placed = start + (spec.at + 1j * spec.offset) * direction
     if spec.link == mechanism.scene.frame_link:
-        return at
-    return (at - _first(context.point(link.origin).r)) / _first(link.u)
+        return placed
+    return (placed - complex(at(context.point(link.origin).r, 0))) / complex(at(link.u, 0))
 
 
 def _place(context: _Context, spec: PointSpec, mechanism: Mechanism, local: complex) -> PointMotion:
@@ -263,10 +263,6 @@ def _place(context: _Context, spec: PointSpec, mechanism: Mechanism, local: comp
     origin = context.point(link.origin)
     return point_on_link(origin, link, link.u * local)
 
-
-def _first(value: complex | np.ndarray) -> complex:
-    """The value at the first position."""
-    return complex(np.atleast_1d(value)[0])
 
 
 def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Warning, ...]:

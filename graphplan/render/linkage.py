@@ -14,6 +14,7 @@ from typing import Callable
 import numpy as np
 from shapely.geometry import MultiPoint
 
+from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from .primitives import MAIN, THIN, Polyline, Primitive, Stroke, frame_pivot, hatching, pin, slider_block
@@ -49,7 +50,7 @@ def links_at(motion: Motion, index: int, outlines: dict[int, list[str]], paper: 
     frame_points = set(motion.mechanism.scene.frame_points)
     named = {spec.name for spec in motion.mechanism.scene.points}
     for names in outlines.values():
-        points = [paper(value_at(motion.points[name].r, index)) for name in names]
+        points = [paper(complex(at(motion.points[name].r, index))) for name in names]
         if len(points) < 2:
             continue
         hull = MultiPoint(points).convex_hull
@@ -58,11 +59,11 @@ def links_at(motion: Motion, index: int, outlines: dict[int, list[str]], paper: 
         elif hull.geom_type == "LineString":
             items.append(Polyline(tuple(hull.coords), stroke))
     for slide in motion.slides:
-        items.append(slider_block(paper(value_at(motion.points[slide.joint].r, index)),
-                                  float(np.angle(value_at(slide.u, index))), stroke=MAIN if bold else stroke))
+        items.append(slider_block(paper(complex(at(motion.points[slide.joint].r, index))),
+                                  float(np.angle(complex(at(slide.u, index)))), stroke=MAIN if bold else stroke))
     if bold:
         joints = {n for names in outlines.values() for n in names} - frame_points - named
-        items.extend(pin(paper(value_at(motion.points[name].r, index))) for name in sorted(joints))
+        items.extend(pin(paper(complex(at(motion.points[name].r, index)))) for name in sorted(joints))
     return items
 
 
@@ -82,8 +83,3 @@ def frame_pivots(mechanism: Mechanism, paper: Paper) -> list[Primitive]:
             items.extend(frame_pivot(paper(r)))
     return items
 
-
-def value_at(value: complex | np.ndarray, index: int) -> complex:
-    """The value at position ``index`` (a scalar is the same at every position)."""
-    array = np.atleast_1d(value)
-    return complex(array[index if len(array) > 1 else 0])

@@ -23,11 +23,12 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
+from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from ..plans import Plan
 from .labels import Anchor, obstacles_of, open_direction, place_labels
-from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points, value_at
+from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
 from .primitives import (Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds_of, curved_arrow, dot_marker,
                          moved_layers)
 
@@ -123,14 +124,14 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
         return (r.real * mm_per_m, r.imag * mm_per_m)
 
     def where(name: str) -> complex:
-        return value_at(motion.points[name].r, index)
+        return complex(at(motion.points[name].r, index))
 
     outlines = outline_points(mechanism, motion)
     links = links_at(motion, index, outlines, paper, _LINK, bold=True)
     frame: list[Primitive] = []
     for slide in motion.slides:
         if slide.guide == mechanism.scene.frame_link:
-            u, r = value_at(slide.u, index), where(slide.joint)
+            u, r = complex(at(slide.u, index)), where(slide.joint)
             # The guide carries the block with room to spare, and runs to the frame points on its line.
             reach = GUIDE_REACH_MM * sheet.length_scale
             along = [0.0] + [((q - r) * u.conjugate()).real for q in mechanism.scene.frame_points.values()

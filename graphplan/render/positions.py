@@ -13,10 +13,11 @@ import math
 from dataclasses import dataclass
 import numpy as np
 
+from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from .labels import Anchor, obstacles_of, place_labels
-from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points, value_at
+from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
 from .primitives import BOLD, Layer, Polyline, Primitive, Stroke, Text, bounds, dot_marker
 
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
@@ -78,7 +79,7 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
         if slide.guide != frame:
             continue
         track = np.atleast_1d(motion.points[slide.joint].r)
-        u = value_at(slide.u, 0)
+        u = complex(at(slide.u, 0))
         along = (track * np.conj(u)).real
         base = complex(track[0]) - float(along[0]) * u
         margin = 8.0 * plan.length_scale
@@ -105,11 +106,11 @@ def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     if driver.kind == "crank":
         centre = plan.mechanism.scene.frame_points[driver.pivot]
     else:
-        centre = complex(np.mean(np.atleast_1d(joint))) + 1j * value_at(plan.positions.links[driver.link].u, 0)
+        centre = complex(np.mean(np.atleast_1d(joint))) + 1j * complex(at(plan.positions.links[driver.link].u, 0))
     anchors = []
     for index, number in enumerate(plan.numbers):
-        outward = value_at(joint, index) - centre
-        anchors.append(Anchor(paper(value_at(joint, index)), str(number), _LABEL, math.atan2(outward.imag, outward.real),
+        outward = complex(at(joint, index)) - centre
+        anchors.append(Anchor(paper(complex(at(joint, index))), str(number), _LABEL, math.atan2(outward.imag, outward.real),
                               "#333333"))
     return anchors
 
@@ -120,14 +121,14 @@ def _point_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     # Points fixed on a link only: an RPR lever's point under the block (A4) would just repeat A's label.
     drawn = {name for names in plan.mechanism.fixed_on.values() for name in names}
     names = [name for name in motion.points if name in drawn]
-    centroid = sum(value_at(motion.points[n].r, 0) for n in names) / len(names)
+    centroid = sum(complex(at(motion.points[n].r, 0)) for n in names) / len(names)
     anchors = []
     for name in names:
-        r = value_at(motion.points[name].r, 0)
+        r = complex(at(motion.points[name].r, 0))
         away = r - centroid
         anchors.append(Anchor(paper(r), name, _LABEL, math.atan2(away.imag, away.real) if away else math.pi / 2))
     return anchors
 
 
 def _centre_marks(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
-    return [dot_marker(paper(value_at(plan.emphasised.points[spec.name].r, 0))) for spec in plan.mechanism.scene.points]
+    return [dot_marker(paper(complex(at(plan.emphasised.points[spec.name].r, 0)))) for spec in plan.mechanism.scene.points]

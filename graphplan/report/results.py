@@ -14,7 +14,7 @@ import numpy as np
 
 from .. import __version__
 from ..analysis import Analysis, PlanPosition
-from ..kinematics import as_xy
+from ..kinematics import as_xy, at
 
 SIGNIFICANT = 12
 
@@ -106,12 +106,8 @@ def _plans(plan: PlanPosition) -> dict[str, Any]:
 
 
 def _slide(slide, i: int) -> dict[str, Any]:
-    def at(value) -> float:
-        array = np.atleast_1d(value)
-        return float(array[i if len(array) > 1 else 0])
-
     return {"slider": slide.slider, "guide": slide.guide, "joint": slide.joint,
-            "velocity": number(at(slide.velocity)), "acceleration": number(at(slide.acceleration))}
+            "velocity": number(at(slide.velocity, i)), "acceleration": number(at(slide.acceleration, i))}
 
 
 def dumps(document: dict[str, Any]) -> str:
