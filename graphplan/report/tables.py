@@ -12,34 +12,33 @@ import io
 from collections import defaultdict
 
 from ..analysis import Analysis
-from ..check import SOURCES
+from ..check import SOURCES, ErrorRow
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
 
 
 def _grouped(analysis: Analysis):
-    """For each plan position, its quantities in reading order with the plan value of each source."""
+    """For each plan position, its quantities in reading order with the error row of each source."""
     for plan in analysis.plans:
-        table: dict[str, dict[str, float]] = defaultdict(dict)
-        exact: dict[str, float] = {}
+        table: dict[str, dict[str, ErrorRow]] = defaultdict(dict)
         for row in plan.errors:
-            table[row.quantity][row.source] = row.plan
-            exact[row.quantity] = row.analytic
-        sources = [s for s in SOURCES if any(s in values for values in table.values())]
-        yield plan.number, [(q, exact[q], table[q]) for q in dict.fromkeys(r.quantity for r in plan.errors)], sources
+            table[row.quantity][row.source] = row
+        sources = [s for s in SOURCES if any(s in rows for rows in table.values())]
+        yield plan.number, table, sources
 
 
 def markdown(analysis: Analysis) -> str:
     lines = [f"# Errors of the plans: {analysis.scene.title}", "", f"{FORMULA}; drafting: every length read off the "
              f"plan rounded to {analysis.scene.drawing.drafting_precision:g} mm.", ""]
-    for number, rows, sources in _grouped(analysis):
+    for number, table, sources in _grouped(analysis):
         lines += [f"## Position {number}", ""]
         header = ["quantity", "analytic"] + [f"{s}" for s in sources] + [f"δ {s}, %" for s in sources]
         lines += ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        for quantity, exact, plan in rows:
+        for quantity, rows in table.items():
+            exact = next(iter(rows.values())).analytic
             cells = [quantity, f"{exact:.5g}"]
-            cells += [f"{plan[s]:.5g}" if s in plan else "" for s in sources]
-            cells += [f"{round(_percent(exact, plan[s]), 3) or 0.0:.3f}" if s in plan else "" for s in sources]
+            cells += [f"{rows[s].plan:.5g}" if s in rows else "" for s in sources]
+            cells += [f"{round(rows[s].percent, 3) or 0.0:.3f}" if s in rows else "" for s in sources]
             lines.append("| " + " | ".join(cells) + " |")
         lines.append("")
     return "\n".join(lines)
@@ -54,7 +53,3 @@ def csv_text(analysis: Analysis) -> str:
             writer.writerow([row.position, row.quantity, f"{row.analytic:.12g}", row.source, f"{row.plan:.12g}",
                              f"{row.percent:.6g}"])
     return out.getvalue()
-
-
-def _percent(exact: float, plan: float) -> float:
-    return 0.0 if exact == 0 and plan == 0 else (exact - plan) / exact * 100.0
