@@ -15,7 +15,7 @@ from .check import ErrorRow, Reading, analytic_values, error_rows, readings
 from .geometry import ParallelLinesError
 from .kinematics import at
 from .mechanism import Mechanism, build
-from .motion import Motion, Warning, solve
+from .motion import Motion, PositionWarning, solve
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
 from .positions import PositionSet, make_positions
 from .scene import Scene
@@ -51,7 +51,7 @@ class Analysis:
     emphasised: Motion
     paths: Motion
     plans: tuple[PlanPosition, ...] = ()
-    warnings: tuple[Warning, ...] = ()
+    warnings: tuple[PositionWarning, ...] = ()
 
 
 def analyse(scene: Scene) -> Analysis:
@@ -96,7 +96,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
             velocity = velocity_plan(mechanism, where, directions)
             acceleration = acceleration_plan(mechanism, where, directions, velocity)
         except ParallelLinesError as error:
-            warnings.append(Warning(index, "singular", f"no plan: {error}"))
+            warnings.append(PositionWarning(index, "singular", f"no plan: {error}"))
             continue
         plans = {"velocity": velocity, "acceleration": acceleration}
         table = readings(mechanism, plans, where)
@@ -112,14 +112,14 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
     return tuple(found), tuple(warnings)
 
 
-def _shallow_crossings(index: int, plans: dict[str, Plan], precision: float) -> list[Warning]:
+def _shallow_crossings(index: int, plans: dict[str, Plan], precision: float) -> list[PositionWarning]:
     """A warning for every crossing of lines of action at less than SHALLOW_CROSSING_DEG."""
     warnings = []
     for kind, plan in plans.items():
         for step in plan.steps:
             if step.crossing_deg is not None and step.crossing_deg < SHALLOW_CROSSING_DEG:
                 bound = precision / math.sin(math.radians(max(step.crossing_deg, 1e-9)))
-                warnings.append(Warning(index, "ill-conditioned",
+                warnings.append(PositionWarning(index, "ill-conditioned",
                                         f"lines of action cross at {step.crossing_deg:.3g}° in the {kind} plan "
                                         f"({step.equation}): a drafting error of {precision:g} mm moves the crossing "
                                         f"by up to {bound:.3g} mm"))

@@ -215,15 +215,6 @@ def analytic_values(mechanism: Mechanism, table: list[Reading], velocities: Mapp
             if reading.points is not None:
                 values[reading.quantity] = abs(source[reading.points[0]] - source[reading.points[1]])
             else:
-                values[reading.quantity] = abs(_vector(rest, source))
+                values[reading.quantity] = abs(source[rest])
     return values
 
-
-def _vector(name: str, source: Mapping[str, complex]) -> complex:
-    """The vector of ``B`` or of the relative ``BA`` (B's minus A's) from point names."""
-    if name in source:
-        return source[name]
-    for first in sorted(source, key=len, reverse=True):
-        if name.startswith(first) and name[len(first):] in source:
-            return source[first] - source[name[len(first):]]
-    raise KeyError(name)

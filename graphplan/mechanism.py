@@ -123,7 +123,7 @@ def build(scene: Scene) -> Mechanism:
         units=tuple(units),
         fixed_on=MappingProxyType({k: frozenset(v) for k, v in fixed_on.items()}),
         sliding_on=MappingProxyType({k: MappingProxyType(v) for k, v in sliding_on.items()}),
-        translating=frozenset(_translating_links(scene, solvers)),
+        translating=frozenset(_translating_links(scene)),
     )
     _check_references(mechanism, known_points, known_links)
     return mechanism
@@ -229,7 +229,7 @@ def on_frame(scene: Scene, guide: Guide) -> bool:
     return guide.link is None or guide.link == scene.frame_link
 
 
-def _translating_links(scene: Scene, solvers) -> set[int]:
+def _translating_links(scene: Scene) -> set[int]:
     """Links whose motion is a translation along a frame guide (their working sense is forward/backward)."""
     links = set()
     if scene.driver.kind == "slider":

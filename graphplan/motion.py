@@ -31,7 +31,7 @@ _STILL = 0j
 
 
 @dataclass(frozen=True)
-class Warning:
+class PositionWarning:
     """Something the user should know about one position (``position`` is its array index)."""
 
     position: int
@@ -72,7 +72,7 @@ class Motion:
     links: Mapping[int, LinkMotion]
     slides: tuple[SlideMotion, ...]
     conditioning: Mapping[str, np.ndarray]
-    warnings: tuple[Warning, ...]
+    warnings: tuple[PositionWarning, ...]
     singular: Mapping[int, str] = field(default_factory=dict)
 
     @property
@@ -230,7 +230,7 @@ def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
         slides.extend(found.slides)
         for spec in unit_.points:
             context.points[spec.name] = _place(context, spec, mechanism, reference.local[spec.name])
-    singular = tuple(Warning(index, "singular", reason) for index, reason in sorted(context.singular.items()))
+    singular = tuple(PositionWarning(index, "singular", reason) for index, reason in sorted(context.singular.items()))
     conditioned = tuple(w for w in _conditioning_warnings(conditioning) if w.position not in context.singular)
     return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
                   slides=tuple(slides), conditioning=conditioning,
@@ -265,12 +265,12 @@ def _place(context: _Context, spec: PointSpec, mechanism: Mechanism, local: comp
 
 
 
-def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Warning, ...]:
+def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[PositionWarning, ...]:
     limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
     warnings = []
     for label, sine in conditioning.items():
         for index in np.flatnonzero(sine < limit):
             angle = math.degrees(math.asin(min(1.0, float(sine[index]))))
-            warnings.append(Warning(int(index), "ill-conditioned",
+            warnings.append(PositionWarning(int(index), "ill-conditioned",
                                     f"lines of action at {angle:.3g}° in group {label} (condition number {1.0 / max(float(sine[index]), 1e-300):.3g})"))
     return tuple(sorted(warnings, key=lambda w: w.position))

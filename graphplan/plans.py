@@ -214,7 +214,7 @@ def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], direct
     instant (the drawing of the mechanism shows them), which guides on moving
     links need.
     """
-    board = Builder("velocity", mechanism, positions, directions, _size(positions, mechanism))
+    board = Builder("velocity", mechanism, positions, directions, _size(positions))
     _frame_at_pole(board, mechanism)
     for unit in mechanism.units:
         unit.solver.construct_velocity(board)  # type: ignore[union-attr]
@@ -226,7 +226,7 @@ def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], direct
 def acceleration_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
                       velocities: Plan, scale: float | None = None) -> Plan:
     """The acceleration plan of the same instant, using ω and relative velocities read off ``velocities``."""
-    board = Builder("acceleration", mechanism, positions, directions, _size(positions, mechanism))
+    board = Builder("acceleration", mechanism, positions, directions, _size(positions))
     _frame_at_pole(board, mechanism)
     for unit in mechanism.units:
         unit.solver.construct_acceleration(board, velocities)  # type: ignore[union-attr]
@@ -242,7 +242,7 @@ def _frame_at_pole(board: Builder, mechanism: Mechanism) -> None:
         board.on_link(mechanism.scene.frame_link, position, "p")
 
 
-def _size(positions: Mapping[str, complex], mechanism: Mechanism) -> float:
+def _size(positions: Mapping[str, complex]) -> float:
     values = list(positions.values())
     return max(max(abs(a - b) for a in values for b in values), 1e-9)
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from .errors import SceneError
 from .kinematics import dot
 from .mechanism import Mechanism
 from .motion import Motion, Reference, reference_at, solve
@@ -111,8 +112,6 @@ def _settle_extremes(mechanism: Mechanism, start: float, reference: Reference):
 
 def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> tuple[float, float]:
     """Driver angles where the working stroke starts and ends, to machine precision."""
-    from .errors import SceneError
-
     driver = mechanism.driver
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP

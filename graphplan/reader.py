@@ -198,8 +198,8 @@ class Table:
 
     def numbers(self, key: str, length: int, default: Any = _REQUIRED, *, positive: bool = False) -> Any:
         pairs = self.items(key, length=length, default=default)
-        if pairs is None or key not in self.data:
-            return pairs if pairs is None else default
+        if key not in self.data:
+            return pairs  # the default
         result = []
         for where, item in pairs:
             number = check_number(item, where)

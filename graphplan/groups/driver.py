@@ -32,10 +32,6 @@ class Crank:
     length: float
     omega: float
     epsilon: float
-    rpm_given: bool = False
-
-    symbol = "φ"
-    unit = "°"
 
     @classmethod
     def read(cls, table: Table, link: int) -> Crank:
@@ -55,7 +51,7 @@ class Crank:
         epsilon = table.number("epsilon", 0.0)
         table.done()
         return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
-                   epsilon=epsilon, rpm_given=table.has("rpm"))
+                   epsilon=epsilon)
 
     def known_joints(self) -> tuple[str, ...]:
         return (self.pivot,)
@@ -129,9 +125,6 @@ class Slider:
     velocity: float
     acceleration: float
     travel: tuple[float, float]
-
-    symbol = "s"
-    unit = " m"
 
     @classmethod
     def read(cls, table: Table, link: int) -> Slider:
