@@ -35,6 +35,7 @@ from graphplan.analysis import analyse, instant
 from graphplan.geometry import ParallelLinesError
 from graphplan.mechanism import build
 from graphplan.scene import loads
+from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET as GROUPS_ON_THE_RATCHET  # noqa: E402
 
 FIXTURE_DIR = Path(__file__).resolve().parent.parent / "fixtures"
 FIXTURES = sorted(FIXTURE_DIR.glob("*.toml"))
@@ -55,42 +56,22 @@ def _fixture_text(path: Path) -> str:
 
 _RATCHET = (FIXTURE_DIR / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
 
-# Groups hung on the ratchet crank-rocker (links 1–4; E on the coupler 3, S4 on the rocker 4),
-# each with an off-line named point for the similarity test; all assemble over the revolution.
-_HUNG_ON_THE_RATCHET = {
-    "ratchet+RRP-on-rocker": ("""
-[[groups]]
-kind = "RRP"
-links = [5, 6]
-joints = ["E", "K"]
-length = 0.45
-guide = { link = 4, through = "C", angle = 20.0 }
-assembly = "forward"
-""", 'F5 = { link = 5, from = "E", toward = "K", at = 0.2, offset = 0.05 }'),
-    "ratchet+RPP-on-rocker": ("""
-[[groups]]
-kind = "RPP"
-links = [5, 6]
-joints = ["E", "K"]
-guide = { link = 4, through = "C", angle = 20.0 }
-angle = 70.0
-""", 'F6 = { link = 6, from = "K", toward = "E", at = 0.1, offset = 0.05 }'),
-    "ratchet+PRP-rocker-coupler": ("""
-[[groups]]
-kind = "PRP"
-links = [5, 6]
-joints = ["K"]
-guides = [{ link = 4, through = "C", angle = 0.0 }, { link = 3, through = "A", angle = 30.0 }]
-offsets = [0.01, -0.02]
-""", ""),
-    "ratchet+RPR-moving-pivot-offset": ("""
+# Groups hung on the ratchet crank-rocker (links 1–4; E on the coupler 3, S4 on the rocker 4): the
+# finite-difference tests' variants, each given an off-line named point for the similarity test,
+# and one more for a lever turning about a moving pivot with an offset slot.
+_OFF_LINE_POINT = {
+    "ratchet+RRP-on-rocker": 'F5 = { link = 5, from = "E", toward = "K", at = 0.2, offset = 0.05 }',
+    "ratchet+RPP-on-rocker": 'F6 = { link = 6, from = "K", toward = "E", at = 0.1, offset = 0.05 }',
+    "ratchet+PRP-rocker-coupler": "",
+}
+_HUNG_ON_THE_RATCHET = {name: (GROUPS_ON_THE_RATCHET[name], point) for name, point in _OFF_LINE_POINT.items()}
+_HUNG_ON_THE_RATCHET["ratchet+RPR-moving-pivot-offset"] = ("""
 [[groups]]
 kind = "RPR"
 links = [5, 6]
 joints = ["E", "S4"]
 offset = 0.02
-""", 'G6 = { link = 6, from = "S4", toward = "E", at = 0.1, offset = 0.04 }'),
-}
+""", 'G6 = { link = 6, from = "S4", toward = "E", at = 0.1, offset = 0.04 }')
 
 
 def _hung(name: str):
