@@ -205,6 +205,22 @@ class Builder:
     def step(self, step: Step) -> None:
         self.steps.append(step)
 
+    def similarity_step(self, letter: str, link: int, point: str, pair) -> None:
+        """Record that ``letter`` was placed by similarity from the images ``pair`` of ``link`` (``widest``)."""
+        if pair is not None:
+            (pa, la), (pb, lb) = pair
+            basis = f"{la}{lb}{letter} ∼ {self.name_at(la, pa)}{self.name_at(lb, pb)}{point}"
+        else:
+            basis = f"link {link} turns with link {self.turns_with.get(link)}"
+        self.step(Step(equation=f"{letter}: {basis} (similarity)", vectors=(), fixes=(letter,)))
+
+    def name_at(self, letter: str, position: complex) -> str:
+        """The mechanism's name of the point at ``position`` whose image is ``letter`` (``A4`` for ``a4``)."""
+        for name, image in self.images.items():
+            if image == letter and self.positions.get(name) == position:
+                return name
+        return letter.upper()
+
 
 def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
                   scale: float | None = None) -> Plan:
@@ -257,12 +273,7 @@ def _place_named(board: Builder, mechanism: Mechanism, specs) -> None:
         pair = board.widest(spec.link)
         letter = board.fix(spec.name, board.image_on(spec.link, position))
         board.on_link(spec.link, position, letter)
-        if pair is not None:
-            (_, la), (_, lb) = pair
-            basis = f"{la}{lb}{letter} ∼ {la.upper()}{lb.upper()}{spec.name}"
-        else:
-            basis = f"link {spec.link} turns with link {board.turns_with.get(spec.link)}"
-        board.step(Step(equation=f"{letter}: {basis} (similarity)", vectors=(), fixes=(letter,)))
+        board.similarity_step(letter, spec.link, spec.name, pair)
 
 
 def _read_rates(board: Builder, mechanism: Mechanism) -> dict[int, float]:

@@ -9,7 +9,7 @@ that are here.
 from __future__ import annotations
 
 from ..geometry import turned
-from ..plans import Builder, Step, image_name
+from ..plans import Builder, image_name
 from .base import Guide
 
 def guide_link(mechanism, guide: Guide) -> int:
@@ -74,20 +74,5 @@ def guide_point(board: Builder, link: int, point: str) -> str:
         return "p"
     letter = free_letter(board, f"{image_name(point)}{link}")
     board.mark(letter, board.image_on(link, board.positions[point]))
-    pair = board.widest(link)
-    if pair is not None:
-        (pa, la), (pb, lb) = pair
-        basis = f"{la}{lb}{letter} ∼ {_name_at(board, la, pa)}{_name_at(board, lb, pb)}{point}{link}"
-    else:
-        basis = f"link {link} turns with link {board.turns_with.get(link)}"
-    board.step(Step(equation=f"{letter}: {basis} (similarity)", vectors=(), fixes=(letter,)))
+    board.similarity_step(letter, link, f"{point}{link}", board.widest(link))
     return letter
-
-
-def _name_at(board: Builder, letter: str, position: complex) -> str:
-    """The mechanism's name of the point at ``position`` whose image is ``letter`` (``A4`` for ``a4``)."""
-    for name, image in board.images.items():
-        if image == letter and board.positions.get(name) == position:
-            return name
-    return letter.upper()
-
