@@ -72,3 +72,32 @@ class SingularPositionError(GraphplanError, ArithmeticError):
 
 class OutputError(GraphplanError, OSError):
     """The output folder could not be written."""
+
+
+class FrictionError(GraphplanError, ValueError):
+    """A friction or efficiency calculation asked with an argument outside its range.
+
+    ``argument`` is the parameter as the function spells it (``f``,
+    ``incline_angle``), ``problem`` says what is wrong (and, for an array,
+    at which index), ``value`` is the offending value itself.
+    """
+
+    _NO_VALUE = object()
+
+    def __init__(self, argument: str, problem: str, value: object = _NO_VALUE) -> None:
+        self.argument = argument
+        self.problem = problem
+        self.value = value
+        message = f"{argument}: {problem}"
+        if value is not FrictionError._NO_VALUE:
+            message += f" (got {value!r})"
+        super().__init__(message)
+
+
+class SelfLockingError(FrictionError):
+    """A driving force, torque or efficiency asked where the pair locks itself.
+
+    The asked motion cannot be driven by any finite force of the given kind
+    (the slider jams), so the quantity does not exist; its formula would
+    return a meaningless negative or infinite number.
+    """
