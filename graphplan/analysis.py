@@ -6,19 +6,25 @@ so that the numbers in ``results.json``, the drawings and a notebook agree.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, readings
+from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
+from .joint_friction import FrictionPair, friction_loads, friction_pairs
 from .kinematics import at
+from .lever import Lever, lever
+from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .mechanism import Mechanism, build
 from .motion import Motion, PositionWarning, solve
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
 from .positions import PositionSet, make_positions
 from .scene import Scene
+from .statics import Equilibrium, equilibrium, pairs
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
 PATH_SAMPLES = 360
@@ -36,6 +42,10 @@ class PlanPosition:
     acceleration: Plan
     readings: tuple[Reading, ...]
     errors: tuple[ErrorRow, ...]
+    loads: tuple[Load, ...] = ()
+    forces: ForcePlan | None = None
+    lever: Lever | None = None
+    with_friction: ForcePlan | None = None
 
     @property
     def plans(self) -> dict[str, Plan]:
@@ -52,6 +62,9 @@ class Analysis:
     paths: Motion
     plans: tuple[PlanPosition, ...] = ()
     warnings: tuple[PositionWarning, ...] = ()
+    loads: tuple[Load, ...] = ()
+    equilibrium: Equilibrium | None = None
+    with_friction: Equilibrium | None = None
 
 
 def analyse(scene: Scene) -> Analysis:
@@ -73,8 +86,17 @@ def analyse(scene: Scene) -> Analysis:
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
     paths = solve(mechanism, sweep, positions.reference, tolerant=True)
-    plans, warnings = _plans(mechanism, positions, motion)
-    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, motion.warnings + warnings)
+    acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
+    friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()
+    plans, warnings = _plans(mechanism, positions, motion, acting, friction)
+    loads, balance, with_friction = (), None, None
+    if acting is not None:
+        loads = link_loads(mechanism, motion_state(motion), acting)
+        balance = equilibrium(mechanism, motion, loads)
+        if friction:
+            with_friction = equilibrium(mechanism, motion, loads, friction)
+    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, motion.warnings + warnings,
+                    loads, balance, with_friction)
 
 
 def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:
@@ -83,8 +105,13 @@ def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, c
             {number: complex(at(link.u, index)) for number, link in motion.links.items()})
 
 
-def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
-    """Plans, readings and errors for every position of ``positions.plans``; singular ones are reported."""
+def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting: np.ndarray | None,
+           friction: tuple[FrictionPair, ...]):
+    """Plans, readings, errors and forces for every position of ``positions.plans``; singular ones are reported.
+
+    ``acting`` (which external load acts where) is None when the scene has
+    nothing for a force analysis.
+    """
     scene = mechanism.scene
     found, warnings = [], []
     for number in scene.positions.plans:
@@ -108,7 +135,20 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion):
             {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
         rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, scene.measured.get(number))
         warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
-        found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows)))
+        loads, forces, balance, rubbing = (), None, None, None
+        if acting is not None:
+            state = plan_state(mechanism, where, velocity, acceleration)
+            loads = link_loads(mechanism, state, acting[:, index:index + 1])
+            try:
+                forces = force_plan(mechanism, where, directions, loads)
+                if friction:
+                    rubbing = force_plan(mechanism, where, directions, loads, forces.scale,
+                                         functools.partial(friction_loads, friction, state))
+            except ParallelLinesError as error:
+                warnings.append(PositionWarning(index, "singular", f"no force plan: {error}"))
+            balance = lever(mechanism, where, velocity, loads)
+        found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows),
+                                  loads, forces, balance, rubbing))
     return tuple(found), tuple(warnings)
 
 

@@ -10,9 +10,9 @@ it, which the placement of named points needs.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Mapping
 
 from .errors import SceneError
 from .groups import Driver, Group, Guide
@@ -67,6 +67,25 @@ class Mechanism:
         parts = [f"I({self.scene.frame_link},{self.driver.link})"]
         parts += [f"{_ROMAN[2]}2({group.links[0]},{group.links[1]})" for group in self.groups]
         return " → ".join(parts)
+
+    @property
+    def revolutes(self) -> tuple[tuple[str, int, int], ...]:
+        """Every turning pair as (joint, earlier link, later link), in solution order.
+
+        An outer joint joins its group to the first link that carried it: at a
+        compound hinge the pin is taken to belong to that link.
+        """
+        carriers: dict[str, int] = dict.fromkeys(self.scene.frame_points, self.scene.frame_link)
+        pairs = []
+        for unit in self.units:
+            for joint, link, other in unit.solver.revolutes():
+                pairs.append((joint, carriers[joint] if other is None else other, link))
+            for number, names in unit.solver.fixed_points().items():
+                for name in names:
+                    carriers.setdefault(name, number)
+            for spec in unit.points:
+                carriers.setdefault(spec.name, spec.link)
+        return tuple(pairs)
 
     def point_names(self) -> tuple[str, ...]:
         """Every point with a motion, in solution order: frame points first."""
@@ -259,6 +278,13 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
             raise SceneError(f"{load.where}.link", f"no link {load.link} in the mechanism", load.link)
         if load.point is not None and load.point not in mechanism.fixed_on.get(load.link, ()):
             raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point)
+        if load.during != "always" and scene.positions.working is None:
+            raise SceneError(f"{load.where}.during", "a load that acts in one stroke needs positions.working "
+                                                     "(which motion of which link is the working stroke)", load.during)
+        if isinstance(load.during, tuple) and scene.driver.kind != "crank":
+            raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank driver; "
+                                                     "a slider driver's positions run over its travel: use always",
+                             list(load.during))
     working = scene.positions.working
     if working is not None:
         if working.link not in known_links or working.link == scene.frame_link:

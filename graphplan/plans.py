@@ -16,10 +16,17 @@ the scale turns it into millimetres once the plan's size is known.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Mapping
+from typing import TYPE_CHECKING
 
-from .geometry import Line, ParallelLinesError, cross_lines, crossing_angle_deg, similar_point
+from .geometry import (
+    Line,
+    ParallelLinesError,
+    cross_lines,
+    crossing_angle_deg,
+    similar_point,
+)
 from .scales import standard_scale
 
 if TYPE_CHECKING:
@@ -130,13 +137,7 @@ class Builder:
 
     def guide_line(self, guide) -> tuple[complex, complex, int]:
         """A guide at this instant: a point of it (m), its unit direction, the link that carries it."""
-        scene = self.mechanism.scene
-        if guide.line is not None:
-            guide = scene.frame_lines[guide.line]
-        link = scene.frame_link if guide.link is None else guide.link
-        through = self.positions[guide.through] if isinstance(guide.through, str) else complex(*guide.through)
-        direction = self.directions.get(link, 1 + 0j) * complex(math.cos(guide.angle), math.sin(guide.angle))
-        return through, direction, link
+        return guide_at(self.mechanism, self.positions, self.directions, guide)
 
     def guide_direction(self, guide) -> complex:
         return self.guide_line(guide)[1]
@@ -222,6 +223,18 @@ class Builder:
         return letter.upper()
 
 
+def guide_at(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
+             guide) -> tuple[complex, complex, int]:
+    """A guide at one instant: a point of it (m), its unit direction, the link that carries it."""
+    scene = mechanism.scene
+    if guide.line is not None:
+        guide = scene.frame_lines[guide.line]
+    link = scene.frame_link if guide.link is None else guide.link
+    through = positions[guide.through] if isinstance(guide.through, str) else complex(*guide.through)
+    direction = directions.get(link, 1 + 0j) * complex(math.cos(guide.angle), math.sin(guide.angle))
+    return through, direction, link
+
+
 def velocity_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
                   scale: float | None = None) -> Plan:
     """The velocity plan of the instant whose point positions are ``positions`` (m).
@@ -302,5 +315,16 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
                 members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()})
 
 
-__all__ = ["Builder", "DrawnLine", "LaidVector", "Plan", "ParallelLinesError", "SHALLOW_CROSSING_DEG", "Step",
-           "acceleration_plan", "image_name", "velocity_plan"]
+__all__ = [
+    "SHALLOW_CROSSING_DEG",
+    "Builder",
+    "DrawnLine",
+    "LaidVector",
+    "ParallelLinesError",
+    "Plan",
+    "Step",
+    "acceleration_plan",
+    "guide_at",
+    "image_name",
+    "velocity_plan",
+]

@@ -66,7 +66,7 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     strokes = None
     if spec.working is not None:
         motion = solve(mechanism, values, reference, numbers, tolerant=True)
-        strokes = tuple("working" if working else "idle" for working in _in_working_stroke(motion))
+        strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes)
 
 
@@ -90,7 +90,8 @@ def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
     return np.broadcast_to(sign * speed, shape), np.broadcast_to(sign * rate, shape)
 
 
-def _in_working_stroke(motion: Motion) -> np.ndarray:
+def in_working_stroke(motion: Motion) -> np.ndarray:
+    """Whether each position of ``motion`` belongs to the working stroke (the scene must name the working link)."""
     speed, rate = working_speed(motion)
     scale = float(np.max(np.abs(speed))) or 1.0
     at_rest = np.abs(speed) <= 1e-9 * scale

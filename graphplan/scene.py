@@ -7,11 +7,12 @@ structure of the mechanism) is checked by :mod:`graphplan.mechanism`.
 
 from __future__ import annotations
 
+import math
 import tomllib
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
-from typing import Mapping
 
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
@@ -64,6 +65,23 @@ class LoadSpec:
 
 
 @dataclass(frozen=True)
+class FrictionSpec:
+    """Friction in the pair at ``joint`` (between ``links``, when the joint has several pairs).
+
+    ``f`` is the coefficient; a turning pair needs its journal ``radius`` (m),
+    which makes the friction circle ρ = f·r; a sliding pair in a V-guide
+    gives the groove's half-angle θ (radians), which makes f' = f / sin θ.
+    """
+
+    where: str
+    joint: str
+    links: tuple[int, int] | None
+    f: float
+    radius: float | None
+    groove_half_angle: float | None
+
+
+@dataclass(frozen=True)
 class Working:
     link: int
     sense: str
@@ -105,6 +123,7 @@ class Scene:
     points: tuple[PointSpec, ...]
     links: Mapping[int, LinkSpec]
     loads: tuple[LoadSpec, ...]
+    friction: tuple[FrictionSpec, ...]
     positions: Positions
     drawing: Drawing
     measured: Mapping[int, Mapping[str, Mapping[str, float]]]
@@ -162,6 +181,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     points = _read_points(top.table("points", None))
     links = _read_links(top.table("links", None))
     loads_ = tuple(_read_load(where, item) for where, item in top.items("loads", default=[]) or [])
+    friction = tuple(_read_friction(where, item) for where, item in top.items("friction", default=[]) or [])
     positions = _read_positions(top.table("positions", None) or Table({}, "positions"), driver)
     drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
     measured = _read_measured(top.table("measured", None))
@@ -169,7 +189,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     top.done()
     return Scene(title=title, locale=locale, gravity=gravity, frame_link=frame_link,
                  frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
-                 driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_,
+                 driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_, friction=friction,
                  positions=positions, drawing=drawing, measured=MappingProxyType(measured), include=include,
                  source=source)
 
@@ -258,6 +278,8 @@ def _read_links(table: Table | None) -> dict[int, LinkSpec]:
             centre=entry.string("centre", None),
             inertia=entry.number("inertia", 0.0, non_negative=True),
         )
+        if links[number].mass > 0 and links[number].centre is None:
+            raise SceneError(f"{entry.path}.centre", "a link with a mass needs its centre of mass: a point fixed on it")
         entry.done()
     return links
 
@@ -287,6 +309,25 @@ def _read_load(where: str, item: object) -> LoadSpec:
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
                     point=point, angle_deg=angle)
+
+
+def _read_friction(where: str, item: object) -> FrictionSpec:
+    table = Table(item, where)
+    joint = table.string("joint")
+    links = None
+    if table.has("links"):
+        links = tuple(check_int(item, at) for at, item in table.items("links", length=2))
+        if links[0] == links[1] or min(links) < 1:
+            raise SceneError(table.where("links"), "must be two different link numbers", list(links))
+    f = table.number("f", non_negative=True)
+    radius = table.number("radius", None, positive=True)
+    half_angle = table.number("groove_half_angle", None, positive=True)
+    if half_angle is not None and not half_angle < 90.0:
+        raise SceneError(table.where("groove_half_angle"), "must be below 90 degrees (a flank against the plane of symmetry)",
+                         half_angle)
+    table.done()
+    return FrictionSpec(where=where, joint=joint, links=links, f=f, radius=radius,
+                        groove_half_angle=None if half_angle is None else math.radians(half_angle))
 
 
 def _read_positions(table: Table, driver: Driver) -> Positions:

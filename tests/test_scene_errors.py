@@ -586,7 +586,9 @@ CASES: list[Case] = [
     Case("links-inertia-inf", {"links.4.inertia": INF}, "links.4.inertia", "must be a finite number (got inf)"),
     Case("links-centre-number", {"links.3.centre": 3}, "links.3.centre", "must be a string, not an integer (got 3)"),
     Case("links-unknown-key", {"links.3.center": "S3"}, "links.3.center", "unknown key; did you mean 'centre'?"),
-    Case("links-missing-link", {"links.9": {"mass": 1.0}}, "links.9", "no link 9 in the mechanism; links are 1, 2, 3, 4",
+    Case("links-mass-without-centre", {"links.3.centre": DELETE}, "links.3.centre",
+         "a link with a mass needs its centre of mass: a point fixed on it"),
+    Case("links-missing-link", {"links.9": {"mass": 1.0, "centre": "S3"}}, "links.9", "no link 9 in the mechanism; links are 1, 2, 3, 4",
          stage="build"),
     Case("links-centre-not-on-link", {"links.3.centre": "S4"}, "links.3.centre",
          "must be a point fixed on link 3: A, B, E, S3 (got 'S4')", stage="build"),
@@ -594,6 +596,9 @@ CASES: list[Case] = [
          "must be a point fixed on link 2: A, O, S2 (got 'S9')", stage="build"),
 
     # -- [[loads]]
+    Case("load-stroke-without-working", {"positions.working": DELETE, "positions.start": 0.0}, "loads[0].during",
+         "a load that acts in one stroke needs positions.working (which motion of which link is the working stroke) "
+         "(got (0.0, 0.881))", stage="build"),
     Case("load-kind-missing", {"loads.0.kind": DELETE}, "loads[0].kind", "is required but missing"),
     Case("load-kind-unknown", {"loads.0.kind": "pressure"}, "loads[0].kind",
          "must be one of moment, force (got 'pressure')"),

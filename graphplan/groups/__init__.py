@@ -10,7 +10,7 @@ from .rpr import RPR
 from .rrp import RRP
 from .rrr import RRR
 
-DRIVERS: dict[str, type[Crank] | type[Slider]] = {"crank": Crank, "slider": Slider}
+DRIVERS: dict[str, type[Crank | Slider]] = {"crank": Crank, "slider": Slider}
 GROUPS: dict[str, type[Group]] = {kind.kind: kind for kind in (RRR, RRP, RPR, PRP, RPP)}
 
 Driver = Crank | Slider

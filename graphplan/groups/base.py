@@ -9,8 +9,9 @@ at once.  The registry in ``groups/__init__.py`` maps ``kind`` to the class.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable, ClassVar, Protocol
+from typing import ClassVar, Protocol
 
 import numpy as np
 
@@ -160,6 +161,15 @@ class Group:
         """For each link carrying a slide, the sliding joint and the slide's
         direction in the link's own frame (a unit complex)."""
         return {}
+
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        """The group's turning pairs as (joint, link of the group, the other link).
+
+        The other link is None for an outer joint: it is the earlier link
+        that carries the joint, which the mechanism knows and the group does
+        not.  Sliding pairs need no list: every one is a ``SlideMotion``.
+        """
+        raise NotImplementedError
 
     def with_branch(self, context: Context) -> int:
         """The branch sign fixed at the first position; 1 for kinds with one solution."""

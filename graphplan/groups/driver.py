@@ -16,7 +16,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SceneError
-from ..kinematics import LinkMotion, PointMotion, SlideMotion
+from ..forces import ForceBoard, PolygonBuilder
+from ..kinematics import (
+    LinkMotion,
+    PointMotion,
+    SlideMotion,
+    cross,
+    point_fixed_on,
+    unit_vectors,
+)
 from ..plans import Builder, LaidVector, Plan, Step
 from ..reader import Table
 from .base import Context, GroupMotion, Guide, read_guide
@@ -65,6 +73,9 @@ class Crank:
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         return {self.link: (self.pivot, self.joint)}
 
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        return ((self.pivot, self.link, None),)
+
     def sliding_points(self) -> dict[int, dict[str, complex]]:
         return {}
 
@@ -77,14 +88,10 @@ class Crank:
         return f"φ = {math.degrees(value) % 360.0:.6g}°"
 
     def solve(self, context: Context, values: np.ndarray) -> GroupMotion:
-        pivot = context.point(self.pivot)
-        u = np.empty(values.shape, dtype=complex)
-        u.real, u.imag = np.cos(values), np.sin(values)
-        arm = self.length * u
-        joint = PointMotion(pivot.r + arm, 1j * self.omega * arm,
-                            (1j * self.epsilon - self.omega * self.omega) * arm)
-        return GroupMotion(points={self.joint: joint},
-                           links={self.link: LinkMotion(self.pivot, u, values, self.omega, self.epsilon)})
+        u = unit_vectors(values)
+        link = LinkMotion(self.pivot, u, values, self.omega, self.epsilon)
+        joint = point_fixed_on(context.point(self.pivot), link, self.length)  # OA along the crank's reference line
+        return GroupMotion(points={self.joint: joint}, links={self.link: link})
 
     def construct_velocity(self, board: Builder) -> None:
         """vA = ω × OA: pa perpendicular to OA, in the sense of ω."""
@@ -113,6 +120,18 @@ class Crank:
         board.on_link(self.link, pivot, board.images[self.pivot])
         board.on_link(self.link, joint, a)
         board.step(Step(equation, vectors, fixes=(a,)))
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """ΣMO of the crank gives the balancing moment; its polygon closes with the frame's reaction."""
+
+        frame = board.mechanism.scene.frame_link
+        balancing = board.couple(self.link, self.pivot, "Mb")
+        polygon = PolygonBuilder(f"ΣF{self.link} + R{frame}{self.link} = 0")
+        polygon.lay_all(board.loads_on(self.link))
+        reaction = polygon.closing(f"R{frame}{self.link}")
+        board.react(f"R{frame}{self.link}", self.pivot, frame, self.link, reaction)
+        board.balancing = balancing
+        board.finish_group(f"I({frame},{self.link})", (self.link,), polygon.record())
 
 
 @dataclass(frozen=True)
@@ -153,6 +172,9 @@ class Slider:
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         return {self.link: (self.joint,)}
 
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        return ()
+
     def sliding_points(self) -> dict[int, dict[str, complex]]:
         return {}
 
@@ -185,3 +207,20 @@ class Slider:
         a = board.fix(self.joint, self.acceleration * board.guide_direction(self.guide))
         board.on_link(self.link, board.positions[self.joint], a)
         board.step(Step(f"a{self.joint} = s̈", (LaidVector("p", a, f"a{self.joint}"),), fixes=(a,)))
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """The balancing force along the guide and the guide's normal reaction by crossing their lines;
+        where the normal reaction acts from ΣM about the joint."""
+
+        frame = board.mechanism.scene.frame_link
+        _, u, carrier = board.guide_line(self.guide)
+        name = f"R{carrier}{self.link}"
+        polygon = PolygonBuilder(f"ΣF{self.link} + Fb + {name} = 0")
+        polygon.lay_all(board.loads_on(self.link))
+        balancing, normal = polygon.close("Fb", u, name, 1j * u)
+        # The balancing force acts through the joint, so it adds nothing to ΣM about it.
+        shift = board.couple(self.link, self.joint, f"{name}·x")
+        offset = shift / cross(u, normal) if abs(normal) > 0 else 0.0
+        board.react(name, self.joint, carrier, self.link, normal, offset)
+        board.balancing = float((balancing * u.conjugate()).real)
+        board.finish_group(f"I({frame},{self.link})", (self.link,), polygon.record())

@@ -20,12 +20,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SingularPositionError
+from ..forces import ForceBoard, PolygonBuilder
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide
-from .sliding import coriolis, coriolis_letter, guide_label, guide_link, guide_point, turns
+from .sliding import (
+    coriolis,
+    coriolis_letter,
+    guide_label,
+    guide_link,
+    guide_point,
+    turns,
+)
 
 
 @dataclass(frozen=True)
@@ -56,6 +64,9 @@ class PRP(Group):
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         return {self.links[0]: self.joints, self.links[1]: self.joints}
 
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        return ((self.joints[0], self.links[1], self.links[0]),)
+
     def solve(self, context: Context, branch: int) -> GroupMotion:
         g1, g2 = (context.guide(g) for g in self.guide_pair)
         o1, o2 = self.offsets
@@ -82,8 +93,8 @@ class PRP(Group):
         return GroupMotion(
             points={b_name: b},
             links={
-                link_a: LinkMotion(b_name, u1, np.angle(u1), g1.omega, g1.epsilon),
-                link_b: LinkMotion(b_name, u2, np.angle(u2), g2.omega, g2.epsilon),
+                link_a: LinkMotion(b_name, u1, angle_of(u1), g1.omega, g1.epsilon),
+                link_b: LinkMotion(b_name, u2, angle_of(u2), g2.omega, g2.epsilon),
             },
             slides=(SlideMotion(link_a, g1.link, b_name, u1, s1, s1_dot, s1_ddot),
                     SlideMotion(link_b, g2.link, b_name, u2, s2, s2_dot, s2_ddot)),
@@ -165,3 +176,27 @@ class PRP(Group):
             vectors=(*laid, LaidVector("p", b, f"a{b_name}")),
             lines=(DrawnLine(k1, u1, guide_label(g1)), DrawnLine(k2, u2, guide_label(g2))),
             fixes=(*marks, b), crossing_deg=angle))
+
+    # The forces: the group cut free, as drawn.
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """Both guides' normal reactions by crossing their lines on the group's polygon; the joint's
+        reaction read off it; where each normal reaction acts from ΣMB of its slider."""
+
+        (b_name,) = self.joints
+        la, lb = self.links
+        b = board.positions[b_name]
+        (_, u1, g1), (_, u2, g2) = (board.guide_line(guide) for guide in self.guide_pair)
+        r1, r2, inner = f"R{g1}{la}", f"R{g2}{lb}", f"R{lb}{la}"
+        polygon = PolygonBuilder(f"ΣF{la} + ΣF{lb} + {r2} + {r1} = 0")
+        end_of_a = polygon.lay_all(board.loads_on(la))
+        polygon.lay_all(board.loads_on(lb))
+        n2, n1 = polygon.close(r2, 1j * u2, r1, 1j * u1)
+        vertex = polygon.start - n1
+        r_ba = polygon.inner(inner, end_of_a, vertex)
+        shifts = (board.couple(la, b_name, f"{r1}·x"), board.couple(lb, b_name, f"{r2}·x"))
+        offsets = [shift / cross(u, n) if abs(n) > 0 else 0.0 for shift, u, n in zip(shifts, (u1, u2), (n1, n2))]
+        board.hand_back(board.react(r1, b_name, g1, la, n1, offsets[0]), b + offsets[0] * u1)
+        board.hand_back(board.react(r2, b_name, g2, lb, n2, offsets[1]), b + offsets[1] * u2)
+        board.react(f"R{la}{lb}", b_name, la, lb, -r_ba)
+        board.finish_group(self.label, self.links, polygon.record())

@@ -26,13 +26,21 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SceneError
+from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, unit
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross, unit
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step, image_name
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, read_guide
-from .sliding import (coriolis, coriolis_letter, free_letter, guide_label, guide_link,
-                  guide_point, turns)
+from .sliding import (
+    coriolis,
+    coriolis_letter,
+    free_letter,
+    guide_label,
+    guide_link,
+    guide_point,
+    turns,
+)
 
 # Link b's images must be this far apart (a fraction of the mechanism's size) to carry its figure.
 _SPAN = 1e-6
@@ -67,6 +75,9 @@ class RPP(Group):
         a, b = self.joints
         return {self.links[0]: (a,), self.links[1]: (b,)}
 
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        return ((self.joints[0], self.links[0], None),)
+
     def sliding_points(self) -> dict[int, dict[str, complex]]:
         return {self.links[1]: {self.joints[0]: unit(self.angle)}}
 
@@ -91,8 +102,8 @@ class RPP(Group):
         return GroupMotion(
             points={b_name: b},
             links={
-                link_a: LinkMotion(a_name, w, np.angle(w), guide.omega, guide.epsilon),
-                link_b: LinkMotion(b_name, u, np.angle(u), guide.omega, guide.epsilon),
+                link_a: LinkMotion(a_name, w, angle_of(w), guide.omega, guide.epsilon),
+                link_b: LinkMotion(b_name, u, angle_of(u), guide.omega, guide.epsilon),
             },
             slides=(SlideMotion(link_a, link_b, a_name, w, s_a, s_a_dot, s_a_ddot),
                     SlideMotion(link_b, guide.link, b_name, u, s_b, s_b_dot, s_b_ddot)),
@@ -217,3 +228,34 @@ class RPP(Group):
         board.on_link(block, a_pos, board.images[a_name])
         board.turns_with[slotted] = carrier
         board.turns_with[block] = slotted
+
+    # The forces: the group cut free, as drawn.
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """ΣMA of the block places the slot's normal force on it; link b's polygon closes with the slot's
+        and the guide's normal forces (their lines crossed); the block's polygon with the reaction at A;
+        ΣMB of link b places the guide's force."""
+
+        a_name, b_name = self.joints
+        la, lb = self.links
+        a, b = board.positions[a_name], board.positions[b_name]
+        _, u, carrier = board.guide_line(self.guide)
+        slot = u * complex(math.cos(self.angle), math.sin(self.angle))
+        pa = board.source_of(a_name, la)
+        on_block, on_slotted, guide_force = f"R{lb}{la}", f"R{la}{lb}", f"R{carrier}{lb}"
+        shift = board.couple(la, a_name, f"{on_block}·x")
+        polygon = PolygonBuilder(f"ΣF{lb} + {on_slotted} + {guide_force} = 0;  {on_block} + ΣF{la} + R{pa}{la} = 0")
+        polygon.lay_all(board.loads_on(lb))
+        slot_force, normal = polygon.close(on_slotted, 1j * slot, guide_force, 1j * u)
+        block_force = -slot_force
+        polygon.lay(on_block, block_force)
+        polygon.lay_all(board.loads_on(la))
+        r_a = polygon.closing(f"R{pa}{la}")
+        block_offset = shift / cross(slot, block_force) if abs(block_force) > 0 else 0.0
+        turning = Term(on_slotted, float(cross(a + block_offset * slot - b, slot_force)), 0.0)
+        guide_shift = board.couple(lb, b_name, f"{guide_force}·x", extra=(turning,))
+        offset = guide_shift / cross(u, normal) if abs(normal) > 0 else 0.0
+        board.hand_back(board.react(f"R{pa}{la}", a_name, pa, la, r_a))
+        board.react(on_block, a_name, lb, la, block_force, block_offset)
+        board.hand_back(board.react(guide_force, b_name, carrier, lb, normal, offset), b + offset * u)
+        board.finish_group(self.label, self.links, polygon.record())

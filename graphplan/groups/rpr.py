@@ -24,8 +24,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, norm2
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import Context, Group, GroupMotion, check_lines_cross
@@ -59,6 +60,10 @@ class RPR(Group):
         a, c = self.joints
         return {self.links[0]: (a,), self.links[1]: (c,)}
 
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        a, c = self.joints
+        return ((a, self.links[0], None), (c, self.links[1], None))
+
     def sliding_points(self) -> dict[int, dict[str, complex]]:
         return {self.links[1]: {self.joints[0]: 1.0 + 0j}}
 
@@ -91,7 +96,7 @@ class RPR(Group):
         coriolis = 2j * omega * s_dot * u
         w = a.a - c.a + omega * omega * ca - coriolis
         epsilon, s_ddot = lines.solve(w)
-        angle = np.angle(u)
+        angle = angle_of(u)
         lever = LinkMotion(c_name, u, angle, omega, epsilon)
         block = LinkMotion(a_name, u, angle, omega, epsilon)
         coincident = PointMotion(a.r, c.v + omega * e1, c.a + (1j * epsilon - omega * omega) * ca)
@@ -179,3 +184,33 @@ class RPR(Group):
                      LaidVector("p", a4, f"a{point}")),
             lines=(DrawnLine(k, along, label), DrawnLine(normal, across_ca, f"⊥ {c_name}{a_name}")),
             fixes=(k, normal, a4), crossing_deg=angle))
+
+    # The forces: the group cut free, as drawn.
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """ΣMA of the block places the lever's normal force on it; ΣMC of the lever gives that force;
+        the two polygons (lever, block) close with the reactions at C and A."""
+
+        a_name, c_name = self.joints
+        la, lb = self.links
+        a = board.positions[a_name]
+        u = board.directions[lb]
+        normal = 1j * u
+        pa, pc = board.source_of(a_name, la), board.source_of(c_name, lb)
+        on_block, on_lever = f"R{lb}{la}", f"R{la}{lb}"
+        # The lever's force on the block, N·normal, acts x along the slide from A: its couple x·N.
+        shift = board.couple(la, a_name, f"{on_block}·x")
+        value = board.solve_moment(lb, c_name, on_lever, normal, a, extra=(Term(f"{on_lever}·x", -shift, 0.0),))
+        block_force = -value * normal
+        offset = shift / -value if value != 0 else 0.0
+        polygon = PolygonBuilder(f"{on_lever} + ΣF{lb} + R{pc}{lb} = 0;  {on_block} + ΣF{la} + R{pa}{la} = 0")
+        polygon.lay(on_lever, -block_force)
+        polygon.lay_all(board.loads_on(lb))
+        r_c = polygon.closing(f"R{pc}{lb}")
+        polygon.lay(on_block, block_force)
+        polygon.lay_all(board.loads_on(la))
+        r_a = polygon.closing(f"R{pa}{la}")
+        board.hand_back(board.react(f"R{pa}{la}", a_name, pa, la, r_a))
+        board.hand_back(board.react(f"R{pc}{lb}", c_name, pc, lb, r_c))
+        board.react(on_block, a_name, lb, la, block_force, offset)
+        board.finish_group(self.label, self.links, polygon.record())

@@ -22,12 +22,30 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, dot
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross, dot
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
-from .base import Context, Group, GroupMotion, Guide, at_toggle, check_lines_cross, nearest_branch, read_branch, read_guide
-from .sliding import coriolis, coriolis_letter, guide_label, guide_link, guide_point, turns
+from .base import (
+    Context,
+    Group,
+    GroupMotion,
+    Guide,
+    at_toggle,
+    check_lines_cross,
+    nearest_branch,
+    read_branch,
+    read_guide,
+)
+from .sliding import (
+    coriolis,
+    coriolis_letter,
+    guide_label,
+    guide_link,
+    guide_point,
+    turns,
+)
 
 # B ahead of (forward) or behind (backward) the foot of A on the guide,
 # counted along the guide's direction.
@@ -64,6 +82,10 @@ class RRP(Group):
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b = self.joints
         return {self.links[0]: (a, b), self.links[1]: (b,)}
+
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        a, b = self.joints
+        return ((a, self.links[0], None), (b, self.links[1], self.links[0]))
 
     def _candidates(self, context: Context, branch: int):
         a = context.point(self.joints[0])
@@ -106,12 +128,12 @@ class RRP(Group):
         b_v = a.v + omega_a * e1
         b_a = a.a + (1j * epsilon_a - omega_a * omega_a) * ab_vec
         a_name, b_name = self.joints
-        u_a = ab_vec / self.length
+        u_a = ab_vec * (1.0 / self.length)  # a complex array divided by a real number is a complex division
         return GroupMotion(
             points={b_name: PointMotion(b_r, b_v, b_a)},
             links={
-                self.links[0]: LinkMotion(a_name, u_a, np.angle(u_a), omega_a, epsilon_a),
-                self.links[1]: LinkMotion(b_name, guide.u, np.angle(guide.u), omega_g, epsilon_g),
+                self.links[0]: LinkMotion(a_name, u_a, angle_of(u_a), omega_a, epsilon_a),
+                self.links[1]: LinkMotion(b_name, guide.u, angle_of(guide.u), omega_g, epsilon_g),
             },
             slides=(SlideMotion(self.links[1], guide.link, b_name, guide.u, s, s_dot, s_ddot),),
             conditioning=sine,
@@ -198,3 +220,32 @@ class RRP(Group):
             equation=equation, vectors=tuple(laid),
             lines=(DrawnLine(normal, across_ab, f"⊥ {a_name}{b_name}"), DrawnLine(start, along_guide, label)),
             fixes=(normal, *((start,) if start != bg else ()), b), crossing_deg=angle))
+
+    # The forces: the group cut free, as drawn.
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """The rod's reaction at A split along and across AB (across from ΣMB of the rod); the guide's
+        normal reaction and the along part by crossing their lines on the polygon; where the normal
+        reaction acts from ΣMB of the slider."""
+
+        a_name, b_name = self.joints
+        la, lb = self.links
+        a, b = board.positions[a_name], board.positions[b_name]
+        _, u, carrier = board.guide_line(self.guide)
+        pa = board.source_of(a_name, la)
+        across_a = 1j * (b - a) / abs(b - a)
+        ra, rn, inner = f"R{pa}{la}", f"R{carrier}{lb}", f"R{lb}{la}"
+        ta = board.solve_moment(la, b_name, f"{ra}τ", across_a, a)
+        polygon = PolygonBuilder(f"{ra}τ + ΣF{la} + ΣF{lb} + {rn} + {ra}n = 0")
+        polygon.lay(f"{ra}τ", ta * across_a)
+        end_of_a = polygon.lay_all(board.loads_on(la))
+        polygon.lay_all(board.loads_on(lb))
+        normal, ra_along = polygon.close(rn, 1j * u, f"{ra}n", b - a)
+        vertex = polygon.start - ra_along
+        r_ba = polygon.inner(inner, end_of_a, vertex)
+        shift = board.couple(lb, b_name, f"{rn}·x", extra=(Term(inner, 0.0, 0.0),))
+        offset = shift / cross(u, normal) if abs(normal) > 0 else 0.0
+        board.hand_back(board.react(ra, a_name, pa, la, ta * across_a + ra_along))
+        board.react(f"R{la}{lb}", b_name, la, lb, -r_ba)
+        board.hand_back(board.react(rn, b_name, carrier, lb, normal, offset), b + offset * u)
+        board.finish_group(self.label, self.links, polygon.record())

@@ -15,11 +15,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..forces import ForceBoard, PolygonBuilder
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, TwoLines, norm2
+from ..kinematics import LinkMotion, PointMotion, Scalar, carried, norm2
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
-from .base import Context, Group, GroupMotion, at_toggle, check_lines_cross, nearest_branch, read_branch
+from .base import (
+    Context,
+    Group,
+    GroupMotion,
+    at_toggle,
+    check_lines_cross,
+    nearest_branch,
+    read_branch,
+)
 
 # B left of the directed line A→C is the counter-clockwise turn of A→C.
 _BRANCHES = {"left": 1, "right": -1}
@@ -50,17 +59,25 @@ class RRR(Group):
         a, b, c = self.joints
         return {self.links[0]: (a, b), self.links[1]: (c, b)}
 
+    def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
+        a, b, c = self.joints
+        return ((a, self.links[0], None), (b, self.links[1], self.links[0]), (c, self.links[1], None))
+
     def _candidates(self, context: Context, branch: int):
+        """A, C, then B, AB and AB × CB on ``branch``."""
         a_name, b_name, c_name = self.joints
         ab, bc = self.lengths
         a, c = context.point(a_name), context.point(c_name)
-        d = c.r - a.r
+        d = np.asarray(c.r - a.r)
         d2 = norm2(d)
         # x: where the foot of B falls along A→C, h²: B's squared height over AC,
         # both as fractions of |AC| (law of cosines, no trigonometry needed).
         with np.errstate(divide="ignore", invalid="ignore"):
-            x = (ab * ab - bc * bc + d2) / (2.0 * d2)
-            h2 = at_toggle(ab * ab / d2 - x * x, 1.0)
+            inverse = 1.0 / d2
+            x = 0.5 * (ab * ab - bc * bc) * inverse
+            x += 0.5
+            h2 = ab * ab * inverse
+            h2 -= x * x
 
         def reason(i: int, at: str) -> AssemblyError:
             span = float(np.sqrt(np.atleast_1d(d2)[i]))
@@ -73,8 +90,18 @@ class RRR(Group):
             return AssemblyError(b_name, at, self.label, why)
 
         if not np.min(h2) >= 0:  # NaN fails too
-            context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
-        return a, c, a.r + d * (x + 1j * branch * np.sqrt(h2))
+            h2 = at_toggle(h2, 1.0)
+            if not np.min(h2) >= 0:
+                context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
+        # AB = AC·(x + ih), built in place: h straight into its imaginary part, then turned and scaled by AC.
+        arm = np.empty(d.shape, dtype=complex)
+        arm.real = x
+        np.sqrt(h2, out=arm.imag)
+        if branch < 0:
+            np.negative(arm.imag, out=arm.imag)
+        det = d2 * arm.imag  # AB × CB = |AC|²·h, for CB = AB − AC = AC·(x − 1 + ih)
+        arm *= d
+        return a, c, a.r + arm, arm, det
 
     def with_branch(self, context: Context) -> int:
         if self.assembly is not None:
@@ -83,27 +110,33 @@ class RRR(Group):
         return nearest_branch({s: self._candidates(context, s)[2] for s in (1, -1)}, self.near)
 
     def solve(self, context: Context, branch: int) -> GroupMotion:
-        a, c, b_r = self._candidates(context, branch)
-        ab_vec, cb_vec = b_r - a.r, b_r - c.r
-        e1, e2 = 1j * ab_vec, -1j * cb_vec
-        lines = TwoLines(e1, e2)
-        sine = lines.det / (self.lengths[0] * self.lengths[1])
+        a, c, b_r, ab_vec, det = self._candidates(context, branch)
+        cb_vec = b_r - c.r
+        ab_length, cb_length = self.lengths
+        # In contiguous real parts from here: a real array times a complex one costs a complex product.
+        abx, aby, cbx, cby = (np.asarray(part, order="C") for part in (ab_vec.real, ab_vec.imag, cb_vec.real, cb_vec.imag))
+        sine = det * (1.0 / (ab_length * cb_length))
         check_lines_cross(context, self, sine, f"links {self.links[0]} and {self.links[1]} lie in one line (a toggle)")
-        omega_a, omega_b = lines.solve(c.v - a.v)
-        b_v = a.v + omega_a * e1
-        w = c.a - a.a + omega_a * omega_a * ab_vec - omega_b * omega_b * cb_vec
-        epsilon_a, epsilon_b = lines.solve(w)
-        b_a = a.a + (1j * epsilon_a - omega_a * omega_a) * ab_vec
-        u_a, u_b = ab_vec / self.lengths[0], cb_vec / self.lengths[1]
+        with np.errstate(divide="ignore"):
+            inverse = 1.0 / det
+        w = c.v - a.v
+        omega_a, omega_b = _two_lines(w.real, w.imag, abx, aby, cbx, cby, inverse)
+        whirl_a, whirl_b = omega_a * omega_a, omega_b * omega_b
+        w = c.a - a.a
+        wx = whirl_a * abx
+        wx -= whirl_b * cbx
+        wx += w.real
+        wy = whirl_a * aby
+        wy -= whirl_b * cby
+        wy += w.imag
+        epsilon_a, epsilon_b = _two_lines(wx, wy, abx, aby, cbx, cby, inverse)
         a_name, b_name, c_name = self.joints
-        return GroupMotion(
-            points={b_name: PointMotion(b_r, b_v, b_a)},
-            links={
-                self.links[0]: LinkMotion(a_name, u_a, np.angle(u_a), omega_a, epsilon_a),
-                self.links[1]: LinkMotion(c_name, u_b, np.angle(u_b), omega_b, epsilon_b),
-            },
-            conditioning=sine,
-        )
+        # Scaled by reciprocals: dividing a complex array by a real number is a complex division.
+        link_a = LinkMotion(a_name, ab_vec * (1.0 / ab_length), np.arctan2(aby, abx), omega_a, epsilon_a)
+        link_b = LinkMotion(c_name, cb_vec * (1.0 / cb_length), np.arctan2(cby, cbx), omega_b, epsilon_b)
+        # B rides on link a at AB from A (link a's turning factors then serve its named points too).
+        return GroupMotion(points={b_name: PointMotion(b_r, *carried(a, link_a, ab_vec))},
+                           links={self.links[0]: link_a, self.links[1]: link_b}, conditioning=sine)
 
     # The plans: the same equations, solved by crossing lines of action.
 
@@ -151,3 +184,47 @@ class RRR(Group):
             lines=(DrawnLine(normal_a, along_ab, f"⊥ {a_name}{b_name}"),
                    DrawnLine(normal_b, along_cb, f"⊥ {c_name}{b_name}")),
             fixes=(normal_a, normal_b, b), crossing_deg=angle))
+
+    # The forces: the group cut free, as drawn.
+
+    def construct_forces(self, board: ForceBoard) -> None:
+        """Outer reactions split along and across their links: the across parts from ΣMB of each link,
+        the along parts by crossing their lines on the group's polygon, the inner reaction read off it."""
+
+        a_name, b_name, c_name = self.joints
+        la, lb = self.links
+        a, b, c = (board.positions[name] for name in self.joints)
+        pa, pc = board.source_of(a_name, la), board.source_of(c_name, lb)
+        across_a, across_c = 1j * (b - a) / abs(b - a), 1j * (b - c) / abs(b - c)
+        ra, rc, inner = f"R{pa}{la}", f"R{pc}{lb}", f"R{lb}{la}"
+        ta = board.solve_moment(la, b_name, f"{ra}τ", across_a, a)
+        tc = board.solve_moment(lb, b_name, f"{rc}τ", across_c, c)
+        polygon = PolygonBuilder(f"{ra}τ + ΣF{la} + ΣF{lb} + {rc}τ + {rc}n + {ra}n = 0")
+        polygon.lay(f"{ra}τ", ta * across_a)
+        end_of_a = polygon.lay_all(board.loads_on(la))
+        polygon.lay_all(board.loads_on(lb))
+        polygon.lay(f"{rc}τ", tc * across_c)
+        rc_along, ra_along = polygon.close(f"{rc}n", b - c, f"{ra}n", b - a)
+        vertex = polygon.start - ra_along
+        r_ba = polygon.inner(inner, end_of_a, vertex)
+        board.hand_back(board.react(ra, a_name, pa, la, ta * across_a + ra_along))
+        board.hand_back(board.react(rc, c_name, pc, lb, tc * across_c + rc_along))
+        board.react(f"R{la}{lb}", b_name, la, lb, -r_ba)
+        board.finish_group(self.label, self.links, polygon.record())
+
+
+def _two_lines(wx: Scalar, wy: Scalar, abx: Scalar, aby: Scalar, cbx: Scalar, cby: Scalar,
+               inverse: Scalar) -> tuple[Scalar, Scalar]:
+    """x1, x2 of ``x1·(i·AB) − x2·(i·CB) = w``, given ``inverse`` = 1/(AB × CB).
+
+    Dotted with CB the x2 term drops out, dotted with AB the x1 term:
+    x1 = w·CB/(AB × CB), x2 = w·AB/(AB × CB) (the two-line equation of the
+    module docstring, solved in real parts).
+    """
+    x1 = wx * cbx
+    x1 += wy * cby
+    x1 *= inverse
+    x2 = wx * abx
+    x2 += wy * aby
+    x2 *= inverse
+    return x1, x2

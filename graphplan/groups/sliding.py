@@ -12,6 +12,7 @@ from ..geometry import turned
 from ..plans import Builder, image_name
 from .base import Guide
 
+
 def guide_link(mechanism, guide: Guide) -> int:
     """The link that carries ``guide`` (the frame's number for a frame guide or frame line)."""
     scene = mechanism.scene

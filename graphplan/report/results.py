@@ -15,6 +15,7 @@ import numpy as np
 from .. import __version__
 from ..analysis import Analysis, PlanPosition
 from ..kinematics import as_xy, at
+from ..statics import efficiency
 
 SIGNIFICANT = 12
 
@@ -70,6 +71,19 @@ def results(analysis: Analysis) -> dict[str, Any]:
             entry["slides"] = slides
         if i in planned:
             entry["plans"] = _plans(planned[i])
+            if planned[i].forces is not None:
+                entry["forces"] = _forces(planned[i], mechanism)
+        if analysis.equilibrium is not None:
+            entry["equilibrium"] = _equilibrium(analysis.equilibrium, i, driver.kind)
+            if analysis.with_friction is not None:
+                rubbing = analysis.with_friction
+                entry["equilibrium"]["friction"] = {
+                    **_equilibrium(rubbing, i, driver.kind, blank=bool(rubbing.locked[i])),
+                    "efficiency": None if rubbing.locked[i] else number(
+                        efficiency(mechanism, analysis.equilibrium.balancing[i], rubbing.balancing[i])),
+                    "iterations": int(rubbing.iterations[i]),
+                    "self_locking": bool(rubbing.locked[i]),
+                }
         entries.append(entry)
     n, p5, w = mechanism.degrees_of_freedom
     document: dict[str, Any] = {
@@ -102,6 +116,53 @@ def _plans(plan: PlanPosition) -> dict[str, Any]:
                         "points_mm": {letter: _pair(np.array([drawn.mm(letter).real, drawn.mm(letter).imag]))
                                       for letter in drawn.points},
                         "values": values}
+    return result
+
+
+def _balancing_key(driver_kind: str) -> str:
+    return "balancing_moment" if driver_kind == "crank" else "balancing_force"
+
+
+def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
+    """``forces`` of one plan position: the polygons' reactions and balancing load, the lever's, μF;
+    with friction in the pairs the same with friction, the efficiency and the self-locking flag."""
+    forces, lever = plan.forces, plan.lever
+    key = _balancing_key(mechanism.driver.kind)
+    result: dict[str, Any] = {
+        "reactions": {name: _pair(np.array([found.force.real, found.force.imag]))
+                      for name, found in forces.reactions.items()},
+        key: number(forces.balancing),
+        f"lever_{key}": number(lever.balancing),
+        "lever_difference_percent": number(lever.difference_percent(forces.balancing)),
+        "polygon_scale": number(forces.scale),
+    }
+    offsets = {name: number(found.offset) for name, found in forces.reactions.items() if found.offset is not None}
+    if offsets:
+        result["offsets"] = offsets
+    rubbing = plan.with_friction
+    if rubbing is not None:
+        result["friction"] = {
+            key: None if rubbing.locked else number(rubbing.balancing),
+            "efficiency": None if rubbing.locked else number(efficiency(mechanism, forces.balancing, rubbing.balancing)),
+            "iterations": rubbing.iterations,
+            "self_locking": rubbing.locked,
+            "reactions": None if rubbing.locked else {
+                name: _pair(np.array([found.force.real, found.force.imag])) for name, found in rubbing.reactions.items()},
+        }
+    return result
+
+
+def _equilibrium(balance, i: int, driver_kind: str, blank: bool = False) -> dict[str, Any]:
+    """The whole-mechanism linear system at one position: null where it is singular (or ``blank``)."""
+    if balance.singular[i] or blank:
+        return {_balancing_key(driver_kind): None, "reactions": None}
+    result: dict[str, Any] = {
+        _balancing_key(driver_kind): number(balance.balancing[i]),
+        "reactions": {r.name: _pair(np.array([r.force[i].real, r.force[i].imag])) for r in balance.reactions},
+    }
+    offsets = {r.name: number(r.offset[i]) for r in balance.reactions if r.sliding}
+    if offsets:
+        result["offsets"] = offsets
     return result
 
 

@@ -1,0 +1,361 @@
+"""The force analysis of one position, group by group, as it is drawn.
+
+The groups are cut free from the last one of the structure formula back to
+the driver.  Each group kind solves its own equilibrium on a
+:class:`ForceBoard` (``construct_forces`` in its module): moment equations
+about a joint, with the arm of every load measured on the drawing, give the
+components across the links; the force polygon of the group, closed by
+crossing two lines of action, gives the rest.  A reaction a group finds on a
+link of an earlier group is applied to that link, reversed, when its turn
+comes; the driver ends with the balancing moment (or force).
+
+Everything is computed from the plans of the position (inertia loads from
+the acceleration plan), never from the analytic solution: the whole-mechanism
+linear system of :mod:`graphplan.statics` is the independent check.
+
+The record (:class:`ForcePlan`) keeps each moment equation with its terms
+and arms and each polygon with its vectors and closing lines, so that the
+sheets and the note read what was done.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from .geometry import Line, cross_lines, crossing_angle_deg
+from .kinematics import Scalar, Vector, cross
+from .plans import guide_at
+from .scales import standard_scale
+
+if TYPE_CHECKING:
+    from .mechanism import Mechanism
+
+# The field a force polygon gets on the sheet when μF is chosen, mm.
+POLYGON_FIELD_MM = 150.0
+# With friction the analysis is repeated until no reaction moves by more than this share of the
+# largest; a position that has not settled after MAX_ITERATIONS locks itself.
+CONVERGED = 1e-13
+MAX_ITERATIONS = 200
+# A force whose line passes this close to a moment centre (a share of the mechanism's size) passes through it.
+_THROUGH = 1e-12
+
+
+@dataclass(frozen=True)
+class Load:
+    """A force ``force`` at ``point`` of ``link``, or a moment ``moment`` on it (``point`` None).
+
+    ``name`` is the textbook's: ``G3`` weight, ``Fu3`` inertia force,
+    ``Mu3`` inertia moment, ``F4``/``M4`` an external load (numbered when a
+    link has several: ``F4.2``).
+    """
+
+    name: str
+    link: int
+    point: str | None
+    force: Vector
+    moment: Scalar
+
+    @property
+    def is_force(self) -> bool:
+        return self.point is not None
+
+
+@dataclass(frozen=True)
+class Term:
+    """One term of a moment equation: ``name``'s moment about the centre, with its arm ``arm`` (m)."""
+
+    name: str
+    moment: float
+    arm: float
+
+
+@dataclass(frozen=True)
+class MomentEquation:
+    """ΣM_about(link) = 0 solved for ``unknown``: ``value`` along the direction first assumed.
+
+    A negative ``value`` means the first guess of the sense was wrong: the
+    component is turned round, as the textbook does.
+    """
+
+    link: int
+    about: str
+    terms: tuple[Term, ...]
+    unknown: str
+    value: float
+    arm: float
+
+    @property
+    def equation(self) -> str:
+        """``ΣMB(3) = R23τ·h + M(G3) − M(Fu3) + … = 0``, the moments' signs as found (ccw positive)."""
+        parts = "".join(f" {'+' if term.moment >= 0 else '−'} M({term.name})" for term in self.terms)
+        return f"ΣM{self.about}({self.link}) = {self.unknown}·h{parts} = 0"
+
+
+@dataclass(frozen=True)
+class PolygonVector:
+    """A vector of a force polygon from ``start`` to ``end`` (N, on the polygon's own plane)."""
+
+    name: str
+    start: complex
+    end: complex
+    role: str  # "load" (known, laid off), "closing" (found by crossing), "inner" (read off afterwards)
+
+    @property
+    def force(self) -> complex:
+        return self.end - self.start
+
+
+@dataclass(frozen=True)
+class Polygon:
+    """ΣF = 0 of a group (or of the driver) closed on the drawing."""
+
+    equation: str
+    vectors: tuple[PolygonVector, ...]
+    lines: tuple[Line, ...] = ()
+    crossing_deg: float | None = None
+
+
+@dataclass(frozen=True)
+class Found:
+    """A reaction the construction found: ``force`` of ``source`` on ``target`` at ``joint`` (+ ``offset`` m along a slide)."""
+
+    name: str
+    joint: str
+    source: int
+    target: int
+    force: complex
+    offset: float | None = None
+
+
+@dataclass(frozen=True)
+class GroupForces:
+    """One group cut free: its loads, its moment equations, its polygon, the reactions found."""
+
+    label: str
+    links: tuple[int, ...]
+    loads: tuple[Load, ...]
+    moments: tuple[MomentEquation, ...]
+    polygon: Polygon
+    found: tuple[Found, ...]
+
+
+@dataclass(frozen=True)
+class ForcePlan:
+    """The force analysis of one position: groups in the order solved (last group first, driver last).
+
+    ``iterations`` is how many times the construction was repeated for the
+    friction in the pairs (0 without); ``locked`` says that it never settled.
+    """
+
+    groups: tuple[GroupForces, ...]
+    reactions: Mapping[str, Found]
+    balancing: float
+    scale: float
+    iterations: int = 0
+    locked: bool = False
+
+    def mm(self, force: complex) -> complex:
+        return force / self.scale
+
+
+@dataclass
+class ForceBoard:
+    """The drawing board of the force analysis of one position (mutable only while it is built)."""
+
+    mechanism: Mechanism
+    positions: dict[str, complex]
+    directions: Mapping[int, complex]
+    loads: tuple[Load, ...]
+    applied: dict[int, list[Load]] = field(default_factory=dict)
+    reactions: dict[str, Found] = field(default_factory=dict)
+    groups: list[GroupForces] = field(default_factory=list)
+    balancing: float = 0.0
+    _moments: list[MomentEquation] = field(default_factory=list)
+    _found: list[Found] = field(default_factory=list)
+
+    # What a group asks while it solves.
+    def loads_on(self, link: int) -> list[Load]:
+        """The link's own loads, then the reactions later groups put on it."""
+        return [load for load in self.loads if load.link == link] + self.applied.get(link, [])
+
+    def force_sum(self, *links: int) -> complex:
+        return sum((load.force for link in links for load in self.loads_on(link) if load.is_force), 0j)
+
+    def guide_line(self, guide) -> tuple[complex, complex, int]:
+        return guide_at(self.mechanism, self.positions, self.directions, guide)
+
+    def moment_terms(self, link: int, about: complex) -> tuple[Term, ...]:
+        """The moments of the link's loads about ``about``, each with its arm (m)."""
+        terms = []
+        size = max(abs(position) for position in self.positions.values())
+        for load in self.loads_on(link):
+            if load.is_force:
+                moment = cross(self.positions[load.point] - about, load.force)
+                arm = abs(moment) / abs(load.force) if abs(load.force) > 0 else 0.0
+                if arm > _THROUGH * size:  # a force through the centre has no arm, whatever rounding says
+                    terms.append(Term(load.name, float(moment), float(arm)))
+            elif load.moment != 0:
+                terms.append(Term(load.name, float(load.moment), 0.0))
+        return tuple(terms)
+
+    def solve_moment(self, link: int, about: str, unknown: str, direction: complex, at: complex,
+                     extra: tuple[Term, ...] = ()) -> float:
+        """ΣM_about = 0 for the magnitude of a force along unit ``direction`` through ``at``."""
+        centre = self.positions[about]
+        terms = self.moment_terms(link, centre) + extra
+        lever = float(cross(at - centre, direction))
+        value = -sum(term.moment for term in terms) / lever
+        self._moments.append(MomentEquation(link, about, terms, unknown, value, abs(lever)))
+        return value
+
+    def couple(self, link: int, about: str, unknown: str, extra: tuple[Term, ...] = ()) -> float:
+        """ΣM_about = 0 for a couple (a normal force's shift along its slide times the force)."""
+        terms = self.moment_terms(link, self.positions[about]) + extra
+        value = -sum(term.moment for term in terms)
+        self._moments.append(MomentEquation(link, about, terms, unknown, value, 1.0))
+        return value
+
+    def react(self, name: str, joint: str, source: int, target: int, force: complex,
+              offset: float | None = None) -> Found:
+        """Record a reaction; an earlier link it comes from gets the reaction back, reversed."""
+        found = Found(name, joint, source, target, complex(force), offset)
+        self.reactions[name] = found
+        self._found.append(found)
+        return found
+
+    def source_of(self, joint: str, link: int) -> int:
+        """The earlier link that ``link`` is pinned to at ``joint``."""
+        return next(source for name, source, target in self.mechanism.revolutes if name == joint and target == link)
+
+    def hand_back(self, found: Found, at: complex | None = None) -> None:
+        """Apply ``found`` reversed to its source link, which an earlier group solves later.
+
+        ``at`` is where it acts when that is not the joint itself (a normal
+        force shifted along its slide).
+        """
+        if found.source == self.mechanism.scene.frame_link:
+            return
+        point = found.joint
+        if at is not None and at != self.positions[found.joint]:
+            point = f"{found.joint}({found.name})"
+            self.positions[point] = at
+        reverse = f"R{found.target}{found.source}"
+        self.applied.setdefault(found.source, []).append(Load(reverse, found.source, point, -found.force, 0.0))
+
+    def finish_group(self, label: str, links: tuple[int, ...], polygon: Polygon) -> None:
+        loads = tuple(load for link in links for load in self.loads_on(link))
+        self.groups.append(GroupForces(label, links, loads, tuple(self._moments), polygon, tuple(self._found)))
+        self._moments, self._found = [], []
+
+
+class PolygonBuilder:
+    """A force polygon laid off vector after vector, closed by two lines of action."""
+
+    def __init__(self, equation: str) -> None:
+        self.equation = equation
+        self.vectors: list[PolygonVector] = []
+        self.lines: list[Line] = []
+        self.crossing_deg: float | None = None
+        self.start = 0j
+        self.end = 0j
+
+    def lay(self, name: str, force: complex, role: str = "load") -> complex:
+        """Lay ``force`` off from the current end; returns the new end."""
+        if force != 0:
+            self.vectors.append(PolygonVector(name, self.end, self.end + force, role))
+            self.end = self.end + force
+        return self.end
+
+    def lay_all(self, loads: list[Load]) -> complex:
+        for load in loads:
+            if load.is_force:
+                self.lay(load.name, load.force)
+        return self.end
+
+    def close(self, last: str, last_direction: complex, first: str, first_direction: complex) -> tuple[complex, complex]:
+        """Close the polygon: ``last`` along its line through the end, ``first`` along its line through the start.
+
+        Returns the two closing forces (``last`` then ``first``).
+        """
+        lines = (Line(self.end, last_direction, last), Line(self.start, first_direction, first))
+        extent = max([abs(v.end) for v in self.vectors] + [abs(self.start), abs(self.end), 1.0])
+        vertex = cross_lines(lines[0], lines[1], extent)
+        self.crossing_deg = crossing_angle_deg(*lines)
+        self.lines.extend(lines)
+        last_force, first_force = vertex - self.end, self.start - vertex
+        self.vectors.append(PolygonVector(last, self.end, vertex, "closing"))
+        self.vectors.append(PolygonVector(first, vertex, self.start, "closing"))
+        self.end = self.start
+        return last_force, first_force
+
+    def closing(self, name: str) -> complex:
+        """The single unknown that closes the polygon from its end back to its start."""
+        force = self.start - self.end
+        self.vectors.append(PolygonVector(name, self.end, self.start, "closing"))
+        self.end = self.start
+        return force
+
+    def inner(self, name: str, start: complex, end: complex) -> complex:
+        """A reaction read off the polygon between two of its vertices."""
+        self.vectors.append(PolygonVector(name, start, end, "inner"))
+        return end - start
+
+    def record(self) -> Polygon:
+        return Polygon(self.equation, tuple(self.vectors), tuple(self.lines), self.crossing_deg)
+
+
+def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
+               loads: tuple[Load, ...], scale: float | None = None,
+               friction: Callable[[Mapping[str, complex]], tuple[Load, ...]] | None = None) -> ForcePlan:
+    """The force analysis of the instant: every group from the last to the first, then the driver.
+
+    ``friction`` gives the pairs' friction loads for given reactions
+    (``joint_friction.friction_loads`` bound to the instant): the whole
+    construction is then repeated with the friction loads of the last one
+    until the reactions settle; the record says how many times, and whether
+    they never did (the mechanism locks itself).
+    """
+    plan = _construct(mechanism, positions, directions, loads)
+    iterations, locked = 0, False
+    if friction is not None:
+        locked = True
+        for iterations in range(1, MAX_ITERATIONS + 1):
+            extra = friction({name: found.force for name, found in plan.reactions.items()})
+            again = _construct(mechanism, positions, directions, loads + extra)
+            change = max(abs(again.reactions[name].force - found.force) for name, found in plan.reactions.items())
+            size = max(abs(found.force) for found in again.reactions.values())
+            plan = again
+            if change <= CONVERGED * size:
+                locked = False
+                break
+    if scale is None:
+        extent = max((abs(vector.end - other.end) for forces in plan.groups for vector in forces.polygon.vectors
+                      for other in forces.polygon.vectors), default=0.0)
+        scale = standard_scale(max(extent, 1e-300) / POLYGON_FIELD_MM)
+    return ForcePlan(plan.groups, plan.reactions, plan.balancing, scale, iterations, locked)
+
+
+def _construct(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
+               loads: tuple[Load, ...]) -> ForcePlan:
+    board = ForceBoard(mechanism, dict(positions), directions, loads)
+    for group in reversed(mechanism.groups):
+        group.construct_forces(board)
+    mechanism.driver.construct_forces(board)
+    return ForcePlan(tuple(board.groups), dict(board.reactions), board.balancing, 1.0)
+
+
+__all__ = [
+    "ForceBoard",
+    "ForcePlan",
+    "Found",
+    "GroupForces",
+    "Load",
+    "MomentEquation",
+    "Polygon",
+    "PolygonBuilder",
+    "PolygonVector",
+    "Term",
+    "force_plan",
+]

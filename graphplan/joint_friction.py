@@ -1,0 +1,104 @@
+"""Friction in the mechanism's pairs, as loads that depend on the reactions.
+
+A turning pair with a journal of radius r and coefficient f has the friction
+circle ρ = f·r (:func:`graphplan.friction.friction_circle_radius`): the total
+reaction is tangent to it, on the side that makes its moment about the
+joint's centre oppose the relative rotation.  That is the frictionless
+reaction R through the centre plus a moment ``−sign(ω_rel)·ρ·|R|``.  A
+sliding pair with coefficient f (``f/sin θ`` in a V-guide, see
+:func:`graphplan.friction.vee_groove_coefficient`) adds a force ``f'·|N|``
+along the slide against the relative velocity.
+
+Both depend on the reaction they change, so the force analysis with friction
+is iterated (:func:`graphplan.statics.equilibrium`,
+:func:`graphplan.forces.force_plan`) until the reactions settle.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import SceneError
+from .forces import Load
+from .friction import friction_circle_radius, vee_groove_coefficient
+from .kinematics import Vector
+from .scene import FrictionSpec
+
+
+@dataclass(frozen=True)
+class FrictionPair:
+    """A pair with friction: ``reaction`` names its reaction (``R23``: link 2 on link 3).
+
+    ``radius`` is the friction circle's ρ for a turning pair; ``coefficient``
+    the reduced coefficient f' of a sliding one.
+    """
+
+    spec: FrictionSpec
+    reaction: str
+    sliding: bool
+    joint: str
+    source: int
+    target: int
+    radius: float = 0.0
+    coefficient: float = 0.0
+
+
+def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[FrictionPair, ...]:
+    """Each ``[[friction]]`` entry matched with its pair (``statics.pairs``); a mismatch is a scene error."""
+    found = []
+    for spec in scene_friction:
+        matching = [pair for pair in pairs if pair.joint == spec.joint
+                    and (spec.links is None or set(spec.links) == {pair.source, pair.target})]
+        if not matching:
+            known = ", ".join(f"{p.joint} ({p.source}–{p.target})" for p in pairs)
+            raise SceneError(f"{spec.where}.joint", f"names no pair of the mechanism; its pairs are {known}", spec.joint)
+        if len(matching) > 1:
+            choices = " or ".join(f"[{p.source}, {p.target}]" for p in matching)
+            raise SceneError(f"{spec.where}.links", f"joint {spec.joint} has several pairs: say which with links = {choices}")
+        pair = matching[0]
+        if pair.sliding:
+            if spec.radius is not None:
+                raise SceneError(f"{spec.where}.radius", f"the pair at {spec.joint} slides: a radius is for a turning pair")
+            coefficient = spec.f if spec.groove_half_angle is None else vee_groove_coefficient(spec.f, spec.groove_half_angle)
+            found.append(FrictionPair(spec, pair.name, True, pair.joint, pair.source, pair.target,
+                                      coefficient=float(coefficient)))
+        else:
+            if spec.radius is None:
+                raise SceneError(f"{spec.where}.radius", f"the pair at {spec.joint} turns: give its journal radius (m) "
+                                                         "for the friction circle")
+            if spec.groove_half_angle is not None:
+                raise SceneError(f"{spec.where}.groove_half_angle", f"the pair at {spec.joint} turns: a groove is for a slide")
+            found.append(FrictionPair(spec, pair.name, False, pair.joint, pair.source, pair.target,
+                                      radius=float(friction_circle_radius(spec.f, spec.radius))))
+    return tuple(found)
+
+
+def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping[str, Vector]) -> tuple[Load, ...]:
+    """The friction loads of the pairs, given their reactions: a moment per turning pair on each of its
+    links, a force along the slide per sliding pair (``Mf23`` acts on 3 from 2, ``Mf32`` on 2).
+
+    Loads on the frame are among them; the equations of moving links skip them.
+    """
+    loads: list[Load] = []
+    for pair in friction:
+        magnitude = np.abs(reactions[pair.reaction])
+        if not pair.sliding:
+            relative = state.links[pair.target].omega - state.links[pair.source].omega
+            moment = -np.sign(relative) * pair.radius * magnitude
+            loads.append(Load(f"Mf{pair.source}{pair.target}", pair.target, None, 0j, moment))
+            loads.append(Load(f"Mf{pair.target}{pair.source}", pair.source, None, 0j, -moment))
+        else:
+            relative = state.sliding[pair.target]
+            speed = np.abs(relative)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                direction = np.where(speed > 0, relative / np.where(speed > 0, speed, 1.0), 0j)
+            force = -pair.coefficient * magnitude * direction
+            loads.append(Load(f"Ff{pair.source}{pair.target}", pair.target, pair.joint, force, 0.0))
+            loads.append(Load(f"Ff{pair.target}{pair.source}", pair.source, pair.joint, -force, 0.0))
+    return tuple(loads)
+
+
+__all__ = ["FrictionPair", "friction_loads", "friction_pairs"]

@@ -1,0 +1,104 @@
+"""Zhukovsky's lever: the balancing moment from the velocity plan turned through 90°.
+
+Every load is applied at the image of its point on the velocity plan turned
+clockwise by 90°, and the plan, taken as a rigid lever pivoted at the pole,
+is put in equilibrium.  Turned so, a force F at the image of a point moving
+with v has the moment ``F·v`` about the pole: the lever is the power balance
+drawn.  A moment M on a link becomes a couple of forces ``M/l`` across two of
+its points, whose lever moment is ``M·ω``.  The balancing moment is applied
+as a force at the image of the crank's joint, across the crank.
+
+Only the velocity plan as constructed and the loads of the instant enter:
+no reaction, no analytic value.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .forces import Load
+from .kinematics import cross
+from .mechanism import Mechanism
+from .plans import Plan
+
+
+@dataclass(frozen=True)
+class LeverTerm:
+    """A force on the lever at the plan point ``image`` (turned) and its moment about the pole.
+
+    ``arm`` is the perpendicular from the pole to the force's line on the
+    turned plan, in the plan's own units (m/s); ``moment`` is in W.
+    """
+
+    name: str
+    image: str
+    force: complex
+    arm: float
+    moment: float
+
+
+@dataclass(frozen=True)
+class Lever:
+    """The lever of one position: its terms, the balancing force at the driver's image, the balancing load."""
+
+    terms: tuple[LeverTerm, ...]
+    balancing_force: complex
+    balancing_image: str
+    balancing: float
+
+    def difference_percent(self, polygons: float) -> float:
+        """(lever − polygons)/polygons · 100: how far the two methods part."""
+        return (self.balancing - polygons) / polygons * 100.0 if polygons else 0.0
+
+
+def turned(velocity: complex) -> complex:
+    """A velocity plan point after the plan is turned clockwise by 90°."""
+    return -1j * velocity
+
+
+def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, loads: tuple[Load, ...]) -> Lever:
+    """Zhukovsky's lever of the instant whose velocity plan is ``velocity``."""
+    terms: list[LeverTerm] = []
+    for load in loads:
+        if load.is_force:
+            terms.append(_term(load.name, velocity.images[load.point], load.force, velocity.value(load.point)))
+        elif load.moment != 0:
+            terms.extend(_couple(load, positions, velocity))
+    total = sum(term.moment for term in terms)
+    driver = mechanism.driver
+    joint = positions[driver.joint]
+    if driver.kind == "crank":
+        arm = joint - positions[driver.pivot]
+        unit_force = 1j * arm / abs(arm) ** 2  # a force across the crank whose moment about its pivot is 1 N·m
+    else:
+        unit_force = velocity.value(driver.joint) / abs(velocity.value(driver.joint))
+        unit_force = unit_force if driver.velocity > 0 else -unit_force  # along the guide's own direction
+    unit_moment = cross(turned(velocity.value(driver.joint)), unit_force)
+    balancing = -total / unit_moment
+    return Lever(tuple(terms), balancing * unit_force, velocity.images[driver.joint], float(balancing))
+
+
+def _term(name: str, image: str, force: complex, at: complex) -> LeverTerm:
+    moment = float(cross(turned(at), force))
+    arm = abs(moment) / abs(force) if force else 0.0
+    return LeverTerm(name, image, complex(force), arm, moment)
+
+
+def _couple(load: Load, positions: dict[str, complex], velocity: Plan) -> list[LeverTerm]:
+    """The moment as a couple across the two points of its link farthest apart on the drawing.
+
+    A link with fewer than two points of its own on the plan (a slider
+    block) takes the ``M·ω`` rule instead, with ω read off the plan.
+    """
+    named = list(velocity.members.get(load.link, ()))
+    pairs = [(a, b) for i, a in enumerate(named) for b in named[i + 1:] if a[0] != b[0]]
+    if not pairs:
+        return [LeverTerm(load.name, "", 0j, 0.0, float(load.moment * velocity.rates.get(load.link, 0.0)))]
+    (first, first_letter), (second, second_letter) = max(pairs, key=lambda pair: abs(pair[0][0] - pair[1][0]))
+    across = 1j * (second - first)
+    force = load.moment * across / abs(second - first) ** 2
+    return [_term(f"{load.name}′", second_letter, force, velocity.points[second_letter]),
+            _term(f"{load.name}″", first_letter, -force, velocity.points[first_letter])]
+
+
+__all__ = ["Lever", "LeverTerm", "lever", "turned"]

@@ -1,0 +1,217 @@
+"""The loads of the force analysis: weights, d'Alembert's inertia loads, the scene's external loads.
+
+Loads are computed from a *state*: where the points are, how fast they and
+the links move.  The analytic :class:`~graphplan.motion.Motion` is one state
+(arrays over all positions); the plans of one instant are another
+(:func:`plan_state`), so that the force polygons, built from the plans, never
+read the analytic accelerations (DESIGN principle 1).
+
+Sign conventions: forces are complex numbers (x + iy, N), moments are
+counter-clockwise positive (N·m).  The inertia force ``Fu = −m·aS`` acts at
+the centre of mass, the inertia moment ``Mu = −J·ε`` on the link; weight is
+``G = m·g`` along −y.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Protocol
+
+import numpy as np
+
+from .forces import Load
+from .kinematics import PointMotion, Scalar, Vector, at, dot, unit
+from .mechanism import Mechanism
+from .motion import Motion
+from .plans import Plan
+from .positions import PositionSet, in_working_stroke
+
+# A speed this small against the cycle's largest is rest: a resisting load then opposes
+# the motion about to begin (the sense of the acceleration).
+_AT_REST = 1e-9
+
+
+class Turning(Protocol):
+    omega: Scalar
+    epsilon: Scalar
+
+
+@dataclass(frozen=True)
+class State:
+    """Where the points are and how they and the links move: arrays over positions, or one instant."""
+
+    points: Mapping[str, PointMotion]
+    links: Mapping[int, Turning]
+    sliding: Mapping[int, Vector] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Rates:
+    omega: float
+    epsilon: float
+
+
+def motion_state(motion: Motion) -> State:
+    return State(motion.points, motion.links, {slide.slider: slide.velocity * slide.u for slide in motion.slides})
+
+
+def plan_state(mechanism: Mechanism, positions: Mapping[str, complex], velocity: Plan, acceleration: Plan) -> State:
+    """The state of one instant as read off its plans: velocities, accelerations, ω and ε of the plans."""
+    points = {name: PointMotion(position, velocity.value(name), acceleration.value(name))
+              for name, position in positions.items() if name in velocity.images and name in acceleration.images}
+    links: dict[int, Turning] = {number: Rates(velocity.rates.get(number, 0.0), acceleration.rates.get(number, 0.0))
+                                 for number in mechanism.moving_links}
+    links[mechanism.scene.frame_link] = Rates(0.0, 0.0)
+    sliding = dict(velocity.sliding)
+    driver = mechanism.driver
+    if driver.kind == "slider":  # on its frame guide, its own velocity is the sliding one
+        sliding[driver.link] = velocity.value(driver.joint)
+    return State(points, links, sliding)
+
+
+def has_loads(mechanism: Mechanism) -> bool:
+    """Whether the scene gives the force analysis anything to work with (no masses, no loads: no forces)."""
+    scene = mechanism.scene
+    return bool(scene.loads) or any(spec.mass > 0 or spec.inertia > 0 for spec in scene.links.values())
+
+
+def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
+    """Which external load acts at which position of ``motion``: a ``(loads, N)`` boolean array.
+
+    ``motion`` may be any solution of the mechanism with the positions'
+    reference (the analysed positions, a dense sweep for a diagram).
+
+    A window ``during = {from, to}`` is a share of the working stroke of the
+    working link, measured by its travel (angle or displacement) from the
+    extreme where the working stroke starts.
+    """
+    scene = mechanism.scene
+    count = motion.count
+    acting = np.ones((len(scene.loads), count), dtype=bool)
+    if not scene.loads:
+        return acting
+    progress = working = None
+    for row, load in enumerate(scene.loads):
+        if load.during == "always":
+            continue
+        if working is None:
+            working = in_working_stroke(motion)
+        if load.during == "working":
+            acting[row] = working
+        elif load.during == "idle":
+            acting[row] = ~working
+        else:
+            if progress is None:
+                progress = _working_progress(mechanism, positions, motion)
+            start, end = load.during
+            # Equal ends at 12 digits: a window that ends where a position lies includes it.
+            share = np.round(progress, 12)
+            acting[row] = working & (share >= start) & (share <= end)
+    return acting
+
+
+def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
+    """The share of the working stroke the working link has travelled at each position (0 at its start)."""
+    from .motion import solve
+
+    assert positions.extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"
+    ends = solve(mechanism, np.array(positions.extremes), positions.reference)
+    start, end = _output_coordinate(mechanism, ends)
+    travel = end - start
+    here = _output_coordinate(mechanism, motion)
+    return (here - start) / travel
+
+
+def _output_coordinate(mechanism: Mechanism, motion: Motion) -> np.ndarray:
+    """The working link's angle (unwrapped near the stroke) or its displacement along its direction."""
+    working = mechanism.scene.positions.working
+    assert working is not None
+    link = motion.links[working.link]
+    if working.link in mechanism.translating:
+        return np.broadcast_to(dot(link.u, motion.points[link.origin].r), motion.driver.shape)
+    angle = np.broadcast_to(np.asarray(link.angle, dtype=float), motion.driver.shape)
+    reference = float(angle[0])
+    return reference + np.angle(np.exp(1j * (angle - reference)))
+
+
+def link_loads(mechanism: Mechanism, state: State, acting: np.ndarray | None = None) -> tuple[Load, ...]:
+    """Every load on every moving link in the order the textbook's table lists them.
+
+    ``acting`` is :func:`activity` for the positions of ``state`` (one
+    column for one instant); None lets every external load act.
+    """
+    scene = mechanism.scene
+    found: list[Load] = []
+    for number in mechanism.moving_links:
+        spec = scene.links.get(number)
+        if spec is None:
+            continue
+        centre = spec.centre
+        if spec.mass > 0 and scene.gravity != 0:
+            found.append(Load(f"G{number}", number, centre, -1j * spec.mass * scene.gravity, 0.0))
+        if spec.mass > 0:
+            found.append(Load(f"Fu{number}", number, centre, -spec.mass * state.points[centre].a, 0.0))
+        if spec.inertia > 0:
+            found.append(Load(f"Mu{number}", number, None, 0j, -spec.inertia * state.links[number].epsilon))
+    found.extend(_external(mechanism, state, acting))
+    return tuple(found)
+
+
+def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> list[Load]:
+    scene = mechanism.scene
+    per_link: dict[int, int] = {}
+    for load in scene.loads:
+        per_link[load.link] = per_link.get(load.link, 0) + 1
+    seen: dict[int, int] = {}
+    found = []
+    turning_scale = max((float(np.max(np.abs(link.omega))) for link in state.links.values()), default=0.0)
+    moving_scale = max((float(np.max(np.abs(point.v))) for point in state.points.values()), default=0.0)
+    for row, load in enumerate(scene.loads):
+        seen[load.link] = seen.get(load.link, 0) + 1
+        suffix = f".{seen[load.link]}" if per_link[load.link] > 1 else ""
+        on = 1.0 if acting is None else acting[row].astype(float)
+        if np.ndim(on) and len(on) == 1:
+            on = float(on[0])
+        if load.kind == "moment":
+            turning = state.links[load.link]
+            value = (-abs(load.value) * _sense(turning.omega, turning.epsilon, turning_scale) if load.resisting
+                     else load.value)
+            found.append(Load(f"M{load.link}{suffix}", load.link, None, 0j, on * value))
+        else:
+            direction = unit(np.radians(load.angle_deg))
+            force = load.value * direction
+            if load.resisting:
+                point = state.points[load.point]
+                force = -abs(load.value) * direction * _sense(dot(direction, point.v), dot(direction, point.a),
+                                                              moving_scale)
+            found.append(Load(f"F{load.link}{suffix}", load.link, load.point, on * force, 0.0))
+    return found
+
+
+def _sense(speed: Scalar, rate: Scalar, scale: float) -> Scalar:
+    """+1 or −1: the sense of motion, or at rest (against the mechanism's ``scale`` of speeds)
+    the sense of the motion about to begin."""
+    speed_array = np.asarray(speed, dtype=float)
+    moving = np.abs(speed_array) > _AT_REST * max(scale, 1e-300)
+    return np.where(moving, np.sign(speed_array), np.sign(np.asarray(rate, dtype=float)))
+
+
+def load_at(load: Load, index: int) -> Load:
+    """The load at position ``index`` of an array state."""
+    return Load(load.name, load.link, load.point, complex(at(load.force, index)), float(at(load.moment, index)))
+
+
+def power(loads: tuple[Load, ...], state: State) -> Scalar:
+    """Σ(F·v + M·ω) of the loads: the power they deliver to the mechanism."""
+    total: Scalar = 0.0
+    for load in loads:
+        if load.is_force:
+            total = total + dot(load.force, state.points[load.point].v)
+        else:
+            total = total + load.moment * state.links[load.link].omega
+    return total
+
+
+__all__ = ["Load", "Rates", "State", "activity", "has_loads", "link_loads", "load_at", "motion_state",
+           "plan_state", "power"]

@@ -1,0 +1,90 @@
+"""Report figures drawn with matplotlib: the balancing load over the cycle.
+
+matplotlib is imported here and only here, when a figure is asked for: a
+plain run stays fast (DESIGN principle 5).  The SVG is written without a
+date and with a fixed hash salt, so that the same scene gives the same file.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+
+import numpy as np
+
+from ..analysis import Analysis
+from ..loads import activity, link_loads, motion_state
+from ..locale import strings
+from ..statics import equilibrium
+
+
+def balancing_diagram(analysis: Analysis) -> str:
+    """The balancing load over the driver's cycle (the linear system on the dense sweep), with friction
+    when the scene has it; the analysed positions numbered, the force polygons' values marked."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot
+    from matplotlib import rcParams
+
+    rcParams["svg.hashsalt"] = "graphplan"
+    rcParams["font.family"] = _families()
+    text = strings(analysis.scene.locale)
+    mechanism, positions, sweep = analysis.mechanism, analysis.positions, analysis.paths
+    loads = link_loads(mechanism, motion_state(sweep), activity(mechanism, positions, sweep))
+    ideal = equilibrium(mechanism, sweep, loads)
+    driver = mechanism.driver
+    if driver.kind == "crank":
+        along = np.degrees(np.abs(sweep.driver - positions.values[0]))
+        marks = np.degrees(np.abs(positions.values - positions.values[0]))
+        axis, unit = text["diagram_crank_angle"], text["newton_metre"]
+        name = text["balancing_moment"]
+    else:
+        along, marks = sweep.driver, positions.values
+        axis, unit = text["diagram_displacement"], text["newton"]
+        name = text["balancing_force"]
+    figure, plot = pyplot.subplots(figsize=(7.0, 3.6), dpi=100)
+    plot.plot(along, ideal.balancing, color="#1f5fa8", linewidth=1.4, label=text["diagram_ideal"])
+    if analysis.scene.friction and analysis.with_friction is not None:
+        rubbing = equilibrium(mechanism, sweep, loads, _friction(analysis, sweep))
+        shown = np.where(rubbing.locked, np.nan, rubbing.balancing)
+        plot.plot(along, shown, color="#a83a1f", linewidth=1.1, linestyle="--", label=text["diagram_friction"])
+    exact = analysis.equilibrium
+    plot.plot(marks, exact.balancing, "o", color="#1f5fa8", markersize=3.5)
+    for number, x, y in zip(positions.numbers, marks, exact.balancing, strict=True):
+        if math.isfinite(y):
+            plot.annotate(str(number), (x, y), textcoords="offset points", xytext=(0, 5), ha="center", fontsize=7)
+    drawn = [(marks[plan.index], plan.forces.balancing) for plan in analysis.plans if plan.forces is not None]
+    if drawn:
+        plot.plot(*zip(*drawn, strict=True), "s", markerfacecolor="none", color="black", markersize=7,
+                  label=text["diagram_polygons"])
+    plot.axhline(0.0, color="black", linewidth=0.5)
+    plot.set_xlabel(axis)
+    plot.set_ylabel(f"{name}, {unit}")
+    plot.set_title(analysis.scene.title, fontsize=10)
+    plot.grid(True, linewidth=0.3)
+    plot.legend(fontsize=8, loc="best")
+    figure.tight_layout()
+    buffer = io.StringIO()
+    figure.savefig(buffer, format="svg", metadata={"Date": None})
+    pyplot.close(figure)
+    return buffer.getvalue()
+
+
+# Latin and Cyrillic first, then CJK: matplotlib falls back along the list glyph by glyph.
+_FONTS = ("DejaVu Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "WenQuanYi Zen Hei", "Droid Sans Fallback")
+
+
+def _families() -> list[str]:
+    """The fonts of :data:`_FONTS` this machine has (asking for a missing one floods the log)."""
+    from matplotlib import font_manager
+
+    installed = {font.name for font in font_manager.fontManager.ttflist}
+    return [name for name in _FONTS if name in installed] or ["sans-serif"]
+
+
+def _friction(analysis: Analysis, sweep):
+    from ..joint_friction import friction_pairs
+    from ..statics import pairs
+
+    return friction_pairs(analysis.scene.friction, pairs(analysis.mechanism, sweep.slides))

@@ -1,0 +1,149 @@
+"""Friction in the pairs: the friction circle at the joints, sliding friction in the guides.
+
+Checked against closed forms of the massless central slider-crank (a force P on the piston, crank
+angle φ, rod angle β with sin β = r·sin φ / l):
+
+* friction f in the guide only: Mb = −P·r·sin(φ + β) / (cos β − f·s·|sin β|), s the sign of the
+  piston's velocity; the pair locks itself where the denominator is not positive;
+* friction in the crank's journal only (friction circle ρ = f·r_j): the rod force does not change,
+  and Mb = Mb0 + sign(ω)·ρ·|R12|.
+
+Then the polygons with friction against the linear system with friction on the ratchet, and the
+efficiency: 1 without friction, below 1 with it wherever the driver delivers power.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.scene import FrictionSpec
+from graphplan.scene import loads as scene_from_text
+
+RADIUS, ROD, PUSH, OMEGA = 0.1, 0.4, 1000.0, 10.0
+
+
+def slider_crank(friction: str) -> graphplan.Scene:
+    return scene_from_text(f"""
+[scene]
+gravity = 0.0
+[frame]
+points = {{ O = [0.0, 0.0] }}
+lines = {{ axis = {{ through = "O", angle = 0.0 }} }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = {RADIUS}
+omega = {OMEGA}
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = {ROD}
+guide = "axis"
+assembly = "forward"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+value = {PUSH}
+[positions]
+count = 24
+start = 7.5
+plans = [1, 5, 9, 17]
+{friction}
+""")
+
+
+def rod_angle(phi: np.ndarray) -> np.ndarray:
+    return np.arcsin(RADIUS * np.sin(phi) / ROD)
+
+
+def test_guide_friction_matches_the_closed_form_and_locks_where_it_must():
+    f = 5.0  # large enough that the piston jams near mid-stroke, where tan β > 1/f
+    analysis = analyse(slider_crank(f'[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = {f}'))
+    exact = analysis.with_friction
+    phi = analysis.motion.driver
+    beta = rod_angle(phi)
+    piston = np.sign(analysis.motion.point("B").v[:, 0])
+    denominator = np.cos(beta) - f * piston * np.abs(np.sin(beta))
+    free = denominator > 0.05
+    expected = -PUSH * RADIUS * np.sin(phi + beta) / denominator
+    np.testing.assert_allclose(exact.balancing[free & (piston > 0)], expected[free & (piston > 0)], rtol=1e-10)
+    assert not exact.locked[free & (piston > 0)].any()
+    jammed = (denominator < -0.05) & (piston > 0)
+    assert jammed.any() and exact.locked[jammed].all()
+    assert (exact.iterations[free & (piston > 0)] >= 1).all()
+
+
+def test_journal_friction_adds_the_friction_circle_moment():
+    f, journal = 0.15, 0.02
+    analysis = analyse(slider_crank(f'[[friction]]\njoint = "O"\nf = {f}\nradius = {journal}'))
+    ideal, rubbing = analysis.equilibrium, analysis.with_friction
+    circle = f * journal
+    frame_on_crank = np.abs(ideal.reaction("R12").force)
+    expected = ideal.balancing + np.sign(OMEGA) * circle * frame_on_crank
+    np.testing.assert_allclose(rubbing.balancing, expected, rtol=1e-12, atol=1e-12 * PUSH * RADIUS)
+    np.testing.assert_allclose(np.abs(rubbing.reaction("R12").force), frame_on_crank, rtol=1e-12)
+
+
+def ratchet_with_friction(f: float):
+    scene = graphplan.load(Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml")
+    specs = tuple(FrictionSpec(f"friction[{k}]", joint, None, f, 0.02, None) for k, joint in enumerate("OABC"))
+    return analyse(dataclasses.replace(scene, friction=specs))
+
+
+def test_polygons_with_friction_agree_with_the_linear_system_with_friction():
+    analysis = ratchet_with_friction(0.12)
+    exact = analysis.with_friction
+    for position in analysis.plans:
+        drawn, i = position.with_friction, position.index
+        assert drawn.iterations >= 2 and not drawn.locked
+        largest = max(abs(r.force[i]) for r in exact.reactions)
+        for name, found in drawn.reactions.items():
+            assert abs(found.force - exact.reaction(name).force[i]) <= 1e-9 * largest
+        assert drawn.balancing == pytest.approx(exact.balancing[i], rel=1e-9)
+        assert drawn.balancing != pytest.approx(position.forces.balancing, rel=1e-3)
+
+
+def test_efficiency_is_one_without_friction_and_below_one_with_it():
+    no_friction = ratchet_with_friction(0.0)
+    np.testing.assert_allclose(no_friction.with_friction.balancing, no_friction.equilibrium.balancing, rtol=1e-13)
+    analysis = ratchet_with_friction(0.12)
+    ideal, rubbing = analysis.equilibrium.balancing, analysis.with_friction.balancing
+    omega = analysis.mechanism.driver.omega
+    driving = ideal * omega > 0
+    assert driving.any()
+    efficiency = ideal[driving] / rubbing[driving]
+    assert np.all(efficiency < 1) and np.all(efficiency > 0.5)
+
+
+@pytest.mark.parametrize(("entry", "where", "message"), [
+    ('joint = "Q"\nf = 0.1\nradius = 0.01', "friction[0].joint", "names no pair of the mechanism"),
+    ('joint = "B"\nf = 0.1\nradius = 0.01', "friction[0].links", "joint B has several pairs: say which with links"),
+    ('joint = "O"\nf = 0.1', "friction[0].radius", "the pair at O turns: give its journal radius"),
+    ('joint = "B"\nlinks = [1, 4]\nf = 0.1\nradius = 0.01', "friction[0].radius", "the pair at B slides"),
+    ('joint = "O"\nf = -0.1\nradius = 0.01', "friction[0].f", "must be >= 0"),
+    ('joint = "O"\nf = 0.1\nradius = 0.01\ngroove_half_angle = 30', "friction[0].groove_half_angle", "turns: a groove"),
+])
+def test_bad_friction_entries_name_their_key(entry, where, message):
+    with pytest.raises(graphplan.SceneError) as raised:
+        analyse(slider_crank("[[friction]]\n" + entry))
+    assert str(raised.value).startswith(where) and message in str(raised.value)
+
+
+def test_efficiency_is_not_defined_where_friction_turns_the_power_flow_round():
+    from graphplan.statics import efficiency
+
+    mechanism = analyse(slider_crank("")).mechanism  # ω > 0: a positive Mb drives
+    assert efficiency(mechanism, 10.0, 12.5) == pytest.approx(0.8)   # the driver drives, friction costs
+    assert efficiency(mechanism, -10.0, -8.0) == pytest.approx(0.8)  # the loads drive it back, friction takes a share
+    assert np.isnan(efficiency(mechanism, -1.0, 2.0))                # friction makes the driver drive after all
