@@ -12,14 +12,22 @@ a warning, never silently.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
 from .errors import SceneError
 from .groups.base import Guide, GuideMotion
-from .kinematics import LinkMotion, PointMotion, SlideMotion, as_xy, at, point_on_link, unit
+from .kinematics import (
+    LinkMotion,
+    PointMotion,
+    SlideMotion,
+    as_xy,
+    at,
+    point_fixed_on,
+    unit,
+)
 from .mechanism import Mechanism, on_frame
 from .scene import PointSpec
 
@@ -260,15 +268,15 @@ def _place(context: _Context, spec: PointSpec, mechanism: Mechanism, local: comp
     if spec.link == mechanism.scene.frame_link:
         return PointMotion(local, _STILL, _STILL)
     link = context.link(spec.link)
-    origin = context.point(link.origin)
-    return point_on_link(origin, link, link.u * local)
-
+    return point_fixed_on(context.point(link.origin), link, local)
 
 
 def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[PositionWarning, ...]:
     limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
     warnings = []
     for label, sine in conditioning.items():
+        if np.min(sine) >= limit:  # the usual case, told by one reduction (a NaN goes on)
+            continue
         for index in np.flatnonzero(sine < limit):
             angle = math.degrees(math.asin(min(1.0, float(sine[index]))))
             warnings.append(PositionWarning(int(index), "ill-conditioned",
