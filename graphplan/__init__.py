@@ -9,7 +9,7 @@ The Python interface::
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -45,5 +45,16 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     return solve_motion(mechanism, driver)
 
 
-__all__ = ["AssemblyError", "GraphplanError", "Mechanism", "Motion", "Scene", "SceneError",
-           "SingularPositionError", "build", "load", "solve", "__version__"]
+__all__ = [
+    "AssemblyError",
+    "GraphplanError",
+    "Mechanism",
+    "Motion",
+    "Scene",
+    "SceneError",
+    "SingularPositionError",
+    "__version__",
+    "build",
+    "load",
+    "solve",
+]

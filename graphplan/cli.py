@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Sequence
 
 from .errors import GraphplanError
 
@@ -32,6 +32,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("scene", type=Path, help="the scene file (TOML)")
     run.add_argument("--out", type=Path, default=None,
                      help="output folder (default: output/<scene file name>)")
+    run.add_argument("--figures", action="store_true",
+                     help="also draw the report figures with matplotlib (the balancing load over the cycle)")
     check = commands.add_parser("check", help="validate a scene and print its structure formula")
     check.add_argument("scene", type=Path, help="the scene file (TOML)")
     return parser
@@ -43,7 +45,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         if arguments.command == "check":
             return _check(arguments.scene)
-        return _run(arguments.scene, arguments.out)
+        return _run(arguments.scene, arguments.out, arguments.figures)
     except GraphplanError as error:
         print(f"graphplan: error: {error}", file=sys.stderr)
         return 2
@@ -63,7 +65,7 @@ def _check(path: Path) -> int:
     return 0
 
 
-def _run(path: Path, out: Path | None) -> int:
+def _run(path: Path, out: Path | None, figures: bool = False) -> int:
     from .analysis import analyse
     from .output import write_folder
     from .render.drawings import positions_svg
@@ -74,14 +76,24 @@ def _run(path: Path, out: Path | None) -> int:
     analysis = analyse(scene)
     files = {"results.json": dumps(results(analysis)), "positions.svg": positions_svg(analysis)}
     if analysis.plans:
-        from .render.drawings import plan_svg
+        from .render.drawings import forces_svg, plan_svg
         from .report.tables import csv_text, markdown
 
         for plan in analysis.plans:
             files[f"plan_{plan.number}.svg"] = plan_svg(analysis, plan.index, plan.velocity, plan.acceleration)
+            if plan.forces is not None:
+                files[f"forces_{plan.number}.svg"] = forces_svg(analysis, plan)
 
         files["errors.md"] = markdown(analysis)
         files["errors.csv"] = csv_text(analysis)
+        if any(plan.forces is not None for plan in analysis.plans):
+            from .report.forces import markdown as forces_markdown
+
+            files["forces.md"] = forces_markdown(analysis)
+    if figures and analysis.equilibrium is not None:
+        from .report.figures import balancing_diagram
+
+        files["balancing.svg"] = balancing_diagram(analysis)
     target = out if out is not None else Path("output") / path.stem
     written = write_folder(target, files)
     print(f"{scene.title}")

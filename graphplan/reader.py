@@ -11,7 +11,8 @@ from __future__ import annotations
 import datetime
 import difflib
 import math
-from typing import Any, Callable, Iterator
+from collections.abc import Callable, Iterator
+from typing import Any
 
 from .errors import SceneError
 
