@@ -2,7 +2,9 @@
 
 A reading is a length of the drawing, in mm, between two plan points (``pb``,
 ``ab``, ``n3b``), turned into a quantity by the scale and, for ω and ε, by a
-link's length: ``VB = pb·μV``, ``ω3 = ab·μV / lAB``, ``ε3 = n3b·μa / lAB``.
+link's length: ``VB = pb·μV``, ``ω3 = ab·μV / lAB``, ``ε3 = n3b·μa / lAB``; a
+sliding pair's relative velocity and relative acceleration are read along
+its guide (``VBB4 = b4b·μV``, ``aBB4^r = k5b·μa``).
 Three sources give the lengths: the plan as constructed, the same plan read
 with a ruler to the drafting precision, and the readings a student took off a
 hand-drawn plan (the scene's ``[measured]``).  Each quantity is compared with
@@ -13,14 +15,31 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
-from typing import Mapping
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
 
 from .errors import SceneError
+from .groups.sliding import guide_link
 from .mechanism import Mechanism
-from .plans import Plan
+from .plans import LaidVector, Plan, Step
 
 SOURCES = ("construction", "drafting", "measured")
+
+
+@dataclass(frozen=True)
+class SlidingPair:
+    """A sliding pair at one instant: link ``slider`` runs at ``joint`` along a line fixed in link ``guide``.
+
+    ``through`` is a point fixed on the guide link (None on the frame) and
+    ``arm`` the vector from it to the joint (m), so that the motion of the
+    guide link's point under the slider follows from ``through``'s.
+    """
+
+    slider: int
+    guide: int
+    joint: str
+    through: str | None = None
+    arm: complex = 0j
 
 
 @dataclass(frozen=True)
@@ -31,7 +50,8 @@ class Reading:
     ``length`` the link length it is divided by (1 for a linear quantity);
     ``sign`` the sense the construction gives it (+1 ccw, −1 cw) for ω and ε,
     and 1 for magnitudes; ``points`` the two mechanism points (B, A) of a
-    relative vector vBA.
+    relative vector vBA; ``slide`` the sliding pair whose relative velocity
+    or relative acceleration the segment is.
     """
 
     quantity: str
@@ -40,6 +60,7 @@ class Reading:
     length: float = 1.0
     sign: float = 1.0
     points: tuple[str, str] | None = None
+    slide: SlidingPair | None = None
 
     def value(self, plans: Mapping[str, Plan], millimetres: float | None = None) -> float:
         """The quantity from the segment's length (``millimetres`` overrides the plan's own)."""
@@ -69,7 +90,7 @@ class ErrorRow:
 
 
 def readings(mechanism: Mechanism, plans: Mapping[str, Plan], positions: Mapping[str, complex]) -> list[Reading]:
-    """Every quantity the plans give, in textbook order: absolute, relative, then angular."""
+    """Every quantity the plans give, in textbook order: absolute, relative, sliding, then angular."""
     result: list[Reading] = []
     frame = set(mechanism.scene.frame_points)
     for kind, symbol in (("velocity", "V"), ("acceleration", "a")):
@@ -79,6 +100,13 @@ def readings(mechanism: Mechanism, plans: Mapping[str, Plan], positions: Mapping
         for name, first, second in _relative_pairs(mechanism, plans["velocity"]):
             result.append(Reading(f"{symbol}{name}", kind, (plan.images[first], plan.images[second]),
                                   points=(second, first)))
+        for sliding in _sliding_readings(mechanism, plan, symbol, positions):
+            # An RPR's sliding velocity is also the relative velocity of two named points (vA4A3).
+            same = [k for k, reading in enumerate(result) if reading.quantity == sliding.quantity]
+            if same:
+                result[same[0]] = replace(result[same[0]], slide=sliding.slide)
+            else:
+                result.append(sliding)
         for link in mechanism.moving_links:
             if link in mechanism.translating:  # never turns: an ω or ε row would only show zeros
                 continue
@@ -113,6 +141,92 @@ def _relative_pairs(mechanism: Mechanism, velocity: Plan) -> list[tuple[str, str
                 if pair not in pairs:
                     pairs.append(pair)
     return pairs
+
+
+def sliding_pairs(mechanism: Mechanism, positions: Mapping[str, complex]) -> list[SlidingPair]:
+    """The sliding pairs of the groups at the instant whose points are at ``positions``.
+
+    They are the pairs of ``Motion.slides``, in the same order: an RRP's
+    slider on its guide, an RPR's block on the lever, each PRP slider on its
+    guide, an RPP's block in the slot of link b and link b on its guide.  The
+    driver's own slide is given, not constructed, so it is not among them.
+    """
+    frame = mechanism.scene.frame_link
+    found: list[tuple[int, int, str]] = []
+    for group in mechanism.groups:
+        if group.kind == "RRP":
+            found.append((group.links[1], guide_link(mechanism, group.guide), group.joints[1]))
+        elif group.kind == "RPR":
+            found.append((group.links[0], group.links[1], group.joints[0]))
+        elif group.kind == "PRP":
+            found += [(link, guide_link(mechanism, guide), group.joints[0])
+                      for link, guide in zip(group.links, group.guide_pair)]
+        elif group.kind == "RPP":
+            found += [(group.links[0], group.links[1], group.joints[0]),
+                      (group.links[1], guide_link(mechanism, group.guide), group.joints[1])]
+    pairs = []
+    for slider, guide, joint in found:
+        if guide == frame:
+            pairs.append(SlidingPair(slider, guide, joint))
+            continue
+        through = min(name for name in mechanism.fixed_on[guide] if name in positions and name != joint)
+        pairs.append(SlidingPair(slider, guide, joint, through, positions[joint] - positions[through]))
+    return pairs
+
+
+def _sliding_readings(mechanism: Mechanism, plan: Plan, symbol: str,
+                      positions: Mapping[str, complex]) -> list[Reading]:
+    """The relative velocity (or relative acceleration ``^r``) of every sliding pair, read along its guide.
+
+    The segment is the vector the group laid off along the guide, which its
+    record of the slide (``Plan.sliding``) equals exactly; the quantity is
+    named as the step's equation names that vector.
+    """
+    result = []
+    for pair in sliding_pairs(mechanism, positions):
+        if pair.slider not in plan.sliding:
+            continue
+        laid = _laid_along_guide(plan, plan.sliding[pair.slider])
+        if laid is None:
+            continue
+        step, vector = laid
+        quantity = symbol + _sliding_name(step, vector, pair)[1:]
+        result.append(Reading(quantity, plan.kind, (vector.start, vector.end), slide=pair))
+    return result
+
+
+def _laid_along_guide(plan: Plan, slide: complex) -> tuple[Step, LaidVector] | None:
+    """The vector a step laid off along a guide (a line of action ``∥ …`` from its start to the crossing it fixed)
+    that is the slide, either way round.
+
+    Asking for the guide's line keeps a vector that is zero at this instant
+    (a normal or tangential component) from standing in for a zero slide.
+    """
+    for step in plan.steps:
+        along = {line.through for line in step.lines if line.meaning.startswith("∥")}
+        for vector in step.vectors:
+            if vector.start not in along or vector.end not in step.fixes or vector.start == vector.end:
+                continue
+            drawn = plan.points[vector.end] - plan.points[vector.start]
+            if drawn == slide or drawn == -slide:
+                return step, vector
+    return None
+
+
+def _sliding_name(step: Step, vector: LaidVector, pair: SlidingPair) -> str:
+    """``vBB4``, ``aA4A3^r``: the vector's own name, or, when it is laid from the pole, the equation's.
+
+    On a frame guide the sliding vector starts at the pole, where it is also
+    the absolute vector (``vB``); the equation writes it as relative to the
+    frame's point under the slider (``vB = … = vB1 + vBB1``).
+    """
+    if vector.start != "p":
+        return vector.meaning
+    for term in re.split(r"\s*[=+]\s*", step.equation):
+        rest = term[len(vector.meaning):].removesuffix("^r")
+        if term.startswith(vector.meaning) and rest.rstrip("0123456789") and rest.endswith(str(pair.guide)):
+            return term
+    return f"{vector.meaning}{pair.joint}{pair.guide}"
 
 
 def _angular(mechanism: Mechanism, plans: Mapping[str, Plan], kind: str, link: int,
@@ -159,16 +273,36 @@ def drafted(millimetres: float, precision: float) -> float:
 
 def error_rows(position: int, analytic: Mapping[str, float], plans: Mapping[str, Plan], table: list[Reading],
                precision: float, measured: Mapping[str, Mapping[str, float]] | None = None) -> list[ErrorRow]:
-    """The error table of one position: every reading against the analytic value, per source."""
+    """The error table of one position: every reading against the analytic value, per source.
+
+    A quantity that vanishes at the position (a block at rest in its slot at
+    a dead point) is zero in both solutions up to rounding; its two
+    roundings would give a meaningless percentage, so both are written as 0.
+    """
     rows = []
+    exact_values = dict(analytic)
     for reading in table:
-        exact = analytic[reading.quantity]
-        rows.append(ErrorRow(position, reading.quantity, exact, reading.value(plans), "construction"))
+        exact, constructed = analytic[reading.quantity], reading.value(plans)
+        if _vanishes(reading, plans, exact):
+            exact = constructed = exact_values[reading.quantity] = 0.0
+        rows.append(ErrorRow(position, reading.quantity, exact, constructed, "construction"))
         rows.append(ErrorRow(position, reading.quantity, exact,
                              reading.value(plans, drafted(reading.millimetres(plans), precision)), "drafting"))
     if measured:
-        rows += _measured_rows(position, analytic, plans, table, measured)
+        rows += _measured_rows(position, exact_values, plans, table, measured)
     return rows
+
+
+# Below this share of its plan's size a segment, and the analytic value it stands for, are rounding.
+NEGLIGIBLE = 1e-9
+
+
+def _vanishes(reading: Reading, plans: Mapping[str, Plan], exact: float) -> bool:
+    """Whether the plan's segment and the analytic value are both below :data:`NEGLIGIBLE` of the plan's size."""
+    plan = plans[reading.plan]
+    size_mm = max(abs(plan.mm(letter)) for letter in plan.points)
+    exact_mm = abs(exact) * reading.length / plan.scale
+    return max(reading.millimetres(plans), exact_mm) <= NEGLIGIBLE * size_mm
 
 
 def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]:
@@ -206,7 +340,10 @@ def analytic_values(mechanism: Mechanism, table: list[Reading], velocities: Mapp
     values: dict[str, float] = {}
     for reading in table:
         kind, rest = _QUANTITY.match(reading.quantity).groups()  # type: ignore[union-attr]
-        if kind == "omega":
+        if reading.slide is not None:
+            relative = _relative_motion(reading.slide, velocities, accelerations, omega, epsilon)
+            values[reading.quantity] = abs(relative[0] if kind == "V" else relative[1])
+        elif kind == "omega":
             values[reading.quantity] = omega[int(rest)]
         elif kind == "epsilon":
             values[reading.quantity] = epsilon[int(rest)]
@@ -218,3 +355,19 @@ def analytic_values(mechanism: Mechanism, table: list[Reading], velocities: Mapp
                 values[reading.quantity] = abs(source[rest])
     return values
 
+
+
+def _relative_motion(pair: SlidingPair, velocities: Mapping[str, complex], accelerations: Mapping[str, complex],
+                     omega: Mapping[int, float], epsilon: Mapping[int, float]) -> tuple[complex, complex]:
+    """The slider's velocity ṡ·u and acceleration s̈·u relative to its guide link, from the exact motion.
+
+    With T fixed on the guide link g:  v_rel = vJ − (vT + ωg × TJ),
+    a_rel = aJ − (aT + εg × TJ − ωg²·TJ) − 2·ωg × v_rel (the Coriolis part is not relative).
+    """
+    if pair.through is None:
+        return velocities[pair.joint], accelerations[pair.joint]
+    spin, whirl = omega[pair.guide], epsilon[pair.guide]
+    v_rel = velocities[pair.joint] - velocities[pair.through] - 1j * spin * pair.arm
+    a_rel = (accelerations[pair.joint] - accelerations[pair.through] - (1j * whirl - spin * spin) * pair.arm
+             - 2j * spin * v_rel)
+    return v_rel, a_rel

@@ -91,3 +91,14 @@ def test_segment_names_split_into_plan_letters():
     assert split_segment("ps3", letters, "x") == ("p", "s3")
     with pytest.raises(SceneError, match="is not two letters of the plan"):
         split_segment("qz", letters, "measured.5.velocity.qz")
+
+
+def test_a_quantity_that_vanishes_at_the_position_has_no_error_of_rounding():
+    # The Scotch yoke in position 4 (φ = 180°): the crank pin moves square to the slot, so the block
+    # rests in it and the yoke does not accelerate; both solutions give zero up to rounding.
+    analysis = analyse(graphplan.load("fixtures/scotch_yoke.toml"))
+    for source in ("construction", "drafting"):
+        table = rows(analysis, 4, source)
+        for quantity in ("VA4A3", "aB", "aA4A1^r"):
+            assert (table[quantity].analytic, table[quantity].plan, table[quantity].percent) == (0.0, 0.0, 0.0)
+        assert table["aA4A3^r"].analytic == pytest.approx(12.566**2 * 0.075, rel=1e-9)

@@ -3,24 +3,51 @@
 The sheet is laid out from the plan records (graphplan.plans); these tests read the layers the
 layout returns, find the vectors by their keys (``velocity-p-b``) and compare their lengths in
 millimetres with the plan's values over its scale, check that every plan point is lettered once and
-no two texts overlap, that a zero vector is left out, and that the SVG is the same byte for byte.
+no two texts overlap, that a zero vector is left out, and that the SVG is the same byte for byte. On
+every fixture's sheets: no label covers another, a leader, another point, an arrowhead or a block;
+every word is the scene's locale's; each drawing stands in its own field.
 """
 
 import dataclasses
+import functools
 import itertools
 import math
 import re
 from collections import Counter
+from pathlib import Path
+from xml.etree import ElementTree
 
 import pytest
+from shapely.geometry import LineString
+from shapely.geometry import Polygon as ShapelyPolygon
 
 import graphplan
 from graphplan.analysis import analyse
-from graphplan.plans import DrawnLine, LaidVector, Step
+from graphplan.locale import strings
+from graphplan.plans import PLAN_FIELD_MM, DrawnLine, LaidVector, Step
+from graphplan.render import labels, linkage, positions
 from graphplan.render import plans as sheet_layout
-from graphplan.render.drawings import plan_scale_text, plan_sheet, plan_svg, positions_svg
+from graphplan.render.drawings import (
+    plan_scale_text,
+    plan_sheet,
+    plan_svg,
+    positions_plan,
+    positions_svg,
+)
 from graphplan.render.labels import text_box
-from graphplan.render.primitives import Arrow, Polyline, Text, arrowhead, bounds_of, place
+from graphplan.render.primitives import (
+    Arrow,
+    Circle,
+    Polyline,
+    Stroke,
+    Text,
+    arrowhead,
+    bounds_of,
+    place,
+    text_width,
+)
+from graphplan.render.svg import FONT_FAMILY
+from graphplan.scene import loads
 
 FIXTURES = "fixtures"
 
@@ -142,15 +169,21 @@ def test_every_position_is_lettered_once_with_no_texts_overlapping(name, request
         assert all(a.intersection(b).area == 0.0 for a, b in itertools.combinations(boxes, 2)), index
 
 
-def test_each_label_stands_near_its_point(sheet):
+def test_each_label_stands_beside_its_point_or_is_led_to_it(sheet):
     layers = layers_of(sheet)
     for plan, pole in ((sheet.velocity, sheet.velocity_pole), (sheet.acceleration, sheet.acceleration_pole)):
         where = on_paper(layers, plan)
+        leaders = layers[f"{plan.kind}-leaders"]
         for text in layers[f"{plan.kind}-labels"]:
             letter = text.text.split(", ")[0]
             point = where("p" if letter == pole else letter)
-            # Within the outermost ring the labeller tries: the letter's gap plus 2.5 letter heights.
-            assert text_box(text).distance(_point(point)) <= 1.2 + 2.5 * text.size + 1e-6, text.text
+            distance = text_box(text).distance(_point(point))
+            beside = 1.2 + max(labels.BESIDE_SHARES) * text.size + 1e-6
+            led = [line for line in leaders if abs(complex(*line.points[0]) - point) <= labels.LEADER_CLEARANCE + 1e-6
+                   and text_box(text).distance(_point(complex(*line.points[-1]))) <= 0.5]
+            assert distance <= beside or len(led) == 1, text.text
+            # Within the outermost ring the labeller tries.
+            assert distance <= 1.2 + max(labels.APART_SHARES) * text.size + 1e-6, text.text
 
 
 def test_no_two_texts_on_the_sheet_overlap(sheet):
@@ -296,6 +329,209 @@ def test_a_short_vector_gets_a_smaller_head():
     short = Arrow((0.0, 0.0), (3.0, 0.0), head=3.5)
     assert short.head_length == pytest.approx(0.4 * 3.0)
     assert short.shaft().points[-1][0] > 0.0
+
+
+# Every fixture's sheets: legible, in the scene's language, each drawing in its field.
+
+ALL_FIXTURES = sorted(path.stem for path in Path(FIXTURES).glob("*.toml"))
+SIX_BARS = ("shaper_six_bar", "stephenson_six_bar")
+
+
+@functools.cache
+def analysed(name: str, automatic: bool = False):
+    scene = graphplan.load(f"{FIXTURES}/{name}.toml")
+    if automatic:  # the scales chosen to fit the plans' fields, not given by the scene
+        drawing = dataclasses.replace(scene.drawing, velocity_pole=None, acceleration_pole=None,
+                                      velocity_scale=None, acceleration_scale=None)
+        scene = dataclasses.replace(scene, drawing=drawing)
+    return analyse(scene)
+
+
+def _checked_positions(name):
+    """The plan positions of a fixture; every position of the crowded six-bars."""
+    analysis = analysed(name)
+    return range(analysis.motion.count) if name in SIX_BARS else [plan.index for plan in analysis.plans]
+
+
+@pytest.mark.parametrize("name", ALL_FIXTURES)
+def test_no_label_covers_another_label_a_leader_a_point_an_arrowhead_or_a_block(name):
+    analysis = analysed(name)
+    for index in _checked_positions(name):
+        sheet = plan_sheet(analysis, index)
+        layers = sheet_layout.layout(sheet)
+        for drawing in ("mechanism", "velocity", "acceleration"):
+            items = [item for layer in layers if layer.name.startswith(f"{drawing}-") for item in layer.items]
+            texts = list(_named(layers)[f"{drawing}-labels"])
+            boxes = [text_box(text) for text in texts]
+            where = f"{name} position {sheet.number}, {drawing}"
+            for (a, box_a), (b, box_b) in itertools.combinations(zip(texts, boxes), 2):
+                assert not box_a.intersects(box_b), (where, a.text, b.text)
+            for leader in _named(layers)[f"{drawing}-leaders"]:
+                assert not any(box.intersects(LineString(leader.points)) for box in boxes), (where, leader)
+            heads = [ShapelyPolygon(item.tip().points) for item in items if isinstance(item, Arrow)]
+            heads += [ShapelyPolygon(item.points) for item in items
+                      if isinstance(item, Polyline) and item.closed and item.fill and item.stroke.width <= 0.1]
+            blocks = [ShapelyPolygon(item.points) for item in items
+                      if isinstance(item, Polyline) and item.closed and item.fill == "white"]
+            dots = [item for item in _named(layers)[f"{drawing}-points"] if isinstance(item, Circle)]
+            if drawing != "mechanism":
+                assert len(dots) == len(texts)  # a dot and a label for each place of the plan, in one order
+            for k, (text, box) in enumerate(zip(texts, boxes)):
+                assert not any(box.intersects(head) for head in heads), (where, text.text)
+                assert not any(box.intersection(block).area > 0.5 for block in blocks), (where, text.text)
+                # On the mechanism a named point's own dot is the one nearest its label.
+                own = dots[k] if drawing != "mechanism" else min(
+                    dots, key=lambda dot: box.distance(_point(complex(*dot.centre))), default=None)
+                others = [dot for dot in dots if dot is not own]
+                assert not any(box.intersects(_point(complex(*dot.centre)).buffer(dot.radius)) for dot in others), \
+                    (where, text.text)
+
+
+def _locale_patterns(locale):
+    """Each string of ``locale`` as a pattern, its placeholders standing for numbers."""
+    patterns = []
+    for template in strings(locale).values():
+        pattern = re.escape(template).replace(r"\{value\}", r"[0-9.]+").replace(r"\{number\}", r"[0-9]+")
+        patterns.append(re.compile(pattern))
+    return patterns
+
+
+# The notation, the same in every language: points (B, S3, p′), plan letters (n3, k5), ω2, ε4, π, and
+# the numbers of the positions.
+NOTATION = re.compile(r"[0-9]+|(?:[A-Za-z][A-Za-z0-9]*′*|[ωε][0-9]+|π)(?:, (?:[A-Za-z][A-Za-z0-9]*′*|π))*")
+
+
+def _words_of(layers):
+    return [item.text for layer in layers for item in layer.items if isinstance(item, Text)]
+
+
+def _localised(locale: str):
+    text = (Path(FIXTURES) / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    scene, count = re.subn(r'(?m)^locale\s*=\s*"ru"', f'locale = "{locale}"', text)
+    assert count == 1
+    return analyse(loads(scene))
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh", "en"])
+def test_every_word_on_the_sheets_comes_from_the_scenes_locale(locale):
+    # The ratchet scene's title is English; its sheets must not show it in any language but English's own words.
+    analysis = _localised(locale)
+    own = _locale_patterns(locale)
+    foreign = [p for other in ("en", "ru", "zh") if other != locale for p in _locale_patterns(other)
+               if not any(p.pattern == q.pattern for q in own)]
+    plan = analysis.plans[0]
+    sheets = [sheet_layout.layout(plan_sheet(analysis, plan.index)), positions.layout(positions_plan(analysis))]
+    for words in map(_words_of, sheets):
+        for word in words:
+            if not NOTATION.fullmatch(word):
+                assert any(p.fullmatch(word) for p in own), (locale, word)
+                assert not any(p.fullmatch(word) for p in foreign), (locale, word)
+        assert analysis.scene.title not in words
+
+
+def test_chinese_is_set_in_a_cjk_font_and_the_font_list_has_one_after_the_latin_fonts():
+    families = [family.strip() for family in FONT_FAMILY.split(",")]
+    assert families[0] == "DejaVu Sans" and "Noto Sans CJK SC" in families[1:]
+    svg = plan_svg(_localised("zh"), _localised("zh").plans[0].index)
+    root = ElementTree.fromstring(svg)
+    for element in root.iter():
+        if element.tag.endswith("text"):
+            chinese = any("\u4e00" <= character <= "\u9fff" for character in element.text)
+            first = element.get("font-family").split(",")[0]
+            assert first == ("Noto Sans CJK SC" if chinese else "DejaVu Sans"), element.text
+
+
+def test_text_boxes_hold_wide_letters_and_ideographs():
+    # DejaVu Sans draws "m" 0.97 em wide and a digit 0.64 em; an ideograph fills its em square.
+    em = 4.0 / 0.72
+    assert text_width("m", 4.0) >= 0.95 * em and text_width("8", 4.0) >= 0.636 * em
+    assert text_width("速度", 4.0) == pytest.approx(2 * em)
+    assert text_width("Ab", 4.0, "bold") > text_width("Ab", 4.0)
+
+
+@pytest.mark.parametrize("name", ALL_FIXTURES)
+def test_each_drawing_stands_in_its_own_field_and_the_captions_on_one_line(name):
+    analysis = analysed(name)
+    for plan in analysis.plans:
+        arrangement = sheet_layout.arrange(plan_sheet(analysis, plan.index))
+        fields = arrangement.fields
+        assert list(fields) == ["mechanism", "velocity", "acceleration"]
+        for (_, _, right, _), (left, _, _, _) in itertools.pairwise(fields.values()):
+            assert right < left
+        baselines = set()
+        for drawing, (x0, y0, x1, y1) in fields.items():
+            drawn = [item for layer in arrangement.layers if layer.name.startswith(f"{drawing}-")
+                     and layer.name != f"{drawing}-caption" for item in layer.items]
+            bx0, by0, bx1, by1 = bounds_of(drawn)
+            assert x0 - 1e-9 <= bx0 and bx1 <= x1 + 1e-9 and y0 - 1e-9 <= by0 and by1 <= y1 + 1e-9, drawing
+            caption = _named(arrangement.layers)[f"{drawing}-caption"]
+            baselines.add(round(caption[0].at[1], 9))
+            assert x0 <= bounds_of(caption)[0] and bounds_of(caption)[2] <= x1
+        assert len(baselines) == 1
+
+
+@pytest.mark.parametrize("name", ALL_FIXTURES)
+def test_with_automatic_scales_each_plan_fills_its_field_and_the_two_plans_match(name):
+    analysis = analysed(name, automatic=True)
+    for plan in analysis.plans:
+        arrangement = sheet_layout.arrange(plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration))
+        sizes = {}
+        for kind in ("velocity", "acceleration"):
+            x0, _, x1, _ = arrangement.fields[kind]
+            assert x1 - x0 == pytest.approx(sheet_layout.plan_field_mm()), kind  # the field did not have to grow
+            drawn = [item for layer in arrangement.layers if layer.name in (f"{kind}-vectors", f"{kind}-points")
+                     for item in layer.items]
+            bx0, by0, bx1, by1 = bounds_of(drawn)
+            sizes[kind] = max(bx1 - bx0, by1 - by0)
+            assert PLAN_FIELD_MM / 3 <= sizes[kind] <= PLAN_FIELD_MM + 1.0, (kind, plan.number, sizes[kind])
+        assert max(sizes.values()) <= 3 * min(sizes.values()), sizes
+
+
+def _linkage(name, number):
+    """The mechanism of a fixture's plan position drawn bold at 1 mm per mm, and where its points are."""
+    analysis = analysed(name)
+    plan = next(p for p in analysis.plans if p.number == number)
+    motion = analysis.motion
+    items = linkage.links_at(motion, plan.index, linkage.outline_points(analysis.mechanism, motion),
+                             lambda r: (1000 * r.real, 1000 * r.imag), Stroke(0.8), bold=True)
+    return items, {name: 1000 * r for name, r in plan.positions.items()}
+
+
+def test_every_joint_of_two_moving_links_has_its_pin():
+    # D joins the shaper's lever and rod; E joins the Stephenson coupler and the output dyad: both are also
+    # named points, and a named point that is a joint is still a pin.
+    for name, number, joint in (("shaper_six_bar", 3, "D"), ("stephenson_six_bar", 3, "E")):
+        items, at = _linkage(name, number)
+        pins = [complex(*item.centre) for item in items if isinstance(item, Circle)]
+        assert any(abs(pin - at[joint]) < 1e-9 for pin in pins), name
+
+
+def test_a_levers_point_under_the_block_gets_no_arrow_of_its_own():
+    analysis = analysed("quick_return_slotted_lever")
+    drawn = arrows(layers_of(plan_sheet(analysis, analysis.plans[0].index)), "mechanism")
+    assert "mechanism-v-A" in drawn and "mechanism-v-A4" not in drawn
+
+
+def test_the_scotch_yoke_is_drawn_with_its_slot_across_and_its_rod():
+    items, at = _linkage("scotch_yoke", 9)
+    links = [item for item in items if isinstance(item, Polyline) and not item.fill]
+    # No triangle A–B–P: the yoke is the rod B–P and the slot, which runs along the slot's line through B past A.
+    assert not [item for item in links if item.closed]
+    a, b = at["A"], at["B"]
+    (slot,) = [item for item in links if _on_line(item, b, a - b)]
+    along = sorted(((complex(*end) - b) / (a - b)).real for end in slot.points)
+    assert along[0] < 0 and along[1] > 1, "the slot runs across the yoke, past B and past the block"
+    assert [item for item in links if _on_line(item, b, at["P"] - b)], "the rod B–P"
+    # B is where the slot crosses the guide, no joint: the block there slides, it has no pin.
+    assert not [item for item in items if isinstance(item, Circle) and abs(complex(*item.centre) - b) < 1e-9]
+
+
+def _on_line(polyline, through, direction):
+    return all(abs(((complex(*point) - through) / direction).imag) < 1e-6 for point in polyline.points)
+
+
+def _named(layers):
+    return {layer.name: layer.items for layer in layers}
 
 
 def _ends(polyline):

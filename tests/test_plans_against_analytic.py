@@ -28,14 +28,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_motion_against_finite_differences import (
+    _HUNG_ON_THE_RATCHET as GROUPS_ON_THE_RATCHET,  # noqa: E402
+)
 
 import graphplan
-from graphplan import plans
+from graphplan import check, plans
 from graphplan.analysis import analyse, instant
 from graphplan.geometry import ParallelLinesError
 from graphplan.mechanism import build
 from graphplan.scene import loads
-from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET as GROUPS_ON_THE_RATCHET  # noqa: E402
 
 FIXTURE_DIR = Path(__file__).resolve().parent.parent / "fixtures"
 FIXTURES = sorted(FIXTURE_DIR.glob("*.toml"))
@@ -156,6 +158,46 @@ def test_every_image_rate_and_slide_agrees_with_the_analytic_solution(case, inde
         assert slider in vp.sliding and slider in ap.sliding, f"link {slider}'s slide on link {guide} is not recorded"
         _close(vp.sliding[slider], velocity, v_scale, f"v rel of link {slider} on link {guide} at {joint}")
         _close(ap.sliding[slider], acceleration, a_scale, f"a rel of link {slider} on link {guide} at {joint}")
+
+
+SLIDING_FIXTURES = ["scotch_yoke", "tangent_mechanism_prp"]
+
+
+@pytest.mark.parametrize(("case", "index"), [p for p in ALL if any(s.slider != analysed(p.values[0]).mechanism.driver.link
+                                                                   for s in analysed(p.values[0]).motion.slides)])
+def test_the_tables_read_every_sliding_pair_as_the_analytic_slides(case, index):
+    # Each sliding pair of a group is read off both plans along its guide (the relative velocity, and the
+    # relative acceleration a^r laid after any Coriolis part), and that reading, and the exact value the
+    # table sets beside it, are the analytic Motion.slides.
+    m, pos, _, vp, ap, exact = constructed(case, index)
+    plans_ = {"velocity": vp, "acceleration": ap}
+    table = check.readings(m, plans_, pos)
+    values = check.analytic_values(m, table, exact["v"], exact["a"], exact["omega"] | {m.scene.frame_link: 0.0},
+                                   exact["epsilon"] | {m.scene.frame_link: 0.0})
+    v_scale = max(abs(v) for v in exact["v"].values())
+    a_scale = max(abs(a) for a in exact["a"].values())
+    for slider, guide, joint, velocity, acceleration in exact["slides"]:
+        if slider == m.driver.link:
+            continue
+        for kind, expected, scale in (("velocity", velocity, v_scale), ("acceleration", acceleration, a_scale)):
+            (reading,) = [r for r in table if r.plan == kind and r.slide is not None and r.slide.slider == slider]
+            assert reading.slide.guide == guide
+            what = f"{reading.quantity} (link {slider} on link {guide} at {joint})"
+            _close(reading.value(plans_), abs(expected), scale, what)
+            _close(values[reading.quantity], abs(expected), scale, f"exact {what}")
+            if kind == "acceleration":
+                assert reading.quantity.endswith("^r"), reading.quantity
+
+
+@pytest.mark.parametrize("case", SLIDING_FIXTURES)
+def test_the_rpp_and_prp_error_tables_carry_their_sliding_rows(case):
+    expected = {"scotch_yoke": {"VA4A3", "VA4A1", "aA4A3^r", "aA4A1^r"},
+                "tangent_mechanism_prp": {"VA4A3", "VBB4", "VBB1", "aA4A3^r", "aBB4^r", "aBB1^r"}}[case]
+    for plan in analysed(case).plans:
+        construction = {row.quantity: row for row in plan.errors if row.source == "construction"}
+        assert expected <= set(construction), sorted(construction)
+        for quantity in expected:
+            assert abs(construction[quantity].percent) < 1e-6, construction[quantity]
 
 
 @pytest.mark.parametrize("case", list(CASES))

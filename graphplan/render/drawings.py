@@ -6,10 +6,11 @@ import math
 
 import numpy as np
 
-from ..analysis import Analysis, instant
+from ..analysis import Analysis, PlanPosition, instant
 from ..locale import strings
 from ..plans import Plan, acceleration_plan, velocity_plan
 from ..scales import fit_scale, format_scale
+from . import forces as force_layout
 from . import plans, positions
 from .svg import to_svg
 
@@ -28,15 +29,19 @@ def length_scale(analysis: Analysis) -> float:
 
 
 def positions_svg(analysis: Analysis) -> str:
+    return to_svg(positions.layout(positions_plan(analysis)))
+
+
+def positions_plan(analysis: Analysis) -> positions.PositionsPlan:
+    """What the plan of positions shows, titled in the scene's language."""
     text = strings(analysis.scene.locale)
     scale = length_scale(analysis)
-    plan = positions.PositionsPlan(
+    return positions.PositionsPlan(
         mechanism=analysis.mechanism, positions=analysis.motion,
         numbers=tuple(int(n) for n in analysis.positions.numbers),
         emphasised=analysis.emphasised,
-        paths=analysis.paths, length_scale=scale, title=analysis.scene.title,
-        caption=f"{text['positions_title']}, {text['length_scale'].format(value=format_scale(scale))}")
-    return to_svg(positions.layout(plan))
+        paths=analysis.paths, length_scale=scale, title=text["positions_title"],
+        caption=text["length_scale"].format(value=format_scale(scale)))
 
 
 def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, acceleration: Plan | None = None) -> str:
@@ -60,13 +65,14 @@ def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
             velocity = velocity_plan(mechanism, where, directions)
         if acceleration is None:
             acceleration = acceleration_plan(mechanism, where, directions, velocity)
+    # Every word on a sheet is the locale's: the scene's title, written in any language, stays off it.
     text = strings(analysis.scene.locale)
     scale = length_scale(analysis)
     number = int(analysis.positions.numbers[index])
     return plans.PlanSheet(
         mechanism=mechanism, motion=analysis.motion, index=index, number=number,
         velocity=velocity, acceleration=acceleration, length_scale=scale,
-        title=text["plan_sheet_title"].format(title=analysis.scene.title, number=number),
+        title=text["plan_sheet_title"].format(number=number),
         mechanism_caption=(text["mechanism_title"].format(number=number),
                            text["length_scale"].format(value=format_scale(scale))),
         velocity_caption=(text["velocity_plan_title"],
@@ -85,3 +91,26 @@ def plan_scale_text(value: float) -> str:
     decimals = max(5, 3 - math.floor(math.log10(abs(value)))) if value else 5
     text = f"{value:.{decimals}f}".rstrip("0").rstrip(".")
     return text or "0"
+
+
+def forces_svg(analysis: Analysis, plan_position: PlanPosition) -> str:
+    """The SVG text of the force sheet of one plan position (:func:`force_sheet`)."""
+    return to_svg(force_layout.layout(force_sheet(analysis, plan_position)))
+
+
+def force_sheet(analysis: Analysis, plan_position: PlanPosition) -> force_layout.ForceSheet:
+    """What the force sheet of a plan position shows: its groups cut free, their polygons, the lever.
+
+    Raises :class:`ValueError` for a position without a force analysis
+    (``plan_position.forces`` is None).
+    """
+    if plan_position.forces is None:
+        raise ValueError(f"position {plan_position.number} has no force analysis")
+    text = strings(analysis.scene.locale)
+    velocity = plan_position.velocity
+    return force_layout.ForceSheet(
+        mechanism=analysis.mechanism, motion=analysis.motion, index=plan_position.index,
+        number=plan_position.number, positions=plan_position.positions, forces=plan_position.forces,
+        lever=plan_position.lever, velocity=velocity, length_scale=length_scale(analysis),
+        title=text["force_sheet_title"].format(title=analysis.scene.title, number=plan_position.number),
+        text=text, velocity_scale=text["velocity_scale"].format(value=plan_scale_text(velocity.scale)))

@@ -1,24 +1,35 @@
-"""Placing labels where they cover nothing: the first free spot around each anchor.
+"""Placing labels where they cover nothing: the cheapest spot around each anchor.
 
-A label is tried at eight spots around its point, nearest first in the
-preferred direction; a spot is free when the label's box meets no obstacle
-(the drawn lines, the boxes of labels already placed).  Shapely does the
-intersection tests.
+A label is tried at sixteen spots on each of a few rings around its point,
+nearest first in the preferred direction; a spot costs for what the label's
+box would cover (the drawn lines, the boxes of labels already placed) and
+for standing nearer another point than its own.  Where nothing beside the
+point is free the label is set apart on a thin leader line.  Shapely does
+the intersection tests.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 from shapely.geometry import LineString, Point, box
 from shapely.geometry import Polygon as ShapelyPolygon
 from shapely.geometry.base import BaseGeometry
+from shapely.ops import nearest_points
 from shapely.strtree import STRtree
 
-from .primitives import CHARACTER_WIDTH, Arrow, Circle, Polyline, Primitive, Text, text_extent
-
+from .primitives import (
+    Arrow,
+    Circle,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    text_extent,
+    text_width,
+)
 
 # The least space between two labels (mm).
 LABEL_SPACING = 0.8
@@ -44,7 +55,10 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     """The shapes of drawn primitives that a label must not cover."""
     shapes: list[BaseGeometry] = []
     for item in items:
-        if isinstance(item, Polyline) and len(item.points) >= 2:
+        if isinstance(item, Polyline) and item.closed and item.fill and len(item.points) >= 3:
+            # A filled shape (a slider block, a pivot's triangle) hides what is written inside it.
+            shapes.append(ShapelyPolygon(item.points))
+        elif isinstance(item, Polyline) and len(item.points) >= 2:
             shapes.append(LineString(item.points + ((item.points[0],) if item.closed else ())))
         elif isinstance(item, Arrow):
             shapes.append(LineString((item.start, item.end)))
@@ -56,47 +70,126 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     return shapes
 
 
-def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2) -> list[Text]:
-    """Texts for ``anchors``, each at the cheapest spot around its point.
+@dataclass(frozen=True)
+class Placement:
+    """Placed labels: a text for each anchor, in the anchors' order, and the leader lines of those set apart."""
 
-    Another label is never covered when any spot avoids it.  A spot costs
-    for every drawn shape it covers (a point, an arrowhead or a text three
-    times a line), for every other labelled point it stands about as near
-    to as to its own, and for its distance from the point, so that a letter
-    crosses one thin line rather than wander off to where it could name a
-    neighbour.  Ties go to the preferred direction.
+    texts: tuple[Text, ...]
+    leaders: tuple[Polyline, ...] = ()
+
+
+# What a spot costs: each drawn line it covers, HEAVY times as much for a point, an arrowhead or a
+# text; each other labelled point it stands about as near to as to its own; each ring farther out.
+COVER = 10.0
+HEAVY = 3.0
+# A thin leader crossing a drawn line hides less than a letter on it.
+LEADER_CROSSING = 4.0
+MISLEADING = 8.0
+RING = 2.5
+# A label set well apart costs this much more, so that it goes there only when no nearer spot is clear.
+SET_APART = 12.0
+# Anchors with more neighbours within CROWD letter heights of them are lettered first.
+CROWD = 4.0
+LEADER_WIDTH = 0.18
+# The rings of spots around a point, beyond the gap, in letter heights: beside it; near it, led to it
+# by a leader line; and set apart, led to it.
+BESIDE_SHARES = (0.0, 0.5)
+LED_SHARES = (1.1, 1.8)
+APART_SHARES = (3.2, 4.8)
+# A leader starts this far from its point (mm), clear of the point's dot.
+LEADER_CLEARANCE = 0.9
+
+
+def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2) -> Placement:
+    """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
+
+    Another label or leader is never covered when any spot avoids it.  A
+    spot costs for every drawn shape it covers (a point, an arrowhead or a
+    text three times a line), for every other labelled point it stands
+    about as near to as to its own, and for its distance from the point.
+    Beyond the spots beside the point a thin leader line joins the label to
+    its point, as a draughtsman letters a crowded corner of a plan: a clear
+    spot a little way off is then taken before a letter is written over a
+    line, and one set well apart only when nothing nearer is clear.  The
+    most crowded points are lettered first, while there is still room
+    around them; ties go to the preferred direction.
     """
-    placed: list[Text] = []
     fixed = list(obstacles)
     heavy = [shape.geom_type in ("Polygon", "MultiPolygon") for shape in fixed]
     tree = STRtree(fixed) if fixed else None
-    placed_boxes: list[BaseGeometry] = []
     points = [Point(anchor.at) for anchor in anchors]
-    for index, anchor in enumerate(anchors):
-        best, best_cost = None, math.inf
+    placed_boxes: list[BaseGeometry] = []
+    leader_lines: list[BaseGeometry] = []
+    texts: dict[int, Text] = {}
+    leaders: list[Polyline] = []
+
+    def covered(shape: BaseGeometry) -> int:
+        if tree is None:
+            return 0
+        return sum(HEAVY if heavy[i] else 1 for i in tree.query(shape) if fixed[i].intersects(shape))
+
+    for index in _most_crowded_first(anchors, points):
+        anchor = anchors[index]
         neighbours = [p for k, p in enumerate(points) if k != index and p.distance(points[index]) > 1e-9]
+        best, best_cost, best_leader = None, math.inf, None
         for ring, order, candidate in _candidates(anchor, gap):
             shape = text_box(candidate)
-            hits = sum(3 if heavy[i] else 1 for i in tree.query(shape) if fixed[i].intersects(shape)) \
-                if tree is not None else 0
             overlaps = sum(1 for b in placed_boxes if b.intersects(shape))
+            overlaps += sum(1 for line in leader_lines if line.intersects(shape))
             # A label nearer another labelled point than its own would name the wrong one.
             own = shape.distance(points[index])
             misleading = sum(1 for p in neighbours if shape.distance(p) < own + 0.8)
-            cost = 1000 * overlaps + 5 * hits + 8 * misleading + 3.5 * ring + order * 0.01
+            cost = 1000 * overlaps + COVER * covered(shape) + RING * ring + order * 0.01
+            leader = None
+            if ring < len(BESIDE_SHARES):
+                cost += MISLEADING * misleading
+            else:
+                leader = _leader(anchor.at, shape)
+                crossings = sum(1 for b in placed_boxes if b.intersects(leader))
+                crossings += sum(1 for line in leader_lines if line.intersects(leader))
+                # The leader says which point the label names: standing near a neighbour misleads less.
+                cost += 1000 * crossings + LEADER_CROSSING * covered(leader) + MISLEADING / 2 * misleading
+                if ring >= len(BESIDE_SHARES) + len(LED_SHARES):
+                    cost += SET_APART
             if cost < best_cost:
-                best, best_cost = candidate, cost
+                best, best_cost, best_leader = candidate, cost, leader
         assert best is not None
-        placed.append(best)
+        texts[index] = best
         # Kept apart by a little more than touching, so that two letters never read as one (s5g).
         placed_boxes.append(text_box(best).buffer(LABEL_SPACING, join_style=2))
-    return placed
+        if best_leader is not None:
+            leader_lines.append(best_leader)
+            leaders.append(Polyline(tuple(best_leader.coords), Stroke(LEADER_WIDTH, anchor.colour)))
+    return Placement(tuple(texts[k] for k in range(len(anchors))), tuple(leaders))
+
+
+def _most_crowded_first(anchors: Sequence[Anchor], points: Sequence[Point]) -> list[int]:
+    """The anchors' indices, those with the most neighbours near them first (stable otherwise)."""
+    def neighbours(index: int) -> int:
+        reach = CROWD * anchors[index].size
+        return sum(1 for k, p in enumerate(points) if k != index and p.distance(points[index]) < reach)
+
+    return sorted(range(len(anchors)), key=lambda index: -neighbours(index))
+
+
+def _leader(at: tuple[float, float], shape: BaseGeometry) -> LineString:
+    """The leader line from just outside the point ``at`` to the nearest edge of the label's box."""
+    _, near = nearest_points(Point(at), shape)
+    dx, dy = near.x - at[0], near.y - at[1]
+    length = math.hypot(dx, dy)
+    start = (at[0] + dx / length * LEADER_CLEARANCE, at[1] + dy / length * LEADER_CLEARANCE)
+    return LineString((start, (near.x - dx / length * 0.3, near.y - dy / length * 0.3)))
 
 
 def _candidates(anchor: Anchor, gap: float):
-    """(ring, order, text) at sixteen directions on four rings, the preferred direction first on each ring."""
-    width = CHARACTER_WIDTH * anchor.size * len(anchor.text)
-    for ring, radius in enumerate((gap, gap + 0.6 * anchor.size, gap + 1.4 * anchor.size, gap + 2.5 * anchor.size)):
+    """(ring, order, text) at sixteen directions on each ring, the preferred direction first.
+
+    The rings of :data:`BESIDE_SHARES` stand beside the point; a label on
+    those of :data:`LED_SHARES` and :data:`APART_SHARES` gets a leader line.
+    """
+    width = text_width(anchor.text, anchor.size)
+    radii = [gap + share * anchor.size for share in (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)]
+    for ring, radius in enumerate(radii):
         for order, k in enumerate((0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8)):
             direction = anchor.prefer + k * math.pi / 8
             dx, dy = math.cos(direction), math.sin(direction)

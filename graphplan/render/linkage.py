@@ -9,7 +9,8 @@ they compute no mechanics.
 
 from __future__ import annotations
 
-from typing import Callable
+import math
+from collections.abc import Callable
 
 import numpy as np
 from shapely.geometry import MultiPoint
@@ -17,7 +18,17 @@ from shapely.geometry import MultiPoint
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
-from .primitives import MAIN, THIN, Polyline, Primitive, Stroke, frame_pivot, hatching, pin, slider_block
+from .primitives import (
+    MAIN,
+    THIN,
+    Polyline,
+    Primitive,
+    Stroke,
+    frame_pivot,
+    hatching,
+    pin,
+    slider_block,
+)
 
 Paper = Callable[[complex], tuple[float, float]]
 
@@ -45,26 +56,82 @@ def outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]
 
 def links_at(motion: Motion, index: int, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
              bold: bool) -> list[Primitive]:
-    """The links of ``motion`` at position ``index``: hulls, slider blocks and, when ``bold``, the moving pins."""
+    """The links of ``motion`` at position ``index``: outlines, slots, slider blocks and, when ``bold``, the pins.
+
+    A link is drawn as the hull of the points fixed on it; a slot or slide
+    it carries is drawn as a line of its own along the slide, from where it
+    leaves the link to past the slider's block, so that a Scotch yoke shows
+    its slot and its rod rather than a triangle.  Pins are drawn where two
+    moving links are jointed.
+    """
+    mechanism = motion.mechanism
     items: list[Primitive] = []
-    frame_points = set(motion.mechanism.scene.frame_points)
-    named = {spec.name for spec in motion.mechanism.scene.points}
-    for names in outlines.values():
-        points = [paper(complex(at(motion.points[name].r, index))) for name in names]
-        if len(points) < 2:
-            continue
-        hull = MultiPoint(points).convex_hull
-        if hull.geom_type == "Polygon":
-            items.append(Polyline(tuple(hull.exterior.coords)[:-1], stroke, closed=True))
-        elif hull.geom_type == "LineString":
-            items.append(Polyline(tuple(hull.coords), stroke))
+
+    def where(name: str) -> complex:
+        return complex(at(motion.points[name].r, index))
+
+    for link, names in outlines.items():
+        fixed = [name for name in names if name in mechanism.fixed_on.get(link, ())]
+        corners = [where(name) for name in fixed]
+        for slide in motion.slides:
+            if slide.guide != link or not fixed:
+                continue
+            u, joint = complex(at(slide.u, index)), where(slide.joint)
+            off_line = [abs(((r - joint) * u.conjugate()).imag) for r in corners]
+            # Where the slide leaves the link: the foot on the slide line of the link's point nearest to it.
+            nearest = corners[off_line.index(min(off_line))]
+            foot = joint + ((nearest - joint) * u.conjugate()).real * u
+            corners.append(foot)
+            # A lever's slot ends at its pivot; a yoke's slot runs across the link, past its middle.
+            across = max(off_line) > 1e-9  # m: a point of the link stands off the slide line
+            items.append(_slot(paper(foot), paper(joint), u, stroke, across))
+        outline = _outline([paper(r) for r in corners], stroke)
+        if outline is not None:
+            items.append(outline)
     for slide in motion.slides:
-        items.append(slider_block(paper(complex(at(motion.points[slide.joint].r, index))),
-                                  float(np.angle(complex(at(slide.u, index)))), stroke=MAIN if bold else stroke))
+        items.append(slider_block(paper(where(slide.joint)), float(np.angle(complex(at(slide.u, index)))),
+                                  stroke=MAIN if bold else stroke))
     if bold:
-        joints = {n for names in outlines.values() for n in names} - frame_points - named
-        items.extend(pin(paper(complex(at(motion.points[name].r, index)))) for name in sorted(joints))
+        items.extend(pin(paper(where(name))) for name in joints(mechanism))
     return items
+
+
+def _outline(corners: list[tuple[float, float]], stroke: Stroke) -> Polyline | None:
+    """The hull of a link's points: a closed outline, or the segment between the farthest two when they lie in a line."""
+    if len(corners) < 2:
+        return None
+    far = max(((a, b) for i, a in enumerate(corners) for b in corners[i + 1:]), key=lambda ab: math.dist(*ab))
+    hull = MultiPoint(corners).convex_hull
+    # Points in a line up to rounding (a foot computed on the link's own line) make a sliver, not a plate.
+    if hull.geom_type == "Polygon" and hull.area > 1e-6 * math.dist(*far) ** 2:
+        return Polyline(tuple(hull.exterior.coords)[:-1], stroke, closed=True)
+    return Polyline(far, stroke) if math.dist(*far) > 0 else None
+
+
+# How far a slot runs past the middle of its slider block (mm): half the block and a little more.
+SLOT_REACH_MM = 8.0
+
+
+def _slot(foot: tuple[float, float], joint: tuple[float, float], u: complex, stroke: Stroke,
+          across: bool) -> Polyline:
+    """The slide line of a link from ``foot`` to ``joint`` (paper mm), run on past the joint by :data:`SLOT_REACH_MM`,
+    and as far past the foot when the slot runs ``across`` the link."""
+    dx, dy = joint[0] - foot[0], joint[1] - foot[1]
+    length = math.hypot(dx, dy)
+    ex, ey = (dx / length, dy / length) if length > 1e-9 else (u.real, u.imag)
+    back = SLOT_REACH_MM if across or length <= 1e-9 else 0.0
+    return Polyline(((foot[0] - back * ex, foot[1] - back * ey),
+                     (joint[0] + SLOT_REACH_MM * ex, joint[1] + SLOT_REACH_MM * ey)), stroke)
+
+
+def joints(mechanism: Mechanism) -> list[str]:
+    """The moving revolute joints: points fixed on two moving links at once (a crank pin, a rod's end)."""
+    frame = set(mechanism.scene.frame_points)
+    count: dict[str, int] = {}
+    for link in mechanism.moving_links:
+        for name in mechanism.fixed_on.get(link, ()):
+            count[name] = count.get(name, 0) + 1
+    return sorted(name for name, links in count.items() if links >= 2 and name not in frame)
 
 
 def frame_guide(start: complex, end: complex, u: complex, length_scale: float, paper: Paper) -> list[Primitive]:

@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 from shapely.geometry import MultiPoint
 from shapely.geometry import Point as ShapelyPoint
@@ -26,11 +26,22 @@ from shapely.ops import unary_union
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
-from ..plans import Plan
+from ..plans import PLAN_FIELD_MM, Plan
 from .labels import Anchor, obstacles_of, open_direction, place_labels
 from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
-from .primitives import (Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds_of, curved_arrow, dot_marker,
-                         moved_layers)
+from .primitives import (
+    Arrow,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds_of,
+    curved_arrow,
+    dot_marker,
+    moved_layers,
+    text_extent,
+)
 
 # A vector shorter than this on the paper (mm) is not drawn, and plan points closer than this share
 # one label: half the usual drafting precision, below what a pencil resolves.
@@ -89,29 +100,63 @@ class PlanSheet:
     acceleration_pole: str = "π"
 
 
+# Room around a plan's points in its field, for the run-on of its lines of action and its letters (mm).
+FIELD_MARGIN_MM = RUN_ON_MM + 3.0
+
+
+def plan_field_mm() -> float:
+    """The width of a plan's field when the plan fits the field its scale was chosen for."""
+    return PLAN_FIELD_MM + 2 * FIELD_MARGIN_MM
+
+
+@dataclass(frozen=True)
+class Arrangement:
+    """The sheet laid out: its layers, and the field (xmin, ymin, xmax, ymax, mm) each drawing stands in."""
+
+    layers: list[Layer]
+    fields: dict[str, tuple[float, float, float, float]]
+
+
 def layout(sheet: PlanSheet) -> list[Layer]:
     """The layers of the plan sheet, in paper millimetres (y up), the three drawings left to right."""
-    panels = [
-        (_mechanism(sheet), sheet.mechanism_caption, "mechanism"),
-        (_plan(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism), sheet.velocity_caption, "velocity"),
-        (_plan(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
-         sheet.acceleration_caption, "acceleration"),
-    ]
+    return arrange(sheet).layers
+
+
+def arrange(sheet: PlanSheet) -> Arrangement:
+    """The three drawings in fields side by side, their captions on one line under the fields, the title above.
+
+    Each plan gets a field as wide as the field its scale is chosen for
+    (:data:`~graphplan.plans.PLAN_FIELD_MM`) with room for its letters and
+    run-on lines, or wider when the scene's scale makes the plan wider; the
+    fields are as tall as the tallest drawing and each drawing stands in
+    the middle of its own, so that the drawings are evenly spaced and their
+    captions read as one line.
+    """
+    panels = {
+        "mechanism": _mechanism(sheet),
+        "velocity": _plan(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism),
+        "acceleration": _plan(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
+    }
+    captions = {"mechanism": sheet.mechanism_caption, "velocity": sheet.velocity_caption,
+                "acceleration": sheet.acceleration_caption}
+    extents = {name: bounds_of(item for layer in drawing for item in layer.items) for name, drawing in panels.items()}
+    least = {name: 0.0 if name == "mechanism" else plan_field_mm() for name in panels}
+    height = max(y1 - y0 for _, y0, _, y1 in extents.values())
     layers: list[Layer] = []
+    fields: dict[str, tuple[float, float, float, float]] = {}
     cursor = 0.0
-    for drawing, caption, name in panels:
-        xmin, ymin, xmax, ymax = bounds_of(item for layer in drawing for item in layer.items)
-        middle = (xmin + xmax) / 2
-        lines = tuple(Text((middle, ymin - CAPTION_GAP_MM - k * 1.6 * CAPTION_SIZE), text, CAPTION_SIZE, "middle",
-                           weight="bold" if k == 0 else "normal") for k, text in enumerate(caption))
-        panel = [*drawing, Layer(f"{name}-caption", lines)]
-        left, _, right, _ = bounds_of(item for layer in panel for item in layer.items)
-        # Drawings side by side, their middles on one level.
-        layers.extend(moved_layers(panel, cursor - left, -(ymin + ymax) / 2))
-        cursor += right - left + GAP_MM
-    _, _, _, top = bounds_of(item for layer in layers for item in layer.items)
-    layers.append(Layer("sheet-title", (Text((0.0, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
-    return layers
+    for name, drawing in panels.items():
+        x0, y0, x1, y1 = extents[name]
+        caption_width = max(_width(text) for text in _caption(captions[name], (0.0, 0.0)))
+        width = max(x1 - x0, least[name], caption_width)
+        fields[name] = (cursor, -height / 2, cursor + width, height / 2)
+        layers.extend(moved_layers(drawing, cursor + (width - (x1 - x0)) / 2 - x0, -(y0 + y1) / 2))
+        cursor += width + GAP_MM
+    for name, (x0, y0, x1, _) in fields.items():
+        layers.append(Layer(f"{name}-caption", _caption(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
+    left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
+    layers.append(Layer("sheet-title", (Text((left, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
+    return Arrangement(layers, fields)
 
 
 # The mechanism in the position.
@@ -143,7 +188,7 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
     marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
     marks += [dot_marker(paper(r)) for name, r in mechanism.scene.frame_points.items() if name not in pivots]
-    senses, turn_anchors = _senses(sheet, outlines, where, paper)
+    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame)
     drawn = links + frame + marks + senses
     # Points fixed on a link only: an RPR lever's point under the block would just repeat a label.
     names = [name for name in motion.points if any(name in on for on in mechanism.fixed_on.values())]
@@ -152,11 +197,11 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     labels = place_labels(anchors + turn_anchors, obstacles_of(drawn))
     return [Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
             Layer("mechanism-senses", tuple(senses)), Layer("mechanism-points", tuple(marks)),
-            Layer("mechanism-labels", tuple(labels))]
+            Layer("mechanism-leaders", labels.leaders), Layer("mechanism-labels", labels.texts)]
 
 
 def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[str], complex],
-            paper: Paper) -> tuple[list[Primitive], list[Anchor]]:
+            paper: Paper, frame: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
     """Short arrows along the velocities of the joints; curved arrows of ω and ε on each turning link.
 
     The senses are read off the plans: a point's velocity is along its
@@ -167,8 +212,10 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
     named = {spec.name for spec in sheet.mechanism.scene.points}
     centres = {spec.centre for spec in sheet.mechanism.scene.links.values()} & named
     items: list[Primitive] = []
+    # A lever's point under a block (A4) stands where the block's pin is: its arrow would cross the pin's.
+    on_links = {name for names in sheet.mechanism.fixed_on.values() for name in names}
     for name, letter in velocity.images.items():
-        if letter == "p" or name in centres or name not in sheet.motion.points or abs(velocity.mm(letter)) < ZERO_MM:
+        if letter == "p" or name in centres or name not in on_links or abs(velocity.mm(letter)) < ZERO_MM:
             continue
         sense = velocity.points[letter] / abs(velocity.points[letter])
         # From the rim of the pin, so that the pin does not hide the start.
@@ -181,8 +228,9 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
         names = outlines.get(link, [])
         if len(names) < 2:
             continue
-        others = unary_union([points] + [_outline(MultiPoint([paper(where(n)) for n in other]))
-                                         for number, other in outlines.items() if number != link and len(other) > 1])
+        others = unary_union([points, *obstacles_of(frame)] + [
+            _outline(MultiPoint([paper(where(n)) for n in other]))
+            for number, other in outlines.items() if number != link and len(other) > 1])
         first, second = max(((a, b) for i, a in enumerate(names) for b in names[i + 1:]),
                             key=lambda ab: abs(where(ab[0]) - where(ab[1])))
         start_mm, end_mm = paper(where(first)), paper(where(second))
@@ -231,7 +279,8 @@ def _plan(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list[Layer]
         anchors.append(Anchor(at, text, LETTER_SIZE, open_direction(at, actions + figures + vectors)))
     labels = place_labels(anchors, obstacles_of(drawn))
     return [Layer(f"{kind}-lines", tuple(actions + figures)), Layer(f"{kind}-vectors", tuple(vectors)),
-            Layer(f"{kind}-points", tuple(dots)), Layer(f"{kind}-labels", tuple(labels))]
+            Layer(f"{kind}-points", tuple(dots)), Layer(f"{kind}-leaders", labels.leaders),
+            Layer(f"{kind}-labels", labels.texts)]
 
 
 def _vectors(plan: Plan, kind: str) -> list[Primitive]:
@@ -327,6 +376,17 @@ def _off_line(point: complex, through: complex, unit: complex) -> float:
     return ((point - through) * unit.conjugate()).imag
 
 
+def _caption(lines: tuple[str, ...], at: tuple[float, float]) -> tuple[Text, ...]:
+    """A drawing's caption centred under ``at``: its name in bold, then its scale."""
+    return tuple(Text((at[0], at[1] - k * 1.6 * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
+                      weight="bold" if k == 0 else "normal") for k, line in enumerate(lines))
+
+
+def _width(text: Text) -> float:
+    x0, _, x1, _ = text_extent(text)
+    return x1 - x0
+
+
 def _xy(value: complex) -> tuple[float, float]:
     return (value.real, value.imag)
 
@@ -336,4 +396,4 @@ def _key(*parts: str) -> str:
     return "-".join(re.sub(r"[^A-Za-z0-9_]", "_", part) for part in parts)
 
 
-__all__ = ["PlanSheet", "ZERO_MM", "layout"]
+__all__ = ["ZERO_MM", "PlanSheet", "layout"]

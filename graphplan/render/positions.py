@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
 import numpy as np
 
 from ..kinematics import at
@@ -18,7 +19,16 @@ from ..mechanism import Mechanism
 from ..motion import Motion
 from .labels import Anchor, obstacles_of, place_labels
 from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
-from .primitives import BOLD, Layer, Polyline, Primitive, Stroke, Text, bounds, dot_marker
+from .primitives import (
+    BOLD,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds,
+    dot_marker,
+)
 
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
 _PATH_STROKE = Stroke(0.25, "#1f5fa8", (2.0, 1.2))
@@ -58,7 +68,8 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     drawn = every + bold + frame + paths
     labels = place_labels(_position_anchors(plan, paper) + _point_anchors(plan, paper), obstacles_of(drawn))
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
-              Layer("frame", tuple(frame)), Layer("labels", tuple(labels) + tuple(_centre_marks(plan, paper)))]
+              Layer("frame", tuple(frame)), Layer("leaders", labels.leaders),
+              Layer("labels", labels.texts + tuple(_centre_marks(plan, paper)))]
     xmin, _, _, ymax = bounds(layers)
     layers.append(Layer("caption", (Text((xmin, ymax + 12.0), plan.title, 5.0, "start", weight="bold"),
                                     Text((xmin, ymax + 5.0), plan.caption, 3.5, "start"))))

@@ -11,8 +11,9 @@ in one place.
 from __future__ import annotations
 
 import math
+import unicodedata
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Iterable, Sequence
 
 Point = tuple[float, float]
 
@@ -191,16 +192,37 @@ def dot_marker(at: Point, radius: float = 0.6, colour: str = "black") -> Circle:
     return Circle(at, radius, Stroke(0.1, colour), colour)
 
 
-# Width of a character as a fraction of the cap height (DejaVu Sans, mixed text): generous, so
-# that a box estimated from it holds the text as rendered.
-CHARACTER_WIDTH = 0.75
+# Font size over cap height (DejaVu Sans and Noto Sans CJK both have caps about 0.72 em high).
+FONT_SIZE_PER_CAP = 1.0 / 0.72
+# Advance widths in em of DejaVu Sans, by the few classes that matter for a box that must hold the
+# text as rendered: narrow punctuation and letters, wide letters, and the rest by case.
+_NARROW = frozenset(" ,.:;'!|ijlfrtIJ()/-′‘’")
+_WIDE = frozenset("mwMWжшщюЖШЩЮЫ=+ω")
+_BOLD_WIDENING = 1.1
+
+
+def character_width(character: str) -> float:
+    """The advance width of ``character`` in em: a CJK ideograph fills its em square."""
+    if unicodedata.east_asian_width(character) in ("W", "F"):
+        return 1.0
+    if character in _NARROW:
+        return 0.36
+    if character in _WIDE:
+        return 0.95
+    return 0.64 if character.islower() or character.isdigit() else 0.76
+
+
+def text_width(text: str, size: float, weight: str = "normal") -> float:
+    """How wide ``text`` is drawn at cap height ``size`` (mm), generously, so that its box holds it."""
+    widening = _BOLD_WIDENING if weight == "bold" else 1.0
+    return widening * size * FONT_SIZE_PER_CAP * sum(character_width(c) for c in text)
 
 
 def text_extent(text: Text) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of a text as rendered: its width estimated, descenders and accents included."""
-    width = CHARACTER_WIDTH * text.size * len(text.text)
+    width = text_width(text.text, text.size, text.weight)
     x0 = text.at[0] + {"start": 0.0, "middle": -width / 2, "end": -width}[text.anchor]
-    return (x0, text.at[1] - 0.25 * text.size, x0 + width, text.at[1] + 1.1 * text.size)
+    return (x0, text.at[1] - 0.3 * text.size, x0 + width, text.at[1] + 1.15 * text.size)
 
 
 def bounds(layers: Sequence[Layer]) -> tuple[float, float, float, float]:

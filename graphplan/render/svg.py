@@ -8,15 +8,33 @@ the same bytes every time.
 
 from __future__ import annotations
 
-from typing import Sequence
+import unicodedata
+from collections.abc import Sequence
 
 import svgwrite
 
-from .primitives import Arrow, Circle, Layer, Polyline, Stroke, Text, bounds
+from .primitives import (
+    FONT_SIZE_PER_CAP,
+    Arrow,
+    Circle,
+    Layer,
+    Polyline,
+    Stroke,
+    Text,
+    bounds,
+)
 
+# Latin, Greek and Cyrillic from DejaVu Sans; a viewer that falls back glyph by glyph takes
+# Chinese from Noto Sans CJK.
 FONT_FAMILY = "DejaVu Sans, Noto Sans CJK SC, Noto Sans CJK JP, Noto Sans, sans-serif"
-# Cap height is about 0.72 of the font size in DejaVu Sans.
-_CAP_TO_FONT_SIZE = 1.0 / 0.72
+# A text with Chinese in it names the CJK font first: some renderers (cairosvg) take only the first
+# family of the list, and Noto Sans CJK has the Latin letters and digits such a text mixes in.
+CJK_FONT_FAMILY = "Noto Sans CJK SC, Noto Sans CJK JP, DejaVu Sans, Noto Sans, sans-serif"
+
+
+def font_family(text: str) -> str:
+    """The font-family list for ``text``: CJK first when it has a character of East Asian width."""
+    return CJK_FONT_FAMILY if any(unicodedata.east_asian_width(c) in ("W", "F") for c in text) else FONT_FAMILY
 
 
 def _n(value: float) -> str:
@@ -71,7 +89,7 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
             elif isinstance(item, Text):
                 x, y = xy(item.at)
                 element = document.text(item.text, insert=(x, y))
-                element.update({"font-size": _n(item.size * _CAP_TO_FONT_SIZE), "font-family": FONT_FAMILY,
+                element.update({"font-size": _n(item.size * FONT_SIZE_PER_CAP), "font-family": font_family(item.text),
                                 "text-anchor": item.anchor, "fill": item.colour})
                 if item.weight != "normal":
                     element.update({"font-weight": item.weight})
