@@ -1,0 +1,829 @@
+"""The force sheet of one position: each group cut free with its loads, its force polygon, and Zhukovsky's lever.
+
+Laid out as the second sheet of a course project.  For every group in the
+order it was solved (the last group first, the driver last) a row: on the
+left the group's links cut free at μl, every force an arrow at its point
+(proportional at the panel's own force scale, never shorter than
+:data:`LEAST_ARROW_MM`), every moment a curved arrow with its sense, the
+arms ``h`` of the moment equations as thin perpendiculars from the moment
+centre to the forces' lines; on the right the group's force polygon at μF,
+the known vectors head to tail, the two closing lines of action thin and
+dashed beyond their crossing, the closing vectors, the inner reaction
+dashed and each reaction found drawn whole.  A polygon that the record
+closes twice (the lever and the block of an RPR group) is drawn as two
+polygons side by side.  The last row is Zhukovsky's lever: the velocity
+plan turned 90° clockwise, the loads at the images of their points with
+their arms from the pole, the balancing force at the driver's image.
+
+The layout reads the records (:class:`graphplan.forces.ForcePlan`,
+:class:`graphplan.lever.Lever`, the velocity plan, the positions): it puts
+what they hold on paper and computes no mechanics.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+from shapely.geometry import LineString, MultiPoint
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry.base import BaseGeometry
+from shapely.ops import unary_union
+
+from ..forces import ForcePlan, GroupForces, MomentEquation, PolygonVector
+from ..geometry import Line
+from ..kinematics import at
+from ..lever import Lever, turned
+from ..mechanism import Mechanism
+from ..motion import Motion
+from ..plans import Plan
+from ..scales import format_scale, standard_scale
+from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
+from .linkage import outline_points
+from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM
+from .plans import _coincident as coincident_letters
+from .primitives import (
+    MAIN,
+    Arrow,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds_of,
+    curved_arrow,
+    dot_marker,
+    moved_layers,
+    pin,
+    slider_block,
+    text_extent,
+)
+
+# The longest force arrow on a group cut free and on the lever (mm): the panel's force scale is the
+# standard one that draws the largest force about a quarter of the drawing's size, within these bounds.
+LONGEST_ARROW_MM = (25.0, 50.0)
+ARROW_SHARE = 0.25
+# No force arrow on a group or on the lever is drawn shorter than this (mm), so that its head and
+# its direction read; the caption says so.
+LEAST_ARROW_MM = 10.0
+# A force less than this share of the largest beside it is a rounding error and is not drawn.
+NEGLIGIBLE = 1e-9
+# Radii of the curved arrows of moments on the links (mm).
+MOMENT_RADIUS_MM = 6.0
+BALANCING_RADIUS_MM = 9.0
+# Space between two polygons of one group (mm).
+POLYGON_GAP_MM = 15.0
+# How many values a caption line lists before it wraps.
+PER_LINE = 4
+# Size of the letters of points and of the names of forces (cap height, mm).
+POINT_SIZE = 3.5
+NAME_SIZE = 3.2
+CAPTION_LINE = 1.6
+
+_LINK = Stroke(0.7)
+_LOAD = Stroke(0.45)
+_REACTION = Stroke(0.5, "#a83a1f")
+_BALANCING = Stroke(0.6, "#1f7a3a")
+_KNOWN = Stroke(0.5)
+_CLOSING = Stroke(0.55, "#a83a1f")
+_INNER = Stroke(0.45, "#a83a1f", (3.0, 1.5))
+_WHOLE = Stroke(0.35, "#1f5fa8")
+_ACTION = Stroke(0.25, "#333333")
+_ACTION_RUN_ON = Stroke(0.25, "#333333", (2.5, 1.5))
+_ARM = Stroke(0.2, "#555555")
+_ARM_RUN_ON = Stroke(0.2, "#555555", (1.5, 1.0))
+_AXIS = Stroke(0.2, "#333333", (6.0, 1.5, 1.0, 1.5))
+_LEVER = Stroke(0.6)
+_RAY = Stroke(0.25, "#555555")
+_MOMENT = Stroke(0.4)
+
+
+@dataclass(frozen=True)
+class ForceSheet:
+    """What the force sheet of one position shows.
+
+    ``positions`` are the mechanism's points at the instant (m) and ``index``
+    the position's index in ``motion`` (whose slides give the directions of
+    the sliding pairs there); ``forces`` and ``lever`` the records of the
+    force analysis; ``velocity`` the velocity plan the lever is turned from;
+    ``length_scale`` is μl (m/mm); ``text`` the locale's strings;
+    ``velocity_scale`` the line of μV as the plan sheet writes it.
+    """
+
+    mechanism: Mechanism
+    motion: Motion
+    index: int
+    number: int
+    positions: Mapping[str, complex]
+    forces: ForcePlan
+    lever: Lever | None
+    velocity: Plan
+    length_scale: float
+    title: str
+    text: Mapping[str, str]
+    velocity_scale: str
+
+
+@dataclass(frozen=True)
+class Panel:
+    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption."""
+
+    name: str
+    layers: list[Layer]
+    caption: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Arrangement:
+    """The sheet laid out: its layers and the field (xmin, ymin, xmax, ymax, mm) of each panel."""
+
+    layers: list[Layer]
+    fields: dict[str, tuple[float, float, float, float]]
+
+
+def layout(sheet: ForceSheet) -> list[Layer]:
+    """The layers of the force sheet, in paper millimetres (y up)."""
+    return arrange(sheet).layers
+
+
+def arrange(sheet: ForceSheet) -> Arrangement:
+    """One row per group (the group cut free, its polygon), then the lever; captions under, title above."""
+    rows: list[list[Panel]] = []
+    for group in sheet.forces.groups:
+        rows.append([_body(sheet, group), _polygons(sheet, group)])
+    if sheet.lever is not None:
+        rows.append([_lever(sheet, sheet.lever)])
+    layers: list[Layer] = []
+    fields: dict[str, tuple[float, float, float, float]] = {}
+    top = 0.0
+    for row in rows:
+        extents = [bounds_of(item for layer in panel.layers for item in layer.items) for panel in row]
+        height = max(y1 - y0 for _, y0, _, y1 in extents)
+        captions = max(len(panel.caption) for panel in row)
+        cursor = 0.0
+        for panel, (x0, y0, x1, y1) in zip(row, extents, strict=True):
+            width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in panel.caption))
+            field = (cursor, top - height, cursor + width, top)
+            fields[panel.name] = field
+            layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0,
+                                       top - height / 2 - (y0 + y1) / 2))
+            middle = cursor + width / 2
+            layers.append(Layer(f"{panel.name}-caption", tuple(
+                Text((middle, top - height - CAPTION_GAP_MM - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE,
+                     "middle", weight="bold" if k == 0 else "normal")
+                for k, line in enumerate(panel.caption))))
+            cursor += width + GAP_MM
+        top -= height + CAPTION_GAP_MM + captions * CAPTION_LINE * CAPTION_SIZE + GAP_MM
+    left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
+    text = sheet.text
+    scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
+                        text["force_scale"].format(value=format_scale(sheet.forces.scale)),
+                        sheet.velocity_scale))
+    layers.append(Layer("sheet-title", (
+        Text((left, upper + 8.0 + 1.6 * TITLE_SIZE), sheet.title, TITLE_SIZE, "start", weight="bold"),
+        Text((left, upper + 8.0), scales, CAPTION_SIZE, "start"))))
+    return Arrangement(layers, fields)
+
+
+# A group cut free.
+
+@dataclass(frozen=True)
+class _Force:
+    """A force drawn on a group cut free: its name, its point (m), its value (N), its style."""
+
+    name: str
+    point: complex
+    force: complex
+    stroke: Stroke
+
+
+def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
+    """The group's links at μl with every force at its point, the moments, the arms of the moment equations."""
+    text = sheet.text
+    key = group_id(group.label)
+    paper = _paper(sheet.length_scale)
+    is_driver = group is sheet.forces.groups[-1]
+    links = _links(sheet, group, paper)
+    forces = _forces_on(sheet, group)
+    scale = _arrow_scale([force.force for force in forces], links)
+    arrows: list[Primitive] = []
+    drawn: dict[str, tuple[complex, complex, complex]] = {}  # name → (arrow start, arrow end, unit), mm
+    anchors: list[Anchor] = []
+    bars = unary_union([LineString(item.points) for item in links
+                        if isinstance(item, Polyline) and len(item.points) > 1]).buffer(1.0)
+    for force in forces:
+        if _negligible(force.force, [other.force for other in forces]):
+            continue
+        length = abs(force.force) / scale
+        unit = force.force / abs(force.force)
+        start, end = _beside(_c(paper(force.point)), max(length, LEAST_ARROW_MM) * unit, bars)
+        start, end = _unstacked(start, end, _c(paper(force.point)), arrows)
+        arrows.append(Arrow(_xy(start), _xy(end), force.stroke, 3.0, svg_id("body", key, force.name)))
+        drawn[force.name] = (start, end, unit)
+        # Named at the arrow's free end: its head, or its tail when it points onto its joint.
+        point = _c(paper(force.point))
+        free, outward = (end, unit) if abs(end - point) >= abs(start - point) else (start, -unit)
+        anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour))
+    turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
+    arms, arm_anchors, equations = _arms(sheet, group, drawn, paper)
+    figure = links + arrows + turning + arms
+    for name in _named_points(sheet, group):
+        where = paper(sheet.positions[name])
+        anchors.append(Anchor(where, name, POINT_SIZE, open_direction(where, figure)))
+    labels = _lettered(anchors + turning_anchors + arm_anchors, figure)
+    caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
+               ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
+                          text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}")))]
+    caption += equations
+    if is_driver:
+        caption.append(_balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
+    caption += _wrapped([f"{found.name} = {_number(abs(found.force))} {text['newton']}" for found in group.found
+                         if abs(found.force) / sheet.forces.scale >= ZERO_MM])
+    return Panel(f"body-{key}", [
+        Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
+        Layer(f"body-{key}-moments", tuple(turning)), Layer(f"body-{key}-forces", tuple(arrows)),
+        Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)], tuple(caption))
+
+
+def _beside(point: complex, vector: complex, bars: BaseGeometry) -> tuple[complex, complex]:
+    """The arrow of a force at ``point``: from it, or onto it where that keeps it off the links' bars.
+
+    A reaction pushing along a link (R23n) drawn from its joint would lie on
+    the link; drawn onto the joint it stands clear, as the textbooks draw it.
+    """
+    def covered(start: complex, end: complex) -> float:
+        return LineString((_xy(start), _xy(end))).intersection(bars).length
+
+    away, onto = (point, point + vector), (point - vector, point)
+    return onto if covered(*onto) < covered(*away) - 0.5 else away
+
+
+def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Primitive]) -> tuple[complex, complex]:
+    """The arrow moved on along its own line, away from its point, until it covers no arrow drawn before.
+
+    Two forces at one point in one direction (a weight and a load on a
+    slider) would be drawn one over the other; moved along its line of
+    action, the second stands beyond the first and keeps its line.
+    """
+    unit = (end - start) / abs(end - start)
+    away = unit if abs(start - point) <= abs(end - point) else -unit
+
+    def along(item: Arrow) -> bool:  # an arrow crossing this one hides nothing of it
+        other = (_c(item.end) - _c(item.start)) / max(item.length, 1e-12)
+        return abs((unit.conjugate() * other).imag) < math.sin(math.radians(10.0))
+
+    others = [LineString((item.start, item.end)).buffer(0.8) for item in arrows
+              if isinstance(item, Arrow) and item.length > 0 and along(item)]
+    for _ in range(8):
+        overlap = max((LineString((_xy(start), _xy(end))).intersection(other).length for other in others), default=0.0)
+        if overlap < 1.0:
+            break
+        start, end = start + (overlap + 1.5) * away, end + (overlap + 1.5) * away
+    return start, end
+
+
+def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]) -> list[Primitive]:
+    """The group's links alone: their outlines, slider blocks with the axes of their slides, pins, centres."""
+    mechanism, positions = sheet.mechanism, sheet.positions
+    outlines = outline_points(mechanism, sheet.motion)
+    items: list[Primitive] = []
+    for link in group.links:
+        points = [paper(positions[name]) for name in outlines.get(link, ())]
+        hull = MultiPoint(points).convex_hull if len(points) > 1 else None
+        if hull is not None and hull.geom_type == "Polygon":
+            items.append(Polyline(tuple(hull.exterior.coords)[:-1], _LINK, closed=True))
+        elif hull is not None and hull.geom_type == "LineString":
+            items.append(Polyline(tuple(hull.coords), _LINK))
+    for slide in sheet.motion.slides:
+        if slide.slider not in group.links:
+            continue
+        u = complex(at(slide.u, sheet.index))
+        centre = _c(paper(positions[slide.joint]))
+        if slide.guide not in group.links:  # the slide's axis, where the guide itself is cut away
+            items.append(Polyline((_xy(centre - 14.0 * u), _xy(centre + 14.0 * u)), _AXIS))
+        items.append(slider_block(_xy(centre), math.atan2(u.imag, u.real), stroke=MAIN))
+    joints = {name for name, first, second in mechanism.revolutes if first in group.links or second in group.links}
+    items.extend(pin(paper(positions[name])) for name in sorted(joints))
+    named = {spec.name for spec in mechanism.scene.points} - joints
+    for link in group.links:
+        for name in sorted(mechanism.fixed_on.get(link, ())):
+            if name in named:
+                items.append(dot_marker(paper(positions[name])))
+    return items
+
+
+def _named_points(sheet: ForceSheet, group: GroupForces) -> list[str]:
+    """The points of the group's links lettered on the drawing, and the points its loads act at."""
+    names = {name for link in group.links for name in sheet.mechanism.fixed_on.get(link, ())}
+    names |= {load.point for load in group.loads if load.point is not None}
+    return sorted(name for name in names if name in sheet.positions)
+
+
+def _forces_on(sheet: ForceSheet, group: GroupForces) -> list[_Force]:
+    """Every force on the group cut free: its loads, the reactions found on it, a slider driver's Fb.
+
+    A reaction is split as the group's polygon splits it (R23τ, R23n);
+    reactions between the group's own links are inner and not drawn here.
+    """
+    forces = [_Force(load.name, _load_point(sheet, load.point), load.force, _LOAD)
+              for load in group.loads if load.is_force and load.force != 0]
+    polygon = {vector.name: vector for vector in group.polygon.vectors if vector.role != "inner"}
+    for found in group.found:
+        if found.source in group.links:
+            continue
+        point = _along_slide(sheet, found.joint, found.source, found.target, found.offset)
+        parts = [polygon[name] for name in (f"{found.name}τ", f"{found.name}n") if name in polygon]
+        if parts:
+            forces.extend(_Force(part.name, point, part.force, _REACTION) for part in parts)
+        else:
+            forces.append(_Force(found.name, point, found.force, _REACTION))
+    if "Fb" in polygon:
+        forces.append(_Force("Fb", sheet.positions[sheet.mechanism.driver.joint], polygon["Fb"].force, _BALANCING))
+    return forces
+
+
+def _load_point(sheet: ForceSheet, point: str | None) -> complex:
+    """Where a load acts: a named point, or a reaction handed back off its joint (``B(R14)``)."""
+    assert point is not None
+    if point in sheet.positions:
+        return sheet.positions[point]
+    shifted = re.fullmatch(r"(.+)\((.+)\)", point)
+    if shifted is None or shifted.group(2) not in sheet.forces.reactions:
+        raise KeyError(f"no position for the point {point!r} of a load")
+    found = sheet.forces.reactions[shifted.group(2)]
+    return _along_slide(sheet, found.joint, found.source, found.target, found.offset)
+
+
+def _along_slide(sheet: ForceSheet, joint: str, guide: int, slider: int, offset: float | None) -> complex:
+    """The joint, moved ``offset`` along its slide when the reaction acts off it (a normal force's shift)."""
+    where = sheet.positions[joint]
+    if not offset:
+        return where
+    for slide in sheet.motion.slides:
+        if slide.joint == joint and {slide.guide, slide.slider} == {guide, slider}:
+            return where + offset * complex(at(slide.u, sheet.index))
+    return where
+
+
+def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
+             drawn: Sequence[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
+    """A curved arrow for every moment on the group, with its sense; the driver's balancing moment.
+
+    Each arc leaves open the quarter where the point it turns about is
+    lettered (the widest gap between the lines ``drawn`` from it).
+    """
+    items: list[Primitive] = []
+    anchors: list[Anchor] = []
+    largest = max((abs(load.moment) for load in group.loads), default=0.0)
+    rings: dict[int, int] = {}
+    for load in group.loads:
+        if load.is_force or abs(load.moment) <= 1e-9 * max(largest, 1.0):
+            continue
+        ring = rings.get(load.link, 0)
+        rings[load.link] = ring + 1
+        centre = _c(paper(_link_centre(sheet, load.link)))
+        items_, anchor = _turn(centre, MOMENT_RADIUS_MM + 3.5 * ring, load.moment, load.name, _MOMENT,
+                               open_direction(_xy(centre), drawn))
+        items += items_
+        anchors.append(anchor)
+    driver = sheet.mechanism.driver
+    if is_driver and driver.kind == "crank" and sheet.forces.balancing != 0:
+        centre = _c(paper(sheet.positions[driver.pivot]))
+        items_, anchor = _turn(centre, BALANCING_RADIUS_MM, sheet.forces.balancing, "Mb",
+                               Stroke(0.5, _BALANCING.colour), open_direction(_xy(centre), drawn))
+        items += items_
+        anchors.append(anchor)
+    return items, anchors
+
+
+def _turn(centre: complex, radius: float, moment: float, name: str, stroke: Stroke,
+          gap: float) -> tuple[list[Primitive], Anchor]:
+    """A curved arrow of 270° about ``centre`` in the sense of ``moment`` (ccw positive), open towards ``gap``.
+
+    Its name stands outside the middle of the arc, across from the gap.
+    """
+    sweep = math.copysign(math.radians(270.0), moment)
+    start = gap + math.copysign(math.radians(45.0), moment)
+    items = curved_arrow(_xy(centre), radius, start, sweep, stroke, 2.5)
+    middle = start + sweep / 2
+    at = centre + radius * complex(math.cos(middle), math.sin(middle))
+    return items, Anchor(_xy(at), name, NAME_SIZE, middle, stroke.colour)
+
+
+def _link_centre(sheet: ForceSheet, link: int) -> complex:
+    """Where a moment on the link is drawn: its centre of mass, or the middle of its points."""
+    spec = sheet.mechanism.scene.links.get(link)
+    if spec is not None and spec.centre in sheet.positions:
+        return sheet.positions[spec.centre]
+    names = [name for name in sheet.mechanism.fixed_on.get(link, ()) if name in sheet.positions]
+    return sum((sheet.positions[name] for name in names), 0j) / max(len(names), 1)
+
+
+def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[complex, complex, complex]],
+          paper) -> tuple[list[Primitive], list[Anchor], list[str]]:
+    """The arm of every term of the group's moment equations, h1, h2, …, and the equations written with them.
+
+    An arm is the perpendicular from the moment centre to the force's line;
+    the line runs on, dashed, from the arrow to the foot when the foot lies
+    off the arrow.  A force whose line passes through the centre has no arm
+    and no term.
+    """
+    items: list[Primitive] = []
+    anchors: list[Anchor] = []
+    lines: list[str] = []
+    count = 0
+    for equation in group.moments:
+        centre = _c(paper(sheet.positions[equation.about]))
+        parts: list[str] = []
+        for term in equation.terms:
+            if term.name in drawn:
+                if term.arm / sheet.length_scale < ZERO_MM:
+                    continue
+                start, end, unit = drawn[term.name]
+                count += 1
+                name = f"h{count}"
+                items += _perpendicular(centre, start, end, unit)
+                foot = _foot(centre, start, unit)
+                anchors.append(Anchor(_xy((centre + foot) / 2), name, NAME_SIZE - 0.4,
+                                      _angle(1j * (foot - centre)), _ARM.colour))
+                parts.append(f"{_sign(term.moment)} {term.name}·{name}")
+            elif term.moment != 0.0:
+                # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.
+                couple = any(load.name == term.name and not load.is_force for load in group.loads)
+                parts.append(f"{_sign(term.moment)} {term.name if couple else f'M({term.name})'}")
+        line = _equation(sheet, group, equation, parts)
+        if line:
+            lines.append(line)
+    return items, anchors, lines
+
+
+def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, parts: list[str]) -> str:
+    """The moment equation as the note writes it: ``ΣMB(3): R23τ·AB − G3·h1 + Fu3·h2 + Mu3 = 0,  R23τ = 26.13 N``.
+
+    The unknown's arm is named by its segment (its joint and the centre);
+    where the unknown is a couple (the balancing moment, the shift ``x`` of a
+    normal reaction along its slide), the couple stands alone.  An equation
+    with nothing in it (a load through the joint) is left out.
+    """
+    text = sheet.text
+    unknown, about = equation.unknown, f"ΣM{equation.about}({equation.link}):"
+    terms = " ".join(parts)
+    total = sum(term.moment for term in equation.terms)
+    if unknown.endswith("·x"):
+        if equation.value == 0 and total == 0:
+            return ""
+        found = sheet.forces.reactions.get(unknown[:-2])
+        shift = ""
+        if found is not None and found.offset and abs(found.force) / sheet.forces.scale >= ZERO_MM:
+            shift = f",  x = {_number(1000.0 * found.offset)} {text['millimetre']}"
+        return f"{about} {unknown} {terms} = 0{shift}"
+    if unknown == "Mb":
+        return f"{about} Mb {terms} = 0,  Mb = {_number(equation.value)} {text['newton_metre']}"
+    # The unknown's sense as first assumed: its moment balances the others'.
+    sign = "" if equation.value == 0 or -total / equation.value >= 0 else "−"
+    joint = next((found.joint for found in group.found
+                  if unknown.rstrip("τn") in (f"R{found.source}{found.target}", f"R{found.target}{found.source}")),
+                 None)
+    arm = "h" if joint is None or joint == equation.about else "".join(sorted((joint, equation.about)))
+    return f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {_number(equation.value)} {text['newton']}"
+
+
+def _perpendicular(centre: complex, start: complex, end: complex, unit: complex) -> list[Primitive]:
+    """The arm from ``centre`` to the line of the arrow ``start``→``end``, and the line run on to its foot."""
+    foot = _foot(centre, start, unit)
+    items: list[Primitive] = [Polyline((_xy(centre), _xy(foot)), _ARM)]
+    along = ((foot - start) * unit.conjugate()).real
+    length = abs(end - start)
+    if along < -ZERO_MM:
+        items.append(Polyline((_xy(start), _xy(foot)), _ARM_RUN_ON))
+    elif along > length + ZERO_MM:
+        items.append(Polyline((_xy(end), _xy(foot)), _ARM_RUN_ON))
+    return items
+
+
+def _foot(centre: complex, through: complex, unit: complex) -> complex:
+    """The foot of the perpendicular from ``centre`` to the line through ``through`` along ``unit``."""
+    return through + ((centre - through) * unit.conjugate()).real * unit
+
+
+# The force polygon of a group.
+
+def _polygons(sheet: ForceSheet, group: GroupForces) -> Panel:
+    """The group's polygon at μF; a record closed twice gives two polygons side by side."""
+    text = sheet.text
+    key = group_id(group.label)
+    scale = sheet.forces.scale
+    layers: list[Layer] = []
+    cursor = 0.0
+    chains = _chains(group.polygon.vectors, scale)
+    for number, chain in enumerate(chains):
+        drawing = _polygon(chain, [line for line in group.polygon.lines
+                                   if any(v.name == line.label for v in chain)], scale,
+                           f"polygon-{key}" + (f"-{number + 1}" if len(chains) > 1 else ""),
+                           _wholes(group, chain, scale))
+        x0, _, x1, _ = bounds_of(item for layer in drawing for item in layer.items)
+        layers.extend(moved_layers(drawing, cursor - x0, 0.0))
+        cursor += x1 - x0 + POLYGON_GAP_MM
+    caption = (text["force_polygon_title"], *_split_equation(group.polygon.equation),
+               text["force_scale"].format(value=format_scale(scale)))
+    return Panel(f"polygon-{key}", layers, caption)
+
+
+def _chains(vectors: Sequence[PolygonVector], scale: float) -> list[list[PolygonVector]]:
+    """The polygon's vectors as closed chains: a chain ends where it returns to its start.
+
+    An inner vector goes with the chain whose vertices it joins.
+    """
+    chains: list[list[PolygonVector]] = []
+    current: list[PolygonVector] = []
+    for vector in vectors:
+        if vector.role == "inner":
+            continue
+        current.append(vector)
+        if abs(vector.end - current[0].start) / scale < 0.01 and len(current) > 1:
+            chains.append(current)
+            current = []
+    if current:
+        chains.append(current)
+    for vector in vectors:
+        if vector.role == "inner":
+            vertices = [{v.start for v in chain} | {v.end for v in chain} for chain in chains]
+            home = next((k for k, corner in enumerate(vertices)
+                         if any(abs(vector.start - c) / scale < 0.01 for c in corner)
+                         and any(abs(vector.end - c) / scale < 0.01 for c in corner)), 0)
+            chains[home].append(vector)
+    return chains or [[]]
+
+
+def _wholes(group: GroupForces, chain: Sequence[PolygonVector], scale: float) -> list[PolygonVector]:
+    """Each reaction the polygon gives in two components (R23τ, R23n) drawn whole: R23 = R23τ + R23n.
+
+    Where one component is too short to draw, the whole is the other one
+    and is not drawn over it (the caption gives its value).
+    """
+    by_name = {vector.name: vector for vector in chain if vector.role != "inner"}
+    wholes = []
+    for found in group.found:
+        tangent, normal = by_name.get(f"{found.name}τ"), by_name.get(f"{found.name}n")
+        if tangent is None or normal is None or min(abs(tangent.force), abs(normal.force)) / scale < ZERO_MM:
+            continue
+        if normal.end == tangent.start:
+            wholes.append(PolygonVector(found.name, normal.start, tangent.end, "whole"))
+        elif tangent.end == normal.start:
+            wholes.append(PolygonVector(found.name, tangent.start, normal.end, "whole"))
+    return wholes
+
+
+def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float, name: str,
+             wholes: Sequence[PolygonVector]) -> list[Layer]:
+    """One closed polygon: its lines of action, its vectors as arrows, each named beside its middle."""
+    def mm(value: complex) -> complex:
+        return value / scale
+
+    actions: list[Primitive] = []
+    closing = {vector.name: vector for vector in chain if vector.role == "closing"}
+    for line in lines:
+        through = mm(line.through)
+        unit = line.unit
+        # The crossing is the far end of the closing vector the line carries.
+        vector = closing.get(line.label)
+        ends = [mm(vector.start), mm(vector.end)] if vector is not None else []
+        crossing = max(ends, key=lambda end: abs(end - through), default=None)
+        if crossing is not None and abs(crossing - through) < ZERO_MM:
+            crossing = None
+        if crossing is None:
+            actions.append(Polyline((_xy(through - RUN_ON_MM * unit), _xy(through + RUN_ON_MM * unit)), _ACTION_RUN_ON))
+            continue
+        onward = (crossing - through) / abs(crossing - through)
+        actions.append(Polyline((_xy(through), _xy(crossing)), _ACTION))
+        actions.append(Polyline((_xy(crossing), _xy(crossing + RUN_ON_MM * onward)), _ACTION_RUN_ON))
+    styles = {"load": _KNOWN, "closing": _CLOSING, "inner": _INNER, "whole": _WHOLE}
+    arrows: list[Primitive] = []
+    named: list[tuple[PolygonVector, Arrow]] = []
+    for vector in [*chain, *wholes]:
+        if abs(mm(vector.force)) < ZERO_MM:
+            continue
+        arrow = Arrow(_xy(mm(vector.start)), _xy(mm(vector.end)), styles[vector.role], 3.0,
+                      svg_id(name, vector.name))
+        arrows.append(arrow)
+        named.append((vector, arrow))
+    dots = [dot_marker(_xy(mm(chain[0].start)), 0.6)] if chain else []
+    figure = actions + arrows + dots
+    middle = sum((mm(v.start) for v in chain), 0j) / max(len(chain), 1)
+    anchors = []
+    for vector, arrow in named:
+        centre = (_c(arrow.start) + _c(arrow.end)) / 2
+        across = 1j * (_c(arrow.end) - _c(arrow.start))
+        if ((centre - middle) * across.conjugate()).real < 0:
+            across = -across
+        anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, _angle(across), arrow.stroke.colour))
+    labels = _lettered(anchors, figure)
+    return [Layer(f"{name}-lines", tuple(actions)), Layer(f"{name}-vectors", tuple(arrows + dots)),
+            Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)]
+
+
+def _split_equation(equation: str) -> tuple[str, ...]:
+    """An equation of two polygons (``…= 0;  …= 0``) as two caption lines."""
+    return tuple(part.strip() for part in equation.split(";") if part.strip())
+
+
+# Zhukovsky's lever.
+
+def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
+    """The velocity plan turned 90° clockwise about the pole p, the loads at the images of their points."""
+    text = sheet.text
+    velocity = sheet.velocity
+
+    def mm(letter: str) -> complex:
+        return turned(velocity.points[letter]) / velocity.scale
+
+    # The rays from the pole thin, each link's figure (its points' hull) as a bar of the lever.
+    frame: list[Primitive] = []
+    for letter in sorted(set(velocity.images.values())):
+        if letter != "p" and abs(mm(letter)) >= ZERO_MM:
+            frame.append(Polyline(((0.0, 0.0), _xy(mm(letter))), _RAY))
+    for link in sorted(velocity.members):
+        if link == sheet.mechanism.scene.frame_link:
+            continue
+        letters = sorted({letter for _, letter in velocity.members[link]})
+        hull = MultiPoint([_xy(mm(letter)) for letter in letters]).convex_hull
+        if hull.geom_type == "Polygon" and hull.area > ZERO_MM ** 2:
+            frame.append(Polyline(tuple(hull.exterior.coords)[:-1], _LEVER, closed=True))
+        elif hull.geom_type == "LineString" and hull.length >= ZERO_MM:
+            frame.append(Polyline(tuple(hull.coords), _LEVER))
+    named = [(term.name, term.image, term.force, _LOAD) for term in lever.terms if term.image and term.force != 0]
+    named.append(("Fb", lever.balancing_image, lever.balancing_force, _BALANCING))
+    scale = _arrow_scale([force for _, _, force, _ in named], frame)
+    arrows: list[Primitive] = []
+    anchors: list[Anchor] = []
+    arm_layers: list[Layer] = []
+    arm_anchors: list[Anchor] = []
+    parts: list[str] = []
+    count = 0
+    moments = {term.name: term.moment for term in lever.terms}
+    for name, image, force, stroke in named:
+        if _negligible(force, [other for _, _, other, _ in named]):
+            continue
+        length = abs(force) / scale
+        unit = force / abs(force)
+        start, end = _unstacked(mm(image), mm(image) + max(length, LEAST_ARROW_MM) * unit, mm(image), arrows)
+        arrows.append(Arrow(_xy(start), _xy(end), stroke, 3.0, svg_id("lever", name)))
+        anchors.append(Anchor(_xy(end), name, NAME_SIZE, _angle(unit), stroke.colour))
+        foot = _foot(0j, start, unit)
+        if abs(foot) < ZERO_MM:
+            continue
+        count += 1
+        arm = "hb" if name == "Fb" else f"h{count}"
+        arm_layers.append(Layer(svg_id("lever-arm", name), tuple(_perpendicular(0j, start, end, unit))))
+        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
+        if name != "Fb":
+            parts.append(f"{_sign(moments[name])} {name}·{arm}")
+    parts += [f"{_sign(term.moment)} {term.name}·ω" for term in lever.terms if not term.image and term.moment != 0]
+    groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
+    dots = [dot_marker(_xy(mm(group[0])), 0.7 if group[0] == "p" else 0.5) for group in groups]
+    figure = frame + arrows + dots + [item for layer in arm_layers for item in layer.items]
+    for group in groups:
+        where = _xy(mm(group[0]))
+        anchors.append(Anchor(where, ", ".join(group), POINT_SIZE, open_direction(where, frame + arrows)))
+    labels = _lettered(anchors + arm_anchors, figure)
+    parts.append(f"{_sign(-sum(moments.values()))} Fb·hb")
+    equation = _leading(" ".join(parts))
+    caption = [text["lever_title"],
+               ", ".join((sheet.velocity_scale,
+                          text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}"))),
+               *_wrapped_terms(f"ΣMp: {equation} = 0"),
+               _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
+               _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
+               text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
+    return Panel("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
+                           Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
+                           Layer("lever-labels", labels.texts)], tuple(caption))
+
+
+def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placement:
+    """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot.
+
+    A label covering another one's anchor (the tail of a moment's arc)
+    would leave that one no room beside it, so the anchors count as points.
+    """
+    spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
+    return place_labels(anchors, obstacles_of(figure) + spots)
+
+
+def _negligible(force: complex, forces: Sequence[complex]) -> bool:
+    """Whether a force is nought beside the others (a rounding error): it is not drawn.
+
+    A small force that is there (a link's weight beside the inertia loads)
+    is drawn, at least :data:`LEAST_ARROW_MM` long.
+    """
+    return abs(force) <= NEGLIGIBLE * max((abs(other) for other in forces), default=0.0)
+
+
+def _arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> float:
+    """The standard force scale (N/mm) that draws the largest of ``forces`` about a quarter of the figure's size."""
+    largest = max((abs(force) for force in forces), default=0.0)
+    x0, y0, x1, y1 = bounds_of(figure)
+    longest = min(max(ARROW_SHARE * max(x1 - x0, y1 - y0), LONGEST_ARROW_MM[0]), LONGEST_ARROW_MM[1])
+    return standard_scale(largest / longest) if largest > 0 else 1.0
+
+
+# Text.
+
+def _balancing_line(sheet: ForceSheet, value: float, how: str) -> str:
+    text = sheet.text
+    if sheet.mechanism.driver.kind == "crank":
+        return text[how].format(what=text["balancing_moment"], name="Mb", value=_number(value),
+                                unit=text["newton_metre"])
+    return text[how].format(what=text["balancing_force"], name="Fb", value=_number(value), unit=text["newton"])
+
+
+def _wrapped(items: Sequence[str]) -> list[str]:
+    """Values listed ``PER_LINE`` to a caption line."""
+    return [",  ".join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
+
+
+def _wrapped_terms(equation: str, width: int = 70) -> list[str]:
+    """A long equation broken before a sign, each line at most about ``width`` characters."""
+    lines: list[str] = []
+    current = ""
+    for word in re.split(r" (?=[+−] )", equation):
+        if current and len(current) + len(word) + 1 > width:
+            lines.append(current)
+            current = "   " + word
+        else:
+            current = f"{current} {word}" if current else word
+    if current:
+        lines.append(current)
+    return lines
+
+
+def _number(value: float, digits: int = 4) -> str:
+    """A value with ``digits`` significant digits, no exponent, a true minus sign."""
+    value = float(value)
+    if value == 0 or not math.isfinite(value):
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    text = f"{value:.{decimals}f}"
+    return text.replace("-", "−") if text.strip("-0.") else "0"
+
+
+def _percent(value: float) -> str:
+    """A percentage to two decimals, a true minus sign, no minus on a nought."""
+    text = f"{value:.2f}"
+    return "0.00" if text in ("-0.00", "0.00") else text.replace("-", "−")
+
+
+def _leading(terms: str) -> str:
+    """A sum of terms without the sign of a leading plus, and a leading minus set close: ``−Fu3·h1 + …``."""
+    if terms.startswith("+ "):
+        return terms[2:]
+    return "−" + terms[2:] if terms.startswith("− ") else terms
+
+
+def _sign(value: float) -> str:
+    return "−" if value < 0 else "+"
+
+
+# Paper.
+
+def _paper(length_scale: float) -> Callable[[complex], tuple[float, float]]:
+    def paper(r: complex) -> tuple[float, float]:
+        return (r.real / length_scale, r.imag / length_scale)
+
+    return paper
+
+
+def _width(text: Text) -> float:
+    x0, _, x1, _ = text_extent(text)
+    return x1 - x0
+
+
+def _c(point: tuple[float, float]) -> complex:
+    return complex(point[0], point[1])
+
+
+def _xy(value: complex) -> tuple[float, float]:
+    return (value.real, value.imag)
+
+
+def _angle(value: complex) -> float:
+    return math.atan2(value.imag, value.real)
+
+
+_SPELLED = {"τ": "tau", "′": "-1", "″": "-2", "·": "-", "(": "-", ")": "", ",": "-"}
+
+
+def svg_id(*parts: str) -> str:
+    """An svg id from the names of forces: ``polygon-II-3-4-R23tau``."""
+    return "-".join("".join(_SPELLED.get(c, c if re.fullmatch(r"[A-Za-z0-9_.\-]", c) else "_") for c in part)
+                    for part in parts)
+
+
+def group_id(label: str) -> str:
+    """The svg id of a group: ``II(3,4)`` → ``II-3-4``."""
+    return svg_id(label).strip("-")
+
+
+__all__ = ["Arrangement", "ForceSheet", "Panel", "arrange", "group_id", "layout", "svg_id"]

@@ -1,0 +1,238 @@
+"""The force sheet of one position, tested on its primitives: polygons, labels, the lever's arms.
+
+The sheet is laid out from the force records (graphplan.forces, graphplan.lever); these tests read
+the layers the layout returns, find the polygon vectors by their keys (``polygon-II-3-4-R23tau``)
+and compare them with the records over μF, check that each polygon closes on the paper, that every
+reaction is named, that no two texts overlap, that a Russian scene says everything in Russian, that
+the lever's arms as drawn give the lever's moments, and that the command line writes the sheets.
+"""
+
+import dataclasses
+import itertools
+import math
+import re
+
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.render import forces as force_layout
+from graphplan.render.drawings import force_sheet, forces_svg
+from graphplan.render.labels import text_box
+from graphplan.render.plans import ZERO_MM
+from graphplan.render.primitives import Arrow, Polyline, Text
+
+FIXTURES = "fixtures"
+SCENES = ["ratchet_crank_rocker", "engine_slider_crank", "quick_return_slotted_lever", "shaper_six_bar",
+          "tangent_mechanism_prp", "scotch_yoke", "slider_driven", "stephenson_six_bar"]
+# Within this on the paper (mm) two drawn points are one.
+CLOSE_MM = 0.01
+
+_analyses = {}
+
+
+def analysis_of(name):
+    if name not in _analyses:
+        _analyses[name] = analyse(graphplan.load(f"{FIXTURES}/{name}.toml"))
+    return _analyses[name]
+
+
+CASES = [(name, k) for name in SCENES for k in (0, 1)]
+
+
+@pytest.fixture(params=CASES, ids=[f"{name}-{k}" for name, k in CASES])
+def case(request):
+    """(analysis, plan position, layers by name) of a scene's first or second plan position."""
+    name, k = request.param
+    analysis = analysis_of(name)
+    position = [p for p in analysis.plans if p.forces is not None][k]
+    layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position))}
+    return analysis, position, layers
+
+
+def polygon_layers(layers, group):
+    """(layer prefix, arrows) of each polygon of ``group`` on the sheet: one, or two for a polygon closed twice."""
+    pattern = re.compile(rf"polygon-{re.escape(force_layout.group_id(group.label))}(-\d)?-vectors")
+    return [(name[:-len("-vectors")], [item for item in items if isinstance(item, Arrow)])
+            for name, items in layers.items() if pattern.fullmatch(name)]
+
+
+def keyed_vectors(prefix, group):
+    return {force_layout.svg_id(prefix, vector.name): vector for vector in group.polygon.vectors}
+
+
+def test_every_polygon_closes_on_the_paper(case):
+    """Known and closing vectors head to tail, and the last ends where the first starts."""
+    _, position, layers = case
+    scale = position.forces.scale
+    for group in position.forces.groups:
+        drawn = polygon_layers(layers, group)
+        assert drawn, f"no polygon drawn for {group.label}"
+        for prefix, arrows in drawn:
+            vectors = keyed_vectors(prefix, group)
+            chain = [arrow for arrow in arrows if arrow.key in vectors and vectors[arrow.key].role in ("load", "closing")]
+            assert len(chain) >= 2, f"{prefix}: a polygon of fewer than two vectors"
+            # A vector too short to draw leaves a gap as long as itself, and no more.
+            drawn_names = {vectors[arrow.key].name for arrow in arrows if arrow.key in vectors}
+            gap = sum(abs(v.force) / scale for v in group.polygon.vectors
+                      if v.role in ("load", "closing") and v.name not in drawn_names)
+            for first, second in zip(chain, chain[1:] + chain[:1]):
+                assert math.dist(first.end, second.start) <= CLOSE_MM + gap, (prefix, first.key, second.key)
+
+
+def test_every_polygon_vector_is_its_force_over_the_force_scale(case):
+    """Each drawn vector is |F|/μF long and points along F; every vector long enough to draw is drawn."""
+    _, position, layers = case
+    scale = position.forces.scale
+    for group in position.forces.groups:
+        seen = set()
+        for prefix, arrows in polygon_layers(layers, group):
+            vectors = keyed_vectors(prefix, group)
+            for arrow in arrows:
+                vector = vectors.get(arrow.key)
+                if vector is None:  # a reaction drawn whole, R23 = R23τ + R23n
+                    found = next(f for f in group.found if arrow.key == force_layout.svg_id(prefix, f.name))
+                    assert arrow.length == pytest.approx(abs(found.force) / scale, abs=CLOSE_MM)
+                    assert abs(complex(*arrow.end) - complex(*arrow.start) - found.force / scale) < CLOSE_MM
+                    continue
+                seen.add(vector.name)
+                assert arrow.length == pytest.approx(abs(vector.force) / scale, abs=CLOSE_MM), arrow.key
+                drawn = complex(*arrow.end) - complex(*arrow.start)
+                assert abs(drawn - vector.force / scale) < CLOSE_MM, arrow.key
+        expected = {v.name for v in group.polygon.vectors if abs(v.force) / scale >= ZERO_MM}
+        assert seen == expected, group.label
+
+
+def test_a_vector_too_short_to_draw_is_left_out():
+    """The scotch yoke's guide reaction R14 is nought at position 4 (its line through the joint): no arrow."""
+    analysis = analysis_of("scotch_yoke")
+    position = next(p for p in analysis.plans if p.number == 4)
+    assert abs(position.forces.reactions["R14"].force) < 1e-9
+    layers = force_layout.layout(force_sheet(analysis, position))
+    keys = [item.key for layer in layers for item in layer.items if isinstance(item, Arrow)]
+    assert not any(key.endswith("-R14") for key in keys)
+    assert all(item.length >= ZERO_MM for layer in layers for item in layer.items if isinstance(item, Arrow))
+
+
+def test_every_reaction_is_named_on_the_sheet(case):
+    """Each reaction found is written with its value under its group; each drawn vector has its label."""
+    _, position, layers = case
+    captions = " ".join(item.text for name, items in layers.items() if name.endswith("-caption")
+                        for item in items)
+    for name, found in position.forces.reactions.items():
+        if abs(found.force) / position.forces.scale < ZERO_MM:
+            continue
+        listed = re.search(rf"(?<![\w]){re.escape(name)} = ([\d.]+) ", captions)
+        assert listed, f"{name} is not named on the sheet"
+        assert float(listed.group(1)) == pytest.approx(abs(found.force), rel=1e-3)
+    for group in position.forces.groups:
+        for prefix, arrows in polygon_layers(layers, group):
+            labels = [item.text for item in layers[f"{prefix}-labels"]]
+            vectors = keyed_vectors(prefix, group)
+            for arrow in arrows:
+                name = vectors[arrow.key].name if arrow.key in vectors else arrow.key.rsplit("-", 1)[1]
+                assert name in labels, f"{arrow.key} is not labelled"
+
+
+def test_no_two_texts_overlap(case):
+    _, _, layers = case
+    texts = [(name, item) for name, items in layers.items() for item in items if isinstance(item, Text)]
+    boxes = [(name, item.text, text_box(item)) for name, item in texts]
+    crossing = [(a[:2], b[:2]) for a, b in itertools.combinations(boxes, 2) if a[2].intersects(b[2])]
+    assert not crossing
+
+
+def test_a_russian_scene_has_a_russian_sheet():
+    analysis = analysis_of("ratchet_crank_rocker")
+    assert analysis.scene.locale == "ru"
+    position = analysis.plans[0]
+    layers = force_layout.layout(force_sheet(analysis, position))
+    texts = [item.text for layer in layers for item in layer.items if isinstance(item, Text)]
+    joined = "\n".join(texts)
+    for phrase in ("силовой анализ, положение 5", "Силовой анализ группы II(3,4)", "Силовой анализ начального звена",
+                   "План сил", "Рычаг Жуковского", "уравновешивающий момент Mb", "по планам сил",
+                   "по рычагу Жуковского", "расхождение", "μF = 20 Н/мм", "Н·м"):
+        assert phrase in joined, phrase
+    # Nothing in English but the scene's own title.
+    words = re.compile(r"\b(force|forces|polygon|polygons|lever|balancing|analysis|group|difference|position|"
+                       r"driving|moment|none|shorter|than|N|mm|N/mm|m/mm)\b", re.IGNORECASE)
+    for text in texts:
+        assert not words.search(text.replace(analysis.scene.title, "")), text
+
+
+def test_a_chinese_sheet_uses_its_own_strings():
+    from graphplan.locale import strings
+
+    text = strings("zh")
+    assert text["force_polygon_title"] == "力多边形" and text["lever_title"] == "儒科夫斯基杠杆"
+    assert text["group_forces_title"].format(group="II(3,4)") == "杆组 II(3,4) 的力分析"
+    assert text["balancing_moment"] == "平衡力矩"
+
+
+def test_the_lever_arms_as_drawn_give_the_lever_moments(case):
+    """|F|·h·μV of every force on the lever is its term's moment; the arm runs from the pole square to the force."""
+    _, position, layers = case
+    lever = position.lever
+    scale = position.velocity.scale
+    arrows = {item.key: item for item in layers["lever-forces"] if isinstance(item, Arrow)}
+    pole = None
+    checked = 0
+    total = sum(term.moment for term in lever.terms)
+    entries = [(term.name, term.force, term.moment) for term in lever.terms if term.image and term.force != 0]
+    entries.append(("Fb", lever.balancing_force, -total))
+    largest = max(abs(force) for _, force, _ in entries)
+    for name, force, moment in entries:
+        if abs(force) <= 1e-9 * largest:
+            continue
+        arrow = arrows[force_layout.svg_id("lever", name)]
+        layer = layers.get(force_layout.svg_id("lever-arm", name))
+        if layer is None:  # the force's line passes through the pole
+            assert abs(moment) / abs(force) / scale < ZERO_MM, name
+            continue
+        arm = layer[0]
+        assert isinstance(arm, Polyline)
+        start, foot = (complex(*p) for p in arm.points)
+        pole = start if pole is None else pole
+        assert abs(start - pole) < CLOSE_MM, "every arm starts at the pole"
+        along = (complex(*arrow.end) - complex(*arrow.start)) / arrow.length
+        assert abs(((foot - start) * along.conjugate()).real) < CLOSE_MM, f"{name}: the arm is not square"
+        assert abs(((foot - complex(*arrow.start)) * along.conjugate()).imag) < CLOSE_MM, f"{name}: foot off the line"
+        assert abs(foot - start) * scale * abs(force) == pytest.approx(abs(moment), rel=1e-6, abs=1e-9), name
+        checked += 1
+    assert checked >= 2
+
+
+def test_the_lever_and_the_polygons_agree_on_the_sheet():
+    analysis = analysis_of("engine_slider_crank")
+    position = analysis.plans[0]
+    layers = force_layout.layout(force_sheet(analysis, position))
+    texts = [item.text for layer in layers for item in layer.items if isinstance(item, Text)]
+    difference = position.lever.difference_percent(position.forces.balancing)
+    assert f"difference {abs(difference):.2f} %" in texts
+    assert any("balancing moment Mb = −191.1 N·m (force polygons)" == text for text in texts)
+
+
+def test_the_sheet_is_the_same_every_time():
+    analysis = analysis_of("slider_driven")
+    position = analysis.plans[0]
+    assert forces_svg(analysis, position) == forces_svg(analysis, position)
+
+
+def test_a_position_without_forces_has_no_sheet():
+    analysis = analysis_of("ratchet_crank_rocker")
+    position = analysis.plans[0]
+    without = dataclasses.replace(position, forces=None)
+    with pytest.raises(ValueError, match="no force analysis"):
+        force_sheet(analysis, without)
+
+
+def test_the_command_line_writes_a_force_sheet_beside_each_plan_sheet(tmp_path, capsys):
+    assert main(["run", f"{FIXTURES}/slider_driven.toml", "--out", str(tmp_path / "out")]) == 0
+    analysis = analysis_of("slider_driven")
+    for position in analysis.plans:
+        assert (tmp_path / "out" / f"plan_{position.number}.svg").exists()
+        sheet = tmp_path / "out" / f"forces_{position.number}.svg"
+        assert sheet.exists() == (position.forces is not None)
+        if position.forces is not None:
+            assert "polygon-II-3-4-vectors" in sheet.read_text(encoding="utf-8")
