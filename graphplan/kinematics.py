@@ -61,6 +61,7 @@ def unit_vectors(angles: np.ndarray) -> np.ndarray:
     """
     t = np.tan(0.5 * angles)
     t2 = t * t
+    # 1/(1 + t²), 2t and 1 − t², each made in place of its operand.
     inverse = 1.0 + t2
     np.reciprocal(inverse, out=inverse)
     t += t
@@ -84,6 +85,8 @@ def angle_of(vector: Vector) -> Scalar:
 
 def as_xy(vector: Vector, count: int) -> np.ndarray:
     """An ``(count, 2)`` float array of ``vector`` (a view when it already is an array)."""
+    if isinstance(vector, np.ndarray) and vector.shape == (count,) and vector.dtype == complex and vector.flags.c_contiguous:
+        return vector.view(np.float64).reshape(count, 2)  # the usual case, without the general path's five calls
     array = np.ascontiguousarray(np.broadcast_to(np.asarray(vector, dtype=complex), (count,)))
     return array.view(np.float64).reshape(count, 2)
 
@@ -148,7 +151,7 @@ class LinkMotion:
         omega, epsilon = self.omega, self.epsilon
         if np.ndim(omega) == 0 and np.ndim(epsilon) == 0:
             return 1j * omega, 1j * epsilon - omega * omega
-        # Part by part, ω and ε being real; −ω² is made over ω in place.
+        # Part by part, ω and ε being real: −ω² + iε from ω + iε, squared and negated in place.
         whirl = complex_from(omega, epsilon)
         whirl.real *= omega
         np.negative(whirl.real, out=whirl.real)

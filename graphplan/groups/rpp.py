@@ -28,7 +28,7 @@ import numpy as np
 from ..errors import SceneError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross, unit
+from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, unit
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step, image_name
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, read_guide
@@ -102,8 +102,8 @@ class RPP(Group):
         return GroupMotion(
             points={b_name: b},
             links={
-                link_a: LinkMotion(a_name, w, angle_of(w), guide.omega, guide.epsilon),
-                link_b: LinkMotion(b_name, u, angle_of(u), guide.omega, guide.epsilon),
+                link_a: LinkMotion(a_name, w, np.angle(w), guide.omega, guide.epsilon),
+                link_b: LinkMotion(b_name, u, np.angle(u), guide.omega, guide.epsilon),
             },
             slides=(SlideMotion(link_a, link_b, a_name, w, s_a, s_a_dot, s_a_ddot),
                     SlideMotion(link_b, guide.link, b_name, u, s_b, s_b_dot, s_b_ddot)),

@@ -24,7 +24,15 @@ import numpy as np
 from ..errors import AssemblyError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
-from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross, dot
+from ..kinematics import (
+    LinkMotion,
+    PointMotion,
+    SlideMotion,
+    TwoLines,
+    angle_of,
+    cross,
+    dot,
+)
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
 from .base import (

@@ -122,13 +122,15 @@ class RRR(Group):
         w = c.v - a.v
         omega_a, omega_b = _two_lines(w.real, w.imag, abx, aby, cbx, cby, inverse)
         whirl_a, whirl_b = omega_a * omega_a, omega_b * omega_b
-        w = c.a - a.a
+        # w = aC − aA + ωa²·AB − ωb²·CB, in parts, each summed in place
         wx = whirl_a * abx
         wx -= whirl_b * cbx
-        wx += w.real
+        wx += c.a.real
+        wx -= a.a.real
         wy = whirl_a * aby
         wy -= whirl_b * cby
-        wy += w.imag
+        wy += c.a.imag
+        wy -= a.a.imag
         epsilon_a, epsilon_b = _two_lines(wx, wy, abx, aby, cbx, cby, inverse)
         a_name, b_name, c_name = self.joints
         # Scaled by reciprocals: dividing a complex array by a real number is a complex division.
