@@ -23,7 +23,7 @@ import numpy as np
 from .forces import Load
 from .kinematics import PointMotion, Scalar, Vector, at, dot, unit
 from .mechanism import Mechanism
-from .motion import Motion
+from .motion import Motion, solve
 from .plans import Plan
 from .positions import PositionSet, in_working_stroke
 
@@ -113,8 +113,6 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
 
 def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
     """The share of the working stroke the working link has travelled at each position (0 at its start)."""
-    from .motion import solve
-
     assert positions.extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"
     ends = solve(mechanism, np.array(positions.extremes), positions.reference)
     start, end = _output_coordinate(mechanism, ends)

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
-from ..forces import ForceBoard, PolygonBuilder, Term
+from ..forces import ForceBoard, PolygonBuilder
 from ..geometry import Line
 from ..kinematics import (
     LinkMotion,
@@ -251,7 +251,7 @@ class RRP(Group):
         normal, ra_along = polygon.close(rn, 1j * u, f"{ra}n", b - a)
         vertex = polygon.start - ra_along
         r_ba = polygon.inner(inner, end_of_a, vertex)
-        shift = board.couple(lb, b_name, f"{rn}·x", extra=(Term(inner, 0.0, 0.0),))
+        shift = board.couple(lb, b_name, f"{rn}·x")
         offset = shift / cross(u, normal) if abs(normal) > 0 else 0.0
         board.hand_back(board.react(ra, a_name, pa, la, ta * across_a + ra_along))
         board.react(f"R{la}{lb}", b_name, la, lb, -r_ba)
