@@ -42,7 +42,7 @@ from ..plans import Plan
 from ..scales import format_scale, standard_scale
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
 from .linkage import outline_points
-from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM
+from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
 from .primitives import (
     MAIN,
@@ -133,14 +133,6 @@ class Panel:
     name: str
     layers: list[Layer]
     caption: tuple[str, ...]
-
-
-@dataclass(frozen=True)
-class Arrangement:
-    """The sheet laid out: its layers and the field (xmin, ymin, xmax, ymax, mm) of each panel."""
-
-    layers: list[Layer]
-    fields: dict[str, tuple[float, float, float, float]]
 
 
 def layout(sheet: ForceSheet) -> list[Layer]:
