@@ -14,10 +14,11 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+import shapely
 from shapely.geometry import LineString, Point, box
 from shapely.geometry import Polygon as ShapelyPolygon
 from shapely.geometry.base import BaseGeometry
-from shapely.ops import nearest_points
 from shapely.strtree import STRtree
 
 from .primitives import (
@@ -113,90 +114,98 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     line, and one set well apart only when nothing nearer is clear.  The
     most crowded points are lettered first, while there is still room
     around them; ties go to the preferred direction.
+
+    All spots of one anchor are costed at once by shapely's array
+    functions: a sheet has a few hundred labels and ninety-six spots each.
     """
     fixed = list(obstacles)
-    heavy = [shape.geom_type in ("Polygon", "MultiPolygon") for shape in fixed]
+    weights = np.array([HEAVY if shape.geom_type in ("Polygon", "MultiPolygon") else 1.0 for shape in fixed])
     tree = STRtree(fixed) if fixed else None
-    points = [Point(anchor.at) for anchor in anchors]
+    at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
+    points = shapely.points(at)
     placed_boxes: list[BaseGeometry] = []
     leader_lines: list[BaseGeometry] = []
     texts: dict[int, Text] = {}
     leaders: list[Polyline] = []
 
-    def covered(shape: BaseGeometry) -> int:
+    def covered(shapes: np.ndarray) -> np.ndarray:
         if tree is None:
-            return 0
-        return sum(HEAVY if heavy[i] else 1 for i in tree.query(shape) if fixed[i].intersects(shape))
+            return np.zeros(len(shapes))
+        hit, obstacle = tree.query(shapes, predicate="intersects")
+        return np.bincount(hit, weights[obstacle], minlength=len(shapes))
 
-    for index in _most_crowded_first(anchors, points):
+    def crossing(shapes: np.ndarray, others: list[BaseGeometry]) -> np.ndarray:
+        if not others:
+            return np.zeros(len(shapes), dtype=int)
+        return shapely.intersects(shapes[:, None], np.array(others)[None, :]).sum(axis=1)
+
+    led_from = len(BESIDE_SHARES)
+    apart_from = led_from + len(LED_SHARES)
+    for index in _most_crowded_first(anchors, at):
         anchor = anchors[index]
-        neighbours = [p for k, p in enumerate(points) if k != index and p.distance(points[index]) > 1e-9]
-        best, best_cost, best_leader = None, math.inf, None
-        for ring, order, candidate in _candidates(anchor, gap):
-            shape = text_box(candidate)
-            overlaps = sum(1 for b in placed_boxes if b.intersects(shape))
-            overlaps += sum(1 for line in leader_lines if line.intersects(shape))
-            # A label nearer another labelled point than its own would name the wrong one.
-            own = shape.distance(points[index])
-            misleading = sum(1 for p in neighbours if shape.distance(p) < own + 0.8)
-            cost = 1000 * overlaps + COVER * covered(shape) + RING * ring + order * 0.01
-            leader = None
-            if ring < len(BESIDE_SHARES):
-                cost += MISLEADING * misleading
-            else:
-                leader = _leader(anchor.at, shape)
-                crossings = sum(1 for b in placed_boxes if b.intersects(leader))
-                crossings += sum(1 for line in leader_lines if line.intersects(leader))
-                # The leader says which point the label names: standing near a neighbour misleads less.
-                cost += 1000 * crossings + LEADER_CROSSING * covered(leader) + MISLEADING / 2 * misleading
-                if ring >= len(BESIDE_SHARES) + len(LED_SHARES):
-                    cost += SET_APART
-            if cost < best_cost:
-                best, best_cost, best_leader = candidate, cost, leader
-        assert best is not None
-        texts[index] = best
+        ring, order, candidates = _candidates(anchor, gap)
+        shapes = shapely.box(*candidates.T)
+        neighbours = points[np.hypot(*(at - at[index]).T) > 1e-9]
+        # A label nearer another labelled point than its own would name the wrong one.
+        own = shapely.distance(shapes, points[index])
+        misleading = (shapely.distance(shapes[:, None], neighbours[None, :]) < own[:, None] + 0.8).sum(axis=1)
+        cost = 1000 * (crossing(shapes, placed_boxes) + crossing(shapes, leader_lines))
+        cost = cost + COVER * covered(shapes) + RING * ring + order * 0.01
+        beside = ring < led_from
+        led = np.flatnonzero(~beside)
+        lines = _leaders(anchor.at, shapes[led])
+        crossings = crossing(lines, placed_boxes) + crossing(lines, leader_lines)
+        # The leader says which point the label names: standing near a neighbour misleads less.
+        cost[beside] += MISLEADING * misleading[beside]
+        cost[led] += 1000 * crossings + LEADER_CROSSING * covered(lines) + MISLEADING / 2 * misleading[led]
+        cost[ring >= apart_from] += SET_APART
+        best = int(np.argmin(cost))
+        x0, y0, x1, _ = candidates[best]
+        texts[index] = Text(((x0 + x1) / 2, y0 + 0.3 * anchor.size), anchor.text, anchor.size, "middle",
+                            anchor.colour)
         # Kept apart by a little more than touching, so that two letters never read as one (s5g).
-        placed_boxes.append(text_box(best).buffer(LABEL_SPACING, join_style=2))
-        if best_leader is not None:
-            leader_lines.append(best_leader)
-            leaders.append(Polyline(tuple(best_leader.coords), Stroke(LEADER_WIDTH, anchor.colour)))
+        placed_boxes.append(text_box(texts[index]).buffer(LABEL_SPACING, join_style=2))
+        if not beside[best]:
+            leader = lines[best - led[0]]
+            leader_lines.append(leader)
+            leaders.append(Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour)))
     return Placement(tuple(texts[k] for k in range(len(anchors))), tuple(leaders))
 
 
-def _most_crowded_first(anchors: Sequence[Anchor], points: Sequence[Point]) -> list[int]:
+def _most_crowded_first(anchors: Sequence[Anchor], at: np.ndarray) -> list[int]:
     """The anchors' indices, those with the most neighbours near them first (stable otherwise)."""
-    def neighbours(index: int) -> int:
-        reach = CROWD * anchors[index].size
-        return sum(1 for k, p in enumerate(points) if k != index and p.distance(points[index]) < reach)
-
-    return sorted(range(len(anchors)), key=lambda index: -neighbours(index))
-
-
-def _leader(at: tuple[float, float], shape: BaseGeometry) -> LineString:
-    """The leader line from just outside the point ``at`` to the nearest edge of the label's box."""
-    _, near = nearest_points(Point(at), shape)
-    dx, dy = near.x - at[0], near.y - at[1]
-    length = math.hypot(dx, dy)
-    start = (at[0] + dx / length * LEADER_CLEARANCE, at[1] + dy / length * LEADER_CLEARANCE)
-    return LineString((start, (near.x - dx / length * 0.3, near.y - dy / length * 0.3)))
+    distance = np.hypot(*(at[:, None, :] - at[None, :, :]).transpose(2, 0, 1))
+    reach = np.array([CROWD * anchor.size for anchor in anchors])
+    neighbours = (distance < reach[:, None]).sum(axis=1) - 1
+    return sorted(range(len(anchors)), key=lambda index: -neighbours[index])
 
 
-def _candidates(anchor: Anchor, gap: float):
-    """(ring, order, text) at sixteen directions on each ring, the preferred direction first.
+def _leaders(at: tuple[float, float], shapes: np.ndarray) -> np.ndarray:
+    """The leader lines from just outside the point ``at`` to the nearest edge of each label's box."""
+    near = shapely.get_coordinates(shapely.shortest_line(Point(at), shapes)).reshape(-1, 2, 2)[:, 1]
+    along = near - np.asarray(at)
+    unit = along / np.hypot(*along.T)[:, None]
+    start = np.asarray(at) + unit * LEADER_CLEARANCE
+    return shapely.linestrings(np.stack((start, near - unit * 0.3), axis=1))
+
+
+def _candidates(anchor: Anchor, gap: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(ring, order, box) of every spot: sixteen directions on each ring, the preferred direction first.
 
     The rings of :data:`BESIDE_SHARES` stand beside the point; a label on
     those of :data:`LED_SHARES` and :data:`APART_SHARES` gets a leader line.
+    A box is (xmin, ymin, xmax, ymax) as :func:`text_extent` gives it.
     """
     width = text_width(anchor.text, anchor.size)
-    radii = [gap + share * anchor.size for share in (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)]
-    for ring, radius in enumerate(radii):
-        for order, k in enumerate((0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8)):
-            direction = anchor.prefer + k * math.pi / 8
-            dx, dy = math.cos(direction), math.sin(direction)
-            # Push the box's near edge, not its centre, out to the radius.
-            x = anchor.at[0] + dx * (radius + width / 2)
-            y = anchor.at[1] + dy * (radius + 0.55 * anchor.size) - 0.45 * anchor.size
-            yield ring, order, Text((x, y), anchor.text, anchor.size, "middle", anchor.colour)
+    radii = np.array([gap + share * anchor.size for share in (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)])
+    turns = np.array((0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8))
+    ring, order = np.divmod(np.arange(len(radii) * len(turns)), len(turns))
+    direction = anchor.prefer + turns[order] * math.pi / 8
+    # Push the box's near edge, not its centre, out to the radius.
+    x = anchor.at[0] + np.cos(direction) * (radii[ring] + width / 2)
+    y = anchor.at[1] + np.sin(direction) * (radii[ring] + 0.55 * anchor.size) - 0.45 * anchor.size
+    boxes = np.stack((x - width / 2, y - 0.3 * anchor.size, x + width / 2, y + 1.15 * anchor.size), axis=1)
+    return ring, order, boxes
 
 
 def open_direction(at: tuple[float, float], items: Sequence[Primitive], default: float = math.pi / 4,
