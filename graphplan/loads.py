@@ -77,10 +77,12 @@ def has_loads(mechanism: Mechanism) -> bool:
 
 
 def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
-    """Which external load acts at which position of ``motion``: a ``(loads, N)`` boolean array.
+    """How much of each external load acts at each position of ``motion``: a ``(loads, N)`` array.
 
     ``motion`` may be any solution of the mechanism with the positions'
-    reference (the analysed positions, a dense sweep for a diagram).
+    reference (the analysed positions, a dense sweep for a diagram).  A
+    load acts fully (1) or not at all (0), except one with a diagram, which
+    acts by the diagram's share of its largest value.
 
     A window ``during = {from, to}`` is a share of the working stroke of the
     working link, measured by its travel (angle or displacement) from the
@@ -88,7 +90,7 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
     """
     scene = mechanism.scene
     count = motion.count
-    acting = np.ones((len(scene.loads), count), dtype=bool)
+    acting = np.ones((len(scene.loads), count))
     if not scene.loads:
         return acting
     progress = working = None
@@ -107,7 +109,12 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
             start, end = load.during
             # Equal ends at 12 digits: a window that ends where a position lies includes it.
             share = np.round(progress, 12)
-            acting[row] = working & (share >= start) & (share <= end)
+            inside = working & (share >= start) & (share <= end)
+            if load.diagram is None:
+                acting[row] = inside
+            else:
+                shares, values = np.array(load.diagram).T
+                acting[row] = np.where(inside, np.interp(share, shares, values) / load.value, 0.0)
     return acting
 
 
@@ -171,6 +178,9 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
         on = 1.0 if acting is None else acting[row].astype(float)
         if np.ndim(on) and len(on) == 1:
             on = float(on[0])
+        if load.resisting:
+            # A resisting load opposes the motion whatever the sign its diagram is drawn with.
+            on = np.abs(on)
         if load.kind == "moment":
             turning = state.links[load.link]
             value = (-abs(load.value) * _sense(turning.omega, turning.epsilon, turning_scale) if load.resisting

@@ -52,7 +52,12 @@ class LinkSpec:
 
 @dataclass(frozen=True)
 class LoadSpec:
-    """An external force or moment; ``during`` is a stroke name or a (from, to) window of the working stroke."""
+    """An external force or moment; ``during`` is a stroke name or a (from, to) window of the working stroke.
+
+    With a ``diagram`` (share of the working stroke, value) the load follows
+    it piecewise-linearly over the window its shares span, and ``value`` is
+    its largest magnitude.
+    """
 
     where: str
     kind: str
@@ -62,6 +67,7 @@ class LoadSpec:
     during: str | tuple[float, float]
     point: str | None
     angle_deg: float | None
+    diagram: tuple[tuple[float, float], ...] | None = None
 
 
 @dataclass(frozen=True)
@@ -288,27 +294,51 @@ def _read_load(where: str, item: object) -> LoadSpec:
     table = Table(item, where)
     kind = table.choice("kind", ("moment", "force"))
     link = table.integer("link", minimum=1)
-    value = table.number("value")
-    resisting = table.boolean("resisting", False)
-    during_raw = table.raw("during", "always")
-    during: str | tuple[float, float]
-    if isinstance(during_raw, dict):
-        window = Table(during_raw, table.where("during"))
-        start = window.number("from")
-        end = window.number("to")
-        window.done()
-        if not 0.0 <= start < end <= 1.0:
-            raise SceneError(window.path, "must be a window 0 <= from < to <= 1 of the working stroke", during_raw)
-        during = (start, end)
+    diagram = _read_load_diagram(table) if table.has("diagram") else None
+    if diagram is not None:
+        if table.has("value") or table.has("during"):
+            raise SceneError(table.where("diagram"), "a load diagram gives the values and the window itself: "
+                                                      "leave out value and during")
+        value = max(abs(v) for _, v in diagram)
+        during: str | tuple[float, float] = (diagram[0][0], diagram[-1][0])
     else:
-        during = check_choice(during_raw, table.where("during"), STROKES)
+        value = table.number("value")
+        during = _read_during(table)
+    resisting = table.boolean("resisting", False)
     point = table.string("point", None)
     angle = table.number("angle", None)
     if kind == "force" and (point is None or angle is None):
         raise SceneError(where, "a force needs point (where it acts) and angle (its direction, degrees)")
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
-                    point=point, angle_deg=angle)
+                    point=point, angle_deg=angle, diagram=diagram)
+
+
+def _read_during(table: Table) -> str | tuple[float, float]:
+    during_raw = table.raw("during", "always")
+    if not isinstance(during_raw, dict):
+        return check_choice(during_raw, table.where("during"), STROKES)
+    window = Table(during_raw, table.where("during"))
+    start = window.number("from")
+    end = window.number("to")
+    window.done()
+    if not 0.0 <= start < end <= 1.0:
+        raise SceneError(window.path, "must be a window 0 <= from < to <= 1 of the working stroke", during_raw)
+    return (start, end)
+
+
+def _read_load_diagram(table: Table) -> tuple[tuple[float, float], ...]:
+    """The useful-resistance diagram: [share of the working stroke, value] pairs, shares rising within 0..1."""
+    where = table.where("diagram")
+    points = tuple(check_xy(item, at) for at, item in table.items("diagram"))
+    if len(points) < 2:
+        raise SceneError(where, "must have at least two points [share of the working stroke, value]")
+    shares = [share for share, _ in points]
+    if not 0.0 <= shares[0] or not shares[-1] <= 1.0 or any(b <= a for a, b in zip(shares, shares[1:])):
+        raise SceneError(where, "shares of the working stroke must rise strictly within 0..1", list(shares))
+    if not any(value for _, value in points):
+        raise SceneError(where, "must have a value other than zero")
+    return points
 
 
 def _read_friction(where: str, item: object) -> FrictionSpec:

@@ -177,6 +177,36 @@ def test_the_ratchet_resistance_acts_over_its_window_of_the_working_stroke():
     assert np.all(resistance.moment[~acting] == 0)
 
 
+TANGENT = Path(__file__).resolve().parent.parent / "fixtures" / "tangent_mechanism_prp.toml"
+
+
+def test_a_load_diagram_follows_the_ram_over_its_working_stroke():
+    """The shaper's cutting force as a useful-resistance diagram: run-in over the first tenth of the
+    ram's travel, full over the middle, run-out over the last.  The ram's own displacement from its
+    extremes decides, and the force opposes the ram's motion."""
+    diagram = ((0.05, 0.0), (0.1, 1500.0), (0.9, 1500.0), (0.95, 0.0))
+    base = graphplan.load(TANGENT)
+    resistance = dataclasses.replace(base.loads[0], value=1500.0, during=(0.05, 0.95), diagram=diagram)
+    scene = dataclasses.replace(base, loads=(resistance,), positions=dataclasses.replace(base.positions, count=72))
+    analysis = analyse(scene)
+    mechanism, motion = analysis.mechanism, analysis.motion
+    ram = motion.point("B")  # x, y columns
+    start, end = (float(graphplan.solve(scene, driver=np.array([e])).point("B").r[0, 0])
+                  for e in analysis.positions.extremes)
+    share = (ram.r[:, 0] - start) / (end - start)
+    working = np.array([stroke == "working" for stroke in analysis.positions.strokes])
+    expected = np.where(working, np.interp(share, *np.array(diagram).T, left=0.0, right=0.0), 0.0)
+    loads = link_loads(mechanism, motion_state(motion), activity(mechanism, analysis.positions, motion))
+    force = next(load for load in loads if load.name == "F6").force
+    np.testing.assert_allclose(np.abs(force), expected, atol=1e-9)
+    assert 0 < np.count_nonzero((expected > 0) & (expected < 1500.0)) < np.count_nonzero(expected)
+    assert np.all(force.real * ram.v[:, 0] <= 0)
+    # The polygons and the system see the same diagram.
+    exact = equilibrium(mechanism, motion, loads).balancing
+    for position in analysis.plans:
+        assert position.forces.balancing == pytest.approx(exact[position.index], rel=RELATIVE)
+
+
 def test_no_masses_and_no_loads_means_no_force_analysis():
     scene = dataclasses.replace(CASES["scotch_yoke"](), links=MappingProxyType({}), loads=())
     assert not has_loads(build(scene))
