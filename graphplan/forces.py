@@ -48,7 +48,9 @@ class Load:
 
     ``name`` is the textbook's: ``G3`` weight, ``Fu3`` inertia force,
     ``Mu3`` inertia moment, ``F4``/``M4`` an external load (numbered when a
-    link has several: ``F4.2``).
+    link has several: ``F4.2``).  A force's line of action passes
+    ``offset`` (m) from its point: the resultant of a link's inertia loads,
+    displaced by h = Mu/Fu so that its moment about the centre is Mu.
     """
 
     name: str
@@ -56,6 +58,7 @@ class Load:
     point: str | None
     force: Vector
     moment: Scalar
+    offset: Vector = 0j
 
     @property
     def is_force(self) -> bool:
@@ -192,7 +195,7 @@ class ForceBoard:
         size = max(abs(position) for position in self.positions.values())
         for load in self.loads_on(link):
             if load.is_force:
-                moment = cross(self.positions[load.point] - about, load.force)
+                moment = cross(self.positions[load.point] + load.offset - about, load.force)
                 arm = abs(moment) / abs(load.force) if abs(load.force) > 0 else 0.0
                 if arm > _THROUGH * size:  # a force through the centre has no arm, whatever rounding says
                     terms.append(Term(load.name, float(moment), float(arm)))

@@ -27,7 +27,9 @@ class LeverTerm:
     """A force on the lever at the plan point ``image`` (turned) and its moment about the pole.
 
     ``arm`` is the perpendicular from the pole to the force's line on the
-    turned plan, in the plan's own units (m/s); ``moment`` is in W.
+    turned plan, in the plan's own units (m/s); ``moment`` is in W.  A
+    displaced force acts at the image of its own point: ``shift`` (m/s, on
+    the plan before it is turned) from ``image``, the image of its link's point.
     """
 
     name: str
@@ -35,6 +37,7 @@ class LeverTerm:
     force: complex
     arm: float
     moment: float
+    shift: complex = 0j
 
 
 @dataclass(frozen=True)
@@ -61,7 +64,10 @@ def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, l
     terms: list[LeverTerm] = []
     for load in loads:
         if load.is_force:
-            terms.append(_term(load.name, velocity.images[load.point], load.force, velocity.value(load.point)))
+            # The image of a displaced point by similarity: its velocity relative to the link's point is ω × offset.
+            shift = 1j * velocity.rates.get(load.link, 0.0) * load.offset if load.offset else 0j
+            terms.append(_term(load.name, velocity.images[load.point], load.force, velocity.value(load.point) + shift,
+                               shift))
         elif load.moment != 0:
             terms.extend(_couple(load, positions, velocity))
     total = sum(term.moment for term in terms)
@@ -78,10 +84,10 @@ def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, l
     return Lever(tuple(terms), balancing * unit_force, velocity.images[driver.joint], float(balancing))
 
 
-def _term(name: str, image: str, force: complex, at: complex) -> LeverTerm:
+def _term(name: str, image: str, force: complex, at: complex, shift: complex = 0j) -> LeverTerm:
     moment = float(cross(turned(at), force))
     arm = abs(moment) / abs(force) if force else 0.0
-    return LeverTerm(name, image, complex(force), arm, moment)
+    return LeverTerm(name, image, complex(force), arm, moment, complex(shift))
 
 
 def _couple(load: Load, positions: dict[str, complex], velocity: Plan) -> list[LeverTerm]:

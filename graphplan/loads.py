@@ -155,12 +155,38 @@ def link_loads(mechanism: Mechanism, state: State, acting: np.ndarray | None = N
         centre = spec.centre
         if spec.mass > 0 and scene.gravity != 0:
             found.append(Load(f"G{number}", number, centre, -1j * spec.mass * scene.gravity, 0.0))
-        if spec.mass > 0:
-            found.append(Load(f"Fu{number}", number, centre, -spec.mass * state.points[centre].a, 0.0))
-        if spec.inertia > 0:
-            found.append(Load(f"Mu{number}", number, None, 0j, -spec.inertia * state.links[number].epsilon))
+        inertia_force = -spec.mass * state.points[centre].a if spec.mass > 0 else None
+        inertia_moment = -spec.inertia * state.links[number].epsilon if spec.inertia > 0 else None
+        if scene.inertia == "displaced" and inertia_force is not None and inertia_moment is not None:
+            found.extend(_displaced(number, centre, inertia_force, inertia_moment))
+            continue
+        if inertia_force is not None:
+            found.append(Load(f"Fu{number}", number, centre, inertia_force, 0.0))
+        if inertia_moment is not None:
+            found.append(Load(f"Mu{number}", number, None, 0j, inertia_moment))
     found.extend(_external(mechanism, state, acting))
     return tuple(found)
+
+
+def _displaced(number: int, centre: str, force: Vector, moment: Scalar) -> list[Load]:
+    """The inertia force and moment of a link as one resultant Fu displaced by h = Mu/Fu from the centre.
+
+    Where Fu vanishes (a centre at rest) there is no resultant to displace,
+    and Mu stays a couple at those positions.
+    """
+    force_array, moment_array = np.broadcast_arrays(np.asarray(force, dtype=complex), np.asarray(moment, dtype=float))
+    size = np.abs(force_array)
+    movable = size > _AT_REST * max(float(np.max(size)), 1e-300)
+    square = np.where(movable, size * size, 1.0)
+    # cross(offset, Fu) = Mu for the offset across Fu: offset = −i·Fu·Mu/|Fu|².
+    offset = np.where(movable, -1j * force_array * moment_array / square, 0j)
+    left = np.where(movable, 0.0, moment_array)
+    if np.ndim(force) == 0 and np.ndim(moment) == 0:
+        offset, left = complex(offset), float(left)
+    loads = [Load(f"Fu{number}", number, centre, force, 0.0, offset)]
+    if np.any(left != 0):
+        loads.append(Load(f"Mu{number}", number, None, 0j, left))
+    return loads
 
 
 def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> list[Load]:
@@ -207,7 +233,8 @@ def _sense(speed: Scalar, rate: Scalar, scale: float) -> Scalar:
 
 def load_at(load: Load, index: int) -> Load:
     """The load at position ``index`` of an array state."""
-    return Load(load.name, load.link, load.point, complex(at(load.force, index)), float(at(load.moment, index)))
+    return Load(load.name, load.link, load.point, complex(at(load.force, index)), float(at(load.moment, index)),
+                complex(at(load.offset, index)))
 
 
 def power(loads: tuple[Load, ...], state: State) -> Scalar:
@@ -215,7 +242,11 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
     total: Scalar = 0.0
     for load in loads:
         if load.is_force:
-            total = total + dot(load.force, state.points[load.point].v)
+            # A displaced force's point moves with its link: v + ω × offset.
+            velocity = state.points[load.point].v
+            if np.any(load.offset != 0):
+                velocity = velocity + 1j * state.links[load.link].omega * load.offset
+            total = total + dot(load.force, velocity)
         else:
             total = total + load.moment * state.links[load.link].omega
     return total

@@ -25,6 +25,7 @@ LOCALES = ("en", "ru", "zh")
 SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
 STROKES = ("working", "idle", "always")
+INERTIA_FORMS = ("couple", "displaced")
 OUTPUT_PIECES = ("positions", "velocity", "acceleration", "forces", "lever", "errors", "note")
 
 
@@ -135,6 +136,8 @@ class Scene:
     measured: Mapping[int, Mapping[str, Mapping[str, float]]]
     include: tuple[str, ...] | None
     source: str = "<scene>"
+    # "couple": Fu at the centre and Mu; "displaced": one resultant Fu displaced by h = Mu/Fu.
+    inertia: str = "couple"
 
 
 def load(path: str | Path) -> Scene:
@@ -192,12 +195,15 @@ def _read_scene(top: Table, source: str) -> Scene:
     drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
     measured = _read_measured(top.table("measured", None))
     include = _read_output(top.table("output", None))
+    forces = top.table("forces", None) or Table({}, "forces")
+    inertia = forces.choice("inertia", INERTIA_FORMS, "couple")
+    forces.done()
     top.done()
     return Scene(title=title, locale=locale, gravity=gravity, frame_link=frame_link,
                  frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
                  driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_, friction=friction,
                  positions=positions, drawing=drawing, measured=MappingProxyType(measured), include=include,
-                 source=source)
+                 source=source, inertia=inertia)
 
 
 def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str, Guide]]:

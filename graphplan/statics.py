@@ -197,8 +197,8 @@ class _System:
                 force = _full(load.force, self.count)
                 known[:, row] += force.real
                 known[:, row + 1] += force.imag
-                known[:, row + 2] += cross(_full(self.motion.points[load.point].r, self.count) - self.origins[load.link],
-                                           force)
+                line = _full(self.motion.points[load.point].r + load.offset, self.count)
+                known[:, row + 2] += cross(line - self.origins[load.link], force)
             else:
                 known[:, row + 2] += np.broadcast_to(np.asarray(load.moment, dtype=float), (self.count,))
         return -known

@@ -220,6 +220,9 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
         anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
     arms, arm_anchors, equations = _arms(sheet, group, drawn, paper)
+    displaced, displaced_anchors = _displacements(sheet, group, paper)
+    arms += displaced
+    arm_anchors += displaced_anchors
     figure = links + arrows + turning + arms
     for name in _named_points(sheet, group):
         where = paper(sheet.positions[name])
@@ -319,7 +322,7 @@ def _forces_on(sheet: ForceSheet, group: GroupForces) -> list[_Force]:
     A reaction is split as the group's polygon splits it (R23τ, R23n);
     reactions between the group's own links are inner and not drawn here.
     """
-    forces = [_Force(load.name, _load_point(sheet, load.point), load.force, _LOAD)
+    forces = [_Force(load.name, _load_point(sheet, load.point) + load.offset, load.force, _LOAD)
               for load in group.loads if load.is_force and load.force != 0]
     polygon = {vector.name: vector for vector in group.polygon.vectors if vector.role != "inner"}
     for found in group.found:
@@ -411,6 +414,21 @@ def _link_centre(sheet: ForceSheet, link: int) -> complex:
         return sheet.positions[spec.centre]
     names = [name for name in sheet.mechanism.fixed_on.get(link, ()) if name in sheet.positions]
     return sum((sheet.positions[name] for name in names), 0j) / max(len(names), 1)
+
+
+def _displacements(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[Primitive], list[Anchor]]:
+    """The shift hu = Mu/Fu of each displaced inertia force, from its link's centre across to its line."""
+    items: list[Primitive] = []
+    anchors: list[Anchor] = []
+    for load in group.loads:
+        if not load.is_force or not load.offset or abs(load.offset) / sheet.length_scale < ZERO_MM:
+            continue
+        centre = _c(paper(sheet.positions[load.point]))
+        shifted = _c(paper(sheet.positions[load.point] + load.offset))
+        items.append(Polyline((_xy(centre), _xy(shifted)), _ARM))
+        anchors.append(Anchor(_xy((centre + shifted) / 2), f"hu{load.link}", NAME_SIZE - 0.4,
+                              _angle(1j * (shifted - centre)), _ARM.colour))
+    return items, anchors
 
 
 def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[complex, complex, complex]],
@@ -645,9 +663,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
             frame.append(Polyline(tuple(hull.exterior.coords)[:-1], _LEVER, closed=True))
         elif hull.geom_type == "LineString" and hull.length >= ZERO_MM:
             frame.append(Polyline(tuple(hull.coords), _LEVER))
-    named = [(term.name, term.image, term.force, _LOAD) for term in lever.terms if term.image and term.force != 0]
-    named.append(("Fb", lever.balancing_image, lever.balancing_force, _BALANCING))
-    scale = _arrow_scale([force for _, _, force, _ in named], frame)
+    named = [(term.name, term.image, term.force, _LOAD, turned(term.shift) / velocity.scale)
+             for term in lever.terms if term.image and term.force != 0]
+    named.append(("Fb", lever.balancing_image, lever.balancing_force, _BALANCING, 0j))
+    scale = _arrow_scale([force for _, _, force, _, _ in named], frame)
     arrows: list[Primitive] = []
     anchors: list[Anchor] = []
     arm_layers: list[Layer] = []
@@ -655,12 +674,13 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
     parts: list[str] = []
     count = 0
     moments = {term.name: term.moment for term in lever.terms}
-    for name, image, force, stroke in named:
-        if _negligible(force, [other for _, _, other, _ in named]):
+    for name, image, force, stroke, shift in named:
+        if _negligible(force, [other for _, _, other, _, _ in named]):
             continue
         length = abs(force) / scale
         unit = force / abs(force)
-        start, end = _unstacked(mm(image), mm(image) + max(length, LEAST_ARROW_MM) * unit, mm(image), arrows)
+        at = mm(image) + shift
+        start, end = _unstacked(at, at + max(length, LEAST_ARROW_MM) * unit, at, arrows)
         arrows.append(Arrow(_xy(start), _xy(end), stroke, 3.0, svg_id("lever", name)))
         anchors.append(Anchor(_xy(end), name, NAME_SIZE, _angle(unit), stroke.colour))
         foot = _foot(0j, start, unit)
