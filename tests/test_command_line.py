@@ -56,8 +56,24 @@ def test_positions_svg_draws_every_position_and_the_paths(run_folder):
 def test_the_same_scene_gives_the_same_bytes(tmp_path, run_folder):
     again = tmp_path / "again"
     assert main(["run", FIXTURE, "--out", str(again)]) == 0
-    for name in ("results.json", "positions.svg"):
-        assert (again / name).read_bytes() == (run_folder / name).read_bytes()
+    names = sorted(path.name for path in run_folder.iterdir())
+    assert sorted(path.name for path in again.iterdir()) == names
+    for name in names:
+        assert (again / name).read_bytes() == (run_folder / name).read_bytes(), name
+
+
+def test_results_json_names_the_versions_it_was_made_with(run_folder):
+    import platform
+
+    import numpy
+    import scipy
+    import shapely
+    import svgwrite
+
+    versions = json.loads((run_folder / "results.json").read_text(encoding="utf-8"))["versions"]
+    assert versions == {"python": platform.python_version(), "graphplan": graphplan.__version__,
+                        "numpy": numpy.__version__, "scipy": scipy.__version__, "shapely": shapely.__version__,
+                        "svgwrite": svgwrite.__version__}
 
 
 def test_a_bad_scene_exits_2_with_one_line_and_writes_nothing(tmp_path, capsys):

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import json
 import math
+import platform
+from importlib import metadata
 from typing import Any
 
 import numpy as np
@@ -88,6 +90,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     n, p5, w = mechanism.degrees_of_freedom
     document: dict[str, Any] = {
         "graphplan": __version__,
+        "versions": versions(),
         "scene": analysis.scene.title,
         "structure": mechanism.structure,
         "degrees_of_freedom": {"moving_links": n, "lower_pairs": p5, "W": w},
@@ -105,6 +108,21 @@ def results(analysis: Analysis) -> dict[str, Any]:
     document["warnings"] = [{"position": int(positions.numbers[w.position]), "code": w.code, "detail": w.detail}
                             for w in analysis.warnings]
     return document
+
+
+# The libraries whose arithmetic or geometry the numbers and drawings depend on.
+DEPENDENCIES = ("numpy", "scipy", "shapely", "svgwrite")
+
+
+def versions() -> dict[str, str]:
+    """The versions of Python, graphplan and its main dependencies, so that a result can be reproduced."""
+    found = {"python": platform.python_version(), "graphplan": __version__}
+    for name in DEPENDENCIES:
+        try:
+            found[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:  # run from a source tree without the package installed
+            found[name] = "unknown"
+    return found
 
 
 def _plans(plan: PlanPosition) -> dict[str, Any]:
