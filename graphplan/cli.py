@@ -16,26 +16,46 @@ from .errors import GraphplanError
 EXAMPLES = """\
 examples:
   graphplan run fixtures/ratchet_crank_rocker.toml              writes output/ratchet_crank_rocker/
-  graphplan run fixtures/ratchet_crank_rocker.toml --out report
+  graphplan run fixtures/ratchet_crank_rocker.toml --out report --locale ru
+  graphplan run fixtures/ratchet_crank_rocker.toml --only velocity,acceleration --format svg,png
   graphplan check fixtures/ratchet_crank_rocker.toml            validates and prints the structure formula
+  graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
 """
 
 
+def _listed(text: str) -> list[str]:
+    return [item.strip() for item in text.split(",") if item.strip()]
+
+
 def _parser() -> argparse.ArgumentParser:
+    from .deliverables import FORMATS, PIECES
+    from .scene import LOCALES
+    from .starters import KINDS
+
     parser = argparse.ArgumentParser(
         prog="graphplan",
         description="The plan method of the theory of machines, from one scene file.",
         epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    run = commands.add_parser("run", help="analyse a scene and write results.json and the drawings",
+    run = commands.add_parser("run", help="analyse a scene and write results.json, the drawings and the tables",
                               epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
     run.add_argument("scene", type=Path, help="the scene file (TOML)")
     run.add_argument("--out", type=Path, default=None,
                      help="output folder (default: output/<scene file name>)")
+    run.add_argument("--locale", choices=LOCALES, default=None,
+                     help="the language of the drawings and the text (default: the scene's [scene] locale)")
+    run.add_argument("--only", type=_listed, default=None, metavar="PIECES",
+                     help=f"deliver only these pieces, comma-separated: {', '.join(PIECES)} "
+                          "(default: the scene's [output] include, else every piece the scene has data for)")
+    run.add_argument("--format", type=_listed, default=["svg"], metavar="FORMATS", dest="formats",
+                     help=f"formats of the drawings, comma-separated: {', '.join(FORMATS)} (SVG always)")
     run.add_argument("--figures", action="store_true",
-                     help="also draw the report figures with matplotlib (the balancing load over the cycle)")
+                     help="also draw the report figures with matplotlib (the same as adding 'figures' to --only)")
     check = commands.add_parser("check", help="validate a scene and print its structure formula")
     check.add_argument("scene", type=Path, help="the scene file (TOML)")
+    new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism")
+    new.add_argument("kind", choices=KINDS, help="the kind of mechanism")
+    new.add_argument("--out", type=Path, default=None, help="the scene file to write (default: KIND.toml here)")
     return parser
 
 
@@ -45,7 +65,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         if arguments.command == "check":
             return _check(arguments.scene)
-        return _run(arguments.scene, arguments.out, arguments.figures)
+        if arguments.command == "new":
+            return _new(arguments.kind, arguments.out)
+        return _run(arguments)
     except GraphplanError as error:
         print(f"graphplan: error: {error}", file=sys.stderr)
         return 2
@@ -65,37 +87,29 @@ def _check(path: Path) -> int:
     return 0
 
 
-def _run(path: Path, out: Path | None, figures: bool = False) -> int:
+def _run(arguments: argparse.Namespace) -> int:
+    import dataclasses
+
     from .analysis import analyse
+    from .deliverables import check_formats, chosen, files
     from .output import write_folder
-    from .render.drawings import positions_svg
-    from .report.results import dumps, results
     from .scene import load
 
+    progress = Progress()
+    path: Path = arguments.scene
+    formats = check_formats(arguments.formats)
     scene = load(path)
+    if arguments.locale is not None:
+        scene = dataclasses.replace(scene, locale=arguments.locale)
+    progress.say("analysing the mechanism")
     analysis = analyse(scene)
-    files = {"results.json": dumps(results(analysis)), "positions.svg": positions_svg(analysis)}
-    if analysis.plans:
-        from .render.drawings import forces_svg, plan_svg
-        from .report.tables import csv_text, markdown
-
-        for plan in analysis.plans:
-            files[f"plan_{plan.number}.svg"] = plan_svg(analysis, plan.index, plan.velocity, plan.acceleration)
-            if plan.forces is not None:
-                files[f"forces_{plan.number}.svg"] = forces_svg(analysis, plan)
-
-        files["errors.md"] = markdown(analysis)
-        files["errors.csv"] = csv_text(analysis)
-        if any(plan.forces is not None for plan in analysis.plans):
-            from .report.forces import markdown as forces_markdown
-
-            files["forces.md"] = forces_markdown(analysis)
-    if figures and analysis.equilibrium is not None:
-        from .report.figures import balancing_diagram
-
-        files["balancing.svg"] = balancing_diagram(analysis)
-    target = out if out is not None else Path("output") / path.stem
-    written = write_folder(target, files)
+    only = arguments.only
+    if arguments.figures:
+        only = [*(only if only is not None else chosen(analysis)), "figures"]
+    pieces = chosen(analysis, only)
+    progress.say("drawing and writing the tables")
+    written = write_folder(arguments.out if arguments.out is not None else Path("output") / path.stem,
+                           files(analysis, pieces, formats))
     print(f"{scene.title}")
     print(f"structure: {analysis.mechanism.structure}")
     for warning in analysis.warnings:
@@ -104,6 +118,33 @@ def _run(path: Path, out: Path | None, figures: bool = False) -> int:
     for file in written:
         print(f"wrote {file}")
     return 0
+
+
+def _new(kind: str, out: Path | None) -> int:
+    from .output import write_file
+    from .starters import starter
+
+    target = out if out is not None else Path(f"{kind}.toml")
+    write_file(target, starter(kind), replace=False)
+    print(f"wrote {target}")
+    print(f"next: graphplan check {target}, then graphplan run {target}")
+    return 0
+
+
+class Progress:
+    """A line on stderr for each stage once a run has taken more than a second, so a long run is not silent."""
+
+    def __init__(self, after: float = 1.0) -> None:
+        import time
+
+        self._clock = time.perf_counter
+        self._start = self._clock()
+        self._after = after
+
+    def say(self, stage: str) -> None:
+        elapsed = self._clock() - self._start
+        if elapsed > self._after:
+            print(f"graphplan: {stage} ({elapsed:.1f} s)", file=sys.stderr)
 
 
 if __name__ == "__main__":  # pragma: no cover

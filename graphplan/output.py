@@ -45,3 +45,24 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
         raise OutputError(f"{target}: cannot write the output ({error.strerror or error})") from None
     shutil.rmtree(retired, ignore_errors=True)
     return [target / name for name in sorted(files)]
+
+
+def write_file(target: Path, content: str, replace: bool = True) -> Path:
+    """Write one file whole: into a temporary sibling first, which then takes ``target``'s name.
+
+    With ``replace`` False an existing ``target`` is an :class:`OutputError`
+    and stays as it was.
+    """
+    target = Path(target)
+    if not replace and target.exists():
+        raise OutputError(f"{target}: exists already; give another name with --out")
+    staging = target.parent / f".{target.name}.partial-{os.getpid()}"
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        staging.write_text(content, encoding="utf-8", newline="\n")
+        staging.replace(target)
+    except OSError as error:
+        staging.unlink(missing_ok=True)
+        raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+    return target
+

@@ -83,6 +83,8 @@ class PlanSheet:
     senses shown on the mechanism come from them.  ``length_scale`` is μl
     (m/mm); each caption is a tuple of lines (the drawing's name, its scale);
     ``velocity_pole`` and ``acceleration_pole`` letter the poles (``p``, ``π``).
+    ``drawings`` are the drawings the sheet shows, of mechanism, velocity
+    and acceleration: a run asked only for velocities draws no acceleration plan.
     """
 
     mechanism: Mechanism
@@ -98,6 +100,7 @@ class PlanSheet:
     acceleration_caption: tuple[str, ...]
     velocity_pole: str = "p"
     acceleration_pole: str = "π"
+    drawings: tuple[str, ...] = ("mechanism", "velocity", "acceleration")
 
 
 # Room around a plan's points in its field, for the run-on of its lines of action and its letters (mm).
@@ -132,11 +135,12 @@ def arrange(sheet: PlanSheet) -> Arrangement:
     the middle of its own, so that the drawings are evenly spaced and their
     captions read as one line.
     """
-    panels = {
-        "mechanism": _mechanism(sheet),
-        "velocity": _plan(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism),
-        "acceleration": _plan(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
+    drawers = {
+        "mechanism": lambda: _mechanism(sheet),
+        "velocity": lambda: _plan(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism),
+        "acceleration": lambda: _plan(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
     }
+    panels = {name: draw() for name, draw in drawers.items() if name in sheet.drawings}
     captions = {"mechanism": sheet.mechanism_caption, "velocity": sheet.velocity_caption,
                 "acceleration": sheet.acceleration_caption}
     extents = {name: bounds_of(item for layer in drawing for item in layer.items) for name, drawing in panels.items()}

@@ -1,0 +1,15 @@
+"""Commented starter scenes for ``graphplan new KIND``: a working mechanism to change into one's own."""
+
+from __future__ import annotations
+
+from importlib import resources
+
+# The kinds a newcomer starts from, each a scene under ``templates/``.
+KINDS = ("crank-rocker", "slider-crank", "slotted-lever")
+
+
+def starter(kind: str) -> str:
+    """The commented scene of ``kind`` (one of :data:`KINDS`)."""
+    if kind not in KINDS:
+        raise ValueError(f"no starter scene {kind!r}; there are {', '.join(KINDS)}")
+    return resources.files("graphplan").joinpath("templates", f"{kind}.toml").read_text(encoding="utf-8")
