@@ -139,6 +139,25 @@ class Scene:
     # "couple": Fu at the centre and Mu; "displaced": one resultant Fu displaced by h = Mu/Fu.
     inertia: str = "couple"
 
+    # The notebook's verbs.  They import the stages they run when called: a scene is read first of all.
+    def solve(self, driver=None):
+        """The analytic motion at the scene's positions, or at ``driver`` (crank angles, rad; slider, m)."""
+        from . import solve
+
+        return solve(self, driver)
+
+    def analyse(self):
+        """The whole analysis of the scene (:func:`graphplan.analysis.analyse`)."""
+        from .analysis import analyse
+
+        return analyse(self)
+
+    def plan(self, number: int):
+        """The plans of position ``number`` (:func:`graphplan.notebook.plan`); Jupyter shows its plan sheet."""
+        from .notebook import plan
+
+        return plan(self, number)
+
 
 def load(path: str | Path) -> Scene:
     """Read and check the scene file at ``path``.

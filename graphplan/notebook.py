@@ -1,0 +1,108 @@
+"""The Python interface for notebooks: a position's plans that show themselves as drawings.
+
+::
+
+    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
+    motion = scene.solve()            # the analytic solution at the scene's positions
+    five = scene.plan(5)              # the plans of position 5; in Jupyter it shows its plan sheet
+    five.values["VB"], five.velocity.scale, five.forces_drawing
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+from types import MappingProxyType
+
+from .analysis import Analysis, PlanPosition, analyse
+from .scene import Scene
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """An SVG drawing that Jupyter shows inline and that can be saved."""
+
+    svg: str
+
+    def _repr_svg_(self) -> str:
+        return self.svg
+
+    def save(self, path: str | Path) -> Path:
+        path = Path(path)
+        path.write_text(self.svg, encoding="utf-8")
+        return path
+
+
+@dataclass(frozen=True)
+class PositionPlans:
+    """The plans of one position: the records, the values read off them, the drawings."""
+
+    analysis: Analysis
+    position: PlanPosition
+
+    @property
+    def number(self) -> int:
+        return self.position.number
+
+    @property
+    def velocity(self):
+        return self.position.velocity
+
+    @property
+    def acceleration(self):
+        return self.position.acceleration
+
+    @property
+    def values(self) -> dict[str, float]:
+        """Every quantity read off the plans as constructed (VB, ω3, aB, ε4, …), SI."""
+        return {reading.quantity: reading.value(self.position.plans) for reading in self.position.readings}
+
+    @property
+    def errors(self):
+        return self.position.errors
+
+    @property
+    def forces(self):
+        return self.position.forces
+
+    @cached_property
+    def drawing(self) -> Drawing:
+        """The plan sheet: the mechanism in the position, its velocity and acceleration plans."""
+        from .render.drawings import plan_svg
+
+        return Drawing(plan_svg(self.analysis, self.position.index, self.position.velocity,
+                                self.position.acceleration))
+
+    @cached_property
+    def forces_drawing(self) -> Drawing | None:
+        """The force sheet, or None when the scene has no masses and no loads."""
+        if self.position.forces is None:
+            return None
+        from .render.drawings import forces_svg
+
+        return Drawing(forces_svg(self.analysis, self.position))
+
+    def _repr_svg_(self) -> str:
+        return self.drawing.svg
+
+
+def plan(scene: Scene, number: int) -> PositionPlans:
+    """The plans of the position numbered ``number`` (as the scene numbers them), drawn whether listed or not."""
+    first = scene.positions.number_from
+    if not first <= number < first + scene.positions.count:
+        raise ValueError(f"no position {number}: the scene numbers its positions {first} to "
+                         f"{first + scene.positions.count - 1}")
+    # Hand readings of other positions belong to their own plans.
+    measured = MappingProxyType({k: v for k, v in scene.measured.items() if k == number})
+    only = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(number,)), measured=measured)
+    analysis = analyse(only)
+    if not analysis.plans:
+        reason = next((warning.detail for warning in analysis.warnings
+                       if int(analysis.positions.numbers[warning.position]) == number), "it is singular")
+        raise ValueError(f"position {number} has no plans: {reason}")
+    return PositionPlans(analysis, analysis.plans[0])
+
+
+__all__ = ["Drawing", "PositionPlans", "plan"]

@@ -1,0 +1,59 @@
+"""The Python interface for notebooks: scene.solve(), scene.plan(n), drawings that show themselves."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ElementTree
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+
+RATCHET = "fixtures/ratchet_crank_rocker.toml"
+
+
+@pytest.fixture(scope="module")
+def scene():
+    return graphplan.load(RATCHET)
+
+
+def test_solve_is_the_module_solve(scene):
+    here, there = scene.solve(), graphplan.solve(scene)
+    np.testing.assert_array_equal(here.link(4).omega, there.link(4).omega)
+    dense = scene.solve(driver=np.radians([10.0, 20.0]))
+    assert dense.point("B").r.shape == (2, 2)
+
+
+def test_a_listed_position_gives_the_plans_of_the_run(scene):
+    """Position 5 is listed in the scene: its notebook plans read what the run's plans read."""
+    five = scene.plan(5)
+    run = next(plan for plan in analyse(scene).plans if plan.number == 5)
+    assert five.number == 5
+    assert five.velocity.scale == run.velocity.scale
+    for reading in run.readings:
+        assert five.values[reading.quantity] == pytest.approx(reading.value(run.plans), rel=1e-12)
+    # The values read off the plans are the motion's: VB against the analytic speed of B.
+    assert five.values["VB"] == pytest.approx(float(np.hypot(*scene.solve().point("B").v[5])), rel=1e-9)
+
+
+def test_an_unlisted_position_is_planned_too(scene):
+    three = scene.plan(3)
+    assert three.values["VB"] == pytest.approx(float(np.hypot(*scene.solve().point("B").v[3])), rel=1e-9)
+    assert three.forces is not None
+
+
+def test_a_position_shows_itself_as_its_plan_sheet(scene, tmp_path):
+    three = scene.plan(3)
+    svg = three._repr_svg_()
+    root = ElementTree.fromstring(svg)
+    assert root.tag.endswith("svg")
+    assert any((element.get("id") or "").startswith("velocity") for element in root.iter())
+    assert three.forces_drawing._repr_svg_().startswith("<?xml") or "<svg" in three.forces_drawing.svg
+    saved = three.drawing.save(tmp_path / "three.svg")
+    assert saved.read_text(encoding="utf-8") == svg
+
+
+def test_no_such_position(scene):
+    with pytest.raises(ValueError, match="no position 12: the scene numbers its positions 0 to 11"):
+        scene.plan(12)
