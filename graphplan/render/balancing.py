@@ -1,0 +1,207 @@
+"""The balancing polygons of a rotor, one per correction plane, side by side at one scale.
+
+Each correction plane's polygon is drawn from its record
+(:class:`graphplan.rotor_balancing.CorrectionPlane`) as the student draws
+it: from the pole, the masses' mass-radius products (their shares in the
+plane) laid off head to tail at μ (kg·m per mm), each named beside its
+middle; then the closing vector, the correction mb·rb, drawn thicker in
+red from the last tip back to the pole, with its angle θ measured from a
+dashed x-direction at its tail.  Under each polygon its caption: the plane,
+its vector equation, the correction's product, angle and mass.  The layout
+reads the record and computes no mechanics.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+
+from shapely.geometry import Point as ShapelyPoint
+
+from ..rotor_balancing import BalancingResult, CorrectionPlane
+from ..scales import format_scale, standard_scale
+from .labels import Anchor, Placement, obstacles_of, place_labels
+from .plans import CAPTION_GAP_MM, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
+from .primitives import (
+    Arrow,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds_of,
+    curved_arrow,
+    dot_marker,
+    moved_layers,
+    text_extent,
+)
+from .svg import to_svg
+
+# The largest polygon is drawn at a standard scale that makes it at most this wide or tall (mm).
+POLYGON_FIELD_MM = 90.0
+# Space between the polygons of two planes (mm).
+GAP_MM = 25.0
+# The dashed x-direction at the correction's tail, and the arc of its angle (mm).
+REFERENCE_MM = 16.0
+ANGLE_RADIUS_MM = 7.0
+NAME_SIZE = 3.2
+CAPTION_LINE = 1.6
+
+_SHARE = Stroke(0.5)
+_CORRECTION = Stroke(0.8, "#a83a1f")
+_REFERENCE = Stroke(0.25, "#333333", (2.5, 1.5))
+_ANGLE = Stroke(0.3, "#a83a1f")
+
+#: The drawing's strings in English; a locale overrides any of them.
+TEXT: Mapping[str, str] = {
+    "balancing_title": "Balancing of rotating masses: polygons of mass-radius products",
+    "balancing_scale": "μ = {value} kg·m/mm",
+    "balancing_plane": "Correction plane {name}, z = {position} m",
+    "balancing_disc": "Correction plane {name}",
+    "balancing_correction": "{vector} = {value} kg·m, θ{name} = {angle}°",
+    "balancing_mass": "m{name} = {mass} kg at r{name} = {radius} m",
+}
+
+
+def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
+    """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under."""
+    strings = {**TEXT, **(text or {})}
+    scale = polygon_scale(result)
+    layers: list[Layer] = []
+    cursor = 0.0
+    panels = [_polygon(plane, scale, strings, result.spec.dynamic) for plane in result.planes]
+    height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
+    for key, drawing, (x0, y0, x1, y1), caption in panels:
+        width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in caption))
+        layers.extend(moved_layers(drawing, cursor + (width - (x1 - x0)) / 2 - x0, -height / 2 - (y0 + y1) / 2))
+        middle = cursor + width / 2
+        layers.append(Layer(f"{key}-caption", tuple(
+            Text((middle, -height - CAPTION_GAP_MM - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
+                 weight="bold" if k == 0 else "normal")
+            for k, line in enumerate(caption))))
+        cursor += width + GAP_MM
+    left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
+    layers.append(Layer("balancing-title", (
+        Text((left, top + 8.0 + 1.6 * TITLE_SIZE), strings["balancing_title"], TITLE_SIZE, "start", weight="bold"),
+        Text((left, top + 8.0), strings["balancing_scale"].format(value=format_scale(scale)), CAPTION_SIZE, "start"))))
+    return layers
+
+
+def balancing_svg(result: BalancingResult, text: Mapping[str, str] | None = None) -> str:
+    """The balancing polygons of ``result`` as SVG text."""
+    return to_svg(layout(result, text))
+
+
+def polygon_scale(result: BalancingResult) -> float:
+    """μ (kg·m/mm): the standard scale at which the largest polygon fits :data:`POLYGON_FIELD_MM`."""
+    extent = 0.0
+    for plane in result.planes:
+        xs = [vertex.real for vertex in plane.vertices]
+        ys = [vertex.imag for vertex in plane.vertices]
+        extent = max(extent, max(xs) - min(xs), max(ys) - min(ys))
+    return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else 1.0
+
+
+def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
+             dynamic: bool) -> tuple[str, list[Layer], tuple[float, float, float, float], tuple[str, ...]]:
+    """One plane's polygon at μ: its key, its layers, their bounds (mm) and its caption lines."""
+    key = f"plane-{plane.name}"
+
+    def mm(value: complex) -> complex:
+        return value / scale
+
+    arrows: list[Primitive] = []
+    named: list[tuple[str, Arrow]] = []
+    for vector in plane.vectors:
+        if abs(mm(vector.vector)) < ZERO_MM:
+            continue
+        stroke = _CORRECTION if vector.role == "correction" else _SHARE
+        arrow = Arrow(_xy(mm(vector.start)), _xy(mm(vector.end)), stroke, 3.5 if vector.role == "correction" else 3.0,
+                      f"{key}-{_id(vector.name)}")
+        arrows.append(arrow)
+        named.append((vector.name, arrow))
+    pole = [dot_marker(_xy(mm(plane.vertices[0])), 0.7)]
+    angle_marks = _angle_marks(plane, mm(plane.correction), mm(plane.vectors[-1].start))
+    figure = arrows + pole + angle_marks
+    middle = sum((mm(vertex) for vertex in plane.vertices[:-1]), 0j) / max(len(plane.vertices) - 1, 1)
+    anchors = []
+    for name, arrow in named:
+        centre = (_c(arrow.start) + _c(arrow.end)) / 2
+        across = 1j * (_c(arrow.end) - _c(arrow.start))
+        if ((centre - middle) * across.conjugate()).real < 0:
+            across = -across
+        anchors.append(Anchor(_xy(centre), name, NAME_SIZE, math.atan2(across.imag, across.real),
+                              arrow.stroke.colour))
+    if angle_marks:
+        tail = mm(plane.vectors[-1].start)
+        half = math.radians(plane.angle_deg) / 2
+        at = tail + (ANGLE_RADIUS_MM + 1.0) * complex(math.cos(half), math.sin(half))
+        anchors.append(Anchor(_xy(at), f"θ{plane.name}", NAME_SIZE - 0.4, half, _ANGLE.colour))
+    labels = _lettered(anchors, figure)
+    layers = [Layer(f"{key}-reference", tuple(angle_marks)), Layer(f"{key}-vectors", tuple(arrows + pole)),
+              Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
+    extent = bounds_of(item for layer in layers for item in layer.items)
+    return key, layers, extent, _caption(plane, text, dynamic)
+
+
+def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> list[Primitive]:
+    """The dashed x-direction at the correction's tail and the arc from it to the correction, ccw."""
+    if abs(correction) < ZERO_MM:
+        return []
+    marks: list[Primitive] = [Polyline((_xy(tail), _xy(tail + REFERENCE_MM)), _REFERENCE)]
+    sweep = math.radians(plane.angle_deg)
+    if sweep > math.radians(2.0):
+        marks.extend(curved_arrow(_xy(tail), ANGLE_RADIUS_MM, 0.0, sweep, _ANGLE, head=2.0))
+    return marks
+
+
+def _caption(plane: CorrectionPlane, text: Mapping[str, str], dynamic: bool) -> tuple[str, ...]:
+    title = (text["balancing_plane"].format(name=plane.name, position=_given(plane.position))
+             if dynamic else text["balancing_disc"].format(name=plane.name))
+    lines = [title, plane.equation,
+             text["balancing_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
+                                                 value=_number(plane.mass_radius), angle=f"{plane.angle_deg:.1f}")]
+    if plane.mass is not None and plane.radius is not None:
+        lines.append(text["balancing_mass"].format(name=plane.name, mass=_number(plane.mass),
+                                                   radius=_given(plane.radius)))
+    return tuple(lines)
+
+
+def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placement:
+    """The labels placed clear of the figure and of every anchor's own spot."""
+    spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
+    return place_labels(anchors, obstacles_of(figure) + spots)
+
+
+def _number(value: float, digits: int = 4) -> str:
+    """A value with ``digits`` significant digits, no exponent, a true minus sign."""
+    if value == 0 or not math.isfinite(value):
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    written = f"{value:.{decimals}f}"
+    return written.replace("-", "−") if written.strip("-0.") else "0"
+
+
+def _given(value: float) -> str:
+    """A value the scene gave, as short as it was written: 0.04, not 0.04000; a true minus sign."""
+    return f"{value:.10g}".replace("-", "−")
+
+
+def _id(name: str) -> str:
+    return "".join(c if c.isalnum() else "_" for c in name)
+
+
+def _width(text: Text) -> float:
+    x0, _, x1, _ = text_extent(text)
+    return x1 - x0
+
+
+def _c(point: tuple[float, float]) -> complex:
+    return complex(point[0], point[1])
+
+
+def _xy(value: complex) -> tuple[float, float]:
+    return (value.real, value.imag)
+
+
+__all__ = ["TEXT", "balancing_svg", "layout", "polygon_scale"]

@@ -1,0 +1,137 @@
+"""Report figures of vibration from rotating unbalance: the magnification factor and the transmissibility.
+
+Each figure draws its curve against the frequency ratio r = ω/ωn for
+several damping ratios ζ, from :mod:`graphplan.vibration`, and marks a
+machine's working point when one is given.  matplotlib is imported only
+inside the functions, with the Agg backend; the SVG has no date and a fixed
+hash salt, so the same call writes the same bytes.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+
+import numpy as np
+
+from ..vibration import transmissibility, unbalance_magnification
+
+#: Damping ratios drawn when none are asked for (as in the textbooks' charts).
+DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
+# Samples along r: dense enough that the sharpest peak drawn (ζ = 0.05) reads smooth.
+SAMPLES = 1201
+
+#: The figures' strings in English; a locale overrides any of them.
+TEXT: Mapping[str, str] = {
+    "vibration_ratio": "frequency ratio r = ω/ωn",
+    "vibration_magnification": "magnification M·X/(m·e)",
+    "vibration_magnification_title": "Rotating unbalance: steady amplitude",
+    "vibration_transmissibility": "transmissibility TR",
+    "vibration_transmissibility_title": "Force transmitted to the base",
+    "vibration_zeta": "ζ = {value}",
+    "vibration_operating": "working point",
+    "vibration_isolation": "isolation: r > √2",
+}
+
+# Latin and Greek first, then CJK: matplotlib falls back along the list glyph by glyph.
+_FONTS = ("DejaVu Sans", "Noto Sans CJK SC", "Noto Sans CJK JP")
+
+
+def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
+                         ratio_max: float = 3.0, operating: tuple[float, float] | None = None,
+                         text: Mapping[str, str] | None = None) -> Path:
+    """Write the magnification factor M·X/(m·e) against r for each ζ in ``zetas`` to ``path`` as SVG.
+
+    ``operating`` = (r, ζ) marks a machine's working point on its curve.
+    The ordinate stops at a little above the highest drawn peak (an
+    undamped curve is cut there).
+    """
+    strings = {**TEXT, **(text or {})}
+    ratios = np.linspace(0.0, ratio_max, SAMPLES)
+    curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in _checked(zetas)]
+    damped = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in zetas if 0 < zeta < math.sqrt(0.5)]
+    top = 1.15 * max([*damped, 2.0])
+    return _plot(path, ratios, curves, strings, strings["vibration_magnification"],
+                 strings["vibration_magnification_title"], ylim=(0.0, top), log=False,
+                 operating=None if operating is None else (operating[0], unbalance_magnification(*operating)))
+
+
+def transmissibility_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
+                            ratio_max: float = 5.0, operating: tuple[float, float] | None = None,
+                            text: Mapping[str, str] | None = None) -> Path:
+    """Write the transmissibility TR against r for each ζ in ``zetas`` to ``path`` as SVG, TR on a log scale.
+
+    The isolating range r > √2, where every curve falls below 1, is shaded;
+    ``operating`` = (r, ζ) marks a machine's working point.
+    """
+    strings = {**TEXT, **(text or {})}
+    ratios = np.linspace(0.0, ratio_max, SAMPLES)
+    curves = [(zeta, transmissibility(ratios, zeta)) for zeta in _checked(zetas)]
+    return _plot(path, ratios, curves, strings, strings["vibration_transmissibility"],
+                 strings["vibration_transmissibility_title"], ylim=(0.02, 20.0), log=True,
+                 operating=None if operating is None else (operating[0], transmissibility(*operating)),
+                 isolation=True)
+
+
+def _checked(zetas: Sequence[float]) -> list[float]:
+    values = [float(zeta) for zeta in zetas]
+    if not values:
+        raise ValueError("zetas: must hold at least one damping ratio")
+    for k, zeta in enumerate(values):
+        if not (math.isfinite(zeta) and zeta >= 0):
+            raise ValueError(f"zetas[{k}]: a damping ratio must be >= 0 (got {zeta!r})")
+    return values
+
+
+def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.ndarray]], text: Mapping[str, str],
+          ylabel: str, title: str, *, ylim: tuple[float, float], log: bool,
+          operating: tuple[float, float] | None, isolation: bool = False) -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    target = Path(path)
+    with matplotlib.rc_context({"svg.hashsalt": "graphplan", "font.family": _families(),
+                                "svg.fonttype": "path"}):
+        figure = Figure(figsize=(7.0, 4.2), dpi=100)
+        plot = figure.add_subplot()
+        colours = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.85, len(curves)))
+        for (zeta, values), colour in zip(curves, colours, strict=True):
+            shown = np.where(np.isfinite(values), values, np.nan)
+            plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vibration_zeta"].format(value=f"{zeta:g}"))
+        if isolation:
+            plot.axvspan(math.sqrt(2.0), ratios[-1], color="#1f7a3a", alpha=0.08, label=text["vibration_isolation"])
+            plot.axvline(math.sqrt(2.0), color="#1f7a3a", linewidth=0.8, linestyle="--")
+            plot.axhline(1.0, color="black", linewidth=0.6)
+        else:
+            plot.axhline(1.0, color="black", linewidth=0.6, linestyle=":")
+        plot.axvline(1.0, color="black", linewidth=0.5, linestyle=":")
+        if operating is not None:
+            plot.plot([operating[0]], [operating[1]], "o", color="#a83a1f", markersize=6,
+                      label=text["vibration_operating"])
+        if log:
+            plot.set_yscale("log")
+        plot.set_xlim(ratios[0], ratios[-1])
+        plot.set_ylim(*ylim)
+        plot.set_xlabel(text["vibration_ratio"])
+        plot.set_ylabel(ylabel)
+        plot.set_title(title, fontsize=11)
+        plot.grid(True, which="both", linewidth=0.3)
+        plot.legend(fontsize=8, loc="upper right")
+        figure.tight_layout()
+        target.parent.mkdir(parents=True, exist_ok=True)
+        figure.savefig(target, format="svg", metadata={"Date": None})
+    return target
+
+
+def _families() -> list[str]:
+    """The fonts of :data:`_FONTS` this machine has (asking for a missing one floods the log)."""
+    from matplotlib import font_manager
+
+    installed = {font.name for font in font_manager.fontManager.ttflist}
+    return [name for name in _FONTS if name in installed] or ["sans-serif"]
+
+
+__all__ = ["DEFAULT_ZETAS", "TEXT", "magnification_figure", "transmissibility_figure"]

@@ -1,0 +1,419 @@
+"""Balancing rotating masses by vector polygons: a disc in one plane, a long rotor in two.
+
+A mass m at radius r and angle θ turning with the rotor at ω pulls on its
+bearings with the centrifugal force m·r·ω² along θ.  Since ω² is common to
+every mass, the textbooks balance the *mass-radius products* m·r (kg·m),
+drawn as vectors at their angles.
+
+* **Static balancing** (one correction plane: a disc, a gear, a pulley): the
+  correction makes the polygon of m·r close,
+
+      Σ mi·ri + mb·rb = 0,
+
+  so the correction is the closing vector, from the end of the last m·r back
+  to the start.
+
+* **Dynamic balancing** (two correction planes L and R at zL and zR along
+  the axis): each mass-radius product is first split between the two planes
+  by moments about the other plane,
+
+      (mi·ri)L = mi·ri·(zR − zi)/(zR − zL),   (mi·ri)R = mi·ri·(zi − zL)/(zR − zL),
+
+  which keeps both its force (the shares add up to mi·ri) and its moment
+  (zL·(mi·ri)L + zR·(mi·ri)R = zi·mi·ri).  A mass between the planes gives
+  shares of its own sense in both; one outside them gives a share against
+  its sense in the farther plane.  Each plane then closes its own polygon
+  as a disc does; the rotor corrected in both planes has neither resultant
+  force nor resultant moment.
+
+Conventions: SI units; angles in degrees at the edges (``angle_deg``),
+counter-clockwise positive, measured in the rotor's frame from its x-axis;
+a mass-radius product in the records is a complex number m·r·e^{iθ} (kg·m).
+The records keep each plane's polygon as it is laid out (its vectors head
+to tail, the closing correction last), so the drawing
+(:mod:`graphplan.render.balancing`) reads what was constructed.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+import numbers
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+from typing import Any
+
+from .errors import SceneError
+from .reader import Table, check_number, check_str, join_path
+
+#: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
+NEGLIGIBLE = 1e-12
+#: Names of the correction planes when the scene does not name them.
+DYNAMIC_PLANE_NAMES = ("L", "R")
+STATIC_PLANE_NAMES = ("b",)
+
+
+def _finite(argument: str, value: float) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+        raise ValueError(f"{argument}: must be a finite number (got {value!r})")
+    return float(value)
+
+
+@dataclass(frozen=True)
+class RotatingMass:
+    """A mass turning with the rotor: ``mass`` (kg) at ``radius`` (m) and ``angle_deg``, in the plane at ``plane`` (m).
+
+    ``plane`` is the mass's axial position along the rotor (any origin);
+    ``name`` letters it on the polygons (``m1r1``); unnamed masses are
+    numbered in order by :class:`BalancingSpec`.
+    """
+
+    mass: float
+    radius: float
+    angle_deg: float
+    plane: float = 0.0
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        for argument in ("mass", "radius", "angle_deg", "plane"):
+            object.__setattr__(self, argument, _finite(argument, getattr(self, argument)))
+        if not self.mass > 0:
+            raise ValueError(f"mass: must be > 0 (got {self.mass!r})")
+        if not self.radius >= 0:
+            raise ValueError(f"radius: must be >= 0 (got {self.radius!r})")
+        if not isinstance(self.name, str):
+            raise TypeError(f"name: must be a string (got {self.name!r})")
+
+    @property
+    def unbalance(self) -> complex:
+        """The mass-radius product as a vector, m·r·e^{iθ} (kg·m)."""
+        return self.mass * self.radius * cmath.exp(1j * math.radians(self.angle_deg))
+
+    @property
+    def label(self) -> str:
+        """The product's name on a polygon: ``m1r1``, ``mArA``; a long name as ``(m·r)name``."""
+        return vector_name(self.name)
+
+
+def vector_name(name: str) -> str:
+    """The name of the mass-radius product of the mass (or plane) ``name``: ``m1r1``, ``mLrL``."""
+    if len(name) <= 3 and name.isalnum():
+        return f"m{name}r{name}"
+    return f"(m·r){name}"
+
+
+@dataclass(frozen=True)
+class BalancingSpec:
+    """What to balance and where.
+
+    Parameters
+    ----------
+    masses
+        The rotating masses (at least one).
+    planes
+        The axial positions (m) of the correction planes: two for dynamic
+        balancing; one for static balancing in that plane; none for static
+        balancing of a disc, corrected in the masses' own plane (they must
+        then share one plane).
+    correction_radius
+        The radius (m) at which each correction mass is fixed: one number for
+        every plane, or one per plane; ``None`` gives the products m·r only.
+    plane_names
+        The planes' names (default ``L``, ``R``; ``b`` for one plane).
+    """
+
+    masses: Sequence[RotatingMass]
+    planes: Sequence[float] = ()
+    correction_radius: float | Sequence[float] | None = None
+    plane_names: Sequence[str] = ()
+
+    def __post_init__(self) -> None:
+        masses = tuple(self.masses)
+        if not masses:
+            raise ValueError("masses: must hold at least one rotating mass")
+        masses = tuple(mass if mass.name else replace(mass, name=str(k + 1)) for k, mass in enumerate(masses))
+        names = [mass.name for mass in masses]
+        for k, name in enumerate(names):
+            if name in names[:k]:
+                raise ValueError(f"masses[{k}].name: repeats the name of an earlier mass ({name!r})")
+        object.__setattr__(self, "masses", masses)
+        planes = tuple(_finite(f"planes[{k}]", z) for k, z in enumerate(self.planes))
+        if len(planes) > 2:
+            raise ValueError(f"planes: must hold one or two correction planes (got {len(planes)})")
+        if len(planes) == 2 and planes[0] == planes[1]:
+            raise ValueError(f"planes: the two correction planes must differ (got {list(planes)})")
+        if not planes and len({mass.plane for mass in masses}) > 1:
+            raise ValueError("planes: masses in different planes need their correction planes: "
+                             "two for dynamic balancing, or one to balance the force only")
+        object.__setattr__(self, "planes", planes)
+        count = max(1, len(planes))
+        radius = self.correction_radius
+        if radius is not None:
+            radii = (radius,) * count if isinstance(radius, numbers.Real) else tuple(radius)
+            if len(radii) != count:
+                raise ValueError(f"correction_radius: must be one number or one per correction plane ({count})")
+            for k, value in enumerate(radii):
+                if not _finite(f"correction_radius[{k}]", value) > 0:
+                    raise ValueError(f"correction_radius[{k}]: must be > 0 (got {value!r})")
+            object.__setattr__(self, "correction_radius", tuple(float(value) for value in radii))
+        names = tuple(self.plane_names) or (DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES)
+        if len(names) != count or len(set(names)) != count or not all(isinstance(n, str) and n for n in names):
+            raise ValueError(f"plane_names: must be {count} different names, one per correction plane")
+        object.__setattr__(self, "plane_names", names)
+
+    @property
+    def dynamic(self) -> bool:
+        """Whether the rotor is balanced in two planes (force and moment), not one (force only)."""
+        return len(self.planes) == 2
+
+    @property
+    def correction_planes(self) -> tuple[float, ...]:
+        """The axial positions (m) of the correction planes; for a disc, the masses' own plane."""
+        return tuple(self.planes) or (self.masses[0].plane,)
+
+
+@dataclass(frozen=True)
+class PolygonVector:
+    """One side of a plane's polygon: a mass-radius product laid off from ``start`` to ``end`` (kg·m).
+
+    ``role`` is ``mass`` for a mass's share in the plane and ``correction``
+    for the closing vector; ``name`` is its label (``m2r2``, ``mLrL``).
+    """
+
+    name: str
+    start: complex
+    end: complex
+    role: str
+
+    @property
+    def vector(self) -> complex:
+        return self.end - self.start
+
+
+@dataclass(frozen=True)
+class CorrectionPlane:
+    """A correction plane and its polygon: the masses' shares head to tail, closed by the correction.
+
+    ``factors`` are the shares of each mass's m·r carried to this plane
+    (1 in static balancing; (zR − zi)/(zR − zL) in plane L), ``vectors`` the
+    polygon in the order it is laid off, ``correction`` the closing vector
+    mb·rb (kg·m), ``radius`` the correction mass's radius (m) when known.
+    """
+
+    name: str
+    position: float
+    factors: tuple[float, ...]
+    vectors: tuple[PolygonVector, ...]
+    correction: complex
+    radius: float | None
+    equation: str
+
+    @property
+    def shares(self) -> tuple[complex, ...]:
+        """The masses' mass-radius products carried to this plane (kg·m), in the masses' order."""
+        return tuple(vector.vector for vector in self.vectors if vector.role == "mass")
+
+    @property
+    def vertices(self) -> tuple[complex, ...]:
+        """The polygon's corners (kg·m): its start, the end of each vector; the last is the start again."""
+        return (self.vectors[0].start, *(vector.end for vector in self.vectors))
+
+    @property
+    def mass_radius(self) -> float:
+        """|mb·rb| (kg·m), the correction's mass-radius product."""
+        return abs(self.correction)
+
+    @property
+    def angle_deg(self) -> float:
+        """The correction's angle in [0, 360) degrees; 0 where no correction is needed."""
+        if self.mass_radius <= NEGLIGIBLE * sum(abs(share) for share in self.shares):
+            return 0.0
+        angle = math.degrees(cmath.phase(self.correction)) % 360.0
+        return 0.0 if angle >= 360.0 else angle
+
+    @property
+    def mass(self) -> float | None:
+        """The correction mass mb = |mb·rb| / rb (kg) at the given radius, or None without one."""
+        return None if self.radius is None else self.mass_radius / self.radius
+
+
+@dataclass(frozen=True)
+class BalancingResult:
+    """The balanced rotor: its correction planes, the unbalance before, the residual after.
+
+    ``unbalance`` is Σ mi·ri of the masses (kg·m) and ``unbalance_moment``
+    Σ mi·ri·zi about z = 0 (kg·m²), both as vectors in the rotor's frame;
+    ``residual_force`` and ``residual_moment`` are the same sums with the
+    corrections added, summed afresh from the masses and the corrections
+    (times ω² they are the force and the moment on the bearings).
+    """
+
+    spec: BalancingSpec
+    planes: tuple[CorrectionPlane, ...]
+    unbalance: complex
+    unbalance_moment: complex
+    residual_force: complex
+    residual_moment: complex
+
+    @property
+    def kind(self) -> str:
+        return "dynamic" if self.spec.dynamic else "static"
+
+
+def balance(spec: BalancingSpec) -> BalancingResult:
+    """The corrections that balance ``spec``'s masses, each found by closing its plane's polygon."""
+    masses = spec.masses
+    positions = spec.correction_planes
+    if spec.dynamic:
+        left, right = positions
+        span = right - left
+        factor_rows = [tuple((right - mass.plane) / span for mass in masses),
+                       tuple((mass.plane - left) / span for mass in masses)]
+    else:
+        factor_rows = [tuple(1.0 for _ in masses)]
+    radii = spec.correction_radius or (None,) * len(positions)
+    planes = tuple(_close_polygon(name, position, factors, masses, radius)
+                   for name, position, factors, radius in zip(spec.plane_names, positions, factor_rows, radii,
+                                                              strict=True))
+    unbalance = sum((mass.unbalance for mass in masses), 0j)
+    moment = sum((mass.unbalance * mass.plane for mass in masses), 0j)
+    return BalancingResult(
+        spec=spec, planes=planes, unbalance=unbalance, unbalance_moment=moment,
+        residual_force=unbalance + sum((plane.correction for plane in planes), 0j),
+        residual_moment=moment + sum((plane.correction * plane.position for plane in planes), 0j))
+
+
+def _close_polygon(name: str, position: float, factors: tuple[float, ...], masses: Sequence[RotatingMass],
+                   radius: float | None) -> CorrectionPlane:
+    """Σ (mi·ri)plane + mb·rb = 0: the shares head to tail from 0, the correction back to 0."""
+    vectors = []
+    tip = 0j
+    for mass, factor in zip(masses, factors, strict=True):
+        share = mass.unbalance * factor
+        vectors.append(PolygonVector(mass.label, tip, tip + share, "mass"))
+        tip += share
+    correction = PolygonVector(vector_name(name), tip, 0j, "correction")
+    equation = " + ".join([mass.label for mass in masses] + [correction.name]) + " = 0"
+    return CorrectionPlane(name=name, position=position, factors=factors, vectors=(*vectors, correction),
+                           correction=-tip, radius=radius, equation=equation)
+
+
+# --- the scene table -------------------------------------------------------------------------
+
+
+def read_balancing(table: Table) -> BalancingSpec:
+    """The ``[balancing]`` table of a scene as a :class:`BalancingSpec`, each bad key named by its path.
+
+    Keys: ``masses`` (a list of ``{mass, radius, angle, plane, name}``),
+    ``planes`` (one or two axial positions, m), ``correction_radius`` (m, one
+    number or one per plane), ``plane_names``.
+    """
+    planes = _planes(table)
+    count = max(1, len(planes))
+    pairs = table.items("masses")
+    if not pairs:
+        raise SceneError(table.where("masses"), "must list at least one rotating mass")
+    masses = []
+    names: dict[str, str] = {}
+    for where, item in pairs:
+        entry = Table(item, where)
+        mass = entry.number("mass", positive=True)
+        radius = entry.number("radius", non_negative=True)
+        angle = entry.number("angle")
+        plane = entry.number("plane", None)
+        name = entry.string("name", None)
+        entry.done()
+        if plane is None and len(planes) == 2:
+            raise SceneError(entry.where("plane"), "is required when [balancing] has two correction planes "
+                                                   "(the mass's axial position, m)")
+        if name is not None:
+            if name in names:
+                raise SceneError(entry.where("name"), f"repeats the name of {names[name]}", name)
+            names[name] = where
+        masses.append(RotatingMass(mass, radius, angle, 0.0 if plane is None else plane, name or ""))
+    if not planes:
+        given = {mass.plane for mass in masses}
+        if len(given) > 1:
+            raise SceneError(table.where("planes"), "is required when the masses lie in different planes: "
+                                                    "[zL, zR] for dynamic balancing, or [z] to balance the force only")
+    radius = _correction_radius(table, count)
+    plane_names = _plane_names(table, count)
+    table.done()
+    return BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
+
+
+def _planes(table: Table) -> tuple[float, ...]:
+    pairs = table.items("planes", default=None)
+    if pairs is None:
+        return ()
+    if len(pairs) not in (1, 2):
+        raise SceneError(table.where("planes"), "must list one correction plane [z] or two [zL, zR] (m)",
+                         table.data["planes"])
+    planes = tuple(check_number(item, where) for where, item in pairs)
+    if len(planes) == 2 and planes[0] == planes[1]:
+        raise SceneError(table.where("planes"), "the two correction planes must be apart", list(planes))
+    return planes
+
+
+def _correction_radius(table: Table, count: int) -> tuple[float, ...] | None:
+    value = table.raw("correction_radius", None)
+    where = table.where("correction_radius")
+    if value is None:
+        return None
+    if isinstance(value, list):
+        if len(value) != count:
+            raise SceneError(where, f"must be one radius or one per correction plane ({count})", value)
+        radii = tuple(check_number(item, join_path(where, k)) for k, item in enumerate(value))
+        wheres = [join_path(where, k) for k in range(count)]
+    else:
+        radii = (check_number(value, where),) * count
+        wheres = [where] * count
+    for at, radius in zip(wheres, radii, strict=True):
+        if not radius > 0:
+            raise SceneError(at, "must be > 0", radius)
+    return radii
+
+
+def _plane_names(table: Table, count: int) -> tuple[str, ...]:
+    pairs = table.items("plane_names", length=count, default=None)
+    if pairs is None:
+        return ()
+    names = tuple(check_str(item, where) for where, item in pairs)
+    if len(set(names)) != len(names):
+        raise SceneError(table.where("plane_names"), "must be different names", list(names))
+    return names
+
+
+# --- results ---------------------------------------------------------------------------------
+
+
+def balancing_results(result: BalancingResult) -> dict[str, Any]:
+    """The balancing as the results file writes it: SI, angles in degrees.
+
+    ``planes`` lists each correction plane with ``plane`` (its name),
+    ``position`` (m), ``mass_radius`` (kg·m) and ``angle_deg``, and with
+    ``radius`` (m) and ``mass`` (kg) when the correction radius is given;
+    ``unbalance`` is the rotor's before correction, ``residual`` after.
+    """
+    planes = []
+    for plane in result.planes:
+        entry: dict[str, Any] = {"plane": plane.name, "position": plane.position,
+                                 "mass_radius": plane.mass_radius, "angle_deg": plane.angle_deg}
+        if plane.radius is not None:
+            entry["radius"] = plane.radius
+            entry["mass"] = plane.mass
+        planes.append(entry)
+    total = sum(abs(mass.unbalance) for mass in result.spec.masses)
+    unbalance_angle = (math.degrees(cmath.phase(result.unbalance)) % 360.0
+                       if abs(result.unbalance) > NEGLIGIBLE * total else 0.0)
+    return {
+        "kind": result.kind,
+        "unbalance": {"mass_radius": abs(result.unbalance), "angle_deg": unbalance_angle,
+                      "moment": abs(result.unbalance_moment)},
+        "planes": planes,
+        "residual": {"force": abs(result.residual_force), "moment": abs(result.residual_moment)},
+    }
+
+
+__all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "PolygonVector", "RotatingMass", "balance",
+           "balancing_results", "read_balancing", "vector_name"]

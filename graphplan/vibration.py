@@ -1,0 +1,413 @@
+"""Vibration from rotating unbalance: steady response, transmissibility, critical speeds, isolation.
+
+A machine of mass M on a mount of stiffness k and viscous damping c carries
+an unbalance m·e turning at ω; its vertical motion obeys
+
+    M·x'' + c·x' + k·x = m·e·ω²·sin ωt,
+
+with ωn = √(k/M), ζ = c / (2·√(k·M)) and the frequency ratio r = ω/ωn.  The
+steady response is x = X·sin(ωt − φ) with
+
+    M·X / (m·e) = r² / √((1 − r²)² + (2ζr)²)        (the magnification factor)
+    tan φ = 2ζr / (1 − r²),  0 ≤ φ ≤ π                (the lag behind the unbalance force)
+
+and the force the mount passes to the base, k·x + c·x', has the amplitude
+TR·m·e·ω² with the transmissibility
+
+    TR = √(1 + (2ζr)²) / √((1 − r²)² + (2ζr)²),
+
+which is also X/Y of a machine whose base moves as y = Y·sin ωt.  A disc on
+a shaft whirls the same way, k being the shaft's bending stiffness at the
+disc: its critical speed is ωc = √(k/m).
+
+Conventions: SI units, angles in radians inside (``*_deg`` at the edges).
+The dimensionless functions take numbers or numpy arrays, broadcast them
+together and return a float for scalars and an array otherwise.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .errors import SceneError
+from .reader import Table, check_choice
+
+Scalar = float | np.ndarray
+Support = Literal["simply_supported", "cantilever"]
+SUPPORTS = ("simply_supported", "cantilever")
+RPM = 2 * math.pi / 60  # rad/s per rev/min
+
+
+def _array(argument: str, value: ArrayLike, *, least: float | None = None, strict: bool = False) -> np.ndarray:
+    array = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{argument}: must be finite (got {value!r})")
+    if least is not None:
+        bad = array <= least if strict else array < least
+        if np.any(bad):
+            relation = ">" if strict else ">="
+            raise ValueError(f"{argument}: must be {relation} {least:g} (got {value!r})")
+    return array
+
+
+def _out(value: np.ndarray) -> Scalar:
+    return float(value) if np.ndim(value) == 0 else value
+
+
+def _ratio_and_damping(r: ArrayLike, zeta: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    return _array("r", r, least=0.0), _array("zeta", zeta, least=0.0)
+
+
+def _denominator(r: np.ndarray, zeta: np.ndarray) -> np.ndarray:
+    """√((1 − r²)² + (2ζr)²), the modulus of k − Mω² + icω over k."""
+    return np.hypot(1.0 - r * r, 2.0 * zeta * r)
+
+
+# --- the response as functions of r and ζ -----------------------------------------------------
+
+
+def unbalance_magnification(r: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """The magnification factor M·X/(m·e) = r² / √((1 − r²)² + (2ζr)²) of a machine with rotating unbalance.
+
+    0 at rest, 1/(2ζ) at resonance (r = 1), → 1 far above it: the machine
+    then turns about the common centre of mass.  Infinite at r = 1 with ζ = 0.
+    """
+    ratio, damping = _ratio_and_damping(r, zeta)
+    with np.errstate(divide="ignore"):
+        return _out(ratio * ratio / _denominator(ratio, damping))
+
+
+def force_magnification(r: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """X·k / F0 = 1 / √((1 − r²)² + (2ζr)²): the response to a force of constant amplitude F0 over its static one."""
+    ratio, damping = _ratio_and_damping(r, zeta)
+    with np.errstate(divide="ignore"):
+        return _out(1.0 / _denominator(ratio, damping))
+
+
+def phase(r: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """φ = atan2(2ζr, 1 − r²) (rad), in [0, π]: how far the motion lags behind the exciting force."""
+    ratio, damping = _ratio_and_damping(r, zeta)
+    return _out(np.arctan2(2.0 * damping * ratio, 1.0 - ratio * ratio))
+
+
+def transmissibility(r: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """TR = √(1 + (2ζr)²) / √((1 − r²)² + (2ζr)²): the force passed to the base over the exciting force.
+
+    1 at r = √2 for every ζ; below 1 (isolation) only above r = √2, where
+    more damping passes more force.
+    """
+    ratio, damping = _ratio_and_damping(r, zeta)
+    with np.errstate(divide="ignore"):
+        return _out(np.hypot(1.0, 2.0 * damping * ratio) / _denominator(ratio, damping))
+
+
+def displacement_transmissibility(r: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """X/Y of a mass on a spring and damper whose base moves as Y·sin ωt: the same expression as TR.
+
+    The motion relative to the base, Z/Y, is :func:`unbalance_magnification`.
+    """
+    return transmissibility(r, zeta)
+
+
+def displacement_transmissibility_phase(r: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """The lag (rad) of the mass's motion behind its base's: atan2(2ζr³, 1 − r² + (2ζr)²), in [0, π]."""
+    ratio, damping = _ratio_and_damping(r, zeta)
+    return _out(np.arctan2(2.0 * damping * ratio ** 3, 1.0 - ratio * ratio + (2.0 * damping * ratio) ** 2))
+
+
+# --- the system's constants --------------------------------------------------------------------
+
+
+def natural_frequency(stiffness: ArrayLike, mass: ArrayLike) -> Scalar:
+    """ωn = √(k/m) (rad/s); for a disc of mass m on a shaft of stiffness k, its critical (whirling) speed."""
+    return _out(np.sqrt(_array("stiffness", stiffness, least=0.0, strict=True)
+                        / _array("mass", mass, least=0.0, strict=True)))
+
+
+critical_speed = natural_frequency
+
+
+def damping_ratio(damping: ArrayLike, stiffness: ArrayLike, mass: ArrayLike) -> Scalar:
+    """ζ = c / (2·√(k·m)), c the viscous damping coefficient (N·s/m)."""
+    c = _array("damping", damping, least=0.0)
+    return _out(c / (2.0 * np.sqrt(_array("stiffness", stiffness, least=0.0, strict=True)
+                                   * _array("mass", mass, least=0.0, strict=True))))
+
+
+def circular_second_moment(diameter: ArrayLike) -> Scalar:
+    """I = π·d⁴/64 (m⁴) of a solid round shaft of diameter d (m), about a diameter."""
+    return _out(math.pi * _array("diameter", diameter, least=0.0, strict=True) ** 4 / 64.0)
+
+
+def shaft_stiffness(modulus: float, second_moment: float, length: float, position: float | None = None,
+                    support: Support = "simply_supported") -> float:
+    """The bending stiffness k = F/δ (N/m) of a massless shaft at the disc it carries.
+
+    ``simply_supported``: bearings at both ends of the span L, the disc at a
+    from one of them (default L/2), k = 3·E·I·L / (a²·b²), b = L − a
+    (48·E·I/L³ in the middle).  ``cantilever``: the shaft fixed at one end,
+    the disc at a from it (default L, the free end), k = 3·E·I/a³.
+    ``modulus`` is E (Pa), ``second_moment`` I (m⁴).
+    """
+    e = float(_array("modulus", modulus, least=0.0, strict=True))
+    i = float(_array("second_moment", second_moment, least=0.0, strict=True))
+    span = float(_array("length", length, least=0.0, strict=True))
+    if support not in SUPPORTS:
+        raise ValueError(f"support: must be one of {', '.join(SUPPORTS)} (got {support!r})")
+    if support == "simply_supported":
+        a = span / 2 if position is None else float(_array("position", position))
+        if not 0 < a < span:
+            raise ValueError(f"position: the disc must lie between the bearings, 0 < a < {span:g} (got {position!r})")
+        b = span - a
+        return 3.0 * e * i * span / (a * a * b * b)
+    a = span if position is None else float(_array("position", position))
+    if not 0 < a <= span:
+        raise ValueError(f"position: the disc must lie on the shaft, 0 < a <= {span:g} (got {position!r})")
+    return 3.0 * e * i / a ** 3
+
+
+# --- design and identification -----------------------------------------------------------------
+
+
+def isolation_frequency_ratio(wanted: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """The frequency ratio r > √2 at which the transmissibility is ``wanted`` (0 < TR < 1) with damping ζ.
+
+    TR² = (1 + 4ζ²s) / ((1 − s)² + 4ζ²s) with s = r² is the quadratic
+    TR²·s² − 2·(TR² + 2ζ²(1 − TR²))·s + TR² − 1 = 0; its root above 2 is
+    the one on the isolating side (the other is negative).
+    """
+    t = _array("wanted", wanted)
+    if np.any((t <= 0) | (t >= 1)):
+        raise ValueError(f"wanted: a transmissibility that isolates must be in (0, 1) (got {wanted!r})")
+    z = _array("zeta", zeta, least=0.0)
+    t2 = t * t
+    half_b = t2 + 2.0 * z * z * (1.0 - t2)
+    s = (half_b + np.sqrt(half_b * half_b + t2 * (1.0 - t2))) / t2
+    return _out(np.sqrt(s))
+
+
+def isolation_stiffness(mass: ArrayLike, omega: ArrayLike, wanted: ArrayLike, zeta: ArrayLike) -> Scalar:
+    """The mount stiffness k = M·(ω/r)² (N/m) that passes only ``wanted`` of the force at ω (rad/s)."""
+    r = isolation_frequency_ratio(wanted, zeta)
+    m = _array("mass", mass, least=0.0, strict=True)
+    w = _array("omega", omega, least=0.0, strict=True)
+    return _out(m * (w / r) ** 2)
+
+
+def damping_from_resonance(resonant_amplitude: ArrayLike, high_speed_amplitude: ArrayLike, *,
+                           at: Literal["resonance", "peak"] = "resonance") -> Scalar:
+    """ζ of a machine with rotating unbalance from its amplitude at resonance and far above it.
+
+    Far above resonance X∞ = m·e/M; at r = 1, X = (m·e/M)/(2ζ), so
+    ζ = X∞ / (2·X_res) (``at="resonance"``, the textbooks' reading).  With
+    ``at="peak"`` the first amplitude is the greatest one, reached at
+    r = 1/√(1 − 2ζ²) where M·X/(m·e) = 1/(2ζ√(1 − ζ²)); then
+    ζ² = (1 − √(1 − q⁻²))/2 with q = X_peak/X∞.
+    """
+    peak = _array("resonant_amplitude", resonant_amplitude, least=0.0, strict=True)
+    far = _array("high_speed_amplitude", high_speed_amplitude, least=0.0, strict=True)
+    if at == "resonance":
+        return _out(far / (2.0 * peak))
+    if at != "peak":
+        raise ValueError(f"at: must be 'resonance' or 'peak' (got {at!r})")
+    q = peak / far
+    if np.any(q <= 1):
+        raise ValueError("resonant_amplitude: the peak must exceed the amplitude far above resonance")
+    return _out(np.sqrt((1.0 - np.sqrt(1.0 - 1.0 / (q * q))) / 2.0))
+
+
+# --- a machine with rotating unbalance ------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class VibrationSpec:
+    """A machine of ``mass`` M (kg, the unbalanced mass included) on a mount of ``stiffness`` k (N/m).
+
+    ``unbalance`` is m·e (kg·m), ``damping_ratio`` ζ, ``omega`` the speed
+    (rad/s); ``transmissibility`` a wanted TR to design an isolating mount
+    for, or None.
+    """
+
+    mass: float
+    unbalance: float
+    stiffness: float
+    damping_ratio: float
+    omega: float
+    transmissibility: float | None = None
+
+    def __post_init__(self) -> None:
+        for name in ("mass", "stiffness", "omega"):
+            _array(name, getattr(self, name), least=0.0, strict=True)
+        _array("unbalance", self.unbalance, least=0.0)
+        _array("damping_ratio", self.damping_ratio, least=0.0)
+        if self.transmissibility is not None and not 0 < self.transmissibility < 1:
+            raise ValueError(f"transmissibility: a wanted transmissibility must be in (0, 1) "
+                             f"(got {self.transmissibility!r})")
+        if self.damping_ratio == 0 and self.omega == math.sqrt(self.stiffness / self.mass):
+            raise ValueError("omega: at resonance without damping the amplitude has no bound; give damping")
+
+
+@dataclass(frozen=True)
+class Response:
+    """The steady vibration of a :class:`VibrationSpec` machine (SI, angles in radians)."""
+
+    natural_frequency: float
+    frequency_ratio: float
+    magnification: float
+    amplitude: float
+    phase: float
+    exciting_force: float
+    transmissibility: float
+    transmitted_force: float
+    isolation_ratio: float | None
+    isolation_stiffness: float | None
+
+
+def steady_state(spec: VibrationSpec) -> Response:
+    """Amplitude X = (m·e/M)·magnification, its lag φ, and the force m·e·ω²·TR passed to the base."""
+    omega_n = natural_frequency(spec.stiffness, spec.mass)
+    r = spec.omega / omega_n
+    zeta = spec.damping_ratio
+    magnification = unbalance_magnification(r, zeta)
+    exciting = spec.unbalance * spec.omega ** 2
+    tr = transmissibility(r, zeta)
+    wanted = spec.transmissibility
+    return Response(
+        natural_frequency=omega_n, frequency_ratio=r, magnification=magnification,
+        amplitude=spec.unbalance / spec.mass * magnification, phase=phase(r, zeta), exciting_force=exciting,
+        transmissibility=tr, transmitted_force=exciting * tr,
+        isolation_ratio=None if wanted is None else isolation_frequency_ratio(wanted, zeta),
+        isolation_stiffness=None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta))
+
+
+def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
+    """The steady vibration as the results file writes it: SI, angles in degrees, speeds also in rpm.
+
+    ``amplitude`` (m), ``phase_deg`` and ``transmissibility`` are the
+    contract's keys; ``isolation`` appears when a transmissibility is wanted.
+    """
+    response = steady_state(spec)
+    document: dict[str, Any] = {
+        "amplitude": response.amplitude,
+        "phase_deg": math.degrees(response.phase),
+        "transmissibility": response.transmissibility,
+        "magnification": response.magnification,
+        "frequency_ratio": response.frequency_ratio,
+        "damping_ratio": spec.damping_ratio,
+        "natural_frequency": response.natural_frequency,
+        "critical_speed": response.natural_frequency,
+        "critical_speed_rpm": response.natural_frequency / RPM,
+        "exciting_force": response.exciting_force,
+        "transmitted_force": response.transmitted_force,
+    }
+    if spec.transmissibility is not None:
+        document["isolation"] = {"transmissibility": spec.transmissibility,
+                                 "frequency_ratio": response.isolation_ratio,
+                                 "stiffness": response.isolation_stiffness}
+    return document
+
+
+# --- the scene table -------------------------------------------------------------------------------
+
+
+def read_vibration(table: Table) -> VibrationSpec:
+    """The ``[vibration]`` table of a scene as a :class:`VibrationSpec`, each bad key named by its path.
+
+    ``mass``; ``unbalance`` (m·e) or ``unbalanced_mass`` and ``eccentricity``;
+    ``stiffness`` or ``shaft = {modulus, second_moment or diameter, length,
+    position, support}``; ``damping_ratio`` or ``damping`` (c; neither: 0);
+    ``omega`` or ``rpm``; ``transmissibility`` (wanted, optional).
+    """
+    mass = table.number("mass", positive=True)
+    unbalance = _unbalance(table, mass)
+    stiffness = _stiffness(table)
+    omega = _speed(table)
+    zeta = _damping(table, stiffness, mass)
+    wanted = table.number("transmissibility", None, positive=True)
+    if wanted is not None and not wanted < 1:
+        raise SceneError(table.where("transmissibility"), "must be below 1: a mount isolates only where TR < 1",
+                         wanted)
+    table.done()
+    if zeta == 0 and omega == math.sqrt(stiffness / mass):
+        raise SceneError(table.where("omega" if table.has("omega") else "rpm"),
+                         "is the natural frequency and there is no damping: the amplitude has no bound")
+    return VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega,
+                         transmissibility=wanted)
+
+
+def _one_of(table: Table, first: str, second: str) -> str:
+    """Which of two alternative keys the table gives; exactly one of them must be there."""
+    if table.has(first) and table.has(second):
+        raise SceneError(table.where(second), f"give either {first} or {second}, not both")
+    if not table.has(first) and not table.has(second):
+        raise SceneError(table.where(first), f"is required (or {second})")
+    return first if table.has(first) else second
+
+
+def _unbalance(table: Table, mass: float) -> float:
+    whole = table.has("unbalance")
+    parts = table.has("unbalanced_mass") or table.has("eccentricity")
+    if whole and parts:
+        raise SceneError(table.where("unbalance"), "give either unbalance (m·e) or unbalanced_mass and eccentricity, "
+                                                   "not both")
+    if not parts:
+        if not whole:
+            raise SceneError(table.where("unbalance"), "is required (m·e, kg·m), or unbalanced_mass and eccentricity")
+        return table.number("unbalance", non_negative=True)
+    small = table.number("unbalanced_mass", positive=True)
+    eccentricity = table.number("eccentricity", non_negative=True)
+    if small > mass:
+        raise SceneError(table.where("unbalanced_mass"), f"must not exceed mass ({mass:g} kg), which includes it",
+                         small)
+    return small * eccentricity
+
+
+def _stiffness(table: Table) -> float:
+    if _one_of(table, "stiffness", "shaft") == "stiffness":
+        return table.number("stiffness", positive=True)
+    shaft = table.table("shaft")
+    assert shaft is not None
+    modulus = shaft.number("modulus", positive=True)
+    if shaft.has("second_moment") and shaft.has("diameter"):
+        raise SceneError(shaft.where("diameter"), "give either second_moment or diameter, not both")
+    if shaft.has("diameter"):
+        second = circular_second_moment(shaft.number("diameter", positive=True))
+    else:
+        second = shaft.number("second_moment", positive=True)
+    length = shaft.number("length", positive=True)
+    position = shaft.number("position", None, positive=True)
+    support = check_choice(shaft.raw("support", "simply_supported"), shaft.where("support"), SUPPORTS)
+    shaft.done()
+    if position is not None and support == "simply_supported" and not position < length:
+        raise SceneError(shaft.where("position"), f"the disc must lie between the bearings, below length ({length:g} m)",
+                         position)
+    if position is not None and support == "cantilever" and not position <= length:
+        raise SceneError(shaft.where("position"), f"the disc must lie on the shaft, at most length ({length:g} m) "
+                                                  "from its fixed end", position)
+    return shaft_stiffness(modulus, second, length, position, support)
+
+
+def _speed(table: Table) -> float:
+    if _one_of(table, "omega", "rpm") == "omega":
+        return table.number("omega", positive=True)
+    return table.number("rpm", positive=True) * RPM
+
+
+def _damping(table: Table, stiffness: float, mass: float) -> float:
+    if table.has("damping_ratio") and table.has("damping"):
+        raise SceneError(table.where("damping"), "give either damping_ratio or damping (c), not both")
+    if table.has("damping"):
+        return float(damping_ratio(table.number("damping", non_negative=True), stiffness, mass))
+    return table.number("damping_ratio", 0.0, non_negative=True)
+
+
+__all__ = ["Response", "VibrationSpec", "circular_second_moment", "critical_speed", "damping_from_resonance",
+           "damping_ratio", "displacement_transmissibility", "displacement_transmissibility_phase",
+           "force_magnification", "isolation_frequency_ratio", "isolation_stiffness", "natural_frequency", "phase",
+           "read_vibration", "shaft_stiffness", "steady_state", "transmissibility", "unbalance_magnification",
+           "vibration_results"]

@@ -1,0 +1,383 @@
+"""Vibration from rotating unbalance against closed-form limits, the integrated ODE and published examples.
+
+The steady amplitude and phase of M·x'' + c·x' + k·x = m·e·ω²·sin ωt are
+checked against scipy.integrate.solve_ivp run from rest until the free
+motion has died out (e^−40), the steady cycle fitted by least squares; the
+force passed to the base and the motion of a machine on a moving base the
+same way.  The limits r → 0, r = 1, r → ∞ are checked against their closed
+forms; the shaft stiffness against the unit-load (Maxwell–Mohr) integral by
+scipy.integrate.quad; the isolation design against scipy.optimize.brentq;
+the damping from a resonance amplitude against Thomson's Example 3.2-1 and
+the peak found by scipy.optimize.minimize_scalar.  Sources in
+docs/sources/vibration.md.
+"""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.integrate import quad, solve_ivp
+from scipy.optimize import brentq, minimize_scalar
+
+from graphplan.errors import SceneError
+from graphplan.reader import Table
+from graphplan.report.vibration_plots import magnification_figure, transmissibility_figure
+from graphplan.vibration import (
+    RPM,
+    VibrationSpec,
+    circular_second_moment,
+    critical_speed,
+    damping_from_resonance,
+    damping_ratio,
+    displacement_transmissibility,
+    displacement_transmissibility_phase,
+    force_magnification,
+    isolation_frequency_ratio,
+    isolation_stiffness,
+    natural_frequency,
+    phase,
+    read_vibration,
+    shaft_stiffness,
+    steady_state,
+    transmissibility,
+    unbalance_magnification,
+    vibration_results,
+)
+
+ratios = st.floats(0.0, 20.0)
+dampings = st.floats(0.0, 2.0)
+
+
+# --- the integrated equation of motion ------------------------------------------------------------
+
+
+def fitted_cycles(rhs, omega, settle, *outputs):
+    """Integrate ``rhs`` from rest for ``settle`` s plus four periods; fit each ``output(t, y)`` as A·sin ωt + B·cos ωt.
+
+    Returns (amplitude, lag) of each output = amplitude·sin(ωt − lag), the lag in (−π, π].
+    """
+    period = 2 * math.pi / omega
+    t_end = settle + 4 * period
+    times = np.linspace(settle, t_end, 801)
+    solution = solve_ivp(rhs, (0.0, t_end), [0.0, 0.0], method="DOP853", t_eval=times, rtol=1e-11, atol=1e-14)
+    assert solution.success
+    basis = np.column_stack([np.sin(omega * times), np.cos(omega * times)])
+    fits = []
+    for output in outputs:
+        (a, b), *_ = np.linalg.lstsq(basis, output(solution.t, solution.y), rcond=None)
+        fits.append((math.hypot(a, b), math.atan2(-b, a)))
+    return fits
+
+
+MACHINE = {"M": 10.0, "k": 1000.0, "me": 0.02}   # ωn = 10 rad/s
+
+
+@pytest.mark.parametrize("r", [0.3, 0.9, 1.0, 1.7, 3.0])
+@pytest.mark.parametrize("zeta", [0.05, 0.3])
+def test_amplitude_phase_and_transmitted_force_agree_with_the_integrated_motion(r, zeta):
+    mass, stiffness, unbalance = MACHINE["M"], MACHINE["k"], MACHINE["me"]
+    omega_n = math.sqrt(stiffness / mass)
+    c = 2 * zeta * math.sqrt(stiffness * mass)
+    omega = r * omega_n
+    force = unbalance * omega ** 2
+
+    def rhs(t, y):
+        return [y[1], (force * math.sin(omega * t) - c * y[1] - stiffness * y[0]) / mass]
+
+    (amplitude, lag), (transmitted, _) = fitted_cycles(rhs, omega, 40 / (zeta * omega_n), lambda t, y: y[0],
+                                                       lambda t, y: stiffness * y[0] + c * y[1])
+    spec = VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega)
+    response = steady_state(spec)
+    assert response.amplitude == pytest.approx(amplitude, rel=1e-7)
+    assert response.phase == pytest.approx(lag % (2 * math.pi), abs=1e-7)
+    assert response.transmitted_force == pytest.approx(transmitted, rel=1e-7)
+
+
+@pytest.mark.parametrize("r", [0.5, 1.0, 2.5])
+def test_a_machine_on_a_moving_base_follows_the_displacement_transmissibility(r):
+    mass, stiffness, zeta, lift = 2.0, 800.0, 0.15, 0.003
+    omega_n = math.sqrt(stiffness / mass)
+    c = 2 * zeta * math.sqrt(stiffness * mass)
+    omega = r * omega_n
+
+    def rhs(t, y):
+        base, base_velocity = lift * math.sin(omega * t), lift * omega * math.cos(omega * t)
+        return [y[1], (-c * (y[1] - base_velocity) - stiffness * (y[0] - base)) / mass]
+
+    [(amplitude, lag)] = fitted_cycles(rhs, omega, 40 / (zeta * omega_n), lambda t, y: y[0])
+    assert displacement_transmissibility(r, zeta) * lift == pytest.approx(amplitude, rel=1e-7)
+    assert displacement_transmissibility_phase(r, zeta) == pytest.approx(lag % (2 * math.pi), abs=1e-7)
+
+
+# --- closed-form limits -----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.05, 0.2, 0.7, 1.5])
+def test_far_below_resonance_the_machine_barely_moves_and_passes_the_whole_force(zeta):
+    r = 1e-4
+    assert unbalance_magnification(r, zeta) == pytest.approx(r * r, rel=1e-6)
+    assert transmissibility(r, zeta) == pytest.approx(1.0, abs=1e-6)
+    assert phase(r, zeta) == pytest.approx(2 * zeta * r, abs=1e-10)
+    assert unbalance_magnification(0.0, zeta) == 0.0 and transmissibility(0.0, zeta) == 1.0
+
+
+@pytest.mark.parametrize("zeta", [0.01, 0.1, 0.5, 1.0])
+def test_at_resonance_the_amplitude_is_one_over_two_zeta_and_lags_a_quarter_turn(zeta):
+    assert unbalance_magnification(1.0, zeta) == pytest.approx(1 / (2 * zeta), rel=1e-15)
+    assert force_magnification(1.0, zeta) == pytest.approx(1 / (2 * zeta), rel=1e-15)
+    assert phase(1.0, zeta) == pytest.approx(math.pi / 2, abs=1e-15)
+    assert transmissibility(1.0, zeta) == pytest.approx(math.sqrt(1 + 4 * zeta ** 2) / (2 * zeta), rel=1e-15)
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.1, 0.5])
+def test_far_above_resonance_the_machine_turns_about_the_common_centre(zeta):
+    r = 1e4
+    assert unbalance_magnification(r, zeta) == pytest.approx(1.0, rel=1e-6)
+    assert phase(r, zeta) == pytest.approx(math.pi, abs=1e-3)
+    # TR → 2ζ/r with damping, 1/r² without.
+    assert transmissibility(r, zeta) == pytest.approx(2 * zeta / r if zeta else 1 / r ** 2, rel=1e-3)
+
+
+def test_undamped_resonance_is_unbounded():
+    assert unbalance_magnification(1.0, 0.0) == math.inf
+    assert transmissibility(1.0, 0.0) == math.inf
+    with pytest.raises(ValueError, match="no bound"):
+        VibrationSpec(mass=1.0, unbalance=0.01, stiffness=100.0, damping_ratio=0.0, omega=10.0)
+
+
+@given(dampings)
+def test_every_damping_passes_the_whole_force_at_root_two(zeta):
+    assert transmissibility(math.sqrt(2), zeta) == pytest.approx(1.0, rel=1e-12)
+
+
+@given(ratios, dampings)
+def test_the_unbalance_response_is_r_squared_times_the_force_response(r, zeta):
+    if r == 1 and zeta == 0:
+        return
+    assert unbalance_magnification(r, zeta) == pytest.approx(r * r * force_magnification(r, zeta), rel=1e-12)
+    assert 0 <= phase(r, zeta) <= math.pi
+
+
+def test_the_functions_broadcast_over_arrays():
+    r = np.linspace(0, 3, 7)
+    zeta = np.array([[0.1], [0.2]])
+    values = transmissibility(r, zeta)
+    assert values.shape == (2, 7)
+    assert values[1, 3] == transmissibility(r[3], 0.2)
+    assert isinstance(unbalance_magnification(0.5, 0.1), float)
+    with pytest.raises(ValueError, match="zeta: must be >= 0"):
+        phase(1.0, -0.1)
+
+
+# --- shafts and critical speeds ---------------------------------------------------------------------------
+
+
+def unit_load_stiffness(length, a, support, ei):
+    """1/δ with δ = ∫ M·m/EI dx for a unit load at the disc (Maxwell–Mohr), integrated by quad."""
+    if support == "cantilever":
+        deflection, _ = quad(lambda x: (a - x) ** 2, 0, a)
+    else:
+        b = length - a
+
+        def moment(x):
+            return b * x / length if x <= a else a * (length - x) / length
+
+        deflection, _ = quad(lambda x: moment(x) ** 2, 0, length, points=[a])
+    return ei / deflection
+
+
+@pytest.mark.parametrize(("support", "a"), [("simply_supported", 0.5), ("simply_supported", 0.2),
+                                             ("simply_supported", 0.93), ("cantilever", 1.0), ("cantilever", 0.4)])
+def test_shaft_stiffness_agrees_with_the_unit_load_integral(support, a):
+    modulus, second, length = 2.1e11, 3.0e-8, 1.0
+    expected = unit_load_stiffness(length, a, support, modulus * second)
+    assert shaft_stiffness(modulus, second, length, a, support) == pytest.approx(expected, rel=1e-10)
+
+
+def test_a_central_disc_gives_48_ei_over_l_cubed():
+    assert shaft_stiffness(2e11, 1e-8, 0.8) == pytest.approx(48 * 2e11 * 1e-8 / 0.8 ** 3, rel=1e-15)
+    assert shaft_stiffness(2e11, 1e-8, 0.8, support="cantilever") == pytest.approx(3 * 2e11 * 1e-8 / 0.8 ** 3)
+
+
+def test_critical_speed_of_a_rotor_disc_in_the_middle_of_a_shaft():
+    # GATE (Mechanical) question, as solved at studyadda.com (question bank, vibration analysis):
+    # a 10 kg disc in the middle of a massless steel shaft, d = 30 mm, 500 mm between simple
+    # bearings, E = 2.1e11 Pa.  Solution: k = 48EI/l³ = 3 206 309 N/m, fc = 90 Hz (answer B).
+    k = shaft_stiffness(2.1e11, circular_second_moment(0.030), 0.5)
+    assert k == pytest.approx(3_206_309, abs=1)
+    assert critical_speed(k, 10.0) / (2 * math.pi) == pytest.approx(90, abs=0.5)
+
+
+def test_bad_shafts_say_what_is_wrong():
+    with pytest.raises(ValueError, match="between the bearings"):
+        shaft_stiffness(2e11, 1e-8, 1.0, 1.0)
+    with pytest.raises(ValueError, match="on the shaft"):
+        shaft_stiffness(2e11, 1e-8, 1.0, 1.5, "cantilever")
+    with pytest.raises(ValueError, match="support: must be one of"):
+        shaft_stiffness(2e11, 1e-8, 1.0, support="fixed")  # type: ignore[arg-type]
+
+
+# --- design and identification ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("wanted", [0.05, 0.2, 0.5, 0.9])
+@pytest.mark.parametrize("zeta", [0.0, 0.05, 0.2, 0.6])
+def test_the_isolating_ratio_agrees_with_brent(wanted, zeta):
+    expected = brentq(lambda r: transmissibility(r, zeta) - wanted, math.sqrt(2), 1e4, xtol=1e-14, rtol=1e-14)
+    assert isolation_frequency_ratio(wanted, zeta) == pytest.approx(expected, rel=1e-11)
+
+
+@settings(max_examples=80)
+@given(st.floats(1e-3, 0.999), st.floats(0.0, 1.0))
+def test_the_isolating_ratio_gives_the_wanted_transmissibility(wanted, zeta):
+    r = isolation_frequency_ratio(wanted, zeta)
+    assert r > math.sqrt(2)
+    assert transmissibility(r, zeta) == pytest.approx(wanted, rel=1e-9)
+
+
+def test_undamped_isolation_by_hand_and_the_stiffness_that_gives_it():
+    # Without damping TR = 1/(r² − 1): TR = 0.1 needs r² = 11.
+    assert isolation_frequency_ratio(0.1, 0.0) == pytest.approx(math.sqrt(11), rel=1e-14)
+    k = isolation_stiffness(100.0, 100.0, 0.1, 0.0)
+    assert k == pytest.approx(100.0 * 100.0 ** 2 / 11, rel=1e-14)
+    with pytest.raises(ValueError, match=r"wanted: a transmissibility that isolates must be in \(0, 1\)"):
+        isolation_frequency_ratio(1.2, 0.1)
+
+
+def test_damping_from_resonance_and_far_above_thomson_example_3_2_1():
+    # W.T. Thomson, "Theory of Vibration with Applications", 4th ed. (Prentice Hall 1993; Taylor &
+    # Francis reprint), Sec. 3.2, Example 3.2-1: an eccentric-weight exciter gives 0.60 cm at
+    # resonance and approaches 0.08 cm far above it; from Eq. (3.2-4), ζ = 0.08/(2 × 0.60) = 0.0667.
+    zeta = damping_from_resonance(0.60, 0.08)
+    assert zeta == pytest.approx(0.0667, abs=5e-5)
+    # The machine so damped gives the two readings back: m·e/M = 0.08 cm.
+    assert 0.08 * unbalance_magnification(1.0, zeta) == pytest.approx(0.60, rel=1e-12)
+    assert 0.08 * unbalance_magnification(1e5, zeta) == pytest.approx(0.08, rel=1e-9)
+
+
+@pytest.mark.parametrize("zeta", [0.02, 0.0667, 0.2, 0.5])
+def test_damping_from_the_peak_amplitude(zeta):
+    peak = minimize_scalar(lambda r: -unbalance_magnification(r, zeta), bounds=(1.0, 3.0), method="bounded",
+                           options={"xatol": 1e-12})
+    assert damping_from_resonance(-peak.fun, 1.0, at="peak") == pytest.approx(zeta, rel=1e-7)
+
+
+def test_damping_ratio_and_natural_frequency():
+    assert damping_ratio(20.0, 1000.0, 10.0) == pytest.approx(0.1)
+    assert natural_frequency(1000.0, 10.0) == pytest.approx(10.0)
+    with pytest.raises(ValueError, match="mass: must be > 0"):
+        natural_frequency(1000.0, 0.0)
+
+
+# --- the scene table and the results --------------------------------------------------------------------
+
+
+def read(data):
+    return read_vibration(Table(data, "vibration"))
+
+
+def test_a_table_with_the_parts_of_the_unbalance_rpm_and_a_damping_coefficient():
+    spec = read({"mass": 100.0, "unbalanced_mass": 2.0, "eccentricity": 0.01, "stiffness": 1.0e5,
+                 "damping": 400.0, "rpm": 600.0, "transmissibility": 0.1})
+    assert spec.unbalance == pytest.approx(0.02) and spec.omega == pytest.approx(600 * RPM)
+    assert spec.damping_ratio == pytest.approx(400 / (2 * math.sqrt(1e5 * 100)))
+    assert spec.transmissibility == 0.1
+
+
+def test_a_table_with_a_shaft_for_the_stiffness():
+    spec = read({"mass": 10.0, "unbalance": 1e-4, "omega": 300.0, "damping_ratio": 0.02,
+                 "shaft": {"modulus": 2.1e11, "diameter": 0.03, "length": 0.5}})
+    assert spec.stiffness == pytest.approx(3_206_309, abs=1)
+    overhung = read({"mass": 10.0, "unbalance": 1e-4, "omega": 300.0,
+                     "shaft": {"modulus": 2e11, "second_moment": 1e-8, "length": 0.5, "position": 0.3,
+                               "support": "cantilever"}})
+    assert overhung.stiffness == pytest.approx(3 * 2e11 * 1e-8 / 0.3 ** 3)
+    assert overhung.damping_ratio == 0.0
+
+
+@pytest.mark.parametrize(("data", "message"), [
+    ({"unbalance": 0.01, "stiffness": 1e4, "omega": 10}, "vibration.mass: is required but missing"),
+    ({"mass": 1, "stiffness": 1e4, "omega": 10}, r"vibration.unbalance: is required \(m·e, kg·m\)"),
+    ({"mass": 1, "unbalance": 0.01, "unbalanced_mass": 0.1, "stiffness": 1e4, "omega": 10},
+     "vibration.unbalance: give either unbalance"),
+    ({"mass": 1, "unbalanced_mass": 2, "eccentricity": 0.01, "stiffness": 1e4, "omega": 10},
+     r"vibration.unbalanced_mass: must not exceed mass \(1 kg\)"),
+    ({"mass": 1, "unbalanced_mass": 0.2, "stiffness": 1e4, "omega": 10},
+     "vibration.eccentricity: is required but missing"),
+    ({"mass": 1, "unbalance": 0.01, "omega": 10}, r"vibration.stiffness: is required \(or shaft\)"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "shaft": {}, "omega": 10},
+     "vibration.shaft: give either stiffness or shaft, not both"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4}, r"vibration.omega: is required \(or rpm\)"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": 10, "rpm": 100},
+     "vibration.rpm: give either omega or rpm"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": -10}, r"vibration.omega: must be > 0 \(got -10\)"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": 10, "damping_ratio": 0.1, "damping": 3},
+     "vibration.damping: give either damping_ratio or damping"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": 10, "transmissibility": 1.5},
+     "vibration.transmissibility: must be below 1"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 100, "omega": 10},
+     "vibration.omega: is the natural frequency and there is no damping"),
+    ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "diameter": 0.01, "length": 1,
+                                                           "position": 1.0}},
+     "vibration.shaft.position: the disc must lie between the bearings"),
+    ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "diameter": 0.01, "length": 1,
+                                                           "support": "clamped"}},
+     "vibration.shaft.support: must be one of simply_supported, cantilever"),
+    ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "diameter": 0.01,
+                                                           "second_moment": 1e-9, "length": 1}},
+     "vibration.shaft.diameter: give either second_moment or diameter"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": 10, "dampingratio": 0.1},
+     "vibration.dampingratio: unknown key; did you mean 'damping_ratio'"),
+])
+def test_a_bad_table_names_the_key(data, message):
+    with pytest.raises(SceneError, match=message):
+        read(data)
+
+
+def test_results_carry_the_contract_keys():
+    spec = VibrationSpec(mass=100.0, unbalance=0.02, stiffness=1.0e5, damping_ratio=0.1, omega=60.0,
+                         transmissibility=0.2)
+    document = vibration_results(spec)
+    r = 60.0 / math.sqrt(1e3)
+    assert document["frequency_ratio"] == pytest.approx(r)
+    assert document["amplitude"] == pytest.approx(0.02 / 100 * unbalance_magnification(r, 0.1))
+    assert document["phase_deg"] == pytest.approx(math.degrees(phase(r, 0.1)))
+    assert document["transmissibility"] == pytest.approx(transmissibility(r, 0.1))
+    assert document["transmitted_force"] == pytest.approx(0.02 * 60.0 ** 2 * document["transmissibility"])
+    assert document["critical_speed_rpm"] == pytest.approx(math.sqrt(1e3) * 60 / (2 * math.pi))
+    isolation = document["isolation"]
+    assert transmissibility(isolation["frequency_ratio"], 0.1) == pytest.approx(0.2)
+    assert isolation["stiffness"] == pytest.approx(100.0 * (60.0 / isolation["frequency_ratio"]) ** 2)
+    assert "isolation" not in vibration_results(VibrationSpec(1.0, 0.01, 100.0, 0.1, 5.0))
+
+
+# --- the figures ---------------------------------------------------------------------------------------------
+
+
+def test_the_figures_are_svg_with_a_curve_for_each_damping_and_the_same_bytes_every_time(tmp_path):
+    zetas = (0.1, 0.25, 0.5)
+    first = magnification_figure(tmp_path / "a.svg", zetas, operating=(1.3, 0.1))
+    second = magnification_figure(tmp_path / "b.svg", zetas, operating=(1.3, 0.1))
+    text = first.read_text(encoding="utf-8")
+    assert text.startswith("<?xml") and "<svg" in text
+    assert first.read_bytes() == second.read_bytes()
+    for zeta in zetas:
+        assert f"<!-- ζ = {zeta:g} -->" in text
+    assert "<!-- working point -->" in text
+    other = transmissibility_figure(tmp_path / "nested" / "t.svg", zetas).read_text(encoding="utf-8")
+    assert "<!-- isolation: r &gt; √2 -->" in other or "<!-- isolation: r > √2 -->" in other
+    with pytest.raises(ValueError, match=r"zetas\[1\]: a damping ratio must be >= 0"):
+        transmissibility_figure(tmp_path / "x.svg", (0.1, -0.2))
+
+
+def test_nothing_imports_matplotlib_until_a_figure_is_drawn():
+    code = ("import sys, graphplan.vibration, graphplan.report.vibration_plots, graphplan.rotor_balancing, "
+            "graphplan.render.balancing; print('matplotlib' in sys.modules)")
+    output = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert output.strip() == "False"
