@@ -1,0 +1,263 @@
+"""The kinematic diagrams of the output link: displacement, velocity and acceleration, stacked.
+
+Drawn as the course project draws them: one φ axis of length L per diagram
+with the positions numbered at their ticks, the displacement with its
+ordinates at the positions and the chords between them, and under it the
+velocity and the acceleration got by the chord method with the pole
+construction (the pole P at distance H left of the origin, a ray parallel to
+each chord).  Each diagram also carries the analytic curve and says how far
+the chord method strays from it.  The scales are written as the textbook
+writes them: μs, μv = μs/(μt·H1), μa = μv/(μt·H2), μφ = 2π/L and μt = μφ/ω.
+
+The layout reads a :class:`~graphplan.kinematic_diagrams.KinematicDiagrams`
+record and computes no mechanics.  Every word comes from ``text``; English
+defaults are in :data:`DEFAULT_TEXT`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from ..kinematic_diagrams import KinematicDiagrams
+from ..scales import format_scale
+from .labels import Anchor, obstacles_of, place_labels
+from .primitives import (
+    Arrow,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds_of,
+    dot_marker,
+    moved_layers,
+    text_width,
+)
+from .svg import to_svg
+
+DEFAULT_TEXT: Mapping[str, str] = {
+    "kd_title": "Kinematic diagrams of the output link {link}",
+    "kd_displacement_title": "Displacement diagram {symbol}(φ)",
+    "kd_velocity_title": "Velocity diagram {symbol}(φ) by the chord method",
+    "kd_acceleration_title": "Acceleration diagram {symbol}(φ) by the chord method",
+    "kd_symbol_s_translating": "s{point}",
+    "kd_symbol_v_translating": "v{point}",
+    "kd_symbol_a_translating": "a{point}",
+    "kd_symbol_s_turning": "ψ{link}",
+    "kd_symbol_v_turning": "ω{link}",
+    "kd_symbol_a_turning": "ε{link}",
+    "kd_unit_s_translating": "m",
+    "kd_unit_v_translating": "m/s",
+    "kd_unit_a_translating": "m/s²",
+    "kd_unit_s_turning": "rad",
+    "kd_unit_v_turning": "rad/s",
+    "kd_unit_a_turning": "rad/s²",
+    "kd_per_mm": "{unit}/mm",
+    "kd_axis": "{symbol}, {unit}",
+    "kd_angle_axis": "φ",
+    "kd_displacement_scale": "μs = {value} {unit}",
+    "kd_velocity_scale": "μv = μs/(μt·H₁) = {value} {unit},  H₁ = {pole} mm",
+    "kd_acceleration_scale": "μa = μv/(μt·H₂) = {value} {unit},  H₂ = {pole} mm",
+    "kd_angle_scale": "μφ = 2π/L = {value} rad/mm ({degrees}°/mm),  L = {length} mm;  "
+                      "μt = μφ/|ω| = {time} s/mm,  |ω| = {omega} rad/s",
+    "kd_pole": "P",
+    "kd_pole_distance": "H",
+    "kd_analytic": "analytic",
+    "kd_chord": "chord method",
+    "kd_difference": "chord method − analytic: at most {value} % of the peak |{symbol}| = {peak} {unit}",
+    "kd_working_stroke": "working stroke, φw = {angle}°",
+    "kd_idle_stroke": "idle stroke, φi = {angle}°",
+}
+
+KINDS = ("displacement", "velocity", "acceleration")
+_LETTERS = {"displacement": "s", "velocity": "v", "acceleration": "a"}
+
+_CURVE = Stroke(0.5)
+_CHORD = Stroke(0.35, "#a83a1f", (2.0, 1.2))
+_CHORD_COLOUR = "#a83a1f"
+_AXIS = Stroke(0.35)
+_THIN = Stroke(0.18, "#555555")
+_RAY = Stroke(0.15, "#7a7a7a")
+
+TITLE_SIZE = 6.0
+CAPTION_SIZE = 4.0
+SCALE_SIZE = 3.2
+AXIS_LABEL_SIZE = 3.5
+NUMBER_SIZE = 2.5
+# How far an axis runs past the curves, and its arrowhead (mm).
+AXIS_RUN_MM = 12.0
+AXIS_HEAD_MM = 3.0
+TICK_MM = 1.2
+# Room above a diagram for its caption (two lines), and between one diagram and the next (mm).
+CAPTION_ROOM_MM = 16.0
+GAP_MM = 12.0
+
+
+def diagrams_svg(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> str:
+    """The SVG text of the kinematic diagrams (:func:`layout`)."""
+    return to_svg(layout(record, text))
+
+
+def layout(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> list[Layer]:
+    """The three diagrams stacked, displacement on top, their φ axes one under another; paper mm, y up."""
+    words = {**DEFAULT_TEXT, **(text or {})}
+    layers: list[Layer] = []
+    top = 0.0
+    for kind in KINDS:
+        panel = _panel(record, kind, words)
+        _, ymin, _, ymax = bounds_of(item for layer in panel for item in layer.items)
+        layers.extend(moved_layers(panel, 0.0, top - ymax))
+        top -= ymax - ymin + GAP_MM
+    layers.append(_footer(record, words, top))
+    xmin, _, _, ymax = bounds_of(item for layer in layers for item in layer.items)
+    title = words["kd_title"].format(link=record.link, point=record.point or "")
+    layers.append(Layer("sheet-title", (Text((xmin, ymax + 6.0), title, TITLE_SIZE, "start", weight="bold"),)))
+    return layers
+
+
+def _values(record: KinematicDiagrams, kind: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """A diagram's analytic values, the chord method's angles and values (SI), and its scale."""
+    scales = record.scales
+    if kind == "displacement":
+        return record.s, record.nodes, record.s_nodes, scales.displacement
+    if kind == "velocity":
+        return record.v, record.midpoints, record.v_chord, scales.velocity
+    return record.a, record.nodes, record.a_chord, scales.acceleration
+
+
+def _symbol(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> tuple[str, str]:
+    """The quantity's symbol (sB, ω4) and its unit."""
+    how = "translating" if record.translating else "turning"
+    letter = _LETTERS[kind]
+    symbol = words[f"kd_symbol_{letter}_{how}"].format(link=record.link, point=record.point or "")
+    return symbol, words[f"kd_unit_{letter}_{how}"]
+
+
+def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> list[Layer]:
+    """One diagram with its origin at (0, 0): axes, pole and rays, curves, numbers, caption."""
+    scales = record.scales
+    angle_mm = 1.0 / scales.angle
+    analytic, chord_x, chord_y, scale = _values(record, kind)
+    curve = tuple(zip((record.phi * angle_mm).tolist(), (analytic / scale).tolist(), strict=True))
+    points = tuple(zip((chord_x * angle_mm).tolist(), (chord_y / scale).tolist(), strict=True))
+    low = min(0.0, min(y for _, y in curve + points))
+    high = max(0.0, max(y for _, y in curve + points))
+    length = scales.axis_mm
+    pole = None if kind == "displacement" else (
+        scales.velocity_pole if kind == "velocity" else scales.acceleration_pole)
+    left = -(pole + 6.0) if pole is not None else -4.0
+    symbol, unit = _symbol(record, kind, words)
+
+    axes: list[Primitive] = [
+        Arrow((left, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"{kind}-phi-axis"),
+        Arrow((0.0, low - 4.0), (0.0, high + AXIS_RUN_MM), _AXIS, AXIS_HEAD_MM, key=f"{kind}-ordinate-axis"),
+    ]
+    # Ticks above the axis only, so that a position's number stands right under its tick.
+    axes.extend(Polyline(((x, 0.0), (x, TICK_MM)), _AXIS) for x in (record.nodes * angle_mm).tolist())
+
+    rays: list[Primitive] = []
+    if kind == "displacement":
+        # The ordinates of the positions: the chords between their ends are what the velocity diagram lays off.
+        rays.extend(Polyline(((x, 0.0), (x, y)), _THIN) for x, y in points if abs(y) > 1e-9)
+    else:
+        # The pole construction: a ray from P parallel to each chord of the diagram above cuts the
+        # ordinate axis at H·tan(chord) = the derivative at this diagram's scale; one ray per interval
+        # (the acceleration's closing node repeats its first).
+        rays.extend(Polyline(((-pole, 0.0), (0.0, y)), _RAY) for _, y in points[:record.count])
+
+    drawn: list[Primitive] = [Polyline(curve, _CURVE)]
+    drawn.append(Polyline(points, _CHORD))
+    drawn.extend(dot_marker(p, 0.55, _CHORD_COLOUR) for p in points)
+    if pole is not None:
+        drawn.append(dot_marker((-pole, 0.0), 0.7))
+
+    labels = [Text((-2.0, high + AXIS_RUN_MM - 1.0), words["kd_axis"].format(symbol=symbol, unit=unit),
+                   AXIS_LABEL_SIZE, "end"),
+              Text((length + AXIS_RUN_MM, -5.0), words["kd_angle_axis"], AXIS_LABEL_SIZE, "middle")]
+    # Every position is numbered when the numbers fit between the ticks, else every second, third, … one.
+    widest = max(text_width(str(number), NUMBER_SIZE) for number in record.numbers)
+    every = max(1, math.ceil((widest + 1.0) / (record.step * angle_mm)))
+    anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2)
+               for k, (x, number) in enumerate(zip((record.nodes * angle_mm).tolist(), record.numbers, strict=True))
+               if k % every == 0]
+    if pole is not None:
+        anchors.append(Anchor((-pole, 0.0), words["kd_pole"], AXIS_LABEL_SIZE, -3 * math.pi / 4))
+        anchors.append(Anchor((-pole / 2, 0.0), words["kd_pole_distance"], NUMBER_SIZE + 0.5, math.pi / 2))
+    placed = place_labels(anchors, obstacles_of(axes + rays + drawn + labels))
+
+    strokes: list[Primitive] = []
+    if kind == "displacement" and record.stroke_end is not None:
+        strokes = _strokes(record, words, low - 9.0)
+
+    title = words[f"kd_{kind}_title"].format(symbol=symbol)
+    caption = (Text((0.0, high + AXIS_RUN_MM + CAPTION_ROOM_MM - 5.0), title, CAPTION_SIZE, "start",
+                    weight="bold"),
+               Text((8.0, high + AXIS_RUN_MM + CAPTION_ROOM_MM - 10.5),
+                    _scale_line(record, kind, words, unit), SCALE_SIZE, "start"))
+    bottom = min(low - 4.0, *(t.at[1] - 2.0 for t in placed.texts), *(
+        y for item in strokes if isinstance(item, Polyline) for _, y in item.points))
+    peak = record.v_peak if kind == "velocity" else record.a_peak
+    notes: tuple[Text, ...] = ()
+    if kind != "displacement":
+        largest = record.largest_v_difference if kind == "velocity" else record.largest_a_difference
+        notes = (Text((0.0, bottom - 6.0), words["kd_difference"].format(
+            value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}", unit=unit), SCALE_SIZE, "start",
+            _CHORD_COLOUR),)
+    return [Layer(f"{kind}-axes", tuple(axes)), Layer(f"{kind}-rays", tuple(rays + strokes)),
+            Layer(f"{kind}-curves", tuple(drawn)), Layer(f"{kind}-leaders", placed.leaders),
+            Layer(f"{kind}-labels", tuple(labels) + placed.texts + notes),
+            Layer(f"{kind}-caption", caption)]
+
+
+def _strokes(record: KinematicDiagrams, words: Mapping[str, str], y: float) -> list[Primitive]:
+    """Dimension lines under the φ axis: the working stroke from 0 to its end, the idle stroke after it."""
+    angle_mm = 1.0 / record.scales.angle
+    end = record.stroke_end * angle_mm
+    length = record.scales.axis_mm
+    items: list[Primitive] = []
+    for x0, x1, key, angle in ((0.0, end, "kd_working_stroke", record.stroke_end),
+                               (end, length, "kd_idle_stroke", 2.0 * math.pi - record.stroke_end)):
+        items.append(Polyline(((x0, y), (x1, y)), _THIN))
+        items.extend(Polyline(((x, y - 1.5), (x, y + 1.5)), _THIN) for x in (x0, x1))
+        items.append(Text(((x0 + x1) / 2, y - 4.5), words[key].format(angle=f"{math.degrees(angle):.1f}"),
+                          SCALE_SIZE, "middle"))
+    return items
+
+
+def _scale_line(record: KinematicDiagrams, kind: str, words: Mapping[str, str], unit: str) -> str:
+    scales = record.scales
+    per_mm = words["kd_per_mm"].format(unit=f"({unit})" if "/" in unit else unit)
+    if kind == "displacement":
+        return words["kd_displacement_scale"].format(value=format_scale(scales.displacement), unit=per_mm)
+    if kind == "velocity":
+        return words["kd_velocity_scale"].format(value=scale_text(scales.velocity), unit=per_mm,
+                                                 pole=f"{scales.velocity_pole:g}")
+    return words["kd_acceleration_scale"].format(value=scale_text(scales.acceleration), unit=per_mm,
+                                                 pole=f"{scales.acceleration_pole:g}")
+
+
+def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> Layer:
+    """The legend (analytic, chord method) and the scales of the common φ axis, under the last diagram."""
+    scales = record.scales
+    y = top + GAP_MM - 8.0
+    items: list[Primitive] = [
+        Polyline(((0.0, y), (12.0, y)), _CURVE),
+        Text((14.0, y - 1.2), words["kd_analytic"], SCALE_SIZE, "start"),
+        Polyline(((60.0, y), (72.0, y)), _CHORD), dot_marker((66.0, y), 0.55, _CHORD_COLOUR),
+        Text((74.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
+        Text((0.0, y - 8.0), words["kd_angle_scale"].format(
+            value=scale_text(scales.angle), degrees=f"{math.degrees(scales.angle):.4g}",
+            length=f"{scales.axis_mm:g}", time=scale_text(scales.time), omega=f"{abs(record.omega):.4g}"),
+            SCALE_SIZE, "start"),
+    ]
+    return Layer("legend", tuple(items))
+
+
+def scale_text(value: float) -> str:
+    """A scale factor fixed by a pole distance, to four significant digits, five decimals at least."""
+    decimals = max(5, 3 - math.floor(math.log10(abs(value)))) if value else 5
+    shown = f"{value:.{decimals}f}".rstrip("0").rstrip(".")
+    return shown or "0"

@@ -1,0 +1,253 @@
+"""The DXF backend: the same layers of primitives the SVG backend draws, written with ezdxf.
+
+Paper millimetres with y up are the DXF's own model space (``$INSUNITS`` =
+mm), so points are written as they are.  Each graphplan layer goes to one
+of a few DXF layers by :func:`dxf_layer`; each primitive becomes:
+
+* a :class:`~.primitives.Polyline`: an LWPOLYLINE, and a solid HATCH when it is filled;
+* a :class:`~.primitives.Circle`: a CIRCLE, and a solid HATCH when it is filled;
+* an :class:`~.primitives.Arrow`: its shaft as an LWPOLYLINE and its head as a solid HATCH;
+* a :class:`~.primitives.Text`: a TEXT on its baseline, aligned left, centre or right,
+  in a TrueType style that has its glyphs (DejaVu Sans, or Noto Sans CJK for Chinese).
+
+A white fill only hides what lies under a pin or a block on white paper; a
+model space is often dark, so white fills are left out.  Stroke widths go to
+the nearest DXF lineweight, dash patterns to linetypes of their own, colours
+other than black to true colours (black stays BYLAYER, colour 7, which a CAD
+program shows black on white and white on black).
+
+ezdxf stamps the time and random GUIDs into a new document and again when
+it writes one; they are fixed while it does (its option
+``write_fixed_meta_data_for_testing``, set and restored around the calls,
+so not safe across threads) so that the same layers give the same bytes.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import re
+import unicodedata
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from typing import IO
+
+from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds
+
+# The DXF layers and the words of a graphplan layer's name that send it there.
+LINKS, CONSTRUCTION, VECTORS, TEXT, CURVES, AXES, SHEET = (
+    "LINKS", "CONSTRUCTION", "VECTORS", "TEXT", "CURVES", "AXES", "SHEET")
+LAYER_WORDS: dict[str, str] = {
+    # the mechanism: links, blocks, pins, frame pivots; the lever's outline
+    "links": LINKS, "positions": LINKS, "extremes": LINKS, "frame": LINKS, "plan": LINKS,
+    # thin lines: lines of action, arms, leaders, paths of points, pole rays and ordinates
+    "lines": CONSTRUCTION, "arms": CONSTRUCTION, "arm": CONSTRUCTION, "leaders": CONSTRUCTION,
+    "paths": CONSTRUCTION, "rays": CONSTRUCTION,
+    # vectors and what marks them: plan vectors, forces, moments, senses of motion, plan points
+    "vectors": VECTORS, "forces": VECTORS, "moments": VECTORS, "senses": VECTORS, "points": VECTORS,
+    # lettering
+    "labels": TEXT, "caption": TEXT, "title": TEXT,
+    # diagrams over the cycle
+    "curves": CURVES, "legend": CURVES, "axes": AXES,
+}
+# Lineweight (1/100 mm), in the order the layers are created.
+LAYER_LINEWEIGHTS = {LINKS: 70, CONSTRUCTION: 25, VECTORS: 50, TEXT: 25, CURVES: 50, AXES: 35, SHEET: 50}
+
+# Text styles: a TrueType font for Latin, Greek and Cyrillic, and one for Chinese (which also has Latin
+# letters and digits, for a text that mixes them); bold variants for titles.
+TEXT_STYLES = {
+    ("latin", "normal"): ("GP-SANS", "DejaVuSans.ttf", "DejaVu Sans"),
+    ("latin", "bold"): ("GP-SANS-BOLD", "DejaVuSans-Bold.ttf", "DejaVu Sans"),
+    ("cjk", "normal"): ("GP-CJK", "NotoSansCJK-Regular.ttc", "Noto Sans CJK SC"),
+    ("cjk", "bold"): ("GP-CJK-BOLD", "NotoSansCJK-Bold.ttc", "Noto Sans CJK SC"),
+}
+
+_NAMED_COLOURS = {"black": (0, 0, 0), "white": (255, 255, 255), "gray": (128, 128, 128), "grey": (128, 128, 128),
+                  "red": (255, 0, 0), "green": (0, 128, 0), "blue": (0, 0, 255)}
+_HEX = re.compile(r"#([0-9a-fA-F]{3}|[0-9a-fA-F]{6})")
+# ACI 7: black on a white background, white on a dark one.
+_FOREGROUND = 7
+_BYLAYER = 256
+# LWPOLYLINE flag: the dash pattern runs on across the vertices instead of restarting at each.
+_PLINEGEN = 128
+# Characters a DXF layer name may not hold.
+_BAD_NAME = re.compile(r"[<>/\\\":;?*|=`,\s]")
+
+
+def dxf_layer(name: str, item: Primitive | None = None) -> str:
+    """The DXF layer of a primitive in the graphplan layer ``name``.
+
+    A layer named ``sheet-…`` (the sheet's title, frame and title block) goes
+    whole to SHEET; any other text goes to TEXT; the rest goes where the last
+    word of ``name`` that :data:`LAYER_WORDS` knows sends it
+    (``body-II-3-4-links`` → LINKS, ``lever-arm-Fu3`` → CONSTRUCTION).  A name
+    with no known word keeps its own name, upper-cased, so nothing is lost.
+    """
+    words = name.lower().split("-")
+    if words[0] == "sheet":
+        return SHEET
+    if isinstance(item, Text):
+        return TEXT
+    for word in reversed(words):
+        if word in LAYER_WORDS:
+            return LAYER_WORDS[word]
+    return _BAD_NAME.sub("_", name.upper()) or "0"
+
+
+def to_dxf_document(layers: Sequence[Layer]):
+    """An ezdxf document (R2013, mm, y up) holding ``layers``."""
+    import ezdxf
+    from ezdxf import units
+
+    with _fixed_metadata():
+        document = ezdxf.new("R2013", setup=False, units=units.MM)
+    document.header["$MEASUREMENT"] = 1
+    document.header["$LWDISPLAY"] = 1
+    for name, weight in LAYER_LINEWEIGHTS.items():
+        document.layers.add(name, color=_FOREGROUND, lineweight=weight)
+    for style, font, family in TEXT_STYLES.values():
+        entry = document.styles.add(style, font=font)
+        entry.set_extended_font_data(family, bold=style.endswith("BOLD"))
+    space = document.modelspace()
+    writer = _Writer(document, space)
+    for layer in layers:
+        for item in layer.items:
+            writer.add(dxf_layer(layer.name, item), item)
+    xmin, ymin, xmax, ymax = bounds(layers)
+    # ezdxf copies the model space's extents into $EXTMIN/$EXTMAX when it writes.
+    space.dxf.extmin = (xmin, ymin, 0.0)
+    space.dxf.extmax = (xmax, ymax, 0.0)
+    document.set_modelspace_vport(height=1.1 * (ymax - ymin), center=((xmin + xmax) / 2, (ymin + ymax) / 2))
+    return document
+
+
+def layers_to_dxf(layers: Sequence[Layer], target: str | os.PathLike[str] | IO) -> None:
+    """Write ``layers`` as a DXF file (UTF-8) to a path or to an open text or binary stream."""
+    document = to_dxf_document(layers)
+    with _fixed_metadata():
+        if isinstance(target, (str, os.PathLike)):
+            document.saveas(target, encoding="utf-8")
+            return
+        text = io.StringIO()
+        document.write(text)
+    data = text.getvalue()
+    if isinstance(target, io.TextIOBase):
+        target.write(data)
+    else:
+        target.write(data.encode("utf-8"))
+
+
+@contextmanager
+def _fixed_metadata() -> Iterator[None]:
+    """ezdxf writes a fixed date and GUIDs instead of now and random ones, for the duration."""
+    import ezdxf
+
+    before = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
+    try:
+        yield
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = before
+
+
+class _Writer:
+    """Adds primitives to a model space, creating a linetype for each dash pattern it meets."""
+
+    def __init__(self, document, space) -> None:
+        self._document = document
+        self._space = space
+
+    def add(self, layer: str, item: Primitive) -> None:
+        if layer not in self._document.layers:
+            self._document.layers.add(layer, color=_FOREGROUND)
+        if isinstance(item, Polyline):
+            self._polyline(layer, item.points, item.stroke, item.closed)
+            if _filled(item.fill):
+                self._hatch(layer, item.fill).paths.add_polyline_path(item.points, is_closed=True)
+        elif isinstance(item, Circle):
+            self._space.add_circle(item.centre, item.radius, dxfattribs=self._attributes(layer, item.stroke))
+            if _filled(item.fill):
+                self._hatch(layer, item.fill).paths.add_edge_path().add_arc(item.centre, item.radius, 0.0, 360.0)
+        elif isinstance(item, Arrow):
+            shaft = item.shaft()
+            self._polyline(layer, shaft.points, shaft.stroke, False)
+            self._hatch(layer, item.stroke.colour).paths.add_polyline_path(item.tip().points, is_closed=True)
+        elif isinstance(item, Text):
+            self._text(layer, item)
+        else:  # pragma: no cover - the Primitive union is closed
+            raise TypeError(f"unknown primitive {item!r}")
+
+    def _attributes(self, layer: str, stroke: Stroke) -> dict:
+        attributes: dict = {"layer": layer, "lineweight": _lineweight(stroke.width)}
+        attributes.update(_colour_attributes(stroke.colour))
+        if stroke.dash:
+            attributes["linetype"] = self._linetype(stroke.dash)
+        return attributes
+
+    def _polyline(self, layer: str, points, stroke: Stroke, closed: bool) -> None:
+        entity = self._space.add_lwpolyline(points, format="xy", close=closed,
+                                            dxfattribs=self._attributes(layer, stroke))
+        if stroke.dash:
+            entity.dxf.flags |= _PLINEGEN
+
+    def _hatch(self, layer: str, colour: str):
+        rgb = _rgb(colour)
+        hatch = self._space.add_hatch(color=_FOREGROUND, dxfattribs={"layer": layer})
+        hatch.set_solid_fill(color=_FOREGROUND, rgb=None if rgb == (0, 0, 0) else rgb)
+        return hatch
+
+    def _text(self, layer: str, item: Text) -> None:
+        from ezdxf.enums import TextEntityAlignment
+
+        script = "cjk" if _east_asian(item.text) else "latin"
+        style = TEXT_STYLES[(script, "bold" if item.weight == "bold" else "normal")][0]
+        attributes = {"layer": layer, "style": style, **_colour_attributes(item.colour)}
+        align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
+                 "end": TextEntityAlignment.RIGHT}[item.anchor]
+        self._space.add_text(item.text, height=item.size, dxfattribs=attributes).set_placement(item.at, align=align)
+
+    def _linetype(self, dash: tuple[float, ...]) -> str:
+        name = "GP-DASH-" + "-".join(f"{d:g}" for d in dash)
+        if name not in self._document.linetypes:
+            # DXF alternates dashes (positive) and gaps (negative); an odd SVG pattern repeats to even.
+            pattern = list(dash) * (2 if len(dash) % 2 else 1)
+            elements = [d if k % 2 == 0 else -d for k, d in enumerate(pattern)]
+            self._document.linetypes.add(name, pattern=[sum(pattern), *elements],
+                                         description="graphplan " + " ".join(f"{d:g}" for d in dash))
+        return name
+
+
+def _filled(fill: str | None) -> bool:
+    return fill is not None and fill != "none" and _rgb(fill) != (255, 255, 255)
+
+
+def _colour_attributes(colour: str) -> dict:
+    rgb = _rgb(colour)
+    if rgb == (0, 0, 0):
+        return {"color": _BYLAYER}
+    from ezdxf.colors import rgb2int
+
+    return {"true_color": rgb2int(rgb)}
+
+
+def _rgb(colour: str) -> tuple[int, int, int]:
+    """A colour of the primitives (#rrggbb, #rgb or a few names) as (r, g, b)."""
+    key = colour.strip().lower()
+    if key in _NAMED_COLOURS:
+        return _NAMED_COLOURS[key]
+    if _HEX.fullmatch(key):
+        digits = key[1:] if len(key) == 7 else "".join(2 * c for c in key[1:])
+        return (int(digits[0:2], 16), int(digits[2:4], 16), int(digits[4:6], 16))
+    raise ValueError(f"colour {colour!r} is not #rrggbb, #rgb or one of {', '.join(_NAMED_COLOURS)}")
+
+
+def _lineweight(width: float) -> int:
+    """The DXF lineweight (1/100 mm) nearest to a stroke width in mm."""
+    from ezdxf.lldxf.const import VALID_DXF_LINEWEIGHTS
+
+    return min(VALID_DXF_LINEWEIGHTS, key=lambda weight: abs(weight - 100.0 * width))
+
+
+def _east_asian(text: str) -> bool:
+    """Whether ``text`` has a character of East Asian width: the rule the SVG backend picks fonts by."""
+    return any(unicodedata.east_asian_width(c) in ("W", "F") for c in text)

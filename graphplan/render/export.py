@@ -1,0 +1,56 @@
+"""PNG and PDF of a drawing, rendered from its SVG text by cairosvg.
+
+cairosvg (and through it cairo) is imported inside the functions, so that a
+run that writes only SVG never loads it; it is an optional dependency.
+
+Fonts: cairosvg takes only the first family of a ``font-family`` list and
+cairo asks fontconfig for it, without falling back glyph by glyph.  The SVG
+backend therefore names DejaVu Sans first (Latin, Greek, Cyrillic) and Noto
+Sans CJK first for a text with Chinese in it; both must be installed (on
+Debian and Ubuntu: ``fonts-dejavu-core`` and ``fonts-noto-cjk``), or cairo
+draws another font's glyphs or empty boxes.
+
+Determinism: cairo writes no date into a PNG.  Into a PDF it writes the
+creation date; :func:`svg_to_pdf` sets that entry (and the modification date) to an empty string, which
+cairo (1.16 and later) takes as "no date" and leaves out, so the same SVG
+gives the same PDF bytes with the same cairo.  The ``/Producer`` entry still
+names cairo's version.
+"""
+
+from __future__ import annotations
+
+import functools
+
+# Resolution of a PNG when none is asked for: enough for a sheet's 2.5 mm lettering on a screen.
+DEFAULT_DPI = 150.0
+
+
+def svg_to_png(svg_text: str, dpi: float = DEFAULT_DPI) -> bytes:
+    """The PNG of an SVG document whose size is in mm, at ``dpi`` pixels per inch."""
+    if not dpi > 0:
+        raise ValueError(f"dpi must be > 0 (got {dpi!r})")
+    import cairosvg
+
+    return cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi)
+
+
+def svg_to_pdf(svg_text: str) -> bytes:
+    """A one-page PDF of an SVG document, the page the SVG's size, without a creation date."""
+    return _undated_pdf_surface().convert(svg_text.encode("utf-8"))
+
+
+@functools.cache
+def _undated_pdf_surface():
+    """cairosvg's PDF surface with cairo's creation date left out of the document."""
+    import cairocffi
+    from cairosvg.surface import PDFSurface
+
+    class UndatedPDFSurface(PDFSurface):
+        def _create_surface(self, width, height):
+            surface, width, height = super()._create_surface(width, height)
+            # An empty date is no ISO 8601 date: cairo drops the /CreationDate (and /ModDate) it would write.
+            surface.set_metadata(cairocffi.PDF_METADATA_CREATE_DATE, "")
+            surface.set_metadata(cairocffi.PDF_METADATA_MOD_DATE, "")
+            return surface, width, height
+
+    return UndatedPDFSurface

@@ -1,0 +1,293 @@
+"""Kinematic diagrams of the output link: the numbers against closed forms, the chord method's order, the drawing.
+
+The analytic curves are checked against the centric slider-crank's closed form
+(x = r·cos φ + √(l² − r²·sin² φ) and its two derivatives, written out here) and
+the crank-rocker's swing from the triangle at its dead centres (law of cosines);
+velocity and acceleration against finite differences of the displacement. The chord
+method is checked on sin φ, where the chord slopes have a closed form, and on the
+fixtures, where its error must fall as h² when the count of positions doubles. The
+drawing is checked on its primitives: the pole rays parallel to the chords of the
+diagram above (which is what μv = μs/(μt·H) means), the ordinates at the scales,
+every text key used, no two texts overlapping.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+from shapely.geometry import box
+
+from graphplan.errors import SceneError
+from graphplan.kinematic_diagrams import (
+    FIELD_MM,
+    GREATEST_POLE_MM,
+    LEAST_POLE_MM,
+    chord_derivative,
+    closed_chord_derivative,
+    kinematic_diagrams,
+)
+from graphplan.mechanism import build
+from graphplan.positions import make_positions
+from graphplan.render import diagrams
+from graphplan.render.primitives import Arrow, Circle, Polyline, Text, text_extent
+from graphplan.scene import loads
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+
+
+def scene_text(name: str, count: int | None = None) -> str:
+    text = (FIXTURES / f"{name}.toml").read_text(encoding="utf-8")
+    if count is not None:
+        text = re.sub(r"(?m)^count\s*=\s*\d+", f"count = {count}", text)
+    return text
+
+
+@functools.cache
+def record(name: str, count: int | None = None):
+    mechanism = build(loads(scene_text(name, count)))
+    positions = make_positions(mechanism)
+    return mechanism, positions, kinematic_diagrams(mechanism, positions)
+
+
+# --- the chord method ------------------------------------------------------------------------------------------
+
+
+def test_chord_slopes_of_a_sine_are_the_cosine_at_the_mid_intervals_times_sinc():
+    # (sin(φ + h) − sin φ)/h = cos(φ + h/2)·sin(h/2)/(h/2): the chord's slope is the derivative at the
+    # mid-interval, scaled by sinc(h/2) = 1 − h²/24 + …
+    h = 2 * math.pi / 12
+    nodes = h * np.arange(13)
+    slopes = chord_derivative(np.sin(nodes), h)
+    sinc = math.sin(h / 2) / (h / 2)
+    assert slopes == pytest.approx(np.cos(nodes[:-1] + h / 2) * sinc, abs=1e-14)
+    # Twice round the closed cycle: −sin φ at the nodes, scaled by sinc².
+    second = closed_chord_derivative(slopes, h)
+    assert second.shape == (13,)
+    assert second == pytest.approx(-np.sin(nodes) * sinc**2, abs=1e-14)
+
+
+def test_chord_derivative_rejects_a_step_that_is_not_positive():
+    with pytest.raises(ValueError, match="step of the chord method must be > 0"):
+        chord_derivative(np.arange(3.0), 0.0)
+
+
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
+def test_chord_method_error_falls_as_h_squared(name):
+    errors_v, errors_a = [], []
+    for count in (12, 24, 48, 96):
+        found = record(name, count)[2]
+        errors_v.append(np.max(np.abs(found.v_chord - found.v_mid)))
+        errors_a.append(np.max(np.abs(found.a_chord - found.a_nodes)))
+    for errors in (errors_v, errors_a):
+        ratios = np.array(errors[:-1]) / np.array(errors[1:])
+        # Halving h quarters the error once the leading term h²·s‴/24 (h²·s⁗/12) rules.
+        assert ratios[-1] == pytest.approx(4.0, abs=0.3)
+        assert np.all(ratios > 2.5)
+        # 64 in the limit; the rocker's acceleration enters the h² regime only from 24 positions on.
+        assert errors[0] / errors[-1] > 30
+
+
+# --- the analytic curves ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
+def test_analytic_velocity_and_acceleration_are_the_derivatives_of_the_displacement(name):
+    found = record(name)[2]
+    time = found.phi / abs(found.omega)
+    # Second-order central differences on the 1° grid: error ~ h²/6·s‴, about 5e-5 of the peak.
+    assert np.max(np.abs(np.gradient(found.s, time, edge_order=2) - found.v)) < 2e-3 * found.v_peak
+    assert np.max(np.abs(np.gradient(found.v, time, edge_order=2) - found.a)) < 2e-3 * found.a_peak
+
+
+def test_slider_crank_displacement_velocity_acceleration_match_the_closed_form():
+    _, positions, found = record("engine_slider_crank")
+    r, l, omega = 0.05, 0.19, 1500 * math.pi / 30   # the fixture's crank, rod and speed
+
+    def x(phi):
+        return r * np.cos(phi) + np.sqrt(l**2 - (r * np.sin(phi)) ** 2)
+
+    def dx(phi):
+        root = np.sqrt(l**2 - (r * np.sin(phi)) ** 2)
+        return -r * np.sin(phi) - r**2 * np.sin(phi) * np.cos(phi) / root
+
+    def ddx(phi):
+        root = np.sqrt(l**2 - (r * np.sin(phi)) ** 2)
+        return (-r * np.cos(phi) - r**2 * np.cos(2 * phi) / root
+                - r**4 * (np.sin(phi) * np.cos(phi)) ** 2 / root**3)
+
+    crank = positions.values[0] + found.phi   # counter-clockwise crank
+    # The expansion stroke runs backward, toward the crank: s grows as x falls.
+    assert found.s == pytest.approx(x(positions.values[0]) - x(crank), abs=1e-12)
+    assert found.v == pytest.approx(-omega * dx(crank), abs=1e-9)
+    assert found.a == pytest.approx(-omega**2 * ddx(crank), abs=1e-6)
+    assert found.translating and found.point == "B"
+    # Top dead centre to bottom dead centre: the stroke 2r at half a turn.
+    assert found.s.max() == pytest.approx(2 * r, abs=1e-12)
+    assert found.stroke_end == pytest.approx(math.pi, abs=1e-9)
+
+
+def test_rocker_swings_through_the_angle_between_its_dead_centre_positions():
+    found = record("ratchet_crank_rocker")[2]
+    oc, crank, coupler, rocker = 0.55, 0.175, 0.55, 0.325
+
+    def angle_at_c(ob):   # the angle OCB of the triangle with the crank and coupler in line
+        return math.acos((oc**2 + rocker**2 - ob**2) / (2 * oc * rocker))
+
+    swing = angle_at_c(coupler + crank) - angle_at_c(coupler - crank)
+    assert not found.translating
+    assert found.s[0] == 0.0
+    assert np.all(found.s >= -1e-12)
+    # The dense grid steps 1°: the peak is missed by s″·(0.5°)²/2 at most.
+    assert found.s.max() == pytest.approx(swing, abs=2e-4)
+    assert found.v_nodes[0] == pytest.approx(0.0, abs=1e-9 * found.v_peak)
+
+
+def test_crank_epsilon_is_left_out_so_the_crank_turns_uniformly():
+    # The plan method's ε of the crank holds at one instant; over the cycle the crank turns at ω, so
+    # the diagrams are the same with or without it.
+    uniform = record("shaper_six_bar")[2]
+    text = scene_text("shaper_six_bar").replace("epsilon = 0.0", "epsilon = 40.0")
+    assert "epsilon = 40.0" in text
+    mechanism = build(loads(text))
+    accelerated = kinematic_diagrams(mechanism, make_positions(mechanism))
+    assert accelerated.v == pytest.approx(uniform.v, rel=1e-12, abs=1e-12)
+    assert accelerated.a == pytest.approx(uniform.a, rel=1e-9, abs=1e-9 * uniform.a_peak)
+
+
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
+def test_pole_distance_is_the_largest_whole_mm_that_keeps_each_curve_in_its_field(name):
+    found = record(name)[2]
+    scales = found.scales
+    for pole, values, scale in ((scales.velocity_pole, found.v, scales.velocity),
+                                (scales.acceleration_pole, found.a, scales.acceleration)):
+        assert pole == int(pole) and LEAST_POLE_MM <= pole <= GREATEST_POLE_MM
+        drawn = np.ptp(values) / scale
+        assert drawn <= FIELD_MM + 1e-9
+        if pole < GREATEST_POLE_MM:
+            assert drawn * (pole + 1) / pole > FIELD_MM
+
+
+def test_scene_without_a_working_link_is_refused():
+    text = re.sub(r"(?m)^working\s*=.*$", "", scene_text("ratchet_crank_rocker"))
+    text = re.sub(r"(?ms)^\[\[loads\]\].*?(?=^\[positions\])", "", text)
+    text = re.sub(r"(?m)^start\s*=.*$", "start = 0.0", text)
+    mechanism = build(loads(text))
+    with pytest.raises(SceneError, match=r"^positions\.working: kinematic diagrams need the output link"):
+        kinematic_diagrams(mechanism, make_positions(mechanism))
+
+
+def test_slider_driver_is_refused():
+    mechanism = build(loads((FIXTURES / "slider_driven.toml").read_text(encoding="utf-8")))
+    if mechanism.scene.positions.working is None:
+        pytest.skip("the slider-driven fixture names no working link")
+    with pytest.raises(SceneError, match=r"^driver\.kind: kinematic diagrams are drawn against a crank's angle"):
+        kinematic_diagrams(mechanism, make_positions(mechanism))
+
+
+# --- the drawing -----------------------------------------------------------------------------------------------
+
+
+def layers_of(found, text=None):
+    return {layer.name: layer.items for layer in diagrams.layout(found, text)}
+
+
+def polylines(items):
+    return [item for item in items if isinstance(item, Polyline)]
+
+
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker"])
+def test_pole_rays_are_parallel_to_the_chords_of_the_diagram_above(name):
+    found = record(name)[2]
+    layers = layers_of(found)
+    # The chords are the dashed chord-method polyline of each diagram (its second polyline).
+    s_chords = np.array(polylines(layers["displacement-curves"])[1].points)
+    v_points = np.array(polylines(layers["velocity-curves"])[1].points)
+    origins = {kind: next(item.start for item in layers[f"{kind}-axes"] if getattr(item, "key", "").endswith("phi-axis"))
+               for kind in ("velocity", "acceleration")}
+    for kind, above in (("velocity", s_chords), ("acceleration", v_points)):
+        rays = np.array([item.points for item in polylines(layers[f"{kind}-rays"])])
+        assert len(rays) == found.count
+        ray_slopes = (rays[:, 1, 1] - rays[:, 0, 1]) / (rays[:, 1, 0] - rays[:, 0, 0])
+        chord_slopes = np.diff(above[:, 1]) / np.diff(above[:, 0])
+        if kind == "velocity":
+            assert ray_slopes == pytest.approx(chord_slopes, rel=1e-9, abs=1e-12)
+        else:   # acceleration at the nodes 1 … count−1 from the chords between the velocity's mid-intervals
+            assert ray_slopes[1:found.count] == pytest.approx(chord_slopes, rel=1e-9, abs=1e-12)
+        # Every ray starts at the pole, H mm left of the origin on the φ axis.
+        pole = found.scales.velocity_pole if kind == "velocity" else found.scales.acceleration_pole
+        assert rays[:, 0, 0] == pytest.approx(np.full(found.count, -pole))
+        assert rays[:, 0, 1] == pytest.approx(np.full(found.count, origins[kind][1]))
+
+
+def test_curves_are_drawn_at_their_scales():
+    found = record("shaper_six_bar")[2]
+    layers = layers_of(found)
+    scales = found.scales
+    top = max(y for _, y in polylines(layers["displacement-curves"])[0].points)
+    bottom = min(y for _, y in polylines(layers["velocity-curves"])[0].points)
+    origin_s = polylines(layers["displacement-curves"])[0].points[0]
+    origin_v = polylines(layers["velocity-curves"])[0].points[0]
+    assert top - origin_s[1] == pytest.approx(found.s.max() / scales.displacement)
+    assert bottom - origin_v[1] == pytest.approx(found.v.min() / scales.velocity)
+    right = polylines(layers["displacement-curves"])[0].points[-1][0]
+    assert right - origin_s[0] == pytest.approx(scales.axis_mm)
+    dots = [item for item in layers["velocity-curves"] if isinstance(item, Circle)]
+    assert len(dots) == found.count + 1   # the chord method's points and the pole
+
+
+def test_positions_are_numbered_under_their_ticks_on_the_displacement_diagram():
+    found = record("ratchet_crank_rocker")[2]
+    layers = layers_of(found)
+    numbers = [item for item in layers["displacement-labels"] if isinstance(item, Text) and item.text.isdigit()]
+    arrows = {item.key: item for item in layers["displacement-axes"] if isinstance(item, Arrow)}
+    axis, ordinate = arrows["displacement-phi-axis"], arrows["displacement-ordinate-axis"]
+    origin = ordinate.start[0]
+    assert [t.text for t in numbers] == [str(n) for n in found.numbers]
+    for text, node in zip(numbers, found.nodes, strict=True):
+        assert text.at[0] == pytest.approx(origin + node / found.scales.angle, abs=1.5)
+        assert text.at[1] < axis.start[1]
+
+
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
+def test_no_two_texts_overlap(name):
+    found = record(name)[2]
+    texts = [item for layer in diagrams.layout(found) for item in layer.items if isinstance(item, Text)]
+    boxes = [box(*text_extent(text)) for text in texts]
+    for i in range(len(boxes)):
+        for j in range(i + 1, len(boxes)):
+            assert not boxes[i].intersects(boxes[j]), (texts[i].text, texts[j].text)
+
+
+def test_every_text_key_is_used_and_words_come_from_the_mapping():
+    shown = set()
+    for name in ("engine_slider_crank", "ratchet_crank_rocker"):
+        marked = {key: f"<{key}>" for key in diagrams.DEFAULT_TEXT}
+        for layer in diagrams.layout(record(name)[2], marked):
+            shown.update(re.findall(r"<(\w+)>", " ".join(i.text for i in layer.items if isinstance(i, Text))))
+    # Symbols and units are written inside other strings, so a marker there hides its own.
+    nested = {key for key in diagrams.DEFAULT_TEXT if key.startswith(("kd_symbol_", "kd_unit_", "kd_per_mm"))}
+    assert shown | nested == set(diagrams.DEFAULT_TEXT)
+    russian = diagrams.diagrams_svg(record("ratchet_crank_rocker")[2], {"kd_title": "Кинематические диаграммы звена {link}"})
+    assert "Кинематические диаграммы звена 4" in russian
+
+
+def test_svg_is_the_same_every_time_and_states_the_scales():
+    found = record("engine_slider_crank")[2]
+    svg = diagrams.diagrams_svg(found)
+    assert svg == diagrams.diagrams_svg(record("engine_slider_crank")[2])
+    assert "μs = 0.002 m/mm" in svg
+    assert f"H₁ = {found.scales.velocity_pole:g} mm" in svg
+    assert "(m/s²)/mm" in svg
+    assert f"{found.largest_v_difference:.2f} %" in svg
+
+
+def test_scale_text_keeps_four_significant_digits():
+    assert diagrams.scale_text(0.3333333) == "0.33333"
+    assert diagrams.scale_text(8.948604) == "8.9486"
+    assert diagrams.scale_text(0.0001666667) == "0.0001667"
+    assert diagrams.scale_text(50.0) == "50"
