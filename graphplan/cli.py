@@ -78,7 +78,13 @@ def _check(path: Path) -> int:
     from .positions import make_positions
     from .scene import load
 
-    mechanism = build(load(path))
+    scene = load(path)
+    if not scene.has_linkage:
+        tables = [name for name in ("balancing", "vibration") if getattr(scene, name) is not None]
+        print(f"{path}: ok")
+        print(f"no mechanism; {', '.join(tables)}")
+        return 0
+    mechanism = build(scene)
     make_positions(mechanism)
     n, p5, w = mechanism.degrees_of_freedom
     print(f"{path}: ok")
@@ -102,19 +108,20 @@ def _run(arguments: argparse.Namespace) -> int:
     if arguments.locale is not None:
         scene = dataclasses.replace(scene, locale=arguments.locale)
     progress.say("analysing the mechanism")
-    analysis = analyse(scene)
+    analysis = analyse(scene) if scene.has_linkage else None
     only = arguments.only
     if arguments.figures:
-        only = [*(only if only is not None else chosen(analysis)), "figures"]
-    pieces = chosen(analysis, only)
+        only = [*(only if only is not None else chosen(scene, analysis)), "figures"]
+    pieces = chosen(scene, analysis, only)
     progress.say("drawing and writing the tables")
     written = write_folder(arguments.out if arguments.out is not None else Path("output") / path.stem,
-                           files(analysis, pieces, formats))
+                           files(scene, analysis, pieces, formats))
     print(f"{scene.title}")
-    print(f"structure: {analysis.mechanism.structure}")
-    for warning in analysis.warnings:
-        number = int(analysis.positions.numbers[warning.position])
-        print(f"warning: position {number}: {warning.detail}")
+    if analysis is not None:
+        print(f"structure: {analysis.mechanism.structure}")
+        for warning in analysis.warnings:
+            number = int(analysis.positions.numbers[warning.position])
+            print(f"warning: position {number}: {warning.detail}")
     for file in written:
         print(f"wrote {file}")
     return 0

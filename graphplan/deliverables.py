@@ -6,6 +6,9 @@ default a run delivers every piece the scene has data for and nothing else;
 ``[output] include`` or ``--only`` narrows that down, and asking for a piece
 the scene cannot give is an error naming what is missing.  Every drawing is
 written as SVG, and also as PNG, PDF or DXF when those formats are asked for.
+
+A scene without a linkage (a rotor to balance, a machine on its springs)
+has no analysis: only its own pieces and ``results.json``.
 """
 
 from __future__ import annotations
@@ -14,44 +17,61 @@ import dataclasses
 import io
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from typing import Any
 
 from .analysis import Analysis
 from .errors import SceneError
+from .locale import strings
 from .render.primitives import Layer
+from .scene import Scene
 
-# Every piece a run can deliver, in the order a course project presents them.  The first seven are the
-# scene contract's; ``figures`` are the report figures drawn with matplotlib.
-PIECES = ("positions", "velocity", "acceleration", "forces", "lever", "errors", "note", "figures")
+# Every piece a run can deliver, in the order a course project presents them.  The first seven names
+# of the scene contract are here; ``figures`` are the report figures of the force analysis (matplotlib).
+PIECES = ("positions", "velocity", "acceleration", "diagrams", "forces", "lever", "errors", "note",
+          "balancing", "vibration", "figures")
 FORMATS = ("svg", "png", "pdf", "dxf")
 # Pieces that cost more than they are worth by default: delivered only when asked for.
 ON_REQUEST = ("figures",)
+_NO_LINKAGE = "needs a mechanism: the scene has no [frame] and [driver]"
+_NO_LOADS = "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
+_NO_PLANS = "needs plan positions: positions.plans lists none"
 
 
 @dataclass(frozen=True)
 class Drawing:
-    """A drawing of the run: its file stem, its layers (paper mm, y up), and its page (mm) when it is a sheet."""
+    """A drawing of the run: its file stem and its layers (paper mm, y up)."""
 
     stem: str
     layers: list[Layer]
-    page: tuple[float, float] | None = None
 
 
-def missing(analysis: Analysis, piece: str) -> str | None:
+def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     """Why the scene cannot give ``piece``, or None when it can."""
+    if piece == "balancing":
+        return None if scene.balancing is not None else "needs a [balancing] table"
+    if piece == "vibration":
+        return None if scene.vibration is not None else "needs a [vibration] table"
+    if analysis is None:
+        return _NO_LINKAGE
+    if piece == "diagrams":
+        if scene.positions.working is None:
+            return "needs the output link: positions.working"
+        if scene.driver is None or scene.driver.kind != "crank":
+            return "needs a crank driver: the diagrams are drawn against its angle"
+        if scene.positions.count < 3:
+            return "needs at least 3 positions for the chord method"
     has_plans = bool(analysis.plans)
-    has_forces = any(plan.forces is not None for plan in analysis.plans)
-    if piece in ("velocity", "acceleration", "errors") and not has_plans:
-        return "needs plan positions: positions.plans lists none"
-    if piece in ("forces", "lever") and not has_plans:
-        return "needs plan positions: positions.plans lists none"
-    if piece in ("forces", "lever") and not has_forces:
-        return "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
+    if piece in ("velocity", "acceleration", "errors", "forces", "lever") and not has_plans:
+        return _NO_PLANS
+    if piece in ("forces", "lever") and not any(plan.forces is not None for plan in analysis.plans):
+        return _NO_LOADS
     if piece == "figures" and analysis.equilibrium is None:
-        return "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
+        return _NO_LOADS
     return None
 
 
-def chosen(analysis: Analysis, only: Iterable[str] | None = None, where: str = "--only") -> tuple[str, ...]:
+def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None = None,
+           where: str = "--only") -> tuple[str, ...]:
     """The pieces to deliver: ``only`` (from ``--only``), else the scene's ``[output] include``, else every
     piece the scene has data for (those :data:`ON_REQUEST` excepted).
 
@@ -63,19 +83,34 @@ def chosen(analysis: Analysis, only: Iterable[str] | None = None, where: str = "
         for k, piece in enumerate(asked):
             if piece not in PIECES:
                 raise SceneError(f"{where}[{k}]", f"must be one of {', '.join(PIECES)}", piece)
-    elif analysis.scene.include is not None:
-        asked, where = list(analysis.scene.include), "output.include"
+    elif scene.include is not None:
+        asked, where = list(scene.include), "output.include"
     if asked is None:
-        return tuple(piece for piece in PIECES if piece not in ON_REQUEST and missing(analysis, piece) is None)
+        return tuple(piece for piece in PIECES
+                     if piece not in ON_REQUEST and missing(scene, analysis, piece) is None)
     for k, piece in enumerate(asked):
-        reason = missing(analysis, piece)
+        reason = missing(scene, analysis, piece)
         if reason is not None:
             raise SceneError(f"{where}[{k}]", f"{piece!r} {reason}")
     return tuple(piece for piece in PIECES if piece in asked)
 
 
-def drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawing]:
-    """The drawings of ``pieces``: the plan of positions, a plan sheet and a force sheet per plan position."""
+def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> list[Drawing]:
+    """The drawings of ``pieces``, each laid out once for every format it is written in."""
+    found: list[Drawing] = []
+    if analysis is not None:
+        found += _linkage_drawings(analysis, pieces)
+    if "balancing" in pieces:
+        from .render import balancing as balancing_layout
+        from .rotor_balancing import balance
+
+        assert scene.balancing is not None
+        found.append(Drawing("rotor_balancing", balancing_layout.layout(balance(scene.balancing),
+                                                                         strings(scene.locale))))
+    return found
+
+
+def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawing]:
     from .render import drawings as draw
     from .render import forces as force_layout
     from .render import plans as plan_layout
@@ -84,6 +119,12 @@ def drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawing]:
     found: list[Drawing] = []
     if "positions" in pieces:
         found.append(Drawing("positions", positions_layout.layout(draw.positions_plan(analysis))))
+    if "diagrams" in pieces:
+        from .kinematic_diagrams import of_analysis
+        from .render import diagrams as diagrams_layout
+
+        found.append(Drawing("diagrams", diagrams_layout.layout(of_analysis(analysis),
+                                                                strings(analysis.scene.locale))))
     shown = tuple(name for name in ("velocity", "acceleration") if name in pieces)
     for plan in analysis.plans:
         if shown:
@@ -98,9 +139,11 @@ def drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawing]:
     return found
 
 
-def tables(analysis: Analysis, pieces: tuple[str, ...]) -> dict[str, str]:
-    """The text files of ``pieces``: the error tables, the force analysis, the note."""
+def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
+    """The text files of ``pieces``: the error tables, the force analysis."""
     files: dict[str, str] = {}
+    if analysis is None:
+        return files
     if "errors" in pieces:
         from .report.tables import csv_text, markdown
 
@@ -113,30 +156,40 @@ def tables(analysis: Analysis, pieces: tuple[str, ...]) -> dict[str, str]:
     return files
 
 
-def figures(analysis: Analysis, pieces: tuple[str, ...]) -> dict[str, str]:
-    """The report figures drawn with matplotlib (imported only here)."""
-    if "figures" not in pieces:
-        return {}
-    from .report.figures import balancing_diagram
+def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
+    """The plots drawn with matplotlib, which is imported only here."""
+    found: dict[str, str] = {}
+    if "figures" in pieces and analysis is not None:
+        from .report.figures import balancing_diagram
 
-    return {"balancing.svg": balancing_diagram(analysis)}
+        found["balancing.svg"] = balancing_diagram(analysis)
+    if "vibration" in pieces:
+        from .report.vibration_plots import magnification_figure, transmissibility_figure
+        from .vibration import steady_state
+
+        assert scene.vibration is not None
+        response = steady_state(scene.vibration)
+        operating = (response.frequency_ratio, scene.vibration.damping_ratio)
+        text = strings(scene.locale)
+        for name, plot in (("magnification", magnification_figure), ("transmissibility", transmissibility_figure)):
+            stream = io.StringIO()
+            plot(stream, operating=operating, text=text)
+            found[f"vibration_{name}.svg"] = stream.getvalue()
+    return found
 
 
 def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes]:
     """The files of one drawing in each of ``formats``."""
     from .render.svg import to_svg
 
-    svg = to_svg(drawing.layers, page=drawing.page) if drawing.page else to_svg(drawing.layers)
-    files: dict[str, str | bytes] = {}
+    svg = to_svg(drawing.layers)
     writers: dict[str, Callable[[], str | bytes]] = {
         "svg": lambda: svg,
         "png": lambda: _export("svg_to_png")(svg),
         "pdf": lambda: _export("svg_to_pdf")(svg),
         "dxf": lambda: _dxf(drawing),
     }
-    for kind in formats:
-        files[f"{drawing.stem}.{kind}"] = writers[kind]()
-    return files
+    return {f"{drawing.stem}.{kind}": writers[kind]() for kind in formats}
 
 
 def _export(name: str):
@@ -148,9 +201,9 @@ def _export(name: str):
 def _dxf(drawing: Drawing) -> bytes:
     from .render.dxf import layers_to_dxf
 
-    stream = io.StringIO()
+    stream = io.BytesIO()
     layers_to_dxf(drawing.layers, stream)
-    return stream.getvalue().encode("utf-8")
+    return stream.getvalue()
 
 
 def check_formats(formats: Iterable[str], where: str = "--format") -> tuple[str, ...]:
@@ -162,16 +215,35 @@ def check_formats(formats: Iterable[str], where: str = "--format") -> tuple[str,
     return tuple(kind for kind in FORMATS if kind == "svg" or kind in asked)
 
 
-def files(analysis: Analysis, pieces: tuple[str, ...], formats: tuple[str, ...] = ("svg",)) -> dict[str, str | bytes]:
-    """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the figures."""
-    from .report.results import dumps, results
+def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, Any]:
+    """``results.json``: the analysis of the contract, and the rotor's and the vibration's results."""
+    from .report.results import results, results_without_linkage, rounded
 
-    found: dict[str, str | bytes] = {"results.json": dumps(results(analysis))}
-    for drawing in drawings(analysis, pieces):
-        found.update(encoded(drawing, formats))
-    found.update(tables(analysis, pieces))
-    found.update(figures(analysis, pieces))
+    found = results(analysis) if analysis is not None else results_without_linkage(scene)
+    if "balancing" in pieces:
+        from .rotor_balancing import balance, balancing_results
+
+        assert scene.balancing is not None
+        found["balancing"] = rounded(balancing_results(balance(scene.balancing)))
+    if "vibration" in pieces:
+        from .vibration import vibration_results
+
+        assert scene.vibration is not None
+        found["vibration"] = rounded(vibration_results(scene.vibration))
     return found
 
 
-__all__ = ["FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "drawings", "files", "missing"]
+def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+          formats: tuple[str, ...] = ("svg",)) -> dict[str, str | bytes]:
+    """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots."""
+    from .report.results import dumps
+
+    found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces))}
+    for drawing in drawings(scene, analysis, pieces):
+        found.update(encoded(drawing, formats))
+    found.update(tables(analysis, pieces))
+    found.update(figures(scene, analysis, pieces))
+    return found
+
+
+__all__ = ["FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings", "files", "missing"]

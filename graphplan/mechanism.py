@@ -98,6 +98,8 @@ class Mechanism:
 
 def build(scene: Scene) -> Mechanism:
     """Check the names of ``scene`` against each other and order the solution."""
+    if scene.driver is None:
+        raise SceneError("driver", "is required but missing: this scene has no mechanism ([frame] and [driver])")
     frame = scene.frame_link
     known_points = set(scene.frame_points)
     known_links = {frame}

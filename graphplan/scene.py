@@ -17,6 +17,8 @@ from types import MappingProxyType
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
+from .rotor_balancing import BalancingSpec, read_balancing
+from .vibration import VibrationSpec, read_vibration
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
 
 MAX_SCENE_BYTES = 1_000_000
@@ -25,6 +27,8 @@ LOCALES = ("en", "ru", "zh")
 SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
 STROKES = ("working", "idle", "always")
+# The tables that describe a mechanism: without [frame] and [driver] they have nothing to belong to.
+LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces")
 INERTIA_FORMS = ("couple", "displaced")
 OUTPUT_PIECES = ("positions", "velocity", "acceleration", "forces", "lever", "errors", "note")
 
@@ -125,7 +129,7 @@ class Scene:
     frame_link: int
     frame_points: Mapping[str, complex]
     frame_lines: Mapping[str, Guide]
-    driver: Driver
+    driver: Driver | None
     groups: tuple[Group, ...]
     points: tuple[PointSpec, ...]
     links: Mapping[int, LinkSpec]
@@ -138,6 +142,13 @@ class Scene:
     source: str = "<scene>"
     # "couple": Fu at the centre and Mu; "displaced": one resultant Fu displaced by h = Mu/Fu.
     inertia: str = "couple"
+    balancing: BalancingSpec | None = None
+    vibration: VibrationSpec | None = None
+
+    @property
+    def has_linkage(self) -> bool:
+        """Whether the scene describes a mechanism (a rotor or a vibrating machine alone does not)."""
+        return self.driver is not None
 
     # The notebook's verbs.  They import the stages they run when called: a scene is read first of all.
     def solve(self, driver=None):
@@ -203,6 +214,22 @@ def _read_scene(top: Table, source: str) -> Scene:
     gravity = scene.number("gravity", 9.81, non_negative=True)
     scene.done()
 
+    balancing = read_balancing(top.table("balancing")) if top.has("balancing") else None
+    vibration = read_vibration(top.table("vibration")) if top.has("vibration") else None
+    if not top.has("frame") and not top.has("driver") and (balancing is not None or vibration is not None):
+        # A rotor to balance or a machine on its springs: no linkage to read.
+        for key in LINKAGE_KEYS:
+            if top.has(key):
+                raise SceneError(key, "describes a mechanism: a scene with one needs [frame] and [driver] too")
+        drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
+        include = _read_output(top.table("output", None))
+        top.done()
+        return Scene(title=title, locale=locale, gravity=gravity, frame_link=1, frame_points=MappingProxyType({}),
+                     frame_lines=MappingProxyType({}), driver=None, groups=(), points=(),
+                     links=MappingProxyType({}), loads=(), friction=(),
+                     positions=Positions(count=1, start=0.0, number_from=1, working=None, plans=()),
+                     drawing=drawing, measured=MappingProxyType({}), include=include, source=source,
+                     balancing=balancing, vibration=vibration)
     frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
     driver = _read_driver(top.table("driver"))
     groups = tuple(_read_group(where, item) for where, item in top.items("groups", default=[]) or [])
@@ -222,7 +249,7 @@ def _read_scene(top: Table, source: str) -> Scene:
                  frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
                  driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_, friction=friction,
                  positions=positions, drawing=drawing, measured=MappingProxyType(measured), include=include,
-                 source=source, inertia=inertia)
+                 source=source, inertia=inertia, balancing=balancing, vibration=vibration)
 
 
 def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str, Guide]]:

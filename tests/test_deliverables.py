@@ -3,6 +3,8 @@ cannot give; the command line's options; the starter scenes of ``graphplan new``
 
 from __future__ import annotations
 
+import json
+import math
 import re
 import tomllib
 import xml.etree.ElementTree as ElementTree
@@ -44,8 +46,10 @@ def without_masses_and_loads(tmp_path: Path) -> Path:
 def test_by_default_every_piece_the_scene_has_data_for(tmp_path):
     status, out = run(tmp_path)
     assert status == 0
-    assert {"results.json", "positions.svg", "plan_5.svg", "plan_11.svg", "forces_5.svg", "forces_11.svg",
-            "errors.md", "errors.csv", "forces.md"} <= names(out)
+    assert {"results.json", "positions.svg", "diagrams.svg", "plan_5.svg", "plan_11.svg", "forces_5.svg",
+            "forces_11.svg", "errors.md", "errors.csv", "forces.md"} <= names(out)
+    # Nothing the scene has no data for: it balances no rotor and has no springs.
+    assert not {name for name in names(out) if name.startswith(("rotor", "vibration"))}
     # No figure without asking: matplotlib is not worth its second by default.
     assert "balancing.svg" not in names(out)
 
@@ -132,3 +136,63 @@ def test_a_progress_line_only_once_a_second_has_passed(capsys):
     assert capsys.readouterr().err == ""
     Progress(after=-1.0).say("analysing")
     assert capsys.readouterr().err.startswith("graphplan: analysing (")
+
+
+ROTOR = """
+[scene]
+title = "Fan rotor on its mounts"
+locale = "ru"
+
+[balancing]
+masses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0 },
+           { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08 } ]
+planes = [0.04, 0.22]
+correction_radius = 0.05
+
+[vibration]
+mass = 100.0
+unbalance = 0.02
+stiffness = 1.0e5
+damping_ratio = 0.1
+rpm = 600.0
+"""
+
+
+def test_a_rotor_without_a_linkage_is_balanced_and_its_vibration_plotted(tmp_path):
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(ROTOR, encoding="utf-8")
+    status, out = run(tmp_path, "--format", "svg,dxf", scene=scene)
+    assert status == 0
+    assert names(out) == {"results.json", "rotor_balancing.svg", "rotor_balancing.dxf",
+                          "vibration_magnification.svg", "vibration_transmissibility.svg"}
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    assert "positions" not in document
+    left, right = document["balancing"]["planes"]
+    # The correction planes balance the rotor: Σ m·r over the masses and the corrections is zero.
+    first = 18.0 * 0.05 + 0j
+    second = 14.0 * 0.06 * complex(math.cos(math.radians(-60.0)), math.sin(math.radians(-60.0)))
+    corrections = sum(plane["mass_radius"] * complex(math.cos(math.radians(plane["angle_deg"])),
+                                                     math.sin(math.radians(plane["angle_deg"])))
+                      for plane in (left, right))
+    assert abs(first + second + corrections) < 1e-9
+    # A machine at r = ω/ωn = 62.83/31.62 with ζ = 0.1: the closed form of the amplitude m·e·r²/M/√(…).
+    r = (600.0 * math.pi / 30.0) / math.sqrt(1.0e5 / 100.0)
+    expected = 0.02 / 100.0 * r * r / math.sqrt((1 - r * r) ** 2 + (2 * 0.1 * r) ** 2)
+    assert document["vibration"]["amplitude"] == pytest.approx(expected, rel=1e-10)
+    assert main(["check", str(scene)]) == 0
+
+
+def test_a_linkage_table_without_the_linkage_is_refused(tmp_path, capsys):
+    scene = tmp_path / "half.toml"
+    scene.write_text(ROTOR + "\n[positions]\ncount = 12\n", encoding="utf-8")
+    status, out = run(tmp_path, scene=scene)
+    assert status == 2 and not out.exists()
+    assert "positions: describes a mechanism: a scene with one needs [frame] and [driver] too" in capsys.readouterr().err
+
+
+def test_a_linkage_piece_of_a_rotor_scene_is_refused(tmp_path, capsys):
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(ROTOR, encoding="utf-8")
+    status, out = run(tmp_path, "--only", "balancing,velocity", scene=scene)
+    assert status == 2 and not out.exists()
+    assert "--only[1]: 'velocity' needs a mechanism" in capsys.readouterr().err

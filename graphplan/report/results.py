@@ -125,6 +125,22 @@ def versions() -> dict[str, str]:
     return found
 
 
+def rounded(value: Any) -> Any:
+    """``value`` with every float in it rounded by :func:`number` (lists and dicts walked through)."""
+    if isinstance(value, dict):
+        return {key: rounded(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [rounded(item) for item in value]
+    if isinstance(value, float):
+        return number(value)
+    return value
+
+
+def results_without_linkage(scene) -> dict[str, Any]:
+    """The head of ``results.json`` for a scene with no mechanism (a rotor, a vibrating machine)."""
+    return {"graphplan": __version__, "versions": versions(), "scene": scene.title}
+
+
 def _plans(plan: PlanPosition) -> dict[str, Any]:
     """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed."""
     result = {}

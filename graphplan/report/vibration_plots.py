@@ -92,7 +92,8 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
     matplotlib.use("Agg")
     from matplotlib.figure import Figure
 
-    target = Path(path)
+    # A stream takes the SVG text as it is (a run writes its whole folder at once).
+    target = path if hasattr(path, "write") else Path(path)
     with matplotlib.rc_context({"svg.hashsalt": "graphplan", "font.family": _families(),
                                 "svg.fonttype": "path"}):
         figure = Figure(figsize=(7.0, 4.2), dpi=100)
@@ -121,7 +122,8 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         plot.grid(True, which="both", linewidth=0.3)
         plot.legend(fontsize=8, loc="upper right")
         figure.tight_layout()
-        target.parent.mkdir(parents=True, exist_ok=True)
+        if isinstance(target, Path):
+            target.parent.mkdir(parents=True, exist_ok=True)
         figure.savefig(target, format="svg", metadata={"Date": None})
     return target
 
