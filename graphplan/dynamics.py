@@ -1,0 +1,416 @@
+"""The equivalent (dynamic) model of a machine: every mass and every load reduced to the driver.
+
+The driver becomes an *equivalent link* whose kinetic energy and power are those of the whole
+mechanism.  For a crank turning at ω1 (a turning equivalent link):
+
+    Je(φ) = Σ [m·(vS/ω1)² + JS·(ω/ω1)²]          reduced moment of inertia, kg·m²
+    Me(φ) = Σ [F·v + M·ω] / ω1                  reduced moment of the loads, N·m
+
+over the moving links (the crank's own m·(vS/ω1)² + JS is its moment of inertia about its pivot)
+and over the external loads and the weights (never the inertia loads: their power is the change
+of the kinetic energy itself).  The ratios vS/ω1, ω/ω1 depend on the position alone, so the model
+holds at any speed.  Differentiating Je along the motion at ε1 = 0 (vS = r′·ω1, aS = r″·ω1²):
+
+    dJe/dφ = 2 Σ [m·vS·aS + JS·ω·ε] / ω1³
+
+A slider driver moving at v1 becomes a translating equivalent link: the reduced mass
+me = Σ [m·(vS/v1)² + JS·(ω/v1)²] (kg) and the reduced force Fe = Σ [F·v + M·ω] / v1 (N).
+
+Signs.  The model runs along the driver's *travel*: ψ, the angle (or distance) the driver has
+moved from the first position in its own sense, so that ``dψ/dt = |ω1|``.  A reduced moment is
+positive when it drives the motion on (``Me·|ω1|`` is the power the loads put in), so the works
+read as the textbook draws them: ``Ad = ∫Md dψ`` and ``Ar = −∫Mr dψ``, both positive, and the
+kinetic energy changes by ``ΔT = Ad − Ar``.
+
+Driving and resisting.  A scene load marked ``resisting = true`` is a resistance, any other load
+drives; the weights are counted with the resistances (they do no work over a cycle).  Unless the
+scene gives both, one side is taken constant so that the work over the cycle balances, as the
+textbook takes the motor's moment constant: the driving moment when the scene gives no driving
+load, the resisting moment (the weights kept) when it gives no resisting one.
+
+The reduction is also made from the velocity plans of the plan positions (ratios read off the
+plans), so that the two can be compared (:class:`PlanReduction`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+from types import MappingProxyType
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy.integrate import cumulative_trapezoid, trapezoid
+
+from .kinematics import dot, norm2
+from .loads import State, activity, link_loads, motion_state, plan_state, power
+from .mechanism import Mechanism, build
+from .motion import Motion, solve
+from .positions import PositionSet, make_positions
+from .scene import Scene
+
+if TYPE_CHECKING:
+    from .analysis import Analysis
+
+#: Samples of the driver's cycle (or travel) in the dense sweep of :func:`equivalent_model_of`.
+DEFAULT_COUNT = 360
+#: Which reduced moment is taken constant so that the work over the cycle balances.
+CONSTANT_CHOICES = ("auto", "driving", "resisting", "none")
+# A load window's ends are found by bisection to this share of the sweep's step.
+_SWITCH_TOLERANCE = 1e-12
+_MAX_BISECTIONS = 80
+
+
+@dataclass(frozen=True)
+class PlanReduction:
+    """The reduction at one plan position: read off its velocity plan, and from the analytic motion.
+
+    ``inertia`` and ``moment`` are from the plans (ratios ``ps·μV/ω1`` of the plan);
+    ``inertia_exact`` and ``moment_exact`` from the analytic solution at the same position.
+    """
+
+    number: int
+    index: int
+    driver: float
+    inertia: float
+    moment: float
+    inertia_exact: float
+    moment_exact: float
+
+    @property
+    def inertia_error_percent(self) -> float:
+        return _percent(self.inertia, self.inertia_exact)
+
+    @property
+    def moment_error_percent(self) -> float:
+        return _percent(self.moment, self.moment_exact)
+
+
+def _percent(value: float, exact: float) -> float:
+    """The error of ``value`` in percent of ``exact``; a plan that reads a nonzero value where it is zero: inf."""
+    if value == exact:
+        return 0.0
+    return 100.0 * (value - exact) / abs(exact) if exact else math.inf
+
+
+@dataclass(frozen=True)
+class EquivalentModel:
+    """The equivalent link of a machine over its cycle (a crank) or its travel (a slider driver).
+
+    Attributes
+    ----------
+    kind
+        ``"crank"``: a turning equivalent link (Je in kg·m², moments in N·m, ψ in rad);
+        ``"slider"``: a translating one (me in kg, forces in N, ψ in m).
+    link
+        The driver's link number.
+    speed
+        |ω1| (rad/s) or |v1| (m/s): the speed the analysis ran at; the ratios do not depend on it.
+    sense
+        +1 when the driver's coordinate grows as it moves (ccw crank, slider along +u), else −1.
+    driver
+        The driver's coordinate at each sample: crank angle φ (rad) or displacement s (m).
+    coordinate
+        ψ: the driver's travel from the first sample, in its own sense (0 … 2π for a crank).
+    inertia, inertia_slope
+        Je and dJe/dψ at each sample (kg·m² and kg·m²/rad, or kg and kg/m).
+    link_inertia
+        Each moving link's share of Je.
+    driving, resisting
+        The reduced moments of the driving loads and of the resistances with the weights,
+        positive when they drive the motion on (so ``resisting`` is mostly ≤ 0).
+    constant
+        ``"driving"`` or ``"resisting"``: the side taken constant to balance the work over the
+        cycle; ``"none"`` when both are as the scene gives them.
+    plans
+        The reduction read off the velocity plans of the plan positions.
+    """
+
+    kind: str
+    link: int
+    speed: float
+    sense: float
+    driver: np.ndarray
+    coordinate: np.ndarray
+    inertia: np.ndarray
+    inertia_slope: np.ndarray
+    link_inertia: Mapping[int, np.ndarray]
+    driving: np.ndarray
+    resisting: np.ndarray
+    constant: str
+    plans: tuple[PlanReduction, ...] = ()
+
+    @property
+    def turning(self) -> bool:
+        return self.kind == "crank"
+
+    @property
+    def moment(self) -> np.ndarray:
+        """Me = Md + Mr: the reduced moment of every load but the inertia loads."""
+        return self.driving + self.resisting
+
+    @cached_property
+    def driving_work(self) -> np.ndarray:
+        """Ad(ψ) = ∫ Md dψ from the first sample (J)."""
+        return cumulative_trapezoid(self.driving, self.coordinate, initial=0.0)
+
+    @cached_property
+    def resisting_work(self) -> np.ndarray:
+        """Ar(ψ) = −∫ Mr dψ from the first sample (J): positive when the resistances take work."""
+        return -cumulative_trapezoid(self.resisting, self.coordinate, initial=0.0)
+
+    @property
+    def energy(self) -> np.ndarray:
+        """ΔT(ψ) = Ad − Ar: the change of the kinetic energy from the first sample (J)."""
+        return self.driving_work - self.resisting_work
+
+    @property
+    def imbalance(self) -> float:
+        """ΔT at the last sample: the work left over by a cycle (zero when the cycle balances)."""
+        return float(self.energy[-1])
+
+    def kinetic_energy(self, speed: float | None = None) -> np.ndarray:
+        """½·Je·ω1² (or ½·me·v1²) at the driver's ``speed`` (default: the analysis speed) (J)."""
+        speed = self.speed if speed is None else speed
+        return 0.5 * self.inertia * speed * speed
+
+
+def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | None = None, *,
+                     constant: str = "auto", plans: Sequence[PlanReduction] = ()) -> EquivalentModel:
+    """The equivalent model over the positions of ``motion`` (a cycle, or a slider's travel).
+
+    Parameters
+    ----------
+    mechanism, motion
+        The mechanism and its analytic motion over the samples, in the order the driver moves.
+    acting
+        :func:`graphplan.loads.activity` of the scene's loads at the samples; None lets every load act.
+    constant
+        Which reduced moment is taken constant so that the work over the samples balances:
+        ``"auto"`` (the driving one when the scene has no driving load, else the resisting one
+        when it has no resisting load, else none), ``"driving"``, ``"resisting"`` or ``"none"``.
+    plans
+        Reductions of the plan positions to keep with the model (:func:`plan_reductions`).
+    """
+    if constant not in CONSTANT_CHOICES:
+        raise ValueError(f"constant must be one of {', '.join(CONSTANT_CHOICES)}, not {constant!r}")
+    driver = mechanism.driver
+    count = motion.count
+    if count < 2:
+        raise ValueError("an equivalent model needs at least two positions of the driver")
+    turning = driver.kind == "crank"
+    velocity = driver.omega if turning else driver.velocity
+    rate = driver.epsilon if turning else driver.acceleration
+    speed, sense = abs(velocity), math.copysign(1.0, velocity)
+    values = np.asarray(motion.driver, dtype=float)
+    coordinate = sense * (values - values[0])
+    if np.any(np.diff(coordinate) < 0):
+        raise ValueError("the positions must follow the driver's motion: its travel may not go back")
+
+    state = motion_state(motion)
+    shares = _link_inertia(mechanism, state, velocity, count)
+    inertia = sum(shares.values(), np.zeros(count))
+    # dJe/dt = 2Σ[m vS·aS + JS ω ε]/v1² at a steady driver; the driver's own rate is taken out of
+    # the accelerations first (aS = r″·v1² + r′·a1), so that a scene's ε1 ≠ 0 does not enter.
+    slope = np.zeros(count)
+    for number, spec in _massive(mechanism):
+        if spec.mass > 0:
+            point = motion.points[spec.centre]
+            steady = point.a - rate * point.v / velocity
+            slope = slope + spec.mass * _full(dot(point.v, steady), count)
+        if spec.inertia > 0:
+            link = motion.links[number]
+            steady_epsilon = link.epsilon - rate * link.omega / velocity
+            slope = slope + spec.inertia * _full(link.omega * steady_epsilon, count)
+    slope = 2.0 * slope / (velocity * velocity * speed)
+
+    drive_power, resist_power = _powers(mechanism, state, acting, count)
+    driving, resisting = drive_power / speed, resist_power / speed
+    driving, resisting, chosen = _balanced(mechanism, coordinate, driving, resisting, constant)
+    return EquivalentModel(kind=driver.kind, link=driver.link, speed=speed, sense=sense, driver=values,
+                           coordinate=coordinate, inertia=inertia, inertia_slope=slope,
+                           link_inertia=MappingProxyType(shares), driving=driving, resisting=resisting,
+                           constant=chosen, plans=tuple(plans))
+
+
+def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
+                        constant: str = "auto") -> EquivalentModel:
+    """The equivalent model of a scene (or of an analysis) over ``count`` steps of the driver.
+
+    A crank's cycle starts at the first analysed position and is sampled at ``count + 1``
+    equally spaced angles (the last one closes the cycle); a slider's travel likewise.  Where a
+    load's window opens or closes between two samples, the angle is found by bisection and put
+    in, once on each side, so that the works integrate the jump exactly.  The plan positions of
+    an analysis are reduced from their plans as well (:attr:`EquivalentModel.plans`).
+    """
+    if not isinstance(count, int) or isinstance(count, bool) or count < 2:
+        raise ValueError(f"count must be an integer >= 2, not {count!r}")
+    if isinstance(source, Scene):
+        mechanism = build(source)
+        positions = make_positions(mechanism)
+        analysis = None
+    else:
+        analysis = source
+        mechanism, positions = analysis.mechanism, analysis.positions
+    driver = mechanism.driver
+    if driver.kind == "crank":
+        sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * math.pi, count + 1)
+    else:
+        sweep = np.linspace(driver.travel[0], driver.travel[1], count + 1)
+        if (sweep[-1] - sweep[0]) * driver.sense < 0:  # run the travel the way the slider moves
+            sweep = sweep[::-1]
+    sweep = _with_switches(mechanism, positions, sweep)
+    motion = solve(mechanism, sweep, positions.reference)
+    acting = _acting_at(mechanism, positions, sweep)
+    reductions = plan_reductions(analysis) if analysis is not None else ()
+    return equivalent_model(mechanism, motion, acting, constant=constant, plans=reductions)
+
+
+def plan_reductions(analysis: Analysis) -> tuple[PlanReduction, ...]:
+    """Je and Me at each plan position from its velocity plan, beside the analytic values there."""
+    mechanism, motion = analysis.mechanism, analysis.motion
+    driver = mechanism.driver
+    velocity = driver.omega if driver.kind == "crank" else driver.velocity
+    speed = abs(velocity)
+    acting = activity(mechanism, analysis.positions, motion)
+    exact_state = motion_state(motion)
+    exact_inertia = sum(_link_inertia(mechanism, exact_state, velocity, motion.count).values(), np.zeros(motion.count))
+    exact_power = sum(_powers(mechanism, exact_state, acting, motion.count))
+    found = []
+    for plan in analysis.plans:
+        state = plan_state(mechanism, plan.positions, plan.velocity, plan.acceleration)
+        column = acting[:, plan.index:plan.index + 1]
+        inertia = float(sum(_link_inertia(mechanism, state, velocity, 1).values(), np.zeros(1))[0])
+        moment = float(sum(_powers(mechanism, state, column, 1))[0]) / speed
+        found.append(PlanReduction(plan.number, plan.index, float(motion.driver[plan.index]), inertia, moment,
+                                   float(exact_inertia[plan.index]), float(exact_power[plan.index]) / speed))
+    return tuple(found)
+
+
+def _massive(mechanism: Mechanism):
+    """(number, spec) of every moving link with a mass or a moment of inertia."""
+    links = mechanism.scene.links
+    for number in mechanism.moving_links:
+        spec = links.get(number)
+        if spec is not None and (spec.mass > 0 or spec.inertia > 0):
+            yield number, spec
+
+
+def _link_inertia(mechanism: Mechanism, state: State, velocity: float, count: int) -> dict[int, np.ndarray]:
+    """Each link's m·(vS/v1)² + JS·(ω/v1)² (an array over the state's positions)."""
+    shares = {}
+    for number, spec in _massive(mechanism):
+        share = np.zeros(count)
+        if spec.mass > 0:
+            share = share + spec.mass * _full(norm2(state.points[spec.centre].v), count)
+        if spec.inertia > 0:
+            omega = state.links[number].omega
+            share = share + spec.inertia * _full(omega * omega, count)
+        shares[number] = share / (velocity * velocity)
+    return shares
+
+
+def _powers(mechanism: Mechanism, state: State, acting: np.ndarray | None, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """The power of the driving loads, and of the resisting loads with the weights (W), over the positions.
+
+    Each scene load's power is that of all the loads with it alone acting, less that of all the
+    loads with none acting: what :func:`graphplan.loads.link_loads` makes of it, and nothing else.
+    """
+    scene = mechanism.scene
+    loads = scene.loads
+    if acting is None:
+        acting = np.ones((len(loads), count), dtype=bool)
+    acting = np.asarray(acting, dtype=bool)
+    if acting.shape != (len(loads), count):
+        raise ValueError(f"acting must have shape {(len(loads), count)} (loads, positions), not {acting.shape}")
+    driving, resisting = np.zeros(count), np.zeros(count)
+    for number, spec in _massive(mechanism):
+        if spec.mass > 0 and scene.gravity != 0:
+            # G = m·g along −y: its power is −m·g·vSy.
+            resisting = resisting - spec.mass * scene.gravity * _full(state.points[spec.centre].v.imag, count)
+    if not loads:
+        return driving, resisting
+    silent = np.zeros_like(acting)
+    base = _full(power(link_loads(mechanism, state, silent), state), count)
+    for row, load in enumerate(loads):
+        alone = silent.copy()
+        alone[row] = acting[row]
+        share = _full(power(link_loads(mechanism, state, alone), state), count) - base
+        if load.resisting:
+            resisting = resisting + share
+        else:
+            driving = driving + share
+    return driving, resisting
+
+
+def _balanced(mechanism: Mechanism, coordinate: np.ndarray, driving: np.ndarray, resisting: np.ndarray,
+              constant: str) -> tuple[np.ndarray, np.ndarray, str]:
+    """The moments with one side made constant so that their work over the samples balances."""
+    loads = mechanism.scene.loads
+    drives = [load.where for load in loads if not load.resisting]
+    resists = [load.where for load in loads if load.resisting]
+    if constant == "auto":
+        constant = "driving" if not drives else "resisting" if not resists else "none"
+    if constant == "none":
+        return driving, resisting, constant
+    replaced = drives if constant == "driving" else resists
+    if replaced:
+        other = "resisting" if constant == "driving" else "driving"
+        raise ValueError(f"constant={constant!r} replaces the {constant} moment, but the scene gives {constant} loads "
+                         f"({', '.join(replaced)}); take constant={other!r} or 'none'")
+    travel = float(coordinate[-1] - coordinate[0])
+    if travel <= 0:
+        raise ValueError("the driver does not move over the samples, so no constant moment balances their work")
+    # Every load on the replaced side is absent, so what is left of ``resisting`` is the weights, kept.
+    level = -float(trapezoid(driving + resisting, coordinate)) / travel
+    if constant == "driving":
+        return driving + level, resisting, constant
+    return driving, resisting + level, constant
+
+
+def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarray) -> np.ndarray:
+    """``sweep`` with the two sides of every place where a load's window opens or closes put in."""
+    if not mechanism.scene.loads:
+        return sweep
+    acting = _acting_at(mechanism, positions, sweep)
+    rows, steps = np.nonzero(acting[:, :-1] != acting[:, 1:])
+    if len(rows) == 0:
+        return sweep
+    low, high = sweep[steps].copy(), sweep[steps + 1].copy()
+    before = acting[rows, steps]
+    tolerance = _SWITCH_TOLERANCE * float(np.max(np.abs(np.diff(sweep))))
+    for _ in range(_MAX_BISECTIONS):
+        if np.all(np.abs(high - low) <= tolerance):
+            break
+        middle = 0.5 * (low + high)
+        state = _acting_at(mechanism, positions, middle)[rows, np.arange(len(rows))]
+        same = state == before
+        low = np.where(same, middle, low)
+        high = np.where(same, high, middle)
+    # A side that falls on a sample is that sample (the same position, the same loads): kept once.
+    found = np.unique(np.concatenate([sweep, low, high]))
+    return found if sweep[-1] > sweep[0] else found[::-1]
+
+
+def _acting_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray) -> np.ndarray:
+    """:func:`graphplan.loads.activity` at driver coordinates ``values``, read the same wherever they lie.
+
+    A window of the working stroke is measured by the working link's angle, which ``activity``
+    unwraps about the first position of the motion it is given; that position is here always
+    the start of the working stroke, so that a few positions far from it (a bisection's) are
+    measured as the cycle's own are.
+    """
+    if positions.extremes is None:
+        return activity(mechanism, positions, solve(mechanism, values, positions.reference))
+    padded = np.concatenate([[positions.extremes[0]], values])
+    return activity(mechanism, positions, solve(mechanism, padded, positions.reference))[:, 1:]
+
+
+def _full(value, count: int) -> np.ndarray:
+    return np.broadcast_to(np.asarray(value, dtype=float), (count,))
+
+
+__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "EquivalentModel", "PlanReduction", "equivalent_model",
+           "equivalent_model_of", "plan_reductions"]

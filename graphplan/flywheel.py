@@ -1,0 +1,458 @@
+"""The flywheel: the fluctuation of speed over a steady cycle, and the moment of inertia that limits it.
+
+Over a steady cycle the driving and resisting work balance, but not at every instant: the
+surplus work ``ΔW(x) = ∫(driving − resisting)`` swings between a largest and a smallest value,
+and ``ΔWmax`` (their difference, the range of the surplus) is the energy the flywheel must take
+in and give back.  With the coefficient of speed fluctuation ``δ = (ωmax − ωmin)/ωm`` and
+``ωm = (ωmax + ωmin)/2``, so that ``ωmax,min = ωm·(1 ± δ/2)``:
+
+* approximate method (the machine's reduced inertia J taken constant):
+  ``J_F = ΔWmax/(ωm²·δ) − J``, since ``½·(J_F + J)·(ωmax² − ωmin²) = (J_F + J)·ωm²·δ``;
+* Mertsalov's method (a linkage's variable Je): the energy of the links whose reduced inertia
+  varies is taken at the mean speed, ``T_II = ½·(Je − Jc)·ωm²``; the rest, ``ΔW − T_II``, swings
+  the flywheel with the links of constant reduced inertia Jc (the crank):
+  ``J_F = range(ΔW − T_II)/(ωm²·δ) − Jc``;
+* exact method, Wittenbauer's energy–mass diagram: the curve ΔT(Je) over the cycle and its two
+  tangents of slopes ``ωmax²/2`` and ``ωmin²/2`` (in J per kg·m²; on paper ``tan ψ = (μJ/μT)·ω²/2``).
+  They meet at the true origin of kinetic energy and inertia, ``(−J_F, −T0)``, so that
+  ``J_F = (b_max − b_min)/(ωmax²/2 − ωmin²/2)`` from their intercepts ``b`` on the ΔT axis.
+
+The tangent slopes are exact here (``(1 ± δ/2)²``); many textbooks write ``ωm²·(1 ± δ)/2``,
+dropping δ²/4, which changes J_F by a share of order δ²/4.
+
+A flywheel moved to a shaft turning at n′ (geared to the crank's n) needs ``J_F·(n/n′)²``.
+
+The standalone functions (:func:`fluctuation`, :func:`fluctuation_from_areas`,
+:func:`flywheel_inertia`, :func:`moved_inertia`) need no linkage: a power cycle over time, or a
+torque diagram over the crank angle, given as steps, as piecewise-linear vertices or as samples.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy.integrate import cumulative_trapezoid, trapezoid
+
+from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel
+from .errors import SceneError
+from .reader import Table
+
+# A cycle whose work is left over by more than this share of the work done is not steady.
+_BALANCE = 1e-6
+# Share of the largest reduced inertia under which a link's share counts as constant (Mertsalov's Jc).
+_CONSTANT_SHARE = 1e-9
+
+
+# --- standalone: a cycle of torque or power ---------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Fluctuation:
+    """The surplus work over one cycle.
+
+    ``x`` is the abscissa (crank angle in rad, or time in s), with every zero of the net load
+    put in, so that the extremes of ``surplus`` (J) lie on samples; ``mean`` is the constant
+    load (N·m or W) taken to balance the cycle, None when both sides were given.
+    """
+
+    x: np.ndarray
+    surplus: np.ndarray
+    mean: float | None = None
+
+    @property
+    def delta_w_max(self) -> float:
+        """ΔWmax: the largest surplus less the smallest (J)."""
+        return float(np.max(self.surplus) - np.min(self.surplus))
+
+    @property
+    def x_max(self) -> float:
+        """Where the surplus is largest: the speed is greatest there."""
+        return float(self.x[int(np.argmax(self.surplus))])
+
+    @property
+    def x_min(self) -> float:
+        """Where the surplus is smallest: the speed is least there."""
+        return float(self.x[int(np.argmin(self.surplus))])
+
+    @property
+    def imbalance(self) -> float:
+        """The surplus left at the end of the cycle (zero for a steady one)."""
+        return float(self.surplus[-1])
+
+
+def fluctuation(x: ArrayLike, driving: ArrayLike | None = None, resisting: ArrayLike | None = None, *,
+                steps: bool = False) -> Fluctuation:
+    """The surplus work ``∫(driving − resisting) dx`` over one cycle from ``x[0]``.
+
+    Parameters
+    ----------
+    x
+        The abscissa, increasing: crank angles (rad) with torques (N·m), or times (s) with powers (W).
+    driving, resisting
+        The driving and resisting load at ``x`` (piecewise linear between the points), or with
+        ``steps`` on each interval ``[x[i], x[i+1])`` (one value fewer than ``x``).  A side
+        left out is the constant that balances the cycle (its mean).
+    steps
+        Whether the loads are steps, constant over each interval (a power cycle), rather than
+        vertices of a piecewise-linear diagram (a torque diagram, or samples of one).
+
+    Returns
+    -------
+    Fluctuation
+        The surplus at ``x`` and at every zero of the net load between, exact for the data as given.
+    """
+    x = _vector("x", x)
+    if len(x) < 2 or not np.all(np.diff(x) > 0):
+        raise ValueError("x must have at least two values, increasing")
+    size = len(x) - 1 if steps else len(x)
+    if driving is None and resisting is None:
+        raise ValueError("give the driving or the resisting load (or both); a side left out is taken constant")
+    drive = None if driving is None else _vector("driving", driving, size)
+    resist = None if resisting is None else _vector("resisting", resisting, size)
+    widths = np.diff(x)
+    span = float(x[-1] - x[0])
+
+    def mean_of(values: np.ndarray) -> float:
+        return float(np.dot(values, widths) if steps else trapezoid(values, x)) / span
+
+    mean = None
+    if drive is None:
+        mean = mean_of(resist)
+        drive = np.full(size, mean)
+    elif resist is None:
+        mean = mean_of(drive)
+        resist = np.full(size, mean)
+    net = drive - resist
+    if steps:
+        return Fluctuation(x, np.concatenate([[0.0], np.cumsum(net * widths)]), mean)
+    x, net = _with_zeros(x, net)
+    return Fluctuation(x, cumulative_trapezoid(net, x, initial=0.0), mean)
+
+
+def fluctuation_from_areas(areas: ArrayLike, scale: float = 1.0) -> Fluctuation:
+    """The surplus from the signed areas of a torque diagram between it and the mean line, in order.
+
+    ``areas`` are the loops above (+) and below (−) the mean torque line as measured on the
+    drawing (mm²), ``scale`` the energy one unit of area stands for (J/mm², μM·μφ).  ``x`` of
+    the result counts the loops' ends, 0 at the start.
+    """
+    areas = _vector("areas", areas)
+    if not scale > 0 or not math.isfinite(scale):
+        raise ValueError(f"scale must be a positive number, not {scale!r}")
+    return Fluctuation(np.arange(len(areas) + 1, dtype=float), scale * np.concatenate([[0.0], np.cumsum(areas)]))
+
+
+def flywheel_inertia(delta_w_max: float, omega_mean: float, delta: float, inertia: float = 0.0) -> float:
+    """J_F = ΔWmax/(ωm²·δ) − J: the approximate method, the machine's own reduced inertia J constant."""
+    _check_speed(omega_mean, delta)
+    if not delta_w_max >= 0:
+        raise ValueError(f"delta_w_max must be >= 0, not {delta_w_max!r}")
+    return delta_w_max / (omega_mean * omega_mean * delta) - inertia
+
+
+def speed_fluctuation(delta_w_max: float, omega_mean: float, inertia: float) -> float:
+    """δ = ΔWmax/(J·ωm²): the coefficient of fluctuation that an inertia J allows."""
+    if not inertia > 0:
+        raise ValueError(f"inertia must be > 0, not {inertia!r}")
+    _check_speed(omega_mean, 1.0)
+    return delta_w_max / (inertia * omega_mean * omega_mean)
+
+
+def moved_inertia(inertia: float, speed: float, to_speed: float) -> float:
+    """J·(n/n′)²: the inertia on a shaft turning at ``to_speed`` that does what ``inertia`` does at ``speed``."""
+    if not speed > 0 or not to_speed > 0:
+        raise ValueError(f"speeds must be > 0, not {speed!r} and {to_speed!r}")
+    return inertia * (speed / to_speed) ** 2
+
+
+def speed_limits(omega_mean: float, delta: float) -> tuple[float, float]:
+    """(ωmax, ωmin) = ωm·(1 ± δ/2), from δ = (ωmax − ωmin)/ωm and ωm = (ωmax + ωmin)/2."""
+    _check_speed(omega_mean, delta)
+    return omega_mean * (1 + delta / 2), omega_mean * (1 - delta / 2)
+
+
+def rpm_to_omega(rpm: float) -> float:
+    """ω = π·n/30."""
+    return rpm * math.pi / 30.0
+
+
+def omega_to_rpm(omega: float) -> float:
+    return omega * 30.0 / math.pi
+
+
+# --- a linkage's flywheel -----------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Tangent:
+    """A line ΔT = slope·Je + intercept of the energy–mass diagram, touching the curve at sample ``touch``."""
+
+    slope: float
+    intercept: float
+    touch: int
+
+
+@dataclass(frozen=True)
+class Flywheel:
+    """The flywheel of an equivalent model for δ at the mean speed ωm.
+
+    ``inertia`` is the exact J_F of the energy–mass diagram (``upper`` and ``lower`` its
+    tangents of slopes ωmax²/2 and ωmin²/2); ``approximate`` and ``mertsalov`` are the two
+    simpler methods.  ``omega`` is the crank's speed over the cycle with the flywheel of
+    ``inertia`` fitted, ``kinetic_energy_start`` the machine's kinetic energy at the first
+    sample.  ``moved`` is J_F on the shaft turning at ``shaft_rpm``, when one is given.
+    A J_F ≤ 0 means the machine keeps within δ without a flywheel.
+    """
+
+    delta: float
+    omega_mean: float
+    delta_w_max: float
+    inertia: float
+    approximate: float
+    mertsalov: float
+    constant_inertia: float
+    upper: Tangent
+    lower: Tangent
+    kinetic_energy_start: float
+    omega: np.ndarray
+    shaft_rpm: float | None = None
+    moved: float | None = None
+
+    @property
+    def omega_max(self) -> float:
+        return float(np.max(self.omega))
+
+    @property
+    def omega_min(self) -> float:
+        return float(np.min(self.omega))
+
+    @property
+    def index_max(self) -> int:
+        return int(np.argmax(self.omega))
+
+    @property
+    def index_min(self) -> int:
+        return int(np.argmin(self.omega))
+
+
+def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None = None, *,
+                 shaft_rpm: float | None = None) -> Flywheel:
+    """The flywheel that keeps a turning equivalent model within δ at ``omega_mean`` (default: the driver's |ω1|).
+
+    The cycle must be steady: its driving and resisting work must balance (see
+    :attr:`EquivalentModel.constant`).
+    """
+    if not model.turning:
+        raise ValueError("a flywheel needs a turning driver over a cycle; this model's driver is a slider")
+    omega_mean = model.speed if omega_mean is None else omega_mean
+    _check_speed(omega_mean, delta)
+    energy, inertia = model.energy, model.inertia
+    work = max(float(np.max(np.abs(model.driving_work))), float(np.max(np.abs(model.resisting_work))), 1e-300)
+    if abs(model.imbalance) > _BALANCE * work:
+        raise ValueError(f"the driving and resisting work differ by {model.imbalance:.6g} J over the cycle, so the "
+                         f"motion is not periodic; take one moment constant (constant='driving' or 'resisting')")
+    delta_w_max = float(np.max(energy) - np.min(energy))
+    approximate = flywheel_inertia(delta_w_max, omega_mean, delta, float(np.mean(inertia)))
+
+    peak = float(np.max(inertia))
+    constant = sum((float(np.mean(share)) for share in model.link_inertia.values()
+                    if np.ptp(share) <= _CONSTANT_SHARE * peak), 0.0)
+    varying_energy = 0.5 * (inertia - constant) * omega_mean * omega_mean
+    mertsalov = flywheel_inertia(float(np.ptp(energy - varying_energy)), omega_mean, delta, constant)
+
+    fastest, slowest = speed_limits(omega_mean, delta)
+    upper = _tangent(energy, inertia, 0.5 * fastest * fastest, above=True)
+    lower = _tangent(energy, inertia, 0.5 * slowest * slowest, above=False)
+    exact = (upper.intercept - lower.intercept) / (upper.slope - lower.slope)
+    start = upper.slope * exact - upper.intercept   # T0: both tangents pass through (−J_F, −T0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        omega = np.sqrt(np.maximum(2.0 * (start + energy), 0.0) / (exact + inertia))
+    moved = None
+    if shaft_rpm is not None:
+        moved = moved_inertia(exact, omega_to_rpm(omega_mean), shaft_rpm)
+    return Flywheel(delta=delta, omega_mean=omega_mean, delta_w_max=delta_w_max, inertia=exact,
+                    approximate=approximate, mertsalov=mertsalov, constant_inertia=constant, upper=upper,
+                    lower=lower, kinetic_energy_start=start, omega=omega, shaft_rpm=shaft_rpm, moved=moved)
+
+
+def _tangent(energy: np.ndarray, inertia: np.ndarray, slope: float, above: bool) -> Tangent:
+    """The line of ``slope`` that touches the curve (Je, ΔT) from above (or below)."""
+    offsets = energy - slope * inertia
+    touch = int(np.argmax(offsets) if above else np.argmin(offsets))
+    return Tangent(slope, float(offsets[touch]), touch)
+
+
+# --- the scene's [dynamics] table ---------------------------------------------------------------
+
+#: Keys of ``[dynamics]`` that the equation-of-motion module reads; this reader passes them through.
+MOTION_KEYS = ("motor", "brake", "clutch", "start", "duration")
+
+
+@dataclass(frozen=True)
+class DynamicsSpec:
+    """The scene's ``[dynamics]`` table.
+
+    ``delta`` is the coefficient of speed fluctuation (None: no flywheel asked for);
+    ``omega`` the mean speed of the driver (rad/s, None: the driver's own |ω1|);
+    ``flywheel_shaft_rpm`` a shaft the flywheel is moved to; ``constant`` which reduced moment
+    balances the cycle; ``count`` the samples of the cycle.  ``motor``, ``brake``, ``clutch``,
+    ``start`` and ``duration`` are passed through unread for the equation of motion.
+    """
+
+    where: str
+    delta: float | None = None
+    omega: float | None = None
+    flywheel_shaft_rpm: float | None = None
+    constant: str = "auto"
+    count: int = DEFAULT_COUNT
+    motor: Any = None
+    brake: Any = None
+    clutch: Any = None
+    start: Any = None
+    duration: Any = None
+
+    def motion_keys(self) -> Mapping[str, Any]:
+        """The pass-through keys that the scene gives."""
+        return {key: getattr(self, key) for key in MOTION_KEYS if getattr(self, key) is not None}
+
+
+def read_dynamics(table: Table) -> DynamicsSpec:
+    """The ``[dynamics]`` table, every key checked (but the equation of motion's, passed through)."""
+    delta = table.number("delta", None, positive=True)
+    if delta is not None and not delta < 2:
+        raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
+    if table.has("rpm") and table.has("omega"):
+        raise SceneError(table.path, "give rpm or omega (the mean speed), not both")
+    omega = table.number("omega", None, positive=True)
+    rpm = table.number("rpm", None, positive=True)
+    if rpm is not None:
+        omega = rpm_to_omega(rpm)
+    shaft = table.number("flywheel_shaft_rpm", None, positive=True)
+    constant = table.choice("constant", CONSTANT_CHOICES, "auto")
+    count = table.integer("count", DEFAULT_COUNT, minimum=12, maximum=100_000)
+    passed = {key: table.raw(key, None) for key in MOTION_KEYS}
+    table.done()
+    return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
+                        count=count, **passed)
+
+
+def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
+    """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ (or the driver is a slider)."""
+    if spec.delta is None or not model.turning:
+        return None
+    return flywheel_for(model, spec.delta, spec.omega, shaft_rpm=spec.flywheel_shaft_rpm)
+
+
+# --- results ------------------------------------------------------------------------------------
+
+
+def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -> dict[str, Any]:
+    """The dynamics part of ``results.json``: SI, angles in degrees, 12 significant digits.
+
+    Per sample of the cycle: ``angle_deg`` (the driver's coordinate: crank angle in degrees, or
+    displacement in m under ``displacement``), ``travel`` (ψ), ``reduced_inertia``,
+    ``reduced_inertia_slope``, ``reduced_moment`` (= ``driving_moment`` + ``resisting_moment``),
+    ``driving_work``, ``resisting_work``, ``kinetic_energy_change``; then the flywheel.
+    """
+    turning = model.turning
+    found: dict[str, Any] = {
+        "equivalent_link": "turning" if turning else "translating",
+        "driver_link": model.link,
+        "constant": model.constant,
+    }
+    if turning:
+        found["angle_deg"] = _numbers(np.degrees(model.driver) % 360.0)
+    else:
+        found["displacement"] = _numbers(model.driver)
+    found.update({
+        "travel": _numbers(model.coordinate),
+        "reduced_inertia": _numbers(model.inertia),
+        "reduced_inertia_slope": _numbers(model.inertia_slope),
+        "reduced_moment": _numbers(model.moment),
+        "driving_moment": _numbers(model.driving),
+        "resisting_moment": _numbers(model.resisting),
+        "driving_work": _numbers(model.driving_work),
+        "resisting_work": _numbers(model.resisting_work),
+        "kinetic_energy_change": _numbers(model.energy),
+        "delta_w_max": _number(float(np.ptp(model.energy))),
+        "plans": [{"index": plan.number, "reduced_inertia": _number(plan.inertia),
+                   "reduced_inertia_exact": _number(plan.inertia_exact),
+                   "reduced_inertia_error_percent": _number(plan.inertia_error_percent),
+                   "reduced_moment": _number(plan.moment), "reduced_moment_exact": _number(plan.moment_exact),
+                   "reduced_moment_error_percent": _number(plan.moment_error_percent)} for plan in model.plans],
+    })
+    if flywheel is not None:
+        found.update({
+            "delta": _number(flywheel.delta),
+            "omega_mean": _number(flywheel.omega_mean),
+            "flywheel_inertia": _number(flywheel.inertia),
+            "flywheel_inertia_approximate": _number(flywheel.approximate),
+            "flywheel_inertia_mertsalov": _number(flywheel.mertsalov),
+            "constant_reduced_inertia": _number(flywheel.constant_inertia),
+            "kinetic_energy_start": _number(flywheel.kinetic_energy_start),
+            "omega": _numbers(flywheel.omega),
+            "omega_max": _number(flywheel.omega_max),
+            "omega_min": _number(flywheel.omega_min),
+            "omega_max_angle_deg": _number(math.degrees(model.driver[flywheel.index_max]) % 360.0),
+            "omega_min_angle_deg": _number(math.degrees(model.driver[flywheel.index_min]) % 360.0),
+            "omega_max_travel_deg": _number(math.degrees(model.coordinate[flywheel.index_max])),
+            "omega_min_travel_deg": _number(math.degrees(model.coordinate[flywheel.index_min])),
+            "flywheel_shaft_rpm": None if flywheel.shaft_rpm is None else _number(flywheel.shaft_rpm),
+            "flywheel_inertia_moved": None if flywheel.moved is None else _number(flywheel.moved),
+        })
+    return found
+
+
+def _number(value: float) -> float | None:
+    """``value`` to 12 significant digits (as ``results.json`` writes numbers); null when not finite."""
+    if not math.isfinite(value):
+        return None
+    rounded = float(f"{value:.12g}")
+    return 0.0 if rounded == 0 else rounded
+
+
+def _numbers(values: np.ndarray) -> list[float | None]:
+    return [_number(float(v)) for v in values]
+
+
+# --- checks -------------------------------------------------------------------------------------
+
+
+def _check_speed(omega_mean: float, delta: float) -> None:
+    if not (isinstance(omega_mean, (int, float)) and math.isfinite(omega_mean) and omega_mean > 0):
+        raise ValueError(f"omega_mean must be a positive number (rad/s), not {omega_mean!r}")
+    if not (isinstance(delta, (int, float)) and 0 < delta < 2):
+        raise ValueError(f"delta must lie between 0 and 2 (ωmin = ωm·(1 − δ/2) > 0), not {delta!r}")
+
+
+def _vector(name: str, values: ArrayLike, size: int | None = None) -> np.ndarray:
+    try:
+        array = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a sequence of numbers") from None
+    if array.ndim != 1 or not np.all(np.isfinite(array)):
+        raise ValueError(f"{name} must be a 1-D sequence of finite numbers")
+    if size is not None and len(array) != size:
+        raise ValueError(f"{name} must have {size} values, not {len(array)}")
+    return array
+
+
+def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The piecewise-linear ``net`` with its zeros between vertices put in (the surplus turns there)."""
+    crossing = np.flatnonzero(net[:-1] * net[1:] < 0)
+    if len(crossing) == 0:
+        return x, net
+    share = net[crossing] / (net[crossing] - net[crossing + 1])
+    zeros = x[crossing] + share * (x[crossing + 1] - x[crossing])
+    order = np.argsort(np.concatenate([x, zeros]), kind="stable")
+    return np.concatenate([x, zeros])[order], np.concatenate([net, np.zeros(len(zeros))])[order]
+
+
+__all__ = ["MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel", "Tangent", "dynamics_results", "fluctuation",
+           "fluctuation_from_areas", "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia", "omega_to_rpm",
+           "read_dynamics", "rpm_to_omega", "speed_fluctuation", "speed_limits"]

@@ -1,0 +1,373 @@
+"""The dynamics sheet: the diagrams of the equivalent model and the energy–mass diagram of the flywheel.
+
+Laid out as the dynamics sheet of a course project, each diagram at round scales written beside
+it.  On the left, over the driver's cycle at μφ: the reduced moments Md(φ) and Mr(φ) at μM; the
+works Ad(φ) and Ar(φ) at μA; the change of kinetic energy ΔT(φ) = Ad − Ar at μT.  To the right of
+ΔT(φ), sharing its ordinate, Wittenbauer's energy–mass diagram ΔT(Je) at μJ with its two tangents
+at ψmax and ψmin (tan ψ = (μJ/μT)·ω²/2) that cut the segment ab off the ΔT axis; below it the
+reduced moment of inertia Je(φ) turned through 90°, its abscissa that of the energy–mass diagram,
+as the textbook transfers it point by point.  The results of the flywheel are written under the
+diagrams.
+
+The layout reads :class:`graphplan.dynamics.EquivalentModel` and :class:`graphplan.flywheel.Flywheel`
+and puts what they hold on paper; it computes no mechanics.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..dynamics import EquivalentModel
+from ..flywheel import Flywheel, omega_to_rpm
+from ..scales import fit_scale, format_scale
+from .primitives import (
+    THIN,
+    Arrow,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds,
+    bounds_of,
+    dot_marker,
+    moved,
+    text_width,
+)
+from .svg import to_svg
+
+# The abscissa of a whole cycle (mm): 2°/mm, as the textbook draws it.
+ABSCISSA_MM = 180.0
+# Heights of the diagrams over the cycle (mm), and the width of the energy–mass diagram.
+MOMENTS_MM = 60.0
+WORKS_MM = 60.0
+ENERGY_MM = 55.0
+ENERGY_MASS_MM = 80.0
+# Space between the diagrams (mm).
+GAP_MM = 24.0
+# Letter sizes (cap height, mm).
+LABEL = 2.8
+HEADING = 3.8
+TITLE = 5.0
+# How far an axis runs past its last tick, to its arrowhead (mm).
+AXIS_RUN_MM = 8.0
+TICK_MM = 1.2
+# A tangent of the energy–mass diagram is drawn to the ΔT axis unless its intercept lies further
+# than this many heights of the ΔT diagram from its abscissa; then it is cut there.
+INTERCEPT_REACH = 3.0
+
+_DRIVING = Stroke(0.5, "#1f5fa8", (3.0, 1.5))
+_RESISTING = Stroke(0.5, "black")
+_CURVE = Stroke(0.5, "black")
+_TANGENT = Stroke(0.35, "#b22222")
+_GRID = Stroke(0.15, "#9a9a9a", (1.0, 1.0))
+
+#: The sheet's words, English; a caller passes its own locale's as ``text``.
+TEXT = {
+    "title": "Dynamics: the equivalent model and the flywheel",
+    "moments": "Reduced moments of the driving and resisting loads",
+    "works": "Works of the driving and resisting loads",
+    "energy": "Change of kinetic energy ΔT = Ad − Ar",
+    "energy_mass": "Energy–mass diagram ΔT(Je)",
+    "inertia": "Reduced moment of inertia Je(φ)",
+    "forces": "Reduced forces of the driving and resisting loads",
+    "mass": "Reduced mass me(s)",
+    "driving": "driving",
+    "resisting": "resisting",
+    "results": "Flywheel",
+    "delta": "δ = {delta}, ωm = {omega} rad/s ({rpm} rpm)",
+    "delta_w_max": "ΔWmax = {value} J (range of ΔT)",
+    "exact": "JF = ab·μT/(ωmax²/2 − ωmin²/2) = {value} kg·m² (energy–mass diagram)",
+    "approximate": "JF ≈ ΔWmax/(ωm²δ) − Je,mean = {value} kg·m²",
+    "mertsalov": "JF ≈ {value} kg·m² (Mertsalov: Jc = {constant} kg·m²)",
+    "moved": "on a shaft at {rpm} rpm: JF′ = JF·(n/n′)² = {value} kg·m²",
+    "omega_max": "ωmax = {value} rad/s at φ = {angle}° ({travel}° into the cycle)",
+    "omega_min": "ωmin = {value} rad/s at φ = {angle}° ({travel}° into the cycle)",
+    "no_flywheel": "JF ≤ 0: the machine keeps within δ without a flywheel",
+}
+
+
+@dataclass(frozen=True)
+class Scales:
+    """Scale factors of the sheet: units per millimetre of paper."""
+
+    angle: float      # μφ, rad/mm (a slider: μs, m/mm)
+    moment: float     # μM, N·m/mm (N/mm)
+    work: float       # μA, J/mm
+    energy: float     # μT, J/mm: the ΔT diagram and the energy–mass diagram
+    inertia: float    # μJ, kg·m²/mm (kg/mm)
+
+
+def scales_for(model: EquivalentModel) -> Scales:
+    """Round scales at which each diagram fills its field."""
+    if model.turning:
+        angle = 2.0 * math.pi / ABSCISSA_MM
+    else:
+        angle = fit_scale(float(model.coordinate[-1]), ABSCISSA_MM)
+    moments = np.concatenate([model.driving, model.resisting])
+    works = np.concatenate([model.driving_work, model.resisting_work])
+    return Scales(angle=angle, moment=fit_scale(_span(moments), MOMENTS_MM), work=fit_scale(_span(works), WORKS_MM),
+                  energy=fit_scale(_span(model.energy), ENERGY_MM),
+                  inertia=fit_scale(float(np.max(model.inertia)), ENERGY_MASS_MM))
+
+
+def dynamics_svg(model: EquivalentModel, flywheel: Flywheel | None = None,
+                 text: Mapping[str, str] | None = None) -> str:
+    """The SVG text of the dynamics sheet (:func:`layout`)."""
+    return to_svg(layout(model, flywheel, text))
+
+
+def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mapping[str, str] | None = None,
+           scales: Scales | None = None) -> list[Layer]:
+    """The layers of the dynamics sheet, in paper millimetres (y up)."""
+    words = {**TEXT, **(text or {})}
+    scales = scales or scales_for(model)
+    x = model.coordinate / scales.angle
+    moment_unit = _unit(model, "moment")
+    moments = _diagram(x, [(model.driving, _DRIVING, words["driving"]), (model.resisting, _RESISTING, words["resisting"])],
+                       scales.moment, model, "M" if model.turning else "F", moment_unit,
+                       f"μM = {format_scale(scales.moment)} {moment_unit}/mm",
+                       words["moments"] if model.turning else words["forces"], scales)
+    works = _diagram(x, [(model.driving_work, _DRIVING, "Ad"), (model.resisting_work, _RESISTING, "Ar")],
+                     scales.work, model, "A", "J", f"μA = {format_scale(scales.work)} J/mm", words["works"], scales)
+    energy = _diagram(x, [(model.energy, _CURVE, "")], scales.energy, model, "ΔT", "J",
+                      f"μT = {format_scale(scales.energy)} J/mm", words["energy"], scales)
+    layers: list[Layer] = []
+    bottom = GAP_MM
+    for name, items in (("moments", moments), ("works", works), ("energy", energy)):
+        dy = bottom - GAP_MM - bounds_of(items)[3]
+        layers.append(_layer(name, items, 0.0, dy))
+        bottom = bounds_of(layers[-1].items)[1]
+    energy_dy = dy
+    left_bottom = bottom
+    if model.turning:
+        right = ABSCISSA_MM + AXIS_RUN_MM + GAP_MM + 12.0
+        layers.append(_layer("energy-mass", _energy_mass(model, flywheel, scales, words), right, energy_dy))
+        turned = _inertia_turned(model, scales, words)
+        low = min(bottom, bounds_of(layers[-1].items)[1])
+        layers.append(_layer("inertia", turned, right, low - GAP_MM - bounds_of(turned)[3]))
+    else:
+        mass_scale = fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM)
+        mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, "me", "kg",
+                        f"μm = {format_scale(mass_scale)} kg/mm", words["mass"], scales, floor=True)
+        layers.append(_layer("inertia", mass, 0.0, bottom - GAP_MM - bounds_of(mass)[3]))
+        left_bottom = bounds_of(layers[-1].items)[1]
+    results = _results(model, flywheel, words)
+    if results:
+        layers.append(_layer("results", results, 0.0, left_bottom - GAP_MM - bounds_of(results)[3]))
+    xmin, _, _, ymax = bounds(layers)
+    layers.append(Layer("title", (Text((xmin, ymax + 8.0), words["title"], TITLE, "start", weight="bold"),)))
+    return layers
+
+
+def _layer(name: str, items: Sequence[Primitive], dx: float, dy: float) -> Layer:
+    return Layer(name, tuple(moved(item, dx, dy) for item in items))
+
+
+def _unit(model: EquivalentModel, kind: str) -> str:
+    if kind == "moment":
+        return "N·m" if model.turning else "N"
+    return "kg·m²" if model.turning else "kg"
+
+
+def _span(values: np.ndarray) -> float:
+    """The height the values need with the abscissa among them."""
+    return max(float(np.max(values)), 0.0) - min(float(np.min(values)), 0.0) or 1.0
+
+
+def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, symbol: str, unit: str, scale_text: str,
+             heading: str, scales: Scales, floor: bool = False) -> list[Primitive]:
+    """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
+
+    ``floor`` starts the ordinate at the smallest value rather than at zero (a reduced mass far from zero).
+    """
+    values = np.concatenate([c[0] for c in curves])
+    base = 0.0
+    if floor:  # from a round value under the smallest, so that the abscissa is a tick
+        step = _nice_step(float(np.ptp(values)) / 4)
+        base = math.floor(float(np.min(values)) / step + 1e-9) * step
+    top_mm = (max(float(np.max(values)), base) - base) / scale
+    bottom_mm = min(float(np.min(values)) - base, 0.0) / scale
+    width = float(x[-1])
+    items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm)
+    items += _ordinate(0.0, bottom_mm, top_mm, scale, base, f"{symbol}, {unit}")
+    for data, stroke, _ in curves:
+        y = (np.asarray(data) - base) / scale
+        items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
+    scale_y = top_mm + AXIS_RUN_MM + 3.0
+    items.append(Text((0.0, scale_y + LABEL + 2.5), heading, HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y), f"{scale_text}, {_angle_scale(model, scales)}", LABEL, "start"))
+    # The legend runs on along the scale's line, each curve's stroke before its name.
+    cursor = text_width(f"{scale_text}, {_angle_scale(model, scales)}", LABEL) + 8.0
+    for _, stroke, name in curves:
+        if not name:
+            continue
+        items.append(Polyline(((cursor, scale_y + LABEL / 3), (cursor + 10.0, scale_y + LABEL / 3)), stroke))
+        items.append(Text((cursor + 12.0, scale_y), name, LABEL, "start", stroke.colour))
+        cursor += 12.0 + text_width(name, LABEL) + 6.0
+    return items
+
+
+def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: float, top_mm: float) -> list[Primitive]:
+    """The φ axis at y = 0 (its arrow past the cycle), with a thin grid and the ticks' values under the diagram."""
+    items: list[Primitive] = [Arrow((0.0, 0.0), (width + AXIS_RUN_MM, 0.0), THIN, head=2.5)]
+    if model.turning:
+        ticks = [(math.radians(d) / scales.angle, f"{d}") for d in range(0, 361, 30)]
+        name = "φ, °"
+    else:
+        travel = float(model.coordinate[-1])
+        step = _nice_step(travel / 5)
+        ticks = [(v / scales.angle, _format(v)) for v in np.arange(0.0, travel * (1 + 1e-9), step)]
+        name = "s, m"
+    for at, label in ticks:
+        if at > 0:
+            items.append(Polyline(((at, bottom_mm), (at, top_mm)), _GRID))
+        items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
+        items.append(Text((at, bottom_mm - LABEL - 2.5), label, LABEL, "middle"))
+    items.append(Text((width + AXIS_RUN_MM + 1.5, -LABEL / 2), name, LABEL, "start"))
+    return items
+
+
+def _ordinate(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str) -> list[Primitive]:
+    """A vertical axis at ``x`` from the lowest value to past the highest, ticked at round values."""
+    items: list[Primitive] = [Polyline(((x, bottom_mm), (x, 0.0)), THIN),
+                              Arrow((x, 0.0), (x, top_mm + AXIS_RUN_MM), THIN, head=2.5)]
+    low, high = base + bottom_mm * scale, base + top_mm * scale
+    step = _nice_step((high - low) / 4)
+    first = math.ceil(low / step - 1e-9) * step
+    for value in np.arange(first, high + step * 1e-9, step):
+        at = (value - base) / scale
+        items.append(Polyline(((x - TICK_MM, at), (x, at)), THIN))
+        items.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), _format(value), LABEL, "end"))
+    items.append(Text((x + 2.0, top_mm + AXIS_RUN_MM - LABEL), name, LABEL, "start"))
+    return items
+
+
+def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scales,
+                 words: Mapping[str, str]) -> list[Primitive]:
+    """ΔT over Je (origin at Je = 0, ΔT = 0), the tangents at ψmax, ψmin and the segment ab they cut off."""
+    xs = model.inertia / scales.inertia
+    ys = model.energy / scales.energy
+    items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE, closed=True)]
+    top_mm, bottom_mm = float(np.max(ys)), float(np.min(ys))
+    width = float(np.max(xs))
+    if flywheel is not None:
+        reach = INTERCEPT_REACH * max(top_mm - bottom_mm, 1.0)
+        for tangent, letter, name in ((flywheel.upper, "a", "ψmax"), (flywheel.lower, "b", "ψmin")):
+            slope = tangent.slope * scales.inertia / scales.energy   # tan ψ on the paper
+            touch = (float(xs[tangent.touch]), float(ys[tangent.touch]))
+            intercept = tangent.intercept / scales.energy
+            start_x = 0.0
+            if abs(intercept) > reach + max(abs(top_mm), abs(bottom_mm)):
+                limit = math.copysign(reach + max(abs(top_mm), abs(bottom_mm)), intercept)
+                start_x = (limit - intercept) / slope if slope else 0.0
+            end_x = width + 4.0
+            line = ((start_x, intercept + slope * start_x), (end_x, intercept + slope * end_x))
+            items.append(Polyline(line, _TANGENT))
+            items.append(dot_marker(touch, 0.7, _TANGENT.colour))
+            angle = math.degrees(math.atan(slope))
+            items.append(Text((end_x + 1.0, line[1][1] - LABEL / 2), f"{name} = {angle:.2f}°", LABEL, "start",
+                              _TANGENT.colour))
+            if start_x == 0.0:
+                items.append(dot_marker((0.0, intercept), 0.7, _TANGENT.colour))
+                letter_y = intercept + 1.2 if letter == "a" else intercept - LABEL - 1.2
+                items.append(Text((1.2, letter_y), letter, LABEL, "start", _TANGENT.colour))
+            top_mm, bottom_mm = max(top_mm, line[0][1], line[1][1]), min(bottom_mm, line[0][1], line[1][1])
+        ab = (flywheel.upper.intercept - flywheel.lower.intercept) / scales.energy
+        items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), f"ab = {ab:.1f} mm", LABEL, "middle",
+                          _TANGENT.colour))
+    items += _ordinate(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, "ΔT, J")
+    items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
+    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), "Je", LABEL, "start"))
+    scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
+    items.append(Text((0.0, scale_y + LABEL + 2.5), words["energy_mass"], HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y), f"μJ = {format_scale(scales.inertia)} kg·m²/mm, μT = {format_scale(scales.energy)} J/mm",
+                      LABEL, "start"))
+    return items
+
+
+def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> list[Primitive]:
+    """Je(φ) with Je across (the energy–mass diagram's abscissa) and φ running down from y = 0."""
+    xs = model.inertia / scales.inertia
+    ys = -model.coordinate / scales.angle
+    width = float(np.max(xs))
+    items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE)]
+    length = float(-ys[-1])
+    items.append(Arrow((0.0, 0.0), (0.0, -length - AXIS_RUN_MM), THIN, head=2.5))
+    items.append(Text((1.5, -length - AXIS_RUN_MM - LABEL), "φ, °", LABEL, "start"))
+    for degrees in range(0, 361, 30):
+        at = -math.radians(degrees) / scales.angle
+        items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
+        items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), str(degrees), LABEL, "end"))
+    items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
+    step = _nice_step(float(np.max(model.inertia)) / 4)
+    for value in np.arange(step, float(np.max(model.inertia)) + step * 1e-9, step):
+        at = value / scales.inertia
+        items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
+        items.append(Text((at, TICK_MM + 1.0), _format(value), LABEL, "middle"))
+    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), "Je, kg·m²", LABEL, "start"))
+    items.append(Text((width / 2 + 6.0, -length / 2), words["inertia"], HEADING, "start", weight="bold"))
+    items.append(Text((width / 2 + 6.0, -length / 2 - HEADING - 2.5),
+                      f"μJ = {format_scale(scales.inertia)} kg·m²/mm, {_angle_scale(model, scales)}",
+                      LABEL, "start"))
+    return items
+
+
+def _angle_scale(model: EquivalentModel, scales: Scales) -> str:
+    if model.turning:
+        return f"μφ = {_format(math.degrees(scales.angle), 4)}°/mm ({_format(scales.angle, 4)} rad/mm)"
+    return f"μs = {format_scale(scales.angle)} m/mm"
+
+
+def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[str, str]) -> list[Primitive]:
+    if flywheel is None:
+        return []
+    lines = [
+        words["delta"].format(delta=_format(flywheel.delta), omega=_format(flywheel.omega_mean, 5),
+                              rpm=_format(omega_to_rpm(flywheel.omega_mean), 5)),
+        words["delta_w_max"].format(value=_format(flywheel.delta_w_max, 5)),
+        words["exact"].format(value=_format(flywheel.inertia, 5)),
+        words["approximate"].format(value=_format(flywheel.approximate, 5)),
+        words["mertsalov"].format(value=_format(flywheel.mertsalov, 5), constant=_format(flywheel.constant_inertia, 4)),
+    ]
+    if flywheel.moved is not None and flywheel.shaft_rpm is not None:
+        lines.append(words["moved"].format(rpm=_format(flywheel.shaft_rpm), value=_format(flywheel.moved, 4)))
+    for key, index in (("omega_max", flywheel.index_max), ("omega_min", flywheel.index_min)):
+        lines.append(words[key].format(value=_format(float(flywheel.omega[index]), 5),
+                                       angle=_format(math.degrees(model.driver[index]) % 360.0, 4),
+                                       travel=_format(math.degrees(model.coordinate[index]), 4)))
+    if flywheel.inertia <= 0:
+        lines.append(words["no_flywheel"])
+    items: list[Primitive] = [Text((0.0, 0.0), words["results"], HEADING, "start", weight="bold")]
+    for k, line in enumerate(lines, start=1):
+        items.append(Text((0.0, -k * 1.7 * LABEL - 2.0), line, LABEL, "start"))
+    return items
+
+
+def _nice_step(rough: float) -> float:
+    """A round step (1, 2, 2.5, 5 × 10ⁿ) at least ``rough``."""
+    if not rough > 0:
+        return 1.0
+    power = 10.0 ** math.floor(math.log10(rough))
+    for mantissa in (1.0, 2.0, 2.5, 5.0, 10.0):
+        if mantissa * power >= rough * (1 - 1e-9):
+            return mantissa * power
+    return 10.0 * power
+
+
+def _format(value: float, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant digits, as written on a drawing: no exponent, no −0."""
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else str(value)
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    text = f"{value:.{decimals}f}"
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+__all__ = ["TEXT", "Scales", "dynamics_svg", "layout", "scales_for"]
