@@ -124,19 +124,24 @@ def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Moti
     ends = solve(mechanism, np.array(positions.extremes), positions.reference)
     start, end = _output_coordinate(mechanism, ends)
     travel = end - start
-    here = _output_coordinate(mechanism, motion)
+    here = _output_coordinate(mechanism, motion, about=float(start))
     return (here - start) / travel
 
 
-def _output_coordinate(mechanism: Mechanism, motion: Motion) -> np.ndarray:
-    """The working link's angle (unwrapped near the stroke) or its displacement along its direction."""
+def _output_coordinate(mechanism: Mechanism, motion: Motion, about: float | None = None) -> np.ndarray:
+    """The working link's angle, within half a turn of ``about`` (default: its first angle in ``motion``),
+    or its displacement along its direction.
+
+    A window of the stroke is measured from the stroke's start: unwrapped
+    about any other angle, a swing across ±180° would be cut in two.
+    """
     working = mechanism.scene.positions.working
     assert working is not None
     link = motion.links[working.link]
     if working.link in mechanism.translating:
         return np.broadcast_to(dot(link.u, motion.points[link.origin].r), motion.driver.shape)
     angle = np.broadcast_to(np.asarray(link.angle, dtype=float), motion.driver.shape)
-    reference = float(angle[0])
+    reference = float(angle[0]) if about is None else about
     return reference + np.angle(np.exp(1j * (angle - reference)))
 
 
