@@ -28,7 +28,7 @@ from .scene import Scene
 # Every piece a run can deliver, in the order a course project presents them.  The first seven names
 # of the scene contract are here; ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = ("positions", "velocity", "acceleration", "diagrams", "forces", "lever", "errors", "note",
-          "balancing", "vibration", "figures")
+          "dynamics", "balancing", "vibration", "figures")
 FORMATS = ("svg", "png", "pdf", "dxf")
 # Pieces that cost more than they are worth by default: delivered only when asked for.
 ON_REQUEST = ("figures",)
@@ -53,6 +53,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return None if scene.vibration is not None else "needs a [vibration] table"
     if analysis is None:
         return _NO_LINKAGE
+    if piece == "dynamics" and scene.dynamics is None:
+        return "needs a [dynamics] table"
     if piece == "diagrams":
         if scene.positions.working is None:
             return "needs the output link: positions.working"
@@ -119,6 +121,11 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
     found: list[Drawing] = []
     if "positions" in pieces:
         found.append(Drawing("positions", positions_layout.layout(draw.positions_plan(analysis))))
+    if "dynamics" in pieces:
+        from .render import dynamics as dynamics_layout
+
+        model, flywheel = machine_dynamics(analysis)
+        found.append(Drawing("dynamics", dynamics_layout.layout(model, flywheel, strings(analysis.scene.locale))))
     if "diagrams" in pieces:
         from .kinematic_diagrams import of_analysis
         from .render import diagrams as diagrams_layout
@@ -137,6 +144,16 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
                 sheet = dataclasses.replace(sheet, lever=None)
             found.append(Drawing(f"forces_{plan.number}", force_layout.layout(sheet)))
     return found
+
+
+def machine_dynamics(analysis: Analysis):
+    """The equivalent model of the scene's ``[dynamics]`` and the flywheel it asks for (None without δ)."""
+    from .dynamics import equivalent_model_of
+    from .flywheel import flywheel_from_spec
+
+    spec = analysis.scene.dynamics
+    model = equivalent_model_of(analysis, spec.count, constant=spec.constant)
+    return model, flywheel_from_spec(model, spec)
 
 
 def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
@@ -220,6 +237,10 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
     from .report.results import results, results_without_linkage, rounded
 
     found = results(analysis) if analysis is not None else results_without_linkage(scene)
+    if "dynamics" in pieces and analysis is not None:
+        from .flywheel import dynamics_results
+
+        found["dynamics"] = dynamics_results(*machine_dynamics(analysis))
     if "balancing" in pieces:
         from .rotor_balancing import balance, balancing_results
 

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
+from typing import Any
 
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
@@ -28,7 +29,7 @@ SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
 STROKES = ("working", "idle", "always")
 # The tables that describe a mechanism: without [frame] and [driver] they have nothing to belong to.
-LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces")
+LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces", "dynamics")
 INERTIA_FORMS = ("couple", "displaced")
 OUTPUT_PIECES = ("positions", "velocity", "acceleration", "forces", "lever", "errors", "note")
 
@@ -144,6 +145,7 @@ class Scene:
     inertia: str = "couple"
     balancing: BalancingSpec | None = None
     vibration: VibrationSpec | None = None
+    dynamics: Any = None  # flywheel.DynamicsSpec: the equivalent model, the flywheel, the equation of motion
 
     @property
     def has_linkage(self) -> bool:
@@ -232,6 +234,12 @@ def _read_scene(top: Table, source: str) -> Scene:
                      balancing=balancing, vibration=vibration)
     frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
     driver = _read_driver(top.table("driver"))
+    dynamics = None
+    if top.has("dynamics"):
+        # Imported here: the machine's dynamics are built on the analysis, which reads scenes.
+        from .flywheel import read_dynamics
+
+        dynamics = read_dynamics(top.table("dynamics"))
     groups = tuple(_read_group(where, item) for where, item in top.items("groups", default=[]) or [])
     points = _read_points(top.table("points", None))
     links = _read_links(top.table("links", None))
@@ -249,7 +257,7 @@ def _read_scene(top: Table, source: str) -> Scene:
                  frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
                  driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_, friction=friction,
                  positions=positions, drawing=drawing, measured=MappingProxyType(measured), include=include,
-                 source=source, inertia=inertia, balancing=balancing, vibration=vibration)
+                 source=source, inertia=inertia, balancing=balancing, vibration=vibration, dynamics=dynamics)
 
 
 def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str, Guide]]:

@@ -196,3 +196,21 @@ def test_a_linkage_piece_of_a_rotor_scene_is_refused(tmp_path, capsys):
     status, out = run(tmp_path, "--only", "balancing,velocity", scene=scene)
     assert status == 2 and not out.exists()
     assert "--only[1]: 'velocity' needs a mechanism" in capsys.readouterr().err
+
+
+def test_a_dynamics_table_brings_the_flywheel(tmp_path):
+    scene = tmp_path / "with_flywheel.toml"
+    scene.write_text(RATCHET.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n", encoding="utf-8")
+    status, out = run(tmp_path, scene=scene)
+    assert status == 0
+    assert "dynamics.svg" in names(out)
+    dynamics = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]
+    # The crank's mean speed is the driver's 17 rad/s; δ = 0.05 bounds it at ωm·(1 ± δ/2).
+    assert dynamics["omega_max"] == pytest.approx(17.0 * 1.025, rel=1e-12)
+    assert dynamics["omega_min"] == pytest.approx(17.0 * 0.975, rel=1e-12)
+    energy = dynamics["kinetic_energy_change"]
+    assert dynamics["delta_w_max"] == pytest.approx(max(energy) - min(energy), rel=1e-9)
+    assert len(dynamics["reduced_inertia"]) == len(dynamics["reduced_moment"]) == len(energy)
+    # Without the table, no dynamics at all.
+    status, plain = run(tmp_path / "plain")
+    assert "dynamics.svg" not in names(plain)
