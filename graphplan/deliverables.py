@@ -157,7 +157,7 @@ def machine_dynamics(analysis: Analysis):
 
 
 def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
-    """The text files of ``pieces``: the error tables, the force analysis."""
+    """The text files of ``pieces``: the error tables, the force analysis, the explanatory note."""
     files: dict[str, str] = {}
     if analysis is None:
         return files
@@ -170,6 +170,11 @@ def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]
         from .report.forces import markdown as forces_markdown
 
         files["forces.md"] = forces_markdown(analysis)
+    if "note" in pieces:
+        from .report.note import note_html, note_markdown
+
+        files["note.md"] = note_markdown(analysis)
+        files["note.html"] = note_html(analysis)
     return files
 
 

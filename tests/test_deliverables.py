@@ -47,7 +47,7 @@ def test_by_default_every_piece_the_scene_has_data_for(tmp_path):
     status, out = run(tmp_path)
     assert status == 0
     assert {"results.json", "positions.svg", "diagrams.svg", "plan_5.svg", "plan_11.svg", "forces_5.svg",
-            "forces_11.svg", "errors.md", "errors.csv", "forces.md"} <= names(out)
+            "forces_11.svg", "errors.md", "errors.csv", "forces.md", "note.md", "note.html"} <= names(out)
     # Nothing the scene has no data for: it balances no rotor and has no springs.
     assert not {name for name in names(out) if name.startswith(("rotor", "vibration"))}
     # No figure without asking: matplotlib is not worth its second by default.

@@ -6,123 +6,288 @@ arms, the reactions from the polygons against the linear system, the
 balancing load four ways (polygons, lever, linear system, power), and with
 friction its iterations and the efficiency.  Then the balancing load and the
 efficiency over the whole cycle.
+
+The rows are computed once here (:func:`initial_data`, :func:`reaction_rows`,
+:func:`balancing_rows`, :func:`cycle_rows`) and written by the ``*_lines``
+functions in the scene's language, so that ``forces.md`` and the explanatory
+note (:mod:`graphplan.report.note`) print the same numbers.
 """
 
 from __future__ import annotations
 
 import cmath
 import math
-
-import numpy as np
+from collections.abc import Mapping
+from dataclasses import dataclass
 
 from ..analysis import Analysis, PlanPosition
 from ..loads import motion_state
+from ..locale import strings
 from ..statics import balancing_by_power, efficiency
-
 
 # A rate this small against the plan's largest is the plan's rounding, not a value.
 _ROUNDING = 1e-12
 
 
-def _g(value: float, digits: int = 5) -> str:
+def number(value: float, digits: int = 5, mark: str = ".") -> str:
+    """``value`` to ``digits`` significant digits with a true minus sign and the locale's decimal mark."""
     if not math.isfinite(value):
         return "—"
     text = f"{value:.{digits}g}"
-    return "0" if text in ("-0", "0") else text.replace("-", "−")
+    text = "0" if text in ("-0", "0") else text.replace("-", "−")
+    return text.replace(".", mark)
 
 
-def _polar(force: complex) -> str:
-    return f"{_g(abs(force))} ∠ {_g(math.degrees(cmath.phase(force)) if force else 0.0, 4)}°"
+def polar(force: complex, mark: str = ".") -> str:
+    """A force as magnitude ∠ direction in degrees."""
+    if not (math.isfinite(force.real) and math.isfinite(force.imag)):
+        return "—"
+    angle = math.degrees(cmath.phase(force)) if force else 0.0
+    return f"{number(abs(force), mark=mark)} ∠ {number(angle, 4, mark)}°"
 
 
-def _percent(value: float, reference: float) -> str:
-    return _g((value - reference) / reference * 100.0, 3) if reference else "—"
+def percent(value: float, reference: float, mark: str = ".") -> str:
+    """(value − reference)/reference · 100, or a dash without a reference."""
+    return number((value - reference) / reference * 100.0, 3, mark) if reference else "—"
 
 
-def markdown(analysis: Analysis) -> str:
-    driver = analysis.mechanism.driver
-    unit, name = ("N·m", "Mb") if driver.kind == "crank" else ("N", "Fb")
-    lines = [f"# Force analysis: {analysis.scene.title}", "",
-             f"Structure {analysis.mechanism.structure}; groups from the last to the driver. "
-             f"Reactions R_ij: the force link i exerts on link j. {name} in {unit}, counter-clockwise "
-             "(along the guide) positive.", ""]
-    for plan in analysis.plans:
-        if plan.forces is not None:
-            lines += _position(analysis, plan, name, unit)
-    if analysis.equilibrium is not None:
-        lines += _cycle(analysis, name, unit)
-    return "\n".join(lines) + "\n"
+@dataclass(frozen=True)
+class LinkData:
+    """One row of the initial data of the force analysis: a link's mass and inertia, and its motion from the plans.
+
+    ``epsilon`` is signed (ccw positive) as the acceleration plan gives it.
+    """
+
+    link: int
+    centre: str | None
+    mass: float
+    inertia: float
+    centre_acceleration: float
+    epsilon: float
+    gravity: float
+
+    @property
+    def inertia_force(self) -> float:
+        """Fu = m·aS, N."""
+        return self.mass * self.centre_acceleration
+
+    @property
+    def inertia_moment(self) -> float:
+        """Mu = J·|ε|, N·m."""
+        return self.inertia * abs(self.epsilon)
+
+    @property
+    def weight(self) -> float:
+        """G = m·g, N."""
+        return self.mass * self.gravity
 
 
-def _position(analysis: Analysis, plan: PlanPosition, name: str, unit: str) -> list[str]:
-    forces, index = plan.forces, plan.index
-    lines = [f"## Position {plan.number}", "", "### Initial data", "",
-             "| link | m, kg | aS, m/s² | Fu, N | J, kg·m² | ε, rad/s² | Mu, N·m | G, N |",
-             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+def initial_data(analysis: Analysis, plan: PlanPosition) -> list[LinkData]:
+    """The initial data of the force analysis at a plan position, link by link in the order of the structure."""
     scene = analysis.scene
-    for number in analysis.mechanism.moving_links:
-        spec = scene.links.get(number)
+    rows = []
+    largest = max(abs(rate) for rate in plan.acceleration.rates.values())
+    for link in analysis.mechanism.moving_links:
+        spec = scene.links.get(link)
         if spec is None:
             continue
         a_s = abs(plan.acceleration.value(spec.centre)) if spec.centre else 0.0
-        epsilon = plan.acceleration.rates.get(number, 0.0)
-        if abs(epsilon) < _ROUNDING * max(abs(rate) for rate in plan.acceleration.rates.values()):
+        epsilon = plan.acceleration.rates.get(link, 0.0)
+        if abs(epsilon) < _ROUNDING * largest:
             epsilon = 0.0  # a driver at constant speed: what is left is the plan's rounding
-        lines.append(f"| {number} | {_g(spec.mass)} | {_g(a_s)} | {_g(spec.mass * a_s)} | {_g(spec.inertia)} | "
-                     f"{_g(epsilon)} | {_g(spec.inertia * abs(epsilon))} | {_g(spec.mass * scene.gravity)} |")
-    lines.append("")
-    external = [load for load in plan.loads if load.name[0] in "FM" and not load.name.startswith(("Fu", "Mu"))]
-    for load in external:
-        value = _polar(load.force) if load.is_force else f"{_g(load.moment)} N·m"
+        rows.append(LinkData(link, spec.centre, spec.mass, spec.inertia, a_s, epsilon, scene.gravity))
+    return rows
+
+
+def external_loads(plan: PlanPosition):
+    """The scene's own loads at the position (not the weights and the inertia loads)."""
+    return [load for load in plan.loads if load.name[0] in "FM" and not load.name.startswith(("Fu", "Mu"))]
+
+
+def reaction_rows(analysis: Analysis, plan: PlanPosition) -> list[tuple[str, complex, complex]]:
+    """Every reaction as (name, from the polygons, from the linear system); NaN without the linear system."""
+    exact = analysis.equilibrium
+    rows = []
+    for reaction in plan.forces.reactions.values():
+        solved = complex(exact.reaction(reaction.name).force[plan.index]) if exact is not None else complex(math.nan)
+        rows.append((reaction.name, reaction.force, solved))
+    return rows
+
+
+# The four ways to the balancing load, in the order the tables list them.
+METHODS = ("polygons", "lever", "linear", "power")
+
+
+def balancing_rows(analysis: Analysis, plan: PlanPosition) -> list[tuple[str, float]]:
+    """The balancing load at a plan position four ways, as (method, value) in the order of :data:`METHODS`."""
+    index = plan.index
+    by_power = float(balancing_by_power(analysis.mechanism, motion_state(analysis.motion), analysis.loads)[index])
+    exact = analysis.equilibrium
+    return [("polygons", plan.forces.balancing),
+            ("lever", plan.lever.balancing if plan.lever is not None else math.nan),
+            ("linear", float(exact.balancing[index]) if exact is not None else math.nan),
+            ("power", by_power)]
+
+
+def cycle_rows(analysis: Analysis) -> list[tuple[int, float, float | None, float | None, bool]]:
+    """(position, Mb, Mb with friction, η, locked) at every position, from the linear system."""
+    exact, rubbing = analysis.equilibrium, analysis.with_friction
+    rows = []
+    for i, position in enumerate(analysis.positions.numbers):
+        ideal = float(exact.balancing[i])
+        if rubbing is None:
+            rows.append((int(position), ideal, None, None, False))
+            continue
+        locked = bool(rubbing.locked[i])
+        rubbed = float(rubbing.balancing[i])
+        eta = float(efficiency(analysis.mechanism, exact.balancing[i], rubbing.balancing[i]))
+        rows.append((int(position), ideal, None if locked else rubbed, None if locked else eta, locked))
+    return rows
+
+
+def balancing_symbol(analysis: Analysis) -> tuple[str, str]:
+    """The balancing load's symbol and its unit in the locale: (Mb, N·m) for a crank, (Fb, N) for a slider."""
+    text = strings(analysis.scene.locale)
+    if analysis.mechanism.driver.kind == "crank":
+        return "Mb", text["newton_metre"]
+    return "Fb", text["newton"]
+
+
+# Tables shared with the explanatory note: each returns Markdown lines in the scene's language.
+
+def initial_data_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    text = strings(analysis.scene.locale)
+    header = (f"| {text['column_link']} | m, {text['unit_kg']} | aS, {text['unit_m_per_s2']} | Fu, {text['newton']} | "
+              f"J, {text['unit_kg_m2']} | ε, {text['unit_rad_per_s2']} | Mu, {text['newton_metre']} | "
+              f"G, {text['newton']} |")
+    lines = [header, "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for row in initial_data(analysis, plan):
+        cells = (row.mass, row.centre_acceleration, row.inertia_force, row.inertia, row.epsilon, row.inertia_moment,
+                 row.weight)
+        lines.append(f"| {row.link} | " + " | ".join(number(value, mark=mark) for value in cells) + " |")
+    return lines
+
+
+def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    text = strings(analysis.scene.locale)
+    lines = []
+    for load in external_loads(plan):
         acting = load.force != 0 if load.is_force else load.moment != 0
-        lines.append(f"External load {load.name} on link {load.link}: {value if acting else 'not acting here'}.  ")
-    lines += ["", "### Moment equations", ""]
+        if not acting:
+            value = text["forces_not_acting"]
+        elif load.is_force:
+            value = f"{polar(load.force, mark)} {text['newton']}"
+        else:
+            value = f"{number(load.moment, mark=mark)} {text['newton_metre']}"
+        lines.append(text["forces_external"].format(name=load.name, link=load.link, value=value) + "  ")
+    return lines
+
+
+def reaction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    text = strings(analysis.scene.locale)
+    header = (f"| {text['column_reaction']} | {text['column_polygons']}, {text['newton']} ∠ | "
+              f"{text['column_linear']}, {text['newton']} ∠ | δ, % |")
+    lines = [header, "|---|---:|---:|---:|"]
+    for name, drawn, solved in reaction_rows(analysis, plan):
+        lines.append(f"| {name} | {polar(drawn, mark)} | {polar(solved, mark)} | "
+                     f"{percent(abs(drawn), abs(solved), mark) if math.isfinite(abs(solved)) else '—'} |")
+    return lines
+
+
+def balancing_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    text = strings(analysis.scene.locale)
+    lines = [f"| {text['column_method']} | {text['column_value']} | {text['column_delta_polygons']} |",
+             "|---|---:|---:|"]
+    rows = balancing_rows(analysis, plan)
+    polygons = rows[0][1]
+    for method, value in rows:
+        delta = "" if method == "polygons" else percent(value, polygons, mark) if math.isfinite(value) else "—"
+        lines.append(f"| {text['method_' + method]} | {number(value, 6, mark)} | {delta} |")
+    return lines
+
+
+def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    text = strings(analysis.scene.locale)
+    rubbing = plan.with_friction
+    name, unit = balancing_symbol(analysis)
+    if rubbing.locked:
+        return [text["forces_locked"].format(iterations=rubbing.iterations)]
+    eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing)
+    return [text["forces_with_friction"].format(
+        name=name, value=number(rubbing.balancing, 6, mark), unit=unit, iterations=rubbing.iterations,
+        ideal=number(plan.forces.balancing, 6, mark), efficiency=number(float(eta), 4, mark))]
+
+
+def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:
+    text = strings(analysis.scene.locale)
+    name, unit = balancing_symbol(analysis)
+    rubbing = analysis.with_friction is not None
+    header = f"| {text['column_position']} | {name}, {unit} |"
+    if rubbing:
+        header += f" {text['column_with_friction'].format(name=name, unit=unit)} | η |"
+    lines = [header, "|---|---:|" + ("---:|---:|" if rubbing else "")]
+    for position, ideal, rubbed, eta, locked in cycle_rows(analysis):
+        row = f"| {position} | {number(ideal, 6, mark)} |"
+        if rubbing:
+            row += (f" {text['forces_locked_short']} | — |" if locked else
+                    f" {number(rubbed, 6, mark)} | {number(eta, 4, mark)} |")
+        lines.append(row)
+    return lines
+
+
+def markdown(analysis: Analysis) -> str:
+    text = strings(analysis.scene.locale)
+    name, unit = balancing_symbol(analysis)
+    lines = [f"# {text['forces_title'].format(title=analysis.scene.title)}", "",
+             text["forces_intro"].format(structure=analysis.mechanism.structure, name=name, unit=unit), ""]
+    for plan in analysis.plans:
+        if plan.forces is not None:
+            lines += _position(analysis, plan, text)
+    if analysis.equilibrium is not None:
+        lines += [f"## {text['forces_cycle']}", "", text["forces_cycle_intro"], "", *cycle_lines(analysis), ""]
+    return "\n".join(lines) + "\n"
+
+
+def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -> list[str]:
+    name, unit = balancing_symbol(analysis)
+    forces = plan.forces
+    lines = [f"## {text['position_heading'].format(number=plan.number)}", "",
+             f"### {text['forces_initial_data']}", "", *initial_data_lines(analysis, plan), ""]
+    lines += external_load_lines(analysis, plan)
+    lines += ["", f"### {text['forces_moment_equations']}", ""]
+    metre, newton_metre = text["unit_m"], text["newton_metre"]
     for group in forces.groups:
         for equation in group.moments:
-            terms = ", ".join(f"{term.name}: {_g(term.moment)} N·m" + (f" (h = {_g(term.arm, 4)} m)"
-                                                                        if term.arm else "")
+            terms = ", ".join(f"{term.name}: {number(term.moment)} {newton_metre}"
+                              + (f" (h = {number(term.arm, 4)} {metre})" if term.arm else "")
                               for term in equation.terms)
             lines.append(f"- {group.label}: ΣM{equation.about}({equation.link}) = 0 → {equation.unknown} = "
-                         f"{_g(equation.value)}" + (f"; {terms}" if terms else ""))
-    exact = analysis.equilibrium
-    lines += ["", "### Reactions", "", f"Force polygons at μF = {_g(forces.scale)} N/mm.", "",
-              "| reaction | polygons, N ∠ | linear system, N ∠ | δ, % |", "|---|---:|---:|---:|"]
-    for reaction in forces.reactions.values():
-        solved = complex(exact.reaction(reaction.name).force[index]) if exact is not None else math.nan
-        lines.append(f"| {reaction.name} | {_polar(reaction.force)} | {_polar(solved)} | "
-                     f"{_percent(abs(reaction.force), abs(solved))} |")
-    by_power = float(balancing_by_power(analysis.mechanism, motion_state(analysis.motion), analysis.loads)[index])
-    lines += ["", f"### Balancing load {name}, {unit}", "", "| method | value | δ against the polygons, % |",
-              "|---|---:|---:|",
-              f"| force polygons | {_g(forces.balancing, 6)} | |",
-              f"| Zhukovsky's lever | {_g(plan.lever.balancing, 6)} | {_percent(plan.lever.balancing, forces.balancing)} |",
-              f"| linear system | {_g(float(exact.balancing[index]), 6)} | "
-              f"{_percent(float(exact.balancing[index]), forces.balancing)} |",
-              f"| power balance | {_g(by_power, 6)} | {_percent(by_power, forces.balancing)} |"]
+                         f"{number(equation.value)}" + (f"; {terms}" if terms else ""))
+    lines += ["", f"### {text['forces_reactions']}", "",
+              text["forces_polygon_scale"].format(value=number(forces.scale)), "", *reaction_lines(analysis, plan),
+              "", f"### {text['forces_balancing'].format(name=name, unit=unit)}", "", *balancing_lines(analysis, plan)]
     if plan.with_friction is not None:
-        rubbing = plan.with_friction
-        lines += ["", "### With friction in the pairs", ""]
-        if rubbing.locked:
-            lines.append(f"The reactions do not settle after {rubbing.iterations} repetitions: the mechanism locks "
-                         "itself in this position.")
-        else:
-            lines.append(f"{name} = {_g(rubbing.balancing, 6)} {unit} after {rubbing.iterations} repetitions; "
-                         f"without friction {_g(forces.balancing, 6)}: efficiency η = {name}0/{name} = "
-                         f"{_g(efficiency(analysis.mechanism, forces.balancing, rubbing.balancing), 4)}.")
+        lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan)]
     return lines + [""]
 
 
-def _cycle(analysis: Analysis, name: str, unit: str) -> list[str]:
-    exact, rubbing = analysis.equilibrium, analysis.with_friction
-    header = f"| position | {name}, {unit} |" + (f" {name} with friction, {unit} | η |" if rubbing is not None else "")
-    lines = ["## The cycle", "", "From the linear system at every position.", "", header,
-             "|---|---:|" + ("---:|---:|" if rubbing is not None else "")]
-    for i, number in enumerate(analysis.positions.numbers):
-        row = f"| {number} | {_g(float(exact.balancing[i]), 6)} |"
-        if rubbing is not None:
-            locked = bool(rubbing.locked[i])
-            row += (" locked | — |" if locked else
-                    f" {_g(float(rubbing.balancing[i]), 6)} | "
-                    f"{_g(float(efficiency(analysis.mechanism, exact.balancing[i], rubbing.balancing[i])), 4)} |")
-        lines.append(row)
-    return lines + [""]
+__all__ = [
+    "METHODS",
+    "LinkData",
+    "balancing_lines",
+    "balancing_rows",
+    "balancing_symbol",
+    "cycle_lines",
+    "cycle_rows",
+    "external_load_lines",
+    "external_loads",
+    "friction_lines",
+    "initial_data",
+    "initial_data_lines",
+    "markdown",
+    "number",
+    "percent",
+    "polar",
+    "reaction_lines",
+    "reaction_rows",
+]

@@ -2,7 +2,10 @@
 
 One row per quantity, the analytic value beside the plan's from each source
 (the plan as constructed, read to the drafting precision, measured by hand),
-each with its error δ = (analytic − plan) / analytic · 100 %.
+each with its error δ = (analytic − plan) / analytic · 100 %.  The Markdown is
+in the scene's language (:mod:`graphplan.locale`) and its table of a position
+(:func:`error_table_lines`) is the one the explanatory note prints; the CSV
+keeps the contract's identifiers for machines.
 """
 
 from __future__ import annotations
@@ -11,36 +14,56 @@ import csv
 import io
 from collections import defaultdict
 
-from ..analysis import Analysis
+from ..analysis import Analysis, PlanPosition
 from ..check import SOURCES, ErrorRow
+from ..locale import strings
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
 
+_GREEK = {"omega": "ω", "epsilon": "ε"}
 
-def _grouped(analysis: Analysis):
-    """For each plan position, its quantities in reading order with the error row of each source."""
-    for plan in analysis.plans:
-        table: dict[str, dict[str, ErrorRow]] = defaultdict(dict)
-        for row in plan.errors:
-            table[row.quantity][row.source] = row
-        sources = [s for s in SOURCES if any(s in rows for rows in table.values())]
-        yield plan.number, table, sources
+
+def quantity_symbol(quantity: str) -> str:
+    """A quantity of the error table as the textbook writes it: ``omega3`` → ``ω3``, ``VB`` unchanged."""
+    for word, letter in _GREEK.items():
+        if quantity.startswith(word) and quantity[len(word):].isdigit():
+            return letter + quantity[len(word):]
+    return quantity
+
+
+def _grouped(plan: PlanPosition) -> tuple[dict[str, dict[str, ErrorRow]], list[str]]:
+    """A position's quantities in reading order with the error row of each source, and the sources present."""
+    table: dict[str, dict[str, ErrorRow]] = defaultdict(dict)
+    for row in plan.errors:
+        table[row.quantity][row.source] = row
+    return table, [s for s in SOURCES if any(s in rows for rows in table.values())]
+
+
+def error_table_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    """The error table of one plan position as Markdown lines; ``mark`` is the decimal mark of its numbers."""
+    text = strings(analysis.scene.locale)
+    table, sources = _grouped(plan)
+    names = [text[f"source_{s}"] for s in sources]
+    header = [text["errors_quantity"], text["errors_analytic"], *names,
+              *(text["errors_delta"].format(source=name) for name in names)]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for quantity, rows in table.items():
+        exact = next(iter(rows.values())).analytic
+        cells = [quantity_symbol(quantity), f"{exact:.5g}"]
+        cells += [f"{rows[s].plan:.5g}" if s in rows else "" for s in sources]
+        cells += [f"{round(rows[s].percent, 3) or 0.0:.3f}" if s in rows else "" for s in sources]
+        lines.append("| " + " | ".join(cell.replace(".", mark) for cell in cells) + " |")
+    return lines
 
 
 def markdown(analysis: Analysis) -> str:
-    lines = [f"# Errors of the plans: {analysis.scene.title}", "", f"{FORMULA}; drafting: every length read off the "
-             f"plan rounded to {analysis.scene.drawing.drafting_precision:g} mm.", ""]
-    for number, table, sources in _grouped(analysis):
-        lines += [f"## Position {number}", ""]
-        header = ["quantity", "analytic"] + [f"{s}" for s in sources] + [f"δ {s}, %" for s in sources]
-        lines += ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        for quantity, rows in table.items():
-            exact = next(iter(rows.values())).analytic
-            cells = [quantity, f"{exact:.5g}"]
-            cells += [f"{rows[s].plan:.5g}" if s in rows else "" for s in sources]
-            cells += [f"{round(rows[s].percent, 3) or 0.0:.3f}" if s in rows else "" for s in sources]
-            lines.append("| " + " | ".join(cells) + " |")
-        lines.append("")
+    text = strings(analysis.scene.locale)
+    precision = f"{analysis.scene.drawing.drafting_precision:g}"
+    lines = [f"# {text['errors_title'].format(title=analysis.scene.title)}", "",
+             f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}", ""]
+    for plan in analysis.plans:
+        lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
+                  *error_table_lines(analysis, plan), ""]
     return "\n".join(lines)
 
 

@@ -1,0 +1,923 @@
+"""The explanatory note: the worked example a student hands in with the course project.
+
+It is written in the scene's language (:mod:`graphplan.locale`) as a textbook
+writes a worked example: the structural analysis (Chebyshev's formula with
+its numbers, the groups, the structure formula), the initial data, then for
+every plan position the velocity and the acceleration plan step by step (the
+driver's velocity with its arithmetic, the scale factor, each group's vector
+equation with the modulus and line of action of every term, the crossing of
+the lines, the similarity proportions, every value read off with the
+segment, the scale and the result), the tables of the plan against the
+analytic solution, the error tables, and, where the scene has loads, the
+force analysis (initial data of the loads, moment equations, force polygons,
+reactions, the balancing load by the polygons and by Zhukovsky's lever).
+
+Everything is read from the records of one :class:`~graphplan.analysis.Analysis`
+(the plans' steps, the readings, the force plans and levers); what the note
+computes itself (a normal component ω²·l, a similarity proportion, the
+lever's Fy) it prints with its arithmetic, and checks against the record
+before it does, falling back to the record's own value.  The
+tables of errors and of the force analysis are the ones ``errors.md`` and
+``forces.md`` print (:mod:`graphplan.report.tables`,
+:mod:`graphplan.report.forces`), with the locale's decimal mark.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..analysis import Analysis, PlanPosition
+from ..check import Reading
+from ..locale import strings
+from ..plans import PLAN_FIELD_MM, LaidVector, Plan, Step, image_name
+from ..scales import format_scale, standard_scale
+from . import forces as force_report
+from .tables import error_table_lines, quantity_symbol
+
+# Two numbers that agree to this share are the same number printed twice.
+_SAME = 1e-6
+# A rate this small against the plan's largest is the plan's rounding, not a value.
+_ROUNDING = 1e-12
+# Suffixes of the components as the plans name them.
+_NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE = "ⁿ", "ᵏ", "^τ", "^r"
+_ROMAN = {1: "I", 2: "II", 3: "III"}
+
+
+def note_markdown(analysis: Analysis) -> str:
+    """The explanatory note of ``analysis`` as Markdown, in the scene's language."""
+    note = _Note(analysis)
+    note.write()
+    return "\n".join(note.lines).rstrip("\n") + "\n"
+
+
+def note_html(analysis: Analysis) -> str:
+    """The explanatory note as a standalone HTML page."""
+    from .html import to_html
+
+    title = strings(analysis.scene.locale)["note_title"].format(title=analysis.scene.title)
+    return to_html(note_markdown(analysis), title, analysis.scene.locale, symbols=True)
+
+
+@dataclass(frozen=True)
+class _Term:
+    """One term of a vector equation as the note tabulates it."""
+
+    name: str
+    modulus: str
+    segment: str
+    direction: str
+
+
+@dataclass
+class _Note:
+    analysis: Analysis
+    lines: list[str] = field(default_factory=list)
+    tables: int = 0
+
+    def __post_init__(self) -> None:
+        self.text = strings(self.analysis.scene.locale)
+        self.mark = self.text["decimal_mark"]
+        self.mechanism = self.analysis.mechanism
+        self.frame = self.analysis.scene.frame_link
+
+    # Formatting in the note's language.
+
+    def t(self, key: str, **values: object) -> str:
+        return self.text[key].format(**values)
+
+    def n(self, value: float, digits: int = 5) -> str:
+        return force_report.number(float(value), digits, self.mark)
+
+    def mm(self, value: float) -> str:
+        """A length on a drawing, to a hundredth of a millimetre."""
+        return f"{value:.2f}".replace(".", self.mark)
+
+    def product(self, *factors: str) -> str:
+        return self.text["times"].join(factors)
+
+    def sense(self, value: float) -> str:
+        return self.text["sense_ccw"] if value > 0 else self.text["sense_cw"]
+
+    def with_sense(self, value: float) -> str:
+        """", clockwise" after a turning quantity; nothing after a zero."""
+        return self.text["comma"] + self.sense(value) if value != 0 else ""
+
+    def para(self, *lines: str) -> None:
+        self.lines += [*lines, ""]
+
+    def heading(self, level: int, title: str) -> None:
+        self.lines += ["#" * level + " " + title, ""]
+
+    def table(self, caption: str | None, header: Sequence[str], rows: Sequence[Sequence[str]],
+              align: str | None = None) -> None:
+        if caption is not None:
+            self.tables += 1
+            self.para(self.t("table_caption", number=self.tables, caption=caption))
+        align = align or "l" * len(header)
+        self.lines.append("| " + " | ".join(header) + " |")
+        self.lines.append("|" + "".join("---:|" if a == "r" else "---|" for a in align))
+        self.lines += ["| " + " | ".join(row) + " |" for row in rows]
+        self.lines.append("")
+
+    def captioned(self, caption: str, table_lines: list[str]) -> None:
+        """A table another report wrote, with the note's numbered caption."""
+        self.tables += 1
+        self.para(self.t("table_caption", number=self.tables, caption=caption))
+        self.para(*table_lines)
+
+    # The note.
+
+    def write(self) -> None:
+        scene = self.analysis.scene
+        self.heading(1, self.t("note_title", title=scene.title))
+        section = 1
+        self.structure(section)
+        section += 1
+        self.initial_data(section)
+        plans = self.analysis.plans
+        if plans:
+            section += 1
+            self.heading(2, f"{section}. {self.t('note_kinematics')}")
+            self.para(self.t("note_kinematics_intro", positions=", ".join(str(p.number) for p in plans)))
+            for number, plan in enumerate(plans, 1):
+                self.kinematics(f"{section}.{number}", plan)
+            section += 1
+            self.errors(section)
+        if any(plan.forces is not None for plan in plans) or self.analysis.equilibrium is not None:
+            section += 1
+            self.forces(section)
+
+    def structure(self, section: int) -> None:
+        mechanism = self.mechanism
+        n, p5, w = mechanism.degrees_of_freedom
+        self.heading(2, f"{section}. {self.t('note_structure')}")
+        self.para(self.t("note_links_and_pairs", n=n, p5=p5, p4=0))
+        formula = self.t("dof_formula")
+        numbers = f"3{self.text['times']}{n} − 2{self.text['times']}{p5} − 0 = {w}"
+        self.para(self.t("note_dof", formula=f"{formula} = {numbers}"))
+        driver = mechanism.driver
+        rows = [[f"I({self.frame},{driver.link})", self.t("note_group_driver"), f"{self.frame}, {driver.link}",
+                 ", ".join(driver.known_joints() + driver.new_joints()), self.t(f"driver_{driver.kind}")]]
+        for group in mechanism.groups:
+            rows.append([group.label, self.t("note_class_order", klass=_ROMAN[2], order=2),
+                         ", ".join(str(link) for link in group.links), ", ".join(group.joints),
+                         self.kind_name(group.kind)])
+        header = [self.t("column_group"), self.t("column_class_order"), self.t("column_links"),
+                  self.t("column_joints"), self.t("column_kind")]
+        self.table(self.t("note_groups_caption"), header, rows)
+        klass = _ROMAN[2] if mechanism.groups else _ROMAN[1]
+        self.para(self.t("note_structure_formula", formula=mechanism.structure, klass=klass))
+
+    def kind_name(self, kind: str) -> str:
+        """RRR as the locale letters a group (ВВВ in Russian); the Latin letters alongside when they differ."""
+        letters = "".join(self.text["pair_turning"] if c == "R" else self.text["pair_sliding"] for c in kind)
+        return letters if letters == kind else f"{letters} ({kind})"
+
+    def initial_data(self, section: int) -> None:
+        scene, driver = self.analysis.scene, self.mechanism.driver
+        self.heading(2, f"{section}. {self.t('note_initial_data')}")
+        rows = [[label, f"{self.n(value)} {self.text['unit_m']}"] for label, value in self.lengths()]
+        if driver.kind == "crank":
+            omega = f"{self.n(abs(driver.omega))} {self.text['unit_rad_per_s']}{self.with_sense(driver.omega)}"
+            rows.append([f"ω{driver.link}", omega])
+            rows.append([f"ε{driver.link}", f"{self.n(driver.epsilon)} {self.text['unit_rad_per_s2']}"])
+        else:
+            rows.append([f"V{driver.joint}", f"{self.n(driver.velocity)} {self.text['unit_m_per_s']}"])
+            rows.append([f"a{driver.joint}", f"{self.n(driver.acceleration)} {self.text['unit_m_per_s2']}"])
+        if scene.drawing.length_scale is not None:
+            scale = format_scale(scene.drawing.length_scale).replace(".", self.mark)
+            rows.append(["μl", f"{scale} {self.text['unit_length_scale']}"])
+        self.table(self.t("note_initial_data_caption"), [self.t("column_quantity"), self.t("column_value")], rows)
+
+    def lengths(self) -> list[tuple[str, float]]:
+        """The constant distances between the points of each link that the construction uses (lOA, lAB, lAS3, ...)."""
+        motion, found, seen = self.analysis.motion, [], set()
+
+        def add(first: str, second: str) -> None:
+            if first == second or frozenset((first, second)) in seen:
+                return
+            if first not in motion.points or second not in motion.points:
+                return
+            distance = np.abs(np.asarray(motion.points[second].r) - np.asarray(motion.points[first].r))
+            distance = distance[np.isfinite(distance)]
+            if distance.size and float(np.ptp(distance)) <= _SAME * max(float(distance.max()), 1e-300):
+                seen.add(frozenset((first, second)))
+                found.append((f"l{first}{second}", float(distance[0])))
+
+        for unit in self.mechanism.units:
+            for names in unit.solver.fixed_points().values():
+                for first, second in itertools.pairwise(names):
+                    add(first, second)
+            for spec in unit.points:
+                add(spec.start, spec.name)
+        return found
+
+    # Kinematics of one position.
+
+    def kinematics(self, section: str, plan: PlanPosition) -> None:
+        positions, driver = self.analysis.positions, self.mechanism.driver
+        value = float(positions.values[plan.index])
+        where = (f"φ = {self.n(math.degrees(value) % 360.0)}°" if driver.kind == "crank"
+                 else f"s = {self.n(value)} {self.text['unit_m']}")
+        stroke = ""
+        if positions.strokes is not None:
+            stroke = self.text["comma"] + self.text[f"{positions.strokes[plan.index]}_stroke"]
+        self.heading(3, f"{section}. {self.t('position_heading', number=plan.number)}{self.text['colon']}{where}{stroke}")
+        self.plan_section(plan, plan.velocity)
+        self.plan_section(plan, plan.acceleration)
+        for kind in ("velocity", "acceleration"):
+            self.values_table(plan, kind)
+
+    def plan_section(self, pp: PlanPosition, plan: Plan) -> None:
+        kind = plan.kind
+        self.heading(4, self.text[f"{kind}_plan_title"])
+        blocks = self.blocks(plan)
+        for index, steps in blocks:
+            unit = self.mechanism.units[index]
+            if index == 0:
+                self.driver_step(pp, plan)
+                self.scale(pp, plan)
+            else:
+                group = unit.solver
+                self.para(f"**{self.t('note_group_heading', group=group.label, kind=self.kind_name(group.kind))}**")
+                for step in steps:
+                    if not _is_similarity(step):
+                        self.group_step(pp, plan, step)
+            similar = [self.similarity(pp, plan, step) for step in steps if _is_similarity(step)]
+            if similar:
+                self.para(self.t("note_similarity"), *(f"- {line}" for line in similar))
+        self.readings(pp, plan)
+
+    def blocks(self, plan: Plan) -> list[tuple[int, list[Step]]]:
+        """The plan's steps by the unit of the structure (driver, groups) that drew them, in order.
+
+        A unit's steps end with the one that fixes its new joints; the named
+        points a unit places by similarity come right after it, and a guide
+        link's point placed by similarity belongs to the group that needs it.
+        """
+        units = self.mechanism.units
+        named = {plan.images[spec.name]: k for k, unit in enumerate(units) for spec in unit.points
+                 if spec.name in plan.images}
+        fixed: set[str] = set()
+        ends = [len(plan.steps) - 1] * len(units)
+        pending = list(range(len(units)))
+        for i, step in enumerate(plan.steps):
+            fixed.update(step.fixes)
+            for k in list(pending):
+                letters = {plan.images.get(joint) for joint in units[k].solver.new_joints()}
+                if None not in letters and letters <= fixed:
+                    ends[k] = i
+                    pending.remove(k)
+        found: dict[int, list[Step]] = {k: [] for k in range(len(units))}
+        for i, step in enumerate(plan.steps):
+            if _is_similarity(step) and step.fixes and step.fixes[0] in named:
+                found[named[step.fixes[0]]].append(step)
+                continue
+            owner = next((k for k in range(len(units)) if ends[k] >= i), len(units) - 1)
+            found[owner].append(step)
+        return [(k, found[k]) for k in range(len(units))]
+
+    def letter(self, plan: Plan, letter: str) -> str:
+        """A plan letter as the note writes it: the pole of an acceleration plan is the locale's (π)."""
+        if letter == "p" and plan.kind == "acceleration":
+            return self.text["acceleration_pole"]
+        return letter
+
+    def segment(self, plan: Plan, start: str, end: str) -> str:
+        return self.letter(plan, start) + self.letter(plan, end)
+
+    def length_mm(self, plan: Plan, start: str, end: str) -> float:
+        return abs(plan.mm(end) - plan.mm(start))
+
+    def driver_step(self, pp: PlanPosition, plan: Plan) -> None:
+        driver = self.mechanism.driver
+        joint = driver.joint
+        value = abs(plan.value(joint))
+        velocity = plan.kind == "velocity"
+        unit = self.text["unit_m_per_s" if velocity else "unit_m_per_s2"]
+        if driver.kind == "slider":
+            symbol = "ṡ" if velocity else "s̈"
+            key = "note_slider_velocity" if velocity else "note_slider_acceleration"
+            self.para(self.t(key, equation=f"{'V' if velocity else 'a'}{joint} = {symbol} = {self.n(value)} {unit}"))
+            return
+        length = f"l{driver.pivot}{joint}"
+        omega, epsilon, arm = abs(driver.omega), driver.epsilon, driver.length
+        if velocity:
+            equation = (f"V{joint} = ω{driver.link}·{length} = {self.product(self.n(omega), self.n(arm))} = "
+                        f"{self.n(value)} {unit}")
+            self.para(self.t("note_crank_velocity", equation=equation, joint=joint, pivot=driver.pivot,
+                             link=driver.link, sense=self.sense(driver.omega)))
+            return
+        normal = f"a{joint}ⁿ = ω{driver.link}²·{length} = {self.n(omega)}²{self.text['times']}{self.n(arm)} = " \
+                 f"{self.n(omega * omega * arm)} {unit}"
+        if epsilon == 0:
+            self.para(self.t("note_crank_acceleration", equation=f"a{joint} = {normal}", joint=joint,
+                             pivot=driver.pivot, link=driver.link))
+            return
+        tangential = (f"a{joint}^τ = ε{driver.link}·{length} = {self.product(self.n(abs(epsilon)), self.n(arm))} = "
+                      f"{self.n(abs(epsilon) * arm)} {unit}")
+        total = f"a{joint} = √((a{joint}ⁿ)² + (a{joint}^τ)²) = {self.n(value)} {unit}"
+        self.para(self.t("note_crank_acceleration_tangential", normal=normal, tangential=tangential, total=total,
+                         joint=joint, pivot=driver.pivot, link=driver.link))
+
+    def scale(self, pp: PlanPosition, plan: Plan) -> None:
+        """The scale factor of the plan with the arithmetic that chose it (as :func:`graphplan.plans` does)."""
+        drawing = self.analysis.scene.drawing
+        velocity = plan.kind == "velocity"
+        symbol = "μV" if velocity else "μa"
+        unit = self.text["unit_velocity_scale" if velocity else "unit_acceleration_scale"]
+        joint = self.mechanism.driver.joint
+        quantity = f"{'V' if velocity else 'a'}{joint}"
+        letter = plan.images[joint]
+        segment = self.segment(plan, "p", letter)
+        given = drawing.velocity_scale if velocity else drawing.acceleration_scale
+        pole = drawing.velocity_pole if velocity else drawing.acceleration_pole
+        value = abs(plan.value(joint))
+        scale = self.n(plan.scale)
+        if given is not None and math.isclose(given, plan.scale, rel_tol=_SAME):
+            self.para(self.t("note_scale_given", symbol=symbol, scale=scale, unit=unit,
+                             equation=f"{segment} = {quantity}/{symbol} = {self.n(value)}/{scale} = "
+                                      f"{self.mm(value / plan.scale)} {self.text['millimetre']}"))
+        elif pole is not None and value > 0 and math.isclose(value / pole, plan.scale, rel_tol=_SAME):
+            self.para(self.t("note_scale_pole", segment=segment, pole=self.n(pole), quantity=quantity,
+                             unit=unit, millimetre=self.text["millimetre"],
+                             equation=f"{symbol} = {quantity}/{segment} = {self.n(value)}/{self.n(pole)} = {scale}"))
+        else:
+            extent = max(abs(a - b) for a in plan.points.values() for b in plan.points.values())
+            least = max(extent, 1e-300) / PLAN_FIELD_MM
+            if math.isclose(standard_scale(least), plan.scale, rel_tol=_SAME):
+                self.para(self.t("note_scale_standard", symbol=symbol, extent=self.n(extent), field=self.n(PLAN_FIELD_MM),
+                                 least=self.n(least), scale=scale, unit=unit,
+                                 quantity_unit=self.text["unit_m_per_s" if velocity else "unit_m_per_s2"]))
+            else:
+                self.para(f"{symbol} = {scale} {unit}.")
+            if value > 0:
+                self.para(f"{segment} = {quantity}/{symbol} = {self.n(value)}/{scale} = "
+                          f"{self.mm(value / plan.scale)} {self.text['millimetre']}.")
+
+    # A group's vector equation.
+
+    def group_step(self, pp: PlanPosition, plan: Plan, step: Step) -> None:
+        clauses = step.equation.split(", ")
+        first, note = _parenthesis(clauses[0])
+        sides = [side.split(" + ") for side in first.split(" = ")]
+        shown = self.equation(" = ".join(" + ".join(side) for side in sides))
+        explanation = self.explain(note) if note else ""
+        extra = "".join(f", {self.equation(clause)}" for clause in clauses[1:])
+        if len(sides) < 3 and all(len(side) == 1 for side in sides):
+            self.para(f"{shown}{extra}" + (f" — {explanation}" if explanation else "") + ".")
+            return
+        self.para(self.t("note_vector_equation", equation=shown + extra) + (f" ({explanation})" if explanation else ""))
+        terms = self.terms(pp, plan, step, sides)
+        header = [self.t("column_vector"), self.t("column_modulus"), self.t("column_on_plan"),
+                  self.t("column_direction")]
+        self.table(None, header, [[term.name, term.modulus, term.segment, term.direction] for term in terms])
+        if step.lines and step.fixes:
+            lines = self.text["semicolon"].join(self.t("note_line_through", line=self.line(line.meaning),
+                                     point=self.letter(plan, line.through)) for line in step.lines)
+            angle = f"{self.n(step.crossing_deg, 4)}" if step.crossing_deg is not None else "—"
+            self.para(self.t("note_lines_cross", lines=lines, point=self.letter(plan, step.fixes[-1]), angle=angle))
+
+    def equation(self, text: str) -> str:
+        """An equation of the record with velocities written V, as the textbooks print them."""
+        return re.sub(r"(?<![A-Za-z])v(?=[A-Z])", "V", text)
+
+    def explain(self, note: str) -> str:
+        match = re.fullmatch(r"link (\d+) translates on the frame's guide", note)
+        if match:
+            return self.t("note_translates", link=match.group(1))
+        return note
+
+    def line(self, meaning: str) -> str:
+        """A line of action as the record names it (⊥ AB, ∥ guide), in the note's language."""
+        if meaning == "∥ guide":
+            return "∥ " + self.text["note_guide"]
+        if meaning == "∥ slot":
+            return "∥ " + self.text["note_slot"]
+        match = re.fullmatch(r"∥ guide on link (\d+)", meaning)
+        if match:
+            return "∥ " + self.t("note_guide_on_link", link=match.group(1))
+        match = re.fullmatch(r"∥ slide of link (\d+)", meaning)
+        if match:
+            return "∥ " + self.t("note_slide_of_link", link=match.group(1))
+        return meaning
+
+    def resolve(self, plan: Plan, point: str) -> str | None:
+        """The plan letter of a point an equation names: a mechanism point, a guide link's point (B4), or a
+        link's point over a joint (A3 is the block's point A); the frame's points are at the pole."""
+        if point in plan.images:
+            return plan.images[point]
+        if image_name(point) in plan.points:
+            return image_name(point)
+        match = re.fullmatch(r"(.+?)(\d+)", point)
+        if match:
+            base, link = match.group(1), int(match.group(2))
+            if link == self.frame:
+                return "p"
+            if base in plan.images:
+                return plan.images[base]
+        return None
+
+    def terms(self, pp: PlanPosition, plan: Plan, step: Step, sides: list[list[str]]) -> list[_Term]:
+        """Each term of each side with its modulus, its segment on the plan and its line of action.
+
+        A side is walked as it is laid off: from the image of its first
+        (known) term, each component from the end of the one before, the last
+        ending at the point the step fixes.
+        """
+        by_meaning = {vector.meaning: vector for vector in step.vectors}
+        result = self.resolve(plan, _body(sides[0][0])[1])
+        terms: list[_Term] = []
+        listed: set[str] = set()
+        for number, side in enumerate(sides[1:]):
+            current = self.resolve(plan, _body(side[0])[1])
+            if side[0] not in listed:
+                terms.append(self.known_term(plan, side[0], current))
+                listed.add(side[0])
+            for position, name in enumerate(side[1:], 1):
+                vector = by_meaning.get(name)
+                last = position == len(side) - 1
+                if vector is not None:
+                    start, end = vector.start, vector.end
+                else:
+                    start, end = current, (result if last else None)
+                current = end
+                if name in listed:
+                    continue
+                listed.add(name)
+                terms.append(self.component(pp, plan, step, name, start, end, vector, number))
+        return terms
+
+    def known_term(self, plan: Plan, name: str, letter: str | None) -> _Term:
+        shown = self.equation(name)
+        if letter is None:
+            return _Term(shown, "—", "—", "—")
+        unit = self.text["unit_m_per_s" if plan.kind == "velocity" else "unit_m_per_s2"]
+        if letter == "p":
+            return _Term(shown, "0", self.letter(plan, "p"), self.text["note_at_pole"])
+        value = abs(plan.points[letter])
+        segment = f"{self.segment(plan, 'p', letter)} = {self.mm(value / plan.scale)}"
+        return _Term(shown, f"{self.n(value)} {unit}", segment, self.text["note_known"])
+
+    def component(self, pp: PlanPosition, plan: Plan, step: Step, name: str, start: str | None, end: str | None,
+                  vector: LaidVector | None, side: int) -> _Term:
+        shown = self.equation(name)
+        segment = self.segment(plan, start, end) if start and end else "—"
+        if name.endswith((_NORMAL, _CORIOLIS)) and vector is not None:
+            value = abs(plan.points[vector.end] - plan.points[vector.start])
+            segment += f" = {self.mm(value / plan.scale)}"
+            if name.endswith(_NORMAL):
+                modulus, direction = self.normal(pp, plan, name, value)
+            else:
+                modulus, direction = self.coriolis(pp, name, value)
+            return _Term(shown, modulus, segment, direction)
+        through = [line for line in step.lines if line.through == start]
+        if len(through) > 1 and side < len(step.lines) and step.lines[side].through == start:
+            through = [step.lines[side]]
+        direction = self.line(through[0].meaning) if through else "—"
+        return _Term(shown, "?", segment, direction)
+
+    def normal(self, pp: PlanPosition, plan: Plan, name: str, value: float) -> tuple[str, str]:
+        """aBAⁿ = ω3²·lAB, directed from B to A."""
+        unit = self.text["unit_m_per_s2"]
+        pair = self.split(name[1:-1], pp)
+        if pair is None:
+            return f"{self.n(value)} {unit}", "—"
+        moving, centre = pair
+        direction = self.t("note_normal_direction", line=f"{centre}{moving}", start=moving, end=centre)
+        length = abs(self.position(pp, moving) - self.position(pp, centre))
+        link = self.link_of(pp, moving, centre)
+        omega = pp.velocity.rates.get(link) if link is not None else None
+        if omega is None or length == 0 or not math.isclose(omega * omega * length, value, rel_tol=_SAME,
+                                                             abs_tol=_SAME * value + 1e-300):
+            return f"{self.n(value)} {unit}", direction
+        modulus = (f"ω{link}²·l{centre}{moving} = {self.n(abs(omega))}²{self.text['times']}{self.n(length)} = "
+                   f"{self.n(value)} {unit}")
+        return modulus, direction
+
+    def coriolis(self, pp: PlanPosition, name: str, value: float) -> tuple[str, str]:
+        """aA4A3ᵏ = 2·ω3·VA4A3, the relative velocity turned by 90° in the sense of ω."""
+        unit = self.text["unit_m_per_s2"]
+        body = name[1:-1]
+        relative = None
+        for step in pp.velocity.steps:
+            for vector in step.vectors:
+                if vector.meaning == "v" + body:
+                    relative = abs(pp.velocity.points[vector.end] - pp.velocity.points[vector.start])
+        match = re.search(r"(\d+)$", body)
+        if relative is None or match is None:
+            return f"{self.n(value)} {unit}", "—"
+        candidates = [int(match.group(1))] + sorted(pp.velocity.rates)
+        link = next((k for k in candidates if k in pp.velocity.rates
+                     and math.isclose(2 * abs(pp.velocity.rates[k]) * relative, value, rel_tol=_SAME)), None)
+        if link is None:
+            return f"{self.n(value)} {unit}", "—"
+        omega = pp.velocity.rates[link]
+        modulus = (f"2·ω{link}·V{body} = {self.product('2', self.n(abs(omega)), self.n(relative))} = "
+                   f"{self.n(value)} {unit}")
+        return modulus, self.t("note_coriolis_direction", relative=f"V{body}", link=link,
+                               sense=self.sense(omega))
+
+    def split(self, text: str, pp: PlanPosition) -> tuple[str, str] | None:
+        """``"BA"`` → ``("B", "A")``: two point names whose positions are known, longest names first."""
+        names = sorted(set(pp.positions) | {m for m in _guide_points(text)}, key=len, reverse=True)
+        for first in names:
+            if text.startswith(first) and len(text) > len(first):
+                rest = text[len(first):]
+                if self.position(pp, rest) is not None and self.position(pp, first) is not None:
+                    return first, rest
+        return None
+
+    def position(self, pp: PlanPosition, name: str) -> complex | None:
+        """Where a point is at the instant; a link's point over a joint (A3, B4) is where that joint is."""
+        if name in pp.positions:
+            return pp.positions[name]
+        match = re.fullmatch(r"(.+?)(\d+)", name)
+        if match and match.group(1) in pp.positions:
+            return pp.positions[match.group(1)]
+        return None
+
+    def link_of(self, pp: PlanPosition, first: str, second: str) -> int | None:
+        """The link that carries both points on the velocity plan (its members)."""
+        a, b = self.position(pp, first), self.position(pp, second)
+        for link, members in sorted(pp.velocity.members.items()):
+            if link == self.frame:
+                continue
+            where = [position for position, _ in members]
+            if a in where and b in where:
+                return link
+        return None
+
+    # The similarity theorem.
+
+    def similarity(self, pp: PlanPosition, plan: Plan, step: Step) -> str:
+        """``as3 = ab·lAS3/lAB = …`` for a point on the line of two known images, and the second side of the
+        triangle for a point off it; the record's own words when it cannot be read that way."""
+        letter = step.fixes[0]
+        match = re.fullmatch(r"(\S+): (\S+) ∼ (\S+) \(similarity\)", step.equation)
+        fallback = self.similarity_words(step.equation)
+        if match is None:
+            return fallback
+        plan_side, link_side = match.group(2), match.group(3)
+        target = next((name for name, image in plan.images.items() if image == letter), letter.upper())
+        if not plan_side.endswith(letter) or not link_side.endswith(target):
+            return fallback
+        letters = sorted(plan.points, key=len, reverse=True)
+        base = plan_side[:-len(letter)]
+        pair = next(((first, base[len(first):]) for first in letters
+                     if base.startswith(first) and base[len(first):] in plan.points), None)
+        names = self.split(link_side[:-len(target)], pp)
+        where = self.position(pp, target)
+        if pair is None or names is None or where is None:
+            return fallback
+        (la, lb), (na, nb) = pair, names
+        link = self.link_of_point(target)
+        if link in self.mechanism.translating:
+            return self.t("note_translating_image", point=self.letter(plan, letter), link=link,
+                          other=self.letter(plan, la))
+        pa, pb = self.position(pp, na), self.position(pp, nb)
+        span = abs(pb - pa)
+        if span == 0:
+            return fallback
+        base_mm = self.length_mm(plan, la, lb)
+        sides = [(la, na, abs(where - pa))]
+        off_line = abs(((where - pa) * (pb - pa).conjugate()).imag) > 1e-9 * span * span
+        if off_line:
+            sides.append((lb, nb, abs(where - pb)))
+        parts = []
+        for start, name, length in sides:
+            value = base_mm * length / span
+            if not math.isclose(value, self.length_mm(plan, start, letter), rel_tol=_SAME, abs_tol=1e-9):
+                return fallback
+            parts.append(f"{self.segment(plan, start, letter)} = {self.segment(plan, la, lb)}·l{name}{target}/l{na}{nb}"
+                         f" = {self.mm(base_mm)}{self.text['times']}{self.n(length)}/{self.n(span)} = "
+                         f"{self.mm(value)} {self.text['millimetre']}")
+        line = self.letter(plan, letter) + self.text["colon"] + self.text["semicolon"].join(parts)
+        if off_line:
+            line += self.text["semicolon"] + self.t("note_similar_triangle", plan=self.segment(plan, la, lb) + self.letter(plan, letter),
+                                  link=f"{na}{nb}{target}")
+        return line
+
+    def link_of_point(self, name: str) -> int | None:
+        """The link a named point is fixed on, or the link a guide link's point (B4) is named after."""
+        for unit in self.mechanism.units:
+            for spec in unit.points:
+                if spec.name == name:
+                    return spec.link
+        match = re.fullmatch(r"[A-Z][a-z]?(\d+)", name)
+        return int(match.group(1)) if match else None
+
+    def similarity_words(self, equation: str) -> str:
+        equation = equation.replace(" (similarity)", "")
+        match = re.fullmatch(r"(\S+): link (\d+) turns with link (\S+)", equation)
+        if match:
+            return self.t("note_turns_with", point=match.group(1), link=match.group(2), other=match.group(3))
+        return equation
+
+    # Values read off the plan.
+
+    def readings(self, pp: PlanPosition, plan: Plan) -> None:
+        chosen = [reading for reading in pp.readings if reading.plan == plan.kind]
+        if not chosen:
+            return
+        lines = [f"- {self.reading(pp, plan, reading)}" for reading in chosen]
+        self.para(self.t("note_read_off"), *lines)
+        key = "note_omega_sense" if plan.kind == "velocity" else "note_epsilon_sense"
+        if any(reading.quantity.startswith(("omega", "epsilon")) for reading in chosen):
+            self.para(self.text[key])
+
+    def reading(self, pp: PlanPosition, plan: Plan, reading: Reading) -> str:
+        symbol = "μV" if plan.kind == "velocity" else "μa"
+        segment = self.segment(plan, *reading.segment)
+        millimetres = reading.millimetres(pp.plans)
+        value = reading.value(pp.plans)
+        scale = self.n(plan.scale)
+        if reading.quantity.startswith(("omega", "epsilon")):
+            link = int(re.sub(r"\D", "", reading.quantity))
+            angular = reading.quantity.startswith("omega")
+            unit = self.text["unit_rad_per_s" if angular else "unit_rad_per_s2"]
+            name, length = self.angular_names(pp, plan, reading, link)
+            through = f"{name}/{length} = " if name else ""
+            text = (f"{quantity_symbol(reading.quantity)} = {through}{segment}·{symbol}/{length} = "
+                    f"{self.mm(millimetres)}{self.text['times']}{scale}/{self.n(reading.length)} = "
+                    f"{self.n(abs(value))} {unit}{self.with_sense(value)}")
+            if not angular:
+                omega = pp.velocity.rates.get(link, 0.0)
+                if value != 0 and abs(omega) > _ROUNDING * max(abs(r) for r in pp.velocity.rates.values()):
+                    key = "note_accelerated" if omega * value > 0 else "note_decelerated"
+                    text += self.text["semicolon"] + self.t(key, link=link)
+            return text
+        unit = self.text["unit_m_per_s" if plan.kind == "velocity" else "unit_m_per_s2"]
+        return (f"{reading.quantity} = {segment}·{symbol} = {self.mm(millimetres)}{self.text['times']}{scale} = "
+                f"{self.n(abs(value))} {unit}")
+
+    def angular_names(self, pp: PlanPosition, plan: Plan, reading: Reading, link: int) -> tuple[str, str]:
+        """The relative vector and the length an ω or ε is read from: (VBA, lAB), (aBA^τ, lAB)."""
+        length = "l"
+        if plan.kind == "velocity":
+            same = [r for r in pp.readings if r.plan == plan.kind and set(r.segment) == set(reading.segment)
+                    and not r.quantity.startswith(("omega", "epsilon"))]
+            same.sort(key=lambda r: r.points is None)
+            if not same:
+                return "", length
+            chosen = same[0]
+            if chosen.points is not None:
+                moving, centre = chosen.points
+                length = f"l{centre}{moving}"
+            else:
+                names = [self.name_on(pp, plan, link, letter) for letter in reading.segment]
+                if None not in names:
+                    length = f"l{names[0]}{names[1]}"
+            return chosen.quantity, length
+        for step in plan.steps:
+            for vector in step.vectors:
+                if (vector.start, vector.end) == reading.segment and vector.meaning.endswith(_TANGENTIAL):
+                    pair = self.split(vector.meaning[1:-len(_TANGENTIAL)], pp)
+                    if pair is not None:
+                        length = f"l{pair[1]}{pair[0]}"
+                    return vector.meaning, length
+        return "", length
+
+    def name_on(self, pp: PlanPosition, plan: Plan, link: int, letter: str) -> str | None:
+        """The mechanism's name of ``link``'s point whose image is ``letter``."""
+        for position, member in plan.members.get(link, ()):
+            if member != letter:
+                continue
+            for name, where in pp.positions.items():
+                if where == position and (plan.images.get(name) == letter):
+                    return name
+        return None
+
+    def values_table(self, pp: PlanPosition, kind: str) -> None:
+        """The plan's values beside the analytic solution, as constructed."""
+        plan = pp.plans[kind]
+        exact = {row.quantity: row.analytic for row in pp.errors if row.source == "construction"}
+        rows = []
+        for reading in pp.readings:
+            if reading.plan != kind:
+                continue
+            rows.append([quantity_symbol(reading.quantity), self.segment(plan, *reading.segment),
+                         self.mm(reading.millimetres(pp.plans)), self.n(reading.value(pp.plans)),
+                         self.n(exact[reading.quantity]) if reading.quantity in exact else "—",
+                         self.unit_of(reading.quantity)])
+        if not rows:
+            return
+        length = f"{self.t('column_length')}, {self.text['millimetre']}"
+        header = [self.t("column_quantity"), self.t("column_segment"), length, self.t("column_by_plan"),
+                  self.t("column_analytic"), self.t("column_unit")]
+        caption = self.t(f"note_{kind}_table", number=pp.number)
+        self.para(self.t(f"note_{kind}_table_formula"))
+        self.table(caption, header, rows, "llrrrl")
+
+    def unit_of(self, quantity: str) -> str:
+        if quantity.startswith("omega"):
+            return self.text["unit_rad_per_s"]
+        if quantity.startswith("epsilon"):
+            return self.text["unit_rad_per_s2"]
+        return self.text["unit_m_per_s" if quantity.startswith("V") else "unit_m_per_s2"]
+
+    # The errors of the plans.
+
+    def errors(self, section: int) -> None:
+        precision = self.n(self.analysis.scene.drawing.drafting_precision)
+        self.heading(2, f"{section}. {self.t('note_errors')}")
+        self.para(self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision))
+        for plan in self.analysis.plans:
+            self.captioned(self.t("note_errors_table", number=plan.number),
+                           error_table_lines(self.analysis, plan, self.mark))
+
+    # The force analysis.
+
+    def forces(self, section: int) -> None:
+        self.heading(2, f"{section}. {self.t('note_forces')}")
+        self.para(self.t("note_forces_intro", gravity=self.n(self.analysis.scene.gravity)))
+        number = 0
+        for plan in self.analysis.plans:
+            if plan.forces is None:
+                continue
+            number += 1
+            self.forces_position(f"{section}.{number}", plan)
+        if self.analysis.equilibrium is not None:
+            number += 1
+            name, _ = force_report.balancing_symbol(self.analysis)
+            self.heading(3, f"{section}.{number}. {self.t('note_cycle')}")
+            self.captioned(self.t("note_cycle_table", name=name), force_report.cycle_lines(self.analysis, self.mark))
+
+    def forces_position(self, section: str, plan: PlanPosition) -> None:
+        text, analysis = self.text, self.analysis
+        self.heading(3, f"{section}. {self.t('position_heading', number=plan.number)}")
+        self.para(self.text["note_loads_formulas"])
+        self.captioned(self.t("note_loads_table", number=plan.number),
+                       force_report.initial_data_lines(analysis, plan, self.mark))
+        details = []
+        for row in force_report.initial_data(analysis, plan):
+            parts = []
+            if row.mass > 0:
+                parts.append(f"G{row.link} = m{row.link}·g = {self.product(self.n(row.mass), self.n(row.gravity))} = "
+                             f"{self.n(row.weight)} {text['newton']}")
+                parts.append(f"Fu{row.link} = m{row.link}·aS{row.link} = "
+                             f"{self.product(self.n(row.mass), self.n(row.centre_acceleration))} = "
+                             f"{self.n(row.inertia_force)} {text['newton']}")
+            if row.inertia > 0 and row.epsilon != 0:
+                moment = (f"Mu{row.link} = J{row.link}·ε{row.link} = "
+                          f"{self.product(self.n(row.inertia), self.n(abs(row.epsilon)))} = "
+                          f"{self.n(row.inertia_moment)} {text['newton_metre']}")
+                moment += self.with_sense(-row.epsilon)
+                parts.append(moment)
+            if parts:
+                details.append(f"- {self.t('note_link', link=row.link)}{self.text['colon']}"
+                               + self.text["semicolon"].join(parts))
+        if details:
+            self.para(*details)
+        external = force_report.external_load_lines(analysis, plan, self.mark)
+        if external:
+            self.para(*external)
+        for group in plan.forces.groups:
+            self.force_group(plan, group)
+        self.captioned(self.t("note_reactions_table", number=plan.number),
+                       force_report.reaction_lines(analysis, plan, self.mark))
+        self.balancing(plan)
+        if plan.with_friction is not None:
+            self.para(f"**{text['forces_friction']}.** " + " ".join(force_report.friction_lines(analysis, plan,
+                                                                                                 self.mark)))
+
+    def force_group(self, plan: PlanPosition, group) -> None:
+        text = self.text
+        driver = group.label.startswith("I(")
+        key = "note_driver_forces" if driver else "note_group_forces"
+        self.para(f"**{self.t(key, group=group.label)}**")
+        loads = {load.name: load for load in group.loads}
+        lines = []
+        for equation in group.moments:
+            lines.append(f"- {self.moment_equation(equation, loads)}")
+        if lines:
+            self.para(self.t("note_moment_equations"), *lines)
+        polygon = group.polygon
+        scale = plan.forces.scale
+        rows = []
+        for vector in polygon.vectors:
+            force = vector.force
+            rows.append([vector.name, force_report.polar(force, self.mark), self.mm(abs(force) / scale),
+                         self.text[f"note_role_{vector.role}"]])
+        self.para(self.t("note_polygon", equation=polygon.equation, scale=self.n(scale), unit=text["unit_force_scale"]))
+        header = [self.t("column_force"), f"{self.t('column_value')}, {text['newton']} ∠",
+                  f"{self.t('column_length')}, {text['millimetre']}", self.t("column_role")]
+        self.table(None, header, rows, "lrrl")
+        if group.found:
+            found = self.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, self.mark)} {text['newton']}"
+                              for item in group.found)
+            self.para(self.t("note_found", reactions=found))
+
+    def moment_equation(self, equation, loads: Mapping[str, object]) -> str:
+        """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h."""
+        text = self.text
+        total = sum(term.moment for term in equation.terms)
+        couple = equation.unknown.startswith("M") or "·" in equation.unknown
+        unit = text["newton_metre"] if couple else text["newton"]
+        # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written.
+        size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
+        shown = [term for term in equation.terms if abs(term.moment) > _ROUNDING * size]
+        parts = []
+        for term in shown:
+            load = loads.get(term.name)
+            force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
+            if force is not None and term.arm:
+                parts.append(f"M({term.name}) = {self.sign(term.moment)}{term.name}·h = "
+                             f"{self.sign(term.moment)}{self.product(self.n(abs(force)), self.n(term.arm, 4))} = "
+                             f"{self.n(term.moment)} {text['newton_metre']}")
+            else:
+                parts.append(f"M({term.name}) = {self.n(term.moment)} {text['newton_metre']}")
+        terms = "".join(f" {'−' if term.moment < 0 else '+'} {self.n(abs(term.moment))}" for term in shown)
+        sum_text = self.n(total)
+        if couple:
+            line = (f"ΣM{equation.about}({equation.link}) = {equation.unknown}{terms} = 0 ⇒ "
+                    f"{equation.unknown} = {self.n(equation.value)} {unit}")
+        else:
+            lever = -total / equation.value if equation.value else equation.arm
+            sign = "−" if lever < 0 else ""
+            solved = f"{sum_text}/{self.n(equation.arm, 4)}" if lever < 0 else f"−({sum_text})/{self.n(equation.arm, 4)}"
+            line = (f"ΣM{equation.about}({equation.link}) = {sign}{equation.unknown}·{self.n(equation.arm, 4)}{terms} = 0"
+                    f" ⇒ {equation.unknown} = {solved} = {self.n(equation.value)} {unit}")
+            if equation.value < 0:
+                line += " " + self.t("note_sense_reversed", name=equation.unknown)
+        return self.text["semicolon"].join([*parts, line])
+
+    def sign(self, value: float) -> str:
+        return "−" if value < 0 else ""
+
+    def balancing(self, plan: PlanPosition) -> None:
+        text, analysis = self.text, self.analysis
+        name, unit = force_report.balancing_symbol(analysis)
+        driver = self.mechanism.driver
+        polygons = plan.forces.balancing
+        self.para(self.t("note_balancing_polygons", name=name, value=self.n(polygons, 6), unit=unit,
+                         sense=self.with_sense(polygons) if driver.kind == "crank" else ""))
+        lever = plan.lever
+        if lever is not None:
+            velocity = plan.velocity
+            rows = []
+            total = 0.0
+            largest = max((abs(term.moment) for term in lever.terms), default=0.0)
+            strongest = max((abs(term.force) for term in lever.terms), default=0.0)
+            for term in lever.terms:
+                if abs(term.force) <= _ROUNDING * strongest and abs(term.moment) <= _ROUNDING * largest:
+                    continue  # a load of the plan's rounding: no load
+                # a load whose line passes through the pole has no moment, whatever rounding says
+                moment_mm = term.moment / velocity.scale if abs(term.moment) > _ROUNDING * largest else 0.0
+                total += moment_mm
+                point = self.letter(velocity, term.image) if term.image else "—"
+                arm = self.mm(term.arm / velocity.scale) if term.image else "—"
+                force = self.n(abs(term.force)) if term.image else "—"
+                rows.append([term.name, point, force, arm, self.n(moment_mm)])
+            self.para(self.text["note_lever_intro"])
+            header = [self.t("column_force"), self.t("column_point"), f"F, {text['newton']}",
+                      f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
+            self.table(self.t("note_lever_table", number=plan.number), header, rows, "llrrr")
+            pa = abs(velocity.value(driver.joint)) / velocity.scale
+            segment = self.segment(velocity, "p", velocity.images[driver.joint])
+            force = abs(total) / pa if pa else math.nan
+            equation = (f"Fy = |Σ(F·h)|/{segment} = {self.n(abs(total))}/{self.mm(pa)} = {self.n(force)} "
+                        f"{text['newton']}")
+            if driver.kind == "crank":
+                length = f"l{driver.pivot}{driver.joint}"
+                equation += (f"; {name} = Fy·{length} = {self.product(self.n(force), self.n(driver.length))} = "
+                             f"{self.n(lever.balancing, 6)} {unit}{self.with_sense(lever.balancing)}")
+            else:
+                equation += f"; {name} = {self.n(lever.balancing, 6)} {unit}"
+            self.para(self.t("note_lever_result", equation=equation))
+            difference = lever.difference_percent(polygons)
+            self.para(self.t("note_lever_difference", name=name, lever=self.n(lever.balancing, 6),
+                             polygons=self.n(polygons, 6), delta=self.n(difference, 3)))
+        self.captioned(self.t("note_balancing_table", name=name, number=plan.number),
+                       force_report.balancing_lines(analysis, plan, self.mark))
+
+
+def _is_similarity(step: Step) -> bool:
+    return step.equation.endswith("(similarity)") and not step.vectors
+
+
+def _parenthesis(text: str) -> tuple[str, str]:
+    """``"aB = aA4 (why)"`` → ``("aB = aA4", "why")``."""
+    match = re.fullmatch(r"(.*?) \((.*)\)", text)
+    return (match.group(1), match.group(2)) if match else (text, "")
+
+
+def _body(term: str) -> tuple[str, str]:
+    """``"vBA"`` → ``("v", "BA")``; the component's suffix is dropped."""
+    for suffix in (_NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE):
+        term = term.removesuffix(suffix)
+    return term[:1], term[1:]
+
+
+def _guide_points(text: str) -> set[str]:
+    """Names like ``B4`` (a link's point over a joint) that occur in ``text``."""
+    return set(re.findall(r"[A-Z][a-z]?\d+", text))
+
+
+__all__ = ["note_html", "note_markdown"]

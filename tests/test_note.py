@@ -1,0 +1,377 @@
+"""The explanatory note (note.md, note.html) and the localised errors.md and forces.md.
+
+The note's numbers are checked against the analytic solution (``analysis.motion``, ``statics``), not
+against the plan records it prints from; its arithmetic is checked by redoing it from the numbers it
+prints; its language by the words it must not contain; its HTML by parsing it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import re
+import tomllib
+from functools import cache
+from html.parser import HTMLParser
+from importlib import resources
+from pathlib import Path
+from string import Formatter
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.report import forces as force_report
+from graphplan.report import tables
+from graphplan.report.html import symbols_html, to_html
+from graphplan.report.note import note_html, note_markdown
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+# One fixture of every group kind and driver: RRR, RPR + RRP (Coriolis), RPP (translating yoke),
+# RPR + PRP, a slider driver, RRP on a frame guide.
+KINDS = ("ratchet_crank_rocker", "shaper_six_bar", "scotch_yoke", "tangent_mechanism_prp", "slider_driven",
+         "engine_slider_crank")
+TITLES = {"ru": "Кривошипно-коромысловый механизм", "zh": "曲柄摇杆机构", "en": "Crank-rocker mechanism"}
+LOCALES = ("en", "ru", "zh")
+
+
+@cache
+def analysis_of(name: str, locale: str):
+    scene = graphplan.load(FIXTURES / f"{name}.toml")
+    # The title is the user's own text, in whatever language the user wrote it.
+    return analyse(dataclasses.replace(scene, locale=locale, title=TITLES[locale]))
+
+
+@cache
+def note_of(name: str, locale: str) -> str:
+    return note_markdown(analysis_of(name, locale))
+
+
+def locale_file(locale: str) -> dict[str, str]:
+    text = resources.files("graphplan").joinpath("locales", f"{locale}.toml").read_text(encoding="utf-8")
+    return tomllib.loads(text)
+
+
+def number(text: str) -> float:
+    """A number as the note prints it: true minus sign, the locale's decimal mark."""
+    return float(text.replace("−", "-").replace(",", "."))
+
+
+def agrees(printed: str, exact: float, digits: int = 5) -> bool:
+    """Whether ``printed`` is ``exact`` to the precision it is printed with (``digits`` significant digits)."""
+    value = number(printed)
+    if exact == 0:
+        return value == 0
+    unit = 10.0 ** (math.floor(math.log10(abs(exact))) - digits + 1)
+    return abs(value - exact) <= 0.5 * unit * (1 + 1e-9) + 1e-12 * abs(exact)
+
+
+def table_after(note: str, caption: str) -> list[list[str]]:
+    """The rows (cells) of the Markdown table that follows the line starting with ``caption``."""
+    lines = note.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith(caption))
+    rows, i = [], start + 1
+    while not lines[i].startswith("|"):
+        i += 1
+    while i < len(lines) and lines[i].startswith("|"):
+        rows.append([cell.strip() for cell in lines[i].strip("|").split("|")])
+        i += 1
+    return rows[2:]  # without the header and the alignment row
+
+
+# The locale files.
+
+def test_every_locale_has_exactly_the_keys_and_placeholders_of_english():
+    english = locale_file("en")
+    fields = Formatter()
+    for locale in ("ru", "zh"):
+        other = locale_file(locale)
+        assert set(other) == set(english), locale
+        for key, text in english.items():
+            wanted = {name for _, name, _, _ in fields.parse(text) if name}
+            found = {name for _, name, _, _ in fields.parse(other[key]) if name}
+            assert found == wanted, (locale, key)
+
+
+def english_words() -> set[str]:
+    """The English words (four letters and more) of en.toml that no other locale file also uses."""
+    def words_of(locale: str) -> set[str]:
+        texts = (re.sub(r"\{\w*\}", " ", text) for text in locale_file(locale).values())  # not the placeholders
+        return {word.lower() for text in texts for word in re.findall(r"[A-Za-z]{4,}", text)}
+
+    return words_of("en") - words_of("ru") - words_of("zh")
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh"])
+@pytest.mark.parametrize("name", KINDS)
+def test_a_note_in_russian_or_chinese_has_no_english_word(name, locale):
+    english = english_words()
+    assert {"velocity", "plan", "position", "group", "link"} <= english  # the check can fail
+    found = {w for w in re.findall(r"[A-Za-z]{4,}", note_of(name, locale)) if w.lower() in english}
+    assert not found, found
+    for report in (tables.markdown(analysis_of(name, locale)), force_report.markdown(analysis_of(name, locale))):
+        found = {w for w in re.findall(r"[A-Za-z]{4,}", report) if w.lower() in english}
+        assert not found, found
+
+
+@pytest.mark.parametrize("name", KINDS)
+def test_every_heading_of_a_chinese_note_is_in_chinese(name):
+    headings = [line for line in note_of(name, "zh").splitlines() if line.startswith("#")]
+    assert len(headings) >= 8
+    for heading in headings:
+        assert re.search(r"[\u4e00-\u9fff]", heading), heading
+
+
+def test_the_russian_note_writes_as_the_russian_textbooks_do():
+    note = note_of("ratchet_crank_rocker", "ru")
+    assert "W = 3n − 2p5 − p4 = 3·3 − 2·4 − 0 = 1" in note  # Chebyshev's formula with the numbers
+    assert "| II(3,4) | класс II, порядок 2 | 3, 4 | A, B, C | ВВВ (RRR) |" in note
+    assert "VA = ω2·lOA = 17·0,175 = 2,975 м/с" in note  # decimal comma, Russian units
+    assert "μa = aA/πa = 50,575/100 = 0,50575 (м/с²)/мм" in note  # the acceleration pole is π
+    assert "Формула строения механизма: I(1,2) → II2(3,4)" in note
+    chinese = note_of("ratchet_crank_rocker", "zh")
+    assert "F = 3n − 2PL − PH = 3×3 − 2×4 − 0 = 1" in chinese  # 机械原理's own notation
+
+
+# The numbers.
+
+def value_at(values, index: int) -> float:
+    """An analytic scalar at a position (a constant is the same at every one)."""
+    return float(np.atleast_1d(values)[index if np.ndim(values) else 0])
+
+
+def velocity(analysis, point: str, index: int) -> complex:
+    return complex(*analysis.motion.point(point).v[index])
+
+
+def motion_value(analysis, index: int, quantity: str) -> float | None:
+    """A quantity of the velocity table straight from the analytic solution, or None for a sliding one."""
+    motion = analysis.motion
+    if quantity.startswith("ω"):
+        return value_at(motion.link(int(quantity[1:])).omega, index)
+    body = quantity[1:]
+    if body in motion.points:
+        return abs(velocity(analysis, body, index))
+    names = sorted(motion.points, key=len, reverse=True)
+    for first in names:
+        rest = body[len(first):]
+        if body.startswith(first) and rest in motion.points:
+            return abs(velocity(analysis, first, index) - velocity(analysis, rest, index))
+    return None
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+@pytest.mark.parametrize("name", KINDS)
+def test_the_velocity_table_is_the_analytic_solution_to_the_printed_digits(name, locale):
+    analysis = analysis_of(name, locale)
+    note = note_of(name, locale)
+    caption = {"en": "Table", "ru": "Таблица", "zh": "表"}[locale]
+    checked = 0
+    for plan in analysis.plans:
+        title = {"en": f"Velocities, position {plan.number}", "ru": f"Скорости, положение {plan.number}",
+                 "zh": f"速度，位置 {plan.number}"}[locale]
+        line = next(line for line in note.splitlines() if line.startswith(caption) and line.endswith(title))
+        for quantity, _segment, _mm, by_plan, exact, _unit in table_after(note, line):
+            value = motion_value(analysis, plan.index, quantity)
+            if value is None:
+                continue
+            assert agrees(exact, value), (quantity, exact, value)
+            assert agrees(by_plan, value), (quantity, by_plan, value)  # the construction is exact
+            checked += 1
+    assert checked >= 10
+
+
+@pytest.mark.parametrize("name", KINDS)
+def test_the_scale_arithmetic_reproduces_the_scales_of_the_plans(name):
+    analysis = analysis_of(name, "en")
+    note = note_of(name, "en")
+    pole = r"μ(V|a) = (?:VA|aA)/pa = ([\d.]+)/([\d.]+) = ([\d.]+)"
+    standard = r"μ(V|a) ≥ ([\d.e−]+)/150 = [\d.e−]+; the nearest standard scale factor is μ[Va] = ([\d.e−]+)"
+    matches = sorted([*re.finditer(pole, note), *re.finditer(standard, note)], key=lambda match: match.start())
+    scales = [scale for plan in analysis.plans for scale in (plan.velocity.scale, plan.acceleration.scale)]
+    assert len(matches) == len(scales)
+    assert [match[1] for match in matches] == ["V", "a"] * len(analysis.plans)
+    for match, scale in zip(matches, scales):
+        if match.re.pattern == pole:  # μ = (driver's value)/(its segment)
+            _, value, segment, printed = match.groups()
+            assert number(value) / number(segment) == pytest.approx(scale, rel=1e-4)
+        else:  # the smallest standard scale that fits the plan into its field
+            _, least, printed = match.groups()
+            assert number(printed) >= number(least) / 150 * (1 - 1e-9)
+        assert agrees(printed, scale)
+    # The worked example's own scales (shared/fixtures-data.md, "Drawing choices of the example"):
+    # pa = 150 mm gives μV = 0.01983 (m/s)/mm, pa = 100 mm gives μa = 0.50575 (m/s²)/mm.
+    ratchet = note_of("ratchet_crank_rocker", "en")
+    assert "μV = VA/pa = 2.975/150 = 0.019833 (m/s)/mm" in ratchet
+    assert "μa = aA/pa = 50.575/100 = 0.50575 (m/s²)/mm" in ratchet
+
+
+def test_the_driver_velocity_and_the_similarity_proportions_hold_against_the_motion():
+    analysis = analysis_of("ratchet_crank_rocker", "en")
+    note = note_of("ratchet_crank_rocker", "en")
+    omega, length, speed = re.search(r"VA = ω2·lOA = ([\d.]+)·([\d.]+) = ([\d.]+) m/s", note).groups()
+    assert number(omega) * number(length) == pytest.approx(number(speed), rel=1e-12)
+    assert agrees(speed, abs(velocity(analysis, "A", 0)))
+    # as3 = ab·lAS3/lAB on the velocity plan of position 5: as3·μV is |vS3 − vA| of the analytic solution.
+    plan = next(p for p in analysis.plans if p.number == 5)
+    section = note[note.index("### 3.1."):note.index("#### Acceleration plan")]
+    proportions = re.findall(r"- (\w+): (\w+) = (\w+)·l(\w+)/l(\w+) = ([\d.]+)·([\d.]+)/([\d.]+) = ([\d.]+) mm",
+                             section)
+    assert {p[0] for p in proportions} >= {"s2", "s3", "e", "s4"}
+    spec = {s.name: s for s in analysis.scene.points}
+    for letter, segment, base, along, span, base_mm, part, whole, result in proportions:
+        point = letter.upper()
+        assert number(base_mm) * number(part) / number(whole) == pytest.approx(number(result), abs=0.006)
+        start = {"a": "A", "b": "B", "p": spec[point].start}[segment[0]]
+        relative = abs(velocity(analysis, point, plan.index) - velocity(analysis, start, plan.index))
+        assert number(result) * plan.velocity.scale == pytest.approx(relative, abs=0.006 * plan.velocity.scale)
+        if spec[point].offset == 0:
+            assert number(part) == pytest.approx(spec[point].at, rel=1e-4)  # lAS3 is the scene's own
+    # The off-line point E gets the second side of its triangle.
+    assert "be = ab·lBE/lAB" in section and "the triangle abe is similar to the triangle ABE" in section
+
+
+def test_the_coriolis_component_is_twice_omega_times_the_sliding_velocity():
+    analysis = analysis_of("shaper_six_bar", "en")
+    note = note_of("shaper_six_bar", "en")
+    found = re.findall(r"\| aA4A3ᵏ \| 2·ω(\d)·VA4A3 = 2·([\d.]+)·([\d.]+) = ([\d.]+) m/s² \|", note)
+    assert len(found) == len(analysis.plans)
+    for (link, omega, sliding, value), plan in zip(found, analysis.plans):
+        i = plan.index
+        slide = next(s for s in analysis.motion.slides if s.joint == "A")
+        exact = 2 * abs(value_at(analysis.motion.link(4).omega, i)) * abs(value_at(slide.velocity, i))
+        assert agrees(omega, abs(value_at(analysis.motion.link(int(link)).omega, i)))
+        assert agrees(sliding, abs(value_at(slide.velocity, i)))
+        assert agrees(value, exact)
+
+
+def test_the_balancing_moment_by_the_lever_is_the_linear_systems():
+    analysis = analysis_of("ratchet_crank_rocker", "en")
+    note = note_of("ratchet_crank_rocker", "en")
+    found = re.findall(r"Fy = \|Σ\(F·h\)\|/pa = ([\d.]+)/([\d.]+) = ([\d.]+) N; Mb = Fy·lOA = ([\d.]+)·([\d.]+) = "
+                       r"(−?[\d.]+) N·m", note)
+    assert len(found) == 2
+    for (total, pa, force, force_again, arm, moment), plan in zip(found, analysis.plans):
+        exact = float(analysis.equilibrium.balancing[plan.index])
+        assert number(total) / number(pa) == pytest.approx(number(force), rel=1e-4)
+        assert force == force_again and number(arm) == 0.175
+        assert number(force) * number(arm) == pytest.approx(abs(exact), rel=1e-4)
+        assert agrees(moment, exact, 6)
+    # Each moment equation solves to what it prints.
+    for total, arm, value in re.findall(r"⇒ R\d+τ = −?\(?(−?[\d.]+)\)?/([\d.]+) = (−?[\d.]+) N", note):
+        assert abs(number(total) / number(arm)) == pytest.approx(abs(number(value)), rel=1e-3)
+
+
+def test_the_note_and_forces_md_print_the_same_tables():
+    analysis = analysis_of("ratchet_crank_rocker", "en")
+    note, forces_md, errors_md = note_of("ratchet_crank_rocker", "en"), force_report.markdown(analysis), \
+        tables.markdown(analysis)
+    rows = [line for line in forces_md.splitlines() if line.startswith("| ") and "---" not in line]
+    rows += [line for line in errors_md.splitlines() if line.startswith("| ") and "---" not in line]
+    assert len(rows) > 80
+    for row in rows:
+        assert row in note, row
+
+
+def test_friction_reaches_the_note_and_forces_md():
+    from graphplan.scene import FrictionSpec
+
+    scene = graphplan.load(FIXTURES / "ratchet_crank_rocker.toml")
+    pairs = tuple(FrictionSpec(f"friction[{k}]", joint, None, 0.12, 0.02, None) for k, joint in enumerate("OABC"))
+    analysis = analyse(dataclasses.replace(scene, friction=pairs))
+    note, forces_md = note_markdown(analysis), force_report.markdown(analysis)
+    for plan in analysis.plans:
+        balancing = plan.with_friction.balancing
+        exact = float(analysis.with_friction.balancing[plan.index])
+        assert f"Mb = {force_report.number(balancing, 6, ',')} Н·м" in note
+        assert f"Mb = {force_report.number(balancing, 6)} Н·м" in forces_md
+        assert agrees(force_report.number(balancing, 6), exact, 6)
+    assert "КПД η = Mb0/Mb" in note and "| Mb с трением, Н·м | η |" in forces_md
+
+
+# The localised reports.
+
+def test_errors_md_and_forces_md_keep_their_numbers_in_every_language():
+    def numbers(text: str) -> list[str]:
+        return re.findall(r"−?-?\d+(?:\.\d+)?(?:e[−-]\d+)?", text)
+
+    for name in ("ratchet_crank_rocker", "shaper_six_bar"):
+        reports = {locale: (tables.markdown(analysis_of(name, locale)), force_report.markdown(analysis_of(name, locale)))
+                   for locale in LOCALES}
+        for kind in range(2):
+            english = numbers(reports["en"][kind])
+            for locale in ("ru", "zh"):
+                assert numbers(reports[locale][kind]) == english, (name, locale, kind)
+    russian = force_report.markdown(analysis_of("ratchet_crank_rocker", "ru"))
+    assert "| рычаг Жуковского | 49.0173 |" in russian and "## Положение 5" in russian
+    assert "| ω4 | 2.1554 |" in tables.markdown(analysis_of("ratchet_crank_rocker", "ru"))
+
+
+# The HTML page.
+
+VOID = {"meta", "br", "hr", "img", "input", "link"}
+
+
+class TagBalance(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.open: list[str] = []
+        self.errors: list[str] = []
+        self.seen: dict[str, int] = {}
+
+    def handle_starttag(self, tag, attrs):
+        self.seen[tag] = self.seen.get(tag, 0) + 1
+        if tag not in VOID:
+            self.open.append(tag)
+
+    def handle_endtag(self, tag):
+        if not self.open or self.open[-1] != tag:
+            self.errors.append(f"</{tag}> closes {self.open[-1:] or 'nothing'}")
+        else:
+            self.open.pop()
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_the_html_note_is_well_formed_and_carries_every_table(locale):
+    analysis = analysis_of("shaper_six_bar", locale)
+    page = note_html(analysis)
+    parser = TagBalance()
+    parser.feed(page)
+    parser.close()
+    assert not parser.errors and not parser.open
+    markdown_tables = sum(1 for line in note_of("shaper_six_bar", locale).splitlines() if line.startswith("|---"))
+    assert parser.seen["table"] == markdown_tables > 20
+    assert parser.seen["html"] == parser.seen["body"] == parser.seen["title"] == 1
+    assert '<meta charset="utf-8">' in page and f'<html lang="{locale}">' in page
+    assert "DejaVu Sans" in page and "Noto Sans CJK" in page
+    assert "V<sub>A4A3</sub>" in page and "a<sub>A4A3</sub><sup>k</sup>" in page  # the textbook's indices
+
+
+def test_markdown_becomes_a_page_without_passing_raw_html_through():
+    page = to_html("# Title\n\n| a | b |\n|---|---|\n| 1 | <script>x</script> |\n", "T & <t>", "en")
+    assert "<table>" in page and "<script>" not in page and "&lt;script&gt;" in page
+    assert "<title>T &amp; &lt;t&gt;</title>" in page
+    assert symbols_html("VBA = VB − VA; Group RRR; ω3, μV, R23τ, 2p5") == (
+        "V<sub>BA</sub> = V<sub>B</sub> − V<sub>A</sub>; Group RRR; ω<sub>3</sub>, μ<sub>V</sub>, "
+        "R<sub>23</sub><sup>τ</sup>, 2p<sub>5</sub>")
+
+
+# Determinism.
+
+def test_the_note_is_the_same_every_time():
+    scene = graphplan.load(FIXTURES / "tangent_mechanism_prp.toml")
+    first, second = analyse(scene), analyse(dataclasses.replace(scene))
+    assert note_markdown(first) == note_markdown(second) == note_markdown(first)
+    assert note_html(first) == note_html(second)
+
+
+def test_a_scene_without_loads_or_plans_still_gets_its_note():
+    scene = graphplan.load(FIXTURES / "ratchet_crank_rocker.toml")
+    bare = analyse(dataclasses.replace(scene, links={}, loads=()))
+    note = note_markdown(bare)
+    assert "Силовой" not in note and "Погрешности планов" in note
+    no_plans = analyse(dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=()),
+                                           measured={}))
+    note = note_markdown(no_plans)
+    assert "План скоростей" not in note and "Уравновешивающая нагрузка за цикл" in note
