@@ -16,9 +16,11 @@ from shapely import LineString, Point
 
 from .errors import GraphplanError
 
-# Lines are drawn this many times the size of the figure on each side of
-# their point, so that two lines of one plan always cross on the board.
+# Two lines of one plan that cross farther than this many times the size of
+# the figure from their points are taken as parallel: off the board.
 _REACH = 1e3
+# Each line is drawn this much beyond the crossing, so that it is found inside both segments.
+_RUN_ON = 1.01
 
 
 class ParallelLinesError(GraphplanError, ArithmeticError):
@@ -56,13 +58,22 @@ def cross_lines(first: Line, second: Line, size: float) -> complex:
     ParallelLinesError
         when the lines do not cross within the board (parallel or nearly so).
     """
-    reach = _REACH * max(size, 1e-300)
-    segments = [LineString([_xy(line.through - reach * line.unit), _xy(line.through + reach * line.unit)])
-                for line in (first, second)]
+    # Drawn from the first line's point, each line just long enough to reach the crossing: the
+    # crossing is then found to the precision its own distance allows, not the board's size.
+    origin = first.through
+    apart = second.through - origin
+    sine = abs((first.unit.conjugate() * second.unit).imag)
+    if apart == 0 and sine > 0:
+        return origin
+    if not sine > 0 or abs(apart) > _REACH * max(size, 1e-300) * sine:
+        raise ParallelLinesError(first.label, second.label)
+    reach = _RUN_ON * abs(apart) / sine
+    segments = [LineString([_xy(start - reach * line.unit), _xy(start + reach * line.unit)])
+                for line, start in ((first, 0j), (second, apart))]
     found = segments[0].intersection(segments[1])
     if not isinstance(found, Point) or found.is_empty:
         raise ParallelLinesError(first.label, second.label)
-    return complex(found.x, found.y)
+    return origin + complex(found.x, found.y)
 
 
 def similar_point(image_a: complex, image_b: complex, a: complex, b: complex, p: complex) -> complex:

@@ -161,8 +161,9 @@ class Builder:
         acceleration plan may measure thousands of m/s² on a mechanism of a
         few decimetres), so that two lines that are not parallel always meet.
         """
+        # The plan's own extent, not the mechanism's metres: a slow crank's plan may measure 1e-7 m/s².
         extent = max([abs(first.through), abs(second.through), *(abs(z) for z in self.points.values())])
-        return cross_lines(first, second, max(extent, self.size)), crossing_angle_deg(first, second)
+        return cross_lines(first, second, extent), crossing_angle_deg(first, second)
 
     def widest(self, link: int):
         """The two images of ``link`` farthest apart on the mechanism, or None without two distinct ones."""

@@ -48,13 +48,24 @@ def join_path(path: str, key: str | int) -> str:
     return f"{path}.{key}" if path else key
 
 
+# The magnitudes a scene may give: beyond them a square overflows or a length vanishes into rounding.
+LARGEST = 1e15
+SMALLEST = 1e-15
+
+
 def check_number(value: Any, where: str) -> float:
-    """``value`` as a finite float, or a SceneError naming ``where``."""
+    """``value`` as a finite float of a magnitude graphplan computes with, or a SceneError naming ``where``."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise SceneError(where, f"must be a number, not {_type_name(value)}", value)
-    if not math.isfinite(value):
+    try:
+        number = float(value)
+    except OverflowError:
+        raise SceneError(where, "must be a finite number (got an integer too large for a float)") from None
+    if not math.isfinite(number):
         raise SceneError(where, "must be a finite number", value)
-    return float(value)
+    if number != 0 and not SMALLEST <= abs(number) <= LARGEST:
+        raise SceneError(where, f"must be 0 or of a magnitude from {SMALLEST:g} to {LARGEST:g}", value)
+    return number
 
 
 def check_int(value: Any, where: str) -> int:
