@@ -1,0 +1,462 @@
+"""The machine's equation of motion, integrated, against closed forms and a published clutch example.
+
+Every number is checked by another route: the closed forms of rotation under constant or
+linearly speed-dependent torques (exponential start-up, uniform deceleration, run-down to rest);
+the energy integral ``½·Je(φ)·ω² = const`` when no torque acts; the exact speed of a machine
+whose surplus torque is sinusoidal in φ; the flywheel estimate ``δ ≈ ΔWmax/(Je·ωm²)`` and the
+linearised forced response; angular momentum and constant-torque kinematics for a friction
+clutch, with the data of R.S. Khurmi & J.K. Gupta's clutch example (sources in
+``docs/sources/machine-motion.md``); Kloss' formula by its defining properties, found with
+scipy.optimize.  Scene keys are read with their key paths in the errors.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+from scipy.optimize import brentq, minimize_scalar
+
+from graphplan.errors import SceneError
+from graphplan.machine_motion import (
+    RPM,
+    Brake,
+    Clutch,
+    ConstantTorque,
+    KlossMotor,
+    LinearMotor,
+    Machine,
+    Start,
+    engage_clutch,
+    periodic_spline,
+    read_motion,
+    simulate,
+)
+from graphplan.reader import Table
+
+# --- constant torque, constant inertia: ω = M·t/J ----------------------------------------------
+
+
+def test_constant_torque_on_constant_inertia_gives_uniform_acceleration():
+    inertia, torque, resisting = 2.5, 12.0, 2.0
+    motion = simulate(Machine(inertia, resisting=resisting), ConstantTorque(torque), duration=3.0, rtol=1e-9)
+    times = np.linspace(0.0, 3.0, 31)
+    phi, omega = motion.state_at(times)
+    alpha = (torque - resisting) / inertia
+    np.testing.assert_allclose(omega, alpha * times, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(phi, 0.5 * alpha * times ** 2, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(motion.motor_torque, torque)
+
+
+def test_jogged_turntable_speed_and_angle_after_a_015_s_pulse():
+    # No published example with a 0.15 s pulse was found (docs/sources/machine-motion.md): the
+    # independent check is the kinematics of constant angular acceleration.  A turntable
+    # (a 20 kg disk of radius 0.3 m) is jogged by 12 N·m for 0.15 s against 1.5 N·m of bearing
+    # friction, then coasts to rest.
+    inertia = 0.5 * 20.0 * 0.3 ** 2
+    torque, friction, pulse = 12.0, 1.5, 0.15
+    motion = simulate(Machine(inertia, resisting=friction), ConstantTorque(torque), motor_off_at=pulse,
+                      duration=5.0, rtol=1e-10)
+    alpha = (torque - friction) / inertia
+    speed_after_pulse = alpha * pulse
+    angle_after_pulse = 0.5 * alpha * pulse ** 2
+    phi, omega = motion.state_at(pulse)
+    assert omega == pytest.approx(speed_after_pulse, rel=1e-9)
+    assert phi == pytest.approx(angle_after_pulse, rel=1e-9)
+    # Coasting: decelerated by the friction alone, then held at rest by it.
+    decel = friction / inertia
+    assert motion.stopped_at == pytest.approx(pulse + speed_after_pulse / decel, rel=1e-9)
+    assert motion.phi[-1] == pytest.approx(angle_after_pulse + speed_after_pulse ** 2 / (2 * decel), rel=1e-9)
+    assert motion.omega[-1] == 0.0
+    assert [name for _, name in motion.events] == ["motor off", "stopped"]
+
+
+# --- motors -----------------------------------------------------------------------------------
+
+
+def test_linear_motor_start_up_is_the_exponential_of_its_time_constant():
+    inertia, stall, no_load, load = 2.0, 50.0, 20.0, 10.0
+    motion = simulate(Machine(inertia, resisting=load), LinearMotor(stall, no_load), rtol=1e-9)
+    steady_speed = no_load * (1 - load / stall)
+    tau = inertia * no_load / stall
+    times = np.linspace(0.0, 4.0, 41)
+    np.testing.assert_allclose(motion.state_at(times)[1], steady_speed * (1 - np.exp(-times / tau)),
+                               rtol=1e-8, atol=1e-10)
+    assert motion.steady is not None
+    assert motion.steady.mean_speed == pytest.approx(steady_speed, rel=1e-6)
+    assert motion.steady.delta < 1e-6
+    # Within 5 % of the steady speed when exp(−t/τ) = 0.05.
+    assert motion.start_up_time(5.0) == pytest.approx(tau * math.log(20.0), rel=1e-6)
+    assert motion.start_up_time(1.0) == pytest.approx(tau * math.log(100.0), rel=1e-6)
+
+
+def test_linear_motor_through_two_points():
+    motor = LinearMotor.through((10.0, 40.0), (30.0, 20.0))
+    assert motor.stall_torque == pytest.approx(50.0)
+    assert motor.no_load == pytest.approx(50.0)
+    assert motor.characteristic(30.0) == pytest.approx(20.0)
+    with pytest.raises(ValueError, match="the torque must fall as the speed rises"):
+        LinearMotor.through((10.0, 20.0), (30.0, 40.0))
+
+
+def kloss_motor(**drive):
+    return KlossMotor(power=5500.0, synchronous_speed=1500 * RPM, rated_slip=0.04, overload=2.2, **drive)
+
+
+def test_kloss_formula_passes_the_rated_point_and_peaks_at_lambda_times_rated_torque():
+    motor = kloss_motor()
+    rated_speed = 1500 * RPM * (1 - 0.04)
+    assert motor.rated_torque == pytest.approx(5500.0 / rated_speed, rel=1e-12)
+    assert motor.characteristic(rated_speed) == pytest.approx(motor.rated_torque, rel=1e-12)
+    # The largest torque over the slip, found numerically: at s_k = s_n(λ + √(λ² − 1)), λ·M_rated.
+    best = minimize_scalar(lambda s: -motor.characteristic(motor.synchronous_speed * (1 - s)),
+                           bounds=(1e-6, 1.0), method="bounded", options={"xatol": 1e-12})
+    assert -best.fun == pytest.approx(2.2 * motor.rated_torque, rel=1e-9)
+    assert best.x == pytest.approx(0.04 * (2.2 + math.sqrt(2.2 ** 2 - 1)), rel=1e-5)
+    assert motor.characteristic(motor.synchronous_speed) == 0.0
+    assert motor.characteristic(1.01 * motor.synchronous_speed) < 0  # a generator above synchronism
+    same = KlossMotor.from_rated_speed(5500.0, rated_speed, 0.04, 2.2)
+    assert same.synchronous_speed == pytest.approx(motor.synchronous_speed, rel=1e-12)
+
+
+def test_gear_ratio_reduces_torque_speed_and_inertia_to_the_driving_shaft():
+    motor = kloss_motor(gear_ratio=20.0, rotor_inertia=0.03)
+    shaft_speed = 7.0
+    assert motor.shaft_torque(shaft_speed) == pytest.approx(20.0 * motor.characteristic(140.0), rel=1e-12)
+    assert motor.reduced_inertia == pytest.approx(0.03 * 400.0)
+    assert motor.shaft_no_load_speed == pytest.approx(1500 * RPM / 20.0)
+
+
+@pytest.mark.parametrize(("make", "message"), [
+    (lambda: KlossMotor(5500.0, 157.0, 0.04, 0.9), r"KlossMotor.overload: must be > 1, it is Mmax/Mrated \(got 0.9\)"),
+    (lambda: KlossMotor(5500.0, 157.0, 1.2, 2.0), r"KlossMotor.rated_slip: must be between 0 and 1 \(got 1.2\)"),
+    (lambda: LinearMotor(-5.0, 10.0), r"LinearMotor.stall_torque: must be a finite number > 0 \(got -5.0\)"),
+    (lambda: ConstantTorque(5.0, gear_ratio=0.0), r"ConstantTorque.gear_ratio: must be a finite number > 0"),
+    (lambda: Brake(), r"Brake: needs torque > 0 or damping > 0"),
+])
+def test_bad_motor_arguments_name_the_argument(make, message):
+    with pytest.raises(ValueError, match=message):
+        make()
+
+
+# --- the steady state against the flywheel formulas ------------------------------------------
+
+
+def test_sinusoidal_surplus_torque_gives_the_exact_speed_fluctuation():
+    # Constant Je, constant Md equal to the mean of Mr = M + A·sin φ: the energy integral gives
+    # ω(φ)² = ω0² + (2A/J)(cos φ − 1) exactly, so ωmax = ω0 and ωmin = √(ω0² − 4A/J).
+    inertia, mean, amplitude, start = 20.0, 100.0, 800.0, 30.0
+    machine = Machine(inertia, resisting=lambda phi, omega: mean + amplitude * math.sin(phi))
+    motion = simulate(machine, ConstantTorque(mean), start=Start(omega=start), duration=2.0, rtol=1e-11)
+    fastest = start
+    slowest = math.sqrt(start ** 2 - 4 * amplitude / inertia)
+    assert len(motion.cycles) >= 6
+    for cycle in motion.cycles:
+        assert cycle.max_speed == pytest.approx(fastest, rel=1e-9)
+        assert cycle.min_speed == pytest.approx(slowest, rel=1e-9)
+        assert cycle.delta == pytest.approx(2 * (fastest - slowest) / (fastest + slowest), rel=1e-8)
+    # The time of a turn, ∫dφ/ω, by quadrature of the closed form.
+    period, _ = quad(lambda phi: 1 / math.sqrt(start ** 2 + 2 * amplitude / inertia * (math.cos(phi) - 1)),
+                     0, 2 * math.pi, epsabs=1e-13)
+    assert motion.cycles[0].period == pytest.approx(period, rel=1e-9)
+    assert motion.steady is not None and motion.steady.first_cycle == 2
+
+
+def test_steady_state_agrees_with_the_flywheel_estimate_for_small_delta():
+    # A linear motor against Mr = 100 + 40·sin φ on Je = 20 kg·m²: the motor's characteristic
+    # balances the mean load at ω = 30 rad/s.
+    inertia, stall, no_load, mean, amplitude = 20.0, 400.0, 40.0, 100.0, 40.0
+    machine = Machine(inertia, resisting=lambda phi, omega: mean + amplitude * math.sin(phi))
+    motion = simulate(machine, LinearMotor(stall, no_load), start=Start(omega=30.0), rtol=1e-9)
+    steady = motion.steady
+    assert steady is not None
+    balance = no_load * (1 - mean / stall)
+    assert steady.cycle.middle_speed == pytest.approx(balance, rel=1e-4)
+    assert steady.mean_speed == pytest.approx(balance, rel=1e-4)
+    # ΔWmax: the swing of the surplus work ∫(Md − Mr)dφ over a turn, Md taken at the mean speed.
+    angles = np.linspace(0, 2 * np.pi, 20001)
+    work = np.array([quad(lambda p: -amplitude * math.sin(p), 0, a)[0] for a in angles[::50]])
+    swing = work.max() - work.min()
+    assert swing == pytest.approx(2 * amplitude, rel=1e-6)
+    flywheel = swing / (inertia * steady.mean_speed ** 2)
+    assert steady.delta == pytest.approx(flywheel, rel=0.005)
+    # The linearised forced response: Je·ωm·w' = −(M0/ω0)·w − A·sin φ, amplitude A/√((Je·ωm)² + (M0/ω0)²).
+    damping = stall / no_load
+    linear = 2 * amplitude / math.hypot(inertia * balance, damping) / balance
+    assert steady.delta == pytest.approx(linear, rel=0.002)
+
+
+def test_variable_inertia_without_torque_keeps_its_kinetic_energy():
+    # Je = 4 + 1.5·cos 2φ; no torque acts, so ½·Je(φ)·ω² stays what it was.
+    def inertia(phi):
+        return 4.0 + 1.5 * math.cos(2 * phi)
+
+    def slope(phi):
+        return -3.0 * math.sin(2 * phi)
+
+    machine = Machine(inertia, inertia_slope=slope)
+    motion = simulate(machine, ConstantTorque(0.0), start=Start(omega=10.0), duration=3.0, rtol=1e-10)
+    energy = 0.5 * np.array([inertia(p) for p in motion.phi]) * motion.omega ** 2
+    assert np.max(np.abs(energy / energy[0] - 1)) < 1e-8
+    # ω(φ) = ω0·√(Je(0)/Je(φ)): the extremes of a cycle at φ = 0 and φ = π/2.
+    cycle = motion.cycles[1]
+    assert cycle.max_speed == pytest.approx(10.0 * math.sqrt(5.5 / 2.5), rel=1e-8)
+    assert cycle.min_speed == pytest.approx(10.0, rel=1e-8)
+
+
+def test_sampled_inertia_is_a_periodic_spline_and_keeps_energy_too():
+    samples = [4.0 + 1.5 * math.cos(2 * p) for p in np.linspace(0, 2 * np.pi, 360, endpoint=False)]
+    machine = Machine(samples)
+    spline = periodic_spline(samples)
+    # The slope is the spline's derivative; between samples the spline follows the function closely.
+    for phi in (0.3, 1.0, 2.9, 7.5, -1.2):
+        assert machine.je(phi) == pytest.approx(4.0 + 1.5 * math.cos(2 * phi), rel=1e-12)
+        assert machine.je_slope(phi) == pytest.approx(float(spline.derivative()(phi % (2 * np.pi))), rel=1e-12)
+    motion = simulate(machine, ConstantTorque(0.0), start=Start(omega=10.0), duration=2.0, rtol=1e-10)
+    energy = 0.5 * np.array([machine.je(p) for p in motion.phi]) * motion.omega ** 2
+    assert np.max(np.abs(energy / energy[0] - 1)) < 1e-8
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (([4.0, 5.0, 4.0, 5.0, 4.0],), r"inertia: needs at least 6 samples over one turn"),
+    (([4.0, math.nan, 5.0, 4.0, 5.0, 4.0],), r"inertia: must be finite, at index 1"),
+    (([4.0, -1.0, 5.0, 4.0, 5.0, 4.0],), r"inertia: must be > 0 over the whole turn"),
+    ((lambda phi: 4.0,), r"inertia_slope: is required when inertia is a function of φ"),
+])
+def test_bad_machine_arguments_are_named(args, message):
+    with pytest.raises(ValueError, match=message):
+        Machine(*args)
+
+
+# --- start-up, steady state and run-down with an induction motor -----------------------------
+
+
+def stiff_machine():
+    """The stiff case of bench/integrators.py: Kloss motor, small slip, gear 20, fan-like load."""
+    machine = Machine(lambda phi: 4.0 + 1.0 * math.cos(2 * phi), inertia_slope=lambda phi: -2.0 * math.sin(2 * phi),
+                      resisting=lambda phi, omega: 10.0 * omega * omega * (1.0 + 0.6 * math.sin(phi)))
+    motor = KlossMotor(5500.0, 1500 * RPM, 0.01, 2.2, gear_ratio=20.0, rotor_inertia=0.02)
+    return machine, motor
+
+
+def test_auto_method_sees_the_steep_motor_characteristic_as_stiff():
+    machine, motor = stiff_machine()
+    motion = simulate(machine, motor, rtol=1e-7)
+    assert motion.method == "LSODA"
+    assert motion.method_reason.startswith("auto: stiff")
+    assert motion.stiffness > 3
+    # The same steady state from an implicit Runge–Kutta method.
+    check = simulate(machine, motor, method="Radau", rtol=1e-9)
+    assert motion.steady is not None and check.steady is not None
+    assert motion.steady.mean_speed == pytest.approx(check.steady.mean_speed, rel=1e-6)
+    assert motion.steady.delta == pytest.approx(check.steady.delta, rel=1e-3)
+    # The mean speed is where the motor's torque on the shaft meets the mean load 10·ω².
+    balance = brentq(lambda w: motor.shaft_torque(w) - 10.0 * w * w, 5.0, motor.shaft_no_load_speed)
+    assert motion.steady.mean_speed == pytest.approx(balance, rel=2e-3)
+
+
+def test_auto_method_keeps_an_explicit_method_for_a_soft_motor():
+    machine = Machine(5.0, resisting=lambda phi, omega: 40.0 + 10.0 * math.sin(phi))
+    motion = simulate(machine, LinearMotor(100.0, 50.0), duration=1.0)
+    assert motion.method == "RK45"
+    assert motion.method_reason.startswith("auto: not stiff")
+    tight = simulate(machine, LinearMotor(100.0, 50.0), duration=1.0, rtol=1e-10)
+    assert tight.method == "DOP853"
+
+
+def test_run_down_after_switching_off_stops_at_the_closed_form_time():
+    inertia, load, speed = 2.0, 10.0, 16.0
+    motion = simulate(Machine(inertia, resisting=load), LinearMotor(50.0, 20.0), start=Start(omega=speed),
+                      motor_off_at=0.0, rtol=1e-10)
+    assert motion.stopped_at == pytest.approx(inertia * speed / load, rel=1e-9)
+    assert motion.phi[-1] == pytest.approx(inertia * speed ** 2 / (2 * load), rel=1e-9)
+
+
+def test_brakes_constant_and_proportional_to_speed():
+    inertia, speed, at = 2.0, 10.0, 1.0
+    machine = Machine(inertia)
+    constant = simulate(machine, ConstantTorque(0.0), start=Start(omega=speed), brake=Brake(torque=5.0, at=at),
+                        duration=8.0, rtol=1e-10)
+    assert constant.stopped_at == pytest.approx(at + inertia * speed / 5.0, rel=1e-9)
+    assert constant.phi[-1] == pytest.approx(speed * at + inertia * speed ** 2 / (2 * 5.0), rel=1e-9)
+    damped = simulate(machine, ConstantTorque(0.0), start=Start(omega=speed), brake=Brake(damping=0.5, at=at),
+                      duration=5.0, rtol=1e-10)
+    times = np.array([0.5, 1.0, 2.0, 4.0, 5.0])
+    expected = np.where(times < at, speed, speed * np.exp(-0.5 * (times - at) / inertia))
+    np.testing.assert_allclose(damped.state_at(times)[1], expected, rtol=1e-9)
+
+
+# --- the friction clutch: Khurmi & Gupta's rotor and motor -----------------------------------
+
+# Data of the example (docs/sources/machine-motion.md): a single-plate clutch, both sides
+# effective, diameters 220 and 160 mm, spring load 570 N, μ = 0.35, uniform wear; motor
+# armature 800 kg with k = 200 mm brought to 1250 rpm, switched off, the clutch engaged on a
+# rotor of 1300 kg with k = 180 mm at rest.
+MOTOR_INERTIA = 800 * 0.200 ** 2
+ROTOR_INERTIA = 1300 * 0.180 ** 2
+MOTOR_SPEED = 1250 * RPM
+CLUTCH_TORQUE = 2 * 0.35 * 570 * (0.110 + 0.080) / 2
+
+
+def test_clutch_common_speed_and_slip_time_conserve_angular_momentum():
+    engagement = engage_clutch(MOTOR_INERTIA, MOTOR_SPEED, ROTOR_INERTIA, 0.0, CLUTCH_TORQUE)
+    common = MOTOR_INERTIA * MOTOR_SPEED / (MOTOR_INERTIA + ROTOR_INERTIA)  # angular momentum
+    assert engagement.common_speed == pytest.approx(common, rel=1e-9)
+    assert engagement.lock_time == pytest.approx(common / (CLUTCH_TORQUE / ROTOR_INERTIA), rel=1e-9)
+    lost = 0.5 * MOTOR_INERTIA * MOTOR_SPEED ** 2 - 0.5 * (MOTOR_INERTIA + ROTOR_INERTIA) * common ** 2
+    assert engagement.slip_energy == pytest.approx(lost, rel=1e-8)
+    motion = engagement.motion
+    after = motion.t > engagement.lock_time
+    np.testing.assert_allclose(motion.omega[after], motion.driving_omega[after], rtol=1e-12)
+
+
+@pytest.mark.parametrize("armature_torque", [-60.0, 60.0])
+def test_clutch_slip_time_with_a_constant_torque_on_the_armature(armature_torque):
+    # The example's variants: 60 N·m resisting, or driving, on the armature shaft.  While
+    # slipping each shaft accelerates uniformly; they lock where the two lines of ω(t) meet.
+    engagement = engage_clutch(MOTOR_INERTIA, MOTOR_SPEED, ROTOR_INERTIA, 0.0, CLUTCH_TORQUE,
+                               driving_torque=armature_torque)
+    armature = (armature_torque - CLUTCH_TORQUE) / MOTOR_INERTIA
+    rotor = CLUTCH_TORQUE / ROTOR_INERTIA
+    matrix = np.array([[1.0, -armature], [1.0, -rotor]])
+    speed, time = np.linalg.solve(matrix, [MOTOR_SPEED, 0.0])
+    assert engagement.lock_time == pytest.approx(time, rel=1e-9)
+    assert engagement.common_speed == pytest.approx(speed, rel=1e-9)
+    # Locked, the clutch passes J2/(J1 + J2) of the armature torque: less than it can, so it holds.
+    assert [name for _, name in engagement.motion.events] == ["clutch engaged", "clutch locked"]
+
+
+def test_locked_clutch_slips_again_when_the_machine_is_braked_hard():
+    brake_at, brake = 70.0, 200.0
+    motion = simulate(Machine(ROTOR_INERTIA), ConstantTorque(0.0),
+                      clutch=Clutch(CLUTCH_TORQUE, inertia=MOTOR_INERTIA), brake=Brake(torque=brake, at=brake_at),
+                      start=Start(omega=0.0, driving_omega=MOTOR_SPEED), duration=130.0, method="DOP853", rtol=1e-10)
+    common = MOTOR_INERTIA * MOTOR_SPEED / (MOTOR_INERTIA + ROTOR_INERTIA)
+    # Locked and braked, the clutch would have to pass J1·Mb/(J1 + J2) > its capacity.
+    assert MOTOR_INERTIA * brake / (MOTOR_INERTIA + ROTOR_INERTIA) > CLUTCH_TORQUE
+    names = [name for _, name in motion.events]
+    assert names == ["clutch engaged", "clutch locked", "brake on", "clutch slips", "stopped", "clutch locked"]
+    assert motion.event_time("clutch slips") == brake_at
+    _, rotor_speed, armature_speed, _ = motion.state_at(80.0)
+    assert rotor_speed == pytest.approx(common + (CLUTCH_TORQUE - brake) / ROTOR_INERTIA * 10.0, rel=1e-9)
+    assert armature_speed == pytest.approx(common - CLUTCH_TORQUE / MOTOR_INERTIA * 10.0, rel=1e-9)
+    assert motion.stopped_at == pytest.approx(brake_at + common / ((brake - CLUTCH_TORQUE) / ROTOR_INERTIA),
+                                              rel=1e-9)
+    # The armature runs down against the slipping clutch until it too is at rest and locks.
+    assert motion.events[-1][0] == pytest.approx(brake_at + common / (CLUTCH_TORQUE / MOTOR_INERTIA), rel=1e-9)
+
+
+def test_clutch_engaged_on_a_machine_while_its_motor_runs_up():
+    # A linear motor (rotor 0.5 kg·m²) runs up alone; at 1 s the clutch (20 N·m) engages the
+    # machine (3 kg·m², 5 N·m load) at rest.  Each phase is an exponential or a straight line.
+    rotor, machine_inertia, stall, no_load, capacity, load, engage = 0.5, 3.0, 40.0, 30.0, 20.0, 5.0, 1.0
+    motor = LinearMotor(stall, no_load, rotor_inertia=rotor)
+    motion = simulate(Machine(machine_inertia, resisting=load), motor, clutch=Clutch(capacity, engage_at=engage),
+                      duration=6.0, rtol=1e-10)
+    tau = rotor * no_load / stall
+    at_engage = no_load * (1 - math.exp(-engage / tau))
+    slipping_limit = no_load * (1 - capacity / stall)  # the speed the motor would settle to against Tc
+
+    def motor_speed(t):
+        return slipping_limit + (at_engage - slipping_limit) * math.exp(-(t - engage) / tau)
+
+    def machine_speed(t):
+        return (capacity - load) / machine_inertia * (t - engage)
+
+    lock = brentq(lambda t: motor_speed(t) - machine_speed(t), engage + 1e-9, 6.0)
+    assert motion.event_time("clutch locked") == pytest.approx(lock, rel=1e-8)
+    assert motion.state_at(engage)[2] == pytest.approx(at_engage, rel=1e-9)
+    assert motion.state_at(0.5 * (engage + lock))[1] == pytest.approx(machine_speed(0.5 * (engage + lock)), rel=1e-9)
+    # Slip energy: Tc times the slip angle ∫(ω_d − ω)dt.
+    slip, _ = quad(lambda t: motor_speed(t) - machine_speed(t), engage, lock, epsabs=1e-12)
+    assert motion.slip_energy == pytest.approx(capacity * slip, rel=1e-8)
+
+
+# --- the scene's keys ------------------------------------------------------------------------
+
+
+def test_read_motion_reads_every_key():
+    spec = read_motion({
+        "motor": {"kind": "kloss", "power": 5500.0, "synchronous_rpm": 1500.0, "rated_rpm": 1440.0,
+                  "overload": 2.2, "gear_ratio": 20.0, "rotor_inertia": 0.02, "off_at": 8.0},
+        "brake": {"torque": 50.0, "damping": 2.0, "at": 9.0},
+        "clutch": {"torque": 900.0, "engage_at": 0.5, "inertia": 0.1},
+        "start": {"rpm": 30.0, "angle_deg": 90.0, "driving_rpm": 60.0},
+        "duration": 12.0, "method": "Radau", "rtol": 1e-7, "steady_tolerance": 1e-5,
+    })
+    motor = spec.motor
+    assert isinstance(motor, KlossMotor)
+    assert (motor.power, motor.synchronous_speed, motor.overload, motor.gear_ratio, motor.rotor_inertia) == \
+        (5500.0, 1500 * RPM, 2.2, 20.0, 0.02)
+    assert motor.rated_slip == pytest.approx(0.04, rel=1e-12)
+    assert spec.motor_off_at == 8.0
+    assert spec.brake == Brake(50.0, 2.0, 9.0)
+    assert spec.clutch == Clutch(900.0, 0.5, 0.1)
+    assert spec.start == Start(omega=30 * RPM, angle=math.pi / 2, driving_omega=60 * RPM)
+    assert (spec.duration, spec.method, spec.rtol, spec.steady_tolerance) == (12.0, "Radau", 1e-7, 1e-5)
+
+
+def test_read_motion_defaults_and_the_other_motors():
+    spec = read_motion({"motor": {"kind": "constant", "torque": 30.0}})
+    assert spec.motor == ConstantTorque(30.0)
+    assert (spec.start, spec.duration, spec.method, spec.rtol, spec.brake, spec.clutch) == \
+        (Start(), None, "auto", 1e-6, None, None)
+    linear = read_motion({"motor": {"kind": "linear", "stall_torque": 50.0, "no_load_rpm": 300.0}}).motor
+    assert linear == LinearMotor(50.0, 300 * RPM)
+    through = read_motion({"motor": {"kind": "linear", "points": [[100.0, 40.0], [200.0, 20.0]]}}).motor
+    assert through.no_load == pytest.approx(300 * RPM) and through.stall_torque == pytest.approx(60.0)
+    by_slip = read_motion({"motor": {"kind": "kloss", "power": 1.0, "synchronous_rpm": 1000.0,
+                                     "rated_slip": 0.05, "overload": 2.0}}).motor
+    assert by_slip.rated_speed == pytest.approx(950 * RPM)
+
+
+def test_read_motion_from_a_table_leaves_other_keys_to_their_owner():
+    table = Table({"motor": {"kind": "constant", "torque": 3.0}, "masses": "someone else's"}, "dynamics")
+    assert read_motion(table).motor == ConstantTorque(3.0)
+    assert table.has("masses")
+
+
+@pytest.mark.parametrize(("data", "message"), [
+    ({"motor": {"kind": "linear", "stall_torqe": 5.0, "no_load_rpm": 3.0}},
+     "dynamics.motor.stall_torqe: unknown key; did you mean 'stall_torque'?"),
+    ({"motor": {"kind": "electric"}},
+     "dynamics.motor.kind: must be one of constant, linear, kloss (got 'electric')"),
+    ({"motor": {"kind": "kloss", "power": 1.0, "synchronous_rpm": 1000.0, "overload": 2.0}},
+     "dynamics.motor: give two of synchronous_rpm, rated_rpm, rated_slip (got synchronous_rpm)"),
+    ({"motor": {"kind": "kloss", "power": 1.0, "synchronous_rpm": 1000.0, "rated_slip": 0.1, "overload": 1.0}},
+     "dynamics.motor.overload: must be > 1 (it is Mmax/Mrated) (got 1.0)"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "start": "running"},
+     ("dynamics.start: must be \"rest\" or a table {omega or rpm, angle_deg, driving_omega or driving_rpm} "
+      "(got 'running')")),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "start": {"driving_rpm": 5.0}},
+     "dynamics.start.driving_rpm: only with a clutch"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "start": {"omega": 1.0, "rpm": 5.0}},
+     "dynamics.start.rpm: give either omega or rpm, not both"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "clutch": {"torque": 5.0}},
+     "dynamics.clutch.inertia: the clutch's driving half needs an inertia: give clutch.inertia or motor.rotor_inertia"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "brake": {"at": 2.0}},
+     "dynamics.brake: needs torque > 0 or damping > 0"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "method": "Euler"},
+     "dynamics.method: must be one of auto, RK45, RK23, DOP853, Radau, BDF, LSODA (got 'Euler')"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "duration": -1.0},
+     "dynamics.duration: must be > 0 (got -1.0)"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "stat": "rest"},
+     "dynamics.stat: unknown key; did you mean 'start'?"),
+    ({}, "dynamics.motor: is required but missing"),
+])
+def test_read_motion_errors_name_the_key(data, message):
+    with pytest.raises(SceneError) as caught:
+        read_motion(data)
+    assert str(caught.value) == message
+
+
+def test_sampled_resisting_torque_acts_as_the_function_it_samples():
+    angles = np.linspace(0, 2 * np.pi, 360, endpoint=False)
+    sampled = Machine(20.0, resisting=100.0 + 800.0 * np.sin(angles))
+    exact = Machine(20.0, resisting=lambda phi, omega: 100.0 + 800.0 * math.sin(phi))
+    runs = [simulate(m, ConstantTorque(100.0), start=Start(omega=30.0), duration=1.0, rtol=1e-10)
+            for m in (sampled, exact)]
+    times = np.linspace(0.0, 1.0, 11)
+    np.testing.assert_allclose(runs[0].state_at(times)[1], runs[1].state_at(times)[1], rtol=1e-9)
