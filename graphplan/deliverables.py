@@ -156,6 +156,37 @@ def machine_dynamics(analysis: Analysis):
     return model, flywheel_from_spec(model, spec)
 
 
+def machine_run(model, spec, flywheel=None) -> dict[str, Any]:
+    """The machine's equation of motion integrated with the scene's motor: start-up and steady state.
+
+    The motor replaces the constant driving moment the flywheel's balance of
+    work assumed; the scene's own loads stay as they are.  With a flywheel
+    sized for δ it is mounted on the driving shaft, so that the steady δ of
+    the integration can be set against the δ it was sized for.
+    """
+    import numpy as np
+
+    from .machine_motion import Machine
+
+    count = spec.count
+    phi = 2.0 * np.pi * np.arange(count) / count
+    made_up = {"driving": model.driving, "resisting": model.resisting}.get(model.constant, 0.0)
+    own = model.moment - made_up
+    added = flywheel.inertia if flywheel is not None else 0.0
+    machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + added,
+                      inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope),
+                      resisting=-np.interp(phi, model.coordinate, own))
+    motion = spec.motion.run(machine)
+    steady = motion.steady
+    result: dict[str, Any] = {"method": motion.method, "method_reason": motion.method_reason,
+                              "duration": float(motion.t[-1]), "flywheel_inertia": added}
+    if steady is not None:
+        result.update(omega_mean=steady.mean_speed, omega_max=steady.max_speed, omega_min=steady.cycle.min_speed,
+                      delta=steady.cycle.delta, steady_after=steady.reached_at,
+                      start_up_time=motion.start_up_time(5.0))
+    return result
+
+
 def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
     """The text files of ``pieces``: the error tables, the force analysis, the explanatory note."""
     files: dict[str, str] = {}
@@ -245,7 +276,10 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
     if "dynamics" in pieces and analysis is not None:
         from .flywheel import dynamics_results
 
-        found["dynamics"] = dynamics_results(*machine_dynamics(analysis))
+        model, flywheel = machine_dynamics(analysis)
+        found["dynamics"] = dynamics_results(model, flywheel)
+        if analysis.scene.dynamics.motion is not None:
+            found["dynamics"]["motion"] = rounded(machine_run(model, analysis.scene.dynamics, flywheel))
     if "balancing" in pieces:
         from .rotor_balancing import balance, balancing_results
 

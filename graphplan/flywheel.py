@@ -289,8 +289,8 @@ def _tangent(energy: np.ndarray, inertia: np.ndarray, slope: float, above: bool)
 
 # --- the scene's [dynamics] table ---------------------------------------------------------------
 
-#: Keys of ``[dynamics]`` that the equation-of-motion module reads; this reader passes them through.
-MOTION_KEYS = ("motor", "brake", "clutch", "start", "duration")
+#: Keys of ``[dynamics]`` that the equation of motion reads (:func:`graphplan.machine_motion.read_motion`).
+MOTION_KEYS = ("motor", "brake", "clutch", "start", "duration", "method", "rtol", "steady_tolerance")
 
 
 @dataclass(frozen=True)
@@ -300,8 +300,8 @@ class DynamicsSpec:
     ``delta`` is the coefficient of speed fluctuation (None: no flywheel asked for);
     ``omega`` the mean speed of the driver (rad/s, None: the driver's own |ω1|);
     ``flywheel_shaft_rpm`` a shaft the flywheel is moved to; ``constant`` which reduced moment
-    balances the cycle; ``count`` the samples of the cycle.  ``motor``, ``brake``, ``clutch``,
-    ``start`` and ``duration`` are passed through unread for the equation of motion.
+    balances the cycle; ``count`` the samples of the cycle; ``motion`` the equation of motion to
+    integrate (a :class:`~graphplan.machine_motion.MotionSpec`: the motor, a brake, a clutch), or None.
     """
 
     where: str
@@ -310,19 +310,11 @@ class DynamicsSpec:
     flywheel_shaft_rpm: float | None = None
     constant: str = "auto"
     count: int = DEFAULT_COUNT
-    motor: Any = None
-    brake: Any = None
-    clutch: Any = None
-    start: Any = None
-    duration: Any = None
-
-    def motion_keys(self) -> Mapping[str, Any]:
-        """The pass-through keys that the scene gives."""
-        return {key: getattr(self, key) for key in MOTION_KEYS if getattr(self, key) is not None}
+    motion: Any = None
 
 
 def read_dynamics(table: Table) -> DynamicsSpec:
-    """The ``[dynamics]`` table, every key checked (but the equation of motion's, passed through)."""
+    """The ``[dynamics]`` table, every key checked; the equation of motion's by its own reader."""
     delta = table.number("delta", None, positive=True)
     if delta is not None and not delta < 2:
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
@@ -335,10 +327,14 @@ def read_dynamics(table: Table) -> DynamicsSpec:
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     constant = table.choice("constant", CONSTANT_CHOICES, "auto")
     count = table.integer("count", DEFAULT_COUNT, minimum=12, maximum=100_000)
-    passed = {key: table.raw(key, None) for key in MOTION_KEYS}
+    motion = None
+    if any(table.has(key) for key in MOTION_KEYS):
+        from .machine_motion import read_motion
+
+        motion = read_motion(table, table.path)
     table.done()
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
-                        count=count, **passed)
+                        count=count, motion=motion)
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:

@@ -214,3 +214,17 @@ def test_a_dynamics_table_brings_the_flywheel(tmp_path):
     # Without the table, no dynamics at all.
     status, plain = run(tmp_path / "plain")
     assert "dynamics.svg" not in names(plain)
+
+
+def test_the_machine_run_by_its_motor_fluctuates_as_its_flywheel_was_sized(tmp_path):
+    """With the flywheel sized for δ = 0.05 at 17 rad/s on the shaft, the integrated steady state
+    fluctuates by δ·ωm² ≈ 0.05·17² (the flywheel estimate ΔWmax = J·ωm²·δ), whatever speed the motor settles at."""
+    scene = tmp_path / "driven.toml"
+    scene.write_text(RATCHET.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n"
+                     'motor = { kind = "linear", stall_torque = 2000.0, no_load_rpm = 170.0 }\n', encoding="utf-8")
+    status, out = run(tmp_path, "--only", "dynamics", scene=scene)
+    assert status == 0
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    middle = (motion["omega_max"] + motion["omega_min"]) / 2
+    assert motion["delta"] * middle ** 2 == pytest.approx(0.05 * 17.0 ** 2, rel=0.05)
+    assert motion["method"] in ("RK45", "DOP853", "LSODA", "Radau", "BDF") and motion["method_reason"]

@@ -33,7 +33,7 @@ from graphplan.analysis import analyse
 from graphplan.dynamics import equivalent_model_of
 from graphplan.errors import SceneError
 from graphplan.flywheel import (
-    MOTION_KEYS,
+
     dynamics_results,
     fluctuation,
     fluctuation_from_areas,
@@ -261,11 +261,13 @@ def test_flywheel_options_and_refusals():
 
 def test_dynamics_table_is_read_with_its_keys_checked():
     spec = read_dynamics(Table({"delta": 0.05, "rpm": 100.0, "flywheel_shaft_rpm": 1440.0,
-                                "motor": {"kind": "linear", "rated_rpm": 1440}, "duration": 2.0}, "dynamics"))
+                                "motor": {"kind": "constant", "torque": 50.0}, "duration": 2.0}, "dynamics"))
     assert spec.delta == 0.05 and spec.omega == pytest.approx(100.0 * math.pi / 30.0)
     assert spec.flywheel_shaft_rpm == 1440.0 and spec.constant == "auto" and spec.count == 360
-    assert spec.motion_keys() == {"motor": {"kind": "linear", "rated_rpm": 1440}, "duration": 2.0}
-    assert set(MOTION_KEYS) == {"motor", "brake", "clutch", "start", "duration"}
+    assert spec.motion.motor.torque == 50.0 and spec.motion.duration == 2.0
+    assert read_dynamics(Table({"delta": 0.05}, "dynamics")).motion is None
+    with pytest.raises(SceneError, match=r"dynamics\.motor: is required"):
+        read_dynamics(Table({"brake": {"torque": 10.0}}, "dynamics"))
     assert read_dynamics(Table({}, "dynamics")).delta is None
     model = model_of("ratchet_crank_rocker")
     asked = flywheel_from_spec(model, spec)
