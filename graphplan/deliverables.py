@@ -28,10 +28,11 @@ from .scene import Scene
 # Every piece a run can deliver, in the order a course project presents them.  The first seven names
 # of the scene contract are here; ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = ("positions", "velocity", "acceleration", "diagrams", "forces", "lever", "errors", "note",
-          "dynamics", "balancing", "vibration", "figures")
+          "dynamics", "balancing", "vibration", "sheets", "figures")
 FORMATS = ("svg", "png", "pdf", "dxf")
-# Pieces that cost more than they are worth by default: delivered only when asked for.
-ON_REQUEST = ("figures",)
+# Pieces delivered only when asked for: the figures cost matplotlib's second; the sheets repeat the
+# drawings in a frame, and a scene's drawings may not fit the sheet it names.
+ON_REQUEST = ("figures", "sheets")
 _NO_LINKAGE = "needs a mechanism: the scene has no [frame] and [driver]"
 _NO_LOADS = "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
 _NO_PLANS = "needs plan positions: positions.plans lists none"
@@ -43,6 +44,7 @@ class Drawing:
 
     stem: str
     layers: list[Layer]
+    page: tuple[float, float] | None = None
 
 
 def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
@@ -53,6 +55,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return None if scene.vibration is not None else "needs a [vibration] table"
     if analysis is None:
         return _NO_LINKAGE
+    if piece == "sheets" and scene.drawing.sheet == "none":
+        return 'needs a sheet format: drawing.sheet is "none"'
     if piece == "dynamics" and scene.dynamics is None:
         return "needs a [dynamics] table"
     if piece == "diagrams":
@@ -132,6 +136,17 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
 
         found.append(Drawing("diagrams", diagrams_layout.layout(of_analysis(analysis),
                                                                 strings(analysis.scene.locale))))
+    if "sheets" in pieces:
+        from .render.sheet import course_sheets
+
+        diagrams = ()
+        if missing(analysis.scene, analysis, "diagrams") is None:
+            from .kinematic_diagrams import of_analysis
+            from .render import diagrams as diagrams_layout
+
+            diagrams = (diagrams_layout.layout(of_analysis(analysis), strings(analysis.scene.locale)),)
+        for sheet in course_sheets(analysis, diagrams=diagrams):
+            found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
     shown = tuple(name for name in ("velocity", "acceleration") if name in pieces)
     for plan in analysis.plans:
         if shown:
@@ -235,7 +250,7 @@ def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes]:
     """The files of one drawing in each of ``formats``."""
     from .render.svg import to_svg
 
-    svg = to_svg(drawing.layers)
+    svg = to_svg(drawing.layers, page=drawing.page) if drawing.page else to_svg(drawing.layers)
     writers: dict[str, Callable[[], str | bytes]] = {
         "svg": lambda: svg,
         "png": lambda: _export("svg_to_png")(svg),

@@ -228,3 +228,15 @@ def test_the_machine_run_by_its_motor_fluctuates_as_its_flywheel_was_sized(tmp_p
     middle = (motion["omega_max"] + motion["omega_min"]) / 2
     assert motion["delta"] * middle ** 2 == pytest.approx(0.05 * 17.0 ** 2, rel=0.05)
     assert motion["method"] in ("RK45", "DOP853", "LSODA", "Radau", "BDF") and motion["method_reason"]
+
+
+def test_sheets_only_when_asked_for_and_each_the_size_of_its_format(tmp_path):
+    status, out = run(tmp_path, "--only", "sheets")
+    assert status == 0
+    sheets = sorted(name for name in names(out) if name.startswith("sheet_"))
+    assert sheets and all(name.endswith(".svg") for name in sheets)
+    for name in sheets:
+        root = ElementTree.parse(out / name).getroot()
+        assert (root.get("width"), root.get("height")) == ("841mm", "594mm")  # the ratchet asks for A1
+    status, plain = run(tmp_path / "plain")
+    assert not any(name.startswith("sheet_") for name in names(plain))

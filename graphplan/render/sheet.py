@@ -1,0 +1,580 @@
+"""Drawing sheets of a course project: the format, the frame, the title block, and the drawings placed on it.
+
+A sheet is an A1, A2, A3 or A4 format (A4 turned upright when that needs
+fewer sheets) with the frame and title block of the locale's drafting
+standard: ESKD for ``ru`` (GOST 2.301 formats, GOST 2.104 frame: 20 mm
+for binding on the left, 5 mm elsewhere), GB/T 14689 for ``zh`` (a = 25 mm
+for binding, c = 10 mm on A1 and A2, 5 mm on A3 and A4, centring marks),
+ISO 5457 for ``en`` (20 mm on the left, 10 mm elsewhere, centring marks).
+
+The drawings come as :class:`Panel` s, each at its own scale factors: a
+panel is never scaled, since μl, μV, μa and μF are written beside it and a
+shrunken drawing would falsify them.  Panels are placed in the order given,
+each where the drawings of the sheet stay most compact (then as high and as
+far left as can be), never nearer than :data:`GAP_MM` to another or than
+:data:`PADDING_MM` to the frame and the title block; the drawings of a
+sheet are then moved together towards its middle.  A panel that does not
+fit on the sheet goes on the next sheet of the same format; a panel too big
+for an empty sheet is placed part by part (a plan sheet of one position as
+its mechanism, velocity plan and acceleration plan; a force sheet as its
+groups, each beside its polygon, and the lever), on sheets of its own whose
+title block names it; a part too big for an empty sheet is an error that
+names the sheet and a bigger one.  ``sheet = "none"`` gives each panel
+unframed on a page of its own, as the drawings were before sheets.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field, replace
+
+from ..analysis import Analysis
+from ..errors import SceneError
+from ..locale import strings
+from . import forces as force_layout
+from . import plans as plan_layout
+from . import positions as positions_layout
+from .drawings import force_sheet, length_scale, plan_sheet, positions_plan
+from .plans import CAPTION_GAP_MM, Arrangement
+from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers
+from .svg import to_svg
+from .title_block import SIZES, TitleBlockFields, form_of, labels, scale_text, title_block
+
+Rect = tuple[float, float, float, float]
+
+# Sheet formats, landscape (mm): ISO 216, GOST 2.301, GB/T 14689.
+FORMATS: dict[str, tuple[float, float]] = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0),
+                                           "A4": (297.0, 210.0)}
+SHEET_NAMES = (*FORMATS, "none")
+_BIGGER = {"A4": "A3", "A3": "A2", "A2": "A1"}
+# Space between two drawings, and between a drawing and the frame or the title block (mm).
+GAP_MM = 15.0
+PADDING_MM = 8.0
+# How far a centring mark reaches into the drawing area past the frame (ISO 5457, GB/T 14689).
+CENTRING_REACH_MM = 5.0
+# A "none" page has this margin round its drawing, as the drawings before sheets had.
+UNFRAMED_MARGIN_MM = 8.0
+
+_EDGE = Stroke(0.2, "#555555")
+_CENTRING = Stroke(0.7)
+
+
+@dataclass(frozen=True)
+class Panel:
+    """A drawing to place on a sheet, at its own scales.
+
+    ``layers`` is the drawing whole (paper mm, anywhere); ``parts`` the same
+    drawing cut into pieces that may stand apart, used when the whole does
+    not fit a sheet; ``label`` says what the drawing is, for the title block
+    of a sheet that holds only its parts.  ``name`` prefixes the ids of its
+    layers and arrows on the sheet, so that two panels' ids never clash.
+    """
+
+    name: str
+    layers: tuple[Layer, ...]
+    parts: tuple[Panel, ...] = ()
+    label: str = ""
+    extent: Rect = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        # Computed once: the packing asks for it at every spot it tries.
+        object.__setattr__(self, "extent", tuple(float(value) for value in bounds(self.layers)))
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """One laid out sheet.
+
+    ``size`` is the format (width, height mm) or None for an unframed page;
+    ``layers`` are in sheet millimetres from the lower left corner (y up);
+    ``frame`` the inner frame and ``title_block`` the block (xmin, ymin,
+    xmax, ymax), None on an unframed page; ``panels`` the bounds of each
+    drawing placed, by panel name; ``number`` and ``count`` as in the title
+    block.
+    """
+
+    format: str
+    size: tuple[float, float] | None
+    layers: list[Layer]
+    frame: Rect | None
+    title_block: Rect | None
+    panels: dict[str, Rect]
+    number: int
+    count: int
+
+    def svg(self) -> str:
+        return sheet_svg(self.layers, self.size)
+
+
+@dataclass(frozen=True)
+class Details:
+    """What the title block says beyond the drawings: the scene's title and what only the student knows."""
+
+    title: str = ""
+    author: str = ""
+    designation: str = ""
+    organization: str = ""
+    checked_by: str = ""
+    approved_by: str = ""
+    date: str = ""
+
+
+# Panels of an analysis.
+
+def panel_of(drawing: Panel | Sequence[Layer], name: str) -> Panel:
+    """``drawing`` as a panel: a panel as it is, a list of layers as a whole panel named ``name``."""
+    if isinstance(drawing, Panel):
+        return drawing
+    layers = tuple(drawing)
+    if not all(isinstance(layer, Layer) for layer in layers):
+        raise ValueError(f"panel {name!r}: expected a Panel or a list of Layer, got {drawing!r:.80}")
+    return Panel(name, layers)
+
+
+def split(arrangement: Arrangement, name: str, label: str,
+          together: Callable[[str], str] | None = None) -> Panel:
+    """A laid out sheet (:func:`graphplan.render.plans.arrange`, :func:`graphplan.render.forces.arrange`) as a panel.
+
+    Its parts are its fields, each with the layers named after it (the
+    field ``velocity``: ``velocity-lines``, ``velocity-caption``, ...); a
+    layer of no field (the sheet's title) stays with the whole only.
+    ``together`` maps a field to the name of the part it goes in: fields
+    of one part (a group cut free and its force polygon) stay side by side
+    as laid out, and stand apart only when the part does not fit a sheet.
+    """
+    fields = sorted(arrangement.fields, key=len, reverse=True)
+    members: dict[str, list[Layer]] = {key: [] for key in arrangement.fields}
+    for layer in arrangement.layers:
+        owner = next((key for key in fields if layer.name == key or layer.name.startswith(key + "-")), None)
+        if owner is not None:
+            members[owner].append(layer)
+    alone = {key: Panel(f"{name}-{key}", tuple(_renamed(_captioned(layers, key), key)))
+             for key, layers in members.items() if layers}
+    groups: dict[str, list[str]] = {}
+    for key in alone:
+        groups.setdefault(together(key) if together else key, []).append(key)
+    parts = []
+    for group, keys in groups.items():
+        if len(keys) == 1:
+            parts.append(alone[keys[0]])
+        else:
+            parts.append(Panel(f"{name}-{group}", tuple(layer for key in keys for layer in members[key]),
+                               tuple(alone[key] for key in keys)))
+    return Panel(name, tuple(arrangement.layers), tuple(parts), label)
+
+
+def _group_of_field(field_name: str) -> str:
+    """The part a field of the force sheet goes in: a group cut free with its polygons, the lever alone."""
+    for kind in ("body-", "polygon-"):
+        if field_name.startswith(kind):
+            return "group-" + field_name[len(kind):]
+    return field_name
+
+
+def _captioned(layers: Sequence[Layer], field_name: str) -> list[Layer]:
+    """A field's layers with its caption moved up under its drawing.
+
+    A sheet's fields are as tall as its tallest drawing, and each caption
+    stands under its field: a drawing set apart keeps its caption at
+    :data:`~graphplan.render.plans.CAPTION_GAP_MM` under itself instead.
+    """
+    caption_name = f"{field_name}-caption"
+    captions = [layer for layer in layers if layer.name == caption_name and layer.items]
+    drawing = [layer for layer in layers if layer.name != caption_name]
+    if not captions or not any(layer.items for layer in drawing):
+        return list(layers)
+    x0, y0, x1, _ = bounds(drawing)
+    first = captions[0].items[0]
+    if not isinstance(first, Text):
+        return list(layers)
+    dx, dy = (x0 + x1) / 2 - first.at[0], y0 - CAPTION_GAP_MM - first.at[1]
+    return [moved_layers([layer], dx, dy)[0] if layer.name == caption_name else layer for layer in layers]
+
+
+def _renamed(layers: Sequence[Layer], field_name: str) -> list[Layer]:
+    """Layers of a field named without the field's name, which their panel's name will carry."""
+    def short(value: str) -> str:
+        return value[len(field_name) + 1:] if value.startswith(field_name + "-") else value
+
+    return [Layer(short(layer.name), tuple(replace(item, key=short(item.key)) if isinstance(item, Arrow) and item.key
+                                           else item for item in layer.items)) for layer in layers]
+
+
+def kinematics_panels(analysis: Analysis) -> list[Panel]:
+    """The plan of positions, then the plan sheet (mechanism, velocity and acceleration plans) of each plan position."""
+    text = strings(analysis.scene.locale)
+    panels = [Panel("positions", tuple(positions_layout.layout(positions_plan(analysis))))]
+    for position in analysis.plans:
+        sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
+        panels.append(split(plan_layout.arrange(sheet), f"plan-{position.number}",
+                            text["plan_sheet_title"].format(number=position.number)))
+    return panels
+
+
+def force_panels(analysis: Analysis) -> list[Panel]:
+    """The force sheet (groups cut free, force polygons, Zhukovsky's lever) of each plan position that has one."""
+    words = labels(analysis.scene.locale)
+    return [split(force_layout.arrange(force_sheet(analysis, position)), f"forces-{position.number}",
+                  words["sheet_forces_position"].format(number=position.number), _group_of_field)
+            for position in analysis.plans if position.forces is not None]
+
+
+# Sheets.
+
+def kinematics_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", locale: str = "en",
+                     title: str = "", scale: float | None = None, details: Details | None = None,
+                     first: int = 1, count: int | None = None) -> list[Sheet]:
+    """The kinematics sheets: the plan of positions, the plans of each position, any further panels (diagrams).
+
+    ``scale`` is μl (m/mm) for the title block's scale box; ``first`` the
+    number of the first sheet and ``count`` how many sheets the set has
+    (these sheets only, when not given).  Returns one :class:`Sheet` per
+    sheet needed: several when the panels do not fit on one.
+    """
+    return _sheets(panels, sheet, locale, "sheet_kinematics", title, scale, details, first, count)
+
+
+def forces_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", locale: str = "en",
+                 title: str = "", scale: float | None = None, details: Details | None = None,
+                 first: int = 1, count: int | None = None) -> list[Sheet]:
+    """The force sheets: each position's groups cut free, force polygons and lever (:func:`kinematics_sheet`)."""
+    return _sheets(panels, sheet, locale, "sheet_forces", title, scale, details, first, count)
+
+
+def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
+                  diagrams: Sequence[Panel | Sequence[Layer]] = ()) -> list[Sheet]:
+    """Every sheet of the analysis, numbered as one set: kinematics first, then forces.
+
+    ``sheet`` defaults to the scene's ``drawing.sheet``; ``diagrams`` are
+    further kinematics panels (the diagrams of the output link).
+    """
+    scene = analysis.scene
+    chosen = scene.drawing.sheet if sheet is None else sheet
+    details = details or Details()
+    if not details.title:
+        details = replace(details, title=scene.title)
+    scale = length_scale(analysis)
+    kinematics = [*kinematics_panels(analysis),
+                  *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
+    forces = force_panels(analysis)
+    if chosen == "none":
+        pages = kinematics + forces
+        return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
+    form = form_of(scene.locale)
+    first_pages = _pack([panel_of(p, f"panel-{k + 1}") for k, p in enumerate(kinematics)], chosen, form)
+    second_pages = _pack(forces, chosen, form) if forces else []
+    total = len(first_pages) + len(second_pages)
+    return (_drawn(first_pages, chosen, scene.locale, "sheet_kinematics", scale, details, 1, total)
+            + _drawn(second_pages, chosen, scene.locale, "sheet_forces", scale, details, len(first_pages) + 1,
+                     total))
+
+
+def _sheets(drawings: Sequence[Panel | Sequence[Layer]], sheet: str, locale: str, kind: str, title: str,
+            scale: float | None, details: Details | None, first: int, count: int | None) -> list[Sheet]:
+    _check_sheet(sheet)
+    panels = [panel_of(drawing, f"panel-{k + 1}") for k, drawing in enumerate(drawings)]
+    details = replace(details or Details(), title=title or (details.title if details else ""))
+    if sheet == "none":
+        return [_unframed(panel, first + k, count or len(panels)) for k, panel in enumerate(panels)]
+    pages = _pack(panels, sheet, form_of(locale))
+    return _drawn(pages, sheet, locale, kind, scale, details, first, count or first - 1 + len(pages))
+
+
+def _check_sheet(sheet: str) -> None:
+    if sheet not in SHEET_NAMES:
+        raise SceneError("drawing.sheet", f"must be one of {', '.join(SHEET_NAMES)}", sheet)
+
+
+def sheet_svg(layers: Sequence[Layer], sheet: str | tuple[float, float] | None) -> str:
+    """The SVG text of a sheet's ``layers``: a page of the sheet's size (a format name or (width, height) mm).
+
+    ``"none"`` or None gives a page round the drawing, as the drawings before sheets.
+    """
+    if sheet is None or sheet == "none":
+        return to_svg(layers, UNFRAMED_MARGIN_MM)
+    if isinstance(sheet, str):
+        _check_sheet(sheet)
+        sheet = FORMATS[sheet]
+    return to_svg(layers, page=(float(sheet[0]), float(sheet[1])))
+
+
+# Packing.
+
+@dataclass
+class _Page:
+    """A sheet being filled: its size, the area panels may take, the title block, what is placed."""
+
+    size: tuple[float, float]
+    frame: Rect
+    block: Rect
+    area: Rect
+    placed: list[tuple[Panel, Rect, tuple[float, float]]] = field(default_factory=list)
+    label: str = ""
+
+    def place(self, panel: Panel) -> bool:
+        """Put ``panel`` where the drawings stay most compact, then as high and as far left as can be.
+
+        Compact is measured as the share of the area (its width or its
+        height, whichever is more used) that the drawings' common bounds
+        take; so the drawings grow together as a block of the sheet's shape.
+        False when the panel does not fit.
+        """
+        x0, y0, x1, y1 = panel.extent
+        width, height = x1 - x0, y1 - y0
+        rects = [rect for _, rect, _ in self.placed]
+        # Against the area's edges, beside or under another drawing, level with one, or just above the block.
+        xs = {self.area[0], self.area[2] - width, *(r[2] + GAP_MM for r in rects),
+              *(r[0] - GAP_MM - width for r in rects), *(r[0] for r in rects)}
+        tops = {self.area[3], self.block[3] + PADDING_MM + height, *(r[1] - GAP_MM for r in rects),
+                *(r[3] for r in rects)}
+        area_width, area_height = self.area[2] - self.area[0], self.area[3] - self.area[1]
+        best: tuple[tuple[float, float, float], Rect] | None = None
+        for top in tops:
+            for left in xs:
+                rect = (left, top - height, left + width, top)
+                if not self._free(rect):
+                    continue
+                union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
+                         max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
+                share = max((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
+                key = (round(share, 3), -top, left)
+                if best is None or key < best[0]:
+                    best = (key, rect)
+        if best is None:
+            return False
+        rect = best[1]
+        self.placed.append((panel, rect, (rect[0] - x0, rect[3] - y1)))
+        return True
+
+    def fits_empty(self, panel: Panel) -> bool:
+        return _Page(self.size, self.frame, self.block, self.area).place(panel)
+
+    def _free(self, rect: Rect) -> bool:
+        ax0, ay0, ax1, ay1 = self.area
+        eps = 1e-6
+        if rect[0] < ax0 - eps or rect[1] < ay0 - eps or rect[2] > ax1 + eps or rect[3] > ay1 + eps:
+            return False
+        if _overlap(rect, _grown(self.block, PADDING_MM)):
+            return False
+        return not any(_overlap(rect, _grown(other, GAP_MM - eps)) for _, other, _ in self.placed)
+
+
+def _overlap(a: Rect, b: Rect) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _grown(rect: Rect, by: float) -> Rect:
+    return (rect[0] - by, rect[1] - by, rect[2] + by, rect[3] + by)
+
+
+def margins(form: str, sheet: str) -> tuple[float, float, float, float]:
+    """The frame's distance from the sheet's edges (left, bottom, right, top, mm) in ``form``'s standard."""
+    if form == "eskd":  # GOST 2.104: 20 mm for binding, 5 mm elsewhere
+        return (20.0, 5.0, 5.0, 5.0)
+    if form == "gb":  # GB/T 14689, with binding: a = 25; c = 10 on A0..A2, 5 on A3, A4
+        c = 10.0 if sheet in ("A1", "A2") else 5.0
+        return (25.0, c, c, c)
+    return (20.0, 10.0, 10.0, 10.0)  # ISO 5457
+
+
+def _empty_page(sheet: str, form: str, portrait: bool) -> _Page:
+    width, height = FORMATS[sheet]
+    if portrait:
+        width, height = height, width
+    left, bottom, right, top = margins(form, sheet)
+    frame = (left, bottom, width - right, height - top)
+    block_width, block_height = SIZES[form]
+    block = (frame[2] - block_width, frame[1], frame[2], frame[1] + block_height)
+    area = (frame[0] + PADDING_MM, frame[1] + PADDING_MM, frame[2] - PADDING_MM, frame[3] - PADDING_MM)
+    return _Page((width, height), frame, block, area)
+
+
+def _pack(panels: Sequence[Panel], sheet: str, form: str) -> list[_Page]:
+    """The panels on as few sheets as this simple packing needs; A4 upright or across, whichever needs fewer."""
+    _check_sheet(sheet)
+    if sheet != "A4":
+        return _pack_on(panels, sheet, form, portrait=False)
+    packed: dict[bool, list[_Page]] = {}
+    failure: SceneError | None = None
+    for portrait in (False, True):
+        try:
+            packed[portrait] = _pack_on(panels, sheet, form, portrait)
+        except SceneError as error:
+            failure = failure or error
+    if not packed:
+        assert failure is not None
+        raise failure
+    # ESKD puts an A4 upright; the other standards turn it as the drawing needs.
+    upright_first = form == "eskd"
+    return min(packed.values(), key=lambda pages: (len(pages), _upright(pages[0]) != upright_first))
+
+
+def _upright(page: _Page) -> bool:
+    return page.size[0] < page.size[1]
+
+
+def _pack_on(panels: Sequence[Panel], sheet: str, form: str, portrait: bool) -> list[_Page]:
+    pages = [_empty_page(sheet, form, portrait)]
+
+    def fresh() -> _Page:
+        if pages[-1].placed:
+            pages.append(_empty_page(sheet, form, portrait))
+        return pages[-1]
+
+    for panel in panels:
+        page = pages[-1]
+        if not page.label and page.place(panel):
+            continue
+        if fresh().place(panel):
+            continue
+        if not panel.parts:
+            raise _too_big(panel, pages[-1], sheet)
+        # Parts go on sheets of their own, whose title block says whose parts they are.
+        fresh()
+        pages[-1:] = _parts_on(panel, sheet, form, portrait)
+    pages = [page for page in pages if page.placed]
+    for page in pages:
+        _centre(page)
+    return pages
+
+
+def _parts_on(panel: Panel, sheet: str, form: str, portrait: bool) -> list[_Page]:
+    """The parts of ``panel`` on pages of their own, arranged to need the fewest pages.
+
+    Tried in turn: the parts as given, then each part that holds several
+    drawings (a group and its polygon) cut into them, each in the given
+    order and tallest, largest and widest first; of two arrangements on as
+    many pages the first tried is kept, so that a drawing stays with its
+    neighbours and in reading order where that costs no sheet.
+    """
+    empty = _empty_page(sheet, form, portrait)
+    # A part too big for a sheet stands apart in its own parts.
+    grouped = [piece for part in panel.parts
+               for piece in (part.parts if part.parts and not empty.fits_empty(part) else (part,))]
+    single = [piece for part in grouped for piece in (part.parts or (part,))]
+    best: list[_Page] | None = None
+    for parts in (grouped, single):
+        for order in (parts, sorted(parts, key=lambda part: -_height(part)),
+                      sorted(parts, key=lambda part: -_area(part)), sorted(parts, key=lambda part: -_width(part))):
+            pages = [_empty_page(sheet, form, portrait)]
+            for part in order:
+                if pages[-1].place(part):
+                    continue
+                if not pages[-1].fits_empty(part):
+                    raise _too_big(part, pages[-1], sheet, panel.label)
+                pages.append(_empty_page(sheet, form, portrait))
+                pages[-1].place(part)
+            if best is None or len(pages) < len(best):
+                best = pages
+    assert best is not None
+    for page in best:
+        page.label = panel.label or panel.name
+    return best
+
+
+def _width(panel: Panel) -> float:
+    x0, _, x1, _ = panel.extent
+    return x1 - x0
+
+
+def _height(panel: Panel) -> float:
+    _, y0, _, y1 = panel.extent
+    return y1 - y0
+
+
+def _area(panel: Panel) -> float:
+    return _width(panel) * _height(panel)
+
+
+def _centre(page: _Page) -> None:
+    """Move the drawings of a page together towards the middle of its area, as far as the title block lets them."""
+    rects = [rect for _, rect, _ in page.placed]
+    ux0, uy0 = min(r[0] for r in rects), min(r[1] for r in rects)
+    ux1, uy1 = max(r[2] for r in rects), max(r[3] for r in rects)
+    ax0, ay0, ax1, ay1 = page.area
+    towards = ((ax0 + ax1 - ux0 - ux1) / 2, (ay0 + ay1 - uy0 - uy1) / 2)
+    block = _grown(page.block, PADDING_MM)
+    steps = 20
+    for k in range(steps, 0, -1):
+        dx, dy = towards[0] * k / steps, towards[1] * k / steps
+        if not any(_overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), block) for r in rects):
+            page.placed = [(panel, (r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), (ox + dx, oy + dy))
+                           for panel, r, (ox, oy) in page.placed]
+            return
+
+
+def _too_big(panel: Panel, page: _Page, sheet: str, whose: str = "") -> SceneError:
+    x0, y0, x1, y1 = panel.extent
+    ax0, ay0, ax1, ay1 = page.area
+    what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
+    bigger = _BIGGER.get(sheet)
+    advice = f"choose {bigger} or a bigger sheet, or " if bigger else "choose a larger μl (drawing.length_scale) or "
+    return SceneError("drawing.sheet",
+                      f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
+                      f"(drawing area {ax1 - ax0:.0f} × {ay1 - ay0:.0f} mm); {advice}sheet = \"none\"", sheet)
+
+
+# Drawing the sheets.
+
+def _drawn(pages: Sequence[_Page], sheet: str, locale: str, kind: str, scale: float | None, details: Details,
+           first: int, count: int) -> list[Sheet]:
+    form = form_of(locale)
+    words = labels(locale)
+    text = strings(locale)
+    scale_box = scale_text(scale, form, text["length_scale"]) if scale is not None else ""
+    sheets = []
+    for k, page in enumerate(pages):
+        fields = TitleBlockFields(
+            title=details.title, drawing=_drawing_name(page) or words[kind], scale=scale_box, sheet=first + k,
+            sheets=count,
+            author=details.author, designation=details.designation, organization=details.organization,
+            checked_by=details.checked_by, approved_by=details.approved_by, date=details.date, language=locale)
+        layers: list[Layer] = []
+        placed: dict[str, Rect] = {}
+        for panel, rect, (dx, dy) in page.placed:
+            layers.extend(_prefixed(moved_layers(panel.layers, dx, dy), panel.name))
+            placed[panel.name] = rect
+        layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
+        layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
+        sheets.append(Sheet(sheet, page.size, layers, page.frame, page.block, placed, first + k, count))
+    return sheets
+
+
+def _drawing_name(page: _Page) -> str:
+    """What a page shows, when it is one drawing's: the parts of one, or one whole alone."""
+    if page.label:
+        return page.label
+    return page.placed[0][0].label if len(page.placed) == 1 else ""
+
+
+def _unframed(panel: Panel, number: int, count: int) -> Sheet:
+    layers = _prefixed(list(panel.layers), panel.name)
+    return Sheet("none", None, layers, None, None, {panel.name: panel.extent}, number, count)
+
+
+def _prefixed(layers: Sequence[Layer], prefix: str) -> list[Layer]:
+    """Layers and arrow keys named ``prefix-...``: the ids of two panels on one sheet never clash."""
+    def named(value: str) -> str:
+        return f"{prefix}-{value}" if value else prefix
+
+    return [Layer(named(layer.name), tuple(replace(item, key=named(item.key)) if isinstance(item, Arrow) and item.key
+                                           else item for item in layer.items)) for layer in layers]
+
+
+def _frame(page: _Page, form: str) -> list[Primitive]:
+    """The sheet's edge (thin), the frame (a main line) and, but for ESKD, the centring marks."""
+    width, height = page.size
+    x0, y0, x1, y1 = page.frame
+    items: list[Primitive] = [
+        Polyline(((0.0, 0.0), (width, 0.0), (width, height), (0.0, height)), _EDGE, closed=True),
+        Polyline(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), MAIN, closed=True)]
+    if form != "eskd":
+        middle_x, middle_y = (x0 + x1) / 2, (y0 + y1) / 2
+        reach = CENTRING_REACH_MM
+        # A mark that would run into the title block stops at the frame (GB/T 14689).
+        bottom = y0 if page.block[0] <= middle_x <= page.block[2] else y0 + reach
+        items += [Polyline(((middle_x, 0.0), (middle_x, bottom)), _CENTRING),
+                  Polyline(((middle_x, height), (middle_x, y1 - reach)), _CENTRING),
+                  Polyline(((0.0, middle_y), (x0 + reach, middle_y)), _CENTRING),
+                  Polyline(((width, middle_y), (x1 - reach, middle_y)), _CENTRING)]
+    return items

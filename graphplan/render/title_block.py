@@ -1,0 +1,550 @@
+"""The title block of a sheet, in the form its language's drafting standard prescribes.
+
+Three forms, chosen by the scene's locale:
+
+* ``ru``: ESKD, GOST 2.104-2006 form 1, 185 × 55 mm: the change and
+  signature columns on the left (Изм., Лист, № докум., Подп., Дата;
+  Разраб., Пров., Т.контр., Н.контр., Утв.), the designation across the top
+  right, the name of the drawing, the material, Лит./Масса/Масштаб,
+  Лист/Листов and the organisation.  Column widths and row heights follow the
+  standard's drawing (7, 10, 23, 15, 10 | 70 | 50; rows of 5 mm).
+* ``zh``: GB/T 10609.1-2008, 180 × 56 mm in rows of 7 mm: 更改区 (标记, 处数,
+  分区, 更改文件号, 签名, 年、月、日), 签字区 (设计, 标准化, 审核, 工艺, 批准),
+  其他区 (阶段标记, 重量, 比例, 共 张 第 张) and 名称及代号区.
+* ``en``: ISO 7200:2004, 180 × 40 mm: Created by, Approved by, Document
+  type, Scale; Legal owner, Title; Identification number, Rev., Date of
+  issue, Lang., Sheet.  Each field's label stands small in its top left
+  corner, as ISO 7200 shows it.
+
+A block is drawn in paper millimetres (y up) with its lower right corner at
+a given point: the lower right corner of the frame.  What graphplan does not
+know (a signature, a date, a mass) is left blank but its box is drawn.
+Every value is wrapped and, if it must, set smaller so that it stays inside
+its box.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import unicodedata
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from ..scales import format_scale
+from .primitives import MAIN, Polyline, Primitive, Stroke, Text, text_width
+
+# The strings of the three forms and of what graphplan writes into them, by locale.  Every locale
+# has every key, so that any form can be drawn in any language.
+TITLE_BLOCK_STRINGS: dict[str, dict[str, str]] = {
+    "en": {
+        "sheet_kinematics": "Kinematic analysis",
+        "sheet_forces": "Force analysis",
+        "sheet_forces_position": "Force analysis, position {number}",
+        "sheet_of": "{number} of {count}",
+        # ESKD, GOST 2.104 form 1
+        "eskd_change": "Rev.",
+        "eskd_sheet": "Sheet",
+        "eskd_document": "Doc. No.",
+        "eskd_signature": "Sign.",
+        "eskd_date": "Date",
+        "eskd_designed": "Designed",
+        "eskd_checked": "Checked",
+        "eskd_technical_control": "Tech. ctrl",
+        "eskd_standards_control": "Std. ctrl",
+        "eskd_approved": "Approved",
+        "eskd_letter": "Letter",
+        "eskd_mass": "Mass",
+        "eskd_scale": "Scale",
+        "eskd_sheets": "Sheets",
+        # GB/T 10609.1
+        "gb_mark": "Mark",
+        "gb_places": "Qty",
+        "gb_zone": "Zone",
+        "gb_change_document": "Change doc. No.",
+        "gb_signature": "Signature",
+        "gb_date": "Date",
+        "gb_designed": "Designed",
+        "gb_standardized": "Standardized",
+        "gb_checked": "Checked",
+        "gb_process": "Process",
+        "gb_approved": "Approved",
+        "gb_stage": "Stage",
+        "gb_weight": "Weight",
+        "gb_scale": "Scale",
+        "gb_sheets": "Sheet {number} of {count}",
+        # ISO 7200
+        "iso_created_by": "Created by",
+        "iso_approved_by": "Approved by",
+        "iso_document_type": "Document type",
+        "iso_scale": "Scale",
+        "iso_legal_owner": "Legal owner",
+        "iso_title": "Title",
+        "iso_identification": "Identification number",
+        "iso_revision": "Rev.",
+        "iso_date_of_issue": "Date of issue",
+        "iso_language": "Lang.",
+        "iso_sheet": "Sheet",
+    },
+    "ru": {
+        "sheet_kinematics": "Кинематический анализ",
+        "sheet_forces": "Силовой анализ",
+        "sheet_forces_position": "Силовой анализ, положение {number}",
+        "sheet_of": "{number} из {count}",
+        "eskd_change": "Изм.",
+        "eskd_sheet": "Лист",
+        "eskd_document": "№ докум.",
+        "eskd_signature": "Подп.",
+        "eskd_date": "Дата",
+        "eskd_designed": "Разраб.",
+        "eskd_checked": "Пров.",
+        "eskd_technical_control": "Т.контр.",
+        "eskd_standards_control": "Н.контр.",
+        "eskd_approved": "Утв.",
+        "eskd_letter": "Лит.",
+        "eskd_mass": "Масса",
+        "eskd_scale": "Масштаб",
+        "eskd_sheets": "Листов",
+        "gb_mark": "Отм.",
+        "gb_places": "Кол.",
+        "gb_zone": "Зона",
+        "gb_change_document": "№ изв.",
+        "gb_signature": "Подп.",
+        "gb_date": "Дата",
+        "gb_designed": "Разраб.",
+        "gb_standardized": "Н.контр.",
+        "gb_checked": "Пров.",
+        "gb_process": "Т.контр.",
+        "gb_approved": "Утв.",
+        "gb_stage": "Лит.",
+        "gb_weight": "Масса",
+        "gb_scale": "Масштаб",
+        "gb_sheets": "Лист {number} из {count}",
+        "iso_created_by": "Разработал",
+        "iso_approved_by": "Утвердил",
+        "iso_document_type": "Вид документа",
+        "iso_scale": "Масштаб",
+        "iso_legal_owner": "Владелец",
+        "iso_title": "Наименование",
+        "iso_identification": "Обозначение",
+        "iso_revision": "Изм.",
+        "iso_date_of_issue": "Дата выпуска",
+        "iso_language": "Яз.",
+        "iso_sheet": "Лист",
+    },
+    "zh": {
+        "sheet_kinematics": "运动分析",
+        "sheet_forces": "力分析",
+        "sheet_forces_position": "力分析，位置 {number}",
+        "sheet_of": "第 {number} 张 共 {count} 张",
+        "eskd_change": "标记",
+        "eskd_sheet": "页",
+        "eskd_document": "文件号",
+        "eskd_signature": "签名",
+        "eskd_date": "日期",
+        "eskd_designed": "设计",
+        "eskd_checked": "审核",
+        "eskd_technical_control": "工艺",
+        "eskd_standards_control": "标准化",
+        "eskd_approved": "批准",
+        "eskd_letter": "阶段",
+        "eskd_mass": "重量",
+        "eskd_scale": "比例",
+        "eskd_sheets": "张数",
+        "gb_mark": "标记",
+        "gb_places": "处数",
+        "gb_zone": "分区",
+        "gb_change_document": "更改文件号",
+        "gb_signature": "签名",
+        "gb_date": "年、月、日",
+        "gb_designed": "设计",
+        "gb_standardized": "标准化",
+        "gb_checked": "审核",
+        "gb_process": "工艺",
+        "gb_approved": "批准",
+        "gb_stage": "阶段标记",
+        "gb_weight": "重量",
+        "gb_scale": "比例",
+        "gb_sheets": "共 {count} 张  第 {number} 张",
+        "iso_created_by": "设计",
+        "iso_approved_by": "批准",
+        "iso_document_type": "文件类型",
+        "iso_scale": "比例",
+        "iso_legal_owner": "所有者",
+        "iso_title": "名称",
+        "iso_identification": "图样代号",
+        "iso_revision": "版本",
+        "iso_date_of_issue": "发布日期",
+        "iso_language": "语言",
+        "iso_sheet": "张次",
+    },
+}
+
+# The form each locale's drafting standard prescribes.
+FORMS = {"ru": "eskd", "zh": "gb", "en": "iso"}
+# Width and height of each form (mm).
+SIZES = {"eskd": (185.0, 55.0), "gb": (180.0, 56.0), "iso": (180.0, 40.0)}
+
+# Standard scales as ``real`` per ``paper`` (mm of the object per mm of the drawing): reductions above
+# 1, enlargements below.  GOST 2.302-68; GB/T 14690-1993 (first and second choice); ISO 5455:1979.
+STANDARD_RATIOS = {
+    "eskd": (1, 2, 2.5, 4, 5, 10, 15, 20, 25, 40, 50, 75, 100, 200, 400, 500, 800, 1000,
+             1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 20, 1 / 40, 1 / 50, 1 / 100),
+    "gb": (1, 1.5, 2, 2.5, 3, 4, 5, 6, 10, 15, 20, 25, 30, 40, 50, 60, 100, 150, 200, 250, 300, 400, 500, 600, 1000,
+           1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 20, 1 / 25, 1 / 40, 1 / 50, 1 / 100),
+    "iso": (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 1 / 2, 1 / 5, 1 / 10, 1 / 20, 1 / 50),
+}
+
+THIN = Stroke(0.25)
+LABEL_SIZE = 2.0
+# ISO 7200's field names: small, but not below the 1.8 mm of ISO 3098's smallest lettering.
+CORNER_LABEL_SIZE = 1.8
+VALUE_SIZE = 3.5
+# Room between a text and the lines of its box (mm): a value, a printed label.
+PADDING = 0.8
+LABEL_PADDING = 0.5
+# Room an ISO 7200 field's name takes at the top of its field (mm).
+CORNER_LABEL_ROOM = LABEL_PADDING + 1.45 * CORNER_LABEL_SIZE
+# Line pitch over cap height.
+LINE_PITCH = 1.55
+
+
+@dataclass(frozen=True)
+class TitleBlockFields:
+    """What the title block says.
+
+    ``title`` is the scene's title, ``drawing`` the kind of drawing
+    (Kinematic analysis), ``scale`` the text of the scale box, ``sheet`` and
+    ``sheets`` the sheet's number and how many sheets the set has.  The rest
+    is what only the student knows; empty fields are drawn blank.
+    """
+
+    title: str
+    drawing: str
+    scale: str
+    sheet: int
+    sheets: int
+    author: str = ""
+    designation: str = ""
+    organization: str = ""
+    checked_by: str = ""
+    approved_by: str = ""
+    date: str = ""
+    language: str = ""
+
+
+def form_of(locale: str) -> str:
+    """The title block form of ``locale``'s drafting standard."""
+    if locale not in FORMS:
+        raise ValueError(f"no title block form for locale {locale!r}; known: {', '.join(sorted(FORMS))}")
+    return FORMS[locale]
+
+
+def labels(locale: str) -> Mapping[str, str]:
+    """The title block strings of ``locale``."""
+    if locale not in TITLE_BLOCK_STRINGS:
+        raise ValueError(f"no title block strings for locale {locale!r}; known: {', '.join(sorted(TITLE_BLOCK_STRINGS))}")
+    return TITLE_BLOCK_STRINGS[locale]
+
+
+def scale_text(length_scale: float, form: str, length_caption: str) -> str:
+    """The scale box's text: a standard ratio of the form (1:2.5) when μl is one, else μl written out.
+
+    ``length_caption`` is the locale's line for μl with a ``{value}``
+    field (``μl = {value} m/mm``).
+    """
+    real_per_paper = length_scale * 1000.0
+    for ratio in STANDARD_RATIOS[form]:
+        if abs(real_per_paper - ratio) <= 1e-9 * ratio:
+            return f"1:{_ratio_number(ratio)}" if ratio >= 1 else f"{_ratio_number(1 / ratio)}:1"
+    return length_caption.format(value=format_scale(length_scale))
+
+
+def _ratio_number(value: float) -> str:
+    return f"{value:.3f}".rstrip("0").rstrip(".")
+
+
+def title_block(form: str, fields: TitleBlockFields, text: Mapping[str, str],
+                corner: tuple[float, float]) -> list[Primitive]:
+    """The title block of ``form`` with its lower right corner at ``corner`` (mm, y up)."""
+    draw = {"eskd": _eskd, "gb": _gb, "iso": _iso}
+    if form not in draw:
+        raise ValueError(f"unknown title block form {form!r}; known: {', '.join(draw)}")
+    width, _ = SIZES[form]
+    block = _Block(corner[0] - width, corner[1])
+    draw[form](block, fields, text)
+    return block.items
+
+
+class _Block:
+    """A title block under construction, in coordinates from its lower left corner."""
+
+    def __init__(self, x: float, y: float) -> None:
+        self.x, self.y = x, y
+        self.items: list[Primitive] = []
+
+    def line(self, x0: float, y0: float, x1: float, y1: float, stroke: Stroke = MAIN) -> None:
+        self.items.append(Polyline(((self.x + x0, self.y + y0), (self.x + x1, self.y + y1)), stroke))
+
+    def rows(self, x0: float, x1: float, ys: Sequence[float], stroke: Stroke = THIN) -> None:
+        for y in ys:
+            self.line(x0, y, x1, y, stroke)
+
+    def outline(self, width: float, height: float) -> None:
+        self.items.append(Polyline(((self.x, self.y), (self.x + width, self.y), (self.x + width, self.y + height),
+                                    (self.x, self.y + height)), MAIN, closed=True))
+
+    def text(self, value: str, box: tuple[float, float, float, float], size: float = VALUE_SIZE,
+             anchor: str = "middle", weight: str = "normal", lines: int = 1) -> None:
+        """``value`` fitted into ``box`` (x0, y0, x1, y1 from the block's corner)."""
+        x0, y0, x1, y1 = box
+        self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), size, anchor,
+                                 weight, lines))
+
+    def label(self, value: str, box: tuple[float, float, float, float], anchor: str = "middle") -> None:
+        x0, y0, x1, y1 = box
+        self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), LABEL_SIZE, anchor,
+                                 padding=LABEL_PADDING))
+
+    def corner_label(self, value: str, box: tuple[float, float, float, float]) -> None:
+        """An ISO 7200 field's name, small in the top left corner of its field."""
+        x0, _, x1, y1 = box
+        size = min(CORNER_LABEL_SIZE, CORNER_LABEL_SIZE * (x1 - x0 - 2 * LABEL_PADDING)
+                   / text_width(value, CORNER_LABEL_SIZE))
+        self.items.append(Text((self.x + x0 + LABEL_PADDING, self.y + y1 - LABEL_PADDING - 1.15 * size), value,
+                               math.floor(size * 1000) / 1000, "start"))
+
+
+# GOST 2.104-2006, form 1: rows of 5 mm from the bottom; x from the block's left edge.
+def _eskd(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> None:
+    block.outline(185.0, 55.0)
+    # The left part: changes (rows 35..55), their header (30..35), the signatures (0..30).
+    for x in (17.0, 40.0, 55.0, 65.0):
+        block.line(x, 0.0, x, 55.0)
+    block.line(7.0, 30.0, 7.0, 55.0)
+    block.rows(0.0, 65.0, (35.0, 30.0), MAIN)
+    block.rows(0.0, 65.0, (50.0, 45.0, 40.0, 25.0, 20.0, 15.0, 10.0, 5.0))
+    # The right part: designation (40..55), name (15..40) and material (0..15) in a 70 mm column,
+    # Лит./Масса/Масштаб, Лист/Листов and the organisation in a 50 mm column.
+    block.line(65.0, 40.0, 185.0, 40.0)
+    block.line(65.0, 15.0, 185.0, 15.0)
+    block.line(135.0, 0.0, 135.0, 40.0)
+    block.line(135.0, 35.0, 185.0, 35.0)
+    block.line(135.0, 20.0, 185.0, 20.0)
+    block.line(150.0, 20.0, 150.0, 40.0)
+    block.line(167.0, 20.0, 167.0, 40.0)
+    block.line(155.0, 15.0, 155.0, 20.0)
+    for x in (140.0, 145.0):
+        block.line(x, 20.0, x, 35.0, THIN)
+    header = 30.0
+    for key, (x0, x1) in (("eskd_change", (0.0, 7.0)), ("eskd_sheet", (7.0, 17.0)), ("eskd_document", (17.0, 40.0)),
+                          ("eskd_signature", (40.0, 55.0)), ("eskd_date", (55.0, 65.0))):
+        block.label(text[key], (x0, header, x1, header + 5.0))
+    people = (("eskd_designed", 25.0, fields.author), ("eskd_checked", 20.0, fields.checked_by),
+              ("eskd_technical_control", 15.0, ""), ("eskd_standards_control", 5.0, ""),
+              ("eskd_approved", 0.0, fields.approved_by))
+    for key, y, name in people:
+        block.label(text[key], (0.0, y, 17.0, y + 5.0), "start")
+        block.text(name, (17.0, y, 40.0, y + 5.0), LABEL_SIZE, "start")
+    if fields.date:
+        block.text(fields.date, (55.0, 25.0, 65.0, 30.0), LABEL_SIZE * 0.8)
+    block.text(fields.designation, (65.0, 40.0, 185.0, 55.0), 5.0)
+    _name(block, fields, (65.0, 15.0, 135.0, 40.0))
+    block.label(text["eskd_letter"], (135.0, 35.0, 150.0, 40.0))
+    block.label(text["eskd_mass"], (150.0, 35.0, 167.0, 40.0))
+    block.label(text["eskd_scale"], (167.0, 35.0, 185.0, 40.0))
+    block.text(fields.scale, (167.0, 20.0, 185.0, 35.0), VALUE_SIZE, lines=2)
+    block.label(text["eskd_sheet"], (135.0, 15.0, 145.0, 20.0), "start")
+    block.text(str(fields.sheet), (145.0, 15.0, 155.0, 20.0), LABEL_SIZE)
+    block.label(text["eskd_sheets"], (155.0, 15.0, 170.0, 20.0), "start")
+    block.text(str(fields.sheets), (170.0, 15.0, 185.0, 20.0), LABEL_SIZE)
+    block.text(fields.organization, (135.0, 0.0, 185.0, 15.0), VALUE_SIZE, lines=2)
+
+
+# GB/T 10609.1-2008: rows of 7 mm from the bottom.  The widths (10, 10, 16, 16, 12, 16 over the changes,
+# 12, 12, 16, 12, 12, 16 under them; 4 × 6.5, 12, 12; 50) follow the standard's figure; the heights of the
+# cells right of the signatures (material 28, names 7, values 14, sheets 7; unit 18, name 18, code 10,
+# projection 10) are this module's reading of it.
+def _gb(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> None:
+    block.outline(180.0, 56.0)
+    # 更改区 (rows 28..56: three blank rows and the header) over 签字区 (0..28).
+    block.line(0.0, 28.0, 80.0, 28.0)
+    block.rows(0.0, 80.0, (49.0, 42.0, 35.0))
+    block.rows(0.0, 80.0, (21.0, 14.0, 7.0))
+    for x in (10.0, 20.0, 36.0):
+        block.line(x, 28.0, x, 56.0, THIN)
+    for x in (12.0, 24.0, 40.0):
+        block.line(x, 0.0, x, 28.0, THIN)
+    for x in (52.0, 64.0):
+        block.line(x, 0.0, x, 56.0, THIN)
+    block.line(80.0, 0.0, 80.0, 56.0)
+    # 其他区: material mark (28..56), 阶段标记 | 重量 | 比例 (21..28 their names, 7..21 their values),
+    # 共 张 第 张 (0..7); 名称及代号区: unit (38..56), drawing name (20..38), code (10..20), projection (0..10).
+    block.line(80.0, 28.0, 130.0, 28.0)
+    block.line(80.0, 21.0, 130.0, 21.0, THIN)
+    block.line(80.0, 7.0, 130.0, 7.0)
+    for k in range(1, 4):
+        block.line(80.0 + 6.5 * k, 7.0, 80.0 + 6.5 * k, 21.0, THIN)
+    for x in (106.0, 118.0):
+        block.line(x, 7.0, x, 28.0, THIN)
+    block.line(130.0, 0.0, 130.0, 56.0)
+    block.rows(130.0, 180.0, (38.0, 20.0, 10.0), MAIN)
+    header = 28.0
+    for key, (x0, x1) in (("gb_mark", (0.0, 10.0)), ("gb_places", (10.0, 20.0)), ("gb_zone", (20.0, 36.0)),
+                          ("gb_change_document", (36.0, 52.0)), ("gb_signature", (52.0, 64.0)),
+                          ("gb_date", (64.0, 80.0))):
+        block.label(text[key], (x0, header, x1, header + 7.0))
+    signatures = (("gb_designed", 21.0, 0.0, fields.author), ("gb_standardized", 21.0, 40.0, ""),
+                  ("gb_checked", 7.0, 0.0, fields.checked_by), ("gb_process", 0.0, 0.0, ""),
+                  ("gb_approved", 0.0, 40.0, fields.approved_by))
+    for key, y, x, name in signatures:
+        block.label(text[key], (x, y, x + 12.0, y + 7.0))
+        block.text(name, (x + 12.0, y, x + 24.0, y + 7.0), LABEL_SIZE)
+    if fields.date:
+        block.text(fields.date, (24.0, 21.0, 40.0, 28.0), LABEL_SIZE)
+    block.label(text["gb_stage"], (80.0, 21.0, 106.0, 28.0))
+    block.label(text["gb_weight"], (106.0, 21.0, 118.0, 28.0))
+    block.label(text["gb_scale"], (118.0, 21.0, 130.0, 28.0))
+    block.text(fields.scale, (118.0, 7.0, 130.0, 21.0), VALUE_SIZE, lines=2)
+    block.label(text["gb_sheets"].format(number=fields.sheet, count=fields.sheets), (80.0, 0.0, 130.0, 7.0))
+    block.text(fields.organization, (130.0, 38.0, 180.0, 56.0), VALUE_SIZE, lines=2)
+    _name(block, fields, (130.0, 20.0, 180.0, 38.0))
+    block.text(fields.designation, (130.0, 10.0, 180.0, 20.0), VALUE_SIZE)
+
+
+# ISO 7200:2004: the fields in rows of 10 mm, each with its name in the top left corner.
+def _iso(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> None:
+    block.outline(180.0, 40.0)
+    block.line(0.0, 30.0, 180.0, 30.0)
+    block.line(60.0, 10.0, 180.0, 10.0)
+    block.line(60.0, 0.0, 60.0, 30.0)
+    for x in (40.0, 80.0, 140.0):
+        block.line(x, 30.0, x, 40.0, THIN)
+    for x in (110.0, 120.0, 150.0, 160.0):
+        block.line(x, 0.0, x, 10.0, THIN)
+    cells = (
+        ("iso_created_by", (0.0, 30.0, 40.0, 40.0), fields.author),
+        ("iso_approved_by", (40.0, 30.0, 80.0, 40.0), fields.approved_by),
+        ("iso_document_type", (80.0, 30.0, 140.0, 40.0), fields.drawing),
+        ("iso_scale", (140.0, 30.0, 180.0, 40.0), fields.scale),
+        ("iso_identification", (60.0, 0.0, 110.0, 10.0), fields.designation),
+        ("iso_revision", (110.0, 0.0, 120.0, 10.0), ""),
+        ("iso_date_of_issue", (120.0, 0.0, 150.0, 10.0), fields.date),
+        ("iso_language", (150.0, 0.0, 160.0, 10.0), fields.language),
+        ("iso_sheet", (160.0, 0.0, 180.0, 10.0), text["sheet_of"].format(number=fields.sheet, count=fields.sheets)),
+    )
+    for key, (x0, y0, x1, y1), value in cells:
+        block.corner_label(text[key], (x0, y0, x1, y1))
+        block.text(value, (x0, y0, x1, y1 - CORNER_LABEL_ROOM), 3.0)
+    block.corner_label(text["iso_legal_owner"], (0.0, 0.0, 60.0, 30.0))
+    block.text(fields.organization, (0.0, 0.0, 60.0, 30.0 - CORNER_LABEL_ROOM), VALUE_SIZE, lines=3)
+    block.corner_label(text["iso_title"], (60.0, 10.0, 180.0, 30.0))
+    block.text(fields.title, (60.0, 10.0, 180.0, 30.0 - CORNER_LABEL_ROOM), 5.0, weight="bold", lines=3)
+
+
+def _name(block: _Block, fields: TitleBlockFields, box: tuple[float, float, float, float]) -> None:
+    """The drawing's name: the scene's title over the kind of drawing, each fitted into its share of ``box``."""
+    x0, y0, x1, y1 = box
+    split = y0 + 0.32 * (y1 - y0)
+    block.text(fields.title, (x0, split, x1, y1), 4.0, weight="bold", lines=4)
+    block.text(fields.drawing, (x0, y0, x1, split), 3.0, lines=2)
+
+
+# Fitting a text into a box.
+
+_SPACES = re.compile(r"\s+")
+
+
+def _is_wide(character: str) -> bool:
+    return unicodedata.east_asian_width(character) in ("W", "F")
+
+
+def _tokens(value: str) -> list[tuple[str, bool]]:
+    """Words and ideographs of ``value``, each with whether a space stands before it."""
+    tokens: list[tuple[str, bool]] = []
+    for k, word in enumerate(_SPACES.split(value.strip())):
+        if not word:
+            continue
+        piece = ""
+        first = True
+        for character in word:
+            # A line may break before or after any ideograph, as Chinese is set.
+            if _is_wide(character):
+                if piece:
+                    tokens.append((piece, k > 0 and first))
+                    first = False
+                    piece = ""
+                tokens.append((character, k > 0 and first))
+                first = False
+            else:
+                piece += character
+        if piece:
+            tokens.append((piece, k > 0 and first))
+    return tokens
+
+
+def _joined(tokens: Sequence[tuple[str, bool]]) -> str:
+    return "".join((" " if space and k else "") + token for k, (token, space) in enumerate(tokens))
+
+
+def wrapped(value: str, lines: int, size: float, weight: str = "normal") -> list[str]:
+    """``value`` broken into at most ``lines`` lines so that the widest is as narrow as can be.
+
+    The narrowest width that greedy filling still gets into ``lines`` lines
+    is found by bisection: a line's width is the sum of its letters' widths.
+    """
+    tokens = _tokens(value)
+    if not tokens:
+        return []
+    if lines <= 1 or len(tokens) == 1:
+        return [value.strip()]
+    word = [text_width(token, size, weight) for token, _ in tokens]
+    space = text_width(" ", size, weight)
+
+    def filled(limit: float) -> list[list[tuple[str, bool]]]:
+        rows: list[list[tuple[str, bool]]] = [[]]
+        width = 0.0
+        for (token, spaced), token_width in zip(tokens, word, strict=True):
+            extra = token_width + (space if spaced and rows[-1] else 0.0)
+            if rows[-1] and width + extra > limit:
+                rows.append([])
+                width, extra = 0.0, token_width
+            rows[-1].append((token, spaced))
+            width += extra
+        return rows
+
+    low, high = max(word), sum(word) + space * len(word)
+    for _ in range(40):
+        middle = (low + high) / 2
+        if len(filled(middle)) <= lines:
+            high = middle
+        else:
+            low = middle
+    return [_joined(row) for row in filled(high)]
+
+
+def fitted(value: str, box: tuple[float, float, float, float], size: float, anchor: str = "middle",
+           weight: str = "normal", lines: int = 1, padding: float = PADDING) -> list[Text]:
+    """``value`` in at most ``lines`` lines, centred in ``box`` (x0, y0, x1, y1), set smaller when it must."""
+    if not value.strip():
+        return []
+    x0, y0, x1, y1 = box
+    width, height = x1 - x0 - 2 * padding, y1 - y0 - 2 * padding
+    best: tuple[float, list[str]] | None = None
+    for count in range(1, lines + 1):
+        parts = wrapped(value, count, size, weight)
+        widest = max(text_width(part, size, weight) for part in parts)
+        # The block of n lines is (n - 1) pitches plus one line's extent (1.45 cap heights) high.
+        tall = ((len(parts) - 1) * LINE_PITCH + 1.45) * size
+        fit = min(size, size * width / widest, size * height / tall)
+        if best is None or fit > best[0] + 1e-9:
+            best = (fit, parts)
+        if fit >= size:
+            break
+    assert best is not None
+    fit, parts = best
+    pitch = LINE_PITCH * fit
+    tall = (len(parts) - 1) * pitch + 1.45 * fit
+    top = (y0 + y1) / 2 + tall / 2 - 1.15 * fit
+    x = {"start": x0 + padding, "middle": (x0 + x1) / 2, "end": x1 - padding}[anchor]
+    return [Text((x, top - k * pitch), part, math.floor(fit * 1000) / 1000, anchor, weight=weight) for k, part in enumerate(parts)]

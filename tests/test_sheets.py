@@ -1,0 +1,397 @@
+"""Drawing sheets: formats, frames, title blocks of the three standards, and the drawings placed on them.
+
+Every fixture's kinematics and force sheets are built on A1 and checked as a reader would: the SVG
+parses and is the size of the format, every word stands inside the frame, no two drawings and no
+drawing and the title block overlap (measured on the placed layers themselves, not on what the
+packing recorded), the drawings keep their scales, the title block carries the title and the right
+sheet numbers. The title block of each language is checked against its standard: the frame margins
+and the block's size (GOST 2.104 and 2.301, GB/T 14689 and 10609.1, ISO 5457 and 7200), the ESKD
+form's column lines, and the field labels each standard prints.
+"""
+
+import dataclasses
+import itertools
+import math
+import re
+from xml.etree import ElementTree
+
+import cairosvg
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.errors import SceneError
+from graphplan.render import plans as plan_layout
+from graphplan.render.drawings import plan_sheet
+from graphplan.render.primitives import Arrow, Layer, Polyline, Text, bounds, bounds_of, text_extent
+from graphplan.render.sheet import (
+    Details,
+    Panel,
+    course_sheets,
+    forces_sheet,
+    kinematics_panels,
+    kinematics_sheet,
+    sheet_svg,
+)
+from graphplan.render.title_block import TITLE_BLOCK_STRINGS, scale_text
+
+FIXTURES = ["engine_slider_crank", "offset_slider_crank", "quick_return_slotted_lever", "ratchet_crank_rocker",
+            "scotch_yoke", "shaper_six_bar", "slider_driven", "stephenson_six_bar", "tangent_mechanism_prp"]
+# The Scotch yoke's plan of positions at its own μl = 0.001 is 578 mm tall: more than any sheet holds.
+# Its sheets are built at μl = 0.002; that it does not fit at 0.001 is tested on its own.
+LENGTH_SCALE = {"scotch_yoke": 0.002}
+SVG = "{http://www.w3.org/2000/svg}"
+# Round-off allowed when a rectangle touches another (mm).
+EPS = 1e-6
+
+
+@pytest.fixture(scope="module")
+def analyses():
+    """Every fixture analysed once for the module."""
+    return {name: analyse(graphplan.load(f"fixtures/{name}.toml")) for name in FIXTURES}
+
+
+def with_scene(analysis, **changes):
+    """The analysis with its scene changed (locale, drawing): the sheets read nothing else of it."""
+    return dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, **changes))
+
+
+def drawable(analysis, name):
+    if name in LENGTH_SCALE:
+        drawing = dataclasses.replace(analysis.scene.drawing, length_scale=LENGTH_SCALE[name])
+        return with_scene(analysis, drawing=drawing)
+    return analysis
+
+
+@pytest.fixture(scope="module")
+def a1_sheets(analyses):
+    """Each fixture's sheets on A1, in the scene's own language."""
+    return {name: course_sheets(drawable(analysis, name), "A1", Details(author="A. Student"))
+            for name, analysis in analyses.items()}
+
+
+@pytest.fixture(scope="module")
+def ratchet_sheets(analyses):
+    """The ratchet's sheets in each language."""
+    ratchet = analyses["ratchet_crank_rocker"]
+    return {locale: course_sheets(with_scene(ratchet, locale=locale), "A1", Details(author="A. Student"))
+            for locale in ("en", "ru", "zh")}
+
+
+def texts(layers):
+    return [item for layer in layers for item in layer.items if isinstance(item, Text)]
+
+
+def layer(sheet, name):
+    return next(layer for layer in sheet.layers if layer.name == name)
+
+
+def placed_bounds(sheet):
+    """The bounds of each placed drawing, from the layers on the sheet that carry its name."""
+    names = sorted(sheet.panels, key=len, reverse=True)
+    members = {name: [] for name in names}
+    for item in sheet.layers:
+        owner = next((name for name in names if item.name.startswith(name + "-")), None)
+        if owner is not None:
+            members[owner].append(item)
+    assert all(members.values()), "a placed drawing has no layers on the sheet"
+    return {name: bounds(found) for name, found in members.items()}
+
+
+def view_box(root):
+    return [float(value) for value in re.split(r"[\s,]+", root.get("viewBox").strip())]
+
+
+def overlap(a, b):
+    return a[0] < b[2] - EPS and b[0] < a[2] - EPS and a[1] < b[3] - EPS and b[1] < a[3] - EPS
+
+
+def inside(inner, outer):
+    return (inner[0] >= outer[0] - EPS and inner[1] >= outer[1] - EPS and inner[2] <= outer[2] + EPS
+            and inner[3] <= outer[3] + EPS)
+
+
+# Every fixture on A1.
+
+@pytest.mark.parametrize("name", FIXTURES)
+def test_every_sheet_is_an_svg_of_the_format(a1_sheets, name):
+    for sheet in a1_sheets[name]:
+        root = ElementTree.fromstring(sheet.svg())
+        assert root.tag == f"{SVG}svg"
+        assert (root.get("width"), root.get("height")) == ("841mm", "594mm")
+        assert view_box(root) == [0, 0, 841, 594]
+        ids = [element.get("id") for element in root.iter() if element.get("id")]
+        assert len(ids) == len(set(ids)), "two elements of one sheet share an id"
+
+
+@pytest.mark.parametrize("name", FIXTURES)
+def test_every_word_stands_inside_the_frame(a1_sheets, name):
+    for sheet in a1_sheets[name]:
+        for text in texts(sheet.layers):
+            assert inside(text_extent(text), sheet.frame), f"sheet {sheet.number}: {text.text!r} outside the frame"
+
+
+@pytest.mark.parametrize("name", FIXTURES)
+def test_no_drawing_overlaps_another_or_the_title_block(a1_sheets, name):
+    for sheet in a1_sheets[name]:
+        drawn = placed_bounds(sheet)
+        block = bounds([layer(sheet, "title-block")])
+        assert inside(block, sheet.frame)
+        for panel, rect in drawn.items():
+            assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"
+            assert not overlap(rect, block), f"sheet {sheet.number}: {panel} covers the title block"
+        for (first, a), (second, b) in itertools.combinations(drawn.items(), 2):
+            assert not overlap(a, b), f"sheet {sheet.number}: {first} overlaps {second}"
+
+
+@pytest.mark.parametrize("name", FIXTURES)
+def test_sheets_are_numbered_as_one_set_kinematics_first(a1_sheets, analyses, name):
+    sheets = a1_sheets[name]
+    assert [sheet.number for sheet in sheets] == list(range(1, len(sheets) + 1))
+    assert {sheet.count for sheet in sheets} == {len(sheets)}
+    kinds = ["forces" if all(panel.startswith("forces-") for panel in sheet.panels) else "kinematics"
+             for sheet in sheets]
+    assert kinds == sorted(kinds, key=lambda kind: kind == "forces")
+    has_forces = any(position.forces is not None for position in analyses[name].plans)
+    assert ("forces" in kinds) == has_forces
+    # Every plan position's drawings are somewhere on the sheets.
+    placed = {panel for sheet in sheets for panel in sheet.panels}
+    for position in analyses[name].plans:
+        assert any(panel == f"plan-{position.number}" or panel.startswith(f"plan-{position.number}-")
+                   for panel in placed)
+
+
+@pytest.mark.parametrize("name", FIXTURES)
+def test_the_title_block_carries_the_title_and_the_sheet_numbers(a1_sheets, analyses, name):
+    title_words = analyses[name].scene.title.split()
+    for sheet in a1_sheets[name]:
+        block = texts([layer(sheet, "title-block")])
+        written = " ".join(text.text for text in block)
+        assert all(word in written for word in title_words)
+        # The fixtures are in English: ISO 7200's sheet field reads "n of N".
+        if analyses[name].scene.locale == "en":
+            assert f"{sheet.number} of {sheet.count}" in [text.text for text in block]
+        assert "A. Student" in [text.text for text in block]
+
+
+def test_drawings_keep_their_scale_on_the_sheet(analyses):
+    """A vector of the velocity plan is as long on the sheet as in the plan sheet laid out alone."""
+    analysis = analyses["ratchet_crank_rocker"]
+    position = analysis.plans[0]
+    alone = plan_layout.arrange(plan_sheet(analysis, position.index, position.velocity, position.acceleration))
+    lengths = {item.key: item.length for layer in alone.layers for item in layer.items
+               if isinstance(item, Arrow) and item.key}
+    assert lengths
+    sheets = course_sheets(analysis, "A1")
+    on_sheet = {item.key: item.length for sheet in sheets for layer in sheet.layers for item in layer.items
+                if isinstance(item, Arrow) and item.key.startswith(f"plan-{position.number}-")}
+    for key, length in lengths.items():
+        assert on_sheet[f"plan-{position.number}-{key}"] == pytest.approx(length, abs=1e-9)
+
+
+# The three standards.
+
+# Frame margins (left, bottom, right, top) on A1 and the title block's size, as the standards give them:
+# GOST 2.104 (20 for binding, 5) with form 1 185 × 55; GB/T 14689 (a = 25, c = 10 on A1) with
+# GB/T 10609.1's 180 × 56; ISO 5457 (20, 10) with an ISO 7200 block 180 mm wide.
+STANDARD_FRAMES = {"ru": ((20, 5, 5, 5), (185, 55)), "zh": ((25, 10, 10, 10), (180, 56)),
+                   "en": ((20, 10, 10, 10), (180, None))}
+# The field labels each standard prints (GOST 2.104 form 1, GB/T 10609.1, ISO 7200).
+STANDARD_LABELS = {
+    "ru": ["Изм.", "Лист", "№ докум.", "Подп.", "Дата", "Разраб.", "Пров.", "Т.контр.", "Н.контр.", "Утв.", "Лит.",
+           "Масса", "Масштаб", "Листов"],
+    "zh": ["标记", "处数", "分区", "更改文件号", "签名", "年、月、日", "设计", "审核", "工艺", "批准", "标准化",
+           "阶段标记", "重量", "比例"],
+    "en": ["Title", "Identification number", "Sheet", "Scale", "Created by", "Approved by", "Document type",
+           "Date of issue", "Legal owner"],
+}
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh", "en"])
+def test_frame_and_title_block_follow_the_standard(ratchet_sheets, locale):
+    (left, bottom, right, top), (width, height) = STANDARD_FRAMES[locale]
+    for sheet in ratchet_sheets[locale]:
+        assert sheet.frame == pytest.approx((left, bottom, 841 - right, 594 - top))
+        block = bounds([layer(sheet, "title-block")])
+        # The block stands in the frame's lower right corner.
+        assert block[2] == pytest.approx(sheet.frame[2]) and block[1] == pytest.approx(sheet.frame[1])
+        assert block[2] - block[0] == pytest.approx(width)
+        if height is not None:
+            assert block[3] - block[1] == pytest.approx(height)
+        else:  # ISO 7200 leaves the height free
+            assert 20 <= block[3] - block[1] <= 60
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh", "en"])
+def test_title_block_prints_the_labels_of_its_standard(ratchet_sheets, locale):
+    for sheet in ratchet_sheets[locale]:
+        written = [text.text for text in texts([layer(sheet, "title-block")])]
+        missing = [label for label in STANDARD_LABELS[locale] if label not in written]
+        assert not missing
+
+
+def test_eskd_form_1_has_the_columns_of_the_standard(ratchet_sheets):
+    """GOST 2.104 form 1: 7, 10, 23, 15, 10 | 70 | Лит. 3 × 5, Масса 17, Масштаб 18; Лист 20, Листов 30."""
+    sheet = ratchet_sheets["ru"][0]
+    block = layer(sheet, "title-block")
+    left = bounds([block])[0]
+    verticals = {round(item.points[0][0] - left, 3) for item in block.items
+                 if isinstance(item, Polyline) and len(item.points) == 2 and item.points[0][0] == item.points[1][0]}
+    assert {7, 17, 40, 55, 65, 135, 140, 145, 150, 155, 167} <= verticals
+
+
+def test_sheet_numbers_in_the_eskd_and_gb_blocks(ratchet_sheets):
+    for sheet in ratchet_sheets["zh"]:
+        written = [text.text for text in texts([layer(sheet, "title-block")])]
+        assert f"共 {sheet.count} 张  第 {sheet.number} 张" in written
+    for sheet in ratchet_sheets["ru"]:
+        block = texts([layer(sheet, "title-block")])
+        label = next(text for text in block if text.text == "Лист" and text.anchor == "start")
+        count_label = next(text for text in block if text.text == "Листов")
+
+        assert right_of(block, label, count_label.at[0]) == [str(sheet.number)]
+        assert right_of(block, count_label, math.inf) == [str(sheet.count)]
+
+
+def right_of(block, anchor, limit):
+    """The texts on ``anchor``'s line right of it and left of ``limit``."""
+    return [text.text for text in block if abs(text.at[1] - anchor.at[1]) < 1.0
+            and anchor.at[0] < text.at[0] < limit and text is not anchor]
+
+
+@pytest.mark.parametrize("locale, drawing", [("en", "Kinematic analysis"), ("ru", "Кинематический анализ"),
+                                             ("zh", "运动分析")])
+def test_the_kind_of_drawing_is_named_in_the_language(ratchet_sheets, locale, drawing):
+    written = [text.text for text in texts([layer(ratchet_sheets[locale][0], "title-block")])]
+    assert drawing in written
+
+
+def test_force_sheets_name_their_position(ratchet_sheets):
+    numbers = [position.number for position in
+               analyse(graphplan.load("fixtures/ratchet_crank_rocker.toml")).plans]
+    force = [sheet for sheet in ratchet_sheets["ru"] if all(p.startswith("forces-") for p in sheet.panels)]
+    assert len(force) == len(numbers)
+    for sheet, number in zip(force, numbers, strict=True):
+        written = " ".join(text.text for text in texts([layer(sheet, "title-block")]))
+        assert f"Силовой анализ, положение {number}" in written
+
+
+@pytest.mark.parametrize("length_scale, form, expected", [
+    (0.0025, "eskd", "1:2.5"), (0.0025, "gb", "1:2.5"), (0.0025, "iso", "μl = 0.0025 m/mm"),
+    (0.001, "iso", "1:1"), (0.002, "iso", "1:2"), (0.0005, "eskd", "2:1"), (0.04, "eskd", "1:40"),
+    (0.003, "eskd", "μl = 0.003 m/mm"), (0.003, "gb", "1:3")])
+def test_scale_box_is_a_standard_ratio_or_the_scale_factor(length_scale, form, expected):
+    """GOST 2.302 has 1:2.5 and 1:40 but not 1:3; GB/T 14690 has 1:2.5 and 1:3; ISO 5455 neither."""
+    assert scale_text(length_scale, form, "μl = {value} m/mm") == expected
+
+
+def test_blank_fields_stay_drawn_and_a_long_title_stays_in_its_box():
+    drawing = [Layer("square", (Polyline(((0, 0), (100, 0), (100, 80), (0, 80)), closed=True),))]
+    # Eighty letters stay readable (1.8 mm is the smallest ESKD font); five hundred at least stay inside.
+    for title, least in (("Crank-rocker of the ratchet feed of a planing machine with an output dyad", 1.8),
+                         ("A very long title " * 30, 0.0)):
+        for locale in ("en", "ru", "zh"):
+            sheet, = kinematics_sheet([drawing], "A3", locale, title=title)
+            block = layer(sheet, "title-block")
+            box = bounds([block])
+            lines = [item for item in block.items if isinstance(item, Polyline)]
+            assert len(lines) >= 10  # the grid is drawn though nothing but the title is filled
+            written = texts([block])
+            assert " ".join(text.text for text in written if text.weight == "bold").split() == title.split()
+            for text in written:
+                assert inside(text_extent(text), box)
+                assert text.size >= least
+
+
+def test_a_panel_too_big_for_the_sheet_names_the_sheet_and_a_way_out(analyses):
+    yoke = analyses["scotch_yoke"]  # its plan of positions is 578 mm tall at μl = 0.001
+    with pytest.raises(SceneError) as error:
+        course_sheets(yoke, "A1")
+    assert error.value.where == "drawing.sheet"
+    assert "A1" in str(error.value) and '"none"' in str(error.value)
+    with pytest.raises(SceneError, match=r"choose A2 or a bigger sheet"):
+        course_sheets(analyses["ratchet_crank_rocker"], "A3")
+    with pytest.raises(SceneError, match=r"must be one of"):
+        course_sheets(analyses["ratchet_crank_rocker"], "B2")
+
+
+def test_panels_that_do_not_fit_one_sheet_spread_over_several():
+    """Six 300 × 200 mm drawings need two A1 sheets: four fit beside the title block on one."""
+    drawing = [Layer("box", (Polyline(((0, 0), (300, 0), (300, 200), (0, 200)), closed=True),))]
+    sheets = kinematics_sheet([drawing] * 6, "A1", "en", title="Boxes", first=3, count=9)
+    assert [sheet.number for sheet in sheets] == [3, 4]
+    assert [len(sheet.panels) for sheet in sheets] == [4, 2]
+    assert all(f"{sheet.number} of 9" in [t.text for t in texts(sheet.layers)] for sheet in sheets)
+
+
+def test_a4_stands_upright_when_that_fits_better():
+    tall = [Layer("tall", (Polyline(((0, 0), (150, 0), (150, 190), (0, 190)), closed=True),))]
+    wide = [Layer("wide", (Polyline(((0, 0), (230, 0), (230, 100), (0, 100)), closed=True),))]
+    assert kinematics_sheet([tall], "A4", "en")[0].size == (210.0, 297.0)
+    assert kinematics_sheet([wide], "A4", "en")[0].size == (297.0, 210.0)
+    # ESKD sets an A4 upright whenever the drawing fits that way.
+    small = [Layer("small", (Polyline(((0, 0), (100, 0), (100, 100), (0, 100)), closed=True),))]
+    assert kinematics_sheet([small], "A4", "ru")[0].size == (210.0, 297.0)
+
+
+def test_a_panel_too_big_whole_goes_part_by_part_on_sheets_of_its_own(analyses):
+    """A2 holds the quick-return mechanism's plan sheet of position 11 only as its three drawings apart."""
+    analysis = analyses["quick_return_slotted_lever"]
+    sheets = kinematics_sheet(kinematics_panels(analysis), "A2", "en", title=analysis.scene.title)
+    own = [sheet for sheet in sheets if any(panel.startswith("plan-11-") for panel in sheet.panels)]
+    assert own
+    for sheet in own:
+        assert all(panel.startswith("plan-11-") for panel in sheet.panels)
+        written = [text.text for text in texts([layer(sheet, "title-block")])]
+        assert "Velocity and acceleration plans, position 11" in written
+    parts = {panel for sheet in own for panel in sheet.panels}
+    assert parts == {"plan-11-mechanism", "plan-11-velocity", "plan-11-acceleration"}
+    # A drawing set apart keeps its caption just under it.
+    for sheet in own:
+        for item in sheet.layers:
+            if item.name.endswith("-caption"):
+                owner = item.name[:-len("-caption")]
+                drawing = bounds_of(x for other in sheet.layers if other.name.startswith(owner + "-")
+                                    and other is not item for x in other.items)
+                assert 0 < drawing[1] - item.items[0].at[1] <= plan_layout.CAPTION_GAP_MM + 1e-9
+
+
+def test_forces_sheet_and_extra_panels_as_layers(analyses):
+    """Raw layers (a kinematic diagram, say) are panels too; forces_sheet places what it is given."""
+    diagram = [Layer("curve", (Polyline(((0, 0), (120, 40), (240, 0))), Text((120, -8), "s(φ)")))]
+    sheets = forces_sheet([diagram, diagram], "A3", "zh", title="图")
+    assert len(sheets) == 1 and set(sheets[0].panels) == {"panel-1", "panel-2"}
+    written = [text.text for text in texts([layer(sheets[0], "title-block")])]
+    assert "力分析" in written and "共 1 张  第 1 张" in written
+    panel = Panel("diagram", tuple(diagram))
+    sheets = course_sheets(analyses["engine_slider_crank"], "A1", diagrams=[panel])
+    assert any("diagram" in sheet.panels for sheet in sheets)
+
+
+def test_no_sheet_gives_the_drawings_unframed(analyses):
+    sheets = course_sheets(analyses["ratchet_crank_rocker"], "none")
+    assert [next(iter(sheet.panels)) for sheet in sheets] == ["positions", "plan-5", "plan-11", "forces-5",
+                                                              "forces-11"]
+    for sheet in sheets:
+        assert sheet.size is None and sheet.frame is None
+        assert not any(item.name == "title-block" for item in sheet.layers)
+        ElementTree.fromstring(sheet.svg())
+
+
+def test_sheet_svg_pages_and_determinism(ratchet_sheets):
+    layers = ratchet_sheets["en"][0].layers
+    assert view_box(ElementTree.fromstring(sheet_svg(layers, "A3"))) == [0, 0, 420, 297]
+    assert view_box(ElementTree.fromstring(sheet_svg(layers, (210.0, 297.0)))) == [0, 0, 210, 297]
+    assert sheet_svg(layers, "A1") == ratchet_sheets["en"][0].svg()
+    with pytest.raises(SceneError):
+        sheet_svg(layers, "A0")
+
+
+def test_a_sheet_renders(ratchet_sheets):
+    png = cairosvg.svg2png(bytestring=ratchet_sheets["zh"][0].svg().encode(), output_width=400)
+    assert png.startswith(b"\x89PNG")
+
+
+def test_every_language_has_every_title_block_string():
+    keys = {locale: set(words) for locale, words in TITLE_BLOCK_STRINGS.items()}
+    assert keys["ru"] == keys["en"] == keys["zh"]
