@@ -22,6 +22,9 @@ from ..rotor_balancing import BalancingResult, CorrectionPlane
 from ..scales import format_scale, standard_scale
 from .labels import Anchor, Placement, obstacles_of, place_labels
 from .plans import CAPTION_GAP_MM, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
+from .primitives import text_span as _width
+from .primitives import to_complex as _c
+from .primitives import to_xy as _xy
 from .primitives import (
     Arrow,
     Layer,
@@ -33,7 +36,6 @@ from .primitives import (
     curved_arrow,
     dot_marker,
     moved_layers,
-    text_extent,
 )
 from .svg import to_svg
 
@@ -191,17 +193,7 @@ def _id(name: str) -> str:
     return "".join(c if c.isalnum() else "_" for c in name)
 
 
-def _width(text: Text) -> float:
-    x0, _, x1, _ = text_extent(text)
-    return x1 - x0
 
-
-def _c(point: tuple[float, float]) -> complex:
-    return complex(point[0], point[1])
-
-
-def _xy(value: complex) -> tuple[float, float]:
-    return (value.real, value.imag)
 
 
 __all__ = ["TEXT", "balancing_svg", "layout", "polygon_scale"]

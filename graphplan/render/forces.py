@@ -44,6 +44,9 @@ from .labels import Anchor, Placement, obstacles_of, open_direction, place_label
 from .linkage import outline_points
 from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
+from .primitives import text_span as _width
+from .primitives import to_complex as _c
+from .primitives import to_xy as _xy
 from .primitives import (
     MAIN,
     Arrow,
@@ -58,7 +61,6 @@ from .primitives import (
     moved_layers,
     pin,
     slider_block,
-    text_extent,
 )
 
 # The longest force arrow on a group cut free and on the lever (mm): the panel's force scale is the
@@ -807,17 +809,7 @@ def _paper(length_scale: float) -> Callable[[complex], tuple[float, float]]:
     return paper
 
 
-def _width(text: Text) -> float:
-    x0, _, x1, _ = text_extent(text)
-    return x1 - x0
 
-
-def _c(point: tuple[float, float]) -> complex:
-    return complex(point[0], point[1])
-
-
-def _xy(value: complex) -> tuple[float, float]:
-    return (value.real, value.imag)
 
 
 def _angle(value: complex) -> float:

@@ -29,6 +29,8 @@ from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan
 from .labels import Anchor, obstacles_of, open_direction, place_labels
 from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
+from .primitives import text_span as _width
+from .primitives import to_xy as _xy
 from .primitives import (
     Arrow,
     Layer,
@@ -40,7 +42,6 @@ from .primitives import (
     curved_arrow,
     dot_marker,
     moved_layers,
-    text_extent,
 )
 
 # A vector shorter than this on the paper (mm) is not drawn, and plan points closer than this share
@@ -386,13 +387,6 @@ def _caption(lines: tuple[str, ...], at: tuple[float, float]) -> tuple[Text, ...
                       weight="bold" if k == 0 else "normal") for k, line in enumerate(lines))
 
 
-def _width(text: Text) -> float:
-    x0, _, x1, _ = text_extent(text)
-    return x1 - x0
-
-
-def _xy(value: complex) -> tuple[float, float]:
-    return (value.real, value.imag)
 
 
 def _key(*parts: str) -> str:

@@ -225,6 +225,22 @@ def text_extent(text: Text) -> tuple[float, float, float, float]:
     return (x0, text.at[1] - 0.3 * text.size, x0 + width, text.at[1] + 1.15 * text.size)
 
 
+def text_span(text: Text) -> float:
+    """How wide a text's box is on the paper (mm)."""
+    x0, _, x1, _ = text_extent(text)
+    return x1 - x0
+
+
+def to_complex(point: Point) -> complex:
+    """A paper point (x, y) as x + iy, for arithmetic on it."""
+    return complex(point[0], point[1])
+
+
+def to_xy(value: complex) -> Point:
+    """x + iy as the paper point (x, y)."""
+    return (value.real, value.imag)
+
+
 def bounds(layers: Sequence[Layer]) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of every primitive, text by its estimated extent."""
     return bounds_of(item for layer in layers for item in layer.items)
