@@ -30,7 +30,6 @@ torque diagram over the crank angle, given as steps, as piecewise-linear vertice
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
