@@ -26,57 +26,13 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from test_scene_errors import to_toml
 
 from graphplan.cli import main
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 BASE = tomllib.loads(FIXTURE.read_text(encoding="utf-8"))
 PROGRESS = re.compile(r"^graphplan: [a-z ,]+ \(\d+\.\d s\)$")   # cli.Progress lines of a run past a second
-
-
-# --- a small TOML writer (inline tables; enough for scenes) ---------------------------------------
-
-def _value(value) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):
-        if math.isnan(value):
-            return "nan"
-        if math.isinf(value):
-            return "inf" if value > 0 else "-inf"
-        return repr(value)
-    if isinstance(value, str):
-        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    if isinstance(value, list):
-        return "[" + ", ".join(_value(v) for v in value) + "]"
-    if isinstance(value, dict):
-        return "{ " + ", ".join(f"{_key(k)} = {_value(v)}" for k, v in value.items()) + " }"
-    raise TypeError(type(value))
-
-
-def _key(key: str) -> str:
-    return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else _value(key)
-
-
-def to_toml(document: dict) -> str:
-    """Top-level tables as [sections]; arrays of tables as [[sections]]; everything deeper inline."""
-    lines = [f"{_key(k)} = {_value(v)}" for k, v in document.items()
-             if not isinstance(v, dict) and not (isinstance(v, list) and v and all(isinstance(i, dict) for i in v))]
-    for key, value in document.items():
-        if isinstance(value, dict):
-            lines.append(f"[{_key(key)}]")
-            lines += [f"{_key(k)} = {_value(v)}" for k, v in value.items()]
-        elif isinstance(value, list) and value and all(isinstance(i, dict) for i in value):
-            for item in value:
-                lines.append(f"[[{_key(key)}]]")
-                lines += [f"{_key(k)} = {_value(v)}" for k, v in item.items()]
-    return "\n".join(lines) + "\n"
-
-
-def test_the_writer_gives_back_the_fixture():
-    assert tomllib.loads(to_toml(BASE)) == BASE
 
 
 # --- key paths as graphplan writes them -------------------------------------------------------------
