@@ -20,7 +20,7 @@ from .kinematics import at
 from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .mechanism import Mechanism, build
-from .motion import Motion, PositionWarning, solve
+from .motion import Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
 from .positions import PositionSet, make_positions
 from .scene import Scene
@@ -86,6 +86,7 @@ def analyse(scene: Scene) -> Analysis:
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
     paths = solve(mechanism, sweep, positions.reference, tolerant=True)
+    stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
     friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()
     plans, warnings = _plans(mechanism, positions, motion, acting, friction)
@@ -95,7 +96,8 @@ def analyse(scene: Scene) -> Analysis:
         balance = equilibrium(mechanism, motion, loads)
         if friction:
             with_friction = equilibrium(mechanism, motion, loads, friction)
-    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, motion.warnings + warnings,
+    in_order = tuple(sorted(motion.warnings + stepped_over, key=lambda warning: warning.position))
+    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, in_order + warnings,
                     loads, balance, with_friction)
 
 

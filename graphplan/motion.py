@@ -37,6 +37,11 @@ ILL_CONDITIONED_DEG = 1.0
 
 _STILL = 0j
 
+# How a group's closest approach to a toggle between two samples of the dense sweep is found: each
+# round solves this many points across the bracket round the least sine and keeps the two beside
+# the least, so ten rounds narrow a 1° bracket to about 1e-9 rad.
+_ZOOM_ROUNDS, _ZOOM_POINTS = 10, 17
+
 
 @dataclass(frozen=True)
 class PositionWarning:
@@ -282,3 +287,72 @@ def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Posi
             warnings.append(PositionWarning(int(index), "ill-conditioned",
                                     f"lines of action at {angle:.3g}° in group {label} (condition number {1.0 / max(float(sine[index]), 1e-300):.3g})"))
     return tuple(sorted(warnings, key=lambda w: w.position))
+
+
+def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Reference,
+                    sweep: Motion) -> tuple[PositionWarning, ...]:
+    """A warning at each analysed position after which a group passes a toggle before the next one.
+
+    Between two regular positions a group's lines of action can come within ILL_CONDITIONED_DEG of
+    parallel, unseen by either position.  There the real mechanism may go on in the other assembly
+    (a change-point linkage turns from parallelogram to anti-parallelogram) while the solver keeps
+    the branch it chose, so every later position would be of another mechanism.  ``sweep`` is the
+    motion over the driver's whole range (the paths), solved with ``reference``; each local least
+    sine in it is narrowed by a zoom to where the group comes closest to the toggle.  A toggle
+    within a sample of an analysed position that is itself ill-conditioned is that position's,
+    and already warned of.
+    """
+    mechanism, values = analysed.mechanism, analysed.driver
+    limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
+    x = sweep.driver
+    span = float(x[-1] - x[0])
+    cyclic = mechanism.driver.kind == "crank"
+    brackets, labels = [], []
+    for label, sine in sweep.conditioning.items():
+        sine = np.nan_to_num(sine, nan=0.0)
+        # A crank's sweep closes on itself: its first and last samples are one position.
+        inner = np.arange(0 if cyclic else 1, len(x) - 1)
+        before = sine[inner - 1] if not cyclic else np.roll(sine[:-1], 1)[inner]
+        least = inner[(sine[inner] <= before) & (sine[inner] <= sine[inner + 1])]
+        for i in least:
+            low = x[i - 1] if i > 0 else x[0] - (x[1] - x[0])
+            brackets.append((float(low), float(x[i + 1])))
+            labels.append(label)
+    if not brackets:
+        return ()
+    low, high = np.array(brackets).T
+    for _ in range(_ZOOM_ROUNDS):
+        grid = np.linspace(low, high, _ZOOM_POINTS, axis=1)
+        found = solve(mechanism, grid.ravel(), reference, tolerant=True).conditioning
+        sine = np.nan_to_num(np.array([found[label].reshape(grid.shape)[k] for k, label in enumerate(labels)]), nan=0.0)
+        best = np.argmin(sine, axis=1)
+        rows = np.arange(len(labels))
+        low = grid[rows, np.maximum(best - 1, 0)]
+        high = grid[rows, np.minimum(best + 1, _ZOOM_POINTS - 1)]
+    closest = sine[rows, best]
+    where = grid[rows, best]
+    # Where the analysed positions lie along the sweep (0 at its start, 1 at its end).
+    ends = (np.asarray(values, dtype=float) - x[0]) / span
+    if cyclic:
+        ends = np.append(ends, 1.0)
+    sample = abs(float(x[1] - x[0]) / span)
+    warnings = []
+    for label, sine_, at_ in zip(labels, closest, where, strict=True):
+        if sine_ >= limit:
+            continue
+        along = ((at_ - x[0]) / span) % 1.0 if cyclic else (at_ - x[0]) / span
+        after = int(np.searchsorted(ends, along)) - 1
+        if after < 0 or after >= len(values) - (0 if cyclic else 1):
+            continue  # beyond the analysed positions: no position after it can be on the wrong branch
+        following = (after + 1) % len(values)
+        own = np.nan_to_num(analysed.conditioning[label], nan=0.0)
+        if any(own[position] < limit and abs(ends[place] - along) <= sample
+               for position, place in ((after, after), (following, after + 1))):
+            continue
+        angle = math.degrees(math.asin(min(1.0, float(sine_))))
+        warnings.append(PositionWarning(after, "toggle-between",
+                                        f"between positions {numbers[after]} and {numbers[following]} the lines of action "
+                                        f"of group {label} come within {angle:.3g}° of parallel "
+                                        f"({mechanism.driver.describe(float(at_))}): the real mechanism may change "
+                                        f"assembly there, while the positions after it keep the assembly of the first"))
+    return tuple(warnings)

@@ -12,9 +12,11 @@ must be warned of; results.json never holds a NaN.
 from __future__ import annotations
 
 import json
+import re
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import graphplan
@@ -35,17 +37,6 @@ REFUSED = {
     "joint_through_pivot": "B cannot be assembled at φ = 0° in group II(3,4): A and C coincide",
 }
 SOLVED = [path for path in EXTREME if path.stem not in REFUSED]
-
-# Known faults of graphplan that these scenes expose (see the lead's report).
-STEPPED_OVER_TOGGLE = ("a change-point linkage whose positions step over its uncertainty position turns from "
-                       "parallelogram to anti-parallelogram between two positions (ω4 from 10 to −4.3 rad/s) "
-                       "with no warning")
-
-
-def _param(path: Path, failing: dict[str, str]):
-    reason = failing.get(path.stem)
-    marks = [pytest.mark.xfail(strict=True, reason=reason)] if reason else []
-    return pytest.param(path, id=path.stem, marks=marks)
 
 
 @pytest.fixture(scope="module")
@@ -72,14 +63,14 @@ def test_results_json_holds_no_nan(path):
     assert len(document["positions"]) == 12
 
 
-@pytest.mark.parametrize("path", [_param(p, {}) for p in SOLVED])
+@pytest.mark.parametrize("path", SOLVED, ids=[p.stem for p in SOLVED])
 def test_every_position_is_within_its_bound_or_warned(studies, path):
     report = study(studies, path)
     silent = [(row.number, row.verdict) for row in report.rows if "SILENT" in row.verdict]
     assert not silent, silent
 
 
-@pytest.mark.parametrize("path", [_param(p, {"change_point": STEPPED_OVER_TOGGLE}) for p in SOLVED])
+@pytest.mark.parametrize("path", SOLVED, ids=[p.stem for p in SOLVED])
 def test_a_toggle_between_two_positions_is_warned_of(studies, path):
     report = study(studies, path)
     silent = [(p.after, p.before, p.at) for p in report.passages if not p.warned]
@@ -105,6 +96,30 @@ def test_near_toggles_are_warned_with_their_condition_number():
         for detail in seventh:
             if "group" in detail and "condition number" in detail:
                 assert f"{angle:.3g}°" in detail, detail
+
+
+@pytest.mark.parametrize("start", [7.0, 15.0, 22.0])
+def test_a_stepped_over_change_point_is_warned_at_the_position_before_it(start):
+    """s + l = p + q with the frame and coupler equal: all four links are in line at φ = 0° and 180° exactly."""
+    text = (BENCH / "extreme" / "change_point.toml").read_text(encoding="utf-8").replace("start = 15.0", f"start = {start}")
+    analysis = analyse(graphplan.scene.loads(text))
+    stepped = [w for w in analysis.warnings if w.code == "toggle-between"]
+    step = 30.0
+    before_180, before_360 = int((180.0 - start) // step), int((360.0 - start) // step)
+    assert [w.position for w in stepped] == [before_180, before_360]
+    for warning, toggle in zip(stepped, (180.0, 360.0), strict=True):
+        first, second = warning.position + 1, (warning.position + 1) % 12 + 1
+        assert warning.detail.startswith(f"between positions {first} and {second} ")
+        angle = float(re.search(r"φ = (-?[0-9.]+)°", warning.detail).group(1))
+        assert abs(angle % 360.0 - toggle % 360.0) < 1e-3 or abs(angle - toggle) < 1e-3, warning.detail
+
+
+def test_no_toggle_is_invented_where_the_transmission_angle_stays_wide():
+    """The ratchet's crank-rocker keeps its transmission angle far from 0° and 180° all round."""
+    analysis = analyse(graphplan.load(Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"))
+    sines = np.concatenate([np.abs(s) for s in analysis.paths.conditioning.values()])
+    assert sines.min() > 0.2  # the independent fact the absence of warnings rests on
+    assert not [w for w in analysis.warnings if w.code == "toggle-between"]
 
 
 def test_positions_exactly_at_the_change_point_are_warned_of(studies):
