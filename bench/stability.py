@@ -4,7 +4,7 @@
 
 Each scene of ``bench/extreme/`` is run as ``graphplan run`` runs it (:func:`graphplan.analysis.analyse`),
 then, at every position that is not singular, the analytic solution and the plans constructed there
-are compared with the 50-digit reference (``bench/reference.py``).  The error of a position is
+are compared with the 50-digit reference (``graphplan/reference.py``).  The error of a position is
 normwise: the largest difference over all points' velocities and all links' ω·L (L the size of the
 mechanism at that position), over the largest of the same reference values; the same for
 accelerations (a, ε·L).  The condition number is graphplan's own: κ = 1/sin θ with θ the angle at
@@ -27,16 +27,14 @@ from pathlib import Path
 
 import numpy as np
 
+import graphplan
+from graphplan import reference
+from graphplan.analysis import analyse, instant
+from graphplan.errors import GraphplanError
+from graphplan.geometry import ParallelLinesError
+from graphplan.plans import acceleration_plan, velocity_plan
+
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
-
-import reference  # noqa: E402
-
-import graphplan  # noqa: E402
-from graphplan.analysis import analyse, instant  # noqa: E402
-from graphplan.errors import GraphplanError  # noqa: E402
-from graphplan.geometry import ParallelLinesError  # noqa: E402
-from graphplan.plans import acceleration_plan, velocity_plan  # noqa: E402
 
 EXTREME = HERE / "extreme"
 RESULTS = HERE / "results"
@@ -231,7 +229,7 @@ def study(path: Path) -> SceneReport:
     for i in regular:
         try:
             exact[i] = reference.solve_reference(scene, analysis.positions.values[i:i + 1]).instants[0]
-        except reference.ReferenceError as error:
+        except reference.ReferenceSolutionError as error:
             exact[i] = error
     sines = np.min(np.array([np.abs(c) for c in motion.conditioning.values()]), axis=0) if motion.conditioning else np.ones(motion.count)
     for i in range(motion.count):
@@ -241,7 +239,7 @@ def study(path: Path) -> SceneReport:
             report.rows.append(PositionRow(int(numbers[i]), described, math.inf, math.nan, math.nan, warnings=warned, singular=True))
             continue
         instant_ = exact[i]
-        if isinstance(instant_, reference.ReferenceError):
+        if isinstance(instant_, reference.ReferenceSolutionError):
             # The exact geometry of the scene's numbers is singular here: no velocity exists to compare with.
             report.rows.append(PositionRow(int(numbers[i]), described, 1.0 / float(sines[i]), math.nan, math.nan,
                                            warnings=warned, singular=False, exact_singular=True))

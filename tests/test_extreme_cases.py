@@ -1,6 +1,6 @@
 """Stiff and extreme scenes (bench/extreme/): each answer is accurate, or warned of, or refused with one clear error.
 
-Accuracy is judged against the 50-digit reference of bench/reference.py, through the same study
+Accuracy is judged against the 50-digit reference of graphplan/reference.py, through the same study
 that writes bench/results/stability.md (bench/stability.py): at every position the normwise error of
 the analytic velocities must be within 64·κ·ε (accelerations 64·κ²·ε), κ the condition number
 graphplan computed there (1/sin of the angle between a group's lines of action); the plans as

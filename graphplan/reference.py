@@ -41,6 +41,10 @@ from dataclasses import dataclass
 import numpy as np
 from mpmath import mp, mpc, mpf
 
+from .mechanism import build
+from .motion import reference_at, solve
+from .positions import make_positions
+
 DPS = 50
 
 
@@ -102,7 +106,8 @@ class Jet:
 
 def expi(theta: Jet) -> Jet:
     """e^{iθ} of a real angle jet: (iθ̇)·e^{iθ}, then (iθ̈ − θ̇²)·e^{iθ}."""
-    e = mp.expj(theta.d0)
+    # cos + i·sin rather than mp.expj, which raises ComplexResult on a real angle in mpmath 1.4.
+    e = mp.mpc(mp.cos(theta.d0), mp.sin(theta.d0))
     return Jet(e, 1j * theta.d1 * e, (1j * theta.d2 - theta.d1 ** 2) * e)
 
 
@@ -175,7 +180,7 @@ class ReferenceMotion:
         return tuple(self.instants[0].links)
 
 
-class ReferenceError(ArithmeticError):
+class ReferenceSolutionError(ArithmeticError):
     """A position where the 50-digit solution does not exist (no assembly) or is not unique (a toggle)."""
 
 
@@ -303,11 +308,11 @@ def _solve_group(group, scene, points, angles, guess) -> tuple[tuple[Jet, Jet], 
         # Near a toggle the root is nearly double and Newton slows to halving its error each step.
         root = mp.findroot(f, guess, solver="mdnewton", J=jacobian, maxsteps=400)
     except (ValueError, ZeroDivisionError) as error:
-        raise ReferenceError(f"group {group.label}: no 50-digit position ({error})") from None
+        raise ReferenceSolutionError(f"group {group.label}: no 50-digit position ({error})") from None
     q0 = (root[0], root[1])
     J = jacobian(*q0)
     if abs(mp.det(J)) < mp.mpf(10) ** (-(DPS - 10)):
-        raise ReferenceError(f"group {group.label}: the closure's Jacobian is singular (a toggle)")
+        raise ReferenceSolutionError(f"group {group.label}: the closure's Jacobian is singular (a toggle)")
     first = moving(Jet(q0[0]), Jet(q0[1])).d1
     q1 = mp.lu_solve(J, -mp.matrix([mp.re(first), mp.im(first)]))
     second = moving(Jet(q0[0], q1[0]), Jet(q0[1], q1[1])).d2
@@ -378,12 +383,9 @@ def solve_reference(scene, values: Sequence[float] | np.ndarray) -> ReferenceMot
 
     Raises
     ------
-    ReferenceError
+    ReferenceSolutionError
         at a position that does not assemble or whose Jacobian is singular.
     """
-    from graphplan.mechanism import build
-    from graphplan.motion import reference_at, solve
-
     mechanism = build(scene)
     values = np.atleast_1d(np.asarray(values, dtype=float))
     start = _start(mechanism)
@@ -400,16 +402,11 @@ def solve_reference(scene, values: Sequence[float] | np.ndarray) -> ReferenceMot
 
 def _start(mechanism) -> float:
     """Where the scene's branches are chosen: its first position (as ``[positions]`` places it)."""
-    from graphplan.positions import make_positions
-
     return float(make_positions(mechanism).values[0])
 
 
 def scene_positions(scene) -> np.ndarray:
     """The scene's own driver positions."""
-    from graphplan.mechanism import build
-    from graphplan.positions import make_positions
-
     return make_positions(build(scene)).values
 
 
@@ -442,22 +439,3 @@ def relative_difference(reference: ReferenceMotion, motion, names: Sequence[str]
             scale = float(np.max(np.abs(exact))) or 1.0
             out[kind] = float(np.max(np.abs(got - exact))) / scale
     return out
-
-
-if __name__ == "__main__":  # a quick look: python bench/reference.py fixtures/ratchet_crank_rocker.toml
-    import sys
-    import time
-    from pathlib import Path
-
-    import graphplan
-
-    fixtures = Path(__file__).resolve().parent.parent / "fixtures"
-    for path in sys.argv[1:] or sorted(str(p) for p in fixtures.glob("*.toml")):
-        scene = graphplan.load(path)
-        values = scene_positions(scene)
-        started = time.perf_counter()
-        reference = solve_reference(scene, values)
-        took = time.perf_counter() - started
-        motion = graphplan.solve(scene, driver=values)
-        print(f"{path}: {len(values)} positions in {took:.2f} s; residuals {worst_residual(reference)}; "
-              f"graphplan vs reference {relative_difference(reference, motion)}")
