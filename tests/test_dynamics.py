@@ -392,7 +392,7 @@ def test_dynamics_sheet_renders_the_same_every_time():
     svg = dynamics_svg(model, flywheel)
     assert svg == dynamics_svg(model, flywheel)
     assert cairosvg.svg2png(bytestring=svg.encode())[:8] == b"\x89PNG\r\n\x1a\n"
-    translated = dynamics_svg(model, flywheel, {"title": "Динамика машины"})
+    translated = dynamics_svg(model, flywheel, {"dyn_title": "Динамика машины"})
     assert "Динамика машины" in translated
 
 

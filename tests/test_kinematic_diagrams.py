@@ -31,6 +31,7 @@ from graphplan.kinematic_diagrams import (
     closed_chord_derivative,
     kinematic_diagrams,
 )
+from graphplan.locale import strings
 from graphplan.mechanism import build
 from graphplan.positions import make_positions
 from graphplan.render import diagrams
@@ -264,14 +265,15 @@ def test_no_two_texts_overlap(name):
 
 
 def test_every_text_key_is_used_and_words_come_from_the_mapping():
+    keys = {key for key in strings("en") if key.startswith("kd_")}
     shown = set()
     for name in ("engine_slider_crank", "ratchet_crank_rocker"):
-        marked = {key: f"<{key}>" for key in diagrams.DEFAULT_TEXT}
+        marked = {key: f"<{key}>" for key in keys}
         for layer in diagrams.layout(record(name)[2], marked):
             shown.update(re.findall(r"<(\w+)>", " ".join(i.text for i in layer.items if isinstance(i, Text))))
     # Symbols and units are written inside other strings, so a marker there hides its own.
-    nested = {key for key in diagrams.DEFAULT_TEXT if key.startswith(("kd_symbol_", "kd_unit_", "kd_per_mm"))}
-    assert shown | nested == set(diagrams.DEFAULT_TEXT)
+    nested = {key for key in keys if key.startswith(("kd_symbol_", "kd_unit_", "kd_per_mm"))}
+    assert shown | nested == keys
     russian = diagrams.diagrams_svg(record("ratchet_crank_rocker")[2], {"kd_title": "Кинематические диаграммы звена {link}"})
     assert "Кинематические диаграммы звена 4" in russian
 

@@ -353,7 +353,7 @@ def test_the_drawing_writes_its_scale_and_labels_that_do_not_overlap(shaft_resul
 
 def test_a_locale_replaces_the_strings():
     result = balance(BalancingSpec([RotatingMass(1, 0.1, 30)], correction_radius=0.1))
-    texts = [item.text for layer in drawing.layout(result, {"balancing_disc": "Плоскость коррекции {name}"})
+    texts = [item.text for layer in drawing.layout(result, {"bal_disc": "Плоскость коррекции {name}"})
              for item in layer.items if isinstance(item, Text)]
     assert "Плоскость коррекции b" in texts
 

@@ -21,6 +21,7 @@ import pytest
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.errors import SceneError
+from graphplan.locale import strings
 from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import plan_sheet
 from graphplan.render.primitives import Arrow, Layer, Polyline, Text, bounds, bounds_of, text_extent
@@ -33,7 +34,7 @@ from graphplan.render.sheet import (
     kinematics_sheet,
     sheet_svg,
 )
-from graphplan.render.title_block import TITLE_BLOCK_STRINGS, scale_text
+from graphplan.render.title_block import labels, scale_text
 
 FIXTURES = ["engine_slider_crank", "offset_slider_crank", "quick_return_slotted_lever", "ratchet_crank_rocker",
             "scotch_yoke", "shaper_six_bar", "slider_driven", "stephenson_six_bar", "tangent_mechanism_prp"]
@@ -393,5 +394,8 @@ def test_a_sheet_renders(ratchet_sheets):
 
 
 def test_every_language_has_every_title_block_string():
-    keys = {locale: set(words) for locale, words in TITLE_BLOCK_STRINGS.items()}
-    assert keys["ru"] == keys["en"] == keys["zh"]
+    keys = {locale: {key for key in strings(locale) if key.startswith("tb_")} for locale in ("en", "ru", "zh")}
+    assert keys["en"] and keys["ru"] == keys["en"] == keys["zh"]
+    assert set(labels("ru")) == {key.removeprefix("tb_") for key in keys["en"]}
+    with pytest.raises(ValueError, match="no title block strings for locale 'xx'"):
+        labels("xx")

@@ -8,7 +8,9 @@ middle; then the closing vector, the correction mb·rb, drawn thicker in
 red from the last tip back to the pole, with its angle θ measured from a
 dashed x-direction at its tail.  Under each polygon its caption: the plane,
 its vector equation, the correction's product, angle and mass.  The layout
-reads the record and computes no mechanics.
+reads the record and computes no mechanics.  Every word and unit comes from
+``text``, the ``bal_`` keys of a locale (:func:`graphplan.locale.strings`);
+English when none is given.
 """
 
 from __future__ import annotations
@@ -18,13 +20,11 @@ from collections.abc import Mapping, Sequence
 
 from shapely.geometry import Point as ShapelyPoint
 
+from ..locale import strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane
 from ..scales import format_scale, standard_scale
 from .labels import Anchor, Placement, obstacles_of, place_labels
 from .plans import CAPTION_GAP_MM, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
-from .primitives import text_span as _width
-from .primitives import to_complex as _c
-from .primitives import to_xy as _xy
 from .primitives import (
     Arrow,
     Layer,
@@ -37,6 +37,9 @@ from .primitives import (
     dot_marker,
     moved_layers,
 )
+from .primitives import text_span as _width
+from .primitives import to_complex as _c
+from .primitives import to_xy as _xy
 from .svg import to_svg
 
 # The largest polygon is drawn at a standard scale that makes it at most this wide or tall (mm).
@@ -54,24 +57,13 @@ _CORRECTION = Stroke(0.8, "#a83a1f")
 _REFERENCE = Stroke(0.25, "#333333", (2.5, 1.5))
 _ANGLE = Stroke(0.3, "#a83a1f")
 
-#: The drawing's strings in English; a locale overrides any of them.
-TEXT: Mapping[str, str] = {
-    "balancing_title": "Balancing of rotating masses: polygons of mass-radius products",
-    "balancing_scale": "μ = {value} kg·m/mm",
-    "balancing_plane": "Correction plane {name}, z = {position} m",
-    "balancing_disc": "Correction plane {name}",
-    "balancing_correction": "{vector} = {value} kg·m, θ{name} = {angle}°",
-    "balancing_mass": "m{name} = {mass} kg at r{name} = {radius} m",
-}
-
-
 def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
     """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under."""
-    strings = {**TEXT, **(text or {})}
+    words = {**strings("en"), **(text or {})}
     scale = polygon_scale(result)
     layers: list[Layer] = []
     cursor = 0.0
-    panels = [_polygon(plane, scale, strings, result.spec.dynamic) for plane in result.planes]
+    panels = [_polygon(plane, scale, words, result.spec.dynamic) for plane in result.planes]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
         width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in caption))
@@ -84,8 +76,8 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
         cursor += width + GAP_MM
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     layers.append(Layer("balancing-title", (
-        Text((left, top + 8.0 + 1.6 * TITLE_SIZE), strings["balancing_title"], TITLE_SIZE, "start", weight="bold"),
-        Text((left, top + 8.0), strings["balancing_scale"].format(value=format_scale(scale)), CAPTION_SIZE, "start"))))
+        Text((left, top + 8.0 + 1.6 * TITLE_SIZE), words["bal_title"], TITLE_SIZE, "start", weight="bold"),
+        Text((left, top + 8.0), words["bal_scale"].format(value=format_scale(scale)), CAPTION_SIZE, "start"))))
     return layers
 
 
@@ -158,13 +150,13 @@ def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> 
 
 
 def _caption(plane: CorrectionPlane, text: Mapping[str, str], dynamic: bool) -> tuple[str, ...]:
-    title = (text["balancing_plane"].format(name=plane.name, position=_given(plane.position))
-             if dynamic else text["balancing_disc"].format(name=plane.name))
+    title = (text["bal_plane"].format(name=plane.name, position=_given(plane.position))
+             if dynamic else text["bal_disc"].format(name=plane.name))
     lines = [title, plane.equation,
-             text["balancing_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
+             text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
                                                  value=_number(plane.mass_radius), angle=f"{plane.angle_deg:.1f}")]
     if plane.mass is not None and plane.radius is not None:
-        lines.append(text["balancing_mass"].format(name=plane.name, mass=_number(plane.mass),
+        lines.append(text["bal_mass"].format(name=plane.name, mass=_number(plane.mass),
                                                    radius=_given(plane.radius)))
     return tuple(lines)
 
@@ -194,6 +186,4 @@ def _id(name: str) -> str:
 
 
 
-
-
-__all__ = ["TEXT", "balancing_svg", "layout", "polygon_scale"]
+__all__ = ["balancing_svg", "layout", "polygon_scale"]

@@ -10,8 +10,8 @@ the chord method strays from it.  The scales are written as the textbook
 writes them: μs, μv = μs/(μt·H1), μa = μv/(μt·H2), μφ = 2π/L and μt = μφ/ω.
 
 The layout reads a :class:`~graphplan.kinematic_diagrams.KinematicDiagrams`
-record and computes no mechanics.  Every word comes from ``text``; English
-defaults are in :data:`DEFAULT_TEXT`.
+record and computes no mechanics.  Every word comes from ``text``, the ``kd_``
+keys of a locale (:func:`graphplan.locale.strings`); English when none is given.
 """
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..kinematic_diagrams import KinematicDiagrams
+from ..locale import strings
 from ..scales import format_scale
 from .labels import Anchor, obstacles_of, place_labels
 from .primitives import (
@@ -37,40 +38,6 @@ from .primitives import (
     text_width,
 )
 from .svg import to_svg
-
-DEFAULT_TEXT: Mapping[str, str] = {
-    "kd_title": "Kinematic diagrams of the output link {link}",
-    "kd_displacement_title": "Displacement diagram {symbol}(φ)",
-    "kd_velocity_title": "Velocity diagram {symbol}(φ) by the chord method",
-    "kd_acceleration_title": "Acceleration diagram {symbol}(φ) by the chord method",
-    "kd_symbol_s_translating": "s{point}",
-    "kd_symbol_v_translating": "v{point}",
-    "kd_symbol_a_translating": "a{point}",
-    "kd_symbol_s_turning": "ψ{link}",
-    "kd_symbol_v_turning": "ω{link}",
-    "kd_symbol_a_turning": "ε{link}",
-    "kd_unit_s_translating": "m",
-    "kd_unit_v_translating": "m/s",
-    "kd_unit_a_translating": "m/s²",
-    "kd_unit_s_turning": "rad",
-    "kd_unit_v_turning": "rad/s",
-    "kd_unit_a_turning": "rad/s²",
-    "kd_per_mm": "{unit}/mm",
-    "kd_axis": "{symbol}, {unit}",
-    "kd_angle_axis": "φ",
-    "kd_displacement_scale": "μs = {value} {unit}",
-    "kd_velocity_scale": "μv = μs/(μt·H₁) = {value} {unit},  H₁ = {pole} mm",
-    "kd_acceleration_scale": "μa = μv/(μt·H₂) = {value} {unit},  H₂ = {pole} mm",
-    "kd_angle_scale": "μφ = 2π/L = {value} rad/mm ({degrees}°/mm),  L = {length} mm;  "
-                      "μt = μφ/|ω| = {time} s/mm,  |ω| = {omega} rad/s",
-    "kd_pole": "P",
-    "kd_pole_distance": "H",
-    "kd_analytic": "analytic",
-    "kd_chord": "chord method",
-    "kd_difference": "chord method − analytic: at most {value} % of the peak |{symbol}| = {peak} {unit}",
-    "kd_working_stroke": "working stroke, φw = {angle}°",
-    "kd_idle_stroke": "idle stroke, φi = {angle}°",
-}
 
 KINDS = ("displacement", "velocity", "acceleration")
 _LETTERS = {"displacement": "s", "velocity": "v", "acceleration": "a"}
@@ -103,7 +70,7 @@ def diagrams_svg(record: KinematicDiagrams, text: Mapping[str, str] | None = Non
 
 def layout(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> list[Layer]:
     """The three diagrams stacked, displacement on top, their φ axes one under another; paper mm, y up."""
-    words = {**DEFAULT_TEXT, **(text or {})}
+    words = {**strings("en"), **(text or {})}
     layers: list[Layer] = []
     top = 0.0
     for kind in KINDS:
@@ -243,11 +210,13 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
     """The legend (analytic, chord method) and the scales of the common φ axis, under the last diagram."""
     scales = record.scales
     y = top + GAP_MM - 8.0
+    # The second entry starts 60 mm in, or further when the first one's word is longer.
+    second = max(60.0, 14.0 + text_width(words["kd_analytic"], SCALE_SIZE) + 8.0)
     items: list[Primitive] = [
         Polyline(((0.0, y), (12.0, y)), _CURVE),
         Text((14.0, y - 1.2), words["kd_analytic"], SCALE_SIZE, "start"),
-        Polyline(((60.0, y), (72.0, y)), _CHORD), dot_marker((66.0, y), 0.55, _CHORD_COLOUR),
-        Text((74.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
+        Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
+        Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
         Text((0.0, y - 8.0), words["kd_angle_scale"].format(
             value=scale_text(scales.angle), degrees=f"{math.degrees(scales.angle):.4g}",
             length=f"{scales.axis_mm:g}", time=scale_text(scales.time), omega=f"{abs(record.omega):.4g}"),

@@ -10,7 +10,8 @@ as the textbook transfers it point by point.  The results of the flywheel are wr
 diagrams.
 
 The layout reads :class:`graphplan.dynamics.EquivalentModel` and :class:`graphplan.flywheel.Flywheel`
-and puts what they hold on paper; it computes no mechanics.
+and puts what they hold on paper; it computes no mechanics.  Every word, symbol and unit comes from
+``text``, the ``dyn_`` keys of a locale (:func:`graphplan.locale.strings`); English when none is given.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ import numpy as np
 
 from ..dynamics import EquivalentModel
 from ..flywheel import Flywheel, omega_to_rpm
+from ..locale import strings
 from ..scales import fit_scale, format_scale
 from .primitives import (
     THIN,
@@ -66,31 +68,6 @@ _CURVE = Stroke(0.5, "black")
 _TANGENT = Stroke(0.35, "#b22222")
 _GRID = Stroke(0.15, "#9a9a9a", (1.0, 1.0))
 
-#: The sheet's words, English; a caller passes its own locale's as ``text``.
-TEXT = {
-    "title": "Dynamics: the equivalent model and the flywheel",
-    "moments": "Reduced moments of the driving and resisting loads",
-    "works": "Works of the driving and resisting loads",
-    "energy": "Change of kinetic energy ΔT = Ad − Ar",
-    "energy_mass": "Energy–mass diagram ΔT(Je)",
-    "inertia": "Reduced moment of inertia Je(φ)",
-    "forces": "Reduced forces of the driving and resisting loads",
-    "mass": "Reduced mass me(s)",
-    "driving": "driving",
-    "resisting": "resisting",
-    "results": "Flywheel",
-    "delta": "δ = {delta}, ωm = {omega} rad/s ({rpm} rpm)",
-    "delta_w_max": "ΔWmax = {value} J (range of ΔT)",
-    "exact": "JF = ab·μT/(ωmax²/2 − ωmin²/2) = {value} kg·m² (energy–mass diagram)",
-    "approximate": "JF ≈ ΔWmax/(ωm²δ) − Je,mean = {value} kg·m²",
-    "mertsalov": "JF ≈ {value} kg·m² (Mertsalov: Jc = {constant} kg·m²)",
-    "moved": "on a shaft at {rpm} rpm: JF′ = JF·(n/n′)² = {value} kg·m²",
-    "omega_max": "ωmax = {value} rad/s at φ = {angle}° ({travel}° into the cycle)",
-    "omega_min": "ωmin = {value} rad/s at φ = {angle}° ({travel}° into the cycle)",
-    "no_flywheel": "JF ≤ 0: the machine keeps within δ without a flywheel",
-}
-
-
 @dataclass(frozen=True)
 class Scales:
     """Scale factors of the sheet: units per millimetre of paper."""
@@ -124,18 +101,23 @@ def dynamics_svg(model: EquivalentModel, flywheel: Flywheel | None = None,
 def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mapping[str, str] | None = None,
            scales: Scales | None = None) -> list[Layer]:
     """The layers of the dynamics sheet, in paper millimetres (y up)."""
-    words = {**TEXT, **(text or {})}
+    words = {**strings("en"), **(text or {})}
     scales = scales or scales_for(model)
     x = model.coordinate / scales.angle
-    moment_unit = _unit(model, "moment")
-    moments = _diagram(x, [(model.driving, _DRIVING, words["driving"]), (model.resisting, _RESISTING, words["resisting"])],
-                       scales.moment, model, "M" if model.turning else "F", moment_unit,
-                       f"μM = {format_scale(scales.moment)} {moment_unit}/mm",
-                       words["moments"] if model.turning else words["forces"], scales)
-    works = _diagram(x, [(model.driving_work, _DRIVING, "Ad"), (model.resisting_work, _RESISTING, "Ar")],
-                     scales.work, model, "A", "J", f"μA = {format_scale(scales.work)} J/mm", words["works"], scales)
-    energy = _diagram(x, [(model.energy, _CURVE, "")], scales.energy, model, "ΔT", "J",
-                      f"μT = {format_scale(scales.energy)} J/mm", words["energy"], scales)
+    # A slider driver has reduced forces (N) where a crank has reduced moments (N·m).
+    moment = ("moment", "moments") if model.turning else ("force", "forces")
+    moments = _diagram(x, [(model.driving, _DRIVING, words["dyn_driving"]),
+                           (model.resisting, _RESISTING, words["dyn_resisting"])],
+                       scales.moment, model, words[f"dyn_{moment[0]}_axis"],
+                       words[f"dyn_{moment[0]}_scale"].format(value=format_scale(scales.moment)),
+                       words[f"dyn_{moment[1]}"], scales, words)
+    works = _diagram(x, [(model.driving_work, _DRIVING, words["dyn_driving_work"]),
+                         (model.resisting_work, _RESISTING, words["dyn_resisting_work"])],
+                     scales.work, model, words["dyn_work_axis"],
+                     words["dyn_work_scale"].format(value=format_scale(scales.work)), words["dyn_works"], scales, words)
+    energy = _diagram(x, [(model.energy, _CURVE, "")], scales.energy, model, words["dyn_energy_axis"],
+                      words["dyn_energy_scale"].format(value=format_scale(scales.energy)), words["dyn_energy"], scales,
+                      words)
     layers: list[Layer] = []
     bottom = GAP_MM
     for name, items in (("moments", moments), ("works", works), ("energy", energy)):
@@ -152,15 +134,16 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
         layers.append(_layer("inertia", turned, right, low - GAP_MM - bounds_of(turned)[3]))
     else:
         mass_scale = fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM)
-        mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, "me", "kg",
-                        f"μm = {format_scale(mass_scale)} kg/mm", words["mass"], scales, floor=True)
+        mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, words["dyn_mass_axis"],
+                        words["dyn_mass_scale"].format(value=format_scale(mass_scale)), words["dyn_mass"], scales,
+                        words, floor=True)
         layers.append(_layer("inertia", mass, 0.0, bottom - GAP_MM - bounds_of(mass)[3]))
         left_bottom = bounds_of(layers[-1].items)[1]
     results = _results(model, flywheel, words)
     if results:
         layers.append(_layer("results", results, 0.0, left_bottom - GAP_MM - bounds_of(results)[3]))
     xmin, _, _, ymax = bounds(layers)
-    layers.append(Layer("title", (Text((xmin, ymax + 8.0), words["title"], TITLE, "start", weight="bold"),)))
+    layers.append(Layer("title", (Text((xmin, ymax + 8.0), words["dyn_title"], TITLE, "start", weight="bold"),)))
     return layers
 
 
@@ -168,19 +151,13 @@ def _layer(name: str, items: Sequence[Primitive], dx: float, dy: float) -> Layer
     return Layer(name, tuple(moved(item, dx, dy) for item in items))
 
 
-def _unit(model: EquivalentModel, kind: str) -> str:
-    if kind == "moment":
-        return "N·m" if model.turning else "N"
-    return "kg·m²" if model.turning else "kg"
-
-
 def _span(values: np.ndarray) -> float:
     """The height the values need with the abscissa among them."""
     return max(float(np.max(values)), 0.0) - min(float(np.min(values)), 0.0) or 1.0
 
 
-def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, symbol: str, unit: str, scale_text: str,
-             heading: str, scales: Scales, floor: bool = False) -> list[Primitive]:
+def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: str, scale_text: str,
+             heading: str, scales: Scales, words: Mapping[str, str], floor: bool = False) -> list[Primitive]:
     """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
 
     ``floor`` starts the ordinate at the smallest value rather than at zero (a reduced mass far from zero).
@@ -193,16 +170,17 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, symbol
     top_mm = (max(float(np.max(values)), base) - base) / scale
     bottom_mm = min(float(np.min(values)) - base, 0.0) / scale
     width = float(x[-1])
-    items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm)
-    items += _ordinate(0.0, bottom_mm, top_mm, scale, base, f"{symbol}, {unit}")
+    items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm, words)
+    items += _ordinate(0.0, bottom_mm, top_mm, scale, base, axis)
     for data, stroke, _ in curves:
         y = (np.asarray(data) - base) / scale
         items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
     scale_y = top_mm + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), heading, HEADING, "start", weight="bold"))
-    items.append(Text((0.0, scale_y), f"{scale_text}, {_angle_scale(model, scales)}", LABEL, "start"))
+    scale_line = f"{scale_text}, {_angle_scale(model, scales, words)}"
+    items.append(Text((0.0, scale_y), scale_line, LABEL, "start"))
     # The legend runs on along the scale's line, each curve's stroke before its name.
-    cursor = text_width(f"{scale_text}, {_angle_scale(model, scales)}", LABEL) + 8.0
+    cursor = text_width(scale_line, LABEL) + 8.0
     for _, stroke, name in curves:
         if not name:
             continue
@@ -212,7 +190,8 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, symbol
     return items
 
 
-def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: float, top_mm: float) -> list[Primitive]:
+def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: float, top_mm: float,
+              words: Mapping[str, str]) -> list[Primitive]:
     """The φ axis at y = 0 (its arrow past the cycle), with a thin grid and the ticks' values under the diagram."""
     items: list[Primitive] = [Arrow((0.0, 0.0), (width + AXIS_RUN_MM, 0.0), THIN, head=2.5)]
     if model.turning:
@@ -222,7 +201,7 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
         travel = float(model.coordinate[-1])
         step = _nice_step(travel / 5)
         ticks = [(v / scales.angle, _format(v)) for v in np.arange(0.0, travel * (1 + 1e-9), step)]
-        name = "s, m"
+        name = words["dyn_travel_axis"]
     for at, label in ticks:
         if at > 0:
             items.append(Polyline(((at, bottom_mm), (at, top_mm)), _GRID))
@@ -278,14 +257,15 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                 items.append(Text((1.2, letter_y), letter, LABEL, "start", _TANGENT.colour))
             top_mm, bottom_mm = max(top_mm, line[0][1], line[1][1]), min(bottom_mm, line[0][1], line[1][1])
         ab = (flywheel.upper.intercept - flywheel.lower.intercept) / scales.energy
-        items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), f"ab = {ab:.1f} mm", LABEL, "middle",
-                          _TANGENT.colour))
-    items += _ordinate(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, "ΔT, J")
+        items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), words["dyn_segment"].format(value=f"{ab:.1f}"),
+                          LABEL, "middle", _TANGENT.colour))
+    items += _ordinate(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
-    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), "Je", LABEL, "start"))
+    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_symbol"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
-    items.append(Text((0.0, scale_y + LABEL + 2.5), words["energy_mass"], HEADING, "start", weight="bold"))
-    items.append(Text((0.0, scale_y), f"μJ = {format_scale(scales.inertia)} kg·m²/mm, μT = {format_scale(scales.energy)} J/mm",
+    items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
+                                      f"{words['dyn_energy_scale'].format(value=format_scale(scales.energy))}",
                       LABEL, "start"))
     return items
 
@@ -309,40 +289,41 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
         at = value / scales.inertia
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
         items.append(Text((at, TICK_MM + 1.0), _format(value), LABEL, "middle"))
-    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), "Je, kg·m²", LABEL, "start"))
-    items.append(Text((width / 2 + 6.0, -length / 2), words["inertia"], HEADING, "start", weight="bold"))
+    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
+    items.append(Text((width / 2 + 6.0, -length / 2), words["dyn_inertia"], HEADING, "start", weight="bold"))
     items.append(Text((width / 2 + 6.0, -length / 2 - HEADING - 2.5),
-                      f"μJ = {format_scale(scales.inertia)} kg·m²/mm, {_angle_scale(model, scales)}",
-                      LABEL, "start"))
+                      f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
+                      f"{_angle_scale(model, scales, words)}", LABEL, "start"))
     return items
 
 
-def _angle_scale(model: EquivalentModel, scales: Scales) -> str:
+def _angle_scale(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> str:
     if model.turning:
-        return f"μφ = {_format(math.degrees(scales.angle), 4)}°/mm ({_format(scales.angle, 4)} rad/mm)"
-    return f"μs = {format_scale(scales.angle)} m/mm"
+        return words["dyn_angle_scale"].format(degrees=_format(math.degrees(scales.angle), 4),
+                                               radians=_format(scales.angle, 4))
+    return words["dyn_travel_scale"].format(value=format_scale(scales.angle))
 
 
 def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[str, str]) -> list[Primitive]:
     if flywheel is None:
         return []
     lines = [
-        words["delta"].format(delta=_format(flywheel.delta), omega=_format(flywheel.omega_mean, 5),
+        words["dyn_delta"].format(delta=_format(flywheel.delta), omega=_format(flywheel.omega_mean, 5),
                               rpm=_format(omega_to_rpm(flywheel.omega_mean), 5)),
-        words["delta_w_max"].format(value=_format(flywheel.delta_w_max, 5)),
-        words["exact"].format(value=_format(flywheel.inertia, 5)),
-        words["approximate"].format(value=_format(flywheel.approximate, 5)),
-        words["mertsalov"].format(value=_format(flywheel.mertsalov, 5), constant=_format(flywheel.constant_inertia, 4)),
+        words["dyn_delta_w_max"].format(value=_format(flywheel.delta_w_max, 5)),
+        words["dyn_exact"].format(value=_format(flywheel.inertia, 5)),
+        words["dyn_approximate"].format(value=_format(flywheel.approximate, 5)),
+        words["dyn_mertsalov"].format(value=_format(flywheel.mertsalov, 5), constant=_format(flywheel.constant_inertia, 4)),
     ]
     if flywheel.moved is not None and flywheel.shaft_rpm is not None:
-        lines.append(words["moved"].format(rpm=_format(flywheel.shaft_rpm), value=_format(flywheel.moved, 4)))
-    for key, index in (("omega_max", flywheel.index_max), ("omega_min", flywheel.index_min)):
+        lines.append(words["dyn_moved"].format(rpm=_format(flywheel.shaft_rpm), value=_format(flywheel.moved, 4)))
+    for key, index in (("dyn_omega_max", flywheel.index_max), ("dyn_omega_min", flywheel.index_min)):
         lines.append(words[key].format(value=_format(float(flywheel.omega[index]), 5),
                                        angle=_format(math.degrees(model.driver[index]) % 360.0, 4),
                                        travel=_format(math.degrees(model.coordinate[index]), 4)))
     if flywheel.inertia <= 0:
-        lines.append(words["no_flywheel"])
-    items: list[Primitive] = [Text((0.0, 0.0), words["results"], HEADING, "start", weight="bold")]
+        lines.append(words["dyn_no_flywheel"])
+    items: list[Primitive] = [Text((0.0, 0.0), words["dyn_results"], HEADING, "start", weight="bold")]
     for k, line in enumerate(lines, start=1):
         items.append(Text((0.0, -k * 1.7 * LABEL - 2.0), line, LABEL, "start"))
     return items
@@ -370,4 +351,4 @@ def _format(value: float, digits: int = 4) -> str:
     return "0" if text in ("-0", "") else text
 
 
-__all__ = ["TEXT", "Scales", "dynamics_svg", "layout", "scales_for"]
+__all__ = ["Scales", "dynamics_svg", "layout", "scales_for"]

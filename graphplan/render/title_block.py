@@ -30,155 +30,16 @@ import re
 import unicodedata
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cache
+from importlib import resources
 
+from ..locale import strings
 from ..scales import format_scale
 from .primitives import MAIN, Polyline, Primitive, Stroke, Text, text_width
 
-# The strings of the three forms and of what graphplan writes into them, by locale.  Every locale
-# has every key, so that any form can be drawn in any language.
-TITLE_BLOCK_STRINGS: dict[str, dict[str, str]] = {
-    "en": {
-        "sheet_kinematics": "Kinematic analysis",
-        "sheet_forces": "Force analysis",
-        "sheet_forces_position": "Force analysis, position {number}",
-        "sheet_of": "{number} of {count}",
-        # ESKD, GOST 2.104 form 1
-        "eskd_change": "Rev.",
-        "eskd_sheet": "Sheet",
-        "eskd_document": "Doc. No.",
-        "eskd_signature": "Sign.",
-        "eskd_date": "Date",
-        "eskd_designed": "Designed",
-        "eskd_checked": "Checked",
-        "eskd_technical_control": "Tech. ctrl",
-        "eskd_standards_control": "Std. ctrl",
-        "eskd_approved": "Approved",
-        "eskd_letter": "Letter",
-        "eskd_mass": "Mass",
-        "eskd_scale": "Scale",
-        "eskd_sheets": "Sheets",
-        # GB/T 10609.1
-        "gb_mark": "Mark",
-        "gb_places": "Qty",
-        "gb_zone": "Zone",
-        "gb_change_document": "Change doc. No.",
-        "gb_signature": "Signature",
-        "gb_date": "Date",
-        "gb_designed": "Designed",
-        "gb_standardized": "Standardized",
-        "gb_checked": "Checked",
-        "gb_process": "Process",
-        "gb_approved": "Approved",
-        "gb_stage": "Stage",
-        "gb_weight": "Weight",
-        "gb_scale": "Scale",
-        "gb_sheets": "Sheet {number} of {count}",
-        # ISO 7200
-        "iso_created_by": "Created by",
-        "iso_approved_by": "Approved by",
-        "iso_document_type": "Document type",
-        "iso_scale": "Scale",
-        "iso_legal_owner": "Legal owner",
-        "iso_title": "Title",
-        "iso_identification": "Identification number",
-        "iso_revision": "Rev.",
-        "iso_date_of_issue": "Date of issue",
-        "iso_language": "Lang.",
-        "iso_sheet": "Sheet",
-    },
-    "ru": {
-        "sheet_kinematics": "Кинематический анализ",
-        "sheet_forces": "Силовой анализ",
-        "sheet_forces_position": "Силовой анализ, положение {number}",
-        "sheet_of": "{number} из {count}",
-        "eskd_change": "Изм.",
-        "eskd_sheet": "Лист",
-        "eskd_document": "№ докум.",
-        "eskd_signature": "Подп.",
-        "eskd_date": "Дата",
-        "eskd_designed": "Разраб.",
-        "eskd_checked": "Пров.",
-        "eskd_technical_control": "Т.контр.",
-        "eskd_standards_control": "Н.контр.",
-        "eskd_approved": "Утв.",
-        "eskd_letter": "Лит.",
-        "eskd_mass": "Масса",
-        "eskd_scale": "Масштаб",
-        "eskd_sheets": "Листов",
-        "gb_mark": "Отм.",
-        "gb_places": "Кол.",
-        "gb_zone": "Зона",
-        "gb_change_document": "№ изв.",
-        "gb_signature": "Подп.",
-        "gb_date": "Дата",
-        "gb_designed": "Разраб.",
-        "gb_standardized": "Н.контр.",
-        "gb_checked": "Пров.",
-        "gb_process": "Т.контр.",
-        "gb_approved": "Утв.",
-        "gb_stage": "Лит.",
-        "gb_weight": "Масса",
-        "gb_scale": "Масштаб",
-        "gb_sheets": "Лист {number} из {count}",
-        "iso_created_by": "Разработал",
-        "iso_approved_by": "Утвердил",
-        "iso_document_type": "Вид документа",
-        "iso_scale": "Масштаб",
-        "iso_legal_owner": "Владелец",
-        "iso_title": "Наименование",
-        "iso_identification": "Обозначение",
-        "iso_revision": "Изм.",
-        "iso_date_of_issue": "Дата выпуска",
-        "iso_language": "Яз.",
-        "iso_sheet": "Лист",
-    },
-    "zh": {
-        "sheet_kinematics": "运动分析",
-        "sheet_forces": "力分析",
-        "sheet_forces_position": "力分析，位置 {number}",
-        "sheet_of": "第 {number} 张 共 {count} 张",
-        "eskd_change": "标记",
-        "eskd_sheet": "页",
-        "eskd_document": "文件号",
-        "eskd_signature": "签名",
-        "eskd_date": "日期",
-        "eskd_designed": "设计",
-        "eskd_checked": "审核",
-        "eskd_technical_control": "工艺",
-        "eskd_standards_control": "标准化",
-        "eskd_approved": "批准",
-        "eskd_letter": "阶段",
-        "eskd_mass": "重量",
-        "eskd_scale": "比例",
-        "eskd_sheets": "张数",
-        "gb_mark": "标记",
-        "gb_places": "处数",
-        "gb_zone": "分区",
-        "gb_change_document": "更改文件号",
-        "gb_signature": "签名",
-        "gb_date": "年、月、日",
-        "gb_designed": "设计",
-        "gb_standardized": "标准化",
-        "gb_checked": "审核",
-        "gb_process": "工艺",
-        "gb_approved": "批准",
-        "gb_stage": "阶段标记",
-        "gb_weight": "重量",
-        "gb_scale": "比例",
-        "gb_sheets": "共 {count} 张  第 {number} 张",
-        "iso_created_by": "设计",
-        "iso_approved_by": "批准",
-        "iso_document_type": "文件类型",
-        "iso_scale": "比例",
-        "iso_legal_owner": "所有者",
-        "iso_title": "名称",
-        "iso_identification": "图样代号",
-        "iso_revision": "版本",
-        "iso_date_of_issue": "发布日期",
-        "iso_language": "语言",
-        "iso_sheet": "张次",
-    },
-}
+# The strings of the three forms and of what graphplan writes into them are the locale files' ``tb_`` keys;
+# every locale has every key, so that any form can be drawn in any language.
+PREFIX = "tb_"
 
 # The form each locale's drafting standard prescribes.
 FORMS = {"ru": "eskd", "zh": "gb", "en": "iso"}
@@ -241,10 +102,18 @@ def form_of(locale: str) -> str:
 
 
 def labels(locale: str) -> Mapping[str, str]:
-    """The title block strings of ``locale``."""
-    if locale not in TITLE_BLOCK_STRINGS:
-        raise ValueError(f"no title block strings for locale {locale!r}; known: {', '.join(sorted(TITLE_BLOCK_STRINGS))}")
-    return TITLE_BLOCK_STRINGS[locale]
+    """The title block strings of ``locale`` (its ``tb_`` keys, without the prefix), English where it has none."""
+    known = locales()
+    if locale not in known:
+        raise ValueError(f"no title block strings for locale {locale!r}; known: {', '.join(known)}")
+    return {key.removeprefix(PREFIX): value for key, value in strings(locale).items() if key.startswith(PREFIX)}
+
+
+@cache
+def locales() -> tuple[str, ...]:
+    """The locales that have a locale file, sorted."""
+    folder = resources.files("graphplan").joinpath("locales")
+    return tuple(sorted(entry.name.removesuffix(".toml") for entry in folder.iterdir() if entry.name.endswith(".toml")))
 
 
 def scale_text(length_scale: float, form: str, length_caption: str) -> str:
@@ -266,7 +135,10 @@ def _ratio_number(value: float) -> str:
 
 def title_block(form: str, fields: TitleBlockFields, text: Mapping[str, str],
                 corner: tuple[float, float]) -> list[Primitive]:
-    """The title block of ``form`` with its lower right corner at ``corner`` (mm, y up)."""
+    """The title block of ``form`` with its lower right corner at ``corner`` (mm, y up), in the words ``text``.
+
+    ``text`` is :func:`labels` of a locale: any form can be drawn in any language.
+    """
     draw = {"eskd": _eskd, "gb": _gb, "iso": _iso}
     if form not in draw:
         raise ValueError(f"unknown title block form {form!r}; known: {', '.join(draw)}")

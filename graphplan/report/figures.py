@@ -7,7 +7,6 @@ date and with a fixed hash salt, so that the same scene gives the same file.
 
 from __future__ import annotations
 
-import io
 import math
 
 import numpy as np
@@ -16,6 +15,7 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
+from .plot_style import font_families, svg_text
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -24,11 +24,10 @@ def balancing_diagram(analysis: Analysis) -> str:
     import matplotlib
 
     matplotlib.use("Agg")
-    from matplotlib import pyplot
-    from matplotlib import rcParams
+    from matplotlib import pyplot, rcParams
 
     rcParams["svg.hashsalt"] = "graphplan"
-    rcParams["font.family"] = _families()
+    rcParams["font.family"] = font_families()
     text = strings(analysis.scene.locale)
     mechanism, positions, sweep = analysis.mechanism, analysis.positions, analysis.paths
     loads = link_loads(mechanism, motion_state(sweep), activity(mechanism, positions, sweep))
@@ -65,22 +64,7 @@ def balancing_diagram(analysis: Analysis) -> str:
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=8, loc="best")
     figure.tight_layout()
-    buffer = io.StringIO()
-    figure.savefig(buffer, format="svg", metadata={"Date": None})
-    pyplot.close(figure)
-    return buffer.getvalue()
-
-
-# Latin and Cyrillic first, then CJK: matplotlib falls back along the list glyph by glyph.
-_FONTS = ("DejaVu Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "WenQuanYi Zen Hei", "Droid Sans Fallback")
-
-
-def _families() -> list[str]:
-    """The fonts of :data:`_FONTS` this machine has (asking for a missing one floods the log)."""
-    from matplotlib import font_manager
-
-    installed = {font.name for font in font_manager.fontManager.ttflist}
-    return [name for name in _FONTS if name in installed] or ["sans-serif"]
+    return svg_text(figure)
 
 
 def _friction(analysis: Analysis, sweep):

@@ -2,9 +2,11 @@
 
 Each figure draws its curve against the frequency ratio r = ω/ωn for
 several damping ratios ζ, from :mod:`graphplan.vibration`, and marks a
-machine's working point when one is given.  matplotlib is imported only
-inside the functions, with the Agg backend; the SVG has no date and a fixed
-hash salt, so the same call writes the same bytes.
+machine's working point when one is given.  Every word comes from ``text``,
+the ``vib_`` keys of a locale (:func:`graphplan.locale.strings`); English when
+none is given.  matplotlib is imported only inside the functions, with the Agg
+backend; the SVG has no date and a fixed hash salt, so the same call writes
+the same bytes.
 """
 
 from __future__ import annotations
@@ -15,27 +17,15 @@ from pathlib import Path
 
 import numpy as np
 
+from ..locale import strings as locale_strings
 from ..vibration import transmissibility, unbalance_magnification
+from .plot_style import settings
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
 # Samples along r: dense enough that the sharpest peak drawn (ζ = 0.05) reads smooth.
 SAMPLES = 1201
 
-#: The figures' strings in English; a locale overrides any of them.
-TEXT: Mapping[str, str] = {
-    "vibration_ratio": "frequency ratio r = ω/ωn",
-    "vibration_magnification": "magnification M·X/(m·e)",
-    "vibration_magnification_title": "Rotating unbalance: steady amplitude",
-    "vibration_transmissibility": "transmissibility TR",
-    "vibration_transmissibility_title": "Force transmitted to the base",
-    "vibration_zeta": "ζ = {value}",
-    "vibration_operating": "working point",
-    "vibration_isolation": "isolation: r > √2",
-}
-
-# Latin and Greek first, then CJK: matplotlib falls back along the list glyph by glyph.
-_FONTS = ("DejaVu Sans", "Noto Sans CJK SC", "Noto Sans CJK JP")
 
 
 def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
@@ -47,13 +37,12 @@ def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETA
     The ordinate stops at a little above the highest drawn peak (an
     undamped curve is cut there).
     """
-    strings = {**TEXT, **(text or {})}
+    words = {**locale_strings("en"), **(text or {})}
     ratios = np.linspace(0.0, ratio_max, SAMPLES)
     curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in _checked(zetas)]
     damped = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in zetas if 0 < zeta < math.sqrt(0.5)]
     top = 1.15 * max([*damped, 2.0])
-    return _plot(path, ratios, curves, strings, strings["vibration_magnification"],
-                 strings["vibration_magnification_title"], ylim=(0.0, top), log=False,
+    return _plot(path, ratios, curves, words, words["vib_magnification"], words["vib_magnification_title"], ylim=(0.0, top), log=False,
                  operating=None if operating is None else (operating[0], unbalance_magnification(*operating)))
 
 
@@ -65,11 +54,10 @@ def transmissibility_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_Z
     The isolating range r > √2, where every curve falls below 1, is shaded;
     ``operating`` = (r, ζ) marks a machine's working point.
     """
-    strings = {**TEXT, **(text or {})}
+    words = {**locale_strings("en"), **(text or {})}
     ratios = np.linspace(0.0, ratio_max, SAMPLES)
     curves = [(zeta, transmissibility(ratios, zeta)) for zeta in _checked(zetas)]
-    return _plot(path, ratios, curves, strings, strings["vibration_transmissibility"],
-                 strings["vibration_transmissibility_title"], ylim=(0.02, 20.0), log=True,
+    return _plot(path, ratios, curves, words, words["vib_transmissibility"], words["vib_transmissibility_title"], ylim=(0.02, 20.0), log=True,
                  operating=None if operating is None else (operating[0], transmissibility(*operating)),
                  isolation=True)
 
@@ -94,16 +82,15 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
 
     # A stream takes the SVG text as it is (a run writes its whole folder at once).
     target = path if hasattr(path, "write") else Path(path)
-    with matplotlib.rc_context({"svg.hashsalt": "graphplan", "font.family": _families(),
-                                "svg.fonttype": "path"}):
+    with matplotlib.rc_context(settings()):
         figure = Figure(figsize=(7.0, 4.2), dpi=100)
         plot = figure.add_subplot()
         colours = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.85, len(curves)))
         for (zeta, values), colour in zip(curves, colours, strict=True):
             shown = np.where(np.isfinite(values), values, np.nan)
-            plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vibration_zeta"].format(value=f"{zeta:g}"))
+            plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vib_zeta"].format(value=f"{zeta:g}"))
         if isolation:
-            plot.axvspan(math.sqrt(2.0), ratios[-1], color="#1f7a3a", alpha=0.08, label=text["vibration_isolation"])
+            plot.axvspan(math.sqrt(2.0), ratios[-1], color="#1f7a3a", alpha=0.08, label=text["vib_isolation"])
             plot.axvline(math.sqrt(2.0), color="#1f7a3a", linewidth=0.8, linestyle="--")
             plot.axhline(1.0, color="black", linewidth=0.6)
         else:
@@ -111,12 +98,12 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         plot.axvline(1.0, color="black", linewidth=0.5, linestyle=":")
         if operating is not None:
             plot.plot([operating[0]], [operating[1]], "o", color="#a83a1f", markersize=6,
-                      label=text["vibration_operating"])
+                      label=text["vib_operating"])
         if log:
             plot.set_yscale("log")
         plot.set_xlim(ratios[0], ratios[-1])
         plot.set_ylim(*ylim)
-        plot.set_xlabel(text["vibration_ratio"])
+        plot.set_xlabel(text["vib_ratio"])
         plot.set_ylabel(ylabel)
         plot.set_title(title, fontsize=11)
         plot.grid(True, which="both", linewidth=0.3)
@@ -128,12 +115,4 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
     return target
 
 
-def _families() -> list[str]:
-    """The fonts of :data:`_FONTS` this machine has (asking for a missing one floods the log)."""
-    from matplotlib import font_manager
-
-    installed = {font.name for font in font_manager.fontManager.ttflist}
-    return [name for name in _FONTS if name in installed] or ["sans-serif"]
-
-
-__all__ = ["DEFAULT_ZETAS", "TEXT", "magnification_figure", "transmissibility_figure"]
+__all__ = ["DEFAULT_ZETAS", "magnification_figure", "transmissibility_figure"]
