@@ -23,16 +23,15 @@ from .analysis import Analysis
 from .errors import SceneError
 from .locale import strings
 from .render.primitives import Layer
-from .scene import Scene
+from .scene import OUTPUT_PIECES, Scene
 
-# Every piece a run can deliver, in the order a course project presents them.  The first seven names
-# of the scene contract are here; ``figures`` are the report figures of the force analysis (matplotlib).
-PIECES = ("positions", "velocity", "acceleration", "diagrams", "forces", "lever", "errors", "note",
-          "dynamics", "balancing", "vibration", "sheets", "figures")
+# ``figures`` are the report figures of the force analysis (matplotlib).
+PIECES = OUTPUT_PIECES
 FORMATS = ("svg", "png", "pdf", "dxf")
 # Pieces delivered only when asked for: the figures cost matplotlib's second; the sheets repeat the
-# drawings in a frame, and a scene's drawings may not fit the sheet it names.
-ON_REQUEST = ("figures", "sheets")
+# drawings in a frame, and a scene's drawings may not fit the sheet it names; the accuracy report
+# times the methods, so it is the one output that differs from run to run.
+ON_REQUEST = ("figures", "sheets", "accuracy")
 _NO_LINKAGE = "needs a mechanism: the scene has no [frame] and [driver]"
 _NO_LOADS = "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
 _NO_PLANS = "needs plan positions: positions.plans lists none"
@@ -66,6 +65,10 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
             return "needs a crank driver: the diagrams are drawn against its angle"
         if scene.positions.count < 3:
             return "needs at least 3 positions for the chord method"
+    if piece == "accuracy" and analysis.motion.singular:
+        index = min(analysis.motion.singular)
+        return (f"needs every position regular: position {analysis.positions.numbers[index]} is singular "
+                "and has no reference solution")
     has_plans = bool(analysis.plans)
     if piece in ("velocity", "acceleration", "errors", "forces", "lever") and not has_plans:
         return _NO_PLANS
@@ -318,7 +321,23 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         found.update(encoded(drawing, formats))
     found.update(tables(analysis, pieces))
     found.update(figures(scene, analysis, pieces))
+    if "accuracy" in pieces and analysis is not None:
+        found.update(accuracy_report(analysis))
     return found
+
+
+def accuracy_report(analysis: Analysis) -> dict[str, str]:
+    """Each method's error against the 50-digit reference and its run time: table, CSV and plot."""
+    from pathlib import PurePath
+
+    from .accuracy import study
+    from .report import accuracy
+
+    scene = analysis.scene
+    found = study(scene, PurePath(scene.source).stem)
+    return {"accuracy.md": accuracy.markdown(found, scene.locale, scene.title),
+            "accuracy.csv": accuracy.csv_text(found.rows),
+            "accuracy.svg": accuracy.figure(found, scene.locale, scene.title)}
 
 
 __all__ = ["FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings", "files", "missing"]

@@ -31,7 +31,11 @@ STROKES = ("working", "idle", "always")
 # The tables that describe a mechanism: without [frame] and [driver] they have nothing to belong to.
 LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces", "dynamics")
 INERTIA_FORMS = ("couple", "displaced")
-OUTPUT_PIECES = ("positions", "velocity", "acceleration", "forces", "lever", "errors", "note")
+# Every piece a run can deliver, in the order a course project presents them (graphplan.deliverables):
+# the seven of the scene contract, then the kinematic diagrams, the accuracy report, the machine's
+# dynamics, the rotor's balancing, the vibration, the sheets and the report figures.
+OUTPUT_PIECES = ("positions", "velocity", "acceleration", "diagrams", "forces", "lever", "errors", "accuracy", "note",
+                 "dynamics", "balancing", "vibration", "sheets", "figures")
 
 
 @dataclass(frozen=True)

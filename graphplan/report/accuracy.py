@@ -1,0 +1,96 @@
+"""The accuracy report of one scene: each method's error against its run time, as a table, CSV and a plot.
+
+The numbers come from :func:`graphplan.accuracy.study`; this module only
+presents them, in the scene's language.  Its run times are measured, so
+unlike every other output this report differs from run to run.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import statistics
+from collections.abc import Iterable, Mapping
+
+from ..accuracy import Row, Study, draw_study
+from ..locale import strings
+from .plot_style import settings, svg_text
+
+FAMILIES = ("velocity", "acceleration")
+
+
+def method_name(row: Row, text: Mapping[str, str]) -> str:
+    """A row's method as a reader calls it: "plans read to 0.5 mm", "kinematic diagrams, N = 48"."""
+    if row.method == "drafting":
+        return text["accuracy_drafting"].format(precision=row.parameter.removesuffix(" mm").replace(".", text["decimal_mark"]))
+    if row.method == "diagram":
+        return text["accuracy_diagram"].format(count=row.positions)
+    return text.get(f"accuracy_{row.method}", row.method)
+
+
+def table_lines(rows: Iterable[Row], text: Mapping[str, str]) -> list[str]:
+    """The Markdown table: method, positions, time, largest and median error of velocities and accelerations."""
+    header = [text["accuracy_method"], text["accuracy_positions"], text["accuracy_time"],
+              text["accuracy_velocity_largest"], text["accuracy_median"],
+              text["accuracy_acceleration_largest"], text["accuracy_median"]]
+    lines = ["| " + " | ".join(header) + " |", "|---|---:|---:|---:|---:|---:|---:|"]
+    for row in rows:
+        numbers = [f"{row.seconds:.2e}", *(f"{row.stat(family, how):.1e}" for family in FAMILIES
+                                          for how in (max, statistics.median))]
+        cells = [method_name(row, text), str(row.positions), *(n.replace(".", text["decimal_mark"]) for n in numbers)]
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def order_sentence(orders: Mapping[str, float], text: Mapping[str, str]) -> str:
+    mark = text["decimal_mark"]
+    return text["accuracy_order"].format(velocity=f"{orders.get('velocity', math.nan):.2f}".replace(".", mark),
+                                         acceleration=f"{orders.get('acceleration', math.nan):.2f}".replace(".", mark))
+
+
+def markdown(study: Study, locale: str, title: str) -> str:
+    """``accuracy.md``: what was compared with what, the table, and the diagrams' order of convergence."""
+    text = strings(locale)
+    lines = [f"# {text['accuracy_title'].format(title=title)}", "",
+             text["accuracy_explained"].format(count=study.case.values.size), "",
+             *([text["accuracy_left_out"].format(positions="; ".join(study.case.left_out.values())), ""]
+               if study.case.left_out else []),
+             *table_lines(study.rows, text), "", order_sentence(study.orders, text), "",
+             text["accuracy_measured"], ""]
+    return "\n".join(lines)
+
+
+def csv_text(rows: Iterable[Row]) -> str:
+    """The rows for a spreadsheet, with the contract's identifiers (``fixture`` is the scene's name)."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["fixture", "method", "parameter", "positions", "seconds",
+                     *(f"{family}_{stat}" for family in FAMILIES for stat in ("max", "median"))])
+    for row in rows:
+        writer.writerow([row.fixture, row.method, row.parameter, row.positions, f"{row.seconds:.4e}",
+                         *(f"{row.stat(family, how):.4e}" for family in FAMILIES for how in (max, statistics.median))])
+    return out.getvalue()
+
+
+def figure(study: Study, locale: str, title: str) -> str:
+    """``accuracy.svg``: largest error against run time on log-log axes (filled: accelerations)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot
+
+    text = strings(locale)
+    with matplotlib.rc_context(settings()):
+        drawn, axes = pyplot.subplots(figsize=(7.0, 4.6), dpi=100)
+        draw_study(axes, study.rows, text["millimetre"])
+        for line in axes.get_lines():
+            name = line.get_label()
+            if not name.startswith("_"):
+                line.set_label(text.get(f"accuracy_legend_{name}", name))
+        axes.set_xlabel(text["accuracy_axis_time"].format(count=study.case.values.size), fontsize=9)
+        axes.set_ylabel(text["accuracy_axis_error"], fontsize=9)
+        axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9)
+        axes.legend(fontsize=8, loc="best")
+        drawn.tight_layout()
+        return svg_text(drawn)

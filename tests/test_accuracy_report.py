@@ -1,0 +1,148 @@
+"""The accuracy study of one scene (graphplan.accuracy) and the report ``include = ["accuracy"]`` delivers.
+
+The reference is the 50-digit mpmath solution of graphplan.reference, written apart from the solver.
+What the errors must be comes from outside the code: the analytic solver and the exact construction
+agree with the reference to a few units of double precision; a plan read with a ruler to d mm is off by
+at most d/2 on every segment; chords through two neighbours converge as N⁻² (their leading error term
+is h²/6 of the third derivative).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import tomllib
+from pathlib import Path
+
+import pytest
+from test_scene_errors import to_toml
+
+import graphplan
+from graphplan.accuracy import DIAGRAM_REFINEMENTS, diagram_refinements, prepare, study
+from graphplan.analysis import analyse
+from graphplan.check import drafted
+from graphplan.cli import main
+from graphplan.deliverables import chosen
+
+ROOT = Path(__file__).resolve().parent.parent
+FIXTURES = ROOT / "fixtures"
+
+
+@pytest.fixture(scope="module", params=["ratchet_crank_rocker", "quick_return_slotted_lever", "slider_driven"])
+def found(request):
+    return study(graphplan.load(FIXTURES / f"{request.param}.toml"), request.param)
+
+
+def rows_of(found, method):
+    return [row for row in found.rows if row.method == method]
+
+
+def test_the_exact_methods_agree_with_the_50_digit_reference(found):
+    for method in ("analytic", "construction"):
+        (row,) = rows_of(found, method)
+        for family in ("velocity", "acceleration"):
+            assert row.stat(family, max) < 1e-12, (found.name, method, family)
+
+
+def test_a_plan_read_to_d_mm_is_off_by_no_more_than_the_ruler_allows(found):
+    """Each reading is off by at most d/2 on its segment; a quantity's error is divided by its largest length."""
+    case = found.case
+    longest: dict[str, float] = {}
+    for plans, table in zip(case.plans, case.tables, strict=True):
+        for reading in table:
+            longest[reading.quantity] = max(longest.get(reading.quantity, 0.0), abs(reading.millimetres(plans)))
+    drafting = {row.parameter: row for row in rows_of(found, "drafting")}
+    assert set(drafting) == {"1 mm", "0.5 mm", "0.25 mm", "0.1 mm"}
+    shortest_peak = min(length for length in longest.values() if length > 0)
+    for parameter, row in drafting.items():
+        precision = float(parameter.removesuffix(" mm"))
+        # A sliding velocity or ω is read off one segment, a relative acceleration off two (normal and tangential).
+        bound = 2 * (precision / 2) / shortest_peak
+        assert 0 < row.stat("velocity", max) <= bound and row.stat("acceleration", max) <= bound, (parameter, row.errors)
+    assert drafted(12.34, 0.5) == 12.5  # the ruler the rows were read with
+
+
+def test_the_kinematic_diagrams_converge_as_n_to_the_minus_two(found):
+    assert 1.8 < found.orders["velocity"] < 2.2
+    assert 1.8 < found.orders["acceleration"] < 2.2
+    diagrams = rows_of(found, "diagram")
+    errors = [row.stat("acceleration", max) for row in diagrams]
+    assert errors == sorted(errors, reverse=True)
+    assert [row.positions for row in diagrams][:2] in ([12, 24], [12, 23])
+
+
+def test_the_diagrams_put_a_node_on_every_position_whatever_their_count(tmp_path):
+    """Nine positions a cycle: the grid is refined by whole nodes per interval, so each position is read exactly."""
+    document = tomllib.loads((FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8"))
+    document["positions"]["count"] = 9
+    document["positions"]["plans"] = [2]
+    document.pop("measured", None)
+    scene = graphplan.scene.loads(to_toml(document))
+    case = prepare(scene, "nine")
+    assert diagram_refinements(case) == DIAGRAM_REFINEMENTS  # 9 × 300 = 2700 nodes at most
+    result = study(scene, "nine")
+    assert 1.8 < result.orders["acceleration"] < 2.2
+    assert [row.positions for row in rows_of(result, "diagram")] == [9 * m for m in DIAGRAM_REFINEMENTS]
+
+
+def test_accuracy_is_delivered_on_request_only(tmp_path):
+    scene = graphplan.load(FIXTURES / "ratchet_crank_rocker.toml")
+    assert "accuracy" not in chosen(scene, analyse(scene))
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURES / "ratchet_crank_rocker.toml"), "--out", str(out), "--only", "accuracy"]) == 0
+    assert {p.name for p in out.iterdir()} == {"results.json", "accuracy.md", "accuracy.csv", "accuracy.svg"}
+    table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
+    assert [row["method"] for row in table][:2] == ["analytic", "construction"]
+    assert all(float(row["velocity_max"]) < 1e-12 for row in table[:2])
+    note = (out / "accuracy.md").read_text(encoding="utf-8")
+    assert note.startswith("# Точность методов") and "чертёжной точностью 0,5 мм" in note  # the scene is ru
+    for row in table:
+        assert f"{float(row['acceleration_max']):.1e}".replace(".", ",") in note
+    assert "<svg" in (out / "accuracy.svg").read_text(encoding="utf-8")
+
+
+def test_include_accuracy_in_the_scene(tmp_path):
+    document = tomllib.loads((FIXTURES / "slider_driven.toml").read_text(encoding="utf-8"))
+    document["output"] = {"include": ["errors", "accuracy"]}
+    path = tmp_path / "scene.toml"
+    path.write_text(to_toml(document), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out)]) == 0
+    assert {"accuracy.md", "accuracy.csv", "accuracy.svg", "errors.md"} <= {p.name for p in out.iterdir()}
+    assert "plans read to 0.5 mm" in (out / "accuracy.md").read_text(encoding="utf-8")
+
+
+def test_a_position_without_a_plan_is_left_out_and_named(tmp_path):
+    """At exactly the change point (φ = 0°) the analytic solution exists, but no plan can be constructed."""
+    path = ROOT / "bench" / "extreme" / "change_point_at_toggle.toml"
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--only", "accuracy"]) == 0
+    text = (out / "accuracy.md").read_text(encoding="utf-8")
+    assert "Left out" in text and "position 1 (φ = 0°)" in text
+    table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
+    assert all(math.isfinite(float(row["velocity_max"])) for row in table)
+
+
+def test_a_singular_position_has_no_accuracy_and_says_so(tmp_path, capsys):
+    path = ROOT / "bench" / "extreme" / "dead_centre_slider.toml"
+    scene = graphplan.load(path)
+    singular = analyse(scene).motion.singular
+    assert singular  # the slider-driven dyad passes its dead centre exactly at a position
+    number = analyse(scene).positions.numbers[min(singular)]
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--only", "accuracy"]) == 2
+    error = capsys.readouterr().err.strip()
+    assert error.startswith("graphplan: error: --only[0]: 'accuracy' needs every position regular")
+    assert f"position {number} is singular" in error
+    assert not out.exists()
+
+
+def test_the_english_report_reads_the_study(tmp_path):
+    from graphplan.report.accuracy import markdown
+
+    result = study(graphplan.load(FIXTURES / "slider_driven.toml"), "slider_driven")
+    text = markdown(result, "en", "Lever")
+    assert text.startswith("# ")
+    assert f"{result.orders['acceleration']:.2f}" in text
+    assert math.isfinite(result.orders["velocity"])
