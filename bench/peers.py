@@ -6,6 +6,12 @@ returns plain numpy arrays, so the benchmark can time them and diff them
 against ``reference_*`` (a closed form written here, independent of both
 peers and of graphplan).
 
+The linkages: A) the ratchet four-bar, B) a Watt six-bar (A) plus a dyad on
+its coupler point E), C) a slider-crank, centric or offset, its guide
+horizontal at y = offset and the slider on the +x side of the crank pin
+(the dimensions are keyword arguments, so the benchmark passes its
+fixtures').  Both peers model all three, C) with accelerations.
+
 Optional dependencies, the ``bench`` extra (nothing else in graphplan needs
 them)::
 
@@ -35,6 +41,7 @@ positions and print the largest difference from the closed form.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 import warnings
@@ -64,9 +71,12 @@ SIX_DF = 0.5
 SIX_F = (-0.55, 0.9)
 SIX_D_SIDE = +1         # D on the left of directed line E->F
 
-# Centric slider-crank (linkage C).
+# Slider-crank C) as timed by main(): centric, and offset by SC_OFFSET; S3 on
+# the rod SC_S3 from the crank pin.  The benchmark's fixtures pass their own.
 SC_CRANK = 0.1
 SC_ROD = 0.4
+SC_OFFSET = 0.05
+SC_S3 = 0.15
 SC_OMEGA = 100.0
 
 
@@ -170,20 +180,46 @@ def reference_sixbar(angles, ED=SIX_ED, DF=SIX_DF, F=SIX_F, d_side=SIX_D_SIDE,
     return out
 
 
-def reference_slider_crank(angles, omega=SC_OMEGA, alpha=0.0):
-    """Closed-form centric slider-crank C), slider B on the +x side."""
-    A, vA, aA = _crank_state(angles, SC_CRANK, omega, alpha)
-    xB = A[:, 0] + np.sqrt(SC_ROD ** 2 - A[:, 1] ** 2)
-    B = np.stack([xB, np.zeros_like(xB)], axis=-1)
+def _slider_geometry(crank, rod, offset):
+    """Check a slider-crank's dimensions: the crank must turn fully, so the rod
+    must reach the guide from every crank-pin position, rod > crank + |offset|."""
+    if not (crank > 0.0 and rod > 0.0):
+        raise ValueError(f"slider-crank needs crank > 0 and rod > 0, got crank={crank}, rod={rod}")
+    if rod <= crank + abs(offset):
+        raise ValueError(f"slider-crank with rod={rod} <= crank + |offset| = {crank + abs(offset)} "
+                         "does not turn a full revolution")
+
+
+def reference_slider_crank(angles, *, crank, rod, offset, s3=None, omega=SC_OMEGA, alpha=0.0):
+    """Closed-form slider-crank C): crank O-A about O = (0, 0), rod A-B, slider
+    B on the horizontal guide y = offset, on the +x side of the crank pin
+    (graphplan's assembly = "forward").  S3 (when s3 is given) lies on AB, s3
+    from A.
+
+        x_B = r cos(phi) + sqrt(l^2 - (r sin(phi) - e)^2),   y_B = e
+
+    Rates from the loop closure of the rod: v_B = v_A + w3 k x (B - A) and its
+    derivative, with the y components of v_B and a_B zero.  Returns (N, 2)
+    arrays A, B[, S3] with their v/a, and (N,) omega3/alpha3 of the rod.
+    """
+    _slider_geometry(crank, rod, offset)
+    A, vA, aA = _crank_state(angles, crank, omega, alpha)
+    xB = A[:, 0] + np.sqrt(rod ** 2 - (A[:, 1] - offset) ** 2)
+    B = np.stack([xB, np.full_like(xB, offset)], axis=-1)
     b = B - A
-    # v_B = v_A + w3 k x b must have no y component (k x b)_y = b_x.
+    # (k x b)_y = b_x: the y rows of the loop give the rod's rates directly.
     w3 = -vA[:, 1] / b[:, 0]
-    vB = vA + w3[:, None] * _perp(b)
     a3 = -(aA[:, 1] - w3 ** 2 * b[:, 1]) / b[:, 0]
+    vB = vA + w3[:, None] * _perp(b)
     aB = aA + a3[:, None] * _perp(b) - (w3 ** 2)[:, None] * b
-    vB[:, 1] = 0.0
+    vB[:, 1] = 0.0           # exactly, rather than a rounding residue
     aB[:, 1] = 0.0
-    return dict(A=A, B=B, vA=vA, vB=vB, aA=aA, aB=aB, omega3=w3, alpha3=a3)
+    out = {"A": A, "B": B, "vA": vA, "vB": vB, "aA": aA, "aB": aB, "omega3": w3, "alpha3": a3}
+    if s3 is not None:
+        rel = (s3 / rod) * b
+        out.update(S3=A + rel, vS3=vA + w3[:, None] * _perp(rel),
+                   aS3=aA + a3[:, None] * _perp(rel) - (w3 ** 2)[:, None] * rel)
+    return out
 
 
 # --------------------------------------------------------------------------
@@ -309,19 +345,35 @@ def pylinkage_sixbar(angles, ED=SIX_ED, DF=SIX_DF, F=SIX_F, d_side=SIX_D_SIDE,
     return out
 
 
-def pylinkage_slider_crank(angles, kinematics=True, fast=True, omega=SC_OMEGA, alpha=0.0):
-    """Slider-crank C) with pylinkage: RRPDyad on the line through O and (1, 0)."""
+def pylinkage_slider_crank(angles, *, crank, rod, offset, s3=None, kinematics=True, fast=False,
+                           omega=SC_OMEGA, alpha=0.0):
+    """Slider-crank C) with pylinkage (geometry as reference_slider_crank).
+
+    The slider is an RRPDyad: circle of radius `rod` about the crank pin cut
+    with the line through two Ground points (0, offset) and (1, offset), so an
+    offset guide is as easy as a centric one.  Its velocity and acceleration
+    come from pylinkage's prismatic solvers (implicit differentiation of the
+    circle and line constraints); the rod's omega3/alpha3 are not reported.
+    S3 is a FixedDyad on (crank pin, B) at angle 0.
+    """
     import pylinkage as pl
     angles = np.asarray(angles, dtype=float)
+    geometry = {"crank": crank, "rod": rod, "offset": offset, "s3": s3}
+    hint = reference_slider_crank(angles[:1], **geometry)          # branch hint only
     o = pl.Ground(0.0, 0.0, name="O")
-    x_axis = pl.Ground(1.0, 0.0, name="X")
-    crank = _pylinkage_crank(pl, o, SC_CRANK, angles)
-    b0 = reference_slider_crank(angles[:1])["B"][0]                 # branch hint
-    b = pl.RRPDyad(crank.output, o, x_axis, distance=SC_ROD,
-                   x=float(b0[0]), y=float(b0[1]), name="B")
-    linkage = pl.Linkage([o, x_axis, crank, b], name="slider-crank")
-    out = _pylinkage_run(linkage, crank, ["crank", "B"], angles.size, omega, alpha,
-                         kinematics, fast)
+    g1 = pl.Ground(0.0, float(offset), name="G1")
+    g2 = pl.Ground(1.0, float(offset), name="G2")
+    crank_ = _pylinkage_crank(pl, o, crank, angles)
+    # The RRP dyad keeps the circle-line intersection nearest its previous
+    # position; the hint starts it on the +x branch.
+    b = pl.RRPDyad(crank_.output, g1, g2, distance=rod,
+                   x=float(hint["B"][0, 0]), y=float(hint["B"][0, 1]), name="B")
+    parts, names = [o, g1, g2, crank_, b], ["crank", "B"]
+    if s3 is not None:
+        parts.append(pl.FixedDyad(crank_.output, b, distance=s3, angle=0.0, name="S3"))
+        names.append("S3")
+    linkage = pl.Linkage(parts, name="slider-crank")
+    out = _pylinkage_run(linkage, crank_, names, angles.size, omega, alpha, kinematics, fast)
     _rename(out, "crank", "A")
     out["crank_angle_error"] = _crank_angle_error(out["A"], angles)
     out["note"] = PYLINKAGE_NOTE
@@ -468,28 +520,52 @@ def mechanism_sixbar(angles, ED=SIX_ED, DF=SIX_DF, F=SIX_F, d_side=SIX_D_SIDE,
                              _six=(ED, DF, tuple(F), d_side))
 
 
-def mechanism_slider_crank(angles, kinematics=True, omega=SC_OMEGA, alpha=0.0):
-    """Slider-crank C) with `mechanism`: vector O->B of fixed angle 0 and
-    unknown length is the slider, as in the package's crank-slider example."""
+def mechanism_slider_crank(angles, *, crank, rod, offset, s3=None, kinematics=True,
+                           omega=SC_OMEGA, alpha=0.0):
+    """Slider-crank C) with `mechanism` (geometry as reference_slider_crank).
+
+    As in the package's crank-slider example, the slider is a vector of fixed
+    angle 0 and unknown length; for an offset guide it starts from the ground
+    point G = (0, offset), reached from O by a fixed ground vector, so the loop
+    is O-A(-S3)-B-G-O.  With S3 the rod is split into A->S3 and S3->B sharing
+    one unknown angle, as the four-bar's coupler.  Reports omega3/alpha3 of the
+    rod and the slider's r_dot/r_ddot (slider_v, slider_a).
+    """
     import mechanism as mech
+    _slider_geometry(crank, rod, offset)
     angles = np.asarray(angles, dtype=float)
-    o, a_, b_ = mech.get_joints("O A B")
-    a = mech.Vector((o, a_), r=SC_CRANK)
-    rod = mech.Vector((a_, b_), r=SC_ROD)
-    slide = mech.Vector((o, b_), theta=0.0, style="ground")
+    names = ["O", "A", "B"] + (["S3"] if s3 is not None else []) + (["G"] if offset else [])
+    joints = dict(zip(names, mech.get_joints(" ".join(names))))
+    o, a_, b_ = joints["O"], joints["A"], joints["B"]
+    a = mech.Vector((o, a_), r=crank)
+    if s3 is not None:
+        rod_parts = [mech.Vector((a_, joints["S3"]), r=s3), mech.Vector((joints["S3"], b_), r=rod - s3)]
+    else:
+        rod_parts = [mech.Vector((a_, b_), r=rod)]
+    vectors = [a, *rod_parts]
+    if offset:
+        g = joints["G"]
+        to_guide = mech.Vector((o, g), r=abs(offset), theta=math.copysign(math.pi / 2, offset), style="ground")
+        slide = mech.Vector((g, b_), theta=0.0, style="ground")
+        vectors += [to_guide, slide]
+    else:
+        to_guide = None
+        slide = mech.Vector((o, b_), theta=0.0, style="ground")
+        vectors.append(slide)
 
     def loops(x, inp):
-        return a(inp) + rod(x[0]) - slide(x[1])
+        row = a(inp) + sum(part(x[0]) for part in rod_parts) - slide(x[1])
+        return row - to_guide() if to_guide is not None else row
 
-    ref0 = reference_slider_crank(angles[:1])
-    A0, B0 = ref0["A"][0], ref0["B"][0]
+    hint = reference_slider_crank(angles[:1], crank=crank, rod=rod, offset=offset)
+    A0, B0 = hint["A"][0], hint["B"][0]
     guess = np.array([_rough(math.atan2(*(B0 - A0)[::-1])), round(B0[0], 2)])
-    m = _mechanism_run(mech, [o, a_, b_], [a, rod, slide], loops, angles, omega,
+    m = _mechanism_run(mech, list(joints.values()), vectors, loops, angles, omega,
                        alpha, guess, kinematics)
-    out = _mechanism_joint_arrays(m.joints, ["A", "B"], kinematics)
+    out = _mechanism_joint_arrays(m.joints, [n for n in names if n in ("A", "B", "S3")], kinematics)
     if kinematics:
-        out["omega3"] = np.array(rod.vel.omegas)
-        out["alpha3"] = np.array(rod.acc.alphas)
+        out["omega3"] = np.array(rod_parts[0].vel.omegas)
+        out["alpha3"] = np.array(rod_parts[0].acc.alphas)
         out["slider_v"] = np.array(slide.vel.r_dots)
         out["slider_a"] = np.array(slide.acc.r_ddots)
     out["note"] = MECHANISM_NOTE
@@ -547,9 +623,12 @@ def main():
             pylinkage=pylinkage_fourbar, mechanism=mechanism_fourbar)),
         "sixbar": (OMEGA, reference_sixbar, dict(
             pylinkage=pylinkage_sixbar, mechanism=mechanism_sixbar)),
-        "slider": (SC_OMEGA, reference_slider_crank, dict(
-            pylinkage=pylinkage_slider_crank, mechanism=mechanism_slider_crank)),
     }
+    for lname, offset in (("slider", 0.0), ("slider e", SC_OFFSET)):
+        geometry = {"crank": SC_CRANK, "rod": SC_ROD, "offset": offset, "s3": SC_S3}
+        linkages[lname] = (SC_OMEGA, functools.partial(reference_slider_crank, **geometry), {
+            "pylinkage": functools.partial(pylinkage_slider_crank, **geometry),
+            "mechanism": functools.partial(mechanism_slider_crank, **geometry)})
     # Warm-up outside the timings: imports (mechanism pulls in matplotlib)
     # and numba compilation or cache loading on the first call.
     for omega, _, peers in linkages.values():
