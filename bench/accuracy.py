@@ -122,7 +122,7 @@ def markdown(rows: list[Row], orders: Mapping[str, Mapping[str, float]], vectors
     lines = ["# Accuracy against run time", "",
              (f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, numpy {np.__version__}. "
              "Regenerate with `python bench/accuracy.py`."), "",
-             ("Errors are relative to the 50-digit mpmath reference (`graphplan/reference.py`), over the quantities of the "
+             ("Errors are relative to the 50-digit mpmath reference (`graphplan.reference`), over the quantities of the "
              "error table at each fixture's twelve positions, each divided by that quantity's largest magnitude over the "
              "twelve positions; *velocity* covers |v| of points, relative and sliding velocities and ω, *acceleration* the "
              "same for accelerations and ε. Time: best of a few runs of the method at all twelve positions."), ""]
@@ -136,8 +136,8 @@ def markdown(rows: list[Row], orders: Mapping[str, Mapping[str, float]], vectors
     for fixture, worst in vectors.items():
         lines.append(f"| {fixture} | " + " | ".join(f"{worst[k]:.1e}" for k in ("r", "v", "a", "angle", "omega", "epsilon")) + " |")
     lines += ["", ("Reading the table: the analytic solver agrees with the reference to a few units of double precision, "
-                  "the construction to about a thousand (its lines of action are crossed as segments drawn a thousand "
-                  "times the figure's size long, graphplan.geometry); drafting errors follow the ruler (about the precision over the length of the "
+                  "and so does the construction (its lines of action are crossed from their own points, "
+                  "graphplan.geometry.cross_lines); drafting errors follow the ruler (about the precision over the length of the "
                   "segment read); the diagrams converge as N⁻², so that reaching the construction's accuracy would need "
                   "more positions than double precision can difference."), ""]
     return "\n".join(lines)
