@@ -203,7 +203,7 @@ def _laid_along_guide(plan: Plan, slide: complex) -> tuple[Step, LaidVector] | N
     (a normal or tangential component) from standing in for a zero slide.
     """
     for step in plan.steps:
-        along = {line.through for line in step.lines if line.meaning.startswith("∥")}
+        along = {line.through for line in step.lines if line.along.parallel}
         for vector in step.vectors:
             if vector.start not in along or vector.end not in step.fixes or vector.start == vector.end:
                 continue

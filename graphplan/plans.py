@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Literal, get_args
 
 from .geometry import (
     Line,
@@ -56,13 +56,107 @@ class LaidVector:
     meaning: str
 
 
+LineKind = Literal["perpendicular", "parallel", "guide", "frame_line", "slot", "slide"]
+_LINE_KINDS = frozenset(get_args(LineKind))
+
+
+@dataclass(frozen=True)
+class LineMeaning:
+    """What a line of action is drawn along, as fields a report can word in any language.
+
+    ``perpendicular`` and ``parallel`` lines run square to or along the
+    segment between the mechanism's ``points`` (``⊥ AB``, ``∥ CA``); a
+    ``guide`` line along a guide on the frame (``link`` None) or on ``link``;
+    a ``frame_line`` along the frame line ``name``; a ``slot`` line along the
+    slot cut in ``link``; a ``slide`` line along the slide of ``link`` where
+    it misses the link's points.
+    """
+
+    kind: LineKind
+    points: tuple[str, ...] = ()
+    link: int | None = None
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        if self.kind not in _LINE_KINDS:
+            raise ValueError(f"a line of action is one of {sorted(_LINE_KINDS)}, not {self.kind!r}")
+        if self.kind in ("perpendicular", "parallel") and len(self.points) != 2:
+            raise ValueError(f"a {self.kind} line of action names two points, not {self.points!r}")
+        if self.kind in ("slot", "slide") and self.link is None:
+            raise ValueError(f"a {self.kind} line of action names its link")
+        if self.kind == "frame_line" and not self.name:
+            raise ValueError("a frame_line line of action names its frame line")
+
+    @property
+    def parallel(self) -> bool:
+        """Whether the line runs along a slide (``∥ …``) rather than square to a link (``⊥ …``)."""
+        return self.kind != "perpendicular"
+
+    @property
+    def text(self) -> str:
+        """The line as drawings and records name it: ``⊥ AB``, ``∥ guide on link 4``, ``∥ slot``."""
+        if self.kind == "perpendicular":
+            return "⊥ " + "".join(self.points)
+        if self.kind == "parallel":
+            return "∥ " + "".join(self.points)
+        if self.kind == "guide":
+            return "∥ guide" if self.link is None else f"∥ guide on link {self.link}"
+        if self.kind == "frame_line":
+            return f"∥ {self.name}"
+        if self.kind == "slot":
+            return "∥ slot"
+        return f"∥ slide of link {self.link}"
+
+
 @dataclass(frozen=True)
 class DrawnLine:
-    """A line of action through the plan point ``through``, along ``direction``, described by ``meaning``."""
+    """A line of action through the plan point ``through``, along ``direction``; ``along`` says what it follows."""
 
     through: str
     direction: complex
-    meaning: str
+    along: LineMeaning
+
+    @property
+    def meaning(self) -> str:
+        """The line's name as the drawings and records show it (``⊥ AB``, ``∥ guide``)."""
+        return self.along.text
+
+
+@dataclass(frozen=True)
+class Similarity:
+    """How the plan point ``letter``, the image of ``link``'s point ``point``, was placed by the similarity theorem.
+
+    The figure of the two images ``basis`` already on the plan and ``letter``
+    is similar to that of the points ``basis_points`` and ``point`` on the
+    link (``abe ∼ ABE``).  A link with fewer than two images on the plan
+    (``basis`` empty) takes the figure of the link it turns with,
+    ``turns_with``.  ``point`` may name a link's point over a joint (``B4``,
+    link 4's point under B).
+    """
+
+    letter: str
+    point: str
+    link: int
+    basis: tuple[str, ...] = ()
+    basis_points: tuple[str, ...] = ()
+    turns_with: int | None = None
+
+    def __post_init__(self) -> None:
+        if len(self.basis) not in (0, 2) or len(self.basis_points) != len(self.basis):
+            raise ValueError(f"a similarity is built on two images and their two points, not {self.basis!r} "
+                             f"and {self.basis_points!r}")
+
+    @property
+    def figures(self) -> str:
+        """``abe ∼ ABE``: the figure on the plan and the figure on the mechanism it is similar to."""
+        return f"{''.join(self.basis)}{self.letter} ∼ {''.join(self.basis_points)}{self.point}"
+
+    @property
+    def text(self) -> str:
+        """The step's equation as the records write it (``e: abe ∼ ABE (similarity)``)."""
+        if self.basis:
+            return f"{self.letter}: {self.figures} (similarity)"
+        return f"{self.letter}: link {self.link} turns with link {self.turns_with} (similarity)"
 
 
 @dataclass(frozen=True)
@@ -73,6 +167,8 @@ class Step:
     vC + vBC``); ``vectors`` are the known vectors laid off and the unknown
     ones found; ``lines`` the lines of action drawn; ``fixes`` the plan points
     the step fixes; ``crossing_deg`` the angle at which its lines crossed.
+    A step that places a point by the similarity theorem lays off nothing and
+    says how in ``similarity`` (its ``equation`` is ``similarity.text``).
     """
 
     equation: str
@@ -80,6 +176,7 @@ class Step:
     lines: tuple[DrawnLine, ...] = ()
     fixes: tuple[str, ...] = ()
     crossing_deg: float | None = None
+    similarity: Similarity | None = None
 
 
 @dataclass(frozen=True)
@@ -211,10 +308,10 @@ class Builder:
         """Record that ``letter`` was placed by similarity from the images ``pair`` of ``link`` (``widest``)."""
         if pair is not None:
             (pa, la), (pb, lb) = pair
-            basis = f"{la}{lb}{letter} ∼ {self.name_at(la, pa)}{self.name_at(lb, pb)}{point}"
+            similarity = Similarity(letter, point, link, (la, lb), (self.name_at(la, pa), self.name_at(lb, pb)))
         else:
-            basis = f"link {link} turns with link {self.turns_with.get(link)}"
-        self.step(Step(equation=f"{letter}: {basis} (similarity)", vectors=(), fixes=(letter,)))
+            similarity = Similarity(letter, point, link, turns_with=self.turns_with.get(link))
+        self.step(Step(equation=similarity.text, vectors=(), fixes=(letter,), similarity=similarity))
 
     def name_at(self, letter: str, position: complex) -> str:
         """The mechanism's name of the point at ``position`` whose image is ``letter`` (``A4`` for ``a4``)."""
@@ -321,8 +418,11 @@ __all__ = [
     "Builder",
     "DrawnLine",
     "LaidVector",
+    "LineKind",
+    "LineMeaning",
     "ParallelLinesError",
     "Plan",
+    "Similarity",
     "Step",
     "acceleration_plan",
     "guide_at",

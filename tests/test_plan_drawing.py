@@ -24,7 +24,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.locale import strings
-from graphplan.plans import PLAN_FIELD_MM, DrawnLine, LaidVector, Step
+from graphplan.plans import PLAN_FIELD_MM, DrawnLine, LaidVector, LineMeaning, Step
 from graphplan.render import labels, linkage, positions
 from graphplan.render import plans as sheet_layout
 from graphplan.render.drawings import (
@@ -277,7 +277,7 @@ def test_a_step_of_a_new_kind_is_drawn_from_its_record_alone(ratchet):
     k, d = b + 10.0 * plan.scale * 1j, b + (10.0j + 25.0) * plan.scale
     step = Step("aD = aB + aDBᵏ + aDBʳ", (LaidVector("b", "k", "aDBᵏ"), LaidVector("k", "d", "aDBʳ"),
                                          LaidVector("p", "d", "aD")),
-                lines=(DrawnLine("k", 1 + 0j, "∥ guide"),), fixes=("k", "d"), crossing_deg=90.0)
+                lines=(DrawnLine("k", 1 + 0j, LineMeaning("guide")),), fixes=("k", "d"), crossing_deg=90.0)
     extended = dataclasses.replace(plan, points={**plan.points, "k": k, "d": d}, steps=plan.steps + (step,),
                                    images={**plan.images, "D": "d"})
     layers = layers_of(dataclasses.replace(sheet, acceleration=extended))

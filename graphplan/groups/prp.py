@@ -29,8 +29,8 @@ from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide
 from .sliding import (
     coriolis,
     coriolis_letter,
-    guide_label,
     guide_link,
+    guide_meaning,
     guide_point,
     turns,
 )
@@ -117,8 +117,8 @@ class PRP(Group):
             _, along, carrier = board.guide_line(guide)
             sides.append((slider, guide, along, carrier, guide_point(board, carrier, b_name)))
         (_, g1, u1, _, b1), (_, g2, u2, _, b2) = sides
-        value, angle = board.cross(Line(board.points[b1], u1, guide_label(g1)),
-                                   Line(board.points[b2], u2, guide_label(g2)))
+        along1, along2 = guide_meaning(g1), guide_meaning(g2)
+        value, angle = board.cross(Line(board.points[b1], u1, along1.text), Line(board.points[b2], u2, along2.text))
         b = board.fix(b_name, value)
         laid, terms = [], []
         for slider, guide, along, carrier, under in sides:
@@ -132,7 +132,7 @@ class PRP(Group):
         board.step(Step(
             equation=f"v{b_name} = {terms[0]} = {terms[1]}",
             vectors=(*laid, LaidVector("p", b, f"v{b_name}")),
-            lines=(DrawnLine(b1, u1, guide_label(g1)), DrawnLine(b2, u2, guide_label(g2))),
+            lines=(DrawnLine(b1, u1, along1), DrawnLine(b2, u2, along2)),
             fixes=(b,), crossing_deg=angle))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
@@ -162,8 +162,8 @@ class PRP(Group):
             terms.append(f"{term} + a{b_name}{g}^r")
             sides.append((slider, guide, along, carrier, start, g))
         (_, g1, u1, _, k1, _), (_, g2, u2, _, k2, _) = sides
-        value, angle = board.cross(Line(board.points[k1], u1, guide_label(g1)),
-                                   Line(board.points[k2], u2, guide_label(g2)))
+        along1, along2 = guide_meaning(g1), guide_meaning(g2)
+        value, angle = board.cross(Line(board.points[k1], u1, along1.text), Line(board.points[k2], u2, along2.text))
         b = board.fix(b_name, value)
         for slider, guide, along, carrier, start, g in sides:
             board.on_link(slider, b_pos, b)
@@ -174,7 +174,7 @@ class PRP(Group):
         board.step(Step(
             equation=f"a{b_name} = {terms[0]} = {terms[1]}",
             vectors=(*laid, LaidVector("p", b, f"a{b_name}")),
-            lines=(DrawnLine(k1, u1, guide_label(g1)), DrawnLine(k2, u2, guide_label(g2))),
+            lines=(DrawnLine(k1, u1, along1), DrawnLine(k2, u2, along2)),
             fixes=(*marks, b), crossing_deg=angle))
 
     # The forces: the group cut free, as drawn.

@@ -29,15 +29,15 @@ from ..errors import SceneError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, unit
-from ..plans import Builder, DrawnLine, LaidVector, Plan, Step, image_name
+from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, image_name
 from ..reader import Table
 from .base import Context, Group, GroupMotion, Guide, read_guide
 from .sliding import (
     coriolis,
     coriolis_letter,
     free_letter,
-    guide_label,
     guide_link,
+    guide_meaning,
     guide_point,
     turns,
 )
@@ -125,10 +125,11 @@ class RPP(Group):
         a_name, b_name = self.joints
         block, slotted = self.links
         along_guide, along_slot, carrier = self._lines(board)
+        on_slot, on_guide = self._meanings()
         a = board.images[a_name]
         ag = guide_point(board, carrier, a_name)
-        value, angle = board.cross(Line(board.points[a], along_slot, "∥ slot"),
-                                   Line(board.points[ag], along_guide, guide_label(self.guide)))
+        value, angle = board.cross(Line(board.points[a], along_slot, on_slot.text),
+                                   Line(board.points[ag], along_guide, on_guide.text))
         a4 = board.mark(self._coincident(board), value)
         board.sliding[block] = board.points[a] - value
         board.sliding[slotted] = value - board.points[ag]
@@ -137,7 +138,7 @@ class RPP(Group):
         board.step(Step(
             equation=f"v{point} = v{pin} + v{point}{pin} = v{g} + v{point}{g}",
             vectors=(LaidVector(a, a4, f"v{point}{pin}"), *relative, LaidVector("p", a4, f"v{point}")),
-            lines=(DrawnLine(a, along_slot, "∥ slot"), DrawnLine(ag, along_guide, guide_label(self.guide))),
+            lines=(DrawnLine(a, along_slot, on_slot), DrawnLine(ag, along_guide, on_guide)),
             fixes=(a4,), crossing_deg=angle))
         self._place_b(board, "v", carrier, ag, a4)
 
@@ -152,6 +153,7 @@ class RPP(Group):
         a_name, b_name = self.joints
         block, slotted = self.links
         along_guide, along_slot, carrier = self._lines(board)
+        on_slot, on_guide = self._meanings()
         a = board.images[a_name]
         ag = guide_point(board, carrier, a_name)
         coincident = self._coincident(board)
@@ -167,8 +169,8 @@ class RPP(Group):
                                  board.points[ag] + coriolis(velocities.rates.get(carrier, 0.0), v_guide))
             laid += [LaidVector(a, k_slot, f"a{point}{pin}ᵏ"), LaidVector(ag, k_guide, f"a{point}{g}ᵏ")]
             equation = [f"{equation[0]} + a{point}{pin}ᵏ", f"{equation[1]} + a{point}{g}ᵏ"]
-        value, angle = board.cross(Line(board.points[k_slot], along_slot, "∥ slot"),
-                                   Line(board.points[k_guide], along_guide, guide_label(self.guide)))
+        value, angle = board.cross(Line(board.points[k_slot], along_slot, on_slot.text),
+                                   Line(board.points[k_guide], along_guide, on_guide.text))
         a4 = board.mark(coincident, value)
         board.sliding[block] = board.points[k_slot] - value
         board.sliding[slotted] = value - board.points[k_guide]
@@ -179,7 +181,7 @@ class RPP(Group):
         board.step(Step(
             equation=f"{equation[0]} + a{point}{pin}^r{equation[1]} + a{point}{g}^r",
             vectors=tuple(laid),
-            lines=(DrawnLine(k_slot, along_slot, "∥ slot"), DrawnLine(k_guide, along_guide, guide_label(self.guide))),
+            lines=(DrawnLine(k_slot, along_slot, on_slot), DrawnLine(k_guide, along_guide, on_guide)),
             fixes=(*(m for m in (k_slot, k_guide) if m not in (a, ag)), a4), crossing_deg=angle))
         self._place_b(board, "a", carrier, ag, a4)
 
@@ -187,6 +189,10 @@ class RPP(Group):
         """The guide's and the slot's directions, and the guide's link."""
         _, along_guide, carrier = board.guide_line(self.guide)
         return along_guide, along_guide * unit(self.angle), carrier
+
+    def _meanings(self) -> tuple[LineMeaning, LineMeaning]:
+        """What the two lines of action follow: the slot cut in link b, and the guide."""
+        return LineMeaning("slot", link=self.links[1]), guide_meaning(self.guide)
 
     def _coincident(self, board: Builder) -> str:
         """The plan letter of link b's point under A (``a4``)."""

@@ -27,7 +27,7 @@ from ..errors import AssemblyError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
-from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
+from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
 from .base import Context, Group, GroupMotion, check_lines_cross
 from .sliding import coriolis, coriolis_letter
@@ -113,13 +113,14 @@ class RPR(Group):
 
     # The plans: the same equations, solved by crossing lines of action.
 
-    def _slide(self, board: Builder) -> tuple[complex, complex, complex, str]:
-        """A's and C's positions, the slide's direction (the lever's line) and how its line of action is described."""
+    def _slide(self, board: Builder) -> tuple[complex, complex, complex, LineMeaning]:
+        """A's and C's positions, the slide's direction (the lever's line) and what its line of action follows."""
         a_name, c_name = self.joints
         a_pos, c_pos = board.positions[a_name], board.positions[c_name]
         along = board.directions[self.links[1]]
-        label = f"∥ {c_name}{a_name}" if self.offset == 0.0 else f"∥ slide of link {self.links[1]}"
-        return a_pos, c_pos, along, label
+        slide = (LineMeaning("parallel", (c_name, a_name)) if self.offset == 0.0
+                 else LineMeaning("slide", link=self.links[1]))
+        return a_pos, c_pos, along, slide
 
     def construct_velocity(self, board: Builder) -> None:
         """vA4 = vA3 + vA4A3 (∥ slide) = vC + vA4C (⊥ CA): lines through a3 and c, crossed at a4.
@@ -130,10 +131,10 @@ class RPR(Group):
         """
         a_name, c_name = self.joints
         block, lever = self.links
-        a_pos, c_pos, along, label = self._slide(board)
+        a_pos, c_pos, along, slide = self._slide(board)
         a, c = board.images[a_name], board.images[c_name]
         across_ca = 1j * (a_pos - c_pos)
-        value, angle = board.cross(Line(board.points[a], along, label),
+        value, angle = board.cross(Line(board.points[a], along, slide.text),
                                    Line(board.points[c], across_ca, f"⊥{c_name}{a_name}"))
         a4 = board.fix(self.coincident, value)
         board.on_link(lever, c_pos, c)
@@ -146,7 +147,7 @@ class RPR(Group):
             equation=f"v{point} = v{pin} + v{point}{pin} = v{c_name} + v{point}{c_name}",
             vectors=(LaidVector(a, a4, f"v{point}{pin}"), LaidVector(c, a4, f"v{point}{c_name}"),
                      LaidVector("p", a4, f"v{point}")),
-            lines=(DrawnLine(a, along, label), DrawnLine(c, across_ca, f"⊥ {c_name}{a_name}")),
+            lines=(DrawnLine(a, along, slide), DrawnLine(c, across_ca, LineMeaning("perpendicular", (c_name, a_name)))),
             fixes=(a4,), crossing_deg=angle))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
@@ -160,14 +161,14 @@ class RPR(Group):
         """
         a_name, c_name = self.joints
         block, lever = self.links
-        a_pos, c_pos, along, label = self._slide(board)
+        a_pos, c_pos, along, slide = self._slide(board)
         a, c = board.images[a_name], board.images[c_name]
         omega = velocities.rates[lever]
         v_rel = velocities.value(self.coincident) - velocities.value(a_name)
         k = board.mark(coriolis_letter(board, block), board.points[a] + coriolis(omega, v_rel))
         normal = board.mark(f"n{lever}", board.points[c] - omega**2 * (a_pos - c_pos))
         across_ca = 1j * (a_pos - c_pos)
-        value, angle = board.cross(Line(board.points[k], along, label),
+        value, angle = board.cross(Line(board.points[k], along, slide.text),
                                    Line(board.points[normal], across_ca, f"⊥{c_name}{a_name}"))
         a4 = board.fix(self.coincident, value)
         board.on_link(lever, c_pos, c)
@@ -182,7 +183,8 @@ class RPR(Group):
             vectors=(LaidVector(a, k, f"a{point}{pin}ᵏ"), LaidVector(k, a4, f"a{point}{pin}^r"),
                      LaidVector(c, normal, f"a{point}{c_name}ⁿ"), LaidVector(normal, a4, f"a{point}{c_name}^τ"),
                      LaidVector("p", a4, f"a{point}")),
-            lines=(DrawnLine(k, along, label), DrawnLine(normal, across_ca, f"⊥ {c_name}{a_name}")),
+            lines=(DrawnLine(k, along, slide),
+                   DrawnLine(normal, across_ca, LineMeaning("perpendicular", (c_name, a_name)))),
             fixes=(k, normal, a4), crossing_deg=angle))
 
     # The forces: the group cut free, as drawn.

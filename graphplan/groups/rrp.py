@@ -33,7 +33,7 @@ from ..kinematics import (
     cross,
     dot,
 )
-from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
+from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
 from .base import (
     Context,
@@ -49,8 +49,8 @@ from .base import (
 from .sliding import (
     coriolis,
     coriolis_letter,
-    guide_label,
     guide_link,
+    guide_meaning,
     guide_point,
     turns,
 )
@@ -166,9 +166,9 @@ class RRP(Group):
         a = board.images[a_name]
         bg = guide_point(board, carrier, b_name)
         across_ab = 1j * (b_pos - a_pos)
-        label = guide_label(self.guide)
+        on_guide = guide_meaning(self.guide)
         value, angle = board.cross(Line(board.points[a], across_ab, f"⊥{a_name}{b_name}"),
-                                   Line(board.points[bg], along_guide, label))
+                                   Line(board.points[bg], along_guide, on_guide.text))
         b = board.fix(b_name, value)
         board.on_link(rod, a_pos, a)
         board.on_link(rod, b_pos, b)
@@ -180,7 +180,8 @@ class RRP(Group):
         board.step(Step(
             equation=f"v{b_name} = v{a_name} + v{b_name}{a_name} = v{g} + v{b_name}{g}",
             vectors=(LaidVector(a, b, f"v{b_name}{a_name}"), *relative, LaidVector("p", b, f"v{b_name}")),
-            lines=(DrawnLine(a, across_ab, f"⊥ {a_name}{b_name}"), DrawnLine(bg, along_guide, label)),
+            lines=(DrawnLine(a, across_ab, LineMeaning("perpendicular", (a_name, b_name))),
+                   DrawnLine(bg, along_guide, on_guide)),
             fixes=(b,), crossing_deg=angle))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
@@ -211,9 +212,9 @@ class RRP(Group):
             equation += f" + a{b_name}{g}ᵏ"
         equation += f" + a{b_name}{g}^r"
         across_ab = 1j * (b_pos - a_pos)
-        label = guide_label(self.guide)
+        on_guide = guide_meaning(self.guide)
         value, angle = board.cross(Line(board.points[normal], across_ab, f"⊥{a_name}{b_name}"),
-                                   Line(board.points[start], along_guide, label))
+                                   Line(board.points[start], along_guide, on_guide.text))
         b = board.fix(b_name, value)
         board.on_link(rod, a_pos, a)
         board.on_link(rod, b_pos, b)
@@ -226,7 +227,8 @@ class RRP(Group):
         laid.append(LaidVector("p", b, f"a{b_name}"))
         board.step(Step(
             equation=equation, vectors=tuple(laid),
-            lines=(DrawnLine(normal, across_ab, f"⊥ {a_name}{b_name}"), DrawnLine(start, along_guide, label)),
+            lines=(DrawnLine(normal, across_ab, LineMeaning("perpendicular", (a_name, b_name))),
+                   DrawnLine(start, along_guide, on_guide)),
             fixes=(normal, *((start,) if start != bg else ()), b), crossing_deg=angle))
 
     # The forces: the group cut free, as drawn.

@@ -18,7 +18,7 @@ from ..errors import AssemblyError
 from ..forces import ForceBoard, PolygonBuilder
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, Scalar, carried, norm2
-from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
+from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
 from .base import (
     Context,
@@ -159,7 +159,8 @@ class RRR(Group):
             equation=f"v{b_name} = v{a_name} + v{b_name}{a_name} = v{c_name} + v{b_name}{c_name}",
             vectors=(LaidVector(a, b, f"v{b_name}{a_name}"), LaidVector(c, b, f"v{b_name}{c_name}"),
                      LaidVector("p", b, f"v{b_name}")),
-            lines=(DrawnLine(a, along_ab, f"⊥ {a_name}{b_name}"), DrawnLine(c, along_cb, f"⊥ {c_name}{b_name}")),
+            lines=(DrawnLine(a, along_ab, LineMeaning("perpendicular", (a_name, b_name))),
+                   DrawnLine(c, along_cb, LineMeaning("perpendicular", (c_name, b_name)))),
             fixes=(b,), crossing_deg=angle))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
@@ -183,8 +184,8 @@ class RRR(Group):
             vectors=(LaidVector(a, normal_a, f"a{b_name}{a_name}ⁿ"), LaidVector(normal_a, b, f"a{b_name}{a_name}^τ"),
                      LaidVector(c, normal_b, f"a{b_name}{c_name}ⁿ"), LaidVector(normal_b, b, f"a{b_name}{c_name}^τ"),
                      LaidVector("p", b, f"a{b_name}")),
-            lines=(DrawnLine(normal_a, along_ab, f"⊥ {a_name}{b_name}"),
-                   DrawnLine(normal_b, along_cb, f"⊥ {c_name}{b_name}")),
+            lines=(DrawnLine(normal_a, along_ab, LineMeaning("perpendicular", (a_name, b_name))),
+                   DrawnLine(normal_b, along_cb, LineMeaning("perpendicular", (c_name, b_name)))),
             fixes=(normal_a, normal_b, b), crossing_deg=angle))
 
     # The forces: the group cut free, as drawn.

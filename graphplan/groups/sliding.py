@@ -9,7 +9,7 @@ that are here.
 from __future__ import annotations
 
 from ..geometry import turned
-from ..plans import Builder, image_name
+from ..plans import Builder, LineMeaning, image_name
 from .base import Guide
 
 
@@ -42,14 +42,11 @@ def coriolis(omega: float, relative: complex) -> complex:
     return turned(2.0 * abs(omega) * relative, omega)
 
 
-def guide_label(guide: Guide) -> str:
-    """How a line of action along ``guide`` is described."""
+def guide_meaning(guide: Guide) -> LineMeaning:
+    """What a line of action along ``guide`` follows: the frame line it names, or the guide on its link."""
     if guide.line is not None:
-        return f"∥ {guide.line}"
-    return "∥ guide" if guide.link is None else f"∥ guide on link {guide.link}"
-
-
-
+        return LineMeaning("frame_line", name=guide.line)
+    return LineMeaning("guide", link=guide.link)
 
 
 def free_letter(board: Builder, letter: str) -> str:

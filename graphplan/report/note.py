@@ -35,7 +35,7 @@ import numpy as np
 from ..analysis import Analysis, PlanPosition
 from ..check import Reading
 from ..locale import strings
-from ..plans import PLAN_FIELD_MM, LaidVector, Plan, Step, image_name
+from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..scales import format_scale, standard_scale
 from . import forces as force_report
 from .tables import error_table_lines, quantity_symbol
@@ -247,9 +247,9 @@ class _Note:
                 group = unit.solver
                 self.para(f"**{self.t('note_group_heading', group=group.label, kind=self.kind_name(group.kind))}**")
                 for step in steps:
-                    if not _is_similarity(step):
+                    if step.similarity is None:
                         self.group_step(pp, plan, step)
-            similar = [self.similarity(pp, plan, step) for step in steps if _is_similarity(step)]
+            similar = [self.similarity(pp, plan, step.similarity) for step in steps if step.similarity is not None]
             if similar:
                 self.para(self.t("note_similarity"), *(f"- {line}" for line in similar))
         self.readings(pp, plan)
@@ -276,8 +276,8 @@ class _Note:
                     pending.remove(k)
         found: dict[int, list[Step]] = {k: [] for k in range(len(units))}
         for i, step in enumerate(plan.steps):
-            if _is_similarity(step) and step.fixes and step.fixes[0] in named:
-                found[named[step.fixes[0]]].append(step)
+            if step.similarity is not None and step.similarity.letter in named:
+                found[named[step.similarity.letter]].append(step)
                 continue
             owner = next((k for k in range(len(units)) if ends[k] >= i), len(units) - 1)
             found[owner].append(step)
@@ -379,7 +379,7 @@ class _Note:
                   self.t("column_direction")]
         self.table(None, header, [[term.name, term.modulus, term.segment, term.direction] for term in terms])
         if step.lines and step.fixes:
-            lines = self.text["semicolon"].join(self.t("note_line_through", line=self.line(line.meaning),
+            lines = self.text["semicolon"].join(self.t("note_line_through", line=self.line(line.along),
                                      point=self.letter(plan, line.through)) for line in step.lines)
             angle = f"{self.n(step.crossing_deg, 4)}" if step.crossing_deg is not None else "—"
             self.para(self.t("note_lines_cross", lines=lines, point=self.letter(plan, step.fixes[-1]), angle=angle))
@@ -394,19 +394,15 @@ class _Note:
             return self.t("note_translates", link=match.group(1))
         return note
 
-    def line(self, meaning: str) -> str:
-        """A line of action as the record names it (⊥ AB, ∥ guide), in the note's language."""
-        if meaning == "∥ guide":
-            return "∥ " + self.text["note_guide"]
-        if meaning == "∥ slot":
+    def line(self, along: LineMeaning) -> str:
+        """A line of action (⊥ AB, ∥ guide) in the note's language; points and frame lines keep their names."""
+        if along.kind == "guide":
+            return "∥ " + (self.text["note_guide"] if along.link is None else self.t("note_guide_on_link", link=along.link))
+        if along.kind == "slot":
             return "∥ " + self.text["note_slot"]
-        match = re.fullmatch(r"∥ guide on link (\d+)", meaning)
-        if match:
-            return "∥ " + self.t("note_guide_on_link", link=match.group(1))
-        match = re.fullmatch(r"∥ slide of link (\d+)", meaning)
-        if match:
-            return "∥ " + self.t("note_slide_of_link", link=match.group(1))
-        return meaning
+        if along.kind == "slide":
+            return "∥ " + self.t("note_slide_of_link", link=along.link)
+        return along.text
 
     def resolve(self, plan: Plan, point: str) -> str | None:
         """The plan letter of a point an equation names: a mechanism point, a guide link's point (B4), or a
@@ -480,7 +476,7 @@ class _Note:
         through = [line for line in step.lines if line.through == start]
         if len(through) > 1 and side < len(step.lines) and step.lines[side].through == start:
             through = [step.lines[side]]
-        direction = self.line(through[0].meaning) if through else "—"
+        direction = self.line(through[0].along) if through else "—"
         return _Term(shown, "?", segment, direction)
 
     def normal(self, pp: PlanPosition, plan: Plan, name: str, value: float) -> tuple[str, str]:
@@ -556,32 +552,20 @@ class _Note:
 
     # The similarity theorem.
 
-    def similarity(self, pp: PlanPosition, plan: Plan, step: Step) -> str:
+    def similarity(self, pp: PlanPosition, plan: Plan, similar: Similarity) -> str:
         """``as3 = ab·lAS3/lAB = …`` for a point on the line of two known images, and the second side of the
-        triangle for a point off it; the record's own words when it cannot be read that way."""
-        letter = step.fixes[0]
-        match = re.fullmatch(r"(\S+): (\S+) ∼ (\S+) \(similarity\)", step.equation)
-        fallback = self.similarity_words(step.equation)
-        if match is None:
+        triangle for a point off it; the two similar figures when it cannot be read that way."""
+        letter = similar.letter
+        if not similar.basis:
+            return self.t("note_turns_with", point=letter, link=similar.link, other=similar.turns_with)
+        fallback = letter + self.text["colon"] + similar.figures
+        (la, lb), (na, nb), target = similar.basis, similar.basis_points, similar.point
+        pa, pb, where = self.position(pp, na), self.position(pp, nb), self.position(pp, target)
+        if pa is None or pb is None or where is None:
             return fallback
-        plan_side, link_side = match.group(2), match.group(3)
-        target = next((name for name, image in plan.images.items() if image == letter), letter.upper())
-        if not plan_side.endswith(letter) or not link_side.endswith(target):
-            return fallback
-        letters = sorted(plan.points, key=len, reverse=True)
-        base = plan_side[:-len(letter)]
-        pair = next(((first, base[len(first):]) for first in letters
-                     if base.startswith(first) and base[len(first):] in plan.points), None)
-        names = self.split(link_side[:-len(target)], pp)
-        where = self.position(pp, target)
-        if pair is None or names is None or where is None:
-            return fallback
-        (la, lb), (na, nb) = pair, names
-        link = self.link_of_point(target)
-        if link in self.mechanism.translating:
-            return self.t("note_translating_image", point=self.letter(plan, letter), link=link,
+        if similar.link in self.mechanism.translating:
+            return self.t("note_translating_image", point=self.letter(plan, letter), link=similar.link,
                           other=self.letter(plan, la))
-        pa, pb = self.position(pp, na), self.position(pp, nb)
         span = abs(pb - pa)
         if span == 0:
             return fallback
@@ -603,22 +587,6 @@ class _Note:
             line += self.text["semicolon"] + self.t("note_similar_triangle", plan=self.segment(plan, la, lb) + self.letter(plan, letter),
                                   link=f"{na}{nb}{target}")
         return line
-
-    def link_of_point(self, name: str) -> int | None:
-        """The link a named point is fixed on, or the link a guide link's point (B4) is named after."""
-        for unit in self.mechanism.units:
-            for spec in unit.points:
-                if spec.name == name:
-                    return spec.link
-        match = re.fullmatch(r"[A-Z][a-z]?(\d+)", name)
-        return int(match.group(1)) if match else None
-
-    def similarity_words(self, equation: str) -> str:
-        equation = equation.replace(" (similarity)", "")
-        match = re.fullmatch(r"(\S+): link (\d+) turns with link (\S+)", equation)
-        if match:
-            return self.t("note_turns_with", point=match.group(1), link=match.group(2), other=match.group(3))
-        return equation
 
     # Values read off the plan.
 
@@ -896,10 +864,6 @@ class _Note:
                              polygons=self.n(polygons, 6), delta=self.n(difference, 3)))
         self.captioned(self.t("note_balancing_table", name=name, number=plan.number),
                        force_report.balancing_lines(analysis, plan, self.mark))
-
-
-def _is_similarity(step: Step) -> bool:
-    return step.equation.endswith("(similarity)") and not step.vectors
 
 
 def _parenthesis(text: str) -> tuple[str, str]:
