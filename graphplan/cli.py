@@ -80,7 +80,7 @@ def _check(path: Path) -> int:
 
     scene = load(path)
     if not scene.has_linkage:
-        tables = [name for name in ("balancing", "vibration") if getattr(scene, name) is not None]
+        tables = [name for name in ("dynamics", "balancing", "vibration") if getattr(scene, name) is not None]
         print(f"{path}: ok")
         print(f"no mechanism; {', '.join(tables)}")
         return 0

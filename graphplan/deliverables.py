@@ -52,6 +52,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return None if scene.balancing is not None else "needs a [balancing] table"
     if piece == "vibration":
         return None if scene.vibration is not None else "needs a [vibration] table"
+    if piece == "dynamics" and scene.dynamics is not None and scene.dynamics.diagrams:
+        return None  # a load diagram needs no mechanism
     if analysis is None:
         return _NO_LINKAGE
     if piece == "sheets" and scene.drawing.sheet == "none":
@@ -109,6 +111,11 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
     found: list[Drawing] = []
     if analysis is not None:
         found += _linkage_drawings(analysis, pieces)
+    elif "dynamics" in pieces:
+        from .render import dynamics as dynamics_layout
+
+        model, flywheel = machine_dynamics(scene)
+        found.append(Drawing("dynamics", dynamics_layout.layout(model, flywheel, strings(scene.locale))))
     if "balancing" in pieces:
         from .render import balancing as balancing_layout
         from .rotor_balancing import balance
@@ -164,13 +171,20 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
     return found
 
 
-def machine_dynamics(analysis: Analysis):
-    """The equivalent model of the scene's ``[dynamics]`` and the flywheel it asks for (None without δ)."""
-    from .dynamics import equivalent_model_of
-    from .flywheel import flywheel_from_spec
+def machine_dynamics(source: Analysis | Scene):
+    """The equivalent model of the scene's ``[dynamics]`` and the flywheel it asks for (None without δ).
 
-    spec = analysis.scene.dynamics
-    model = equivalent_model_of(analysis, spec.count, constant=spec.constant)
+    ``source`` is the analysis of a linkage, or a scene without one whose ``[dynamics]`` gives load diagrams.
+    """
+    from .dynamics import equivalent_model_of
+    from .flywheel import diagram_model_of, flywheel_from_spec
+
+    if isinstance(source, Scene):
+        spec = source.dynamics
+        model = diagram_model_of(spec)
+    else:
+        spec = source.scene.dynamics
+        model = equivalent_model_of(source, spec.count, constant=spec.constant)
     return model, flywheel_from_spec(model, spec)
 
 
@@ -291,13 +305,13 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
     from .report.results import results, results_without_linkage, rounded
 
     found = results(analysis) if analysis is not None else results_without_linkage(scene)
-    if "dynamics" in pieces and analysis is not None:
+    if "dynamics" in pieces:
         from .flywheel import dynamics_results
 
-        model, flywheel = machine_dynamics(analysis)
+        model, flywheel = machine_dynamics(analysis if analysis is not None else scene)
         found["dynamics"] = dynamics_results(model, flywheel)
-        if analysis.scene.dynamics.motion is not None:
-            found["dynamics"]["motion"] = rounded(machine_run(model, analysis.scene.dynamics, flywheel))
+        if scene.dynamics.motion is not None:
+            found["dynamics"]["motion"] = rounded(machine_run(model, scene.dynamics, flywheel))
     if "balancing" in pieces:
         from .rotor_balancing import balance, balancing_results
 

@@ -42,6 +42,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import ArrayLike
 from scipy.integrate import cumulative_trapezoid, trapezoid
 
 from .kinematics import dot, norm2
@@ -105,7 +106,7 @@ class EquivalentModel:
         ``"crank"``: a turning equivalent link (Je in kg·m², moments in N·m, ψ in rad);
         ``"slider"``: a translating one (me in kg, forces in N, ψ in m).
     link
-        The driver's link number.
+        The driver's link number; 0 for a model made from load diagrams alone (:func:`diagram_model`).
     speed
         |ω1| (rad/s) or |v1| (m/s): the speed the analysis ran at; the ratios do not depend on it.
     sense
@@ -268,6 +269,109 @@ def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
     return equivalent_model(mechanism, motion, acting, constant=constant, plans=reductions)
 
 
+def diagram_model(speed: float, driving: tuple[ArrayLike, ArrayLike] | None = None,
+                  resisting: tuple[ArrayLike, ArrayLike] | None = None, *, inertia: float = 0.0,
+                  count: int = DEFAULT_COUNT) -> EquivalentModel:
+    """The equivalent model of a machine given by its load diagrams alone, with no linkage.
+
+    Parameters
+    ----------
+    speed
+        The shaft's mean speed ωm (rad/s).
+    driving, resisting
+        ``(angles, moments)``: vertices of the driving moment and of the resisting one (what the
+        resistance takes, positive) over one turn, angles in rad rising from 0 to 2π, the moments
+        piecewise linear between them; an angle given twice is a jump.  A side left out (None) is
+        the constant moment that balances the work over the turn.
+    inertia
+        The machine's own reduced moment of inertia, taken constant (kg·m²).
+    count
+        Equal steps of the turn sampled besides the vertices, for the drawing.
+
+    The samples hold every vertex (both sides of a jump) and every zero of the net moment, so that
+    the works and ΔWmax are exact for the diagrams as given.
+    """
+    if not (math.isfinite(speed) and speed > 0):
+        raise ValueError(f"speed must be a positive number (rad/s), not {speed!r}")
+    if not (math.isfinite(inertia) and inertia >= 0):
+        raise ValueError(f"inertia must be a number >= 0 (kg·m²), not {inertia!r}")
+    if not isinstance(count, int) or isinstance(count, bool) or count < 2:
+        raise ValueError(f"count must be an integer >= 2, not {count!r}")
+    if driving is None and resisting is None:
+        raise ValueError("give the driving or the resisting diagram (or both); a side left out is taken constant")
+    sides = {name: None if given is None else _turn_diagram(name, given)
+             for name, given in (("driving", driving), ("resisting", resisting))}
+    turn = 2.0 * math.pi
+    vertices = np.concatenate([angles for angles, _ in filter(None, sides.values())])
+    even = np.linspace(0.0, turn, count + 1)
+    # An even sample a rounding away from a vertex would be a sliver of an interval: the vertex stands for it.
+    near = np.min(np.abs(even[:, None] - vertices[None, :]), axis=1) <= 1e-9 * turn
+    single = np.unique(np.concatenate([even[~near], vertices]))
+    jumps = np.unique(np.concatenate([angles[1:][np.diff(angles) == 0] for angles, _ in filter(None, sides.values())]))
+    samples = np.sort(np.concatenate([single, jumps]), kind="stable")
+    # At a jump the first of its two samples takes the value before it, the second the value after.
+    first = np.concatenate([[True], np.diff(samples) > 0])
+    second_of_jump = ~first
+    before = np.zeros(len(samples), dtype=bool)
+    before[np.flatnonzero(second_of_jump) - 1] = True
+    values = {name: None if given is None else _at(*given, samples, before) for name, given in sides.items()}
+    chosen = "none"
+    for name, other in (("driving", "resisting"), ("resisting", "driving")):
+        if values[name] is None:
+            chosen = name
+            values[name] = np.full(len(samples), float(trapezoid(values[other], samples)) / turn)
+    drive, resist = values["driving"], values["resisting"]
+    samples, drive, resist = _with_net_zeros(samples, drive, resist)
+    return EquivalentModel(kind="crank", link=0, speed=float(speed), sense=1.0, driver=samples, coordinate=samples,
+                           inertia=np.full(len(samples), float(inertia)), inertia_slope=np.zeros(len(samples)),
+                           link_inertia=MappingProxyType({0: np.full(len(samples), float(inertia))}),
+                           driving=drive, resisting=-resist, constant=chosen)
+
+
+def _turn_diagram(name: str, given: tuple[ArrayLike, ArrayLike]) -> tuple[np.ndarray, np.ndarray]:
+    """The vertices of a diagram over one turn, checked."""
+    try:
+        angles, moments = (np.asarray(part, dtype=float) for part in given)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be (angles, moments), two sequences of numbers") from None
+    if angles.ndim != 1 or angles.shape != moments.shape or len(angles) < 2:
+        raise ValueError(f"{name} needs as many angles as moments, at least two")
+    if not (np.all(np.isfinite(angles)) and np.all(np.isfinite(moments))):
+        raise ValueError(f"{name} must hold finite numbers")
+    if angles[0] != 0.0 or abs(angles[-1] - 2.0 * math.pi) > 1e-12 or np.any(np.diff(angles) < 0):
+        raise ValueError(f"{name}'s angles must rise from 0 to 2π (an angle given twice is a jump)")
+    if np.any((np.diff(angles)[1:] == 0) & (np.diff(angles)[:-1] == 0)):
+        raise ValueError(f"{name} gives an angle more than twice; a jump needs two")
+    angles = angles.copy()
+    angles[np.abs(angles - 2.0 * math.pi) <= 1e-12] = 2.0 * math.pi
+    return angles, moments
+
+
+def _at(angles: np.ndarray, moments: np.ndarray, x: np.ndarray, before: np.ndarray) -> np.ndarray:
+    """The piecewise-linear diagram at ``x``: where ``before`` (a jump's first side), the value reached from the left."""
+    last = len(angles) - 2
+    index = np.where(before, np.searchsorted(angles, x, side="left") - 1, np.searchsorted(angles, x, side="right") - 1)
+    index = np.clip(index, 0, last)
+    width = angles[index + 1] - angles[index]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        share = np.where(width > 0, (x - angles[index]) / np.where(width > 0, width, 1.0), np.where(before, 0.0, 1.0))
+    return moments[index] + share * (moments[index + 1] - moments[index])
+
+
+def _with_net_zeros(x: np.ndarray, drive: np.ndarray, resist: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The samples with every zero of ``drive − resist`` between two of them put in: the surplus turns there."""
+    net = drive - resist
+    crossing = np.flatnonzero((net[:-1] * net[1:] < 0) & (np.diff(x) > 0))
+    if len(crossing) == 0:
+        return x, drive, resist
+    share = net[crossing] / (net[crossing] - net[crossing + 1])
+    zeros = x[crossing] + share * (x[crossing + 1] - x[crossing])
+    between = drive[crossing] + share * (drive[crossing + 1] - drive[crossing])
+    order = np.argsort(np.concatenate([x, zeros]), kind="stable")
+    return (np.concatenate([x, zeros])[order], np.concatenate([drive, between])[order],
+            np.concatenate([resist, between])[order])
+
+
 def plan_reductions(analysis: Analysis) -> tuple[PlanReduction, ...]:
     """Je and Me at each plan position from its velocity plan, beside the analytic values there."""
     mechanism, motion = analysis.mechanism, analysis.motion
@@ -412,5 +516,5 @@ def _full(value, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (count,))
 
 
-__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "EquivalentModel", "PlanReduction", "equivalent_model",
-           "equivalent_model_of", "plan_reductions"]
+__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "EquivalentModel", "PlanReduction", "diagram_model",
+           "equivalent_model", "equivalent_model_of", "plan_reductions"]

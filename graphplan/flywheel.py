@@ -29,6 +29,7 @@ torque diagram over the crank angle, given as steps, as piecewise-linear vertice
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -37,9 +38,9 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.integrate import cumulative_trapezoid, trapezoid
 
-from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel
+from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_model
 from .errors import SceneError
-from .reader import Table
+from .reader import Table, check_xy
 
 # A cycle whose work is left over by more than this share of the work done is not steady.
 _BALANCE = 1e-6
@@ -290,6 +291,36 @@ def _tangent(energy: np.ndarray, inertia: np.ndarray, slope: float, above: bool)
 
 #: Keys of ``[dynamics]`` that the equation of motion reads (:func:`graphplan.machine_motion.read_motion`).
 MOTION_KEYS = ("motor", "brake", "clutch", "start", "duration", "method", "rtol", "steady_tolerance")
+#: The load diagrams of a ``[dynamics]`` table without a linkage, over one turn of the shaft.
+DIAGRAM_KEYS = ("resisting_torque", "resisting_power", "driving_torque", "driving_power")
+# Keys that only a scene without a linkage reads: with one, its loads and masses are reduced from the mechanism.
+_DIAGRAM_ONLY = (*DIAGRAM_KEYS, "driving", "resisting", "inertia")
+_SIDES = ("driving", "resisting")
+
+
+@dataclass(frozen=True)
+class LoadDiagram:
+    """One side's load over a turn of the shaft, from a ``[dynamics]`` table without a linkage.
+
+    ``angles_deg`` rise from 0 to 360 (an angle given twice is a jump), the load is piecewise linear
+    between them: a torque (N·m) or a power (W) by ``quantity``.  A resisting load's values are what
+    the resistance takes (positive).
+    """
+
+    key: str
+    side: str
+    quantity: str
+    angles_deg: tuple[float, ...]
+    values: tuple[float, ...]
+
+    def torques(self, omega_mean: float) -> np.ndarray:
+        """The load as a moment on the shaft (N·m): a power P becomes M = P/ωm at the mean speed."""
+        values = np.asarray(self.values, dtype=float)
+        return values / omega_mean if self.quantity == "power" else values
+
+    def work(self, omega_mean: float) -> float:
+        """The work over the turn (J): exact for the piecewise-linear diagram."""
+        return float(trapezoid(self.torques(omega_mean), np.radians(self.angles_deg)))
 
 
 @dataclass(frozen=True)
@@ -301,6 +332,8 @@ class DynamicsSpec:
     ``flywheel_shaft_rpm`` a shaft the flywheel is moved to; ``constant`` which reduced moment
     balances the cycle; ``count`` the samples of the cycle; ``motion`` the equation of motion to
     integrate (a :class:`~graphplan.machine_motion.MotionSpec`: the motor, a brake, a clutch), or None.
+    A scene without a linkage gives ``diagrams`` (one or two :class:`LoadDiagram`, a side each) and
+    the machine's own constant reduced ``inertia`` instead.
     """
 
     where: str
@@ -310,10 +343,22 @@ class DynamicsSpec:
     constant: str = "auto"
     count: int = DEFAULT_COUNT
     motion: Any = None
+    diagrams: tuple[LoadDiagram, ...] = ()
+    inertia: float = 0.0
 
 
-def read_dynamics(table: Table) -> DynamicsSpec:
-    """The ``[dynamics]`` table, every key checked; the equation of motion's by its own reader."""
+def read_dynamics(table: Table, linkage: bool = True) -> DynamicsSpec:
+    """The ``[dynamics]`` table, every key checked; the equation of motion's by its own reader.
+
+    Without a ``linkage`` the table must give a load diagram (:data:`DIAGRAM_KEYS`), and may not
+    give what only a mechanism has (``constant``, the equation of motion); with one, no diagram.
+    """
+    if linkage:
+        for key in _DIAGRAM_ONLY:
+            if table.has(key):
+                raise SceneError(table.where(key), "is for a scene without a linkage: this one has [frame] and "
+                                 "[driver], whose loads and masses ([[loads]], [links.N]) are reduced to the crank "
+                                 "instead; leave it out, or leave out the linkage")
     delta = table.number("delta", None, positive=True)
     if delta is not None and not delta < 2:
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
@@ -324,8 +369,11 @@ def read_dynamics(table: Table) -> DynamicsSpec:
     if rpm is not None:
         omega = rpm_to_omega(rpm)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
-    constant = table.choice("constant", CONSTANT_CHOICES, "auto")
     count = table.integer("count", DEFAULT_COUNT, minimum=12, maximum=100_000)
+    if not linkage:
+        return _read_diagram_dynamics(table, DynamicsSpec(where=table.path, delta=delta, omega=omega,
+                                                          flywheel_shaft_rpm=shaft, count=count))
+    constant = table.choice("constant", CONSTANT_CHOICES, "auto")
     motion = None
     if any(table.has(key) for key in MOTION_KEYS):
         from .machine_motion import read_motion
@@ -334,6 +382,84 @@ def read_dynamics(table: Table) -> DynamicsSpec:
     table.done()
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
                         count=count, motion=motion)
+
+
+def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
+    """The rest of a ``[dynamics]`` table without a linkage: its load diagrams and the machine's inertia."""
+    if table.has("constant"):
+        raise SceneError(table.where("constant"), 'is for a linkage\'s reduced moments; with a load diagram the side '
+                         'not given is constant (write driving = "constant" or resisting = "constant")')
+    for key in MOTION_KEYS:
+        if table.has(key):
+            raise SceneError(table.where(key), "the equation of motion needs a linkage ([frame] and [driver]); "
+                             "a load diagram alone sizes the flywheel")
+    if spec.omega is None:
+        raise SceneError(table.path, "needs rpm or omega: the mean speed of the shaft the load diagram is drawn "
+                         "over (there is no driver to take it from)")
+    diagrams: dict[str, LoadDiagram] = {}
+    for key in DIAGRAM_KEYS:
+        if table.has(key):
+            side, quantity = key.split("_")
+            if side in diagrams:
+                raise SceneError(table.where(key), f"give {side}_torque or {side}_power, not both")
+            diagrams[side] = _read_load_diagram(table, key, side, quantity)
+    if not diagrams:
+        raise SceneError(table.path, "needs a load diagram (resisting_torque, resisting_power, driving_torque or "
+                         "driving_power), or a linkage ([frame] and [driver]) to reduce the loads from")
+    for side in _SIDES:
+        if table.has(side):
+            table.choice(side, ("constant",))
+            if side in diagrams:
+                raise SceneError(table.where(side), f'says the {side} side is constant, but {diagrams[side].key} '
+                                 "gives its diagram: leave one out")
+    inertia = table.number("inertia", 0.0, non_negative=True)
+    table.done()
+    omega = spec.omega
+    if len(diagrams) == 2:
+        constant = "none"
+        driven, resisted = diagrams["driving"].work(omega), diagrams["resisting"].work(omega)
+        if not abs(driven - resisted) <= _BALANCE * max(abs(driven), abs(resisted)):
+            raise SceneError(table.path, f"the driving work ({driven:.6g} J) and the resisting work ({resisted:.6g} J) "
+                             "over the turn differ, so the motion is not periodic: give one side only (it is then "
+                             "taken constant) or make them balance")
+    else:
+        (side, given), = diagrams.items()
+        constant = "driving" if side == "resisting" else "resisting"
+        if not given.work(omega) > 0:
+            raise SceneError(table.where(given.key), f"does {given.work(omega):.6g} J of work over the turn: a "
+                             f"{side} load must do positive work for a constant {constant} one to balance it")
+    ordered = tuple(diagrams[side] for side in _SIDES if side in diagrams)
+    return dataclasses.replace(spec, constant=constant, diagrams=ordered, inertia=inertia)
+
+
+def _read_load_diagram(table: Table, key: str, side: str, quantity: str) -> LoadDiagram:
+    """[crank angle in degrees, value] pairs from 0 to 360, the angles never falling; a jump gives one twice."""
+    where = table.where(key)
+    points = [check_xy(item, at) for at, item in table.items(key)]
+    if len(points) < 2:
+        raise SceneError(where, "must have at least two points [crank angle in degrees, value]")
+    angles = [angle for angle, _ in points]
+    if angles[0] != 0.0 or angles[-1] != 360.0:
+        raise SceneError(where, "must run over the whole turn: its angles from 0 to 360 degrees",
+                         [angles[0], angles[-1]])
+    for k in range(1, len(angles)):
+        if angles[k] < angles[k - 1]:
+            raise SceneError(f"{where}[{k}]", "crank angles must not fall (an angle given twice is a jump)", angles[k])
+        if k >= 2 and angles[k] == angles[k - 1] == angles[k - 2]:
+            raise SceneError(f"{where}[{k}]", "an angle may be given at most twice (the two sides of a jump)",
+                             angles[k])
+    return LoadDiagram(key=key, side=side, quantity=quantity, angles_deg=tuple(angles),
+                       values=tuple(value for _, value in points))
+
+
+def diagram_model_of(spec: DynamicsSpec) -> EquivalentModel:
+    """The equivalent model of a ``[dynamics]`` table without a linkage: its load diagrams at the mean speed."""
+    if not spec.diagrams or spec.omega is None:
+        raise ValueError("the [dynamics] table gives no load diagram and mean speed: its model needs a linkage")
+    sides: dict[str, Any] = {side: None for side in _SIDES}
+    for diagram in spec.diagrams:
+        sides[diagram.side] = (np.radians(diagram.angles_deg), diagram.torques(spec.omega))
+    return diagram_model(spec.omega, sides["driving"], sides["resisting"], inertia=spec.inertia, count=spec.count)
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
@@ -357,7 +483,7 @@ def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -
     turning = model.turning
     found: dict[str, Any] = {
         "equivalent_link": "turning" if turning else "translating",
-        "driver_link": model.link,
+        "driver_link": model.link or None,  # a model made from load diagrams has no link
         "constant": model.constant,
     }
     if turning:
@@ -448,6 +574,7 @@ def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     return np.concatenate([x, zeros])[order], np.concatenate([net, np.zeros(len(zeros))])[order]
 
 
-__all__ = ["MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel", "Tangent", "dynamics_results", "fluctuation",
-           "fluctuation_from_areas", "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia", "omega_to_rpm",
-           "read_dynamics", "rpm_to_omega", "speed_fluctuation", "speed_limits"]
+__all__ = ["DIAGRAM_KEYS", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel", "LoadDiagram", "Tangent",
+           "diagram_model_of", "dynamics_results", "fluctuation", "fluctuation_from_areas", "flywheel_for",
+           "flywheel_from_spec", "flywheel_inertia", "moved_inertia", "omega_to_rpm", "read_dynamics", "rpm_to_omega",
+           "speed_fluctuation", "speed_limits"]

@@ -18,9 +18,9 @@ from typing import Any
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
+from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
 from .rotor_balancing import BalancingSpec, read_balancing
 from .vibration import VibrationSpec, read_vibration
-from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
 
 MAX_SCENE_BYTES = 1_000_000
 MAX_POSITIONS = 100_000
@@ -29,7 +29,8 @@ SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
 STROKES = ("working", "idle", "always")
 # The tables that describe a mechanism: without [frame] and [driver] they have nothing to belong to.
-LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces", "dynamics")
+# ([dynamics] may do without one: a flywheel sized from a load diagram alone.)
+LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces")
 INERTIA_FORMS = ("couple", "displaced")
 # Every piece a run can deliver, in the order a course project presents them (graphplan.deliverables):
 # the seven of the scene contract, then the kinematic diagrams, the accuracy report, the machine's
@@ -153,7 +154,7 @@ class Scene:
 
     @property
     def has_linkage(self) -> bool:
-        """Whether the scene describes a mechanism (a rotor or a vibrating machine alone does not)."""
+        """Whether the scene describes a mechanism (a rotor, a vibrating machine or a load diagram alone does not)."""
         return self.driver is not None
 
     # The notebook's verbs.  They import the stages they run when called: a scene is read first of all.
@@ -222,11 +223,17 @@ def _read_scene(top: Table, source: str) -> Scene:
 
     balancing = read_balancing(top.table("balancing")) if top.has("balancing") else None
     vibration = read_vibration(top.table("vibration")) if top.has("vibration") else None
-    if not top.has("frame") and not top.has("driver") and (balancing is not None or vibration is not None):
-        # A rotor to balance or a machine on its springs: no linkage to read.
+    if not top.has("frame") and not top.has("driver") and (balancing is not None or vibration is not None
+                                                          or top.has("dynamics")):
+        # A rotor to balance, a machine on its springs, a flywheel from a load diagram: no linkage to read.
         for key in LINKAGE_KEYS:
             if top.has(key):
                 raise SceneError(key, "describes a mechanism: a scene with one needs [frame] and [driver] too")
+        dynamics = None
+        if top.has("dynamics"):
+            from .flywheel import read_dynamics
+
+            dynamics = read_dynamics(top.table("dynamics"), linkage=False)
         drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
         include = _read_output(top.table("output", None))
         top.done()
@@ -235,7 +242,7 @@ def _read_scene(top: Table, source: str) -> Scene:
                      links=MappingProxyType({}), loads=(), friction=(),
                      positions=Positions(count=1, start=0.0, number_from=1, working=None, plans=()),
                      drawing=drawing, measured=MappingProxyType({}), include=include, source=source,
-                     balancing=balancing, vibration=vibration)
+                     balancing=balancing, vibration=vibration, dynamics=dynamics)
     frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
     driver = _read_driver(top.table("driver"))
     dynamics = None

@@ -126,13 +126,15 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
         bottom = bounds_of(layers[-1].items)[1]
     energy_dy = dy
     left_bottom = bottom
-    if model.turning:
+    # A constant Je (a flywheel sized from a load diagram alone) makes the energy–mass diagram a
+    # vertical segment and Je(φ) a straight line: the ΔT diagram then says all they would.
+    if model.turning and np.ptp(model.inertia) > 0:
         right = ABSCISSA_MM + AXIS_RUN_MM + GAP_MM + 12.0
         layers.append(_layer("energy-mass", _energy_mass(model, flywheel, scales, words), right, energy_dy))
         turned = _inertia_turned(model, scales, words)
         low = min(bottom, bounds_of(layers[-1].items)[1])
         layers.append(_layer("inertia", turned, right, low - GAP_MM - bounds_of(turned)[3]))
-    else:
+    elif not model.turning:
         mass_scale = fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM)
         mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, words["dyn_mass_axis"],
                         words["dyn_mass_scale"].format(value=format_scale(mass_scale)), words["dyn_mass"], scales,

@@ -1,0 +1,173 @@
+"""A flywheel sized from a load diagram alone: a ``[dynamics]`` table with no [frame] and no [driver].
+
+The press is the shaper of Sun Huan et al., *机械原理* (exercise of the chapter 机械的运转及其速度波动的调节;
+see docs/sources/flywheel.md §1): 367.7 W over the 120° idle stroke, 3677 W over the rest, n = 100 rpm,
+δ = 0.05, driven at constant power.  Printed: P = 2573.9 W, ΔWmax = 441.24 J, JF = 80.473 kg·m², and
+0.388 kg·m² on the 1440 rpm motor shaft.  tests/test_flywheel.py checks the same numbers in code; here
+they come out of a scene run through the command line.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from graphplan.cli import main
+from graphplan.dynamics import diagram_model
+
+ROOT = Path(__file__).resolve().parent.parent
+RATCHET = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
+
+PRESS = """\
+[scene]
+title = "Flywheel of a punching press from its power cycle"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+driving = "constant"
+inertia = 0.0
+flywheel_shaft_rpm = 1440
+"""
+
+
+def run(tmp_path: Path, text: str) -> tuple[int, Path]:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    return main(["run", str(scene), "--out", str(out)]), out
+
+
+def dynamics_of(tmp_path: Path, text: str) -> dict:
+    status, out = run(tmp_path, text)
+    assert status == 0
+    return json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]
+
+
+def test_press_flywheel_from_its_power_cycle_matches_the_published_answers(tmp_path):
+    found = dynamics_of(tmp_path, PRESS)
+    assert round(found["delta_w_max"], 2) == 441.24
+    assert round(found["flywheel_inertia"], 3) == 80.473
+    assert round(found["flywheel_inertia_moved"], 3) == 0.388
+    # The driving side is the constant that balances the cycle: the motor's mean power.
+    assert found["constant"] == "driving"
+    assert round(found["driving_moment"][0] * found["omega_mean"], 1) == 2573.9
+    # A constant Je: the three methods are one, and the speed swings by δ about ωm.
+    assert found["flywheel_inertia_approximate"] == pytest.approx(found["flywheel_inertia"], rel=1e-12)
+    assert found["flywheel_inertia_mertsalov"] == pytest.approx(found["flywheel_inertia"], rel=1e-12)
+    omega = 100 * math.pi / 30
+    assert found["omega_max"] == pytest.approx(omega * 1.025, rel=1e-9)
+    assert found["omega_min"] == pytest.approx(omega * 0.975, rel=1e-9)
+    assert found["omega_max_angle_deg"] == pytest.approx(120.0)   # the end of the idle stroke
+    assert found["driver_link"] is None
+
+
+def test_the_machines_own_inertia_is_taken_off_the_flywheel(tmp_path):
+    found = dynamics_of(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 30.0"))
+    assert found["flywheel_inertia"] == pytest.approx(441.24 / ((100 * math.pi / 30) ** 2 * 0.05) - 30.0, rel=1e-9)
+
+
+def test_the_same_cycle_as_a_torque_diagram(tmp_path):
+    omega = 100 * math.pi / 30
+    low, high = 367.7 / omega, 3677.0 / omega
+    text = PRESS.replace("resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]",
+                         f"resisting_torque = [[0, {low!r}], [120, {low!r}], [120, {high!r}], [360, {high!r}]]")
+    found = dynamics_of(tmp_path, text)
+    assert found["delta_w_max"] == pytest.approx(441.24, rel=1e-10)
+
+
+@pytest.mark.parametrize(("start", "end"), [(0.0, 90.0), (45.0, 200.0), (300.0, 360.0)])
+def test_a_rectangular_resisting_torque_against_a_constant_drive(tmp_path, start, end):
+    """M over a window of width β (rad) and 0 elsewhere, driven at the mean M·β/2π: the surplus is
+    the area over the mean line inside the window, (M − M·β/2π)·β, in closed form."""
+    torque, beta = 800.0, math.radians(end - start)
+    points = [[0, 0.0], [start, 0.0], [start, torque], [end, torque], [end, 0.0], [360, 0.0]]
+    points = [p for k, p in enumerate(points) if not (k and p == points[k - 1])]   # a window at 0 or 360
+    text = (f"[dynamics]\nrpm = 60\ndelta = 0.1\nresisting_torque = {json.dumps(points)}\n")
+    found = dynamics_of(tmp_path, text)
+    expected = (torque - torque * beta / (2 * math.pi)) * beta
+    assert found["delta_w_max"] == pytest.approx(expected, rel=1e-12)
+    assert found["flywheel_inertia"] == pytest.approx(expected / ((2 * math.pi) ** 2 * 0.1), rel=1e-10)
+
+
+def test_a_driving_diagram_whose_mean_falls_between_vertices():
+    """A triangular driving torque (0 → T at 180° → 0) against a constant resistance T/2: the net
+    crosses zero at 90° and 270°, between the vertices; the surplus from 90° to 270° is T·π/4."""
+    peak = 1000.0
+    model = diagram_model(10.0, driving=([0.0, math.pi, 2 * math.pi], [0.0, peak, 0.0]), count=12)
+    assert model.constant == "resisting"
+    assert np.ptp(model.energy) == pytest.approx(peak * math.pi / 4, rel=1e-12)
+    assert model.imbalance == pytest.approx(0.0, abs=1e-9)
+
+
+def test_both_sides_given_must_balance(tmp_path):
+    text = ("[dynamics]\nrpm = 100\ndelta = 0.05\n"
+            "resisting_torque = [[0, 10], [180, 10], [180, 30], [360, 30]]\n"
+            "driving_torque = [[0, 20], [360, 20]]\n")
+    found = dynamics_of(tmp_path, text)
+    assert found["constant"] == "none"
+    assert found["delta_w_max"] == pytest.approx(10.0 * math.pi, rel=1e-12)
+
+
+def test_the_drawing_of_a_scene_without_a_linkage_renders(tmp_path):
+    cairosvg = pytest.importorskip("cairosvg")
+    status, out = run(tmp_path, PRESS)
+    assert status == 0 and (out / "dynamics.svg").exists()
+    png = cairosvg.svg2png(url=str(out / "dynamics.svg"))
+    assert png.startswith(b"\x89PNG") and len(png) > 10_000
+
+
+DIAGRAM = "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]"
+
+
+@pytest.mark.parametrize(("change", "message"), [
+    ((DIAGRAM, "resisting_power = [[0, 367.7]]"),
+     "dynamics.resisting_power: must have at least two points"),
+    ((DIAGRAM, "resisting_power = [[0, 367.7], [200, 367.7], [120, 3677], [360, 3677]]"),
+     "dynamics.resisting_power[2]: crank angles must not fall"),
+    ((DIAGRAM, "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [400, 3677]]"),
+     "dynamics.resisting_power: must run over the whole turn"),
+    ((DIAGRAM, "resisting_power = [[-10, 367.7], [120, 367.7], [120, 3677], [360, 3677]]"),
+     "dynamics.resisting_power: must run over the whole turn"),
+    ((DIAGRAM, "resisting_power = [[0, 1], [120, 1], [120, 2], [120, 3], [360, 3]]"),
+     "dynamics.resisting_power[3]: an angle may be given at most twice"),
+    ((DIAGRAM, DIAGRAM + "\nresisting_torque = [[0, 1], [360, 1]]"),
+     "dynamics.resisting_power: give resisting_torque or resisting_power, not both"),
+    ((DIAGRAM, "resisting_power = [[0, -5], [360, -5]]"),
+     "dynamics.resisting_power: does -"),
+    ((DIAGRAM, ""), "dynamics: needs a load diagram"),
+    (("rpm = 100", "rpm = -100"), "dynamics.rpm: must be > 0"),
+    (("rpm = 100", ""), "dynamics: needs rpm or omega"),
+    (("delta = 0.05", "delta = 3"), "dynamics.delta: must be < 2"),
+    (("inertia = 0.0", "inertia = -1.0"), "dynamics.inertia: must be >= 0"),
+    (('driving = "constant"', 'driving = "motor"'), "dynamics.driving: must be one of constant"),
+    (('driving = "constant"', 'resisting = "constant"'), "dynamics.resisting: says the resisting side is constant"),
+    (('driving = "constant"', 'constant = "driving"'), "dynamics.constant: is for a linkage"),
+    (('driving = "constant"', 'motor = { kind = "constant", torque = 50 }'),
+     "dynamics.motor: the equation of motion needs a linkage"),
+    (('driving = "constant"', "driving_torque = [[0, 300], [360, 300]]"), "dynamics: the driving work"),
+    ((DIAGRAM, DIAGRAM + "\ndriving_torque = [[0, 300], [360, 300]]"),
+     "dynamics.driving: says the driving side is constant, but driving_torque gives its diagram"),
+    (("inertia = 0.0", "inertia = 0.0\n[positions]\ncount = 12"), "positions: describes a mechanism"),
+])
+def test_bad_input_exits_2_naming_the_key_and_writes_nothing(tmp_path, capsys, change, message):
+    old, new = change
+    assert old in PRESS
+    status, out = run(tmp_path, PRESS.replace(old, new))
+    err = capsys.readouterr().err
+    assert status == 2 and not out.exists()
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"graphplan: error: {message}"), err
+
+
+def test_a_linkage_with_a_load_diagram_is_refused(tmp_path, capsys):
+    text = RATCHET.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n" + DIAGRAM + "\n"
+    status, out = run(tmp_path, text)
+    err = capsys.readouterr().err
+    assert status == 2 and not out.exists()
+    assert err.strip().splitlines() == [err.strip()]
+    assert err.startswith("graphplan: error: dynamics.resisting_power: is for a scene without a linkage")
