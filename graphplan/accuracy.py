@@ -369,6 +369,8 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm") 
 
     A few points are tagged with their drafting precision (in ``millimetre``) or the diagram's N.
     """
+    from matplotlib.ticker import NullFormatter
+
     for method, (marker, colour) in STYLE.items():
         chosen = [r for r in rows if r.method == method]
         if not chosen:
@@ -386,6 +388,8 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm") 
                               textcoords="offset points", xytext=(4, 3), fontsize=6, color=colour)
     axes.set_xscale("log")
     axes.set_yscale("log")
+    # Over less than a decade of time matplotlib labels the minor ticks too, and they run into each other.
+    axes.xaxis.set_minor_formatter(NullFormatter())
     axes.set_ylim(FLOOR / 3, 3.0)
     axes.grid(True, which="major", linewidth=0.3)
     axes.tick_params(labelsize=7)
