@@ -43,10 +43,11 @@ from __future__ import annotations
 
 import functools
 import math
-import time
 import warnings
 
 import numpy as np
+
+from graphplan.accuracy import best_time
 
 # --------------------------------------------------------------------------
 # The linkages (SI units; x right, y up; angles ccw from +x)
@@ -596,16 +597,6 @@ def max_differences(peer, ref):
         else:
             kinds["pos"].append(diff)
     return {k: (max(v) if v else math.nan) for k, v in kinds.items()}
-
-
-def best_time(fn, repeats):
-    """Best wall time of `repeats` calls (perf_counter), and the last result."""
-    best, result = math.inf, None
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        result = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, result
 
 
 def sweep(n, omega):
