@@ -76,10 +76,28 @@ def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
         mechanism_caption=(text["mechanism_title"].format(number=number),
                            text["length_scale"].format(value=format_scale(scale))),
         velocity_caption=(text["velocity_plan_title"],
-                          text["velocity_scale"].format(value=plan_scale_text(velocity.scale))),
+                          text["velocity_scale"].format(value=plan_scale_text(velocity.scale)),
+                          *_too_short_lines(velocity, "velocity", text)),
         acceleration_caption=(text["acceleration_plan_title"],
-                              text["acceleration_scale"].format(value=plan_scale_text(acceleration.scale))),
+                              text["acceleration_scale"].format(value=plan_scale_text(acceleration.scale)),
+                              *_too_short_lines(acceleration, "acceleration", text)),
         velocity_pole="p", acceleration_pole=text["acceleration_pole"])
+
+
+# Vectors named per caption line under a plan, so that a long list does not widen the sheet.
+_SHORT_PER_LINE = 3
+
+
+def _too_short_lines(plan, kind: str, text) -> list[str]:
+    """Caption lines naming the plan's vectors too short to draw, with their values."""
+    short = plans.too_short(plan, kind)
+    if not short:
+        return []
+    unit = text["unit_m_per_s" if kind == "velocity" else "unit_m_per_s2"]
+    values = [f"{name} = {value:.3g} {unit}" for name, value in short]
+    lines = [text["plan_too_short"].format(least=f"{plans.ZERO_MM:g}")]
+    lines += ["; ".join(values[k:k + _SHORT_PER_LINE]) for k in range(0, len(values), _SHORT_PER_LINE)]
+    return lines
 
 
 def plan_scale_text(value: float) -> str:

@@ -292,26 +292,42 @@ def _vectors(plan: Plan, kind: str) -> list[Primitive]:
     """Every vector the steps lay off, once, then the absolute vector of every point from the pole.
 
     A vector repeated by a later step (vBC = vB when C is at the pole) is drawn
-    once; a vector of zero length is not drawn at all.
+    once; a vector shorter than :data:`ZERO_MM` is not drawn at all (see :func:`too_short`).
     """
     arrows: list[Primitive] = []
-    seen: set[tuple[str, str]] = set()
+    for start, end, _ in _laid(plan, kind):
+        if abs(plan.mm(end) - plan.mm(start)) >= ZERO_MM:
+            stroke = _ABSOLUTE if start == "p" else _RELATIVE
+            arrows.append(Arrow(_xy(plan.mm(start)), _xy(plan.mm(end)), stroke, key=_key(kind, start, end)))
+    return arrows
 
-    def lay(start: str, end: str) -> None:
-        if (start, end) in seen or start == end:
-            return
-        seen.add((start, end))
-        if abs(plan.mm(end) - plan.mm(start)) < ZERO_MM:
-            return
-        stroke = _ABSOLUTE if start == "p" else _RELATIVE
-        arrows.append(Arrow(_xy(plan.mm(start)), _xy(plan.mm(end)), stroke, key=_key(kind, start, end)))
 
+def too_short(plan: Plan, kind: str) -> list[tuple[str, float]]:
+    """The vectors of the plan too short to draw but not zero: each one's name and magnitude (SI).
+
+    Where the vectors of one plan differ by 10⁴ in length the short ones vanish under the pencil;
+    the sheet states them with their values instead.
+    """
+    found = []
+    for start, end, name in _laid(plan, kind):
+        length = abs(plan.mm(end) - plan.mm(start))
+        if 1e-9 < length < ZERO_MM:
+            found.append((name, abs(plan.points[end] - plan.points[start])))
+    return found
+
+
+def _laid(plan: Plan, kind: str) -> list[tuple[str, str, str]]:
+    """Every vector the plan lays off, once: (start letter, end letter, name), the steps' first, then the pole's."""
+    laid: dict[tuple[str, str], str] = {}
     for step in plan.steps:
         for vector in step.vectors:
-            lay(vector.start, vector.end)
-    for letter in plan.images.values():
-        lay("p", letter)
-    return arrows
+            if vector.start != vector.end:
+                laid.setdefault((vector.start, vector.end), vector.meaning)
+    symbol = "v" if kind == "velocity" else "a"
+    for point, letter in plan.images.items():
+        if letter != "p":
+            laid.setdefault(("p", letter), f"{symbol}{point}")
+    return [(start, end, name) for (start, end), name in laid.items()]
 
 
 def _lines_of_action(plan: Plan) -> list[Primitive]:
@@ -394,4 +410,4 @@ def _key(*parts: str) -> str:
     return "-".join(re.sub(r"[^A-Za-z0-9_]", "_", part) for part in parts)
 
 
-__all__ = ["ZERO_MM", "PlanSheet", "layout"]
+__all__ = ["ZERO_MM", "PlanSheet", "layout", "too_short"]
