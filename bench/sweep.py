@@ -29,6 +29,7 @@ sys.path.insert(0, str(HERE))
 import peers  # noqa: E402  (the peers' adapters live beside this script)
 
 import graphplan  # noqa: E402
+from graphplan.accuracy import best_time  # noqa: E402
 
 N = 100_000
 REPEATS = 15
@@ -73,7 +74,7 @@ def graphplan_sweep(scene: graphplan.Scene, angles: np.ndarray) -> dict[str, np.
 
 def best_rate(function, count: int, repeats: int = REPEATS) -> tuple[float, object]:
     function()  # warm-up: imports, numba compilation, allocator
-    seconds, result = peers.best_time(function, repeats)
+    seconds, result = best_time(function, repeats)
     return count / seconds, result
 
 

@@ -364,10 +364,12 @@ STYLE = {"analytic": ("*", "black"), "construction": ("o", "#1f5fa8"), "drafting
 FLOOR = 1e-17
 
 
-def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm") -> None:
+def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
+               names: Mapping[str, str] | None = None) -> None:
     """Error against run time of one scene's rows on matplotlib ``axes`` (log-log; filled: accelerations).
 
-    A few points are tagged with their drafting precision (in ``millimetre``) or the diagram's N.
+    A few points are tagged with their drafting precision (in ``millimetre``) or the diagram's N;
+    ``names`` gives the legend's word for a method (its own name where it gives none).
     """
     from matplotlib.ticker import NullFormatter
 
@@ -379,7 +381,7 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm") 
         for fam, fill in (("acceleration", colour), ("velocity", "none")):
             y = [max(r.stat(fam, max), FLOOR) for r in chosen]
             axes.plot(x, y, marker=marker, color=colour, markerfacecolor=fill, linestyle="-" if len(chosen) > 1 else "none",
-                      linewidth=0.8, markersize=6, label=method if fam == "acceleration" else None)
+                      linewidth=0.8, markersize=6, label=(names or {}).get(method, method) if fam == "acceleration" else None)
         for r in chosen:
             # A few labels only: the drafting points share one run time, the small diagrams nearly so.
             if r.parameter in ("1 mm", "0.1 mm") or (r.method == "diagram" and (r.positions in (12, 360) or r.positions > 1000)):

@@ -312,7 +312,7 @@ def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Referen
         sine = np.nan_to_num(sine, nan=0.0)
         # A crank's sweep closes on itself: its first and last samples are one position.
         inner = np.arange(0 if cyclic else 1, len(x) - 1)
-        before = sine[inner - 1] if not cyclic else np.roll(sine[:-1], 1)[inner]
+        before = np.where(inner == 0, sine[-2], sine[inner - 1])  # sample 0's neighbour before it is the last but one
         least = inner[(sine[inner] <= before) & (sine[inner] <= sine[inner + 1])]
         for i in least:
             low = x[i - 1] if i > 0 else x[0] - (x[1] - x[0])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -88,7 +89,7 @@ def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
 _SHORT_PER_LINE = 3
 
 
-def _too_short_lines(plan, kind: str, text) -> list[str]:
+def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str]:
     """Caption lines naming the plan's vectors too short to draw, with their values."""
     short = plans.too_short(plan, kind)
     if not short:

@@ -83,11 +83,9 @@ def figure(study: Study, locale: str, title: str) -> str:
     text = strings(locale)
     with matplotlib.rc_context(settings()):
         drawn, axes = pyplot.subplots(figsize=(7.0, 4.6), dpi=100)
-        draw_study(axes, study.rows, text["millimetre"])
-        for line in axes.get_lines():
-            name = line.get_label()
-            if not name.startswith("_"):
-                line.set_label(text.get(f"accuracy_legend_{name}", name))
+        names = {key.removeprefix("accuracy_legend_"): word for key, word in text.items()
+                 if key.startswith("accuracy_legend_")}
+        draw_study(axes, study.rows, text["millimetre"], names)
         axes.set_xlabel(text["accuracy_axis_time"].format(count=study.case.values.size), fontsize=9)
         axes.set_ylabel(text["accuracy_axis_error"], fontsize=9)
         axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9)
