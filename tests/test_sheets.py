@@ -16,40 +16,49 @@ import re
 from xml.etree import ElementTree
 
 import cairosvg
+import numpy as np
 import pytest
 
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.errors import SceneError
+from graphplan.kinematic_diagrams import of_analysis
 from graphplan.locale import strings
+from graphplan.render import diagrams as diagrams_layout
+from graphplan.render import drawings
 from graphplan.render import plans as plan_layout
-from graphplan.render.drawings import plan_sheet
+from graphplan.render.drawings import length_scale, plan_sheet, positions_size
+from graphplan.render.formats import holds, page_geometry
 from graphplan.render.primitives import Arrow, Layer, Polyline, Text, bounds, bounds_of, text_extent
 from graphplan.render.sheet import (
     Details,
     Panel,
     course_sheets,
+    diagrams_panel,
     forces_sheet,
     kinematics_panels,
     kinematics_sheet,
     sheet_svg,
 )
-from graphplan.render.title_block import labels, scale_text
+from graphplan.render.title_block import form_of, labels, scale_text
 
 FIXTURES = ["engine_slider_crank", "offset_slider_crank", "quick_return_slotted_lever", "ratchet_crank_rocker",
             "scotch_yoke", "shaper_six_bar", "slider_driven", "stephenson_six_bar", "tangent_mechanism_prp"]
-# The Scotch yoke's plan of positions at its own μl = 0.001 is 578 mm tall: more than any sheet holds.
-# Its sheets are built at μl = 0.002; that it does not fit at 0.001 is tested on its own.
-LENGTH_SCALE = {"scotch_yoke": 0.002}
 SVG = "{http://www.w3.org/2000/svg}"
+# Standard scale factors (m/mm) from 1e-4 to 1: mantissas 1, 2, 2.5, 4, 5 (graphplan.scales).
+STANDARD = [mantissa * 10.0 ** power for power in range(-4, 1) for mantissa in (1.0, 2.0, 2.5, 4.0, 5.0)]
 # Round-off allowed when a rectangle touches another (mm).
 EPS = 1e-6
+
+
+def analyses_of(name):
+    return analyse(graphplan.load(f"fixtures/{name}.toml"))
 
 
 @pytest.fixture(scope="module")
 def analyses():
     """Every fixture analysed once for the module."""
-    return {name: analyse(graphplan.load(f"fixtures/{name}.toml")) for name in FIXTURES}
+    return {name: analyses_of(name) for name in FIXTURES}
 
 
 def with_scene(analysis, **changes):
@@ -57,17 +66,14 @@ def with_scene(analysis, **changes):
     return dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, **changes))
 
 
-def drawable(analysis, name):
-    if name in LENGTH_SCALE:
-        drawing = dataclasses.replace(analysis.scene.drawing, length_scale=LENGTH_SCALE[name])
-        return with_scene(analysis, drawing=drawing)
-    return analysis
+def with_drawing(analysis, **changes):
+    return with_scene(analysis, drawing=dataclasses.replace(analysis.scene.drawing, **changes))
 
 
 @pytest.fixture(scope="module")
 def a1_sheets(analyses):
     """Each fixture's sheets on A1, in the scene's own language."""
-    return {name: course_sheets(drawable(analysis, name), "A1", Details(author="A. Student"))
+    return {name: course_sheets(analysis, "A1", Details(author="A. Student"))
             for name, analysis in analyses.items()}
 
 
@@ -304,16 +310,54 @@ def test_blank_fields_stay_drawn_and_a_long_title_stays_in_its_box():
                 assert text.size >= least
 
 
-def test_a_panel_too_big_for_the_sheet_names_the_sheet_and_a_way_out(analyses):
-    yoke = analyses["scotch_yoke"]  # its plan of positions is 578 mm tall at μl = 0.001
-    with pytest.raises(SceneError) as error:
-        course_sheets(yoke, "A1")
-    assert error.value.where == "drawing.sheet"
-    assert "A1" in str(error.value) and '"none"' in str(error.value)
+def test_a_plan_of_positions_too_big_names_the_length_scale_that_fits_and_that_scale_does():
+    # At μl = 0.001 the Scotch yoke's plan of positions is 578 mm tall: more than any sheet holds.
+    yoke = with_drawing(analyses_of("scotch_yoke"), length_scale=0.001)
+    for sheet in ("A1", "A2"):
+        with pytest.raises(SceneError) as error:
+            course_sheets(yoke, sheet)
+        assert error.value.where == "drawing.sheet"
+        message = str(error.value)
+        assert f"no {sheet} sheet" in message and '"none"' in message and "bigger sheet" not in message
+        fitting = float(re.search(r"length_scale = ([0-9.]+)", message).group(1))
+        assert fitting == 0.002  # a standard value, 578 / 2 = 289 mm tall
+        fits = course_sheets(with_drawing(yoke, length_scale=fitting), sheet)
+        assert max(rect[3] - rect[1] for rect in fits[0].panels.values()) <= fits[0].frame[3] - fits[0].frame[1]
+
+
+def test_a_plan_too_big_for_a_small_sheet_names_the_bigger_sheet_that_holds_it(analyses):
     with pytest.raises(SceneError, match=r"choose A2 or a bigger sheet"):
         course_sheets(analyses["ratchet_crank_rocker"], "A3")
     with pytest.raises(SceneError, match=r"must be one of"):
         course_sheets(analyses["ratchet_crank_rocker"], "B2")
+
+
+@pytest.mark.parametrize(("sheet", "field"), [("A4", 200.0), ("A4", 400.0), ("A3", 400.0), ("A1", 400.0)])
+def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_scale_that_fits(
+        monkeypatch, sheet, field):
+    """The first choice fits the paths into the field; where that plan overflows the sheet, the next standard
+    values are tried, and the one taken is the first that fits."""
+    monkeypatch.setattr(drawings, "POSITIONS_FIELD_MM", field)
+    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet=sheet))
+    analysis = analyse(scene)
+    tracks = np.concatenate([np.atleast_1d(path.r) for path in analysis.paths.points.values()])
+    span = max(np.ptp(tracks.real), np.ptp(tracks.imag))
+    first = min(value for value in STANDARD if value >= span / field - 1e-15)
+    chosen = length_scale(analysis)
+    form = form_of(scene.locale)
+    assert chosen >= first
+    assert holds(sheet, form, *positions_size(analysis, chosen))
+    smaller = max(value for value in STANDARD if value < chosen - 1e-15)
+    assert chosen == first or not holds(sheet, form, *positions_size(analysis, smaller))
+    if (sheet, field) == ("A4", 400.0):
+        assert chosen > first  # 0.73 m at 0.0025 m/mm: 290 mm of paths, more than an A4 holds
+    if sheet == "A1":
+        assert chosen == first
+    # The plan sheets may stand part by part, but each on the sheet; the force sheets are not asked here
+    # (the ratchet's group II(3,4) cut free is 258 mm wide at its μF: no A4 holds it).
+    sheets = kinematics_sheet(kinematics_panels(analysis), sheet, scene.locale)
+    assert all(inside(rect, sheet_.frame) for sheet_ in sheets for rect in sheet_.panels.values())
 
 
 def test_panels_that_do_not_fit_one_sheet_spread_over_several():
@@ -399,3 +443,40 @@ def test_every_language_has_every_title_block_string():
     assert set(labels("ru")) == {key.removeprefix("tb_") for key in keys["en"]}
     with pytest.raises(ValueError, match="no title block strings for locale 'xx'"):
         labels("xx")
+
+
+@pytest.mark.parametrize("sheet", ["A4", "A3", "A1"])
+def test_the_kinematic_diagrams_fit_the_sheet_each_whole_or_shortened_by_whole_intervals(analyses, sheet):
+    analysis = analyses["ratchet_crank_rocker"]
+    count = analysis.scene.positions.count
+    panel = diagrams_panel(analysis, sheet)
+    assert len(panel.parts) == 3
+    form = form_of(analysis.scene.locale)
+    for part in panel.parts:
+        x0, y0, x1, y1 = part.extent
+        assert holds(sheet, form, x1 - x0, y1 - y0)
+    # The φ axis is written under the last diagram: "L = 240 мм" for the usual axis.
+    written = " ".join(text.text for text in texts(panel.layers))
+    axis = float(re.search(r"\sL = ([0-9.]+)", written).group(1))
+    assert axis % count == 0
+    usual = diagrams_layout.layout(of_analysis(analysis), strings(analysis.scene.locale))
+    if sheet == "A4":
+        assert axis < 240.0  # 270 mm wide with its pole and words: wider than any room of an A4
+        # As long as fits: one more interval would not.
+        widest = max(part.extent[2] - part.extent[0] for part in panel.parts)
+        rooms = [room for portrait in (False, True) for room in page_geometry(sheet, form, portrait).rooms()]
+        assert any(widest + count > room[0] and widest <= room[0] for room in rooms)
+    else:
+        assert axis == 240.0
+        assert [layer.items for layer in panel.layers] == [layer.items for layer in usual]
+
+
+def test_diagrams_too_big_for_a_sheet_whole_stand_apart_on_it(analyses):
+    """On A3 the three diagrams (319 mm stacked) exceed the 271 mm of the sheet: each stands whole on a sheet."""
+    analysis = analyses["ratchet_crank_rocker"]
+    sheets = kinematics_sheet([diagrams_panel(analysis, "A3")], "A3", "ru")
+    placed = [name for sheet in sheets for name in sheet.panels]
+    assert sorted(placed) == ["diagrams-1", "diagrams-2", "diagrams-3"]
+    for sheet in sheets:
+        for rect in placed_bounds(sheet).values():
+            assert inside(rect, sheet.frame) and not overlap(rect, sheet.title_block)

@@ -70,19 +70,39 @@ def diagrams_svg(record: KinematicDiagrams, text: Mapping[str, str] | None = Non
 
 def layout(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> list[Layer]:
     """The three diagrams stacked, displacement on top, their φ axes one under another; paper mm, y up."""
-    words = {**strings("en"), **(text or {})}
+    return stacked(parts(record, text))
+
+
+def stacked(drawn: list[list[Layer]]) -> list[Layer]:
+    """The diagrams of :func:`parts` one under another, :data:`GAP_MM` apart."""
     layers: list[Layer] = []
     top = 0.0
-    for kind in KINDS:
-        panel = _panel(record, kind, words)
-        _, ymin, _, ymax = bounds_of(item for layer in panel for item in layer.items)
-        layers.extend(moved_layers(panel, 0.0, top - ymax))
+    for part in drawn:
+        _, ymin, _, ymax = bounds_of(item for layer in part for item in layer.items)
+        layers.extend(moved_layers(part, 0.0, top - ymax))
         top -= ymax - ymin + GAP_MM
-    layers.append(_footer(record, words, top))
-    xmin, _, _, ymax = bounds_of(item for layer in layers for item in layer.items)
-    title = words["kd_title"].format(link=record.link, point=record.point or "")
-    layers.append(Layer("sheet-title", (Text((xmin, ymax + 6.0), title, TITLE_SIZE, "start", weight="bold"),)))
     return layers
+
+
+def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> list[list[Layer]]:
+    """The displacement, velocity and acceleration diagrams apart, each round the origin of its own φ axis.
+
+    The title stands over the first, the legend and the φ scale under the
+    last, where they stand when the three are stacked (:func:`layout`).
+    """
+    words = {**strings("en"), **(text or {})}
+    drawn = [_panel(record, kind, words) for kind in KINDS]
+    _, last_bottom, _, _ = _extent(drawn[-1])
+    drawn[-1] = [*drawn[-1], _footer(record, words, last_bottom - GAP_MM)]
+    left = min(_extent(part)[0] for part in drawn)
+    title = words["kd_title"].format(link=record.link, point=record.point or "")
+    heading = Text((left, _extent(drawn[0])[3] + 6.0), title, TITLE_SIZE, "start", weight="bold")
+    drawn[0] = [*drawn[0], Layer("sheet-title", (heading,))]
+    return drawn
+
+
+def _extent(layers: list[Layer]) -> tuple[float, float, float, float]:
+    return bounds_of(item for layer in layers for item in layer.items)
 
 
 def _values(record: KinematicDiagrams, kind: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:

@@ -2,41 +2,87 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 
 import numpy as np
 
 from ..analysis import Analysis, PlanPosition, instant
+from ..errors import SceneError
 from ..locale import strings
 from ..plans import Plan, acceleration_plan, velocity_plan
-from ..scales import fit_scale, format_scale
+from ..scales import fit_scale, format_scale, standard_scale
 from . import forces as force_layout
 from . import plans, positions
+from .formats import holds
+from .primitives import bounds
 from .svg import to_svg
+from .title_block import form_of
 
 # The plan of positions is scaled to fit this field when the scene gives no μl.
 POSITIONS_FIELD_MM = 200.0
+# Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
+_LARGER_SCALES_TRIED = 40
 
 
 def length_scale(analysis: Analysis) -> float:
-    """μl from the scene, or the standard value that fits the paths of all points into the field."""
+    """μl from the scene; or the standard value that fits the paths of all points into the field, and the
+    plan of positions on an empty sheet of the scene's format (a larger standard value where 200 mm do not fit).
+
+    Choosing lays the plan of positions out once or more: call :func:`with_length_scale` once before
+    drawing several drawings of one analysis.
+    """
     given = analysis.scene.drawing.length_scale
     if given is not None:
         return given
     tracks = np.concatenate([np.atleast_1d(p.r) for p in analysis.paths.points.values()])
     extent = max(float(np.ptp(tracks.real)), float(np.ptp(tracks.imag)))
-    return fit_scale(extent, POSITIONS_FIELD_MM)
+    first = fit_scale(extent, POSITIONS_FIELD_MM)
+    sheet = analysis.scene.drawing.sheet
+    if sheet == "none":
+        return first
+    return fitting_length_scale(analysis, sheet, first)
+
+
+def with_length_scale(analysis: Analysis) -> Analysis:
+    """The analysis with μl fixed in its scene as :func:`length_scale` chooses it, so that every drawing agrees."""
+    drawing = analysis.scene.drawing
+    if drawing.length_scale is not None:
+        return analysis
+    fixed = dataclasses.replace(drawing, length_scale=length_scale(analysis))
+    return dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, drawing=fixed))
+
+
+def positions_size(analysis: Analysis, scale: float) -> tuple[float, float]:
+    """The width and height (mm) of the plan of positions drawn at μl = ``scale``."""
+    x0, y0, x1, y1 = bounds(positions.layout(positions_plan(analysis, scale)))
+    return float(x1 - x0), float(y1 - y0)
+
+
+def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
+    """The smallest standard μl ≥ ``least`` at which the plan of positions fits on an empty ``sheet``.
+
+    Raises :class:`SceneError` when none does: the words and marks of the
+    plan alone take more than the sheet.
+    """
+    form = form_of(analysis.scene.locale)
+    scale = standard_scale(least)
+    for _ in range(_LARGER_SCALES_TRIED):
+        if holds(sheet, form, *positions_size(analysis, scale)):
+            return scale
+        scale = standard_scale(scale * (1.0 + 1e-9))
+    raise SceneError("drawing.sheet", f"the plan of positions fits no {sheet} sheet at any μl", sheet)
 
 
 def positions_svg(analysis: Analysis) -> str:
     return to_svg(positions.layout(positions_plan(analysis)))
 
 
-def positions_plan(analysis: Analysis) -> positions.PositionsPlan:
-    """What the plan of positions shows, titled in the scene's language."""
+def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.PositionsPlan:
+    """What the plan of positions shows at μl = ``scale`` (:func:`length_scale` when None), in the scene's language."""
     text = strings(analysis.scene.locale)
-    scale = length_scale(analysis)
+    scale = length_scale(analysis) if scale is None else scale
     return positions.PositionsPlan(
         mechanism=analysis.mechanism, positions=analysis.motion,
         numbers=tuple(int(n) for n in analysis.positions.numbers),

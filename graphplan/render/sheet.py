@@ -25,33 +25,38 @@ unframed on a page of its own, as the drawings were before sheets.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..analysis import Analysis
 from ..errors import SceneError
 from ..locale import strings
+from ..scales import format_scale
 from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
-from .drawings import force_sheet, length_scale, plan_sheet, positions_plan
+from .drawings import (
+    fitting_length_scale,
+    force_sheet,
+    length_scale,
+    plan_sheet,
+    positions_plan,
+    with_length_scale,
+)
+from .formats import BIGGER, FORMATS, PADDING_MM, SHEET_NAMES, Rect, holds, orientations, page_geometry
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers
 from .svg import to_svg
-from .title_block import SIZES, TitleBlockFields, form_of, labels, scale_text, title_block
+from .title_block import TitleBlockFields, form_of, labels, scale_text, title_block
 
-Rect = tuple[float, float, float, float]
-
-# Sheet formats, landscape (mm): ISO 216, GOST 2.301, GB/T 14689.
-FORMATS: dict[str, tuple[float, float]] = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0),
-                                           "A4": (297.0, 210.0)}
-SHEET_NAMES = (*FORMATS, "none")
-_BIGGER = {"A4": "A3", "A3": "A2", "A2": "A1"}
-# Space between two drawings, and between a drawing and the frame or the title block (mm).
+# Space between two drawings (mm).
 GAP_MM = 15.0
-PADDING_MM = 8.0
 # How far a centring mark reaches into the drawing area past the frame (ISO 5457, GB/T 14689).
 CENTRING_REACH_MM = 5.0
+# The kinematic diagrams are shortened for a small sheet in at most this many rounds, to no less of a field.
+_SHORTENING_ROUNDS = 8
+_LEAST_FIELD_MM = 10
 # A "none" page has this margin round its drawing, as the drawings before sheets had.
 UNFRAMED_MARGIN_MM = 8.0
 
@@ -219,6 +224,69 @@ def force_panels(analysis: Analysis) -> list[Panel]:
             for position in analysis.plans if position.forces is not None]
 
 
+def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
+    """The kinematic diagrams of the output link as a panel whose three diagrams may stand apart.
+
+    On a sheet too small for the usual φ axis and fields, both are
+    shortened until each diagram fits beside or above the title block:
+    the φ axis by whole intervals, so that the positions stay at whole
+    millimetres, the fields by whole millimetres; the scales follow
+    from them as they always do.
+    """
+    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, kinematic_diagrams
+    from . import diagrams as diagrams_layout
+
+    text = strings(analysis.scene.locale)
+
+    def drawn_at(axis: float, field: float) -> tuple[str, list[list[Layer]]]:
+        record = kinematic_diagrams(analysis.mechanism, analysis.positions, axis_mm=axis, field_mm=field)
+        return text["kd_title"].format(link=record.link, point=record.point or ""), diagrams_layout.parts(record, text)
+
+    form = form_of(analysis.scene.locale)
+    axis, field = AXIS_MM, FIELD_MM
+    title, drawn = drawn_at(axis, field)
+    # The pole distances, and with them the room left of each axis, change with the field: a few rounds.
+    for _ in range(_SHORTENING_ROUNDS):
+        if sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
+            break
+        axis, field = _shortened(drawn, sheet, form, analysis.scene.positions.count, (axis, field))
+        title, drawn = drawn_at(axis, field)
+    else:
+        raise SceneError("drawing.sheet", f"the kinematic diagrams fit on no {sheet} sheet; choose a bigger one "
+                         'or sheet = "none"', sheet)
+    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part)) for k, part in enumerate(drawn))
+    return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title)
+
+
+def _size(layers: Sequence[Layer]) -> tuple[float, float]:
+    x0, y0, x1, y1 = bounds(layers)
+    return float(x1 - x0), float(y1 - y0)
+
+
+def _shortened(drawn: Sequence[Sequence[Layer]], sheet: str, form: str, intervals: int,
+               now: tuple[float, float]) -> tuple[float, float]:
+    """A shorter φ axis and field (mm) than ``now``, at which the diagrams ``drawn`` at ``now`` would fit the
+    room of a ``sheet`` that leaves them largest; the words and arrows round them keep their size."""
+    axis, field = now
+    sizes = [_size(part) for part in drawn]
+    around_width = max(width for width, _ in sizes) - axis
+    around_height = max(height for _, height in sizes) - field
+    rooms = [room for portrait in orientations(sheet) for room in page_geometry(sheet, form, portrait).rooms()]
+    room = max(rooms, key=lambda r: min((r[0] - around_width) / axis, (r[1] - around_height) / field))
+    fitting_axis = min(axis, math.floor((room[0] - around_width) / intervals) * intervals)
+    fitting_field = min(field, math.floor(room[1] - around_height))
+    if (fitting_axis, fitting_field) == (axis, field):
+        # Fits by the estimate, not in fact: the wider side gives way by one step.
+        if around_width + axis > room[0]:
+            fitting_axis -= intervals
+        else:
+            fitting_field -= 1
+    if fitting_axis < intervals or fitting_field < _LEAST_FIELD_MM:
+        raise SceneError("drawing.sheet", f"the kinematic diagrams fit on no {sheet} sheet; choose a bigger one "
+                         'or sheet = "none"', sheet)
+    return float(fitting_axis), float(fitting_field)
+
+
 # Sheets.
 
 def kinematics_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", locale: str = "en",
@@ -241,32 +309,77 @@ def forces_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", l
     return _sheets(panels, sheet, locale, "sheet_forces", title, scale, details, first, count)
 
 
+@dataclass(frozen=True)
+class CoursePanels:
+    """The drawings of a course project's sheets, laid out once: the plan of positions first among the
+    kinematics panels (then the plan sheets, the diagrams), a force sheet per position among the forces."""
+
+    kinematics: tuple[Panel, ...]
+    forces: tuple[Panel, ...]
+
+    def named(self, name: str) -> Panel | None:
+        return next((panel for panel in (*self.kinematics, *self.forces) if panel.name == name), None)
+
+
+def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = ()) -> CoursePanels:
+    """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
+    kinematics = [*kinematics_panels(analysis),
+                  *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
+    return CoursePanels(tuple(kinematics), tuple(force_panels(analysis)))
+
+
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
-                  diagrams: Sequence[Panel | Sequence[Layer]] = ()) -> list[Sheet]:
+                  diagrams: Sequence[Panel | Sequence[Layer]] = (), panels: CoursePanels | None = None) -> list[Sheet]:
     """Every sheet of the analysis, numbered as one set: kinematics first, then forces.
 
     ``sheet`` defaults to the scene's ``drawing.sheet``; ``diagrams`` are
-    further kinematics panels (the diagrams of the output link).
+    further kinematics panels (the diagrams of the output link); ``panels``
+    the drawings already laid out (:func:`course_panels` of the analysis
+    with its μl fixed, :func:`~graphplan.render.drawings.with_length_scale`),
+    which then stand for ``diagrams`` too.
     """
+    chosen = analysis.scene.drawing.sheet if sheet is None else sheet
+    _check_sheet(chosen)
+    analysis = with_length_scale(analysis)
     scene = analysis.scene
-    chosen = scene.drawing.sheet if sheet is None else sheet
+    panels = panels or course_panels(analysis, diagrams)
+    if chosen != "none":
+        _check_positions_fit(analysis, chosen, panels.kinematics[0])
     details = details or Details()
     if not details.title:
         details = replace(details, title=scene.title)
     scale = length_scale(analysis)
-    kinematics = [*kinematics_panels(analysis),
-                  *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
-    forces = force_panels(analysis)
+    kinematics, forces = list(panels.kinematics), list(panels.forces)
     if chosen == "none":
         pages = kinematics + forces
         return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
     form = form_of(scene.locale)
-    first_pages = _pack([panel_of(p, f"panel-{k + 1}") for k, p in enumerate(kinematics)], chosen, form)
+    first_pages = _pack(kinematics, chosen, form)
     second_pages = _pack(forces, chosen, form) if forces else []
     total = len(first_pages) + len(second_pages)
     return (_drawn(first_pages, chosen, scene.locale, "sheet_kinematics", scale, details, 1, total)
             + _drawn(second_pages, chosen, scene.locale, "sheet_forces", scale, details, len(first_pages) + 1,
                      total))
+
+
+def _check_positions_fit(analysis: Analysis, sheet: str, positions: Panel) -> None:
+    """A clear error, with the μl and the format that would do, when the plan of ``positions`` fits no ``sheet``."""
+    scale = length_scale(analysis)
+    form = form_of(analysis.scene.locale)
+    width, height = _width(positions), _height(positions)
+    if holds(sheet, form, width, height):
+        return
+    fitting = fitting_length_scale(analysis, sheet, scale)
+    bigger, ways = BIGGER.get(sheet), []
+    while bigger is not None and not holds(bigger, form, width, height):
+        bigger = BIGGER.get(bigger)
+    if bigger is not None:
+        ways.append(f"choose {bigger} or a bigger sheet")
+    ways.append('sheet = "none"')
+    raise SceneError("drawing.sheet",
+                     f"the plan of positions is {width:.0f} × {height:.0f} mm at μl = {format_scale(scale)} m/mm and "
+                     f"fits on no {sheet} sheet; give drawing.length_scale = {format_scale(fitting)} (or more), "
+                     f"or {', or '.join(ways)}", sheet)
 
 
 def _sheets(drawings: Sequence[Panel | Sequence[Layer]], sheet: str, locale: str, kind: str, title: str,
@@ -367,36 +480,19 @@ def _grown(rect: Rect, by: float) -> Rect:
     return (rect[0] - by, rect[1] - by, rect[2] + by, rect[3] + by)
 
 
-def margins(form: str, sheet: str) -> tuple[float, float, float, float]:
-    """The frame's distance from the sheet's edges (left, bottom, right, top, mm) in ``form``'s standard."""
-    if form == "eskd":  # GOST 2.104: 20 mm for binding, 5 mm elsewhere
-        return (20.0, 5.0, 5.0, 5.0)
-    if form == "gb":  # GB/T 14689, with binding: a = 25; c = 10 on A0..A2, 5 on A3, A4
-        c = 10.0 if sheet in ("A1", "A2") else 5.0
-        return (25.0, c, c, c)
-    return (20.0, 10.0, 10.0, 10.0)  # ISO 5457
-
-
 def _empty_page(sheet: str, form: str, portrait: bool) -> _Page:
-    width, height = FORMATS[sheet]
-    if portrait:
-        width, height = height, width
-    left, bottom, right, top = margins(form, sheet)
-    frame = (left, bottom, width - right, height - top)
-    block_width, block_height = SIZES[form]
-    block = (frame[2] - block_width, frame[1], frame[2], frame[1] + block_height)
-    area = (frame[0] + PADDING_MM, frame[1] + PADDING_MM, frame[2] - PADDING_MM, frame[3] - PADDING_MM)
-    return _Page((width, height), frame, block, area)
+    geometry = page_geometry(sheet, form, portrait)
+    return _Page(geometry.size, geometry.frame, geometry.block, geometry.area)
 
 
 def _pack(panels: Sequence[Panel], sheet: str, form: str) -> list[_Page]:
     """The panels on as few sheets as this simple packing needs; A4 upright or across, whichever needs fewer."""
     _check_sheet(sheet)
-    if sheet != "A4":
+    if len(orientations(sheet)) == 1:
         return _pack_on(panels, sheet, form, portrait=False)
     packed: dict[bool, list[_Page]] = {}
     failure: SceneError | None = None
-    for portrait in (False, True):
+    for portrait in orientations(sheet):
         try:
             packed[portrait] = _pack_on(panels, sheet, form, portrait)
         except SceneError as error:
@@ -507,7 +603,7 @@ def _too_big(panel: Panel, page: _Page, sheet: str, whose: str = "") -> SceneErr
     x0, y0, x1, y1 = panel.extent
     ax0, ay0, ax1, ay1 = page.area
     what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
-    bigger = _BIGGER.get(sheet)
+    bigger = BIGGER.get(sheet)
     advice = f"choose {bigger} or a bigger sheet, or " if bigger else "choose a larger μl (drawing.length_scale) or "
     return SceneError("drawing.sheet",
                       f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "

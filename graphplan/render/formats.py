@@ -1,0 +1,80 @@
+"""Sheet formats and where a drawing may stand on them: the frame, the title block and the drawing area.
+
+The geometry only, so that a drawing can ask whether it fits a sheet (the
+plan of positions choosing its μl, the diagrams their axis) before the
+sheets are packed (:mod:`graphplan.render.sheet`).  Formats are those of
+ISO 216, GOST 2.301 and GB/T 14689; the frame's margins are those of the
+locale's standard, the title block stands in the frame's lower right corner.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .title_block import SIZES
+
+Rect = tuple[float, float, float, float]
+
+# Sheet formats, landscape (mm): ISO 216, GOST 2.301, GB/T 14689.
+FORMATS: dict[str, tuple[float, float]] = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0),
+                                           "A4": (297.0, 210.0)}
+SHEET_NAMES = (*FORMATS, "none")
+BIGGER = {"A4": "A3", "A3": "A2", "A2": "A1"}
+# Space between a drawing and the frame or the title block (mm).
+PADDING_MM = 8.0
+
+
+@dataclass(frozen=True)
+class PageGeometry:
+    """An empty sheet: its size, the inner frame, the title block and the area drawings may take (mm, y up)."""
+
+    size: tuple[float, float]
+    frame: Rect
+    block: Rect
+    area: Rect
+
+    def rooms(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The two largest free rectangles (width, height): above the title block, and left of it."""
+        ax0, ay0, ax1, ay1 = self.area
+        above = (ax1 - ax0, ay1 - (self.block[3] + PADDING_MM))
+        beside = (self.block[0] - PADDING_MM - ax0, ay1 - ay0)
+        return above, beside
+
+    def holds(self, width: float, height: float) -> bool:
+        """Whether a drawing of this size fits on the empty sheet, clear of the title block."""
+        eps = 1e-6
+        return any(width <= room_width + eps and height <= room_height + eps
+                   for room_width, room_height in self.rooms())
+
+
+def margins(form: str, sheet: str) -> tuple[float, float, float, float]:
+    """The frame's distance from the sheet's edges (left, bottom, right, top, mm) in ``form``'s standard."""
+    if form == "eskd":  # GOST 2.104: 20 mm for binding, 5 mm elsewhere
+        return (20.0, 5.0, 5.0, 5.0)
+    if form == "gb":  # GB/T 14689, with binding: a = 25; c = 10 on A0..A2, 5 on A3, A4
+        c = 10.0 if sheet in ("A1", "A2") else 5.0
+        return (25.0, c, c, c)
+    return (20.0, 10.0, 10.0, 10.0)  # ISO 5457
+
+
+def page_geometry(sheet: str, form: str, portrait: bool = False) -> PageGeometry:
+    """The empty ``sheet`` (a format name) in ``form``'s standard, turned upright when ``portrait``."""
+    width, height = FORMATS[sheet]
+    if portrait:
+        width, height = height, width
+    left, bottom, right, top = margins(form, sheet)
+    frame = (left, bottom, width - right, height - top)
+    block_width, block_height = SIZES[form]
+    block = (frame[2] - block_width, frame[1], frame[2], frame[1] + block_height)
+    area = (frame[0] + PADDING_MM, frame[1] + PADDING_MM, frame[2] - PADDING_MM, frame[3] - PADDING_MM)
+    return PageGeometry((width, height), frame, block, area)
+
+
+def orientations(sheet: str) -> tuple[bool, ...]:
+    """Whether the format may stand upright: only A4 is turned, as its drawings need (``portrait`` values)."""
+    return (False, True) if sheet == "A4" else (False,)
+
+
+def holds(sheet: str, form: str, width: float, height: float) -> bool:
+    """Whether a drawing of ``width`` × ``height`` mm fits on an empty ``sheet`` in either allowed orientation."""
+    return any(page_geometry(sheet, form, portrait).holds(width, height) for portrait in orientations(sheet))
