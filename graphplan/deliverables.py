@@ -28,10 +28,10 @@ from .scene import OUTPUT_PIECES, Scene
 # ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = OUTPUT_PIECES
 FORMATS = ("svg", "png", "pdf", "dxf")
-# Pieces delivered only when asked for: the figures cost matplotlib's second; the sheets repeat the
-# drawings in a frame, and a scene's drawings may not fit the sheet it names; the accuracy report
-# times the methods, so it is the one output that differs from run to run.
-ON_REQUEST = ("figures", "sheets", "accuracy")
+# Pieces delivered only when asked for: the figures cost matplotlib's second; the accuracy report
+# times the methods, so it is the one output that differs from run to run.  The sheets repeat the
+# drawings in a frame: they come unasked only when the scene names its sheet ([drawing] sheet).
+ON_REQUEST = ("figures", "accuracy")
 _NO_LINKAGE = "needs a mechanism: the scene has no [frame] and [driver]"
 _NO_LOADS = "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
 _NO_PLANS = "needs plan positions: positions.plans lists none"
@@ -97,13 +97,18 @@ def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None =
     elif scene.include is not None:
         asked, where = list(scene.include), "output.include"
     if asked is None:
-        return tuple(piece for piece in PIECES
-                     if piece not in ON_REQUEST and missing(scene, analysis, piece) is None)
+        return tuple(piece for piece in PIECES if _by_default(scene, piece) and missing(scene, analysis, piece) is None)
     for k, piece in enumerate(asked):
         reason = missing(scene, analysis, piece)
         if reason is not None:
             raise SceneError(f"{where}[{k}]", f"{piece!r} {reason}")
     return tuple(piece for piece in PIECES if piece in asked)
+
+
+def _by_default(scene: Scene, piece: str) -> bool:
+    if piece == "sheets":
+        return scene.drawing.sheet_given
+    return piece not in ON_REQUEST
 
 
 def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> list[Drawing]:
@@ -133,8 +138,12 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
     from .render import positions as positions_layout
 
     found: list[Drawing] = []
+    analysis = draw.with_length_scale(analysis)
+    # The sheets hold the drawings that are also written on their own: each is laid out once.
+    panels = _course_panels(analysis) if "sheets" in pieces else None
     if "positions" in pieces:
-        found.append(Drawing("positions", positions_layout.layout(draw.positions_plan(analysis))))
+        layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
+        found.append(Drawing("positions", layers))
     if "dynamics" in pieces:
         from .render import dynamics as dynamics_layout
 
@@ -146,29 +155,43 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
 
         found.append(Drawing("diagrams", diagrams_layout.layout(of_analysis(analysis),
                                                                 strings(analysis.scene.locale))))
-    if "sheets" in pieces:
+    if panels is not None:
         from .render.sheet import course_sheets
 
-        diagrams = ()
-        if missing(analysis.scene, analysis, "diagrams") is None:
-            from .kinematic_diagrams import of_analysis
-            from .render import diagrams as diagrams_layout
-
-            diagrams = (diagrams_layout.layout(of_analysis(analysis), strings(analysis.scene.locale)),)
-        for sheet in course_sheets(analysis, diagrams=diagrams):
+        for sheet in course_sheets(analysis, panels=panels):
             found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
     shown = tuple(name for name in ("velocity", "acceleration") if name in pieces)
     for plan in analysis.plans:
         if shown:
-            sheet = dataclasses.replace(draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration),
-                                        drawings=("mechanism", *shown))
-            found.append(Drawing(f"plan_{plan.number}", plan_layout.layout(sheet)))
+            laid_out = panels.named(f"plan-{plan.number}") if panels and len(shown) == 2 else None
+            if laid_out is None:
+                sheet = dataclasses.replace(draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration),
+                                            drawings=("mechanism", *shown))
+                layers = plan_layout.layout(sheet)
+            else:
+                layers = list(laid_out.layers)
+            found.append(Drawing(f"plan_{plan.number}", layers))
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
-            sheet = draw.force_sheet(analysis, plan)
-            if "lever" not in pieces:
-                sheet = dataclasses.replace(sheet, lever=None)
-            found.append(Drawing(f"forces_{plan.number}", force_layout.layout(sheet)))
+            laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
+            if laid_out is None:
+                sheet = draw.force_sheet(analysis, plan)
+                if "lever" not in pieces:
+                    sheet = dataclasses.replace(sheet, lever=None)
+                layers = force_layout.layout(sheet)
+            else:
+                layers = list(laid_out.layers)
+            found.append(Drawing(f"forces_{plan.number}", layers))
     return found
+
+
+def _course_panels(analysis: Analysis):
+    """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet."""
+    from .render.sheet import course_panels, diagrams_panel
+
+    diagrams = ()
+    if missing(analysis.scene, analysis, "diagrams") is None:
+        diagrams = (diagrams_panel(analysis, analysis.scene.drawing.sheet),)
+    return course_panels(analysis, diagrams)
 
 
 def machine_dynamics(source: Analysis | Scene):

@@ -123,6 +123,8 @@ class Drawing:
     acceleration_scale: float | None
     drafting_precision: float
     sheet: str
+    # Whether the scene names its sheet: only then are the sheets drawn without being asked for.
+    sheet_given: bool = False
 
 
 @dataclass(frozen=True)
@@ -469,6 +471,7 @@ def _read_drawing(table: Table) -> Drawing:
         acceleration_scale=table.number("acceleration_scale", None, positive=True),
         drafting_precision=table.number("drafting_precision", 0.5, positive=True),
         sheet=table.choice("sheet", SHEETS, "A1"),
+        sheet_given=table.has("sheet"),
     )
     for plan in ("velocity", "acceleration"):
         if table.has(f"{plan}_pole") and table.has(f"{plan}_scale"):

@@ -7,8 +7,8 @@ import json
 import math
 import re
 import tomllib
-import xml.etree.ElementTree as ElementTree
 from pathlib import Path
+from xml.etree import ElementTree
 
 import pytest
 from test_scene_errors import to_toml
@@ -230,7 +230,7 @@ def test_the_machine_run_by_its_motor_fluctuates_as_its_flywheel_was_sized(tmp_p
     assert motion["method"] in ("RK45", "DOP853", "LSODA", "Radau", "BDF") and motion["method_reason"]
 
 
-def test_sheets_only_when_asked_for_and_each_the_size_of_its_format(tmp_path):
+def test_sheets_when_the_scene_names_its_sheet_each_the_size_of_its_format(tmp_path):
     status, out = run(tmp_path, "--only", "sheets")
     assert status == 0
     sheets = sorted(name for name in names(out) if name.startswith("sheet_"))
@@ -238,5 +238,42 @@ def test_sheets_only_when_asked_for_and_each_the_size_of_its_format(tmp_path):
     for name in sheets:
         root = ElementTree.parse(out / name).getroot()
         assert (root.get("width"), root.get("height")) == ("841mm", "594mm")  # the ratchet asks for A1
+    # The ratchet names its sheet: a plain run draws the sheets too, the same as when asked for.
     status, plain = run(tmp_path / "plain")
-    assert not any(name.startswith("sheet_") for name in names(plain))
+    assert {name for name in names(plain) if name.startswith("sheet_")} == set(sheets)
+    assert all((plain / name).read_bytes() == (out / name).read_bytes() for name in sheets)
+    # A scene that names no sheet gets none unless it asks.
+    document = tomllib.loads(RATCHET.read_text(encoding="utf-8"))
+    del document["drawing"]["sheet"]
+    unnamed = tmp_path / "unnamed.toml"
+    unnamed.write_text(to_toml(document), encoding="utf-8")
+    status, bare = run(tmp_path / "bare", scene=unnamed)
+    assert status == 0 and "plan_5.svg" in names(bare)
+    assert not any(name.startswith("sheet_") for name in names(bare))
+    status, asked = run(tmp_path / "asked", "--only", "sheets", scene=unnamed)
+    assert status == 0 and any(name.startswith("sheet_") for name in names(asked))
+
+
+def test_the_drawings_on_their_own_are_the_same_with_or_without_the_sheets(tmp_path):
+    """The sheets reuse the drawings laid out for their own files: that changes none of those files."""
+    status, together = run(tmp_path / "together", "--only", "positions,velocity,acceleration,forces,lever,sheets")
+    assert status == 0
+    status, alone = run(tmp_path / "alone", "--only", "positions,velocity,acceleration,forces,lever")
+    assert status == 0
+    drawn = {name for name in names(alone) if name.endswith(".svg")}
+    assert drawn == {"positions.svg", "plan_5.svg", "plan_11.svg", "forces_5.svg", "forces_11.svg"}
+    assert all((together / name).read_bytes() == (alone / name).read_bytes() for name in drawn)
+
+
+def test_a_scene_whose_plan_of_positions_fits_no_named_sheet_is_refused_with_the_scale_that_fits(tmp_path, capsys):
+    document = tomllib.loads(RATCHET.read_text(encoding="utf-8"))
+    document["drawing"].update(sheet="A4", length_scale=0.001)
+    path = tmp_path / "tiny_sheet.toml"
+    path.write_text(to_toml(document), encoding="utf-8")
+    status, out = run(tmp_path, scene=path)
+    assert status == 2 and not out.exists()
+    error = capsys.readouterr().err
+    assert "drawing.sheet" in error and "no A4 sheet" in error
+    fitting = float(re.search(r"length_scale = ([0-9.]+)", error).group(1))
+    # The ratchet's paths span 0.73 m; at the named scale they would be 730 mm, at the one given < 290 mm.
+    assert 0.73 / fitting < 290.0
