@@ -169,6 +169,8 @@ class Step:
     the step fixes; ``crossing_deg`` the angle at which its lines crossed.
     A step that places a point by the similarity theorem lays off nothing and
     says how in ``similarity`` (its ``equation`` is ``similarity.text``).
+    ``translating`` is the link whose translation on the frame's guide
+    makes the equation hold (``aB = aA4``: link 4 does not turn).
     """
 
     equation: str
@@ -177,6 +179,7 @@ class Step:
     fixes: tuple[str, ...] = ()
     crossing_deg: float | None = None
     similarity: Similarity | None = None
+    translating: int | None = None
 
 
 @dataclass(frozen=True)

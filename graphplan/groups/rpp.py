@@ -210,8 +210,8 @@ class RPP(Group):
         point, g = f"{a_name}{slotted}", f"{b_name}{carrier}"
         if carrier == board.mechanism.scene.frame_link:
             b = board.fix(b_name, board.points[a4])
-            step = Step(f"{symbol}{b_name} = {symbol}{point} (link {slotted} translates on the frame's guide)",
-                        (LaidVector("p", b, f"{symbol}{b_name}"),), fixes=(b,))
+            step = Step(f"{symbol}{b_name} = {symbol}{point}", (LaidVector("p", b, f"{symbol}{b_name}"),), fixes=(b,),
+                        translating=slotted)
         else:
             bg = guide_point(board, carrier, b_name)
             b = board.fix(b_name, board.points[bg] + board.points[a4] - board.points[ag])

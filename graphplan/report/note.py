@@ -365,10 +365,9 @@ class _Note:
 
     def group_step(self, pp: PlanPosition, plan: Plan, step: Step) -> None:
         clauses = step.equation.split(", ")
-        first, note = _parenthesis(clauses[0])
-        sides = [side.split(" + ") for side in first.split(" = ")]
+        sides = [side.split(" + ") for side in clauses[0].split(" = ")]
         shown = self.equation(" = ".join(" + ".join(side) for side in sides))
-        explanation = self.explain(note) if note else ""
+        explanation = "" if step.translating is None else self.t("note_translates", link=step.translating)
         extra = "".join(f", {self.equation(clause)}" for clause in clauses[1:])
         if len(sides) < 3 and all(len(side) == 1 for side in sides):
             self.para(f"{shown}{extra}" + (f" — {explanation}" if explanation else "") + ".")
@@ -387,12 +386,6 @@ class _Note:
     def equation(self, text: str) -> str:
         """An equation of the record with velocities written V, as the textbooks print them."""
         return re.sub(r"(?<![A-Za-z])v(?=[A-Z])", "V", text)
-
-    def explain(self, note: str) -> str:
-        match = re.fullmatch(r"link (\d+) translates on the frame's guide", note)
-        if match:
-            return self.t("note_translates", link=match.group(1))
-        return note
 
     def line(self, along: LineMeaning) -> str:
         """A line of action (⊥ AB, ∥ guide) in the note's language; points and frame lines keep their names."""
@@ -864,12 +857,6 @@ class _Note:
                              polygons=self.n(polygons, 6), delta=self.n(difference, 3)))
         self.captioned(self.t("note_balancing_table", name=name, number=plan.number),
                        force_report.balancing_lines(analysis, plan, self.mark))
-
-
-def _parenthesis(text: str) -> tuple[str, str]:
-    """``"aB = aA4 (why)"`` → ``("aB = aA4", "why")``."""
-    match = re.fullmatch(r"(.*?) \((.*)\)", text)
-    return (match.group(1), match.group(2)) if match else (text, "")
 
 
 def _body(term: str) -> tuple[str, str]:
