@@ -357,6 +357,10 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     for drawing in drawings(scene, analysis, pieces):
         found.update(encoded(drawing, formats))
     found.update(tables(analysis, pieces))
+    if "pdf" in formats and "note.html" in found:
+        from .report.pdf import note_pdf
+
+        found["note.pdf"] = note_pdf(str(found["note.html"]))
     found.update(figures(scene, analysis, pieces))
     if "accuracy" in pieces and analysis is not None:
         found.update(accuracy_report(analysis))

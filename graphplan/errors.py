@@ -71,7 +71,7 @@ class SingularPositionError(GraphplanError, ArithmeticError):
 
 
 class OutputError(GraphplanError, OSError):
-    """The output folder could not be written."""
+    """An output could not be made (a PDF without its typesetter) or the output folder could not be written."""
 
 
 class FrictionError(GraphplanError, ValueError):

@@ -27,6 +27,7 @@ table { border-collapse: collapse; margin: 0.6em 0 1.2em; font-size: 0.92em; }
 th, td { border: 1px solid #999; padding: 0.2em 0.55em; vertical-align: top; }
 th { background: #eee; }
 td { font-variant-numeric: tabular-nums; }
+@page { size: A4; margin: 20mm 10mm 20mm 30mm; @bottom-center { content: counter(page); font-size: 9pt; } }
 @media print { body { max-width: none; margin: 0; } h2, h3 { break-after: avoid; } table { break-inside: avoid; } }
 """
 

@@ -1,0 +1,131 @@
+"""The explanatory note as a PDF: A4 pages that hold every heading and number of the note, in each language.
+
+The PDF's text is read back with PDFium (pypdfium2), an independent reader: what it extracts is what
+a reader of the PDF would copy, so a heading or a number lost in typesetting, or a glyph without its
+font (CJK in a Latin font), fails here.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sys
+from html.parser import HTMLParser
+
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.errors import OutputError
+from graphplan.report.note import note_html
+from graphplan.report.pdf import note_pdf
+
+pdfium = pytest.importorskip("pypdfium2")
+try:
+    import weasyprint  # noqa: F401
+except (ImportError, OSError) as error:  # OSError: no Pango library
+    pytest.skip(f"WeasyPrint cannot typeset here: {error}", allow_module_level=True)
+
+A4_PT = (595.28, 841.89)
+
+
+class _Headings(HTMLParser):
+    """The text of each h1–h3 of an HTML document."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.found: list[str] = []
+        self._inside = False
+
+    def handle_starttag(self, tag, attrs):
+        if tag in ("h1", "h2", "h3"):
+            self._inside = True
+            self.found.append("")
+
+    def handle_endtag(self, tag):
+        if tag in ("h1", "h2", "h3"):
+            self._inside = False
+
+    def handle_data(self, data):
+        if self._inside:
+            self.found[-1] += data
+
+
+def squeezed(text: str) -> str:
+    """Text without whitespace or soft hyphens: lines break differently in the PDF than in the HTML."""
+    return re.sub(r"[\s\u00ad\ufffe]+", "", text)
+
+
+@pytest.fixture(scope="module")
+def ratchet():
+    return analyse(graphplan.load("fixtures/ratchet_crank_rocker.toml"))
+
+
+@pytest.fixture(scope="module")
+def notes(ratchet):
+    """The ratchet's note in each language: its HTML and its PDF."""
+    found = {}
+    for locale in ("en", "ru", "zh"):
+        import dataclasses
+
+        analysis = dataclasses.replace(ratchet, scene=dataclasses.replace(ratchet.scene, locale=locale))
+        html = note_html(analysis)
+        found[locale] = (html, note_pdf(html))
+    return found
+
+
+def pdf_text(data: bytes) -> tuple[list[tuple[float, float]], str]:
+    document = pdfium.PdfDocument(data)
+    sizes = [tuple(page.get_size()) for page in document]
+    text = "".join(page.get_textpage().get_text_range() for page in document)
+    return sizes, text
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_every_heading_of_the_note_is_in_its_pdf_on_a4_pages(notes, locale):
+    html, data = notes[locale]
+    sizes, text = pdf_text(data)
+    assert len(sizes) > 5  # the ratchet's note runs over many pages
+    assert all(abs(w - A4_PT[0]) < 1 and abs(h - A4_PT[1]) < 1 for w, h in sizes)
+    parser = _Headings()
+    parser.feed(html)
+    assert len(parser.found) > 8
+    flat = squeezed(text)
+    for heading in parser.found:
+        assert squeezed(heading) in flat, heading
+
+
+def test_the_numbers_read_off_the_plan_are_in_the_pdf_with_the_languages_decimal_mark(notes):
+    _, ru = notes["ru"]
+    _, en = notes["en"]
+    # μV = VA / pa = 2.975 / 150: the driver's velocity ω·lOA = 17 × 0.175 m/s, with the locale's decimal mark.
+    assert "2,975" in pdf_text(ru)[1] and "2.975" in pdf_text(en)[1]
+
+
+def test_chinese_text_comes_out_as_chinese_not_as_missing_glyphs(notes):
+    html, data = notes["zh"]
+    text = pdf_text(data)[1]
+    chinese = [c for c in text if "\u4e00" <= c <= "\u9fff"]
+    assert len(chinese) > 500
+    assert "\ufffd" not in text
+
+
+def test_the_same_note_gives_the_same_pdf_bytes(notes):
+    html, data = notes["ru"]
+    assert note_pdf(html) == data
+    assert "SOURCE_DATE_EPOCH" not in os.environ
+
+
+def test_the_command_line_writes_the_note_as_pdf_only_when_pdf_is_asked_for(tmp_path):
+    scene = "fixtures/ratchet_crank_rocker.toml"
+    assert main(["run", scene, "--out", str(tmp_path / "pdf"), "--only", "note", "--format", "pdf"]) == 0
+    assert (tmp_path / "pdf" / "note.pdf").read_bytes().startswith(b"%PDF")
+    assert main(["run", scene, "--out", str(tmp_path / "plain"), "--only", "note"]) == 0
+    assert not (tmp_path / "plain" / "note.pdf").exists()
+
+
+def test_without_weasyprint_the_pdf_of_the_note_is_a_clear_error(monkeypatch):
+    monkeypatch.setitem(sys.modules, "weasyprint", None)  # import weasyprint now raises ImportError
+    with pytest.raises(OutputError, match=r"note\.pdf: .*WeasyPrint.*--format"):
+        note_pdf("<html><body><p>x</p></body></html>")
