@@ -22,7 +22,7 @@ from typing import Any
 from .analysis import Analysis
 from .errors import SceneError
 from .locale import strings
-from .render.primitives import Layer
+from .render.primitives import Layer, with_decimal_mark
 from .scene import OUTPUT_PIECES, Scene
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
@@ -128,7 +128,9 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
         assert scene.balancing is not None
         found.append(Drawing("rotor_balancing", balancing_layout.layout(balance(scene.balancing),
                                                                          strings(scene.locale))))
-    return found
+    mark = strings(scene.locale)["decimal_mark"]
+    return [dataclasses.replace(drawing, layers=with_decimal_mark(drawing.layers, mark, (scene.title,)))
+            for drawing in found]
 
 
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawing]:

@@ -16,7 +16,7 @@ from ..scales import fit_scale, format_scale, standard_scale
 from . import forces as force_layout
 from . import plans, positions
 from .formats import holds
-from .primitives import bounds
+from .primitives import Layer, bounds, with_decimal_mark
 from .svg import to_svg
 from .title_block import form_of
 
@@ -75,8 +75,14 @@ def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
     raise SceneError("drawing.sheet", f"the plan of positions fits no {sheet} sheet at any μl", sheet)
 
 
+def _svg(analysis: Analysis, layers: list[Layer]) -> str:
+    """The SVG text of a drawing of the analysis, its numbers with the decimal mark of the scene's language."""
+    scene = analysis.scene
+    return to_svg(with_decimal_mark(layers, strings(scene.locale)["decimal_mark"], (scene.title,)))
+
+
 def positions_svg(analysis: Analysis) -> str:
-    return to_svg(positions.layout(positions_plan(analysis)))
+    return _svg(analysis, positions.layout(positions_plan(analysis)))
 
 
 def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.PositionsPlan:
@@ -93,7 +99,7 @@ def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.
 
 def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, acceleration: Plan | None = None) -> str:
     """The SVG text of the plan sheet of the position at ``index`` (:func:`plan_sheet`)."""
-    return to_svg(plans.layout(plan_sheet(analysis, index, velocity, acceleration)))
+    return _svg(analysis, plans.layout(plan_sheet(analysis, index, velocity, acceleration)))
 
 
 def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
@@ -160,7 +166,7 @@ def plan_scale_text(value: float) -> str:
 
 def forces_svg(analysis: Analysis, plan_position: PlanPosition) -> str:
     """The SVG text of the force sheet of one plan position (:func:`force_sheet`)."""
-    return to_svg(force_layout.layout(force_sheet(analysis, plan_position)))
+    return _svg(analysis, force_layout.layout(force_sheet(analysis, plan_position)))
 
 
 def force_sheet(analysis: Analysis, plan_position: PlanPosition) -> force_layout.ForceSheet:

@@ -11,6 +11,7 @@ in one place.
 from __future__ import annotations
 
 import math
+import re
 import unicodedata
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
@@ -281,6 +282,34 @@ def moved(item: Primitive, dx: float, dy: float) -> Primitive:
     if isinstance(item, Circle):
         return replace(item, centre=shift(item.centre))
     return replace(item, at=shift(item.at))
+
+
+# A point between two digits is a decimal point: no other text of a drawing puts one there.
+_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
+# The title block holds what the user wrote (a designation ТММ.01.02, a date 21.11.2026): never changed.
+_USER_LAYERS = ("title-block",)
+
+
+def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = ()) -> list[Layer]:
+    """``layers`` with every number's decimal point written ``mark`` (``","`` in Russian, as ESKD writes it).
+
+    The title block and the strings ``kept`` (the scene's title, quoted in a
+    drawing's heading) are the user's text and stay as written.
+    """
+    if mark == ".":
+        return list(layers)
+    kept = tuple(text for text in kept if text)
+
+    def marked(text: str) -> str:
+        for quoted in kept:
+            if quoted in text:
+                return quoted.join(marked(part) for part in text.split(quoted))
+        return _DECIMAL_POINT.sub(mark, text)
+
+    return [layer if layer.name in _USER_LAYERS else
+            Layer(layer.name, tuple(replace(item, text=marked(item.text)) if isinstance(item, Text) else item
+                                    for item in layer.items))
+            for layer in layers]
 
 
 def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
