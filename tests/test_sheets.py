@@ -152,6 +152,25 @@ def test_no_drawing_overlaps_another_or_the_title_block(a1_sheets, name):
 
 
 @pytest.mark.parametrize("name", FIXTURES)
+def test_every_fixture_fits_the_sheet_it_names_with_its_diagrams(analyses, name):
+    """What a plain run draws: the scene's own format (A1 or A2), the kinematic diagrams among the panels."""
+    analysis = analyses[name]
+    named = analysis.scene.drawing.sheet
+    drawable = analysis.scene.positions.working is not None and analysis.scene.driver.kind == "crank"
+    diagrams = (diagrams_panel(analysis, named),) if drawable else ()
+    sheets = course_sheets(analysis, diagrams=diagrams)
+    width, height = {"A1": (841.0, 594.0), "A2": (594.0, 420.0)}[named]
+    for sheet in sheets:
+        assert sheet.size == (width, height)
+        for text in texts(sheet.layers):
+            assert inside(text_extent(text), sheet.frame), f"sheet {sheet.number}: {text.text!r} outside the frame"
+        drawn = placed_bounds(sheet)
+        for (first, a), (second, b) in itertools.combinations(drawn.items(), 2):
+            assert not overlap(a, b), f"sheet {sheet.number}: {first} overlaps {second}"
+        assert not any(overlap(rect, sheet.title_block) for rect in drawn.values())
+
+
+@pytest.mark.parametrize("name", FIXTURES)
 def test_sheets_are_numbered_as_one_set_kinematics_first(a1_sheets, analyses, name):
     sheets = a1_sheets[name]
     assert [sheet.number for sheet in sheets] == list(range(1, len(sheets) + 1))
