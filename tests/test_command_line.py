@@ -50,7 +50,7 @@ def test_positions_svg_draws_every_position_and_the_paths(run_folder):
     # Four named points, four closed paths (the crank turns a full cycle).
     assert len(groups["paths"].findall("svg:path", ns)) == 4
     caption = " ".join(t.text for t in groups["caption"].findall("svg:text", ns))
-    assert "0.0025" in caption
+    assert "0,0025" in caption  # the ratchet's μl, written with the Russian decimal comma
 
 
 def test_the_same_scene_gives_the_same_bytes(tmp_path, run_folder):
