@@ -59,3 +59,25 @@ def test_only_points_between_digits_change():
     assert marked[0].items[0].text == "μl = 0,0025 m/mm; II(3,4); a.b; 1. item; 2,5 и 10,75"
     assert marked[1] == block
     assert with_decimal_mark([layer], ".") == [layer]
+
+
+def test_plots_write_their_ticks_legends_and_notes_with_the_mark_but_not_the_title():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from graphplan.report.plot_style import with_decimal_mark
+
+    figure = Figure()
+    axes = figure.add_subplot()
+    axes.plot([0.0, 1.0], [0.0, 1.5], label="ζ = 0.25")
+    axes.annotate("2.5 mm", (0.5, 0.5))
+    axes.set_title("Rig v1.2")
+    axes.legend()
+    with_decimal_mark(figure, ",")
+    figure.canvas.draw()
+    ticks = [label.get_text() for label in axes.get_yticklabels()]
+    assert "0,4" in ticks and not [tick for tick in ticks if "." in tick]
+    assert [text.get_text() for text in axes.get_legend().get_texts()] == ["ζ = 0,25"]
+    assert "2,5 mm" in [text.get_text() for text in axes.texts]
+    assert axes.get_title() == "Rig v1.2"

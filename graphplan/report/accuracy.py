@@ -15,7 +15,7 @@ from collections.abc import Iterable, Mapping
 
 from ..accuracy import Row, Study, draw_study
 from ..locale import strings
-from .plot_style import settings, svg_text
+from .plot_style import settings, svg_text, with_decimal_mark
 
 FAMILIES = ("velocity", "acceleration")
 
@@ -91,4 +91,5 @@ def figure(study: Study, locale: str, title: str) -> str:
         axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9)
         axes.legend(fontsize=8, loc="best")
         drawn.tight_layout()
+        with_decimal_mark(drawn, text["decimal_mark"])
         return svg_text(drawn)

@@ -15,7 +15,7 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
-from .plot_style import font_families, svg_text
+from .plot_style import font_families, svg_text, with_decimal_mark
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -64,6 +64,7 @@ def balancing_diagram(analysis: Analysis) -> str:
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=8, loc="best")
     figure.tight_layout()
+    with_decimal_mark(figure, text["decimal_mark"])
     return svg_text(figure)
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import re
 from typing import Any
 
 # Latin and Cyrillic first, then CJK: matplotlib falls back along the list glyph by glyph.
@@ -31,6 +32,46 @@ def font_families() -> list[str]:
 def settings() -> dict[str, Any]:
     """matplotlib settings for ``rc_context``: a fixed hash salt, and text drawn as paths in any script."""
     return {"svg.hashsalt": "graphplan", "font.family": font_families(), "svg.fonttype": "path"}
+
+
+# A point between two digits is a decimal point (the same rule as the drawings', render.primitives).
+_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
+
+
+def with_decimal_mark(figure, mark: str) -> None:
+    """Write the numbers of ``figure`` with ``mark`` (a comma in Russian): tick labels, legends, annotations.
+
+    The axes' titles are left as they are: they quote the scene's title, which is the user's text.
+    """
+    if mark == ".":
+        return
+    from matplotlib.text import Text
+
+    titles = {id(axes.title) for axes in figure.axes}
+    for text in figure.findobj(Text):
+        if id(text) not in titles:
+            text.set_text(_DECIMAL_POINT.sub(mark, text.get_text()))
+    for axes in figure.axes:
+        for axis in (axes.xaxis, axes.yaxis):
+            axis.set_major_formatter(_marked_formatter(axis.get_major_formatter(), mark))
+            axis.set_minor_formatter(_marked_formatter(axis.get_minor_formatter(), mark))
+
+
+def _marked_formatter(inner, mark: str):
+    """``inner`` (a matplotlib tick formatter) with its decimal points written ``mark``."""
+    from matplotlib.ticker import Formatter
+
+    class Marked(Formatter):
+        def set_locs(self, locs):
+            inner.set_locs(locs)
+
+        def __call__(self, x, pos=None):
+            return _DECIMAL_POINT.sub(mark, inner(x, pos))
+
+        def get_offset(self):
+            return _DECIMAL_POINT.sub(mark, inner.get_offset())
+
+    return Marked()
 
 
 def svg_text(figure) -> str:

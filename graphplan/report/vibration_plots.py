@@ -19,7 +19,7 @@ import numpy as np
 
 from ..locale import strings as locale_strings
 from ..vibration import transmissibility, unbalance_magnification
-from .plot_style import settings
+from .plot_style import settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
@@ -109,6 +109,7 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         plot.grid(True, which="both", linewidth=0.3)
         plot.legend(fontsize=8, loc="upper right")
         figure.tight_layout()
+        with_decimal_mark(figure, text["decimal_mark"])
         if isinstance(target, Path):
             target.parent.mkdir(parents=True, exist_ok=True)
         figure.savefig(target, format="svg", metadata={"Date": None})
