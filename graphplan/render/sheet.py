@@ -44,7 +44,17 @@ from .drawings import (
     positions_plan,
     with_length_scale,
 )
-from .formats import BIGGER, FORMATS, PADDING_MM, SHEET_NAMES, Rect, holds, orientations, page_geometry
+from .formats import (
+    BIGGER,
+    FORMATS,
+    PADDING_MM,
+    SHEET_NAMES,
+    PageGeometry,
+    Rect,
+    holds,
+    orientations,
+    page_geometry,
+)
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers
 from .svg import to_svg
@@ -460,7 +470,7 @@ class _Page:
         return True
 
     def fits_empty(self, panel: Panel) -> bool:
-        return _Page(self.size, self.frame, self.block, self.area).place(panel)
+        return PageGeometry(self.size, self.frame, self.block, self.area).holds(_width(panel), _height(panel))
 
     def _free(self, rect: Rect) -> bool:
         ax0, ay0, ax1, ay1 = self.area
