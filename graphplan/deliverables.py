@@ -22,7 +22,7 @@ from typing import Any
 from .analysis import Analysis
 from .errors import SceneError
 from .locale import strings
-from .render.primitives import Layer, with_decimal_mark
+from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
@@ -128,8 +128,7 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
         assert scene.balancing is not None
         found.append(Drawing("rotor_balancing", balancing_layout.layout(balance(scene.balancing),
                                                                          strings(scene.locale))))
-    mark = strings(scene.locale)["decimal_mark"]
-    return [dataclasses.replace(drawing, layers=with_decimal_mark(drawing.layers, mark, (scene.title,)))
+    return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.title))
             for drawing in found]
 
 

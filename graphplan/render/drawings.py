@@ -16,7 +16,7 @@ from ..scales import fit_scale, format_scale, standard_scale
 from . import forces as force_layout
 from . import plans, positions
 from .formats import holds
-from .primitives import Layer, bounds, with_decimal_mark
+from .primitives import Layer, bounds, in_language
 from .svg import to_svg
 from .title_block import form_of
 
@@ -77,8 +77,7 @@ def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
 
 def _svg(analysis: Analysis, layers: list[Layer]) -> str:
     """The SVG text of a drawing of the analysis, its numbers with the decimal mark of the scene's language."""
-    scene = analysis.scene
-    return to_svg(with_decimal_mark(layers, strings(scene.locale)["decimal_mark"], (scene.title,)))
+    return to_svg(in_language(layers, analysis.scene.locale, analysis.scene.title))
 
 
 def positions_svg(analysis: Analysis) -> str:

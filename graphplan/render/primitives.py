@@ -312,6 +312,13 @@ def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = 
             for layer in layers]
 
 
+def in_language(layers: Sequence[Layer], locale: str, title: str = "") -> list[Layer]:
+    """``layers`` with the decimal mark of ``locale``; the scene's ``title`` as the user wrote it."""
+    from ..locale import strings
+
+    return with_decimal_mark(layers, strings(locale)["decimal_mark"], (title,))
+
+
 def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
     """``layers`` shifted by (dx, dy) mm."""
     return [Layer(layer.name, tuple(moved(item, dx, dy) for item in layer.items)) for layer in layers]
