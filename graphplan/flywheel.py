@@ -389,10 +389,6 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
     if table.has("constant"):
         raise SceneError(table.where("constant"), 'is for a linkage\'s reduced moments; with a load diagram the side '
                          'not given is constant (write driving = "constant" or resisting = "constant")')
-    for key in MOTION_KEYS:
-        if table.has(key):
-            raise SceneError(table.where(key), "the equation of motion needs a linkage ([frame] and [driver]); "
-                             "a load diagram alone sizes the flywheel")
     if spec.omega is None:
         raise SceneError(table.path, "needs rpm or omega: the mean speed of the shaft the load diagram is drawn "
                          "over (there is no driver to take it from)")
@@ -413,6 +409,7 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
                 raise SceneError(table.where(side), f'says the {side} side is constant, but {diagrams[side].key} '
                                  "gives its diagram: leave one out")
     inertia = table.number("inertia", 0.0, non_negative=True)
+    motion = _read_diagram_motion(table, diagrams, inertia, spec.delta)
     table.done()
     omega = spec.omega
     if len(diagrams) == 2:
@@ -429,7 +426,27 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
             raise SceneError(table.where(given.key), f"does {given.work(omega):.6g} J of work over the turn: a "
                              f"{side} load must do positive work for a constant {constant} one to balance it")
     ordered = tuple(diagrams[side] for side in _SIDES if side in diagrams)
-    return dataclasses.replace(spec, constant=constant, diagrams=ordered, inertia=inertia)
+    return dataclasses.replace(spec, constant=constant, diagrams=ordered, inertia=inertia, motion=motion)
+
+
+def _read_diagram_motion(table: Table, diagrams: dict[str, LoadDiagram], inertia: float, delta: float | None):
+    """The equation of motion of a machine known by its load diagrams, or None when the table asks for none.
+
+    The motor takes the place of the constant driving side, so the resistance must be a diagram;
+    the shaft's inertia is the machine's own ``inertia`` and the flywheel sized for ``delta``.
+    """
+    if not any(table.has(key) for key in MOTION_KEYS):
+        return None
+    from .machine_motion import read_motion
+
+    motion = read_motion(table, table.path)
+    if "resisting" not in diagrams:
+        raise SceneError(table.where("motor"), "drives the machine in place of its driving side, so the resistance "
+                         "must be a diagram: give resisting_torque or resisting_power")
+    if inertia == 0 and delta is None:
+        raise SceneError(table.where("inertia"), "the equation of motion needs the machine's inertia: give inertia "
+                         "(kg·m², the machine's own, > 0) or delta (a flywheel sized for it)")
+    return motion
 
 
 def _read_load_diagram(table: Table, key: str, side: str, quantity: str) -> LoadDiagram:

@@ -147,8 +147,12 @@ DIAGRAM = "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]
     (('driving = "constant"', 'driving = "motor"'), "dynamics.driving: must be one of constant"),
     (('driving = "constant"', 'resisting = "constant"'), "dynamics.resisting: says the resisting side is constant"),
     (('driving = "constant"', 'constant = "driving"'), "dynamics.constant: is for a linkage"),
-    (('driving = "constant"', 'motor = { kind = "constant", torque = 50 }'),
-     "dynamics.motor: the equation of motion needs a linkage"),
+    (('driving = "constant"', 'motor = { kind = "constant", torque = 50 }\nrtol = 2'), "dynamics.rtol: must be < 1"),
+    (('delta = 0.05', 'motor = { kind = "constant", torque = 50 }'),
+     "dynamics.inertia: the equation of motion needs the machine's inertia"),
+    ((DIAGRAM + '\ndriving = "constant"', 'driving_torque = [[0, 10], [180, 30], [360, 10]]\n'
+      'motor = { kind = "constant", torque = 50 }'),
+     "dynamics.motor: drives the machine in place of its driving side, so the resistance must be a diagram"),
     (('driving = "constant"', "driving_torque = [[0, 300], [360, 300]]"), "dynamics: the driving work"),
     ((DIAGRAM, DIAGRAM + "\ndriving_torque = [[0, 300], [360, 300]]"),
      "dynamics.driving: says the driving side is constant, but driving_torque gives its diagram"),
@@ -171,3 +175,35 @@ def test_a_linkage_with_a_load_diagram_is_refused(tmp_path, capsys):
     assert status == 2 and not out.exists()
     assert err.strip().splitlines() == [err.strip()]
     assert err.startswith("graphplan: error: dynamics.resisting_power: is for a scene without a linkage")
+
+
+# --- the equation of motion of a machine known by its load diagram -------------------------------
+
+MOTOR = 'motor = { kind = "linear", stall_torque = 2000, no_load_rpm = 110 }'
+
+
+def test_the_press_runs_up_on_a_linear_motor_to_the_speed_where_the_mean_torques_balance(tmp_path):
+    """The press's power cycle, as torques at its 100 rpm, driven by M = Ms·(1 − ω/ω0) through the flywheel
+    sized for δ = 0.05.  Over a steady turn the work of the motor equals that of the resistance, so
+    Ms·(1 − ω̄/ω0) = M̄r with ω̄ the angle-mean speed: the balance speed, to within the fluctuation's δ²."""
+    found = dynamics_of(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 0.0\n" + MOTOR))
+    motion = found["motion"]
+    stall, no_load = 2000.0, 110 * math.pi / 30
+    mean_resisting = (367.7 / 3 + 3677.0 * 2 / 3) / (100 * math.pi / 30)
+    balance = no_load * (1 - mean_resisting / stall)
+    assert motion["omega_mean"] == pytest.approx(balance, rel=0.05 ** 2)
+    assert motion["flywheel_inertia"] == pytest.approx(found["flywheel_inertia"], rel=1e-12)
+    # The flywheel held δ = ΔWmax/(J·ω²) at the mean speed; the motor's slope also damps the swing.
+    estimate = found["delta_w_max"] / (found["flywheel_inertia"] * motion["omega_mean"] ** 2)
+    assert 0.9 * estimate < motion["delta"] < estimate
+    assert 0 < motion["start_up_time"] < motion["steady_after"] < motion["duration"]
+
+
+def test_without_a_flywheel_the_machines_own_inertia_carries_the_swing(tmp_path):
+    """No δ: the machine runs on its own 200 kg·m², and the swing grows as that inertia is smaller."""
+    text = PRESS.replace("delta = 0.05\n", "").replace("inertia = 0.0", "inertia = 200.0\n" + MOTOR)
+    found = dynamics_of(tmp_path, text)
+    motion = found["motion"]
+    assert motion["flywheel_inertia"] == 0.0
+    estimate = found["delta_w_max"] / (200.0 * motion["omega_mean"] ** 2)
+    assert 0.9 * estimate < motion["delta"] < estimate
