@@ -150,8 +150,8 @@ DIAGRAM = "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]
     (('driving = "constant"', 'motor = { kind = "constant", torque = 50 }\nrtol = 2'), "dynamics.rtol: must be < 1"),
     (('delta = 0.05', 'motor = { kind = "constant", torque = 50 }'),
      "dynamics.inertia: the equation of motion needs the machine's inertia"),
-    ((DIAGRAM + '\ndriving = "constant"', 'driving_torque = [[0, 10], [180, 30], [360, 10]]\n'
-      'motor = { kind = "constant", torque = 50 }'),
+    ((DIAGRAM + '\ndriving = "constant"',
+      'driving_torque = [[0, 10], [180, 30], [360, 10]]\nmotor = { kind = "constant", torque = 50 }'),
      "dynamics.motor: drives the machine in place of its driving side, so the resistance must be a diagram"),
     (('driving = "constant"', "driving_torque = [[0, 300], [360, 300]]"), "dynamics: the driving work"),
     ((DIAGRAM, DIAGRAM + "\ndriving_torque = [[0, 300], [360, 300]]"),
