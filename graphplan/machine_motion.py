@@ -776,15 +776,19 @@ class _Integrator:
             if self.phase == LOCKED:
                 self.y[2] = 0.0
                 self.phase = self._lock()  # at rest the motor may pull harder than the clutch can pass
-            if self.phase == RIGID and not self.eq.motor_on(self.t):
-                self.eq.settle(self.phase, self.t, self.y)
-                # Switched off and held at rest: nothing more will happen.
-                self.finished = self.eq.machine_held
-                if self.finished:
-                    self.times.append(np.array([self.t]))
-                    self.states.append(self.y[:, None].copy())
         elif name == "driving half stopped":
             self.y[2] = 0.0
+        self._finish_if_held_at_rest()
+
+    def _finish_if_held_at_rest(self) -> None:
+        """Switched off, turning as one body and held at rest: nothing more will happen."""
+        if self.phase not in (RIGID, LOCKED) or self.y[1] > 0.0 or self.eq.motor_on(self.t):
+            return
+        self.eq.settle(self.phase, self.t, self.y)
+        self.finished = self.eq.machine_held
+        if self.finished:
+            self.times.append(np.array([self.t]))
+            self.states.append(self.y[:, None].copy())
 
     def _on_boundary(self, t: float) -> None:
         self.eq.clock = t

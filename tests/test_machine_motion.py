@@ -348,6 +348,24 @@ def test_locked_clutch_slips_again_when_the_machine_is_braked_hard():
     assert motion.events[-1][0] == pytest.approx(brake_at + common / (CLUTCH_TORQUE / MOTOR_INERTIA), rel=1e-9)
 
 
+def test_a_locked_pair_switched_off_and_braked_ends_when_it_stops():
+    """Locked, the two halves run down as one body of J + Jd: against the load alone after the motor
+    is off, against load and brake after that, each a uniform deceleration; the run ends at rest
+    (it used to run on, held at rest, to its 2000 turns' time)."""
+    machine_inertia, driving_inertia, load, brake, capacity = 3.0, 0.6, 4.0, 20.0, 500.0
+    speed, off_at, brake_at = 12.0, 1.0, 2.0
+    motion = simulate(Machine(machine_inertia, resisting=load), ConstantTorque(load),
+                      clutch=Clutch(capacity, inertia=driving_inertia), start=Start(omega=speed),
+                      motor_off_at=off_at, brake=Brake(torque=brake, at=brake_at), rtol=1e-10)
+    together = machine_inertia + driving_inertia
+    at_brake = speed - load / together * (brake_at - off_at)
+    stop = brake_at + at_brake / ((load + brake) / together)
+    # Engaged at equal speeds, the halves are locked from the start.
+    assert [name for _, name in motion.events] == ["clutch engaged", "motor off", "brake on", "stopped"]
+    assert motion.stopped_at == pytest.approx(stop, rel=1e-9)
+    assert motion.t[-1] == motion.stopped_at and not motion.notes
+
+
 def test_clutch_engaged_on_a_machine_while_its_motor_runs_up():
     # A linear motor (rotor 0.5 kg·m²) runs up alone; at 1 s the clutch (20 N·m) engages the
     # machine (3 kg·m², 5 N·m load) at rest.  Each phase is an exponential or a straight line.
