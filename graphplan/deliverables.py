@@ -14,6 +14,7 @@ has no analysis: only its own pieces and ``results.json``.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import io
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -111,16 +112,18 @@ def _by_default(scene: Scene, piece: str) -> bool:
     return piece not in ON_REQUEST
 
 
-def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> list[Drawing]:
+def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+             dynamics: MachineDynamics | None = None) -> list[Drawing]:
     """The drawings of ``pieces``, each laid out once for every format it is written in."""
     found: list[Drawing] = []
     if analysis is not None:
-        found += _linkage_drawings(analysis, pieces)
+        found += _linkage_drawings(analysis, pieces, dynamics)
     elif "dynamics" in pieces:
         from .render import dynamics as dynamics_layout
 
-        model, flywheel = machine_dynamics(scene)
-        found.append(Drawing("dynamics", dynamics_layout.layout(model, flywheel, strings(scene.locale))))
+        dynamics = _dynamics_of(scene, analysis, dynamics)
+        found.append(Drawing("dynamics", dynamics_layout.layout(dynamics.model, dynamics.flywheel,
+                                                                strings(scene.locale))))
     if "balancing" in pieces:
         from .render import balancing as balancing_layout
         from .rotor_balancing import balance
@@ -132,7 +135,7 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
             for drawing in found]
 
 
-def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawing]:
+def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
     from .render import drawings as draw
     from .render import forces as force_layout
     from .render import plans as plan_layout
@@ -148,8 +151,9 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...]) -> list[Drawi
     if "dynamics" in pieces:
         from .render import dynamics as dynamics_layout
 
-        model, flywheel = machine_dynamics(analysis)
-        found.append(Drawing("dynamics", dynamics_layout.layout(model, flywheel, strings(analysis.scene.locale))))
+        dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
+        found.append(Drawing("dynamics", dynamics_layout.layout(dynamics.model, dynamics.flywheel,
+                                                                strings(analysis.scene.locale))))
     if "diagrams" in pieces:
         from .kinematic_diagrams import of_analysis
         from .render import diagrams as diagrams_layout
@@ -195,52 +199,69 @@ def _course_panels(analysis: Analysis):
     return course_panels(analysis, diagrams)
 
 
-def machine_dynamics(source: Analysis | Scene):
-    """The equivalent model of the scene's ``[dynamics]`` and the flywheel it asks for (None without δ).
+class MachineDynamics:
+    """The scene's ``[dynamics]`` worked out once for a run: the equivalent model, the flywheel it asks for
+    (None without δ) and, with a motor, the machine's motion, integrated the first time it is wanted.
 
     ``source`` is the analysis of a linkage, or a scene without one whose ``[dynamics]`` gives load diagrams.
     """
-    from .dynamics import equivalent_model_of
-    from .flywheel import diagram_model_of, flywheel_from_spec
 
-    if isinstance(source, Scene):
-        spec = source.dynamics
-        model = diagram_model_of(spec)
-    else:
-        spec = source.scene.dynamics
-        model = equivalent_model_of(source, spec.count, constant=spec.constant)
-    return model, flywheel_from_spec(model, spec)
+    def __init__(self, source: Analysis | Scene) -> None:
+        from .dynamics import equivalent_model_of
+        from .flywheel import diagram_model_of, flywheel_from_spec
+
+        if isinstance(source, Scene):
+            self.spec = source.dynamics
+            self.model = diagram_model_of(self.spec)
+        else:
+            self.spec = source.scene.dynamics
+            self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
+        self.flywheel = flywheel_from_spec(self.model, self.spec)
+
+    @functools.cached_property
+    def motion(self):
+        """The equation of motion integrated with the scene's motor (None when it names none).
+
+        The motor replaces the constant driving moment the flywheel's balance of work assumed; the
+        scene's own loads stay as they are.  A flywheel sized for δ is mounted on the driving shaft,
+        so that the steady δ of the integration can be set against the δ it was sized for.
+        """
+        if self.spec.motion is None:
+            return None
+        import numpy as np
+
+        from .machine_motion import Machine
+
+        model = self.model
+        phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
+        made_up = {"driving": model.driving, "resisting": model.resisting}.get(model.constant, 0.0)
+        own = model.moment - made_up
+        machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
+                          inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope),
+                          resisting=-np.interp(phi, model.coordinate, own))
+        return self.spec.motion.run(machine)
+
+    @property
+    def flywheel_inertia(self) -> float:
+        """The flywheel mounted for the motion: the one sized for δ, or none."""
+        return self.flywheel.inertia if self.flywheel is not None else 0.0
+
+    def motion_results(self) -> dict[str, Any]:
+        """The motion's part of ``results.json``: the integrator and its reason, the steady state."""
+        motion = self.motion
+        result: dict[str, Any] = {"method": motion.method, "method_reason": motion.method_reason,
+                                  "duration": float(motion.t[-1]), "flywheel_inertia": self.flywheel_inertia}
+        steady = motion.steady
+        if steady is not None:
+            result.update(omega_mean=steady.mean_speed, omega_max=steady.max_speed, omega_min=steady.cycle.min_speed,
+                          delta=steady.cycle.delta, steady_after=steady.reached_at,
+                          start_up_time=motion.start_up_time(5.0))
+        return result
 
 
-def machine_run(model, spec, flywheel=None) -> dict[str, Any]:
-    """The machine's equation of motion integrated with the scene's motor: start-up and steady state.
-
-    The motor replaces the constant driving moment the flywheel's balance of
-    work assumed; the scene's own loads stay as they are.  With a flywheel
-    sized for δ it is mounted on the driving shaft, so that the steady δ of
-    the integration can be set against the δ it was sized for.
-    """
-    import numpy as np
-
-    from .machine_motion import Machine
-
-    count = spec.count
-    phi = 2.0 * np.pi * np.arange(count) / count
-    made_up = {"driving": model.driving, "resisting": model.resisting}.get(model.constant, 0.0)
-    own = model.moment - made_up
-    added = flywheel.inertia if flywheel is not None else 0.0
-    machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + added,
-                      inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope),
-                      resisting=-np.interp(phi, model.coordinate, own))
-    motion = spec.motion.run(machine)
-    steady = motion.steady
-    result: dict[str, Any] = {"method": motion.method, "method_reason": motion.method_reason,
-                              "duration": float(motion.t[-1]), "flywheel_inertia": added}
-    if steady is not None:
-        result.update(omega_mean=steady.mean_speed, omega_max=steady.max_speed, omega_min=steady.cycle.min_speed,
-                      delta=steady.cycle.delta, steady_after=steady.reached_at,
-                      start_up_time=motion.start_up_time(5.0))
-    return result
+def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics | None) -> MachineDynamics:
+    """The run's dynamics: the one given, or worked out now."""
+    return dynamics if dynamics is not None else MachineDynamics(analysis if analysis is not None else scene)
 
 
 def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
@@ -265,9 +286,18 @@ def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]
     return files
 
 
-def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
+def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+            dynamics: MachineDynamics | None = None) -> dict[str, str]:
     """The plots drawn with matplotlib, which is imported only here."""
     found: dict[str, str] = {}
+    if "dynamics" in pieces and scene.dynamics.motion is not None:
+        from .report.motion_plots import motion_figure
+
+        dynamics = _dynamics_of(scene, analysis, dynamics)
+        flywheel = dynamics.flywheel
+        estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None and dynamics.model.turning \
+            else None
+        found["motion.svg"] = motion_figure(dynamics.motion, strings(scene.locale), scene.title, estimate)
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 
@@ -324,7 +354,8 @@ def check_formats(formats: Iterable[str], where: str = "--format") -> tuple[str,
     return tuple(kind for kind in FORMATS if kind == "svg" or kind in asked)
 
 
-def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, Any]:
+def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+             dynamics: MachineDynamics | None = None) -> dict[str, Any]:
     """``results.json``: the analysis of the contract, and the rotor's and the vibration's results."""
     from .report.results import results, results_without_linkage, rounded
 
@@ -332,10 +363,10 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -
     if "dynamics" in pieces:
         from .flywheel import dynamics_results
 
-        model, flywheel = machine_dynamics(analysis if analysis is not None else scene)
-        found["dynamics"] = dynamics_results(model, flywheel)
-        if scene.dynamics.motion is not None:
-            found["dynamics"]["motion"] = rounded(machine_run(model, scene.dynamics, flywheel))
+        dynamics = _dynamics_of(scene, analysis, dynamics)
+        found["dynamics"] = dynamics_results(dynamics.model, dynamics.flywheel)
+        if dynamics.motion is not None:
+            found["dynamics"]["motion"] = rounded(dynamics.motion_results())
     if "balancing" in pieces:
         from .rotor_balancing import balance, balancing_results
 
@@ -354,15 +385,17 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots."""
     from .report.results import dumps
 
-    found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces))}
-    for drawing in drawings(scene, analysis, pieces):
+    # The model, the flywheel and the integrated motion serve the results, the drawing and the plot.
+    dynamics = MachineDynamics(analysis if analysis is not None else scene) if "dynamics" in pieces else None
+    found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
+    for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, formats))
     found.update(tables(analysis, pieces))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 
         found["note.pdf"] = note_pdf(str(found["note.html"]))
-    found.update(figures(scene, analysis, pieces))
+    found.update(figures(scene, analysis, pieces, dynamics))
     if "accuracy" in pieces and analysis is not None:
         found.update(accuracy_report(analysis))
     return found

@@ -1,0 +1,145 @@
+"""The report figure of the machine's motion in time: start-up, steady state, run-down.
+
+The upper plot is the driving shaft's speed over the whole run (and the clutch's driving half,
+when there is a clutch), with the events of the run (motor off, brake on, clutch locked, ...)
+and the band of the steady state; the lower plot is the speed over the last steady turn against
+the crank angle, beside the flywheel's estimate from the energy–mass diagram.  Every word comes
+from the locale (``motion_`` keys).  matplotlib is imported only inside :func:`motion_figure`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from ..machine_motion import MachineMotion
+from .plot_style import settings, svg_text, with_decimal_mark
+
+# Points of the dense solution drawn over the run, besides the solver's own steps: enough for a
+# smooth fluctuation at a few hundred turns.
+_RUN_SAMPLES = 6000
+_TURN_SAMPLES = 721
+_SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT = "#1f4e79", "#a83a1f", "#1f7a3a", "#555555"
+
+
+def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
+                  flywheel: tuple[np.ndarray, np.ndarray] | None = None) -> str:
+    """The SVG text of :func:`motion_plot`."""
+    import matplotlib
+
+    with matplotlib.rc_context(settings()):
+        return svg_text(motion_plot(motion, text, title, flywheel))
+
+
+def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
+                flywheel: tuple[np.ndarray, np.ndarray] | None = None):
+    """The motion's matplotlib figure: the run above, the steady turn below.
+
+    ``flywheel`` is the flywheel's estimate of the steady speed over the turn: the crank angles
+    (rad, from the first position) and ω there, drawn beside the integrated steady turn.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot
+
+    with matplotlib.rc_context(settings()):
+        figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
+        _speed_over_time(run, motion, text)
+        if motion.steady is not None:
+            _steady_turn(turn, motion, text, flywheel)
+        else:
+            turn.set_axis_off()
+            turn.text(0.5, 0.5, text["motion_no_steady"], ha="center", va="center", transform=turn.transAxes)
+        with_decimal_mark(figure, text["decimal_mark"])
+        # After the decimal mark: the title quotes the scene's, which is the user's text.
+        figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
+                        fontsize=11)
+        figure.tight_layout()
+    return figure
+
+
+def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> None:
+    end = float(motion.t[-1])
+    times = np.union1d(np.linspace(float(motion.t[0]), end, _RUN_SAMPLES), motion.t)
+    state = motion.state_at(times)
+    plot.plot(times, state[1], color=_SHAFT, linewidth=0.9, label=text["motion_shaft"])
+    if motion.driving_omega is not None:
+        plot.plot(times, state[2], color=_DRIVING_HALF, linewidth=0.9, linestyle="--",
+                  label=text["motion_driving_half"])
+    steady = motion.steady
+    mark = text["decimal_mark"]
+    if steady is not None:
+        cycle = steady.cycle
+        # The band runs from where the steady state was reached to the first switch after it (a run-down).
+        until = min([when for when, _ in motion.events if when > steady.reached_at] + [end])
+        plot.fill_between([steady.reached_at, until], cycle.min_speed, cycle.max_speed, color=_FLYWHEEL, alpha=0.15,
+                          linewidth=0, label=text["motion_steady_band"].format(low=_number(cycle.min_speed, mark),
+                                                                               high=_number(cycle.max_speed, mark)))
+        started = motion.start_up_time(5.0)
+        if started is not None:
+            plot.axvline(started, color=_FLYWHEEL, linewidth=0.8, linestyle="-.",
+                         label=text["motion_start_up"].format(time=_number(started, mark)))
+    top = float(np.nanmax(state[1:3] if motion.driving_omega is not None else state[1]))
+    _events(plot, motion, text, end - float(motion.t[0]))
+    plot.set_xlim(float(motion.t[0]), end)
+    plot.set_ylim(bottom=min(0.0, float(np.nanmin(state[1]))), top=top * 1.08 if top > 0 else None)
+    plot.set_xlabel(text["motion_time_axis"])
+    plot.set_ylabel(text["motion_speed_axis"])
+    plot.set_title(text["motion_run"], fontsize=10)
+    plot.grid(True, linewidth=0.3)
+    # Under the plot: inside, the legend would hide part of a run-down or a start-up.
+    plot.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
+
+
+def _events(plot, motion: MachineMotion, text: Mapping[str, str], span: float) -> None:
+    """Each event a dotted line numbered at the top; the numbers are explained in the legend.
+
+    Events close in time step their numbers down, so that they do not print over each other.
+    """
+    level, last = 0, -math.inf
+    for number, (when, name) in enumerate(motion.events, start=1):
+        level = level + 1 if when - last < 0.04 * span else 0
+        last = when
+        plot.axvline(when, color=_EVENT, linewidth=0.6, linestyle=":")
+        plot.annotate(str(number), (when, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10 - 10 * (level % 4)),
+                      textcoords="offset points", fontsize=7, color=_EVENT)
+        words = text.get(f"motion_event_{name.replace(' ', '_')}", name)
+        plot.plot([], [], " ", label=text["motion_event"].format(number=number, event=words,
+                                                                 time=_number(when, text["decimal_mark"])))
+
+
+def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
+                 flywheel: tuple[np.ndarray, np.ndarray] | None) -> None:
+    cycle, mark = motion.steady.cycle, text["decimal_mark"]
+    times = np.linspace(cycle.start, cycle.start + cycle.period, _TURN_SAMPLES)
+    state = motion.state_at(times)
+    angles = np.degrees(np.mod(state[0], 2 * math.pi))
+    # The turn starts where the shaft passed a whole turn: unwrap it to run from there.
+    angles = np.degrees(np.unwrap(np.radians(angles)))
+    angles -= 360.0 * math.floor(angles[0] / 360.0 + 1e-9)
+    plot.plot(angles, state[1], color=_SHAFT, linewidth=1.1,
+              label=text["motion_integrated"].format(delta=_number(cycle.delta, mark)))
+    if flywheel is not None:
+        along, omega = flywheel
+        estimate = (float(np.max(omega)) - float(np.min(omega))) / (0.5 * (float(np.max(omega)) + float(np.min(omega))))
+        plot.plot(np.degrees(along), omega, color=_FLYWHEEL, linewidth=0.9, linestyle="--",
+                  label=text["motion_flywheel"].format(delta=_number(estimate, mark)))
+    for value in (cycle.max_speed, cycle.min_speed):
+        plot.axhline(value, color=_EVENT, linewidth=0.5, linestyle=":")
+    plot.set_xlim(0.0, 360.0)
+    plot.set_xticks(np.arange(0.0, 361.0, 30.0))
+    plot.set_xlabel(text["motion_angle_axis"])
+    plot.set_ylabel(text["motion_speed_axis"])
+    plot.set_title(text["motion_turn"].format(time=_number(cycle.start, mark)), fontsize=10)
+    plot.grid(True, linewidth=0.3)
+    plot.legend(fontsize=7, loc="best")
+
+
+def _number(value: float, mark: str) -> str:
+    return f"{value:.4g}".replace(".", mark)
+
+
+__all__ = ["motion_figure", "motion_plot"]

@@ -1,0 +1,110 @@
+"""The figure of the machine's motion: what it draws is the integrated motion and its events, in the scene's language."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from graphplan.cli import main
+from graphplan.locale import strings
+from graphplan.machine_motion import Brake, Clutch, LinearMotor, Machine, simulate
+from graphplan.report.motion_plots import motion_plot
+
+pytest.importorskip("matplotlib")
+
+# A machine whose load swings over the turn (M + A·sin φ), run up through a clutch by a linear motor,
+# switched off and braked to rest: every part of the figure has something to draw.
+LOAD, SWING, INERTIA = 40.0, 25.0, 2.0
+
+
+def run_down_motion():
+    machine = Machine(INERTIA, resisting=lambda phi, omega: LOAD + SWING * math.sin(phi))
+    motor = LinearMotor(200.0, 30.0, rotor_inertia=0.2)
+    return simulate(machine, motor, clutch=Clutch(150.0, engage_at=0.2), motor_off_at=12.0,
+                    brake=Brake(torque=60.0, at=12.5), rtol=1e-8)
+
+
+@pytest.fixture(scope="module")
+def motion():
+    return run_down_motion()
+
+
+def legend_texts(axes) -> list[str]:
+    return [item.get_text() for item in axes.get_legend().get_texts()]
+
+
+def test_the_run_shows_each_event_numbered_in_time_and_the_band_of_the_steady_state(motion):
+    from matplotlib import pyplot
+
+    text = strings("ru")
+    figure = motion_plot(motion, text, "Пресс v1.2")
+    run, _ = figure.axes
+    try:
+        names = [name for _, name in motion.events]
+        assert names == ["clutch engaged", "clutch locked", "motor off", "brake on", "stopped"]
+        legend = legend_texts(run)
+        for number, (when, name) in enumerate(motion.events, start=1):
+            words = text[f"motion_event_{name.replace(' ', '_')}"]
+            assert f"{number}: {words}, t = {f'{when:.4g}'.replace('.', ',')} с" in legend
+        # The band of the steady state starts where it was reached and ends where the motor is switched off.
+        band = next(item for item in run.collections if item.get_label().startswith("установившийся"))
+        corners = band.get_paths()[0].vertices
+        assert corners[:, 0].min() == pytest.approx(motion.steady.reached_at)
+        assert corners[:, 0].max() == pytest.approx(motion.event_time("motor off"))
+        assert corners[:, 1].min() == pytest.approx(motion.steady.cycle.min_speed)
+        assert corners[:, 1].max() == pytest.approx(motion.steady.cycle.max_speed)
+        # The run is drawn to its end at rest, not beyond.
+        assert run.get_xlim()[1] == pytest.approx(motion.stopped_at)
+        assert figure._suptitle.get_text().endswith("Пресс v1.2")   # the user's title keeps its point
+    finally:
+        pyplot.close(figure)
+
+
+def test_the_steady_turn_is_one_whole_turn_between_the_steady_extremes(motion):
+    from matplotlib import pyplot
+
+    figure = motion_plot(motion, strings("en"))
+    _, turn = figure.axes
+    try:
+        integrated = turn.get_lines()[0]
+        angles, speeds = integrated.get_xdata(), integrated.get_ydata()
+        assert angles[0] == pytest.approx(0.0, abs=1e-6) and angles[-1] == pytest.approx(360.0, abs=1e-6)
+        assert np.all(np.diff(angles) > 0)
+        cycle = motion.steady.cycle
+        assert speeds.max() == pytest.approx(cycle.max_speed, rel=1e-6)
+        assert speeds.min() == pytest.approx(cycle.min_speed, rel=1e-6)
+        # With the load M + A·sin φ the shaft is slowest just after the load's peak at 90°, fastest after its trough.
+        assert 90.0 < angles[np.argmin(speeds)] < 180.0 and 270.0 < angles[np.argmax(speeds)] <= 360.0
+    finally:
+        pyplot.close(figure)
+
+
+PRESS = """\
+[scene]
+title = "Press"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+"""
+
+
+def test_a_scene_with_a_motor_gets_the_figure_of_its_motion_and_one_without_none(tmp_path):
+    scene = tmp_path / "press.toml"
+    scene.write_text(PRESS, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "still")]) == 0
+    assert not (tmp_path / "still" / "motion.svg").exists()
+    scene.write_text(PRESS + 'motor = { kind = "linear", stall_torque = 2000, no_load_rpm = 110 }\n', encoding="utf-8")
+    out = tmp_path / "driven"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    svg = (out / "motion.svg").read_text(encoding="utf-8")
+    assert svg.startswith("<?xml") and "<path" in svg
+    # The figure is drawn from the same integration as the results: one run, the same numbers.
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["delta"] > 0 and motion["start_up_time"] < motion["steady_after"]
+    # The same scene draws the same bytes.
+    assert main(["run", str(scene), "--out", str(tmp_path / "again")]) == 0
+    assert (tmp_path / "again" / "motion.svg").read_text(encoding="utf-8") == svg
