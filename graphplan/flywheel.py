@@ -347,11 +347,12 @@ class DynamicsSpec:
     inertia: float = 0.0
 
 
-def read_dynamics(table: Table, linkage: bool = True) -> DynamicsSpec:
+def read_dynamics(table: Table, linkage: bool = True, turning: bool = True) -> DynamicsSpec:
     """The ``[dynamics]`` table, every key checked; the equation of motion's by its own reader.
 
     Without a ``linkage`` the table must give a load diagram (:data:`DIAGRAM_KEYS`), and may not
-    give what only a mechanism has (``constant``, the equation of motion); with one, no diagram.
+    give ``constant``; with one, no diagram.  The equation of motion needs a driver that is
+    ``turning`` (a crank), or no linkage.
     """
     if linkage:
         for key in _DIAGRAM_ONLY:
@@ -377,6 +378,12 @@ def read_dynamics(table: Table, linkage: bool = True) -> DynamicsSpec:
     motion = None
     if any(table.has(key) for key in MOTION_KEYS):
         from .machine_motion import read_motion
+
+        if not turning:
+            key = next(key for key in MOTION_KEYS if table.has(key))
+            raise SceneError(table.where(key), "the equation of motion is integrated over the turns of a crank, and "
+                             "this scene's driver is a slider, whose stroke does not repeat by turning on: leave out "
+                             "the motor, or drive the mechanism by a crank")
 
         motion = read_motion(table, table.path)
     table.done()

@@ -230,6 +230,18 @@ def test_the_machine_run_by_its_motor_fluctuates_as_its_flywheel_was_sized(tmp_p
     assert motion["method"] in ("RK45", "DOP853", "LSODA", "Radau", "BDF") and motion["method_reason"]
 
 
+def test_a_motor_for_a_slider_driven_mechanism_is_refused_by_name(tmp_path, capsys):
+    """The equation of motion repeats over the crank's turns; a slider's stroke does not, so it has none."""
+    scene = tmp_path / "slider_motor.toml"
+    scene.write_text((ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8")
+                     + '\n[dynamics]\nmotor = { kind = "constant", torque = 50 }\n', encoding="utf-8")
+    status, out = run(tmp_path, scene=scene)
+    err = capsys.readouterr().err
+    assert status == 2 and not out.exists()
+    assert err.startswith("graphplan: error: dynamics.motor: the equation of motion is integrated over the turns "
+                          "of a crank, and this scene's driver is a slider")
+
+
 def test_sheets_when_the_scene_names_its_sheet_each_the_size_of_its_format(tmp_path):
     status, out = run(tmp_path, "--only", "sheets")
     assert status == 0
