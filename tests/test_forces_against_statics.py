@@ -318,10 +318,15 @@ def test_the_balancing_diagram_is_drawn_only_when_asked_and_the_same_every_time(
                             "print('matplotlib' in sys.modules)"], capture_output=True, text=True, check=True)
     assert plain.stdout.strip().endswith("False")
     assert not (tmp_path / "plain" / "balancing.svg").exists()
+    import matplotlib
+
     from graphplan.cli import main
 
+    before = {key: matplotlib.rcParams[key] for key in ("font.family", "svg.hashsalt", "svg.fonttype")}
     for run in ("first", "second"):
         assert main(["run", str(RATCHET), "--out", str(tmp_path / run), "--figures"]) == 0
+    # The figure's fonts and hash salt are its own: the user's later plots keep theirs.
+    assert {key: matplotlib.rcParams[key] for key in before} == before
     first = (tmp_path / "first" / "balancing.svg").read_bytes()
     assert first == (tmp_path / "second" / "balancing.svg").read_bytes()
     assert "уравновешивающий момент".encode() in first  # the scene's locale (ru), not English

@@ -15,7 +15,7 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
-from .plot_style import font_families, svg_text, with_decimal_mark
+from .plot_style import settings, svg_text, with_decimal_mark
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -24,10 +24,14 @@ def balancing_diagram(analysis: Analysis) -> str:
     import matplotlib
 
     matplotlib.use("Agg")
-    from matplotlib import pyplot, rcParams
+    # In a context, not in rcParams: a figure's settings must not leak into the user's own plots.
+    with matplotlib.rc_context(settings()):
+        return svg_text(_balancing_figure(analysis))
 
-    rcParams["svg.hashsalt"] = "graphplan"
-    rcParams["font.family"] = font_families()
+
+def _balancing_figure(analysis: Analysis):
+    from matplotlib import pyplot
+
     text = strings(analysis.scene.locale)
     mechanism, positions, sweep = analysis.mechanism, analysis.positions, analysis.paths
     loads = link_loads(mechanism, motion_state(sweep), activity(mechanism, positions, sweep))
@@ -65,7 +69,7 @@ def balancing_diagram(analysis: Analysis) -> str:
     plot.legend(fontsize=8, loc="best")
     figure.tight_layout()
     with_decimal_mark(figure, text["decimal_mark"])
-    return svg_text(figure)
+    return figure
 
 
 def _friction(analysis: Analysis, sweep):
