@@ -264,8 +264,9 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
     return dynamics if dynamics is not None else MachineDynamics(analysis if analysis is not None else scene)
 
 
-def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]:
-    """The text files of ``pieces``: the error tables, the force analysis, the explanatory note."""
+def tables(analysis: Analysis | None, pieces: tuple[str, ...], dynamics: MachineDynamics | None = None) -> dict[str, str]:
+    """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its section
+    on the machine's ``dynamics`` when the run has them)."""
     files: dict[str, str] = {}
     if analysis is None:
         return files
@@ -281,8 +282,8 @@ def tables(analysis: Analysis | None, pieces: tuple[str, ...]) -> dict[str, str]
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
-        files["note.md"] = note_markdown(analysis)
-        files["note.html"] = note_html(analysis)
+        files["note.md"] = note_markdown(analysis, dynamics)
+        files["note.html"] = note_html(analysis, markdown=files["note.md"])
     return files
 
 
@@ -390,7 +391,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, formats))
-    found.update(tables(analysis, pieces))
+    found.update(tables(analysis, pieces, dynamics))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 

@@ -49,19 +49,24 @@ _NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE = "ⁿ", "ᵏ", "^τ", "^r"
 _ROMAN = {1: "I", 2: "II", 3: "III"}
 
 
-def note_markdown(analysis: Analysis) -> str:
-    """The explanatory note of ``analysis`` as Markdown, in the scene's language."""
-    note = _Note(analysis)
+def note_markdown(analysis: Analysis, dynamics=None) -> str:
+    """The explanatory note of ``analysis`` as Markdown, in the scene's language.
+
+    ``dynamics`` (a :class:`graphplan.deliverables.MachineDynamics`) adds the section on the
+    machine's dynamics: the equivalent model, the flywheel and, with a motor, the motion.
+    """
+    note = _Note(analysis, dynamics=dynamics)
     note.write()
     return "\n".join(note.lines).rstrip("\n") + "\n"
 
 
-def note_html(analysis: Analysis) -> str:
-    """The explanatory note as a standalone HTML page."""
+def note_html(analysis: Analysis, dynamics=None, markdown: str | None = None) -> str:
+    """The explanatory note as a standalone HTML page (from its ``markdown`` when already written)."""
     from .html import to_html
 
     title = strings(analysis.scene.locale)["note_title"].format(title=analysis.scene.title)
-    return to_html(note_markdown(analysis), title, analysis.scene.locale, symbols=True)
+    markdown = markdown if markdown is not None else note_markdown(analysis, dynamics)
+    return to_html(markdown, title, analysis.scene.locale, symbols=True)
 
 
 @dataclass(frozen=True)
@@ -79,6 +84,7 @@ class _Note:
     analysis: Analysis
     lines: list[str] = field(default_factory=list)
     tables: int = 0
+    dynamics: object = None
 
     def __post_init__(self) -> None:
         self.text = strings(self.analysis.scene.locale)
@@ -152,6 +158,9 @@ class _Note:
         if any(plan.forces is not None for plan in plans) or self.analysis.equilibrium is not None:
             section += 1
             self.forces(section)
+        if self.dynamics is not None:
+            section += 1
+            self.machine_dynamics(section)
 
     def structure(self, section: int) -> None:
         mechanism = self.mechanism
@@ -857,6 +866,98 @@ class _Note:
                              polygons=self.n(polygons, 6), delta=self.n(difference, 3)))
         self.captioned(self.t("note_balancing_table", name=name, number=plan.number),
                        force_report.balancing_lines(analysis, plan, self.mark))
+
+
+    # The machine's dynamics.
+
+    def machine_dynamics(self, section: int) -> None:
+        dynamics = self.dynamics
+        model, flywheel = dynamics.model, dynamics.flywheel
+        turning = model.turning
+        self.heading(2, f"{section}. {self.t('note_dynamics')}")
+        self.para(self.t("note_dyn_model" if turning else "note_dyn_model_slider", link=model.link,
+                         count=len(model.coordinate)))
+        if model.plans:
+            self.reductions(model)
+        if turning and model.constant in ("driving", "resisting"):
+            side = model.driving if model.constant == "driving" else -model.resisting
+            self.para(self.t(f"note_dyn_constant_{model.constant}", value=self.n(float(np.mean(side)))))
+        energy = model.energy
+        self.para(self.t("note_dyn_energy", low=self.n(float(energy.min())), high=self.n(float(energy.max())),
+                         value=self.n(float(np.ptp(energy)))))
+        if flywheel is not None:
+            self.flywheel(flywheel, float(np.mean(model.inertia)))
+        if dynamics.motion is not None:
+            self.motion(dynamics, flywheel)
+
+    def reductions(self, model) -> None:
+        text = self.text
+        inertia, moment = (("Je", text["kilogram_metre2"]), ("Me", text["newton_metre"])) if model.turning \
+            else (("me", text["kilogram"]), ("Fe", text["newton"]))
+        where = "φ, °" if model.turning else "s, m"
+        header = [text["note_dyn_position"], where,
+                  f"{inertia[0]}, {inertia[1]} ({text['column_by_plan']})", f"{inertia[0]} ({text['column_analytic']})",
+                  text["note_dyn_error"],
+                  f"{moment[0]}, {moment[1]} ({text['column_by_plan']})", f"{moment[0]} ({text['column_analytic']})",
+                  text["note_dyn_error"]]
+        rows = []
+        for plan in model.plans:
+            at = math.degrees(plan.driver) % 360.0 if model.turning else plan.driver
+            rows.append([str(plan.number), self.n(at, 4), self.n(plan.inertia), self.n(plan.inertia_exact),
+                         self.percent(plan.inertia_error_percent), self.n(plan.moment), self.n(plan.moment_exact),
+                         self.percent(plan.moment_error_percent)])
+        self.table(text["note_dyn_table"], header, rows, align="rrrrrrrr")
+
+    def percent(self, value: float) -> str:
+        """An error in percent to a thousandth, as the error tables print it (no −0)."""
+        if not math.isfinite(value):
+            return self.n(value)
+        return f"{round(value, 3) or 0.0:.3f}".replace("-", "−").replace(".", self.mark)
+
+    def flywheel(self, flywheel, mean_inertia: float) -> None:
+        from ..flywheel import omega_to_rpm
+
+        if flywheel.inertia <= 0:
+            self.para(self.t("note_dyn_no_flywheel", delta=self.n(flywheel.delta)))
+            return
+        omega = flywheel.omega_mean
+        self.para(self.t("note_dyn_flywheel", delta=self.n(flywheel.delta), omega=self.n(omega),
+                         rpm=self.n(omega_to_rpm(omega)), work=self.n(flywheel.delta_w_max), mean=self.n(mean_inertia),
+                         approximate=self.n(flywheel.approximate), exact=self.n(flywheel.inertia),
+                         mertsalov=self.n(flywheel.mertsalov)))
+        model = self.dynamics.model
+        self.para(self.t("note_dyn_speeds", high=self.n(flywheel.omega_max), low=self.n(flywheel.omega_min),
+                         high_angle=self.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
+                         low_angle=self.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
+        if flywheel.moved is not None:
+            self.para(self.t("note_dyn_moved", rpm=self.n(flywheel.shaft_rpm), value=self.n(flywheel.moved)))
+
+    def method_reason(self, dynamics) -> str:
+        """Why the integrator was taken, in the note's language (the run's own reason is in English)."""
+        from ..machine_motion import STIFFNESS_THRESHOLD
+
+        number = self.n(dynamics.motion.stiffness, 3)
+        if dynamics.spec.motion.method != "auto":
+            return self.t("note_dyn_reason_asked", number=number)
+        stiff = dynamics.motion.stiffness > STIFFNESS_THRESHOLD
+        return self.t("note_dyn_reason_stiff" if stiff else "note_dyn_reason_not_stiff", number=number,
+                      threshold=self.n(STIFFNESS_THRESHOLD))
+
+    def motion(self, dynamics, flywheel) -> None:
+        motion = dynamics.motion
+        mounted = self.t("note_dyn_motion_flywheel", value=self.n(dynamics.flywheel_inertia)) \
+            if dynamics.flywheel_inertia > 0 else ""
+        self.para(self.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=self.method_reason(dynamics)))
+        steady = motion.steady
+        if steady is None:
+            self.para(self.text["note_dyn_no_steady"])
+            return
+        cycle = steady.cycle
+        self.para(self.t("note_dyn_steady", start_up=self.n(motion.start_up_time(5.0), 4), after=self.n(steady.reached_at, 4),
+                         mean=self.n(steady.mean_speed), high=self.n(cycle.max_speed), low=self.n(cycle.min_speed),
+                         delta=self.n(cycle.delta, 4)))
+        if flywheel is not None and flywheel.inertia > 0:
+            self.para(self.t("note_dyn_steady_sized", sized=self.n(flywheel.delta), delta=self.n(cycle.delta, 4)))
 
 
 def _body(term: str) -> tuple[str, str]:

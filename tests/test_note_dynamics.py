@@ -1,0 +1,98 @@
+"""The note's section on the machine's dynamics: its arithmetic holds, its numbers are the run's, in the scene's language."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+from graphplan.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+RATCHET = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
+DYNAMICS = ('\n[dynamics]\ndelta = 0.05\nflywheel_shaft_rpm = 1440\n'
+            'motor = { kind = "linear", stall_torque = 2000.0, no_load_rpm = 170.0 }\n')
+NUMBER = r"(−?[\d.]+(?:e[−+]?\d+)?)"
+
+
+def value(text: str) -> float:
+    return float(text.replace("−", "-"))
+
+
+def run(tmp_path: Path, extra: str, locale: str = "en") -> tuple[str, dict]:
+    text = re.sub(r'^locale\s*=\s*"ru"', f'locale = "{locale}"', RATCHET.read_text(encoding="utf-8"), flags=re.MULTILINE)
+    assert f'locale = "{locale}"' in text
+    text += extra
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    pieces = "note,dynamics" if extra else "note"
+    assert main(["run", str(scene), "--out", str(out), "--only", pieces]) == 0
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    return (out / "note.md").read_text(encoding="utf-8"), results
+
+
+@pytest.fixture(scope="module")
+def english(tmp_path_factory):
+    return run(tmp_path_factory.mktemp("note"), DYNAMICS)
+
+
+def section(note: str, heading: str) -> str:
+    start = note.index(heading)
+    return note[start:]
+
+
+def test_the_flywheel_line_does_its_own_arithmetic(english):
+    note, results = english
+    text = section(note, "Dynamics of the machine")
+    found = re.search(rf"JF = ΔWmax/\(ωm²·δ\) − Je,mean = {NUMBER}/\({NUMBER}²·{NUMBER}\) − {NUMBER} = {NUMBER} kg·m²",
+                      text)
+    work, omega, delta, mean, approximate = (value(group) for group in found.groups())
+    assert work / (omega ** 2 * delta) - mean == pytest.approx(approximate, rel=1e-4)
+    dynamics = results["dynamics"]
+    assert work == pytest.approx(dynamics["delta_w_max"], rel=1e-4)
+    assert approximate == pytest.approx(dynamics["flywheel_inertia_approximate"], rel=1e-4)
+    assert f"JF = {dynamics['flywheel_inertia']:.5g} kg·m²" in text
+    # JF′ = JF·(n/n′)² with n the crank's 17 rad/s.
+    moved = value(re.search(rf"JF′ = JF·\(n/n′\)² = {NUMBER}", text).group(1))
+    assert moved == pytest.approx(dynamics["flywheel_inertia"] * (17.0 * 30 / 3.141592653589793 / 1440) ** 2, rel=1e-4)
+
+
+def test_the_energy_range_and_the_steady_speeds_agree_with_themselves(english):
+    note, results = english
+    text = section(note, "Dynamics of the machine")
+    low, high, surplus = (value(group) for group in re.search(
+        rf"ranges from {NUMBER} J to {NUMBER} J: the largest surplus work ΔWmax = {NUMBER} J", text).groups())
+    assert high - low == pytest.approx(surplus, rel=1e-4)
+    high_speed, low_speed, delta = (value(group) for group in re.search(
+        rf"ωmax = {NUMBER} rad/s, ωmin = {NUMBER} rad/s, δ = {NUMBER}\.", text).groups())
+    assert (high_speed - low_speed) / ((high_speed + low_speed) / 2) == pytest.approx(delta, rel=1e-3)
+    motion = results["dynamics"]["motion"]
+    assert delta == pytest.approx(motion["delta"], rel=1e-3)
+    assert f"by the method {motion['method']}:" in text
+
+
+def test_the_plan_positions_are_tabulated_with_their_reduced_inertia(english):
+    note, results = english
+    text = section(note, "Dynamics of the machine")
+    rows = re.findall(rf"^\| (\d+) \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \|$",
+                      text, flags=re.MULTILINE)
+    plans = {plan["index"]: plan for plan in results["dynamics"]["plans"]}
+    assert [int(row[0]) for row in rows] == sorted(plans)
+    for row in rows:
+        plan = plans[int(row[0])]
+        assert value(row[2]) == pytest.approx(plan["reduced_inertia"], rel=1e-4)
+        assert value(row[3]) == pytest.approx(plan["reduced_inertia_exact"], rel=1e-4)
+        assert value(row[5]) == pytest.approx(plan["reduced_moment"], rel=1e-4)
+
+
+def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_path):
+    note, _ = run(tmp_path / "ru", DYNAMICS, locale="ru")
+    text = section(note, "Динамический анализ машины")
+    assert re.search(r"δ = 0,05 при ωm = 17 рад/с", text)
+    assert "stiff" not in text and "auto:" not in text   # the integrator's reason is in Russian too
+    plain, _ = run(tmp_path / "plain", "")
+    assert "Dynamics of the machine" not in plain
