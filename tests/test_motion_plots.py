@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 import pytest
+from test_dynamics_without_linkage import PRESS
 
 from graphplan.cli import main
 from graphplan.locale import strings
@@ -80,16 +81,6 @@ def test_the_steady_turn_is_one_whole_turn_between_the_steady_extremes(motion):
         assert 90.0 < angles[np.argmin(speeds)] < 180.0 and 270.0 < angles[np.argmax(speeds)] <= 360.0
     finally:
         pyplot.close(figure)
-
-
-PRESS = """\
-[scene]
-title = "Press"
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-"""
 
 
 def test_a_scene_with_a_motor_gets_the_figure_of_its_motion_and_one_without_none(tmp_path):
