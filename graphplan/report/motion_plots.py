@@ -116,9 +116,8 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     cycle, mark = motion.steady.cycle, text["decimal_mark"]
     times = np.linspace(cycle.start, cycle.start + cycle.period, _TURN_SAMPLES)
     state = motion.state_at(times)
-    angles = np.degrees(np.mod(state[0], 2 * math.pi))
-    # The turn starts where the shaft passed a whole turn: unwrap it to run from there.
-    angles = np.degrees(np.unwrap(np.radians(angles)))
+    # The cycle starts where the shaft has made whole turns: counted from there, it runs 0…360°.
+    angles = np.degrees(state[0])
     angles -= 360.0 * math.floor(angles[0] / 360.0 + 1e-9)
     plot.plot(angles, state[1], color=_SHAFT, linewidth=1.1,
               label=text["motion_integrated"].format(delta=_number(cycle.delta, mark)))
