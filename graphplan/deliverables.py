@@ -295,9 +295,9 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         from .report.motion_plots import motion_figure
 
         dynamics = _dynamics_of(scene, analysis, dynamics)
+        # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
-        estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None and dynamics.model.turning \
-            else None
+        estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
         found["motion.svg"] = motion_figure(dynamics.motion, strings(scene.locale), scene.title, estimate)
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
@@ -387,7 +387,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     from .report.results import dumps
 
     # The model, the flywheel and the integrated motion serve the results, the drawing and the plot.
-    dynamics = MachineDynamics(analysis if analysis is not None else scene) if "dynamics" in pieces else None
+    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces else None
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, formats))
