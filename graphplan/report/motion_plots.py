@@ -15,6 +15,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..machine_motion import MachineMotion
+from .forces import number
 from .plot_style import settings, svg_text, with_decimal_mark
 
 # Points of the dense solution drawn over the run, besides the solver's own steps: enough for a
@@ -76,12 +77,12 @@ def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> No
         # The band runs from where the steady state was reached to the first switch after it (a run-down).
         until = min([when for when, _ in motion.events if when > steady.reached_at] + [end])
         plot.fill_between([steady.reached_at, until], cycle.min_speed, cycle.max_speed, color=_FLYWHEEL, alpha=0.15,
-                          linewidth=0, label=text["motion_steady_band"].format(low=_number(cycle.min_speed, mark),
-                                                                               high=_number(cycle.max_speed, mark)))
+                          linewidth=0, label=text["motion_steady_band"].format(low=number(cycle.min_speed, 4, mark),
+                                                                               high=number(cycle.max_speed, 4, mark)))
         started = motion.start_up_time(5.0)
         if started is not None:
             plot.axvline(started, color=_FLYWHEEL, linewidth=0.8, linestyle="-.",
-                         label=text["motion_start_up"].format(time=_number(started, mark)))
+                         label=text["motion_start_up"].format(time=number(started, 4, mark)))
     top = float(np.nanmax(state[1:3] if motion.driving_omega is not None else state[1]))
     _events(plot, motion, text, end - float(motion.t[0]))
     plot.set_xlim(float(motion.t[0]), end)
@@ -100,15 +101,15 @@ def _events(plot, motion: MachineMotion, text: Mapping[str, str], span: float) -
     Events close in time step their numbers down, so that they do not print over each other.
     """
     level, last = 0, -math.inf
-    for number, (when, name) in enumerate(motion.events, start=1):
+    for ordinal, (when, name) in enumerate(motion.events, start=1):
         level = level + 1 if when - last < 0.04 * span else 0
         last = when
         plot.axvline(when, color=_EVENT, linewidth=0.6, linestyle=":")
-        plot.annotate(str(number), (when, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10 - 10 * (level % 4)),
+        plot.annotate(str(ordinal), (when, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10 - 10 * (level % 4)),
                       textcoords="offset points", fontsize=7, color=_EVENT)
         words = text.get(f"motion_event_{name.replace(' ', '_')}", name)
-        plot.plot([], [], " ", label=text["motion_event"].format(number=number, event=words,
-                                                                 time=_number(when, text["decimal_mark"])))
+        plot.plot([], [], " ", label=text["motion_event"].format(number=ordinal, event=words,
+                                                                 time=number(when, 4, text["decimal_mark"])))
 
 
 def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
@@ -120,25 +121,21 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     angles = np.degrees(state[0])
     angles -= 360.0 * math.floor(angles[0] / 360.0 + 1e-9)
     plot.plot(angles, state[1], color=_SHAFT, linewidth=1.1,
-              label=text["motion_integrated"].format(delta=_number(cycle.delta, mark)))
+              label=text["motion_integrated"].format(delta=number(cycle.delta, 4, mark)))
     if flywheel is not None:
         along, omega = flywheel
         estimate = (float(np.max(omega)) - float(np.min(omega))) / (0.5 * (float(np.max(omega)) + float(np.min(omega))))
         plot.plot(np.degrees(along), omega, color=_FLYWHEEL, linewidth=0.9, linestyle="--",
-                  label=text["motion_flywheel"].format(delta=_number(estimate, mark)))
+                  label=text["motion_flywheel"].format(delta=number(estimate, 4, mark)))
     for value in (cycle.max_speed, cycle.min_speed):
         plot.axhline(value, color=_EVENT, linewidth=0.5, linestyle=":")
     plot.set_xlim(0.0, 360.0)
     plot.set_xticks(np.arange(0.0, 361.0, 30.0))
     plot.set_xlabel(text["motion_angle_axis"])
     plot.set_ylabel(text["motion_speed_axis"])
-    plot.set_title(text["motion_turn"].format(time=_number(cycle.start, mark)), fontsize=10)
+    plot.set_title(text["motion_turn"].format(time=number(cycle.start, 4, mark)), fontsize=10)
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=7, loc="best")
-
-
-def _number(value: float, mark: str) -> str:
-    return f"{value:.4g}".replace(".", mark)
 
 
 __all__ = ["motion_figure", "motion_plot"]
