@@ -46,6 +46,7 @@ class PlanPosition:
     forces: ForcePlan | None = None
     lever: Lever | None = None
     with_friction: ForcePlan | None = None
+    lever_with_friction: Lever | None = None
 
     @property
     def plans(self) -> dict[str, Plan]:
@@ -137,7 +138,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
         rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, scene.measured.get(number))
         warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
-        loads, forces, balance, rubbing = (), None, None, None
+        loads, forces, balance, rubbing, rubbing_lever = (), None, None, None, None
         if acting is not None:
             state = plan_state(mechanism, where, velocity, acceleration)
             loads = link_loads(mechanism, state, acting[:, index:index + 1])
@@ -149,8 +150,11 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             except ParallelLinesError as error:
                 warnings.append(PositionWarning(index, "singular", f"no force plan: {error}"))
             balance = lever(mechanism, where, velocity, loads)
+            if rubbing is not None and not rubbing.locked:
+                settled = {name: found.force for name, found in rubbing.reactions.items()}
+                rubbing_lever = lever(mechanism, where, velocity, loads + friction_loads(friction, state, settled))
         found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows),
-                                  loads, forces, balance, rubbing))
+                                  loads, forces, balance, rubbing, rubbing_lever))
     return tuple(found), tuple(warnings)
 
 

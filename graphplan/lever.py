@@ -9,7 +9,10 @@ its points, whose lever moment is ``M·ω``.  The balancing moment is applied
 as a force at the image of the crank's joint, across the crank.
 
 Only the velocity plan as constructed and the loads of the instant enter:
-no reaction, no analytic value.
+no reaction, no analytic value.  A load on the frame does no work and is
+left off; a force on a guide at a slider's joint acts at the image of the
+guide's own point there (``a4``, not ``a``), so that the friction of a
+sliding pair enters with the relative velocity, as its power loss does.
 """
 
 from __future__ import annotations
@@ -63,11 +66,13 @@ def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, l
     """Zhukovsky's lever of the instant whose velocity plan is ``velocity``."""
     terms: list[LeverTerm] = []
     for load in loads:
+        if load.link == mechanism.scene.frame_link:
+            continue
         if load.is_force:
+            image = _image_on(velocity, load.link, load.point, positions[load.point])
             # The image of a displaced point by similarity: its velocity relative to the link's point is ω × offset.
             shift = 1j * velocity.rates.get(load.link, 0.0) * load.offset if load.offset else 0j
-            terms.append(_term(load.name, velocity.images[load.point], load.force, velocity.value(load.point) + shift,
-                               shift))
+            terms.append(_term(load.name, image, load.force, velocity.points[image] + shift, shift))
         elif load.moment != 0:
             terms.extend(_couple(load, positions, velocity))
     total = sum(term.moment for term in terms)
@@ -82,6 +87,17 @@ def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, l
     unit_moment = cross(turned(velocity.value(driver.joint)), unit_force)
     balancing = -total / unit_moment
     return Lever(tuple(terms), balancing * unit_force, velocity.images[driver.joint], float(balancing))
+
+
+def _image_on(velocity: Plan, link: int, point: str, where: complex) -> str:
+    """The image of the point of ``link`` at ``where``: the point's own, unless another link carries the point
+    and ``link`` has its own image there (the guide's ``a4`` under the slider's joint ``A``)."""
+    own = velocity.images[point]
+    members = velocity.members.get(link, ())
+    if any(letter == own for _, letter in members):
+        return own
+    beneath = [letter for position, letter in members if abs(position - where) <= 1e-9 * max(abs(where), 1.0)]
+    return beneath[0] if beneath else own
 
 
 def _term(name: str, image: str, force: complex, at: complex, shift: complex = 0j) -> LeverTerm:

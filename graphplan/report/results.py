@@ -183,6 +183,10 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
             "reactions": None if rubbing.locked else {
                 name: _pair(np.array([found.force.real, found.force.imag])) for name, found in rubbing.reactions.items()},
         }
+        if plan.lever_with_friction is not None:
+            result["friction"][f"lever_{key}"] = number(plan.lever_with_friction.balancing)
+            result["friction"]["lever_difference_percent"] = number(
+                plan.lever_with_friction.difference_percent(rubbing.balancing))
     return result
 
 

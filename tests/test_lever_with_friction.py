@@ -1,0 +1,80 @@
+"""Zhukovsky's lever with the friction loads: the balancing load with friction by a second method.
+
+The lever is the power balance drawn, so with the pairs' friction loads on it
+(the friction moments of the journals, the friction forces of the slides, at
+the settled reactions) it must give the balancing load of the polygons with
+friction and of the linear system with friction.  A friction force on a guide
+acts at the guide's own point under the slider (``a4``): applied at the
+slider's image it would cancel its partner and lose the slide's power loss.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+from pathlib import Path
+
+import pytest
+from test_joint_friction import ratchet_with_friction, slider_crank
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.report.results import results
+from graphplan.scene import FrictionSpec
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+
+
+def slotted_lever_with_friction():
+    """The quick-return mechanism with friction in the slot (block 3 on the rocker 4) and in two journals."""
+    scene = graphplan.load(FIXTURES / "quick_return_slotted_lever.toml")
+    specs = (FrictionSpec("friction[0]", "A", (3, 4), 0.15, None, None),
+             FrictionSpec("friction[1]", "C", None, 0.1, 0.02, None),
+             FrictionSpec("friction[2]", "A", (2, 3), 0.1, 0.01, None))
+    return analyse(dataclasses.replace(scene, friction=specs))
+
+
+CASES = {
+    "journals of the ratchet": lambda: ratchet_with_friction(0.12),
+    "slot and journals of the slotted lever": slotted_lever_with_friction,
+    "guide of the slider-crank, on the frame": lambda: analyse(slider_crank(
+        '[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 0.15\n[[friction]]\njoint = "A"\nf = 0.1\nradius = 0.02')),
+}
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_the_lever_with_friction_gives_the_polygons_and_the_linear_system_with_friction(case):
+    analysis = CASES[case]()
+    exact = analysis.with_friction
+    checked = 0
+    for position in analysis.plans:
+        if position.with_friction.locked:
+            assert position.lever_with_friction is None
+            continue
+        rubbing, lever = position.with_friction, position.lever_with_friction
+        assert lever.balancing == pytest.approx(rubbing.balancing, rel=1e-9)
+        assert lever.balancing == pytest.approx(exact.balancing[position.index], rel=1e-9)
+        # The friction is on the lever: it parts from the frictionless lever as the polygons do.
+        assert lever.balancing != pytest.approx(position.lever.balancing, rel=1e-3)
+        checked += 1
+    assert checked >= 2
+
+
+def test_a_friction_force_on_the_guide_acts_at_the_guides_own_point():
+    analysis = slotted_lever_with_friction()
+    position = analysis.plans[0]
+    images = {term.name: term.image for term in position.lever_with_friction.terms}
+    assert images["Ff43"] == "a" and images["Ff34"] == "a4"
+    velocity = position.velocity
+    assert abs(velocity.points["a"] - velocity.points["a4"]) > 1e-3 * abs(velocity.points["a"])
+
+
+def test_results_carry_the_lever_with_friction():
+    analysis = slotted_lever_with_friction()
+    written = json.loads(json.dumps(results(analysis)))
+    by_number = {entry["index"]: entry for entry in written["positions"]}
+    for position in analysis.plans:
+        friction = by_number[position.number]["forces"]["friction"]
+        assert friction["lever_balancing_moment"] == pytest.approx(position.lever_with_friction.balancing, rel=1e-10)
+        assert friction["lever_balancing_moment"] == pytest.approx(friction["balancing_moment"], rel=1e-9)
+        assert abs(friction["lever_difference_percent"]) < 1e-7
