@@ -66,6 +66,7 @@ class Analysis:
     loads: tuple[Load, ...] = ()
     equilibrium: Equilibrium | None = None
     with_friction: Equilibrium | None = None
+    friction: tuple[FrictionPair, ...] = ()
 
 
 def analyse(scene: Scene) -> Analysis:
@@ -99,7 +100,7 @@ def analyse(scene: Scene) -> Analysis:
             with_friction = equilibrium(mechanism, motion, loads, friction)
     in_order = tuple(sorted(motion.warnings + stepped_over, key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, in_order + warnings,
-                    loads, balance, with_friction)
+                    loads, balance, with_friction, friction)
 
 
 def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:

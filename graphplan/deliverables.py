@@ -137,7 +137,6 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
     from .render import drawings as draw
-    from .render import forces as force_layout
     from .render import plans as plan_layout
     from .render import positions as positions_layout
 
@@ -178,15 +177,24 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             found.append(Drawing(f"plan_{plan.number}", layers))
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
-            if laid_out is None:
-                sheet = draw.force_sheet(analysis, plan)
-                if "lever" not in pieces:
-                    sheet = dataclasses.replace(sheet, lever=None)
-                layers = force_layout.layout(sheet)
-            else:
-                layers = list(laid_out.layers)
+            layers = list(laid_out.layers) if laid_out else _force_sheet_layers(analysis, plan, pieces)
             found.append(Drawing(f"forces_{plan.number}", layers))
+            rubbing = plan.with_friction
+            if "forces" in pieces and rubbing is not None and not rubbing.locked:
+                found.append(Drawing(f"forces_friction_{plan.number}",
+                                     _force_sheet_layers(analysis, plan, pieces, with_friction=True)))
     return found
+
+
+def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_friction: bool = False) -> list:
+    """The force sheet of a plan position, its lever left off unless the run asks for it."""
+    from .render import drawings as draw
+    from .render import forces as force_layout
+
+    sheet = draw.force_sheet(analysis, plan, with_friction)
+    if "lever" not in pieces:
+        sheet = dataclasses.replace(sheet, lever=None)
+    return force_layout.layout(sheet)
 
 
 def _course_panels(analysis: Analysis):

@@ -84,6 +84,16 @@ class PositionPlans:
 
         return Drawing(forces_svg(self.analysis, self.position))
 
+    @cached_property
+    def forces_with_friction_drawing(self) -> Drawing | None:
+        """The force sheet with the pairs' friction, or None without ``[[friction]]`` or where the mechanism locks."""
+        rubbing = self.position.with_friction
+        if rubbing is None or rubbing.locked:
+            return None
+        from .render.drawings import forces_svg
+
+        return Drawing(forces_svg(self.analysis, self.position, with_friction=True))
+
     def _repr_svg_(self) -> str:
         return self.drawing.svg
 

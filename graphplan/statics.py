@@ -266,16 +266,22 @@ def efficiency(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar) -> Scalar:
     would drive, but with friction the driver must) no power is passed on
     in either sense, and η is not defined (NaN).
     """
-    driver = mechanism.driver
-    speed = driver.omega if driver.kind == "crank" else driver.velocity
     ideal, rubbing = np.asarray(ideal, dtype=float), np.asarray(rubbing, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        ratio = np.where(ideal * speed > 0, ideal / rubbing, rubbing / ideal)
+        ratio = np.where(delivers_power(mechanism, ideal), ideal / rubbing, rubbing / ideal)
     return np.where(ideal * rubbing > 0, ratio, np.nan)
+
+
+def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:
+    """Whether the driver delivers power against the balancing load ``ideal`` without friction
+    (η = Mb0/Mb), or the loads drive it back (η = Mb/Mb0)."""
+    driver = mechanism.driver
+    speed = driver.omega if driver.kind == "crank" else driver.velocity
+    return np.asarray(ideal, dtype=float) * speed > 0
 
 
 def _full(value: Vector | Scalar, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=complex), (count,))
 
 
-__all__ = ["SINGULAR_CONDITION", "Equilibrium", "Pair", "Reaction", "balancing_by_power", "efficiency", "equilibrium", "pairs"]
+__all__ = ["SINGULAR_CONDITION", "Equilibrium", "Pair", "Reaction", "balancing_by_power", "delivers_power", "efficiency", "equilibrium", "pairs"]

@@ -29,7 +29,11 @@ RADIUS, ROD, PUSH, OMEGA = 0.1, 0.4, 1000.0, 10.0
 
 
 def slider_crank(friction: str) -> graphplan.Scene:
-    return scene_from_text(f"""
+    return scene_from_text(slider_crank_text(friction))
+
+
+def slider_crank_text(friction: str) -> str:
+    return f"""
 [scene]
 gravity = 0.0
 [frame]
@@ -60,7 +64,7 @@ count = 24
 start = 7.5
 plans = [1, 5, 9, 17]
 {friction}
-""")
+"""
 
 
 def rod_angle(phi: np.ndarray) -> np.ndarray:

@@ -57,3 +57,16 @@ def test_a_position_shows_itself_as_its_plan_sheet(scene, tmp_path):
 def test_no_such_position(scene):
     with pytest.raises(ValueError, match="no position 12: the scene numbers its positions 0 to 11"):
         scene.plan(12)
+
+
+def test_a_position_with_friction_shows_its_sheet_with_friction(scene):
+    import dataclasses
+
+    from graphplan.notebook import plan
+    from graphplan.scene import FrictionSpec
+
+    assert scene.plan(3).forces_with_friction_drawing is None  # the scene has no [[friction]]
+    rubbing = dataclasses.replace(scene, friction=(FrictionSpec("friction[0]", "O", None, 0.1, 0.02, None),))
+    svg = plan(rubbing, 3).forces_with_friction_drawing.svg
+    root = ElementTree.fromstring(svg)
+    assert any((element.get("id") or "").endswith("-friction") for element in root.iter())

@@ -13,6 +13,7 @@ from ..errors import SceneError
 from ..locale import strings
 from ..plans import Plan, acceleration_plan, velocity_plan
 from ..scales import fit_scale, format_scale, standard_scale
+from ..statics import efficiency
 from . import forces as force_layout
 from . import plans, positions
 from .formats import holds
@@ -163,24 +164,38 @@ def plan_scale_text(value: float) -> str:
     return text or "0"
 
 
-def forces_svg(analysis: Analysis, plan_position: PlanPosition) -> str:
+def forces_svg(analysis: Analysis, plan_position: PlanPosition, with_friction: bool = False) -> str:
     """The SVG text of the force sheet of one plan position (:func:`force_sheet`)."""
-    return _svg(analysis, force_layout.layout(force_sheet(analysis, plan_position)))
+    return _svg(analysis, force_layout.layout(force_sheet(analysis, plan_position, with_friction)))
 
 
-def force_sheet(analysis: Analysis, plan_position: PlanPosition) -> force_layout.ForceSheet:
+def force_sheet(analysis: Analysis, plan_position: PlanPosition,
+                with_friction: bool = False) -> force_layout.ForceSheet:
     """What the force sheet of a plan position shows: its groups cut free, their polygons, the lever.
 
-    Raises :class:`ValueError` for a position without a force analysis
-    (``plan_position.forces`` is None).
+    ``with_friction`` shows the force analysis with the pairs' friction, its
+    friction circles and its lever, under a line with the balancing load
+    without friction and the efficiency.  Raises :class:`ValueError` for a
+    position without a force analysis (``plan_position.forces`` is None), or
+    without one with friction that settled when it is asked for.
     """
     if plan_position.forces is None:
         raise ValueError(f"position {plan_position.number} has no force analysis")
     text = strings(analysis.scene.locale)
     velocity = plan_position.velocity
+    forces, lever, title = plan_position.forces, plan_position.lever, "force_sheet_title"
+    friction, ideal, eta = (), None, None
+    if with_friction:
+        rubbing = plan_position.with_friction
+        if rubbing is None or rubbing.locked:
+            raise ValueError(f"position {plan_position.number} has no settled force analysis with friction")
+        forces, lever, title = rubbing, plan_position.lever_with_friction, "force_sheet_friction_title"
+        friction, ideal = analysis.friction, plan_position.forces.balancing
+        eta = float(efficiency(analysis.mechanism, ideal, rubbing.balancing))
     return force_layout.ForceSheet(
         mechanism=analysis.mechanism, motion=analysis.motion, index=plan_position.index,
-        number=plan_position.number, positions=plan_position.positions, forces=plan_position.forces,
-        lever=plan_position.lever, velocity=velocity, length_scale=length_scale(analysis),
-        title=text["force_sheet_title"].format(title=analysis.scene.title, number=plan_position.number),
-        text=text, velocity_scale=text["velocity_scale"].format(value=plan_scale_text(velocity.scale)))
+        number=plan_position.number, positions=plan_position.positions, forces=forces,
+        lever=lever, velocity=velocity, length_scale=length_scale(analysis),
+        title=text[title].format(title=analysis.scene.title, number=plan_position.number),
+        text=text, friction=friction, without_friction=ideal, efficiency=eta,
+        velocity_scale=text["velocity_scale"].format(value=plan_scale_text(velocity.scale)))

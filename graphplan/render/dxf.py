@@ -42,7 +42,7 @@ LAYER_WORDS: dict[str, str] = {
     "links": LINKS, "positions": LINKS, "extremes": LINKS, "frame": LINKS, "plan": LINKS,
     # thin lines: lines of action, arms, leaders, paths of points, pole rays and ordinates
     "lines": CONSTRUCTION, "arms": CONSTRUCTION, "arm": CONSTRUCTION, "leaders": CONSTRUCTION,
-    "paths": CONSTRUCTION, "rays": CONSTRUCTION,
+    "paths": CONSTRUCTION, "rays": CONSTRUCTION, "friction": CONSTRUCTION,
     # vectors and what marks them: plan vectors, forces, moments, senses of motion, plan points
     "vectors": VECTORS, "forces": VECTORS, "moments": VECTORS, "senses": VECTORS, "points": VECTORS,
     # lettering

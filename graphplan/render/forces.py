@@ -15,6 +15,12 @@ polygons side by side.  The last row is Zhukovsky's lever: the velocity
 plan turned 90° clockwise, the loads at the images of their points with
 their arms from the pole, the balancing force at the driver's image.
 
+The sheet of the force analysis with friction is the same sheet of the
+plan with friction, with the textbook's construction at every journal with
+friction: its friction circle ρ = f·r, the friction moments turning about
+the journal, and the whole reaction of the pair on the circle's tangent,
+on the side whose moment about the joint is the friction moment.
+
 The layout reads the records (:class:`graphplan.forces.ForcePlan`,
 :class:`graphplan.lever.Lever`, the velocity plan, the positions): it puts
 what they hold on paper and computes no mechanics.
@@ -34,12 +40,14 @@ from shapely.ops import unary_union
 
 from ..forces import ForcePlan, GroupForces, MomentEquation, PolygonVector
 from ..geometry import Line
+from ..joint_friction import FrictionPair
 from ..kinematics import at
 from ..lever import Lever, turned
 from ..mechanism import Mechanism
 from ..motion import Motion
 from ..plans import Plan
 from ..scales import format_scale, standard_scale
+from ..statics import delivers_power
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
 from .linkage import outline_points
 from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM, Arrangement
@@ -50,6 +58,7 @@ from .primitives import to_xy as _xy
 from .primitives import (
     MAIN,
     Arrow,
+    Circle,
     Layer,
     Polyline,
     Primitive,
@@ -75,6 +84,11 @@ NEGLIGIBLE = 1e-9
 # Radii of the curved arrows of moments on the links (mm).
 MOMENT_RADIUS_MM = 6.0
 BALANCING_RADIUS_MM = 9.0
+# A friction circle is drawn at least this large (mm), clear of the pin drawn over its joint; the caption
+# says when it is enlarged.
+LEAST_FRICTION_CIRCLE_MM = 3.0
+# The whole reaction on the friction circle's tangent runs this far past the circle each way (mm).
+TANGENT_RUN_MM = 9.0
 # Space between two polygons of one group (mm).
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
@@ -100,6 +114,8 @@ _AXIS = Stroke(0.2, "#333333", (6.0, 1.5, 1.0, 1.5))
 _LEVER = Stroke(0.6)
 _RAY = Stroke(0.25, "#555555")
 _MOMENT = Stroke(0.4)
+_FRICTION_CIRCLE = Stroke(0.3, "#a83a1f")
+_ON_TANGENT = Stroke(0.3, "#a83a1f", (6.0, 1.5, 1.0, 1.5))
 
 
 @dataclass(frozen=True)
@@ -112,6 +128,9 @@ class ForceSheet:
     force analysis; ``velocity`` the velocity plan the lever is turned from;
     ``length_scale`` is μl (m/mm); ``text`` the locale's strings;
     ``velocity_scale`` the line of μV as the plan sheet writes it.
+    ``friction`` holds the pairs with friction when ``forces`` is the plan
+    with friction; ``without_friction`` is then the balancing load without
+    it and ``efficiency`` η (NaN where friction turns the power flow round).
     """
 
     mechanism: Mechanism
@@ -126,6 +145,9 @@ class ForceSheet:
     title: str
     text: Mapping[str, str]
     velocity_scale: str
+    friction: tuple[FrictionPair, ...] = ()
+    without_friction: float | None = None
+    efficiency: float | None = None
 
 
 @dataclass(frozen=True)
@@ -175,10 +197,26 @@ def arrange(sheet: ForceSheet) -> Arrangement:
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                         text["force_scale"].format(value=format_scale(sheet.forces.scale)),
                         sheet.velocity_scale))
+    lines = (scales, *_friction_summary(sheet))
+    top_line = upper + 8.0 + (len(lines) - 1) * CAPTION_LINE * CAPTION_SIZE
     layers.append(Layer("sheet-title", (
-        Text((left, upper + 8.0 + 1.6 * TITLE_SIZE), sheet.title, TITLE_SIZE, "start", weight="bold"),
-        Text((left, upper + 8.0), scales, CAPTION_SIZE, "start"))))
+        Text((left, top_line + 1.6 * TITLE_SIZE), sheet.title, TITLE_SIZE, "start", weight="bold"),
+        *(Text((left, top_line - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "start")
+          for k, line in enumerate(lines)))))
     return Arrangement(layers, fields)
+
+
+def _friction_summary(sheet: ForceSheet) -> list[str]:
+    """The line under the scales of the sheet with friction: the balancing load with and without it, η."""
+    if sheet.without_friction is None:
+        return []
+    text = sheet.text
+    name, unit = ("Mb", text["newton_metre"]) if sheet.mechanism.driver.kind == "crank" else ("Fb", text["newton"])
+    eta = "—" if sheet.efficiency is None or not math.isfinite(sheet.efficiency) else _number(sheet.efficiency)
+    ratio = f"{name}0/{name}" if delivers_power(sheet.mechanism, sheet.without_friction) else f"{name}/{name}0"
+    return [text["forces_with_friction"].format(
+        name=name, value=_number(sheet.forces.balancing), unit=unit, iterations=sheet.forces.iterations,
+        ideal=_number(sheet.without_friction), ratio=ratio, efficiency=eta)]
 
 
 # A group cut free.
@@ -221,26 +259,29 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
         free, outward = (end, unit) if abs(end - point) >= abs(start - point) else (start, -unit)
         anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
+    circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
     arms, arm_anchors, equations = _arms(sheet, group, drawn, paper)
     displaced, displaced_anchors = _displacements(sheet, group, paper)
     arms += displaced
     arm_anchors += displaced_anchors
-    figure = links + arrows + turning + arms
+    figure = links + arrows + turning + circles + arms
     for name in _named_points(sheet, group):
         where = paper(sheet.positions[name])
         anchors.append(Anchor(where, name, POINT_SIZE, open_direction(where, figure)))
-    labels = _lettered(anchors + turning_anchors + arm_anchors, figure)
+    labels = _lettered(anchors + turning_anchors + circle_anchors + arm_anchors, figure)
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                           text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}")))]
     caption += equations
+    caption += circle_caption
     if is_driver:
         caption.append(_balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
     caption += _wrapped([f"{found.name} = {_number(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / sheet.forces.scale >= ZERO_MM])
+    friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
     return Panel(f"body-{key}", [
         Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
-        Layer(f"body-{key}-moments", tuple(turning)), Layer(f"body-{key}-forces", tuple(arrows)),
+        Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
         Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)], tuple(caption))
 
 
@@ -374,13 +415,17 @@ def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
     items: list[Primitive] = []
     anchors: list[Anchor] = []
     largest = max((abs(load.moment) for load in group.loads), default=0.0)
-    rings: dict[int, int] = {}
+    journals = _friction_moment_joints(sheet)
+    rings: dict[str, int] = {}
     for load in group.loads:
         if load.is_force or abs(load.moment) <= 1e-9 * max(largest, 1.0):
             continue
-        ring = rings.get(load.link, 0)
-        rings[load.link] = ring + 1
-        centre = _c(paper(_link_centre(sheet, load.link)))
+        # A friction moment turns about its journal, the other moments about the link's centre.
+        about = journals.get(load.name, f"link {load.link}")
+        ring = rings.get(about, 0)
+        rings[about] = ring + 1
+        where = sheet.positions[journals[load.name]] if load.name in journals else _link_centre(sheet, load.link)
+        centre = _c(paper(where))
         items_, anchor = _turn(centre, MOMENT_RADIUS_MM + 3.5 * ring, load.moment, load.name, _MOMENT,
                                open_direction(_xy(centre), drawn))
         items += items_
@@ -407,6 +452,50 @@ def _turn(centre: complex, radius: float, moment: float, name: str, stroke: Stro
     middle = start + sweep / 2
     at = centre + radius * complex(math.cos(middle), math.sin(middle))
     return items, Anchor(_xy(at), name, NAME_SIZE, middle, stroke.colour)
+
+
+def _friction_moment_joints(sheet: ForceSheet) -> dict[str, str]:
+    """The journal each friction moment turns about: ``Mf23`` and ``Mf32`` about the joint of 2 and 3."""
+    return {name: pair.joint for pair in sheet.friction if not pair.sliding
+            for name in (f"Mf{pair.source}{pair.target}", f"Mf{pair.target}{pair.source}")}
+
+
+def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[Primitive], list[Anchor], list[str]]:
+    """The friction circle of every journal of the group with friction, and the whole reaction of each outer
+    pair on the circle's tangent, on the side whose moment about the joint is the friction moment on the group.
+
+    The reaction ``R23`` through the joint with the moment ``Mf23`` is one force
+    ``R23`` shifted ρ across its line: ``cross(−i·û·ρ·sign Mf, R) = ρ·|R|·sign Mf``.
+    """
+    items: list[Primitive] = []
+    anchors: list[Anchor] = []
+    journals = [pair for pair in sheet.friction if not pair.sliding
+                and (pair.source in group.links or pair.target in group.links)]
+    if not journals:
+        return items, anchors, []
+    drawn = {pair.joint: max(pair.radius / sheet.length_scale, LEAST_FRICTION_CIRCLE_MM) for pair in journals}
+    for joint, radius in sorted(drawn.items()):
+        items.append(Circle(paper(sheet.positions[joint]), radius, _FRICTION_CIRCLE, fill=None))
+    moments = {load.name: load.moment for load in group.loads if not load.is_force}
+    split = {vector.name for vector in group.polygon.vectors}
+    for found in group.found:
+        moment = moments.get(f"Mf{found.source}{found.target}", 0.0)
+        if found.source in group.links or found.joint not in drawn or moment == 0 or found.force == 0:
+            continue  # an inner reaction is not drawn on the group, nor one without friction
+        unit = found.force / abs(found.force)
+        radius = drawn[found.joint]
+        touch = _c(paper(sheet.positions[found.joint])) - 1j * unit * math.copysign(radius, moment)
+        run = radius + TANGENT_RUN_MM
+        items.append(Polyline((_xy(touch - run * unit), _xy(touch + run * unit)), _ON_TANGENT))
+        if f"{found.name}n" in split:  # drawn whole, its arrow beside the line already names it
+            anchors.append(Anchor(_xy(touch + run * unit), found.name, NAME_SIZE, _angle(unit), _ON_TANGENT.colour))
+    text = sheet.text
+    values = [f"ρ{pair.joint} = {_number(1000.0 * pair.radius)} {text['millimetre']}"
+              for pair in sorted(journals, key=lambda pair: pair.joint)]
+    caption = _wrapped([text["friction_circles"].format(values=values[0]), *values[1:]])
+    if any(pair.radius / sheet.length_scale < LEAST_FRICTION_CIRCLE_MM for pair in journals):
+        caption.append(text["friction_circles_enlarged"].format(least=f"{LEAST_FRICTION_CIRCLE_MM:g}"))
+    return items, anchors, caption
 
 
 def _link_centre(sheet: ForceSheet, link: int) -> complex:

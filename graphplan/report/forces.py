@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from ..analysis import Analysis, PlanPosition
 from ..loads import motion_state
 from ..locale import strings
-from ..statics import balancing_by_power, efficiency
+from ..statics import balancing_by_power, delivers_power, efficiency
 
 # A rate this small against the plan's largest is the plan's rounding, not a value.
 _ROUNDING = 1e-12
@@ -213,9 +213,10 @@ def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
     if rubbing.locked:
         return [text["forces_locked"].format(iterations=rubbing.iterations)]
     eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing)
+    ratio = f"{name}0/{name}" if delivers_power(analysis.mechanism, plan.forces.balancing) else f"{name}/{name}0"
     return [text["forces_with_friction"].format(
         name=name, value=number(rubbing.balancing, 6, mark), unit=unit, iterations=rubbing.iterations,
-        ideal=number(plan.forces.balancing, 6, mark), efficiency=number(float(eta), 4, mark))]
+        ideal=number(plan.forces.balancing, 6, mark), ratio=ratio, efficiency=number(float(eta), 4, mark))]
 
 
 def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:

@@ -1,0 +1,167 @@
+"""The force sheet with friction, tested on its primitives.
+
+Each journal with friction is drawn with its friction circle ρ = f·r (at μl,
+enlarged to a least radius when smaller), and the whole reaction of each outer
+pair lies on the circle's tangent on the side whose moment about the joint is
+the pair's friction moment on the group, ``ρ·|R|`` in size: the textbook's
+construction, read back off the paper and compared with the force records.
+The sheet heads with the balancing load without friction and the efficiency;
+its lever carries the friction loads and agrees with the polygons.  The
+command line writes one such sheet per plan position whose reactions settle.
+"""
+
+import math
+
+import pytest
+from test_joint_friction import ratchet_with_friction, slider_crank, slider_crank_text
+from test_lever_with_friction import slotted_lever_with_friction
+
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.kinematics import cross
+from graphplan.render import forces as force_layout
+from graphplan.render.drawings import force_sheet, length_scale, with_length_scale
+from graphplan.render.primitives import Circle, Polyline, Text
+
+# Within this on the paper (mm) two drawn points are one.
+CLOSE_MM = 1e-6
+
+_analyses = {}
+
+
+def analysis_of(name):
+    if name not in _analyses:
+        source = {"ratchet": lambda: ratchet_with_friction(0.12), "slotted lever": slotted_lever_with_friction}[name]
+        _analyses[name] = with_length_scale(source())
+    return _analyses[name]
+
+
+CASES = [(name, k) for name in ("ratchet", "slotted lever") for k in (0, 1)]
+
+
+@pytest.fixture(params=CASES, ids=[f"{name}-{k}" for name, k in CASES])
+def case(request):
+    """(analysis, plan position, layers by name) of the sheet with friction of a plan position."""
+    name, k = request.param
+    analysis = analysis_of(name)
+    position = analysis.plans[k]
+    layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position, True))}
+    return analysis, position, layers
+
+
+def journals_of(analysis, group):
+    return {pair.joint: pair for pair in analysis.friction
+            if not pair.sliding and (pair.source in group.links or pair.target in group.links)}
+
+
+def test_each_journal_with_friction_has_its_circle_at_scale_or_enlarged(case):
+    analysis, position, layers = case
+    scale = length_scale(analysis)
+    checked = 0
+    for group in position.with_friction.groups:
+        drawn = layers.get(f"body-{force_layout.group_id(group.label)}-friction", ())
+        circles = [item for item in drawn if isinstance(item, Circle)]
+        expected = sorted(max(pair.radius / scale, force_layout.LEAST_FRICTION_CIRCLE_MM)
+                          for pair in journals_of(analysis, group).values())
+        assert sorted(circle.radius for circle in circles) == pytest.approx(expected, abs=CLOSE_MM)
+        # Each is centred on a pin of the group's drawing: on its joint.
+        pins = [item.centre for item in layers[f"body-{force_layout.group_id(group.label)}-links"]
+                if isinstance(item, Circle)]
+        for circle in circles:
+            assert min(math.dist(circle.centre, pin) for pin in pins) < CLOSE_MM
+        checked += len(circles)
+    assert checked >= 2
+
+
+def test_the_whole_reaction_lies_on_the_tangent_on_the_side_of_the_friction_moment(case):
+    analysis, position, layers = case
+    checked = 0
+    for group in position.with_friction.groups:
+        drawn = layers.get(f"body-{force_layout.group_id(group.label)}-friction", ())
+        circles = [item for item in drawn if isinstance(item, Circle)]
+        lines = [item for item in drawn if isinstance(item, Polyline)]
+        moments = {load.name: load.moment for load in group.loads if not load.is_force}
+        journals = journals_of(analysis, group)
+        outer = [found for found in group.found if found.source not in group.links and found.joint in journals]
+        assert len(lines) == len(outer), group.label
+        for found in outer:
+            unit = found.force / abs(found.force)
+            line = next(line for line in lines if abs(cross(unit, _direction(line))) < 1e-9)
+            start = complex(*line.points[0])
+            # The friction moment on the group is ρ·|R|: the reaction's own, settled.
+            moment = moments[f"Mf{found.source}{found.target}"]
+            assert abs(moment) == pytest.approx(journals[found.joint].radius * abs(found.force), rel=1e-9)
+            circle = min(circles, key=lambda c: abs(cross(unit, start - complex(*c.centre))) - c.radius)
+            # A force along the line, in the reaction's sense, turns about the joint as the friction moment does.
+            arm = cross(start - complex(*circle.centre), unit)
+            assert abs(arm) == pytest.approx(circle.radius, abs=CLOSE_MM)
+            assert math.copysign(1.0, arm) == math.copysign(1.0, moment)
+            checked += 1
+    assert checked >= 2
+
+
+def _direction(line: Polyline) -> complex:
+    (x0, y0), (x1, y1) = line.points[0], line.points[-1]
+    return complex(x1 - x0, y1 - y0) / math.hypot(x1 - x0, y1 - y0)
+
+
+def test_the_sheet_heads_with_the_load_without_friction_and_the_efficiency(case):
+    analysis, position, layers = case
+    heading = [item.text for item in layers["sheet-title"] if isinstance(item, Text)]
+    ideal, rubbing = position.forces.balancing, position.with_friction.balancing
+    eta = ideal / rubbing if ideal * analysis.mechanism.driver.omega > 0 else rubbing / ideal
+    assert 0.0 < eta < 1.0
+    line = next(text for text in heading if written(rubbing) in text)
+    assert written(ideal) in line and written(eta) in line and str(position.with_friction.iterations) in line
+
+
+def written(value: float) -> str:
+    """A number as the sheet writes it: four significant digits, a true minus sign."""
+    return f"{value:.4g}".replace("-", "−")
+
+
+def test_the_lever_on_the_sheet_carries_the_friction_and_agrees_with_the_polygons(case):
+    _, position, layers = case
+    lever = [item.text for item in layers["lever-caption"]]
+    assert any(text.endswith(" 0.00 %") for text in lever)
+    # The lever's own balancing load, with friction, is the one written as the lever's.
+    assert sum(written(position.lever_with_friction.balancing) in text for text in lever) == 2
+    names = {item.text for item in layers["lever-labels"] if isinstance(item, Text)}
+    assert any(name.startswith("Mf") for name in names)
+
+
+def test_a_russian_scene_writes_its_friction_in_russian():
+    analysis = analysis_of("ratchet")
+    layers = force_layout.layout(force_sheet(analysis, analysis.plans[0], True))
+    captions = [item.text for layer in layers if layer.name.endswith("caption") for item in layer.items]
+    assert any(text.startswith("круги трения ρ = f·r: ρA = ") for text in captions)
+    assert any("с учётом трения" in item.text for layer in layers for item in layer.items if isinstance(item, Text))
+
+
+def test_without_settled_reactions_there_is_no_sheet_with_friction(tmp_path):
+    """The slider-crank's piston jams at f = 5 in three of its four plan positions: one sheet, not four."""
+    scene = tmp_path / "jamming.toml"
+    scene.write_text(slider_crank_text('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 5.0'))
+    analysis = analyse(slider_crank('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 5.0'))
+    settled = [p.number for p in analysis.plans if not p.with_friction.locked]
+    assert len(settled) == 1
+    with pytest.raises(ValueError, match="no settled force analysis with friction"):
+        force_sheet(analysis, next(p for p in analysis.plans if p.with_friction.locked), True)
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    written = sorted(path.name for path in (tmp_path / "out").glob("forces_friction_*.svg"))
+    assert written == [f"forces_friction_{number}.svg" for number in settled]
+    assert len(list((tmp_path / "out").glob("forces_[0-9]*.svg"))) == len(analysis.plans)
+
+
+def test_the_heading_names_the_ratio_that_is_the_efficiency():
+    """η = Mb0/Mb where the crank drives the load, Mb/Mb0 where the load drives the crank back."""
+    analysis = with_length_scale(analyse(slider_crank('[[friction]]\njoint = "O"\nf = 0.1\nradius = 0.03')))
+    omega, seen = analysis.mechanism.driver.omega, set()
+    for position in analysis.plans:
+        heading = [item.text for layer in force_layout.layout(force_sheet(analysis, position, True))
+                   if layer.name == "sheet-title" for item in layer.items]
+        ideal, rubbing = position.forces.balancing, position.with_friction.balancing
+        ratio, eta = ("Mb0/Mb", ideal / rubbing) if ideal * omega > 0 else ("Mb/Mb0", rubbing / ideal)
+        assert any(f"η = {ratio} = {written(eta)}" in text for text in heading)
+        seen.add(ratio)
+    assert seen == {"Mb0/Mb", "Mb/Mb0"}
