@@ -451,6 +451,23 @@ def pivot_friction_moment(load: ArrayLike, f: ArrayLike, outer_radius: ArrayLike
     return _out(coefficient * q * (outer + inner) / 2)
 
 
+def cone_friction_moment(load: ArrayLike, f: ArrayLike, outer_radius: ArrayLike, inner_radius: ArrayLike,
+                         semi_angle: ArrayLike, *, contact: CloseFit) -> Scalar:
+    """The friction moment M (N·m) of a conical face: a cone clutch, a conical pivot.
+
+    The axial load W (N) presses a cone of semi-angle α (rad, 0 < α ≤ π/2) over
+    the radii r ≤ ρ ≤ R (m).  The normal pressure on the face carries W through
+    its axial share sin α, so every formula of :func:`pivot_friction_moment`
+    gains cosec α (α = π/2 is the flat collar itself):
+
+    * ``contact="new"``: uniform pressure, M = (2/3)·f·W·(R³ − r³)/(R² − r²)·cosec α;
+    * ``contact="run_in"``: even wear, M = f·W·(R + r)/2·cosec α = f·W·Rm·cosec α.
+    """
+    alpha = _angle("semi_angle", semi_angle, "(0, π/2]")
+    flat = pivot_friction_moment(load, f, outer_radius, inner_radius, contact=contact)
+    return _out(np.asarray(flat) / np.sin(alpha))
+
+
 # --- efficiency of machines ------------------------------------------------------------------
 
 

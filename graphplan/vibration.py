@@ -221,6 +221,24 @@ def damping_from_resonance(resonant_amplitude: ArrayLike, high_speed_amplitude: 
     return _out(np.sqrt((1.0 - np.sqrt(1.0 - 1.0 / (q * q))) / 2.0))
 
 
+def damping_from_phase(r: ArrayLike, lag: ArrayLike) -> Scalar:
+    """ζ from the lag φ (rad) of the motion behind the exciting force measured at the frequency ratio r.
+
+    The inverse of :func:`phase`: tan φ = 2ζr/(1 − r²), so ζ = (1 − r²)·tan φ/(2r), for
+    0 < φ < π (a lag of 0 or π is undamped; at r = 1 every ζ lags by π/2, which says nothing
+    of ζ, and is refused).  Below resonance the lag is under π/2, above it over.
+    """
+    ratio = _array("r", r, least=0.0, strict=True)
+    angle = _array("lag", lag, least=0.0, strict=True)
+    if np.any(angle >= np.pi):
+        raise ValueError("lag: must be less than π (a motion lags its force by 0 to π)")
+    if np.any(np.isclose(ratio, 1.0, rtol=0.0, atol=1e-12)):
+        raise ValueError("r: at resonance (r = 1) the lag is π/2 whatever the damping; measure off resonance")
+    if np.any((ratio < 1.0) != (angle < np.pi / 2)):
+        raise ValueError("lag: below resonance (r < 1) the lag is under π/2, above it (r > 1) over π/2")
+    return _out((1.0 - ratio * ratio) * np.tan(angle) / (2.0 * ratio))
+
+
 # --- a machine with rotating unbalance ------------------------------------------------------------
 
 
@@ -406,7 +424,7 @@ def _damping(table: Table, stiffness: float, mass: float) -> float:
     return table.number("damping_ratio", 0.0, non_negative=True)
 
 
-__all__ = ["Response", "VibrationSpec", "circular_second_moment", "critical_speed", "damping_from_resonance",
+__all__ = ["Response", "VibrationSpec", "circular_second_moment", "critical_speed", "damping_from_phase", "damping_from_resonance",
            "damping_ratio", "displacement_transmissibility", "displacement_transmissibility_phase",
            "force_magnification", "isolation_frequency_ratio", "isolation_stiffness", "natural_frequency", "phase",
            "read_vibration", "shaft_stiffness", "steady_state", "transmissibility", "unbalance_magnification",

@@ -25,6 +25,7 @@ from graphplan.friction import (
     METRIC_FLANK_HALF_ANGLE,
     Parallel,
     Series,
+    cone_friction_moment,
     cylindrical_slider_coefficient,
     flat_plane_force,
     friction_angle,
@@ -354,6 +355,43 @@ def test_solid_pivot_moments_are_two_thirds_and_one_half_f_q_r():
 def test_a_new_pivot_has_at_least_the_moment_of_a_run_in_one(outer, ratio, f):
     new = pivot_friction_moment(1.0, f, outer, ratio * outer, contact="new")
     assert new >= pivot_friction_moment(1.0, f, outer, ratio * outer, contact="run_in") * (1 - 1e-12)
+
+
+def cone_moment_by_quadrature(load, f, outer, inner, semi_angle, pressure_shape):
+    """The cone's face as rings of slant width dρ/sin α: area 2πρ·dρ/sin α, normal force p·dA, whose axial
+    share p·dA·sin α carries the load and whose friction f·p·dA acts at ρ."""
+    def area(rho):
+        return 2 * math.pi * rho / math.sin(semi_angle)
+
+    carried, _ = quad(lambda rho: pressure_shape(rho) * area(rho) * math.sin(semi_angle), inner, outer)
+    scale = load / carried
+    moment, _ = quad(lambda rho: f * scale * pressure_shape(rho) * area(rho) * rho, inner, outer)
+    return moment
+
+
+@pytest.mark.parametrize("semi_angle", [math.radians(12.5), math.radians(15), math.radians(40), math.pi / 2])
+@pytest.mark.parametrize("contact, pressure_shape", [("new", lambda rho: 1.0), ("run_in", lambda rho: 1 / rho)])
+def test_cone_moment_by_integrating_the_friction_over_the_conical_face(semi_angle, contact, pressure_shape):
+    load, f, outer, inner = 1500.0, 0.25, 0.16, 0.12
+    expected = cone_moment_by_quadrature(load, f, outer, inner, semi_angle, pressure_shape)
+    moment = cone_friction_moment(load, f, outer, inner, semi_angle, contact=contact)
+    assert moment == pytest.approx(expected, rel=1e-9)
+
+
+def test_a_cone_at_a_right_angle_is_the_flat_collar_and_a_sharper_one_grips_harder():
+    flat = pivot_friction_moment(1500.0, 0.25, 0.16, 0.12, contact="run_in")
+    assert cone_friction_moment(1500.0, 0.25, 0.16, 0.12, math.pi / 2, contact="run_in") == pytest.approx(flat)
+    angles = np.radians([10.0, 15.0, 30.0, 60.0])
+    moments = cone_friction_moment(1500.0, 0.25, 0.16, 0.12, angles, contact="run_in")
+    assert np.all(np.diff(moments) < 0)
+    # Even wear: f·W·Rm·cosec α, the mean radius alone counts.
+    assert moments[1] == pytest.approx(0.25 * 1500.0 * 0.14 / math.sin(math.radians(15.0)), rel=1e-12)
+
+
+@pytest.mark.parametrize("semi_angle", [0.0, -0.1, math.pi / 2 + 0.01])
+def test_a_cone_needs_a_semi_angle_between_nought_and_a_right_angle(semi_angle):
+    with pytest.raises(FrictionError, match="semi_angle"):
+        cone_friction_moment(1500.0, 0.25, 0.16, 0.12, semi_angle, contact="new")
 
 
 # --- efficiency of machines ------------------------------------------------------------------

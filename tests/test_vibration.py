@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scipy.integrate import quad, solve_ivp
+from scipy.integrate import quad, solve_ivp, trapezoid
 from scipy.optimize import brentq, minimize_scalar
 
 from graphplan.errors import SceneError
@@ -33,6 +33,7 @@ from graphplan.vibration import (
     VibrationSpec,
     circular_second_moment,
     critical_speed,
+    damping_from_phase,
     damping_from_resonance,
     damping_ratio,
     displacement_transmissibility,
@@ -381,3 +382,31 @@ def test_nothing_imports_matplotlib_until_a_figure_is_drawn():
             "graphplan.render.balancing; print('matplotlib' in sys.modules)")
     output = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert output.strip() == "False"
+
+
+@given(r=st.floats(min_value=0.05, max_value=20.0).filter(lambda r: abs(r - 1.0) > 1e-3),
+       zeta=st.floats(min_value=1e-3, max_value=2.0))
+def test_damping_from_the_lag_undoes_the_lag_of_the_damping(r, zeta):
+    assert damping_from_phase(r, phase(r, zeta)) == pytest.approx(zeta, rel=1e-7)
+
+
+def test_damping_from_a_lag_measured_on_the_integrated_motion():
+    """A machine integrated to its steady state: the lag of x behind the force read off the motion gives ζ."""
+    omega_n, zeta, r = 10.0, 0.15, 1.6
+    omega = r * omega_n
+    motion = solve_ivp(lambda t, y: [y[1], math.sin(omega * t) - 2 * zeta * omega_n * y[1] - omega_n ** 2 * y[0]],
+                       (0.0, 40.0), [0.0, 0.0], rtol=1e-10, atol=1e-12, dense_output=True)
+    # Over a whole number of late periods x = X·sin(ωt − φ): its sine and cosine parts give the lag.
+    t = np.linspace(40.0 - 10 * 2 * math.pi / omega, 40.0, 20001)
+    x = motion.sol(t)[0]
+    in_phase, quadrature = trapezoid(x * np.sin(omega * t), t), trapezoid(x * np.cos(omega * t), t)
+    lag = math.atan2(-quadrature, in_phase)
+    assert damping_from_phase(r, lag) == pytest.approx(zeta, rel=1e-4)
+
+
+@pytest.mark.parametrize("r, lag, message", [(1.0, math.pi / 2, "at resonance"), (0.5, 2.0, "below resonance"),
+                                             (2.0, 0.3, "below resonance"), (2.0, math.pi, "less than π"),
+                                             (0.5, 0.0, "lag")])
+def test_a_lag_that_says_nothing_of_the_damping_is_refused(r, lag, message):
+    with pytest.raises(ValueError, match=message):
+        damping_from_phase(r, lag)
