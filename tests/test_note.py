@@ -381,3 +381,32 @@ def test_a_scene_without_loads_or_plans_still_gets_its_note():
                                            measured={}))
     note = note_markdown(no_plans)
     assert "План скоростей" not in note and "Уравновешивающая нагрузка за цикл" in note
+
+
+def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
+    """ρ = f·r and Mf = ρ·R of each journal, Ff = f′·N of each slide, at the settled reactions, are the loads
+    the polygons with friction were closed with; the lever with them gives the polygons' Mb."""
+    from test_lever_with_friction import slotted_lever_with_friction
+
+    analysis = slotted_lever_with_friction()
+    note = note_markdown(analysis)
+
+    def n(value):
+        return force_report.number(value, 5)
+
+    for plan in analysis.plans:
+        rubbing = plan.with_friction
+        used = {load.name: load for group in rubbing.groups for load in group.loads}
+        for pair in analysis.friction:
+            reaction = abs(rubbing.reactions[pair.reaction].force)
+            name = f"{'Ff' if pair.sliding else 'Mf'}{pair.source}{pair.target}"
+            factor = pair.coefficient if pair.sliding else pair.radius
+            load = used[name]
+            assert abs(load.force if pair.sliding else load.moment) == pytest.approx(factor * reaction, rel=1e-9)
+            symbol = f"f′{pair.joint}" if pair.sliding else f"ρ{pair.joint}"
+            assert f"{name} = {symbol}·{pair.reaction} = {n(factor)}·{n(reaction)} = {n(factor * reaction)}" in note
+            if not pair.sliding:
+                assert f"ρ{pair.joint} = f·r = {n(pair.spec.f)}·{n(pair.spec.radius)} = {n(pair.radius)} m" in note
+        lever = plan.lever_with_friction.balancing
+        assert lever == pytest.approx(rubbing.balancing, rel=1e-9)
+        assert f"Zhukovsky's lever with these loads gives Mb = {n(lever)} N·m" in note

@@ -756,6 +756,29 @@ class _Note:
         if plan.with_friction is not None:
             self.para(f"**{text['forces_friction']}.** " + " ".join(force_report.friction_lines(analysis, plan,
                                                                                                  self.mark)))
+            if not plan.with_friction.locked:
+                self.friction_loads(plan)
+
+    def friction_loads(self, plan: PlanPosition) -> None:
+        """Each pair's friction load worked out at the settled reactions, and the lever that checks them."""
+        text, rubbing = self.text, plan.with_friction
+        lines = []
+        for pair in self.analysis.friction:
+            reaction = abs(rubbing.reactions[pair.reaction].force)
+            if pair.sliding:
+                lines.append(f"- f′{pair.joint} = {self.n(pair.coefficient)}; Ff{pair.source}{pair.target} = "
+                             f"f′{pair.joint}·{pair.reaction} = {self.product(self.n(pair.coefficient), self.n(reaction))}"
+                             f" = {self.n(pair.coefficient * reaction)} {text['newton']}")
+            else:
+                lines.append(f"- ρ{pair.joint} = f·r = {self.product(self.n(pair.spec.f), self.n(pair.spec.radius))} = "
+                             f"{self.n(pair.radius)} {text['unit_m']}; Mf{pair.source}{pair.target} = "
+                             f"ρ{pair.joint}·{pair.reaction} = {self.product(self.n(pair.radius), self.n(reaction))} = "
+                             f"{self.n(pair.radius * reaction)} {text['newton_metre']}")
+        self.para(self.t("note_friction_loads"), *lines)
+        lever = plan.lever_with_friction
+        name, unit = force_report.balancing_symbol(self.analysis)
+        self.para(self.t("note_friction_lever", name=name, value=self.n(lever.balancing), unit=unit,
+                         difference=force_report.percent(lever.balancing, rubbing.balancing, self.mark)))
 
     def force_group(self, plan: PlanPosition, group) -> None:
         text = self.text
