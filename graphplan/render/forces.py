@@ -473,21 +473,24 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
                 and (pair.source in group.links or pair.target in group.links)]
     if not journals:
         return items, anchors, []
-    drawn = {pair.joint: max(pair.radius / sheet.length_scale, LEAST_FRICTION_CIRCLE_MM) for pair in journals}
-    for joint, radius in sorted(drawn.items()):
-        items.append(Circle(paper(sheet.positions[joint]), radius, _FRICTION_CIRCLE, fill=None))
+    # Two journals at one joint (three links pinned together) have a circle each.
+    drawn = {frozenset((pair.source, pair.target)): max(pair.radius / sheet.length_scale, LEAST_FRICTION_CIRCLE_MM)
+             for pair in journals}
+    for pair in sorted(journals, key=lambda pair: (pair.joint, pair.source, pair.target)):
+        items.append(Circle(paper(sheet.positions[pair.joint]), drawn[frozenset((pair.source, pair.target))],
+                            _FRICTION_CIRCLE, fill=None))
     moments = {load.name: load.moment for load in group.loads if not load.is_force}
     split = {vector.name for vector in group.polygon.vectors}
     for found in group.found:
         moment = moments.get(f"Mf{found.source}{found.target}", 0.0)
-        if found.source in group.links or found.joint not in drawn or moment == 0 or found.force == 0:
+        if found.source in group.links or moment == 0 or found.force == 0:
             continue  # an inner reaction is not drawn on the group, nor one without friction
         unit = found.force / abs(found.force)
-        radius = drawn[found.joint]
+        radius = drawn[frozenset((found.source, found.target))]
         touch = _c(paper(sheet.positions[found.joint])) - 1j * unit * math.copysign(radius, moment)
         run = radius + TANGENT_RUN_MM
         items.append(Polyline((_xy(touch - run * unit), _xy(touch + run * unit)), _ON_TANGENT))
-        if f"{found.name}n" in split:  # drawn whole, its arrow beside the line already names it
+        if f"{found.name}n" in split:  # split into τ and n on the drawing, the whole reaction is named only here
             anchors.append(Anchor(_xy(touch + run * unit), found.name, NAME_SIZE, _angle(unit), _ON_TANGENT.colour))
     text = sheet.text
     values = [f"ρ{pair.joint} = {_number(1000.0 * pair.radius)} {text['millimetre']}"
