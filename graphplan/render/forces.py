@@ -33,6 +33,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
+import numpy as np
 from shapely.geometry import LineString, MultiPoint
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
@@ -93,6 +94,10 @@ TANGENT_RUN_MM = 9.0
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
 PER_LINE = 4
+# A caption runs no wider than its drawing or than this (mm), whichever is wider: an upright A4 holds it.
+CAPTION_WIDTH_MM = 160.0
+# A broken caption line's pieces are evened out in steps of this width (mm).
+_BALANCING_STEP_MM = 2.0
 # Size of the letters of points and of the names of forces (cap height, mm).
 POINT_SIZE = 3.5
 NAME_SIZE = 3.2
@@ -131,6 +136,9 @@ class ForceSheet:
     ``friction`` holds the pairs with friction when ``forces`` is the plan
     with friction; ``without_friction`` is then the balancing load without
     it and ``efficiency`` η (NaN where friction turns the power flow round).
+    ``lever_scale`` is μV of the lever when it is drawn smaller than the
+    velocity plan (a similar figure at any scale gives the same balancing
+    load), as a small sheet needs.
     """
 
     mechanism: Mechanism
@@ -148,6 +156,14 @@ class ForceSheet:
     friction: tuple[FrictionPair, ...] = ()
     without_friction: float | None = None
     efficiency: float | None = None
+    lever_scale: float | None = None
+
+    @property
+    def lever_scale_line(self) -> str:
+        """The line of μV the lever is drawn at."""
+        if self.lever_scale is None:
+            return self.velocity_scale
+        return self.text["velocity_scale"].format(value=format_scale(self.lever_scale))
 
 
 @dataclass(frozen=True)
@@ -177,10 +193,11 @@ def arrange(sheet: ForceSheet) -> Arrangement:
     for row in rows:
         extents = [bounds_of(item for layer in panel.layers for item in layer.items) for panel in row]
         height = max(y1 - y0 for _, y0, _, y1 in extents)
-        captions = max(len(panel.caption) for panel in row)
+        captions = [_fitted_caption(panel.caption, max(x1 - x0, CAPTION_WIDTH_MM)) for panel, (x0, _, x1, _)
+                    in zip(row, extents, strict=True)]
         cursor = 0.0
-        for panel, (x0, y0, x1, y1) in zip(row, extents, strict=True):
-            width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in panel.caption))
+        for panel, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
+            width = max(x1 - x0, *(_span(line, weight) for line, weight in caption))
             field = (cursor, top - height, cursor + width, top)
             fields[panel.name] = field
             layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0,
@@ -188,15 +205,16 @@ def arrange(sheet: ForceSheet) -> Arrangement:
             middle = cursor + width / 2
             layers.append(Layer(f"{panel.name}-caption", tuple(
                 Text((middle, top - height - CAPTION_GAP_MM - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE,
-                     "middle", weight="bold" if k == 0 else "normal")
-                for k, line in enumerate(panel.caption))))
+                     "middle", weight=weight)
+                for k, (line, weight) in enumerate(caption))))
             cursor += width + GAP_MM
-        top -= height + CAPTION_GAP_MM + captions * CAPTION_LINE * CAPTION_SIZE + GAP_MM
+        lines = max(len(caption) for caption in captions)
+        top -= height + CAPTION_GAP_MM + lines * CAPTION_LINE * CAPTION_SIZE + GAP_MM
     left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
     text = sheet.text
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                         text["force_scale"].format(value=format_scale(sheet.forces.scale)),
-                        sheet.velocity_scale))
+                        sheet.lever_scale_line))
     lines = (scales, *_friction_summary(sheet))
     top_line = upper + 8.0 + (len(lines) - 1) * CAPTION_LINE * CAPTION_SIZE
     layers.append(Layer("sheet-title", (
@@ -739,9 +757,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
     """The velocity plan turned 90° clockwise about the pole p, the loads at the images of their points."""
     text = sheet.text
     velocity = sheet.velocity
+    drawn_at = velocity.scale if sheet.lever_scale is None else sheet.lever_scale
 
     def mm(letter: str) -> complex:
-        return turned(velocity.points[letter]) / velocity.scale
+        return turned(velocity.points[letter]) / drawn_at
 
     # The rays from the pole thin, each link's figure (its points' hull) as a bar of the lever.
     frame: list[Primitive] = []
@@ -757,7 +776,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
             frame.append(Polyline(tuple(hull.exterior.coords)[:-1], _LEVER, closed=True))
         elif hull.geom_type == "LineString" and hull.length >= ZERO_MM:
             frame.append(Polyline(tuple(hull.coords), _LEVER))
-    named = [(term.name, term.image, term.force, _LOAD, turned(term.shift) / velocity.scale)
+    named = [(term.name, term.image, term.force, _LOAD, turned(term.shift) / drawn_at)
              for term in lever.terms if term.image and term.force != 0]
     named.append(("Fb", lever.balancing_image, lever.balancing_force, _BALANCING, 0j))
     scale = _arrow_scale([force for _, _, force, _, _ in named], frame)
@@ -797,9 +816,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
     parts.append(f"{_sign(-sum(moments.values()))} Fb·hb")
     equation = _leading(" ".join(parts))
     caption = [text["lever_title"],
-               ", ".join((sheet.velocity_scale,
+               ", ".join((sheet.lever_scale_line,
                           text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}"))),
-               *_wrapped_terms(f"ΣMp: {equation} = 0"),
+               f"ΣMp: {equation} = 0",
                _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
@@ -850,19 +869,59 @@ def _wrapped(items: Sequence[str]) -> list[str]:
     return [",  ".join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
 
 
-def _wrapped_terms(equation: str, width: int = 70) -> list[str]:
-    """A long equation broken before a sign, each line at most about ``width`` characters."""
-    lines: list[str] = []
-    current = ""
-    for word in re.split(r" (?=[+−] )", equation):
-        if current and len(current) + len(word) + 1 > width:
-            lines.append(current)
-            current = "   " + word
+# Where a caption line may break: after a comma, before the sign of a term, before a bracket.
+_CAPTION_BREAK = re.compile(r"(?<=,)\s+|\s+(?=[+−] )|\s+(?=\()")
+
+
+def _fitted_caption(caption: Sequence[str], width: float) -> list[tuple[str, str]]:
+    """A panel's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm."""
+    return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(caption)
+            for piece in _fitted(line, width, "bold" if k == 0 else "normal")]
+
+
+def _fitted(line: str, width: float, weight: str = "normal") -> list[str]:
+    """``line`` broken after a comma, before a sign or a bracket wherever it would run wider than ``width`` mm;
+    a piece still too wide is broken between its words (never inside ``name = value unit``), evenly."""
+    pieces = _broken(line, _CAPTION_BREAK, width, weight)
+    return [word_piece for piece in pieces
+            for word_piece in (_balanced(piece, _WORD_BREAK, width, weight) if _span(piece, weight) > width
+                               else [piece])]
+
+
+_WORD_BREAK = re.compile(r"(?<![\d=])\s+(?![=\d])")
+
+
+def _balanced(line: str, breaks: re.Pattern[str], width: float, weight: str) -> list[str]:
+    """``line`` cut at ``breaks`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
+    pieces = _broken(line, breaks, width, weight)
+    narrowest = max(_span(line, weight) / len(pieces), *(_span(piece, weight) for piece in pieces[1:-1]), 0.0)
+    for narrower in np.arange(narrowest, width, _BALANCING_STEP_MM):
+        even = _broken(line, breaks, float(narrower), weight)
+        if len(even) == len(pieces):
+            return even
+    return pieces
+
+
+def _broken(line: str, breaks: re.Pattern[str], width: float, weight: str) -> list[str]:
+    """``line`` cut greedily at ``breaks``: each piece as long as keeps within ``width`` mm, if it can."""
+    cuts = list(breaks.finditer(line))
+    starts = [0, *(cut.end() for cut in cuts)]
+    ends = [*(cut.start() for cut in cuts), len(line)]
+    pieces: list[str] = []
+    current = line[starts[0]:ends[0]]
+    for k in range(1, len(starts)):
+        joined = current + line[ends[k - 1]:starts[k]] + line[starts[k]:ends[k]]
+        if _span(joined, weight) > width:
+            pieces.append(current)
+            current = line[starts[k]:ends[k]]
         else:
-            current = f"{current} {word}" if current else word
-    if current:
-        lines.append(current)
-    return lines
+            current = joined
+    pieces.append(current)
+    return pieces
+
+
+def _span(line: str, weight: str) -> float:
+    return _width(Text((0.0, 0.0), line, CAPTION_SIZE, weight=weight))
 
 
 def _number(value: float, digits: int = 4) -> str:

@@ -1,7 +1,8 @@
 """Drawing sheets of a course project: the format, the frame, the title block, and the drawings placed on it.
 
 A sheet is an A1, A2, A3 or A4 format (A4 turned upright when that needs
-fewer sheets) with the frame and title block of the locale's drafting
+fewer sheets, each A4 of a set turned its own way when no one way holds
+all the drawings) with the frame and title block of the locale's drafting
 standard: ESKD for ``ru`` (GOST 2.301 formats, GOST 2.104 frame: 20 mm
 for binding on the left, 5 mm elsewhere), GB/T 14689 for ``zh`` (a = 25 mm
 for binding, c = 10 mm on A1 and A2, 5 mm on A3 and A4, centring marks),
@@ -19,8 +20,12 @@ for an empty sheet is placed part by part (a plan sheet of one position as
 its mechanism, velocity plan and acceleration plan; a force sheet as its
 groups, each beside its polygon, and the lever), on sheets of its own whose
 title block names it; a part too big for an empty sheet is an error that
-names the sheet and a bigger one.  ``sheet = "none"`` gives each panel
-unframed on a page of its own, as the drawings were before sheets.
+names the sheet and a bigger one.  A force sheet's group cut free or lever
+that no empty sheet holds is first drawn at the next larger standard scale
+(its caption and the title block's scale box say which), since a small
+sheet is no reason to give up a drawing that would fit a step smaller.
+``sheet = "none"`` gives each panel unframed on a page of its own, as the
+drawings were before sheets.
 """
 
 from __future__ import annotations
@@ -29,10 +34,10 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
-from ..analysis import Analysis
+from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
 from ..locale import strings
-from ..scales import format_scale
+from ..scales import format_scale, standard_scale
 from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
@@ -67,6 +72,8 @@ CENTRING_REACH_MM = 5.0
 # The kinematic diagrams are shortened for a small sheet in at most this many rounds, to no less of a field.
 _SHORTENING_ROUNDS = 8
 _LEAST_FIELD_MM = 10
+# A force sheet's drawing is drawn at most this many standard scales smaller to fit a small sheet.
+_LARGER_SCALES_TRIED = 12
 # A "none" page has this margin round its drawing, as the drawings before sheets had.
 UNFRAMED_MARGIN_MM = 8.0
 
@@ -83,12 +90,16 @@ class Panel:
     not fit a sheet; ``label`` says what the drawing is, for the title block
     of a sheet that holds only its parts.  ``name`` prefixes the ids of its
     layers and arrows on the sheet, so that two panels' ids never clash.
+    ``length_scale`` is μl where the drawing is drawn at another μl than
+    the set's (a force sheet made smaller for a small sheet), for the title
+    block's scale box.
     """
 
     name: str
     layers: tuple[Layer, ...]
     parts: tuple[Panel, ...] = ()
     label: str = ""
+    length_scale: float | None = None
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -226,12 +237,53 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
     return panels
 
 
-def force_panels(analysis: Analysis) -> list[Panel]:
-    """The force sheet (groups cut free, force polygons, Zhukovsky's lever) of each plan position that has one."""
+def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
+    """The force sheet (groups cut free, force polygons, Zhukovsky's lever) of each plan position that has one.
+
+    On a ``sheet`` (the scene's by default) that holds a group cut free or
+    the lever at the mechanism's μl and the plan's μV on no empty sheet,
+    that drawing is drawn at the next larger standard scale, and so on
+    until it fits: its caption says the scale it is drawn at.
+    """
+    chosen = analysis.scene.drawing.sheet if sheet is None else sheet
+    return [_force_panel(analysis, position, chosen) for position in analysis.plans if position.forces is not None]
+
+
+def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str) -> Panel:
     words = labels(analysis.scene.locale)
-    return [split(force_layout.arrange(force_sheet(analysis, position)), f"forces-{position.number}",
-                  words["sheet_forces_position"].format(number=position.number), _group_of_field)
-            for position in analysis.plans if position.forces is not None]
+    form = form_of(analysis.scene.locale)
+    drawn = force_sheet(analysis, position)
+    before: dict[str, tuple[float, float]] = {}
+    for _ in range(_LARGER_SCALES_TRIED):
+        panel = split(force_layout.arrange(drawn), f"forces-{position.number}",
+                      words["sheet_forces_position"].format(number=position.number), _group_of_field)
+        if sheet == "none":
+            return panel
+        unheld = {piece.name: (round(_width(piece)), round(_height(piece)))
+                  for part in panel.parts for piece in (part.parts or (part,))
+                  if not holds(sheet, form, _width(piece), _height(piece))}
+        bodies = any("-body-" in name for name in unheld)
+        lever = any(name.endswith("-lever") for name in unheld)
+        # A drawing held up by its words, not by its size, is no smaller at a larger scale.
+        if not bodies and not lever or unheld == before:
+            break
+        before = unheld
+        drawn = replace(
+            drawn,
+            length_scale=_larger(drawn.length_scale) if bodies else drawn.length_scale,
+            lever_scale=_larger(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
+    # A drawing that still does not fit is named by the packing.
+    return panel if drawn.length_scale == length_scale(analysis) else _drawn_at(panel, drawn.length_scale)
+
+
+def _drawn_at(panel: Panel, scale: float) -> Panel:
+    """``panel`` and its parts marked as drawn at μl = ``scale``."""
+    return replace(panel, parts=tuple(_drawn_at(part, scale) for part in panel.parts), length_scale=scale)
+
+
+def _larger(scale: float) -> float:
+    """The next standard scale factor above ``scale``: the drawing a step smaller."""
+    return standard_scale(scale * (1.0 + 1e-9))
 
 
 def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
@@ -331,11 +383,12 @@ class CoursePanels:
         return next((panel for panel in (*self.kinematics, *self.forces) if panel.name == name), None)
 
 
-def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = ()) -> CoursePanels:
+def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
+                  sheet: str | None = None) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
     kinematics = [*kinematics_panels(analysis),
                   *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
-    return CoursePanels(tuple(kinematics), tuple(force_panels(analysis)))
+    return CoursePanels(tuple(kinematics), tuple(force_panels(analysis, sheet)))
 
 
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
@@ -352,7 +405,7 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     _check_sheet(chosen)
     analysis = with_length_scale(analysis)
     scene = analysis.scene
-    panels = panels or course_panels(analysis, diagrams)
+    panels = panels or course_panels(analysis, diagrams, chosen)
     if chosen != "none":
         _check_positions_fit(analysis, chosen, panels.kinematics[0])
     details = details or Details()
@@ -496,55 +549,59 @@ def _empty_page(sheet: str, form: str, portrait: bool) -> _Page:
 
 
 def _pack(panels: Sequence[Panel], sheet: str, form: str) -> list[_Page]:
-    """The panels on as few sheets as this simple packing needs; A4 upright or across, whichever needs fewer."""
+    """The panels on as few sheets as this simple packing needs.
+
+    An A4 stands upright or across, all sheets one way when that needs no
+    more of them, else each sheet the way its drawings fit (a tall plan of
+    positions upright, wide diagrams across), as a set of A4 drawings may.
+    """
     _check_sheet(sheet)
-    if len(orientations(sheet)) == 1:
-        return _pack_on(panels, sheet, form, portrait=False)
-    packed: dict[bool, list[_Page]] = {}
-    failure: SceneError | None = None
-    for portrait in orientations(sheet):
-        try:
-            packed[portrait] = _pack_on(panels, sheet, form, portrait)
-        except SceneError as error:
-            failure = failure or error
-    if not packed:
-        assert failure is not None
-        raise failure
+    turns = orientations(sheet)
+    if len(turns) == 1:
+        return _pack_on(panels, sheet, form, turns)
     # ESKD puts an A4 upright; the other standards turn it as the drawing needs.
     upright_first = form == "eskd"
-    return min(packed.values(), key=lambda pages: (len(pages), _upright(pages[0]) != upright_first))
+    mixed = _pack_on(panels, sheet, form, tuple(sorted(turns, key=lambda portrait: portrait != upright_first)))
+    packed = [mixed]
+    for portrait in turns:
+        try:
+            packed.append(_pack_on(panels, sheet, form, (portrait,)))
+        except SceneError:
+            continue
+    return min(packed, key=lambda pages: (len(pages), len({_upright(page) for page in pages}),
+                                          _upright(pages[0]) != upright_first))
 
 
 def _upright(page: _Page) -> bool:
     return page.size[0] < page.size[1]
 
 
-def _pack_on(panels: Sequence[Panel], sheet: str, form: str, portrait: bool) -> list[_Page]:
-    pages = [_empty_page(sheet, form, portrait)]
-
-    def fresh() -> _Page:
-        if pages[-1].placed:
-            pages.append(_empty_page(sheet, form, portrait))
-        return pages[-1]
-
+def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[bool]) -> list[_Page]:
+    """The panels packed in order; a new sheet is turned the first of ``turns`` (True: upright) that holds
+    the panel that opens it."""
+    pages: list[_Page] = []
     for panel in panels:
-        page = pages[-1]
-        if not page.label and page.place(panel):
+        if pages and not pages[-1].label and pages[-1].place(panel):
             continue
-        if fresh().place(panel):
+        page = _empty_page(sheet, form, _turn_holding(panel, sheet, form, turns))
+        if page.place(panel):
+            pages.append(page)
             continue
         if not panel.parts:
-            raise _too_big(panel, pages[-1], sheet)
+            raise _too_big(panel, sheet, form, turns)
         # Parts go on sheets of their own, whose title block says whose parts they are.
-        fresh()
-        pages[-1:] = _parts_on(panel, sheet, form, portrait)
-    pages = [page for page in pages if page.placed]
+        pages += _parts_on(panel, sheet, form, turns)
     for page in pages:
         _centre(page)
     return pages
 
 
-def _parts_on(panel: Panel, sheet: str, form: str, portrait: bool) -> list[_Page]:
+def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:
+    """The first of ``turns`` whose empty sheet holds ``panel``; the first of all when none does."""
+    return next((portrait for portrait in turns if _empty_page(sheet, form, portrait).fits_empty(panel)), turns[0])
+
+
+def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> list[_Page]:
     """The parts of ``panel`` on pages of their own, arranged to need the fewest pages.
 
     Tried in turn: the parts as given, then each part that holds several
@@ -553,22 +610,24 @@ def _parts_on(panel: Panel, sheet: str, form: str, portrait: bool) -> list[_Page
     many pages the first tried is kept, so that a drawing stays with its
     neighbours and in reading order where that costs no sheet.
     """
-    empty = _empty_page(sheet, form, portrait)
+    def held(part: Panel) -> bool:
+        return any(_empty_page(sheet, form, portrait).fits_empty(part) for portrait in turns)
+
     # A part too big for a sheet stands apart in its own parts.
     grouped = [piece for part in panel.parts
-               for piece in (part.parts if part.parts and not empty.fits_empty(part) else (part,))]
+               for piece in (part.parts if part.parts and not held(part) else (part,))]
     single = [piece for part in grouped for piece in (part.parts or (part,))]
     best: list[_Page] | None = None
     for parts in (grouped, single):
         for order in (parts, sorted(parts, key=lambda part: -_height(part)),
                       sorted(parts, key=lambda part: -_area(part)), sorted(parts, key=lambda part: -_width(part))):
-            pages = [_empty_page(sheet, form, portrait)]
+            pages: list[_Page] = []
             for part in order:
-                if pages[-1].place(part):
+                if pages and pages[-1].place(part):
                     continue
-                if not pages[-1].fits_empty(part):
-                    raise _too_big(part, pages[-1], sheet, panel.label)
-                pages.append(_empty_page(sheet, form, portrait))
+                if not held(part):
+                    raise _too_big(part, sheet, form, turns, panel.label)
+                pages.append(_empty_page(sheet, form, _turn_holding(part, sheet, form, turns)))
                 pages[-1].place(part)
             if best is None or len(pages) < len(best):
                 best = pages
@@ -609,15 +668,17 @@ def _centre(page: _Page) -> None:
             return
 
 
-def _too_big(panel: Panel, page: _Page, sheet: str, whose: str = "") -> SceneError:
+def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: str = "") -> SceneError:
     x0, y0, x1, y1 = panel.extent
-    ax0, ay0, ax1, ay1 = page.area
     what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
+    rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
+                          for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
     bigger = BIGGER.get(sheet)
     advice = f"choose {bigger} or a bigger sheet, or " if bigger else "choose a larger μl (drawing.length_scale) or "
     return SceneError("drawing.sheet",
                       f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
-                      f"(drawing area {ax1 - ax0:.0f} × {ay1 - ay0:.0f} mm); {advice}sheet = \"none\"", sheet)
+                      f"(an empty one has room for {' or '.join(rooms)} mm clear of its title block); "
+                      f"{advice}sheet = \"none\"", sheet)
 
 
 # Drawing the sheets.
@@ -627,9 +688,11 @@ def _drawn(pages: Sequence[_Page], sheet: str, locale: str, kind: str, scale: fl
     form = form_of(locale)
     words = labels(locale)
     text = strings(locale)
-    scale_box = scale_text(scale, form, text["length_scale"]) if scale is not None else ""
     sheets = []
     for k, page in enumerate(pages):
+        own = {panel.length_scale for panel, _, _ in page.placed if panel.length_scale is not None}
+        page_scale = own.pop() if len(own) == 1 else scale
+        scale_box = scale_text(page_scale, form, text["length_scale"]) if page_scale is not None else ""
         fields = TitleBlockFields(
             title=details.title, drawing=_drawing_name(page) or words[kind], scale=scale_box, sheet=first + k,
             sheets=count,
