@@ -181,8 +181,9 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             found.append(Drawing(f"forces_{plan.number}", layers))
             rubbing = plan.with_friction
             if "forces" in pieces and rubbing is not None and not rubbing.locked:
-                found.append(Drawing(f"forces_friction_{plan.number}",
-                                     _force_sheet_layers(analysis, plan, pieces, with_friction=True)))
+                laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
+                layers = list(laid_out.layers) if laid_out else _force_sheet_layers(analysis, plan, pieces, True)
+                found.append(Drawing(f"forces_friction_{plan.number}", layers))
     return found
 
 

@@ -16,12 +16,14 @@ import pytest
 from test_joint_friction import ratchet_with_friction, slider_crank, slider_crank_text
 from test_lever_with_friction import slotted_lever_with_friction
 
+import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.kinematics import cross
 from graphplan.render import forces as force_layout
-from graphplan.render.drawings import force_sheet, length_scale, with_length_scale
+from graphplan.render.drawings import force_sheet, forces_svg, length_scale, with_length_scale
 from graphplan.render.primitives import Circle, Polyline, Text
+from graphplan.render.sheet import course_sheets
 
 # Within this on the paper (mm) two drawn points are one.
 CLOSE_MM = 1e-6
@@ -105,14 +107,17 @@ def _direction(line: Polyline) -> complex:
     return complex(x1 - x0, y1 - y0) / math.hypot(x1 - x0, y1 - y0)
 
 
-def test_the_sheet_heads_with_the_load_without_friction_and_the_efficiency(case):
+def test_the_driving_link_s_caption_gives_the_load_without_friction_and_the_efficiency(case):
     analysis, position, layers = case
-    heading = [item.text for item in layers["sheet-title"] if isinstance(item, Text)]
+    driver = force_layout.group_id(position.with_friction.groups[-1].label)
+    caption = " ".join(item.text for item in layers[f"body-{driver}-caption"])
     ideal, rubbing = position.forces.balancing, position.with_friction.balancing
     eta = ideal / rubbing if ideal * analysis.mechanism.driver.omega > 0 else rubbing / ideal
     assert 0.0 < eta < 1.0
-    line = next(text for text in heading if written(rubbing) in text)
+    line = caption[caption.index(f"Mb = {written(rubbing)}"):]
     assert written(ideal) in line and written(eta) in line and str(position.with_friction.iterations) in line
+    # Not in the heading: a sheet set part by part keeps it.
+    assert not any("η" in item.text for item in layers["sheet-title"])
 
 
 def written(value: float) -> str:
@@ -153,15 +158,43 @@ def test_without_settled_reactions_there_is_no_sheet_with_friction(tmp_path):
     assert len(list((tmp_path / "out").glob("forces_[0-9]*.svg"))) == len(analysis.plans)
 
 
-def test_the_heading_names_the_ratio_that_is_the_efficiency():
+def test_the_sheet_names_the_ratio_that_is_the_efficiency():
     """η = Mb0/Mb where the crank drives the load, Mb/Mb0 where the load drives the crank back."""
     analysis = with_length_scale(analyse(slider_crank('[[friction]]\njoint = "O"\nf = 0.1\nradius = 0.03')))
     omega, seen = analysis.mechanism.driver.omega, set()
     for position in analysis.plans:
-        heading = [item.text for layer in force_layout.layout(force_sheet(analysis, position, True))
-                   if layer.name == "sheet-title" for item in layer.items]
+        captions = " ".join(item.text for layer in force_layout.layout(force_sheet(analysis, position, True))
+                            if layer.name.endswith("-caption") for item in layer.items)
         ideal, rubbing = position.forces.balancing, position.with_friction.balancing
         ratio, eta = ("Mb0/Mb", ideal / rubbing) if ideal * omega > 0 else ("Mb/Mb0", rubbing / ideal)
-        assert any(f"η = {ratio} = {written(eta)}" in text for text in heading)
+        assert f"η = {ratio} = {written(eta)}" in captions
         seen.add(ratio)
     assert seen == {"Mb0/Mb", "Mb/Mb0"}
+
+
+def test_the_course_sheets_carry_each_settled_sheet_with_friction_after_its_position(tmp_path):
+    """The jamming slider-crank: a sheet with friction only for the position that settles, named in its title
+    block, and the drawing written on its own is the one on the sheet."""
+    scene = tmp_path / "jamming.toml"
+    scene.write_text(slider_crank_text('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 5.0'))
+    analysis = with_length_scale(analyse(graphplan.load(scene)))
+    settled = [p.number for p in analysis.plans if not p.with_friction.locked]
+    sheets = course_sheets(analysis, "A1")
+    placed = [name for sheet in sheets for name in sheet.panels]
+    with_friction = [name for name in placed if name.startswith("forces-friction-")]
+    assert sorted({int(name.split("-")[2]) for name in with_friction}) == settled
+    for number in settled:
+        # Each after its own position's force sheet.
+        assert placed.index(f"forces-{number}") < placed.index(f"forces-friction-{number}")
+        sheet = next(sheet for sheet in sheets if f"forces-friction-{number}" in sheet.panels)
+        written = [item.text for item in sheet.layers if item.name.startswith(f"forces-friction-{number}-")
+                   for item in item.items if isinstance(item, Text)]
+        assert f"{analysis.scene.title}: force analysis with friction, position {number}" in written
+        assert any("η = " in line for line in written)
+        block = [item.text for item in sheet.layers if item.name == "title-block" for item in item.items
+                 if isinstance(item, Text)]
+        if len(sheet.panels) == 1:
+            assert " ".join(block).count(f"with friction, position {number}") == 1
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets,forces,lever"]) == 0
+    drawn = (tmp_path / "out" / f"forces_friction_{settled[0]}.svg").read_text()
+    assert drawn == forces_svg(analysis, next(p for p in analysis.plans if p.number == settled[0]), True)

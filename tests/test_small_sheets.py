@@ -7,6 +7,7 @@ caption. Scales are checked on the drawings themselves: the pins' distances agai
 lever's rays against the velocities.
 """
 
+import dataclasses
 import itertools
 import math
 import re
@@ -14,14 +15,25 @@ import re
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from test_sheets import analyses_of, inside, layer, overlap, placed_bounds, texts, with_drawing
+from test_sheets import STANDARD, analyses_of, inside, layer, overlap, placed_bounds, texts, with_drawing
 
+import graphplan
+from graphplan.analysis import analyse
 from graphplan.errors import SceneError
 from graphplan.render import forces as force_layout
+from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import force_sheet, plan_scale_text
 from graphplan.render.formats import FORMATS, page_geometry
 from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent
-from graphplan.render.sheet import course_sheets, diagrams_panel, force_panels, kinematics_sheet
+from graphplan.render.sheet import (
+    _group_of_field,
+    course_sheets,
+    diagrams_panel,
+    force_panels,
+    forces_sheet,
+    kinematics_sheet,
+    split,
+)
 from graphplan.render.title_block import scale_text
 
 MECHANISM_SCALE = 0.005  # m/mm, the ratchet's scene gives 0.0025
@@ -71,61 +83,133 @@ def _size(sheet, name):
     return x1 - x0, y1 - y0
 
 
-def test_a_group_cut_free_too_big_for_a4_is_drawn_at_a_larger_standard_scale_that_its_caption_and_block_name(
-        ratchet_a4):
-    analysis, sheets = ratchet_a4
+# Force drawings on A4.
+
+def a4_force_sheets(length_scale, velocity_pole):
+    """The ratchet's force sheets on A4 with the scene's μl and pole distance pv changed."""
+    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
+    drawing = dataclasses.replace(scene.drawing, length_scale=length_scale, velocity_pole=velocity_pole, sheet="A4")
+    analysis = analyse(dataclasses.replace(scene, drawing=drawing))
+    return analysis, forces_sheet(force_panels(analysis), "A4", "ru", scale=length_scale)
+
+
+@pytest.fixture(scope="module")
+def drawn_smaller():
+    """At the scene's μl = 0.0025 the group II(3,4) cut free is 320 mm tall, and at pv = 300 mm the lever
+    300 mm wide: no A4 holds either at those scales."""
+    return a4_force_sheets(0.0025, 300.0)
+
+
+def caption_of(sheet, drawing):
+    return " ".join(text.text for text in texts([layer(sheet, f"{drawing}-caption")]))
+
+
+def check_group_scale(analysis, sheets):
+    """Each group II(3,4) cut free is drawn at the μl its caption and its sheet's scale box give: its pins stand
+    the scene's lengths apart at that scale. Returns those scales."""
     group = next(group for group in analysis.scene.groups if group.kind == "RRR")
-    unframed = {panel.name: panel for panel in force_panels(analysis, "none")}
-    bodies = [(sheet, item) for sheet in sheets for item in sheet.layers
-              if re.fullmatch(r"forces-\d+-body-II-3-4-links", item.name)]
-    assert len(bodies) == len(analysis.plans)
-    smaller = 0
-    for sheet, links in bodies:
-        caption = " ".join(text.text for text in texts([layer(sheet, links.name.replace("-links", "-caption"))]))
-        drawn_at = float(re.search(r"μl = ([\d.]+) м/мм", caption).group(1))
+    scales = []
+    for position in analysis.plans:
+        name = f"forces-{position.number}-body-II-3-4"
+        sheet = next(sheet for sheet in sheets if name in sheet.panels)
+        drawn_at = float(re.search(r"μl = ([\d.]+) м/мм", caption_of(sheet, name)).group(1))
+        links = layer(sheet, f"{name}-links")
         pins = [item.centre for item in links.items if isinstance(item, Circle) and item.radius == pytest.approx(1.3)]
         distances = [math.dist(a, b) * drawn_at for a, b in itertools.combinations(pins, 2)]
         for length in group.lengths:  # AB and BC; AC is the third side of the triangle
             assert any(d == pytest.approx(length, rel=1e-9) for d in distances)
-        block = [text.text for text in texts([layer(sheet, "title-block")])]
-        assert scale_text(drawn_at, "eskd", "") in block
-        # At the mechanism's own μl the group cut free fits no empty A4 exactly when it is drawn smaller.
-        panel = unframed[links.name.split("-body-")[0]]
-        alone = next(piece for part in panel.parts for piece in part.parts or (part,)
-                     if piece.name.endswith("-body-II-3-4"))
-        x0, y0, x1, y1 = alone.extent
-        fits = any(page_geometry("A4", "eskd", portrait).holds(x1 - x0, y1 - y0) for portrait in (False, True))
-        assert fits == (drawn_at == MECHANISM_SCALE)
-        smaller += drawn_at > MECHANISM_SCALE
-    assert smaller >= 1
+        assert scale_text(drawn_at, "eskd", "") in [text.text for text in texts([layer(sheet, "title-block")])]
+        scales.append(drawn_at)
+    return scales
 
 
-def test_a_lever_too_big_for_a4_is_the_velocity_plan_at_a_larger_scale_that_its_caption_names(ratchet_a4):
-    analysis, sheets = ratchet_a4
+def check_lever_scale(analysis, sheets):
+    """Each lever is the velocity plan at the μV its caption gives: its rays are the velocities at that scale,
+    and the balancing moment it finds is the lever's own. Returns those scales."""
+    scales = []
     for position in analysis.plans:
-        sheet = next(sheet for sheet in sheets if f"forces-{position.number}-lever" in sheet.panels)
-        caption = " ".join(text.text for text in texts([layer(sheet, f"forces-{position.number}-lever-caption")]))
+        name = f"forces-{position.number}-lever"
+        sheet = next(sheet for sheet in sheets if name in sheet.panels)
+        caption = caption_of(sheet, name)
         drawn_at = float(re.search(r"μV = ([\d.]+) ", caption).group(1))
-        assert drawn_at > position.velocity.scale
-        rays = [item for item in layer(sheet, f"forces-{position.number}-lever-plan").items
+        if drawn_at == pytest.approx(position.velocity.scale, rel=1e-3):
+            drawn_at = position.velocity.scale  # the plan's own μV, written to four digits
+        rays = [item for item in layer(sheet, f"{name}-plan").items
                 if isinstance(item, Polyline) and len(item.points) == 2 and item.stroke.width == 0.25]
         drawn = sorted(math.dist(*ray.points) * drawn_at for ray in rays)
         images = {letter for letter in position.velocity.images.values() if letter != "p"}
         velocities = sorted(abs(position.velocity.points[letter]) for letter in images
                             if abs(position.velocity.points[letter]) / drawn_at >= force_layout.ZERO_MM)
-        assert drawn == pytest.approx(velocities, rel=1e-9)
-        # The balancing moment found on the lever does not depend on its scale.
+        assert drawn == pytest.approx(velocities, rel=1e-6)
         assert f"Mb = {force_layout._number(position.lever.balancing)} Н·м" in caption
+        scales.append(drawn_at)
+    return scales
 
 
-def test_on_a1_the_force_drawings_keep_the_mechanism_scale():
+def fits_a4(panel):
+    x0, y0, x1, y1 = panel.extent
+    return any(page_geometry("A4", "eskd", portrait).holds(x1 - x0, y1 - y0) for portrait in (False, True))
+
+
+def test_on_a4_the_ratchet_forces_keep_their_scales_with_smaller_lettering(ratchet_a4):
+    analysis, sheets = ratchet_a4
+    assert check_group_scale(analysis, sheets) == [MECHANISM_SCALE] * len(analysis.plans)
+    assert check_lever_scale(analysis, sheets) == pytest.approx([p.velocity.scale for p in analysis.plans],
+                                                                  rel=1e-3)
+    force_captions = [text for sheet in sheets for item in sheet.layers
+                      if item.name.startswith("forces-") and item.name.endswith("-caption") for text in item.items]
+    assert force_captions and {text.size for text in force_captions} == {force_layout.SMALL_CAPTION_SIZE}
+    # The usual lettering would not do: some drawing of the force sheet then fits no A4.
+    unframed = force_panels(analysis, "none")
+    assert not all(fits_a4(piece) for panel in unframed for part in panel.parts for piece in part.parts or (part,))
+
+
+def test_force_drawings_no_a4_holds_are_drawn_at_the_next_standard_scales_that_fit(drawn_smaller):
+    analysis, sheets = drawn_smaller
+    group_scales = check_group_scale(analysis, sheets)
+    lever_scales = check_lever_scale(analysis, sheets)
+    scene = analysis.scene.drawing
+    assert all(scale > scene.length_scale for scale in group_scales)
+    assert all(scale > position.velocity.scale for scale, position in zip(lever_scales, analysis.plans, strict=True))
+    for scale in (*group_scales, *lever_scales):
+        assert scale in STANDARD
+    # Each is the first standard scale that fits: one step back does not.
+    for position, group_scale, lever_scale in zip(analysis.plans, group_scales, lever_scales, strict=True):
+        back = max(value for value in STANDARD if value < group_scale - 1e-15)
+        if back > scene.length_scale:
+            sheet = with_scales(force_sheet(analysis, position), back, lever_scale)
+            assert not fits_a4(part_named(sheet, position, "body-II-3-4"))
+        back = max(value for value in STANDARD if value < lever_scale - 1e-15)
+        if back > position.velocity.scale:
+            sheet = with_scales(force_sheet(analysis, position), group_scale, back)
+            assert not fits_a4(part_named(sheet, position, "lever"))
+    for sheet in sheets:
+        drawn = placed_bounds(sheet)
+        for panel, rect in drawn.items():
+            assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"
+
+
+def with_scales(sheet, length_scale, lever_scale):
+    return dataclasses.replace(sheet, length_scale=length_scale, lever_scale=lever_scale,
+                               caption_size=force_layout.SMALL_CAPTION_SIZE)
+
+
+def part_named(sheet, position, name):
+    panel = split(force_layout.arrange(sheet), f"forces-{position.number}", "", _group_of_field)
+    return next(piece for part in panel.parts for piece in part.parts or (part,)
+                if piece.name == f"forces-{position.number}-{name}")
+
+
+def test_on_a1_the_force_drawings_keep_the_mechanism_scale_and_the_usual_lettering():
     analysis = analyses_of("ratchet_crank_rocker")
     sheets = course_sheets(analysis, "A1")
-    captions = " ".join(text.text for sheet in sheets for item in sheet.layers if item.name.endswith("caption")
-                        for text in texts([item]))
-    assert f"μl = {analysis.scene.drawing.length_scale:g} м/мм, силы" in captions
+    captions = [text for sheet in sheets for item in sheet.layers
+                if item.name.startswith("forces-") and item.name.endswith("caption") for text in texts([item])]
+    joined = " ".join(text.text for text in captions)
+    assert f"μl = {analysis.scene.drawing.length_scale:g} м/мм, силы" in joined
     for position in analysis.plans:
-        assert f"μV = {plan_scale_text(position.velocity.scale)} (м/с)/мм, силы" in captions
+        assert f"μV = {plan_scale_text(position.velocity.scale)} (м/с)/мм, силы" in joined
+    assert {text.size for text in captions} == {plan_layout.CAPTION_SIZE}
 
 
 def box(width, height):

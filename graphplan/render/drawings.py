@@ -174,8 +174,8 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
     """What the force sheet of a plan position shows: its groups cut free, their polygons, the lever.
 
     ``with_friction`` shows the force analysis with the pairs' friction, its
-    friction circles and its lever, under a line with the balancing load
-    without friction and the efficiency.  Raises :class:`ValueError` for a
+    friction circles and its lever, the driving link's caption giving the
+    balancing load without friction and the efficiency.  Raises :class:`ValueError` for a
     position without a force analysis (``plan_position.forces`` is None), or
     without one with friction that settled when it is asked for.
     """

@@ -96,6 +96,9 @@ POLYGON_GAP_MM = 15.0
 PER_LINE = 4
 # A caption runs no wider than its drawing or than this (mm), whichever is wider: an upright A4 holds it.
 CAPTION_WIDTH_MM = 160.0
+# The captions' lettering where the usual does not fit a small sheet: the next size down of GOST 2.304 and
+# ISO 3098 (the usual is plans.CAPTION_SIZE, 5 mm).
+SMALL_CAPTION_SIZE = 3.5
 # A broken caption line's pieces are evened out in steps of this width (mm).
 _BALANCING_STEP_MM = 2.0
 # Size of the letters of points and of the names of forces (cap height, mm).
@@ -138,7 +141,8 @@ class ForceSheet:
     it and ``efficiency`` η (NaN where friction turns the power flow round).
     ``lever_scale`` is μV of the lever when it is drawn smaller than the
     velocity plan (a similar figure at any scale gives the same balancing
-    load), as a small sheet needs.
+    load), as a small sheet needs; ``caption_size`` the height of the
+    captions' letters (mm), smaller on a small sheet.
     """
 
     mechanism: Mechanism
@@ -157,6 +161,7 @@ class ForceSheet:
     without_friction: float | None = None
     efficiency: float | None = None
     lever_scale: float | None = None
+    caption_size: float = CAPTION_SIZE
 
     @property
     def lever_scale_line(self) -> str:
@@ -189,43 +194,42 @@ def arrange(sheet: ForceSheet) -> Arrangement:
         rows.append([_lever(sheet, sheet.lever)])
     layers: list[Layer] = []
     fields: dict[str, tuple[float, float, float, float]] = {}
+    size = sheet.caption_size
     top = 0.0
     for row in rows:
         extents = [bounds_of(item for layer in panel.layers for item in layer.items) for panel in row]
         height = max(y1 - y0 for _, y0, _, y1 in extents)
-        captions = [_fitted_caption(panel.caption, max(x1 - x0, CAPTION_WIDTH_MM)) for panel, (x0, _, x1, _)
-                    in zip(row, extents, strict=True)]
+        captions = [_fitted_caption(panel.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
+                    for panel, (x0, _, x1, _) in zip(row, extents, strict=True)]
         cursor = 0.0
         for panel, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
-            width = max(x1 - x0, *(_span(line, weight) for line, weight in caption))
+            width = max(x1 - x0, *(_span(line, weight, size) for line, weight in caption))
             field = (cursor, top - height, cursor + width, top)
             fields[panel.name] = field
             layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0,
                                        top - height / 2 - (y0 + y1) / 2))
             middle = cursor + width / 2
             layers.append(Layer(f"{panel.name}-caption", tuple(
-                Text((middle, top - height - CAPTION_GAP_MM - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE,
-                     "middle", weight=weight)
+                Text((middle, top - height - CAPTION_GAP_MM - k * CAPTION_LINE * size), line, size, "middle",
+                     weight=weight)
                 for k, (line, weight) in enumerate(caption))))
             cursor += width + GAP_MM
         lines = max(len(caption) for caption in captions)
-        top -= height + CAPTION_GAP_MM + lines * CAPTION_LINE * CAPTION_SIZE + GAP_MM
+        top -= height + CAPTION_GAP_MM + lines * CAPTION_LINE * size + GAP_MM
     left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
     text = sheet.text
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                         text["force_scale"].format(value=format_scale(sheet.forces.scale)),
                         sheet.lever_scale_line))
-    lines = (scales, *_friction_summary(sheet))
-    top_line = upper + 8.0 + (len(lines) - 1) * CAPTION_LINE * CAPTION_SIZE
+    top_line = upper + 8.0
     layers.append(Layer("sheet-title", (
         Text((left, top_line + 1.6 * TITLE_SIZE), sheet.title, TITLE_SIZE, "start", weight="bold"),
-        *(Text((left, top_line - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "start")
-          for k, line in enumerate(lines)))))
+        Text((left, top_line), scales, size, "start"))))
     return Arrangement(layers, fields)
 
 
 def _friction_summary(sheet: ForceSheet) -> list[str]:
-    """The line under the scales of the sheet with friction: the balancing load with and without it, η."""
+    """The line of the sheet with friction under the driving link: the balancing load with and without it, η."""
     if sheet.without_friction is None:
         return []
     text = sheet.text
@@ -294,6 +298,8 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
     caption += circle_caption
     if is_driver:
         caption.append(_balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
+        # Under the load it balances, so that a sheet set part by part keeps it.
+        caption += _friction_summary(sheet)
     caption += _wrapped([f"{found.name} = {_number(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / sheet.forces.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
@@ -873,36 +879,38 @@ def _wrapped(items: Sequence[str]) -> list[str]:
 _CAPTION_BREAK = re.compile(r"(?<=,)\s+|\s+(?=[+−] )|\s+(?=\()")
 
 
-def _fitted_caption(caption: Sequence[str], width: float) -> list[tuple[str, str]]:
+def _fitted_caption(caption: Sequence[str], width: float, size: float = CAPTION_SIZE) -> list[tuple[str, str]]:
     """A panel's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm."""
     return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(caption)
-            for piece in _fitted(line, width, "bold" if k == 0 else "normal")]
+            for piece in _fitted(line, width, "bold" if k == 0 else "normal", size)]
 
 
-def _fitted(line: str, width: float, weight: str = "normal") -> list[str]:
+def _fitted(line: str, width: float, weight: str = "normal", size: float = CAPTION_SIZE) -> list[str]:
     """``line`` broken after a comma, before a sign or a bracket wherever it would run wider than ``width`` mm;
     a piece still too wide is broken between its words (never inside ``name = value unit``), evenly."""
-    pieces = _broken(line, _CAPTION_BREAK, width, weight)
+    def span(text: str) -> float:
+        return _span(text, weight, size)
+
+    pieces = _broken(line, _CAPTION_BREAK, width, span)
     return [word_piece for piece in pieces
-            for word_piece in (_balanced(piece, _WORD_BREAK, width, weight) if _span(piece, weight) > width
-                               else [piece])]
+            for word_piece in (_balanced(piece, _WORD_BREAK, width, span) if span(piece) > width else [piece])]
 
 
 _WORD_BREAK = re.compile(r"(?<![\d=])\s+(?![=\d])")
 
 
-def _balanced(line: str, breaks: re.Pattern[str], width: float, weight: str) -> list[str]:
+def _balanced(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
     """``line`` cut at ``breaks`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
-    pieces = _broken(line, breaks, width, weight)
-    narrowest = max(_span(line, weight) / len(pieces), *(_span(piece, weight) for piece in pieces[1:-1]), 0.0)
+    pieces = _broken(line, breaks, width, span)
+    narrowest = max(span(line) / len(pieces), *(span(piece) for piece in pieces[1:-1]), 0.0)
     for narrower in np.arange(narrowest, width, _BALANCING_STEP_MM):
-        even = _broken(line, breaks, float(narrower), weight)
+        even = _broken(line, breaks, float(narrower), span)
         if len(even) == len(pieces):
             return even
     return pieces
 
 
-def _broken(line: str, breaks: re.Pattern[str], width: float, weight: str) -> list[str]:
+def _broken(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
     """``line`` cut greedily at ``breaks``: each piece as long as keeps within ``width`` mm, if it can."""
     cuts = list(breaks.finditer(line))
     starts = [0, *(cut.end() for cut in cuts)]
@@ -911,7 +919,7 @@ def _broken(line: str, breaks: re.Pattern[str], width: float, weight: str) -> li
     current = line[starts[0]:ends[0]]
     for k in range(1, len(starts)):
         joined = current + line[ends[k - 1]:starts[k]] + line[starts[k]:ends[k]]
-        if _span(joined, weight) > width:
+        if span(joined) > width:
             pieces.append(current)
             current = line[starts[k]:ends[k]]
         else:
@@ -920,8 +928,8 @@ def _broken(line: str, breaks: re.Pattern[str], width: float, weight: str) -> li
     return pieces
 
 
-def _span(line: str, weight: str) -> float:
-    return _width(Text((0.0, 0.0), line, CAPTION_SIZE, weight=weight))
+def _span(line: str, weight: str = "normal", size: float = CAPTION_SIZE) -> float:
+    return _width(Text((0.0, 0.0), line, size, weight=weight))
 
 
 def _number(value: float, digits: int = 4) -> str:

@@ -238,25 +238,36 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
 
 
 def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
-    """The force sheet (groups cut free, force polygons, Zhukovsky's lever) of each plan position that has one.
+    """The force sheet (groups cut free, force polygons, Zhukovsky's lever) of each plan position that has one,
+    each followed by the force sheet with friction where the scene has friction and the reactions settle.
 
-    On a ``sheet`` (the scene's by default) that holds a group cut free or
-    the lever at the mechanism's μl and the plan's μV on no empty sheet,
-    that drawing is drawn at the next larger standard scale, and so on
-    until it fits: its caption says the scale it is drawn at.
+    Where a drawing of a force sheet fits no empty ``sheet`` (the scene's
+    format by default), the force sheet's captions are lettered a size
+    smaller; where that is not enough, a group cut free or the lever is
+    drawn at the next larger standard scale, and so on until it fits: its
+    caption says the scale it is drawn at.
     """
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
-    return [_force_panel(analysis, position, chosen) for position in analysis.plans if position.forces is not None]
+    panels = []
+    for position in analysis.plans:
+        if position.forces is None:
+            continue
+        panels.append(_force_panel(analysis, position, chosen))
+        if position.with_friction is not None and not position.with_friction.locked:
+            panels.append(_force_panel(analysis, position, chosen, with_friction=True))
+    return panels
 
 
-def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str) -> Panel:
+def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_friction: bool = False) -> Panel:
     words = labels(analysis.scene.locale)
     form = form_of(analysis.scene.locale)
-    drawn = force_sheet(analysis, position)
+    drawn = force_sheet(analysis, position, with_friction)
+    name, label = ("forces-friction", "sheet_forces_friction_position") if with_friction else \
+        ("forces", "sheet_forces_position")
     before: dict[str, tuple[float, float]] = {}
     for _ in range(_LARGER_SCALES_TRIED):
-        panel = split(force_layout.arrange(drawn), f"forces-{position.number}",
-                      words["sheet_forces_position"].format(number=position.number), _group_of_field)
+        panel = split(force_layout.arrange(drawn), f"{name}-{position.number}",
+                      words[label].format(number=position.number), _group_of_field)
         if sheet == "none":
             return panel
         unheld = {piece.name: (round(_width(piece)), round(_height(piece)))
@@ -264,14 +275,18 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str) -> Pane
                   if not holds(sheet, form, _width(piece), _height(piece))}
         bodies = any("-body-" in name for name in unheld)
         lever = any(name.endswith("-lever") for name in unheld)
-        # A drawing held up by its words, not by its size, is no smaller at a larger scale.
-        if not bodies and not lever or unheld == before:
+        if not unheld or unheld == before:
             break
         before = unheld
-        drawn = replace(
-            drawn,
-            length_scale=_larger(drawn.length_scale) if bodies else drawn.length_scale,
-            lever_scale=_larger(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
+        if drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:  # the next size of lettering first
+            drawn = replace(drawn, caption_size=force_layout.SMALL_CAPTION_SIZE)
+        elif bodies or lever:
+            drawn = replace(
+                drawn,
+                length_scale=_larger(drawn.length_scale) if bodies else drawn.length_scale,
+                lever_scale=_larger(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
+        else:
+            break
     # A drawing that still does not fit is named by the packing.
     return panel if drawn.length_scale == length_scale(analysis) else _drawn_at(panel, drawn.length_scale)
 
