@@ -19,6 +19,8 @@ from test_joint_friction import ratchet_with_friction, slider_crank
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.report import forces as force_report
+from graphplan.report.note import note_markdown
 from graphplan.report.results import results
 from graphplan.scene import FrictionSpec
 
@@ -78,3 +80,21 @@ def test_results_carry_the_lever_with_friction():
         assert friction["lever_balancing_moment"] == pytest.approx(position.lever_with_friction.balancing, rel=1e-10)
         assert friction["lever_balancing_moment"] == pytest.approx(friction["balancing_moment"], rel=1e-9)
         assert abs(friction["lever_difference_percent"]) < 1e-7
+
+
+def test_forces_md_gives_the_lever_with_friction_once_per_settled_position_and_the_note_once_too():
+    analysis = slotted_lever_with_friction()
+    written = force_report.markdown(analysis)
+    note = note_markdown(analysis)
+    for position in analysis.plans:
+        lever, polygons = position.lever_with_friction.balancing, position.with_friction.balancing
+        difference = (lever - polygons) / polygons * 100.0
+        line = next(line for line in written.splitlines()
+                    if line.startswith("Zhukovsky's lever with the pairs' friction loads")
+                    and f"Mb = {force_report.number(lever, 6)} N·m" in line)
+        assert float(line.split(", ")[-1].split(" %")[0].replace("−", "-")) == pytest.approx(difference, abs=1e-3)
+        assert abs(difference) < 1e-6
+    assert written.count("Zhukovsky's lever with the pairs' friction loads") == len(analysis.plans)
+    # The note works the loads out and gives the lever in its own words, not twice.
+    assert "Zhukovsky's lever with the pairs' friction loads" not in note
+    assert note.count("Zhukovsky's lever with these loads") == len(analysis.plans)

@@ -48,14 +48,11 @@ from ..mechanism import Mechanism
 from ..motion import Motion
 from ..plans import Plan
 from ..scales import format_scale, standard_scale
-from ..statics import delivers_power
+from ..wording import balancing_symbol, friction_summary
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
 from .linkage import outline_points
 from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
-from .primitives import text_span as _width
-from .primitives import to_complex as _c
-from .primitives import to_xy as _xy
 from .primitives import (
     MAIN,
     Arrow,
@@ -72,6 +69,9 @@ from .primitives import (
     pin,
     slider_block,
 )
+from .primitives import text_span as _width
+from .primitives import to_complex as _c
+from .primitives import to_xy as _xy
 
 # The longest force arrow on a group cut free and on the lever (mm): the panel's force scale is the
 # standard one that draws the largest force about a quarter of the drawing's size, within these bounds.
@@ -232,13 +232,10 @@ def _friction_summary(sheet: ForceSheet) -> list[str]:
     """The line of the sheet with friction under the driving link: the balancing load with and without it, η."""
     if sheet.without_friction is None:
         return []
-    text = sheet.text
-    name, unit = ("Mb", text["newton_metre"]) if sheet.mechanism.driver.kind == "crank" else ("Fb", text["newton"])
     eta = "—" if sheet.efficiency is None or not math.isfinite(sheet.efficiency) else _number(sheet.efficiency)
-    ratio = f"{name}0/{name}" if delivers_power(sheet.mechanism, sheet.without_friction) else f"{name}/{name}0"
-    return [text["forces_with_friction"].format(
-        name=name, value=_number(sheet.forces.balancing), unit=unit, iterations=sheet.forces.iterations,
-        ideal=_number(sheet.without_friction), ratio=ratio, efficiency=eta)]
+    return [friction_summary(sheet.mechanism, sheet.text, sheet.without_friction,
+                             written_load=_number(sheet.forces.balancing), written_ideal=_number(sheet.without_friction),
+                             iterations=sheet.forces.iterations, written_efficiency=eta)]
 
 
 # A group cut free.
@@ -864,10 +861,9 @@ def _arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> floa
 
 def _balancing_line(sheet: ForceSheet, value: float, how: str) -> str:
     text = sheet.text
-    if sheet.mechanism.driver.kind == "crank":
-        return text[how].format(what=text["balancing_moment"], name="Mb", value=_number(value),
-                                unit=text["newton_metre"])
-    return text[how].format(what=text["balancing_force"], name="Fb", value=_number(value), unit=text["newton"])
+    name, unit = balancing_symbol(sheet.mechanism, text)
+    what = text["balancing_moment" if name == "Mb" else "balancing_force"]
+    return text[how].format(what=what, name=name, value=_number(value), unit=unit)
 
 
 def _wrapped(items: Sequence[str]) -> list[str]:

@@ -20,10 +20,11 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..loads import motion_state
 from ..locale import strings
-from ..statics import balancing_by_power, delivers_power, efficiency
+from ..statics import balancing_by_power, efficiency
 
 # A rate this small against the plan's largest is the plan's rounding, not a value.
 _ROUNDING = 1e-12
@@ -147,10 +148,7 @@ def cycle_rows(analysis: Analysis) -> list[tuple[int, float, float | None, float
 
 def balancing_symbol(analysis: Analysis) -> tuple[str, str]:
     """The balancing load's symbol and its unit in the locale: (Mb, N·m) for a crank, (Fb, N) for a slider."""
-    text = strings(analysis.scene.locale)
-    if analysis.mechanism.driver.kind == "crank":
-        return "Mb", text["newton_metre"]
-    return "Fb", text["newton"]
+    return wording.balancing_symbol(analysis.mechanism, strings(analysis.scene.locale))
 
 
 # Tables shared with the explanatory note: each returns Markdown lines in the scene's language.
@@ -209,14 +207,24 @@ def balancing_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> 
 def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
     text = strings(analysis.scene.locale)
     rubbing = plan.with_friction
-    name, unit = balancing_symbol(analysis)
     if rubbing.locked:
         return [text["forces_locked"].format(iterations=rubbing.iterations)]
     eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing)
-    ratio = f"{name}0/{name}" if delivers_power(analysis.mechanism, plan.forces.balancing) else f"{name}/{name}0"
-    return [text["forces_with_friction"].format(
-        name=name, value=number(rubbing.balancing, 6, mark), unit=unit, iterations=rubbing.iterations,
-        ideal=number(plan.forces.balancing, 6, mark), ratio=ratio, efficiency=number(float(eta), 4, mark))]
+    return [wording.friction_summary(
+        analysis.mechanism, text, plan.forces.balancing, written_load=number(rubbing.balancing, 6, mark),
+        written_ideal=number(plan.forces.balancing, 6, mark), iterations=rubbing.iterations,
+        written_efficiency=number(float(eta), 4, mark))]
+
+
+def friction_lever_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    """Zhukovsky's lever with the pairs' friction loads against the polygons with friction; none where they lock."""
+    lever = plan.lever_with_friction
+    if lever is None or plan.with_friction is None:
+        return []
+    name, unit = balancing_symbol(analysis)
+    return [strings(analysis.scene.locale)["forces_friction_lever"].format(
+        name=name, value=number(lever.balancing, 6, mark), unit=unit,
+        difference=percent(lever.balancing, plan.with_friction.balancing, mark))]
 
 
 def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:
@@ -269,6 +277,8 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
               "", f"### {text['forces_balancing'].format(name=name, unit=unit)}", "", *balancing_lines(analysis, plan)]
     if plan.with_friction is not None:
         lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan)]
+        lever = friction_lever_lines(analysis, plan)
+        lines += ["", *lever] if lever else []
     return lines + [""]
 
 
@@ -282,6 +292,7 @@ __all__ = [
     "cycle_rows",
     "external_load_lines",
     "external_loads",
+    "friction_lever_lines",
     "friction_lines",
     "initial_data",
     "initial_data_lines",

@@ -1,0 +1,32 @@
+"""Phrases that the report and the drawings both write, composed once so that they never disagree.
+
+The numbers come in written: the report writes more digits and its own
+decimal mark, a drawing four digits that the SVG writer localises.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from .mechanism import Mechanism
+from .statics import delivers_power
+
+
+def balancing_symbol(mechanism: Mechanism, text: Mapping[str, str]) -> tuple[str, str]:
+    """The balancing load's symbol and its unit in ``text``'s locale: (Mb, N·m) for a crank, (Fb, N) for a slider."""
+    if mechanism.driver.kind == "crank":
+        return "Mb", text["newton_metre"]
+    return "Fb", text["newton"]
+
+
+def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float, *, written_load: str,
+                     written_ideal: str, iterations: int, written_efficiency: str) -> str:
+    """The balancing load with friction after its repetitions, the one without (``ideal``), and η.
+
+    η is named by the ratio it is: Mb0/Mb where the driver delivers power,
+    Mb/Mb0 where the loads drive it back.
+    """
+    name, unit = balancing_symbol(mechanism, text)
+    ratio = f"{name}0/{name}" if delivers_power(mechanism, ideal) else f"{name}/{name}0"
+    return text["forces_with_friction"].format(name=name, value=written_load, unit=unit, iterations=iterations,
+                                               ideal=written_ideal, ratio=ratio, efficiency=written_efficiency)
