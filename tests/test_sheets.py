@@ -22,7 +22,7 @@ import pytest
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.errors import SceneError
-from graphplan.kinematic_diagrams import of_analysis
+from graphplan.kinematic_diagrams import FIELD_MM, kinematic_diagrams, of_analysis
 from graphplan.locale import strings
 from graphplan.render import diagrams as diagrams_layout
 from graphplan.render import drawings
@@ -482,9 +482,11 @@ def test_the_kinematic_diagrams_fit_the_sheet_each_whole_or_shortened_by_whole_i
     if sheet == "A4":
         assert axis < 240.0  # 270 mm wide with its pole and words: wider than any room of an A4
         # As long as fits: one more interval would not.
-        widest = max(part.extent[2] - part.extent[0] for part in panel.parts)
-        rooms = [room for portrait in (False, True) for room in page_geometry(sheet, form, portrait).rooms()]
-        assert any(widest + count > room[0] and widest <= room[0] for room in rooms)
+        longer = diagrams_layout.parts(kinematic_diagrams(analysis.mechanism, analysis.positions,
+                                                          axis_mm=axis + count, field_mm=FIELD_MM),
+                                       strings(analysis.scene.locale))
+        assert not all(holds(sheet, form, *(bounds(part)[2] - bounds(part)[0], bounds(part)[3] - bounds(part)[1]))
+                       for part in longer)
     else:
         assert axis == 240.0
         assert [layer.items for layer in panel.layers] == [layer.items for layer in usual]

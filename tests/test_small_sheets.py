@@ -15,16 +15,17 @@ import re
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from test_sheets import STANDARD, analyses_of, inside, layer, overlap, placed_bounds, texts, with_drawing
+from test_sheets import FIXTURES, STANDARD, analyses_of, inside, layer, overlap, placed_bounds, texts, with_drawing
 
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.errors import SceneError
+from graphplan.kinematic_diagrams import of_analysis
 from graphplan.render import forces as force_layout
 from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import force_sheet, plan_scale_text
 from graphplan.render.formats import FORMATS, page_geometry
-from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent
+from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent, text_width
 from graphplan.render.sheet import (
     _group_of_field,
     course_sheets,
@@ -34,9 +35,11 @@ from graphplan.render.sheet import (
     kinematics_sheet,
     split,
 )
-from graphplan.render.title_block import scale_text
+from graphplan.render.title_block import form_of, scale_text
+from graphplan.render.wrapping import fitted
 
 MECHANISM_SCALE = 0.005  # m/mm, the ratchet's scene gives 0.0025
+CAPTION = plan_layout.CAPTION_SIZE
 
 
 @pytest.fixture(scope="module")
@@ -249,18 +252,18 @@ SIGNED_TERMS = st.lists(st.tuples(st.sampled_from("+−"), st.from_regex(r"[A-Z]
 @given(SIGNED_TERMS, st.floats(60.0, 200.0))
 def test_a_long_equation_breaks_before_its_signs_each_line_within_the_width(terms, width):
     line = "ΣMp: " + " ".join(f"{sign} {name}" for sign, name in terms) + " = 0"
-    pieces = force_layout._fitted(line, width)
+    pieces = fitted(line, width, CAPTION)
     assert " ".join(pieces) == line
     assert all(piece == pieces[0] or piece[0] in "+−" for piece in pieces)
-    if all(force_layout._span(f"{sign} {name} = 0", "normal") <= width for sign, name in terms) and \
-            force_layout._span(f"ΣMp: {terms[0][0]} {terms[0][1]}", "normal") <= width:
-        assert all(force_layout._span(piece, "normal") <= width for piece in pieces)
+    if all(text_width(f"{sign} {name} = 0", CAPTION) <= width for sign, name in terms) and \
+            text_width(f"ΣMp: {terms[0][0]} {terms[0][1]}", CAPTION) <= width:
+        assert all(text_width(piece, CAPTION) <= width for piece in pieces)
 
 
 def test_a_value_is_never_parted_from_its_name_or_its_unit():
     line = "уравновешивающий момент Mb = 49.02 Н·м (по планам сил)"
     for width in range(40, 240, 5):
-        pieces = force_layout._fitted(line, float(width))
+        pieces = fitted(line, float(width), CAPTION)
         assert " ".join(pieces) == line
         assert any("Mb = 49.02 Н·м" in piece for piece in pieces), (width, pieces)
 
@@ -276,4 +279,24 @@ def test_every_caption_line_of_a_force_sheet_keeps_within_its_drawing_or_the_cap
             limit = max(x1 - x0, force_layout.CAPTION_WIDTH_MM)
             for text in caption.items:
                 assert isinstance(text, Text)
-                assert force_layout._span(text.text, text.weight) <= limit + 1e-9, text.text
+                assert text_width(text.text, text.size, text.weight) <= limit + 1e-9, text.text
+
+
+# The kinematic diagrams on A4.
+
+@pytest.mark.parametrize("name", FIXTURES)
+def test_the_kinematic_diagrams_of_every_fixture_fit_a4_with_their_long_lines_broken(name):
+    analysis = analyses_of(name)
+    if analysis.scene.positions.working is None or analysis.scene.driver.kind != "crank":
+        pytest.skip("no kinematic diagrams without a working stroke of a crank")
+    panel = diagrams_panel(analysis, "A4")
+    form = form_of(analysis.scene.locale)
+    for part in panel.parts:
+        x0, y0, x1, y1 = part.extent
+        assert any(page_geometry("A4", form, portrait).holds(x1 - x0, y1 - y0) for portrait in (False, True))
+    # Every word is still there: the broken lines read as the whole ones.
+    written = " ".join(text.text for text in texts(panel.layers))
+    record = of_analysis(analysis)
+    for value in (record.largest_v_difference, record.largest_a_difference):
+        assert f"{value:.2f} %" in written
+    assert re.search(r"μt = μφ/\|ω\| = [\d.]+ ", written)

@@ -38,6 +38,7 @@ from .primitives import (
     text_width,
 )
 from .svg import to_svg
+from .wrapping import fitted
 
 KINDS = ("displacement", "velocity", "acceleration")
 _LETTERS = {"displacement": "s", "velocity": "v", "acceleration": "a"}
@@ -60,6 +61,8 @@ AXIS_HEAD_MM = 3.0
 TICK_MM = 1.2
 # Room above a diagram for its caption (two lines), and between one diagram and the next (mm).
 CAPTION_ROOM_MM = 16.0
+# Distance between the lines of a broken line of words, in cap heights.
+LINE_SPACING = 1.5
 GAP_MM = 12.0
 
 
@@ -179,20 +182,25 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     if kind == "displacement" and record.stroke_end is not None:
         strokes = _strokes(record, words, low - 9.0)
 
+    # The words run no wider than the diagram, so that a small sheet's shorter axis makes it narrower.
+    width = length + AXIS_RUN_MM - left
     title = words[f"kd_{kind}_title"].format(symbol=symbol)
-    caption = (Text((0.0, high + AXIS_RUN_MM + CAPTION_ROOM_MM - 5.0), title, CAPTION_SIZE, "start",
-                    weight="bold"),
-               Text((8.0, high + AXIS_RUN_MM + CAPTION_ROOM_MM - 10.5),
-                    _scale_line(record, kind, words, unit), SCALE_SIZE, "start"))
+    scale_lines = fitted(_scale_line(record, kind, words, unit), width - 8.0, SCALE_SIZE)
+    lowest = high + AXIS_RUN_MM + CAPTION_ROOM_MM - 10.5
+    raised = (len(scale_lines) - 1) * LINE_SPACING * SCALE_SIZE
+    caption = (Text((0.0, lowest + raised + 5.5), title, CAPTION_SIZE, "start", weight="bold"),
+               *(Text((8.0, lowest + raised - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
+                 for k, line in enumerate(scale_lines)))
     bottom = min(low - 4.0, *(t.at[1] - 2.0 for t in placed.texts), *(
         y for item in strokes if isinstance(item, Polyline) for _, y in item.points))
     peak = record.v_peak if kind == "velocity" else record.a_peak
     notes: tuple[Text, ...] = ()
     if kind != "displacement":
         largest = record.largest_v_difference if kind == "velocity" else record.largest_a_difference
-        notes = (Text((0.0, bottom - 6.0), words["kd_difference"].format(
-            value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}", unit=unit), SCALE_SIZE, "start",
-            _CHORD_COLOUR),)
+        difference = words["kd_difference"].format(value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}",
+                                                   unit=unit)
+        notes = tuple(Text((0.0, bottom - 6.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start",
+                           _CHORD_COLOUR) for k, line in enumerate(fitted(difference, width, SCALE_SIZE)))
     return [Layer(f"{kind}-axes", tuple(axes)), Layer(f"{kind}-rays", tuple(rays + strokes)),
             Layer(f"{kind}-curves", tuple(drawn)), Layer(f"{kind}-leaders", placed.leaders),
             Layer(f"{kind}-labels", tuple(labels) + placed.texts + notes),
@@ -237,11 +245,13 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Text((14.0, y - 1.2), words["kd_analytic"], SCALE_SIZE, "start"),
         Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
-        Text((0.0, y - 8.0), words["kd_angle_scale"].format(
-            value=scale_text(scales.angle), degrees=f"{math.degrees(scales.angle):.4g}",
-            length=f"{scales.axis_mm:g}", time=scale_text(scales.time), omega=f"{abs(record.omega):.4g}"),
-            SCALE_SIZE, "start"),
     ]
+    angle_scale = words["kd_angle_scale"].format(
+        value=scale_text(scales.angle), degrees=f"{math.degrees(scales.angle):.4g}", length=f"{scales.axis_mm:g}",
+        time=scale_text(scales.time), omega=f"{abs(record.omega):.4g}")
+    width = scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole)
+    items += [Text((0.0, y - 8.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
+              for k, line in enumerate(fitted(angle_scale, max(width, second + 40.0), SCALE_SIZE))]
     return Layer("legend", tuple(items))
 
 

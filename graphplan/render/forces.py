@@ -33,7 +33,6 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
-import numpy as np
 from shapely.geometry import LineString, MultiPoint
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
@@ -68,10 +67,11 @@ from .primitives import (
     moved_layers,
     pin,
     slider_block,
+    text_width,
 )
-from .primitives import text_span as _width
 from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
+from .wrapping import fitted
 
 # The longest force arrow on a group cut free and on the lever (mm): the panel's force scale is the
 # standard one that draws the largest force about a quarter of the drawing's size, within these bounds.
@@ -99,8 +99,6 @@ CAPTION_WIDTH_MM = 160.0
 # The captions' lettering where the usual does not fit a small sheet: the next size down of GOST 2.304 and
 # ISO 3098 (the usual is plans.CAPTION_SIZE, 5 mm).
 SMALL_CAPTION_SIZE = 3.5
-# A broken caption line's pieces are evened out in steps of this width (mm).
-_BALANCING_STEP_MM = 2.0
 # Size of the letters of points and of the names of forces (cap height, mm).
 POINT_SIZE = 3.5
 NAME_SIZE = 3.2
@@ -203,7 +201,7 @@ def arrange(sheet: ForceSheet) -> Arrangement:
                     for panel, (x0, _, x1, _) in zip(row, extents, strict=True)]
         cursor = 0.0
         for panel, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
-            width = max(x1 - x0, *(_span(line, weight, size) for line, weight in caption))
+            width = max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
             field = (cursor, top - height, cursor + width, top)
             fields[panel.name] = field
             layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0,
@@ -871,61 +869,10 @@ def _wrapped(items: Sequence[str]) -> list[str]:
     return [",  ".join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
 
 
-# Where a caption line may break: after a comma, before the sign of a term, before a bracket.
-_CAPTION_BREAK = re.compile(r"(?<=,)\s+|\s+(?=[+−] )|\s+(?=\()")
-
-
 def _fitted_caption(caption: Sequence[str], width: float, size: float = CAPTION_SIZE) -> list[tuple[str, str]]:
     """A panel's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm."""
     return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(caption)
-            for piece in _fitted(line, width, "bold" if k == 0 else "normal", size)]
-
-
-def _fitted(line: str, width: float, weight: str = "normal", size: float = CAPTION_SIZE) -> list[str]:
-    """``line`` broken after a comma, before a sign or a bracket wherever it would run wider than ``width`` mm;
-    a piece still too wide is broken between its words (never inside ``name = value unit``), evenly."""
-    def span(text: str) -> float:
-        return _span(text, weight, size)
-
-    pieces = _broken(line, _CAPTION_BREAK, width, span)
-    return [word_piece for piece in pieces
-            for word_piece in (_balanced(piece, _WORD_BREAK, width, span) if span(piece) > width else [piece])]
-
-
-_WORD_BREAK = re.compile(r"(?<![\d=])\s+(?![=\d])")
-
-
-def _balanced(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
-    """``line`` cut at ``breaks`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
-    pieces = _broken(line, breaks, width, span)
-    narrowest = max(span(line) / len(pieces), *(span(piece) for piece in pieces[1:-1]), 0.0)
-    for narrower in np.arange(narrowest, width, _BALANCING_STEP_MM):
-        even = _broken(line, breaks, float(narrower), span)
-        if len(even) == len(pieces):
-            return even
-    return pieces
-
-
-def _broken(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
-    """``line`` cut greedily at ``breaks``: each piece as long as keeps within ``width`` mm, if it can."""
-    cuts = list(breaks.finditer(line))
-    starts = [0, *(cut.end() for cut in cuts)]
-    ends = [*(cut.start() for cut in cuts), len(line)]
-    pieces: list[str] = []
-    current = line[starts[0]:ends[0]]
-    for k in range(1, len(starts)):
-        joined = current + line[ends[k - 1]:starts[k]] + line[starts[k]:ends[k]]
-        if span(joined) > width:
-            pieces.append(current)
-            current = line[starts[k]:ends[k]]
-        else:
-            current = joined
-    pieces.append(current)
-    return pieces
-
-
-def _span(line: str, weight: str = "normal", size: float = CAPTION_SIZE) -> float:
-    return _width(Text((0.0, 0.0), line, size, weight=weight))
+            for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]
 
 
 def _number(value: float, digits: int = 4) -> str:

@@ -331,6 +331,16 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     else:
         raise SceneError("drawing.sheet", f"the kinematic diagrams fit on no {sheet} sheet; choose a bigger one "
                          'or sheet = "none"', sheet)
+    # The shortening is cautious where the words break narrower as the axis shortens: lengthen back while
+    # the diagrams still fit.
+    intervals = analysis.scene.positions.count
+    for grown in ((intervals, 0.0), (0.0, 1.0)):
+        while sheet != "none" and axis + grown[0] <= AXIS_MM and field + grown[1] <= FIELD_MM:
+            longer = drawn_at(axis + grown[0], field + grown[1])
+            if not all(holds(sheet, form, *_size(part)) for part in longer[1]):
+                break
+            axis, field = axis + grown[0], field + grown[1]
+            title, drawn = longer
     parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part)) for k, part in enumerate(drawn))
     return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title)
 

@@ -1,0 +1,63 @@
+"""Long lines of a drawing's text broken to a width on the paper, where a reader expects the break.
+
+First after a comma or semicolon, before the sign of a term, before a
+bracket; a piece still too wide is then broken between words, into pieces
+as even as can be, never inside ``name = value unit``.  Widths are the
+generous estimate of :func:`~graphplan.render.primitives.text_width`.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+import numpy as np
+
+from .primitives import text_width
+
+# Where a line may break first: after a comma or semicolon, before the sign of a term, before a bracket.
+PHRASE_BREAK = re.compile(r"(?<=[,;])\s+|\s+(?=[+−] )|\s+(?=\()")
+# Where a piece still too wide breaks: between words, but not round "=" nor between a number and its unit.
+WORD_BREAK = re.compile(r"(?<![\d=])\s+(?![=\d])")
+# The pieces of a line broken between words are evened out in steps of this width (mm).
+EVENING_STEP_MM = 2.0
+
+
+def fitted(line: str, width: float, size: float, weight: str = "normal") -> list[str]:
+    """``line`` at cap height ``size`` (mm) broken into pieces no wider than ``width`` mm where it can be;
+    joined with single spaces, the pieces give the line back."""
+    def span(text: str) -> float:
+        return text_width(text, size, weight)
+
+    pieces = _broken(line, PHRASE_BREAK, width, span)
+    return [word_piece for piece in pieces
+            for word_piece in (_evened(piece, WORD_BREAK, width, span) if span(piece) > width else [piece])]
+
+
+def _evened(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
+    """``line`` cut at ``breaks`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
+    pieces = _broken(line, breaks, width, span)
+    narrowest = max(span(line) / len(pieces), *(span(piece) for piece in pieces[1:-1]), 0.0)
+    for narrower in np.arange(narrowest, width, EVENING_STEP_MM):
+        even = _broken(line, breaks, float(narrower), span)
+        if len(even) == len(pieces):
+            return even
+    return pieces
+
+
+def _broken(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
+    """``line`` cut greedily at ``breaks``: each piece as long as keeps within ``width`` mm, if it can."""
+    cuts = list(breaks.finditer(line))
+    starts = [0, *(cut.end() for cut in cuts)]
+    ends = [*(cut.start() for cut in cuts), len(line)]
+    pieces: list[str] = []
+    current = line[starts[0]:ends[0]]
+    for k in range(1, len(starts)):
+        joined = current + line[ends[k - 1]:starts[k]] + line[starts[k]:ends[k]]
+        if span(joined) > width:
+            pieces.append(current)
+            current = line[starts[k]:ends[k]]
+        else:
+            current = joined
+    pieces.append(current)
+    return pieces
