@@ -23,7 +23,7 @@ from graphplan.errors import SceneError
 from graphplan.kinematic_diagrams import of_analysis
 from graphplan.render import forces as force_layout
 from graphplan.render import plans as plan_layout
-from graphplan.render.drawings import force_sheet, plan_scale_text
+from graphplan.render.drawings import force_sheet, plan_scale_text, with_length_scale
 from graphplan.render.formats import FORMATS, page_geometry
 from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent, text_width
 from graphplan.render.sheet import (
@@ -300,3 +300,23 @@ def test_the_kinematic_diagrams_of_every_fixture_fit_a4_with_their_long_lines_br
     for value in (record.largest_v_difference, record.largest_a_difference):
         assert f"{value:.2f} %" in written
     assert re.search(r"μt = μφ/\|ω\| = [\d.]+ ", written)
+
+
+def test_a_plan_too_big_for_a4_names_the_pole_distance_that_sizes_it_and_a_smaller_one_fits():
+    """The shaper's acceleration plan at pa = 100 mm is 197 mm square: no room of an A4 holds it."""
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+
+    def on_a4(**changes):
+        drawing = dataclasses.replace(scene.drawing, length_scale=None, sheet="A4", **changes)
+        analysis = with_length_scale(analyse(dataclasses.replace(scene, drawing=drawing)))
+        return course_sheets(analysis, diagrams=(diagrams_panel(analysis, "A4"),))
+
+    with pytest.raises(SceneError) as error:
+        on_a4()
+    message = str(error.value)
+    assert "plan-10-acceleration" in message and "a smaller drawing.acceleration_pole" in message
+    assert scene.drawing.acceleration_pole == 100.0
+    sheets = on_a4(acceleration_pole=80.0)
+    for sheet in sheets:
+        for panel, rect in placed_bounds(sheet).items():
+            assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"

@@ -693,13 +693,25 @@ def _centre(page: _Page) -> None:
             return
 
 
+# The scene's key that sizes a drawing, by the end of its panel's name.
+_SCALE_KEYS = {"-velocity": "velocity_pole", "-acceleration": "acceleration_pole", "-mechanism": "length_scale",
+               "positions": "length_scale"}
+
+
 def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: str = "") -> SceneError:
     x0, y0, x1, y1 = panel.extent
     what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
     rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
                           for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
     bigger = BIGGER.get(sheet)
-    advice = f"choose {bigger} or a bigger sheet, or " if bigger else "choose a larger μl (drawing.length_scale) or "
+    ways = [f"choose {bigger} or a bigger sheet"] if bigger else []
+    # A plan is as big as its pole distance makes it, a mechanism as μl makes it.
+    scale_key = next((key for suffix, key in _SCALE_KEYS.items() if panel.name.endswith(suffix)), None)
+    if scale_key is not None:
+        ways.append(f"a {'larger' if scale_key == 'length_scale' else 'smaller'} drawing.{scale_key}")
+    elif not bigger:
+        ways.append("a larger μl (drawing.length_scale)")
+    advice = ", or ".join(ways) + ", or " if ways else ""
     return SceneError("drawing.sheet",
                       f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
                       f"(an empty one has room for {' or '.join(rooms)} mm clear of its title block); "
