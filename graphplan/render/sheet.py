@@ -20,10 +20,12 @@ for an empty sheet is placed part by part (a plan sheet of one position as
 its mechanism, velocity plan and acceleration plan; a force sheet as its
 groups, each beside its polygon, and the lever), on sheets of its own whose
 title block names it; a part too big for an empty sheet is an error that
-names the sheet and a bigger one.  A force sheet's group cut free or lever
-that no empty sheet holds is first drawn at the next larger standard scale
-(its caption and the title block's scale box say which), since a small
-sheet is no reason to give up a drawing that would fit a step smaller.
+names the sheet, a bigger one and the scene's key that sizes the drawing.
+A force sheet with a drawing that no empty sheet holds is first lettered a
+size smaller, then its group cut free or lever is drawn at the next larger
+standard scale (its caption and the title block's scale box say which),
+since a small sheet is no reason to give up a drawing that would fit a
+step smaller.
 ``sheet = "none"`` gives each panel unframed on a page of its own, as the
 drawings were before sheets.
 """
@@ -273,8 +275,8 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
         unheld = {piece.name: (round(_width(piece)), round(_height(piece)))
                   for part in panel.parts for piece in (part.parts or (part,))
                   if not holds(sheet, form, _width(piece), _height(piece))}
-        bodies = any("-body-" in name for name in unheld)
-        lever = any(name.endswith("-lever") for name in unheld)
+        bodies = any("-body-" in piece for piece in unheld)
+        lever = any(piece.endswith("-lever") for piece in unheld)
         if not unheld or unheld == before:
             break
         before = unheld
