@@ -320,3 +320,12 @@ def test_a_plan_too_big_for_a4_names_the_pole_distance_that_sizes_it_and_a_small
     for sheet in sheets:
         for panel, rect in placed_bounds(sheet).items():
             assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"
+
+
+def test_a_chinese_caption_breaks_after_its_full_width_comma_and_before_its_bracket():
+    line = "μV = 0.01983 (m/s)/mm，力：μF = 25 N/mm，最短 10 mm；平衡力矩 Mb = 49.02 N·m（儒科夫斯基杠杆）"
+    pieces = fitted(line, 80.0, CAPTION)
+    assert "".join(pieces).replace(" ", "") == line.replace(" ", "")
+    assert all(text_width(piece, CAPTION) <= 80.0 for piece in pieces)
+    assert "（儒科夫斯基杠杆）" in pieces
+    assert any(piece.endswith("，") for piece in pieces)

@@ -15,8 +15,9 @@ import numpy as np
 
 from .primitives import text_width
 
-# Where a line may break first: after a comma or semicolon, before the sign of a term, before a bracket.
-PHRASE_BREAK = re.compile(r"(?<=[,;])\s+|\s+(?=[+−] )|\s+(?=\()")
+# Where a line may break first: after a comma or semicolon, before the sign of a term, before a bracket;
+# in Chinese, which puts no space there, after its full-width comma and semicolon and before its bracket.
+PHRASE_BREAK = re.compile(r"(?<=[,;])\s+|\s+(?=[+−] )|\s+(?=\()|(?<=[，；、])(?=\S)|(?<=\S)(?=（)")
 # Where a piece still too wide breaks: between words, but not round "=" nor between a number and its unit.
 WORD_BREAK = re.compile(r"(?<![\d=])\s+(?![=\d])")
 # The pieces of a line broken between words are evened out in steps of this width (mm).
@@ -25,7 +26,7 @@ EVENING_STEP_MM = 2.0
 
 def fitted(line: str, width: float, size: float, weight: str = "normal") -> list[str]:
     """``line`` at cap height ``size`` (mm) broken into pieces no wider than ``width`` mm where it can be;
-    joined with single spaces, the pieces give the line back."""
+    the pieces give the line back, joined with the spaces they were cut at (none in Chinese)."""
     def span(text: str) -> float:
         return text_width(text, size, weight)
 
