@@ -32,6 +32,7 @@ from graphplan.render.sheet import (
     diagrams_panel,
     force_panels,
     forces_sheet,
+    kinematics_panels,
     kinematics_sheet,
     split,
 )
@@ -329,3 +330,27 @@ def test_a_chinese_caption_breaks_after_its_full_width_comma_and_before_its_brac
     assert all(text_width(piece, CAPTION) <= 80.0 for piece in pieces)
     assert "（儒科夫斯基杠杆）" in pieces
     assert any(piece.endswith("，") for piece in pieces)
+
+
+def test_the_chosen_length_scale_fits_the_mechanism_of_every_plan_sheet_not_only_the_plan_of_positions():
+    """The slider-driven mechanism on A4: at μl = 0.002 m/mm its plan of positions fits an A4, but the mechanism
+    of its plan sheet (170 mm wide with its letters and senses) fits no room of one; μl = 0.0025 is chosen."""
+    scene = graphplan.load("fixtures/slider_driven.toml")
+    drawing = dataclasses.replace(scene.drawing, length_scale=None, sheet="A4")
+    analysis = with_length_scale(analyse(dataclasses.replace(scene, drawing=drawing)))
+    chosen = analysis.scene.drawing.length_scale
+    smaller = STANDARD[STANDARD.index(chosen) - 1]
+    positions, *plan_panels = kinematics_panels(with_drawing(analysis, length_scale=smaller))
+    mechanisms = [part for panel in plan_panels for part in panel.parts if part.name.endswith("-mechanism")]
+    assert len(mechanisms) == len(analysis.plans) > 0
+    form = form_of(analysis.scene.locale)
+
+    def fits(panel):
+        x0, y0, x1, y1 = panel.extent
+        return any(page_geometry("A4", form, portrait).holds(x1 - x0, y1 - y0) for portrait in (False, True))
+
+    assert fits(positions)
+    assert not all(fits(part) for part in mechanisms)
+    for sheet in course_sheets(analysis):
+        for panel, rect in placed_bounds(sheet).items():
+            assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"

@@ -29,7 +29,8 @@ _LARGER_SCALES_TRIED = 40
 
 def length_scale(analysis: Analysis) -> float:
     """μl from the scene; or the standard value that fits the paths of all points into the field, and the
-    plan of positions on an empty sheet of the scene's format (a larger standard value where 200 mm do not fit).
+    plan of positions and each plan sheet's mechanism on an empty sheet of the scene's format (a larger
+    standard value where 200 mm do not fit).
 
     Choosing lays the plan of positions out once or more: call :func:`with_length_scale` once before
     drawing several drawings of one analysis.
@@ -61,19 +62,38 @@ def positions_size(analysis: Analysis, scale: float) -> tuple[float, float]:
     return float(x1 - x0), float(y1 - y0)
 
 
-def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
-    """The smallest standard μl ≥ ``least`` at which the plan of positions fits on an empty ``sheet``.
+def mechanism_size(analysis: Analysis, position: PlanPosition, scale: float) -> tuple[float, float]:
+    """The width and height (mm) of the mechanism of a plan sheet, with its caption, drawn at μl = ``scale``:
+    what stands on a sheet of the set when the plan sheet is cut into its drawings."""
+    at_scale = dataclasses.replace(analysis, scene=dataclasses.replace(
+        analysis.scene, drawing=dataclasses.replace(analysis.scene.drawing, length_scale=scale)))
+    alone = dataclasses.replace(plan_sheet(at_scale, position.index, position.velocity, position.acceleration),
+                                drawings=("mechanism",))
+    x0, y0, x1, y1 = bounds([layer for layer in plans.layout(alone) if layer.name != "sheet-title"])
+    return float(x1 - x0), float(y1 - y0)
 
-    Raises :class:`SceneError` when none does: the words and marks of the
-    plan alone take more than the sheet.
+
+def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
+    """The smallest standard μl ≥ ``least`` at which the drawings at μl fit on an empty ``sheet`` each:
+    the plan of positions and the mechanism of every plan sheet.
+
+    (The force sheets' drawings are drawn at a larger scale where they do
+    not fit.)  Raises :class:`SceneError` when no μl does: the words and
+    marks of a drawing alone take more than the sheet.
     """
     form = form_of(analysis.scene.locale)
+
+    def fits(scale: float) -> bool:
+        return (holds(sheet, form, *positions_size(analysis, scale))
+                and all(holds(sheet, form, *mechanism_size(analysis, position, scale)) for position in analysis.plans))
+
     scale = standard_scale(least)
     for _ in range(_LARGER_SCALES_TRIED):
-        if holds(sheet, form, *positions_size(analysis, scale)):
+        if fits(scale):
             return scale
         scale = standard_scale(scale * (1.0 + 1e-9))
-    raise SceneError("drawing.sheet", f"the plan of positions fits no {sheet} sheet at any μl", sheet)
+    raise SceneError("drawing.sheet", f"the plan of positions and the plan sheets' mechanisms fit no {sheet} sheet "
+                     "at any μl", sheet)
 
 
 def _svg(analysis: Analysis, layers: list[Layer]) -> str:
