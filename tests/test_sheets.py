@@ -27,7 +27,7 @@ from graphplan.locale import strings
 from graphplan.render import diagrams as diagrams_layout
 from graphplan.render import drawings
 from graphplan.render import plans as plan_layout
-from graphplan.render.drawings import length_scale, plan_sheet, positions_size
+from graphplan.render.drawings import length_scale, mechanism_size, plan_sheet, positions_size
 from graphplan.render.formats import holds, page_geometry
 from graphplan.render.primitives import Arrow, Layer, Polyline, Text, bounds, bounds_of, text_extent
 from graphplan.render.sheet import (
@@ -354,8 +354,8 @@ def test_a_plan_too_big_for_a_small_sheet_names_the_bigger_sheet_that_holds_it(a
 @pytest.mark.parametrize(("sheet", "field"), [("A4", 200.0), ("A4", 400.0), ("A3", 400.0), ("A1", 400.0)])
 def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_scale_that_fits(
         monkeypatch, sheet, field):
-    """The first choice fits the paths into the field; where that plan overflows the sheet, the next standard
-    values are tried, and the one taken is the first that fits."""
+    """The first choice fits the paths into the field; where that plan (or a plan sheet's mechanism) overflows
+    the sheet, the next standard values are tried, and the one taken is the first at which both fit."""
     monkeypatch.setattr(drawings, "POSITIONS_FIELD_MM", field)
     scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
     scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet=sheet))
@@ -368,7 +368,8 @@ def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_s
     assert chosen >= first
     assert holds(sheet, form, *positions_size(analysis, chosen))
     smaller = max(value for value in STANDARD if value < chosen - 1e-15)
-    assert chosen == first or not holds(sheet, form, *positions_size(analysis, smaller))
+    assert chosen == first or not (holds(sheet, form, *positions_size(analysis, smaller)) and all(
+        holds(sheet, form, *mechanism_size(analysis, position, smaller)) for position in analysis.plans))
     if (sheet, field) == ("A4", 400.0):
         assert chosen > first  # 0.73 m at 0.0025 m/mm: 290 mm of paths, more than an A4 holds
     if sheet == "A1":

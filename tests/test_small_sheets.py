@@ -354,3 +354,23 @@ def test_the_chosen_length_scale_fits_the_mechanism_of_every_plan_sheet_not_only
     for sheet in course_sheets(analysis):
         for panel, rect in placed_bounds(sheet).items():
             assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"
+
+
+def test_a_plan_sheet_mechanism_too_big_at_the_scene_length_scale_names_the_length_scale_that_fits():
+    scene = graphplan.load("fixtures/slider_driven.toml")
+
+    def on_a4(length_scale):
+        drawing = dataclasses.replace(scene.drawing, length_scale=length_scale, sheet="A4")
+        return course_sheets(analyse(dataclasses.replace(scene, drawing=drawing)))
+
+    with pytest.raises(SceneError) as error:
+        on_a4(0.002)
+    message = str(error.value)
+    assert error.value.where == "drawing.sheet"
+    assert re.search(r"the drawing 'plan-\d+-mechanism' is \d+ × \d+ mm at μl = 0\.002 m/mm", message)
+    assert "choose A3 or a bigger sheet" in message
+    fitting = float(re.search(r"length_scale = ([0-9.]+)", message).group(1))
+    assert fitting == STANDARD[STANDARD.index(0.002) + 1]
+    for sheet in on_a4(fitting):
+        for panel, rect in placed_bounds(sheet).items():
+            assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"

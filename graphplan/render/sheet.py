@@ -434,7 +434,7 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     scene = analysis.scene
     panels = panels or course_panels(analysis, diagrams, chosen)
     if chosen != "none":
-        _check_positions_fit(analysis, chosen, panels.kinematics[0])
+        _check_length_scale_fits(analysis, chosen, panels.kinematics)
     details = details or Details()
     if not details.title:
         details = replace(details, title=scene.title)
@@ -452,13 +452,17 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
                      total))
 
 
-def _check_positions_fit(analysis: Analysis, sheet: str, positions: Panel) -> None:
-    """A clear error, with the μl and the format that would do, when the plan of ``positions`` fits no ``sheet``."""
-    scale = length_scale(analysis)
+def _check_length_scale_fits(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
+    """A clear error, with the μl and the format that would do, when a drawing at μl (the plan of positions,
+    the mechanism of a plan sheet) fits no empty ``sheet``."""
     form = form_of(analysis.scene.locale)
-    width, height = _width(positions), _height(positions)
-    if holds(sheet, form, width, height):
+    at_scale = [kinematics[0]] + [part for panel in kinematics[1:] for part in panel.parts
+                                  if part.name.endswith("-mechanism")]
+    too_big = next((panel for panel in at_scale if not holds(sheet, form, _width(panel), _height(panel))), None)
+    if too_big is None:
         return
+    scale = length_scale(analysis)
+    width, height = _width(too_big), _height(too_big)
     fitting = fitting_length_scale(analysis, sheet, scale)
     bigger, ways = BIGGER.get(sheet), []
     while bigger is not None and not holds(bigger, form, width, height):
@@ -466,8 +470,9 @@ def _check_positions_fit(analysis: Analysis, sheet: str, positions: Panel) -> No
     if bigger is not None:
         ways.append(f"choose {bigger} or a bigger sheet")
     ways.append('sheet = "none"')
+    what = "the plan of positions" if too_big is kinematics[0] else f"the drawing {too_big.name!r}"
     raise SceneError("drawing.sheet",
-                     f"the plan of positions is {width:.0f} × {height:.0f} mm at μl = {format_scale(scale)} m/mm and "
+                     f"{what} is {width:.0f} × {height:.0f} mm at μl = {format_scale(scale)} m/mm and "
                      f"fits on no {sheet} sheet; give drawing.length_scale = {format_scale(fitting)} (or more), "
                      f"or {', or '.join(ways)}", sheet)
 
