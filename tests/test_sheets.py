@@ -28,7 +28,7 @@ from graphplan.render import diagrams as diagrams_layout
 from graphplan.render import drawings
 from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import length_scale, mechanism_size, plan_sheet, positions_size
-from graphplan.render.formats import holds, page_geometry
+from graphplan.render.formats import holds
 from graphplan.render.primitives import Arrow, Layer, Polyline, Text, bounds, bounds_of, text_extent
 from graphplan.render.sheet import (
     Details,
