@@ -505,6 +505,11 @@ class MachineMotion:
     notes: tuple[str, ...]
     _dense: Callable[[np.ndarray], np.ndarray] = field(repr=False)
 
+    @property
+    def stiff(self) -> bool:
+        """Whether stability, not accuracy, would hold an explicit method's step (:func:`choose_method`)."""
+        return is_stiff(self.stiffness)
+
     def state_at(self, times: ArrayLike) -> np.ndarray:
         """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
         return self._dense(np.asarray(times, dtype=float))
@@ -988,6 +993,11 @@ def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration:
     return max(reached, 1e-3)
 
 
+def is_stiff(stiffness: float) -> bool:
+    """Whether a stiffness number (:func:`choose_method`) calls for an implicit method."""
+    return stiffness > STIFFNESS_THRESHOLD
+
+
 def choose_method(equations: _Equations, omega_run: float, rtol: float, atol: float) -> tuple[str, str, float]:
     """The solver for these equations, the reason in words, and the stiffness number.
 
@@ -1030,7 +1040,7 @@ def choose_method(equations: _Equations, omega_run: float, rtol: float, atol: fl
     scale = (f"largest decay rate |∂f/∂ω| = {decay:.3g} 1/s (time constant {1 / decay:.3g} s) × RK45's step "
              f"for accuracy {step:.3g} s = {stiffness:.3g}; cycle {period:.3g} s") if decay > 0 else \
             f"no decaying mode (|∂f/∂ω| = 0); RK45's step for accuracy {step:.3g} s, cycle {period:.3g} s"
-    if stiffness > STIFFNESS_THRESHOLD:
+    if is_stiff(stiffness):
         return "LSODA", (f"auto: stiff, stability would hold the explicit step ({scale} > {STIFFNESS_THRESHOLD}): "
                          "LSODA"), stiffness
     method = "DOP853" if rtol < 1e-8 else "RK45"

@@ -96,3 +96,18 @@ def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_pat
     assert "stiff" not in text and "auto:" not in text   # the integrator's reason is in Russian too
     plain, _ = run(tmp_path / "plain", "")
     assert "Dynamics of the machine" not in plain
+
+
+@pytest.mark.parametrize(("stall_torque", "method", "stiff"), [(2000.0, "RK45", False), (2.0e6, "LSODA", True)])
+def test_the_note_gives_the_run_s_own_reason_for_its_integrator(tmp_path, stall_torque, method, stiff):
+    """A gentle linear motor and one a thousand times steeper: the note says stiff exactly when the run took
+    LSODA for stiffness, with the run's stiffness number."""
+    note, results = run(tmp_path, DYNAMICS.replace("stall_torque = 2000.0", f"stall_torque = {stall_torque}"))
+    motion = results["dynamics"]["motion"]
+    assert motion["method"] == method
+    assert motion["method_reason"].startswith("auto: stiff" if stiff else "auto: not stiff")
+    run_number = float(re.search(r"= ([\d.e+−-]+); cycle", motion["method_reason"]).group(1))
+    said = re.search(rf"by the method {method}: the stiffness number .*? is {NUMBER} ([>≤]) 3, ", note)
+    assert value(said.group(1)) == pytest.approx(run_number, rel=5e-3)
+    assert said.group(2) == (">" if stiff else "≤")
+    assert ("an implicit method is taken" in note) == stiff

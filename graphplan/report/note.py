@@ -962,8 +962,7 @@ class _Note:
         number = self.n(dynamics.motion.stiffness, 3)
         if dynamics.spec.motion.method != "auto":
             return self.t("note_dyn_reason_asked", number=number)
-        stiff = dynamics.motion.stiffness > STIFFNESS_THRESHOLD
-        return self.t("note_dyn_reason_stiff" if stiff else "note_dyn_reason_not_stiff", number=number,
+        return self.t("note_dyn_reason_stiff" if dynamics.motion.stiff else "note_dyn_reason_not_stiff", number=number,
                       threshold=self.n(STIFFNESS_THRESHOLD))
 
     def motion(self, dynamics, flywheel) -> None:
