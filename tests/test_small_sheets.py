@@ -241,7 +241,8 @@ def test_a_drawing_too_big_for_any_a4_names_the_room_there_is():
         for width, height in page_geometry("A4", "eskd", portrait).rooms():
             if width > 0:
                 assert f"{width:.0f} × {height:.0f}" in message
-    assert "choose A3" in message
+    # A3 lies only across, its room 374 × 221 mm: the format to name is A2.
+    assert "choose A2 or a bigger sheet" in message
 
 
 # Captions broken to the sheet.
@@ -303,24 +304,63 @@ def test_the_kinematic_diagrams_of_every_fixture_fit_a4_with_their_long_lines_br
     assert re.search(r"μt = μφ/\|ω\| = [\d.]+ ", written)
 
 
-def test_a_plan_too_big_for_a4_names_the_pole_distance_that_sizes_it_and_a_smaller_one_fits():
-    """The shaper's acceleration plan at pa = 100 mm is 197 mm square: no room of an A4 holds it."""
-    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+def on_a4(name, **changes):
+    """The fixture's course sheets on A4 at its automatic μl, with its drawing's keys changed."""
+    scene = graphplan.load(f"fixtures/{name}.toml")
+    drawing = dataclasses.replace(scene.drawing, length_scale=None, sheet="A4", **changes)
+    analysis = with_length_scale(analyse(dataclasses.replace(scene, drawing=drawing)))
+    return course_sheets(analysis, diagrams=(diagrams_panel(analysis, "A4"),))
 
-    def on_a4(**changes):
-        drawing = dataclasses.replace(scene.drawing, length_scale=None, sheet="A4", **changes)
-        analysis = with_length_scale(analyse(dataclasses.replace(scene, drawing=drawing)))
-        return course_sheets(analysis, diagrams=(diagrams_panel(analysis, "A4"),))
 
+def refusal_on_a4(name, **changes):
     with pytest.raises(SceneError) as error:
-        on_a4()
-    message = str(error.value)
-    assert "plan-10-acceleration" in message and "a smaller drawing.acceleration_pole" in message
-    assert scene.drawing.acceleration_pole == 100.0
-    sheets = on_a4(acceleration_pole=80.0)
+        on_a4(name, **changes)
+    assert error.value.where == "drawing.sheet"
+    return str(error.value)
+
+
+def check_inside_frames(sheets):
     for sheet in sheets:
         for panel, rect in placed_bounds(sheet).items():
             assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"
+
+
+def named_pole(message, kind):
+    return int(re.search(rf"drawing\.{kind}_pole = (\d+) \(or less\)", message).group(1))
+
+
+def test_a_plan_too_big_for_a4_names_the_largest_pole_distance_that_fits():
+    """The shaper's acceleration plan at pa = 100 mm is 197 mm square: no room of an A4 holds it."""
+    message = refusal_on_a4("shaper_six_bar")
+    assert "'plan-10-acceleration' (197 × 196 mm) at drawing.acceleration_pole = 100 mm fits on no A4" in message
+    assert "velocity_pole" not in message and "choose A3 or a bigger sheet" in message
+    fitting = named_pole(message, "acceleration")
+    assert 50 < fitting < 100
+    check_inside_frames(on_a4("shaper_six_bar", acceleration_pole=float(fitting)))
+    one_more = refusal_on_a4("shaper_six_bar", acceleration_pole=fitting + 1.0)
+    assert named_pole(one_more, "acceleration") == fitting
+
+
+def test_plans_too_big_for_a4_are_named_together_with_a_pole_distance_for_each_kind():
+    """The tangent mechanism's velocity and acceleration plans of position 10 both overflow A4 at the scene's
+    pole distances; one error names both, and the two values it gives make the whole set fit."""
+    message = refusal_on_a4("tangent_mechanism_prp")
+    assert "'plan-10-velocity'" in message and "'plan-10-acceleration'" in message
+    assert "drawing.velocity_pole = 100 mm, drawing.acceleration_pole = 100 mm fit on no A4" in message
+    velocity, acceleration = named_pole(message, "velocity"), named_pole(message, "acceleration")
+    check_inside_frames(on_a4("tangent_mechanism_prp", velocity_pole=float(velocity),
+                              acceleration_pole=float(acceleration)))
+
+
+def test_a_plan_scale_given_in_the_scene_and_too_small_for_a4_is_answered_with_the_standard_scale_that_fits():
+    """μa = 0.036 (m/s²)/mm is the shaper's scale at pa = 100 mm; at the standard 0.04 the plan is still
+    about 177 mm square, at 0.05 about 142 mm, which an upright A4 holds."""
+    message = refusal_on_a4("shaper_six_bar", acceleration_scale=0.036)
+    assert "at drawing.acceleration_scale = 0.036 fits on no A4" in message
+    fitting = float(re.search(r"drawing\.acceleration_scale = ([\d.]+) \(or more\)", message).group(1))
+    assert fitting == 0.05
+    assert "acceleration_scale = 0.05 (or more)" in refusal_on_a4("shaper_six_bar", acceleration_scale=0.04)
+    check_inside_frames(on_a4("shaper_six_bar", acceleration_scale=fitting))
 
 
 def test_a_chinese_caption_breaks_after_its_full_width_comma_and_before_its_bracket():

@@ -67,8 +67,19 @@ def mechanism_size(analysis: Analysis, position: PlanPosition, scale: float) -> 
     what stands on a sheet of the set when the plan sheet is cut into its drawings."""
     at_scale = dataclasses.replace(analysis, scene=dataclasses.replace(
         analysis.scene, drawing=dataclasses.replace(analysis.scene.drawing, length_scale=scale)))
-    alone = dataclasses.replace(plan_sheet(at_scale, position.index, position.velocity, position.acceleration),
-                                drawings=("mechanism",))
+    return _drawing_size(plan_sheet(at_scale, position.index, position.velocity, position.acceleration), "mechanism")
+
+
+def plan_size(analysis: Analysis, position: PlanPosition, kind: str, scale: float) -> tuple[float, float]:
+    """The width and height (mm) of the velocity or acceleration plan (``kind``) of a plan sheet, with its
+    caption, drawn at the plan scale ``scale`` instead of its own."""
+    plans_at = {"velocity": position.velocity, "acceleration": position.acceleration}
+    plans_at[kind] = dataclasses.replace(plans_at[kind], scale=scale)
+    return _drawing_size(plan_sheet(analysis, position.index, **plans_at), kind)
+
+
+def _drawing_size(sheet: plans.PlanSheet, drawing: str) -> tuple[float, float]:
+    alone = dataclasses.replace(sheet, drawings=(drawing,))
     x0, y0, x1, y1 = bounds([layer for layer in plans.layout(alone) if layer.name != "sheet-title"])
     return float(x1 - x0), float(y1 - y0)
 

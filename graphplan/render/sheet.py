@@ -19,8 +19,10 @@ fit on the sheet goes on the next sheet of the same format; a panel too big
 for an empty sheet is placed part by part (a plan sheet of one position as
 its mechanism, velocity plan and acceleration plan; a force sheet as its
 groups, each beside its polygon, and the lever), on sheets of its own whose
-title block names it; a part too big for an empty sheet is an error that
-names the sheet, a bigger one and the scene's key that sizes the drawing.
+title block names it.  A drawing at a scale the scene sets that no empty
+sheet holds (the plan of positions or a mechanism at μl, a plan at its pole
+distance) is refused before anything is placed, with the room there is, the
+scene's key and the value of it that fits, and a bigger format that holds it.
 A force sheet with a drawing that no empty sheet holds is first lettered a
 size smaller, then its group cut free or lever is drawn at the next larger
 standard scale (its caption and the title block's scale box say which),
@@ -47,7 +49,9 @@ from .drawings import (
     fitting_length_scale,
     force_sheet,
     length_scale,
+    plan_scale_text,
     plan_sheet,
+    plan_size,
     positions_plan,
     with_length_scale,
 )
@@ -435,6 +439,7 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     panels = panels or course_panels(analysis, diagrams, chosen)
     if chosen != "none":
         _check_length_scale_fits(analysis, chosen, panels.kinematics)
+        _check_plans_fit(analysis, chosen, panels.kinematics)
     details = details or Details()
     if not details.title:
         details = replace(details, title=scene.title)
@@ -464,17 +469,83 @@ def _check_length_scale_fits(analysis: Analysis, sheet: str, kinematics: Sequenc
     scale = length_scale(analysis)
     width, height = _width(too_big), _height(too_big)
     fitting = fitting_length_scale(analysis, sheet, scale)
-    bigger, ways = BIGGER.get(sheet), []
-    while bigger is not None and not holds(bigger, form, width, height):
-        bigger = BIGGER.get(bigger)
+    bigger, ways = _bigger_holding(sheet, form, [too_big]), []
     if bigger is not None:
         ways.append(f"choose {bigger} or a bigger sheet")
     ways.append('sheet = "none"')
     what = "the plan of positions" if too_big is kinematics[0] else f"the drawing {too_big.name!r}"
     raise SceneError("drawing.sheet",
                      f"{what} is {width:.0f} × {height:.0f} mm at μl = {format_scale(scale)} m/mm and "
-                     f"fits on no {sheet} sheet; give drawing.length_scale = {format_scale(fitting)} (or more), "
-                     f"or {', or '.join(ways)}", sheet)
+                     f"fits on no {sheet} sheet ({_rooms(sheet, form, orientations(sheet))}); "
+                     f"give drawing.length_scale = {format_scale(fitting)} (or more), or {', or '.join(ways)}", sheet)
+
+
+def _check_plans_fit(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
+    """A clear error, with the pole distances (or plan scales) that would do, when velocity or acceleration
+    plans drawn as the scene sets them fit no empty ``sheet``: every such plan named at once, since one
+    pole distance serves all positions."""
+    form = form_of(analysis.scene.locale)
+    plan_panels = {panel.name: panel for panel in kinematics}
+    too_big = [(position, kind, part) for position in analysis.plans
+               for part in getattr(plan_panels.get(f"plan-{position.number}"), "parts", ())
+               for kind in [part.name.rsplit("-", 1)[-1]]
+               if kind in ("velocity", "acceleration") and not holds(sheet, form, _width(part), _height(part))]
+    if not too_big:
+        return
+    settings, ways = [], []
+    for kind in ("velocity", "acceleration"):
+        cases = [(position, part) for position, of_kind, part in too_big if of_kind == kind]
+        if cases:
+            setting, fitting = _plan_setting(analysis, sheet, kind, [position for position, _ in cases])
+            settings.append(setting)
+            if fitting:
+                ways.append(fitting)
+    ways = ["give " + " and ".join(ways)] if ways else []
+    parts = [part for _, _, part in too_big]
+    bigger = _bigger_holding(sheet, form, parts)
+    if bigger is not None:
+        ways.append(f"choose {bigger} or a bigger sheet")
+    ways.append('sheet = "none"')
+    named = ", ".join(f"{part.name!r} ({_width(part):.0f} × {_height(part):.0f} mm)" for part in parts)
+    raise SceneError("drawing.sheet",
+                     f"the drawing{'s' if len(parts) > 1 else ''} {named} at {', '.join(settings)} "
+                     f"fit{'s' if len(parts) == 1 else ''} on no {sheet} sheet ({_rooms(sheet, form, orientations(sheet))}); "
+                     f"{', or '.join(ways)}", sheet)
+
+
+def _plan_setting(analysis: Analysis, sheet: str, kind: str,
+                  positions: Sequence[PlanPosition]) -> tuple[str, str | None]:
+    """How the scene sizes its ``kind`` plans, and the value that makes the plans of ``positions`` fit
+    ``sheet`` (None when the scene leaves the scale to the program, or no value does)."""
+    form = form_of(analysis.scene.locale)
+    drawing = analysis.scene.drawing
+    pole, given_scale = getattr(drawing, f"{kind}_pole"), getattr(drawing, f"{kind}_scale")
+
+    def fits(position: PlanPosition, scale: float) -> bool:
+        return holds(sheet, form, *plan_size(analysis, position, kind, scale))
+
+    if given_scale is not None:
+        scale = standard_scale(given_scale)
+        for _ in range(_LARGER_SCALES_TRIED):
+            if all(fits(position, scale) for position in positions):
+                return (f"drawing.{kind}_scale = {format_scale(given_scale)}",
+                        f"drawing.{kind}_scale = {format_scale(scale)} (or more)")
+            scale = standard_scale(scale * (1.0 + 1e-9))
+        return f"drawing.{kind}_scale = {format_scale(given_scale)}", None
+    driven = [abs(getattr(position, kind).value(analysis.mechanism.driver.joint)) for position in positions]
+    if pole is None or not all(pa > 0 for pa in driven):
+        return f"{kind} scale {plan_scale_text(getattr(positions[0], kind).scale)}", None
+    # A plan grows with its pole distance: for each position the largest whole millimetre that fits, by halving.
+    too_long = math.ceil(pole)
+    for position, pa in zip(positions, driven, strict=True):
+        if not fits(position, pa / 1.0):
+            return f"drawing.{kind}_pole = {pole:g} mm", None
+        fitting = 1
+        while too_long - fitting > 1:
+            middle = (fitting + too_long) // 2
+            fitting, too_long = (middle, too_long) if fits(position, pa / middle) else (fitting, middle)
+        too_long = fitting + 1
+    return f"drawing.{kind}_pole = {pole:g} mm", f"drawing.{kind}_pole = {too_long - 1} (or less)"
 
 
 def _sheets(drawings: Sequence[Panel | Sequence[Layer]], sheet: str, locale: str, kind: str, title: str,
@@ -700,29 +771,31 @@ def _centre(page: _Page) -> None:
             return
 
 
-# The scene's key that sizes a drawing, by the end of its panel's name.
-_SCALE_KEYS = {"-velocity": "velocity_pole", "-acceleration": "acceleration_pole", "-mechanism": "length_scale",
-               "positions": "length_scale"}
-
-
 def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: str = "") -> SceneError:
+    """The error for a drawing no empty sheet holds (one whose scale the scene sets is refused before, by
+    :func:`_check_length_scale_fits` and :func:`_check_plans_fit`, with the value that fits)."""
     x0, y0, x1, y1 = panel.extent
     what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
-    rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
-                          for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
-    bigger = BIGGER.get(sheet)
-    ways = [f"choose {bigger} or a bigger sheet"] if bigger else []
-    # A plan is as big as its pole distance makes it, a mechanism as μl makes it.
-    scale_key = next((key for suffix, key in _SCALE_KEYS.items() if panel.name.endswith(suffix)), None)
-    if scale_key is not None:
-        ways.append(f"a {'larger' if scale_key == 'length_scale' else 'smaller'} drawing.{scale_key}")
-    elif not bigger:
-        ways.append("a larger μl (drawing.length_scale)")
-    advice = ", or ".join(ways) + ", or " if ways else ""
+    bigger = _bigger_holding(sheet, form, [panel])
+    ways = [f"choose {bigger} or a bigger sheet"] if bigger else ["a larger μl (drawing.length_scale)"]
     return SceneError("drawing.sheet",
                       f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
-                      f"(an empty one has room for {' or '.join(rooms)} mm clear of its title block); "
-                      f"{advice}sheet = \"none\"", sheet)
+                      f"({_rooms(sheet, form, turns)}); {', or '.join(ways)}, or sheet = \"none\"", sheet)
+
+
+def _rooms(sheet: str, form: str, turns: Sequence[bool]) -> str:
+    """The rooms an empty ``sheet`` has clear of its title block, in words."""
+    rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
+                          for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
+    return f"an empty one has room for {' or '.join(rooms)} mm clear of its title block"
+
+
+def _bigger_holding(sheet: str, form: str, panels: Sequence[Panel]) -> str | None:
+    """The smallest format bigger than ``sheet`` whose empty sheet holds each of ``panels``, if any."""
+    bigger = BIGGER.get(sheet)
+    while bigger is not None and not all(holds(bigger, form, _width(panel), _height(panel)) for panel in panels):
+        bigger = BIGGER.get(bigger)
+    return bigger
 
 
 # Drawing the sheets.
