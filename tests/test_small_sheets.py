@@ -332,7 +332,7 @@ def named_pole(message, kind):
 def test_a_plan_too_big_for_a4_names_the_largest_pole_distance_that_fits():
     """The shaper's acceleration plan at pa = 100 mm is 197 mm square: no room of an A4 holds it."""
     message = refusal_on_a4("shaper_six_bar")
-    assert "'plan-10-acceleration' (197 × 196 mm) at drawing.acceleration_pole = 100 mm fits on no A4" in message
+    assert "'plan-10-acceleration' (197 × 196 mm) at drawing.acceleration_pole = 100 mm: no A4 sheet holds it" in message
     assert "velocity_pole" not in message and "choose A3 or a bigger sheet" in message
     fitting = named_pole(message, "acceleration")
     assert 50 < fitting < 100
@@ -346,7 +346,7 @@ def test_plans_too_big_for_a4_are_named_together_with_a_pole_distance_for_each_k
     pole distances; one error names both, and the two values it gives make the whole set fit."""
     message = refusal_on_a4("tangent_mechanism_prp")
     assert "'plan-10-velocity'" in message and "'plan-10-acceleration'" in message
-    assert "drawing.velocity_pole = 100 mm, drawing.acceleration_pole = 100 mm fit on no A4" in message
+    assert "drawing.velocity_pole = 100 mm, drawing.acceleration_pole = 100 mm: no A4 sheet holds them" in message
     velocity, acceleration = named_pole(message, "velocity"), named_pole(message, "acceleration")
     check_inside_frames(on_a4("tangent_mechanism_prp", velocity_pole=float(velocity),
                               acceleration_pole=float(acceleration)))
@@ -356,7 +356,7 @@ def test_a_plan_scale_given_in_the_scene_and_too_small_for_a4_is_answered_with_t
     """μa = 0.036 (m/s²)/mm is the shaper's scale at pa = 100 mm; at the standard 0.04 the plan is still
     about 177 mm square, at 0.05 about 142 mm, which an upright A4 holds."""
     message = refusal_on_a4("shaper_six_bar", acceleration_scale=0.036)
-    assert "at drawing.acceleration_scale = 0.036 fits on no A4" in message
+    assert "at drawing.acceleration_scale = 0.036: no A4 sheet holds it" in message
     fitting = float(re.search(r"drawing\.acceleration_scale = ([\d.]+) \(or more\)", message).group(1))
     assert fitting == 0.05
     assert "acceleration_scale = 0.05 (or more)" in refusal_on_a4("shaper_six_bar", acceleration_scale=0.04)
@@ -414,3 +414,24 @@ def test_a_plan_sheet_mechanism_too_big_at_the_scene_length_scale_names_the_leng
     for sheet in on_a4(fitting):
         for panel, rect in placed_bounds(sheet).items():
             assert inside(rect, sheet.frame), f"sheet {sheet.number}: {panel} leaves the frame"
+
+
+def test_every_drawing_the_scene_s_scales_make_too_big_is_named_in_one_error_whose_values_all_fit():
+    """The quick-return on A4 at the scene's μl = 0.002 m/mm: its plan of positions and both plans of position
+    11 overflow; one error gives μl and both pole distances, and with all three the set fits."""
+    scene = graphplan.load("fixtures/quick_return_slotted_lever.toml")
+    assert scene.drawing.length_scale == 0.002
+
+    def on_a4(**changes):
+        drawing = dataclasses.replace(scene.drawing, sheet="A4", **changes)
+        return course_sheets(analyse(dataclasses.replace(scene, drawing=drawing)))
+
+    with pytest.raises(SceneError) as error:
+        on_a4()
+    message = str(error.value)
+    assert message.startswith("drawing.sheet: the plan of positions is ")
+    assert "'plan-11-velocity'" in message and "'plan-11-acceleration'" in message
+    assert message.count("no A4 sheet holds them") == 1
+    length = float(re.search(r"drawing\.length_scale = ([\d.]+) \(or more\)", message).group(1))
+    check_inside_frames(on_a4(length_scale=length, velocity_pole=float(named_pole(message, "velocity")),
+                              acceleration_pole=float(named_pole(message, "acceleration"))))

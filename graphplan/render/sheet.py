@@ -438,8 +438,7 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     scene = analysis.scene
     panels = panels or course_panels(analysis, diagrams, chosen)
     if chosen != "none":
-        _check_length_scale_fits(analysis, chosen, panels.kinematics)
-        _check_plans_fit(analysis, chosen, panels.kinematics)
+        _refuse_overflows(analysis, chosen, panels.kinematics)
     details = details or Details()
     if not details.title:
         details = replace(details, title=scene.title)
@@ -457,33 +456,54 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
                      total))
 
 
-def _check_length_scale_fits(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
-    """A clear error, with the μl and the format that would do, when a drawing at μl (the plan of positions,
-    the mechanism of a plan sheet) fits no empty ``sheet``."""
+@dataclass(frozen=True)
+class _Overflow:
+    """Drawings at a scale the scene sets that no empty sheet holds, and the settings that would fit them."""
+
+    what: str
+    fixes: tuple[str, ...]
+    panels: tuple[Panel, ...]
+
+
+def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
+    """One clear error naming every drawing at a scale the scene sets (μl, a pole distance) that fits no empty
+    ``sheet``, with the value of each key that fits and the format that would do, before anything is placed."""
+    overflows = [found for found in (_length_scale_overflow(analysis, sheet, kinematics),
+                                     _plans_overflow(analysis, sheet, kinematics)) if found is not None]
+    if not overflows:
+        return
+    form = form_of(analysis.scene.locale)
+    panels = [panel for found in overflows for panel in found.panels]
+    fixes = [fix for found in overflows for fix in found.fixes]
+    ways = ["give " + " and ".join(fixes)] if fixes else []
+    bigger = _bigger_holding(sheet, form, panels)
+    if bigger is not None:
+        ways.append(f"choose {bigger} or a bigger sheet")
+    ways.append('sheet = "none"')
+    raise SceneError("drawing.sheet",
+                     f"{'; '.join(found.what for found in overflows)}: no {sheet} sheet holds "
+                     f"{'it' if len(panels) == 1 else 'them'} ({_rooms(sheet, form, orientations(sheet))}); "
+                     f"{', or '.join(ways)}", sheet)
+
+
+def _length_scale_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> _Overflow | None:
+    """The first drawing at μl (the plan of positions, the mechanism of a plan sheet) no empty ``sheet`` holds."""
     form = form_of(analysis.scene.locale)
     at_scale = [kinematics[0]] + [part for panel in kinematics[1:] for part in panel.parts
                                   if part.name.endswith("-mechanism")]
     too_big = next((panel for panel in at_scale if not holds(sheet, form, _width(panel), _height(panel))), None)
     if too_big is None:
-        return
+        return None
     scale = length_scale(analysis)
-    width, height = _width(too_big), _height(too_big)
-    fitting = fitting_length_scale(analysis, sheet, scale)
-    bigger, ways = _bigger_holding(sheet, form, [too_big]), []
-    if bigger is not None:
-        ways.append(f"choose {bigger} or a bigger sheet")
-    ways.append('sheet = "none"')
     what = "the plan of positions" if too_big is kinematics[0] else f"the drawing {too_big.name!r}"
-    raise SceneError("drawing.sheet",
-                     f"{what} is {width:.0f} × {height:.0f} mm at μl = {format_scale(scale)} m/mm and "
-                     f"fits on no {sheet} sheet ({_rooms(sheet, form, orientations(sheet))}); "
-                     f"give drawing.length_scale = {format_scale(fitting)} (or more), or {', or '.join(ways)}", sheet)
+    return _Overflow(f"{what} is {_width(too_big):.0f} × {_height(too_big):.0f} mm at μl = {format_scale(scale)} m/mm",
+                     (f"drawing.length_scale = {format_scale(fitting_length_scale(analysis, sheet, scale))} (or more)",),
+                     (too_big,))
 
 
-def _check_plans_fit(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
-    """A clear error, with the pole distances (or plan scales) that would do, when velocity or acceleration
-    plans drawn as the scene sets them fit no empty ``sheet``: every such plan named at once, since one
-    pole distance serves all positions."""
+def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> _Overflow | None:
+    """The velocity and acceleration plans, drawn as the scene sets them, that no empty ``sheet`` holds: every
+    one, since one pole distance serves all positions."""
     form = form_of(analysis.scene.locale)
     plan_panels = {panel.name: panel for panel in kinematics}
     too_big = [(position, kind, part) for position in analysis.plans
@@ -491,26 +511,18 @@ def _check_plans_fit(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]
                for kind in [part.name.rsplit("-", 1)[-1]]
                if kind in ("velocity", "acceleration") and not holds(sheet, form, _width(part), _height(part))]
     if not too_big:
-        return
-    settings, ways = [], []
+        return None
+    settings, fixes = [], []
     for kind in ("velocity", "acceleration"):
-        cases = [(position, part) for position, of_kind, part in too_big if of_kind == kind]
-        if cases:
-            setting, fitting = _plan_setting(analysis, sheet, kind, [position for position, _ in cases])
+        positions = [position for position, of_kind, _ in too_big if of_kind == kind]
+        if positions:
+            setting, fitting = _plan_setting(analysis, sheet, kind, positions)
             settings.append(setting)
-            if fitting:
-                ways.append(fitting)
-    ways = ["give " + " and ".join(ways)] if ways else []
-    parts = [part for _, _, part in too_big]
-    bigger = _bigger_holding(sheet, form, parts)
-    if bigger is not None:
-        ways.append(f"choose {bigger} or a bigger sheet")
-    ways.append('sheet = "none"')
+            fixes += [fitting] if fitting else []
+    parts = tuple(part for _, _, part in too_big)
     named = ", ".join(f"{part.name!r} ({_width(part):.0f} × {_height(part):.0f} mm)" for part in parts)
-    raise SceneError("drawing.sheet",
-                     f"the drawing{'s' if len(parts) > 1 else ''} {named} at {', '.join(settings)} "
-                     f"fit{'s' if len(parts) == 1 else ''} on no {sheet} sheet ({_rooms(sheet, form, orientations(sheet))}); "
-                     f"{', or '.join(ways)}", sheet)
+    return _Overflow(f"the drawing{'s' if len(parts) > 1 else ''} {named} at {', '.join(settings)}", tuple(fixes),
+                     parts)
 
 
 def _plan_setting(analysis: Analysis, sheet: str, kind: str,
@@ -773,7 +785,7 @@ def _centre(page: _Page) -> None:
 
 def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: str = "") -> SceneError:
     """The error for a drawing no empty sheet holds (one whose scale the scene sets is refused before, by
-    :func:`_check_length_scale_fits` and :func:`_check_plans_fit`, with the value that fits)."""
+    :func:`_refuse_overflows`, with the value that fits)."""
     x0, y0, x1, y1 = panel.extent
     what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
     bigger = _bigger_holding(sheet, form, [panel])
