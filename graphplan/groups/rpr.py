@@ -130,18 +130,9 @@ class RPR(Group):
         block turns with the lever.
         """
         a_name, c_name = self.joints
-        block, lever = self.links
-        a_pos, c_pos, along, slide = self._slide(board)
+        block, _ = self.links
         a, c = board.images[a_name], board.images[c_name]
-        across_ca = 1j * (a_pos - c_pos)
-        value, angle = board.cross(Line(board.points[a], along, slide.text),
-                                   Line(board.points[c], across_ca, f"⊥{c_name}{a_name}"))
-        a4 = board.fix(self.coincident, value)
-        board.on_link(lever, c_pos, c)
-        board.on_link(lever, a_pos, a4)
-        board.on_link(block, a_pos, a)
-        board.turns_with[block] = lever
-        board.sliding[block] = board.points[a] - value
+        a4, angle, along, slide, across_ca = self._close(board, a, c)
         pin, point = f"{a_name}{block}", self.coincident
         board.step(Step(
             equation=f"v{point} = v{pin} + v{point}{pin} = v{c_name} + v{point}{c_name}",
@@ -161,21 +152,13 @@ class RPR(Group):
         """
         a_name, c_name = self.joints
         block, lever = self.links
-        a_pos, c_pos, along, slide = self._slide(board)
+        a_pos, c_pos = board.positions[a_name], board.positions[c_name]
         a, c = board.images[a_name], board.images[c_name]
         omega = velocities.rates[lever]
         v_rel = velocities.value(self.coincident) - velocities.value(a_name)
         k = board.mark(coriolis_letter(board, block), board.points[a] + coriolis(omega, v_rel))
         normal = board.mark(f"n{lever}", board.points[c] - omega**2 * (a_pos - c_pos))
-        across_ca = 1j * (a_pos - c_pos)
-        value, angle = board.cross(Line(board.points[k], along, slide.text),
-                                   Line(board.points[normal], across_ca, f"⊥{c_name}{a_name}"))
-        a4 = board.fix(self.coincident, value)
-        board.on_link(lever, c_pos, c)
-        board.on_link(lever, a_pos, a4)
-        board.on_link(block, a_pos, a)
-        board.turns_with[block] = lever
-        board.sliding[block] = board.points[k] - value
+        a4, angle, along, slide, across_ca = self._close(board, k, normal)
         pin, point = f"{a_name}{block}", self.coincident
         board.step(Step(
             equation=(f"a{point} = a{pin} + a{point}{pin}ᵏ + a{point}{pin}^r"
@@ -186,6 +169,26 @@ class RPR(Group):
             lines=(DrawnLine(k, along, slide),
                    DrawnLine(normal, across_ca, LineMeaning("perpendicular", (c_name, a_name)))),
             fixes=(k, normal, a4), crossing_deg=angle))
+
+    def _close(self, board: Builder, on_slide: str,
+               on_lever_line: str) -> tuple[str, float, complex, LineMeaning, complex]:
+        """The plan closed at a4: the line along the slide through ``on_slide`` crossed with the line square
+        to CA through ``on_lever_line``; a4 recorded on the lever, the block turning with it, and the block's
+        sliding (``on_slide`` less a4).  Returns a4, the crossing angle, the slide's direction and meaning,
+        and the direction square to CA."""
+        a_name, c_name = self.joints
+        block, lever = self.links
+        a_pos, c_pos, along, slide = self._slide(board)
+        across_ca = 1j * (a_pos - c_pos)
+        value, angle = board.cross(Line(board.points[on_slide], along, slide.text),
+                                   Line(board.points[on_lever_line], across_ca, f"⊥{c_name}{a_name}"))
+        a4 = board.fix(self.coincident, value)
+        board.on_link(lever, c_pos, board.images[c_name])
+        board.on_link(lever, a_pos, a4)
+        board.on_link(block, a_pos, board.images[a_name])
+        board.turns_with[block] = lever
+        board.sliding[block] = board.points[on_slide] - value
+        return a4, angle, along, slide, across_ca
 
     # The forces: the group cut free, as drawn.
 

@@ -160,21 +160,10 @@ class RRP(Group):
         g's images already on the plan; on a frame guide it is the pole.
         """
         a_name, b_name = self.joints
-        rod, slider = self.links
-        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
         _, along_guide, carrier = board.guide_line(self.guide)
         a = board.images[a_name]
         bg = guide_point(board, carrier, b_name)
-        across_ab = 1j * (b_pos - a_pos)
-        on_guide = guide_meaning(self.guide)
-        value, angle = board.cross(Line(board.points[a], across_ab, f"⊥{a_name}{b_name}"),
-                                   Line(board.points[bg], along_guide, on_guide.text))
-        b = board.fix(b_name, value)
-        board.on_link(rod, a_pos, a)
-        board.on_link(rod, b_pos, b)
-        board.on_link(slider, b_pos, b)
-        board.turns_with[slider] = carrier
-        board.sliding[slider] = value - board.points[bg]
+        b, angle, across_ab, on_guide = self._close(board, a, bg)
         g = f"{b_name}{carrier}"
         relative = () if bg == "p" else (LaidVector(bg, b, f"v{b_name}{g}"),)
         board.step(Step(
@@ -211,16 +200,7 @@ class RRP(Group):
             laid.append(LaidVector(bg, start, f"a{b_name}{g}ᵏ"))
             equation += f" + a{b_name}{g}ᵏ"
         equation += f" + a{b_name}{g}^r"
-        across_ab = 1j * (b_pos - a_pos)
-        on_guide = guide_meaning(self.guide)
-        value, angle = board.cross(Line(board.points[normal], across_ab, f"⊥{a_name}{b_name}"),
-                                   Line(board.points[start], along_guide, on_guide.text))
-        b = board.fix(b_name, value)
-        board.on_link(rod, a_pos, a)
-        board.on_link(rod, b_pos, b)
-        board.on_link(slider, b_pos, b)
-        board.turns_with[slider] = carrier
-        board.sliding[slider] = value - board.points[start]
+        b, angle, across_ab, on_guide = self._close(board, normal, start)
         laid.append(LaidVector(normal, b, f"a{b_name}{a_name}^τ"))
         if start != "p":  # from the pole it would be aB itself
             laid.append(LaidVector(start, b, f"a{b_name}{g}^r"))
@@ -230,6 +210,27 @@ class RRP(Group):
             lines=(DrawnLine(normal, across_ab, LineMeaning("perpendicular", (a_name, b_name))),
                    DrawnLine(start, along_guide, on_guide)),
             fixes=(normal, *((start,) if start != bg else ()), b), crossing_deg=angle))
+
+    def _close(self, board: Builder, on_rod: str, on_guide_line: str) -> tuple[str, float, complex, LineMeaning]:
+        """The plan closed at b: the line square to AB through ``on_rod`` crossed with the line along the
+        guide through ``on_guide_line``; b recorded on the rod and the slider, and the slider's sliding
+        (b less the guide line's point).  Returns b, the crossing angle, the direction square to AB and
+        what the guide's line means."""
+        a_name, b_name = self.joints
+        rod, slider = self.links
+        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
+        _, along_guide, carrier = board.guide_line(self.guide)
+        across_ab = 1j * (b_pos - a_pos)
+        on_guide = guide_meaning(self.guide)
+        value, angle = board.cross(Line(board.points[on_rod], across_ab, f"⊥{a_name}{b_name}"),
+                                   Line(board.points[on_guide_line], along_guide, on_guide.text))
+        b = board.fix(b_name, value)
+        board.on_link(rod, a_pos, board.images[a_name])
+        board.on_link(rod, b_pos, b)
+        board.on_link(slider, b_pos, b)
+        board.turns_with[slider] = carrier
+        board.sliding[slider] = value - board.points[on_guide_line]
+        return b, angle, across_ab, on_guide
 
     # The forces: the group cut free, as drawn.
 
