@@ -435,3 +435,8 @@ def test_every_drawing_the_scene_s_scales_make_too_big_is_named_in_one_error_who
     length = float(re.search(r"drawing\.length_scale = ([\d.]+) \(or more\)", message).group(1))
     check_inside_frames(on_a4(length_scale=length, velocity_pole=float(named_pole(message, "velocity")),
                               acceleration_pole=float(named_pole(message, "acceleration"))))
+
+
+def test_a_sign_is_never_left_alone_at_the_end_of_a_line():
+    """Found by hypothesis: '+ Am00·h0 = 0' is a hair wider than 60 mm, and was broken after its '+'."""
+    assert fitted("ΣMp: + A0·h0 + Am00·h0 = 0", 60.0, CAPTION) == ["ΣMp: + A0·h0", "+ Am00·h0 = 0"]

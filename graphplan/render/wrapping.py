@@ -2,7 +2,8 @@
 
 First after a comma or semicolon, before the sign of a term, before a
 bracket; a piece still too wide is then broken between words, into pieces
-as even as can be, never inside ``name = value unit``.  Widths are the
+as even as can be, never inside ``name = value unit`` nor after the sign
+of a term.  Widths are the
 generous estimate of :func:`~graphplan.render.primitives.text_width`.
 """
 
@@ -18,8 +19,9 @@ from .primitives import text_width
 # Where a line may break first: after a comma or semicolon, before the sign of a term, before a bracket;
 # in Chinese, which puts no space there, after its full-width comma and semicolon and before its bracket.
 PHRASE_BREAK = re.compile(r"(?<=[,;])\s+|\s+(?=[+−] )|\s+(?=\()|(?<=[，；、])(?=\S)|(?<=\S)(?=（)")
-# Where a piece still too wide breaks: between words, but not round "=" nor between a number and its unit.
-WORD_BREAK = re.compile(r"(?<![\d=])\s+(?![=\d])")
+# Where a piece still too wide breaks: between words, but not round "=", nor between a number and its unit,
+# nor between a sign and its term.
+WORD_BREAK = re.compile(r"(?<![\d=+−])\s+(?![=\d])")
 # The pieces of a line broken between words are evened out in steps of this width (mm).
 EVENING_STEP_MM = 2.0
 
