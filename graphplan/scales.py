@@ -28,6 +28,11 @@ def standard_scale(least: float) -> float:
     raise AssertionError("unreachable: 10^(exponent+1) ≥ least")
 
 
+def next_standard_scale(scale: float) -> float:
+    """The standard scale factor just above ``scale``: the drawing a step smaller."""
+    return standard_scale(scale * (1.0 + 1e-9))
+
+
 def fit_scale(extent: float, field_mm: float) -> float:
     """The standard scale at which ``extent`` (SI units) fits in ``field_mm`` millimetres."""
     return standard_scale(max(extent, 1e-300) / field_mm)

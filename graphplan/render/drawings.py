@@ -12,7 +12,7 @@ from ..analysis import Analysis, PlanPosition, instant
 from ..errors import SceneError
 from ..locale import strings
 from ..plans import Plan, acceleration_plan, velocity_plan
-from ..scales import fit_scale, format_scale, standard_scale
+from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
 from ..statics import efficiency
 from . import forces as force_layout
 from . import plans, positions
@@ -102,7 +102,7 @@ def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
     for _ in range(_LARGER_SCALES_TRIED):
         if fits(scale):
             return scale
-        scale = standard_scale(scale * (1.0 + 1e-9))
+        scale = next_standard_scale(scale)
     raise SceneError("drawing.sheet", f"the plan of positions and the plan sheets' mechanisms fit no {sheet} sheet "
                      "at any μl", sheet)
 

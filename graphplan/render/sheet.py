@@ -41,7 +41,7 @@ from dataclasses import dataclass, field, replace
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
 from ..locale import strings
-from ..scales import format_scale, standard_scale
+from ..scales import format_scale, next_standard_scale, standard_scale
 from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
@@ -289,8 +289,8 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
         elif bodies or lever:
             drawn = replace(
                 drawn,
-                length_scale=_larger(drawn.length_scale) if bodies else drawn.length_scale,
-                lever_scale=_larger(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
+                length_scale=next_standard_scale(drawn.length_scale) if bodies else drawn.length_scale,
+                lever_scale=next_standard_scale(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
         else:
             break
     # A drawing that still does not fit is named by the packing.
@@ -300,11 +300,6 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
 def _drawn_at(panel: Panel, scale: float) -> Panel:
     """``panel`` and its parts marked as drawn at μl = ``scale``."""
     return replace(panel, parts=tuple(_drawn_at(part, scale) for part in panel.parts), length_scale=scale)
-
-
-def _larger(scale: float) -> float:
-    """The next standard scale factor above ``scale``: the drawing a step smaller."""
-    return standard_scale(scale * (1.0 + 1e-9))
 
 
 def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
@@ -542,7 +537,7 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
             if all(fits(position, scale) for position in positions):
                 return (f"drawing.{kind}_scale = {format_scale(given_scale)}",
                         f"drawing.{kind}_scale = {format_scale(scale)} (or more)")
-            scale = standard_scale(scale * (1.0 + 1e-9))
+            scale = next_standard_scale(scale)
         return f"drawing.{kind}_scale = {format_scale(given_scale)}", None
     driven = [abs(getattr(position, kind).value(analysis.mechanism.driver.joint)) for position in positions]
     if pole is None or not all(pa > 0 for pa in driven):
