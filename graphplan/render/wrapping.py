@@ -3,8 +3,8 @@
 First after a comma or semicolon, before the sign of a term, before a
 bracket; a piece still too wide is then broken between words, into pieces
 as even as can be, never inside ``name = value unit`` nor after the sign
-of a term.  Widths are the
-generous estimate of :func:`~graphplan.render.primitives.text_width`.
+of a term.  Widths are the generous estimate of
+:func:`~graphplan.render.primitives.text_width`.
 """
 
 from __future__ import annotations
