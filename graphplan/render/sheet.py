@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import asdict, dataclass, field, replace
 
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
@@ -69,7 +69,7 @@ from .formats import (
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers
 from .svg import to_svg
-from .title_block import TitleBlockFields, form_of, labels, scale_text, title_block
+from .title_block import Details, TitleBlockFields, form_of, labels, scale_text, title_block
 
 # Space between two drawings (mm).
 GAP_MM = 15.0
@@ -136,19 +136,6 @@ class Sheet:
 
     def svg(self) -> str:
         return sheet_svg(self.layers, self.size)
-
-
-@dataclass(frozen=True)
-class Details:
-    """What the title block says beyond the drawings: the scene's title and what only the student knows."""
-
-    title: str = ""
-    author: str = ""
-    designation: str = ""
-    organization: str = ""
-    checked_by: str = ""
-    approved_by: str = ""
-    date: str = ""
 
 
 # Panels of an analysis.
@@ -817,11 +804,8 @@ def _drawn(pages: Sequence[_Page], sheet: str, locale: str, kind: str, scale: fl
         own = {panel.length_scale for panel, _, _ in page.placed if panel.length_scale is not None}
         page_scale = own.pop() if len(own) == 1 else scale
         scale_box = scale_text(page_scale, form, text["length_scale"]) if page_scale is not None else ""
-        fields = TitleBlockFields(
-            title=details.title, drawing=_drawing_name(page) or words[kind], scale=scale_box, sheet=first + k,
-            sheets=count,
-            author=details.author, designation=details.designation, organization=details.organization,
-            checked_by=details.checked_by, approved_by=details.approved_by, date=details.date, language=locale)
+        fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page) or words[kind], scale=scale_box,
+                                  sheet=first + k, sheets=count, language=locale)
         layers: list[Layer] = []
         placed: dict[str, Rect] = {}
         for panel, rect, (dx, dy) in page.placed:

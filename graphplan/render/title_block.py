@@ -29,7 +29,7 @@ import math
 import re
 import unicodedata
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cache
 from importlib import resources
 
@@ -71,8 +71,21 @@ LINE_PITCH = 1.55
 
 
 @dataclass(frozen=True)
-class TitleBlockFields:
-    """What the title block says.
+class Details:
+    """What the title block says beyond the drawings: the scene's title and what only the student knows."""
+
+    title: str = ""
+    author: str = ""
+    designation: str = ""
+    organization: str = ""
+    checked_by: str = ""
+    approved_by: str = ""
+    date: str = ""
+
+
+@dataclass(frozen=True, kw_only=True)
+class TitleBlockFields(Details):
+    """What the title block says: the :class:`Details`, and what the sheet itself gives.
 
     ``title`` is the scene's title, ``drawing`` the kind of drawing
     (Kinematic analysis), ``scale`` the text of the scale box, ``sheet`` and
@@ -80,17 +93,12 @@ class TitleBlockFields:
     is what only the student knows; empty fields are drawn blank.
     """
 
-    title: str
+    # Required here, though a student's Details may leave it empty until the sheets give the scene's.
+    title: str = field()
     drawing: str
     scale: str
     sheet: int
     sheets: int
-    author: str = ""
-    designation: str = ""
-    organization: str = ""
-    checked_by: str = ""
-    approved_by: str = ""
-    date: str = ""
     language: str = ""
 
 
