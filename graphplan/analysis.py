@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .check import ErrorRow, Reading, analytic_values, error_rows, readings
+from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
+from .errors import SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .joint_friction import FrictionPair, friction_loads, friction_pairs
@@ -91,13 +92,13 @@ def analyse(scene: Scene) -> Analysis:
     stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
     friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()
-    plans, warnings = _plans(mechanism, positions, motion, acting, friction)
     loads, balance, with_friction = (), None, None
     if acting is not None:
         loads = link_loads(mechanism, motion_state(motion), acting)
         balance = equilibrium(mechanism, motion, loads)
         if friction:
             with_friction = equilibrium(mechanism, motion, loads, friction)
+    plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     in_order = tuple(sorted(motion.warnings + stepped_over, key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, in_order + warnings,
                     loads, balance, with_friction, friction)
@@ -110,11 +111,12 @@ def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, c
 
 
 def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting: np.ndarray | None,
-           friction: tuple[FrictionPair, ...]):
+           friction: tuple[FrictionPair, ...], balance: Equilibrium | None):
     """Plans, readings, errors and forces for every position of ``positions.plans``; singular ones are reported.
 
-    ``acting`` (which external load acts where) is None when the scene has
-    nothing for a force analysis.
+    ``acting`` (which external load acts where) and ``balance`` (the
+    reactions of the linear system, the force polygons' reference) are None
+    when the scene has nothing for a force analysis.
     """
     scene = mechanism.scene
     found, warnings = [], []
@@ -137,25 +139,32 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             {name: complex(at(p.a, index)) for name, p in motion.points.items()},
             {n: float(at(link.omega, index)) for n, link in motion.links.items()},
             {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
-        rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, scene.measured.get(number))
+        measured = dict(scene.measured.get(number, {}))
+        measured_forces = measured.pop("forces", None)
+        if measured_forces and acting is None:
+            raise SceneError(f"measured.{number}.forces", "the scene has no force analysis: give the links' masses or loads")
+        rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, measured)
         warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
-        loads, forces, balance, rubbing, rubbing_lever = (), None, None, None, None
+        loads, forces, on_lever, rubbing, rubbing_lever = (), None, None, None, None
         if acting is not None:
             state = plan_state(mechanism, where, velocity, acceleration)
             loads = link_loads(mechanism, state, acting[:, index:index + 1])
             try:
-                forces = force_plan(mechanism, where, directions, loads)
+                forces = force_plan(mechanism, where, directions, loads, scene.drawing.force_scale)
                 if friction:
                     rubbing = force_plan(mechanism, where, directions, loads, forces.scale,
                                          functools.partial(friction_loads, friction, state))
             except ParallelLinesError as error:
                 warnings.append(PositionWarning(index, "singular", f"no force plan: {error}"))
-            balance = lever(mechanism, where, velocity, loads)
+            if forces is not None and balance is not None and not balance.singular[index]:
+                solved = {reaction.name: complex(reaction.force[index]) for reaction in balance.reactions}
+                rows += force_error_rows(number, solved, forces, scene.drawing.drafting_precision, measured_forces)
+            on_lever = lever(mechanism, where, velocity, loads)
             if rubbing is not None and not rubbing.locked:
                 settled = {name: found.force for name, found in rubbing.reactions.items()}
                 rubbing_lever = lever(mechanism, where, velocity, loads + friction_loads(friction, state, settled))
         found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows),
-                                  loads, forces, balance, rubbing, rubbing_lever))
+                                  loads, forces, on_lever, rubbing, rubbing_lever))
     return tuple(found), tuple(warnings)
 
 

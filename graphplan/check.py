@@ -8,7 +8,9 @@ its guide (``VBB4 = b4b·μV``, ``aBB4^r = k5b·μa``).
 Three sources give the lengths: the plan as constructed, the same plan read
 with a ruler to the drafting precision, and the readings a student took off a
 hand-drawn plan (the scene's ``[measured]``).  Each quantity is compared with
-the exact value: ``δ = (analytic − plan) / analytic · 100 %``.
+the exact value: ``δ = (analytic − plan) / analytic · 100 %``.  The force
+polygons are read the same way, a reaction as its vector's length times μF,
+against the reactions of all equilibrium equations solved at once.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 
 from .errors import SceneError
+from .forces import ForcePlan
 from .groups.sliding import guide_link
 from .mechanism import Mechanism
 from .plans import LaidVector, Plan, Step
@@ -295,6 +298,39 @@ def error_rows(position: int, analytic: Mapping[str, float], plans: Mapping[str,
 
 # Below this share of its plan's size a segment, and the analytic value it stands for, are rounding.
 NEGLIGIBLE = 1e-9
+
+
+def is_reaction(quantity: str) -> bool:
+    """Whether an error row's quantity is a reaction of the force polygons (``R23``), not a plan's value."""
+    return quantity.startswith("R") and quantity[1:].isdigit()
+
+
+def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForcePlan, precision: float,
+                     measured: Mapping[str, float] | None = None) -> list[ErrorRow]:
+    """The reactions of the force polygons against the linear system's ``exact`` ones, per source.
+
+    A reaction is read off its polygon as the length of its vector times μF,
+    so a student's readings (``measured``, mm) are taken at the polygons'
+    own μF.  A reaction that vanishes at the position is zero in both
+    solutions up to rounding and is written as 0 in both, as a plan's
+    vanishing quantity is.
+    """
+    largest = max((abs(force) for force in exact.values()), default=0.0)
+    vanished = {name for name, found in forces.reactions.items()
+                if max(abs(found.force), abs(exact[name])) <= NEGLIGIBLE * largest}
+    analytic = {name: 0.0 if name in vanished else abs(exact[name]) for name in forces.reactions}
+    rows = []
+    for name, found in forces.reactions.items():
+        constructed = 0.0 if name in vanished else abs(found.force)
+        rows.append(ErrorRow(position, name, analytic[name], constructed, "construction"))
+        rows.append(ErrorRow(position, name, analytic[name],
+                             drafted(constructed / forces.scale, precision) * forces.scale, "drafting"))
+    for name, millimetres in (measured or {}).items():
+        if name not in forces.reactions:
+            raise SceneError(f"measured.{position}.forces.{name}",
+                             f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}")
+        rows.append(ErrorRow(position, name, analytic[name], millimetres * forces.scale, "measured"))
+    return rows
 
 
 def _vanishes(reading: Reading, plans: Mapping[str, Plan], exact: float) -> bool:

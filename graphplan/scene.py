@@ -123,6 +123,8 @@ class Drawing:
     acceleration_scale: float | None
     drafting_precision: float
     sheet: str
+    # μF of every force polygon (N/mm), as a hand drawing fixes it; None: chosen to fill the polygon's field.
+    force_scale: float | None = None
     # Whether the scene names its sheet: only then are the sheets drawn without being asked for.
     sheet_given: bool = False
 
@@ -471,6 +473,7 @@ def _read_drawing(table: Table) -> Drawing:
         acceleration_scale=table.number("acceleration_scale", None, positive=True),
         drafting_precision=table.number("drafting_precision", 0.5, positive=True),
         sheet=table.choice("sheet", SHEETS, "A1"),
+        force_scale=table.number("force_scale", None, positive=True),
         sheet_given=table.has("sheet"),
     )
     for plan in ("velocity", "acceleration"):
@@ -490,7 +493,7 @@ def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]
         if number in measured:
             raise SceneError(entry.path, f"position {number} is given twice")
         readings: dict[str, dict[str, float]] = {}
-        for plan in ("velocity", "acceleration"):
+        for plan in ("velocity", "acceleration", "forces"):
             lengths = entry.table(plan, None)
             if lengths is None:
                 continue

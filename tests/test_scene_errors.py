@@ -744,6 +744,9 @@ CASES: list[Case] = [
          "must be one of A1, A2, A3, A4, none; did you mean 'A4'? (got 'A5')"),
     Case("drawing-sheet-number", {"drawing.sheet": 1}, "drawing.sheet", "must be a string, not an integer (got 1)"),
     Case("drawing-unknown-key", {"drawing.sheets": "A1"}, "drawing.sheets", "unknown key; did you mean 'sheet'?"),
+    Case("drawing-force-scale-zero", {"drawing.force_scale": 0.0}, "drawing.force_scale", "must be > 0 (got 0.0)"),
+    Case("drawing-force-scale-string", {"drawing.force_scale": "20 N/mm"}, "drawing.force_scale",
+         "must be a number, not a string (got '20 N/mm')"),
 
     # -- [measured]
     Case("measured-not-numbered", {"measured.five": {"velocity": {"pb": 39.0}}}, "measured.five",
@@ -757,6 +760,10 @@ CASES: list[Case] = [
          "must be >= 0 (got -39.0)"),
     Case("measured-reading-nan", {"measured.5.acceleration.pb": NAN}, "measured.5.acceleration.pb",
          "must be a finite number (got nan)"),
+    Case("measured-force-negative", {"measured.5.forces": {"R23": -52.5}}, "measured.5.forces.R23",
+         "must be >= 0 (got -52.5)"),
+    Case("measured-forces-list", {"measured.5.forces": [52.5]}, "measured.5.forces",
+         "must be a table, not a list (got [52.5])"),
     Case("measured-unknown-key", {"measured.5.velocty": {"pb": 39.0}}, "measured.5.velocty",
          "unknown key; did you mean 'velocity'?"),
     Case("measured-not-in-plans", {"measured.7": {"velocity": {"pb": 39.0}}}, "measured.7",

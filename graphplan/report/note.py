@@ -38,7 +38,7 @@ from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..scales import format_scale, standard_scale
 from . import forces as force_report
-from .tables import error_table_lines, quantity_symbol
+from .tables import error_table_lines, has_reactions, quantity_symbol
 
 # Two numbers that agree to this share are the same number printed twice.
 _SAME = 1e-6
@@ -697,7 +697,8 @@ class _Note:
     def errors(self, section: int) -> None:
         precision = self.n(self.analysis.scene.drawing.drafting_precision)
         self.heading(2, f"{section}. {self.t('note_errors')}")
-        self.para(self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision))
+        intro = self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision)
+        self.para(f"{intro} {self.text['errors_forces']}" if has_reactions(self.analysis) else intro)
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))

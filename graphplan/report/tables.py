@@ -15,7 +15,7 @@ import io
 from collections import defaultdict
 
 from ..analysis import Analysis, PlanPosition
-from ..check import SOURCES, ErrorRow
+from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
@@ -56,11 +56,18 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -
     return lines
 
 
+def has_reactions(analysis: Analysis) -> bool:
+    """Whether the error tables compare the force polygons' reactions too."""
+    return any(is_reaction(row.quantity) for plan in analysis.plans for row in plan.errors)
+
+
 def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
     precision = f"{analysis.scene.drawing.drafting_precision:g}"
     lines = [f"# {text['errors_title'].format(title=analysis.scene.title)}", "",
              f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}", ""]
+    if has_reactions(analysis):
+        lines += [text["errors_forces"], ""]
     for plan in analysis.plans:
         lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
                   *error_table_lines(analysis, plan), ""]

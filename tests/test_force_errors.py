@@ -1,0 +1,159 @@
+"""The reactions of the force polygons in the error tables: construction, drafting and a student's readings.
+
+The reference is the other method: every equilibrium equation of the
+mechanism solved at once (:mod:`graphplan.statics`), not the polygons.
+"""
+
+import dataclasses
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.check import ErrorRow, force_error_rows
+from graphplan.cli import main
+from graphplan.errors import SceneError
+from graphplan.forces import ForcePlan, Found
+from graphplan.report.tables import markdown
+
+RATCHET = "fixtures/ratchet_crank_rocker.toml"
+WITH_SLIDES = ("fixtures/quick_return_slotted_lever.toml", "fixtures/shaper_six_bar.toml",
+               "fixtures/offset_slider_crank.toml", "fixtures/slider_driven.toml")
+
+
+def force_rows(plan, source):
+    return {row.quantity: row for row in plan.errors if row.source == source and row.quantity.startswith("R")}
+
+
+def with_scene(path, drawing=None, measured=None):
+    scene = graphplan.load(path)
+    if drawing:
+        scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, **drawing))
+    if measured is not None:
+        scene = dataclasses.replace(scene, measured=measured)
+    return scene
+
+
+@pytest.mark.parametrize("path", (RATCHET, *WITH_SLIDES))
+def test_every_reaction_of_the_polygons_is_in_the_table_and_agrees_with_the_linear_system(path):
+    analysis = analyse(graphplan.load(path))
+    assert analysis.plans and all(plan.forces is not None for plan in analysis.plans)
+    for plan in analysis.plans:
+        rows = force_rows(plan, "construction")
+        assert set(rows) == set(plan.forces.reactions)
+        for name, row in rows.items():
+            solved = analysis.equilibrium.reaction(name).force[plan.index]
+            assert row.analytic == pytest.approx(abs(complex(solved)), rel=1e-12)
+            assert abs(row.percent) < 1e-8, row
+
+
+def polygon_vector(plan, name):
+    back = f"R{name[2]}{name[1]}"
+    for group in plan.forces.groups:
+        vectors = {v.name: v.end - v.start for v in group.polygon.vectors}
+        if vectors.get(name):
+            return vectors[name]
+        if f"{name}τ" in vectors or f"{name}n" in vectors:
+            return vectors.get(f"{name}τ", 0j) + vectors.get(f"{name}n", 0j)
+        if vectors.get(back):
+            return -vectors[back]
+    raise AssertionError(f"{name} is on no polygon")
+
+
+def test_a_drafted_reaction_is_its_vector_on_the_polygon_rounded_to_the_precision():
+    analysis = analyse(graphplan.load(RATCHET))
+    plan = analysis.plans[0]
+    scale, precision = plan.forces.scale, analysis.scene.drawing.drafting_precision
+    rows = force_rows(plan, "drafting")
+    changed = 0
+    for name, found in plan.forces.reactions.items():
+        # The reaction on the polygon of the group that finds it: one vector, its τ and n components
+        # joined, or the inner vector of the reaction back (R43 for R34).
+        millimetres = abs(polygon_vector(plan, name)) / scale
+        assert rows[name].plan == pytest.approx(round(millimetres / precision) * precision * scale, rel=1e-12)
+        changed += not math.isclose(rows[name].plan, abs(found.force), rel_tol=1e-9)
+    assert changed  # rounding to 0.5 mm at μF moves at least one of them
+
+
+def test_drafting_errors_of_the_reactions_shrink_with_the_precision():
+    worst = []
+    for precision in (2.0, 0.5, 0.1):
+        analysis = analyse(with_scene(RATCHET, drawing={"drafting_precision": precision}))
+        worst.append(max(abs(row.percent) for plan in analysis.plans
+                         for row in force_rows(plan, "drafting").values()))
+    assert worst == sorted(worst, reverse=True) and worst[-1] < worst[0] / 5
+
+
+def test_a_students_force_readings_are_taken_at_the_scenes_force_scale():
+    measured = {5: {"velocity": {"pb": 39.0}, "forces": {"R23": 52.5, "R12": 76.0}}}
+    analysis = analyse(with_scene(RATCHET, drawing={"force_scale": 20.0}, measured=measured))
+    plan = next(p for p in analysis.plans if p.number == 5)
+    assert plan.forces.scale == 20.0
+    rows = force_rows(plan, "measured")
+    assert set(rows) == {"R23", "R12"}
+    for name, millimetres in measured[5]["forces"].items():
+        exact = abs(complex(analysis.equilibrium.reaction(name).force[plan.index]))
+        assert rows[name].plan == pytest.approx(millimetres * 20.0)
+        assert rows[name].percent == pytest.approx((exact - millimetres * 20.0) / exact * 100.0)
+    # The velocity reading of the same position still gives its row.
+    assert any(row.source == "measured" and row.quantity == "VB" for row in plan.errors)
+
+
+def test_a_given_force_scale_draws_every_polygon_at_it(tmp_path):
+    text = Path(RATCHET).read_text(encoding="utf-8").replace("sheet = \"A1\"", "sheet = \"A1\"\nforce_scale = 25.0")
+    assert "force_scale = 25.0" in text
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    with_forces = [p for p in document["positions"] if "forces" in p]
+    assert with_forces and {p["forces"]["polygon_scale"] for p in with_forces} == {25.0}
+    for position in with_forces:
+        drawing = (tmp_path / "out" / f"forces_{position['index']}.svg").read_text(encoding="utf-8")
+        assert "μF = 25 Н/мм" in drawing
+    reactions = {row["quantity"] for row in document["errors"] if row["quantity"].startswith("R")}
+    assert reactions == {"R12", "R14", "R23", "R34"}
+
+
+def test_a_reading_of_a_reaction_the_polygons_do_not_have_names_them():
+    scene = with_scene(RATCHET, measured={5: {"forces": {"R99": 10.0}}})
+    with pytest.raises(SceneError) as caught:
+        analyse(scene)
+    assert str(caught.value) == ("measured.5.forces.R99: the force polygons have no reaction R99; "
+                                 "they have R23, R14, R34, R12")
+
+
+def test_force_readings_without_a_force_analysis_are_refused(tmp_path):
+    text = Path(RATCHET).read_text(encoding="utf-8")
+    start, end = text.index("[links.2]"), text.index("[positions]")
+    text = text[:start] + text[end:] + "\n[measured.11]\nforces = { R23 = 30.0 }\n"
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) != 0
+    assert not out.exists()
+    with pytest.raises(SceneError, match=r"^measured\.11\.forces: the scene has no force analysis"):
+        analyse(graphplan.load(scene))
+
+
+def test_a_reaction_that_vanishes_is_zero_in_both_solutions():
+    # Rounding leaves 1e-13 N where the linear system gives 1e-14 N: both are zero, not a 900 % error.
+    plan = ForcePlan(groups=(), reactions={"R12": Found("R12", "A", 1, 2, 1e-13 + 0j),
+                                           "R23": Found("R23", "B", 2, 3, 400.0 + 300.0j)},
+                     balancing=0.0, scale=10.0)
+    rows = force_error_rows(3, {"R12": 1e-14 + 0j, "R23": 400.0 + 300.0j}, plan, 0.5)
+    assert ErrorRow(3, "R12", 0.0, 0.0, "construction") in rows
+    assert ErrorRow(3, "R12", 0.0, 0.0, "drafting") in rows
+    assert ErrorRow(3, "R23", 500.0, 500.0, "drafting") in rows
+
+
+def test_the_error_report_explains_the_reaction_rows_only_when_it_has_them():
+    with_forces = markdown(analyse(graphplan.load(RATCHET)))
+    assert "Реакции R, Н" in with_forces and "| R23 |" in with_forces
+    scene = graphplan.load(RATCHET)
+    kinematics_only = dataclasses.replace(scene, links={}, loads=())
+    text = markdown(analyse(kinematics_only))
+    assert "Реакции R" not in text and "| R23 |" not in text
