@@ -363,6 +363,18 @@ def test_a_plan_scale_given_in_the_scene_and_too_small_for_a4_is_answered_with_t
     check_inside_frames(on_a4("shaper_six_bar", acceleration_scale=fitting))
 
 
+def test_a_force_scale_given_in_the_scene_and_too_small_for_a4_is_answered_with_the_standard_scale_that_fits():
+    """At μF = 5 N/mm the ratchet's polygons of position 5 are over 200 mm tall; μF is the contract's
+    polygon_scale, so the sheets refuse it with the smallest standard μF that fits instead of drawing smaller."""
+    message = refusal_on_a4("ratchet_crank_rocker", force_scale=5.0)
+    assert "'forces-5-polygon-I-1-2'" in message and "at drawing.force_scale = 5 N/mm: no A4 sheet holds them" in message
+    fitting = float(re.search(r"drawing\.force_scale = ([\d.]+) \(or more\)", message).group(1))
+    assert fitting == 10.0  # the standard factor after 5 (1, 2, 2.5, 4, 5 × 10ⁿ)
+    sheets = on_a4("ratchet_crank_rocker", force_scale=fitting)
+    check_inside_frames(sheets)
+    assert any("μF = 10 Н/мм" in item.text for sheet in sheets for item in texts(sheet.layers))
+
+
 def test_a_chinese_caption_breaks_after_its_full_width_comma_and_before_its_bracket():
     line = "μV = 0.01983 (m/s)/mm，力：μF = 25 N/mm，最短 10 mm；平衡力矩 Mb = 49.02 N·m（儒科夫斯基杠杆）"
     pieces = fitted(line, 80.0, CAPTION)

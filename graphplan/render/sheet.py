@@ -451,7 +451,8 @@ def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel
     """One clear error naming every drawing at a scale the scene sets (μl, a pole distance) that fits no empty
     ``sheet``, with the value of each key that fits and the format that would do, before anything is placed."""
     overflows = [found for found in (_length_scale_overflow(analysis, sheet, kinematics),
-                                     _plans_overflow(analysis, sheet, kinematics)) if found is not None]
+                                     _plans_overflow(analysis, sheet, kinematics),
+                                     _polygons_overflow(analysis, sheet)) if found is not None]
     if not overflows:
         return
     form = form_of(analysis.scene.locale)
@@ -505,6 +506,52 @@ def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel])
     named = ", ".join(f"{part.name!r} ({_width(part):.0f} × {_height(part):.0f} mm)" for part in parts)
     return _Overflow(f"the drawing{'s' if len(parts) > 1 else ''} {named} at {', '.join(settings)}", tuple(fixes),
                      parts)
+
+
+def _polygons_overflow(analysis: Analysis, sheet: str) -> _Overflow | None:
+    """The force polygons, drawn at the μF the scene gives, that no empty ``sheet`` holds, and the smallest
+    standard μF that fits them all (μF is the contract's ``polygon_scale``: never changed behind the scene's back).
+    """
+    given = analysis.scene.drawing.force_scale
+    if given is None:  # chosen to fill a field that every sheet holds
+        return None
+    form = form_of(analysis.scene.locale)
+
+    def unheld(scale: float) -> list[Panel]:
+        return [piece for piece in _polygon_pieces(analysis, scale)
+                if not holds(sheet, form, _width(piece), _height(piece))]
+
+    too_big = unheld(given)
+    if not too_big:
+        return None
+    fix: tuple[str, ...] = ()
+    scale = standard_scale(given)
+    for _ in range(_LARGER_SCALES_TRIED):
+        if scale > given and not unheld(scale):
+            fix = (f"drawing.force_scale = {format_scale(scale)} (or more)",)
+            break
+        scale = next_standard_scale(scale)
+    named = ", ".join(f"{piece.name!r} ({_width(piece):.0f} × {_height(piece):.0f} mm)" for piece in too_big)
+    return _Overflow(f"the force polygon{'s' if len(too_big) > 1 else ''} {named} at drawing.force_scale = "
+                     f"{format_scale(given)} N/mm", fix, tuple(too_big))
+
+
+def _polygon_pieces(analysis: Analysis, scale: float) -> list[Panel]:
+    """Every force polygon of the analysis (with friction too) drawn at μF = ``scale``, as the force sheets cut
+    them out, lettered at the smaller caption size that a force sheet falls back to."""
+    pieces = []
+    for position in analysis.plans:
+        for with_friction in (False, True):
+            forces = position.with_friction if with_friction else position.forces
+            if forces is None or forces.locked:
+                continue
+            drawn = force_sheet(analysis, position, with_friction)
+            drawn = replace(drawn, forces=replace(drawn.forces, scale=scale),
+                            caption_size=force_layout.SMALL_CAPTION_SIZE)
+            name = f"{'forces-friction' if with_friction else 'forces'}-{position.number}"
+            panel = split(force_layout.arrange(drawn), name, "", _group_of_field)
+            pieces += [piece for part in panel.parts for piece in (part.parts or (part,)) if "-polygon-" in piece.name]
+    return pieces
 
 
 def _plan_setting(analysis: Analysis, sheet: str, kind: str,
