@@ -129,3 +129,33 @@ def test_without_weasyprint_the_pdf_of_the_note_is_a_clear_error(monkeypatch):
     monkeypatch.setitem(sys.modules, "weasyprint", None)  # import weasyprint now raises ImportError
     with pytest.raises(OutputError, match=r"note\.pdf: .*WeasyPrint.*--format"):
         note_pdf("<html><body><p>x</p></body></html>")
+
+
+MM = 72 / 25.4
+# The note's page margins (graphplan.report.html): 30 mm on the left for binding, 10 mm on the right.
+LEFT_MM, RIGHT_MM = 30.0, 10.0
+CAPTION = re.compile(r"^(Table \d+\.|Таблица \d+ —|表 \d+)")
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_every_character_of_the_pdf_stands_within_its_margins(notes, locale):
+    """The widest table (the errors of a position: a value and an error for each of three sources) once ran
+    off the right edge of the page; every glyph must lie between the margins, as PDFium places it."""
+    _, data = notes[locale]
+    for number, page in enumerate(pdfium.PdfDocument(data), 1):
+        width, _ = page.get_size()
+        text = page.get_textpage()
+        boxes = [text.get_charbox(k) for k in range(text.count_chars())]
+        boxes = [box for box in boxes if box[2] > box[0]]  # spaces and breaks have no extent
+        assert min(box[0] for box in boxes) >= LEFT_MM * MM - 1, number
+        assert max(box[2] for box in boxes) <= width - RIGHT_MM * MM + 1, number
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_no_page_ends_with_a_table_caption_parted_from_its_table(notes, locale):
+    html, data = notes[locale]
+    assert html.count('class="table-caption"') > 5
+    for number, page in enumerate(pdfium.PdfDocument(data), 1):
+        lines = [line.strip() for line in page.get_textpage().get_text_range().splitlines() if line.strip()]
+        body = lines[:-1] if lines and lines[-1] == str(number) else lines  # the page number at the foot
+        assert body and not CAPTION.match(body[-1]), (number, body[-1])

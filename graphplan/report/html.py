@@ -28,8 +28,15 @@ th, td { border: 1px solid #999; padding: 0.2em 0.55em; vertical-align: top; }
 th { background: #eee; }
 td { font-variant-numeric: tabular-nums; }
 @page { size: A4; margin: 20mm 10mm 20mm 30mm; @bottom-center { content: counter(page); font-size: 9pt; } }
-@media print { body { max-width: none; margin: 0; } h2, h3 { break-after: avoid; } table { break-inside: avoid; } }
+p.table-caption { margin-bottom: 0.3em; }
+th { hyphens: auto; }
+@media print { body { max-width: none; margin: 0; } h2, h3, p.table-caption { break-after: avoid; }
+               table { break-inside: avoid; font-size: 0.8em; } th, td { padding: 0.2em 0.4em; } }
 """
+
+# A paragraph right before a table is its caption (the note numbers its tables above them, as GOST 2.105
+# asks): marked so that a page break never parts it from its table.
+_CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.S)
 
 
 # base, index, component: the symbols of the plan method and of the force analysis.
@@ -74,7 +81,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
     renderer = MarkdownIt("commonmark", {"html": False}).enable("table")
     if symbols:
         renderer.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
-    body = renderer.render(markdown_text)
+    body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', renderer.render(markdown_text))
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
             f"<title>{html.escape(title, quote=False)}</title>\n<style>\n{_STYLE}</style>\n</head>\n<body>\n"
