@@ -102,3 +102,14 @@ def test_a_quantity_that_vanishes_at_the_position_has_no_error_of_rounding():
         for quantity in ("VA4A3", "aB", "aA4A1^r"):
             assert (table[quantity].analytic, table[quantity].plan, table[quantity].percent) == (0.0, 0.0, 0.0)
         assert table["aA4A3^r"].analytic == pytest.approx(12.566**2 * 0.075, rel=1e-9)
+
+
+def test_the_markdown_table_writes_true_minus_signs_and_right_aligned_numbers(analysis):
+    from graphplan.report.tables import markdown
+
+    lines = [line for line in markdown(analysis).splitlines() if line.startswith("|")]
+    assert any(line.startswith("| ω2 | −17 | −17 | −17 |") for line in lines)  # the crank turns clockwise at 17 rad/s
+    for line in lines:
+        cells = line.strip("|").split("|")[1:]
+        assert not any("-" in cell for cell in cells if not set(cell.strip()) <= set("-:")), line
+    assert all(line.startswith("|---|---:|") for line in lines if set(line) <= set("|-:"))

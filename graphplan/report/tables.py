@@ -17,6 +17,7 @@ from collections import defaultdict
 from ..analysis import Analysis, PlanPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
+from .forces import number
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
 
@@ -46,14 +47,20 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -
     names = [text[f"source_{s}"] for s in sources]
     header = [text["errors_quantity"], text["errors_analytic"], *names,
               *(text["errors_delta"].format(source=name) for name in names)]
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines = ["| " + " | ".join(header) + " |", "|---|" + "---:|" * (len(header) - 1)]
     for quantity, rows in table.items():
         exact = next(iter(rows.values())).analytic
-        cells = [quantity_symbol(quantity), f"{exact:.5g}"]
-        cells += [f"{rows[s].plan:.5g}" if s in rows else "" for s in sources]
-        cells += [f"{round(rows[s].percent, 3) or 0.0:.3f}" if s in rows else "" for s in sources]
-        lines.append("| " + " | ".join(cell.replace(".", mark) for cell in cells) + " |")
+        cells = [number(exact, mark=mark)]
+        cells += [number(rows[s].plan, mark=mark) if s in rows else "" for s in sources]
+        cells += [_percent(rows[s].percent, mark) if s in rows else "" for s in sources]
+        lines.append("| " + " | ".join([quantity_symbol(quantity), *cells]) + " |")
     return lines
+
+
+def _percent(value: float, mark: str) -> str:
+    """An error to the thousandth of a per cent, with a true minus sign (none on a zero)."""
+    text = f"{round(value, 3) or 0.0:.3f}"
+    return text.replace("-", "−").replace(".", mark)
 
 
 def has_reactions(analysis: Analysis) -> bool:
