@@ -36,7 +36,7 @@ th { hyphens: auto; }
 
 # A paragraph right before a table is its caption (the note numbers its tables above them, as GOST 2.105
 # asks): marked so that a page break never parts it from its table.
-_CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.S)
+_CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.DOTALL)
 
 
 # base, index, component: the symbols of the plan method and of the force analysis.
