@@ -21,8 +21,9 @@ its mechanism, velocity plan and acceleration plan; a force sheet as its
 groups, each beside its polygon, and the lever), on sheets of its own whose
 title block names it.  A drawing at a scale the scene sets that no empty
 sheet holds (the plan of positions or a mechanism at μl, a plan at its pole
-distance, a force polygon at the scene's μF) is refused before anything is placed, with the room there is, the
-scene's key and the value of it that fits, and a bigger format that holds it.
+distance, a force polygon at the scene's μF) is refused before anything is
+placed, with the room there is, the scene's key and the value of it that
+fits, and a bigger format that holds it.
 A force sheet with a drawing that no empty sheet holds is first lettered a
 size smaller, then its group cut free or lever is drawn at the next larger
 standard scale (its caption and the title block's scale box say which),
