@@ -264,8 +264,7 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
                       words[label].format(number=position.number), _group_of_field)
         if sheet == "none":
             return panel
-        unheld = {piece.name: (round(_width(piece)), round(_height(piece)))
-                  for part in panel.parts for piece in (part.parts or (part,))
+        unheld = {piece.name: (round(_width(piece)), round(_height(piece))) for piece in _pieces(panel.parts)
                   if not holds(sheet, form, _width(piece), _height(piece))}
         bodies = any("-body-" in piece for piece in unheld)
         lever = any(piece.endswith("-lever") for piece in unheld)
@@ -283,6 +282,11 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
             break
     # A drawing that still does not fit is named by the packing.
     return panel if drawn.length_scale == length_scale(analysis) else _drawn_at(panel, drawn.length_scale)
+
+
+def _pieces(parts: Sequence[Panel]) -> list[Panel]:
+    """``parts`` cut into their smallest drawings: each part's own parts, or the part where it has none."""
+    return [piece for part in parts for piece in (part.parts or (part,))]
 
 
 def _drawn_at(panel: Panel, scale: float) -> Panel:
@@ -551,7 +555,7 @@ def _polygon_pieces(analysis: Analysis, scale: float) -> list[Panel]:
                             caption_size=force_layout.SMALL_CAPTION_SIZE)
             name = f"{'forces-friction' if with_friction else 'forces'}-{position.number}"
             panel = split(force_layout.arrange(drawn), name, "", _group_of_field)
-            pieces += [piece for part in panel.parts for piece in (part.parts or (part,)) if "-polygon-" in piece.name]
+            pieces += [piece for piece in _pieces(panel.parts) if "-polygon-" in piece.name]
     return pieces
 
 
@@ -761,7 +765,7 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
     # A part too big for a sheet stands apart in its own parts.
     grouped = [piece for part in panel.parts
                for piece in (part.parts if part.parts and not held(part) else (part,))]
-    single = [piece for part in grouped for piece in (part.parts or (part,))]
+    single = _pieces(grouped)
     best: list[_Page] | None = None
     for parts in (grouped, single):
         for order in (parts, sorted(parts, key=lambda part: -_height(part)),
