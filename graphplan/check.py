@@ -249,15 +249,20 @@ def _angular(mechanism: Mechanism, plans: Mapping[str, Plan], kind: str, link: i
             return None
         (first, first_letter), (second, second_letter) = max(pairs, key=lambda ab: abs(ab[0][0] - ab[1][0]))
         return Reading(f"omega{link}", kind, (first_letter, second_letter), abs(second - first), sign)
-    named = [name for name in plan.images if name in positions and (positions[name], plan.images[name]) in members]
+    named = {name: positions[name] for name in plan.images
+             if name in positions and (positions[name], plan.images[name]) in members}
+    # A construction point of the link that the scene does not name (Assur's special point Σ6) may end the
+    # tangential part that gives ε (aFΣ6^τ).
+    on_link = {position for position, _ in members}
+    named.update({name: where for name, where in plan.auxiliary.items() if where in on_link})
     for step in plan.steps:
         for vector in step.vectors:
             if not vector.meaning.endswith("^τ"):
                 continue
-            pair = _point_pair(vector.meaning[1:-2], named)
-            if pair is not None and positions[pair[0]] != positions[pair[1]]:
+            pair = _point_pair(vector.meaning[1:-2], list(named))
+            if pair is not None and named[pair[0]] != named[pair[1]]:
                 return Reading(f"epsilon{link}", kind, (vector.start, vector.end),
-                               abs(positions[pair[0]] - positions[pair[1]]), sign)
+                               abs(named[pair[0]] - named[pair[1]]), sign)
     return None
 
 

@@ -88,12 +88,18 @@ class MomentEquation:
     unknown: str
     value: float
     arm: float
+    links: tuple[int, ...] = ()
+
+    @property
+    def bodies(self) -> str:
+        """What the equation is written for: ``3``, or ``3,4,5,6`` for a whole group (``links``)."""
+        return ",".join(map(str, self.links)) if self.links else str(self.link)
 
     @property
     def equation(self) -> str:
         """``ΣMB(3) = R23τ·h + M(G3) − M(Fu3) + … = 0``, the moments' signs as found (ccw positive)."""
         parts = "".join(f" {'+' if term.moment >= 0 else '−'} M({term.name})" for term in self.terms)
-        return f"ΣM{self.about}({self.link}) = {self.unknown}·h{parts} = 0"
+        return f"ΣM{self.about}({self.bodies}) = {self.unknown}·h{parts} = 0"
 
 
 @dataclass(frozen=True)
@@ -150,6 +156,8 @@ class ForcePlan:
 
     ``iterations`` is how many times the construction was repeated for the
     friction in the pairs (0 without); ``locked`` says that it never settled.
+    ``auxiliary`` holds the moment centres that are no point of the scene
+    (Assur's special point ``Σ6`` of a triad), where they lie (m).
     """
 
     groups: tuple[GroupForces, ...]
@@ -158,6 +166,7 @@ class ForcePlan:
     scale: float
     iterations: int = 0
     locked: bool = False
+    auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
     def mm(self, force: complex) -> complex:
         return force / self.scale
@@ -175,6 +184,7 @@ class ForceBoard:
     reactions: dict[str, Found] = field(default_factory=dict)
     groups: list[GroupForces] = field(default_factory=list)
     balancing: float = 0.0
+    auxiliary: dict[str, complex] = field(default_factory=dict)
     _moments: list[MomentEquation] = field(default_factory=list)
     _found: list[Found] = field(default_factory=list)
 
@@ -206,12 +216,23 @@ class ForceBoard:
     def solve_moment(self, link: int, about: str, unknown: str, direction: complex, at: complex,
                      extra: tuple[Term, ...] = ()) -> float:
         """ΣM_about = 0 for the magnitude of a force along unit ``direction`` through ``at``."""
+        return self.solve_moment_of((link,), about, unknown, direction, at, extra)
+
+    def solve_moment_of(self, links: tuple[int, ...], about: str, unknown: str, direction: complex, at: complex,
+                        extra: tuple[Term, ...] = ()) -> float:
+        """:meth:`solve_moment` for several links cut free together (a whole group about Assur's point)."""
         centre = self.positions[about]
-        terms = self.moment_terms(link, centre) + extra
+        terms = tuple(term for link in links for term in self.moment_terms(link, centre)) + extra
         lever = float(cross(at - centre, direction))
         value = -sum(term.moment for term in terms) / lever
-        self._moments.append(MomentEquation(link, about, terms, unknown, value, abs(lever)))
+        self._moments.append(MomentEquation(links[0], about, terms, unknown, value, abs(lever),
+                                            links=links if len(links) > 1 else ()))
         return value
+
+    def add_centre(self, name: str, where: complex) -> None:
+        """A moment centre that is no point of the scene (Assur's special point)."""
+        self.positions[name] = where
+        self.auxiliary[name] = where
 
     def couple(self, link: int, about: str, unknown: str, extra: tuple[Term, ...] = ()) -> float:
         """ΣM_about = 0 for a couple (a normal force's shift along its slide times the force)."""
@@ -337,7 +358,7 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
         extent = max((abs(vector.end - other.end) for forces in plan.groups for vector in forces.polygon.vectors
                       for other in forces.polygon.vectors), default=0.0)
         scale = standard_scale(max(extent, 1e-300) / POLYGON_FIELD_MM)
-    return ForcePlan(plan.groups, plan.reactions, plan.balancing, scale, iterations, locked)
+    return ForcePlan(plan.groups, plan.reactions, plan.balancing, scale, iterations, locked, plan.auxiliary)
 
 
 def _construct(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
@@ -346,7 +367,7 @@ def _construct(mechanism: Mechanism, positions: Mapping[str, complex], direction
     for group in reversed(mechanism.groups):
         group.construct_forces(board)
     mechanism.driver.construct_forces(board)
-    return ForcePlan(tuple(board.groups), dict(board.reactions), board.balancing, 1.0)
+    return ForcePlan(tuple(board.groups), dict(board.reactions), board.balancing, 1.0, auxiliary=dict(board.auxiliary))
 
 
 __all__ = [

@@ -58,14 +58,14 @@ class Mechanism:
     def degrees_of_freedom(self) -> tuple[int, int, int]:
         """Chebyshev's formula W = 3n − 2p5 − p4 as (n, p5, W): every pair here is a lower pair."""
         moving = len(self.moving_links)
-        lower_pairs = 1 + 3 * len(self.groups)
+        lower_pairs = 1 + sum(group.pair_count for group in self.groups)
         return moving, lower_pairs, 3 * moving - 2 * lower_pairs
 
     @property
     def structure(self) -> str:
         """The structure formula, ``I(1,2) → II2(3,4)``: class, order, links of each group."""
         parts = [f"I({self.scene.frame_link},{self.driver.link})"]
-        parts += [f"{_ROMAN[2]}2({group.links[0]},{group.links[1]})" for group in self.groups]
+        parts += [f"{_ROMAN[group.klass]}{group.order}({','.join(map(str, group.links))})" for group in self.groups]
         return " → ".join(parts)
 
     @property

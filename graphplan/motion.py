@@ -37,6 +37,10 @@ ILL_CONDITIONED_DEG = 1.0
 
 _STILL = 0j
 
+# A group found by continuation (a triad) is solved at least this often a turn of the crank (or along
+# the slider's travel): Newton's method then starts within a degree of the next position.
+CONTINUATION_STEPS = 360
+
 # How a group's closest approach to a toggle between two samples of the dense sweep is found: each
 # round solves this many points across the bracket round the least sine and keeps the two beside
 # the least, so ten rounds narrow a 1° bracket to about 1e-9 rad.
@@ -118,9 +122,12 @@ class _Context:
     """The motion found so far, as the groups ask for it while they solve."""
 
     def __init__(self, mechanism: Mechanism, values: np.ndarray, describe: Callable[[int], str],
-                 tolerant: bool = False) -> None:
+                 tolerant: bool = False, start: int = 0) -> None:
         self.tolerant = tolerant
         self.singular: dict[int, str] = {}
+        self.raised: dict[int, Exception] = {}
+        self.count = len(values)
+        self.start = start
         scene = mechanism.scene
         self._scene = scene
         self._describe = describe
@@ -156,20 +163,25 @@ class _Context:
             self.fail_where(bad, error)
             return
         for index in np.flatnonzero(bad):
-            self.singular.setdefault(int(index), str(error(int(index), self._describe(int(index)))))
+            found = error(int(index), self._describe(int(index)))
+            self.raised.setdefault(int(index), found)
+            self.singular.setdefault(int(index), str(found))
 
 
 @dataclass(frozen=True)
 class Reference:
     """What is fixed once, at one reference position, and kept for every solve.
 
-    ``branches`` is the assembly branch of each group; ``local`` the
-    coordinates of each named point in its link's frame (link origin, link
-    direction), so that the point rides rigidly with its link.
+    ``branches`` is the assembly branch of each group (a sign for a class-II
+    group, the pose found there for a triad); ``local`` the coordinates of
+    each named point in its link's frame (link origin, link direction), so
+    that the point rides rigidly with its link; ``value`` the driver's
+    coordinate there.
     """
 
-    branches: tuple[int, ...]
+    branches: tuple[object, ...]
     local: Mapping[str, complex]
+    value: float = 0.0
 
 
 def reference_at(mechanism: Mechanism, value: float) -> Reference:
@@ -190,7 +202,7 @@ def reference_at(mechanism: Mechanism, value: float) -> Reference:
         for spec in unit_.points:
             local[spec.name] = _local_coordinates(context, spec, mechanism)
             context.points[spec.name] = _place(context, spec, mechanism, local[spec.name])
-    return Reference(tuple(branches), local)
+    return Reference(tuple(branches), local, float(value))
 
 
 def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference: Reference | None = None,
@@ -221,15 +233,85 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
         text = driver.describe(float(values[index]))
         return f"position {numbers[index]} ({text})" if numbers is not None else text
 
+    solver = _solve_continued if any(group.continuation for group in mechanism.groups) else _solve
     if not tolerant:
-        return _solve(mechanism, values, reference, describe, tolerant)
+        return solver(mechanism, values, reference, describe, tolerant)
     with np.errstate(divide="ignore", invalid="ignore"):
-        return _solve(mechanism, values, reference, describe, tolerant)
+        return solver(mechanism, values, reference, describe, tolerant)
+
+
+def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Reference,
+                     describe: Callable[[int], str], tolerant: bool) -> Motion:
+    """The motion at ``values`` for a mechanism with a group found by continuation (a triad).
+
+    Such a group follows one assembly from the reference position to its neighbours, so the
+    positions are solved in driver order on a grid from the reference position out to every
+    value asked for, no coarser than :data:`CONTINUATION_STEPS` steps a turn (of the travel, for
+    a slider), and the values asked for are taken out of it.  A position between them where the
+    mechanism does not assemble stops the walk with its error, as it stops the real mechanism; a
+    singular one between them only matters when it is one of the values.
+    """
+    driver = mechanism.driver
+    ends = np.append(values, reference.value)
+    low, high = float(np.min(ends)), float(np.max(ends))
+    if driver.kind == "crank":
+        step = 2 * math.pi / CONTINUATION_STEPS
+    else:
+        step = abs(driver.travel[1] - driver.travel[0]) / CONTINUATION_STEPS or (high - low) / CONTINUATION_STEPS
+    grid = np.linspace(low, high, max(2, math.ceil((high - low) / step) + 1)) if high > low else np.array([low])
+    walk, inverse = np.unique(np.concatenate([ends, grid]), return_inverse=True)
+    asked = inverse[:len(values)]
+    start = int(inverse[len(values)])
+    where_asked = {int(w): i for i, w in enumerate(asked)}
+
+    def describe_walk(index: int) -> str:
+        if index in where_asked:
+            return describe(where_asked[index])
+        return f"{driver.describe(float(walk[index]))}, on the way between the positions asked for"
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        context = _Context(mechanism, walk, describe_walk, tolerant=True, start=start)
+        found = _run(mechanism, context, walk, reference)
+    points, links, slides, conditioning = _taken(found, asked)
+    singular = {i: context.singular[int(w)] for i, w in enumerate(asked) if int(w) in context.singular}
+    if singular and not tolerant:
+        raise context.raised[int(asked[min(singular)])]
+    warnings = tuple(PositionWarning(index, "singular", reason) for index, reason in sorted(singular.items()))
+    conditioned = tuple(w for w in _conditioning_warnings(conditioning) if w.position not in singular)
+    return Motion(mechanism=mechanism, driver=values, points=points, links=links, slides=slides,
+                  conditioning=conditioning, warnings=tuple(sorted(warnings + conditioned, key=lambda w: w.position)),
+                  singular=singular)
+
+
+def _taken(found, asked: np.ndarray):
+    """The points, links, slides and conditioning of a walk at the positions asked for."""
+    points, links, slides, conditioning = found
+
+    def take(value):
+        return value[asked] if isinstance(value, np.ndarray) and value.ndim else value
+
+    return ({name: PointMotion(take(p.r), take(p.v), take(p.a)) for name, p in points.items()},
+            {number: LinkMotion(link.origin, take(link.u), take(link.angle), take(link.omega), take(link.epsilon))
+             for number, link in links.items()},
+            tuple(SlideMotion(s.slider, s.guide, s.joint, take(s.u), take(s.s), take(s.velocity), take(s.acceleration))
+                  for s in slides),
+            {label: take(sine) for label, sine in conditioning.items()})
 
 
 def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
            describe: Callable[[int], str], tolerant: bool) -> Motion:
     context = _Context(mechanism, values, describe, tolerant)
+    _, _, slides, conditioning = _run(mechanism, context, values, reference)
+    singular = tuple(PositionWarning(index, "singular", reason) for index, reason in sorted(context.singular.items()))
+    conditioned = tuple(w for w in _conditioning_warnings(conditioning) if w.position not in context.singular)
+    return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
+                  slides=slides, conditioning=conditioning,
+                  warnings=tuple(sorted(singular + conditioned, key=lambda w: w.position)),
+                  singular=dict(context.singular))
+
+
+def _run(mechanism: Mechanism, context: _Context, values: np.ndarray, reference: Reference):
+    """Every unit in structure order on ``context``: the points, links, slides and conditioning found."""
     slides: list[SlideMotion] = []
     conditioning: dict[str, np.ndarray] = {}
     for step, unit_ in enumerate(mechanism.units):
@@ -243,12 +325,7 @@ def _solve(mechanism: Mechanism, values: np.ndarray, reference: Reference,
         slides.extend(found.slides)
         for spec in unit_.points:
             context.points[spec.name] = _place(context, spec, mechanism, reference.local[spec.name])
-    singular = tuple(PositionWarning(index, "singular", reason) for index, reason in sorted(context.singular.items()))
-    conditioned = tuple(w for w in _conditioning_warnings(conditioning) if w.position not in context.singular)
-    return Motion(mechanism=mechanism, driver=values, points=context.points, links=context.links,
-                  slides=tuple(slides), conditioning=conditioning,
-                  warnings=tuple(sorted(singular + conditioned, key=lambda w: w.position)),
-                  singular=dict(context.singular))
+    return context.points, context.links, tuple(slides), conditioning
 
 
 def _local_coordinates(context: _Context, spec: PointSpec, mechanism: Mechanism) -> complex:

@@ -191,7 +191,9 @@ class Plan:
     ``images`` maps each mechanism point to its plan letter; ``rates`` holds
     the angular velocity (velocity plan) or angular acceleration
     (acceleration plan) of each link as read off the plan, ccw positive;
-    ``members`` lists each link's points on the plan as (position, letter).
+    ``members`` lists each link's points on the plan as (position, letter);
+    ``auxiliary`` the construction's own points of the mechanism that no
+    scene names (Assur's special point ``Σ6`` of a triad), where they lie (m).
     """
 
     kind: str
@@ -202,6 +204,7 @@ class Plan:
     rates: Mapping[int, float]
     sliding: Mapping[int, complex]
     members: Mapping[int, tuple[tuple[complex, str], ...]] = field(default_factory=dict)
+    auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
     def mm(self, letter: str) -> complex:
         return self.points[letter] / self.scale
@@ -231,6 +234,7 @@ class Builder:
     link_images: dict[int, list[tuple[complex, str]]] = field(default_factory=dict)
     turns_with: dict[int, int] = field(default_factory=dict)
     sliding: dict[int, complex] = field(default_factory=dict)
+    auxiliary: dict[str, complex] = field(default_factory=dict)
 
     def image(self, point: str) -> complex:
         return self.points[self.images[point]]
@@ -320,6 +324,9 @@ class Builder:
         """The mechanism's name of the point at ``position`` whose image is ``letter`` (``A4`` for ``a4``)."""
         for name, image in self.images.items():
             if image == letter and self.positions.get(name) == position:
+                return name
+        for name, where in self.auxiliary.items():
+            if where == position and image_name(name) == letter:
                 return name
         return letter.upper()
 
@@ -413,7 +420,8 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
         scale = standard_scale(max(extent, 1e-300) / PLAN_FIELD_MM)
     return Plan(kind=board.kind, scale=scale, points=dict(board.points), steps=tuple(board.steps),
                 images=dict(board.images), rates=rates, sliding=dict(board.sliding),
-                members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()})
+                members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()},
+                auxiliary=dict(board.auxiliary))
 
 
 __all__ = [

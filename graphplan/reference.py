@@ -3,7 +3,8 @@
 Nothing here calls graphplan's solver for the answer.  The closure equation of
 every group is written afresh, generically from the mechanism's structure (the
 scene's groups, guides and named points, in the order :func:`graphplan.mechanism.build`
-checked), as one complex equation in the group's two unknowns:
+checked), as one complex equation in a class-II group's two unknowns (two, one per loop, in a
+triad's four):
 
 ========  =======================  =====================================================
 kind      unknowns                 closure (G, u: a guide's point and direction)
@@ -13,6 +14,8 @@ RRP       θa, s                    A + AB·e^{iθa} − (G + s·u) = 0
 RPR       θ (lever), s             A − C − (s + i·e)·e^{iθ} = 0
 PRP       s1, s2                   G1 + (s1 + i·o1)·u1 − G2 − (s2 + i·o2)·u2 = 0
 RPP       s_b, s_a                 A − G − s_b·u − s_a·u·e^{i·angle} = 0
+triad     θa, θb, θc, ψ            A + AB·e^{iθa} + BD·e^{iψ} − C − CD·e^{iθb} = 0,
+                                   A + AB·e^{iθa} + BF·e^{iψ}·e^{±iβ} − E − EF·e^{iθc} = 0
 ========  =======================  =====================================================
 
 Every quantity is carried as a *jet* (value, first and second time derivative) so that
@@ -253,9 +256,38 @@ def _closure(group, scene, points, angles) -> tuple[Callable, Callable]:
         def outputs(q1, q2):
             origin, u, guide_angle = _guide(scene, group.guide, points, angles)
             return {b_name: origin + q1 * u}, {group.links[0]: guide_angle + mpf(group.angle), group.links[1]: guide_angle}
+    elif kind == "triad":
+        a_name, b_name, c_name, d_name, e_name, f_name = group.joints
+        ab, cd, ef = (mpf(x) for x in group.lengths)
+        bd = mpf(group.sides[0])
+        corner_f = _corner_f(group, points)
+        la, lb, lc, lt = group.links
+
+        def residual(qa, qb, qc, psi):
+            b = points[a_name] + ab * expi(qa)
+            return (b + bd * expi(psi) - points[c_name] - cd * expi(qb),
+                    b + corner_f * expi(psi) - points[e_name] - ef * expi(qc))
+
+        def outputs(qa, qb, qc, psi):
+            b = points[a_name] + ab * expi(qa)
+            return ({b_name: b, d_name: points[c_name] + cd * expi(qb), f_name: points[e_name] + ef * expi(qc)},
+                    {la: qa, lb: qb, lc: qc, lt: psi})
     else:  # pragma: no cover - a new group kind needs its closure written here
         raise NotImplementedError(f"no reference closure for {kind} groups")
     return residual, outputs
+
+
+def _corner_f(group, points) -> mpc:
+    """F in the ternary link's own frame (B at the origin, D along +x), at 50 digits.
+
+    Which side of BD it lies on is the side the sketch (``near``) puts it, as graphplan chooses.
+    """
+    bd, df, fb = (mpf(x) for x in group.sides)
+    near = dict(group.near)
+    b, d, f = (near[name] for name in group.new_joints())
+    turn = 1 if ((d - b).conjugate() * (f - b)).imag > 0 else -1
+    cosine = (bd * bd + fb * fb - df * df) / (2 * bd * fb)
+    return fb * mpc(cosine, turn * mp.sqrt(1 - cosine * cosine))
 
 
 def _first_guess(group, scene, points, angles, near: Mapping[str, complex], near_angles: Mapping[int, float]):
@@ -279,6 +311,9 @@ def _first_guess(group, scene, points, angles, near: Mapping[str, complex], near
         b = value(group.joints[0])
         return tuple(mp.re((b - g.d0) * mp.conj(u.d0))
                      for g, u, _ in (_guide(scene, guide, points, angles) for guide in group.guide_pair))
+    if kind == "triad":
+        a, b, c, d, e, f = (value(name) for name in group.joints)
+        return mp.arg(b - a), mp.arg(d - c), mp.arg(f - e), mp.arg(d - b)
     a_name, b_name = group.joints
     origin, u, _ = _guide(scene, group.guide, points, angles)
     slot = u.d0 * mp.expj(mpf(group.angle))
@@ -290,36 +325,47 @@ def _values_only(jets: Mapping) -> dict:
     return {key: Jet(jet.d0) for key, jet in jets.items()}
 
 
-def _solve_group(group, scene, points, angles, guess) -> tuple[tuple[Jet, Jet], tuple[mpf, mpf, mpf]]:
-    """The group's unknowns as jets: Newton for values, then two linear solves for rates."""
+def _solve_group(group, scene, points, angles, guess) -> tuple[tuple[Jet, ...], tuple[mpf, mpf, mpf]]:
+    """The group's unknowns as jets: Newton for values, then two linear solves for rates.
+
+    A class-II group has one complex closure in two unknowns; a triad two (one per loop) in four.
+    """
     still_points, still_angles = _values_only(points), _values_only(angles)
     still, _ = _closure(group, scene, still_points, still_angles)
     moving, _ = _closure(group, scene, points, angles)
+    count = len(guess)
 
-    def f(x1, x2):
-        z = still(Jet(x1), Jet(x2)).d0
-        return [mp.re(z), mp.im(z)]
+    def loops(function, unknowns) -> tuple[Jet, ...]:
+        found = function(*unknowns)
+        return found if isinstance(found, tuple) else (found,)
 
-    def jacobian(x1, x2):
-        columns = [still(Jet(x1, 1), Jet(x2)).d1, still(Jet(x1), Jet(x2, 1)).d1]
-        return mp.matrix([[mp.re(c) for c in columns], [mp.im(c) for c in columns]])
+    def parts(values) -> list:
+        return [part for z in values for part in (mp.re(z), mp.im(z))]
+
+    def f(*x):
+        return parts(z.d0 for z in loops(still, [Jet(value) for value in x]))
+
+    def jacobian(*x):
+        columns = [parts(z.d1 for z in loops(still, [Jet(value, 1 if k == column else 0) for k, value in enumerate(x)]))
+                   for column in range(count)]
+        return mp.matrix([[column[row] for column in columns] for row in range(count)])
 
     try:
         # Near a toggle the root is nearly double and Newton slows to halving its error each step.
         root = mp.findroot(f, guess, solver="mdnewton", J=jacobian, maxsteps=400)
     except (ValueError, ZeroDivisionError) as error:
         raise ReferenceSolutionError(f"group {group.label}: no 50-digit position ({error})") from None
-    q0 = (root[0], root[1])
+    q0 = [root[k] for k in range(count)]
     J = jacobian(*q0)
     if abs(mp.det(J)) < mp.mpf(10) ** (-(DPS - 10)):
         raise ReferenceSolutionError(f"group {group.label}: the closure's Jacobian is singular (a toggle)")
-    first = moving(Jet(q0[0]), Jet(q0[1])).d1
-    q1 = mp.lu_solve(J, -mp.matrix([mp.re(first), mp.im(first)]))
-    second = moving(Jet(q0[0], q1[0]), Jet(q0[1], q1[1])).d2
-    q2 = mp.lu_solve(J, -mp.matrix([mp.re(second), mp.im(second)]))
-    unknowns = (Jet(q0[0], q1[0], q2[0]), Jet(q0[1], q1[1], q2[1]))
-    closed = moving(*unknowns)
-    return unknowns, (abs(closed.d0), abs(closed.d1), abs(closed.d2))
+    first = parts(z.d1 for z in loops(moving, [Jet(value) for value in q0]))
+    q1 = mp.lu_solve(J, -mp.matrix(first))
+    second = parts(z.d2 for z in loops(moving, [Jet(value, q1[k]) for k, value in enumerate(q0)]))
+    q2 = mp.lu_solve(J, -mp.matrix(second))
+    unknowns = tuple(Jet(q0[k], q1[k], q2[k]) for k in range(count))
+    closed = loops(moving, unknowns)
+    return unknowns, tuple(max(abs(getattr(z, part)) for z in closed) for part in ("d0", "d1", "d2"))  # type: ignore[return-value]
 
 
 def _place(spec, mechanism, points, angles) -> Jet:

@@ -306,22 +306,25 @@ def _read_driver(table: Table | None) -> Driver:
     return DRIVERS[kind].read(table, link)
 
 
+_COUNTS = {2: "two", 4: "four"}
+
+
 def _read_group(where: str, item: object) -> Group:
     table = Table(item, where)
     kind = table.choice("kind", tuple(GROUPS))
     cls = GROUPS[kind]
-    pairs = table.items("links", length=2)
+    pairs = table.items("links", length=cls.link_count)
     assert pairs is not None
     links = tuple(check_int(value, w) for w, value in pairs)
     for (w, _), number in zip(pairs, links):
         if number < 1:
             raise SceneError(w, "must be a link number >= 1", number)
-    if links[0] == links[1]:
-        raise SceneError(table.where("links"), "must name two different links", list(links))
+    if len(set(links)) != len(links):
+        raise SceneError(table.where("links"), f"must name {_COUNTS.get(cls.link_count, cls.link_count)} different links", list(links))
     joints = table.names("joints", len(cls.joint_roles))
     if len(set(joints)) != len(joints):
         raise SceneError(table.where("joints"), "must name different joints", list(joints))
-    return cls.read(table, (links[0], links[1]), joints)
+    return cls.read(table, links, joints)
 
 
 def _read_points(table: Table | None) -> tuple[PointSpec, ...]:

@@ -145,7 +145,7 @@ def test_a_similarity_step_names_plan_points_whose_figure_is_similar_to_the_link
         members = {letter for _, letter in plan.members[similar.link]}
         assert set(similar.basis) <= members
         (la, lb), (na, nb) = similar.basis, similar.basis_points
-        pa, pb, at = (_where(pp.positions, name, similar.link) for name in (na, nb, similar.point))
+        pa, pb, at = (_where({**pp.positions, **plan.auxiliary}, name, similar.link) for name in (na, nb, similar.point))
         assert pa != pb
         image = plan.points[la] + (plan.points[lb] - plan.points[la]) * (at - pa) / (pb - pa)
         extent = max(abs(plan.points[la]), abs(plan.points[lb]), abs(plan.points[similar.letter]), 1e-300)
@@ -161,7 +161,7 @@ def test_a_line_of_action_runs_along_what_it_names(case):
             along, what = line.along, (step.equation, line.along)
             assert line.through in plan.points, what
             if along.kind in ("perpendicular", "parallel"):
-                first, second = (pp.positions[name] for name in along.points)
+                first, second = ({**pp.positions, **plan.auxiliary}[name] for name in along.points)
                 segment = second - first
                 assert (_square if along.kind == "perpendicular" else _parallel)(line.direction, segment), what
             elif along.kind == "guide":

@@ -89,7 +89,16 @@ class GuideMotion:
 
 
 class Context(Protocol):
-    """What a group may ask while it solves: the motion found so far."""
+    """What a group may ask while it solves: the motion found so far.
+
+    ``count`` is the number of positions; ``start`` the index of the position
+    where the branches were chosen, from which a group solved by
+    continuation walks out to its neighbours on either side (the positions
+    are in driver order then).
+    """
+
+    count: int
+    start: int
 
     def point(self, name: str) -> PointMotion: ...
 
@@ -124,22 +133,35 @@ class GroupMotion:
 
 @dataclass(frozen=True)
 class Group:
-    """A class-II Assur group: two links, three kinematic pairs.
+    """An Assur group: by default of class II, two links and three kinematic pairs.
 
     Subclasses set ``kind`` and ``joint_roles`` and implement :meth:`read`,
-    :meth:`solve` and the membership queries.
+    :meth:`solve` and the membership queries.  A group of a higher class
+    sets its ``link_count``, ``klass`` and ``order`` (its pairs are
+    ``3·link_count/2``, W = 0).  ``continuation`` says that its position has
+    no closed form and is followed from a neighbouring position
+    (``Context.start``), so the motion must ask for positions close enough.
     """
 
     kind: ClassVar[str]
     joint_roles: ClassVar[tuple[str, ...]]
+    link_count: ClassVar[int] = 2
+    klass: ClassVar[int] = 2
+    order: ClassVar[int] = 2
+    continuation: ClassVar[bool] = False
     where: str
-    links: tuple[int, int]
+    links: tuple[int, ...]
     joints: tuple[str, ...]
 
     @property
     def label(self) -> str:
         """The group as the structure formula writes it: ``II(3,4)``."""
         return f"II({self.links[0]},{self.links[1]})"
+
+    @property
+    def pair_count(self) -> int:
+        """Its lower pairs: 3n/2 for an Assur group of n links (W = 3n − 2·p5 = 0)."""
+        return 3 * self.link_count // 2
 
     # Membership, used to check the structure and to place named points.
     def known_joints(self) -> tuple[str, ...]:

@@ -225,7 +225,7 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         eta = float(efficiency(analysis.mechanism, ideal, rubbing.balancing))
     return force_layout.ForceSheet(
         mechanism=analysis.mechanism, motion=analysis.motion, index=plan_position.index,
-        number=plan_position.number, positions=plan_position.positions, forces=forces,
+        number=plan_position.number, positions={**plan_position.positions, **forces.auxiliary}, forces=forces,
         lever=lever, velocity=velocity, length_scale=length_scale(analysis),
         title=text[title].format(title=analysis.scene.title, number=plan_position.number),
         text=text, friction=friction, without_friction=ideal, efficiency=eta,

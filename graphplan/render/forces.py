@@ -591,7 +591,7 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
     with nothing in it (a load through the joint) is left out.
     """
     text = sheet.text
-    unknown, about = equation.unknown, f"ΣM{equation.about}({equation.link}):"
+    unknown, about = equation.unknown, f"ΣM{equation.about}({equation.bodies}):"
     terms = " ".join(parts)
     total = sum(term.moment for term in equation.terms)
     if unknown.endswith("·x"):

@@ -270,7 +270,7 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
             terms = ", ".join(f"{term.name}: {number(term.moment)} {newton_metre}"
                               + (f" (h = {number(term.arm, 4)} {metre})" if term.arm else "")
                               for term in equation.terms)
-            lines.append(f"- {group.label}: ΣM{equation.about}({equation.link}) = 0 → {equation.unknown} = "
+            lines.append(f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {equation.unknown} = "
                          f"{number(equation.value)}" + (f"; {terms}" if terms else ""))
     lines += ["", f"### {text['forces_reactions']}", "",
               text["forces_polygon_scale"].format(value=number(forces.scale)), "", *reaction_lines(analysis, plan),
