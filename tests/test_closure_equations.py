@@ -194,7 +194,28 @@ def check_rpp(m: Solved, group) -> None:
     assert_small(f"angle of link {block} − the slot's", wrapped(m.angle(block) - np.angle(slot)), 1.0)
 
 
-CHECKS = {"RRR": check_rrr, "RRP": check_rrp, "RPR": check_rpr, "PRP": check_prp, "RPP": check_rpp}
+def check_triad(m: Solved, group) -> None:
+    a, b, c, d, e, f = (m.r(name) for name in group.joints)
+    for (outer, inner), length, (o_name, i_name) in zip(((a, b), (c, d), (e, f)), group.lengths,
+                                                         zip(group.joints[0::2], group.joints[1::2])):
+        assert_small(f"|{o_name}{i_name}| − {length}", np.abs(inner - outer) - length, m.size)
+    bd, df, fb = group.sides
+    assert_small("|BD| − lBD", np.abs(d - b) - bd, m.size)
+    assert_small("|DF| − lDF", np.abs(f - d) - df, m.size)
+    assert_small("|FB| − lFB", np.abs(b - f) - fb, m.size)
+    turn = np.sign(cross(d - b, f - b))
+    assert np.all(turn == turn[0]), "the ternary link turned over: the assembly jumped"
+    sketch = dict(group.near)
+    assert turn[0] == np.sign(cross(sketch[group.joints[3]] - sketch[group.joints[1]],
+                                    sketch[group.joints[5]] - sketch[group.joints[1]])), "BDF turns against the sketch"
+    *binaries, ternary = group.links
+    for link, (o_name, i_name), (outer, inner) in zip(binaries, zip(group.joints[0::2], group.joints[1::2]),
+                                                      ((a, b), (c, d), (e, f))):
+        assert_small(f"angle of link {link} − direction {o_name}{i_name}", wrapped(m.angle(link) - np.angle(inner - outer)), 1.0)
+    assert_small(f"angle of link {ternary} − direction BD", wrapped(m.angle(ternary) - np.angle(d - b)), 1.0)
+
+
+CHECKS = {"RRR": check_rrr, "RRP": check_rrp, "RPR": check_rpr, "PRP": check_prp, "RPP": check_rpp, "triad": check_triad}
 
 
 def test_every_group_satisfies_its_closure_equations(mechanism_motion):

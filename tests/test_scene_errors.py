@@ -388,10 +388,12 @@ CASES: list[Case] = [
 
     # -- [[groups]]: what every kind shares
     Case("group-kind-missing", {"groups.0.kind": DELETE}, "groups[0].kind", "is required but missing"),
-    Case("group-kind-unknown", {"groups.0.kind": "triad"}, "groups[0].kind",
-         "must be one of RRR, RRP, RPR, PRP, RPP (got 'triad')"),
+    Case("group-kind-unknown", {"groups.0.kind": "cam"}, "groups[0].kind",
+         "must be one of RRR, RRP, RPR, PRP, RPP, triad (got 'cam')"),
     Case("group-kind-near-miss", {"groups.0.kind": "RRRR"}, "groups[0].kind",
-         "must be one of RRR, RRP, RPR, PRP, RPP; did you mean 'RRR'? (got 'RRRR')"),
+         "must be one of RRR, RRP, RPR, PRP, RPP, triad; did you mean 'RRR'? (got 'RRRR')"),
+    Case("group-triad-with-two-links", {"groups.0.kind": "triad"}, "groups[0].links",
+         "must have 4 entries, not 2 (got [3, 4])"),
     Case("group-links-missing", {"groups.0.links": DELETE}, "groups[0].links", "is required but missing"),
     Case("group-links-string", {"groups.0.links": "3,4"}, "groups[0].links", "must be a list, not a string (got '3,4')"),
     Case("group-links-one", {"groups.0.links": [3]}, "groups[0].links", "must have 2 entries, not 1 (got [3])"),

@@ -9,9 +9,10 @@ from .rpp import RPP
 from .rpr import RPR
 from .rrp import RRP
 from .rrr import RRR
+from .triad import Triad
 
 DRIVERS: dict[str, type[Crank | Slider]] = {"crank": Crank, "slider": Slider}
-GROUPS: dict[str, type[Group]] = {kind.kind: kind for kind in (RRR, RRP, RPR, PRP, RPP)}
+GROUPS: dict[str, type[Group]] = {kind.kind: kind for kind in (RRR, RRP, RPR, PRP, RPP, Triad)}
 
 Driver = Crank | Slider
 

@@ -174,17 +174,19 @@ class _Note:
         rows = [[f"I({self.frame},{driver.link})", self.t("note_group_driver"), f"{self.frame}, {driver.link}",
                  ", ".join(driver.known_joints() + driver.new_joints()), self.t(f"driver_{driver.kind}")]]
         for group in mechanism.groups:
-            rows.append([group.label, self.t("note_class_order", klass=_ROMAN[2], order=2),
+            rows.append([group.label, self.t("note_class_order", klass=_ROMAN[group.klass], order=group.order),
                          ", ".join(str(link) for link in group.links), ", ".join(group.joints),
                          self.kind_name(group.kind)])
         header = [self.t("column_group"), self.t("column_class_order"), self.t("column_links"),
                   self.t("column_joints"), self.t("column_kind")]
         self.table(self.t("note_groups_caption"), header, rows)
-        klass = _ROMAN[2] if mechanism.groups else _ROMAN[1]
+        klass = _ROMAN[max((group.klass for group in mechanism.groups), default=1)]
         self.para(self.t("note_structure_formula", formula=mechanism.structure, klass=klass))
 
     def kind_name(self, kind: str) -> str:
         """RRR as the locale letters a group (ВВВ in Russian); the Latin letters alongside when they differ."""
+        if f"kind_{kind}" in self.text:  # a kind not named by its pairs (the triad)
+            return self.text[f"kind_{kind}"]
         letters = "".join(self.text["pair_turning"] if c == "R" else self.text["pair_sliding"] for c in kind)
         return letters if letters == kind else f"{letters} ({kind})"
 
@@ -221,7 +223,7 @@ class _Note:
 
         for unit in self.mechanism.units:
             for names in unit.solver.fixed_points().values():
-                for first, second in itertools.pairwise(names):
+                for first, second in itertools.combinations(names, 2):
                     add(first, second)
             for spec in unit.points:
                 add(spec.start, spec.name)
@@ -255,6 +257,7 @@ class _Note:
             else:
                 group = unit.solver
                 self.para(f"**{self.t('note_group_heading', group=group.label, kind=self.kind_name(group.kind))}**")
+                self.assur_point(plan, steps)
                 for step in steps:
                     if step.similarity is None:
                         self.group_step(pp, plan, step)
@@ -262,6 +265,15 @@ class _Note:
             if similar:
                 self.para(self.t("note_similarity"), *(f"- {line}" for line in similar))
         self.readings(pp, plan)
+
+    def assur_point(self, plan: Plan, steps: list[Step]) -> None:
+        """Why a triad's plan starts at Assur's special point, which its first step fixes."""
+        first = next((step for step in steps if step.fixes), None)
+        if plan.kind != "velocity" or first is None or not first.fixes or first.fixes[-1] not in {image_name(name) for name in plan.auxiliary}:
+            return
+        point = next(name for name in plan.auxiliary if image_name(name) == first.fixes[-1])
+        lines = ["".join(line.along.points) for line in first.lines]
+        self.para(self.t("note_assur_point", point=point, link=point[1:], first=lines[0], second=lines[1]))
 
     def blocks(self, plan: Plan) -> list[tuple[int, list[Step]]]:
         """The plan's steps by the unit of the structure (driver, groups) that drew them, in order.
@@ -786,6 +798,11 @@ class _Note:
         driver = group.label.startswith("I(")
         key = "note_driver_forces" if driver else "note_group_forces"
         self.para(f"**{self.t(key, group=group.label)}**")
+        whole = next((equation for equation in group.moments if equation.links), None)
+        if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
+            closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
+            self.para(self.t("note_assur_forces", point=whole.about, unknown=whole.unknown,
+                             closing=", ".join(closing)))
         loads = {load.name: load for load in group.loads}
         lines = []
         for equation in group.moments:
@@ -830,13 +847,13 @@ class _Note:
         terms = "".join(f" {'−' if term.moment < 0 else '+'} {self.n(abs(term.moment))}" for term in shown)
         sum_text = self.n(total)
         if couple:
-            line = (f"ΣM{equation.about}({equation.link}) = {equation.unknown}{terms} = 0 ⇒ "
+            line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
                     f"{equation.unknown} = {self.n(equation.value)} {unit}")
         else:
             lever = -total / equation.value if equation.value else equation.arm
             sign = "−" if lever < 0 else ""
             solved = f"{sum_text}/{self.n(equation.arm, 4)}" if lever < 0 else f"−({sum_text})/{self.n(equation.arm, 4)}"
-            line = (f"ΣM{equation.about}({equation.link}) = {sign}{equation.unknown}·{self.n(equation.arm, 4)}{terms} = 0"
+            line = (f"ΣM{equation.about}({equation.bodies}) = {sign}{equation.unknown}·{self.n(equation.arm, 4)}{terms} = 0"
                     f" ⇒ {equation.unknown} = {solved} = {self.n(equation.value)} {unit}")
             if equation.value < 0:
                 line += " " + self.t("note_sense_reversed", name=equation.unknown)

@@ -1,0 +1,129 @@
+"""The class III triad: what the fixture-wide tests cannot show.
+
+Every fixture, the triad's included, is already checked against its closure equations, finite
+differences, the 50-digit reference, the plans and the linear system of statics.  Here: which
+assembly the sketch picks and that it is kept whatever positions are asked for, Assur's special
+point against its definition, the structure formula, and every kind of bad input.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.errors import AssemblyError, SceneError
+from graphplan.scene import loads
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "triad_class_iii.toml"
+TEXT = FIXTURE.read_text(encoding="utf-8")
+SKETCH = 'near    = { B = [0.14, 0.10], D = [0.26, 0.10], F = [0.20, 0.19] }'
+assert SKETCH in TEXT
+
+
+def _scene(old: str = "", new: str = ""):
+    assert old in TEXT
+    return loads(TEXT.replace(old, new))
+
+
+def _xy(motion, name: str) -> np.ndarray:
+    r = motion.point(name).r
+    return r[:, 0] + 1j * r[:, 1]
+
+
+def test_the_structure_formula_names_a_class_iii_group_of_the_third_order():
+    mechanism = graphplan.build(graphplan.load(FIXTURE))
+    assert mechanism.structure == "I(1,2) → III3(3,4,5,6)"
+    # W = 3n − 2p5 with n = 5 moving links and p5 = 1 + 6 pairs
+    assert mechanism.degrees_of_freedom == (5, 7, 1)
+
+
+def test_another_sketch_picks_another_assembly_that_closes_as_well():
+    # The second assembly of the triad at φ = 0, found by hand from the same lengths.
+    other = _scene(SKETCH, 'near = { B = [0.036, 0.134], D = [0.129, 0.058], F = [0.140, 0.165] }')
+    first = graphplan.solve(graphplan.load(FIXTURE), driver=[0.0])
+    second = graphplan.solve(other, driver=[0.0])
+    assert abs(_xy(first, "B")[0] - (0.14 + 0.10j)) < 0.005
+    assert abs(_xy(second, "B")[0] - (0.036 + 0.134j)) < 0.005
+    a, c, e = 0.05 + 0j, 0.22 + 0j, 0.10 + 0.35j
+    b, d, f = (_xy(second, name)[0] for name in "BDF")
+    for closing, expected in ((abs(b - a), 0.135), (abs(d - c), 0.108), (abs(f - e), 0.189),
+                              (abs(d - b), 0.12), (abs(f - d), 0.108), (abs(b - f), 0.108)):
+        assert closing == pytest.approx(expected, abs=1e-12)
+
+
+def test_the_assembly_is_the_same_whatever_positions_are_asked_for():
+    scene = graphplan.load(FIXTURE)
+    every = graphplan.solve(scene)
+    values = every.driver
+    for index in (3, 7, 10):
+        alone = graphplan.solve(scene, driver=[values[index]])
+        for name in "BDF":
+            assert abs(_xy(alone, name)[0] - _xy(every, name)[index]) < 1e-12
+        assert alone.link(6).omega[0] == pytest.approx(every.link(6).omega[index], rel=1e-10)
+    backwards = graphplan.solve(scene, driver=values[::-1])
+    assert np.allclose(_xy(backwards, "F"), _xy(every, "F")[::-1], atol=1e-12)
+
+
+def test_assurs_point_lies_on_two_binary_links_and_moves_with_the_ternary_link():
+    analysis = analyse(graphplan.load(FIXTURE))
+    for plan_position in analysis.plans:
+        velocity = plan_position.velocity
+        positions = plan_position.positions
+        (name, sigma), = velocity.auxiliary.items()
+        assert name == "Σ6"
+        on_lines = [pair for pair in (("A", "B"), ("C", "D"), ("E", "F"))
+                    if abs(((positions[pair[1]] - positions[pair[0]]).conjugate() * (sigma - positions[pair[0]])).imag)
+                    <= 1e-9 * abs(sigma - positions[pair[0]]) * abs(positions[pair[1]] - positions[pair[0]])]
+        assert len(on_lines) >= 2, "Σ is where the lines of two binary links cross"
+        # The analytic velocity of the ternary link's point at Σ: vB + ω6 × BΣ.
+        index = plan_position.index
+        b = _xy(analysis.motion, "B")[index]
+        v_b = analysis.motion.point("B").v[index]
+        omega = analysis.motion.link(6).omega[index]
+        expected = complex(*v_b) + 1j * omega * (sigma - b)
+        assert abs(velocity.points["σ6"] - expected) <= 1e-9 * abs(expected)
+
+
+@pytest.mark.parametrize(("old", "new", "where", "message"), [
+    ("sides   = [0.12, 0.108, 0.108]", "sides = [0.12, 0.05, 0.05]", "groups[0].sides", "must make a triangle"),
+    (SKETCH, 'near = { B = [0.14, 0.10], D = [0.26, 0.10] }', "groups[0].near", "missing F"),
+    (SKETCH, 'near = { B = [0.14, 0.10], D = [0.26, 0.10], F = [0.20, 0.19], A = [0, 0] }', "groups[0].near.A",
+     "must name an inner joint"),
+    (SKETCH, 'near = { B = [0.1, 0.1], D = [0.2, 0.2], F = [0.3, 0.3] }', "groups[0].near", "lie in a line"),
+    ("links   = [3, 4, 5, 6]", "links = [3, 4, 5]", "groups[0].links", "must have 4 entries"),
+    ("links   = [3, 4, 5, 6]", "links = [3, 4, 5, 5]", "groups[0].links", "must name four different links"),
+    ("lengths = [0.135, 0.108, 0.189]", "lengths = [0.135, 0.108, -0.189]", "groups[0].lengths[2]", "must be > 0"),
+])
+def test_a_bad_triad_is_refused_with_its_key(old, new, where, message):
+    with pytest.raises(SceneError) as caught:
+        _scene(old, new)
+    assert caught.value.where == where and message in str(caught.value)
+
+
+def test_a_triad_that_cannot_close_says_so_and_writes_nothing(tmp_path, capsys):
+    scene = tmp_path / "short.toml"
+    scene.write_text(TEXT.replace("lengths = [0.135, 0.108, 0.189]", "lengths = [0.135, 0.108, 0.02]"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert "B cannot be assembled" in error and "III(3,4,5,6)" in error and "EF = 0.02" in error
+    assert not out.exists()
+
+
+def test_a_triad_that_reaches_a_limit_position_stops_there():
+    # A longer crank drags the triad to a limit position before 200°: the walk stops there, naming it.
+    scene = _scene("length = 0.05 ", "length = 0.08 ")
+    with pytest.raises(AssemblyError) as caught:
+        graphplan.solve(scene)
+    error = caught.value
+    assert error.group == "III(3,4,5,6)" and "limit position" in error.reason
+    angle = float(error.position.split("φ = ")[1].split("°")[0])
+    assert 90 < angle < 200
+    # Just before it the triad still closes; the positions asked for before it are solved.
+    assert graphplan.solve(scene, driver=[math.radians(angle - 2)]).count == 1
