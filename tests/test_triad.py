@@ -127,3 +127,11 @@ def test_a_triad_that_reaches_a_limit_position_stops_there():
     assert 90 < angle < 200
     # Just before it the triad still closes; the positions asked for before it are solved.
     assert graphplan.solve(scene, driver=[math.radians(angle - 2)]).count == 1
+
+
+def test_the_plan_sheet_marks_assurs_point_on_the_mechanism(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "velocity"]) == 0
+    drawing = (out / "plan_2.svg").read_text(encoding="utf-8")
+    assert ">Σ6<" in drawing, "the special point is lettered on the mechanism"
+    assert ">σ6<" in drawing, "and its image on the velocity plan"

@@ -26,7 +26,7 @@ from shapely.ops import unary_union
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
-from ..plans import PLAN_FIELD_MM, Plan
+from ..plans import PLAN_FIELD_MM, Plan, image_name
 from .labels import Anchor, obstacles_of, open_direction, place_labels
 from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
 from .primitives import text_span as _width
@@ -194,15 +194,36 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
     marks += [dot_marker(paper(r)) for name, r in mechanism.scene.frame_points.items() if name not in pivots]
     senses, turn_anchors = _senses(sheet, outlines, where, paper, frame)
+    special, special_at = _special_points(sheet.velocity, where, paper)
+    marks += special
     drawn = links + frame + marks + senses
     # Points fixed on a link only: an RPR lever's point under the block would just repeat a label.
     names = [name for name in motion.points if any(name in on for on in mechanism.fixed_on.values())]
     anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn))
                for name in names]
+    anchors += [Anchor(paper(r), name, LETTER_SIZE, open_direction(paper(r), drawn)) for name, r in special_at.items()]
     labels = place_labels(anchors + turn_anchors, obstacles_of(drawn))
     return [Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
             Layer("mechanism-senses", tuple(senses)), Layer("mechanism-points", tuple(marks)),
             Layer("mechanism-leaders", labels.leaders), Layer("mechanism-labels", labels.texts)]
+
+
+def _special_points(velocity: Plan, where: Callable[[str], complex],
+                    paper: Paper) -> tuple[list[Primitive], dict[str, complex]]:
+    """Assur's special points the plan was built through, each with the links' lines run on to it, dashed.
+
+    The lines are those of the step that fixed the point's image (⊥ AB and ⊥ EF: Σ lies on AB and EF).
+    """
+    items: list[Primitive] = []
+    for name, r in velocity.auxiliary.items():
+        items.append(dot_marker(paper(r)))
+        for step in velocity.steps:
+            if image_name(name) not in step.fixes:
+                continue
+            for line in step.lines:
+                nearer = min(line.along.points, key=lambda point: abs(where(point) - r))
+                items.append(Polyline((paper(where(nearer)), paper(r)), _ACTION_RUN_ON))
+    return items, dict(velocity.auxiliary)
 
 
 def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[str], complex],
