@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, root
 
-from ..errors import AssemblyError, SceneError
+from ..errors import AssemblyError, SceneError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line, cross_lines
 from ..kinematics import LinkMotion, PointMotion, Scalar, Vector, cross
@@ -281,7 +281,6 @@ class Triad(Group):
         sine = np.linalg.det(normalised) / np.prod(np.linalg.norm(normalised, axis=2), axis=1)
         bad = np.abs(sine) < SINGULAR_SINE
         if bad.any():
-            from ..errors import SingularPositionError
             context.singular_where(bad, lambda i, at: SingularPositionError(
                 at, self.label, f"the triad is at a singular position (the binary links' lines meet in one point "
                                 f"or are parallel; normalised Jacobian {abs(float(sine[i])):.1e})"))
