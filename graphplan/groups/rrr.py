@@ -169,24 +169,11 @@ class RRR(Group):
         a_pos, b_pos, c_pos = (board.positions[n] for n in self.joints)
         a, c = board.images[a_name], board.images[c_name]
         omega_a, omega_b = velocities.rates[self.links[0]], velocities.rates[self.links[1]]
-        normal_a = board.mark(f"n{self.links[0]}", board.points[a] - omega_a**2 * (b_pos - a_pos))
-        normal_b = board.mark(f"n{self.links[1]}", board.points[c] - omega_b**2 * (b_pos - c_pos))
-        along_ab, along_cb = 1j * (b_pos - a_pos), 1j * (b_pos - c_pos)
-        b_value, angle = board.cross(Line(board.points[normal_a], along_ab, f"⊥{a_name}{b_name}"),
-                                     Line(board.points[normal_b], along_cb, f"⊥{c_name}{b_name}"))
-        b = board.fix(b_name, b_value)
+        b = crossed_from_two_pivots(board, b_name, b_pos, (a_name, a, a_pos, omega_a, f"n{self.links[0]}"),
+                                    (c_name, c, c_pos, omega_b, f"n{self.links[1]}"))
         for link, first, letter in ((self.links[0], a_pos, a), (self.links[1], c_pos, c)):
             board.on_link(link, first, letter)
             board.on_link(link, b_pos, b)
-        board.step(Step(
-            equation=(f"a{b_name} = a{a_name} + a{b_name}{a_name}ⁿ + a{b_name}{a_name}^τ"
-                      f" = a{c_name} + a{b_name}{c_name}ⁿ + a{b_name}{c_name}^τ"),
-            vectors=(LaidVector(a, normal_a, f"a{b_name}{a_name}ⁿ"), LaidVector(normal_a, b, f"a{b_name}{a_name}^τ"),
-                     LaidVector(c, normal_b, f"a{b_name}{c_name}ⁿ"), LaidVector(normal_b, b, f"a{b_name}{c_name}^τ"),
-                     LaidVector("p", b, f"a{b_name}")),
-            lines=(DrawnLine(normal_a, along_ab, LineMeaning("perpendicular", (a_name, b_name))),
-                   DrawnLine(normal_b, along_cb, LineMeaning("perpendicular", (c_name, b_name)))),
-            fixes=(normal_a, normal_b, b), crossing_deg=angle))
 
     # The forces: the group cut free, as drawn.
 
@@ -214,6 +201,34 @@ class RRR(Group):
         board.hand_back(board.react(rc, c_name, pc, lb, tc * across_c + rc_along))
         board.react(f"R{la}{lb}", b_name, la, lb, -r_ba)
         board.finish_group(self.label, self.links, polygon.record())
+
+
+def crossed_from_two_pivots(board: Builder, point: str, where: complex,
+                            first: tuple[str, str, complex, float, str], second: tuple[str, str, complex, float, str]) -> str:
+    """aP = aA + aPAⁿ + aPA^τ = aC + aPCⁿ + aPC^τ on the acceleration plan: P's image, fixed and returned.
+
+    Each pivot is (name, plan letter, position, ω of the arm to P, letter of the normal part's end);
+    the normal parts ω²·l point from P to the pivots, the tangential lines are square to the arms.
+    """
+    normals, lines = [], []
+    for name, image, position, omega, letter in (first, second):
+        normal = board.mark(letter, board.points[image] - omega**2 * (where - position))
+        normals.append(normal)
+        lines.append(Line(board.points[normal], 1j * (where - position), f"⊥{name}{point}"))
+    value, angle = board.cross(*lines)
+    fixed = board.fix(point, value)
+    (a_name, a, _, _, _), (c_name, c, _, _, _) = first, second
+    normal_a, normal_c = normals
+    board.step(Step(
+        equation=(f"a{point} = a{a_name} + a{point}{a_name}ⁿ + a{point}{a_name}^τ"
+                  f" = a{c_name} + a{point}{c_name}ⁿ + a{point}{c_name}^τ"),
+        vectors=(LaidVector(a, normal_a, f"a{point}{a_name}ⁿ"), LaidVector(normal_a, fixed, f"a{point}{a_name}^τ"),
+                 LaidVector(c, normal_c, f"a{point}{c_name}ⁿ"), LaidVector(normal_c, fixed, f"a{point}{c_name}^τ"),
+                 LaidVector("p", fixed, f"a{point}")),
+        lines=tuple(DrawnLine(normal, line.direction, LineMeaning("perpendicular", (name, point)))
+                    for normal, line, (name, *_) in zip(normals, lines, (first, second))),
+        fixes=(normal_a, normal_c, fixed), crossing_deg=angle))
+    return fixed
 
 
 def _two_lines(wx: Scalar, wy: Scalar, abx: Scalar, aby: Scalar, cbx: Scalar, cby: Scalar,

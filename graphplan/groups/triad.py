@@ -35,6 +35,7 @@ from ..kinematics import LinkMotion, PointMotion, Scalar, Vector, cross
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy
 from .base import SINGULAR_SINE, Context, Group, GroupMotion
+from .rrr import crossed_from_two_pivots
 
 # Samples of B's circle at the reference position: two assemblies closer than a 2048th of a
 # turn of AB would be missed, and such a triad is at a singular position anyway.
@@ -395,22 +396,8 @@ class Triad(Group):
             equation=(f"a{sigma_name} = a{oi} + a{ni}{oi}ⁿ + a{sigma_name}{ni}ⁿ + a{sigma_name}{oi}^τ"
                       f" = a{oj} + a{nj}{oj}ⁿ + a{sigma_name}{nj}ⁿ + a{sigma_name}{oj}^τ"),
             vectors=tuple(vectors), lines=tuple(lines), fixes=(*(end for end, _, _ in ends), sigma), crossing_deg=angle))
-        image_k = board.images[ok]
-        normal_t = board.mark(f"n{t}″", board.points[sigma] - whirl_t * (positions[nk] - sigma_pos))
-        normal_k = board.mark(f"n{lk}", board.points[image_k] - velocities.rates[lk] ** 2 * (positions[nk] - positions[ok]))
-        across_sigma, across_k = 1j * (positions[nk] - sigma_pos), 1j * (positions[nk] - positions[ok])
-        value, angle = board.cross(Line(board.points[normal_t], across_sigma, f"⊥{sigma_name}{nk}"),
-                                   Line(board.points[normal_k], across_k, f"⊥{ok}{nk}"))
-        letter_k = board.fix(nk, value)
-        board.step(Step(
-            equation=(f"a{nk} = a{sigma_name} + a{nk}{sigma_name}ⁿ + a{nk}{sigma_name}^τ"
-                      f" = a{ok} + a{nk}{ok}ⁿ + a{nk}{ok}^τ"),
-            vectors=(LaidVector(sigma, normal_t, f"a{nk}{sigma_name}ⁿ"), LaidVector(normal_t, letter_k, f"a{nk}{sigma_name}^τ"),
-                     LaidVector(image_k, normal_k, f"a{nk}{ok}ⁿ"), LaidVector(normal_k, letter_k, f"a{nk}{ok}^τ"),
-                     LaidVector("p", letter_k, f"a{nk}")),
-            lines=(DrawnLine(normal_t, across_sigma, LineMeaning("perpendicular", (sigma_name, nk))),
-                   DrawnLine(normal_k, across_k, LineMeaning("perpendicular", (ok, nk)))),
-            fixes=(normal_t, normal_k, letter_k), crossing_deg=angle))
+        crossed_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
+                                (ok, board.images[ok], positions[ok], velocities.rates[lk], f"n{lk}"))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
         for n in (i, j):  # εa and εb are read off the tangential parts that end at b and d
             outer, inner, link = arms[n]
