@@ -147,21 +147,11 @@ class RRR(Group):
         a_name, b_name, c_name = self.joints
         a_pos, b_pos, c_pos = (board.positions[n] for n in self.joints)
         a, c = board.images[a_name], board.images[c_name]
-        along_ab, along_cb = 1j * (b_pos - a_pos), 1j * (b_pos - c_pos)
-        b_value, angle = board.cross(Line(board.points[a], along_ab, f"⊥{a_name}{b_name}"),
-                                     Line(board.points[c], along_cb, f"⊥{c_name}{b_name}"))
-        b = board.fix(b_name, b_value)
+        b = velocity_from_two_pivots(board, b_name, b_pos, (a_name, a, a_pos), (c_name, c, c_pos))
         board.on_link(self.links[0], a_pos, a)
         board.on_link(self.links[0], b_pos, b)
         board.on_link(self.links[1], c_pos, c)
         board.on_link(self.links[1], b_pos, b)
-        board.step(Step(
-            equation=f"v{b_name} = v{a_name} + v{b_name}{a_name} = v{c_name} + v{b_name}{c_name}",
-            vectors=(LaidVector(a, b, f"v{b_name}{a_name}"), LaidVector(c, b, f"v{b_name}{c_name}"),
-                     LaidVector("p", b, f"v{b_name}")),
-            lines=(DrawnLine(a, along_ab, LineMeaning("perpendicular", (a_name, b_name))),
-                   DrawnLine(c, along_cb, LineMeaning("perpendicular", (c_name, b_name)))),
-            fixes=(b,), crossing_deg=angle))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
         """aB = aA + aBA^n + aBA^τ = aC + aBC^n + aBC^τ, the normal parts ω²·l toward A and C."""
@@ -201,6 +191,26 @@ class RRR(Group):
         board.hand_back(board.react(rc, c_name, pc, lb, tc * across_c + rc_along))
         board.react(f"R{la}{lb}", b_name, la, lb, -r_ba)
         board.finish_group(self.label, self.links, polygon.record())
+
+
+def velocity_from_two_pivots(board: Builder, point: str, where: complex,
+                             first: tuple[str, str, complex], second: tuple[str, str, complex]) -> str:
+    """vP = vA + vPA (⊥ AP) = vC + vPC (⊥ CP) on the velocity plan: P's image, fixed and returned.
+
+    Each pivot is (name, plan letter, position).
+    """
+    lines = [Line(board.points[image], 1j * (where - position), f"⊥{name}{point}") for name, image, position in (first, second)]
+    value, angle = board.cross(*lines)
+    fixed = board.fix(point, value)
+    (a_name, a, _), (c_name, c, _) = first, second
+    board.step(Step(
+        equation=f"v{point} = v{a_name} + v{point}{a_name} = v{c_name} + v{point}{c_name}",
+        vectors=(LaidVector(a, fixed, f"v{point}{a_name}"), LaidVector(c, fixed, f"v{point}{c_name}"),
+                 LaidVector("p", fixed, f"v{point}")),
+        lines=tuple(DrawnLine(image, line.direction, LineMeaning("perpendicular", (name, point)))
+                    for line, (name, image, _) in zip(lines, (first, second))),
+        fixes=(fixed,), crossing_deg=angle))
+    return fixed
 
 
 def crossed_from_two_pivots(board: Builder, point: str, where: complex,

@@ -35,7 +35,7 @@ from ..kinematics import LinkMotion, PointMotion, Scalar, Vector, cross
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy
 from .base import SINGULAR_SINE, Context, Group, GroupMotion
-from .rrr import crossed_from_two_pivots
+from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
 
 # Samples of B's circle at the reference position: two assemblies closer than a 2048th of a
 # turn of AB would be missed, and such a triad is at a singular position anyway.
@@ -356,18 +356,7 @@ class Triad(Group):
             lines=(DrawnLine(image_i, across_i, LineMeaning("perpendicular", (oi, ni))),
                    DrawnLine(image_j, across_j, LineMeaning("perpendicular", (oj, nj)))),
             fixes=(sigma,), crossing_deg=angle))
-        image_k = board.images[ok]
-        across_sigma, across_k = 1j * (positions[nk] - sigma_pos), 1j * (positions[nk] - positions[ok])
-        value, angle = board.cross(Line(board.points[sigma], across_sigma, f"⊥{sigma_name}{nk}"),
-                                   Line(board.points[image_k], across_k, f"⊥{ok}{nk}"))
-        letter_k = board.fix(nk, value)
-        board.step(Step(
-            equation=f"v{nk} = v{sigma_name} + v{nk}{sigma_name} = v{ok} + v{nk}{ok}",
-            vectors=(LaidVector(sigma, letter_k, f"v{nk}{sigma_name}"), LaidVector(image_k, letter_k, f"v{nk}{ok}"),
-                     LaidVector("p", letter_k, f"v{nk}")),
-            lines=(DrawnLine(sigma, across_sigma, LineMeaning("perpendicular", (sigma_name, nk))),
-                   DrawnLine(image_k, across_k, LineMeaning("perpendicular", (ok, nk)))),
-            fixes=(letter_k,), crossing_deg=angle))
+        velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos), (ok, board.images[ok], positions[ok]))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
