@@ -18,6 +18,9 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.errors import AssemblyError, SceneError
+from graphplan.render import forces as force_layout
+from graphplan.render.drawings import force_sheet, length_scale
+from graphplan.render.primitives import Circle, Polyline
 from graphplan.scene import loads
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "triad_class_iii.toml"
@@ -135,3 +138,33 @@ def test_the_plan_sheet_marks_assurs_point_on_the_mechanism(tmp_path):
     drawing = (out / "plan_2.svg").read_text(encoding="utf-8")
     assert ">Σ6<" in drawing, "the special point is lettered on the mechanism"
     assert ">σ6<" in drawing, "and its image on the velocity plan"
+
+
+def test_the_force_sheet_marks_assurs_point_where_the_group_moment_is_taken():
+    analysis = analyse(graphplan.load(FIXTURE))
+    plan_position = analysis.plans[0]
+    (name, sigma), = plan_position.forces.auxiliary.items()
+    assert any(equation.about == name for group in plan_position.forces.groups for equation in group.moments)
+    layers = {layer.name: layer for layer in force_layout.layout(force_sheet(analysis, plan_position))}
+    key = force_layout.group_id("III(3,4,5,6)")
+    assert name in {item.text for item in layers[f"body-{key}-labels"].items}
+    mm = 1.0 / length_scale(analysis)
+    positions = plan_position.positions
+    paper = {joint: positions[joint] * mm for joint in "ABCDEF"}
+    links = layers[f"body-{key}-links"].items
+    run_ons = [item for item in links if isinstance(item, Polyline) and item.stroke.dash]
+    markers = [complex(*item.centre) for item in links if isinstance(item, Circle) and item.radius < 1.0]
+    # The panel is moved as a whole: find the marker whose shift puts the run-on lines on the binary links.
+    for marker in markers:
+        shift = marker - sigma * mm
+        starts = {joint for item in run_ons for joint, at in paper.items()
+                  if abs(complex(*item.points[0]) - (at + shift)) < 1e-6
+                  and abs(complex(*item.points[-1]) - marker) < 1e-6}
+        if len(starts) >= 2:
+            break
+    else:
+        pytest.fail("no marker at Σ with the binary links' lines run on to it")
+    binary = {"A": "B", "B": "A", "C": "D", "D": "C", "E": "F", "F": "E"}
+    for joint in starts:
+        arm, other = positions[joint] - sigma, positions[binary[joint]] - sigma
+        assert abs((arm.conjugate() * other).imag) <= 1e-9 * abs(arm) * abs(other), f"Σ on the line of {joint}"

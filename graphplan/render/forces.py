@@ -255,6 +255,8 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
     paper = _paper(sheet.length_scale)
     is_driver = group is sheet.forces.groups[-1]
     links = _links(sheet, group, paper)
+    special, special_names = _special_points(sheet, group, paper)
+    links += special
     forces = _forces_on(sheet, group)
     scale = _arrow_scale([force.force for force in forces], links)
     arrows: list[Primitive] = []
@@ -282,7 +284,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
     arms += displaced
     arm_anchors += displaced_anchors
     figure = links + arrows + turning + circles + arms
-    for name in _named_points(sheet, group):
+    for name in _named_points(sheet, group) + special_names:
         where = paper(sheet.positions[name])
         anchors.append(Anchor(where, name, POINT_SIZE, open_direction(where, figure)))
     labels = _lettered(anchors + turning_anchors + circle_anchors + arm_anchors, figure)
@@ -369,6 +371,33 @@ def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tup
             if name in named:
                 items.append(dot_marker(paper(positions[name])))
     return items
+
+
+def _special_points(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[Primitive], list[str]]:
+    """Assur's special points the group's moment equations are taken about, each marked.
+
+    The lines of the binary links that cross there run on to it, dashed, as
+    on the plan sheet: the reader sees why the unknowns along them have no arm.
+    """
+    outlines = outline_points(sheet.mechanism, sheet.motion)
+    items: list[Primitive] = []
+    names: list[str] = []
+    for name in dict.fromkeys(equation.about for equation in group.moments):
+        if name not in sheet.forces.auxiliary:
+            continue
+        where = sheet.positions[name]
+        items.append(dot_marker(paper(where)))
+        names.append(name)
+        for link in group.links:
+            ends = [sheet.positions[joint] for joint in outlines.get(link, ())]
+            if len(ends) != 2 or abs(ends[1] - ends[0]) == 0.0:
+                continue
+            unit = (ends[1] - ends[0]) / abs(ends[1] - ends[0])
+            if abs(((where - ends[0]) * unit.conjugate()).imag) > 1e-9 * max(abs(where - ends[0]), 1.0):
+                continue
+            nearer = min(ends, key=lambda end: abs(end - where))
+            items.append(Polyline((paper(nearer), paper(where)), _ACTION_RUN_ON))
+    return items, names
 
 
 def _named_points(sheet: ForceSheet, group: GroupForces) -> list[str]:
