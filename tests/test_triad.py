@@ -9,6 +9,7 @@ point against its definition, the structure formula, and every kind of bad input
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +22,7 @@ from graphplan.errors import AssemblyError, SceneError
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, length_scale
 from graphplan.render.primitives import Circle, Polyline
+from graphplan.report.note import note_html, note_markdown
 from graphplan.scene import loads
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "triad_class_iii.toml"
@@ -168,3 +170,37 @@ def test_the_force_sheet_marks_assurs_point_where_the_group_moment_is_taken():
     for joint in starts:
         arm, other = positions[joint] - sigma, positions[binary[joint]] - sigma
         assert abs((arm.conjugate() * other).imag) <= 1e-9 * abs(arm) * abs(other), f"Σ on the line of {joint}"
+
+
+def test_the_note_names_the_length_each_omega_and_epsilon_is_read_over():
+    analysis = analyse(graphplan.load(FIXTURE))
+    text = note_markdown(analysis)
+    places = [{**pp.positions, **pp.velocity.auxiliary} for pp in analysis.plans]
+    names = sorted(set().union(*places), key=len, reverse=True)
+    readings = [line for line in text.splitlines() if re.match(r"- [ωε][3-6] = ", line)]
+    assert len(readings) == 4 * 2 * len(analysis.plans)
+    for line in readings:
+        found = re.search(r"/l(\S+) = [^=]*/([\d.]+) = ", line)
+        assert found, f"no named length in {line!r}"
+        pair, printed = found.group(1), float(found.group(2))
+        first = next(name for name in names if pair.startswith(name) and pair[len(name):] in names)
+        second = pair[len(first):]
+        assert any(math.isclose(abs(where[first] - where[second]), printed, rel_tol=1e-4) for where in places), line
+    assert "vΣ" not in text, "velocities are written V, Σ's too"
+    page = note_html(analysis, markdown=text)
+    assert "^τ" not in page, "every tangential part is set as a superscript"
+    assert "V<sub>DΣ6</sub>" in page and "a<sub>Σ6A</sub><sup>τ</sup>" in page, "Σ6 is set in the index"
+
+
+def test_the_note_reads_each_binary_links_tangential_part_off_the_plan():
+    analysis = analyse(graphplan.load(FIXTURE))
+    text = note_markdown(analysis)
+    rows = re.findall(r"\| a([BDF])([ACE])\^τ \| ([\d.]+) m/s² \| n(\d)[bdf] = [\d.]+ \| ⊥ \2\1 \|", text)
+    assert len(rows) == 2 * len(analysis.plans)
+    expected = set()
+    for pp in analysis.plans:
+        for link, (outer, inner) in {3: ("A", "B"), 4: ("C", "D"), 5: ("E", "F")}.items():
+            arm = abs(pp.positions[inner] - pp.positions[outer])
+            expected.add((inner, outer, abs(analysis.motion.link(link).epsilon[pp.index]) * arm))
+    for inner, outer, value, _ in rows:
+        assert any(i == inner and o == outer and math.isclose(float(value), v, rel_tol=1e-4) for i, o, v in expected)

@@ -392,7 +392,8 @@ class Triad(Group):
             outer, inner, link = arms[n]
             board.step(Step(
                 equation=f"a{inner} = a{outer} + a{inner}{outer}ⁿ + a{inner}{outer}^τ",
-                vectors=(LaidVector(f"n{link}", board.images[inner], f"a{inner}{outer}^τ"),)))
+                vectors=(LaidVector(board.images[outer], f"n{link}", f"a{inner}{outer}ⁿ"),
+                         LaidVector(f"n{link}", board.images[inner], f"a{inner}{outer}^τ"))))
 
     def _by_similarity(self, board: Builder, sigma_pos: complex, sigma: str, order: tuple[int, int, int]) -> None:
         """The ternary link's image from σ and the third inner joint; the other two inner joints by similarity."""

@@ -259,11 +259,15 @@ class _Note:
                 self.para(f"**{self.t('note_group_heading', group=group.label, kind=self.kind_name(group.kind))}**")
                 self.assur_point(plan, steps)
                 for step in steps:
-                    if step.similarity is None:
+                    if step.similarity is None and step.fixes:
                         self.group_step(pp, plan, step)
             similar = [self.similarity(pp, plan, step.similarity) for step in steps if step.similarity is not None]
             if similar:
                 self.para(self.t("note_similarity"), *(f"- {line}" for line in similar))
+            # Parts read off points found by similarity (a triad's aBA^τ for ε3) come after those points.
+            for step in steps:
+                if index != 0 and step.similarity is None and not step.fixes:
+                    self.group_step(pp, plan, step)
         self.readings(pp, plan)
 
     def assur_point(self, plan: Plan, steps: list[Step]) -> None:
@@ -406,7 +410,7 @@ class _Note:
 
     def equation(self, text: str) -> str:
         """An equation of the record with velocities written V, as the textbooks print them."""
-        return re.sub(r"(?<![A-Za-z])v(?=[A-Z])", "V", text)
+        return re.sub(r"(?<![A-Za-z])v(?=[A-ZΣ])", "V", text)
 
     def line(self, along: LineMeaning) -> str:
         """A line of action (⊥ AB, ∥ guide) in the note's language; points and frame lines keep their names."""
@@ -487,11 +491,22 @@ class _Note:
             else:
                 modulus, direction = self.coriolis(pp, name, value)
             return _Term(shown, modulus, segment, direction)
+        if vector is not None and name.endswith(_TANGENTIAL) and not step.fixes:
+            # A step that fixes nothing reads a tangential part off points already found (a triad's ε).
+            return self.read_tangential(pp, plan, name, vector, segment)
         through = [line for line in step.lines if line.through == start]
         if len(through) > 1 and side < len(step.lines) and step.lines[side].through == start:
             through = [step.lines[side]]
         direction = self.line(through[0].along) if through else "—"
         return _Term(shown, "?", segment, direction)
+
+    def read_tangential(self, pp: PlanPosition, plan: Plan, name: str, vector: LaidVector, segment: str) -> _Term:
+        """aBA^τ read off the plan: its segment's length, its modulus, square to AB."""
+        value = abs(plan.points[vector.end] - plan.points[vector.start])
+        modulus = f"{self.n(value)} {self.text['unit_m_per_s2']}"
+        pair = self.split(name[1:-len(_TANGENTIAL)], pp)
+        direction = self.line(LineMeaning("perpendicular", (pair[1], pair[0]))) if pair is not None else "—"
+        return _Term(self.equation(name), modulus, f"{segment} = {self.mm(value / plan.scale)}", direction)
 
     def normal(self, pp: PlanPosition, plan: Plan, name: str, value: float) -> tuple[str, str]:
         """aBAⁿ = ω3²·lAB, directed from B to A."""
@@ -536,7 +551,7 @@ class _Note:
 
     def split(self, text: str, pp: PlanPosition) -> tuple[str, str] | None:
         """``"BA"`` → ``("B", "A")``: two point names whose positions are known, longest names first."""
-        names = sorted(set(pp.positions) | {m for m in _guide_points(text)}, key=len, reverse=True)
+        names = sorted(set(_places(pp)) | {m for m in _guide_points(text)}, key=len, reverse=True)
         for first in names:
             if text.startswith(first) and len(text) > len(first):
                 rest = text[len(first):]
@@ -546,11 +561,12 @@ class _Note:
 
     def position(self, pp: PlanPosition, name: str) -> complex | None:
         """Where a point is at the instant; a link's point over a joint (A3, B4) is where that joint is."""
-        if name in pp.positions:
-            return pp.positions[name]
+        places = _places(pp)
+        if name in places:
+            return places[name]
         match = re.fullmatch(r"(.+?)(\d+)", name)
-        if match and match.group(1) in pp.positions:
-            return pp.positions[match.group(1)]
+        if match and match.group(1) in places:
+            return places[match.group(1)]
         return None
 
     def link_of(self, pp: PlanPosition, first: str, second: str) -> int | None:
@@ -646,17 +662,16 @@ class _Note:
             same = [r for r in pp.readings if r.plan == plan.kind and set(r.segment) == set(reading.segment)
                     and not r.quantity.startswith(("omega", "epsilon"))]
             same.sort(key=lambda r: r.points is None)
-            if not same:
-                return "", length
-            chosen = same[0]
-            if chosen.points is not None:
+            chosen = same[0] if same else None
+            if chosen is not None and chosen.points is not None:
                 moving, centre = chosen.points
                 length = f"l{centre}{moving}"
             else:
+                # No velocity of the pair read off (a triad's ab): the segment's ends still name the length.
                 names = [self.name_on(pp, plan, link, letter) for letter in reading.segment]
                 if None not in names:
                     length = f"l{names[0]}{names[1]}"
-            return chosen.quantity, length
+            return (chosen.quantity if chosen is not None else ""), length
         for step in plan.steps:
             for vector in step.vectors:
                 if (vector.start, vector.end) == reading.segment and vector.meaning.endswith(_TANGENTIAL):
@@ -671,8 +686,9 @@ class _Note:
         for position, member in plan.members.get(link, ()):
             if member != letter:
                 continue
-            for name, where in pp.positions.items():
-                if where == position and (plan.images.get(name) == letter):
+            for name, where in _places(pp).items():
+                image = plan.images.get(name, image_name(name) if name in plan.auxiliary else None)
+                if where == position and image == letter:
                     return name
         return None
 
@@ -1005,6 +1021,11 @@ def _body(term: str) -> tuple[str, str]:
     for suffix in (_NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE):
         term = term.removesuffix(suffix)
     return term[:1], term[1:]
+
+
+def _places(pp: PlanPosition) -> dict[str, complex]:
+    """The scene's points at the instant and the plans' auxiliary points (Assur's Σ6), by name."""
+    return {**pp.positions, **pp.velocity.auxiliary}
 
 
 def _guide_points(text: str) -> set[str]:
