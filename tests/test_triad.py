@@ -186,10 +186,27 @@ def test_the_note_names_the_length_each_omega_and_epsilon_is_read_over():
         first = next(name for name in names if pair.startswith(name) and pair[len(name):] in names)
         second = pair[len(first):]
         assert any(math.isclose(abs(where[first] - where[second]), printed, rel_tol=1e-4) for where in places), line
+    for line in readings:
+        if re.match(r"- ω[345] = ", line):
+            assert re.match(r"- ω\d = V([BDF])([ACE])/l\2\1 = ", line), f"a binary link's ω is VBA/lAB: {line}"
     assert "vΣ" not in text, "velocities are written V, Σ's too"
     page = note_html(analysis, markdown=text)
     assert "^τ" not in page, "every tangential part is set as a superscript"
     assert "V<sub>DΣ6</sub>" in page and "a<sub>Σ6A</sub><sup>τ</sup>" in page, "Σ6 is set in the index"
+
+
+def test_the_error_tables_hold_each_binary_links_relative_velocity():
+    analysis = analyse(graphplan.load(FIXTURE))
+    arms = {3: ("A", "B"), 4: ("C", "D"), 5: ("E", "F")}
+    for pp in analysis.plans:
+        rows = {row.quantity: row for row in pp.errors if row.source == "construction"}
+        relative = {f"V{inner}{outer}": link for link, (outer, inner) in arms.items() if f"V{inner}{outer}" in rows}
+        assert len(relative) >= 2, sorted(rows)
+        for quantity, link in relative.items():
+            outer, inner = arms[link]
+            v = analysis.motion.point(inner).v[pp.index] - analysis.motion.point(outer).v[pp.index]
+            assert rows[quantity].analytic == pytest.approx(float(np.hypot(*v)), rel=1e-12)
+            assert rows[quantity].plan == pytest.approx(rows[quantity].analytic, rel=1e-9)
 
 
 def test_the_note_reads_each_binary_links_tangential_part_off_the_plan():

@@ -340,7 +340,8 @@ class Triad(Group):
         return name, where, order
 
     def construct_velocity(self, board: Builder) -> None:
-        """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD); vF = vΣ + vFΣ (⊥ ΣF) = vE + vFE (⊥ EF); b, d by similarity."""
+        """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD); vF = vΣ + vFΣ (⊥ ΣF) = vE + vFE (⊥ EF); b, d by similarity;
+        then vBA and vDC read off."""
         positions = board.positions
         sigma_name, sigma_pos, (i, j, k) = self._special_point_on(board)
         arms = self.arms()
@@ -358,6 +359,10 @@ class Triad(Group):
             fixes=(sigma,), crossing_deg=angle))
         velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos), (ok, board.images[ok], positions[ok]))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
+        for n in (i, j):  # ωa and ωb are read off the relative velocities that end at b and d
+            outer, inner, _ = arms[n]
+            board.step(Step(equation=f"v{inner} = v{outer} + v{inner}{outer}",
+                            vectors=(LaidVector(board.images[outer], board.images[inner], f"v{inner}{outer}"),)))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
         """aΣ = aA + aBAⁿ + aΣBⁿ + aΣA^τ (⊥ AB) = aC + aDCⁿ + aΣDⁿ + aΣC^τ (⊥ CD);

@@ -264,7 +264,7 @@ class _Note:
             similar = [self.similarity(pp, plan, step.similarity) for step in steps if step.similarity is not None]
             if similar:
                 self.para(self.t("note_similarity"), *(f"- {line}" for line in similar))
-            # Parts read off points found by similarity (a triad's aBA^τ for ε3) come after those points.
+            # Vectors read off points found by similarity (a triad's VBA for ω3) come after those points.
             for step in steps:
                 if index != 0 and step.similarity is None and not step.fixes:
                     self.group_step(pp, plan, step)
@@ -491,20 +491,20 @@ class _Note:
             else:
                 modulus, direction = self.coriolis(pp, name, value)
             return _Term(shown, modulus, segment, direction)
-        if vector is not None and name.endswith(_TANGENTIAL) and not step.fixes:
-            # A step that fixes nothing reads a tangential part off points already found (a triad's ε).
-            return self.read_tangential(pp, plan, name, vector, segment)
+        if vector is not None and not step.fixes:
+            # A step that fixes nothing reads a relative vector off points already found (a triad's ω and ε).
+            return self.read_off(pp, plan, name, vector, segment)
         through = [line for line in step.lines if line.through == start]
         if len(through) > 1 and side < len(step.lines) and step.lines[side].through == start:
             through = [step.lines[side]]
         direction = self.line(through[0].along) if through else "—"
         return _Term(shown, "?", segment, direction)
 
-    def read_tangential(self, pp: PlanPosition, plan: Plan, name: str, vector: LaidVector, segment: str) -> _Term:
-        """aBA^τ read off the plan: its segment's length, its modulus, square to AB."""
+    def read_off(self, pp: PlanPosition, plan: Plan, name: str, vector: LaidVector, segment: str) -> _Term:
+        """VBA or aBA^τ read off the plan: its segment's length, its modulus, square to AB."""
         value = abs(plan.points[vector.end] - plan.points[vector.start])
-        modulus = f"{self.n(value)} {self.text['unit_m_per_s2']}"
-        pair = self.split(name[1:-len(_TANGENTIAL)], pp)
+        modulus = f"{self.n(value)} {self.text['unit_m_per_s' if plan.kind == 'velocity' else 'unit_m_per_s2']}"
+        pair = self.split(name[1:].removesuffix(_TANGENTIAL), pp)
         direction = self.line(LineMeaning("perpendicular", (pair[1], pair[0]))) if pair is not None else "—"
         return _Term(self.equation(name), modulus, f"{segment} = {self.mm(value / plan.scale)}", direction)
 
