@@ -470,6 +470,51 @@ def test_each_drawing_stands_in_its_own_field_and_the_captions_on_one_line(name)
         assert len(baselines) == 1
 
 
+def _drawing_layers(arrangement, drawing):
+    return [layer for layer in arrangement.layers
+            if layer.name.startswith(f"{drawing}-") and layer.name != f"{drawing}-caption"]
+
+
+@pytest.mark.parametrize("name", ALL_FIXTURES)
+@pytest.mark.parametrize("shape", ["stacked", "beside"])
+def test_arranged_otherwise_the_drawings_are_the_row_s_moved_each_in_its_field_with_its_caption_clear(name, shape):
+    """The mechanism above the plans, or beside them with the velocity plan over the acceleration plan: each
+    drawing is the row's drawing moved whole, inside its field, its caption under it and clear of every other
+    drawing and caption."""
+    analysis = analysed(name)
+    plan = analysis.plans[-1]
+    sheet = plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration)
+    row, other = sheet_layout.arrange(sheet), sheet_layout.arrange(sheet, shape)
+    assert list(other.fields) == list(row.fields)
+    boxes = {}
+    for drawing, (x0, y0, x1, y1) in other.fields.items():
+        moved, first = _drawing_layers(other, drawing), _drawing_layers(row, drawing)
+        assert [layer.name for layer in moved] == [layer.name for layer in first]
+        shift = [a - b for a, b in zip(bounds_of(x for layer in moved for x in layer.items),
+                                       bounds_of(x for layer in first for x in layer.items), strict=True)]
+        for one, two in zip(moved, first, strict=True):
+            if one.items:
+                offset = [a - b for a, b in zip(bounds_of(one.items), bounds_of(two.items), strict=True)]
+                assert offset == pytest.approx([shift[0], shift[1]] * 2, abs=1e-9), one.name
+        drawn = bounds_of(x for layer in moved for x in layer.items)
+        assert x0 - 1e-9 <= drawn[0] and drawn[2] <= x1 + 1e-9 and y0 - 1e-9 <= drawn[1] and drawn[3] <= y1 + 1e-9
+        caption = bounds_of(_named(other.layers)[f"{drawing}-caption"])
+        assert caption[3] < y0 and x0 - 1e-9 <= caption[0] and caption[2] <= x1 + 1e-9, drawing
+        boxes[drawing], boxes[f"{drawing}-caption"] = drawn, caption
+    boxes.update((f"{drawing}-field", field) for drawing, field in other.fields.items())
+    for (one, a), (two, b) in itertools.combinations(boxes.items(), 2):
+        if one.split("-")[0] != two.split("-")[0]:
+            assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (one, two)
+    mechanism, velocity, acceleration = (other.fields[k] for k in ("mechanism", "velocity", "acceleration"))
+    # A caption stands as far from the drawing under it as two drawings stand apart.
+    if shape == "stacked":
+        assert boxes["mechanism-caption"][1] - max(velocity[3], acceleration[3]) >= sheet_layout.GAP_MM - 1e-9
+        assert acceleration[0] - velocity[2] == pytest.approx(sheet_layout.GAP_MM)
+    else:
+        assert min(velocity[0], acceleration[0]) - mechanism[2] == pytest.approx(sheet_layout.GAP_MM)
+        assert boxes["velocity-caption"][1] - acceleration[3] >= sheet_layout.GAP_MM - 1e-9
+
+
 @pytest.mark.parametrize("name", ALL_FIXTURES)
 def test_with_automatic_scales_each_plan_fills_its_field_and_the_two_plans_match(name):
     analysis = analysed(name, automatic=True)

@@ -421,6 +421,60 @@ def test_a_panel_too_big_whole_goes_part_by_part_on_sheets_of_its_own(analyses):
                 assert 0 < drawing[1] - item.items[0].at[1] <= plan_layout.CAPTION_GAP_MM + 1e-9
 
 
+def arrangement_on(sheet, name):
+    """How the plan sheet ``name`` stands on ``sheet``, read off its captions' first lines: "row" (one
+    baseline), "stacked" (the mechanism's above the plans'), "beside" (the acceleration plan's level with the
+    mechanism's, the velocity plan's above)."""
+    baseline = {drawing: round(texts([layer(sheet, f"{name}-{drawing}-caption")])[0].at[1], 6)
+                for drawing in ("mechanism", "velocity", "acceleration")}
+    if len(set(baseline.values())) == 1:
+        return "row"
+    if baseline["velocity"] == baseline["acceleration"] < baseline["mechanism"]:
+        return "stacked"
+    assert baseline["mechanism"] == baseline["acceleration"] < baseline["velocity"], baseline
+    return "beside"
+
+
+def test_a_plan_sheet_too_wide_in_a_row_for_the_room_left_joins_the_sheet_rearranged(analyses):
+    """On A2 the scotch yoke's plan sheet of position 4 stands beside the plan of positions only with its
+    plans one above the other; in a row it would take a sheet of its own."""
+    analysis = analyses["scotch_yoke"]
+    panels = kinematics_panels(analysis)
+    sheets = kinematics_sheet(panels, "A2", "en", title=analysis.scene.title)
+    rows_only = kinematics_sheet([dataclasses.replace(panel, alternatives=()) for panel in panels], "A2", "en",
+                                 title=analysis.scene.title)
+    assert len(sheets) == len(rows_only) - 1
+    first = sheets[0]
+    assert set(first.panels) == {"positions", "plan-4"}
+    assert arrangement_on(first, "plan-4") != "row"
+    assert "Velocity and acceleration plans, position 4" in [text.text for text in texts(first.layers)]
+    bounds_on_sheet = placed_bounds(first)
+    assert not overlap(bounds_on_sheet["positions"], bounds_on_sheet["plan-4"])
+
+
+def test_a_plan_sheet_no_sheet_holds_in_a_row_goes_whole_rearranged_rather_than_in_parts(analyses):
+    """The engine's plan sheets are wider than an A2 in a row: each stands whole on its sheet, titled,
+    the mechanism above its plans."""
+    analysis = analyses["engine_slider_crank"]
+    assert not any(holds("A2", "iso", _width, _height) for _width, _height in
+                   [(p.extent[2] - p.extent[0], p.extent[3] - p.extent[1]) for p in kinematics_panels(analysis)[1:]])
+    sheets = course_sheets(analysis, "A2")
+    for position in analysis.plans:
+        name = f"plan-{position.number}"
+        holding = [sheet for sheet in sheets if any(panel.startswith(name) for panel in sheet.panels)]
+        assert len(holding) == 1 and name in holding[0].panels
+        assert arrangement_on(holding[0], name) == "stacked"
+        written = [text.text for text in texts(holding[0].layers)]
+        assert f"Velocity and acceleration plans, position {position.number}" in written
+
+
+def test_a_plan_sheet_that_fits_in_a_row_stays_a_row(a1_sheets, analyses):
+    for name in ("ratchet_crank_rocker", "quick_return_slotted_lever", "shaper_six_bar"):
+        for position in analyses[name].plans:
+            sheet = next(sheet for sheet in a1_sheets[name] if f"plan-{position.number}" in sheet.panels)
+            assert arrangement_on(sheet, f"plan-{position.number}") == "row", (name, position.number)
+
+
 def test_forces_sheet_and_extra_panels_as_layers(analyses):
     """Raw layers (a kinematic diagram, say) are panels too; forces_sheet places what it is given."""
     diagram = [Layer("curve", (Polyline(((0, 0), (120, 40), (240, 0))), Text((120, -8), "s(φ)")))]

@@ -1,4 +1,5 @@
-"""The plan sheet of one position: the mechanism, its velocity plan and its acceleration plan, side by side.
+"""The plan sheet of one position: the mechanism, its velocity plan and its acceleration plan, side by side
+(or the mechanism above or beside its plans, where a sheet of a set has room of that shape).
 
 The mechanism is drawn at μl in the position, with the sense of each
 point's velocity as a short arrow and the senses of ω and ε as curved arrows
@@ -29,8 +30,6 @@ from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
 from .labels import Anchor, obstacles_of, open_direction, place_labels
 from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
-from .primitives import text_span as _width
-from .primitives import to_xy as _xy
 from .primitives import (
     Arrow,
     Layer,
@@ -43,6 +42,8 @@ from .primitives import (
     dot_marker,
     moved_layers,
 )
+from .primitives import text_span as _width
+from .primitives import to_xy as _xy
 
 # A vector shorter than this on the paper (mm) is not drawn, and plan points closer than this share
 # one label: half the usual drafting precision, below what a pencil resolves.
@@ -126,15 +127,26 @@ def layout(sheet: PlanSheet) -> list[Layer]:
     return arrange(sheet).layers
 
 
-def arrange(sheet: PlanSheet) -> Arrangement:
-    """The three drawings in fields side by side, their captions on one line under the fields, the title above.
+# The ways the three drawings may stand, as rows of cells, each cell drawings one above the other: in one
+# row; the mechanism above the two plans; the mechanism beside the plans. A sheet of a set takes the one
+# that fits it best (a wide mechanism over its plans, a tall one beside them).
+SHAPES: dict[str, tuple[tuple[tuple[str, ...], ...], ...]] = {
+    "row": ((("mechanism",), ("velocity",), ("acceleration",)),),
+    "stacked": ((("mechanism",),), (("velocity",), ("acceleration",))),
+    "beside": ((("mechanism",), ("velocity", "acceleration")),),
+}
+
+
+def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
+    """The drawings in fields as ``shape`` (of :data:`SHAPES`) sets them, each caption under its field, the title above.
 
     Each plan gets a field as wide as the field its scale is chosen for
     (:data:`~graphplan.plans.PLAN_FIELD_MM`) with room for its letters and
-    run-on lines, or wider when the scene's scale makes the plan wider; the
-    fields are as tall as the tallest drawing and each drawing stands in
-    the middle of its own, so that the drawings are evenly spaced and their
-    captions read as one line.
+    run-on lines, or wider when the scene's scale makes the plan wider.  The
+    fields of a row are as tall as its tallest cell and each drawing stands
+    in the middle of its own, so that the drawings of a row are evenly
+    spaced and the captions under them read as one line; in a cell of two
+    drawings the lower one's field takes the height the upper one leaves.
     """
     drawers = {
         "mechanism": lambda: _mechanism(sheet),
@@ -146,22 +158,54 @@ def arrange(sheet: PlanSheet) -> Arrangement:
                 "acceleration": sheet.acceleration_caption}
     extents = {name: bounds_of(item for layer in drawing for item in layer.items) for name, drawing in panels.items()}
     least = {name: 0.0 if name == "mechanism" else plan_field_mm() for name in panels}
-    height = max(y1 - y0 for _, y0, _, y1 in extents.values())
+    widths = {name: max(x1 - x0, least[name], max(_width(text) for text in _caption(captions[name], (0.0, 0.0))))
+              for name, (x0, _, x1, _) in extents.items()}
+    heights = {name: y1 - y0 for name, (_, y0, _, y1) in extents.items()}
+    rows = [row for row in ([tuple(name for name in cell if name in panels) for cell in cells]
+                            for cells in SHAPES[shape]) if any(row)]
+    fields = _fields(rows, widths, heights, {name: _caption_depth(captions[name]) for name in panels})
     layers: list[Layer] = []
-    fields: dict[str, tuple[float, float, float, float]] = {}
-    cursor = 0.0
     for name, drawing in panels.items():
         x0, y0, x1, y1 = extents[name]
-        caption_width = max(_width(text) for text in _caption(captions[name], (0.0, 0.0)))
-        width = max(x1 - x0, least[name], caption_width)
-        fields[name] = (cursor, -height / 2, cursor + width, height / 2)
-        layers.extend(moved_layers(drawing, cursor + (width - (x1 - x0)) / 2 - x0, -(y0 + y1) / 2))
-        cursor += width + GAP_MM
+        fx0, fy0, fx1, fy1 = fields[name]
+        layers.extend(moved_layers(drawing, (fx0 + fx1 - x0 - x1) / 2, (fy0 + fy1 - y0 - y1) / 2))
     for name, (x0, y0, x1, _) in fields.items():
         layers.append(Layer(f"{name}-caption", _caption(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     layers.append(Layer("sheet-title", (Text((left, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
     return Arrangement(layers, fields)
+
+
+def _fields(rows: list[list[tuple[str, ...]]], widths: dict[str, float], heights: dict[str, float],
+            caption_depths: dict[str, float]) -> dict[str, tuple[float, float, float, float]]:
+    """The field of each drawing: rows top to bottom (the first centred on y = 0), cells left to right from
+    x = 0, the rows centred on one another."""
+    fields: dict[str, tuple[float, float, float, float]] = {}
+    row_widths = [sum(max(widths[name] for name in cell) for cell in row if cell) + GAP_MM * (sum(map(bool, row)) - 1)
+                  for row in rows]
+    top = None
+    for row, row_width in zip(rows, row_widths, strict=True):
+        cells = [cell for cell in row if cell]
+        # A cell's height down to its last drawing's field: the captions of a row's last drawings share a line.
+        height = max(sum(heights[name] for name in cell)
+                     + sum(caption_depths[name] + GAP_MM for name in cell[:-1]) for cell in cells)
+        top = height / 2 if top is None else top
+        left = (max(row_widths) - row_width) / 2
+        for cell in cells:
+            width = max(widths[name] for name in cell)
+            y = top
+            for name in cell[:-1]:
+                fields[name] = (left, y - heights[name], left + width, y)
+                y -= heights[name] + caption_depths[name] + GAP_MM
+            fields[cell[-1]] = (left, top - height, left + width, y)
+            left += width + GAP_MM
+        top -= height + max(caption_depths[cell[-1]] for cell in cells) + GAP_MM
+    return fields
+
+
+def _caption_depth(lines: tuple[str, ...]) -> float:
+    """How far a caption reaches below its field (mm), to its last line's descenders."""
+    return CAPTION_GAP_MM + (len(lines) - 1) * 1.6 * CAPTION_SIZE + 0.3 * CAPTION_SIZE
 
 
 # The mechanism in the position.

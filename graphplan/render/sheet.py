@@ -15,8 +15,11 @@ each where the drawings of the sheet stay most compact (then as high and as
 far left as can be), never nearer than :data:`GAP_MM` to another or than
 :data:`PADDING_MM` to the frame and the title block; the drawings of a
 sheet are then moved together towards its middle.  A panel that does not
-fit on the sheet goes on the next sheet of the same format; a panel too big
-for an empty sheet is placed part by part (a plan sheet of one position as
+fit on the sheet goes on the next sheet of the same format.  A plan sheet
+of one position stands as a row (mechanism, velocity plan, acceleration
+plan) wherever that fits, else with its mechanism above its plans or beside
+them, so that it may join a sheet with room of another shape.  A panel too
+big for an empty sheet every way it may stand is placed part by part (a plan sheet of one position as
 its mechanism, velocity plan and acceleration plan; a force sheet as its
 groups, each beside its polygon, and the lever), on sheets of its own whose
 title block names it.  A drawing at a scale the scene sets that no empty
@@ -99,7 +102,9 @@ class Panel:
     layers and arrows on the sheet, so that two panels' ids never clash.
     ``length_scale`` is μl where the drawing is drawn at another μl than
     the set's (a force sheet made smaller for a small sheet), for the title
-    block's scale box.
+    block's scale box.  ``alternatives`` are the same drawing whole, its
+    parts arranged otherwise (a plan sheet's mechanism above or beside its
+    plans): the packing takes whichever way fits a sheet best.
     """
 
     name: str
@@ -107,11 +112,17 @@ class Panel:
     parts: tuple[Panel, ...] = ()
     label: str = ""
     length_scale: float | None = None
+    alternatives: tuple[Panel, ...] = ()
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # Computed once: the packing asks for it at every spot it tries.
         object.__setattr__(self, "extent", tuple(float(value) for value in bounds(self.layers)))
+
+    @property
+    def ways(self) -> tuple[Panel, ...]:
+        """The drawing whole as arranged, then as each alternative arranges it."""
+        return (self, *self.alternatives)
 
 
 @dataclass(frozen=True)
@@ -226,8 +237,9 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
     panels = [Panel("positions", tuple(positions_layout.layout(positions_plan(analysis))))]
     for position in analysis.plans:
         sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
-        panels.append(split(plan_layout.arrange(sheet), f"plan-{position.number}",
-                            text["plan_sheet_title"].format(number=position.number)))
+        row, *others = (split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
+                              text["plan_sheet_title"].format(number=position.number)) for shape in plan_layout.SHAPES)
+        panels.append(replace(row, alternatives=tuple(others)))
     return panels
 
 
@@ -637,13 +649,26 @@ class _Page:
     label: str = ""
 
     def place(self, panel: Panel) -> bool:
-        """Put ``panel`` where the drawings stay most compact, then as high and as far left as can be.
+        """Put ``panel``, arranged in the first of its ways that fits, where the drawings stay most compact,
+        then as high and as far left as can be.
 
         Compact is measured as the share of the area (its width or its
         height, whichever is more used) that the drawings' common bounds
         take; so the drawings grow together as a block of the sheet's shape.
         False when the panel does not fit.
         """
+        spots = ((spot, way) for way in panel.ways for spot in [self._best_spot(way)] if spot is not None)
+        found = next(spots, None)
+        if found is None:
+            return False
+        (_, rect), way = found
+        x0, _, _, y1 = way.extent
+        self.placed.append((way, rect, (rect[0] - x0, rect[3] - y1)))
+        return True
+
+    def _best_spot(self, panel: Panel) -> tuple[tuple[float, float, float], Rect] | None:
+        """Where ``panel`` as arranged keeps the drawings most compact, with the key of that spot; None when
+        it fits nowhere."""
         x0, y0, x1, y1 = panel.extent
         width, height = x1 - x0, y1 - y0
         rects = [rect for _, rect, _ in self.placed]
@@ -665,14 +690,11 @@ class _Page:
                 key = (round(share, 3), -top, left)
                 if best is None or key < best[0]:
                     best = (key, rect)
-        if best is None:
-            return False
-        rect = best[1]
-        self.placed.append((panel, rect, (rect[0] - x0, rect[3] - y1)))
-        return True
+        return best
 
     def fits_empty(self, panel: Panel) -> bool:
-        return PageGeometry(self.size, self.frame, self.block, self.area).holds(_width(panel), _height(panel))
+        geometry = PageGeometry(self.size, self.frame, self.block, self.area)
+        return any(geometry.holds(_width(way), _height(way)) for way in panel.ways)
 
     def _free(self, rect: Rect) -> bool:
         ax0, ay0, ax1, ay1 = self.area
