@@ -108,8 +108,24 @@ def test_the_markdown_table_writes_true_minus_signs_and_right_aligned_numbers(an
     from graphplan.report.tables import markdown
 
     lines = [line for line in markdown(analysis).splitlines() if line.startswith("|")]
-    assert any(line.startswith("| ω2 | −17 | −17 | −17 |") for line in lines)  # the crank turns clockwise at 17 rad/s
+    assert any(line.startswith("| ω2 | рад/с | −17 | −17 | −17 |") for line in lines)  # clockwise at 17 rad/s
     for line in lines:
-        cells = line.strip("|").split("|")[1:]
+        cells = line.strip("|").split("|")[2:]
         assert not any("-" in cell for cell in cells if not set(cell.strip()) <= set("-:")), line
-    assert all(line.startswith("|---|---:|") for line in lines if set(line) <= set("|-:"))
+    assert all(line.startswith("|---|---|---:|") for line in lines if set(line) <= set("|-:"))
+
+
+@pytest.mark.parametrize(("locale", "units"), [
+    ("ru", {"V": "м/с", "a": "м/с²", "ω": "рад/с", "ε": "рад/с²", "R": "Н"}),
+    ("en", {"V": "m/s", "a": "m/s²", "ω": "rad/s", "ε": "rad/s²", "R": "N"}),
+])
+def test_every_row_of_the_markdown_table_names_the_unit_of_its_quantity(analysis, locale, units):
+    from graphplan.report.tables import markdown
+
+    scene = dataclasses.replace(analysis.scene, locale=locale)
+    rows_ = [[cell.strip() for cell in line.strip("|").split("|")[:2]]
+             for line in markdown(dataclasses.replace(analysis, scene=scene)).splitlines()
+             if line.startswith("| ") and not line.startswith(("| величина |", "| quantity |"))]
+    assert {quantity[0] for quantity, _ in rows_} == set(units)  # velocities to reactions, all present
+    for quantity, unit in rows_:
+        assert unit == units[quantity[0]], quantity

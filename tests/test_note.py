@@ -311,7 +311,7 @@ def test_errors_md_and_forces_md_keep_their_numbers_in_every_language():
                 assert numbers(reports[locale][kind]) == english, (name, locale, kind)
     russian = force_report.markdown(analysis_of("ratchet_crank_rocker", "ru"))
     assert "| рычаг Жуковского | 49.0173 |" in russian and "## Положение 5" in russian
-    assert "| ω4 | 2.1554 |" in tables.markdown(analysis_of("ratchet_crank_rocker", "ru"))
+    assert "| ω4 | рад/с | 2.1554 |" in tables.markdown(analysis_of("ratchet_crank_rocker", "ru"))
 
 
 # The HTML page.

@@ -103,6 +103,14 @@ def test_the_numbers_read_off_the_plan_are_in_the_pdf_with_the_languages_decimal
     assert "2,975" in pdf_text(ru)[1] and "2.975" in pdf_text(en)[1]
 
 
+def test_a_unit_in_a_narrow_table_column_stays_on_one_line(notes):
+    """The error table's unit column is narrow: рад/с² must not break after its slash."""
+    _, data = notes["ru"]
+    text = pdf_text(data)[1]
+    assert text.count("рад/с²") >= 2 * 2  # ε3 and ε4 at both positions of the error tables
+    assert not re.search(r"рад/\s+с", text)
+
+
 def test_chinese_text_comes_out_as_chinese_not_as_missing_glyphs(notes):
     html, data = notes["zh"]
     text = pdf_text(data)[1]

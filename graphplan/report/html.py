@@ -28,6 +28,7 @@ table { border-collapse: collapse; margin: 0.6em 0 1.2em; font-size: 0.92em; }
 th, td { border: 1px solid #999; padding: 0.2em 0.55em; vertical-align: top; }
 th { background: #eee; }
 td { font-variant-numeric: tabular-nums; }
+td.word { white-space: nowrap; }
 @page { size: A4; margin: 20mm 10mm 20mm 30mm; @bottom-center { content: counter(page); font-size: 9pt; } }
 p.table-caption { margin-bottom: 0.3em; }
 th { hyphens: auto; }
@@ -39,6 +40,9 @@ th { hyphens: auto; }
 # asks): marked so that a page break never parts it from its table.
 _CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.DOTALL)
 
+
+# A cell of one word (a number, a unit, a symbol): a narrow column must not break it after a slash (рад/с²).
+_ONE_WORD_CELL = re.compile(r"<td((?: [^>]*)?)>((?:(?!</td>)[^\s])+)</td>")
 
 # base, index, component: the symbols of the plan method and of the force analysis.
 _SYMBOL = re.compile(
@@ -84,6 +88,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
     if symbols:
         renderer.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', renderer.render(markdown_text))
+    body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
             f"<title>{html.escape(title, quote=False)}</title>\n<style>\n{_STYLE}</style>\n</head>\n<body>\n"

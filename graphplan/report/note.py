@@ -38,7 +38,7 @@ from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..scales import format_scale, standard_scale
 from . import forces as force_report
-from .tables import error_table_lines, has_reactions, quantity_symbol
+from .tables import error_table_lines, has_reactions, quantity_symbol, unit_of
 
 # Two numbers that agree to this share are the same number printed twice.
 _SAME = 1e-6
@@ -703,7 +703,7 @@ class _Note:
             rows.append([quantity_symbol(reading.quantity), self.segment(plan, *reading.segment),
                          self.mm(reading.millimetres(pp.plans)), self.n(reading.value(pp.plans)),
                          self.n(exact[reading.quantity]) if reading.quantity in exact else "—",
-                         self.unit_of(reading.quantity)])
+                         unit_of(reading.quantity, self.text)])
         if not rows:
             return
         length = f"{self.t('column_length')}, {self.text['millimetre']}"
@@ -712,13 +712,6 @@ class _Note:
         caption = self.t(f"note_{kind}_table", number=pp.number)
         self.para(self.t(f"note_{kind}_table_formula"))
         self.table(caption, header, rows, "llrrrl")
-
-    def unit_of(self, quantity: str) -> str:
-        if quantity.startswith("omega"):
-            return self.text["unit_rad_per_s"]
-        if quantity.startswith("epsilon"):
-            return self.text["unit_rad_per_s2"]
-        return self.text["unit_m_per_s" if quantity.startswith("V") else "unit_m_per_s2"]
 
     # The errors of the plans.
 

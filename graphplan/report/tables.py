@@ -1,6 +1,6 @@
 """The error tables of the plans, as Markdown for the report and CSV for a spreadsheet.
 
-One row per quantity, the analytic value beside the plan's from each source
+One row per quantity with its unit, the analytic value beside the plan's from each source
 (the plan as constructed, read to the drafting precision, measured by hand),
 each with its error δ = (analytic − plan) / analytic · 100 %.  The Markdown is
 in the scene's language (:mod:`graphplan.locale`) and its table of a position
@@ -32,6 +32,17 @@ def quantity_symbol(quantity: str) -> str:
     return quantity
 
 
+def unit_of(quantity: str, text: dict[str, str]) -> str:
+    """The unit of an error table's quantity in the locale ``text``: rad/s for ω, N for a reaction, ..."""
+    if quantity.startswith("omega"):
+        return text["unit_rad_per_s"]
+    if quantity.startswith("epsilon"):
+        return text["unit_rad_per_s2"]
+    if is_reaction(quantity):
+        return text["newton"]
+    return text["unit_m_per_s" if quantity.startswith("V") else "unit_m_per_s2"]
+
+
 def _grouped(plan: PlanPosition) -> tuple[dict[str, dict[str, ErrorRow]], list[str]]:
     """A position's quantities in reading order with the error row of each source, and the sources present."""
     table: dict[str, dict[str, ErrorRow]] = defaultdict(dict)
@@ -45,15 +56,15 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -
     text = strings(analysis.scene.locale)
     table, sources = _grouped(plan)
     names = [text[f"source_{s}"] for s in sources]
-    header = [text["errors_quantity"], text["errors_analytic"], *names,
+    header = [text["errors_quantity"], text["column_unit"], text["errors_analytic"], *names,
               *(text["errors_delta"].format(source=name) for name in names)]
-    lines = ["| " + " | ".join(header) + " |", "|---|" + "---:|" * (len(header) - 1)]
+    lines = ["| " + " | ".join(header) + " |", "|---|---|" + "---:|" * (len(header) - 2)]
     for quantity, rows in table.items():
         exact = next(iter(rows.values())).analytic
         cells = [number(exact, mark=mark)]
         cells += [number(rows[s].plan, mark=mark) if s in rows else "" for s in sources]
         cells += [_percent(rows[s].percent, mark) if s in rows else "" for s in sources]
-        lines.append("| " + " | ".join([quantity_symbol(quantity), *cells]) + " |")
+        lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
     return lines
 
 
