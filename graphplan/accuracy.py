@@ -250,7 +250,7 @@ def diagram_grid(case: Case, refinement: int) -> np.ndarray:
     """
     driver = case.mechanism.driver
     evaluated = len(case.values)
-    if driver.kind == "crank":
+    if driver.cyclic:
         count = refinement * evaluated
         return case.values[0] + driver.sense * 2.0 * math.pi / count * np.arange(count)
     return np.linspace(driver.travel[0], driver.travel[1], refinement * (evaluated - 1) + 1)
@@ -258,7 +258,7 @@ def diagram_grid(case: Case, refinement: int) -> np.ndarray:
 
 def diagram_refinements(case: Case) -> tuple[int, ...]:
     """The refinements the study runs: those within :data:`MOST_DIAGRAM_NODES` nodes."""
-    intervals = len(case.values) - (0 if case.mechanism.driver.kind == "crank" else 1)
+    intervals = len(case.values) - (0 if case.mechanism.driver.cyclic else 1)
     return tuple(m for m in DIAGRAM_REFINEMENTS if m == 1 or m * intervals <= MOST_DIAGRAM_NODES)
 
 
@@ -296,7 +296,7 @@ def diagram(case: Case, refinement: int) -> Row:
     rate, rate_rate = (driver.omega, driver.epsilon) if driver.kind == "crank" else (driver.velocity, driver.acceleration)
     grid = diagram_grid(case, refinement)
     step = float(grid[1] - grid[0])
-    periodic = driver.kind == "crank"
+    periodic = driver.cyclic
     levers = [(g.new_joints()[0], g.joints[0], g.joints[1], g.links[1]) for g in mechanism.groups if g.kind == "RPR"]
 
     def differentiate():

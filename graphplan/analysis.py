@@ -6,14 +6,16 @@ so that the numbers in ``results.json``, the drawings and a notebook agree.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
-from .errors import SceneError
+from .errors import AssemblyError, SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .joint_friction import FrictionPair, friction_loads, friction_pairs
@@ -70,25 +72,42 @@ class Analysis:
     friction: tuple[FrictionPair, ...] = ()
 
 
+@contextlib.contextmanager
+def _rocker_hint(mechanism: Mechanism) -> Iterator[None]:
+    """A crank's positions and paths span a turn: where the mechanism stops it, say that it may rock instead."""
+    try:
+        yield
+    except AssemblyError as error:
+        driver = mechanism.driver
+        if driver.kind != "crank" or not driver.cyclic:
+            raise
+        raise AssemblyError(error.joint, error.position, error.group,
+                            f"{error.reason}; if link {driver.link} cannot turn round, drive it as a rocker: "
+                            "driver.swing = [from, to] in degrees, within its reach") from error
+
+
 def analyse(scene: Scene) -> Analysis:
     """Build the mechanism, place the positions and solve them, with the extremes and a dense sweep."""
     mechanism = build(scene)
-    positions = make_positions(mechanism)
-    motion = solve(mechanism, positions.values, positions.reference, positions.numbers, tolerant=True)
-    # The positions drawn bold: the working link's two extremes, a slider driver's two ends, or the first position.
+    with _rocker_hint(mechanism):
+        positions = make_positions(mechanism)
+        motion = solve(mechanism, positions.values, positions.reference, positions.numbers, tolerant=True)
+    # The positions drawn bold: the working link's two extremes, a slider's or a rocking crank's two ends, or
+    # the first position.
     if positions.extremes is not None:
         bold = np.array(positions.extremes)
-    elif mechanism.driver.kind == "slider":
+    elif not mechanism.driver.cyclic:
         bold = positions.values[[0, -1]]
     else:
         bold = positions.values[:1]
     emphasised = solve(mechanism, bold, positions.reference, tolerant=True)
     driver = mechanism.driver
-    if driver.kind == "crank":
+    if driver.cyclic:
         sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * np.pi, PATH_SAMPLES + 1)
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
-    paths = solve(mechanism, sweep, positions.reference, tolerant=True)
+    with _rocker_hint(mechanism):
+        paths = solve(mechanism, sweep, positions.reference, tolerant=True)
     stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
     friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()

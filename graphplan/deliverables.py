@@ -64,8 +64,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if piece == "diagrams":
         if scene.positions.working is None:
             return "needs the output link: positions.working"
-        if scene.driver is None or scene.driver.kind != "crank":
-            return "needs a crank driver: the diagrams are drawn against its angle"
+        if scene.driver is None or scene.driver.kind != "crank" or not scene.driver.cyclic:
+            return "needs a crank that turns round: the diagrams are drawn over its turn"
         if scene.positions.count < 3:
             return "needs at least 3 positions for the chord method"
     if piece == "accuracy" and analysis.motion.singular:

@@ -256,11 +256,11 @@ def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
         analysis = source
         mechanism, positions = analysis.mechanism, analysis.positions
     driver = mechanism.driver
-    if driver.kind == "crank":
+    if driver.cyclic:
         sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * math.pi, count + 1)
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], count + 1)
-        if (sweep[-1] - sweep[0]) * driver.sense < 0:  # run the travel the way the slider moves
+        if (sweep[-1] - sweep[0]) * driver.sense < 0:  # run the travel (the swing) the way the driver moves
             sweep = sweep[::-1]
     sweep = _with_switches(mechanism, positions, sweep)
     motion = solve(mechanism, sweep, positions.reference)

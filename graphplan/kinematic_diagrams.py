@@ -202,6 +202,9 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     if driver.kind != "crank":
         raise SceneError("driver.kind", "kinematic diagrams are drawn against a crank's angle; "
                          "a slider driver has none", driver.kind)
+    if not driver.cyclic:
+        raise SceneError("driver.swing", "kinematic diagrams are drawn over a crank's turn; "
+                         "a rocking crank makes none", [round(math.degrees(end), 6) for end in driver.travel])
     if samples < 4:
         raise ValueError(f"samples must be at least 4 (got {samples})")
     if not axis_mm > 0 or not field_mm > 0:

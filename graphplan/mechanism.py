@@ -283,10 +283,11 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if load.during != "always" and scene.positions.working is None:
             raise SceneError(f"{load.where}.during", "a load that acts in one stroke needs positions.working "
                                                      "(which motion of which link is the working stroke)", load.during)
-        if isinstance(load.during, tuple) and scene.driver.kind != "crank":
-            raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank driver; "
-                                                     "a slider driver's positions run over its travel: use always",
-                             list(load.during))
+        if isinstance(load.during, tuple) and not scene.driver.cyclic:
+            raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank that turns "
+                                                     f"round; a {scene.driver.kind} driver's positions run over its "
+                                                     f"{'travel' if scene.driver.kind == 'slider' else 'swing'}: "
+                                                     "use always", list(load.during))
     working = scene.positions.working
     if working is not None:
         if working.link not in known_links or working.link == scene.frame_link:

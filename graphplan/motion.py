@@ -254,7 +254,7 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
     driver = mechanism.driver
     ends = np.append(values, reference.value)
     low, high = float(np.min(ends)), float(np.max(ends))
-    if driver.kind == "crank":
+    if driver.cyclic:
         step = 2 * math.pi / CONTINUATION_STEPS
     else:
         step = abs(driver.travel[1] - driver.travel[0]) / CONTINUATION_STEPS or (high - low) / CONTINUATION_STEPS
@@ -383,7 +383,7 @@ def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Referen
     limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
     x = sweep.driver
     span = float(x[-1] - x[0])
-    cyclic = mechanism.driver.kind == "crank"
+    cyclic = mechanism.driver.cyclic
     brackets, labels = [], []
     for label, sine in sweep.conditioning.items():
         sine = np.nan_to_num(sine, nan=0.0)

@@ -49,7 +49,7 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     spec = scene.positions
     driver = mechanism.driver
     numbers = np.arange(spec.number_from, spec.number_from + spec.count)
-    if driver.kind == "slider":
+    if not driver.cyclic:  # a slider's travel, a rocking crank's swing: from one end to the other
         values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
         reference = reference_at(mechanism, float(values[0]))
         extremes = None

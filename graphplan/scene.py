@@ -251,6 +251,9 @@ def _read_scene(top: Table, source: str) -> Scene:
     driver = _read_driver(top.table("driver"))
     dynamics = None
     if top.has("dynamics"):
+        if driver.kind == "crank" and not driver.cyclic:
+            raise SceneError("dynamics", "the machine's dynamics are reduced over a cycle, a turn of the crank; a "
+                             "rocking crank (driver.swing) makes none: leave out [dynamics] or the swing")
         # Imported here: the machine's dynamics are built on the analysis, which reads scenes.
         from .flywheel import read_dynamics
 
@@ -446,8 +449,9 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
         start = check_choice(start_raw, table.where("start"), ("extreme",))
     else:
         start = check_number(start_raw, table.where("start"))
-    if driver.kind == "slider" and table.has("start"):
-        raise SceneError(table.where("start"), "a slider driver's positions run over driver.travel: leave start out")
+    if not driver.cyclic and table.has("start"):
+        over = "driver.travel" if driver.kind == "slider" else "driver.swing"
+        raise SceneError(table.where("start"), f"a {driver.kind} driver's positions run over {over}: leave start out")
     number_from = table.integer("number_from", 1, minimum=0, maximum=1)
     working_table = table.table("working", None)
     working = None

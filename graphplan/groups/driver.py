@@ -2,7 +2,10 @@
 
 ``crank``: link turning about a frame pivot O, its joint A at OA·e^{iφ};
 ``ω`` and ``ε`` are those of the instant analysed at every position (the
-plan method's data), so vA = ω × OA and aA = ε × OA − ω²·OA.
+plan method's data), so vA = ω × OA and aA = ε × OA − ω²·OA.  With a
+``swing`` it rocks between two angles instead of turning round (an input
+rocker, where the mechanism cannot let it make a whole turn): its positions
+then run over the swing as a slider's run over its travel.
 
 ``slider``: link translating along a frame guide, its joint at G + s·u with
 velocity ``ṡ`` and acceleration ``s̈`` along u.
@@ -40,6 +43,7 @@ class Crank:
     length: float
     omega: float
     epsilon: float
+    swing: tuple[float, float] | None = None
 
     @classmethod
     def read(cls, table: Table, link: int) -> Crank:
@@ -57,9 +61,16 @@ class Crank:
         if omega == 0.0:
             raise SceneError(table.where("rpm" if table.has("rpm") else "omega"), "must not be zero: the driver must move")
         epsilon = table.number("epsilon", 0.0)
+        swing = None
+        if table.has("swing"):
+            ends = table.numbers("swing", 2)
+            if ends[0] == ends[1] or abs(ends[1] - ends[0]) >= 360.0:
+                raise SceneError(table.where("swing"), "must span less than a turn: [from, to] in degrees with "
+                                 "0 < |to − from| < 360 (leave swing out for a crank that turns round)", list(ends))
+            swing = (math.radians(ends[0]), math.radians(ends[1]))
         table.done()
         return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
-                   epsilon=epsilon)
+                   epsilon=epsilon, swing=swing)
 
     def known_joints(self) -> tuple[str, ...]:
         return (self.pivot,)
@@ -83,6 +94,18 @@ class Crank:
     def sense(self) -> float:
         """+1 for a counter-clockwise crank, −1 for clockwise: the direction positions are counted in."""
         return math.copysign(1.0, self.omega)
+
+    @property
+    def cyclic(self) -> bool:
+        """Whether the crank turns round, so that its positions and its motion repeat every turn."""
+        return self.swing is None
+
+    @property
+    def travel(self) -> tuple[float, float]:
+        """The angles (rad) a rocking crank's positions run between."""
+        if self.swing is None:
+            raise AttributeError("a crank that turns round has no travel: its positions span the turn")
+        return self.swing
 
     def describe(self, value: float) -> str:
         return f"φ = {math.degrees(value) % 360.0:.6g}°"
@@ -181,6 +204,11 @@ class Slider:
     @property
     def sense(self) -> float:
         return math.copysign(1.0, self.velocity)
+
+    @property
+    def cyclic(self) -> bool:
+        """A slider's positions run over its travel once: they do not repeat."""
+        return False
 
     def describe(self, value: float) -> str:
         return f"s = {value:.6g} m"

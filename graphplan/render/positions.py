@@ -101,7 +101,7 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
 
 
 def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
-    closed = plan.mechanism.driver.kind == "crank"
+    closed = plan.mechanism.driver.cyclic
     items: list[Primitive] = []
     for spec in plan.mechanism.scene.points:
         track = np.atleast_1d(plan.paths.points[spec.name].r)

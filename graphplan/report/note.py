@@ -198,6 +198,8 @@ class _Note:
             omega = f"{self.n(abs(driver.omega))} {self.text['unit_rad_per_s']}{self.with_sense(driver.omega)}"
             rows.append([f"ω{driver.link}", omega])
             rows.append([f"ε{driver.link}", f"{self.n(driver.epsilon)} {self.text['unit_rad_per_s2']}"])
+            if not driver.cyclic:  # a rocking crank: the angles its positions run between
+                rows.append([f"φ{driver.link}", " … ".join(f"{self.n(math.degrees(end))}°" for end in driver.travel)])
         else:
             rows.append([f"V{driver.joint}", f"{self.n(driver.velocity)} {self.text['unit_m_per_s']}"])
             rows.append([f"a{driver.joint}", f"{self.n(driver.acceleration)} {self.text['unit_m_per_s2']}"])
