@@ -43,7 +43,8 @@ from graphplan.render.sheet import (
 from graphplan.render.title_block import form_of, labels, scale_text
 
 FIXTURES = ["engine_slider_crank", "offset_slider_crank", "quick_return_slotted_lever", "ratchet_crank_rocker",
-            "scotch_yoke", "shaper_six_bar", "slider_driven", "stephenson_six_bar", "tangent_mechanism_prp"]
+            "scotch_yoke", "shaper_six_bar", "slider_driven", "stephenson_six_bar", "tangent_mechanism_prp",
+            "double_rocker_swing"]
 SVG = "{http://www.w3.org/2000/svg}"
 # Standard scale factors (m/mm) from 1e-4 to 1: mantissas 1, 2, 2.5, 4, 5 (graphplan.scales).
 STANDARD = [mantissa * 10.0 ** power for power in range(-4, 1) for mantissa in (1.0, 2.0, 2.5, 4.0, 5.0)]

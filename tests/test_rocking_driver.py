@@ -1,0 +1,149 @@
+"""A crank that only rocks (``driver.swing``): a double rocker driven by its input lever.
+
+The lever OA cannot turn round (Grashof: the coupler is the shortest link), so its positions run over
+its swing from one end to the other, as a slider's run over its travel.  Checked against
+calculations that do not go through graphplan's solver: the four-bar's joint B by crossing two
+circles, its ω3 and ω4 from the two scalar velocity equations written out by hand; the plans and
+the force polygons against the analytic solution and the statics (the error table's construction
+column); and every way the swing can be given wrongly.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.errors import AssemblyError, SceneError
+from graphplan.kinematic_diagrams import of_analysis
+from graphplan.scene import loads
+
+FIXTURE = "fixtures/double_rocker_swing.toml"
+O, C = 0.0, 0.3 + 0.0j
+OA, AB, CB = 0.25, 0.12, 0.2
+OMEGA = 4.0
+
+
+@pytest.fixture(scope="module")
+def text():
+    with open(FIXTURE, encoding="utf-8") as handle:
+        return handle.read()
+
+
+@pytest.fixture(scope="module")
+def analysis():
+    return analyse(graphplan.load(FIXTURE))
+
+
+def changed(text: str, old: str, new: str) -> str:
+    assert re.search(old, text, flags=re.MULTILINE), old
+    return re.sub(old, new, text, count=1, flags=re.MULTILINE)
+
+
+def by_hand(phi: float) -> tuple[complex, float, float]:
+    """B by crossing the circles about A (radius AB) and C (radius CB), on the right of A→C; ω3, ω4 from
+    ω2·OA⊥ + ω3·AB⊥ = ω4·CB⊥ split into x and y (Cramer's rule)."""
+    a = OA * complex(math.cos(phi), math.sin(phi))
+    d = abs(C - a)
+    along = (d * d + AB * AB - CB * CB) / (2 * d)
+    across = math.sqrt(AB * AB - along * along)
+    u = (C - a) / d
+    b = a + along * u - 1j * across * u  # right of the directed line A→C
+    ab, cb = b - a, b - C
+    # i·ω2·OA + i·ω3·AB − i·ω4·CB = 0  →  ω3·AB − ω4·CB = −ω2·OA (as complex numbers)
+    rhs = -OMEGA * a
+    det = (ab.real * -cb.imag) - (-cb.real * ab.imag)
+    omega3 = (rhs.real * -cb.imag - (-cb.real) * rhs.imag) / det
+    omega4 = (ab.real * rhs.imag - rhs.real * ab.imag) / det
+    return b, omega3, omega4
+
+
+def test_the_positions_run_over_the_swing_end_to_end(analysis):
+    angles = np.asarray(analysis.positions.values)
+    assert angles == pytest.approx(np.radians(np.linspace(20.0, 65.0, 7)), abs=1e-15)
+    # The two ends are the positions drawn bold on the plan of positions.
+    assert np.asarray(analysis.emphasised.driver) == pytest.approx(np.radians([20.0, 65.0]), abs=1e-15)
+    # The paths run over the swing only, from one end to the other.
+    track = np.asarray(analysis.paths.links[2].angle)
+    assert (track.min(), track.max()) == pytest.approx(np.radians((20.0, 65.0)), abs=1e-12)
+
+
+def test_the_motion_agrees_with_the_four_bar_worked_by_hand(analysis):
+    motion = analysis.motion
+    for index, phi in enumerate(analysis.positions.values):
+        b, omega3, omega4 = by_hand(float(phi))
+        assert complex(motion.points["B"].r[index]) == pytest.approx(b, abs=1e-12)
+        assert float(motion.links[3].omega[index]) == pytest.approx(omega3, rel=1e-10)
+        assert float(motion.links[4].omega[index]) == pytest.approx(omega4, rel=1e-10)
+
+
+def test_plans_and_force_polygons_agree_with_the_analytic_solution_and_the_statics(analysis):
+    assert [plan.number for plan in analysis.plans] == [2, 5]
+    for plan in analysis.plans:
+        built = [row for row in plan.errors if row.source == "construction"]
+        assert {"VB", "omega4", "aB", "epsilon4", "R12", "R34"} <= {row.quantity for row in built}
+        assert all(abs(row.percent) < 1e-9 for row in built), [r for r in built if abs(r.percent) >= 1e-9]
+        # Zhukovsky's lever gives the balancing moment of the polygons.
+        assert plan.lever.balancing == pytest.approx(plan.forces.balancing, rel=1e-9)
+
+
+def test_the_command_line_writes_the_run_with_the_driver_s_angles_over_the_swing(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", FIXTURE, "--out", str(out)]) == 0
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    angles = [position["driver"]["angle_deg"] for position in results["positions"]]
+    assert angles == pytest.approx(list(np.linspace(20.0, 65.0, 7)), abs=1e-9)
+    assert {"plan_2.svg", "forces_5.svg", "sheet_1.svg", "note.md"} <= {path.name for path in out.iterdir()}
+    assert not (out / "diagrams.svg").exists()  # drawn over a turn, which a rocking crank makes none of
+    assert "| φ2 | 20° … 65° |" in (out / "note.md").read_text(encoding="utf-8")
+
+
+WORKING = (r"^count = 7$", 'count = 7\nworking = { link = 4, sense = "cw" }')
+
+
+@pytest.mark.parametrize(("edits", "where", "words"), [
+    ([(r"^swing .*$", "swing = [20.0, 20.0]")], "driver.swing", "less than a turn"),
+    ([(r"^swing .*$", "swing = [0.0, 360.0]")], "driver.swing", "less than a turn"),
+    ([(r"^swing .*$", "swing = [20.0]")], "driver.swing", ""),
+    ([(r"^count = 7$", "count = 7\nstart = 20.0")], "positions.start", "driver.swing"),
+    ([WORKING, (r'^during    = "always"$', "during = { from = 0.0, to = 0.5 }")], "loads[0].during", "swing"),
+    ([(r"^\[drawing\]$", "[dynamics]\ndelta = 0.05\n\n[drawing]")], "dynamics", "driver.swing"),
+])
+def test_a_swing_given_wrongly_is_named_with_what_to_change(text, edits, where, words):
+    for old, new in edits:
+        text = changed(text, old, new)
+    with pytest.raises(SceneError) as raised:
+        analyse(loads(text))
+    assert raised.value.where.startswith(where)
+    assert words in str(raised.value)
+
+
+def test_a_swing_beyond_the_lever_s_reach_names_the_position_it_cannot_reach(text):
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(changed(text, r"^swing .*$", "swing = [20.0, 80.0]")))
+    # 80° lies beyond 70.5°, where A–C exceeds AB + BC: the last position (φ = 80°) fails.
+    assert "φ = 80°" in str(raised.value) and "AB + BC" in str(raised.value)
+
+
+def test_a_crank_that_cannot_turn_round_is_told_to_swing(text):
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(changed(text, r"^swing .*$", "")))
+    assert "driver.swing" in str(raised.value)
+    # Positions inside the reach, but the paths over the turn leave it: the same advice.
+    single = changed(changed(text, r"^swing .*$", ""), r"^count = 7$", "count = 1\nstart = 30.0")
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(changed(single, r"^plans = \[2, 5\]$", "plans = [1]")))
+    assert "driver.swing" in str(raised.value)
+
+
+def test_the_kinematic_diagrams_are_refused_for_a_rocking_crank(text):
+    scene = loads(changed(text, *WORKING))
+    with pytest.raises(SceneError) as raised:
+        of_analysis(analyse(scene))
+    assert raised.value.where == "driver.swing"
