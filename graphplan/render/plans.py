@@ -128,8 +128,8 @@ def layout(sheet: PlanSheet) -> list[Layer]:
 
 
 # The ways the three drawings may stand, as rows of cells, each cell drawings one above the other: in one
-# row; the mechanism above the two plans; the mechanism beside the plans. A sheet of a set takes the one
-# that fits it best (a wide mechanism over its plans, a tall one beside them).
+# row; the mechanism above the two plans; the mechanism beside the plans. A sheet of a set takes the first
+# that fits the room it has (a wide mechanism over its plans, a tall one beside them).
 SHAPES: dict[str, tuple[tuple[tuple[str, ...], ...], ...]] = {
     "row": ((("mechanism",), ("velocity",), ("acceleration",)),),
     "stacked": ((("mechanism",),), (("velocity",), ("acceleration",))),
@@ -161,8 +161,9 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
     widths = {name: max(x1 - x0, least[name], max(_width(text) for text in _caption(captions[name], (0.0, 0.0))))
               for name, (x0, _, x1, _) in extents.items()}
     heights = {name: y1 - y0 for name, (_, y0, _, y1) in extents.items()}
-    rows = [row for row in ([tuple(name for name in cell if name in panels) for cell in cells]
-                            for cells in SHAPES[shape]) if any(row)]
+    # Only the drawings the sheet shows: a run asked for velocities has no acceleration plan.
+    rows = [row for row in ([cell for cell in (tuple(name for name in cell if name in panels) for cell in cells) if cell]
+                            for cells in SHAPES[shape]) if row]
     fields = _fields(rows, widths, heights, {name: _caption_depth(captions[name]) for name in panels})
     layers: list[Layer] = []
     for name, drawing in panels.items():
@@ -181,11 +182,10 @@ def _fields(rows: list[list[tuple[str, ...]]], widths: dict[str, float], heights
     """The field of each drawing: rows top to bottom (the first centred on y = 0), cells left to right from
     x = 0, the rows centred on one another."""
     fields: dict[str, tuple[float, float, float, float]] = {}
-    row_widths = [sum(max(widths[name] for name in cell) for cell in row if cell) + GAP_MM * (sum(map(bool, row)) - 1)
-                  for row in rows]
+    row_widths = [sum(max(widths[name] for name in cell) for cell in cells) + GAP_MM * (len(cells) - 1)
+                  for cells in rows]
     top = None
-    for row, row_width in zip(rows, row_widths, strict=True):
-        cells = [cell for cell in row if cell]
+    for cells, row_width in zip(rows, row_widths, strict=True):
         # A cell's height down to its last drawing's field: the captions of a row's last drawings share a line.
         height = max(sum(heights[name] for name in cell)
                      + sum(caption_depths[name] + GAP_MM for name in cell[:-1]) for cell in cells)
