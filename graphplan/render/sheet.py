@@ -19,14 +19,15 @@ fit on the sheet goes on the next sheet of the same format.  A plan sheet
 of one position stands as a row (mechanism, velocity plan, acceleration
 plan) wherever that fits, else with its mechanism above its plans or beside
 them, so that it may join a sheet with room of another shape.  A panel too
-big for an empty sheet every way it may stand is placed part by part (a plan sheet of one position as
-its mechanism, velocity plan and acceleration plan; a force sheet as its
-groups, each beside its polygon, and the lever), on sheets of its own whose
-title block names it.  A drawing at a scale the scene sets that no empty
-sheet holds (the plan of positions or a mechanism at μl, a plan at its pole
-distance, a force polygon at the scene's μF) is refused before anything is
-placed, with the room there is, the scene's key and the value of it that
-fits, and a bigger format that holds it.
+big for an empty sheet every way it may stand is placed part by part (a
+plan sheet of one position as its mechanism, velocity plan and
+acceleration plan; a force sheet as its groups, each beside its polygon,
+and the lever), on sheets of its own whose title block names it.  A drawing
+at a scale the scene sets that no empty sheet holds (the plan of positions
+or a mechanism at μl, a plan at its pole distance, a force polygon at the
+scene's μF) is refused before anything is placed, with the room there is,
+the scene's key and the value of it that fits, and a bigger format that
+holds it.
 A force sheet with a drawing that no empty sheet holds is first lettered a
 size smaller, then its group cut free or lever is drawn at the next larger
 standard scale (its caption and the title block's scale box say which),
@@ -104,7 +105,7 @@ class Panel:
     the set's (a force sheet made smaller for a small sheet), for the title
     block's scale box.  ``alternatives`` are the same drawing whole, its
     parts arranged otherwise (a plan sheet's mechanism above or beside its
-    plans): the packing takes whichever way fits a sheet best.
+    plans): the packing takes the first way that fits a sheet's room.
     """
 
     name: str
@@ -661,14 +662,13 @@ class _Page:
         found = next(spots, None)
         if found is None:
             return False
-        (_, rect), way = found
+        rect, way = found
         x0, _, _, y1 = way.extent
         self.placed.append((way, rect, (rect[0] - x0, rect[3] - y1)))
         return True
 
-    def _best_spot(self, panel: Panel) -> tuple[tuple[float, float, float], Rect] | None:
-        """Where ``panel`` as arranged keeps the drawings most compact, with the key of that spot; None when
-        it fits nowhere."""
+    def _best_spot(self, panel: Panel) -> Rect | None:
+        """Where ``panel`` as arranged keeps the drawings most compact; None when it fits nowhere."""
         x0, y0, x1, y1 = panel.extent
         width, height = x1 - x0, y1 - y0
         rects = [rect for _, rect, _ in self.placed]
@@ -690,7 +690,7 @@ class _Page:
                 key = (round(share, 3), -top, left)
                 if best is None or key < best[0]:
                     best = (key, rect)
-        return best
+        return best[1] if best is not None else None
 
     def fits_empty(self, panel: Panel) -> bool:
         geometry = PageGeometry(self.size, self.frame, self.block, self.area)
