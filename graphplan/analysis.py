@@ -25,7 +25,7 @@ from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .mechanism import Mechanism, build
 from .motion import Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
-from .positions import PositionSet, make_positions
+from .positions import PositionSet, make_positions, reach
 from .scene import Scene
 from .statics import Equilibrium, equilibrium, pairs
 
@@ -74,16 +74,33 @@ class Analysis:
 
 @contextlib.contextmanager
 def _rocker_hint(mechanism: Mechanism) -> Iterator[None]:
-    """A crank's positions and paths span a turn: where the mechanism stops it, say that it may rock instead."""
+    """Where a crank cannot go, say where it can: the ranges of its reach, and a swing inside one of them."""
     try:
         yield
     except AssemblyError as error:
         driver = mechanism.driver
-        if driver.kind != "crank" or not driver.cyclic:
+        if driver.kind != "crank":
+            raise
+        ranges = reach(mechanism)
+        if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
             raise
         raise AssemblyError(error.joint, error.position, error.group,
-                            f"{error.reason}; if link {driver.link} cannot turn round, drive it as a rocker: "
-                            "driver.swing = [from, to] in degrees, within its reach") from error
+                            f"{error.reason}; {_reach_advice(driver.link, ranges, driver.cyclic)}") from error
+
+
+def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool) -> str:
+    """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try."""
+    if not ranges:
+        return f"the mechanism assembles at no angle of link {link}: check the lengths"
+    spans = " and ".join(f"from {math.degrees(low):.1f}° to {math.degrees(high):.1f}°" for low, high in ranges)
+    told = f"link {link} reaches only {spans} (at each end two links stand in line)"
+    if not cyclic:
+        return f"{told}: keep driver.swing within one of these"
+    low, high = max(ranges, key=lambda span: span[1] - span[0])
+    # A degree short of each end, where the velocities are determined.
+    first, last = math.ceil(math.degrees(low) + 1.0), math.floor(math.degrees(high) - 1.0)
+    example = f", e.g. driver.swing = [{first}, {last}]" if last > first else ""
+    return f"{told}; since it cannot turn round, drive it as a rocker: driver.swing = [from, to] in degrees{example}"
 
 
 def analyse(scene: Scene) -> Analysis:

@@ -4,6 +4,9 @@
 begins: the output link's velocity changes sign there, from the idle sense
 to the working sense, as the driver advances.  That zero is bracketed on a
 fine sweep and then found to machine precision by Brent's method.
+
+:func:`reach` tells where a crank that cannot turn round can go at all, so
+that a scene can be given a swing inside it.
 """
 
 from __future__ import annotations
@@ -12,15 +15,17 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
+from scipy.optimize import bisect, brentq
 
-from .errors import SceneError
+from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
 from .mechanism import Mechanism
 from .motion import Motion, Reference, reference_at, solve
 
 # Driver positions per cycle of the sweep that brackets the extremes.
 _BRACKET_SWEEP = 720
+# Crank angles per turn on which the ends of a crank's reach are bracketed: half a degree apart.
+_REACH_GRID = 720
 
 
 @dataclass(frozen=True)
@@ -144,3 +149,42 @@ def _stroke_length(speed: np.ndarray, index: int, rising: bool) -> int:
     following = speed[index + 1:] > 0 if rising else speed[index + 1:] < 0
     stops = np.flatnonzero(~following)
     return int(stops[0]) if len(stops) else len(following)
+
+
+def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
+    """The ranges of crank angle (rad, lower end first) in which the mechanism assembles.
+
+    An angle belongs to the reach when every group assembles there in the
+    scene's assembly.  The ranges are bracketed on a grid of half a degree
+    and their ends, where two links stand in line, found by bisection to a
+    nanoradian; a range narrower than the grid may be missed.  A range
+    through 0 starts at a negative angle.  A crank that turns round has the
+    one range (0, 2π); one that assembles nowhere has none.
+    """
+    def assembles(angle: float) -> bool:
+        try:
+            reference_at(mechanism, angle)
+        except AssemblyError:
+            return False
+        except SingularPositionError:  # assembled, at a toggle
+            return True
+        return True
+
+    grid = 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
+    inside = np.array([assembles(float(angle)) for angle in grid])
+    if inside.all():
+        return ((0.0, 2.0 * math.pi),)
+    step = grid[1]
+
+    def end(before: float) -> float:  # the end of a range between two grid angles, one inside and one outside
+        return bisect(lambda angle: 1.0 if assembles(angle) else -1.0, before, before + step, xtol=1e-9)
+
+    ranges = []
+    for first in np.flatnonzero(inside & ~np.roll(inside, 1)):  # each range's first angle on the grid
+        count = int(np.argmin(np.roll(inside, -first)))  # its angles on the grid, up to the first outside
+        lower = end(float(grid[first] - step))
+        upper = end(float(grid[first] + (count - 1) * step))
+        if lower >= math.pi and upper > 2.0 * math.pi:  # through 0: from a negative angle
+            lower, upper = lower - 2.0 * math.pi, upper - 2.0 * math.pi
+        ranges.append((lower, upper))
+    return tuple(sorted(ranges))

@@ -22,6 +22,7 @@ from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.errors import AssemblyError, SceneError
 from graphplan.kinematic_diagrams import of_analysis
+from graphplan.positions import reach
 from graphplan.scene import loads
 
 FIXTURE = "fixtures/double_rocker_swing.toml"
@@ -140,6 +141,74 @@ def test_a_crank_that_cannot_turn_round_is_told_to_swing(text):
     with pytest.raises(AssemblyError) as raised:
         analyse(loads(changed(single, r"^plans = \[2, 5\]$", "plans = [1]")))
     assert "driver.swing" in str(raised.value)
+
+
+def lever_reach_by_hand(turned_deg: float = 0.0) -> list[tuple[float, float]]:
+    """The lever's reach in degrees: A–C runs from |AB − BC| to AB + BC, so by the law of cosines in
+    triangle OAC the lever stands at ±arccos((OA² + OC² − AC²) / (2·OA·OC)) from the frame line O→C at each
+    end; ``turned_deg`` turns the frame line."""
+    frame = abs(C - O)
+
+    def apart(ac: float) -> float:
+        return math.degrees(math.acos((OA * OA + frame * frame - ac * ac) / (2 * OA * frame)))
+
+    near, far = apart(abs(AB - CB)), apart(AB + CB)
+    return [(turned_deg + near, turned_deg + far), (turned_deg + 360.0 - far, turned_deg + 360.0 - near)]
+
+
+def turned_frame(text: str, degrees: float) -> str:
+    at = abs(C) * complex(math.cos(math.radians(degrees)), math.sin(math.radians(degrees)))
+    return changed(text, r"^points = \{ O = \[0\.0, 0\.0\], C = \[0\.3, 0\.0\] \}$",
+                   f"points = {{ O = [0.0, 0.0], C = [{at.real!r}, {at.imag!r}] }}")
+
+
+def test_the_lever_s_reach_is_where_the_law_of_cosines_puts_it(analysis):
+    found = np.degrees(reach(analysis.mechanism))
+    assert found == pytest.approx(np.array(lever_reach_by_hand()), abs=1e-6)
+
+
+def test_a_reach_through_zero_starts_at_a_negative_angle(text):
+    # The frame line turned 40° clockwise: the upper range runs from −26.9° to 30.5°.
+    mechanism = analyse(loads(changed(turned_frame(text, -40.0), r"^swing .*$", "swing = [-20.0, 25.0]"))).mechanism
+    found = np.degrees(reach(mechanism))
+    above, below = lever_reach_by_hand(-40.0)
+    assert above[0] < 0.0 < above[1]
+    assert found == pytest.approx(np.array([above, below]), abs=1e-6)
+
+
+def test_a_crank_that_turns_round_reaches_the_whole_turn():
+    mechanism = analyse(graphplan.load("fixtures/engine_slider_crank.toml")).mechanism
+    assert reach(mechanism) == ((0.0, 2.0 * math.pi),)
+
+
+def test_the_advice_gives_the_reach_and_a_swing_that_runs(text):
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(changed(text, r"^swing .*$", "")))
+    message = str(raised.value)
+    for low, high in lever_reach_by_hand():
+        assert f"from {low:.1f}° to {high:.1f}°" in message
+    suggested = re.search(r"driver\.swing = \[(\d+), (\d+)\]", message)
+    assert suggested, message
+    first, last = int(suggested[1]), int(suggested[2])
+    near, far = lever_reach_by_hand()[0]
+    assert near < first < last < far
+    ran = analyse(loads(changed(text, r"^swing .*$", f"swing = [{first}.0, {last}.0]")))
+    assert math.degrees(ran.positions.values[-1]) == pytest.approx(last)
+
+
+def test_a_swing_beyond_the_reach_is_told_the_reach(text):
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(changed(text, r"^swing .*$", "swing = [20.0, 80.0]")))
+    assert "reaches only from 13.1° to 70.5°" in str(raised.value)
+    assert "keep driver.swing within" in str(raised.value)
+
+
+def test_a_mechanism_that_assembles_nowhere_is_told_to_check_its_lengths(text):
+    # AB + BC = 0.04 m, shorter than the least A–C there is: OC − OA = 0.05 m.
+    short = changed(text, r"^lengths  = \[0\.12, 0\.2\] .*$", "lengths  = [0.02, 0.02]")
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(short))
+    assert "assembles at no angle of link 2: check the lengths" in str(raised.value)
 
 
 def test_the_kinematic_diagrams_are_refused_for_a_rocking_crank(text):
