@@ -8,15 +8,16 @@ the Markdown is escaped, not passed through: the note's text is data.
 With ``symbols=True`` the textbook's symbols in the text get their indices
 as the textbooks set them: ``VBA`` → V<sub>BA</sub>, ``aBA^τ`` →
 a<sub>BA</sub><sup>τ</sup>, ``ω3`` → ω<sub>3</sub>, ``μV`` → μ<sub>V</sub>; Assur's special
-point is an index like a letter (``VDΣ6`` → V<sub>DΣ6</sub>).
-Only a closed list of shapes is recognised (:data:`_SYMBOL`), none of which
-is a word of the note's languages.
+point is an index like a letter (``VDΣ6`` → V<sub>DΣ6</sub>); the symbols
+are told apart by :mod:`graphplan.report.symbols`.
 """
 
 from __future__ import annotations
 
 import html
 import re
+
+from .symbols import Symbol, pieces
 
 _STYLE = """\
 body { font-family: "DejaVu Sans", "Noto Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "Noto Sans SC",
@@ -44,37 +45,15 @@ _CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.DOTALL)
 # A cell of one word (a number, a unit, a symbol): a narrow column must not break it after a slash (рад/с²).
 _ONE_WORD_CELL = re.compile(r"<td((?: [^>]*)?)>((?:(?!</td>)[^\s])+)</td>")
 
-# base, index, component: the symbols of the plan method and of the force analysis.
-_SYMBOL = re.compile(
-    r"(?<![A-Za-z_])(?:"
-    r"(?P<base>[Va]|l)(?P<index>[A-ZΣ][A-Z0-9Σ]*)(?P<component>ⁿ|ᵏ|\^τ|\^r)?"
-    r"|(?P<base12>a)(?P<component12>\^τ)"
-    r"|(?P<base2>[ωε])(?P<index2>\d+)"
-    r"|(?P<base3>μ)(?P<index3>[VaFl])"
-    r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
-    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+)"
-    r"|(?P<base6>F)(?P<index6>y)"
-    r"|(?P<base7>[GJ])(?P<index7>\d+|S)|(?P<base11>m)(?P<index11>\d+)"
-    r"|(?<=Σ)(?P<base8>M)(?P<index8>[A-ZΣ][A-Z0-9Σ]*)"
-    r"|(?P<base9>p)(?P<index9>[45])"
-    r"|(?P<base10>P)(?P<index10>[LH])"
-    r")(?![A-Za-z0-9_])")
-
-
-def _indexed(match: re.Match[str]) -> str:
-    groups = {key: value for key, value in match.groupdict().items() if value is not None}
-    base = next(value for key, value in groups.items() if key.startswith("base"))
-    index = next((value for key, value in groups.items() if key.startswith("index")), "")
-    component = next((value for key, value in groups.items() if key.startswith("component")), "")
-    if component in ("ⁿ", "ᵏ"):
-        component = {"ⁿ": "n", "ᵏ": "k"}[component]
-    component = component.removeprefix("^")
-    return base + (f"<sub>{index}</sub>" if index else "") + (f"<sup>{component}</sup>" if component else "")
-
-
 def symbols_html(text: str) -> str:
     """Escape ``text`` for HTML and set the indices of its symbols as subscripts and superscripts."""
-    return _SYMBOL.sub(_indexed, html.escape(text, quote=False))
+    return "".join(html.escape(piece, quote=False) if isinstance(piece, str) else _symbol_html(piece)
+                   for piece in pieces(text))
+
+
+def _symbol_html(symbol: Symbol) -> str:
+    base, index, component = (html.escape(part, quote=False) for part in symbol)
+    return base + (f"<sub>{index}</sub>" if index else "") + (f"<sup>{component}</sup>" if component else "")
 
 
 def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) -> str:

@@ -1,0 +1,64 @@
+"""The textbook's symbols in the note's running text, with their indices told apart.
+
+The note writes its symbols flat, as plain text allows: ``VBA``, ``aBA^τ``,
+``ω3``, ``μV``, ``R23τ``; Assur's special point is an index like a letter
+(``VDΣ6``).  :func:`pieces` splits a text into plain runs and
+:class:`Symbol` parts (base, index, component), so that the HTML
+(:mod:`graphplan.report.html`) and the LaTeX (:mod:`graphplan.report.latex`)
+each set the indices as sub- and superscripts in their own markup.  Only a
+closed list of shapes is recognised (:data:`SYMBOL`), none of which is a word
+of the note's languages.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from typing import NamedTuple
+
+# base, index, component: the symbols of the plan method and of the force analysis.
+SYMBOL = re.compile(
+    r"(?<![A-Za-z_])(?:"
+    r"(?P<base>[Va]|l)(?P<index>[A-ZΣ][A-Z0-9Σ]*)(?P<component>ⁿ|ᵏ|\^τ|\^r)?"
+    r"|(?P<base12>a)(?P<component12>\^τ)"
+    r"|(?P<base2>[ωε])(?P<index2>\d+)"
+    r"|(?P<base3>μ)(?P<index3>[VaFl])"
+    r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
+    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+)"
+    r"|(?P<base6>F)(?P<index6>y)"
+    r"|(?P<base7>[GJ])(?P<index7>\d+|S)|(?P<base11>m)(?P<index11>\d+)"
+    r"|(?<=Σ)(?P<base8>M)(?P<index8>[A-ZΣ][A-Z0-9Σ]*)"
+    r"|(?P<base9>p)(?P<index9>[45])"
+    r"|(?P<base10>P)(?P<index10>[LH])"
+    r")(?![A-Za-z0-9_])")
+
+# Superscript letters stand for the component they show: aBAⁿ is aBA with an n above.
+_SUPERSCRIPT = {"ⁿ": "n", "ᵏ": "k"}
+
+
+class Symbol(NamedTuple):
+    """A symbol split into what is set on the line, below it and above it (the latter two may be empty)."""
+
+    base: str
+    index: str
+    component: str
+
+
+def _symbol(match: re.Match[str]) -> Symbol:
+    groups = {key: value for key, value in match.groupdict().items() if value is not None}
+    base = next(value for key, value in groups.items() if key.startswith("base"))
+    index = next((value for key, value in groups.items() if key.startswith("index")), "")
+    component = next((value for key, value in groups.items() if key.startswith("component")), "")
+    return Symbol(base, index, _SUPERSCRIPT.get(component, component.removeprefix("^")))
+
+
+def pieces(text: str) -> Iterator[str | Symbol]:
+    """``text`` as its plain runs (str) and its symbols (:class:`Symbol`), in order; nothing is left out."""
+    done = 0
+    for match in SYMBOL.finditer(text):
+        if match.start() > done:
+            yield text[done:match.start()]
+        yield _symbol(match)
+        done = match.end()
+    if done < len(text):
+        yield text[done:]
