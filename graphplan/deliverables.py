@@ -275,24 +275,30 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
 
 def tables(analysis: Analysis | None, pieces: tuple[str, ...], dynamics: MachineDynamics | None = None) -> dict[str, str]:
     """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its section
-    on the machine's ``dynamics`` when the run has them)."""
+    on the machine's ``dynamics`` when the run has them), each in Markdown and LaTeX (the note also in HTML)."""
     files: dict[str, str] = {}
     if analysis is None:
         return files
+    from .report.latex import latex_document, latex_fragment
+
+    locale = analysis.scene.locale
     if "errors" in pieces:
         from .report.tables import csv_text, markdown
 
         files["errors.md"] = markdown(analysis)
         files["errors.csv"] = csv_text(analysis)
+        files["errors.tex"] = latex_fragment(files["errors.md"], locale)
     if "forces" in pieces:
         from .report.forces import markdown as forces_markdown
 
         files["forces.md"] = forces_markdown(analysis)
+        files["forces.tex"] = latex_fragment(files["forces.md"], locale)
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
         files["note.md"] = note_markdown(analysis, dynamics)
         files["note.html"] = note_html(analysis, markdown=files["note.md"])
+        files["note.tex"] = latex_document(files["note.md"], analysis.scene.title, locale)
     return files
 
 

@@ -89,7 +89,7 @@ def test_the_scene_include_selects_the_pieces_and_only_overrides_it(tmp_path):
                      encoding="utf-8")
     status, out = run(tmp_path, scene=scene)
     assert status == 0
-    assert names(out) == {"results.json", "positions.svg", "errors.md", "errors.csv"}
+    assert names(out) == {"results.json", "positions.svg", "errors.md", "errors.csv", "errors.tex"}
     status, out = run(tmp_path / "only", "--only", "positions", scene=scene)
     assert names(out) == {"results.json", "positions.svg"}
 

@@ -1,0 +1,255 @@
+r"""Markdown → LaTeX: the explanatory note as a document for XeLaTeX, and the tables as fragments to ``\input``.
+
+mistletoe parses the Markdown the note is written in (CommonMark with
+tables), and its LaTeX renderer, adapted here, writes it out:
+
+- headings unnumbered, since the note numbers its own;
+- a table as a longtable with booktabs rules, its header repeated on every
+  page it runs onto, and the paragraph right before it (the note's
+  "Table 3. ...") as its caption, so that a page break never parts them;
+  a wide table set smaller, and columns still too wide for the line wrapped (:func:`_layout`);
+- the textbook's symbols with their indices as sub- and superscripts, read
+  as the HTML reads them (:mod:`graphplan.report.symbols`);
+- every other character as text: LaTeX's special characters escaped, the
+  rest left Unicode (Greek, Cyrillic, CJK, −, ⊥, ²).
+
+The text being Unicode, the document is for XeLaTeX with fontspec, set in
+the fonts of the drawings: DejaVu Sans, or Noto Sans CJK SC for Chinese with
+XeTeX's line breaks between CJK characters.  It uses only packages of TeX
+Live's base and recommended collections (Debian: texlive-xetex,
+texlive-latex-recommended).  A fragment has no preamble: a comment at its
+head names what the including document needs.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+from dataclasses import dataclass
+
+from mistletoe import Document
+from mistletoe.block_token import Paragraph, Table
+from mistletoe.latex_renderer import LaTeXRenderer
+from scipy.optimize import brentq
+
+from .symbols import Symbol, pieces
+
+_SPECIAL = str.maketrans({"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
+                          "%": r"\%", "_": r"\_", "^": r"\textasciicircum{}", "~": r"\textasciitilde{}"})
+
+# The note's heading levels below its title (a fragment's from its first): its sections, a position, a plan.
+_HEADINGS = ("section", "subsection", "subsubsection")
+
+# A table is measured against the note's line, A4 less its margins of 30 mm and 10 mm, in pt.
+_LINE_PT = 483.7
+# An average Latin or Cyrillic character of DejaVu Sans, in em; a CJK character is a whole em.
+_CHARACTER_EM = 0.6
+# What each column keeps clear on either side (\tabcolsep), pt.
+_COLUMN_GAP_PT = 4.0
+# A table's type sizes of the 11 pt class, largest first: a wide table takes the first its headers fit at.
+_SIZES = (("small", 10.0), ("footnotesize", 9.0), ("scriptsize", 8.0))
+# A wrapping column keeps the side its Markdown aligns it to.
+_RAGGED = {"l": "\\raggedright", "c": "\\centering", "r": "\\raggedleft"}
+# A header no wider than this (em) stays on one line where the table has room.
+_HEADER_LINE_EM = 7.0
+
+_FONTS = {"zh": "Noto Sans CJK SC"}
+_DEFAULT_FONT = "DejaVu Sans"
+
+_PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
+\usepackage[top=20mm,bottom=20mm,left=30mm,right=10mm]{geometry}
+\usepackage{fontspec}
+\setmainfont{%(font)s}
+\usepackage{array,longtable,booktabs}
+\usepackage[font=normalsize,justification=raggedright,singlelinecheck=false,skip=3pt]{caption}
+%% Tables flush left under their captions, which span the line (its width is geometry's once the document begins).
+\setlength{\LTleft}{0pt}
+\setlength{\LTright}{\fill}
+\AtBeginDocument{\setlength{\LTcapwidth}{\textwidth}}
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{0.5em}
+%% Lines may stretch rather than run over: a formula is a long run without a break, and Russian has no
+%% hyphenation patterns in TeX Live's base.
+\sloppy
+%(locale)s"""
+
+# Chinese has no spaces: XeTeX may break a line between any two CJK characters.
+_CJK_BREAKS = "\\XeTeXlinebreaklocale \"zh\"\n\\XeTeXlinebreakskip = 0pt plus 1pt\n"
+
+_FRAGMENT_HEAD = ("% Tables of graphplan for \\input into a document typeset by XeLaTeX (the text is Unicode),\n"
+                  "% with \\usepackage{array,longtable,booktabs,caption} and a main font with the text's\n"
+                  "% scripts (fontspec: \\setmainfont{FONT}).\n")
+
+
+def latex_document(markdown_text: str, title: str, locale: str) -> str:
+    """A complete XeLaTeX document of ``markdown_text`` (the explanatory note); its first line names ``title``."""
+    font = _FONTS.get(locale, _DEFAULT_FONT)
+    preamble = _PREAMBLE % {"font": font, "locale": _CJK_BREAKS if locale == "zh" else ""}
+    return (f"% {' '.join(title.split())}: typeset with xelatex, twice (longtable settles its columns' widths on the second)\n"
+            f"{preamble}"
+            f"\\begin{{document}}\n{_body(markdown_text, titled=True)}\\end{{document}}\n")
+
+
+def latex_fragment(markdown_text: str, locale: str) -> str:
+    """The body of ``markdown_text`` (the error tables, the force analysis) for ``\\input``, with no preamble."""
+    return _FRAGMENT_HEAD.replace("FONT", _FONTS.get(locale, _DEFAULT_FONT)) + _body(markdown_text, titled=False)
+
+
+def _body(markdown_text: str, titled: bool) -> str:
+    with _Renderer(titled) as renderer:
+        return renderer.render(Document(markdown_text)).lstrip("\n")
+
+
+def _escape(text: str) -> str:
+    return text.translate(_SPECIAL)
+
+
+def _text(text: str) -> str:
+    """Text with LaTeX's special characters escaped and the symbols' indices set as sub- and superscripts."""
+    return "".join(_escape(piece) if isinstance(piece, str) else _symbol(piece) for piece in pieces(text))
+
+
+def _symbol(symbol: Symbol) -> str:
+    base, index, component = (_escape(part) for part in symbol)
+    return (base + (f"\\textsubscript{{{index}}}" if index else "")
+            + (f"\\textsuperscript{{{component}}}" if component else ""))
+
+
+def _width(text: str) -> float:
+    """``text``'s width in em."""
+    return sum(1.0 if unicodedata.east_asian_width(c) in "WF" else _CHARACTER_EM for c in text)
+
+
+def _wrapped(text: str, width: float) -> list[str]:
+    """``text`` broken at spaces into lines no wider than ``width`` em (a longer word keeps a line of its own)."""
+    lines: list[str] = []
+    for word in text.split():
+        if lines and _width(f"{lines[-1]} {word}") <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return lines or [""]
+
+
+@dataclass(frozen=True)
+class _Layout:
+    """How a table is set: its type size (a LaTeX size command and pt); each column's spec, side it is aligned
+    to (l, c, r) and width in em."""
+
+    size: str
+    points: float
+    specs: tuple[str, ...]
+    sides: tuple[str, ...]
+    widths: tuple[float, ...]
+
+
+def _layout(header: list[str], rows: list[list[str]], aligns: list[int | None]) -> _Layout:
+    """The type size, columns and header widths of a table, so that it fits the line where it can.
+
+    A column would be as wide as its widest body cell, or its header if that
+    is short; it can narrow to its longest word, the header's or the body's
+    (a number is one word).  The table takes the largest size at which the
+    columns fit narrowed; it narrows its widest columns to one width, the
+    one that just fills the line, and they wrap as paragraphs.
+    """
+    count = len(header)
+
+    def longest_word(texts) -> float:
+        return max((_width(word) for text in texts for word in text.split()), default=0.0)
+
+    cells = [[row[k] for row in rows if k < len(row)] for k in range(count)]
+    least = [longest_word([header[k], *cells[k]]) for k in range(count)]
+    natural = [max(least[k], min(_width(header[k]), _HEADER_LINE_EM), *map(_width, cells[k])) for k in range(count)]
+
+    def room(points: float) -> float:  # the line less the columns' gaps, in em of the size
+        return (_LINE_PT - 2.0 * _COLUMN_GAP_PT * count) / points
+
+    def widths_at(cap: float) -> list[float]:
+        return [min(natural[k], max(least[k], cap)) for k in range(count)]
+
+    size, points = next(((name, pt) for name, pt in _SIZES if sum(least) <= room(pt)), _SIZES[-1])
+    widths = natural
+    if sum(natural) > room(points) and sum(least) < room(points):
+        cap = brentq(lambda cap: sum(widths_at(cap)) - room(points), 0.0, max(natural))
+        widths = widths_at(cap)
+    elif sum(natural) > room(points):  # too wide even narrowed: the least it can be
+        widths = least
+    sides = tuple({0: "c", 1: "r"}.get(aligns[k] if k < len(aligns) else None, "l") for k in range(count))
+    specs = tuple(f">{{{_RAGGED[sides[k]]}\\arraybackslash}}p{{{widths[k] * points / _LINE_PT:.3f}\\linewidth}}"
+                  if widths[k] < natural[k] else sides[k] for k in range(count))
+    return _Layout(size, points, specs, sides, tuple(widths))
+
+
+class _Renderer(LaTeXRenderer):
+    """mistletoe's LaTeX renderer with the note's headings, tables, symbols and escaping."""
+
+    def render_raw_text(self, token, escape=True) -> str:
+        return _text(token.content) if escape else token.content
+
+    def render_math(self, token) -> str:  # a $ in the note is a dollar, not the start of mathematics
+        return _text(token.content)
+
+    def render_inline_code(self, token) -> str:
+        return f"\\texttt{{{_escape(token.children[0].content)}}}"
+
+    def __init__(self, titled: bool) -> None:
+        super().__init__()
+        self.titled = titled
+
+    def render_heading(self, token) -> str:
+        """Unnumbered: the note numbers its own.  In a document the first level is its title."""
+        if self.titled and token.level == 1:
+            return f"\n{{\\centering\\Large\\bfseries {self.render_inner(token)}\\par}}\n"
+        command = _HEADINGS[min(token.level - self.titled, len(_HEADINGS)) - 1]
+        return f"\n\\{command}*{{{self.render_inner(token)}}}\n"
+
+    def render_list(self, token) -> str:
+        kind = "enumerate" if token.start is not None else "itemize"
+        # A list of readings is many short lines: spaced as lines of a paragraph, it reads as one block.
+        tight = "\\setlength{\\itemsep}{0pt}\\setlength{\\parskip}{0pt}"
+        return f"\\begin{{{kind}}}{tight}\n{self.render_inner(token)}\\end{{{kind}}}\n"
+
+    def render_list_item(self, token) -> str:
+        return f"\\item {self.render_inner(token).strip()}\n"
+
+    def render_document(self, token) -> str:
+        """The blocks in order, a paragraph right before a table taken into the table as its caption."""
+        self.footnotes.update(token.footnotes)
+        parts, children = [], list(token.children)
+        for k, child in enumerate(children):
+            if isinstance(child, Paragraph) and k + 1 < len(children) and isinstance(children[k + 1], Table):
+                continue
+            if isinstance(child, Table):
+                before = children[k - 1] if k else None
+                parts.append(self._table(child, self.render_inner(before) if isinstance(before, Paragraph) else None))
+            else:
+                parts.append(self.render(child))
+        return "".join(parts)
+
+    def render_table(self, token) -> str:
+        return self._table(token, None)
+
+    def _table(self, token, caption: str | None) -> str:
+        header = [_plain(cell) for cell in token.header.children] if hasattr(token, "header") else []
+        rows = [[_plain(cell) for cell in row.children] for row in token.children]
+        layout = _layout(header or [""] * len(token.column_align), rows, list(token.column_align))
+        lines = [f"\\begin{{longtable}}{{@{{}}{''.join(layout.specs)}@{{}}}}"]
+        if caption is not None:
+            lines.append(f"\\caption*{{{caption.strip()}}}\\\\")
+        head = []
+        if header:
+            cells = []
+            for text, width, side in zip(header, layout.widths, layout.sides):
+                stacked = "\\\\".join(_text(line) for line in _wrapped(text, width))
+                cells.append(f"\\begin{{tabular}}[b]{{@{{}}{side}@{{}}}}{stacked}\\end{{tabular}}")
+            head = ["\\toprule", " & ".join(cells) + " \\\\", "\\midrule"]
+        lines += [*head, "\\endfirsthead", *head, "\\endhead", "\\bottomrule", "\\endlastfoot"]
+        lines += [" & ".join(self.render_inner(cell) for cell in row.children) + " \\\\" for row in token.children]
+        size = f"\\{layout.size}\\setlength{{\\tabcolsep}}{{{_COLUMN_GAP_PT:g}pt}}"
+        return f"\n{{{size}\n" + "\n".join(lines) + "\n\\end{longtable}}\n"
+
+
+def _plain(cell) -> str:
+    """A table cell's text as written, without its markup, to measure it."""
+    if hasattr(cell, "content"):
+        return cell.content
+    return "".join(_plain(child) for child in getattr(cell, "children", None) or ())

@@ -1,0 +1,216 @@
+"""The note and the tables in LaTeX (note.tex, errors.tex, forces.tex).
+
+Read back by other tools than the ones that wrote them: the Markdown's tables by markdown-it-py (the note's
+HTML parser, not mistletoe, which writes the LaTeX), the LaTeX by pylatexenc, the typeset PDF by pdfium.
+Where XeLaTeX is installed the documents are typeset, twice as a user would, and must come out without a
+missing glyph or a line running into the margin, in Latin, Cyrillic and CJK script.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from markdown_it import MarkdownIt
+from pylatexenc.latex2text import LatexNodes2Text
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.report.forces import markdown as forces_markdown
+from graphplan.report.latex import _COLUMN_GAP_PT, _LINE_PT, _layout, latex_document, latex_fragment
+from graphplan.report.note import note_markdown
+from graphplan.report.tables import markdown as errors_markdown
+
+CASES = [("fixtures/shaper_six_bar.toml", "en"), ("fixtures/triad_class_iii.toml", "ru"),
+         ("fixtures/engine_slider_crank.toml", "zh")]
+XELATEX = shutil.which("xelatex")
+needs_xelatex = pytest.mark.skipif(XELATEX is None, reason="XeLaTeX is not installed (Debian: texlive-xetex)")
+
+
+@pytest.fixture(scope="module", params=CASES, ids=[f"{Path(path).stem}-{locale}" for path, locale in CASES])
+def case(request):
+    path, locale = request.param
+    scene = graphplan.load(path)
+    analysis = analyse(dataclasses.replace(scene, locale=locale))
+    note = note_markdown(analysis)
+    return analysis, note, latex_document(note, analysis.scene.title, locale)
+
+
+def plain(latex: str) -> str:
+    """LaTeX back to its text, spaces collapsed; a caret comes back as the modifier letter pylatexenc uses."""
+    return " ".join(LatexNodes2Text().latex_to_text(latex).replace("ˆ", "^").split())
+
+
+def flat(text: str) -> str:
+    """The note's text as it reads once its symbols are set: ``aBA^τ`` is aBA with τ raised, ``aBAⁿ`` with n."""
+    return text.replace("^", "").replace("ⁿ", "n").replace("ᵏ", "k")
+
+
+def markdown_tables(text: str) -> list[tuple[str | None, list[list[str]]]]:
+    """Each table of the Markdown as (the paragraph right before it, or None; its rows, header first)."""
+    tokens = MarkdownIt("commonmark").enable("table").parse(text)
+    tables, rows, before = [], [], None
+    for k, token in enumerate(tokens):
+        if token.type == "table_open":
+            previous = tokens[k - 2] if k >= 2 and tokens[k - 1].type == "paragraph_close" else None
+            before, rows = (flat(" ".join(previous.content.split())) if previous is not None else None), []
+        elif token.type == "tr_open":
+            rows.append([])
+        elif token.type == "inline" and tokens[k - 1].type in ("th_open", "td_open"):
+            rows[-1].append(flat(" ".join(token.content.split())))
+        elif token.type == "table_close":
+            tables.append((before, rows))
+    return tables
+
+
+def latex_tables(latex: str) -> list[tuple[str | None, list[list[str]]]]:
+    """Each longtable of the LaTeX as (its caption, or None; its rows, header first), read back to text."""
+    found = []
+    for table in re.findall(r"\\begin\{longtable\}.*?\\end\{longtable\}", latex, flags=re.DOTALL):
+        caption = re.search(r"\\caption\*\{(.*)\}\\\\\n", table)
+        head = table.split("\\endfirsthead")[0]
+        header_line = re.search(r"\\toprule\n(.*) \\\\\n\\midrule", head)
+        body = table.split("\\endlastfoot\n")[1].removesuffix("\\end{longtable}").strip().splitlines()
+        lines = ([header_line[1]] if header_line else []) + [line.removesuffix(" \\\\") for line in body]
+        rows = [[plain(re.sub(r"\\\\", " ", _unstacked(cell))) for cell in re.split(r"(?<!\\)&", line)] for line in lines]
+        found.append((plain(caption[1]) if caption else None, rows))
+    return found
+
+
+def _unstacked(cell: str) -> str:
+    """A header cell's lines out of the one-column tabular that stacks them."""
+    return re.sub(r"\\begin\{tabular\}\[b\]\{@\{\}[lcr]@\{\}\}(.*)\\end\{tabular\}", r"\1", cell)
+
+
+def test_every_table_of_the_note_comes_back_cell_for_cell_with_its_caption(case):
+    _, note, latex = case
+    expected, got = markdown_tables(note), latex_tables(latex)
+    assert len(got) == len(expected) > 5
+    for (caption, rows), (caption_back, rows_back) in zip(expected, got):
+        assert caption_back == caption
+        assert rows_back == rows
+
+
+def test_the_running_text_comes_back_word_for_word(case):
+    _, note, latex = case
+    paragraphs = [line for line in note.splitlines() if line and not line.startswith(("|", "#", "- "))]
+    body = plain(latex.split("\\begin{document}")[1])
+    for paragraph in paragraphs:
+        assert flat(" ".join(paragraph.replace("**", "").split())) in body
+
+
+def test_special_characters_are_escaped_and_symbols_take_their_indices():
+    text = r"Cost $5 & 10% of #3 {x} a_b ~ ^ \ and VBA = VA + aBA^τ, ω3, R23τ"
+    latex = latex_fragment(text, "en")
+    body = latex.split("\n", 3)[3]  # after the comment naming the packages
+    assert plain(body) == "Cost $5 & 10% of #3 {x} a_b ~ ^ \\ and VBA = VA + aBAτ, ω3, R23τ"
+    assert r"V\textsubscript{BA} = V\textsubscript{A} + a\textsubscript{BA}\textsuperscript{τ}" in body
+    assert r"ω\textsubscript{3}" in body and r"R\textsubscript{23}\textsuperscript{τ}" in body
+    # No character LaTeX would read as markup is left bare.
+    assert not re.search(r"(?<!\\)[$&%#_{}~^]", body.replace(r"\textsubscript{", "").replace(r"\textsuperscript{", "")
+                         .replace(r"\textbackslash{}", "").replace(r"\textasciitilde{}", "")
+                         .replace(r"\textasciicircum{}", "").replace("}", ""))
+
+
+def line_used(layout) -> float:
+    """The line a layout takes, pt: its columns at their type size, and their gaps."""
+    return sum(layout.widths) * layout.points + 2 * _COLUMN_GAP_PT * len(layout.widths)
+
+
+def test_a_table_that_fits_keeps_its_columns_and_size():
+    layout = _layout(["quantity", "value"], [["lOA", "0.1 m"], ["ω2", "6 rad/s, clockwise"]], [None, None])
+    assert layout.specs == ("l", "l") and layout.size == "small"
+    assert layout.widths == pytest.approx((0.6 * 8, 0.6 * 18))
+
+
+def test_a_table_with_a_long_text_wraps_its_widest_columns_to_fit_the_line():
+    long_text = "turned by 90° in the sense of ω3 (counter-clockwise) " * 2
+    layout = _layout(["vector", "modulus", "on the plan, mm", "line of action, direction"],
+                     [["aA", long_text, "pa = 100.00", "known"], ["aBA", "?", "ab", long_text]], [None, None, 1, None])
+    assert layout.specs[0] == "l" and layout.specs[2] == "r" and layout.size == "small"
+    assert "p{" in layout.specs[1] and "p{" in layout.specs[3]
+    assert line_used(layout) == pytest.approx(_LINE_PT)
+
+
+def test_a_table_of_many_columns_is_set_smaller_until_its_headers_fit():
+    # The error table of a Russian note with measured values: nine columns, headers of long words.
+    header = ["величина", "ед. изм.", "аналитически", "построение", "чертёж", "замер", "δ (построение), %",
+              "δ (чертёж), %", "δ (замер), %"]
+    layout = _layout(header, [["VB", "м/с", "0,70049", "0,70049", "0,70408", "0,76993", "0,000", "−0,513", "−9,913"]],
+                     [None, None, 1, 1, 1, 1, 1, 1, 1])
+    assert layout.size != "small"
+    assert line_used(layout) <= _LINE_PT
+
+
+def test_the_fragments_carry_every_table_of_errors_md_and_forces_md(case):
+    analysis, _, _ = case
+    for markdown in (errors_markdown(analysis), forces_markdown(analysis)):
+        fragment = latex_fragment(markdown, analysis.scene.locale)
+        assert "\\documentclass" not in fragment and fragment.startswith("% ")
+        assert latex_tables(fragment) == markdown_tables(markdown)
+
+
+def test_the_command_line_writes_the_latex_beside_the_markdown(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out)]) == 0
+    for name in ("note", "errors", "forces"):
+        markdown = (out / f"{name}.md").read_text(encoding="utf-8")
+        latex = (out / f"{name}.tex").read_text(encoding="utf-8")
+        assert latex_tables(latex) == markdown_tables(markdown)
+
+
+def typeset(tmp_path: Path, name: str, latex: str) -> tuple[str, Path]:
+    """``latex`` typeset by XeLaTeX twice (longtable settles its columns on the second): its log and PDF."""
+    source = tmp_path / f"{name}.tex"
+    source.write_text(latex, encoding="utf-8")
+    for _ in range(2):
+        done = subprocess.run([XELATEX, "-interaction=nonstopmode", "-halt-on-error", source.name], cwd=tmp_path,
+                              capture_output=True, text=True, timeout=300, check=False)
+        log = (tmp_path / f"{name}.log").read_text(encoding="utf-8", errors="replace")
+        assert done.returncode == 0, log[-3000:]
+    return log, tmp_path / f"{name}.pdf"
+
+
+def pdf_text(path: Path) -> str:
+    import pypdfium2
+
+    document = pypdfium2.PdfDocument(path)
+    try:
+        return "".join(page.get_textpage().get_text_range() for page in document)
+    finally:
+        document.close()
+
+
+@needs_xelatex
+def test_the_note_typesets_with_every_glyph_inside_the_margins(case, tmp_path):
+    _, note, latex = case
+    log, pdf = typeset(tmp_path, "note", latex)
+    assert "Missing character" not in log
+    assert "Overfull \\hbox" not in log
+    assert "Table widths have changed" not in log
+    # Every number of every table in the PDF, in the note's order.
+    text = "".join(pdf_text(pdf).split())
+    for _, rows in markdown_tables(note):
+        numbers = [cell for row in rows[1:] for cell in row if re.fullmatch(r"[−\d.,]+", cell)]
+        at = 0
+        for number in numbers:
+            at = text.find(number, at)
+            assert at >= 0, number
+
+
+@needs_xelatex
+def test_a_fragment_typesets_in_a_document_of_the_user_s(case, tmp_path):
+    analysis, _, _ = case
+    font = "Noto Sans CJK SC" if analysis.scene.locale == "zh" else "DejaVu Sans"
+    fragment = latex_fragment(errors_markdown(analysis), analysis.scene.locale)
+    (tmp_path / "errors.tex").write_text(fragment, encoding="utf-8")
+    wrapper = ("\\documentclass{article}\n\\usepackage{fontspec}\n\\setmainfont{" + font + "}\n"
+               "\\usepackage{array,longtable,booktabs,caption}\n\\begin{document}\n\\input{errors.tex}\n\\end{document}\n")
+    log, pdf = typeset(tmp_path, "report", wrapper)
+    assert "Missing character" not in log
+    assert analysis.scene.title.split()[0] in pdf_text(pdf)
