@@ -7,7 +7,8 @@ tables), and its LaTeX renderer, adapted here, writes it out:
 - a table as a longtable with booktabs rules, its header repeated on every
   page it runs onto, and the paragraph right before it (the note's
   "Table 3. ...") as its caption, so that a page break never parts them;
-  a wide table set smaller, and columns still too wide for the line wrapped (:func:`_layout`);
+  a wide table set smaller, and its columns still too wide for the line
+  wrapped (:func:`_layout`);
 - the textbook's symbols with their indices as sub- and superscripts, read
   as the HTML reads them (:mod:`graphplan.report.symbols`);
 - every other character as text: LaTeX's special characters escaped, the
@@ -180,7 +181,14 @@ def _layout(header: list[str], rows: list[list[str]], aligns: list[int | None]) 
 
 
 class _Renderer(LaTeXRenderer):
-    """mistletoe's LaTeX renderer with the note's headings, tables, symbols and escaping."""
+    """mistletoe's LaTeX renderer with the note's headings, tables, symbols and escaping.
+
+    ``titled``: the first heading is the document's title (the note), not a section (a fragment).
+    """
+
+    def __init__(self, titled: bool) -> None:
+        super().__init__()
+        self.titled = titled
 
     def render_raw_text(self, token, escape=True) -> str:
         return _text(token.content) if escape else token.content
@@ -191,15 +199,11 @@ class _Renderer(LaTeXRenderer):
     def render_inline_code(self, token) -> str:
         return f"\\texttt{{{_escape(token.children[0].content)}}}"
 
-    def __init__(self, titled: bool) -> None:
-        super().__init__()
-        self.titled = titled
-
     def render_heading(self, token) -> str:
         """Unnumbered: the note numbers its own.  In a document the first level is its title."""
         if self.titled and token.level == 1:
             return f"\n{{\\centering\\Large\\bfseries {self.render_inner(token)}\\par}}\n"
-        command = _HEADINGS[min(token.level - self.titled, len(_HEADINGS)) - 1]
+        command = _HEADINGS[min(token.level - (1 if self.titled else 0), len(_HEADINGS)) - 1]
         return f"\n\\{command}*{{{self.render_inner(token)}}}\n"
 
     def render_list(self, token) -> str:
