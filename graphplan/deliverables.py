@@ -418,7 +418,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
 
 def accuracy_report(analysis: Analysis) -> dict[str, str]:
-    """Each method's error against the 50-digit reference and its run time: table, CSV and plot."""
+    """Each method's error against the 50-digit reference and its run time: table (Markdown, LaTeX), CSV and plot."""
     from pathlib import PurePath
 
     from .accuracy import study
@@ -426,7 +426,10 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
 
     scene = analysis.scene
     found = study(scene, PurePath(scene.source).stem)
-    return {"accuracy.md": accuracy.markdown(found, scene.locale, scene.title),
+    from .report.latex import latex_fragment
+
+    text = accuracy.markdown(found, scene.locale, scene.title)
+    return {"accuracy.md": text, "accuracy.tex": latex_fragment(text, scene.locale),
             "accuracy.csv": accuracy.csv_text(found.rows),
             "accuracy.svg": accuracy.figure(found, scene.locale, scene.title)}
 

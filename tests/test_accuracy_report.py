@@ -91,14 +91,19 @@ def test_accuracy_is_delivered_on_request_only(tmp_path):
     assert "accuracy" not in chosen(scene, analyse(scene))
     out = tmp_path / "out"
     assert main(["run", str(FIXTURES / "ratchet_crank_rocker.toml"), "--out", str(out), "--only", "accuracy"]) == 0
-    assert {p.name for p in out.iterdir()} == {"results.json", "accuracy.md", "accuracy.csv", "accuracy.svg"}
+    assert {p.name for p in out.iterdir()} == {"results.json", "accuracy.md", "accuracy.tex", "accuracy.csv",
+                                               "accuracy.svg"}
     table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
     assert [row["method"] for row in table][:2] == ["analytic", "construction"]
     assert all(float(row["velocity_max"]) < 1e-12 for row in table[:2])
     note = (out / "accuracy.md").read_text(encoding="utf-8")
     assert note.startswith("# Точность методов") and "чертёжной точностью 0,5 мм" in note  # the scene is ru
-    for row in table:
+    latex = (out / "accuracy.tex").read_text(encoding="utf-8")
+    rows = latex.split("\\endlastfoot\n")[1].split("\\end{longtable}")[0].strip().splitlines()
+    assert len(rows) == len(table)
+    for row, line in zip(table, rows):
         assert f"{float(row['acceleration_max']):.1e}".replace(".", ",") in note
+        assert f"{float(row['acceleration_max']):.1e}".replace(".", ",") in line.split("&")[5]
     assert "<svg" in (out / "accuracy.svg").read_text(encoding="utf-8")
 
 

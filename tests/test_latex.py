@@ -21,6 +21,7 @@ from pylatexenc.latex2text import LatexNodes2Text
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
+from graphplan.render.primitives import character_width
 from graphplan.report.forces import markdown as forces_markdown
 from graphplan.report.latex import _COLUMN_GAP_PT, _LINE_PT, _layout, latex_document, latex_fragment
 from graphplan.report.note import note_markdown
@@ -117,6 +118,10 @@ def test_special_characters_are_escaped_and_symbols_take_their_indices():
                          .replace(r"\textasciicircum{}", "").replace("}", ""))
 
 
+def em(text: str) -> float:
+    return sum(character_width(c) for c in text)
+
+
 def line_used(layout) -> float:
     """The line a layout takes, pt: its columns at their type size, and their gaps."""
     return sum(layout.widths) * layout.points + 2 * _COLUMN_GAP_PT * len(layout.widths)
@@ -125,7 +130,8 @@ def line_used(layout) -> float:
 def test_a_table_that_fits_keeps_its_columns_and_size():
     layout = _layout(["quantity", "value"], [["lOA", "0.1 m"], ["ω2", "6 rad/s, clockwise"]], [None, None])
     assert layout.specs == ("l", "l") and layout.size == "small"
-    assert layout.widths == pytest.approx((0.6 * 8, 0.6 * 18))
+    # Each column as wide as its widest text, the header in the first, a body cell in the second.
+    assert layout.widths == pytest.approx((em("quantity"), em("6 rad/s, clockwise")))
 
 
 def test_a_table_with_a_long_text_wraps_its_widest_columns_to_fit_the_line():

@@ -24,7 +24,6 @@ head names what the including document needs.
 
 from __future__ import annotations
 
-import unicodedata
 from dataclasses import dataclass
 
 from mistletoe import Document
@@ -32,6 +31,7 @@ from mistletoe.block_token import Paragraph, Table
 from mistletoe.latex_renderer import LaTeXRenderer
 from scipy.optimize import brentq
 
+from ..render.primitives import character_width
 from .symbols import Symbol, pieces
 
 _SPECIAL = str.maketrans({"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
@@ -42,8 +42,6 @@ _HEADINGS = ("section", "subsection", "subsubsection")
 
 # A table is measured against the note's line, A4 less its margins of 30 mm and 10 mm, in pt.
 _LINE_PT = 483.7
-# An average Latin or Cyrillic character of DejaVu Sans, in em; a CJK character is a whole em.
-_CHARACTER_EM = 0.6
 # What each column keeps clear on either side (\tabcolsep), pt.
 _COLUMN_GAP_PT = 4.0
 # A table's type sizes of the 11 pt class, largest first: a wide table takes the first its headers fit at.
@@ -116,8 +114,8 @@ def _symbol(symbol: Symbol) -> str:
 
 
 def _width(text: str) -> float:
-    """``text``'s width in em."""
-    return sum(1.0 if unicodedata.east_asian_width(c) in "WF" else _CHARACTER_EM for c in text)
+    """``text``'s width in em, as the drawings estimate their labels' (generously)."""
+    return sum(character_width(c) for c in text)
 
 
 def _wrapped(text: str, width: float) -> list[str]:
