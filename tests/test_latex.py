@@ -78,23 +78,41 @@ def latex_tables(latex: str) -> list[tuple[str | None, list[list[str]]]]:
         header_line = re.search(r"\\toprule\n(.*) \\\\\n\\midrule", head)
         body = table.split("\\endlastfoot\n")[1].removesuffix("\\end{longtable}").strip().splitlines()
         lines = ([header_line[1]] if header_line else []) + [line.removesuffix(" \\\\") for line in body]
-        rows = [[plain(re.sub(r"\\\\", " ", _unstacked(cell))) for cell in re.split(r"(?<!\\)&", line)] for line in lines]
+        rows = [[plain(_unstacked(cell)) for cell in re.split(r"(?<!\\)&", line)] for line in lines]
         found.append((plain(caption[1]) if caption else None, rows))
     return found
 
 
+# Where a stacked header breaks its line. The break stands for a space or, in Chinese, for none: which one
+# the LaTeX does not say, and a reader must accept either.
+BREAK = "¦"
+
+
 def _unstacked(cell: str) -> str:
-    """A header cell's lines out of the one-column tabular that stacks them."""
-    return re.sub(r"\\begin\{tabular\}\[b\]\{@\{\}[lcr]@\{\}\}(.*)\\end\{tabular\}", r"\1", cell)
+    """A header cell's lines out of the one-column tabular that stacks them, joined by :data:`BREAK`."""
+    stacked = re.fullmatch(r"\\begin\{tabular\}\[b\]\{@\{\}[lcr]@\{\}\}(.*)\\end\{tabular\}", cell.strip())
+    return stacked[1].replace("\\\\", f" {BREAK} ") if stacked else cell
+
+
+def same_tables(got, expected) -> bool:
+    """Whether tables read back from the LaTeX are the Markdown's, a header's line break read as a space or none."""
+    def same(cell: str, wanted: str) -> bool:
+        pattern = " ?".join(re.escape(line.strip()) for line in cell.split(BREAK))
+        return re.fullmatch(pattern, wanted) is not None
+
+    return len(got) == len(expected) and all(
+        caption == wanted_caption and len(rows) == len(wanted_rows)
+        and all(len(row) == len(wanted_row) and all(map(same, row, wanted_row))
+                for row, wanted_row in zip(rows, wanted_rows))
+        for (caption, rows), (wanted_caption, wanted_rows) in zip(got, expected))
 
 
 def test_every_table_of_the_note_comes_back_cell_for_cell_with_its_caption(case):
     _, note, latex = case
     expected, got = markdown_tables(note), latex_tables(latex)
     assert len(got) == len(expected) > 5
-    for (caption, rows), (caption_back, rows_back) in zip(expected, got):
-        assert caption_back == caption
-        assert rows_back == rows
+    for table, table_back in zip(expected, got):
+        assert same_tables([table_back], [table]), (table_back, table)
 
 
 def test_the_running_text_comes_back_word_for_word(case):
@@ -158,7 +176,7 @@ def test_the_fragments_carry_every_table_of_errors_md_and_forces_md(case):
     for markdown in (errors_markdown(analysis), forces_markdown(analysis)):
         fragment = latex_fragment(markdown, analysis.scene.locale)
         assert "\\documentclass" not in fragment and fragment.startswith("% ")
-        assert latex_tables(fragment) == markdown_tables(markdown)
+        assert same_tables(latex_tables(fragment), markdown_tables(markdown))
 
 
 def test_the_command_line_writes_the_latex_beside_the_markdown(tmp_path):
@@ -167,7 +185,7 @@ def test_the_command_line_writes_the_latex_beside_the_markdown(tmp_path):
     for name in ("note", "errors", "forces"):
         markdown = (out / f"{name}.md").read_text(encoding="utf-8")
         latex = (out / f"{name}.tex").read_text(encoding="utf-8")
-        assert latex_tables(latex) == markdown_tables(markdown)
+        assert same_tables(latex_tables(latex), markdown_tables(markdown))
 
 
 def typeset(tmp_path: Path, name: str, latex: str) -> tuple[str, Path]:

@@ -31,7 +31,8 @@ from mistletoe.block_token import Paragraph, Table
 from mistletoe.latex_renderer import LaTeXRenderer
 from scipy.optimize import brentq
 
-from ..render.primitives import character_width
+from ..render.primitives import FONT_SIZE_PER_CAP, character_width
+from ..render.wrapping import fitted
 from .symbols import Symbol, pieces
 
 _SPECIAL = str.maketrans({"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
@@ -50,6 +51,8 @@ _SIZES = (("small", 10.0), ("footnotesize", 9.0), ("scriptsize", 8.0))
 _RAGGED = {"l": "\\raggedright", "c": "\\centering", "r": "\\raggedleft"}
 # A header no wider than this (em) stays on one line where the table has room.
 _HEADER_LINE_EM = 7.0
+# The drawings' line breaker measures in mm at a cap height: at this one a mm is an em.
+_EM_CAP = 1.0 / FONT_SIZE_PER_CAP
 
 _FONTS = {"zh": "Noto Sans CJK SC"}
 _DEFAULT_FONT = "DejaVu Sans"
@@ -116,17 +119,6 @@ def _symbol(symbol: Symbol) -> str:
 def _width(text: str) -> float:
     """``text``'s width in em, as the drawings estimate their labels' (generously)."""
     return sum(character_width(c) for c in text)
-
-
-def _wrapped(text: str, width: float) -> list[str]:
-    """``text`` broken at spaces into lines no wider than ``width`` em (a longer word keeps a line of its own)."""
-    lines: list[str] = []
-    for word in text.split():
-        if lines and _width(f"{lines[-1]} {word}") <= width:
-            lines[-1] += " " + word
-        else:
-            lines.append(word)
-    return lines or [""]
 
 
 @dataclass(frozen=True)
@@ -241,7 +233,7 @@ class _Renderer(LaTeXRenderer):
         if header:
             cells = []
             for text, width, side in zip(header, layout.widths, layout.sides):
-                stacked = "\\\\".join(_text(line) for line in _wrapped(text, width))
+                stacked = "\\\\".join(_text(line) for line in fitted(text, width, _EM_CAP))
                 cells.append(f"\\begin{{tabular}}[b]{{@{{}}{side}@{{}}}}{stacked}\\end{{tabular}}")
             head = ["\\toprule", " & ".join(cells) + " \\\\", "\\midrule"]
         lines += [*head, "\\endfirsthead", *head, "\\endhead", "\\bottomrule", "\\endlastfoot"]
