@@ -423,11 +423,10 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
 
     from .accuracy import study
     from .report import accuracy
+    from .report.latex import latex_fragment
 
     scene = analysis.scene
     found = study(scene, PurePath(scene.source).stem)
-    from .report.latex import latex_fragment
-
     text = accuracy.markdown(found, scene.locale, scene.title)
     return {"accuracy.md": text, "accuracy.tex": latex_fragment(text, scene.locale),
             "accuracy.csv": accuracy.csv_text(found.rows),
