@@ -22,6 +22,7 @@ from typing import Any
 
 from .analysis import Analysis
 from .errors import SceneError
+from .kinematic_diagrams import interval_count
 from .locale import strings
 from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene
@@ -64,10 +65,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if piece == "diagrams":
         if scene.positions.working is None:
             return "needs the output link: positions.working"
-        if scene.driver is None or scene.driver.kind != "crank" or not scene.driver.cyclic:
-            return "needs a crank that turns round: the diagrams are drawn over its turn"
-        if scene.positions.count < 3:
-            return "needs at least 3 positions for the chord method"
+        if scene.driver is not None and interval_count(scene.driver.cyclic, scene.positions.count) < 3:
+            return "needs at least 3 intervals between positions for the chord method"
     if piece == "accuracy" and analysis.motion.singular:
         index = min(analysis.motion.singular)
         return (f"needs every position regular: position {analysis.positions.numbers[index]} is singular "

@@ -1,4 +1,4 @@
-"""Kinematic diagrams of the output link: displacement, velocity and acceleration over one cycle.
+"""Kinematic diagrams of the output link: displacement, velocity and acceleration over the driver's run.
 
 The course project draws the output link's displacement against the crank
 angle from the scene's positions, then differentiates it graphically by the
@@ -15,9 +15,17 @@ how far the graphical derivative strays from the exact one.
 The output link is ``[positions] working.link``.  Its displacement is its
 angle ψ (rad) for a turning link and its travel along its own direction (m)
 for a translating one, counted from the first position and positive in the
-working sense.  The crank is taken to turn uniformly at the scene's ω, so
-that its angle is a time axis (``t = φ/|ω|``); a scene's ε of the crank is
-left out of the acceleration so that both methods describe the same motion.
+working sense.  The driver is taken to move uniformly at the scene's speed,
+so that its coordinate is a time axis (``t = φ/|ω|``, or ``t = s/|v|`` for a
+slider); a scene's ε of the crank (s̈ of a slider) is left out of the
+acceleration so that both methods describe the same motion.
+
+A crank that turns round gives one cycle, closed: the last interval runs back
+to the first position, and the chord across the end of the cycle gives the
+acceleration there.  A rocking crank (``driver.swing``) and a slider
+(``driver.travel``) give one run from end to end, open: the acceleration is
+found at the positions between the ends only, as the chords of the velocity
+diagram reach no further.
 
 The chord method's values on a grid of step h agree with the exact ones to
 O(h²): a chord's slope is the derivative at its mid-interval up to
@@ -59,15 +67,17 @@ GREATEST_POLE_MM = 80.0
 class DiagramScales:
     """The scale factors of the diagrams, each in SI units per mm of paper.
 
-    ``angle`` is μφ (rad/mm) and ``time`` μt = μφ/|ω| (s/mm) of the common
-    abscissa; ``displacement`` is μs (m/mm, or rad/mm for a turning link), a
+    ``along`` is the scale of the common abscissa in the driver's coordinate:
+    μφ (rad/mm) for a crank, μs of its travel (m/mm) for a slider; ``time``
+    μt = ``along``/|driver speed| (s/mm) is the same abscissa read as time;
+    ``displacement`` is μs (m/mm, or rad/mm for a turning link), a
     standard value; ``velocity`` μv = μs/(μt·H1) and ``acceleration``
     μa = μv/(μt·H2) follow from the pole distances ``velocity_pole`` H1 and
     ``acceleration_pole`` H2 (mm), whole millimetres chosen so that each
     curve fills its field.
     """
 
-    angle: float
+    along: float
     time: float
     displacement: float
     velocity: float
@@ -79,31 +89,39 @@ class DiagramScales:
 
 @dataclass(frozen=True)
 class KinematicDiagrams:
-    """Displacement, velocity and acceleration of the output link over one cycle, two ways.
+    """Displacement, velocity and acceleration of the output link over the driver's run, two ways.
 
-    Angles of the crank (``phi``, ``nodes``, ``midpoints``) are the angles it
-    has turned through from the first position, 0 to 2π.  ``phi`` with ``s``,
-    ``v``, ``a`` is the dense analytic solution; ``nodes`` are the scene's
-    positions with the first repeated at 2π to close the cycle (``numbers``
-    has one more entry than the scene's count, the first number again);
+    The abscissae (``along``, ``nodes``, ``midpoints``) are the driver's
+    coordinate travelled from the first position: the angle a crank has
+    turned through (rad) or the distance a slider has moved (m), 0 to
+    ``span``.  ``along`` with ``s``, ``v``, ``a`` is the dense analytic
+    solution.  ``nodes`` are the scene's positions in the order the driver
+    meets them, numbered by ``numbers``; over a ``cyclic`` crank's turn the
+    first position is repeated at 2π to close the cycle (``numbers`` then has
+    one more entry than the scene's count, the first number again).
     ``midpoints`` are the mid-intervals.  ``v_chord`` (at the midpoints) and
-    ``a_chord`` (at the nodes) are the chord method's values; ``v_mid`` and
-    ``a_nodes`` the analytic ones at the same angles.  The differences are in
-    per cent of ``v_peak`` and ``a_peak``, the largest magnitudes of the
-    analytic curves over the cycle.
+    ``a_chord`` (at :attr:`a_chord_nodes`) are the chord method's values;
+    ``v_mid`` and ``a_nodes`` the analytic ones at the midpoints and at every
+    node.  The differences are in per cent of ``v_peak`` and ``a_peak``, the
+    largest magnitudes of the analytic curves over the run.
 
     Units: for a translating link m, m/s, m/s² (``point`` names the point
     whose travel is drawn); for a turning link rad, rad/s, rad/s².
-    ``stroke_end`` is the angle where the working stroke ends, when the
-    positions start at the extreme where it begins.
+    ``driver`` is the driver's kind, ``"crank"`` or ``"slider"``, and
+    ``driver_speed`` its |ω| (rad/s) or |v| (m/s).  ``stroke_end`` is the
+    angle where the working stroke ends, when the positions of a turning
+    crank start at the extreme where it begins.
     """
 
     link: int
     translating: bool
     point: str | None
-    omega: float
+    driver: str
+    cyclic: bool
+    span: float
+    driver_speed: float
     numbers: tuple[int, ...]
-    phi: np.ndarray
+    along: np.ndarray
     s: np.ndarray
     v: np.ndarray
     a: np.ndarray
@@ -121,14 +139,24 @@ class KinematicDiagrams:
     stroke_end: float | None = None
 
     @property
-    def count(self) -> int:
-        """The number of positions in the cycle (intervals of the chord method)."""
+    def intervals(self) -> int:
+        """The number of intervals between positions, each one chord of the displacement diagram."""
         return len(self.midpoints)
 
     @property
     def step(self) -> float:
-        """The interval Δφ between positions (rad)."""
-        return 2.0 * math.pi / self.count
+        """The interval between positions in the driver's coordinate (rad or m)."""
+        return self.span / self.intervals
+
+    @property
+    def a_chord_nodes(self) -> np.ndarray:
+        """The nodes the chord method gives the acceleration at: all of a cycle's, the inner ones of a run."""
+        return self.nodes if self.cyclic else self.nodes[1:-1]
+
+    @property
+    def a_at_chord_nodes(self) -> np.ndarray:
+        """The analytic acceleration at :attr:`a_chord_nodes`."""
+        return self.a_nodes if self.cyclic else self.a_nodes[1:-1]
 
     @property
     def v_difference(self) -> np.ndarray:
@@ -137,8 +165,8 @@ class KinematicDiagrams:
 
     @property
     def a_difference(self) -> np.ndarray:
-        """Chord method minus analytic at the positions, % of the peak acceleration."""
-        return 100.0 * (self.a_chord - self.a_nodes) / self.a_peak
+        """Chord method minus analytic at :attr:`a_chord_nodes`, % of the peak acceleration."""
+        return 100.0 * (self.a_chord - self.a_at_chord_nodes) / self.a_peak
 
     @property
     def largest_v_difference(self) -> float:
@@ -147,6 +175,11 @@ class KinematicDiagrams:
     @property
     def largest_a_difference(self) -> float:
         return float(np.max(np.abs(self.a_difference)))
+
+
+def interval_count(cyclic: bool, count: int) -> int:
+    """The intervals between ``count`` positions: as many over a closed cycle, one fewer over an open run."""
+    return count if cyclic else count - 1
 
 
 def chord_derivative(values: np.ndarray, step: float) -> np.ndarray:
@@ -188,68 +221,75 @@ def pole_distance(span_mm: float, range_value: float, scale: float, time_scale: 
 
 def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: int = DENSE_SAMPLES,
                        axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM) -> KinematicDiagrams:
-    """The kinematic diagrams of the output link (``[positions] working.link``) over one crank turn.
+    """The kinematic diagrams of the output link (``[positions] working.link``) over the driver's run.
 
-    ``samples`` analytic values per cycle draw the exact curves; the chord
-    method reads only the displacements at the scene's ``count`` positions.
+    The run is a crank's turn, or once over a rocking crank's swing or a
+    slider's travel in the direction the driver moves.  ``samples`` analytic
+    values over the run draw the exact curves; the chord method reads only
+    the displacements at the scene's ``count`` positions.
     """
     scene = mechanism.scene
     working = scene.positions.working
     if working is None:
         raise SceneError("positions.working", "kinematic diagrams need the output link: "
                          "name it as working = { link = N, sense = ... }")
-    driver = mechanism.driver
-    if driver.kind != "crank":
-        raise SceneError("driver.kind", "kinematic diagrams are drawn against a crank's angle; "
-                         "a slider driver has none", driver.kind)
-    if not driver.cyclic:
-        raise SceneError("driver.swing", "kinematic diagrams are drawn over a crank's turn; "
-                         "a rocking crank makes none", [round(math.degrees(end), 6) for end in driver.travel])
     if samples < 4:
         raise ValueError(f"samples must be at least 4 (got {samples})")
     if not axis_mm > 0 or not field_mm > 0:
         raise ValueError(f"axis_mm and field_mm must be > 0 (got {axis_mm}, {field_mm})")
+    driver = mechanism.driver
     count = len(positions.values)
-    if count < 3:
-        raise SceneError("positions.count", "the chord method needs at least 3 positions", count)
-    start = float(positions.values[0])
-    omega, epsilon = float(driver.omega), float(driver.epsilon)
-    speed = abs(omega)
-    step = 2.0 * math.pi / count
-    phi = np.linspace(0.0, 2.0 * math.pi, samples + 1)
-    nodes = step * np.arange(count + 1)
-    midpoints = step * (np.arange(count) + 0.5)
-    turned = np.concatenate((phi, nodes, midpoints))
-    motion = solve(mechanism, start + driver.sense * turned, positions.reference)
+    intervals = interval_count(driver.cyclic, count)
+    if intervals < 3:
+        run = "turn" if driver.cyclic else "travel" if driver.kind == "slider" else "swing"
+        raise SceneError("positions.count", f"the chord method needs at least 3 intervals between positions; "
+                         f"{count} positions over the {run} make {intervals}", count)
+    speed, rate = (driver.omega, driver.epsilon) if driver.kind == "crank" else (driver.velocity, driver.acceleration)
+    numbers = tuple(int(n) for n in positions.numbers)
+    if driver.cyclic:
+        start, span = float(positions.values[0]), 2.0 * math.pi
+        numbers += (numbers[0],)
+    else:
+        first, last = float(positions.values[0]), float(positions.values[-1])
+        span = abs(last - first)
+        # The driver meets the positions in the order it moves: a run given against its speed is met backwards.
+        if (last - first) * driver.sense < 0:
+            first, numbers = last, numbers[::-1]
+        start = first
+    step = span / intervals
+    along = np.linspace(0.0, span, samples + 1)
+    nodes = step * np.arange(intervals + 1)
+    midpoints = step * (np.arange(intervals) + 0.5)
+    motion = solve(mechanism, start + driver.sense * np.concatenate((along, nodes, midpoints)), positions.reference)
     s_all = _displacement(mechanism, motion)
-    v_all, rate = working_speed(motion)
-    # A uniformly turning crank: the ε·ds/dφ the scene's ε adds belongs to no single crank speed.
-    a_all = rate - epsilon * v_all / omega
-    dense, at_nodes = slice(0, samples + 1), slice(samples + 1, samples + 2 + count)
-    at_midpoints = slice(samples + 2 + count, None)
+    v_all, output_rate = working_speed(motion)
+    # A uniformly moving driver: the acceleration its ε (s̈) adds belongs to no single driver speed.
+    a_all = output_rate - rate * v_all / speed
+    dense, at_nodes = slice(0, samples + 1), slice(samples + 1, samples + 2 + intervals)
+    at_midpoints = slice(samples + 2 + intervals, None)
     s, v, a = (np.array(values[dense]) for values in (s_all, v_all, a_all))
     s_nodes = np.array(s_all[at_nodes])
-    dt = step / speed
+    dt = step / abs(speed)
     v_chord = chord_derivative(s_nodes, dt)
-    a_chord = closed_chord_derivative(v_chord, dt)
-    angle_scale = 2.0 * math.pi / axis_mm
-    time_scale = angle_scale / speed
-    displacement_scale = fit_scale(float(np.ptp(s)), field_mm)
-    velocity_pole = pole_distance(field_mm, float(np.ptp(v)), displacement_scale, time_scale)
+    a_chord = closed_chord_derivative(v_chord, dt) if driver.cyclic else chord_derivative(v_chord, dt)
+    along_scale = span / axis_mm
+    time_scale = along_scale / abs(speed)
+    displacement_scale = fit_scale(_drawn_range(s), field_mm)
+    velocity_pole = pole_distance(field_mm, _drawn_range(v), displacement_scale, time_scale)
     velocity_scale = displacement_scale / (time_scale * velocity_pole)
-    acceleration_pole = pole_distance(field_mm, float(np.ptp(a)), velocity_scale, time_scale)
-    scales = DiagramScales(angle=angle_scale, time=time_scale, displacement=displacement_scale,
+    acceleration_pole = pole_distance(field_mm, _drawn_range(a), velocity_scale, time_scale)
+    scales = DiagramScales(along=along_scale, time=time_scale, displacement=displacement_scale,
                            velocity=velocity_scale, acceleration=velocity_scale / (time_scale * acceleration_pole),
                            velocity_pole=velocity_pole, acceleration_pole=acceleration_pole, axis_mm=axis_mm)
     translating = working.link in mechanism.translating
-    numbers = tuple(int(n) for n in positions.numbers) + (int(positions.numbers[0]),)
     stroke_end = None
     if positions.extremes is not None and math.isclose(positions.extremes[0], start, abs_tol=1e-12):
         stroke_end = (driver.sense * (positions.extremes[1] - start)) % (2.0 * math.pi)
     return KinematicDiagrams(
         link=working.link, translating=translating,
-        point=motion.links[working.link].origin if translating else None, omega=omega, numbers=numbers,
-        phi=phi, s=s, v=v, a=a, nodes=nodes, s_nodes=s_nodes, v_nodes=np.array(v_all[at_nodes]),
+        point=motion.links[working.link].origin if translating else None, driver=driver.kind,
+        cyclic=driver.cyclic, span=span, driver_speed=abs(speed), numbers=numbers,
+        along=along, s=s, v=v, a=a, nodes=nodes, s_nodes=s_nodes, v_nodes=np.array(v_all[at_nodes]),
         a_nodes=np.array(a_all[at_nodes]), midpoints=midpoints, v_mid=np.array(v_all[at_midpoints]),
         v_chord=v_chord, a_chord=a_chord, v_peak=_peak(v), a_peak=_peak(a), scales=scales, stroke_end=stroke_end)
 
@@ -272,6 +312,11 @@ def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:
     angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)
     # A rocker swings through less than a half turn: its angle wrapped about the first stays continuous.
     return sign * np.angle(np.exp(1j * (angle - angle[0]))) + 0.0
+
+
+def _drawn_range(values: np.ndarray) -> float:
+    """The height a curve takes in its diagram, whose abscissa is its zero: from the axis when it stays one side."""
+    return float(max(values.max(), 0.0) - min(values.min(), 0.0))
 
 
 def _peak(values: np.ndarray) -> float:

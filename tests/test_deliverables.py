@@ -54,6 +54,20 @@ def test_by_default_every_piece_the_scene_has_data_for(tmp_path):
     assert "balancing.svg" not in names(out)
 
 
+def test_the_diagrams_of_a_slider_s_run_come_by_default_and_need_three_intervals(tmp_path, capsys):
+    slider = ROOT / "fixtures" / "slider_driven.toml"
+    status, out = run(tmp_path, "--only", "diagrams", scene=slider)
+    assert status == 0
+    svg = (out / "diagrams.svg").read_text(encoding="utf-8")
+    assert "ψ4(t)" in svg and "T = |Δs|/|v| = 0.2 m / 0.08 m/s = 2.5 s" in svg
+    short = tmp_path / "short.toml"
+    short.write_text(re.sub(r"(?m)^count\s*=.*$", "count = 3", slider.read_text(encoding="utf-8"))
+                     .replace("plans       = [3, 9]", "plans = [3]"), encoding="utf-8")
+    status, again = run(tmp_path / "short", "--only", "diagrams", scene=short)
+    assert status == 2 and not again.exists()
+    assert "'diagrams' needs at least 3 intervals between positions" in capsys.readouterr().err
+
+
 def test_no_force_pieces_without_masses_or_loads(tmp_path, capsys):
     scene = without_masses_and_loads(tmp_path)
     status, out = run(tmp_path, scene=scene)

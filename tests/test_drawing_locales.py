@@ -21,6 +21,7 @@ import re
 import tomllib
 import warnings
 from importlib import resources
+from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
@@ -36,6 +37,7 @@ from graphplan.render.primitives import Text
 from graphplan.render.sheet import kinematics_sheet
 from graphplan.report import vibration_plots
 from graphplan.rotor_balancing import BalancingSpec, RotatingMass, balance
+from graphplan.scene import loads
 
 SVG = "{http://www.w3.org/2000/svg}"
 KINDS = ("title_block", "diagrams", "dynamics", "balancing", "vibration")
@@ -77,6 +79,13 @@ def analysis_of(name: str):
 
 
 @functools.cache
+def swing_analysis():
+    """The double rocker over its lever's swing, with its rocker named the output link."""
+    text = Path("fixtures/double_rocker_swing.toml").read_text(encoding="utf-8")
+    return analyse(loads(text.replace("count = 7", 'count = 7\nworking = { link = 4, sense = "cw" }')))
+
+
+@functools.cache
 def models():
     """A crank's equivalent model with its flywheel moved to a faster shaft, and a slider driver's model."""
     crank = equivalent_model_of(analysis_of("ratchet_crank_rocker"))
@@ -111,9 +120,11 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
     if kind == "title_block":
         return title_block_texts(labels)
     if kind == "diagrams":
-        # A rocker (ψ, ω, ε; working and idle strokes) and a slider (s, v, a).
-        return [t for name in ("ratchet_crank_rocker", "engine_slider_crank")
-                for t in svg_texts(diagrams.diagrams_svg(of_analysis(analysis_of(name)), text))]
+        # A rocker (ψ, ω, ε; working and idle strokes), a slider (s, v, a), a lever over a slider driver's
+        # travel (t) and a rocker over its lever's swing (Δφ).
+        runs = [analysis_of(name) for name in ("ratchet_crank_rocker", "engine_slider_crank", "slider_driven")]
+        return [t for analysis in (*runs, swing_analysis())
+                for t in svg_texts(diagrams.diagrams_svg(of_analysis(analysis), text))]
     if kind == "dynamics":
         crank, flywheel, slider = models()
         # A machine that keeps within δ unaided is drawn from a flywheel record with no inertia to add.

@@ -45,6 +45,9 @@ def scene_text(name: str, count: int | None = None) -> str:
     text = (FIXTURES / f"{name}.toml").read_text(encoding="utf-8")
     if count is not None:
         text = re.sub(r"(?m)^count\s*=\s*\d+", f"count = {count}", text)
+        # A plan of a position a smaller count has not is left out: the diagrams need no plans.
+        text = re.sub(r"(?m)^(plans\s*=\s*)\[([^]]*)\]", lambda m: m[1] + str(
+            [n for n in map(int, re.findall(r"\d+", m[2])) if n <= count]), text)
     return text
 
 
@@ -99,7 +102,7 @@ def test_chord_method_error_falls_as_h_squared(name):
 @pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
 def test_analytic_velocity_and_acceleration_are_the_derivatives_of_the_displacement(name):
     found = record(name)[2]
-    time = found.phi / abs(found.omega)
+    time = found.along / found.driver_speed
     # Second-order central differences on the 1° grid: error ~ h²/6·s‴, about 5e-5 of the peak.
     assert np.max(np.abs(np.gradient(found.s, time, edge_order=2) - found.v)) < 2e-3 * found.v_peak
     assert np.max(np.abs(np.gradient(found.v, time, edge_order=2) - found.a)) < 2e-3 * found.a_peak
@@ -121,7 +124,7 @@ def test_slider_crank_displacement_velocity_acceleration_match_the_closed_form()
         return (-r * np.cos(phi) - r**2 * np.cos(2 * phi) / root
                 - r**4 * (np.sin(phi) * np.cos(phi)) ** 2 / root**3)
 
-    crank = positions.values[0] + found.phi   # counter-clockwise crank
+    crank = positions.values[0] + found.along   # counter-clockwise crank
     # The expansion stroke runs backward, toward the crank: s grows as x falls.
     assert found.s == pytest.approx(x(positions.values[0]) - x(crank), abs=1e-12)
     assert found.v == pytest.approx(-omega * dx(crank), abs=1e-9)
@@ -160,14 +163,15 @@ def test_crank_epsilon_is_left_out_so_the_crank_turns_uniformly():
     assert accelerated.a == pytest.approx(uniform.a, rel=1e-9, abs=1e-9 * uniform.a_peak)
 
 
-@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar", "slider_driven"])
 def test_pole_distance_is_the_largest_whole_mm_that_keeps_each_curve_in_its_field(name):
     found = record(name)[2]
     scales = found.scales
     for pole, values, scale in ((scales.velocity_pole, found.v, scales.velocity),
                                 (scales.acceleration_pole, found.a, scales.acceleration)):
         assert pole == int(pole) and LEAST_POLE_MM <= pole <= GREATEST_POLE_MM
-        drawn = np.ptp(values) / scale
+        # The curve is drawn from its zero on the abscissa: one that stays on one side takes its peak in height.
+        drawn = (max(values.max(), 0.0) - min(values.min(), 0.0)) / scale
         assert drawn <= FIELD_MM + 1e-9
         if pole < GREATEST_POLE_MM:
             assert drawn * (pole + 1) / pole > FIELD_MM
@@ -182,11 +186,89 @@ def test_scene_without_a_working_link_is_refused():
         kinematic_diagrams(mechanism, make_positions(mechanism))
 
 
-def test_slider_driver_is_refused():
-    mechanism = build(loads((FIXTURES / "slider_driven.toml").read_text(encoding="utf-8")))
-    if mechanism.scene.positions.working is None:
-        pytest.skip("the slider-driven fixture names no working link")
-    with pytest.raises(SceneError, match=r"^driver\.kind: kinematic diagrams are drawn against a crank's angle"):
+# --- an open run: a slider's travel --------------------------------------------------------------------------
+
+# The slider-driven fixture: the rod's end A runs along the x axis from G at 0.08 m/s; B is the crossing of the
+# circles about A (AB) and C (CB) right of A→C; the lever CB is the output link, counter-clockwise positive.
+LEVER_C, LEVER_AB, LEVER_CB, ROD_SPEED = 0.15 + 0.25j, 0.225, 0.15, 0.08
+
+
+def lever_by_hand(s: float) -> tuple[float, float]:
+    """ψ4 and ω4 of the slider-driven lever at the rod's travel s, without graphplan's solver."""
+    a = complex(s, 0.0)
+    d = abs(LEVER_C - a)
+    along = (d * d + LEVER_AB**2 - LEVER_CB**2) / (2 * d)
+    u = (LEVER_C - a) / d
+    b = a + along * u - 1j * math.sqrt(LEVER_AB**2 - along**2) * u
+    ab, cb = b - a, b - LEVER_C
+    # v + i·ω3·AB = i·ω4·CB with v along x, split into x and y:
+    # −ω3·ab.imag + ω4·cb.imag = −v,  ω3·ab.real − ω4·cb.real = 0;  ω4 by Cramer's rule.
+    det = ab.imag * cb.real - cb.imag * ab.real
+    omega4 = ROD_SPEED * ab.real / det
+    return math.atan2(cb.imag, cb.real), omega4
+
+
+def test_a_slider_s_run_matches_the_lever_worked_by_hand():
+    _, positions, found = record("slider_driven")
+    assert not found.cyclic and found.driver == "slider"
+    assert (found.span, found.driver_speed) == pytest.approx((0.2, ROD_SPEED), abs=1e-15)
+    assert found.numbers == tuple(range(1, 13)) and found.intervals == 11
+    angles, omegas = zip(*(lever_by_hand(float(s)) for s in positions.values), strict=True)
+    assert found.nodes == pytest.approx(np.asarray(positions.values) - positions.values[0], abs=1e-15)
+    assert found.s_nodes == pytest.approx(np.asarray(angles) - angles[0], abs=1e-12)
+    assert found.v_nodes == pytest.approx(omegas, rel=1e-10)
+    # The time axis: the rod takes T = 0.2 m / 0.08 m/s = 2.5 s over the axis of L mm.
+    assert found.scales.time * found.scales.axis_mm == pytest.approx(2.5, rel=1e-12)
+    assert found.stroke_end is None
+
+
+def test_an_open_run_takes_the_acceleration_at_its_inner_positions_only():
+    found = record("slider_driven")[2]
+    dt = found.step / found.driver_speed
+    assert found.v_chord == pytest.approx(np.diff(found.s_nodes) / dt, rel=1e-12)
+    # The chords of the velocity diagram join its mid-intervals: they reach from the second node to the last but one.
+    assert found.a_chord.shape == (found.intervals - 1,)
+    assert found.a_chord_nodes == pytest.approx(found.nodes[1:-1])
+    assert found.a_chord == pytest.approx(np.diff(found.v_chord) / dt, rel=1e-12)
+
+
+def test_an_open_run_s_chord_method_error_falls_as_h_squared():
+    errors_v, errors_a = [], []
+    for count in (7, 13, 25, 49):   # 6, 12, 24, 48 intervals
+        found = record("slider_driven", count)[2]
+        errors_v.append(np.max(np.abs(found.v_chord - found.v_mid)))
+        errors_a.append(np.max(np.abs(found.a_chord - found.a_at_chord_nodes)))
+    for errors in (errors_v, errors_a):
+        ratios = np.array(errors[:-1]) / np.array(errors[1:])
+        assert ratios[-1] == pytest.approx(4.0, abs=0.3)
+        assert np.all(ratios > 2.5)
+
+
+def test_a_run_given_against_the_driver_s_speed_is_met_backwards():
+    # travel = [0.2, 0.0] numbers the positions from the far end; the rod still moves toward +x.
+    backward = build(loads(scene_text("slider_driven").replace("travel       = [0.0, 0.20]",
+                                                               "travel       = [0.20, 0.0]")))
+    assert backward.driver.travel == (0.2, 0.0)
+    found = kinematic_diagrams(backward, make_positions(backward))
+    forward = record("slider_driven")[2]
+    assert found.numbers == tuple(range(12, 0, -1))
+    for name in ("s", "v", "a", "s_nodes", "v_chord", "a_chord"):
+        assert getattr(found, name) == pytest.approx(getattr(forward, name), rel=1e-9, abs=1e-12), name
+
+
+def test_a_slider_s_acceleration_is_left_out_so_it_moves_uniformly():
+    uniform = record("slider_driven")[2]
+    text = scene_text("slider_driven").replace("acceleration = 0.0 ", "acceleration = 0.5 ")
+    assert "acceleration = 0.5" in text
+    mechanism = build(loads(text))
+    accelerated = kinematic_diagrams(mechanism, make_positions(mechanism))
+    assert accelerated.a == pytest.approx(uniform.a, rel=1e-9, abs=1e-9 * uniform.a_peak)
+
+
+def test_a_run_of_fewer_than_three_intervals_is_refused():
+    mechanism = build(loads(scene_text("slider_driven", 3)))
+    with pytest.raises(SceneError, match=r"^positions\.count: the chord method needs at least 3 intervals between "
+                                         r"positions; 3 positions over the travel make 2"):
         kinematic_diagrams(mechanism, make_positions(mechanism))
 
 
@@ -201,7 +283,7 @@ def polylines(items):
     return [item for item in items if isinstance(item, Polyline)]
 
 
-@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker"])
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "slider_driven"])
 def test_pole_rays_are_parallel_to_the_chords_of_the_diagram_above(name):
     found = record(name)[2]
     layers = layers_of(found)
@@ -212,17 +294,20 @@ def test_pole_rays_are_parallel_to_the_chords_of_the_diagram_above(name):
                for kind in ("velocity", "acceleration")}
     for kind, above in (("velocity", s_chords), ("acceleration", v_points)):
         rays = np.array([item.points for item in polylines(layers[f"{kind}-rays"])])
-        assert len(rays) == found.count
         ray_slopes = (rays[:, 1, 1] - rays[:, 0, 1]) / (rays[:, 1, 0] - rays[:, 0, 0])
         chord_slopes = np.diff(above[:, 1]) / np.diff(above[:, 0])
-        if kind == "velocity":
+        if kind == "acceleration" and found.cyclic:
+            # at the nodes 1 … count−1 from the chords between the velocity's mid-intervals; node 0's ray is
+            # the chord across the end of the cycle
+            assert len(rays) == found.intervals
+            assert ray_slopes[1:] == pytest.approx(chord_slopes, rel=1e-9, abs=1e-12)
+        else:
+            assert len(rays) == len(chord_slopes) == (found.intervals if kind == "velocity" else found.intervals - 1)
             assert ray_slopes == pytest.approx(chord_slopes, rel=1e-9, abs=1e-12)
-        else:   # acceleration at the nodes 1 … count−1 from the chords between the velocity's mid-intervals
-            assert ray_slopes[1:found.count] == pytest.approx(chord_slopes, rel=1e-9, abs=1e-12)
-        # Every ray starts at the pole, H mm left of the origin on the φ axis.
+        # Every ray starts at the pole, H mm left of the origin on the abscissa.
         pole = found.scales.velocity_pole if kind == "velocity" else found.scales.acceleration_pole
-        assert rays[:, 0, 0] == pytest.approx(np.full(found.count, -pole))
-        assert rays[:, 0, 1] == pytest.approx(np.full(found.count, origins[kind][1]))
+        assert rays[:, 0, 0] == pytest.approx(np.full(len(rays), -pole))
+        assert rays[:, 0, 1] == pytest.approx(np.full(len(rays), origins[kind][1]))
 
 
 def test_curves_are_drawn_at_their_scales():
@@ -238,7 +323,7 @@ def test_curves_are_drawn_at_their_scales():
     right = polylines(layers["displacement-curves"])[0].points[-1][0]
     assert right - origin_s[0] == pytest.approx(scales.axis_mm)
     dots = [item for item in layers["velocity-curves"] if isinstance(item, Circle)]
-    assert len(dots) == found.count + 1   # the chord method's points and the pole
+    assert len(dots) == found.intervals + 1   # the chord method's points and the pole
 
 
 def test_positions_are_numbered_under_their_ticks_on_the_displacement_diagram():
@@ -250,11 +335,11 @@ def test_positions_are_numbered_under_their_ticks_on_the_displacement_diagram():
     origin = ordinate.start[0]
     assert [t.text for t in numbers] == [str(n) for n in found.numbers]
     for text, node in zip(numbers, found.nodes, strict=True):
-        assert text.at[0] == pytest.approx(origin + node / found.scales.angle, abs=1.5)
+        assert text.at[0] == pytest.approx(origin + node / found.scales.along, abs=1.5)
         assert text.at[1] < axis.start[1]
 
 
-@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar"])
+@pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar", "slider_driven"])
 def test_no_two_texts_overlap(name):
     found = record(name)[2]
     texts = [item for layer in diagrams.layout(found) for item in layer.items if isinstance(item, Text)]
@@ -267,9 +352,12 @@ def test_no_two_texts_overlap(name):
 def test_every_text_key_is_used_and_words_come_from_the_mapping():
     keys = {key for key in strings("en") if key.startswith("kd_")}
     shown = set()
-    for name in ("engine_slider_crank", "ratchet_crank_rocker"):
+    swing = build(loads(scene_text("double_rocker_swing").replace(
+        "count = 7", 'count = 7\nworking = { link = 4, sense = "cw" }')))
+    for found in (*(record(name)[2] for name in ("engine_slider_crank", "ratchet_crank_rocker", "slider_driven")),
+                  kinematic_diagrams(swing, make_positions(swing))):
         marked = {key: f"<{key}>" for key in keys}
-        for layer in diagrams.layout(record(name)[2], marked):
+        for layer in diagrams.layout(found, marked):
             shown.update(re.findall(r"<(\w+)>", " ".join(i.text for i in layer.items if isinstance(i, Text))))
     # Symbols and units are written inside other strings, so a marker there hides its own.
     nested = {key for key in keys if key.startswith(("kd_symbol_", "kd_unit_", "kd_per_mm"))}

@@ -1,13 +1,15 @@
 """The kinematic diagrams of the output link: displacement, velocity and acceleration, stacked.
 
-Drawn as the course project draws them: one φ axis of length L per diagram
-with the positions numbered at their ticks, the displacement with its
+Drawn as the course project draws them: one φ axis of length L per diagram (a t
+axis over a slider driver's travel) with the positions numbered at their
+ticks, the displacement with its
 ordinates at the positions and the chords between them, and under it the
 velocity and the acceleration got by the chord method with the pole
 construction (the pole P at distance H left of the origin, a ray parallel to
 each chord).  Each diagram also carries the analytic curve and says how far
 the chord method strays from it.  The scales are written as the textbook
-writes them: μs, μv = μs/(μt·H1), μa = μv/(μt·H2), μφ = 2π/L and μt = μφ/ω.
+writes them: μs, μv = μs/(μt·H1), μa = μv/(μt·H2), μφ = 2π/L (Δφ/L over a swing) and
+μt = μφ/ω (T/L over a slider's travel).
 
 The layout reads a :class:`~graphplan.kinematic_diagrams.KinematicDiagrams`
 record and computes no mechanics.  Every word comes from ``text``, the ``kd_``
@@ -115,7 +117,7 @@ def _values(record: KinematicDiagrams, kind: str) -> tuple[np.ndarray, np.ndarra
         return record.s, record.nodes, record.s_nodes, scales.displacement
     if kind == "velocity":
         return record.v, record.midpoints, record.v_chord, scales.velocity
-    return record.a, record.nodes, record.a_chord, scales.acceleration
+    return record.a, record.a_chord_nodes, record.a_chord, scales.acceleration
 
 
 def _symbol(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> tuple[str, str]:
@@ -129,10 +131,10 @@ def _symbol(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> t
 def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> list[Layer]:
     """One diagram with its origin at (0, 0): axes, pole and rays, curves, numbers, caption."""
     scales = record.scales
-    angle_mm = 1.0 / scales.angle
+    along_mm = 1.0 / scales.along
     analytic, chord_x, chord_y, scale = _values(record, kind)
-    curve = tuple(zip((record.phi * angle_mm).tolist(), (analytic / scale).tolist(), strict=True))
-    points = tuple(zip((chord_x * angle_mm).tolist(), (chord_y / scale).tolist(), strict=True))
+    curve = tuple(zip((record.along * along_mm).tolist(), (analytic / scale).tolist(), strict=True))
+    points = tuple(zip((chord_x * along_mm).tolist(), (chord_y / scale).tolist(), strict=True))
     low = min(0.0, min(y for _, y in curve + points))
     high = max(0.0, max(y for _, y in curve + points))
     length = scales.axis_mm
@@ -146,7 +148,7 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
         Arrow((0.0, low - 4.0), (0.0, high + AXIS_RUN_MM), _AXIS, AXIS_HEAD_MM, key=f"{kind}-ordinate-axis"),
     ]
     # Ticks above the axis only, so that a position's number stands right under its tick.
-    axes.extend(Polyline(((x, 0.0), (x, TICK_MM)), _AXIS) for x in (record.nodes * angle_mm).tolist())
+    axes.extend(Polyline(((x, 0.0), (x, TICK_MM)), _AXIS) for x in (record.nodes * along_mm).tolist())
 
     rays: list[Primitive] = []
     if kind == "displacement":
@@ -154,9 +156,10 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
         rays.extend(Polyline(((x, 0.0), (x, y)), _THIN) for x, y in points if abs(y) > 1e-9)
     else:
         # The pole construction: a ray from P parallel to each chord of the diagram above cuts the
-        # ordinate axis at H·tan(chord) = the derivative at this diagram's scale; one ray per interval
-        # (the acceleration's closing node repeats its first).
-        rays.extend(Polyline(((-pole, 0.0), (0.0, y)), _RAY) for _, y in points[:record.count])
+        # ordinate axis at H·tan(chord) = the derivative at this diagram's scale; one ray per chord
+        # (a cycle's closing node repeats its first).
+        closing = kind == "acceleration" and record.cyclic
+        rays.extend(Polyline(((-pole, 0.0), (0.0, y)), _RAY) for _, y in (points[:-1] if closing else points))
 
     drawn: list[Primitive] = [Polyline(curve, _CURVE)]
     drawn.append(Polyline(points, _CHORD))
@@ -166,12 +169,12 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
 
     labels = [Text((-2.0, high + AXIS_RUN_MM - 1.0), words["kd_axis"].format(symbol=symbol, unit=unit),
                    AXIS_LABEL_SIZE, "end"),
-              Text((length + AXIS_RUN_MM, -5.0), words["kd_angle_axis"], AXIS_LABEL_SIZE, "middle")]
+              Text((length + AXIS_RUN_MM, -5.0), _abscissa(record, words), AXIS_LABEL_SIZE, "middle")]
     # Every position is numbered when the numbers fit between the ticks, else every second, third, … one.
     widest = max(text_width(str(number), NUMBER_SIZE) for number in record.numbers)
-    every = max(1, math.ceil((widest + 1.0) / (record.step * angle_mm)))
+    every = max(1, math.ceil((widest + 1.0) / (record.step * along_mm)))
     anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2)
-               for k, (x, number) in enumerate(zip((record.nodes * angle_mm).tolist(), record.numbers, strict=True))
+               for k, (x, number) in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True))
                if k % every == 0]
     if pole is not None:
         anchors.append(Anchor((-pole, 0.0), words["kd_pole"], AXIS_LABEL_SIZE, -3 * math.pi / 4))
@@ -184,7 +187,7 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
 
     # The words run no wider than the diagram, so that a small sheet's shorter axis makes it narrower.
     width = length + AXIS_RUN_MM - left
-    title = words[f"kd_{kind}_title"].format(symbol=symbol)
+    title = words[f"kd_{kind}_title"].format(symbol=symbol, along=_abscissa(record, words))
     scale_lines = fitted(_scale_line(record, kind, words, unit), width - 8.0, SCALE_SIZE)
     lowest = high + AXIS_RUN_MM + CAPTION_ROOM_MM - 10.5
     raised = (len(scale_lines) - 1) * LINE_SPACING * SCALE_SIZE
@@ -209,8 +212,7 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
 
 def _strokes(record: KinematicDiagrams, words: Mapping[str, str], y: float) -> list[Primitive]:
     """Dimension lines under the φ axis: the working stroke from 0 to its end, the idle stroke after it."""
-    angle_mm = 1.0 / record.scales.angle
-    end = record.stroke_end * angle_mm
+    end = record.stroke_end / record.scales.along
     length = record.scales.axis_mm
     items: list[Primitive] = []
     for x0, x1, key, angle in ((0.0, end, "kd_working_stroke", record.stroke_end),
@@ -246,13 +248,29 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
     ]
-    angle_scale = words["kd_angle_scale"].format(
-        value=scale_text(scales.angle), degrees=f"{math.degrees(scales.angle):.4g}", length=f"{scales.axis_mm:g}",
-        time=scale_text(scales.time), omega=f"{abs(record.omega):.4g}")
     width = scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole)
     items += [Text((0.0, y - 8.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
-              for k, line in enumerate(fitted(angle_scale, max(width, second + 40.0), SCALE_SIZE))]
+              for k, line in enumerate(fitted(_abscissa_scale(record, words), max(width, second + 40.0), SCALE_SIZE))]
     return Layer("legend", tuple(items))
+
+
+def _abscissa(record: KinematicDiagrams, words: Mapping[str, str]) -> str:
+    """The common abscissa's letter: the crank's angle φ, or the time t of a slider's run."""
+    return words["kd_angle_axis"] if record.driver == "crank" else words["kd_time_axis"]
+
+
+def _abscissa_scale(record: KinematicDiagrams, words: Mapping[str, str]) -> str:
+    """The scales of the common abscissa: μφ and μt over a crank's turn or swing, μt over a slider's travel."""
+    scales = record.scales
+    length, time = f"{scales.axis_mm:g}", scale_text(scales.time)
+    if record.driver == "slider":
+        return words["kd_travel_scale"].format(time=time, length=length, travel=f"{record.span:.4g}",
+                                               speed=f"{record.driver_speed:.4g}",
+                                               duration=f"{record.span / record.driver_speed:.4g}")
+    key = "kd_angle_scale" if record.cyclic else "kd_swing_scale"
+    return words[key].format(value=scale_text(scales.along), degrees=f"{math.degrees(scales.along):.4g}",
+                             swing=f"{math.degrees(record.span):.4g}", length=length, time=time,
+                             omega=f"{record.driver_speed:.4g}")
 
 
 def scale_text(value: float) -> str:

@@ -316,7 +316,7 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     millimetres, the fields by whole millimetres; the scales follow
     from them as they always do.
     """
-    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, kinematic_diagrams
+    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, interval_count, kinematic_diagrams
     from . import diagrams as diagrams_layout
 
     text = strings(analysis.scene.locale)
@@ -326,20 +326,20 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
         return text["kd_title"].format(link=record.link, point=record.point or ""), diagrams_layout.parts(record, text)
 
     form = form_of(analysis.scene.locale)
+    intervals = interval_count(analysis.mechanism.driver.cyclic, analysis.scene.positions.count)
     axis, field = AXIS_MM, FIELD_MM
     title, drawn = drawn_at(axis, field)
     # The pole distances, and with them the room left of each axis, change with the field: a few rounds.
     for _ in range(_SHORTENING_ROUNDS):
         if sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
             break
-        axis, field = _shortened(drawn, sheet, form, analysis.scene.positions.count, (axis, field))
+        axis, field = _shortened(drawn, sheet, form, intervals, (axis, field))
         title, drawn = drawn_at(axis, field)
     else:
         raise SceneError("drawing.sheet", f"the kinematic diagrams fit on no {sheet} sheet; choose a bigger one "
                          'or sheet = "none"', sheet)
     # The shortening is cautious where the words break narrower as the axis shortens: lengthen back while
     # the diagrams still fit.
-    intervals = analysis.scene.positions.count
     for grown in ((intervals, 0.0), (0.0, 1.0)):
         while sheet != "none" and axis + grown[0] <= AXIS_MM and field + grown[1] <= FIELD_MM:
             longer = drawn_at(axis + grown[0], field + grown[1])
