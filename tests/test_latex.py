@@ -1,7 +1,8 @@
 """The note and the tables in LaTeX (note.tex, errors.tex, forces.tex).
 
-Read back by other tools than the ones that wrote them: the Markdown's tables by markdown-it-py (the note's
-HTML parser, not mistletoe, which writes the LaTeX), the LaTeX by pylatexenc, the typeset PDF by pdfium.
+Read back by other tools than the ones that wrote them: the LaTeX by pylatexenc, against the Markdown's
+tables as markdown-it-py's HTML renderer gives them (the writer under test walks markdown-it's syntax tree
+itself), the typeset PDF by pdfium.
 Where XeLaTeX is installed the documents are typeset, twice as a user would, and must come out without a
 missing glyph or a line running into the margin, in Latin, Cyrillic and CJK script.
 """
@@ -146,7 +147,7 @@ def line_used(layout) -> float:
 
 
 def test_a_table_that_fits_keeps_its_columns_and_size():
-    layout = _layout(["quantity", "value"], [["lOA", "0.1 m"], ["ω2", "6 rad/s, clockwise"]], [None, None])
+    layout = _layout(["quantity", "value"], [["lOA", "0.1 m"], ["ω2", "6 rad/s, clockwise"]], ("l", "l"))
     assert layout.specs == ("l", "l") and layout.size == "small"
     # Each column as wide as its widest text, the header in the first, a body cell in the second.
     assert layout.widths == pytest.approx((em("quantity"), em("6 rad/s, clockwise")))
@@ -155,7 +156,7 @@ def test_a_table_that_fits_keeps_its_columns_and_size():
 def test_a_table_with_a_long_text_wraps_its_widest_columns_to_fit_the_line():
     long_text = "turned by 90° in the sense of ω3 (counter-clockwise) " * 2
     layout = _layout(["vector", "modulus", "on the plan, mm", "line of action, direction"],
-                     [["aA", long_text, "pa = 100.00", "known"], ["aBA", "?", "ab", long_text]], [None, None, 1, None])
+                     [["aA", long_text, "pa = 100.00", "known"], ["aBA", "?", "ab", long_text]], ("l", "l", "r", "l"))
     assert layout.specs[0] == "l" and layout.specs[2] == "r" and layout.size == "small"
     assert "p{" in layout.specs[1] and "p{" in layout.specs[3]
     assert line_used(layout) == pytest.approx(_LINE_PT)
@@ -166,7 +167,7 @@ def test_a_table_of_many_columns_is_set_smaller_until_its_headers_fit():
     header = ["величина", "ед. изм.", "аналитически", "построение", "чертёж", "замер", "δ (построение), %",
               "δ (чертёж), %", "δ (замер), %"]
     layout = _layout(header, [["VB", "м/с", "0,70049", "0,70049", "0,70408", "0,76993", "0,000", "−0,513", "−9,913"]],
-                     [None, None, 1, 1, 1, 1, 1, 1, 1])
+                     ("l", "l", "r", "r", "r", "r", "r", "r", "r"))
     assert layout.size != "small"
     assert line_used(layout) <= _LINE_PT
 

@@ -61,9 +61,9 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
 
     ``symbols`` sets the indices of the textbook's symbols (``VBA``, ``ω3``) as subscripts.
     """
-    from markdown_it import MarkdownIt
+    from .markdown import parser
 
-    renderer = MarkdownIt("commonmark", {"html": False}).enable("table")
+    renderer = parser()
     if symbols:
         renderer.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', renderer.render(markdown_text))

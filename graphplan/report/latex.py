@@ -1,7 +1,7 @@
 r"""Markdown → LaTeX: the explanatory note as a document for XeLaTeX, and the tables as fragments to ``\input``.
 
-mistletoe parses the Markdown the note is written in (CommonMark with
-tables), and its LaTeX renderer, adapted here, writes it out:
+markdown-it-py parses the Markdown the note is written in (CommonMark with
+tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
 
 - headings unnumbered, since the note numbers its own;
 - a table as a longtable with booktabs rules, its header repeated on every
@@ -26,13 +26,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from mistletoe import Document
-from mistletoe.block_token import Paragraph, Table
-from mistletoe.latex_renderer import LaTeXRenderer
+from markdown_it.tree import SyntaxTreeNode
 from scipy.optimize import brentq
 
 from ..render.primitives import FONT_SIZE_PER_CAP, character_width
 from ..render.wrapping import fitted
+from .markdown import plain, table_parts, tree
 from .symbols import Symbol, pieces
 
 _SPECIAL = str.maketrans({"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
@@ -97,8 +96,7 @@ def latex_fragment(markdown_text: str, locale: str) -> str:
 
 
 def _body(markdown_text: str, titled: bool) -> str:
-    with _Renderer(titled) as renderer:
-        return renderer.render(Document(markdown_text)).lstrip("\n")
+    return _Writer(titled).blocks(tree(markdown_text).children).lstrip("\n")
 
 
 def _escape(text: str) -> str:
@@ -133,7 +131,7 @@ class _Layout:
     widths: tuple[float, ...]
 
 
-def _layout(header: list[str], rows: list[list[str]], aligns: list[int | None]) -> _Layout:
+def _layout(header: list[str], rows: list[list[str]], sides: tuple[str, ...]) -> _Layout:
     """The type size, columns and header widths of a table, so that it fits the line where it can.
 
     A column would be as wide as its widest body cell, or its header if that
@@ -164,68 +162,89 @@ def _layout(header: list[str], rows: list[list[str]], aligns: list[int | None]) 
         widths = widths_at(cap)
     elif sum(natural) > room(points):  # too wide even narrowed: the least it can be
         widths = least
-    sides = tuple({0: "c", 1: "r"}.get(aligns[k] if k < len(aligns) else None, "l") for k in range(count))
+    sides = tuple(sides[k] if k < len(sides) else "l" for k in range(count))
     specs = tuple(f">{{{_RAGGED[sides[k]]}\\arraybackslash}}p{{{widths[k] * points / _LINE_PT:.3f}\\linewidth}}"
                   if widths[k] < natural[k] else sides[k] for k in range(count))
     return _Layout(size, points, specs, sides, tuple(widths))
 
 
-class _Renderer(LaTeXRenderer):
-    """mistletoe's LaTeX renderer with the note's headings, tables, symbols and escaping.
+class _Writer:
+    """The blocks of the note's syntax tree as LaTeX.
 
     ``titled``: the first heading is the document's title (the note), not a section (a fragment).
     """
 
     def __init__(self, titled: bool) -> None:
-        super().__init__()
         self.titled = titled
 
-    def render_raw_text(self, token, escape=True) -> str:
-        return _text(token.content) if escape else token.content
-
-    def render_math(self, token) -> str:  # a $ in the note is a dollar, not the start of mathematics
-        return _text(token.content)
-
-    def render_inline_code(self, token) -> str:
-        return f"\\texttt{{{_escape(token.children[0].content)}}}"
-
-    def render_heading(self, token) -> str:
-        """Unnumbered: the note numbers its own.  In a document the first level is its title."""
-        if self.titled and token.level == 1:
-            return f"\n{{\\centering\\Large\\bfseries {self.render_inner(token)}\\par}}\n"
-        command = _HEADINGS[min(token.level - (1 if self.titled else 0), len(_HEADINGS)) - 1]
-        return f"\n\\{command}*{{{self.render_inner(token)}}}\n"
-
-    def render_list(self, token) -> str:
-        kind = "enumerate" if token.start is not None else "itemize"
-        # A list of readings is many short lines: spaced as lines of a paragraph, it reads as one block.
-        tight = "\\setlength{\\itemsep}{0pt}\\setlength{\\parskip}{0pt}"
-        return f"\\begin{{{kind}}}{tight}\n{self.render_inner(token)}\\end{{{kind}}}\n"
-
-    def render_list_item(self, token) -> str:
-        return f"\\item {self.render_inner(token).strip()}\n"
-
-    def render_document(self, token) -> str:
+    def blocks(self, nodes) -> str:
         """The blocks in order, a paragraph right before a table taken into the table as its caption."""
-        self.footnotes.update(token.footnotes)
-        parts, children = [], list(token.children)
-        for k, child in enumerate(children):
-            if isinstance(child, Paragraph) and k + 1 < len(children) and isinstance(children[k + 1], Table):
+        nodes, parts = list(nodes), []
+        for k, node in enumerate(nodes):
+            if node.type == "paragraph" and k + 1 < len(nodes) and nodes[k + 1].type == "table":
                 continue
-            if isinstance(child, Table):
-                before = children[k - 1] if k else None
-                parts.append(self._table(child, self.render_inner(before) if isinstance(before, Paragraph) else None))
+            if node.type == "table":
+                before = nodes[k - 1] if k else None
+                caption = self.inline(before.children) if before is not None and before.type == "paragraph" else None
+                parts.append(self.table(node, caption))
             else:
-                parts.append(self.render(child))
+                parts.append(self.block(node))
         return "".join(parts)
 
-    def render_table(self, token) -> str:
-        return self._table(token, None)
+    def block(self, node: SyntaxTreeNode) -> str:
+        if node.type == "heading":
+            return self.heading(node)
+        if node.type == "paragraph":
+            return f"\n{self.inline(node.children)}\n"
+        if node.type in ("bullet_list", "ordered_list"):
+            kind = "enumerate" if node.type == "ordered_list" else "itemize"
+            # A list of readings is many short lines: spaced as lines of a paragraph, it reads as one block.
+            tight = "\\setlength{\\itemsep}{0pt}\\setlength{\\parskip}{0pt}"
+            items = "".join(f"\\item {self.blocks(item.children).strip()}\n" for item in node.children)
+            return f"\\begin{{{kind}}}{tight}\n{items}\\end{{{kind}}}\n"
+        if node.type == "table":
+            return self.table(node, None)
+        if node.type == "hr":
+            return "\n\\hrulefill\n"
+        if node.type in ("code_block", "fence"):
+            return f"\n\\begin{{verbatim}}\n{node.content}\\end{{verbatim}}\n"
+        raise ValueError(f"the note has a {node.type}, which its LaTeX does not write")
 
-    def _table(self, token, caption: str | None) -> str:
-        header = [_plain(cell) for cell in token.header.children] if hasattr(token, "header") else []
-        rows = [[_plain(cell) for cell in row.children] for row in token.children]
-        layout = _layout(header or [""] * len(token.column_align), rows, list(token.column_align))
+    def heading(self, node: SyntaxTreeNode) -> str:
+        """Unnumbered: the note numbers its own.  In a document the first level is its title."""
+        level = int(node.tag[1:])
+        if self.titled and level == 1:
+            return f"\n{{\\centering\\Large\\bfseries {self.inline(node.children)}\\par}}\n"
+        command = _HEADINGS[min(level - (1 if self.titled else 0), len(_HEADINGS)) - 1]
+        return f"\n\\{command}*{{{self.inline(node.children)}}}\n"
+
+    def inline(self, nodes) -> str:
+        """A block's text (its ``inline`` node, or the spans inside one) with its emphasis and symbols."""
+        parts = []
+        for node in nodes:
+            if node.type == "inline":
+                parts.append(self.inline(node.children))
+            elif node.type == "text":
+                parts.append(_text(node.content))
+            elif node.type == "strong":
+                parts.append(f"\\textbf{{{self.inline(node.children)}}}")
+            elif node.type == "em":
+                parts.append(f"\\textit{{{self.inline(node.children)}}}")
+            elif node.type == "code_inline":
+                parts.append(f"\\texttt{{{_escape(node.content)}}}")
+            elif node.type == "softbreak":
+                parts.append("\n")
+            elif node.type == "hardbreak":
+                parts.append("\\newline\n")
+            else:   # a link or an image: its text
+                parts.append(self.inline(node.children))
+        return "".join(parts)
+
+    def table(self, node: SyntaxTreeNode, caption: str | None) -> str:
+        parts = table_parts(node)
+        header = [plain(cell) for cell in parts.header]
+        rows = [[plain(cell) for cell in row] for row in parts.rows]
+        layout = _layout(header or [""] * len(parts.sides), rows, parts.sides)
         lines = [f"\\begin{{longtable}}{{@{{}}{''.join(layout.specs)}@{{}}}}"]
         if caption is not None:
             lines.append(f"\\caption*{{{caption.strip()}}}\\\\")
@@ -237,13 +256,6 @@ class _Renderer(LaTeXRenderer):
                 cells.append(f"\\begin{{tabular}}[b]{{@{{}}{side}@{{}}}}{stacked}\\end{{tabular}}")
             head = ["\\toprule", " & ".join(cells) + " \\\\", "\\midrule"]
         lines += [*head, "\\endfirsthead", *head, "\\endhead", "\\bottomrule", "\\endlastfoot"]
-        lines += [" & ".join(self.render_inner(cell) for cell in row.children) + " \\\\" for row in token.children]
+        lines += [" & ".join(self.inline(cell.children) for cell in row) + " \\\\" for row in parts.rows]
         size = f"\\{layout.size}\\setlength{{\\tabcolsep}}{{{_COLUMN_GAP_PT:g}pt}}"
         return f"\n{{{size}\n" + "\n".join(lines) + "\n\\end{longtable}}\n"
-
-
-def _plain(cell) -> str:
-    """A table cell's text as written, without its markup, to measure it."""
-    if hasattr(cell, "content"):
-        return cell.content
-    return "".join(_plain(child) for child in getattr(cell, "children", None) or ())

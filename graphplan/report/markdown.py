@@ -1,0 +1,64 @@
+"""The reports' one Markdown parser: markdown-it-py's CommonMark with tables, raw HTML off (the note's text is data).
+
+The HTML page renders markdown-it's tokens with its own renderer; the LaTeX
+(:mod:`graphplan.report.latex`) and the Word document
+(:mod:`graphplan.report.word`) walk the syntax tree built of them
+(:func:`tree`), whose nodes are named by their token types: ``heading``
+(tag ``h1`` …), ``paragraph``, ``bullet_list``, ``ordered_list``,
+``list_item``, ``table`` (``thead``, ``tbody``, ``tr``, ``th``, ``td``),
+``hr``; inside a block, ``inline`` with ``text``, ``strong``, ``em``,
+``code_inline``, ``softbreak``, ``hardbreak`` and ``link``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from markdown_it import MarkdownIt
+from markdown_it.tree import SyntaxTreeNode
+
+# A table column's alignment, as markdown-it writes it on its cells, and as the side it is set to.
+_SIDES = {"text-align:left": "l", "text-align:center": "c", "text-align:right": "r"}
+
+
+def parser() -> MarkdownIt:
+    """The note's Markdown: CommonMark with GitHub's tables; raw HTML is text."""
+    return MarkdownIt("commonmark", {"html": False}).enable("table")
+
+
+def tree(markdown_text: str) -> SyntaxTreeNode:
+    """The syntax tree of ``markdown_text``: its root's children are the blocks in order."""
+    return SyntaxTreeNode(parser().parse(markdown_text))
+
+
+@dataclass(frozen=True)
+class TableParts:
+    """A table's header cells (empty when it has none), its body's rows of cells and each column's side (l, c, r)."""
+
+    header: tuple[SyntaxTreeNode, ...]
+    rows: tuple[tuple[SyntaxTreeNode, ...], ...]
+    sides: tuple[str, ...]
+
+
+def table_parts(table: SyntaxTreeNode) -> TableParts:
+    """The parts of a ``table`` node; a cell's content is its ``inline`` child's."""
+    header: tuple[SyntaxTreeNode, ...] = ()
+    rows: list[tuple[SyntaxTreeNode, ...]] = []
+    for section in table.children:
+        for row in section.children:
+            if section.type == "thead":
+                header = tuple(row.children)
+            else:
+                rows.append(tuple(row.children))
+    first = header or (rows[0] if rows else ())
+    sides = tuple(_SIDES.get(str(cell.attrs.get("style", "")), "l") for cell in first)
+    return TableParts(header, tuple(rows), sides)
+
+
+def plain(node: SyntaxTreeNode) -> str:
+    """The text of ``node`` as written, without its markup (a break as a space), to measure it."""
+    if node.type in ("text", "code_inline"):
+        return node.content
+    if node.type in ("softbreak", "hardbreak"):
+        return " "
+    return "".join(plain(child) for child in node.children)
