@@ -19,6 +19,7 @@ examples:
   graphplan run fixtures/ratchet_crank_rocker.toml --out report --locale ru
   graphplan run fixtures/ratchet_crank_rocker.toml --only velocity,acceleration --format svg,png
   graphplan run fixtures/ratchet_crank_rocker.toml --only sheets,note --format pdf,dxf    sheets to CAD, note to PDF
+  graphplan run fixtures/ratchet_crank_rocker.toml --only note --format docx              the note for Word
   graphplan check fixtures/ratchet_crank_rocker.toml            validates and prints the structure formula
   graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
 """
@@ -49,8 +50,8 @@ def _parser() -> argparse.ArgumentParser:
                      help=f"deliver only these pieces, comma-separated: {', '.join(PIECES)} "
                           "(default: the scene's [output] include, else every piece the scene has data for)")
     run.add_argument("--format", type=_listed, default=["svg"], metavar="FORMATS", dest="formats",
-                     help=f"formats of the drawings, comma-separated: {', '.join(FORMATS)} (SVG always; "
-                          "pdf also typesets the note as note.pdf)")
+                     help=f"formats of the drawings and the note, comma-separated: {', '.join(FORMATS)} (SVG "
+                          "always; pdf also typesets the note as note.pdf; docx writes the note for Word)")
     run.add_argument("--figures", action="store_true",
                      help="also draw the report figures with matplotlib (the same as adding 'figures' to --only)")
     check = commands.add_parser("check", help="validate a scene and print its structure formula")

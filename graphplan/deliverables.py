@@ -29,7 +29,9 @@ from .scene import OUTPUT_PIECES, Scene
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = OUTPUT_PIECES
-FORMATS = ("svg", "png", "pdf", "dxf")
+DRAWING_FORMATS = ("svg", "png", "pdf", "dxf")
+# Formats of the note alone: docx is the note as a Word document to edit (pdf typesets it too).
+FORMATS = (*DRAWING_FORMATS, "docx")
 # Pieces delivered only when asked for: the figures cost matplotlib's second; the accuracy report
 # times the methods, so it is the one output that differs from run to run.  The sheets repeat the
 # drawings in a frame: they come unasked only when the scene names its sheet ([drawing] sheet).
@@ -404,12 +406,17 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces else None
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
-        found.update(encoded(drawing, formats))
+        found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
     found.update(tables(analysis, pieces, dynamics))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 
         found["note.pdf"] = note_pdf(str(found["note.html"]))
+    if "docx" in formats and "note.md" in found:
+        from .report.word import note_docx
+
+        assert analysis is not None   # a note is written of a linkage's analysis
+        found["note.docx"] = note_docx(str(found["note.md"]), analysis.scene.title, analysis.scene.locale)
     found.update(figures(scene, analysis, pieces, dynamics))
     if "accuracy" in pieces and analysis is not None:
         found.update(accuracy_report(analysis))
@@ -432,4 +439,4 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
             "accuracy.svg": accuracy.figure(found, scene.locale, scene.title)}
 
 
-__all__ = ["FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings", "files", "missing"]
+__all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings", "files", "missing"]

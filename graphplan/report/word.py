@@ -1,0 +1,255 @@
+"""Markdown → Word: the explanatory note as a .docx document to edit and hand in.
+
+markdown-it-py parses the Markdown the note is written in, as for the HTML
+and the LaTeX (:mod:`graphplan.report.markdown`); python-docx writes the
+document:
+
+- the note's title as the document's title, its sections, positions and
+  plans as headings 1 to 3, unnumbered, since the note numbers its own;
+- the textbook's symbols with their indices as sub- and superscript runs
+  (:mod:`graphplan.report.symbols`), bold where the Markdown is bold;
+- the lists of readings as Word's bullet or numbered lists;
+- a table in a grid, its header row bold and repeated on every page it runs
+  onto, each column aligned as the Markdown aligns it, and the paragraph
+  right before it (the note's "Table 3. ...") kept on the same page;
+- an A4 page with the margins of the LaTeX note (30 mm left, 10 mm right,
+  20 mm top and bottom), the text in the language of the note, so that
+  Word checks its spelling and hyphenates it in that language.
+
+Fonts are ones a reader's Word has: Times New Roman for Latin and Cyrillic,
+SimSun for Chinese (another font of the script where it is missing).  The
+file is the same for the same note: its parts are stored with one fixed
+time and it carries no date.
+"""
+
+from __future__ import annotations
+
+import io
+import zipfile
+
+from docx import Document as WordDocument
+from docx.enum.table import WD_TABLE_ALIGNMENT
+from docx.enum.text import WD_ALIGN_PARAGRAPH
+from docx.oxml import OxmlElement
+from docx.oxml.ns import qn
+from docx.shared import Mm, Pt
+from markdown_it.tree import SyntaxTreeNode
+
+from ..render.primitives import character_width
+from .markdown import plain, table_parts, tree
+from .symbols import Symbol, pieces
+
+# Word's language tags of the note's locales.
+_LANGUAGES = {"en": "en-GB", "ru": "ru-RU", "zh": "zh-CN"}
+_LATIN_FONT = "Times New Roman"
+_EAST_ASIAN_FONT = "SimSun"
+_BODY_PT = 12.0
+# A table of more columns than this is set a size smaller, so that its numbers keep to one line.
+_WIDE_TABLE = 5
+_TABLE_PT = (10.0, 9.0)
+# The line a table spreads over: A4 less the margins (mm); what a cell keeps clear of its borders (Word's
+# default 0.19 cm a side); a point in mm; a bold header's letters are this much wider.
+_LINE_MM = 170.0
+_CELL_PADDING_MM = 3.8
+_POINT_MM = 25.4 / 72.0
+_BOLD_WIDENING = 1.1
+# A header no wider than this (em) stays on one line where the table has room.
+_HEADER_LINE_EM = 7.0
+# The side a Markdown column is aligned to, in Word.
+_ALIGN = {"l": WD_ALIGN_PARAGRAPH.LEFT, "c": WD_ALIGN_PARAGRAPH.CENTER, "r": WD_ALIGN_PARAGRAPH.RIGHT}
+# Every part of the file is stored at this time (the zip format's earliest), so that a note gives one file.
+_STORED_AT = (1980, 1, 1, 0, 0, 0)
+
+
+def note_docx(markdown_text: str, title: str, locale: str) -> bytes:
+    """The explanatory note ``markdown_text`` as a Word document (the bytes of a .docx file) titled ``title``."""
+    document = WordDocument()
+    _set_page(document)
+    _set_styles(document, locale)
+    _Writer(document).blocks(tree(markdown_text).children)
+    properties = document.core_properties
+    properties.title, properties.language = " ".join(title.split()), _LANGUAGES.get(locale, locale)
+    properties.author, properties.comments = "graphplan", ""
+    for name in ("created", "modified", "lastPrinted"):   # no date: the same note gives the same file
+        for element in properties._element.findall(qn(f"dcterms:{name}")) + properties._element.findall(
+                qn(f"cp:{name}")):
+            properties._element.remove(element)
+    written = io.BytesIO()
+    document.save(written)
+    return _stored_at_one_time(written.getvalue())
+
+
+def _set_page(document) -> None:
+    section = document.sections[0]
+    section.page_width, section.page_height = Mm(210), Mm(297)
+    section.left_margin, section.right_margin = Mm(30), Mm(10)
+    section.top_margin, section.bottom_margin = Mm(20), Mm(20)
+
+
+def _set_styles(document, locale: str) -> None:
+    """The body font and language; headings in the body's fonts, black, as a printed note has them."""
+    language = _LANGUAGES.get(locale, locale)
+    for style in document.styles:
+        if style.type != 1 or not (style.name == "Normal" or style.name.startswith(("Heading", "Title"))):
+            continue
+        style.font.name = _LATIN_FONT
+        properties = style.element.get_or_add_rPr()
+        fonts = properties.find(qn("w:rFonts"))
+        if fonts is None:
+            fonts = OxmlElement("w:rFonts")
+            properties.insert(0, fonts)
+        for key in ("w:ascii", "w:hAnsi", "w:cs"):
+            fonts.set(qn(key), _LATIN_FONT)
+        fonts.set(qn("w:eastAsia"), _EAST_ASIAN_FONT)
+        for key in ("w:asciiTheme", "w:hAnsiTheme", "w:eastAsiaTheme", "w:cstheme"):
+            fonts.attrib.pop(qn(key), None)
+        if style.name != "Normal":
+            style.font.color.rgb = None
+    normal = document.styles["Normal"]
+    normal.font.size = Pt(_BODY_PT)
+    normal.paragraph_format.space_after = Pt(6)
+    tag = normal.element.get_or_add_rPr().find(qn("w:lang"))
+    if tag is None:
+        tag = OxmlElement("w:lang")
+        normal.element.get_or_add_rPr().append(tag)
+    tag.set(qn("w:val"), language)
+    tag.set(qn("w:eastAsia"), _LANGUAGES["zh"] if locale == "zh" else language)
+
+
+class _Writer:
+    """Writes the blocks of the note's syntax tree into the document, in order."""
+
+    def __init__(self, document) -> None:
+        self.document = document
+
+    def blocks(self, nodes, list_style: str | None = None, depth: int = 0) -> None:
+        """``nodes`` in order; inside a list (``list_style``), nested ``depth`` lists deep."""
+        nodes = list(nodes)
+        for k, node in enumerate(nodes):
+            if node.type == "heading":
+                level = int(node.tag[1:])
+                self.spans(self.document.add_heading("", level=0 if level == 1 else min(level - 1, 3)), node.children)
+            elif node.type == "paragraph":
+                paragraph = self.document.add_paragraph(style=list_style)
+                self.spans(paragraph, node.children)
+                # A table's caption stays on the page of its table; a list's items stand as lines.
+                paragraph.paragraph_format.keep_with_next = k + 1 < len(nodes) and nodes[k + 1].type == "table"
+                if list_style is not None:
+                    paragraph.paragraph_format.space_after = Pt(0)
+            elif node.type in ("bullet_list", "ordered_list"):
+                inside = depth + 1 if list_style is not None else 0
+                style = ("List Number" if node.type == "ordered_list" else "List Bullet") + (
+                    f" {min(inside + 1, 3)}" if inside else "")
+                for item in node.children:
+                    self.blocks(item.children, style, inside)
+            elif node.type == "table":
+                self.table(node)
+            elif node.type == "hr":
+                self.document.add_paragraph()
+            else:
+                raise ValueError(f"the note has a {node.type}, which its Word document does not write")
+
+    def table(self, node: SyntaxTreeNode) -> None:
+        parts = table_parts(node)
+        rows = ([parts.header] if parts.header else []) + list(parts.rows)
+        count = max(len(row) for row in rows)
+        table = self.document.add_table(rows=len(rows), cols=count)
+        table.style = self.document.styles["Table Grid"]
+        table.alignment = WD_TABLE_ALIGNMENT.LEFT
+        points = _TABLE_PT[count > _WIDE_TABLE]
+        size = Pt(points)
+        table.autofit = False
+        columns = [[plain(row[c]) for row in rows if c < len(row)] for c in range(count)]
+        for c, width in enumerate(_column_widths(columns, bool(parts.header), points)):
+            table.columns[c].width = Mm(width)
+            for cell in table.columns[c].cells:
+                cell.width = Mm(width)
+        for r, row in enumerate(rows):
+            for c, cell in enumerate(row):
+                paragraph = table.cell(r, c).paragraphs[0]
+                paragraph.alignment = _ALIGN[parts.sides[c] if c < len(parts.sides) else "l"]
+                paragraph.paragraph_format.space_after = Pt(0)
+                self.spans(paragraph, cell.children, bold=r == 0 and bool(parts.header), size=size)
+        if parts.header:
+            _repeat_as_header(table.rows[0])
+        self.document.add_paragraph()   # the space under a table, as under a paragraph
+
+    def spans(self, paragraph, nodes, bold: bool = False, italic: bool = False, size=None) -> None:
+        for node in nodes:
+            if node.type == "text":
+                self.text(paragraph, node.content, bold, italic, size)
+            elif node.type == "strong":
+                self.spans(paragraph, node.children, True, italic, size)
+            elif node.type == "em":
+                self.spans(paragraph, node.children, bold, True, size)
+            elif node.type == "code_inline":
+                paragraph.add_run(node.content).font.name = "Courier New"
+            elif node.type == "softbreak":
+                paragraph.add_run(" ")
+            elif node.type == "hardbreak":
+                paragraph.add_run().add_break()
+            else:   # the block's inline node, a link or an image: its text
+                self.spans(paragraph, node.children, bold, italic, size)
+
+    @staticmethod
+    def text(paragraph, text: str, bold: bool, italic: bool, size) -> None:
+        """``text`` as runs, a symbol's index below the line and its component above it."""
+        for piece in pieces(text):
+            parts = ((piece, ""),) if isinstance(piece, str) else _symbol_runs(piece)
+            for content, position in parts:
+                run = paragraph.add_run(content)
+                run.bold, run.italic = bold or None, italic or None
+                if size is not None:
+                    run.font.size = size
+                if position == "sub":
+                    run.font.subscript = True
+                elif position == "super":
+                    run.font.superscript = True
+
+
+def _column_widths(columns: list[list[str]], headed: bool, points: float) -> list[float]:
+    """Each column's width (mm): as wide as its widest cell where the table fits the line, else its longest
+    word and a share of the room left in proportion to how much wider its cells would be (as a browser
+    sets a table).  A header wider than :data:`_HEADER_LINE_EM` may wrap, and claims only that."""
+    em = points * _POINT_MM
+
+    def width(text: str, header: bool) -> float:
+        return sum(map(character_width, text)) * em * (_BOLD_WIDENING if header else 1.0)
+
+    least, natural = [], []
+    for column in columns:
+        header, body = (column[0], column[1:]) if headed and column else (None, column)
+        words = [width(word, k == 0 and header is not None) for k, text in enumerate(column) for word in text.split()]
+        least.append(max(words, default=0.0) + _CELL_PADDING_MM)
+        claims = [width(text, False) for text in body]
+        if header is not None:
+            claims.append(min(width(header, True), _HEADER_LINE_EM * em))
+        natural.append(max(least[-1], max(claims, default=0.0) + _CELL_PADDING_MM))
+    if sum(natural) <= _LINE_MM or sum(least) >= _LINE_MM:
+        return natural if sum(natural) <= _LINE_MM else least
+    spare, wanting = _LINE_MM - sum(least), [n - w for n, w in zip(natural, least)]
+    return [w + spare * extra / sum(wanting) for w, extra in zip(least, wanting)]
+
+
+def _symbol_runs(symbol: Symbol) -> tuple[tuple[str, str], ...]:
+    return tuple((content, position) for content, position in ((symbol.base, ""), (symbol.index, "sub"),
+                                                             (symbol.component, "super")) if content)
+
+
+def _repeat_as_header(row) -> None:
+    """Word repeats a row marked so at the top of every page the table runs onto."""
+    properties = row._tr.get_or_add_trPr()
+    mark = OxmlElement("w:tblHeader")
+    mark.set(qn("w:val"), "true")
+    properties.append(mark)
+
+
+def _stored_at_one_time(package: bytes) -> bytes:
+    """The .docx with every part stored at :data:`_STORED_AT`, in the order python-docx wrote them."""
+    written = io.BytesIO()
+    with zipfile.ZipFile(io.BytesIO(package)) as source, zipfile.ZipFile(written, "w", zipfile.ZIP_DEFLATED) as out:
+        for info in source.infolist():
+            stored = zipfile.ZipInfo(info.filename, date_time=_STORED_AT)
+            stored.compress_type = zipfile.ZIP_DEFLATED
+            out.writestr(stored, source.read(info.filename))
+    return written.getvalue()

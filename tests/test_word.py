@@ -1,0 +1,163 @@
+"""The note as a Word document (note.docx), read back by python-docx against the Markdown it was written from.
+
+The Markdown side is read with markdown-it's flat token stream (as the LaTeX's tests read it), not with the
+syntax tree the writer walks: every table cell for cell with its caption, every heading with its level, the
+running text word for word, and each symbol's index and component as the sub- and superscript runs that
+:mod:`graphplan.report.symbols` tells apart.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import io
+import zipfile
+from pathlib import Path
+
+import docx
+import pytest
+from docx.oxml.ns import qn
+from markdown_it import MarkdownIt
+from test_latex import CASES, flat, markdown_tables
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.report.note import note_markdown
+from graphplan.report.symbols import Symbol, pieces
+from graphplan.report.word import note_docx
+
+
+@pytest.fixture(scope="module", params=CASES, ids=[f"{Path(path).stem}-{locale}" for path, locale in CASES])
+def case(request):
+    path, locale = request.param
+    analysis = analyse(dataclasses.replace(graphplan.load(path), locale=locale))
+    note = note_markdown(analysis)
+    written = note_docx(note, analysis.scene.title, locale)
+    return locale, note, written, docx.Document(io.BytesIO(written))
+
+
+def body_blocks(document):
+    """The document's paragraphs and tables in order, as ("p", paragraph) and ("table", table)."""
+    paragraphs = {p._p: p for p in document.paragraphs}
+    tables = {t._tbl: t for t in document.tables}
+    for element in document.element.body.iterchildren():
+        if element.tag == qn("w:p"):
+            yield "p", paragraphs[element]
+        elif element.tag == qn("w:tbl"):
+            yield "table", tables[element]
+
+
+def word_tables(document) -> list[tuple[str | None, list[list[str]]]]:
+    """Each table as (the paragraph right before it, when it has text; its rows, header first)."""
+    found, before = [], None
+    for kind, block in body_blocks(document):
+        if kind == "p":
+            before = " ".join(block.text.split()) or None
+        else:
+            rows = [[" ".join(cell.text.split()) for cell in row.cells] for row in block.rows]
+            found.append((before, rows))
+            before = None
+    return found
+
+
+def markdown_inline(note: str, inside_tables: bool):
+    """The inline tokens of the Markdown, those in its tables or those outside them."""
+    tokens = MarkdownIt("commonmark").enable("table").parse(note)
+    depth = 0
+    for token in tokens:
+        depth += {"table_open": 1, "table_close": -1}.get(token.type, 0)
+        if token.type == "inline" and (depth > 0) == inside_tables:
+            yield token
+
+
+def test_every_table_of_the_note_comes_back_cell_for_cell_with_its_caption(case):
+    _, note, _, document = case
+    expected, got = markdown_tables(note), word_tables(document)
+    assert len(got) == len(expected) > 5
+    assert got == expected
+
+
+def test_every_heading_comes_back_with_its_level(case):
+    _, note, _, document = case
+    tokens = MarkdownIt("commonmark").enable("table").parse(note)
+    expected = [(int(token.tag[1:]), flat(tokens[k + 1].content))
+                for k, token in enumerate(tokens) if token.type == "heading_open"]
+    levels = {"Title": 1, "Heading 1": 2, "Heading 2": 3, "Heading 3": 4}
+    got = [(levels[p.style.name], p.text) for p in document.paragraphs if p.style.name in levels]
+    # The note's fourth level (a plan) and below share Word's third heading.
+    assert got == [(min(level, 4), text) for level, text in expected]
+    assert document.paragraphs[0].style.name == "Title"
+
+
+def test_the_running_text_comes_back_word_for_word(case):
+    _, note, _, document = case
+    expected = " ".join(flat(" ".join(child.content for child in token.children or () if child.type == "text"))
+                        for token in markdown_inline(note, inside_tables=False)).split()
+    got = " ".join(p.text for kind, p in body_blocks(document) if kind == "p").split()
+    assert got == expected
+
+
+def test_symbols_have_their_index_below_the_line_and_their_component_above(case):
+    _, note, _, document = case
+    expected = [(symbol.index, symbol.component) for token in markdown_inline(note, inside_tables=False)
+                for child in token.children or () if child.type == "text"
+                for symbol in pieces(child.content) if isinstance(symbol, Symbol)]
+    runs = [run for kind, p in body_blocks(document) if kind == "p" for run in p.runs]
+    got, k = [], 0
+    while k < len(runs):
+        if runs[k].font.subscript:
+            above = runs[k + 1].text if k + 1 < len(runs) and runs[k + 1].font.superscript else ""
+            got.append((runs[k].text, above))
+            k += 2 if above else 1
+        else:
+            k += 1
+    assert got == [(index, component) for index, component in expected if index]
+    assert len(got) > 50
+
+
+def test_a_table_s_header_row_is_bold_and_repeats_on_every_page(case):
+    _, _, _, document = case
+    for table in document.tables:
+        header = table.rows[0]
+        assert header._tr.trPr.find(qn("w:tblHeader")) is not None
+        assert all(run.bold for cell in header.cells for run in cell.paragraphs[0].runs)
+        assert not any(run.bold for row in table.rows[1:] for cell in row.cells
+                       for run in cell.paragraphs[0].runs if run.text.strip() and not run.text.startswith("Σ"))
+
+
+def test_the_page_the_fonts_and_the_language_are_the_note_s(case):
+    locale, _, _, document = case
+    section = document.sections[0]
+    # Word keeps lengths in twentieths of a point: a mm comes back to within one of them.
+    lengths = (section.page_width, section.page_height, section.left_margin, section.right_margin,
+               section.top_margin, section.bottom_margin)
+    assert [length.mm for length in lengths] == pytest.approx([210, 297, 30, 10, 20, 20], abs=0.02)
+    normal = document.styles["Normal"].element.rPr
+    fonts = normal.find(qn("w:rFonts"))
+    assert fonts.get(qn("w:ascii")) == "Times New Roman" and fonts.get(qn("w:eastAsia")) == "SimSun"
+    language = normal.find(qn("w:lang"))
+    assert language.get(qn("w:val")) == {"en": "en-GB", "ru": "ru-RU", "zh": "zh-CN"}[locale]
+    assert language.get(qn("w:eastAsia")) == ("zh-CN" if locale == "zh" else language.get(qn("w:val")))
+
+
+def test_the_same_note_gives_the_same_file_with_no_date(case):
+    locale, note, written, document = case
+    assert note_docx(note, document.core_properties.title, locale) == written
+    with zipfile.ZipFile(io.BytesIO(written)) as package:
+        assert {info.date_time for info in package.infolist()} == {(1980, 1, 1, 0, 0, 0)}
+        core = package.read("docProps/core.xml").decode("utf-8")
+    assert "dcterms:created" not in core and "dcterms:modified" not in core
+    assert document.core_properties.created is None
+
+
+def test_the_command_line_writes_the_note_for_word_when_asked(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out), "--only", "note",
+                 "--format", "docx"]) == 0
+    document = docx.Document(out / "note.docx")
+    assert document.core_properties.title == "Crank-rocker of a ratchet feed"
+    assert document.paragraphs[0].text.startswith("Пояснительная записка")
+    assert not (out / "note.svg").exists()   # docx is the note's format, not the drawings'
+    plain = tmp_path / "plain"
+    assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(plain), "--only", "note"]) == 0
+    assert not (plain / "note.docx").exists()
