@@ -293,7 +293,7 @@ def _second_at_ends(second: np.ndarray, values: np.ndarray, step: float) -> np.n
 def diagram(case: Case, refinement: int) -> Row:
     mechanism = case.mechanism
     driver = mechanism.driver
-    rate, rate_rate = (driver.omega, driver.epsilon) if driver.kind == "crank" else (driver.velocity, driver.acceleration)
+    rate, rate_rate = driver.coordinate_speed, driver.coordinate_acceleration
     grid = diagram_grid(case, refinement)
     step = float(grid[1] - grid[0])
     periodic = driver.cyclic

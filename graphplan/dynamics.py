@@ -201,9 +201,7 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
     count = motion.count
     if count < 2:
         raise ValueError("an equivalent model needs at least two positions of the driver")
-    turning = driver.kind == "crank"
-    velocity = driver.omega if turning else driver.velocity
-    rate = driver.epsilon if turning else driver.acceleration
+    velocity, rate = driver.coordinate_speed, driver.coordinate_acceleration
     speed, sense = abs(velocity), math.copysign(1.0, velocity)
     values = np.asarray(motion.driver, dtype=float)
     coordinate = sense * (values - values[0])

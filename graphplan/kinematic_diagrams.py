@@ -244,7 +244,7 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
         run = "turn" if driver.cyclic else "travel" if driver.kind == "slider" else "swing"
         raise SceneError("positions.count", f"the chord method needs at least 3 intervals between positions; "
                          f"{count} positions over the {run} make {intervals}", count)
-    speed, rate = (driver.omega, driver.epsilon) if driver.kind == "crank" else (driver.velocity, driver.acceleration)
+    speed, rate = driver.coordinate_speed, driver.coordinate_acceleration
     numbers = tuple(int(n) for n in positions.numbers)
     if driver.cyclic:
         start, span = float(positions.values[0]), 2.0 * math.pi

@@ -276,7 +276,7 @@ def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:
     """Whether the driver delivers power against the balancing load ``ideal`` without friction
     (η = Mb0/Mb), or the loads drive it back (η = Mb/Mb0)."""
     driver = mechanism.driver
-    speed = driver.omega if driver.kind == "crank" else driver.velocity
+    speed = driver.coordinate_speed
     return np.asarray(ideal, dtype=float) * speed > 0
 
 

@@ -101,6 +101,16 @@ class Crank:
         return self.swing is None
 
     @property
+    def coordinate_speed(self) -> float:
+        """The rate of the driver's own coordinate, its angle φ: ω (rad/s)."""
+        return self.omega
+
+    @property
+    def coordinate_acceleration(self) -> float:
+        """The second derivative of the angle φ: ε (rad/s²)."""
+        return self.epsilon
+
+    @property
     def travel(self) -> tuple[float, float]:
         """The angles (rad) a rocking crank's positions run between."""
         if self.swing is None:
@@ -209,6 +219,16 @@ class Slider:
     def cyclic(self) -> bool:
         """A slider's positions run over its travel once: they do not repeat."""
         return False
+
+    @property
+    def coordinate_speed(self) -> float:
+        """The rate of the driver's own coordinate, its travel s: ṡ (m/s)."""
+        return self.velocity
+
+    @property
+    def coordinate_acceleration(self) -> float:
+        """The second derivative of the travel s: s̈ (m/s²)."""
+        return self.acceleration
 
     def describe(self, value: float) -> str:
         return f"s = {value:.6g} m"
