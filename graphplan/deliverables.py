@@ -439,4 +439,5 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
             "accuracy.svg": accuracy.figure(found, scene.locale, scene.title)}
 
 
-__all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings", "files", "missing"]
+__all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings",
+           "files", "missing"]

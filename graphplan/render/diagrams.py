@@ -1,15 +1,15 @@
 """The kinematic diagrams of the output link: displacement, velocity and acceleration, stacked.
 
-Drawn as the course project draws them: one φ axis of length L per diagram (a t
-axis over a slider driver's travel) with the positions numbered at their
-ticks, the displacement with its
-ordinates at the positions and the chords between them, and under it the
-velocity and the acceleration got by the chord method with the pole
-construction (the pole P at distance H left of the origin, a ray parallel to
-each chord).  Each diagram also carries the analytic curve and says how far
-the chord method strays from it.  The scales are written as the textbook
-writes them: μs, μv = μs/(μt·H1), μa = μv/(μt·H2), μφ = 2π/L (Δφ/L over a swing) and
-μt = μφ/ω (T/L over a slider's travel).
+Drawn as the course project draws them: one φ axis of length L per diagram
+(a t axis over a slider driver's travel) with the positions numbered at their
+ticks, the displacement with its ordinates at the positions and the chords
+between them, and under it the velocity and the acceleration got by the
+chord method with the pole construction (the pole P at distance H left of
+the origin, a ray parallel to each chord).  Each diagram also carries the
+analytic curve and says how far the chord method strays from it.  The scales
+are written as the textbook writes them: μs, μv = μs/(μt·H1),
+μa = μv/(μt·H2), μφ = 2π/L (Δφ/L over a swing) and μt = μφ/ω (T/L over a
+slider's travel).
 
 The layout reads a :class:`~graphplan.kinematic_diagrams.KinematicDiagrams`
 record and computes no mechanics.  Every word comes from ``text``, the ``kd_``

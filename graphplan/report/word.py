@@ -70,9 +70,9 @@ def note_docx(markdown_text: str, title: str, locale: str) -> bytes:
     properties = document.core_properties
     properties.title, properties.language = " ".join(title.split()), _LANGUAGES.get(locale, locale)
     properties.author, properties.comments = "graphplan", ""
-    for name in ("created", "modified", "lastPrinted"):   # no date: the same note gives the same file
-        for element in properties._element.findall(qn(f"dcterms:{name}")) + properties._element.findall(
-                qn(f"cp:{name}")):
+    # No date (python-docx's template carries its own): the same note gives the same file.
+    for dated in ("dcterms:created", "dcterms:modified", "cp:lastPrinted"):
+        for element in properties._element.findall(qn(dated)):
             properties._element.remove(element)
     written = io.BytesIO()
     document.save(written)
