@@ -35,7 +35,7 @@ from docx.oxml.ns import qn
 from docx.shared import Mm, Pt
 from markdown_it.tree import SyntaxTreeNode
 
-from ..render.primitives import character_width
+from ..render.primitives import FONT_SIZE_PER_CAP, text_width
 from .markdown import plain, table_parts, tree
 from .symbols import Symbol, pieces
 
@@ -48,11 +48,10 @@ _BODY_PT = 12.0
 _WIDE_TABLE = 5
 _TABLE_PT = (10.0, 9.0)
 # The line a table spreads over: A4 less the margins (mm); what a cell keeps clear of its borders (Word's
-# default 0.19 cm a side); a point in mm; a bold header's letters are this much wider.
+# default 0.19 cm a side); a point in mm.
 _LINE_MM = 170.0
 _CELL_PADDING_MM = 3.8
 _POINT_MM = 25.4 / 72.0
-_BOLD_WIDENING = 1.1
 # A header no wider than this (em) stays on one line where the table has room.
 _HEADER_LINE_EM = 7.0
 # The side a Markdown column is aligned to, in Word.
@@ -213,8 +212,8 @@ def _column_widths(columns: list[list[str]], headed: bool, points: float) -> lis
     sets a table).  A header wider than :data:`_HEADER_LINE_EM` may wrap, and claims only that."""
     em = points * _POINT_MM
 
-    def width(text: str, header: bool) -> float:
-        return sum(map(character_width, text)) * em * (_BOLD_WIDENING if header else 1.0)
+    def width(text: str, header: bool) -> float:   # as the drawings measure their words, at a cap height of em
+        return text_width(text, em / FONT_SIZE_PER_CAP, "bold" if header else "normal")
 
     least, natural = [], []
     for column in columns:
