@@ -241,7 +241,7 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     count = len(positions.values)
     intervals = interval_count(driver.cyclic, count)
     if intervals < 3:
-        run = "turn" if driver.cyclic else "travel" if driver.kind == "slider" else "swing"
+        run = "turn" if driver.cyclic else driver.run_key
         raise SceneError("positions.count", f"the chord method needs at least 3 intervals between positions; "
                          f"{count} positions over the {run} make {intervals}", count)
     speed, rate = driver.coordinate_speed, driver.coordinate_acceleration

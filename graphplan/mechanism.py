@@ -286,7 +286,7 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if isinstance(load.during, tuple) and not scene.driver.cyclic:
             raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank that turns "
                                                      f"round; a {scene.driver.kind} driver's positions run over its "
-                                                     f"{'travel' if scene.driver.kind == 'slider' else 'swing'}: "
+                                                     f"{scene.driver.run_key}: "
                                                      "use always", list(load.during))
     working = scene.positions.working
     if working is not None:

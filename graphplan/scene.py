@@ -450,8 +450,8 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
     else:
         start = check_number(start_raw, table.where("start"))
     if not driver.cyclic and table.has("start"):
-        over = "driver.travel" if driver.kind == "slider" else "driver.swing"
-        raise SceneError(table.where("start"), f"a {driver.kind} driver's positions run over {over}: leave start out")
+        raise SceneError(table.where("start"),
+                         f"a {driver.kind} driver's positions run over driver.{driver.run_key}: leave start out")
     number_from = table.integer("number_from", 1, minimum=0, maximum=1)
     working_table = table.table("working", None)
     working = None

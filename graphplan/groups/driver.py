@@ -36,6 +36,8 @@ from .base import Context, GroupMotion, Guide, read_guide
 @dataclass(frozen=True)
 class Crank:
     kind = "crank"
+    # The key of [driver] its positions run over when it does not turn round.
+    run_key = "swing"
     where: str
     link: int
     pivot: str
@@ -170,6 +172,8 @@ class Crank:
 @dataclass(frozen=True)
 class Slider:
     kind = "slider"
+    # The key of [driver] its positions run over.
+    run_key = "travel"
     where: str
     link: int
     joint: str
