@@ -239,3 +239,22 @@ def test_a_fragment_typesets_in_a_document_of_the_user_s(case, tmp_path):
     log, pdf = typeset(tmp_path, "report", wrapper)
     assert "Missing character" not in log
     assert analysis.scene.title.split()[0] in pdf_text(pdf)
+
+
+@needs_xelatex
+def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns(case, tmp_path):
+    analysis, note, latex = case
+    if analysis.scene.locale != "ru":
+        pytest.skip("Russian only")
+    # Whether this TeX has the patterns at all, asked of babel apart from the note's preamble.
+    probe = ("\\documentclass{article}\n\\usepackage{fontspec}\n\\setmainfont{DejaVu Sans}\n\\usepackage{babel}\n"
+             "\\babelprovide[import,main]{russian}\n\\begin{document}\n\\showhyphens{механизма}\n\\end{document}\n")
+    log, _ = typeset(tmp_path, "probe", probe)
+    if "ме-ха-низ-ма" not in log:
+        pytest.skip("this TeX has no Russian hyphenation patterns (Debian: texlive-lang-cyrillic)")
+    _, pdf = typeset(tmp_path, "note", latex)
+    # PDFium marks a hyphen TeX put at a line's end with U+FFFE; the word joined again is one of the note's.
+    broken = re.findall(r"([а-яё]+)\ufffe\s*([а-яё]+)", pdf_text(pdf))
+    assert broken
+    words = set(re.findall(r"[а-яё]+", note))
+    assert all(head + tail in words for head, tail in broken), broken

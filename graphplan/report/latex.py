@@ -16,10 +16,12 @@ tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
 
 The text being Unicode, the document is for XeLaTeX with fontspec, set in
 the fonts of the drawings: DejaVu Sans, or Noto Sans CJK SC for Chinese with
-XeTeX's line breaks between CJK characters.  It uses only packages of TeX
-Live's base and recommended collections (Debian: texlive-xetex,
-texlive-latex-recommended).  A fragment has no preamble: a comment at its
-head names what the including document needs.
+XeTeX's line breaks between CJK characters, and hyphenated by babel in
+Russian.  It uses only packages of TeX Live's base and recommended
+collections (Debian: texlive-xetex, texlive-latex-recommended); Russian
+words break at their syllables where TeX Live's Cyrillic patterns are
+installed too (texlive-lang-cyrillic).  A fragment has no preamble: a
+comment at its head names what the including document needs.
 """
 
 from __future__ import annotations
@@ -68,13 +70,17 @@ _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \AtBeginDocument{\setlength{\LTcapwidth}{\textwidth}}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
-%% Lines may stretch rather than run over: a formula is a long run without a break, and Russian has no
-%% hyphenation patterns in TeX Live's base.
+%% Lines may stretch rather than run over: a formula is a long run without a break.
 \sloppy
 %(locale)s"""
 
 # Chinese has no spaces: XeTeX may break a line between any two CJK characters.
 _CJK_BREAKS = "\\XeTeXlinebreaklocale \"zh\"\n\\XeTeXlinebreakskip = 0pt plus 1pt\n"
+# Russian words break at their syllables by babel's Russian (its locale file is in TeX Live's base); the
+# patterns come with TeX Live's Cyrillic collection (Debian: texlive-lang-cyrillic), and a TeX without them
+# sets the note as before, unhyphenated.
+_RUSSIAN = "\\usepackage{babel}\n\\babelprovide[import,main]{russian}\n"
+_LOCALE_PREAMBLE = {"zh": _CJK_BREAKS, "ru": _RUSSIAN}
 
 _FRAGMENT_HEAD = ("% Tables of graphplan for \\input into a document typeset by XeLaTeX (the text is Unicode),\n"
                   "% with \\usepackage{array,longtable,booktabs,caption} and a main font with the text's\n"
@@ -84,7 +90,7 @@ _FRAGMENT_HEAD = ("% Tables of graphplan for \\input into a document typeset by 
 def latex_document(markdown_text: str, title: str, locale: str) -> str:
     """A complete XeLaTeX document of ``markdown_text`` (the explanatory note); its first line names ``title``."""
     font = _FONTS.get(locale, _DEFAULT_FONT)
-    preamble = _PREAMBLE % {"font": font, "locale": _CJK_BREAKS if locale == "zh" else ""}
+    preamble = _PREAMBLE % {"font": font, "locale": _LOCALE_PREAMBLE.get(locale, "")}
     return (f"% {' '.join(title.split())}: typeset with xelatex, twice (longtable settles its columns' widths on the second)\n"
             f"{preamble}"
             f"\\begin{{document}}\n{_body(markdown_text, titled=True)}\\end{{document}}\n")
