@@ -145,8 +145,13 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         anchor = anchors[index]
         ring, order, candidates = _candidates(anchor, gap)
         shapes = shapely.box(*candidates.T)
-        neighbours = points[np.hypot(*(at - at[index]).T) > 1e-9]
-        # A label nearer another labelled point than its own would name the wrong one.
+        # A label nearer another labelled point than its own would name the wrong one.  A box reaching
+        # at most `reach` from its point is at least `away - reach` from a point `away` off, and at most
+        # `reach` from its own: only points nearer than twice the reach (and the margin) can mislead.
+        away = np.hypot(*(at - at[index]).T)
+        off = np.abs(candidates - np.tile(at[index], 2))
+        reach = np.hypot(off[:, [0, 2]].max(axis=1), off[:, [1, 3]].max(axis=1)).max()
+        neighbours = points[(away > 1e-9) & (away < 2 * reach + 0.8 + 1e-9)]
         own = shapely.distance(shapes, points[index])
         misleading = (shapely.distance(shapes[:, None], neighbours[None, :]) < own[:, None] + 0.8).sum(axis=1)
         cost = 1000 * (crossing(shapes, placed_boxes) + crossing(shapes, leader_lines))
