@@ -325,3 +325,12 @@ def test_an_overflowing_speed_is_an_error_or_warned_everywhere(capsys):
     warned = {w["position"] for w in document["warnings"]}
     blank = {p["index"] for p in document["positions"] if any(point["a"] is None for point in p["points"].values())}
     assert blank <= warned, f"positions {sorted(blank - warned)} hold null accelerations without a warning"
+
+
+# --- faults found by mutating the other fixtures, fixed --------------------------------------------
+
+def test_a_pole_distance_no_sheet_holds_is_refused_not_drawn(capsys):
+    """At pa = 1e9 mm the plan's points lie so far out that a link's collinear points (p, s4, b) round to a
+    hull of some area, whose corners were then all dropped as in line; the plan is refused instead."""
+    error = assert_refused(capsys, _with("drawing.acceleration_pole", 1e9), "drawing.sheet")
+    assert "drawing.acceleration_pole = 1e+09 mm" in error

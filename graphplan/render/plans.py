@@ -429,8 +429,10 @@ def _similar_figures(plan: Plan, mechanism: Mechanism) -> list[Primitive]:
         if len(letters) < 3:
             continue
         hull = MultiPoint([_xy(plan.mm(letter)) for letter in letters]).convex_hull
-        if hull.geom_type == "Polygon" and hull.area > ZERO_MM ** 2:
-            items.append(Polyline(_corners(tuple(hull.exterior.coords)[:-1]), _FIGURE, closed=True))
+        corners = _corners(tuple(hull.exterior.coords)[:-1]) if hull.geom_type == "Polygon" else ()
+        # Far out on a huge plan a hull of some area may still have all its corners in line: no figure.
+        if len(corners) >= 3 and hull.area > ZERO_MM ** 2:
+            items.append(Polyline(corners, _FIGURE, closed=True))
     return items
 
 
