@@ -125,6 +125,38 @@ def test_a_table_s_header_row_is_bold_and_repeats_on_every_page(case):
                        for run in cell.paragraphs[0].runs if run.text.strip() and not run.text.startswith("Σ"))
 
 
+def test_a_short_table_keeps_to_one_page_and_a_long_one_keeps_its_header_with_its_first_row(case):
+    """Word keeps a table on one page when every row but the last keeps with the next; no row parts its lines."""
+    _, _, _, document = case
+    kept = lambda row: {p.paragraph_format.keep_with_next for cell in row.cells for p in cell.paragraphs}
+    assert any(len(table.rows) <= 20 for table in document.tables)
+    for table in document.tables:
+        rows = table.rows
+        assert all(row._tr.trPr.find(qn("w:cantSplit")) is not None for row in rows)
+        assert kept(rows[-1]) == {False}
+        if len(rows) <= 20:
+            assert all(kept(row) == {True} for row in rows[:-1])
+        else:
+            assert kept(rows[0]) == {True} and all(kept(row) == {False} for row in rows[1:])
+
+
+def test_a_table_of_more_rows_than_a_third_of_a_page_runs_on():
+    rows = "\n".join(f"| {k} | {k * k} |" for k in range(30))
+    document = docx.Document(io.BytesIO(note_docx(f"# Note\n\n| k | k² |\n|---|---|\n{rows}\n\n| a |\n|---|\n| 1 |\n",
+                                                  "Note", "en")))
+    long, short = document.tables
+    assert [row.cells[0].paragraphs[0].paragraph_format.keep_with_next for row in long.rows] == [True] + [False] * 30
+    assert [row.cells[0].paragraphs[0].paragraph_format.keep_with_next for row in short.rows] == [True, False]
+
+
+def test_the_title_is_black_on_no_rule(case):
+    _, _, _, document = case
+    title = document.styles["Title"]
+    assert title.element.find(f"{qn('w:pPr')}/{qn('w:pBdr')}") is None
+    assert title.font.color.rgb is None
+    assert document.paragraphs[0].style.name == "Title"
+
+
 def test_the_page_the_fonts_and_the_language_are_the_note_s(case):
     locale, _, _, document = case
     section = document.sections[0]

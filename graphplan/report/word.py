@@ -54,6 +54,9 @@ _CELL_PADDING_MM = 3.8
 _POINT_MM = 25.4 / 72.0
 # A header no wider than this (em) stays on one line where the table has room.
 _HEADER_LINE_EM = 7.0
+# A table of at most this many rows is kept on one page (a third of one at the table's size); a longer one
+# runs on, its header repeated, and keeps only its header with its first row.
+_KEPT_TOGETHER_ROWS = 20
 # The side a Markdown column is aligned to, in Word.
 _ALIGN = {"l": WD_ALIGN_PARAGRAPH.LEFT, "c": WD_ALIGN_PARAGRAPH.CENTER, "r": WD_ALIGN_PARAGRAPH.RIGHT}
 # Every part of the file is stored at this time (the zip format's earliest), so that a note gives one file.
@@ -104,6 +107,9 @@ def _set_styles(document, locale: str) -> None:
             fonts.attrib.pop(qn(key), None)
         if style.name != "Normal":
             style.font.color.rgb = None
+        # The template's title stands on a blue rule: a printed note's has none.
+        for rule in style.element.findall(f"{qn('w:pPr')}/{qn('w:pBdr')}"):
+            rule.getparent().remove(rule)
     normal = document.styles["Normal"]
     normal.font.size = Pt(_BODY_PT)
     normal.paragraph_format.space_after = Pt(6)
@@ -171,6 +177,13 @@ class _Writer:
                 self.spans(paragraph, cell.children, bold=r == 0 and bool(parts.header), size=size)
         if parts.header:
             _repeat_as_header(table.rows[0])
+        # Word keeps a table on one page when each of its rows but the last keeps with the next.
+        kept = len(rows) - 1 if len(rows) <= _KEPT_TOGETHER_ROWS else int(bool(parts.header))
+        for r, row in enumerate(table.rows):
+            _never_split(row)
+            for cell in row.cells:
+                for paragraph in cell.paragraphs:
+                    paragraph.paragraph_format.keep_with_next = r < kept
         self.document.add_paragraph()   # the space under a table, as under a paragraph
 
     def spans(self, paragraph, nodes, bold: bool = False, italic: bool = False, size=None) -> None:
@@ -237,10 +250,18 @@ def _symbol_runs(symbol: Symbol) -> tuple[tuple[str, str], ...]:
 
 def _repeat_as_header(row) -> None:
     """Word repeats a row marked so at the top of every page the table runs onto."""
-    properties = row._tr.get_or_add_trPr()
-    mark = OxmlElement("w:tblHeader")
+    _mark_row(row, "w:tblHeader")
+
+
+def _never_split(row) -> None:
+    """A row marked so moves whole to the next page rather than part its lines."""
+    _mark_row(row, "w:cantSplit")
+
+
+def _mark_row(row, tag: str) -> None:
+    mark = OxmlElement(tag)
     mark.set(qn("w:val"), "true")
-    properties.append(mark)
+    row._tr.get_or_add_trPr().append(mark)
 
 
 def _stored_at_one_time(package: bytes) -> bytes:
