@@ -390,6 +390,18 @@ def test_panels_that_do_not_fit_one_sheet_spread_over_several():
     assert all(f"{sheet.number} of 9" in [t.text for t in texts(sheet.layers)] for sheet in sheets)
 
 
+def test_a_drawing_fills_a_gap_on_an_earlier_sheet():
+    """On an ESKD A1 (800 × 513 mm above the title block): a 600 × 400 drawing leaves 185 mm beside it, a
+    780 × 400 one goes on a second sheet and leaves too little round it; a 180 × 180 drawing then goes beside
+    the first, not on a third sheet."""
+    def box(name, width, height):
+        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
+
+    sheets = kinematics_sheet([box("positions", 600, 400), box("plan-5", 780, 400), box("diagrams", 180, 180)],
+                              "A1", "ru")
+    assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-5"]]
+
+
 def test_a4_stands_upright_when_that_fits_better():
     tall = [Layer("tall", (Polyline(((0, 0), (150, 0), (150, 190), (0, 190)), closed=True),))]
     wide = [Layer("wide", (Polyline(((0, 0), (230, 0), (230, 100), (0, 100)), closed=True),))]

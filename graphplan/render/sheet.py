@@ -14,8 +14,9 @@ shrunken drawing would falsify them.  Panels are placed in the order given,
 each where the drawings of the sheet stay most compact (then as high and as
 far left as can be), never nearer than :data:`GAP_MM` to another or than
 :data:`PADDING_MM` to the frame and the title block; the drawings of a
-sheet are then moved together towards its middle.  A panel that does not
-fit on the sheet goes on the next sheet of the same format.  A plan sheet
+sheet are then moved together towards its middle.  A panel goes on the
+first sheet of the set with room for it, else on a new sheet of the same
+format.  A plan sheet
 of one position stands as a row (mechanism, velocity plan, acceleration
 plan) wherever that fits, else with its mechanism above its plans or beside
 them, so that it may join a sheet with room of another shape.  A panel too
@@ -748,11 +749,12 @@ def _upright(page: _Page) -> bool:
 
 
 def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[bool]) -> list[_Page]:
-    """The panels packed in order; a new sheet is turned the first of ``turns`` (True: upright) that holds
-    the panel that opens it."""
+    """The panels packed in order, each on the first sheet with room for it; a new sheet is turned the first
+    of ``turns`` (True: upright) that holds the panel that opens it."""
     pages: list[_Page] = []
     for panel in panels:
-        if pages and not pages[-1].label and pages[-1].place(panel):
+        # The first sheet with room, not only the last: a small drawing fills a gap left sheets back.
+        if any(not page.label and page.place(panel) for page in pages):
             continue
         page = _empty_page(sheet, form, _turn_holding(panel, sheet, form, turns))
         if page.place(panel):
