@@ -127,6 +127,9 @@ class EquivalentModel:
         cycle; ``"none"`` when both are as the scene gives them.
     plans
         The reduction read off the velocity plans of the plan positions.
+    cyclic
+        True when the samples close a cycle (a crank turning round, a load diagram's turn); False
+        when they run once over a rocking crank's swing or a slider's travel.
     """
 
     kind: str
@@ -142,6 +145,7 @@ class EquivalentModel:
     resisting: np.ndarray
     constant: str
     plans: tuple[PlanReduction, ...] = ()
+    cyclic: bool = True
 
     @property
     def turning(self) -> bool:
@@ -231,7 +235,7 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
     return EquivalentModel(kind=driver.kind, link=driver.link, speed=speed, sense=sense, driver=values,
                            coordinate=coordinate, inertia=inertia, inertia_slope=slope,
                            link_inertia=MappingProxyType(shares), driving=driving, resisting=resisting,
-                           constant=chosen, plans=tuple(plans))
+                           constant=chosen, plans=tuple(plans), cyclic=driver.cyclic)
 
 
 def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,

@@ -247,8 +247,9 @@ def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None 
     The cycle must be steady: its driving and resisting work must balance (see
     :attr:`EquivalentModel.constant`).
     """
-    if not model.turning:
-        raise ValueError("a flywheel needs a turning driver over a cycle; this model's driver is a slider")
+    if not (model.turning and model.cyclic):
+        raise ValueError("a flywheel needs a turning driver over a cycle; this model's driver "
+                         f"{'rocks over a swing' if model.turning else 'is a slider'}")
     omega_mean = model.speed if omega_mean is None else omega_mean
     _check_speed(omega_mean, delta)
     energy, inertia = model.energy, model.inertia
@@ -295,6 +296,8 @@ MOTION_KEYS = ("motor", "brake", "clutch", "start", "duration", "method", "rtol"
 DIAGRAM_KEYS = ("resisting_torque", "resisting_power", "driving_torque", "driving_power")
 # Keys that only a scene without a linkage reads: with one, its loads and masses are reduced from the mechanism.
 _DIAGRAM_ONLY = (*DIAGRAM_KEYS, "driving", "resisting", "inertia")
+# The keys that size a flywheel: its δ, the mean speed it is sized at, the shaft it may be moved to.
+_FLYWHEEL_KEYS = ("delta", "rpm", "omega", "flywheel_shaft_rpm")
 _SIDES = ("driving", "resisting")
 
 
@@ -347,12 +350,14 @@ class DynamicsSpec:
     inertia: float = 0.0
 
 
-def read_dynamics(table: Table, linkage: bool = True, turning: bool = True) -> DynamicsSpec:
+def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = None) -> DynamicsSpec:
     """The ``[dynamics]`` table, every key checked; the equation of motion's by its own reader.
 
     Without a ``linkage`` the table must give a load diagram (:data:`DIAGRAM_KEYS`), and may not
-    give ``constant``; with one, no diagram.  The equation of motion needs a driver that is
-    ``turning`` (a crank), or no linkage.
+    give ``constant``; with one, no diagram.  ``once_over`` names the driver's key whose range its
+    positions run over once (``driver.swing``, ``driver.travel``), None for a crank that turns
+    round: such a run has an equivalent model, but neither a flywheel, which evens out the speed
+    from turn to turn, nor the equation of motion, which is integrated over the turns.
     """
     if linkage:
         for key in _DIAGRAM_ONLY:
@@ -360,6 +365,13 @@ def read_dynamics(table: Table, linkage: bool = True, turning: bool = True) -> D
                 raise SceneError(table.where(key), "is for a scene without a linkage: this one has [frame] and "
                                  "[driver], whose loads and masses ([[loads]], [links.N]) are reduced to the crank "
                                  "instead; leave it out, or leave out the linkage")
+    if once_over is not None:
+        for key in (*_FLYWHEEL_KEYS, *MOTION_KEYS):
+            if table.has(key):
+                what = "the flywheel, which evens out a crank's speed from turn to turn" if key in _FLYWHEEL_KEYS \
+                    else "the equation of motion, integrated over the turns of a crank"
+                raise SceneError(table.where(key), f"is for {what}; this scene's positions run once over {once_over}, "
+                                 "over which [dynamics] gives the equivalent model only: leave it out")
     delta = table.number("delta", None, positive=True)
     if delta is not None and not delta < 2:
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
@@ -378,12 +390,6 @@ def read_dynamics(table: Table, linkage: bool = True, turning: bool = True) -> D
     motion = None
     if any(table.has(key) for key in MOTION_KEYS):
         from .machine_motion import read_motion
-
-        if not turning:
-            key = next(key for key in MOTION_KEYS if table.has(key))
-            raise SceneError(table.where(key), "the equation of motion is integrated over the turns of a crank, and "
-                             "this scene's driver is a slider, whose stroke does not repeat by turning on: leave out "
-                             "the motor, or drive the mechanism by a crank")
 
         motion = read_motion(table, table.path)
     table.done()
@@ -487,8 +493,8 @@ def diagram_model_of(spec: DynamicsSpec) -> EquivalentModel:
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
-    """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ (or the driver is a slider)."""
-    if spec.delta is None or not model.turning:
+    """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
+    if spec.delta is None:
         return None
     return flywheel_for(model, spec.delta, spec.omega, shaft_rpm=spec.flywheel_shaft_rpm)
 

@@ -251,13 +251,10 @@ def _read_scene(top: Table, source: str) -> Scene:
     driver = _read_driver(top.table("driver"))
     dynamics = None
     if top.has("dynamics"):
-        if driver.kind == "crank" and not driver.cyclic:
-            raise SceneError("dynamics", "the machine's dynamics are reduced over a cycle, a turn of the crank; a "
-                             "rocking crank (driver.swing) makes none: leave out [dynamics] or the swing")
         # Imported here: the machine's dynamics are built on the analysis, which reads scenes.
         from .flywheel import read_dynamics
 
-        dynamics = read_dynamics(top.table("dynamics"), turning=driver.kind == "crank")
+        dynamics = read_dynamics(top.table("dynamics"), once_over=None if driver.cyclic else f"driver.{driver.run_key}")
     groups = tuple(_read_group(where, item) for where, item in top.items("groups", default=[]) or [])
     points = _read_points(top.table("points", None))
     links = _read_links(top.table("links", None))

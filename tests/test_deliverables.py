@@ -252,8 +252,8 @@ def test_a_motor_for_a_slider_driven_mechanism_is_refused_by_name(tmp_path, caps
     status, out = run(tmp_path, scene=scene)
     err = capsys.readouterr().err
     assert status == 2 and not out.exists()
-    assert err.startswith("graphplan: error: dynamics.motor: the equation of motion is integrated over the turns "
-                          "of a crank, and this scene's driver is a slider")
+    assert err.startswith("graphplan: error: dynamics.motor: is for the equation of motion, integrated over the turns "
+                          "of a crank; this scene's positions run once over driver.travel")
 
 
 def test_sheets_when_the_scene_names_its_sheet_each_the_size_of_its_format(tmp_path):

@@ -81,8 +81,10 @@ class Scales:
 
 def scales_for(model: EquivalentModel) -> Scales:
     """Round scales at which each diagram fills its field."""
-    if model.turning:
+    if model.turning and model.cyclic:
         angle = 2.0 * math.pi / ABSCISSA_MM
+    elif model.turning:  # a swing: a round number of degrees per millimetre
+        angle = math.radians(fit_scale(math.degrees(float(model.coordinate[-1])), ABSCISSA_MM))
     else:
         angle = fit_scale(float(model.coordinate[-1]), ABSCISSA_MM)
     moments = np.concatenate([model.driving, model.resisting])
@@ -145,7 +147,8 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
     if results:
         layers.append(_layer("results", results, 0.0, left_bottom - GAP_MM - bounds_of(results)[3]))
     xmin, _, _, ymax = bounds(layers)
-    layers.append(Layer("title", (Text((xmin, ymax + 8.0), words["dyn_title"], TITLE, "start", weight="bold"),)))
+    title = words["dyn_title"] if flywheel is not None else words["dyn_title_model"]
+    layers.append(Layer("title", (Text((xmin, ymax + 8.0), title, TITLE, "start", weight="bold"),)))
     return layers
 
 
@@ -197,7 +200,7 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
     """The φ axis at y = 0 (its arrow past the cycle), with a thin grid and the ticks' values under the diagram."""
     items: list[Primitive] = [Arrow((0.0, 0.0), (width + AXIS_RUN_MM, 0.0), THIN, head=2.5)]
     if model.turning:
-        ticks = [(math.radians(d) / scales.angle, f"{d}") for d in range(0, 361, 30)]
+        ticks = [(psi / scales.angle, label) for psi, label in _angle_ticks(model)]
         name = "φ, °"
     else:
         travel = float(model.coordinate[-1])
@@ -281,10 +284,10 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     length = float(-ys[-1])
     items.append(Arrow((0.0, 0.0), (0.0, -length - AXIS_RUN_MM), THIN, head=2.5))
     items.append(Text((1.5, -length - AXIS_RUN_MM - LABEL), "φ, °", LABEL, "start"))
-    for degrees in range(0, 361, 30):
-        at = -math.radians(degrees) / scales.angle
+    for psi, label in _angle_ticks(model):
+        at = -psi / scales.angle
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
-        items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), str(degrees), LABEL, "end"))
+        items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), label, LABEL, "end"))
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
     step = _nice_step(float(np.max(model.inertia)) / 4)
     for value in np.arange(step, float(np.max(model.inertia)) + step * 1e-9, step):
@@ -297,6 +300,15 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
                       f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
                       f"{_angle_scale(model, scales, words)}", LABEL, "start"))
     return items
+
+
+def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:
+    """(ψ in rad, its label in degrees) of the angle's ticks: every 30° of a turn, round steps over a swing."""
+    if model.cyclic:
+        return [(math.radians(degrees), f"{degrees}") for degrees in range(0, 361, 30)]
+    span = math.degrees(float(model.coordinate[-1]))
+    return [(math.radians(degrees), _format(degrees))
+            for degrees in np.arange(0.0, span * (1 + 1e-9), _nice_step(span / 6))]
 
 
 def _angle_scale(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> str:

@@ -926,16 +926,18 @@ class _Note:
         dynamics = self.dynamics
         model, flywheel = dynamics.model, dynamics.flywheel
         turning = model.turning
+        # The texts of a run once over a swing or a travel, not over a cycle, say so.
+        run = "" if model.cyclic else "_swing" if turning else "_travel"
         self.heading(2, f"{section}. {self.t('note_dynamics')}")
-        self.para(self.t("note_dyn_model" if turning else "note_dyn_model_slider", link=model.link,
+        self.para(self.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
                          count=len(model.coordinate)))
         if model.plans:
             self.reductions(model)
         if turning and model.constant in ("driving", "resisting"):
             side = model.driving if model.constant == "driving" else -model.resisting
-            self.para(self.t(f"note_dyn_constant_{model.constant}", value=self.n(float(np.mean(side)))))
+            self.para(self.t(f"note_dyn_constant_{model.constant}{run}", value=self.n(float(np.mean(side)))))
         energy = model.energy
-        self.para(self.t("note_dyn_energy", low=self.n(float(energy.min())), high=self.n(float(energy.max())),
+        self.para(self.t(f"note_dyn_energy{run}", low=self.n(float(energy.min())), high=self.n(float(energy.max())),
                          value=self.n(float(np.ptp(energy)))))
         if flywheel is not None:
             self.flywheel(flywheel, float(np.mean(model.inertia)))
