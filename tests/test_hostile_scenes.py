@@ -8,6 +8,8 @@ is invalid by construction; the command line (``graphplan.cli.main``, in process
 with exit status 2, one line on stderr that starts ``graphplan: error:`` and names the key (for a
 key's mistake), no traceback, and no output folder (not even a half-written one beside it).
 Explicit cases cover each category once more, the 10 MB file, and an output path that is a file.
+A second property test changes any one number of any fixture (and of a scene with [dynamics], and
+of a rotor's): the run either goes through or is refused in one such line, never with a traceback.
 
 The faults found while writing this file are checked by the tests at the end.
 """
@@ -24,7 +26,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 from test_scene_errors import to_toml
 
@@ -334,3 +336,53 @@ def test_a_pole_distance_no_sheet_holds_is_refused_not_drawn(capsys):
     hull of some area, whose corners were then all dropped as in line; the plan is refused instead."""
     error = assert_refused(capsys, _with("drawing.acceleration_pole", 1e9), "drawing.sheet")
     assert "drawing.acceleration_pole = 1e+09 mm" in error
+
+
+# --- any number of any fixture, changed: a run or one clear line, never a traceback -------------------
+
+FIXTURES = sorted(FIXTURE.parent.glob("*.toml"))
+# Scenes with the tables the fixtures lack: the ratchet's dynamics with a flywheel, a rotor without a linkage.
+EXTRA_SCENES = {
+    "ratchet-dynamics": FIXTURE.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\nflywheel_shaft_rpm = 1440\n",
+    "rotor": ('[scene]\ntitle = "Rotor"\n[balancing]\nmasses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0 },'
+              ' { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08 } ]\nplanes = [0.04, 0.22]\n'
+              "correction_radius = 0.05\n[vibration]\nmass = 100.0\nunbalance = 0.02\nstiffness = 1.0e5\n"
+              "damping_ratio = 0.1\nrpm = 600.0\n"),
+}
+SCENES = {path.stem: path.read_text(encoding="utf-8") for path in FIXTURES} | EXTRA_SCENES
+NUMBER_LEAVES = {name: [leaf for leaf in leaves(tomllib.loads(text))
+                        if isinstance(leaf[2], (int, float)) and not isinstance(leaf[2], bool)]
+                 for name, text in SCENES.items()}
+
+
+@st.composite
+def changed_number(draw):
+    """A scene with one of its numbers scaled, negated, zeroed or made huge, tiny or not finite."""
+    name = draw(st.sampled_from(sorted(SCENES)))
+    document = tomllib.loads(SCENES[name])
+    where, keys, value = draw(st.sampled_from(NUMBER_LEAVES[name]))
+    new = draw(st.sampled_from([0, -1, 2, 1e-6, 1e6, 1e9, -1e9, math.nan, math.inf]))
+    changed = new if new in (0, -1) or not math.isfinite(new) or abs(new) >= 1e9 else value * new
+    _set(document, keys, float(changed) if isinstance(value, float) or not math.isfinite(new) else int(changed))
+    return name, where, to_toml(document)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(case=changed_number())
+def test_any_number_of_any_scene_changed_runs_or_is_refused_in_one_line(capsys, case):
+    name, where, text = case
+    status, err, folder = run(capsys, text)
+    # A run the scene's own pieces make (not an --only its tables lack) and that got past the reader.
+    assert status == 0 or not err.startswith("graphplan: error: --only"), err
+    event("ran" if status == 0 else "refused")
+    try:
+        assert "Traceback" not in err, (name, where)
+        errors = [line for line in err.splitlines() if not PROGRESS.match(line)]
+        if status == 2:
+            assert len(errors) == 1 and errors[0].startswith("graphplan: error: "), (name, where, err)
+            assert sorted(p.name for p in folder.iterdir()) == ["scene.toml"], (name, where)
+        else:
+            assert status == 0, (name, where, err)
+            json.loads((folder / "out" / "results.json").read_text(encoding="utf-8"))
+    finally:
+        shutil.rmtree(folder)
