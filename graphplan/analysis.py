@@ -188,7 +188,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             try:
                 forces = force_plan(mechanism, where, directions, loads, scene.drawing.force_scale)
                 if friction:
-                    rubbing = force_plan(mechanism, where, directions, loads, forces.scale,
+                    rubbing = force_plan(mechanism, where, directions, loads, forces.group_scales,
                                          functools.partial(friction_loads, friction, state))
             except ParallelLinesError as error:
                 warnings.append(PositionWarning(index, "singular", f"no force plan: {error}"))

@@ -328,13 +328,14 @@ def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForceP
     for name, found in forces.reactions.items():
         constructed = 0.0 if name in vanished else abs(found.force)
         rows.append(ErrorRow(position, name, analytic[name], constructed, "construction"))
-        rows.append(ErrorRow(position, name, analytic[name],
-                             drafted(constructed / forces.scale, precision) * forces.scale, "drafting"))
+        scale = forces.scale_of(name)
+        rows.append(ErrorRow(position, name, analytic[name], drafted(constructed / scale, precision) * scale,
+                             "drafting"))
     for name, millimetres in (measured or {}).items():
         if name not in forces.reactions:
             raise SceneError(f"measured.{position}.forces.{name}",
                              f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}")
-        rows.append(ErrorRow(position, name, analytic[name], millimetres * forces.scale, "measured"))
+        rows.append(ErrorRow(position, name, analytic[name], millimetres * forces.scale_of(name), "measured"))
     return rows
 
 

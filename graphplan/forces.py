@@ -21,7 +21,7 @@ sheets and the note read what was done.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from .geometry import Line, cross_lines, crossing_angle_deg
@@ -140,7 +140,8 @@ class Found:
 
 @dataclass(frozen=True)
 class GroupForces:
-    """One group cut free: its loads, its moment equations, its polygon, the reactions found."""
+    """One group cut free: its loads, its moment equations, its polygon, the reactions found, and μF (N/mm)
+    its polygon is drawn at."""
 
     label: str
     links: tuple[int, ...]
@@ -148,12 +149,18 @@ class GroupForces:
     moments: tuple[MomentEquation, ...]
     polygon: Polygon
     found: tuple[Found, ...]
+    scale: float = 1.0
 
 
 @dataclass(frozen=True)
 class ForcePlan:
     """The force analysis of one position: groups in the order solved (last group first, driver last).
 
+    ``scale`` is μF (N/mm) at which every polygon of the position fits its
+    field, the contract's ``polygon_scale``; each group's polygon is drawn
+    at its own ``GroupForces.scale``, the same unless the scene leaves μF to
+    the program, which then draws each polygon as large as its field allows,
+    as a student sets each group's force plan at its own scale.
     ``iterations`` is how many times the construction was repeated for the
     friction in the pairs (0 without); ``locked`` says that it never settled.
     ``auxiliary`` holds the moment centres that are no point of the scene
@@ -168,8 +175,19 @@ class ForcePlan:
     locked: bool = False
     auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
-    def mm(self, force: complex) -> complex:
-        return force / self.scale
+    @property
+    def group_scales(self) -> dict[str, float]:
+        """μF of each group's polygon, by the group's label."""
+        return {group.label: group.scale for group in self.groups}
+
+    def scale_of(self, reaction: str) -> float:
+        """μF of the polygon that finds ``reaction`` (the position's μF for one no polygon finds)."""
+        return next((group.scale for group in self.groups if any(found.name == reaction for found in group.found)),
+                    self.scale)
+
+    def at_scale(self, scale: float) -> ForcePlan:
+        """The same analysis with every polygon at μF = ``scale``."""
+        return replace(self, groups=tuple(replace(group, scale=scale) for group in self.groups), scale=scale)
 
 
 @dataclass
@@ -331,10 +349,14 @@ class PolygonBuilder:
 
 
 def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
-               loads: tuple[Load, ...], scale: float | None = None,
+               loads: tuple[Load, ...], scale: float | Mapping[str, float] | None = None,
                friction: Callable[[Mapping[str, complex]], tuple[Load, ...]] | None = None) -> ForcePlan:
     """The force analysis of the instant: every group from the last to the first, then the driver.
 
+    ``scale`` is μF of every polygon (the scene's), or of each group's by
+    its label (another analysis's :attr:`ForcePlan.group_scales`); None
+    draws each polygon at the least standard μF at which it spans
+    :data:`POLYGON_FIELD_MM`.
     ``friction`` gives the pairs' friction loads for given reactions
     (``joint_friction.friction_loads`` bound to the instant): the whole
     construction is then repeated with the friction loads of the last one
@@ -355,10 +377,25 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
                 locked = False
                 break
     if scale is None:
-        extent = max((abs(vector.end - other.end) for forces in plan.groups for vector in forces.polygon.vectors
-                      for other in forces.polygon.vectors), default=0.0)
-        scale = standard_scale(max(extent, 1e-300) / POLYGON_FIELD_MM)
-    return ForcePlan(plan.groups, plan.reactions, plan.balancing, scale, iterations, locked, plan.auxiliary)
+        fitting = {group.label: _fitting_scale(group.polygon) for group in plan.groups}
+        # A polygon of no length (a group with nothing to balance) takes the others' μF.
+        coarsest = max((value for value in fitting.values() if value is not None), default=1.0)
+        scales = {label: coarsest if value is None else value for label, value in fitting.items()}
+    elif isinstance(scale, Mapping):
+        scales = dict(scale)
+    else:
+        scales = dict.fromkeys((group.label for group in plan.groups), scale)
+    groups = tuple(replace(group, scale=scales[group.label]) for group in plan.groups)
+    # μF of the position: the scene's, else the coarsest polygon's, at which every polygon fits its field.
+    position_scale = scale if isinstance(scale, float | int) else max(scales.values(), default=1.0)
+    return ForcePlan(groups, plan.reactions, plan.balancing, float(position_scale), iterations, locked, plan.auxiliary)
+
+
+def _fitting_scale(polygon: Polygon) -> float | None:
+    """The least standard μF at which ``polygon`` spans at most :data:`POLYGON_FIELD_MM`; None for no span."""
+    extent = max((abs(vector.end - other.end) for vector in polygon.vectors for other in polygon.vectors),
+                 default=0.0)
+    return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else None
 
 
 def _construct(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],

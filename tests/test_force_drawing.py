@@ -17,6 +17,7 @@ import pytest
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
+from graphplan.locale import strings
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg
 from graphplan.render.labels import text_box
@@ -82,10 +83,11 @@ def test_every_polygon_closes_on_the_paper(case):
 
 
 def test_every_polygon_vector_is_its_force_over_the_force_scale(case):
-    """Each drawn vector is |F|/μF long and points along F; every vector long enough to draw is drawn."""
+    """Each drawn vector is |F|/μF long at its polygon's μF and points along F; every vector long enough to draw
+    is drawn."""
     _, position, layers = case
-    scale = position.forces.scale
     for group in position.forces.groups:
+        scale = group.scale
         seen = set()
         for prefix, arrows in polygon_layers(layers, group):
             vectors = keyed_vectors(prefix, group)
@@ -103,6 +105,40 @@ def test_every_polygon_vector_is_its_force_over_the_force_scale(case):
         expected = {v.name for v in group.polygon.vectors if abs(v.force) / scale >= ZERO_MM}
         assert seen == expected, group.label
 
+
+
+STANDARD_STEP = 2.0   # the widest step between standard scales (1 → 2, 5 → 10)
+
+
+def test_each_polygon_is_drawn_as_large_as_its_field_at_its_own_standard_scale(case):
+    """Left to the program, each group's polygon takes the least standard μF at which it spans at most
+    150 mm: it spans more than 150/2 mm, so that a small group's polygon is not drawn at the large one's μF.
+    The position's μF (the contract's polygon_scale) is the coarsest, at which every polygon fits."""
+    analysis, position, layers = case
+    assert analysis.scene.drawing.force_scale is None
+    for group in position.forces.groups:
+        vectors = group.polygon.vectors
+        span = max(abs(v.end - w.end) for v in vectors for w in vectors) / group.scale
+        assert 150.0 / STANDARD_STEP < span <= 150.0 + 1e-9, group.label
+        assert group.scale == force_layout.standard_scale(group.scale)
+    assert position.forces.scale == max(group.scale for group in position.forces.groups)
+    # Each polygon's caption gives its μF; the sheet's head gives one only when they share it.
+    captions = [item.text for name, items in layers.items() if name.endswith("-caption") and "polygon" in name
+                for item in items if isinstance(item, Text)]
+    words = strings(analysis.scene.locale)
+    for group in position.forces.groups:
+        assert words["force_scale"].format(value=force_layout.format_scale(group.scale)) in captions
+    head = " ".join(item.text for item in layers["sheet-title"] if isinstance(item, Text))
+    shared = len(set(position.forces.group_scales.values())) == 1
+    assert (words["force_scale"].format(value=force_layout.format_scale(position.forces.scale)) in head) == shared
+
+
+def test_a_scene_s_force_scale_draws_every_polygon_at_it():
+    scene = graphplan.load(f"{FIXTURES}/stephenson_six_bar.toml")
+    analysis = analyse(dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, force_scale=25.0)))
+    for position in analysis.plans:
+        assert position.forces.scale == 25.0
+        assert set(position.forces.group_scales.values()) == {25.0}
 
 def test_a_vector_too_short_to_draw_is_left_out():
     """The scotch yoke's guide reaction R14 is nought at position 4 (its line through the joint): no arrow."""

@@ -66,12 +66,13 @@ def polygon_vector(plan, name):
 def test_a_drafted_reaction_is_its_vector_on_the_polygon_rounded_to_the_precision():
     analysis = analyse(graphplan.load(RATCHET))
     plan = analysis.plans[0]
-    scale, precision = plan.forces.scale, analysis.scene.drawing.drafting_precision
+    precision = analysis.scene.drawing.drafting_precision
     rows = force_rows(plan, "drafting")
     changed = 0
     for name, found in plan.forces.reactions.items():
-        # The reaction on the polygon of the group that finds it: one vector, its τ and n components
-        # joined, or the inner vector of the reaction back (R43 for R34).
+        # The reaction on the polygon of the group that finds it, at that polygon's μF: one vector, its τ and
+        # n components joined, or the inner vector of the reaction back (R43 for R34).
+        scale = next(group.scale for group in plan.forces.groups if any(f.name == name for f in group.found))
         millimetres = abs(polygon_vector(plan, name)) / scale
         assert rows[name].plan == pytest.approx(round(millimetres / precision) * precision * scale, rel=1e-12)
         changed += not math.isclose(rows[name].plan, abs(found.force), rel_tol=1e-9)

@@ -216,8 +216,10 @@ def arrange(sheet: ForceSheet) -> Arrangement:
         top -= height + CAPTION_GAP_MM + lines * CAPTION_LINE * size + GAP_MM
     left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
     text = sheet.text
+    # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.
+    shared = set(sheet.forces.group_scales.values()) == {sheet.forces.scale}
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
-                        text["force_scale"].format(value=format_scale(sheet.forces.scale)),
+                        *([text["force_scale"].format(value=format_scale(sheet.forces.scale))] if shared else []),
                         sheet.lever_scale_line))
     top_line = upper + 8.0
     layers.append(Layer("sheet-title", (
@@ -298,7 +300,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
         # Under the load it balances, so that a sheet set part by part keeps it.
         caption += _friction_summary(sheet)
     caption += _wrapped([f"{found.name} = {_number(abs(found.force))} {text['newton']}" for found in group.found
-                         if abs(found.force) / sheet.forces.scale >= ZERO_MM])
+                         if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
     return Panel(f"body-{key}", [
         Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
@@ -628,7 +630,7 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
             return ""
         found = sheet.forces.reactions.get(unknown[:-2])
         shift = ""
-        if found is not None and found.offset and abs(found.force) / sheet.forces.scale >= ZERO_MM:
+        if found is not None and found.offset and abs(found.force) / sheet.forces.scale_of(found.name) >= ZERO_MM:
             shift = f",  x = {_number(1000.0 * found.offset)} {text['millimetre']}"
         return f"{about} {unknown} {terms} = 0{shift}"
     if unknown == "Mb":
@@ -666,7 +668,7 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Panel:
     """The group's polygon at μF; a record closed twice gives two polygons side by side."""
     text = sheet.text
     key = group_id(group.label)
-    scale = sheet.forces.scale
+    scale = group.scale
     layers: list[Layer] = []
     cursor = 0.0
     chains = _chains(group.polygon.vectors, scale)

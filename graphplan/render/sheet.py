@@ -565,7 +565,7 @@ def _polygon_pieces(analysis: Analysis, scale: float) -> list[Panel]:
             if forces is None or forces.locked:
                 continue
             drawn = force_sheet(analysis, position, with_friction)
-            drawn = replace(drawn, forces=replace(drawn.forces, scale=scale),
+            drawn = replace(drawn, forces=drawn.forces.at_scale(scale),
                             caption_size=force_layout.SMALL_CAPTION_SIZE)
             name = f"{'forces-friction' if with_friction else 'forces'}-{position.number}"
             panel = split(force_layout.arrange(drawn), name, "", _group_of_field)

@@ -273,7 +273,7 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
             lines.append(f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {equation.unknown} = "
                          f"{number(equation.value)}" + (f"; {terms}" if terms else ""))
     lines += ["", f"### {text['forces_reactions']}", "",
-              text["forces_polygon_scale"].format(value=number(forces.scale)), "", *reaction_lines(analysis, plan),
+              _polygon_scales(forces, text), "", *reaction_lines(analysis, plan),
               "", f"### {text['forces_balancing'].format(name=name, unit=unit)}", "", *balancing_lines(analysis, plan)]
     if plan.with_friction is not None:
         lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan)]
@@ -281,6 +281,15 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
         lines += ["", *lever] if lever else []
     return lines + [""]
 
+
+
+def _polygon_scales(forces, text: Mapping[str, str]) -> str:
+    """The line of μF: one for all the polygons, or each group's where the program drew each at its own."""
+    scales = forces.group_scales
+    if set(scales.values()) == {forces.scale}:
+        return text["forces_polygon_scale"].format(value=number(forces.scale))
+    return text["forces_polygon_scales"].format(
+        values="; ".join(f"{label}: {number(scale)}" for label, scale in scales.items()))
 
 __all__ = [
     "METHODS",

@@ -821,7 +821,7 @@ class _Note:
         if lines:
             self.para(self.t("note_moment_equations"), *lines)
         polygon = group.polygon
-        scale = plan.forces.scale
+        scale = group.scale
         rows = []
         for vector in polygon.vectors:
             force = vector.force

@@ -169,6 +169,7 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
         f"lever_{key}": number(lever.balancing),
         "lever_difference_percent": number(lever.difference_percent(forces.balancing)),
         "polygon_scale": number(forces.scale),
+        "polygon_scales": {label: number(scale) for label, scale in forces.group_scales.items()},
     }
     offsets = {name: number(found.offset) for name, found in forces.reactions.items() if found.offset is not None}
     if offsets:
