@@ -180,6 +180,11 @@ class ForcePlan:
         """μF of each group's polygon, by the group's label."""
         return {group.label: group.scale for group in self.groups}
 
+    @property
+    def one_scale(self) -> bool:
+        """Whether every polygon is drawn at the position's μF."""
+        return all(group.scale == self.scale for group in self.groups)
+
     def scale_of(self, reaction: str) -> float:
         """μF of the polygon that finds ``reaction`` (the position's μF for one no polygon finds)."""
         return next((group.scale for group in self.groups if any(found.name == reaction for found in group.found)),

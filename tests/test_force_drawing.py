@@ -274,3 +274,15 @@ def test_the_command_line_writes_a_force_sheet_beside_each_plan_sheet(tmp_path, 
         assert sheet.exists() == (position.forces is not None)
         if position.forces is not None:
             assert "polygon-II-3-4-vectors" in sheet.read_text(encoding="utf-8")
+
+
+def test_the_force_tables_give_each_polygon_s_scale_where_they_differ():
+    from graphplan.report.forces import markdown, number
+
+    analysis = analysis_of("stephenson_six_bar")
+    text = markdown(analysis)
+    for position in analysis.plans:
+        scales = position.forces.group_scales
+        assert len(set(scales.values())) > 1
+        listed = "; ".join(f"{label}: {number(scale)}" for label, scale in scales.items())
+        assert f"Force polygons each at its own μF, N/mm: {listed}." in text

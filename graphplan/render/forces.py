@@ -217,9 +217,9 @@ def arrange(sheet: ForceSheet) -> Arrangement:
     left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
     text = sheet.text
     # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.
-    shared = set(sheet.forces.group_scales.values()) == {sheet.forces.scale}
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
-                        *([text["force_scale"].format(value=format_scale(sheet.forces.scale))] if shared else []),
+                        *([text["force_scale"].format(value=format_scale(sheet.forces.scale))]
+                          if sheet.forces.one_scale else []),
                         sheet.lever_scale_line))
     top_line = upper + 8.0
     layers.append(Layer("sheet-title", (

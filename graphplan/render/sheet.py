@@ -16,10 +16,10 @@ far left as can be), never nearer than :data:`GAP_MM` to another or than
 :data:`PADDING_MM` to the frame and the title block; the drawings of a
 sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
-format.  A plan sheet
-of one position stands as a row (mechanism, velocity plan, acceleration
-plan) wherever that fits, else with its mechanism above its plans or beside
-them, so that it may join a sheet with room of another shape.  A panel too
+format.  A plan sheet of one position stands as a row (mechanism, velocity
+plan, acceleration plan) wherever that fits, else with its mechanism above
+its plans or beside them, so that it may join a sheet with room of another
+shape.  A panel too
 big for an empty sheet every way it may stand is placed part by part (a
 plan sheet of one position as its mechanism, velocity plan and
 acceleration plan; a force sheet as its groups, each beside its polygon,

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 from .. import wording
 from ..analysis import Analysis, PlanPosition
+from ..forces import ForcePlan
 from ..loads import motion_state
 from ..locale import strings
 from ..statics import balancing_by_power, efficiency
@@ -282,14 +283,13 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     return lines + [""]
 
 
-
-def _polygon_scales(forces, text: Mapping[str, str]) -> str:
+def _polygon_scales(forces: ForcePlan, text: Mapping[str, str]) -> str:
     """The line of μF: one for all the polygons, or each group's where the program drew each at its own."""
-    scales = forces.group_scales
-    if set(scales.values()) == {forces.scale}:
+    if forces.one_scale:
         return text["forces_polygon_scale"].format(value=number(forces.scale))
     return text["forces_polygon_scales"].format(
-        values="; ".join(f"{label}: {number(scale)}" for label, scale in scales.items()))
+        values="; ".join(f"{label}: {number(scale)}" for label, scale in forces.group_scales.items()))
+
 
 __all__ = [
     "METHODS",
