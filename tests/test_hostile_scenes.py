@@ -338,6 +338,15 @@ def test_a_pole_distance_no_sheet_holds_is_refused_not_drawn(capsys):
     assert "drawing.acceleration_pole = 1e+09 mm" in error
 
 
+def test_a_length_scale_that_would_draw_the_mechanism_kilometres_large_is_refused_before_drawing(capsys):
+    """At μl = 1e-9 m/mm the hydraulic lever's guide would be 2e8 mm long, and its hatching, a stroke every
+    2 mm, filled all the memory there was (found by the property test below); refused with the μl to give."""
+    document = tomllib.loads((FIXTURE.parent / "slider_driven.toml").read_text(encoding="utf-8"))
+    document["drawing"]["length_scale"] = 1e-9
+    error = assert_refused(capsys, to_toml(document), "drawing.length_scale")
+    assert "more than any paper" in error and "give 0.002" in error
+
+
 # --- any number of any fixture, changed: a run or one clear line, never a traceback -------------------
 
 FIXTURES = sorted(FIXTURE.parent.glob("*.toml"))

@@ -23,6 +23,9 @@ from .title_block import form_of
 
 # The plan of positions is scaled to fit this field when the scene gives no μl.
 POSITIONS_FIELD_MM = 200.0
+# No paper is longer (mm; a roll plotter's): a μl that draws the mechanism larger is a slip, refused before
+# anything is drawn, since the hatching along a guide alone would take all the memory there is.
+LARGEST_PAPER_MM = 5000.0
 # Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
 _LARGER_SCALES_TRIED = 40
 
@@ -36,10 +39,15 @@ def length_scale(analysis: Analysis) -> float:
     drawing several drawings of one analysis.
     """
     given = analysis.scene.drawing.length_scale
-    if given is not None:
-        return given
     tracks = np.concatenate([np.atleast_1d(p.r) for p in analysis.paths.points.values()])
     extent = max(float(np.ptp(tracks.real)), float(np.ptp(tracks.imag)))
+    if given is not None:
+        if extent / given > LARGEST_PAPER_MM:
+            raise SceneError("drawing.length_scale", f"draws the paths of the points {extent / given:.3g} mm across, "
+                             f"more than any paper ({LARGEST_PAPER_MM:g} mm): give "
+                             f"{format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} (a {POSITIONS_FIELD_MM:g} mm "
+                             f"plan of positions), or leave it out for the program to choose", given)
+        return given
     first = fit_scale(extent, POSITIONS_FIELD_MM)
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
