@@ -241,6 +241,22 @@ def test_a_fragment_typesets_in_a_document_of_the_user_s(case, tmp_path):
     assert analysis.scene.title.split()[0] in pdf_text(pdf)
 
 
+@pytest.mark.parametrize("locale", ["en", "ru"])
+def test_a_note_with_a_cjk_name_in_it_is_set_in_the_cjk_font_whatever_its_language(locale, tmp_path):
+    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
+    analysis = analyse(dataclasses.replace(scene, locale=locale, title="棘轮机构: crank-rocker"))
+    latex = latex_document(note_markdown(analysis), analysis.scene.title, locale)
+    assert "\\setmainfont{Noto Sans CJK SC}" in latex and "XeTeXlinebreaklocale" in latex
+    # Without the ideographs the same note keeps the drawings' Latin and Cyrillic font.
+    plain_analysis = analyse(dataclasses.replace(scene, locale=locale))
+    assert "\\setmainfont{DejaVu Sans}" in latex_document(note_markdown(plain_analysis), scene.title, locale)
+    if XELATEX is None:
+        pytest.skip("XeLaTeX is not installed (Debian: texlive-xetex)")
+    log, pdf = typeset(tmp_path, "note", latex)
+    assert "Missing character" not in log
+    assert "棘轮机构" in pdf_text(pdf)
+
+
 @needs_xelatex
 def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns(case, tmp_path):
     analysis, note, latex = case

@@ -27,12 +27,11 @@ from __future__ import annotations
 import io
 import os
 import re
-import unicodedata
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import IO
 
-from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds
+from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide
 
 # The DXF layers and the words of a graphplan layer's name that send it there.
 LINKS, CONSTRUCTION, VECTORS, TEXT, CURVES, AXES, SHEET = (
@@ -199,7 +198,7 @@ class _Writer:
     def _text(self, layer: str, item: Text) -> None:
         from ezdxf.enums import TextEntityAlignment
 
-        script = "cjk" if _east_asian(item.text) else "latin"
+        script = "cjk" if has_wide(item.text) else "latin"
         style = TEXT_STYLES[(script, "bold" if item.weight == "bold" else "normal")][0]
         attributes = {"layer": layer, "style": style, **_colour_attributes(item.colour)}
         align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
@@ -247,7 +246,3 @@ def _lineweight(width: float) -> int:
 
     return min(VALID_DXF_LINEWEIGHTS, key=lambda weight: abs(weight - 100.0 * width))
 
-
-def _east_asian(text: str) -> bool:
-    """Whether ``text`` has a character of East Asian width: the rule the SVG backend picks fonts by."""
-    return any(unicodedata.east_asian_width(c) in ("W", "F") for c in text)

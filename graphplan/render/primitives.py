@@ -202,9 +202,19 @@ _WIDE = frozenset("mwMWжшщюЖШЩЮЫ=+ω")
 _BOLD_WIDENING = 1.1
 
 
+def is_wide(character: str) -> bool:
+    """Whether ``character`` is of East Asian width (an ideograph, kana, a full-width form), set in a CJK font."""
+    return unicodedata.east_asian_width(character) in ("W", "F")
+
+
+def has_wide(text: str) -> bool:
+    """Whether ``text`` has a character of East Asian width: the rule every backend picks its fonts by."""
+    return any(map(is_wide, text))
+
+
 def character_width(character: str) -> float:
     """The advance width of ``character`` in em: a CJK ideograph fills its em square."""
-    if unicodedata.east_asian_width(character) in ("W", "F"):
+    if is_wide(character):
         return 1.0
     if character in _NARROW:
         return 0.36

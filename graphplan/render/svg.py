@@ -8,7 +8,6 @@ the same bytes every time.
 
 from __future__ import annotations
 
-import unicodedata
 from collections.abc import Sequence
 
 import svgwrite
@@ -22,6 +21,7 @@ from .primitives import (
     Stroke,
     Text,
     bounds,
+    has_wide,
 )
 
 # Latin, Greek and Cyrillic from DejaVu Sans; a viewer that falls back glyph by glyph takes
@@ -34,7 +34,7 @@ CJK_FONT_FAMILY = "Noto Sans CJK SC, Noto Sans CJK JP, DejaVu Sans, Noto Sans, s
 
 def font_family(text: str) -> str:
     """The font-family list for ``text``: CJK first when it has a character of East Asian width."""
-    return CJK_FONT_FAMILY if any(unicodedata.east_asian_width(c) in ("W", "F") for c in text) else FONT_FAMILY
+    return CJK_FONT_FAMILY if has_wide(text) else FONT_FAMILY
 
 
 def _n(value: float) -> str:

@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import math
 import re
-import unicodedata
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cache
@@ -35,7 +34,7 @@ from importlib import resources
 
 from ..locale import strings
 from ..scales import format_scale
-from .primitives import MAIN, Polyline, Primitive, Stroke, Text, text_width
+from .primitives import MAIN, Polyline, Primitive, Stroke, Text, is_wide, text_width
 
 # The strings of the three forms and of what graphplan writes into them are the locale files' ``tb_`` keys;
 # every locale has every key, so that any form can be drawn in any language.
@@ -335,9 +334,6 @@ def _name(block: _Block, fields: TitleBlockFields, box: tuple[float, float, floa
 _SPACES = re.compile(r"\s+")
 
 
-def _is_wide(character: str) -> bool:
-    return unicodedata.east_asian_width(character) in ("W", "F")
-
 
 def _tokens(value: str) -> list[tuple[str, bool]]:
     """Words and ideographs of ``value``, each with whether a space stands before it."""
@@ -349,7 +345,7 @@ def _tokens(value: str) -> list[tuple[str, bool]]:
         first = True
         for character in word:
             # A line may break before or after any ideograph, as Chinese is set.
-            if _is_wide(character):
+            if is_wide(character):
                 if piece:
                     tokens.append((piece, k > 0 and first))
                     first = False

@@ -15,9 +15,10 @@ tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
   rest left Unicode (Greek, Cyrillic, CJK, −, ⊥, ²).
 
 The text being Unicode, the document is for XeLaTeX with fontspec, set in
-the fonts of the drawings: DejaVu Sans, or Noto Sans CJK SC for Chinese with
-XeTeX's line breaks between CJK characters, and hyphenated by babel in
-Russian.  It uses only packages of TeX Live's base and recommended
+the fonts of the drawings: DejaVu Sans, or Noto Sans CJK SC with XeTeX's
+line breaks between CJK characters for Chinese and for any text with a CJK
+character in it (a scene's title or names, in a note of another language),
+and hyphenated by babel in Russian.  It uses only packages of TeX Live's base and recommended
 collections (Debian: texlive-xetex, texlive-latex-recommended); Russian
 words break at their syllables where TeX Live's Cyrillic patterns are
 installed too (texlive-lang-cyrillic).  A fragment has no preamble: a
@@ -31,7 +32,7 @@ from dataclasses import dataclass
 from markdown_it.tree import SyntaxTreeNode
 from scipy.optimize import brentq
 
-from ..render.primitives import FONT_SIZE_PER_CAP, character_width
+from ..render.primitives import FONT_SIZE_PER_CAP, character_width, has_wide
 from ..render.wrapping import fitted
 from .markdown import plain, table_parts, tree
 from .symbols import Symbol, pieces
@@ -55,8 +56,10 @@ _HEADER_LINE_EM = 7.0
 # The drawings' line breaker measures in mm at a cap height: at this one a mm is an em.
 _EM_CAP = 1.0 / FONT_SIZE_PER_CAP
 
-_FONTS = {"zh": "Noto Sans CJK SC"}
-_DEFAULT_FONT = "DejaVu Sans"
+# XeTeX takes every glyph from the one main font, and DejaVu Sans has no ideographs: a text with any
+# takes Noto Sans CJK SC, which has the Latin, Greek and Cyrillic letters it mixes in.
+_FONT = "DejaVu Sans"
+_CJK_FONT = "Noto Sans CJK SC"
 
 _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \usepackage[top=20mm,bottom=20mm,left=30mm,right=10mm]{geometry}
@@ -80,17 +83,21 @@ _CJK_BREAKS = "\\XeTeXlinebreaklocale \"zh\"\n\\XeTeXlinebreakskip = 0pt plus 1p
 # patterns come with TeX Live's Cyrillic collection (Debian: texlive-lang-cyrillic), and a TeX without them
 # sets the note as before, unhyphenated.
 _RUSSIAN = "\\usepackage{babel}\n\\babelprovide[import,main]{russian}\n"
-_LOCALE_PREAMBLE = {"zh": _CJK_BREAKS, "ru": _RUSSIAN}
 
 _FRAGMENT_HEAD = ("% Tables of graphplan for \\input into a document typeset by XeLaTeX (the text is Unicode),\n"
                   "% with \\usepackage{array,longtable,booktabs,caption} and a main font with the text's\n"
                   "% scripts (fontspec: \\setmainfont{FONT}).\n")
 
 
+def _has_cjk(markdown_text: str, locale: str) -> bool:
+    return locale == "zh" or has_wide(markdown_text)
+
+
 def latex_document(markdown_text: str, title: str, locale: str) -> str:
     """A complete XeLaTeX document of ``markdown_text`` (the explanatory note); its first line names ``title``."""
-    font = _FONTS.get(locale, _DEFAULT_FONT)
-    preamble = _PREAMBLE % {"font": font, "locale": _LOCALE_PREAMBLE.get(locale, "")}
+    cjk = _has_cjk(markdown_text, locale)
+    language = (_RUSSIAN if locale == "ru" else "") + (_CJK_BREAKS if cjk else "")
+    preamble = _PREAMBLE % {"font": _CJK_FONT if cjk else _FONT, "locale": language}
     return (f"% {' '.join(title.split())}: typeset with xelatex, twice (longtable settles its columns' widths on the second)\n"
             f"{preamble}"
             f"\\begin{{document}}\n{_body(markdown_text, titled=True)}\\end{{document}}\n")
@@ -98,7 +105,8 @@ def latex_document(markdown_text: str, title: str, locale: str) -> str:
 
 def latex_fragment(markdown_text: str, locale: str) -> str:
     """The body of ``markdown_text`` (the error tables, the force analysis) for ``\\input``, with no preamble."""
-    return _FRAGMENT_HEAD.replace("FONT", _FONTS.get(locale, _DEFAULT_FONT)) + _body(markdown_text, titled=False)
+    font = _CJK_FONT if _has_cjk(markdown_text, locale) else _FONT
+    return _FRAGMENT_HEAD.replace("FONT", font) + _body(markdown_text, titled=False)
 
 
 def _body(markdown_text: str, titled: bool) -> str:
