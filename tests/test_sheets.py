@@ -402,6 +402,18 @@ def test_a_drawing_fills_a_gap_on_an_earlier_sheet():
     assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-5"]]
 
 
+def test_a_drawing_never_goes_back_before_an_earlier_drawing_of_its_kind():
+    """Two 600 × 400 drawings on two A1 sheets, each with 185 mm beside it: the second position's small plans
+    would fit beside the plan of positions but go beside the first position's, after them; the diagrams still
+    fill the gap the plans left."""
+    def box(name, width, height):
+        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
+
+    sheets = kinematics_sheet([box("positions", 600, 400), box("plan-5", 600, 400), box("plan-11", 180, 180),
+                               box("diagrams", 180, 180)], "A1", "ru")
+    assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-11", "plan-5"]]
+
+
 def test_a4_stands_upright_when_that_fits_better():
     tall = [Layer("tall", (Polyline(((0, 0), (150, 0), (150, 190), (0, 190)), closed=True),))]
     wide = [Layer("wide", (Polyline(((0, 0), (230, 0), (230, 100), (0, 100)), closed=True),))]

@@ -16,7 +16,8 @@ far left as can be), never nearer than :data:`GAP_MM` to another or than
 :data:`PADDING_MM` to the frame and the title block; the drawings of a
 sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
-format.  A plan sheet of one position stands as a row (mechanism, velocity
+format, but never on a sheet before one with a drawing of its kind (the
+plans of position 11 never come before those of position 5).  A plan sheet of one position stands as a row (mechanism, velocity
 plan, acceleration plan) wherever that fits, else with its mechanism above
 its plans or beside them, so that it may join a sheet with room of another
 shape.  A panel too
@@ -749,24 +750,38 @@ def _upright(page: _Page) -> bool:
 
 
 def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[bool]) -> list[_Page]:
-    """The panels packed in order, each on the first sheet with room for it; a new sheet is turned the first
-    of ``turns`` (True: upright) that holds the panel that opens it."""
+    """The panels packed in order, each on the first sheet with room for it that keeps the drawings of its
+    kind in order; a new sheet is turned the first of ``turns`` (True: upright) that holds the panel that
+    opens it."""
     pages: list[_Page] = []
+    # A small drawing fills a gap left sheets back, but the plans of position 11 never come before those
+    # of position 5: a drawing goes no further back than the last sheet of a drawing of its kind.
+    last_of_kind: dict[str, int] = {}
     for panel in panels:
-        # The first sheet with room, not only the last: a small drawing fills a gap left sheets back.
-        if any(not page.label and page.place(panel) for page in pages):
+        kind = _kind(panel)
+        earliest = last_of_kind.get(kind, 0)
+        room = next((k for k in range(earliest, len(pages)) if not pages[k].label and pages[k].place(panel)), None)
+        if room is not None:
+            last_of_kind[kind] = room
             continue
         page = _empty_page(sheet, form, _turn_holding(panel, sheet, form, turns))
         if page.place(panel):
             pages.append(page)
-            continue
-        if not panel.parts:
+        elif not panel.parts:
             raise _too_big(panel, sheet, form, turns)
-        # Parts go on sheets of their own, whose title block says whose parts they are.
-        pages += _parts_on(panel, sheet, form, turns)
+        else:
+            # Parts go on sheets of their own, whose title block says whose parts they are.
+            pages += _parts_on(panel, sheet, form, turns)
+        last_of_kind[kind] = len(pages) - 1
     for page in pages:
         _centre(page)
     return pages
+
+
+def _kind(panel: Panel) -> str:
+    """What ``panel`` draws, whichever position it is of: ``plan`` of ``plan-11``, ``forces`` of ``forces-5``."""
+    kind, _, number = panel.name.rpartition("-")
+    return kind if kind and number.isdigit() else panel.name
 
 
 def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:
