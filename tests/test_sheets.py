@@ -26,6 +26,7 @@ from graphplan.kinematic_diagrams import FIELD_MM, kinematic_diagrams, of_analys
 from graphplan.locale import strings
 from graphplan.render import diagrams as diagrams_layout
 from graphplan.render import drawings
+from graphplan.render import forces as force_layout
 from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import length_scale, mechanism_size, plan_sheet, positions_size
 from graphplan.render.formats import holds
@@ -444,6 +445,37 @@ def test_a_panel_too_big_whole_goes_part_by_part_on_sheets_of_its_own(analyses):
                 drawing = bounds_of(x for other in sheet.layers if other.name.startswith(owner + "-")
                                     and other is not item for x in other.items)
                 assert 0 < drawing[1] - item.items[0].at[1] <= plan_layout.CAPTION_GAP_MM + 1e-9
+
+
+def test_a_force_sheet_too_tall_in_one_column_stands_whole_in_two_under_its_heading(analyses):
+    """On A1 the shaper's force sheet of position 3 (three groups and the lever) is taller than the sheet in
+    one column: it stands whole in two, its rows in their order (down the first column, then the second),
+    under its title and scales, where it used to go part by part without them."""
+    analysis = analyses["shaper_six_bar"]
+    drawn = drawings.force_sheet(analysis, analysis.plans[0])
+    one, two = force_layout.arrangements(drawn, (1, 2))
+    form = form_of(analysis.scene.locale)
+    assert not holds("A1", form, *size_of(one.layers)) and holds("A1", form, *size_of(two.layers))
+    # The same drawings, each field the same size, only moved.
+    assert one.fields.keys() == two.fields.keys()
+    assert all(math.isclose(a[2] - a[0], b[2] - b[0]) and math.isclose(a[3] - a[1], b[3] - b[1])
+               for a, b in zip(one.fields.values(), two.fields.values()))
+    order = [name for name in one.fields if name.startswith(("body-", "lever"))]
+    lefts = [two.fields[name][0] for name in order]
+    columns = [sorted({left for left in lefts}).index(left) for left in lefts]
+    assert columns == sorted(columns) and set(columns) == {0, 1}
+    for column in (0, 1):
+        tops = [two.fields[name][3] for name, c in zip(order, columns) if c == column]
+        assert tops == sorted(tops, reverse=True)
+    sheet = next(sheet for sheet in course_sheets(analysis, "A1")
+                 if f"forces-{analysis.plans[0].number}" in sheet.panels)
+    written = [text.text for text in texts(sheet.layers)]
+    assert f"{analysis.scene.title}: force analysis, position {analysis.plans[0].number}" in written
+
+
+def size_of(layers):
+    x0, y0, x1, y1 = bounds(layers)
+    return x1 - x0, y1 - y0
 
 
 def arrangement_on(sheet, name):

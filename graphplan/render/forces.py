@@ -13,7 +13,9 @@ dashed and each reaction found drawn whole.  A polygon that the record
 closes twice (the lever and the block of an RPR group) is drawn as two
 polygons side by side.  The last row is Zhukovsky's lever: the velocity
 plan turned 90° clockwise, the loads at the images of their points with
-their arms from the pole, the balancing force at the driver's image.
+their arms from the pole, the balancing force at the driver's image.  A
+sheet too low for the rows in one column takes them in two
+(:func:`arrangements`).
 
 The sheet of the force analysis with friction is the same sheet of the
 plan with friction, with the textbook's construction at every journal with
@@ -185,35 +187,35 @@ def layout(sheet: ForceSheet) -> list[Layer]:
 
 def arrange(sheet: ForceSheet) -> Arrangement:
     """One row per group (the group cut free, its polygon), then the lever; captions under, title above."""
+    return arrangements(sheet, (1,))[0]
+
+
+def arrangements(sheet: ForceSheet, columns: Sequence[int]) -> list[Arrangement]:
+    """The sheet of :func:`arrange` with its rows down each number of ``columns`` in turn (1 or 2), in their
+    order, split where the tallest column is least tall: the same drawings, made once, for a sheet too low
+    for them in one column."""
     rows: list[list[Panel]] = []
     for group in sheet.forces.groups:
         rows.append([_body(sheet, group), _polygons(sheet, group)])
     if sheet.lever is not None:
         rows.append([_lever(sheet, sheet.lever)])
+    blocks = [_row(row, sheet.caption_size) for row in rows]
+    return [_arranged(sheet, blocks, count) for count in columns]
+
+
+def _arranged(sheet: ForceSheet, blocks: Sequence[_Row], columns: int) -> Arrangement:
     layers: list[Layer] = []
     fields: dict[str, tuple[float, float, float, float]] = {}
+    left = 0.0
+    for column in _columns([block.height for block in blocks], columns):
+        top = 0.0
+        for block in (blocks[k] for k in column):
+            layers.extend(moved_layers(block.layers, left, top))
+            fields.update({name: (x0 + left, y0 + top, x1 + left, y1 + top)
+                           for name, (x0, y0, x1, y1) in block.fields.items()})
+            top -= block.height + GAP_MM
+        left += max(blocks[k].width for k in column) + GAP_MM
     size = sheet.caption_size
-    top = 0.0
-    for row in rows:
-        extents = [bounds_of(item for layer in panel.layers for item in layer.items) for panel in row]
-        height = max(y1 - y0 for _, y0, _, y1 in extents)
-        captions = [_fitted_caption(panel.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
-                    for panel, (x0, _, x1, _) in zip(row, extents, strict=True)]
-        cursor = 0.0
-        for panel, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
-            width = max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
-            field = (cursor, top - height, cursor + width, top)
-            fields[panel.name] = field
-            layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0,
-                                       top - height / 2 - (y0 + y1) / 2))
-            middle = cursor + width / 2
-            layers.append(Layer(f"{panel.name}-caption", tuple(
-                Text((middle, top - height - CAPTION_GAP_MM - k * CAPTION_LINE * size), line, size, "middle",
-                     weight=weight)
-                for k, (line, weight) in enumerate(caption))))
-            cursor += width + GAP_MM
-        lines = max(len(caption) for caption in captions)
-        top -= height + CAPTION_GAP_MM + lines * CAPTION_LINE * size + GAP_MM
     left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
     text = sheet.text
     # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.
@@ -226,6 +228,49 @@ def arrange(sheet: ForceSheet) -> Arrangement:
         Text((left, top_line + 1.6 * TITLE_SIZE), sheet.title, TITLE_SIZE, "start", weight="bold"),
         Text((left, top_line), scales, size, "start"))))
     return Arrangement(layers, fields)
+
+
+@dataclass(frozen=True)
+class _Row:
+    """A row of the force sheet laid out from its top left corner (0, 0), its captions under its drawings."""
+
+    layers: list[Layer]
+    fields: dict[str, tuple[float, float, float, float]]
+    width: float
+    height: float
+
+
+def _row(row: Sequence[Panel], size: float) -> _Row:
+    """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
+    extents = [bounds_of(item for layer in panel.layers for item in layer.items) for panel in row]
+    height = max(y1 - y0 for _, y0, _, y1 in extents)
+    captions = [_fitted_caption(panel.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
+                for panel, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    layers: list[Layer] = []
+    fields: dict[str, tuple[float, float, float, float]] = {}
+    cursor = 0.0
+    for panel, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
+        width = max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
+        fields[panel.name] = (cursor, -height, cursor + width, 0.0)
+        layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0, -height / 2 - (y0 + y1) / 2))
+        middle = cursor + width / 2
+        layers.append(Layer(f"{panel.name}-caption", tuple(
+            Text((middle, -height - CAPTION_GAP_MM - k * CAPTION_LINE * size), line, size, "middle", weight=weight)
+            for k, (line, weight) in enumerate(caption))))
+        cursor += width + GAP_MM
+    lines = max(len(caption) for caption in captions)
+    return _Row(layers, fields, cursor - GAP_MM, height + CAPTION_GAP_MM + lines * CAPTION_LINE * size)
+
+
+def _columns(heights: Sequence[float], count: int) -> list[range]:
+    """The rows' indices in ``count`` columns (fewer where there are fewer rows), in order, split where the
+    tallest column is least tall."""
+    if count <= 1 or len(heights) <= 1:
+        return [range(len(heights))]
+    if count > 2:
+        raise ValueError(f"a force sheet is laid out in one or two columns, not {count}")
+    split = min(range(1, len(heights)), key=lambda k: max(sum(heights[:k]), sum(heights[k:])))
+    return [range(split), range(split, len(heights))]
 
 
 def _friction_summary(sheet: ForceSheet) -> list[str]:

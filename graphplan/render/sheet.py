@@ -20,7 +20,7 @@ format, but never on a sheet before one with a drawing of its kind (the
 plans of position 11 never come before those of position 5).  A plan sheet of one position stands as a row (mechanism, velocity
 plan, acceleration plan) wherever that fits, else with its mechanism above
 its plans or beside them, so that it may join a sheet with room of another
-shape.  A panel too
+shape; a force sheet stands in one column of rows, else in two.  A panel too
 big for an empty sheet every way it may stand is placed part by part (a
 plan sheet of one position as its mechanism, velocity plan and
 acceleration plan; a force sheet as its groups, each beside its polygon,
@@ -275,10 +275,12 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
         ("forces", "sheet_forces_position")
     before: dict[str, tuple[float, float]] = {}
     for _ in range(_LARGER_SCALES_TRIED):
-        panel = split(force_layout.arrange(drawn), f"{name}-{position.number}",
-                      words[label].format(number=position.number), _group_of_field)
+        one, two = (split(arrangement, f"{name}-{position.number}", words[label].format(number=position.number),
+                          _group_of_field) for arrangement in force_layout.arrangements(drawn, (1, 2)))
         if sheet == "none":
-            return panel
+            return one
+        # Its rows in two columns where a sheet is too low for them in one.
+        panel = replace(one, alternatives=(two,) if two.extent != one.extent else ())
         unheld = {piece.name: (round(_width(piece)), round(_height(piece))) for piece in _pieces(panel.parts)
                   if not holds(sheet, form, _width(piece), _height(piece))}
         bodies = any("-body-" in piece for piece in unheld)
@@ -305,8 +307,9 @@ def _pieces(parts: Sequence[Panel]) -> list[Panel]:
 
 
 def _drawn_at(panel: Panel, scale: float) -> Panel:
-    """``panel`` and its parts marked as drawn at μl = ``scale``."""
-    return replace(panel, parts=tuple(_drawn_at(part, scale) for part in panel.parts), length_scale=scale)
+    """``panel``, its parts and its other arrangements marked as drawn at μl = ``scale``."""
+    return replace(panel, parts=tuple(_drawn_at(part, scale) for part in panel.parts), length_scale=scale,
+                   alternatives=tuple(_drawn_at(way, scale) for way in panel.alternatives))
 
 
 def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
