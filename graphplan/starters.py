@@ -5,7 +5,7 @@ from __future__ import annotations
 from importlib import resources
 
 # The kinds a newcomer starts from, each a scene under ``templates/``.
-KINDS = ("crank-rocker", "slider-crank", "slotted-lever", "triad")
+KINDS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad")
 
 
 def starter(kind: str) -> str:

@@ -137,6 +137,23 @@ def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
     assert any(name.startswith("forces_") for name in names(out))
 
 
+def test_the_shaper_starter_runs_the_whole_course(tmp_path):
+    """Plans, forces with friction, the flywheel and the equation of motion, whose steady turn keeps the 60 rpm the
+    scene's crank is given (the gear ratio is chosen for it) and stays within the flywheel's δ."""
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(starter("shaper"), encoding="utf-8")
+    status, out = run(tmp_path, scene=scene)
+    assert status == 0
+    assert {"forces_friction_3.svg", "dynamics.svg", "motion.svg", "sheet_1.svg"} <= names(out)
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    steady = results["dynamics"]["motion"]
+    assert steady["omega_mean"] == pytest.approx(2 * math.pi, rel=0.02)
+    assert 0 < steady["delta"] <= results["dynamics"]["delta"]
+    efficiencies = [position["forces"]["friction"]["efficiency"] for position in results["positions"]
+                    if position.get("forces")]
+    assert len(efficiencies) == 2 and all(0 < eta < 1 for eta in efficiencies)
+
+
 def test_new_does_not_overwrite_a_scene(tmp_path, capsys):
     scene = tmp_path / "mine.toml"
     scene.write_text("# my own work\n", encoding="utf-8")
