@@ -117,14 +117,17 @@ def _run(arguments: argparse.Namespace) -> int:
         only = [*(only if only is not None else chosen(scene, analysis)), "figures"]
     pieces = chosen(scene, analysis, only)
     progress.say("drawing and writing the tables")
+    outcomes: list[str] = []
     written = write_folder(arguments.out if arguments.out is not None else Path("output") / path.stem,
-                           files(scene, analysis, pieces, formats))
+                           files(scene, analysis, pieces, formats, warn=outcomes.append))
     print(f"{scene.title}")
     if analysis is not None:
         print(f"structure: {analysis.mechanism.structure}")
         for warning in analysis.warnings:
             number = int(analysis.positions.numbers[warning.position])
             print(f"warning: position {number}: {warning.detail}")
+    for outcome in outcomes:
+        print(f"warning: {outcome}")
     for file in written:
         print(f"wrote {file}")
     return 0

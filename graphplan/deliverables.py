@@ -266,7 +266,18 @@ class MachineDynamics:
             result.update(omega_mean=steady.mean_speed, omega_max=steady.max_speed, omega_min=steady.cycle.min_speed,
                           delta=steady.cycle.delta, steady_after=steady.reached_at,
                           start_up_time=motion.start_up_time(5.0))
+        if motion.stalled_at is not None:
+            result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=motion.stalled_at_angle_deg)
         return result
+
+    def stall_warning(self) -> str | None:
+        """One line for the command line when the motor cannot keep the machine turning."""
+        motion = self.motion
+        if motion is None or motion.stalled_at is None:
+            return None
+        return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {motion.stalled_at_angle_deg:.1f}°: "
+                f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
+                f"or a start unloaded through a clutch)")
 
 
 def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics | None) -> MachineDynamics:
@@ -398,12 +409,17 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
 
 def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-          formats: tuple[str, ...] = ("svg",)) -> dict[str, str | bytes]:
-    """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots."""
+          formats: tuple[str, ...] = ("svg",), warn: Callable[[str], None] | None = None) -> dict[str, str | bytes]:
+    """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots.
+
+    ``warn`` is told, in a line, of an outcome the files record but a user should not miss (a machine
+    that stalls)."""
     from .report.results import dumps
 
     # The model, the flywheel and the integrated motion serve the results, the drawing and the plot.
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces else None
+    if dynamics is not None and warn is not None and (stall := dynamics.stall_warning()) is not None:
+        warn(stall)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))

@@ -483,7 +483,9 @@ class MachineMotion:
     ``t``, ``phi``, ``omega`` are at the solver's steps (a step is repeated where the state jumps,
     as when the clutch locks); :meth:`state_at` interpolates between them.  ``driving_omega`` is
     the clutch's driving half (None without a clutch), ``motor_torque`` the motor's torque on the
-    shaft at the steps, ``slip_energy`` the work lost in the clutch (J).
+    shaft at the steps, ``slip_energy`` the work lost in the clutch (J).  ``stopped_at`` is when the
+    machine came to rest for good, and ``stalled_at`` the same time when the motor was still on: it
+    could not carry the machine past the resistance there (``phi[-1]``), and the run ends at it.
     """
 
     t: np.ndarray
@@ -498,6 +500,7 @@ class MachineMotion:
     stiffness: float
     events: tuple[tuple[float, str], ...]
     stopped_at: float | None
+    stalled_at: float | None
     slip_energy: float
     nfev: int
     njev: int
@@ -509,6 +512,11 @@ class MachineMotion:
     def stiff(self) -> bool:
         """Whether stability, not accuracy, would hold an explicit method's step (:func:`choose_method`)."""
         return is_stiff(self.stiffness)
+
+    @property
+    def stalled_at_angle_deg(self) -> float | None:
+        """Where the machine stalled: the driving shaft's angle within its turn (degrees); None if it did not."""
+        return None if self.stalled_at is None else math.degrees(float(self.phi[-1])) % 360.0
 
     def state_at(self, times: ArrayLike) -> np.ndarray:
         """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
@@ -786,8 +794,10 @@ class _Integrator:
         self._finish_if_held_at_rest()
 
     def _finish_if_held_at_rest(self) -> None:
-        """Switched off, turning as one body and held at rest: nothing more will happen."""
-        if self.phase not in (RIGID, LOCKED) or self.y[1] > 0.0 or self.eq.motor_on(self.t):
+        """Turning as one body and held at rest, the motor switched off or too weak to move the machine at
+        this angle (a stall): nothing more will happen, since no later switch (a brake, the motor off)
+        drives it harder and a body at rest keeps its angle."""
+        if self.phase not in (RIGID, LOCKED) or self.y[1] > 0.0:
             return
         self.eq.settle(self.phase, self.t, self.y)
         self.finished = self.eq.machine_held
@@ -1162,9 +1172,11 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     slip_energy = clutch.torque * float(y[3, -1]) if clutch is not None else 0.0
     stops = [when for when, name in integrator.events if name == "stopped"]
     stopped_at = stops[-1] if stops and y[1, -1] == 0.0 else None
+    stalled_at = stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else None
     return MachineMotion(t=t, phi=y[0], omega=y[1], driving_omega=y[2] if clutch is not None else None,
                          motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
                          stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
+                         stalled_at=stalled_at,
                          slip_energy=slip_energy, nfev=integrator.nfev, njev=integrator.njev, nlu=integrator.nlu,
                          notes=tuple(notes), _dense=dense)
 

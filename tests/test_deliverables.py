@@ -154,6 +154,23 @@ def test_the_shaper_starter_runs_the_whole_course(tmp_path):
     assert len(efficiencies) == 2 and all(0 < eta < 1 for eta in efficiencies)
 
 
+def test_a_machine_that_stalls_is_told_on_the_command_line_in_the_results_and_in_the_note(tmp_path, capsys):
+    """The shaper starter with half its motor: the crank cannot pass the cutting stroke's peak from rest."""
+    scene = tmp_path / "shaper.toml"
+    weaker = starter("shaper").replace("power = 3000.0", "power = 1500.0")
+    assert weaker != starter("shaper")
+    scene.write_text(weaker, encoding="utf-8")
+    status, out = run(tmp_path, "--only", "dynamics,note", scene=scene)
+    assert status == 0
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert "omega_mean" not in motion
+    assert motion["stalled_at"] == motion["duration"]
+    assert 0 <= motion["stalled_at_angle_deg"] < 360
+    printed = capsys.readouterr().out
+    assert f"warning: dynamics: the machine stalls at t = {motion['stalled_at']:.4g} s" in printed
+    assert "it stalls, coming to rest" in (out / "note.md").read_text(encoding="utf-8")
+
+
 def test_new_does_not_overwrite_a_scene(tmp_path, capsys):
     scene = tmp_path / "mine.toml"
     scene.write_text("# my own work\n", encoding="utf-8")

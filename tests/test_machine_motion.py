@@ -73,6 +73,28 @@ def test_jogged_turntable_speed_and_angle_after_a_015_s_pulse():
     assert [name for _, name in motion.events] == ["motor off", "stopped"]
 
 
+def test_a_motor_too_weak_for_the_resistance_s_peak_stalls_the_machine_where_its_work_runs_out():
+    # With Je constant, ½·Je·ω² = ∫(Md − Mr)dφ from rest: the machine comes to rest where the work
+    # the motor has done over the resistance is used up, found here by quadrature, not by the
+    # integrator.  There the resistance exceeds the motor's torque, so it stays: the run ends.
+    inertia, torque = 0.5, 20.0
+
+    def resisting(phi):
+        return 5.0 + 200.0 * math.exp(-((phi - math.pi) / 0.3) ** 2)
+
+    motion = simulate(Machine(inertia, resisting=lambda phi, omega: resisting(phi)), ConstantTorque(torque), rtol=1e-10)
+    surplus = lambda phi: quad(lambda x: torque - resisting(x), 0.0, phi, epsabs=1e-12)[0]  # noqa: E731
+    where = brentq(surplus, math.pi - 1.2, math.pi, xtol=1e-12)
+    assert motion.stalled_at is not None and motion.stalled_at == motion.t[-1] == motion.stopped_at
+    assert motion.phi[-1] == pytest.approx(where, abs=1e-6)
+    assert motion.stalled_at_angle_deg == pytest.approx(math.degrees(where), abs=1e-4)
+    assert resisting(where) > torque
+    assert motion.steady is None and motion.omega[-1] == 0.0
+    # A motor switched off and run down is stopped, not stalled.
+    coasting = simulate(Machine(inertia, resisting=5.0), ConstantTorque(torque), motor_off_at=1.0)
+    assert coasting.stopped_at is not None and coasting.stalled_at is None and coasting.stalled_at_angle_deg is None
+
+
 # --- motors -----------------------------------------------------------------------------------
 
 

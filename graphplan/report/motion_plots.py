@@ -10,6 +10,7 @@ from the locale (``motion_`` keys).  matplotlib is imported only inside :func:`m
 from __future__ import annotations
 
 import math
+import textwrap
 from collections.abc import Mapping
 
 import numpy as np
@@ -53,7 +54,10 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             _steady_turn(turn, motion, text, flywheel)
         else:
             turn.set_axis_off()
-            turn.text(0.5, 0.5, text["motion_no_steady"], ha="center", va="center", transform=turn.transAxes)
+            mark = text["decimal_mark"]
+            why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
+                time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
+            turn.text(0.5, 0.5, textwrap.fill(why, 80), ha="center", va="center", transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
         # After the decimal mark: the title quotes the scene's, which is the user's text.
         figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
@@ -105,7 +109,9 @@ def _events(plot, motion: MachineMotion, text: Mapping[str, str], span: float) -
         level = level + 1 if when - last < 0.04 * span else 0
         last = when
         plot.axvline(when, color=_EVENT, linewidth=0.6, linestyle=":")
-        plot.annotate(str(ordinal), (when, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10 - 10 * (level % 4)),
+        # Left of its line at the plot's right edge (a stall ends the run), else right of it.
+        aside = -8 if when >= float(motion.t[-1]) - 0.02 * span else 2
+        plot.annotate(str(ordinal), (when, 1.0), xycoords=("data", "axes fraction"), xytext=(aside, -10 - 10 * (level % 4)),
                       textcoords="offset points", fontsize=7, color=_EVENT)
         words = text.get(f"motion_event_{name.replace(' ', '_')}", name)
         plot.plot([], [], " ", label=text["motion_event"].format(number=ordinal, event=words,

@@ -1003,7 +1003,11 @@ class _Note:
         self.para(self.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=self.method_reason(dynamics)))
         steady = motion.steady
         if steady is None:
-            self.para(self.text["note_dyn_no_steady"])
+            if motion.stalled_at is None:
+                self.para(self.text["note_dyn_no_steady"])
+            else:
+                self.para(self.t("note_dyn_stalled", time=self.n(motion.stalled_at, 4),
+                                 angle=self.n(motion.stalled_at_angle_deg, 4)))
             return
         cycle = steady.cycle
         self.para(self.t("note_dyn_steady", start_up=self.n(motion.start_up_time(5.0), 4), after=self.n(steady.reached_at, 4),
