@@ -11,25 +11,25 @@ ISO 5457 for ``en`` (20 mm on the left, 10 mm elsewhere, centring marks).
 The drawings come as :class:`Panel` s, each at its own scale factors: a
 panel is never scaled, since μl, μV, μa and μF are written beside it and a
 shrunken drawing would falsify them.  Panels are placed in the order given,
-each where the drawings of the sheet stay most compact (then as high and as
-far left as can be), never nearer than :data:`GAP_MM` to another or than
-:data:`PADDING_MM` to the frame and the title block; the drawings of a
-sheet are then moved together towards its middle.  A panel goes on the
+each where the drawings of the sheet stay most compact (then as high and
+as far left as can be), never nearer than :data:`GAP_MM` to another or
+than :data:`PADDING_MM` to the frame and the title block; the drawings of
+a sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
 format, but never on a sheet before one with a drawing of its kind (the
-plans of position 11 never come before those of position 5).  A plan sheet of one position stands as a row (mechanism, velocity
-plan, acceleration plan) wherever that fits, else with its mechanism above
-its plans or beside them, so that it may join a sheet with room of another
-shape; a force sheet stands in one column of rows, else in two.  A panel too
-big for an empty sheet every way it may stand is placed part by part (a
-plan sheet of one position as its mechanism, velocity plan and
-acceleration plan; a force sheet as its groups, each beside its polygon,
-and the lever), on sheets of its own whose title block names it.  A drawing
-at a scale the scene sets that no empty sheet holds (the plan of positions
-or a mechanism at μl, a plan at its pole distance, a force polygon at the
-scene's μF) is refused before anything is placed, with the room there is,
-the scene's key and the value of it that fits, and a bigger format that
-holds it.
+plans of position 11 never come before those of position 5).  A plan sheet
+of one position stands as a row (mechanism, velocity plan, acceleration
+plan) wherever that fits, else with its mechanism above its plans or
+beside them, so that it may join a sheet with room of another shape; a
+force sheet stands in one column of rows, else in two.  A panel too big for
+an empty sheet every way it may stand is placed part by part (a plan sheet
+of one position as its mechanism, velocity plan and acceleration plan; a
+force sheet as its groups, each beside its polygon, and the lever), on
+sheets of its own whose title block names it.  A drawing at a scale the
+scene sets that no empty sheet holds (the plan of positions or a mechanism
+at μl, a plan at its pole distance, a force polygon at the scene's μF) is
+refused before anything is placed, with the room there is, the scene's key
+and the value of it that fits, and a bigger format that holds it.
 A force sheet with a drawing that no empty sheet holds is first lettered a
 size smaller, then its group cut free or lever is drawn at the next larger
 standard scale (its caption and the title block's scale box say which),
