@@ -793,14 +793,17 @@ class _Integrator:
             self.y[2] = 0.0
         self._finish_if_held_at_rest()
 
-    def _finish_if_held_at_rest(self) -> None:
-        """Turning as one body and held at rest, the motor switched off or too weak to move the machine at
-        this angle (a stall): nothing more will happen, since no later switch (a brake, the motor off)
-        drives it harder and a body at rest keeps its angle."""
+    def held_at_rest(self) -> bool:
+        """Whether the machine, turning as one body, is at rest and held there: the motor switched off or too
+        weak to move it at this angle.  Nothing more will happen then, since no later switch (a brake, the
+        motor off) drives it harder and a body at rest keeps its angle."""
         if self.phase not in (RIGID, LOCKED) or self.y[1] > 0.0:
-            return
+            return False
         self.eq.settle(self.phase, self.t, self.y)
-        self.finished = self.eq.machine_held
+        return self.eq.machine_held
+
+    def _finish_if_held_at_rest(self) -> None:
+        self.finished = self.held_at_rest()
         if self.finished:
             self.times.append(np.array([self.t]))
             self.states.append(self.y[:, None].copy())
@@ -1138,10 +1141,15 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     tolerance = max(steady_tolerance, 10.0 * rtol)
     notes = []
     integrator = _Integrator(equations, start, chosen, rtol, atol)
+    # A motor too weak to start the machine where it stands: one turn's time at rest shows it.
+    integrator.eq.clock = start.time
+    never_starts = equations.motor_on(start.time) and integrator.held_at_rest()
     cycles: tuple[Cycle, ...] = ()
     steady = None
     if duration is not None:
         integrator.advance(start.time + duration)
+    elif never_starts:
+        integrator.advance(start.time + TWO_PI / omega_run)
     else:
         period = TWO_PI / omega_run
         limit = start.time + max_cycles * period
@@ -1172,7 +1180,8 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     slip_energy = clutch.torque * float(y[3, -1]) if clutch is not None else 0.0
     stops = [when for when, name in integrator.events if name == "stopped"]
     stopped_at = stops[-1] if stops and y[1, -1] == 0.0 else None
-    stalled_at = stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else None
+    stalled_at = start.time if never_starts else (
+        stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else None)
     return MachineMotion(t=t, phi=y[0], omega=y[1], driving_omega=y[2] if clutch is not None else None,
                          motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
                          stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,

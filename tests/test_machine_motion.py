@@ -83,13 +83,18 @@ def test_a_motor_too_weak_for_the_resistance_s_peak_stalls_the_machine_where_its
         return 5.0 + 200.0 * math.exp(-((phi - math.pi) / 0.3) ** 2)
 
     motion = simulate(Machine(inertia, resisting=lambda phi, omega: resisting(phi)), ConstantTorque(torque), rtol=1e-10)
-    surplus = lambda phi: quad(lambda x: torque - resisting(x), 0.0, phi, epsabs=1e-12)[0]  # noqa: E731
+    def surplus(phi):
+        return quad(lambda x: torque - resisting(x), 0.0, phi, epsabs=1e-12)[0]
     where = brentq(surplus, math.pi - 1.2, math.pi, xtol=1e-12)
     assert motion.stalled_at is not None and motion.stalled_at == motion.t[-1] == motion.stopped_at
     assert motion.phi[-1] == pytest.approx(where, abs=1e-6)
     assert motion.stalled_at_angle_deg == pytest.approx(math.degrees(where), abs=1e-4)
     assert resisting(where) > torque
     assert motion.steady is None and motion.omega[-1] == 0.0
+    # One too weak to start it at all stalls where it stands; the run shows a turn's time at rest.
+    stuck = simulate(Machine(inertia, resisting=lambda phi, omega: resisting(phi)), ConstantTorque(4.0))
+    assert stuck.stalled_at == 0.0 and stuck.stalled_at_angle_deg == 0.0
+    assert np.all(stuck.omega == 0.0) and 0 < stuck.t[-1] < 100.0
     # A motor switched off and run down is stopped, not stalled.
     coasting = simulate(Machine(inertia, resisting=5.0), ConstantTorque(torque), motor_off_at=1.0)
     assert coasting.stopped_at is not None and coasting.stalled_at is None and coasting.stalled_at_angle_deg is None
