@@ -82,9 +82,10 @@ def test_a_motor_too_weak_for_the_resistance_s_peak_stalls_the_machine_where_its
     def resisting(phi):
         return 5.0 + 200.0 * math.exp(-((phi - math.pi) / 0.3) ** 2)
 
-    motion = simulate(Machine(inertia, resisting=lambda phi, omega: resisting(phi)), ConstantTorque(torque), rtol=1e-10)
     def surplus(phi):
         return quad(lambda x: torque - resisting(x), 0.0, phi, epsabs=1e-12)[0]
+
+    motion = simulate(Machine(inertia, resisting=lambda phi, omega: resisting(phi)), ConstantTorque(torque), rtol=1e-10)
     where = brentq(surplus, math.pi - 1.2, math.pi, xtol=1e-12)
     assert motion.stalled_at is not None and motion.stalled_at == motion.t[-1] == motion.stopped_at
     assert motion.phi[-1] == pytest.approx(where, abs=1e-6)
