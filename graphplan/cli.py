@@ -11,7 +11,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from .errors import GraphplanError
+from .errors import GraphplanError, SceneError
 
 EXAMPLES = """\
 examples:
@@ -20,6 +20,7 @@ examples:
   graphplan run fixtures/ratchet_crank_rocker.toml --only velocity,acceleration --format svg,png
   graphplan run fixtures/ratchet_crank_rocker.toml --only sheets,note --format pdf,dxf    sheets to CAD, note to PDF
   graphplan run fixtures/ratchet_crank_rocker.toml --only note --format docx              the note for Word
+  graphplan run fixtures/ratchet_crank_rocker.toml --sheet A2   the course-project sheets on A2
   graphplan check fixtures/ratchet_crank_rocker.toml            validates and prints the structure formula
   graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
 """
@@ -31,7 +32,7 @@ def _listed(text: str) -> list[str]:
 
 def _parser() -> argparse.ArgumentParser:
     from .deliverables import FORMATS, PIECES
-    from .scene import LOCALES
+    from .scene import LOCALES, SHEETS
     from .starters import KINDS
 
     parser = argparse.ArgumentParser(
@@ -46,6 +47,9 @@ def _parser() -> argparse.ArgumentParser:
                      help="output folder (default: output/<scene file name>)")
     run.add_argument("--locale", choices=LOCALES, default=None,
                      help="the language of the drawings and the text (default: the scene's [scene] locale)")
+    run.add_argument("--sheet", choices=SHEETS, default=None,
+                     help="the sheet format of the course-project sheets, which it also draws (default: the scene's "
+                          "[drawing] sheet)")
     run.add_argument("--only", type=_listed, default=None, metavar="PIECES",
                      help=f"deliver only these pieces, comma-separated: {', '.join(PIECES)} "
                           "(default: the scene's [output] include, else every piece the scene has data for)")
@@ -72,6 +76,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _new(arguments.kind, arguments.out)
         return _run(arguments)
     except GraphplanError as error:
+        if isinstance(error, SceneError) and error.where == "drawing.sheet" and getattr(arguments, "sheet", None):
+            error = SceneError("--sheet (in place of drawing.sheet)", error.problem, error.value)
         print(f"graphplan: error: {error}", file=sys.stderr)
         return 2
 
@@ -110,6 +116,9 @@ def _run(arguments: argparse.Namespace) -> int:
     scene = load(path)
     if arguments.locale is not None:
         scene = dataclasses.replace(scene, locale=arguments.locale)
+    if arguments.sheet is not None:  # as if the scene named it: the sheets are drawn unasked
+        scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, sheet=arguments.sheet,
+                                                                       sheet_given=True))
     progress.say("analysing the mechanism")
     analysis = analyse(scene) if scene.has_linkage else None
     only = arguments.only

@@ -2,6 +2,7 @@
 
 import json
 import math
+from pathlib import Path
 import xml.etree.ElementTree as ElementTree
 
 import numpy as np
@@ -107,6 +108,32 @@ def test_a_failed_run_leaves_an_existing_output_untouched(tmp_path, run_folder):
     bad.write_text("[scene]\ntitle = 3\n", encoding="utf-8")
     assert main(["run", str(bad), "--out", str(out)]) == 2
     assert (out / "results.json").read_bytes() == before
+
+
+def test_the_sheet_option_draws_the_sheets_on_that_format_even_for_a_scene_that_names_none(tmp_path):
+    scene = tmp_path / "unsheeted.toml"
+    text = Path(FIXTURE).read_text(encoding="utf-8")
+    unsheeted = "\n".join(line for line in text.splitlines() if not line.startswith("sheet "))
+    assert unsheeted != text
+    scene.write_text(unsheeted, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "plain")]) == 0
+    assert not list((tmp_path / "plain").glob("sheet_*.svg"))
+    out = tmp_path / "a2"
+    assert main(["run", str(scene), "--out", str(out), "--sheet", "A2"]) == 0
+    sheets = sorted(out.glob("sheet_*.svg"))
+    assert sheets
+    for sheet in sheets:
+        root = ElementTree.parse(sheet).getroot()
+        assert (root.get("width"), root.get("height")) == ("594mm", "420mm")
+
+
+def test_a_sheet_option_too_small_for_the_scene_names_the_option(tmp_path, capsys):
+    out = tmp_path / "out"
+    assert main(["run", "fixtures/quick_return_slotted_lever.toml", "--out", str(out), "--sheet", "A3"]) == 2
+    error = capsys.readouterr().err
+    assert error.startswith("graphplan: error: --sheet (in place of drawing.sheet): the plan of positions is ")
+    assert "no A3 sheet holds them" in error
+    assert not out.exists()
 
 
 def test_check_prints_the_structure_formula(capsys):
