@@ -74,3 +74,53 @@ def test_the_python_example_works_as_printed(monkeypatch):
     # ω4 = dψ4/dφ · ω: the angle's derivative over the example's own step of 0.01°.
     by_difference = np.gradient(np.unwrap(link.angle), np.radians(0.01)) * omega
     assert np.allclose(by_difference[1:-1], link.omega[1:-1], rtol=1e-4, atol=1e-4 * abs(link.omega).max())
+
+
+COURSE = ROOT / "docs" / "course-project.md"
+
+
+def test_the_course_project_walk_through_runs_as_printed(tmp_path, monkeypatch, capsys):
+    """Every ``graphplan`` line of docs/course-project.md is run in the page's order, the TOML block added to
+    the scene where the page adds it; what the page says the commands print and write is checked."""
+    import shlex
+    from xml.etree import ElementTree
+
+    page = COURSE.read_text(encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    printed = []
+    for language, block in re.findall(r"```(sh|toml)\n(.*?)```", page, flags=re.DOTALL):
+        if language == "toml":
+            with open("shaper.toml", "a", encoding="utf-8") as scene:
+                scene.write("\n" + block)
+            continue
+        for line in block.strip().splitlines():
+            words = shlex.split(line)
+            assert words[0] == "graphplan"
+            assert main(words[1:]) == 0, line
+            printed.append(capsys.readouterr().out)
+    assert "structure: I(1,2) → II2(3,4) → II2(5,6)\nW = 3·5 − 2·7 = 1" in printed[1]
+    listed = set(re.findall(r"^\| `([^`]+)`", page, flags=re.MULTILINE))
+    written = {path.name for path in (tmp_path / "shaper").iterdir()}
+    for entry in listed:
+        for name in re.findall(r"[\w.]+\.\w+", entry.replace("…", "")):
+            assert name in written, name
+    # The drawn pe at μV = VA / pa: the starter's crank, 0.10 m at 60 rpm, drawn 100 mm long.
+    errors = (tmp_path / "checked" / "errors.md").read_text(encoding="utf-8")
+    header = next(line for line in errors.splitlines() if line.startswith("| quantity"))
+    row = next(line for line in errors.splitlines() if line.startswith("| VE |"))
+    cells = dict(zip(header.split("|"), row.split("|"), strict=True))
+    drawn = float(re.search(r"velocity\s*=\s*\{ pe = ([\d.]+)", page)[1])
+    assert float(cells[" measured "]) == pytest.approx(drawn * (2 * np.pi * 0.10) / 100.0, rel=1e-4)
+    root = ElementTree.parse(tmp_path / "shaper-ru" / "sheet_1.svg").getroot()
+    assert root.get("width") == "594mm"
+    assert (tmp_path / "report" / "note.docx").exists()
+
+
+def test_the_course_project_s_stall_warning_is_the_one_printed(tmp_path, capsys):
+    from graphplan.starters import starter
+
+    shown = re.search(r"^warning: dynamics: .*\(", COURSE.read_text(encoding="utf-8"), flags=re.MULTILINE)[0]
+    scene = tmp_path / "weak.toml"
+    scene.write_text(starter("shaper").replace("power = 3000.0", "power = 1500.0"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "dynamics"]) == 0
+    assert shown in capsys.readouterr().out
