@@ -33,6 +33,7 @@ from hypothesis import strategies as st
 from test_scene_errors import to_toml
 
 from graphplan.cli import main
+from graphplan.starters import starter
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 BASE = tomllib.loads(FIXTURE.read_text(encoding="utf-8"))
@@ -352,9 +353,11 @@ def test_a_length_scale_that_would_draw_the_mechanism_kilometres_large_is_refuse
 # --- any number of any fixture, changed: a run or one clear line, never a traceback -------------------
 
 FIXTURES = sorted(FIXTURE.parent.glob("*.toml"))
-# Scenes with the tables the fixtures lack: the ratchet's dynamics with a flywheel, a rotor without a linkage.
+# Scenes with the tables the fixtures lack: the ratchet's dynamics with a flywheel, the shaper starter's
+# friction and induction motor, a rotor without a linkage.
 EXTRA_SCENES = {
     "ratchet-dynamics": FIXTURE.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\nflywheel_shaft_rpm = 1440\n",
+    "shaper-starter": starter("shaper"),
     "rotor": ('[scene]\ntitle = "Rotor"\n[balancing]\nmasses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0 },'
               ' { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08 } ]\nplanes = [0.04, 0.22]\n'
               "correction_radius = 0.05\n[vibration]\nmass = 100.0\nunbalance = 0.02\nstiffness = 1.0e5\n"
