@@ -10,8 +10,12 @@ import argparse
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .errors import GraphplanError, SceneError
+
+if TYPE_CHECKING:
+    from .analysis import Analysis
 
 EXAMPLES = """\
 examples:
@@ -83,8 +87,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _check(path: Path) -> int:
-    from .mechanism import build
-    from .positions import make_positions
+    from .analysis import analyse
     from .scene import load
 
     scene = load(path)
@@ -93,13 +96,22 @@ def _check(path: Path) -> int:
         print(f"{path}: ok")
         print(f"no mechanism; {', '.join(tables)}")
         return 0
-    mechanism = build(scene)
-    make_positions(mechanism)
+    # The whole analysis, not only the structure: a position the mechanism cannot reach, or a reading of
+    # [measured] that names no segment of its plan, is refused here as the run would refuse it.
+    analysis = analyse(scene)
+    mechanism = analysis.mechanism
     n, p5, w = mechanism.degrees_of_freedom
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")
+    _print_warnings(analysis)
     return 0
+
+
+def _print_warnings(analysis: Analysis) -> None:
+    for warning in analysis.warnings:
+        number = int(analysis.positions.numbers[warning.position])
+        print(f"warning: position {number}: {warning.detail}")
 
 
 def _run(arguments: argparse.Namespace) -> int:
@@ -132,9 +144,7 @@ def _run(arguments: argparse.Namespace) -> int:
     print(f"{scene.title}")
     if analysis is not None:
         print(f"structure: {analysis.mechanism.structure}")
-        for warning in analysis.warnings:
-            number = int(analysis.positions.numbers[warning.position])
-            print(f"warning: position {number}: {warning.detail}")
+        _print_warnings(analysis)
     for outcome in outcomes:
         print(f"warning: {outcome}")
     for file in written:

@@ -136,6 +136,17 @@ def test_a_sheet_option_too_small_for_the_scene_names_the_option(tmp_path, capsy
     assert not out.exists()
 
 
+def test_check_refuses_a_reading_that_names_no_segment_of_the_plan_as_the_run_does(tmp_path, capsys):
+    scene = tmp_path / "measured.toml"
+    scene.write_text(Path(FIXTURE).read_text(encoding="utf-8") + "\n[measured.11]\nvelocity = { pz = 10.0 }\n",
+                     encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    checked = capsys.readouterr().err
+    assert checked.startswith("graphplan: error: measured.11.velocity.pz: is not two letters of the plan")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    assert capsys.readouterr().err == checked
+
+
 def test_check_prints_the_structure_formula(capsys):
     assert main(["check", FIXTURE]) == 0
     printed = capsys.readouterr().out
