@@ -181,15 +181,15 @@ def _sliding_readings(mechanism: Mechanism, plan: Plan, symbol: str,
                       positions: Mapping[str, complex]) -> list[Reading]:
     """The relative velocity (or relative acceleration ``^r``) of every sliding pair, read along its guide.
 
-    The segment is the vector the group laid off along the guide, which its
-    record of the slide (``Plan.sliding``) equals exactly; the quantity is
-    named as the step's equation names that vector.
+    The segment is the vector the group laid off along the guide, between
+    the letters it recorded for the slide (``Plan.slide_ends``); the
+    quantity is named as the step's equation names that vector.
     """
     result = []
     for pair in sliding_pairs(mechanism, positions):
         if pair.slider not in plan.sliding:
             continue
-        laid = _laid_along_guide(plan, plan.sliding[pair.slider])
+        laid = _laid_along_guide(plan, plan.slide_ends[pair.slider])
         if laid is None:
             continue
         step, vector = laid
@@ -198,20 +198,20 @@ def _sliding_readings(mechanism: Mechanism, plan: Plan, symbol: str,
     return result
 
 
-def _laid_along_guide(plan: Plan, slide: complex) -> tuple[Step, LaidVector] | None:
+def _laid_along_guide(plan: Plan, ends: tuple[str, str]) -> tuple[Step, LaidVector] | None:
     """The vector a step laid off along a guide (a line of action ``∥ …`` from its start to the crossing it fixed)
-    that is the slide, either way round.
+    between the slide's two letters, either way round.
 
-    Asking for the guide's line keeps a vector that is zero at this instant
-    (a normal or tangential component) from standing in for a zero slide.
+    Asked by its letters, not its value: at an extreme two slides may both be
+    zero, and a normal or tangential component zero at this instant would
+    equal either.
     """
     for step in plan.steps:
         along = {line.through for line in step.lines if line.along.parallel}
         for vector in step.vectors:
             if vector.start not in along or vector.end not in step.fixes or vector.start == vector.end:
                 continue
-            drawn = plan.points[vector.end] - plan.points[vector.start]
-            if drawn == slide or drawn == -slide:
+            if {vector.start, vector.end} == set(ends):
                 return step, vector
     return None
 

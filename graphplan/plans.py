@@ -191,6 +191,9 @@ class Plan:
     ``images`` maps each mechanism point to its plan letter; ``rates`` holds
     the angular velocity (velocity plan) or angular acceleration
     (acceleration plan) of each link as read off the plan, ccw positive;
+    ``sliding`` is each slider's velocity (or acceleration) relative to its guide, and ``slide_ends`` the
+    plan's letters of the vector that lays it off, from and to (which tells two equal slides apart, both
+    zero at an extreme);
     ``members`` lists each link's points on the plan as (position, letter);
     ``auxiliary`` the construction's own points of the mechanism that no
     scene names (Assur's special point ``Σ6`` of a triad), where they lie (m).
@@ -204,6 +207,7 @@ class Plan:
     rates: Mapping[int, float]
     sliding: Mapping[int, complex]
     members: Mapping[int, tuple[tuple[complex, str], ...]] = field(default_factory=dict)
+    slide_ends: Mapping[int, tuple[str, str]] = field(default_factory=dict)
     auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
     def mm(self, letter: str) -> complex:
@@ -234,6 +238,7 @@ class Builder:
     link_images: dict[int, list[tuple[complex, str]]] = field(default_factory=dict)
     turns_with: dict[int, int] = field(default_factory=dict)
     sliding: dict[int, complex] = field(default_factory=dict)
+    slide_ends: dict[int, tuple[str, str]] = field(default_factory=dict)
     auxiliary: dict[str, complex] = field(default_factory=dict)
 
     def image(self, point: str) -> complex:
@@ -252,6 +257,11 @@ class Builder:
         self.points[letter] = value
         self.images[point] = letter
         return letter
+
+    def slides(self, slider: int, start: str, end: str) -> None:
+        """Record that link ``slider`` moves along its guide as the plan's vector from ``start`` to ``end``."""
+        self.sliding[slider] = self.points[end] - self.points[start]
+        self.slide_ends[slider] = (start, end)
 
     def mark(self, letter: str, value: complex) -> str:
         """An auxiliary point of the plan (the end of a normal component ``n3``, of a Coriolis one ``k``)."""
@@ -421,7 +431,7 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
     return Plan(kind=board.kind, scale=scale, points=dict(board.points), steps=tuple(board.steps),
                 images=dict(board.images), rates=rates, sliding=dict(board.sliding),
                 members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()},
-                auxiliary=dict(board.auxiliary))
+                auxiliary=dict(board.auxiliary), slide_ends=dict(board.slide_ends))
 
 
 __all__ = [

@@ -189,6 +189,18 @@ def test_the_tables_read_every_sliding_pair_as_the_analytic_slides(case, index):
                 assert reading.quantity.endswith("^r"), reading.quantity
 
 
+def test_each_slide_is_read_off_its_own_vector_even_where_two_slides_are_equal():
+    # At the tangent mechanism's extreme both of B's slides vanish: vBB4 = vBB1 = 0.  Found by their value, both
+    # readings took the first zero vector laid along a guide (b4 → b), and the slide on the frame (p → b) was
+    # read as link 5's; they are found by the letters their group recorded.
+    m, pos, _, vp, ap, _ = constructed("tangent_mechanism_prp", 0)
+    equal = dataclasses.replace(vp, sliding={slider: 0j for slider in vp.sliding})
+    table = check.readings(m, {"velocity": equal, "acceleration": ap}, pos)
+    read = {r.slide.slider: set(r.segment) for r in table if r.plan == "velocity" and r.slide is not None}
+    assert read == {slider: set(ends) for slider, ends in vp.slide_ends.items()}
+    assert read[5] == {"b4", "b"} and read[6] == {"p", "b"}
+
+
 @pytest.mark.parametrize("case", SLIDING_FIXTURES)
 def test_the_rpp_and_prp_error_tables_carry_their_sliding_rows(case):
     expected = {"scotch_yoke": {"VA4A3", "VA4A1", "aA4A3^r", "aA4A1^r"},

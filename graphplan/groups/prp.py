@@ -124,7 +124,7 @@ class PRP(Group):
         for slider, guide, along, carrier, under in sides:
             board.on_link(slider, b_pos, b)
             board.turns_with[slider] = carrier
-            board.sliding[slider] = value - board.points[under]
+            board.slides(slider, under, b)
             g = f"{b_name}{carrier}"
             terms.append(f"v{g} + v{b_name}{g}")
             if under != "p":
@@ -168,7 +168,7 @@ class PRP(Group):
         for slider, guide, along, carrier, start, g in sides:
             board.on_link(slider, b_pos, b)
             board.turns_with[slider] = carrier
-            board.sliding[slider] = value - board.points[start]
+            board.slides(slider, start, b)
             if start != "p":  # from the pole it would be aB itself
                 laid.append(LaidVector(start, b, f"a{b_name}{g}^r"))
         board.step(Step(

@@ -131,8 +131,8 @@ class RPP(Group):
         value, angle = board.cross(Line(board.points[a], along_slot, on_slot.text),
                                    Line(board.points[ag], along_guide, on_guide.text))
         a4 = board.mark(self._coincident(board), value)
-        board.sliding[block] = board.points[a] - value
-        board.sliding[slotted] = value - board.points[ag]
+        board.slides(block, a4, a)
+        board.slides(slotted, ag, a4)
         pin, point, g = f"{a_name}{block}", f"{a_name}{slotted}", f"{a_name}{carrier}"
         relative = () if ag == "p" else (LaidVector(ag, a4, f"v{point}{g}"),)
         board.step(Step(
@@ -172,8 +172,8 @@ class RPP(Group):
         value, angle = board.cross(Line(board.points[k_slot], along_slot, on_slot.text),
                                    Line(board.points[k_guide], along_guide, on_guide.text))
         a4 = board.mark(coincident, value)
-        board.sliding[block] = board.points[k_slot] - value
-        board.sliding[slotted] = value - board.points[k_guide]
+        board.slides(block, a4, k_slot)
+        board.slides(slotted, k_guide, a4)
         laid.append(LaidVector(k_slot, a4, f"a{point}{pin}^r"))
         if k_guide != "p":  # from the pole it would be aA4 itself
             laid.append(LaidVector(k_guide, a4, f"a{point}{g}^r"))

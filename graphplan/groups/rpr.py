@@ -187,7 +187,7 @@ class RPR(Group):
         board.on_link(lever, a_pos, a4)
         board.on_link(block, a_pos, board.images[a_name])
         board.turns_with[block] = lever
-        board.sliding[block] = board.points[on_slide] - value
+        board.slides(block, a4, on_slide)
         return a4, angle, along, slide, across_ca
 
     # The forces: the group cut free, as drawn.

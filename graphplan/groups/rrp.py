@@ -229,7 +229,7 @@ class RRP(Group):
         board.on_link(rod, b_pos, b)
         board.on_link(slider, b_pos, b)
         board.turns_with[slider] = carrier
-        board.sliding[slider] = value - board.points[on_guide_line]
+        board.slides(slider, on_guide_line, b)
         return b, angle, across_ab, on_guide
 
     # The forces: the group cut free, as drawn.
