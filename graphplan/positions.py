@@ -3,7 +3,9 @@
 ``start = "extreme"`` puts the first position where the working stroke
 begins: the output link's velocity changes sign there, from the idle sense
 to the working sense, as the driver advances.  That zero is bracketed on a
-fine sweep and then found to machine precision by Brent's method.
+fine sweep and then found to machine precision as the root of the speed's
+Chebyshev interpolant on the bracket (numpy), by Brent's method where that
+fails.
 
 :func:`reach` tells where a crank that cannot turn round can go at all, so
 that a scene can be given a swing inside it.
@@ -15,7 +17,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import bisect, brentq
+from numpy.polynomial import Chebyshev
 
 from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
@@ -24,6 +26,9 @@ from .motion import Motion, Reference, reference_at, solve
 
 # Driver positions per cycle of the sweep that brackets the extremes.
 _BRACKET_SWEEP = 720
+# The degree of the speed's interpolant on a bracket: the speed is analytic in the driver's coordinate, so on
+# half a degree this is exact to rounding (the root agrees with Brent's method to a few ulps on every fixture).
+_INTERPOLANT_DEGREE = 12
 # Crank angles per turn on which the ends of a crank's reach are bracketed: half a degree apart.
 _REACH_GRID = 720
 
@@ -123,8 +128,8 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
     speed, _ = working_speed(solve(mechanism, steps, reference))
 
-    def speed_at(angle: float) -> float:
-        return float(working_speed(solve(mechanism, [angle], reference))[0][0])
+    def speeds_at(angles) -> np.ndarray:
+        return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]
 
     found = {}
     for name, rising in (("working", True), ("idle", False)):
@@ -138,11 +143,27 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
         # Several reversals (a dwell, a six-bar): take the one that begins the longest stroke.
         index = max(candidates, key=lambda i: _stroke_length(speed, i, rising))
         lo, hi = steps[index], steps[index + 1]
-        if speed[index] == 0:
-            found[name] = float(lo)
-        else:
-            found[name] = float(brentq(speed_at, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200))
+        found[name] = float(lo) if speed[index] == 0 else _zero_between(speeds_at, float(lo), float(hi))
     return found["working"], found["idle"]
+
+
+def _zero_between(speeds_at, lo: float, hi: float) -> float:
+    """The zero of the speed between ``lo`` and ``hi``, where its sign changes, to machine precision.
+
+    One vectorised solve at the interpolant's Chebyshev points and numpy's roots of it, where the scalar
+    root finders solve the mechanism once per step; Brent's method, which needs only the sign change,
+    where the interpolant does not give exactly one root inside (a kink the sweep did not show).
+    """
+    low, high = min(lo, hi), max(lo, hi)
+    series = Chebyshev.interpolate(speeds_at, _INTERPOLANT_DEGREE, domain=[low, high])
+    roots = series.roots()
+    inside = roots[(np.abs(roots.imag) <= 1e-12 * (high - low)) & (roots.real >= low) & (roots.real <= high)].real
+    if len(inside) == 1:
+        return float(inside[0])
+    from scipy.optimize import brentq  # imported here: it costs a third of a cold run
+
+    return float(brentq(lambda angle: float(speeds_at([angle])[0]), lo, hi, xtol=1e-15,
+                        rtol=4 * np.finfo(float).eps, maxiter=200))
 
 
 def _stroke_length(speed: np.ndarray, index: int, rising: bool) -> int:
@@ -175,6 +196,8 @@ def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
     if inside.all():
         return ((0.0, 2.0 * math.pi),)
     step = grid[1]
+
+    from scipy.optimize import bisect  # imported here: only a crank that cannot turn round needs it
 
     def end(before: float) -> float:  # the end of a range between two grid angles, one inside and one outside
         return bisect(lambda angle: 1.0 if assembles(angle) else -1.0, before, before + step, xtol=1e-9)

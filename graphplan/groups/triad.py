@@ -26,7 +26,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, root
 
 from ..errors import AssemblyError, SceneError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder, Term
@@ -167,6 +166,8 @@ class Triad(Group):
             direction = (d - b) / bd
             return np.abs(b + local_f * direction - e) ** 2 - ef * ef, direction
 
+        from scipy.optimize import brentq  # imported here, as in _settle: only a triad needs it
+
         poses = []
         for sign in (1, -1):
             values, _ = closing(theta, sign)
@@ -201,6 +202,10 @@ class Triad(Group):
 
     def _settle(self, guess: Pose, outer: tuple[complex, complex, complex], turn: int) -> Pose | None:
         """Newton's method (scipy's hybrid Powell) from ``guess``; None when it does not close the triad."""
+        # Imported here, not with the module: scipy.optimize takes a third of a cold run's time to import, and
+        # only a scene with a triad needs it.
+        from scipy.optimize import root
+
         size = sum(self.lengths) + sum(self.sides)
         found = root(self._residual, np.array([guess.b.real, guess.b.imag, guess.psi]), args=(outer, turn),
                      jac=True, method="hybr", options={"xtol": 1e-14})

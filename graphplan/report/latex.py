@@ -29,8 +29,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
 from markdown_it.tree import SyntaxTreeNode
-from scipy.optimize import brentq
 
 from ..render.primitives import FONT_SIZE_PER_CAP, character_width, has_wide
 from ..render.wrapping import fitted
@@ -172,7 +172,10 @@ def _layout(header: list[str], rows: list[list[str]], sides: tuple[str, ...]) ->
     size, points = next(((name, pt) for name, pt in _SIZES if sum(least) <= room(pt)), _SIZES[-1])
     widths = natural
     if sum(natural) > room(points) and sum(least) < room(points):
-        cap = brentq(lambda cap: sum(widths_at(cap)) - room(points), 0.0, max(natural))
+        # The columns' total is piecewise linear and rising in the cap, bending only where a column stops
+        # narrowing or widening: read off at those caps, it is inverted exactly by interpolation.
+        caps = np.unique([0.0, *least, *natural])
+        cap = float(np.interp(room(points), [sum(widths_at(c)) for c in caps], caps))
         widths = widths_at(cap)
     elif sum(natural) > room(points):  # too wide even narrowed: the least it can be
         widths = least
