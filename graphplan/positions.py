@@ -152,14 +152,18 @@ def _zero_between(speeds_at, lo: float, hi: float) -> float:
 
     One vectorised solve at the interpolant's Chebyshev points and numpy's roots of it, where the scalar
     root finders solve the mechanism once per step; Brent's method, which needs only the sign change,
-    where the interpolant does not give exactly one root inside (a kink the sweep did not show).
+    where the interpolant does not give exactly one root inside at which the speed itself vanishes (a
+    speed that is not smooth there, which a mechanism's is away from a toggle).
     """
     low, high = min(lo, hi), max(lo, hi)
     series = Chebyshev.interpolate(speeds_at, _INTERPOLANT_DEGREE, domain=[low, high])
     roots = series.roots()
     inside = roots[(np.abs(roots.imag) <= 1e-12 * (high - low)) & (roots.real >= low) & (roots.real <= high)].real
     if len(inside) == 1:
-        return float(inside[0])
+        at_low, at_high, at_root = speeds_at([low, high, inside[0]])
+        # Half a degree off, the speed is its slope times the bracket: this asks for the root to ~1e-11 rad.
+        if abs(at_root) <= 1e-9 * max(abs(at_low), abs(at_high)):
+            return float(inside[0])
     from scipy.optimize import brentq  # imported here: it costs a third of a cold run
 
     return float(brentq(lambda angle: float(speeds_at([angle])[0]), lo, hi, xtol=1e-15,

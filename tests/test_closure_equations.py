@@ -335,3 +335,27 @@ def test_extremes_of_a_horizontal_scotch_yoke_at_crank_angles_0_and_180():
     start, end = make_positions(build(scene)).extremes
     assert wrapped(start - math.pi) == pytest.approx(0.0, abs=1e-12)
     assert wrapped(end) == pytest.approx(0.0, abs=1e-12)
+
+
+# --- the zero of a speed on its bracket ----------------------------------------------------------
+
+def test_a_zero_is_the_root_of_the_interpolant_where_the_speed_is_smooth_and_brent_s_where_it_is_not():
+    from scipy.optimize import brentq
+
+    from graphplan.positions import _zero_between
+
+    lo, hi = 1.0, 1.0 + math.radians(0.5)
+    root = 1.0 + math.radians(0.2)
+
+    def smooth(angles):
+        return np.sin(np.asarray(angles) - root) * np.exp(np.asarray(angles))
+
+    def kinked(angles):  # twice as steep past the zero: no polynomial follows it there
+        x = np.asarray(angles) - root
+        return np.where(x < 0, x, 2 * x + 50 * x ** 2)
+
+    assert _zero_between(smooth, lo, hi) == pytest.approx(root, abs=4e-16)
+    found = _zero_between(kinked, lo, hi)
+    assert found == pytest.approx(root, abs=1e-14)
+    assert found == brentq(lambda a: float(kinked([a])[0]), lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps,
+                           maxiter=200)
