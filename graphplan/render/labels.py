@@ -152,17 +152,20 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         off = np.abs(candidates - np.tile(at[index], 2))
         reach = np.hypot(off[:, [0, 2]].max(axis=1), off[:, [1, 3]].max(axis=1)).max()
         neighbours = points[(away > 1e-9) & (away < 2 * reach + 0.8 + 1e-9)]
-        own = shapely.distance(shapes, points[index])
-        misleading = (shapely.distance(shapes[:, None], neighbours[None, :]) < own[:, None] + 0.8).sum(axis=1)
-        cost = 1000 * (crossing(shapes, placed_boxes) + crossing(shapes, leader_lines))
-        cost = cost + COVER * covered(shapes) + RING * ring + order * 0.01
+        # Each spot's distance from its own point (column 0) and from those neighbours, in one call.
+        distance = shapely.distance(shapes[:, None], np.concatenate(([points[index]], neighbours))[None, :])
+        misleading = (distance[:, 1:] < distance[:, :1] + 0.8).sum(axis=1)
         beside = ring < led_from
         led = np.flatnonzero(~beside)
         lines = _leaders(anchor.at, shapes[led])
+        # What the boxes and the leaders cover, in one query of the tree.
+        covers = covered(np.concatenate((shapes, lines)))
+        cost = 1000 * (crossing(shapes, placed_boxes) + crossing(shapes, leader_lines))
+        cost = cost + COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         crossings = crossing(lines, placed_boxes) + crossing(lines, leader_lines)
         # The leader says which point the label names: standing near a neighbour misleads less.
         cost[beside] += MISLEADING * misleading[beside]
-        cost[led] += 1000 * crossings + LEADER_CROSSING * covered(lines) + MISLEADING / 2 * misleading[led]
+        cost[led] += 1000 * crossings + LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
         cost[ring >= apart_from] += SET_APART
         best = int(np.argmin(cost))
         x0, y0, x1, _ = candidates[best]

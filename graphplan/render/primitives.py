@@ -10,6 +10,7 @@ in one place.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import unicodedata
@@ -226,7 +227,14 @@ def character_width(character: str) -> float:
 def text_width(text: str, size: float, weight: str = "normal") -> float:
     """How wide ``text`` is drawn at cap height ``size`` (mm), generously, so that its box holds it."""
     widening = _BOLD_WIDENING if weight == "bold" else 1.0
-    return widening * size * FONT_SIZE_PER_CAP * sum(character_width(c) for c in text)
+    return widening * size * FONT_SIZE_PER_CAP * em_width(text)
+
+
+@functools.lru_cache(maxsize=8192)
+def em_width(text: str) -> float:
+    """How wide ``text`` is in em of its font, generously (remembered: a sheet measures its labels at every
+    spot it tries)."""
+    return sum(character_width(c) for c in text)
 
 
 def text_extent(text: Text) -> tuple[float, float, float, float]:

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from markdown_it.tree import SyntaxTreeNode
 
-from ..render.primitives import FONT_SIZE_PER_CAP, character_width, has_wide
+from ..render.primitives import FONT_SIZE_PER_CAP, em_width, has_wide
 from ..render.wrapping import fitted
 from .markdown import plain, table_parts, tree
 from .symbols import Symbol, pieces
@@ -128,11 +128,6 @@ def _symbol(symbol: Symbol) -> str:
             + (f"\\textsuperscript{{{component}}}" if component else ""))
 
 
-def _width(text: str) -> float:
-    """``text``'s width in em, as the drawings estimate their labels' (generously)."""
-    return sum(character_width(c) for c in text)
-
-
 @dataclass(frozen=True)
 class _Layout:
     """How a table is set: its type size (a LaTeX size command and pt); each column's spec, side it is aligned
@@ -157,11 +152,11 @@ def _layout(header: list[str], rows: list[list[str]], sides: tuple[str, ...]) ->
     count = len(header)
 
     def longest_word(texts) -> float:
-        return max((_width(word) for text in texts for word in text.split()), default=0.0)
+        return max((em_width(word) for text in texts for word in text.split()), default=0.0)
 
     cells = [[row[k] for row in rows if k < len(row)] for k in range(count)]
     least = [longest_word([header[k], *cells[k]]) for k in range(count)]
-    natural = [max(least[k], min(_width(header[k]), _HEADER_LINE_EM), *map(_width, cells[k])) for k in range(count)]
+    natural = [max(least[k], min(em_width(header[k]), _HEADER_LINE_EM), *map(em_width, cells[k])) for k in range(count)]
 
     def room(points: float) -> float:  # the line less the columns' gaps, in em of the size
         return (_LINE_PT - 2.0 * _COLUMN_GAP_PT * count) / points
