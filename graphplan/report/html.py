@@ -61,12 +61,13 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
 
     ``symbols`` sets the indices of the textbook's symbols (``VBA``, ``ω3``) as subscripts.
     """
-    from .markdown import parser
+    from .markdown import parser, tokens
 
-    renderer = parser()
+    markdown = parser()
     if symbols:
-        renderer.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
-    body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', renderer.render(markdown_text))
+        markdown.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
+    rendered = markdown.renderer.render(list(tokens(markdown_text)), markdown.options, {})
+    body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', rendered)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'

@@ -1,6 +1,6 @@
 """The reports' one Markdown parser: markdown-it-py's CommonMark with tables, raw HTML off (the note's text is data).
 
-The HTML page renders markdown-it's tokens with its own renderer; the LaTeX
+The text is parsed once (:func:`tokens`). The HTML page renders markdown-it's tokens with its own renderer; the LaTeX
 (:mod:`graphplan.report.latex`) and the Word document
 (:mod:`graphplan.report.word`) walk the syntax tree built of them
 (:func:`tree`), whose nodes are named by their token types: ``heading``
@@ -12,9 +12,11 @@ The HTML page renders markdown-it's tokens with its own renderer; the LaTeX
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 from markdown_it import MarkdownIt
+from markdown_it.token import Token
 from markdown_it.tree import SyntaxTreeNode
 
 # A table column's alignment, as markdown-it writes it on its cells, and as the side it is set to.
@@ -26,9 +28,16 @@ def parser() -> MarkdownIt:
     return MarkdownIt("commonmark", {"html": False}).enable("table")
 
 
+@functools.lru_cache(maxsize=8)
+def tokens(markdown_text: str) -> tuple[Token, ...]:
+    """markdown-it's tokens of ``markdown_text``, parsed once for all the writers of a run (the note is long,
+    and the HTML, the LaTeX and the Word document each read it); neither renderer nor tree changes them."""
+    return tuple(parser().parse(markdown_text))
+
+
 def tree(markdown_text: str) -> SyntaxTreeNode:
     """The syntax tree of ``markdown_text``: its root's children are the blocks in order."""
-    return SyntaxTreeNode(parser().parse(markdown_text))
+    return SyntaxTreeNode(list(tokens(markdown_text)))
 
 
 @dataclass(frozen=True)
