@@ -1,14 +1,14 @@
 """The reports' one Markdown parser: markdown-it-py's CommonMark with tables, raw HTML off (the note's text is data).
 
-The text is parsed once (:func:`tokens`). The HTML page renders markdown-
-it's tokens with its own renderer; the LaTeX (:mod:`graphplan.report.latex`)
-and the Word document (:mod:`graphplan.report.word`) walk the syntax tree
-built of them (:func:`tree`), whose nodes are named by their token types:
-``heading`` (tag ``h1`` …), ``paragraph``, ``bullet_list``,
-``ordered_list``, ``list_item``, ``table`` (``thead``, ``tbody``, ``tr``,
-``th``, ``td``), ``hr``; inside a block, ``inline`` with ``text``,
-``strong``, ``em``, ``code_inline``, ``softbreak``, ``hardbreak`` and
-``link``.
+The text is parsed once (:func:`tokens`). The HTML page renders
+markdown-it's tokens with its own renderer; the LaTeX
+(:mod:`graphplan.report.latex`) and the Word document
+(:mod:`graphplan.report.word`) walk the syntax tree built of them
+(:func:`tree`), whose nodes are named by their token types: ``heading`` (tag
+``h1`` …), ``paragraph``, ``bullet_list``, ``ordered_list``, ``list_item``,
+``table`` (``thead``, ``tbody``, ``tr``, ``th``, ``td``), ``hr``; inside a
+block, ``inline`` with ``text``, ``strong``, ``em``, ``code_inline``,
+``softbreak``, ``hardbreak`` and ``link``.
 """
 
 from __future__ import annotations
