@@ -1142,7 +1142,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     notes = []
     integrator = _Integrator(equations, start, chosen, rtol, atol)
     # A motor too weak to start the machine where it stands: one turn's time at rest shows it.
-    integrator.eq.clock = start.time
+    equations.clock = start.time
     never_starts = equations.motor_on(start.time) and integrator.held_at_rest()
     cycles: tuple[Cycle, ...] = ()
     steady = None

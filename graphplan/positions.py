@@ -14,6 +14,7 @@ that a scene can be given a swing inside it.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -128,7 +129,7 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
     speed, _ = working_speed(solve(mechanism, steps, reference))
 
-    def speeds_at(angles) -> np.ndarray:
+    def speeds_at(angles: Sequence[float]) -> np.ndarray:
         return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]
 
     found = {}
@@ -147,7 +148,7 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
     return found["working"], found["idle"]
 
 
-def _zero_between(speeds_at, lo: float, hi: float) -> float:
+def _zero_between(speeds_at: Callable[[Sequence[float]], np.ndarray], lo: float, hi: float) -> float:
     """The zero of the speed between ``lo`` and ``hi``, where its sign changes, to machine precision.
 
     One vectorised solve at the interpolant's Chebyshev points and numpy's roots of it, where the scalar
@@ -164,7 +165,7 @@ def _zero_between(speeds_at, lo: float, hi: float) -> float:
         # Half a degree off, the speed is its slope times the bracket: this asks for the root to ~1e-11 rad.
         if abs(at_root) <= 1e-9 * max(abs(at_low), abs(at_high)):
             return float(inside[0])
-    from scipy.optimize import brentq  # imported here: it costs a third of a cold run
+    from scipy.optimize import brentq  # imported here: its import costs a third of a cold run
 
     return float(brentq(lambda angle: float(speeds_at([angle])[0]), lo, hi, xtol=1e-15,
                         rtol=4 * np.finfo(float).eps, maxiter=200))
