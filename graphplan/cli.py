@@ -7,6 +7,7 @@ and exit status 2, never a traceback.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -104,6 +105,11 @@ def _check(path: Path) -> int:
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")
+    working = analysis.positions.working_turn(mechanism.driver.sense)
+    if working is not None:
+        idle = 2 * math.pi - working
+        print(f"strokes: working φw = {math.degrees(working):.2f}°, idle φi = {math.degrees(idle):.2f}°, "
+              f"K = φw/φi = {working / idle:.4f}")
     _print_warnings(analysis)
     return 0
 

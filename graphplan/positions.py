@@ -43,8 +43,7 @@ class PositionSet:
 
     ``extremes`` are the driver coordinates where the working stroke starts
     and where it ends (the idle stroke starts), when the scene names the
-    working link; ``working_fraction`` is the share of the driver's cycle
-    the working stroke takes.
+    working link.
     """
 
     values: np.ndarray
@@ -52,6 +51,14 @@ class PositionSet:
     strokes: tuple[str, ...] | None
     reference: Reference
     extremes: tuple[float, float] | None
+
+    def working_turn(self, sense: int) -> float | None:
+        """How far the crank turns (rad) in the working stroke, turning the way ``sense`` says (+1 ccw);
+        None without extremes.  The idle stroke takes the rest of the turn."""
+        if self.extremes is None:
+            return None
+        start, end = self.extremes
+        return (sense * (end - start)) % (2.0 * math.pi)
 
 
 def make_positions(mechanism: Mechanism) -> PositionSet:

@@ -359,3 +359,20 @@ def test_a_zero_is_the_root_of_the_interpolant_where_the_speed_is_smooth_and_bre
     assert found == pytest.approx(root, abs=1e-14)
     assert found == brentq(lambda a: float(kinked([a])[0]), lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps,
                            maxiter=200)
+
+
+def test_check_and_the_note_give_the_ratchet_s_strokes_and_their_ratio_from_its_dead_centres(tmp_path, capsys):
+    import re
+
+    from graphplan.cli import main
+
+    working = math.degrees((EXTENDED - FOLDED) % (2 * math.pi))   # the crank turns clockwise, extended to folded
+    idle = 360.0 - working
+    assert main(["check", str(RATCHET)]) == 0
+    line = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("strokes:"))
+    shown = [float(value) for value in re.findall(r"= ([\d.]+)", line)]
+    assert shown == pytest.approx([working, idle, working / idle], abs=6e-3)
+    assert main(["run", str(RATCHET), "--out", str(tmp_path / "out"), "--only", "note", "--locale", "en"]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    said = re.search(r"φw = ([\d.]+)° in the working stroke and φi = ([\d.]+)° .* K = φw/φi = ([\d.]+)\.", note)
+    assert [float(value) for value in said.groups()] == pytest.approx([working, idle, working / idle], rel=1e-4)
