@@ -362,6 +362,7 @@ def test_a_zero_is_the_root_of_the_interpolant_where_the_speed_is_smooth_and_bre
 
 
 def test_check_and_the_note_give_the_ratchet_s_strokes_and_their_ratio_from_its_dead_centres(tmp_path, capsys):
+    import json
     import re
 
     from graphplan.cli import main
@@ -376,3 +377,6 @@ def test_check_and_the_note_give_the_ratchet_s_strokes_and_their_ratio_from_its_
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     said = re.search(r"φw = ([\d.]+)° in the working stroke and φi = ([\d.]+)° .* K = φw/φi = ([\d.]+)\.", note)
     assert [float(value) for value in said.groups()] == pytest.approx([working, idle, working / idle], rel=1e-4)
+    strokes = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["strokes"]
+    assert [strokes["working_deg"], strokes["idle_deg"], strokes["time_ratio"]] == pytest.approx(
+        [working, idle, working / idle], rel=1e-10)
