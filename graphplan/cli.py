@@ -105,9 +105,9 @@ def _check(path: Path) -> int:
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")
-    working = analysis.positions.working_turn(mechanism.driver.sense)
-    if working is not None:
-        idle = 2 * math.pi - working
+    turns = analysis.positions.stroke_turns(mechanism.driver.sense)
+    if turns is not None:
+        working, idle = turns
         print(f"strokes: working φw = {math.degrees(working):.2f}°, idle φi = {math.degrees(idle):.2f}°, "
               f"K = φw/φi = {working / idle:.4f}")
     _print_warnings(analysis)

@@ -52,13 +52,15 @@ class PositionSet:
     reference: Reference
     extremes: tuple[float, float] | None
 
-    def working_turn(self, sense: int) -> float | None:
-        """How far the crank turns (rad) in the working stroke, turning the way ``sense`` says (+1 ccw);
-        None without extremes.  The idle stroke takes the rest of the turn."""
+    def stroke_turns(self, sense: int) -> tuple[float, float] | None:
+        """How far the crank turns (rad) in the working stroke and in the idle one, turning the way ``sense``
+        says (+1 ccw); None without extremes.  Their ratio is the coefficient K of the output link's mean
+        speed change."""
         if self.extremes is None:
             return None
         start, end = self.extremes
-        return (sense * (end - start)) % (2.0 * math.pi)
+        working = (sense * (end - start)) % (2.0 * math.pi)
+        return working, 2.0 * math.pi - working
 
 
 def make_positions(mechanism: Mechanism) -> PositionSet:

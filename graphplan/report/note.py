@@ -207,9 +207,9 @@ class _Note:
             scale = format_scale(scene.drawing.length_scale).replace(".", self.mark)
             rows.append(["μl", f"{scale} {self.text['unit_length_scale']}"])
         self.table(self.t("note_initial_data_caption"), [self.t("column_quantity"), self.t("column_value")], rows)
-        working = self.analysis.positions.working_turn(driver.sense)
-        if working is not None:
-            idle = 2.0 * math.pi - working
+        turns = self.analysis.positions.stroke_turns(driver.sense)
+        if turns is not None:
+            working, idle = turns
             self.para(self.t("note_strokes", link=scene.positions.working.link, working=self.n(math.degrees(working)),
                              idle=self.n(math.degrees(idle)), ratio=self.n(working / idle, 4)))
 

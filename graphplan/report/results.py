@@ -99,8 +99,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     }
     if positions.extremes is not None:
         document["extremes_deg"] = [number(math.degrees(value) % 360.0) for value in positions.extremes]
-        working = positions.working_turn(mechanism.driver.sense)
-        idle = 2.0 * math.pi - working
+        working, idle = positions.stroke_turns(mechanism.driver.sense)
         document["strokes"] = {"working_deg": number(math.degrees(working)), "idle_deg": number(math.degrees(idle)),
                                "time_ratio": number(working / idle)}
     document["positions"] = entries
