@@ -446,9 +446,11 @@ def pivot_friction_moment(load: ArrayLike, f: ArrayLike, outer_radius: ArrayLike
     outer = _positive("outer_radius", outer_radius)
     inner = _nonnegative("inner_radius", inner_radius)
     _require("inner_radius", inner, inner < outer, "must be < outer_radius")
+    # The coefficient multiplies last: the moment then keeps its order between the two contacts for any f,
+    # a tiny one too, where a product of it and 2/3 would round to zero first.
     if _choice("contact", contact, tuple(_CLOSE_FIT)) == "new":
-        return _out(2 / 3 * coefficient * q * (outer**3 - inner**3) / (outer**2 - inner**2))
-    return _out(coefficient * q * (outer + inner) / 2)
+        return _out(coefficient * (2 / 3 * q * (outer**3 - inner**3) / (outer**2 - inner**2)))
+    return _out(coefficient * (q * (outer + inner) / 2))
 
 
 def cone_friction_moment(load: ArrayLike, f: ArrayLike, outer_radius: ArrayLike, inner_radius: ArrayLike,
