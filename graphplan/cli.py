@@ -17,6 +17,7 @@ from .errors import GraphplanError, SceneError
 
 if TYPE_CHECKING:
     from .analysis import Analysis
+    from .scene import Scene
 
 EXAMPLES = """\
 examples:
@@ -94,8 +95,10 @@ def _check(path: Path) -> int:
     scene = load(path)
     if not scene.has_linkage:
         tables = [name for name in ("dynamics", "balancing", "vibration") if getattr(scene, name) is not None]
+        pieces = _pieces(scene, None)
         print(f"{path}: ok")
         print(f"no mechanism; {', '.join(tables)}")
+        print(pieces)
         return 0
     # The whole analysis, not only the structure: a position the mechanism cannot reach, or a reading of
     # [measured] that names no segment of its plan, is refused here as the run would refuse it.
@@ -110,8 +113,19 @@ def _check(path: Path) -> int:
         working, idle = turns
         print(f"strokes: working φw = {math.degrees(working):.2f}°, idle φi = {math.degrees(idle):.2f}°, "
               f"K = φw/φi = {working / idle:.4f}")
+    print(_pieces(scene, analysis))
     _print_warnings(analysis)
     return 0
+
+
+def _pieces(scene: Scene, analysis: Analysis | None) -> str:
+    """What ``run`` would write, and each piece it would leave out for want of data, with what it needs."""
+    from .deliverables import PIECES, chosen, missing
+
+    pieces = chosen(scene, analysis)  # an [output] include the scene cannot give is refused here
+    wanting = [f"{piece} ({reason})" for piece in PIECES if piece not in pieces and piece not in ("balancing", "vibration")
+               and (reason := missing(scene, analysis, piece)) is not None]
+    return f"run writes: {', '.join(pieces)}" + (f"\nleft out: {'; '.join(wanting)}" if wanting else "")
 
 
 def _print_warnings(analysis: Analysis) -> None:

@@ -147,6 +147,31 @@ def test_check_refuses_a_reading_that_names_no_segment_of_the_plan_as_the_run_do
     assert capsys.readouterr().err == checked
 
 
+def test_check_tells_what_run_writes_and_what_it_leaves_out_for_want_of_data(tmp_path, capsys):
+    """The ratchet without its masses and loads: check says the forces are left out and why, and the run
+    writes no force sheet; with them, check lists the forces and the run writes them."""
+    import tomllib
+
+    from test_scene_errors import to_toml
+
+    document = tomllib.loads(Path(FIXTURE).read_text(encoding="utf-8"))
+    for key in ("links", "loads", "measured"):
+        document.pop(key, None)
+    bare = tmp_path / "bare.toml"
+    bare.write_text(to_toml(document), encoding="utf-8")
+    for scene, has_forces in ((FIXTURE, True), (str(bare), False)):
+        assert main(["check", scene]) == 0
+        lines = capsys.readouterr().out.splitlines()
+        pieces = next(line for line in lines if line.startswith("run writes: ")).removeprefix("run writes: ").split(", ")
+        left_out = next((line for line in lines if line.startswith("left out: ")), "")
+        assert ("forces" in pieces) is has_forces
+        assert ("forces (needs masses or loads" in left_out) is not has_forces
+        out = tmp_path / f"out-{has_forces}"
+        assert main(["run", scene, "--out", str(out)]) == 0
+        capsys.readouterr()
+        assert bool(list(out.glob("forces_*.svg"))) is has_forces
+
+
 def test_check_prints_the_structure_formula(capsys):
     assert main(["check", FIXTURE]) == 0
     printed = capsys.readouterr().out
