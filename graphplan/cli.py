@@ -123,8 +123,10 @@ def _pieces(scene: Scene, analysis: Analysis | None) -> str:
     from .deliverables import PIECES, chosen, missing
 
     pieces = chosen(scene, analysis)  # an [output] include the scene cannot give is refused here
-    wanting = [f"{piece} ({reason})" for piece in PIECES if piece not in pieces and piece not in ("balancing", "vibration")
-               and (reason := missing(scene, analysis, piece)) is not None]
+    # A scene without a mechanism leaves out all the mechanism's pieces; the tables of their own need no word.
+    looked_for = [piece for piece in PIECES if analysis is not None and piece not in ("balancing", "vibration")]
+    wanting = [f"{piece} ({reason})" for piece in looked_for
+               if piece not in pieces and (reason := missing(scene, analysis, piece)) is not None]
     return f"run writes: {', '.join(pieces)}" + (f"\nleft out: {'; '.join(wanting)}" if wanting else "")
 
 

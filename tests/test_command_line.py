@@ -170,6 +170,13 @@ def test_check_tells_what_run_writes_and_what_it_leaves_out_for_want_of_data(tmp
         assert main(["run", scene, "--out", str(out)]) == 0
         capsys.readouterr()
         assert bool(list(out.glob("forces_*.svg"))) is has_forces
+    # A rotor without a mechanism: what it writes, without a list of every mechanism's piece it lacks.
+    rotor = tmp_path / "rotor.toml"
+    rotor.write_text('[scene]\ntitle = "Rotor"\n[balancing]\nmasses = [ { mass = 18.0, radius = 0.05, angle = 0.0, '
+                     'plane = 0.0 } ]\ncorrection_radius = 0.05\n', encoding="utf-8")
+    assert main(["check", str(rotor)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert "run writes: balancing" in lines and not any(line.startswith("left out") for line in lines)
 
 
 def test_check_prints_the_structure_formula(capsys):
