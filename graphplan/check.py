@@ -187,7 +187,7 @@ def _sliding_readings(mechanism: Mechanism, plan: Plan, symbol: str,
     """
     result = []
     for pair in sliding_pairs(mechanism, positions):
-        if pair.slider not in plan.sliding:
+        if pair.slider not in plan.slide_ends:
             continue
         laid = _laid_along_guide(plan, plan.slide_ends[pair.slider])
         if laid is None:

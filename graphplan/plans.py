@@ -191,9 +191,9 @@ class Plan:
     ``images`` maps each mechanism point to its plan letter; ``rates`` holds
     the angular velocity (velocity plan) or angular acceleration
     (acceleration plan) of each link as read off the plan, ccw positive;
-    ``sliding`` is each slider's velocity (or acceleration) relative to its guide, and ``slide_ends`` the
-    plan's letters of the vector that lays it off, from and to (which tells two equal slides apart, both
-    zero at an extreme);
+    ``slide_ends`` are each slider's plan letters, from and to, of the vector that lays off its velocity
+    (or acceleration) relative to its guide (:attr:`sliding`): the letters tell two equal slides apart,
+    both zero at an extreme;
     ``members`` lists each link's points on the plan as (position, letter);
     ``auxiliary`` the construction's own points of the mechanism that no
     scene names (Assur's special point ``Σ6`` of a triad), where they lie (m).
@@ -205,13 +205,17 @@ class Plan:
     steps: tuple[Step, ...]
     images: Mapping[str, str]
     rates: Mapping[int, float]
-    sliding: Mapping[int, complex]
+    slide_ends: Mapping[int, tuple[str, str]]
     members: Mapping[int, tuple[tuple[complex, str], ...]] = field(default_factory=dict)
-    slide_ends: Mapping[int, tuple[str, str]] = field(default_factory=dict)
     auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
     def mm(self, letter: str) -> complex:
         return self.points[letter] / self.scale
+
+    @property
+    def sliding(self) -> dict[int, complex]:
+        """Each slider's velocity (or acceleration) relative to its guide, SI: its slide's vector on the plan."""
+        return {slider: self.points[end] - self.points[start] for slider, (start, end) in self.slide_ends.items()}
 
     def value(self, point: str) -> complex:
         """The absolute velocity or acceleration of a mechanism point, SI."""
@@ -237,7 +241,6 @@ class Builder:
     images: dict[str, str] = field(default_factory=dict)
     link_images: dict[int, list[tuple[complex, str]]] = field(default_factory=dict)
     turns_with: dict[int, int] = field(default_factory=dict)
-    sliding: dict[int, complex] = field(default_factory=dict)
     slide_ends: dict[int, tuple[str, str]] = field(default_factory=dict)
     auxiliary: dict[str, complex] = field(default_factory=dict)
 
@@ -260,7 +263,6 @@ class Builder:
 
     def slides(self, slider: int, start: str, end: str) -> None:
         """Record that link ``slider`` moves along its guide as the plan's vector from ``start`` to ``end``."""
-        self.sliding[slider] = self.points[end] - self.points[start]
         self.slide_ends[slider] = (start, end)
 
     def mark(self, letter: str, value: complex) -> str:
@@ -429,9 +431,9 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
         extent = max(abs(a - b) for a in board.points.values() for b in board.points.values())
         scale = standard_scale(max(extent, 1e-300) / PLAN_FIELD_MM)
     return Plan(kind=board.kind, scale=scale, points=dict(board.points), steps=tuple(board.steps),
-                images=dict(board.images), rates=rates, sliding=dict(board.sliding),
+                images=dict(board.images), rates=rates, slide_ends=dict(board.slide_ends),
                 members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()},
-                auxiliary=dict(board.auxiliary), slide_ends=dict(board.slide_ends))
+                auxiliary=dict(board.auxiliary))
 
 
 __all__ = [

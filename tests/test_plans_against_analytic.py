@@ -194,7 +194,8 @@ def test_each_slide_is_read_off_its_own_vector_even_where_two_slides_are_equal()
     # readings took the first zero vector laid along a guide (b4 → b), and the slide on the frame (p → b) was
     # read as link 5's; they are found by the letters their group recorded.
     m, pos, _, vp, ap, _ = constructed("tangent_mechanism_prp", 0)
-    equal = dataclasses.replace(vp, sliding={slider: 0j for slider in vp.sliding})
+    equal = dataclasses.replace(vp, points={**vp.points, "b": 0j, "b4": 0j})  # both of B's slides exactly zero
+    assert equal.sliding[5] == equal.sliding[6] == 0j
     table = check.readings(m, {"velocity": equal, "acceleration": ap}, pos)
     read = {r.slide.slider: set(r.segment) for r in table if r.plan == "velocity" and r.slide is not None}
     assert read == {slider: set(ends) for slider, ends in vp.slide_ends.items()}

@@ -334,7 +334,6 @@ def _name(block: _Block, fields: TitleBlockFields, box: tuple[float, float, floa
 _SPACES = re.compile(r"\s+")
 
 
-
 def _tokens(value: str) -> list[tuple[str, bool]]:
     """Words and ideographs of ``value``, each with whether a space stands before it."""
     tokens: list[tuple[str, bool]] = []
