@@ -34,6 +34,7 @@ from graphplan.render.primitives import Arrow, Layer, Polyline, Text, bounds, bo
 from graphplan.render.sheet import (
     Details,
     Panel,
+    course_panels,
     course_sheets,
     diagrams_panel,
     forces_sheet,
@@ -471,6 +472,58 @@ def test_a_force_sheet_too_tall_in_one_column_stands_whole_in_two_under_its_head
                  if f"forces-{analysis.plans[0].number}" in sheet.panels)
     written = [text.text for text in texts(sheet.layers)]
     assert f"{analysis.scene.title}: force analysis, position {analysis.plans[0].number}" in written
+
+
+def test_a_force_sheet_no_sheet_holds_whole_goes_in_parts_in_order_each_under_its_heading(analyses):
+    """On A1 the Stephenson six-bar's force sheets are too big in any arrangement: each goes on two sheets,
+    its groups in the order they were solved and the lever last, each part whole under a heading, where
+    they used to go drawing by drawing, jumbled, without one."""
+    analysis = analyses["stephenson_six_bar"]
+    sheets = course_sheets(analysis, "A1")
+    force_sheets = [sheet for sheet in sheets if any(name.startswith("forces-") for name in sheet.panels)]
+    assert all(re.fullmatch(r"forces-\d+(-\d+)?", name) for sheet in force_sheets for name in sheet.panels)
+    rows = [f"body-{force_layout.group_id(group.label)}" for group in analysis.plans[0].forces.groups] + ["lever"]
+    seen = []
+    for position in analysis.plans:
+        parts = [(sheet.number, name) for sheet in force_sheets for name in sheet.panels
+                 if re.fullmatch(rf"forces-{position.number}(-\d+)?", name)]
+        assert len(parts) >= 2
+        seen += [number for number, _ in parts]
+        order = []
+        for k, (number, name) in enumerate(sorted(parts)):
+            sheet = sheets[number - 1]
+            assert name == (f"forces-{position.number}" if k == 0 else f"forces-{position.number}-{k + 1}")
+            heading = [text.text for text in texts([layer(sheet, f"{name}-sheet-title")]) if text.weight == "bold"]
+            title = f"Force analysis, position {position.number}"
+            assert " ".join(heading) == (title if k == 0 else f"{title} (continued)")
+            order += [row for row in rows if any(item.name == f"{name}-{row}-caption" for item in sheet.layers)]
+        assert order == rows
+    assert seen == sorted(seen)
+    # The force sheet whole, as forces_N.svg has it, is still there for the drawing on its own.
+    whole = course_panels(analysis).named(f"forces-{analysis.plans[0].number}")
+    assert {f"{row}-caption" for row in rows} <= {item.name for item in whole.layers}
+
+
+def test_a_force_sheet_too_big_in_two_columns_stands_whole_with_each_polygon_under_its_group(analyses):
+    """On A1 the shaper's force sheet of position 10 is too tall in two columns; with each group's polygon
+    under it, the groups and the lever side by side, it stands whole on one sheet under its title."""
+    analysis = analyses["shaper_six_bar"]
+    position = analysis.plans[1]
+    form = form_of(analysis.scene.locale)
+    one, two = force_layout.arrangements(drawings.force_sheet(analysis, position), (1, 2))
+    assert not holds("A1", form, *size_of(one.layers)) and not holds("A1", form, *size_of(two.layers))
+    name = f"forces-{position.number}"
+    (sheet,) = [sheet for sheet in course_sheets(analysis, "A1")
+                if any(panel.startswith(name) for panel in sheet.panels)]
+    assert [panel for panel in sheet.panels if panel.startswith(name)] == [name]
+    assert f"{analysis.scene.title}: force analysis, position {position.number}" in [
+        text.text for text in texts(sheet.layers)]
+    captions = {item.name.removeprefix(name + "-").removesuffix("-caption"): item.items[0].at
+                for item in sheet.layers if item.name.startswith(name + "-") and item.name.endswith("-caption")}
+    for group in position.forces.groups:
+        key = force_layout.group_id(group.label)
+        body, polygon = captions[f"body-{key}"], captions[f"polygon-{key}"]
+        assert polygon[0] == pytest.approx(body[0]) and polygon[1] < body[1]
 
 
 def size_of(layers):

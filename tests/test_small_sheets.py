@@ -24,6 +24,7 @@ from graphplan.kinematic_diagrams import of_analysis
 from graphplan.render import forces as force_layout
 from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import force_sheet, plan_scale_text, with_length_scale
+from graphplan.render.force_rows import CAPTION_WIDTH_MM
 from graphplan.render.formats import FORMATS, page_geometry
 from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent, text_width
 from graphplan.render.sheet import (
@@ -108,14 +109,25 @@ def caption_of(sheet, drawing):
     return " ".join(text.text for text in texts([layer(sheet, f"{drawing}-caption")]))
 
 
+def drawing_on(sheets, position, drawing):
+    """The sheet that holds ``drawing`` of ``position``'s force sheet and the drawing's name there, whichever
+    part of the force sheet (``forces-5``, ``forces-5-2``) or piece of it (``forces-5-lever``) it stands in."""
+    pattern = re.compile(rf"forces-{position.number}(-\d+)?-{drawing}")
+    for sheet in sheets:
+        for item in sheet.layers:
+            found = pattern.match(item.name)
+            if found and item.name == f"{found.group(0)}-caption":
+                return sheet, found.group(0)
+    raise AssertionError(f"no sheet holds {drawing} of position {position.number}")
+
+
 def check_group_scale(analysis, sheets):
     """Each group II(3,4) cut free is drawn at the μl its caption and its sheet's scale box give: its pins stand
     the scene's lengths apart at that scale. Returns those scales."""
     group = next(group for group in analysis.scene.groups if group.kind == "RRR")
     scales = []
     for position in analysis.plans:
-        name = f"forces-{position.number}-body-II-3-4"
-        sheet = next(sheet for sheet in sheets if name in sheet.panels)
+        sheet, name = drawing_on(sheets, position, "body-II-3-4")
         drawn_at = float(re.search(r"μl = ([\d.]+) м/мм", caption_of(sheet, name)).group(1))
         links = layer(sheet, f"{name}-links")
         pins = [item.centre for item in links.items if isinstance(item, Circle) and item.radius == pytest.approx(1.3)]
@@ -132,8 +144,7 @@ def check_lever_scale(analysis, sheets):
     and the balancing moment it finds is the lever's own. Returns those scales."""
     scales = []
     for position in analysis.plans:
-        name = f"forces-{position.number}-lever"
-        sheet = next(sheet for sheet in sheets if name in sheet.panels)
+        sheet, name = drawing_on(sheets, position, "lever")
         caption = caption_of(sheet, name)
         drawn_at = float(re.search(r"μV = ([\d.]+) ", caption).group(1))
         if drawn_at == pytest.approx(position.velocity.scale, rel=1e-3):
@@ -278,7 +289,7 @@ def test_every_caption_line_of_a_force_sheet_keeps_within_its_drawing_or_the_cap
             caption = next(item for item in arranged.layers if item.name == f"{name}-caption")
             drawing = [item for item in arranged.layers if item.name.startswith(f"{name}-") and item is not caption]
             x0, _, x1, _ = bounds(drawing)
-            limit = max(x1 - x0, force_layout.CAPTION_WIDTH_MM)
+            limit = max(x1 - x0, CAPTION_WIDTH_MM)
             for text in caption.items:
                 assert isinstance(text, Text)
                 assert text_width(text.text, text.size, text.weight) <= limit + 1e-9, text.text

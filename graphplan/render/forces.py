@@ -15,7 +15,8 @@ polygons side by side.  The last row is Zhukovsky's lever: the velocity
 plan turned 90° clockwise, the loads at the images of their points with
 their arms from the pole, the balancing force at the driver's image.  A
 sheet too low for the rows in one column takes them in two
-(:func:`arrangements`).
+(:func:`arrangements`); how the rows stand on a sheet too small for
+either is :mod:`graphplan.render.force_rows`' (:func:`rows`).
 
 The sheet of the force analysis with friction is the same sheet of the
 plan with friction, with the textbook's construction at every journal with
@@ -50,9 +51,10 @@ from ..motion import Motion
 from ..plans import Plan
 from ..scales import format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
+from .force_rows import Drawing, Heading, Rows
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
 from .linkage import outline_points
-from .plans import CAPTION_GAP_MM, CAPTION_SIZE, GAP_MM, RUN_ON_MM, TITLE_SIZE, ZERO_MM, Arrangement
+from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
 from .primitives import (
     MAIN,
@@ -62,18 +64,15 @@ from .primitives import (
     Polyline,
     Primitive,
     Stroke,
-    Text,
     bounds_of,
     curved_arrow,
     dot_marker,
     moved_layers,
     pin,
     slider_block,
-    text_width,
 )
 from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
-from .wrapping import fitted
 
 # The longest force arrow on a group cut free and on the lever (mm): the panel's force scale is the
 # standard one that draws the largest force about a quarter of the drawing's size, within these bounds.
@@ -96,15 +95,12 @@ TANGENT_RUN_MM = 9.0
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
 PER_LINE = 4
-# A caption runs no wider than its drawing or than this (mm), whichever is wider: an upright A4 holds it.
-CAPTION_WIDTH_MM = 160.0
 # The captions' lettering where the usual does not fit a small sheet: the next size down of GOST 2.304 and
 # ISO 3098 (the usual is plans.CAPTION_SIZE, 5 mm).
 SMALL_CAPTION_SIZE = 3.5
 # Size of the letters of points and of the names of forces (cap height, mm).
 POINT_SIZE = 3.5
 NAME_SIZE = 3.2
-CAPTION_LINE = 1.6
 
 _LINK = Stroke(0.7)
 _LOAD = Stroke(0.45)
@@ -135,7 +131,9 @@ class ForceSheet:
     the sliding pairs there); ``forces`` and ``lever`` the records of the
     force analysis; ``velocity`` the velocity plan the lever is turned from;
     ``length_scale`` is μl (m/mm); ``text`` the locale's strings;
-    ``velocity_scale`` the line of μV as the plan sheet writes it.
+    ``velocity_scale`` the line of μV as the plan sheet writes it;
+    ``part_title`` heads the first part of the sheet where it stands in
+    parts on several sheets (the title without the mechanism's name).
     ``friction`` holds the pairs with friction when ``forces`` is the plan
     with friction; ``without_friction`` is then the balancing load without
     it and ``efficiency`` η (NaN where friction turns the power flow round).
@@ -157,6 +155,7 @@ class ForceSheet:
     title: str
     text: Mapping[str, str]
     velocity_scale: str
+    part_title: str = ""
     friction: tuple[FrictionPair, ...] = ()
     without_friction: float | None = None
     efficiency: float | None = None
@@ -169,15 +168,6 @@ class ForceSheet:
         if self.lever_scale is None:
             return self.velocity_scale
         return self.text["velocity_scale"].format(value=format_scale(self.lever_scale))
-
-
-@dataclass(frozen=True)
-class Panel:
-    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption."""
-
-    name: str
-    layers: list[Layer]
-    caption: tuple[str, ...]
 
 
 def layout(sheet: ForceSheet) -> list[Layer]:
@@ -194,83 +184,26 @@ def arrangements(sheet: ForceSheet, columns: Sequence[int]) -> list[Arrangement]
     """The sheet of :func:`arrange` with its rows down each number of ``columns`` in turn (1 or 2), in their
     order, split where the tallest column is least tall: the same drawings, made once, for a sheet too low
     for them in one column."""
-    rows: list[list[Panel]] = []
+    made = rows(sheet)
+    return [made.arranged(made.in_columns(count)) for count in columns]
+
+
+def rows(sheet: ForceSheet) -> Rows:
+    """The drawings of the sheet in their rows under its heading, to stand as a sheet's room lets them."""
+    drawings: list[list[Drawing]] = []
     for group in sheet.forces.groups:
-        rows.append([_body(sheet, group), _polygons(sheet, group)])
+        drawings.append([_body(sheet, group), _polygons(sheet, group)])
     if sheet.lever is not None:
-        rows.append([_lever(sheet, sheet.lever)])
-    blocks = [_row(row, sheet.caption_size) for row in rows]
-    return [_arranged(sheet, blocks, count) for count in columns]
-
-
-def _arranged(sheet: ForceSheet, blocks: Sequence[_Row], columns: int) -> Arrangement:
-    layers: list[Layer] = []
-    fields: dict[str, tuple[float, float, float, float]] = {}
-    left = 0.0
-    for column in _columns([block.height for block in blocks], columns):
-        top = 0.0
-        for block in (blocks[k] for k in column):
-            layers.extend(moved_layers(block.layers, left, top))
-            fields.update({name: (x0 + left, y0 + top, x1 + left, y1 + top)
-                           for name, (x0, y0, x1, y1) in block.fields.items()})
-            top -= block.height + GAP_MM
-        left += max(blocks[k].width for k in column) + GAP_MM
-    size = sheet.caption_size
-    left, _, _, upper = bounds_of(item for layer in layers for item in layer.items)
+        drawings.append([_lever(sheet, sheet.lever)])
     text = sheet.text
     # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                         *([text["force_scale"].format(value=format_scale(sheet.forces.scale))]
                           if sheet.forces.one_scale else []),
                         sheet.lever_scale_line))
-    top_line = upper + 8.0
-    layers.append(Layer("sheet-title", (
-        Text((left, top_line + 1.6 * TITLE_SIZE), sheet.title, TITLE_SIZE, "start", weight="bold"),
-        Text((left, top_line), scales, size, "start"))))
-    return Arrangement(layers, fields)
-
-
-@dataclass(frozen=True)
-class _Row:
-    """A row of the force sheet laid out from its top left corner (0, 0), its captions under its drawings."""
-
-    layers: list[Layer]
-    fields: dict[str, tuple[float, float, float, float]]
-    width: float
-    height: float
-
-
-def _row(row: Sequence[Panel], size: float) -> _Row:
-    """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
-    extents = [bounds_of(item for layer in panel.layers for item in layer.items) for panel in row]
-    height = max(y1 - y0 for _, y0, _, y1 in extents)
-    captions = [_fitted_caption(panel.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
-                for panel, (x0, _, x1, _) in zip(row, extents, strict=True)]
-    layers: list[Layer] = []
-    fields: dict[str, tuple[float, float, float, float]] = {}
-    cursor = 0.0
-    for panel, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
-        width = max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
-        fields[panel.name] = (cursor, -height, cursor + width, 0.0)
-        layers.extend(moved_layers(panel.layers, cursor + (width - (x1 - x0)) / 2 - x0, -height / 2 - (y0 + y1) / 2))
-        middle = cursor + width / 2
-        layers.append(Layer(f"{panel.name}-caption", tuple(
-            Text((middle, -height - CAPTION_GAP_MM - k * CAPTION_LINE * size), line, size, "middle", weight=weight)
-            for k, (line, weight) in enumerate(caption))))
-        cursor += width + GAP_MM
-    lines = max(len(caption) for caption in captions)
-    return _Row(layers, fields, cursor - GAP_MM, height + CAPTION_GAP_MM + lines * CAPTION_LINE * size)
-
-
-def _columns(heights: Sequence[float], count: int) -> list[range]:
-    """The rows' indices in ``count`` columns (fewer where there are fewer rows), in order, split where the
-    tallest column is least tall."""
-    if count <= 1 or len(heights) <= 1:
-        return [range(len(heights))]
-    if count > 2:
-        raise ValueError(f"a force sheet is laid out in one or two columns, not {count}")
-    split = min(range(1, len(heights)), key=lambda k: max(sum(heights[:k]), sum(heights[k:])))
-    return [range(split), range(split, len(heights))]
+    part_title = sheet.part_title or sheet.title
+    return Rows(drawings, Heading(sheet.title, scales, sheet.caption_size, part_title,
+                                  text["force_sheet_continued"].format(title=part_title)))
 
 
 def _friction_summary(sheet: ForceSheet) -> list[str]:
@@ -295,7 +228,7 @@ class _Force:
     stroke: Stroke
 
 
-def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
+def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     """The group's links at μl with every force at its point, the moments, the arms of the moment equations."""
     text = sheet.text
     key = group_id(group.label)
@@ -347,7 +280,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Panel:
     caption += _wrapped([f"{found.name} = {_number(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
-    return Panel(f"body-{key}", [
+    return Drawing(f"body-{key}", [
         Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
         Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
         Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)], tuple(caption))
@@ -709,7 +642,7 @@ def _foot(centre: complex, through: complex, unit: complex) -> complex:
 
 # The force polygon of a group.
 
-def _polygons(sheet: ForceSheet, group: GroupForces) -> Panel:
+def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
     """The group's polygon at μF; a record closed twice gives two polygons side by side."""
     text = sheet.text
     key = group_id(group.label)
@@ -727,7 +660,7 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Panel:
         cursor += x1 - x0 + POLYGON_GAP_MM
     caption = (text["force_polygon_title"], *_split_equation(group.polygon.equation),
                text["force_scale"].format(value=format_scale(scale)))
-    return Panel(f"polygon-{key}", layers, caption)
+    return Drawing(f"polygon-{key}", layers, caption)
 
 
 def _chains(vectors: Sequence[PolygonVector], scale: float) -> list[list[PolygonVector]]:
@@ -830,7 +763,7 @@ def _split_equation(equation: str) -> tuple[str, ...]:
 
 # Zhukovsky's lever.
 
-def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
+def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     """The velocity plan turned 90° clockwise about the pole p, the loads at the images of their points."""
     text = sheet.text
     velocity = sheet.velocity
@@ -899,7 +832,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Panel:
                _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
-    return Panel("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
+    return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
                            Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
                            Layer("lever-labels", labels.texts)], tuple(caption))
 
@@ -943,12 +876,6 @@ def _balancing_line(sheet: ForceSheet, value: float, how: str) -> str:
 def _wrapped(items: Sequence[str]) -> list[str]:
     """Values listed ``PER_LINE`` to a caption line."""
     return [",  ".join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
-
-
-def _fitted_caption(caption: Sequence[str], width: float, size: float = CAPTION_SIZE) -> list[tuple[str, str]]:
-    """A panel's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm."""
-    return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(caption)
-            for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]
 
 
 def _number(value: float, digits: int = 4) -> str:
@@ -1008,4 +935,4 @@ def group_id(label: str) -> str:
     return svg_id(label).strip("-")
 
 
-__all__ = ["Arrangement", "ForceSheet", "Panel", "arrange", "group_id", "layout", "svg_id"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "group_id", "layout", "rows", "svg_id"]

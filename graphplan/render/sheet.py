@@ -42,6 +42,7 @@ drawings were before sheets.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field, replace
 
@@ -256,38 +257,59 @@ def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
     drawn at the next larger standard scale, and so on until it fits: its
     caption says the scale it is drawn at.
     """
+    return [part for _, parts in _force_sheets(analysis, sheet) for part in parts]
+
+
+def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[tuple[Panel, list[Panel]]]:
+    """Each force sheet of :func:`force_panels` whole (its rows down one column) and as it stands on sheets."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
-    panels = []
+    found = []
     for position in analysis.plans:
         if position.forces is None:
             continue
-        panels.append(_force_panel(analysis, position, chosen))
+        found.append(_force_panels(analysis, position, chosen))
         if position.with_friction is not None and not position.with_friction.locked:
-            panels.append(_force_panel(analysis, position, chosen, with_friction=True))
-    return panels
+            found.append(_force_panels(analysis, position, chosen, with_friction=True))
+    return found
 
 
-def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_friction: bool = False) -> Panel:
+def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
+                  with_friction: bool = False) -> tuple[Panel, list[Panel]]:
+    """The force sheet of ``position`` whole, and as it stands on sheets: whole, or its parts in order where
+    no empty ``sheet`` holds it whole in any way (each part whole under its heading, continued)."""
     words = labels(analysis.scene.locale)
     form = form_of(analysis.scene.locale)
     drawn = force_sheet(analysis, position, with_friction)
     name, label = ("forces-friction", "sheet_forces_friction_position") if with_friction else \
         ("forces", "sheet_forces_position")
+
+    def fits(width: float, height: float) -> bool:
+        return holds(sheet, form, width, height)
+
     before: dict[str, tuple[float, float]] = {}
     for _ in range(_LARGER_SCALES_TRIED):
-        one, two = (split(arrangement, f"{name}-{position.number}", words[label].format(number=position.number),
-                          _group_of_field) for arrangement in force_layout.arrangements(drawn, (1, 2)))
+        rows = force_layout.rows(drawn)
+        one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
+                          words[label].format(number=position.number), _group_of_field) for count in (1, 2))
         if sheet == "none":
-            return one
+            return one, [one]
         # Its rows in two columns where a sheet is too low for them in one.
-        panel = replace(one, alternatives=(two,) if two.extent != one.extent else ())
-        unheld = {piece.name: (round(_width(piece)), round(_height(piece))) for piece in _pieces(panel.parts)
-                  if not holds(sheet, form, _width(piece), _height(piece))}
-        bodies = any("-body-" in piece for piece in unheld)
-        lever = any(piece.endswith("-lever") for piece in unheld)
-        if not unheld or unheld == before:
+        panels = [replace(one, alternatives=(two,) if two.extent != one.extent else ())]
+        if any(fits(_width(way), _height(way)) for way in panels[0].ways):
             break
+        # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
+        parts = rows.parts(fits)
+        if parts is not None:
+            panels = [split(arrangement, one.name if k == 0 else f"{one.name}-{k + 1}", one.label, _group_of_field)
+                      for k, arrangement in enumerate(parts)]
+            break
+        # A drawing too big for a sheet: smaller lettering, then a larger scale.
+        unheld = rows.unheld(fits)
+        if unheld == before:
+            break  # the packing cuts the panel up, or names the drawing that no sheet holds
         before = unheld
+        bodies = any(drawing.startswith("body-") for drawing in unheld)
+        lever = "lever" in unheld
         if drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:  # the next size of lettering first
             drawn = replace(drawn, caption_size=force_layout.SMALL_CAPTION_SIZE)
         elif bodies or lever:
@@ -297,8 +319,9 @@ def _force_panel(analysis: Analysis, position: PlanPosition, sheet: str, with_fr
                 lever_scale=next_standard_scale(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
         else:
             break
-    # A drawing that still does not fit is named by the packing.
-    return panel if drawn.length_scale == length_scale(analysis) else _drawn_at(panel, drawn.length_scale)
+    if drawn.length_scale == length_scale(analysis):
+        return one, panels
+    return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]
 
 
 def _pieces(parts: Sequence[Panel]) -> list[Panel]:
@@ -414,9 +437,13 @@ class CoursePanels:
 
     kinematics: tuple[Panel, ...]
     forces: tuple[Panel, ...]
+    # The force sheets whole, laid out for the sheets as those that stand whole among ``forces`` are.
+    whole_forces: tuple[Panel, ...] = ()
 
     def named(self, name: str) -> Panel | None:
-        return next((panel for panel in (*self.kinematics, *self.forces) if panel.name == name), None)
+        """The drawing ``name`` whole (a force sheet that stands in parts on the sheets too)."""
+        return next((panel for panel in (*self.kinematics, *self.whole_forces, *self.forces) if panel.name == name),
+                    None)
 
 
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
@@ -424,7 +451,9 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
     kinematics = [*kinematics_panels(analysis),
                   *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
-    return CoursePanels(tuple(kinematics), tuple(force_panels(analysis, sheet)))
+    forces = _force_sheets(analysis, sheet)
+    return CoursePanels(tuple(kinematics), tuple(part for _, parts in forces for part in parts),
+                        tuple(whole for whole, _ in forces))
 
 
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
@@ -782,9 +811,9 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
 
 
 def _kind(panel: Panel) -> str:
-    """What ``panel`` draws, whichever position it is of: ``plan`` of ``plan-11``, ``forces`` of ``forces-5``."""
-    kind, _, number = panel.name.rpartition("-")
-    return kind if kind and number.isdigit() else panel.name
+    """What ``panel`` draws, whichever position it is of: ``plan`` of ``plan-11``, ``forces`` of ``forces-5``
+    and of its second part ``forces-5-2``."""
+    return re.sub(r"(?<=.)(-\d+)+$", "", panel.name)
 
 
 def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:

@@ -1,0 +1,299 @@
+"""The rows of a force sheet on paper: how its drawings stand, under its heading, on one sheet or several.
+
+A force sheet is a sequence of rows in reading order (each group cut free
+with its force polygon, then Zhukovsky's lever).  A row stands with its
+drawings side by side, or stacked, the polygon under the group; the rows go
+down one column or down several, in order.  A sheet too small for all the
+rows takes them in parts, in order, each part under the heading, the first
+part's title as given and the others' marked as continued: the reading
+order and the scales stay in view, as on a drawing of several sheets.
+
+This module puts drawings already made (:class:`Drawing`) on paper; what
+the drawings show is :mod:`graphplan.render.forces`'.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass
+
+from .plans import CAPTION_GAP_MM, GAP_MM, TITLE_SIZE, Arrangement
+from .primitives import Layer, Text, bounds_of, moved_layers, text_width
+from .wrapping import fitted
+
+# The least width a caption is broken to (mm), so that a narrow drawing's equations are not set a word a line.
+CAPTION_WIDTH_MM = 160.0
+# Line spacing of a caption, in letter heights.
+CAPTION_LINE = 1.6
+# The heading's scales line stands this far (mm) above the drawings' top.
+HEADING_GAP_MM = 8.0
+# The estimate of a way's size errs by a few mm (a caption's last line is counted whole): a way estimated
+# this much too big is still drawn and measured.
+ESTIMATE_SLACK_MM = 10.0
+# Beyond this many rows, rows are not tried stacked: the ways to stand grow as 4 to the rows.
+MOST_ROWS_TRIED_STACKED = 6
+
+Fits = Callable[[float, float], bool]
+# The title of a part that stands with no heading at all: a drawing that a sheet holds only so.  A heading's
+# own titles are never empty.
+HEADLESS = ""
+# How the rows stand: columns left to right, each the rows down it as (row index, stacked).
+Shape = tuple[tuple[tuple[int, bool], ...], ...]
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption, the first its title."""
+
+    name: str
+    layers: list[Layer]
+    caption: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Heading:
+    """The sheet's title and the line of its scales, lettered at ``size`` (the captions' height).
+
+    Where the sheet stands in parts, the first part is headed ``part_title``
+    (the title without the mechanism's name, which the title block gives)
+    and the others ``continued``.
+    """
+
+    title: str
+    scales: str
+    size: float
+    part_title: str
+    continued: str
+
+    def __post_init__(self) -> None:
+        if HEADLESS in (self.title, self.part_title, self.continued):
+            raise ValueError(f"a heading's titles are not empty: {self!r}")
+
+
+@dataclass(frozen=True)
+class _Block:
+    """A row laid out from its top left corner (0, 0), its captions under its drawings."""
+
+    layers: list[Layer]
+    fields: dict[str, tuple[float, float, float, float]]
+    width: float
+    height: float
+
+
+class Rows:
+    """The rows of one force sheet, each laid out once side by side and once stacked."""
+
+    def __init__(self, rows: Sequence[Sequence[Drawing]], heading: Heading) -> None:
+        self.drawings = [tuple(row) for row in rows]
+        self.heading = heading
+        self._heading_sizes: dict[tuple[str, float], tuple[float, float]] = {}
+        self.beside = [_side_by_side(row, heading.size) for row in rows]
+        # A row of one drawing (the lever) stands the same either way.
+        self.stacked = [_stacked(row, heading.size) if len(row) > 1 else None for row in rows]
+
+    def __len__(self) -> int:
+        return len(self.beside)
+
+    def block(self, index: int, stacked: bool) -> _Block:
+        block = self.stacked[index] if stacked else None
+        return block if block is not None else self.beside[index]
+
+    def arranged(self, shape: Shape, title: str | None = None) -> Arrangement:
+        """The rows as ``shape`` has them, under the heading: the sheet's title on one line, or ``title`` (a
+        part's) broken to the drawings' width where it is wider than they are."""
+        layers: list[Layer] = []
+        fields: dict[str, tuple[float, float, float, float]] = {}
+        left = 0.0
+        for column in shape:
+            top = 0.0
+            for index, stacked in column:
+                block = self.block(index, stacked)
+                layers.extend(moved_layers(block.layers, left, top))
+                fields.update({name: (x0 + left, y0 + top, x1 + left, y1 + top)
+                               for name, (x0, y0, x1, y1) in block.fields.items()})
+                top -= block.height + GAP_MM
+            left += max(self.block(index, stacked).width for index, stacked in column) + GAP_MM
+        left, _, right, upper = bounds_of(item for layer in layers for item in layer.items)
+        if title != HEADLESS:
+            width = math.inf if title is None else right - left
+            layers.append(self._heading_layer(left, upper + HEADING_GAP_MM, title or self.heading.title, width))
+        return Arrangement(layers, fields)
+
+    def in_columns(self, count: int) -> Shape:
+        """All the rows side by side, in ``count`` columns (fewer where there are fewer rows), in order, split
+        where the tallest column is least tall."""
+        heights = [block.height for block in self.beside]
+        if count <= 1 or len(heights) <= 1:
+            return (tuple((k, False) for k in range(len(heights))),)
+        if count > 2:
+            raise ValueError(f"a force sheet's rows are split in one or two columns, not {count}")
+        cut = min(range(1, len(heights)), key=lambda k: max(sum(heights[:k]), sum(heights[k:])))
+        return (tuple((k, False) for k in range(cut)), tuple((k, False) for k in range(cut, len(heights))))
+
+    def parts(self, fits: Fits) -> list[Arrangement] | None:
+        """The rows in the fewest parts in order, each standing the way that ``fits`` and takes least paper;
+        the first part under the heading's title, the others under its ``continued``.  Where a row fits in
+        no way, every drawing stands as a row of its own (a polygon may then stand apart from its group),
+        and a drawing too big to stand under a heading stands alone without one; None where a drawing does
+        not fit even so (:meth:`unheld`)."""
+        found = self._parts(fits)
+        if found is None and any(len(row) > 1 for row in self.drawings):
+            found = self._apart()._parts(fits)
+        return found if found is not None else self._apart()._parts(fits, headless=True)
+
+    def unheld(self, fits: Fits) -> dict[str, tuple[float, float]]:
+        """The drawings that do not fit even alone with no heading, with their (width, height)."""
+        alone = self._apart()
+        sizes = {}
+        for k, (drawing,) in enumerate(alone.drawings):
+            x0, y0, x1, y1 = bounds_of(item for layer in alone.arranged((((k, False),),), HEADLESS).layers
+                                       for item in layer.items)
+            if not fits(x1 - x0, y1 - y0):
+                sizes[drawing.name] = (round(x1 - x0), round(y1 - y0))
+        return sizes
+
+    def _apart(self) -> Rows:
+        """Every drawing a row of its own."""
+        return Rows([[drawing] for row in self.drawings for drawing in row], self.heading)
+
+    def _parts(self, fits: Fits, headless: bool = False) -> list[Arrangement] | None:
+        """:meth:`parts` with the rows as they are; a part that fits under no heading stands without one
+        where ``headless``."""
+        heading = self.heading
+        count = len(self)
+        for title in (heading.title, heading.part_title):
+            whole = self._least(0, count, fits, title)
+            if whole is not None:
+                return [self.arranged(whole[1], title)]
+        best_of: dict[tuple[int, int], tuple[float, Shape, str] | None] = {}
+
+        def best(start: int, stop: int) -> tuple[float, Shape, str] | None:
+            if (start, stop) not in best_of:
+                titles = (self._title_of(start), HEADLESS) if headless else (self._title_of(start),)
+                best_of[start, stop] = next(((*found, title) for title in titles
+                                             for found in [self._least(start, stop, fits, title)] if found), None)
+            return best_of[start, stop]
+
+        for pieces in range(2, count + 1):
+            least: tuple[float, list[tuple[Shape, str]]] | None = None
+            for cuts in itertools.combinations(range(1, count), pieces - 1):
+                chosen = [best(a, b) for a, b in itertools.pairwise((0, *cuts, count))]
+                if any(choice is None for choice in chosen):
+                    continue
+                area = sum(choice[0] for choice in chosen if choice is not None)
+                if least is None or area < least[0]:
+                    least = (area, [(choice[1], choice[2]) for choice in chosen if choice is not None])
+            if least is not None:
+                return [self.arranged(shape, title) for shape, title in least[1]]
+        return None
+
+    def _title_of(self, start: int) -> str:
+        """The heading of the part of several that begins with row ``start``."""
+        return self.heading.part_title if start == 0 else self.heading.continued
+
+    def _least(self, start: int, stop: int, fits: Fits, title: str) -> tuple[float, Shape] | None:
+        """Of the ways rows ``start``..``stop`` may stand under ``title``, the one taking least paper that
+        ``fits`` once drawn (the estimate of its size may be a little off), with its area; None when none
+        does."""
+        sized = [(self._size(shape, title), shape) for shape in self._shapes(start, stop)]
+        for (width, height), shape in sorted(sized, key=lambda item: item[0][0] * item[0][1]):
+            if not fits(width - ESTIMATE_SLACK_MM, height - ESTIMATE_SLACK_MM):
+                continue
+            x0, y0, x1, y1 = bounds_of(item for layer in self.arranged(shape, title).layers for item in layer.items)
+            if fits(x1 - x0, y1 - y0):
+                return (x1 - x0) * (y1 - y0), shape
+        return None
+
+    def _shapes(self, start: int, stop: int) -> Iterator[Shape]:
+        """Every way rows ``start``..``stop`` may stand: each column a run of them, each row side by side or
+        stacked; all side by side in one column first."""
+        indices = range(start, stop)
+        stackable = [k for k in indices if self.stacked[k] is not None]
+        if len(indices) > MOST_ROWS_TRIED_STACKED:
+            stackable = []
+        for stacks in itertools.chain.from_iterable(itertools.combinations(stackable, n)
+                                                    for n in range(len(stackable) + 1)):
+            for cuts in itertools.chain.from_iterable(itertools.combinations(indices[1:], n)
+                                                      for n in range(len(indices))):
+                bounds = (start, *cuts, stop)
+                yield tuple(tuple((k, k in stacks) for k in range(a, b)) for a, b in itertools.pairwise(bounds))
+
+    def _size(self, shape: Shape, title: str) -> tuple[float, float]:
+        """The size ``shape`` takes under ``title``, estimated from the rows' sizes without drawing it."""
+        widths = [max(self.block(k, stacked).width for k, stacked in column) for column in shape]
+        heights = [sum(self.block(k, stacked).height for k, stacked in column) + GAP_MM * (len(column) - 1)
+                   for column in shape]
+        width = sum(widths) + GAP_MM * (len(shape) - 1)
+        if title == HEADLESS:
+            return width, max(heights)
+        heading_width, heading_height = self._heading_size(title, round(width))
+        return max(width, heading_width), max(heights) + HEADING_GAP_MM + heading_height
+
+    def _heading_size(self, title: str, width: float) -> tuple[float, float]:
+        """The heading's (width, height) over drawings ``width`` mm wide (remembered: every way asks)."""
+        if (title, width) not in self._heading_sizes:
+            x0, y0, x1, y1 = bounds_of(self._heading_layer(0.0, 0.0, title, width).items)
+            self._heading_sizes[title, width] = (x1 - x0, y1 - y0)
+        return self._heading_sizes[title, width]
+
+    def _heading_layer(self, left: float, scales_line: float, title: str, width: float) -> Layer:
+        """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales."""
+        lines = fitted(title, max(width, CAPTION_WIDTH_MM), TITLE_SIZE, "bold")
+        return Layer("sheet-title", (
+            *(Text((left, scales_line + 1.6 * TITLE_SIZE * (len(lines) - k)), line, TITLE_SIZE, "start",
+                   weight="bold") for k, line in enumerate(lines)),
+            Text((left, scales_line), self.heading.scales, self.heading.size, "start")))
+
+
+def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
+    """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
+    extents = [bounds_of(item for layer in drawing.layers for item in layer.items) for drawing in row]
+    height = max(y1 - y0 for _, y0, _, y1 in extents)
+    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
+                for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    layers: list[Layer] = []
+    fields: dict[str, tuple[float, float, float, float]] = {}
+    cursor = 0.0
+    for drawing, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
+        width = max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
+        fields[drawing.name] = (cursor, -height, cursor + width, 0.0)
+        layers.extend(moved_layers(drawing.layers, cursor + (width - (x1 - x0)) / 2 - x0, -height / 2 - (y0 + y1) / 2))
+        layers.append(_caption_layer(drawing.name, cursor + width / 2, -height, caption, size))
+        cursor += width + GAP_MM
+    lines = max(len(caption) for caption in captions)
+    return _Block(layers, fields, cursor - GAP_MM, height + CAPTION_GAP_MM + lines * CAPTION_LINE * size)
+
+
+def _stacked(row: Sequence[Drawing], size: float) -> _Block:
+    """The drawings of ``row`` one under another (the polygon under its group), each with its caption, in
+    the middle of a field as wide as the widest."""
+    extents = [bounds_of(item for layer in drawing.layers for item in layer.items) for drawing in row]
+    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
+                for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    width = max(max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
+                for (x0, _, x1, _), caption in zip(extents, captions, strict=True))
+    layers: list[Layer] = []
+    fields: dict[str, tuple[float, float, float, float]] = {}
+    top = 0.0
+    for drawing, (x0, y0, x1, y1), caption in zip(row, extents, captions, strict=True):
+        height = y1 - y0
+        fields[drawing.name] = (0.0, top - height, width, top)
+        layers.extend(moved_layers(drawing.layers, (width - (x1 - x0)) / 2 - x0, top - height / 2 - (y0 + y1) / 2))
+        layers.append(_caption_layer(drawing.name, width / 2, top - height, caption, size))
+        # A drawing's caption and the next drawing stand as close as a drawing and its caption: one group.
+        top -= height + CAPTION_GAP_MM + len(caption) * CAPTION_LINE * size + CAPTION_GAP_MM
+    return _Block(layers, fields, width, -top - CAPTION_GAP_MM)
+
+
+def _caption_layer(name: str, middle: float, under: float, caption: Sequence[tuple[str, str]], size: float) -> Layer:
+    return Layer(f"{name}-caption", tuple(
+        Text((middle, under - CAPTION_GAP_MM - k * CAPTION_LINE * size), line, size, "middle", weight=weight)
+        for k, (line, weight) in enumerate(caption)))
+
+
+def caption_lines(caption: Sequence[str], width: float, size: float) -> list[tuple[str, str]]:
+    """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm."""
+    return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(caption)
+            for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]

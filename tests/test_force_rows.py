@@ -1,0 +1,112 @@
+"""The rows of a force sheet on a sheet too small for them in one or two columns (graphplan.render.force_rows).
+
+Drawings here are plain rectangles of known size, so that what fits where can be worked out by hand.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from graphplan.render.force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows
+from graphplan.render.plans import CAPTION_GAP_MM, GAP_MM
+from graphplan.render.primitives import Layer, Polyline, Text, bounds
+
+HEADING = Heading("Crank-rocker: force analysis, position 3", "μl = 0.0025 m/mm", 5.0,
+                  "Force analysis, position 3", "Force analysis, position 3 (continued)")
+
+
+def box(name: str, width: float, height: float) -> Drawing:
+    """A drawing ``width`` × ``height`` mm with a one-line caption."""
+    corners = ((0.0, 0.0), (width, 0.0), (width, height), (0.0, height))
+    return Drawing(name, [Layer(f"{name}-lines", (Polyline(corners, closed=True),))], (name,))
+
+
+def size(arrangement) -> tuple[float, float]:
+    x0, y0, x1, y1 = bounds(arrangement.layers)
+    return x1 - x0, y1 - y0
+
+
+def within(width_limit: float, height_limit: float):
+    return lambda width, height: width <= width_limit and height <= height_limit
+
+
+def heading_of(arrangement) -> list[str]:
+    return [item.text for layer in arrangement.layers if layer.name == "sheet-title" for item in layer.items
+            if isinstance(item, Text) and item.weight == "bold"]
+
+
+def reading_order(arrangement, names) -> list[str]:
+    """The drawings down each column, the columns left to right (every drawing here stands in a column of
+    its own rows, its left edge the column's)."""
+    return sorted(names, key=lambda name: (round(arrangement.fields[name][0], 6), -arrangement.fields[name][3]))
+
+
+def groups(count: int, body=(100.0, 200.0), polygon=(100.0, 50.0)) -> list[list[Drawing]]:
+    return [[box(f"body-{k}", *body), box(f"polygon-{k}", *polygon)] for k in range(count)]
+
+
+def test_rows_that_fit_neither_in_one_nor_two_columns_stand_whole_each_polygon_under_its_group():
+    """Three groups (a 100 × 200 mm group over a 100 × 50 mm polygon): one column is over 700 mm tall, two
+    side-by-side columns over 450 mm wide; stacked in three columns they are 350 mm wide and about 330 mm tall."""
+    rows = Rows(groups(3), HEADING)
+    fits = within(400.0, 360.0)
+    assert not fits(*size(rows.arranged(rows.in_columns(1))))
+    assert not fits(*size(rows.arranged(rows.in_columns(2))))
+    parts = rows.parts(fits)
+    assert parts is not None and len(parts) == 1
+    (whole,) = parts
+    assert fits(*size(whole))
+    names = [drawing.name for row in rows.drawings for drawing in row]
+    assert reading_order(whole, names) == names
+    # Each polygon right under its group, in the group's column.
+    for k in range(3):
+        body, polygon = whole.fields[f"body-{k}"], whole.fields[f"polygon-{k}"]
+        assert polygon[0] == pytest.approx(body[0]) and polygon[3] < body[1]
+        assert body[1] - polygon[3] < 2 * CAPTION_GAP_MM + 2 * HEADING.size
+    assert heading_of(whole) == [HEADING.title]
+
+
+def test_rows_no_sheet_holds_together_go_in_parts_in_order_each_under_its_heading():
+    """Four drawings of 150 × 280 mm, each a row of its own: two side by side are 325 mm wide, more than the
+    300 mm a sheet has, and two in a column 585 mm tall: each part holds one."""
+    rows = Rows([[box(f"lever-{k}", 150.0, 280.0)] for k in range(4)], HEADING)
+    fits = within(300.0, 340.0)
+    parts = rows.parts(fits)
+    assert parts is not None and len(parts) == 4
+    assert [list(part.fields) for part in parts] == [[f"lever-{k}"] for k in range(4)]
+    assert all(fits(*size(part)) for part in parts)
+    assert heading_of(parts[0]) == [HEADING.part_title]
+    # A heading wider than the drawings is broken to the caption's width, not left to widen the part.
+    for part in parts[1:]:
+        assert " ".join(heading_of(part)) == HEADING.continued
+        assert size(part)[0] <= max(150.0, CAPTION_WIDTH_MM) + 1e-9
+
+
+def test_a_part_takes_as_many_rows_as_its_sheet_holds():
+    """Four 100 × 100 mm drawings where a sheet holds two in a row but not three: two parts, not four."""
+    rows = Rows([[box(f"drawing-{k}", 100.0, 100.0)] for k in range(4)], HEADING)
+    fits = within(2 * 100.0 + GAP_MM + 40.0, 200.0)
+    parts = rows.parts(fits)
+    assert parts is not None
+    assert [list(part.fields) for part in parts] == [["drawing-0", "drawing-1"], ["drawing-2", "drawing-3"]]
+
+
+def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_tall_for_a_heading_alone():
+    """A group 100 × 300 mm beside its polygon is too wide for a 180 mm sheet and, stacked, too tall; alone
+    the group fits the 330 mm height only without the heading's 30 mm."""
+    rows = Rows([[box("body", 100.0, 300.0), box("polygon", 150.0, 100.0)]], HEADING)
+    fits = within(180.0, 330.0)
+    parts = rows.parts(fits)
+    assert parts is not None and [list(part.fields) for part in parts] == [["body"], ["polygon"]]
+    assert heading_of(parts[0]) == [] and " ".join(heading_of(parts[1])) == HEADING.continued
+    assert all(fits(*size(part)) for part in parts)
+    assert rows.unheld(fits) == {}
+
+
+def test_a_drawing_no_sheet_holds_even_alone_is_named_with_its_size():
+    rows = Rows([[box("body", 100.0, 500.0), box("polygon", 50.0, 50.0)]], HEADING)
+    fits = within(180.0, 330.0)
+    assert rows.parts(fits) is None
+    (unheld,) = rows.unheld(fits).items()
+    name, (width, height) = unheld
+    assert name == "body" and width == 100 and height > 500
