@@ -98,7 +98,8 @@ def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_
     fits = within(180.0, 330.0)
     parts = rows.parts(fits)
     assert parts is not None and [list(part.fields) for part in parts] == [["body"], ["polygon"]]
-    assert heading_of(parts[0]) == [] and " ".join(heading_of(parts[1])) == HEADING.continued
+    # The first heading is the sheet's, though a part without one comes before it.
+    assert heading_of(parts[0]) == [] and " ".join(heading_of(parts[1])) == HEADING.part_title
     assert all(fits(*size(part)) for part in parts)
     assert rows.unheld(fits) == {}
 

@@ -186,7 +186,10 @@ class Rows:
                 if least is None or area < least[0]:
                     least = (area, [(choice[1], choice[2]) for choice in chosen if choice is not None])
             if least is not None:
-                return [self.arranged(shape, title) for shape, title in least[1]]
+                # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
+                headed = next((k for k, (_, title) in enumerate(least[1]) if title != HEADLESS), None)
+                return [self.arranged(shape, self.heading.part_title if k == headed else title)
+                        for k, (shape, title) in enumerate(least[1])]
         return None
 
     def _title_of(self, start: int) -> str:
