@@ -243,13 +243,22 @@ class MachineDynamics:
         from .machine_motion import Machine
 
         model = self.model
+        phi, resisting = self.resisting
+        machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
+                          inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
+        return self.spec.motion.run(machine)
+
+    @property
+    def resisting(self):
+        """Mr(φ) for the equation of motion: the angles over one turn (rad) and the reduced moment of the
+        scene's own loads there (N·m, positive where they resist), without the constant moment the flywheel's
+        balance of work assumed in place of the motor."""
+        import numpy as np
+
+        model = self.model
         phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
         made_up = {"driving": model.driving, "resisting": model.resisting}.get(model.constant, 0.0)
-        own = model.moment - made_up
-        machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
-                          inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope),
-                          resisting=-np.interp(phi, model.coordinate, own))
-        return self.spec.motion.run(machine)
+        return phi, -np.interp(phi, model.coordinate, model.moment - made_up)
 
     @property
     def flywheel_inertia(self) -> float:
@@ -325,7 +334,8 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
         estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
-        found["motion.svg"] = motion_figure(dynamics.motion, strings(scene.locale), scene.title, estimate)
+        found["motion.svg"] = motion_figure(dynamics.motion, strings(scene.locale), scene.title, estimate,
+                                            dynamics.resisting)
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 

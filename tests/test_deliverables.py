@@ -169,6 +169,9 @@ def test_a_machine_that_stalls_is_told_on_the_command_line_in_the_results_and_in
     printed = capsys.readouterr().out
     assert f"warning: dynamics: the machine stalls at t = {motion['stalled_at']:.4g} s" in printed
     assert "it stalls, coming to rest" in (out / "note.md").read_text(encoding="utf-8")
+    # motion.svg shows why: the motor's torque against the resistance over the angle turned.
+    figure = (out / "motion.svg").read_text(encoding="utf-8")
+    assert "Why it stalls" in figure and "the resisting forces reduced to the shaft" in figure
 
 
 def test_new_does_not_overwrite_a_scene(tmp_path, capsys):

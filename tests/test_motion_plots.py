@@ -99,3 +99,32 @@ def test_a_scene_with_a_motor_gets_the_figure_of_its_motion_and_one_without_none
     # The same scene draws the same bytes.
     assert main(["run", str(scene), "--out", str(tmp_path / "again")]) == 0
     assert (tmp_path / "again" / "motion.svg").read_text(encoding="utf-8") == svg
+
+
+def test_a_stalled_run_shows_the_motors_torque_falling_short_of_the_resistance_where_it_stalls():
+    """A load light for the first quarter turn and heavy after it, a motor (through a 3:1 gear) whose torque
+    at rest is between the two: the shaft runs up, passes 90° on what it has gained, and stalls there. The
+    lower plot sets the motor's torque along the run against Mr(φ); at the stall the motor gives its
+    torque at rest, M0·i, and Mr is above it."""
+    count = 360
+    angles = 2.0 * np.pi * np.arange(count) / count
+    light, heavy, stall_torque, gear = 10.0, 100.0, 10.0, 3.0
+    resisting = np.where(angles < np.pi / 2, light, heavy)
+    motion = simulate(Machine(INERTIA, resisting=resisting), LinearMotor(stall_torque, 100.0, gear_ratio=gear),
+                      rtol=1e-8)
+    assert motion.stalled_at is not None and 90.0 < motion.stalled_at_angle_deg < 180.0
+    text = strings("ru")
+    figure = motion_plot(motion, text, "Пресс", resisting=(angles, resisting))
+    lower = figure.axes[1]
+    lines = {line.get_label(): line for line in lower.get_lines()}
+    mr, md = lines[text["motion_resisting"]], lines[text["motion_motor_torque"]]
+    (point,) = [line for label, line in lines.items() if label.startswith("остановка при φ")]
+    x, y = (float(value[0]) for value in point.get_data())
+    assert x == pytest.approx(math.degrees(motion.phi[-1]))
+    assert y == pytest.approx(stall_torque * gear, rel=1e-3)
+    assert float(np.interp(x, *mr.get_data())) == pytest.approx(heavy) and heavy > y
+    # Mr as given, over the whole turn the stall is in.
+    along, drawn = mr.get_data()
+    assert along[0] == 0.0 and along[-1] == 360.0
+    assert drawn == pytest.approx(np.interp(np.radians(along), angles, resisting, period=2 * np.pi))
+    assert md.get_data()[0][-1] == pytest.approx(x)

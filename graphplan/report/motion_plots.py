@@ -3,7 +3,8 @@
 The upper plot is the driving shaft's speed over the whole run (and the clutch's driving half,
 when there is a clutch), with the events of the run (motor off, brake on, clutch locked, ...)
 and the band of the steady state; the lower plot is the speed over the last steady turn against
-the crank angle, beside the flywheel's estimate from the energy–mass diagram.  Every word comes
+the crank angle, beside the flywheel's estimate from the energy–mass diagram; where the machine
+stalls, the moments on the shaft over the angle it turned, the motor's falling short of Mr(φ).  Every word comes
 from the locale (``motion_`` keys).  matplotlib is imported only inside :func:`motion_figure`.
 """
 
@@ -27,20 +28,24 @@ _SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT = "#1f4e79", "#a83a1f", "#1f7a3a", "#55
 
 
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
-                  flywheel: tuple[np.ndarray, np.ndarray] | None = None) -> str:
+                  flywheel: tuple[np.ndarray, np.ndarray] | None = None,
+                  resisting: tuple[np.ndarray, np.ndarray] | None = None) -> str:
     """The SVG text of :func:`motion_plot`."""
     import matplotlib
 
     with matplotlib.rc_context(settings()):
-        return svg_text(motion_plot(motion, text, title, flywheel))
+        return svg_text(motion_plot(motion, text, title, flywheel, resisting))
 
 
 def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
-                flywheel: tuple[np.ndarray, np.ndarray] | None = None):
+                flywheel: tuple[np.ndarray, np.ndarray] | None = None,
+                resisting: tuple[np.ndarray, np.ndarray] | None = None):
     """The motion's matplotlib figure: the run above, the steady turn below.
 
     ``flywheel`` is the flywheel's estimate of the steady speed over the turn: the crank angles
     (rad, from the first position) and ω there, drawn beside the integrated steady turn.
+    ``resisting`` is Mr(φ) over one turn (the angles, rad, and N·m): where the machine stalls, the
+    lower plot sets it against the motor's torque along the run, to show where the motor falls short.
     """
     import matplotlib
 
@@ -50,11 +55,13 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     with matplotlib.rc_context(settings()):
         figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
         _speed_over_time(run, motion, text)
+        mark = text["decimal_mark"]
         if motion.steady is not None:
             _steady_turn(turn, motion, text, flywheel)
+        elif motion.stalled_at is not None and resisting is not None:
+            _stall(turn, motion, text, resisting)
         else:
             turn.set_axis_off()
-            mark = text["decimal_mark"]
             why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
                 time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
             turn.text(0.5, 0.5, textwrap.fill(why, 80), ha="center", va="center", transform=turn.transAxes)
@@ -140,6 +147,32 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     plot.set_xlabel(text["motion_angle_axis"])
     plot.set_ylabel(text["motion_speed_axis"])
     plot.set_title(text["motion_turn"].format(time=number(cycle.start, 4, mark)), fontsize=10)
+    plot.grid(True, linewidth=0.3)
+    plot.legend(fontsize=7, loc="best")
+
+
+def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tuple[np.ndarray, np.ndarray]) -> None:
+    """The moments on the driving shaft over the angle it turned before it stalled: the motor's torque
+    along the run against the resisting forces' Mr(φ), the stall where the motor's falls short."""
+    mark = text["decimal_mark"]
+    angles, moments = resisting
+    turned = np.degrees(motion.phi)
+    end = float(turned[-1])
+    # The whole turn the stall is in, from the start: where Mr rises past the motor is plain to see.
+    right = 360.0 * (math.floor(end / 360.0) + 1.0)
+    along = np.linspace(0.0, right, max(_TURN_SAMPLES, int(right) * 2 + 1))
+    plot.plot(along, np.interp(np.radians(along), angles, moments, period=2.0 * np.pi), color=_DRIVING_HALF,
+              linewidth=1.0, label=text["motion_resisting"])
+    plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
+    plot.plot([end], [float(motion.motor_torque[-1])], "o", color=_SHAFT, markersize=4,
+              label=text["motion_stall_point"].format(angle=number(motion.stalled_at_angle_deg, 4, mark),
+                                                      time=number(motion.stalled_at, 4, mark)))
+    plot.axhline(0.0, color=_EVENT, linewidth=0.5)
+    plot.set_xlim(0.0, right)
+    plot.set_xticks(np.arange(0.0, right + 1.0, 30.0 * max(1, round(right / 360.0))))
+    plot.set_xlabel(text["motion_turned_axis"])
+    plot.set_ylabel(text["motion_moment_axis"])
+    plot.set_title(textwrap.fill(text["motion_stall_title"], 80), fontsize=10)
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=7, loc="best")
 
