@@ -833,8 +833,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
     return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
-                           Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
-                           Layer("lever-labels", labels.texts)], tuple(caption))
+                             Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
+                             Layer("lever-labels", labels.texts)], tuple(caption))
 
 
 def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placement:

@@ -255,7 +255,9 @@ def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
     format by default), the force sheet's captions are lettered a size
     smaller; where that is not enough, a group cut free or the lever is
     drawn at the next larger standard scale, and so on until it fits: its
-    caption says the scale it is drawn at.
+    caption says the scale it is drawn at.  A force sheet that no empty
+    ``sheet`` holds whole in any arrangement of its rows stands in parts, in
+    order, each whole under its heading: ``forces-5``, ``forces-5-2``, ...
     """
     return [part for _, parts in _force_sheets(analysis, sheet) for part in parts]
 
