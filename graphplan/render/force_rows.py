@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 from .plans import CAPTION_GAP_MM, GAP_MM, TITLE_SIZE, Arrangement
-from .primitives import Layer, Text, bounds_of, moved_layers, text_width
+from .primitives import Layer, Text, bounds, bounds_of, moved_layers, text_width
 from .wrapping import fitted
 
 # The least width a caption is broken to (mm), so that a narrow drawing's equations are not set a word a line.
@@ -115,7 +115,7 @@ class Rows:
                                for name, (x0, y0, x1, y1) in block.fields.items()})
                 top -= block.height + GAP_MM
             left += max(self.block(index, stacked).width for index, stacked in column) + GAP_MM
-        left, _, right, upper = bounds_of(item for layer in layers for item in layer.items)
+        left, _, right, upper = bounds(layers)
         if title != HEADLESS:
             width = math.inf if title is None else right - left
             layers.append(self._heading_layer(left, upper + HEADING_GAP_MM, title or self.heading.title, width))
@@ -139,17 +139,19 @@ class Rows:
         and a drawing too big to stand under a heading stands alone without one; None where a drawing does
         not fit even so (:meth:`unheld`)."""
         found = self._parts(fits)
-        if found is None and any(len(row) > 1 for row in self.drawings):
-            found = self._apart()._parts(fits)
-        return found if found is not None else self._apart()._parts(fits, headless=True)
+        if found is not None:
+            return found
+        apart = self._apart()
+        if any(len(row) > 1 for row in self.drawings):
+            found = apart._parts(fits)
+        return found if found is not None else apart._parts(fits, headless=True)
 
     def unheld(self, fits: Fits) -> dict[str, tuple[float, float]]:
         """The drawings that do not fit even alone with no heading, with their (width, height)."""
         alone = self._apart()
         sizes = {}
         for k, (drawing,) in enumerate(alone.drawings):
-            x0, y0, x1, y1 = bounds_of(item for layer in alone.arranged((((k, False),),), HEADLESS).layers
-                                       for item in layer.items)
+            x0, y0, x1, y1 = bounds(alone.arranged((((k, False),),), HEADLESS).layers)
             if not fits(x1 - x0, y1 - y0):
                 sizes[drawing.name] = (round(x1 - x0), round(y1 - y0))
         return sizes
@@ -204,7 +206,7 @@ class Rows:
         for (width, height), shape in sorted(sized, key=lambda item: item[0][0] * item[0][1]):
             if not fits(width - ESTIMATE_SLACK_MM, height - ESTIMATE_SLACK_MM):
                 continue
-            x0, y0, x1, y1 = bounds_of(item for layer in self.arranged(shape, title).layers for item in layer.items)
+            x0, y0, x1, y1 = bounds(self.arranged(shape, title).layers)
             if fits(x1 - x0, y1 - y0):
                 return (x1 - x0) * (y1 - y0), shape
         return None
@@ -252,7 +254,7 @@ class Rows:
 
 def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
-    extents = [bounds_of(item for layer in drawing.layers for item in layer.items) for drawing in row]
+    extents = [bounds(drawing.layers) for drawing in row]
     height = max(y1 - y0 for _, y0, _, y1 in extents)
     captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
@@ -272,7 +274,7 @@ def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
 def _stacked(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` one under another (the polygon under its group), each with its caption, in
     the middle of a field as wide as the widest."""
-    extents = [bounds_of(item for layer in drawing.layers for item in layer.items) for drawing in row]
+    extents = [bounds(drawing.layers) for drawing in row]
     captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     width = max(max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
