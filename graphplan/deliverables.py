@@ -402,7 +402,7 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         from .flywheel import dynamics_results
 
         dynamics = _dynamics_of(scene, analysis, dynamics)
-        found["dynamics"] = dynamics_results(dynamics.model, dynamics.flywheel)
+        found["dynamics"] = rounded(dynamics_results(dynamics.model, dynamics.flywheel))
         if dynamics.motion is not None:
             found["dynamics"]["motion"] = rounded(dynamics.motion_results())
     if "balancing" in pieces:

@@ -503,7 +503,7 @@ def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel |
 
 
 def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -> dict[str, Any]:
-    """The dynamics part of ``results.json``: SI, angles in degrees, 12 significant digits.
+    """The dynamics part of ``results.json``: SI, angles in degrees, unrounded (the writer rounds).
 
     Per sample of the cycle: ``angle_deg`` (the driver's coordinate: crank angle in degrees, or
     displacement in m under ``displacement``), ``travel`` (ψ), ``reduced_inertia``,
@@ -530,45 +530,37 @@ def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -
         "driving_work": _numbers(model.driving_work),
         "resisting_work": _numbers(model.resisting_work),
         "kinetic_energy_change": _numbers(model.energy),
-        "delta_w_max": _number(float(np.ptp(model.energy))),
-        "plans": [{"index": plan.number, "reduced_inertia": _number(plan.inertia),
-                   "reduced_inertia_exact": _number(plan.inertia_exact),
-                   "reduced_inertia_error_percent": _number(plan.inertia_error_percent),
-                   "reduced_moment": _number(plan.moment), "reduced_moment_exact": _number(plan.moment_exact),
-                   "reduced_moment_error_percent": _number(plan.moment_error_percent)} for plan in model.plans],
+        "delta_w_max": float(np.ptp(model.energy)),
+        "plans": [{"index": plan.number, "reduced_inertia": float(plan.inertia),
+                   "reduced_inertia_exact": float(plan.inertia_exact),
+                   "reduced_inertia_error_percent": float(plan.inertia_error_percent),
+                   "reduced_moment": float(plan.moment), "reduced_moment_exact": float(plan.moment_exact),
+                   "reduced_moment_error_percent": float(plan.moment_error_percent)} for plan in model.plans],
     })
     if flywheel is not None:
         found.update({
-            "delta": _number(flywheel.delta),
-            "omega_mean": _number(flywheel.omega_mean),
-            "flywheel_inertia": _number(flywheel.inertia),
-            "flywheel_inertia_approximate": _number(flywheel.approximate),
-            "flywheel_inertia_mertsalov": _number(flywheel.mertsalov),
-            "constant_reduced_inertia": _number(flywheel.constant_inertia),
-            "kinetic_energy_start": _number(flywheel.kinetic_energy_start),
+            "delta": float(flywheel.delta),
+            "omega_mean": float(flywheel.omega_mean),
+            "flywheel_inertia": float(flywheel.inertia),
+            "flywheel_inertia_approximate": float(flywheel.approximate),
+            "flywheel_inertia_mertsalov": float(flywheel.mertsalov),
+            "constant_reduced_inertia": float(flywheel.constant_inertia),
+            "kinetic_energy_start": float(flywheel.kinetic_energy_start),
             "omega": _numbers(flywheel.omega),
-            "omega_max": _number(flywheel.omega_max),
-            "omega_min": _number(flywheel.omega_min),
-            "omega_max_angle_deg": _number(math.degrees(model.driver[flywheel.index_max]) % 360.0),
-            "omega_min_angle_deg": _number(math.degrees(model.driver[flywheel.index_min]) % 360.0),
-            "omega_max_travel_deg": _number(math.degrees(model.coordinate[flywheel.index_max])),
-            "omega_min_travel_deg": _number(math.degrees(model.coordinate[flywheel.index_min])),
-            "flywheel_shaft_rpm": None if flywheel.shaft_rpm is None else _number(flywheel.shaft_rpm),
-            "flywheel_inertia_moved": None if flywheel.moved is None else _number(flywheel.moved),
+            "omega_max": float(flywheel.omega_max),
+            "omega_min": float(flywheel.omega_min),
+            "omega_max_angle_deg": float(math.degrees(model.driver[flywheel.index_max]) % 360.0),
+            "omega_min_angle_deg": float(math.degrees(model.driver[flywheel.index_min]) % 360.0),
+            "omega_max_travel_deg": float(math.degrees(model.coordinate[flywheel.index_max])),
+            "omega_min_travel_deg": float(math.degrees(model.coordinate[flywheel.index_min])),
+            "flywheel_shaft_rpm": None if flywheel.shaft_rpm is None else float(flywheel.shaft_rpm),
+            "flywheel_inertia_moved": None if flywheel.moved is None else float(flywheel.moved),
         })
     return found
 
 
-def _number(value: float) -> float | None:
-    """``value`` to 12 significant digits (as ``results.json`` writes numbers); null when not finite."""
-    if not math.isfinite(value):
-        return None
-    rounded = float(f"{value:.12g}")
-    return 0.0 if rounded == 0 else rounded
-
-
-def _numbers(values: np.ndarray) -> list[float | None]:
-    return [_number(float(v)) for v in values]
+def _numbers(values: np.ndarray) -> list[float]:
+    return [float(v) for v in values]
 
 
 # --- checks -------------------------------------------------------------------------------------

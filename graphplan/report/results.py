@@ -2,6 +2,9 @@
 
 Values are SI, angles in degrees; numbers are rounded to 12 significant
 digits so that the file reads cleanly and is byte-identical across runs.
+A value is also rounded to 12 digits of its quantity's largest, so that a
+coordinate or a velocity that is zero by the geometry (the crank along the
+line of stroke) reads 0, not the 1e-18 that the trigonometry leaves.
 """
 
 from __future__ import annotations
@@ -22,20 +25,37 @@ from ..statics import efficiency
 SIGNIFICANT = 12
 
 
-def number(value: float) -> float | None:
+def number(value: float, floor: float = 0.0) -> float | None:
     """``value`` rounded to :data:`SIGNIFICANT` digits, with −0 written as 0.
 
-    A value that is not a number (a velocity at a singular position) is
-    written as null, never as NaN.
+    A value smaller than ``floor`` is written as 0. A value that is not a
+    number (a velocity at a singular position) is written as null, never as NaN.
     """
     if not math.isfinite(float(value)):
         return None
+    if abs(float(value)) < floor:
+        return 0.0
     rounded = float(f"{float(value):.{SIGNIFICANT}g}")
     return 0.0 if rounded == 0 else rounded
 
 
-def _pair(xy: np.ndarray) -> list[float | None] | None:
-    pair = [number(xy[0]), number(xy[1])]
+def floor(values: Any) -> float:
+    """The size below which a value of ``values``' quantity is rounding noise:
+    :data:`SIGNIFICANT` digits of the largest finite one."""
+    magnitudes = np.abs(np.asarray(values, dtype=complex if np.iscomplexobj(values) else float))
+    finite = magnitudes[np.isfinite(magnitudes)]
+    return float(finite.max()) * 10.0 ** -SIGNIFICANT if finite.size else 0.0
+
+
+# Angles are judged against the full turn and percentages against the whole,
+# whatever the largest of them happens to be.
+ANGLE_FLOOR_DEG = 360.0 * 10.0 ** -SIGNIFICANT
+PERCENT_FLOOR = 100.0 * 10.0 ** -SIGNIFICANT
+KEY_FLOORS = {"deg": ANGLE_FLOOR_DEG, "percent": PERCENT_FLOOR}
+
+
+def _pair(xy: np.ndarray, floor_: float = 0.0) -> list[float | None] | None:
+    pair = [number(xy[0], floor_), number(xy[1], floor_)]
     return None if None in pair else pair
 
 
@@ -46,12 +66,17 @@ def results(analysis: Analysis) -> dict[str, Any]:
     driver = mechanism.driver
     points = {name: [as_xy(getattr(p, field), count) for field in ("r", "v", "a")] for name, p in motion.points.items()}
     links = {number_: motion.link(number_) for number_ in mechanism.moving_links}
+    r_floor, v_floor, a_floor = (floor([np.hypot(*xyz[k].T) for xyz in points.values()]) for k in range(3))
+    omega_floor = floor([link.omega for link in links.values()]) if links else 0.0
+    epsilon_floor = floor([link.epsilon for link in links.values()]) if links else 0.0
+    slide_floors = (floor([np.broadcast_to(s.velocity, count) for s in motion.slides]),
+                    floor([np.broadcast_to(s.acceleration, count) for s in motion.slides])) if motion.slides else (0, 0)
     planned = {plan.index: plan for plan in analysis.plans}
     settled = {*analysis.scene.frame_points, driver.joint, driver.link}
     entries = []
     for i in range(count):
         if driver.kind == "crank":
-            driver_entry = {"angle_deg": number(math.degrees(positions.values[i]) % 360.0),
+            driver_entry = {"angle_deg": number(_turn_deg(positions.values[i]), ANGLE_FLOOR_DEG),
                             "omega": number(driver.omega), "epsilon": number(driver.epsilon)}
         else:
             driver_entry = {"displacement": number(positions.values[i]), "velocity": number(driver.velocity),
@@ -61,14 +86,14 @@ def results(analysis: Analysis) -> dict[str, Any]:
             entry["stroke"] = positions.strokes[i]
         # At a singular position the velocities past the driver are not determined: they are null.
         known = (lambda name: True) if i not in motion.singular else (lambda name: name in settled)
-        entry["points"] = {name: {"r": _pair(r[i]), "v": _pair(v[i]) if known(name) else None,
-                                  "a": _pair(a[i]) if known(name) else None}
+        entry["points"] = {name: {"r": _pair(r[i], r_floor), "v": _pair(v[i], v_floor) if known(name) else None,
+                                  "a": _pair(a[i], a_floor) if known(name) else None}
                            for name, (r, v, a) in points.items()}
-        entry["links"] = {str(n): {"angle_deg": number(math.degrees(float(link.angle[i]))),
-                                   "omega": number(link.omega[i]) if known(n) else None,
-                                   "epsilon": number(link.epsilon[i]) if known(n) else None}
+        entry["links"] = {str(n): {"angle_deg": number(math.degrees(float(link.angle[i])), ANGLE_FLOOR_DEG),
+                                   "omega": number(link.omega[i], omega_floor) if known(n) else None,
+                                   "epsilon": number(link.epsilon[i], epsilon_floor) if known(n) else None}
                           for n, link in links.items()}
-        slides = [_slide(slide, i) for slide in motion.slides] if i not in motion.singular else []
+        slides = [_slide(slide, i, slide_floors) for slide in motion.slides] if i not in motion.singular else []
         if slides:
             entry["slides"] = slides
         if i in planned:
@@ -98,7 +123,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
                    for g in mechanism.groups],
     }
     if positions.extremes is not None:
-        document["extremes_deg"] = [number(math.degrees(value) % 360.0) for value in positions.extremes]
+        document["extremes_deg"] = [number(_turn_deg(value), ANGLE_FLOOR_DEG) for value in positions.extremes]
         working, idle = positions.stroke_turns(mechanism.driver.sense)
         document["strokes"] = {"working_deg": number(math.degrees(working)), "idle_deg": number(math.degrees(idle)),
                                "time_ratio": number(working / idle)}
@@ -106,7 +131,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     errors = [row for plan in analysis.plans for row in plan.errors]
     if errors:
         document["errors"] = [{"position": row.position, "quantity": row.quantity, "analytic": number(row.analytic),
-                               "plan": number(row.plan), "source": row.source, "percent": number(row.percent)}
+                               "plan": number(row.plan), "source": row.source, "percent": number(row.percent, PERCENT_FLOOR)}
                               for row in errors]
     document["warnings"] = [{"position": int(positions.numbers[w.position]), "code": w.code, "detail": w.detail}
                             for w in analysis.warnings]
@@ -115,6 +140,12 @@ def results(analysis: Analysis) -> dict[str, Any]:
 
 # The libraries whose arithmetic or geometry the numbers and drawings depend on.
 DEPENDENCIES = ("numpy", "scipy", "shapely", "svgwrite")
+
+
+def _turn_deg(angle: float) -> float:
+    """``angle`` in degrees within [0, 360), a hair below 360 read as 0."""
+    degrees = math.degrees(angle) % 360.0
+    return 0.0 if 360.0 - degrees < ANGLE_FLOOR_DEG else degrees
 
 
 def versions() -> dict[str, str]:
@@ -128,15 +159,26 @@ def versions() -> dict[str, str]:
     return found
 
 
-def rounded(value: Any) -> Any:
-    """``value`` with every float in it rounded by :func:`number` (lists and dicts walked through)."""
+def rounded(value: Any, key: str = "") -> Any:
+    """``value`` with every float in it rounded by :func:`number`, lists and dicts walked through.
+
+    A list of numbers is one quantity (a value per sample of the cycle, a vector's components) and
+    its rounding noise is judged against its largest member; a value under a key that ends in
+    ``_deg`` or ``_percent`` is judged against the full turn or the whole.
+    """
     if isinstance(value, dict):
-        return {key: rounded(item) for key, item in value.items()}
+        return {name: rounded(item, name) for name, item in value.items()}
     if isinstance(value, (list, tuple)):
+        if value and all(_is_number(item) for item in value):
+            return [number(item, floor(value)) if isinstance(item, float) else item for item in value]
         return [rounded(item) for item in value]
     if isinstance(value, float):
-        return number(value)
+        return number(value, KEY_FLOORS.get(key.rsplit("_", 1)[-1], 0.0))
     return value
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def results_without_linkage(scene) -> dict[str, Any]:
@@ -148,11 +190,13 @@ def _plans(plan: PlanPosition) -> dict[str, Any]:
     """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed."""
     result = {}
     for kind, drawn in plan.plans.items():
-        values = {reading.quantity: number(reading.value(plan.plans)) for reading in plan.readings if reading.plan == kind}
+        values = {reading.quantity: reading.value(plan.plans) for reading in plan.readings if reading.plan == kind}
+        points_mm = {letter: drawn.mm(letter) for letter in drawn.points}
+        points_floor, values_floor = floor(list(points_mm.values())), floor(list(values.values()))
         result[kind] = {"scale": number(drawn.scale),
-                        "points_mm": {letter: _pair(np.array([drawn.mm(letter).real, drawn.mm(letter).imag]))
-                                      for letter in drawn.points},
-                        "values": values}
+                        "points_mm": {letter: _pair(np.array([mm.real, mm.imag]), points_floor)
+                                      for letter, mm in points_mm.items()},
+                        "values": {quantity: number(value, values_floor) for quantity, value in values.items()}}
     return result
 
 
@@ -165,12 +209,13 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
     with friction in the pairs the same with friction, the efficiency and the self-locking flag."""
     forces, lever = plan.forces, plan.lever
     key = _balancing_key(mechanism.driver.kind)
+    reaction_floor = floor([found.force for found in forces.reactions.values()])
     result: dict[str, Any] = {
-        "reactions": {name: _pair(np.array([found.force.real, found.force.imag]))
+        "reactions": {name: _pair(np.array([found.force.real, found.force.imag]), reaction_floor)
                       for name, found in forces.reactions.items()},
         key: number(forces.balancing),
         f"lever_{key}": number(lever.balancing),
-        "lever_difference_percent": number(lever.difference_percent(forces.balancing)),
+        "lever_difference_percent": number(lever.difference_percent(forces.balancing), PERCENT_FLOOR),
         "polygon_scale": number(forces.scale),
         "polygon_scales": {label: number(scale) for label, scale in forces.group_scales.items()},
     }
@@ -185,32 +230,39 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
             "iterations": rubbing.iterations,
             "self_locking": rubbing.locked,
             "reactions": None if rubbing.locked else {
-                name: _pair(np.array([found.force.real, found.force.imag])) for name, found in rubbing.reactions.items()},
+                name: _pair(np.array([found.force.real, found.force.imag]), reaction_floor)
+                for name, found in rubbing.reactions.items()},
         }
         if plan.lever_with_friction is not None:
             result["friction"][f"lever_{key}"] = number(plan.lever_with_friction.balancing)
             result["friction"]["lever_difference_percent"] = number(
-                plan.lever_with_friction.difference_percent(rubbing.balancing))
+                plan.lever_with_friction.difference_percent(rubbing.balancing), PERCENT_FLOOR)
     return result
 
 
 def _equilibrium(balance, i: int, driver_kind: str, blank: bool = False) -> dict[str, Any]:
-    """The whole-mechanism linear system at one position: null where it is singular (or ``blank``)."""
+    """The whole-mechanism linear system at one position: null where it is singular (or ``blank``).
+
+    Rounding noise is judged against the whole cycle's largest balancing load and reaction."""
     if balance.singular[i] or blank:
         return {_balancing_key(driver_kind): None, "reactions": None}
+    reaction_floor = floor([r.force for r in balance.reactions])
     result: dict[str, Any] = {
-        _balancing_key(driver_kind): number(balance.balancing[i]),
-        "reactions": {r.name: _pair(np.array([r.force[i].real, r.force[i].imag])) for r in balance.reactions},
+        _balancing_key(driver_kind): number(balance.balancing[i], floor(balance.balancing)),
+        "reactions": {r.name: _pair(np.array([r.force[i].real, r.force[i].imag]), reaction_floor)
+                      for r in balance.reactions},
     }
-    offsets = {r.name: number(r.offset[i]) for r in balance.reactions if r.sliding}
+    offsets = {r.name: number(r.offset[i], floor(r.offset)) for r in balance.reactions if r.sliding}
     if offsets:
         result["offsets"] = offsets
     return result
 
 
-def _slide(slide, i: int) -> dict[str, Any]:
+def _slide(slide, i: int, floors: tuple[float, float]) -> dict[str, Any]:
+    velocity_floor, acceleration_floor = floors
     return {"slider": slide.slider, "guide": slide.guide, "joint": slide.joint,
-            "velocity": number(at(slide.velocity, i)), "acceleration": number(at(slide.acceleration, i))}
+            "velocity": number(at(slide.velocity, i), velocity_floor),
+            "acceleration": number(at(slide.acceleration, i), acceleration_floor)}
 
 
 def dumps(document: dict[str, Any]) -> str:
