@@ -24,7 +24,7 @@ from ..locale import strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane
 from ..scales import format_scale, standard_scale
 from .labels import Anchor, Placement, obstacles_of, place_labels
-from .plans import CAPTION_GAP_MM, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
+from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
 from .primitives import (
     Arrow,
     Layer,
@@ -50,7 +50,6 @@ GAP_MM = 25.0
 REFERENCE_MM = 16.0
 ANGLE_RADIUS_MM = 7.0
 NAME_SIZE = 3.2
-CAPTION_LINE = 1.6
 
 _SHARE = Stroke(0.5)
 _CORRECTION = Stroke(0.8, "#a83a1f")
@@ -76,7 +75,7 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
         cursor += width + GAP_MM
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     layers.append(Layer("balancing-title", (
-        Text((left, top + 8.0 + 1.6 * TITLE_SIZE), words["bal_title"], TITLE_SIZE, "start", weight="bold"),
+        Text((left, top + 8.0 + CAPTION_LINE * TITLE_SIZE), words["bal_title"], TITLE_SIZE, "start", weight="bold"),
         Text((left, top + 8.0), words["bal_scale"].format(value=format_scale(scale)), CAPTION_SIZE, "start"))))
     return layers
 

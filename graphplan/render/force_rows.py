@@ -19,14 +19,12 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
-from .plans import CAPTION_GAP_MM, GAP_MM, TITLE_SIZE, Arrangement
+from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, TITLE_SIZE, Arrangement
 from .primitives import Layer, Text, bounds, bounds_of, moved_layers, text_width
 from .wrapping import fitted
 
 # The least width a caption is broken to (mm), so that a narrow drawing's equations are not set a word a line.
 CAPTION_WIDTH_MM = 160.0
-# Line spacing of a caption, in letter heights.
-CAPTION_LINE = 1.6
 # The heading's scales line stands this far (mm) above the drawings' top.
 HEADING_GAP_MM = 8.0
 # The estimate of a way's size errs by a few mm (a caption's last line is counted whole): a way estimated
@@ -247,7 +245,7 @@ class Rows:
         """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales."""
         lines = fitted(title, max(width, CAPTION_WIDTH_MM), TITLE_SIZE, "bold")
         return Layer("sheet-title", (
-            *(Text((left, scales_line + 1.6 * TITLE_SIZE * (len(lines) - k)), line, TITLE_SIZE, "start",
+            *(Text((left, scales_line + CAPTION_LINE * TITLE_SIZE * (len(lines) - k)), line, TITLE_SIZE, "start",
                    weight="bold") for k, line in enumerate(lines)),
             Text((left, scales_line), self.heading.scales, self.heading.size, "start")))
 

@@ -59,6 +59,8 @@ TURN_RADIUS_MM = 7.0
 # Space between the three drawings, and between a drawing and its caption (mm).
 GAP_MM = 25.0
 CAPTION_GAP_MM = 12.0
+# Line spacing of captions and titles, in letter heights.
+CAPTION_LINE = 1.6
 
 LETTER_SIZE = 4.0
 CAPTION_SIZE = 5.0
@@ -205,7 +207,7 @@ def _fields(rows: list[list[tuple[str, ...]]], widths: dict[str, float], heights
 
 def _caption_depth(lines: tuple[str, ...]) -> float:
     """How far a caption reaches below its field (mm), to its last line's descenders."""
-    return CAPTION_GAP_MM + (len(lines) - 1) * 1.6 * CAPTION_SIZE + 0.3 * CAPTION_SIZE
+    return CAPTION_GAP_MM + (len(lines) - 1) * CAPTION_LINE * CAPTION_SIZE + 0.3 * CAPTION_SIZE
 
 
 # The mechanism in the position.
@@ -466,7 +468,7 @@ def _off_line(point: complex, through: complex, unit: complex) -> float:
 
 def _caption(lines: tuple[str, ...], at: tuple[float, float]) -> tuple[Text, ...]:
     """A drawing's caption centred under ``at``: its name in bold, then its scale."""
-    return tuple(Text((at[0], at[1] - k * 1.6 * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
+    return tuple(Text((at[0], at[1] - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
                       weight="bold" if k == 0 else "normal") for k, line in enumerate(lines))
 
 
