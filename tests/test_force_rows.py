@@ -111,3 +111,15 @@ def test_a_drawing_no_sheet_holds_even_alone_is_named_with_its_size():
     (unheld,) = rows.unheld(fits).items()
     name, (width, height) = unheld
     assert name == "body" and width == 100 and height > 500
+
+
+@pytest.mark.parametrize(("caption_size", "title_size"), [(5.0, 7.0), (3.5, 5.0), (2.5, 3.5)])
+def test_the_heading_title_is_lettered_one_size_above_the_captions(caption_size, title_size):
+    """GOST 2.304 and ISO 3098 letter in a √2 series (2.5, 3.5, 5, 7 mm): a title one step above captions
+    that a small sheet letters 3.5 mm is 5 mm, not the 7 mm over the usual 5 mm captions."""
+    heading = Heading(HEADING.title, HEADING.scales, caption_size, HEADING.part_title, HEADING.continued)
+    rows = Rows(groups(1), heading)
+    arranged = rows.arranged(rows.in_columns(1), heading.title)
+    titles = [item for layer in arranged.layers if layer.name == "sheet-title" for item in layer.items]
+    assert {item.size for item in titles if item.weight == "bold"} == {title_size}
+    assert {item.size for item in titles if item.weight != "bold"} == {caption_size}
