@@ -23,9 +23,10 @@ from graphplan.errors import SceneError
 from graphplan.kinematic_diagrams import of_analysis
 from graphplan.render import forces as force_layout
 from graphplan.render import plans as plan_layout
-from graphplan.render.drawings import force_sheet, plan_scale_text, with_length_scale
+from graphplan.render.drawings import force_sheet, with_length_scale
 from graphplan.render.force_rows import CAPTION_WIDTH_MM
 from graphplan.render.formats import FORMATS, page_geometry
+from graphplan.render.numerals import scale_factor
 from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent, text_width
 from graphplan.render.sheet import (
     _group_of_field,
@@ -223,7 +224,7 @@ def test_on_a1_the_force_drawings_keep_the_mechanism_scale_and_the_usual_letteri
     joined = " ".join(text.text for text in captions)
     assert f"μl = {analysis.scene.drawing.length_scale:g} м/мм, силы" in joined
     for position in analysis.plans:
-        assert f"μV = {plan_scale_text(position.velocity.scale)} (м/с)/мм, силы" in joined
+        assert f"μV = {scale_factor(position.velocity.scale)} (м/с)/мм, силы" in joined
     assert {text.size for text in captions} == {plan_layout.CAPTION_SIZE}
 
 

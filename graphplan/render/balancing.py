@@ -24,6 +24,7 @@ from ..locale import strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane
 from ..scales import format_scale, standard_scale
 from .labels import Anchor, Placement, obstacles_of, place_labels
+from .numerals import significant
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
 from .primitives import (
     Arrow,
@@ -153,9 +154,9 @@ def _caption(plane: CorrectionPlane, text: Mapping[str, str], dynamic: bool) -> 
              if dynamic else text["bal_disc"].format(name=plane.name))
     lines = [title, plane.equation,
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
-                                                 value=_number(plane.mass_radius), angle=f"{plane.angle_deg:.1f}")]
+                                                 value=significant(plane.mass_radius), angle=f"{plane.angle_deg:.1f}")]
     if plane.mass is not None and plane.radius is not None:
-        lines.append(text["bal_mass"].format(name=plane.name, mass=_number(plane.mass),
+        lines.append(text["bal_mass"].format(name=plane.name, mass=significant(plane.mass),
                                                    radius=_given(plane.radius)))
     return tuple(lines)
 
@@ -164,15 +165,6 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placeme
     """The labels placed clear of the figure and of every anchor's own spot."""
     spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
     return place_labels(anchors, obstacles_of(figure) + spots)
-
-
-def _number(value: float, digits: int = 4) -> str:
-    """A value with ``digits`` significant digits, no exponent, a true minus sign."""
-    if value == 0 or not math.isfinite(value):
-        return "0"
-    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
-    written = f"{value:.{decimals}f}"
-    return written.replace("-", "−") if written.strip("-0.") else "0"
 
 
 def _given(value: float) -> str:

@@ -27,6 +27,7 @@ from ..kinematic_diagrams import KinematicDiagrams
 from ..locale import strings
 from ..scales import format_scale
 from .labels import Anchor, obstacles_of, place_labels
+from .numerals import scale_factor
 from .primitives import (
     Arrow,
     Layer,
@@ -230,9 +231,9 @@ def _scale_line(record: KinematicDiagrams, kind: str, words: Mapping[str, str], 
     if kind == "displacement":
         return words["kd_displacement_scale"].format(value=format_scale(scales.displacement), unit=per_mm)
     if kind == "velocity":
-        return words["kd_velocity_scale"].format(value=scale_text(scales.velocity), unit=per_mm,
+        return words["kd_velocity_scale"].format(value=scale_factor(scales.velocity), unit=per_mm,
                                                  pole=f"{scales.velocity_pole:g}")
-    return words["kd_acceleration_scale"].format(value=scale_text(scales.acceleration), unit=per_mm,
+    return words["kd_acceleration_scale"].format(value=scale_factor(scales.acceleration), unit=per_mm,
                                                  pole=f"{scales.acceleration_pole:g}")
 
 
@@ -262,19 +263,12 @@ def _abscissa(record: KinematicDiagrams, words: Mapping[str, str]) -> str:
 def _abscissa_scale(record: KinematicDiagrams, words: Mapping[str, str]) -> str:
     """The scales of the common abscissa: μφ and μt over a crank's turn or swing, μt over a slider's travel."""
     scales = record.scales
-    length, time = f"{scales.axis_mm:g}", scale_text(scales.time)
+    length, time = f"{scales.axis_mm:g}", scale_factor(scales.time)
     if record.driver == "slider":
         return words["kd_travel_scale"].format(time=time, length=length, travel=f"{record.span:.4g}",
                                                speed=f"{record.driver_speed:.4g}",
                                                duration=f"{record.span / record.driver_speed:.4g}")
     key = "kd_angle_scale" if record.cyclic else "kd_swing_scale"
-    return words[key].format(value=scale_text(scales.along), degrees=f"{math.degrees(scales.along):.4g}",
+    return words[key].format(value=scale_factor(scales.along), degrees=f"{math.degrees(scales.along):.4g}",
                              swing=f"{math.degrees(record.span):.4g}", length=length, time=time,
                              omega=f"{record.driver_speed:.4g}")
-
-
-def scale_text(value: float) -> str:
-    """A scale factor fixed by a pole distance, to four significant digits, five decimals at least."""
-    decimals = max(5, 3 - math.floor(math.log10(abs(value)))) if value else 5
-    shown = f"{value:.{decimals}f}".rstrip("0").rstrip(".")
-    return shown or "0"

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import dataclasses
-import math
 from collections.abc import Mapping
 
 import numpy as np
@@ -17,6 +16,7 @@ from ..statics import efficiency
 from . import forces as force_layout
 from . import plans, positions
 from .formats import holds
+from .numerals import scale_factor
 from .primitives import Layer, bounds, in_language
 from .svg import to_svg
 from .title_block import form_of
@@ -168,10 +168,10 @@ def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
         mechanism_caption=(text["mechanism_title"].format(number=number),
                            text["length_scale"].format(value=format_scale(scale))),
         velocity_caption=(text["velocity_plan_title"],
-                          text["velocity_scale"].format(value=plan_scale_text(velocity.scale)),
+                          text["velocity_scale"].format(value=scale_factor(velocity.scale)),
                           *_too_short_lines(velocity, "velocity", text)),
         acceleration_caption=(text["acceleration_plan_title"],
-                              text["acceleration_scale"].format(value=plan_scale_text(acceleration.scale)),
+                              text["acceleration_scale"].format(value=scale_factor(acceleration.scale)),
                               *_too_short_lines(acceleration, "acceleration", text)),
         velocity_pole="p", acceleration_pole=text["acceleration_pole"])
 
@@ -190,17 +190,6 @@ def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str
     lines = [text["plan_too_short"].format(least=f"{plans.ZERO_MM:g}")]
     lines += ["; ".join(values[k:k + _SHORT_PER_LINE]) for k in range(0, len(values), _SHORT_PER_LINE)]
     return lines
-
-
-def plan_scale_text(value: float) -> str:
-    """A plan's scale factor as written on the sheet: four significant digits, five decimals at least.
-
-    A standard value stays short (0.0004); a scale fixed by the pole
-    distance is rounded (0.0198333… → 0.01983, 0.50575 stays).
-    """
-    decimals = max(5, 3 - math.floor(math.log10(abs(value)))) if value else 5
-    text = f"{value:.{decimals}f}".rstrip("0").rstrip(".")
-    return text or "0"
 
 
 def forces_svg(analysis: Analysis, plan_position: PlanPosition, with_friction: bool = False) -> str:
@@ -239,4 +228,4 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         lever=lever, velocity=velocity, length_scale=length_scale(analysis),
         title=text[title].format(title=analysis.scene.title, number=plan_position.number),
         part_title=text[part_title].format(number=plan_position.number), text=text, friction=friction, without_friction=ideal, efficiency=eta,
-        velocity_scale=text["velocity_scale"].format(value=plan_scale_text(velocity.scale)))
+        velocity_scale=text["velocity_scale"].format(value=scale_factor(velocity.scale)))

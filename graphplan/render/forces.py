@@ -54,6 +54,7 @@ from ..wording import balancing_symbol, friction_summary
 from .force_rows import Drawing, Heading, Rows
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
 from .linkage import outline_points
+from .numerals import significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
 from .primitives import (
@@ -210,9 +211,9 @@ def _friction_summary(sheet: ForceSheet) -> list[str]:
     """The line of the sheet with friction under the driving link: the balancing load with and without it, η."""
     if sheet.without_friction is None:
         return []
-    eta = "—" if sheet.efficiency is None or not math.isfinite(sheet.efficiency) else _number(sheet.efficiency)
+    eta = "—" if sheet.efficiency is None or not math.isfinite(sheet.efficiency) else significant(sheet.efficiency)
     return [friction_summary(sheet.mechanism, sheet.text, sheet.without_friction,
-                             written_load=_number(sheet.forces.balancing), written_ideal=_number(sheet.without_friction),
+                             written_load=significant(sheet.forces.balancing), written_ideal=significant(sheet.without_friction),
                              iterations=sheet.forces.iterations, written_efficiency=eta)]
 
 
@@ -277,7 +278,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         caption.append(_balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
         # Under the load it balances, so that a sheet set part by part keeps it.
         caption += _friction_summary(sheet)
-    caption += _wrapped([f"{found.name} = {_number(abs(found.force))} {text['newton']}" for found in group.found
+    caption += _wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
     return Drawing(f"body-{key}", [
@@ -521,7 +522,7 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
         if f"{found.name}n" in split:  # split into τ and n on the drawing, the whole reaction is named only here
             anchors.append(Anchor(_xy(touch + run * unit), found.name, NAME_SIZE, _angle(unit), _ON_TANGENT.colour))
     text = sheet.text
-    values = [f"ρ{pair.joint} = {_number(1000.0 * pair.radius)} {text['millimetre']}"
+    values = [f"ρ{pair.joint} = {significant(1000.0 * pair.radius)} {text['millimetre']}"
               for pair in sorted(journals, key=lambda pair: pair.joint)]
     caption = _wrapped([text["friction_circles"].format(values=values[0]), *values[1:]])
     if any(pair.radius / sheet.length_scale < LEAST_FRICTION_CIRCLE_MM for pair in journals):
@@ -609,17 +610,17 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
         found = sheet.forces.reactions.get(unknown[:-2])
         shift = ""
         if found is not None and found.offset and abs(found.force) / sheet.forces.scale_of(found.name) >= ZERO_MM:
-            shift = f",  x = {_number(1000.0 * found.offset)} {text['millimetre']}"
+            shift = f",  x = {significant(1000.0 * found.offset)} {text['millimetre']}"
         return f"{about} {unknown} {terms} = 0{shift}"
     if unknown == "Mb":
-        return f"{about} Mb {terms} = 0,  Mb = {_number(equation.value)} {text['newton_metre']}"
+        return f"{about} Mb {terms} = 0,  Mb = {significant(equation.value)} {text['newton_metre']}"
     # The unknown's sense as first assumed: its moment balances the others'.
     sign = "" if equation.value == 0 or -total / equation.value >= 0 else "−"
     joint = next((found.joint for found in group.found
                   if unknown.rstrip("τn") in (f"R{found.source}{found.target}", f"R{found.target}{found.source}")),
                  None)
     arm = "h" if joint is None or joint == equation.about else "".join(sorted((joint, equation.about)))
-    return f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {_number(equation.value)} {text['newton']}"
+    return f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {significant(equation.value)} {text['newton']}"
 
 
 def _perpendicular(centre: complex, start: complex, end: complex, unit: complex) -> list[Primitive]:
@@ -870,22 +871,12 @@ def _balancing_line(sheet: ForceSheet, value: float, how: str) -> str:
     text = sheet.text
     name, unit = balancing_symbol(sheet.mechanism, text)
     what = text["balancing_moment" if name == "Mb" else "balancing_force"]
-    return text[how].format(what=what, name=name, value=_number(value), unit=unit)
+    return text[how].format(what=what, name=name, value=significant(value), unit=unit)
 
 
 def _wrapped(items: Sequence[str]) -> list[str]:
     """Values listed ``PER_LINE`` to a caption line."""
     return [",  ".join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
-
-
-def _number(value: float, digits: int = 4) -> str:
-    """A value with ``digits`` significant digits, no exponent, a true minus sign."""
-    value = float(value)
-    if value == 0 or not math.isfinite(value):
-        return "0"
-    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
-    text = f"{value:.{decimals}f}"
-    return text.replace("-", "−") if text.strip("-0.") else "0"
 
 
 def _percent(value: float) -> str:

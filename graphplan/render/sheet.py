@@ -57,7 +57,6 @@ from .drawings import (
     fitting_length_scale,
     force_sheet,
     length_scale,
-    plan_scale_text,
     plan_sheet,
     plan_size,
     positions_plan,
@@ -74,6 +73,7 @@ from .formats import (
     orientations,
     page_geometry,
 )
+from .numerals import scale_factor
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers
 from .svg import to_svg
@@ -629,7 +629,7 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
         return f"drawing.{kind}_scale = {format_scale(given_scale)}", None
     driven = [abs(getattr(position, kind).value(analysis.mechanism.driver.joint)) for position in positions]
     if pole is None or not all(pa > 0 for pa in driven):
-        return f"{kind} scale {plan_scale_text(getattr(positions[0], kind).scale)}", None
+        return f"{kind} scale {scale_factor(getattr(positions[0], kind).scale)}", None
     # A plan grows with its pole distance: for each position the largest whole millimetre that fits, by halving.
     too_long = math.ceil(pole)
     for position, pa in zip(positions, driven, strict=True):

@@ -1,0 +1,28 @@
+"""How a number is written on a drawing: short, with no exponent, and a true minus sign.
+
+The SVG writer puts in the locale's decimal mark; these functions write the point.
+"""
+
+from __future__ import annotations
+
+import math
+
+
+def significant(value: float, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant digits, no exponent, a true minus sign, no minus on a nought."""
+    value = float(value)
+    if value == 0 or not math.isfinite(value):
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    text = f"{value:.{decimals}f}"
+    return text.replace("-", "−") if text.strip("-0.") else "0"
+
+
+def scale_factor(value: float) -> str:
+    """A scale factor fixed by a pole distance: four significant digits, five decimals at least.
+
+    A standard value stays short (0.0004); the rest is rounded (0.0198333… → 0.01983, 0.50575 stays).
+    """
+    decimals = max(5, 3 - math.floor(math.log10(abs(value)))) if value else 5
+    text = f"{value:.{decimals}f}".rstrip("0").rstrip(".")
+    return text or "0"
