@@ -21,6 +21,7 @@ from graphplan.locale import strings
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg
 from graphplan.render.labels import text_box
+from graphplan.render.numerals import significant
 from graphplan.render.plans import ZERO_MM
 from graphplan.render.primitives import Arrow, Polyline, Text
 
@@ -246,7 +247,7 @@ def test_the_lever_and_the_polygons_agree_on_the_sheet():
     texts = [item.text for layer in layers for item in layer.items if isinstance(item, Text)]
     difference = position.lever.difference_percent(position.forces.balancing)
     assert f"difference {abs(difference):.2f} %" in texts
-    value = force_layout._number(position.forces.balancing)
+    value = significant(position.forces.balancing)
     assert value.startswith("−")  # the engine's crank is driven: the balancing moment resists
     assert f"balancing moment Mb = {value} N·m (force polygons)" in " ".join(texts)
 

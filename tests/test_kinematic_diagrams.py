@@ -359,9 +359,3 @@ def test_svg_is_the_same_every_time_and_states_the_scales():
     assert "(m/s²)/mm" in svg
     assert f"{found.largest_v_difference:.2f} %" in svg
 
-
-def test_scale_text_keeps_four_significant_digits():
-    assert diagrams.scale_text(0.3333333) == "0.33333"
-    assert diagrams.scale_text(8.948604) == "8.9486"
-    assert diagrams.scale_text(0.0001666667) == "0.0001667"
-    assert diagrams.scale_text(50.0) == "50"

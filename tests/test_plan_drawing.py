@@ -28,7 +28,6 @@ from graphplan.plans import PLAN_FIELD_MM, DrawnLine, LaidVector, LineMeaning, S
 from graphplan.render import labels, linkage, positions
 from graphplan.render import plans as sheet_layout
 from graphplan.render.drawings import (
-    plan_scale_text,
     plan_sheet,
     plan_svg,
     positions_plan,
@@ -235,12 +234,6 @@ def test_the_scales_are_written_under_their_drawings(ratchet, six_bar):
     assert {"μV = 0.01983 (м/с)/мм", "μa = 0.50575 (м/с²)/мм", "μl = 0.0025 м/мм"} <= set(texts)
     texts = [t.text for layer in sheet_layout.layout(plan_sheet(six_bar, 3)) for t in layer.items if isinstance(t, Text)]
     assert {"μV = 0.01983 (m/s)/mm", "μa = 0.50575 (m/s²)/mm", "μl = 0.0025 m/mm"} <= set(texts)
-
-
-@pytest.mark.parametrize("value, text", [(2.975 / 150, "0.01983"), (0.50575, "0.50575"), (0.0004, "0.0004"),
-                                         (0.001, "0.001"), (1.234e-6, "0.000001234"), (250.0, "250")])
-def test_plan_scales_are_written_to_four_significant_digits_or_five_decimals(value, text):
-    assert plan_scale_text(value) == text
 
 
 def test_the_acceleration_pole_is_lettered_as_the_locale_prefers(ratchet, six_bar):

@@ -26,7 +26,7 @@ from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import force_sheet, with_length_scale
 from graphplan.render.force_rows import CAPTION_WIDTH_MM
 from graphplan.render.formats import FORMATS, page_geometry
-from graphplan.render.numerals import scale_factor
+from graphplan.render.numerals import scale_factor, significant
 from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent, text_width
 from graphplan.render.sheet import (
     _group_of_field,
@@ -157,7 +157,7 @@ def check_lever_scale(analysis, sheets):
         velocities = sorted(abs(position.velocity.points[letter]) for letter in images
                             if abs(position.velocity.points[letter]) / drawn_at >= force_layout.ZERO_MM)
         assert drawn == pytest.approx(velocities, rel=1e-6)
-        assert f"Mb = {force_layout._number(position.lever.balancing)} Н·м" in caption
+        assert f"Mb = {significant(position.lever.balancing)} Н·м" in caption
         scales.append(drawn_at)
     return scales
 

@@ -1,0 +1,29 @@
+"""How numbers are written on the drawings (graphplan.render.numerals), against values rounded by hand."""
+
+import pytest
+
+from graphplan.render.numerals import scale_factor, significant
+
+
+@pytest.mark.parametrize(("value", "written"), [
+    (1234.5678, "1235"), (12.3456, "12.35"), (-12.3456, "−12.35"), (0.000123456, "0.0001235"),
+    (49.02, "49.02"), (1530.4, "1530"), (-0.00004, "−0.00004000"), (0.0, "0"), (-0.0, "0"),
+])
+def test_significant_writes_four_digits_with_no_exponent_and_a_true_minus(value, written):
+    assert significant(value) == written
+
+
+def test_significant_takes_other_counts_of_digits():
+    assert significant(2.0 / 3.0, 2) == "0.67"
+    assert significant(-0.0004, 1) == "−0.0004"
+    assert significant(-0.00001, 2) == "−0.000010"
+    assert significant(float("nan")) == "0"
+
+
+@pytest.mark.parametrize(("value", "written"), [
+    (0.3333333, "0.33333"), (8.948604, "8.9486"), (0.0001666667, "0.0001667"), (50.0, "50"),
+    (2.975 / 150, "0.01983"), (0.50575, "0.50575"), (0.0004, "0.0004"), (0.001, "0.001"),
+    (1.234e-6, "0.000001234"), (250.0, "250"), (0.0, "0"),
+])
+def test_a_scale_factor_keeps_four_significant_digits_and_five_decimals_at_least(value, written):
+    assert scale_factor(value) == written
