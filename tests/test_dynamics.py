@@ -20,6 +20,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -395,6 +396,9 @@ def test_dynamics_sheet_renders_the_same_every_time():
     assert cairosvg.svg2png(bytestring=svg.encode())[:8] == b"\x89PNG\r\n\x1a\n"
     translated = dynamics_svg(model, flywheel, {"dyn_title": "Динамика машины"})
     assert "Динамика машины" in translated
+    # The shaper's Me goes negative: its ticks carry a true minus sign, as every other drawing's numbers do.
+    shaper = dynamics_svg(model_of("shaper_six_bar"), flywheel_for(model_of("shaper_six_bar"), 0.05))
+    assert re.search(r">−\d", shaper) and not re.search(r">-\d", shaper)
 
 
 def test_slider_driver_sheet_has_no_energy_mass_diagram():

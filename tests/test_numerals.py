@@ -2,7 +2,7 @@
 
 import pytest
 
-from graphplan.render.numerals import scale_factor, significant
+from graphplan.render.numerals import scale_factor, short, significant
 
 
 @pytest.mark.parametrize(("value", "written"), [
@@ -27,3 +27,11 @@ def test_significant_takes_other_counts_of_digits():
 ])
 def test_a_scale_factor_keeps_four_significant_digits_and_five_decimals_at_least(value, written):
     assert scale_factor(value) == written
+
+
+@pytest.mark.parametrize(("value", "written"), [
+    (0.05, "0.05"), (-200.0, "−200"), (1.0 / 3.0, "0.3333"), (100.0, "100"), (1500.0, "1500"),
+    (12345.6, "12346"), (-0.0, "0"), (float("nan"), "nan"),
+])
+def test_short_drops_the_trailing_noughts(value, written):
+    assert short(value) == written

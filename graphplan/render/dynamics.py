@@ -26,6 +26,7 @@ from ..dynamics import EquivalentModel
 from ..flywheel import Flywheel, omega_to_rpm
 from ..locale import strings
 from ..scales import fit_scale, format_scale
+from .numerals import short
 from .primitives import (
     THIN,
     Arrow,
@@ -205,7 +206,7 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
     else:
         travel = float(model.coordinate[-1])
         step = _nice_step(travel / 5)
-        ticks = [(v / scales.angle, _format(v)) for v in np.arange(0.0, travel * (1 + 1e-9), step)]
+        ticks = [(v / scales.angle, short(v)) for v in np.arange(0.0, travel * (1 + 1e-9), step)]
         name = words["dyn_travel_axis"]
     for at, label in ticks:
         if at > 0:
@@ -226,7 +227,7 @@ def _ordinate(x: float, bottom_mm: float, top_mm: float, scale: float, base: flo
     for value in np.arange(first, high + step * 1e-9, step):
         at = (value - base) / scale
         items.append(Polyline(((x - TICK_MM, at), (x, at)), THIN))
-        items.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), _format(value), LABEL, "end"))
+        items.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), short(value), LABEL, "end"))
     items.append(Text((x + 2.0, top_mm + AXIS_RUN_MM - LABEL), name, LABEL, "start"))
     return items
 
@@ -293,7 +294,7 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     for value in np.arange(step, float(np.max(model.inertia)) + step * 1e-9, step):
         at = value / scales.inertia
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        items.append(Text((at, TICK_MM + 1.0), _format(value), LABEL, "middle"))
+        items.append(Text((at, TICK_MM + 1.0), short(value), LABEL, "middle"))
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     items.append(Text((width / 2 + 6.0, -length / 2), words["dyn_inertia"], HEADING, "start", weight="bold"))
     items.append(Text((width / 2 + 6.0, -length / 2 - HEADING - 2.5),
@@ -307,14 +308,14 @@ def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:
     if model.cyclic:
         return [(math.radians(degrees), f"{degrees}") for degrees in range(0, 361, 30)]
     span = math.degrees(float(model.coordinate[-1]))
-    return [(math.radians(degrees), _format(degrees))
+    return [(math.radians(degrees), short(degrees))
             for degrees in np.arange(0.0, span * (1 + 1e-9), _nice_step(span / 6))]
 
 
 def _angle_scale(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> str:
     if model.turning:
-        return words["dyn_angle_scale"].format(degrees=_format(math.degrees(scales.angle), 4),
-                                               radians=_format(scales.angle, 4))
+        return words["dyn_angle_scale"].format(degrees=short(math.degrees(scales.angle), 4),
+                                               radians=short(scales.angle, 4))
     return words["dyn_travel_scale"].format(value=format_scale(scales.angle))
 
 
@@ -322,19 +323,19 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
     if flywheel is None:
         return []
     lines = [
-        words["dyn_delta"].format(delta=_format(flywheel.delta), omega=_format(flywheel.omega_mean, 5),
-                              rpm=_format(omega_to_rpm(flywheel.omega_mean), 5)),
-        words["dyn_delta_w_max"].format(value=_format(flywheel.delta_w_max, 5)),
-        words["dyn_exact"].format(value=_format(flywheel.inertia, 5)),
-        words["dyn_approximate"].format(value=_format(flywheel.approximate, 5)),
-        words["dyn_mertsalov"].format(value=_format(flywheel.mertsalov, 5), constant=_format(flywheel.constant_inertia, 4)),
+        words["dyn_delta"].format(delta=short(flywheel.delta), omega=short(flywheel.omega_mean, 5),
+                              rpm=short(omega_to_rpm(flywheel.omega_mean), 5)),
+        words["dyn_delta_w_max"].format(value=short(flywheel.delta_w_max, 5)),
+        words["dyn_exact"].format(value=short(flywheel.inertia, 5)),
+        words["dyn_approximate"].format(value=short(flywheel.approximate, 5)),
+        words["dyn_mertsalov"].format(value=short(flywheel.mertsalov, 5), constant=short(flywheel.constant_inertia, 4)),
     ]
     if flywheel.moved is not None and flywheel.shaft_rpm is not None:
-        lines.append(words["dyn_moved"].format(rpm=_format(flywheel.shaft_rpm), value=_format(flywheel.moved, 4)))
+        lines.append(words["dyn_moved"].format(rpm=short(flywheel.shaft_rpm), value=short(flywheel.moved, 4)))
     for key, index in (("dyn_omega_max", flywheel.index_max), ("dyn_omega_min", flywheel.index_min)):
-        lines.append(words[key].format(value=_format(float(flywheel.omega[index]), 5),
-                                       angle=_format(math.degrees(model.driver[index]) % 360.0, 4),
-                                       travel=_format(math.degrees(model.coordinate[index]), 4)))
+        lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5),
+                                       angle=short(math.degrees(model.driver[index]) % 360.0, 4),
+                                       travel=short(math.degrees(model.coordinate[index]), 4)))
     if flywheel.inertia <= 0:
         lines.append(words["dyn_no_flywheel"])
     items: list[Primitive] = [Text((0.0, 0.0), words["dyn_results"], HEADING, "start", weight="bold")]
@@ -352,17 +353,6 @@ def _nice_step(rough: float) -> float:
         if mantissa * power >= rough * (1 - 1e-9):
             return mantissa * power
     return 10.0 * power
-
-
-def _format(value: float, digits: int = 4) -> str:
-    """``value`` to ``digits`` significant digits, as written on a drawing: no exponent, no −0."""
-    if value == 0 or not math.isfinite(value):
-        return "0" if value == 0 else str(value)
-    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
-    text = f"{value:.{decimals}f}"
-    if "." in text:
-        text = text.rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
 
 
 __all__ = ["Scales", "dynamics_svg", "layout", "scales_for"]

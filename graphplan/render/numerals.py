@@ -18,6 +18,19 @@ def significant(value: float, digits: int = 4) -> str:
     return text.replace("-", "−") if text.strip("-0.") else "0"
 
 
+def short(value: float, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant digits with the trailing noughts dropped: 0.05, not 0.05000.
+
+    For tick labels and quantities worked out where a trailing nought would claim a digit nobody
+    measured; a value that is not a number is written as it is (nan, inf).
+    """
+    value = float(value)
+    if not math.isfinite(value):
+        return str(value)
+    text = significant(value, digits)
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
 def scale_factor(value: float) -> str:
     """A scale factor fixed by a pole distance: four significant digits, five decimals at least.
 
