@@ -52,5 +52,5 @@ def test_a_value_is_judged_against_its_own_quantity():
     assert rounded({"angle_deg": 359.9999999999999, "twist_deg": 1e-15, "error_percent": 3e-14,
                     "moment": 3e-14}) == {"angle_deg": 360.0, "twist_deg": 0.0, "error_percent": 0.0, "moment": 3e-14}
     assert rounded([math.nan, 2.0, True]) == [None, 2.0, True]
-    assert number(-4e-13, floor=1e-12) == 0.0 and number(-4e-13) == -4e-13
+    assert number(-4e-13, noise=1e-12) == 0.0 and number(-4e-13) == -4e-13
     assert number(1.234567890123456) == 1.23456789012

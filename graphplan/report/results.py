@@ -25,21 +25,21 @@ from ..statics import efficiency
 SIGNIFICANT = 12
 
 
-def number(value: float, floor: float = 0.0) -> float | None:
+def number(value: float, noise: float = 0.0) -> float | None:
     """``value`` rounded to :data:`SIGNIFICANT` digits, with −0 written as 0.
 
-    A value smaller than ``floor`` is written as 0. A value that is not a
+    A value smaller than ``noise`` is written as 0. A value that is not a
     number (a velocity at a singular position) is written as null, never as NaN.
     """
     if not math.isfinite(float(value)):
         return None
-    if abs(float(value)) < floor:
+    if abs(float(value)) < noise:
         return 0.0
     rounded = float(f"{float(value):.{SIGNIFICANT}g}")
     return 0.0 if rounded == 0 else rounded
 
 
-def floor(values: Any) -> float:
+def noise_floor(values: Any) -> float:
     """The size below which a value of ``values``' quantity is rounding noise:
     :data:`SIGNIFICANT` digits of the largest finite one."""
     magnitudes = np.abs(np.asarray(values, dtype=complex if np.iscomplexobj(values) else float))
@@ -54,8 +54,8 @@ PERCENT_FLOOR = 100.0 * 10.0 ** -SIGNIFICANT
 KEY_FLOORS = {"deg": ANGLE_FLOOR_DEG, "percent": PERCENT_FLOOR}
 
 
-def _pair(xy: np.ndarray, floor_: float = 0.0) -> list[float | None] | None:
-    pair = [number(xy[0], floor_), number(xy[1], floor_)]
+def _pair(xy: np.ndarray, noise: float = 0.0) -> list[float | None] | None:
+    pair = [number(xy[0], noise), number(xy[1], noise)]
     return None if None in pair else pair
 
 
@@ -66,11 +66,15 @@ def results(analysis: Analysis) -> dict[str, Any]:
     driver = mechanism.driver
     points = {name: [as_xy(getattr(p, field), count) for field in ("r", "v", "a")] for name, p in motion.points.items()}
     links = {number_: motion.link(number_) for number_ in mechanism.moving_links}
-    r_floor, v_floor, a_floor = (floor([np.hypot(*xyz[k].T) for xyz in points.values()]) for k in range(3))
-    omega_floor = floor([link.omega for link in links.values()]) if links else 0.0
-    epsilon_floor = floor([link.epsilon for link in links.values()]) if links else 0.0
-    slide_floors = (floor([np.broadcast_to(s.velocity, count) for s in motion.slides]),
-                    floor([np.broadcast_to(s.acceleration, count) for s in motion.slides])) if motion.slides else (0, 0)
+    r_floor, v_floor, a_floor = (noise_floor([np.hypot(*xyz[k].T) for xyz in points.values()]) for k in range(3))
+    omega_floor = noise_floor([link.omega for link in links.values()]) if links else 0.0
+    epsilon_floor = noise_floor([link.epsilon for link in links.values()]) if links else 0.0
+    slide_floors = (noise_floor([np.broadcast_to(s.velocity, count) for s in motion.slides]),
+                    noise_floor([np.broadcast_to(s.acceleration, count) for s in motion.slides])
+                    ) if motion.slides else (0.0, 0.0)
+    balance, rubbing = analysis.equilibrium, analysis.with_friction
+    balance_noise = _cycle_noise(balance) if balance is not None else {}
+    rubbing_noise = _cycle_noise(rubbing) if balance is not None and rubbing is not None else {}
     planned = {plan.index: plan for plan in analysis.plans}
     settled = {*analysis.scene.frame_points, driver.joint, driver.link}
     entries = []
@@ -100,14 +104,13 @@ def results(analysis: Analysis) -> dict[str, Any]:
             entry["plans"] = _plans(planned[i])
             if planned[i].forces is not None:
                 entry["forces"] = _forces(planned[i], mechanism)
-        if analysis.equilibrium is not None:
-            entry["equilibrium"] = _equilibrium(analysis.equilibrium, i, driver.kind)
-            if analysis.with_friction is not None:
-                rubbing = analysis.with_friction
+        if balance is not None:
+            entry["equilibrium"] = _equilibrium(balance, i, driver.kind, balance_noise)
+            if rubbing is not None:
                 entry["equilibrium"]["friction"] = {
-                    **_equilibrium(rubbing, i, driver.kind, blank=bool(rubbing.locked[i])),
+                    **_equilibrium(rubbing, i, driver.kind, rubbing_noise, blank=bool(rubbing.locked[i])),
                     "efficiency": None if rubbing.locked[i] else number(
-                        efficiency(mechanism, analysis.equilibrium.balancing[i], rubbing.balancing[i])),
+                        efficiency(mechanism, balance.balancing[i], rubbing.balancing[i])),
                     "iterations": int(rubbing.iterations[i]),
                     "self_locking": bool(rubbing.locked[i]),
                 }
@@ -170,7 +173,7 @@ def rounded(value: Any, key: str = "") -> Any:
         return {name: rounded(item, name) for name, item in value.items()}
     if isinstance(value, (list, tuple)):
         if value and all(_is_number(item) for item in value):
-            return [number(item, floor(value)) if isinstance(item, float) else item for item in value]
+            return [number(item, noise_floor(value)) if isinstance(item, float) else item for item in value]
         return [rounded(item) for item in value]
     if isinstance(value, float):
         return number(value, KEY_FLOORS.get(key.rsplit("_", 1)[-1], 0.0))
@@ -192,7 +195,7 @@ def _plans(plan: PlanPosition) -> dict[str, Any]:
     for kind, drawn in plan.plans.items():
         values = {reading.quantity: reading.value(plan.plans) for reading in plan.readings if reading.plan == kind}
         points_mm = {letter: drawn.mm(letter) for letter in drawn.points}
-        points_floor, values_floor = floor(list(points_mm.values())), floor(list(values.values()))
+        points_floor, values_floor = noise_floor(list(points_mm.values())), noise_floor(list(values.values()))
         result[kind] = {"scale": number(drawn.scale),
                         "points_mm": {letter: _pair(np.array([mm.real, mm.imag]), points_floor)
                                       for letter, mm in points_mm.items()},
@@ -209,7 +212,7 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
     with friction in the pairs the same with friction, the efficiency and the self-locking flag."""
     forces, lever = plan.forces, plan.lever
     key = _balancing_key(mechanism.driver.kind)
-    reaction_floor = floor([found.force for found in forces.reactions.values()])
+    reaction_floor = noise_floor([found.force for found in forces.reactions.values()])
     result: dict[str, Any] = {
         "reactions": {name: _pair(np.array([found.force.real, found.force.imag]), reaction_floor)
                       for name, found in forces.reactions.items()},
@@ -240,19 +243,25 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
     return result
 
 
-def _equilibrium(balance, i: int, driver_kind: str, blank: bool = False) -> dict[str, Any]:
+def _cycle_noise(balance) -> dict[str, Any]:
+    """The noise floors of the whole-mechanism system over the cycle: of its balancing load, of its
+    reactions, and of each sliding pair's offset."""
+    return {"balancing": noise_floor(balance.balancing), "reactions": noise_floor([r.force for r in balance.reactions]),
+            "offsets": {r.name: noise_floor(r.offset) for r in balance.reactions if r.sliding}}
+
+
+def _equilibrium(balance, i: int, driver_kind: str, noise: dict[str, Any], blank: bool = False) -> dict[str, Any]:
     """The whole-mechanism linear system at one position: null where it is singular (or ``blank``).
 
-    Rounding noise is judged against the whole cycle's largest balancing load and reaction."""
+    Rounding noise is judged against the whole cycle's (``noise``, from :func:`_cycle_noise`)."""
     if balance.singular[i] or blank:
         return {_balancing_key(driver_kind): None, "reactions": None}
-    reaction_floor = floor([r.force for r in balance.reactions])
     result: dict[str, Any] = {
-        _balancing_key(driver_kind): number(balance.balancing[i], floor(balance.balancing)),
-        "reactions": {r.name: _pair(np.array([r.force[i].real, r.force[i].imag]), reaction_floor)
+        _balancing_key(driver_kind): number(balance.balancing[i], noise["balancing"]),
+        "reactions": {r.name: _pair(np.array([r.force[i].real, r.force[i].imag]), noise["reactions"])
                       for r in balance.reactions},
     }
-    offsets = {r.name: number(r.offset[i], floor(r.offset)) for r in balance.reactions if r.sliding}
+    offsets = {r.name: number(r.offset[i], noise["offsets"][r.name]) for r in balance.reactions if r.sliding}
     if offsets:
         result["offsets"] = offsets
     return result
