@@ -173,7 +173,8 @@ def rounded(value: Any, key: str = "") -> Any:
         return {name: rounded(item, name) for name, item in value.items()}
     if isinstance(value, (list, tuple)):
         if value and all(_is_number(item) for item in value):
-            return [number(item, noise_floor(value)) if isinstance(item, float) else item for item in value]
+            noise = noise_floor(value)
+            return [number(item, noise) if isinstance(item, float) else item for item in value]
         return [rounded(item) for item in value]
     if isinstance(value, float):
         return number(value, KEY_FLOORS.get(key.rsplit("_", 1)[-1], 0.0))
