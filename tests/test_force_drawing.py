@@ -23,7 +23,7 @@ from graphplan.render.drawings import force_sheet, forces_svg
 from graphplan.render.labels import text_box
 from graphplan.render.numerals import significant
 from graphplan.render.plans import ZERO_MM
-from graphplan.render.primitives import Arrow, Polyline, Text
+from graphplan.render.primitives import Arrow, Circle, Polyline, Text
 
 FIXTURES = "fixtures"
 SCENES = ["ratchet_crank_rocker", "engine_slider_crank", "quick_return_slotted_lever", "shaper_six_bar",
@@ -178,6 +178,32 @@ def test_no_two_texts_overlap(case):
     boxes = [(name, item.text, text_box(item)) for name, item in texts]
     crossing = [(a[:2], b[:2]) for a, b in itertools.combinations(boxes, 2) if a[2].intersects(b[2])]
     assert not crossing
+
+
+def test_the_scotch_yoke_cut_free_is_its_rod_and_its_slot_not_a_triangle():
+    # The yoke's points are B, P and the slot's point under the block A: their hull would join P to A, a bar the
+    # yoke does not have.  It is drawn as on the plan sheet: the rod B–P and the slot along B–A, past the block.
+    analysis = analysis_of("scotch_yoke")
+    position = next(p for p in analysis.plans if p.forces is not None)
+    layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position))}
+    group = next(group for group in position.forces.groups if 4 in group.links)
+    items = layers[f"body-{force_layout.group_id(group.label)}-links"]
+    links = [[complex(*point) for point in item.points] for item in items if isinstance(item, Polyline)
+             and not item.fill]
+    assert not [item for item in items if isinstance(item, Polyline) and item.closed and not item.fill]
+    # The drawing stands anywhere on the sheet: the pin at A, the one joint of the group's links, places it.
+    (pin,) = [complex(*item.centre) for item in items if isinstance(item, Circle) and item.fill == "white"]
+    mm = {name: position.positions[name] / analysis.scene.drawing.length_scale for name in "ABP"}
+    at = {name: pin + r - mm["A"] for name, r in mm.items()}
+
+    def reach(points, start, end):  # where the points lie along start→end (0 at start, 1 at end), or None off it
+        along = [(point - start) / (end - start) for point in points]
+        return sorted(t.real for t in along) if all(abs(t.imag) < 1e-6 for t in along) else None
+
+    assert not [points for points in links if reach(points, at["P"], at["A"])], "no bar P–A"
+    assert [points for points in links if reach(points, at["B"], at["P"])], "the rod B–P"
+    (slot,) = [found for points in links for found in [reach(points, at["B"], at["A"])] if found]
+    assert slot[0] < 0 and slot[-1] > 1, "the slot runs across the yoke, past B and past the block"
 
 
 def test_a_russian_scene_has_a_russian_sheet():

@@ -53,7 +53,7 @@ from ..scales import format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import Drawing, Heading, Rows
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
-from .linkage import outline_points
+from .linkage import link_outlines, outline_points
 from .numerals import significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
@@ -328,14 +328,9 @@ def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tup
     """The group's links alone: their outlines, slider blocks with the axes of their slides, pins, centres."""
     mechanism, positions = sheet.mechanism, sheet.positions
     outlines = outline_points(mechanism, sheet.motion)
-    items: list[Primitive] = []
-    for link in group.links:
-        points = [paper(positions[name]) for name in outlines.get(link, ())]
-        hull = MultiPoint(points).convex_hull if len(points) > 1 else None
-        if hull is not None and hull.geom_type == "Polygon":
-            items.append(Polyline(tuple(hull.exterior.coords)[:-1], _LINK, closed=True))
-        elif hull is not None and hull.geom_type == "LineString":
-            items.append(Polyline(tuple(hull.coords), _LINK))
+    # Drawn as the plan sheet draws them, so that a yoke is its slot and its rod, not a triangle.
+    items = link_outlines(sheet.motion, sheet.index, {link: outlines[link] for link in group.links if link in outlines},
+                          paper, _LINK)
     for slide in sheet.motion.slides:
         if slide.slider not in group.links:
             continue

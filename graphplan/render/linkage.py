@@ -56,13 +56,26 @@ def outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]
 
 def links_at(motion: Motion, index: int, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
              bold: bool) -> list[Primitive]:
-    """The links of ``motion`` at position ``index``: outlines, slots, slider blocks and, when ``bold``, the pins.
+    """The links of ``motion`` at position ``index``: outlines and slots (:func:`link_outlines`), slider blocks
+    and, when ``bold``, the pins, drawn where two moving links are jointed."""
+    items = link_outlines(motion, index, outlines, paper, stroke)
+    for slide in motion.slides:
+        joint = complex(at(motion.points[slide.joint].r, index))
+        items.append(slider_block(paper(joint), float(np.angle(complex(at(slide.u, index)))),
+                                  stroke=MAIN if bold else stroke))
+    if bold:
+        items.extend(pin(paper(complex(at(motion.points[name].r, index)))) for name in joints(motion.mechanism))
+    return items
+
+
+def link_outlines(motion: Motion, index: int, outlines: dict[int, list[str]], paper: Paper,
+                  stroke: Stroke) -> list[Primitive]:
+    """The outlines of the links in ``outlines`` at position ``index``, each with the slots it carries.
 
     A link is drawn as the hull of the points fixed on it; a slot or slide
     it carries is drawn as a line of its own along the slide, from where it
     leaves the link to past the slider's block, so that a Scotch yoke shows
-    its slot and its rod rather than a triangle.  Pins are drawn where two
-    moving links are jointed.
+    its slot and its rod rather than a triangle.
     """
     mechanism = motion.mechanism
     items: list[Primitive] = []
@@ -88,11 +101,6 @@ def links_at(motion: Motion, index: int, outlines: dict[int, list[str]], paper: 
         outline = _outline([paper(r) for r in corners], stroke)
         if outline is not None:
             items.append(outline)
-    for slide in motion.slides:
-        items.append(slider_block(paper(where(slide.joint)), float(np.angle(complex(at(slide.u, index)))),
-                                  stroke=MAIN if bold else stroke))
-    if bold:
-        items.extend(pin(paper(where(name))) for name in joints(mechanism))
     return items
 
 
