@@ -564,6 +564,35 @@ def test_the_scotch_yoke_is_drawn_with_its_slot_across_and_its_rod():
     assert not [item for item in items if isinstance(item, Circle) and abs(complex(*item.centre) - b) < 1e-9]
 
 
+def test_a_frame_guide_is_hatched_along_its_block_s_travel_away_from_the_links():
+    # The engine's guide runs through the crank's pivot O: hatched along the whole line, its ground would be
+    # crossed by the crank and the rod whenever they turn below it.  r = 0.05 m, l = 0.19 m, μl = 0.001 m/mm.
+    analysis = analysed("engine_slider_crank")
+    r, l = 50.0, 190.0  # mm
+    sides = set()
+    for plan in analysis.plans:
+        layers = layers_of(plan_sheet(analysis, plan.index))
+        thin = [item for item in layers["mechanism-frame"] if isinstance(item, Polyline) and len(item.points) == 2
+                and abs(item.points[0][1] - item.points[1][1]) < 1e-9]
+        (pivot,) = [item.centre for item in layers["mechanism-frame"] if isinstance(item, Circle)]
+        pins = [item.centre for item in layers["mechanism-links"] if isinstance(item, Circle)]
+        (crank_pin,) = [pin for pin in pins if math.dist(pin, pivot) == pytest.approx(r)]
+        (piston_pin,) = [pin for pin in pins if pin != crank_pin]
+        # The guide line runs through B; the ground line is the long one beside it, half a block's height off.
+        y = piston_pin[1]
+        ground = max((item for item in thin if abs(item.points[0][1] - y) > 1.0),
+                     key=lambda item: abs(item.points[1][0] - item.points[0][0]))
+        side = math.copysign(1.0, ground.points[0][1] - y)
+        assert abs(ground.points[0][1] - y) == pytest.approx(2.5)
+        assert side == -math.copysign(1.0, crank_pin[1] - y), f"position {plan.number}: the ground under the crank"
+        sides.add(side)
+        xs = sorted(point[0] - pivot[0] for point in ground.points)
+        # From where the block's travel begins (l − r, less the 8 mm the block overhangs), past the block.
+        assert r < xs[0] == pytest.approx(l - r - 8.0), f"position {plan.number}: the ground beyond the crank's reach"
+        assert xs[1] > piston_pin[0] - pivot[0] + 5.0, f"position {plan.number}: the ground under the block"
+    assert sides == {-1.0, 1.0}, "the crank turns above the guide in one plan position and below it in the other"
+
+
 def _on_line(polyline, through, direction):
     return all(abs(((complex(*point) - through) / direction).imag) < 1e-6 for point in polyline.points)
 

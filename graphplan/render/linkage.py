@@ -10,7 +10,7 @@ they compute no mechanics.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 from shapely.geometry import MultiPoint
@@ -142,11 +142,26 @@ def joints(mechanism: Mechanism) -> list[str]:
     return sorted(name for name, links in count.items() if links >= 2 and name not in frame)
 
 
-def frame_guide(start: complex, end: complex, u: complex, length_scale: float, paper: Paper) -> list[Primitive]:
-    """A fixed guide from ``start`` to ``end`` (m) along ``u``, hatched ground under its slider block."""
-    # The ground lies under the block, half the block's height off the line.
-    below = -2.5 * length_scale * 1j * u
-    return [*hatching(paper(start + below), paper(end + below), side=-1.0), Polyline((paper(start), paper(end)), THIN)]
+# The hatched ground of a guide runs this far (mm) past its block's travel: past the block's own half-length.
+GROUND_MARGIN_MM = 8.0
+
+
+def frame_guide(start: complex, end: complex, u: complex, length_scale: float, paper: Paper,
+                ground: tuple[complex, complex] | None = None, side: float = -1.0) -> list[Primitive]:
+    """A fixed guide from ``start`` to ``end`` (m) along ``u``, with hatched ground from ``ground``'s first end to
+    its second (the whole guide by default) on ``side`` of it (−1: right of ``u``, +1: left)."""
+    # The ground lies beside the block, half the block's height off the line.
+    off = side * 2.5 * length_scale * 1j * u
+    first, last = ground or (start, end)
+    return [*hatching(paper(first + off), paper(last + off), side=side), Polyline((paper(start), paper(end)), THIN)]
+
+
+def ground_side(points: Iterable[complex], through: complex, u: complex) -> float:
+    """The side of the guide through ``through`` along ``u`` its ground is hatched on: away from the links at
+    ``points``, so that they do not cross it (−1, right of ``u``, where they stand evenly on both sides)."""
+    offsets = [((point - through) * u.conjugate()).imag for point in points]
+    lean = sum(offsets)
+    return 1.0 if lean < -1e-6 * sum(abs(offset) for offset in offsets) else -1.0
 
 
 def frame_pivots(mechanism: Mechanism, paper: Paper) -> list[Primitive]:

@@ -19,6 +19,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+import numpy as np
 from shapely.geometry import MultiPoint
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
@@ -29,7 +30,7 @@ from ..mechanism import Mechanism
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
 from .labels import Anchor, obstacles_of, open_direction, place_labels
-from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
+from .linkage import GROUND_MARGIN_MM, Paper, frame_guide, frame_pivots, ground_side, links_at, outline_points
 from .primitives import (
     Arrow,
     Layer,
@@ -232,8 +233,14 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
             reach = GUIDE_REACH_MM * sheet.length_scale
             along = [0.0] + [((q - r) * u.conjugate()).real for q in mechanism.scene.frame_points.values()
                              if abs(((q - r) * u.conjugate()).imag) < 1e-9 * max(abs(q - r), 1.0)]
-            frame.extend(frame_guide(r + (min(along) - reach) * u, r + (max(along) + reach) * u, u,
-                                     sheet.length_scale, paper))
+            first, last = min(along) - reach, max(along) + reach
+            # The ground is hatched where the block travels, on the side clear of the links in this position: a
+            # crank turning on the guide's line would otherwise cross it.
+            travel = ((np.atleast_1d(motion.points[slide.joint].r) - r) * u.conjugate()).real
+            margin = GROUND_MARGIN_MM * sheet.length_scale
+            ground = (r + max(first, travel.min() - margin) * u, r + min(last, travel.max() + margin) * u)
+            side = ground_side((where(name) for name in motion.points), r, u)
+            frame.extend(frame_guide(r + first * u, r + last * u, u, sheet.length_scale, paper, ground, side))
     frame.extend(frame_pivots(mechanism, paper))
     # Named points, and frame points that are no pivot (the end of a guide), as dots.
     pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}

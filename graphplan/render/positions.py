@@ -18,7 +18,7 @@ from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from .labels import Anchor, obstacles_of, place_labels
-from .linkage import Paper, frame_guide, frame_pivots, links_at, outline_points
+from .linkage import GROUND_MARGIN_MM, Paper, frame_guide, frame_pivots, ground_side, links_at, outline_points
 from .primitives import (
     BOLD,
     Layer,
@@ -93,9 +93,10 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
         u = complex(at(slide.u, 0))
         along = (track * np.conj(u)).real
         base = complex(track[0]) - float(along[0]) * u
-        margin = 8.0 * plan.length_scale
+        margin = GROUND_MARGIN_MM * plan.length_scale
         start, end = base + (along.min() - margin) * u, base + (along.max() + margin) * u
-        items.extend(frame_guide(start, end, u, plan.length_scale, paper))
+        links = (complex(r) for point in motion.points.values() for r in np.atleast_1d(point.r))
+        items.extend(frame_guide(start, end, u, plan.length_scale, paper, side=ground_side(links, base, u)))
     items.extend(frame_pivots(mechanism, paper))
     return items
 
