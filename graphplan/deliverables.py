@@ -143,17 +143,19 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
 
     found: list[Drawing] = []
     analysis = draw.with_length_scale(analysis)
-    # The sheets hold the drawings that are also written on their own: each is laid out once.
-    panels = _course_panels(analysis) if "sheets" in pieces else None
-    if "positions" in pieces:
-        layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
-        found.append(Drawing("positions", layers))
+    machine = None
     if "dynamics" in pieces:
         from .render import dynamics as dynamics_layout
 
         dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
-        found.append(Drawing("dynamics", dynamics_layout.layout(dynamics.model, dynamics.flywheel,
-                                                                strings(analysis.scene.locale))))
+        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, strings(analysis.scene.locale))
+    # The sheets hold the drawings that are also written on their own: each is laid out once.
+    panels = _course_panels(analysis, machine) if "sheets" in pieces else None
+    if "positions" in pieces:
+        layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
+        found.append(Drawing("positions", layers))
+    if machine is not None:
+        found.append(Drawing("dynamics", machine))
     if "diagrams" in pieces:
         from .kinematic_diagrams import of_analysis
         from .render import diagrams as diagrams_layout
@@ -199,14 +201,16 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_
     return force_layout.layout(sheet)
 
 
-def _course_panels(analysis: Analysis):
-    """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet."""
-    from .render.sheet import course_panels, diagrams_panel
+def _course_panels(analysis: Analysis, machine: list | None = None):
+    """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
+    and the dynamics drawing ``machine`` where the run draws one."""
+    from .render.sheet import course_panels, diagrams_panel, dynamics_panel
 
     diagrams = ()
     if missing(analysis.scene, analysis, "diagrams") is None:
         diagrams = (diagrams_panel(analysis, analysis.scene.drawing.sheet),)
-    return course_panels(analysis, diagrams)
+    dynamics = (dynamics_panel(machine, analysis.scene.locale),) if machine is not None else ()
+    return course_panels(analysis, diagrams, dynamics=dynamics)
 
 
 class MachineDynamics:

@@ -145,6 +145,11 @@ def test_the_shaper_starter_runs_the_whole_course(tmp_path):
     status, out = run(tmp_path, scene=scene)
     assert status == 0
     assert {"forces_friction_3.svg", "dynamics.svg", "motion.svg", "sheet_1.svg"} <= names(out)
+    # The course's last sheet is the dynamics of the machine, as the course project's is.
+    sheets = sorted(out.glob("sheet_*.svg"), key=lambda path: int(path.stem.removeprefix("sheet_")))
+    dynamics = [path.name for path in sheets if "Dynamics of the machine" in path.read_text(encoding="utf-8")]
+    assert dynamics == [sheets[-1].name]
+    assert {"dynamics-energy-mass", "dynamics-inertia"} <= layer_ids(sheets[-1])
     results = json.loads((out / "results.json").read_text(encoding="utf-8"))
     steady = results["dynamics"]["motion"]
     assert steady["omega_mean"] == pytest.approx(2 * math.pi, rel=0.02)

@@ -201,7 +201,8 @@ def test_every_key_the_drawings_look_up_is_in_the_locale_file_itself(monkeypatch
 def test_every_key_of_the_drawings_prefixes_is_drawn():
     english = strings("en")
     # Named by render/sheet.py for the block's drawing name, not by a form.
-    by_the_sheets = {"tb_sheet_forces", "tb_sheet_forces_position", "tb_sheet_forces_friction_position"}
+    by_the_sheets = {"tb_sheet_forces", "tb_sheet_forces_position", "tb_sheet_forces_friction_position",
+                     "tb_sheet_dynamics"}
     for kind, prefix in PREFIXES.items():
         keys = {key for key in english if key.startswith(prefix)}
         marked = {key: f"[[{key}]]{value}" for key, value in english.items() if key.startswith(prefix)}

@@ -40,7 +40,8 @@ from graphplan.mechanism import build
 from graphplan.motion import solve
 from graphplan.positions import make_positions
 from graphplan.render.dynamics import dynamics_svg, layout, scales_for
-from graphplan.render.primitives import Polyline, Text
+from graphplan.render.primitives import Arrow, Polyline, Text
+from graphplan.render.sheet import dynamics_panel, dynamics_sheet
 from graphplan.scene import load, loads
 from graphplan.statics import equilibrium
 
@@ -405,3 +406,47 @@ def test_slider_driver_sheet_has_no_energy_mass_diagram():
     layers = layout(model_of("slider_driven"))
     names = [layer.name for layer in layers]
     assert "energy-mass" not in names and "inertia" in names and "results" not in names
+
+
+def test_the_energy_mass_diagram_is_graduated_in_je_as_je_of_phi_under_it():
+    model = model_of("shaper_six_bar")
+    layers = layout(model, flywheel_for(model, 0.05))
+
+    def ticks(name):  # (x of each short upright stroke across the layer's axis of Je, its number)
+        items = _layer(layers, name).items
+        (axis,) = [item for item in items if isinstance(item, Arrow) and item.start[1] == item.end[1]]
+        y = axis.start[1]
+        strokes = [item for item in items if isinstance(item, Polyline) and len(item.points) == 2
+                   and item.points[0][0] == item.points[1][0] and item.points[0][1] < y < item.points[1][1]]
+        numbers = {round(item.at[0], 6): item.text for item in items if isinstance(item, Text)}
+        return [(stroke.points[0][0], numbers.get(round(stroke.points[0][0], 6))) for stroke in strokes]
+
+    above, below = ticks("energy-mass"), ticks("inertia")
+    assert len(above) >= 3 and above == below
+    # The step is round and the numbers are Je at μJ: x = Je/μJ from the ΔT axis at x of the first tick's Je.
+    scales = scales_for(model)
+    values = [float(text) for _, text in above]
+    origin = above[0][0] - values[0] / scales.inertia
+    assert [x for x, _ in above] == pytest.approx([origin + value / scales.inertia for value in values])
+
+
+def test_the_dynamics_stands_whole_on_an_a1_and_in_its_diagrams_on_smaller_sheets():
+    model = model_of("shaper_six_bar")
+    layers = layout(model, flywheel_for(model, 0.05))
+    (whole,) = dynamics_sheet([dynamics_panel(layers, "en")], "A1")
+    assert list(whole.panels) == ["dynamics"]
+    written = [item.text for layer in whole.layers if layer.name == "title-block" for item in layer.items
+               if isinstance(item, Text)]
+    assert "Dynamics of the machine" in written
+    diagrams = {f"dynamics-{layer.name}" for layer in layers if layer.name != "title"}
+    for size in ("A2", "A3", "A4"):
+        sheets = dynamics_sheet([dynamics_panel(layers, "en")], size)
+        placed = [name for sheet in sheets for name in sheet.panels]
+        # The energy–mass diagram and Je(φ) under it stand together where a sheet holds the two.
+        shown = {part for name in placed
+                 for part in (("dynamics-energy-mass", "dynamics-inertia") if name == "dynamics-flywheel" else (name,))}
+        assert shown == diagrams and len(placed) == len(set(placed)), size
+        for sheet in sheets:
+            x0, y0, x1, y1 = sheet.frame
+            for rect in sheet.panels.values():
+                assert x0 <= rect[0] and rect[2] <= x1 and y0 <= rect[1] and rect[3] <= y1, size

@@ -267,6 +267,14 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                           LABEL, "middle", _TANGENT.colour))
     items += _ordinate(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
+    # Je graduated as on Je(φ) under it; lettered on the side of the axis the curve comes less near.
+    near = LABEL + TICK_MM + 2.0
+    above = int(np.count_nonzero((ys > 0) & (ys < near)))
+    below = int(np.count_nonzero((ys < 0) & (ys > -near)))
+    letter_y = TICK_MM + 1.0 if above <= below else -TICK_MM - 1.0 - LABEL
+    for value, at in _inertia_ticks(model, scales):
+        items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
+        items.append(Text((at, letter_y), short(value), LABEL, "middle"))
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_symbol"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
@@ -290,17 +298,23 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
         items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), label, LABEL, "end"))
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
-    step = _nice_step(float(np.max(model.inertia)) / 4)
-    for value in np.arange(step, float(np.max(model.inertia)) + step * 1e-9, step):
-        at = value / scales.inertia
+    for value, at in _inertia_ticks(model, scales):
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
         items.append(Text((at, TICK_MM + 1.0), short(value), LABEL, "middle"))
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
-    items.append(Text((width / 2 + 6.0, -length / 2), words["dyn_inertia"], HEADING, "start", weight="bold"))
-    items.append(Text((width / 2 + 6.0, -length / 2 - HEADING - 2.5),
-                      f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
-                      f"{_angle_scale(model, scales, words)}", LABEL, "start"))
+    # Headed above its Je axis's lettering, as the other diagrams are above theirs.
+    scale_y = TICK_MM + 1.0 + LABEL + 2.5
+    items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_inertia"], HEADING, "start", weight="bold"))
+    items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
+                                      f"{_angle_scale(model, scales, words)}", LABEL, "start"))
     return items
+
+
+def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float]]:
+    """(Je, its abscissa in mm) of the ticks of Je: round steps, about four to the largest Je."""
+    largest = float(np.max(model.inertia))
+    step = _nice_step(largest / 4)
+    return [(float(value), float(value) / scales.inertia) for value in np.arange(step, largest + step * 1e-9, step)]
 
 
 def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:

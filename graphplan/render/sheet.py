@@ -432,6 +432,13 @@ def forces_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", l
     return _sheets(panels, sheet, locale, "sheet_forces", title, scale, details, first, count)
 
 
+def dynamics_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", locale: str = "en",
+                   title: str = "", details: Details | None = None, first: int = 1,
+                   count: int | None = None) -> list[Sheet]:
+    """The sheets of the machine's dynamics (:func:`dynamics_panel`; :func:`kinematics_sheet`), with no μl."""
+    return _sheets(panels, sheet, locale, "sheet_dynamics", title, None, details, first, count)
+
+
 @dataclass(frozen=True)
 class CoursePanels:
     """The drawings of a course project's sheets, laid out once: the plan of positions first among the
@@ -441,6 +448,8 @@ class CoursePanels:
     forces: tuple[Panel, ...]
     # The force sheets whole, laid out for the sheets as those that stand whole among ``forces`` are.
     whole_forces: tuple[Panel, ...] = ()
+    # The dynamics of the machine (:func:`dynamics_panel`), where the run has them.
+    dynamics: tuple[Panel, ...] = ()
 
     def named(self, name: str) -> Panel | None:
         """The drawing ``name`` whole (a force sheet that stands in parts on the sheets too)."""
@@ -449,18 +458,37 @@ class CoursePanels:
 
 
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
-                  sheet: str | None = None) -> CoursePanels:
+                  sheet: str | None = None, dynamics: Sequence[Panel] = ()) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
     kinematics = [*kinematics_panels(analysis),
                   *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
     forces = _force_sheets(analysis, sheet)
     return CoursePanels(tuple(kinematics), tuple(part for _, parts in forces for part in parts),
-                        tuple(whole for whole, _ in forces))
+                        tuple(whole for whole, _ in forces), tuple(dynamics))
+
+
+def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:
+    """The dynamics drawing (:func:`graphplan.render.dynamics.layout`) as a panel.
+
+    Where no sheet holds it whole, its diagrams stand apart: the energy–mass
+    diagram with Je(φ) under it while a sheet holds the two together, for
+    they share the axis of Je.
+    """
+    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,)) for layer in layers if layer.name != "title"}
+    parts: list[Panel] = []
+    for name, part in alone.items():
+        if name == "inertia" and "energy-mass" in alone:
+            continue
+        if name == "energy-mass" and "inertia" in alone:
+            together = (part, alone["inertia"])
+            part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together)
+        parts.append(part)
+    return Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"])
 
 
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
                   diagrams: Sequence[Panel | Sequence[Layer]] = (), panels: CoursePanels | None = None) -> list[Sheet]:
-    """Every sheet of the analysis, numbered as one set: kinematics first, then forces.
+    """Every sheet of the analysis, numbered as one set: kinematics first, then forces, then dynamics.
 
     ``sheet`` defaults to the scene's ``drawing.sheet``; ``diagrams`` are
     further kinematics panels (the diagrams of the output link); ``panels``
@@ -479,17 +507,18 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     if not details.title:
         details = replace(details, title=scene.title)
     scale = length_scale(analysis)
-    kinematics, forces = list(panels.kinematics), list(panels.forces)
+    kinds = (("sheet_kinematics", list(panels.kinematics), scale), ("sheet_forces", list(panels.forces), scale),
+             ("sheet_dynamics", list(panels.dynamics), None))  # no μl: the dynamics draws no linkage
     if chosen == "none":
-        pages = kinematics + forces
+        pages = [panel for _, drawings, _ in kinds for panel in drawings]
         return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
     form = form_of(scene.locale)
-    first_pages = _pack(kinematics, chosen, form)
-    second_pages = _pack(forces, chosen, form) if forces else []
-    total = len(first_pages) + len(second_pages)
-    return (_drawn(first_pages, chosen, scene.locale, "sheet_kinematics", scale, details, 1, total)
-            + _drawn(second_pages, chosen, scene.locale, "sheet_forces", scale, details, len(first_pages) + 1,
-                     total))
+    packed = [(kind, _pack(drawings, chosen, form) if drawings else [], at) for kind, drawings, at in kinds]
+    total = sum(len(pages) for _, pages, _ in packed)
+    sheets: list[Sheet] = []
+    for kind, pages, at in packed:
+        sheets += _drawn(pages, chosen, scene.locale, kind, at, details, len(sheets) + 1, total)
+    return sheets
 
 
 @dataclass(frozen=True)
