@@ -19,6 +19,7 @@ from ..mechanism import Mechanism
 from ..motion import Motion
 from .labels import Anchor, obstacles_of, place_labels
 from .linkage import GROUND_MARGIN_MM, Paper, frame_guide, frame_pivots, ground_side, links_at, outline_points
+from .plans import CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE
 from .primitives import (
     BOLD,
     Layer,
@@ -71,8 +72,11 @@ def layout(plan: PositionsPlan) -> list[Layer]:
               Layer("frame", tuple(frame)), Layer("leaders", labels.leaders),
               Layer("labels", labels.texts + tuple(_centre_marks(plan, paper)))]
     xmin, _, _, ymax = bounds(layers)
-    layers.append(Layer("caption", (Text((xmin, ymax + 12.0), plan.title, 5.0, "start", weight="bold"),
-                                    Text((xmin, ymax + 5.0), plan.caption, 3.5, "start"))))
+    # Lettered as the plan sheets' headings beside it on the kinematics sheet: the title over its scale.
+    scale_line = ymax + 5.0
+    layers.append(Layer("caption", (Text((xmin, scale_line + CAPTION_LINE * CAPTION_SIZE), plan.title, TITLE_SIZE,
+                                         "start", weight="bold"),
+                                    Text((xmin, scale_line), plan.caption, CAPTION_SIZE, "start"))))
     return layers
 
 
