@@ -13,15 +13,16 @@ has no analysis: only its own pieces and ``results.json``.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import functools
 import io
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
 from .analysis import Analysis
-from .errors import SceneError
+from .errors import GraphplanError, SceneError
 from .kinematic_diagrams import interval_count
 from .locale import strings
 from .render.primitives import Layer, in_language
@@ -224,13 +225,14 @@ class MachineDynamics:
         from .dynamics import equivalent_model_of
         from .flywheel import diagram_model_of, flywheel_from_spec
 
-        if isinstance(source, Scene):
-            self.spec = source.dynamics
-            self.model = diagram_model_of(self.spec)
-        else:
-            self.spec = source.scene.dynamics
-            self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
-        self.flywheel = flywheel_from_spec(self.model, self.spec)
+        with _scene_values("dynamics"):
+            if isinstance(source, Scene):
+                self.spec = source.dynamics
+                self.model = diagram_model_of(self.spec)
+            else:
+                self.spec = source.scene.dynamics
+                self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
+            self.flywheel = flywheel_from_spec(self.model, self.spec)
 
     @functools.cached_property
     def motion(self):
@@ -248,9 +250,10 @@ class MachineDynamics:
 
         model = self.model
         phi, resisting = self.resisting
-        machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
-                          inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
-        return self.spec.motion.run(machine)
+        with _scene_values("dynamics"):
+            machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
+                              inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
+            return self.spec.motion.run(machine)
 
     @property
     def resisting(self):
@@ -291,6 +294,18 @@ class MachineDynamics:
         return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {motion.stalled_at_angle_deg:.1f}°: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
+
+
+@contextlib.contextmanager
+def _scene_values(where: str) -> Iterator[None]:
+    """The dynamics' own refusals of the values they are given (Je that vanishes, work that does not balance, an
+    integration that cannot go on) as the scene's errors at ``where``: they are what the scene asked for."""
+    try:
+        yield
+    except GraphplanError:
+        raise
+    except (ValueError, ArithmeticError) as error:
+        raise SceneError(where, str(error)) from error
 
 
 def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics | None) -> MachineDynamics:

@@ -161,8 +161,8 @@ class Machine:
         values = np.array([float(je(a)) for a in angles])
         if not np.all(np.isfinite(values)) or values.min() <= 0:
             where = int(np.argmin(np.where(np.isfinite(values), values, -np.inf)))
-            raise ValueError(f"inertia: must be > 0 over the whole turn (Je = {values[where]!r} "
-                             f"at φ = {math.degrees(angles[where]):.1f}°)")
+            raise ValueError(f"inertia: must be > 0 over the whole turn (Je = {float(values[where]):g} kg·m² "
+                             f"at φ = {math.degrees(angles[where]):.1f}°: the links have no mass that moves there)")
 
     def je(self, phi: float) -> float:
         """The reduced moment of inertia Je(φ), kg·m²."""
@@ -977,6 +977,11 @@ def find_steady_state(cycles: tuple[Cycle, ...], tolerance: float) -> SteadyStat
 # --- the method ------------------------------------------------------------------------------
 
 
+# The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
+# duration of many more is a slip of the unit, and would hold the run for hours.
+MOST_TURNS = 100_000
+
+
 def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration: float | None = None) -> float:
     """A scale for the running speed of the shaft, rad/s, where the motor's torque meets the mean resistance.
 
@@ -1246,6 +1251,12 @@ class MotionSpec:
     steady_tolerance: float = 1e-4
 
     def run(self, machine: Machine) -> MachineMotion:
+        if self.duration is not None:
+            omega_run = running_speed(machine, self.motor, self.start, self.duration)
+            if self.duration * omega_run > TWO_PI * MOST_TURNS:
+                raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
+                                 f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
+                                 f"{MOST_TURNS} turns")
         return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
                         clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
                         steady_tolerance=self.steady_tolerance)

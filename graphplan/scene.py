@@ -215,6 +215,8 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
         document = tomllib.loads(data)
     except tomllib.TOMLDecodeError as error:
         raise SceneError(source, f"is not valid TOML: {error}") from None
+    except RecursionError:  # tomllib reads nested arrays and tables by recursion
+        raise SceneError(source, "nests arrays or tables too deeply to be read") from None
     return _read_scene(Table(document, ""), source)
 
 

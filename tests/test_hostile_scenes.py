@@ -426,3 +426,33 @@ def test_any_number_of_any_scene_changed_runs_or_is_refused_in_one_line(capsys, 
             json.loads((folder / "out" / "results.json").read_text(encoding="utf-8"))
     finally:
         shutil.rmtree(folder)
+
+
+# --- found by fuzzing the command line: refusals of the dynamics and the reader that ended in a traceback ---
+
+
+def test_a_scene_nested_past_the_reader_s_recursion_is_refused(capsys):
+    assert_refused(capsys, "a = " + "[" * 5000 + "]" * 5000 + "\n", "nests arrays or tables too deeply")
+
+
+def test_a_resisting_constant_beside_the_scene_s_own_resisting_loads_is_refused(capsys):
+    # The ratchet's loads resist: Mr cannot also be the constant that balances the cycle's work.
+    line = assert_refused(capsys, to_toml({**BASE, "dynamics": {"constant": "resisting"}}), "dynamics: ")
+    assert "constant='resisting'" in line and "loads[0]" in line
+
+
+def test_a_motor_on_links_without_mass_is_refused(capsys):
+    # No masses and no loads: Je = 0, and the equation of motion has nothing to accelerate.
+    scene = {key: value for key, value in BASE.items() if key not in ("links", "loads")}
+    scene["dynamics"] = {"motor": {"kind": "constant", "torque": 1.0}}
+    line = assert_refused(capsys, to_toml(scene), "dynamics: inertia: must be > 0 over the whole turn")
+    assert "Je = 0 kg·m²" in line
+
+
+def test_a_duration_of_more_turns_than_a_run_integrates_is_refused_at_once(capsys):
+    # A slip of the unit (a million seconds for a minute's start-up) would hold the run for hours.
+    scene = {"dynamics": {"rpm": 100.0, "inertia": 1.0, "duration": 1e6,
+                          "resisting_torque": [[0.0, 10.0], [360.0, 10.0]],
+                          "motor": {"kind": "linear", "stall_torque": 200.0, "no_load_rpm": 120.0}}}
+    line = assert_refused(capsys, to_toml(scene), "dynamics: duration: 1e+06 s")
+    assert "at most 100000 turns" in line
