@@ -980,6 +980,8 @@ def find_steady_state(cycles: tuple[Cycle, ...], tolerance: float) -> SteadyStat
 # The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
 # duration of many more is a slip of the unit, and would hold the run for hours.
 MOST_TURNS = 100_000
+# With no duration, how many turns' time at the running speed a run waits at most for a steady state.
+MOST_CYCLES = 2000
 
 
 def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration: float | None = None) -> float:
@@ -1099,7 +1101,7 @@ def _explicit_step(equations: _Equations, omega_run: float, rtol: float, atol: f
 def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, start: Start = REST,
              brake: Brake | None = None, clutch: Clutch | None = None, motor_off_at: float | None = None,
              method: str = "auto", rtol: float = 1e-6, atol: float | None = None,
-             steady_tolerance: float = 1e-4, max_cycles: int = 2000) -> MachineMotion:
+             steady_tolerance: float = 1e-4, max_cycles: int = MOST_CYCLES) -> MachineMotion:
     """Integrate the machine's motion.
 
     Parameters
@@ -1251,12 +1253,19 @@ class MotionSpec:
     steady_tolerance: float = 1e-4
 
     def run(self, machine: Machine) -> MachineMotion:
-        if self.duration is not None:
-            omega_run = running_speed(machine, self.motor, self.start, self.duration)
-            if self.duration * omega_run > TWO_PI * MOST_TURNS:
-                raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
-                                 f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
-                                 f"{MOST_TURNS} turns")
+        omega_run = running_speed(machine, self.motor, self.start, self.duration)
+        if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
+            raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
+                             f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
+                             f"{MOST_TURNS} turns")
+        # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
+        # than a run integrates, each resolved step by step: the run would hang rather than fail.
+        fastest = max(self.start.omega, self.start.driving_omega or 0.0)
+        span = self.duration if self.duration is not None else MOST_CYCLES * TWO_PI / omega_run
+        if fastest * span > TWO_PI * MOST_TURNS:
+            raise ValueError(f"start: {fastest:.4g} rad/s is {fastest / omega_run:.3g} times the running speed, "
+                             f"{omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} turns, "
+                             f"and it integrates at most {MOST_TURNS}")
         return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
                         clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
                         steady_tolerance=self.steady_tolerance)
