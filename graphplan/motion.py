@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -109,6 +109,17 @@ class Motion:
         shape = (self.count,)
         return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
                             for value in (motion.angle, motion.omega, motion.epsilon)))
+
+    def at_positions(self, indices: Sequence[int]) -> Motion:
+        """The motion at some of its positions only, in the order given (their warnings renumbered)."""
+        chosen = np.asarray(indices, dtype=int)
+        renumbered = {int(old): new for new, old in enumerate(chosen)}
+        points, links, slides, conditioning = _taken((self.points, self.links, self.slides, self.conditioning), chosen)
+        warnings = tuple(replace(warning, position=renumbered[warning.position]) for warning in self.warnings
+                         if warning.position in renumbered)
+        singular = {renumbered[index]: reason for index, reason in self.singular.items() if index in renumbered}
+        return Motion(mechanism=self.mechanism, driver=self.driver[chosen], points=points, links=links, slides=slides,
+                      conditioning=conditioning, warnings=warnings, singular=singular)
 
     def slide(self, slider: int) -> SlideMotion:
         """The sliding pair in which link ``slider`` slides."""

@@ -18,7 +18,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
-from shapely.geometry import LineString
+from shapely.geometry import LineString, Point
 from shapely.geometry import Polygon as ShapelyPolygon
 
 import graphplan
@@ -617,3 +617,30 @@ def _unit(value):
 def _point(value):
     from shapely.geometry import Point
     return Point(value.real, value.imag)
+
+
+def test_a_plan_of_positions_of_many_draws_one_in_every_few_and_each_plan_sheet_s_position():
+    scene = graphplan.load(f"{FIXTURES}/ratchet_crank_rocker.toml")
+    scene = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, count=360, plans=(5, 123)))
+    analysis = analyse(scene)
+    plan = positions_plan(analysis)
+    # 360 positions, at most 36 drawn: every tenth (numbered from 0), and the plan sheets' 5 and 123.
+    assert plan.numbers == tuple(sorted(set(range(0, 360, 10)) | {5, 123}))
+    assert plan.caption.endswith(strings(scene.locale)["positions_thinned"].format(step=10, count=360))
+    named = {layer.name: layer.items for layer in positions.layout(plan)}
+    numbers = {text.text: text for text in named["labels"] if isinstance(text, Text) and text.text.isdigit()}
+    assert sorted(map(int, numbers)) == list(plan.numbers)
+    # Each number stands by the crank pin A of its own position, not of its neighbour in the drawing.
+    mm_per_m = 1.0 / plan.length_scale
+    pin = analysis.motion.point("A").r * mm_per_m
+    for number, text in numbers.items():
+        assert text_box(text).distance(Point(pin[int(number)])) < 12.0, number
+    # The grey outlines pass through the crank pin at the drawn positions, and at no other of the 360.
+    vertices = [point for item in named["positions"] if isinstance(item, Polyline) for point in item.points]
+    through = {n for n in range(360) if any(math.dist(vertex, tuple(pin[n])) < 1e-6 for vertex in vertices)}
+    assert through == set(plan.numbers)
+
+
+def test_a_plan_of_positions_of_a_few_draws_them_all(ratchet):
+    plan = positions_plan(ratchet)
+    assert plan.numbers == tuple(range(12)) and ";" not in plan.caption

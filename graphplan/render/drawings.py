@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Mapping
 
 import numpy as np
@@ -124,16 +125,33 @@ def positions_svg(analysis: Analysis) -> str:
     return _svg(analysis, positions.layout(positions_plan(analysis)))
 
 
+# The most positions the plan of positions draws: beyond them the outlines run together into a grey
+# sheet and their numbers cover each other (and placing them grows as the square of their count).
+MOST_DRAWN_POSITIONS = 36
+
+
+def drawn_positions(analysis: Analysis) -> list[int]:
+    """The indices of the positions the plan of positions draws: all of them, or one in every few and
+    each plan sheet's position when there are more than :data:`MOST_DRAWN_POSITIONS`."""
+    count = analysis.motion.count
+    step = math.ceil(count / MOST_DRAWN_POSITIONS)
+    return sorted(set(range(0, count, step)) | {position.index for position in analysis.plans})
+
+
 def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.PositionsPlan:
     """What the plan of positions shows at μl = ``scale`` (:func:`length_scale` when None), in the scene's language."""
     text = strings(analysis.scene.locale)
     scale = length_scale(analysis) if scale is None else scale
+    drawn = drawn_positions(analysis)
+    caption = text["length_scale"].format(value=format_scale(scale))
+    count = analysis.motion.count
+    if len(drawn) < count:
+        caption += "; " + text["positions_thinned"].format(step=math.ceil(count / MOST_DRAWN_POSITIONS), count=count)
     return positions.PositionsPlan(
-        mechanism=analysis.mechanism, positions=analysis.motion,
-        numbers=tuple(int(n) for n in analysis.positions.numbers),
+        mechanism=analysis.mechanism, positions=analysis.motion.at_positions(drawn),
+        numbers=tuple(int(analysis.positions.numbers[index]) for index in drawn),
         emphasised=analysis.emphasised,
-        paths=analysis.paths, length_scale=scale, title=text["positions_title"],
-        caption=text["length_scale"].format(value=format_scale(scale)))
+        paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption)
 
 
 def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, acceleration: Plan | None = None) -> str:
