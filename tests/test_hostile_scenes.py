@@ -466,3 +466,19 @@ def test_a_start_far_above_the_running_speed_is_refused_at_once(capsys):
                           "motor": {"kind": "linear", "stall_torque": 200.0, "no_load_rpm": 120.0}}}
     line = assert_refused(capsys, to_toml(scene), "dynamics: start: 1.047e+11 rad/s")
     assert "at most 100000" in line
+
+
+def test_an_output_link_that_does_not_move_is_refused_as_such_not_as_a_sheet_too_small(capsys):
+    # The tangent mechanism's ram guide turned upright through the slotted link's pivot C: the block then
+    # stays at C, and the diagrams' scale came out endless, refused as "fit on no A1 sheet".
+    scene = tomllib.loads((FIXTURE.parent / "tangent_mechanism_prp.toml").read_text(encoding="utf-8"))
+    scene["frame"]["lines"]["ram"]["angle"] = 90.0
+    line = assert_refused(capsys, to_toml(scene), "positions.working: link 6 does not move over the crank's turn")
+    assert "drawing.sheet" not in line
+
+
+def test_a_crank_too_short_to_move_the_output_is_refused_as_such(capsys):
+    # A femtometre crank rocks the rocker by some 1e-14 rad: refused through drawing.sheet before.
+    scene = {**BASE, "driver": {**BASE["driver"], "length": 1e-15}}
+    line = assert_refused(capsys, to_toml(scene), "positions.working: link 4 does not move over the crank's turn")
+    assert "lengths" in line
