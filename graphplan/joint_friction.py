@@ -49,16 +49,27 @@ class FrictionPair:
 def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[FrictionPair, ...]:
     """Each ``[[friction]]`` entry matched with its pair (``statics.pairs``); a mismatch is a scene error."""
     found = []
+    given: dict[tuple[str, int, int], str] = {}
     for spec in scene_friction:
-        matching = [pair for pair in pairs if pair.joint == spec.joint
-                    and (spec.links is None or set(spec.links) == {pair.source, pair.target})]
-        if not matching:
+        at_joint = [pair for pair in pairs if pair.joint == spec.joint]
+        matching = [pair for pair in at_joint if spec.links is None or set(spec.links) == {pair.source, pair.target}]
+        if not at_joint:
             known = ", ".join(f"{p.joint} ({p.source}–{p.target})" for p in pairs)
             raise SceneError(f"{spec.where}.joint", f"names no pair of the mechanism; its pairs are {known}", spec.joint)
+        if not matching:
+            joined = " and ".join(f"{p.source}–{p.target}" for p in at_joint)
+            raise SceneError(f"{spec.where}.links", f"joint {spec.joint} joins links {joined}, not these",
+                             list(spec.links or ()))
         if len(matching) > 1:
             choices = " or ".join(f"[{p.source}, {p.target}]" for p in matching)
             raise SceneError(f"{spec.where}.links", f"joint {spec.joint} has several pairs: say which with links = {choices}")
         pair = matching[0]
+        # A second coefficient for one pair would silently replace the first in the force analysis.
+        key = (pair.joint, pair.source, pair.target)
+        if key in given:
+            raise SceneError(spec.where, f"the pair at {spec.joint} ({pair.source}–{pair.target}) has its friction "
+                             f"in {given[key]} already")
+        given[key] = spec.where
         if pair.sliding:
             if spec.radius is not None:
                 raise SceneError(f"{spec.where}.radius", f"the pair at {spec.joint} slides: a radius is for a turning pair")

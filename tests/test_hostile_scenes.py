@@ -482,3 +482,15 @@ def test_a_crank_too_short_to_move_the_output_is_refused_as_such(capsys):
     scene = {**BASE, "driver": {**BASE["driver"], "length": 1e-15}}
     line = assert_refused(capsys, to_toml(scene), "positions.working: link 4 does not move over the crank's turn")
     assert "lengths" in line
+
+
+def test_friction_on_links_a_joint_does_not_join_names_the_links(capsys):
+    scene = {**BASE, "friction": [{"joint": "B", "links": [2, 3], "f": 0.1, "radius": 0.01}]}
+    line = assert_refused(capsys, to_toml(scene), "friction[0].links: joint B joins links 3–4, not these")
+    assert "friction[0].joint" not in line
+
+
+def test_two_frictions_for_one_pair_are_refused(capsys):
+    # Accepted before: both coefficients went into the force analysis of the one pair.
+    scene = {**BASE, "friction": [{"joint": "B", "f": 0.1, "radius": 0.01}, {"joint": "B", "f": 0.2, "radius": 0.01}]}
+    assert_refused(capsys, to_toml(scene), "friction[1]: the pair at B (3–4) has its friction in friction[0] already")
