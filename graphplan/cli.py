@@ -33,7 +33,11 @@ examples:
 
 
 def _listed(text: str) -> list[str]:
-    return [item.strip() for item in text.split(",") if item.strip()]
+    items = [item.strip() for item in text.split(",") if item.strip()]
+    if not items:
+        # An empty list would quietly mean "the default" for --format and "nothing but results.json" for --only.
+        raise argparse.ArgumentTypeError("names nothing: give one or more, comma-separated")
+    return items
 
 
 def _parser() -> argparse.ArgumentParser:

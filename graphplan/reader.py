@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import datetime
 import difflib
+import json
 import math
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -45,6 +46,9 @@ def join_path(path: str, key: str | int) -> str:
     """The key path of ``key`` inside ``path``: ``a.b``, ``a[0]``."""
     if isinstance(key, int):
         return f"{path}[{key}]"
+    if not key or any(mark in key for mark in ' ."\'[]=#\t'):
+        # Quoted as TOML quotes it, so that an empty name or one with a dot still reads as one key.
+        key = json.dumps(key, ensure_ascii=False)
     return f"{path}.{key}" if path else key
 
 

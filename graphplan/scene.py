@@ -264,6 +264,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     friction = tuple(_read_friction(where, item) for where, item in top.items("friction", default=[]) or [])
     positions = _read_positions(top.table("positions", None) or Table({}, "positions"), driver)
     drawing = _read_drawing(top.table("drawing", None) or Table({}, "drawing"))
+    _refuse_on_frame(frame_link, links, loads_)
     measured = _read_measured(top.table("measured", None))
     include = _read_output(top.table("output", None))
     forces = top.table("forces", None) or Table({}, "forces")
@@ -290,6 +291,10 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
     table = frame.table("lines", None)
     if table is not None:
         for name in table.data:
+            check_str(name, table.where(name))
+            if name in points:
+                raise SceneError(table.where(name), f"{name} names a point of [frame] points already: a guide "
+                                 "through it would read as the point; name the line apart (e.g. ram, guide)")
             guide = read_guide(table.raw(name), table.where(name))
             if guide.line is not None or not guide.on_frame:
                 raise SceneError(table.where(name), "a frame line needs through and angle, on the frame")
@@ -299,6 +304,19 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
             lines[name] = guide
     frame.done()
     return link, points, lines
+
+
+def _refuse_on_frame(frame_link: int, links: dict[int, LinkSpec], loads_: tuple[LoadSpec, ...]) -> None:
+    """The frame stands still: a mass or a load put on it takes no part in the analysis, and is a slip of
+    the link's number."""
+    spec = links.get(frame_link)
+    if spec is not None and (spec.mass > 0 or spec.inertia > 0):
+        raise SceneError(spec.where, f"link {frame_link} is the frame, which does not move: its mass and inertia take "
+                         "no part; give them to a moving link")
+    for load in loads_:
+        if load.link == frame_link:
+            raise SceneError(f"{load.where}.link", f"link {frame_link} is the frame, which does not move: a load on it "
+                             "does no work and is taken by the frame itself", frame_link)
 
 
 def _read_driver(table: Table | None) -> Driver:
@@ -336,7 +354,7 @@ def _read_points(table: Table | None) -> tuple[PointSpec, ...]:
     for name, entry in table.subtables():
         assert entry is not None
         specs.append(PointSpec(
-            name=name, where=entry.path,
+            name=check_str(name, entry.path), where=entry.path,
             link=entry.integer("link", minimum=1),
             start=entry.string("from"),
             toward=entry.string("toward"),
@@ -389,6 +407,11 @@ def _read_load(where: str, item: object) -> LoadSpec:
     angle = table.number("angle", None)
     if kind == "force" and (point is None or angle is None):
         raise SceneError(where, "a force needs point (where it acts) and angle (its direction, degrees)")
+    if kind == "moment":
+        # A couple acts alike wherever on its link it is put: a point or a direction would say otherwise.
+        for key in ("point", "angle"):
+            if table.has(key):
+                raise SceneError(table.where(key), "a moment acts on its whole link: leave point and angle out")
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
                     point=point, angle_deg=angle, diagram=diagram)

@@ -494,3 +494,43 @@ def test_two_frictions_for_one_pair_are_refused(capsys):
     # Accepted before: both coefficients went into the force analysis of the one pair.
     scene = {**BASE, "friction": [{"joint": "B", "f": 0.1, "radius": 0.01}, {"joint": "B", "f": 0.2, "radius": 0.01}]}
     assert_refused(capsys, to_toml(scene), "friction[1]: the pair at B (3–4) has its friction in friction[0] already")
+
+
+# --- accepted silently before, found by fuzzing: each is a slip of the scene that the run went past ---
+
+
+def test_an_empty_point_name_is_refused(capsys):
+    scene = {**BASE, "points": {**BASE["points"], "": BASE["points"]["S2"]}}
+    assert_refused(capsys, to_toml(scene), 'points."": must not be empty')
+
+
+@pytest.mark.parametrize("what", ["mass", "inertia"])
+def test_a_mass_on_the_frame_is_refused(capsys, what):
+    scene = {**BASE, "links": {**BASE["links"], "1": {"mass": 5.0, "centre": "O"} if what == "mass" else {"inertia": 1.0}}}
+    assert_refused(capsys, to_toml(scene), "links.1: link 1 is the frame, which does not move")
+
+
+def test_a_load_on_the_frame_is_refused(capsys):
+    load = {"kind": "force", "link": 1, "point": "O", "value": 100.0, "angle": 0.0}
+    assert_refused(capsys, to_toml({**BASE, "loads": [*BASE["loads"], load]}),
+                   "loads[1].link: link 1 is the frame, which does not move")
+
+
+@pytest.mark.parametrize("key, value", [("point", "B"), ("angle", 30.0)])
+def test_a_moment_given_a_point_or_a_direction_is_refused(capsys, key, value):
+    load = {"kind": "moment", "link": 4, "value": 10.0, key: value}
+    assert_refused(capsys, to_toml({**BASE, "loads": [*BASE["loads"], load]}),
+                   f"loads[1].{key}: a moment acts on its whole link")
+
+
+def test_a_frame_line_named_as_a_frame_point_is_refused(capsys):
+    scene = {**BASE, "frame": {**BASE["frame"], "lines": {"C": {"through": [0.0, 0.0], "angle": 0.0}}}}
+    assert_refused(capsys, to_toml(scene), "frame.lines.C: C names a point of [frame] points already")
+
+
+@pytest.mark.parametrize("option", ["--format", "--only"])
+def test_an_option_that_lists_nothing_is_refused(capsys, option):
+    with pytest.raises(SystemExit) as stopped:
+        run(capsys, to_toml(BASE), (option, " , "))
+    assert stopped.value.code == 2
+    assert f"argument {option}: names nothing" in capsys.readouterr().err
