@@ -618,12 +618,12 @@ class _Equations:
         """Decide, at a segment's start, which bodies are held at rest."""
         self.machine_held = self.driving_held = False
         if phase in (RIGID, LOCKED):
-            net = self.driving(t, y[1]) + self.passive(t, y[0], y[1])
-            self.machine_held = y[1] <= 0.0 and net <= 0.0
+            driving, passive = self.driving(t, y[1]), self.passive(t, y[0], y[1])
+            self.machine_held = y[1] <= 0.0 and not _overcomes(driving, passive)
             return
         torque = self.clutch_torque(phase)
-        self.machine_held = y[1] <= 0.0 and torque + self.passive(t, y[0], y[1]) <= 0.0
-        self.driving_held = y[2] <= 0.0 and self.driving(t, y[2]) - torque <= 0.0
+        self.machine_held = y[1] <= 0.0 and not _overcomes(torque, self.passive(t, y[0], y[1]))
+        self.driving_held = y[2] <= 0.0 and not _overcomes(self.driving(t, y[2]), -torque)
 
     def rigid(self, t: float, y: np.ndarray) -> list[float]:
         if self.machine_held:
@@ -686,6 +686,12 @@ def _event(function: Callable[[float, np.ndarray], float], direction: float) -> 
     function.terminal = True  # type: ignore[attr-defined]
     function.direction = direction  # type: ignore[attr-defined]
     return function
+
+
+def _overcomes(driving: float, passive: float) -> bool:
+    """Whether a torque moves a body at rest against the passive ones: by more than their rounding, so that a
+    motor exactly equal to the resistance (equal but for the last bits of a conversion) holds it at rest."""
+    return driving + passive > 1e-12 * (abs(driving) + abs(passive))
 
 
 class _Integrator:
@@ -977,6 +983,9 @@ def find_steady_state(cycles: tuple[Cycle, ...], tolerance: float) -> SteadyStat
 # --- the method ------------------------------------------------------------------------------
 
 
+# The least relative tolerance the solvers take: scipy raises a smaller one to this, with a warning.
+SMALLEST_RTOL = 100 * float(np.finfo(float).eps)
+
 # The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
 # duration of many more is a slip of the unit, and would hold the run for hours.
 MOST_TURNS = 100_000
@@ -1127,8 +1136,9 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     """
     if method not in METHODS:
         raise ValueError(f"method: must be one of {', '.join(METHODS)} (got {method!r})")
-    if not (isinstance(rtol, (int, float)) and 0 < rtol < 1):
-        raise ValueError(f"rtol: must be between 0 and 1 (got {rtol!r})")
+    if not (isinstance(rtol, (int, float)) and SMALLEST_RTOL <= rtol < 1):
+        raise ValueError(f"rtol: must be from {SMALLEST_RTOL:.3g} (100 machine epsilons, the solvers' least) "
+                         f"to below 1 (got {rtol!r})")
     if duration is not None:
         _require_positive("simulate", "duration", duration)
     if atol is not None:
@@ -1388,6 +1398,9 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     rtol = table.number("rtol", 1e-6, positive=True)
     if not rtol < 1:
         raise SceneError(table.where("rtol"), "must be < 1", rtol)
+    if rtol < SMALLEST_RTOL:
+        raise SceneError(table.where("rtol"), f"must be at least {SMALLEST_RTOL:.3g}: 100 machine epsilons, the "
+                         "least the solvers take", rtol)
     steady_tolerance = table.number("steady_tolerance", 1e-4, positive=True)
     if not owned:
         table.done()

@@ -131,18 +131,23 @@ def equilibrium(mechanism: Mechanism, motion: Motion, loads: tuple[Load, ...],
     if friction:
         state = motion_state(motion)
         settled = singular.copy()
-        for step in range(1, MAX_ITERATIONS + 1):
-            extra = friction_loads(friction, state, system.forces(unknowns))
-            again = system.apply(inverse, system.known(loads + extra), singular)
-            change = np.nanmax(np.abs(again - unknowns), axis=1)
-            size = np.nanmax(np.abs(again), axis=1)
-            unknowns = np.where(settled[:, None], unknowns, again)
-            iterations = np.where(settled, iterations, step)
-            settled |= ~(change > CONVERGED * size)  # a NaN change (a position blown up) never settles
-            if settled.all():
-                break
+        # A self-locking position's reactions grow without bound, step by step, to inf and NaN: that is how
+        # it is found (it never settles), so numpy's overflow warnings would only be noise on the terminal.
+        with np.errstate(over="ignore", invalid="ignore"):
+            for step in range(1, MAX_ITERATIONS + 1):
+                extra = friction_loads(friction, state, system.forces(unknowns))
+                again = system.apply(inverse, system.known(loads + extra), singular)
+                # fmax skips NaN as nanmax does, and gives NaN for a row of them without a warning.
+                change = np.fmax.reduce(np.abs(again - unknowns), axis=1)
+                size = np.fmax.reduce(np.abs(again), axis=1)
+                unknowns = np.where(settled[:, None], unknowns, again)
+                iterations = np.where(settled, iterations, step)
+                settled |= ~(change > CONVERGED * size)  # a NaN change (a position blown up) never settles
+                if settled.all():
+                    break
         locked = ~settled
-    return system.record(unknowns, condition, singular, iterations, locked)
+    with np.errstate(over="ignore", invalid="ignore"):   # the locked positions' reactions are inf or NaN
+        return system.record(unknowns, condition, singular, iterations, locked)
 
 
 class _System:
@@ -267,9 +272,9 @@ def efficiency(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar) -> Scalar:
     in either sense, and η is not defined (NaN).
     """
     ideal, rubbing = np.asarray(ideal, dtype=float), np.asarray(rubbing, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         ratio = np.where(delivers_power(mechanism, ideal), ideal / rubbing, rubbing / ideal)
-    return np.where(ideal * rubbing > 0, ratio, np.nan)
+        return np.where(ideal * rubbing > 0, ratio, np.nan)
 
 
 def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:

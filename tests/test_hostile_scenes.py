@@ -25,6 +25,7 @@ import re
 import shutil
 import tempfile
 import tomllib
+import warnings
 from pathlib import Path
 
 import pytest
@@ -534,3 +535,41 @@ def test_an_option_that_lists_nothing_is_refused(capsys, option):
         run(capsys, to_toml(BASE), (option, " , "))
     assert stopped.value.code == 2
     assert f"argument {option}: names nothing" in capsys.readouterr().err
+
+
+# --- runs that succeeded with numpy's, scipy's or matplotlib's warnings on the terminal ---
+
+
+def run_quietly(capsys, text: str) -> tuple[str, dict]:
+    """Run ``text`` with every warning an error; the stderr and the results of a run that must succeed."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        status, err, folder = run(capsys, text)
+    try:
+        assert status == 0, err
+        return err, json.loads((folder / "out" / "results.json").read_text(encoding="utf-8"))
+    finally:
+        shutil.rmtree(folder)
+
+
+def test_friction_that_locks_the_mechanism_runs_without_numpy_s_overflow_warnings(capsys):
+    # f = 1000 locks every position: the iteration's reactions grow to inf, which is how locking is found.
+    scene = {**BASE, "friction": [{"joint": "B", "f": 1000.0, "radius": 0.01}]}
+    err, _ = run_quietly(capsys, to_toml(scene))
+    assert "Warning" not in err
+
+
+def test_a_motor_exactly_equal_to_the_resistance_holds_the_machine_at_rest(capsys):
+    # Equal but for the last bits of turning the diagram into torque: it crept off and "stalled" 15 s later,
+    # and the stall plot's empty turn warned from matplotlib.
+    scene = {"dynamics": {"rpm": 100.0, "inertia": 1.0, "resisting_torque": [[0.0, 10.0], [360.0, 10.0]],
+                          "motor": {"kind": "constant", "torque": 10.0}}}
+    err, results = run_quietly(capsys, to_toml(scene))
+    assert "Warning" not in err
+    assert results["dynamics"]["motion"]["stalled_at"] == 0.0
+
+
+def test_a_tolerance_below_the_solvers_least_is_refused(capsys):
+    scene = {"dynamics": {"rpm": 100.0, "inertia": 1.0, "resisting_torque": [[0.0, 10.0], [360.0, 10.0]],
+                          "rtol": 1e-15, "motor": {"kind": "linear", "stall_torque": 200.0, "no_load_rpm": 120.0}}}
+    assert_refused(capsys, to_toml(scene), "dynamics.rtol: must be at least 2.22e-14")

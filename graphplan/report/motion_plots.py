@@ -159,7 +159,7 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     turned = np.degrees(motion.phi)
     end = float(turned[-1])
     # The whole turn the stall is in, from the start: where Mr rises past the motor is plain to see.
-    right = 360.0 * (math.floor(end / 360.0) + 1.0)
+    right = 360.0 * max(math.floor(end / 360.0) + 1.0, 1.0)
     along = np.linspace(0.0, right, max(_TURN_SAMPLES, int(right) * 2 + 1))
     plot.plot(along, np.interp(np.radians(along), angles, moments, period=2.0 * np.pi), color=_DRIVING_HALF,
               linewidth=1.0, label=text["motion_resisting"])
