@@ -471,7 +471,7 @@ def test_a_force_sheet_too_tall_in_one_column_stands_whole_in_two_under_its_head
     sheet = next(sheet for sheet in course_sheets(analysis, "A1")
                  if f"forces-{analysis.plans[0].number}" in sheet.panels)
     written = [text.text for text in texts(sheet.layers)]
-    assert f"{analysis.scene.title}: force analysis, position {analysis.plans[0].number}" in written
+    assert f"Force analysis, position {analysis.plans[0].number}" in written
 
 
 def test_a_force_sheet_no_sheet_holds_whole_goes_in_parts_in_order_each_under_its_heading(analyses):
@@ -516,7 +516,7 @@ def test_a_force_sheet_too_big_in_two_columns_stands_whole_with_each_polygon_und
     (sheet,) = [sheet for sheet in course_sheets(analysis, "A1")
                 if any(panel.startswith(name) for panel in sheet.panels)]
     assert [panel for panel in sheet.panels if panel.startswith(name)] == [name]
-    assert f"{analysis.scene.title}: force analysis, position {position.number}" in [
+    assert f"Force analysis, position {position.number}" in [
         text.text for text in texts(sheet.layers)]
     captions = {item.name.removeprefix(name + "-").removesuffix("-caption"): item.items[0].at
                 for item in sheet.layers if item.name.startswith(name + "-") and item.name.endswith("-caption")}

@@ -229,21 +229,21 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         raise ValueError(f"position {plan_position.number} has no force analysis")
     text = strings(analysis.scene.locale)
     velocity = plan_position.velocity
-    forces, lever, title, part_title = (plan_position.forces, plan_position.lever, "force_sheet_title",
-                                        "tb_sheet_forces_position")
+    forces, lever, title = plan_position.forces, plan_position.lever, "tb_sheet_forces_position"
     friction, ideal, eta = (), None, None
     if with_friction:
         rubbing = plan_position.with_friction
         if rubbing is None or rubbing.locked:
             raise ValueError(f"position {plan_position.number} has no settled force analysis with friction")
         forces, lever = rubbing, plan_position.lever_with_friction
-        title, part_title = "force_sheet_friction_title", "tb_sheet_forces_friction_position"
+        title = "tb_sheet_forces_friction_position"
         friction, ideal = analysis.friction, plan_position.forces.balancing
         eta = float(efficiency(analysis.mechanism, ideal, rubbing.balancing))
     return force_layout.ForceSheet(
         mechanism=analysis.mechanism, motion=analysis.motion, index=plan_position.index,
         number=plan_position.number, positions={**plan_position.positions, **forces.auxiliary}, forces=forces,
         lever=lever, velocity=velocity, length_scale=length_scale(analysis),
-        title=text[title].format(title=analysis.scene.title, number=plan_position.number),
-        part_title=text[part_title].format(number=plan_position.number), text=text, friction=friction, without_friction=ideal, efficiency=eta,
+        # As on the plan sheets, every word is the locale's: the scene's title stays off the sheet.
+        title=text[title].format(number=plan_position.number), text=text, friction=friction,
+        without_friction=ideal, efficiency=eta,
         velocity_scale=text["velocity_scale"].format(value=scale_factor(velocity.scale)))
