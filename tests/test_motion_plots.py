@@ -128,3 +128,24 @@ def test_a_stalled_run_shows_the_motors_torque_falling_short_of_the_resistance_w
     assert along[0] == 0.0 and along[-1] == 360.0
     assert drawn == pytest.approx(np.interp(np.radians(along), angles, resisting, period=2 * np.pi))
     assert md.get_data()[0][-1] == pytest.approx(x)
+
+
+def test_a_machine_that_never_moves_gets_only_the_plot_of_why():
+    """A motor whose torque at rest (through its gear) is below the resistance everywhere: the speed over time
+    would be an empty plot along its axis, so the figure is the moments alone, the stall at φ = 0."""
+    count = 360
+    angles = 2.0 * np.pi * np.arange(count) / count
+    resisting = np.full(count, 100.0)
+    motion = simulate(Machine(INERTIA, resisting=resisting), LinearMotor(10.0, 100.0, gear_ratio=3.0))
+    assert motion.stalled_at == 0.0 and not np.any(motion.omega)
+    text = strings("en")
+    figure = motion_plot(motion, text, resisting=(angles, resisting))
+    (only,) = figure.axes
+    labels = {line.get_label() for line in only.get_lines()}
+    assert {text["motion_resisting"], text["motion_motor_torque"]} <= labels
+    assert text["motion_shaft"] not in labels
+
+
+def test_a_machine_that_moves_keeps_its_speed_over_time(motion):
+    figure = motion_plot(motion, strings("en"))
+    assert len(figure.axes) == 2

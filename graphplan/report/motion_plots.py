@@ -40,7 +40,8 @@ def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "
 def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 flywheel: tuple[np.ndarray, np.ndarray] | None = None,
                 resisting: tuple[np.ndarray, np.ndarray] | None = None):
-    """The motion's matplotlib figure: the run above, the steady turn below.
+    """The motion's matplotlib figure: the run above, the steady turn below (or only why the machine
+    stands still, where it never moves).
 
     ``flywheel`` is the flywheel's estimate of the steady speed over the turn: the crank angles
     (rad, from the first position) and ω there, drawn beside the integrated steady turn.
@@ -53,8 +54,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     from matplotlib import pyplot
 
     with matplotlib.rc_context(settings()):
-        figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
-        _speed_over_time(run, motion, text)
+        if _moved(motion):
+            figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
+            _speed_over_time(run, motion, text)
+        else:
+            # A speed that is zero throughout is an empty plot along its axis: only why it stands still is drawn.
+            figure, turn = pyplot.subplots(1, 1, figsize=(7.5, 4.5))
         mark = text["decimal_mark"]
         if motion.steady is not None:
             _steady_turn(turn, motion, text, flywheel)
@@ -71,6 +76,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                         fontsize=11)
         figure.tight_layout()
     return figure
+
+
+def _moved(motion: MachineMotion) -> bool:
+    """Whether the shaft, or the clutch's driving half, turned at all in the run."""
+    speeds = motion.omega if motion.driving_omega is None else np.concatenate((motion.omega, motion.driving_omega))
+    return bool(np.any(speeds != 0.0))
 
 
 def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> None:
