@@ -97,6 +97,13 @@ LEADER_WIDTH = 0.18
 BESIDE_SHARES = (0.0, 0.5)
 LED_SHARES = (1.1, 1.8)
 APART_SHARES = (3.2, 4.8)
+# Farther still, tried only where every spot on those rings covers another label or a leader.
+FAR_SHARES = (6.6, 8.6, 11.0)
+# What covering another label or leader costs: more than any spot that covers only drawn lines.
+OVERLAP = 1000.0
+LEADERS_CROSSING = 60.0
+# How many times the labels that cover another are placed again among all the rest.
+REPAIR_ROUNDS = 2
 # A leader starts this far from its point (mm), clear of the point's dot.
 LEADER_CLEARANCE = 0.9
 
@@ -113,7 +120,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     spot a little way off is then taken before a letter is written over a
     line, and one set well apart only when nothing nearer is clear.  The
     most crowded points are lettered first, while there is still room
-    around them; ties go to the preferred direction.
+    around them; ties go to the preferred direction.  Where every spot
+    near a point covers another label, rings farther out are tried; and a
+    label that still had to cover another is placed again once all stand,
+    after the one it covers, which may now find a clear spot elsewhere.
 
     All spots of one anchor are costed at once by shapely's array
     functions: a sheet has a few hundred labels and ninety-six spots each.
@@ -123,10 +133,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     tree = STRtree(fixed) if fixed else None
     at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
     points = shapely.points(at)
-    placed_boxes: list[BaseGeometry] = []
-    leader_lines: list[BaseGeometry] = []
+    # Each placed label's box (kept apart by a little more than touching) and leader, by its anchor's index.
+    placed_boxes: dict[int, BaseGeometry] = {}
+    leader_lines: dict[int, BaseGeometry] = {}
     texts: dict[int, Text] = {}
-    leaders: list[Polyline] = []
+    paid: dict[int, float] = {}
 
     def covered(shapes: np.ndarray) -> np.ndarray:
         if tree is None:
@@ -134,16 +145,21 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         hit, obstacle = tree.query(shapes, predicate="intersects")
         return np.bincount(hit, weights[obstacle], minlength=len(shapes))
 
-    def crossing(shapes: np.ndarray, others: list[BaseGeometry]) -> np.ndarray:
+    def crossing(shapes: np.ndarray, placed: dict[int, BaseGeometry], own: int) -> np.ndarray:
+        others = [shape for index, shape in placed.items() if index != own]
         if not others:
             return np.zeros(len(shapes), dtype=int)
         return shapely.intersects(shapes[:, None], np.array(others)[None, :]).sum(axis=1)
 
     led_from = len(BESIDE_SHARES)
     apart_from = led_from + len(LED_SHARES)
-    for index in _most_crowded_first(anchors, at):
+
+    def costed(index: int, shares: tuple[float, ...], first_ring: int):
+        """The spots on the rings at ``shares`` round the anchor, numbered from ``first_ring``: their
+        boxes, their rings, the leaders of those led, and what each costs."""
         anchor = anchors[index]
-        ring, order, candidates = _candidates(anchor, gap)
+        ring, order, candidates = _candidates(anchor, gap, shares)
+        ring = ring + first_ring
         shapes = shapely.box(*candidates.T)
         # A label nearer another labelled point than its own would name the wrong one.  A box reaching
         # at most `reach` from its point is at least `away - reach` from a point `away` off, and at most
@@ -160,24 +176,65 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         lines = _leaders(anchor.at, shapes[led])
         # What the boxes and the leaders cover, in one query of the tree.
         covers = covered(np.concatenate((shapes, lines)))
-        cost = 1000 * (crossing(shapes, placed_boxes) + crossing(shapes, leader_lines))
+        cost = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
         cost = cost + COVER * covers[:len(shapes)] + RING * ring + order * 0.01
-        crossings = crossing(lines, placed_boxes) + crossing(lines, leader_lines)
+        # Two thin leaders crossing each other still lead each to its own label: less amiss than a leader
+        # through a label, yet more than any drawn line covered.
+        crossings = (OVERLAP * crossing(lines, placed_boxes, index)
+                     + LEADERS_CROSSING * crossing(lines, leader_lines, index))
         # The leader says which point the label names: standing near a neighbour misleads less.
         cost[beside] += MISLEADING * misleading[beside]
-        cost[led] += 1000 * crossings + LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
+        cost[led] += crossings + LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
         cost[ring >= apart_from] += SET_APART
+        return candidates, beside, led, lines, cost
+
+    near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
+
+    def place(index: int) -> None:
+        """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
+        anchor = anchors[index]
+        candidates, beside, led, lines, cost = costed(index, near_shares, 0)
         best = int(np.argmin(cost))
+        if cost[best] >= OVERLAP:
+            # Every spot near the point covers a label or a leader (the pole of a crowded lever): farther
+            # out, on a longer leader, before writing one label over another.
+            far = costed(index, FAR_SHARES, len(near_shares))
+            if far[4].min() < cost[best]:
+                candidates, beside, led, lines, cost = far
+                best = int(np.argmin(cost))
         x0, y0, x1, _ = candidates[best]
         texts[index] = Text(((x0 + x1) / 2, y0 + 0.3 * anchor.size), anchor.text, anchor.size, "middle",
                             anchor.colour)
         # Kept apart by a little more than touching, so that two letters never read as one (s5g).
-        placed_boxes.append(text_box(texts[index]).buffer(LABEL_SPACING, join_style=2))
+        placed_boxes[index] = text_box(texts[index]).buffer(LABEL_SPACING, join_style=2)
+        leader_lines.pop(index, None)
         if not beside[best]:
-            leader = lines[best - led[0]]
-            leader_lines.append(leader)
-            leaders.append(Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour)))
-    return Placement(tuple(texts[k] for k in range(len(anchors))), tuple(leaders))
+            leader_lines[index] = lines[best - led[0]]
+        paid[index] = float(cost[best])
+
+    order = _most_crowded_first(anchors, at)
+    for index in order:
+        place(index)
+    # Lettered one by one, a label can take the only clear spot of a later one.  Each label that had to cover
+    # another is placed again among all the others, now that they all stand: it, or the one it covers, moves.
+    for _ in range(REPAIR_ROUNDS):
+        clashing = [index for index in order if paid[index] >= OVERLAP]
+        if not clashing:
+            break
+        covered_ones = [other for other in order if other not in clashing
+                        and any(_clash(index, other, placed_boxes, leader_lines) for index in clashing)]
+        for index in covered_ones + clashing:
+            place(index)
+    leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
+                    for k in order if k in leader_lines)
+    return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
+
+
+def _clash(one: int, other: int, boxes: dict[int, BaseGeometry], leaders: dict[int, BaseGeometry]) -> bool:
+    """Whether the label of ``one`` (its box or leader) covers the box or the leader of ``other``'s."""
+    mine = [boxes[one], *([leaders[one]] if one in leaders else [])]
+    theirs = [boxes[other], *([leaders[other]] if other in leaders else [])]
+    return any(a.intersects(b) for a in mine for b in theirs)
 
 
 def _most_crowded_first(anchors: Sequence[Anchor], at: np.ndarray) -> list[int]:
@@ -197,7 +254,7 @@ def _leaders(at: tuple[float, float], shapes: np.ndarray) -> np.ndarray:
     return shapely.linestrings(np.stack((start, near - unit * 0.3), axis=1))
 
 
-def _candidates(anchor: Anchor, gap: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(ring, order, box) of every spot: sixteen directions on each ring, the preferred direction first.
 
     The rings of :data:`BESIDE_SHARES` stand beside the point; a label on
@@ -205,7 +262,7 @@ def _candidates(anchor: Anchor, gap: float) -> tuple[np.ndarray, np.ndarray, np.
     A box is (xmin, ymin, xmax, ymax) as :func:`text_extent` gives it.
     """
     width = text_width(anchor.text, anchor.size)
-    radii = np.array([gap + share * anchor.size for share in (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)])
+    radii = np.array([gap + share * anchor.size for share in shares])
     turns = np.array((0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8))
     ring, order = np.divmod(np.arange(len(radii) * len(turns)), len(turns))
     direction = anchor.prefer + turns[order] * math.pi / 8
