@@ -359,3 +359,36 @@ def test_svg_is_the_same_every_time_and_states_the_scales():
     assert "(m/s²)/mm" in svg
     assert f"{found.largest_v_difference:.2f} %" in svg
 
+
+
+def test_of_many_positions_the_ticks_dots_and_construction_lines_of_every_few_are_drawn():
+    # 360 positions a degree apart: the ordinates and the pole rays of each ran together into a grey field,
+    # the ticks into a black comb.  Those of every twelfth, where the numbers stand, are drawn.
+    found = record("ratchet_crank_rocker", 360)[2]
+    layers = layers_of(found)
+    along_mm = 1.0 / found.scales.along
+    numbered = [k for k in range(found.intervals + 1) if k % 12 == 0]
+    ticks = [item for item in layers["displacement-axes"] if isinstance(item, Polyline)]
+    origin = next(item for item in layers["displacement-axes"] if isinstance(item, Arrow)
+                  and item.key.endswith("ordinate-axis")).start[0]
+    level = next(item for item in layers["displacement-axes"] if isinstance(item, Arrow)
+                 and item.key.endswith("phi-axis")).start[1]
+    assert [item.points[0][0] - origin for item in ticks] == pytest.approx([found.nodes[k] * along_mm
+                                                                           for k in numbered])
+    numbers = [item.text for item in layers["displacement-labels"] if isinstance(item, Text) and item.text.isdigit()]
+    assert numbers == [str(found.numbers[k]) for k in numbered]
+    ordinates = [line for line in polylines(layers["displacement-rays"])   # not the strokes' dimension lines
+                 if line.points[0][0] == line.points[1][0] and math.isclose(line.points[0][1], level)]
+    assert 0 < len(ordinates) <= len(numbered)
+    assert all(any(math.isclose(line.points[0][0] - origin, found.nodes[k] * along_mm, abs_tol=1e-9)
+                   for k in numbered) for line in ordinates)
+    for kind in ("velocity", "acceleration"):
+        assert 0 < len(polylines(layers[f"{kind}-rays"])) <= 31
+        # The curves themselves keep every position: the chord polyline runs through all of them.
+        assert len(polylines(layers[f"{kind}-curves"])[1].points) >= found.intervals
+
+
+def test_of_a_few_positions_every_construction_line_is_drawn():
+    found = record("ratchet_crank_rocker")[2]
+    layers = layers_of(found)
+    assert len([item for item in layers["velocity-rays"] if isinstance(item, Polyline)]) == found.intervals

@@ -67,6 +67,8 @@ CAPTION_ROOM_MM = 16.0
 # Distance between the lines of a broken line of words, in cap heights.
 LINE_SPACING = 1.5
 GAP_MM = 12.0
+# The most ordinates or pole rays a diagram draws: on its 240 mm axis, 5 mm apart.
+MOST_CONSTRUCTION_LINES = 48
 
 
 def diagrams_svg(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> str:
@@ -148,32 +150,41 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
         Arrow((left, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"{kind}-phi-axis"),
         Arrow((0.0, low - 4.0), (0.0, high + AXIS_RUN_MM), _AXIS, AXIS_HEAD_MM, key=f"{kind}-ordinate-axis"),
     ]
+    # Every position is numbered when the numbers fit between the ticks, else every second, third, … one.
+    widest = max(text_width(str(number), NUMBER_SIZE) for number in record.numbers)
+    every = max(1, math.ceil((widest + 1.0) / (record.step * along_mm)))
+    # Of many positions (a degree apart) the ticks, dots and construction lines of each would run together
+    # into a black comb and a grey field: those of one in every few numbered ones are drawn, as the plan of
+    # positions draws its positions.
+    shown = math.ceil(len(record.nodes) / MOST_CONSTRUCTION_LINES)
+    if shown > 1:
+        shown = every = every * math.ceil(shown / every)
     # Ticks above the axis only, so that a position's number stands right under its tick.
-    axes.extend(Polyline(((x, 0.0), (x, TICK_MM)), _AXIS) for x in (record.nodes * along_mm).tolist())
+    axes.extend(Polyline(((x, 0.0), (x, TICK_MM)), _AXIS)
+                for k, x in enumerate((record.nodes * along_mm).tolist()) if k % shown == 0)
 
     rays: list[Primitive] = []
     if kind == "displacement":
         # The ordinates of the positions: the chords between their ends are what the velocity diagram lays off.
-        rays.extend(Polyline(((x, 0.0), (x, y)), _THIN) for x, y in points if abs(y) > 1e-9)
+        rays.extend(Polyline(((x, 0.0), (x, y)), _THIN) for k, (x, y) in enumerate(points)
+                    if abs(y) > 1e-9 and k % shown == 0)
     else:
         # The pole construction: a ray from P parallel to each chord of the diagram above cuts the
         # ordinate axis at H·tan(chord) = the derivative at this diagram's scale; one ray per chord
         # (a cycle's closing node repeats its first).
         closing = kind == "acceleration" and record.cyclic
-        rays.extend(Polyline(((-pole, 0.0), (0.0, y)), _RAY) for _, y in (points[:-1] if closing else points))
+        chords = points[:-1] if closing else points
+        rays.extend(Polyline(((-pole, 0.0), (0.0, y)), _RAY) for k, (_, y) in enumerate(chords) if k % shown == 0)
 
     drawn: list[Primitive] = [Polyline(curve, _CURVE)]
     drawn.append(Polyline(points, _CHORD))
-    drawn.extend(dot_marker(p, 0.55, _CHORD_COLOUR) for p in points)
+    drawn.extend(dot_marker(p, 0.55, _CHORD_COLOUR) for k, p in enumerate(points) if k % shown == 0)
     if pole is not None:
         drawn.append(dot_marker((-pole, 0.0), 0.7))
 
     labels = [Text((-2.0, high + AXIS_RUN_MM - 1.0), words["kd_axis"].format(symbol=symbol, unit=unit),
                    AXIS_LABEL_SIZE, "end"),
               Text((length + AXIS_RUN_MM, -5.0), _abscissa(record, words), AXIS_LABEL_SIZE, "middle")]
-    # Every position is numbered when the numbers fit between the ticks, else every second, third, … one.
-    widest = max(text_width(str(number), NUMBER_SIZE) for number in record.numbers)
-    every = max(1, math.ceil((widest + 1.0) / (record.step * along_mm)))
     anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2)
                for k, (x, number) in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True))
                if k % every == 0]
