@@ -268,7 +268,6 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     dense, at_nodes = slice(0, samples + 1), slice(samples + 1, samples + 2 + intervals)
     at_midpoints = slice(samples + 2 + intervals, None)
     s, v, a = (np.array(values[dense]) for values in (s_all, v_all, a_all))
-    _require_moving(mechanism, motion, s)
     s_nodes = np.array(s_all[at_nodes])
     dt = step / abs(speed)
     v_chord = chord_derivative(s_nodes, dt)
@@ -313,25 +312,6 @@ def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:
     angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)
     # A rocker swings through less than a half turn: its angle wrapped about the first stays continuous.
     return sign * np.angle(np.exp(1j * (angle - angle[0]))) + 0.0
-
-
-def _require_moving(mechanism: Mechanism, motion: Motion, s: np.ndarray) -> None:
-    """Refuse an output link that stays where it is over the whole run: its diagrams would be drawn at an
-    endless scale (a slip of the scene, such as a slider's guide through the pivot of the slotted link)."""
-    working = mechanism.scene.positions.working
-    assert working is not None
-    if working.link in mechanism.translating:
-        size = max(float(np.max(np.abs(point.r))) for point in motion.points.values())
-        rest, unit = 1e-9 * max(size, 1e-300), "m"
-    else:
-        rest, unit = 1e-9, "rad"
-    travel = float(np.ptp(s))
-    if travel <= rest:
-        run = "the crank's turn" if mechanism.driver.cyclic else f"driver.{mechanism.driver.run_key}"
-        raise SceneError("positions.working", f"link {working.link} does not move over {run}: "
-                         f"its travel is {travel:.3g} {unit}, and the kinematic diagrams of a link at rest have "
-                         "nothing to draw; name a link the mechanism moves, or check the lengths and guides that "
-                         "should move it", working.link)
 
 
 def _drawn_range(values: np.ndarray) -> float:

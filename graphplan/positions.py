@@ -86,6 +86,8 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     strokes = None
     if spec.working is not None:
         motion = solve(mechanism, values, reference, numbers, tolerant=True)
+        if not driver.cyclic:   # a crank's turn was swept for its extremes already
+            require_moving(motion)
         strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes)
 
@@ -108,6 +110,30 @@ def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
     sign = 1.0 if working.sense in ("ccw", "forward") else -1.0
     shape = motion.driver.shape
     return np.broadcast_to(sign * speed, shape), np.broadcast_to(sign * rate, shape)
+
+
+def require_moving(motion: Motion) -> None:
+    """Refuse a working link that stays where it is over ``motion`` (a sweep of the driver's run): it has no
+    strokes, and its diagrams would be drawn at an endless scale.  A slip of the scene, such as a slider's
+    guide through the pivot of the slotted link, or a crank too short to move anything."""
+    mechanism = motion.mechanism
+    working = mechanism.scene.positions.working
+    assert working is not None
+    link = motion.links[working.link]
+    shape = motion.driver.shape
+    if working.link in mechanism.translating:
+        along = np.broadcast_to(dot(link.u, motion.points[link.origin].r), shape)
+        size = max(float(np.max(np.abs(point.r))) for point in motion.points.values())
+        travel, rest, unit = float(np.ptp(along)), 1e-9 * max(size, 1e-300), "m"
+    else:
+        angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)
+        travel, rest, unit = float(np.ptp(np.angle(np.exp(1j * (angle - angle[0]))))), 1e-9, "rad"
+    if travel <= rest:
+        run = "the crank's turn" if mechanism.driver.cyclic else f"driver.{mechanism.driver.run_key}"
+        raise SceneError("positions.working", f"link {working.link} does not move over {run}: its travel is "
+                         f"{travel:.3g} {unit}, so it has no strokes and its kinematic diagrams nothing to draw; "
+                         "name a link the mechanism moves, or check the lengths and guides that should move it",
+                         working.link)
 
 
 def in_working_stroke(motion: Motion) -> np.ndarray:
@@ -136,7 +162,9 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
     driver = mechanism.driver
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
-    speed, _ = working_speed(solve(mechanism, steps, reference))
+    sweep = solve(mechanism, steps, reference)
+    require_moving(sweep)
+    speed, _ = working_speed(sweep)
 
     def speeds_at(angles: Sequence[float]) -> np.ndarray:
         return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]

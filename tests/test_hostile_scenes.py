@@ -573,3 +573,23 @@ def test_a_tolerance_below_the_solvers_least_is_refused(capsys):
     scene = {"dynamics": {"rpm": 100.0, "inertia": 1.0, "resisting_torque": [[0.0, 10.0], [360.0, 10.0]],
                           "rtol": 1e-15, "motor": {"kind": "linear", "stall_torque": 200.0, "no_load_rpm": 120.0}}}
     assert_refused(capsys, to_toml(scene), "dynamics.rtol: must be at least 2.22e-14")
+
+
+def test_check_refuses_an_output_link_that_does_not_move_as_the_run_does(capsys, tmp_path):
+    # check said "ok" and printed strokes of the resting link's rounding noise (φw = 223°).
+    scene = tomllib.loads((FIXTURE.parent / "tangent_mechanism_prp.toml").read_text(encoding="utf-8"))
+    scene["frame"]["lines"]["ram"]["angle"] = 90.0
+    path = tmp_path / "scene.toml"
+    path.write_text(to_toml(scene), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(path)]) == 2
+    captured = capsys.readouterr()
+    assert "strokes" not in captured.out
+    assert captured.err.startswith("graphplan: error: positions.working: link 6 does not move")
+
+
+def test_a_swing_too_small_to_move_the_output_is_refused_by_the_working_link(capsys):
+    scene = tomllib.loads((FIXTURE.parent / "double_rocker_swing.toml").read_text(encoding="utf-8"))
+    scene["driver"]["swing"] = [20.0, 20.0 + 1e-12]
+    scene["positions"]["working"] = {"link": 4, "sense": "ccw"}
+    assert_refused(capsys, to_toml(scene), "positions.working: link 4 does not move over driver.swing")
