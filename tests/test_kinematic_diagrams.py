@@ -392,3 +392,17 @@ def test_of_a_few_positions_every_construction_line_is_drawn():
     found = record("ratchet_crank_rocker")[2]
     layers = layers_of(found)
     assert len([item for item in layers["velocity-rays"] if isinstance(item, Polyline)]) == found.intervals
+
+
+def test_thinned_ticks_still_mark_the_end_of_the_run():
+    # 99 positions, every fourth ticked: the closing node (99, numbered as the first) falls between them, and
+    # the axis would end untagged.
+    found = record("ratchet_crank_rocker", 99)[2]
+    layers = layers_of(found)
+    ticks = sorted(item.points[0][0] for item in layers["displacement-axes"] if isinstance(item, Polyline))
+    origin = next(item for item in layers["displacement-axes"] if isinstance(item, Arrow)
+                  and item.key.endswith("ordinate-axis")).start[0]
+    assert len(ticks) < found.intervals
+    assert ticks[-1] - origin == pytest.approx(found.scales.axis_mm)
+    numbers = [item.text for item in layers["displacement-labels"] if isinstance(item, Text) and item.text.isdigit()]
+    assert numbers[-1] == str(found.numbers[-1])

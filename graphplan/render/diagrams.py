@@ -159,9 +159,16 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     shown = math.ceil(len(record.nodes) / MOST_CONSTRUCTION_LINES)
     if shown > 1:
         shown = every = every * math.ceil(shown / every)
+    last = len(record.nodes) - 1
+
+    def ticked(k: int) -> bool:
+        """Whether node ``k`` gets its tick and number: the last one too (the end of the run), where it stands
+        clear of the one before."""
+        return k % every == 0 or (k == last and k % every >= every / 2)
+
     # Ticks above the axis only, so that a position's number stands right under its tick.
     axes.extend(Polyline(((x, 0.0), (x, TICK_MM)), _AXIS)
-                for k, x in enumerate((record.nodes * along_mm).tolist()) if k % shown == 0)
+                for k, x in enumerate((record.nodes * along_mm).tolist()) if shown == 1 or ticked(k))
 
     rays: list[Primitive] = []
     if kind == "displacement":
@@ -187,7 +194,7 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
               Text((length + AXIS_RUN_MM, -5.0), _abscissa(record, words), AXIS_LABEL_SIZE, "middle")]
     anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2)
                for k, (x, number) in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True))
-               if k % every == 0]
+               if ticked(k)]
     if pole is not None:
         anchors.append(Anchor((-pole, 0.0), words["kd_pole"], AXIS_LABEL_SIZE, -3 * math.pi / 4))
         anchors.append(Anchor((-pole / 2, 0.0), words["kd_pole_distance"], NUMBER_SIZE + 0.5, math.pi / 2))
