@@ -253,8 +253,11 @@ def test_undamped_isolation_by_hand_and_the_stiffness_that_gives_it():
 
 def test_damping_from_resonance_and_far_above_thomson_example_3_2_1():
     # W.T. Thomson, "Theory of Vibration with Applications", 4th ed. (Prentice Hall 1993; Taylor &
-    # Francis reprint), Sec. 3.2, Example 3.2-1: an eccentric-weight exciter gives 0.60 cm at
-    # resonance and approaches 0.08 cm far above it; from Eq. (3.2-4), ζ = 0.08/(2 × 0.60) = 0.0667.
+    # Francis reprint 2010), Sec. 3.2, Example 3.2-1, p. 57: a counterrotating eccentric-weight
+    # exciter gives 0.60 cm at resonance and approaches 0.08 cm far above it (the statement and the
+    # start of the solution: digilib.universitaspertamina.ac.id/ebook/Theory of Vibration with
+    # Applications/files/basic-html/page70.html).  Eq. (3.2-4) at resonance, (m·e/M)/(2ζ) = 0.60 cm,
+    # and far above it, m·e/M = 0.08 cm, give ζ = 0.08/(2 × 0.60) = 0.0667.
     zeta = damping_from_resonance(0.60, 0.08)
     assert zeta == pytest.approx(0.0667, abs=5e-5)
     # The machine so damped gives the two readings back: m·e/M = 0.08 cm.
