@@ -235,9 +235,9 @@ def test_a_chinese_sheet_uses_its_own_strings():
 
 def test_the_lever_arms_as_drawn_give_the_lever_moments(case):
     """|F|·h·μV of every force on the lever is its term's moment; the arm runs from the pole square to the force."""
-    _, position, layers = case
+    analysis, position, layers = case
     lever = position.lever
-    scale = position.velocity.scale
+    scale = force_sheet(analysis, position).lever_scale or position.velocity.scale  # a crowded plan drawn larger
     arrows = {item.key: item for item in layers["lever-forces"] if isinstance(item, Arrow)}
     pole = None
     checked = 0

@@ -49,7 +49,7 @@ from ..lever import Lever, turned
 from ..mechanism import Mechanism
 from ..motion import Motion
 from ..plans import Plan
-from ..scales import format_scale, standard_scale
+from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import Drawing, Heading, Rows
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
@@ -138,9 +138,10 @@ class ForceSheet:
     ``friction`` holds the pairs with friction when ``forces`` is the plan
     with friction; ``without_friction`` is then the balancing load without
     it and ``efficiency`` η (NaN where friction turns the power flow round).
-    ``lever_scale`` is μV of the lever when it is drawn smaller than the
-    velocity plan (a similar figure at any scale gives the same balancing
-    load), as a small sheet needs; ``caption_size`` the height of the
+    ``lever_scale`` is μV of the lever when it is drawn at another scale
+    than the velocity plan (a similar figure at any scale gives the same
+    balancing load): larger where the plan's points crowd
+    (:func:`enlarged_lever_scale`), smaller where a small sheet needs it; ``caption_size`` the height of the
     captions' letters (mm), smaller on a small sheet.
     """
 
@@ -758,6 +759,27 @@ def _split_equation(equation: str) -> tuple[str, ...]:
 
 
 # Zhukovsky's lever.
+
+# A velocity plan whose points crowd round the pole (two of them closer than this, mm) is drawn larger as
+# the lever, its longest ray this long (mm): a similar figure at any scale gives the same balancing load,
+# and at the plan's own size the loads, their arms and their names at the crowded points run together.
+LEVER_CROWDED_MM = 15.0
+LEVER_LONGEST_RAY_MM = 250.0
+
+
+def enlarged_lever_scale(velocity: Plan) -> float | None:
+    """The standard μV that draws the lever of ``velocity`` larger than the plan, where its points crowd.
+
+    None where the plan is drawn clear enough or already as large.
+    """
+    spots = [group[0] for group in coincident_letters(velocity)]
+    closest = min((abs(velocity.mm(a) - velocity.mm(b)) for i, a in enumerate(spots) for b in spots[i + 1:]),
+                  default=math.inf)
+    if closest >= LEVER_CROWDED_MM:
+        return None
+    larger = fit_scale(max(abs(value) for value in velocity.points.values()), LEVER_LONGEST_RAY_MM)
+    return larger if larger < velocity.scale * (1.0 - 1e-9) else None
+
 
 def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     """The velocity plan turned 90° clockwise about the pole p, the loads at the images of their points."""

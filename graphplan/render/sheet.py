@@ -289,7 +289,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         return holds(sheet, form, width, height)
 
     before: dict[str, tuple[float, float]] = {}
-    for _ in range(_LARGER_SCALES_TRIED):
+    for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
@@ -299,6 +299,10 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         panels = [replace(one, alternatives=(two,) if two.extent != one.extent else ())]
         if any(fits(_width(way), _height(way)) for way in panels[0].ways):
             break
+        # A lever drawn larger than its plan gives the room back, a step at a time, before the sheet is cut up.
+        if _steps_to_plan_size(drawn):
+            drawn = replace(drawn, lever_scale=_smaller_lever(drawn))
+            continue
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
         parts = rows.parts(fits)
         if parts is not None:
@@ -324,6 +328,20 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     if drawn.length_scale == length_scale(analysis):
         return one, panels
     return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]
+
+
+def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
+    """The lever's μV a standard step smaller than ``drawn``'s enlarged one; None back at the plan's own."""
+    smaller = next_standard_scale(drawn.lever_scale)
+    return smaller if smaller < drawn.velocity.scale * (1.0 - 1e-9) else None
+
+
+def _steps_to_plan_size(drawn: force_layout.ForceSheet) -> int:
+    """How many standard steps ``drawn``'s lever is drawn larger than its velocity plan."""
+    steps = 0
+    while drawn.lever_scale is not None and drawn.lever_scale < drawn.velocity.scale * (1.0 - 1e-9):
+        drawn, steps = replace(drawn, lever_scale=_smaller_lever(drawn)), steps + 1
+    return steps
 
 
 def _pieces(parts: Sequence[Panel]) -> list[Panel]:

@@ -36,6 +36,7 @@ from ..analysis import Analysis, PlanPosition
 from ..check import Reading
 from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
+from ..render.forces import enlarged_lever_scale
 from ..scales import format_scale, standard_scale
 from . import forces as force_report
 from .tables import error_table_lines, has_reactions, quantity_symbol, unit_of
@@ -888,6 +889,7 @@ class _Note:
         lever = plan.lever
         if lever is not None:
             velocity = plan.velocity
+            drawn_at = enlarged_lever_scale(velocity) or velocity.scale  # as the force sheet draws it
             rows = []
             total = 0.0
             largest = max((abs(term.moment) for term in lever.terms), default=0.0)
@@ -896,17 +898,20 @@ class _Note:
                 if abs(term.force) <= _ROUNDING * strongest and abs(term.moment) <= _ROUNDING * largest:
                     continue  # a load of the plan's rounding: no load
                 # a load whose line passes through the pole has no moment, whatever rounding says
-                moment_mm = term.moment / velocity.scale if abs(term.moment) > _ROUNDING * largest else 0.0
+                moment_mm = term.moment / drawn_at if abs(term.moment) > _ROUNDING * largest else 0.0
                 total += moment_mm
                 point = self.letter(velocity, term.image) if term.image else "—"
-                arm = self.mm(term.arm / velocity.scale) if term.image else "—"
+                arm = self.mm(term.arm / drawn_at) if term.image else "—"
                 force = self.n(abs(term.force)) if term.image else "—"
                 rows.append([term.name, point, force, arm, self.n(moment_mm)])
             self.para(self.text["note_lever_intro"])
+            if drawn_at != velocity.scale:
+                scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", self.mark))
+                self.para(self.t("note_lever_scale", scale=scale))
             header = [self.t("column_force"), self.t("column_point"), f"F, {text['newton']}",
                       f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
             self.table(self.t("note_lever_table", number=plan.number), header, rows, "llrrr")
-            pa = abs(velocity.value(driver.joint)) / velocity.scale
+            pa = abs(velocity.value(driver.joint)) / drawn_at
             segment = self.segment(velocity, "p", velocity.images[driver.joint])
             force = abs(total) / pa if pa else math.nan
             equation = (f"Fy = |Σ(F·h)|/{segment} = {self.n(abs(total))}/{self.mm(pa)} = {self.n(force)} "
