@@ -31,26 +31,44 @@ from ..statics import balancing_by_power, efficiency
 _ROUNDING = 1e-12
 
 
+# A number this small (SI units, degrees, per cent) is what the arithmetic leaves of a nought: a dead centre's
+# acceleration, a reaction no load calls for, the difference of two methods that agree, a direction of
+# 1e−14°.  No quantity of a machine's analysis is this small, so it is written 0, as a student writes it.
+ROUNDING_NOISE = 1e-10
+
+
 def number(value: float, digits: int = 5, mark: str = ".") -> str:
-    """``value`` to ``digits`` significant digits with a true minus sign and the locale's decimal mark."""
+    """``value`` to ``digits`` significant digits with a true minus sign and the locale's decimal mark.
+
+    A value of :data:`ROUNDING_NOISE` or less is 0; one of ``digits`` places before the point or more is
+    written whole, without an exponent (868600, not 8.686e+05).
+    """
     if not math.isfinite(value):
         return "—"
+    if abs(value) < ROUNDING_NOISE:
+        return "0"
     text = f"{value:.{digits}g}"
+    if "e+" in text:
+        text = f"{float(text):.0f}"
     text = "0" if text in ("-0", "0") else text.replace("-", "−")
     return text.replace(".", mark)
 
 
 def polar(force: complex, mark: str = ".") -> str:
-    """A force as magnitude ∠ direction in degrees."""
+    """A force as magnitude ∠ direction in degrees; a force of rounding noise as 0, which has no direction."""
     if not (math.isfinite(force.real) and math.isfinite(force.imag)):
         return "—"
-    angle = math.degrees(cmath.phase(force)) if force else 0.0
+    if abs(force) < ROUNDING_NOISE:
+        return "0"
+    angle = math.degrees(cmath.phase(force))
     return f"{number(abs(force), mark=mark)} ∠ {number(angle, 4, mark)}°"
 
 
 def percent(value: float, reference: float, mark: str = ".") -> str:
-    """(value − reference)/reference · 100, or a dash without a reference."""
-    return number((value - reference) / reference * 100.0, 3, mark) if reference else "—"
+    """(value − reference)/reference · 100; 0 where both are noughts, a dash where only the reference is."""
+    if abs(reference) < ROUNDING_NOISE:
+        return "0" if abs(value) < ROUNDING_NOISE else "—"
+    return number((value - reference) / reference * 100.0, 3, mark)
 
 
 @dataclass(frozen=True)

@@ -106,7 +106,13 @@ class _Note:
         return f"{value:.2f}".replace(".", self.mark)
 
     def product(self, *factors: str) -> str:
-        return self.text["times"].join(factors)
+        """Factors joined by the locale's sign of multiplication, a negative one after the first in brackets."""
+        return self.text["times"].join([factors[0], *map(self.enclosed, factors[1:])]) if factors else ""
+
+    @staticmethod
+    def enclosed(number: str) -> str:
+        """A negative number in brackets, to stand after a sign: −2.8 − (−2.8), not −2.8 − −2.8."""
+        return f"({number})" if number.startswith("−") else number
 
     def sense(self, value: float) -> str:
         return self.text["sense_ccw"] if value > 0 else self.text["sense_cw"]
@@ -925,7 +931,7 @@ class _Note:
             self.para(self.t("note_lever_result", equation=equation))
             difference = lever.difference_percent(polygons)
             self.para(self.t("note_lever_difference", name=name, lever=self.n(lever.balancing, 6),
-                             polygons=self.n(polygons, 6), delta=self.n(difference, 3)))
+                             polygons=self.enclosed(self.n(polygons, 6)), delta=self.n(difference, 3)))
         self.captioned(self.t("note_balancing_table", name=name, number=plan.number),
                        force_report.balancing_lines(analysis, plan, self.mark))
 
