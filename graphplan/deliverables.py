@@ -59,6 +59,9 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return None if scene.vibration is not None else "needs a [vibration] table"
     if piece == "dynamics" and scene.dynamics is not None and scene.dynamics.diagrams:
         return None  # a load diagram needs no mechanism
+    if piece == "note" and analysis is None and (
+            scene.balancing is not None or scene.vibration is not None or missing(scene, None, "dynamics") is None):
+        return None  # the note on the machine's flywheel, rotor or vibration alone
     if analysis is None:
         return _NO_LINKAGE
     if piece == "sheets" and scene.drawing.sheet == "none":
@@ -313,15 +316,23 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
     return dynamics if dynamics is not None else MachineDynamics(analysis if analysis is not None else scene)
 
 
-def tables(analysis: Analysis | None, pieces: tuple[str, ...], dynamics: MachineDynamics | None = None) -> dict[str, str]:
-    """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its section
-    on the machine's ``dynamics`` when the run has them), each in Markdown and LaTeX (the note also in HTML)."""
+def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
+           dynamics: MachineDynamics | None = None) -> dict[str, str]:
+    """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its sections
+    on the machine's ``dynamics``, its rotor's balancing and its vibration when the run has them), each in Markdown
+    and LaTeX (the note also in HTML).  A scene without a linkage has only the note."""
     files: dict[str, str] = {}
-    if analysis is None:
-        return files
     from .report.latex import latex_document, latex_fragment
 
-    locale = analysis.scene.locale
+    locale = scene.locale
+    if "note" in pieces:
+        from .report.note import note_html, note_markdown
+
+        files["note.md"] = note_markdown(analysis, dynamics, scene)
+        files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
+        files["note.tex"] = latex_document(files["note.md"], scene.title, locale)
+    if analysis is None:
+        return files
     if "errors" in pieces:
         from .report.tables import csv_text, markdown
 
@@ -333,12 +344,6 @@ def tables(analysis: Analysis | None, pieces: tuple[str, ...], dynamics: Machine
 
         files["forces.md"] = forces_markdown(analysis)
         files["forces.tex"] = latex_fragment(files["forces.md"], locale)
-    if "note" in pieces:
-        from .report.note import note_html, note_markdown
-
-        files["note.md"] = note_markdown(analysis, dynamics)
-        files["note.html"] = note_html(analysis, markdown=files["note.md"])
-        files["note.tex"] = latex_document(files["note.md"], analysis.scene.title, locale)
     return files
 
 
@@ -445,14 +450,16 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     that stalls)."""
     from .report.results import dumps
 
-    # The model, the flywheel and the integrated motion serve the results, the drawing and the plot.
-    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces else None
+    # The model, the flywheel and the integrated motion serve the results, the drawing, the plot and the note,
+    # which tells all the scene has whichever drawings are asked for.
+    explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
+    dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
     if dynamics is not None and warn is not None and (stall := dynamics.stall_warning()) is not None:
         warn(stall)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
-    found.update(tables(analysis, pieces, dynamics))
+    found.update(tables(scene, analysis, pieces, dynamics))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 
@@ -460,8 +467,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "docx" in formats and "note.md" in found:
         from .report.word import note_docx
 
-        assert analysis is not None   # a note is written of a linkage's analysis
-        found["note.docx"] = note_docx(str(found["note.md"]), analysis.scene.title, analysis.scene.locale)
+        found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale)
     found.update(figures(scene, analysis, pieces, dynamics))
     if "accuracy" in pieces and analysis is not None:
         found.update(accuracy_report(analysis))

@@ -176,7 +176,7 @@ def test_check_tells_what_run_writes_and_what_it_leaves_out_for_want_of_data(tmp
                      'plane = 0.0 } ]\ncorrection_radius = 0.05\n', encoding="utf-8")
     assert main(["check", str(rotor)]) == 0
     lines = capsys.readouterr().out.splitlines()
-    assert "run writes: balancing" in lines and not any(line.startswith("left out") for line in lines)
+    assert "run writes: note, balancing" in lines and not any(line.startswith("left out") for line in lines)
 
 
 def test_check_prints_the_structure_formula(capsys):

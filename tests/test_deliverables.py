@@ -220,7 +220,8 @@ def test_a_rotor_without_a_linkage_is_balanced_and_its_vibration_plotted(tmp_pat
     status, out = run(tmp_path, "--format", "svg,dxf", scene=scene)
     assert status == 0
     assert names(out) == {"results.json", "rotor_balancing.svg", "rotor_balancing.dxf",
-                          "vibration_magnification.svg", "vibration_transmissibility.svg"}
+                          "vibration_magnification.svg", "vibration_transmissibility.svg",
+                          "note.md", "note.html", "note.tex"}  # the note works the rotor and its mounts out
     document = json.loads((out / "results.json").read_text(encoding="utf-8"))
     assert "positions" not in document
     left, right = document["balancing"]["planes"]

@@ -16,6 +16,7 @@ from graphplan.report import forces as force_report
 from graphplan.report.forces import number, percent, polar
 from graphplan.report.note import note_markdown
 
+
 @pytest.mark.parametrize(("value", "digits", "written"), [
     (1.4503e-15, 5, "0"), (-6.4468e-14, 5, "0"), (1.49e-14, 3, "0"),
     (115860.2, 5, "115860"), (-868600.4, 5, "−868600"), (99999.6, 5, "100000"), (123456.7, 5, "123460"),

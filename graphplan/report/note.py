@@ -38,7 +38,9 @@ from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.forces import enlarged_lever_scale
 from ..scales import format_scale, standard_scale
+from ..scene import Scene
 from . import forces as force_report
+from .machine_note import balancing_section, vibration_section
 from .tables import error_table_lines, has_reactions, quantity_symbol, unit_of
 
 # Two numbers that agree to this share are the same number printed twice.
@@ -50,24 +52,28 @@ _NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE = "ⁿ", "ᵏ", "^τ", "^r"
 _ROMAN = {1: "I", 2: "II", 3: "III"}
 
 
-def note_markdown(analysis: Analysis, dynamics=None) -> str:
+def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.deliverables.MachineDynamics`) adds the section on the
-    machine's dynamics: the equivalent model, the flywheel and, with a motor, the motion.
+    machine's dynamics: the equivalent model, the flywheel and, with a motor, the motion; a scene
+    with ``[balancing]`` or ``[vibration]`` has a section on its rotor or on its vibration too.  A
+    scene without a linkage has no ``analysis``: its note is those sections alone, of ``scene``.
     """
-    note = _Note(analysis, dynamics=dynamics)
+    note = _Note(analysis, dynamics=dynamics, scene=scene)
     note.write()
     return "\n".join(note.lines).rstrip("\n") + "\n"
 
 
-def note_html(analysis: Analysis, dynamics=None, markdown: str | None = None) -> str:
+def note_html(analysis: Analysis | None, dynamics=None, markdown: str | None = None, scene: Scene | None = None) -> str:
     """The explanatory note as a standalone HTML page (from its ``markdown`` when already written)."""
     from .html import to_html
 
-    title = strings(analysis.scene.locale)["note_title"].format(title=analysis.scene.title)
-    markdown = markdown if markdown is not None else note_markdown(analysis, dynamics)
-    return to_html(markdown, title, analysis.scene.locale, symbols=True)
+    scene = analysis.scene if analysis is not None else scene
+    assert scene is not None, "a note is of an analysis or of a scene"
+    title = strings(scene.locale)["note_title"].format(title=scene.title)
+    markdown = markdown if markdown is not None else note_markdown(analysis, dynamics, scene)
+    return to_html(markdown, title, scene.locale, symbols=True)
 
 
 @dataclass(frozen=True)
@@ -82,16 +88,20 @@ class _Term:
 
 @dataclass
 class _Note:
-    analysis: Analysis
+    analysis: Analysis | None
     lines: list[str] = field(default_factory=list)
     tables: int = 0
     dynamics: object = None
+    scene: Scene | None = None
 
     def __post_init__(self) -> None:
-        self.text = strings(self.analysis.scene.locale)
+        if self.analysis is not None:
+            self.scene = self.analysis.scene
+            self.mechanism = self.analysis.mechanism
+            self.frame = self.analysis.scene.frame_link
+        assert self.scene is not None, "a note is of an analysis or of a scene"
+        self.text = strings(self.scene.locale)
         self.mark = self.text["decimal_mark"]
-        self.mechanism = self.analysis.mechanism
-        self.frame = self.analysis.scene.frame_link
 
     # Formatting in the note's language.
 
@@ -147,8 +157,24 @@ class _Note:
     # The note.
 
     def write(self) -> None:
-        scene = self.analysis.scene
-        self.heading(1, self.t("note_title", title=scene.title))
+        self.heading(1, self.t("note_title", title=self.scene.title))
+        section = self.linkage() if self.analysis is not None else 0
+        if self.dynamics is not None:
+            section += 1
+            self.machine_dynamics(section)
+        if self.scene.balancing is not None:
+            from ..rotor_balancing import balance
+
+            section += 1
+            balancing_section(self, section, balance(self.scene.balancing))
+        if self.scene.vibration is not None:
+            from ..vibration import steady_state
+
+            section += 1
+            vibration_section(self, section, self.scene.vibration, steady_state(self.scene.vibration))
+
+    def linkage(self) -> int:
+        """The sections on the linkage: its structure, data, plans, errors and forces; the last one's number."""
         section = 1
         self.structure(section)
         section += 1
@@ -165,9 +191,7 @@ class _Note:
         if any(plan.forces is not None for plan in plans) or self.analysis.equilibrium is not None:
             section += 1
             self.forces(section)
-        if self.dynamics is not None:
-            section += 1
-            self.machine_dynamics(section)
+        return section
 
     def structure(self, section: int) -> None:
         mechanism = self.mechanism
@@ -945,8 +969,12 @@ class _Note:
         # The texts of a run once over a swing or a travel, not over a cycle, say so.
         run = "" if model.cyclic else "_swing" if turning else "_travel"
         self.heading(2, f"{section}. {self.t('note_dynamics')}")
-        self.para(self.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
-                         count=len(model.coordinate)))
+        if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
+            self.para(self.t("note_dyn_model_diagrams", count=len(model.coordinate),
+                             inertia=self.n(float(np.mean(model.inertia)))))
+        else:
+            self.para(self.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
+                             count=len(model.coordinate)))
         if model.plans:
             self.reductions(model)
         if turning and model.constant in ("driving", "resisting"):
@@ -996,7 +1024,7 @@ class _Note:
                          approximate=self.n(flywheel.approximate), exact=self.n(flywheel.inertia),
                          mertsalov=self.n(flywheel.mertsalov)))
         model = self.dynamics.model
-        self.para(self.t("note_dyn_speeds", high=self.n(flywheel.omega_max), low=self.n(flywheel.omega_min),
+        self.para(self.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=self.n(flywheel.omega_max), low=self.n(flywheel.omega_min),
                          high_angle=self.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
                          low_angle=self.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
         if flywheel.moved is not None:

@@ -1,0 +1,159 @@
+"""The explanatory note on the machine as a whole: its flywheel, its rotor's balancing, its vibration.
+
+A scene of a flywheel, a rotor or a machine on its mounts alone (no linkage) gets a note of its own, and a
+linkage's note gains these sections when its scene has the tables. Every number the note works out is
+checked against the textbook formulas evaluated here (the rotor's two corrections by solving the force and
+moment balance as one linear system, not by the polygons), and the flywheel against its published answer.
+"""
+
+import cmath
+import math
+import re
+import tomllib
+from importlib import resources
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from graphplan.cli import main
+
+ROTOR = """\
+[balancing]
+masses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0 },
+           { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08 } ]
+planes = [0.04, 0.22]
+correction_radius = 0.05
+"""
+MOUNTS = """\
+[vibration]
+mass = 100.0
+unbalance = 0.02
+stiffness = 1.0e5
+damping_ratio = 0.1
+rpm = 600.0
+transmissibility = 0.2
+"""
+# The punching press of the issue's worked example: driving power constant, 367.7 W for a third of the
+# cycle and 3677 W for two thirds, 100 rpm, δ = 0.05: ΔWmax = 441.24 J, JF = 80.473 kg·m², 0.388 kg·m² at 1440 rpm.
+PRESS = """\
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+driving = "constant"
+inertia = 0.0
+flywheel_shaft_rpm = 1440
+"""
+
+
+def note_of(tmp_path, body, locale="en", extra=()):
+    scene = tmp_path / "scene.toml"
+    scene.write_text(f'[scene]\ntitle = "A machine"\nlocale = "{locale}"\n\n{body}', encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), *extra]) == 0
+    return out, (out / "note.md").read_text(encoding="utf-8")
+
+
+def value(text):
+    return float(text.replace("−", "-").replace(",", "."))
+
+
+def agrees(printed, exact, digits=5):
+    """A number printed to ``digits`` significant digits is ``exact`` within half its last place."""
+    return abs(value(printed) - exact) <= 0.5 * 10 ** (math.floor(math.log10(abs(exact))) - digits + 1) * (1 + 1e-9)
+
+
+def test_a_rotor_alone_gets_a_note_whose_corrections_cancel_the_force_and_the_moment(tmp_path):
+    out, note = note_of(tmp_path, ROTOR)
+    assert {"note.md", "note.html", "note.tex"} <= {path.name for path in out.iterdir()}
+    assert note.startswith("# Explanatory note: A machine\n") and "## 1. Balancing of the rotor" in note
+    masses = [(18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08)]
+    products = [m * r * cmath.exp(1j * math.radians(angle)) for m, r, angle, _ in masses]
+    # mL·rL + mR·rR = −Σ m·r and zL·mL·rL + zR·mR·rR = −Σ m·r·z, solved as one system.
+    system = np.array([[1.0, 1.0], [0.04, 0.22]], dtype=complex)
+    right = -np.array([sum(products), sum(p * z for p, (_, _, _, z) in zip(products, masses, strict=True))])
+    left_plane, right_plane = np.linalg.solve(system, right)
+    for name, correction in (("L", left_plane), ("R", right_plane)):
+        found = re.search(rf"Plane {name}: .*?closing vector m{name}r{name} = (\d+(?:\.\d+)?) kg·m at θ = (\d+(?:\.\d+)?)°, "
+                          rf"so that at r = 0.05 m the correction mass is m{name} = [\d.]+/0.05 = (\d+(?:\.\d+)?) kg", note)
+        assert found, name
+        assert agrees(found.group(1), abs(correction))
+        assert agrees(found.group(2), math.degrees(cmath.phase(correction)) % 360, 4)
+        assert agrees(found.group(3), abs(correction) / 0.05)
+    assert "Σ m·r = 0 kg·m and Σ m·r·z = 0 kg·m²" in note
+    # The shares carried to plane L: (zR − zi)/(zR − zL).
+    assert re.search(r"\| m2r2 \| 0.84 \| 0.7778 \| 0.65333 \|", note)
+
+
+def test_a_machine_on_its_mounts_gets_its_vibration_worked_out(tmp_path):
+    _, note = note_of(tmp_path, MOUNTS)
+    mass, k, zeta, unbalance, omega = 100.0, 1e5, 0.1, 0.02, 600 * 2 * math.pi / 60
+    natural = math.sqrt(k / mass)
+    r = omega / natural
+    root = math.sqrt((1 - r * r) ** 2 + (2 * zeta * r) ** 2)
+    magnification = r * r / root
+    lag = math.degrees(math.atan2(2 * zeta * r, 1 - r * r))
+    tr = math.sqrt(1 + (2 * zeta * r) ** 2) / root
+    force = unbalance * omega ** 2
+
+    def transmissibility(ratio):
+        return math.sqrt(1 + (2 * zeta * ratio) ** 2) / math.sqrt((1 - ratio ** 2) ** 2 + (2 * zeta * ratio) ** 2)
+
+    isolating = brentq(lambda ratio: transmissibility(ratio) - 0.2, math.sqrt(2), 100, xtol=1e-14)
+    found = re.search(r"ωn = √\(k/M\) = √\(100000/100\) = (\d+(?:\.\d+)?) rad/s, the critical speed (\d+(?:\.\d+)?) rpm; "
+                      r"frequency ratio r = ω/ωn = [\d.]+/[\d.]+ = (\d+(?:\.\d+)?)", note)
+    assert found and agrees(found.group(1), natural) and agrees(found.group(2), natural * 60 / (2 * math.pi))
+    assert agrees(found.group(3), r)
+    found = re.search(r"= (\d+(?:\.\d+)?); the steady amplitude X = .* = (\d+(?:\.\d+)?) m \((\d+(?:\.\d+)?) mm\), lagging the unbalance "
+                      r"by φ = (\d+(?:\.\d+)?)°", note)
+    assert found and agrees(found.group(1), magnification)
+    assert agrees(found.group(2), unbalance / mass * magnification)
+    assert agrees(found.group(3), unbalance / mass * magnification * 1000)
+    assert agrees(found.group(4), lag, 4) and lag > 90  # above resonance the mass moves against the unbalance
+    found = re.search(r"m·e·ω² = 0.02·[\d.]+² = (\d+(?:\.\d+)?) N; .* = (\d+(?:\.\d+)?), so the mounts pass (\d+(?:\.\d+)?) N", note)
+    assert found and agrees(found.group(1), force) and agrees(found.group(2), tr) and agrees(found.group(3), force * tr)
+    found = re.search(r"r = (\d+(?:\.\d+)?): mounts of stiffness k = M·\(ω/r\)² = .* = (\d+(?:\.\d+)?) N/m", note)
+    assert found and agrees(found.group(1), isolating) and agrees(found.group(2), mass * (omega / isolating) ** 2)
+
+
+def test_a_flywheel_from_load_diagrams_alone_gets_the_published_answer_in_its_note(tmp_path):
+    _, note = note_of(tmp_path, PRESS)
+    assert "## 1. Dynamics of the machine" in note and "given as diagrams" in note
+    assert "driving link" not in note  # no linkage is reduced to a link
+    assert "ΔWmax = 441.24 J" in note
+    assert "= 80.473 kg·m²" in note
+    assert "JF′ = JF·(n/n′)² = 0.38808 kg·m²" in note
+
+
+def test_the_sections_follow_one_another_numbered_and_the_note_may_be_asked_for_alone(tmp_path):
+    out, note = note_of(tmp_path, PRESS + ROTOR + MOUNTS, extra=["--only", "note", "--format", "svg,docx"])
+    headings = re.findall(r"^## (\d)\. (.+)$", note, flags=re.MULTILINE)
+    assert headings == [("1", "Dynamics of the machine"), ("2", "Balancing of the rotor"),
+                        ("3", "Vibration from the rotating unbalance")]
+    assert sorted(path.name for path in out.iterdir()) == ["note.docx", "note.html", "note.md", "note.tex",
+                                                           "results.json"]
+
+
+def test_a_linkages_note_gains_the_rotor_and_the_mounts_after_its_own_sections(tmp_path):
+    source = resources.files("graphplan").joinpath("templates", "crank-rocker.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "scene.toml"
+    scene.write_text(source + "\n" + ROTOR + "\n" + MOUNTS, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note,balancing,vibration"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    numbers = [int(number) for number in re.findall(r"^## (\d+)\. ", note, flags=re.MULTILINE)]
+    assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) >= 4
+    assert re.findall(r"^## \d+\. (.+)$", note, flags=re.MULTILINE)[-2:] == ["Balancing of the rotor",
+                                                                       "Vibration from the rotating unbalance"]
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh"])
+def test_the_machine_note_is_in_the_scenes_language_with_every_value_filled_in(tmp_path, locale):
+    _, note = note_of(tmp_path, PRESS + ROTOR + MOUNTS, locale)
+    words = tomllib.loads(resources.files("graphplan").joinpath("locales", f"{locale}.toml").read_text("utf-8"))
+    assert words["note_balancing"] in note and words["note_vibration"] in note
+    assert "{" not in note and "}" not in note
+    assert "Balancing" not in note and "Vibration" not in note and "known by" not in note
+    if locale == "ru":
+        assert "0,26545 мм" in note  # the amplitude, with the Russian decimal comma
