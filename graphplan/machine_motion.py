@@ -694,12 +694,21 @@ def _overcomes(driving: float, passive: float) -> bool:
     return driving + passive > 1e-12 * (abs(driving) + abs(passive))
 
 
+# How many times a run evaluates the equation of motion at most (a run to the steady state takes a few thousand;
+# this many is some ten seconds).  A motion the scene makes too slow or too stiff to follow (a gear ratio of
+# 1e15, which leaves the shaft a turn in 10^13 s) would otherwise integrate for hours.
+MOST_EVALUATIONS = 300_000
+
+
 class _Integrator:
     """Integrates phase by phase; stops at times where the equations change and at state events."""
 
-    def __init__(self, equations: _Equations, start: Start, method: str, rtol: float, atol: float) -> None:
+    def __init__(self, equations: _Equations, start: Start, method: str, rtol: float, atol: float,
+                 max_evaluations: int | None = MOST_EVALUATIONS) -> None:
         self.eq = equations
         self.method = method
+        self.max_evaluations = max_evaluations
+        self.evaluations = 0
         self.rtol = rtol
         self.atol = atol
         self.t = float(start.time)
@@ -799,6 +808,18 @@ class _Integrator:
             self.y[2] = 0.0
         self._finish_if_held_at_rest()
 
+    def _counted(self, rhs: Callable[[float, np.ndarray], list[float]]) -> Callable[[float, np.ndarray], list[float]]:
+        """``rhs`` that stops the run once it has been evaluated :attr:`max_evaluations` times."""
+        def counted(t: float, y: np.ndarray) -> list[float]:
+            self.evaluations += 1
+            if self.max_evaluations is not None and self.evaluations > self.max_evaluations:
+                raise ArithmeticError(
+                    f"the equation of motion was evaluated {self.max_evaluations} times by t = {t:.4g} s without "
+                    f"the run ending: the motion is too slow or too stiff to follow (look at the motor's speed, "
+                    f"its gear ratio and the inertias)")
+            return rhs(t, y)
+        return counted
+
     def held_at_rest(self) -> bool:
         """Whether the machine, turning as one body, is at rest and held there: the motor switched off or too
         weak to move it at this angle.  Nothing more will happen then, since no later switch (a brake, the
@@ -834,7 +855,7 @@ class _Integrator:
             self.eq.settle(self.phase, self.t, self.y)
             stop = min([b for b in self.boundaries if b > self.t] + [t_end])
             events = self._events()
-            solution = solve_ivp(self.eq.rhs(self.phase), (self.t, stop), self.y, method=self.method,
+            solution = solve_ivp(self._counted(self.eq.rhs(self.phase)), (self.t, stop), self.y, method=self.method,
                                  rtol=self.rtol, atol=self.atol, dense_output=True,
                                  events=[e for e, _ in events] or None)
             if solution.status == -1:
@@ -1110,7 +1131,8 @@ def _explicit_step(equations: _Equations, omega_run: float, rtol: float, atol: f
 def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, start: Start = REST,
              brake: Brake | None = None, clutch: Clutch | None = None, motor_off_at: float | None = None,
              method: str = "auto", rtol: float = 1e-6, atol: float | None = None,
-             steady_tolerance: float = 1e-4, max_cycles: int = MOST_CYCLES) -> MachineMotion:
+             steady_tolerance: float = 1e-4, max_cycles: int = MOST_CYCLES,
+             max_evaluations: int | None = MOST_EVALUATIONS) -> MachineMotion:
     """Integrate the machine's motion.
 
     Parameters
@@ -1133,6 +1155,9 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     max_cycles
         With no duration, how many turns at most; on any run, how many of the last turns are
         analysed for the cycles and the steady state.
+    max_evaluations
+        How many evaluations of the equation of motion before the run is given up with an
+        :class:`ArithmeticError`; None: no limit (a benchmark of explicit methods on a stiff machine).
     """
     if method not in METHODS:
         raise ValueError(f"method: must be one of {', '.join(METHODS)} (got {method!r})")
@@ -1157,7 +1182,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         chosen, reason = method, f"{method}: as asked (stiffness number {stiffness:.3g})"
     tolerance = max(steady_tolerance, 10.0 * rtol)
     notes = []
-    integrator = _Integrator(equations, start, chosen, rtol, atol)
+    integrator = _Integrator(equations, start, chosen, rtol, atol, max_evaluations)
     # A motor too weak to start the machine where it stands: one turn's time at rest shows it.
     equations.clock = start.time
     never_starts = equations.motor_on(start.time) and integrator.held_at_rest()

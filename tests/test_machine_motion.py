@@ -19,8 +19,10 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize_scalar
 
+from graphplan.cli import main
 from graphplan.errors import SceneError
 from graphplan.machine_motion import (
+    MOST_EVALUATIONS,
     RPM,
     Brake,
     Clutch,
@@ -292,6 +294,31 @@ def test_auto_method_keeps_an_explicit_method_for_a_soft_motor():
     assert motion.method_reason.startswith("auto: not stiff")
     tight = simulate(machine, LinearMotor(100.0, 50.0), duration=1.0, rtol=1e-10)
     assert tight.method == "DOP853"
+
+
+def test_a_run_that_would_not_end_is_given_up_after_its_evaluations_with_a_reason():
+    machine = Machine(5.0, resisting=lambda phi, omega: 40.0 + 10.0 * math.sin(phi))
+    finished = simulate(machine, LinearMotor(100.0, 50.0))
+    assert finished.steady is not None and finished.nfev < MOST_EVALUATIONS / 20  # the budget is far from a real run
+    with pytest.raises(ArithmeticError, match=r"^the equation of motion was evaluated 300 times by t = [\d.]+ s "
+                                              r"without the run ending: the motion is too slow or too stiff"):
+        simulate(machine, LinearMotor(100.0, 50.0), max_evaluations=300)
+
+
+def test_a_gear_ratio_that_leaves_the_shaft_a_turn_in_ages_is_refused_not_integrated_for_hours(tmp_path, capsys):
+    # 1500 rpm through 1e15: the shaft would turn at 1.6e−13 rad/s, a turn in 4e13 s.
+    scene = tmp_path / "press.toml"
+    scene.write_text("""[scene]\ntitle = "Press"\n[dynamics]\nrpm = 100\ndelta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]\ndriving = "constant"\ninertia = 0.0
+[dynamics.motor]\nkind = "kloss"\npower = 4000.0\noverload = 2.2\nsynchronous_rpm = 1500\nrated_rpm = 1440
+gear_ratio = 1e15\nrotor_inertia = 0.02
+""", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    error = capsys.readouterr().err.strip()
+    assert error.startswith(f"graphplan: error: dynamics: the equation of motion was evaluated {MOST_EVALUATIONS} "
+                            "times") and len(error.splitlines()) == 1
+    assert not out.exists()
 
 
 def test_run_down_after_switching_off_stops_at_the_closed_form_time():
