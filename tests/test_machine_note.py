@@ -157,3 +157,20 @@ def test_the_machine_note_is_in_the_scenes_language_with_every_value_filled_in(t
     assert "Balancing" not in note and "Vibration" not in note and "known by" not in note
     if locale == "ru":
         assert "0,26545 мм" in note  # the amplitude, with the Russian decimal comma
+
+
+def test_a_disc_is_balanced_statically_by_one_mass_that_closes_the_polygon(tmp_path):
+    disc = """[balancing]
+masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, name = "A" }, { mass = 3.0, radius = 0.08, angle = 150.0, name = "B" },
+           { mass = 1.5, radius = 0.12, angle = 260.0, name = "C" } ]
+correction_radius = 0.1
+"""
+    _, note = note_of(tmp_path, disc)
+    correction = -sum(m * r * cmath.exp(1j * math.radians(angle)) for m, r, angle in
+                      ((2.0, 0.1, 30.0), (3.0, 0.08, 150.0), (1.5, 0.12, 260.0)))
+    assert "Σ mi·ri + mb·rb = 0: mArA + mBrB + mCrC + mbrb = 0." in note
+    found = re.search(r"The closing vector mbrb = (\d+(?:\.\d+)?) kg·m at θ = (\d+(?:\.\d+)?)°, so that at r = 0.1 m "
+                      r"the correction mass is mb = [\d.]+/0.1 = (\d+(?:\.\d+)?) kg\.", note)
+    assert found and agrees(found.group(1), abs(correction)) and agrees(found.group(3), abs(correction) / 0.1)
+    assert agrees(found.group(2), math.degrees(cmath.phase(correction)) % 360, 4)
+    assert "Check: with the correction Σ m·r = 0 kg·m: the rotor is balanced statically." in note

@@ -55,8 +55,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         symbol = f"m{plane.name}" if vector == f"m{plane.name}r{plane.name}" else "mb"
         mass = "" if plane.mass is None else note.t("note_bal_mass", symbol=symbol, value=value,
                                                      radius=note.n(plane.radius), mass=note.n(plane.mass))
-        note.para(note.t("note_bal_plane", name=plane.name, equation=plane.equation, vector=vector,
-                         value=value, angle=note.n(plane.angle_deg, 4), mass=mass))
+        # A disc's one plane has its equation in the paragraph before.
+        note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=plane.name,
+                         equation=plane.equation, vector=vector, value=value, angle=note.n(plane.angle_deg, 4),
+                         mass=mass))
     if spec.dynamic:
         note.para(note.t("note_bal_residual", force=note.n(abs(result.residual_force)),
                          moment=note.n(abs(result.residual_moment))))
