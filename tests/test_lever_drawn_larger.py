@@ -15,7 +15,7 @@ import math
 import re
 
 import pytest
-from test_sheets import STANDARD, analyses_of
+from test_sheets import STANDARD, analyses_of, with_drawing
 
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
@@ -160,3 +160,21 @@ def test_the_note_works_the_lever_on_the_drawing_it_stands_beside(name):
     said = re.findall(r"The lever is drawn larger than the velocity plan, at μV = ([\d.]+) \(m/s\)/mm", note)
     assert [float(value) for value in said] == [scale for scale, position in zip(drawn, analysis.plans, strict=True)
                                                   if scale != position.velocity.scale]
+
+
+def test_a_force_sheet_cut_into_parts_all_the_same_keeps_a_larger_lever_on_its_part(monkeypatch):
+    # The offset slider-crank's force sheets stand on A3 in parts whatever the lever's size; the lever of
+    # position 10 then keeps a larger μV on its own part, as no more parts come of it.
+    analysis = with_drawing(analysis_of("offset_slider_crank"), sheet="A3")
+    panels = force_panels(analysis, "A3")
+    drawn = {}
+    for position in analysis.plans:
+        holding = [panel for panel in panels if re.fullmatch(rf"forces-{position.number}(-\d+)?", panel.name)
+                   and any(layer.name.endswith("lever-caption") for layer in panel.layers)]
+        drawn[position.number] = drawn_scale(holding[0].layers, position.velocity)[0]
+    larger = [position for position in analysis.plans if drawn[position.number] < position.velocity.scale]
+    assert larger, "some lever stands larger on its part"
+    for position in larger:
+        assert expected_scale(position.velocity) - 1e-15 <= drawn[position.number]
+    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity: None)
+    assert [panel.name for panel in force_panels(analysis, "A3")] == [panel.name for panel in panels]

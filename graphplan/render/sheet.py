@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import asdict, dataclass, field, replace
 
 from ..analysis import Analysis, PlanPosition
@@ -288,6 +288,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def fits(width: float, height: float) -> bool:
         return holds(sheet, form, width, height)
 
+    enlarged = drawn if _steps_to_plan_size(drawn) else None
     before: dict[str, tuple[float, float]] = {}
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn)
@@ -306,6 +307,14 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
         parts = rows.parts(fits)
         if parts is not None:
+            # Cut up all the same, the sheet may hold the lever larger on its part, where that adds no part.
+            for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
+                larger_rows = force_layout.rows(larger)
+                larger_parts = larger_rows.parts(fits)
+                if larger_parts is not None and len(larger_parts) == len(parts):
+                    drawn, parts = larger, larger_parts
+                    one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
+                    break
             panels = [split(arrangement, one.name if k == 0 else f"{one.name}-{k + 1}", one.label, _group_of_field)
                       for k, arrangement in enumerate(parts)]
             break
@@ -334,6 +343,14 @@ def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
     """The lever's μV a standard step smaller than ``drawn``'s enlarged one; None back at the plan's own."""
     smaller = next_standard_scale(drawn.lever_scale)
     return smaller if smaller < drawn.velocity.scale * (1.0 - 1e-9) else None
+
+
+def _larger_levers(enlarged: force_layout.ForceSheet, drawn: force_layout.ForceSheet) -> Iterator[force_layout.ForceSheet]:
+    """``drawn`` with its lever at ``enlarged``'s μV, then at each standard step down to just above the plan's."""
+    candidate = replace(drawn, lever_scale=enlarged.lever_scale)
+    while candidate.lever_scale is not None:
+        yield candidate
+        candidate = replace(candidate, lever_scale=_smaller_lever(candidate))
 
 
 def _steps_to_plan_size(drawn: force_layout.ForceSheet) -> int:
