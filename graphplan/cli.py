@@ -70,8 +70,8 @@ def _parser() -> argparse.ArgumentParser:
                      help="also draw the report figures with matplotlib (the same as adding 'figures' to --only)")
     check = commands.add_parser("check", help="validate a scene and print its structure formula")
     check.add_argument("scene", type=Path, help="the scene file (TOML)")
-    new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism")
-    new.add_argument("kind", choices=KINDS, help="the kind of mechanism")
+    new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine")
+    new.add_argument("kind", choices=KINDS, help="the kind of mechanism, or a flywheel or rotor without one")
     new.add_argument("--out", type=Path, default=None, help="the scene file to write (default: KIND.toml here)")
     return parser
 

@@ -4,8 +4,11 @@ from __future__ import annotations
 
 from importlib import resources
 
-# The kinds a newcomer starts from, each a scene under ``templates/``.
-KINDS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad")
+# The kinds a newcomer starts from, each a scene under ``templates/``: mechanisms, and machines known without
+# a linkage (a flywheel from its load diagrams, a rotor to balance on its mounts).
+MECHANISMS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad")
+MACHINES = ("flywheel", "rotor")
+KINDS = MECHANISMS + MACHINES
 
 
 def starter(kind: str) -> str:

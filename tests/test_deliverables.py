@@ -14,7 +14,7 @@ import pytest
 from test_scene_errors import to_toml
 
 from graphplan.cli import Progress, main
-from graphplan.starters import KINDS, starter
+from graphplan.starters import MECHANISMS, starter
 
 ROOT = Path(__file__).resolve().parent.parent
 RATCHET = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
@@ -124,7 +124,7 @@ def test_the_locale_option_turns_the_drawings_language(tmp_path):
     assert re.search(r"[\u4e00-\u9fff]", texts)
 
 
-@pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("kind", MECHANISMS)
 def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
     scene = tmp_path / f"{kind}.toml"
     assert main(["new", kind, "--out", str(scene)]) == 0
@@ -135,6 +135,27 @@ def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
     assert status == 0
     assert {"results.json", "positions.svg", "errors.md"} <= names(out)
     assert any(name.startswith("forces_") for name in names(out))
+
+
+@pytest.mark.parametrize(("kind", "drawings"), [
+    ("flywheel", {"dynamics.svg", "motion.svg"}),
+    ("rotor", {"rotor_balancing.svg", "vibration_magnification.svg", "vibration_transmissibility.svg"}),
+])
+def test_each_machine_starter_runs_without_a_linkage_and_explains_itself(tmp_path, kind, drawings, capsys):
+    scene = tmp_path / f"{kind}.toml"
+    assert main(["new", kind, "--out", str(scene)]) == 0
+    assert scene.read_text(encoding="utf-8") == starter(kind)
+    assert main(["check", str(scene)]) == 0
+    assert "no mechanism; " in capsys.readouterr().out
+    status, out = run(tmp_path, scene=scene)
+    assert status == 0
+    assert names(out) == {"results.json", "note.md", "note.html", "note.tex"} | drawings
+    note = (out / "note.md").read_text(encoding="utf-8")
+    if kind == "flywheel":
+        # The punching press of the published example: ΔWmax = 441.24 J, JF = 80.473 kg·m², 0.388 kg·m² at 1440 rpm.
+        assert "ΔWmax = 441.24 J" in note and "JF = 80.473 kg·m²" in note and "= 0.38808 kg·m²" in note
+    else:
+        assert "Check: with the corrections Σ m·r = 0 kg·m and Σ m·r·z = 0 kg·m²" in note
 
 
 def test_the_shaper_starter_runs_the_whole_course(tmp_path):
