@@ -319,8 +319,8 @@ def shaft_result():
 
 def test_each_polygon_is_drawn_to_scale_and_closes(shaft_result):
     layers = {layer.name: layer.items for layer in drawing.layout(shaft_result)}
-    scale = drawing.polygon_scale(shaft_result)
     for plane in shaft_result.planes:
+        scale = drawing.plane_scale(plane)
         arrows = {item.key: item for item in layers[f"plane-{plane.name}-vectors"] if isinstance(item, Arrow)}
         correction = arrows[f"plane-{plane.name}-m{plane.name}r{plane.name}"]
         drawn = [a for key, a in arrows.items() if key != correction.key]
@@ -339,11 +339,32 @@ def test_each_polygon_is_drawn_to_scale_and_closes(shaft_result):
         assert correction.stroke.colour != drawn[0].stroke.colour and correction.stroke.width > drawn[0].stroke.width
 
 
+def test_each_plane_is_drawn_at_the_standard_scale_that_makes_it_about_as_large_as_the_others():
+    # Three masses between planes L (0.04) and R (0.22): R carries small shares (its polygon some 0.4 kg·m
+    # across, L's 1.6), and at L's scale it shrank to a knot of its labels.
+    masses = [(18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08), (10.0, 0.04, 135.0, 0.16)]
+    result = balance(BalancingSpec([RotatingMass(*mass) for mass in masses], planes=(0.04, 0.22),
+                                   correction_radius=0.05))
+    standard = [mantissa * 10.0 ** power for power in range(-5, 3) for mantissa in (1, 2, 2.5, 4, 5)]
+    scales = []
+    for plane, share_of in zip(result.planes, (lambda z: (0.22 - z) / 0.18, lambda z: (z - 0.04) / 0.18),
+                               strict=True):
+        tips = np.cumsum([0j] + [m * r * cmath.exp(1j * math.radians(angle)) * share_of(z) for m, r, angle, z in masses])
+        extent = max(np.ptp(tips.real), np.ptp(tips.imag))
+        expected = min(value for value in standard if extent / value <= drawing.POLYGON_FIELD_MM * (1 + 1e-12))
+        assert drawing.plane_scale(plane) == pytest.approx(expected, rel=1e-12)
+        scales.append(expected)
+    assert scales[1] < scales[0] / 2  # R drawn finer: its polygon as large on the paper as L's within a step
+    written = [item.text for layer in drawing.layout(result) for item in layer.items if isinstance(item, Text)]
+    assert [f"μ = {scale:g} kg·m/mm" in written for scale in scales] == [True, True]
+
+
 def test_the_drawing_writes_its_scale_and_labels_that_do_not_overlap(shaft_result):
     layers = drawing.layout(shaft_result)
     texts = [item for layer in layers for item in layer.items if isinstance(item, Text)]
     written = [t.text for t in texts]
-    assert f"μ = {drawing.polygon_scale(shaft_result):g} kg·m/mm" in written
+    for plane in shaft_result.planes:
+        assert f"μ = {drawing.plane_scale(plane):g} kg·m/mm" in written
     assert "mLrL = 1.580 kg·m, θL = 137.4°" in written and "mR = 13.80 kg at rR = 0.05 m" in written
     for name in ("m1r1", "m2r2", "m3r3", "m4r4", "mLrL", "mRrR", "θL", "θR"):
         assert name in written

@@ -1,13 +1,16 @@
-"""The balancing polygons of a rotor, one per correction plane, side by side at one scale.
+"""The balancing polygons of a rotor, one per correction plane, side by side, each at its own scale.
 
 Each correction plane's polygon is drawn from its record
 (:class:`graphplan.rotor_balancing.CorrectionPlane`) as the student draws
 it: from the pole, the masses' mass-radius products (their shares in the
-plane) laid off head to tail at μ (kg·m per mm), each named beside its
+plane) laid off head to tail at the plane's μ (kg·m per mm, the standard
+scale that draws it about as large as the others: a plane near the masses'
+middle carries small shares and would shrink to a knot of labels at the
+other plane's scale), each named beside its
 middle; then the closing vector, the correction mb·rb, drawn thicker in
 red from the last tip back to the pole, with its angle θ measured from a
 dashed x-direction at its tail.  Under each polygon its caption: the plane,
-its vector equation, the correction's product, angle and mass.  The layout
+its scale, its vector equation, the correction's product, angle and mass.  The layout
 reads the record and computes no mechanics.  Every word and unit comes from
 ``text``, the ``bal_`` keys of a locale (:func:`graphplan.locale.strings`);
 English when none is given.
@@ -43,7 +46,7 @@ from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
 from .svg import to_svg
 
-# The largest polygon is drawn at a standard scale that makes it at most this wide or tall (mm).
+# Each polygon is drawn at the standard scale that makes it at most this wide or tall (mm).
 POLYGON_FIELD_MM = 90.0
 # Space between the polygons of two planes (mm).
 GAP_MM = 25.0
@@ -60,10 +63,9 @@ _ANGLE = Stroke(0.3, "#a83a1f")
 def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
     """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under."""
     words = {**strings("en"), **(text or {})}
-    scale = polygon_scale(result)
     layers: list[Layer] = []
     cursor = 0.0
-    panels = [_polygon(plane, scale, words, result.spec.dynamic) for plane in result.planes]
+    panels = [_polygon(plane, plane_scale(plane), words, result.spec.dynamic) for plane in result.planes]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
         width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in caption))
@@ -76,8 +78,7 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
         cursor += width + GAP_MM
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     layers.append(Layer("balancing-title", (
-        Text((left, top + 8.0 + CAPTION_LINE * TITLE_SIZE), words["bal_title"], TITLE_SIZE, "start", weight="bold"),
-        Text((left, top + 8.0), words["bal_scale"].format(value=format_scale(scale)), CAPTION_SIZE, "start"))))
+        Text((left, top + 8.0), words["bal_title"], TITLE_SIZE, "start", weight="bold"),)))
     return layers
 
 
@@ -86,13 +87,11 @@ def balancing_svg(result: BalancingResult, text: Mapping[str, str] | None = None
     return to_svg(layout(result, text))
 
 
-def polygon_scale(result: BalancingResult) -> float:
-    """μ (kg·m/mm): the standard scale at which the largest polygon fits :data:`POLYGON_FIELD_MM`."""
-    extent = 0.0
-    for plane in result.planes:
-        xs = [vertex.real for vertex in plane.vertices]
-        ys = [vertex.imag for vertex in plane.vertices]
-        extent = max(extent, max(xs) - min(xs), max(ys) - min(ys))
+def plane_scale(plane: CorrectionPlane) -> float:
+    """μ (kg·m/mm): the standard scale at which the plane's polygon fits :data:`POLYGON_FIELD_MM`."""
+    xs = [vertex.real for vertex in plane.vertices]
+    ys = [vertex.imag for vertex in plane.vertices]
+    extent = max(max(xs) - min(xs), max(ys) - min(ys))
     return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else 1.0
 
 
@@ -135,7 +134,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     layers = [Layer(f"{key}-reference", tuple(angle_marks)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
-    return key, layers, extent, _caption(plane, text, dynamic)
+    return key, layers, extent, _caption(plane, scale, text, dynamic)
 
 
 def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> list[Primitive]:
@@ -149,10 +148,10 @@ def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> 
     return marks
 
 
-def _caption(plane: CorrectionPlane, text: Mapping[str, str], dynamic: bool) -> tuple[str, ...]:
+def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], dynamic: bool) -> tuple[str, ...]:
     title = (text["bal_plane"].format(name=plane.name, position=_given(plane.position))
              if dynamic else text["bal_disc"].format(name=plane.name))
-    lines = [title, plane.equation,
+    lines = [title, text["bal_scale"].format(value=format_scale(scale)), plane.equation,
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
                                                  value=significant(plane.mass_radius), angle=f"{plane.angle_deg:.1f}")]
     if plane.mass is not None and plane.radius is not None:
@@ -177,4 +176,4 @@ def _id(name: str) -> str:
 
 
 
-__all__ = ["balancing_svg", "layout", "polygon_scale"]
+__all__ = ["balancing_svg", "layout", "plane_scale"]
