@@ -124,15 +124,22 @@ def test_the_locale_option_turns_the_drawings_language(tmp_path):
     assert re.search(r"[\u4e00-\u9fff]", texts)
 
 
-@pytest.mark.parametrize("kind", MECHANISMS)
-def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
+def new_checked_and_run(tmp_path, kind, capsys):
+    """``graphplan new KIND`` written as the starter, checked, and run: what check printed and the run's folder."""
     scene = tmp_path / f"{kind}.toml"
     assert main(["new", kind, "--out", str(scene)]) == 0
     assert scene.read_text(encoding="utf-8") == starter(kind)
     assert main(["check", str(scene)]) == 0
-    assert "structure:" in capsys.readouterr().out
+    checked = capsys.readouterr().out
     status, out = run(tmp_path, scene=scene)
     assert status == 0
+    return checked, out
+
+
+@pytest.mark.parametrize("kind", MECHANISMS)
+def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
+    checked, out = new_checked_and_run(tmp_path, kind, capsys)
+    assert "structure:" in checked
     assert {"results.json", "positions.svg", "errors.md"} <= names(out)
     assert any(name.startswith("forces_") for name in names(out))
 
@@ -142,13 +149,8 @@ def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
     ("rotor", {"rotor_balancing.svg", "vibration_magnification.svg", "vibration_transmissibility.svg"}),
 ])
 def test_each_machine_starter_runs_without_a_linkage_and_explains_itself(tmp_path, kind, drawings, capsys):
-    scene = tmp_path / f"{kind}.toml"
-    assert main(["new", kind, "--out", str(scene)]) == 0
-    assert scene.read_text(encoding="utf-8") == starter(kind)
-    assert main(["check", str(scene)]) == 0
-    assert "no mechanism; " in capsys.readouterr().out
-    status, out = run(tmp_path, scene=scene)
-    assert status == 0
+    checked, out = new_checked_and_run(tmp_path, kind, capsys)
+    assert "no mechanism; " in checked
     assert names(out) == {"results.json", "note.md", "note.html", "note.tex"} | drawings
     note = (out / "note.md").read_text(encoding="utf-8")
     if kind == "flywheel":

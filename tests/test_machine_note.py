@@ -15,6 +15,7 @@ from importlib import resources
 import numpy as np
 import pytest
 from scipy.optimize import brentq
+from test_dynamics_without_linkage import PRESS as PRESS_SCENE
 
 from graphplan.cli import main
 
@@ -34,17 +35,10 @@ damping_ratio = 0.1
 rpm = 600.0
 transmissibility = 0.2
 """
-# The punching press of the issue's worked example: driving power constant, 367.7 W for a third of the
-# cycle and 3677 W for two thirds, 100 rpm, δ = 0.05: ΔWmax = 441.24 J, JF = 80.473 kg·m², 0.388 kg·m² at 1440 rpm.
-PRESS = """\
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-driving = "constant"
-inertia = 0.0
-flywheel_shaft_rpm = 1440
-"""
+# The punching press of the issue's worked example (test_dynamics_without_linkage cites it): driving power constant,
+# 367.7 W for a third of the cycle and 3677 W for two thirds, 100 rpm, δ = 0.05: ΔWmax = 441.24 J, JF = 80.473 kg·m²,
+# 0.388 kg·m² at 1440 rpm.  Its tables without its [scene].
+PRESS = PRESS_SCENE[PRESS_SCENE.index("[dynamics]"):]
 
 
 def note_of(tmp_path, body, locale="en", extra=()):
