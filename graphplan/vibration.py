@@ -248,7 +248,8 @@ class VibrationSpec:
 
     ``unbalance`` is m·e (kg·m), ``damping_ratio`` ζ, ``omega`` the speed
     (rad/s); ``transmissibility`` a wanted TR to design an isolating mount
-    for, or None.
+    for, or None; ``base_amplitude`` Y (m) where the base itself moves as
+    y = Y·sin ωt (a floor shaken by the machines around), or None.
     """
 
     mass: float
@@ -257,12 +258,15 @@ class VibrationSpec:
     damping_ratio: float
     omega: float
     transmissibility: float | None = None
+    base_amplitude: float | None = None
 
     def __post_init__(self) -> None:
         for name in ("mass", "stiffness", "omega"):
             _array(name, getattr(self, name), least=0.0, strict=True)
         _array("unbalance", self.unbalance, least=0.0)
         _array("damping_ratio", self.damping_ratio, least=0.0)
+        if self.base_amplitude is not None:
+            _array("base_amplitude", self.base_amplitude, least=0.0, strict=True)
         if self.transmissibility is not None and not 0 < self.transmissibility < 1:
             raise ValueError(f"transmissibility: a wanted transmissibility must be in (0, 1) "
                              f"(got {self.transmissibility!r})")
@@ -284,6 +288,21 @@ class Response:
     transmitted_force: float
     isolation_ratio: float | None
     isolation_stiffness: float | None
+    base: BaseResponse | None = None
+
+
+@dataclass(frozen=True)
+class BaseResponse:
+    """The machine's steady motion where its base moves as y = Y·sin ωt (SI, the lag in radians).
+
+    ``amplitude`` X = Y·TR, lagging the base by ``phase``; ``relative``
+    Z = Y·r²/√((1 − r²)² + (2ζr)²), the mount's stroke.
+    """
+
+    base_amplitude: float
+    amplitude: float
+    phase: float
+    relative: float
 
 
 def steady_state(spec: VibrationSpec) -> Response:
@@ -295,19 +314,24 @@ def steady_state(spec: VibrationSpec) -> Response:
     exciting = spec.unbalance * spec.omega ** 2
     tr = transmissibility(r, zeta)
     wanted = spec.transmissibility
+    base = None if spec.base_amplitude is None else BaseResponse(
+        base_amplitude=spec.base_amplitude, amplitude=spec.base_amplitude * displacement_transmissibility(r, zeta),
+        phase=displacement_transmissibility_phase(r, zeta), relative=spec.base_amplitude * magnification)
     return Response(
         natural_frequency=omega_n, frequency_ratio=r, magnification=magnification,
         amplitude=spec.unbalance / spec.mass * magnification, phase=phase(r, zeta), exciting_force=exciting,
         transmissibility=tr, transmitted_force=exciting * tr,
         isolation_ratio=None if wanted is None else isolation_frequency_ratio(wanted, zeta),
-        isolation_stiffness=None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta))
+        isolation_stiffness=None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta),
+        base=base)
 
 
 def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
     """The steady vibration as the results file writes it: SI, angles in degrees, speeds also in rpm.
 
     ``amplitude`` (m), ``phase_deg`` and ``transmissibility`` are the
-    contract's keys; ``isolation`` appears when a transmissibility is wanted.
+    contract's keys; ``isolation`` appears when a transmissibility is wanted,
+    ``base_excitation`` when the base moves.
     """
     response = steady_state(spec)
     document: dict[str, Any] = {
@@ -327,6 +351,11 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
         document["isolation"] = {"transmissibility": spec.transmissibility,
                                  "frequency_ratio": response.isolation_ratio,
                                  "stiffness": response.isolation_stiffness}
+    if response.base is not None:
+        document["base_excitation"] = {"base_amplitude": response.base.base_amplitude,
+                                       "amplitude": response.base.amplitude,
+                                       "phase_deg": math.degrees(response.base.phase),
+                                       "relative_amplitude": response.base.relative}
     return document
 
 
@@ -339,7 +368,8 @@ def read_vibration(table: Table) -> VibrationSpec:
     ``mass``; ``unbalance`` (m·e) or ``unbalanced_mass`` and ``eccentricity``;
     ``stiffness`` or ``shaft = {modulus, second_moment or diameter, length,
     position, support}``; ``damping_ratio`` or ``damping`` (c; neither: 0);
-    ``omega`` or ``rpm``; ``transmissibility`` (wanted, optional).
+    ``omega`` or ``rpm``; ``transmissibility`` (wanted, optional);
+    ``base_amplitude`` (m, optional: the base moving at ω too).
     """
     mass = table.number("mass", positive=True)
     unbalance = _unbalance(table, mass)
@@ -347,6 +377,7 @@ def read_vibration(table: Table) -> VibrationSpec:
     omega = _speed(table)
     zeta = _damping(table, stiffness, mass)
     wanted = table.number("transmissibility", None, positive=True)
+    base = table.number("base_amplitude", None, positive=True)
     if wanted is not None and not wanted < 1:
         raise SceneError(table.where("transmissibility"), "must be below 1: a mount isolates only where TR < 1",
                          wanted)
@@ -355,7 +386,7 @@ def read_vibration(table: Table) -> VibrationSpec:
         raise SceneError(table.where("omega" if table.has("omega") else "rpm"),
                          "is the natural frequency and there is no damping: the amplitude has no bound")
     return VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega,
-                         transmissibility=wanted)
+                         transmissibility=wanted, base_amplitude=base)
 
 
 def _one_of(table: Table, first: str, second: str) -> str:
@@ -424,7 +455,7 @@ def _damping(table: Table, stiffness: float, mass: float) -> float:
     return table.number("damping_ratio", 0.0, non_negative=True)
 
 
-__all__ = ["Response", "VibrationSpec", "circular_second_moment", "critical_speed", "damping_from_phase", "damping_from_resonance",
+__all__ = ["BaseResponse", "Response", "VibrationSpec", "circular_second_moment", "critical_speed", "damping_from_phase", "damping_from_resonance",
            "damping_ratio", "displacement_transmissibility", "displacement_transmissibility_phase",
            "force_magnification", "isolation_frequency_ratio", "isolation_stiffness", "natural_frequency", "phase",
            "read_vibration", "shaft_stiffness", "steady_state", "transmissibility", "unbalance_magnification",

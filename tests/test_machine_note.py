@@ -7,6 +7,7 @@ moment balance as one linear system, not by the polygons), and the flywheel agai
 """
 
 import cmath
+import json
 import math
 import re
 import tomllib
@@ -168,3 +169,40 @@ correction_radius = 0.1
     assert found and agrees(found.group(1), abs(correction)) and agrees(found.group(3), abs(correction) / 0.1)
     assert agrees(found.group(2), math.degrees(cmath.phase(correction)) % 360, 4)
     assert "Check: with the correction Σ m·r = 0 kg·m: the rotor is balanced statically." in note
+
+
+def test_an_instrument_on_a_shaken_floor_moves_by_the_displacement_transmissibility(tmp_path):
+    floor = """[vibration]
+mass = 20.0
+unbalance = 0.0
+stiffness = 2.0e4
+damping_ratio = 0.05
+rpm = 1200
+base_amplitude = 0.0005
+"""
+    out, note = note_of(tmp_path, floor)
+    zeta, r, base = 0.05, (1200 * 2 * math.pi / 60) / math.sqrt(2.0e4 / 20.0), 0.0005
+    # The base's motion y = Y·sin ωt: M·x″ + c·(x′ − y′) + k·(x − y) = 0 solved as a complex amplitude.
+    response = (1 + 2j * zeta * r) / (1 - r * r + 2j * zeta * r)
+    machine, relative = base * abs(response), base * abs(response - 1)
+    lag = -math.degrees(cmath.phase(response))
+    found = re.search(r"moves the machine by X = .* = (\d+(?:\.\d+)?) m, lagging the base by (\d+(?:\.\d+)?)° .* "
+                      r"is Z = .* = (\d+(?:\.\d+)?) m\.", note)
+    assert found and agrees(found.group(1), machine) and agrees(found.group(2), lag, 4)
+    assert agrees(found.group(3), relative)
+    assert "stands on a base moving at ω = 125.66 rad/s (1200 rpm)" in note
+    assert "exciting force" not in note  # no unbalance to work out
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]["base_excitation"]
+    assert document["base_amplitude"] == base
+    assert document["amplitude"] == pytest.approx(machine, rel=1e-10)
+    assert document["relative_amplitude"] == pytest.approx(relative, rel=1e-10)
+    assert document["phase_deg"] == pytest.approx(lag, rel=1e-10)
+
+
+def test_a_base_amplitude_must_be_positive_and_is_named_where_it_is_not(tmp_path, capsys):
+    scene = tmp_path / "scene.toml"
+    scene.write_text(MOUNTS.join(['[scene]\ntitle = "A machine"\n', "base_amplitude = -0.001\n"]), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    assert "vibration.base_amplitude: must be > 0 (got -0.001)" in capsys.readouterr().err
+    assert not out.exists()

@@ -21,8 +21,9 @@ from graphplan.report.note import note_markdown
     (1.4503e-15, 5, "0"), (-6.4468e-14, 5, "0"), (1.49e-14, 3, "0"),
     (115860.2, 5, "115860"), (-868600.4, 5, "−868600"), (99999.6, 5, "100000"), (123456.7, 5, "123460"),
     (12.3456, 5, "12.346"), (-0.5, 3, "−0.5"), (0.00012345, 5, "0.00012345"),
+    (3.63616e-5, 5, "0.000036362"), (-1.2e-7, 5, "−0.00000012"),
 ])
-def test_noise_is_a_nought_and_a_large_number_is_written_whole(value, digits, written):
+def test_noise_is_a_nought_and_a_large_or_small_number_is_written_without_an_exponent(value, digits, written):
     assert number(value, digits) == written
     # Written whole, a large number keeps its digits' worth: it reads back within half its last place.
     if abs(value) >= 1e5:

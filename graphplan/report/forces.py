@@ -40,8 +40,9 @@ ROUNDING_NOISE = 1e-10
 def number(value: float, digits: int = 5, mark: str = ".") -> str:
     """``value`` to ``digits`` significant digits with a true minus sign and the locale's decimal mark.
 
-    A value of :data:`ROUNDING_NOISE` or less is 0; one of ``digits`` places before the point or more is
-    written whole, without an exponent (868600, not 8.686e+05).
+    A value of :data:`ROUNDING_NOISE` or less is 0; others are written without an exponent: one of
+    ``digits`` places before the point or more whole (868600, not 8.686e+05), a small one in decimals
+    (0.000036362, not 3.6362e−05).
     """
     if not math.isfinite(value):
         return "—"
@@ -50,6 +51,8 @@ def number(value: float, digits: int = 5, mark: str = ".") -> str:
     text = f"{value:.{digits}g}"
     if "e+" in text:
         text = f"{float(text):.0f}"
+    elif "e-" in text:
+        text = f"{float(text):.{digits - 1 - math.floor(math.log10(abs(float(text))))}f}".rstrip("0")
     text = "0" if text in ("-0", "0") else text.replace("-", "−")
     return text.replace(".", mark)
 

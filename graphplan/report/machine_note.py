@@ -67,21 +67,31 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
 
 
 def vibration_section(note: Writer, section: int, spec: VibrationSpec, response: Response) -> None:
-    """From the natural frequency to the amplitude, the force passed to the base, and the isolating mounts."""
+    """From the natural frequency to the amplitude, the force passed to the base, the motion a moving base gives,
+    and the isolating mounts."""
     note.heading(2, f"{section}. {note.t('note_vibration')}")
     mass, stiffness, omega = note.n(spec.mass), note.n(spec.stiffness), note.n(spec.omega)
     unbalance = note.n(spec.unbalance)
-    note.para(note.t("note_vib_model", mass=mass, stiffness=stiffness, zeta=note.n(spec.damping_ratio),
-                     unbalance=unbalance, omega=omega, rpm=note.n(spec.omega / RPM)))
+    # Balanced, on a moving base (an instrument on a shaken floor): no unbalance to work out.
+    balanced = spec.unbalance == 0 and response.base is not None
+    note.para(note.t("note_vib_model_base" if balanced else "note_vib_model", mass=mass, stiffness=stiffness,
+                     zeta=note.n(spec.damping_ratio), unbalance=unbalance, omega=omega, rpm=note.n(spec.omega / RPM)))
     natural = note.n(response.natural_frequency)
     note.para(note.t("note_vib_natural", stiffness=stiffness, mass=mass, value=natural,
                      rpm=note.n(response.natural_frequency / RPM), omega=omega, ratio=note.n(response.frequency_ratio)))
     magnification = note.n(response.magnification)
-    note.para(note.t("note_vib_amplitude", magnification=magnification, unbalance=unbalance, mass=mass,
-                     amplitude=note.n(response.amplitude), millimetres=note.n(response.amplitude * 1000.0),
-                     phase=note.n(math.degrees(response.phase), 4)))
-    note.para(note.t("note_vib_transmitted", unbalance=unbalance, omega=omega, force=note.n(response.exciting_force),
-                     tr=note.n(response.transmissibility), transmitted=note.n(response.transmitted_force)))
+    if not balanced:
+        note.para(note.t("note_vib_amplitude", magnification=magnification, unbalance=unbalance, mass=mass,
+                         amplitude=note.n(response.amplitude), millimetres=note.n(response.amplitude * 1000.0),
+                         phase=note.n(math.degrees(response.phase), 4)))
+        note.para(note.t("note_vib_transmitted", unbalance=unbalance, omega=omega,
+                         force=note.n(response.exciting_force), tr=note.n(response.transmissibility),
+                         transmitted=note.n(response.transmitted_force)))
+    if response.base is not None:
+        base = response.base
+        note.para(note.t("note_vib_base", base=note.n(base.base_amplitude), tr=note.n(response.transmissibility),
+                         amplitude=note.n(base.amplitude), phase=note.n(math.degrees(base.phase), 4),
+                         magnification=magnification, relative=note.n(base.relative)))
     if spec.transmissibility is not None and response.isolation_ratio is not None:
         ratio = note.n(response.isolation_ratio)
         note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=ratio, mass=mass,
