@@ -224,9 +224,14 @@ class CorrectionPlane:
         return abs(self.correction)
 
     @property
+    def needed(self) -> bool:
+        """Whether the plane needs a correction: the masses' shares do not close by themselves (but for rounding)."""
+        return self.mass_radius > NEGLIGIBLE * sum(abs(share) for share in self.shares)
+
+    @property
     def angle_deg(self) -> float:
         """The correction's angle in [0, 360) degrees; 0 where no correction is needed."""
-        if self.mass_radius <= NEGLIGIBLE * sum(abs(share) for share in self.shares):
+        if not self.needed:
             return 0.0
         angle = math.degrees(cmath.phase(self.correction)) % 360.0
         return 0.0 if angle >= 360.0 else angle

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Protocol
 
-from ..rotor_balancing import NEGLIGIBLE, BalancingResult
+from ..rotor_balancing import BalancingResult
 from ..vibration import RPM, Response, VibrationSpec
 
 
@@ -47,7 +47,7 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
     else:
         note.para(note.t("note_bal_static", equation=planes[0].equation))
     for plane in planes:
-        if plane.mass_radius <= NEGLIGIBLE * sum(abs(share) for share in plane.shares):
+        if not plane.needed:
             note.para(note.t("note_bal_none", name=plane.name))
             continue
         value, vector = note.n(plane.mass_radius), plane.vectors[-1].name
