@@ -21,9 +21,9 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from . import kinematic_diagrams
 from .analysis import Analysis
 from .errors import GraphplanError, SceneError
-from .kinematic_diagrams import interval_count
 from .locale import strings
 from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene
@@ -68,11 +68,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return 'needs a sheet format: drawing.sheet is "none"'
     if piece == "dynamics" and scene.dynamics is None:
         return "needs a [dynamics] table"
-    if piece == "diagrams":
-        if scene.positions.working is None:
-            return "needs the output link: positions.working"
-        if scene.driver is not None and interval_count(scene.driver.cyclic, scene.positions.count) < 3:
-            return "needs at least 3 intervals between positions for the chord method"
+    if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene)) is not None:
+        return reason
     if piece == "accuracy" and analysis.motion.singular:
         index = min(analysis.motion.singular)
         return (f"needs every position regular: position {analysis.positions.numbers[index]} is singular "

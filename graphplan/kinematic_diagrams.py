@@ -48,6 +48,7 @@ from .mechanism import Mechanism
 from .motion import Motion, solve
 from .positions import PositionSet, working_speed
 from .scales import fit_scale
+from .scene import Scene
 
 if TYPE_CHECKING:  # analysis comes later in the flow; only its type is named here
     from .analysis import Analysis
@@ -180,6 +181,15 @@ class KinematicDiagrams:
 def interval_count(cyclic: bool, count: int) -> int:
     """The intervals between ``count`` positions: as many over a closed cycle, one fewer over an open run."""
     return count if cyclic else count - 1
+
+
+def unavailable(scene: Scene) -> str | None:
+    """Why the scene's kinematic diagrams cannot be drawn, or None when they can."""
+    if scene.positions.working is None:
+        return "needs the output link: positions.working"
+    if scene.driver is not None and interval_count(scene.driver.cyclic, scene.positions.count) < 3:
+        return "needs at least 3 intervals between positions for the chord method"
+    return None
 
 
 def chord_derivative(values: np.ndarray, step: float) -> np.ndarray:

@@ -358,7 +358,8 @@ def test_a_plan_too_big_for_a_small_sheet_names_the_bigger_sheet_that_holds_it(a
 def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_scale_that_fits(
         monkeypatch, sheet, field):
     """The first choice fits the paths into the field; where that plan (or a plan sheet's mechanism) overflows
-    the sheet, the next standard values are tried, and the one taken is the first at which both fit."""
+    the sheet, the next standard values are tried, and the one that fits is the first at which both fit (the
+    one taken may be larger still, for fewer sheets)."""
     monkeypatch.setattr(drawings, "POSITIONS_FIELD_MM", field)
     scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
     scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet=sheet))
@@ -366,7 +367,8 @@ def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_s
     tracks = np.concatenate([np.atleast_1d(path.r) for path in analysis.paths.points.values()])
     span = max(np.ptp(tracks.real), np.ptp(tracks.imag))
     first = min(value for value in STANDARD if value >= span / field - 1e-15)
-    chosen = length_scale(analysis)
+    chosen = drawings.fitting_length_scale(analysis, sheet, first)
+    assert length_scale(analysis) >= chosen
     form = form_of(scene.locale)
     assert chosen >= first
     assert holds(sheet, form, *positions_size(analysis, chosen))
@@ -381,6 +383,34 @@ def test_without_a_length_scale_the_plan_of_positions_takes_the_least_standard_s
     # (the ratchet's group II(3,4) cut free is 258 mm wide at its μF: no A4 holds it).
     sheets = kinematics_sheet(kinematics_panels(analysis), sheet, scene.locale)
     assert all(inside(rect, sheet_.frame) for sheet_ in sheets for rect in sheet_.panels.values())
+
+
+@pytest.mark.parametrize("name", ["shaper_six_bar", "ratchet_crank_rocker", "triad_class_iii"])
+def test_without_a_length_scale_a_drawing_a_step_smaller_saves_sheets(name):
+    """Of the standard μl from the largest drawing that fits down to a plan of positions 150 mm across, the
+    one taken lays the set on the fewest A1 sheets, and of those it draws largest: each μl is counted here
+    by laying the whole set of sheets out at it."""
+    scene = graphplan.load(f"fixtures/{name}.toml")
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet="A1"))
+    analysis = analyse(scene)
+    tracks = np.concatenate([np.atleast_1d(path.r) for path in analysis.paths.points.values()])
+    span = max(np.ptp(tracks.real), np.ptp(tracks.imag))
+    largest = drawings.fitting_length_scale(analysis, "A1", min(value for value in STANDARD if value >= span / 200))
+    diagrams = (diagrams_panel(analysis, "A1"),) if scene.positions.working is not None else ()
+
+    def sheet_count(scale):
+        return len(course_sheets(drawings.at_length_scale(analysis, scale), diagrams=diagrams))
+
+    longest = max(positions_size(analysis, largest))
+    tried = [value for value in STANDARD if value >= largest and (value == largest or longest * largest / value >= 150)]
+    counts = {value: sheet_count(value) for value in tried}
+    chosen = length_scale(analysis)
+    assert chosen in tried
+    assert counts[chosen] == min(counts.values())
+    assert all(counts[value] > counts[chosen] for value in tried if value < chosen)
+    if name == "shaper_six_bar":  # 4 sheets at 0.004 m/mm, 3 a step smaller with its plan of positions 160 mm
+        assert chosen > largest
+        assert max(positions_size(analysis, chosen)) >= 150
 
 
 def test_panels_that_do_not_fit_one_sheet_spread_over_several():
@@ -414,6 +444,24 @@ def test_a_drawing_never_goes_back_before_an_earlier_drawing_of_its_kind():
     sheets = kinematics_sheet([box("positions", 600, 400), box("plan-5", 600, 400), box("plan-11", 180, 180),
                                box("diagrams", 180, 180)], "A1", "ru")
     assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-11", "plan-5"]]
+
+
+def test_a_sheet_is_arranged_afresh_where_only_that_makes_room():
+    """On an ESKD A1 (800 mm wide): a plan sheet as a 780 × 250 mm row leaves no room for 400 × 400 mm
+    diagrams beside or under it, but with its mechanism above its plans (380 × 520 mm) it leaves 405 mm
+    beside it: the two share the sheet, where without the other arrangement they took two."""
+    def box(name, width, height):
+        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
+
+    plan = dataclasses.replace(box("plan-5", 780, 250), alternatives=(box("plan-5", 380, 520),))
+    diagrams = box("diagrams", 400, 400)
+    sheets = kinematics_sheet([plan, diagrams], "A1", "ru")
+    assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "plan-5"]]
+    x0, y0, x1, y1 = sheets[0].panels["plan-5"]
+    assert (x1 - x0, y1 - y0) == pytest.approx((380, 520))
+    assert not overlap(sheets[0].panels["plan-5"], sheets[0].panels["diagrams"])
+    rows_only = kinematics_sheet([dataclasses.replace(plan, alternatives=()), diagrams], "A1", "ru")
+    assert [sorted(sheet.panels) for sheet in rows_only] == [["plan-5"], ["diagrams"]]
 
 
 def test_a4_stands_upright_when_that_fits_better():

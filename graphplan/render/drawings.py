@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import weakref
 from collections.abc import Mapping
 
 import numpy as np
@@ -34,7 +35,8 @@ _LARGER_SCALES_TRIED = 40
 def length_scale(analysis: Analysis) -> float:
     """μl from the scene; or the standard value that fits the paths of all points into the field, and the
     plan of positions and each plan sheet's mechanism on an empty sheet of the scene's format (a larger
-    standard value where 200 mm do not fit).
+    standard value where 200 mm do not fit), or a step or two larger where that lays the drawings on fewer
+    sheets (:func:`graphplan.render.sheet.fewest_sheets_length_scale`).
 
     Choosing lays the plan of positions out once or more: call :func:`with_length_scale` once before
     drawing several drawings of one analysis.
@@ -53,16 +55,32 @@ def length_scale(analysis: Analysis) -> float:
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
         return first
-    return fitting_length_scale(analysis, sheet, first)
+    key = id(analysis)
+    if key not in _chosen_scales:
+        # The sheets build on this module's drawings: imported here, where they are laid out at each μl tried.
+        from .sheet import fewest_sheets_length_scale
+
+        _chosen_scales[key] = fewest_sheets_length_scale(analysis, sheet, fitting_length_scale(analysis, sheet, first))
+        weakref.finalize(analysis, _chosen_scales.pop, key, None)
+    return _chosen_scales[key]
+
+
+# μl chosen for an analysis, by its id while it lives: the choice lays out every sheet at a few μl, and each
+# drawing of an analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
+_chosen_scales: dict[int, float] = {}
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:
     """The analysis with μl fixed in its scene as :func:`length_scale` chooses it, so that every drawing agrees."""
-    drawing = analysis.scene.drawing
-    if drawing.length_scale is not None:
+    if analysis.scene.drawing.length_scale is not None:
         return analysis
-    fixed = dataclasses.replace(drawing, length_scale=length_scale(analysis))
-    return dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, drawing=fixed))
+    return at_length_scale(analysis, length_scale(analysis))
+
+
+def at_length_scale(analysis: Analysis, scale: float) -> Analysis:
+    """The analysis with μl fixed at ``scale`` in its scene."""
+    return dataclasses.replace(analysis, scene=dataclasses.replace(
+        analysis.scene, drawing=dataclasses.replace(analysis.scene.drawing, length_scale=scale)))
 
 
 def positions_size(analysis: Analysis, scale: float) -> tuple[float, float]:
@@ -74,9 +92,7 @@ def positions_size(analysis: Analysis, scale: float) -> tuple[float, float]:
 def mechanism_size(analysis: Analysis, position: PlanPosition, scale: float) -> tuple[float, float]:
     """The width and height (mm) of the mechanism of a plan sheet, with its caption, drawn at μl = ``scale``:
     what stands on a sheet of the set when the plan sheet is cut into its drawings."""
-    at_scale = dataclasses.replace(analysis, scene=dataclasses.replace(
-        analysis.scene, drawing=dataclasses.replace(analysis.scene.drawing, length_scale=scale)))
-    return _drawing_size(plan_sheet(at_scale, position.index, position.velocity, position.acceleration), "mechanism")
+    return _drawing_size(plan_sheet(at_length_scale(analysis, scale), position.index, position.velocity, position.acceleration), "mechanism")
 
 
 def plan_size(analysis: Analysis, position: PlanPosition, kind: str, scale: float) -> tuple[float, float]:

@@ -20,7 +20,9 @@ format, but never on a sheet before one with a drawing of its kind (the
 plans of position 11 never come before those of position 5).  A plan sheet
 of one position stands as a row (mechanism, velocity plan, acceleration
 plan) wherever that fits, else with its mechanism above its plans or
-beside them, so that it may join a sheet with room of another shape; a
+beside them, so that it may join a sheet with room of another shape, and
+the drawings already on a sheet are arranged afresh in their other ways
+where only that makes room for the next (fewest changed first); a
 force sheet stands in one column of rows, else in two.  A panel too big for
 an empty sheet every way it may stand is placed part by part (a plan sheet
 of one position as its mechanism, velocity plan and acceleration plan; a
@@ -41,6 +43,8 @@ drawings were before sheets.
 
 from __future__ import annotations
 
+import contextlib
+import itertools
 import math
 import re
 from collections.abc import Callable, Iterator, Sequence
@@ -54,12 +58,14 @@ from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
 from .drawings import (
+    at_length_scale,
     fitting_length_scale,
     force_sheet,
     length_scale,
     plan_sheet,
     plan_size,
     positions_plan,
+    positions_size,
     with_length_scale,
 )
 from .formats import (
@@ -79,6 +85,9 @@ from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, b
 from .svg import to_svg
 from .title_block import Details, TitleBlockFields, form_of, labels, scale_text, title_block
 
+# A plan of positions drawn smaller than this (its longer side, mm) to save a sheet would run its outlines
+# and position numbers together: μl is made no larger for fewer sheets.
+LEAST_POSITIONS_MM = 150.0
 # Space between two drawings (mm).
 GAP_MM = 15.0
 # How far a centring mark reaches into the drawing area past the frame (ISO 5457, GB/T 14689).
@@ -370,6 +379,43 @@ def _drawn_at(panel: Panel, scale: float) -> Panel:
     """``panel``, its parts and its other arrangements marked as drawn at μl = ``scale``."""
     return replace(panel, parts=tuple(_drawn_at(part, scale) for part in panel.parts), length_scale=scale,
                    alternatives=tuple(_drawn_at(way, scale) for way in panel.alternatives))
+
+
+def fewest_sheets_length_scale(analysis: Analysis, sheet: str, largest: float) -> float:
+    """The standard μl, from ``largest`` (the largest drawing that fits) to a plan of positions
+    :data:`LEAST_POSITIONS_MM` across, that lays the kinematics and the force sheets on the fewest ``sheet`` s;
+    of those, the largest drawing.
+
+    A course project has its kinematics on one sheet and its force analysis
+    on the next where they fit: a drawing a step smaller is worth a sheet.
+    """
+    from ..kinematic_diagrams import unavailable
+
+    # Its lines shrink with μl, its words do not: the estimate errs on the small side.
+    longest = max(positions_size(analysis, largest))
+    candidates = [largest]
+    while longest * largest / next_standard_scale(candidates[-1]) >= LEAST_POSITIONS_MM:
+        candidates.append(next_standard_scale(candidates[-1]))
+    if len(candidates) == 1:
+        return largest
+    form = form_of(analysis.scene.locale)
+    diagrams: tuple[Panel, ...] = ()
+    if unavailable(analysis.scene) is None:
+        with contextlib.suppress(SceneError):  # the run that draws them says why they fit no sheet
+            diagrams = (diagrams_panel(analysis, sheet),)
+    fewest: tuple[int, float] | None = None
+    for scale in candidates:
+        try:
+            panels = course_panels(at_length_scale(analysis, scale), diagrams, sheet)
+            count = sum(len(_pack(drawings, sheet, form)) for drawings in (panels.kinematics, panels.forces)
+                        if drawings)
+        except SceneError:  # at this μl; the run at the μl chosen says why where none will do
+            continue
+        if fewest is None or count < fewest[0]:
+            fewest = (count, scale)
+        if fewest[0] == 1 + bool(panels.forces):
+            break  # no μl does better than one sheet of each kind
+    return largest if fewest is None else fewest[1]
 
 
 def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
@@ -748,6 +794,8 @@ class _Page:
     area: Rect
     placed: list[tuple[Panel, Rect, tuple[float, float]]] = field(default_factory=list)
     label: str = ""
+    # The drawings placed, each with every way it may stand, for the page to be laid out afresh.
+    drawings: list[Panel] = field(default_factory=list)
 
     def place(self, panel: Panel) -> bool:
         """Put ``panel``, arranged in the first of its ways that fits, where the drawings stay most compact,
@@ -765,6 +813,7 @@ class _Page:
         rect, way = found
         x0, _, _, y1 = way.extent
         self.placed.append((way, rect, (rect[0] - x0, rect[3] - y1)))
+        self.drawings.append(panel)
         return True
 
     def _best_spot(self, panel: Panel) -> Rect | None:
@@ -859,6 +908,8 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
         kind = _kind(panel)
         earliest = last_of_kind.get(kind, 0)
         room = next((k for k in range(earliest, len(pages)) if not pages[k].label and pages[k].place(panel)), None)
+        if room is None:
+            room = _room_by_rearranging(pages, earliest, panel)
         if room is not None:
             last_of_kind[kind] = room
             continue
@@ -874,6 +925,52 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
     for page in pages:
         _centre(page)
     return pages
+
+
+# The most arrangements of a page's drawings tried to make room for one more, fewest changed first: each
+# drawing may stand in any of its ways (a plan sheet's three), 3^k arrangements for k drawings; 81 try every
+# arrangement of four plan sheets.
+_MOST_REARRANGEMENTS = 81
+
+
+def _room_by_rearranging(pages: list[_Page], earliest: int, panel: Panel) -> int | None:
+    """The first page from ``earliest`` on that holds ``panel`` once its drawings are laid out afresh,
+    replaced in ``pages`` by its new layout; None when none does."""
+    for k in range(earliest, len(pages)):
+        fresh = None if pages[k].label else _rearranged(pages[k], panel)
+        if fresh is not None:
+            pages[k] = fresh
+            return k
+    return None
+
+
+def _rearranged(page: _Page, panel: Panel) -> _Page | None:
+    """``page`` laid out afresh with ``panel`` added, its drawings in other ways (a plan sheet with its
+    mechanism above its plans, say) where only that makes room; None when no arrangement does.
+
+    The arrangements that change fewest drawings are tried first, so that
+    drawings keep the way they were placed in where that costs no sheet.
+    """
+    drawings = [*page.drawings, panel]
+    choices = [[replace(way, alternatives=()) for way in drawing.ways] for drawing in drawings]
+    for picked in itertools.islice(_arrangements([len(ways) for ways in choices]), _MOST_REARRANGEMENTS):
+        fresh = _Page(page.size, page.frame, page.block, page.area)
+        if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
+            fresh.drawings = drawings
+            return fresh
+    return None
+
+
+def _arrangements(ways: Sequence[int]) -> Iterator[tuple[int, ...]]:
+    """Which way each drawing stands in (an index below its count in ``ways``), one drawing changed from its
+    first way, then two, and so on: the arrangement of all first ways, tried as the page was filled, is left out."""
+    for changed in range(1, len(ways) + 1):
+        for which in itertools.combinations(range(len(ways)), changed):
+            for others in itertools.product(*(range(1, ways[k]) for k in which)):
+                picked = [0] * len(ways)
+                for k, way in zip(which, others, strict=True):
+                    picked[k] = way
+                yield tuple(picked)
 
 
 def _kind(panel: Panel) -> str:
