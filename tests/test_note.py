@@ -410,3 +410,20 @@ def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
         lever = plan.lever_with_friction.balancing
         assert lever == pytest.approx(rubbing.balancing, rel=1e-9)
         assert f"Zhukovsky's lever with these loads gives Mb = {n(lever)} N·m" in note
+
+
+@pytest.mark.parametrize("given", [True, False])
+def test_the_initial_data_give_the_length_scale_the_plan_of_positions_is_drawn_at(given):
+    """μl stands among the initial data whether the scene gives it or the program chooses it for the sheets
+    (the shaper without μl on A1 is drawn a step smaller than its 200 mm field to save a sheet): the value
+    is the one the plan of positions writes under its title."""
+    from graphplan.render.drawings import positions_svg
+
+    scene = graphplan.load(FIXTURES / "shaper_six_bar.toml")
+    if not given:
+        scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None))
+    analysis = analyse(scene)
+    drawn = re.search(r"μl = ([\d.]+) m/mm", positions_svg(analysis)).group(1)
+    stated = re.search(r"^\| μl \| ([\d.]+) m/mm \|", note_markdown(analysis), re.MULTILINE).group(1)
+    assert stated == drawn
+    assert (float(drawn) == scene.drawing.length_scale) if given else float(drawn) > 0.0025

@@ -446,6 +446,21 @@ def test_a_drawing_never_goes_back_before_an_earlier_drawing_of_its_kind():
     assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-11", "plan-5"]]
 
 
+def test_on_a_sheet_too_the_plans_of_a_later_position_read_after_an_earlier_one():
+    """A tall narrow plan of positions and two 600 × 150 mm plan rows on an A1: the first row is most compact
+    under the plan of positions, and the second would fit only beside it, above the first; the first stands
+    its other way (400 × 250 mm) beside the plan of positions instead, and the second under both: the plans
+    of position 11 are read after those of position 5, lower down or all to the right."""
+    def box(name, width, height):
+        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
+
+    plan_5 = dataclasses.replace(box("plan-5", 600, 150), alternatives=(box("plan-5", 400, 250),))
+    sheets = kinematics_sheet([box("positions", 90, 250), plan_5, box("plan-11", 600, 150)], "A1", "ru")
+    assert len(sheets) == 1
+    first, second = sheets[0].panels["plan-5"], sheets[0].panels["plan-11"]
+    assert second[3] < first[3] or second[0] >= first[2]
+
+
 def test_a_sheet_is_arranged_afresh_where_only_that_makes_room():
     """On an ESKD A1 (800 mm wide): a plan sheet as a 780 × 250 mm row leaves no room for 400 × 400 mm
     diagrams beside or under it, but with its mechanism above its plans (380 × 520 mm) it leaves 405 mm

@@ -17,7 +17,8 @@ than :data:`PADDING_MM` to the frame and the title block; the drawings of
 a sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
 format, but never on a sheet before one with a drawing of its kind (the
-plans of position 11 never come before those of position 5).  A plan sheet
+plans of position 11 never come before those of position 5), nor on its
+sheet as high as one of its kind unless all to the right of it.  A plan sheet
 of one position stands as a row (mechanism, velocity plan, acceleration
 plan) wherever that fits, else with its mechanism above its plans or
 beside them, so that it may join a sheet with room of another shape, and
@@ -821,6 +822,8 @@ class _Page:
         x0, y0, x1, y1 = panel.extent
         width, height = x1 - x0, y1 - y0
         rects = [rect for _, rect, _ in self.placed]
+        kind = _kind(panel)
+        same_kind = [rect for placed, rect, _ in self.placed if _kind(placed) == kind]
         # Against the area's edges, beside or under another drawing, level with one, or just above the block.
         xs = {self.area[0], self.area[2] - width, *(r[2] + GAP_MM for r in rects),
               *(r[0] - GAP_MM - width for r in rects), *(r[0] for r in rects)}
@@ -831,7 +834,7 @@ class _Page:
         for top in tops:
             for left in xs:
                 rect = (left, top - height, left + width, top)
-                if not self._free(rect):
+                if not self._free(rect) or not all(_reads_after(rect, earlier) for earlier in same_kind):
                     continue
                 union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
                          max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
@@ -853,6 +856,16 @@ class _Page:
         if _overlap(rect, _grown(self.block, PADDING_MM)):
             return False
         return not any(_overlap(rect, _grown(other, GAP_MM - eps)) for _, other, _ in self.placed)
+
+
+def _reads_after(rect: Rect, earlier: Rect) -> bool:
+    """Whether a drawing at ``rect`` is read after one at ``earlier``: its top lower, or all of it to the right
+    (the next in a row, or the top of the next column).
+
+    The plans of position 11 stand after those of position 5 on a sheet
+    too, as the sheets keep them in order.
+    """
+    return rect[0] >= earlier[2] - 1e-6 or rect[3] < earlier[3] - 1e-6
 
 
 def _overlap(a: Rect, b: Rect) -> bool:

@@ -24,6 +24,7 @@ tables of errors and of the force analysis are the ones ``errors.md`` and
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
 import re
@@ -34,8 +35,10 @@ import numpy as np
 
 from ..analysis import Analysis, PlanPosition
 from ..check import Reading
+from ..errors import SceneError
 from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
+from ..render.drawings import length_scale
 from ..render.forces import enlarged_lever_scale
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
@@ -234,8 +237,10 @@ class _Note:
         else:
             rows.append([f"V{driver.joint}", f"{self.n(driver.velocity)} {self.text['unit_m_per_s']}"])
             rows.append([f"a{driver.joint}", f"{self.n(driver.acceleration)} {self.text['unit_m_per_s2']}"])
-        if scene.drawing.length_scale is not None:
-            scale = format_scale(scene.drawing.length_scale).replace(".", self.mark)
+        # The μl the drawings are drawn at, the scene's or the one chosen for its sheets; left out where no
+        # sheet holds them at any μl (the drawings, not the note, say so).
+        with contextlib.suppress(SceneError):
+            scale = format_scale(length_scale(self.analysis)).replace(".", self.mark)
             rows.append(["μl", f"{scale} {self.text['unit_length_scale']}"])
         self.table(self.t("note_initial_data_caption"), [self.t("column_quantity"), self.t("column_value")], rows)
         turns = self.analysis.positions.stroke_turns(driver.sense)
