@@ -413,6 +413,11 @@ def test_without_a_length_scale_a_drawing_a_step_smaller_saves_sheets(name):
         assert max(positions_size(analysis, chosen)) >= 150
 
 
+def box(name, width, height):
+    """A drawing that is only its outline, ``width`` × ``height`` mm, named as a drawing of the set."""
+    return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
+
+
 def test_panels_that_do_not_fit_one_sheet_spread_over_several():
     """Six 300 × 200 mm drawings need two A1 sheets: four fit beside the title block on one."""
     drawing = [Layer("box", (Polyline(((0, 0), (300, 0), (300, 200), (0, 200)), closed=True),))]
@@ -426,9 +431,6 @@ def test_a_drawing_fills_a_gap_on_an_earlier_sheet():
     """On an ESKD A1 (800 × 513 mm above the title block): a 600 × 400 drawing leaves 185 mm beside it, a
     780 × 400 one goes on a second sheet and leaves too little round it; a 180 × 180 drawing then goes beside
     the first, not on a third sheet."""
-    def box(name, width, height):
-        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
-
     sheets = kinematics_sheet([box("positions", 600, 400), box("plan-5", 780, 400), box("diagrams", 180, 180)],
                               "A1", "ru")
     assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-5"]]
@@ -438,9 +440,6 @@ def test_a_drawing_never_goes_back_before_an_earlier_drawing_of_its_kind():
     """Two 600 × 400 drawings on two A1 sheets, each with 185 mm beside it: the second position's small plans
     would fit beside the plan of positions but go beside the first position's, after them; the diagrams still
     fill the gap the plans left."""
-    def box(name, width, height):
-        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
-
     sheets = kinematics_sheet([box("positions", 600, 400), box("plan-5", 600, 400), box("plan-11", 180, 180),
                                box("diagrams", 180, 180)], "A1", "ru")
     assert [sorted(sheet.panels) for sheet in sheets] == [["diagrams", "positions"], ["plan-11", "plan-5"]]
@@ -451,9 +450,6 @@ def test_on_a_sheet_too_the_plans_of_a_later_position_read_after_an_earlier_one(
     under the plan of positions, and the second would fit only beside it, above the first; the first stands
     its other way (400 × 250 mm) beside the plan of positions instead, and the second under both: the plans
     of position 11 are read after those of position 5, lower down or all to the right."""
-    def box(name, width, height):
-        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
-
     plan_5 = dataclasses.replace(box("plan-5", 600, 150), alternatives=(box("plan-5", 400, 250),))
     sheets = kinematics_sheet([box("positions", 90, 250), plan_5, box("plan-11", 600, 150)], "A1", "ru")
     assert len(sheets) == 1
@@ -465,9 +461,6 @@ def test_a_sheet_is_arranged_afresh_where_only_that_makes_room():
     """On an ESKD A1 (800 mm wide): a plan sheet as a 780 × 250 mm row leaves no room for 400 × 400 mm
     diagrams beside or under it, but with its mechanism above its plans (380 × 520 mm) it leaves 405 mm
     beside it: the two share the sheet, where without the other arrangement they took two."""
-    def box(name, width, height):
-        return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))
-
     plan = dataclasses.replace(box("plan-5", 780, 250), alternatives=(box("plan-5", 380, 520),))
     diagrams = box("diagrams", 400, 400)
     sheets = kinematics_sheet([plan, diagrams], "A1", "ru")

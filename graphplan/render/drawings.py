@@ -31,6 +31,10 @@ LARGEST_PAPER_MM = 5000.0
 # Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
 _LARGER_SCALES_TRIED = 40
 
+# μl chosen for an analysis, by its id while it lives: the choice lays out every sheet at a few μl, and each
+# drawing of an analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
+_chosen_scales: dict[int, float] = {}
+
 
 def length_scale(analysis: Analysis) -> float:
     """μl from the scene; or the standard value that fits the paths of all points into the field, and the
@@ -38,8 +42,8 @@ def length_scale(analysis: Analysis) -> float:
     standard value where 200 mm do not fit), or a step or two larger where that lays the drawings on fewer
     sheets (:func:`graphplan.render.sheet.fewest_sheets_length_scale`).
 
-    Choosing lays the plan of positions out once or more: call :func:`with_length_scale` once before
-    drawing several drawings of one analysis.
+    Choosing lays the sheets out at a few μl, once for each analysis; :func:`with_length_scale` fixes the
+    choice in a copy of the analysis for the drawings of a run.
     """
     given = analysis.scene.drawing.length_scale
     tracks = np.concatenate([np.atleast_1d(p.r) for p in analysis.paths.points.values()])
@@ -63,11 +67,6 @@ def length_scale(analysis: Analysis) -> float:
         _chosen_scales[key] = fewest_sheets_length_scale(analysis, sheet, fitting_length_scale(analysis, sheet, first))
         weakref.finalize(analysis, _chosen_scales.pop, key, None)
     return _chosen_scales[key]
-
-
-# μl chosen for an analysis, by its id while it lives: the choice lays out every sheet at a few μl, and each
-# drawing of an analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
-_chosen_scales: dict[int, float] = {}
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:
