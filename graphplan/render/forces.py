@@ -165,6 +165,16 @@ class ForceSheet:
     caption_size: float = CAPTION_SIZE
 
     @property
+    def lever_drawn_scale(self) -> float:
+        """μV the lever is drawn at: its own where it has one, else the velocity plan's."""
+        return self.velocity.scale if self.lever_scale is None else self.lever_scale
+
+    @property
+    def lever_enlarged(self) -> bool:
+        """Whether the lever is drawn larger than its velocity plan."""
+        return draws_larger(self.lever_drawn_scale, self.velocity.scale)
+
+    @property
     def lever_scale_line(self) -> str:
         """The line of μV the lever is drawn at."""
         if self.lever_scale is None:
@@ -778,14 +788,19 @@ def enlarged_lever_scale(velocity: Plan) -> float | None:
     if closest >= LEVER_CROWDED_MM:
         return None
     larger = fit_scale(max(abs(value) for value in velocity.points.values()), LEVER_LONGEST_RAY_MM)
-    return larger if larger < velocity.scale * (1.0 - 1e-9) else None
+    return larger if draws_larger(larger, velocity.scale) else None
+
+
+def draws_larger(scale: float, than: float) -> bool:
+    """Whether the scale factor ``scale`` draws larger than ``than``, by more than rounding."""
+    return scale < than * (1.0 - 1e-9)
 
 
 def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     """The velocity plan turned 90° clockwise about the pole p, the loads at the images of their points."""
     text = sheet.text
     velocity = sheet.velocity
-    drawn_at = velocity.scale if sheet.lever_scale is None else sheet.lever_scale
+    drawn_at = sheet.lever_drawn_scale
 
     def mm(letter: str) -> complex:
         return turned(velocity.points[letter]) / drawn_at
@@ -943,4 +958,4 @@ def group_id(label: str) -> str:
     return svg_id(label).strip("-")
 
 
-__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "group_id", "layout", "rows", "svg_id"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "rows", "svg_id"]

@@ -298,7 +298,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def fits(width: float, height: float) -> bool:
         return holds(sheet, form, width, height)
 
-    enlarged = drawn if _steps_to_plan_size(drawn) else None
+    enlarged = drawn if drawn.lever_enlarged else None
     before: dict[str, tuple[float, float]] = {}
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn)
@@ -311,7 +311,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         if any(fits(_width(way), _height(way)) for way in panels[0].ways):
             break
         # A lever drawn larger than its plan gives the room back, a step at a time, before the sheet is cut up.
-        if _steps_to_plan_size(drawn):
+        if drawn.lever_enlarged:
             drawn = replace(drawn, lever_scale=_smaller_lever(drawn))
             continue
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
@@ -341,7 +341,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             drawn = replace(
                 drawn,
                 length_scale=next_standard_scale(drawn.length_scale) if bodies else drawn.length_scale,
-                lever_scale=next_standard_scale(drawn.lever_scale or drawn.velocity.scale) if lever else drawn.lever_scale)
+                lever_scale=next_standard_scale(drawn.lever_drawn_scale) if lever else drawn.lever_scale)
         else:
             break
     if drawn.length_scale == length_scale(analysis):
@@ -351,8 +351,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
 
 def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
     """The lever's μV a standard step smaller than ``drawn``'s enlarged one; None back at the plan's own."""
-    smaller = next_standard_scale(drawn.lever_scale)
-    return smaller if smaller < drawn.velocity.scale * (1.0 - 1e-9) else None
+    smaller = next_standard_scale(drawn.lever_drawn_scale)
+    return smaller if force_layout.draws_larger(smaller, drawn.velocity.scale) else None
 
 
 def _larger_levers(enlarged: force_layout.ForceSheet, drawn: force_layout.ForceSheet) -> Iterator[force_layout.ForceSheet]:
@@ -366,7 +366,7 @@ def _larger_levers(enlarged: force_layout.ForceSheet, drawn: force_layout.ForceS
 def _steps_to_plan_size(drawn: force_layout.ForceSheet) -> int:
     """How many standard steps ``drawn``'s lever is drawn larger than its velocity plan."""
     steps = 0
-    while drawn.lever_scale is not None and drawn.lever_scale < drawn.velocity.scale * (1.0 - 1e-9):
+    while drawn.lever_enlarged:
         drawn, steps = replace(drawn, lever_scale=_smaller_lever(drawn)), steps + 1
     return steps
 
