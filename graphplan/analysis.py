@@ -10,7 +10,7 @@ import contextlib
 import functools
 import math
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -24,13 +24,17 @@ from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .mechanism import Mechanism, build
 from .motion import Motion, PositionWarning, solve, toggles_between
-from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, velocity_plan
+from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions, reach
+from .scales import standard_scale
 from .scene import Scene
 from .statics import Equilibrium, equilibrium, pairs
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
 PATH_SAMPLES = 360
+# The field (mm) the largest of the velocity plans of every position fits at their μV, when the scene fixes
+# none: smaller than a plan sheet's 150 mm, so that twelve stand in a grid on a sheet.
+VELOCITY_PLANS_FIELD_MM = 120.0
 
 
 @dataclass(frozen=True)
@@ -57,6 +61,23 @@ class PlanPosition:
 
 
 @dataclass(frozen=True)
+class VelocityPosition:
+    """The velocity plan of one position listed in ``positions.velocity_plans``, its readings and errors."""
+
+    number: int
+    index: int
+    positions: dict[str, complex]
+    directions: dict[int, complex]
+    velocity: Plan
+    readings: tuple[Reading, ...]
+    errors: tuple[ErrorRow, ...]
+
+    @property
+    def plans(self) -> dict[str, Plan]:
+        return {"velocity": self.velocity}
+
+
+@dataclass(frozen=True)
 class Analysis:
     scene: Scene
     mechanism: Mechanism
@@ -70,6 +91,15 @@ class Analysis:
     equilibrium: Equilibrium | None = None
     with_friction: Equilibrium | None = None
     friction: tuple[FrictionPair, ...] = ()
+    velocity_plans: tuple[VelocityPosition, ...] = ()
+
+    @property
+    def errors(self) -> tuple[ErrorRow, ...]:
+        """Every error row of the run: the plan positions', then those of the velocity plans of the other
+        positions (a plan position's velocities are read off its plan sheet's plan, drawn larger)."""
+        planned = {plan.number for plan in self.plans}
+        return (*(row for plan in self.plans for row in plan.errors),
+                *(row for position in self.velocity_plans if position.number not in planned for row in position.errors))
 
 
 @contextlib.contextmanager
@@ -134,16 +164,67 @@ def analyse(scene: Scene) -> Analysis:
         balance = equilibrium(mechanism, motion, loads)
         if friction:
             with_friction = equilibrium(mechanism, motion, loads, friction)
+    every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     in_order = tuple(sorted(motion.warnings + stepped_over, key=lambda warning: warning.position))
-    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans, in_order + warnings,
-                    loads, balance, with_friction, friction)
+    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
+                    in_order + warnings + tuple(unplanned),
+                    loads, balance, with_friction, friction, every)
 
 
 def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:
     """The drawing of the mechanism at one position: where its points are, how its links lie."""
     return ({name: complex(at(point.r, index)) for name, point in motion.points.items()},
             {number: complex(at(link.u, index)) for number, link in motion.links.items()})
+
+
+def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[VelocityPosition, ...], list[PositionWarning]]:
+    """The velocity plans of every position of ``positions.velocity_plans``, all at one μV.
+
+    A course project draws them smaller than the plans of its plan sheets, at
+    one scale: μV is fixed by ``drawing.velocity_plans_pole`` (the mm drawn
+    for the driver's velocity), else the standard scale at which the largest
+    plan fits :data:`VELOCITY_PLANS_FIELD_MM`.  A singular position gets no
+    plan and, unless a plan position reports it, a warning.
+    """
+    scene = mechanism.scene
+    found, warnings = [], []
+    for number in scene.positions.velocity_plans:
+        index = int(number - scene.positions.number_from)
+        if index in motion.singular:  # already among the motion's warnings
+            continue
+        where, directions = instant(motion, index)
+        try:
+            found.append((number, index, where, directions, velocity_plan(mechanism, where, directions)))
+        except ParallelLinesError as error:
+            if number not in scene.positions.plans:
+                warnings.append(PositionWarning(index, "singular", f"no velocity plan: {error}"))
+    if not found:
+        return (), warnings
+    pole = scene.drawing.velocity_plans_pole
+    if pole is not None:
+        scale = max(abs(plan.value(mechanism.driver.joint)) for *_, plan in found) / pole
+    else:
+        scale = standard_scale(max(spread(plan) for *_, plan in found) / VELOCITY_PLANS_FIELD_MM)
+    every = []
+    for number, index, where, directions, velocity in found:
+        velocity = replace(velocity, scale=scale)
+        plans = {"velocity": velocity}
+        table = readings(mechanism, plans, where)
+        rows = error_rows(number, _exact_values(mechanism, motion, table, index), plans, table,
+                          scene.drawing.drafting_precision)
+        every.append(VelocityPosition(number, index, where, directions, velocity, tuple(table), tuple(rows)))
+    return tuple(every), warnings
+
+
+def _exact_values(mechanism: Mechanism, motion: Motion, table: list[Reading], index: int) -> dict[str, float]:
+    """The analytic value at position ``index`` of every quantity ``table`` reads off the plans."""
+    return analytic_values(
+        mechanism, table,
+        {name: complex(at(p.v, index)) for name, p in motion.points.items()},
+        {name: complex(at(p.a, index)) for name, p in motion.points.items()},
+        {n: float(at(link.omega, index)) for n, link in motion.links.items()},
+        {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
 
 
 def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting: np.ndarray | None,
@@ -169,12 +250,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             continue
         plans = {"velocity": velocity, "acceleration": acceleration}
         table = readings(mechanism, plans, where)
-        exact = analytic_values(
-            mechanism, table,
-            {name: complex(at(p.v, index)) for name, p in motion.points.items()},
-            {name: complex(at(p.a, index)) for name, p in motion.points.items()},
-            {n: float(at(link.omega, index)) for n, link in motion.links.items()},
-            {n: float(at(link.epsilon, index)) for n, link in motion.links.items()})
+        exact = _exact_values(mechanism, motion, table, index)
         measured = dict(scene.measured.get(number, {}))
         measured_forces = measured.pop("forces", None)
         if measured_forces and acting is None:

@@ -93,10 +93,15 @@ class ErrorRow:
 
 
 def readings(mechanism: Mechanism, plans: Mapping[str, Plan], positions: Mapping[str, complex]) -> list[Reading]:
-    """Every quantity the plans give, in textbook order: absolute, relative, sliding, then angular."""
+    """Every quantity the plans give, in textbook order: absolute, relative, sliding, then angular.
+
+    ``plans`` has the velocity plan and, where one was drawn, the acceleration plan.
+    """
     result: list[Reading] = []
     frame = set(mechanism.scene.frame_points)
     for kind, symbol in (("velocity", "V"), ("acceleration", "a")):
+        if kind not in plans:
+            continue
         plan = plans[kind]
         moving = [name for name in plan.images if name not in frame and name in positions]
         result += [Reading(f"{symbol}{name}", kind, ("p", plan.images[name])) for name in moving]

@@ -40,6 +40,7 @@ ON_REQUEST = ("figures", "accuracy")
 _NO_LINKAGE = "needs a mechanism: the scene has no [frame] and [driver]"
 _NO_LOADS = "needs masses or loads: the scene has neither ([links.N] mass, [[loads]])"
 _NO_PLANS = "needs plan positions: positions.plans lists none"
+_NO_VELOCITY_PLANS = "needs plan positions: positions.plans and positions.velocity_plans list none"
 
 
 @dataclass(frozen=True)
@@ -75,7 +76,9 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return (f"needs every position regular: position {analysis.positions.numbers[index]} is singular "
                 "and has no reference solution")
     has_plans = bool(analysis.plans)
-    if piece in ("velocity", "acceleration", "errors", "forces", "lever") and not has_plans:
+    if piece in ("velocity", "errors") and not has_plans and not analysis.velocity_plans:
+        return _NO_VELOCITY_PLANS
+    if piece in ("acceleration", "forces", "lever") and not has_plans:
         return _NO_PLANS
     if piece in ("forces", "lever") and not any(plan.forces is not None for plan in analysis.plans):
         return _NO_LOADS
@@ -141,6 +144,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     from .render import drawings as draw
     from .render import plans as plan_layout
     from .render import positions as positions_layout
+    from .render import velocity_plans as velocity_plans_layout
 
     found: list[Drawing] = []
     analysis = draw.with_length_scale(analysis)
@@ -168,6 +172,10 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
 
         for sheet in course_sheets(analysis, panels=panels):
             found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
+    if "velocity" in pieces and analysis.velocity_plans:
+        laid_out = panels.named("velocity-plans") if panels else None
+        layers = list(laid_out.layers) if laid_out else velocity_plans_layout.layout(draw.velocity_plans_drawing(analysis))
+        found.append(Drawing("velocity_plans", layers))
     shown = tuple(name for name in ("velocity", "acceleration") if name in pieces)
     for plan in analysis.plans:
         if shown:

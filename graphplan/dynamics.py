@@ -28,8 +28,9 @@ scene gives both, one side is taken constant so that the work over the cycle bal
 textbook takes the motor's moment constant: the driving moment when the scene gives no driving
 load, the resisting moment (the weights kept) when it gives no resisting one.
 
-The reduction is also made from the velocity plans of the plan positions (ratios read off the
-plans), so that the two can be compared (:class:`PlanReduction`).
+The reduction is also made from the velocity plans of the plan positions and of the positions of
+``positions.velocity_plans`` (ratios read off the plans), so that the two can be compared
+(:class:`PlanReduction`).
 """
 
 from __future__ import annotations
@@ -375,7 +376,8 @@ def _with_net_zeros(x: np.ndarray, drive: np.ndarray, resist: np.ndarray) -> tup
 
 
 def plan_reductions(analysis: Analysis) -> tuple[PlanReduction, ...]:
-    """Je and Me at each plan position from its velocity plan, beside the analytic values there."""
+    """Je and Me from the velocity plan of each plan position and of each position of
+    ``positions.velocity_plans``, beside the analytic values there, in the order of the positions."""
     mechanism, motion = analysis.mechanism, analysis.motion
     driver = mechanism.driver
     velocity = driver.omega if driver.kind == "crank" else driver.velocity
@@ -384,14 +386,18 @@ def plan_reductions(analysis: Analysis) -> tuple[PlanReduction, ...]:
     exact_state = motion_state(motion)
     exact_inertia = sum(_link_inertia(mechanism, exact_state, velocity, motion.count).values(), np.zeros(motion.count))
     exact_power = sum(_powers(mechanism, exact_state, acting, motion.count))
+    # A plan sheet's velocity plan, drawn larger, where a position has one; else its velocity plan of every
+    # position.  Only velocities enter: no acceleration is read.
+    drawn = {position.index: position for position in analysis.velocity_plans}
+    drawn.update({plan.index: plan for plan in analysis.plans})
     found = []
-    for plan in analysis.plans:
-        state = plan_state(mechanism, plan.positions, plan.velocity, plan.acceleration)
-        column = acting[:, plan.index:plan.index + 1]
+    for index, plan in sorted(drawn.items()):
+        state = plan_state(mechanism, plan.positions, plan.velocity, None)
+        column = acting[:, index:index + 1]
         inertia = float(sum(_link_inertia(mechanism, state, velocity, 1).values(), np.zeros(1))[0])
         moment = float(sum(_powers(mechanism, state, column, 1))[0]) / speed
-        found.append(PlanReduction(plan.number, plan.index, float(motion.driver[plan.index]), inertia, moment,
-                                   float(exact_inertia[plan.index]), float(exact_power[plan.index]) / speed))
+        found.append(PlanReduction(plan.number, index, float(motion.driver[index]), inertia, moment,
+                                   float(exact_inertia[index]), float(exact_power[index]) / speed))
     return tuple(found)
 
 

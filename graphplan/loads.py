@@ -56,11 +56,25 @@ def motion_state(motion: Motion) -> State:
     return State(motion.points, motion.links, {slide.slider: slide.velocity * slide.u for slide in motion.slides})
 
 
-def plan_state(mechanism: Mechanism, positions: Mapping[str, complex], velocity: Plan, acceleration: Plan) -> State:
-    """The state of one instant as read off its plans: velocities, accelerations, ω and ε of the plans."""
-    points = {name: PointMotion(position, velocity.value(name), acceleration.value(name))
-              for name, position in positions.items() if name in velocity.images and name in acceleration.images}
-    links: dict[int, Turning] = {number: Rates(velocity.rates.get(number, 0.0), acceleration.rates.get(number, 0.0))
+def plan_state(mechanism: Mechanism, positions: Mapping[str, complex], velocity: Plan,
+               acceleration: Plan | None) -> State:
+    """The state of one instant as read off its plans: velocities, accelerations, ω and ε of the plans.
+
+    Without an acceleration plan (a velocity plan of every position) no
+    acceleration is known: they stand as zero, so that the state serves the
+    powers of the loads and the kinetic energy (the equivalent model), never
+    an inertia load.
+    """
+    def accelerated(name: str) -> complex:
+        return 0j if acceleration is None else acceleration.value(name)
+
+    def epsilon(number: int) -> float:
+        return 0.0 if acceleration is None else acceleration.rates.get(number, 0.0)
+
+    points = {name: PointMotion(position, velocity.value(name), accelerated(name))
+              for name, position in positions.items()
+              if name in velocity.images and (acceleration is None or name in acceleration.images)}
+    links: dict[int, Turning] = {number: Rates(velocity.rates.get(number, 0.0), epsilon(number))
                                  for number in mechanism.moving_links}
     links[mechanism.scene.frame_link] = Rates(0.0, 0.0)
     sliding = dict(velocity.sliding)

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Literal, get_args
 
 from .geometry import (
@@ -427,13 +427,18 @@ def _finish(board: Builder, rates: dict[int, float], scale: float | None, mechan
         scale = given
     if scale is None and pole_mm is not None and abs(board.image(mechanism.driver.joint)) > 0:
         scale = abs(board.image(mechanism.driver.joint)) / pole_mm
-    if scale is None:
-        extent = max(abs(a - b) for a in board.points.values() for b in board.points.values())
-        scale = standard_scale(max(extent, 1e-300) / PLAN_FIELD_MM)
-    return Plan(kind=board.kind, scale=scale, points=dict(board.points), steps=tuple(board.steps),
+    plan = Plan(kind=board.kind, scale=1.0, points=dict(board.points), steps=tuple(board.steps),
                 images=dict(board.images), rates=rates, slide_ends=dict(board.slide_ends),
                 members={link: tuple(dict.fromkeys(known)) for link, known in board.link_images.items()},
                 auxiliary=dict(board.auxiliary))
+    if scale is None:
+        scale = standard_scale(spread(plan) / PLAN_FIELD_MM)
+    return replace(plan, scale=scale)
+
+
+def spread(plan: Plan) -> float:
+    """The largest distance between two points of the plan (SI), never quite zero: what its scale must fit."""
+    return max(max(abs(a - b) for a in plan.points.values() for b in plan.points.values()), 1e-300)
 
 
 __all__ = [
@@ -450,5 +455,6 @@ __all__ = [
     "acceleration_plan",
     "guide_at",
     "image_name",
+    "spread",
     "velocity_plan",
 ]

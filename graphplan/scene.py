@@ -112,6 +112,9 @@ class Positions:
     number_from: int
     working: Working | None
     plans: tuple[int, ...]
+    # The positions whose velocity plans are drawn too, all at one μV (the course project's plans of every
+    # position, from which the equivalent model is read): ``velocity_plans = "all"`` or a list of numbers.
+    velocity_plans: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -127,6 +130,9 @@ class Drawing:
     force_scale: float | None = None
     # Whether the scene names its sheet: only then are the sheets drawn without being asked for.
     sheet_given: bool = False
+    # mm drawn for the driver's velocity pa on the velocity plans of every position (positions.velocity_plans);
+    # None: the standard μV at which the largest of them fits its field.
+    velocity_plans_pole: float | None = None
 
 
 @dataclass(frozen=True)
@@ -483,14 +489,29 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
         working_table.done()
     if start == "extreme" and working is None:
         raise SceneError(table.where("start"), "\"extreme\" needs working = { link, sense } to know which extreme")
-    plans = []
-    for where, item in table.items("plans", default=[]) or []:
-        index = check_int(item, where)
-        if not number_from <= index < number_from + count:
-            raise SceneError(where, f"must be a position number from {number_from} to {number_from + count - 1}", index)
-        plans.append(index)
+    plans = _position_numbers(table, "plans", number_from, count)
+    every = table.raw("velocity_plans", None)
+    if isinstance(every, str):
+        if every != "all":
+            raise SceneError(table.where("velocity_plans"), 'must be "all" or a list of position numbers', every)
+        velocity_plans = list(range(number_from, number_from + count))
+    else:
+        velocity_plans = sorted(set(_position_numbers(table, "velocity_plans", number_from, count)))
     table.done()
-    return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans))
+    return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans),
+                     velocity_plans=tuple(velocity_plans))
+
+
+def _position_numbers(table: Table, key: str, number_from: int, count: int) -> list[int]:
+    """The position numbers listed under ``key``, each checked to be one of the scene's."""
+    numbers = []
+    for where, item in table.items(key, default=[]) or []:
+        number = check_int(item, where)
+        if not number_from <= number < number_from + count:
+            raise SceneError(where, f"must be a position number from {number_from} to {number_from + count - 1}",
+                             number)
+        numbers.append(number)
+    return numbers
 
 
 def _read_drawing(table: Table) -> Drawing:
@@ -504,6 +525,7 @@ def _read_drawing(table: Table) -> Drawing:
         sheet=table.choice("sheet", SHEETS, "A1"),
         force_scale=table.number("force_scale", None, positive=True),
         sheet_given=table.has("sheet"),
+        velocity_plans_pole=table.number("velocity_plans_pole", None, positive=True),
     )
     for plan in ("velocity", "acceleration"):
         if table.has(f"{plan}_pole") and table.has(f"{plan}_scale"):

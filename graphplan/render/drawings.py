@@ -16,7 +16,7 @@ from ..plans import Plan, acceleration_plan, velocity_plan
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
 from ..statics import efficiency
 from . import forces as force_layout
-from . import plans, positions
+from . import plans, positions, velocity_plans
 from .formats import holds
 from .numerals import scale_factor
 from .primitives import Layer, bounds, in_language
@@ -211,6 +211,20 @@ def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
 
 # Vectors named per caption line under a plan, so that a long list does not widen the sheet.
 _SHORT_PER_LINE = 3
+
+
+def velocity_plans_drawing(analysis: Analysis) -> velocity_plans.VelocityPlans:
+    """What the drawing of the velocity plans of every position (``positions.velocity_plans``) shows."""
+    text = strings(analysis.scene.locale)
+    every = analysis.velocity_plans
+    if not every:
+        raise ValueError("the scene draws no velocity plans of every position: positions.velocity_plans lists none")
+    return velocity_plans.VelocityPlans(
+        mechanism=analysis.mechanism, plans=tuple((position.number, position.velocity) for position in every),
+        captions=tuple((text["position_heading"].format(number=position.number),
+                        *_too_short_lines(position.velocity, "velocity", text)) for position in every),
+        title=text["velocity_plans_heading"],
+        scale_line=text["velocity_scale"].format(value=scale_factor(every[0].velocity.scale)))
 
 
 def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str]:

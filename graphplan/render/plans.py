@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -153,15 +153,15 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
     """
     drawers = {
         "mechanism": lambda: _mechanism(sheet),
-        "velocity": lambda: _plan(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism),
-        "acceleration": lambda: _plan(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
+        "velocity": lambda: plan_layers(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism),
+        "acceleration": lambda: plan_layers(sheet.acceleration, "acceleration", sheet.acceleration_pole, sheet.mechanism),
     }
     panels = {name: draw() for name, draw in drawers.items() if name in sheet.drawings}
     captions = {"mechanism": sheet.mechanism_caption, "velocity": sheet.velocity_caption,
                 "acceleration": sheet.acceleration_caption}
     extents = {name: bounds_of(item for layer in drawing for item in layer.items) for name, drawing in panels.items()}
     least = {name: 0.0 if name == "mechanism" else plan_field_mm() for name in panels}
-    widths = {name: max(x1 - x0, least[name], max(_width(text) for text in _caption(captions[name], (0.0, 0.0))))
+    widths = {name: max(x1 - x0, least[name], max(_width(text) for text in caption_texts(captions[name], (0.0, 0.0))))
               for name, (x0, _, x1, _) in extents.items()}
     heights = {name: y1 - y0 for name, (_, y0, _, y1) in extents.items()}
     # Only the drawings the sheet shows: a run asked for velocities has no acceleration plan.
@@ -174,7 +174,7 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
         fx0, fy0, fx1, fy1 = fields[name]
         layers.extend(moved_layers(drawing, (fx0 + fx1 - x0 - x1) / 2, (fy0 + fy1 - y0 - y1) / 2))
     for name, (x0, y0, x1, _) in fields.items():
-        layers.append(Layer(f"{name}-caption", _caption(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
+        layers.append(Layer(f"{name}-caption", caption_texts(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     layers.append(Layer("sheet-title", (Text((left, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
     return Arrangement(layers, fields)
@@ -343,7 +343,7 @@ def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: Ba
 
 # A plan.
 
-def _plan(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list[Layer]:
+def plan_layers(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list[Layer]:
     """The plan's lines of action, similar figures, vectors, points and letters."""
     actions = _lines_of_action(plan)
     figures = _similar_figures(plan, mechanism)
@@ -473,7 +473,7 @@ def _off_line(point: complex, through: complex, unit: complex) -> float:
     return ((point - through) * unit.conjugate()).imag
 
 
-def _caption(lines: tuple[str, ...], at: tuple[float, float]) -> tuple[Text, ...]:
+def caption_texts(lines: Sequence[str], at: tuple[float, float]) -> tuple[Text, ...]:
     """A drawing's caption centred under ``at``: its name in bold, then its scale."""
     return tuple(Text((at[0], at[1] - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
                       weight="bold" if k == 0 else "normal") for k, line in enumerate(lines))
@@ -486,4 +486,4 @@ def _key(*parts: str) -> str:
     return "-".join(re.sub(r"[^A-Za-z0-9_]", "_", part) for part in parts)
 
 
-__all__ = ["ZERO_MM", "PlanSheet", "layout", "too_short"]
+__all__ = ["ZERO_MM", "PlanSheet", "caption_texts", "layout", "plan_layers", "too_short"]

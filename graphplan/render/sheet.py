@@ -58,6 +58,7 @@ from ..scales import format_scale, next_standard_scale, standard_scale
 from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
+from . import velocity_plans as velocity_plans_layout
 from .drawings import (
     at_length_scale,
     fitting_length_scale,
@@ -67,6 +68,7 @@ from .drawings import (
     plan_size,
     positions_plan,
     positions_size,
+    velocity_plans_drawing,
     with_length_scale,
 )
 from .formats import (
@@ -249,12 +251,30 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
     """The plan of positions, then the plan sheet (mechanism, velocity and acceleration plans) of each plan position."""
     text = strings(analysis.scene.locale)
     panels = [Panel("positions", tuple(positions_layout.layout(positions_plan(analysis))))]
+    if analysis.velocity_plans:
+        panels.append(velocity_plans_panel(analysis))
     for position in analysis.plans:
         sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
         row, *others = (split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
                               text["plan_sheet_title"].format(number=position.number)) for shape in plan_layout.SHAPES)
         panels.append(replace(row, alternatives=tuple(others)))
     return panels
+
+
+# The grid of the velocity plans of every position is tried in up to this many columns, to fit a sheet's room.
+_MOST_VELOCITY_PLAN_COLUMNS = 6
+
+
+def velocity_plans_panel(analysis: Analysis) -> Panel:
+    """The velocity plans of every position as a panel: in the grid shaped like a sheet, or in another count of
+    columns where that fits the room, or each plan apart where no sheet holds the grid."""
+    drawing = velocity_plans_drawing(analysis)
+    label = strings(analysis.scene.locale)["velocity_plans_heading"]
+    counts = (None, *range(1, min(len(drawing.plans), _MOST_VELOCITY_PLAN_COLUMNS) + 1))
+    first, *others = (split(arrangement, "velocity-plans", label)
+                      for arrangement in velocity_plans_layout.arrangements(drawing, counts))
+    others = [way for way in others if _size(way.layers) != _size(first.layers)]
+    return replace(first, alternatives=tuple(others))
 
 
 def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:

@@ -44,7 +44,14 @@ from ..scales import format_scale, standard_scale
 from ..scene import Scene
 from . import forces as force_report
 from .machine_note import balancing_section, vibration_section
-from .tables import error_table_lines, has_reactions, quantity_symbol, unit_of
+from .tables import (
+    error_table_lines,
+    has_reactions,
+    quantity_symbol,
+    unit_of,
+    velocity_plans_intro,
+    velocity_plans_lines,
+)
 
 # Two numbers that agree to this share are the same number printed twice.
 _SAME = 1e-6
@@ -183,12 +190,18 @@ class _Note:
         section += 1
         self.initial_data(section)
         plans = self.analysis.plans
-        if plans:
+        if plans or self.analysis.velocity_plans:
             section += 1
             self.heading(2, f"{section}. {self.t('note_kinematics')}")
-            self.para(self.t("note_kinematics_intro", positions=", ".join(str(p.number) for p in plans)))
+            if plans:
+                self.para(self.t("note_kinematics_intro", positions=", ".join(str(p.number) for p in plans)))
             for number, plan in enumerate(plans, 1):
                 self.kinematics(f"{section}.{number}", plan)
+            if self.analysis.velocity_plans:
+                self.heading(3, f"{section}.{len(plans) + 1}. {self.t('velocity_plans_heading')}")
+                self.para(velocity_plans_intro(self.analysis, self.mark))
+                self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
+        if plans:
             section += 1
             self.errors(section)
         if any(plan.forces is not None for plan in plans) or self.analysis.equilibrium is not None:

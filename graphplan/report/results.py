@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from .. import __version__
-from ..analysis import Analysis, PlanPosition
+from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..kinematics import as_xy, at
 from ..statics import efficiency
 
@@ -76,6 +76,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     balance_noise = _cycle_noise(balance) if balance is not None else {}
     rubbing_noise = _cycle_noise(rubbing) if balance is not None and rubbing is not None else {}
     planned = {plan.index: plan for plan in analysis.plans}
+    velocity_planned = {position.index: position for position in analysis.velocity_plans}
     settled = {*analysis.scene.frame_points, driver.joint, driver.link}
     entries = []
     for i in range(count):
@@ -100,6 +101,8 @@ def results(analysis: Analysis) -> dict[str, Any]:
         slides = [_slide(slide, i, slide_floors) for slide in motion.slides] if i not in motion.singular else []
         if slides:
             entry["slides"] = slides
+        if i in velocity_planned:
+            entry["velocity_plan"] = _plans(velocity_planned[i])["velocity"]
         if i in planned:
             entry["plans"] = _plans(planned[i])
             if planned[i].forces is not None:
@@ -131,7 +134,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
         document["strokes"] = {"working_deg": number(math.degrees(working)), "idle_deg": number(math.degrees(idle)),
                                "time_ratio": number(working / idle)}
     document["positions"] = entries
-    errors = [row for plan in analysis.plans for row in plan.errors]
+    errors = analysis.errors
     if errors:
         document["errors"] = [{"position": row.position, "quantity": row.quantity, "analytic": number(row.analytic),
                                "plan": number(row.plan), "source": row.source, "percent": number(row.percent, PERCENT_FLOOR)}
@@ -190,7 +193,7 @@ def results_without_linkage(scene) -> dict[str, Any]:
     return {"graphplan": __version__, "versions": versions(), "scene": scene.title}
 
 
-def _plans(plan: PlanPosition) -> dict[str, Any]:
+def _plans(plan: PlanPosition | VelocityPosition) -> dict[str, Any]:
     """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed."""
     result = {}
     for kind, drawn in plan.plans.items():

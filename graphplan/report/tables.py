@@ -14,9 +14,10 @@ import csv
 import io
 from collections import defaultdict
 
-from ..analysis import Analysis, PlanPosition
+from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
+from ..render.numerals import scale_factor
 from .forces import number
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
@@ -43,7 +44,7 @@ def unit_of(quantity: str, text: dict[str, str]) -> str:
     return text["unit_m_per_s" if quantity.startswith("V") else "unit_m_per_s2"]
 
 
-def _grouped(plan: PlanPosition) -> tuple[dict[str, dict[str, ErrorRow]], list[str]]:
+def _grouped(plan: PlanPosition | VelocityPosition) -> tuple[dict[str, dict[str, ErrorRow]], list[str]]:
     """A position's quantities in reading order with the error row of each source, and the sources present."""
     table: dict[str, dict[str, ErrorRow]] = defaultdict(dict)
     for row in plan.errors:
@@ -89,15 +90,55 @@ def markdown(analysis: Analysis) -> str:
     for plan in analysis.plans:
         lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
                   *error_table_lines(analysis, plan), ""]
+    if analysis.velocity_plans:
+        lines += [f"## {text['velocity_plans_heading']}", "", velocity_plans_intro(analysis), "",
+                  *velocity_plans_lines(analysis), ""]
     return "\n".join(lines)
+
+
+def velocity_plans_intro(analysis: Analysis, mark: str = ".") -> str:
+    """The sentence before the tables of :func:`velocity_plans_lines`: what they give, at which μV."""
+    scale = scale_factor(analysis.velocity_plans[0].velocity.scale).replace(".", mark)
+    return strings(analysis.scene.locale)["velocity_plans_intro"].format(scale=scale)
+
+
+# The positions side by side in one table of the velocity plans of every position: six fit a page of the note.
+POSITIONS_PER_TABLE = 6
+
+
+def velocity_plans_lines(analysis: Analysis, mark: str = ".") -> list[str]:
+    """The values read off the velocity plans of every position (as constructed) as Markdown lines: a column a
+    position (headed by its number), a row a quantity, then each source's largest error of the position in
+    magnitude; in tables of :data:`POSITIONS_PER_TABLE` positions.  ``mark`` is the decimal mark of the numbers."""
+    text = strings(analysis.scene.locale)
+    every = analysis.velocity_plans
+    quantities = list(dict.fromkeys(row.quantity for position in every for row in position.errors))
+    sources = [s for s in SOURCES if any(row.source == s for position in every for row in position.errors)]
+    lines = []
+    for start in range(0, len(every), POSITIONS_PER_TABLE):
+        chunk = every[start:start + POSITIONS_PER_TABLE]
+        tables = [_grouped(position)[0] for position in chunk]
+        header = [text["errors_quantity"], text["column_unit"],
+                  *(str(position.number) for position in chunk)]
+        lines += ["| " + " | ".join(header) + " |", "|---|---|" + "---:|" * len(chunk)]
+        for quantity in quantities:
+            cells = [number(table[quantity]["construction"].plan, mark=mark) if quantity in table else ""
+                     for table in tables]
+            lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
+        for source in sources:
+            cells = [_percent(max((abs(rows[source].percent) for rows in table.values() if source in rows),
+                                  default=0.0), mark) for table in tables]
+            name = text["velocity_plans_largest"].format(source=text[f"source_{source}"])
+            lines.append("| " + " | ".join([name, "%", *cells]) + " |")
+        lines.append("")
+    return lines[:-1]
 
 
 def csv_text(analysis: Analysis) -> str:
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["position", "quantity", "analytic", "source", "plan", "percent"])
-    for plan in analysis.plans:
-        for row in plan.errors:
-            writer.writerow([row.position, row.quantity, f"{row.analytic:.12g}", row.source, f"{row.plan:.12g}",
-                             f"{row.percent:.6g}"])
+    for row in analysis.errors:
+        writer.writerow([row.position, row.quantity, f"{row.analytic:.12g}", row.source, f"{row.plan:.12g}",
+                         f"{row.percent:.6g}"])
     return out.getvalue()

@@ -1,0 +1,237 @@
+"""The velocity plans of every position (``positions.velocity_plans``): a course project's plans of the twelve
+positions, drawn at one μV on one drawing and on the first sheet.
+
+The plans are constructed group by group as the plan sheets' are; every value they give is checked
+against the analytic solution at its position, and every vector drawn against the analytic velocity
+divided by μV.
+"""
+
+import json
+import math
+import re
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import VELOCITY_PLANS_FIELD_MM, analyse
+from graphplan.cli import main
+from graphplan.deliverables import chosen, missing
+from graphplan.errors import SceneError
+from graphplan.locale import strings
+from graphplan.plans import spread
+from graphplan.render import drawings
+from graphplan.render import velocity_plans as velocity_plans_layout
+from graphplan.render.primitives import Arrow
+from graphplan.render.sheet import course_sheets
+from graphplan.report import tables
+from graphplan.scales import STANDARD_MANTISSAS
+from graphplan.scene import loads
+
+# One fixture of each group kind the plans construct: RRR, RPR (the slotted lever), two RRR/RRP dyads in
+# series, RPP, PRP, a slider driver, the class III triad.
+KINDS = ["ratchet_crank_rocker", "quick_return_slotted_lever", "shaper_six_bar", "scotch_yoke",
+         "tangent_mechanism_prp", "slider_driven", "triad_class_iii"]
+
+
+def scene_text(name: str, setting: str = 'velocity_plans = "all"', drawing: str = "") -> str:
+    """The fixture's scene with ``setting`` added to its [positions] and ``drawing`` to its [drawing]."""
+    with open(f"fixtures/{name}.toml", encoding="utf-8") as file:
+        text = file.read()
+    text = re.sub(r"^\[positions\]\s*$", lambda m: f"{m.group(0)}\n{setting}", text, count=1, flags=re.MULTILINE)
+    if drawing:
+        text = re.sub(r"^\[drawing\]\s*$", lambda m: f"{m.group(0)}\n{drawing}", text, count=1, flags=re.MULTILINE)
+    return text
+
+
+def analysed(name: str, setting: str = 'velocity_plans = "all"', drawing: str = ""):
+    return analyse(loads(scene_text(name, setting, drawing)))
+
+
+@pytest.mark.parametrize("name", KINDS)
+def test_every_position_velocity_plan_gives_the_analytic_velocities(name):
+    analysis = analysed(name)
+    every = analysis.velocity_plans
+    assert [position.number for position in every] == list(analysis.positions.numbers)
+    largest = max(abs(row.analytic) for position in every for row in position.errors if row.quantity.startswith("V"))
+    for position in every:
+        constructed = [row for row in position.errors if row.source == "construction"]
+        assert {row.quantity for row in constructed} >= {f"V{analysis.mechanism.driver.joint}"}
+        for row in constructed:
+            scale = largest if row.quantity.startswith("V") else max(abs(row.analytic), 1.0)
+            assert row.plan == pytest.approx(row.analytic, abs=1e-9 * scale), (position.number, row.quantity)
+        # No acceleration is read off a velocity plan.
+        assert not any(row.quantity.startswith(("a", "epsilon")) for row in position.errors)
+
+
+@pytest.mark.parametrize("name", ["ratchet_crank_rocker", "shaper_six_bar", "slider_driven"])
+def test_the_plans_of_every_position_share_the_standard_scale_that_fits_the_largest(name):
+    analysis = analysed(name)
+    scales = {position.velocity.scale for position in analysis.velocity_plans}
+    assert len(scales) == 1
+    (scale,) = scales
+    widest = max(spread(position.velocity) for position in analysis.velocity_plans)
+    assert widest / scale <= VELOCITY_PLANS_FIELD_MM * (1 + 1e-9)
+    # The standard scale a step smaller would draw the largest plan too big for the field.
+    smaller = max(m * 10.0 ** p for p in range(-6, 3) for m in STANDARD_MANTISSAS if m * 10.0 ** p < scale * (1 - 1e-12))
+    assert widest / smaller > VELOCITY_PLANS_FIELD_MM * (1 - 1e-9)
+
+
+def test_a_pole_distance_fixes_the_scale_of_every_plan_and_leaves_the_plan_sheets_alone():
+    plain = analysed("ratchet_crank_rocker")
+    analysis = analysed("ratchet_crank_rocker", drawing="velocity_plans_pole = 60.0")
+    driver = analysis.mechanism.driver
+    for position in analysis.velocity_plans:
+        assert abs(position.velocity.mm(position.velocity.images[driver.joint])) == pytest.approx(60.0, rel=1e-12)
+    for ours, theirs in zip(analysis.plans, plain.plans, strict=True):
+        assert ours.velocity.scale == theirs.velocity.scale
+        assert ours.errors == theirs.errors
+
+
+def test_the_drawing_lays_each_vector_from_the_pole_as_long_as_the_analytic_velocity_over_mu_v():
+    analysis = analysed("shaper_six_bar")
+    drawing = drawings.velocity_plans_drawing(analysis)
+    arranged = velocity_plans_layout.arrange(drawing)
+    scale = analysis.velocity_plans[0].velocity.scale
+    checked = 0
+    for position in analysis.velocity_plans:
+        prefix = velocity_plans_layout.field_name(position.number)
+        assert prefix in arranged.fields
+        arrows = {item.key: item for layer in arranged.layers if layer.name == f"{prefix}-velocity-vectors"
+                  for item in layer.items if isinstance(item, Arrow)}
+        for point, letter in position.velocity.images.items():
+            key = f"{prefix}-velocity-p-{letter}"
+            if letter == "p" or key not in arrows:
+                continue
+            arrow = arrows[key]
+            drawn = math.dist(arrow.start, arrow.end)
+            exact = float(np.hypot(*analysis.motion.point(point).v[position.index])) / scale
+            assert drawn == pytest.approx(exact, rel=1e-9, abs=1e-9), (position.number, point)
+            checked += 1
+    assert checked >= 3 * len(analysis.velocity_plans)
+    # Every plan stands in its own cell: no two fields overlap.
+    fields = sorted(arranged.fields.values())
+    for k, (x0, y0, x1, y1) in enumerate(fields):
+        for u0, v0, u1, v1 in fields[k + 1:]:
+            assert x1 <= u0 + 1e-9 or u1 <= x0 + 1e-9 or y1 <= v0 + 1e-9 or v1 <= y0 + 1e-9
+
+
+def test_results_give_each_position_its_velocity_plan_and_the_errors_of_those_without_a_plan_sheet(tmp_path):
+    scene = tmp_path / "ratchet.toml"
+    scene.write_text(scene_text("ratchet_crank_rocker"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "velocity,errors"]) == 0
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    for entry in document["positions"]:
+        plan = entry["velocity_plan"]
+        for name, value in plan["values"].items():
+            if name.startswith("V") and name[1:] in entry["points"] and len(name) <= 3:
+                assert value == pytest.approx(math.hypot(*entry["points"][name[1:]]["v"]), rel=1e-9, abs=1e-9)
+    planned = {5, 11}
+    by_position = {}
+    for row in document["errors"]:
+        by_position.setdefault(row["position"], set()).add(row["quantity"])
+    assert set(by_position) == {entry["index"] for entry in document["positions"]}
+    for number, quantities in by_position.items():
+        assert any(q.startswith("a") for q in quantities) == (number in planned), number
+    csv_rows = (out / "errors.csv").read_text(encoding="utf-8").splitlines()[1:]
+    assert len(csv_rows) == len(document["errors"])
+    assert (out / "velocity_plans.svg").exists()
+    text = strings(document_locale := loads(scene.read_text(encoding="utf-8")).locale)
+    section = (out / "errors.md").read_text(encoding="utf-8").split(f"## {text['velocity_plans_heading']}")[1]
+    headers = [cell.strip() for line in section.splitlines() if line.startswith(f"| {text['errors_quantity']} |")
+               for cell in line.strip("|").split("|")[2:]]
+    assert headers == [str(n) for n in range(12)], document_locale
+
+
+def test_the_table_of_every_position_gives_the_largest_drafting_error_of_its_row():
+    analysis = analysed("quick_return_slotted_lever")
+    text = strings(analysis.scene.locale)
+    name = text["velocity_plans_largest"].format(source=text["source_drafting"])
+    cells = [float(cell.replace("−", "-")) for line in tables.velocity_plans_lines(analysis)
+             if line.startswith(f"| {name} |") for cell in line.strip("|").split("|")[2:]]
+    drafted = [max(abs(row.percent) for row in position.errors if row.source == "drafting")
+               for position in analysis.velocity_plans]
+    assert cells == pytest.approx(drafted, abs=5e-4)
+    assert max(drafted) > 0
+
+
+def test_the_first_sheet_holds_the_plan_of_positions_and_the_velocity_plans_of_every_position():
+    sheets = course_sheets(analysed("ratchet_crank_rocker"), "A1")
+    assert {"positions", "velocity-plans"} <= set(sheets[0].panels)
+
+
+def test_on_a_small_sheet_the_plans_stand_apart_each_once_in_the_order_of_the_positions():
+    analysis = analysed("ratchet_crank_rocker")
+    sheets = course_sheets(analysis, "A2")
+    placed = [(sheet.number, name, rect) for sheet in sheets for name, rect in sheet.panels.items()
+              if name.startswith("velocity-plans")]
+    names = [name for _, name, _ in placed]
+    if names != ["velocity-plans"]:
+        numbers = [int(name.rsplit("-", 1)[1]) for name in names]
+        assert sorted(numbers) == list(analysis.positions.numbers)
+        # Read sheet by sheet, top to bottom and left to right, they run in order.
+        by_sheet = {}
+        for sheet_number, name, rect in placed:
+            by_sheet.setdefault(sheet_number, []).append(int(name.rsplit("-", 1)[1]))
+        firsts = [min(numbers) for _, numbers in sorted(by_sheet.items())]
+        assert firsts == sorted(firsts)
+
+
+def test_velocity_plans_alone_give_the_velocity_drawings_and_errors_but_no_accelerations():
+    def without_plan_sheets(setting):
+        scene = loads(scene_text("stephenson_six_bar", setting).replace("plans       = [3, 9]", "plans = []"))
+        return scene, analyse(scene)
+
+    scene, analysis = without_plan_sheets('velocity_plans = "all"')
+    assert not analysis.plans and analysis.velocity_plans
+    assert missing(scene, analysis, "velocity") is None
+    assert missing(scene, analysis, "errors") is None
+    assert "positions.plans lists none" in missing(scene, analysis, "acceleration")
+    assert {"velocity", "errors"} <= set(chosen(scene, analysis))
+    assert "velocity_plans list none" in missing(*without_plan_sheets("velocity_plans = []"), "velocity")
+
+
+@pytest.mark.parametrize(("setting", "where", "says"), [
+    ('velocity_plans = "some"', "positions.velocity_plans", '"all" or a list'),
+    ("velocity_plans = [0, 12]", "positions.velocity_plans[1]", "from 0 to 11"),
+    ("velocity_plans = [1.5]", "positions.velocity_plans[0]", "integer"),
+])
+def test_a_wrong_list_of_velocity_plans_is_refused_where_it_is(setting, where, says):
+    with pytest.raises(SceneError) as caught:
+        loads(scene_text("ratchet_crank_rocker", setting))
+    assert caught.value.where == where
+    assert says in str(caught.value)
+
+
+def test_a_list_of_velocity_plans_is_taken_in_the_order_of_the_positions_once_each():
+    analysis = analysed("ratchet_crank_rocker", "velocity_plans = [7, 2, 7, 0]")
+    assert [position.number for position in analysis.velocity_plans] == [0, 2, 7]
+
+
+def test_a_pole_distance_for_them_must_be_positive():
+    with pytest.raises(SceneError) as caught:
+        loads(scene_text("ratchet_crank_rocker", drawing="velocity_plans_pole = -5"))
+    assert caught.value.where == "drawing.velocity_plans_pole"
+
+
+def test_the_scene_format_documents_the_keys():
+    with open("docs/scene-format-extensions.md", encoding="utf-8") as file:
+        text = file.read()
+    for key in ("velocity_plans", "velocity_plans_pole", "velocity_plan", "velocity_plans.svg"):
+        assert key in text
+    assert graphplan  # the package imports whole
+
+
+def test_the_equivalent_model_is_read_off_the_velocity_plans_of_every_position():
+    from graphplan.dynamics import plan_reductions
+
+    analysis = analysed("shaper_six_bar")
+    reductions = plan_reductions(analysis)
+    assert [reduction.number for reduction in reductions] == list(analysis.positions.numbers)
+    inertia_scale = max(abs(reduction.inertia_exact) for reduction in reductions)
+    moment_scale = max(abs(reduction.moment_exact) for reduction in reductions)
+    assert moment_scale > 0
+    for reduction in reductions:
+        assert reduction.inertia == pytest.approx(reduction.inertia_exact, abs=1e-9 * inertia_scale)
+        assert reduction.moment == pytest.approx(reduction.moment_exact, abs=1e-9 * moment_scale)
