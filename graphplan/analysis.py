@@ -211,8 +211,10 @@ def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[Velocit
         velocity = replace(velocity, scale=scale)
         plans = {"velocity": velocity}
         table = readings(mechanism, plans, where)
+        # A plan position's hand readings are of its plan sheet's plan, drawn at another μV.
+        measured = scene.measured.get(number) if number not in scene.positions.plans else None
         rows = error_rows(number, _exact_values(mechanism, motion, table, index), plans, table,
-                          scene.drawing.drafting_precision)
+                          scene.drawing.drafting_precision, measured)
         every.append(VelocityPosition(number, index, where, directions, velocity, tuple(table), tuple(rows)))
     return tuple(every), warnings
 

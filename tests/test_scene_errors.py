@@ -769,7 +769,7 @@ CASES: list[Case] = [
     Case("measured-unknown-key", {"measured.5.velocty": {"pb": 39.0}}, "measured.5.velocty",
          "unknown key; did you mean 'velocity'?"),
     Case("measured-not-in-plans", {"measured.7": {"velocity": {"pb": 39.0}}}, "measured.7",
-         "position 7 is not in positions.plans [5, 11]", stage="build"),
+         "position 7 is not in positions.plans [5, 11] nor in positions.velocity_plans", stage="build"),
 
     # -- [output]
     Case("output-include-string", {"output.include": "all"}, "output.include", "must be a list, not a string (got 'all')"),

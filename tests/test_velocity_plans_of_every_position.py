@@ -235,3 +235,55 @@ def test_the_equivalent_model_is_read_off_the_velocity_plans_of_every_position()
     for reduction in reductions:
         assert reduction.inertia == pytest.approx(reduction.inertia_exact, abs=1e-9 * inertia_scale)
         assert reduction.moment == pytest.approx(reduction.moment_exact, abs=1e-9 * moment_scale)
+
+
+def test_the_dynamics_sheet_rings_each_plans_je_on_the_curve_of_the_exact_one():
+    from graphplan.dynamics import equivalent_model_of
+    from graphplan.render import dynamics as dynamics_layout
+    from graphplan.render.primitives import Circle, Polyline
+
+    analysis = analysed("shaper_six_bar")
+    layers = dynamics_layout.layout(equivalent_model_of(analysis), None, strings("en"))
+    inertia = next(layer for layer in layers if layer.name == "inertia")
+    rings = [item for item in inertia.items if isinstance(item, Circle) and item.fill is None
+             and item.radius == dynamics_layout.PLAN_RING_MM]
+    curve = max((item for item in inertia.items if isinstance(item, Polyline)), key=lambda item: len(item.points))
+    xs, ys = np.array(curve.points).T
+    axis_y = ys[0]
+    on_curve = [ring for ring in rings if ring.centre[1] <= axis_y + 1e-9]  # the legend's ring stands above
+    assert len(on_curve) == len(analysis.velocity_plans) == len(rings) - 1
+    for ring in on_curve:
+        x, y = ring.centre
+        # The curve runs down the page with φ: interpolate its Je at the ring's φ (y decreasing).
+        assert x == pytest.approx(float(np.interp(-y, -ys, xs)), abs=0.05)
+
+
+def measured_scene(position: int, readings: str, drawing: str = "velocity_plans_pole = 50.0") -> str:
+    return scene_text("stephenson_six_bar", drawing=drawing) + f"\n[measured.{position}]\n{readings}\n"
+
+
+def test_a_hand_drawn_velocity_plan_of_any_position_is_checked_at_the_mu_v_of_the_plans():
+    # At pa = 50 mm μV is VA/50; a pb drawn 1 mm longer than the exact |VB|/μV reads VB that much too large.
+    exact = analyse(loads(measured_scene(4, "velocity = { pb = 10.0 }")))
+    position = next(p for p in exact.velocity_plans if p.number == 4)
+    scale = position.velocity.scale
+    vb = float(np.hypot(*exact.motion.point("B").v[position.index]))
+    va = float(np.hypot(*exact.motion.point(exact.mechanism.driver.joint).v[position.index]))
+    assert scale == pytest.approx(va / 50.0, rel=1e-12)
+    drawn = vb / scale + 1.0
+    analysis = analyse(loads(measured_scene(4, f"velocity = {{ pb = {drawn!r} }}")))
+    # pb gives every quantity read from it: VB, and VBC and ω4 with C at the pole.
+    rows = {row.quantity: row for row in analysis.errors if row.position == 4 and row.source == "measured"}
+    assert "VB" in rows
+    assert rows["VB"].plan == pytest.approx(drawn * scale, rel=1e-12)
+    assert rows["VB"].percent == pytest.approx((vb - drawn * scale) / vb * 100.0, rel=1e-9)
+    text = strings(analysis.scene.locale)
+    largest = text["velocity_plans_largest"].format(source=text["source_measured"])
+    assert any(line.startswith(f"| {largest} |") for line in tables.velocity_plans_lines(analysis))
+
+
+def test_only_the_velocity_plan_of_a_position_without_a_plan_sheet_can_be_measured():
+    with pytest.raises(SceneError) as caught:
+        analyse(loads(measured_scene(4, "acceleration = { pb = 10.0 }")))
+    assert caught.value.where == "measured.4.acceleration"
+    assert "positions.plans" in str(caught.value)

@@ -30,6 +30,7 @@ from .numerals import short
 from .primitives import (
     THIN,
     Arrow,
+    Circle,
     Layer,
     Polyline,
     Primitive,
@@ -59,6 +60,8 @@ TITLE = 5.0
 # How far an axis runs past its last tick, to its arrowhead (mm).
 AXIS_RUN_MM = 8.0
 TICK_MM = 1.2
+# The ring round a value read off a velocity plan on the curve of the exact one (mm).
+PLAN_RING_MM = 1.2
 # A tangent of the energy–mass diagram is drawn to the ΔT axis unless its intercept lies further
 # than this many heights of the ΔT diagram from its abscissa; then it is cut there.
 INTERCEPT_REACH = 3.0
@@ -304,10 +307,24 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     # Headed above its Je axis's lettering, as the other diagrams are above theirs.
     scale_y = TICK_MM + 1.0 + LABEL + 2.5
+    if model.plans:
+        # Je read off each position's velocity plan, ringed on the curve of the exact Je: the two methods side
+        # by side; the legend on a line of its own under the scale, so that the diagram grows no wider.
+        items += [Circle((plan.inertia / scales.inertia, -_travel(model, plan.driver) / scales.angle), PLAN_RING_MM,
+                         THIN, None) for plan in model.plans]
+        items.append(Circle((PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
+        items.append(Text((2 * PLAN_RING_MM + 2.0, scale_y), words["dyn_inertia_plans"], LABEL, "start"))
+        scale_y += LABEL + 2.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_inertia"], HEADING, "start", weight="bold"))
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
                                       f"{_angle_scale(model, scales, words)}", LABEL, "start"))
     return items
+
+
+def _travel(model: EquivalentModel, driver: float) -> float:
+    """ψ of a driver position: its travel from the model's first sample in the driver's sense (within a turn)."""
+    travel = model.sense * (driver - float(model.driver[0]))
+    return travel % (2.0 * math.pi) if model.cyclic else travel
 
 
 def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float]]:

@@ -126,8 +126,12 @@ def velocity_plans_lines(analysis: Analysis, mark: str = ".") -> list[str]:
                      for table in tables]
             lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
         for source in sources:
-            cells = [_percent(max((abs(rows[source].percent) for rows in table.values() if source in rows),
-                                  default=0.0), mark) for table in tables]
+            # A position not measured by hand has no measured error: its cell stays empty, not 0.
+            cells = [_percent(max(errors), mark) if errors else ""
+                     for errors in ([abs(rows[source].percent) for rows in table.values() if source in rows]
+                                    for table in tables)]
+            if not any(cells):
+                continue
             name = text["velocity_plans_largest"].format(source=text[f"source_{source}"])
             lines.append("| " + " | ".join([name, "%", *cells]) + " |")
         lines.append("")
