@@ -28,6 +28,8 @@ LOCALES = ("en", "ru", "zh")
 SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
 STROKES = ("working", "idle", "always")
+# The most velocity plans of every position one scene draws: a course project draws 12, a fine one 24 or 36.
+MOST_VELOCITY_PLANS = 48
 # The tables that describe a mechanism: without [frame] and [driver] they have nothing to belong to.
 # ([dynamics] may do without one: a flywheel sized from a load diagram alone.)
 LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces")
@@ -497,6 +499,9 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
         velocity_plans = list(range(number_from, number_from + count))
     else:
         velocity_plans = sorted(set(_position_numbers(table, "velocity_plans", number_from, count)))
+    if len(velocity_plans) > MOST_VELOCITY_PLANS:
+        raise SceneError(table.where("velocity_plans"), f"draws {len(velocity_plans)} velocity plans: at most "
+                         f"{MOST_VELOCITY_PLANS} make a readable drawing; list the positions to draw")
     table.done()
     return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans),
                      velocity_plans=tuple(velocity_plans))
