@@ -413,6 +413,29 @@ def test_without_a_length_scale_a_drawing_a_step_smaller_saves_sheets(name):
         assert max(positions_size(analysis, chosen)) >= 150
 
 
+def test_a_run_without_a_length_scale_lays_the_sheets_out_once_at_each_scale_it_tries(monkeypatch, tmp_path):
+    """Choosing μl lays the sheets out at each μl it tries; the run's sheets at the μl chosen are those layouts,
+    not a layout made again (the same drawings, and a second or so saved on a course project)."""
+    from graphplan.cli import main
+    from graphplan.render import sheet as sheet_module
+
+    laid_out = []
+    original = sheet_module.kinematics_panels
+
+    def counted(analysis):
+        laid_out.append(analysis.scene.drawing.length_scale)
+        return original(analysis)
+
+    monkeypatch.setattr(sheet_module, "kinematics_panels", counted)
+    with open("fixtures/shaper_six_bar.toml", encoding="utf-8") as file:
+        text = file.read()
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(re.sub(r"^length_scale\s*=.*$", "", text, flags=re.MULTILINE), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets,positions"]) == 0
+    assert len(laid_out) >= 2  # the choice tried more than one μl
+    assert len(laid_out) == len(set(laid_out))
+
+
 def box(name, width, height):
     """A drawing that is only its outline, ``width`` × ``height`` mm, named as a drawing of the set."""
     return Panel(name, (Layer("box", (Polyline(((0, 0), (width, 0), (width, height), (0, height)), closed=True),)),))

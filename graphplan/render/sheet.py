@@ -48,8 +48,10 @@ import contextlib
 import itertools
 import math
 import re
+import weakref
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import asdict, dataclass, field, replace
+from typing import Any
 
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
@@ -562,11 +564,34 @@ class CoursePanels:
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
                   sheet: str | None = None, dynamics: Sequence[Panel] = ()) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
-    kinematics = [*kinematics_panels(analysis),
-                  *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
-    forces = _force_sheets(analysis, sheet)
+    linkage, forces = _laid_out(analysis, analysis.scene.drawing.sheet if sheet is None else sheet)
+    kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
     return CoursePanels(tuple(kinematics), tuple(part for _, parts in forces for part in parts),
                         tuple(whole for whole, _ in forces), tuple(dynamics))
+
+
+# The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
+# few μl (:func:`fewest_sheets_length_scale`) and the run lays out those of the μl chosen once more.  An
+# analysis fixed at a μl (:func:`~graphplan.render.drawings.at_length_scale`) shares its motion with the
+# analysis it is made from: the entries go when that motion does.
+_LaidOut = tuple[list[Panel], list[tuple[Panel, list[Panel]]]]
+_laid_out_panels: dict[tuple[int, Any, str, str], _LaidOut] = {}
+
+
+def _laid_out(analysis: Analysis, sheet: str) -> _LaidOut:
+    """:func:`kinematics_panels` and :func:`_force_sheets` of ``analysis`` on ``sheet``, each laid out once."""
+    motion = analysis.motion
+    key = (id(motion), analysis.scene.drawing, analysis.scene.locale, sheet)
+    if key not in _laid_out_panels:
+        if not any(known[0] == key[0] for known in _laid_out_panels):
+            weakref.finalize(motion, _forget_laid_out, key[0])
+        _laid_out_panels[key] = (kinematics_panels(analysis), _force_sheets(analysis, sheet))
+    return _laid_out_panels[key]
+
+
+def _forget_laid_out(motion_id: int) -> None:
+    for key in [key for key in _laid_out_panels if key[0] == motion_id]:
+        del _laid_out_panels[key]
 
 
 def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:
