@@ -37,13 +37,13 @@ the mid-intervals and the acceleration at the positions.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .errors import SceneError
-from .kinematics import dot
+from .kinematics import at, dot
 from .mechanism import Mechanism
 from .motion import Motion, solve
 from .positions import PositionSet, working_speed
@@ -138,6 +138,8 @@ class KinematicDiagrams:
     a_peak: float
     scales: DiagramScales
     stroke_end: float | None = None
+    # (abscissa, velocity) of the output link read off the velocity plan of each position that has one.
+    v_plans: tuple[tuple[float, float], ...] = ()
 
     @property
     def intervals(self) -> int:
@@ -304,9 +306,35 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
         v_chord=v_chord, a_chord=a_chord, v_peak=_peak(v), a_peak=_peak(a), scales=scales, stroke_end=stroke_end)
 
 
-def of_analysis(analysis: Analysis) -> KinematicDiagrams:
-    """:func:`kinematic_diagrams` of a run's mechanism and positions (``graphplan.analysis.Analysis``)."""
-    return kinematic_diagrams(analysis.mechanism, analysis.positions)
+def of_analysis(analysis: Analysis, axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM) -> KinematicDiagrams:
+    """:func:`kinematic_diagrams` of a run's mechanism and positions (``graphplan.analysis.Analysis``), with
+    the output link's velocity read off the velocity plan of each position that has one (:attr:`v_plans`)."""
+    record = kinematic_diagrams(analysis.mechanism, analysis.positions, axis_mm=axis_mm, field_mm=field_mm)
+    return replace(record, v_plans=_read_off_plans(analysis, record))
+
+
+def _read_off_plans(analysis: Analysis, record: KinematicDiagrams) -> tuple[tuple[float, float], ...]:
+    """(abscissa, velocity) of the output link at each position with a velocity plan, as the plan gives it:
+    ω of the link from its plan, or its point's velocity along the link's direction; the plan sheet's plan
+    where a position has one, else its velocity plan of every position."""
+    working = analysis.scene.positions.working
+    assert working is not None
+    sign = 1.0 if working.sense in ("ccw", "forward") else -1.0
+    link = analysis.motion.links[working.link]
+    node_of: dict[int, float] = {}
+    for number, node in zip(record.numbers, record.nodes.tolist(), strict=True):
+        node_of.setdefault(number, node)  # a cycle's first position again at 2π stays at 0
+    drawn = {position.index: position for position in analysis.velocity_plans}
+    drawn.update({position.index: position for position in analysis.plans})
+    found = []
+    for index, position in sorted(drawn.items()):
+        plan = position.velocity
+        if record.translating:
+            speed = float(dot(at(link.u, index), plan.value(link.origin)))
+        else:
+            speed = plan.rates[working.link]
+        found.append((node_of[position.number], sign * speed))
+    return tuple(found)
 
 
 def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:

@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 from shapely.geometry import box
 
+from graphplan.analysis import analyse
 from graphplan.errors import SceneError
 from graphplan.kinematic_diagrams import (
     FIELD_MM,
@@ -30,6 +31,7 @@ from graphplan.kinematic_diagrams import (
     chord_derivative,
     closed_chord_derivative,
     kinematic_diagrams,
+    of_analysis,
 )
 from graphplan.locale import strings
 from graphplan.mechanism import build
@@ -338,8 +340,10 @@ def test_every_text_key_is_used_and_words_come_from_the_mapping():
     shown = set()
     swing = build(loads(scene_text("double_rocker_swing").replace(
         "count = 7", 'count = 7\nworking = { link = 4, sense = "cw" }')))
+    # A run's diagrams ring the velocities its plans give (kd_plans in the legend).
+    with_plans = of_analysis(analyse(loads(scene_text("ratchet_crank_rocker"))))
     for found in (*(record(name)[2] for name in ("engine_slider_crank", "ratchet_crank_rocker", "slider_driven")),
-                  kinematic_diagrams(swing, make_positions(swing))):
+                  kinematic_diagrams(swing, make_positions(swing)), with_plans):
         marked = {key: f"<{key}>" for key in keys}
         for layer in diagrams.layout(found, marked):
             shown.update(re.findall(r"<(\w+)>", " ".join(i.text for i in layer.items if isinstance(i, Text))))

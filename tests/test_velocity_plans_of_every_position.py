@@ -294,3 +294,32 @@ def test_only_the_velocity_plan_of_a_position_without_a_plan_sheet_can_be_measur
         analyse(loads(measured_scene(4, "acceleration = { pb = 10.0 }")))
     assert caught.value.where == "measured.4.acceleration"
     assert "positions.plans" in str(caught.value)
+
+
+@pytest.mark.parametrize("name", ["ratchet_crank_rocker", "shaper_six_bar", "slider_driven", "scotch_yoke"])
+def test_the_velocity_diagram_rings_the_output_velocity_of_each_plan_on_the_exact_curve(name):
+    from graphplan.kinematic_diagrams import of_analysis
+    from graphplan.render import diagrams as diagrams_layout
+    from graphplan.render.primitives import Circle, Polyline
+
+    analysis = analysed(name)
+    record = of_analysis(analysis)
+    assert len(record.v_plans) == len(analysis.velocity_plans) == len(analysis.positions.numbers)
+    exact = dict(zip(record.nodes.tolist(), record.v_nodes.tolist(), strict=True))
+    peak = record.v_peak
+    for node, value in record.v_plans:
+        assert value == pytest.approx(exact[node], abs=1e-9 * peak)
+    layers = diagrams_layout.layout(record, strings(analysis.scene.locale))
+    curves = next(layer for layer in layers if layer.name.endswith("velocity-curves"))
+    rings = [item for item in curves.items if isinstance(item, Circle) and item.fill is None]
+    assert len(rings) == len(record.v_plans)
+    # The panel stands somewhere on the drawing: measure from the analytic curve, which starts at the origin.
+    curve = next(item for item in curves.items if isinstance(item, Polyline))
+    xs, ys = np.array(curve.points).T
+    origin = (xs[0], ys[0] - record.v[0] / record.scales.velocity)
+    along_mm = 1.0 / record.scales.along
+    for ring, (node, value) in zip(rings, record.v_plans, strict=True):
+        assert ring.centre[0] - origin[0] == pytest.approx(node * along_mm, abs=1e-9)
+        assert ring.centre[1] - origin[1] == pytest.approx(value / record.scales.velocity, abs=1e-9)
+        # ...and on the curve of the exact velocity, drawn through 360 samples.
+        assert ring.centre[1] == pytest.approx(float(np.interp(ring.centre[0], xs, ys)), abs=0.3)

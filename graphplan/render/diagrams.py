@@ -30,6 +30,7 @@ from .labels import Anchor, obstacles_of, place_labels
 from .numerals import scale_factor
 from .primitives import (
     Arrow,
+    Circle,
     Layer,
     Polyline,
     Primitive,
@@ -51,6 +52,8 @@ _CHORD = Stroke(0.35, "#a83a1f", (2.0, 1.2))
 _CHORD_COLOUR = "#a83a1f"
 _AXIS = Stroke(0.35)
 _THIN = Stroke(0.18, "#555555")
+# The ring round a velocity read off a plan (mm).
+PLAN_RING_MM = 1.1
 _RAY = Stroke(0.15, "#7a7a7a")
 
 TITLE_SIZE = 6.0
@@ -185,6 +188,8 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
 
     drawn: list[Primitive] = [Polyline(curve, _CURVE)]
     drawn.append(Polyline(points, _CHORD))
+    if kind == "velocity":  # the values the velocity plans give, ringed: the third method beside the two
+        drawn.extend(Circle((x * along_mm, value / scale), PLAN_RING_MM, _AXIS, None) for x, value in record.v_plans)
     drawn.extend(dot_marker(p, 0.55, _CHORD_COLOUR) for k, p in enumerate(points) if k % shown == 0)
     if pole is not None:
         drawn.append(dot_marker((-pole, 0.0), 0.7))
@@ -267,6 +272,10 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
     ]
+    if record.v_plans:
+        third = second + 14.0 + text_width(words["kd_chord"], SCALE_SIZE) + 8.0
+        items += [Circle((third + 6.0, y), PLAN_RING_MM, _AXIS, None),
+                  Text((third + 14.0, y - 1.2), words["kd_plans"], SCALE_SIZE, "start")]
     width = scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole)
     items += [Text((0.0, y - 8.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
               for k, line in enumerate(fitted(_abscissa_scale(record, words), max(width, second + 40.0), SCALE_SIZE))]

@@ -450,13 +450,13 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     millimetres, the fields by whole millimetres; the scales follow
     from them as they always do.
     """
-    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, interval_count, kinematic_diagrams
+    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, interval_count, of_analysis
     from . import diagrams as diagrams_layout
 
     text = strings(analysis.scene.locale)
 
     def drawn_at(axis: float, field: float) -> tuple[str, list[list[Layer]]]:
-        record = kinematic_diagrams(analysis.mechanism, analysis.positions, axis_mm=axis, field_mm=field)
+        record = of_analysis(analysis, axis_mm=axis, field_mm=field)
         return text["kd_title"].format(link=record.link, point=record.point or ""), diagrams_layout.parts(record, text)
 
     form = form_of(analysis.scene.locale)
