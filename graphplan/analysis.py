@@ -38,29 +38,6 @@ VELOCITY_PLANS_FIELD_MM = 120.0
 
 
 @dataclass(frozen=True)
-class PlanPosition:
-    """The plans of one position listed in ``positions.plans``, their readings and errors."""
-
-    number: int
-    index: int
-    positions: dict[str, complex]
-    directions: dict[int, complex]
-    velocity: Plan
-    acceleration: Plan
-    readings: tuple[Reading, ...]
-    errors: tuple[ErrorRow, ...]
-    loads: tuple[Load, ...] = ()
-    forces: ForcePlan | None = None
-    lever: Lever | None = None
-    with_friction: ForcePlan | None = None
-    lever_with_friction: Lever | None = None
-
-    @property
-    def plans(self) -> dict[str, Plan]:
-        return {"velocity": self.velocity, "acceleration": self.acceleration}
-
-
-@dataclass(frozen=True)
 class VelocityPosition:
     """The velocity plan of one position listed in ``positions.velocity_plans``, its readings and errors."""
 
@@ -75,6 +52,23 @@ class VelocityPosition:
     @property
     def plans(self) -> dict[str, Plan]:
         return {"velocity": self.velocity}
+
+
+@dataclass(frozen=True)
+class PlanPosition(VelocityPosition):
+    """The plans of one position listed in ``positions.plans``: the velocity plan with the acceleration plan,
+    the readings and errors of both, and the force analysis where the scene has one."""
+
+    acceleration: Plan
+    loads: tuple[Load, ...] = ()
+    forces: ForcePlan | None = None
+    lever: Lever | None = None
+    with_friction: ForcePlan | None = None
+    lever_with_friction: Lever | None = None
+
+    @property
+    def plans(self) -> dict[str, Plan]:
+        return {"velocity": self.velocity, "acceleration": self.acceleration}
 
 
 @dataclass(frozen=True)
@@ -277,7 +271,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             if rubbing is not None and not rubbing.locked:
                 settled = {name: found.force for name, found in rubbing.reactions.items()}
                 rubbing_lever = lever(mechanism, where, velocity, loads + friction_loads(friction, state, settled))
-        found.append(PlanPosition(number, index, where, directions, velocity, acceleration, tuple(table), tuple(rows),
+        found.append(PlanPosition(number, index, where, directions, velocity, tuple(table), tuple(rows), acceleration,
                                   loads, forces, on_lever, rubbing, rubbing_lever))
     return tuple(found), tuple(warnings)
 

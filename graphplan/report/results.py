@@ -193,7 +193,7 @@ def results_without_linkage(scene) -> dict[str, Any]:
     return {"graphplan": __version__, "versions": versions(), "scene": scene.title}
 
 
-def _plans(plan: PlanPosition | VelocityPosition) -> dict[str, Any]:
+def _plans(plan: VelocityPosition) -> dict[str, Any]:
     """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed."""
     result = {}
     for kind, drawn in plan.plans.items():

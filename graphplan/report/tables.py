@@ -44,7 +44,7 @@ def unit_of(quantity: str, text: dict[str, str]) -> str:
     return text["unit_m_per_s" if quantity.startswith("V") else "unit_m_per_s2"]
 
 
-def _grouped(plan: PlanPosition | VelocityPosition) -> tuple[dict[str, dict[str, ErrorRow]], list[str]]:
+def _grouped(plan: VelocityPosition) -> tuple[dict[str, dict[str, ErrorRow]], list[str]]:
     """A position's quantities in reading order with the error row of each source, and the sources present."""
     table: dict[str, dict[str, ErrorRow]] = defaultdict(dict)
     for row in plan.errors:
