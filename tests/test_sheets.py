@@ -745,3 +745,28 @@ def test_diagrams_too_big_for_a_sheet_whole_stand_apart_on_it(analyses):
     for sheet in sheets:
         for rect in placed_bounds(sheet).values():
             assert inside(rect, sheet.frame) and not overlap(rect, sheet.title_block)
+
+
+def test_a_part_that_shares_its_sheet_with_the_part_it_goes_on_from_stands_without_a_continued_heading():
+    """The crank-rocker starter's force sheet of position 11 fits A2 only in parts, and both parts fit the one
+    sheet beside the title block: they read as one drawing under one heading. A part on a sheet of its own
+    keeps its heading, which says it goes on from an earlier sheet."""
+    from importlib import resources
+
+    scene = graphplan.scene.loads(resources.files("graphplan").joinpath("templates/crank-rocker.toml").read_text(
+        encoding="utf-8"))
+    sheets = course_sheets(analyse(scene), "A2")
+    marker = strings(scene.locale)["force_sheet_continued"].format(title="").strip()
+
+    def headings(sheet):
+        return [text.text for layer in sheet.layers if layer.name.endswith("sheet-title")
+                for text in layer.items if isinstance(text, Text)]
+
+    shared = [sheet for sheet in sheets if any(f"{name}-2" in sheet.panels for name in sheet.panels)]
+    alone = [sheet for sheet in sheets if sheet not in shared and any(name.endswith("-2") for name in sheet.panels)]
+    assert shared and alone
+    for sheet in shared:
+        assert not any(marker in text for text in headings(sheet))
+        assert any(name.endswith("-2") for name in sheet.panels)
+    for sheet in alone:
+        assert any(marker in text for text in headings(sheet))

@@ -37,6 +37,8 @@ MOST_ROWS_TRIED_STACKED = 6
 LETTER_SIZES = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)
 
 Fits = Callable[[float, float], bool]
+# The layer of a force sheet's (or a part's) heading: its title and the line of its scales.
+HEADING_LAYER = "sheet-title"
 # The title of a part that stands with no heading at all: a drawing that a sheet holds only so.  A heading's
 # own titles are never empty.
 HEADLESS = ""
@@ -254,7 +256,7 @@ class Rows:
         """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales."""
         size = self.heading.title_size
         lines = fitted(title, max(width, CAPTION_WIDTH_MM), size, "bold")
-        return Layer("sheet-title", (
+        return Layer(HEADING_LAYER, (
             *(Text((left, scales_line + CAPTION_LINE * size * (len(lines) - k)), line, size, "start",
                    weight="bold") for k, line in enumerate(lines)),
             Text((left, scales_line), self.heading.scales, self.heading.size, "start")))

@@ -340,3 +340,12 @@ def in_language(layers: Sequence[Layer], locale: str, title: str = "") -> list[L
 def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
     """``layers`` shifted by (dx, dy) mm."""
     return [Layer(layer.name, tuple(moved(item, dx, dy) for item in layer.items)) for layer in layers]
+
+
+def prefixed(layers: Sequence[Layer], prefix: str) -> list[Layer]:
+    """Layers and arrow keys named ``prefix-...``: the ids of two drawings in one SVG never clash."""
+    def named(value: str) -> str:
+        return f"{prefix}-{value}" if value else prefix
+
+    return [Layer(named(layer.name), tuple(replace(item, key=named(item.key)) if isinstance(item, Arrow) and item.key
+                                           else item for item in layer.items)) for layer in layers]

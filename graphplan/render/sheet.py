@@ -73,6 +73,7 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
+from .force_rows import HEADING_LAYER
 from .formats import (
     BIGGER,
     FORMATS,
@@ -86,7 +87,7 @@ from .formats import (
 )
 from .numerals import scale_factor
 from .plans import CAPTION_GAP_MM, Arrangement
-from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers
+from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers, prefixed
 from .svg import to_svg
 from .title_block import Details, TitleBlockFields, form_of, labels, scale_text, title_block
 
@@ -131,6 +132,9 @@ class Panel:
     label: str = ""
     length_scale: float | None = None
     alternatives: tuple[Panel, ...] = ()
+    # The part of the same drawing this one goes on from (a force sheet's "continued" part): where both stand
+    # on one sheet, this one's heading is left off, and the two read as one drawing.
+    continues: str = ""
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -347,8 +351,9 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                     drawn, parts = larger, larger_parts
                     one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
                     break
-            panels = [split(arrangement, one.name if k == 0 else f"{one.name}-{k + 1}", one.label, _group_of_field)
-                      for k, arrangement in enumerate(parts)]
+            names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
+            panels = [replace(split(arrangement, name, one.label, _group_of_field), continues=names[k - 1] if k else "")
+                      for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
             break
         # A drawing too big for a sheet: smaller lettering, then a larger scale.
         unheld = rows.unheld(fits)
@@ -1152,8 +1157,12 @@ def _drawn(pages: Sequence[_Page], sheet: str, locale: str, kind: str, scale: fl
                                   sheet=first + k, sheets=count, language=locale)
         layers: list[Layer] = []
         placed: dict[str, Rect] = {}
+        names = {panel.name for panel, _, _ in page.placed}
         for panel, rect, (dx, dy) in page.placed:
-            layers.extend(_prefixed(moved_layers(panel.layers, dx, dy), panel.name))
+            drawn = panel.layers
+            if panel.continues in names:  # its heading would say "continued" beside the part it goes on from
+                drawn = tuple(layer for layer in drawn if layer.name != HEADING_LAYER)
+            layers.extend(prefixed(moved_layers(drawn, dx, dy), panel.name))
             placed[panel.name] = rect
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
@@ -1169,17 +1178,8 @@ def _drawing_name(page: _Page) -> str:
 
 
 def _unframed(panel: Panel, number: int, count: int) -> Sheet:
-    layers = _prefixed(list(panel.layers), panel.name)
+    layers = prefixed(list(panel.layers), panel.name)
     return Sheet("none", None, layers, None, None, {panel.name: panel.extent}, number, count)
-
-
-def _prefixed(layers: Sequence[Layer], prefix: str) -> list[Layer]:
-    """Layers and arrow keys named ``prefix-...``: the ids of two panels on one sheet never clash."""
-    def named(value: str) -> str:
-        return f"{prefix}-{value}" if value else prefix
-
-    return [Layer(named(layer.name), tuple(replace(item, key=named(item.key)) if isinstance(item, Arrow) and item.key
-                                           else item for item in layer.items)) for layer in layers]
 
 
 def _frame(page: _Page, form: str) -> list[Primitive]:

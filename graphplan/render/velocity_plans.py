@@ -4,10 +4,10 @@ A course project draws the velocity plan of each of the twelve positions
 (the equivalent model of the machine is read off them) in rows beside the
 plan of positions.  Each plan is drawn as on a plan sheet
 (:func:`graphplan.render.plans.plan_layers`) over its position's number;
-this module only sets them out: in a grid of equal cells, read left to
-right and top to bottom, its columns chosen so that the grid is about as
-wide against its height as a sheet of the A series, under the drawing's
-title and its μV.  Each plan stands in a field of its own,
+this module only sets them out: in a grid read left to right and top to
+bottom, each column as wide as its widest plan and each row as tall as its
+tallest, its columns chosen so that the grid is about as wide against its
+height as a sheet of the A series, under the drawing's title and its μV.  Each plan stands in a field of its own,
 ``position-N``, so that a sheet too small for the whole takes the plans
 apart (:func:`graphplan.render.sheet.split`), the title with the first.
 """
@@ -16,12 +16,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from ..mechanism import Mechanism
 from ..plans import Plan
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, Arrangement, caption_texts, plan_layers
-from .primitives import Arrow, Layer, Text, bounds, bounds_of, moved_layers, text_width
+from .primitives import Layer, Text, bounds, bounds_of, moved_layers, prefixed, text_width
 
 # Between two cells of the grid (mm): less than between a plan sheet's drawings, as the plans are one set.
 CELL_GAP_MM = 15.0
@@ -67,7 +67,7 @@ def arrange(drawing: VelocityPlans, columns: int | None = None) -> Arrangement:
 
 def arrangements(drawing: VelocityPlans, column_counts: Sequence[int | None]) -> list[Arrangement]:
     """The grid of :func:`arrange` in each of ``column_counts``, the plans drawn once for all."""
-    drawn = [_prefixed(plan_layers(plan, "velocity", drawing.pole, drawing.mechanism), field_name(number))
+    drawn = [prefixed(plan_layers(plan, "velocity", drawing.pole, drawing.mechanism), field_name(number))
              for number, plan in drawing.plans]
     return [_grid_arrangement(drawing, drawn, columns) for columns in column_counts]
 
@@ -117,13 +117,6 @@ def _aspect(columns: int, widths: Sequence[float], heights: Sequence[float], dep
     width = sum(column_widths) + CELL_GAP_MM * (columns - 1)
     height = sum(row_heights) + sum(row_depths) + CELL_GAP_MM * (len(row_heights) - 1)
     return width / height / SHEET_ASPECT
-
-
-def _prefixed(layers: Sequence[Layer], prefix: str) -> list[Layer]:
-    """A plan's layers and arrow ids named after its field, so that twelve plans' ids never clash."""
-    return [Layer(f"{prefix}-{layer.name}", tuple(replace(item, key=f"{prefix}-{item.key}")
-                                                  if isinstance(item, Arrow) and item.key else item
-                                                  for item in layer.items)) for layer in layers]
 
 
 __all__ = ["VelocityPlans", "arrange", "arrangements", "field_name", "layout"]
