@@ -172,6 +172,16 @@ def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, c
             {number: complex(at(link.u, index)) for number, link in motion.links.items()})
 
 
+def _regular(motion: Motion, numbers: tuple[int, ...]) -> Iterator[tuple[int, int, dict[str, complex], dict[int, complex]]]:
+    """(number, index, where the points are, how the links lie) of each position of ``numbers`` that is not
+    singular (a singular one is already among the motion's warnings)."""
+    number_from = motion.mechanism.scene.positions.number_from
+    for number in numbers:
+        index = int(number - number_from)
+        if index not in motion.singular:
+            yield (number, index, *instant(motion, index))
+
+
 def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[VelocityPosition, ...], list[PositionWarning]]:
     """The velocity plans of every position of ``positions.velocity_plans``, all at one μV.
 
@@ -183,11 +193,7 @@ def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[Velocit
     """
     scene = mechanism.scene
     found, warnings = [], []
-    for number in scene.positions.velocity_plans:
-        index = int(number - scene.positions.number_from)
-        if index in motion.singular:  # already among the motion's warnings
-            continue
-        where, directions = instant(motion, index)
+    for number, index, where, directions in _regular(motion, scene.positions.velocity_plans):
         try:
             found.append((number, index, where, directions, velocity_plan(mechanism, where, directions)))
         except ParallelLinesError as error:
@@ -233,11 +239,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
     """
     scene = mechanism.scene
     found, warnings = [], []
-    for number in scene.positions.plans:
-        index = int(number - scene.positions.number_from)
-        if index in motion.singular:  # already among the motion's warnings
-            continue
-        where, directions = instant(motion, index)
+    for number, index, where, directions in _regular(motion, scene.positions.plans):
         try:
             velocity = velocity_plan(mechanism, where, directions)
             acceleration = acceleration_plan(mechanism, where, directions, velocity)
