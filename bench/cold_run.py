@@ -42,6 +42,14 @@ def installed_like(scratch: Path) -> dict[str, str]:
     return environment
 
 
+def write_results(stem: str, result: dict, markdown: str) -> None:
+    """``result`` as bench/results/<stem>.json and ``markdown`` as <stem>.md."""
+    out = HERE / "results"
+    out.mkdir(exist_ok=True)
+    (out / f"{stem}.json").write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
+    (out / f"{stem}.md").write_text(markdown, encoding="utf-8")
+
+
 def main() -> None:
     with tempfile.TemporaryDirectory() as scratch:
         environment = installed_like(Path(scratch))
@@ -53,15 +61,13 @@ def main() -> None:
     result = {"scene": SCENE.name, "runs": RUNS, "median_s": statistics.median(runs), "max_s": max(runs),
               "python_startup_median_s": statistics.median(bare), "target_s": TARGET_S, "files": files}
     result["ratio_to_python_startup"] = result["median_s"] / result["python_startup_median_s"]
-    out = HERE / "results"
-    out.mkdir(exist_ok=True)
-    (out / "cold_run.json").write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
-    (out / "cold_run.md").write_text(
+    markdown = (
         f"# Cold `graphplan run` on {SCENE.name}\n\n"
         f"Median of {RUNS} fresh interpreters: **{result['median_s']:.3f} s** (max {result['max_s']:.3f} s; "
         f"target {TARGET_S} s); a bare Python start-up takes {result['python_startup_median_s']:.3f} s "
         f"({result['ratio_to_python_startup']:.1f}× that). Files written: {', '.join(files)}.\n"
-        "Regenerate with `python bench/cold_run.py`.\n", encoding="utf-8")
+        "Regenerate with `python bench/cold_run.py`.\n")
+    write_results("cold_run", result, markdown)
     print(f"cold run: median {result['median_s']:.3f} s (target {TARGET_S} s)")
 
 

@@ -11,7 +11,6 @@ Results go to bench/results/length_scale_choice.json and .md. Target: the choice
 
 from __future__ import annotations
 
-import json
 import re
 import statistics
 import subprocess
@@ -20,13 +19,12 @@ import tempfile
 import time
 from pathlib import Path
 
-from cold_run import installed_like
+from cold_run import installed_like, write_results
 
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.render.drawings import length_scale
 
-HERE = Path(__file__).resolve().parent
 RUNS = 5
 TARGET_RATIO = 1.6
 
@@ -61,16 +59,14 @@ def main() -> None:
               "chosen_median_s": statistics.median(chosen), "given_median_s": statistics.median(given),
               "drawings_identical": same, "target_ratio": TARGET_RATIO}
     result["ratio"] = result["chosen_median_s"] / result["given_median_s"]
-    out = HERE / "results"
-    out.mkdir(exist_ok=True)
-    (out / "length_scale_choice.json").write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
-    (out / "length_scale_choice.md").write_text(
+    markdown = (
         "# What choosing μl costs a run\n\n"
         f"The shaper starter without `length_scale` (μl chosen: {scale:g} m/mm) against the same scene with it "
         f"written in; medians of {RUNS} alternate fresh runs: **{result['chosen_median_s']:.2f} s** against "
         f"**{result['given_median_s']:.2f} s**, ratio **{result['ratio']:.2f}** (target ≤ {TARGET_RATIO}); the "
         f"drawings {'are' if same else 'are NOT'} byte-identical.\n"
-        "Regenerate with `python bench/length_scale_choice.py`.\n", encoding="utf-8")
+        "Regenerate with `python bench/length_scale_choice.py`.\n")
+    write_results("length_scale_choice", result, markdown)
     print(f"choosing μl: {result['ratio']:.2f}× the run with it given (target ≤ {TARGET_RATIO})")
 
 
