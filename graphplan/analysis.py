@@ -88,6 +88,14 @@ class Analysis:
     velocity_plans: tuple[VelocityPosition, ...] = ()
 
     @property
+    def drawn_velocities(self) -> tuple[VelocityPosition, ...]:
+        """Each position with a velocity plan, in order: its plan sheet's (drawn larger) where it has one, else
+        its velocity plan of every position. What a reading of velocities alone takes, position by position."""
+        drawn = {position.index: position for position in self.velocity_plans}
+        drawn.update({plan.index: plan for plan in self.plans})
+        return tuple(drawn[index] for index in sorted(drawn))
+
+    @property
     def errors(self) -> tuple[ErrorRow, ...]:
         """Every error row of the run: the plan positions', then those of the velocity plans of the other
         positions (a plan position's velocities are read off its plan sheet's plan, drawn larger)."""

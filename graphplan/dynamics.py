@@ -386,12 +386,9 @@ def plan_reductions(analysis: Analysis) -> tuple[PlanReduction, ...]:
     exact_state = motion_state(motion)
     exact_inertia = sum(_link_inertia(mechanism, exact_state, velocity, motion.count).values(), np.zeros(motion.count))
     exact_power = sum(_powers(mechanism, exact_state, acting, motion.count))
-    # A plan sheet's velocity plan, drawn larger, where a position has one; else its velocity plan of every
-    # position.  Only velocities enter: no acceleration is read.
-    drawn = {position.index: position for position in analysis.velocity_plans}
-    drawn.update({plan.index: plan for plan in analysis.plans})
     found = []
-    for index, plan in sorted(drawn.items()):
+    for plan in analysis.drawn_velocities:  # only velocities enter: no acceleration is read
+        index = plan.index
         state = plan_state(mechanism, plan.positions, plan.velocity, None)
         column = acting[:, index:index + 1]
         inertia = float(sum(_link_inertia(mechanism, state, velocity, 1).values(), np.zeros(1))[0])

@@ -315,8 +315,8 @@ def of_analysis(analysis: Analysis, axis_mm: float = AXIS_MM, field_mm: float = 
 
 def _read_off_plans(analysis: Analysis, record: KinematicDiagrams) -> tuple[tuple[float, float], ...]:
     """(abscissa, velocity) of the output link at each position with a velocity plan, as the plan gives it:
-    ω of the link from its plan, or its point's velocity along the link's direction; the plan sheet's plan
-    where a position has one, else its velocity plan of every position."""
+    ω of the link from its plan, or its point's velocity along the link's direction
+    (:attr:`~graphplan.analysis.Analysis.drawn_velocities`)."""
     working = analysis.scene.positions.working
     assert working is not None
     sign = 1.0 if working.sense in ("ccw", "forward") else -1.0
@@ -324,13 +324,11 @@ def _read_off_plans(analysis: Analysis, record: KinematicDiagrams) -> tuple[tupl
     node_of: dict[int, float] = {}
     for number, node in zip(record.numbers, record.nodes.tolist(), strict=True):
         node_of.setdefault(number, node)  # a cycle's first position again at 2π stays at 0
-    drawn = {position.index: position for position in analysis.velocity_plans}
-    drawn.update({position.index: position for position in analysis.plans})
     found = []
-    for index, position in sorted(drawn.items()):
+    for position in analysis.drawn_velocities:
         plan = position.velocity
         if record.translating:
-            speed = float(dot(at(link.u, index), plan.value(link.origin)))
+            speed = float(dot(at(link.u, position.index), plan.value(link.origin)))
         else:
             speed = plan.rates[working.link]
         found.append((node_of[position.number], sign * speed))
