@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import weakref
 from collections.abc import Mapping
 
 import numpy as np
@@ -12,6 +11,7 @@ import numpy as np
 from ..analysis import Analysis, PlanPosition, instant
 from ..errors import SceneError
 from ..locale import strings
+from ..memo import OwnedMemo
 from ..plans import Plan, acceleration_plan, velocity_plan
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
 from ..statics import efficiency
@@ -31,9 +31,9 @@ LARGEST_PAPER_MM = 5000.0
 # Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
 _LARGER_SCALES_TRIED = 40
 
-# μl chosen for an analysis, by its id while it lives: the choice lays out every sheet at a few μl, and each
-# drawing of an analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
-_chosen_scales: dict[int, float] = {}
+# μl chosen for an analysis while it lives: the choice lays out every sheet at a few μl, and each drawing of an
+# analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
+_chosen_scales: OwnedMemo[float] = OwnedMemo()
 
 
 def length_scale(analysis: Analysis) -> float:
@@ -59,14 +59,11 @@ def length_scale(analysis: Analysis) -> float:
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
         return first
-    key = id(analysis)
-    if key not in _chosen_scales:
-        # The sheets build on this module's drawings: imported here, where they are laid out at each μl tried.
-        from .sheet import fewest_sheets_length_scale
+    # The sheets build on this module's drawings: imported here, where they are laid out at each μl tried.
+    from .sheet import fewest_sheets_length_scale
 
-        _chosen_scales[key] = fewest_sheets_length_scale(analysis, sheet, fitting_length_scale(analysis, sheet, first))
-        weakref.finalize(analysis, _chosen_scales.pop, key, None)
-    return _chosen_scales[key]
+    return _chosen_scales.get(analysis, sheet, lambda: fewest_sheets_length_scale(
+        analysis, sheet, fitting_length_scale(analysis, sheet, first)))
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:

@@ -48,14 +48,13 @@ import contextlib
 import itertools
 import math
 import re
-import weakref
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import asdict, dataclass, field, replace
-from typing import Any
 
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
 from ..locale import strings
+from ..memo import OwnedMemo
 from ..scales import format_scale, next_standard_scale, standard_scale
 from . import forces as force_layout
 from . import plans as plan_layout
@@ -578,25 +577,15 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
 # few μl (:func:`fewest_sheets_length_scale`) and the run lays out those of the μl chosen once more.  An
 # analysis fixed at a μl (:func:`~graphplan.render.drawings.at_length_scale`) shares its motion with the
-# analysis it is made from: the entries go when that motion does.
+# analysis it is made from: the panels are kept by that motion while it lives.
 _LaidOut = tuple[list[Panel], list[tuple[Panel, list[Panel]]]]
-_laid_out_panels: dict[tuple[int, Any, str, str], _LaidOut] = {}
+_laid_out_panels: OwnedMemo[_LaidOut] = OwnedMemo()
 
 
 def _laid_out(analysis: Analysis, sheet: str) -> _LaidOut:
     """:func:`kinematics_panels` and :func:`_force_sheets` of ``analysis`` on ``sheet``, each laid out once."""
-    motion = analysis.motion
-    key = (id(motion), analysis.scene.drawing, analysis.scene.locale, sheet)
-    if key not in _laid_out_panels:
-        if not any(known[0] == key[0] for known in _laid_out_panels):
-            weakref.finalize(motion, _forget_laid_out, key[0])
-        _laid_out_panels[key] = (kinematics_panels(analysis), _force_sheets(analysis, sheet))
-    return _laid_out_panels[key]
-
-
-def _forget_laid_out(motion_id: int) -> None:
-    for key in [key for key in _laid_out_panels if key[0] == motion_id]:
-        del _laid_out_panels[key]
+    return _laid_out_panels.get(analysis.motion, (analysis.scene.drawing, analysis.scene.locale, sheet),
+                                lambda: (kinematics_panels(analysis), _force_sheets(analysis, sheet)))
 
 
 def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:

@@ -1,0 +1,42 @@
+"""Values worked out for an object and kept while it lives.
+
+An analysis or a motion holds arrays, so it cannot be a dictionary key: it is
+known by its id.  An id is reused once its object is gone, so each entry is
+given up when its owner goes (``weakref.finalize``), and a new object with an
+old id never finds the old object's values.
+"""
+
+from __future__ import annotations
+
+import weakref
+from collections.abc import Callable, Hashable
+from typing import Generic, TypeVar
+
+T = TypeVar("T")
+
+
+class OwnedMemo(Generic[T]):
+    """Values by (owner, key), each made once while its owner lives."""
+
+    def __init__(self) -> None:
+        self._values: dict[tuple[int, Hashable], T] = {}
+
+    def get(self, owner: object, key: Hashable, make: Callable[[], T]) -> T:
+        """The value for ``owner`` and ``key``: ``make()`` the first time, the same value after."""
+        entry = (id(owner), key)
+        if entry not in self._values:
+            value = make()
+            if not any(known == entry[0] for known, _ in self._values):
+                weakref.finalize(owner, self._forget, entry[0])
+            self._values[entry] = value
+        return self._values[entry]
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def _forget(self, owner_id: int) -> None:
+        for entry in [entry for entry in self._values if entry[0] == owner_id]:
+            del self._values[entry]
+
+
+__all__ = ["OwnedMemo"]

@@ -1,0 +1,51 @@
+"""graphplan.memo.OwnedMemo: a value worked out for an object is made once and given up with the object."""
+
+import gc
+
+from graphplan.memo import OwnedMemo
+
+
+class Owner:
+    """Unhashable, as an analysis with its arrays is."""
+
+    __hash__ = None
+
+
+def test_a_value_is_made_once_for_each_owner_and_key_and_given_up_with_its_owner():
+    memo: OwnedMemo[list] = OwnedMemo()
+    made = []
+
+    def make(tag):
+        def value():
+            made.append(tag)
+            return [tag]
+        return value
+
+    first, second = Owner(), Owner()
+    kept = memo.get(first, "a", make("first a"))
+    assert memo.get(first, "a", make("again")) is kept
+    assert memo.get(first, "b", make("first b")) == ["first b"]
+    assert memo.get(second, "a", make("second a")) == ["second a"]
+    assert made == ["first a", "first b", "second a"]
+    assert len(memo) == 3
+    del first, kept
+    gc.collect()
+    assert len(memo) == 1  # both of the first owner's values went with it
+    del second
+    gc.collect()
+    assert len(memo) == 0
+
+
+def test_a_failed_making_keeps_nothing():
+    memo: OwnedMemo[int] = OwnedMemo()
+    owner = Owner()
+
+    def broken():
+        raise ValueError("no value")
+
+    try:
+        memo.get(owner, "k", broken)
+    except ValueError:
+        pass
+    assert len(memo) == 0
+    assert memo.get(owner, "k", lambda: 5) == 5
