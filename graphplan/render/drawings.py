@@ -22,6 +22,7 @@ from .numerals import scale_factor
 from .primitives import Layer, bounds, in_language
 from .svg import to_svg
 from .title_block import form_of
+from .wrapping import fitted
 
 # The plan of positions is scaled to fit this field when the scene gives no μl.
 POSITIONS_FIELD_MM = 200.0
@@ -232,7 +233,9 @@ def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str
     unit = text["unit_m_per_s" if kind == "velocity" else "unit_m_per_s2"]
     values = [f"{name} = {value:.3g} {unit}" for name, value in short]
     lines = [text["plan_too_short"].format(least=f"{plans.ZERO_MM:g}")]
-    lines += ["; ".join(values[k:k + _SHORT_PER_LINE]) for k in range(0, len(values), _SHORT_PER_LINE)]
+    # A line too wide for the plan's field (long names such as aΣ6Bⁿ) breaks after a semicolon.
+    lines += [piece for k in range(0, len(values), _SHORT_PER_LINE)
+              for piece in fitted("; ".join(values[k:k + _SHORT_PER_LINE]), plans.plan_field_mm(), plans.CAPTION_SIZE)]
     return lines
 
 
