@@ -601,7 +601,8 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
 def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, parts: list[str]) -> str:
     """The moment equation as the note writes it: ``ΣMB(3): R23τ·AB − G3·h1 + Fu3·h2 + Mu3 = 0,  R23τ = 26.13 N``.
 
-    The unknown's arm is named by its segment (its joint and the centre);
+    The unknown's arm is named by its segment (its joint and the centre) where
+    it is square to that segment, else ``h``;
     where the unknown is a couple (the balancing moment, the shift ``x`` of a
     normal reaction along its slide), the couple stands alone.  An equation
     with nothing in it (a load through the joint) is left out.
@@ -625,7 +626,13 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
     joint = next((found.joint for found in group.found
                   if unknown.rstrip("τn") in (f"R{found.source}{found.target}", f"R{found.target}{found.source}")),
                  None)
-    arm = "h" if joint is None or joint == equation.about else "".join(sorted((joint, equation.about)))
+    # The arm is named by the segment from the centre to the joint only where it is that segment (a τ part square
+    # to its link); an unknown at an angle to it (a guide's normal reaction about Assur's point) has an arm h.
+    arm = "h"
+    if joint is not None and joint != equation.about:
+        segment = abs(sheet.positions[joint] - sheet.positions[equation.about])
+        if abs(segment - equation.arm) <= 1e-9 * segment:
+            arm = "".join(sorted((joint, equation.about)))
     return f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {significant(equation.value)} {text['newton']}"
 
 
