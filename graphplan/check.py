@@ -156,8 +156,8 @@ def sliding_pairs(mechanism: Mechanism, positions: Mapping[str, complex]) -> lis
 
     They are the pairs of ``Motion.slides``, in the same order: an RRP's
     slider on its guide, an RPR's block on the lever, each PRP slider on its
-    guide, an RPP's block in the slot of link b and link b on its guide.  The
-    driver's own slide is given, not constructed, so it is not among them.
+    guide, an RPP's block in the slot of link b and link b on its guide, a
+    triad's slider on its guide.  The driver's own slide is given, not constructed, so it is not among them.
     """
     frame = mechanism.scene.frame_link
     found: list[tuple[int, int, str]] = []
@@ -172,6 +172,9 @@ def sliding_pairs(mechanism: Mechanism, positions: Mapping[str, complex]) -> lis
         elif group.kind == "RPP":
             found += [(group.links[0], group.links[1], group.joints[0]),
                       (group.links[1], guide_link(mechanism, group.guide), group.joints[1])]
+        elif group.kind == "triad" and group.guide is not None:
+            _, inner, slider = group.arms()[group.sliding]
+            found.append((slider, guide_link(mechanism, group.guide), inner))
     pairs = []
     for slider, guide, joint in found:
         if guide == frame:

@@ -257,21 +257,27 @@ def _closure(group, scene, points, angles) -> tuple[Callable, Callable]:
             origin, u, guide_angle = _guide(scene, group.guide, points, angles)
             return {b_name: origin + q1 * u}, {group.links[0]: guide_angle + mpf(group.angle), group.links[1]: guide_angle}
     elif kind == "triad":
-        a_name, b_name, c_name, d_name, e_name, f_name = group.joints
-        ab, cd, ef = (mpf(x) for x in group.lengths)
+        b_name, d_name, f_name = group.new_joints()
         bd = mpf(group.sides[0])
         corner_f = _corner_f(group, points)
         la, lb, lc, lt = group.links
 
+        def inner(leg, q):
+            """The inner joint of a leg: its binary link at angle q, or the slider s = q along its guide."""
+            if leg == group.sliding:
+                origin, u, _ = _guide(scene, group.guide, points, angles)
+                return origin + q * u
+            return points[group.joints[2 * leg]] + mpf(group.lengths[leg]) * expi(q)
+
         def residual(qa, qb, qc, psi):
-            b = points[a_name] + ab * expi(qa)
-            return (b + bd * expi(psi) - points[c_name] - cd * expi(qb),
-                    b + corner_f * expi(psi) - points[e_name] - ef * expi(qc))
+            b = inner(0, qa)
+            return b + bd * expi(psi) - inner(1, qb), b + corner_f * expi(psi) - inner(2, qc)
 
         def outputs(qa, qb, qc, psi):
-            b = points[a_name] + ab * expi(qa)
-            return ({b_name: b, d_name: points[c_name] + cd * expi(qb), f_name: points[e_name] + ef * expi(qc)},
-                    {la: qa, lb: qb, lc: qc, lt: psi})
+            turned = {la: qa, lb: qb, lc: qc, lt: psi}
+            if group.sliding is not None:
+                turned[group.links[group.sliding]] = _guide(scene, group.guide, points, angles)[2]
+            return {b_name: inner(0, qa), d_name: inner(1, qb), f_name: inner(2, qc)}, turned
     else:  # pragma: no cover - a new group kind needs its closure written here
         raise NotImplementedError(f"no reference closure for {kind} groups")
     return residual, outputs
@@ -313,7 +319,11 @@ def _first_guess(group, scene, points, angles, near: Mapping[str, complex], near
                      for g, u, _ in (_guide(scene, guide, points, angles) for guide in group.guide_pair))
     if kind == "triad":
         a, b, c, d, e, f = (value(name) for name in group.joints)
-        return mp.arg(b - a), mp.arg(d - c), mp.arg(f - e), mp.arg(d - b)
+        legs = [mp.arg(b - a), mp.arg(d - c), mp.arg(f - e)]
+        if group.sliding is not None:
+            origin, u, _ = _guide(scene, group.guide, points, angles)
+            legs[group.sliding] = mp.re((value(group.new_joints()[group.sliding]) - origin.d0) * mp.conj(u.d0))
+        return (*legs, mp.arg(d - b))
     a_name, b_name = group.joints
     origin, u, _ = _guide(scene, group.guide, points, angles)
     slot = u.d0 * mp.expj(mpf(group.angle))

@@ -195,9 +195,18 @@ def check_rpp(m: Solved, group) -> None:
 
 
 def check_triad(m: Solved, group) -> None:
+    """Each turning leg its length, the sliding leg's pin on its guide, BDF a rigid triangle turning as sketched."""
     a, b, c, d, e, f = (m.r(name) for name in group.joints)
-    for (outer, inner), length, (o_name, i_name) in zip(((a, b), (c, d), (e, f)), group.lengths,
-                                                         zip(group.joints[0::2], group.joints[1::2])):
+    legs = list(zip(((a, b), (c, d), (e, f)), group.lengths, zip(group.joints[0::2], group.joints[1::2])))
+    for n, ((outer, inner), length, (o_name, i_name)) in enumerate(legs):
+        if n == group.sliding:
+            origin, u = guide_line(m, group.guide)
+            assert_small(f"{i_name}'s distance from its guide", cross(u, inner - origin), m.size)
+            slider = group.links[n]
+            assert_small(f"angle of link {slider} − the guide's", wrapped(m.angle(slider) - np.angle(u)), 1.0)
+            s = slide_of(m, slider, i_name)
+            assert_small(f"{i_name} − (E + s·u)", inner - (origin + s * u), m.size)
+            continue
         assert_small(f"|{o_name}{i_name}| − {length}", np.abs(inner - outer) - length, m.size)
     bd, df, fb = group.sides
     assert_small("|BD| − lBD", np.abs(d - b) - bd, m.size)
@@ -209,8 +218,10 @@ def check_triad(m: Solved, group) -> None:
     assert turn[0] == np.sign(cross(sketch[group.joints[3]] - sketch[group.joints[1]],
                                     sketch[group.joints[5]] - sketch[group.joints[1]])), "BDF turns against the sketch"
     *binaries, ternary = group.links
-    for link, (o_name, i_name), (outer, inner) in zip(binaries, zip(group.joints[0::2], group.joints[1::2]),
-                                                      ((a, b), (c, d), (e, f))):
+    for n, (link, (o_name, i_name), (outer, inner)) in enumerate(zip(binaries, zip(group.joints[0::2], group.joints[1::2]),
+                                                                     ((a, b), (c, d), (e, f)))):
+        if n == group.sliding:
+            continue
         assert_small(f"angle of link {link} − direction {o_name}{i_name}", wrapped(m.angle(link) - np.angle(inner - outer)), 1.0)
     assert_small(f"angle of link {ternary} − direction BD", wrapped(m.angle(ternary) - np.angle(d - b)), 1.0)
 

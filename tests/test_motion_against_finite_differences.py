@@ -40,8 +40,8 @@ from graphplan.scene import loads
 FIXTURE_DIR = Path(__file__).resolve().parent.parent / "fixtures"
 FIXTURES = sorted(FIXTURE_DIR.glob("*.toml"))
 
-# Variants of the fixtures for what no fixture has: guides on moving links for RRP and RPP, a PRP
-# between two moving links with offsets, a slotted lever whose slot misses its pivot.  Each is
+# Variants of the fixtures for what no fixture has: guides on moving links for RRP, RPP and a triad's
+# sliding leg, a PRP between two moving links with offsets, a slotted lever whose slot misses its pivot.  Each is
 # a fixture's scene with a group added (links 5, 6 hung on the ratchet's rocker 4 and coupler 3)
 # or changed; each assembles over the whole crank revolution.
 _HUNG_ON_THE_RATCHET = {
@@ -69,6 +69,18 @@ links = [5, 6]
 joints = ["K"]
 guides = [{ link = 4, through = "C", angle = 0.0 }, { link = 3, through = "A", angle = 30.0 }]
 offsets = [0.01, -0.02]
+""",
+    # A triad whose slider 7 runs on the rocking link 4 (a Coriolis term), its other legs pinned to the
+    # coupler 3 at E and to the rocker at S4: links 5–8.
+    "ratchet+triad-slider-on-rocker": """
+[[groups]]
+kind = "triad"
+links = [5, 6, 7, 8]
+joints = ["E", "G", "S4", "K", "C", "L"]
+lengths = [0.26, 0.17]
+guides = { L = { link = 4, angle = 60.0 } }
+sides = [0.15, 0.17, 0.18]
+near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
 """,
 }
 

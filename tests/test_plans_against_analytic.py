@@ -9,7 +9,8 @@ velocity and acceleration of every sliding pair a group records.  Each quantity 
 of points, ω, and the acceleration plan's figure ratio √(ε² + ω⁴) for ε), so that a value that
 happens to be near zero is held to the plan's own precision rather than to itself.
 
-Variants written inline cover what no fixture has: guides on moving links for RRP and RPP, a PRP
+Variants written inline cover what no fixture has: guides on moving links for RRP, RPP and a
+triad's sliding leg, a PRP
 between two moving links with offsets, an RPR whose slot misses its pivot and whose pivot moves,
 and a driver with angular acceleration.
 
@@ -65,6 +66,7 @@ _OFF_LINE_POINT = {
     "ratchet+RRP-on-rocker": 'F5 = { link = 5, from = "E", toward = "K", at = 0.2, offset = 0.05 }',
     "ratchet+RPP-on-rocker": 'F6 = { link = 6, from = "K", toward = "E", at = 0.1, offset = 0.05 }',
     "ratchet+PRP-rocker-coupler": "",
+    "ratchet+triad-slider-on-rocker": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
 }
 _HUNG_ON_THE_RATCHET = {name: (GROUPS_ON_THE_RATCHET[name], point) for name, point in _OFF_LINE_POINT.items()}
 _HUNG_ON_THE_RATCHET["ratchet+RPR-moving-pivot-offset"] = ("""

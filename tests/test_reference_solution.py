@@ -8,7 +8,7 @@ stays on its circle.  Each holds with its first and second time derivatives, at 
 1e-40 of the mechanism's size.
 
 Cases: every fixture and the variants of the finite-difference tests (guides on moving links for
-RRP and RPP, a PRP between two moving links, an offset slot).
+RRP, RPP and a triad's sliding leg, a PRP between two moving links, an offset slot).
 """
 
 from __future__ import annotations
@@ -85,6 +85,9 @@ def test_link_lengths_hold_at_50_digits(case):
                     pairs += [(a, b, group.lengths[0]), (c, b, group.lengths[1])]
                 elif group.kind == "RRP":
                     pairs.append((*group.joints, group.length))
+                elif group.kind == "triad":
+                    pairs += [(group.joints[2 * n], group.joints[2 * n + 1], group.lengths[n]) for n in range(3)
+                              if n != group.sliding]
             for first, second, length in pairs:
                 (r1, v1, a1), (r2, v2, a2) = instant.points[first], instant.points[second]
                 d, dv, da = r2 - r1, v2 - v1, a2 - a1
@@ -119,6 +122,8 @@ def _lines(scene, mechanism):
                       (group.joints[0], group.joints[1], link, mpf(angle) + mpf(group.angle), 0.0)]
         elif group.kind == "RPR":
             lines.append((group.joints[0], group.joints[1], group.links[1], 0.0, group.offset))
+        elif group.kind == "triad" and group.sliding is not None:
+            lines.append((group.new_joints()[group.sliding], *guide_of(group.guide), 0.0))
     return lines
 
 

@@ -5,19 +5,26 @@ are the corners of the ternary (base) link t:
 
     |B − A| = AB,   |D − C| = CD,   |F − E| = EF,   BDF a rigid triangle.
 
-No closed form places it, so its pose q = (B, ψ), ψ the direction of BD, is found numerically.
-At the reference position every assembly is found (B swept round its circle about A, D from
-two circles, F from the triangle; each sign change of |F − E|² − EF² refined by Brent's method)
-and the one nearest the scene's sketch (``near``) is taken.  Every other position is reached
-from its neighbour by Newton's method, which is why the motion solves a mechanism with a triad
-on a grid of driver positions fine enough to follow one assembly (``continuation``).  The
-velocities and accelerations are the closure differentiated: one Jacobian, two linear solves.
+One leg may slide instead of turning: its binary link is a slider pivoted on the ternary link at
+its inner joint (F) and moving along a guide through its outer joint (E), on the frame or on an
+earlier link; its closure is F on that line.  Each inner joint so moves on a track at every
+instant, a circle about its outer joint or the guide's line.
+
+No closed form places the triad, so its pose q = (B, ψ), ψ the direction of BD, is found
+numerically.  At the reference position every assembly is found (the inner joint of a turning leg
+swept round its circle, the next turning leg's from two circles, the third corner from the
+triangle; each sign change of the third leg's closure refined by Brent's method) and the one
+nearest the scene's sketch (``near``) is taken.  Every other position is reached from its
+neighbour by Newton's method, which is why the motion solves a mechanism with a triad on a grid
+of driver positions fine enough to follow one assembly (``continuation``).  The velocities and
+accelerations are the closure differentiated: one Jacobian, two linear solves.
 
 The plans cannot cross two lines at B, D or F, each of which has three unknowns.  Assur's
-special point Σ of the ternary link can be: it lies where the lines of two binary links (AB and
-CD) cross, so that B's velocity relative to A and Σ's relative to B are both square to AB, and
-Σ's relative to D and D's relative to C both square to CD.  Then F follows from Σ and E by
-crossing two lines, and B and D by similarity.
+special point Σ of the ternary link can be: it lies where the lines of two turning binary links
+(AB and CD) cross, so that B's velocity relative to A and Σ's relative to B are both square to
+AB, and Σ's relative to D and D's relative to C both square to CD.  Then F follows from Σ and E
+by crossing two lines (square to EF, or along the guide where that leg slides), and B and D by
+similarity.  The force analysis takes the whole group's moments about Σ likewise.
 """
 
 from __future__ import annotations
@@ -30,14 +37,15 @@ import numpy as np
 from ..errors import AssemblyError, SceneError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line, cross_lines
-from ..kinematics import LinkMotion, PointMotion, Scalar, Vector, cross
+from ..kinematics import LinkMotion, PointMotion, Scalar, SlideMotion, Vector, cross
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy
-from .base import SINGULAR_SINE, Context, Group, GroupMotion
+from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
+from .sliding import coriolis, coriolis_letter, guide_link, guide_meaning, guide_point, turns
 
-# Samples of B's circle at the reference position: two assemblies closer than a 2048th of a
-# turn of AB would be missed, and such a triad is at a singular position anyway.
+# Samples of a turning leg's circle at the reference position: two assemblies closer than a 2048th of a
+# turn would be missed, and such a triad is at a singular position anyway.
 _SWEEP = 2048
 # Newton's step is trusted when it converges to this share of the group's size.
 _CONVERGED = 1e-12
@@ -63,6 +71,26 @@ class TriadBranch:
 
 
 @dataclass(frozen=True)
+class Track:
+    """Where a leg's inner joint may be at one instant: on the circle of ``radius`` about ``centre`` (the leg's
+    outer joint), or, for the leg that slides, on the guide's line through ``centre`` along unit ``u``."""
+
+    centre: complex
+    radius: float = 0.0
+    u: complex | None = None
+
+    def closure(self, point, size: float):
+        """Zero where ``point`` is on the track: |P − O|² − r², or size·(u × (P − O)); both in m²."""
+        if self.u is None:
+            return np.abs(point - self.centre) ** 2 - self.radius * self.radius
+        return size * (np.conj(self.u) * (point - self.centre)).imag
+
+    def gradient(self, point, size: float) -> complex:
+        """The closure's gradient in ``point``, as a vector."""
+        return 2 * (point - self.centre) if self.u is None else size * 1j * self.u
+
+
+@dataclass(frozen=True)
 class Triad(Group):
     kind = "triad"
     link_count = 4
@@ -71,13 +99,28 @@ class Triad(Group):
     continuation = True
     joint_roles = ("outer A (link a)", "inner B (links a, t)", "outer C (link b)", "inner D (links b, t)",
                    "outer E (link c)", "inner F (links c, t)")
+    # AB, CD, EF; 0 for the leg that slides.
     lengths: tuple[float, float, float] = (0.0, 0.0, 0.0)
     sides: tuple[float, float, float] = (0.0, 0.0, 0.0)
     near: tuple[tuple[str, complex], ...] = ()
+    # The leg that slides (0, 1 or 2, as a, b, c), and its guide through that leg's outer joint.
+    sliding: int | None = None
+    guide: Guide | None = None
 
     @classmethod
     def read(cls, table: Table, links: tuple[int, ...], joints: tuple[str, ...]) -> Triad:
-        lengths = table.numbers("lengths", 3, positive=True)
+        inner = (joints[1], joints[3], joints[5])
+        sliding, guide = _read_sliding_leg(table, joints)
+        turning = [n for n in range(3) if n != sliding]
+        bars = ", ".join(f"l{joints[2 * n]}{joints[2 * n + 1]}" for n in turning)
+        raw_lengths = table.raw("lengths")
+        if isinstance(raw_lengths, list) and len(raw_lengths) != len(turning):
+            why = "" if sliding is None else f" (the leg {joints[2 * sliding]}{joints[2 * sliding + 1]} slides)"
+            raise SceneError(table.where("lengths"), f"must have {len(turning)} entries, {bars}{why}, not "
+                                                     f"{len(raw_lengths)}", raw_lengths)
+        lengths = [0.0, 0.0, 0.0]
+        for n, length in zip(turning, table.numbers("lengths", len(turning), positive=True)):
+            lengths[n] = length
         sides = table.numbers("sides", 3, positive=True)
         bd, df, fb = sides
         longest = max(sides)
@@ -86,7 +129,6 @@ class Triad(Group):
                                                    f"the longest, {longest:g} m, must be shorter than the other two together",
                              list(sides))
         near_table = table.table("near")
-        inner = (joints[1], joints[3], joints[5])
         near = []
         for name in near_table.data:
             if name not in inner:
@@ -102,7 +144,8 @@ class Triad(Group):
             raise SceneError(near_table.path, f"the sketch's {', '.join(inner)} lie in a line; it must show which way "
                                               f"round the ternary link's corners run")
         table.done()
-        return cls(where=table.path, links=links, joints=joints, lengths=lengths, sides=sides, near=tuple(near))
+        return cls(where=table.path, links=links, joints=joints, lengths=tuple(lengths), sides=sides, near=tuple(near),
+                   sliding=sliding, guide=guide)
 
     @property
     def label(self) -> str:
@@ -112,27 +155,50 @@ class Triad(Group):
     def ternary(self) -> int:
         return self.links[3]
 
+    @property
+    def turning_legs(self) -> tuple[int, ...]:
+        return tuple(n for n in range(3) if n != self.sliding)
+
     def known_joints(self) -> tuple[str, ...]:
         return (self.joints[0], self.joints[2], self.joints[4])
 
     def new_joints(self) -> tuple[str, ...]:
         return (self.joints[1], self.joints[3], self.joints[5])
 
+    def guides(self) -> tuple[Guide, ...]:
+        return () if self.guide is None else (self.guide,)
+
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b, c, d, e, f = self.joints
         la, lb, lc, lt = self.links
-        return {la: (a, b), lb: (c, d), lc: (e, f), lt: (b, d, f)}
+        fixed = {la: (a, b), lb: (c, d), lc: (e, f), lt: (b, d, f)}
+        if self.sliding is not None:  # the slider carries its pin only: its outer joint is on the guide's link
+            _, inner, link = self.arms()[self.sliding]
+            fixed[link] = (inner,)
+        return fixed
 
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
         a, b, c, d, e, f = self.joints
         la, lb, lc, lt = self.links
-        return ((a, la, None), (b, lt, la), (c, lb, None), (d, lt, lb), (e, lc, None), (f, lt, lc))
+        pairs = [(a, la, None), (b, lt, la), (c, lb, None), (d, lt, lb), (e, lc, None), (f, lt, lc)]
+        if self.sliding is not None:
+            del pairs[2 * self.sliding]  # its outer pair slides
+        return tuple(pairs)
 
     def arms(self) -> tuple[tuple[str, str, int], ...]:
         """Each binary link as (outer joint, inner joint, link)."""
         a, b, c, d, e, f = self.joints
         la, lb, lc, _ = self.links
         return ((a, b, la), (c, d, lb), (e, f, lc))
+
+    def slider_link(self) -> int | None:
+        return None if self.sliding is None else self.arms()[self.sliding][2]
+
+    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
+        """The slider, when its guide turns (its acceleration then has a Coriolis component)."""
+        if self.guide is None or not turns(mechanism, guide_link(mechanism, self.guide)):
+            return ()
+        return (self.slider_link(),)
 
     # The position: the pose of the ternary link.
 
@@ -142,43 +208,60 @@ class Triad(Group):
         cosine = (bd * bd + fb * fb - df * df) / (2 * bd * fb)
         return fb * complex(cosine, turn * math.sqrt(max(0.0, 1 - cosine * cosine)))
 
+    def local_corners(self, turn: int) -> tuple[complex, complex, complex]:
+        """B, D, F in the ternary link's own frame."""
+        return 0j, complex(self.sides[0]), self.corner_f(turn)
+
     def corners(self, pose: Pose, turn: int) -> tuple[complex, complex, complex]:
         direction = complex(math.cos(pose.psi), math.sin(pose.psi))
-        return pose.b, pose.b + self.sides[0] * direction, pose.b + self.corner_f(turn) * direction
+        return tuple(pose.b + corner * direction for corner in self.local_corners(turn))  # type: ignore[return-value]
 
-    def assemblies(self, outer: tuple[complex, complex, complex], turn: int) -> list[Pose]:
-        """Every pose of the ternary link that closes the triad on the outer joints A, C, E."""
-        a, c, e = outer
-        ab, cd, ef = self.lengths
-        bd = self.sides[0]
-        local_f = self.corner_f(turn)
+    @property
+    def size(self) -> float:
+        """The group's size (m): the scale of its closure's residuals."""
+        return sum(self.lengths) + sum(self.sides)
+
+    def assemblies(self, tracks: tuple[Track, Track, Track], turn: int) -> list[Pose]:
+        """Every pose of the ternary link that puts each inner joint on its track.
+
+        The first turning leg's inner joint is swept round its circle, the second's found on its
+        circle at its distance from the first, the third corner follows from the triangle; the
+        roots of the third leg's closure are the assemblies.
+        """
+        swept, second = self.turning_legs[:2]
+        third = 3 - swept - second
+        local = self.local_corners(turn)
+        span = abs(local[second] - local[swept])
+        outer_p, outer_q = tracks[swept], tracks[second]
         theta = np.linspace(0.0, 2 * math.pi, _SWEEP + 1)
 
         def closing(angle, sign):
-            """|F − E|² − EF² with D on its two circles, and the direction of BD (NaN where D has none)."""
-            b = a + ab * np.exp(1j * angle)
-            towards = c - b
+            """The third leg's closure with the second leg's joint on its two circles, with B and the ternary
+            link's turn e^{iψ} there (NaN where the circles do not meet)."""
+            p = outer_p.centre + outer_p.radius * np.exp(1j * angle)
+            towards = outer_q.centre - p
             span2 = np.abs(towards) ** 2
             with np.errstate(divide="ignore", invalid="ignore"):
-                along = 0.5 + 0.5 * (bd * bd - cd * cd) / span2
-                height2 = bd * bd / span2 - along * along
-                d = b + towards * (along + 1j * sign * np.sqrt(height2))
-            direction = (d - b) / bd
-            return np.abs(b + local_f * direction - e) ** 2 - ef * ef, direction
+                along = 0.5 + 0.5 * (span * span - outer_q.radius ** 2) / span2
+                height2 = span * span / span2 - along * along
+                q = p + towards * (along + 1j * sign * np.sqrt(height2))
+            rotation = (q - p) / (local[second] - local[swept])
+            corner = p + (local[third] - local[swept]) * rotation
+            return tracks[third].closure(corner, self.size), p - local[swept] * rotation, rotation
 
         from scipy.optimize import brentq  # imported here, as in _settle: only a triad needs it
 
         poses = []
         for sign in (1, -1):
-            values, _ = closing(theta, sign)
+            values = closing(theta, sign)[0]
             crossing = np.flatnonzero(np.isfinite(values[:-1]) & np.isfinite(values[1:]) & (values[:-1] * values[1:] <= 0))
             for k in crossing:
                 if values[k] == 0 and k > 0:
                     continue  # already the upper end of the bracket before
                 angle = brentq(lambda t, sign=sign: float(closing(np.array([t]), sign)[0][0]), theta[k], theta[k + 1],
                                xtol=1e-15)
-                direction = complex(closing(np.array([angle]), sign)[1][0])
-                poses.append(Pose(a + ab * complex(math.cos(angle), math.sin(angle)), math.atan2(direction.imag, direction.real)))
+                _, b, rotation = closing(np.array([angle]), sign)
+                poses.append(Pose(complex(b[0]), float(np.angle(rotation[0]))))
         return poses
 
     def with_branch(self, context: Context) -> TriadBranch:
@@ -187,64 +270,83 @@ class Triad(Group):
         The candidates are the assemblies the sweep finds and the one Newton's method reaches
         from the sketch itself (the sweep may miss a root where D's circles just touch).
         """
-        outer = tuple(complex(np.atleast_1d(context.point(name).r)[0]) for name in self.known_joints())
+        tracks = self._tracks_at(context, 0)
         near = dict(self.near)
         sketch = [near[name] for name in self.new_joints()]
         turn = 1 if ((sketch[1] - sketch[0]).conjugate() * (sketch[2] - sketch[0])).imag > 0 else -1
-        candidates = self.assemblies(outer, turn)
-        from_sketch = self._settle(Pose(sketch[0], math.atan2(*reversed(_xy(sketch[1] - sketch[0])))), outer, turn)
+        candidates = self.assemblies(tracks, turn)
+        from_sketch = self._settle(Pose(sketch[0], math.atan2(*reversed(_xy(sketch[1] - sketch[0])))), tracks, turn)
         if from_sketch is not None:
             candidates.append(from_sketch)
         if not candidates:
-            context.fail_where(np.array([True]), lambda i, at: AssemblyError(self.joints[1], at, self.label, self._why_not(outer)))
+            context.fail_where(np.array([True]), lambda i, at: AssemblyError(self.joints[1], at, self.label, self._why_not(tracks)))
         best = min(candidates, key=lambda pose: sum(abs(p - q) ** 2 for p, q in zip(self.corners(pose, turn), sketch)))
         return TriadBranch(turn, best)
 
-    def _settle(self, guess: Pose, outer: tuple[complex, complex, complex], turn: int) -> Pose | None:
+    def _settle(self, guess: Pose, tracks: tuple[Track, Track, Track], turn: int) -> Pose | None:
         """Newton's method (scipy's hybrid Powell) from ``guess``; None when it does not close the triad."""
         # Imported here, not with the module: scipy.optimize takes a third of a cold run's time to import, and
         # only a scene with a triad needs it.
         from scipy.optimize import root
 
-        size = sum(self.lengths) + sum(self.sides)
-        found = root(self._residual, np.array([guess.b.real, guess.b.imag, guess.psi]), args=(outer, turn),
+        found = root(self._residual, np.array([guess.b.real, guess.b.imag, guess.psi]), args=(tracks, turn),
                      jac=True, method="hybr", options={"xtol": 1e-14})
-        if not np.all(np.abs(self._residual(found.x, outer, turn)[0]) <= _CONVERGED * size * size):
+        if not np.all(np.abs(self._residual(found.x, tracks, turn)[0]) <= _CONVERGED * self.size * self.size):
             return None
         return Pose(complex(found.x[0], found.x[1]), float(found.x[2]))
 
-    def _why_not(self, outer, walking: bool = False) -> str:
-        a, c, e = outer
+    def _why_not(self, tracks: tuple[Track, Track, Track], walking: bool = False) -> str:
         names = self.known_joints()
-        bars = ", ".join(f"{outer}{inner} = {length:g} m" for (outer, inner, _), length in zip(self.arms(), self.lengths))
-        where = (f"({bars}; {names[0]}–{names[1]} = {abs(c - a):.6g} m, "
+        legs = []
+        for (outer, inner, _), track in zip(self.arms(), tracks):
+            legs.append(f"{outer}{inner} = {track.radius:g} m" if track.u is None else
+                        f"{inner} slides on the guide through {outer} at "
+                        f"{math.degrees(math.atan2(track.u.imag, track.u.real)):.6g}°")
+        a, c, e = (track.centre for track in tracks)
+        where = (f"({', '.join(legs)}; {names[0]}–{names[1]} = {abs(c - a):.6g} m, "
                  f"{names[1]}–{names[2]} = {abs(e - c):.6g} m, {names[0]}–{names[2]} = {abs(e - a):.6g} m)")
         if walking:
             return (f"the ternary link {self.ternary} cannot follow its assembly from the position before: "
                     f"the triad reaches a limit position on the way {where}")
-        return (f"neither the sketch (near) nor a sweep of {self.joints[1]} round its circle finds a pose of the "
-                f"ternary link {self.ternary} that closes on the circles about {', '.join(names)} {where}")
+        swept = self.arms()[self.turning_legs[0]]
+        return (f"neither the sketch (near) nor a sweep of {swept[1]} round its circle finds a pose of the ternary "
+                f"link {self.ternary} that closes on the tracks of {', '.join(self.new_joints())} {where}")
 
-    def _residual(self, q: np.ndarray, outer: tuple[complex, complex, complex], turn: int):
+    def _residual(self, q: np.ndarray, tracks: tuple[Track, Track, Track], turn: int):
         """The closure and its Jacobian in q = (Bx, By, ψ)."""
-        b, d, f = self.corners(Pose(complex(q[0], q[1]), float(q[2])), turn)
+        b = complex(q[0], q[1])
         rows, values = [], []
-        for (centre, length), point in zip(zip(outer, self.lengths), (b, d, f)):
-            arm = point - centre
-            swing = 1j * (point - b)  # dpoint/dψ
-            values.append(abs(arm) ** 2 - length * length)
-            rows.append([2 * arm.real, 2 * arm.imag, 2 * (arm.conjugate() * swing).real])
+        for track, point in zip(tracks, self.corners(Pose(b, float(q[2])), turn)):
+            gradient = track.gradient(point, self.size)
+            values.append(track.closure(point, self.size))
+            rows.append([gradient.real, gradient.imag, (gradient.conjugate() * 1j * (point - b)).real])
         return np.array(values), np.array(rows)
+
+    def _tracks(self, context: Context) -> tuple[list[Track], ...]:
+        """Each leg's track at every position."""
+        count = context.count
+        tracks = []
+        for n, (outer, _, _) in enumerate(self.arms()):
+            centre = np.broadcast_to(np.asarray(context.point(outer).r, dtype=complex), (count,))
+            if n != self.sliding:
+                tracks.append([Track(complex(c), self.lengths[n]) for c in centre])
+                continue
+            guide = context.guide(self.guide)
+            u = np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))
+            tracks.append([Track(complex(c), u=complex(d)) for c, d in zip(centre, u)])
+        return tuple(tracks)
+
+    def _tracks_at(self, context: Context, index: int) -> tuple[Track, Track, Track]:
+        return tuple(legs[index] for legs in self._tracks(context))  # type: ignore[return-value]
 
     def _poses(self, context: Context, branch: TriadBranch) -> list[Pose]:
         """The pose at every position, walked out from the reference position both ways."""
-        outer_all = [np.broadcast_to(np.asarray(context.point(name).r, dtype=complex), (context.count,))
-                     for name in self.known_joints()]
+        tracks = self._tracks(context)
         poses: list[Pose | None] = [None] * context.count
         start = context.start
 
         def settle(index: int, guess: Pose) -> Pose | None:
-            return self._settle(guess, tuple(complex(part[index]) for part in outer_all), branch.turn)
+            return self._settle(guess, tuple(legs[index] for legs in tracks), branch.turn)
 
         poses[start] = settle(start, branch.pose)
         stops = [start] if poses[start] is None else []
@@ -259,8 +361,7 @@ class Triad(Group):
                 previous = index
         if stops:
             first = min(stops, key=lambda index: abs(index - start))
-            outer = tuple(complex(part[first]) for part in outer_all)
-            why = self._why_not(outer, walking=first != start)
+            why = self._why_not(tuple(legs[first] for legs in tracks), walking=first != start)
             context.fail_where(np.arange(context.count) == first,
                                lambda i, at: AssemblyError(self.joints[1], at, self.label, why))
         return poses  # type: ignore[return-value]
@@ -270,56 +371,84 @@ class Triad(Group):
         count = context.count
         b = np.array([pose.b for pose in poses])
         toward_d = np.exp(1j * np.array([pose.psi for pose in poses]))
-        d = b + self.sides[0] * toward_d
-        f = b + self.corner_f(branch.turn) * toward_d
-        outer = [context.point(name) for name in self.known_joints()]
-        inner = (b, d, f)
-        arms = [point - o.r for point, o in zip(inner, outer)]
+        inner = tuple(b + corner * toward_d for corner in self.local_corners(branch.turn))
+        guide = None if self.guide is None else context.guide(self.guide)
+        # Each leg's closure differentiated, row k: nₖ·vB + (nₖ·i(Pₖ − B))·ω = nₖ·v₀ₖ with nₖ the arm Pₖ − Oₖ of a
+        # turning leg (v₀ its outer joint's velocity), or the guide's normal iu of the sliding leg (v₀ the velocity
+        # of the guide's point under its slider); the same rows for aB, ε.
+        normals, base_v, base_a = [], [], []
+        for n, ((outer_name, _, _), point) in enumerate(zip(self.arms(), inner)):
+            outer = context.point(outer_name)
+            if n != self.sliding:
+                normals.append(np.broadcast_to(point - outer.r, (count,)))
+                base_v.append(np.broadcast_to(outer.v, (count,)))
+                base_a.append(np.broadcast_to(outer.a, (count,)))
+                continue
+            carried_v, carried_a = guide.carried(point)
+            normals.append(np.broadcast_to(1j * guide.u, (count,)))
+            base_v.append(np.broadcast_to(carried_v, (count,)))
+            base_a.append(np.broadcast_to(carried_a, (count,)))
         swings = [1j * (point - b) for point in inner]
-        # J·(vB, ω) = rhs, row k: armₖ·vB + (armₖ·i(Pₖ − B))·ω = armₖ·v(outer k); the same J for aB, ε.
         jacobian = np.empty((count, 3, 3))
-        for k, (arm, swing) in enumerate(zip(arms, swings)):
-            jacobian[:, k, 0] = arm.real
-            jacobian[:, k, 1] = arm.imag
-            jacobian[:, k, 2] = (np.conj(arm) * swing).real
+        for k, (normal, swing) in enumerate(zip(normals, swings)):
+            jacobian[:, k, 0] = normal.real
+            jacobian[:, k, 1] = normal.imag
+            jacobian[:, k, 2] = (np.conj(normal) * swing).real
         scale = max(self.sides)
         normalised = jacobian * np.array([1.0, 1.0, 1.0 / scale])
         sine = np.linalg.det(normalised) / np.prod(np.linalg.norm(normalised, axis=2), axis=1)
         bad = np.abs(sine) < SINGULAR_SINE
         if bad.any():
+            lines = "the binary links' lines" if self.sliding is None else \
+                f"the turning binary links' lines and the normal to the guide at {self.arms()[self.sliding][1]}"
             context.singular_where(bad, lambda i, at: SingularPositionError(
-                at, self.label, f"the triad is at a singular position (the binary links' lines meet in one point "
+                at, self.label, f"the triad is at a singular position ({lines} meet in one point "
                                 f"or are parallel; normalised Jacobian {abs(float(sine[i])):.1e})"))
         safe = np.where(bad[:, None, None], np.eye(3), jacobian)
 
         def dot(p, q):
             return (np.conj(p) * q).real
 
-        velocity_rhs = np.stack([np.broadcast_to(dot(arm, o.v), (count,)) for arm, o in zip(arms, outer)], axis=1)
+        velocity_rhs = np.stack([dot(normal, v) for normal, v in zip(normals, base_v)], axis=1)
         x = np.linalg.solve(safe, velocity_rhs[..., None])[..., 0]
         x[bad] = np.nan
         v_b, omega = x[:, 0] + 1j * x[:, 1], x[:, 2]
         v_inner = [v_b + 1j * omega * (point - b) for point in inner]
-        # Differentiated again: armₖ·a(Pₖ) = armₖ·a(outer k) − |v(Pₖ) − v(outer k)|², with aPₖ = aB + (iε − ω²)(Pₖ − B).
-        acceleration_rhs = np.stack([
-            np.broadcast_to(dot(arm, o.a) - np.abs(vp - o.v) ** 2 + omega ** 2 * dot(arm, point - b), (count,))
-            for arm, o, vp, point in zip(arms, outer, v_inner, inner)], axis=1)
-        y = np.linalg.solve(safe, acceleration_rhs[..., None])[..., 0]
+        # Differentiated again, with aPₖ = aB + (iε − ω²)(Pₖ − B): a turning leg's row is armₖ·aPₖ = armₖ·a₀ₖ −
+        # |vPₖ − v₀ₖ|²; the sliding leg's iu·aPₖ = iu·(a₀ₖ + 2ωg × v_rel), its relative acceleration along u.
+        rhs = []
+        for n, (normal, v0, a0, vp, point) in enumerate(zip(normals, base_v, base_a, v_inner, inner)):
+            known = dot(normal, a0) - np.abs(vp - v0) ** 2 if n != self.sliding else \
+                dot(normal, a0 + 2j * guide.omega * (vp - v0))
+            rhs.append(known + omega ** 2 * dot(normal, point - b))
+        y = np.linalg.solve(safe, np.stack(rhs, axis=1)[..., None])[..., 0]
         y[bad] = np.nan
         a_b, epsilon = y[:, 0] + 1j * y[:, 1], y[:, 2]
         whirl = 1j * epsilon - omega ** 2
         a_inner = [a_b + whirl * (point - b) for point in inner]
         points = {name: PointMotion(r, v, a) for name, r, v, a in zip(self.new_joints(), inner, v_inner, a_inner)}
         links = {self.ternary: LinkMotion(self.joints[1], toward_d, np.angle(toward_d), omega, epsilon)}
-        for (outer_name, _, link), o, arm, length, vp, ap in zip(self.arms(), outer, arms, self.lengths, v_inner, a_inner):
-            u = arm * (1.0 / length)
-            links[link] = LinkMotion(outer_name, u, np.angle(u), _turning(arm, vp - o.v), _turning(arm, ap - o.a))
-        return GroupMotion(points=points, links=links, conditioning=sine)
+        slides = ()
+        for n, ((outer_name, inner_name, link), vp, ap, point) in enumerate(zip(self.arms(), v_inner, a_inner, inner)):
+            outer = context.point(outer_name)
+            if n != self.sliding:
+                arm = point - outer.r
+                u = arm * (1.0 / self.lengths[n])
+                links[link] = LinkMotion(outer_name, u, np.angle(u), _turning(arm, vp - outer.v), _turning(arm, ap - outer.a))
+                continue
+            u = np.broadcast_to(guide.u, (count,))
+            relative_v = vp - base_v[n]
+            relative_a = ap - base_a[n] - 2j * guide.omega * relative_v
+            links[link] = LinkMotion(inner_name, u, np.angle(u), guide.omega, guide.epsilon)
+            slides = (SlideMotion(link, guide.link, inner_name, u, dot(u, point - guide.origin.r), dot(u, relative_v),
+                                  dot(u, relative_a)),)
+        return GroupMotion(points=points, links=links, slides=slides, conditioning=sine)
 
     # The plans: Assur's special point Σ, then F, then B and D by similarity.
 
     def special_pair(self, positions) -> tuple[int, int, int]:
-        """The two binary links whose lines cross at the widest angle (Σ is their crossing), and the third."""
+        """The two binary links whose lines cross at the widest angle (Σ is their crossing), and the third;
+        where a leg slides, the two turning ones and the sliding one."""
         arms = self.arms()
 
         def sine(i: int, j: int) -> float:
@@ -327,7 +456,10 @@ class Triad(Group):
             w = positions[arms[j][1]] - positions[arms[j][0]]
             return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
 
-        i, j = max(((0, 1), (0, 2), (1, 2)), key=lambda pair: sine(*pair))
+        if self.sliding is not None:  # Σ is on the lines of the two turning legs
+            i, j = self.turning_legs
+        else:
+            i, j = max(((0, 1), (0, 2), (1, 2)), key=lambda pair: sine(*pair))
         return i, j, 3 - i - j
 
     def special_point(self, positions, size: float) -> tuple[str, complex, tuple[int, int, int]]:
@@ -345,8 +477,8 @@ class Triad(Group):
         return name, where, order
 
     def construct_velocity(self, board: Builder) -> None:
-        """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD); vF = vΣ + vFΣ (⊥ ΣF) = vE + vFE (⊥ EF); b, d by similarity;
-        then vBA and vDC read off."""
+        """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD); vF = vΣ + vFΣ (⊥ ΣF) = vE + vFE (⊥ EF), or vF1 + vFF1
+        (∥ guide) where F slides; b, d by similarity; then vBA and vDC read off."""
         positions = board.positions
         sigma_name, sigma_pos, (i, j, k) = self._special_point_on(board)
         arms = self.arms()
@@ -362,7 +494,11 @@ class Triad(Group):
             lines=(DrawnLine(image_i, across_i, LineMeaning("perpendicular", (oi, ni))),
                    DrawnLine(image_j, across_j, LineMeaning("perpendicular", (oj, nj)))),
             fixes=(sigma,), crossing_deg=angle))
-        velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos), (ok, board.images[ok], positions[ok]))
+        if k == self.sliding:
+            self._slide_velocity(board, sigma_name, sigma, sigma_pos)
+        else:
+            velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos),
+                                     (ok, board.images[ok], positions[ok]))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
         for n in (i, j):  # ωa and ωb are read off the relative velocities that end at b and d
             outer, inner, _ = arms[n]
@@ -371,7 +507,8 @@ class Triad(Group):
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
         """aΣ = aA + aBAⁿ + aΣBⁿ + aΣA^τ (⊥ AB) = aC + aDCⁿ + aΣDⁿ + aΣC^τ (⊥ CD);
-        aF = aΣ + aFΣⁿ + aFΣ^τ (⊥ ΣF) = aE + aFEⁿ + aFE^τ (⊥ EF); b, d by similarity."""
+        aF = aΣ + aFΣⁿ + aFΣ^τ (⊥ ΣF) = aE + aFEⁿ + aFE^τ (⊥ EF), or aF1 + aFF1ᵏ + aFF1^r (∥ guide) where F
+        slides; b, d by similarity."""
         positions = board.positions
         sigma_name, sigma_pos, (i, j, k) = self._special_point_on(board)
         arms, t = self.arms(), self.ternary
@@ -395,8 +532,11 @@ class Triad(Group):
             equation=(f"a{sigma_name} = a{oi} + a{ni}{oi}ⁿ + a{sigma_name}{ni}ⁿ + a{sigma_name}{oi}^τ"
                       f" = a{oj} + a{nj}{oj}ⁿ + a{sigma_name}{nj}ⁿ + a{sigma_name}{oj}^τ"),
             vectors=tuple(vectors), lines=tuple(lines), fixes=(*(end for end, _, _ in ends), sigma), crossing_deg=angle))
-        crossed_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
-                                (ok, board.images[ok], positions[ok], velocities.rates[lk], f"n{lk}"))
+        if k == self.sliding:
+            self._slide_acceleration(board, velocities, sigma_name, sigma, sigma_pos)
+        else:
+            crossed_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
+                                    (ok, board.images[ok], positions[ok], velocities.rates[lk], f"n{lk}"))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
         for n in (i, j):  # εa and εb are read off the tangential parts that end at b and d
             outer, inner, link = arms[n]
@@ -412,8 +552,9 @@ class Triad(Group):
         outer_k, inner_k, link_k = arms[k]
         board.on_link(t, sigma_pos, sigma)
         board.on_link(t, positions[inner_k], board.images[inner_k])
-        board.on_link(link_k, positions[outer_k], board.images[outer_k])
-        board.on_link(link_k, positions[inner_k], board.images[inner_k])
+        if k != self.sliding:  # a slider was put on the plan as its pin's image was crossed
+            board.on_link(link_k, positions[outer_k], board.images[outer_k])
+            board.on_link(link_k, positions[inner_k], board.images[inner_k])
         for n in (i, j):
             outer, inner, link = arms[n]
             pair = board.widest(t)
@@ -424,19 +565,92 @@ class Triad(Group):
             board.on_link(link, positions[inner], letter)
 
 
+    def _slide_velocity(self, board: Builder, sigma_name: str, sigma: str, sigma_pos: complex) -> None:
+        """vF = vΣ + vFΣ (⊥ ΣF) = vFg + vFFg (∥ guide), Fg the guide link's point under the slider's pin F."""
+        _, inner, _ = self.arms()[self.sliding]
+        where = board.positions[inner]
+        across = 1j * (where - sigma_pos)
+        _, _, carrier = board.guide_line(self.guide)
+        on_guide = guide_point(board, carrier, inner)
+        fixed, angle, along_guide, meaning = self._slide_closed(board, (sigma, across, f"⊥{sigma_name}{inner}"),
+                                                                on_guide)
+        g = f"{inner}{carrier}"
+        relative = () if on_guide == "p" else (LaidVector(on_guide, fixed, f"v{inner}{g}"),)
+        board.step(Step(
+            equation=f"v{inner} = v{sigma_name} + v{inner}{sigma_name} = v{g} + v{inner}{g}",
+            vectors=(LaidVector(sigma, fixed, f"v{inner}{sigma_name}"), *relative, LaidVector("p", fixed, f"v{inner}")),
+            lines=(DrawnLine(sigma, across, LineMeaning("perpendicular", (sigma_name, inner))),
+                   DrawnLine(on_guide, along_guide, meaning)),
+            fixes=(fixed,), crossing_deg=angle))
+
+    def _slide_acceleration(self, board: Builder, velocities: Plan, sigma_name: str, sigma: str,
+                            sigma_pos: complex) -> None:
+        """aF = aΣ + aFΣⁿ + aFΣ^τ (⊥ ΣF) = aFg + aFFgᵏ + aFFg^r (∥ guide); the Coriolis part only on a turning guide."""
+        _, inner, slider = self.arms()[self.sliding]
+        t = self.ternary
+        where = board.positions[inner]
+        across = 1j * (where - sigma_pos)
+        normal = board.mark(f"n{t}″", board.points[sigma] - velocities.rates[t] ** 2 * (where - sigma_pos))
+        _, _, carrier = board.guide_line(self.guide)
+        on_guide = guide_point(board, carrier, inner)
+        g = f"{inner}{carrier}"
+        laid = [LaidVector(sigma, normal, f"a{inner}{sigma_name}ⁿ")]
+        equation = f"a{inner} = a{sigma_name} + a{inner}{sigma_name}ⁿ + a{inner}{sigma_name}^τ = a{g}"
+        start = on_guide
+        if self.coriolis_sliders(board.mechanism):
+            relative = velocities.value(inner) - velocities.points[on_guide]
+            start = board.mark(coriolis_letter(board, slider),
+                               board.points[on_guide] + coriolis(velocities.rates.get(carrier, 0.0), relative))
+            laid.append(LaidVector(on_guide, start, f"a{inner}{g}ᵏ"))
+            equation += f" + a{inner}{g}ᵏ"
+        equation += f" + a{inner}{g}^r"
+        fixed, angle, along_guide, meaning = self._slide_closed(board, (normal, across, f"⊥{sigma_name}{inner}"), start)
+        laid.append(LaidVector(normal, fixed, f"a{inner}{sigma_name}^τ"))
+        if start != "p":  # from the pole it would be aF itself
+            laid.append(LaidVector(start, fixed, f"a{inner}{g}^r"))
+        laid.append(LaidVector("p", fixed, f"a{inner}"))
+        board.step(Step(
+            equation=equation, vectors=tuple(laid),
+            lines=(DrawnLine(normal, across, LineMeaning("perpendicular", (sigma_name, inner))),
+                   DrawnLine(start, along_guide, meaning)),
+            fixes=(normal, *((start,) if start != on_guide else ()), fixed), crossing_deg=angle))
+
+    def _slide_closed(self, board: Builder, from_sigma: tuple[str, complex, str],
+                      on_guide_line: str) -> tuple[str, float, complex, LineMeaning]:
+        """The sliding pin's image: the line through ``from_sigma`` (letter, direction, label) crossed with the
+        line along the guide through ``on_guide_line``; recorded on the slider with its sliding.  Returns the
+        image, the crossing angle, the guide's direction and what its line means."""
+        _, inner, slider = self.arms()[self.sliding]
+        _, along_guide, carrier = board.guide_line(self.guide)
+        meaning = guide_meaning(self.guide)
+        start, direction, label = from_sigma
+        value, angle = board.cross(Line(board.points[start], direction, label),
+                                   Line(board.points[on_guide_line], along_guide, meaning.text))
+        fixed = board.fix(inner, value)
+        board.on_link(slider, board.positions[inner], fixed)
+        board.turns_with[slider] = carrier
+        board.slides(slider, on_guide_line, fixed)
+        return fixed, angle, along_guide, meaning
+
     # The forces: the group cut free, moments about each inner joint and about Assur's point.
 
     def construct_forces(self, board: ForceBoard) -> None:
         """Each outer reaction split along and across its binary link: the across parts from ΣM of each
         binary link about its inner joint; the third link's along part from ΣM of the whole group about Σ,
         through which the other two along parts pass; those two by crossing their lines on the polygon.
-        The inner reactions are read off the polygon."""
+        Where the third leg slides, ΣM about Σ gives its guide's normal reaction instead, shifted along the
+        guide by ΣM of the slider about its pin.  The inner reactions are read off the polygon."""
         positions, t = board.positions, self.ternary
         sigma_name, sigma_pos, (i, j, k) = self.special_point(positions, max(abs(p) for p in positions.values()))
         board.add_centre(sigma_name, sigma_pos)
         arms = self.arms()
         names, across, along, tau = {}, {}, {}, {}
         for n, (outer, inner, link) in enumerate(arms):
+            if n == self.sliding:
+                _, u, carrier = board.guide_line(self.guide)
+                names[n] = (f"R{carrier}{link}", carrier)
+                across[n], along[n], tau[n] = u, 1j * u, 0.0  # no friction: the guide's reaction is its normal
+                continue
             source = board.source_of(outer, link)
             names[n] = (f"R{source}{link}", source)
             bar = positions[inner] - positions[outer]
@@ -447,15 +661,26 @@ class Triad(Group):
             moment = float(cross(positions[outer] - sigma_pos, tau[n] * across[n]))
             if tau[n] != 0 and moment != 0:
                 terms.append(Term(f"{names[n][0]}τ", moment, abs(moment) / abs(tau[n])))
-        normal_k = board.solve_moment_of(self.links, sigma_name, f"{names[k][0]}n", along[k], positions[arms[k][0]],
-                                         tuple(terms))
         ri, rj, rk = (names[n][0] for n in (i, j, k))
         li, lj, lk = (arms[n][2] for n in (i, j, k))
-        polygon = PolygonBuilder(f"{ri}n + {ri}τ + ΣF{li} + {rk}τ + {rk}n + ΣF{lk} + ΣF{t} + {rj}τ + ΣF{lj} + {rj}n = 0")
+        slides = k == self.sliding
+        normal_name = rk if slides else f"{rk}n"
+        shift = 0.0
+        if slides:
+            # The normal reaction acts x along the guide from the pin: R·x is what turns the slider about its pin.
+            shift = board.couple(lk, arms[k][1], f"{rk}·x")
+            if shift:
+                terms.append(Term(f"{rk}·x", shift, 0.0))
+        # A turning leg's along part acts through its outer joint, the guide's normal reaction through the pin.
+        acts_at = positions[arms[k][1] if slides else arms[k][0]]
+        normal_k = board.solve_moment_of(self.links, sigma_name, normal_name, along[k], acts_at, tuple(terms))
+        outer_k = rk if slides else f"{rk}τ + {rk}n"
+        polygon = PolygonBuilder(f"{ri}n + {ri}τ + ΣF{li} + {outer_k} + ΣF{lk} + ΣF{t} + {rj}τ + ΣF{lj} + {rj}n = 0")
         polygon.lay(f"{ri}τ", tau[i] * across[i])
         end_i = polygon.lay_all(board.loads_on(li))
-        polygon.lay(f"{rk}τ", tau[k] * across[k])
-        polygon.lay(f"{rk}n", normal_k * along[k])
+        if not slides:
+            polygon.lay(f"{rk}τ", tau[k] * across[k])
+        polygon.lay(normal_name, normal_k * along[k])
         end_k = polygon.lay_all(board.loads_on(lk))
         end_t = polygon.lay_all(board.loads_on(t))
         polygon.lay(f"{rj}τ", tau[j] * across[j])
@@ -469,11 +694,45 @@ class Triad(Group):
         for n in (i, j, k):
             outer, inner, link = arms[n]
             name, source = names[n]
-            board.hand_back(board.react(name, outer, source, link, outer_force[n]))
+            if n == self.sliding:
+                normal = outer_force[n]
+                offset = shift / cross(across[n], normal) if abs(normal) > 0 else 0.0
+                board.hand_back(board.react(name, inner, source, link, normal, offset),
+                                positions[inner] + offset * across[n])
+            else:
+                board.hand_back(board.react(name, outer, source, link, outer_force[n]))
         for n in (i, j, k):
             outer, inner, link = arms[n]
             board.react(f"R{link}{t}", inner, link, t, -on_binary[n])
         board.finish_group(self.label, self.links, polygon.record())
+
+
+def _read_sliding_leg(table: Table, joints: tuple[str, ...]) -> tuple[int | None, Guide | None]:
+    """The leg that slides (``guides = { F = { angle = 0 } }``, by its inner joint) and its guide, through
+    that leg's outer joint; (None, None) for a triad of three turning legs."""
+    guides = table.table("guides", None)
+    if guides is None:
+        return None, None
+    inner = (joints[1], joints[3], joints[5])
+    names = list(guides.data)
+    if len(names) != 1:
+        raise SceneError(guides.path, f"must name the one leg that slides by its inner joint ({', '.join(inner)}): "
+                                      f"Assur's special point, through which the plans and the forces go, is where "
+                                      f"the lines of the two turning legs cross, so at most one leg of a triad slides",
+                         names)
+    name = names[0]
+    if name not in inner:
+        raise SceneError(guides.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
+    leg = inner.index(name)
+    outer = joints[2 * leg]
+    spec = guides.table(name)
+    if spec.has("through"):
+        raise SceneError(spec.where("through"), f"the guide of the sliding leg {outer}{name} runs through its outer "
+                                                f"joint {outer}: place {outer} where the guide should pass")
+    link = spec.integer("link", None, minimum=1)
+    angle = math.radians(spec.number("angle", 0.0))
+    spec.done()
+    return leg, Guide(where=guides.where(name), link=link, through=outer, angle=angle)
 
 
 def _xy(z: complex) -> tuple[float, float]:

@@ -1,0 +1,182 @@
+"""A triad whose third leg slides: what the tests that run every fixture and variant cannot show.
+
+Those already hold fixtures/triad_with_slider.toml (a slider on a frame guide) and the ratchet's
+variant ``ratchet+triad-slider-on-rocker`` (a slider on the rocking link 4, so with a Coriolis
+term) to their closure, finite differences, the 50-digit reference, the plans against the analytic
+solution and the force polygons against the linear system of statics.  Here: the structure, Assur's
+point on the two turning legs, the Coriolis component itself, the guide's reaction, every kind of
+bad input.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from test_forces_against_statics import loaded
+from test_motion_against_finite_differences import CASES
+
+import graphplan
+from graphplan.analysis import analyse, instant
+from graphplan.cli import main
+from graphplan.errors import AssemblyError, SceneError
+from graphplan.forces import force_plan
+from graphplan.groups.sliding import coriolis
+from graphplan.kinematics import cross
+from graphplan.loads import activity, link_loads, plan_state
+from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.scene import loads
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "triad_with_slider.toml"
+TEXT = FIXTURE.read_text(encoding="utf-8")
+GUIDES = "guides  = { F = { angle = -30.0 } }"
+LENGTHS = "lengths = [0.17, 0.14]"
+assert GUIDES in TEXT and LENGTHS in TEXT
+
+
+def _scene(old: str = "", new: str = ""):
+    assert old in TEXT
+    return loads(TEXT.replace(old, new))
+
+
+def _xy(value) -> complex:
+    return complex(value[0], value[1])
+
+
+def test_the_slider_makes_the_triad_a_class_iii_group_with_one_sliding_pair():
+    mechanism = graphplan.build(graphplan.load(FIXTURE))
+    assert mechanism.structure == "I(1,2) → III3(3,4,5,6)"
+    # W = 3n − 2p5: n = 5 moving links, p5 = the crank's pair + the triad's six (five turning, one sliding)
+    assert mechanism.degrees_of_freedom == (5, 7, 1)
+    assert 5 in mechanism.translating
+    motion = graphplan.solve(graphplan.load(FIXTURE))
+    assert np.all(motion.link(5).omega == 0) and np.all(motion.link(5).epsilon == 0)
+    (slide,) = motion.slides
+    assert (slide.slider, slide.guide, slide.joint) == (5, 1, "F")
+
+
+def test_assurs_point_is_where_the_two_turning_legs_cross_not_on_the_slider():
+    analysis = analyse(graphplan.load(FIXTURE))
+    for plan_position in analysis.plans:
+        positions = plan_position.positions
+        ((name, sigma),) = plan_position.velocity.auxiliary.items()
+        assert name == "Σ6"
+        for outer, inner in (("A", "B"), ("C", "D")):
+            bar = positions[inner] - positions[outer]
+            assert abs((bar.conjugate() * (sigma - positions[outer])).imag) <= 1e-9 * abs(bar) * abs(sigma - positions[outer])
+        # F's image is crossed with the guide's line: F moves along the guide, at −30°.
+        v_f = plan_position.velocity.value("F")
+        assert abs((np.exp(-1j * np.radians(-30.0)) * v_f).imag) <= 1e-12 * abs(v_f)
+
+
+def test_a_slider_on_a_rocking_guide_gets_its_coriolis_component_from_the_plans():
+    # The ratchet's variant: slider 7 pinned to the ternary link 8 at L runs on the guide of rocker 4.
+    analysis = analyse(CASES["ratchet+triad-slider-on-rocker"]())
+    mechanism, motion = analysis.mechanism, analysis.motion
+    checked = 0
+    for index in range(motion.count):
+        where, directions = instant(motion, index)
+        velocity = velocity_plan(mechanism, where, directions)
+        acceleration = acceleration_plan(mechanism, where, directions, velocity)
+        (step,) = [step for step in acceleration.steps if "aLL4ᵏ" in step.equation]
+        (laid,) = [vector for vector in step.vectors if vector.meaning == "aLL4ᵏ"]
+        drawn = acceleration.points[laid.end] - acceleration.points[laid.start]
+        # 2·ω4 × v_rel from the analytic motion: ω4 of the rocker, v_rel of L along the guide.
+        omega = float(motion.link(4).omega[index])
+        (slide,) = [s for s in motion.slides if s.slider == 7]
+        relative = complex(slide.velocity[index] * slide.u[index])
+        expected = 2j * omega * relative
+        assert abs(drawn - expected) <= 1e-9 * max(abs(expected), 1e-3)  # at the rocker's extremes ω4 = 0
+        assert drawn == pytest.approx(coriolis(velocity.rates[4], velocity.sliding[7]), abs=1e-12)
+        checked += abs(expected) > 0.1
+    assert checked >= 4
+
+
+def test_the_guides_reaction_is_square_to_it_and_shifted_by_the_sliders_moment():
+    analysis = analyse(graphplan.load(FIXTURE))
+    for plan_position in analysis.plans:
+        reactions = plan_position.forces.reactions
+        normal = reactions["R15"]
+        assert normal.joint == "F" and normal.source == 1 and normal.target == 5
+        u = np.exp(1j * np.radians(-30.0))
+        assert abs((u.conjugate() * normal.force).real) <= 1e-12 * abs(normal.force)
+        # The slider's loads all act at its pin F: the normal reaction passes through F.
+        assert normal.offset == pytest.approx(0.0, abs=1e-15)
+    # On a turning guide the slider's inertia moment turns it about its pin: the guide's reaction then acts
+    # x along the guide from the pin, where its moment about the pin balances the slider's loads.
+    variant = analyse(loaded(CASES["ratchet+triad-slider-on-rocker"]()))
+    mechanism, motion = variant.mechanism, variant.motion
+    acting = activity(mechanism, variant.positions, motion)
+    shifted = 0
+    for index in range(0, motion.count, 2):
+        where, directions = instant(motion, index)
+        velocity = velocity_plan(mechanism, where, directions)
+        acceleration = acceleration_plan(mechanism, where, directions, velocity)
+        applied = link_loads(mechanism, plan_state(mechanism, where, velocity, acceleration), acting[:, index:index + 1])
+        drawn = force_plan(mechanism, where, directions, applied)
+        normal = drawn.reactions["R47"]
+        u = directions[4] * np.exp(1j * np.radians(60.0))
+        assert abs((u.conjugate() * normal.force).real) <= 1e-9 * abs(normal.force)
+        turning = sum(float(load.moment) if load.point is None else
+                      float(cross(where[load.point] + load.offset - where["L"], complex(load.force)))
+                      for load in applied if load.link == 7)
+        assert turning != 0.0
+        assert cross(normal.offset * u, normal.force) == pytest.approx(-turning, rel=1e-9, abs=1e-12)
+        shifted += abs(normal.offset) > 1e-6
+    assert shifted
+
+
+@pytest.mark.parametrize(("old", "new", "where", "message"), [
+    (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 0.0 } }", "groups[0].guides", "at most one leg"),
+    (GUIDES, "guides = { }", "groups[0].guides", "at most one leg"),
+    (GUIDES, "guides = { E = { angle = -30.0 } }", "groups[0].guides.E", "must name an inner joint"),
+    (GUIDES, 'guides = { F = { through = "O", angle = -30.0 } }', "groups[0].guides.F.through",
+     "runs through its outer joint E"),
+    (GUIDES, "guides = { F = { angel = -30.0 } }", "groups[0].guides.F.angel", "unknown key"),
+    (GUIDES, "guides = { F = { link = 7, angle = 0.0 } }", "groups[0].guides.F.link", "not known before"),
+    (GUIDES, "guides = { F = { link = 2, angle = 0.0 } }", "groups[0].guides.F.through", "point fixed on link 2"),
+    (LENGTHS, "lengths = [0.17, 0.14, 0.2]", "groups[0].lengths", "lAB, lCD (the leg EF slides)"),
+    (LENGTHS, "lengths = [0.17, -0.14]", "groups[0].lengths[1]", "must be > 0"),
+])
+def test_a_bad_sliding_leg_is_refused_with_its_key(old, new, where, message):
+    with pytest.raises(SceneError) as caught:
+        graphplan.build(_scene(old, new))
+    assert caught.value.where == where and message in str(caught.value), str(caught.value)
+
+
+def test_a_guide_the_triad_cannot_reach_says_so_and_writes_nothing(tmp_path, capsys):
+    scene = tmp_path / "far.toml"
+    scene.write_text(TEXT.replace("E = [0.0, 0.14]", "E = [0.0, 0.9]").replace("angle = -30.0 }", "angle = 0.0 }"),
+                     encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert "cannot be assembled" in error and "III(3,4,5,6)" in error and "F slides on the guide through E at 0°" in error
+    assert not out.exists()
+    with pytest.raises(AssemblyError):
+        graphplan.solve(graphplan.load(scene))
+
+
+def test_the_sketch_picks_the_assembly_whose_slider_is_nearest():
+    # At φ = 0 the same legs close in another assembly too: found by moving the sketch there.
+    first = graphplan.solve(graphplan.load(FIXTURE), driver=[0.0])
+    f_first = _xy(first.point("F").r[0])
+    assert abs(f_first - (0.14 + 0.06j)) < 0.01
+    others = []
+    for b, d, f in (("[0.10, 0.20]", "[0.17, 0.22]", "[0.05, 0.17]"), ("[0.20, 0.16]", "[0.27, 0.13]", "[0.21, 0.02]"),
+                    ("[0.05, 0.16]", "[0.14, 0.13]", "[0.09, 0.09]")):
+        sketch = f"near    = {{ B = {b}, D = {d}, F = {f} }}"
+        try:
+            motion = graphplan.solve(_scene("near    = { B = [0.21, 0.06], D = [0.23, 0.13], F = [0.14, 0.06] }",
+                                            sketch), driver=[0.0])
+        except (AssemblyError, SceneError):
+            continue
+        others.append(motion)
+    assert others, "no other assembly found from the sketches tried"
+    for motion in others:
+        b, d, f = (_xy(motion.point(name).r[0]) for name in "BDF")
+        assert abs(abs(b - (0.05 + 0j)) - 0.17) < 1e-9 and abs(abs(d - 0.28) - 0.14) < 1e-9
+        assert abs((np.exp(1j * np.radians(30.0)) * (f - 0.14j)).imag) < 1e-9  # F on the guide through E
+        assert abs(abs(d - b) - 0.075) < 1e-9 and abs(abs(f - d) - 0.115) < 1e-9 and abs(abs(b - f) - 0.065) < 1e-9
+    assert any(abs(_xy(m.point("F").r[0]) - f_first) > 0.01 for m in others)
