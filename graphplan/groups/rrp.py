@@ -8,11 +8,10 @@ link g.  Closure: B = A + AB·e^{iθa} = G + s·u.  Differentiated:
 
 the last line with the Coriolis term of the slider on a rotating guide.
 
-The plans solve the same equations by crossing lines of action (see
-:meth:`RRP.construct_velocity`).  The helpers at the end of this module are
-shared by the sliding kinds (RPR, PRP, RPP import them): the image of a guide
-link's point under a slider by similarity, the Coriolis component, and the
-crossing of two lines of action at the plan's own size.
+The plans solve the same equations by crossing lines of action, with the
+step a triad's sliding leg takes too (``sliding.velocity_on_guide``,
+``sliding.acceleration_on_guide``): B's image is crossed from a's square to AB
+with the guide's line through the image of the guide link's point under B.
 """
 
 from __future__ import annotations
@@ -23,7 +22,6 @@ import numpy as np
 
 from ..errors import AssemblyError
 from ..forces import ForceBoard, PolygonBuilder
-from ..geometry import Line
 from ..kinematics import (
     LinkMotion,
     PointMotion,
@@ -33,7 +31,7 @@ from ..kinematics import (
     cross,
     dot,
 )
-from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
+from ..plans import Builder, Plan
 from ..reader import Table
 from .base import (
     Context,
@@ -46,14 +44,7 @@ from .base import (
     read_branch,
     read_guide,
 )
-from .sliding import (
-    coriolis,
-    coriolis_letter,
-    guide_link,
-    guide_meaning,
-    guide_point,
-    turns,
-)
+from .sliding import acceleration_on_guide, guide_link, turns, velocity_on_guide
 
 # B ahead of (forward) or behind (backward) the foot of A on the guide,
 # counted along the guide's direction.
@@ -160,18 +151,9 @@ class RRP(Group):
         g's images already on the plan; on a frame guide it is the pole.
         """
         a_name, b_name = self.joints
-        _, along_guide, carrier = board.guide_line(self.guide)
-        a = board.images[a_name]
-        bg = guide_point(board, carrier, b_name)
-        b, angle, across_ab, on_guide = self._close(board, a, bg)
-        g = f"{b_name}{carrier}"
-        relative = () if bg == "p" else (LaidVector(bg, b, f"v{b_name}{g}"),)
-        board.step(Step(
-            equation=f"v{b_name} = v{a_name} + v{b_name}{a_name} = v{g} + v{b_name}{g}",
-            vectors=(LaidVector(a, b, f"v{b_name}{a_name}"), *relative, LaidVector("p", b, f"v{b_name}")),
-            lines=(DrawnLine(a, across_ab, LineMeaning("perpendicular", (a_name, b_name))),
-                   DrawnLine(bg, along_guide, on_guide)),
-            fixes=(b,), crossing_deg=angle))
+        b = velocity_on_guide(board, b_name, (a_name, board.images[a_name], board.positions[a_name]), self.guide,
+                              self.links[1])
+        self._on_rod(board, b)
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
         """aB = aA + aBAⁿ + aBA^τ (⊥ AB) = aBg + aBBgᵏ + aBBg^r (∥ guide).
@@ -183,54 +165,16 @@ class RRP(Group):
         """
         a_name, b_name = self.joints
         rod, slider = self.links
-        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
-        _, along_guide, carrier = board.guide_line(self.guide)
-        a = board.images[a_name]
-        omega = velocities.rates[rod]
-        normal = board.mark(f"n{rod}", board.points[a] - omega**2 * (b_pos - a_pos))
-        bg = guide_point(board, carrier, b_name)
-        g = f"{b_name}{carrier}"
-        laid = [LaidVector(a, normal, f"a{b_name}{a_name}ⁿ")]
-        equation = f"a{b_name} = a{a_name} + a{b_name}{a_name}ⁿ + a{b_name}{a_name}^τ = a{g}"
-        start = bg
-        if self.coriolis_sliders(board.mechanism):
-            v_rel = velocities.value(b_name) - velocities.points[bg]
-            start = board.mark(coriolis_letter(board, slider),
-                               board.points[bg] + coriolis(velocities.rates.get(carrier, 0.0), v_rel))
-            laid.append(LaidVector(bg, start, f"a{b_name}{g}ᵏ"))
-            equation += f" + a{b_name}{g}ᵏ"
-        equation += f" + a{b_name}{g}^r"
-        b, angle, across_ab, on_guide = self._close(board, normal, start)
-        laid.append(LaidVector(normal, b, f"a{b_name}{a_name}^τ"))
-        if start != "p":  # from the pole it would be aB itself
-            laid.append(LaidVector(start, b, f"a{b_name}{g}^r"))
-        laid.append(LaidVector("p", b, f"a{b_name}"))
-        board.step(Step(
-            equation=equation, vectors=tuple(laid),
-            lines=(DrawnLine(normal, across_ab, LineMeaning("perpendicular", (a_name, b_name))),
-                   DrawnLine(start, along_guide, on_guide)),
-            fixes=(normal, *((start,) if start != bg else ()), b), crossing_deg=angle))
+        pivot = (a_name, board.images[a_name], board.positions[a_name], velocities.rates[rod], f"n{rod}")
+        b = acceleration_on_guide(board, velocities, b_name, pivot, self.guide, slider,
+                                  bool(self.coriolis_sliders(board.mechanism)))
+        self._on_rod(board, b)
 
-    def _close(self, board: Builder, on_rod: str, on_guide_line: str) -> tuple[str, float, complex, LineMeaning]:
-        """The plan closed at b: the line square to AB through ``on_rod`` crossed with the line along the
-        guide through ``on_guide_line``; b recorded on the rod and the slider, and the slider's sliding
-        (b less the guide line's point).  Returns b, the crossing angle, the direction square to AB and
-        what the guide's line means."""
+    def _on_rod(self, board: Builder, b: str) -> None:
+        """A and B's images recorded on the rod, for the similarity of its other points."""
         a_name, b_name = self.joints
-        rod, slider = self.links
-        a_pos, b_pos = board.positions[a_name], board.positions[b_name]
-        _, along_guide, carrier = board.guide_line(self.guide)
-        across_ab = 1j * (b_pos - a_pos)
-        on_guide = guide_meaning(self.guide)
-        value, angle = board.cross(Line(board.points[on_rod], across_ab, f"⊥{a_name}{b_name}"),
-                                   Line(board.points[on_guide_line], along_guide, on_guide.text))
-        b = board.fix(b_name, value)
-        board.on_link(rod, a_pos, board.images[a_name])
-        board.on_link(rod, b_pos, b)
-        board.on_link(slider, b_pos, b)
-        board.turns_with[slider] = carrier
-        board.slides(slider, on_guide_line, b)
-        return b, angle, across_ab, on_guide
+        board.on_link(self.links[0], board.positions[a_name], board.images[a_name])
+        board.on_link(self.links[0], board.positions[b_name], b)
 
     # The forces: the group cut free, as drawn.
 

@@ -42,7 +42,7 @@ from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
-from .sliding import coriolis, coriolis_letter, guide_link, guide_meaning, guide_point, turns
+from .sliding import acceleration_on_guide, guide_link, turns, velocity_on_guide
 
 # Samples of a turning leg's circle at the reference position: two assemblies closer than a 2048th of a
 # turn would be missed, and such a triad is at a singular position anyway.
@@ -482,7 +482,7 @@ class Triad(Group):
         positions = board.positions
         sigma_name, sigma_pos, (i, j, k) = self._special_point_on(board)
         arms = self.arms()
-        (oi, ni, _), (oj, nj, _), (ok, nk, _) = arms[i], arms[j], arms[k]
+        (oi, ni, _), (oj, nj, _), (ok, nk, lk) = arms[i], arms[j], arms[k]
         across_i, across_j = 1j * (positions[ni] - positions[oi]), 1j * (positions[nj] - positions[oj])
         image_i, image_j = board.images[oi], board.images[oj]
         value, angle = board.cross(Line(board.points[image_i], across_i, f"⊥{oi}{ni}"),
@@ -495,7 +495,7 @@ class Triad(Group):
                    DrawnLine(image_j, across_j, LineMeaning("perpendicular", (oj, nj)))),
             fixes=(sigma,), crossing_deg=angle))
         if k == self.sliding:
-            self._slide_velocity(board, sigma_name, sigma, sigma_pos)
+            velocity_on_guide(board, nk, (sigma_name, sigma, sigma_pos), self.guide, lk)
         else:
             velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos),
                                      (ok, board.images[ok], positions[ok]))
@@ -533,7 +533,8 @@ class Triad(Group):
                       f" = a{oj} + a{nj}{oj}ⁿ + a{sigma_name}{nj}ⁿ + a{sigma_name}{oj}^τ"),
             vectors=tuple(vectors), lines=tuple(lines), fixes=(*(end for end, _, _ in ends), sigma), crossing_deg=angle))
         if k == self.sliding:
-            self._slide_acceleration(board, velocities, sigma_name, sigma, sigma_pos)
+            acceleration_on_guide(board, velocities, nk, (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
+                                  self.guide, lk, bool(self.coriolis_sliders(board.mechanism)))
         else:
             crossed_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
                                     (ok, board.images[ok], positions[ok], velocities.rates[lk], f"n{lk}"))
@@ -565,73 +566,6 @@ class Triad(Group):
             board.on_link(link, positions[inner], letter)
 
 
-    def _slide_velocity(self, board: Builder, sigma_name: str, sigma: str, sigma_pos: complex) -> None:
-        """vF = vΣ + vFΣ (⊥ ΣF) = vFg + vFFg (∥ guide), Fg the guide link's point under the slider's pin F."""
-        _, inner, _ = self.arms()[self.sliding]
-        where = board.positions[inner]
-        across = 1j * (where - sigma_pos)
-        _, _, carrier = board.guide_line(self.guide)
-        on_guide = guide_point(board, carrier, inner)
-        fixed, angle, along_guide, meaning = self._slide_closed(board, (sigma, across, f"⊥{sigma_name}{inner}"),
-                                                                on_guide)
-        g = f"{inner}{carrier}"
-        relative = () if on_guide == "p" else (LaidVector(on_guide, fixed, f"v{inner}{g}"),)
-        board.step(Step(
-            equation=f"v{inner} = v{sigma_name} + v{inner}{sigma_name} = v{g} + v{inner}{g}",
-            vectors=(LaidVector(sigma, fixed, f"v{inner}{sigma_name}"), *relative, LaidVector("p", fixed, f"v{inner}")),
-            lines=(DrawnLine(sigma, across, LineMeaning("perpendicular", (sigma_name, inner))),
-                   DrawnLine(on_guide, along_guide, meaning)),
-            fixes=(fixed,), crossing_deg=angle))
-
-    def _slide_acceleration(self, board: Builder, velocities: Plan, sigma_name: str, sigma: str,
-                            sigma_pos: complex) -> None:
-        """aF = aΣ + aFΣⁿ + aFΣ^τ (⊥ ΣF) = aFg + aFFgᵏ + aFFg^r (∥ guide); the Coriolis part only on a turning guide."""
-        _, inner, slider = self.arms()[self.sliding]
-        t = self.ternary
-        where = board.positions[inner]
-        across = 1j * (where - sigma_pos)
-        normal = board.mark(f"n{t}″", board.points[sigma] - velocities.rates[t] ** 2 * (where - sigma_pos))
-        _, _, carrier = board.guide_line(self.guide)
-        on_guide = guide_point(board, carrier, inner)
-        g = f"{inner}{carrier}"
-        laid = [LaidVector(sigma, normal, f"a{inner}{sigma_name}ⁿ")]
-        equation = f"a{inner} = a{sigma_name} + a{inner}{sigma_name}ⁿ + a{inner}{sigma_name}^τ = a{g}"
-        start = on_guide
-        if self.coriolis_sliders(board.mechanism):
-            relative = velocities.value(inner) - velocities.points[on_guide]
-            start = board.mark(coriolis_letter(board, slider),
-                               board.points[on_guide] + coriolis(velocities.rates.get(carrier, 0.0), relative))
-            laid.append(LaidVector(on_guide, start, f"a{inner}{g}ᵏ"))
-            equation += f" + a{inner}{g}ᵏ"
-        equation += f" + a{inner}{g}^r"
-        fixed, angle, along_guide, meaning = self._slide_closed(board, (normal, across, f"⊥{sigma_name}{inner}"), start)
-        laid.append(LaidVector(normal, fixed, f"a{inner}{sigma_name}^τ"))
-        if start != "p":  # from the pole it would be aF itself
-            laid.append(LaidVector(start, fixed, f"a{inner}{g}^r"))
-        laid.append(LaidVector("p", fixed, f"a{inner}"))
-        board.step(Step(
-            equation=equation, vectors=tuple(laid),
-            lines=(DrawnLine(normal, across, LineMeaning("perpendicular", (sigma_name, inner))),
-                   DrawnLine(start, along_guide, meaning)),
-            fixes=(normal, *((start,) if start != on_guide else ()), fixed), crossing_deg=angle))
-
-    def _slide_closed(self, board: Builder, from_sigma: tuple[str, complex, str],
-                      on_guide_line: str) -> tuple[str, float, complex, LineMeaning]:
-        """The sliding pin's image: the line through ``from_sigma`` (letter, direction, label) crossed with the
-        line along the guide through ``on_guide_line``; recorded on the slider with its sliding.  Returns the
-        image, the crossing angle, the guide's direction and what its line means."""
-        _, inner, slider = self.arms()[self.sliding]
-        _, along_guide, carrier = board.guide_line(self.guide)
-        meaning = guide_meaning(self.guide)
-        start, direction, label = from_sigma
-        value, angle = board.cross(Line(board.points[start], direction, label),
-                                   Line(board.points[on_guide_line], along_guide, meaning.text))
-        fixed = board.fix(inner, value)
-        board.on_link(slider, board.positions[inner], fixed)
-        board.turns_with[slider] = carrier
-        board.slides(slider, on_guide_line, fixed)
-        return fixed, angle, along_guide, meaning
-
     # The forces: the group cut free, moments about each inner joint and about Assur's point.
 
     def construct_forces(self, board: ForceBoard) -> None:
@@ -649,7 +583,9 @@ class Triad(Group):
             if n == self.sliding:
                 _, u, carrier = board.guide_line(self.guide)
                 names[n] = (f"R{carrier}{link}", carrier)
-                across[n], along[n], tau[n] = u, 1j * u, 0.0  # no friction: the guide's reaction is its normal
+                # The unknown's direction (`along`) is the guide's normal, the reaction having no part along the
+                # guide (`across`, where it shifts instead): the friction in the pair comes in as loads.
+                across[n], along[n], tau[n] = u, 1j * u, 0.0
                 continue
             source = board.source_of(outer, link)
             names[n] = (f"R{source}{link}", source)
