@@ -162,7 +162,7 @@ def test_the_sketch_picks_the_assembly_whose_slider_is_nearest():
     # At φ = 0 the same legs close in other assemblies too, found by moving the sketch there; they do not run
     # round the whole turn, so the scene asks for no strokes, which would solve it.
     alone = TEXT.replace('start       = "extreme"', "start = 0.0").replace(
-        'working     = { link = 5, sense = "forward" }', "").replace('during    = "working"', "")
+        'working     = { link = 5, sense = "backward" }', "").replace('during    = "working"', "")
     first = graphplan.solve(loads(alone), driver=[0.0])
     f_first = _xy(first.point("F").r[0])
     assert abs(f_first - (0.14 + 0.06j)) < 0.01
