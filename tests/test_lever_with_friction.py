@@ -36,8 +36,18 @@ def slotted_lever_with_friction():
     return analyse(dataclasses.replace(scene, friction=specs))
 
 
+def triad_slider_with_friction():
+    """The triad whose third leg slides, with friction on the slider's guide and in two journals of the triad."""
+    scene = graphplan.load(FIXTURES / "triad_with_slider.toml")
+    specs = (FrictionSpec("friction[0]", "F", (1, 5), 0.12, None, None),
+             FrictionSpec("friction[1]", "B", (3, 6), 0.1, 0.01, None),
+             FrictionSpec("friction[2]", "D", (4, 6), 0.1, 0.01, None))
+    return analyse(dataclasses.replace(scene, friction=specs))
+
+
 CASES = {
     "journals of the ratchet": lambda: ratchet_with_friction(0.12),
+    "guide and journals of a triad's sliding leg": triad_slider_with_friction,
     "slot and journals of the slotted lever": slotted_lever_with_friction,
     "guide of the slider-crank, on the frame": lambda: analyse(slider_crank(
         '[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 0.15\n[[friction]]\njoint = "A"\nf = 0.1\nradius = 0.02')),
