@@ -4,8 +4,8 @@ Those already hold fixtures/triad_with_slider.toml (a slider on a frame guide) a
 variant ``ratchet+triad-slider-on-rocker`` (a slider on the rocking link 4, so with a Coriolis
 term) to their closure, finite differences, the 50-digit reference, the plans against the analytic
 solution and the force polygons against the linear system of statics.  Here: the structure, Assur's
-point on the two turning legs, the Coriolis component itself, the guide's reaction, every kind of
-bad input.
+point on the two turning legs, the Coriolis component itself, the guide's reaction, the sliding leg
+listed first or second, every kind of bad input.
 """
 
 from __future__ import annotations
@@ -183,3 +183,34 @@ def test_the_sketch_picks_the_assembly_whose_slider_is_nearest():
         assert abs((np.exp(1j * np.radians(30.0)) * (f - 0.14j)).imag) < 1e-9  # F on the guide through E
         assert abs(abs(d - b) - 0.075) < 1e-9 and abs(abs(f - d) - 0.115) < 1e-9 and abs(abs(b - f) - 0.065) < 1e-9
     assert any(abs(_xy(m.point("F").r[0]) - f_first) > 0.01 for m in others)
+
+
+_GROUP = '''links   = [3, 4, 5, 6]                          # binary AB, CD, the slider at F, then the ternary link BDF
+joints  = ["A", "B", "C", "D", "E", "F"]
+lengths = [0.17, 0.14]                          # lAB, lCD: the leg EF slides
+guides  = { F = { angle = -30.0 } }             # the slider 5 at F moves along the frame's line through E
+sides   = [0.075, 0.115, 0.065]                 # the ternary link: lBD, lDF, lFB'''
+
+
+@pytest.mark.parametrize("legs", [
+    # the slider first: legs EF, AB, CD; the sides FB, BD, DF
+    ('links = [5, 3, 4, 6]\njoints = ["E", "F", "A", "B", "C", "D"]\nlengths = [0.17, 0.14]\n'
+     'guides = { F = { angle = -30.0 } }\nsides = [0.065, 0.075, 0.115]'),
+    # the slider second: legs AB, EF, CD; the sides BF, FD, DB
+    ('links = [3, 5, 4, 6]\njoints = ["A", "B", "E", "F", "C", "D"]\nlengths = [0.17, 0.14]\n'
+     'guides = { F = { angle = -30.0 } }\nsides = [0.065, 0.115, 0.075]'),
+], ids=["slider-first", "slider-second"])
+def test_the_sliding_leg_may_be_any_of_the_three(legs):
+    # The same mechanism with its legs listed in another order: another leg is swept for the assemblies and
+    # Assur's point comes from other legs of the list, and every motion, reaction and balancing moment is the same.
+    assert _GROUP in TEXT
+    listed = analyse(_scene(_GROUP, legs))
+    fixture = analyse(graphplan.load(FIXTURE))
+    for name in "BDF":
+        assert np.max(np.abs(listed.motion.point(name).r - fixture.motion.point(name).r)) <= 1e-12
+        assert np.max(np.abs(listed.motion.point(name).a - fixture.motion.point(name).a)) <= 1e-9
+    for mine, theirs in zip(listed.plans, fixture.plans, strict=True):
+        largest = max(abs(found.force) for found in theirs.forces.reactions.values())
+        for name, found in theirs.forces.reactions.items():
+            assert abs(mine.forces.reactions[name].force - found.force) <= 1e-9 * largest, name
+        assert mine.forces.balancing == pytest.approx(theirs.forces.balancing, rel=1e-9)
