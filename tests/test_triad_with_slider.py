@@ -26,6 +26,9 @@ from graphplan.groups.sliding import coriolis
 from graphplan.kinematics import cross
 from graphplan.loads import activity, link_loads, plan_state
 from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.render import positions
+from graphplan.render.drawings import positions_plan
+from graphplan.render.primitives import Circle, Polyline
 from graphplan.scene import loads
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "triad_with_slider.toml"
@@ -214,3 +217,18 @@ def test_the_sliding_leg_may_be_any_of_the_three(legs):
         for name, found in theirs.forces.reactions.items():
             assert abs(mine.forces.reactions[name].force - found.force) <= 1e-9 * largest, name
         assert mine.forces.balancing == pytest.approx(theirs.forces.balancing, rel=1e-9)
+
+
+def test_the_plan_of_positions_runs_the_guide_on_to_the_frame_point_it_is_named_through():
+    # E is no pivot: without a dot and the guide's line run on to it, its label would stand by nothing.
+    analysis = analyse(graphplan.load(FIXTURE))
+    plan = positions_plan(analysis)
+    (frame,) = [layer for layer in positions.layout(plan) if layer.name == "frame"]
+    e = analysis.mechanism.scene.frame_points["E"] / plan.length_scale
+    dots = [item for item in frame.items if isinstance(item, Circle) and item.fill == "black"]
+    assert any(abs(complex(*dot.centre) - e) < 1e-9 for dot in dots)
+    u = np.exp(1j * np.radians(-30.0))
+    reaching = [line for line in frame.items if isinstance(line, Polyline) and len(line.points) == 2
+                and all(abs((np.conj(u) * (complex(*end) - e)).imag) < 1e-6 for end in line.points)
+                and min(abs(complex(*end) - e) for end in line.points) < 1e-6]
+    assert reaching, "the guide's line does not reach E"

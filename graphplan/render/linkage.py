@@ -24,6 +24,7 @@ from .primitives import (
     Polyline,
     Primitive,
     Stroke,
+    dot_marker,
     frame_pivot,
     hatching,
     pin,
@@ -154,6 +155,19 @@ def frame_guide(start: complex, end: complex, u: complex, length_scale: float, p
     off = side * 2.5 * length_scale * 1j * u
     first, last = ground or (start, end)
     return [*hatching(paper(first + off), paper(last + off), side=side), Polyline((paper(start), paper(end)), THIN)]
+
+
+def frame_points_along(mechanism: Mechanism, through: complex, u: complex) -> list[float]:
+    """How far along the line through ``through`` along ``u`` (m) each frame point on it lies: a guide is drawn
+    on to them, so that the point its scene names stands on it."""
+    return [((q - through) * u.conjugate()).real for q in mechanism.scene.frame_points.values()
+            if abs(((q - through) * u.conjugate()).imag) < 1e-9 * max(abs(q - through), 1.0)]
+
+
+def loose_frame_points(mechanism: Mechanism, paper: Paper) -> list[Primitive]:
+    """Frame points that no link turns about (a guide's end), as dots: their labels mark something drawn."""
+    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
+    return [dot_marker(paper(r)) for name, r in mechanism.scene.frame_points.items() if name not in pivots]
 
 
 def ground_side(points: Iterable[complex], through: complex, u: complex) -> float:

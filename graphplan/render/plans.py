@@ -30,7 +30,17 @@ from ..mechanism import Mechanism
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
 from .labels import Anchor, obstacles_of, open_direction, place_labels
-from .linkage import GROUND_MARGIN_MM, Paper, frame_guide, frame_pivots, ground_side, links_at, outline_points
+from .linkage import (
+    GROUND_MARGIN_MM,
+    Paper,
+    frame_guide,
+    frame_pivots,
+    frame_points_along,
+    ground_side,
+    links_at,
+    loose_frame_points,
+    outline_points,
+)
 from .primitives import (
     Arrow,
     Layer,
@@ -231,8 +241,7 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
             u, r = complex(at(slide.u, index)), where(slide.joint)
             # The guide carries the block with room to spare, and runs to the frame points on its line.
             reach = GUIDE_REACH_MM * sheet.length_scale
-            along = [0.0] + [((q - r) * u.conjugate()).real for q in mechanism.scene.frame_points.values()
-                             if abs(((q - r) * u.conjugate()).imag) < 1e-9 * max(abs(q - r), 1.0)]
+            along = [0.0, *frame_points_along(mechanism, r, u)]
             first, last = min(along) - reach, max(along) + reach
             # The ground is hatched where the block travels, on the side clear of the links in this position: a
             # crank turning on the guide's line would otherwise cross it.
@@ -243,9 +252,8 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
             frame.extend(frame_guide(r + first * u, r + last * u, u, sheet.length_scale, paper, ground, side))
     frame.extend(frame_pivots(mechanism, paper))
     # Named points, and frame points that are no pivot (the end of a guide), as dots.
-    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
     marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
-    marks += [dot_marker(paper(r)) for name, r in mechanism.scene.frame_points.items() if name not in pivots]
+    marks += loose_frame_points(mechanism, paper)
     senses, turn_anchors = _senses(sheet, outlines, where, paper, frame)
     special, special_at = _special_points(sheet.velocity, where, paper)
     marks += special

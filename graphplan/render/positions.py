@@ -18,7 +18,17 @@ from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from .labels import Anchor, obstacles_of, place_labels
-from .linkage import GROUND_MARGIN_MM, Paper, frame_guide, frame_pivots, ground_side, links_at, outline_points
+from .linkage import (
+    GROUND_MARGIN_MM,
+    Paper,
+    frame_guide,
+    frame_pivots,
+    frame_points_along,
+    ground_side,
+    links_at,
+    loose_frame_points,
+    outline_points,
+)
 from .plans import CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE
 from .primitives import (
     BOLD,
@@ -86,7 +96,8 @@ def _mechanism_at(motion: Motion, outlines: dict[int, list[str]], paper: Paper, 
 
 
 def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
-    """Fixed pivots and frame guides, drawn once; a guide spans its slider's whole travel."""
+    """Fixed pivots and frame guides, drawn once; a guide's ground spans its slider's whole travel, and its line
+    runs on to the frame points on it (the point a triad's guide is named through)."""
     mechanism, motion = plan.mechanism, plan.paths
     frame = mechanism.scene.frame_link
     items: list[Primitive] = []
@@ -98,10 +109,15 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
         along = (track * np.conj(u)).real
         base = complex(track[0]) - float(along[0]) * u
         margin = GROUND_MARGIN_MM * plan.length_scale
-        start, end = base + (along.min() - margin) * u, base + (along.max() + margin) * u
+        travel = (float(along.min() - along[0]) - margin, float(along.max() - along[0]) + margin)
+        reach = frame_points_along(mechanism, complex(track[0]), u)
+        first, last = min([travel[0], *reach]), max([travel[1], *reach])
+        ground = (complex(track[0]) + travel[0] * u, complex(track[0]) + travel[1] * u)
         links = (complex(r) for point in motion.points.values() for r in np.atleast_1d(point.r))
-        items.extend(frame_guide(start, end, u, plan.length_scale, paper, side=ground_side(links, base, u)))
+        items.extend(frame_guide(complex(track[0]) + first * u, complex(track[0]) + last * u, u, plan.length_scale,
+                                 paper, ground, side=ground_side(links, base, u)))
     items.extend(frame_pivots(mechanism, paper))
+    items.extend(loose_frame_points(mechanism, paper))
     return items
 
 
