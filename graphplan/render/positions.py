@@ -106,16 +106,16 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
             continue
         track = np.atleast_1d(motion.points[slide.joint].r)
         u = complex(at(slide.u, 0))
-        along = (track * np.conj(u)).real
-        base = complex(track[0]) - float(along[0]) * u
+        origin = complex(track[0])
+        along = ((track - origin) * np.conj(u)).real
         margin = GROUND_MARGIN_MM * plan.length_scale
-        travel = (float(along.min() - along[0]) - margin, float(along.max() - along[0]) + margin)
-        reach = frame_points_along(mechanism, complex(track[0]), u)
+        travel = (float(along.min()) - margin, float(along.max()) + margin)
+        reach = frame_points_along(mechanism, origin, u)
         first, last = min([travel[0], *reach]), max([travel[1], *reach])
-        ground = (complex(track[0]) + travel[0] * u, complex(track[0]) + travel[1] * u)
+        ground = (origin + travel[0] * u, origin + travel[1] * u)
         links = (complex(r) for point in motion.points.values() for r in np.atleast_1d(point.r))
-        items.extend(frame_guide(complex(track[0]) + first * u, complex(track[0]) + last * u, u, plan.length_scale,
-                                 paper, ground, side=ground_side(links, base, u)))
+        items.extend(frame_guide(origin + first * u, origin + last * u, u, plan.length_scale, paper, ground,
+                                 side=ground_side(links, origin, u)))
     items.extend(frame_pivots(mechanism, paper))
     items.extend(loose_frame_points(mechanism, paper))
     return items
