@@ -22,7 +22,6 @@ from dataclasses import dataclass, replace
 
 from .errors import SceneError
 from .forces import ForcePlan
-from .groups.sliding import guide_link
 from .mechanism import Mechanism
 from .plans import LaidVector, Plan, Step
 
@@ -154,29 +153,13 @@ def _relative_pairs(mechanism: Mechanism, velocity: Plan) -> list[tuple[str, str
 def sliding_pairs(mechanism: Mechanism, positions: Mapping[str, complex]) -> list[SlidingPair]:
     """The sliding pairs of the groups at the instant whose points are at ``positions``.
 
-    They are the pairs of ``Motion.slides``, in the same order: an RRP's
-    slider on its guide, an RPR's block on the lever, each PRP slider on its
-    guide, an RPP's block in the slot of link b and link b on its guide, a
-    triad's slider on its guide.  The driver's own slide is given, not constructed, so it is not among them.
+    They are the pairs of ``Motion.slides``, in the same order, as each group
+    names them (``Group.sliding_pairs``).  The driver's own slide is given,
+    not constructed, so it is not among them.
     """
     frame = mechanism.scene.frame_link
-    found: list[tuple[int, int, str]] = []
-    for group in mechanism.groups:
-        if group.kind == "RRP":
-            found.append((group.links[1], guide_link(mechanism, group.guide), group.joints[1]))
-        elif group.kind == "RPR":
-            found.append((group.links[0], group.links[1], group.joints[0]))
-        elif group.kind == "PRP":
-            found += [(link, guide_link(mechanism, guide), group.joints[0])
-                      for link, guide in zip(group.links, group.guide_pair)]
-        elif group.kind == "RPP":
-            found += [(group.links[0], group.links[1], group.joints[0]),
-                      (group.links[1], guide_link(mechanism, group.guide), group.joints[1])]
-        elif group.kind == "triad" and group.guide is not None:
-            _, inner, slider = group.arms()[group.sliding]
-            found.append((slider, guide_link(mechanism, group.guide), inner))
     pairs = []
-    for slider, guide, joint in found:
+    for slider, guide, joint in (pair for group in mechanism.groups for pair in group.sliding_pairs(mechanism)):
         if guide == frame:
             pairs.append(SlidingPair(slider, guide, joint))
             continue

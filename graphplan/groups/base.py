@@ -175,6 +175,15 @@ class Group:
     def guides(self) -> tuple[Guide, ...]:
         return ()
 
+    def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
+        """Each sliding pair the group constructs as (slider, the link it slides on, its joint): the pairs of
+        ``Motion.slides``, in the same order."""
+        return ()
+
+    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
+        """The sliders whose guide turns: their acceleration has a Coriolis component."""
+        return tuple(slider for slider, guide, _ in self.sliding_pairs(mechanism) if turns(mechanism, guide))
+
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         """For each of the group's links, the joints fixed on it."""
         raise NotImplementedError
@@ -207,6 +216,11 @@ class Group:
 
     def construct_acceleration(self, board, velocities) -> None:
         raise NotImplementedError(f"the acceleration plan of a {self.kind} group is not constructed yet")
+
+
+def turns(mechanism, link: int) -> bool:
+    """Whether ``link`` can turn: neither the frame nor a link translating on a frame guide."""
+    return link != mechanism.scene.frame_link and link not in mechanism.translating
 
 
 def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -> None:

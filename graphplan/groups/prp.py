@@ -32,7 +32,6 @@ from .sliding import (
     guide_link,
     guide_meaning,
     guide_point,
-    turns,
 )
 
 
@@ -101,10 +100,9 @@ class PRP(Group):
             conditioning=det,
         )
 
-    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
-        """Each slider whose guide turns."""
-        return tuple(link for link, guide in zip(self.links, self.guide_pair)
-                     if turns(mechanism, guide_link(mechanism, guide)))
+    def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
+        """Each slider on its guide."""
+        return tuple((link, guide_link(mechanism, guide), self.joints[0]) for link, guide in zip(self.links, self.guide_pair))
 
     # The plans: the same equations, solved by crossing lines of action.
 

@@ -31,7 +31,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, unit
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, image_name
 from ..reader import Table
-from .base import Context, Group, GroupMotion, Guide, read_guide
+from .base import Context, Group, GroupMotion, Guide, read_guide, turns
 from .sliding import (
     coriolis,
     coriolis_letter,
@@ -39,7 +39,6 @@ from .sliding import (
     guide_link,
     guide_meaning,
     guide_point,
-    turns,
 )
 
 # Link b's images must be this far apart (a fraction of the mechanism's size) to carry its figure.
@@ -110,8 +109,17 @@ class RPP(Group):
             conditioning=det,
         )
 
+    def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
+        """The block in the slot of link b, and link b on its guide."""
+        return ((self.links[0], self.links[1], self.joints[0]),
+                (self.links[1], guide_link(mechanism, self.guide), self.joints[1]))
+
     def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
-        """Both links when the guide turns: the block in the turning slot, link b on the turning guide."""
+        """Both links when the guide turns: the block in the turning slot, link b on the turning guide.
+
+        Link b turns only with its guide, which the mechanism's translating links cannot tell where the guide's
+        link itself translates; so the guide decides for both.
+        """
         return self.links if turns(mechanism, guide_link(mechanism, self.guide)) else ()
 
     # The plans: the same equations, solved by crossing lines of action.

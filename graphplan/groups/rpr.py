@@ -107,9 +107,9 @@ class RPR(Group):
             conditioning=sine,
         )
 
-    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
-        """The block: it slides on the turning lever."""
-        return (self.links[0],)
+    def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
+        """The block on the lever."""
+        return ((self.links[0], self.links[1], self.joints[0]),)
 
     # The plans: the same equations, solved by crossing lines of action.
 

@@ -44,7 +44,7 @@ from .base import (
     read_branch,
     read_guide,
 )
-from .sliding import acceleration_on_guide, guide_link, turns, velocity_on_guide
+from .sliding import acceleration_on_guide, guide_link, velocity_on_guide
 
 # B ahead of (forward) or behind (backward) the foot of A on the guide,
 # counted along the guide's direction.
@@ -138,9 +138,9 @@ class RRP(Group):
             conditioning=sine,
         )
 
-    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
-        """The slider, when its guide turns (its acceleration then has a Coriolis component)."""
-        return (self.links[1],) if turns(mechanism, guide_link(mechanism, self.guide)) else ()
+    def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
+        """The slider on its guide."""
+        return ((self.links[1], guide_link(mechanism, self.guide), self.joints[1]),)
 
     # The plans: the same equations, solved by crossing lines of action.
 

@@ -23,18 +23,12 @@ def guide_link(mechanism, guide: Guide) -> int:
     return scene.frame_link if guide.link is None else guide.link
 
 
-def turns(mechanism, link: int) -> bool:
-    """Whether ``link`` can turn: neither the frame nor a link translating on a frame guide."""
-    return link != mechanism.scene.frame_link and link not in mechanism.translating
-
-
 def coriolis_letter(board: Builder, slider: int) -> str:
     """``k`` for the end of the Coriolis component, ``k`` + the slider's link number when the mechanism has several.
 
     Primed (``k′``) when a point of the mechanism is named K, so that its image keeps the letter.
     """
-    count = sum(len(group.coriolis_sliders(board.mechanism)) for group in board.mechanism.groups
-                if hasattr(group, "coriolis_sliders"))
+    count = sum(len(group.coriolis_sliders(board.mechanism)) for group in board.mechanism.groups)
     base = free_letter(board, "k")
     return base if count <= 1 else f"{base}{slider}"
 

@@ -42,7 +42,7 @@ from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
-from .sliding import acceleration_on_guide, guide_link, turns, velocity_on_guide
+from .sliding import acceleration_on_guide, guide_link, velocity_on_guide
 
 # Samples of a turning leg's circle at the reference position: two assemblies closer than a 2048th of a
 # turn would be missed, and such a triad is at a singular position anyway.
@@ -194,11 +194,12 @@ class Triad(Group):
     def slider_link(self) -> int | None:
         return None if self.sliding is None else self.arms()[self.sliding][2]
 
-    def coriolis_sliders(self, mechanism) -> tuple[int, ...]:
-        """The slider, when its guide turns (its acceleration then has a Coriolis component)."""
-        if self.guide is None or not turns(mechanism, guide_link(mechanism, self.guide)):
+    def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
+        """The sliding leg's slider on its guide."""
+        if self.guide is None:
             return ()
-        return (self.slider_link(),)
+        _, inner, slider = self.arms()[self.sliding]
+        return ((slider, guide_link(mechanism, self.guide), inner),)
 
     # The position: the pose of the ternary link.
 
