@@ -401,8 +401,15 @@ def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Referen
         # A crank's sweep closes on itself: its first and last samples are one position.
         inner = np.arange(0 if cyclic else 1, len(x) - 1)
         before = np.where(inner == 0, sine[-2], sine[inner - 1])  # sample 0's neighbour before it is the last but one
-        least = inner[(sine[inner] <= before) & (sine[inner] <= sine[inner + 1])]
-        for i in least:
+        after = sine[inner + 1]
+        # Two equal samples either side of a minimum are one minimum: the first of them is its bracket.
+        least = (sine[inner] < before) & (sine[inner] <= after)
+        # Only a least sample that could hide a toggle is zoomed into. Between samples h apart the sine
+        # dips below its least sample by at most the larger step to a neighbour: a smooth minimum
+        # c + k·(x − x0)² by k·h²/4 against steps of at least k·h², a crossing of parallel (|m·(x − x0)|)
+        # to 0 against a step of m·h. Twice that step is the margin.
+        steep = np.maximum(np.abs(sine[inner] - before), np.abs(after - sine[inner]))
+        for i in inner[least & (sine[inner] - 2 * steep < limit)]:
             low = x[i - 1] if i > 0 else x[0] - (x[1] - x[0])
             brackets.append((float(low), float(x[i + 1])))
             labels.append(label)

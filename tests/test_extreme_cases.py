@@ -98,9 +98,10 @@ def test_near_toggles_are_warned_with_their_condition_number():
                 assert f"{angle:.3g}°" in detail, detail
 
 
-@pytest.mark.parametrize("start", [7.0, 15.0, 22.0])
+@pytest.mark.parametrize("start", [7.0, 15.0, 22.0, 15.5, 15.123])
 def test_a_stepped_over_change_point_is_warned_at_the_position_before_it(start):
-    """s + l = p + q with the frame and coupler equal: all four links are in line at φ = 0° and 180° exactly."""
+    """s + l = p + q with the frame and coupler equal: all four links are in line at φ = 0° and 180° exactly.
+    From a start of 15.5° the sweep's 1° samples fall either side of each toggle, equally far from it."""
     text = (BENCH / "extreme" / "change_point.toml").read_text(encoding="utf-8").replace("start = 15.0", f"start = {start}")
     analysis = analyse(graphplan.scene.loads(text))
     stepped = [w for w in analysis.warnings if w.code == "toggle-between"]
