@@ -191,7 +191,9 @@ def _sliding_readings(mechanism: Mechanism, plan: Plan, symbol: str,
 
 def _laid_along_guide(plan: Plan, ends: tuple[str, str]) -> tuple[Step, LaidVector] | None:
     """The vector a step laid off along a guide (a line of action ``∥ …`` from its start to the crossing it fixed)
-    between the slide's two letters, either way round.
+    between the slide's two letters, either way round; or, where the slider's pin was put on the plan by
+    similarity (a triad's sliding leg whose normal runs through Assur's point), the vector a step that fixes
+    nothing read off between them.
 
     Asked by its letters, not its value: at an extreme two slides may both be
     zero, and a normal or tangential component zero at this instant would
@@ -200,9 +202,9 @@ def _laid_along_guide(plan: Plan, ends: tuple[str, str]) -> tuple[Step, LaidVect
     for step in plan.steps:
         along = {line.through for line in step.lines if line.along.parallel}
         for vector in step.vectors:
-            if vector.start not in along or vector.end not in step.fixes or vector.start == vector.end:
+            if vector.start == vector.end or {vector.start, vector.end} != set(ends):
                 continue
-            if {vector.start, vector.end} == set(ends):
+            if (vector.start in along and vector.end in step.fixes) or not step.fixes:
                 return step, vector
     return None
 

@@ -264,8 +264,8 @@ def _translating_links(scene: Scene) -> set[int]:
             for guide, link in zip(group.guide_pair, group.links):
                 if on_frame(scene, guide):
                     links.add(link)
-        if group.kind == "triad" and group.guide is not None and on_frame(scene, group.guide):
-            links.add(group.slider_link())
+        if group.kind == "triad":
+            links.update(slider for slider, guide in group.sliders() if on_frame(scene, guide))
     return links
 
 

@@ -66,7 +66,9 @@ class LineMeaning:
 
     ``perpendicular`` and ``parallel`` lines run square to or along the
     segment between the mechanism's ``points`` (``⊥ AB``, ``∥ CA``); a
-    ``guide`` line along a guide on the frame (``link`` None) or on ``link``;
+    ``guide`` line along a guide on the frame (``link`` None) or on ``link``,
+    naming in ``points`` the slider's pin whose sliding it carries where Assur's
+    point lies on the guide's normal there;
     a ``frame_line`` along the frame line ``name``; a ``slot`` line along the
     slot cut in ``link``; a ``slide`` line along the slide of ``link`` where
     it misses the link's points.

@@ -264,8 +264,8 @@ def _closure(group, scene, points, angles) -> tuple[Callable, Callable]:
 
         def inner(leg, q):
             """The inner joint of a leg: its binary link at angle q, or the slider s = q along its guide."""
-            if leg == group.sliding:
-                origin, u, _ = _guide(scene, group.guide, points, angles)
+            if group.leg_guides[leg] is not None:
+                origin, u, _ = _guide(scene, group.leg_guides[leg], points, angles)
                 return origin + q * u
             return points[group.joints[2 * leg]] + mpf(group.lengths[leg]) * expi(q)
 
@@ -275,8 +275,8 @@ def _closure(group, scene, points, angles) -> tuple[Callable, Callable]:
 
         def outputs(qa, qb, qc, psi):
             turned = {la: qa, lb: qb, lc: qc, lt: psi}
-            if group.sliding is not None:
-                turned[group.links[group.sliding]] = _guide(scene, group.guide, points, angles)[2]
+            for leg in group.sliding_legs:
+                turned[group.links[leg]] = _guide(scene, group.leg_guides[leg], points, angles)[2]
             return {b_name: inner(0, qa), d_name: inner(1, qb), f_name: inner(2, qc)}, turned
     else:  # pragma: no cover - a new group kind needs its closure written here
         raise NotImplementedError(f"no reference closure for {kind} groups")
@@ -320,9 +320,9 @@ def _first_guess(group, scene, points, angles, near: Mapping[str, complex], near
     if kind == "triad":
         a, b, c, d, e, f = (value(name) for name in group.joints)
         legs = [mp.arg(b - a), mp.arg(d - c), mp.arg(f - e)]
-        if group.sliding is not None:
-            origin, u, _ = _guide(scene, group.guide, points, angles)
-            legs[group.sliding] = mp.re((value(group.new_joints()[group.sliding]) - origin.d0) * mp.conj(u.d0))
+        for leg in group.sliding_legs:
+            origin, u, _ = _guide(scene, group.leg_guides[leg], points, angles)
+            legs[leg] = mp.re((value(group.new_joints()[leg]) - origin.d0) * mp.conj(u.d0))
         return (*legs, mp.arg(d - b))
     a_name, b_name = group.joints
     origin, u, _ = _guide(scene, group.guide, points, angles)

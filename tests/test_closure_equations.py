@@ -195,12 +195,12 @@ def check_rpp(m: Solved, group) -> None:
 
 
 def check_triad(m: Solved, group) -> None:
-    """Each turning leg its length, the sliding leg's pin on its guide, BDF a rigid triangle turning as sketched."""
+    """Each turning leg its length, each sliding leg's pin on its guide, BDF a rigid triangle turning as sketched."""
     a, b, c, d, e, f = (m.r(name) for name in group.joints)
     legs = list(zip(((a, b), (c, d), (e, f)), group.lengths, zip(group.joints[0::2], group.joints[1::2])))
     for n, ((outer, inner), length, (o_name, i_name)) in enumerate(legs):
-        if n == group.sliding:
-            origin, u = guide_line(m, group.guide)
+        if group.leg_guides[n] is not None:
+            origin, u = guide_line(m, group.leg_guides[n])
             assert_small(f"{i_name}'s distance from its guide", cross(u, inner - origin), m.size)
             slider = group.links[n]
             assert_small(f"angle of link {slider} − the guide's", wrapped(m.angle(slider) - np.angle(u)), 1.0)
@@ -220,7 +220,7 @@ def check_triad(m: Solved, group) -> None:
     *binaries, ternary = group.links
     for n, (link, (o_name, i_name), (outer, inner)) in enumerate(zip(binaries, zip(group.joints[0::2], group.joints[1::2]),
                                                                      ((a, b), (c, d), (e, f)))):
-        if n == group.sliding:
+        if group.leg_guides[n] is not None:
             continue
         assert_small(f"angle of link {link} − direction {o_name}{i_name}", wrapped(m.angle(link) - np.angle(inner - outer)), 1.0)
     assert_small(f"angle of link {ternary} − direction BD", wrapped(m.angle(ternary) - np.angle(d - b)), 1.0)

@@ -82,6 +82,18 @@ guides = { L = { link = 4, angle = 60.0 } }
 sides = [0.15, 0.17, 0.18]
 near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
 """,
+    # The same triad with two sliding legs: slider 6 on the rocking link 4 (a Coriolis term), slider 7 on a
+    # frame guide through C; only the leg EG turns.
+    "ratchet+triad-two-sliders": """
+[[groups]]
+kind = "triad"
+links = [5, 6, 7, 8]
+joints = ["E", "G", "S4", "K", "C", "L"]
+lengths = [0.26]
+guides = { K = { link = 4, angle = 60.0 }, L = { angle = 80.0 } }
+sides = [0.15, 0.17, 0.18]
+near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
+""",
 }
 
 
@@ -99,8 +111,24 @@ def _offset_slot():
     return dataclasses.replace(scene, groups=(dataclasses.replace(lever, offset=0.04),))
 
 
+def square_guides():
+    """The triad with a slider with its leg CD sliding too, on a frame guide through C square to F's guide: the
+    guides' normals cross square at every position, so Assur's point is always where they cross."""
+    text = (FIXTURE_DIR / "triad_with_slider.toml").read_text(encoding="utf-8")
+    changes = {"C = [0.28, 0.0]": "C = [0.25, 0.2]",
+               "guides  = { F = { angle = -30.0 } }": "guides  = { F = { angle = -30.0 }, D = { angle = 60.0 } }",
+               "lengths = [0.17, 0.14]": "lengths = [0.17]",
+               'S4 = { link = 4, from = "C", toward = "D", at = 0.07 }\n': "",
+               'mass = 1.6\ncentre = "S4"\ninertia = 0.00261': 'mass = 1.6\ncentre = "D"'}
+    for old, new in changes.items():
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return loads(text)
+
+
 VARIANTS = {name: _hung_on_the_ratchet(group) for name, group in _HUNG_ON_THE_RATCHET.items()}
 VARIANTS["quick_return+slot-offset"] = _offset_slot
+VARIANTS["triad_with_slider+square-guides"] = square_guides
 CASES = {path.stem: functools.partial(graphplan.load, path) for path in FIXTURES} | VARIANTS
 
 H_VELOCITY = 1e-5

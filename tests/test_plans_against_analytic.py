@@ -32,6 +32,7 @@ import pytest
 from test_motion_against_finite_differences import (
     _HUNG_ON_THE_RATCHET as GROUPS_ON_THE_RATCHET,  # noqa: E402
 )
+from test_motion_against_finite_differences import square_guides
 
 import graphplan
 from graphplan import check, plans
@@ -67,6 +68,7 @@ _OFF_LINE_POINT = {
     "ratchet+RPP-on-rocker": 'F6 = { link = 6, from = "K", toward = "E", at = 0.1, offset = 0.05 }',
     "ratchet+PRP-rocker-coupler": "",
     "ratchet+triad-slider-on-rocker": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
+    "ratchet+triad-two-sliders": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
 }
 _HUNG_ON_THE_RATCHET = {name: (GROUPS_ON_THE_RATCHET[name], point) for name, point in _OFF_LINE_POINT.items()}
 _HUNG_ON_THE_RATCHET["ratchet+RPR-moving-pivot-offset"] = ("""
@@ -98,6 +100,7 @@ def _offset_slot():
 CASES = {path.stem: functools.partial(lambda p: loads(_fixture_text(p)), path) for path in FIXTURES}
 CASES |= {name: functools.partial(_hung, name) for name in _HUNG_ON_THE_RATCHET}
 CASES["quick_return+slot-offset"] = _offset_slot
+CASES["triad_with_slider+square-guides"] = square_guides
 CASES["shaper+crank-epsilon"] = functools.partial(_with_epsilon, FIXTURE_DIR / "shaper_six_bar.toml", -4.0)
 CASES["tangent+crank-epsilon"] = functools.partial(_with_epsilon, FIXTURE_DIR / "tangent_mechanism_prp.toml", 2.5)
 

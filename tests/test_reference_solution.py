@@ -86,8 +86,7 @@ def test_link_lengths_hold_at_50_digits(case):
                 elif group.kind == "RRP":
                     pairs.append((*group.joints, group.length))
                 elif group.kind == "triad":
-                    pairs += [(group.joints[2 * n], group.joints[2 * n + 1], group.lengths[n]) for n in range(3)
-                              if n != group.sliding]
+                    pairs += [(group.joints[2 * n], group.joints[2 * n + 1], group.lengths[n]) for n in group.turning_legs]
             for first, second, length in pairs:
                 (r1, v1, a1), (r2, v2, a2) = instant.points[first], instant.points[second]
                 d, dv, da = r2 - r1, v2 - v1, a2 - a1
@@ -122,8 +121,8 @@ def _lines(scene, mechanism):
                       (group.joints[0], group.joints[1], link, mpf(angle) + mpf(group.angle), 0.0)]
         elif group.kind == "RPR":
             lines.append((group.joints[0], group.joints[1], group.links[1], 0.0, group.offset))
-        elif group.kind == "triad" and group.sliding is not None:
-            lines.append((group.new_joints()[group.sliding], *guide_of(group.guide), 0.0))
+        elif group.kind == "triad":
+            lines += [(group.new_joints()[n], *guide_of(group.leg_guides[n]), 0.0) for n in group.sliding_legs]
     return lines
 
 

@@ -75,7 +75,7 @@ def _where(positions, name: str, link: int) -> complex:
 
 def _guides(mechanism):
     for group in mechanism.groups:
-        yield from getattr(group, "guide_pair", ()) or ((group.guide,) if hasattr(group, "guide") else ())
+        yield from group.guides()
 
 
 # The records' text is today's English, character for character.

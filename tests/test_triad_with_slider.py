@@ -59,18 +59,32 @@ def test_the_slider_makes_the_triad_a_class_iii_group_with_one_sliding_pair():
     assert (slide.slider, slide.guide, slide.joint) == (5, 1, "F")
 
 
-def test_assurs_point_is_where_the_two_turning_legs_cross_not_on_the_slider():
+def _sine(u: complex, w: complex) -> float:
+    return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
+
+
+def test_assurs_point_is_where_two_legs_lines_cross_at_the_widest_angle():
+    """Σ lies on AB, CD, or the normal to the slider's guide at F (Σ's velocity relative to the guide's point
+    under F is then along the guide): on the two of them that cross at the widest angle."""
     analysis = analyse(graphplan.load(FIXTURE))
+    guide = np.exp(1j * np.radians(-30.0))
+    widths = []
     for plan_position in analysis.plans:
         positions = plan_position.positions
         ((name, sigma),) = plan_position.velocity.auxiliary.items()
         assert name == "Σ6"
-        for outer, inner in (("A", "B"), ("C", "D")):
-            bar = positions[inner] - positions[outer]
-            assert abs((bar.conjugate() * (sigma - positions[outer])).imag) <= 1e-9 * abs(bar) * abs(sigma - positions[outer])
-        # F's image is crossed with the guide's line: F moves along the guide, at −30°.
+        lines = {"AB": (positions["B"], positions["B"] - positions["A"]),
+                 "CD": (positions["D"], positions["D"] - positions["C"]),
+                 "normal at F": (positions["F"], 1j * guide)}
+        pairs = [("AB", "CD"), ("AB", "normal at F"), ("CD", "normal at F")]
+        widest = max(pairs, key=lambda pair: _sine(lines[pair[0]][1], lines[pair[1]][1]))
+        widths.append(widest)
+        for through, direction in (lines[widest[0]], lines[widest[1]]):
+            assert _sine(direction, sigma - through) <= 1e-9, (plan_position.number, widest)
+        # F moves along the guide, at −30°, however its image was found.
         v_f = plan_position.velocity.value("F")
-        assert abs((np.exp(-1j * np.radians(-30.0)) * v_f).imag) <= 1e-12 * abs(v_f)
+        assert abs((guide.conjugate() * v_f).imag) <= 1e-12 * abs(v_f)
+    assert any("normal at F" in pair for pair in widths), "the fixture's plans go through the guide's normal"
 
 
 def test_a_slider_on_a_rocking_guide_gets_its_coriolis_component_from_the_plans():
@@ -82,9 +96,10 @@ def test_a_slider_on_a_rocking_guide_gets_its_coriolis_component_from_the_plans(
         where, directions = instant(motion, index)
         velocity = velocity_plan(mechanism, where, directions)
         acceleration = acceleration_plan(mechanism, where, directions, velocity)
-        (step,) = [step for step in acceleration.steps if "aLL4ᵏ" in step.equation]
-        (laid,) = [vector for vector in step.vectors if vector.meaning == "aLL4ᵏ"]
-        drawn = acceleration.points[laid.end] - acceleration.points[laid.start]
+        # Laid once, where L is crossed with the guide, or where Σ is on the guide's normal at L (and read off again).
+        laid = [vector for step in acceleration.steps for vector in step.vectors if vector.meaning == "aLL4ᵏ"]
+        assert laid and len({(vector.start, vector.end) for vector in laid}) == 1
+        drawn = acceleration.points[laid[0].end] - acceleration.points[laid[0].start]
         # 2·ω4 × v_rel from the analytic motion: ω4 of the rocker, v_rel of L along the guide.
         omega = float(motion.link(4).omega[index])
         (slide,) = [s for s in motion.slides if s.slider == 7]
@@ -131,8 +146,11 @@ def test_the_guides_reaction_is_square_to_it_and_shifted_by_the_sliders_moment()
 
 
 @pytest.mark.parametrize(("old", "new", "where", "message"), [
-    (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 0.0 } }", "groups[0].guides", "at most one leg"),
-    (GUIDES, "guides = { }", "groups[0].guides", "at most one leg"),
+    (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 0.0 }, B = { angle = 90.0 } }", "groups[0].guides",
+     "one or two of them"),
+    (GUIDES, "guides = { }", "groups[0].guides", "one or two of them"),
+    (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 110.0 } }", "groups[0].lengths",
+     "must have 1 entry, lAB (the legs CD and EF slide), not 2"),
     (GUIDES, "guides = { E = { angle = -30.0 } }", "groups[0].guides.E", "must name an inner joint"),
     (GUIDES, 'guides = { F = { through = "O", angle = -30.0 } }', "groups[0].guides.F.through",
      "runs through its outer joint E"),

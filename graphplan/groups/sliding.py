@@ -147,7 +147,13 @@ def _crossed_on_guide(board: Builder, point: str, from_pivot: tuple[str, complex
     value, angle = board.cross(Line(board.points[start], direction, label),
                                Line(board.points[on_guide_line], along_guide, meaning.text))
     fixed = board.fix(point, value)
-    board.on_link(slider, board.positions[point], fixed)
-    board.turns_with[slider] = carrier
-    board.slides(slider, on_guide_line, fixed)
+    record_slide(board, slider, point, carrier, on_guide_line, fixed)
     return fixed, angle, along_guide, meaning
+
+
+def record_slide(board: Builder, slider: int, point: str, carrier: int, start: str, end: str) -> None:
+    """Put ``slider`` on the plan by its pin ``point`` (image ``end``): it turns with its guide's link ``carrier``, and
+    its sliding is the vector from ``start`` (the guide's point under the pin, or the Coriolis part's end) to ``end``."""
+    board.on_link(slider, board.positions[point], end)
+    board.turns_with[slider] = carrier
+    board.slides(slider, start, end)

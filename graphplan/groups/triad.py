@@ -5,32 +5,34 @@ are the corners of the ternary (base) link t:
 
     |B − A| = AB,   |D − C| = CD,   |F − E| = EF,   BDF a rigid triangle.
 
-One leg may slide instead of turning: its binary link is a slider pivoted on the ternary link at
-its inner joint (F) and moving along a guide through its outer joint (E), on the frame or on an
-earlier link; its closure is F on that line.  Each inner joint so moves on a track at every
-instant, a circle about its outer joint or the guide's line.
+One or two legs may slide instead of turning: such a binary link is a slider pivoted on the
+ternary link at its inner joint (F) and moving along a guide through its outer joint (E), on the
+frame or on an earlier link; its closure is F on that line.  Each inner joint so moves on a track
+at every instant, a circle about its outer joint or the guide's line.
 
 No closed form places the triad, so its pose q = (B, ψ), ψ the direction of BD, is found
 numerically.  At the reference position every assembly is found (the inner joint of a turning leg
-swept round its circle, the next turning leg's from two circles, the third corner from the
-triangle; each sign change of the third leg's closure refined by Brent's method) and the one
+swept round its circle, the next leg's where its track meets the circle of the ternary link's side
+about it, the third corner from the triangle; each sign change of the third leg's closure refined
+by Brent's method) and the one
 nearest the scene's sketch (``near``) is taken.  Every other position is reached from its
 neighbour by Newton's method, which is why the motion solves a mechanism with a triad on a grid
 of driver positions fine enough to follow one assembly (``continuation``).  The velocities and
 accelerations are the closure differentiated: one Jacobian, two linear solves.
 
 The plans cannot cross two lines at B, D or F, each of which has three unknowns.  Assur's
-special point Σ of the ternary link can be: it lies where the lines of two turning binary links
-(AB and CD) cross, so that B's velocity relative to A and Σ's relative to B are both square to
-AB, and Σ's relative to D and D's relative to C both square to CD.  Then F follows from Σ and E
-by crossing two lines (square to EF, or along the guide where that leg slides), and B and D by
-similarity.  The force analysis takes the whole group's moments about Σ likewise.
+special point Σ of the ternary link can be: it lies where two legs' lines cross, so that B's
+velocity relative to A and Σ's relative to B are both square to AB where the leg AB turns, and
+D's velocity relative to the guide and Σ's relative to D both along the guide where the leg CD
+slides and Σ is on the guide's normal at D.  Then F follows from Σ and E by crossing two lines
+(square to EF, or along the guide where that leg slides), and B and D by similarity.  The force
+analysis takes the whole group's moments about Σ likewise.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -42,7 +44,16 @@ from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table, check_xy
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
-from .sliding import acceleration_on_guide, guide_link, velocity_on_guide
+from .sliding import (
+    acceleration_on_guide,
+    coriolis,
+    coriolis_letter,
+    guide_link,
+    guide_meaning,
+    guide_point,
+    record_slide,
+    velocity_on_guide,
+)
 
 # Samples of a turning leg's circle at the reference position: two assemblies closer than a 2048th of a
 # turn would be missed, and such a triad is at a singular position anyway.
@@ -73,7 +84,7 @@ class TriadBranch:
 @dataclass(frozen=True)
 class Track:
     """Where a leg's inner joint may be at one instant: on the circle of ``radius`` about ``centre`` (the leg's
-    outer joint), or, for the leg that slides, on the guide's line through ``centre`` along unit ``u``."""
+    outer joint), or, for a leg that slides, on the guide's line through ``centre`` along unit ``u``."""
 
     centre: complex
     radius: float = 0.0
@@ -99,24 +110,24 @@ class Triad(Group):
     continuation = True
     joint_roles = ("outer A (link a)", "inner B (links a, t)", "outer C (link b)", "inner D (links b, t)",
                    "outer E (link c)", "inner F (links c, t)")
-    # AB, CD, EF; 0 for the leg that slides.
+    # AB, CD, EF; 0 for a leg that slides.
     lengths: tuple[float, float, float] = (0.0, 0.0, 0.0)
     sides: tuple[float, float, float] = (0.0, 0.0, 0.0)
     near: tuple[tuple[str, complex], ...] = ()
-    # The leg that slides (0, 1 or 2, as a, b, c), and its guide through that leg's outer joint.
-    sliding: int | None = None
-    guide: Guide | None = None
+    # Each leg's guide through its outer joint where that leg slides (a, b, c in order), None where it turns.
+    leg_guides: tuple[Guide | None, Guide | None, Guide | None] = (None, None, None)
 
     @classmethod
     def read(cls, table: Table, links: tuple[int, ...], joints: tuple[str, ...]) -> Triad:
         inner = (joints[1], joints[3], joints[5])
-        sliding, guide = _read_sliding_leg(table, joints)
-        turning = [n for n in range(3) if n != sliding]
+        leg_guides = _read_sliding_legs(table, joints)
+        turning = [n for n in range(3) if leg_guides[n] is None]
         bars = ", ".join(f"l{joints[2 * n]}{joints[2 * n + 1]}" for n in turning)
         raw_lengths = table.raw("lengths")
         if isinstance(raw_lengths, list) and len(raw_lengths) != len(turning):
-            why = "" if sliding is None else f" (the leg {joints[2 * sliding]}{joints[2 * sliding + 1]} slides)"
-            raise SceneError(table.where("lengths"), f"must have {len(turning)} entries, {bars}{why}, not "
+            sliding = [f"{joints[2 * n]}{joints[2 * n + 1]}" for n in range(3) if leg_guides[n] is not None]
+            why = {0: "", 1: f" (the leg {sliding[0]} slides)"}.get(len(sliding), f" (the legs {' and '.join(sliding)} slide)")
+            raise SceneError(table.where("lengths"), f"must have {len(turning)} entr{'y' if len(turning) == 1 else 'ies'}, {bars}{why}, not "
                                                      f"{len(raw_lengths)}", raw_lengths)
         lengths = [0.0, 0.0, 0.0]
         for n, length in zip(turning, table.numbers("lengths", len(turning), positive=True)):
@@ -145,7 +156,7 @@ class Triad(Group):
                                               f"round the ternary link's corners run")
         table.done()
         return cls(where=table.path, links=links, joints=joints, lengths=tuple(lengths), sides=sides, near=tuple(near),
-                   sliding=sliding, guide=guide)
+                   leg_guides=leg_guides)
 
     @property
     def label(self) -> str:
@@ -157,7 +168,11 @@ class Triad(Group):
 
     @property
     def turning_legs(self) -> tuple[int, ...]:
-        return tuple(n for n in range(3) if n != self.sliding)
+        return tuple(n for n in range(3) if self.leg_guides[n] is None)
+
+    @property
+    def sliding_legs(self) -> tuple[int, ...]:
+        return tuple(n for n in range(3) if self.leg_guides[n] is not None)
 
     def known_joints(self) -> tuple[str, ...]:
         return (self.joints[0], self.joints[2], self.joints[4])
@@ -166,14 +181,14 @@ class Triad(Group):
         return (self.joints[1], self.joints[3], self.joints[5])
 
     def guides(self) -> tuple[Guide, ...]:
-        return () if self.guide is None else (self.guide,)
+        return tuple(guide for guide in self.leg_guides if guide is not None)
 
     def fixed_points(self) -> dict[int, tuple[str, ...]]:
         a, b, c, d, e, f = self.joints
         la, lb, lc, lt = self.links
         fixed = {la: (a, b), lb: (c, d), lc: (e, f), lt: (b, d, f)}
-        if self.sliding is not None:  # the slider carries its pin only: its outer joint is on the guide's link
-            _, inner, link = self.arms()[self.sliding]
+        for n in self.sliding_legs:  # a slider carries its pin only: its outer joint is on the guide's link
+            _, inner, link = self.arms()[n]
             fixed[link] = (inner,)
         return fixed
 
@@ -181,8 +196,8 @@ class Triad(Group):
         a, b, c, d, e, f = self.joints
         la, lb, lc, lt = self.links
         pairs = [(a, la, None), (b, lt, la), (c, lb, None), (d, lt, lb), (e, lc, None), (f, lt, lc)]
-        if self.sliding is not None:
-            del pairs[2 * self.sliding]  # its outer pair slides
+        for n in reversed(self.sliding_legs):
+            del pairs[2 * n]  # its outer pair slides
         return tuple(pairs)
 
     def arms(self) -> tuple[tuple[str, str, int], ...]:
@@ -191,15 +206,14 @@ class Triad(Group):
         la, lb, lc, _ = self.links
         return ((a, b, la), (c, d, lb), (e, f, lc))
 
-    def slider_link(self) -> int | None:
-        return None if self.sliding is None else self.arms()[self.sliding][2]
+    def sliders(self) -> tuple[tuple[int, Guide], ...]:
+        """Each sliding leg's slider link and its guide."""
+        return tuple((self.arms()[n][2], self.leg_guides[n]) for n in self.sliding_legs)  # type: ignore[misc]
 
     def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
-        """The sliding leg's slider on its guide."""
-        if self.guide is None:
-            return ()
-        _, inner, slider = self.arms()[self.sliding]
-        return ((slider, guide_link(mechanism, self.guide), inner),)
+        """Each sliding leg's slider on its guide."""
+        return tuple((self.arms()[n][2], guide_link(mechanism, self.leg_guides[n]), self.arms()[n][1])  # type: ignore[arg-type]
+                     for n in self.sliding_legs)
 
     # The position: the pose of the ternary link.
 
@@ -225,27 +239,22 @@ class Triad(Group):
     def assemblies(self, tracks: tuple[Track, Track, Track], turn: int) -> list[Pose]:
         """Every pose of the ternary link that puts each inner joint on its track.
 
-        The first turning leg's inner joint is swept round its circle, the second's found on its
-        circle at its distance from the first, the third corner follows from the triangle; the
+        The first turning leg's inner joint is swept round its circle, the next leg's found on its
+        track at its distance from the first, the third corner follows from the triangle; the
         roots of the third leg's closure are the assemblies.
         """
-        swept, second = self.turning_legs[:2]
-        third = 3 - swept - second
+        swept, second, third = self.turning_legs + self.sliding_legs
         local = self.local_corners(turn)
         span = abs(local[second] - local[swept])
-        outer_p, outer_q = tracks[swept], tracks[second]
+        outer_p = tracks[swept]
         theta = np.linspace(0.0, 2 * math.pi, _SWEEP + 1)
 
         def closing(angle, sign):
-            """The third leg's closure with the second leg's joint on its two circles, with B and the ternary
-            link's turn e^{iψ} there (NaN where the circles do not meet)."""
+            """The third leg's closure with the second leg's joint at either meeting of its track with the
+            circle of the ternary link's side about the first, with B and the ternary link's turn e^{iψ}
+            there (NaN where they do not meet)."""
             p = outer_p.centre + outer_p.radius * np.exp(1j * angle)
-            towards = outer_q.centre - p
-            span2 = np.abs(towards) ** 2
-            with np.errstate(divide="ignore", invalid="ignore"):
-                along = 0.5 + 0.5 * (span * span - outer_q.radius ** 2) / span2
-                height2 = span * span / span2 - along * along
-                q = p + towards * (along + 1j * sign * np.sqrt(height2))
+            q = _at_distance(tracks[second], p, span, sign)
             rotation = (q - p) / (local[second] - local[swept])
             corner = p + (local[third] - local[swept]) * rotation
             return tracks[third].closure(corner, self.size), p - local[swept] * rotation, rotation
@@ -329,10 +338,10 @@ class Triad(Group):
         tracks = []
         for n, (outer, _, _) in enumerate(self.arms()):
             centre = np.broadcast_to(np.asarray(context.point(outer).r, dtype=complex), (count,))
-            if n != self.sliding:
+            if self.leg_guides[n] is None:
                 tracks.append([Track(complex(c), self.lengths[n]) for c in centre])
                 continue
-            guide = context.guide(self.guide)
+            guide = context.guide(self.leg_guides[n])
             u = np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))
             tracks.append([Track(complex(c), u=complex(d)) for c, d in zip(centre, u)])
         return tuple(tracks)
@@ -373,14 +382,14 @@ class Triad(Group):
         b = np.array([pose.b for pose in poses])
         toward_d = np.exp(1j * np.array([pose.psi for pose in poses]))
         inner = tuple(b + corner * toward_d for corner in self.local_corners(branch.turn))
-        guide = None if self.guide is None else context.guide(self.guide)
+        guides = [None if guide is None else context.guide(guide) for guide in self.leg_guides]
         # Each leg's closure differentiated, row k: nₖ·vB + (nₖ·i(Pₖ − B))·ω = nₖ·v₀ₖ with nₖ the arm Pₖ − Oₖ of a
-        # turning leg (v₀ its outer joint's velocity), or the guide's normal iu of the sliding leg (v₀ the velocity
+        # turning leg (v₀ its outer joint's velocity), or the guide's normal iu of a sliding leg (v₀ the velocity
         # of the guide's point under its slider); the same rows for aB, ε.
         normals, base_v, base_a = [], [], []
-        for n, ((outer_name, _, _), point) in enumerate(zip(self.arms(), inner)):
+        for (outer_name, _, _), point, guide in zip(self.arms(), inner, guides):
             outer = context.point(outer_name)
-            if n != self.sliding:
+            if guide is None:
                 normals.append(np.broadcast_to(point - outer.r, (count,)))
                 base_v.append(np.broadcast_to(outer.v, (count,)))
                 base_a.append(np.broadcast_to(outer.a, (count,)))
@@ -400,8 +409,7 @@ class Triad(Group):
         sine = np.linalg.det(normalised) / np.prod(np.linalg.norm(normalised, axis=2), axis=1)
         bad = np.abs(sine) < SINGULAR_SINE
         if bad.any():
-            lines = "the binary links' lines" if self.sliding is None else \
-                f"the turning binary links' lines and the normal to the guide at {self.arms()[self.sliding][1]}"
+            lines = self._lines_of_action()
             context.singular_where(bad, lambda i, at: SingularPositionError(
                 at, self.label, f"the triad is at a singular position ({lines} meet in one point "
                                 f"or are parallel; normalised Jacobian {abs(float(sine[i])):.1e})"))
@@ -416,10 +424,10 @@ class Triad(Group):
         v_b, omega = x[:, 0] + 1j * x[:, 1], x[:, 2]
         v_inner = [v_b + 1j * omega * (point - b) for point in inner]
         # Differentiated again, with aPₖ = aB + (iε − ω²)(Pₖ − B): a turning leg's row is armₖ·aPₖ = armₖ·a₀ₖ −
-        # |vPₖ − v₀ₖ|²; the sliding leg's iu·aPₖ = iu·(a₀ₖ + 2ωg × v_rel), its relative acceleration along u.
+        # |vPₖ − v₀ₖ|²; a sliding leg's iu·aPₖ = iu·(a₀ₖ + 2ωg × v_rel), its relative acceleration along u.
         rhs = []
-        for n, (normal, v0, a0, vp, point) in enumerate(zip(normals, base_v, base_a, v_inner, inner)):
-            known = dot(normal, a0) - np.abs(vp - v0) ** 2 if n != self.sliding else \
+        for normal, v0, a0, vp, point, guide in zip(normals, base_v, base_a, v_inner, inner, guides):
+            known = dot(normal, a0) - np.abs(vp - v0) ** 2 if guide is None else \
                 dot(normal, a0 + 2j * guide.omega * (vp - v0))
             rhs.append(known + omega ** 2 * dot(normal, point - b))
         y = np.linalg.solve(safe, np.stack(rhs, axis=1)[..., None])[..., 0]
@@ -429,10 +437,11 @@ class Triad(Group):
         a_inner = [a_b + whirl * (point - b) for point in inner]
         points = {name: PointMotion(r, v, a) for name, r, v, a in zip(self.new_joints(), inner, v_inner, a_inner)}
         links = {self.ternary: LinkMotion(self.joints[1], toward_d, np.angle(toward_d), omega, epsilon)}
-        slides = ()
-        for n, ((outer_name, inner_name, link), vp, ap, point) in enumerate(zip(self.arms(), v_inner, a_inner, inner)):
+        slides = []
+        for n, ((outer_name, inner_name, link), vp, ap, point, guide) in enumerate(zip(self.arms(), v_inner, a_inner,
+                                                                                        inner, guides)):
             outer = context.point(outer_name)
-            if n != self.sliding:
+            if guide is None:
                 arm = point - outer.r
                 u = arm * (1.0 / self.lengths[n])
                 links[link] = LinkMotion(outer_name, u, np.angle(u), _turning(arm, vp - outer.v), _turning(arm, ap - outer.a))
@@ -441,107 +450,172 @@ class Triad(Group):
             relative_v = vp - base_v[n]
             relative_a = ap - base_a[n] - 2j * guide.omega * relative_v
             links[link] = LinkMotion(inner_name, u, np.angle(u), guide.omega, guide.epsilon)
-            slides = (SlideMotion(link, guide.link, inner_name, u, dot(u, point - guide.origin.r), dot(u, relative_v),
-                                  dot(u, relative_a)),)
-        return GroupMotion(points=points, links=links, slides=slides, conditioning=sine)
+            slides.append(SlideMotion(link, guide.link, inner_name, u, dot(u, point - guide.origin.r), dot(u, relative_v),
+                                      dot(u, relative_a)))
+        return GroupMotion(points=points, links=links, slides=tuple(slides), conditioning=sine)
+
+    def _lines_of_action(self) -> str:
+        """The lines that meet in one point at a singular position: "the lines AB and CD and the normal to the guide at F"."""
+        arms = self.arms()
+        bars = [f"{arms[n][0]}{arms[n][1]}" for n in self.turning_legs]
+        pins = [arms[n][1] for n in self.sliding_legs]
+        parts = [("the line " if len(bars) == 1 else "the lines ") + _listed(bars)] if bars else []
+        if pins:
+            parts.append(("the normal to the guide at " if len(pins) == 1 else "the normals to the guides at ") + _listed(pins))
+        return " and ".join(parts)
 
     # The plans: Assur's special point Σ, then F, then B and D by similarity.
 
-    def special_pair(self, positions) -> tuple[int, int, int]:
-        """The two binary links whose lines cross at the widest angle (Σ is their crossing), and the third;
-        where a leg slides, the two turning ones and the sliding one."""
-        arms = self.arms()
+    def sigma_lines(self, board: Builder | ForceBoard) -> tuple[Line, Line, Line]:
+        """Each leg's line through its inner joint on which Σ may lie: a turning leg's own line (AB), a sliding
+        leg's guide's normal at its pin."""
+        lines = []
+        for (outer, inner, _), guide in zip(self.arms(), self.leg_guides):
+            at = board.positions[inner]
+            if guide is None:
+                lines.append(Line(at, at - board.positions[outer], f"{outer}{inner}"))
+            else:
+                lines.append(Line(at, 1j * board.guide_line(guide)[1], f"⊥ guide at {inner}"))
+        return tuple(lines)  # type: ignore[return-value]
 
-        def sine(i: int, j: int) -> float:
-            u = positions[arms[i][1]] - positions[arms[i][0]]
-            w = positions[arms[j][1]] - positions[arms[j][0]]
-            return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
-
-        if self.sliding is not None:  # Σ is on the lines of the two turning legs
-            i, j = self.turning_legs
-        else:
-            i, j = max(((0, 1), (0, 2), (1, 2)), key=lambda pair: sine(*pair))
-        return i, j, 3 - i - j
-
-    def special_point(self, positions, size: float) -> tuple[str, complex, tuple[int, int, int]]:
-        """Σ's name, where it lies (m), and which binary links it is built from."""
-        i, j, k = self.special_pair(positions)
-        arms = self.arms()
-        lines = [Line(positions[arms[n][0]], positions[arms[n][1]] - positions[arms[n][0]], f"{arms[n][0]}{arms[n][1]}")
-                 for n in (i, j)]
-        return f"Σ{self.ternary}", cross_lines(lines[0], lines[1], size), (i, j, k)
+    def special_point(self, board: Builder | ForceBoard, size: float) -> tuple[str, complex, tuple[int, int, int]]:
+        """Σ's name, where it lies (m), and the legs: the two whose lines cross at the widest angle (Σ is their
+        crossing), then the third.  ``size`` is the figure's extent."""
+        lines = self.sigma_lines(board)
+        i, j = max(((0, 1), (0, 2), (1, 2)), key=lambda pair: abs((lines[pair[0]].unit.conjugate() * lines[pair[1]].unit).imag))
+        return f"Σ{self.ternary}", cross_lines(lines[i], lines[j], size), (i, j, 3 - i - j)
 
     def _special_point_on(self, board: Builder) -> tuple[str, complex, tuple[int, int, int]]:
         """Σ on the board: where it lies is recorded with the plan, for the drawing and the readings."""
-        name, where, order = self.special_point(board.positions, board.size)
+        name, where, order = self.special_point(board, board.size)
         board.auxiliary[name] = where
         return name, where, order
 
+    def _on_guide(self, board: Builder, n: int) -> tuple[str, str]:
+        """The plan letter of the guide link's point under sliding leg ``n``'s pin, and that point's name (F1)."""
+        _, inner, _ = self.arms()[n]
+        carrier = board.guide_line(self.leg_guides[n])[2]
+        return guide_point(board, carrier, inner), f"{inner}{carrier}"
+
+    def _sigma_line(self, board: Builder, n: int, start: str, sigma_name: str) -> tuple[DrawnLine, str]:
+        """The line of action through ``start`` on which σ lies by leg ``n`` (⊥ AB, or ∥ its guide), and the name of
+        Σ's motion along it."""
+        outer, inner, _ = self.arms()[n]
+        guide = self.leg_guides[n]
+        if guide is None:
+            return DrawnLine(start, 1j * (board.positions[inner] - board.positions[outer]),
+                             LineMeaning("perpendicular", (outer, inner))), f"{sigma_name}{outer}"
+        # The guide's line carries the pin's sliding: it names the pin, whose normal Σ lies on.
+        meaning = replace(guide_meaning(guide), points=(inner,))
+        return DrawnLine(start, board.guide_line(guide)[1], meaning), f"{sigma_name}{inner}{board.guide_line(guide)[2]}"
+
     def construct_velocity(self, board: Builder) -> None:
-        """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD); vF = vΣ + vFΣ (⊥ ΣF) = vE + vFE (⊥ EF), or vF1 + vFF1
-        (∥ guide) where F slides; b, d by similarity; then vBA and vDC read off."""
+        """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD), or vD4 + vΣD4 (∥ guide) where D slides; vF = vΣ + vFΣ (⊥ ΣF) =
+        vE + vFE (⊥ EF), or vF1 + vFF1 (∥ guide) where F slides; b, d by similarity; then vBA and vDD4 read off."""
         positions = board.positions
         sigma_name, sigma_pos, (i, j, k) = self._special_point_on(board)
         arms = self.arms()
-        (oi, ni, _), (oj, nj, _), (ok, nk, lk) = arms[i], arms[j], arms[k]
-        across_i, across_j = 1j * (positions[ni] - positions[oi]), 1j * (positions[nj] - positions[oj])
-        image_i, image_j = board.images[oi], board.images[oj]
-        value, angle = board.cross(Line(board.points[image_i], across_i, f"⊥{oi}{ni}"),
-                                   Line(board.points[image_j], across_j, f"⊥{oj}{nj}"))
+        on_guide = {n: self._on_guide(board, n) for n in (i, j) if self.leg_guides[n] is not None}
+        drawn, terms = [], []
+        for n in (i, j):
+            outer = arms[n][0]
+            start = board.images[outer] if n not in on_guide else on_guide[n][0]
+            line, relative = self._sigma_line(board, n, start, sigma_name)
+            drawn.append(line)
+            terms.append((outer if n not in on_guide else on_guide[n][1], relative))
+        value, angle = board.cross(*(Line(board.points[line.through], line.direction, line.meaning) for line in drawn))
         sigma = board.mark(sigma_name.lower(), value)
         board.step(Step(
-            equation=f"v{sigma_name} = v{oi} + v{sigma_name}{oi} = v{oj} + v{sigma_name}{oj}",
-            vectors=(LaidVector(image_i, sigma, f"v{sigma_name}{oi}"), LaidVector(image_j, sigma, f"v{sigma_name}{oj}")),
-            lines=(DrawnLine(image_i, across_i, LineMeaning("perpendicular", (oi, ni))),
-                   DrawnLine(image_j, across_j, LineMeaning("perpendicular", (oj, nj)))),
-            fixes=(sigma,), crossing_deg=angle))
-        if k == self.sliding:
-            velocity_on_guide(board, nk, (sigma_name, sigma, sigma_pos), self.guide, lk)
+            equation=f"v{sigma_name} = " + " = ".join(f"v{known} + v{relative}" for known, relative in terms),
+            vectors=tuple(LaidVector(line.through, sigma, f"v{relative}") for line, (_, relative) in zip(drawn, terms)),
+            lines=tuple(drawn), fixes=(sigma,), crossing_deg=angle))
+        ok, nk, lk = arms[k]
+        if self.leg_guides[k] is not None:
+            velocity_on_guide(board, nk, (sigma_name, sigma, sigma_pos), self.leg_guides[k], lk)
         else:
             velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos),
                                      (ok, board.images[ok], positions[ok]))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
-        for n in (i, j):  # ωa and ωb are read off the relative velocities that end at b and d
-            outer, inner, _ = arms[n]
+        for n in (i, j):  # ωa and ωb are read off the relative velocities that end at b and d; a slider's sliding too
+            outer, inner, link = arms[n]
+            if n in on_guide:
+                start, under = on_guide[n]
+                end = board.images[inner]
+                _, u, carrier = board.guide_line(self.leg_guides[n])
+                record_slide(board, link, inner, carrier, start, end)
+                # The line along the guide says which way the sliding is read; the step fixes nothing.
+                board.step(Step(equation=f"v{inner} = v{under} + v{inner}{under}",
+                                vectors=(LaidVector(start, end, f"v{inner}" if start == "p" else f"v{inner}{under}"),),
+                                lines=(DrawnLine(start, u, guide_meaning(self.leg_guides[n])),)))
+                continue
             board.step(Step(equation=f"v{inner} = v{outer} + v{inner}{outer}",
                             vectors=(LaidVector(board.images[outer], board.images[inner], f"v{inner}{outer}"),)))
 
     def construct_acceleration(self, board: Builder, velocities: Plan) -> None:
-        """aΣ = aA + aBAⁿ + aΣBⁿ + aΣA^τ (⊥ AB) = aC + aDCⁿ + aΣDⁿ + aΣC^τ (⊥ CD);
-        aF = aΣ + aFΣⁿ + aFΣ^τ (⊥ ΣF) = aE + aFEⁿ + aFE^τ (⊥ EF), or aF1 + aFF1ᵏ + aFF1^r (∥ guide) where F
-        slides; b, d by similarity."""
+        """aΣ = aA + aBAⁿ + aΣBⁿ + aΣA^τ (⊥ AB) = aC + aDCⁿ + aΣDⁿ + aΣC^τ (⊥ CD), or aD4 + aDD4ᵏ + aΣDⁿ + aΣD4^τ
+        (∥ guide) where D slides; aF = aΣ + aFΣⁿ + aFΣ^τ (⊥ ΣF) = aE + aFEⁿ + aFE^τ (⊥ EF), or aF1 + aFF1ᵏ + aFF1^r
+        (∥ guide) where F slides; b, d by similarity."""
         positions = board.positions
         sigma_name, sigma_pos, (i, j, k) = self._special_point_on(board)
         arms, t = self.arms(), self.ternary
         whirl_t = velocities.rates[t] ** 2
-        ends, vectors, lines = [], [], []
+        coriolis_sliders = self.coriolis_sliders(board.mechanism)
+        on_guide = {n: self._on_guide(board, n) for n in (i, j) if self.leg_guides[n] is not None}
+        kinks: dict[int, str] = {}  # where a sliding leg's Coriolis part ends
+        ends, vectors, lines, terms = [], [], [], []
         for n, prime in ((i, ""), (j, "′")):
             outer, inner, link = arms[n]
-            image = board.images[outer]
-            whirl = velocities.rates[link] ** 2
-            arm_end = board.mark(f"n{link}", board.points[image] - whirl * (positions[inner] - positions[outer]))
+            if n in on_guide:
+                start, under = on_guide[n]
+                arm_end, known = start, f"a{under}"
+                if link in coriolis_sliders:
+                    carrier = board.guide_line(self.leg_guides[n])[2]
+                    relative = velocities.value(inner) - velocities.points[start]
+                    arm_end = board.mark(coriolis_letter(board, link),
+                                         board.points[start] + coriolis(velocities.rates.get(carrier, 0.0), relative))
+                    vectors.append(LaidVector(start, arm_end, f"a{inner}{under}ᵏ"))
+                    known += f" + a{inner}{under}ᵏ"
+                    kinks[n] = arm_end
+            else:
+                image = board.images[outer]
+                whirl = velocities.rates[link] ** 2
+                arm_end = board.mark(f"n{link}", board.points[image] - whirl * (positions[inner] - positions[outer]))
+                vectors.append(LaidVector(image, arm_end, f"a{inner}{outer}ⁿ"))
+                known = f"a{outer} + a{inner}{outer}ⁿ"
             end = board.mark(f"n{t}{prime}", board.points[arm_end] - whirl_t * (sigma_pos - positions[inner]))
-            across = 1j * (positions[inner] - positions[outer])
-            ends.append((end, across, f"⊥{outer}{inner}"))
-            vectors += [LaidVector(image, arm_end, f"a{inner}{outer}ⁿ"), LaidVector(arm_end, end, f"a{sigma_name}{inner}ⁿ")]
-            lines.append(DrawnLine(end, across, LineMeaning("perpendicular", (outer, inner))))
-        value, angle = board.cross(*(Line(board.points[end], across, label) for end, across, label in ends))
+            line, relative = self._sigma_line(board, n, end, sigma_name)
+            vectors.append(LaidVector(arm_end, end, f"a{sigma_name}{inner}ⁿ"))
+            ends.append(end)
+            lines.append(line)
+            terms.append((f"{known} + a{sigma_name}{inner}ⁿ", f"a{relative}^τ"))
+        value, angle = board.cross(*(Line(board.points[line.through], line.direction, line.meaning) for line in lines))
         sigma = board.mark(sigma_name.lower(), value)
-        (oi, ni, _), (oj, nj, _), (ok, nk, lk) = arms[i], arms[j], arms[k]
-        vectors += [LaidVector(ends[0][0], sigma, f"a{sigma_name}{oi}^τ"), LaidVector(ends[1][0], sigma, f"a{sigma_name}{oj}^τ")]
+        vectors += [LaidVector(end, sigma, tangential) for end, (_, tangential) in zip(ends, terms)]
         board.step(Step(
-            equation=(f"a{sigma_name} = a{oi} + a{ni}{oi}ⁿ + a{sigma_name}{ni}ⁿ + a{sigma_name}{oi}^τ"
-                      f" = a{oj} + a{nj}{oj}ⁿ + a{sigma_name}{nj}ⁿ + a{sigma_name}{oj}^τ"),
-            vectors=tuple(vectors), lines=tuple(lines), fixes=(*(end for end, _, _ in ends), sigma), crossing_deg=angle))
-        if k == self.sliding:
+            equation=f"a{sigma_name} = {' + '.join(terms[0])} = {' + '.join(terms[1])}",
+            vectors=tuple(vectors), lines=tuple(lines), fixes=(*kinks.values(), *ends, sigma), crossing_deg=angle))
+        ok, nk, lk = arms[k]
+        if self.leg_guides[k] is not None:
             acceleration_on_guide(board, velocities, nk, (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
-                                  self.guide, lk, bool(self.coriolis_sliders(board.mechanism)))
+                                  self.leg_guides[k], lk, lk in coriolis_sliders)
         else:
             crossed_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
                                     (ok, board.images[ok], positions[ok], velocities.rates[lk], f"n{lk}"))
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
-        for n in (i, j):  # εa and εb are read off the tangential parts that end at b and d
+        for n in (i, j):  # εa and εb are read off the tangential parts that end at b and d; a slider's sliding too
             outer, inner, link = arms[n]
+            if n in on_guide:
+                start, under = on_guide[n]
+                kink = kinks.get(n, start)
+                end = board.images[inner]
+                record_slide(board, link, inner, board.guide_line(self.leg_guides[n])[2], kink, end)
+                laid = [LaidVector(start, kink, f"a{inner}{under}ᵏ")] if n in kinks else []
+                laid.append(LaidVector(kink, end, f"a{inner}" if kink == "p" else f"a{inner}{under}^r"))
+                coriolis_term = f" + a{inner}{under}ᵏ" if n in kinks else ""
+                board.step(Step(equation=f"a{inner} = a{under}{coriolis_term} + a{inner}{under}^r", vectors=tuple(laid),
+                                lines=(DrawnLine(kink, board.guide_line(self.leg_guides[n])[1],
+                                                 guide_meaning(self.leg_guides[n])),)))
+                continue
             board.step(Step(
                 equation=f"a{inner} = a{outer} + a{inner}{outer}ⁿ + a{inner}{outer}^τ",
                 vectors=(LaidVector(board.images[outer], f"n{link}", f"a{inner}{outer}ⁿ"),
@@ -554,7 +628,7 @@ class Triad(Group):
         outer_k, inner_k, link_k = arms[k]
         board.on_link(t, sigma_pos, sigma)
         board.on_link(t, positions[inner_k], board.images[inner_k])
-        if k != self.sliding:  # a slider was put on the plan as its pin's image was crossed
+        if self.leg_guides[k] is None:  # a slider was put on the plan as its pin's image was crossed
             board.on_link(link_k, positions[outer_k], board.images[outer_k])
             board.on_link(link_k, positions[inner_k], board.images[inner_k])
         for n in (i, j):
@@ -563,66 +637,75 @@ class Triad(Group):
             letter = board.fix(inner, board.image_on(t, positions[inner]))
             board.similarity_step(letter, t, inner, pair)
             board.on_link(t, positions[inner], letter)
-            board.on_link(link, positions[outer], board.images[outer])
-            board.on_link(link, positions[inner], letter)
-
+            if self.leg_guides[n] is None:  # a slider is put on the plan with its sliding, read off after
+                board.on_link(link, positions[outer], board.images[outer])
+                board.on_link(link, positions[inner], letter)
 
     # The forces: the group cut free, moments about each inner joint and about Assur's point.
 
     def construct_forces(self, board: ForceBoard) -> None:
-        """Each outer reaction split along and across its binary link: the across parts from ΣM of each
-        binary link about its inner joint; the third link's along part from ΣM of the whole group about Σ,
-        through which the other two along parts pass; those two by crossing their lines on the polygon.
-        Where the third leg slides, ΣM about Σ gives its guide's normal reaction instead, shifted along the
-        guide by ΣM of the slider about its pin.  The inner reactions are read off the polygon."""
+        """Each outer reaction of a turning leg split along and across its binary link, the across part from ΣM
+        of the binary link about its inner joint; a sliding leg's guide reaction square to the guide, through
+        its pin shifted along the guide by ΣM of the slider about the pin.  Σ is where two of the unknown
+        lines (along a turning leg, or a sliding leg's normal at its pin) cross: ΣM of the whole group about Σ
+        gives the third leg's unknown, and the polygon closes on those two lines.  The inner reactions are
+        read off the polygon."""
         positions, t = board.positions, self.ternary
-        sigma_name, sigma_pos, (i, j, k) = self.special_point(positions, max(abs(p) for p in positions.values()))
+        sigma_name, sigma_pos, (i, j, k) = self.special_point(board, max(abs(p) for p in positions.values()))
         board.add_centre(sigma_name, sigma_pos)
         arms = self.arms()
-        names, across, along, tau = {}, {}, {}, {}
+        names, across, along, tau, unknown, acts_at = {}, {}, {}, {}, {}, {}
         for n, (outer, inner, link) in enumerate(arms):
-            if n == self.sliding:
-                _, u, carrier = board.guide_line(self.guide)
+            guide = self.leg_guides[n]
+            if guide is not None:
+                _, u, carrier = board.guide_line(guide)
                 names[n] = (f"R{carrier}{link}", carrier)
                 # The unknown's direction (`along`) is the guide's normal, the reaction having no part along the
                 # guide (`across`, where it shifts instead): the friction in the pair comes in as loads.
                 across[n], along[n], tau[n] = u, 1j * u, 0.0
+                unknown[n], acts_at[n] = names[n][0], positions[inner]
                 continue
             source = board.source_of(outer, link)
             names[n] = (f"R{source}{link}", source)
             bar = positions[inner] - positions[outer]
             across[n], along[n] = 1j * bar / abs(bar), bar / abs(bar)
             tau[n] = board.solve_moment(link, inner, f"{names[n][0]}τ", across[n], positions[outer])
+            unknown[n], acts_at[n] = f"{names[n][0]}n", positions[outer]
         terms = []
         for n, (outer, _, _) in enumerate(arms):
             moment = float(cross(positions[outer] - sigma_pos, tau[n] * across[n]))
             if tau[n] != 0 and moment != 0:
                 terms.append(Term(f"{names[n][0]}τ", moment, abs(moment) / abs(tau[n])))
+        # A guide's reaction acts x along the guide from the pin: R·x is what turns the slider about its pin, and
+        # its moment about Σ where Σ is on the pin's normal.
+        shifts = {}
+        for n in self.sliding_legs:
+            _, inner, link = arms[n]
+            shifts[n] = board.couple(link, inner, f"{names[n][0]}·x")
+            if shifts[n]:
+                terms.append(Term(f"{names[n][0]}·x", shifts[n], 0.0))
         ri, rj, rk = (names[n][0] for n in (i, j, k))
         li, lj, lk = (arms[n][2] for n in (i, j, k))
-        slides = k == self.sliding
-        normal_name = rk if slides else f"{rk}n"
-        shift = 0.0
-        if slides:
-            # The normal reaction acts x along the guide from the pin: R·x is what turns the slider about its pin.
-            shift = board.couple(lk, arms[k][1], f"{rk}·x")
-            if shift:
-                terms.append(Term(f"{rk}·x", shift, 0.0))
-        # A turning leg's along part acts through its outer joint, the guide's normal reaction through the pin.
-        acts_at = positions[arms[k][1] if slides else arms[k][0]]
-        normal_k = board.solve_moment_of(self.links, sigma_name, normal_name, along[k], acts_at, tuple(terms))
-        outer_k = rk if slides else f"{rk}τ + {rk}n"
-        polygon = PolygonBuilder(f"{ri}n + {ri}τ + ΣF{li} + {outer_k} + ΣF{lk} + ΣF{t} + {rj}τ + ΣF{lj} + {rj}n = 0")
-        polygon.lay(f"{ri}τ", tau[i] * across[i])
+        normal_k = board.solve_moment_of(self.links, sigma_name, unknown[k], along[k], acts_at[k], tuple(terms))
+
+        def whole(n: int) -> str:
+            return names[n][0] if self.leg_guides[n] is not None else f"{names[n][0]}τ + {names[n][0]}n"
+
+        first = f"{ri}n + {ri}τ" if self.leg_guides[i] is None else ri
+        last = f"{rj}τ + ΣF{lj} + {rj}n" if self.leg_guides[j] is None else f"ΣF{lj} + {rj}"
+        polygon = PolygonBuilder(f"{first} + ΣF{li} + {whole(k)} + ΣF{lk} + ΣF{t} + {last} = 0")
+        if self.leg_guides[i] is None:
+            polygon.lay(f"{ri}τ", tau[i] * across[i])
         end_i = polygon.lay_all(board.loads_on(li))
-        if not slides:
+        if self.leg_guides[k] is None:
             polygon.lay(f"{rk}τ", tau[k] * across[k])
-        polygon.lay(normal_name, normal_k * along[k])
+        polygon.lay(unknown[k], normal_k * along[k])
         end_k = polygon.lay_all(board.loads_on(lk))
         end_t = polygon.lay_all(board.loads_on(t))
-        polygon.lay(f"{rj}τ", tau[j] * across[j])
+        if self.leg_guides[j] is None:
+            polygon.lay(f"{rj}τ", tau[j] * across[j])
         polygon.lay_all(board.loads_on(lj))
-        rj_along, ri_along = polygon.close(f"{rj}n", along[j], f"{ri}n", along[i])
+        rj_along, ri_along = polygon.close(unknown[j], along[j], unknown[i], along[i])
         vertex = polygon.start - ri_along
         # The ternary link's pull on each binary link, read between the polygon's vertices (see the equation).
         on_binary = {i: polygon.inner(f"R{t}{li}", end_i, vertex), k: polygon.inner(f"R{t}{lk}", end_k, end_i),
@@ -631,9 +714,9 @@ class Triad(Group):
         for n in (i, j, k):
             outer, inner, link = arms[n]
             name, source = names[n]
-            if n == self.sliding:
+            if n in shifts:
                 normal = outer_force[n]
-                offset = shift / cross(across[n], normal) if abs(normal) > 0 else 0.0
+                offset = shifts[n] / cross(across[n], normal) if abs(normal) > 0 else 0.0
                 board.hand_back(board.react(name, inner, source, link, normal, offset),
                                 positions[inner] + offset * across[n])
             else:
@@ -644,32 +727,53 @@ class Triad(Group):
         board.finish_group(self.label, self.links, polygon.record())
 
 
-def _read_sliding_leg(table: Table, joints: tuple[str, ...]) -> tuple[int | None, Guide | None]:
-    """The leg that slides (``guides = { F = { angle = 0 } }``, by its inner joint) and its guide, through
-    that leg's outer joint; (None, None) for a triad of three turning legs."""
+def _read_sliding_legs(table: Table, joints: tuple[str, ...]) -> tuple[Guide | None, Guide | None, Guide | None]:
+    """Each leg's guide, through that leg's outer joint, where it slides (``guides = { F = { angle = 0 } }``, by
+    its inner joint); None where it turns."""
+    legs: list[Guide | None] = [None, None, None]
     guides = table.table("guides", None)
     if guides is None:
-        return None, None
+        return None, None, None
     inner = (joints[1], joints[3], joints[5])
     names = list(guides.data)
-    if len(names) != 1:
-        raise SceneError(guides.path, f"must name the one leg that slides by its inner joint ({', '.join(inner)}): "
-                                      f"Assur's special point, through which the plans and the forces go, is where "
-                                      f"the lines of the two turning legs cross, so at most one leg of a triad slides",
+    if not 1 <= len(names) <= 2:
+        raise SceneError(guides.path, f"must name the legs that slide by their inner joints ({', '.join(inner)}): one "
+                                      f"or two of them, the assemblies being found by turning a leg round its circle",
                          names)
-    name = names[0]
-    if name not in inner:
-        raise SceneError(guides.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
-    leg = inner.index(name)
-    outer = joints[2 * leg]
-    spec = guides.table(name)
-    if spec.has("through"):
-        raise SceneError(spec.where("through"), f"the guide of the sliding leg {outer}{name} runs through its outer "
-                                                f"joint {outer}: place {outer} where the guide should pass")
-    link = spec.integer("link", None, minimum=1)
-    angle = math.radians(spec.number("angle", 0.0))
-    spec.done()
-    return leg, Guide(where=guides.where(name), link=link, through=outer, angle=angle)
+    for name in names:
+        if name not in inner:
+            raise SceneError(guides.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
+        leg = inner.index(name)
+        outer = joints[2 * leg]
+        spec = guides.table(name)
+        if spec.has("through"):
+            raise SceneError(spec.where("through"), f"the guide of the sliding leg {outer}{name} runs through its "
+                                                    f"outer joint {outer}: place {outer} where the guide should pass")
+        link = spec.integer("link", None, minimum=1)
+        angle = math.radians(spec.number("angle", 0.0))
+        spec.done()
+        legs[leg] = Guide(where=guides.where(name), link=link, through=outer, angle=angle)
+    return legs[0], legs[1], legs[2]
+
+
+def _listed(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
+
+
+def _at_distance(track: Track, point, distance: float, sign: int):
+    """Where ``track`` meets the circle of ``distance`` about ``point`` (an array): one of its two meetings by
+    ``sign``, NaN where they do not meet."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if track.u is None:
+            towards = track.centre - point
+            span2 = np.abs(towards) ** 2
+            along = 0.5 + 0.5 * (distance * distance - track.radius ** 2) / span2
+            height2 = distance * distance / span2 - along * along
+            return point + towards * (along + 1j * sign * np.sqrt(height2))
+        # centre + t·u at the distance: t² + 2βt + |centre − point|² − distance² = 0, β = u·(centre − point).
+        offset = track.centre - point
+        beta = (np.conj(track.u) * offset).real
+        return track.centre + (-beta + sign * np.sqrt(beta * beta - np.abs(offset) ** 2 + distance * distance)) * track.u
 
 
 def _xy(z: complex) -> tuple[float, float]:

@@ -363,8 +363,9 @@ def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tup
 def _special_points(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[Primitive], list[str]]:
     """Assur's special points the group's moment equations are taken about, each marked.
 
-    The lines of the binary links that cross there run on to it, dashed, as
-    on the plan sheet: the reader sees why the unknowns along them have no arm.
+    The lines of the binary links that cross there, and the normal of a slider's guide at its pin where it
+    runs through it, run on to it, dashed, as on the plan sheet: the reader sees why the unknowns along them
+    have no arm.
     """
     outlines = outline_points(sheet.mechanism, sheet.motion)
     items: list[Primitive] = []
@@ -384,6 +385,13 @@ def _special_points(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[
                 continue
             nearer = min(ends, key=lambda end: abs(end - where))
             items.append(Polyline((paper(nearer), paper(where)), _ACTION_RUN_ON))
+        for slide in sheet.motion.slides:
+            if slide.slider not in group.links:
+                continue
+            pin = sheet.positions[slide.joint]
+            u = complex(at(slide.u, sheet.index))
+            if abs(((where - pin) * u.conjugate()).real) <= 1e-9 * max(abs(where - pin), 1.0):
+                items.append(Polyline((paper(pin), paper(where)), _ACTION_RUN_ON))
     return items, names
 
 

@@ -417,10 +417,12 @@ def _lines_of_action(plan: Plan) -> list[Primitive]:
 
     The crossing is the point the step fixes on the line; a line whose
     crossing coincides with its own point (a zero vector) is drawn dashed
-    both ways.
+    both ways.  A step that fixes nothing only reads a vector off, along its line.
     """
     items: list[Primitive] = []
     for step in plan.steps:
+        if not step.fixes:
+            continue
         candidates = list(step.fixes) + [v.end for v in step.vectors]
         for line in step.lines:
             through = plan.mm(line.through)

@@ -328,12 +328,28 @@ class _Note:
 
     def assur_point(self, plan: Plan, steps: list[Step]) -> None:
         """Why a triad's plan starts at Assur's special point, which its first step fixes."""
-        first = next((step for step in steps if step.fixes), None)
-        if plan.kind != "velocity" or first is None or not first.fixes or first.fixes[-1] not in {image_name(name) for name in plan.auxiliary}:
+        special = {image_name(name) for name in plan.auxiliary}
+        # A guide link's point under a slider's pin may be put on the plan first, by similarity.
+        first = next((step for step in steps if step.fixes and step.similarity is None), None)
+        if plan.kind != "velocity" or first is None or first.fixes[-1] not in special:
             return
         point = next(name for name in plan.auxiliary if image_name(name) == first.fixes[-1])
-        lines = ["".join(line.along.points) for line in first.lines]
-        self.para(self.t("note_assur_point", point=point, link=point[1:], first=lines[0], second=lines[1]))
+        if all(line.along.kind == "perpendicular" for line in first.lines):
+            lines = ["".join(line.along.points) for line in first.lines]
+            self.para(self.t("note_assur_point", point=point, link=point[1:], first=lines[0], second=lines[1]))
+            return
+        # A sliding leg's line is its guide, which names the slider's pin: Σ is on the guide's normal there.
+        names, motions = [], []
+        for line in first.lines:
+            if line.along.kind == "perpendicular":
+                outer, inner = line.along.points
+                names.append(self.t("note_assur_leg_line", line=f"{outer}{inner}"))
+                motions.append(self.t("note_assur_leg_motion", line=f"{outer}{inner}", outer=outer))
+            else:
+                names.append(self.t("note_assur_normal_line", pin=line.along.points[0]))
+                motions.append(self.t("note_assur_normal_motion", pin=line.along.points[0]))
+        self.para(self.t("note_assur_point_sliding", point=point, link=point[1:], first=names[0], second=names[1],
+                         first_motion=motions[0], second_motion=motions[1]))
 
     def blocks(self, plan: Plan) -> list[tuple[int, list[Step]]]:
         """The plan's steps by the unit of the structure (driver, groups) that drew them, in order.
@@ -547,21 +563,28 @@ class _Note:
             else:
                 modulus, direction = self.coriolis(pp, name, value)
             return _Term(shown, modulus, segment, direction)
-        if vector is not None and not step.fixes:
-            # A step that fixes nothing reads a relative vector off points already found (a triad's ω and ε).
-            return self.read_off(pp, plan, name, vector, segment)
+        if start and end and not step.fixes:
+            # A step that fixes nothing reads a relative vector off points already found (a triad's ω and ε, the
+            # sliding of a triad's slider found by similarity).
+            return self.read_off(pp, plan, step, name, (start, end), segment)
         through = [line for line in step.lines if line.through == start]
         if len(through) > 1 and side < len(step.lines) and step.lines[side].through == start:
             through = [step.lines[side]]
         direction = self.line(through[0].along) if through else "—"
         return _Term(shown, "?", segment, direction)
 
-    def read_off(self, pp: PlanPosition, plan: Plan, name: str, vector: LaidVector, segment: str) -> _Term:
-        """VBA or aBA^τ read off the plan: its segment's length, its modulus, square to AB."""
-        value = abs(plan.points[vector.end] - plan.points[vector.start])
+    def read_off(self, pp: PlanPosition, plan: Plan, step: Step, name: str, ends: tuple[str, str], segment: str) -> _Term:
+        """VBA or aBA^τ read off the plan: its segment's length, its modulus, square to AB; or a slider's VDD1 along
+        the line of its guide the step gives."""
+        start, end = ends
+        value = abs(plan.points[end] - plan.points[start])
         modulus = f"{self.n(value)} {self.text['unit_m_per_s' if plan.kind == 'velocity' else 'unit_m_per_s2']}"
+        along = [line.along for line in step.lines if line.through == start]
         pair = self.split(name[1:].removesuffix(_TANGENTIAL), pp)
-        direction = self.line(LineMeaning("perpendicular", (pair[1], pair[0]))) if pair is not None else "—"
+        if along:
+            direction = self.line(along[0])
+        else:
+            direction = self.line(LineMeaning("perpendicular", (pair[1], pair[0]))) if pair is not None else "—"
         return _Term(self.equation(name), modulus, f"{segment} = {self.mm(value / plan.scale)}", direction)
 
     def normal(self, pp: PlanPosition, plan: Plan, name: str, value: float) -> tuple[str, str]:
@@ -866,8 +889,9 @@ class _Note:
         whole = next((equation for equation in group.moments if equation.links), None)
         if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
             closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
-            self.para(self.t("note_assur_forces", point=whole.about, unknown=whole.unknown,
-                             closing=", ".join(closing)))
+            # A turning leg's unknown is the part along it (R34n); a sliding leg's, its guide's reaction (R14).
+            key = "note_assur_forces" if all(name.endswith("n") for name in closing) else "note_assur_forces_sliding"
+            self.para(self.t(key, point=whole.about, unknown=whole.unknown, closing=", ".join(closing)))
         loads = {load.name: load for load in group.loads}
         lines = []
         for equation in group.moments:

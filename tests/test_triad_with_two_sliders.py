@@ -1,0 +1,187 @@
+"""A triad with two sliding legs: what the tests that run every fixture and variant cannot show.
+
+Those already hold the ratchet's variant ``ratchet+triad-two-sliders`` (slider 6 on the rocking link 4,
+so with a Coriolis term; slider 7 on a frame guide through C; only the leg EG turns) to its closure,
+finite differences, the 50-digit reference, the plans against the analytic solution and the force
+polygons against the linear system of statics.  Here: the structure, Assur's point on a guide's
+normal, the Coriolis component, the guides' reactions, the legs listed in another order, the note.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_forces_against_statics import loaded
+from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET, CASES, _hung_on_the_ratchet, square_guides
+
+import graphplan
+from graphplan.analysis import analyse, instant
+from graphplan.forces import force_plan
+from graphplan.groups.sliding import coriolis
+from graphplan.kinematics import cross
+from graphplan.loads import activity, link_loads, plan_state
+from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.report.note import note_markdown
+
+VARIANT = "ratchet+triad-two-sliders"
+K_GUIDE, L_GUIDE = 60.0, 80.0  # degrees: K's on link 4 (from its own reference line), L's on the frame
+
+
+def _plans(analysis, index: int):
+    mechanism = analysis.mechanism
+    where, directions = instant(analysis.motion, index)
+    velocity = velocity_plan(mechanism, where, directions)
+    return where, directions, velocity, acceleration_plan(mechanism, where, directions, velocity)
+
+
+def _sine(u: complex, w: complex) -> float:
+    return abs((u.conjugate() * w).imag) / (abs(u) * abs(w))
+
+
+def test_two_sliders_make_a_class_iii_group_with_two_sliding_pairs():
+    mechanism = graphplan.build(CASES[VARIANT]())
+    assert mechanism.structure.endswith("III3(5,6,7,8)")
+    # W = 3n − 2p5: n = 7 moving links; p5 = the four-bar's four pairs + the triad's six (four turning, two sliding)
+    assert mechanism.degrees_of_freedom == (7, 10, 1)
+    assert 7 in mechanism.translating and 6 not in mechanism.translating
+    motion = graphplan.solve(CASES[VARIANT]())
+    pairs = {(slide.slider, slide.guide, slide.joint) for slide in motion.slides}
+    assert {(6, 4, "K"), (7, 1, "L")} <= pairs
+    assert np.all(motion.link(7).omega == 0)
+    assert np.array_equal(motion.link(6).omega, motion.link(4).omega)  # a slider turns with its guide
+    # Each pin stays on its guide: K on link 4's line through S4 at 60° to it, L on the frame's line through C.
+    k_direction = np.exp(1j * (motion.link(4).angle + np.radians(K_GUIDE)))
+
+    def at(name: str) -> np.ndarray:
+        xy = motion.point(name).r
+        return xy[:, 0] + 1j * xy[:, 1]
+
+    k_off = (np.conj(k_direction) * (at("K") - at("S4"))).imag
+    l_off = (np.exp(-1j * np.radians(L_GUIDE)) * (at("L") - at("C"))).imag
+    assert np.max(np.abs(k_off)) < 1e-12 and np.max(np.abs(l_off)) < 1e-12
+
+
+def test_assurs_point_is_on_a_guides_normal_where_those_lines_cross_widest():
+    """Σ8 lies on two of: the line EG, the normal to K's guide at K, the normal to L's guide at L (those that
+    cross at the widest angle); the pins' images then give their sliding along their guides."""
+    analysis = analyse(CASES[VARIANT]())
+    motion = analysis.motion
+    for index in range(motion.count):
+        where, directions, velocity, _ = _plans(analysis, index)
+        ((name, sigma),) = velocity.auxiliary.items()
+        assert name == "Σ8"
+        k_guide = directions[4] * np.exp(1j * np.radians(K_GUIDE))
+        lines = {"EG": (where["G"], where["G"] - where["E"]), "K": (where["K"], 1j * k_guide),
+                 "L": (where["L"], 1j * np.exp(1j * np.radians(L_GUIDE)))}
+        widest = max((("EG", "K"), ("EG", "L"), ("K", "L")), key=lambda pair: _sine(lines[pair[0]][1], lines[pair[1]][1]))
+        for through, direction in (lines[widest[0]], lines[widest[1]]):
+            assert _sine(direction, sigma - through) <= 1e-9, (index, widest)
+        # The exact relative velocities, read off the plan between the guide points' images and the pins'.
+        for slider, guide_u in ((6, k_guide), (7, np.exp(1j * np.radians(L_GUIDE)))):
+            (slide,) = [s for s in motion.slides if s.slider == slider]
+            expected = complex(slide.velocity[index] * slide.u[index])
+            assert abs(velocity.sliding[slider] - expected) <= 1e-9 * max(abs(expected), 1.0)
+            assert abs((np.conj(guide_u) * velocity.sliding[slider]).imag) <= 1e-12 * max(abs(velocity.sliding[slider]), 1.0)
+
+
+def test_assurs_point_is_where_two_square_guides_normals_cross():
+    """Two sliders on guides square to each other: their normals cross square, wider than any line with either."""
+    analysis = analyse(square_guides())
+    f_guide, d_guide = np.exp(1j * np.radians(-30.0)), np.exp(1j * np.radians(60.0))
+    for plan_position in analysis.plans:
+        where = plan_position.positions
+        ((_, sigma),) = plan_position.velocity.auxiliary.items()
+        assert _sine(1j * f_guide, sigma - where["F"]) <= 1e-9 and _sine(1j * d_guide, sigma - where["D"]) <= 1e-9
+        # Relative to the pole (the frame's points under D and F), σ is reached along both guides.
+        velocity = plan_position.velocity
+        for pin, guide in (("D", d_guide), ("F", f_guide)):
+            assert abs((np.conj(guide) * velocity.value(pin)).imag) <= 1e-12 * abs(velocity.value(pin))
+
+
+def test_the_slider_on_the_rocker_gets_its_coriolis_component():
+    analysis = analyse(CASES[VARIANT]())
+    motion = analysis.motion
+    checked = 0
+    for index in range(motion.count):
+        _, _, velocity, acceleration = _plans(analysis, index)
+        laid = [vector for step in acceleration.steps for vector in step.vectors if vector.meaning == "aKK4ᵏ"]
+        assert laid and len({(vector.start, vector.end) for vector in laid}) == 1
+        drawn = acceleration.points[laid[0].end] - acceleration.points[laid[0].start]
+        (slide,) = [s for s in motion.slides if s.slider == 6]
+        expected = 2j * float(motion.link(4).omega[index]) * complex(slide.velocity[index] * slide.u[index])
+        assert abs(drawn - expected) <= 1e-9 * max(abs(expected), 1e-3)
+        assert drawn == pytest.approx(coriolis(velocity.rates[4], velocity.sliding[6]), abs=1e-12)
+        checked += abs(expected) > 0.1
+        # The frame's slider has none.
+        assert not [vector for step in acceleration.steps for vector in step.vectors if vector.meaning.startswith("aLL1ᵏ")]
+    assert checked >= 4
+
+
+def test_each_guides_reaction_is_square_to_it_and_shifted_by_its_sliders_moment():
+    analysis = analyse(loaded(CASES[VARIANT]()))
+    mechanism, motion = analysis.mechanism, analysis.motion
+    acting = activity(mechanism, analysis.positions, motion)
+    shifted = 0
+    for index in range(0, motion.count, 2):
+        where, directions, velocity, acceleration = _plans(analysis, index)
+        applied = link_loads(mechanism, plan_state(mechanism, where, velocity, acceleration), acting[:, index:index + 1])
+        drawn = force_plan(mechanism, where, directions, applied)
+        for name, slider, pin, u in (("R46", 6, "K", directions[4] * np.exp(1j * np.radians(K_GUIDE))),
+                                     ("R17", 7, "L", np.exp(1j * np.radians(L_GUIDE)))):
+            normal = drawn.reactions[name]
+            assert normal.joint == pin and normal.target == slider
+            assert abs((u.conjugate() * normal.force).real) <= 1e-9 * abs(normal.force)
+            turning = sum(float(load.moment) if load.point is None else
+                          float(cross(where[load.point] + load.offset - where[pin], complex(load.force)))
+                          for load in applied if load.link == slider)
+            assert cross(normal.offset * u, normal.force) == pytest.approx(-turning, rel=1e-9, abs=1e-9)
+            shifted += abs(normal.offset) > 1e-6
+    assert shifted, "the rocking slider's inertia moment never shifted its guide's reaction"
+
+
+_MASSES = """
+[links.5]
+mass = 2.0
+centre = "G"
+inertia = 0.012
+[links.6]
+mass = 1.0
+centre = "K"
+inertia = 0.002
+[links.7]
+mass = 1.5
+centre = "L"
+[links.8]
+mass = 3.0
+centre = "L"
+inertia = 0.04
+"""
+
+
+def test_the_legs_may_be_listed_in_any_order():
+    """The same triad with its sliding legs listed first: another leg is swept, Σ comes from other legs of the
+    list, and every motion, reaction and balancing moment is the same."""
+    group = _HUNG_ON_THE_RATCHET[VARIANT] + _MASSES
+    listed = group.replace('joints = ["E", "G", "S4", "K", "C", "L"]', 'joints = ["C", "L", "S4", "K", "E", "G"]') \
+        .replace("links = [5, 6, 7, 8]", "links = [7, 6, 5, 8]").replace("sides = [0.15, 0.17, 0.18]", "sides = [0.17, 0.15, 0.18]")
+    assert listed != group
+    base, other = (analyse(_hung_on_the_ratchet(text)()) for text in (group, listed))
+    for name in "GKL":
+        assert np.max(np.abs(other.motion.point(name).r - base.motion.point(name).r)) <= 1e-12
+        assert np.max(np.abs(other.motion.point(name).a - base.motion.point(name).a)) <= 1e-9
+    for mine, theirs in zip(other.plans, base.plans, strict=True):
+        largest = max(abs(found.force) for found in theirs.forces.reactions.values())
+        for name, found in theirs.forces.reactions.items():
+            assert abs(mine.forces.reactions[name].force - found.force) <= 1e-9 * largest, name
+        assert abs(theirs.forces.reactions["R46"].offset) > 1e-6  # the rocking slider's reaction is shifted
+        assert mine.forces.balancing == pytest.approx(theirs.forces.balancing, rel=1e-9)
+
+
+def test_the_note_says_why_assurs_point_is_on_a_guides_normal():
+    text = note_markdown(analyse(square_guides()))
+    assert "where the normal at D to the guide of the slider pinned there and the normal at F" in text
+    assert "along the guide relative to the guide's point under D" in text
+    assert "a guide's reaction on its slider, square to the guide at the slider's pin" in text
+    # The ratchet's scene is written in Russian.
+    text = note_markdown(analyse(CASES[VARIANT]()))
+    assert "нормаль к направляющей ползуна в его шарнире" in text
