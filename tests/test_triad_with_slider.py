@@ -225,12 +225,16 @@ def test_the_sliding_leg_may_be_any_of_the_three(legs):
     # The same mechanism with its legs listed in another order: another leg is swept for the assemblies and
     # Assur's point comes from other legs of the list, and every motion, reaction and balancing moment is the same.
     assert _GROUP in TEXT
-    listed = analyse(_scene(_GROUP, legs))
-    fixture = analyse(graphplan.load(FIXTURE))
-    for name in "BDF":
-        assert np.max(np.abs(listed.motion.point(name).r - fixture.motion.point(name).r)) <= 1e-12
-        assert np.max(np.abs(listed.motion.point(name).a - fixture.motion.point(name).a)) <= 1e-9
-    for mine, theirs in zip(listed.plans, fixture.plans, strict=True):
+    assert_same_triad(analyse(_scene(_GROUP, legs)), analyse(graphplan.load(FIXTURE)), "BDF")
+
+
+def assert_same_triad(listed, reference, inner: str) -> None:
+    """Two analyses of one mechanism, its triad's legs listed in another order: the same motion of the inner
+    joints, the same reactions and balancing moment at every plan position."""
+    for name in inner:
+        assert np.max(np.abs(listed.motion.point(name).r - reference.motion.point(name).r)) <= 1e-12
+        assert np.max(np.abs(listed.motion.point(name).a - reference.motion.point(name).a)) <= 1e-9
+    for mine, theirs in zip(listed.plans, reference.plans, strict=True):
         largest = max(abs(found.force) for found in theirs.forces.reactions.values())
         for name, found in theirs.forces.reactions.items():
             assert abs(mine.forces.reactions[name].force - found.force) <= 1e-9 * largest, name
