@@ -104,6 +104,8 @@ def build(scene: Scene) -> Mechanism:
     known_points = set(scene.frame_points)
     known_links = {frame}
     fixed_on: dict[int, set[str]] = {frame: set(scene.frame_points)}
+    # The link each known point is pinned to where a group joins it: the first link that carried it.
+    carried_by: dict[str, int] = dict.fromkeys(scene.frame_points, frame)
     sliding_on: dict[int, dict[str, complex]] = {}
     pending = list(scene.points)
     _check_point_names(scene)
@@ -126,6 +128,8 @@ def build(scene: Scene) -> Mechanism:
             raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
         for guide in solver.guides():
             _check_guide(scene, guide, known_links, fixed_on)
+        if index > 0:
+            _check_moves(scene, solver, carried_by)  # type: ignore[arg-type]
         for name in solver.new_joints():
             if name in known_points:
                 raise SceneError(*_clash(solver, name))
@@ -133,9 +137,13 @@ def build(scene: Scene) -> Mechanism:
         known_links.update(links)
         for number, names in solver.fixed_points().items():
             fixed_on.setdefault(number, set()).update(names)
+            for name in names:
+                carried_by.setdefault(name, number)
         for number, slides in solver.sliding_points().items():
             sliding_on.setdefault(number, {}).update(slides)
         placed, pending = _place_points(pending, known_links, fixed_on, sliding_on, known_points)
+        for spec in placed:
+            carried_by.setdefault(spec.name, spec.link)
         units.append(Unit(solver, placed))
     if pending:
         raise _unplaceable(pending, known_links, fixed_on, sliding_on)
@@ -148,6 +156,23 @@ def build(scene: Scene) -> Mechanism:
     )
     _check_references(mechanism, known_points, known_links)
     return mechanism
+
+
+def _check_moves(scene: Scene, group: Group, carried_by: dict[str, int]) -> None:
+    """Refuse a group whose outer joints and guides are all on the frame: an Assur group has no freedom of its
+    own, so joined to the frame alone it stands still, a structure and no part of the mechanism (a joint's
+    name mistyped for a frame point's does this)."""
+    frame = scene.frame_link
+    joints = group.known_joints()
+    if any(carried_by[name] != frame for name in joints) or not all(on_frame(scene, g) for g in group.guides()):
+        return
+    what = f"its outer joints {', '.join(joints)} are frame points" if len(joints) > 1 else \
+        f"its outer joint {joints[0]} is a frame point" if joints else ""
+    guides = "its guides are on the frame" if len(group.guides()) > 1 else "its guide is on the frame"
+    what = " and ".join(part for part in (what, guides if group.guides() else "") if part)
+    raise SceneError(f"{group.where}.joints" if joints else f"{group.where}.guides", (
+        f"joins the frame alone ({what}), so the group cannot move: join it to the driver or to an earlier "
+        f"group by a joint of theirs or a named point of one of their links"), list(joints))
 
 
 def _joint_where(solver: Driver | Group, name: str) -> str:

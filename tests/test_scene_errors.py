@@ -150,12 +150,13 @@ SLOTTED_LEVER: dict[str, Any] = {
     "positions": {"count": 12},
 }
 
-# PRP: two frame guides crossing at right angles (B stays put; only the reading is exercised).
+# PRP: a guide on the crank through A at 45° to it, crossing the frame's x axis at B (parallel to it only at
+# φ = 135° and 315°, between the positions).
 CROSSED_SLIDERS: dict[str, Any] = {
     "frame": {"points": {"O": [0.0, 0.0]}},
     "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0},
     "groups": [{"kind": "PRP", "links": [3, 4], "joints": ["B"],
-                "guides": [{"through": [0.0, 0.0], "angle": 0.0}, {"through": [0.0, 0.0], "angle": 90.0}]}],
+                "guides": [{"link": 2, "through": "A", "angle": 45.0}, {"through": [0.0, 0.0], "angle": 0.0}]}],
     "positions": {"count": 12},
 }
 
@@ -845,6 +846,35 @@ def test_second_group_guide_on_a_link_of_the_first() -> None:
     assert str(error) == "groups[1].guide.through: must be a point fixed on link 3: A, B, E, S3 (got 'C')"
 
 
+# --- a group joined to the frame alone stands still ------------------------------------------------
+
+
+@pytest.mark.parametrize(("second", "message"), [
+    # O and C are the frame's points: a rigid triangle on the frame (a mistyped "A" for "O" does this).
+    ({"kind": "RRR", "links": [5, 6], "joints": ["O", "D", "C"], "lengths": [0.3, 0.4], "assembly": "left"},
+     "groups[1].joints: joins the frame alone (its outer joints O, C are frame points), so the group cannot move"),
+    ({"kind": "RRP", "links": [5, 6], "joints": ["O", "D"], "length": 0.3, "guide": {"through": "C", "angle": 10.0},
+      "assembly": "forward"},
+     "groups[1].joints: joins the frame alone (its outer joint O is a frame point and its guide is on the frame), "
+     "so the group cannot move"),
+    ({"kind": "PRP", "links": [5, 6], "joints": ["D"], "guides": [{"through": "O", "angle": 0.0},
+                                                                 {"through": "C", "angle": 90.0}]},
+     "groups[1].guides: joins the frame alone (its guides are on the frame), so the group cannot move"),
+], ids=["RRR", "RRP", "PRP"])
+def test_a_group_joined_to_the_frame_alone_is_refused(second, message) -> None:
+    stage, error = first_error(two_groups(second))
+    assert stage == "build" and type(error) is SceneError
+    assert str(error).startswith(message), str(error)
+
+
+def test_a_group_joined_to_a_moving_link_by_a_guide_alone_moves() -> None:
+    """Both outer joints on the frame, but the guide on the rocker 4: the rocker moves the group."""
+    second = {"kind": "RRP", "links": [5, 6], "joints": ["O", "D"], "length": 0.6,
+              "guide": {"link": 4, "through": "C", "angle": 10.0}, "assembly": "forward"}
+    mechanism = graphplan.build(scene_module.loads(two_groups(second)))
+    assert mechanism.structure.endswith("II2(5,6)")
+
+
 # --- the file itself: bytes, syntax, size, existence ----------------------------------------
 
 
@@ -1023,7 +1053,7 @@ def test_rpr_offset_wider_than_the_reach() -> None:
 
 
 def test_prp_parallel_guides_are_singular() -> None:
-    text = to_toml(variant(CROSSED_SLIDERS, {"groups.0.guides.1.angle": 180.0}))
+    text = to_toml(variant(CROSSED_SLIDERS, {"groups.0.guides.0.angle": 0.0}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is SingularPositionError
     assert str(error) == "singular position at φ = 0° in group II(3,4): the two guides are parallel"

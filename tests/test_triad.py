@@ -111,6 +111,18 @@ def test_a_bad_triad_is_refused_with_its_key(old, new, where, message):
     assert caught.value.where == where and message in str(caught.value)
 
 
+def test_a_triad_on_the_frame_alone_is_refused_and_nothing_is_written(tmp_path, capsys):
+    # A mistyped joint: the leg AB pinned at the crank's pivot O makes the triad a truss on the frame.
+    scene = tmp_path / "truss.toml"
+    text = TEXT.replace('joints  = ["A", "B", "C", "D", "E", "F"]', 'joints  = ["O", "B", "C", "D", "E", "F"]')
+    scene.write_text(text.replace('from = "A"', 'from = "O"'), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert "groups[0].joints: joins the frame alone (its outer joints O, C, E are frame points)" in error
+    assert not out.exists()
+
+
 def test_a_triad_that_cannot_close_says_so_and_writes_nothing(tmp_path, capsys):
     scene = tmp_path / "short.toml"
     scene.write_text(TEXT.replace("lengths = [0.135, 0.108, 0.189]", "lengths = [0.135, 0.108, 0.02]"), encoding="utf-8")
