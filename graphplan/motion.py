@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
@@ -29,6 +30,7 @@ from .kinematics import (
     unit,
 )
 from .mechanism import Mechanism, on_frame
+from .memo import OwnedMemo
 from .scene import PointSpec
 
 # A group whose lines of action cross at less than this angle (degrees) has
@@ -45,6 +47,9 @@ CONTINUATION_STEPS = 360
 # round solves this many points across the bracket round the least sine and keeps the two beside
 # the least, so ten rounds narrow a 1° bracket to about 1e-9 rad.
 _ZOOM_ROUNDS, _ZOOM_POINTS = 10, 17
+
+# What the groups found by continuation found at each step of their walks, by mechanism and reference position.
+_walks: OwnedMemo[dict[str, dict[int, Any]]] = OwnedMemo()
 
 
 @dataclass(frozen=True)
@@ -133,8 +138,11 @@ class _Context:
     """The motion found so far, as the groups ask for it while they solve."""
 
     def __init__(self, mechanism: Mechanism, values: np.ndarray, describe: Callable[[int], str],
-                 tolerant: bool = False, start: int = 0) -> None:
+                 tolerant: bool = False, start: int = 0, walked: dict[str, dict[int, Any]] | None = None,
+                 steps: Sequence[int | None] | None = None) -> None:
         self.tolerant = tolerant
+        self._walked = {} if walked is None else walked
+        self._steps = [None] * len(values) if steps is None else steps
         self.singular: dict[int, str] = {}
         self.raised: dict[int, Exception] = {}
         self.count = len(values)
@@ -150,6 +158,9 @@ class _Context:
 
     def point(self, name: str) -> PointMotion:
         return self.points[name]
+
+    def walk_memo(self, group: str) -> tuple[dict[int, Any], Sequence[int | None]]:
+        return self._walked.setdefault(group, {}), self._steps
 
     def link(self, number: int) -> LinkMotion:
         return self.links[number]
@@ -257,8 +268,9 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
 
     Such a group follows one assembly from the reference position to its neighbours, so the
     positions are solved in driver order on a grid from the reference position out to every
-    value asked for, no coarser than :data:`CONTINUATION_STEPS` steps a turn (of the travel, for
-    a slider), and the values asked for are taken out of it.  A position between them where the
+    value asked for, :data:`CONTINUATION_STEPS` steps a turn (of the travel, for a slider) counted
+    from the reference position, and the values asked for are taken out of it; the steps a solve
+    walked are remembered for the next (``walk_memo``).  A position between them where the
     mechanism does not assemble stops the walk with its error, as it stops the real mechanism; a
     singular one between them only matters when it is one of the values.
     """
@@ -269,11 +281,16 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
         step = 2 * math.pi / CONTINUATION_STEPS
     else:
         step = abs(driver.travel[1] - driver.travel[0]) / CONTINUATION_STEPS or (high - low) / CONTINUATION_STEPS
-    grid = np.linspace(low, high, max(2, math.ceil((high - low) / step) + 1)) if high > low else np.array([low])
-    walk, inverse = np.unique(np.concatenate([ends, grid]), return_inverse=True)
+    # The grid is counted in steps from the reference position, the same for every solve: a group keeps what it
+    # found at each step of it (while the mechanism lives) and walks on from there on the next solve.
+    counted = np.arange(math.ceil((low - reference.value) / step), math.floor((high - reference.value) / step) + 1)
+    grid = reference.value + counted * step
+    on_grid = {float(value): int(k) for value, k in zip(grid, counted, strict=True) if low <= value <= high}
+    walk, inverse = np.unique(np.concatenate([ends, list(on_grid)]), return_inverse=True)
     asked = inverse[:len(values)]
     start = int(inverse[len(values)])
     where_asked = {int(w): i for i, w in enumerate(asked)}
+    walked = _walks.get(mechanism, (reference.value, reference.branches), dict)
 
     def describe_walk(index: int) -> str:
         if index in where_asked:
@@ -281,7 +298,8 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
         return f"{driver.describe(float(walk[index]))}, on the way between the positions asked for"
 
     with np.errstate(divide="ignore", invalid="ignore"):
-        context = _Context(mechanism, walk, describe_walk, tolerant=True, start=start)
+        context = _Context(mechanism, walk, describe_walk, tolerant=True, start=start, walked=walked,
+                           steps=[on_grid.get(float(value)) for value in walk])
         found = _run(mechanism, context, walk, reference)
     points, links, slides, conditioning = _taken(found, asked)
     singular = {i: context.singular[int(w)] for i, w in enumerate(asked) if int(w) in context.singular}

@@ -153,8 +153,20 @@ def _settle_extremes(mechanism: Mechanism, start: float, reference: Reference):
         settled = reference_at(mechanism, first)
         if settled.branches == reference.branches:
             return extremes, reference
+        # A triad's branch holds its pose where it was chosen: chosen again at the first position, the same
+        # assembly is another branch, whose extremes are those just found.
+        if _same_assembly(mechanism, first, reference, settled):
+            return extremes, settled
         reference = settled
     return extremes, reference
+
+
+def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Reference) -> bool:
+    """Whether the mechanism stands the same at driver ``value`` from either reference position."""
+    first, second = (solve(mechanism, [value], reference) for reference in (one, other))
+    size = max(float(np.max(np.abs(point.r))) for point in first.points.values()) or 1.0
+    return all(float(np.max(np.abs(point.r - second.points[name].r))) <= 1e-9 * size
+               for name, point in first.points.items())
 
 
 def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> tuple[float, float]:

@@ -9,9 +9,9 @@ at once.  The registry in ``groups/__init__.py`` maps ``kind`` to the class.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import ClassVar, Protocol
+from typing import Any, ClassVar, Protocol
 
 import numpy as np
 
@@ -105,6 +105,12 @@ class Context(Protocol):
     def link(self, number: int) -> LinkMotion: ...
 
     def guide(self, guide: Guide) -> GuideMotion: ...
+
+    def walk_memo(self, group: str) -> tuple[dict[int, Any], Sequence[int | None]]:
+        """For a group found by continuation: what it found before at the steps of the walk (by step, counted
+        from the reference position; kept while the mechanism lives), and each position's step, or None for a
+        position off the steps (one asked for between them)."""
+        ...
 
     def fail_where(self, bad: np.ndarray, error: Callable[[int, str], Exception]) -> None:
         """Raise ``error(i, position_text)`` for the first position where ``bad`` holds."""

@@ -354,9 +354,16 @@ class Triad(Group):
         tracks = self._tracks(context)
         poses: list[Pose | None] = [None] * context.count
         start = context.start
+        walked, steps = context.walk_memo(self.label)
 
         def settle(index: int, guess: Pose) -> Pose | None:
-            return self._settle(guess, tuple(legs[index] for legs in tracks), branch.turn)
+            step = steps[index]
+            if step in walked:  # an earlier solve walked past this step of the same assembly
+                return walked[step]
+            pose = self._settle(guess, tuple(legs[index] for legs in tracks), branch.turn)
+            if step is not None and pose is not None:
+                walked[step] = pose
+            return pose
 
         poses[start] = settle(start, branch.pose)
         stops = [start] if poses[start] is None else []
