@@ -93,8 +93,12 @@ def test_assurs_point_is_where_two_square_guides_normals_cross():
         where = plan_position.positions
         ((_, sigma),) = plan_position.velocity.auxiliary.items()
         assert _sine(1j * f_guide, sigma - where["F"]) <= 1e-9 and _sine(1j * d_guide, sigma - where["D"]) <= 1e-9
-        # Relative to the pole (the frame's points under D and F), σ is reached along both guides.
+        # Both pins slide on frame guides: Σ, on both normals, is the ternary link's instant centre.
+        index = plan_position.number - 1
+        v_b, omega = complex(*analysis.motion.point("B").v[index]), float(analysis.motion.link(6).omega[index])
+        assert abs(v_b + 1j * omega * (sigma - where["B"])) <= 1e-12 * abs(v_b)
         velocity = plan_position.velocity
+        assert abs(velocity.points["σ6"]) <= 1e-12 * abs(v_b)
         for pin, guide in (("D", d_guide), ("F", f_guide)):
             assert abs((np.conj(guide) * velocity.value(pin)).imag) <= 1e-12 * abs(velocity.value(pin))
 
@@ -176,6 +180,7 @@ def test_the_note_says_why_assurs_point_is_on_a_guides_normal():
     assert "where the normal at D to the guide of the slider pinned there and the normal at F" in text
     assert "along the guide relative to the guide's point under D" in text
     assert "a guide's reaction on its slider, square to the guide at the slider's pin" in text
+    assert "Both lines run through the pole: VΣ6 = 0, and Σ6 is the instant centre of link 6." in text
     # The ratchet's scene is written in Russian.
     text = note_markdown(analyse(CASES[VARIANT]()))
     assert "нормаль к направляющей ползуна в его шарнире" in text

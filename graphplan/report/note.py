@@ -334,9 +334,13 @@ class _Note:
         if plan.kind != "velocity" or first is None or first.fixes[-1] not in special:
             return
         point = next(name for name in plan.auxiliary if image_name(name) == first.fixes[-1])
+        # Both lines through the pole (the legs' outer joints, or the guides' points under the pins, fixed): Σ
+        # stands still, the instant centre of its link.
+        still = " " + self.t("note_assur_instant_centre", point=point, link=point[1:]) \
+            if all(line.through == "p" for line in first.lines) else ""
         if all(line.along.kind == "perpendicular" for line in first.lines):
             lines = ["".join(line.along.points) for line in first.lines]
-            self.para(self.t("note_assur_point", point=point, link=point[1:], first=lines[0], second=lines[1]))
+            self.para(self.t("note_assur_point", point=point, link=point[1:], first=lines[0], second=lines[1]) + still)
             return
         # A sliding leg's line is its guide, which names the slider's pin: Σ is on the guide's normal there.
         names, motions = [], []
@@ -349,7 +353,7 @@ class _Note:
                 names.append(self.t("note_assur_normal_line", pin=line.along.points[0]))
                 motions.append(self.t("note_assur_normal_motion", pin=line.along.points[0]))
         self.para(self.t("note_assur_point_sliding", point=point, link=point[1:], first=names[0], second=names[1],
-                         first_motion=motions[0], second_motion=motions[1]))
+                         first_motion=motions[0], second_motion=motions[1]) + still)
 
     def blocks(self, plan: Plan) -> list[tuple[int, list[Step]]]:
         """The plan's steps by the unit of the structure (driver, groups) that drew them, in order.
