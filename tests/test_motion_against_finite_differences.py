@@ -94,6 +94,16 @@ guides = { K = { link = 4, angle = 60.0 }, L = { angle = 80.0 } }
 sides = [0.15, 0.17, 0.18]
 near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
 """,
+    # All three legs sliding: slider 5 on the coupler 3 through E, slider 6 on the rocker 4, slider 7 on the frame.
+    "ratchet+triad-three-sliders": """
+[[groups]]
+kind = "triad"
+links = [5, 6, 7, 8]
+joints = ["E", "G", "S4", "K", "C", "L"]
+guides = { G = { link = 3, angle = 120.0 }, K = { link = 4, angle = 120.0 }, L = { angle = 60.0 } }
+sides = [0.15, 0.17, 0.18]
+near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
+""",
 }
 
 

@@ -69,6 +69,7 @@ _OFF_LINE_POINT = {
     "ratchet+PRP-rocker-coupler": "",
     "ratchet+triad-slider-on-rocker": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
     "ratchet+triad-two-sliders": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
+    "ratchet+triad-three-sliders": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
 }
 _HUNG_ON_THE_RATCHET = {name: (GROUPS_ON_THE_RATCHET[name], point) for name, point in _OFF_LINE_POINT.items()}
 _HUNG_ON_THE_RATCHET["ratchet+RPR-moving-pivot-offset"] = ("""

@@ -146,9 +146,9 @@ def test_the_guides_reaction_is_square_to_it_and_shifted_by_the_sliders_moment()
 
 
 @pytest.mark.parametrize(("old", "new", "where", "message"), [
-    (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 0.0 }, B = { angle = 90.0 } }", "groups[0].guides",
-     "one or two of them"),
-    (GUIDES, "guides = { }", "groups[0].guides", "one or two of them"),
+    (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 0.0 }, B = { angle = 90.0 } }", "groups[0].lengths",
+     "must be left out: the legs AB, CD and EF all slide"),
+    (GUIDES, "guides = { }", "groups[0].guides", "must name the legs that slide by their inner joints (B, D, F)"),
     (GUIDES, "guides = { F = { angle = -30.0 }, D = { angle = 110.0 } }", "groups[0].lengths",
      "must have 1 entry, lAB (the legs CD and EF slide), not 2"),
     (GUIDES, "guides = { E = { angle = -30.0 } }", "groups[0].guides.E", "must name an inner joint"),

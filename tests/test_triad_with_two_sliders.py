@@ -1,13 +1,17 @@
-"""A triad with two sliding legs: what the tests that run every fixture and variant cannot show.
+"""A triad with two or three sliding legs: what the tests that run every fixture and variant cannot show.
 
-Those already hold the ratchet's variant ``ratchet+triad-two-sliders`` (slider 6 on the rocking link 4,
-so with a Coriolis term; slider 7 on a frame guide through C; only the leg EG turns) to its closure,
-finite differences, the 50-digit reference, the plans against the analytic solution and the force
-polygons against the linear system of statics.  Here: the structure, Assur's point on a guide's
-normal, the Coriolis component, the guides' reactions, the legs listed in another order, the note.
+Those already hold the ratchet's variants ``ratchet+triad-two-sliders`` (slider 6 on the rocking link 4,
+so with a Coriolis term; slider 7 on a frame guide through C; only the leg EG turns) and
+``ratchet+triad-three-sliders`` (slider 5 on the coupler 3 too), and ``triad_with_slider+square-guides``
+to their closure, finite differences, the 50-digit reference, the plans against the analytic solution
+and the force polygons against the linear system of statics.  Here: the structure, Assur's point on a
+guide's normal, the Coriolis component, the guides' reactions, the legs listed in another order, the
+note, the assemblies of a triad none of whose legs turns.
 """
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -17,8 +21,10 @@ from test_triad_with_slider import assert_same_triad
 
 import graphplan
 from graphplan.analysis import analyse, instant
+from graphplan.cli import main
 from graphplan.forces import force_plan
 from graphplan.groups.sliding import coriolis
+from graphplan.groups.triad import Track
 from graphplan.kinematics import cross
 from graphplan.loads import activity, link_loads, plan_state
 from graphplan.plans import acceleration_plan, velocity_plan
@@ -184,3 +190,63 @@ def test_the_note_says_why_assurs_point_is_on_a_guides_normal():
     # The ratchet's scene is written in Russian.
     text = note_markdown(analyse(CASES[VARIANT]()))
     assert "нормаль к направляющей ползуна в его шарнире" in text
+
+
+THREE = "ratchet+triad-three-sliders"
+
+
+def test_three_sliding_legs_need_no_lengths_and_each_pin_keeps_to_its_guide():
+    scene = CASES[THREE]()
+    (_, triad) = scene.groups
+    assert triad.sliding_legs == (0, 1, 2) and triad.turning_legs == ()
+    motion = graphplan.solve(scene)
+    assert {(s.slider, s.guide, s.joint) for s in motion.slides} >= {(5, 3, "G"), (6, 4, "K"), (7, 1, "L")}
+
+    def at(name: str) -> np.ndarray:
+        xy = motion.point(name).r
+        return xy[:, 0] + 1j * xy[:, 1]
+
+    for pin, through, link, angle in (("G", "E", 3, 120.0), ("K", "S4", 4, 120.0), ("L", "C", None, 60.0)):
+        base = 0.0 if link is None else motion.link(link).angle
+        direction = np.exp(1j * (base + np.radians(angle)))
+        assert np.max(np.abs((np.conj(direction) * (at(pin) - at(through))).imag)) < 1e-12, pin
+    sides = [abs(at("K") - at("G")), abs(at("L") - at("K")), abs(at("G") - at("L"))]
+    for side, length in zip(sides, (0.15, 0.17, 0.18), strict=True):
+        assert np.max(np.abs(side - length)) < 1e-12
+
+
+def test_turning_the_ternary_link_finds_the_assemblies_of_three_sliders():
+    """With no leg to sweep round a circle, the ternary link is turned round: every assembly it finds closes
+    on the three guides, and the one the scene runs in is among them."""
+    mechanism = graphplan.build(CASES[THREE]())
+    (_, triad) = mechanism.groups
+    motion = graphplan.solve(CASES[THREE](), driver=[0.0])
+
+    def at(name: str) -> complex:
+        return complex(*motion.point(name).r[0])
+
+    rocker, coupler = motion.link(4).angle[0], motion.link(3).angle[0]
+    tracks = (Track(at("E"), u=np.exp(1j * (coupler + np.radians(120.0)))),
+              Track(at("S4"), u=np.exp(1j * (rocker + np.radians(120.0)))),
+              Track(at("C"), u=np.exp(1j * np.radians(60.0))))
+    poses = triad.assemblies(tracks, -1) + triad.assemblies(tracks, 1)
+    assert len(poses) >= 2
+    for turn, found in ((-1, triad.assemblies(tracks, -1)), (1, triad.assemblies(tracks, 1))):
+        for pose in found:
+            for track, corner in zip(tracks, triad.corners(pose, turn), strict=True):
+                assert abs(track.closure(corner, triad.size)) <= 1e-9 * triad.size ** 2
+    # The assembly the scene runs in is among them.
+    g = at("G")
+    assert min(abs(pose.b - g) for pose in poses) < 1e-9
+
+
+def test_three_sliders_that_cannot_close_say_so_in_one_line(tmp_path, capsys):
+    group = _HUNG_ON_THE_RATCHET[THREE].replace("sides = [0.15, 0.17, 0.18]", "sides = [0.015, 0.017, 0.018]")
+    scene = tmp_path / "small.toml"
+    ratchet = (Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    scene.write_text(ratchet.replace("\n[points]", group + "\n[points]"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert "nor a turn of the ternary link 8 finds a pose" in error and "G slides on the guide through E" in error
+    assert not out.exists()

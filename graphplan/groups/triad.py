@@ -5,16 +5,16 @@ are the corners of the ternary (base) link t:
 
     |B − A| = AB,   |D − C| = CD,   |F − E| = EF,   BDF a rigid triangle.
 
-One or two legs may slide instead of turning: such a binary link is a slider pivoted on the
-ternary link at its inner joint (F) and moving along a guide through its outer joint (E), on the
-frame or on an earlier link; its closure is F on that line.  Each inner joint so moves on a track
+Any leg may slide instead of turning: such a binary link is a slider pivoted on the ternary link
+at its inner joint (F) and moving along a guide through its outer joint (E), on the frame or on
+an earlier link; its closure is F on that line.  Each inner joint so moves on a track
 at every instant, a circle about its outer joint or the guide's line.
 
 No closed form places the triad, so its pose q = (B, ψ), ψ the direction of BD, is found
 numerically.  At the reference position every assembly is found (the inner joint of a turning leg
 swept round its circle, the next leg's where its track meets the circle of the ternary link's side
-about it, the third corner from the triangle; each sign change of the third leg's closure refined
-by Brent's method) and the one
+about it, the third corner from the triangle, or, where all three legs slide, the ternary link
+turned round; each sign change of the third leg's closure refined by Brent's method) and the one
 nearest the scene's sketch (``near``) is taken.  Every other position is reached from its
 neighbour by Newton's method, which is why the motion solves a mechanism with a triad on a grid
 of driver positions fine enough to follow one assembly (``continuation``).  The velocities and
@@ -123,14 +123,19 @@ class Triad(Group):
         leg_guides = _read_sliding_legs(table, joints)
         turning = [n for n in range(3) if leg_guides[n] is None]
         bars = ", ".join(f"l{joints[2 * n]}{joints[2 * n + 1]}" for n in turning)
-        raw_lengths = table.raw("lengths")
+        raw_lengths = table.raw("lengths", None)
         if isinstance(raw_lengths, list) and len(raw_lengths) != len(turning):
             sliding = [f"{joints[2 * n]}{joints[2 * n + 1]}" for n in range(3) if leg_guides[n] is not None]
+            if not turning:
+                raise SceneError(table.where("lengths"), f"must be left out: the legs {_listed(sliding)} all slide",
+                                 raw_lengths)
             why = {0: "", 1: f" (the leg {sliding[0]} slides)"}.get(len(sliding), f" (the legs {' and '.join(sliding)} slide)")
             raise SceneError(table.where("lengths"), f"must have {len(turning)} entr{'y' if len(turning) == 1 else 'ies'}, {bars}{why}, not "
                                                      f"{len(raw_lengths)}", raw_lengths)
         lengths = [0.0, 0.0, 0.0]
-        for n, length in zip(turning, table.numbers("lengths", len(turning), positive=True)):
+        # Where every leg slides there is no length to give: the key may be left out.
+        given = table.numbers("lengths", len(turning), positive=True) if turning else table.numbers("lengths", 0, ())
+        for n, length in zip(turning, given):
             lengths[n] = length
         sides = table.numbers("sides", 3, positive=True)
         bd, df, fb = sides
@@ -241,28 +246,43 @@ class Triad(Group):
 
         The first turning leg's inner joint is swept round its circle, the next leg's found on its
         track at its distance from the first, the third corner follows from the triangle; the
-        roots of the third leg's closure are the assemblies.
+        roots of the third leg's closure are the assemblies.  Where all three legs slide, the
+        ternary link is turned round instead: at each turn the first pin is where its guide meets
+        the second's, carried back by the side between them.
         """
-        swept, second, third = self.turning_legs + self.sliding_legs
+        first, second, third = self.turning_legs + self.sliding_legs
         local = self.local_corners(turn)
-        span = abs(local[second] - local[swept])
-        outer_p = tracks[swept]
         theta = np.linspace(0.0, 2 * math.pi, _SWEEP + 1)
 
+        def around(angle, sign):
+            """The first pin, on its circle at ``angle``, and the ternary link's turn e^{iψ} with the second pin at
+            either meeting of its track with the circle of the side between them (NaN where they do not meet)."""
+            p = tracks[first].centre + tracks[first].radius * np.exp(1j * angle)
+            q = _at_distance(tracks[second], p, abs(local[second] - local[first]), sign)
+            return p, (q - p) / (local[second] - local[first])
+
+        def turned(angle, sign):
+            """The ternary link turned to e^{iψ} = e^{i·angle}, and the first pin where its guide meets the second's
+            guide carried back by the side between the pins (NaN where the guides are parallel)."""
+            rotation = np.exp(1j * angle)
+            one, other = tracks[first], tracks[second]
+            gap = other.centre - (local[second] - local[first]) * rotation - one.centre
+            with np.errstate(divide="ignore", invalid="ignore"):
+                along = (np.conj(gap) * other.u).imag / (np.conj(one.u) * other.u).imag
+            return one.centre + along * one.u, rotation
+
+        placed, signs = (around, (1, -1)) if self.turning_legs else (turned, (1,))
+
         def closing(angle, sign):
-            """The third leg's closure with the second leg's joint at either meeting of its track with the
-            circle of the ternary link's side about the first, with B and the ternary link's turn e^{iψ}
-            there (NaN where they do not meet)."""
-            p = outer_p.centre + outer_p.radius * np.exp(1j * angle)
-            q = _at_distance(tracks[second], p, span, sign)
-            rotation = (q - p) / (local[second] - local[swept])
-            corner = p + (local[third] - local[swept]) * rotation
-            return tracks[third].closure(corner, self.size), p - local[swept] * rotation, rotation
+            """The third leg's closure, with B and the ternary link's turn e^{iψ}."""
+            p, rotation = placed(angle, sign)
+            corner = p + (local[third] - local[first]) * rotation
+            return tracks[third].closure(corner, self.size), p - local[first] * rotation, rotation
 
         from scipy.optimize import brentq  # imported here, as in _settle: only a triad needs it
 
         poses = []
-        for sign in (1, -1):
+        for sign in signs:
             values = closing(theta, sign)[0]
             crossing = np.flatnonzero(np.isfinite(values[:-1]) & np.isfinite(values[1:]) & (values[:-1] * values[1:] <= 0))
             for k in crossing:
@@ -318,8 +338,9 @@ class Triad(Group):
         if walking:
             return (f"the ternary link {self.ternary} cannot follow its assembly from the position before: "
                     f"the triad reaches a limit position on the way {where}")
-        swept = self.arms()[self.turning_legs[0]]
-        return (f"neither the sketch (near) nor a sweep of {swept[1]} round its circle finds a pose of the ternary "
+        sweep = f"a sweep of {self.arms()[self.turning_legs[0]][1]} round its circle" if self.turning_legs else \
+            f"a turn of the ternary link {self.ternary}"
+        return (f"neither the sketch (near) nor {sweep} finds a pose of the ternary "
                 f"link {self.ternary} that closes on the tracks of {', '.join(self.new_joints())} {where}")
 
     def _residual(self, q: np.ndarray, tracks: tuple[Track, Track, Track], turn: int):
@@ -743,10 +764,8 @@ def _read_sliding_legs(table: Table, joints: tuple[str, ...]) -> tuple[Guide | N
         return None, None, None
     inner = (joints[1], joints[3], joints[5])
     names = list(guides.data)
-    if not 1 <= len(names) <= 2:
-        raise SceneError(guides.path, f"must name the legs that slide by their inner joints ({', '.join(inner)}): one "
-                                      f"or two of them, the assemblies being found by turning a leg round its circle",
-                         names)
+    if not names:
+        raise SceneError(guides.path, f"must name the legs that slide by their inner joints ({', '.join(inner)})", names)
     for name in names:
         if name not in inner:
             raise SceneError(guides.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
