@@ -494,7 +494,7 @@ class Triad(Group):
 
     # The plans: Assur's special point Σ, then F, then B and D by similarity.
 
-    def sigma_lines(self, board: Builder | ForceBoard) -> tuple[Line, Line, Line]:
+    def lines_through_sigma(self, board: Builder | ForceBoard) -> tuple[Line, Line, Line]:
         """Each leg's line through its inner joint on which Σ may lie: a turning leg's own line (AB), a sliding
         leg's guide's normal at its pin."""
         lines = []
@@ -509,7 +509,7 @@ class Triad(Group):
     def special_point(self, board: Builder | ForceBoard, size: float) -> tuple[str, complex, tuple[int, int, int]]:
         """Σ's name, where it lies (m), and the legs: the two whose lines cross at the widest angle (Σ is their
         crossing), then the third.  ``size`` is the figure's extent."""
-        lines = self.sigma_lines(board)
+        lines = self.lines_through_sigma(board)
         i, j = max(((0, 1), (0, 2), (1, 2)), key=lambda pair: abs((lines[pair[0]].unit.conjugate() * lines[pair[1]].unit).imag))
         return f"Σ{self.ternary}", cross_lines(lines[i], lines[j], size), (i, j, 3 - i - j)
 
@@ -525,7 +525,7 @@ class Triad(Group):
         carrier = board.guide_line(self.leg_guides[n])[2]
         return guide_point(board, carrier, inner), f"{inner}{carrier}"
 
-    def _sigma_line(self, board: Builder, n: int, start: str, sigma_name: str) -> tuple[DrawnLine, str]:
+    def _plan_line_to_sigma(self, board: Builder, n: int, start: str, sigma_name: str) -> tuple[DrawnLine, str]:
         """The line of action through ``start`` on which σ lies by leg ``n`` (⊥ AB, or ∥ its guide), and the name of
         Σ's motion along it."""
         outer, inner, _ = self.arms()[n]
@@ -548,7 +548,7 @@ class Triad(Group):
         for n in (i, j):
             outer = arms[n][0]
             start = board.images[outer] if n not in on_guide else on_guide[n][0]
-            line, relative = self._sigma_line(board, n, start, sigma_name)
+            line, relative = self._plan_line_to_sigma(board, n, start, sigma_name)
             drawn.append(line)
             terms.append((outer if n not in on_guide else on_guide[n][1], relative))
         value, angle = board.cross(*(Line(board.points[line.through], line.direction, line.meaning) for line in drawn))
@@ -611,7 +611,7 @@ class Triad(Group):
                 vectors.append(LaidVector(image, arm_end, f"a{inner}{outer}ⁿ"))
                 known = f"a{outer} + a{inner}{outer}ⁿ"
             end = board.mark(f"n{t}{prime}", board.points[arm_end] - whirl_t * (sigma_pos - positions[inner]))
-            line, relative = self._sigma_line(board, n, end, sigma_name)
+            line, relative = self._plan_line_to_sigma(board, n, end, sigma_name)
             vectors.append(LaidVector(arm_end, end, f"a{sigma_name}{inner}ⁿ"))
             ends.append(end)
             lines.append(line)
