@@ -163,13 +163,16 @@ def _check_moves(scene: Scene, group: Group, carried_by: dict[str, int]) -> None
     own, so joined to the frame alone it stands still, a structure and no part of the mechanism (a joint's
     name mistyped for a frame point's does this)."""
     frame = scene.frame_link
-    joints = group.known_joints()
-    if any(carried_by[name] != frame for name in joints) or not all(on_frame(scene, g) for g in group.guides()):
+    joints, guides = group.known_joints(), group.guides()
+    if any(carried_by[name] != frame for name in joints) or not all(on_frame(scene, g) for g in guides):
         return
-    what = f"its outer joints {', '.join(joints)} are frame points" if len(joints) > 1 else \
-        f"its outer joint {joints[0]} is a frame point" if joints else ""
-    guides = "its guides are on the frame" if len(group.guides()) > 1 else "its guide is on the frame"
-    what = " and ".join(part for part in (what, guides if group.guides() else "") if part)
+    parts = []
+    if joints:
+        parts.append(f"its outer joints {', '.join(joints)} are frame points" if len(joints) > 1 else
+                     f"its outer joint {joints[0]} is a frame point")
+    if guides:
+        parts.append("its guides are on the frame" if len(guides) > 1 else "its guide is on the frame")
+    what = " and ".join(parts)
     raise SceneError(f"{group.where}.joints" if joints else f"{group.where}.guides", (
         f"joins the frame alone ({what}), so the group cannot move: join it to the driver or to an earlier "
         f"group by a joint of theirs or a named point of one of their links"), list(joints))

@@ -38,6 +38,14 @@ def coriolis(omega: float, relative: complex) -> complex:
     return turned(2.0 * abs(omega) * relative, omega)
 
 
+def coriolis_end(board: Builder, velocities: Plan, point: str, slider: int, carrier: int, on_guide: str) -> str:
+    """The end of the Coriolis part 2·ωg × vPPg laid from ``on_guide`` (the image of the guide link's point under
+    the pin ``point``), vPPg read off the velocity plan; marked and returned."""
+    relative = velocities.value(point) - velocities.points[on_guide]
+    return board.mark(coriolis_letter(board, slider),
+                      board.points[on_guide] + coriolis(velocities.rates.get(carrier, 0.0), relative))
+
+
 def guide_meaning(guide: Guide) -> LineMeaning:
     """What a line of action along ``guide`` follows: the frame line it names, or the guide on its link."""
     if guide.line is not None:
@@ -116,9 +124,7 @@ def acceleration_on_guide(board: Builder, velocities: Plan, point: str, pivot: t
     equation = f"a{point} = a{pivot_name} + a{point}{pivot_name}ⁿ + a{point}{pivot_name}^τ = a{g}"
     start = on_guide
     if turning:
-        relative = velocities.value(point) - velocities.points[on_guide]
-        start = board.mark(coriolis_letter(board, slider),
-                           board.points[on_guide] + coriolis(velocities.rates.get(carrier, 0.0), relative))
+        start = coriolis_end(board, velocities, point, slider, carrier, on_guide)
         laid.append(LaidVector(on_guide, start, f"a{point}{g}ᵏ"))
         equation += f" + a{point}{g}ᵏ"
     equation += f" + a{point}{g}^r"

@@ -46,8 +46,7 @@ from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide
 from .rrr import crossed_from_two_pivots, velocity_from_two_pivots
 from .sliding import (
     acceleration_on_guide,
-    coriolis,
-    coriolis_letter,
+    coriolis_end,
     guide_link,
     guide_meaning,
     guide_point,
@@ -129,7 +128,8 @@ class Triad(Group):
             if not turning:
                 raise SceneError(table.where("lengths"), f"must be left out: the legs {_listed(sliding)} all slide",
                                  raw_lengths)
-            why = {0: "", 1: f" (the leg {sliding[0]} slides)"}.get(len(sliding), f" (the legs {' and '.join(sliding)} slide)")
+            why = "" if not sliding else f" (the leg {sliding[0]} slides)" if len(sliding) == 1 else \
+                f" (the legs {_listed(sliding)} slide)"
             raise SceneError(table.where("lengths"), f"must have {len(turning)} entr{'y' if len(turning) == 1 else 'ies'}, {bars}{why}, not "
                                                      f"{len(raw_lengths)}", raw_lengths)
         lengths = [0.0, 0.0, 0.0]
@@ -534,8 +534,8 @@ class Triad(Group):
             return DrawnLine(start, 1j * (board.positions[inner] - board.positions[outer]),
                              LineMeaning("perpendicular", (outer, inner))), f"{sigma_name}{outer}"
         # The guide's line carries the pin's sliding: it names the pin, whose normal Σ lies on.
-        meaning = replace(guide_meaning(guide), points=(inner,))
-        return DrawnLine(start, board.guide_line(guide)[1], meaning), f"{sigma_name}{inner}{board.guide_line(guide)[2]}"
+        _, u, carrier = board.guide_line(guide)
+        return DrawnLine(start, u, replace(guide_meaning(guide), points=(inner,))), f"{sigma_name}{inner}{carrier}"
 
     def construct_velocity(self, board: Builder) -> None:
         """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD), or vD4 + vΣD4 (∥ guide) where D slides; vF = vΣ + vFΣ (⊥ ΣF) =
@@ -598,9 +598,7 @@ class Triad(Group):
                 arm_end, known = start, f"a{under}"
                 if link in coriolis_sliders:
                     carrier = board.guide_line(self.leg_guides[n])[2]
-                    relative = velocities.value(inner) - velocities.points[start]
-                    arm_end = board.mark(coriolis_letter(board, link),
-                                         board.points[start] + coriolis(velocities.rates.get(carrier, 0.0), relative))
+                    arm_end = coriolis_end(board, velocities, inner, link, carrier, start)
                     vectors.append(LaidVector(start, arm_end, f"a{inner}{under}ᵏ"))
                     known += f" + a{inner}{under}ᵏ"
                     kinks[n] = arm_end

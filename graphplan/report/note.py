@@ -584,10 +584,10 @@ class _Note:
         value = abs(plan.points[end] - plan.points[start])
         modulus = f"{self.n(value)} {self.text['unit_m_per_s' if plan.kind == 'velocity' else 'unit_m_per_s2']}"
         along = [line.along for line in step.lines if line.through == start]
-        pair = self.split(name[1:].removesuffix(_TANGENTIAL), pp)
         if along:
             direction = self.line(along[0])
         else:
+            pair = self.split(name[1:].removesuffix(_TANGENTIAL), pp)
             direction = self.line(LineMeaning("perpendicular", (pair[1], pair[0]))) if pair is not None else "—"
         return _Term(self.equation(name), modulus, f"{segment} = {self.mm(value / plan.scale)}", direction)
 
