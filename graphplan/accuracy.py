@@ -297,7 +297,7 @@ def diagram(case: Case, refinement: int) -> Row:
     grid = diagram_grid(case, refinement)
     step = float(grid[1] - grid[0])
     periodic = driver.cyclic
-    levers = [(g.new_joints()[0], g.joints[0], g.joints[1], g.links[1]) for g in mechanism.groups if g.kind == "RPR"]
+    levers = [point for group in mechanism.groups for point in group.coincident_points()]
 
     def differentiate():
         motion = solve(mechanism, grid, case.positions.reference)
@@ -315,7 +315,7 @@ def diagram(case: Case, refinement: int) -> Row:
                 second = _second_at_ends(second, np.unwrap(np.asarray(motion.link(number).angle, dtype=float)), step)
             omega[number], epsilon[number] = rate * first, rate * rate * second + rate_rate * first
         for name, on, pivot, lever in levers:
-            # The lever's point under the block is no path of its own: it moves rigidly with the lever.
+            # A link's point under a block is no path of its own: it moves rigidly with the link.
             arm = (motion.point(on).r @ (1, 1j)) - (motion.point(pivot).r @ (1, 1j))
             v[name] = v[pivot] + 1j * omega[lever] * arm
             a[name] = a[pivot] + (1j * epsilon[lever] - omega[lever] ** 2) * arm

@@ -103,6 +103,18 @@ class MomentEquation:
 
 
 @dataclass(frozen=True)
+class ProjectionEquation:
+    """ΣF(link) projected on a slide = 0, solved for ``unknown`` along it: a block in a slot takes no force along the
+    slot, so its pin's reaction balances the block's own loads along it.  ``components`` are each load's part along
+    the slide (N), signed along its direction."""
+
+    link: int
+    components: tuple[tuple[str, float], ...]
+    unknown: str
+    value: float
+
+
+@dataclass(frozen=True)
 class PolygonVector:
     """A vector of a force polygon from ``start`` to ``end`` (N, on the polygon's own plane)."""
 
@@ -150,6 +162,7 @@ class GroupForces:
     polygon: Polygon
     found: tuple[Found, ...]
     scale: float = 1.0
+    projections: tuple[ProjectionEquation, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -209,6 +222,7 @@ class ForceBoard:
     balancing: float = 0.0
     auxiliary: dict[str, complex] = field(default_factory=dict)
     _moments: list[MomentEquation] = field(default_factory=list)
+    _projections: list[ProjectionEquation] = field(default_factory=list)
     _found: list[Found] = field(default_factory=list)
 
     # What a group asks while it solves.
@@ -257,6 +271,14 @@ class ForceBoard:
         self.positions[name] = where
         self.auxiliary[name] = where
 
+    def solve_projection(self, link: int, unknown: str, direction: complex) -> float:
+        """ΣF(link)·u = 0 for the magnitude of a force along unit ``direction`` (u)."""
+        components = tuple((load.name, float((load.force * direction.conjugate()).real))
+                           for load in self.loads_on(link) if load.is_force and load.force != 0)
+        value = -sum(component for _, component in components)
+        self._projections.append(ProjectionEquation(link, components, unknown, value))
+        return value
+
     def couple(self, link: int, about: str, unknown: str, extra: tuple[Term, ...] = ()) -> float:
         """ΣM_about = 0 for a couple (a normal force's shift along its slide times the force)."""
         terms = self.moment_terms(link, self.positions[about]) + extra
@@ -293,8 +315,9 @@ class ForceBoard:
 
     def finish_group(self, label: str, links: tuple[int, ...], polygon: Polygon) -> None:
         loads = tuple(load for link in links for load in self.loads_on(link))
-        self.groups.append(GroupForces(label, links, loads, tuple(self._moments), polygon, tuple(self._found)))
-        self._moments, self._found = [], []
+        self.groups.append(GroupForces(label, links, loads, tuple(self._moments), polygon, tuple(self._found),
+                                       projections=tuple(self._projections)))
+        self._moments, self._projections, self._found = [], [], []
 
 
 class PolygonBuilder:

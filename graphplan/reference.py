@@ -257,27 +257,34 @@ def _closure(group, scene, points, angles) -> tuple[Callable, Callable]:
             origin, u, guide_angle = _guide(scene, group.guide, points, angles)
             return {b_name: origin + q1 * u}, {group.links[0]: guide_angle + mpf(group.angle), group.links[1]: guide_angle}
     elif kind == "triad":
-        b_name, d_name, f_name = group.new_joints()
+        b_name, d_name, f_name = group.inner_joints
         bd = mpf(group.sides[0])
         corner_f = _corner_f(group, points)
         la, lb, lc, lt = group.links
 
-        def inner(leg, q):
-            """The inner joint of a leg: its binary link at angle q, or the slider s = q along its guide."""
+        def inner(leg, q, psi):
+            """The inner joint of a leg: its binary link at angle q, the slider s = q along its guide, or the corner
+            s = q back along the slot from the block's pin."""
             if group.leg_guides[leg] is not None:
                 origin, u, _ = _guide(scene, group.leg_guides[leg], points, angles)
                 return origin + q * u
+            if group.leg_slots[leg] is not None:
+                return points[group.joints[2 * leg]] - q * expi(psi + mpf(group.leg_slots[leg]))
             return points[group.joints[2 * leg]] + mpf(group.lengths[leg]) * expi(q)
 
         def residual(qa, qb, qc, psi):
-            b = inner(0, qa)
-            return b + bd * expi(psi) - inner(1, qb), b + corner_f * expi(psi) - inner(2, qc)
+            b = inner(0, qa, psi)
+            return b + bd * expi(psi) - inner(1, qb, psi), b + corner_f * expi(psi) - inner(2, qc, psi)
 
         def outputs(qa, qb, qc, psi):
             turned = {la: qa, lb: qb, lc: qc, lt: psi}
             for leg in group.sliding_legs:
                 turned[group.links[leg]] = _guide(scene, group.leg_guides[leg], points, angles)[2]
-            return {b_name: inner(0, qa), d_name: inner(1, qb), f_name: inner(2, qc)}, turned
+            found = {b_name: inner(0, qa, psi), d_name: inner(1, qb, psi), f_name: inner(2, qc, psi)}
+            for leg in group.slotted_legs:  # the block turns with the slot; the point under its pin is put after
+                turned[group.links[leg]] = psi + mpf(group.leg_slots[leg])
+                found[group.coincident(leg)] = points[group.joints[2 * leg]]
+            return found, turned
     else:  # pragma: no cover - a new group kind needs its closure written here
         raise NotImplementedError(f"no reference closure for {kind} groups")
     return residual, outputs
@@ -290,7 +297,7 @@ def _corner_f(group, points) -> mpc:
     """
     bd, df, fb = (mpf(x) for x in group.sides)
     near = dict(group.near)
-    b, d, f = (near[name] for name in group.new_joints())
+    b, d, f = (near[name] for name in group.inner_joints)
     turn = 1 if ((d - b).conjugate() * (f - b)).imag > 0 else -1
     cosine = (bd * bd + fb * fb - df * df) / (2 * bd * fb)
     return fb * mpc(cosine, turn * mp.sqrt(1 - cosine * cosine))
@@ -322,7 +329,10 @@ def _first_guess(group, scene, points, angles, near: Mapping[str, complex], near
         legs = [mp.arg(b - a), mp.arg(d - c), mp.arg(f - e)]
         for leg in group.sliding_legs:
             origin, u, _ = _guide(scene, group.leg_guides[leg], points, angles)
-            legs[leg] = mp.re((value(group.new_joints()[leg]) - origin.d0) * mp.conj(u.d0))
+            legs[leg] = mp.re((value(group.inner_joints[leg]) - origin.d0) * mp.conj(u.d0))
+        for leg in group.slotted_legs:  # how far the corner lies back along the slot from the block's pin
+            slot = mp.expj(mp.arg(d - b) + mpf(group.leg_slots[leg]))
+            legs[leg] = mp.re((points[group.joints[2 * leg]].d0 - value(group.inner_joints[leg])) * mp.conj(slot))
         return (*legs, mp.arg(d - b))
     a_name, b_name = group.joints
     origin, u, _ = _guide(scene, group.guide, points, angles)
@@ -404,7 +414,7 @@ def _instant(mechanism, value: float, near: Mapping[str, complex], near_angles: 
         s = Jet(mpf(value), mpf(driver.velocity), mpf(driver.acceleration))
         points[driver.joint] = origin + s * u
         angles[driver.link] = guide_angle
-    lever_points = []
+    under_pins = []
     for step, unit in enumerate(mechanism.units):
         if step > 0:
             group = unit.solver
@@ -414,13 +424,12 @@ def _instant(mechanism, value: float, near: Mapping[str, complex], near_angles: 
             found, turned = outputs(*unknowns)
             points.update(found)
             angles.update(turned)
-            if group.kind == "RPR":
-                lever_points.append((group.new_joints()[0], group.joints[0], group.joints[1], group.links[1]))
+            under_pins += group.coincident_points()
         for spec in unit.points:
             points[spec.name] = _place(spec, mechanism, points, angles)
     result = {name: (jet.d0, jet.d1, jet.d2) for name, jet in points.items()}
-    for name, on, pivot, lever in lever_points:
-        # The lever's material point under the block: rigid with the lever about its pivot.
+    for name, on, pivot, lever in under_pins:
+        # The link's material point under the block: rigid with the link.
         arm = points[on].d0 - points[pivot].d0
         omega, epsilon = angles[lever].d1, angles[lever].d2
         result[name] = (points[on].d0, points[pivot].d1 + 1j * omega * arm,

@@ -195,7 +195,8 @@ def check_rpp(m: Solved, group) -> None:
 
 
 def check_triad(m: Solved, group) -> None:
-    """Each turning leg its length, each sliding leg's pin on its guide, BDF a rigid triangle turning as sketched."""
+    """Each turning leg its length, each sliding leg's pin on its guide, each slotted leg's block's pin on its slot
+    of the ternary link, BDF a rigid triangle turning as sketched."""
     a, b, c, d, e, f = (m.r(name) for name in group.joints)
     legs = list(zip(((a, b), (c, d), (e, f)), group.lengths, zip(group.joints[0::2], group.joints[1::2])))
     for n, ((outer, inner), length, (o_name, i_name)) in enumerate(legs):
@@ -206,6 +207,16 @@ def check_triad(m: Solved, group) -> None:
             assert_small(f"angle of link {slider} − the guide's", wrapped(m.angle(slider) - np.angle(u)), 1.0)
             s = slide_of(m, slider, i_name)
             assert_small(f"{i_name} − (E + s·u)", inner - (origin + s * u), m.size)
+            continue
+        if group.leg_slots[n] is not None:
+            # The slot runs through the inner joint at its angle to BD; the block turns with it.
+            slot = (d - b) / np.abs(d - b) * np.exp(1j * group.leg_slots[n])
+            assert_small(f"{o_name}'s distance from the slot through {i_name}", cross(slot, outer - inner), m.size)
+            block = group.links[n]
+            assert_small(f"angle of link {block} − the slot's", wrapped(m.angle(block) - np.angle(slot)), 1.0)
+            s = slide_of(m, block, o_name)
+            assert_small(f"{o_name} − ({i_name} + s·u)", outer - (inner + s * slot), m.size)
+            assert_small(f"{group.coincident(n)} − {o_name}", m.r(group.coincident(n)) - outer, m.size)
             continue
         assert_small(f"|{o_name}{i_name}| − {length}", np.abs(inner - outer) - length, m.size)
     bd, df, fb = group.sides
@@ -220,7 +231,7 @@ def check_triad(m: Solved, group) -> None:
     *binaries, ternary = group.links
     for n, (link, (o_name, i_name), (outer, inner)) in enumerate(zip(binaries, zip(group.joints[0::2], group.joints[1::2]),
                                                                      ((a, b), (c, d), (e, f)))):
-        if group.leg_guides[n] is not None:
+        if n not in group.turning_legs:
             continue
         assert_small(f"angle of link {link} − direction {o_name}{i_name}", wrapped(m.angle(link) - np.angle(inner - outer)), 1.0)
     assert_small(f"angle of link {ternary} − direction BD", wrapped(m.angle(ternary) - np.angle(d - b)), 1.0)

@@ -15,9 +15,10 @@ tolerance.  A second difference divides rounding by h², so with h = 1e-5 roundi
 ~1e-6 of the scale; accelerations use h = 1e-3 instead (truncation ~h⁴/90·r⁽⁶⁾ ≈ 1e-14,
 rounding ~1e-10).  Tolerances are 1e-6 of the largest magnitude of the same kind over the sample.
 
-A point that an RPR group names after the lever (``A4``: the lever's point under the block) does
-not follow the block's path: its expected motion is the finite difference of the path of the
-lever's material point that lies under the block at the instant.
+A point that an RPR group names after the lever (``A4``: the lever's point under the block), or a
+triad after its ternary link under a block in its slot (``E8``), does not follow the block's path:
+its expected motion is the finite difference of the path of the link's material point that lies
+under the block at the instant.
 
 Besides every fixture, a few variants (below) cover what no fixture has: guides on moving links
 for RRP and RPP, a PRP between two moving links with offsets, a slot that misses its pivot.  The
@@ -93,6 +94,40 @@ lengths = [0.26]
 guides = { K = { link = 4, angle = 60.0 }, L = { angle = 80.0 } }
 sides = [0.15, 0.17, 0.18]
 near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
+""",
+    # The leg at G a block pinned to the coupler at E, sliding in a slot of the ternary link 8 through G.
+    "ratchet+triad-slot": """
+[[groups]]
+kind = "triad"
+links = [5, 6, 7, 8]
+joints = ["E", "G", "S4", "K", "C", "L"]
+lengths = [0.17, 0.18]
+slots = { G = { angle = -77.0 } }
+sides = [0.15, 0.17, 0.18]
+near = { G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }
+""",
+    # The same slot, and slider 7 on the rocking link 4: a slot and a guide, both with a Coriolis term.
+    "ratchet+triad-slot-and-guide": """
+[[groups]]
+kind = "triad"
+links = [5, 6, 7, 8]
+joints = ["E", "G", "S4", "K", "C", "L"]
+lengths = [0.17]
+slots = { G = { angle = -77.0 } }
+guides = { L = { link = 4, angle = 120.0 } }
+sides = [0.15, 0.17, 0.18]
+near = { G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }
+""",
+    # Two slots in the ternary link: the blocks pinned at E (on the coupler) and at S4 (on the rocker).
+    "ratchet+triad-two-slots": """
+[[groups]]
+kind = "triad"
+links = [5, 6, 7, 8]
+joints = ["E", "G", "S4", "K", "C", "L"]
+lengths = [0.18]
+slots = { G = { angle = -77.0 }, K = { angle = 120.0 } }
+sides = [0.15, 0.17, 0.18]
+near = { G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }
 """,
     # All three legs sliding: slider 5 on the coupler 3 through E, slider 6 on the rocker 4, slider 7 on the frame.
     "ratchet+triad-three-sliders": """
@@ -178,9 +213,10 @@ def sample(scene, which: str) -> np.ndarray:
 
 
 def coincident_points(scene) -> dict[str, int]:
-    """Points an RPR group names after its lever (``A4``), with the lever's number."""
+    """Points a group names after a link under a block (an RPR's ``A4``, a triad's slot's ``E8``), with the link's
+    number."""
     mechanism = build(scene)
-    return {group.coincident: group.links[1] for group in mechanism.groups if group.kind == "RPR"}
+    return {name: link for group in mechanism.groups for name, _, _, link in group.coincident_points()}
 
 
 def complex_of(xy: np.ndarray) -> np.ndarray:

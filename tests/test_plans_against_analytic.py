@@ -70,6 +70,10 @@ _OFF_LINE_POINT = {
     "ratchet+triad-slider-on-rocker": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
     "ratchet+triad-two-sliders": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
     "ratchet+triad-three-sliders": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
+    "ratchet+triad-slot": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
+    "ratchet+triad-slot-and-guide": 'M8 = { link = 8, from = "G", toward = "K", at = 0.05, offset = 0.04 }',
+    # A point of the ternary link placed toward the block's pin along the slot.
+    "ratchet+triad-two-slots": 'M8 = { link = 8, from = "G", toward = "E", at = 0.05, offset = 0.04 }',
 }
 _HUNG_ON_THE_RATCHET = {name: (GROUPS_ON_THE_RATCHET[name], point) for name, point in _OFF_LINE_POINT.items()}
 _HUNG_ON_THE_RATCHET["ratchet+RPR-moving-pivot-offset"] = ("""

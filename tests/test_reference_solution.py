@@ -123,6 +123,9 @@ def _lines(scene, mechanism):
             lines.append((group.joints[0], group.joints[1], group.links[1], 0.0, group.offset))
         elif group.kind == "triad":
             lines += [(group.new_joints()[n], *guide_of(group.leg_guides[n]), 0.0) for n in group.sliding_legs]
+            # A slot turns with the ternary link (its reference line BD) and runs through the leg's inner joint.
+            lines += [(group.joints[2 * n], group.joints[2 * n + 1], group.ternary, group.leg_slots[n], 0.0)
+                      for n in group.slotted_legs]
     return lines
 
 

@@ -194,6 +194,11 @@ class Group:
         """For each of the group's links, the joints fixed on it."""
         raise NotImplementedError
 
+    def coincident_points(self) -> tuple[tuple[str, str, str, int], ...]:
+        """The points the group names after a link under another link's pin (``A4``), each as (name, the pin, a
+        point of that link, the link): such a point has no path of its own, it moves rigidly with its link."""
+        return ()
+
     def sliding_points(self) -> dict[int, dict[str, complex]]:
         """For each link carrying a slide, the sliding joint and the slide's
         direction in the link's own frame (a unit complex)."""

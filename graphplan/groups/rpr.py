@@ -53,6 +53,9 @@ class RPR(Group):
     def known_joints(self) -> tuple[str, ...]:
         return self.joints
 
+    def coincident_points(self) -> tuple[tuple[str, str, str, int], ...]:
+        return ((self.coincident, self.joints[0], self.joints[1], self.links[1]),)
+
     def new_joints(self) -> tuple[str, ...]:
         return (self.coincident,)
 

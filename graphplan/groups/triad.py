@@ -8,7 +8,9 @@ are the corners of the ternary (base) link t:
 Any leg may slide instead of turning: such a binary link is a slider pivoted on the ternary link
 at its inner joint (F) and moving along a guide through its outer joint (E), on the frame or on
 an earlier link; its closure is F on that line.  Each inner joint so moves on a track
-at every instant, a circle about its outer joint or the guide's line.
+at every instant, a circle about its outer joint or the guide's line.  Or a leg's block, pinned at
+its outer joint (A), slides in a slot of the ternary link through its inner joint (B): the slot
+turns with the link, and its closure is A on the slot's line.
 
 No closed form places the triad, so its pose q = (B, ψ), ψ the direction of BD, is found
 numerically.  At the reference position every assembly is found (the inner joint of a turning leg
@@ -24,9 +26,10 @@ The plans cannot cross two lines at B, D or F, each of which has three unknowns.
 special point Σ of the ternary link can be: it lies where two legs' lines cross, so that B's
 velocity relative to A and Σ's relative to B are both square to AB where the leg AB turns, and
 D's velocity relative to the guide and Σ's relative to D both along the guide where the leg CD
-slides and Σ is on the guide's normal at D.  Then F follows from Σ and E by crossing two lines
-(square to EF, or along the guide where that leg slides), and B and D by similarity.  The force
-analysis takes the whole group's moments about Σ likewise.
+slides and Σ is on the guide's normal at D, or relative to the pin A along the slot where Σ is on the
+slot's normal at A.  Then F follows from Σ and E by crossing two lines (square to EF, or along the
+guide where that leg slides; where it is slotted, the link's point under its pin), and B and D by
+similarity.  The force analysis takes the whole group's moments about Σ likewise.
 """
 
 from __future__ import annotations
@@ -83,21 +86,36 @@ class TriadBranch:
 @dataclass(frozen=True)
 class Track:
     """Where a leg's inner joint may be at one instant: on the circle of ``radius`` about ``centre`` (the leg's
-    outer joint), or, for a leg that slides, on the guide's line through ``centre`` along unit ``u``."""
+    outer joint), or, for a leg that slides, on the guide's line through ``centre`` along unit ``u``.  For a
+    slotted leg the slot's line, which turns with the ternary link (``slot`` its direction in the link's own
+    frame), must run through ``centre``, the block's pin."""
 
     centre: complex
     radius: float = 0.0
     u: complex | None = None
+    slot: complex | None = None
 
-    def closure(self, point, size: float):
+    def along(self, rotation):
+        """The line's direction with the ternary link turned by ``rotation`` (e^{iψ}); None for a circle."""
+        return self.u if self.slot is None else self.slot * rotation
+
+    def closure(self, point, size: float, rotation=1.0):
         """Zero where ``point`` is on the track: |P − O|² − r², or size·(u × (P − O)); both in m²."""
-        if self.u is None:
+        u = self.along(rotation)
+        if u is None:
             return np.abs(point - self.centre) ** 2 - self.radius * self.radius
-        return size * (np.conj(self.u) * (point - self.centre)).imag
+        return size * (np.conj(u) * (point - self.centre)).imag
 
-    def gradient(self, point, size: float) -> complex:
+    def gradient(self, point, size: float, rotation=1.0) -> complex:
         """The closure's gradient in ``point``, as a vector."""
-        return 2 * (point - self.centre) if self.u is None else size * 1j * self.u
+        u = self.along(rotation)
+        return 2 * (point - self.centre) if u is None else size * 1j * u
+
+    def turning(self, point, size: float, rotation=1.0) -> float:
+        """The closure's derivative in ψ with ``point`` held: a slot turns with the ternary link."""
+        if self.slot is None:
+            return 0.0
+        return -size * (np.conj(self.slot * rotation) * (point - self.centre)).real
 
 
 @dataclass(frozen=True)
@@ -115,16 +133,20 @@ class Triad(Group):
     near: tuple[tuple[str, complex], ...] = ()
     # Each leg's guide through its outer joint where that leg slides (a, b, c in order), None where it turns.
     leg_guides: tuple[Guide | None, Guide | None, Guide | None] = (None, None, None)
+    # Where a leg's block, pinned at its outer joint, slides in a slot of the ternary link instead: the slot's
+    # angle (rad) from BD, the slot running through that leg's inner joint; None where it does not.
+    leg_slots: tuple[float | None, float | None, float | None] = (None, None, None)
 
     @classmethod
     def read(cls, table: Table, links: tuple[int, ...], joints: tuple[str, ...]) -> Triad:
         inner = (joints[1], joints[3], joints[5])
         leg_guides = _read_sliding_legs(table, joints)
-        turning = [n for n in range(3) if leg_guides[n] is None]
+        leg_slots = _read_slotted_legs(table, joints, leg_guides)
+        turning = [n for n in range(3) if leg_guides[n] is None and leg_slots[n] is None]
         bars = ", ".join(f"l{joints[2 * n]}{joints[2 * n + 1]}" for n in turning)
         raw_lengths = table.raw("lengths", None)
         if isinstance(raw_lengths, list) and len(raw_lengths) != len(turning):
-            sliding = [f"{joints[2 * n]}{joints[2 * n + 1]}" for n in range(3) if leg_guides[n] is not None]
+            sliding = [f"{joints[2 * n]}{joints[2 * n + 1]}" for n in range(3) if n not in turning]
             if not turning:
                 raise SceneError(table.where("lengths"), f"must be left out: the legs {_listed(sliding)} all slide",
                                  raw_lengths)
@@ -161,7 +183,7 @@ class Triad(Group):
                                               f"round the ternary link's corners run")
         table.done()
         return cls(where=table.path, links=links, joints=joints, lengths=tuple(lengths), sides=sides, near=tuple(near),
-                   leg_guides=leg_guides)
+                   leg_guides=leg_guides, leg_slots=leg_slots)
 
     @property
     def label(self) -> str:
@@ -173,17 +195,40 @@ class Triad(Group):
 
     @property
     def turning_legs(self) -> tuple[int, ...]:
-        return tuple(n for n in range(3) if self.leg_guides[n] is None)
+        return tuple(n for n in range(3) if self.leg_guides[n] is None and self.leg_slots[n] is None)
 
     @property
     def sliding_legs(self) -> tuple[int, ...]:
+        """The legs that slide on a guide through their outer joints."""
         return tuple(n for n in range(3) if self.leg_guides[n] is not None)
+
+    @property
+    def slotted_legs(self) -> tuple[int, ...]:
+        """The legs whose blocks, pinned at their outer joints, slide in slots of the ternary link."""
+        return tuple(n for n in range(3) if self.leg_slots[n] is not None)
 
     def known_joints(self) -> tuple[str, ...]:
         return (self.joints[0], self.joints[2], self.joints[4])
 
-    def new_joints(self) -> tuple[str, ...]:
+    @property
+    def inner_joints(self) -> tuple[str, str, str]:
+        """B, D, F: the ternary link's corners."""
         return (self.joints[1], self.joints[3], self.joints[5])
+
+    def new_joints(self) -> tuple[str, ...]:
+        return self.inner_joints + tuple(self.coincident(n) for n in self.slotted_legs)
+
+    def coincident(self, leg: int) -> str:
+        """The ternary link's point under a slotted leg's pin (``E8`` under E on link 8), as textbooks name it."""
+        return f"{self.joints[2 * leg]}{self.ternary}"
+
+    def coincident_points(self) -> tuple[tuple[str, str, str, int], ...]:
+        return tuple((self.coincident(n), self.joints[2 * n], self.joints[2 * n + 1], self.ternary) for n in self.slotted_legs)
+
+    def slot(self, leg: int) -> Guide:
+        """A slotted leg's slot: a guide on the ternary link through the leg's inner joint."""
+        return Guide(where=f"{self.where}.slots.{self.joints[2 * leg + 1]}", link=self.ternary,
+                     through=self.joints[2 * leg + 1], angle=self.leg_slots[leg])  # type: ignore[arg-type]
 
     def guides(self) -> tuple[Guide, ...]:
         return tuple(guide for guide in self.leg_guides if guide is not None)
@@ -195,14 +240,25 @@ class Triad(Group):
         for n in self.sliding_legs:  # a slider carries its pin only: its outer joint is on the guide's link
             _, inner, link = self.arms()[n]
             fixed[link] = (inner,)
+        for n in self.slotted_legs:  # a block carries its pin only: its inner joint is the slot's, on the ternary link
+            outer, _, link = self.arms()[n]
+            fixed[link] = (outer,)
         return fixed
+
+    def sliding_points(self) -> dict[int, dict[str, complex]]:
+        slots = {self.joints[2 * n]: complex(math.cos(self.leg_slots[n]), math.sin(self.leg_slots[n]))  # type: ignore[arg-type]
+                 for n in self.slotted_legs}
+        return {self.ternary: slots} if slots else {}
 
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
         a, b, c, d, e, f = self.joints
         la, lb, lc, lt = self.links
         pairs = [(a, la, None), (b, lt, la), (c, lb, None), (d, lt, lb), (e, lc, None), (f, lt, lc)]
-        for n in reversed(self.sliding_legs):
-            del pairs[2 * n]  # its outer pair slides
+        for n in reversed(range(3)):
+            if n in self.sliding_legs:
+                del pairs[2 * n]  # its outer pair slides
+            elif n in self.slotted_legs:
+                del pairs[2 * n + 1]  # its inner pair slides
         return tuple(pairs)
 
     def arms(self) -> tuple[tuple[str, str, int], ...]:
@@ -216,9 +272,14 @@ class Triad(Group):
         return tuple((self.arms()[n][2], self.leg_guides[n]) for n in self.sliding_legs)  # type: ignore[misc]
 
     def sliding_pairs(self, mechanism) -> tuple[tuple[int, int, str], ...]:
-        """Each sliding leg's slider on its guide."""
-        return tuple((self.arms()[n][2], guide_link(mechanism, self.leg_guides[n]), self.arms()[n][1])  # type: ignore[arg-type]
-                     for n in self.sliding_legs)
+        """Each sliding leg's slider on its guide, each slotted leg's block in its slot, in the order of the legs."""
+        pairs = []
+        for n, (outer, inner, link) in enumerate(self.arms()):
+            if n in self.sliding_legs:
+                pairs.append((link, guide_link(mechanism, self.leg_guides[n]), inner))  # type: ignore[arg-type]
+            elif n in self.slotted_legs:
+                pairs.append((link, self.ternary, outer))
+        return tuple(pairs)
 
     # The position: the pose of the ternary link.
 
@@ -241,16 +302,23 @@ class Triad(Group):
         """The group's size (m): the scale of its closure's residuals."""
         return sum(self.lengths) + sum(self.sides)
 
+    @property
+    def _turns_round(self) -> bool:
+        """Whether the assemblies are found by turning the ternary link round rather than sweeping a leg's circle:
+        where no leg turns, or a slot, which turns with the link, makes no fixed track."""
+        return not self.turning_legs or bool(self.slotted_legs)
+
     def assemblies(self, tracks: tuple[Track, Track, Track], turn: int) -> list[Pose]:
         """Every pose of the ternary link that puts each inner joint on its track.
 
         The first turning leg's inner joint is swept round its circle, the next leg's found on its
         track at its distance from the first, the third corner follows from the triangle; the
-        roots of the third leg's closure are the assemblies.  Where all three legs slide, the
-        ternary link is turned round instead: at each turn the first pin is where its guide meets
-        the second's, carried back by the side between them.
+        roots of the third leg's closure are the assemblies.  Where all three legs slide, or one
+        slides in a slot of the ternary link, the ternary link is turned round instead: at each
+        turn each leg keeps B on a circle or a line (its track carried back by B's side to its
+        corner), and B is where the first two meet.
         """
-        first, second, third = self.turning_legs + self.sliding_legs
+        first, second, third = self.turning_legs + self.sliding_legs + self.slotted_legs
         local = self.local_corners(turn)
         theta = np.linspace(0.0, 2 * math.pi, _SWEEP + 1)
 
@@ -262,22 +330,23 @@ class Triad(Group):
             return p, (q - p) / (local[second] - local[first])
 
         def turned(angle, sign):
-            """The ternary link turned to e^{iψ} = e^{i·angle}, and the first pin where its guide meets the second's
-            guide carried back by the side between the pins (NaN where the guides are parallel)."""
+            """The ternary link turned to e^{iψ} = e^{i·angle}, and the first pin where B's two tracks by the first two
+            legs meet, carried back to the first corner (NaN where they do not meet)."""
             rotation = np.exp(1j * angle)
-            one, other = tracks[first], tracks[second]
-            gap = other.centre - (local[second] - local[first]) * rotation - one.centre
-            with np.errstate(divide="ignore", invalid="ignore"):
-                along = (np.conj(gap) * other.u).imag / (np.conj(one.u) * other.u).imag
-            return one.centre + along * one.u, rotation
+            one, other = (_carried_back(tracks[n], local[n] * rotation, rotation) for n in (first, second))
+            return _meet(one, other, sign) + local[first] * rotation, rotation
 
-        placed, signs = (around, (1, -1)) if self.turning_legs else (turned, (1,))
+        if self._turns_round:
+            circles = sum(tracks[n].radius > 0 for n in (first, second))
+            placed, signs = turned, ((1, -1) if circles else (1,))
+        else:
+            placed, signs = around, (1, -1)
 
         def closing(angle, sign):
             """The third leg's closure, with B and the ternary link's turn e^{iψ}."""
             p, rotation = placed(angle, sign)
             corner = p + (local[third] - local[first]) * rotation
-            return tracks[third].closure(corner, self.size), p - local[first] * rotation, rotation
+            return tracks[third].closure(corner, self.size, rotation), p - local[first] * rotation, rotation
 
         from scipy.optimize import brentq  # imported here, as in _settle: only a triad needs it
 
@@ -302,7 +371,7 @@ class Triad(Group):
         """
         tracks = self._tracks_at(context, 0)
         near = dict(self.near)
-        sketch = [near[name] for name in self.new_joints()]
+        sketch = [near[name] for name in self.inner_joints]
         turn = 1 if ((sketch[1] - sketch[0]).conjugate() * (sketch[2] - sketch[0])).imag > 0 else -1
         candidates = self.assemblies(tracks, turn)
         from_sketch = self._settle(Pose(sketch[0], math.atan2(*reversed(_xy(sketch[1] - sketch[0])))), tracks, turn)
@@ -328,7 +397,12 @@ class Triad(Group):
     def _why_not(self, tracks: tuple[Track, Track, Track], walking: bool = False) -> str:
         names = self.known_joints()
         legs = []
+        b, d = self.inner_joints[:2]
         for (outer, inner, _), track in zip(self.arms(), tracks):
+            if track.slot is not None:
+                legs.append(f"{outer} slides in the slot through {inner} at "
+                            f"{math.degrees(math.atan2(track.slot.imag, track.slot.real)):.6g}° to {b}{d}")
+                continue
             legs.append(f"{outer}{inner} = {track.radius:g} m" if track.u is None else
                         f"{inner} slides on the guide through {outer} at "
                         f"{math.degrees(math.atan2(track.u.imag, track.u.real)):.6g}°")
@@ -338,19 +412,21 @@ class Triad(Group):
         if walking:
             return (f"the ternary link {self.ternary} cannot follow its assembly from the position before: "
                     f"the triad reaches a limit position on the way {where}")
-        sweep = f"a sweep of {self.arms()[self.turning_legs[0]][1]} round its circle" if self.turning_legs else \
-            f"a turn of the ternary link {self.ternary}"
+        sweep = f"a turn of the ternary link {self.ternary}" if self._turns_round else \
+            f"a sweep of {self.arms()[self.turning_legs[0]][1]} round its circle"
         return (f"neither the sketch (near) nor {sweep} finds a pose of the ternary "
-                f"link {self.ternary} that closes on the tracks of {', '.join(self.new_joints())} {where}")
+                f"link {self.ternary} that closes on the tracks of {', '.join(self.inner_joints)} {where}")
 
     def _residual(self, q: np.ndarray, tracks: tuple[Track, Track, Track], turn: int):
         """The closure and its Jacobian in q = (Bx, By, ψ)."""
         b = complex(q[0], q[1])
+        rotation = complex(math.cos(q[2]), math.sin(q[2]))
         rows, values = [], []
         for track, point in zip(tracks, self.corners(Pose(b, float(q[2])), turn)):
-            gradient = track.gradient(point, self.size)
-            values.append(track.closure(point, self.size))
-            rows.append([gradient.real, gradient.imag, (gradient.conjugate() * 1j * (point - b)).real])
+            gradient = track.gradient(point, self.size, rotation)
+            values.append(track.closure(point, self.size, rotation))
+            rows.append([gradient.real, gradient.imag,
+                         (gradient.conjugate() * 1j * (point - b)).real + track.turning(point, self.size, rotation)])
         return np.array(values), np.array(rows)
 
     def _tracks(self, context: Context) -> tuple[list[Track], ...]:
@@ -359,8 +435,12 @@ class Triad(Group):
         tracks = []
         for n, (outer, _, _) in enumerate(self.arms()):
             centre = np.broadcast_to(np.asarray(context.point(outer).r, dtype=complex), (count,))
-            if self.leg_guides[n] is None:
+            if n in self.turning_legs:
                 tracks.append([Track(complex(c), self.lengths[n]) for c in centre])
+                continue
+            if self.leg_slots[n] is not None:
+                slot = complex(math.cos(self.leg_slots[n]), math.sin(self.leg_slots[n]))  # type: ignore[arg-type]
+                tracks.append([Track(complex(c), slot=slot) for c in centre])
                 continue
             guide = context.guide(self.leg_guides[n])
             u = np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))
@@ -411,22 +491,31 @@ class Triad(Group):
         toward_d = np.exp(1j * np.array([pose.psi for pose in poses]))
         inner = tuple(b + corner * toward_d for corner in self.local_corners(branch.turn))
         guides = [None if guide is None else context.guide(guide) for guide in self.leg_guides]
+        slots = [None if angle is None else toward_d * complex(math.cos(angle), math.sin(angle)) for angle in self.leg_slots]
         # Each leg's closure differentiated, row k: nₖ·vB + (nₖ·i(Pₖ − B))·ω = nₖ·v₀ₖ with nₖ the arm Pₖ − Oₖ of a
         # turning leg (v₀ its outer joint's velocity), or the guide's normal iu of a sliding leg (v₀ the velocity
-        # of the guide's point under its slider); the same rows for aB, ε.
+        # of the guide's point under its slider); the same rows for aB, ε.  A slotted leg's row is the slot's
+        # normal iu at the ternary link's point Pₖ under the block's pin, v₀ the pin's velocity: the block
+        # moves along the slot only.
+        outers = [context.point(outer_name) for outer_name, _, _ in self.arms()]
+        contacts = [np.broadcast_to(outer.r, (count,)) if slot is not None else point
+                    for outer, point, slot in zip(outers, inner, slots)]
         normals, base_v, base_a = [], [], []
-        for (outer_name, _, _), point, guide in zip(self.arms(), inner, guides):
-            outer = context.point(outer_name)
-            if guide is None:
+        for outer, point, guide, slot in zip(outers, inner, guides, slots):
+            if slot is not None:
+                normals.append(1j * slot)
+                base_v.append(np.broadcast_to(outer.v, (count,)))
+                base_a.append(np.broadcast_to(outer.a, (count,)))
+            elif guide is None:
                 normals.append(np.broadcast_to(point - outer.r, (count,)))
                 base_v.append(np.broadcast_to(outer.v, (count,)))
                 base_a.append(np.broadcast_to(outer.a, (count,)))
-                continue
-            carried_v, carried_a = guide.carried(point)
-            normals.append(np.broadcast_to(1j * guide.u, (count,)))
-            base_v.append(np.broadcast_to(carried_v, (count,)))
-            base_a.append(np.broadcast_to(carried_a, (count,)))
-        swings = [1j * (point - b) for point in inner]
+            else:
+                carried_v, carried_a = guide.carried(point)
+                normals.append(np.broadcast_to(1j * guide.u, (count,)))
+                base_v.append(np.broadcast_to(carried_v, (count,)))
+                base_a.append(np.broadcast_to(carried_a, (count,)))
+        swings = [1j * (contact - b) for contact in contacts]
         jacobian = np.empty((count, 3, 3))
         for k, (normal, swing) in enumerate(zip(normals, swings)):
             jacobian[:, k, 0] = normal.real
@@ -450,25 +539,40 @@ class Triad(Group):
         x = np.linalg.solve(safe, velocity_rhs[..., None])[..., 0]
         x[bad] = np.nan
         v_b, omega = x[:, 0] + 1j * x[:, 1], x[:, 2]
-        v_inner = [v_b + 1j * omega * (point - b) for point in inner]
+        v_contact = [v_b + 1j * omega * (contact - b) for contact in contacts]
         # Differentiated again, with aPₖ = aB + (iε − ω²)(Pₖ − B): a turning leg's row is armₖ·aPₖ = armₖ·a₀ₖ −
-        # |vPₖ − v₀ₖ|²; a sliding leg's iu·aPₖ = iu·(a₀ₖ + 2ωg × v_rel), its relative acceleration along u.
+        # |vPₖ − v₀ₖ|²; a sliding leg's iu·aPₖ = iu·(a₀ₖ + 2ωg × v_rel), its relative acceleration along u; a
+        # slotted leg's the same with the ternary link's ω, the slot's own link.
         rhs = []
-        for normal, v0, a0, vp, point, guide in zip(normals, base_v, base_a, v_inner, inner, guides):
-            known = dot(normal, a0) - np.abs(vp - v0) ** 2 if guide is None else \
-                dot(normal, a0 + 2j * guide.omega * (vp - v0))
-            rhs.append(known + omega ** 2 * dot(normal, point - b))
+        for n, (normal, v0, a0, vp, contact) in enumerate(zip(normals, base_v, base_a, v_contact, contacts)):
+            if n in self.turning_legs:
+                known = dot(normal, a0) - np.abs(vp - v0) ** 2
+            else:
+                carrier_omega = omega if slots[n] is not None else guides[n].omega  # type: ignore[union-attr]
+                known = dot(normal, a0 + 2j * carrier_omega * (vp - v0))
+            rhs.append(known + omega ** 2 * dot(normal, contact - b))
         y = np.linalg.solve(safe, np.stack(rhs, axis=1)[..., None])[..., 0]
         y[bad] = np.nan
         a_b, epsilon = y[:, 0] + 1j * y[:, 1], y[:, 2]
         whirl = 1j * epsilon - omega ** 2
+        v_inner = [v_b + 1j * omega * (point - b) for point in inner]
         a_inner = [a_b + whirl * (point - b) for point in inner]
-        points = {name: PointMotion(r, v, a) for name, r, v, a in zip(self.new_joints(), inner, v_inner, a_inner)}
+        points = {name: PointMotion(r, v, a) for name, r, v, a in zip(self.inner_joints, inner, v_inner, a_inner)}
         links = {self.ternary: LinkMotion(self.joints[1], toward_d, np.angle(toward_d), omega, epsilon)}
         slides = []
-        for n, ((outer_name, inner_name, link), vp, ap, point, guide) in enumerate(zip(self.arms(), v_inner, a_inner,
-                                                                                        inner, guides)):
-            outer = context.point(outer_name)
+        for n, ((outer_name, inner_name, link), vp, ap, point, guide, outer) in enumerate(
+                zip(self.arms(), v_inner, a_inner, inner, guides, outers)):
+            if n in self.slotted_legs:
+                # The block turns with the ternary link; relative to it the pin slides along the slot from B.
+                u = slots[n]
+                under = PointMotion(contacts[n], v_contact[n], a_b + whirl * (contacts[n] - b))
+                points[self.coincident(n)] = under
+                relative_v = outer.v - under.v
+                relative_a = outer.a - under.a - 2j * omega * relative_v
+                links[link] = LinkMotion(outer_name, u, np.angle(u), omega, epsilon)
+                slides.append(SlideMotion(link, self.ternary, outer_name, u, dot(u, contacts[n] - point),
+                                          dot(u, relative_v), dot(u, relative_a)))
+                continue
             if guide is None:
                 arm = point - outer.r
                 u = arm * (1.0 / self.lengths[n])
@@ -487,20 +591,25 @@ class Triad(Group):
         arms = self.arms()
         bars = [f"{arms[n][0]}{arms[n][1]}" for n in self.turning_legs]
         pins = [arms[n][1] for n in self.sliding_legs]
+        blocks = [arms[n][0] for n in self.slotted_legs]
         parts = [("the line " if len(bars) == 1 else "the lines ") + _listed(bars)] if bars else []
         if pins:
             parts.append(("the normal to the guide at " if len(pins) == 1 else "the normals to the guides at ") + _listed(pins))
+        if blocks:
+            parts.append(("the normal to the slot at " if len(blocks) == 1 else "the normals to the slots at ") + _listed(blocks))
         return " and ".join(parts)
 
     # The plans: Assur's special point Σ, then F, then B and D by similarity.
 
     def lines_through_sigma(self, board: Builder | ForceBoard) -> tuple[Line, Line, Line]:
-        """Each leg's line through its inner joint on which Σ may lie: a turning leg's own line (AB), a sliding
-        leg's guide's normal at its pin."""
+        """Each leg's line on which Σ may lie: a turning leg's own line (AB), a sliding leg's guide's normal at its
+        pin, a slotted leg's slot's normal at the block's pin."""
         lines = []
-        for (outer, inner, _), guide in zip(self.arms(), self.leg_guides):
+        for n, ((outer, inner, _), guide) in enumerate(zip(self.arms(), self.leg_guides)):
             at = board.positions[inner]
-            if guide is None:
+            if n in self.slotted_legs:
+                lines.append(Line(board.positions[outer], 1j * board.guide_line(self.slot(n))[1], f"⊥ slot at {outer}"))
+            elif guide is None:
                 lines.append(Line(at, at - board.positions[outer], f"{outer}{inner}"))
             else:
                 lines.append(Line(at, 1j * board.guide_line(guide)[1], f"⊥ guide at {inner}"))
@@ -530,12 +639,74 @@ class Triad(Group):
         Σ's motion along it."""
         outer, inner, _ = self.arms()[n]
         guide = self.leg_guides[n]
+        if n in self.slotted_legs:  # the slot's line carries the block's sliding: it names the pin, on Σ's normal
+            return DrawnLine(start, board.guide_line(self.slot(n))[1],
+                             LineMeaning("slot", points=(outer,), link=self.ternary)), f"{sigma_name}{outer}"
         if guide is None:
             return DrawnLine(start, 1j * (board.positions[inner] - board.positions[outer]),
                              LineMeaning("perpendicular", (outer, inner))), f"{sigma_name}{outer}"
         # The guide's line carries the pin's sliding: it names the pin, whose normal Σ lies on.
         _, u, carrier = board.guide_line(guide)
         return DrawnLine(start, u, replace(guide_meaning(guide), points=(inner,))), f"{sigma_name}{inner}{carrier}"
+
+    def _block_slides(self, board: Builder, n: int, under: str, end: str) -> None:
+        """Put slotted leg ``n``'s block on the plan by its pin: it turns with the ternary link, and slides relative to
+        it as the vector from ``under`` (the image of the link's point under the pin) to ``end``."""
+        outer, _, block = self.arms()[n]
+        board.on_link(block, board.positions[outer], board.images[outer])
+        board.turns_with[block] = self.ternary
+        board.slides(block, under, end)
+
+    def _slot_velocity(self, board: Builder, n: int, pivot: tuple[str, str, complex]) -> None:
+        """vE8 = vΣ + vE8Σ (⊥ ΣE) = vE + vE8E (∥ slot): the ternary link's point under slotted leg ``n``'s pin."""
+        outer = self.arms()[n][0]
+        under, (pivot_name, pivot_letter, pivot_position) = self.coincident(n), pivot
+        where = board.positions[outer]
+        across = 1j * (where - pivot_position)
+        u = board.guide_line(self.slot(n))[1]
+        pin = board.images[outer]
+        value, angle = board.cross(Line(board.points[pivot_letter], across, f"⊥{pivot_name}{outer}"),
+                                   Line(board.points[pin], u, f"∥ slot {self.ternary}"))
+        fixed = board.fix(under, value)
+        self._block_slides(board, n, fixed, pin)
+        board.step(Step(
+            equation=f"v{under} = v{pivot_name} + v{under}{pivot_name} = v{outer} + v{under}{outer}",
+            vectors=(LaidVector(pivot_letter, fixed, f"v{under}{pivot_name}"), LaidVector(pin, fixed, f"v{under}{outer}"),
+                     LaidVector("p", fixed, f"v{under}")),
+            lines=(DrawnLine(pivot_letter, across, LineMeaning("perpendicular", (pivot_name, under))),
+                   DrawnLine(pin, u, LineMeaning("slot", link=self.ternary))),
+            fixes=(fixed,), crossing_deg=angle))
+
+    def _slot_acceleration(self, board: Builder, velocities: Plan, n: int, pivot: tuple[str, str, complex, float, str],
+                           turning: bool) -> None:
+        """aE8 = aΣ + aE8Σⁿ + aE8Σ^τ (⊥ ΣE) = aE + aE8Eᵏ + aE8E^r (∥ slot): the ternary link's point under slotted
+        leg ``n``'s pin, the Coriolis part 2ω × vE8E (the block turns with the link) only where the link is
+        ``turning``."""
+        outer, _, block = self.arms()[n]
+        under, (pivot_name, pivot_letter, pivot_position, omega, normal_letter) = self.coincident(n), pivot
+        where = board.positions[outer]
+        across = 1j * (where - pivot_position)
+        u = board.guide_line(self.slot(n))[1]
+        pin = board.images[outer]
+        normal = board.mark(normal_letter, board.points[pivot_letter] - omega ** 2 * (where - pivot_position))
+        kink = coriolis_end(board, velocities, under, block, self.ternary, pin) if turning else pin
+        value, angle = board.cross(Line(board.points[normal], across, f"⊥{pivot_name}{outer}"),
+                                   Line(board.points[kink], u, f"∥ slot {self.ternary}"))
+        fixed = board.fix(under, value)
+        self._block_slides(board, n, fixed, kink)
+        laid = [LaidVector(pivot_letter, normal, f"a{under}{pivot_name}ⁿ"), LaidVector(normal, fixed, f"a{under}{pivot_name}^τ")]
+        coriolis_term = ""
+        if turning:
+            laid.append(LaidVector(pin, kink, f"a{under}{outer}ᵏ"))
+            coriolis_term = f" + a{under}{outer}ᵏ"
+        laid += [LaidVector(kink, fixed, f"a{under}{outer}^r"), LaidVector("p", fixed, f"a{under}")]
+        board.step(Step(
+            equation=f"a{under} = a{pivot_name} + a{under}{pivot_name}ⁿ + a{under}{pivot_name}^τ = a{outer}{coriolis_term} + "
+                     f"a{under}{outer}^r",
+            vectors=tuple(laid),
+            lines=(DrawnLine(normal, across, LineMeaning("perpendicular", (pivot_name, under))),
+                   DrawnLine(kink, u, LineMeaning("slot", link=self.ternary))),
+            fixes=(normal, *((kink,) if turning else ()), fixed), crossing_deg=angle))
 
     def construct_velocity(self, board: Builder) -> None:
         """vΣ = vA + vΣA (⊥ AB) = vC + vΣC (⊥ CD), or vD4 + vΣD4 (∥ guide) where D slides; vF = vΣ + vFΣ (⊥ ΣF) =
@@ -558,7 +729,9 @@ class Triad(Group):
             vectors=tuple(LaidVector(line.through, sigma, f"v{relative}") for line, (_, relative) in zip(drawn, terms)),
             lines=tuple(drawn), fixes=(sigma,), crossing_deg=angle))
         ok, nk, lk = arms[k]
-        if self.leg_guides[k] is not None:
+        if k in self.slotted_legs:
+            self._slot_velocity(board, k, (sigma_name, sigma, sigma_pos))
+        elif self.leg_guides[k] is not None:
             velocity_on_guide(board, nk, (sigma_name, sigma, sigma_pos), self.leg_guides[k], lk)
         else:
             velocity_from_two_pivots(board, nk, positions[nk], (sigma_name, sigma, sigma_pos),
@@ -566,6 +739,14 @@ class Triad(Group):
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
         for n in (i, j):  # ωa and ωb are read off the relative velocities that end at b and d; a slider's sliding too
             outer, inner, link = arms[n]
+            if n in self.slotted_legs:
+                under, u = self.coincident(n), board.guide_line(self.slot(n))[1]
+                start, end = board.images[outer], board.images[under]
+                self._block_slides(board, n, end, start)
+                board.step(Step(equation=f"v{under} = v{outer} + v{under}{outer}",
+                                vectors=(LaidVector(start, end, f"v{under}{outer}"),),
+                                lines=(DrawnLine(start, u, LineMeaning("slot", link=self.ternary)),)))
+                continue
             if n in on_guide:
                 start, under = on_guide[n]
                 end = board.images[inner]
@@ -593,7 +774,16 @@ class Triad(Group):
         ends, vectors, lines, terms = [], [], [], []
         for n, prime in ((i, ""), (j, "′")):
             outer, inner, link = arms[n]
-            if n in on_guide:
+            contact, contact_name = positions[inner], inner
+            if n in self.slotted_legs:  # aΣ = aE + aE8Eᵏ + aΣE8ⁿ + (∥ slot): E8 slides along the slot relative to E
+                contact, contact_name = positions[outer], self.coincident(n)
+                arm_end, known = board.images[outer], f"a{outer}"
+                if link in coriolis_sliders:
+                    arm_end = coriolis_end(board, velocities, contact_name, link, t, board.images[outer])
+                    vectors.append(LaidVector(board.images[outer], arm_end, f"a{contact_name}{outer}ᵏ"))
+                    known += f" + a{contact_name}{outer}ᵏ"
+                    kinks[n] = arm_end
+            elif n in on_guide:
                 start, under = on_guide[n]
                 arm_end, known = start, f"a{under}"
                 if link in coriolis_sliders:
@@ -608,12 +798,12 @@ class Triad(Group):
                 arm_end = board.mark(f"n{link}", board.points[image] - whirl * (positions[inner] - positions[outer]))
                 vectors.append(LaidVector(image, arm_end, f"a{inner}{outer}ⁿ"))
                 known = f"a{outer} + a{inner}{outer}ⁿ"
-            end = board.mark(f"n{t}{prime}", board.points[arm_end] - whirl_t * (sigma_pos - positions[inner]))
+            end = board.mark(f"n{t}{prime}", board.points[arm_end] - whirl_t * (sigma_pos - contact))
             line, relative = self._plan_line_to_sigma(board, n, end, sigma_name)
-            vectors.append(LaidVector(arm_end, end, f"a{sigma_name}{inner}ⁿ"))
+            vectors.append(LaidVector(arm_end, end, f"a{sigma_name}{contact_name}ⁿ"))
             ends.append(end)
             lines.append(line)
-            terms.append((f"{known} + a{sigma_name}{inner}ⁿ", f"a{relative}^τ"))
+            terms.append((f"{known} + a{sigma_name}{contact_name}ⁿ", f"a{relative}^τ"))
         value, angle = board.cross(*(Line(board.points[line.through], line.direction, line.meaning) for line in lines))
         sigma = board.mark(sigma_name.lower(), value)
         vectors += [LaidVector(end, sigma, tangential) for end, (_, tangential) in zip(ends, terms)]
@@ -621,7 +811,10 @@ class Triad(Group):
             equation=f"a{sigma_name} = {' + '.join(terms[0])} = {' + '.join(terms[1])}",
             vectors=tuple(vectors), lines=tuple(lines), fixes=(*kinks.values(), *ends, sigma), crossing_deg=angle))
         ok, nk, lk = arms[k]
-        if self.leg_guides[k] is not None:
+        if k in self.slotted_legs:
+            self._slot_acceleration(board, velocities, k, (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
+                                    lk in coriolis_sliders)
+        elif self.leg_guides[k] is not None:
             acceleration_on_guide(board, velocities, nk, (sigma_name, sigma, sigma_pos, velocities.rates[t], f"n{t}″"),
                                   self.leg_guides[k], lk, lk in coriolis_sliders)
         else:
@@ -630,6 +823,17 @@ class Triad(Group):
         self._by_similarity(board, sigma_pos, sigma, (i, j, k))
         for n in (i, j):  # εa and εb are read off the tangential parts that end at b and d; a slider's sliding too
             outer, inner, link = arms[n]
+            if n in self.slotted_legs:
+                under, pin = self.coincident(n), board.images[outer]
+                kink, end = kinks.get(n, pin), board.images[under]
+                self._block_slides(board, n, end, kink)
+                laid = [LaidVector(pin, kink, f"a{under}{outer}ᵏ")] if n in kinks else []
+                laid.append(LaidVector(kink, end, f"a{under}{outer}^r"))
+                coriolis_term = f" + a{under}{outer}ᵏ" if n in kinks else ""
+                board.step(Step(equation=f"a{under} = a{outer}{coriolis_term} + a{under}{outer}^r", vectors=tuple(laid),
+                                lines=(DrawnLine(kink, board.guide_line(self.slot(n))[1],
+                                                 LineMeaning("slot", link=t)),)))
+                continue
             if n in on_guide:
                 start, under = on_guide[n]
                 kink = kinks.get(n, start)
@@ -648,24 +852,37 @@ class Triad(Group):
                          LaidVector(f"n{link}", board.images[inner], f"a{inner}{outer}^τ"))))
 
     def _by_similarity(self, board: Builder, sigma_pos: complex, sigma: str, order: tuple[int, int, int]) -> None:
-        """The ternary link's image from σ and the third inner joint; the other two inner joints by similarity."""
+        """The ternary link's image from σ and the point the third leg crossed (its inner joint, or the link's point
+        under a slotted leg's pin); the link's other named points by similarity."""
         i, j, k = order
         arms, t, positions = self.arms(), self.ternary, board.positions
         outer_k, inner_k, link_k = arms[k]
         board.on_link(t, sigma_pos, sigma)
-        board.on_link(t, positions[inner_k], board.images[inner_k])
-        if self.leg_guides[k] is None:  # a slider was put on the plan as its pin's image was crossed
+        if k in self.slotted_legs:
+            board.on_link(t, positions[outer_k], board.images[self.coincident(k)])
+        else:
+            board.on_link(t, positions[inner_k], board.images[inner_k])
+        if k in self.turning_legs:  # a slider was put on the plan as its pin's image was crossed
             board.on_link(link_k, positions[outer_k], board.images[outer_k])
             board.on_link(link_k, positions[inner_k], board.images[inner_k])
         for n in (i, j):
             outer, inner, link = arms[n]
-            pair = board.widest(t)
-            letter = board.fix(inner, board.image_on(t, positions[inner]))
-            board.similarity_step(letter, t, inner, pair)
-            board.on_link(t, positions[inner], letter)
-            if self.leg_guides[n] is None:  # a slider is put on the plan with its sliding, read off after
+            self._similar_on_ternary(board, inner, positions[inner])
+            if n in self.turning_legs:  # a slider is put on the plan with its sliding, read off after
                 board.on_link(link, positions[outer], board.images[outer])
-                board.on_link(link, positions[inner], letter)
+                board.on_link(link, positions[inner], board.images[inner])
+        # The slot's own corner, and the link's points under the blocks' pins whose sliding is read off after.
+        rest = [(inner_k, positions[inner_k])] if k in self.slotted_legs else []
+        rest += [(self.coincident(n), positions[arms[n][0]]) for n in (i, j) if n in self.slotted_legs]
+        for name, where in rest:
+            self._similar_on_ternary(board, name, where)
+
+    def _similar_on_ternary(self, board: Builder, name: str, where: complex) -> None:
+        t = self.ternary
+        pair = board.widest(t)
+        letter = board.fix(name, board.image_on(t, where))
+        board.similarity_step(letter, t, name, pair)
+        board.on_link(t, where, letter)
 
     # The forces: the group cut free, moments about each inner joint and about Assur's point.
 
@@ -683,6 +900,15 @@ class Triad(Group):
         names, across, along, tau, unknown, acts_at = {}, {}, {}, {}, {}, {}
         for n, (outer, inner, link) in enumerate(arms):
             guide = self.leg_guides[n]
+            if n in self.slotted_legs:
+                source = board.source_of(outer, link)
+                names[n] = (f"R{source}{link}", source)
+                u = board.guide_line(self.slot(n))[1]
+                # The slot takes no force along it: along the slot the pin's reaction balances the block's loads.
+                across[n], along[n] = u, 1j * u
+                tau[n] = board.solve_projection(link, f"{names[n][0]}τ", u)
+                unknown[n], acts_at[n] = f"{names[n][0]}n", positions[outer]
+                continue
             if guide is not None:
                 _, u, carrier = board.guide_line(guide)
                 names[n] = (f"R{carrier}{link}", carrier)
@@ -749,6 +975,13 @@ class Triad(Group):
                 board.hand_back(board.react(name, outer, source, link, outer_force[n]))
         for n in (i, j, k):
             outer, inner, link = arms[n]
+            if n in self.slotted_legs:
+                # The slot's reaction on the block, square to the slot, acts x along it from the pin: R·x balances
+                # the block's loads' moment about the pin.
+                couple = board.couple(link, outer, f"R{t}{link}·x")
+                offset = couple / cross(across[n], on_binary[n]) if abs(on_binary[n]) > 0 else 0.0
+                board.react(f"R{t}{link}", outer, t, link, on_binary[n], offset)
+                continue
             board.react(f"R{link}{t}", inner, link, t, -on_binary[n])
         board.finish_group(self.label, self.links, polygon.record())
 
@@ -780,6 +1013,32 @@ def _read_sliding_legs(table: Table, joints: tuple[str, ...]) -> tuple[Guide | N
     return legs[0], legs[1], legs[2]
 
 
+def _read_slotted_legs(table: Table, joints: tuple[str, ...], leg_guides) -> tuple[float | None, float | None, float | None]:
+    """Each leg whose block, pinned at its outer joint, slides in a slot of the ternary link (``slots = { B = {
+    angle = 30.0 } }``, by its inner joint, through which the slot runs): the slot's angle from BD (rad)."""
+    legs: list[float | None] = [None, None, None]
+    slots = table.table("slots", None)
+    if slots is None:
+        return None, None, None
+    inner = (joints[1], joints[3], joints[5])
+    names = list(slots.data)
+    if not names:
+        raise SceneError(slots.path, f"must name the legs whose blocks slide in slots of the ternary link by their "
+                                     f"inner joints ({', '.join(inner)})", names)
+    for name in names:
+        if name not in inner:
+            raise SceneError(slots.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
+        leg = inner.index(name)
+        if leg_guides[leg] is not None:
+            raise SceneError(slots.where(name), f"the leg {joints[2 * leg]}{name} already slides on a guide through "
+                                                f"{joints[2 * leg]} (guides.{name}); a leg slides either on a guide or in "
+                                                f"a slot of the ternary link, not both")
+        spec = slots.table(name)
+        legs[leg] = math.radians(spec.number("angle", 0.0))
+        spec.done()
+    return legs[0], legs[1], legs[2]
+
+
 def _listed(names: list[str]) -> str:
     return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
 
@@ -798,6 +1057,23 @@ def _at_distance(track: Track, point, distance: float, sign: int):
         offset = track.centre - point
         beta = (np.conj(track.u) * offset).real
         return track.centre + (-beta + sign * np.sqrt(beta * beta - np.abs(offset) ** 2 + distance * distance)) * track.u
+
+
+def _carried_back(track: Track, offset, rotation) -> Track:
+    """Where B must be for the corner ``offset`` from it (B's side to the corner, turned) to be on ``track``."""
+    return Track(track.centre - offset, track.radius, track.along(rotation))
+
+
+def _meet(one: Track, other: Track, sign: int):
+    """Where two tracks (circles or lines, arrays of them) meet: one of a circle's two meetings by ``sign``, NaN
+    where they do not meet."""
+    if one.u is None:
+        return _at_distance(other, one.centre, one.radius, sign)
+    if other.u is None:
+        return _at_distance(one, other.centre, other.radius, sign)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        along = (np.conj(other.centre - one.centre) * other.u).imag / (np.conj(one.u) * other.u).imag
+    return one.centre + along * one.u
 
 
 def _xy(z: complex) -> tuple[float, float]:

@@ -41,7 +41,7 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
-from ..forces import ForcePlan, GroupForces, MomentEquation, PolygonVector
+from ..forces import ForcePlan, GroupForces, MomentEquation, PolygonVector, ProjectionEquation
 from ..geometry import Line
 from ..joint_friction import FrictionPair
 from ..kinematics import at
@@ -283,6 +283,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                           text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}")))]
+    caption += [line for equation in group.projections if (line := _projection(sheet, equation))]
     caption += equations
     caption += circle_caption
     if is_driver:
@@ -642,6 +643,17 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
         if abs(segment - equation.arm) <= 1e-9 * segment:
             arm = "".join(sorted((joint, equation.about)))
     return f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {significant(equation.value)} {text['newton']}"
+
+
+def _projection(sheet: ForceSheet, equation: ProjectionEquation) -> str:
+    """``ΣFτ(5): R35τ + G5τ − Fu5τ = 0,  R35τ = 8.7 N``: a block's loads along its slot, each by its part along it;
+    left out where the block has none."""
+    largest = max((abs(value) for _, value in equation.components), default=0.0)
+    parts = [f"{_sign(value)} {name}τ" for name, value in equation.components if abs(value) > NEGLIGIBLE * largest]
+    if not parts:
+        return ""
+    return (f"ΣFτ({equation.link}): {equation.unknown} {' '.join(parts)} = 0,  {equation.unknown} = "
+            f"{significant(equation.value)} {sheet.text['newton']}")
 
 
 def _perpendicular(centre: complex, start: complex, end: complex, unit: complex) -> list[Primitive]:

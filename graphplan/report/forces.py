@@ -288,6 +288,10 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     lines += ["", f"### {text['forces_moment_equations']}", ""]
     metre, newton_metre = text["unit_m"], text["newton_metre"]
     for group in forces.groups:
+        for projection in group.projections:  # a block's pin reaction along its slot, found before the moments
+            terms = ", ".join(f"{name}: {number(value)} {text['newton']}" for name, value in projection.components)
+            lines.append(f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = {number(projection.value)}"
+                         + (f"; {terms}" if terms else ""))
         for equation in group.moments:
             terms = ", ".join(f"{term.name}: {number(term.moment)} {newton_metre}"
                               + (f" (h = {number(term.arm, 4)} {metre})" if term.arm else "")

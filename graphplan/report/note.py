@@ -349,6 +349,9 @@ class _Note:
                 outer, inner = line.along.points
                 names.append(self.t("note_assur_leg_line", line=f"{outer}{inner}"))
                 motions.append(self.t("note_assur_leg_motion", line=f"{outer}{inner}", outer=outer))
+            elif line.along.kind == "slot":
+                names.append(self.t("note_assur_slot_line", pin=line.along.points[0], link=line.along.link))
+                motions.append(self.t("note_assur_slot_motion", pin=line.along.points[0]))
             else:
                 names.append(self.t("note_assur_normal_line", pin=line.along.points[0]))
                 motions.append(self.t("note_assur_normal_motion", pin=line.along.points[0]))
@@ -618,10 +621,10 @@ class _Note:
             for vector in step.vectors:
                 if vector.meaning == "v" + body:
                     relative = abs(pp.velocity.points[vector.end] - pp.velocity.points[vector.start])
-        match = re.search(r"(\d+)$", body)
-        if relative is None or match is None:
+        if relative is None:
             return f"{self.n(value)} {unit}", "—"
-        candidates = [int(match.group(1))] + sorted(pp.velocity.rates)
+        # The link the name ends with (A4A3: the block 3), else one it names (E8E: the slotted link 8), else any.
+        candidates = [int(number) for number in reversed(re.findall(r"\d+", body))] + sorted(pp.velocity.rates)
         link = next((k for k in candidates if k in pp.velocity.rates
                      and math.isclose(2 * abs(pp.velocity.rates[k]) * relative, value, rel_tol=_SAME)), None)
         if link is None:
@@ -893,9 +896,14 @@ class _Note:
         whole = next((equation for equation in group.moments if equation.links), None)
         if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
             closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
-            # A turning leg's unknown is the part along it (R34n); a sliding leg's, its guide's reaction (R14).
+            # A turning leg's unknown is the part along it (R34n); a sliding leg's, its guide's reaction (R14); a
+            # slotted leg's, the part of its pin's reaction square to the slot (its block's loads give the rest).
             key = "note_assur_forces" if all(name.endswith("n") for name in closing) else "note_assur_forces_sliding"
+            if group.projections:
+                key = "note_assur_forces_slot"
             self.para(self.t(key, point=whole.about, unknown=whole.unknown, closing=", ".join(closing)))
+        if group.projections:
+            self.para(self.t("note_slot_projections"), *(f"- {self.projection(equation)}" for equation in group.projections))
         loads = {load.name: load for load in group.loads}
         lines = []
         for equation in group.moments:
@@ -917,6 +925,13 @@ class _Note:
             found = self.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, self.mark)} {text['newton']}"
                               for item in group.found)
             self.para(self.t("note_found", reactions=found))
+
+    def projection(self, equation) -> str:
+        """ΣFτ(5) = R35τ + G5τ + Fu5τ = R35τ − 11.77 + 3.1 = 0 ⇒ R35τ = 8.67 N."""
+        names = "".join(f" + {name}τ" for name, _ in equation.components)
+        values = "".join(f" {'−' if value < 0 else '+'} {self.n(abs(value))}" for _, value in equation.components)
+        return (f"ΣFτ({equation.link}) = {equation.unknown}{names} = {equation.unknown}{values} = 0 ⇒ "
+                f"{equation.unknown} = {self.n(equation.value)} {self.text['newton']}")
 
     def moment_equation(self, equation, loads: Mapping[str, object]) -> str:
         """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h."""
