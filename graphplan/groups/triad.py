@@ -246,9 +246,14 @@ class Triad(Group):
         return fixed
 
     def sliding_points(self) -> dict[int, dict[str, complex]]:
-        slots = {self.joints[2 * n]: complex(math.cos(self.leg_slots[n]), math.sin(self.leg_slots[n]))  # type: ignore[arg-type]
-                 for n in self.slotted_legs}
+        slots = {self.joints[2 * n]: self.slot_direction(n) for n in self.slotted_legs}
         return {self.ternary: slots} if slots else {}
+
+    def slot_direction(self, leg: int) -> complex:
+        """A slotted leg's slot's direction in the ternary link's own frame (BD along +x)."""
+        angle = self.leg_slots[leg]
+        assert angle is not None, f"the leg {leg} has no slot"
+        return complex(math.cos(angle), math.sin(angle))
 
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
         a, b, c, d, e, f = self.joints
@@ -439,8 +444,7 @@ class Triad(Group):
                 tracks.append([Track(complex(c), self.lengths[n]) for c in centre])
                 continue
             if self.leg_slots[n] is not None:
-                slot = complex(math.cos(self.leg_slots[n]), math.sin(self.leg_slots[n]))  # type: ignore[arg-type]
-                tracks.append([Track(complex(c), slot=slot) for c in centre])
+                tracks.append([Track(complex(c), slot=self.slot_direction(n)) for c in centre])
                 continue
             guide = context.guide(self.leg_guides[n])
             u = np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))
@@ -491,7 +495,7 @@ class Triad(Group):
         toward_d = np.exp(1j * np.array([pose.psi for pose in poses]))
         inner = tuple(b + corner * toward_d for corner in self.local_corners(branch.turn))
         guides = [None if guide is None else context.guide(guide) for guide in self.leg_guides]
-        slots = [None if angle is None else toward_d * complex(math.cos(angle), math.sin(angle)) for angle in self.leg_slots]
+        slots = [toward_d * self.slot_direction(n) if n in self.slotted_legs else None for n in range(3)]
         # Each leg's closure differentiated, row k: nₖ·vB + (nₖ·i(Pₖ − B))·ω = nₖ·v₀ₖ with nₖ the arm Pₖ − Oₖ of a
         # turning leg (v₀ its outer joint's velocity), or the guide's normal iu of a sliding leg (v₀ the velocity
         # of the guide's point under its slider); the same rows for aB, ε.  A slotted leg's row is the slot's
@@ -986,30 +990,35 @@ class Triad(Group):
         board.finish_group(self.label, self.links, polygon.record())
 
 
+def _legs_in(table: Table, key: str, joints: tuple[str, ...], what: str) -> list[tuple[int, str, Table]]:
+    """The legs a table under ``key`` names by their inner joints (``{ F = { … } }``), each as (leg, inner joint,
+    its table); none where the key is left out.  ``what`` says what the named legs do, for the message."""
+    legs = table.table(key, None)
+    if legs is None:
+        return []
+    inner = (joints[1], joints[3], joints[5])
+    names = list(legs.data)
+    if not names:
+        raise SceneError(legs.path, f"must name the legs {what} by their inner joints ({', '.join(inner)})", names)
+    for name in names:
+        if name not in inner:
+            raise SceneError(legs.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
+    return [(inner.index(name), name, legs.table(name)) for name in names]
+
+
 def _read_sliding_legs(table: Table, joints: tuple[str, ...]) -> tuple[Guide | None, Guide | None, Guide | None]:
     """Each leg's guide, through that leg's outer joint, where it slides (``guides = { F = { angle = 0 } }``, by
     its inner joint); None where it turns."""
     legs: list[Guide | None] = [None, None, None]
-    guides = table.table("guides", None)
-    if guides is None:
-        return None, None, None
-    inner = (joints[1], joints[3], joints[5])
-    names = list(guides.data)
-    if not names:
-        raise SceneError(guides.path, f"must name the legs that slide by their inner joints ({', '.join(inner)})", names)
-    for name in names:
-        if name not in inner:
-            raise SceneError(guides.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
-        leg = inner.index(name)
+    for leg, name, spec in _legs_in(table, "guides", joints, "that slide"):
         outer = joints[2 * leg]
-        spec = guides.table(name)
         if spec.has("through"):
             raise SceneError(spec.where("through"), f"the guide of the sliding leg {outer}{name} runs through its "
                                                     f"outer joint {outer}: place {outer} where the guide should pass")
         link = spec.integer("link", None, minimum=1)
         angle = math.radians(spec.number("angle", 0.0))
         spec.done()
-        legs[leg] = Guide(where=guides.where(name), link=link, through=outer, angle=angle)
+        legs[leg] = Guide(where=spec.path, link=link, through=outer, angle=angle)
     return legs[0], legs[1], legs[2]
 
 
@@ -1017,23 +1026,11 @@ def _read_slotted_legs(table: Table, joints: tuple[str, ...], leg_guides) -> tup
     """Each leg whose block, pinned at its outer joint, slides in a slot of the ternary link (``slots = { B = {
     angle = 30.0 } }``, by its inner joint, through which the slot runs): the slot's angle from BD (rad)."""
     legs: list[float | None] = [None, None, None]
-    slots = table.table("slots", None)
-    if slots is None:
-        return None, None, None
-    inner = (joints[1], joints[3], joints[5])
-    names = list(slots.data)
-    if not names:
-        raise SceneError(slots.path, f"must name the legs whose blocks slide in slots of the ternary link by their "
-                                     f"inner joints ({', '.join(inner)})", names)
-    for name in names:
-        if name not in inner:
-            raise SceneError(slots.where(name), f"must name an inner joint of the triad: {', '.join(inner)}")
-        leg = inner.index(name)
+    for leg, name, spec in _legs_in(table, "slots", joints, "whose blocks slide in slots of the ternary link"):
         if leg_guides[leg] is not None:
-            raise SceneError(slots.where(name), f"the leg {joints[2 * leg]}{name} already slides on a guide through "
-                                                f"{joints[2 * leg]} (guides.{name}); a leg slides either on a guide or in "
-                                                f"a slot of the ternary link, not both")
-        spec = slots.table(name)
+            raise SceneError(spec.path, f"the leg {joints[2 * leg]}{name} already slides on a guide through "
+                                        f"{joints[2 * leg]} (guides.{name}); a leg slides either on a guide or in "
+                                        f"a slot of the ternary link, not both")
         legs[leg] = math.radians(spec.number("angle", 0.0))
         spec.done()
     return legs[0], legs[1], legs[2]
