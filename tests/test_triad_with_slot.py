@@ -30,6 +30,7 @@ from graphplan.groups.triad import Track
 from graphplan.kinematics import cross
 from graphplan.loads import activity, link_loads, plan_state
 from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.report.forces import markdown as forces_markdown
 from graphplan.report.note import note_markdown
 
 SLOT = "ratchet+triad-slot"
@@ -242,7 +243,11 @@ def test_a_slotted_leg_has_no_length(tmp_path, capsys):
 
 
 def test_the_note_says_why_assurs_point_is_on_the_slots_normal():
-    text = note_markdown(analyse(dataclasses.replace(_loaded_slot(), locale="en")))
+    analysis = analyse(dataclasses.replace(_loaded_slot(), locale="en"))
+    report = forces_markdown(analysis)
+    assert "### Forces along a slot (τ)" in report and "- III(5,6,7,8): ΣFτ(5) = 0 → R35τ = " in report
+    assert report.index("Forces along a slot") < report.index("### Moment equations")
+    text = note_markdown(analysis)
     assert "the normal at E to the slot of link 8 in which the block pinned there slides" in text
     assert "moves along the slot relative to E" in text
     assert "2·ω8·VE8E" in text

@@ -285,13 +285,15 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     lines = [f"## {text['position_heading'].format(number=plan.number)}", "",
              f"### {text['forces_initial_data']}", "", *initial_data_lines(analysis, plan), ""]
     lines += external_load_lines(analysis, plan)
+    # A block's pin reaction along its slot, found from the block's forces before the moments.
+    projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = {number(projection.value)}"
+                   + "".join(f"; {name}: {number(value)} {text['newton']}" for name, value in projection.components)
+                   for group in forces.groups for projection in group.projections]
+    if projections:
+        lines += ["", f"### {text['forces_projections']}", "", *projections]
     lines += ["", f"### {text['forces_moment_equations']}", ""]
     metre, newton_metre = text["unit_m"], text["newton_metre"]
     for group in forces.groups:
-        for projection in group.projections:  # a block's pin reaction along its slot, found before the moments
-            terms = ", ".join(f"{name}: {number(value)} {text['newton']}" for name, value in projection.components)
-            lines.append(f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = {number(projection.value)}"
-                         + (f"; {terms}" if terms else ""))
         for equation in group.moments:
             terms = ", ".join(f"{term.name}: {number(term.moment)} {newton_metre}"
                               + (f" (h = {number(term.arm, 4)} {metre})" if term.arm else "")
