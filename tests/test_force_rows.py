@@ -104,6 +104,22 @@ def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_
     assert rows.unheld(fits) == {}
 
 
+@pytest.mark.parametrize("height", [120.0, 140.0])
+def test_only_a_drawing_with_no_room_for_a_heading_stands_without_one(height):
+    """After a group too tall for a heading, the driver and its polygon fit on one sheet only without a heading:
+    they stand under headings in more parts instead, and the first heading is the sheet's, the rest continued."""
+    rows = Rows([[box("body", 100.0, 300.0), box("polygon", 150.0, 100.0)],
+                 [box("driver", 100.0, height), box("driver-polygon", 100.0, height)]], HEADING)
+    fits = within(180.0, 330.0)
+    parts = rows.parts(fits)
+    assert parts is not None and all(fits(*size(part)) for part in parts)
+    assert [name for part in parts for name in part.fields] == ["body", "polygon", "driver", "driver-polygon"]
+    headless = [list(part.fields) for part in parts if not heading_of(part)]
+    assert headless == [["body"]]
+    titles = [" ".join(heading_of(part)) for part in parts if heading_of(part)]
+    assert titles[0] == HEADING.part_title and set(titles[1:]) == {HEADING.continued}
+
+
 def test_a_drawing_no_sheet_holds_even_alone_is_named_with_its_size():
     rows = Rows([[box("body", 100.0, 500.0), box("polygon", 50.0, 50.0)]], HEADING)
     fits = within(180.0, 330.0)

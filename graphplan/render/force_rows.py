@@ -170,8 +170,9 @@ class Rows:
         return Rows([[drawing] for row in self.drawings for drawing in row], self.heading)
 
     def _parts(self, fits: Fits, headless: bool = False) -> list[Arrangement] | None:
-        """:meth:`parts` with the rows as they are; a part that fits under no heading stands without one
-        where ``headless``."""
+        """:meth:`parts` with the rows as they are; where ``headless``, a row that fits under no heading stands
+        alone without one (rows that fit only so together stand apart under their headings instead: a part
+        without a heading is for a drawing that has no room for one, not a way to save a sheet)."""
         heading = self.heading
         count = len(self)
         for title in (heading.title, heading.part_title):
@@ -182,7 +183,7 @@ class Rows:
 
         def best(start: int, stop: int) -> tuple[float, Shape, str] | None:
             if (start, stop) not in best_of:
-                titles = (self._title_of(start), HEADLESS) if headless else (self._title_of(start),)
+                titles = (self._title_of(start), HEADLESS) if headless and stop == start + 1 else (self._title_of(start),)
                 best_of[start, stop] = next(((*found, title) for title in titles
                                              for found in [self._least(start, stop, fits, title)] if found), None)
             return best_of[start, stop]
