@@ -13,6 +13,7 @@ another order, the assemblies, the scene's mistakes and the note.
 from __future__ import annotations
 
 import dataclasses
+import re
 from pathlib import Path
 
 import numpy as np
@@ -260,3 +261,42 @@ def test_the_sliding_pairs_are_named_in_the_order_of_the_motions_slides():
     named = [pair for group in mechanism.groups for pair in group.sliding_pairs(mechanism)]
     assert named == [(slide.slider, slide.guide, slide.joint) for slide in graphplan.solve(scene).slides] \
         == [(5, 8, "E"), (7, 4, "L")]
+
+
+def test_a_block_pinned_to_the_frame_reads_its_sliding_once_by_its_own_name():
+    """The block of the leg CL is pinned at the frame point C: its pin's image is the pole, so the sliding vector
+    vC8C starts there, yet it is relative, not C's own velocity; the error table reads it once, by that name."""
+    group = _HUNG_ON_THE_RATCHET[SLOT].replace("lengths = [0.17, 0.18]", "lengths = [0.26, 0.17]") \
+        .replace("slots = { G = { angle = -77.0 } }", "slots = { L = { angle = 120.0 } }")
+    analysis = analyse(_hung_on_the_ratchet(group)())
+    motion = analysis.motion
+    (slide,) = motion.slides
+    assert (slide.slider, slide.guide, slide.joint) == (7, 8, "C")
+    for plan in analysis.plans:
+        names = [row.quantity for row in plan.errors if row.source == "construction"]
+        assert len(names) == len(set(names))
+        assert {"VC8C", "aC8C^r"} <= set(names) and not [name for name in names if "CC8" in name]
+        index = plan.index
+        (velocity,) = [row for row in plan.errors if row.quantity == "VC8C" and row.source == "construction"]
+        (acceleration,) = [row for row in plan.errors if row.quantity == "aC8C^r" and row.source == "construction"]
+        assert velocity.plan == pytest.approx(abs(slide.velocity[index]), rel=1e-9)
+        assert acceleration.plan == pytest.approx(abs(slide.acceleration[index]), rel=1e-9)
+
+
+def test_the_triad_starter_s_advice_on_a_slot_runs(tmp_path):
+    """The starter scene says how to turn its leg EF into a block in a slot: done as it says, the scene runs, its
+    plans exact."""
+    from importlib import resources
+
+    text = resources.files("graphplan").joinpath("templates", "triad.toml").read_text(encoding="utf-8")
+    comment = " ".join(line.lstrip("# ") for line in text.splitlines() if line.startswith("#"))
+    (angle,) = re.findall(r"`slots = \{ F = \{ angle = ([-\d.]+) \} \}`", comment)
+    assert '`centre = "E"` under [links.5], S5 left out' in comment
+    text = text.replace("lengths = [0.135, 0.108, 0.189]", f"lengths = [0.135, 0.108]\nslots   = {{ F = {{ angle = {angle} }} }}")
+    text = re.sub(r"\nS5 = .*\n", "\n", text).replace('centre  = "S5"', 'centre  = "E"')
+    scene = tmp_path / "slot.toml"
+    scene.write_text(text, encoding="utf-8")
+    analysis = analyse(graphplan.load(scene))
+    assert [(s.slider, s.guide, s.joint) for s in analysis.motion.slides] == [(5, 6, "E")]
+    rows = [row for row in analysis.errors if row.source == "construction"]
+    assert rows and max(abs(row.percent) for row in rows) < 1e-9
