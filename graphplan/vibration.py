@@ -78,14 +78,15 @@ def unbalance_magnification(r: ArrayLike, zeta: ArrayLike) -> Scalar:
     then turns about the common centre of mass.  Infinite at r = 1 with ζ = 0.
     """
     ratio, damping = _ratio_and_damping(r, zeta)
-    with np.errstate(divide="ignore"):
+    # At resonance with next to no damping the response is infinite, or too large for a float: inf either way.
+    with np.errstate(divide="ignore", over="ignore"):
         return _out(ratio * ratio / _denominator(ratio, damping))
 
 
 def force_magnification(r: ArrayLike, zeta: ArrayLike) -> Scalar:
     """X·k / F0 = 1 / √((1 − r²)² + (2ζr)²): the response to a force of constant amplitude F0 over its static one."""
     ratio, damping = _ratio_and_damping(r, zeta)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):
         return _out(1.0 / _denominator(ratio, damping))
 
 

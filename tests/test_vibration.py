@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
@@ -413,3 +414,10 @@ def test_damping_from_a_lag_measured_on_the_integrated_motion():
 def test_a_lag_that_says_nothing_of_the_damping_is_refused(r, lag, message):
     with pytest.raises(ValueError, match=message):
         damping_from_phase(r, lag)
+
+
+def test_next_to_no_damping_at_resonance_is_an_infinite_response_without_a_warning():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert unbalance_magnification(1.0, 1e-310) == math.inf
+        assert force_magnification(1.0, 1e-310) == math.inf
