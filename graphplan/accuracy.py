@@ -297,7 +297,7 @@ def diagram(case: Case, refinement: int) -> Row:
     grid = diagram_grid(case, refinement)
     step = float(grid[1] - grid[0])
     periodic = driver.cyclic
-    levers = [point for group in mechanism.groups for point in group.coincident_points()]
+    under_pins = [point for group in mechanism.groups for point in group.coincident_points()]
 
     def differentiate():
         motion = solve(mechanism, grid, case.positions.reference)
@@ -314,7 +314,7 @@ def diagram(case: Case, refinement: int) -> Row:
             if not periodic:
                 second = _second_at_ends(second, np.unwrap(np.asarray(motion.link(number).angle, dtype=float)), step)
             omega[number], epsilon[number] = rate * first, rate * rate * second + rate_rate * first
-        for name, on, pivot, lever in levers:
+        for name, on, pivot, lever in under_pins:
             # A link's point under a block is no path of its own: it moves rigidly with the link.
             arm = (motion.point(on).r @ (1, 1j)) - (motion.point(pivot).r @ (1, 1j))
             v[name] = v[pivot] + 1j * omega[lever] * arm
