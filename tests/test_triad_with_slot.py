@@ -300,3 +300,27 @@ def test_the_triad_starter_s_advice_on_a_slot_runs(tmp_path):
     assert [(s.slider, s.guide, s.joint) for s in analysis.motion.slides] == [(5, 6, "E")]
     rows = [row for row in analysis.errors if row.source == "construction"]
     assert rows and max(abs(row.percent) for row in rows) < 1e-9
+
+
+def test_newtons_jacobian_is_the_derivative_of_the_closure_with_a_slot():
+    """The slot turns with the ternary link, so its closure depends on ψ beyond its corner's motion: the
+    Jacobian Newton's method is given must be the closure's derivative, checked by central differences."""
+    mechanism = graphplan.build(CASES["ratchet+triad-slot-and-guide"]())
+    (_, triad) = mechanism.groups
+    motion = graphplan.solve(CASES["ratchet+triad-slot-and-guide"](), driver=[0.0])
+
+    def at(name: str) -> complex:
+        return complex(*motion.point(name).r[0])
+
+    guide = np.exp(1j * (motion.link(4).angle[0] + np.radians(120.0)))
+    tracks = (Track(at("E"), slot=np.exp(1j * SLOT_ANGLE)), Track(at("S4"), 0.17), Track(at("C"), u=guide))
+    rng = np.random.default_rng(7)
+    for _ in range(5):
+        q = np.array([at("G").real, at("G").imag, 0.0]) + rng.normal(scale=[0.05, 0.05, 1.0])
+        _, jacobian = triad._residual(q, tracks, -1)
+        h = 1e-6
+        for column in range(3):
+            step = np.zeros(3)
+            step[column] = h
+            numeric = (triad._residual(q + step, tracks, -1)[0] - triad._residual(q - step, tracks, -1)[0]) / (2 * h)
+            assert np.allclose(jacobian[:, column], numeric, rtol=1e-6, atol=1e-9 * triad.size ** 2), column
