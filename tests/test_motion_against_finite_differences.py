@@ -41,6 +41,18 @@ from graphplan.scene import loads
 FIXTURE_DIR = Path(__file__).resolve().parent.parent / "fixtures"
 FIXTURES = sorted(FIXTURE_DIR.glob("*.toml"))
 
+# The triads hung on the ratchet: links 5–8, their legs from E (on the coupler 3), S4 (on the rocker 4) and the
+# frame point C to the ternary link's corners G, K, L.  Each variant gives its legs' lengths, guides and slots,
+# and which sketch of the corners picks its assembly.
+_SWEPT_SKETCH = "{ G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }"
+_SLOTTED_SKETCH = "{ G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }"
+
+
+def _triad_on_the_ratchet(legs: str, sketch: str = _SWEPT_SKETCH) -> str:
+    return ('\n[[groups]]\nkind = "triad"\nlinks = [5, 6, 7, 8]\njoints = ["E", "G", "S4", "K", "C", "L"]\n'
+            f"{legs}sides = [0.15, 0.17, 0.18]\nnear = {sketch}\n")
+
+
 # Variants of the fixtures for what no fixture has: guides on moving links for RRP, RPP and a triad's
 # sliding leg, a PRP between two moving links with offsets, a slotted lever whose slot misses its pivot.  Each is
 # a fixture's scene with a group added (links 5, 6 hung on the ratchet's rocker 4 and coupler 3)
@@ -73,72 +85,36 @@ offsets = [0.01, -0.02]
 """,
     # A triad whose slider 7 runs on the rocking link 4 (a Coriolis term), its other legs pinned to the
     # coupler 3 at E and to the rocker at S4: links 5–8.
-    "ratchet+triad-slider-on-rocker": """
-[[groups]]
-kind = "triad"
-links = [5, 6, 7, 8]
-joints = ["E", "G", "S4", "K", "C", "L"]
+    "ratchet+triad-slider-on-rocker": _triad_on_the_ratchet("""\
 lengths = [0.26, 0.17]
 guides = { L = { link = 4, angle = 60.0 } }
-sides = [0.15, 0.17, 0.18]
-near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
-""",
+"""),
     # The same triad with two sliding legs: slider 6 on the rocking link 4 (a Coriolis term), slider 7 on a
     # frame guide through C; only the leg EG turns.
-    "ratchet+triad-two-sliders": """
-[[groups]]
-kind = "triad"
-links = [5, 6, 7, 8]
-joints = ["E", "G", "S4", "K", "C", "L"]
+    "ratchet+triad-two-sliders": _triad_on_the_ratchet("""\
 lengths = [0.26]
 guides = { K = { link = 4, angle = 60.0 }, L = { angle = 80.0 } }
-sides = [0.15, 0.17, 0.18]
-near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
-""",
+"""),
     # The leg at G a block pinned to the coupler at E, sliding in a slot of the ternary link 8 through G.
-    "ratchet+triad-slot": """
-[[groups]]
-kind = "triad"
-links = [5, 6, 7, 8]
-joints = ["E", "G", "S4", "K", "C", "L"]
+    "ratchet+triad-slot": _triad_on_the_ratchet("""\
 lengths = [0.17, 0.18]
 slots = { G = { angle = -77.0 } }
-sides = [0.15, 0.17, 0.18]
-near = { G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }
-""",
+""", _SLOTTED_SKETCH),
     # The same slot, and slider 7 on the rocking link 4: a slot and a guide, both with a Coriolis term.
-    "ratchet+triad-slot-and-guide": """
-[[groups]]
-kind = "triad"
-links = [5, 6, 7, 8]
-joints = ["E", "G", "S4", "K", "C", "L"]
+    "ratchet+triad-slot-and-guide": _triad_on_the_ratchet("""\
 lengths = [0.17]
 slots = { G = { angle = -77.0 } }
 guides = { L = { link = 4, angle = 120.0 } }
-sides = [0.15, 0.17, 0.18]
-near = { G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }
-""",
+""", _SLOTTED_SKETCH),
     # Two slots in the ternary link: the blocks pinned at E (on the coupler) and at S4 (on the rocker).
-    "ratchet+triad-two-slots": """
-[[groups]]
-kind = "triad"
-links = [5, 6, 7, 8]
-joints = ["E", "G", "S4", "K", "C", "L"]
+    "ratchet+triad-two-slots": _triad_on_the_ratchet("""\
 lengths = [0.18]
 slots = { G = { angle = -77.0 }, K = { angle = 120.0 } }
-sides = [0.15, 0.17, 0.18]
-near = { G = [-0.16, 0.55], K = [-0.05, 0.45], L = [-0.20, 0.37] }
-""",
+""", _SLOTTED_SKETCH),
     # All three legs sliding: slider 5 on the coupler 3 through E, slider 6 on the rocker 4, slider 7 on the frame.
-    "ratchet+triad-three-sliders": """
-[[groups]]
-kind = "triad"
-links = [5, 6, 7, 8]
-joints = ["E", "G", "S4", "K", "C", "L"]
+    "ratchet+triad-three-sliders": _triad_on_the_ratchet("""\
 guides = { G = { link = 3, angle = 120.0 }, K = { link = 4, angle = 120.0 }, L = { angle = 60.0 } }
-sides = [0.15, 0.17, 0.18]
-near = { G = [-0.58, 0.0], K = [-0.19, 0.54], L = [-0.25, 0.12] }
-""",
+"""),
 }
 
 
@@ -265,7 +241,7 @@ def derivatives(path_v, path_a, h_v: float, h_a: float, rates):
     return qdot * first_v, qdot * qdot * second + qddot * first_a
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def finite_differences(case: str, which: str):
     """Analytic and finite-difference motion of every point, link and slide of one case."""
     scene = CASES[case]()

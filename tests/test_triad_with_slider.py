@@ -47,6 +47,38 @@ def _xy(value) -> complex:
     return complex(value[0], value[1])
 
 
+def plans_at(analysis, index: int):
+    """Position ``index`` of the analysis's motion: its points, its links' directions, and its velocity and
+    acceleration plans constructed afresh."""
+    mechanism = analysis.mechanism
+    where, directions = instant(analysis.motion, index)
+    velocity = velocity_plan(mechanism, where, directions)
+    return where, directions, velocity, acceleration_plan(mechanism, where, directions, velocity)
+
+
+def laid_once(plan, meaning: str) -> complex:
+    """The vector ``meaning`` as ``plan`` lays it: laid, and wherever laid between the same two points."""
+    laid = [vector for step in plan.steps for vector in step.vectors if vector.meaning == meaning]
+    assert laid and len({(vector.start, vector.end) for vector in laid}) == 1, meaning
+    return plan.points[laid[0].end] - plan.points[laid[0].start]
+
+
+def forces_at(analysis, acting, index: int):
+    """Position ``index``'s points and directions, the loads from its plans (``acting`` the scene's loads' activity)
+    and the force analysis drawn from them."""
+    mechanism = analysis.mechanism
+    where, directions, velocity, acceleration = plans_at(analysis, index)
+    applied = link_loads(mechanism, plan_state(mechanism, where, velocity, acceleration), acting[:, index:index + 1])
+    return where, directions, applied, force_plan(mechanism, where, directions, applied)
+
+
+def moment_about(applied, link: int, where, pin: str) -> float:
+    """ΣM of ``link``'s loads among ``applied`` about the point ``pin`` (``where`` the points' positions)."""
+    return sum(float(load.moment) if load.point is None else
+               float(cross(where[load.point] + load.offset - where[pin], complex(load.force)))
+               for load in applied if load.link == link)
+
+
 def test_the_slider_makes_the_triad_a_class_iii_group_with_one_sliding_pair():
     mechanism = graphplan.build(graphplan.load(FIXTURE))
     assert mechanism.structure == "I(1,2) → III3(3,4,5,6)"
@@ -90,16 +122,12 @@ def test_assurs_point_is_where_two_legs_lines_cross_at_the_widest_angle():
 def test_a_slider_on_a_rocking_guide_gets_its_coriolis_component_from_the_plans():
     # The ratchet's variant: slider 7 pinned to the ternary link 8 at L runs on the guide of rocker 4.
     analysis = analyse(CASES["ratchet+triad-slider-on-rocker"]())
-    mechanism, motion = analysis.mechanism, analysis.motion
+    motion = analysis.motion
     checked = 0
     for index in range(motion.count):
-        where, directions = instant(motion, index)
-        velocity = velocity_plan(mechanism, where, directions)
-        acceleration = acceleration_plan(mechanism, where, directions, velocity)
+        _, _, velocity, acceleration = plans_at(analysis, index)
         # Laid once, where L is crossed with the guide, or where Σ is on the guide's normal at L (and read off again).
-        laid = [vector for step in acceleration.steps for vector in step.vectors if vector.meaning == "aLL4ᵏ"]
-        assert laid and len({(vector.start, vector.end) for vector in laid}) == 1
-        drawn = acceleration.points[laid[0].end] - acceleration.points[laid[0].start]
+        drawn = laid_once(acceleration, "aLL4ᵏ")
         # 2·ω4 × v_rel from the analytic motion: ω4 of the rocker, v_rel of L along the guide.
         omega = float(motion.link(4).omega[index])
         (slide,) = [s for s in motion.slides if s.slider == 7]
@@ -128,17 +156,11 @@ def test_the_guides_reaction_is_square_to_it_and_shifted_by_the_sliders_moment()
     acting = activity(mechanism, variant.positions, motion)
     shifted = 0
     for index in range(0, motion.count, 2):
-        where, directions = instant(motion, index)
-        velocity = velocity_plan(mechanism, where, directions)
-        acceleration = acceleration_plan(mechanism, where, directions, velocity)
-        applied = link_loads(mechanism, plan_state(mechanism, where, velocity, acceleration), acting[:, index:index + 1])
-        drawn = force_plan(mechanism, where, directions, applied)
+        where, directions, applied, drawn = forces_at(variant, acting, index)
         normal = drawn.reactions["R47"]
         u = directions[4] * np.exp(1j * np.radians(60.0))
         assert abs((u.conjugate() * normal.force).real) <= 1e-9 * abs(normal.force)
-        turning = sum(float(load.moment) if load.point is None else
-                      float(cross(where[load.point] + load.offset - where["L"], complex(load.force)))
-                      for load in applied if load.link == 7)
+        turning = moment_about(applied, 7, where, "L")
         assert turning != 0.0
         assert cross(normal.offset * u, normal.force) == pytest.approx(-turning, rel=1e-9, abs=1e-12)
         shifted += abs(normal.offset) > 1e-6

@@ -19,31 +19,22 @@ from pathlib import Path
 import numpy as np
 import pytest
 from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET, CASES, _hung_on_the_ratchet
-from test_triad_with_slider import assert_same_triad
+from test_triad_with_slider import assert_same_triad, forces_at, laid_once, moment_about, plans_at
 
 import graphplan
-from graphplan.analysis import analyse, instant
+from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.errors import SceneError
-from graphplan.forces import force_plan
 from graphplan.groups.sliding import coriolis
 from graphplan.groups.triad import Track
 from graphplan.kinematics import cross
-from graphplan.loads import activity, link_loads, plan_state
-from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.loads import activity
 from graphplan.report.forces import markdown as forces_markdown
 from graphplan.report.note import note_markdown
 
 SLOT = "ratchet+triad-slot"
 SLOT_ANGLE = np.radians(-77.0)  # from GK, the ternary link's reference line
 RATCHET = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
-
-
-def _plans(analysis, index: int):
-    mechanism = analysis.mechanism
-    where, directions = instant(analysis.motion, index)
-    velocity = velocity_plan(mechanism, where, directions)
-    return where, directions, velocity, acceleration_plan(mechanism, where, directions, velocity)
 
 
 def _at(motion, name: str) -> np.ndarray:
@@ -78,7 +69,7 @@ def test_assurs_point_is_on_the_slots_normal_and_the_sliding_is_read_off_exactly
     motion = analysis.motion
     on_slot_normal = 0
     for index in range(motion.count):
-        where, directions, velocity, acceleration = _plans(analysis, index)
+        where, directions, velocity, acceleration = plans_at(analysis, index)
         ((_, sigma),) = velocity.auxiliary.items()
         slot = directions[8] * np.exp(1j * SLOT_ANGLE)
         lines = {"E": (where["E"], 1j * slot), "S4K": (where["K"], where["K"] - where["S4"]),
@@ -104,10 +95,8 @@ def test_the_slot_turns_so_the_link_under_the_block_gets_a_coriolis_part():
     motion = analysis.motion
     checked = 0
     for index in range(motion.count):
-        _, _, velocity, acceleration = _plans(analysis, index)
-        laid = [vector for step in acceleration.steps for vector in step.vectors if vector.meaning == "aE8Eᵏ"]
-        assert laid and len({(vector.start, vector.end) for vector in laid}) == 1
-        drawn = acceleration.points[laid[0].end] - acceleration.points[laid[0].start]
+        _, _, velocity, acceleration = plans_at(analysis, index)
+        drawn = laid_once(acceleration, "aE8Eᵏ")
         relative = complex(*motion.point("E8").v[index]) - complex(*motion.point("E").v[index])
         expected = 2j * float(motion.link(8).omega[index]) * relative
         assert abs(drawn - expected) <= 1e-9 * max(abs(expected), 1e-3)
@@ -118,20 +107,17 @@ def test_the_slot_turns_so_the_link_under_the_block_gets_a_coriolis_part():
 
 def test_the_slots_reaction_is_square_to_it_and_the_pins_part_along_it_balances_the_block():
     analysis = analyse(_loaded_slot())
-    mechanism, motion = analysis.mechanism, analysis.motion
-    acting = activity(mechanism, analysis.positions, motion)
+    motion = analysis.motion
+    acting = activity(analysis.mechanism, analysis.positions, motion)
     shifted = 0
     for index in range(0, motion.count, 2):
-        where, directions, velocity, acceleration = _plans(analysis, index)
-        applied = link_loads(mechanism, plan_state(mechanism, where, velocity, acceleration), acting[:, index:index + 1])
-        drawn = force_plan(mechanism, where, directions, applied)
+        where, directions, applied, drawn = forces_at(analysis, acting, index)
         u = directions[8] * np.exp(1j * SLOT_ANGLE)
         on_block = [load for load in applied if load.link == 5]
         slot = drawn.reactions["R85"]
         assert (slot.joint, slot.source, slot.target) == ("E", 8, 5)
         assert abs((np.conj(u) * slot.force).real) <= 1e-9 * abs(slot.force)
-        turning = sum(float(load.moment) if load.point is None else
-                      float(cross(where[load.point] + load.offset - where["E"], complex(load.force))) for load in on_block)
+        turning = moment_about(applied, 5, where, "E")
         assert cross(slot.offset * u, slot.force) == pytest.approx(-turning, rel=1e-9, abs=1e-9)
         shifted += abs(slot.offset) > 1e-6
         # The coupler's pull on the block balances the block's own loads along the slot, as the projection says.

@@ -17,28 +17,19 @@ import numpy as np
 import pytest
 from test_forces_against_statics import loaded
 from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET, CASES, _hung_on_the_ratchet, square_guides
-from test_triad_with_slider import assert_same_triad
+from test_triad_with_slider import assert_same_triad, forces_at, laid_once, moment_about, plans_at
 
 import graphplan
-from graphplan.analysis import analyse, instant
+from graphplan.analysis import analyse
 from graphplan.cli import main
-from graphplan.forces import force_plan
 from graphplan.groups.sliding import coriolis
 from graphplan.groups.triad import Track
 from graphplan.kinematics import cross
-from graphplan.loads import activity, link_loads, plan_state
-from graphplan.plans import acceleration_plan, velocity_plan
+from graphplan.loads import activity
 from graphplan.report.note import note_markdown
 
 VARIANT = "ratchet+triad-two-sliders"
 K_GUIDE, L_GUIDE = 60.0, 80.0  # degrees: K's on link 4 (from its own reference line), L's on the frame
-
-
-def _plans(analysis, index: int):
-    mechanism = analysis.mechanism
-    where, directions = instant(analysis.motion, index)
-    velocity = velocity_plan(mechanism, where, directions)
-    return where, directions, velocity, acceleration_plan(mechanism, where, directions, velocity)
 
 
 def _sine(u: complex, w: complex) -> float:
@@ -74,7 +65,7 @@ def test_assurs_point_is_on_a_guides_normal_where_those_lines_cross_widest():
     analysis = analyse(CASES[VARIANT]())
     motion = analysis.motion
     for index in range(motion.count):
-        where, directions, velocity, _ = _plans(analysis, index)
+        where, directions, velocity, _ = plans_at(analysis, index)
         ((name, sigma),) = velocity.auxiliary.items()
         assert name == "Σ8"
         k_guide = directions[4] * np.exp(1j * np.radians(K_GUIDE))
@@ -114,10 +105,8 @@ def test_the_slider_on_the_rocker_gets_its_coriolis_component():
     motion = analysis.motion
     checked = 0
     for index in range(motion.count):
-        _, _, velocity, acceleration = _plans(analysis, index)
-        laid = [vector for step in acceleration.steps for vector in step.vectors if vector.meaning == "aKK4ᵏ"]
-        assert laid and len({(vector.start, vector.end) for vector in laid}) == 1
-        drawn = acceleration.points[laid[0].end] - acceleration.points[laid[0].start]
+        _, _, velocity, acceleration = plans_at(analysis, index)
+        drawn = laid_once(acceleration, "aKK4ᵏ")
         (slide,) = [s for s in motion.slides if s.slider == 6]
         expected = 2j * float(motion.link(4).omega[index]) * complex(slide.velocity[index] * slide.u[index])
         assert abs(drawn - expected) <= 1e-9 * max(abs(expected), 1e-3)
@@ -130,21 +119,17 @@ def test_the_slider_on_the_rocker_gets_its_coriolis_component():
 
 def test_each_guides_reaction_is_square_to_it_and_shifted_by_its_sliders_moment():
     analysis = analyse(loaded(CASES[VARIANT]()))
-    mechanism, motion = analysis.mechanism, analysis.motion
-    acting = activity(mechanism, analysis.positions, motion)
+    motion = analysis.motion
+    acting = activity(analysis.mechanism, analysis.positions, motion)
     shifted = 0
     for index in range(0, motion.count, 2):
-        where, directions, velocity, acceleration = _plans(analysis, index)
-        applied = link_loads(mechanism, plan_state(mechanism, where, velocity, acceleration), acting[:, index:index + 1])
-        drawn = force_plan(mechanism, where, directions, applied)
+        where, directions, applied, drawn = forces_at(analysis, acting, index)
         for name, slider, pin, u in (("R46", 6, "K", directions[4] * np.exp(1j * np.radians(K_GUIDE))),
                                      ("R17", 7, "L", np.exp(1j * np.radians(L_GUIDE)))):
             normal = drawn.reactions[name]
             assert normal.joint == pin and normal.target == slider
             assert abs((u.conjugate() * normal.force).real) <= 1e-9 * abs(normal.force)
-            turning = sum(float(load.moment) if load.point is None else
-                          float(cross(where[load.point] + load.offset - where[pin], complex(load.force)))
-                          for load in applied if load.link == slider)
+            turning = moment_about(applied, slider, where, pin)
             assert cross(normal.offset * u, normal.force) == pytest.approx(-turning, rel=1e-9, abs=1e-9)
             shifted += abs(normal.offset) > 1e-6
     assert shifted, "the rocking slider's inertia moment never shifted its guide's reaction"
