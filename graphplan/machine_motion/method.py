@@ -1,0 +1,127 @@
+"""The running speed of a machine and the solver its equations call for: stiff or not."""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.integrate import RK45
+from scipy.optimize import brentq
+
+from .drive import REST, Motor, Start
+from .integrator import Equations
+from .shaft import TWO_PI, Machine
+
+# Above this value of (largest decay rate |∂f/∂ω|) × (the step RK45 takes for accuracy) the explicit
+# step would be held by stability instead: Dormand–Prince's RK45 is stable on the negative real
+# axis up to h·|λ| ≈ 3.3.
+STIFFNESS_THRESHOLD = 3.0
+
+
+def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration: float | None = None) -> float:
+    """A scale for the running speed of the shaft, rad/s, where the motor's torque meets the mean resistance.
+
+    Used to judge stiffness and the cycle time; for a constant torque against a resistance that
+    does not grow with speed there is no such speed, and the start's speed (or the speed reached
+    after ``duration`` at the mean surplus torque) stands in.
+    """
+    angles = np.linspace(0.0, TWO_PI, 64, endpoint=False)
+
+    def surplus(omega: float) -> float:
+        return motor.shaft_torque(omega) - float(np.mean([machine.mr(a, omega) for a in angles]))
+
+    tiny = 1e-9
+    top = motor.shaft_no_load_speed
+    if top is not None:
+        if surplus(tiny * top) > 0 > surplus(top):
+            return float(brentq(surplus, tiny * top, top, xtol=1e-12 * top))
+        return top * (1.0 - getattr(motor, "rated_slip", 0.0))
+    given = max(start.omega, start.driving_omega or 0.0)
+    top = max(given, 1.0)
+    for _ in range(30):
+        if surplus(top) < 0:
+            return float(brentq(surplus, 0.0, top, xtol=1e-12 * top)) if surplus(0.0) > 0 else top
+        top *= 2.0
+    inertia = float(np.mean([machine.je(a) for a in angles])) + motor.reduced_inertia
+    reached = given + max(surplus(given), 0.0) / inertia * (duration or 1.0)
+    return max(reached, 1e-3)
+
+
+def is_stiff(stiffness: float) -> bool:
+    """Whether a stiffness number (:func:`choose_method`) calls for an implicit method."""
+    return stiffness > STIFFNESS_THRESHOLD
+
+
+def choose_method(equations: Equations, omega_run: float, rtol: float, atol: float) -> tuple[str, str, float]:
+    """The solver for these equations, the reason in words, and the stiffness number.
+
+    The stiffness number is the largest decay rate ``−∂(dω/dt)/∂ω`` over a turn and over speeds
+    up to the running speed (a steep motor characteristic gives most of it: ``|dMd/dω|/J``),
+    times the step RK45 takes for accuracy near the running speed (:func:`_explicit_step`).
+    Above ``STIFFNESS_THRESHOLD`` stability, not accuracy, would hold the explicit step: LSODA
+    is chosen (it switches to BDF where the problem is stiff and back to Adams where it is not;
+    fastest on the stiff case of ``bench/integrators.py``).  Otherwise RK45, or DOP853 below
+    rtol 1e-8, where its higher order pays.
+    """
+    machine, motor = equations.machine, equations.motor
+    inertia_driving = equations.driving_inertia if equations.clutch is not None else 0.0
+    angles = np.linspace(0.0, TWO_PI, 24, endpoint=False)
+    speeds = omega_run * np.array([0.05, 0.25, 0.5, 0.75, 0.9, 0.97, 1.0, 1.03])
+    on = equations.motor_off_at is None or equations.motor_off_at > 0
+
+    def acceleration(phi: float, omega: float) -> float:
+        drive = motor.shaft_torque(omega) if on else 0.0
+        net = drive - machine.mr(phi, omega) - 0.5 * machine.je_slope(phi) * omega * omega
+        if equations.brake is not None:
+            net -= equations.brake.damping * omega
+        return net / (machine.je(phi) + equations.rotor + inertia_driving)
+
+    decay = 0.0
+    for omega in speeds:
+        h = 1e-6 * max(omega_run, 1e-6)
+        for phi in angles:
+            slope = (acceleration(phi, omega + h) - acceleration(phi, omega - h)) / (2.0 * h)
+            decay = max(decay, -slope)
+    if equations.clutch is not None and on:
+        # While slipping the driving half answers to the motor alone: often the stiffest part.
+        for omega in speeds:
+            h = 1e-6 * max(omega_run, 1e-6)
+            slope = (motor.shaft_torque(omega + h) - motor.shaft_torque(omega - h)) / (2.0 * h)
+            decay = max(decay, -slope / equations.driving_inertia)
+    step = _explicit_step(equations, omega_run, rtol, atol)
+    stiffness = decay * step
+    period = TWO_PI / omega_run
+    scale = (f"largest decay rate |∂f/∂ω| = {decay:.3g} 1/s (time constant {1 / decay:.3g} s) × RK45's step "
+             f"for accuracy {step:.3g} s = {stiffness:.3g}; cycle {period:.3g} s") if decay > 0 else \
+            f"no decaying mode (|∂f/∂ω| = 0); RK45's step for accuracy {step:.3g} s, cycle {period:.3g} s"
+    if is_stiff(stiffness):
+        return "LSODA", (f"auto: stiff, stability would hold the explicit step ({scale} > {STIFFNESS_THRESHOLD}): "
+                         "LSODA"), stiffness
+    method = "DOP853" if rtol < 1e-8 else "RK45"
+    return method, f"auto: not stiff ({scale} ≤ {STIFFNESS_THRESHOLD}): {method}", stiffness
+
+
+def _explicit_step(equations: Equations, omega_run: float, rtol: float, atol: float) -> float:
+    """The step RK45 takes for accuracy alone near the running speed.
+
+    The motor's torque is frozen at its value at the running speed (and a brake left out), so
+    that the step follows what the resistance and the inertia ask, not the stability limit the
+    steep characteristic would impose; a few dozen steps from the running state.
+    """
+    period = TWO_PI / omega_run
+    machine = equations.machine
+    inertia = equations.rotor + (equations.driving_inertia if equations.clutch is not None else 0.0)
+    on = equations.motor_off_at is None or equations.motor_off_at > 0
+    drive = equations.motor.shaft_torque(omega_run) if on else 0.0
+
+    def frozen(t: float, y: np.ndarray) -> np.ndarray:
+        phi, omega = y
+        net = drive - machine.mr(phi, omega) - 0.5 * machine.je_slope(phi) * omega * omega
+        return np.array([omega, net / (machine.je(phi) + inertia)])
+
+    solver = RK45(frozen, 0.0, np.array([0.0, omega_run]), t_bound=50.0 * period, rtol=rtol, atol=atol)
+    steps = []
+    while len(steps) < 40 and solver.status == "running" and solver.t < period:
+        before = solver.t
+        solver.step()
+        steps.append(solver.t - before)
+    tail = steps[len(steps) // 2:] or [period]
+    return float(np.median(tail))

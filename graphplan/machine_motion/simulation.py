@@ -1,0 +1,243 @@
+"""A run of the machine: :func:`simulate` integrates it and returns a :class:`MachineMotion`; two shafts
+joined by a clutch (:func:`engage_clutch`)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy.optimize import brentq
+
+from .cycles import Cycle, SteadyState, find_cycles, find_steady_state
+from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
+from .integrator import MOST_EVALUATIONS, Equations, Integrator
+from .method import choose_method, is_stiff, running_speed
+from .shaft import TWO_PI, Machine
+
+METHODS = ("auto", "RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+
+# The least relative tolerance the solvers take: scipy raises a smaller one to this, with a warning.
+SMALLEST_RTOL = 100 * float(np.finfo(float).eps)
+# With no duration, how many turns' time at the running speed a run waits at most for a steady state.
+MOST_CYCLES = 2000
+
+
+@dataclass(frozen=True, eq=False)
+class MachineMotion:
+    """The integrated motion.
+
+    ``t``, ``phi``, ``omega`` are at the solver's steps (a step is repeated where the state jumps,
+    as when the clutch locks); :meth:`state_at` interpolates between them.  ``driving_omega`` is
+    the clutch's driving half (None without a clutch), ``motor_torque`` the motor's torque on the
+    shaft at the steps, ``slip_energy`` the work lost in the clutch (J).  ``stopped_at`` is when the
+    machine came to rest for good, and ``stalled_at`` the same time when the motor was still on: it
+    could not carry the machine past the resistance there (``phi[-1]``), and the run ends at it.
+    """
+
+    t: np.ndarray
+    phi: np.ndarray
+    omega: np.ndarray
+    driving_omega: np.ndarray | None
+    motor_torque: np.ndarray
+    cycles: tuple[Cycle, ...]
+    steady: SteadyState | None
+    method: str
+    method_reason: str
+    stiffness: float
+    events: tuple[tuple[float, str], ...]
+    stopped_at: float | None
+    stalled_at: float | None
+    slip_energy: float
+    nfev: int
+    njev: int
+    nlu: int
+    notes: tuple[str, ...]
+    _dense: Callable[[np.ndarray], np.ndarray] = field(repr=False)
+
+    @property
+    def stiff(self) -> bool:
+        """Whether stability, not accuracy, would hold an explicit method's step (:func:`choose_method`)."""
+        return is_stiff(self.stiffness)
+
+    @property
+    def stalled_at_angle_deg(self) -> float | None:
+        """Where the machine stalled: the driving shaft's angle within its turn (degrees); None if it did not."""
+        return None if self.stalled_at is None else math.degrees(float(self.phi[-1])) % 360.0
+
+    def state_at(self, times: ArrayLike) -> np.ndarray:
+        """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
+        return self._dense(np.asarray(times, dtype=float))
+
+    def event_time(self, name: str) -> float | None:
+        """The first time the named event happened (``"clutch locked"``, ``"brake on"``, …)."""
+        return next((t for t, text in self.events if text == name), None)
+
+    def start_up_time(self, percent: float = 5.0) -> float | None:
+        """The time after which ω stays within ``percent`` % of ωm around the steady range.
+
+        The band is ``[ωmin − p·ωm, ωmax + p·ωm]`` of the steady state, so that a machine with
+        δ > 0 counts as started once its speed no longer leaves the band of the steady
+        fluctuation widened by ``p``; with δ = 0 it is the usual ``|ω − ωm| ≤ p·ωm``.  None
+        when no steady state was found.
+        """
+        if not percent > 0:
+            raise ValueError(f"percent: must be > 0 (got {percent!r})")
+        if self.steady is None:
+            return None
+        cycle = self.steady.cycle
+        margin = percent / 100.0 * cycle.middle_speed
+        low, high = cycle.min_speed - margin, cycle.max_speed + margin
+        window = self.t <= cycle.start + cycle.period
+        outside = np.flatnonzero(window & ((self.omega < low) | (self.omega > high)))
+        if outside.size == 0:
+            return float(self.t[0])
+        i = outside[-1]
+        if i + 1 >= self.t.size or self.t[i + 1] <= self.t[i]:
+            return float(self.t[min(i + 1, self.t.size - 1)])
+        bound = low if self.omega[i] < low else high
+        return float(brentq(lambda s: self.state_at(s)[1] - bound, self.t[i], self.t[i + 1], xtol=1e-13))
+
+
+def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, start: Start = REST,
+             brake: Brake | None = None, clutch: Clutch | None = None, motor_off_at: float | None = None,
+             method: str = "auto", rtol: float = 1e-6, atol: float | None = None,
+             steady_tolerance: float = 1e-4, max_cycles: int = MOST_CYCLES,
+             max_evaluations: int | None = MOST_EVALUATIONS) -> MachineMotion:
+    """Integrate the machine's motion.
+
+    Parameters
+    ----------
+    machine, motor
+        The machine reduced to its driving shaft and the motor that drives it.
+    duration
+        How long to integrate, s.  None: until the steady state is found (or, with the motor
+        switched off, until the machine stops), at most ``max_cycles`` turns.
+    start
+        The initial state (default: at rest at φ = 0).
+    brake, clutch, motor_off_at
+        A brake, a clutch, and when the motor is switched off (s).
+    method
+        ``"auto"`` (see :func:`choose_method`) or a :func:`scipy.integrate.solve_ivp` method.
+    rtol, atol
+        The solver's tolerances (``atol`` defaults to ``1e-3·rtol`` times the running speed).
+    steady_tolerance
+        How close the cycles must have settled (relative ωm, absolute δ); never below 10·rtol.
+    max_cycles
+        With no duration, how many turns at most; on any run, how many of the last turns are
+        analysed for the cycles and the steady state.
+    max_evaluations
+        How many evaluations of the equation of motion before the run is given up with an
+        :class:`ArithmeticError`; None: no limit (a benchmark of explicit methods on a stiff machine).
+    """
+    if method not in METHODS:
+        raise ValueError(f"method: must be one of {', '.join(METHODS)} (got {method!r})")
+    if not (isinstance(rtol, (int, float)) and SMALLEST_RTOL <= rtol < 1):
+        raise ValueError(f"rtol: must be from {SMALLEST_RTOL:.3g} (100 machine epsilons, the solvers' least) "
+                         f"to below 1 (got {rtol!r})")
+    if duration is not None:
+        require_positive("simulate", "duration", duration)
+    if atol is not None:
+        require_positive("simulate", "atol", atol)
+    if clutch is None and start.driving_omega is not None:
+        raise ValueError("start.driving_omega: only with a clutch")
+    if isinstance(max_cycles, bool) or not isinstance(max_cycles, int) or max_cycles < 3:
+        raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
+    equations = Equations(machine, motor, brake, clutch, motor_off_at)
+    omega_run = running_speed(machine, motor, start, duration)
+    atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)
+    if method == "auto":
+        chosen, reason, stiffness = choose_method(equations, omega_run, rtol, atol)
+    else:
+        _, _, stiffness = choose_method(equations, omega_run, rtol, atol)
+        chosen, reason = method, f"{method}: as asked (stiffness number {stiffness:.3g})"
+    tolerance = max(steady_tolerance, 10.0 * rtol)
+    notes = []
+    integrator = Integrator(equations, start, chosen, rtol, atol, max_evaluations)
+    # A motor too weak to start the machine where it stands: one turn's time at rest shows it.
+    equations.clock = start.time
+    never_starts = equations.motor_on(start.time) and integrator.held_at_rest()
+    cycles: tuple[Cycle, ...] = ()
+    steady = None
+    if duration is not None:
+        integrator.advance(start.time + duration)
+    elif never_starts:
+        integrator.advance(start.time + TWO_PI / omega_run)
+    else:
+        period = TWO_PI / omega_run
+        limit = start.time + max_cycles * period
+        run_down = motor_off_at is not None or brake is not None
+        while True:
+            integrator.advance(min(integrator.t + 20.0 * period, limit))
+            if integrator.finished:
+                break
+            if not run_down:
+                t, y = np.concatenate(integrator.times), np.concatenate(integrator.states, axis=1)
+                cycles = find_cycles(t, y[0], integrator.dense(), limit=max_cycles)
+                if find_steady_state(cycles, tolerance) is not None:
+                    break
+            if integrator.t >= limit:
+                notes.append(f"stopped after {max_cycles} cycles' time ({limit - start.time:.6g} s) "
+                             f"without {'stopping' if run_down else 'a steady state'}")
+                break
+    t = np.concatenate(integrator.times)
+    y = np.concatenate(integrator.states, axis=1)
+    if not np.any(y[1] > 0):
+        notes.append("the machine did not move: the driving torque at rest does not overcome the resistance")
+    dense = integrator.dense()
+    cycles = find_cycles(t, y[0], dense, limit=max_cycles)
+    steady = find_steady_state(cycles, tolerance)
+    speed_row = 2 if clutch is not None else 1
+    torque = np.array([motor.shaft_torque(speed) if equations.motor_on(ti) else 0.0
+                       for ti, speed in zip(t, y[speed_row], strict=True)])
+    slip_energy = clutch.torque * float(y[3, -1]) if clutch is not None else 0.0
+    stops = [when for when, name in integrator.events if name == "stopped"]
+    stopped_at = stops[-1] if stops and y[1, -1] == 0.0 else None
+    stalled_at = start.time if never_starts else (
+        stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else None)
+    return MachineMotion(t=t, phi=y[0], omega=y[1], driving_omega=y[2] if clutch is not None else None,
+                         motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
+                         stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
+                         stalled_at=stalled_at,
+                         slip_energy=slip_energy, nfev=integrator.nfev, njev=integrator.njev, nlu=integrator.nlu,
+                         notes=tuple(notes), _dense=dense)
+
+
+@dataclass(frozen=True)
+class ClutchEngagement:
+    """Two shafts joined by a friction clutch: the speeds, when they lock and the energy lost."""
+
+    motion: MachineMotion
+    lock_time: float | None
+    common_speed: float | None
+    slip_energy: float
+
+
+def engage_clutch(driving_inertia: float, driving_speed: float, driven_inertia: float, driven_speed: float,
+                  clutch_torque: float, *, driving_torque: float = 0.0, driven_torque: float = 0.0,
+                  duration: float | None = None, rtol: float = 1e-9) -> ClutchEngagement:
+    """Two shafts with constant torques on them, joined at t = 0 by a clutch of constant capacity.
+
+    ``driving_torque`` and ``driven_torque`` act on each shaft in its sense of rotation (negative
+    resists).  Integrated by :func:`simulate` (the driven shaft as a machine of constant inertia,
+    the driving one as the clutch's driving half) until the shafts lock and a while after, or
+    for ``duration``.
+    """
+    for name, value in (("driving_inertia", driving_inertia), ("driven_inertia", driven_inertia),
+                        ("clutch_torque", clutch_torque)):
+        require_positive("engage_clutch", name, value)
+    machine = Machine(inertia=driven_inertia, resisting=-driven_torque)
+    clutch = Clutch(torque=clutch_torque, engage_at=0.0, inertia=driving_inertia)
+    if duration is None:
+        # The relative speed closes at a rate of at least Tc·(1/J1 + 1/J2) − |M1|/J1 − |M2|/J2 ...
+        closing = clutch_torque * (1 / driving_inertia + 1 / driven_inertia) \
+            - driving_torque / driving_inertia + driven_torque / driven_inertia
+        gap = abs(driving_speed - driven_speed)
+        duration = 1.2 * gap / abs(closing) if closing != 0 and gap > 0 else 1.0
+    motion = simulate(machine, ConstantTorque(driving_torque), duration=duration, clutch=clutch,
+                      start=Start(omega=driven_speed, driving_omega=driving_speed), method="DOP853", rtol=rtol)
+    lock = motion.event_time("clutch locked")
+    common = float(motion.state_at(lock)[1]) if lock is not None else None
+    return ClutchEngagement(motion=motion, lock_time=lock, common_speed=common, slip_energy=motion.slip_energy)

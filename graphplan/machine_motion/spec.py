@@ -1,0 +1,179 @@
+"""The motion's keys of the scene's ``[dynamics]`` table, read into a :class:`MotionSpec` that runs them."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import SceneError
+from ..reader import Table, check_number
+from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
+from .method import running_speed
+from .shaft import RPM, TWO_PI, Machine
+from .simulation import METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
+
+# The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
+# duration of many more is a slip of the unit, and would hold the run for hours.
+MOST_TURNS = 100_000
+
+
+@dataclass(frozen=True)
+class MotionSpec:
+    """What the scene asks of the machine's motion; :meth:`run` integrates it for a machine."""
+
+    motor: Motor
+    motor_off_at: float | None = None
+    brake: Brake | None = None
+    clutch: Clutch | None = None
+    start: Start = REST
+    duration: float | None = None
+    method: str = "auto"
+    rtol: float = 1e-6
+    steady_tolerance: float = 1e-4
+
+    def run(self, machine: Machine) -> MachineMotion:
+        omega_run = running_speed(machine, self.motor, self.start, self.duration)
+        if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
+            raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
+                             f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
+                             f"{MOST_TURNS} turns")
+        # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
+        # than a run integrates, each resolved step by step: the run would hang rather than fail.
+        fastest = max(self.start.omega, self.start.driving_omega or 0.0)
+        span = self.duration if self.duration is not None else MOST_CYCLES * TWO_PI / omega_run
+        if fastest * span > TWO_PI * MOST_TURNS:
+            raise ValueError(f"start: {fastest:.4g} rad/s is {fastest / omega_run:.3g} times the running speed, "
+                             f"{omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} turns, "
+                             f"and it integrates at most {MOST_TURNS}")
+        return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
+                        clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
+                        steady_tolerance=self.steady_tolerance)
+
+
+def _speed(table: Table, omega_key: str, rpm_key: str, default: Any) -> Any:
+    """A speed given as rad/s under ``omega_key`` or as rev/min under ``rpm_key`` (not both)."""
+    if table.has(omega_key) and table.has(rpm_key):
+        raise SceneError(table.where(rpm_key), f"give either {omega_key} or {rpm_key}, not both")
+    if table.has(rpm_key):
+        return table.number(rpm_key, non_negative=True) * RPM
+    return table.number(omega_key, default, non_negative=True)
+
+
+def _read_motor(table: Table) -> tuple[Motor, float | None]:
+    kind = table.choice("kind", MOTOR_KINDS)
+    drive = {"gear_ratio": table.number("gear_ratio", 1.0, positive=True),
+             "rotor_inertia": table.number("rotor_inertia", 0.0, non_negative=True)}
+    off_at = table.number("off_at", None)
+    if kind == "constant":
+        motor: Motor = ConstantTorque(table.number("torque"), **drive)
+    elif kind == "linear":
+        if table.has("points"):
+            for key in ("stall_torque", "no_load_rpm"):
+                if table.has(key):
+                    raise SceneError(table.where(key), "give either points or stall_torque with no_load_rpm, not both")
+            pairs = table.items("points", length=2)
+            points = []
+            for where, item in pairs:
+                if not isinstance(item, list) or len(item) != 2:
+                    raise SceneError(where, "must be a point [rpm, torque N·m]", item)
+                points.append((check_number(item[0], f"{where}[0]") * RPM, check_number(item[1], f"{where}[1]")))
+            try:
+                motor = LinearMotor.through(points[0], points[1], **drive)
+            except ValueError as error:
+                raise SceneError(table.where("points"), str(error).split(": ", 1)[1]) from None
+        else:
+            motor = LinearMotor(table.number("stall_torque", positive=True),
+                                table.number("no_load_rpm", positive=True) * RPM, **drive)
+    else:
+        power = table.number("power", positive=True)
+        overload = table.number("overload")
+        if not overload > 1:
+            raise SceneError(table.where("overload"), "must be > 1 (it is Mmax/Mrated)", overload)
+        given = [k for k in ("synchronous_rpm", "rated_rpm", "rated_slip") if table.has(k)]
+        if len(given) != 2:
+            raise SceneError(table.path, "give two of synchronous_rpm, rated_rpm, rated_slip "
+                             f"(got {', '.join(given) or 'none'})")
+        synchronous = table.number("synchronous_rpm", None, positive=True)
+        rated = table.number("rated_rpm", None, positive=True)
+        slip = table.number("rated_slip", None)
+        if slip is not None and not 0 < slip < 1:
+            raise SceneError(table.where("rated_slip"), "must be between 0 and 1", slip)
+        if slip is None:
+            if not rated < synchronous:
+                raise SceneError(table.where("rated_rpm"), f"must be below synchronous_rpm ({synchronous!r})", rated)
+            slip = 1.0 - rated / synchronous
+        elif synchronous is None:
+            synchronous = rated / (1.0 - slip)
+        motor = KlossMotor(power, synchronous * RPM, slip, overload, **drive)
+    table.done()
+    return motor, off_at
+
+
+def _read_brake(table: Table) -> Brake:
+    torque = table.number("torque", 0.0, non_negative=True)
+    damping = table.number("damping", 0.0, non_negative=True)
+    at = table.number("at", 0.0)
+    if torque == 0 and damping == 0:
+        raise SceneError(table.path, "needs torque > 0 or damping > 0")
+    table.done()
+    return Brake(torque=torque, damping=damping, at=at)
+
+
+def _read_clutch(table: Table) -> Clutch:
+    clutch = Clutch(torque=table.number("torque", positive=True), engage_at=table.number("engage_at", 0.0),
+                    inertia=table.number("inertia", 0.0, non_negative=True))
+    table.done()
+    return clutch
+
+
+def _read_start(value: Any, where: str, clutch: Clutch | None) -> Start:
+    if isinstance(value, str):
+        if value != "rest":
+            raise SceneError(where, "must be \"rest\" or a table {omega or rpm, angle_deg, driving_omega or "
+                             "driving_rpm}", value)
+        return REST
+    table = Table(value, where)
+    omega = _speed(table, "omega", "rpm", 0.0)
+    angle = math.radians(table.number("angle_deg", 0.0))
+    driving = _speed(table, "driving_omega", "driving_rpm", None)
+    if driving is not None and clutch is None:
+        key = "driving_omega" if table.has("driving_omega") else "driving_rpm"
+        raise SceneError(table.where(key), "only with a clutch")
+    table.done()
+    return Start(omega=omega, angle=angle, driving_omega=driving)
+
+
+def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics") -> MotionSpec:
+    """The motion's keys of the scene's ``[dynamics]`` table.
+
+    ``motor`` (required), ``brake``, ``clutch``, ``start``, ``duration``, ``method``, ``rtol``,
+    ``steady_tolerance``.  A :class:`~graphplan.reader.Table` is read for these keys only and its
+    owner calls ``done()``; a plain mapping is read whole, so any other key in it is unknown.
+    """
+    owned = isinstance(table_or_dict, Table)
+    table = table_or_dict if owned else Table(dict(table_or_dict) if isinstance(table_or_dict, Mapping)
+                                              else table_or_dict, path)
+    motor, off_at = _read_motor(table.table("motor"))
+    brake_table = table.table("brake", None)
+    clutch_table = table.table("clutch", None)
+    brake = _read_brake(brake_table) if brake_table is not None else None
+    clutch = _read_clutch(clutch_table) if clutch_table is not None else None
+    if clutch is not None and clutch.inertia + motor.reduced_inertia <= 0:
+        raise SceneError(clutch_table.where("inertia"), "the clutch's driving half needs an inertia: "
+                         "give clutch.inertia or motor.rotor_inertia")
+    start = _read_start(table.raw("start", "rest"), table.where("start"), clutch)
+    duration = table.number("duration", None, positive=True)
+    method = table.choice("method", METHODS, "auto")
+    rtol = table.number("rtol", 1e-6, positive=True)
+    if not rtol < 1:
+        raise SceneError(table.where("rtol"), "must be < 1", rtol)
+    if rtol < SMALLEST_RTOL:
+        raise SceneError(table.where("rtol"), f"must be at least {SMALLEST_RTOL:.3g}: 100 machine epsilons, the "
+                         "least the solvers take", rtol)
+    steady_tolerance = table.number("steady_tolerance", 1e-4, positive=True)
+    if not owned:
+        table.done()
+    return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start, duration=duration,
+                      method=method, rtol=rtol, steady_tolerance=steady_tolerance)
