@@ -2,7 +2,7 @@
 
 The geometry only, so that a drawing can ask whether it fits a sheet (the
 plan of positions choosing its μl, the diagrams their axis) before the
-sheets are packed (:mod:`graphplan.render.sheet`).  Formats are those of
+sheets are packed (:mod:`graphplan.render.packing`).  Formats are those of
 ISO 216, GOST 2.301 and GB/T 14689; the frame's margins are those of the
 locale's standard, the title block stands in the frame's lower right corner.
 """
@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..errors import SceneError
 from .title_block import SIZES
 
 Rect = tuple[float, float, float, float]
@@ -22,6 +23,12 @@ SHEET_NAMES = (*FORMATS, "none")
 BIGGER = {"A4": "A3", "A3": "A2", "A2": "A1"}
 # Space between a drawing and the frame or the title block (mm).
 PADDING_MM = 8.0
+
+
+def check_sheet(sheet: str) -> None:
+    """Refuse a sheet format that is none of :data:`SHEET_NAMES`, naming the scene's key."""
+    if sheet not in SHEET_NAMES:
+        raise SceneError("drawing.sheet", f"must be one of {', '.join(SHEET_NAMES)}", sheet)
 
 
 @dataclass(frozen=True)

@@ -8,36 +8,17 @@ for binding on the left, 5 mm elsewhere), GB/T 14689 for ``zh`` (a = 25 mm
 for binding, c = 10 mm on A1 and A2, 5 mm on A3 and A4, centring marks),
 ISO 5457 for ``en`` (20 mm on the left, 10 mm elsewhere, centring marks).
 
-The drawings come as :class:`Panel` s, each at its own scale factors: a
-panel is never scaled, since μl, μV, μa and μF are written beside it and a
-shrunken drawing would falsify them.  Panels are placed in the order given,
-each where the drawings of the sheet stay most compact (then as high and
-as far left as can be), never nearer than :data:`GAP_MM` to another or
-than :data:`PADDING_MM` to the frame and the title block; the drawings of
-a sheet are then moved together towards its middle.  A panel goes on the
-first sheet of the set with room for it, else on a new sheet of the same
-format, but never on a sheet before one with a drawing of its kind (the
-plans of position 11 never come before those of position 5), nor on its
-sheet as high as one of its kind unless all to the right of it.  A plan sheet
-of one position stands as a row (mechanism, velocity plan, acceleration
-plan) wherever that fits, else with its mechanism above its plans or
-beside them, so that it may join a sheet with room of another shape, and
-the drawings already on a sheet are arranged afresh in their other ways
-where only that makes room for the next (fewest changed first); a
-force sheet stands in one column of rows, else in two.  A panel too big for
-an empty sheet every way it may stand is placed part by part (a plan sheet
-of one position as its mechanism, velocity plan and acceleration plan; a
-force sheet as its groups, each beside its polygon, and the lever), on
-sheets of its own whose title block names it.  A drawing at a scale the
-scene sets that no empty sheet holds (the plan of positions or a mechanism
-at μl, a plan at its pole distance, a force polygon at the scene's μF) is
-refused before anything is placed, with the room there is, the scene's key
-and the value of it that fits, and a bigger format that holds it.
-A force sheet with a drawing that no empty sheet holds is first lettered a
-size smaller, then its group cut free or lever is drawn at the next larger
-standard scale (its caption and the title block's scale box say which),
-since a small sheet is no reason to give up a drawing that would fit a
-step smaller.
+The drawings come as :class:`~graphplan.render.packing.Panel` s, each at
+its own scale factors, and :mod:`graphplan.render.packing` places them on
+the sheets of a set.  A drawing at a scale the scene sets that no empty
+sheet holds (the plan of positions or a mechanism at μl, a plan at its pole
+distance, a force polygon at the scene's μF) is refused before anything is
+placed, with the room there is, the scene's key and the value of it that
+fits, and a bigger format that holds it.  A force sheet with a drawing that
+no empty sheet holds is first lettered a size smaller, then its group cut
+free or lever is drawn at the next larger standard scale (its caption and
+the title block's scale box say which), since a small sheet is no reason
+to give up a drawing that would fit a step smaller.
 ``sheet = "none"`` gives each panel unframed on a page of its own, as the
 drawings were before sheets.
 """
@@ -45,11 +26,9 @@ drawings were before sheets.
 from __future__ import annotations
 
 import contextlib
-import itertools
 import math
-import re
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import asdict, dataclass, replace
 
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
@@ -74,17 +53,15 @@ from .drawings import (
 )
 from .force_rows import HEADING_LAYER
 from .formats import (
-    BIGGER,
     FORMATS,
-    PADDING_MM,
-    SHEET_NAMES,
-    PageGeometry,
     Rect,
+    check_sheet,
     holds,
     orientations,
     page_geometry,
 )
 from .numerals import scale_factor
+from .packing import Page, Panel, bigger_holding, height, pack, rooms, smallest_drawings, width
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers, prefixed
 from .svg import to_svg
@@ -93,8 +70,6 @@ from .title_block import Details, TitleBlockFields, form_of, labels, scale_text,
 # A plan of positions drawn smaller than this (its longer side, mm) to save a sheet would run its outlines
 # and position numbers together: μl is made no larger for fewer sheets.
 LEAST_POSITIONS_MM = 150.0
-# Space between two drawings (mm).
-GAP_MM = 15.0
 # How far a centring mark reaches into the drawing area past the frame (ISO 5457, GB/T 14689).
 CENTRING_REACH_MM = 5.0
 # The kinematic diagrams are shortened for a small sheet in at most this many rounds, to no less of a field.
@@ -107,43 +82,6 @@ UNFRAMED_MARGIN_MM = 8.0
 
 _EDGE = Stroke(0.2, "#555555")
 _CENTRING = Stroke(0.7)
-
-
-@dataclass(frozen=True)
-class Panel:
-    """A drawing to place on a sheet, at its own scales.
-
-    ``layers`` is the drawing whole (paper mm, anywhere); ``parts`` the same
-    drawing cut into pieces that may stand apart, used when the whole does
-    not fit a sheet; ``label`` says what the drawing is, for the title block
-    of a sheet that holds only its parts.  ``name`` prefixes the ids of its
-    layers and arrows on the sheet, so that two panels' ids never clash.
-    ``length_scale`` is μl where the drawing is drawn at another μl than
-    the set's (a force sheet made smaller for a small sheet), for the title
-    block's scale box.  ``alternatives`` are the same drawing whole, its
-    parts arranged otherwise (a plan sheet's mechanism above or beside its
-    plans): the packing takes the first way that fits a sheet's room.
-    """
-
-    name: str
-    layers: tuple[Layer, ...]
-    parts: tuple[Panel, ...] = ()
-    label: str = ""
-    length_scale: float | None = None
-    alternatives: tuple[Panel, ...] = ()
-    # The part of the same drawing this one goes on from (a force sheet's "continued" part): where both stand
-    # on one sheet, this one's heading is left off, and the two read as one drawing.
-    continues: str = ""
-    extent: Rect = field(init=False, repr=False, compare=False)
-
-    def __post_init__(self) -> None:
-        # Computed once: the packing asks for it at every spot it tries.
-        object.__setattr__(self, "extent", tuple(float(value) for value in bounds(self.layers)))
-
-    @property
-    def ways(self) -> tuple[Panel, ...]:
-        """The drawing whole as arranged, then as each alternative arranges it."""
-        return (self, *self.alternatives)
 
 
 @dataclass(frozen=True)
@@ -333,7 +271,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             return one, [one]
         # Its rows in two columns where a sheet is too low for them in one.
         panels = [replace(one, alternatives=(two,) if two.extent != one.extent else ())]
-        if any(fits(_width(way), _height(way)) for way in panels[0].ways):
+        if any(fits(width(way), height(way)) for way in panels[0].ways):
             break
         # A lever drawn larger than its plan gives the room back, a step at a time, before the sheet is cut up.
         if drawn.lever_enlarged:
@@ -397,11 +335,6 @@ def _steps_to_plan_size(drawn: force_layout.ForceSheet) -> int:
     return steps
 
 
-def _pieces(parts: Sequence[Panel]) -> list[Panel]:
-    """``parts`` cut into their smallest drawings: each part's own parts, or the part where it has none."""
-    return [piece for part in parts for piece in (part.parts or (part,))]
-
-
 def _drawn_at(panel: Panel, scale: float) -> Panel:
     """``panel``, its parts and its other arrangements marked as drawn at μl = ``scale``."""
     return replace(panel, parts=tuple(_drawn_at(part, scale) for part in panel.parts), length_scale=scale,
@@ -434,7 +367,7 @@ def fewest_sheets_length_scale(analysis: Analysis, sheet: str, largest: float) -
     for scale in candidates:
         try:
             panels = course_panels(at_length_scale(analysis, scale), diagrams, sheet)
-            count = sum(len(_pack(drawings, sheet, form)) for drawings in (panels.kinematics, panels.forces)
+            count = sum(len(pack(drawings, sheet, form)) for drawings in (panels.kinematics, panels.forces)
                         if drawings)
         except SceneError:  # at this μl; the run at the μl chosen says why where none will do
             continue
@@ -618,7 +551,7 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     which then stand for ``diagrams`` too.
     """
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
-    _check_sheet(chosen)
+    check_sheet(chosen)
     analysis = with_length_scale(analysis)
     scene = analysis.scene
     panels = panels or course_panels(analysis, diagrams, chosen)
@@ -634,7 +567,7 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
         pages = [panel for _, drawings, _ in kinds for panel in drawings]
         return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
     form = form_of(scene.locale)
-    packed = [(kind, _pack(drawings, chosen, form) if drawings else [], at) for kind, drawings, at in kinds]
+    packed = [(kind, pack(drawings, chosen, form) if drawings else [], at) for kind, drawings, at in kinds]
     total = sum(len(pages) for _, pages, _ in packed)
     sheets: list[Sheet] = []
     for kind, pages, at in packed:
@@ -663,13 +596,13 @@ def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel
     panels = [panel for found in overflows for panel in found.panels]
     fixes = [fix for found in overflows for fix in found.fixes]
     ways = ["give " + " and ".join(fixes)] if fixes else []
-    bigger = _bigger_holding(sheet, form, panels)
+    bigger = bigger_holding(sheet, form, panels)
     if bigger is not None:
         ways.append(f"choose {bigger} or a bigger sheet")
     ways.append('sheet = "none"')
     raise SceneError("drawing.sheet",
                      f"{'; '.join(found.what for found in overflows)}: no {sheet} sheet holds "
-                     f"{'it' if len(panels) == 1 else 'them'} ({_rooms(sheet, form, orientations(sheet))}); "
+                     f"{'it' if len(panels) == 1 else 'them'} ({rooms(sheet, form, orientations(sheet))}); "
                      f"{', or '.join(ways)}", sheet)
 
 
@@ -678,12 +611,12 @@ def _length_scale_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[
     form = form_of(analysis.scene.locale)
     at_scale = [kinematics[0]] + [part for panel in kinematics[1:] for part in panel.parts
                                   if part.name.endswith("-mechanism")]
-    too_big = next((panel for panel in at_scale if not holds(sheet, form, _width(panel), _height(panel))), None)
+    too_big = next((panel for panel in at_scale if not holds(sheet, form, width(panel), height(panel))), None)
     if too_big is None:
         return None
     scale = length_scale(analysis)
     what = "the plan of positions" if too_big is kinematics[0] else f"the drawing {too_big.name!r}"
-    return _Overflow(f"{what} is {_width(too_big):.0f} × {_height(too_big):.0f} mm at μl = {format_scale(scale)} m/mm",
+    return _Overflow(f"{what} is {width(too_big):.0f} × {height(too_big):.0f} mm at μl = {format_scale(scale)} m/mm",
                      (f"drawing.length_scale = {format_scale(fitting_length_scale(analysis, sheet, scale))} (or more)",),
                      (too_big,))
 
@@ -696,7 +629,7 @@ def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel])
     too_big = [(position, kind, part) for position in analysis.plans
                for part in getattr(plan_panels.get(f"plan-{position.number}"), "parts", ())
                for kind in [part.name.rsplit("-", 1)[-1]]
-               if kind in ("velocity", "acceleration") and not holds(sheet, form, _width(part), _height(part))]
+               if kind in ("velocity", "acceleration") and not holds(sheet, form, width(part), height(part))]
     if not too_big:
         return None
     settings, fixes = [], []
@@ -707,7 +640,7 @@ def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel])
             settings.append(setting)
             fixes += [fitting] if fitting else []
     parts = tuple(part for _, _, part in too_big)
-    named = ", ".join(f"{part.name!r} ({_width(part):.0f} × {_height(part):.0f} mm)" for part in parts)
+    named = ", ".join(f"{part.name!r} ({width(part):.0f} × {height(part):.0f} mm)" for part in parts)
     return _Overflow(f"the drawing{'s' if len(parts) > 1 else ''} {named} at {', '.join(settings)}", tuple(fixes),
                      parts)
 
@@ -723,7 +656,7 @@ def _polygons_overflow(analysis: Analysis, sheet: str) -> _Overflow | None:
 
     def unheld(scale: float) -> list[Panel]:
         return [piece for piece in _polygon_pieces(analysis, scale)
-                if not holds(sheet, form, _width(piece), _height(piece))]
+                if not holds(sheet, form, width(piece), height(piece))]
 
     too_big = unheld(given)
     if not too_big:
@@ -735,7 +668,7 @@ def _polygons_overflow(analysis: Analysis, sheet: str) -> _Overflow | None:
             fix = (f"drawing.force_scale = {format_scale(scale)} (or more)",)
             break
         scale = next_standard_scale(scale)
-    named = ", ".join(f"{piece.name!r} ({_width(piece):.0f} × {_height(piece):.0f} mm)" for piece in too_big)
+    named = ", ".join(f"{piece.name!r} ({width(piece):.0f} × {height(piece):.0f} mm)" for piece in too_big)
     return _Overflow(f"the force polygon{'s' if len(too_big) > 1 else ''} {named} at drawing.force_scale = "
                      f"{format_scale(given)} N/mm", fix, tuple(too_big))
 
@@ -754,7 +687,7 @@ def _polygon_pieces(analysis: Analysis, scale: float) -> list[Panel]:
                             caption_size=force_layout.SMALL_CAPTION_SIZE)
             name = f"{'forces-friction' if with_friction else 'forces'}-{position.number}"
             panel = split(force_layout.arrange(drawn), name, "", _group_of_field)
-            pieces += [piece for piece in _pieces(panel.parts) if "-polygon-" in piece.name]
+            pieces += [piece for piece in smallest_drawings(panel.parts) if "-polygon-" in piece.name]
     return pieces
 
 
@@ -795,18 +728,13 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
 
 def _sheets(drawings: Sequence[Panel | Sequence[Layer]], sheet: str, locale: str, kind: str, title: str,
             scale: float | None, details: Details | None, first: int, count: int | None) -> list[Sheet]:
-    _check_sheet(sheet)
+    check_sheet(sheet)
     panels = [panel_of(drawing, f"panel-{k + 1}") for k, drawing in enumerate(drawings)]
     details = replace(details or Details(), title=title or (details.title if details else ""))
     if sheet == "none":
         return [_unframed(panel, first + k, count or len(panels)) for k, panel in enumerate(panels)]
-    pages = _pack(panels, sheet, form_of(locale))
+    pages = pack(panels, sheet, form_of(locale))
     return _drawn(pages, sheet, locale, kind, scale, details, first, count or first - 1 + len(pages))
-
-
-def _check_sheet(sheet: str) -> None:
-    if sheet not in SHEET_NAMES:
-        raise SceneError("drawing.sheet", f"must be one of {', '.join(SHEET_NAMES)}", sheet)
 
 
 def sheet_svg(layers: Sequence[Layer], sheet: str | tuple[float, float] | None) -> str:
@@ -817,322 +745,14 @@ def sheet_svg(layers: Sequence[Layer], sheet: str | tuple[float, float] | None) 
     if sheet is None or sheet == "none":
         return to_svg(layers, UNFRAMED_MARGIN_MM)
     if isinstance(sheet, str):
-        _check_sheet(sheet)
+        check_sheet(sheet)
         sheet = FORMATS[sheet]
     return to_svg(layers, page=(float(sheet[0]), float(sheet[1])))
 
 
-# Packing.
-
-@dataclass
-class _Page:
-    """A sheet being filled: its size, the area panels may take, the title block, what is placed."""
-
-    size: tuple[float, float]
-    frame: Rect
-    block: Rect
-    area: Rect
-    placed: list[tuple[Panel, Rect, tuple[float, float]]] = field(default_factory=list)
-    label: str = ""
-    # The drawings placed, each with every way it may stand, for the page to be laid out afresh.
-    drawings: list[Panel] = field(default_factory=list)
-
-    def place(self, panel: Panel) -> bool:
-        """Put ``panel``, arranged in the first of its ways that fits, where the drawings stay most compact,
-        then as high and as far left as can be.
-
-        Compact is measured as the share of the area (its width or its
-        height, whichever is more used) that the drawings' common bounds
-        take; so the drawings grow together as a block of the sheet's shape.
-        False when the panel does not fit.
-        """
-        spots = ((spot, way) for way in panel.ways for spot in [self._best_spot(way)] if spot is not None)
-        found = next(spots, None)
-        if found is None:
-            return False
-        rect, way = found
-        x0, _, _, y1 = way.extent
-        self.placed.append((way, rect, (rect[0] - x0, rect[3] - y1)))
-        self.drawings.append(panel)
-        return True
-
-    def _best_spot(self, panel: Panel) -> Rect | None:
-        """Where ``panel`` as arranged keeps the drawings most compact; None when it fits nowhere."""
-        x0, y0, x1, y1 = panel.extent
-        width, height = x1 - x0, y1 - y0
-        rects = [rect for _, rect, _ in self.placed]
-        kind = _kind(panel)
-        same_kind = [rect for placed, rect, _ in self.placed if _kind(placed) == kind]
-        # Against the area's edges, beside or under another drawing, level with one, or just above the block.
-        xs = {self.area[0], self.area[2] - width, *(r[2] + GAP_MM for r in rects),
-              *(r[0] - GAP_MM - width for r in rects), *(r[0] for r in rects)}
-        tops = {self.area[3], self.block[3] + PADDING_MM + height, *(r[1] - GAP_MM for r in rects),
-                *(r[3] for r in rects)}
-        area_width, area_height = self.area[2] - self.area[0], self.area[3] - self.area[1]
-        best: tuple[tuple[float, float, float], Rect] | None = None
-        for top in tops:
-            for left in xs:
-                rect = (left, top - height, left + width, top)
-                if not self._free(rect) or not all(_reads_after(rect, earlier) for earlier in same_kind):
-                    continue
-                union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
-                         max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
-                share = max((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
-                key = (round(share, 3), -top, left)
-                if best is None or key < best[0]:
-                    best = (key, rect)
-        return best[1] if best is not None else None
-
-    def fits_empty(self, panel: Panel) -> bool:
-        geometry = PageGeometry(self.size, self.frame, self.block, self.area)
-        return any(geometry.holds(_width(way), _height(way)) for way in panel.ways)
-
-    def _free(self, rect: Rect) -> bool:
-        ax0, ay0, ax1, ay1 = self.area
-        eps = 1e-6
-        if rect[0] < ax0 - eps or rect[1] < ay0 - eps or rect[2] > ax1 + eps or rect[3] > ay1 + eps:
-            return False
-        if _overlap(rect, _grown(self.block, PADDING_MM)):
-            return False
-        return not any(_overlap(rect, _grown(other, GAP_MM - eps)) for _, other, _ in self.placed)
-
-
-def _reads_after(rect: Rect, earlier: Rect) -> bool:
-    """Whether a drawing at ``rect`` is read after one at ``earlier``: its top lower, or all of it to the right
-    (the next in a row, or the top of the next column).
-
-    The plans of position 11 stand after those of position 5 on a sheet
-    too, as the sheets keep them in order.
-    """
-    return rect[0] >= earlier[2] - 1e-6 or rect[3] < earlier[3] - 1e-6
-
-
-def _overlap(a: Rect, b: Rect) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def _grown(rect: Rect, by: float) -> Rect:
-    return (rect[0] - by, rect[1] - by, rect[2] + by, rect[3] + by)
-
-
-def _empty_page(sheet: str, form: str, portrait: bool) -> _Page:
-    geometry = page_geometry(sheet, form, portrait)
-    return _Page(geometry.size, geometry.frame, geometry.block, geometry.area)
-
-
-def _pack(panels: Sequence[Panel], sheet: str, form: str) -> list[_Page]:
-    """The panels on as few sheets as this simple packing needs.
-
-    An A4 stands upright or across, all sheets one way when that needs no
-    more of them, else each sheet the way its drawings fit (a tall plan of
-    positions upright, wide diagrams across), as a set of A4 drawings may.
-    """
-    _check_sheet(sheet)
-    turns = orientations(sheet)
-    if len(turns) == 1:
-        return _pack_on(panels, sheet, form, turns)
-    # ESKD puts an A4 upright; the other standards turn it as the drawing needs.
-    upright_first = form == "eskd"
-    mixed = _pack_on(panels, sheet, form, tuple(sorted(turns, key=lambda portrait: portrait != upright_first)))
-    packed = [mixed]
-    for portrait in turns:
-        try:
-            packed.append(_pack_on(panels, sheet, form, (portrait,)))
-        except SceneError:
-            continue
-    return min(packed, key=lambda pages: (len(pages), len({_upright(page) for page in pages}),
-                                          _upright(pages[0]) != upright_first))
-
-
-def _upright(page: _Page) -> bool:
-    return page.size[0] < page.size[1]
-
-
-def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[bool]) -> list[_Page]:
-    """The panels packed in order, each on the first sheet with room for it that keeps the drawings of its
-    kind in order; a new sheet is turned the first of ``turns`` (True: upright) that holds the panel that
-    opens it."""
-    pages: list[_Page] = []
-    # A small drawing fills a gap left sheets back, but the plans of position 11 never come before those
-    # of position 5: a drawing goes no further back than the last sheet of a drawing of its kind.
-    last_of_kind: dict[str, int] = {}
-    for panel in panels:
-        kind = _kind(panel)
-        earliest = last_of_kind.get(kind, 0)
-        room = next((k for k in range(earliest, len(pages)) if not pages[k].label and pages[k].place(panel)), None)
-        if room is None:
-            room = _room_by_rearranging(pages, earliest, panel)
-        if room is not None:
-            last_of_kind[kind] = room
-            continue
-        page = _empty_page(sheet, form, _turn_holding(panel, sheet, form, turns))
-        if page.place(panel):
-            pages.append(page)
-        elif not panel.parts:
-            raise _too_big(panel, sheet, form, turns)
-        else:
-            # Parts go on sheets of their own, whose title block says whose parts they are.
-            pages += _parts_on(panel, sheet, form, turns)
-        last_of_kind[kind] = len(pages) - 1
-    for page in pages:
-        _centre(page)
-    return pages
-
-
-# The most arrangements of a page's drawings tried to make room for one more, fewest changed first: each
-# drawing may stand in any of its ways (a plan sheet's three), 3^k arrangements for k drawings; 81 try every
-# arrangement of four plan sheets.
-_MOST_REARRANGEMENTS = 81
-
-
-def _room_by_rearranging(pages: list[_Page], earliest: int, panel: Panel) -> int | None:
-    """The first page from ``earliest`` on that holds ``panel`` once its drawings are laid out afresh,
-    replaced in ``pages`` by its new layout; None when none does."""
-    for k in range(earliest, len(pages)):
-        fresh = None if pages[k].label else _rearranged(pages[k], panel)
-        if fresh is not None:
-            pages[k] = fresh
-            return k
-    return None
-
-
-def _rearranged(page: _Page, panel: Panel) -> _Page | None:
-    """``page`` laid out afresh with ``panel`` added, its drawings in other ways (a plan sheet with its
-    mechanism above its plans, say) where only that makes room; None when no arrangement does.
-
-    The arrangements that change fewest drawings are tried first, so that
-    drawings keep the way they were placed in where that costs no sheet.
-    """
-    drawings = [*page.drawings, panel]
-    choices = [[replace(way, alternatives=()) for way in drawing.ways] for drawing in drawings]
-    for picked in itertools.islice(_arrangements([len(ways) for ways in choices]), _MOST_REARRANGEMENTS):
-        fresh = _Page(page.size, page.frame, page.block, page.area)
-        if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
-            fresh.drawings = drawings
-            return fresh
-    return None
-
-
-def _arrangements(ways: Sequence[int]) -> Iterator[tuple[int, ...]]:
-    """Which way each drawing stands in (an index below its count in ``ways``), one drawing changed from its
-    first way, then two, and so on: the arrangement of all first ways, tried as the page was filled, is left out."""
-    for changed in range(1, len(ways) + 1):
-        for which in itertools.combinations(range(len(ways)), changed):
-            for others in itertools.product(*(range(1, ways[k]) for k in which)):
-                picked = [0] * len(ways)
-                for k, way in zip(which, others, strict=True):
-                    picked[k] = way
-                yield tuple(picked)
-
-
-def _kind(panel: Panel) -> str:
-    """What ``panel`` draws, whichever position it is of: ``plan`` of ``plan-11``, ``forces`` of ``forces-5``
-    and of its second part ``forces-5-2``."""
-    return re.sub(r"(?<=.)(-\d+)+$", "", panel.name)
-
-
-def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:
-    """The first of ``turns`` whose empty sheet holds ``panel``; the first of all when none does."""
-    return next((portrait for portrait in turns if _empty_page(sheet, form, portrait).fits_empty(panel)), turns[0])
-
-
-def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> list[_Page]:
-    """The parts of ``panel`` on pages of their own, arranged to need the fewest pages.
-
-    Tried in turn: the parts as given, then each part that holds several
-    drawings (a group and its polygon) cut into them, each in the given
-    order and tallest, largest and widest first; of two arrangements on as
-    many pages the first tried is kept, so that a drawing stays with its
-    neighbours and in reading order where that costs no sheet.
-    """
-    def held(part: Panel) -> bool:
-        return any(_empty_page(sheet, form, portrait).fits_empty(part) for portrait in turns)
-
-    # A part too big for a sheet stands apart in its own parts.
-    grouped = [piece for part in panel.parts
-               for piece in (part.parts if part.parts and not held(part) else (part,))]
-    single = _pieces(grouped)
-    best: list[_Page] | None = None
-    for parts in (grouped, single):
-        for order in (parts, sorted(parts, key=lambda part: -_height(part)),
-                      sorted(parts, key=lambda part: -_area(part)), sorted(parts, key=lambda part: -_width(part))):
-            pages: list[_Page] = []
-            for part in order:
-                if pages and pages[-1].place(part):
-                    continue
-                if not held(part):
-                    raise _too_big(part, sheet, form, turns, panel.label)
-                pages.append(_empty_page(sheet, form, _turn_holding(part, sheet, form, turns)))
-                pages[-1].place(part)
-            if best is None or len(pages) < len(best):
-                best = pages
-    assert best is not None
-    for page in best:
-        page.label = panel.label or panel.name
-    return best
-
-
-def _width(panel: Panel) -> float:
-    x0, _, x1, _ = panel.extent
-    return x1 - x0
-
-
-def _height(panel: Panel) -> float:
-    _, y0, _, y1 = panel.extent
-    return y1 - y0
-
-
-def _area(panel: Panel) -> float:
-    return _width(panel) * _height(panel)
-
-
-def _centre(page: _Page) -> None:
-    """Move the drawings of a page together towards the middle of its area, as far as the title block lets them."""
-    rects = [rect for _, rect, _ in page.placed]
-    ux0, uy0 = min(r[0] for r in rects), min(r[1] for r in rects)
-    ux1, uy1 = max(r[2] for r in rects), max(r[3] for r in rects)
-    ax0, ay0, ax1, ay1 = page.area
-    towards = ((ax0 + ax1 - ux0 - ux1) / 2, (ay0 + ay1 - uy0 - uy1) / 2)
-    block = _grown(page.block, PADDING_MM)
-    steps = 20
-    for k in range(steps, 0, -1):
-        dx, dy = towards[0] * k / steps, towards[1] * k / steps
-        if not any(_overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), block) for r in rects):
-            page.placed = [(panel, (r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), (ox + dx, oy + dy))
-                           for panel, r, (ox, oy) in page.placed]
-            return
-
-
-def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: str = "") -> SceneError:
-    """The error for a drawing no empty sheet holds (one whose scale the scene sets is refused before, by
-    :func:`_refuse_overflows`, with the value that fits)."""
-    x0, y0, x1, y1 = panel.extent
-    what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
-    bigger = _bigger_holding(sheet, form, [panel])
-    ways = [f"choose {bigger} or a bigger sheet"] if bigger else ["a larger μl (drawing.length_scale)"]
-    return SceneError("drawing.sheet",
-                      f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
-                      f"({_rooms(sheet, form, turns)}); {', or '.join(ways)}, or sheet = \"none\"", sheet)
-
-
-def _rooms(sheet: str, form: str, turns: Sequence[bool]) -> str:
-    """The rooms an empty ``sheet`` has clear of its title block, in words."""
-    rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
-                          for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
-    return f"an empty one has room for {' or '.join(rooms)} mm clear of its title block"
-
-
-def _bigger_holding(sheet: str, form: str, panels: Sequence[Panel]) -> str | None:
-    """The smallest format bigger than ``sheet`` whose empty sheet holds each of ``panels``, if any."""
-    bigger = BIGGER.get(sheet)
-    while bigger is not None and not all(holds(bigger, form, _width(panel), _height(panel)) for panel in panels):
-        bigger = BIGGER.get(bigger)
-    return bigger
-
-
 # Drawing the sheets.
 
-def _drawn(pages: Sequence[_Page], sheet: str, locale: str, kind: str, scale: float | None, details: Details,
+def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: float | None, details: Details,
            first: int, count: int) -> list[Sheet]:
     form = form_of(locale)
     words = labels(locale)
@@ -1159,7 +779,7 @@ def _drawn(pages: Sequence[_Page], sheet: str, locale: str, kind: str, scale: fl
     return sheets
 
 
-def _drawing_name(page: _Page) -> str:
+def _drawing_name(page: Page) -> str:
     """What a page shows, when it is one drawing's: the parts of one, or one whole alone."""
     if page.label:
         return page.label
@@ -1171,7 +791,7 @@ def _unframed(panel: Panel, number: int, count: int) -> Sheet:
     return Sheet("none", None, layers, None, None, {panel.name: panel.extent}, number, count)
 
 
-def _frame(page: _Page, form: str) -> list[Primitive]:
+def _frame(page: Page, form: str) -> list[Primitive]:
     """The sheet's edge (thin), the frame (a main line) and, but for ESKD, the centring marks."""
     width, height = page.size
     x0, y0, x1, y1 = page.frame

@@ -1,0 +1,386 @@
+"""Panels packed onto pages: where each drawing of a set of sheets stands.
+
+The drawings come as :class:`Panel` s, each at its own scale factors: a
+panel is never scaled, since μl, μV, μa and μF are written beside it and a
+shrunken drawing would falsify them.  Panels are placed in the order given,
+each where the drawings of the sheet stay most compact (then as high and
+as far left as can be), never nearer than :data:`GAP_MM` to another or
+than :data:`PADDING_MM` to the frame and the title block; the drawings of
+a sheet are then moved together towards its middle.  A panel goes on the
+first sheet of the set with room for it, else on a new sheet of the same
+format, but never on a sheet before one with a drawing of its kind (the
+plans of position 11 never come before those of position 5), nor on its
+sheet as high as one of its kind unless all to the right of it.  A plan sheet
+of one position stands as a row (mechanism, velocity plan, acceleration
+plan) wherever that fits, else with its mechanism above its plans or
+beside them, so that it may join a sheet with room of another shape, and
+the drawings already on a sheet are arranged afresh in their other ways
+where only that makes room for the next (fewest changed first); a
+force sheet stands in one column of rows, else in two.  A panel too big for
+an empty sheet every way it may stand is placed part by part (a plan sheet
+of one position as its mechanism, velocity plan and acceleration plan; a
+force sheet as its groups, each beside its polygon, and the lever), on
+sheets of its own whose title block names it.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field, replace
+
+from ..errors import SceneError
+from .formats import BIGGER, PADDING_MM, PageGeometry, Rect, check_sheet, holds, orientations, page_geometry
+from .primitives import Layer, bounds
+
+# Space between two drawings (mm).
+GAP_MM = 15.0
+
+
+@dataclass(frozen=True)
+class Panel:
+    """A drawing to place on a sheet, at its own scales.
+
+    ``layers`` is the drawing whole (paper mm, anywhere); ``parts`` the same
+    drawing cut into pieces that may stand apart, used when the whole does
+    not fit a sheet; ``label`` says what the drawing is, for the title block
+    of a sheet that holds only its parts.  ``name`` prefixes the ids of its
+    layers and arrows on the sheet, so that two panels' ids never clash.
+    ``length_scale`` is μl where the drawing is drawn at another μl than
+    the set's (a force sheet made smaller for a small sheet), for the title
+    block's scale box.  ``alternatives`` are the same drawing whole, its
+    parts arranged otherwise (a plan sheet's mechanism above or beside its
+    plans): the packing takes the first way that fits a sheet's room.
+    """
+
+    name: str
+    layers: tuple[Layer, ...]
+    parts: tuple[Panel, ...] = ()
+    label: str = ""
+    length_scale: float | None = None
+    alternatives: tuple[Panel, ...] = ()
+    # The part of the same drawing this one goes on from (a force sheet's "continued" part): where both stand
+    # on one sheet, this one's heading is left off, and the two read as one drawing.
+    continues: str = ""
+    extent: Rect = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        # Computed once: the packing asks for it at every spot it tries.
+        object.__setattr__(self, "extent", tuple(float(value) for value in bounds(self.layers)))
+
+    @property
+    def ways(self) -> tuple[Panel, ...]:
+        """The drawing whole as arranged, then as each alternative arranges it."""
+        return (self, *self.alternatives)
+
+
+def smallest_drawings(parts: Sequence[Panel]) -> list[Panel]:
+    """``parts`` cut into their smallest drawings: each part's own parts, or the part where it has none."""
+    return [piece for part in parts for piece in (part.parts or (part,))]
+
+
+@dataclass
+class Page:
+    """A sheet being filled: its size, the area panels may take, the title block, what is placed."""
+
+    size: tuple[float, float]
+    frame: Rect
+    block: Rect
+    area: Rect
+    placed: list[tuple[Panel, Rect, tuple[float, float]]] = field(default_factory=list)
+    label: str = ""
+    # The drawings placed, each with every way it may stand, for the page to be laid out afresh.
+    drawings: list[Panel] = field(default_factory=list)
+
+    def place(self, panel: Panel) -> bool:
+        """Put ``panel``, arranged in the first of its ways that fits, where the drawings stay most compact,
+        then as high and as far left as can be.
+
+        Compact is measured as the share of the area (its width or its
+        height, whichever is more used) that the drawings' common bounds
+        take; so the drawings grow together as a block of the sheet's shape.
+        False when the panel does not fit.
+        """
+        spots = ((spot, way) for way in panel.ways for spot in [self._best_spot(way)] if spot is not None)
+        found = next(spots, None)
+        if found is None:
+            return False
+        rect, way = found
+        x0, _, _, y1 = way.extent
+        self.placed.append((way, rect, (rect[0] - x0, rect[3] - y1)))
+        self.drawings.append(panel)
+        return True
+
+    def _best_spot(self, panel: Panel) -> Rect | None:
+        """Where ``panel`` as arranged keeps the drawings most compact; None when it fits nowhere."""
+        x0, y0, x1, y1 = panel.extent
+        width, height = x1 - x0, y1 - y0
+        rects = [rect for _, rect, _ in self.placed]
+        kind = _kind(panel)
+        same_kind = [rect for placed, rect, _ in self.placed if _kind(placed) == kind]
+        # Against the area's edges, beside or under another drawing, level with one, or just above the block.
+        xs = {self.area[0], self.area[2] - width, *(r[2] + GAP_MM for r in rects),
+              *(r[0] - GAP_MM - width for r in rects), *(r[0] for r in rects)}
+        tops = {self.area[3], self.block[3] + PADDING_MM + height, *(r[1] - GAP_MM for r in rects),
+                *(r[3] for r in rects)}
+        area_width, area_height = self.area[2] - self.area[0], self.area[3] - self.area[1]
+        best: tuple[tuple[float, float, float], Rect] | None = None
+        for top in tops:
+            for left in xs:
+                rect = (left, top - height, left + width, top)
+                if not self._free(rect) or not all(_reads_after(rect, earlier) for earlier in same_kind):
+                    continue
+                union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
+                         max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
+                share = max((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
+                key = (round(share, 3), -top, left)
+                if best is None or key < best[0]:
+                    best = (key, rect)
+        return best[1] if best is not None else None
+
+    def fits_empty(self, panel: Panel) -> bool:
+        geometry = PageGeometry(self.size, self.frame, self.block, self.area)
+        return any(geometry.holds(width(way), height(way)) for way in panel.ways)
+
+    def _free(self, rect: Rect) -> bool:
+        ax0, ay0, ax1, ay1 = self.area
+        eps = 1e-6
+        if rect[0] < ax0 - eps or rect[1] < ay0 - eps or rect[2] > ax1 + eps or rect[3] > ay1 + eps:
+            return False
+        if _overlap(rect, _grown(self.block, PADDING_MM)):
+            return False
+        return not any(_overlap(rect, _grown(other, GAP_MM - eps)) for _, other, _ in self.placed)
+
+
+def _reads_after(rect: Rect, earlier: Rect) -> bool:
+    """Whether a drawing at ``rect`` is read after one at ``earlier``: its top lower, or all of it to the right
+    (the next in a row, or the top of the next column).
+
+    The plans of position 11 stand after those of position 5 on a sheet
+    too, as the sheets keep them in order.
+    """
+    return rect[0] >= earlier[2] - 1e-6 or rect[3] < earlier[3] - 1e-6
+
+
+def _overlap(a: Rect, b: Rect) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _grown(rect: Rect, by: float) -> Rect:
+    return (rect[0] - by, rect[1] - by, rect[2] + by, rect[3] + by)
+
+
+def _empty_page(sheet: str, form: str, portrait: bool) -> Page:
+    geometry = page_geometry(sheet, form, portrait)
+    return Page(geometry.size, geometry.frame, geometry.block, geometry.area)
+
+
+def pack(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
+    """The panels on as few sheets as this simple packing needs.
+
+    An A4 stands upright or across, all sheets one way when that needs no
+    more of them, else each sheet the way its drawings fit (a tall plan of
+    positions upright, wide diagrams across), as a set of A4 drawings may.
+    """
+    check_sheet(sheet)
+    turns = orientations(sheet)
+    if len(turns) == 1:
+        return _pack_on(panels, sheet, form, turns)
+    # ESKD puts an A4 upright; the other standards turn it as the drawing needs.
+    upright_first = form == "eskd"
+    mixed = _pack_on(panels, sheet, form, tuple(sorted(turns, key=lambda portrait: portrait != upright_first)))
+    packed = [mixed]
+    for portrait in turns:
+        try:
+            packed.append(_pack_on(panels, sheet, form, (portrait,)))
+        except SceneError:
+            continue
+    return min(packed, key=lambda pages: (len(pages), len({_upright(page) for page in pages}),
+                                          _upright(pages[0]) != upright_first))
+
+
+def _upright(page: Page) -> bool:
+    return page.size[0] < page.size[1]
+
+
+def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[bool]) -> list[Page]:
+    """The panels packed in order, each on the first sheet with room for it that keeps the drawings of its
+    kind in order; a new sheet is turned the first of ``turns`` (True: upright) that holds the panel that
+    opens it."""
+    pages: list[Page] = []
+    # A small drawing fills a gap left sheets back, but the plans of position 11 never come before those
+    # of position 5: a drawing goes no further back than the last sheet of a drawing of its kind.
+    last_of_kind: dict[str, int] = {}
+    for panel in panels:
+        kind = _kind(panel)
+        earliest = last_of_kind.get(kind, 0)
+        room = next((k for k in range(earliest, len(pages)) if not pages[k].label and pages[k].place(panel)), None)
+        if room is None:
+            room = _room_by_rearranging(pages, earliest, panel)
+        if room is not None:
+            last_of_kind[kind] = room
+            continue
+        page = _empty_page(sheet, form, _turn_holding(panel, sheet, form, turns))
+        if page.place(panel):
+            pages.append(page)
+        elif not panel.parts:
+            raise _too_big(panel, sheet, form, turns)
+        else:
+            # Parts go on sheets of their own, whose title block says whose parts they are.
+            pages += _parts_on(panel, sheet, form, turns)
+        last_of_kind[kind] = len(pages) - 1
+    for page in pages:
+        _centre(page)
+    return pages
+
+
+# The most arrangements of a page's drawings tried to make room for one more, fewest changed first: each
+# drawing may stand in any of its ways (a plan sheet's three), 3^k arrangements for k drawings; 81 try every
+# arrangement of four plan sheets.
+_MOST_REARRANGEMENTS = 81
+
+
+def _room_by_rearranging(pages: list[Page], earliest: int, panel: Panel) -> int | None:
+    """The first page from ``earliest`` on that holds ``panel`` once its drawings are laid out afresh,
+    replaced in ``pages`` by its new layout; None when none does."""
+    for k in range(earliest, len(pages)):
+        fresh = None if pages[k].label else _rearranged(pages[k], panel)
+        if fresh is not None:
+            pages[k] = fresh
+            return k
+    return None
+
+
+def _rearranged(page: Page, panel: Panel) -> Page | None:
+    """``page`` laid out afresh with ``panel`` added, its drawings in other ways (a plan sheet with its
+    mechanism above its plans, say) where only that makes room; None when no arrangement does.
+
+    The arrangements that change fewest drawings are tried first, so that
+    drawings keep the way they were placed in where that costs no sheet.
+    """
+    drawings = [*page.drawings, panel]
+    choices = [[replace(way, alternatives=()) for way in drawing.ways] for drawing in drawings]
+    for picked in itertools.islice(_arrangements([len(ways) for ways in choices]), _MOST_REARRANGEMENTS):
+        fresh = Page(page.size, page.frame, page.block, page.area)
+        if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
+            fresh.drawings = drawings
+            return fresh
+    return None
+
+
+def _arrangements(ways: Sequence[int]) -> Iterator[tuple[int, ...]]:
+    """Which way each drawing stands in (an index below its count in ``ways``), one drawing changed from its
+    first way, then two, and so on: the arrangement of all first ways, tried as the page was filled, is left out."""
+    for changed in range(1, len(ways) + 1):
+        for which in itertools.combinations(range(len(ways)), changed):
+            for others in itertools.product(*(range(1, ways[k]) for k in which)):
+                picked = [0] * len(ways)
+                for k, way in zip(which, others, strict=True):
+                    picked[k] = way
+                yield tuple(picked)
+
+
+def _kind(panel: Panel) -> str:
+    """What ``panel`` draws, whichever position it is of: ``plan`` of ``plan-11``, ``forces`` of ``forces-5``
+    and of its second part ``forces-5-2``."""
+    return re.sub(r"(?<=.)(-\d+)+$", "", panel.name)
+
+
+def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:
+    """The first of ``turns`` whose empty sheet holds ``panel``; the first of all when none does."""
+    return next((portrait for portrait in turns if _empty_page(sheet, form, portrait).fits_empty(panel)), turns[0])
+
+
+def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> list[Page]:
+    """The parts of ``panel`` on pages of their own, arranged to need the fewest pages.
+
+    Tried in turn: the parts as given, then each part that holds several
+    drawings (a group and its polygon) cut into them, each in the given
+    order and tallest, largest and widest first; of two arrangements on as
+    many pages the first tried is kept, so that a drawing stays with its
+    neighbours and in reading order where that costs no sheet.
+    """
+    def held(part: Panel) -> bool:
+        return any(_empty_page(sheet, form, portrait).fits_empty(part) for portrait in turns)
+
+    # A part too big for a sheet stands apart in its own parts.
+    grouped = [piece for part in panel.parts
+               for piece in (part.parts if part.parts and not held(part) else (part,))]
+    single = smallest_drawings(grouped)
+    best: list[Page] | None = None
+    for parts in (grouped, single):
+        for order in (parts, sorted(parts, key=lambda part: -height(part)),
+                      sorted(parts, key=lambda part: -_area(part)), sorted(parts, key=lambda part: -width(part))):
+            pages: list[Page] = []
+            for part in order:
+                if pages and pages[-1].place(part):
+                    continue
+                if not held(part):
+                    raise _too_big(part, sheet, form, turns, panel.label)
+                pages.append(_empty_page(sheet, form, _turn_holding(part, sheet, form, turns)))
+                pages[-1].place(part)
+            if best is None or len(pages) < len(best):
+                best = pages
+    assert best is not None
+    for page in best:
+        page.label = panel.label or panel.name
+    return best
+
+
+def width(panel: Panel) -> float:
+    x0, _, x1, _ = panel.extent
+    return x1 - x0
+
+
+def height(panel: Panel) -> float:
+    _, y0, _, y1 = panel.extent
+    return y1 - y0
+
+
+def _area(panel: Panel) -> float:
+    return width(panel) * height(panel)
+
+
+def _centre(page: Page) -> None:
+    """Move the drawings of a page together towards the middle of its area, as far as the title block lets them."""
+    rects = [rect for _, rect, _ in page.placed]
+    ux0, uy0 = min(r[0] for r in rects), min(r[1] for r in rects)
+    ux1, uy1 = max(r[2] for r in rects), max(r[3] for r in rects)
+    ax0, ay0, ax1, ay1 = page.area
+    towards = ((ax0 + ax1 - ux0 - ux1) / 2, (ay0 + ay1 - uy0 - uy1) / 2)
+    block = _grown(page.block, PADDING_MM)
+    steps = 20
+    for k in range(steps, 0, -1):
+        dx, dy = towards[0] * k / steps, towards[1] * k / steps
+        if not any(_overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), block) for r in rects):
+            page.placed = [(panel, (r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), (ox + dx, oy + dy))
+                           for panel, r, (ox, oy) in page.placed]
+            return
+
+
+def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: str = "") -> SceneError:
+    """The error for a drawing no empty sheet holds (one whose scale the scene sets is refused before the
+    packing, by :mod:`graphplan.render.sheet`, with the value that fits)."""
+    x0, y0, x1, y1 = panel.extent
+    what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
+    bigger = bigger_holding(sheet, form, [panel])
+    ways = [f"choose {bigger} or a bigger sheet"] if bigger else ["a larger μl (drawing.length_scale)"]
+    return SceneError("drawing.sheet",
+                      f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
+                      f"({rooms(sheet, form, turns)}); {', or '.join(ways)}, or sheet = \"none\"", sheet)
+
+
+def rooms(sheet: str, form: str, turns: Sequence[bool]) -> str:
+    """The rooms an empty ``sheet`` has clear of its title block, in words."""
+    rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
+                          for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
+    return f"an empty one has room for {' or '.join(rooms)} mm clear of its title block"
+
+
+def bigger_holding(sheet: str, form: str, panels: Sequence[Panel]) -> str | None:
+    """The smallest format bigger than ``sheet`` whose empty sheet holds each of ``panels``, if any."""
+    bigger = BIGGER.get(sheet)
+    while bigger is not None and not all(holds(bigger, form, width(panel), height(panel)) for panel in panels):
+        bigger = BIGGER.get(bigger)
+    return bigger
