@@ -27,8 +27,8 @@ from ..loads import motion_state
 from ..locale import strings
 from ..statics import balancing_by_power, efficiency
 
-# A rate this small against the plan's largest is the plan's rounding, not a value.
-_ROUNDING = 1e-12
+# A rate or a load this small against the largest of its kind is the plan's rounding, not a value.
+ROUNDING = 1e-12
 
 
 # A number this small (SI units, degrees, per cent) is what the arithmetic leaves of a nought: a dead centre's
@@ -116,7 +116,7 @@ def initial_data(analysis: Analysis, plan: PlanPosition) -> list[LinkData]:
             continue
         a_s = abs(plan.acceleration.value(spec.centre)) if spec.centre else 0.0
         epsilon = plan.acceleration.rates.get(link, 0.0)
-        if abs(epsilon) < _ROUNDING * largest:
+        if abs(epsilon) < ROUNDING * largest:
             epsilon = 0.0  # a driver at constant speed: what is left is the plan's rounding
         rows.append(LinkData(link, spec.centre, spec.mass, spec.inertia, a_s, epsilon, scene.gravity))
     return rows

@@ -1,4 +1,5 @@
-"""The note's sections on balancing the rotor and on the vibration its unbalance causes.
+"""The note's sections on the machine: its dynamics (the equivalent model, the flywheel, the motion in time), balancing
+the rotor and the vibration its unbalance causes.
 
 Each is worked out as a student's note works it: the equation, the numbers put into it, the result with
 its unit.  The balancing goes by the polygon of each correction plane (a long rotor's mass-radius
@@ -10,20 +11,132 @@ The sections are written by the note's own writer, whose numbering, tables and l
 from __future__ import annotations
 
 import math
-from typing import Protocol
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Protocol
+
+import numpy as np
 
 from ..rotor_balancing import BalancingResult
 from ..vibration import RPM, Response, VibrationSpec
 
+if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
+    from ..deliverables import MachineDynamics
+
 
 class Writer(Protocol):
     """What a section needs of the note it is written into."""
+
+    text: Mapping[str, str]
+    mark: str
 
     def t(self, key: str, **values: object) -> str: ...
     def n(self, value: float, digits: int = 5) -> str: ...
     def heading(self, level: int, title: str) -> None: ...
     def para(self, *lines: str) -> None: ...
     def table(self, caption: str | None, header: list[str], rows: list[list[str]], align: str | None = None) -> None: ...
+
+
+def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> None:
+    """The equivalent model (by the plans beside the exact one), its energy, the flywheel and the motion in time."""
+    model, flywheel = dynamics.model, dynamics.flywheel
+    turning = model.turning
+    # The texts of a run once over a swing or a travel, not over a cycle, say so.
+    run = "" if model.cyclic else "_swing" if turning else "_travel"
+    note.heading(2, f"{section}. {note.t('note_dynamics')}")
+    if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
+        note.para(note.t("note_dyn_model_diagrams", count=len(model.coordinate),
+                         inertia=note.n(float(np.mean(model.inertia)))))
+    else:
+        note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
+                         count=len(model.coordinate)))
+    if model.plans:
+        _reductions(note, model)
+    if turning and model.constant in ("driving", "resisting"):
+        side = model.driving if model.constant == "driving" else -model.resisting
+        note.para(note.t(f"note_dyn_constant_{model.constant}{run}", value=note.n(float(np.mean(side)))))
+    energy = model.energy
+    note.para(note.t(f"note_dyn_energy{run}", low=note.n(float(energy.min())), high=note.n(float(energy.max())),
+                     value=note.n(float(np.ptp(energy)))))
+    if flywheel is not None:
+        _flywheel(note, flywheel, model)
+    if dynamics.motion is not None:
+        _motion(note, dynamics, flywheel)
+
+
+def _reductions(note: Writer, model) -> None:
+    text = note.text
+    inertia, moment = (("Je", text["kilogram_metre2"]), ("Me", text["newton_metre"])) if model.turning \
+        else (("me", text["kilogram"]), ("Fe", text["newton"]))
+    where = "φ, °" if model.turning else "s, m"
+    header = [text["note_dyn_position"], where,
+              f"{inertia[0]}, {inertia[1]} ({text['column_by_plan']})", f"{inertia[0]} ({text['column_analytic']})",
+              text["note_dyn_error"],
+              f"{moment[0]}, {moment[1]} ({text['column_by_plan']})", f"{moment[0]} ({text['column_analytic']})",
+              text["note_dyn_error"]]
+    rows = []
+    for plan in model.plans:
+        at = math.degrees(plan.driver) % 360.0 if model.turning else plan.driver
+        rows.append([str(plan.number), note.n(at, 4), note.n(plan.inertia), note.n(plan.inertia_exact),
+                     _percent(note, plan.inertia_error_percent), note.n(plan.moment), note.n(plan.moment_exact),
+                     _percent(note, plan.moment_error_percent)])
+    note.table(text["note_dyn_table"], header, rows, align="rrrrrrrr")
+
+
+def _percent(note: Writer, value: float) -> str:
+    """An error in percent to a thousandth, as the error tables print it (no −0)."""
+    if not math.isfinite(value):
+        return note.n(value)
+    return f"{round(value, 3) or 0.0:.3f}".replace("-", "−").replace(".", note.mark)
+
+
+def _flywheel(note: Writer, flywheel, model) -> None:
+    from ..flywheel import omega_to_rpm
+
+    if flywheel.inertia <= 0:
+        note.para(note.t("note_dyn_no_flywheel", delta=note.n(flywheel.delta)))
+        return
+    omega = flywheel.omega_mean
+    note.para(note.t("note_dyn_flywheel", delta=note.n(flywheel.delta), omega=note.n(omega),
+                     rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max), mean=note.n(float(np.mean(model.inertia))),
+                     approximate=note.n(flywheel.approximate), exact=note.n(flywheel.inertia),
+                     mertsalov=note.n(flywheel.mertsalov)))
+    note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=note.n(flywheel.omega_max), low=note.n(flywheel.omega_min),
+                     high_angle=note.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
+                     low_angle=note.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
+    if flywheel.moved is not None:
+        note.para(note.t("note_dyn_moved", rpm=note.n(flywheel.shaft_rpm), value=note.n(flywheel.moved)))
+
+
+def _method_reason(note: Writer, dynamics) -> str:
+    """Why the integrator was taken, in the note's language (the run's own reason is in English)."""
+    from ..machine_motion import STIFFNESS_THRESHOLD
+
+    number = note.n(dynamics.motion.stiffness, 3)
+    if dynamics.spec.motion.method != "auto":
+        return note.t("note_dyn_reason_asked", number=number)
+    return note.t("note_dyn_reason_stiff" if dynamics.motion.stiff else "note_dyn_reason_not_stiff", number=number,
+                  threshold=note.n(STIFFNESS_THRESHOLD))
+
+
+def _motion(note: Writer, dynamics, flywheel) -> None:
+    motion = dynamics.motion
+    mounted = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
+        if dynamics.flywheel_inertia > 0 else ""
+    note.para(note.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=_method_reason(note, dynamics)))
+    steady = motion.steady
+    if steady is None:
+        if motion.stalled_at is None:
+            note.para(note.text["note_dyn_no_steady"])
+        else:
+            note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4),
+                             angle=note.n(motion.stalled_at_angle_deg, 4)))
+        return
+    cycle = steady.cycle
+    note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),
+                     mean=note.n(steady.mean_speed), high=note.n(cycle.max_speed), low=note.n(cycle.min_speed),
+                     delta=note.n(cycle.delta, 4)))
+    if flywheel is not None and flywheel.inertia > 0:
+        note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
 
 
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:

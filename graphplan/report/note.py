@@ -16,7 +16,9 @@ Everything is read from the records of one :class:`~graphplan.analysis.Analysis`
 (the plans' steps, the readings, the force plans and levers); what the note
 computes itself (a normal component ω²·l, a similarity proportion, the
 lever's Fy) it prints with its arithmetic, and checks against the record
-before it does, falling back to the record's own value.  The
+before it does, falling back to the record's own value.  The force
+analysis is written by :mod:`graphplan.report.force_note`, the machine's
+dynamics, balancing and vibration by :mod:`graphplan.report.machine_note`.  The
 tables of errors and of the force analysis are the ones ``errors.md`` and
 ``forces.md`` print (:mod:`graphplan.report.tables`,
 :mod:`graphplan.report.forces`), with the locale's decimal mark.
@@ -28,7 +30,7 @@ import contextlib
 import itertools
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -39,11 +41,11 @@ from ..errors import SceneError
 from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.drawings import length_scale
-from ..render.forces import enlarged_lever_scale
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
 from . import forces as force_report
-from .machine_note import balancing_section, vibration_section
+from .force_note import forces_section
+from .machine_note import balancing_section, dynamics_section, vibration_section
 from .tables import (
     error_table_lines,
     has_reactions,
@@ -55,8 +57,6 @@ from .tables import (
 
 # Two numbers that agree to this share are the same number printed twice.
 _SAME = 1e-6
-# A rate this small against the plan's largest is the plan's rounding, not a value.
-_ROUNDING = 1e-12
 # Suffixes of the components as the plans name them.
 _NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE = "ⁿ", "ᵏ", "^τ", "^r"
 _ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -171,7 +171,7 @@ class _Note:
         section = self.linkage() if self.analysis is not None else 0
         if self.dynamics is not None:
             section += 1
-            self.machine_dynamics(section)
+            dynamics_section(self, section, self.dynamics)
         if self.scene.balancing is not None:
             from ..rotor_balancing import balance
 
@@ -206,7 +206,7 @@ class _Note:
             self.errors(section)
         if any(plan.forces is not None for plan in plans) or self.analysis.equilibrium is not None:
             section += 1
-            self.forces(section)
+            forces_section(self, section)
         return section
 
     def structure(self, section: int) -> None:
@@ -733,7 +733,7 @@ class _Note:
                     f"{self.n(abs(value))} {unit}{self.with_sense(value)}")
             if not angular:
                 omega = pp.velocity.rates.get(link, 0.0)
-                if value != 0 and abs(omega) > _ROUNDING * max(abs(r) for r in pp.velocity.rates.values()):
+                if value != 0 and abs(omega) > force_report.ROUNDING * max(abs(r) for r in pp.velocity.rates.values()):
                     key = "note_accelerated" if omega * value > 0 else "note_decelerated"
                     text += self.text["semicolon"] + self.t(key, link=link)
             return text
@@ -809,318 +809,6 @@ class _Note:
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))
-
-    # The force analysis.
-
-    def forces(self, section: int) -> None:
-        self.heading(2, f"{section}. {self.t('note_forces')}")
-        self.para(self.t("note_forces_intro", gravity=self.n(self.analysis.scene.gravity)))
-        number = 0
-        for plan in self.analysis.plans:
-            if plan.forces is None:
-                continue
-            number += 1
-            self.forces_position(f"{section}.{number}", plan)
-        if self.analysis.equilibrium is not None:
-            number += 1
-            name, _ = force_report.balancing_symbol(self.analysis)
-            self.heading(3, f"{section}.{number}. {self.t('note_cycle')}")
-            self.captioned(self.t("note_cycle_table", name=name), force_report.cycle_lines(self.analysis, self.mark))
-
-    def forces_position(self, section: str, plan: PlanPosition) -> None:
-        text, analysis = self.text, self.analysis
-        self.heading(3, f"{section}. {self.t('position_heading', number=plan.number)}")
-        self.para(self.text["note_loads_formulas"])
-        self.captioned(self.t("note_loads_table", number=plan.number),
-                       force_report.initial_data_lines(analysis, plan, self.mark))
-        details = []
-        for row in force_report.initial_data(analysis, plan):
-            parts = []
-            if row.mass > 0:
-                parts.append(f"G{row.link} = m{row.link}·g = {self.product(self.n(row.mass), self.n(row.gravity))} = "
-                             f"{self.n(row.weight)} {text['newton']}")
-                parts.append(f"Fu{row.link} = m{row.link}·aS{row.link} = "
-                             f"{self.product(self.n(row.mass), self.n(row.centre_acceleration))} = "
-                             f"{self.n(row.inertia_force)} {text['newton']}")
-            if row.inertia > 0 and row.epsilon != 0:
-                moment = (f"Mu{row.link} = J{row.link}·ε{row.link} = "
-                          f"{self.product(self.n(row.inertia), self.n(abs(row.epsilon)))} = "
-                          f"{self.n(row.inertia_moment)} {text['newton_metre']}")
-                moment += self.with_sense(-row.epsilon)
-                parts.append(moment)
-            if parts:
-                details.append(f"- {self.t('note_link', link=row.link)}{self.text['colon']}"
-                               + self.text["semicolon"].join(parts))
-        if details:
-            self.para(*details)
-        external = force_report.external_load_lines(analysis, plan, self.mark)
-        if external:
-            self.para(*external)
-        for group in plan.forces.groups:
-            self.force_group(plan, group)
-        self.captioned(self.t("note_reactions_table", number=plan.number),
-                       force_report.reaction_lines(analysis, plan, self.mark))
-        self.balancing(plan)
-        if plan.with_friction is not None:
-            self.para(f"**{text['forces_friction']}.** " + " ".join(force_report.friction_lines(analysis, plan,
-                                                                                                 self.mark)))
-            if not plan.with_friction.locked:
-                self.friction_loads(plan)
-
-    def friction_loads(self, plan: PlanPosition) -> None:
-        """Each pair's friction load worked out at the settled reactions, and the lever that checks them."""
-        text, rubbing = self.text, plan.with_friction
-        lines = []
-        for pair in self.analysis.friction:
-            reaction = abs(rubbing.reactions[pair.reaction].force)
-            if pair.sliding:
-                lines.append(f"- f′{pair.joint} = {self.n(pair.coefficient)}; Ff{pair.source}{pair.target} = "
-                             f"f′{pair.joint}·{pair.reaction} = {self.product(self.n(pair.coefficient), self.n(reaction))}"
-                             f" = {self.n(pair.coefficient * reaction)} {text['newton']}")
-            else:
-                lines.append(f"- ρ{pair.joint} = f·r = {self.product(self.n(pair.spec.f), self.n(pair.spec.radius))} = "
-                             f"{self.n(pair.radius)} {text['unit_m']}; Mf{pair.source}{pair.target} = "
-                             f"ρ{pair.joint}·{pair.reaction} = {self.product(self.n(pair.radius), self.n(reaction))} = "
-                             f"{self.n(pair.radius * reaction)} {text['newton_metre']}")
-        self.para(self.t("note_friction_loads"), *lines)
-        lever = plan.lever_with_friction
-        name, unit = force_report.balancing_symbol(self.analysis)
-        self.para(self.t("note_friction_lever", name=name, value=self.n(lever.balancing), unit=unit,
-                         difference=force_report.percent(lever.balancing, rubbing.balancing, self.mark)))
-
-    def force_group(self, plan: PlanPosition, group) -> None:
-        text = self.text
-        driver = group.label.startswith("I(")
-        key = "note_driver_forces" if driver else "note_group_forces"
-        self.para(f"**{self.t(key, group=group.label)}**")
-        whole = next((equation for equation in group.moments if equation.links), None)
-        if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
-            closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
-            # A turning leg's unknown is the part along it (R34n); a sliding leg's, its guide's reaction (R14); a
-            # slotted leg's, the part of its pin's reaction square to the slot (its block's loads give the rest).
-            key = "note_assur_forces" if all(name.endswith("n") for name in closing) else "note_assur_forces_sliding"
-            if group.projections:
-                key = "note_assur_forces_slot"
-            self.para(self.t(key, point=whole.about, unknown=whole.unknown, closing=", ".join(closing)))
-        if group.projections:
-            self.para(self.t("note_slot_projections"), *(f"- {self.projection(equation)}" for equation in group.projections))
-        loads = {load.name: load for load in group.loads}
-        lines = []
-        for equation in group.moments:
-            lines.append(f"- {self.moment_equation(equation, loads)}")
-        if lines:
-            self.para(self.t("note_moment_equations"), *lines)
-        polygon = group.polygon
-        scale = group.scale
-        rows = []
-        for vector in polygon.vectors:
-            force = vector.force
-            rows.append([vector.name, force_report.polar(force, self.mark), self.mm(abs(force) / scale),
-                         self.text[f"note_role_{vector.role}"]])
-        self.para(self.t("note_polygon", equation=polygon.equation, scale=self.n(scale), unit=text["unit_force_scale"]))
-        header = [self.t("column_force"), f"{self.t('column_value')}, {text['newton']} ∠",
-                  f"{self.t('column_length')}, {text['millimetre']}", self.t("column_role")]
-        self.table(None, header, rows, "lrrl")
-        if group.found:
-            found = self.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, self.mark)} {text['newton']}"
-                              for item in group.found)
-            self.para(self.t("note_found", reactions=found))
-
-    def projection(self, equation) -> str:
-        """ΣFτ(5) = R35τ + G5τ + Fu5τ = R35τ − 11.77 + 3.1 = 0 ⇒ R35τ = 8.67 N."""
-        names = "".join(f" + {name}τ" for name, _ in equation.components)
-        values = "".join(f" {'−' if value < 0 else '+'} {self.n(abs(value))}" for _, value in equation.components)
-        return (f"ΣFτ({equation.link}) = {equation.unknown}{names} = {equation.unknown}{values} = 0 ⇒ "
-                f"{equation.unknown} = {self.n(equation.value)} {self.text['newton']}")
-
-    def moment_equation(self, equation, loads: Mapping[str, object]) -> str:
-        """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h."""
-        text = self.text
-        total = sum(term.moment for term in equation.terms)
-        couple = equation.unknown.startswith("M") or "·" in equation.unknown
-        unit = text["newton_metre"] if couple else text["newton"]
-        # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written.
-        size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
-        shown = [term for term in equation.terms if abs(term.moment) > _ROUNDING * size]
-        parts = []
-        for term in shown:
-            load = loads.get(term.name)
-            force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
-            if force is not None and term.arm:
-                parts.append(f"M({term.name}) = {self.sign(term.moment)}{term.name}·h = "
-                             f"{self.sign(term.moment)}{self.product(self.n(abs(force)), self.n(term.arm, 4))} = "
-                             f"{self.n(term.moment)} {text['newton_metre']}")
-            else:
-                parts.append(f"M({term.name}) = {self.n(term.moment)} {text['newton_metre']}")
-        terms = "".join(f" {'−' if term.moment < 0 else '+'} {self.n(abs(term.moment))}" for term in shown)
-        sum_text = self.n(total)
-        if couple:
-            line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
-                    f"{equation.unknown} = {self.n(equation.value)} {unit}")
-        else:
-            lever = -total / equation.value if equation.value else equation.arm
-            sign = "−" if lever < 0 else ""
-            solved = f"{sum_text}/{self.n(equation.arm, 4)}" if lever < 0 else f"−({sum_text})/{self.n(equation.arm, 4)}"
-            line = (f"ΣM{equation.about}({equation.bodies}) = {sign}{equation.unknown}·{self.n(equation.arm, 4)}{terms} = 0"
-                    f" ⇒ {equation.unknown} = {solved} = {self.n(equation.value)} {unit}")
-            if equation.value < 0:
-                line += " " + self.t("note_sense_reversed", name=equation.unknown)
-        return self.text["semicolon"].join([*parts, line])
-
-    def sign(self, value: float) -> str:
-        return "−" if value < 0 else ""
-
-    def balancing(self, plan: PlanPosition) -> None:
-        text, analysis = self.text, self.analysis
-        name, unit = force_report.balancing_symbol(analysis)
-        driver = self.mechanism.driver
-        polygons = plan.forces.balancing
-        self.para(self.t("note_balancing_polygons", name=name, value=self.n(polygons, 6), unit=unit,
-                         sense=self.with_sense(polygons) if driver.kind == "crank" else ""))
-        lever = plan.lever
-        if lever is not None:
-            velocity = plan.velocity
-            drawn_at = enlarged_lever_scale(velocity) or velocity.scale  # as the force sheet draws it
-            rows = []
-            total = 0.0
-            largest = max((abs(term.moment) for term in lever.terms), default=0.0)
-            strongest = max((abs(term.force) for term in lever.terms), default=0.0)
-            for term in lever.terms:
-                if abs(term.force) <= _ROUNDING * strongest and abs(term.moment) <= _ROUNDING * largest:
-                    continue  # a load of the plan's rounding: no load
-                # a load whose line passes through the pole has no moment, whatever rounding says
-                moment_mm = term.moment / drawn_at if abs(term.moment) > _ROUNDING * largest else 0.0
-                total += moment_mm
-                point = self.letter(velocity, term.image) if term.image else "—"
-                arm = self.mm(term.arm / drawn_at) if term.image else "—"
-                force = self.n(abs(term.force)) if term.image else "—"
-                rows.append([term.name, point, force, arm, self.n(moment_mm)])
-            self.para(self.text["note_lever_intro"])
-            if drawn_at != velocity.scale:
-                scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", self.mark))
-                self.para(self.t("note_lever_scale", scale=scale))
-            header = [self.t("column_force"), self.t("column_point"), f"F, {text['newton']}",
-                      f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
-            self.table(self.t("note_lever_table", number=plan.number), header, rows, "llrrr")
-            pa = abs(velocity.value(driver.joint)) / drawn_at
-            segment = self.segment(velocity, "p", velocity.images[driver.joint])
-            force = abs(total) / pa if pa else math.nan
-            equation = (f"Fy = |Σ(F·h)|/{segment} = {self.n(abs(total))}/{self.mm(pa)} = {self.n(force)} "
-                        f"{text['newton']}")
-            if driver.kind == "crank":
-                length = f"l{driver.pivot}{driver.joint}"
-                equation += (f"; {name} = Fy·{length} = {self.product(self.n(force), self.n(driver.length))} = "
-                             f"{self.n(lever.balancing, 6)} {unit}{self.with_sense(lever.balancing)}")
-            else:
-                equation += f"; {name} = {self.n(lever.balancing, 6)} {unit}"
-            self.para(self.t("note_lever_result", equation=equation))
-            difference = lever.difference_percent(polygons)
-            self.para(self.t("note_lever_difference", name=name, lever=self.n(lever.balancing, 6),
-                             polygons=self.enclosed(self.n(polygons, 6)), delta=self.n(difference, 3)))
-        self.captioned(self.t("note_balancing_table", name=name, number=plan.number),
-                       force_report.balancing_lines(analysis, plan, self.mark))
-
-
-    # The machine's dynamics.
-
-    def machine_dynamics(self, section: int) -> None:
-        dynamics = self.dynamics
-        model, flywheel = dynamics.model, dynamics.flywheel
-        turning = model.turning
-        # The texts of a run once over a swing or a travel, not over a cycle, say so.
-        run = "" if model.cyclic else "_swing" if turning else "_travel"
-        self.heading(2, f"{section}. {self.t('note_dynamics')}")
-        if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
-            self.para(self.t("note_dyn_model_diagrams", count=len(model.coordinate),
-                             inertia=self.n(float(np.mean(model.inertia)))))
-        else:
-            self.para(self.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
-                             count=len(model.coordinate)))
-        if model.plans:
-            self.reductions(model)
-        if turning and model.constant in ("driving", "resisting"):
-            side = model.driving if model.constant == "driving" else -model.resisting
-            self.para(self.t(f"note_dyn_constant_{model.constant}{run}", value=self.n(float(np.mean(side)))))
-        energy = model.energy
-        self.para(self.t(f"note_dyn_energy{run}", low=self.n(float(energy.min())), high=self.n(float(energy.max())),
-                         value=self.n(float(np.ptp(energy)))))
-        if flywheel is not None:
-            self.flywheel(flywheel, float(np.mean(model.inertia)))
-        if dynamics.motion is not None:
-            self.motion(dynamics, flywheel)
-
-    def reductions(self, model) -> None:
-        text = self.text
-        inertia, moment = (("Je", text["kilogram_metre2"]), ("Me", text["newton_metre"])) if model.turning \
-            else (("me", text["kilogram"]), ("Fe", text["newton"]))
-        where = "φ, °" if model.turning else "s, m"
-        header = [text["note_dyn_position"], where,
-                  f"{inertia[0]}, {inertia[1]} ({text['column_by_plan']})", f"{inertia[0]} ({text['column_analytic']})",
-                  text["note_dyn_error"],
-                  f"{moment[0]}, {moment[1]} ({text['column_by_plan']})", f"{moment[0]} ({text['column_analytic']})",
-                  text["note_dyn_error"]]
-        rows = []
-        for plan in model.plans:
-            at = math.degrees(plan.driver) % 360.0 if model.turning else plan.driver
-            rows.append([str(plan.number), self.n(at, 4), self.n(plan.inertia), self.n(plan.inertia_exact),
-                         self.percent(plan.inertia_error_percent), self.n(plan.moment), self.n(plan.moment_exact),
-                         self.percent(plan.moment_error_percent)])
-        self.table(text["note_dyn_table"], header, rows, align="rrrrrrrr")
-
-    def percent(self, value: float) -> str:
-        """An error in percent to a thousandth, as the error tables print it (no −0)."""
-        if not math.isfinite(value):
-            return self.n(value)
-        return f"{round(value, 3) or 0.0:.3f}".replace("-", "−").replace(".", self.mark)
-
-    def flywheel(self, flywheel, mean_inertia: float) -> None:
-        from ..flywheel import omega_to_rpm
-
-        if flywheel.inertia <= 0:
-            self.para(self.t("note_dyn_no_flywheel", delta=self.n(flywheel.delta)))
-            return
-        omega = flywheel.omega_mean
-        self.para(self.t("note_dyn_flywheel", delta=self.n(flywheel.delta), omega=self.n(omega),
-                         rpm=self.n(omega_to_rpm(omega)), work=self.n(flywheel.delta_w_max), mean=self.n(mean_inertia),
-                         approximate=self.n(flywheel.approximate), exact=self.n(flywheel.inertia),
-                         mertsalov=self.n(flywheel.mertsalov)))
-        model = self.dynamics.model
-        self.para(self.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=self.n(flywheel.omega_max), low=self.n(flywheel.omega_min),
-                         high_angle=self.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
-                         low_angle=self.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
-        if flywheel.moved is not None:
-            self.para(self.t("note_dyn_moved", rpm=self.n(flywheel.shaft_rpm), value=self.n(flywheel.moved)))
-
-    def method_reason(self, dynamics) -> str:
-        """Why the integrator was taken, in the note's language (the run's own reason is in English)."""
-        from ..machine_motion import STIFFNESS_THRESHOLD
-
-        number = self.n(dynamics.motion.stiffness, 3)
-        if dynamics.spec.motion.method != "auto":
-            return self.t("note_dyn_reason_asked", number=number)
-        return self.t("note_dyn_reason_stiff" if dynamics.motion.stiff else "note_dyn_reason_not_stiff", number=number,
-                      threshold=self.n(STIFFNESS_THRESHOLD))
-
-    def motion(self, dynamics, flywheel) -> None:
-        motion = dynamics.motion
-        mounted = self.t("note_dyn_motion_flywheel", value=self.n(dynamics.flywheel_inertia)) \
-            if dynamics.flywheel_inertia > 0 else ""
-        self.para(self.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=self.method_reason(dynamics)))
-        steady = motion.steady
-        if steady is None:
-            if motion.stalled_at is None:
-                self.para(self.text["note_dyn_no_steady"])
-            else:
-                self.para(self.t("note_dyn_stalled", time=self.n(motion.stalled_at, 4),
-                                 angle=self.n(motion.stalled_at_angle_deg, 4)))
-            return
-        cycle = steady.cycle
-        self.para(self.t("note_dyn_steady", start_up=self.n(motion.start_up_time(5.0), 4), after=self.n(steady.reached_at, 4),
-                         mean=self.n(steady.mean_speed), high=self.n(cycle.max_speed), low=self.n(cycle.min_speed),
-                         delta=self.n(cycle.delta, 4)))
-        if flywheel is not None and flywheel.inertia > 0:
-            self.para(self.t("note_dyn_steady_sized", sized=self.n(flywheel.delta), delta=self.n(cycle.delta, 4)))
-
 
 def _body(term: str) -> tuple[str, str]:
     """``"vBA"`` → ``("v", "BA")``; the component's suffix is dropped."""

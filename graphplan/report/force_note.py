@@ -1,0 +1,254 @@
+"""The note's section on the force analysis: for each plan position the loads worked out (weights, d'Alembert's
+inertia forces and moments), each group's moment equations and force polygon, the reactions, the balancing
+load by the polygons and on Zhukovsky's lever, and the friction loads; then the balancing load over the cycle.
+
+It is written by the note's own writer (:mod:`graphplan.report.note`), whose numbering, tables, language and
+plan letters it shares; the tables are those ``forces.md`` prints (:mod:`graphplan.report.forces`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Protocol
+
+from ..analysis import Analysis, PlanPosition
+from ..mechanism import Mechanism
+from ..plans import Plan
+from ..render.forces import enlarged_lever_scale
+from ..scales import format_scale
+from . import forces as force_report
+from .forces import ROUNDING
+from .machine_note import Writer as SectionWriter
+
+
+class Writer(SectionWriter, Protocol):
+    """What the force section needs of the note besides a section's words and numbers."""
+
+    analysis: Analysis
+    mechanism: Mechanism
+
+    def captioned(self, caption: str, table_lines: list[str]) -> None: ...
+    def product(self, *factors: str) -> str: ...
+    def with_sense(self, value: float) -> str: ...
+    def mm(self, value: float) -> str: ...
+    def enclosed(self, number: str) -> str: ...
+    def letter(self, plan: Plan, letter: str) -> str: ...
+    def segment(self, plan: Plan, start: str, end: str) -> str: ...
+
+
+def forces_section(note: Writer, section: int) -> None:
+    """Each plan position's force analysis, then the balancing load over the cycle where the scene asks for it."""
+    note.heading(2, f"{section}. {note.t('note_forces')}")
+    note.para(note.t("note_forces_intro", gravity=note.n(note.analysis.scene.gravity)))
+    number = 0
+    for plan in note.analysis.plans:
+        if plan.forces is None:
+            continue
+        number += 1
+        _forces_position(note, f"{section}.{number}", plan)
+    if note.analysis.equilibrium is not None:
+        number += 1
+        name, _ = force_report.balancing_symbol(note.analysis)
+        note.heading(3, f"{section}.{number}. {note.t('note_cycle')}")
+        note.captioned(note.t("note_cycle_table", name=name), force_report.cycle_lines(note.analysis, note.mark))
+
+
+def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
+    text, analysis = note.text, note.analysis
+    note.heading(3, f"{section}. {note.t('position_heading', number=plan.number)}")
+    note.para(note.text["note_loads_formulas"])
+    note.captioned(note.t("note_loads_table", number=plan.number),
+                   force_report.initial_data_lines(analysis, plan, note.mark))
+    details = []
+    for row in force_report.initial_data(analysis, plan):
+        parts = []
+        if row.mass > 0:
+            parts.append(f"G{row.link} = m{row.link}·g = {note.product(note.n(row.mass), note.n(row.gravity))} = "
+                         f"{note.n(row.weight)} {text['newton']}")
+            parts.append(f"Fu{row.link} = m{row.link}·aS{row.link} = "
+                         f"{note.product(note.n(row.mass), note.n(row.centre_acceleration))} = "
+                         f"{note.n(row.inertia_force)} {text['newton']}")
+        if row.inertia > 0 and row.epsilon != 0:
+            moment = (f"Mu{row.link} = J{row.link}·ε{row.link} = "
+                      f"{note.product(note.n(row.inertia), note.n(abs(row.epsilon)))} = "
+                      f"{note.n(row.inertia_moment)} {text['newton_metre']}")
+            moment += note.with_sense(-row.epsilon)
+            parts.append(moment)
+        if parts:
+            details.append(f"- {note.t('note_link', link=row.link)}{note.text['colon']}"
+                           + note.text["semicolon"].join(parts))
+    if details:
+        note.para(*details)
+    external = force_report.external_load_lines(analysis, plan, note.mark)
+    if external:
+        note.para(*external)
+    for group in plan.forces.groups:
+        _force_group(note, plan, group)
+    note.captioned(note.t("note_reactions_table", number=plan.number),
+                   force_report.reaction_lines(analysis, plan, note.mark))
+    _balancing(note, plan)
+    if plan.with_friction is not None:
+        note.para(f"**{text['forces_friction']}.** " + " ".join(force_report.friction_lines(analysis, plan,
+                                                                                             note.mark)))
+        if not plan.with_friction.locked:
+            _friction_loads(note, plan)
+
+
+def _friction_loads(note: Writer, plan: PlanPosition) -> None:
+    """Each pair's friction load worked out at the settled reactions, and the lever that checks them."""
+    text, rubbing = note.text, plan.with_friction
+    lines = []
+    for pair in note.analysis.friction:
+        reaction = abs(rubbing.reactions[pair.reaction].force)
+        if pair.sliding:
+            lines.append(f"- f′{pair.joint} = {note.n(pair.coefficient)}; Ff{pair.source}{pair.target} = "
+                         f"f′{pair.joint}·{pair.reaction} = {note.product(note.n(pair.coefficient), note.n(reaction))}"
+                         f" = {note.n(pair.coefficient * reaction)} {text['newton']}")
+        else:
+            lines.append(f"- ρ{pair.joint} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "
+                         f"{note.n(pair.radius)} {text['unit_m']}; Mf{pair.source}{pair.target} = "
+                         f"ρ{pair.joint}·{pair.reaction} = {note.product(note.n(pair.radius), note.n(reaction))} = "
+                         f"{note.n(pair.radius * reaction)} {text['newton_metre']}")
+    note.para(note.t("note_friction_loads"), *lines)
+    lever = plan.lever_with_friction
+    name, unit = force_report.balancing_symbol(note.analysis)
+    note.para(note.t("note_friction_lever", name=name, value=note.n(lever.balancing), unit=unit,
+                     difference=force_report.percent(lever.balancing, rubbing.balancing, note.mark)))
+
+
+def _force_group(note: Writer, plan: PlanPosition, group) -> None:
+    text = note.text
+    driver = group.label.startswith("I(")
+    key = "note_driver_forces" if driver else "note_group_forces"
+    note.para(f"**{note.t(key, group=group.label)}**")
+    whole = next((equation for equation in group.moments if equation.links), None)
+    if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
+        closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
+        # A turning leg's unknown is the part along it (R34n); a sliding leg's, its guide's reaction (R14); a
+        # slotted leg's, the part of its pin's reaction square to the slot (its block's loads give the rest).
+        key = "note_assur_forces" if all(name.endswith("n") for name in closing) else "note_assur_forces_sliding"
+        if group.projections:
+            key = "note_assur_forces_slot"
+        note.para(note.t(key, point=whole.about, unknown=whole.unknown, closing=", ".join(closing)))
+    if group.projections:
+        note.para(note.t("note_slot_projections"), *(f"- {_projection(note, equation)}" for equation in group.projections))
+    loads = {load.name: load for load in group.loads}
+    lines = []
+    for equation in group.moments:
+        lines.append(f"- {_moment_equation(note, equation, loads)}")
+    if lines:
+        note.para(note.t("note_moment_equations"), *lines)
+    polygon = group.polygon
+    scale = group.scale
+    rows = []
+    for vector in polygon.vectors:
+        force = vector.force
+        rows.append([vector.name, force_report.polar(force, note.mark), note.mm(abs(force) / scale),
+                     note.text[f"note_role_{vector.role}"]])
+    note.para(note.t("note_polygon", equation=polygon.equation, scale=note.n(scale), unit=text["unit_force_scale"]))
+    header = [note.t("column_force"), f"{note.t('column_value')}, {text['newton']} ∠",
+              f"{note.t('column_length')}, {text['millimetre']}", note.t("column_role")]
+    note.table(None, header, rows, "lrrl")
+    if group.found:
+        found = note.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, note.mark)} {text['newton']}"
+                          for item in group.found)
+        note.para(note.t("note_found", reactions=found))
+
+
+def _projection(note: Writer, equation) -> str:
+    """ΣFτ(5) = R35τ + G5τ + Fu5τ = R35τ − 11.77 + 3.1 = 0 ⇒ R35τ = 8.67 N."""
+    names = "".join(f" + {name}τ" for name, _ in equation.components)
+    values = "".join(f" {'−' if value < 0 else '+'} {note.n(abs(value))}" for _, value in equation.components)
+    return (f"ΣFτ({equation.link}) = {equation.unknown}{names} = {equation.unknown}{values} = 0 ⇒ "
+            f"{equation.unknown} = {note.n(equation.value)} {note.text['newton']}")
+
+
+def _moment_equation(note: Writer, equation, loads: Mapping[str, object]) -> str:
+    """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h."""
+    text = note.text
+    total = sum(term.moment for term in equation.terms)
+    couple = equation.unknown.startswith("M") or "·" in equation.unknown
+    unit = text["newton_metre"] if couple else text["newton"]
+    # A moment of the plan's rounding (an inertia moment of a crank at constant speed) is not written.
+    size = max([abs(term.moment) for term in equation.terms] + [abs(equation.value * equation.arm)])
+    shown = [term for term in equation.terms if abs(term.moment) > ROUNDING * size]
+    parts = []
+    for term in shown:
+        load = loads.get(term.name)
+        force = getattr(load, "force", 0j) if load is not None and getattr(load, "is_force", False) else None
+        if force is not None and term.arm:
+            parts.append(f"M({term.name}) = {_sign(term.moment)}{term.name}·h = "
+                         f"{_sign(term.moment)}{note.product(note.n(abs(force)), note.n(term.arm, 4))} = "
+                         f"{note.n(term.moment)} {text['newton_metre']}")
+        else:
+            parts.append(f"M({term.name}) = {note.n(term.moment)} {text['newton_metre']}")
+    terms = "".join(f" {'−' if term.moment < 0 else '+'} {note.n(abs(term.moment))}" for term in shown)
+    sum_text = note.n(total)
+    if couple:
+        line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
+                f"{equation.unknown} = {note.n(equation.value)} {unit}")
+    else:
+        lever = -total / equation.value if equation.value else equation.arm
+        sign = "−" if lever < 0 else ""
+        solved = f"{sum_text}/{note.n(equation.arm, 4)}" if lever < 0 else f"−({sum_text})/{note.n(equation.arm, 4)}"
+        line = (f"ΣM{equation.about}({equation.bodies}) = {sign}{equation.unknown}·{note.n(equation.arm, 4)}{terms} = 0"
+                f" ⇒ {equation.unknown} = {solved} = {note.n(equation.value)} {unit}")
+        if equation.value < 0:
+            line += " " + note.t("note_sense_reversed", name=equation.unknown)
+    return note.text["semicolon"].join([*parts, line])
+
+
+def _sign(value: float) -> str:
+    return "−" if value < 0 else ""
+
+
+def _balancing(note: Writer, plan: PlanPosition) -> None:
+    text, analysis = note.text, note.analysis
+    name, unit = force_report.balancing_symbol(analysis)
+    driver = note.mechanism.driver
+    polygons = plan.forces.balancing
+    note.para(note.t("note_balancing_polygons", name=name, value=note.n(polygons, 6), unit=unit,
+                     sense=note.with_sense(polygons) if driver.kind == "crank" else ""))
+    lever = plan.lever
+    if lever is not None:
+        velocity = plan.velocity
+        drawn_at = enlarged_lever_scale(velocity) or velocity.scale  # as the force sheet draws it
+        rows = []
+        total = 0.0
+        largest = max((abs(term.moment) for term in lever.terms), default=0.0)
+        strongest = max((abs(term.force) for term in lever.terms), default=0.0)
+        for term in lever.terms:
+            if abs(term.force) <= ROUNDING * strongest and abs(term.moment) <= ROUNDING * largest:
+                continue  # a load of the plan's rounding: no load
+            # a load whose line passes through the pole has no moment, whatever rounding says
+            moment_mm = term.moment / drawn_at if abs(term.moment) > ROUNDING * largest else 0.0
+            total += moment_mm
+            point = note.letter(velocity, term.image) if term.image else "—"
+            arm = note.mm(term.arm / drawn_at) if term.image else "—"
+            force = note.n(abs(term.force)) if term.image else "—"
+            rows.append([term.name, point, force, arm, note.n(moment_mm)])
+        note.para(note.text["note_lever_intro"])
+        if drawn_at != velocity.scale:
+            scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", note.mark))
+            note.para(note.t("note_lever_scale", scale=scale))
+        header = [note.t("column_force"), note.t("column_point"), f"F, {text['newton']}",
+                  f"h, {text['millimetre']}", f"F·h, {text['newton']}·{text['millimetre']}"]
+        note.table(note.t("note_lever_table", number=plan.number), header, rows, "llrrr")
+        pa = abs(velocity.value(driver.joint)) / drawn_at
+        segment = note.segment(velocity, "p", velocity.images[driver.joint])
+        force = abs(total) / pa if pa else math.nan
+        equation = (f"Fy = |Σ(F·h)|/{segment} = {note.n(abs(total))}/{note.mm(pa)} = {note.n(force)} "
+                    f"{text['newton']}")
+        if driver.kind == "crank":
+            length = f"l{driver.pivot}{driver.joint}"
+            equation += (f"; {name} = Fy·{length} = {note.product(note.n(force), note.n(driver.length))} = "
+                         f"{note.n(lever.balancing, 6)} {unit}{note.with_sense(lever.balancing)}")
+        else:
+            equation += f"; {name} = {note.n(lever.balancing, 6)} {unit}"
+        note.para(note.t("note_lever_result", equation=equation))
+        difference = lever.difference_percent(polygons)
+        note.para(note.t("note_lever_difference", name=name, lever=note.n(lever.balancing, 6),
+                         polygons=note.enclosed(note.n(polygons, 6)), delta=note.n(difference, 3)))
+    note.captioned(note.t("note_balancing_table", name=name, number=plan.number),
+                   force_report.balancing_lines(analysis, plan, note.mark))
