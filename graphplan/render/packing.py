@@ -31,6 +31,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..errors import SceneError
+from .force_rows import HEADING_LAYER
 from .formats import BIGGER, PADDING_MM, PageGeometry, Rect, check_sheet, holds, orientations, page_geometry
 from .primitives import Layer, bounds
 
@@ -74,6 +75,11 @@ class Panel:
         """The drawing whole as arranged, then as each alternative arranges it."""
         return (self, *self.alternatives)
 
+    def without_heading(self) -> Panel:
+        """The drawing with its heading left off, as it stands on the sheet of the part it goes on from."""
+        return replace(self, layers=tuple(layer for layer in self.layers if layer.name != HEADING_LAYER),
+                       alternatives=tuple(way.without_heading() for way in self.alternatives))
+
 
 def smallest_drawings(parts: Sequence[Panel]) -> list[Panel]:
     """``parts`` cut into their smallest drawings: each part's own parts, or the part where it has none."""
@@ -102,6 +108,9 @@ class Page:
         take; so the drawings grow together as a block of the sheet's shape.
         False when the panel does not fit.
         """
+        if panel.continues and any(placed.name == panel.continues for placed, _, _ in self.placed):
+            # Under the heading of the part it goes on from, which it would only repeat as "continued".
+            panel = panel.without_heading()
         spots = ((spot, way) for way in panel.ways for spot in [self._best_spot(way)] if spot is not None)
         found = next(spots, None)
         if found is None:

@@ -51,7 +51,6 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
-from .force_rows import HEADING_LAYER
 from .formats import (
     FORMATS,
     Rect,
@@ -766,12 +765,8 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
                                   sheet=first + k, sheets=count, language=locale)
         layers: list[Layer] = []
         placed: dict[str, Rect] = {}
-        names = {panel.name for panel, _, _ in page.placed}
         for panel, rect, (dx, dy) in page.placed:
-            drawn = panel.layers
-            if panel.continues in names:  # its heading would say "continued" beside the part it goes on from
-                drawn = tuple(layer for layer in drawn if layer.name != HEADING_LAYER)
-            layers.extend(prefixed(moved_layers(drawn, dx, dy), panel.name))
+            layers.extend(prefixed(moved_layers(panel.layers, dx, dy), panel.name))
             placed[panel.name] = rect
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
