@@ -583,6 +583,16 @@ def test_a_force_sheet_no_sheet_holds_whole_goes_in_parts_in_order_each_under_it
     assert {f"{row}-caption" for row in rows} <= {item.name for item in whole.layers}
 
 
+def test_a_sheet_of_parts_of_one_drawing_is_named_after_it_in_the_title_block(analyses):
+    """On A3 the engine's force sheet of position 2 goes in parts, the first two on one sheet: its title block
+    names the drawing they are parts of, as the sheets with one part on them do, not the kind of drawing."""
+    sheets = course_sheets(analyses["engine_slider_crank"], "A3")
+    parts = [sheet for sheet in sheets if all(re.fullmatch(r"forces-2(-\d+)?", name) for name in sheet.panels)]
+    assert any(len(sheet.panels) > 1 for sheet in parts) and len(parts) > 1
+    for sheet in parts:
+        assert "Force analysis, position 2" in [text.text for text in texts([layer(sheet, "title-block")])]
+
+
 def test_a_force_sheet_too_big_in_two_columns_stands_whole_with_each_polygon_under_its_group(analyses):
     """On A1 the shaper's force sheet of position 10 is too tall in two columns; with each group's polygon
     under it, the groups and the lever side by side, it stands whole on one sheet under its title."""

@@ -775,10 +775,12 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
 
 
 def _drawing_name(page: Page) -> str:
-    """What a page shows, when it is one drawing's: the parts of one, or one whole alone."""
+    """What a page shows, when it is one drawing's: the parts of one (on pages of their own, or parts that
+    share a page), or one whole alone."""
     if page.label:
         return page.label
-    return page.placed[0][0].label if len(page.placed) == 1 else ""
+    names = {panel.label for panel, _, _ in page.placed}
+    return names.pop() if len(names) == 1 else ""
 
 
 def _unframed(panel: Panel, number: int, count: int) -> Sheet:
