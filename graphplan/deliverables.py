@@ -25,6 +25,7 @@ from . import kinematic_diagrams
 from .analysis import Analysis
 from .errors import GraphplanError, SceneError
 from .locale import strings
+from .reader import check_choice
 from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene
 
@@ -96,10 +97,8 @@ def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None =
     """
     asked: list[str] | None = None
     if only is not None:
-        asked = list(only)
-        for k, piece in enumerate(asked):
-            if piece not in PIECES:
-                raise SceneError(f"{where}[{k}]", f"must be one of {', '.join(PIECES)}", piece)
+        # Checked as the scene's [output] include is, with the piece a misspelling was meant to be.
+        asked = [check_choice(piece, f"{where}[{k}]", PIECES) for k, piece in enumerate(only)]
     elif scene.include is not None:
         asked, where = list(scene.include), "output.include"
     if asked is None:
@@ -414,10 +413,7 @@ def _dxf(drawing: Drawing) -> bytes:
 
 def check_formats(formats: Iterable[str], where: str = "--format") -> tuple[str, ...]:
     """``formats`` checked against :data:`FORMATS`; SVG is always written."""
-    asked = list(formats)
-    for k, kind in enumerate(asked):
-        if kind not in FORMATS:
-            raise SceneError(f"{where}[{k}]", f"must be one of {', '.join(FORMATS)}", kind)
+    asked = [check_choice(kind, f"{where}[{k}]", FORMATS) for k, kind in enumerate(formats)]
     return tuple(kind for kind in FORMATS if kind == "svg" or kind in asked)
 
 

@@ -114,7 +114,19 @@ def test_unknown_pieces_and_formats_are_refused_with_their_place(tmp_path, capsy
     assert "--only[1]: must be one of positions, velocity" in capsys.readouterr().err
     status, out = run(tmp_path, "--format", "svg,jpg")
     assert status == 2 and not out.exists()
-    assert "--format[1]: must be one of svg, png, pdf, dxf, docx (got 'jpg')" in capsys.readouterr().err
+    assert "--format[1]: must be one of svg, png, pdf, dxf, docx; did you mean 'png'? (got 'jpg')" in \
+        capsys.readouterr().err
+
+
+def test_a_misspelt_piece_or_format_names_what_was_meant(tmp_path, capsys):
+    """As a misspelt value in the scene does (its [output] include among them)."""
+    status, out = run(tmp_path, "--only", "velocit")
+    assert status == 2 and not out.exists()
+    assert "; did you mean 'velocity'? (got 'velocit')" in capsys.readouterr().err
+    status, out = run(tmp_path, "--format", "svg,pnng")
+    assert status == 2 and not out.exists()
+    assert "--format[1]: must be one of svg, png, pdf, dxf, docx; did you mean 'png'? (got 'pnng')" in \
+        capsys.readouterr().err
 
 
 def test_the_locale_option_turns_the_drawings_language(tmp_path):
