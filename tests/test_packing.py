@@ -71,3 +71,38 @@ def test_a_part_on_a_sheet_of_its_own_keeps_its_heading():
     assert len(pages) == 2
     (second, _, _), = pages[1].placed
     assert [layer.name for layer in second.layers] == [HEADING_LAYER, "drawing"]
+
+
+def drawing(name: str, width: float, height: float, *others: tuple[float, float]) -> Panel:
+    """A drawing ``width`` × ``height`` mm, with other ways of arranging it of the sizes ``others``."""
+    return Panel(name, (box("drawing", width, height),),
+                 alternatives=tuple(Panel(name, (box("drawing", *size),)) for size in others))
+
+
+def test_a_page_laid_out_afresh_grows_down_a_column_where_a_block_leaves_no_room_for_the_next_drawing():
+    """A1 (ESKD) with the sizes of a V-twin's kinematics: the plan of positions, a plan sheet (a row 538 mm
+    long, or its mechanism above its plans) and the kinematic diagrams. Grown as a block the plan sheet stands
+    beside the plan of positions and leaves 800 − 814 mm for the diagrams; with the plan sheet under the plan
+    of positions all three share the sheet, as a course project's first sheet has them."""
+    panels = [drawing("positions", 163, 123), drawing("plan-3", 538, 170, (315, 313)),
+              drawing("diagrams", 306, 312)]
+    pages = pack(panels, "A1", "eskd")
+    assert len(pages) == 1
+    rects = {panel.name: rect for panel, rect, _ in pages[0].placed}
+    positions, plan, diagrams = rects["positions"], rects["plan-3"], rects["diagrams"]
+    assert plan[3] - plan[1] == 313 and plan[3] <= positions[1] - GAP_MM + 1e-9  # under the plan of positions
+    assert diagrams[0] >= max(positions[2], plan[2]) + GAP_MM - 1e-9  # beside both
+    # Each stands clear of the others and of the title block, inside the area drawings may take.
+    area, block = pages[0].area, pages[0].block
+    for name, rect in rects.items():
+        assert area[0] <= rect[0] and rect[2] <= area[2] and area[1] <= rect[1] and rect[3] <= area[3], name
+        assert rect[2] <= block[0] or rect[1] >= block[3], name
+
+
+def test_a_page_grows_as_a_block_where_that_leaves_room():
+    """Where the next drawing fits beside a block, the page keeps its first growth (the sheets of every
+    fixture are laid out as before)."""
+    panels = [drawing("positions", 163, 123), drawing("plan-3", 538, 170, (315, 313)),
+              drawing("diagrams", 200, 312)]
+    pages = pack(panels, "A1", "eskd")
+    assert len(pages) == 1 and pages[0].growth == "block"

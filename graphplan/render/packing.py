@@ -37,6 +37,10 @@ from .primitives import Layer, bounds
 
 # Space between two drawings (mm).
 GAP_MM = 15.0
+# How a page's drawings grow as each is placed (:meth:`Page.place`): as a block of the sheet's shape, which
+# fills a page, or down a column or along a row, which a page is laid out afresh in where a block leaves no room
+# for the next drawing.
+GROWTHS = ("block", "column", "row")
 
 
 @dataclass(frozen=True)
@@ -98,15 +102,18 @@ class Page:
     label: str = ""
     # The drawings placed, each with every way it may stand, for the page to be laid out afresh.
     drawings: list[Panel] = field(default_factory=list)
+    growth: str = "block"
 
     def place(self, panel: Panel) -> bool:
         """Put ``panel``, arranged in the first of its ways that fits, where the drawings stay most compact,
         then as high and as far left as can be.
 
-        Compact is measured as the share of the area (its width or its
-        height, whichever is more used) that the drawings' common bounds
-        take; so the drawings grow together as a block of the sheet's shape.
-        False when the panel does not fit.
+        Compact is measured by the share of the area's width and of its
+        height that the drawings' common bounds take: as a ``block`` the
+        larger share, so the drawings grow together as a block of the
+        sheet's shape; as a ``column`` the share of the width, then of the
+        height; as a ``row`` the other way round (:data:`GROWTHS`).  False
+        when the panel does not fit.
         """
         if panel.continues and any(placed.name == panel.continues for placed, _, _ in self.placed):
             # Under the heading of the part it goes on from, which it would only repeat as "continued".
@@ -142,11 +149,20 @@ class Page:
                     continue
                 union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
                          max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
-                share = max((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
-                key = (round(share, 3), -top, left)
+                key = self._compactness((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
+                key += (-top, left)
                 if best is None or key < best[0]:
                     best = (key, rect)
         return best[1] if best is not None else None
+
+    def _compactness(self, width_share: float, height_share: float) -> tuple[float, ...]:
+        """How compact drawings are whose common bounds take these shares of the area, as the page grows
+        (the smaller the more compact)."""
+        if self.growth == "column":
+            return round(width_share, 3), round(height_share, 3)
+        if self.growth == "row":
+            return round(height_share, 3), round(width_share, 3)
+        return (round(max(width_share, height_share), 3),)
 
     def fits_empty(self, panel: Panel) -> bool:
         geometry = PageGeometry(self.size, self.frame, self.block, self.area)
@@ -263,18 +279,25 @@ def _room_by_rearranging(pages: list[Page], earliest: int, panel: Panel) -> int 
 
 def _rearranged(page: Page, panel: Panel) -> Page | None:
     """``page`` laid out afresh with ``panel`` added, its drawings in other ways (a plan sheet with its
-    mechanism above its plans, say) where only that makes room; None when no arrangement does.
+    mechanism above its plans, say) or grown otherwise (down a column where a block leaves no room beside the
+    last drawing, say) where only that makes room; None when nothing does.
 
     The arrangements that change fewest drawings are tried first, so that
-    drawings keep the way they were placed in where that costs no sheet.
+    drawings keep the way they were placed in where that costs no sheet,
+    and the page's own growth before the others.
     """
     drawings = [*page.drawings, panel]
     choices = [[replace(way, alternatives=()) for way in drawing.ways] for drawing in drawings]
-    for picked in itertools.islice(_arrangements([len(ways) for ways in choices]), _MOST_REARRANGEMENTS):
-        fresh = Page(page.size, page.frame, page.block, page.area)
-        if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
-            fresh.drawings = drawings
-            return fresh
+    counts = [len(ways) for ways in choices]
+    for growth in sorted(GROWTHS, key=lambda growth: growth != page.growth):
+        # Every drawing in its first way was tried in the page's own growth as the page was filled.
+        tried = _arrangements(counts) if growth == page.growth else \
+            itertools.chain([(0,) * len(counts)], _arrangements(counts))
+        for picked in itertools.islice(tried, _MOST_REARRANGEMENTS):
+            fresh = Page(page.size, page.frame, page.block, page.area, growth=growth)
+            if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
+                fresh.drawings = drawings
+                return fresh
     return None
 
 
