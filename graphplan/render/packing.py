@@ -14,9 +14,11 @@ sheet as high as one of its kind unless all to the right of it.  A plan sheet
 of one position stands as a row (mechanism, velocity plan, acceleration
 plan) wherever that fits, else with its mechanism above its plans or
 beside them, so that it may join a sheet with room of another shape, and
-the drawings already on a sheet are arranged afresh in their other ways
-where only that makes room for the next (fewest changed first); a
-force sheet stands in one column of rows, else in two.  A panel too big for
+the drawings already on a sheet are arranged afresh in their other ways,
+or grown down a column or along a row instead of as a block, where only
+that makes room for the next (fewest changed first); a force sheet stands
+in one column of rows, else in two, and a part of it that goes on from a
+part on the same sheet stands under that part's heading, without its own.  A panel too big for
 an empty sheet every way it may stand is placed part by part (a plan sheet
 of one position as its mechanism, velocity plan and acceleration plan; a
 force sheet as its groups, each beside its polygon, and the lever), on
@@ -141,7 +143,7 @@ class Page:
         tops = {self.area[3], self.block[3] + PADDING_MM + height, *(r[1] - GAP_MM for r in rects),
                 *(r[3] for r in rects)}
         area_width, area_height = self.area[2] - self.area[0], self.area[3] - self.area[1]
-        best: tuple[tuple[float, float, float], Rect] | None = None
+        best: tuple[tuple[float, ...], Rect] | None = None
         for top in tops:
             for left in xs:
                 rect = (left, top - height, left + width, top)
