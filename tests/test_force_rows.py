@@ -91,6 +91,19 @@ def test_a_part_takes_as_many_rows_as_its_sheet_holds():
     assert [list(part.fields) for part in parts] == [["drawing-0", "drawing-1"], ["drawing-2", "drawing-3"]]
 
 
+def test_of_as_many_parts_the_cuts_keep_most_groups_with_their_polygons():
+    """Two groups each too wide beside its polygon (100 + 15 + 150 mm on a 200 mm sheet) stand drawing by
+    drawing in three parts. The least paper cuts both groups from their polygons (group a | polygon a, group b |
+    polygon b, lever); the first group and its polygon are too tall for one part, but the second stays whole
+    with the first polygon, as many parts."""
+    rows = Rows([[box("body-a", 100.0, 200.0), box("polygon-a", 150.0, 40.0)],
+                 [box("body-b", 100.0, 40.0), box("polygon-b", 150.0, 40.0)], [box("lever", 150.0, 150.0)]], HEADING)
+    fits = within(200.0, 300.0)
+    parts = rows.parts(fits)
+    assert parts is not None and all(fits(*size(part)) for part in parts)
+    assert [list(part.fields) for part in parts] == [["body-a"], ["polygon-a", "body-b", "polygon-b"], ["lever"]]
+
+
 def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_tall_for_a_heading_alone():
     """A group 100 × 300 mm beside its polygon is too wide for a 180 mm sheet and, stacked, too tall; alone
     the group fits the 330 mm height only without the heading's 30 mm."""

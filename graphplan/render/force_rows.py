@@ -94,9 +94,12 @@ class _Block:
 class Rows:
     """The rows of one force sheet, each laid out once side by side and once stacked."""
 
-    def __init__(self, rows: Sequence[Sequence[Drawing]], heading: Heading) -> None:
+    def __init__(self, rows: Sequence[Sequence[Drawing]], heading: Heading, origins: Sequence[int] = ()) -> None:
         self.drawings = [tuple(row) for row in rows]
         self.heading = heading
+        # The row of the sheet each row was cut from (:meth:`_apart`), so that a cut keeps them together where
+        # it can: a group cut free and its polygon on one sheet.
+        self.origins = tuple(origins) or tuple(range(len(self.drawings)))
         self._heading_sizes: dict[tuple[str, float], tuple[float, float]] = {}
         self.beside = [_side_by_side(row, heading.size) for row in rows]
         # A row of one drawing (the lever) stands the same either way.
@@ -142,9 +145,11 @@ class Rows:
         return (tuple((k, False) for k in range(cut)), tuple((k, False) for k in range(cut, len(heights))))
 
     def parts(self, fits: Fits) -> list[Arrangement] | None:
-        """The rows in the fewest parts in order, each standing the way that ``fits`` and takes least paper;
-        the first part under the heading's title, the others under its ``continued``.  Where a row fits in
-        no way, every drawing stands as a row of its own (a polygon may then stand apart from its group),
+        """The rows in the fewest parts in order, each standing the way that ``fits`` and takes least paper
+        (of as many parts, those that cut fewest rows apart); the first part under the heading's title, the
+        others under its ``continued``.  Where a row fits in
+        no way, every drawing stands as a row of its own (a polygon may then stand apart from its group,
+        where no cut of as many parts keeps them together),
         and a drawing too big to stand under a heading stands alone without one; None where a drawing does
         not fit even so (:meth:`unheld`)."""
         found = self._parts(fits)
@@ -167,7 +172,8 @@ class Rows:
 
     def _apart(self) -> Rows:
         """Every drawing a row of its own."""
-        return Rows([[drawing] for row in self.drawings for drawing in row], self.heading)
+        return Rows([[drawing] for row in self.drawings for drawing in row], self.heading,
+                    [origin for origin, row in zip(self.origins, self.drawings, strict=True) for _ in row])
 
     def _parts(self, fits: Fits, headless: bool = False) -> list[Arrangement] | None:
         """:meth:`parts` with the rows as they are; where ``headless``, a row that fits under no heading stands
@@ -189,14 +195,16 @@ class Rows:
             return best_of[start, stop]
 
         for pieces in range(2, count + 1):
-            least: tuple[float, list[tuple[Shape, str]]] | None = None
+            least: tuple[tuple[int, float], list[tuple[Shape, str]]] | None = None
             for cuts in itertools.combinations(range(1, count), pieces - 1):
                 chosen = [best(a, b) for a, b in itertools.pairwise((0, *cuts, count))]
                 if any(choice is None for choice in chosen):
                     continue
-                area = sum(choice[0] for choice in chosen if choice is not None)
-                if least is None or area < least[0]:
-                    least = (area, [(choice[1], choice[2]) for choice in chosen if choice is not None])
+                # Of as many parts, the fewest that cut a row of the sheet apart, then the least paper.
+                cost = (sum(self.origins[cut - 1] == self.origins[cut] for cut in cuts),
+                        sum(choice[0] for choice in chosen if choice is not None))
+                if least is None or cost < least[0]:
+                    least = (cost, [(choice[1], choice[2]) for choice in chosen if choice is not None])
             if least is not None:
                 # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
                 headed = next((k for k, (_, title) in enumerate(least[1]) if title != HEADLESS), None)
