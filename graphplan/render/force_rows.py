@@ -147,9 +147,8 @@ class Rows:
     def parts(self, fits: Fits) -> list[Arrangement] | None:
         """The rows in the fewest parts in order, each standing the way that ``fits`` and takes least paper
         (of as many parts, those that cut fewest rows apart); the first part under the heading's title, the
-        others under its ``continued``.  Where a row fits in
-        no way, every drawing stands as a row of its own (a polygon may then stand apart from its group,
-        where no cut of as many parts keeps them together),
+        others under its ``continued``.  Where a row fits in no way, every drawing stands as a row of its own
+        (a polygon may then stand apart from its group, where no cut of as many parts keeps them together),
         and a drawing too big to stand under a heading stands alone without one; None where a drawing does
         not fit even so (:meth:`unheld`)."""
         found = self._parts(fits)
