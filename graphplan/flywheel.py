@@ -41,6 +41,7 @@ from scipy.integrate import cumulative_trapezoid, trapezoid
 from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_model
 from .errors import SceneError
 from .reader import Table, check_xy
+from .units import RPM
 
 # A cycle whose work is left over by more than this share of the work done is not steady.
 _BALANCE = 1e-6
@@ -178,11 +179,11 @@ def speed_limits(omega_mean: float, delta: float) -> tuple[float, float]:
 
 def rpm_to_omega(rpm: float) -> float:
     """ω = π·n/30."""
-    return rpm * math.pi / 30.0
+    return rpm * RPM
 
 
 def omega_to_rpm(omega: float) -> float:
-    return omega * 30.0 / math.pi
+    return omega / RPM
 
 
 # --- a linkage's flywheel -----------------------------------------------------------------------
@@ -375,12 +376,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     delta = table.number("delta", None, positive=True)
     if delta is not None and not delta < 2:
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
-    if table.has("rpm") and table.has("omega"):
-        raise SceneError(table.path, "give rpm or omega (the mean speed), not both")
-    omega = table.number("omega", None, positive=True)
-    rpm = table.number("rpm", None, positive=True)
-    if rpm is not None:
-        omega = rpm_to_omega(rpm)
+    omega = table.speed(None, positive=True)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     count = table.integer("count", DEFAULT_COUNT, minimum=12, maximum=100_000)
     if not linkage:

@@ -16,6 +16,7 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from .errors import SceneError
+from .units import RPM
 
 _REQUIRED = object()
 
@@ -144,13 +145,17 @@ class Table:
         if key in self.data:
             return self.data[key]
         if default is _REQUIRED:
-            # A required key that is missing is often there, misspelt: name the misspelling.
-            strangers = [k for k in self.data if k not in self._taken]
+            self._misspelt(key)
+            raise SceneError(self.where(key), "is required but missing")
+        return default
+
+    def _misspelt(self, *keys: str) -> None:
+        """A required key that is missing is often there, misspelt: name the misspelling of one of ``keys``."""
+        strangers = [k for k in self.data if k not in self._taken]
+        for key in keys:
             close = difflib.get_close_matches(key, strangers, n=1, cutoff=0.7)
             if close:
                 raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
-            raise SceneError(self.where(key), "is required but missing")
-        return default
 
     def _take(self, key: str, default: Any, check: Callable[[Any, str], Any]) -> Any:
         value = self.raw(key, default)
@@ -167,6 +172,25 @@ class Table:
             if non_negative and value < 0:
                 raise SceneError(self.where(key), "must be >= 0", self.data[key])
         return value
+
+    def speed(self, default: Any = _REQUIRED, *, omega_key: str = "omega", rpm_key: str = "rpm",
+              positive: bool = False, non_negative: bool = False, sense: str = "") -> Any:
+        """A speed in rad/s, given in rad/s under ``omega_key`` or in rev/min under ``rpm_key``, not both.
+
+        A required speed that is missing is named by both keys, with ``sense``
+        (how it is signed, where it is) after them.
+        """
+        if self.has(omega_key) and self.has(rpm_key):
+            raise SceneError(self.where(rpm_key), f"give either {omega_key} or {rpm_key}, not both")
+        if self.has(rpm_key):
+            self._taken.add(omega_key)  # still a valid key, for the did-you-mean of a misspelt one
+            return self.number(rpm_key, positive=positive, non_negative=non_negative) * RPM
+        self._taken.add(rpm_key)
+        if self.has(omega_key) or default is not _REQUIRED:
+            return self.number(omega_key, default, positive=positive, non_negative=non_negative)
+        self._misspelt(omega_key, rpm_key)
+        raise SceneError(self.where(omega_key),
+                         f"is required but missing: give {omega_key} (rad/s) or {rpm_key} (rev/min){sense}")
 
     def integer(self, key: str, default: Any = _REQUIRED, *, minimum: int | None = None,
                 maximum: int | None = None) -> Any:

@@ -36,11 +36,11 @@ from numpy.typing import ArrayLike
 
 from .errors import SceneError
 from .reader import Table, check_choice
+from .units import RPM
 
 Scalar = float | np.ndarray
 Support = Literal["simply_supported", "cantilever"]
 SUPPORTS = ("simply_supported", "cantilever")
-RPM = 2 * math.pi / 60  # rad/s per rev/min
 
 
 def _array(argument: str, value: ArrayLike, *, least: float | None = None, strict: bool = False) -> np.ndarray:
@@ -375,7 +375,7 @@ def read_vibration(table: Table) -> VibrationSpec:
     mass = table.number("mass", positive=True)
     unbalance = _unbalance(table, mass)
     stiffness = _stiffness(table)
-    omega = _speed(table)
+    omega = table.speed(positive=True)
     zeta = _damping(table, stiffness, mass)
     wanted = table.number("transmissibility", None, positive=True)
     base = table.number("base_amplitude", None, positive=True)
@@ -440,12 +440,6 @@ def _stiffness(table: Table) -> float:
         raise SceneError(shaft.where("position"), f"the disc must lie on the shaft, at most length ({length:g} m) "
                                                   "from its fixed end", position)
     return shaft_stiffness(modulus, second, length, position, support)
-
-
-def _speed(table: Table) -> float:
-    if _one_of(table, "omega", "rpm") == "omega":
-        return table.number("omega", positive=True)
-    return table.number("rpm", positive=True) * RPM
 
 
 def _damping(table: Table, stiffness: float, mass: float) -> float:

@@ -280,7 +280,7 @@ def test_dynamics_table_is_read_with_its_keys_checked():
     ({"detla": 0.05}, "dynamics.detla: unknown key; did you mean 'delta'?"),
     ({"delta": 0.0}, "dynamics.delta: must be > 0 (got 0.0)"),
     ({"delta": 2.5}, "dynamics.delta: must be < 2"),
-    ({"rpm": 100.0, "omega": 10.0}, "dynamics: give rpm or omega (the mean speed), not both"),
+    ({"rpm": 100.0, "omega": 10.0}, "dynamics.rpm: give either omega or rpm, not both"),
     ({"constant": "motor"}, "dynamics.constant: must be one of auto, driving, resisting, none"),
     ({"count": 5}, "dynamics.count: must be >= 12 (got 5)"),
     ({"flywheel_shaft_rpm": "fast"}, "dynamics.flywheel_shaft_rpm: must be a number, not a string"),

@@ -333,13 +333,15 @@ CASES: list[Case] = [
     Case("crank-length-negative", {"driver.length": -0.175}, "driver.length", "must be > 0 (got -0.175)"),
     Case("crank-length-nan", {"driver.length": NAN}, "driver.length", "must be a finite number (got nan)"),
     Case("crank-length-inf", {"driver.length": INF}, "driver.length", "must be a finite number (got inf)"),
-    Case("crank-omega-and-rpm", {"driver.rpm": -162.3}, "driver", "give omega or rpm, not both"),
+    Case("crank-omega-and-rpm", {"driver.rpm": -162.3}, "driver.rpm", "give either omega or rpm, not both"),
     Case("crank-omega-zero", {"driver.omega": 0.0}, "driver.omega", "must not be zero: the driver must move"),
     Case("crank-omega-integer-zero", {"driver.omega": 0}, "driver.omega", "must not be zero: the driver must move"),
     Case("crank-rpm-zero", {"driver.omega": DELETE, "driver.rpm": 0.0}, "driver.rpm",
          "must not be zero: the driver must move"),
     Case("crank-omega-missing", {"driver.omega": DELETE}, "driver.omega",
-         "is required but missing: give omega (rad/s) or rpm, signed (counter-clockwise positive)"),
+         "is required but missing: give omega (rad/s) or rpm (rev/min), signed (counter-clockwise positive)"),
+    Case("crank-rpm-misspelt", {"driver.omega": DELETE, "driver.rpms": -162.3}, "driver.rpms",
+         "unknown key; did you mean 'rpm'?"),
     Case("crank-omega-string", {"driver.omega": "-17"}, "driver.omega", "must be a number, not a string (got '-17')"),
     Case("crank-omega-nan", {"driver.omega": NAN}, "driver.omega", "must be a finite number (got nan)"),
     Case("crank-omega-minus-inf", {"driver.omega": -INF}, "driver.omega", "must be a finite number (got -inf)"),
@@ -1108,6 +1110,17 @@ def test_misspelt_omega_suggests_omega() -> None:
     driver = {k if k != "omega" else "omgea": v for k, v in RATCHET["driver"].items()}
     stage, error = first_error(to_toml(variant(RATCHET, {"driver": driver})))
     assert stage == "load" and "omgea" in str(error)
+
+
+@pytest.mark.parametrize("table", ["driver", "vibration", "dynamics"])
+def test_a_speed_in_rev_per_min_is_read_in_rad_per_s(table: str) -> None:
+    """One revolution a second: 60 rpm is 2π rad/s, wherever a speed is given either way."""
+    from graphplan.reader import Table
+
+    read = Table({"rpm": 60.0}, table).speed(positive=table != "driver")
+    assert read == pytest.approx(2 * math.pi, rel=1e-15)
+    assert Table({"omega": 3.5}, table).speed() == 3.5
+    assert Table({}, table).speed(None) is None
 
 
 def test_frame_line_through_unknown_point() -> None:

@@ -318,7 +318,7 @@ def test_a_table_with_a_shaft_for_the_stiffness():
     ({"mass": 1, "unbalance": 0.01, "omega": 10}, r"vibration.stiffness: is required \(or shaft\)"),
     ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "shaft": {}, "omega": 10},
      "vibration.shaft: give either stiffness or shaft, not both"),
-    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4}, r"vibration.omega: is required \(or rpm\)"),
+    ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4}, r"vibration.omega: is required but missing: give omega \(rad/s\) or rpm \(rev/min\)"),
     ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": 10, "rpm": 100},
      "vibration.rpm: give either omega or rpm"),
     ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": -10}, r"vibration.omega: must be > 0 \(got -10\)"),

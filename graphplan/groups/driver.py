@@ -52,21 +52,7 @@ class Crank:
         pivot = table.string("pivot")
         joint = table.string("joint")
         length = table.number("length", positive=True)
-        if table.has("omega") and table.has("rpm"):
-            raise SceneError(table.path, "give omega or rpm, not both")
-        if table.has("rpm"):
-            omega = table.number("rpm") * math.pi / 30.0
-            table.raw("omega", None)
-        else:
-            try:
-                omega = table.number("omega")
-            except SceneError as error:
-                if table.has("omega") or error.where != table.where("omega"):
-                    raise  # a wrong value, or a misspelt key named as such
-                # The crank's speed may be given either way: the message names both.
-                raise SceneError(error.where, "is required but missing: give omega (rad/s) or rpm, signed "
-                                 "(counter-clockwise positive)") from None
-            table.raw("rpm", None)
+        omega = table.speed(sense=", signed (counter-clockwise positive)")
         if omega == 0.0:
             raise SceneError(table.where("rpm" if table.has("rpm") else "omega"), "must not be zero: the driver must move")
         epsilon = table.number("epsilon", 0.0)

@@ -45,11 +45,12 @@ flywheel relation ``ΔWmax = Je·ωm²·δ`` is exact at constant ``Je``; the ti
 cycle, ``2π/T``, is given as well.
 """
 
+from ..units import RPM
 from .cycles import Cycle, SteadyState, find_cycles, find_steady_state
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .integrator import MOST_EVALUATIONS
 from .method import STIFFNESS_THRESHOLD, choose_method, is_stiff, running_speed
-from .shaft import RPM, TWO_PI, Machine, periodic_spline
+from .shaft import TWO_PI, Machine, periodic_spline
 from .simulation import METHODS, MOST_CYCLES, SMALLEST_RTOL, ClutchEngagement, MachineMotion, engage_clutch, simulate
 from .spec import MOST_TURNS, MotionSpec, read_motion
 

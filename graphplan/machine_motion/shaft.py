@@ -12,8 +12,6 @@ from numpy.typing import ArrayLike
 from scipy.interpolate import BSpline, make_interp_spline
 
 TWO_PI = 2.0 * math.pi
-#: rad/s in one revolution per minute.
-RPM = TWO_PI / 60.0
 # The degree of the periodic spline through samples over a turn (see periodic_spline).
 SPLINE_DEGREE = 5
 

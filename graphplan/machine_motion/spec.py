@@ -9,9 +9,10 @@ from typing import Any
 
 from ..errors import SceneError
 from ..reader import Table, check_number
+from ..units import RPM
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .method import running_speed
-from .shaft import RPM, TWO_PI, Machine
+from .shaft import TWO_PI, Machine
 from .simulation import METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
 
 # The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
@@ -50,15 +51,6 @@ class MotionSpec:
         return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
                         clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
                         steady_tolerance=self.steady_tolerance)
-
-
-def _speed(table: Table, omega_key: str, rpm_key: str, default: Any) -> Any:
-    """A speed given as rad/s under ``omega_key`` or as rev/min under ``rpm_key`` (not both)."""
-    if table.has(omega_key) and table.has(rpm_key):
-        raise SceneError(table.where(rpm_key), f"give either {omega_key} or {rpm_key}, not both")
-    if table.has(rpm_key):
-        return table.number(rpm_key, non_negative=True) * RPM
-    return table.number(omega_key, default, non_negative=True)
 
 
 def _read_motor(table: Table) -> tuple[Motor, float | None]:
@@ -135,9 +127,9 @@ def _read_start(value: Any, where: str, clutch: Clutch | None) -> Start:
                              "driving_rpm}", value)
         return REST
     table = Table(value, where)
-    omega = _speed(table, "omega", "rpm", 0.0)
+    omega = table.speed(0.0, non_negative=True)
     angle = math.radians(table.number("angle_deg", 0.0))
-    driving = _speed(table, "driving_omega", "driving_rpm", None)
+    driving = table.speed(None, omega_key="driving_omega", rpm_key="driving_rpm", non_negative=True)
     if driving is not None and clutch is None:
         key = "driving_omega" if table.has("driving_omega") else "driving_rpm"
         raise SceneError(table.where(key), "only with a clutch")

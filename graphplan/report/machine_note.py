@@ -17,7 +17,8 @@ from typing import TYPE_CHECKING, Protocol
 import numpy as np
 
 from ..rotor_balancing import BalancingResult
-from ..vibration import RPM, Response, VibrationSpec
+from ..units import RPM
+from ..vibration import Response, VibrationSpec
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
     from ..deliverables import MachineDynamics
