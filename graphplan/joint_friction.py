@@ -7,7 +7,10 @@ joint's centre oppose the relative rotation.  That is the frictionless
 reaction R through the centre plus a moment ``−sign(ω_rel)·ρ·|R|``.  A
 sliding pair with coefficient f (``f/sin θ`` in a V-guide, see
 :func:`graphplan.friction.vee_groove_coefficient`) adds a force ``f'·|N|``
-along the slide against the relative velocity.
+along the slide against the relative velocity.  A pair at rest (an extreme
+position) rubs against the relative motion about to begin, the sense of the
+relative acceleration, as a resisting load does (:mod:`graphplan.loads`):
+the velocity's sign there is rounding's.
 
 Both depend on the reaction they change, so the force analysis with friction
 is iterated (:func:`graphplan.statics.equilibrium`,
@@ -25,6 +28,7 @@ from .errors import SceneError
 from .forces import Load
 from .friction import friction_circle_radius, vee_groove_coefficient
 from .kinematics import Vector
+from .loads import at_rest, sense_of_motion
 from .scene import FrictionSpec
 
 
@@ -94,15 +98,20 @@ def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping
     Loads on the frame are among them; the equations of moving links skip them.
     """
     loads: list[Load] = []
+    turning_scale, moving_scale = state.turning_scale, state.moving_scale
     for pair in friction:
         magnitude = np.abs(reactions[pair.reaction])
         if not pair.sliding:
-            relative = state.links[pair.target].omega - state.links[pair.source].omega
-            moment = -np.sign(relative) * pair.radius * magnitude
+            target, source = state.links[pair.target], state.links[pair.source]
+            sense = sense_of_motion(target.omega - source.omega, target.epsilon - source.epsilon, turning_scale)
+            moment = -sense * pair.radius * magnitude
             loads.append(Load(f"Mf{pair.source}{pair.target}", pair.target, None, 0j, moment))
             loads.append(Load(f"Mf{pair.target}{pair.source}", pair.source, None, 0j, -moment))
         else:
             relative = state.sliding[pair.target]
+            # At rest in its pair (an extreme position), against the sliding about to begin.
+            relative = np.where(at_rest(relative, moving_scale), state.sliding_acceleration.get(pair.target, 0j),
+                                relative)
             speed = np.abs(relative)
             with np.errstate(invalid="ignore", divide="ignore"):
                 direction = np.where(speed > 0, relative / np.where(speed > 0, speed, 1.0), 0j)

@@ -43,7 +43,19 @@ class State:
 
     points: Mapping[str, PointMotion]
     links: Mapping[int, Turning]
+    # Each slider's velocity and acceleration relative to its guide, as vectors along the slide.
     sliding: Mapping[int, Vector] = field(default_factory=dict)
+    sliding_acceleration: Mapping[int, Vector] = field(default_factory=dict)
+
+    @property
+    def turning_scale(self) -> float:
+        """The largest |ω| of the state: an angular speed far below it is rest."""
+        return max((float(np.max(np.abs(link.omega))) for link in self.links.values()), default=0.0)
+
+    @property
+    def moving_scale(self) -> float:
+        """The largest speed of a point of the state: a speed far below it is rest."""
+        return max((float(np.max(np.abs(point.v))) for point in self.points.values()), default=0.0)
 
 
 @dataclass(frozen=True)
@@ -53,7 +65,8 @@ class Rates:
 
 
 def motion_state(motion: Motion) -> State:
-    return State(motion.points, motion.links, {slide.slider: slide.velocity * slide.u for slide in motion.slides})
+    return State(motion.points, motion.links, {slide.slider: slide.velocity * slide.u for slide in motion.slides},
+                 {slide.slider: slide.acceleration * slide.u for slide in motion.slides})
 
 
 def plan_state(mechanism: Mechanism, positions: Mapping[str, complex], velocity: Plan,
@@ -78,10 +91,12 @@ def plan_state(mechanism: Mechanism, positions: Mapping[str, complex], velocity:
                                  for number in mechanism.moving_links}
     links[mechanism.scene.frame_link] = Rates(0.0, 0.0)
     sliding = dict(velocity.sliding)
+    sliding_acceleration = {} if acceleration is None else dict(acceleration.sliding)
     driver = mechanism.driver
     if driver.kind == "slider":  # on its frame guide, its own velocity is the sliding one
         sliding[driver.link] = velocity.value(driver.joint)
-    return State(points, links, sliding)
+        sliding_acceleration[driver.link] = accelerated(driver.joint)
+    return State(points, links, sliding, sliding_acceleration)
 
 
 def has_loads(mechanism: Mechanism) -> bool:
@@ -215,8 +230,7 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
         per_link[load.link] = per_link.get(load.link, 0) + 1
     seen: dict[int, int] = {}
     found = []
-    turning_scale = max((float(np.max(np.abs(link.omega))) for link in state.links.values()), default=0.0)
-    moving_scale = max((float(np.max(np.abs(point.v))) for point in state.points.values()), default=0.0)
+    turning_scale, moving_scale = state.turning_scale, state.moving_scale
     for row, load in enumerate(scene.loads):
         seen[load.link] = seen.get(load.link, 0) + 1
         suffix = f".{seen[load.link]}" if per_link[load.link] > 1 else ""
@@ -228,7 +242,7 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             on = np.abs(on)
         if load.kind == "moment":
             turning = state.links[load.link]
-            value = (-abs(load.value) * _sense(turning.omega, turning.epsilon, turning_scale) if load.resisting
+            value = (-abs(load.value) * sense_of_motion(turning.omega, turning.epsilon, turning_scale) if load.resisting
                      else load.value)
             found.append(Load(f"M{load.link}{suffix}", load.link, None, 0j, on * value))
         else:
@@ -236,18 +250,23 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             force = load.value * direction
             if load.resisting:
                 point = state.points[load.point]
-                force = -abs(load.value) * direction * _sense(dot(direction, point.v), dot(direction, point.a),
+                force = -abs(load.value) * direction * sense_of_motion(dot(direction, point.v), dot(direction, point.a),
                                                               moving_scale)
             found.append(Load(f"F{load.link}{suffix}", load.link, load.point, on * force, 0.0))
     return found
 
 
-def _sense(speed: Scalar, rate: Scalar, scale: float) -> Scalar:
+def sense_of_motion(speed: Scalar, rate: Scalar, scale: float) -> Scalar:
     """+1 or −1: the sense of motion, or at rest (against the mechanism's ``scale`` of speeds)
-    the sense of the motion about to begin."""
+    the sense of the motion about to begin; 0 at rest with nothing about to begin."""
     speed_array = np.asarray(speed, dtype=float)
-    moving = np.abs(speed_array) > _AT_REST * max(scale, 1e-300)
-    return np.where(moving, np.sign(speed_array), np.sign(np.asarray(rate, dtype=float)))
+    return np.where(at_rest(speed_array, scale), np.sign(np.asarray(rate, dtype=float)), np.sign(speed_array))
+
+
+def at_rest(speed: Scalar | Vector, scale: float) -> Scalar:
+    """Whether ``speed`` (or a velocity's size) is rest against the mechanism's ``scale`` of speeds: at an
+    extreme position it is zero but for rounding, and its sign says nothing."""
+    return np.abs(speed) <= _AT_REST * max(scale, 1e-300)
 
 
 def load_at(load: Load, index: int) -> Load:
@@ -271,5 +290,5 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
     return total
 
 
-__all__ = ["Load", "Rates", "State", "activity", "has_loads", "link_loads", "load_at", "motion_state",
-           "plan_state", "power"]
+__all__ = ["Load", "Rates", "State", "activity", "at_rest", "has_loads", "link_loads", "load_at", "motion_state",
+           "plan_state", "power", "sense_of_motion"]

@@ -22,8 +22,11 @@ import pytest
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.joint_friction import friction_loads, friction_pairs
+from graphplan.loads import Rates, State
 from graphplan.scene import FrictionSpec
 from graphplan.scene import loads as scene_from_text
+from graphplan.statics import Pair
 
 RADIUS, ROD, PUSH, OMEGA = 0.1, 0.4, 1000.0, 10.0
 
@@ -97,6 +100,41 @@ def test_journal_friction_adds_the_friction_circle_moment():
     expected = ideal.balancing + np.sign(OMEGA) * circle * frame_on_crank
     np.testing.assert_allclose(rubbing.balancing, expected, rtol=1e-12, atol=1e-12 * PUSH * RADIUS)
     np.testing.assert_allclose(np.abs(rubbing.reaction("R12").force), frame_on_crank, rtol=1e-12)
+
+
+@pytest.mark.parametrize(("position", "phi"), [(1, 0.0), (13, np.pi)])
+def test_a_slide_at_rest_rubs_against_the_sliding_about_to_begin(position, phi):
+    """At the dead centres the piston stops (its velocity zero, or rounding's ±1e-17) and turns back, the way its
+    acceleration points: a_B = −r·ω²·(cos φ + λ·cos 2φ).  The guide's friction f·m·g (the weight the only normal
+    force, the rod lying along the axis) opposes that, so the rod pushes the piston with R34x = P − Ff + m·a_B."""
+    f, mass, g = 0.2, 5.0, 9.81
+    text = slider_crank_text(f'[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = {f}\n[links.4]\nmass = {mass}\n'
+                             'centre = "B"')
+    text = text.replace("gravity = 0.0", f"gravity = {g}").replace("start = 7.5", "start = 0.0")
+    analysis = analyse(scene_from_text(text.replace("plans = [1, 5, 9, 17]", "plans = [1, 13]")))
+    index = position - 1
+    assert analysis.motion.driver[index] == pytest.approx(phi)
+    assert abs(analysis.motion.point("B").v[index, 0]) < 1e-12
+    acceleration = -RADIUS * OMEGA**2 * (np.cos(phi) + RADIUS / ROD * np.cos(2 * phi))
+    rubbing = -np.sign(acceleration) * f * mass * g
+    expected = PUSH - rubbing + mass * acceleration
+    assert analysis.with_friction.reaction("R34").force[index].real == pytest.approx(expected, rel=1e-12)
+    drawn = next(plan for plan in analysis.plans if plan.number == position).with_friction
+    assert drawn.reactions["R34"].force.real == pytest.approx(expected, rel=1e-9)
+
+
+def test_a_journal_at_rest_rubs_against_the_turning_about_to_begin():
+    """A rocker at its extreme (ω4 zero but for rounding against the crank's 10 rad/s) about to turn clockwise:
+    the friction circle's moment on it is counter-clockwise, ρ·|R14|; with nothing about to turn there is none."""
+    spec = FrictionSpec("friction[0]", "C", None, 0.1, 0.02, None)
+    (pair,) = friction_pairs((spec,), [Pair("R14", False, "C", 1, 4)])
+    reaction = {"R14": 300.0 + 400.0j}
+    for omega in (1e-17, -1e-17, 0.0):
+        state = State({}, {1: Rates(0.0, 0.0), 2: Rates(10.0, 0.0), 4: Rates(omega, -20.0)})
+        moments = {load.name: load.moment for load in friction_loads((pair,), state, reaction)}
+        assert moments["Mf14"] == pytest.approx(pair.radius * 500.0) and moments["Mf41"] == -moments["Mf14"]
+    resting = State({}, {1: Rates(0.0, 0.0), 2: Rates(10.0, 0.0), 4: Rates(0.0, 0.0)})
+    assert all(load.moment == 0 for load in friction_loads((pair,), resting, reaction))
 
 
 def ratchet_with_friction(f: float):
