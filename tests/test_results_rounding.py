@@ -1,12 +1,14 @@
 """``results.json`` writes a value that is zero by the geometry as 0, not as the arithmetic's leftover."""
 
 import math
+from pathlib import Path
 
 import pytest
 
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.report.results import number, results, rounded
+from graphplan.scene import loads
 
 ENGINE = "fixtures/engine_slider_crank.toml"
 
@@ -54,3 +56,27 @@ def test_a_value_is_judged_against_its_own_quantity():
     assert rounded([math.nan, 2.0, True]) == [None, 2.0, True]
     assert number(-4e-13, noise=1e-12) == 0.0 and number(-4e-13) == -4e-13
     assert number(1.234567890123456) == 1.23456789012
+
+
+def test_a_link_along_minus_x_reads_180_degrees_as_the_driver_does():
+    """The crank started at −180°: cos and sin of −π leave −1.2e-16 across it, np.angle −180°; the driver's angle
+    reads 180° all the same, and its link must not read the other end of the same half-turn."""
+    text = Path(ENGINE).read_text(encoding="utf-8").replace('start       = "extreme"', "start = -180.0")
+    first = results(analyse(loads(text)))["positions"][0]
+    assert first["driver"]["angle_deg"] == 180.0
+    assert first["links"]["2"]["angle_deg"] == 180.0
+
+
+def test_a_slide_with_no_normal_reaction_has_no_offset():
+    """The scotch yoke slides up and down its vertical guide with no horizontal load on it: the guide's normal
+    reaction R14 is zero (rounding's 1e-13 N at most), and holds the yoke by a couple alone.  Where such a force acts
+    along the slide is no number: the couple over the noise gave 10¹⁵ m."""
+    document = results(analyse(graphplan.load("fixtures/scotch_yoke.toml")))
+    for position in document["positions"]:
+        equilibrium = position["equilibrium"]
+        assert equilibrium["reactions"]["R14"] == [0.0, 0.0]
+        assert equilibrium["offsets"]["R14"] is None
+        # The block's reaction from the slot is there and acts at its pin, where all the block's loads act.
+        assert abs(equilibrium["reactions"]["R43"][1]) > 1.0 and equilibrium["offsets"]["R43"] == 0.0
+        if "forces" in position:
+            assert position["forces"]["offsets"]["R14"] is None

@@ -94,7 +94,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
         entry["points"] = {name: {"r": _pair(r[i], r_floor), "v": _pair(v[i], v_floor) if known(name) else None,
                                   "a": _pair(a[i], a_floor) if known(name) else None}
                            for name, (r, v, a) in points.items()}
-        entry["links"] = {str(n): {"angle_deg": number(math.degrees(float(link.angle[i])), ANGLE_FLOOR_DEG),
+        entry["links"] = {str(n): {"angle_deg": number(_half_turn_deg(float(link.angle[i])), ANGLE_FLOOR_DEG),
                                    "omega": number(link.omega[i], omega_floor) if known(n) else None,
                                    "epsilon": number(link.epsilon[i], epsilon_floor) if known(n) else None}
                           for n, link in links.items()}
@@ -152,6 +152,13 @@ def _turn_deg(angle: float) -> float:
     """``angle`` in degrees within [0, 360), a hair below 360 read as 0."""
     degrees = math.degrees(angle) % 360.0
     return 0.0 if 360.0 - degrees < ANGLE_FLOOR_DEG else degrees
+
+
+def _half_turn_deg(angle: float) -> float:
+    """A link's ``angle`` (from ``np.angle``) in degrees within (−180, 180]: a link along −x reads 180,
+    whichever sign rounding left on the zero across it."""
+    degrees = math.degrees(angle)
+    return 180.0 if abs(degrees + 180.0) < ANGLE_FLOOR_DEG else degrees
 
 
 def versions() -> dict[str, str]:
@@ -226,7 +233,8 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
         "polygon_scale": number(forces.scale),
         "polygon_scales": {label: number(scale) for label, scale in forces.group_scales.items()},
     }
-    offsets = {name: number(found.offset) for name, found in forces.reactions.items() if found.offset is not None}
+    offsets = {name: _offset(found.force, found.offset, reaction_floor)
+               for name, found in forces.reactions.items() if found.offset is not None}
     if offsets:
         result["offsets"] = offsets
     rubbing = plan.with_friction
@@ -250,8 +258,10 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
 def _cycle_noise(balance) -> dict[str, Any]:
     """The noise floors of the whole-mechanism system over the cycle: of its balancing load, of its
     reactions, and of each sliding pair's offset."""
-    return {"balancing": noise_floor(balance.balancing), "reactions": noise_floor([r.force for r in balance.reactions]),
-            "offsets": {r.name: noise_floor(r.offset) for r in balance.reactions if r.sliding}}
+    reactions = noise_floor([r.force for r in balance.reactions])
+    return {"balancing": noise_floor(balance.balancing), "reactions": reactions,
+            "offsets": {r.name: noise_floor(np.where(np.abs(r.force) < reactions, np.nan, r.offset))
+                        for r in balance.reactions if r.sliding}}
 
 
 def _equilibrium(balance, i: int, driver_kind: str, noise: dict[str, Any], blank: bool = False) -> dict[str, Any]:
@@ -265,10 +275,18 @@ def _equilibrium(balance, i: int, driver_kind: str, noise: dict[str, Any], blank
         "reactions": {r.name: _pair(np.array([r.force[i].real, r.force[i].imag]), noise["reactions"])
                       for r in balance.reactions},
     }
-    offsets = {r.name: number(r.offset[i], noise["offsets"][r.name]) for r in balance.reactions if r.sliding}
+    offsets = {r.name: _offset(r.force[i], r.offset[i], noise["reactions"], noise["offsets"][r.name])
+               for r in balance.reactions if r.sliding}
     if offsets:
         result["offsets"] = offsets
     return result
+
+
+def _offset(force: complex, offset: float, force_floor: float, noise: float = 0.0) -> float | None:
+    """Where along its slide a sliding pair's normal reaction acts; null where there is no normal reaction
+    (below the reactions' noise): the guide then holds a couple alone, if anything, and the shift found by
+    dividing by the rounding noise of the force would be a number of no meaning (10¹⁵ m in the scotch yoke)."""
+    return None if abs(force) < force_floor else number(offset, noise)
 
 
 def _slide(slide, i: int, floors: tuple[float, float]) -> dict[str, Any]:
