@@ -232,13 +232,15 @@ class Flywheel:
     def omega_min(self) -> float:
         return float(np.min(self.omega))
 
+    # The last sample closes the cycle at the first one's state: left out, the fastest and slowest samples are
+    # never taken at 360° for 0° as rounding has the speed there a hair higher or lower.
     @property
     def index_max(self) -> int:
-        return int(np.argmax(self.omega))
+        return int(np.argmax(self.omega[:-1]))
 
     @property
     def index_min(self) -> int:
-        return int(np.argmin(self.omega))
+        return int(np.argmin(self.omega[:-1]))
 
 
 def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None = None, *,

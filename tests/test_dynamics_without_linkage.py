@@ -66,6 +66,16 @@ def test_press_flywheel_from_its_power_cycle_matches_the_published_answers(tmp_p
     assert found["driver_link"] is None
 
 
+@pytest.mark.parametrize("towards", [0.0, math.inf])
+def test_the_slowest_instant_is_the_start_of_the_cycle_whichever_way_rounding_falls(tmp_path, towards):
+    """The speed is lowest where the punching ends and the idle stroke begins: at 0°, which the cycle's last sample
+    repeats as 360°.  A speed a last bit off 100 rpm must not move it from the one to the other."""
+    omega = math.nextafter(100 * math.pi / 30, towards)
+    found = dynamics_of(tmp_path, PRESS.replace("rpm = 100", f"omega = {omega!r}"))
+    assert found["omega_min_angle_deg"] == 0.0 and found["omega_min_travel_deg"] == 0.0
+    assert found["omega_max_travel_deg"] == pytest.approx(120.0)
+
+
 def test_the_machines_own_inertia_is_taken_off_the_flywheel(tmp_path):
     found = dynamics_of(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 30.0"))
     assert found["flywheel_inertia"] == pytest.approx(441.24 / ((100 * math.pi / 30) ** 2 * 0.05) - 30.0, rel=1e-9)
