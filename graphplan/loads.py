@@ -250,8 +250,8 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             force = load.value * direction
             if load.resisting:
                 point = state.points[load.point]
-                force = -abs(load.value) * direction * sense_of_motion(dot(direction, point.v), dot(direction, point.a),
-                                                              moving_scale)
+                sense = sense_of_motion(dot(direction, point.v), dot(direction, point.a), moving_scale)
+                force = -abs(load.value) * direction * sense
             found.append(Load(f"F{load.link}{suffix}", load.link, load.point, on * force, 0.0))
     return found
 

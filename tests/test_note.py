@@ -427,3 +427,30 @@ def test_the_initial_data_give_the_length_scale_the_plan_of_positions_is_drawn_a
     stated = re.search(r"^\| μl \| ([\d.]+) m/mm \|", note_markdown(analysis), re.MULTILINE).group(1)
     assert stated == drawn
     assert (float(drawn) == scene.drawing.length_scale) if given else float(drawn) > 0.0025
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_the_initial_data_give_the_frame_from_which_the_mechanism_is_drawn(locale):
+    """The shaper's frame: its pivots O and C, the ram's guide a horizontal line 0.64 m above C.  The initial data
+    must say how far apart the pivots are and where the guide runs, or the reader cannot draw the mechanism."""
+    scene = tomllib.loads((FIXTURES / "shaper_six_bar.toml").read_text(encoding="utf-8"))["frame"]
+    (c_x, c_y), (o_x, o_y) = scene["points"]["C"], scene["points"]["O"]
+    guide_y = scene["lines"]["ram"]["through"][1]
+    note = note_of("shaper_six_bar", locale)
+    mark = "," if locale == "ru" else "."
+    between = f"{math.hypot(o_x - c_x, o_y - c_y):g}".replace(".", mark)
+    assert re.search(rf"^\| lOC \| {re.escape(between)} (m|м) \|$", note, re.MULTILINE)
+    above = f"{abs(guide_y - o_y):g}".replace(".", mark)
+    (row,) = [line for line in note.splitlines() if line.startswith("| ram |")]
+    value = row.split("|")[2]
+    assert above in value and "O" in value and "0°" in value
+
+
+def test_a_point_placed_on_another_has_no_length_among_the_initial_data():
+    """The rocker's centre of mass put on its pivot (at = 0): lCS4 = 0 is no dimension of the link."""
+    text = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    moved = re.sub(r'^S4 = \{ link = 4, from = "C", toward = "B", at = [\d.]+ \}', 'S4 = { link = 4, from = "C", '
+                   'toward = "B", at = 0.0 }', text, flags=re.MULTILINE)
+    assert moved != text
+    lengths = re.findall(r"^\| (l[A-Z]\w*) \|", note_markdown(analyse(graphplan.scene.loads(moved))), re.MULTILINE)
+    assert "lCS4" not in lengths and {"lOA", "lAB", "lCB", "lOC"} <= set(lengths)

@@ -241,6 +241,7 @@ class _Note:
         scene, driver = self.analysis.scene, self.mechanism.driver
         self.heading(2, f"{section}. {self.t('note_initial_data')}")
         rows = [[label, f"{self.n(value)} {self.text['unit_m']}"] for label, value in self.lengths()]
+        rows.extend(self.frame_rows())
         if driver.kind == "crank":
             omega = f"{self.n(abs(driver.omega))} {self.text['unit_rad_per_s']}{self.with_sense(driver.omega)}"
             rows.append([f"ω{driver.link}", omega])
@@ -262,6 +263,27 @@ class _Note:
             self.para(self.t("note_strokes", link=scene.positions.working.link, working=self.n(math.degrees(working)),
                              idle=self.n(math.degrees(idle)), ratio=self.n(working / idle, 4)))
 
+    def frame_rows(self) -> list[list[str]]:
+        """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
+        how far from the driver's pivot (from the frame's first point for a slider driver), at what angle."""
+        scene, metre = self.analysis.scene, self.text["unit_m"]
+        points = scene.frame_points
+        driver = self.mechanism.driver
+        origin = driver.pivot if driver.kind == "crank" else next(iter(points), None)
+        # The pivot first, as the lengths read from it: lOC, not lCO.
+        names = sorted(points, key=lambda name: name != origin)
+        rows = [[f"l{first}{second}", f"{self.n(abs(points[second] - points[first]))} {metre}"]
+                for first, second in itertools.combinations(names, 2)]
+        for name, line in scene.frame_lines.items():
+            if origin is None:
+                break
+            through = points[line.through] if isinstance(line.through, str) else complex(*line.through)
+            off = points[origin] - through
+            distance = abs(math.sin(line.angle) * off.real - math.cos(line.angle) * off.imag)
+            rows.append([name, self.t("note_frame_line", distance=f"{self.n(distance)} {metre}", point=origin,
+                                      angle=self.n(math.degrees(line.angle)))])
+        return rows
+
     def lengths(self) -> list[tuple[str, float]]:
         """The constant distances between the points of each link that the construction uses (lOA, lAB, lAS3, ...)."""
         motion, found, seen = self.analysis.motion, [], set()
@@ -273,6 +295,8 @@ class _Note:
                 return
             distance = np.abs(np.asarray(motion.points[second].r) - np.asarray(motion.points[first].r))
             distance = distance[np.isfinite(distance)]
+            if distance.size and not distance.any():
+                return  # a point placed on another (a centre of mass at its link's pivot): no length to give
             if distance.size and float(np.ptp(distance)) <= _SAME * max(float(distance.max()), 1e-300):
                 seen.add(frozenset((first, second)))
                 found.append((f"l{first}{second}", float(distance[0])))
