@@ -274,9 +274,9 @@ class _Note:
         names = sorted(points, key=lambda name: name != origin)
         rows = [[f"l{first}{second}", f"{self.n(abs(points[second] - points[first]))} {metre}"]
                 for first, second in itertools.combinations(names, 2)]
+        if origin is None:  # a frame of lines alone: nothing to measure them from
+            return rows
         for name, line in scene.frame_lines.items():
-            if origin is None:
-                break
             through = points[line.through] if isinstance(line.through, str) else complex(*line.through)
             off = points[origin] - through
             distance = abs(math.sin(line.angle) * off.real - math.cos(line.angle) * off.imag)
