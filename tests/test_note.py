@@ -454,3 +454,19 @@ def test_a_point_placed_on_another_has_no_length_among_the_initial_data():
     assert moved != text
     lengths = re.findall(r"^\| (l[A-Z]\w*) \|", note_markdown(analyse(graphplan.scene.loads(moved))), re.MULTILINE)
     assert "lCS4" not in lengths and {"lOA", "lAB", "lCB", "lOC"} <= set(lengths)
+
+
+@pytest.mark.parametrize(("name", "joint", "distance", "angle"), [
+    ("engine_slider_crank", "B", 0.0, 0.0),                  # the cylinder's axis through the crank's pivot
+    ("scotch_yoke", "B", 0.0, 90.0),                         # the yoke's vertical guide through O
+    ("triad_with_slider", "F", 0.14 * math.cos(math.radians(30.0)), -30.0),  # through E = (0, 0.14) at −30°
+])
+def test_a_guide_given_in_its_group_is_among_the_frame_s_data(name, joint, distance, angle):
+    """A frame guide written in its group rather than among [frame] lines is given as the line its slider's joint
+    runs along: its distance from the crank's pivot O (worked out here from the fixture's coordinates) and its angle."""
+    (row,) = [line for line in note_of(name, "en").splitlines() if line.startswith(f"| guide of {joint} |")]
+    value = row.split("|")[2]
+    found = re.fullmatch(r" ([\d.]+) m from O, at (−?[\d.]+)° to x ", value)
+    assert found, value
+    assert float(found.group(1)) == pytest.approx(distance, abs=5e-6)
+    assert float(found.group(2).replace("−", "-")) == pytest.approx(angle)

@@ -26,6 +26,7 @@ tables of errors and of the force analysis are the ones ``errors.md`` and
 
 from __future__ import annotations
 
+import cmath
 import contextlib
 import itertools
 import math
@@ -38,6 +39,7 @@ import numpy as np
 from ..analysis import Analysis, PlanPosition
 from ..check import Reading
 from ..errors import SceneError
+from ..kinematics import cross
 from ..locale import strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.drawings import length_scale
@@ -276,12 +278,26 @@ class _Note:
                 for first, second in itertools.combinations(names, 2)]
         if origin is None:  # a frame of lines alone: nothing to measure them from
             return rows
+        pivot = points[origin]
+        lines = []  # (label, a point of the line, its direction, its angle in degrees as written)
         for name, line in scene.frame_lines.items():
             through = points[line.through] if isinstance(line.through, str) else complex(*line.through)
-            off = points[origin] - through
-            distance = abs(math.sin(line.angle) * off.real - math.cos(line.angle) * off.imag)
-            rows.append([name, self.t("note_frame_line", distance=f"{self.n(distance)} {metre}", point=origin,
-                                      angle=self.n(math.degrees(line.angle)))])
+            lines.append((name, through, cmath.exp(1j * line.angle), math.degrees(line.angle)))
+        # A slide on a guide of the frame that no named line gives: the line its joint runs along.
+        motion = self.analysis.motion
+        for slide in motion.slides:
+            if slide.guide != scene.frame_link or slide.joint not in motion.points:
+                continue
+            along, at = complex(np.ravel(slide.u)[0]), complex(np.ravel(motion.points[slide.joint].r)[0])
+            if any(abs(cross(along, direction)) < _SAME and abs(cross(direction, at - through)) < _SAME * abs(at - pivot)
+                   for _, through, direction, _ in lines):
+                continue
+            angle = 90.0 - (90.0 - math.degrees(cmath.phase(along))) % 180.0  # the line's, within (−90°, 90°]
+            lines.append((self.t("note_guide_of", joint=slide.joint), at, along, angle))
+        for label, through, direction, angle in lines:
+            distance = abs(cross(direction, pivot - through))
+            rows.append([label, self.t("note_frame_line", distance=f"{self.n(distance)} {metre}", point=origin,
+                                       angle=self.n(angle))])
         return rows
 
     def lengths(self) -> list[tuple[str, float]]:
