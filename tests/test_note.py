@@ -470,3 +470,17 @@ def test_a_guide_given_in_its_group_is_among_the_frame_s_data(name, joint, dista
     assert found, value
     assert float(found.group(1)) == pytest.approx(distance, abs=5e-6)
     assert float(found.group(2).replace("−", "-")) == pytest.approx(angle)
+
+
+def test_a_named_guide_is_given_once_though_its_slider_starts_on_the_pivot():
+    """The scotch yoke's guide named among [frame] lines, the crank started at 0° so that the yoke's B stands on O:
+    the line is given once, by its name, not again as the line B runs along."""
+    text = (FIXTURES / "scotch_yoke.toml").read_text(encoding="utf-8")
+    text = text.replace("points = { O = [0.0, 0.0] }",
+                        'points = { O = [0.0, 0.0] }\nlines = { yoke = { through = "O", angle = 90.0 } }')
+    text = re.sub(r"^guide  = \{ through = \[0.0, 0.0\], angle = 90.0 \}", 'guide = "yoke"', text, flags=re.MULTILINE)
+    text = re.sub(r"^start *= .*$", "start = 0.0", text, flags=re.MULTILINE)
+    analysis = analyse(graphplan.scene.loads(text))
+    assert abs(analysis.motion.points["B"].r[0]) < 1e-12
+    rows = [line for line in note_markdown(analysis).splitlines() if line.startswith(("| yoke |", "| guide of"))]
+    assert rows == ["| yoke | 0 m from O, at 90° to x |"]

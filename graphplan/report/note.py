@@ -285,11 +285,12 @@ class _Note:
             lines.append((name, through, cmath.exp(1j * line.angle), math.degrees(line.angle)))
         # A slide on a guide of the frame that no named line gives: the line its joint runs along.
         motion = self.analysis.motion
+        size = max((abs(complex(np.ravel(point.r)[0]) - pivot) for point in motion.points.values()), default=1.0)
         for slide in motion.slides:
             if slide.guide != scene.frame_link or slide.joint not in motion.points:
                 continue
             along, at = complex(np.ravel(slide.u)[0]), complex(np.ravel(motion.points[slide.joint].r)[0])
-            if any(abs(cross(along, direction)) < _SAME and abs(cross(direction, at - through)) < _SAME * abs(at - pivot)
+            if any(abs(cross(along, direction)) < _SAME and abs(cross(direction, at - through)) <= _SAME * size
                    for _, through, direction, _ in lines):
                 continue
             angle = 90.0 - (90.0 - math.degrees(cmath.phase(along))) % 180.0  # the line's, within (−90°, 90°]
