@@ -37,7 +37,7 @@ import scipy
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
-from graphplan.machine_motion import RPM, KlossMotor, LinearMotor, Machine, simulate
+from graphplan.machine_motion import DEFAULT_RTOL, RPM, KlossMotor, LinearMotor, Machine, simulate
 
 METHODS = ("RK45", "DOP853", "Radau", "BDF", "LSODA")
 TOLERANCES = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
@@ -102,7 +102,7 @@ def measure() -> dict:
                 error = float(np.max(np.abs(motion.state_at(instants)[1] - ref_omega))) / scale
                 entries.append({"method": method, "rtol": rtol, "seconds": seconds, "error": error,
                                 "nfev": motion.nfev, "steps": int(motion.t.size)})
-        auto = run(case, "auto", 1e-6)
+        auto = run(case, "auto", DEFAULT_RTOL)
         rows[name] = {"entries": entries, "reference_error": reference_error, "auto": auto,
                       "steady": reference.steady}
         print(f"{name}: done ({auto.method_reason})", flush=True)
@@ -124,8 +124,8 @@ def markdown(rows: dict) -> str:
                    f"by {data['reference_error']:.1e} (relative, largest over the run)."),
                   f"Steady state: ωm = {steady.mean_speed:.4f} rad/s, δ = {steady.delta:.5f}." if steady else
                   "No steady state within the duration.",
-                  (f"`method = \"auto\"` at rtol 1e-6 picks **{data['auto'].method}**; its reason: "
-                   f"\"{data['auto'].method_reason}\"."),
+                  (f"`method = \"auto\"` at the default rtol, {DEFAULT_RTOL:g}, picks **{data['auto'].method}**; "
+                   f"its reason: \"{data['auto'].method_reason}\"."),
                   "", "| method | rtol | error in ω | time, ms | nfev | steps |", "|---|---:|---:|---:|---:|---:|"]
         for e in data["entries"]:
             lines.append(f"| {e['method']} | {e['rtol']:.0e} | {e['error']:.2e} | {1e3 * e['seconds']:.1f} "

@@ -51,11 +51,20 @@ from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor,
 from .integrator import MOST_EVALUATIONS
 from .method import STIFFNESS_THRESHOLD, choose_method, is_stiff, running_speed
 from .shaft import TWO_PI, Machine, periodic_spline
-from .simulation import METHODS, MOST_CYCLES, SMALLEST_RTOL, ClutchEngagement, MachineMotion, engage_clutch, simulate
+from .simulation import (
+    DEFAULT_RTOL,
+    METHODS,
+    MOST_CYCLES,
+    SMALLEST_RTOL,
+    ClutchEngagement,
+    MachineMotion,
+    engage_clutch,
+    simulate,
+)
 from .spec import MOST_TURNS, MotionSpec, read_motion
 
 __all__ = [
-    "METHODS", "MOST_CYCLES", "MOST_EVALUATIONS", "MOST_TURNS", "MOTOR_KINDS", "REST", "RPM", "SMALLEST_RTOL",
+    "DEFAULT_RTOL", "METHODS", "MOST_CYCLES", "MOST_EVALUATIONS", "MOST_TURNS", "MOTOR_KINDS", "REST", "RPM", "SMALLEST_RTOL",
     "STIFFNESS_THRESHOLD", "TWO_PI", "Brake", "Clutch", "ClutchEngagement", "ConstantTorque", "Cycle", "KlossMotor",
     "LinearMotor", "Machine", "MachineMotion", "MotionSpec", "Motor", "Start", "SteadyState", "choose_method",
     "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline", "read_motion",

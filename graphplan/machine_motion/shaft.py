@@ -65,7 +65,9 @@ class Machine:
         callable of φ.
     resisting
         ``Mr``, N·m, positive when it resists forward motion: a number, samples of ``Mr(φ)``
-        over one turn, or a callable ``Mr(φ, ω)``.
+        over one turn, or a callable ``Mr(φ, ω)``.  A callable should be smooth: a jump in φ is
+        stepped over by the solvers' error control (RK45 let a machine with a step in Mr and a
+        constant drive run off to three times its speed at rtol 1e-7); samples are splined smooth.
     inertia_slope
         ``dJe/dφ``, kg·m²/rad: samples or a callable of φ.  Taken from the spline when
         ``inertia`` is samples, zero when it is a number; required when it is a callable.

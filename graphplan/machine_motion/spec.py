@@ -13,7 +13,7 @@ from ..units import RPM
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .method import running_speed
 from .shaft import TWO_PI, Machine
-from .simulation import METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
+from .simulation import DEFAULT_RTOL, METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
 
 # The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
 # duration of many more is a slip of the unit, and would hold the run for hours.
@@ -31,7 +31,7 @@ class MotionSpec:
     start: Start = REST
     duration: float | None = None
     method: str = "auto"
-    rtol: float = 1e-6
+    rtol: float = DEFAULT_RTOL
     steady_tolerance: float = 1e-4
 
     def run(self, machine: Machine) -> MachineMotion:
@@ -158,7 +158,7 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     start = _read_start(table.raw("start", "rest"), table.where("start"), clutch)
     duration = table.number("duration", None, positive=True)
     method = table.choice("method", METHODS, "auto")
-    rtol = table.number("rtol", 1e-6, positive=True)
+    rtol = table.number("rtol", DEFAULT_RTOL, positive=True)
     if not rtol < 1:
         raise SceneError(table.where("rtol"), "must be < 1", rtol)
     if rtol < SMALLEST_RTOL:
