@@ -390,17 +390,18 @@ def encoded(drawing: Drawing, formats: Iterable[str]) -> dict[str, str | bytes]:
     svg = to_svg(drawing.layers, page=drawing.page) if drawing.page else to_svg(drawing.layers)
     writers: dict[str, Callable[[], str | bytes]] = {
         "svg": lambda: svg,
-        "png": lambda: _export("svg_to_png")(svg),
-        "pdf": lambda: _export("svg_to_pdf")(svg),
+        "png": lambda: _rendered(svg, "png"),
+        "pdf": lambda: _rendered(svg, "pdf"),
         "dxf": lambda: _dxf(drawing),
     }
     return {f"{drawing.stem}.{kind}": writers[kind]() for kind in formats}
 
 
-def _export(name: str):
+def _rendered(svg: str, kind: str) -> bytes:
+    """An SVG document as PNG or PDF (cairosvg, imported only when one is asked for)."""
     from .render import export
 
-    return getattr(export, name)
+    return {"png": export.svg_to_png, "pdf": export.svg_to_pdf}[kind](svg)
 
 
 def _dxf(drawing: Drawing) -> bytes:
@@ -469,9 +470,14 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         from .report.word import note_docx
 
         found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale)
-    found.update(figures(scene, analysis, pieces, dynamics))
+    plots = figures(scene, analysis, pieces, dynamics)
     if "accuracy" in pieces and analysis is not None:
-        found.update(accuracy_report(analysis))
+        plots.update(accuracy_report(analysis))
+    found.update(plots)
+    # A report takes its plots as PNG or PDF as it takes the drawings; DXF, a drafting format, is for the drawings.
+    for name, svg in plots.items():
+        if name.endswith(".svg"):
+            found.update({f"{name[:-4]}.{kind}": _rendered(svg, kind) for kind in formats if kind in ("png", "pdf")})
     return found
 
 

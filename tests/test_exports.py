@@ -152,6 +152,35 @@ def test_svg_alone_imports_neither_cairosvg_nor_ezdxf():
     assert found.stdout.strip() == "[]"
 
 
+@pytest.mark.parametrize("kind, plots", [("flywheel", ("motion",)),
+                                         ("rotor", ("vibration_magnification", "vibration_transmissibility"))])
+def test_the_plots_come_as_png_and_pdf_of_their_own_size_beside_the_drawings(tmp_path, kind, plots):
+    """A report takes the plots (matplotlib's SVG, sized in pt) in the formats asked for, as it takes the drawings:
+    each PNG is the SVG's size at 150 dpi with the plot's lines inked across it, each PDF one page of that size;
+    DXF, a drafting format, stays with the drawings."""
+    from graphplan.cli import main
+    from graphplan.starters import starter
+
+    scene = tmp_path / f"{kind}.toml"
+    scene.write_text(starter(kind), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--format", "png,pdf,dxf"]) == 0
+    for name in plots:
+        svg = (out / f"{name}.svg").read_text(encoding="utf-8")
+        width, height = (float(v) for v in re.search(r'<svg[^>]* width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
+        pixels = np.asarray(Image.open(out / f"{name}.png").convert("L"))
+        assert pixels.shape == (round(height / 72 * 150), round(width / 72 * 150))
+        inked = pixels < 128
+        # Ink in every tenth of the width and of the height: axes, curves and lettering, not a blank page.
+        assert all(band.any() for band in np.array_split(inked, 10, axis=1))
+        assert all(band.any() for band in np.array_split(inked, 10, axis=0))
+        pdf = (out / f"{name}.pdf").read_bytes()
+        assert len(re.findall(rb"/Type\s*/Page\b", pdf)) == 1
+        box = [float(v) for v in re.search(rb"/MediaBox\s*\[\s*([\d.\s-]+)\]", pdf).group(1).split()]
+        assert box == pytest.approx([0.0, 0.0, width, height], abs=1e-3)
+        assert not (out / f"{name}.dxf").exists()
+
+
 # --- DXF -------------------------------------------------------------------------------------------------------
 
 

@@ -26,7 +26,7 @@ DEFAULT_DPI = 150.0
 
 
 def svg_to_png(svg_text: str, dpi: float = DEFAULT_DPI) -> bytes:
-    """The PNG of an SVG document whose size is in mm, at ``dpi`` pixels per inch."""
+    """The PNG of an SVG document whose size is in physical units (mm, pt), at ``dpi`` pixels per inch."""
     if not dpi > 0:
         raise ValueError(f"dpi must be > 0 (got {dpi!r})")
     import cairosvg
