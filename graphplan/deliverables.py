@@ -321,10 +321,11 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
 
 
 def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-           dynamics: MachineDynamics | None = None) -> dict[str, str]:
+           dynamics: MachineDynamics | None = None, pictures: tuple[str, ...] = ()) -> dict[str, str]:
     """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its sections
-    on the machine's ``dynamics``, its rotor's balancing and its vibration when the run has them), each in Markdown
-    and LaTeX (the note also in HTML).  A scene without a linkage has only the note."""
+    on the machine's ``dynamics``, its rotor's balancing and its vibration when the run has them, and the
+    drawings and plots written beside it that ``pictures`` names), each in Markdown and LaTeX (the note also in
+    HTML).  A scene without a linkage has only the note."""
     files: dict[str, str] = {}
     from .report.latex import latex_document, latex_fragment
 
@@ -332,7 +333,7 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
-        files["note.md"] = note_markdown(analysis, dynamics, scene)
+        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures)
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
         files["note.tex"] = latex_document(files["note.md"], scene.title, locale)
     if analysis is None:
@@ -461,15 +462,6 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
-    found.update(tables(scene, analysis, pieces, dynamics))
-    if "pdf" in formats and "note.html" in found:
-        from .report.pdf import note_pdf
-
-        found["note.pdf"] = note_pdf(str(found["note.html"]))
-    if "docx" in formats and "note.md" in found:
-        from .report.word import note_docx
-
-        found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale)
     plots = figures(scene, analysis, pieces, dynamics)
     if "accuracy" in pieces and analysis is not None:
         plots.update(accuracy_report(analysis))
@@ -478,6 +470,17 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     for name, svg in plots.items():
         if name.endswith(".svg"):
             found.update({f"{name[:-4]}.{kind}": _rendered(svg, kind) for kind in formats if kind in ("png", "pdf")})
+    # The note shows the drawings and plots written beside it, each in the section it illustrates.
+    pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
+    found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures)))
+    if "pdf" in formats and "note.html" in found:
+        from .report.pdf import note_pdf
+
+        found["note.pdf"] = note_pdf(str(found["note.html"]), pictures)
+    if "docx" in formats and "note.md" in found:
+        from .report.word import note_docx
+
+        found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale, pictures)
     return found
 
 

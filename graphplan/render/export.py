@@ -20,9 +20,25 @@ names cairo's version.
 from __future__ import annotations
 
 import functools
+import re
 
 # Resolution of a PNG when none is asked for: enough for a sheet's 2.5 mm lettering on a screen.
 DEFAULT_DPI = 150.0
+# Millimetres in a unit an SVG document may give its size in (the drawings give mm, matplotlib pt).
+_MM_PER = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72.0, "pc": 25.4 / 6.0, "px": 25.4 / 96.0, "": 25.4 / 96.0}
+_ROOT = re.compile(r"<svg\b[^>]*>", re.DOTALL)
+
+
+def svg_size_mm(svg_text: str) -> tuple[float, float]:
+    """The width and height of an SVG document (its root's ``width`` and ``height``), in mm."""
+    root = _ROOT.search(svg_text)
+    sizes = []
+    for name in ("width", "height"):
+        found = re.search(rf'\s{name}="([\d.]+)\s*(mm|cm|in|pt|pc|px|)"', root.group(0)) if root else None
+        if found is None:
+            raise ValueError(f"the SVG document gives no {name} in a unit of length")
+        sizes.append(float(found.group(1)) * _MM_PER[found.group(2)])
+    return sizes[0], sizes[1]
 
 
 def svg_to_png(svg_text: str, dpi: float = DEFAULT_DPI) -> bytes:

@@ -88,11 +88,14 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
     note.captioned(note.t("note_reactions_table", number=plan.number),
                    force_report.reaction_lines(analysis, plan, note.mark))
     _balancing(note, plan)
+    note.figure(f"forces_{plan.number}.svg", note.t("tb_sheet_forces_position", number=plan.number))
     if plan.with_friction is not None:
         note.para(f"**{text['forces_friction']}.** " + " ".join(force_report.friction_lines(analysis, plan,
                                                                                              note.mark)))
         if not plan.with_friction.locked:
             _friction_loads(note, plan)
+            note.figure(f"forces_friction_{plan.number}.svg",
+                        note.t("tb_sheet_forces_friction_position", number=plan.number))
 
 
 def _friction_loads(note: Writer, plan: PlanPosition) -> None:

@@ -32,6 +32,9 @@ td { font-variant-numeric: tabular-nums; }
 td.word { white-space: nowrap; }
 @page { size: A4; margin: 20mm 10mm 20mm 30mm; @bottom-center { content: counter(page); font-size: 9pt; } }
 p.table-caption { margin-bottom: 0.3em; }
+figure { margin: 1em 0 1.2em; text-align: center; break-inside: avoid; }
+figure img { max-width: 100%; max-height: 230mm; height: auto; }
+figcaption { margin-top: 0.4em; }
 th { hyphens: auto; }
 @media print { body { max-width: none; margin: 0; } h2, h3, p.table-caption { break-after: avoid; }
                table { break-inside: avoid; font-size: 0.8em; } th, td { padding: 0.2em 0.4em; } }
@@ -41,6 +44,10 @@ th { hyphens: auto; }
 # asks): marked so that a page break never parts it from its table.
 _CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.DOTALL)
 
+
+# A picture alone in its paragraph and the paragraph under it, its caption (the note's "Figure 2. ..."): one
+# figure, which a page break never parts.
+_FIGURE = re.compile(r"<p>(<img [^>]*>)</p>\n<p>((?:(?!</p>).)*)</p>\n", re.DOTALL)
 
 # A cell of one word (a number, a unit, a symbol): a narrow column must not break it after a slash (рад/с²).
 _ONE_WORD_CELL = re.compile(r"<td((?: [^>]*)?)>((?:(?!</td>)[^\s])+)</td>")
@@ -68,6 +75,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
         markdown.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
     rendered = markdown.renderer.render(list(tokens(markdown_text)), markdown.options, {})
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', rendered)
+    body = _FIGURE.sub(r"<figure>\1<figcaption>\2</figcaption></figure>\n", body)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'

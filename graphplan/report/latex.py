@@ -4,6 +4,10 @@ markdown-it-py parses the Markdown the note is written in (CommonMark with
 tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
 
 - headings unnumbered, since the note numbers its own;
+- a figure (a picture alone in its paragraph and the caption under it) as
+  its drawing's PDF beside the note, centred over its caption, the two
+  unbroken by a page (``\notefigure``: the drawing's name in a frame until
+  ``--format pdf`` has written the PDFs);
 - a table as a longtable with booktabs rules, its header repeated on every
   page it runs onto, and the paragraph right before it (the note's
   "Table 3. ...") as its caption, so that a page break never parts them;
@@ -34,7 +38,7 @@ from markdown_it.tree import SyntaxTreeNode
 
 from ..render.primitives import FONT_SIZE_PER_CAP, em_width, has_wide
 from ..render.wrapping import fitted
-from .markdown import plain, table_parts, tree
+from .markdown import picture_source, plain, table_parts, tree
 from .symbols import Symbol, pieces
 
 _SPECIAL = str.maketrans({"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
@@ -75,6 +79,14 @@ _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \setlength{\parskip}{0.5em}
 %% Lines may stretch rather than run over: a formula is a long run without a break.
 \sloppy
+%% A figure's drawing from its PDF beside the note (graphplan run --format pdf writes them), at its size or smaller
+%% to fit the line and most of the page; without the PDF, the name of the drawing in a frame.
+\usepackage{graphicx}
+\newsavebox{\notepicture}
+\newcommand{\notefigure}[2]{\IfFileExists{#1}{\sbox{\notepicture}{\includegraphics{#1}}%%
+\ifdim\wd\notepicture>\linewidth\sbox{\notepicture}{\resizebox{\linewidth}{!}{\usebox{\notepicture}}}\fi
+\ifdim\ht\notepicture>0.8\textheight\sbox{\notepicture}{\resizebox{!}{0.8\textheight}{\usebox{\notepicture}}}\fi
+\usebox{\notepicture}}{\fbox{\texttt{#2}}}}
 %(locale)s"""
 
 # Chinese has no spaces: XeTeX may break a line between any two CJK characters.
@@ -190,10 +202,18 @@ class _Writer:
         self.titled = titled
 
     def blocks(self, nodes) -> str:
-        """The blocks in order, a paragraph right before a table taken into the table as its caption."""
+        """The blocks in order, a paragraph right before a table taken into the table as its caption, one right
+        after a picture into its figure."""
         nodes, parts = list(nodes), []
         for k, node in enumerate(nodes):
             if node.type == "paragraph" and k + 1 < len(nodes) and nodes[k + 1].type == "table":
+                continue
+            if k and picture_source(nodes[k - 1]) is not None and node.type == "paragraph":
+                continue
+            source = picture_source(node)
+            if source is not None:
+                after = nodes[k + 1] if k + 1 < len(nodes) and nodes[k + 1].type == "paragraph" else None
+                parts.append(self.figure(source, self.inline(after.children) if after is not None else ""))
                 continue
             if node.type == "table":
                 before = nodes[k - 1] if k else None
@@ -221,6 +241,14 @@ class _Writer:
         if node.type in ("code_block", "fence"):
             return f"\n\\begin{{verbatim}}\n{node.content}\\end{{verbatim}}\n"
         raise ValueError(f"the note has a {node.type}, which its LaTeX does not write")
+
+    @staticmethod
+    def figure(source: str, caption: str) -> str:
+        """The drawing ``source`` names, from its PDF beside the note, over its caption, in one unbreakable box."""
+        stem = source.rsplit(".", 1)[0]
+        return (f"\n\\par\\noindent\\begin{{minipage}}{{\\linewidth}}\\centering\n"
+                f"\\notefigure{{{stem}.pdf}}{{{_escape(source)}}}\\par\\vspace{{0.4em}}\n{caption}\\par\n"
+                f"\\end{{minipage}}\\par\\medskip\n")
 
     def heading(self, node: SyntaxTreeNode) -> str:
         """Unnumbered: the note numbers its own.  In a document the first level is its title."""

@@ -22,6 +22,7 @@ from ..vibration import Response, VibrationSpec
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
     from ..deliverables import MachineDynamics
+    from ..scene import Scene
 
 
 class Writer(Protocol):
@@ -29,11 +30,13 @@ class Writer(Protocol):
 
     text: Mapping[str, str]
     mark: str
+    scene: Scene
 
     def t(self, key: str, **values: object) -> str: ...
     def n(self, value: float, digits: int = 5) -> str: ...
     def heading(self, level: int, title: str) -> None: ...
     def para(self, *lines: str) -> None: ...
+    def figure(self, file: str, caption: str) -> None: ...
     def table(self, caption: str | None, header: list[str], rows: list[list[str]], align: str | None = None) -> None: ...
 
 
@@ -60,8 +63,10 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
                      value=note.n(float(np.ptp(energy)))))
     if flywheel is not None:
         _flywheel(note, flywheel, model)
+    note.figure("dynamics.svg", note.text["dyn_title"])
     if dynamics.motion is not None:
         _motion(note, dynamics, flywheel)
+        note.figure("motion.svg", note.t("motion_title", title=note.scene.title))
 
 
 def _reductions(note: Writer, model) -> None:
@@ -178,6 +183,7 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
                          moment=note.n(abs(result.residual_moment))))
     else:
         note.para(note.t("note_bal_residual_static", force=note.n(abs(result.residual_force))))
+    note.figure("rotor_balancing.svg", note.text["bal_title"])
 
 
 def vibration_section(note: Writer, section: int, spec: VibrationSpec, response: Response) -> None:
@@ -210,6 +216,8 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         ratio = note.n(response.isolation_ratio)
         note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=ratio, mass=mass,
                          omega=omega, stiffness=note.n(response.isolation_stiffness)))
+    note.figure("vibration_magnification.svg", note.text["vib_magnification_title"])
+    note.figure("vibration_transmissibility.svg", note.text["vib_transmissibility_title"])
 
 
 __all__ = ["balancing_section", "vibration_section"]

@@ -8,7 +8,8 @@ markdown-it's tokens with its own renderer; the LaTeX
 ``h1`` …), ``paragraph``, ``bullet_list``, ``ordered_list``, ``list_item``,
 ``table`` (``thead``, ``tbody``, ``tr``, ``th``, ``td``), ``hr``; inside a
 block, ``inline`` with ``text``, ``strong``, ``em``, ``code_inline``,
-``softbreak``, ``hardbreak`` and ``link``.
+``softbreak``, ``hardbreak``, ``link`` and ``image`` (a figure's picture alone in its
+paragraph, :func:`picture_source`).
 """
 
 from __future__ import annotations
@@ -72,3 +73,13 @@ def plain(node: SyntaxTreeNode) -> str:
     if node.type in ("softbreak", "hardbreak"):
         return " "
     return "".join(plain(child) for child in node.children)
+
+
+def picture_source(block: SyntaxTreeNode) -> str | None:
+    """The file of the picture a paragraph holds alone (the note's figure, ``![caption](plan_2.svg)``), else None."""
+    if block.type != "paragraph" or len(block.children) != 1:
+        return None
+    spans = block.children[0].children
+    if len(spans) != 1 or spans[0].type != "image":
+        return None
+    return str(spans[0].attrs.get("src", ""))

@@ -31,7 +31,7 @@ import contextlib
 import itertools
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -64,15 +64,18 @@ _NORMAL, _CORIOLIS, _TANGENTIAL, _RELATIVE = "ⁿ", "ᵏ", "^τ", "^r"
 _ROMAN = {1: "I", 2: "II", 3: "III"}
 
 
-def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None) -> str:
+def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None,
+                  figures: Collection[str] = ()) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.deliverables.MachineDynamics`) adds the section on the
     machine's dynamics: the equivalent model, the flywheel and, with a motor, the motion; a scene
     with ``[balancing]`` or ``[vibration]`` has a section on its rotor or on its vibration too.  A
     scene without a linkage has no ``analysis``: its note is those sections alone, of ``scene``.
+    ``figures`` names the drawings and plots written beside the note (``plan_2.svg``): each stands
+    in the section it illustrates, numbered, its caption under it.
     """
-    note = _Note(analysis, dynamics=dynamics, scene=scene)
+    note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures))
     note.write()
     return "\n".join(note.lines).rstrip("\n") + "\n"
 
@@ -105,6 +108,8 @@ class _Note:
     tables: int = 0
     dynamics: object = None
     scene: Scene | None = None
+    figures: frozenset[str] = frozenset()
+    pictures: int = 0
 
     def __post_init__(self) -> None:
         if self.analysis is not None:
@@ -160,6 +165,14 @@ class _Note:
         self.lines += ["| " + " | ".join(row) + " |" for row in rows]
         self.lines.append("")
 
+    def figure(self, file: str, caption: str) -> None:
+        """The drawing ``file`` when the run writes it beside the note, numbered, its caption under it (as GOST
+        2.105 sets a figure's); a picture alone in its paragraph, which the HTML, LaTeX and Word notes place."""
+        if file in self.figures:
+            self.pictures += 1
+            self.para(f"![{caption}]({file})")
+            self.para(self.t("figure_caption", number=self.pictures, caption=caption))
+
     def captioned(self, caption: str, table_lines: list[str]) -> None:
         """A table another report wrote, with the note's numbered caption."""
         self.tables += 1
@@ -191,7 +204,10 @@ class _Note:
         self.structure(section)
         section += 1
         self.initial_data(section)
+        self.figure("positions.svg", self.text["positions_title"])
         plans = self.analysis.plans
+        working = self.analysis.scene.positions.working
+        diagrams = self.t("kd_title", link=working.link, point="") if working is not None else None
         if plans or self.analysis.velocity_plans:
             section += 1
             self.heading(2, f"{section}. {self.t('note_kinematics')}")
@@ -199,10 +215,19 @@ class _Note:
                 self.para(self.t("note_kinematics_intro", positions=", ".join(str(p.number) for p in plans)))
             for number, plan in enumerate(plans, 1):
                 self.kinematics(f"{section}.{number}", plan)
+            subsection = len(plans)
             if self.analysis.velocity_plans:
-                self.heading(3, f"{section}.{len(plans) + 1}. {self.t('velocity_plans_heading')}")
+                subsection += 1
+                self.heading(3, f"{section}.{subsection}. {self.t('velocity_plans_heading')}")
                 self.para(velocity_plans_intro(self.analysis, self.mark))
                 self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
+                self.figure("velocity_plans.svg", self.text["velocity_plans_heading"])
+            if diagrams is not None and "diagrams.svg" in self.figures:
+                subsection += 1
+                self.heading(3, f"{section}.{subsection}. {diagrams}")
+                self.figure("diagrams.svg", diagrams)
+        elif diagrams is not None:   # no plans: the diagrams follow the plan of positions they are read off
+            self.figure("diagrams.svg", diagrams)
         if plans:
             section += 1
             self.errors(section)
@@ -341,6 +366,7 @@ class _Note:
         self.plan_section(plan, plan.acceleration)
         for kind in ("velocity", "acceleration"):
             self.values_table(plan, kind)
+        self.figure(f"plan_{plan.number}.svg", self.t("plan_sheet_title", number=plan.number))
 
     def plan_section(self, pp: PlanPosition, plan: Plan) -> None:
         kind = plan.kind

@@ -14,23 +14,38 @@ is typeset, so that the same HTML gives the same PDF bytes.
 
 from __future__ import annotations
 
+import base64
 import contextlib
 import os
-from collections.abc import Iterator
+import re
+from collections.abc import Iterator, Mapping
 
 from ..errors import OutputError
 
+# A figure's picture, named by its file beside the note.
+_PICTURE = re.compile(r'<img src="([^"]+)"')
 
-def note_pdf(html: str) -> bytes:
-    """The PDF of the note's HTML (:func:`graphplan.report.note.note_html`), pages A4 as its stylesheet sets."""
+
+def note_pdf(html: str, pictures: Mapping[str, str] | None = None) -> bytes:
+    """The PDF of the note's HTML (:func:`graphplan.report.note.note_html`), pages A4 as its stylesheet sets,
+    with the drawings its figures name (``plan_2.svg``) taken from ``pictures`` (file name → SVG text)."""
     try:
         import weasyprint
     except (ImportError, OSError) as error:  # OSError: the Pango library is missing
         raise OutputError(f"note.pdf: the PDF of the note needs WeasyPrint and the Pango library ({error}); "
                           "install them (pip install weasyprint; Debian: apt install libpango-1.0-0) "
                           "or leave pdf out of --format") from error
+    pictures = pictures or {}
+
+    # The pictures go in as data: the folder they are written to is written after the PDF.
+    def inlined(found: re.Match) -> str:
+        svg = pictures.get(found.group(1))
+        if svg is None:
+            return found.group(0)
+        return f'<img src="data:image/svg+xml;base64,{base64.b64encode(svg.encode("utf-8")).decode("ascii")}"'
+
     with _fixed_font_dates():
-        return weasyprint.HTML(string=html).write_pdf()
+        return weasyprint.HTML(string=_PICTURE.sub(inlined, html)).write_pdf()
 
 
 @contextlib.contextmanager

@@ -12,6 +12,8 @@ document:
 - a table in a grid, its header row bold and repeated on every page it runs
   onto, each column aligned as the Markdown aligns it, and the paragraph
   right before it (the note's "Table 3. ...") kept on the same page;
+- a figure's drawing as a picture (PNG at 200 dpi as printed), its natural
+  size or smaller to fit the page, centred over its caption on the same page;
 - an A4 page with the margins of the LaTeX note (30 mm left, 10 mm right,
   20 mm top and bottom), the text in the language of the note, so that
   Word checks its spelling and hyphenates it in that language.
@@ -26,6 +28,7 @@ from __future__ import annotations
 
 import io
 import zipfile
+from collections.abc import Mapping
 
 from docx import Document as WordDocument
 from docx.enum.table import WD_TABLE_ALIGNMENT
@@ -36,7 +39,7 @@ from docx.shared import Mm, Pt
 from markdown_it.tree import SyntaxTreeNode
 
 from ..render.primitives import FONT_SIZE_PER_CAP, text_width
-from .markdown import plain, table_parts, tree
+from .markdown import picture_source, plain, table_parts, tree
 from .symbols import Symbol, pieces
 
 # Word's language tags of the note's locales.
@@ -61,14 +64,19 @@ _KEPT_TOGETHER_ROWS = 20
 _ALIGN = {"l": WD_ALIGN_PARAGRAPH.LEFT, "c": WD_ALIGN_PARAGRAPH.CENTER, "r": WD_ALIGN_PARAGRAPH.RIGHT}
 # Every part of the file is stored at this time (the zip format's earliest), so that a note gives one file.
 _STORED_AT = (1980, 1, 1, 0, 0, 0)
+# A figure's picture: the height it may take on the page with its caption under it (mm), and its resolution as
+# printed (dots per inch).
+_PICTURE_HEIGHT_MM = 230.0
+_PICTURE_DPI = 200.0
 
 
-def note_docx(markdown_text: str, title: str, locale: str) -> bytes:
-    """The explanatory note ``markdown_text`` as a Word document (the bytes of a .docx file) titled ``title``."""
+def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str, str] | None = None) -> bytes:
+    """The explanatory note ``markdown_text`` as a Word document (the bytes of a .docx file) titled ``title``,
+    with the drawings its figures name (``plan_2.svg``) taken from ``pictures`` (file name → SVG text)."""
     document = WordDocument()
     _set_page(document)
     _set_styles(document, locale)
-    _Writer(document).blocks(tree(markdown_text).children)
+    _Writer(document, pictures or {}).blocks(tree(markdown_text).children)
     properties = document.core_properties
     properties.title, properties.language = " ".join(title.split()), _LANGUAGES.get(locale, locale)
     properties.author, properties.comments = "graphplan", ""
@@ -124,8 +132,9 @@ def _set_styles(document, locale: str) -> None:
 class _Writer:
     """Writes the blocks of the note's syntax tree into the document, in order."""
 
-    def __init__(self, document) -> None:
+    def __init__(self, document, pictures: Mapping[str, str]) -> None:
         self.document = document
+        self.pictures = pictures
 
     def blocks(self, nodes, list_style: str | None = None, depth: int = 0) -> None:
         """``nodes`` in order; inside a list (``list_style``), nested ``depth`` lists deep."""
@@ -134,8 +143,12 @@ class _Writer:
             if node.type == "heading":
                 level = int(node.tag[1:])
                 self.spans(self.document.add_heading("", level=0 if level == 1 else min(level - 1, 3)), node.children)
+            elif node.type == "paragraph" and (source := picture_source(node)) in self.pictures:
+                self.picture(self.pictures[source])
             elif node.type == "paragraph":
                 paragraph = self.document.add_paragraph(style=list_style)
+                if k and picture_source(nodes[k - 1]) in self.pictures:   # the figure's caption
+                    paragraph.alignment = WD_ALIGN_PARAGRAPH.CENTER
                 self.spans(paragraph, node.children)
                 # A table's caption stays on the page of its table; a list's items stand as lines.
                 paragraph.paragraph_format.keep_with_next = k + 1 < len(nodes) and nodes[k + 1].type == "table"
@@ -153,6 +166,17 @@ class _Writer:
                 self.document.add_paragraph()
             else:
                 raise ValueError(f"the note has a {node.type}, which its Word document does not write")
+
+    def picture(self, svg: str) -> None:
+        """The drawing centred, at its size or smaller to fit the page, kept on the page of its caption."""
+        from ..render.export import svg_size_mm, svg_to_png
+
+        width, height = svg_size_mm(svg)
+        scale = min(1.0, _LINE_MM / width, _PICTURE_HEIGHT_MM / height)
+        paragraph = self.document.add_paragraph()
+        paragraph.alignment = WD_ALIGN_PARAGRAPH.CENTER
+        paragraph.paragraph_format.keep_with_next = True
+        paragraph.add_run().add_picture(io.BytesIO(svg_to_png(svg, dpi=_PICTURE_DPI * scale)), width=Mm(width * scale))
 
     def table(self, node: SyntaxTreeNode) -> None:
         parts = table_parts(node)

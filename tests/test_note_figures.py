@@ -1,0 +1,139 @@
+"""The explanatory note shows the drawings and plots a run writes beside it, each in the section it illustrates.
+
+The shaper starter has every kind of drawing of a linkage (plan of positions, plan sheets, the velocity plans of
+every position, kinematic diagrams, force sheets with and without friction, the dynamics and the motion); the
+rotor starter the balancing polygons and the vibration plots.  Each figure is checked against the files the
+run wrote: in the Markdown as a picture and its numbered caption, in the HTML as a figure, in the PDF and the
+LaTeX document as the drawing itself (its own lettering found on the page of the caption), in the Word
+document as a picture of the drawing's proportions.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from graphplan.cli import main
+from graphplan.render.export import svg_size_mm
+from graphplan.starters import starter
+
+pdfium = pytest.importorskip("pypdfium2")
+
+# A figure in the note's Markdown: the picture alone in its paragraph, its caption the paragraph under it.
+FIGURE = re.compile(r"^!\[([^\]]*)\]\(([^)]+)\)\n\n(.*)$", re.MULTILINE)
+TEXT_WIDTH_MM = 170.0
+
+
+def run(folder: Path, kind: str, *options: str) -> Path:
+    scene = folder / f"{kind}.toml"
+    scene.write_text(starter(kind), encoding="utf-8")
+    out = folder / "out"
+    assert main(["run", str(scene), "--out", str(out), *options]) == 0
+    return out
+
+
+@pytest.fixture(scope="module")
+def shaper(tmp_path_factory) -> Path:
+    return run(tmp_path_factory.mktemp("shaper"), "shaper", "--format", "pdf,docx")
+
+
+def figures(note: str) -> list[tuple[str, str, str]]:
+    return FIGURE.findall(note)
+
+
+def heading_above(note: str, file: str, level: int) -> str:
+    """The last heading of ``level`` before the figure of ``file``."""
+    before = note[:note.index(f"]({file})")]
+    return re.findall(rf"^{'#' * level} (.*)$", before, re.MULTILINE)[-1]
+
+
+def pages_with(pdf_path: Path, words: str) -> list[str]:
+    document = pdfium.PdfDocument(str(pdf_path))
+    texts = [document[k].get_textpage().get_text_range() for k in range(len(document))]
+    return [text for text in texts if words in text]
+
+
+def test_every_drawing_and_plot_written_is_a_numbered_figure_in_its_section(shaper):
+    note = (shaper / "note.md").read_text(encoding="utf-8")
+    found = figures(note)
+    written = {path.name for path in shaper.glob("*.svg") if not path.name.startswith("sheet_")}
+    assert [file for _, file, _ in found] and {file for _, file, _ in found} == written
+    for number, (alt, file, caption) in enumerate(found, 1):
+        assert caption == f"Figure {number}. {alt}"
+        assert (shaper / file).is_file()
+    for position in (3, 10):
+        for file in (f"plan_{position}.svg", f"forces_{position}.svg", f"forces_friction_{position}.svg"):
+            assert heading_above(note, file, 3).split(": ")[0].endswith(f"Position {position}")
+    assert heading_above(note, "forces_3.svg", 2).endswith("Force analysis")
+    assert heading_above(note, "plan_3.svg", 2).endswith("Kinematic analysis by the plan method")
+    assert heading_above(note, "positions.svg", 2).endswith("Initial data")
+    assert heading_above(note, "diagrams.svg", 3).endswith("Kinematic diagrams of the output link 6")
+    for file in ("dynamics.svg", "motion.svg"):
+        assert heading_above(note, file, 2).endswith("Dynamics of the machine")
+
+
+def test_the_html_sets_each_figure_with_its_caption(shaper):
+    page = (shaper / "note.html").read_text(encoding="utf-8")
+    note = (shaper / "note.md").read_text(encoding="utf-8")
+    shown = re.findall(r'<figure><img src="([^"]+)" alt="[^"]*" /><figcaption>([^<]*)</figcaption></figure>', page)
+    assert shown == [(file, caption) for _, file, caption in figures(note)]
+
+
+def test_the_pdf_shows_each_drawing_on_the_page_of_its_caption(shaper):
+    # Lettering of the drawings that the note's text never writes: their captions.
+    for caption, lettering in (("Figure 2. Velocity and acceleration plans, position 3", "Mechanism in position 3"),
+                               ("Figure 6. Force analysis, position 3", "Force polygon")):
+        pages = pages_with(shaper / "note.pdf", caption)
+        assert len(pages) == 1 and lettering in pages[0]
+    assert "Mechanism in position" not in (shaper / "note.md").read_text(encoding="utf-8")
+
+
+def test_the_word_note_has_each_drawing_as_a_picture_of_its_proportions_over_its_caption(shaper):
+    from docx import Document
+
+    document = Document(io.BytesIO((shaper / "note.docx").read_bytes()))
+    found = figures((shaper / "note.md").read_text(encoding="utf-8"))
+    pictures = document.inline_shapes
+    assert len(pictures) == len(found)
+    for picture, (_, file, _) in zip(pictures, found, strict=True):
+        width, height = svg_size_mm((shaper / file).read_text(encoding="utf-8"))
+        assert picture.width.mm <= TEXT_WIDTH_MM + 0.1
+        assert picture.width.mm <= width + 0.1   # never drawn larger than its own size
+        assert picture.width / picture.height == pytest.approx(width / height, rel=0.01)
+    captions = [k for k, paragraph in enumerate(document.paragraphs) if paragraph.text.startswith("Figure ")]
+    assert len(captions) == len(found)
+    for k in captions:
+        assert document.paragraphs[k].alignment == 1   # centred
+        assert document.paragraphs[k - 1].paragraph_format.keep_with_next
+
+
+@pytest.mark.skipif(shutil.which("xelatex") is None, reason="XeLaTeX is not installed (Debian: texlive-xetex)")
+def test_the_latex_note_takes_each_drawing_from_its_pdf_beside_it(shaper, tmp_path):
+    folder = tmp_path / "tex"
+    shutil.copytree(shaper, folder)
+    (folder / "note.pdf").unlink()
+    subprocess.run(["xelatex", "-interaction=nonstopmode", "-halt-on-error", "note.tex"], cwd=folder,
+                   capture_output=True, timeout=300, check=True)
+    pages = pages_with(folder / "note.pdf", "Figure 2. Velocity and acceleration plans, position 3")
+    assert len(pages) == 1 and "Mechanism in position 3" in pages[0]
+    assert "not found" not in (folder / "note.log").read_text(encoding="utf-8", errors="replace")
+
+
+def test_a_note_asked_for_alone_has_no_figures_to_show(tmp_path):
+    out = run(tmp_path, "shaper", "--only", "note")
+    assert figures((out / "note.md").read_text(encoding="utf-8")) == []
+    assert not list(out.glob("*.svg"))
+
+
+def test_the_rotors_polygons_and_vibration_plots_are_figures_of_their_sections(tmp_path):
+    out = run(tmp_path, "rotor")
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert [file for _, file, _ in figures(note)] == ["rotor_balancing.svg", "vibration_magnification.svg",
+                                                     "vibration_transmissibility.svg"]
+    assert heading_above(note, "rotor_balancing.svg", 2).endswith("Balancing of the rotor")
+    assert heading_above(note, "vibration_magnification.svg", 2).endswith("Vibration from the rotating unbalance")
