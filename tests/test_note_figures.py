@@ -137,3 +137,12 @@ def test_the_rotors_polygons_and_vibration_plots_are_figures_of_their_sections(t
                                                      "vibration_transmissibility.svg"]
     assert heading_above(note, "rotor_balancing.svg", 2).endswith("Balancing of the rotor")
     assert heading_above(note, "vibration_magnification.svg", 2).endswith("Vibration from the rotating unbalance")
+
+
+def test_the_plot_of_the_balancing_load_closes_the_section_on_it(tmp_path):
+    scene = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "forces,figures,note", "--locale", "en"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert [file for _, file, _ in figures(note)] == ["forces_5.svg", "forces_11.svg", "balancing.svg"]
+    assert heading_above(note, "balancing.svg", 3).endswith("Balancing load over the cycle")

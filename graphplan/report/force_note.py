@@ -52,6 +52,7 @@ def forces_section(note: Writer, section: int) -> None:
         name, _ = force_report.balancing_symbol(note.analysis)
         note.heading(3, f"{section}.{number}. {note.t('note_cycle')}")
         note.captioned(note.t("note_cycle_table", name=name), force_report.cycle_lines(note.analysis, note.mark))
+        note.figure("balancing.svg", note.text["note_cycle"])
 
 
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:

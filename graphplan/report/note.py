@@ -109,7 +109,7 @@ class _Note:
     dynamics: object = None
     scene: Scene | None = None
     figures: frozenset[str] = frozenset()
-    pictures: int = 0
+    figures_shown: int = 0
 
     def __post_init__(self) -> None:
         if self.analysis is not None:
@@ -169,9 +169,9 @@ class _Note:
         """The drawing ``file`` when the run writes it beside the note, numbered, its caption under it (as GOST
         2.105 sets a figure's); a picture alone in its paragraph, which the HTML, LaTeX and Word notes place."""
         if file in self.figures:
-            self.pictures += 1
+            self.figures_shown += 1
             self.para(f"![{caption}]({file})")
-            self.para(self.t("figure_caption", number=self.pictures, caption=caption))
+            self.para(self.t("figure_caption", number=self.figures_shown, caption=caption))
 
     def captioned(self, caption: str, table_lines: list[str]) -> None:
         """A table another report wrote, with the note's numbered caption."""
