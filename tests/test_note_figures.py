@@ -146,3 +146,15 @@ def test_the_plot_of_the_balancing_load_closes_the_section_on_it(tmp_path):
     note = (out / "note.md").read_text(encoding="utf-8")
     assert [file for _, file, _ in figures(note)] == ["forces_5.svg", "forces_11.svg", "balancing.svg"]
     assert heading_above(note, "balancing.svg", 3).endswith("Balancing load over the cycle")
+
+
+def test_a_title_with_a_bracket_and_a_backslash_keeps_its_figure_whole(tmp_path):
+    # An unmatched "]" in the caption would close the picture's text early, and the figure would be lost.
+    scene = tmp_path / "press.toml"
+    scene.write_text(starter("flywheel").replace('title  = "Flywheel of a punching press"',
+                                                 'title  = "Press v2] \\\\ draft"'), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    page = (out / "note.html").read_text(encoding="utf-8")
+    assert ('<figure><img src="motion.svg" alt="Motion of the machine: Press v2] \\ draft" />'
+            "<figcaption>Figure 2. Motion of the machine: Press v2] \\ draft</figcaption></figure>") in page

@@ -170,7 +170,8 @@ class _Note:
         2.105 sets a figure's); a picture alone in its paragraph, which the HTML, LaTeX and Word notes place."""
         if file in self.figures:
             self.figures_shown += 1
-            self.para(f"![{caption}]({file})")
+            alternative = re.sub(r"([\\\[\]])", r"\\\1", caption)   # a title's brackets must not close it
+            self.para(f"![{alternative}]({file})")
             self.para(self.t("figure_caption", number=self.figures_shown, caption=caption))
 
     def captioned(self, caption: str, table_lines: list[str]) -> None:
