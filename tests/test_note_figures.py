@@ -77,11 +77,13 @@ def test_every_drawing_and_plot_written_is_a_numbered_figure_in_its_section(shap
         assert heading_above(note, file, 2).endswith("Dynamics of the machine")
 
 
-def test_the_html_sets_each_figure_with_its_caption(shaper):
+def test_the_html_sets_each_figure_with_its_caption_and_links_it_to_its_drawing(shaper):
     page = (shaper / "note.html").read_text(encoding="utf-8")
     note = (shaper / "note.md").read_text(encoding="utf-8")
-    shown = re.findall(r'<figure><img src="([^"]+)" alt="[^"]*" /><figcaption>([^<]*)</figcaption></figure>', page)
-    assert shown == [(file, caption) for _, file, caption in figures(note)]
+    shown = re.findall(r'<figure><a href="([^"]+)"><img src="([^"]+)" alt="[^"]*" /></a>'
+                       r'<figcaption>([^<]*)</figcaption></figure>', page)
+    assert shown == [(file, file, caption) for _, file, caption in figures(note)]
+    assert all((shaper / file).is_file() for file, _, _ in shown)
 
 
 def test_the_pdf_shows_each_drawing_on_the_page_of_its_caption(shaper):
@@ -156,5 +158,5 @@ def test_a_title_with_a_bracket_and_a_backslash_keeps_its_figure_whole(tmp_path)
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out)]) == 0
     page = (out / "note.html").read_text(encoding="utf-8")
-    assert ('<figure><img src="motion.svg" alt="Motion of the machine: Press v2] \\ draft" />'
+    assert ('<figure><a href="motion.svg"><img src="motion.svg" alt="Motion of the machine: Press v2] \\ draft" /></a>'
             "<figcaption>Figure 2. Motion of the machine: Press v2] \\ draft</figcaption></figure>") in page

@@ -46,8 +46,9 @@ _CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.DOTALL)
 
 
 # A picture alone in its paragraph and the paragraph under it, its caption (the note's "Figure 2. ..."): one
-# figure, which a page break never parts.
-_FIGURE = re.compile(r"<p>(<img [^>]*>)</p>\n<p>((?:(?!</p>).)*)</p>\n", re.DOTALL)
+# figure, which a page break never parts.  The picture links to its file: a plan sheet drawn at 530 mm shows
+# at the page's width, and its full size is a click away.
+_FIGURE = re.compile(r'<p>(<img src="([^"]*)"[^>]*>)</p>\n<p>((?:(?!</p>).)*)</p>\n', re.DOTALL)
 
 # A cell of one word (a number, a unit, a symbol): a narrow column must not break it after a slash (рад/с²).
 _ONE_WORD_CELL = re.compile(r"<td((?: [^>]*)?)>((?:(?!</td>)[^\s])+)</td>")
@@ -75,7 +76,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
         markdown.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
     rendered = markdown.renderer.render(list(tokens(markdown_text)), markdown.options, {})
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', rendered)
-    body = _FIGURE.sub(r"<figure>\1<figcaption>\2</figcaption></figure>\n", body)
+    body = _FIGURE.sub(r'<figure><a href="\2">\1</a><figcaption>\3</figcaption></figure>\n', body)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
