@@ -162,16 +162,75 @@ def analyse(scene: Scene) -> Analysis:
     friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()
     loads, balance, with_friction = (), None, None
     if acting is not None:
-        loads = link_loads(mechanism, motion_state(motion), acting)
-        balance = equilibrium(mechanism, motion, loads)
-        if friction:
-            with_friction = equilibrium(mechanism, motion, loads, friction)
+        # A singular position's velocities and accelerations are not numbers: its loads and reactions come
+        # out as none (Equilibrium.singular), which its warning has told.
+        with np.errstate(invalid="ignore"):
+            loads = link_loads(mechanism, motion_state(motion), acting)
+            balance = equilibrium(mechanism, motion, loads)
+            if friction:
+                with_friction = equilibrium(mechanism, motion, loads, friction)
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
-    in_order = tuple(sorted(motion.warnings + stepped_over, key=lambda warning: warning.position))
+    warnings += _measured_far_off((*plans, *every))
+    in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions),
+                            key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
                     loads, balance, with_friction, friction, every)
+
+
+# A hand reading this far (per cent) from the same quantity of the plan as constructed is a misread length or
+# a segment taken for another, not a drawing's error: a plan drawn with care keeps within a few per cent.
+FAR_OFF_PERCENT = 15.0
+
+
+def _measured_far_off(drawn: tuple[PlanPosition | VelocityPosition, ...]) -> tuple[PositionWarning, ...]:
+    """A warning at each position with hand readings more than :data:`FAR_OFF_PERCENT` from its constructed plan."""
+    warnings = []
+    for position in drawn:
+        constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
+        off = [(row.quantity, row.plan, constructed[row.quantity]) for row in position.errors
+               if row.source == "measured" and row.quantity in constructed
+               and abs(row.plan - constructed[row.quantity]) > FAR_OFF_PERCENT / 100.0 * abs(constructed[row.quantity])]
+        if off:
+            readings = "; ".join(f"{quantity} = {measured:.4g} against {plan:.4g}, "
+                                 f"{abs(measured - plan) / abs(plan) * 100.0 if plan else math.inf:.1f} % off"
+                                 for quantity, measured, plan in off)
+            warnings.append(PositionWarning(position.index, "measured-far-off", (
+                f"measured.{position.number}: readings more than {FAR_OFF_PERCENT:g} % off the plan as constructed "
+                f"({readings}): a length misread, or a segment taken for another?")))
+    return tuple(warnings)
+
+
+def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
+    """A warning where the working link turns back more than twice a turn (a jaw that swings twice): its two
+    extremes are then a choice, and its strokes, K and a load's window follow that choice.  Given at the
+    position nearest the first turn back that is not one of the extremes."""
+    if len(positions.reversals) <= 2 or positions.extremes is None:
+        return ()
+    turn = 2.0 * math.pi
+
+    def apart(one: float, other: float) -> float:
+        return abs((one - other + math.pi) % turn - math.pi)
+
+    # The extremes lie inside the sweep's brackets, whose middles the reversals are: a bracket is half a degree.
+    others = [value for value in positions.reversals
+              if min(apart(value, extreme) for extreme in positions.extremes) > math.radians(0.5)]
+    if not others:
+        return ()
+    nearest = {index: min(apart(value, reversal) for reversal in others)
+               for index, value in enumerate(positions.values)}
+    where = min(nearest, key=nearest.get)
+    working, driver = mechanism.scene.positions.working, mechanism.driver
+    angles = ", ".join(f"{math.degrees(value) % 360.0:.1f}" for value in sorted(positions.reversals,
+                                                                               key=lambda v: v % turn))
+    start, end = (math.degrees(value) % 360.0 for value in positions.extremes)
+    return (PositionWarning(where, "extra-reversals",
+                            f"link {working.link} turns back {len(positions.reversals)} times a turn of link "
+                            f"{driver.link} (at about {angles}°), not twice: its working stroke is taken from "
+                            f"{start:.2f}° to {end:.2f}°, the longest it makes in its working sense, and each "
+                            f"position's stroke follows its sense of motion there; if it should swing once a "
+                            f"turn, check the lengths"),)
 
 
 def instant(motion: Motion, index: int) -> tuple[dict[str, complex], dict[int, complex]]:

@@ -70,7 +70,7 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
         return 'needs a sheet format: drawing.sheet is "none"'
     if piece == "dynamics" and scene.dynamics is None:
         return "needs a [dynamics] table"
-    if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene)) is not None:
+    if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene, analysis)) is not None:
         return reason
     if piece == "accuracy" and analysis.motion.singular:
         index = min(analysis.motion.singular)

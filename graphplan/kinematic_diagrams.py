@@ -185,12 +185,16 @@ def interval_count(cyclic: bool, count: int) -> int:
     return count if cyclic else count - 1
 
 
-def unavailable(scene: Scene) -> str | None:
-    """Why the scene's kinematic diagrams cannot be drawn, or None when they can."""
+def unavailable(scene: Scene, analysis: Analysis | None = None) -> str | None:
+    """Why the scene's kinematic diagrams cannot be drawn (of ``analysis``, where given), or None when they can."""
     if scene.positions.working is None:
         return "needs the output link: positions.working"
     if scene.driver is not None and interval_count(scene.driver.cyclic, scene.positions.count) < 3:
         return "needs at least 3 intervals between positions for the chord method"
+    if analysis is not None and analysis.motion.singular:
+        # The chord method runs through every position, and the velocities of a singular one are not determined.
+        number = analysis.positions.numbers[min(analysis.motion.singular)]
+        return f"needs every position regular: position {number} is singular"
     return None
 
 

@@ -276,17 +276,19 @@ def load_at(load: Load, index: int) -> Load:
 
 
 def power(loads: tuple[Load, ...], state: State) -> Scalar:
-    """Σ(F·v + M·ω) of the loads: the power they deliver to the mechanism."""
+    """Σ(F·v + M·ω) of the loads: the power they deliver to the mechanism (not a number at a singular
+    position of an array state, whose velocities are not)."""
     total: Scalar = 0.0
-    for load in loads:
-        if load.is_force:
-            # A displaced force's point moves with its link: v + ω × offset.
-            velocity = state.points[load.point].v
-            if np.any(load.offset != 0):
-                velocity = velocity + 1j * state.links[load.link].omega * load.offset
-            total = total + dot(load.force, velocity)
-        else:
-            total = total + load.moment * state.links[load.link].omega
+    with np.errstate(invalid="ignore"):
+        for load in loads:
+            if load.is_force:
+                # A displaced force's point moves with its link: v + ω × offset.
+                velocity = state.points[load.point].v
+                if np.any(load.offset != 0):
+                    velocity = velocity + 1j * state.links[load.link].omega * load.offset
+                total = total + dot(load.force, velocity)
+            else:
+                total = total + load.moment * state.links[load.link].omega
     return total
 
 

@@ -12,13 +12,14 @@ a warning, never silently.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
-from .errors import SceneError
+from .errors import SceneError, SingularPositionError
 from .groups.base import Guide, GuideMotion
 from .kinematics import (
     LinkMotion,
@@ -187,7 +188,13 @@ class _Context:
         for index in np.flatnonzero(bad):
             found = error(int(index), self._describe(int(index)))
             self.raised.setdefault(int(index), found)
-            self.singular.setdefault(int(index), str(found))
+            # The warning is told with its position's number: its text gives the driver's place alone.
+            told = str(found)
+            if isinstance(found, SingularPositionError):
+                numbered = re.fullmatch(r"position \S+ \((.*)\)", found.position)
+                told = str(SingularPositionError(numbered.group(1) if numbered else found.position, found.group,
+                                                 found.reason))
+            self.singular.setdefault(int(index), told)
 
 
 @dataclass(frozen=True)

@@ -43,7 +43,10 @@ class PositionSet:
 
     ``extremes`` are the driver coordinates where the working stroke starts
     and where it ends (the idle stroke starts), when the scene names the
-    working link.
+    working link.  ``reversals`` are the driver coordinates, to half a
+    degree, of every turn back of the working link over the crank's turn:
+    the two extremes, and more where the link swings to and fro more than
+    once a turn.
     """
 
     values: np.ndarray
@@ -51,6 +54,7 @@ class PositionSet:
     strokes: tuple[str, ...] | None
     reference: Reference
     extremes: tuple[float, float] | None
+    reversals: tuple[float, ...] = ()
 
     def stroke_turns(self, sense: int) -> tuple[float, float] | None:
         """How far the crank turns (rad) in the working stroke and in the idle one, turning the way ``sense``
@@ -72,13 +76,13 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     if not driver.cyclic:  # a slider's travel, a rocking crank's swing: from one end to the other
         values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
         reference = reference_at(mechanism, float(values[0]))
-        extremes = None
+        extremes, reversals = None, ()
     else:
         start = 0.0 if spec.start == "extreme" else math.radians(float(spec.start))
         reference = reference_at(mechanism, start)
-        extremes = None
+        extremes, reversals = None, ()
         if spec.working is not None:
-            extremes, reference = _settle_extremes(mechanism, start, reference)
+            extremes, reversals, reference = _settle_extremes(mechanism, start, reference)
             if spec.start == "extreme":
                 start = extremes[0]
                 reference = reference_at(mechanism, start)
@@ -89,7 +93,8 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         if not driver.cyclic:   # a crank's turn was swept for its extremes already
             require_moving(motion)
         strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
-    return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes)
+    return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes,
+                       reversals=reversals)
 
 
 def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
@@ -139,26 +144,29 @@ def require_moving(motion: Motion) -> None:
 def in_working_stroke(motion: Motion) -> np.ndarray:
     """Whether each position of ``motion`` belongs to the working stroke (the scene must name the working link)."""
     speed, rate = working_speed(motion)
-    scale = float(np.max(np.abs(speed))) or 1.0
-    at_rest = np.abs(speed) <= 1e-9 * scale
+    # Of the finite speeds: a singular position's is not (it would make every other position one at rest).
+    finite = np.abs(speed[np.isfinite(speed)])
+    scale = float(np.max(finite)) if finite.size else 0.0
+    at_rest = np.abs(speed) <= 1e-9 * (scale or 1.0)
     # At an extreme the link is at rest; it belongs to the stroke it is about to begin.
     return np.where(at_rest, rate > 0, speed > 0)
 
 
 def _settle_extremes(mechanism: Mechanism, start: float, reference: Reference):
-    """The extremes, with branches chosen at the first position (a ``near`` branch may depend on it)."""
+    """The extremes and every reversal, with branches chosen at the first position (a ``near`` branch may
+    depend on it)."""
     for _ in range(3):
-        extremes = _find_extremes(mechanism, start, reference)
+        *extremes, reversals = _find_extremes(mechanism, start, reference)
         first = extremes[0] if mechanism.scene.positions.start == "extreme" else start
         settled = reference_at(mechanism, first)
         if settled.branches == reference.branches:
-            return extremes, reference
+            return tuple(extremes), reversals, reference
         # A triad's branch holds its pose where it was chosen: chosen again at the first position, the same
         # assembly is another branch, whose extremes are those just found.
         if _same_assembly(mechanism, first, reference, settled):
-            return extremes, settled
+            return tuple(extremes), reversals, settled
         reference = settled
-    return extremes, reference
+    return tuple(extremes), reversals, reference
 
 
 def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Reference) -> bool:
@@ -169,8 +177,10 @@ def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Re
                for name, point in first.points.items())
 
 
-def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> tuple[float, float]:
-    """Driver angles where the working stroke starts and ends, to machine precision."""
+def _find_extremes(mechanism: Mechanism, start: float,
+                   reference: Reference) -> tuple[float, float, tuple[float, ...]]:
+    """Driver angles where the working stroke starts and ends, to machine precision, and where the working
+    link turns back at all (the middles of the sweep's brackets, in the driver's order from ``start``)."""
     driver = mechanism.driver
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
@@ -182,19 +192,24 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference) -> 
         return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]
 
     found = {}
+    before, after = speed[:-1], speed[1:]
+    # A sign change is a turn back where the speed passes through zero, not through a singular position (a
+    # toggle of a later group, where it runs off to infinity and back from the other side).
+    through_zero = np.minimum(np.abs(before), np.abs(after)) < np.median(np.abs(speed[np.isfinite(speed)]))
     for name, rising in (("working", True), ("idle", False)):
-        before, after = speed[:-1], speed[1:]
-        crossing = (before <= 0) & (after > 0) if rising else (before >= 0) & (after < 0)
+        crossing = through_zero & ((before <= 0) & (after > 0) if rising else (before >= 0) & (after < 0))
         candidates = np.flatnonzero(crossing)
         if len(candidates) == 0:
             working = mechanism.scene.positions.working
             raise SceneError(working.where if working else "positions.working",
                              f"link {working.link if working else '?'} never reverses its motion, so it has no extreme position")
         # Several reversals (a dwell, a six-bar): take the one that begins the longest stroke.
-        index = max(candidates, key=lambda i: _stroke_length(speed, i, rising))
+        index = max(candidates, key=lambda i: _stroke_length(speed[:-1], i, rising))
         lo, hi = steps[index], steps[index + 1]
         found[name] = float(lo) if speed[index] == 0 else _zero_between(speeds_at, float(lo), float(hi))
-    return found["working"], found["idle"]
+    turning_back = np.flatnonzero(through_zero & (((before <= 0) & (after > 0)) | ((before >= 0) & (after < 0))))
+    reversals = tuple(float(steps[i] + steps[i + 1]) / 2.0 for i in turning_back)
+    return found["working"], found["idle"], reversals
 
 
 def _zero_between(speeds_at: Callable[[Sequence[float]], np.ndarray], lo: float, hi: float) -> float:
@@ -220,8 +235,12 @@ def _zero_between(speeds_at: Callable[[Sequence[float]], np.ndarray], lo: float,
                         rtol=4 * np.finfo(float).eps, maxiter=200))
 
 
-def _stroke_length(speed: np.ndarray, index: int, rising: bool) -> int:
-    following = speed[index + 1:] > 0 if rising else speed[index + 1:] < 0
+def _stroke_length(turn: np.ndarray, index: int, rising: bool) -> int:
+    """How many samples of the speed over a turn (``turn``, periodic) follow sample ``index`` in the sense that
+    the reversal after it begins.  Counted round the end of the samples: a stroke the sweep's start cuts in two
+    is one stroke, so that which reversal begins the longest does not depend on where the positions start."""
+    following = np.roll(turn, -(index + 1))
+    following = following > 0 if rising else following < 0
     stops = np.flatnonzero(~following)
     return int(stops[0]) if len(stops) else len(following)
 

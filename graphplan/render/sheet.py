@@ -359,7 +359,7 @@ def fewest_sheets_length_scale(analysis: Analysis, sheet: str, largest: float) -
         return largest
     form = form_of(analysis.scene.locale)
     diagrams: tuple[Panel, ...] = ()
-    if unavailable(analysis.scene) is None:
+    if unavailable(analysis.scene, analysis) is None:
         with contextlib.suppress(SceneError):  # the run that draws them says why they fit no sheet
             diagrams = (diagrams_panel(analysis, sheet),)
     fewest: tuple[int, float] | None = None

@@ -1,0 +1,197 @@
+"""Which reversals of the working link are its extremes, when it turns back more than twice a turn or passes
+a singular position; and what the run says about it."""
+
+from __future__ import annotations
+
+import json
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+from graphplan.motion import solve
+from graphplan.positions import working_speed
+
+# A jaw crusher's six-bar (a teacher's scene): the jaw 6 swings twice while the eccentric shaft turns once,
+# C, D and E coming into line at both of its inner extremes.
+CRUSHER = """
+[scene]
+title = "Jaw crusher"
+locale = "en"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.5, 0.4], F = [-0.50, 1.20] }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.09
+rpm = 250.0
+
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.55, 0.35]
+assembly = "left"
+
+[[groups]]
+kind = "RRR"
+links = [5, 6]
+joints = ["D", "E", "F"]
+lengths = [0.45, 0.60]
+assembly = "left"
+
+[points]
+D = { link = 4, from = "C", toward = "B", at = 0.55, offset = 0.03 }
+
+[positions]
+count = 12
+start = START
+working = { link = 6, sense = "ccw" }
+"""
+
+
+def crusher(tmp_path, start):
+    path = tmp_path / f"crusher_{start}.toml".replace('"', "")
+    path.write_text(CRUSHER.replace("START", start), encoding="utf-8")
+    return path
+
+
+def test_a_link_that_swings_twice_a_turn_has_the_same_strokes_wherever_the_positions_start(tmp_path):
+    found = []
+    for start in ('"extreme"', "0.0", "300.0", "100.0"):
+        positions = analyse(graphplan.load(crusher(tmp_path, start))).positions
+        found.append((sorted(math.degrees(value) % 360.0 for value in positions.extremes),
+                      positions.stroke_turns(1)))
+    for extremes, turns in found[1:]:
+        assert extremes == pytest.approx(found[0][0], abs=1e-9)
+        assert turns == pytest.approx(found[0][1], abs=1e-9)
+
+
+def test_its_working_stroke_is_the_longest_it_makes_in_its_working_sense(tmp_path):
+    analysis = analyse(graphplan.load(crusher(tmp_path, '"extreme"')))
+    # Independently: ω6 on a grid of 0.01° round the turn, the runs of the working sense between its zeros.
+    grid = np.radians(np.arange(0.0, 360.0, 0.01))
+    speed, _ = working_speed(solve(analysis.mechanism, grid, analysis.positions.reference))
+    rising = np.flatnonzero((speed <= 0) & (np.roll(speed, -1) > 0))
+    falling = np.flatnonzero((speed >= 0) & (np.roll(speed, -1) < 0))
+    assert len(rising) == len(falling) == 2  # it turns back four times
+    runs = [((falling[falling > r][0] if np.any(falling > r) else falling[0] + len(grid)) - r, r) for r in rising]
+    length, begins = max(runs)
+    start, end = analysis.positions.extremes
+    assert math.degrees(start) % 360.0 == pytest.approx(math.degrees(grid[begins]), abs=0.02)
+    assert math.degrees(end) % 360.0 == pytest.approx((begins + length) * 0.01 % 360.0, abs=0.02)
+    assert math.degrees(analysis.positions.stroke_turns(1)[0]) == pytest.approx(length * 0.01, abs=0.02)
+
+
+def test_the_run_warns_that_the_extremes_are_a_choice(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", str(crusher(tmp_path, '"extreme"')), "--out", str(out), "--only", "positions"]) == 0
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    (warning,) = [w for w in document["warnings"] if w["code"] == "extra-reversals"]
+    assert "link 6 turns back 4 times a turn of link 2" in warning["detail"]
+    start, end = document["extremes_deg"]
+    assert f"from {start:.2f}° to {end:.2f}°" in warning["detail"]
+
+
+def test_a_link_that_turns_back_twice_has_no_such_warning():
+    analysis = analyse(graphplan.load("fixtures/stephenson_six_bar.toml"))
+    assert len(analysis.positions.reversals) == 2
+    assert not [w for w in analysis.warnings if w.code == "extra-reversals"]
+
+
+# A sine mechanism driving a rocker through a link (a teacher's scene) whose links 5 and 6 come into line at
+# position 7 (φ = 345°): there ω6 is not determined.
+TOGGLE = """
+[scene]
+title = "Sine mechanism with a rocker"
+locale = "en"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], G = [-0.30, 0.32] }
+lines = { slide = { through = "O", angle = 10.0 } }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.06
+omega = 15.0
+
+[[groups]]
+kind = "RPP"
+links = [3, 4]
+joints = ["A", "B"]
+guide = "slide"
+angle = 65.0
+
+[[groups]]
+kind = "RRR"
+links = [5, 6]
+joints = ["P", "E", "G"]
+lengths = [0.15, 0.123392747509]
+assembly = "right"
+
+[points]
+P = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.25 }
+S6 = { link = 6, from = "G", toward = "E", at = 0.07 }
+
+[links.6]
+mass = 1.5
+centre = "S6"
+inertia = 0.005
+
+[[loads]]
+kind = "moment"
+link = 6
+value = 60.0
+resisting = true
+during = "working"
+
+[positions]
+count = 12
+start = "extreme"
+working = { link = 6, sense = "ccw" }
+plans = [2, 8]
+"""
+
+
+@pytest.fixture
+def toggle(tmp_path):
+    path = tmp_path / "toggle.toml"
+    path.write_text(TOGGLE, encoding="utf-8")
+    return path
+
+
+def test_a_singular_position_leaves_the_other_positions_strokes_to_their_sense_of_motion(toggle):
+    analysis = analyse(graphplan.load(toggle))
+    singular = set(analysis.motion.singular)
+    assert singular == {6}
+    omega = analysis.motion.links[6].omega
+    for index, stroke in enumerate(analysis.positions.strokes):
+        if index not in singular and abs(omega[index]) > 1e-9:
+            assert stroke == ("working" if omega[index] > 0 else "idle"), index
+
+
+def test_a_run_past_a_singular_position_prints_its_warning_once_and_no_arithmetic_noise(toggle, tmp_path, capsys):
+    # Every piece the scene has data for but the kinematic diagrams, which the chord method draws through every
+    # position: left out, with the reason.
+    assert main(["check", str(toggle)]) == 0
+    assert "left out: diagrams (needs every position regular: position 7 is singular)" in capsys.readouterr().out
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        assert main(["run", str(toggle), "--out", str(tmp_path / "out")]) == 0
+    printed = capsys.readouterr()
+    (line,) = [line for line in printed.out.splitlines() + printed.err.splitlines() if "singular position" in line]
+    assert line.startswith("warning: position 7: singular position at φ = 345° in group II(5,6): ")
+    assert line.count("position 7") == 1
