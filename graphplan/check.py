@@ -327,12 +327,33 @@ def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForceP
         scale = forces.scale_of(name)
         rows.append(ErrorRow(position, name, analytic[name], drafted(constructed / scale, precision) * scale,
                              "drafting"))
+    read: dict[str, str] = {}
     for name, millimetres in (measured or {}).items():
-        if name not in forces.reactions:
-            raise SceneError(f"measured.{position}.forces.{name}",
-                             f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}")
-        rows.append(ErrorRow(position, name, analytic[name], millimetres * forces.scale_of(name), "measured"))
+        where = f"measured.{position}.forces.{name}"
+        reaction, scale = _measured_reaction(forces, name, where)
+        if reaction in read:
+            raise SceneError(where, f"measures the reaction {read[reaction]} measures (one is the other reversed): "
+                             "give each reaction once")
+        read[reaction] = name
+        rows.append(ErrorRow(position, reaction, analytic[reaction], millimetres * scale, "measured"))
     return rows
+
+
+def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, float]:
+    """The reaction a hand reading ``name`` measures and μF of the polygon it was read on.
+
+    A polygon draws a reaction under the name of the link it acts on: group II(3,4) closes with R43 (link 4
+    on 3, −R34), the crank's polygon lays off R32 (−R23, found by the group before).  Such a reading is of
+    the reaction the other way round, at the μF of the polygon that draws it.
+    """
+    if name in forces.reactions:
+        return name, forces.scale_of(name)
+    opposite = next((found for found in forces.reactions.values() if f"R{found.target}{found.source}" == name), None)
+    if opposite is None:
+        raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}")
+    drawn = next((group.scale for group in forces.groups
+                  if any(vector.name == name for vector in group.polygon.vectors)), None)
+    return opposite.name, drawn if drawn is not None else forces.scale_of(opposite.name)
 
 
 def _vanishes(reading: Reading, plans: Mapping[str, Plan], exact: float) -> bool:
@@ -348,12 +369,19 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
     rows = []
     for kind, lengths in measured.items():
         letters = sorted(plans[kind].points, key=len, reverse=True)
+        read: dict[frozenset[str], str] = {}
         for segment_name, millimetres in lengths.items():
-            segment = split_segment(segment_name, letters, f"measured.{position}.{kind}.{segment_name}")
+            where = f"measured.{position}.{kind}.{segment_name}"
+            # The acceleration plan's pole is drawn π and named p; a reading may call it either.
+            written = segment_name.replace("π", "p") if kind == "acceleration" else segment_name
+            segment = split_segment(written, letters, where)
+            if frozenset(segment) in read:
+                raise SceneError(where, f"is the segment {read[frozenset(segment)]} again (the same two points): "
+                                 "measure each segment once")
+            read[frozenset(segment)] = segment_name
             matches = [r for r in table if r.plan == kind and set(r.segment) == set(segment)]
             if not matches:
-                raise SceneError(f"measured.{position}.{kind}.{segment_name}",
-                                 f"the plan has no quantity read from {segment[0]}{segment[1]}")
+                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}")
             for reading in matches:
                 rows.append(ErrorRow(position, reading.quantity, analytic[reading.quantity],
                                      reading.value(plans, millimetres), "measured"))
@@ -365,7 +393,8 @@ def split_segment(name: str, letters: list[str], where: str) -> tuple[str, str]:
     for first in letters:
         if name.startswith(first) and name[len(first):] in letters:
             return (first, name[len(first):])
-    raise SceneError(where, f"is not two letters of the plan ({', '.join(sorted(letters))})")
+    pole = " (its pole π is p)" if "p" in letters and where.split(".")[2:3] == ["acceleration"] else ""
+    raise SceneError(where, f"is not two letters of the plan ({', '.join(sorted(letters))}){pole}")
 
 
 _QUANTITY = re.compile(r"^(V|a|omega|epsilon)(.*)$")

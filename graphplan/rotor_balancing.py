@@ -96,7 +96,11 @@ class RotatingMass:
 
 
 def vector_name(name: str) -> str:
-    """The name of the mass-radius product of the mass (or plane) ``name``: ``m1r1``, ``mLrL``."""
+    """The name of the mass-radius product of the mass (or plane) ``name``: ``m1r1``, ``mLrL``; a mass named
+    as a mass is (``m1``, ``mA``) gives its index alone, not ``mm1rm1``."""
+    index = name[1:]
+    if name[:1] == "m" and ((index.isdigit() and len(index) <= 3) or (len(index) == 1 and index.isalnum())):
+        name = index
     if len(name) <= 3 and name.isalnum():
         return f"m{name}r{name}"
     return f"(m·r){name}"
@@ -416,8 +420,17 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
         "unbalance": {"mass_radius": abs(result.unbalance), "angle_deg": unbalance_angle,
                       "moment": abs(result.unbalance_moment)},
         "planes": planes,
-        "residual": {"force": abs(result.residual_force), "moment": abs(result.residual_moment)},
+        # Zero but for rounding where the corrections balance: written as 0 below 1e-12 of the rotor's unbalance,
+        # as results.json writes every quantity's rounding.
+        "residual": {"force": _above_noise(abs(result.residual_force), total),
+                     "moment": _above_noise(abs(result.residual_moment),
+                                            sum(abs(mass.unbalance * mass.plane) for mass in result.spec.masses)
+                                            + sum(abs(plane.correction * plane.position) for plane in result.planes))},
     }
+
+
+def _above_noise(value: float, scale: float) -> float:
+    return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
 __all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "PolygonVector", "RotatingMass", "balance",

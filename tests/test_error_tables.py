@@ -93,6 +93,43 @@ def test_segment_names_split_into_plan_letters():
         split_segment("qz", letters, "measured.5.velocity.qz")
 
 
+def with_measured(measured):
+    return dataclasses.replace(graphplan.load(FIXTURE), measured=measured)
+
+
+def test_a_segment_measured_twice_under_its_two_names_is_refused():
+    # pb and bp are one segment: which reading would the table take?
+    for kind, lengths, again in (("velocity", {"pb": 38.82, "bp": 40.0}, "bp"),
+                                 ("acceleration", {"n3b": 22.27, "bn3": 20.0}, "bn3")):
+        with pytest.raises(SceneError, match=rf"^measured\.5\.{kind}\.{again}: is the segment .* again"):
+            analyse(with_measured({5: {kind: lengths}}))
+
+
+def test_the_acceleration_plans_pole_may_be_written_as_it_is_drawn(analysis):
+    # The plan draws its pole π (and the note writes πb·μa): a reading of πb is the one of pb.
+    as_drawn = rows(analyse(with_measured({5: {"acceleration": {"πb": 64.99, "πs3": 84.49}}})), 5, "measured")
+    as_named = rows(analysis, 5, "measured")
+    for quantity in ("aB", "aS3"):
+        assert as_drawn[quantity].plan == as_named[quantity].plan
+        assert as_drawn[quantity].percent == as_named[quantity].percent
+    with pytest.raises(SceneError, match=r"its pole π is p"):
+        analyse(with_measured({5: {"acceleration": {"πq": 10.0}}}))
+
+
+def test_the_csv_writes_an_error_of_rounding_as_none(tmp_path):
+    # The constructed pb of position 5 is VB to rounding: its error of -3e-14 % is none, which results.json
+    # writes as 0, and so does errors.csv.
+    assert main(["run", FIXTURE, "--out", str(tmp_path / "out"), "--only", "errors"]) == 0
+    lines = (tmp_path / "out" / "errors.csv").read_text(encoding="utf-8").splitlines()
+    percents = {tuple(line.split(",")[:2] + line.split(",")[3:4]): line.split(",")[-1] for line in lines[1:]}
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    for row in document["errors"]:
+        written = percents[(str(row["position"]), row["quantity"], row["source"])]
+        assert float(written) == pytest.approx(row["percent"], rel=1e-5, abs=0.0)
+        assert "e-" not in written or abs(float(written)) > 1e-10
+    assert percents[("5", "VB", "construction")] == "0"
+
+
 def test_a_quantity_that_vanishes_at_the_position_has_no_error_of_rounding():
     # The Scotch yoke in position 4 (φ = 180°): the crank pin moves square to the slot, so the block
     # rests in it and the yoke does not accelerate; both solutions give zero up to rounding.
@@ -129,3 +166,14 @@ def test_every_row_of_the_markdown_table_names_the_unit_of_its_quantity(analysis
     assert {quantity[0] for quantity, _ in rows_} == set(units)  # velocities to reactions, all present
     for quantity, unit in rows_:
         assert unit == units[quantity[0]], quantity
+
+
+def test_a_reading_far_off_its_constructed_plan_is_warned_of(analysis):
+    # The worked example's own readings are within 12 % of the construction (its ε3 the farthest): no warning.
+    assert not [w for w in analysis.warnings if w.code == "measured-far-off"]
+    constructed = rows(analysis, 5, "construction")["VB"].plan
+    pb = constructed / (2.975 / 150) * 1.25  # the segment read 25 % long
+    warned = analyse(with_measured({5: {"velocity": {"pb": pb}}}))
+    (warning,) = [w for w in warned.warnings if w.code == "measured-far-off"]
+    assert warning.position == 5 and warning.detail.startswith("measured.5: ")
+    assert f"VB = {constructed * 1.25:.4g} against {constructed:.4g}, 25.0 % off" in warning.detail

@@ -158,3 +158,47 @@ def test_the_error_report_explains_the_reaction_rows_only_when_it_has_them():
     kinematics_only = dataclasses.replace(scene, links={}, loads=())
     text = markdown(analyse(kinematics_only))
     assert "Реакции R" not in text and "| R23 |" not in text
+
+
+def drawn_length(plan, name):
+    """The length (mm) of the vector ``name`` on the polygon that draws it, and that polygon's μF."""
+    for group in plan.forces.groups:
+        for vector in group.polygon.vectors:
+            if vector.name == name:
+                return abs(vector.end - vector.start) / group.scale, group.scale
+    raise AssertionError(f"no polygon draws {name}")
+
+
+def test_a_reading_of_a_reaction_by_the_name_its_polygon_draws_it_under_is_of_the_reaction_reversed():
+    # The ratchet's polygons draw R43 (group II closes on link 3 with link 4's force on it) and the crank's R32
+    # (laid off, found by group II as R23): a student reads them there, each at its own polygon's μF.
+    analysis = analyse(graphplan.load(RATCHET))
+    plan = next(p for p in analysis.plans if p.number == 5)
+    r43, r43_scale = drawn_length(plan, "R43")
+    r32, r32_scale = drawn_length(plan, "R32")
+    assert r32_scale != plan.forces.scale_of("R23")  # the crank's polygon is drawn at a μF of its own
+    measured = {5: {"forces": {"R43": round(r43 * 1.02, 1), "R32": round(r32 * 0.97, 1)}}}
+    plan = next(p for p in analyse(with_scene(RATCHET, measured=measured)).plans if p.number == 5)
+    rows = force_rows(plan, "measured")
+    assert set(rows) == {"R34", "R23"}
+    for reaction, (reading, scale) in {"R34": (measured[5]["forces"]["R43"], r43_scale),
+                                       "R23": (measured[5]["forces"]["R32"], r32_scale)}.items():
+        exact = abs(complex(analysis.equilibrium.reaction(reaction).force[plan.index]))
+        assert rows[reaction].plan == pytest.approx(reading * scale)
+        assert rows[reaction].percent == pytest.approx((exact - reading * scale) / exact * 100.0)
+
+
+def test_a_reaction_read_both_ways_round_is_refused():
+    scene = with_scene(RATCHET, measured={5: {"forces": {"R34": 50.0, "R43": 52.0}}})
+    with pytest.raises(SceneError, match=r"^measured\.5\.forces\.R43: measures the reaction R34 measures"):
+        analyse(scene)
+
+
+def test_the_reactions_table_signs_its_errors_as_the_error_tables_do():
+    # Both write δ = (exact − found)/exact: a polygon's reaction 2 % short is +2 % in both.
+    from graphplan.report.forces import error_percent
+
+    row = ErrorRow(5, "R23", 100.0, 98.0, "construction")
+    assert row.percent == pytest.approx(2.0)
+    assert error_percent(100.0, 98.0) == "2"
+    assert error_percent(0.0, 0.0) == "0" and error_percent(0.0, 1.0) == "—"

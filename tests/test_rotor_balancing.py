@@ -393,3 +393,23 @@ def test_a_balanced_rotor_needs_no_correction_and_its_angle_is_not_rounding_nois
     document = balancing_results(balance(BalancingSpec(masses, planes=(0.0, 1.0))))
     assert all(entry["mass_radius"] < 1e-15 and entry["angle_deg"] == 0.0 for entry in document["planes"])
     assert document["unbalance"]["angle_deg"] == 0.0
+
+
+def test_the_residual_left_by_rounding_is_written_as_none_and_a_real_one_as_it_is():
+    # The teacher's rotor whose corrections left 1.4e-17 kg·m in results.json: written as 0 below 1e-12 of the
+    # rotor's unbalance, as every quantity's rounding is.
+    masses = [RotatingMass(2.5, 0.02, 0.0, 0.05), RotatingMass(0.8, 0.06, 0.0, 0.05),
+              RotatingMass(1.5, 0.04, 120.0, 0.15)]
+    result = balance(BalancingSpec(masses, planes=(0.0, 0.2), correction_radius=0.08))
+    assert 0 < abs(result.residual_force) < 1e-12 * sum(abs(mass.unbalance) for mass in masses)
+    assert balancing_results(result)["residual"] == {"force": 0.0, "moment": 0.0}
+    from graphplan.rotor_balancing import _above_noise
+
+    assert _above_noise(2e-12, 1.0) == 2e-12
+
+
+@pytest.mark.parametrize(("name", "label"), [("m1", "m1r1"), ("mA", "mArA"), ("1", "m1r1"), ("L", "mLrL"),
+                                             ("m12", "m12r12"), ("mass", "(m·r)mass"), ("m", "mmrm")])
+def test_a_mass_named_as_a_mass_is_lettered_by_its_index(name, label):
+    # "m1" made "mm1rm1" on the polygons and in the note's table.
+    assert RotatingMass(1.0, 0.1, 0.0, name=name).label == label

@@ -74,6 +74,14 @@ def percent(value: float, reference: float, mark: str = ".") -> str:
     return number((value - reference) / reference * 100.0, 3, mark)
 
 
+def error_percent(exact: float, found: float, mark: str = ".") -> str:
+    """The error of ``found``, (exact − found)/exact · 100, signed as the error tables sign it; 0 where both are
+    noughts, a dash where only the exact value is."""
+    if abs(exact) < ROUNDING_NOISE:
+        return "0" if abs(found) < ROUNDING_NOISE else "—"
+    return number((exact - found) / exact * 100.0, 3, mark)
+
+
 @dataclass(frozen=True)
 class LinkData:
     """One row of the initial data of the force analysis: a link's mass and inertia, and its motion from the plans.
@@ -210,7 +218,7 @@ def reaction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
     lines = [header, "|---|---:|---:|---:|"]
     for name, drawn, solved in reaction_rows(analysis, plan):
         lines.append(f"| {name} | {polar(drawn, mark)} | {polar(solved, mark)} | "
-                     f"{percent(abs(drawn), abs(solved), mark) if math.isfinite(abs(solved)) else '—'} |")
+                     f"{error_percent(abs(solved), abs(drawn), mark) if math.isfinite(abs(solved)) else '—'} |")
     return lines
 
 

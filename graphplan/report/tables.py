@@ -19,6 +19,7 @@ from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
 from ..render.numerals import scale_factor
 from .forces import number
+from .results import PERCENT_FLOOR
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
 
@@ -143,6 +144,8 @@ def csv_text(analysis: Analysis) -> str:
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["position", "quantity", "analytic", "source", "plan", "percent"])
     for row in analysis.errors:
+        # An error of rounding (1e-14 %) is none, as results.json writes it.
+        percent = 0.0 if abs(row.percent) < PERCENT_FLOOR else row.percent
         writer.writerow([row.position, row.quantity, f"{row.analytic:.12g}", row.source, f"{row.plan:.12g}",
-                         f"{row.percent:.6g}"])
+                         f"{percent:.6g}"])
     return out.getvalue()
