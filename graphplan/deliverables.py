@@ -139,6 +139,16 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
             for drawing in found]
 
 
+def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
+    """The locale's strings for the dynamics' drawings and plots: of a linkage, their angle is counted from the
+    first position, where its cycle starts (the note's φ of ωmax and ωmin is the crank's own angle)."""
+    text = strings(scene.locale)
+    if analysis is None:
+        return text
+    axis = text["angle_axis_from_position"].format(number=int(analysis.positions.numbers[0]))
+    return {**text, "dyn_angle_axis": axis, "motion_angle_axis": axis}
+
+
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
     from .render import drawings as draw
     from .render import plans as plan_layout
@@ -152,7 +162,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         from .render import dynamics as dynamics_layout
 
         dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
-        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, strings(analysis.scene.locale))
+        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, _dynamics_words(analysis.scene, analysis))
     # The sheets hold the drawings that are also written on their own: each is laid out once.
     panels = _course_panels(analysis, machine) if "sheets" in pieces else None
     if "positions" in pieces:
@@ -363,7 +373,7 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
         estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
-        found["motion.svg"] = motion_figure(dynamics.motion, strings(scene.locale), scene.title, estimate,
+        found["motion.svg"] = motion_figure(dynamics.motion, _dynamics_words(scene, analysis), scene.title, estimate,
                                             dynamics.resisting)
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram

@@ -40,7 +40,7 @@ from graphplan.mechanism import build
 from graphplan.motion import solve
 from graphplan.positions import make_positions
 from graphplan.render.dynamics import dynamics_svg, layout, scales_for
-from graphplan.render.primitives import Arrow, Polyline, Text
+from graphplan.render.primitives import Arrow, Polyline, Text, bounds_of
 from graphplan.render.sheet import dynamics_panel, dynamics_sheet
 from graphplan.scene import load, loads
 from graphplan.statics import equilibrium
@@ -450,3 +450,28 @@ def test_the_dynamics_stands_whole_on_an_a1_and_in_its_diagrams_on_smaller_sheet
             x0, y0, x1, y1 = sheet.frame
             for rect in sheet.panels.values():
                 assert x0 <= rect[0] and rect[2] <= x1 and y0 <= rect[1] and rect[3] <= y1, size
+
+
+def test_a_run_names_the_angle_of_its_dynamics_from_the_first_position_and_keeps_the_columns_apart(tmp_path):
+    # The diagrams run from the first position (ψ = 0 there), while the note's φ of ωmax is the crank's own
+    # angle: the axis says where it starts.  A longer name than "φ, °" moves the energy–mass diagram clear of it.
+    from shapely.geometry import box
+
+    from graphplan.cli import main
+    from graphplan.render.labels import text_box
+
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(Path("fixtures/shaper_six_bar.toml").read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n",
+                     encoding="utf-8")
+    first = int(load(scene).positions.number_from)
+    model = model_of("shaper_six_bar")
+    words = {"dyn_angle_axis": f"φ, ° from position {first}"}
+    layers = {layer.name: layer for layer in layout(model, flywheel_for(model, 0.05), words)}
+    names = [item for layer in ("moments", "works", "energy") for item in layers[layer].items
+             if isinstance(item, Text) and item.text == words["dyn_angle_axis"]]
+    assert len(names) == 3
+    energy_mass = box(*bounds_of(layers["energy-mass"].items))
+    assert not any(text_box(name).intersects(energy_mass) for name in names)
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
+    assert (out / "dynamics.svg").read_text(encoding="utf-8").count(f"φ, ° from position {first}") == 4

@@ -17,6 +17,7 @@ import pytest
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
+from graphplan.kinematics import at
 from graphplan.locale import strings
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg
@@ -327,3 +328,88 @@ def test_labels_that_took_each_other_s_only_spot_are_placed_again():
                  if isinstance(item, Text)]
         clashes.append(sum(a.intersection(b).area > 0.05 for a, b in itertools.combinations(boxes, 2)))
     assert clashes[0] == 0 and clashes[1] <= 2
+
+
+# A sine mechanism driving a rocker through a link (a teacher's scene): group II(3,4)'s yoke 4 slides on the
+# frame's guide, whose reaction R14 acts 190 mm along it from B in position 2.
+SINE_ROCKER = """
+[scene]
+title = "Sine mechanism with a rocker"
+locale = "en"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], G = [-0.30, 0.32] }
+lines = { slide = { through = "O", angle = 10.0 } }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.06
+omega = 15.0
+
+[[groups]]
+kind = "RPP"
+links = [3, 4]
+joints = ["A", "B"]
+guide = "slide"
+angle = 65.0
+
+[[groups]]
+kind = "RRR"
+links = [5, 6]
+joints = ["P", "E", "G"]
+lengths = [0.25, 0.16]
+assembly = "right"
+
+[points]
+P = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.25 }
+S4 = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.12 }
+S6 = { link = 6, from = "G", toward = "E", at = 0.07 }
+
+[links.4]
+mass = 4.0
+centre = "S4"
+inertia = 0.02
+
+[links.6]
+mass = 1.5
+centre = "S6"
+inertia = 0.005
+
+[[loads]]
+kind = "moment"
+link = 6
+value = 60.0
+resisting = true
+
+[positions]
+count = 12
+plans = [2]
+
+[drawing]
+length_scale = 0.0025
+"""
+
+
+def test_a_reaction_acting_off_its_joint_along_a_guide_stands_on_the_guide_s_axis_run_on_to_it(tmp_path):
+    scene = tmp_path / "sine.toml"
+    scene.write_text(SINE_ROCKER, encoding="utf-8")
+    analysis = analyse(graphplan.load(scene))
+    position = analysis.plans[0]
+    group = next(group for group in position.forces.groups if 4 in group.links)
+    found = position.forces.reactions["R14"]
+    shift_mm = found.offset / analysis.scene.drawing.length_scale
+    assert abs(shift_mm) > 50.0  # far past the block
+    layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position))}
+    items = layers[f"body-{force_layout.group_id(group.label)}-links"]
+    axes = [item for item in items if isinstance(item, Polyline) and item.stroke == force_layout._AXIS]
+    (axis,) = axes
+    start, end = (complex(*point) for point in axis.points)
+    slide = next(s for s in analysis.motion.slides if s.joint == found.joint and s.slider == 4)
+    u = complex(at(slide.u, position.index))
+    # The axis runs along the guide and reaches past the reaction's point by the 6 mm an axis runs on.
+    assert abs(((end - start) / abs(end - start) * u.conjugate()).imag) < 1e-9
+    assert abs(end - start) >= abs(shift_mm) + 6.0 + 14.0 - 1e-6

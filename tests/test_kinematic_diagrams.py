@@ -410,3 +410,23 @@ def test_thinned_ticks_still_mark_the_end_of_the_run():
     assert ticks[-1] - origin == pytest.approx(found.scales.axis_mm)
     numbers = [item.text for item in layers["displacement-labels"] if isinstance(item, Text) and item.text.isdigit()]
     assert numbers[-1] == str(found.numbers[-1])
+
+
+def test_the_key_of_the_rings_stands_under_the_velocity_diagram_that_has_them():
+    # A course sheet may set the three diagrams on sheets apart: the acceleration diagram's sheet carried the
+    # rings' key (the legend under it) and no ring.
+    found = of_analysis(analyse(loads(scene_text("ratchet_crank_rocker"))))
+    assert found.v_plans
+    words = strings("en")
+    velocity, acceleration = (diagrams.parts(found, words)[k] for k in (1, 2))
+
+    def keyed(part):
+        return [item for layer in part for item in layer.items if isinstance(item, Text) and item.text == words["kd_plans"]]
+
+    (key,) = keyed(velocity)
+    assert keyed(acceleration) == []
+    rings = [item for layer in velocity for item in layer.items if isinstance(item, Circle) and item.fill is None]
+    assert len(rings) == len(found.v_plans) + 1  # each plan's value, and the one of the key beside its word
+    curves_bottom = min(y for layer in velocity if layer.name == "velocity-curves"
+                        for item in layer.items if isinstance(item, Polyline) for _, y in item.points)
+    assert key.at[1] < curves_bottom

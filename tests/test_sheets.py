@@ -780,3 +780,16 @@ def test_a_part_that_shares_its_sheet_with_the_part_it_goes_on_from_stands_witho
         assert any(name.endswith("-2") for name in sheet.panels)
     for sheet in alone:
         assert any(marker in text for text in headings(sheet))
+
+
+def test_a_sheet_of_the_kinematic_diagrams_alone_has_no_scale_in_its_title_block():
+    # The diagrams are drawn to their μs, μv, μa, none of them a length scale: the sheet they stand on alone
+    # said 1:2 (the mechanism's) in its scale box.
+    analysis = drawings.with_length_scale(with_drawing(analyses_of("engine_slider_crank"), length_scale=None, sheet="A3"))
+    sheets = course_sheets(analysis, "A3", diagrams=(diagrams_panel(analysis, "A3"),))
+    ratio = scale_text(length_scale(analysis), form_of(analysis.scene.locale), "μl = {value} m/mm")
+    alone = [sheet for sheet in sheets if all(name.startswith("diagrams") for name in sheet.panels)]
+    assert alone
+    for sheet in sheets:
+        written = [text.text for text in texts([layer(sheet, "title-block")])]
+        assert (ratio in written) == (sheet not in alone), (sheet.number, sorted(sheet.panels))

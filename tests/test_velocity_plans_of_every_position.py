@@ -289,6 +289,28 @@ def test_a_hand_drawn_velocity_plan_of_any_position_is_checked_at_the_mu_v_of_th
     assert any(line.startswith(f"| {largest} |") for line in tables.velocity_plans_lines(analysis))
 
 
+def test_the_errors_of_a_hand_drawn_velocity_plan_stand_quantity_by_quantity_in_the_report_and_the_note(tmp_path):
+    # The table of every position gives a position's largest error alone; the student checks each reading.
+    scene = tmp_path / "six_bar.toml"
+    scene.write_text(measured_scene(4, "velocity = { pb = 10.0 }"), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "velocity,errors,note"]) == 0
+    analysis = analyse(loads(scene.read_text(encoding="utf-8")))
+    text = strings(analysis.scene.locale)
+    heading = text["velocity_plan_errors"].format(number=4)
+    measured = [row for row in analysis.errors if row.position == 4 and row.source == "measured"]
+    assert measured
+    for name, mark in (("errors.md", "."), ("note.md", text["decimal_mark"])):
+        written = (out / name).read_text(encoding="utf-8")
+        table = written[written.index(heading):].split("\n\n")[1].splitlines()
+        cells = {line.split(" | ")[0].lstrip("| "): line.split(" | ") for line in table[2:]}
+        for row in measured:
+            # The measured value and its δ, as the error tables of the plan positions write them.
+            assert tables._percent(row.percent, mark) in cells[tables.quantity_symbol(row.quantity)][-1]
+    unmeasured = [p.number for p in analysis.velocity_plans if p.number != 4]
+    assert all(text["velocity_plan_errors"].format(number=n) not in written for n in unmeasured)
+
+
 def test_only_the_velocity_plan_of_a_position_without_a_plan_sheet_can_be_measured():
     with pytest.raises(SceneError) as caught:
         analyse(loads(measured_scene(4, "acceleration = { pb = 10.0 }")))

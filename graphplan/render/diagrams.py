@@ -228,9 +228,19 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
                                                    unit=unit)
         notes = tuple(Text((0.0, bottom - 6.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start",
                            _CHORD_COLOUR) for k, line in enumerate(fitted(difference, width, SCALE_SIZE)))
+    key: tuple[Primitive, ...] = ()
+    if kind == "velocity" and record.v_plans:
+        # The rings' key stands with the one diagram that has them (the three may stand on sheets apart): after
+        # its last line of words where the diagram's width leaves room, else under it.
+        last = notes[-1]
+        after = text_width(last.text, SCALE_SIZE) + 8.0
+        room = after + 14.0 + text_width(words["kd_plans"], SCALE_SIZE) <= width
+        x, ring_y = (after, last.at[1] + 1.2) if room else (0.0, last.at[1] - 6.0)
+        key = (Circle((x + 6.0, ring_y), PLAN_RING_MM, _AXIS, None),
+               Text((x + 14.0, ring_y - 1.2), words["kd_plans"], SCALE_SIZE, "start"))
     return [Layer(f"{kind}-axes", tuple(axes)), Layer(f"{kind}-rays", tuple(rays + strokes)),
             Layer(f"{kind}-curves", tuple(drawn)), Layer(f"{kind}-leaders", placed.leaders),
-            Layer(f"{kind}-labels", tuple(labels) + placed.texts + notes),
+            Layer(f"{kind}-labels", tuple(labels) + placed.texts + notes + key),
             Layer(f"{kind}-caption", caption)]
 
 
@@ -261,7 +271,8 @@ def _scale_line(record: KinematicDiagrams, kind: str, words: Mapping[str, str], 
 
 
 def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> Layer:
-    """The legend (analytic, chord method) and the scales of the common φ axis, under the last diagram."""
+    """The legend (analytic, chord method) and the scales of the common φ axis, under the last diagram (the rings
+    of the velocity plans have their key under the velocity diagram)."""
     scales = record.scales
     y = top + GAP_MM - 8.0
     # The second entry starts 60 mm in, or further when the first one's word is longer.
@@ -272,10 +283,6 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
     ]
-    if record.v_plans:
-        third = second + 14.0 + text_width(words["kd_chord"], SCALE_SIZE) + 8.0
-        items += [Circle((third + 6.0, y), PLAN_RING_MM, _AXIS, None),
-                  Text((third + 14.0, y - 1.2), words["kd_plans"], SCALE_SIZE, "start")]
     width = scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole)
     items += [Text((0.0, y - 8.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
               for k, line in enumerate(fitted(_abscissa_scale(record, words), max(width, second + 40.0), SCALE_SIZE))]

@@ -135,8 +135,11 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
     # A constant Je (a flywheel sized from a load diagram alone) makes the energy–mass diagram a
     # vertical segment and Je(φ) a straight line: the ΔT diagram then says all they would.
     if model.turning and np.ptp(model.inertia) > 0:
-        right = ABSCISSA_MM + AXIS_RUN_MM + GAP_MM + 12.0
-        layers.append(_layer("energy-mass", _energy_mass(model, flywheel, scales, words), right, energy_dy))
+        energy_mass = _energy_mass(model, flywheel, scales, words)
+        # Clear of the left column's axis names ("φ, ° from position 1") by a gap, its own numbers included.
+        left_column = max(bounds_of(layer.items)[2] for layer in layers)
+        right = max(ABSCISSA_MM + AXIS_RUN_MM + GAP_MM + 12.0, left_column + GAP_MM - bounds_of(energy_mass)[0])
+        layers.append(_layer("energy-mass", energy_mass, right, energy_dy))
         turned = _inertia_turned(model, scales, words)
         low = min(bottom, bounds_of(layers[-1].items)[1])
         layers.append(_layer("inertia", turned, right, low - GAP_MM - bounds_of(turned)[3]))
@@ -205,7 +208,7 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
     items: list[Primitive] = [Arrow((0.0, 0.0), (width + AXIS_RUN_MM, 0.0), THIN, head=2.5)]
     if model.turning:
         ticks = [(psi / scales.angle, label) for psi, label in _angle_ticks(model)]
-        name = "φ, °"
+        name = words["dyn_angle_axis"]
     else:
         travel = float(model.coordinate[-1])
         step = _nice_step(travel / 5)
@@ -295,7 +298,7 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE)]
     length = float(-ys[-1])
     items.append(Arrow((0.0, 0.0), (0.0, -length - AXIS_RUN_MM), THIN, head=2.5))
-    items.append(Text((1.5, -length - AXIS_RUN_MM - LABEL), "φ, °", LABEL, "start"))
+    items.append(Text((1.5, -length - AXIS_RUN_MM - LABEL), words["dyn_angle_axis"], LABEL, "start"))
     for psi, label in _angle_ticks(model):
         at = -psi / scales.angle
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))

@@ -349,7 +349,13 @@ def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tup
         u = complex(at(slide.u, sheet.index))
         centre = _c(paper(positions[slide.joint]))
         if slide.guide not in group.links:  # the slide's axis, where the guide itself is cut away
-            items.append(Polyline((_xy(centre - 14.0 * u), _xy(centre + 14.0 * u)), _AXIS))
+            # Run on to where the guide's reaction acts off the joint (R14 at x = −190 mm): it stands on the axis.
+            shifts = [found.offset / sheet.length_scale for found in group.found
+                      if found.offset and found.joint == slide.joint
+                      and {found.source, found.target} == {slide.guide, slide.slider}
+                      and abs(found.force) / sheet.forces.scale_of(found.name) >= ZERO_MM]
+            back, ahead = min([-14.0, *(shift - 6.0 for shift in shifts)]), max([14.0, *(shift + 6.0 for shift in shifts)])
+            items.append(Polyline((_xy(centre + back * u), _xy(centre + ahead * u)), _AXIS))
         items.append(slider_block(_xy(centre), math.atan2(u.imag, u.real), stroke=MAIN))
     joints = {name for name, first, second in mechanism.revolutes if first in group.links or second in group.links}
     items.extend(pin(paper(positions[name])) for name in sorted(joints))

@@ -70,6 +70,9 @@ class Panel:
     # The part of the same drawing this one goes on from (a force sheet's "continued" part): where both stand
     # on one sheet, this one's heading is left off, and the two read as one drawing.
     continues: str = ""
+    # False for a drawing to no length scale (a kinematic diagram, a plot of the dynamics): a sheet of such alone
+    # leaves its title block's scale box empty.
+    to_scale: bool = True
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:

@@ -417,8 +417,8 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
                 break
             axis, field = axis + grown[0], field + grown[1]
             title, drawn = longer
-    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part)) for k, part in enumerate(drawn))
-    return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title)
+    parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
+    return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
 
 
 def _size(layers: Sequence[Layer]) -> tuple[float, float]:
@@ -760,6 +760,8 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
     for k, page in enumerate(pages):
         own = {panel.length_scale for panel, _, _ in page.placed if panel.length_scale is not None}
         page_scale = own.pop() if len(own) == 1 else scale
+        if not any(panel.to_scale for panel, _, _ in page.placed):
+            page_scale = None
         scale_box = scale_text(page_scale, form, text["length_scale"]) if page_scale is not None else ""
         fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page) or words[kind], scale=scale_box,
                                   sheet=first + k, sheets=count, language=locale)

@@ -51,6 +51,7 @@ from .machine_note import balancing_section, dynamics_section, vibration_section
 from .tables import (
     error_table_lines,
     has_reactions,
+    measured_velocity_plans,
     quantity_symbol,
     unit_of,
     velocity_plans_intro,
@@ -222,6 +223,9 @@ class _Note:
                 self.heading(3, f"{section}.{subsection}. {self.t('velocity_plans_heading')}")
                 self.para(velocity_plans_intro(self.analysis, self.mark))
                 self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
+                for position in measured_velocity_plans(self.analysis):
+                    self.captioned(self.t("velocity_plan_errors", number=position.number),
+                                   error_table_lines(self.analysis, position, self.mark))
                 self.figure("velocity_plans.svg", self.text["velocity_plans_heading"])
             if diagrams is not None and "diagrams.svg" in self.figures:
                 subsection += 1

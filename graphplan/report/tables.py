@@ -53,8 +53,9 @@ def _grouped(plan: VelocityPosition) -> tuple[dict[str, dict[str, ErrorRow]], li
     return table, [s for s in SOURCES if any(s in rows for rows in table.values())]
 
 
-def error_table_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
-    """The error table of one plan position as Markdown lines; ``mark`` is the decimal mark of its numbers."""
+def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition, mark: str = ".") -> list[str]:
+    """The error table of one plan position (or of a velocity plan measured by hand) as Markdown lines; ``mark``
+    is the decimal mark of its numbers."""
     text = strings(analysis.scene.locale)
     table, sources = _grouped(plan)
     names = [text[f"source_{s}"] for s in sources]
@@ -94,7 +95,18 @@ def markdown(analysis: Analysis) -> str:
     if analysis.velocity_plans:
         lines += [f"## {text['velocity_plans_heading']}", "", velocity_plans_intro(analysis), "",
                   *velocity_plans_lines(analysis), ""]
+        for position in measured_velocity_plans(analysis):
+            lines += [f"### {text['velocity_plan_errors'].format(number=position.number)}", "",
+                      *error_table_lines(analysis, position), ""]
     return "\n".join(lines)
+
+
+def measured_velocity_plans(analysis: Analysis) -> tuple[VelocityPosition, ...]:
+    """The velocity plans of positions without a plan sheet that ``[measured]`` reads: the table of every
+    position gives only their largest error, and a student checks a drawing quantity by quantity."""
+    planned = {plan.number for plan in analysis.plans}
+    return tuple(position for position in analysis.velocity_plans if position.number not in planned
+                 and any(row.source == "measured" for row in position.errors))
 
 
 def velocity_plans_intro(analysis: Analysis, mark: str = ".") -> str:
