@@ -149,6 +149,13 @@ def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
     return {**text, "dyn_angle_axis": axis, "motion_angle_axis": axis}
 
 
+def _static_couple(scene: Scene) -> float | None:
+    from .rotor_balancing import balance, static_couple
+
+    assert scene.balancing is not None
+    return static_couple(balance(scene.balancing))
+
+
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
     from .render import drawings as draw
     from .render import plans as plan_layout
@@ -263,10 +270,14 @@ class MachineDynamics:
             return None
         import numpy as np
 
-        from .machine_motion import Machine
+        from .machine_motion import Machine, PiecewiseMoment
 
         model = self.model
-        phi, resisting = self.resisting
+        phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
+        angles, moments = self.resisting
+        # A load over part of the stroke makes Mr jump (the model gives the angle twice): the integrator takes it
+        # piece by piece, where a spline through samples would ring round the jump.
+        resisting = PiecewiseMoment(angles, moments) if np.any(np.diff(angles) == 0) else moments
         with _scene_values("dynamics"):
             machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
                               inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
@@ -274,14 +285,17 @@ class MachineDynamics:
 
     @property
     def resisting(self):
-        """Mr(φ) for the equation of motion: the angles over one turn (rad) and the reduced moment of the
-        scene's own loads there (N·m, positive where they resist), without the constant moment the flywheel's
-        balance of work assumed in place of the motor."""
+        """Mr(φ) for the equation of motion: angles over one turn (rad) and the reduced moment of the scene's own
+        loads there (N·m, positive where they resist), without the constant moment the flywheel's balance of
+        work assumed in place of the motor.  Equally spaced on [0, 2π) where it is smooth; where it jumps, the
+        model's own samples from 0 to 2π, each jump's angle given twice."""
         import numpy as np
 
         model = self.model
-        phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
         made_up = {"driving": model.driving, "resisting": model.resisting}.get(model.constant, 0.0)
+        if np.any(np.diff(model.coordinate) == 0):
+            return model.coordinate, -(model.moment - made_up)
+        phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
         return phi, -np.interp(phi, model.coordinate, model.moment - made_up)
 
     @property
@@ -469,6 +483,9 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
     if dynamics is not None and warn is not None and (stall := dynamics.stall_warning()) is not None:
         warn(stall)
+    if "balancing" in pieces and warn is not None and (couple := _static_couple(scene)) is not None:
+        warn(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its masses "
+             "turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))

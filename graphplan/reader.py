@@ -145,11 +145,11 @@ class Table:
         if key in self.data:
             return self.data[key]
         if default is _REQUIRED:
-            self._misspelt(key)
+            self.misspelt(key)
             raise SceneError(self.where(key), "is required but missing")
         return default
 
-    def _misspelt(self, *keys: str) -> None:
+    def misspelt(self, *keys: str) -> None:
         """A required key that is missing is often there, misspelt: name the misspelling of one of ``keys``."""
         strangers = [k for k in self.data if k not in self._taken]
         for key in keys:
@@ -188,7 +188,7 @@ class Table:
         self._taken.add(rpm_key)
         if self.has(omega_key) or default is not _REQUIRED:
             return self.number(omega_key, default, positive=positive, non_negative=non_negative)
-        self._misspelt(omega_key, rpm_key)
+        self.misspelt(omega_key, rpm_key)
         raise SceneError(self.where(omega_key),
                          f"is required but missing: give {omega_key} (rad/s) or {rpm_key} (rev/min){sense}")
 

@@ -429,9 +429,19 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
     }
 
 
+def static_couple(result: BalancingResult) -> float | None:
+    """The couple (kg·m²) one correction plane leaves of masses turning in other planes, or None where it leaves
+    none (a disc, its correction in its own plane) or the balancing is dynamic."""
+    if result.spec.dynamic:
+        return None
+    scale = sum(abs(mass.unbalance) * (abs(mass.plane) + 1.0) for mass in result.spec.masses)
+    couple = abs(result.residual_moment)
+    return couple if couple > NEGLIGIBLE * scale else None
+
+
 def _above_noise(value: float, scale: float) -> float:
     return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
 __all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "PolygonVector", "RotatingMass", "balance",
-           "balancing_results", "read_balancing", "vector_name"]
+           "balancing_results", "read_balancing", "static_couple", "vector_name"]

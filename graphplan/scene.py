@@ -257,6 +257,9 @@ def _read_scene(top: Table, source: str) -> Scene:
                      positions=Positions(count=1, start=0.0, number_from=1, working=None, plans=()),
                      drawing=drawing, measured=MappingProxyType({}), include=include, source=source,
                      balancing=balancing, vibration=vibration, dynamics=dynamics)
+    if not top.has("frame"):
+        # No [frame] where a misspelt table name ([vibrations]) was meant as a scene without a linkage.
+        top.misspelt(*(name for name in ("frame", "driver", "balancing", "vibration", "dynamics") if not top.has(name)))
     frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
     driver = _read_driver(top.table("driver"))
     dynamics = None

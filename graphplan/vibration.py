@@ -260,6 +260,9 @@ class VibrationSpec:
     omega: float
     transmissibility: float | None = None
     base_amplitude: float | None = None
+    # How the scene gave k and ζ, for the note to say: a shaft's stiffness, the damping c (N·s/m).
+    on_shaft: bool = False
+    damping: float | None = None
 
     def __post_init__(self) -> None:
         for name in ("mass", "stiffness", "omega"):
@@ -374,6 +377,7 @@ def read_vibration(table: Table) -> VibrationSpec:
     """
     mass = table.number("mass", positive=True)
     unbalance = _unbalance(table, mass)
+    on_shaft = table.has("shaft")
     stiffness = _stiffness(table)
     omega = table.speed(positive=True)
     zeta = _damping(table, stiffness, mass)
@@ -387,7 +391,8 @@ def read_vibration(table: Table) -> VibrationSpec:
         raise SceneError(table.where("omega" if table.has("omega") else "rpm"),
                          "is the natural frequency and there is no damping: the amplitude has no bound")
     return VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega,
-                         transmissibility=wanted, base_amplitude=base)
+                         transmissibility=wanted, base_amplitude=base, on_shaft=on_shaft,
+                         damping=table.number("damping") if table.has("damping") else None)
 
 
 def _one_of(table: Table, first: str, second: str) -> str:
@@ -395,6 +400,7 @@ def _one_of(table: Table, first: str, second: str) -> str:
     if table.has(first) and table.has(second):
         raise SceneError(table.where(second), f"give either {first} or {second}, not both")
     if not table.has(first) and not table.has(second):
+        table.misspelt(first, second)
         raise SceneError(table.where(first), f"is required (or {second})")
     return first if table.has(first) else second
 

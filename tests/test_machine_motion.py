@@ -537,3 +537,16 @@ def test_sampled_resisting_torque_acts_as_the_function_it_samples():
             for m in (sampled, exact)]
     times = np.linspace(0.0, 1.0, 11)
     np.testing.assert_allclose(runs[0].state_at(times)[1], runs[1].state_at(times)[1], rtol=1e-9)
+
+
+def test_a_constant_motor_stronger_than_the_mean_resistance_at_every_speed_is_refused_with_the_two_torques():
+    # 1000 N·m against a mean 700 N·m: the speed grows without end, and the run gave up after its evaluations,
+    # blaming the solver.  The two torques say why, before any integration.
+    machine = Machine(5.0, resisting=lambda phi, omega: 700.0 + 200.0 * math.sin(phi))
+    with pytest.raises(ValueError, match=r"^motor: its torque on the shaft, 1000 N·m, exceeds the mean resistance, "
+                                         r"700 N·m, at every speed: the machine speeds up without end"):
+        simulate(machine, ConstantTorque(1000.0))
+    # With a duration it is a run-up like any other, and a resistance that grows with speed balances it.
+    assert simulate(machine, ConstantTorque(1000.0), duration=1.0).omega[-1] > 0
+    viscous = Machine(5.0, resisting=lambda phi, omega: 700.0 + 2.0 * omega)
+    assert simulate(viscous, ConstantTorque(1000.0)).steady.mean_speed == pytest.approx(150.0, rel=1e-3)

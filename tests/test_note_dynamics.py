@@ -67,9 +67,11 @@ def test_the_energy_range_and_the_steady_speeds_agree_with_themselves(english):
     low, high, surplus = (value(group) for group in re.search(
         rf"ranges from {NUMBER} J to {NUMBER} J: the largest surplus work ΔWmax = {NUMBER} J", text).groups())
     assert high - low == pytest.approx(surplus, rel=1e-4)
-    high_speed, low_speed, delta = (value(group) for group in re.search(
-        rf"ωmax = {NUMBER} rad/s, ωmin = {NUMBER} rad/s, δ = {NUMBER}\.", text).groups())
-    assert (high_speed - low_speed) / ((high_speed + low_speed) / 2) == pytest.approx(delta, rel=1e-3)
+    high_speed, low_speed, delta, middle = (value(group) for group in re.search(
+        rf"ωmax = {NUMBER} rad/s, ωmin = {NUMBER} rad/s, δ = \(ωmax − ωmin\)/ωm = {NUMBER} with the textbook's "
+        rf"ωm = \(ωmax \+ ωmin\)/2 = {NUMBER} rad/s\.", text).groups())
+    assert middle == pytest.approx((high_speed + low_speed) / 2, rel=1e-4)
+    assert (high_speed - low_speed) / middle == pytest.approx(delta, rel=1e-3)
     motion = results["dynamics"]["motion"]
     assert delta == pytest.approx(motion["delta"], rel=1e-3)
     assert f"by the method {motion['method']}:" in text

@@ -413,3 +413,26 @@ def test_the_residual_left_by_rounding_is_written_as_none_and_a_real_one_as_it_i
 def test_a_mass_named_as_a_mass_is_lettered_by_its_index(name, label):
     # "m1" made "mm1rm1" on the polygons and in the note's table.
     assert RotatingMass(1.0, 0.1, 0.0, name=name).label == label
+
+
+def test_one_correction_plane_for_masses_in_other_planes_names_the_couple_it_leaves(tmp_path, capsys):
+    # Balanced statically at z = 0.2, masses at 0.1 and 0.3 leave Σ m·r·(z − 0.2), a couple one plane cannot
+    # take: the note said "a disc ... balanced", and no one was told.
+    from graphplan.cli import main
+    from graphplan.rotor_balancing import static_couple
+
+    masses = [RotatingMass(1.0, 0.1, 0.0, 0.1), RotatingMass(2.0, 0.1, 90.0, 0.3)]
+    result = balance(BalancingSpec(masses, planes=(0.2,)))
+    expected = abs(sum(mass.unbalance * (mass.plane - 0.2) for mass in masses))
+    assert static_couple(result) == pytest.approx(expected, rel=1e-12)
+    disc = [RotatingMass(1.0, 0.1, 0.0, 0.2), RotatingMass(2.0, 0.1, 90.0, 0.2)]
+    assert static_couple(balance(BalancingSpec(disc, planes=(0.2,)))) is None
+    assert static_couple(balance(BalancingSpec(masses, planes=(0.0, 0.4)))) is None  # dynamic: none left
+    scene = tmp_path / "rotor.toml"
+    scene.write_text('[scene]\ntitle = "Rotor"\nlocale = "en"\n[balancing]\nmasses = [{ mass = 1.0, radius = 0.1, '
+                     'angle = 0.0, plane = 0.1 }, { mass = 2.0, radius = 0.1, angle = 90.0, plane = 0.3 }]\n'
+                     'planes = [0.2]\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    assert f"couple Σ m·r·z = {expected:.4g} kg·m²" in capsys.readouterr().out
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert "is a disc" not in note and f"Σ m·r·z = {expected:.5g} kg·m² remains" in note

@@ -1219,3 +1219,17 @@ def test_link_given_twice_under_two_spellings() -> None:
     stage, error = first_error(text)
     assert stage == "load" and type(error) is SceneError
     assert error.where == "links.03"
+
+
+@pytest.mark.parametrize(("text", "where", "meant"), [
+    ('[scene]\ntitle = "x"\n[vibrations]\nmass = 100.0\n', "vibrations", "vibration"),
+    ('[scene]\ntitle = "x"\n[balancng]\nmasses = []\n', "balancng", "balancing"),
+    ('[scene]\ntitle = "x"\n[vibration]\nmass = 100.0\nunbalance = 0.02\nstifness = 1.0e5\nrpm = 600.0\n',
+     "vibration.stifness", "stiffness"),
+])
+def test_a_misspelt_table_or_key_of_a_scene_without_a_linkage_is_named_not_blamed_on_what_is_missing(
+        text, where, meant) -> None:
+    # "[vibrations]" was told "frame: is required but missing"; "stifness" "vibration.stiffness: is required".
+    with pytest.raises(SceneError) as caught:
+        scene_module.loads(text)
+    assert str(caught.value) == f"{where}: unknown key; did you mean {meant!r}?"

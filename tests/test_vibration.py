@@ -381,6 +381,27 @@ def test_the_figures_are_svg_with_a_curve_for_each_damping_and_the_same_bytes_ev
         transmissibility_figure(tmp_path / "x.svg", (0.1, -0.2))
 
 
+@pytest.mark.parametrize("figure", [magnification_figure, transmissibility_figure])
+@pytest.mark.parametrize("working", [(1.3, 0.1), (3.14, 0.15), (6.02, 0.05), (20.0, 0.01)])
+def test_the_working_point_stands_inside_the_plot(figure, working):
+    # The axes ran to r = 3 and 5 whatever the machine: a fast one's point fell off the plot its legend named it in.
+    import io
+    import re
+
+    stream = io.StringIO()
+    figure(stream, operating=working)
+    text = stream.getvalue()
+    corners = [float(v) for v in re.search(r'<g id="patch_2">\s*<path d="M ([\d.]+) ([\d.]+)\s*L ([\d.]+) ([\d.]+)',
+                                             text).groups()]
+    left, bottom, right = corners[0], corners[1], corners[2]
+    top = float(re.search(r'<g id="patch_2">\s*<path d="M [\d.]+ [\d.]+\s*L [\d.]+ [\d.]+\s*L [\d.]+ ([\d.]+)',
+                          text).group(1))
+    # The point as plotted, before the legend repeats its marker: the first use of the marker's colour.
+    x, y = (float(v) for v in re.search(r'<use xlink:href="#\w+" x="(-?[\d.]+)" y="(-?[\d.]+)" style="fill: #a83a1f',
+                                        text).groups())
+    assert left < x < right and top < y < bottom
+
+
 def test_nothing_imports_matplotlib_until_a_figure_is_drawn():
     code = ("import sys, graphplan.vibration, graphplan.report.vibration_plots, graphplan.rotor_balancing, "
             "graphplan.render.balancing; print('matplotlib' in sys.modules)")
@@ -421,3 +442,29 @@ def test_next_to_no_damping_at_resonance_is_an_infinite_response_without_a_warni
         warnings.simplefilter("error")
         assert unbalance_magnification(1.0, 1e-310) == math.inf
         assert force_magnification(1.0, 1e-310) == math.inf
+
+
+def test_the_note_says_how_the_scene_gave_its_stiffness_and_damping(tmp_path):
+    # c = 3000 N·s/m on 400 kN/m under 250 kg is ζ = 0.15; the isolating mounts are designed at that ζ, which the
+    # same dampers on them would not give.  A shaft's stiffness is no mount's: the bearings carry the force.
+    from graphplan.cli import main
+
+    mounts = tmp_path / "mounts.toml"
+    mounts.write_text('[scene]\ntitle = "Compressor"\nlocale = "en"\n[vibration]\nmass = 250.0\nunbalance = 0.1\n'
+                      'stiffness = 400000.0\ndamping = 3000.0\nrpm = 1200.0\ntransmissibility = 0.1\n', encoding="utf-8")
+    assert main(["run", str(mounts), "--out", str(tmp_path / "a")]) == 0
+    note = (tmp_path / "a" / "note.md").read_text(encoding="utf-8")
+    zeta = 3000.0 / (2.0 * math.sqrt(400000.0 * 250.0))
+    assert f"ζ = c/(2·√(k·M)) = 3000/(2·√(400000·250)) = {zeta:.5g}" in note
+    omega = 1200.0 * math.pi / 30.0
+    ratio = isolation_frequency_ratio(0.1, zeta)
+    designed = 250.0 * (omega / ratio) ** 2
+    assert f"c = 2ζ·√(k·M) = {2.0 * zeta * math.sqrt(designed * 250.0):.5g} N·s/m" in note
+    assert f"would give ζ = {zeta * math.sqrt(400000.0 / designed):.5g}" in note
+    shaft = tmp_path / "shaft.toml"
+    shaft.write_text('[scene]\ntitle = "Rotor"\nlocale = "en"\n[vibration]\nmass = 50.0\nunbalance = 0.005\n'
+                     'damping_ratio = 0.02\nrpm = 3000.0\nshaft = { modulus = 2.1e11, diameter = 0.05, length = 0.8 }\n',
+                     encoding="utf-8")
+    assert main(["run", str(shaft), "--out", str(tmp_path / "b")]) == 0
+    note = (tmp_path / "b" / "note.md").read_text(encoding="utf-8")
+    assert "turns on its shaft" in note and "the bearings pass" in note and "mounts" not in note

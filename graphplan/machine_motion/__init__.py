@@ -13,7 +13,8 @@ minus sign) and ``Mb`` a brake.  As a first-order system in ``(φ, ω)`` it is i
 
 * :class:`Machine` takes ``Je``, ``dJe/dφ`` and ``Mr`` as numbers, callables or periodic samples
   on an equally spaced grid over one turn ``[0, 2π)``, interpolated by a periodic quintic spline
-  (:func:`scipy.interpolate.make_interp_spline`).
+  (:func:`scipy.interpolate.make_interp_spline`); ``Mr`` also as a :class:`PiecewiseMoment`, smooth
+  between its jumps, at each of which the integration stops and goes on with the next piece.
 * Motors: :class:`ConstantTorque`, :class:`LinearMotor` (``Md = M0·(1 − ω/ω0)``) and
   :class:`KlossMotor` (an induction motor by Kloss' formula), each with a gear ratio
   ``u = ω_motor/ω_shaft`` and the rotor's inertia, reduced to the shaft as ``J·u²``.
@@ -28,8 +29,8 @@ minus sign) and ``Mb`` a brake.  As a first-order system in ``(φ, ω)`` it is i
   and ``δ``.
 * :func:`read_motion` reads the motion's keys of the scene's ``[dynamics]`` table.
 
-The modules, in the order they build on one another: ``shaft`` (the machine reduced to its
-shaft), ``drive`` (motors, brake, clutch, the start), ``cycles`` (the turns of a run and the
+The modules, in the order they build on one another: ``moment`` (a moment over the turn that
+jumps), ``shaft`` (the machine reduced to its shaft), ``drive`` (motors, brake, clutch, the start), ``cycles`` (the turns of a run and the
 steady state), ``integrator`` (each phase's equations, integrated segment by segment),
 ``method`` (the running speed and the solver chosen by stiffness), ``simulation``
 (:func:`simulate`, :func:`engage_clutch`) and ``spec`` (the scene's keys).
@@ -50,6 +51,7 @@ from .cycles import Cycle, SteadyState, find_cycles, find_steady_state
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .integrator import MOST_EVALUATIONS
 from .method import STIFFNESS_THRESHOLD, choose_method, is_stiff, running_speed
+from .moment import PiecewiseMoment
 from .shaft import TWO_PI, Machine, periodic_spline
 from .simulation import (
     DEFAULT_RTOL,
@@ -66,7 +68,7 @@ from .spec import MOST_TURNS, MotionSpec, read_motion
 __all__ = [
     "DEFAULT_RTOL", "METHODS", "MOST_CYCLES", "MOST_EVALUATIONS", "MOST_TURNS", "MOTOR_KINDS", "REST", "RPM", "SMALLEST_RTOL",
     "STIFFNESS_THRESHOLD", "TWO_PI", "Brake", "Clutch", "ClutchEngagement", "ConstantTorque", "Cycle", "KlossMotor",
-    "LinearMotor", "Machine", "MachineMotion", "MotionSpec", "Motor", "Start", "SteadyState", "choose_method",
-    "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline", "read_motion",
+    "LinearMotor", "Machine", "MachineMotion", "MotionSpec", "Motor", "PiecewiseMoment", "Start", "SteadyState",
+    "choose_method", "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline", "read_motion",
     "running_speed", "simulate",
 ]

@@ -4,6 +4,7 @@ runs them segment by segment with :func:`scipy.integrate.solve_ivp`, switching a
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -11,9 +12,13 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .drive import Brake, Clutch, Motor, Start
-from .shaft import Machine
+from .shaft import TWO_PI, Machine
 
 RIGID, OPEN, SLIP_FORWARD, SLIP_BACKWARD, LOCKED = "rigid", "open", "slip+", "slip-", "locked"
+# The event where a resisting moment with jumps (shaft.Machine.moment) jumps.
+_JUMP = "Mr jumps"
+# The method a segment falls back on where another cannot start again after a jump.
+_ROBUST = "Radau"
 
 
 class Equations:
@@ -47,6 +52,9 @@ class Equations:
         self.clock = -math.inf
         self.machine_held = False
         self.driving_held = False
+        # The piece of a resisting moment with jumps the segment is on (the integrator sets it): within a segment
+        # Mr is that piece's smooth curve, carried on past the jump that ends the segment.
+        self.piece: int | None = None
 
     def motor_on(self, t: float) -> bool:
         return self.motor_off_at is None or t < self.motor_off_at
@@ -63,7 +71,8 @@ class Equations:
     def passive(self, t: float, phi: float, omega: float) -> float:
         """Everything on the machine but the drive: −Mr − Mb − ½·Je'·ω²."""
         m = self.machine
-        return -m.mr(phi, omega) - self.braking(t, omega) - 0.5 * m.je_slope(phi) * omega * omega
+        mr = m.mr(phi, omega) if self.piece is None else m.moment.on_piece(self.piece, phi)
+        return -mr - self.braking(t, omega) - 0.5 * m.je_slope(phi) * omega * omega
 
     def clutch_torque(self, phase: str) -> float:
         """The torque the slipping clutch passes to the machine (signed), zero when open."""
@@ -178,6 +187,17 @@ class Integrator:
             driving = start.omega if start.driving_omega is None else start.driving_omega
             self.y = np.array([start.angle, start.omega, driving, 0.0], dtype=float)
         self.boundaries = sorted({b for b in self._switch_times() if b > self.t})
+        # The next jump of Mr ahead (the turn's start and its index among the jumps), where Mr has jumps.
+        moment = equations.machine.moment
+        self._jump: tuple[float, int] | None = None
+        self._restarted_at_jump = False
+        # What the run had to do otherwise than asked, for its notes.
+        self.fallbacks: list[str] = []
+        if moment is not None and moment.jumps:
+            equations.piece = moment.piece_at(self.y[0])
+            base = math.floor(self.y[0] / TWO_PI) * TWO_PI
+            self._jump = next((turn, k) for turn in (base, base + TWO_PI) for k, jump in enumerate(moment.jumps)
+                              if turn + jump > self.y[0])
         self.pieces: list[tuple[float, float, Any]] = []
         self.times: list[np.ndarray] = []
         self.states: list[np.ndarray] = []
@@ -250,9 +270,19 @@ class Integrator:
             events.append((_event(lambda t, y: y[1], -1.0), "stopped"))
         if self.phase in (OPEN, SLIP_FORWARD, SLIP_BACKWARD) and not eq.driving_held:
             events.append((_event(lambda t, y: y[2], -1.0), "driving half stopped"))
+        if self._jump is not None and not eq.machine_held:
+            turn, k = self._jump
+            at = turn + eq.machine.moment.jumps[k]
+            events.append((_event(lambda t, y: y[0] - at, 1.0), _JUMP))
         return events
 
     def _on_event(self, name: str) -> None:
+        if name == _JUMP:  # not an event of the run: Mr goes on with its next piece
+            moment = self.eq.machine.moment
+            turn, k = self._jump
+            self.eq.piece = moment.pieces_from[k]
+            self._jump = (turn, k + 1) if k + 1 < len(moment.jumps) else (turn + TWO_PI, 0)
+            return
         self.events.append((self.t, name))
         if name == "clutch locked":
             self.phase = self._lock()
@@ -314,9 +344,24 @@ class Integrator:
             self.eq.settle(self.phase, self.t, self.y)
             stop = min([b for b in self.boundaries if b > self.t] + [t_end])
             events = self._events()
-            solution = solve_ivp(self._counted(self.eq.rhs(self.phase)), (self.t, stop), self.y, method=self.method,
-                                 rtol=self.rtol, atol=self.atol, dense_output=True,
-                                 events=[e for e, _ in events] or None)
+            if self._restarted_at_jump and self.method != _ROBUST:
+                # Started afresh at a jump of Mr, a multistep method may find no step it can take in a run of
+                # extreme stiffness (LSODA, a turn in 4e13 s through a gear ratio of 1e15); the implicit
+                # Runge–Kutta method needs no history and takes the segment.  The failed try's warnings are
+                # its own, not the run's.
+                with warnings.catch_warnings(record=True) as caught:
+                    warnings.simplefilter("always")
+                    solution = self._solved(stop, events)
+                if solution.status == -1:
+                    self.fallbacks.append(f"{self.method} could not start again at t = {self.t:.6g} s after a jump "
+                                          f"of Mr ({solution.message}); {_ROBUST} took that stretch")
+                    solution = self._solved(stop, events, _ROBUST)
+                else:
+                    for warning in caught:
+                        warnings.showwarning(warning.message, warning.category, warning.filename, warning.lineno)
+            else:
+                solution = self._solved(stop, events)
+            self._restarted_at_jump = False
             if solution.status == -1:
                 raise ArithmeticError(f"the integration failed at t = {self.t:.6g} s in phase "
                                       f"{self.phase!r}: {solution.message}")
@@ -331,11 +376,17 @@ class Integrator:
             self.y = solution.y[:, -1].copy()
             if solution.status == 1:
                 fired = next(name for (_, name), hits in zip(events, solution.t_events, strict=True) if hits.size)
+                self._restarted_at_jump = fired == _JUMP
                 self.y = solution.y_events[[name for _, name in events].index(fired)][-1].copy()
                 self._count_stall(started)
                 self._on_event(fired)
             elif stop in self.boundaries:
                 self._on_boundary(stop)
+
+    def _solved(self, stop: float, events: list[tuple[Callable[[float, np.ndarray], float], str]],
+                method: str | None = None) -> Any:
+        return solve_ivp(self._counted(self.eq.rhs(self.phase)), (self.t, stop), self.y, method=method or self.method,
+                         rtol=self.rtol, atol=self.atol, dense_output=True, events=[e for e, _ in events] or None)
 
     def _count_stall(self, started: float) -> None:
         if self.t - started > 1e-12 * max(1.0, abs(self.t)):

@@ -45,6 +45,20 @@ def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration:
     return max(reached, 1e-3)
 
 
+def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float] | None:
+    """(the motor's torque, the mean resistance) where a motor whose torque does not fall with speed (a constant
+    one) outpulls the mean resistance at every speed up to 2³⁰ rad/s: the machine has no steady state.  None
+    where some speed balances them."""
+    if motor.shaft_no_load_speed is not None:
+        return None
+    angles = np.linspace(0.0, TWO_PI, 64, endpoint=False)
+    for omega in 2.0 ** np.arange(0, 31):
+        resisting = float(np.mean([machine.mr(a, omega) for a in angles]))
+        if motor.shaft_torque(omega) <= resisting:
+            return None
+    return motor.shaft_torque(2.0 ** 30), resisting
+
+
 def is_stiff(stiffness: float) -> bool:
     """Whether a stiffness number (:func:`choose_method`) calls for an implicit method."""
     return stiffness > STIFFNESS_THRESHOLD

@@ -11,6 +11,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.interpolate import BSpline, make_interp_spline
 
+from .moment import PiecewiseMoment
+
 TWO_PI = 2.0 * math.pi
 # The degree of the periodic spline through samples over a turn (see periodic_spline).
 SPLINE_DEGREE = 5
@@ -65,9 +67,11 @@ class Machine:
         callable of φ.
     resisting
         ``Mr``, N·m, positive when it resists forward motion: a number, samples of ``Mr(φ)``
-        over one turn, or a callable ``Mr(φ, ω)``.  A callable should be smooth: a jump in φ is
-        stepped over by the solvers' error control (RK45 let a machine with a step in Mr and a
-        constant drive run off to three times its speed at rtol 1e-7); samples are splined smooth.
+        over one turn, a :class:`~graphplan.machine_motion.moment.PiecewiseMoment` (samples with
+        jumps: the integrator stops at each jump and goes on with the next piece), or a callable
+        ``Mr(φ, ω)``.  A callable should be smooth: a jump in φ is stepped over by the solvers'
+        error control (RK45 let a machine with a step in Mr and a constant drive run off to three
+        times its speed at rtol 1e-7); samples are splined smooth, and ring round a jump.
     inertia_slope
         ``dJe/dφ``, kg·m²/rad: samples or a callable of φ.  Taken from the spline when
         ``inertia`` is samples, zero when it is a number; required when it is a callable.
@@ -91,7 +95,10 @@ class Machine:
         else:
             raise ValueError("inertia_slope: is required when inertia is a function of φ "
                              "(give dJe/dφ as a function or as samples over one turn)")
-        if callable(self.resisting):
+        if isinstance(self.resisting, PiecewiseMoment):
+            moment = self.resisting
+            resisting = lambda phi, omega: moment(phi)
+        elif callable(self.resisting):
             resisting = self.resisting
         else:
             of_angle, _ = _angle_function(self.resisting, "resisting")
@@ -117,3 +124,8 @@ class Machine:
     def mr(self, phi: float, omega: float) -> float:
         """The reduced moment of the resisting forces Mr(φ, ω), N·m."""
         return float(self._mr(phi, omega))
+
+    @property
+    def moment(self) -> PiecewiseMoment | None:
+        """Mr as pieces between its jumps, where it was given so (the integrator steps from jump to jump)."""
+        return self.resisting if isinstance(self.resisting, PiecewiseMoment) else None

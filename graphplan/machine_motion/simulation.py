@@ -3,6 +3,7 @@ joined by a clutch (:func:`engage_clutch`)."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -11,10 +12,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
-from .cycles import Cycle, SteadyState, find_cycles, find_steady_state
+from .cycles import Cycle, SteadyState, find_cycles, find_steady_state, refined
 from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
 from .integrator import MOST_EVALUATIONS, Equations, Integrator
-from .method import choose_method, is_stiff, running_speed
+from .method import choose_method, is_stiff, running_speed, speeds_up_without_end
 from .shaft import TWO_PI, Machine
 
 METHODS = ("auto", "RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -149,6 +150,12 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         raise ValueError("start.driving_omega: only with a clutch")
     if isinstance(max_cycles, bool) or not isinstance(max_cycles, int) or max_cycles < 3:
         raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
+    if duration is None and brake is None and motor_off_at is None and (
+            outpulled := speeds_up_without_end(machine, motor)) is not None:
+        raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "
+                         f"{outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and has no "
+                         "steady state; give a duration, more resistance, or a motor whose torque falls with speed "
+                         "(linear, kloss)")
     equations = Equations(machine, motor, brake, clutch, motor_off_at)
     omega_run = running_speed(machine, motor, start, duration)
     atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)
@@ -188,11 +195,19 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
                 break
     t = np.concatenate(integrator.times)
     y = np.concatenate(integrator.states, axis=1)
+    if integrator.fallbacks:
+        count = len(integrator.fallbacks)
+        notes.append(integrator.fallbacks[0] + (f"; so at {count} jumps in all" if count > 1 else ""))
     if not np.any(y[1] > 0):
         notes.append("the machine did not move: the driving torque at rest does not overcome the resistance")
     dense = integrator.dense()
     cycles = find_cycles(t, y[0], dense, limit=max_cycles)
     steady = find_steady_state(cycles, tolerance)
+    if steady is not None:
+        # The values the run reports, to the solver's accuracy (a corner of ω where Mr jumps included).
+        exact = refined(steady.cycle, dense)
+        steady = dataclasses.replace(steady, cycle=exact)
+        cycles = tuple(exact if cycle.index == exact.index else cycle for cycle in cycles)
     speed_row = 2 if clutch is not None else 1
     torque = np.array([motor.shaft_torque(speed) if equations.motor_on(ti) else 0.0
                        for ti, speed in zip(t, y[speed_row], strict=True)])

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
-from ..rotor_balancing import BalancingResult
+from ..rotor_balancing import BalancingResult, static_couple
 from ..units import RPM
 from ..vibration import Response, VibrationSpec
 
@@ -140,7 +140,7 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
     cycle = steady.cycle
     note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),
                      mean=note.n(steady.mean_speed), high=note.n(cycle.max_speed), low=note.n(cycle.min_speed),
-                     delta=note.n(cycle.delta, 4)))
+                     delta=note.n(cycle.delta, 4), middle=note.n(cycle.middle_speed)))
     if flywheel is not None and flywheel.inertia > 0:
         note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
 
@@ -163,6 +163,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
                  note.n(share_right, 4), note.n(abs(mass.unbalance) * share_right)]
                 for mass, share_left, share_right in zip(spec.masses, left.factors, right.factors, strict=True)]
         note.table(note.t("note_bal_shares"), header, rows, "lrrrrr")
+    elif (couple := static_couple(result)) is not None:
+        along = [mass.plane for mass in spec.masses]
+        note.para(note.t("note_bal_static_planes", equation=planes[0].equation, low=note.n(min(along)),
+                         high=note.n(max(along)), plane=note.n(planes[0].position), moment=note.n(couple)))
     else:
         note.para(note.t("note_bal_static", equation=planes[0].equation))
     for plane in planes:
@@ -194,8 +198,12 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     unbalance = note.n(spec.unbalance)
     # Balanced, on a moving base (an instrument on a shaken floor): no unbalance to work out.
     balanced = spec.unbalance == 0 and response.base is not None
-    note.para(note.t("note_vib_model_base" if balanced else "note_vib_model", mass=mass, stiffness=stiffness,
-                     zeta=note.n(spec.damping_ratio), unbalance=unbalance, omega=omega, rpm=note.n(spec.omega / RPM)))
+    model = "note_vib_model_base" if balanced else "note_vib_model_shaft" if spec.on_shaft else "note_vib_model"
+    note.para(note.t(model, mass=mass, stiffness=stiffness, zeta=note.n(spec.damping_ratio), unbalance=unbalance,
+                     omega=omega, rpm=note.n(spec.omega / RPM)))
+    if spec.damping is not None:
+        note.para(note.t("note_vib_damping", damping=note.n(spec.damping), stiffness=stiffness, mass=mass,
+                         zeta=note.n(spec.damping_ratio)))
     natural = note.n(response.natural_frequency)
     note.para(note.t("note_vib_natural", stiffness=stiffness, mass=mass, value=natural,
                      rpm=note.n(response.natural_frequency / RPM), omega=omega, ratio=note.n(response.frequency_ratio)))
@@ -204,7 +212,8 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         note.para(note.t("note_vib_amplitude", magnification=magnification, unbalance=unbalance, mass=mass,
                          amplitude=note.n(response.amplitude), millimetres=note.n(response.amplitude * 1000.0),
                          phase=note.n(math.degrees(response.phase), 4)))
-        note.para(note.t("note_vib_transmitted", unbalance=unbalance, omega=omega,
+        note.para(note.t("note_vib_transmitted_shaft" if spec.on_shaft else "note_vib_transmitted",
+                         unbalance=unbalance, omega=omega,
                          force=note.n(response.exciting_force), tr=note.n(response.transmissibility),
                          transmitted=note.n(response.transmitted_force)))
     if response.base is not None:
@@ -214,8 +223,16 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
                          magnification=magnification, relative=note.n(base.relative)))
     if spec.transmissibility is not None and response.isolation_ratio is not None:
         ratio = note.n(response.isolation_ratio)
-        note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=ratio, mass=mass,
-                         omega=omega, stiffness=note.n(response.isolation_stiffness)))
+        designed = response.isolation_stiffness
+        if spec.damping_ratio > 0:
+            # The ratio is found at the same ζ: the mounts need dampers to match, the present ones giving less.
+            note.para(note.t("note_vib_isolation_damped", wanted=note.n(spec.transmissibility), ratio=ratio,
+                             mass=mass, omega=omega, stiffness=note.n(designed), zeta=note.n(spec.damping_ratio),
+                             damping=note.n(2.0 * spec.damping_ratio * math.sqrt(designed * spec.mass)),
+                             kept=note.n(spec.damping_ratio * math.sqrt(spec.stiffness / designed))))
+        else:
+            note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=ratio, mass=mass,
+                             omega=omega, stiffness=note.n(designed)))
     note.figure("vibration_magnification.svg", note.text["vib_magnification_title"])
     note.figure("vibration_transmissibility.svg", note.text["vib_transmissibility_title"])
 

@@ -38,7 +38,7 @@ def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETA
     undamped curve is cut there).
     """
     words = {**locale_strings("en"), **(text or {})}
-    ratios = np.linspace(0.0, ratio_max, SAMPLES)
+    ratios = np.linspace(0.0, _reaching(ratio_max, operating), SAMPLES)
     curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in _checked(zetas)]
     damped = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in zetas if 0 < zeta < math.sqrt(0.5)]
     top = 1.15 * max([*damped, 2.0])
@@ -55,11 +55,18 @@ def transmissibility_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_Z
     ``operating`` = (r, ζ) marks a machine's working point.
     """
     words = {**locale_strings("en"), **(text or {})}
-    ratios = np.linspace(0.0, ratio_max, SAMPLES)
+    ratios = np.linspace(0.0, _reaching(ratio_max, operating), SAMPLES)
     curves = [(zeta, transmissibility(ratios, zeta)) for zeta in _checked(zetas)]
-    return _plot(path, ratios, curves, words, words["vib_transmissibility"], words["vib_transmissibility_title"], ylim=(0.02, 20.0), log=True,
-                 operating=None if operating is None else (operating[0], transmissibility(*operating)),
-                 isolation=True)
+    working = None if operating is None else (operating[0], transmissibility(*operating))
+    lowest = 0.02 if working is None else min(0.02, 0.5 * working[1])
+    return _plot(path, ratios, curves, words, words["vib_transmissibility"], words["vib_transmissibility_title"],
+                 ylim=(lowest, 20.0), log=True, operating=working, isolation=True)
+
+
+def _reaching(ratio_max: float, operating: tuple[float, float] | None) -> float:
+    """The frequency ratio the plot runs to: ``ratio_max``, or on past a working point beyond it (a fast machine at
+    r = 6 fell off the plot its legend named it in)."""
+    return ratio_max if operating is None else max(ratio_max, float(math.ceil(1.2 * operating[0])))
 
 
 def _checked(zetas: Sequence[float]) -> list[float]:
