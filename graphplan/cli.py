@@ -109,6 +109,7 @@ def _check(path: Path) -> int:
     analysis = analyse(scene)
     mechanism = analysis.mechanism
     n, p5, w = mechanism.degrees_of_freedom
+    pieces = _pieces(scene, analysis)  # an [output] include the scene cannot give is refused before "ok"
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")
@@ -117,7 +118,7 @@ def _check(path: Path) -> int:
         working, idle = turns
         print(f"strokes: working φw = {math.degrees(working):.2f}°, idle φi = {math.degrees(idle):.2f}°, "
               f"K = φw/φi = {working / idle:.4f}")
-    print(_pieces(scene, analysis))
+    print(pieces)
     _print_warnings(analysis)
     return 0
 

@@ -17,7 +17,7 @@ import contextlib
 import dataclasses
 import functools
 import io
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -253,9 +253,11 @@ class MachineDynamics:
             if isinstance(source, Scene):
                 self.spec = source.dynamics
                 self.model = diagram_model_of(self.spec)
+                self.first_position: int | None = None
             else:
                 self.spec = source.scene.dynamics
                 self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
+                self.first_position = int(source.positions.numbers[0])
             self.flywheel = flywheel_from_spec(self.model, self.spec)
 
     @functools.cached_property
@@ -291,10 +293,13 @@ class MachineDynamics:
         model's own samples from 0 to 2π, each jump's angle given twice."""
         import numpy as np
 
+        from .machine_motion.moment import exact_jumps
+
         model = self.model
         made_up = {"driving": model.driving, "resisting": model.resisting}.get(model.constant, 0.0)
-        if np.any(np.diff(model.coordinate) == 0):
-            return model.coordinate, -(model.moment - made_up)
+        angles, moments = exact_jumps(model.coordinate, -(model.moment - made_up))
+        if np.any(np.diff(angles) == 0):
+            return angles, moments
         phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
         return phi, -np.interp(phi, model.coordinate, model.moment - made_up)
 
@@ -314,15 +319,34 @@ class MachineDynamics:
                           delta=steady.cycle.delta, steady_after=steady.reached_at,
                           start_up_time=motion.start_up_time(5.0))
         if motion.stalled_at is not None:
-            result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=motion.stalled_at_angle_deg)
+            result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=self.stall_angle_deg())
         return result
+
+    def stall_angle_deg(self) -> float | None:
+        """Where the machine stalled, as the driver's ``angle_deg`` reads (the crank's own angle, 0…360°): the run
+        counts its angle from the first position, where the equivalent model starts."""
+        motion = self.motion
+        if motion is None or motion.stalled_at is None:
+            return None
+        import math
+
+        model = self.model
+        return math.degrees(float(model.driver[0]) + model.sense * float(motion.phi[-1])) % 360.0
+
+    def stall_place(self, text: Mapping[str, str], written: Callable[[float], str]) -> str:
+        """The stall's angle in words: the crank's own, and where the run's plots count it from (position 1)."""
+        crank, turned = written(self.stall_angle_deg()), written(self.motion.stalled_at_angle_deg)
+        if self.first_position is None:
+            return f"{crank}°"
+        return text["angle_and_turned"].format(angle=crank, turned=turned, number=self.first_position)
 
     def stall_warning(self) -> str | None:
         """One line for the command line when the motor cannot keep the machine turning."""
         motion = self.motion
         if motion is None or motion.stalled_at is None:
             return None
-        return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {motion.stalled_at_angle_deg:.1f}°: "
+        where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
+        return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
 

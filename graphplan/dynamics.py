@@ -430,8 +430,9 @@ def _powers(mechanism: Mechanism, state: State, acting: np.ndarray | None, count
     scene = mechanism.scene
     loads = scene.loads
     if acting is None:
-        acting = np.ones((len(loads), count), dtype=bool)
-    acting = np.asarray(acting, dtype=bool)
+        acting = np.ones((len(loads), count))
+    # A diagram's load acts by its share of the largest value (0…1), not all or nothing.
+    acting = np.asarray(acting, dtype=float)
     if acting.shape != (len(loads), count):
         raise ValueError(f"acting must have shape {(len(loads), count)} (loads, positions), not {acting.shape}")
     driving, resisting = np.zeros(count), np.zeros(count)
@@ -480,10 +481,11 @@ def _balanced(mechanism: Mechanism, coordinate: np.ndarray, driving: np.ndarray,
 
 
 def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarray) -> np.ndarray:
-    """``sweep`` with the two sides of every place where a load's window opens or closes put in."""
+    """``sweep`` with the two sides of every place where a load's window opens or closes put in (a diagram's
+    load changes all along its window: only where it starts and stops acting is a switch)."""
     if not mechanism.scene.loads:
         return sweep
-    acting = _acting_at(mechanism, positions, sweep)
+    acting = _acting_at(mechanism, positions, sweep) > 0
     rows, steps = np.nonzero(acting[:, :-1] != acting[:, 1:])
     if len(rows) == 0:
         return sweep
@@ -494,7 +496,7 @@ def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarr
         if np.all(np.abs(high - low) <= tolerance):
             break
         middle = 0.5 * (low + high)
-        state = _acting_at(mechanism, positions, middle)[rows, np.arange(len(rows))]
+        state = _acting_at(mechanism, positions, middle)[rows, np.arange(len(rows))] > 0
         same = state == before
         low = np.where(same, middle, low)
         high = np.where(same, high, middle)

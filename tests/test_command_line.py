@@ -191,3 +191,14 @@ def test_the_driver_array_interface_matches_the_scene_positions():
     by_scene = graphplan.solve(scene)
     by_array = graphplan.solve(scene, driver=by_scene.driver)
     np.testing.assert_array_equal(by_scene.point("E").a, by_array.point("E").a)
+
+
+def test_check_refuses_an_include_the_scene_cannot_give_before_it_says_ok(tmp_path, capsys):
+    # It printed "ok", the structure and the strokes, then the error and exit 2: which was it?
+    scene = tmp_path / "scene.toml"
+    scene.write_text(Path(FIXTURE).read_text(encoding="utf-8") + '\n[output]\ninclude = ["balancing"]\n',
+                     encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    printed = capsys.readouterr()
+    assert printed.out == ""
+    assert "output.include[0]: 'balancing' needs a [balancing] table" in printed.err

@@ -206,8 +206,16 @@ def test_a_machine_that_stalls_is_told_on_the_command_line_in_the_results_and_in
     assert "omega_mean" not in motion
     assert motion["stalled_at"] == motion["duration"]
     assert 0 <= motion["stalled_at_angle_deg"] < 360
+    # As the driver's angle_deg reads: the crank's own angle, not the angle turned from position 1 (the run's).
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    first, sense = document["positions"][0]["driver"]["angle_deg"], -1.0  # the starter's crank turns clockwise
+    assert document["positions"][0]["driver"]["omega"] < 0
     printed = capsys.readouterr().out
-    assert f"warning: dynamics: the machine stalls at t = {motion['stalled_at']:.4g} s" in printed
+    turned = float(re.search(r"\(([\d.]+)° from position 1\)", printed).group(1))
+    assert (first + sense * turned - motion["stalled_at_angle_deg"]) % 360 == pytest.approx(0.0, abs=0.06) or \
+        (first + sense * turned - motion["stalled_at_angle_deg"]) % 360 == pytest.approx(360.0, abs=0.06)
+    assert (f"warning: dynamics: the machine stalls at t = {motion['stalled_at']:.4g} s, "
+            f"φ = {motion['stalled_at_angle_deg']:.1f}° ({turned:.1f}° from position 1)") in printed
     assert "it stalls, coming to rest" in (out / "note.md").read_text(encoding="utf-8")
     # motion.svg shows why: the motor's torque against the resistance over the angle turned.
     figure = (out / "motion.svg").read_text(encoding="utf-8")

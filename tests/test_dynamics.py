@@ -475,3 +475,28 @@ def test_a_run_names_the_angle_of_its_dynamics_from_the_first_position_and_keeps
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out), "--only", "dynamics"]) == 0
     assert (out / "dynamics.svg").read_text(encoding="utf-8").count(f"φ, ° from position {first}") == 4
+
+
+def test_a_diagram_load_enters_the_reduced_moment_by_its_diagram_and_switches_only_where_it_starts_and_stops():
+    # The shaper's cut as a diagram rising over the first tenth of the stroke: the model took the load whole
+    # wherever its window was open (a step of 145 N·m where the diagram starts from nought), and put a switch's
+    # two samples at every sample of the ramp (415 samples for 361).
+    text = (FIXTURE_DIR / "shaper_six_bar.toml").read_text(encoding="utf-8").replace(
+        "value     = 2000.0       # N, cutting force", "").replace(
+        "during    = { from = 0.05, to = 0.95 }", "diagram   = [[0.05, 0.0], [0.1, 2000.0], [0.9, 2000.0], [0.95, 0.0]]")
+    assert "diagram" in text
+    scene = loads(text)
+    model = equivalent_model_of(analyse(scene), 360, constant="none")
+    mechanism = build(scene)
+    positions = make_positions(mechanism)
+    motion = solve(mechanism, model.driver, positions.reference)
+    balance = equilibrium(mechanism, motion, link_loads(mechanism, motion_state(motion),
+                                                        activity(mechanism, positions, motion)))
+    velocity, rate = scene.driver.omega, scene.driver.epsilon
+    energy_rate = 0.5 * model.inertia_slope * model.speed ** 3 + model.inertia * velocity * rate
+    residual = balance.balancing * velocity + model.moment * model.speed - energy_rate
+    np.testing.assert_allclose(residual, 0.0, atol=1e-8 * float(np.max(np.abs(balance.balancing * velocity))))
+    # The diagram sets in from nought and ends at nought: no jump anywhere, and two switches' samples at most.
+    assert len(model.coordinate) <= 361 + 4
+    steps = np.abs(np.diff(model.resisting))
+    assert float(np.max(steps)) < 0.25 * float(np.max(np.abs(model.resisting)))

@@ -13,6 +13,7 @@ import math
 import re
 
 import pytest
+from test_stroke_choice import TOGGLE
 
 import graphplan
 from graphplan.analysis import analyse
@@ -330,68 +331,12 @@ def test_labels_that_took_each_other_s_only_spot_are_placed_again():
     assert clashes[0] == 0 and clashes[1] <= 2
 
 
-# A sine mechanism driving a rocker through a link (a teacher's scene): group II(3,4)'s yoke 4 slides on the
+# The teacher's sine mechanism with its rocker links in a regular proportion: group II(3,4)'s yoke 4 slides on the
 # frame's guide, whose reaction R14 acts 190 mm along it from B in position 2.
-SINE_ROCKER = """
-[scene]
-title = "Sine mechanism with a rocker"
-locale = "en"
-
-[frame]
-link = 1
-points = { O = [0.0, 0.0], G = [-0.30, 0.32] }
-lines = { slide = { through = "O", angle = 10.0 } }
-
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.06
-omega = 15.0
-
-[[groups]]
-kind = "RPP"
-links = [3, 4]
-joints = ["A", "B"]
-guide = "slide"
-angle = 65.0
-
-[[groups]]
-kind = "RRR"
-links = [5, 6]
-joints = ["P", "E", "G"]
-lengths = [0.25, 0.16]
-assembly = "right"
-
-[points]
-P = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.25 }
-S4 = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.12 }
-S6 = { link = 6, from = "G", toward = "E", at = 0.07 }
-
-[links.4]
-mass = 4.0
-centre = "S4"
-inertia = 0.02
-
-[links.6]
-mass = 1.5
-centre = "S6"
-inertia = 0.005
-
-[[loads]]
-kind = "moment"
-link = 6
-value = 60.0
-resisting = true
-
-[positions]
-count = 12
-plans = [2]
-
-[drawing]
-length_scale = 0.0025
-"""
+SINE_ROCKER = TOGGLE.replace("lengths = [0.15, 0.123392747509]", "lengths = [0.25, 0.16]").replace(
+    'S6 = { link = 6', 'S4 = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.12 }\nS6 = { link = 6').replace(
+    "[links.6]", '[links.4]\nmass = 4.0\ncentre = "S4"\ninertia = 0.02\n\n[links.6]') + (
+    "\n[drawing]\nlength_scale = 0.0025\n")
 
 
 def test_a_reaction_acting_off_its_joint_along_a_guide_stands_on_the_guide_s_axis_run_on_to_it(tmp_path):

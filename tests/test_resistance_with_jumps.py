@@ -166,3 +166,35 @@ motor = { kind = "kloss", power = 5500.0, overload = 2.5, synchronous_rpm = 1000
     assert middle == pytest.approx((high + low) / 2, rel=1e-4)
     assert delta == pytest.approx((high - low) / middle, rel=1e-3)
     assert f"ωm = 2π/T = {motion['omega_mean']:.5g}" in note
+
+
+def test_a_linkage_whose_load_acts_over_part_of_the_stroke_gives_the_equation_of_motion_its_jumps():
+    # The shaper's cut over 5…95 % of the working stroke: the model's sweep puts the two sides of each switch a
+    # hair apart; the equation of motion takes them as one angle given twice, a jump, not as a spline's ramp.
+    from pathlib import Path
+
+    from graphplan.analysis import analyse
+    from graphplan.deliverables import MachineDynamics
+    from graphplan.loads import activity
+    from graphplan.motion import solve
+    from graphplan.scene import loads
+
+    root = Path(__file__).resolve().parent.parent
+    text = (root / "fixtures" / "shaper_six_bar.toml").read_text(encoding="utf-8") + (
+        '\n[dynamics]\ndelta = 0.05\nmotor = { kind = "kloss", power = 3000.0, overload = 2.2, '
+        'synchronous_rpm = 1500.0, rated_rpm = 1440.0, gear_ratio = 24.7 }\n')
+    analysis = analyse(loads(text))
+    dynamics = MachineDynamics(analysis)
+    angles, moments = dynamics.resisting
+    jumps = np.flatnonzero(np.diff(angles) == 0)
+    assert len(jumps) == 2
+    positions, mechanism = analysis.positions, analysis.mechanism
+    driver = mechanism.driver
+    for k in jumps:
+        # Just before and just after, the cut is off and on (or on and off): the window's ends.
+        around = positions.values[0] + driver.sense * (angles[k] + np.array([-1e-6, 1e-6]))
+        padded = np.concatenate([[positions.extremes[0]], around])
+        acting = activity(mechanism, positions, solve(mechanism, padded, positions.reference))[:, 1:]
+        assert acting[0, 0] != acting[0, 1]
+        assert abs(moments[k + 1] - moments[k]) > 100.0  # N·m: the cut's 2 kN at the ram's speed ratio
+    assert dynamics.motion.steady is not None

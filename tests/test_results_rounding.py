@@ -67,6 +67,20 @@ def test_a_link_along_minus_x_reads_180_degrees_as_the_driver_does():
     assert first["links"]["2"]["angle_deg"] == 180.0
 
 
+def test_a_crank_counted_on_round_the_turns_reads_its_angle_within_the_half_turns():
+    """A crank turning clockwise from 196.6°: its angle ran −163.4, −193.4 … −493.4 in results.json, where the
+    contract keeps every link's within (−180, 180], as the same crank's driver angle and its position say."""
+    for path in ("fixtures/shaper_six_bar.toml", "fixtures/ratchet_crank_rocker.toml"):
+        document = results(analyse(graphplan.load(path)))
+        for position in document["positions"]:
+            for link in position["links"].values():
+                assert -180.0 < link["angle_deg"] <= 180.0
+            crank = position["links"]["2"]["angle_deg"]
+            driver = position["driver"]["angle_deg"]
+            assert math.isclose((crank - driver) % 360.0, 0.0, abs_tol=1e-9) or \
+                math.isclose((crank - driver) % 360.0, 360.0, abs_tol=1e-9)
+
+
 def test_a_slide_with_no_normal_reaction_has_no_offset():
     """The scotch yoke slides up and down its vertical guide with no horizontal load on it: the guide's normal
     reaction R14 is zero (rounding's 1e-13 N at most), and holds the yoke by a couple alone.  Where such a force acts

@@ -79,6 +79,22 @@ class PiecewiseMoment:
         return self.on_piece(self.piece_at(phi), phi)
 
 
+def exact_jumps(angles: ArrayLike, values: ArrayLike, *, gap: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:
+    """Samples of a sweep whose load switches were found by bisection, two samples a hair apart (closer than
+    ``gap`` rad) on either side of each: where their values differ, a jump, given at one angle twice as
+    :class:`PiecewiseMoment` reads it; where they do not (a diagram's load setting in from nought), one sample."""
+    x = np.array(angles, dtype=float)
+    y = np.array(values, dtype=float)
+    scale = float(np.max(np.abs(y))) if y.size else 0.0
+    keep = np.ones(x.size, dtype=bool)
+    for i in np.flatnonzero(np.diff(x) <= gap):
+        if abs(y[i + 1] - y[i]) > 1e-9 * scale:
+            x[i + 1] = x[i]
+        else:
+            keep[i + 1] = False
+    return x[keep], y[keep]
+
+
 def _smooth(x: np.ndarray, y: np.ndarray) -> Callable[[float], float]:
     """A spline through one piece's samples: quintic where it has six or more, lower where fewer."""
     keep = np.ones(x.size, dtype=bool)

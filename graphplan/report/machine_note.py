@@ -135,7 +135,7 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
             note.para(note.text["note_dyn_no_steady"])
         else:
             note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4),
-                             angle=note.n(motion.stalled_at_angle_deg, 4)))
+                             angle=dynamics.stall_place(note.text, lambda value: note.n(value, 4))))
         return
     cycle = steady.cycle
     note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),

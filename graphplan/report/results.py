@@ -155,9 +155,11 @@ def _turn_deg(angle: float) -> float:
 
 
 def _half_turn_deg(angle: float) -> float:
-    """A link's ``angle`` (from ``np.angle``) in degrees within (−180, 180]: a link along −x reads 180,
-    whichever sign rounding left on the zero across it."""
+    """A link's ``angle`` (rad, a crank's counted on round the turns) in degrees within (−180, 180]: a link along
+    −x reads 180, whichever sign rounding left on the zero across it."""
     degrees = math.degrees(angle)
+    if not -180.0 <= degrees <= 180.0:  # a crank's angle: brought into the half turns (the others are there)
+        degrees = (degrees + 180.0) % 360.0 - 180.0
     return 180.0 if abs(degrees + 180.0) < ANGLE_FLOOR_DEG else degrees
 
 
