@@ -17,6 +17,7 @@ import contextlib
 import dataclasses
 import functools
 import io
+import math
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -328,8 +329,6 @@ class MachineDynamics:
         motion = self.motion
         if motion is None or motion.stalled_at is None:
             return None
-        import math
-
         model = self.model
         return math.degrees(float(model.driver[0]) + model.sense * float(motion.phi[-1])) % 360.0
 
