@@ -198,3 +198,14 @@ def test_a_linkage_whose_load_acts_over_part_of_the_stroke_gives_the_equation_of
         assert acting[0, 0] != acting[0, 1]
         assert abs(moments[k + 1] - moments[k]) > 100.0  # N·m: the cut's 2 kN at the ram's speed ratio
     assert dynamics.motion.steady is not None
+
+
+def test_a_jump_a_rounding_from_the_turns_end_is_a_jump_at_its_start():
+    # A switch bisected to a hair before 2π, its two sides made one angle, and the sweep's last sample at 2π less
+    # a rounding: one jump at 0 ≡ 2π, not a spline through three samples 1e-14 rad apart.
+    hair = TWO_PI - 3e-12
+    moment = PiecewiseMoment([0.0, 1.0, 2.0, 3.0, 3.0, 4.0, 5.0, 6.0, hair, hair],
+                             [50.0, 50.0, 50.0, 50.0, 10.0, 10.0, 10.0, 10.0, 10.0, 50.0])
+    assert moment.jumps == (0.0, 3.0)
+    assert moment(0.0) == pytest.approx(50.0) and moment(6.2) == pytest.approx(10.0)
+    assert moment(TWO_PI + 0.5) == pytest.approx(50.0) and moment(2.9) == pytest.approx(50.0)

@@ -43,7 +43,10 @@ class PiecewiseMoment:
         if x[0] != 0.0 or abs(x[-1] - TWO_PI) > 1e-9 or np.any(np.diff(x) < 0):
             raise ValueError("a piecewise moment's angles must rise from 0 to 2π (an angle given twice is a jump)")
         x = x.copy()
-        x[-1] = TWO_PI
+        # The turn's ends as a sweep reaches them, a rounding off: a jump given there keeps its two samples at one
+        # angle (a switch a hair before 2π, made one angle by exact_jumps, is a jump at 2π, the same as at 0).
+        x[np.abs(x - TWO_PI) <= 1e-9] = TWO_PI
+        x[np.abs(x) <= 1e-9] = 0.0
         cuts = np.flatnonzero(np.diff(x) == 0) + 1
         # A sample alone between two jumps at one angle spans nothing (a jump at 2π given as the turn's last).
         pieces = [(px, py) for px, py in zip(np.split(x, cuts), np.split(y, cuts), strict=True) if px.size > 1]
