@@ -205,7 +205,7 @@ def _measured_far_off(drawn: tuple[PlanPosition | VelocityPosition, ...]) -> tup
 def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
     """A warning where the working link turns back more than twice a turn (a jaw that swings twice): its two
     extremes are then a choice, and its strokes, K and a load's window follow that choice.  Given at the
-    position nearest the first turn back that is not one of the extremes."""
+    position nearest a turn back that is not one of the extremes."""
     if len(positions.reversals) <= 2 or positions.extremes is None:
         return ()
     turn = 2.0 * math.pi
