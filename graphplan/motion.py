@@ -12,14 +12,13 @@ a warning, never silently.
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
-from .errors import SceneError, SingularPositionError
+from .errors import SceneError
 from .groups.base import Guide, GuideMotion
 from .kinematics import (
     LinkMotion,
@@ -151,6 +150,7 @@ class _Context:
         scene = mechanism.scene
         self._scene = scene
         self._describe = describe
+        self._driver = mechanism.driver
         self.points: dict[str, PointMotion] = {
             name: PointMotion(r, _STILL, _STILL) for name, r in scene.frame_points.items()
         }
@@ -189,12 +189,8 @@ class _Context:
             found = error(int(index), self._describe(int(index)))
             self.raised.setdefault(int(index), found)
             # The warning is told with its position's number: its text gives the driver's place alone.
-            told = str(found)
-            if isinstance(found, SingularPositionError):
-                numbered = re.fullmatch(r"position \S+ \((.*)\)", found.position)
-                told = str(SingularPositionError(numbered.group(1) if numbered else found.position, found.group,
-                                                 found.reason))
-            self.singular.setdefault(int(index), told)
+            place = self._driver.describe(float(self.values[int(index)]))
+            self.singular.setdefault(int(index), str(error(int(index), place)))
 
 
 @dataclass(frozen=True)
