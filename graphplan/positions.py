@@ -196,8 +196,9 @@ def _find_extremes(mechanism: Mechanism, start: float,
     # A sign change is a turn back where the speed passes through zero, not through a singular position (a
     # toggle of a later group, where it runs off to infinity and back from the other side).
     through_zero = np.minimum(np.abs(before), np.abs(after)) < np.median(np.abs(speed[np.isfinite(speed)]))
-    for name, rising in (("working", True), ("idle", False)):
-        crossing = through_zero & ((before <= 0) & (after > 0) if rising else (before >= 0) & (after < 0))
+    rises = through_zero & (before <= 0) & (after > 0)
+    falls = through_zero & (before >= 0) & (after < 0)
+    for name, rising, crossing in (("working", True, rises), ("idle", False, falls)):
         candidates = np.flatnonzero(crossing)
         if len(candidates) == 0:
             working = mechanism.scene.positions.working
@@ -207,8 +208,7 @@ def _find_extremes(mechanism: Mechanism, start: float,
         index = max(candidates, key=lambda i: _stroke_length(speed[:-1], i, rising))
         lo, hi = steps[index], steps[index + 1]
         found[name] = float(lo) if speed[index] == 0 else _zero_between(speeds_at, float(lo), float(hi))
-    turning_back = np.flatnonzero(through_zero & (((before <= 0) & (after > 0)) | ((before >= 0) & (after < 0))))
-    reversals = tuple(float(steps[i] + steps[i + 1]) / 2.0 for i in turning_back)
+    reversals = tuple(float(steps[i] + steps[i + 1]) / 2.0 for i in np.flatnonzero(rises | falls))
     return found["working"], found["idle"], reversals
 
 
