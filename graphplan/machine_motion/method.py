@@ -14,6 +14,8 @@ from .shaft import TWO_PI, Machine
 # step would be held by stability instead: Dormand–Prince's RK45 is stable on the negative real
 # axis up to h·|λ| ≈ 3.3.
 STIFFNESS_THRESHOLD = 3.0
+# The angles over a turn at which the mean resistance and inertia are taken.
+_TURN = np.linspace(0.0, TWO_PI, 64, endpoint=False)
 
 
 def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration: float | None = None) -> float:
@@ -23,11 +25,7 @@ def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration:
     does not grow with speed there is no such speed, and the start's speed (or the speed reached
     after ``duration`` at the mean surplus torque) stands in.
     """
-    angles = np.linspace(0.0, TWO_PI, 64, endpoint=False)
-
-    def surplus(omega: float) -> float:
-        return motor.shaft_torque(omega) - float(np.mean([machine.mr(a, omega) for a in angles]))
-
+    surplus = _mean_surplus(machine, motor)
     tiny = 1e-9
     top = motor.shaft_no_load_speed
     if top is not None:
@@ -40,7 +38,7 @@ def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration:
         if surplus(top) < 0:
             return float(brentq(surplus, 0.0, top, xtol=1e-12 * top)) if surplus(0.0) > 0 else top
         top *= 2.0
-    inertia = float(np.mean([machine.je(a) for a in angles])) + motor.reduced_inertia
+    inertia = float(np.mean([machine.je(a) for a in _TURN])) + motor.reduced_inertia
     reached = given + max(surplus(given), 0.0) / inertia * (duration or 1.0)
     return max(reached, 1e-3)
 
@@ -51,12 +49,18 @@ def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float]
     where some speed balances them."""
     if motor.shaft_no_load_speed is not None:
         return None
-    angles = np.linspace(0.0, TWO_PI, 64, endpoint=False)
-    for omega in 2.0 ** np.arange(0, 31):
-        resisting = float(np.mean([machine.mr(a, omega) for a in angles]))
-        if motor.shaft_torque(omega) <= resisting:
-            return None
-    return motor.shaft_torque(2.0 ** 30), resisting
+    surplus = _mean_surplus(machine, motor)
+    if any(surplus(omega) <= 0 for omega in 2.0 ** np.arange(0, 31)):
+        return None
+    fastest = 2.0 ** 30
+    return motor.shaft_torque(fastest), motor.shaft_torque(fastest) - surplus(fastest)
+
+
+def _mean_surplus(machine: Machine, motor: Motor):
+    """The motor's torque less the resistance's mean over a turn, as a function of the speed (N·m)."""
+    def surplus(omega: float) -> float:
+        return motor.shaft_torque(omega) - float(np.mean([machine.mr(a, omega) for a in _TURN]))
+    return surplus
 
 
 def is_stiff(stiffness: float) -> bool:
