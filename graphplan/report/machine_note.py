@@ -18,7 +18,7 @@ import numpy as np
 
 from ..rotor_balancing import BalancingResult, static_couple
 from ..units import RPM
-from ..vibration import Response, VibrationSpec
+from ..vibration import Response, VibrationSpec, damping_ratio
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
     from ..deliverables import MachineDynamics
@@ -226,10 +226,13 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         designed = response.isolation_stiffness
         if spec.damping_ratio > 0:
             # The ratio is found at the same ζ: the mounts need dampers to match, the present ones giving less.
+            def damping_for(stiffness: float) -> float:  # c that gives the scene's ζ on mounts of that stiffness
+                return 2.0 * spec.damping_ratio * math.sqrt(stiffness * spec.mass)
+
             note.para(note.t("note_vib_isolation_damped", wanted=note.n(spec.transmissibility), ratio=ratio,
                              mass=mass, omega=omega, stiffness=note.n(designed), zeta=note.n(spec.damping_ratio),
-                             damping=note.n(2.0 * spec.damping_ratio * math.sqrt(designed * spec.mass)),
-                             kept=note.n(spec.damping_ratio * math.sqrt(spec.stiffness / designed))))
+                             damping=note.n(damping_for(designed)),
+                             kept=note.n(float(damping_ratio(damping_for(spec.stiffness), designed, spec.mass)))))
         else:
             note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=ratio, mass=mass,
                              omega=omega, stiffness=note.n(designed)))
