@@ -165,6 +165,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
 
     found: list[Drawing] = []
     analysis = draw.with_length_scale(analysis)
+    draw.refuse_beyond_paper(analysis)
     machine = None
     if "dynamics" in pieces:
         from .render import dynamics as dynamics_layout

@@ -421,9 +421,14 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
 
 def _fitting_scale(polygon: Polygon) -> float | None:
     """The least standard μF at which ``polygon`` spans at most :data:`POLYGON_FIELD_MM`; None for no span."""
-    extent = max((abs(vector.end - other.end) for vector in polygon.vectors for other in polygon.vectors),
-                 default=0.0)
+    extent = polygon_extent(polygon)
     return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else None
+
+
+def polygon_extent(polygon: Polygon) -> float:
+    """The largest distance between two vertices of ``polygon`` (N): what its μF must fit."""
+    return max((abs(vector.end - other.end) for vector in polygon.vectors for other in polygon.vectors),
+               default=0.0)
 
 
 def _construct(mechanism: Mechanism, positions: Mapping[str, complex], directions: Mapping[int, complex],
@@ -447,4 +452,5 @@ __all__ = [
     "PolygonVector",
     "Term",
     "force_plan",
+    "polygon_extent",
 ]

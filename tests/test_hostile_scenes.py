@@ -338,8 +338,42 @@ def test_an_overflowing_speed_is_an_error_or_warned_everywhere(capsys):
 def test_a_pole_distance_no_sheet_holds_is_refused_not_drawn(capsys):
     """At pa = 1e9 mm the plan's points lie so far out that a link's collinear points (p, s4, b) round to a
     hull of some area, whose corners were then all dropped as in line; the plan is refused instead."""
-    error = assert_refused(capsys, _with("drawing.acceleration_pole", 1e9), "drawing.sheet")
-    assert "drawing.acceleration_pole = 1e+09 mm" in error
+    error = assert_refused(capsys, _with("drawing.acceleration_pole", 1e9), "drawing.acceleration_pole")
+    assert "more than any paper" in error
+
+
+def _refused_without_sheets(capsys, text: str, key: str) -> str:
+    """The value the error line offers for ``key`` once a run without sheets refuses ``text``."""
+    status, err, folder = run(capsys, text, ("--only", "velocity,acceleration,forces"))
+    shutil.rmtree(folder)
+    assert status == 2 and f"graphplan: error: {key}: " in err and "more than any paper" in err, err
+    return re.search(r"give (\S+) ", err).group(1)
+
+
+@pytest.mark.parametrize("key, slip", [("velocity_pole", 1e5), ("acceleration_pole", 1e5),
+                                       ("velocity_scale", 1e-7), ("force_scale", 1e-3)])
+def test_a_scale_that_draws_a_plan_or_polygon_larger_than_any_paper_is_refused_without_sheets_too(capsys, key, slip):
+    """A pole distance in micrometres or μF in the wrong unit wrote an SVG hundreds of metres wide when no sheet
+    was asked for (the sheets refused it); now every run refuses it, and the value it offers draws the
+    largest plan or polygon at its usual size."""
+    def scene(value: float) -> str:
+        document = copy.deepcopy(BASE)
+        document["drawing"][key] = value
+        if key == "velocity_scale":  # given instead of the pole distance, never with it
+            del document["drawing"]["velocity_pole"]
+        return to_toml(document)
+
+    offered = float(_refused_without_sheets(capsys, scene(slip), f"drawing.{key}"))
+    status, err, folder = run(capsys, scene(offered), ("--only", "velocity,acceleration,forces"))
+    try:
+        assert status == 0, err
+        drawings = sorted((folder / "out").glob("*.svg"))
+        assert drawings
+        for drawing in drawings:
+            width_mm = float(re.search(r'<svg[^>]* width="([0-9.]+)mm"', drawing.read_text(encoding="utf-8"))[1])
+            assert width_mm < 600, (drawing.name, width_mm)
+    finally:
+        shutil.rmtree(folder)
 
 
 def test_a_length_scale_that_would_draw_the_mechanism_kilometres_large_is_refused_before_drawing(capsys):

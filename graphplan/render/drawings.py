@@ -10,9 +10,10 @@ import numpy as np
 
 from ..analysis import Analysis, PlanPosition, instant
 from ..errors import SceneError
+from ..forces import POLYGON_FIELD_MM, polygon_extent
 from ..locale import strings
 from ..memo import OwnedMemo
-from ..plans import Plan, acceleration_plan, velocity_plan
+from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
 from ..statics import efficiency
 from . import forces as force_layout
@@ -65,6 +66,42 @@ def length_scale(analysis: Analysis) -> float:
 
     return _chosen_scales.get(analysis, sheet, lambda: fewest_sheets_length_scale(
         analysis, sheet, fitting_length_scale(analysis, sheet, first)))
+
+
+def refuse_beyond_paper(analysis: Analysis) -> None:
+    """Refuse a plan or force polygon that a scale the scene gives draws larger than any paper, naming the key
+    and the value that draws it at its usual size: such a drawing is a slip of the unit, and written out it is
+    an SVG metres wide that no viewer opens."""
+    drawing = analysis.scene.drawing
+    driver = analysis.mechanism.driver.joint
+    for position in (*analysis.velocity_plans, *analysis.plans):
+        plans_of = position.plans if isinstance(position, PlanPosition) else {"velocity": position.velocity}
+        for kind, plan in plans_of.items():
+            across = spread(plan) / plan.scale
+            if not across > LARGEST_PAPER_MM:  # NaN too: a singular position's plan is refused elsewhere
+                continue
+            fitting = spread(plan) / PLAN_FIELD_MM
+            if getattr(drawing, f"{kind}_scale") is not None:
+                key, given, fix = f"drawing.{kind}_scale", getattr(drawing, f"{kind}_scale"), format_scale(
+                    standard_scale(fitting))
+            else:
+                key, given = f"drawing.{kind}_pole", getattr(drawing, f"{kind}_pole")
+                fix = f"{max(1, math.floor(abs(plan.value(driver)) / fitting)):d}"
+            raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
+                             f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {PLAN_FIELD_MM:g} mm "
+                             "plan), or leave it out for the program to choose", given)
+    polygons = [(position, group) for position in analysis.plans
+                for found in (position.forces, position.with_friction) if found is not None and not found.locked
+                for group in found.groups]
+    for position, group in polygons:
+        across = polygon_extent(group.polygon) / group.scale
+        if across > LARGEST_PAPER_MM:
+            largest = max(polygon_extent(other.polygon) for _, other in polygons)
+            raise SceneError("drawing.force_scale", f"draws the force polygon of group {group.label} in position "
+                             f"{position.number} {across:.3g} mm across, more than any paper ({LARGEST_PAPER_MM:g} "
+                             f"mm): give {format_scale(standard_scale(largest / POLYGON_FIELD_MM))} (the largest "
+                             f"polygon {POLYGON_FIELD_MM:g} mm), or leave it out for the program to choose",
+                             drawing.force_scale)
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:
