@@ -24,20 +24,19 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
-from .geometry import Line, cross_lines, crossing_angle_deg
+import numpy as np
+
+from .geometry import Line, ParallelLinesError, cross_lines, crossing_angle_deg
 from .kinematics import Scalar, Vector, cross
 from .plans import guide_at
 from .scales import standard_scale
+from .settling import settle
 
 if TYPE_CHECKING:
     from .mechanism import Mechanism
 
 # The field a force polygon gets on the sheet when μF is chosen, mm.
 POLYGON_FIELD_MM = 150.0
-# With friction the analysis is repeated until no reaction moves by more than this share of the
-# largest; a position that has not settled after MAX_ITERATIONS locks itself.
-CONVERGED = 1e-13
-MAX_ITERATIONS = 200
 # A force whose line passes this close to a moment centre (a share of the mechanism's size) passes through it.
 _THROUGH = 1e-12
 
@@ -394,16 +393,8 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
     plan = _construct(mechanism, positions, directions, loads)
     iterations, locked = 0, False
     if friction is not None:
-        locked = True
-        for iterations in range(1, MAX_ITERATIONS + 1):
-            extra = friction({name: found.force for name, found in plan.reactions.items()})
-            again = _construct(mechanism, positions, directions, loads + extra)
-            change = max(abs(again.reactions[name].force - found.force) for name, found in plan.reactions.items())
-            size = max(abs(found.force) for found in again.reactions.values())
-            plan = again
-            if change <= CONVERGED * size:
-                locked = False
-                break
+        plan, iterations, locked = _with_friction(plan, lambda extra: _construct(
+            mechanism, positions, directions, loads + extra), friction)
     if scale is None:
         fitting = {group.label: _fitting_scale(group.polygon) for group in plan.groups}
         # A polygon of no length (a group with nothing to balance) takes the others' μF.
@@ -417,6 +408,38 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
     # μF of the position: the scene's, else the coarsest polygon's, at which every polygon fits its field.
     position_scale = scale if isinstance(scale, float | int) else max(scales.values(), default=1.0)
     return ForcePlan(groups, plan.reactions, plan.balancing, float(position_scale), iterations, locked, plan.auxiliary)
+
+
+def _with_friction(ideal: ForcePlan, construct: Callable[[tuple[Load, ...]], ForcePlan],
+                   friction: Callable[[Mapping[str, complex]], tuple[Load, ...]]) -> tuple[ForcePlan, int, bool]:
+    """The construction repeated with the friction loads of the reactions the last one found, from ``ideal``
+    (without friction) until they settle (:func:`~graphplan.settling.settle`): the last construction, how many
+    times it was made, and whether the position locks itself."""
+    names = tuple(ideal.reactions)
+    made: dict[bytes, ForcePlan] = {}
+
+    def repeat(rows: np.ndarray) -> np.ndarray:
+        found = np.full(rows.shape, np.nan, dtype=complex)
+        for row, forces in zip(found, rows, strict=True):
+            if not np.all(np.isfinite(forces)):  # blown up: no construction follows from it
+                continue
+            try:
+                again = construct(friction(dict(zip(names, forces, strict=True))))
+            except ParallelLinesError:  # reactions blown up past any number: their lines point nowhere
+                continue
+            row[:] = [again.reactions[name].force for name in names]
+            made.clear()
+            made[row.tobytes()] = again
+        return found
+
+    start = np.array([[ideal.reactions[name].force for name in names]])
+    settled, iterations, locked = settle(repeat, start)
+    if locked[0]:  # no construction to show: the position's record is the one without friction, marked locked
+        return ideal, int(iterations[0]), True
+    plan = made.get(settled[0].tobytes())  # the repetitions' last construction, as it was made
+    if plan is None:  # Newton's method settled between constructions
+        plan = construct(friction(dict(zip(names, settled[0], strict=True))))
+    return plan, int(iterations[0]), False
 
 
 def _fitting_scale(polygon: Polygon) -> float | None:

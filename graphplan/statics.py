@@ -22,12 +22,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .forces import CONVERGED, MAX_ITERATIONS
 from .joint_friction import FrictionPair, friction_loads
 from .kinematics import Scalar, Vector, cross
 from .loads import Load, State, motion_state, power
 from .mechanism import Mechanism
 from .motion import Motion
+from .settling import settle
 
 # A system whose condition number exceeds this is singular at that position:
 # the reactions are not determined (a toggle of some group), and no number is given.
@@ -119,9 +119,10 @@ def equilibrium(mechanism: Mechanism, motion: Motion, loads: tuple[Load, ...],
 
     With ``friction`` the friction loads depend on the reactions they change:
     the system is solved again with the friction of the last solution until
-    no reaction moves by more than :data:`CONVERGED` of the largest; a
-    position that has not settled after :data:`MAX_ITERATIONS` locks itself
-    (no finite balancing load moves it).
+    no reaction moves by more than :data:`~graphplan.settling.CONVERGED` of
+    the largest (:func:`~graphplan.settling.settle`); a position where no
+    solution attracts the repetitions locks itself (no finite balancing load
+    moves it).
     """
     count = motion.count
     system = _System(mechanism, motion)
@@ -130,22 +131,12 @@ def equilibrium(mechanism: Mechanism, motion: Motion, loads: tuple[Load, ...],
     locked = np.zeros(count, dtype=bool)
     if friction:
         state = motion_state(motion)
-        settled = singular.copy()
-        # A self-locking position's reactions grow without bound, step by step, to inf and NaN: that is how
-        # it is found (it never settles), so numpy's overflow warnings would only be noise on the terminal.
-        with np.errstate(over="ignore", invalid="ignore"):
-            for step in range(1, MAX_ITERATIONS + 1):
-                extra = friction_loads(friction, state, system.forces(unknowns))
-                again = system.apply(inverse, system.known(loads + extra), singular)
-                # fmax skips NaN as nanmax does, and gives NaN for a row of them without a warning.
-                change = np.fmax.reduce(np.abs(again - unknowns), axis=1)
-                size = np.fmax.reduce(np.abs(again), axis=1)
-                unknowns = np.where(settled[:, None], unknowns, again)
-                iterations = np.where(settled, iterations, step)
-                settled |= ~(change > CONVERGED * size)  # a NaN change (a position blown up) never settles
-                if settled.all():
-                    break
-        locked = ~settled
+
+        def repeat(last: np.ndarray) -> np.ndarray:
+            extra = friction_loads(friction, state, system.forces(last))
+            return system.apply(inverse, system.known(loads + extra), singular)
+
+        unknowns, iterations, locked = settle(repeat, unknowns, singular)
     with np.errstate(over="ignore", invalid="ignore"):   # the locked positions' reactions are inf or NaN
         return system.record(unknowns, condition, singular, iterations, locked)
 

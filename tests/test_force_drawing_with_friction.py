@@ -144,12 +144,18 @@ def test_a_russian_scene_writes_its_friction_in_russian():
 
 
 def test_without_settled_reactions_there_is_no_sheet_with_friction(tmp_path):
-    """The slider-crank's piston jams at f = 5 in three of its four plan positions: one sheet, not four."""
+    """The slider-crank's crank pushing its piston jams at f = 5 where f·tan β > 1 (position 17 of the four plan
+    positions): the piston pushing the crank (1, 5, 9) does not, its rod force P/(cos β + f·sin β) only
+    smaller; one sheet of friction less."""
     scene = tmp_path / "jamming.toml"
     scene.write_text(slider_crank_text('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 5.0'))
     analysis = analyse(slider_crank('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 5.0'))
     settled = [p.number for p in analysis.plans if not p.with_friction.locked]
-    assert len(settled) == 1
+    pushes_the_piston = [p.number for p in analysis.plans if analysis.motion.point("B").v[p.index, 0] > 0]
+    beta = [math.asin(0.25 * math.sin(analysis.motion.driver[p.index])) for p in analysis.plans]
+    jams = [p.number for p, angle in zip(analysis.plans, beta, strict=True)
+            if p.number in pushes_the_piston and 5.0 * abs(math.tan(angle)) > 1.0]
+    assert jams == [17] and settled == [1, 5, 9]
     with pytest.raises(ValueError, match="no settled force analysis with friction"):
         force_sheet(analysis, next(p for p in analysis.plans if p.with_friction.locked), True)
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0

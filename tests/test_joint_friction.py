@@ -91,6 +91,66 @@ def test_guide_friction_matches_the_closed_form_and_locks_where_it_must():
     assert (exact.iterations[free & (piston > 0)] >= 1).all()
 
 
+def _guide_friction(f: float, plans: str = "[18, 19]"):
+    """The slider-crank with friction f in its guide alone; the closed form's denominator and expected Mb."""
+    text = slider_crank_text(f'[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = {f}')
+    analysis = analyse(scene_from_text(text.replace("plans = [1, 5, 9, 17]", f"plans = {plans}")))
+    phi = analysis.motion.driver
+    beta = rod_angle(phi)
+    piston = np.sign(analysis.motion.point("B").v[:, 0])
+    denominator = np.cos(beta) - f * piston * np.abs(np.sin(beta))
+    return analysis, piston, denominator, -PUSH * RADIUS * np.sin(phi + beta) / denominator
+
+
+def test_guide_friction_of_a_gain_near_one_settles_at_the_closed_form_instead_of_locking():
+    """At f·tan β = 0.963 the repeated construction settles by 0.963 a step: 200 repetitions left it 5e-4
+    off, and positions 18 and 19 were reported self-locking where the closed form moves them (found by a
+    user's own solver); Newton's method carries the repetitions on, in the linear system and the polygons."""
+    f = 3.76
+    analysis, piston, denominator, expected = _guide_friction(f)
+    exact, ahead = analysis.with_friction, piston > 0
+    gain = f * np.abs(np.tan(rod_angle(analysis.motion.driver)))
+    assert gain[ahead].max() > 0.96 and (denominator[ahead] > 0).all()
+    np.testing.assert_allclose(exact.balancing[ahead], expected[ahead], rtol=1e-10)
+    assert not exact.locked.any()
+    for position in analysis.plans:
+        assert piston[position.index] > 0 and not position.with_friction.locked
+        assert position.with_friction.balancing == pytest.approx(expected[position.index], rel=1e-9)
+
+
+def test_results_of_the_positions_that_move_stand_beside_those_that_lock():
+    """One locked position's reactions, grown without bound, made every other position's rounding noise in
+    results.json: their balancing moments and reactions were written 0."""
+    from graphplan.report.results import results
+
+    analysis, piston, _, expected = _guide_friction(5.0)
+    exact = analysis.with_friction
+    assert exact.locked.any() and not exact.locked.all()
+    written = [position["equilibrium"]["friction"] for position in results(analysis)["positions"]]
+    for i, entry in enumerate(written):
+        assert entry["self_locking"] == bool(exact.locked[i])
+        if not exact.locked[i]:
+            assert entry["balancing_moment"] == pytest.approx(exact.balancing[i], rel=1e-9, abs=1e-9)
+    moving = ~exact.locked & (piston > 0)
+    assert moving.any()
+    np.testing.assert_allclose([written[i]["balancing_moment"] for i in np.flatnonzero(moving)], expected[moving],
+                               rtol=1e-9)
+
+
+def test_a_friction_past_any_number_locks_the_positions_it_jams_without_calling_them_singular():
+    """At f = 10⁶ the repetitions blow up to inf and NaN: the polygons' lines pointed nowhere and the position
+    was said to have no force plan at all ("lines of action parallel"), and the linear system's NaN
+    reactions passed for settled (self_locking false, every value null)."""
+    analysis, _, denominator, _ = _guide_friction(1e6, "[6, 18]")
+    exact = analysis.with_friction
+    jammed = denominator <= 0
+    assert jammed.any() and exact.locked[jammed].all()
+    assert not exact.locked[~jammed].any() and np.isfinite(exact.balancing[~jammed]).all()
+    assert not [w for w in analysis.warnings if w.code == "singular"]
+    for position in analysis.plans:
+        assert position.forces is not None and position.with_friction.locked == bool(jammed[position.index])
+
+
 def test_journal_friction_adds_the_friction_circle_moment():
     f, journal = 0.15, 0.02
     analysis = analyse(slider_crank(f'[[friction]]\njoint = "O"\nf = {f}\nradius = {journal}'))
