@@ -98,9 +98,8 @@ def results(analysis: Analysis) -> dict[str, Any]:
                                    "omega": number(link.omega[i], omega_floor) if known(n) else None,
                                    "epsilon": number(link.epsilon[i], epsilon_floor) if known(n) else None}
                           for n, link in links.items()}
-        slides = [_slide(slide, i, slide_floors) for slide in motion.slides] if i not in motion.singular else []
-        if slides:
-            entry["slides"] = slides
+        if motion.slides:
+            entry["slides"] = [_slide(slide, i, slide_floors, i not in motion.singular) for slide in motion.slides]
         if i in velocity_planned:
             entry["velocity_plan"] = _plans(velocity_planned[i])["velocity"]
         if i in planned:
@@ -259,10 +258,12 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
 
 def _cycle_noise(balance) -> dict[str, Any]:
     """The noise floors of the whole-mechanism system over the cycle: of its balancing load, of its
-    reactions, and of each sliding pair's offset."""
-    reactions = noise_floor([r.force for r in balance.reactions])
-    return {"balancing": noise_floor(balance.balancing), "reactions": reactions,
-            "offsets": {r.name: noise_floor(np.where(np.abs(r.force) < reactions, np.nan, r.offset))
+    reactions, and of each sliding pair's offset; judged by the positions that do not lock, whose
+    reactions, grown without bound, would make every other one noise."""
+    moving = ~np.asarray(balance.locked, dtype=bool)
+    reactions = noise_floor([r.force[moving] for r in balance.reactions])
+    return {"balancing": noise_floor(balance.balancing[moving]), "reactions": reactions,
+            "offsets": {r.name: noise_floor(np.where(np.abs(r.force) < reactions, np.nan, r.offset)[moving])
                         for r in balance.reactions if r.sliding}}
 
 
@@ -291,11 +292,11 @@ def _offset(force: complex, offset: float, force_floor: float, noise: float = 0.
     return None if abs(force) < force_floor else number(offset, noise)
 
 
-def _slide(slide, i: int, floors: tuple[float, float]) -> dict[str, Any]:
+def _slide(slide, i: int, floors: tuple[float, float], known: bool) -> dict[str, Any]:
     velocity_floor, acceleration_floor = floors
     return {"slider": slide.slider, "guide": slide.guide, "joint": slide.joint,
-            "velocity": number(at(slide.velocity, i), velocity_floor),
-            "acceleration": number(at(slide.acceleration, i), acceleration_floor)}
+            "velocity": number(at(slide.velocity, i), velocity_floor) if known else None,
+            "acceleration": number(at(slide.acceleration, i), acceleration_floor) if known else None}
 
 
 def dumps(document: dict[str, Any]) -> str:
