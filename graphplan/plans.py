@@ -325,14 +325,18 @@ class Builder:
     def step(self, step: Step) -> None:
         self.steps.append(step)
 
-    def similarity_step(self, letter: str, link: int, point: str, pair) -> None:
-        """Record that ``letter`` was placed by similarity from the images ``pair`` of ``link`` (``widest``)."""
+    def similarity_step(self, letter: str, link: int, point: str, pair, from_pole: bool = False) -> None:
+        """Record that ``letter`` was placed by similarity from the images ``pair`` of ``link`` (``widest``);
+        ``from_pole`` lays its absolute vector off too, for a point that is no image of the mechanism's own
+        (a guide's point under a slider), whose vector the plan would otherwise leave out."""
         if pair is not None:
             (pa, la), (pb, lb) = pair
             similarity = Similarity(letter, point, link, (la, lb), (self.name_at(la, pa), self.name_at(lb, pb)))
         else:
             similarity = Similarity(letter, point, link, turns_with=self.turns_with.get(link))
-        self.step(Step(equation=similarity.text, vectors=(), fixes=(letter,), similarity=similarity))
+        symbol = "v" if self.kind == "velocity" else "a"
+        vectors = (LaidVector("p", letter, f"{symbol}{point}"),) if from_pole else ()
+        self.step(Step(equation=similarity.text, vectors=vectors, fixes=(letter,), similarity=similarity))
 
     def name_at(self, letter: str, position: complex) -> str:
         """The mechanism's name of the point at ``position`` whose image is ``letter`` (``A4`` for ``a4``)."""

@@ -550,6 +550,23 @@ def test_a_levers_point_under_the_block_gets_no_arrow_of_its_own():
     assert "mechanism-v-A" in drawn and "mechanism-v-A4" not in drawn
 
 
+@pytest.mark.parametrize("variant", ["ratchet+RRP-on-rocker", "ratchet+triad-slider-on-rocker"])
+def test_a_moving_guide_s_point_under_the_slider_has_its_vector_from_the_pole(variant):
+    """The guide link's point under the slider (k4), put on the plan by similarity, stood with no vector from
+    the pole while the lever's point under a block (a4) had one: a student draws pk4 as vK4 and aK4 too."""
+    from test_motion_against_finite_differences import VARIANTS
+
+    analysis = analyse(VARIANTS[variant]())
+    position = analysis.plans[0]
+    layers = layers_of(plan_sheet(analysis, position.index))
+    for plan in (position.velocity, position.acceleration):
+        on_guides = [step.similarity.letter for step in plan.steps if step.similarity is not None
+                     and step.similarity.letter not in plan.images.values()]
+        assert on_guides, variant
+        for letter in on_guides:
+            assert f"{plan.kind}-p-{letter}" in arrows(layers, plan.kind), (plan.kind, letter)
+
+
 def test_the_scotch_yoke_is_drawn_with_its_slot_across_and_its_rod():
     items, at = _linkage("scotch_yoke", 9)
     links = [item for item in items if isinstance(item, Polyline) and not item.fill]

@@ -1,6 +1,7 @@
 """A position where a group's lines of action are parallel is reported, not guessed, and the rest is drawn."""
 
 import json
+import math
 
 import pytest
 
@@ -77,3 +78,63 @@ def test_the_python_interface_still_refuses_to_guess():
     scene = graphplan.scene.loads(TOGGLE)
     with pytest.raises(SingularPositionError, match="position 7"):
         graphplan.solve(scene)
+
+
+# A slotted lever whose crank's circle runs through the lever's pivot C (OA = OC): at φ = 90° the block A lies
+# on C and the group leaves the lever's direction free. Elsewhere CA is a chord of the crank's circle, so by
+# the inscribed angle the lever turns at half the crank's speed, and the block slides at
+# ṡ = d|CA|/dt = d(2·r·sin(θ/2))/dt with θ = φ − 90° measured from C: ṡ = r·ω·cos(θ/2)·sign(θ).
+THROUGH_PIVOT = """
+[scene]
+title = "Slotted lever whose block passes over the lever's pivot"
+[frame]
+points = { O = [0.0, 0.0], C = [0.0, 0.1] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+[positions]
+count = 12
+start = 0.0
+plans = [2]
+"""
+
+
+def test_a_block_over_the_lever_s_pivot_is_singular_not_a_lever_spinning_at_1e17(tmp_path):
+    """Found by a user's own solver: A a rounding (6e-18 m) off C made the lever's direction noise, and results.json
+    said ω4 = 10 and ε4 = 9e17 at position 4 with no warning."""
+    scene = tmp_path / "lever.toml"
+    scene.write_text(THROUGH_PIVOT, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "velocity"]) == 0
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert [(w["position"], w["code"]) for w in document["warnings"]] == [(4, "singular")]
+    assert "A passes over C" in document["warnings"][0]["detail"]
+    for position in document["positions"]:
+        lever, slide = position["links"]["4"], position["slides"][0]
+        if position["index"] == 4:
+            assert lever["omega"] is None and lever["epsilon"] is None and slide["velocity"] is None
+            continue
+        theta = math.radians(position["driver"]["angle_deg"] - 90.0)
+        theta = (theta + math.pi) % (2 * math.pi) - math.pi
+        assert lever["omega"] == pytest.approx(5.0, rel=1e-12) and lever["epsilon"] == pytest.approx(0.0, abs=1e-9)
+        expected = 0.1 * 10.0 * math.cos(theta / 2) * (1 if theta > 0 else -1)
+        assert abs(slide["velocity"]) == pytest.approx(abs(expected), rel=1e-12)
+
+
+def test_a_block_on_the_lever_s_pivot_at_the_first_position_is_refused_in_one_line(tmp_path, capsys):
+    """At φ = 0 the block lay exactly on C; asking where the crank can reach then bisected an interval whose
+    ends both assemble, and the run ended in scipy's traceback."""
+    scene = tmp_path / "lever.toml"
+    scene.write_text(THROUGH_PIVOT.replace("C = [0.0, 0.1]", "C = [0.1, 0.0]"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    error = capsys.readouterr().err.strip().splitlines()
+    assert error == [("graphplan: error: singular position at φ = 0° in group II(3,4): A passes over C, so nothing "
+                      "fixes the direction of link 4")]
+    assert not (tmp_path / "out").exists()

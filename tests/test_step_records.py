@@ -138,7 +138,10 @@ def test_a_similarity_step_names_plan_points_whose_figure_is_similar_to_the_link
             continue
         seen += 1
         assert step.equation == similar.text and step.fixes == (similar.letter,)
-        assert not step.vectors and not step.lines
+        # It lays nothing but, for a point that is no image of the mechanism's own (a guide's point under a
+        # slider), that point's vector from the pole, which the plan would otherwise leave out.
+        assert not step.lines and all((vector.start, vector.end) == ("p", similar.letter) for vector in step.vectors)
+        assert not step.vectors or similar.letter not in plan.images.values()
         assert similar.link in analysis.mechanism.moving_links
         assert {similar.letter, *similar.basis} <= set(plan.points)
         assert similar.basis, "every fixture's link has two images on the plan"

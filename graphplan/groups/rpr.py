@@ -23,13 +23,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import AssemblyError
+from ..errors import AssemblyError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
-from .base import Context, Group, GroupMotion, check_lines_cross
+from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross
 from .sliding import coriolis, coriolis_letter
 
 
@@ -80,13 +80,23 @@ class RPR(Group):
 
         def reason(i: int, at: str) -> AssemblyError:
             gap = float(np.sqrt(np.atleast_1d(ca2)[i]))
-            if gap == 0:
-                why = f"{a_name} lies on {c_name}, so nothing fixes the direction of link {self.links[1]}"
-            else:
-                why = f"{a_name}–{c_name} = {gap:.6g} m is not more than the slide's offset {abs(e):.6g} m"
+            why = f"{a_name}–{c_name} = {gap:.6g} m is not more than the slide's offset {abs(e):.6g} m"
             return AssemblyError(a_name, at, self.label, why)
 
-        if not np.min(s2) > 0:
+        if e == 0.0:
+            # A block on the lever's own pivot assembles at every direction of the lever: the group leaves ω
+            # to 0/0. Within rounding of the coordinates (A a hair off C) the direction is noise as well.
+            size = max(float(np.max(np.abs(a.r))), float(np.max(np.abs(c.r))), float(np.max(np.sqrt(ca2))))
+            over = np.atleast_1d(ca2 <= (SINGULAR_SINE * size) ** 2)
+            if over.any():
+                def over_pivot(i: int, at: str) -> SingularPositionError:
+                    return SingularPositionError(at, self.label, f"{a_name} passes over {c_name}, so nothing "
+                                                                 f"fixes the direction of link {self.links[1]}")
+
+                # Exactly on it the lever has no direction even to draw; a hair off it, one of rounding noise.
+                context.fail_where(np.atleast_1d(ca2 == 0), over_pivot)
+                context.singular_where(over, over_pivot)
+        elif not np.min(s2) > 0:
             context.fail_where(np.atleast_1d(~(s2 > 0)), reason)
         s = np.sqrt(s2)
         u = ca * (s - 1j * e) / ca2

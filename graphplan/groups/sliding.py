@@ -76,7 +76,7 @@ def guide_point(board: Builder, link: int, point: str) -> str:
         return "p"
     letter = free_letter(board, f"{image_name(point)}{link}")
     board.mark(letter, board.image_on(link, board.positions[point]))
-    board.similarity_step(letter, link, f"{point}{link}", board.widest(link))
+    board.similarity_step(letter, link, f"{point}{link}", board.widest(link), from_pole=True)
     return letter
 
 
