@@ -94,12 +94,14 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _check(path: Path) -> int:
     from .analysis import analyse
+    from .deliverables import chosen, refuse_as_run_would
     from .scene import load
 
     scene = load(path)
     if not scene.has_linkage:
         tables = [name for name in ("dynamics", "balancing", "vibration") if getattr(scene, name) is not None]
         pieces = _pieces(scene, None)
+        refuse_as_run_would(scene, None, chosen(scene, None))
         print(f"{path}: ok")
         print(f"no mechanism; {', '.join(tables)}")
         print(pieces)
@@ -110,6 +112,7 @@ def _check(path: Path) -> int:
     mechanism = analysis.mechanism
     n, p5, w = mechanism.degrees_of_freedom
     pieces = _pieces(scene, analysis)  # an [output] include the scene cannot give is refused before "ok"
+    refuse_as_run_would(scene, analysis, chosen(scene, analysis))
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")

@@ -111,6 +111,22 @@ def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None =
     return tuple(piece for piece in PIECES if piece in asked)
 
 
+def refuse_as_run_would(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...]) -> None:
+    """Raise the :class:`SceneError` a run of ``pieces`` would meet only once it draws or integrates: a plan or
+    polygon larger than any paper, a drawing no sheet holds at the scale the scene gives, a motor that outpulls
+    the resistance at every speed.  For ``check``, so that its "ok" means the run goes through."""
+    if analysis is not None and {"velocity", "acceleration", "forces", "lever", "sheets"} & set(pieces):
+        from .render import drawings as draw
+
+        draw.refuse_beyond_paper(analysis)
+    if analysis is not None and "sheets" in pieces:
+        from .render.sheet import refuse_overflows
+
+        refuse_overflows(analysis)
+    if "dynamics" in pieces and scene.dynamics is not None:
+        _dynamics_of(scene, analysis, None).refuse()
+
+
 def _by_default(scene: Scene, piece: str) -> bool:
     if piece == "sheets":
         return scene.drawing.sheet_given
@@ -272,6 +288,19 @@ class MachineDynamics:
         """
         if self.spec.motion is None:
             return None
+        with _scene_values("dynamics"):
+            return self.spec.motion.run(self.machine)
+
+    def refuse(self) -> None:
+        """Raise :class:`SceneError` for a motion the run could not integrate to its end (a motor that outpulls
+        the resistance at every speed): found before anything is integrated, as ``check`` does."""
+        if self.spec.motion is not None:
+            with _scene_values("dynamics"):
+                self.spec.motion.refuse(self.machine)
+
+    @functools.cached_property
+    def machine(self):
+        """The machine the motor drives: Je(φ) with the flywheel sized for δ, and Mr(φ) of the scene's loads."""
         import numpy as np
 
         from .machine_motion import Machine, PiecewiseMoment
@@ -283,9 +312,8 @@ class MachineDynamics:
         # piece by piece, where a spline through samples would ring round the jump.
         resisting = PiecewiseMoment(angles, moments) if np.any(np.diff(angles) == 0) else moments
         with _scene_values("dynamics"):
-            machine = Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
-                              inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
-            return self.spec.motion.run(machine)
+            return Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
+                           inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
 
     @property
     def resisting(self):

@@ -9,6 +9,9 @@ from pathlib import Path
 
 from .errors import OutputError
 
+# The names a run wrote in its folder, kept there (hidden) so that the next run replaces those alone.
+WRITTEN = ".graphplan-written"
+
 
 def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     """Write ``files`` (relative name → content) as the folder ``target``.
@@ -16,10 +19,19 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     Everything is written into a temporary sibling first, which then takes
     ``target``'s place; an existing ``target`` is replaced only once the new
     folder is complete, and a failure leaves no half-written folder behind.
+    What the folder holds that no run wrote there (the scene itself, a draft,
+    LaTeX's own output) is carried into the new folder: a run replaces its
+    own files alone, as listed in :data:`WRITTEN`.
     """
     target = Path(target)
+    here = Path.cwd().resolve()
+    if target.resolve() == here or target.resolve() in here.parents:
+        raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
+                          "give --out a folder of its own")
     staging = target.parent / f".{target.name}.partial-{os.getpid()}"
     retired = target.parent / f".{target.name}.old-{os.getpid()}"
+    written = sorted({name.split("/")[0] for name in files})
+    carried: list[str] = []
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.rmtree(staging, ignore_errors=True)
@@ -31,20 +43,34 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
                 path.write_text(content, encoding="utf-8", newline="\n")
             else:
                 path.write_bytes(content)
+        (staging / WRITTEN).write_text("".join(f"{name}\n" for name in written), encoding="utf-8")
         if target.exists():
             if not target.is_dir():
                 raise OutputError(f"{target}: exists and is not a folder")
+            for name in _not_written_by_a_run(target, written):
+                (target / name).rename(staging / name)
+                carried.append(name)
             target.rename(retired)
         staging.rename(target)
     except OSError as error:
-        shutil.rmtree(staging, ignore_errors=True)
         if retired.exists() and not target.exists():
             retired.rename(target)
+        for name in carried:
+            (staging / name).rename(target / name)
+        shutil.rmtree(staging, ignore_errors=True)
         if isinstance(error, OutputError):
             raise
         raise OutputError(f"{target}: cannot write the output ({error.strerror or error})") from None
     shutil.rmtree(retired, ignore_errors=True)
     return [target / name for name in sorted(files)]
+
+
+def _not_written_by_a_run(folder: Path, replacing: list[str]) -> list[str]:
+    """The entries of ``folder`` no run wrote (by its :data:`WRITTEN` list) and this one does not replace."""
+    record = folder / WRITTEN
+    ours = set(record.read_text(encoding="utf-8").splitlines()) if record.is_file() else set()
+    return sorted(entry.name for entry in folder.iterdir()
+                  if entry.name != WRITTEN and entry.name not in ours and entry.name not in replacing)
 
 
 def write_file(target: Path, content: str, replace: bool = True) -> Path:

@@ -202,3 +202,66 @@ def test_check_refuses_an_include_the_scene_cannot_give_before_it_says_ok(tmp_pa
     printed = capsys.readouterr()
     assert printed.out == ""
     assert "output.include[0]: 'balancing' needs a [balancing] table" in printed.err
+
+
+@pytest.mark.parametrize("pole, key", [
+    (1000.0, "drawing.sheet"),                # the acceleration plans bigger than an A1 sheet: the sheets refuse them
+    (100000.0, "drawing.acceleration_pole"),  # 150 m across: every run refuses them, sheets or none
+])
+def test_check_refuses_what_the_run_s_drawings_would_refuse_before_it_says_ok(tmp_path, capsys, pole, key):
+    """check said "ok … run writes: …, sheets" for scenes whose run then refused the sheets (a teacher's
+    variants, found generating 25 of them): now check refuses each as the run does, in the run's words."""
+    text = Path(FIXTURE).read_text(encoding="utf-8")
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text.replace("acceleration_pole = 100.0", f"acceleration_pole = {pole}"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    checked = capsys.readouterr()
+    assert checked.out == "" and checked.err.startswith(f"graphplan: error: {key}: ")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    assert capsys.readouterr().err == checked.err
+
+
+def test_check_refuses_a_motor_that_would_speed_the_machine_up_without_end(tmp_path, capsys):
+    from graphplan.starters import starter
+
+    scene = tmp_path / "flywheel.toml"
+    text = starter("flywheel")
+    motor = next(line for line in text.splitlines() if line.startswith("motor = "))
+    scene.write_text(text.replace(motor, 'motor = { kind = "constant", torque = 1.0e6 }'), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    checked = capsys.readouterr()
+    assert checked.out == "" and "exceeds the mean resistance" in checked.err
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    assert capsys.readouterr().err == checked.err
+
+
+def test_a_run_into_a_folder_keeps_what_no_run_wrote_there_and_replaces_its_own(tmp_path):
+    """--out pointed at the scene's own folder deleted the scene and a draft beside it: a run replaces the
+    files runs wrote there (listed in the folder) and carries everything else over."""
+    from graphplan.output import WRITTEN
+
+    folder = tmp_path / "project"
+    folder.mkdir()
+    scene = folder / "ratchet.toml"
+    scene.write_text(Path(FIXTURE).read_text(encoding="utf-8"), encoding="utf-8")
+    (folder / "draft.txt").write_text("my notes", encoding="utf-8")
+    (folder / "figures").mkdir()
+    assert main(["run", str(scene), "--out", str(folder), "--only", "errors"]) == 0
+    assert {"ratchet.toml", "draft.txt", "figures", "errors.md", "results.json"} <= {p.name for p in folder.iterdir()}
+    assert (folder / "draft.txt").read_text(encoding="utf-8") == "my notes"
+    (folder / "note-latex.pdf").write_bytes(b"%PDF")  # xelatex run in the folder, as the guide says
+    assert main(["run", str(scene), "--out", str(folder), "--only", "positions"]) == 0
+    left = {p.name for p in folder.iterdir()}
+    assert {"ratchet.toml", "draft.txt", "figures", "note-latex.pdf", "positions.svg", "results.json"} <= left
+    assert not {"errors.md", "errors.csv"} & left  # the earlier run's, replaced
+    assert set((folder / WRITTEN).read_text(encoding="utf-8").split()) == {"positions.svg", "results.json"}
+
+
+def test_a_run_will_not_replace_the_folder_it_runs_in(tmp_path, capsys, monkeypatch):
+    scene = tmp_path / "ratchet.toml"
+    scene.write_text(Path(FIXTURE).read_text(encoding="utf-8"), encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    for out in (".", str(tmp_path.parent)):
+        assert main(["run", "ratchet.toml", "--out", out, "--only", "errors"]) == 2
+        assert "is the folder the command runs in (or holds it)" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["ratchet.toml"]

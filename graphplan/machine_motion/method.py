@@ -56,6 +56,17 @@ def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float]
     return motor.shaft_torque(fastest), motor.shaft_torque(fastest) - surplus(fastest)
 
 
+def refuse_runaway(machine: Machine, motor: Motor) -> None:
+    """Raise :class:`ValueError` where the motor outpulls the resistance at every speed
+    (:func:`speeds_up_without_end`): a run to the steady state would never end."""
+    outpulled = speeds_up_without_end(machine, motor)
+    if outpulled is not None:
+        raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "
+                         f"{outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and has no "
+                         "steady state; give a duration, more resistance, or a motor whose torque falls with speed "
+                         "(linear, kloss)")
+
+
 def _mean_surplus(machine: Machine, motor: Motor):
     """The motor's torque less the resistance's mean over a turn, as a function of the speed (N·m)."""
     def surplus(omega: float) -> float:

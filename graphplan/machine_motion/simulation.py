@@ -15,7 +15,7 @@ from scipy.optimize import brentq
 from .cycles import Cycle, SteadyState, find_cycles, find_steady_state, refined
 from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
 from .integrator import MOST_EVALUATIONS, Equations, Integrator
-from .method import choose_method, is_stiff, running_speed, speeds_up_without_end
+from .method import choose_method, is_stiff, refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
 
 METHODS = ("auto", "RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -150,12 +150,8 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         raise ValueError("start.driving_omega: only with a clutch")
     if isinstance(max_cycles, bool) or not isinstance(max_cycles, int) or max_cycles < 3:
         raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
-    if duration is None and brake is None and motor_off_at is None and (
-            outpulled := speeds_up_without_end(machine, motor)) is not None:
-        raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "
-                         f"{outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and has no "
-                         "steady state; give a duration, more resistance, or a motor whose torque falls with speed "
-                         "(linear, kloss)")
+    if duration is None and brake is None and motor_off_at is None:
+        refuse_runaway(machine, motor)
     equations = Equations(machine, motor, brake, clutch, motor_off_at)
     omega_run = running_speed(machine, motor, start, duration)
     atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)

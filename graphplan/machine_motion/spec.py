@@ -11,7 +11,7 @@ from ..errors import SceneError
 from ..reader import Table, check_number
 from ..units import RPM
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
-from .method import running_speed
+from .method import refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
 from .simulation import DEFAULT_RTOL, METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
 
@@ -35,6 +35,16 @@ class MotionSpec:
     steady_tolerance: float = 1e-4
 
     def run(self, machine: Machine) -> MachineMotion:
+        self.refuse(machine)
+        return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
+                        clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
+                        steady_tolerance=self.steady_tolerance)
+
+    def refuse(self, machine: Machine) -> None:
+        """Raise :class:`ValueError` for a run of ``machine`` that could not end: a motor that outpulls the
+        resistance at every speed, or more turns than a run integrates; found before integrating anything."""
+        if self.duration is None and self.brake is None and self.motor_off_at is None:
+            refuse_runaway(machine, self.motor)
         omega_run = running_speed(machine, self.motor, self.start, self.duration)
         if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
             raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
@@ -48,9 +58,6 @@ class MotionSpec:
             raise ValueError(f"start: {fastest:.4g} rad/s is {fastest / omega_run:.3g} times the running speed, "
                              f"{omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} turns, "
                              f"and it integrates at most {MOST_TURNS}")
-        return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
-                        clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
-                        steady_tolerance=self.steady_tolerance)
 
 
 def _read_motor(table: Table) -> tuple[Motor, float | None]:

@@ -169,7 +169,9 @@ def _captioned(layers: Sequence[Layer], field_name: str) -> list[Layer]:
     """
     caption_name = f"{field_name}-caption"
     captions = [layer for layer in layers if layer.name == caption_name and layer.items]
-    drawing = [layer for layer in layers if layer.name != caption_name]
+    # A title over the field (the velocity plans', over the first of them) is wider than its drawing: the
+    # caption goes under the drawing alone.
+    drawing = [layer for layer in layers if layer.name not in (caption_name, f"{field_name}-title")]
     if not captions or not any(layer.items for layer in drawing):
         return list(layers)
     x0, y0, x1, _ = bounds(drawing)
@@ -581,6 +583,15 @@ class _Overflow:
     what: str
     fixes: tuple[str, ...]
     panels: tuple[Panel, ...]
+
+
+def refuse_overflows(analysis: Analysis) -> None:
+    """What the scene's sheets would refuse (:func:`_refuse_overflows`), found by laying out the drawings at a
+    scale the scene sets alone, not the sheets: ``check``'s word before a run."""
+    sheet = analysis.scene.drawing.sheet
+    if sheet != "none":
+        analysis = with_length_scale(analysis)
+        _refuse_overflows(analysis, sheet, kinematics_panels(analysis))
 
 
 def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
