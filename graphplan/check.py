@@ -381,7 +381,9 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
             read[frozenset(segment)] = segment_name
             matches = [r for r in table if r.plan == kind and set(r.segment) == set(segment)]
             if not matches:
-                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}")
+                readable = dict.fromkeys("".join(r.segment) for r in table if r.plan == kind)
+                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}; its "
+                                 f"quantities are read from {', '.join(readable)}")
             for reading in matches:
                 rows.append(ErrorRow(position, reading.quantity, analytic[reading.quantity],
                                      reading.value(plans, millimetres), "measured"))

@@ -2,6 +2,7 @@
 
 import dataclasses
 import json
+import re
 
 import numpy as np
 import pytest
@@ -103,6 +104,20 @@ def test_a_segment_measured_twice_under_its_two_names_is_refused():
                                  ("acceleration", {"n3b": 22.27, "bn3": 20.0}, "bn3")):
         with pytest.raises(SceneError, match=rf"^measured\.5\.{kind}\.{again}: is the segment .* again"):
             analyse(with_measured({5: {kind: lengths}}))
+
+
+def test_a_segment_of_plan_letters_no_quantity_is_read_from_names_the_segments_that_are(analysis):
+    """pn3 joins two letters of the acceleration plan but gives no quantity: the error said so and no more,
+    where a misspelt letter gets the plan's letters; now it names the segments there are."""
+    with pytest.raises(SceneError, match=r"^measured\.5\.acceleration\.pn3: the plan has no quantity read from "
+                                         r"pn3; its quantities are read from (.+)$") as refused:
+        analyse(with_measured({5: {"acceleration": {"pb": 64.99, "pn3": 95.0}}}))
+    offered = re.search(r"read from ([^;]+)$", str(refused.value))[1].split(", ")
+    assert "pb" in offered and "pn3" not in offered
+    every = analyse(with_measured({5: {"acceleration": dict.fromkeys(offered, 50.0)}}))
+    measured = {row.quantity for row in every.errors if row.position == 5 and row.source == "measured"}
+    assert measured == {row.quantity for row in analysis.errors if row.position == 5 and row.source == "construction"
+                        and row.quantity[0] in "ae"}
 
 
 def test_the_acceleration_plans_pole_may_be_written_as_it_is_drawn(analysis):

@@ -356,7 +356,7 @@ def test_the_html_note_is_well_formed_and_carries_every_table(locale):
 
 def test_markdown_becomes_a_page_without_passing_raw_html_through():
     page = to_html("# Title\n\n| a | b |\n|---|---|\n| 1 | <script>x</script> |\n", "T & <t>", "en")
-    assert "<table>" in page and "<script>" not in page and "&lt;script&gt;" in page
+    assert "<table" in page and "<script>" not in page and "&lt;script&gt;" in page
     assert "<title>T &amp; &lt;t&gt;</title>" in page
     assert symbols_html("VBA = VB − VA; Group RRR; ω3, μV, R23τ, 2p5") == (
         "V<sub>BA</sub> = V<sub>B</sub> − V<sub>A</sub>; Group RRR; ω<sub>3</sub>, μ<sub>V</sub>, "

@@ -167,3 +167,19 @@ def test_no_page_ends_with_a_table_caption_parted_from_its_table(notes, locale):
         lines = [line.strip() for line in page.get_textpage().get_text_range().splitlines() if line.strip()]
         body = lines[:-1] if lines and lines[-1] == str(number) else lines  # the page number at the foot
         assert body and not CAPTION.match(body[-1]), (number, body[-1])
+
+
+def test_a_table_longer_than_a_page_starts_under_its_caption_and_goes_on_over_the_page():
+    """The shaper's error tables (36 rows) were kept whole and pushed to the next page, each leaving a page
+    that held its caption alone (a user's report); a long table now starts where its caption is and its
+    rows run over the page, the header repeated."""
+    html = note_html(analyse(graphplan.load("fixtures/shaper_six_bar.toml")))
+    long_tables = [table for table in re.findall(r"<table[^>]*>(.*?)</table>", html, re.DOTALL)
+                   if table.count("<tr>") > 30]
+    assert long_tables
+    pages = [[line.strip() for line in page.get_textpage().get_text_range().splitlines() if line.strip()]
+             for page in pdfium.PdfDocument(note_pdf(html))]
+    for number, lines in enumerate(pages, 1):
+        body = lines[:-1] if lines and lines[-1] == str(number) else lines
+        assert body and not CAPTION.match(body[-1]), (number, body[-1])
+        assert len(body) > 3, (number, body)  # no page of a caption or a heading alone

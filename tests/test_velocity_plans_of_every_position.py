@@ -178,6 +178,22 @@ def test_on_a_small_sheet_the_plans_stand_apart_each_once_in_the_order_of_the_po
         assert firsts == sorted(firsts)
 
 
+def test_a_plan_set_apart_has_its_caption_under_its_middle_and_the_first_not_under_the_title():
+    """Set apart on a small sheet, the first plan's caption was centred under the title it carries, 90 mm off
+    its plan (a user's A4 sheet of a shaper)."""
+    from graphplan.render.primitives import bounds
+    from graphplan.render.sheet import split
+
+    analysis = drawings.with_length_scale(analysed("ratchet_crank_rocker"))
+    panel = split(velocity_plans_layout.arrange(drawings.velocity_plans_drawing(analysis)), "velocity-plans", "")
+    first = {layer.name for layer in panel.parts[0].layers}
+    assert "title" in first
+    for part in panel.parts:
+        caption = next(layer for layer in part.layers if layer.name == "caption").items[0]
+        x0, _, x1, _ = bounds([layer for layer in part.layers if layer.name not in ("caption", "title")])
+        assert caption.at[0] == pytest.approx((x0 + x1) / 2, abs=1e-9), part.name
+
+
 def test_velocity_plans_alone_give_the_velocity_drawings_and_errors_but_no_accelerations():
     def without_plan_sheets(setting):
         scene = loads(scene_text("stephenson_six_bar", setting).replace("plans       = [3, 9]", "plans = []"))

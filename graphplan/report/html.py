@@ -36,9 +36,15 @@ figure { margin: 1em 0 1.2em; text-align: center; break-inside: avoid; }
 figure img { max-width: 100%; max-height: 230mm; height: auto; }
 figcaption { margin-top: 0.4em; }
 th { hyphens: auto; }
-@media print { body { max-width: none; margin: 0; } h2, h3, p.table-caption { break-after: avoid; }
-               table { break-inside: avoid; font-size: 0.8em; } th, td { padding: 0.2em 0.4em; } }
+@media print { body { max-width: none; margin: 0; } h2, h3, h4, p.table-caption { break-after: avoid; }
+               table { font-size: 0.8em; } table.whole, tr { break-inside: avoid; }
+               th, td { padding: 0.2em 0.4em; } }
 """
+
+# A table of at most this many rows stays on one page; a longer one goes on from where it starts (a page
+# break between its rows, its header repeated), not to the next page whole, which left its caption alone.
+_WHOLE_ROWS = 20
+_TABLE = re.compile(r"<table>(.*?)</table>", re.DOTALL)
 
 # A paragraph right before a table is its caption (the note numbers its tables above them, as GOST 2.105
 # asks): marked so that a page break never parts it from its table.
@@ -78,6 +84,8 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', rendered)
     body = _FIGURE.sub(r'<figure><a href="\2">\1</a><figcaption>\3</figcaption></figure>\n', body)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
+    body = _TABLE.sub(lambda table: table[0].replace("<table>", '<table class="whole">', 1)
+                      if table[1].count("<tr>") <= _WHOLE_ROWS else table[0], body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
             f"<title>{html.escape(title, quote=False)}</title>\n<style>\n{_STYLE}</style>\n</head>\n<body>\n"
