@@ -172,8 +172,8 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += _measured_far_off((*plans, *every))
-    in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions),
-                            key=lambda warning: warning.position))
+    in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions)
+                            + _self_locking(with_friction), key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
                     loads, balance, with_friction, friction, every)
@@ -189,17 +189,29 @@ def _measured_far_off(drawn: tuple[PlanPosition | VelocityPosition, ...]) -> tup
     warnings = []
     for position in drawn:
         constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
-        off = [(row.quantity, row.plan, constructed[row.quantity]) for row in position.errors
-               if row.source == "measured" and row.quantity in constructed
-               and abs(row.plan - constructed[row.quantity]) > FAR_OFF_PERCENT / 100.0 * abs(constructed[row.quantity])]
+        off: dict[str, list[str]] = {}  # by the reading, as the scene writes it, what it gives far off
+        for row in position.errors:
+            plan = constructed.get(row.quantity)
+            if row.source == "measured" and plan is not None and abs(row.plan - plan) > FAR_OFF_PERCENT / 100.0 * abs(plan):
+                off.setdefault(row.reading, []).append(
+                    f"{row.quantity} = {row.plan:.4g} against {plan:.4g}, "
+                    f"{abs(row.plan - plan) / abs(plan) * 100.0 if plan else math.inf:.1f} % off")
         if off:
-            readings = "; ".join(f"{quantity} = {measured:.4g} against {plan:.4g}, "
-                                 f"{abs(measured - plan) / abs(plan) * 100.0 if plan else math.inf:.1f} % off"
-                                 for quantity, measured, plan in off)
+            readings = "; ".join(f"{reading} gives {', '.join(found)}" for reading, found in off.items())
             warnings.append(PositionWarning(position.index, "measured-far-off", (
                 f"measured.{position.number}: readings more than {FAR_OFF_PERCENT:g} % off the plan as constructed "
                 f"({readings}): a length misread, or a segment taken for another?")))
     return tuple(warnings)
+
+
+def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:
+    """A warning at each position where the pairs' friction locks the mechanism: no driving load moves it
+    (its balancing load and reactions are then null, and it has no force sheet with friction)."""
+    if with_friction is None:
+        return ()
+    return tuple(PositionWarning(int(index), "self-locking", "the friction in the pairs locks the mechanism here: "
+                                 "no driving load, however large, moves it")
+                 for index in np.flatnonzero(with_friction.locked))
 
 
 def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:

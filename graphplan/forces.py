@@ -37,6 +37,8 @@ if TYPE_CHECKING:
 
 # The field a force polygon gets on the sheet when μF is chosen, mm.
 POLYGON_FIELD_MM = 150.0
+# A polygon drawn at another analysis's μF (with friction, at the one without) keeps it up to this many fields.
+_KEPT_FIELDS = 2.0
 # A force whose line passes this close to a moment centre (a share of the mechanism's size) passes through it.
 _THROUGH = 1e-12
 
@@ -381,7 +383,8 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
     """The force analysis of the instant: every group from the last to the first, then the driver.
 
     ``scale`` is μF of every polygon (the scene's), or of each group's by
-    its label (another analysis's :attr:`ForcePlan.group_scales`); None
+    its label (another analysis's :attr:`ForcePlan.group_scales`, kept while
+    the polygon spans no more than two fields at it); None
     draws each polygon at the least standard μF at which it spans
     :data:`POLYGON_FIELD_MM`.
     ``friction`` gives the pairs' friction loads for given reactions
@@ -401,7 +404,12 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
         coarsest = max((value for value in fitting.values() if value is not None), default=1.0)
         scales = {label: coarsest if value is None else value for label, value in fitting.items()}
     elif isinstance(scale, Mapping):
-        scales = dict(scale)
+        # Another analysis's μF (the one without friction), kept for the two to be compared while the polygon
+        # stays about its field: near a lock friction grows the reactions tenfold and more, and the polygon
+        # takes a μF of its own rather than metres of paper.
+        scales = {group.label: scale[group.label] if polygon_extent(group.polygon) <= _KEPT_FIELDS *
+                  POLYGON_FIELD_MM * scale[group.label] else (_fitting_scale(group.polygon) or scale[group.label])
+                  for group in plan.groups}
     else:
         scales = dict.fromkeys((group.label for group in plan.groups), scale)
     groups = tuple(replace(group, scale=scales[group.label]) for group in plan.groups)

@@ -28,6 +28,8 @@ NEWTON_STEPS = 40
 _DIFFERENCE = 1e-7
 # Newton's method has settled a share that is not the last when its step is this small.
 _ON_THE_WAY = 1e-10
+# The last share's steps settle within this many machine epsilons times the condition number of I − J.
+_ROUNDING_SLACK = 100.0
 
 
 def settle(repeat: Callable[[np.ndarray], np.ndarray], start: np.ndarray,
@@ -77,7 +79,12 @@ def _by_shares(repeat: Callable[[np.ndarray], np.ndarray], ideal: np.ndarray,
         # Still on the path that starts at I (λ = 0) where det(I − λJ) has not passed 0.
         going &= np.all(np.isfinite(slope), axis=(1, 2))
         going[going] &= np.linalg.det(slope[going]) > 0
+        # Near a lock I − λJ is nearly singular and amplifies the rounding of each solve by its condition
+        # number: the last share's steps settle at that, not below.
+        floor = np.full(len(unknowns), CONVERGED)
+        floor[going] = np.fmax(CONVERGED, _ROUNDING_SLACK * np.finfo(float).eps * np.linalg.cond(slope[going]))
         settled = ~going
+        last_step = np.full(len(unknowns), np.inf)
         for _ in range(NEWTON_STEPS):
             active = going & ~settled
             if not active.any():
@@ -90,9 +97,17 @@ def _by_shares(repeat: Callable[[np.ndarray], np.ndarray], ideal: np.ndarray,
             # Judged against the loads' own size too: friction may take nearly all of a reaction, whose
             # rounding is still the loads'.
             size = np.fmax(_largest(unknowns[active]), _largest(ideal[active]))
-            small = _largest(step) <= (CONVERGED if share == 1.0 else _ON_THE_WAY) * size
+            small = _largest(step) <= (floor[active] if share == 1.0 else _ON_THE_WAY) * size
             settled[active] |= small
             going &= np.all(np.isfinite(unknowns), axis=1)
+            # The Jacobian taken at the share's start serves while each step shrinks tenfold; near a lock the
+            # solution moves far within a share, and the slope is taken again where it has got to.
+            slow = np.zeros(len(unknowns), dtype=bool)
+            slow[active] = _largest(step) > 0.1 * last_step[active]
+            last_step[active] = _largest(step)
+            again = going & ~settled & slow
+            if again.any():
+                slope[again] = identity - share * _jacobian(repeat, unknowns, at)[again]
         going &= settled
     return unknowns, solves, rows & ~going
 
