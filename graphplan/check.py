@@ -82,6 +82,8 @@ class ErrorRow:
     analytic: float
     plan: float
     source: str
+    # The hand reading a measured row comes from, as the scene gives it: "pd = 13.86 mm".
+    reading: str = ""
 
     @property
     def percent(self) -> float:
@@ -335,7 +337,8 @@ def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForceP
             raise SceneError(where, f"measures the reaction {read[reaction]} measures (one is the other reversed): "
                              "give each reaction once")
         read[reaction] = name
-        rows.append(ErrorRow(position, reaction, analytic[reaction], millimetres * scale, "measured"))
+        rows.append(ErrorRow(position, reaction, analytic[reaction], millimetres * scale, "measured",
+                             f"{name} = {millimetres:g} mm at μF = {scale:g} N/mm"))
     return rows
 
 
@@ -386,7 +389,7 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
                                  f"quantities are read from {', '.join(readable)}")
             for reading in matches:
                 rows.append(ErrorRow(position, reading.quantity, analytic[reading.quantity],
-                                     reading.value(plans, millimetres), "measured"))
+                                     reading.value(plans, millimetres), "measured", f"{segment_name} = {millimetres:g} mm"))
     return rows
 
 

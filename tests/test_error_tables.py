@@ -192,3 +192,17 @@ def test_a_reading_far_off_its_constructed_plan_is_warned_of(analysis):
     (warning,) = [w for w in warned.warnings if w.code == "measured-far-off"]
     assert warning.position == 5 and warning.detail.startswith("measured.5: ")
     assert f"VB = {constructed * 1.25:.4g} against {constructed:.4g}, 25.0 % off" in warning.detail
+
+
+def test_a_far_off_reading_is_named_as_the_scene_writes_it_with_the_scale_it_was_read_at(analysis):
+    """The warning named quantities alone (a typo of pd showed as VD and ω4 off), and a reaction read as the
+    polygon draws it (R43) showed under the other name at a μF the student could not see."""
+    drawn = {name: found for name, found in analysis.plans[1].forces.reactions.items()}
+    number = analysis.plans[1].number
+    scale = analysis.plans[1].forces.scale_of("R34")
+    assert "R34" in drawn
+    pb = rows(analysis, number, "construction")["VB"].plan / analysis.plans[1].velocity.scale
+    warned = analyse(with_measured({number: {"velocity": {"pb": pb * 10}, "forces": {"R43": 3.0}}}))
+    (warning,) = [w for w in warned.warnings if w.code == "measured-far-off"]
+    assert f"pb = {pb * 10:g} mm gives VB = " in warning.detail
+    assert f"R43 = 3 mm at μF = {scale:g} N/mm gives R34 = {3.0 * scale:.4g} against " in warning.detail
