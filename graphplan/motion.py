@@ -102,12 +102,16 @@ class Motion:
         return len(self.driver)
 
     def point(self, name: str) -> PointArrays:
+        if not isinstance(name, str):
+            raise TypeError(f"a point is named by its name, a string: point('B'), not point({name!r})")
         if name not in self.points:
             raise KeyError(f"no point {name!r}; points are {', '.join(self.points)}")
         motion = self.points[name]
         return PointArrays(*(as_xy(value, self.count) for value in (motion.r, motion.v, motion.a)))
 
     def link(self, number: int) -> LinkArrays:
+        if isinstance(number, bool) or not isinstance(number, int | np.integer):
+            raise TypeError(f"a link is named by its number, an integer: link(4), not link({number!r})")
         if number not in self.links:
             raise KeyError(f"no link {number}; links are {', '.join(map(str, self.links))}")
         motion = self.links[number]

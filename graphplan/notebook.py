@@ -101,6 +101,8 @@ class PositionPlans:
 def plan(scene: Scene, number: int) -> PositionPlans:
     """The plans of the position numbered ``number`` (as the scene numbers them), drawn whether listed or not."""
     first = scene.positions.number_from
+    if isinstance(number, bool) or not isinstance(number, int):
+        raise TypeError(f"a position is named by its number, an integer: plan(5), not plan({number!r})")
     if not first <= number < first + scene.positions.count:
         raise ValueError(f"no position {number}: the scene numbers its positions {first} to "
                          f"{first + scene.positions.count - 1}")

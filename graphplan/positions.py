@@ -272,14 +272,19 @@ def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
 
     from scipy.optimize import bisect  # imported here: only a crank that cannot turn round needs it
 
-    def end(before: float) -> float:  # the end of a range between two grid angles, one inside and one outside
-        return bisect(lambda angle: 1.0 if assembles(angle) else -1.0, before, before + step, xtol=1e-9)
+    def end(inner: float, outer: float) -> float:
+        """The end of a range between a grid angle inside it and the next one outside it."""
+        if assembles(outer):  # it fails at that one angle alone (its outer joints meet), not a rounding off it
+            return outer
+        return bisect(lambda angle: 1.0 if assembles(angle) else -1.0, min(inner, outer), max(inner, outer),
+                      xtol=1e-9)
 
     ranges = []
     for first in np.flatnonzero(inside & ~np.roll(inside, 1)):  # each range's first angle on the grid
         count = int(np.argmin(np.roll(inside, -first)))  # its angles on the grid, up to the first outside
-        lower = end(float(grid[first] - step))
-        upper = end(float(grid[first] + (count - 1) * step))
+        lower = end(float(grid[first]), float(grid[first] - step))
+        last = float(grid[first] + (count - 1) * step)
+        upper = end(last, last + step)
         if lower >= math.pi and upper > 2.0 * math.pi:  # through 0: from a negative angle
             lower, upper = lower - 2.0 * math.pi, upper - 2.0 * math.pi
         ranges.append((lower, upper))

@@ -26,6 +26,7 @@ import pytest
 import graphplan
 from graphplan import AssemblyError, GraphplanError, SceneError, SingularPositionError
 from graphplan import scene as scene_module
+from graphplan.cli import main
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 
@@ -1089,6 +1090,20 @@ def test_motion_lookups_name_what_exists() -> None:
     assert caught.value.args[0] == "link 3 slides in no pair"
 
 
+def test_motion_lookups_by_the_wrong_kind_of_name_say_what_kind_it_takes() -> None:
+    """motion.link("4") answered "no link 4; links are 1, 2, 3, 4" (the string is no key of the numbers), and
+    scene.plan("5") raised numpy's own comparison error (a teacher's batch script)."""
+    scene = graphplan.load(FIXTURE)
+    motion = graphplan.solve(scene)
+    with pytest.raises(TypeError, match=r"^a link is named by its number, an integer: link\(4\), not link\('4'\)$"):
+        motion.link("4")
+    with pytest.raises(TypeError, match=r"^a point is named by its name, a string"):
+        motion.point(3)
+    with pytest.raises(TypeError, match=r"^a position is named by its number, an integer: plan\(5\), not plan\('5'\)$"):
+        scene.plan("5")
+    assert motion.link(np.int64(4)).omega.shape == (motion.count,)
+
+
 def test_toml_date_where_a_number_belongs() -> None:
     """TOML's own types (dates, times) reach the type check as Python objects."""
     stage, error = first_error('[scene]\ngravity = 2024-01-01\n')
@@ -1179,6 +1194,20 @@ def test_rrr_outer_joints_coincide() -> None:
     stage, error = first_error(text, driver=[0.0])
     assert stage == "solve" and isinstance(error, GraphplanError)
     assert "0 m < |AB − BC| = 0 m" not in str(error)
+
+
+def test_a_crank_stopped_at_one_angle_alone_is_told_its_reach_not_a_traceback(tmp_path, capsys) -> None:
+    """A and C meet at φ = 0 only (the crank's circle through C): seeking the crank's reach bisected between
+    two grid angles that both assemble and ended in scipy's traceback.  With the crank 0.2 m long,
+    |AC| = 0.4·sin(|φ|/2) ≤ AB + BC = 0.2 m while |φ| ≤ 60°."""
+    scene = tmp_path / "meeting.toml"
+    scene.write_text(to_toml(variant(FOUR_BAR, {"frame.points.C": [0.2, 0.0], "groups.0.lengths": [0.1, 0.1]})),
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert line.startswith("graphplan: error: B cannot be assembled at φ = 0° in group II(3,4): A and C coincide")
+    assert "reaches only from -60.0° to 0.0° and from 0.0° to 60.0°" in line
+    assert not (tmp_path / "out").exists()
 
 
 def test_rpr_coincident_point_clash_is_explained() -> None:
