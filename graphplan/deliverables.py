@@ -183,7 +183,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     analysis = draw.with_length_scale(analysis)
     draw.refuse_beyond_paper(analysis)
     machine = None
-    if "dynamics" in pieces:
+    # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
+    if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):
         from .render import dynamics as dynamics_layout
 
         dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
@@ -193,7 +194,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     if "positions" in pieces:
         layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
         found.append(Drawing("positions", layers))
-    if machine is not None:
+    if "dynamics" in pieces:
         found.append(Drawing("dynamics", machine))
     if "diagrams" in pieces:
         from .kinematic_diagrams import of_analysis
@@ -378,6 +379,23 @@ class MachineDynamics:
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
 
+    def off_design_warning(self) -> str | None:
+        """One line for the command line when the motor settles the machine away from the speed its flywheel
+        was sized at (more than :data:`OFF_DESIGN` apart): δ then differs from the one asked for."""
+        motion, flywheel = self.motion, self.flywheel
+        if motion is None or motion.steady is None or flywheel is None or flywheel.inertia <= 0:
+            return None
+        settled, sized = motion.steady.mean_speed, flywheel.omega_mean
+        if abs(settled - sized) <= OFF_DESIGN * sized:
+            return None
+        return (f"dynamics: the motor runs the machine at ωm = {settled:.4g} rad/s, {abs(settled / sized - 1):.0%} "
+                f"off the {sized:.4g} rad/s its flywheel was sized at for δ = {flywheel.delta:g}; steady, δ = "
+                f"{motion.steady.cycle.delta:.4g} (a motor, gear ratio or speed that agree with each other)")
+
+
+# The share by which the steady speed may differ from the one the flywheel was sized at before a run warns.
+OFF_DESIGN = 0.05
+
 
 @contextlib.contextmanager
 def _scene_values(where: str) -> Iterator[None]:
@@ -533,8 +551,10 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # which tells all the scene has whichever drawings are asked for.
     explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
-    if dynamics is not None and warn is not None and (stall := dynamics.stall_warning()) is not None:
-        warn(stall)
+    if dynamics is not None and warn is not None:
+        for told in (dynamics.stall_warning(), dynamics.off_design_warning()):
+            if told is not None:
+                warn(told)
     if "balancing" in pieces and warn is not None and (couple := _static_couple(scene)) is not None:
         warn(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its masses "
              "turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")

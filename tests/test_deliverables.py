@@ -174,6 +174,17 @@ def test_each_machine_starter_runs_without_a_linkage_and_explains_itself(tmp_pat
         assert "Check: with the corrections Σ m·r = 0 kg·m and Σ m·r·z = 0 kg·m²" in note
 
 
+def test_the_sheets_alone_hold_the_dynamics_too(tmp_path):
+    """--only sheets drew the kinematics and force sheets unasked but left the dynamics sheet out: the set of
+    sheets was the whole run's less its last."""
+    scene = tmp_path / "ratchet.toml"
+    scene.write_text(RATCHET.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n", encoding="utf-8")
+    status, out = run(tmp_path, "--only", "sheets", scene=scene)
+    assert status == 0 and "dynamics.svg" not in names(out)
+    sheets = sorted(out.glob("sheet_*.svg"), key=lambda path: int(path.stem.removeprefix("sheet_")))
+    assert "dynamics-energy-mass" in set().union(*(layer_ids(sheet) for sheet in sheets))
+
+
 def test_the_shaper_starter_runs_the_whole_course(tmp_path):
     """Plans, forces with friction, the flywheel and the equation of motion, whose steady turn keeps the 60 rpm the
     scene's crank is given (the gear ratio is chosen for it) and stays within the flywheel's δ."""

@@ -234,3 +234,20 @@ def test_without_a_flywheel_the_machines_own_inertia_carries_the_swing(tmp_path)
     assert motion["flywheel_inertia"] == 0.0
     estimate = found["delta_w_max"] / (200.0 * motion["omega_mean"] ** 2)
     assert 0.9 * estimate < motion["delta"] < estimate
+
+
+@pytest.mark.parametrize("gear_ratio, warned", [(14.4, False), (12.0, True)])
+def test_a_motor_that_settles_away_from_the_flywheel_s_speed_is_warned_of(tmp_path, capsys, gear_ratio, warned):
+    """Geared 1440/12 the motor runs the press near 120 rpm where its flywheel was sized at 100: δ is then not
+    the one asked for, and only a sentence of the note said so (a teacher's variants with a new rpm)."""
+    text = PRESS.replace("inertia = 0.0", "inertia = 0.0\n" + KLOSS.replace("14.4", f"{gear_ratio}"))
+    status, out = run(tmp_path, text)
+    assert status == 0
+    lines = [line for line in capsys.readouterr().out.splitlines() if line.startswith("warning: dynamics: the motor")]
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    sized = 100 * math.pi / 30
+    assert (abs(motion["omega_mean"] / sized - 1) > 0.05) == warned
+    assert len(lines) == warned
+    if warned:
+        assert f"ωm = {motion['omega_mean']:.4g} rad/s" in lines[0] and f"the {sized:.4g} rad/s" in lines[0]
+        assert f"δ = {motion['delta']:.4g}" in lines[0]
