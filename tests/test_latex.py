@@ -146,6 +146,18 @@ def line_used(layout) -> float:
     return sum(layout.widths) * layout.points + 2 * _COLUMN_GAP_PT * len(layout.widths)
 
 
+def test_every_table_keeps_room_for_its_bottom_rule_on_every_page(case):
+    """A table whose last row filled its page left the bottom rule to the next page, under a repeated header
+    and no row (the engine's note in Russian, pages 2 and 3): longtable keeps room on each page for a foot
+    as tall as the last one."""
+    _, _, latex = case
+    tables = re.findall(r"\\begin\{longtable\}.*?\\end\{longtable\}", latex, flags=re.DOTALL)
+    assert tables
+    for table in tables:
+        foot = table.split("\\endhead\n")[1].split("\\endlastfoot")[0]
+        assert foot == "\\bottomrule\n\\endfoot\n\\bottomrule\n", foot
+
+
 def test_a_table_that_fits_keeps_its_columns_and_size():
     layout = _layout(["quantity", "value"], [["lOA", "0.1 m"], ["ω2", "6 rad/s, clockwise"]], ("l", "l"))
     assert layout.specs == ("l", "l") and layout.size == "small"

@@ -295,7 +295,10 @@ class _Writer:
                 stacked = "\\\\".join(_text(line) for line in fitted(text, width, _EM_CAP))
                 cells.append(f"\\begin{{tabular}}[b]{{@{{}}{side}@{{}}}}{stacked}\\end{{tabular}}")
             head = ["\\toprule", " & ".join(cells) + " \\\\", "\\midrule"]
-        lines += [*head, "\\endfirsthead", *head, "\\endhead", "\\bottomrule", "\\endlastfoot"]
+        # A foot on every page as tall as the last one: longtable keeps room for it, so the last rows never
+        # leave the bottom rule to a page of its own under a repeated header.
+        lines += [*head, "\\endfirsthead", *head, "\\endhead", "\\bottomrule", "\\endfoot", "\\bottomrule",
+                  "\\endlastfoot"]
         lines += [" & ".join(self.inline(cell.children) for cell in row) + " \\\\" for row in parts.rows]
         size = f"\\{layout.size}\\setlength{{\\tabcolsep}}{{{_COLUMN_GAP_PT:g}pt}}"
         return f"\n{{{size}\n" + "\n".join(lines) + "\n\\end{longtable}}\n"
