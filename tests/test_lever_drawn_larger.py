@@ -152,7 +152,7 @@ def test_the_note_works_the_lever_on_the_drawing_it_stands_beside(name):
     for position in analysis.plans:
         layers = force_layout.layout(force_sheet(analysis, position))
         drawn.append(drawn_scale(layers, position.velocity)[0])
-    pas = [float(value) for value in re.findall(r"Fy = \|Σ\(F·h\)\|/pa = [^/]+/([\d.]+) = ", note)]
+    pas = [float(value) for value in re.findall(r"Fb = \|Σ\(F·h\)\|/pa = [^/]+/([\d.]+) = ", note)]
     assert len(pas) == len(analysis.plans)
     for pa, scale, position in zip(pas, drawn, analysis.plans, strict=True):
         driver = analysis.mechanism.driver.joint

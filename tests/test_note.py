@@ -249,15 +249,16 @@ def test_the_coriolis_component_is_twice_omega_times_the_sliding_velocity():
 def test_the_balancing_moment_by_the_lever_is_the_linear_systems():
     analysis = analysis_of("ratchet_crank_rocker", "en")
     note = note_of("ratchet_crank_rocker", "en")
-    found = re.findall(r"Fy = \|Σ\(F·h\)\|/pa = ([\d.]+)/([\d.]+) = ([\d.]+) N; Mb = Fy·lOA = ([\d.]+)·([\d.]+) = "
-                       r"(−?[\d.]+) N·m", note)
+    # Fb as the lever drawing names it; the product of the magnitudes is |Mb|, its sense after it.
+    found = re.findall(r"Fb = \|Σ\(F·h\)\|/pa = ([\d.]+)/([\d.]+) = ([\d.]+) N; \|Mb\| = Fb·lOA = ([\d.]+)·([\d.]+) = "
+                       r"([\d.]+) N·m, (counter-clockwise|clockwise)", note)
     assert len(found) == 2
-    for (total, pa, force, force_again, arm, moment), plan in zip(found, analysis.plans):
+    for (total, pa, force, force_again, arm, moment, sense), plan in zip(found, analysis.plans):
         exact = float(analysis.equilibrium.balancing[plan.index])
         assert number(total) / number(pa) == pytest.approx(number(force), rel=1e-4)
         assert force == force_again and number(arm) == 0.175
         assert number(force) * number(arm) == pytest.approx(abs(exact), rel=1e-4)
-        assert agrees(moment, exact, 6)
+        assert agrees(moment, abs(exact), 6) and (sense == "clockwise") == (exact < 0)
     # Each moment equation solves to what it prints.
     for total, arm, value in re.findall(r"⇒ R\d+τ = −?\(?(−?[\d.]+)\)?/([\d.]+) = (−?[\d.]+) N", note):
         assert abs(number(total) / number(arm)) == pytest.approx(abs(number(value)), rel=1e-3)
@@ -484,3 +485,14 @@ def test_a_named_guide_is_given_once_though_its_slider_starts_on_the_pivot():
     assert abs(analysis.motion.points["B"].r[0]) < 1e-12
     rows = [line for line in note_markdown(analysis).splitlines() if line.startswith(("| yoke |", "| guide of"))]
     assert rows == ["| yoke | 0 m from O, at 90° to x |"]
+
+
+def test_a_link_at_rest_in_its_extreme_position_has_no_sense_of_turning():
+    """At the crank-rocker's extreme ω4 is rounding's 1e-16, written 0: the note said "0 rad/s, clockwise"."""
+    from graphplan.starters import starter
+
+    text = re.sub(r"(?m)^plans\s*=.*$", "plans = [0]", starter("crank-rocker"))
+    analysis = analyse(graphplan.scene.loads(text))
+    assert abs(analysis.motion.link(4).omega[0]) < 1e-9 and analysis.positions.numbers[0] == 0
+    line = next(line for line in note_markdown(analysis).splitlines() if line.startswith("- ω4 = "))
+    assert line.endswith(" = 0 rad/s"), line

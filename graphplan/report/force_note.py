@@ -242,12 +242,13 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
         pa = abs(velocity.value(driver.joint)) / drawn_at
         segment = note.segment(velocity, "p", velocity.images[driver.joint])
         force = abs(total) / pa if pa else math.nan
-        equation = (f"Fy = |Σ(F·h)|/{segment} = {note.n(abs(total))}/{note.mm(pa)} = {note.n(force)} "
+        # Fb as the lever drawings name it; the product of two magnitudes gives |Mb|, its sense after it.
+        equation = (f"Fb = |Σ(F·h)|/{segment} = {note.n(abs(total))}/{note.mm(pa)} = {note.n(force)} "
                     f"{text['newton']}")
         if driver.kind == "crank":
             length = f"l{driver.pivot}{driver.joint}"
-            equation += (f"; {name} = Fy·{length} = {note.product(note.n(force), note.n(driver.length))} = "
-                         f"{note.n(lever.balancing, 6)} {unit}{note.with_sense(lever.balancing)}")
+            equation += (f"; |{name}| = Fb·{length} = {note.product(note.n(force), note.n(driver.length))} = "
+                         f"{note.n(abs(lever.balancing), 6)} {unit}{note.with_sense(lever.balancing)}")
         else:
             equation += f"; {name} = {note.n(lever.balancing, 6)} {unit}"
         note.para(note.t("note_lever_result", equation=equation))

@@ -15,7 +15,7 @@ reactions, the balancing load by the polygons and by Zhukovsky's lever).
 Everything is read from the records of one :class:`~graphplan.analysis.Analysis`
 (the plans' steps, the readings, the force plans and levers); what the note
 computes itself (a normal component ω²·l, a similarity proportion, the
-lever's Fy) it prints with its arithmetic, and checks against the record
+lever's Fb) it prints with its arithmetic, and checks against the record
 before it does, falling back to the record's own value.  The force
 analysis is written by :mod:`graphplan.report.force_note`, the machine's
 dynamics, balancing and vibration by :mod:`graphplan.report.machine_note`.  The
@@ -146,8 +146,8 @@ class _Note:
         return self.text["sense_ccw"] if value > 0 else self.text["sense_cw"]
 
     def with_sense(self, value: float) -> str:
-        """", clockwise" after a turning quantity; nothing after a zero."""
-        return self.text["comma"] + self.sense(value) if value != 0 else ""
+        """", clockwise" after a turning quantity; nothing after one written 0 (rounding's 1e-17 has no sense)."""
+        return self.text["comma"] + self.sense(value) if self.n(value) != "0" else ""
 
     def para(self, *lines: str) -> None:
         self.lines += [*lines, ""]
