@@ -21,8 +21,9 @@ import numpy as np
 CONVERGED = 1e-13
 # Repetitions of the construction before the friction is brought in by steps.
 MAX_ITERATIONS = 200
-# The steps of the friction's share, and Newton's steps at each (the Jacobian, by forward differences of
-# relative size _DIFFERENCE, taken once a share: the map is linear in the reactions but for their moduli).
+# The steps of the friction's share, and Newton's steps at each (the Jacobian by forward differences of
+# relative size _DIFFERENCE, taken at a share's start, and again where a step does not shrink tenfold: the
+# map is linear in the reactions but for their moduli).
 SHARE_STEPS = 16
 NEWTON_STEPS = 40
 _DIFFERENCE = 1e-7

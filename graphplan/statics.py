@@ -120,9 +120,9 @@ def equilibrium(mechanism: Mechanism, motion: Motion, loads: tuple[Load, ...],
     With ``friction`` the friction loads depend on the reactions they change:
     the system is solved again with the friction of the last solution until
     no reaction moves by more than :data:`~graphplan.settling.CONVERGED` of
-    the largest (:func:`~graphplan.settling.settle`); a position where no
-    solution attracts the repetitions locks itself (no finite balancing load
-    moves it).
+    the largest, or by Newton's method as the friction is brought in by shares
+    (:func:`~graphplan.settling.settle`); a position where that path ends
+    locks itself (no finite balancing load moves it).
     """
     count = motion.count
     system = _System(mechanism, motion)

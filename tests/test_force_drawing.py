@@ -230,7 +230,7 @@ def test_a_chinese_sheet_uses_its_own_strings():
     from graphplan.locale import strings
 
     text = strings("zh")
-    assert text["force_polygon_title"] == "力多边形" and text["lever_title"] == "儒科夫斯基杠杆"
+    assert text["force_polygon_title"] == "力多边形" and text["lever_title"] == "茹可夫斯基杠杆"
     assert text["group_forces_title"].format(group="II(3,4)") == "杆组 II(3,4) 的力分析"
     assert text["balancing_moment"] == "平衡力矩"
 

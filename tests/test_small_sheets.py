@@ -388,11 +388,11 @@ def test_a_force_scale_given_in_the_scene_and_too_small_for_a4_is_answered_with_
 
 
 def test_a_chinese_caption_breaks_after_its_full_width_comma_and_before_its_bracket():
-    line = "μV = 0.01983 (m/s)/mm，力：μF = 25 N/mm，最短 10 mm；平衡力矩 Mb = 49.02 N·m（儒科夫斯基杠杆）"
+    line = "μV = 0.01983 (m/s)/mm，力：μF = 25 N/mm，最短 10 mm；平衡力矩 Mb = 49.02 N·m（茹可夫斯基杠杆）"
     pieces = fitted(line, 80.0, CAPTION)
     assert "".join(pieces).replace(" ", "") == line.replace(" ", "")
     assert all(text_width(piece, CAPTION) <= 80.0 for piece in pieces)
-    assert "（儒科夫斯基杠杆）" in pieces
+    assert "（茹可夫斯基杠杆）" in pieces
     assert any(piece.endswith("，") for piece in pieces)
 
 
