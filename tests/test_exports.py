@@ -319,9 +319,11 @@ def test_dxf_strokes_keep_their_dashes_widths_and_colours():
     assert line.dxf.lineweight == 25 and shaft.dxf.lineweight == 60
     assert line.rgb == (0x33, 0x33, 0x33) and shaft.rgb == (0x1F, 0x5F, 0xA8)
     assert head.dxftype() == "HATCH" and head.has_solid_fill and head.rgb == (0x1F, 0x5F, 0xA8)
-    # The head's tip is the arrow's end.
+    # The head's tip is the arrow's end, and the shaft runs from the start to it: a CAD measure of the vector
+    # gives its length (the shaft stopped short under the head read pa = 100 mm as 97.55).
     vertices = [tuple(v) for v in head.paths.paths[0].vertices]
     assert vertices[0][:2] == pytest.approx((30.0, 10.0))
+    assert [tuple(point)[:2] for point in shaft.get_points()] == [pytest.approx((0.0, 10.0)), pytest.approx((30.0, 10.0))]
 
 
 def test_dxf_is_the_same_every_time_and_written_to_paths_and_byte_streams(tmp_path):

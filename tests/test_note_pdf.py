@@ -183,3 +183,18 @@ def test_a_table_longer_than_a_page_starts_under_its_caption_and_goes_on_over_th
         body = lines[:-1] if lines and lines[-1] == str(number) else lines
         assert body and not CAPTION.match(body[-1]), (number, body[-1])
         assert len(body) > 3, (number, body)  # no page of a caption or a heading alone
+
+
+def test_the_page_numbers_are_set_in_the_body_s_font(notes):
+    """The page's margin boxes inherit nothing from the body: the numbers came out in DejaVu Serif."""
+    import ctypes
+
+    from pypdfium2 import raw
+
+    _, data = notes["en"]
+    page = pdfium.PdfDocument(data)[1]
+    text = page.get_textpage()
+    name = ctypes.create_string_buffer(256)
+    raw.FPDFText_GetFontInfo(text, text.count_chars() - 1, name, 256, ctypes.byref(ctypes.c_int()))
+    assert text.get_text_range().rstrip().endswith("2")
+    assert name.value.decode().split("+")[-1] == "DejaVu-Sans"

@@ -6,7 +6,8 @@ of a few DXF layers by :func:`dxf_layer`; each primitive becomes:
 
 * a :class:`~.primitives.Polyline`: an LWPOLYLINE, and a solid HATCH when it is filled;
 * a :class:`~.primitives.Circle`: a CIRCLE, and a solid HATCH when it is filled;
-* an :class:`~.primitives.Arrow`: its shaft as an LWPOLYLINE and its head as a solid HATCH;
+* an :class:`~.primitives.Arrow`: its shaft as an LWPOLYLINE from its start to its tip and its head as a
+  solid HATCH;
 * a :class:`~.primitives.Text`: a TEXT on its baseline, aligned left, centre or right,
   in a TrueType style that has its glyphs (DejaVu Sans, or Noto Sans CJK for Chinese).
 
@@ -168,8 +169,9 @@ class _Writer:
             if _filled(item.fill):
                 self._hatch(layer, item.fill).paths.add_edge_path().add_arc(item.centre, item.radius, 0.0, 360.0)
         elif isinstance(item, Arrow):
-            shaft = item.shaft()
-            self._polyline(layer, shaft.points, shaft.stroke, False)
+            # The shaft runs to the tip, under the head: measured in CAD, a vector is as long as it is drawn
+            # (pa = 100 mm), where the SVG stops it short so that its round cap cannot poke past the tip.
+            self._polyline(layer, (item.start, item.end), item.stroke, False)
             self._hatch(layer, item.stroke.colour).paths.add_polyline_path(item.tip().points, is_closed=True)
         elif isinstance(item, Text):
             self._text(layer, item)

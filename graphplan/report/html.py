@@ -19,9 +19,11 @@ import re
 
 from .symbols import Symbol, pieces
 
+_FONTS = ('"DejaVu Sans", "Noto Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "Noto Sans SC", "Microsoft YaHei", '
+          '"PingFang SC", sans-serif')
+# The page's margin boxes (its number) inherit nothing from the body: they name the body's fonts themselves.
 _STYLE = """\
-body { font-family: "DejaVu Sans", "Noto Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "Noto Sans SC",
-       "Microsoft YaHei", "PingFang SC", sans-serif;
+body { font-family: FONTS;
        max-width: 60em; margin: 2em auto; padding: 0 1em; line-height: 1.45; color: #111; }
 h1 { font-size: 1.6em; } h2 { font-size: 1.35em; margin-top: 1.6em; } h3 { font-size: 1.15em; }
 h4 { font-size: 1em; }
@@ -30,7 +32,8 @@ th, td { border: 1px solid #999; padding: 0.2em 0.55em; vertical-align: top; }
 th { background: #eee; }
 td { font-variant-numeric: tabular-nums; }
 td.word { white-space: nowrap; }
-@page { size: A4; margin: 20mm 10mm 20mm 30mm; @bottom-center { content: counter(page); font-size: 9pt; } }
+@page { size: A4; margin: 20mm 10mm 20mm 30mm;
+        @bottom-center { content: counter(page); font-family: FONTS; font-size: 9pt; } }
 p.table-caption { margin-bottom: 0.3em; }
 figure { margin: 1em 0 1.2em; text-align: center; break-inside: avoid; }
 figure img { max-width: 100%; max-height: 230mm; height: auto; }
@@ -40,6 +43,8 @@ th { hyphens: auto; }
                table { font-size: 0.8em; } table.whole, tr { break-inside: avoid; }
                th, td { padding: 0.2em 0.4em; } }
 """
+
+_STYLE = _STYLE.replace("FONTS", _FONTS)
 
 # A table of at most this many rows stays on one page; a longer one goes on from where it starts (a page
 # break between its rows, its header repeated), not to the next page whole, which left its caption alone.
