@@ -83,7 +83,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if piece in ("acceleration", "forces", "lever") and not has_plans:
         return _NO_PLANS
     if piece in ("forces", "lever") and not any(plan.forces is not None for plan in analysis.plans):
-        return _NO_LOADS
+        # Friction acts through the reactions the loads cause: without them the scene's [[friction]] does nothing.
+        return _NO_LOADS + ("; its [[friction]] has no reactions to act through" if scene.friction else "")
     if piece == "figures" and analysis.equilibrium is None:
         return _NO_LOADS
     return None

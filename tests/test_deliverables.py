@@ -81,6 +81,17 @@ def test_no_force_pieces_without_masses_or_loads(tmp_path, capsys):
     assert "--only[1]: 'forces' needs masses or loads" in capsys.readouterr().err
 
 
+def test_friction_without_masses_or_loads_is_told_it_acts_on_nothing(tmp_path, capsys):
+    """A scene's [[friction]] with no masses or loads was dropped without a word: check now says why."""
+    scene = without_masses_and_loads(tmp_path)
+    scene.write_text(scene.read_text(encoding="utf-8") + '\n[[friction]]\njoint = "A"\nf = 0.1\nradius = 0.01\n',
+                     encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    left_out = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("left out: "))
+    assert ("forces (needs masses or loads: the scene has neither ([links.N] mass, [[loads]]); its [[friction]] "
+            "has no reactions to act through)") in left_out
+
+
 def test_only_the_velocity_plans_when_only_they_are_asked_for(tmp_path):
     status, out = run(tmp_path, "--only", "velocity")
     assert status == 0
