@@ -198,3 +198,19 @@ def test_the_page_numbers_are_set_in_the_body_s_font(notes):
     raw.FPDFText_GetFontInfo(text, text.count_chars() - 1, name, 256, ctypes.byref(ctypes.c_int()))
     assert text.get_text_range().rstrip().endswith("2")
     assert name.value.decode().split("+")[-1] == "DejaVu-Sans"
+
+
+def test_a_bold_paragraph_that_heads_what_follows_never_ends_a_page():
+    """The note heads each group's equations with a bold paragraph ("Group II(5,6), kind RRP"); a student's
+    PDF had three of them alone at the foot of a page.  Filled with more and more lines before it, the lead
+    goes over to the next page with what it heads, wherever the page break falls."""
+    from graphplan.report.html import to_html
+
+    for filler in range(40, 56):
+        markdown = "\n\n".join([f"Line {k} of the running text." for k in range(filler)]
+                               + ["**Group II(5,6), kind RRP**", "Vector equation: VD = VC + VDC."])
+        pages = [[line.strip() for line in page.get_textpage().get_text_range().splitlines() if line.strip()]
+                 for page in pdfium.PdfDocument(note_pdf(to_html(markdown, "Lead", "en")))]
+        for number, lines in enumerate(pages, 1):
+            body = lines[:-1] if lines and lines[-1] == str(number) else lines
+            assert body[-1] != "Group II(5,6), kind RRP", (filler, number)
