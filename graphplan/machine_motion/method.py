@@ -56,9 +56,12 @@ def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float]
     return motor.shaft_torque(fastest), motor.shaft_torque(fastest) - surplus(fastest)
 
 
-def refuse_runaway(machine: Machine, motor: Motor) -> None:
-    """Raise :class:`ValueError` where the motor outpulls the resistance at every speed
-    (:func:`speeds_up_without_end`): a run to the steady state would never end."""
+def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = True) -> None:
+    """Raise :class:`ValueError` where a run goes on ``to_the_steady_state`` (no duration, brake or switching off
+    ends it) and the motor outpulls the resistance at every speed (:func:`speeds_up_without_end`): it would
+    never end."""
+    if not to_the_steady_state:
+        return
     outpulled = speeds_up_without_end(machine, motor)
     if outpulled is not None:
         raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "

@@ -150,8 +150,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         raise ValueError("start.driving_omega: only with a clutch")
     if isinstance(max_cycles, bool) or not isinstance(max_cycles, int) or max_cycles < 3:
         raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
-    if duration is None and brake is None and motor_off_at is None:
-        refuse_runaway(machine, motor)
+    refuse_runaway(machine, motor, duration is None and brake is None and motor_off_at is None)
     equations = Equations(machine, motor, brake, clutch, motor_off_at)
     omega_run = running_speed(machine, motor, start, duration)
     atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)

@@ -35,7 +35,7 @@ class MotionSpec:
     steady_tolerance: float = 1e-4
 
     def run(self, machine: Machine) -> MachineMotion:
-        self.refuse(machine)
+        self._refuse_long_run(machine)  # simulate refuses a runaway motor itself
         return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
                         clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
                         steady_tolerance=self.steady_tolerance)
@@ -43,8 +43,11 @@ class MotionSpec:
     def refuse(self, machine: Machine) -> None:
         """Raise :class:`ValueError` for a run of ``machine`` that could not end: a motor that outpulls the
         resistance at every speed, or more turns than a run integrates; found before integrating anything."""
-        if self.duration is None and self.brake is None and self.motor_off_at is None:
-            refuse_runaway(machine, self.motor)
+        self._refuse_long_run(machine)
+        refuse_runaway(machine, self.motor, self.duration is None and self.brake is None and self.motor_off_at is None)
+
+    def _refuse_long_run(self, machine: Machine) -> None:
+        """Raise :class:`ValueError` for a run of more turns than a run integrates."""
         omega_run = running_speed(machine, self.motor, self.start, self.duration)
         if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
             raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
