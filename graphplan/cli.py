@@ -90,6 +90,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             error = SceneError("--sheet (in place of drawing.sheet)", error.problem, error.value)
         print(f"graphplan: error: {error}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        # The output folder is written whole or not at all, so an interrupted run has nothing to clean up.
+        print("graphplan: interrupted", file=sys.stderr)
+        return 130
 
 
 def _check(path: Path) -> int:

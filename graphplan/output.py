@@ -52,13 +52,14 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
                 carried.append(name)
             target.rename(retired)
         staging.rename(target)
-    except OSError as error:
+    except BaseException as error:
+        # Ctrl-C too: the user's own files carried into the staging folder must go back before it is removed.
         if retired.exists() and not target.exists():
             retired.rename(target)
         for name in carried:
             (staging / name).rename(target / name)
         shutil.rmtree(staging, ignore_errors=True)
-        if isinstance(error, OutputError):
+        if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot write the output ({error.strerror or error})") from None
     shutil.rmtree(retired, ignore_errors=True)
@@ -87,8 +88,10 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
         target.parent.mkdir(parents=True, exist_ok=True)
         staging.write_text(content, encoding="utf-8", newline="\n")
         staging.replace(target)
-    except OSError as error:
+    except BaseException as error:
         staging.unlink(missing_ok=True)
+        if not isinstance(error, OSError):
+            raise
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
     return target
 

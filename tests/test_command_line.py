@@ -257,6 +257,31 @@ def test_a_run_into_a_folder_keeps_what_no_run_wrote_there_and_replaces_its_own(
     assert set((folder / WRITTEN).read_text(encoding="utf-8").split()) == {"positions.svg", "results.json"}
 
 
+def test_ctrl_c_while_the_folder_is_swapped_puts_the_user_s_own_files_back(tmp_path, capsys, monkeypatch):
+    """A run carries the scene and drafts beside its files into the new folder before the swap; Ctrl-C at
+    the swap left them in a hidden staging folder and printed a traceback. Now the old folder is whole
+    again, with the user's files in it, and the run says it was interrupted (exit status 130)."""
+    folder = tmp_path / "project"
+    folder.mkdir()
+    scene = folder / "ratchet.toml"
+    scene.write_text(Path(FIXTURE).read_text(encoding="utf-8"), encoding="utf-8")
+    (folder / "draft.txt").write_text("my notes", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(folder), "--only", "positions"]) == 0
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    rename = Path.rename
+
+    def interrupted_at_the_swap(self, target):
+        if Path(target).name.startswith(".project.old-"):
+            raise KeyboardInterrupt
+        return rename(self, target)
+
+    monkeypatch.setattr(Path, "rename", interrupted_at_the_swap)
+    assert main(["run", str(scene), "--out", str(folder), "--only", "errors"]) == 130
+    assert capsys.readouterr().err == "graphplan: interrupted\n"
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["project"]
+
+
 def test_a_run_will_not_replace_the_folder_it_runs_in(tmp_path, capsys, monkeypatch):
     scene = tmp_path / "ratchet.toml"
     scene.write_text(Path(FIXTURE).read_text(encoding="utf-8"), encoding="utf-8")
