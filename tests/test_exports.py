@@ -94,6 +94,18 @@ def test_png_has_the_size_of_the_page_at_the_resolution():
         assert pixels.shape == (round(PAGE[1] / MM_PER_INCH * dpi), round(PAGE[0] / MM_PER_INCH * dpi))
 
 
+def test_png_says_its_resolution_so_that_it_prints_at_the_drawing_s_size():
+    """cairo writes no pHYs chunk: a viewer took an A4 sheet at 150 dpi for 72 dpi and printed it twice its size."""
+    from graphplan.render.export import svg_to_png
+
+    for dpi in (96, 150, 300):
+        image = Image.open(io.BytesIO(svg_to_png(page_with(Text((10.0, 10.0), "A")), dpi=dpi)))
+        image.load()  # reads every chunk and checks its CRC
+        assert image.info["dpi"] == pytest.approx((dpi, dpi), abs=0.013)  # whole pixels per metre
+        printed_mm = [pixels / image.info["dpi"][0] * MM_PER_INCH for pixels in image.size]
+        assert printed_mm == pytest.approx(PAGE, abs=0.2)
+
+
 def test_png_rejects_a_resolution_that_is_not_positive():
     from graphplan.render.export import svg_to_png
 

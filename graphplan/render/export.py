@@ -47,7 +47,23 @@ def svg_to_png(svg_text: str, dpi: float = DEFAULT_DPI) -> bytes:
         raise ValueError(f"dpi must be > 0 (got {dpi!r})")
     import cairosvg
 
-    return cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi)
+    return _with_resolution(cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi), dpi)
+
+
+def _with_resolution(png: bytes, dpi: float) -> bytes:
+    """``png`` with a pHYs chunk saying its ``dpi``, so that a sheet prints and imports at its own size.
+
+    cairo writes none (viewers then assume 72 or 96 dpi, and an A4 sheet at 150 dpi prints twice its
+    size); the chunk goes right after IHDR, whose length is fixed, so the image data is not re-encoded.
+    """
+    import struct
+    import zlib
+
+    header_end = 8 + 4 + 4 + 13 + 4  # signature, then IHDR's length, type, data and CRC
+    per_metre = round(dpi / 0.0254)
+    body = b"pHYs" + struct.pack(">IIB", per_metre, per_metre, 1)
+    chunk = struct.pack(">I", 9) + body + struct.pack(">I", zlib.crc32(body))
+    return png[:header_end] + chunk + png[header_end:]
 
 
 def svg_to_pdf(svg_text: str) -> bytes:
