@@ -62,6 +62,9 @@ from .sliding import (
 _SWEEP = 2048
 # Newton's step is trusted when it converges to this share of the group's size.
 _CONVERGED = 1e-12
+# Plain Newton steps for the positions between the walk's steps, each started within a step of its root:
+# quadratic convergence takes a residual of 1e-3 below 1e-12 of the size in three or four.
+_BATCH_NEWTON_STEPS = 6
 
 
 @dataclass(frozen=True)
@@ -116,6 +119,13 @@ class Track:
         if self.slot is None:
             return 0.0
         return -size * (np.conj(self.slot * rotation) * (point - self.centre)).real
+
+    def taken(self, which) -> Track:
+        """The track at the positions ``which`` (an index, or an index array) of one whose fields hold every position."""
+        def at(value):
+            return value if value is None or np.ndim(value) == 0 else value[which]
+
+        return replace(self, centre=at(self.centre), u=at(self.u))
 
 
 @dataclass(frozen=True)
@@ -424,38 +434,77 @@ class Triad(Group):
 
     def _residual(self, q: np.ndarray, tracks: tuple[Track, Track, Track], turn: int):
         """The closure and its Jacobian in q = (Bx, By, ψ)."""
-        b = complex(q[0], q[1])
-        rotation = complex(math.cos(q[2]), math.sin(q[2]))
-        rows, values = [], []
-        for track, point in zip(tracks, self.corners(Pose(b, float(q[2])), turn)):
-            gradient = track.gradient(point, self.size, rotation)
-            values.append(track.closure(point, self.size, rotation))
-            rows.append([gradient.real, gradient.imag,
-                         (gradient.conjugate() * 1j * (point - b)).real + track.turning(point, self.size, rotation)])
-        return np.array(values), np.array(rows)
+        legs = self._legs(complex(q[0], q[1]), complex(math.cos(q[2]), math.sin(q[2])), tracks, turn)
+        return np.array([leg[0] for leg in legs]), np.array([leg[1:] for leg in legs])
 
-    def _tracks(self, context: Context) -> tuple[list[Track], ...]:
-        """Each leg's track at every position."""
+    def _legs(self, b, rotation, tracks: tuple[Track, Track, Track], turn: int):
+        """Each leg's closure at the poses (B, e^{iψ}), plain numbers or arrays of many poses, and its derivatives
+        in Bx, By and ψ."""
+        legs = []
+        for track, corner in zip(tracks, self.local_corners(turn)):
+            point = b + corner * rotation
+            gradient = track.gradient(point, self.size, rotation)
+            legs.append((track.closure(point, self.size, rotation), gradient.real, gradient.imag,
+                         (gradient.conjugate() * 1j * (point - b)).real + track.turning(point, self.size, rotation)))
+        return legs
+
+    def _settle_many(self, guesses: list[Pose], tracks: tuple[Track, Track, Track],
+                     turn: int) -> list[Pose | None]:
+        """Newton's method from many guesses at once, each near its root (a neighbour on the walk's grid);
+        None where it does not close the triad in a few steps.
+
+        scipy's root solves one system at a time, a millisecond each: tens of thousands of positions asked
+        for between the walk's steps took a minute. These start within a step of their roots, where plain
+        Newton converges quadratically, so one batched solve of the 3 × 3 systems does them all; the ones
+        it does not settle go to scipy one by one.
+        """
+        b = np.array([guess.b for guess in guesses])
+        psi = np.array([guess.psi for guess in guesses])
+        tolerance = _CONVERGED * self.size * self.size
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            for _ in range(_BATCH_NEWTON_STEPS):
+                legs = self._legs(b, np.exp(1j * psi), tracks, turn)
+                values = np.stack([leg[0] for leg in legs], axis=-1)
+                jacobian = np.stack([np.stack(np.broadcast_arrays(*leg[1:]), axis=-1) for leg in legs], axis=-2)
+                invertible = np.abs(np.linalg.det(jacobian)) > 0
+                step = np.linalg.solve(np.where(invertible[:, None, None], jacobian, np.eye(3)), -values[..., None])
+                step = np.where(invertible[:, None], step[..., 0], np.nan)
+                b = b + step[:, 0] + 1j * step[:, 1]
+                psi = psi + step[:, 2]
+            values = np.stack([leg[0] for leg in self._legs(b, np.exp(1j * psi), tracks, turn)], axis=-1)
+        settled = np.all(np.abs(values) <= tolerance, axis=-1)
+        return [Pose(complex(b[k]), float(psi[k])) if settled[k] else None for k in range(len(guesses))]
+
+    def _tracks(self, context: Context) -> tuple[Track, Track, Track]:
+        """Each leg's track, its centre (and a guide's direction) an array over every position."""
         count = context.count
         tracks = []
         for n, (outer, _, _) in enumerate(self.arms()):
             centre = np.broadcast_to(np.asarray(context.point(outer).r, dtype=complex), (count,))
             if n in self.turning_legs:
-                tracks.append([Track(complex(c), self.lengths[n]) for c in centre])
-                continue
-            if self.leg_slots[n] is not None:
-                tracks.append([Track(complex(c), slot=self.slot_direction(n)) for c in centre])
-                continue
-            guide = context.guide(self.leg_guides[n])
-            u = np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))
-            tracks.append([Track(complex(c), u=complex(d)) for c, d in zip(centre, u)])
-        return tuple(tracks)
+                tracks.append(Track(centre, self.lengths[n]))
+            elif self.leg_slots[n] is not None:
+                tracks.append(Track(centre, slot=self.slot_direction(n)))
+            else:
+                guide = context.guide(self.leg_guides[n])
+                tracks.append(Track(centre, u=np.broadcast_to(np.asarray(guide.u, dtype=complex), (count,))))
+        return tuple(tracks)  # type: ignore[return-value]
 
     def _tracks_at(self, context: Context, index: int) -> tuple[Track, Track, Track]:
-        return tuple(legs[index] for legs in self._tracks(context))  # type: ignore[return-value]
+        return self._at(self._tracks(context), index)
+
+    @staticmethod
+    def _at(tracks: tuple[Track, Track, Track], index: int) -> tuple[Track, Track, Track]:
+        """The tracks at one position, their fields plain numbers (scipy's root calls the closure with them)."""
+        def scalar(value):
+            return value if value is None else complex(value[index])
+
+        return tuple(replace(track, centre=scalar(track.centre), u=scalar(track.u))  # type: ignore[return-value]
+                     for track in tracks)
 
     def _poses(self, context: Context, branch: TriadBranch) -> list[Pose]:
-        """The pose at every position, walked out from the reference position both ways."""
+        """The pose at every position: walked out from the reference position both ways along the steps of
+        the walk's grid, then each position asked for between two steps settled from the step before it."""
         tracks = self._tracks(context)
         poses: list[Pose | None] = [None] * context.count
         start = context.start
@@ -465,25 +514,37 @@ class Triad(Group):
             step = steps[index]
             if step in walked:  # an earlier solve walked past this step of the same assembly
                 return walked[step]
-            pose = self._settle(guess, tuple(legs[index] for legs in tracks), branch.turn)
+            pose = self._settle(guess, self._at(tracks, index), branch.turn)
             if step is not None and pose is not None:
                 walked[step] = pose
             return pose
 
         poses[start] = settle(start, branch.pose)
         stops = [start] if poses[start] is None else []
+        between: list[tuple[int, int]] = []  # (a position off the grid, the walk's position before it)
         for order in (range(start + 1, context.count), range(start - 1, -1, -1)):
             previous = start
             for index in order:
                 if poses[previous] is None:
                     break
+                if steps[index] is None:
+                    between.append((index, previous))
+                    continue
                 poses[index] = settle(index, poses[previous])
                 if poses[index] is None:
                     stops.append(index)
                 previous = index
+        if between:
+            off, before = (np.array(column) for column in zip(*between))
+            batched = self._settle_many([poses[k] for k in before],  # type: ignore[misc]
+                                        tuple(track.taken(off) for track in tracks), branch.turn)
+            for index, guess, pose in zip(off, before, batched):
+                poses[index] = pose if pose is not None else settle(int(index), poses[guess])  # type: ignore[arg-type]
+                if poses[index] is None:
+                    stops.append(int(index))
         if stops:
             first = min(stops, key=lambda index: abs(index - start))
-            why = self._why_not(tuple(legs[first] for legs in tracks), walking=first != start)
+            why = self._why_not(self._at(tracks, first), walking=first != start)
             context.fail_where(np.arange(context.count) == first,
                                lambda i, at: AssemblyError(self.joints[1], at, self.label, why))
         return poses  # type: ignore[return-value]
