@@ -29,20 +29,29 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     scene
         A scene from :func:`load`.
     driver
-        Driver coordinates: crank angles in rad, or slider displacements in m.
+        Driver coordinates: crank angles in rad, or slider displacements in m, in any order.
         Without it, the positions of the scene's ``[positions]`` table.
+
+    The velocities and accelerations are at the driver's ω and ε (a slider's velocity and acceleration) of the
+    scene's ``[driver]`` table, the same at every position, as the plan method takes them.  ``Motion.warnings``
+    names each position near a toggle, and each toggle between two of the positions, where the real mechanism
+    may change its assembly and the positions beyond it keep the scene's.
     """
+    from .analysis import PATH_SAMPLES
+    from .motion import reference_at, with_toggles_between
     from .motion import solve as solve_motion
     from .positions import make_positions
 
+    if not isinstance(scene, Scene):
+        raise TypeError(f"solve takes a scene, as graphplan.load(path) reads it (got {scene!r})")
     mechanism = build(scene)
     uses_near = any(getattr(group, "near", None) is not None for group in mechanism.groups)
-    if driver is None or uses_near:
+    if driver is None:
         positions = make_positions(mechanism)
-        if driver is None:
-            return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
-        return solve_motion(mechanism, driver, positions.reference)
-    return solve_motion(mechanism, driver)
+        return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
+    reference = make_positions(mechanism).reference if uses_near else None
+    motion = solve_motion(mechanism, driver, reference)
+    return with_toggles_between(motion, reference or reference_at(mechanism, float(motion.driver[0])), PATH_SAMPLES)
 
 
 __all__ = [

@@ -42,6 +42,9 @@ _STILL = 0j
 # A group found by continuation (a triad) is solved at least this often a turn of the crank (or along
 # the slider's travel): Newton's method then starts within a degree of the next position.
 CONTINUATION_STEPS = 360
+# The longest walk a solve takes out to the values asked for: 100 turns, a minute's walk (a mistake, such as
+# degrees given for radians or a time for an angle, beyond it).
+_LONGEST_WALK = 100 * CONTINUATION_STEPS
 
 # How a group's closest approach to a toggle between two samples of the dense sweep is found: each
 # round solves this many points across the bracket round the least sine and keeps the two beside
@@ -99,17 +102,22 @@ class Motion:
 
     @property
     def count(self) -> int:
+        """The number of positions N."""
         return len(self.driver)
 
     def point(self, name: str) -> PointArrays:
+        """Point ``name``'s r (m), v (m/s) and a (m/s²), each an ``(N, 2)`` array of x, y; read-only, since they are
+        the motion's own (copy one to change it)."""
         if not isinstance(name, str):
             raise TypeError(f"a point is named by its name, a string: point('B'), not point({name!r})")
         if name not in self.points:
             raise KeyError(f"no point {name!r}; points are {', '.join(self.points)}")
         motion = self.points[name]
-        return PointArrays(*(as_xy(value, self.count) for value in (motion.r, motion.v, motion.a)))
+        return PointArrays(*(_read_only(as_xy(value, self.count)) for value in (motion.r, motion.v, motion.a)))
 
     def link(self, number: int) -> LinkArrays:
+        """Link ``number``'s angle (rad), ω (rad/s) and ε (rad/s²), each an ``(N,)`` array, counter-clockwise
+        positive; read-only, as :meth:`point`'s."""
         if isinstance(number, bool) or not isinstance(number, int | np.integer):
             raise TypeError(f"a link is named by its number, an integer: link(4), not link({number!r})")
         if number not in self.links:
@@ -121,7 +129,12 @@ class Motion:
 
     def at_positions(self, indices: Sequence[int]) -> Motion:
         """The motion at some of its positions only, in the order given (their warnings renumbered)."""
-        chosen = np.asarray(indices, dtype=int)
+        chosen = np.asarray(indices)
+        if chosen.ndim != 1 or chosen.dtype.kind not in "iu":
+            raise TypeError(f"positions are picked by their indices, a list of integers (got {indices!r})")
+        if len(chosen) and not (np.all(chosen < self.count) and np.all(chosen >= -self.count)):
+            raise IndexError(f"the motion has {self.count} positions, indices 0 to {self.count - 1} (got {indices!r})")
+        chosen = chosen % max(self.count, 1)
         renumbered = {int(old): new for new, old in enumerate(chosen)}
         points, links, slides, conditioning = _taken((self.points, self.links, self.slides, self.conditioning), chosen)
         warnings = tuple(replace(warning, position=renumbered[warning.position]) for warning in self.warnings
@@ -246,10 +259,17 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
     in ``Motion.singular`` with its reason (its velocities and accelerations
     are then not numbers and must not be read).
     """
+    numbers_only = "must be an array of numbers (crank angles in rad, or slider positions in m)"
     try:
-        values = np.atleast_1d(np.asarray(values, dtype=float))
+        given = np.asarray(values)
+        if given.dtype.kind not in "iuf" and not (given.dtype.kind == "O" and all(
+                isinstance(value, int | float | np.integer | np.floating) and not isinstance(value, bool | np.bool_)
+                for value in given.ravel())):
+            raise TypeError  # complex parts dropped, booleans and strings read as numbers: none is meant
+        # A copy: the motion keeps its driver, whatever the caller does to the array afterwards.
+        values = np.array(np.atleast_1d(given), dtype=float)
     except (TypeError, ValueError):
-        raise SceneError("driver", "must be an array of numbers (crank angles in rad, or slider positions in m)") from None
+        raise SceneError("driver", f"{numbers_only} (got {_shown(values)})") from None
     if values.ndim != 1 or len(values) == 0:
         raise SceneError("driver", "must be a non-empty 1-D array of driver positions")
     if not np.all(np.isfinite(values)):
@@ -288,6 +308,13 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
         step = 2 * math.pi / CONTINUATION_STEPS
     else:
         step = abs(driver.travel[1] - driver.travel[0]) / CONTINUATION_STEPS or (high - low) / CONTINUATION_STEPS
+    farthest = high if high - reference.value >= reference.value - low else low
+    if abs(farthest - reference.value) / step > _LONGEST_WALK:
+        unit, span = ("rad", "turns") if driver.cyclic else ("m", "travels")
+        raise SceneError("driver", f"{farthest:g} {unit} is {abs(farthest - reference.value) / step / CONTINUATION_STEPS:.3g} "
+                                   f"{span} from the reference position {reference.value:g} {unit}: a triad is "
+                                   f"followed there a {CONTINUATION_STEPS}th of a {span[:-1]} at a time, which would "
+                                   f"not end; give values within {_LONGEST_WALK // CONTINUATION_STEPS} {span} of it")
     # The grid is counted in steps from the reference position, the same for every solve: a group keeps what it
     # found at each step of it (while the mechanism lives) and walks on from there on the next solve.
     counted = np.arange(math.ceil((low - reference.value) / step), math.floor((high - reference.value) / step) + 1)
@@ -317,6 +344,16 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
     return Motion(mechanism=mechanism, driver=values, points=points, links=links, slides=slides,
                   conditioning=conditioning, warnings=tuple(sorted(warnings + conditioned, key=lambda w: w.position)),
                   singular=singular)
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    array.flags.writeable = False  # a view: the motion's own array stays as it is
+    return array
+
+
+def _shown(values) -> str:
+    text = repr(values)
+    return text if len(text) <= 60 else f"{text[:57]}..."
 
 
 def _taken(found, asked: np.ndarray):
@@ -402,15 +439,40 @@ def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Posi
     return tuple(sorted(warnings, key=lambda w: w.position))
 
 
+def with_toggles_between(motion: Motion, reference: Reference, samples: int) -> Motion:
+    """``motion`` (driver values in any order, as the Python interface takes them) with a warning at each toggle
+    between two of its positions, found as :func:`toggles_between` finds them between a scene's positions.
+
+    Each value is solved on its own, so positions either side of a toggle may be of two assemblies: the real
+    mechanism, moving from one to the other, would change its assembly there, or not, as it happens.  The
+    positions are taken in increasing driver coordinate (repeated values once), without a crank's wrap from
+    the last back to the first, and swept over ``samples`` steps a turn (or over the values' span).
+    """
+    driver = motion.mechanism.driver
+    distinct, first = np.unique(np.asarray(motion.driver, dtype=float), return_index=True)
+    if len(distinct) < 2:
+        return motion
+    span = float(distinct[-1] - distinct[0])
+    steps = max(samples, math.ceil(samples * span / (2 * math.pi))) if driver.cyclic else samples
+    paths = solve(motion.mechanism, np.linspace(distinct[0], distinct[-1], steps + 1), reference, tolerant=True)
+    found = toggles_between(motion.at_positions(first), [int(index) for index in first], reference, paths,
+                            closed=False)
+    if not found:
+        return motion
+    stepped = tuple(replace(warning, position=int(first[warning.position])) for warning in found)
+    return replace(motion, warnings=tuple(sorted(motion.warnings + stepped, key=lambda w: w.position)))
+
+
 def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Reference,
-                    sweep: Motion) -> tuple[PositionWarning, ...]:
+                    sweep: Motion, closed: bool | None = None) -> tuple[PositionWarning, ...]:
     """A warning at each analysed position after which a group passes a toggle before the next one.
 
     Between two regular positions a group's lines of action can come within ILL_CONDITIONED_DEG of
     parallel, unseen by either position.  There the real mechanism may go on in the other assembly
     (a change-point linkage turns from parallelogram to anti-parallelogram) while the solver keeps
     the branch it chose, so every later position would be of another mechanism.  ``sweep`` is the
-    motion over the driver's whole range (the paths), solved with ``reference``; each local least
+    motion over the driver's whole range (the paths), solved with ``reference``, a crank's whole turn from
+    the first position back to it unless not ``closed``; each local least
     sine in it is narrowed by a zoom to where the group comes closest to the toggle.  A toggle
     within a sample of an analysed position that is itself ill-conditioned is that position's,
     and already warned of.
@@ -419,7 +481,7 @@ def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Referen
     limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
     x = sweep.driver
     span = float(x[-1] - x[0])
-    cyclic = mechanism.driver.cyclic
+    cyclic = mechanism.driver.cyclic if closed is None else closed
     brackets, labels = [], []
     for label, sine in sweep.conditioning.items():
         sine = np.nan_to_num(sine, nan=0.0)

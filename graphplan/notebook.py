@@ -16,6 +16,8 @@ from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
 
+import numpy as np
+
 from .analysis import Analysis, PlanPosition, analyse
 from .scene import Scene
 
@@ -30,6 +32,7 @@ class Drawing:
         return self.svg
 
     def save(self, path: str | Path) -> Path:
+        """Write the SVG to ``path`` (its size in mm, as printed); returns the path."""
         path = Path(path)
         path.write_text(self.svg, encoding="utf-8")
         return path
@@ -39,32 +42,44 @@ class Drawing:
 class PositionPlans:
     """The plans of one position: the records, the values read off them, the drawings."""
 
-    analysis: Analysis
-    position: PlanPosition
+    analysis: Analysis = dataclasses.field(repr=False)
+    position: PlanPosition = dataclasses.field(repr=False)
+
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed the whole analysis (hundreds of thousands of characters).
+        return f"<PositionPlans of position {self.number} of {self.analysis.scene.title!r}>"
 
     @property
     def number(self) -> int:
+        """The position's number, as the scene numbers its positions."""
         return self.position.number
 
     @property
     def velocity(self):
+        """The velocity plan: its scale (``scale``, m/s per mm), its vectors and the steps it was built in."""
         return self.position.velocity
 
     @property
     def acceleration(self):
+        """The acceleration plan, as :attr:`velocity`."""
         return self.position.acceleration
 
     @property
     def values(self) -> dict[str, float]:
-        """Every quantity read off the plans as constructed (VB, ω3, aB, ε4, …), SI."""
+        """Every quantity read off the plans as constructed, SI, keyed as the error table names them: ``VB``,
+        ``aB`` (magnitudes, m/s and m/s²), ``omega3``, ``epsilon4`` (rad/s and rad/s², signed, counter-clockwise
+        positive), and the sliding pairs' relative and Coriolis terms (``VA4A3``, ``aA4A3^r``)."""
         return {reading.quantity: reading.value(self.position.plans) for reading in self.position.readings}
 
     @property
     def errors(self):
+        """The error table's rows: each quantity as constructed and as read off the plan against the exact one."""
         return self.position.errors
 
     @property
     def forces(self):
+        """The force analysis of the position (reactions as complex numbers x + iy, N; the balancing load), or
+        None when the scene has no masses and no loads."""
         return self.position.forces
 
     @cached_property
@@ -101,8 +116,9 @@ class PositionPlans:
 def plan(scene: Scene, number: int) -> PositionPlans:
     """The plans of the position numbered ``number`` (as the scene numbers them), drawn whether listed or not."""
     first = scene.positions.number_from
-    if isinstance(number, bool) or not isinstance(number, int):
+    if isinstance(number, bool) or not isinstance(number, int | np.integer):
         raise TypeError(f"a position is named by its number, an integer: plan(5), not plan({number!r})")
+    number = int(number)
     if not first <= number < first + scene.positions.count:
         raise ValueError(f"no position {number}: the scene numbers its positions {first} to "
                          f"{first + scene.positions.count - 1}")

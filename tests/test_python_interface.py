@@ -1,0 +1,111 @@
+"""The Python interface as a notebook uses it: what it hands out, and how it says it was misused.
+
+A researcher's review (solving every fixture from scripts against a loop-closure solver of her own)
+found the numbers right and these faults: a change-point linkage changing its assembly between two
+angles with no warning where the command line warned; arrays that were views of the motion's own,
+so that ``B -= B[0]`` changed the motion; misuse passed on to numpy's errors or taken silently.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.errors import SceneError
+
+RATCHET = "fixtures/ratchet_crank_rocker.toml"
+
+# A change-point four-bar (Grashof's equality: 0.5 + 1 = 1 + 0.5): a parallelogram from φ = 0° to 180°, where
+# the coupler and the rocker come in line with the frame, and the closed form's "left" assembly an
+# anti-parallelogram beyond.
+CHANGE_POINT = """
+[scene]
+title = "change-point four-bar"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [1.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.5
+omega = 10.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [1.0, 0.5]
+assembly = "left"
+"""
+
+
+@pytest.fixture(scope="module")
+def change_point():
+    return graphplan.scene.loads(CHANGE_POINT, source="change-point")
+
+
+def coupler(motion, index: int) -> np.ndarray:
+    return motion.point("B").r[index] - motion.point("A").r[index]
+
+
+def test_a_toggle_between_two_angles_asked_for_is_warned_of_as_the_command_line_does(change_point):
+    angles = np.radians([30.0, 120.0, 210.0, 300.0])
+    motion = graphplan.solve(change_point, driver=angles)
+    # The positions themselves show the change: the coupler parallel to the frame (a parallelogram) at 120°, not
+    # at 210°, where a parallelogram would have it parallel again.
+    assert coupler(motion, 1) == pytest.approx([1.0, 0.0], abs=1e-12)
+    assert abs(coupler(motion, 2)[1]) > 0.1
+    stepped = [w for w in motion.warnings if w.code == "toggle-between"]
+    assert [(w.position, "φ = 180°" in w.detail) for w in stepped] == [(1, True)]
+    # In any order: the warning stays with the position before the toggle in driver order.
+    shuffled = graphplan.solve(change_point, driver=angles[[3, 0, 2, 1]])
+    assert [w.position for w in shuffled.warnings if w.code == "toggle-between"] == [3]
+    # Both angles on one side of the toggles: nothing to warn of.
+    assert not graphplan.solve(change_point, driver=np.radians([30.0, 60.0])).warnings
+
+
+def test_the_arrays_handed_out_are_read_only_and_the_driver_a_copy():
+    scene = graphplan.load(RATCHET)
+    angles = np.radians([0.0, 10.0, 20.0])
+    motion = graphplan.solve(scene, driver=angles)
+    before = motion.point("B").r.copy()
+    b = motion.point("B").r
+    with pytest.raises(ValueError, match="read-only"):
+        b -= b[0]
+    with pytest.raises(ValueError, match="read-only"):
+        motion.link(4).omega[0] = 0.0
+    angles[0] = 5.0
+    assert motion.driver[0] == 0.0
+    assert np.array_equal(motion.point("B").r, before)
+    moved = motion.point("B").r.copy()
+    moved -= moved[0]  # a copy is the caller's own
+    assert np.array_equal(motion.point("B").r, before)
+
+
+@pytest.mark.parametrize("driver", [[1 + 1j], ["1", "2"], [True, False], np.array([0.1, "x"], dtype=object)])
+def test_a_driver_that_is_not_plain_numbers_is_refused(driver):
+    with pytest.raises(SceneError, match=r"^driver: must be an array of numbers .* \(got "):
+        graphplan.solve(graphplan.load(RATCHET), driver=driver)
+
+
+def test_solve_given_a_path_says_it_takes_a_scene():
+    with pytest.raises(TypeError, match=r"solve takes a scene, as graphplan.load\(path\) reads it \(got 'fix"):
+        graphplan.solve(RATCHET, driver=[0.0])
+
+
+def test_positions_picked_by_index_must_be_indices_of_the_motion():
+    motion = graphplan.solve(graphplan.load(RATCHET), driver=np.radians([0.0, 10.0, 20.0]))
+    with pytest.raises(TypeError, match="list of integers"):
+        motion.at_positions([0.5])
+    with pytest.raises(IndexError, match="has 3 positions, indices 0 to 2"):
+        motion.at_positions([5])
+    assert motion.at_positions([-1]).driver == pytest.approx([np.radians(20.0)])
+
+
+def test_a_plan_is_named_by_numpy_s_integers_too_and_prints_in_a_line():
+    scene = graphplan.load(RATCHET)
+    five = scene.plan(np.int64(5))
+    assert five.number == 5
+    assert repr(five) == "<PositionPlans of position 5 of 'Crank-rocker of a ratchet feed'>"
