@@ -43,6 +43,7 @@ from .primitives import (
 
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
 _PATH_STROKE = Stroke(0.25, "#1f5fa8", (2.0, 1.2))
+_CRANK_CIRCLE_STROKE = Stroke(0.25, "#7a7a7a")
 _LABEL = 3.0
 
 
@@ -122,8 +123,15 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
 
 
 def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
-    closed = plan.mechanism.driver.cyclic
+    driver = plan.mechanism.driver
+    closed = driver.cyclic
     items: list[Primitive] = []
+    named = {spec.name for spec in plan.mechanism.scene.points}
+    if driver.kind == "crank" and driver.joint not in named:
+        # The crank pin's circle (a rocking crank's arc), on which the positions are numbered: the first line
+        # a student draws on the plan of positions.
+        pin = np.atleast_1d(plan.paths.points[driver.joint].r)
+        items.append(Polyline(tuple(paper(r) for r in pin), _CRANK_CIRCLE_STROKE, closed=closed))
     for spec in plan.mechanism.scene.points:
         track = np.atleast_1d(plan.paths.points[spec.name].r)
         if len(track) > 1 and np.ptp(track.real) + np.ptp(track.imag) > 0:
