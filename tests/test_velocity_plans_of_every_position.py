@@ -178,6 +178,33 @@ def test_on_a_small_sheet_the_plans_stand_apart_each_once_in_the_order_of_the_po
         assert firsts == sorted(firsts)
 
 
+def test_a_grid_no_sheet_holds_stands_row_by_row_in_the_order_of_the_positions():
+    """A teacher's A3 sheets of a shaper: the plans apart, each where it fitted best, read 1; 2, 3, 4; 5, 6 on
+    the right; 7, 8; 10 before 9. The grid now stands row by row, each row left to right, the rows down the
+    sheets in order (a row too wide for a sheet plan by plan, still in order)."""
+    from graphplan.render.packing import pack
+    from graphplan.render.sheet import velocity_plans_panel
+
+    analysis = drawings.with_length_scale(analysed("shaper_six_bar"))
+    panel = velocity_plans_panel(analysis)
+    assert panel.in_order and all(part.name.startswith("velocity-plans-row-") for part in panel.parts)
+    numbers_by_row = [[int(plan.name.rsplit("-", 1)[1]) for plan in row.parts] for row in panel.parts]
+    assert [number for row in numbers_by_row for number in row] == list(analysis.positions.numbers)
+    for sheet in ("A3", "A4"):
+        pages = pack([panel], sheet, "iso")
+        placed = [way for page in pages for way, _, _ in page.placed]
+        assert len(placed) > 1, sheet  # the grid does not stand whole on these sheets
+        # Whole rows, or the plans of a row apart, placed in the positions' order (each where it reads after the
+        # ones before it: under them, or at the top of the next column).
+        numbers = [int(plan.name.rsplit("-", 1)[1]) for way in placed
+                   for plan in (way.parts if way.name.startswith("velocity-plans-row-") else (way,))]
+        assert numbers == list(analysis.positions.numbers), sheet
+        for page in pages:
+            rects = [rect for _, rect, _ in page.placed]
+            for k, rect in enumerate(rects):
+                assert all(rect[0] >= before[2] - 1e-6 or rect[3] < before[3] - 1e-6 for before in rects[:k])
+
+
 def test_a_plan_set_apart_has_its_caption_under_its_middle_and_the_first_not_under_the_title():
     """Set apart on a small sheet, the first plan's caption was centred under the title it carries, 90 mm off
     its plan (a user's A4 sheet of a shaper)."""

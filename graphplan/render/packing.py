@@ -73,6 +73,9 @@ class Panel:
     # False for a drawing to no length scale (a kinematic diagram, a plot of the dynamics): a sheet of such alone
     # leaves its title block's scale box empty.
     to_scale: bool = True
+    # True where the parts are a sequence read in its order (the velocity plans of positions 1, 2, 3, … by rows):
+    # they are never put tallest or largest first to save a sheet.
+    in_order: bool = False
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -334,9 +337,10 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
 
     Tried in turn: the parts as given, then each part that holds several
     drawings (a group and its polygon) cut into them, each in the given
-    order and tallest, largest and widest first; of two arrangements on as
-    many pages the first tried is kept, so that a drawing stays with its
-    neighbours and in reading order where that costs no sheet.
+    order and, unless the panel's parts are a sequence read in order
+    (``in_order``), tallest, largest and widest first; of two arrangements on as many pages the first tried is
+    kept, so that a drawing stays with its neighbours and in reading order
+    where that costs no sheet.
     """
     def held(part: Panel) -> bool:
         return any(_empty_page(sheet, form, portrait).fits_empty(part) for portrait in turns)
@@ -347,8 +351,11 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
     single = smallest_drawings(grouped)
     best: list[Page] | None = None
     for parts in (grouped, single):
-        for order in (parts, sorted(parts, key=lambda part: -height(part)),
-                      sorted(parts, key=lambda part: -_area(part)), sorted(parts, key=lambda part: -width(part))):
+        orders = [parts]
+        if not panel.in_order:
+            orders += [sorted(parts, key=lambda part: -height(part)), sorted(parts, key=lambda part: -_area(part)),
+                       sorted(parts, key=lambda part: -width(part))]
+        for order in orders:
             pages: list[Page] = []
             for part in order:
                 if pages and pages[-1].place(part):

@@ -215,10 +215,18 @@ def velocity_plans_panel(analysis: Analysis) -> Panel:
     drawing = velocity_plans_drawing(analysis)
     label = strings(analysis.scene.locale)["velocity_plans_heading"]
     counts = (None, *range(1, min(len(drawing.plans), _MOST_VELOCITY_PLAN_COLUMNS) + 1))
-    first, *others = (split(arrangement, "velocity-plans", label)
+    first, *others = (replace(split(arrangement, "velocity-plans", label, _row_of(arrangement)), in_order=True)
                       for arrangement in velocity_plans_layout.arrangements(drawing, counts))
     others = [way for way in others if _size(way.layers) != _size(first.layers)]
     return replace(first, alternatives=tuple(others))
+
+
+def _row_of(arrangement: Arrangement) -> Callable[[str], str]:
+    """The part a plan of the grid goes in where no sheet holds the grid whole: its row, so that the rows stand
+    on the sheets in order and each reads left to right (the plans one by one, placed where each fits best,
+    read 1, 5, 2, 3, 4, 6, …); a row no sheet holds stands apart plan by plan."""
+    tops = sorted({round(top, 6) for _, _, _, top in arrangement.fields.values()}, reverse=True)
+    return lambda field: f"row-{tops.index(round(arrangement.fields[field][3], 6)) + 1}"
 
 
 def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
