@@ -352,20 +352,33 @@ class MachineDynamics:
                           start_up_time=motion.start_up_time(5.0))
         if motion.stalled_at is not None:
             result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=self.stall_angle_deg())
+        elif motion.stopped_at is not None:
+            result.update(stopped_at=motion.stopped_at, stopped_at_angle_deg=self.rest_angle_deg())
         return result
 
     def stall_angle_deg(self) -> float | None:
-        """Where the machine stalled, as the driver's ``angle_deg`` reads (the crank's own angle, 0…360°): the run
-        counts its angle from the first position, where the equivalent model starts."""
+        """Where the machine stalled, as the driver's ``angle_deg`` reads (:meth:`rest_angle_deg`); None where it
+        did not."""
         motion = self.motion
         if motion is None or motion.stalled_at is None:
+            return None
+        return self.rest_angle_deg()
+
+    def rest_angle_deg(self) -> float | None:
+        """Where the machine came to rest for good (stalled, or run down with the motor off), as the driver's
+        ``angle_deg`` reads (the crank's own angle, 0…360°): the run counts its angle from the first position,
+        where the equivalent model starts.  None where it did not."""
+        motion = self.motion
+        if motion is None or motion.stopped_at is None:
             return None
         model = self.model
         return math.degrees(float(model.driver[0]) + model.sense * float(motion.phi[-1])) % 360.0
 
     def stall_place(self, text: Mapping[str, str], written: Callable[[float], str]) -> str:
-        """The stall's angle in words: the crank's own, and where the run's plots count it from (position 1)."""
-        crank, turned = written(self.stall_angle_deg()), written(self.motion.stalled_at_angle_deg)
+        """Where the machine came to rest, in words: the crank's own angle, and where the run's plots count it
+        from (position 1)."""
+        turned_deg = math.degrees(float(self.motion.phi[-1])) % 360.0
+        crank, turned = written(self.rest_angle_deg()), written(turned_deg)
         if self.first_position is None:
             return f"{crank}°"
         return text["angle_and_turned"].format(angle=crank, turned=turned, number=self.first_position)

@@ -207,7 +207,9 @@ class Flywheel:
     simpler methods.  ``omega`` is the crank's speed over the cycle with the flywheel of
     ``inertia`` fitted, ``kinetic_energy_start`` the machine's kinetic energy at the first
     sample.  ``moved`` is J_F on the shaft turning at ``shaft_rpm``, when one is given.
-    A J_F ≤ 0 means the machine keeps within δ without a flywheel.
+    ``required`` is the tangents' J_F with its sign: ≤ 0 where the machine's own inertia keeps it
+    within δ, and then no flywheel is mounted (``inertia`` 0) and ``omega`` is the speed the machine
+    has with its own inertia alone, at the same ωm = (ωmax + ωmin)/2, within ``reached`` ≤ δ.
     """
 
     delta: float
@@ -223,6 +225,12 @@ class Flywheel:
     omega: np.ndarray
     shaft_rpm: float | None = None
     moved: float | None = None
+    required: float = 0.0
+
+    @property
+    def reached(self) -> float:
+        """The δ the machine has with the flywheel mounted: the one asked for, or less without a flywheel."""
+        return (self.omega_max - self.omega_min) / self.omega_mean
 
     @property
     def omega_max(self) -> float:
@@ -272,16 +280,50 @@ def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None 
     fastest, slowest = speed_limits(omega_mean, delta)
     upper = _tangent(energy, inertia, 0.5 * fastest * fastest, above=True)
     lower = _tangent(energy, inertia, 0.5 * slowest * slowest, above=False)
-    exact = (upper.intercept - lower.intercept) / (upper.slope - lower.slope)
-    start = upper.slope * exact - upper.intercept   # T0: both tangents pass through (−J_F, −T0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        omega = np.sqrt(np.maximum(2.0 * (start + energy), 0.0) / (exact + inertia))
+    required = (upper.intercept - lower.intercept) / (upper.slope - lower.slope)
+    if required > 0:
+        mounted = required
+        start = upper.slope * required - upper.intercept   # T0: both tangents pass through (−J_F, −T0)
+    else:
+        # A negative flywheel cannot be mounted: the machine turns with its own inertia, the faster for it.
+        mounted = 0.0
+        start = _start_energy(energy, inertia, omega_mean)
+    omega = _speed(start, energy, inertia + mounted)
     moved = None
     if shaft_rpm is not None:
-        moved = moved_inertia(exact, omega_to_rpm(omega_mean), shaft_rpm)
-    return Flywheel(delta=delta, omega_mean=omega_mean, delta_w_max=delta_w_max, inertia=exact,
+        moved = moved_inertia(mounted, omega_to_rpm(omega_mean), shaft_rpm)
+    return Flywheel(delta=delta, omega_mean=omega_mean, delta_w_max=delta_w_max, inertia=mounted,
                     approximate=approximate, mertsalov=mertsalov, constant_inertia=constant, upper=upper,
-                    lower=lower, kinetic_energy_start=start, omega=omega, shaft_rpm=shaft_rpm, moved=moved)
+                    lower=lower, kinetic_energy_start=start, omega=omega, shaft_rpm=shaft_rpm, moved=moved,
+                    required=required)
+
+
+def _speed(start: float, energy: np.ndarray, inertia: np.ndarray) -> np.ndarray:
+    """ω = √(2·(T0 + ΔT)/J) over the cycle."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.sqrt(np.maximum(2.0 * (start + energy), 0.0) / inertia)
+
+
+def _start_energy(energy: np.ndarray, inertia: np.ndarray, omega_mean: float) -> float:
+    """T0 at which the machine of ``inertia`` alone turns at ``omega_mean`` = (ωmax + ωmin)/2.
+
+    The mean of the extremes rises with T0; from the T0 at which the speed just touches zero (a
+    machine that keeps within δ < 2 turns faster) to the one at which even its slowest point turns
+    at ωm, it crosses ωm once.  With a constant J this gives δ = ΔWmax/(J·ωm²) exactly.
+    """
+    from scipy.optimize import brentq  # here: scipy.optimize takes a second to import, and few machines need it
+
+    def middle_less_mean(start: float) -> float:
+        omega = _speed(start, energy, inertia)
+        return 0.5 * (float(np.max(omega)) + float(np.min(omega))) - omega_mean
+
+    low = -float(np.min(energy))
+    high = float(np.max(0.5 * omega_mean * omega_mean * inertia - energy))
+    if middle_less_mean(low) >= 0.0:
+        return low
+    if middle_less_mean(high) <= 0.0:
+        return high
+    return float(brentq(middle_less_mean, low, high, xtol=1e-14 * max(abs(high), 1.0), rtol=1e-15))
 
 
 def _tangent(energy: np.ndarray, inertia: np.ndarray, slope: float, above: bool) -> Tangent:
@@ -540,6 +582,8 @@ def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -
             "delta": float(flywheel.delta),
             "omega_mean": float(flywheel.omega_mean),
             "flywheel_inertia": float(flywheel.inertia),
+            "flywheel_inertia_required": float(flywheel.required),
+            "delta_reached": float(flywheel.reached),
             "flywheel_inertia_approximate": float(flywheel.approximate),
             "flywheel_inertia_mertsalov": float(flywheel.mertsalov),
             "constant_reduced_inertia": float(flywheel.constant_inertia),

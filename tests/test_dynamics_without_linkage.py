@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -251,3 +252,183 @@ def test_a_motor_that_settles_away_from_the_flywheel_s_speed_is_warned_of(tmp_pa
     if warned:
         assert f"ωm = {motion['omega_mean']:.4g} rad/s" in lines[0] and f"the {sized:.4g} rad/s" in lines[0]
         assert f"δ = {motion['delta']:.4g}" in lines[0]
+
+
+# --- a student's own integrations of the press (solve_ivp in the test, closed forms) -------------
+
+OMEGA_PRESS = 100 * math.pi / 30
+# The press's resistance as torques at its 100 rpm: light over the idle 120°, heavy over the rest.
+LIGHT, HEAVY = 367.7 / OMEGA_PRESS, 3677.0 / OMEGA_PRESS
+MEAN_RESISTANCE = (LIGHT + 2.0 * HEAVY) / 3.0
+# ΔWmax in closed form: the constant drive gains on the light stroke what the heavy one takes back.
+DELTA_W_MAX = (MEAN_RESISTANCE - LIGHT) * 2.0 * math.pi / 3.0
+
+
+def press_resistance(phi: float) -> float:
+    return LIGHT if math.degrees(phi) % 360.0 < 120.0 else HEAVY
+
+
+def steady_turn_by_solve_ivp(shaft_torque, inertia: float, end: float) -> tuple[float, float]:
+    """(ωm = 2π/T, δ = (ωmax − ωmin)/((ωmax + ωmin)/2)) of the last whole turn of the press run up from rest on a
+    shaft of constant ``inertia``, integrated here with scipy alone."""
+    from scipy.integrate import solve_ivp
+    from scipy.optimize import brentq
+
+    run = solve_ivp(lambda t, y: [y[1], (shaft_torque(y[1]) - press_resistance(y[0])) / inertia], (0.0, end),
+                    [0.0, 0.0], rtol=1e-10, atol=1e-12, max_step=2e-3, dense_output=True)
+    turns = int(run.y[0, -1] / (2 * math.pi)) - 1
+    begin, finish = (brentq(lambda t, k=k: run.sol(t)[0] - 2 * math.pi * k, 0.0, end) for k in (turns, turns + 1))
+    omega = run.sol(np.linspace(begin, finish, 20001))[1]
+    return 2 * math.pi / (finish - begin), (omega.max() - omega.min()) / ((omega.max() + omega.min()) / 2)
+
+
+def test_only_the_rotor_is_reduced_by_the_gear_ratio_squared(tmp_path):
+    """inertia = 50 kg·m² is on the press's own shaft: the shaft turns with 50 + JF + 0.02·14.4² kg·m², not with
+    50·14.4²; a student's solve_ivp of that shaft gives ωm = 7.800 rad/s and δ = 0.0845."""
+    motor = ('motor = { kind = "linear", stall_torque = 60.0, no_load_rpm = 1500, gear_ratio = 14.4, '
+             'rotor_inertia = 0.02 }')
+    found = dynamics_of(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 50.0\n" + motor))
+    flywheel = DELTA_W_MAX / (OMEGA_PRESS ** 2 * 0.05) - 50.0
+    assert found["flywheel_inertia"] == pytest.approx(flywheel, rel=1e-9)
+    no_load = 1500 * math.pi / 30
+    mean, delta = steady_turn_by_solve_ivp(lambda w: 14.4 * 60.0 * (1 - 14.4 * w / no_load),
+                                           50.0 + flywheel + 0.02 * 14.4 ** 2, 30.0)
+    assert found["motion"]["omega_mean"] == pytest.approx(mean, rel=1e-4)
+    assert found["motion"]["delta"] == pytest.approx(delta, rel=2e-3)
+
+
+J100_DIRECT = PRESS.replace("inertia = 0.0", "inertia = 100.0\n"
+                            'motor = { kind = "linear", stall_torque = 864.0, no_load_rpm = 104.1666666667 }')
+
+
+def test_a_machine_heavier_than_its_flywheel_gets_none_and_turns_with_its_own_inertia(tmp_path):
+    """100 kg·m² of its own where δ = 0.05 asks for 80.47: no flywheel is mounted (it was −19.53 in results.json
+    and in the equation of motion), and the speed swings by the δ = ΔWmax/(J·ωm²) the machine has."""
+    found = dynamics_of(tmp_path, J100_DIRECT)
+    assert found["flywheel_inertia"] == 0.0
+    assert found["flywheel_inertia_required"] == pytest.approx(DELTA_W_MAX / (OMEGA_PRESS ** 2 * 0.05) - 100.0,
+                                                               rel=1e-9)
+    reached = DELTA_W_MAX / (100.0 * OMEGA_PRESS ** 2)
+    assert found["delta_reached"] == pytest.approx(reached, rel=1e-9)
+    assert found["omega_max"] == pytest.approx(OMEGA_PRESS * (1 + reached / 2), rel=1e-9)
+    assert found["omega_min"] == pytest.approx(OMEGA_PRESS * (1 - reached / 2), rel=1e-9)
+    assert found["motion"]["flywheel_inertia"] == 0.0
+    no_load = 104.1666666667 * math.pi / 30
+    mean, delta = steady_turn_by_solve_ivp(lambda w: 864.0 * (1 - w / no_load), 100.0, 25.0)
+    assert found["motion"]["omega_mean"] == pytest.approx(mean, rel=1e-4)
+    assert found["motion"]["delta"] == pytest.approx(delta, rel=2e-3)
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert "JF = −19.527 kg·m² ≤ 0" in note and f"δ = {reached:.4f}" in note
+
+
+FLAT = """\
+[scene]
+title = "A constant resistance"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_torque = [[0, 245.789], [360, 245.789]]
+driving = "constant"
+inertia = 1.0
+"""
+
+
+def test_a_machine_with_no_fluctuation_turns_at_its_mean_speed_without_a_flywheel(tmp_path):
+    found = dynamics_of(tmp_path, FLAT)
+    assert found["flywheel_inertia"] == 0.0 and found["flywheel_inertia_required"] == pytest.approx(-1.0)
+    assert found["delta_reached"] == 0.0
+    assert found["omega_max"] == pytest.approx(OMEGA_PRESS, rel=1e-10)
+    assert found["omega_min"] == pytest.approx(OMEGA_PRESS, rel=1e-10)
+
+
+def test_a_constant_motor_against_a_constant_resistance_is_refused_as_a_runaway_not_for_its_inertia(tmp_path, capsys):
+    """inertia = 1 was given: the −1 kg·m² flywheel no longer cancels it; 17.5·14.4 = 252 N·m > 245.789 N·m."""
+    status, out = run(tmp_path, FLAT + 'motor = { kind = "constant", torque = 17.5, gear_ratio = 14.4 }\n')
+    err = capsys.readouterr().err.strip()
+    assert status == 2 and not out.exists()
+    assert err == (f"graphplan: error: dynamics: motor: its torque on the shaft, {17.5 * 14.4:.6g} N·m, exceeds the "
+                   "mean resistance, 245.789 N·m, at every speed: the machine speeds up without end and has no "
+                   "steady state; give a duration, more resistance, or a motor whose torque falls with speed "
+                   "(linear, kloss)")
+
+
+BORDER = f"""\
+[scene]
+title = "A motor just short of the mean resistance"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_torque = [[0, {LIGHT!r}], [120, {LIGHT!r}], [120, {HEAVY!r}], [360, {HEAVY!r}]]
+driving = "constant"
+motor = {{ kind = "constant", torque = 17.0, gear_ratio = 14.4 }}
+"""
+
+
+def test_a_motor_below_the_exact_mean_resistance_stalls_rather_than_being_refused(tmp_path):
+    """244.8 N·m against a mean of (M1 + 2·M2)/3 = 245.79 N·m (64 samples made it 242.5 and refused a runaway):
+    from rest the press gains over the light 120° and loses over the heavy stroke; by the energy balance it stops
+    where 244.8·φ = ∫Mr dφ, inside its first turn, which a solve_ivp of the same shaft confirms in time."""
+    from scipy.integrate import solve_ivp
+
+    found = dynamics_of(tmp_path, BORDER)["motion"]
+    drive = 17.0 * 14.4
+    stop = (2 * math.pi / 3 * (HEAVY - LIGHT)) / (HEAVY - drive)   # drive·φ = M1·2π/3 + M2·(φ − 2π/3)
+    assert found["stalled_at_angle_deg"] == pytest.approx(math.degrees(stop), abs=1e-3)
+    inertia = DELTA_W_MAX / (OMEGA_PRESS ** 2 * 0.05)
+    stopped = solve_ivp(lambda t, y: [y[1], (drive - press_resistance(y[0])) / inertia], (0.0, 30.0), [0.0, 0.0],
+                        rtol=1e-10, atol=1e-12, max_step=2e-3, events=lambda t, y: y[1] if t > 0.1 else 1.0)
+    assert found["stalled_at"] == pytest.approx(float(stopped.t_events[0][0]), rel=1e-5)
+
+
+def test_the_time_and_place_of_a_run_down_are_written(tmp_path):
+    """Switched off at 10 s the press runs down: results.json and the note give when and where it comes to rest
+    (12.3157 s by a student's solve_ivp, repeated here)."""
+    from scipy.integrate import solve_ivp
+
+    motor = ('motor = { kind = "linear", stall_torque = 60.0, no_load_rpm = 1500, gear_ratio = 14.4, '
+             'rotor_inertia = 0.02, off_at = 10.0 }')
+    found = dynamics_of(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 0.0\n" + motor))
+    motion = found["motion"]
+    inertia = found["flywheel_inertia"] + 0.02 * 14.4 ** 2
+    no_load = 1500 * math.pi / 30
+
+    def torque(t, omega):
+        return 14.4 * 60.0 * (1 - 14.4 * omega / no_load) if t < 10.0 else 0.0
+
+    def at_rest(t, y):
+        return y[1] if t > 10.0 else 1.0
+    at_rest.terminal = True
+    own = solve_ivp(lambda t, y: [y[1], (torque(t, y[1]) - press_resistance(y[0])) / inertia], (0.0, 30.0),
+                    [0.0, 0.0], rtol=1e-10, atol=1e-12, max_step=2e-3, events=at_rest)
+    assert motion["stopped_at"] == pytest.approx(float(own.t_events[0][0]), rel=1e-5)
+    assert motion["stopped_at_angle_deg"] == pytest.approx(math.degrees(own.y_events[0][0][0]) % 360.0, abs=0.01)
+    assert "stalled_at" not in motion
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert (f"The motor is switched off at t = 10 s: the machine runs down and comes to rest at "
+            f"t = {motion['stopped_at']:.4g} s") in note
+
+
+@pytest.mark.parametrize(("off_at", "message"), [
+    ("-1", "dynamics.motor.off_at: must be >= 0 (got -1)"),
+    ("0", "dynamics.motor.off_at: switches the motor off as a run from rest begins"),
+])
+def test_a_motor_switched_off_before_a_run_from_rest_is_refused(tmp_path, capsys, off_at, message):
+    motor = f'motor = {{ kind = "constant", torque = 50, off_at = {off_at} }}'
+    status, out = run(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 0.0\n" + motor))
+    err = capsys.readouterr().err.strip()
+    assert status == 2 and not out.exists()
+    assert len(err.splitlines()) == 1 and err.startswith(f"graphplan: error: {message}"), err
+
+
+def test_a_motor_switched_off_at_the_start_runs_a_machine_down_from_its_starting_speed(tmp_path):
+    """off_at = 0 with a start at speed is a run-down from that speed: with the constant resistance Mr and J, it
+    stops at t = J·ω0/Mr."""
+    text = FLAT + ('motor = { kind = "constant", torque = 17.0, gear_ratio = 14.4, off_at = 0 }\n'
+                   "start = { omega = 10.0 }\n")
+    motion = dynamics_of(tmp_path, text)["motion"]
+    assert motion["stopped_at"] == pytest.approx(1.0 * 10.0 / 245.789, rel=1e-6)
+
+
+def test_the_integrator_s_reason_sets_the_threshold_against_the_stiffness_number(tmp_path):
+    motion = dynamics_of(tmp_path, BORDER)["motion"]
+    assert re.search(r"= 0 ≤ 3\.0; cycle [\d.e+]+ s\): RK45$", motion["method_reason"]), motion["method_reason"]

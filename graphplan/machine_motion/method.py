@@ -71,7 +71,15 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
 
 
 def _mean_surplus(machine: Machine, motor: Motor):
-    """The motor's torque less the resistance's mean over a turn, as a function of the speed (N·m)."""
+    """The motor's torque less the resistance's mean over a turn, as a function of the speed (N·m).
+
+    A resistance with jumps depends on the angle alone and is integrated piece by piece; a smooth
+    periodic one is averaged over equal steps, which the trapezoidal rule integrates to the rounding."""
+    pieces = machine.moment
+    if pieces is not None:
+        mean = pieces.mean()
+        return lambda omega: motor.shaft_torque(omega) - mean
+
     def surplus(omega: float) -> float:
         return motor.shaft_torque(omega) - float(np.mean([machine.mr(a, omega) for a in _TURN]))
     return surplus
@@ -121,14 +129,16 @@ def choose_method(equations: Equations, omega_run: float, rtol: float, atol: flo
     step = _explicit_step(equations, omega_run, rtol, atol)
     stiffness = decay * step
     period = TWO_PI / omega_run
-    scale = (f"largest decay rate |∂f/∂ω| = {decay:.3g} 1/s (time constant {1 / decay:.3g} s) × RK45's step "
-             f"for accuracy {step:.3g} s = {stiffness:.3g}; cycle {period:.3g} s") if decay > 0 else \
-            f"no decaying mode (|∂f/∂ω| = 0); RK45's step for accuracy {step:.3g} s, cycle {period:.3g} s"
+    # The threshold follows the stiffness number it is set against; the cycle, a time, comes after it.
+    number = (f"largest decay rate |∂f/∂ω| = {decay:.3g} 1/s (time constant {1 / decay:.3g} s) × RK45's step "
+              f"for accuracy {step:.3g} s = {stiffness:.3g}") if decay > 0 else \
+             f"no decaying mode: |∂f/∂ω| = 0 × RK45's step for accuracy {step:.3g} s = {stiffness:.3g}"
+    cycle = f"cycle {period:.3g} s"
     if is_stiff(stiffness):
-        return "LSODA", (f"auto: stiff, stability would hold the explicit step ({scale} > {STIFFNESS_THRESHOLD}): "
-                         "LSODA"), stiffness
+        return "LSODA", (f"auto: stiff, stability would hold the explicit step ({number} > {STIFFNESS_THRESHOLD}; "
+                         f"{cycle}): LSODA"), stiffness
     method = "DOP853" if rtol < 1e-8 else "RK45"
-    return method, f"auto: not stiff ({scale} ≤ {STIFFNESS_THRESHOLD}): {method}", stiffness
+    return method, f"auto: not stiff ({number} ≤ {STIFFNESS_THRESHOLD}; {cycle}): {method}", stiffness
 
 
 def _explicit_step(equations: Equations, omega_run: float, rtol: float, atol: float) -> float:

@@ -67,7 +67,7 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
     kind = table.choice("kind", MOTOR_KINDS)
     drive = {"gear_ratio": table.number("gear_ratio", 1.0, positive=True),
              "rotor_inertia": table.number("rotor_inertia", 0.0, non_negative=True)}
-    off_at = table.number("off_at", None)
+    off_at = table.number("off_at", None, non_negative=True)
     if kind == "constant":
         motor: Motor = ConstantTorque(table.number("torque"), **drive)
     elif kind == "linear":
@@ -157,7 +157,8 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     owned = isinstance(table_or_dict, Table)
     table = table_or_dict if owned else Table(dict(table_or_dict) if isinstance(table_or_dict, Mapping)
                                               else table_or_dict, path)
-    motor, off_at = _read_motor(table.table("motor"))
+    motor_table = table.table("motor")
+    motor, off_at = _read_motor(motor_table)
     brake_table = table.table("brake", None)
     clutch_table = table.table("clutch", None)
     brake = _read_brake(brake_table) if brake_table is not None else None
@@ -166,6 +167,10 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
         raise SceneError(clutch_table.where("inertia"), "the clutch's driving half needs an inertia: "
                          "give clutch.inertia or motor.rotor_inertia")
     start = _read_start(table.raw("start", "rest"), table.where("start"), clutch)
+    if off_at == 0 and start.omega == 0 and not start.driving_omega:
+        # Nothing would ever move: the run would integrate a machine at rest to the longest run it allows.
+        raise SceneError(motor_table.where("off_at"), "switches the motor off as a run from rest begins, so the "
+                         "machine never turns: give off_at > 0, or a start with a speed to run down from", off_at)
     duration = table.number("duration", None, positive=True)
     method = table.choice("method", METHODS, "auto")
     rtol = table.number("rtol", DEFAULT_RTOL, positive=True)

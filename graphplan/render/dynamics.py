@@ -360,7 +360,7 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
         words["dyn_delta"].format(delta=short(flywheel.delta), omega=short(flywheel.omega_mean, 5),
                               rpm=short(omega_to_rpm(flywheel.omega_mean), 5)),
         words["dyn_delta_w_max"].format(value=short(flywheel.delta_w_max, 5)),
-        words["dyn_exact"].format(value=short(flywheel.inertia, 5)),
+        words["dyn_exact"].format(value=short(flywheel.required, 5)),
         words["dyn_approximate"].format(value=short(flywheel.approximate, 5)),
         words["dyn_mertsalov"].format(value=short(flywheel.mertsalov, 5), constant=short(flywheel.constant_inertia, 4)),
     ]

@@ -99,7 +99,9 @@ def _flywheel(note: Writer, flywheel, model) -> None:
     from ..flywheel import omega_to_rpm
 
     if flywheel.inertia <= 0:
-        note.para(note.t("note_dyn_no_flywheel", delta=note.n(flywheel.delta)))
+        note.para(note.t("note_dyn_no_flywheel", delta=note.n(flywheel.delta), required=note.n(flywheel.required),
+                         reached=note.n(flywheel.reached, 4), high=note.n(flywheel.omega_max),
+                         low=note.n(flywheel.omega_min)))
         return
     omega = flywheel.omega_mean
     note.para(note.t("note_dyn_flywheel", delta=note.n(flywheel.delta), omega=note.n(omega),
@@ -130,8 +132,12 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
         if dynamics.flywheel_inertia > 0 else ""
     note.para(note.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=_method_reason(note, dynamics)))
     steady = motion.steady
+    # Stopped with the motor on is a stall; stopped after it was switched off, a run-down.
+    run_down = motion.stalled_at is None and motion.stopped_at is not None
     if steady is None:
-        if motion.stalled_at is None:
+        if run_down:
+            _run_down(note, dynamics)
+        elif motion.stalled_at is None:
             note.para(note.text["note_dyn_no_steady"])
         else:
             note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4),
@@ -143,6 +149,16 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
                      delta=note.n(cycle.delta, 4), middle=note.n(cycle.middle_speed)))
     if flywheel is not None and flywheel.inertia > 0:
         note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
+    if run_down:
+        _run_down(note, dynamics)
+
+
+def _run_down(note: Writer, dynamics) -> None:
+    """When the machine, its motor switched off, came to rest, and where."""
+    motion = dynamics.motion
+    note.para(note.t("note_dyn_stopped", off=note.n(dynamics.spec.motion.motor_off_at, 4),
+                     time=note.n(motion.stopped_at, 4),
+                     angle=dynamics.stall_place(note.text, lambda value: note.n(value, 4))))
 
 
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:
