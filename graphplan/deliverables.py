@@ -478,17 +478,22 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
         found["balancing.svg"] = balancing_diagram(analysis)
     if "vibration" in pieces:
-        from .report.vibration_plots import magnification_figure, transmissibility_figure
+        from .report.vibration_plots import magnification_figure, transmissibility_figure, words_for
         from .vibration import steady_state
 
-        assert scene.vibration is not None
-        response = steady_state(scene.vibration)
-        operating = (response.frequency_ratio, scene.vibration.damping_ratio)
-        text = strings(scene.locale)
-        for name, plot in (("magnification", magnification_figure), ("transmissibility", transmissibility_figure)):
-            stream = io.StringIO()
-            plot(stream, operating=operating, text=text)
-            found[f"vibration_{name}.svg"] = stream.getvalue()
+        spec = scene.vibration
+        assert spec is not None
+        response = steady_state(spec)
+        operating = (response.frequency_ratio, spec.damping_ratio)
+        text = words_for(spec, strings(scene.locale))
+        design = None if response.isolation_ratio is None or spec.transmissibility is None \
+            else (response.isolation_ratio, spec.transmissibility)
+        stream = io.StringIO()
+        magnification_figure(stream, operating=operating, text=text)
+        found["vibration_magnification.svg"] = stream.getvalue()
+        stream = io.StringIO()
+        transmissibility_figure(stream, operating=operating, design=design, text=text)
+        found["vibration_transmissibility.svg"] = stream.getvalue()
     return found
 
 
@@ -572,6 +577,12 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "balancing" in pieces and warn is not None and (couple := _static_couple(scene)) is not None:
         warn(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its masses "
              "turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
+    if "vibration" in pieces and warn is not None:
+        from .vibration import resonance_warning
+
+        assert scene.vibration is not None
+        if (near := resonance_warning(scene.vibration)) is not None:
+            warn(near)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))

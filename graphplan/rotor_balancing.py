@@ -224,13 +224,15 @@ class CorrectionPlane:
 
     @property
     def mass_radius(self) -> float:
-        """|mb·rb| (kg·m), the correction's mass-radius product."""
-        return abs(self.correction)
+        """|mb·rb| (kg·m), the correction's mass-radius product; 0 where the plane needs none, not the rounding left
+        where the shares close by themselves (1e-16 kg·m), in the results, the drawing and the note alike."""
+        return abs(self.correction) if self.needed else 0.0
 
     @property
     def needed(self) -> bool:
-        """Whether the plane needs a correction: the masses' shares do not close by themselves (but for rounding)."""
-        return self.mass_radius > NEGLIGIBLE * sum(abs(share) for share in self.shares)
+        """Whether the plane needs a correction: the masses' shares do not close by themselves (but for rounding,
+        below :data:`NEGLIGIBLE` of the shares' Σ |(mi·ri)plane|, the masses' m·r carried to the plane)."""
+        return abs(self.correction) > NEGLIGIBLE * sum(abs(share) for share in self.shares)
 
     @property
     def angle_deg(self) -> float:
@@ -268,6 +270,32 @@ class BalancingResult:
     def kind(self) -> str:
         return "dynamic" if self.spec.dynamic else "static"
 
+    @property
+    def residual(self) -> tuple[float, float]:
+        """|Σ m·r| (kg·m) and |Σ m·r·z| (kg·m², about z = 0) of the corrected rotor, each written 0 where it is
+        rounding (:meth:`_written`)."""
+        return self._written(self.residual_force, self.residual_moment)
+
+    @property
+    def unbalance_written(self) -> tuple[float, float]:
+        """|Σ m·r| (kg·m) and |Σ m·r·z| (kg·m², about z = 0) of the rotor before correction, rounding written 0."""
+        return self._written(self.unbalance, self.unbalance_moment)
+
+    def _written(self, force: complex, moment: complex) -> tuple[float, float]:
+        """|force|, |moment|, each 0 below :data:`NEGLIGIBLE` of the rotor's own unbalance, Σ |mi·ri| (not of
+        corrections that cancellation may have blown up); the moment's at the arm of the rotor's plane farthest
+        from z = 0, masses' or corrections', the most a force left by rounding can have."""
+        own = sum(abs(mass.unbalance) for mass in self.spec.masses)
+        farthest = max(abs(z) for z in (*(mass.plane for mass in self.spec.masses), *self.spec.correction_planes))
+        return _above_noise(abs(force), own), _above_noise(abs(moment), own * farthest)
+
+    @property
+    def balanced(self) -> bool:
+        """Whether the corrections leave nothing but rounding: of the force, and in two planes of the moment too
+        (one plane leaves the couple of masses in other planes, :func:`static_couple`)."""
+        force, moment = self.residual
+        return force == 0 and (moment == 0 or not self.spec.dynamic)
+
 
 def balance(spec: BalancingSpec) -> BalancingResult:
     """The corrections that balance ``spec``'s masses, each found by closing its plane's polygon."""
@@ -281,7 +309,7 @@ def balance(spec: BalancingSpec) -> BalancingResult:
     else:
         factor_rows = [tuple(1.0 for _ in masses)]
     radii = spec.correction_radius or (None,) * len(positions)
-    planes = tuple(_close_polygon(name, position, factors, masses, radius)
+    planes = tuple(_close_polygon(name, position, factors, masses, radius, spec.dynamic)
                    for name, position, factors, radius in zip(spec.plane_names, positions, factor_rows, radii,
                                                               strict=True))
     unbalance = sum((mass.unbalance for mass in masses), 0j)
@@ -293,16 +321,19 @@ def balance(spec: BalancingSpec) -> BalancingResult:
 
 
 def _close_polygon(name: str, position: float, factors: tuple[float, ...], masses: Sequence[RotatingMass],
-                   radius: float | None) -> CorrectionPlane:
-    """Σ (mi·ri)plane + mb·rb = 0: the shares head to tail from 0, the correction back to 0."""
+                   radius: float | None, shared: bool) -> CorrectionPlane:
+    """Σ (mi·ri)plane + mb·rb = 0: the shares head to tail from 0, the correction back to 0.
+
+    Where the masses are ``shared`` between two planes, a side is a mass's share, not its m·r, and is named as
+    one, ``(m1r1)L``: "m1r1 + m2r2 + mLrL = 0" would say what is false."""
     vectors = []
     tip = 0j
     for mass, factor in zip(masses, factors, strict=True):
         share = mass.unbalance * factor
-        vectors.append(PolygonVector(mass.label, tip, tip + share, "mass"))
+        vectors.append(PolygonVector(f"({mass.label}){name}" if shared else mass.label, tip, tip + share, "mass"))
         tip += share
     correction = PolygonVector(vector_name(name), tip, 0j, "correction")
-    equation = " + ".join([mass.label for mass in masses] + [correction.name]) + " = 0"
+    equation = " + ".join([vector.name for vector in vectors] + [correction.name]) + " = 0"
     return CorrectionPlane(name=name, position=position, factors=factors, vectors=(*vectors, correction),
                            correction=-tip, radius=radius, equation=equation)
 
@@ -348,7 +379,25 @@ def read_balancing(table: Table) -> BalancingSpec:
     radius = _correction_radius(table, count)
     plane_names = _plane_names(table, count)
     table.done()
-    return BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
+    spec = BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
+    _check_computable(balance(spec), table.where("planes"))
+    return spec
+
+
+def _check_computable(result: BalancingResult, where: str) -> None:
+    """Refuse corrections that cannot be worked out to rounding: each mass's share in a plane grows as its distance
+    over the planes' spacing, and where that ratio is vast the shares cancel to less than their own rounding."""
+    if result.balanced or not result.spec.dynamic:
+        return
+    spec = result.spec
+    left, right = spec.planes
+    spacing = abs(right - left)
+    distance = max(max(abs(mass.plane - left), abs(mass.plane - right)) for mass in spec.masses)
+    raise SceneError(where, f"are {spacing:g} m apart, too close for a mass {distance:g} m from them "
+                            f"({distance / spacing:.3g} times their spacing): the corrections cannot be worked out "
+                            f"to rounding and would leave Σ m·r = {abs(result.residual_force):.3g} kg·m and "
+                            f"Σ m·r·z = {abs(result.residual_moment):.3g} kg·m² of the rotor's unbalance; set the "
+                            "planes farther apart", list(spec.planes))
 
 
 def _planes(table: Table) -> tuple[float, ...]:
@@ -412,20 +461,16 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
             entry["radius"] = plane.radius
             entry["mass"] = plane.mass
         planes.append(entry)
-    total = sum(abs(mass.unbalance) for mass in result.spec.masses)
-    unbalance_angle = (math.degrees(cmath.phase(result.unbalance)) % 360.0
-                       if abs(result.unbalance) > NEGLIGIBLE * total else 0.0)
+    force, moment = result.unbalance_written
     return {
         "kind": result.kind,
-        "unbalance": {"mass_radius": abs(result.unbalance), "angle_deg": unbalance_angle,
-                      "moment": abs(result.unbalance_moment)},
+        "unbalance": {"mass_radius": force, "angle_deg": math.degrees(cmath.phase(result.unbalance)) % 360.0
+                      if force else 0.0, "moment": moment},
         "planes": planes,
-        # Zero but for rounding where the corrections balance: written as 0 below 1e-12 of the rotor's unbalance,
-        # as results.json writes every quantity's rounding.
-        "residual": {"force": _above_noise(abs(result.residual_force), total),
-                     "moment": _above_noise(abs(result.residual_moment),
-                                            sum(abs(mass.unbalance * mass.plane) for mass in result.spec.masses)
-                                            + sum(abs(plane.correction * plane.position) for plane in result.planes))},
+        # Zero but for rounding where the corrections balance: written as 0 below 1e-12 of the rotor's own
+        # unbalance (not of the corrections, which cancellation may have blown up), as results.json writes every
+        # quantity's rounding.
+        "residual": dict(zip(("force", "moment"), result.residual, strict=True)),
     }
 
 

@@ -39,6 +39,10 @@ from .reader import Table, check_choice
 from .units import RPM
 
 Scalar = float | np.ndarray
+#: Without damping, a speed this close to ωn (relative) is resonance: its amplitude is rounding's, not the machine's.
+RESONANCE_TOLERANCE = 1e-6
+#: Without damping, a speed this close to ωn (relative) is warned of: the amplitude grows without bound towards it.
+NEAR_RESONANCE = 0.1
 Support = Literal["simply_supported", "cantilever"]
 SUPPORTS = ("simply_supported", "cantilever")
 
@@ -172,6 +176,33 @@ def shaft_stiffness(modulus: float, second_moment: float, length: float, positio
     return 3.0 * e * i / a ** 3
 
 
+@dataclass(frozen=True)
+class Shaft:
+    """A massless shaft carrying the disc, as a scene gives it: E (Pa), I (m⁴) or the diameter d (m) it is
+    worked out from, the span L (m), the disc's ``position`` a (m; None: the default of :func:`shaft_stiffness`)
+    and the ``support``."""
+
+    modulus: float
+    second_moment: float
+    length: float
+    position: float | None = None
+    support: Support = "simply_supported"
+    diameter: float | None = None
+
+    @property
+    def disc_at(self) -> float:
+        """a (m): from one bearing (simply supported; the middle by default) or from the fixed end (cantilever;
+        the free end by default)."""
+        if self.position is not None:
+            return self.position
+        return self.length / 2 if self.support == "simply_supported" else self.length
+
+    @property
+    def stiffness(self) -> float:
+        """k (N/m) at the disc, :func:`shaft_stiffness`."""
+        return shaft_stiffness(self.modulus, self.second_moment, self.length, self.position, self.support)
+
+
 # --- design and identification -----------------------------------------------------------------
 
 
@@ -260,9 +291,14 @@ class VibrationSpec:
     omega: float
     transmissibility: float | None = None
     base_amplitude: float | None = None
-    # How the scene gave k and ζ, for the note to say: a shaft's stiffness, the damping c (N·s/m).
-    on_shaft: bool = False
+    # How the scene gave k and ζ, for the note to say: the shaft whose stiffness k is, the damping c (N·s/m).
+    shaft: Shaft | None = None
     damping: float | None = None
+
+    @property
+    def on_shaft(self) -> bool:
+        """Whether k is a shaft's bending stiffness at its disc (the rotor whirls), not its mounts'."""
+        return self.shaft is not None
 
     def __post_init__(self) -> None:
         for name in ("mass", "stiffness", "omega"):
@@ -274,8 +310,26 @@ class VibrationSpec:
         if self.transmissibility is not None and not 0 < self.transmissibility < 1:
             raise ValueError(f"transmissibility: a wanted transmissibility must be in (0, 1) "
                              f"(got {self.transmissibility!r})")
-        if self.damping_ratio == 0 and self.omega == math.sqrt(self.stiffness / self.mass):
+        if self.damping_ratio == 0 and at_resonance(self.omega, self.stiffness, self.mass):
             raise ValueError("omega: at resonance without damping the amplitude has no bound; give damping")
+
+
+def at_resonance(omega: float, stiffness: float, mass: float) -> bool:
+    """Whether ω is ωn = √(k/M) to within :data:`RESONANCE_TOLERANCE`: a speed typed as 31.6227766017 for
+    √1000 is resonance, and without damping its amplitude (1e8 m) would be the rounding's."""
+    return abs(omega / math.sqrt(stiffness / mass) - 1.0) < RESONANCE_TOLERANCE
+
+
+def resonance_warning(spec: VibrationSpec) -> str | None:
+    """A line for a machine without damping run near its resonance (within :data:`NEAR_RESONANCE`), or None."""
+    if spec.damping_ratio > 0:
+        return None
+    response = steady_state(spec)
+    r = response.frequency_ratio
+    if abs(r - 1.0) >= NEAR_RESONANCE:
+        return None
+    return (f"vibration: no damping and ω within {abs(r - 1.0):.2g} of the natural frequency (r = {r:.6g}): the "
+            f"amplitude X = {response.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
 
 
 @dataclass(frozen=True)
@@ -351,6 +405,8 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
         "exciting_force": response.exciting_force,
         "transmitted_force": response.transmitted_force,
     }
+    if spec.shaft is not None:
+        document["stiffness"] = spec.stiffness
     if spec.transmissibility is not None:
         document["isolation"] = {"transmissibility": spec.transmissibility,
                                  "frequency_ratio": response.isolation_ratio,
@@ -377,8 +433,8 @@ def read_vibration(table: Table) -> VibrationSpec:
     """
     mass = table.number("mass", positive=True)
     unbalance = _unbalance(table, mass)
-    on_shaft = table.has("shaft")
-    stiffness = _stiffness(table)
+    shaft = _shaft(table)
+    stiffness = table.number("stiffness", positive=True) if shaft is None else shaft.stiffness
     omega = table.speed(positive=True)
     zeta = _damping(table, stiffness, mass)
     wanted = table.number("transmissibility", None, positive=True)
@@ -387,11 +443,14 @@ def read_vibration(table: Table) -> VibrationSpec:
         raise SceneError(table.where("transmissibility"), "must be below 1: a mount isolates only where TR < 1",
                          wanted)
     table.done()
-    if zeta == 0 and omega == math.sqrt(stiffness / mass):
+    if zeta == 0 and at_resonance(omega, stiffness, mass):
         raise SceneError(table.where("omega" if table.has("omega") else "rpm"),
                          "is the natural frequency and there is no damping: the amplitude has no bound")
+    if unbalance == 0 and base is None:
+        raise SceneError(table.where("unbalance" if table.has("unbalance") else "eccentricity"),
+                         "is 0 and the base does not move (no base_amplitude): nothing excites the machine")
     return VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega,
-                         transmissibility=wanted, base_amplitude=base, on_shaft=on_shaft,
+                         transmissibility=wanted, base_amplitude=base, shaft=shaft,
                          damping=table.number("damping") if table.has("damping") else None)
 
 
@@ -423,18 +482,22 @@ def _unbalance(table: Table, mass: float) -> float:
     return small * eccentricity
 
 
-def _stiffness(table: Table) -> float:
+def _shaft(table: Table) -> Shaft | None:
+    """The shaft whose stiffness the machine is on, or None where the table gives the mounts' stiffness."""
     if _one_of(table, "stiffness", "shaft") == "stiffness":
-        return table.number("stiffness", positive=True)
+        return None
     shaft = table.table("shaft")
     assert shaft is not None
     modulus = shaft.number("modulus", positive=True)
     if shaft.has("second_moment") and shaft.has("diameter"):
         raise SceneError(shaft.where("diameter"), "give either second_moment or diameter, not both")
-    if shaft.has("diameter"):
-        second = circular_second_moment(shaft.number("diameter", positive=True))
-    else:
-        second = shaft.number("second_moment", positive=True)
+    if not shaft.has("diameter") and not shaft.has("second_moment"):
+        # Either key names the section: a misspelling of either is told as one, not as the other one missing.
+        shaft.misspelt("diameter", "second_moment")
+        raise SceneError(shaft.where("diameter"), "is required (the shaft's diameter, m), or second_moment (I, m⁴): "
+                                                  "give diameter or second_moment")
+    diameter = shaft.number("diameter", positive=True) if shaft.has("diameter") else None
+    second = circular_second_moment(diameter) if diameter is not None else shaft.number("second_moment", positive=True)
     length = shaft.number("length", positive=True)
     position = shaft.number("position", None, positive=True)
     support = check_choice(shaft.raw("support", "simply_supported"), shaft.where("support"), SUPPORTS)
@@ -445,7 +508,7 @@ def _stiffness(table: Table) -> float:
     if position is not None and support == "cantilever" and not position <= length:
         raise SceneError(shaft.where("position"), f"the disc must lie on the shaft, at most length ({length:g} m) "
                                                   "from its fixed end", position)
-    return shaft_stiffness(modulus, second, length, position, support)
+    return Shaft(modulus, float(second), length, position, support, diameter)
 
 
 def _damping(table: Table, stiffness: float, mass: float) -> float:
@@ -456,8 +519,9 @@ def _damping(table: Table, stiffness: float, mass: float) -> float:
     return table.number("damping_ratio", 0.0, non_negative=True)
 
 
-__all__ = ["BaseResponse", "Response", "VibrationSpec", "circular_second_moment", "critical_speed", "damping_from_phase", "damping_from_resonance",
+__all__ = ["BaseResponse", "NEAR_RESONANCE", "RESONANCE_TOLERANCE", "Response", "Shaft", "VibrationSpec",
+           "at_resonance", "circular_second_moment", "critical_speed", "damping_from_phase", "damping_from_resonance",
            "damping_ratio", "displacement_transmissibility", "displacement_transmissibility_phase",
            "force_magnification", "isolation_frequency_ratio", "isolation_stiffness", "natural_frequency", "phase",
-           "read_vibration", "shaft_stiffness", "steady_state", "transmissibility", "unbalance_magnification",
-           "vibration_results"]
+           "read_vibration", "resonance_warning", "shaft_stiffness", "steady_state", "transmissibility",
+           "unbalance_magnification", "vibration_results"]

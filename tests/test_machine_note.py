@@ -179,7 +179,8 @@ base_amplitude = 0.0005
                       r"is Z = .* = (\d+(?:\.\d+)?) m\.", note)
     assert found and agrees(found.group(1), machine) and agrees(found.group(2), lag, 4)
     assert agrees(found.group(3), relative)
-    assert "stands on a base moving at ω = 125.66 rad/s (1200 rpm)" in note
+    # ω to six digits: 125.66/31.623 would not give the r = 3.9738 written after it.
+    assert f"stands on a base moving at ω = {1200 * 2 * math.pi / 60:.6g} rad/s (1200 rpm)" in note
     assert "exciting force" not in note  # no unbalance to work out
     document = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]["base_excitation"]
     assert document["base_amplitude"] == base
@@ -195,3 +196,67 @@ def test_a_base_amplitude_must_be_positive_and_is_named_where_it_is_not(tmp_path
     assert main(["run", str(scene), "--out", str(out)]) == 2
     assert "vibration.base_amplitude: must be > 0 (got -0.001)" in capsys.readouterr().err
     assert not out.exists()
+
+
+def written_as(value, written):
+    """Whether ``value`` rounds to ``written`` at the significant digits ``written`` shows (its whole number's
+    closing zeros may be rounding's)."""
+    digits = len(written.replace(".", "").strip("0"))
+    return any(float(f"{value:.{count}g}") == float(written) for count in range(max(digits, 1), 18))
+
+
+SHAFTS = {  # a disc on a shaft: simply supported off the middle, and overhung on a cantilever
+    "simply_supported": ("shaft = { modulus = 2.0e11, diameter = 0.05, length = 1.2, position = 0.3 }", 0.3, 0.9),
+    "cantilever": ('shaft = { modulus = 2.0e11, diameter = 0.025, length = 0.4, position = 0.3, '
+                   'support = "cantilever" }', 0.3, None),
+}
+
+
+@pytest.mark.parametrize("support", sorted(SHAFTS))
+def test_a_shafts_stiffness_is_in_the_results_and_its_formula_in_the_note(tmp_path, support):
+    shaft, a, b = SHAFTS[support]
+    body = f"[vibration]\nmass = 20.0\nunbalance = 0.0002\n{shaft}\ndamping_ratio = 0.02\nrpm = 1000.0\n"
+    out, note = note_of(tmp_path, body)
+    diameter = 0.05 if b is not None else 0.025
+    second = math.pi * diameter ** 4 / 64
+    # Castigliano's unit load for a disc at a from one bearing, b from the other: δ = F·a²·b²/(3EIL); overhung, F·a³/(3EI).
+    k = 3 * 2.0e11 * second * 1.2 / (a * a * b * b) if b is not None else 3 * 2.0e11 * second / a ** 3
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]
+    assert document["stiffness"] == pytest.approx(k, rel=1e-11)
+    assert document["natural_frequency"] == pytest.approx(math.sqrt(k / 20.0), rel=1e-11)
+    formula = (r"k = 3·E·I·L/\(a²·b²\) = 3·200000000000·([\d.]+)·1\.2/\(0\.3²·0\.9²\) = (\d+) N/m" if b is not None
+               else r"k = 3·E·I/a³ = 3·200000000000·([\d.]+)/0\.3³ = (\d+) N/m")
+    found = re.search(formula, note)
+    assert found, note
+    shown_second, shown_k = float(found.group(1)), found.group(2)
+    assert written_as(second, found.group(1)) and written_as(k, shown_k)
+    # The operands as written give the result as written.
+    again = 3 * 2.0e11 * shown_second * (1.2 / (a * a * b * b) if b is not None else 1 / a ** 3)
+    assert written_as(again, shown_k)
+    assert f"I = π·d⁴/64 = π·{diameter:g}⁴/64 = {found.group(1)} m⁴" in note
+    (tmp_path / "mounts").mkdir()
+    mounts = json.loads((note_of(tmp_path / "mounts", MOUNTS)[0] / "results.json").read_text(encoding="utf-8"))
+    assert "stiffness" not in mounts["vibration"]  # the mounts' stiffness is the scene's own
+
+
+def test_the_notes_operands_as_written_give_the_results_as_written(tmp_path):
+    # "mLrL = 1.58 kg·m … mL = 1.58/0.05 = 31.599 kg": 1.58/0.05 is 31.6.
+    template = resources.files("graphplan").joinpath("templates/rotor.toml").read_text(encoding="utf-8")
+    _, note = note_of(tmp_path, template[template.index("[balancing]"):])
+    divisions = re.findall(r"m[LR] = ([\d.]+)/([\d.]+) = ([\d.]+) kg", note)
+    assert len(divisions) == 2
+    for numerator, denominator, quotient in divisions:
+        assert written_as(float(numerator) / float(denominator), quotient)
+    for operand, angle in re.findall(r"closing vector m[LR]r[LR] = ([\d.]+) kg·m at θ = ([\d.]+)°", note):
+        assert operand in {numerator for numerator, _, _ in divisions}
+    ratio = re.search(r"√\(([\d.]+)/([\d.]+)\) = ([\d.]+) rad/s.*r = ω/ωn = ([\d.]+)/([\d.]+) = ([\d.]+)\.", note)
+    assert ratio
+    k, mass, natural, omega, natural_again, r = ratio.groups()
+    assert natural == natural_again and written_as(math.sqrt(float(k) / float(mass)), natural)
+    assert written_as(float(omega) / float(natural), r)
+    amplitude = re.search(r"= \(([\d.]+)/([\d.]+)\)·([\d.]+) = ([\d.]+) m", note)
+    me, mass, magnification, x = amplitude.groups()
+    assert written_as(float(me) / float(mass) * float(magnification), x)
+    isolation = re.search(r"= ([\d.]+)·\(([\d.]+)/([\d.]+)\)² = ([\d.]+) N/m", note)
+    mass, omega_again, ratio_iso, stiffness = isolation.groups()
+    assert omega_again == omega and written_as(float(mass) * (float(omega) / float(ratio_iso)) ** 2, stiffness)

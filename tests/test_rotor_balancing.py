@@ -327,7 +327,7 @@ def test_each_polygon_is_drawn_to_scale_and_closes(shaft_result):
         assert len(drawn) == sum(abs(s) / scale >= 0.25 for s in plane.shares)
         for arrow in drawn:
             name = arrow.key.rsplit("-", 1)[1]
-            share = next(v for v in plane.vectors if v.name == name)
+            share = next(v for v in plane.vectors if drawing._id(v.name) == name)
             assert arrow.length == pytest.approx(abs(share.vector) / scale, rel=1e-9)
         # Head to tail: each vector starts where one ends or at the pole; the correction ends at the pole.
         pole = (plane.vertices[0].real / scale, plane.vertices[0].imag / scale)
@@ -366,7 +366,7 @@ def test_the_drawing_writes_its_scale_and_labels_that_do_not_overlap(shaft_resul
     for plane in shaft_result.planes:
         assert f"μ = {drawing.plane_scale(plane):g} kg·m/mm" in written
     assert "mLrL = 1.580 kg·m, θL = 137.4°" in written and "mR = 13.80 kg at rR = 0.05 m" in written
-    for name in ("m1r1", "m2r2", "m3r3", "m4r4", "mLrL", "mRrR", "θL", "θR"):
+    for name in ("(m1r1)L", "(m2r2)L", "(m3r3)L", "(m4r4)L", "(m1r1)R", "(m4r4)R", "mLrL", "mRrR", "θL", "θR"):
         assert name in written
     for a, b in itertools.combinations(texts, 2):
         assert not text_box(a).intersects(text_box(b)), (a.text, b.text)
@@ -436,3 +436,208 @@ def test_one_correction_plane_for_masses_in_other_planes_names_the_couple_it_lea
     assert f"couple Σ m·r·z = {expected:.4g} kg·m²" in capsys.readouterr().out
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert "is a disc" not in note and f"Σ m·r·z = {expected:.5g} kg·m² remains" in note
+
+
+# --- corrections that cannot be worked out to rounding -------------------------------------------------
+
+# The teacher's rotor: planes 1e-14 m apart, a mass 1e14 m away.  Each share grew as 1e28 and cancelled to less than its
+# rounding: the corrections left 0.96 of 1.39 kg·m, yet results.json wrote the moment 0 and the note "balanced".
+FAR_FROM_CLOSE_PLANES = ('[balancing]\nmasses = [ { mass = 10.0, radius = 0.1, angle = 0.0, plane = 0.2 }, '
+                         '{ mass = 12.0, radius = 0.08, angle = 90.0, plane = 1e14 } ]\nplanes = [0.0, 1e-14]\n'
+                         'correction_radius = 0.1\n')
+
+
+def test_planes_too_close_for_the_masses_distance_are_refused_naming_the_planes(tmp_path, capsys):
+    import tomllib
+
+    from graphplan.cli import main
+
+    data = tomllib.loads(FAR_FROM_CLOSE_PLANES)["balancing"]
+    masses = [RotatingMass(m["mass"], m["radius"], m["angle"], m["plane"]) for m in data["masses"]]
+    result = balance(BalancingSpec(masses, planes=tuple(data["planes"])))
+    # What the corrections leave, summed exactly (as fractions: a float sum in another order loses the 0.96 kg·m
+    # against the 1e28 of the corrections and reads 0): m2·r2 = 0.96 kg·m along y, 49 % of Σ |mi·ri| = 1.96.
+    from fractions import Fraction
+
+    left, right = (plane.correction for plane in result.planes)
+    force_y = Fraction(left.imag) + Fraction(right.imag) + Fraction(12) * Fraction(0.08)
+    assert float(force_y) == pytest.approx(0.96, rel=1e-12)
+    assert not result.balanced and result.residual[0] == pytest.approx(0.96, rel=1e-12)
+    with pytest.raises(SceneError, match=r"^balancing\.planes: are 1e-14 m apart, too close for a mass 1e\+14 m from "
+                                         r"them \(1e\+28 times their spacing\): the corrections cannot be worked out"):
+        read(data)
+    scene = tmp_path / "rotor.toml"
+    scene.write_text('[scene]\ntitle = "Rotor"\n' + FAR_FROM_CLOSE_PLANES, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    error = capsys.readouterr().err
+    assert error.count("\n") == 1 and "balancing.planes: are 1e-14 m apart" in error
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("ratio", [10.0, 300.0])
+def test_planes_close_but_not_too_close_are_balanced(ratio):
+    # A mass `ratio` spacings beyond plane R: its shares are ratio and 1 + ratio times it, which rounding keeps.
+    masses = [RotatingMass(2.0, 0.1, 30.0, 0.0), RotatingMass(3.0, 0.1, 100.0, 0.01 * (1 + ratio))]
+    spec = read({"masses": [{"mass": m.mass, "radius": m.radius, "angle": m.angle_deg, "plane": m.plane}
+                            for m in masses], "planes": [0.0, 0.01]})
+    result = balance(spec)
+    assert result.balanced and result.residual == (0.0, 0.0)
+    expected = corrections_by_linear_system(masses, 0.0, 0.01)
+    for plane, correction in zip(result.planes, expected, strict=True):
+        assert abs(plane.correction - correction) < 1e-9 * abs(correction)
+
+
+def test_the_notes_residual_is_the_results_and_measured_against_the_rotors_own_unbalance(tmp_path):
+    # A rotor whose axial origin is 10 000 km away: its moments about z = 0 are 1e7 times its products, and their
+    # rounding (1e-10 kg·m², above the note's absolute noise) was printed in the note beside a 0 in results.json.
+    import json
+
+    from graphplan.cli import main
+
+    offset = 1e7
+    masses = [RotatingMass(2.5, 0.02, 0.0, offset + 0.05), RotatingMass(0.8, 0.06, 10.0, offset + 0.05),
+              RotatingMass(1.5, 0.04, 120.0, offset + 0.15)]
+    result = balance(BalancingSpec(masses, planes=(offset, offset + 0.2)))
+    _, moment = resultant_about(result)
+    own = sum(m.mass * m.radius for m in masses)
+    # Summed either way, rounding of 1e-12 of Σ |mi·ri|·z at most, yet as the corrections' sum leaves it, above the
+    # note's absolute noise (1e-10).
+    assert abs(moment) < 1e-12 * own * (offset + 0.2) and abs(result.residual_moment) > 1e-10
+    lines = ", ".join(f"{{ mass = {m.mass}, radius = {m.radius}, angle = {m.angle_deg}, plane = {m.plane!r} }}"
+                      for m in masses)
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(f'[scene]\ntitle = "Rotor"\n[balancing]\nmasses = [{lines}]\nplanes = [{offset!r}, '
+                     f'{offset + 0.2!r}]\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert document["balancing"]["residual"] == {"force": 0.0, "moment": 0.0}
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert "Σ m·r = 0 kg·m and Σ m·r·z = 0 kg·m²: the rotor is balanced." in note
+
+
+# --- a polygon that is a straight line ---------------------------------------------------------------------
+
+
+def _distance_to_line(point, start, end):
+    p, a, b = (np.asarray(xy, dtype=float) for xy in (point, start, end))
+    d = b - a
+    return abs(d[0] * (p - a)[1] - d[1] * (p - a)[0]) / np.hypot(*d)
+
+
+@pytest.mark.parametrize("masses", [
+    [RotatingMass(4.0, 0.25, 70.0, 0.3)],  # one mass
+    [RotatingMass(10.0, 0.1, 45.0, 0.2), RotatingMass(5.0, 0.2, 45.0, 0.6), RotatingMass(3.0, 0.1, 45.0, 0.9)],
+    [RotatingMass(5.0, 0.1, 0.0, 0.2), RotatingMass(5.0, 0.1, 180.0, 0.8)],  # a couple alone
+], ids=["one-mass", "one-angle", "couple"])
+def test_a_correction_along_the_masses_is_drawn_beside_them_with_leaders_to_the_chains_ends(masses):
+    # The teacher's scenes: the correction was drawn exactly over the mass vectors, which vanished under it.
+    result = balance(BalancingSpec(masses, planes=(0.0, 1.0), correction_radius=0.1))
+    layers = {layer.name: layer.items for layer in drawing.layout(result)}
+    for plane in result.planes:
+        scale = drawing.plane_scale(plane)
+        arrows = [item for item in layers[f"plane-{plane.name}-vectors"] if isinstance(item, Arrow)]
+        correction = next(a for a in arrows if a.key.endswith(f"m{plane.name}r{plane.name}"))
+        shares = [a for a in arrows if a is not correction]
+        # Its tail and head where the polygon puts them (the chain's last tip, the pole), moved across by BESIDE_MM.
+        # The panel is moved into place on the sheet: the first share's tail is the polygon's start.
+        shift = complex(*shares[0].start) - plane.vectors[0].start / scale
+        tip, pole = plane.vectors[-1].start / scale + shift, plane.vectors[-1].end / scale + shift
+        across = 1j * (pole - tip) / abs(pole - tip)
+        moved = [complex(*correction.start) - tip, complex(*correction.end) - pole]
+        assert moved[0] == pytest.approx(moved[1], abs=1e-9)
+        assert abs(moved[0]) == pytest.approx(drawing.BESIDE_MM, rel=1e-9)
+        assert abs((moved[0] / across).imag) < 1e-9  # straight across, the correction parallel to itself
+        for share in shares:
+            assert min(_distance_to_line(end, correction.start, correction.end)
+                       for end in (share.start, share.end)) == pytest.approx(drawing.BESIDE_MM, abs=1e-6)
+        leaders = [item for item in layers[f"plane-{plane.name}-reference"] if item.stroke == drawing._LEADER]
+        joined = {(round(x, 6), round(y, 6)) for leader in leaders for x, y in leader.points}
+        for point in (tip, pole, complex(*correction.start), complex(*correction.end)):
+            assert (round(point.real, 6), round(point.imag, 6)) in joined
+
+
+def test_a_correction_that_hides_no_mass_vector_closes_the_polygon_where_it_is(shaft_result):
+    for plane in shaft_result.planes:
+        layers = {layer.name: layer.items for layer in drawing.layout(shaft_result)}
+        assert not [item for item in layers[f"plane-{plane.name}-reference"] if getattr(item, "stroke", None)
+                    == drawing._LEADER]
+
+
+# --- a rotor balanced already ------------------------------------------------------------------------------
+
+BALANCED_ALREADY = {  # the teacher's: each plane's shares close by themselves but for 1e-16 kg·m of rounding
+    "dynamic": ('[balancing]\nmasses = [{ mass = 10.0, radius = 0.1, angle = 0.0, plane = 0.2 }, '
+                '{ mass = 10.0, radius = 0.1, angle = 180.0, plane = 0.2 }, '
+                '{ mass = 5.0, radius = 0.2, angle = 90.0, plane = 0.5 }, '
+                '{ mass = 5.0, radius = 0.2, angle = 270.0, plane = 0.5 }]\nplanes = [0.0, 1.0]\n'
+                'correction_radius = 0.1\n'),
+    "static": ('[balancing]\nmasses = [{ mass = 3.0, radius = 0.1, angle = 0.0 }, '
+               '{ mass = 3.0, radius = 0.1, angle = 120.0 }, { mass = 3.0, radius = 0.1, angle = 240.0 }]\n'
+               'correction_radius = 0.05\n'),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(BALANCED_ALREADY))
+def test_a_rotor_balanced_already_writes_its_corrections_0_in_the_results_drawing_and_note(kind, tmp_path):
+    import json
+    import tomllib
+
+    from graphplan.cli import main
+
+    data = tomllib.loads(BALANCED_ALREADY[kind])["balancing"]
+    products = [m["mass"] * m["radius"] * np.exp(1j * np.radians(m["angle"])) for m in data["masses"]]
+    own = sum(abs(p) for p in products)
+    # numpy's own sums: not 0 in floating point, yet under 1e-12 of the masses' Σ |m·r|.
+    assert 0 < abs(np.sum(products)) < 1e-12 * own
+    scene = tmp_path / "rotor.toml"
+    scene.write_text('[scene]\ntitle = "Rotor"\n' + BALANCED_ALREADY[kind], encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["balancing"]
+    assert document["unbalance"] == {"mass_radius": 0.0, "angle_deg": 0.0, "moment": 0.0}
+    for entry in document["planes"]:
+        assert entry["mass_radius"] == 0.0 and entry["mass"] == 0.0 and entry["angle_deg"] == 0.0
+    svg = (tmp_path / "out" / "rotor_balancing.svg").read_text(encoding="utf-8")
+    name = "L" if kind == "dynamic" else "b"
+    assert f"m{name}r{name} = 0 kg·m" in svg and "0000000" not in svg
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert f"Plane {name}: the masses' products close by themselves" in note and "e-1" not in note
+
+
+def test_two_planes_name_each_side_the_masss_share_carried_to_the_plane(shaft_result):
+    # The sides were lettered m1r1 and the caption said "m1r1 + m2r2 + m3r3 + m4r4 + mLrL = 0", which is false: each
+    # side is (mi·ri)·(zR − zi)/(zR − zL) in L and (mi·ri)·(zi − zL)/(zR − zL) in R.
+    left_z, right_z = 0.04, 0.22
+    texts = [item.text for layer in drawing.layout(shaft_result) for item in layer.items if isinstance(item, Text)]
+    for plane, share_of in zip(shaft_result.planes, (lambda z: (right_z - z) / (right_z - left_z),
+                                                     lambda z: (z - left_z) / (right_z - left_z)), strict=True):
+        name = plane.name
+        assert f"(m1r1){name} + (m2r2){name} + (m3r3){name} + (m4r4){name} + m{name}r{name} = 0" in texts
+        for k, mass in enumerate(SHAFT_OF_FOUR, start=1):
+            side = next(v for v in plane.vectors if v.name == f"(m{k}r{k}){name}")
+            assert abs(side.vector - mass.unbalance * share_of(mass.plane)) < 1e-12
+        # The sides and the correction close: Σ (mi·ri)plane + mb·rb = 0, as the caption now says.
+        assert abs(sum(v.vector for v in plane.vectors)) < 1e-12
+    disc = balance(BalancingSpec([RotatingMass(1.0, 0.1, 0.0), RotatingMass(2.0, 0.1, 90.0)]))
+    assert disc.planes[0].equation == "m1r1 + m2r2 + mbrb = 0"  # one plane takes the whole m·r: no share
+
+
+def test_the_rotor_starters_labels_stand_clear_of_the_vectors_and_the_angles():
+    # Plane L's short m3r3 was lettered over the θL arc and x-direction; (m2r2)L over the correction.
+    import tomllib
+    from importlib import resources
+
+    from shapely.geometry import LineString
+
+    from graphplan.render.primitives import Polyline
+
+    data = tomllib.loads(resources.files("graphplan").joinpath("templates/rotor.toml").read_text(encoding="utf-8"))
+    result = balance(read(data["balancing"]))
+    layers = drawing.layout(result)
+    for plane in result.planes:
+        named = {layer.name: layer.items for layer in layers}
+        lines = [LineString((item.start, item.end)) for item in named[f"plane-{plane.name}-vectors"]
+                 if isinstance(item, Arrow)]
+        lines += [LineString(item.points) for item in named[f"plane-{plane.name}-reference"]
+                  if isinstance(item, Polyline)]
+        for text in named[f"plane-{plane.name}-labels"]:
+            assert not any(text_box(text).intersects(line) for line in lines), (plane.name, text.text)

@@ -14,6 +14,7 @@ docs/sources/vibration.md.
 
 from __future__ import annotations
 
+import json
 import math
 import subprocess
 import sys
@@ -337,6 +338,13 @@ def test_a_table_with_a_shaft_for_the_stiffness():
     ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "diameter": 0.01,
                                                            "second_moment": 1e-9, "length": 1}},
      "vibration.shaft.diameter: give either second_moment or diameter"),
+    # A typo in the shaft was told as "second_moment: is required but missing".
+    ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "diamter": 0.03, "length": 1}},
+     r"^vibration.shaft.diamter: unknown key; did you mean 'diameter'\?$"),
+    ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "second_momnet": 1e-8, "length": 1}},
+     r"^vibration.shaft.second_momnet: unknown key; did you mean 'second_moment'\?$"),
+    ({"mass": 1, "unbalance": 0.01, "omega": 10, "shaft": {"modulus": 2e11, "length": 1}},
+     r"^vibration.shaft.diameter: is required .*: give diameter or second_moment$"),
     ({"mass": 1, "unbalance": 0.01, "stiffness": 1e4, "omega": 10, "dampingratio": 0.1},
      "vibration.dampingratio: unknown key; did you mean 'damping_ratio'"),
 ])
@@ -372,8 +380,8 @@ def test_the_figures_are_svg_with_a_curve_for_each_damping_and_the_same_bytes_ev
     text = first.read_text(encoding="utf-8")
     assert text.startswith("<?xml") and "<svg" in text
     assert first.read_bytes() == second.read_bytes()
-    for zeta in zetas:
-        assert f"<!-- ζ = {zeta:g} -->" in text
+    for zeta in zetas:  # the working point's own ζ = 0.1 named as the machine's
+        assert f"<!-- ζ = {zeta:g} -->" in text or f"<!-- ζ = {zeta:g}: this machine -->" in text
     assert "<!-- working point -->" in text
     other = transmissibility_figure(tmp_path / "nested" / "t.svg", zetas).read_text(encoding="utf-8")
     assert "<!-- isolation: r &gt; √2 -->" in other or "<!-- isolation: r > √2 -->" in other
@@ -468,3 +476,96 @@ def test_the_note_says_how_the_scene_gave_its_stiffness_and_damping(tmp_path):
     assert main(["run", str(shaft), "--out", str(tmp_path / "b")]) == 0
     note = (tmp_path / "b" / "note.md").read_text(encoding="utf-8")
     assert "turns on its shaft" in note and "the bearings pass" in note and "mounts" not in note
+
+
+# --- resonance without damping, and nothing to excite the machine -------------------------------------------
+
+
+def _run(tmp_path, body, capsys):
+    from graphplan.cli import main
+
+    scene = tmp_path / "machine.toml"
+    scene.write_text('[scene]\ntitle = "Machine"\n[vibration]\n' + body, encoding="utf-8")
+    code = main(["run", str(scene), "--out", str(tmp_path / "out")])
+    return code, capsys.readouterr()
+
+
+def test_an_undamped_speed_a_rounding_off_resonance_is_refused_as_resonance(tmp_path, capsys):
+    # The teacher's ω = 31.6227766017 for √(1e5/100) = 31.62277660168…: X = 1.95e8 m was written without a word.
+    natural = math.sqrt(1e5 / 100.0)
+    assert 0 < abs(31.6227766017 / natural - 1) < 1e-6
+    with pytest.raises(SceneError, match=r"^vibration.omega: is the natural frequency and there is no damping"):
+        read({"mass": 100.0, "unbalance": 0.02, "stiffness": 1e5, "omega": 31.6227766017})
+    code, told = _run(tmp_path, "mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = 31.6227766017\n", capsys)
+    assert code == 2 and "vibration.omega: is the natural frequency" in told.err and not (tmp_path / "out").exists()
+    with pytest.raises(ValueError, match="omega: at resonance without damping"):
+        VibrationSpec(mass=100.0, unbalance=0.02, stiffness=1e5, damping_ratio=0.0, omega=31.6227766017)
+
+
+def test_an_undamped_speed_near_resonance_gives_its_amplitude_and_a_warning(tmp_path, capsys):
+    omega, natural = 33.0, math.sqrt(1e5 / 100.0)
+    r = omega / natural
+    amplitude = 0.02 / 100.0 * r * r / abs(1 - r * r)  # M·X/(m·e) = r²/|1 − r²| without damping
+    code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = {omega}\n", capsys)
+    assert code == 0
+    assert f"warning: vibration: no damping and ω within {abs(r - 1):.2g} of the natural frequency" in told.out
+    assert f"X = {amplitude:.4g} m" in told.out
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]
+    assert document["amplitude"] == pytest.approx(amplitude, rel=1e-11)
+    (tmp_path / "far").mkdir()  # r = 1.26: no warning
+    code, told = _run(tmp_path / "far", "mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = 40.0\n", capsys)
+    assert code == 0 and "warning" not in told.out
+    assert read({"mass": 100.0, "unbalance": 0.02, "stiffness": 1e5, "omega": natural * (1 + 2e-6)}).omega > natural
+
+
+def test_a_machine_that_nothing_excites_is_refused_naming_the_unbalance(tmp_path, capsys):
+    # unbalance = 0 and no base_amplitude: the teacher's scene was run, and a phase of 172° given for no force.
+    with pytest.raises(SceneError, match=r"^vibration.unbalance: is 0 and the base does not move"):
+        read({"mass": 100.0, "unbalance": 0.0, "stiffness": 1e5, "damping_ratio": 0.1, "rpm": 600.0})
+    with pytest.raises(SceneError, match=r"^vibration.eccentricity: is 0 and the base does not move"):
+        read({"mass": 100.0, "unbalanced_mass": 1.0, "eccentricity": 0.0, "stiffness": 1e5, "rpm": 600.0})
+    code, told = _run(tmp_path, "mass = 100.0\nunbalance = 0.0\nstiffness = 1e5\ndamping_ratio = 0.1\nrpm = 600.0\n",
+                      capsys)
+    assert code == 2 and told.err.count("\n") == 1 and not (tmp_path / "out").exists()
+    assert read({"mass": 100.0, "unbalance": 0.0, "stiffness": 1e5, "rpm": 600.0, "base_amplitude": 0.001}).unbalance == 0
+
+
+# --- the plots: the machine's own damping, the isolating mounts, a moving base ----------------------------------
+
+
+@pytest.mark.parametrize("figure", [magnification_figure, transmissibility_figure])
+@pytest.mark.parametrize(("zeta", "added"), [(0.12, True), (0.1, False), (0.8, True)])
+def test_the_machines_own_damping_is_a_highlighted_curve_through_its_working_point(figure, zeta, added):
+    # The ζ curves were a fixed set: ζ = 0.12 or 0.8 left the working point off every drawn curve.
+    import io
+
+    stream = io.StringIO()
+    figure(stream, operating=(1.3, zeta))
+    text = stream.getvalue()
+    assert f"<!-- ζ = {zeta:g}: this machine -->" in text and f"<!-- ζ = {zeta:g} -->" not in text
+    drawn = sum(f"<!-- ζ = {value:g} -->" in text for value in (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0))
+    assert drawn == 7 - (not added)
+
+
+def test_the_isolating_mounts_design_point_is_marked_where_the_wanted_transmissibility_is_met():
+    import io
+
+    zeta, wanted = 0.1, 0.2
+    # r where TR(r, ζ) = 0.2 above √2, found by Brent's method on the formula itself.
+    ratio = brentq(lambda r: math.hypot(1, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r) - wanted, 1.5, 20.0)
+    stream = io.StringIO()
+    transmissibility_figure(stream, operating=(1.99, zeta), design=(ratio, wanted))
+    assert f"<!-- isolating mounts: TR = 0.2 at r = {ratio:.3g} -->" in stream.getvalue()
+
+
+def test_a_machine_on_a_moving_base_with_no_unbalance_is_not_plotted_as_a_rotating_unbalance(tmp_path, capsys):
+    code, _ = _run(tmp_path, "mass = 20.0\nunbalance = 0.0\nstiffness = 2.0e4\ndamping_ratio = 0.05\nrpm = 1200\n"
+                             "base_amplitude = 0.0005\n", capsys)
+    assert code == 0
+    magnification = (tmp_path / "out" / "vibration_magnification.svg").read_text(encoding="utf-8")
+    transmitted = (tmp_path / "out" / "vibration_transmissibility.svg").read_text(encoding="utf-8")
+    assert "Rotating unbalance" not in magnification and "<!-- Moving base: the motion relative to the base -->" \
+        in magnification and "<!-- relative motion Z/Y -->" in magnification
+    assert "Force transmitted" not in transmitted and "<!-- motion transmissibility X/Y -->" in transmitted
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert "Figure 1. Moving base: the motion relative to the base" in note and "Rotating unbalance" not in note

@@ -54,11 +54,18 @@ GAP_MM = 25.0
 REFERENCE_MM = 16.0
 ANGLE_RADIUS_MM = 7.0
 NAME_SIZE = 3.2
+# A correction that would lie along a mass vector (one mass, masses at one angle, a couple: the polygon a straight
+# line) would hide it: it is drawn this far beside the chain, parallel to where it closes the polygon, with thin
+# leaders from the chain's ends, as a textbook draws the closing side of a flat polygon (mm).
+BESIDE_MM = 6.0
+# Closer than this to the correction's line, over a common stretch longer than this, a mass vector is hidden (mm).
+ALONG_MM = 0.8
 
 _SHARE = Stroke(0.5)
 _CORRECTION = Stroke(0.8, "#a83a1f")
 _REFERENCE = Stroke(0.25, "#333333", (2.5, 1.5))
 _ANGLE = Stroke(0.3, "#a83a1f")
+_LEADER = Stroke(0.18, "#a83a1f", (1.0, 1.0))
 
 def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
     """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under."""
@@ -103,19 +110,23 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     def mm(value: complex) -> complex:
         return value / scale
 
+    beside = _beside(plane, mm)
     arrows: list[Primitive] = []
     named: list[tuple[str, Arrow]] = []
     for vector in plane.vectors:
         if abs(mm(vector.vector)) < ZERO_MM:
             continue
+        shift = beside if vector.role == "correction" else 0j
         stroke = _CORRECTION if vector.role == "correction" else _SHARE
-        arrow = Arrow(_xy(mm(vector.start)), _xy(mm(vector.end)), stroke, 3.5 if vector.role == "correction" else 3.0,
-                      f"{key}-{_id(vector.name)}")
+        arrow = Arrow(_xy(mm(vector.start) + shift), _xy(mm(vector.end) + shift), stroke,
+                      3.5 if vector.role == "correction" else 3.0, f"{key}-{_id(vector.name)}")
         arrows.append(arrow)
         named.append((vector.name, arrow))
+    leaders: list[Primitive] = [Polyline((_xy(end), _xy(end + beside)), _LEADER)
+                                for end in (mm(plane.vectors[-1].start), mm(plane.vectors[-1].end))] if beside else []
     pole = [dot_marker(_xy(mm(plane.vertices[0])), 0.7)]
-    angle_marks = _angle_marks(plane, mm(plane.correction), mm(plane.vectors[-1].start))
-    figure = arrows + pole + angle_marks
+    angle_marks = _angle_marks(plane, mm(plane.correction), mm(plane.vectors[-1].start) + beside)
+    figure = arrows + leaders + pole + angle_marks
     middle = sum((mm(vertex) for vertex in plane.vertices[:-1]), 0j) / max(len(plane.vertices) - 1, 1)
     anchors = []
     for name, arrow in named:
@@ -126,15 +137,39 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
         anchors.append(Anchor(_xy(centre), name, NAME_SIZE, math.atan2(across.imag, across.real),
                               arrow.stroke.colour))
     if angle_marks:
-        tail = mm(plane.vectors[-1].start)
+        tail = mm(plane.vectors[-1].start) + beside
         half = math.radians(plane.angle_deg) / 2
         at = tail + (ANGLE_RADIUS_MM + 1.0) * complex(math.cos(half), math.sin(half))
         anchors.append(Anchor(_xy(at), f"θ{plane.name}", NAME_SIZE - 0.4, half, _ANGLE.colour))
-    labels = _lettered(anchors, figure)
-    layers = [Layer(f"{key}-reference", tuple(angle_marks)), Layer(f"{key}-vectors", tuple(arrows + pole)),
+    labels = _lettered(anchors, figure, [*angle_marks, *arrows])
+    layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
     return key, layers, extent, _caption(plane, scale, text, dynamic)
+
+
+def _beside(plane: CorrectionPlane, mm) -> complex:
+    """Where the correction is drawn from where it closes the polygon (mm): 0, or :data:`BESIDE_MM` across it, away
+    from the chain's corners, where a mass vector lies along it."""
+    tail, head = mm(plane.vectors[-1].start), mm(plane.vectors[-1].end)
+    length = abs(head - tail)
+    if length < ZERO_MM:
+        return 0j
+    along = (head - tail) / length
+
+    def local(point: complex) -> complex:  # along the correction from its tail, and across it
+        return (point - tail) / along
+
+    for vector in plane.vectors[:-1]:
+        start, end = local(mm(vector.start)), local(mm(vector.end))
+        common = min(max(start.real, end.real), length) - max(min(start.real, end.real), 0.0)
+        if abs(start.imag) < ALONG_MM and abs(end.imag) < ALONG_MM and common > ALONG_MM:
+            break
+    else:
+        return 0j
+    # Away from the chain's corners that stand off the line; to the right of the correction where none does.
+    offside = sum(local(mm(vertex)).imag for vertex in plane.vertices)
+    return along * 1j * (BESIDE_MM if offside < -ALONG_MM else -BESIDE_MM)
 
 
 def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> list[Primitive]:
@@ -160,10 +195,15 @@ def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], dyna
     return tuple(lines)
 
 
-def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placement:
-    """The labels placed clear of the figure and of every anchor's own spot."""
+def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], heavy: Sequence[Primitive]) -> Placement:
+    """The labels placed clear of the figure and of every anchor's own spot.
+
+    The ``heavy`` marks (the vectors, the correction's angle's arc and x-direction) count as areas, as heavy as a
+    point: a polygon has few lines and room beside them, and a short vector's name by the correction's tail read as
+    if it were written on them (plane L of the rotor starter)."""
     spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
-    return place_labels(anchors, obstacles_of(figure) + spots)
+    marks = [shape.buffer(0.4) for shape in obstacles_of(heavy)]
+    return place_labels(anchors, obstacles_of(figure) + spots + marks)
 
 
 def _given(value: float) -> str:
@@ -172,7 +212,8 @@ def _given(value: float) -> str:
 
 
 def _id(name: str) -> str:
-    return "".join(c if c.isalnum() else "_" for c in name)
+    """A vector's name as an svg id: a share (m1r1)L as m1r1L, other signs as _."""
+    return "".join(c if c.isalnum() else "_" for c in name if c not in "()")
 
 
 

@@ -11,14 +11,15 @@ The sections are written by the note's own writer, whose numbering, tables and l
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
 from ..rotor_balancing import BalancingResult, static_couple
+from .vibration_plots import words_for
 from ..units import RPM
-from ..vibration import Response, VibrationSpec, damping_ratio
+from ..vibration import Response, Shaft, VibrationSpec, damping_ratio
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
     from ..deliverables import MachineDynamics
@@ -189,71 +190,142 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         if not plane.needed:
             note.para(note.t("note_bal_none", name=plane.name))
             continue
-        value, vector = note.n(plane.mass_radius), plane.vectors[-1].name
+        vector = plane.vectors[-1].name
         # The correction mass is named as its product is (mLrL: mL), a long plane name's as mb.
         symbol = f"m{plane.name}" if vector == f"m{plane.name}r{plane.name}" else "mb"
-        mass = "" if plane.mass is None else note.t("note_bal_mass", symbol=symbol, value=value,
-                                                     radius=note.n(plane.radius), mass=note.n(plane.mass))
+        value, mass = note.n(plane.mass_radius), ""
+        if plane.mass is not None and plane.radius is not None:
+            radius = plane.radius
+            # The product to as many digits as make product/radius the mass written, in the equation and before it.
+            value = shown_operand(note, plane.mass_radius, [(lambda product: product / radius, note.n(plane.mass))])
+            mass = note.t("note_bal_mass", symbol=symbol, value=value, radius=note.n(radius), mass=note.n(plane.mass))
         # A disc's one plane has its equation in the paragraph before.
         note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=plane.name,
                          equation=plane.equation, vector=vector, value=value, angle=note.n(plane.angle_deg, 4),
                          mass=mass))
-    if spec.dynamic:
-        note.para(note.t("note_bal_residual", force=note.n(abs(result.residual_force)),
-                         moment=note.n(abs(result.residual_moment))))
-    else:
-        note.para(note.t("note_bal_residual_static", force=note.n(abs(result.residual_force))))
+    # The residual as results.json writes it (rounding as 0), and the verdict from it.
+    force, moment = result.residual
+    verdict = "note_bal_residual" + ("" if result.balanced else "_left") + ("" if spec.dynamic else "_static")
+    note.para(note.t(verdict, force=note.n(force), moment=note.n(moment),
+                     own=note.n(sum(abs(mass.unbalance) for mass in spec.masses))))
     note.figure("rotor_balancing.svg", note.text["bal_title"])
+
+
+def _shaft(note: Writer, shaft: Shaft, stiffness: str) -> None:
+    """The shaft's stiffness at the disc by the formula of its support, with its numbers; ``stiffness`` is k as the
+    note writes it."""
+    a = shaft.disc_at
+    b = shaft.length - a
+
+    def k_of(second: float) -> float:
+        if shaft.support == "simply_supported":
+            return 3.0 * shaft.modulus * second * shaft.length / (a * a * b * b)
+        return 3.0 * shaft.modulus * second / a ** 3
+
+    second = shown_operand(note, shaft.second_moment, [(k_of, stiffness)])
+    if shaft.diameter is not None:
+        note.para(note.t("note_vib_shaft_section", diameter=note.n(shaft.diameter), second=second))
+    values = {"modulus": note.n(shaft.modulus), "second": second, "length": note.n(shaft.length), "a": note.n(a),
+              "stiffness": stiffness}
+    if shaft.support == "simply_supported":
+        values["b"] = note.n(b)
+    note.para(note.t(f"note_vib_shaft_{shaft.support}", **values))
+
+
+def shown_operand(note: Writer, value: float, results: list[tuple[Callable[[float], float], str]]) -> str:
+    """``value`` written to as many digits (five at least) as make each function of ``results``, of the written
+    value, give its result as the note writes it: "mL = 1.58/0.05 = 31.599 kg" reads as a wrong sum."""
+    for digits in range(5, 18):
+        text = note.n(value, digits)
+        shown = read_number(note, text)
+        if all(_same_written(note, result_of(shown), result) for result_of, result in results):
+            return text
+    return note.n(value, 17)
+
+
+def read_number(note: Writer, text: str) -> float:
+    """A number as the note wrote it, read back."""
+    return float(text.replace("−", "-").replace(note.mark, "."))
+
+
+def _same_written(note: Writer, value: float, written: str) -> bool:
+    """Whether ``value`` written to as many significant digits as ``written`` has (at least) is ``written``; the
+    zeros that end a whole number (3030100) may be rounding's."""
+    digits = len(written.lstrip("−").replace(note.mark, "").strip("0"))
+    return any(note.n(value, count) == written for count in range(max(1, digits), 18))
 
 
 def vibration_section(note: Writer, section: int, spec: VibrationSpec, response: Response) -> None:
     """From the natural frequency to the amplitude, the force passed to the base, the motion a moving base gives,
-    and the isolating mounts."""
+    and the isolating mounts.
+
+    Each operand is written to as many digits as make the written operands give the written result
+    (:func:`shown_operand`); a value used in several equations is written one way in all of them."""
     note.heading(2, f"{section}. {note.t('note_vibration')}")
-    mass, stiffness, omega = note.n(spec.mass), note.n(spec.stiffness), note.n(spec.omega)
-    unbalance = note.n(spec.unbalance)
+    mass, unbalance = note.n(spec.mass), note.n(spec.unbalance)
+    m = read_number(note, mass)
+    natural = note.n(response.natural_frequency)
+    ratio = note.n(response.frequency_ratio)
+    zeta = note.n(spec.damping_ratio)
+    checks_of_k = [(lambda k: math.sqrt(k / m), natural)]
+    if spec.damping is not None:
+        checks_of_k.append((lambda k: float(damping_ratio(spec.damping, k, m)), zeta))
+    stiffness = shown_operand(note, spec.stiffness, checks_of_k)
+    omega = shown_operand(note, spec.omega, [(lambda w: w / read_number(note, natural), ratio),
+                                             (lambda w: spec.unbalance * w * w, note.n(response.exciting_force))])
+    w = read_number(note, omega)
     # Balanced, on a moving base (an instrument on a shaken floor): no unbalance to work out.
     balanced = spec.unbalance == 0 and response.base is not None
     model = "note_vib_model_base" if balanced else "note_vib_model_shaft" if spec.on_shaft else "note_vib_model"
-    note.para(note.t(model, mass=mass, stiffness=stiffness, zeta=note.n(spec.damping_ratio), unbalance=unbalance,
+    note.para(note.t(model, mass=mass, stiffness=stiffness, zeta=zeta, unbalance=unbalance,
                      omega=omega, rpm=note.n(spec.omega / RPM)))
+    if spec.shaft is not None:
+        _shaft(note, spec.shaft, stiffness)
     if spec.damping is not None:
         note.para(note.t("note_vib_damping", damping=note.n(spec.damping), stiffness=stiffness, mass=mass,
-                         zeta=note.n(spec.damping_ratio)))
-    natural = note.n(response.natural_frequency)
+                         zeta=zeta))
     note.para(note.t("note_vib_natural", stiffness=stiffness, mass=mass, value=natural,
-                     rpm=note.n(response.natural_frequency / RPM), omega=omega, ratio=note.n(response.frequency_ratio)))
-    magnification = note.n(response.magnification)
+                     rpm=note.n(response.natural_frequency / RPM), omega=omega, ratio=ratio))
+    me_over_m = spec.unbalance / m
+    amplitude_checks = [] if balanced else [(lambda q: me_over_m * q, note.n(response.amplitude))]
+    if response.base is not None:
+        amplitude_checks.append((lambda q: response.base.base_amplitude * q, note.n(response.base.relative)))
+    magnification = shown_operand(note, response.magnification, amplitude_checks)
+    force = note.n(response.exciting_force)
+    # The force passed on is said, not written as a product: TR need only give the base's motion it is written into.
+    tr_checks = [] if response.base is None else [(lambda t: response.base.base_amplitude * t,
+                                                   note.n(response.base.amplitude))]
+    tr = shown_operand(note, response.transmissibility, tr_checks)
     if not balanced:
         note.para(note.t("note_vib_amplitude", magnification=magnification, unbalance=unbalance, mass=mass,
                          amplitude=note.n(response.amplitude), millimetres=note.n(response.amplitude * 1000.0),
                          phase=note.n(math.degrees(response.phase), 4)))
         note.para(note.t("note_vib_transmitted_shaft" if spec.on_shaft else "note_vib_transmitted",
-                         unbalance=unbalance, omega=omega,
-                         force=note.n(response.exciting_force), tr=note.n(response.transmissibility),
+                         unbalance=unbalance, omega=omega, force=force, tr=tr,
                          transmitted=note.n(response.transmitted_force)))
     if response.base is not None:
         base = response.base
-        note.para(note.t("note_vib_base", base=note.n(base.base_amplitude), tr=note.n(response.transmissibility),
+        note.para(note.t("note_vib_base", base=note.n(base.base_amplitude), tr=tr,
                          amplitude=note.n(base.amplitude), phase=note.n(math.degrees(base.phase), 4),
                          magnification=magnification, relative=note.n(base.relative)))
     if spec.transmissibility is not None and response.isolation_ratio is not None:
-        ratio = note.n(response.isolation_ratio)
         designed = response.isolation_stiffness
+        isolating = shown_operand(note, response.isolation_ratio, [(lambda r: m * (w / r) ** 2, note.n(designed))])
         if spec.damping_ratio > 0:
             # The ratio is found at the same ζ: the mounts need dampers to match, the present ones giving less.
             def damping_for(stiffness: float) -> float:  # c that gives the scene's ζ on mounts of that stiffness
                 return 2.0 * spec.damping_ratio * math.sqrt(stiffness * spec.mass)
 
-            note.para(note.t("note_vib_isolation_damped", wanted=note.n(spec.transmissibility), ratio=ratio,
-                             mass=mass, omega=omega, stiffness=note.n(designed), zeta=note.n(spec.damping_ratio),
+            note.para(note.t("note_vib_isolation_damped", wanted=note.n(spec.transmissibility), ratio=isolating,
+                             mass=mass, omega=omega, stiffness=note.n(designed), zeta=zeta,
                              damping=note.n(damping_for(designed)),
                              kept=note.n(float(damping_ratio(damping_for(spec.stiffness), designed, spec.mass)))))
         else:
-            note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=ratio, mass=mass,
+            note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=isolating, mass=mass,
                              omega=omega, stiffness=note.n(designed)))
-    note.figure("vibration_magnification.svg", note.text["vib_magnification_title"])
-    note.figure("vibration_transmissibility.svg", note.text["vib_transmissibility_title"])
+    words = words_for(spec, note.text) or note.text  # a moving base's plots are captioned as they are titled
+    note.figure("vibration_magnification.svg", words["vib_magnification_title"])
+    note.figure("vibration_transmissibility.svg", words["vib_transmissibility_title"])
 
 
 __all__ = ["balancing_section", "vibration_section"]

@@ -2,7 +2,11 @@
 
 Each figure draws its curve against the frequency ratio r = ω/ωn for
 several damping ratios ζ, from :mod:`graphplan.vibration`, and marks a
-machine's working point when one is given.  Every word comes from ``text``,
+machine's working point when one is given, on the curve of the machine's
+own ζ, drawn thicker in the point's colour (added where the textbook set
+lacks it); the transmissibility also marks the isolating mounts' design
+point.  A machine on a moving base with no unbalance of its own reads the
+same curves as Z/Y and X/Y (:func:`words_for`).  Every word comes from ``text``,
 the ``vib_`` keys of a locale (:func:`graphplan.locale.strings`); English when
 none is given.  matplotlib is imported only inside the functions, with the Agg
 backend; the SVG has no date and a fixed hash salt, so the same call writes
@@ -18,14 +22,15 @@ from pathlib import Path
 import numpy as np
 
 from ..locale import strings as locale_strings
-from ..vibration import transmissibility, unbalance_magnification
+from ..vibration import VibrationSpec, transmissibility, unbalance_magnification
 from .plot_style import settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
 # Samples along r: dense enough that the sharpest peak drawn (ζ = 0.05) reads smooth.
 SAMPLES = 1201
-
+# The machine's own curve and its working point.
+MACHINE_COLOUR = "#a83a1f"
 
 
 def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
@@ -33,34 +38,61 @@ def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETA
                          text: Mapping[str, str] | None = None) -> Path:
     """Write the magnification factor M·X/(m·e) against r for each ζ in ``zetas`` to ``path`` as SVG.
 
-    ``operating`` = (r, ζ) marks a machine's working point on its curve.
-    The ordinate stops at a little above the highest drawn peak (an
+    ``operating`` = (r, ζ) marks a machine's working point on the curve of its ζ.
+    The ordinate stops at a little above the highest damped peak drawn and the working point (an
     undamped curve is cut there).
     """
     words = {**locale_strings("en"), **(text or {})}
     ratios = np.linspace(0.0, _reaching(ratio_max, operating), SAMPLES)
-    curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in _checked(zetas)]
-    damped = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in zetas if 0 < zeta < math.sqrt(0.5)]
-    top = 1.15 * max([*damped, 2.0])
-    return _plot(path, ratios, curves, words, words["vib_magnification"], words["vib_magnification_title"], ylim=(0.0, top), log=False,
-                 operating=None if operating is None else (operating[0], unbalance_magnification(*operating)))
+    drawn = _with_machine(_checked(zetas), operating)
+    curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in drawn]
+    working = None if operating is None else (operating[0], unbalance_magnification(*operating))
+    damped = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in drawn if 0 < zeta < math.sqrt(0.5)]
+    top = 1.15 * max([*damped, 2.0, *([] if working is None else [working[1]])])
+    return _plot(path, ratios, curves, words, words["vib_magnification"], words["vib_magnification_title"],
+                 ylim=(0.0, top), log=False, operating=working,
+                 machine=None if operating is None else operating[1])
 
 
 def transmissibility_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
                             ratio_max: float = 5.0, operating: tuple[float, float] | None = None,
+                            design: tuple[float, float] | None = None,
                             text: Mapping[str, str] | None = None) -> Path:
     """Write the transmissibility TR against r for each ζ in ``zetas`` to ``path`` as SVG, TR on a log scale.
 
     The isolating range r > √2, where every curve falls below 1, is shaded;
-    ``operating`` = (r, ζ) marks a machine's working point.
+    ``operating`` = (r, ζ) marks a machine's working point on the curve of its ζ, and ``design`` = (r, TR)
+    the isolating mounts' (the ratio that gives the wanted TR at the machine's ζ).
     """
     words = {**locale_strings("en"), **(text or {})}
-    ratios = np.linspace(0.0, _reaching(ratio_max, operating), SAMPLES)
-    curves = [(zeta, transmissibility(ratios, zeta)) for zeta in _checked(zetas)]
+    reach = _reaching(ratio_max, operating)
+    if design is not None:
+        reach = max(reach, float(math.ceil(1.2 * design[0])))
+    ratios = np.linspace(0.0, reach, SAMPLES)
+    curves = [(zeta, transmissibility(ratios, zeta)) for zeta in _with_machine(_checked(zetas), operating)]
     working = None if operating is None else (operating[0], transmissibility(*operating))
-    lowest = 0.02 if working is None else min(0.02, 0.5 * working[1])
+    lowest = min([0.02, *(0.5 * point[1] for point in (working, design) if point is not None)])
     return _plot(path, ratios, curves, words, words["vib_transmissibility"], words["vib_transmissibility_title"],
-                 ylim=(lowest, 20.0), log=True, operating=working, isolation=True)
+                 ylim=(lowest, 20.0), log=True, operating=working, isolation=True,
+                 machine=None if operating is None else operating[1], design=design)
+
+
+def words_for(spec: VibrationSpec, text: Mapping[str, str] | None) -> Mapping[str, str] | None:
+    """The plots' words for ``spec`` (``text`` as the figures take it; None: English): a machine with no unbalance
+    on a moving base reads the magnification as its motion relative to the base, Z/Y, and the transmissibility as
+    the motion passed to it, X/Y (the same curves), not as a rotating unbalance and a force."""
+    if not (spec.unbalance == 0 and spec.base_amplitude is not None):
+        return text
+    words = {**locale_strings("en"), **(text or {})}
+    return {**words, "vib_magnification": words["vib_relative"], "vib_magnification_title": words["vib_relative_title"],
+            "vib_transmissibility": words["vib_motion"], "vib_transmissibility_title": words["vib_motion_title"]}
+
+
+def _with_machine(zetas: list[float], operating: tuple[float, float] | None) -> list[float]:
+    """The damping ratios drawn: the set asked for and the machine's own, in order (once, if the set has it)."""
+    if operating is None or any(math.isclose(zeta, operating[1], rel_tol=1e-9, abs_tol=1e-12) for zeta in zetas):
+        return zetas
+    return sorted([*zetas, float(operating[1])])
 
 
 def _reaching(ratio_max: float, operating: tuple[float, float] | None) -> float:
@@ -81,7 +113,8 @@ def _checked(zetas: Sequence[float]) -> list[float]:
 
 def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.ndarray]], text: Mapping[str, str],
           ylabel: str, title: str, *, ylim: tuple[float, float], log: bool,
-          operating: tuple[float, float] | None, isolation: bool = False) -> Path:
+          operating: tuple[float, float] | None, isolation: bool = False, machine: float | None = None,
+          design: tuple[float, float] | None = None) -> Path:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -95,7 +128,11 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         colours = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.85, len(curves)))
         for (zeta, values), colour in zip(curves, colours, strict=True):
             shown = np.where(np.isfinite(values), values, np.nan)
-            plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vib_zeta"].format(value=f"{zeta:g}"))
+            if machine is not None and math.isclose(zeta, machine, rel_tol=1e-9, abs_tol=1e-12):
+                plot.plot(ratios, shown, color=MACHINE_COLOUR, linewidth=2.4, zorder=3,
+                          label=text["vib_zeta_machine"].format(value=f"{zeta:g}"))
+            else:
+                plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vib_zeta"].format(value=f"{zeta:g}"))
         if isolation:
             plot.axvspan(math.sqrt(2.0), ratios[-1], color="#1f7a3a", alpha=0.08, label=text["vib_isolation"])
             plot.axvline(math.sqrt(2.0), color="#1f7a3a", linewidth=0.8, linestyle="--")
@@ -104,8 +141,11 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
             plot.axhline(1.0, color="black", linewidth=0.6, linestyle=":")
         plot.axvline(1.0, color="black", linewidth=0.5, linestyle=":")
         if operating is not None:
-            plot.plot([operating[0]], [operating[1]], "o", color="#a83a1f", markersize=6,
+            plot.plot([operating[0]], [operating[1]], "o", color=MACHINE_COLOUR, markersize=6, zorder=4,
                       label=text["vib_operating"])
+        if design is not None:
+            plot.plot([design[0]], [design[1]], "D", color="#1f7a3a", markeredgecolor="black", markersize=6, zorder=4,
+                      label=text["vib_design"].format(tr=f"{design[1]:g}", ratio=f"{design[0]:.3g}"))
         if log:
             plot.set_yscale("log")
         plot.set_xlim(ratios[0], ratios[-1])
@@ -123,4 +163,4 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
     return target
 
 
-__all__ = ["DEFAULT_ZETAS", "magnification_figure", "transmissibility_figure"]
+__all__ = ["DEFAULT_ZETAS", "magnification_figure", "transmissibility_figure", "words_for"]
