@@ -369,7 +369,8 @@ class MachineDynamics:
         ``angle_deg`` reads (the crank's own angle, 0…360°): the run counts its angle from the first position,
         where the equivalent model starts.  None where it did not."""
         motion = self.motion
-        if motion is None or motion.stopped_at is None:
+        # A machine that never starts has stalled without stopping: it was never moving.
+        if motion is None or (motion.stopped_at is None and motion.stalled_at is None):
             return None
         model = self.model
         return math.degrees(float(model.driver[0]) + model.sense * float(motion.phi[-1])) % 360.0
