@@ -63,10 +63,10 @@ def write(rows: list[dict]) -> None:
     document = {"machine": platform.platform(), "python": platform.python_version(), "rows": rows}
     (out / "triad_sweep.json").write_text(json.dumps(document, indent=1) + "\n", encoding="utf-8")
     lines = ["# A dense sweep of a class III triad", "",
-             f"`python bench/triad_sweep.py` on {platform.platform()}, Python {platform.python_version()}; "
-             f"best of {REPEATS} runs, a fresh mechanism each. One by one: every position settled by scipy's "
-             "hybrid Newton from the one before it; batched: the walk's steps so, the positions between them in "
-             "one batched Newton solve.", "",
+             (f"`python bench/triad_sweep.py` on {platform.platform()}, Python {platform.python_version()}; "
+              f"best of {REPEATS} runs, a fresh mechanism each. One by one: every position settled by scipy's "
+              "hybrid Newton from the one before it; batched: the walk's steps so, the positions between them in "
+              "one batched Newton solve."), "",
              "| scene | positions | one by one, s | batched, s | speed-up | largest difference, m |",
              "|---|---:|---:|---:|---:|---:|"]
     lines += [f"| {row['scene']} | {row['positions']} | {row['one_by_one_s']:.3f} | {row['batched_s']:.3f} | "

@@ -519,9 +519,31 @@ def _damping(table: Table, stiffness: float, mass: float) -> float:
     return table.number("damping_ratio", 0.0, non_negative=True)
 
 
-__all__ = ["BaseResponse", "NEAR_RESONANCE", "RESONANCE_TOLERANCE", "Response", "Shaft", "VibrationSpec",
-           "at_resonance", "circular_second_moment", "critical_speed", "damping_from_phase", "damping_from_resonance",
-           "damping_ratio", "displacement_transmissibility", "displacement_transmissibility_phase",
-           "force_magnification", "isolation_frequency_ratio", "isolation_stiffness", "natural_frequency", "phase",
-           "read_vibration", "resonance_warning", "shaft_stiffness", "steady_state", "transmissibility",
-           "unbalance_magnification", "vibration_results"]
+__all__ = [
+    "NEAR_RESONANCE",
+    "RESONANCE_TOLERANCE",
+    "BaseResponse",
+    "Response",
+    "Shaft",
+    "VibrationSpec",
+    "at_resonance",
+    "circular_second_moment",
+    "critical_speed",
+    "damping_from_phase",
+    "damping_from_resonance",
+    "damping_ratio",
+    "displacement_transmissibility",
+    "displacement_transmissibility_phase",
+    "force_magnification",
+    "isolation_frequency_ratio",
+    "isolation_stiffness",
+    "natural_frequency",
+    "phase",
+    "read_vibration",
+    "resonance_warning",
+    "shaft_stiffness",
+    "steady_state",
+    "transmissibility",
+    "unbalance_magnification",
+    "vibration_results",
+]

@@ -207,8 +207,8 @@ def written_as(value, written):
 
 SHAFTS = {  # a disc on a shaft: simply supported off the middle, and overhung on a cantilever
     "simply_supported": ("shaft = { modulus = 2.0e11, diameter = 0.05, length = 1.2, position = 0.3 }", 0.3, 0.9),
-    "cantilever": ('shaft = { modulus = 2.0e11, diameter = 0.025, length = 0.4, position = 0.3, '
-                   'support = "cantilever" }', 0.3, None),
+    "cantilever": (('shaft = { modulus = 2.0e11, diameter = 0.025, length = 0.4, position = 0.3, '
+                    'support = "cantilever" }'), 0.3, None),
 }
 
 

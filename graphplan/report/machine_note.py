@@ -17,9 +17,9 @@ from typing import TYPE_CHECKING, Protocol
 import numpy as np
 
 from ..rotor_balancing import BalancingResult, static_couple
-from .vibration_plots import words_for
 from ..units import RPM
 from ..vibration import Response, Shaft, VibrationSpec, damping_ratio
+from .vibration_plots import words_for
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
     from ..deliverables import MachineDynamics
@@ -197,7 +197,7 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         if plane.mass is not None and plane.radius is not None:
             radius = plane.radius
             # The product to as many digits as make product/radius the mass written, in the equation and before it.
-            value = shown_operand(note, plane.mass_radius, [(lambda product: product / radius, note.n(plane.mass))])
+            value = shown_operand(note, plane.mass_radius, [(lambda product, radius=radius: product / radius, note.n(plane.mass))])
             mass = note.t("note_bal_mass", symbol=symbol, value=value, radius=note.n(radius), mass=note.n(plane.mass))
         # A disc's one plane has its equation in the paragraph before.
         note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=plane.name,
