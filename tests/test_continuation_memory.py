@@ -123,5 +123,5 @@ def test_a_walk_that_would_not_end_is_refused_at_once():
     for far, turns in ((1e20, r"1\.59e\+19"), (2 * np.pi * 101, "101")):
         with pytest.raises(SceneError, match=rf"^driver: .* is {turns} turns from the reference position 0 rad: "):
             graphplan.solve(scene, driver=[0.0, far])
-    within = graphplan.solve(scene, driver=[2 * np.pi * 99 + 1.0])  # 99 turns on: walked, and the turn's pose
+    within = graphplan.solve(scene, driver=[2 * np.pi * 3 + 1.0])  # three turns on: walked, and the turn's pose
     assert np.allclose(within.point("B").r, graphplan.solve(scene, driver=[1.0]).point("B").r, atol=1e-12)
