@@ -455,8 +455,9 @@ def with_toggles_between(motion: Motion, reference: Reference, samples: int) -> 
     span = float(distinct[-1] - distinct[0])
     steps = max(samples, math.ceil(samples * span / (2 * math.pi))) if driver.cyclic else samples
     paths = solve(motion.mechanism, np.linspace(distinct[0], distinct[-1], steps + 1), reference, tolerant=True)
-    found = toggles_between(motion.at_positions(first), [int(index) for index in first], reference, paths,
-                            closed=False)
+    # Values already rising (a linspace, the usual sweep) need no reordered copy of a motion that may be large.
+    ordered = motion if len(first) == motion.count and np.all(np.diff(first) > 0) else motion.at_positions(first)
+    found = toggles_between(ordered, [int(index) for index in first], reference, paths, closed=False)
     if not found:
         return motion
     stepped = tuple(replace(warning, position=int(first[warning.position])) for warning in found)
