@@ -121,11 +121,18 @@ class Track:
         return -size * (np.conj(self.slot * rotation) * (point - self.centre)).real
 
     def taken(self, which) -> Track:
-        """The track at the positions ``which`` (an index, or an index array) of one whose fields hold every position."""
+        """The track at the positions ``which`` of one whose fields hold every position: at an index array, its
+        fields arrays; at one index, plain numbers (scipy's root calls the closure with them, a scalar at a time)."""
         def at(value):
-            return value if value is None or np.ndim(value) == 0 else value[which]
+            if value is None or np.ndim(value) == 0:
+                return value
+            return value[which] if np.ndim(which) else complex(value[which])
 
         return replace(self, centre=at(self.centre), u=at(self.u))
+
+
+def _taken(tracks: tuple[Track, Track, Track], which) -> tuple[Track, Track, Track]:
+    return tuple(track.taken(which) for track in tracks)  # type: ignore[return-value]
 
 
 @dataclass(frozen=True)
@@ -491,16 +498,7 @@ class Triad(Group):
         return tuple(tracks)  # type: ignore[return-value]
 
     def _tracks_at(self, context: Context, index: int) -> tuple[Track, Track, Track]:
-        return self._at(self._tracks(context), index)
-
-    @staticmethod
-    def _at(tracks: tuple[Track, Track, Track], index: int) -> tuple[Track, Track, Track]:
-        """The tracks at one position, their fields plain numbers (scipy's root calls the closure with them)."""
-        def scalar(value):
-            return value if value is None else complex(value[index])
-
-        return tuple(replace(track, centre=scalar(track.centre), u=scalar(track.u))  # type: ignore[return-value]
-                     for track in tracks)
+        return _taken(self._tracks(context), index)
 
     def _poses(self, context: Context, branch: TriadBranch) -> list[Pose]:
         """The pose at every position: walked out from the reference position both ways along the steps of
@@ -514,7 +512,7 @@ class Triad(Group):
             step = steps[index]
             if step in walked:  # an earlier solve walked past this step of the same assembly
                 return walked[step]
-            pose = self._settle(guess, self._at(tracks, index), branch.turn)
+            pose = self._settle(guess, _taken(tracks, index), branch.turn)
             if step is not None and pose is not None:
                 walked[step] = pose
             return pose
@@ -537,14 +535,14 @@ class Triad(Group):
         if between:
             off, before = (np.array(column) for column in zip(*between))
             batched = self._settle_many([poses[k] for k in before],  # type: ignore[misc]
-                                        tuple(track.taken(off) for track in tracks), branch.turn)
+                                        _taken(tracks, off), branch.turn)
             for index, guess, pose in zip(off, before, batched):
                 poses[index] = pose if pose is not None else settle(int(index), poses[guess])  # type: ignore[arg-type]
                 if poses[index] is None:
                     stops.append(int(index))
         if stops:
             first = min(stops, key=lambda index: abs(index - start))
-            why = self._why_not(self._at(tracks, first), walking=first != start)
+            why = self._why_not(_taken(tracks, first), walking=first != start)
             context.fail_where(np.arange(context.count) == first,
                                lambda i, at: AssemblyError(self.joints[1], at, self.label, why))
         return poses  # type: ignore[return-value]
