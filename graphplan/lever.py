@@ -69,9 +69,9 @@ def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, l
         if load.link == mechanism.scene.frame_link:
             continue
         if load.is_force:
-            image = _image_on(velocity, load.link, load.point, positions[load.point])
+            image, under = _image_on(velocity, load.link, load.point, positions[load.point])
             # The image of a displaced point by similarity: its velocity relative to the link's point is ω × offset.
-            shift = 1j * velocity.rates.get(load.link, 0.0) * load.offset if load.offset else 0j
+            shift = under + (1j * velocity.rates.get(load.link, 0.0) * load.offset if load.offset else 0j)
             terms.append(_term(load.name, image, load.force, velocity.points[image] + shift, shift))
         elif load.moment != 0:
             terms.extend(_couple(load, positions, velocity))
@@ -89,15 +89,23 @@ def lever(mechanism: Mechanism, positions: dict[str, complex], velocity: Plan, l
     return Lever(tuple(terms), balancing * unit_force, velocity.images[driver.joint], float(balancing))
 
 
-def _image_on(velocity: Plan, link: int, point: str, where: complex) -> str:
-    """The image of the point of ``link`` at ``where``: the point's own, unless another link carries the point
-    and ``link`` has its own image there (the guide's ``a4`` under the slider's joint ``A``)."""
+def _image_on(velocity: Plan, link: int, point: str, where: complex) -> tuple[str, complex]:
+    """The image of the point of ``link`` at ``where``, as a plan point and a shift from it (m/s).
+
+    The point's own image, unless another link carries the point: then
+    ``link``'s own image there (the guide's ``a4`` under the slider's joint
+    ``A``) or, where the plan has none (a slot on a rocker, ``b4`` under the
+    block's ``B``), the nearest of ``link``'s images shifted by ω × the
+    distance, as the similarity theorem would place ``b4``.
+    """
     own = velocity.images[point]
     members = velocity.members.get(link, ())
-    if any(letter == own for _, letter in members):
-        return own
-    beneath = [letter for position, letter in members if abs(position - where) <= 1e-9 * max(abs(where), 1.0)]
-    return beneath[0] if beneath else own
+    if not members or any(letter == own for _, letter in members):
+        return own, 0j
+    nearest, letter = min(members, key=lambda member: abs(member[0] - where))
+    if abs(nearest - where) <= 1e-9 * max(abs(where), 1.0):
+        return letter, 0j
+    return letter, 1j * velocity.rates.get(link, 0.0) * (where - nearest)
 
 
 def _term(name: str, image: str, force: complex, at: complex, shift: complex = 0j) -> LeverTerm:

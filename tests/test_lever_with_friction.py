@@ -45,10 +45,18 @@ def triad_slider_with_friction():
     return analyse(dataclasses.replace(scene, friction=specs))
 
 
+def tangent_slot_with_friction():
+    """The tangent mechanism with friction in the lever's upper slot (block 5 on lever 4), whose point under the
+    block, b4, the velocity plan does not construct."""
+    scene = graphplan.load(FIXTURES / "tangent_mechanism_prp.toml")
+    return analyse(dataclasses.replace(scene, friction=(FrictionSpec("friction[0]", "B", (4, 5), 0.15, None, None),)))
+
+
 CASES = {
     "journals of the ratchet": lambda: ratchet_with_friction(0.12),
     "guide and journals of a triad's sliding leg": triad_slider_with_friction,
     "slot and journals of the slotted lever": slotted_lever_with_friction,
+    "slot on a moving lever with no image under the block": tangent_slot_with_friction,
     "guide of the slider-crank, on the frame": lambda: analyse(slider_crank(
         '[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 0.15\n[[friction]]\njoint = "A"\nf = 0.1\nradius = 0.02')),
 }
@@ -79,6 +87,21 @@ def test_a_friction_force_on_the_guide_acts_at_the_guides_own_point():
     assert images["Ff43"] == "a" and images["Ff34"] == "a4"
     velocity = position.velocity
     assert abs(velocity.points["a"] - velocity.points["a4"]) > 1e-3 * abs(velocity.points["a"])
+
+
+def test_a_friction_force_on_a_guide_without_its_own_image_there_acts_where_similarity_puts_it():
+    analysis = tangent_slot_with_friction()
+    position = analysis.plans[0]
+    velocity = position.velocity
+    assert "B4" not in velocity.images
+    terms = {term.name: term for term in position.lever_with_friction.terms}
+    on_block, on_lever = terms["Ff45"], terms["Ff54"]
+    assert on_block.image == "b" and on_block.shift == 0
+    # b4 by hand: the lever turns about its fixed pivot C, so vB4 = ω4 × CB.
+    where = position.positions
+    b4 = 1j * velocity.rates[4] * (where["B"] - where["C"])
+    assert velocity.points[on_lever.image] + on_lever.shift == pytest.approx(b4, abs=1e-12)
+    assert abs(b4 - velocity.points["b"]) > 1e-3 * abs(b4)
 
 
 def test_results_carry_the_lever_with_friction():
