@@ -51,7 +51,8 @@ def settle(repeat: Callable[[np.ndarray], np.ndarray], start: np.ndarray,
             change = _largest(again - unknowns)
             unknowns = np.where(done[:, None], unknowns, again)
             iterations = np.where(done, iterations, step)
-            done |= change <= CONVERGED * _largest(again)  # a NaN change (a position blown up) never settles
+            # A position blown up never settles: its change is NaN, or inf against an inf size.
+            done |= (change <= CONVERGED * _largest(again)) & np.all(np.isfinite(again), axis=1)
             if done.all():
                 return unknowns, iterations, ~done
         rest = ~done
