@@ -28,7 +28,7 @@ from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, veloci
 from .positions import PositionSet, make_positions, reach
 from .scales import standard_scale
 from .scene import Scene
-from .statics import Equilibrium, equilibrium, pairs
+from .statics import Equilibrium, equilibrium, pairs, turned_round
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
 PATH_SAMPLES = 360
@@ -65,6 +65,8 @@ class PlanPosition(VelocityPosition):
     lever: Lever | None = None
     with_friction: ForcePlan | None = None
     lever_with_friction: Lever | None = None
+    # The pairs' friction loads at the settled reactions (Mf23, Ff34, ...), as the lever with friction takes them.
+    friction_loads: tuple[Load, ...] = ()
 
     @property
     def plans(self) -> dict[str, Plan]:
@@ -171,9 +173,10 @@ def analyse(scene: Scene) -> Analysis:
                 with_friction = equilibrium(mechanism, motion, loads, friction)
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
-    warnings += _measured_far_off((*plans, *every))
+    warnings += _measured_far_off((*plans, *every), scene.drawing.drafting_precision)
     in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions)
-                            + _self_locking(with_friction), key=lambda warning: warning.position))
+                            + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction),
+                            key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
                     loads, balance, with_friction, friction, every)
@@ -182,24 +185,30 @@ def analyse(scene: Scene) -> Analysis:
 # A hand reading this far (per cent) from the same quantity of the plan as constructed is a misread length or
 # a segment taken for another, not a drawing's error: a plan drawn with care keeps within a few per cent.
 FAR_OFF_PERCENT = 15.0
+# ... and this many drafting precisions off in millimetres, a short segment's reading being as good as its two ends.
+FAR_OFF_PRECISIONS = 2.0
 
 
-def _measured_far_off(drawn: tuple[PlanPosition | VelocityPosition, ...]) -> tuple[PositionWarning, ...]:
-    """A warning at each position with hand readings more than :data:`FAR_OFF_PERCENT` from its constructed plan."""
+def _measured_far_off(drawn: tuple[PlanPosition | VelocityPosition, ...], precision: float) -> tuple[PositionWarning, ...]:
+    """A warning at each position with hand readings more than :data:`FAR_OFF_PERCENT` from its constructed plan
+    and more than :data:`FAR_OFF_PRECISIONS` drafting precisions (mm) from it on the paper."""
     warnings = []
     for position in drawn:
         constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
         off: dict[str, list[str]] = {}  # by the reading, as the scene writes it, what it gives far off
         for row in position.errors:
             plan = constructed.get(row.quantity)
-            if row.source == "measured" and plan is not None and abs(row.plan - plan) > FAR_OFF_PERCENT / 100.0 * abs(plan):
-                off.setdefault(row.reading, []).append(
-                    f"{row.quantity} = {row.plan:.4g} against {plan:.4g}, "
-                    f"{abs(row.plan - plan) / abs(plan) * 100.0 if plan else math.inf:.1f} % off")
+            if row.source != "measured" or plan is None:
+                continue
+            apart = abs(row.plan - plan)
+            if apart > FAR_OFF_PERCENT / 100.0 * abs(plan) and apart > FAR_OFF_PRECISIONS * precision * row.per_millimetre:
+                share = f"{apart / abs(plan) * 100.0:.1f} % off" if plan else "where the plan has none"
+                off.setdefault(row.reading, []).append(f"{row.quantity} = {row.plan:.4g} against {plan:.4g}, {share}")
         if off:
             readings = "; ".join(f"{reading} gives {', '.join(found)}" for reading, found in off.items())
             warnings.append(PositionWarning(position.index, "measured-far-off", (
-                f"measured.{position.number}: readings more than {FAR_OFF_PERCENT:g} % off the plan as constructed "
+                f"measured.{position.number}: readings more than {FAR_OFF_PERCENT:g} % and "
+                f"{FAR_OFF_PRECISIONS * precision:g} mm off the plan as constructed "
                 f"({readings}): a length misread, or a segment taken for another?")))
     return tuple(warnings)
 
@@ -212,6 +221,21 @@ def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, .
     return tuple(PositionWarning(int(index), "self-locking", "the friction in the pairs locks the mechanism here: "
                                  "no driving load, however large, moves it")
                  for index in np.flatnonzero(with_friction.locked))
+
+
+def _turned_round(mechanism: Mechanism, ideal: Equilibrium | None,
+                  with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:
+    """A warning at each position where the loads would drive the mechanism but its friction holds them: the
+    driver has to push it through, and η′ ≤ 0 (the efficiency of the flow backwards is not defined)."""
+    if with_friction is None:
+        return ()
+    name, unit = ("Mb", "N·m") if mechanism.driver.kind == "crank" else ("Fb", "N")
+    moving = ~with_friction.locked
+    return tuple(PositionWarning(int(index), "reverse-self-locking", (
+        f"the loads would drive the mechanism here ({name}0 = {ideal.balancing[index]:.6g} {unit}), but the friction "
+        f"in the pairs holds them: the driver must drive it ({name} = {with_friction.balancing[index]:.6g} {unit}); "
+        "the mechanism locks itself against its loads driving it (η′ ≤ 0)"))
+        for index in np.flatnonzero(moving & turned_round(mechanism, ideal.balancing, with_friction.balancing)))
 
 
 def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
@@ -334,7 +358,7 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             raise SceneError(f"measured.{number}.forces", "the scene has no force analysis: give the links' masses or loads")
         rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, measured)
         warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
-        loads, forces, on_lever, rubbing, rubbing_lever = (), None, None, None, None
+        loads, forces, on_lever, rubbing, rubbing_lever, rubbing_loads = (), None, None, None, None, ()
         if acting is not None:
             state = plan_state(mechanism, where, velocity, acceleration)
             loads = link_loads(mechanism, state, acting[:, index:index + 1])
@@ -351,9 +375,10 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
             on_lever = lever(mechanism, where, velocity, loads)
             if rubbing is not None and not rubbing.locked:
                 settled = {name: found.force for name, found in rubbing.reactions.items()}
-                rubbing_lever = lever(mechanism, where, velocity, loads + friction_loads(friction, state, settled))
+                rubbing_loads = friction_loads(friction, state, settled)
+                rubbing_lever = lever(mechanism, where, velocity, loads + rubbing_loads)
         found.append(PlanPosition(number, index, where, directions, velocity, tuple(table), tuple(rows), acceleration,
-                                  loads, forces, on_lever, rubbing, rubbing_lever))
+                                  loads, forces, on_lever, rubbing, rubbing_lever, rubbing_loads))
     return tuple(found), tuple(warnings)
 
 

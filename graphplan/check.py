@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import re
+import unicodedata
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 
@@ -84,6 +85,8 @@ class ErrorRow:
     source: str
     # The hand reading a measured row comes from, as the scene gives it: "pd = 13.86 mm".
     reading: str = ""
+    # What a millimetre of that reading's segment stands for (m/s, rad/s, N, ... per mm): a measured row's slack.
+    per_millimetre: float = 0.0
 
     @property
     def percent(self) -> float:
@@ -338,7 +341,7 @@ def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForceP
                              "give each reaction once")
         read[reaction] = name
         rows.append(ErrorRow(position, reaction, analytic[reaction], millimetres * scale, "measured",
-                             f"{name} = {millimetres:g} mm at μF = {scale:g} N/mm"))
+                             f"{name} = {millimetres:g} mm at μF = {scale:g} N/mm", scale))
     return rows
 
 
@@ -353,7 +356,8 @@ def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, f
         return name, forces.scale_of(name)
     opposite = next((found for found in forces.reactions.values() if f"R{found.target}{found.source}" == name), None)
     if opposite is None:
-        raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}")
+        raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}"
+                         f"{_lettering_hint(name, [])}")
     drawn = next((group.scale for group in forces.groups
                   if any(vector.name == name for vector in group.polygon.vectors)), None)
     return opposite.name, drawn if drawn is not None else forces.scale_of(opposite.name)
@@ -389,7 +393,8 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
                                  f"quantities are read from {', '.join(readable)}")
             for reading in matches:
                 rows.append(ErrorRow(position, reading.quantity, analytic[reading.quantity],
-                                     reading.value(plans, millimetres), "measured", f"{segment_name} = {millimetres:g} mm"))
+                                     reading.value(plans, millimetres), "measured", f"{segment_name} = {millimetres:g} mm",
+                                     abs(reading.value(plans, 1.0))))
     return rows
 
 
@@ -398,8 +403,24 @@ def split_segment(name: str, letters: list[str], where: str) -> tuple[str, str]:
     for first in letters:
         if name.startswith(first) and name[len(first):] in letters:
             return (first, name[len(first):])
-    pole = " (its pole π is p)" if "p" in letters and where.split(".")[2:3] == ["acceleration"] else ""
-    raise SceneError(where, f"is not two letters of the plan ({', '.join(sorted(letters))}){pole}")
+    kind = where.split(".")[2:3]
+    pole = " (its pole π is p)" if "p" in letters and kind == ["acceleration"] else ""
+    if kind == ["velocity"] and "π" in name:
+        pole = " (π is the acceleration plan's pole; the velocity plan's is p)"
+    raise SceneError(where, f"is not two letters of the plan ({', '.join(sorted(letters))}){pole}"
+                     f"{_lettering_hint(name, letters)}")
+
+
+def _lettering_hint(name: str, letters: list[str]) -> str:
+    """Why a name a student typed is no plan's or polygon's: a Cyrillic letter that looks Latin (р, а, с, е, Р),
+    or capitals where the plan's letters are small."""
+    cyrillic = [letter for letter in dict.fromkeys(name) if unicodedata.name(letter, "").startswith("CYRILLIC")]
+    if cyrillic:
+        written = ", ".join(f"'{letter}' (U+{ord(letter):04X})" for letter in cyrillic)
+        return f"; it has the Cyrillic letter{'s' if len(cyrillic) > 1 else ''} {written}: type the Latin one"
+    if name != name.lower() and any(name.lower().startswith(letter) for letter in letters):
+        return f"; the plan's letters are small: write {name.lower()}"
+    return ""
 
 
 _QUANTITY = re.compile(r"^(V|a|omega|epsilon)(.*)$")

@@ -330,15 +330,16 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
     first = scene.positions.number_from
     last = first + scene.positions.count - 1
     for number, readings in scene.measured.items():
+        if not first <= number <= last:
+            raise SceneError(f"measured.{number}", f"no position {number}; positions are {first}..{last}")
         if number in scene.positions.plans:
             continue
         if number not in scene.positions.velocity_plans:
+            also = f" {list(scene.positions.velocity_plans)}" if scene.positions.velocity_plans else ""
             raise SceneError(f"measured.{number}", f"position {number} is not in positions.plans "
-                             f"{list(scene.positions.plans)} nor in positions.velocity_plans")
+                             f"{list(scene.positions.plans)} nor in positions.velocity_plans{also}")
         # Of a position with only a velocity plan, only that plan can be measured.
         drawn_only = [kind for kind in readings if kind != "velocity"]
         if drawn_only:
             raise SceneError(f"measured.{number}.{drawn_only[0]}", f"position {number} has only a velocity plan "
                              f"(positions.velocity_plans): add it to positions.plans to measure its {drawn_only[0]}")
-        if not first <= number <= last:
-            raise SceneError(f"measured.{number}", f"no position {number}; positions are {first}..{last}")

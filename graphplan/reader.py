@@ -103,7 +103,10 @@ def check_choice(value: Any, where: str, choices: tuple[str, ...]) -> str:
 
 # Words people write for a value that has a shorter name here.
 ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw",
-           "anti-clockwise": "ccw"}
+           "anti-clockwise": "ccw",
+           # A Russian student's words for the plans measured by hand.
+           "скорость": "velocity", "скорости": "velocity", "ускорение": "acceleration", "ускорения": "acceleration",
+           "силы": "forces", "реакции": "forces"}
 
 
 def _suggestion(word: str, choices: Any) -> str:
@@ -258,8 +261,12 @@ class Table:
         for key in list(self.data):
             yield key, self.table(key)  # type: ignore[misc]
 
-    def done(self) -> None:
-        """Reject the first key that nobody took, suggesting the nearest valid one."""
+    def done(self, *, list_known: bool = False) -> None:
+        """Reject the first key that nobody took, suggesting the nearest valid one, or with ``list_known`` (a
+        table whose keys are all read whatever it holds) every valid one when none is near."""
         for key in self.data:
             if key not in self._taken:
-                raise SceneError(self.where(key), "unknown key" + _suggestion(key, sorted(self._taken)))
+                hint = _suggestion(key, sorted(self._taken))
+                if not hint and list_known:
+                    hint = f"; the keys here are {', '.join(sorted(self._taken))}"
+                raise SceneError(self.where(key), "unknown key" + hint)

@@ -8,7 +8,9 @@ structure of the mechanism) is checked by :mod:`graphplan.mechanism`.
 from __future__ import annotations
 
 import math
+import re
 import tomllib
+import unicodedata
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -222,10 +224,31 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     try:
         document = tomllib.loads(data)
     except tomllib.TOMLDecodeError as error:
-        raise SceneError(source, f"is not valid TOML: {error}") from None
+        raise SceneError(source, f"is not valid TOML: {error}{_toml_hint(data, str(error))}") from None
     except RecursionError:  # tomllib reads nested arrays and tables by recursion
         raise SceneError(source, "nests arrays or tables too deeply to be read") from None
     return _read_scene(Table(document, ""), source)
+
+
+def _toml_hint(data: str, message: str) -> str:
+    """A hint where the line TOML stumbled on has a number with a decimal comma (``pb = 35,5``, as a Russian
+    drawing writes it), which TOML reads as a number followed by something else, or a key with a letter a bare
+    TOML key cannot have (a Cyrillic р for the Latin p, or π)."""
+    place = re.search(r"at line (\d+), column (\d+)", message)
+    lines = data.splitlines()
+    if place is None or not 0 < int(place[1]) <= len(lines):
+        return ""
+    line, column = lines[int(place[1]) - 1], int(place[2])
+    comma = re.search(r"=\s*\{?[^=#]*?([-+]?\d+),(\d+)", line)
+    if comma:
+        return f"; a decimal comma? TOML numbers take a point: write {comma[1]}.{comma[2]}"
+    letter = line[column - 1:column]
+    if letter and not letter.isascii():
+        looks = " (a Cyrillic letter for a Latin one that looks the same?)" if unicodedata.name(
+            letter, "").startswith("CYRILLIC") else ""
+        return (f"; a key's letters are Latin, digits, _ and -, not '{letter}' (U+{ord(letter):04X}){looks}: "
+                "type the Latin letter, or quote the key")
+    return ""
 
 
 def _read_scene(top: Table, source: str) -> Scene:
@@ -466,9 +489,9 @@ def _read_friction(where: str, item: object) -> FrictionSpec:
     f = table.number("f", non_negative=True)
     radius = table.number("radius", None, positive=True)
     half_angle = table.number("groove_half_angle", None, positive=True)
-    if half_angle is not None and not half_angle < 90.0:
-        raise SceneError(table.where("groove_half_angle"), "must be below 90 degrees (a flank against the plane of symmetry)",
-                         half_angle)
+    if half_angle is not None and not half_angle <= 90.0:
+        raise SceneError(table.where("groove_half_angle"), "must be at most 90 degrees: the angle between a flank and "
+                         "the groove's plane of symmetry, 90 for a flat guide", half_angle)
     table.done()
     return FrictionSpec(where=where, joint=joint, links=links, f=f, radius=radius,
                         groove_half_angle=None if half_angle is None else math.radians(half_angle))
@@ -557,7 +580,7 @@ def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]
             if lengths is None:
                 continue
             readings[plan] = {name: lengths.number(name, non_negative=True) for name in list(lengths.data)}
-        entry.done()
+        entry.done(list_known=True)
         measured[number] = readings
     return measured
 

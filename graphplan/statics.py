@@ -253,19 +253,45 @@ def balancing_by_power(mechanism: Mechanism, state: State, loads: tuple[Load, ..
     return -power(loads, state) / speed
 
 
+# A balancing load without friction this small beside the one with it is rounding of a zero (an extreme
+# position, where the loads take no power): η is then 0, all the driver's power going into friction.
+_ROUNDING_OF_ZERO = 1e-9
+
+
 def efficiency(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar) -> Scalar:
     """The instantaneous efficiency from the balancing load without and with friction.
 
     η = Mb0/Mb where the driver delivers power (Mb0·ω1 > 0); where the load
     drives the driver the power flows back, and η = Mb/Mb0.  Below 1 with
-    friction, 1 without.  Where friction turns the flow round (the loads
-    would drive, but with friction the driver must) no power is passed on
-    in either sense, and η is not defined (NaN).
+    friction, 1 without, 0 where the loads take no power.  Where friction
+    turns the flow round (:func:`turned_round`) no power is passed on in
+    either sense, and η is not defined (NaN).
     """
     ideal, rubbing = np.asarray(ideal, dtype=float), np.asarray(rubbing, dtype=float)
+    idle = _idle(ideal, rubbing)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         ratio = np.where(delivers_power(mechanism, ideal), ideal / rubbing, rubbing / ideal)
-        return np.where(ideal * rubbing > 0, ratio, np.nan)
+        return np.where(idle, 0.0, np.where(ideal * rubbing > 0, ratio, np.nan))
+
+
+def turned_round(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar) -> np.ndarray:
+    """Where the loads would drive the driver back (η = Mb/Mb0) but with friction the driver must drive: the
+    mechanism locks itself against its loads driving it (η′ ≤ 0), and the driver pushes it through."""
+    ideal, rubbing = np.asarray(ideal, dtype=float), np.asarray(rubbing, dtype=float)
+    speed = mechanism.driver.coordinate_speed
+    with np.errstate(invalid="ignore"):
+        return (~delivers_power(mechanism, ideal) & ~_idle(ideal, rubbing) & (rubbing * speed >= 0)
+                & np.isfinite(ideal) & np.isfinite(rubbing))
+
+
+def rounded_zero(ideal: Scalar, rubbing: Scalar) -> Scalar:
+    """The balancing load without friction, 0 where it is rounding of a zero beside the one with friction."""
+    ideal = np.asarray(ideal, dtype=float)
+    return np.where(_idle(ideal, np.asarray(rubbing, dtype=float)), 0.0, ideal)
+
+
+def _idle(ideal: np.ndarray, rubbing: np.ndarray) -> np.ndarray:
+    return np.abs(ideal) <= _ROUNDING_OF_ZERO * np.abs(rubbing)
 
 
 def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:
@@ -280,4 +306,5 @@ def _full(value: Vector | Scalar, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=complex), (count,))
 
 
-__all__ = ["SINGULAR_CONDITION", "Equilibrium", "Pair", "Reaction", "balancing_by_power", "delivers_power", "efficiency", "equilibrium", "pairs"]
+__all__ = ["SINGULAR_CONDITION", "Equilibrium", "Pair", "Reaction", "balancing_by_power", "delivers_power", "efficiency",
+           "equilibrium", "pairs", "rounded_zero", "turned_round"]

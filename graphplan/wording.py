@@ -6,10 +6,10 @@ decimal mark, a drawing four digits that the SVG writer localises.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 from .mechanism import Mechanism
-from .statics import delivers_power
+from .statics import delivers_power, rounded_zero, turned_round
 
 
 def balancing_symbol(mechanism: Mechanism, text: Mapping[str, str]) -> tuple[str, str]:
@@ -19,14 +19,19 @@ def balancing_symbol(mechanism: Mechanism, text: Mapping[str, str]) -> tuple[str
     return "Fb", text["newton"]
 
 
-def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float, *, written_load: str,
-                     written_ideal: str, iterations: int, written_efficiency: str) -> str:
-    """The balancing load with friction after its repetitions, the one without (``ideal``), and η.
+def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float, load: float, *,
+                     write: Callable[[float], str], iterations: int, written_efficiency: str) -> str:
+    """The balancing load with friction (``load``) after its repetitions, the one without (``ideal``), and η,
+    each number written by ``write``.
 
     η is named by the ratio it is: Mb0/Mb where the driver delivers power,
-    Mb/Mb0 where the loads drive it back.
+    Mb/Mb0 where the loads drive it back.  Where friction turns that flow
+    round, the sentence says so instead of giving an η.
     """
     name, unit = balancing_symbol(mechanism, text)
+    ideal = float(rounded_zero(ideal, load))
+    values = {"name": name, "value": write(load), "unit": unit, "iterations": iterations, "ideal": write(ideal)}
+    if turned_round(mechanism, ideal, load):
+        return text["forces_turned_round"].format(**values)
     ratio = f"{name}0/{name}" if delivers_power(mechanism, ideal) else f"{name}/{name}0"
-    return text["forces_with_friction"].format(name=name, value=written_load, unit=unit, iterations=iterations,
-                                               ideal=written_ideal, ratio=ratio, efficiency=written_efficiency)
+    return text["forces_with_friction"].format(**values, ratio=ratio, efficiency=written_efficiency)

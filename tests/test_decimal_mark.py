@@ -80,3 +80,22 @@ def test_plots_write_their_ticks_legends_and_notes_with_the_mark_but_not_the_tit
     assert [text.get_text() for text in axes.get_legend().get_texts()] == ["ζ = 0,25"]
     assert "2,5 mm" in [text.get_text() for text in axes.texts]
     assert axes.get_title() == "Rig v1.2"
+
+
+def test_the_russian_error_and_force_tables_write_decimal_commas_and_the_english_numbers():
+    """errors.md (and errors.tex, made from it) and forces.md printed decimal points in a Russian run whose note,
+    drawings and accuracy tables print commas; the numbers themselves are the English run's."""
+    from graphplan.report import forces, tables
+    from graphplan.scene import FrictionSpec
+
+    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
+    scene = dataclasses.replace(scene, title=TITLE, friction=(FrictionSpec("friction[0]", "C", None, 0.1, 0.02, None),))
+    for report in (tables.markdown, forces.markdown):
+        russian = report(analyse(dataclasses.replace(scene, locale="ru"))).replace(TITLE, "")
+        english = report(analyse(dataclasses.replace(scene, locale="en"))).replace(TITLE, "")
+        assert not DECIMAL_POINT.search(russian)
+        # A group's label, II(3,4), has its comma in both.
+        numbers = re.compile(r"−?\d+(?:[.,]\d+)?")
+        assert ([n.replace(",", ".") for n in numbers.findall(russian)]
+                == [n.replace(",", ".") for n in numbers.findall(english)])
+        assert len(DECIMAL_COMMA.findall(russian)) > 30

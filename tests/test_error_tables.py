@@ -206,3 +206,22 @@ def test_a_far_off_reading_is_named_as_the_scene_writes_it_with_the_scale_it_was
     (warning,) = [w for w in warned.warnings if w.code == "measured-far-off"]
     assert f"pb = {pb * 10:g} mm gives VB = " in warning.detail
     assert f"R43 = 3 mm at μF = {scale:g} N/mm gives R34 = {3.0 * scale:.4g} against " in warning.detail
+
+
+@pytest.mark.parametrize(("pb", "warned"), [(0.5, False), (0.9, False), (3.0, True)])
+def test_a_reading_of_a_vanishing_velocity_is_far_off_only_beyond_the_drafting_precision(pb, warned):
+    """At the extreme position 0 the rocker is at rest: pb is 0 on the plan as constructed.  A reading of 0.5 mm
+    was called infinitely far off ("inf %", a misread?) though it is within the drafting precision (0.5 mm) of
+    both ends of the segment; its δ has no finite value and is written "—"."""
+    from graphplan.report.tables import markdown
+
+    scene = with_measured({0: {"velocity": {"pb": pb}}})
+    scene = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(0, 5, 11)))
+    analysis = analyse(scene)
+    assert rows(analysis, 0, "construction")["VB"].plan == 0.0
+    far = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    assert bool(far) is warned
+    if warned:
+        assert "VB = " in far[0].detail and "where the plan has none" in far[0].detail
+    line = next(line for line in markdown(analysis).splitlines() if line.startswith("| VB |"))
+    assert "inf" not in line and line.rstrip(" |").endswith("—")

@@ -24,10 +24,12 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.joint_friction import friction_loads, friction_pairs
 from graphplan.loads import Rates, State
+from graphplan.report.results import results
 from graphplan.scene import FrictionSpec
 from graphplan.scene import loads as scene_from_text
 from graphplan.statics import Pair
 
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 RADIUS, ROD, PUSH, OMEGA = 0.1, 0.4, 1000.0, 10.0
 
 
@@ -244,6 +246,8 @@ def test_efficiency_is_one_without_friction_and_below_one_with_it():
     ('joint = "B"\nlinks = [1, 4]\nf = 0.1\nradius = 0.01', "friction[0].radius", "the pair at B slides"),
     ('joint = "O"\nf = -0.1\nradius = 0.01', "friction[0].f", "must be >= 0"),
     ('joint = "O"\nf = 0.1\nradius = 0.01\ngroove_half_angle = 30', "friction[0].groove_half_angle", "turns: a groove"),
+    ('joint = "B"\nlinks = [1, 4]\nf = 0.1\ngroove_half_angle = 95', "friction[0].groove_half_angle",
+     "must be at most 90 degrees: the angle between a flank and the groove's plane of symmetry, 90 for a flat guide"),
 ])
 def test_bad_friction_entries_name_their_key(entry, where, message):
     with pytest.raises(graphplan.SceneError) as raised:
@@ -325,3 +329,52 @@ def test_friction_circles_a_hair_short_of_locking_settle_in_the_system_and_the_p
         assert not exact.locked[i] and not position.with_friction.locked
         assert exact.balancing[i] == pytest.approx(independent, rel=1e-5)
         assert position.with_friction.balancing == pytest.approx(exact.balancing[i], rel=1e-8)
+
+
+def test_a_friction_circle_wider_than_the_rod_is_long_locks_every_position():
+    """A massless rod carries its force along a line through the frictionless wrist pin B tangent to the friction
+    circle at the crank pin A: there is none when ρ exceeds the rod's length AB, and every position locks."""
+    f, journal = 1000.0, 0.01
+    assert f * journal > ROD
+    analysis = analyse(slider_crank(f'[[friction]]\njoint = "A"\nf = {f}\nradius = {journal}'))
+    assert analysis.with_friction.locked.all()
+    for entry in results(analysis)["positions"]:
+        friction = entry["equilibrium"]["friction"]
+        assert friction["self_locking"] is True and friction["balancing_moment"] is None
+
+
+def test_a_friction_that_overflows_the_repetitions_is_a_lock_not_a_settled_position():
+    """ρ = 10 m at the ratchet's rocker pivot, a hundred times the rocker: the repetitions overflowed to inf,
+    inf ≤ 1e-13·inf passed for settled, and positions came out not locking with an efficiency of 2e-305, a
+    balancing moment of -4e307 or none at all.  Whatever locks, a position that moves must have a finite
+    balancing moment that takes at least the frictionless power (friction only takes power)."""
+    scene = graphplan.load(FIXTURES / "ratchet_crank_rocker.toml")
+    analysis = analyse(dataclasses.replace(scene, friction=(FrictionSpec("friction[0]", "C", None, 1000.0, 0.01, None),)))
+    ideal, rubbing = analysis.equilibrium, analysis.with_friction
+    omega, written = scene.driver.omega, results(analysis)["positions"]
+    for index, locked in enumerate(rubbing.locked):
+        entry = written[index]["equilibrium"]["friction"]
+        assert entry["self_locking"] is bool(locked)
+        if not locked:
+            assert np.isfinite(rubbing.balancing[index]) and abs(rubbing.balancing[index]) < 1e9
+            assert rubbing.balancing[index] * omega >= ideal.balancing[index] * omega
+            assert 0 < entry["efficiency"] <= 1
+
+
+def test_a_groove_of_half_angle_90_is_a_flat_guide():
+    """θ = 90° puts the flanks across the load, f' = f/sin 90° = f: the same as no groove at all."""
+    flat = analyse(slider_crank('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 0.15'))
+    groove = analyse(slider_crank('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 0.15\ngroove_half_angle = 90'))
+    np.testing.assert_allclose(groove.with_friction.balancing, flat.with_friction.balancing, rtol=1e-12)
+
+
+def test_a_balancing_load_without_friction_that_is_rounding_of_zero_gives_an_efficiency_of_zero():
+    """At an extreme position the loads take no power: Mb0 is 0 but for rounding, of either sign.  η came out
+    6e-16 (or null, and the note printed Mb0 = −0.000000000184468) where all the driver's power goes into friction."""
+    from graphplan.statics import efficiency, rounded_zero, turned_round
+
+    mechanism = analyse(slider_crank("")).mechanism
+    ideal, rubbing = np.array([1.84e-10, -1.84e-10, 0.0, 2.0]), np.full(4, 5.0 * np.sign(OMEGA))
+    np.testing.assert_array_equal(efficiency(mechanism, ideal, rubbing), [0.0, 0.0, 0.0, 0.4])
+    np.testing.assert_array_equal(rounded_zero(ideal, rubbing), [0.0, 0.0, 0.0, 2.0])
+    assert not turned_round(mechanism, ideal, rubbing).any()

@@ -286,7 +286,7 @@ def test_friction_reaches_the_note_and_forces_md():
         balancing = plan.with_friction.balancing
         exact = float(analysis.with_friction.balancing[plan.index])
         assert f"Mb = {force_report.number(balancing, 6, ',')} Н·м" in note
-        assert f"Mb = {force_report.number(balancing, 6)} Н·м" in forces_md
+        assert f"Mb = {force_report.number(balancing, 6, ',')} Н·м" in forces_md
         assert agrees(force_report.number(balancing, 6), exact, 6)
     assert "| Mb с трением, Н·м | η |" in forces_md
     # η is the smaller ratio: Mb0/Mb where the crank drives the load, Mb/Mb0 where the load drives the crank back.
@@ -301,7 +301,8 @@ def test_friction_reaches_the_note_and_forces_md():
 
 def test_errors_md_and_forces_md_keep_their_numbers_in_every_language():
     def numbers(text: str) -> list[str]:
-        return re.findall(r"−?-?\d+(?:\.\d+)?(?:e[−-]\d+)?", text)
+        # The decimal mark is the language's (a comma in Russian); a group's label, II(3,4), has its comma in all.
+        return [n.replace(",", ".") for n in re.findall(r"−?-?\d+(?:[.,]\d+)?(?:e[−-]\d+)?", text)]
 
     for name in ("ratchet_crank_rocker", "shaper_six_bar"):
         reports = {locale: (tables.markdown(analysis_of(name, locale)), force_report.markdown(analysis_of(name, locale)))
@@ -311,8 +312,8 @@ def test_errors_md_and_forces_md_keep_their_numbers_in_every_language():
             for locale in ("ru", "zh"):
                 assert numbers(reports[locale][kind]) == english, (name, locale, kind)
     russian = force_report.markdown(analysis_of("ratchet_crank_rocker", "ru"))
-    assert "| рычаг Жуковского | 49.0173 |" in russian and "## Положение 5" in russian
-    assert "| ω4 | рад/с | 2.1554 |" in tables.markdown(analysis_of("ratchet_crank_rocker", "ru"))
+    assert "| рычаг Жуковского | 49,0173 |" in russian and "## Положение 5" in russian
+    assert "| ω4 | рад/с | 2,1554 |" in tables.markdown(analysis_of("ratchet_crank_rocker", "ru"))
 
 
 # The HTML page.
@@ -404,10 +405,12 @@ def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
             factor = pair.coefficient if pair.sliding else pair.radius
             load = used[name]
             assert abs(load.force if pair.sliding else load.moment) == pytest.approx(factor * reaction, rel=1e-9)
-            symbol = f"f′{pair.joint}" if pair.sliding else f"ρ{pair.joint}"
+            # The slot and the crank pin are both at A: each is named by its links, f′34 and ρ23.
+            at = pair.joint if [p.joint for p in analysis.friction].count(pair.joint) == 1 else f"{pair.source}{pair.target}"
+            symbol = f"f′{at}" if pair.sliding else f"ρ{at}"
             assert f"{name} = {symbol}·{pair.reaction} = {n(factor)}·{n(reaction)} = {n(factor * reaction)}" in note
             if not pair.sliding:
-                assert f"ρ{pair.joint} = f·r = {n(pair.spec.f)}·{n(pair.spec.radius)} = {n(pair.radius)} m" in note
+                assert f"ρ{at} = f·r = {n(pair.spec.f)}·{n(pair.spec.radius)} = {n(pair.radius)} m" in note
         lever = plan.lever_with_friction.balancing
         assert lever == pytest.approx(rubbing.balancing, rel=1e-9)
         assert f"Zhukovsky's lever with these loads gives Mb = {n(lever)} N·m" in note

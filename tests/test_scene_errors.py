@@ -26,6 +26,7 @@ import pytest
 import graphplan
 from graphplan import AssemblyError, GraphplanError, SceneError, SingularPositionError
 from graphplan import scene as scene_module
+from graphplan.analysis import analyse
 from graphplan.cli import main
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
@@ -773,8 +774,19 @@ CASES: list[Case] = [
          "must be a table, not a list (got [52.5])"),
     Case("measured-unknown-key", {"measured.5.velocty": {"pb": 39.0}}, "measured.5.velocty",
          "unknown key; did you mean 'velocity'?"),
+    # A Russian word for the plan measured, and one that is no word for any.
+    Case("measured-russian-word", {"measured.5.скорость": {"pb": 39.0}}, "measured.5.скорость",
+         "unknown key; did you mean 'velocity'?"),
+    Case("measured-unknown-key-listed", {"measured.5.замер": {"pb": 39.0}}, "measured.5.замер",
+         "unknown key; the keys here are acceleration, forces, velocity"),
     Case("measured-not-in-plans", {"measured.7": {"velocity": {"pb": 39.0}}}, "measured.7",
          "position 7 is not in positions.plans [5, 11] nor in positions.velocity_plans", stage="build"),
+    Case("measured-not-in-velocity-plans", {"positions.velocity_plans": [1, 2], "measured.7": {"velocity": {"pb": 39.0}}},
+         "measured.7", "position 7 is not in positions.plans [5, 11] nor in positions.velocity_plans [1, 2]",
+         stage="build"),
+    # Past the last position, "all" velocity plans or not, the position is not there at all.
+    Case("measured-no-such-position", {"positions.velocity_plans": "all", "measured.99": {"velocity": {"pb": 39.0}}},
+         "measured.99", "no position 99; positions are 0..11", stage="build"),
 
     # -- [output]
     Case("output-include-string", {"output.include": "all"}, "output.include", "must be a list, not a string (got 'all')"),
@@ -913,6 +925,38 @@ def test_invalid_toml(text: str, line: int) -> None:
     assert str(error).startswith("<scene>: is not valid TOML: ")
     assert f"line {line}" in str(error)
     assert error.__cause__ is None and error.__suppress_context__
+
+
+@pytest.mark.parametrize(("measured", "where", "problem"), [
+    ({"velocity": {"рb": 38.82}}, "measured.5.velocity.рb",
+     "is not two letters of the plan (a, b, e, p, s2, s3, s4); it has the Cyrillic letter 'р' (U+0440): "
+     "type the Latin one"),
+    ({"velocity": {"PB": 38.82}}, "measured.5.velocity.PB",
+     "is not two letters of the plan (a, b, e, p, s2, s3, s4); the plan's letters are small: write pb"),
+    ({"velocity": {"πb": 38.82}}, "measured.5.velocity.πb",
+     "is not two letters of the plan (a, b, e, p, s2, s3, s4) (π is the acceleration plan's pole; the velocity "
+     "plan's is p)"),
+    ({"forces": {"Р32": 3.0}}, "measured.5.forces.Р32",
+     "the force polygons have no reaction Р32; they have R23, R14, R34, R12; it has the Cyrillic letter 'Р' "
+     "(U+0420): type the Latin one"),
+], ids=["cyrillic-letter", "capitals", "pi-on-the-velocity-plan", "cyrillic-reaction"])
+def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, problem) -> None:
+    """A Russian student's slips: a Cyrillic р or Р that looks Latin, capitals, π on the velocity plan."""
+    scene = scene_module.loads(to_toml(variant(RATCHET, {"measured.5": measured})))
+    with pytest.raises(SceneError) as raised:
+        analyse(scene)
+    assert str(raised.value) == f"{where}: {problem}" and raised.value.where == where
+
+
+@pytest.mark.parametrize("text, hint", [
+    ("[measured.5]\nvelocity = { pb = 38,82 }\n", "; a decimal comma? TOML numbers take a point: write 38.82"),
+    ("[scene]\ngravity = 9,81\n", "; a decimal comma? TOML numbers take a point: write 9.81"),
+    ("[measured.5]\nvelocity = { рb = 38.82 }\n", "; a key's letters are Latin, digits, _ and -, not 'р' (U+0440) "
+     "(a Cyrillic letter for a Latin one that looks the same?): type the Latin letter, or quote the key"),
+], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key"])
+def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
+    stage, error = first_error(text)
+    assert stage == "load" and str(error).startswith("<scene>: is not valid TOML: ") and str(error).endswith(hint)
 
 
 def test_invalid_toml_names_the_file(tmp_path: Path) -> None:

@@ -223,9 +223,8 @@ def _friction_summary(sheet: ForceSheet) -> list[str]:
     if sheet.without_friction is None:
         return []
     eta = "—" if sheet.efficiency is None or not math.isfinite(sheet.efficiency) else significant(sheet.efficiency)
-    return [friction_summary(sheet.mechanism, sheet.text, sheet.without_friction,
-                             written_load=significant(sheet.forces.balancing), written_ideal=significant(sheet.without_friction),
-                             iterations=sheet.forces.iterations, written_efficiency=eta)]
+    return [friction_summary(sheet.mechanism, sheet.text, sheet.without_friction, sheet.forces.balancing,
+                             write=significant, iterations=sheet.forces.iterations, written_efficiency=eta)]
 
 
 # A group cut free.

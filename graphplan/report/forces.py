@@ -241,8 +241,8 @@ def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
         return [text["forces_locked"].format(iterations=rubbing.iterations)]
     eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing)
     return [wording.friction_summary(
-        analysis.mechanism, text, plan.forces.balancing, written_load=number(rubbing.balancing, 6, mark),
-        written_ideal=number(plan.forces.balancing, 6, mark), iterations=rubbing.iterations,
+        analysis.mechanism, text, plan.forces.balancing, rubbing.balancing,
+        write=lambda value: number(value, 6, mark), iterations=rubbing.iterations,
         written_efficiency=number(float(eta), 4, mark))]
 
 
@@ -276,6 +276,7 @@ def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:
 
 def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
+    mark = text["decimal_mark"]
     name, unit = balancing_symbol(analysis)
     lines = [f"# {text['forces_title'].format(title=analysis.scene.title)}", "",
              text["forces_intro"].format(structure=analysis.mechanism.structure, name=name, unit=unit), ""]
@@ -283,19 +284,19 @@ def markdown(analysis: Analysis) -> str:
         if plan.forces is not None:
             lines += _position(analysis, plan, text)
     if analysis.equilibrium is not None:
-        lines += [f"## {text['forces_cycle']}", "", text["forces_cycle_intro"], "", *cycle_lines(analysis), ""]
+        lines += [f"## {text['forces_cycle']}", "", text["forces_cycle_intro"], "", *cycle_lines(analysis, mark), ""]
     return "\n".join(lines) + "\n"
 
 
 def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -> list[str]:
     name, unit = balancing_symbol(analysis)
-    forces = plan.forces
+    forces, mark = plan.forces, text["decimal_mark"]
     lines = [f"## {text['position_heading'].format(number=plan.number)}", "",
-             f"### {text['forces_initial_data']}", "", *initial_data_lines(analysis, plan), ""]
-    lines += external_load_lines(analysis, plan)
+             f"### {text['forces_initial_data']}", "", *initial_data_lines(analysis, plan, mark), ""]
+    lines += external_load_lines(analysis, plan, mark)
     # A block's pin reaction along its slot, found from the block's forces before the moments.
-    projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = {number(projection.value)}"
-                   + "".join(f"; {name}: {number(value)} {text['newton']}" for name, value in projection.components)
+    projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = {number(projection.value, mark=mark)}"
+                   + "".join(f"; {name}: {number(value, mark=mark)} {text['newton']}" for name, value in projection.components)
                    for group in forces.groups for projection in group.projections]
     if projections:
         lines += ["", f"### {text['forces_projections']}", "", *projections]
@@ -303,27 +304,27 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     metre, newton_metre = text["unit_m"], text["newton_metre"]
     for group in forces.groups:
         for equation in group.moments:
-            terms = ", ".join(f"{term.name}: {number(term.moment)} {newton_metre}"
-                              + (f" (h = {number(term.arm, 4)} {metre})" if term.arm else "")
+            terms = ", ".join(f"{term.name}: {number(term.moment, mark=mark)} {newton_metre}"
+                              + (f" (h = {number(term.arm, 4, mark)} {metre})" if term.arm else "")
                               for term in equation.terms)
             lines.append(f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {equation.unknown} = "
-                         f"{number(equation.value)}" + (f"; {terms}" if terms else ""))
+                         f"{number(equation.value, mark=mark)}" + (f"; {terms}" if terms else ""))
     lines += ["", f"### {text['forces_reactions']}", "",
-              _polygon_scales(forces, text), "", *reaction_lines(analysis, plan),
-              "", f"### {text['forces_balancing'].format(name=name, unit=unit)}", "", *balancing_lines(analysis, plan)]
+              _polygon_scales(forces, text, mark), "", *reaction_lines(analysis, plan, mark),
+              "", f"### {text['forces_balancing'].format(name=name, unit=unit)}", "", *balancing_lines(analysis, plan, mark)]
     if plan.with_friction is not None:
-        lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan)]
-        lever = friction_lever_lines(analysis, plan)
+        lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan, mark)]
+        lever = friction_lever_lines(analysis, plan, mark)
         lines += ["", *lever] if lever else []
     return lines + [""]
 
 
-def _polygon_scales(forces: ForcePlan, text: Mapping[str, str]) -> str:
+def _polygon_scales(forces: ForcePlan, text: Mapping[str, str], mark: str) -> str:
     """The line of μF: one for all the polygons, or each group's where the program drew each at its own."""
     if forces.one_scale:
-        return text["forces_polygon_scale"].format(value=number(forces.scale))
+        return text["forces_polygon_scale"].format(value=number(forces.scale, mark=mark))
     return text["forces_polygon_scales"].format(
-        values="; ".join(f"{label}: {number(scale)}" for label, scale in forces.group_scales.items()))
+        values="; ".join(f"{label}: {number(scale, mark=mark)}" for label, scale in forces.group_scales.items()))
 
 
 __all__ = [

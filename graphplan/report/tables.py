@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 from collections import defaultdict
 
 from ..analysis import Analysis, PlanPosition, VelocityPosition
@@ -72,7 +73,10 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
 
 
 def _percent(value: float, mark: str) -> str:
-    """An error to the thousandth of a per cent, with a true minus sign (none on a zero)."""
+    """An error to the thousandth of a per cent, with a true minus sign (none on a zero); a dash where a reading
+    is of a quantity that vanishes, whose error has no finite value."""
+    if not math.isfinite(value):
+        return "—"
     text = f"{round(value, 3) or 0.0:.3f}"
     return text.replace("-", "−").replace(".", mark)
 
@@ -84,20 +88,21 @@ def has_reactions(analysis: Analysis) -> bool:
 
 def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
-    precision = f"{analysis.scene.drawing.drafting_precision:g}"
+    mark = text["decimal_mark"]
+    precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
     lines = [f"# {text['errors_title'].format(title=analysis.scene.title)}", "",
              f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}", ""]
     if has_reactions(analysis):
         lines += [text["errors_forces"], ""]
     for plan in analysis.plans:
         lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
-                  *error_table_lines(analysis, plan), ""]
+                  *error_table_lines(analysis, plan, mark), ""]
     if analysis.velocity_plans:
-        lines += [f"## {text['velocity_plans_heading']}", "", velocity_plans_intro(analysis), "",
-                  *velocity_plans_lines(analysis), ""]
+        lines += [f"## {text['velocity_plans_heading']}", "", velocity_plans_intro(analysis, mark), "",
+                  *velocity_plans_lines(analysis, mark), ""]
         for position in measured_velocity_plans(analysis):
             lines += [f"### {text['velocity_plan_errors'].format(number=position.number)}", "",
-                      *error_table_lines(analysis, position), ""]
+                      *error_table_lines(analysis, position, mark), ""]
     return "\n".join(lines)
 
 
