@@ -23,6 +23,7 @@ from .kinematics import at
 from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .mechanism import Mechanism, build
+from .misreadings import misread
 from .motion import Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions, reach
@@ -173,44 +174,13 @@ def analyse(scene: Scene) -> Analysis:
                 with_friction = equilibrium(mechanism, motion, loads, friction)
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
-    warnings += _measured_far_off((*plans, *every), scene.drawing.drafting_precision)
+    warnings += misread(scene, (*plans, *every))
     in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions)
                             + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction),
                             key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
                     loads, balance, with_friction, friction, every)
-
-
-# A hand reading this far (per cent) from the same quantity of the plan as constructed is a misread length or
-# a segment taken for another, not a drawing's error: a plan drawn with care keeps within a few per cent.
-FAR_OFF_PERCENT = 15.0
-# ... and this many drafting precisions off in millimetres, a short segment's reading being as good as its two ends.
-FAR_OFF_PRECISIONS = 2.0
-
-
-def _measured_far_off(drawn: tuple[PlanPosition | VelocityPosition, ...], precision: float) -> tuple[PositionWarning, ...]:
-    """A warning at each position with hand readings more than :data:`FAR_OFF_PERCENT` from its constructed plan
-    and more than :data:`FAR_OFF_PRECISIONS` drafting precisions (mm) from it on the paper."""
-    warnings = []
-    for position in drawn:
-        constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
-        off: dict[str, list[str]] = {}  # by the reading, as the scene writes it, what it gives far off
-        for row in position.errors:
-            plan = constructed.get(row.quantity)
-            if row.source != "measured" or plan is None:
-                continue
-            apart = abs(row.plan - plan)
-            if apart > FAR_OFF_PERCENT / 100.0 * abs(plan) and apart > FAR_OFF_PRECISIONS * precision * row.per_millimetre:
-                share = f"{apart / abs(plan) * 100.0:.1f} % off" if plan else "where the plan has none"
-                off.setdefault(row.reading, []).append(f"{row.quantity} = {row.plan:.4g} against {plan:.4g}, {share}")
-        if off:
-            readings = "; ".join(f"{reading} gives {', '.join(found)}" for reading, found in off.items())
-            warnings.append(PositionWarning(position.index, "measured-far-off", (
-                f"measured.{position.number}: readings more than {FAR_OFF_PERCENT:g} % and "
-                f"{FAR_OFF_PRECISIONS * precision:g} mm off the plan as constructed "
-                f"({readings}): a length misread, or a segment taken for another?")))
-    return tuple(warnings)
 
 
 def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:

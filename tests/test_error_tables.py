@@ -225,3 +225,39 @@ def test_a_reading_of_a_vanishing_velocity_is_far_off_only_beyond_the_drafting_p
         assert "VB = " in far[0].detail and "where the plan has none" in far[0].detail
     line = next(line for line in markdown(analysis).splitlines() if line.startswith("| VB |"))
     assert "inf" not in line and line.rstrip(" |").endswith("—")
+
+
+def test_a_velocity_plan_drawn_at_another_scale_is_named_as_such_not_as_misread_lengths():
+    """The worked example's readings at position 5 as a student would take them off a plan laid off with pa =
+    100 mm instead of the scene's 150: every one is 2/3 of the construction, under its own few per cent.  That
+    is one slip, the scale μV = VA/pa, not five misread lengths."""
+    printed = {"pb": 38.82, "ab": 148.99, "ps3": 88.49, "pe": 83.19}
+    analysis = analyse(with_measured({5: {"velocity": {name: mm * 100 / 150 for name, mm in printed.items()}
+                                          | {"pa": 100.0}}}))
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    assert "every reading of the velocity plan is" in warning.detail and "misread" not in warning.detail
+    drawn_at = float(re.search(r"a plan drawn at μV = ([\d.]+)", warning.detail)[1])
+    va = rows(analysis, 5, "construction")["VA"].plan
+    assert drawn_at == pytest.approx(va / 100.0, rel=0.03)
+    # One length misread among readings at the scene's scale is still a misread length.
+    slipped = analyse(with_measured({5: {"velocity": printed | {"pb": printed["pb"] * 2 / 3}}}))
+    (warning,) = [w for w in slipped.warnings if w.code == "measured-far-off"]
+    assert "misread" in warning.detail and "every reading" not in warning.detail
+
+
+def test_the_error_tables_say_under_a_position_which_readings_are_far_off_in_the_scenes_language():
+    """The warning went to the terminal and results.json alone; the student reads errors.md and the note."""
+    from graphplan.report.note import note_markdown
+    from graphplan.report.tables import markdown
+
+    printed = {"pb": 38.82, "ab": 148.99, "ps3": 88.49, "pe": 83.19}
+    measured = {5: {"velocity": {name: mm * 100 / 150 for name, mm in printed.items()},
+                    "acceleration": {"pb": 64.99 * 1.3, "ps3": 84.49}}}
+    scene = dataclasses.replace(with_measured(measured), locale="ru")
+    analysis = analyse(scene)
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    drawn_at = re.search(r"a plan drawn at μV = ([\d.]+)", warning.detail)[1].replace(".", ",")
+    for text in (markdown(analysis), note_markdown(analysis)):
+        assert f"не построен ли план в масштабе μV = {drawn_at} (м/с)/мм?" in text
+        assert "более чем на 15 % и на 1 мм: pb = 84,487 мм (aB, aBC)." in text
+    assert "замеры" not in markdown(analyse(dataclasses.replace(graphplan.load(FIXTURE), locale="ru"))).lower()

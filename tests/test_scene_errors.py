@@ -929,16 +929,16 @@ def test_invalid_toml(text: str, line: int) -> None:
 
 @pytest.mark.parametrize(("measured", "where", "problem"), [
     ({"velocity": {"рb": 38.82}}, "measured.5.velocity.рb",
-     "is not two letters of the plan (a, b, e, p, s2, s3, s4); it has the Cyrillic letter 'р' (U+0440): "
-     "type the Latin one"),
+     ("is not two letters of the plan (a, b, e, p, s2, s3, s4); it has the Cyrillic letter 'р' (U+0440): "
+      "type the Latin one")),
     ({"velocity": {"PB": 38.82}}, "measured.5.velocity.PB",
      "is not two letters of the plan (a, b, e, p, s2, s3, s4); the plan's letters are small: write pb"),
     ({"velocity": {"πb": 38.82}}, "measured.5.velocity.πb",
-     "is not two letters of the plan (a, b, e, p, s2, s3, s4) (π is the acceleration plan's pole; the velocity "
-     "plan's is p)"),
+     ("is not two letters of the plan (a, b, e, p, s2, s3, s4) (π is the acceleration plan's pole; the velocity "
+      "plan's is p)")),
     ({"forces": {"Р32": 3.0}}, "measured.5.forces.Р32",
-     "the force polygons have no reaction Р32; they have R23, R14, R34, R12; it has the Cyrillic letter 'Р' "
-     "(U+0420): type the Latin one"),
+     ("the force polygons have no reaction Р32; they have R23, R14, R34, R12; it has the Cyrillic letter 'Р' "
+      "(U+0420): type the Latin one")),
 ], ids=["cyrillic-letter", "capitals", "pi-on-the-velocity-plan", "cyrillic-reaction"])
 def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, problem) -> None:
     """A Russian student's slips: a Cyrillic р or Р that looks Latin, capitals, π on the velocity plan."""
@@ -951,8 +951,8 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
 @pytest.mark.parametrize("text, hint", [
     ("[measured.5]\nvelocity = { pb = 38,82 }\n", "; a decimal comma? TOML numbers take a point: write 38.82"),
     ("[scene]\ngravity = 9,81\n", "; a decimal comma? TOML numbers take a point: write 9.81"),
-    ("[measured.5]\nvelocity = { рb = 38.82 }\n", "; a key's letters are Latin, digits, _ and -, not 'р' (U+0440) "
-     "(a Cyrillic letter for a Latin one that looks the same?): type the Latin letter, or quote the key"),
+    ("[measured.5]\nvelocity = { рb = 38.82 }\n", ("; a key's letters are Latin, digits, _ and -, not 'р' (U+0440) "
+     "(a Cyrillic letter for a Latin one that looks the same?): type the Latin letter, or quote the key")),
 ], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key"])
 def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
     stage, error = first_error(text)

@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..analysis import Analysis, PlanPosition
+from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import Reading
 from ..errors import SceneError
 from ..kinematics import cross
@@ -53,6 +53,7 @@ from .tables import (
     has_reactions,
     measured_velocity_plans,
     quantity_symbol,
+    slip_lines,
     unit_of,
     velocity_plans_intro,
     velocity_plans_lines,
@@ -226,6 +227,7 @@ class _Note:
                 for position in measured_velocity_plans(self.analysis):
                     self.captioned(self.t("velocity_plan_errors", number=position.number),
                                    error_table_lines(self.analysis, position, self.mark))
+                    self.slips(position)
                 self.figure("velocity_plans.svg", self.text["velocity_plans_heading"])
             if diagrams is not None and "diagrams.svg" in self.figures:
                 subsection += 1
@@ -702,7 +704,11 @@ class _Note:
         if link is None:
             return f"{self.n(value)} {unit}", "—"
         omega = pp.velocity.rates[link]
-        modulus = (f"2·ω{link}·V{body} = {self.product('2', self.n(abs(omega)), self.n(relative))} = "
+        # A block turns with the link it slides on: its ω is that link's, which the note has worked out.
+        worked = [int(reading.quantity[5:]) for reading in pp.readings if reading.quantity.startswith("omega")]
+        twin = next((k for k in worked if k != link and math.isclose(pp.velocity.rates[k], omega, rel_tol=_SAME)), None)
+        same = "" if twin is None or link in worked else f" (ω{link} = ω{twin})"
+        modulus = (f"2·ω{link}·V{body}{same} = {self.product('2', self.n(abs(omega)), self.n(relative))} = "
                    f"{self.n(value)} {unit}")
         return modulus, self.t("note_coriolis_direction", relative=f"V{body}", link=link,
                                sense=self.sense(omega))
@@ -873,6 +879,12 @@ class _Note:
 
     # The errors of the plans.
 
+    def slips(self, position: VelocityPosition) -> None:
+        """Under a position's error table, its hand readings far off the construction, if any."""
+        slipped = slip_lines(self.analysis, position, self.mark)
+        if slipped:
+            self.para(*slipped)
+
     def errors(self, section: int) -> None:
         precision = self.n(self.analysis.scene.drawing.drafting_precision)
         self.heading(2, f"{section}. {self.t('note_errors')}")
@@ -881,6 +893,7 @@ class _Note:
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))
+            self.slips(plan)
 
 def _body(term: str) -> tuple[str, str]:
     """``"vBA"`` → ``("v", "BA")``; the component's suffix is dropped."""

@@ -18,6 +18,7 @@ from collections import defaultdict
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
+from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, slips
 from ..render.numerals import scale_factor
 from .forces import number
 from .results import PERCENT_FLOOR
@@ -72,6 +73,37 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
     return lines
 
 
+def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> list[str]:
+    """The hand readings of a position far off its construction (:mod:`graphplan.misreadings`), said under its
+    error table in the scene's language: a plan drawn at another scale, or each misread length."""
+    found = slips(plan, analysis.scene.drawing.drafting_precision)
+    if found is None:
+        return []
+    text = strings(analysis.scene.locale)
+    lines = []
+    for kind, (ratio, drawn_at) in found.rescaled.items():
+        symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
+        lines.append(text["errors_rescaled"].format(
+            plan=text[f"{kind}_plan_title"].lower(), ratio=number(ratio, 4, mark), symbol=symbol,
+            scale=scale_factor(plan.plans[kind].scale).replace(".", mark), unit=unit,
+            drawn=scale_factor(drawn_at).replace(".", mark)))
+    if found.misread:
+        # A segment's name may be on both plans (pb): the quantities it gives say which.
+        readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity) for row, _ in rows)})"
+                             for rows in found.misread.values())
+        lines.append(text["errors_misread"].format(
+            percent=f"{FAR_OFF_PERCENT:g}", readings=readings,
+            millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
+    return lines
+
+
+def _reading(row: ErrorRow, text: dict[str, str], mark: str) -> str:
+    """A hand reading as the scene gives it, ``pb = 25,88 мм``, in the locale's words."""
+    name = row.reading.split(" = ")[0]
+    millimetres = abs(row.plan) / row.per_millimetre if row.per_millimetre else 0.0
+    return f"{name} = {f'{millimetres:.6g}'.replace('.', mark)} {text['millimetre']}"
+
+
 def _percent(value: float, mark: str) -> str:
     """An error to the thousandth of a per cent, with a true minus sign (none on a zero); a dash where a reading
     is of a quantity that vanishes, whose error has no finite value."""
@@ -97,12 +129,16 @@ def markdown(analysis: Analysis) -> str:
     for plan in analysis.plans:
         lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
                   *error_table_lines(analysis, plan, mark), ""]
+        slipped = slip_lines(analysis, plan, mark)
+        lines += [*slipped, ""] if slipped else []
     if analysis.velocity_plans:
         lines += [f"## {text['velocity_plans_heading']}", "", velocity_plans_intro(analysis, mark), "",
                   *velocity_plans_lines(analysis, mark), ""]
         for position in measured_velocity_plans(analysis):
             lines += [f"### {text['velocity_plan_errors'].format(number=position.number)}", "",
                       *error_table_lines(analysis, position, mark), ""]
+            slipped = slip_lines(analysis, position, mark)
+            lines += [*slipped, ""] if slipped else []
     return "\n".join(lines)
 
 
