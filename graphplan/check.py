@@ -389,7 +389,10 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
             matches = [r for r in table if r.plan == kind and set(r.segment) == set(segment)]
             if not matches:
                 readable = dict.fromkeys("".join(r.segment) for r in table if r.plan == kind)
-                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}; its "
+                # The Coriolis vector is laid off from 2·ω·v, not found by the construction: nothing to read.
+                coriolis = (f" ({segment[0]}{segment[1]} is the Coriolis component, laid off from 2·ω·v, not read off)"
+                            if kind == "acceleration" and any(letter.startswith("k") for letter in segment) else "")
+                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}{coriolis}; its "
                                  f"quantities are read from {', '.join(readable)}")
             for reading in matches:
                 rows.append(ErrorRow(position, reading.quantity, analytic[reading.quantity],

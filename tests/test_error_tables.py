@@ -261,3 +261,12 @@ def test_the_error_tables_say_under_a_position_which_readings_are_far_off_in_the
         assert f"не построен ли план в масштабе μV = {drawn_at} (м/с)/мм?" in text
         assert "более чем на 15 % и на 1 мм: pb = 84,487 мм (aB, aBC)." in text
     assert "замеры" not in markdown(analyse(dataclasses.replace(graphplan.load(FIXTURE), locale="ru"))).lower()
+
+
+def test_measuring_the_coriolis_segment_is_answered_with_why_it_gives_nothing():
+    scene = graphplan.load("fixtures/quick_return_slotted_lever.toml")
+    number = scene.positions.plans[0]
+    with pytest.raises(SceneError, match=rf"^measured\.{number}\.acceleration\.ak: the plan has no quantity read from "
+                                         r"ak \(ak is the Coriolis component, laid off from 2·ω·v, not read off\); "
+                                         r"its quantities are read from .*ka4"):
+        analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ak": 16.0}}}))

@@ -35,3 +35,15 @@ def test_a_scale_factor_keeps_four_significant_digits_and_five_decimals_at_least
 ])
 def test_short_drops_the_trailing_noughts(value, written):
     assert short(value) == written
+
+
+@pytest.mark.parametrize(("value", "written", "reported"), [
+    (6.3e307, "6.3·10³⁰⁷", "6,3·10³⁰⁷"), (-1.23456e15, "−1.235·10¹⁵", "−1,2346·10¹⁵"),
+    (999_999_999_999.9, "1·10¹²", "1·10¹²"), (2.5e13, "2.5·10¹³", "2,5·10¹³"), (-868_600.0, "−868600", "−868600"),
+])
+def test_a_number_too_large_to_read_whole_is_written_as_a_power_of_ten(value, written, reported):
+    """A balancing moment of -4e307 near a lock was printed as a 308-digit integer in the note."""
+    from graphplan.report.forces import number
+
+    assert significant(value) == written and short(value) == written
+    assert number(value, mark=",") == reported

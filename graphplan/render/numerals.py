@@ -1,6 +1,7 @@
 """How a number is written on a drawing: short, with no exponent, and a true minus sign.
 
-The SVG writer puts in the locale's decimal mark; these functions write the point.
+The SVG writer puts in the locale's decimal mark; these functions write the point.  A number too large to
+read written out whole (a stiffness of 1e15, a reaction near a lock) is written as a power of ten, 6.3·10¹⁵.
 """
 
 from __future__ import annotations
@@ -8,11 +9,25 @@ from __future__ import annotations
 import math
 
 
+# From this magnitude on a number is written as a power of ten: whole, it would run to more digits than are read.
+POWER_OF_TEN = 1e12
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def power_of_ten(value: float, digits: int) -> str:
+    """``value`` as ``m·10ⁿ`` with ``digits`` significant digits in m (trailing noughts dropped) and a true minus."""
+    mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
+    mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}".replace("-", "−")
+
+
 def significant(value: float, digits: int = 4) -> str:
     """``value`` to ``digits`` significant digits, no exponent, a true minus sign, no minus on a nought."""
     value = float(value)
     if value == 0 or not math.isfinite(value):
         return "0"
+    if abs(float(f"{value:.{digits}g}")) >= POWER_OF_TEN:
+        return power_of_ten(value, digits)
     decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
     text = f"{value:.{decimals}f}"
     return text.replace("-", "−") if text.strip("-0.") else "0"

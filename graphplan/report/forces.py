@@ -25,6 +25,7 @@ from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..loads import motion_state
 from ..locale import strings
+from ..render.numerals import POWER_OF_TEN, power_of_ten
 from ..statics import balancing_by_power, efficiency
 
 # A rate or a load this small against the largest of its kind is the plan's rounding, not a value.
@@ -42,13 +43,15 @@ def number(value: float, digits: int = 5, mark: str = ".") -> str:
 
     A value of :data:`ROUNDING_NOISE` or less is 0; others are written without an exponent: one of
     ``digits`` places before the point or more whole (868600, not 8.686e+05), a small one in decimals
-    (0.000036362, not 3.6362e−05).
+    (0.000036362, not 3.6362e−05), one of 10¹² or more as a power of ten (6.3·10³⁰⁷).
     """
     if not math.isfinite(value):
         return "—"
     if abs(value) < ROUNDING_NOISE:
         return "0"
     text = f"{value:.{digits}g}"
+    if abs(float(text)) >= POWER_OF_TEN:
+        return power_of_ten(value, digits).replace(".", mark)
     if "e+" in text:
         text = f"{float(text):.0f}"
     elif "e-" in text:
