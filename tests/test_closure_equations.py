@@ -399,6 +399,8 @@ def test_check_and_the_note_give_the_ratchet_s_strokes_and_their_ratio_from_its_
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     said = re.search(r"φw = ([\d.]+)° in the working stroke and φi = ([\d.]+)° .* K = φw/φi = ([\d.]+)\.", note)
     assert [float(value) for value in said.groups()] == pytest.approx([working, idle, working / idle], rel=1e-4)
+    # The ratchet works in its quicker stroke: the note says K < 1 is that, not the usual quick return.
+    assert working < idle and "K < 1: the working stroke is the quicker of the two" in note
     strokes = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["strokes"]
     assert [strokes["working_deg"], strokes["idle_deg"], strokes["time_ratio"]] == pytest.approx(
         [working, idle, working / idle], rel=1e-10)

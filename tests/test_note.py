@@ -500,3 +500,8 @@ def test_a_link_at_rest_in_its_extreme_position_has_no_sense_of_turning():
     assert abs(analysis.motion.link(4).omega[0]) < 1e-9 and analysis.positions.numbers[0] == 0
     line = next(line for line in note_markdown(analysis).splitlines() if line.startswith("- ω4 = "))
     assert line.endswith(" = 0 rad/s"), line
+
+
+def test_a_working_stroke_slower_than_the_idle_one_gets_no_remark_on_k():
+    note = note_of("shaper_six_bar", "en")
+    assert re.search(r"K = φw/φi = 1\.\d+\.", note) and "K < 1" not in note

@@ -294,8 +294,11 @@ class _Note:
         turns = self.analysis.positions.stroke_turns(driver.sense)
         if turns is not None:
             working, idle = turns
-            self.para(self.t("note_strokes", link=scene.positions.working.link, working=self.n(math.degrees(working)),
-                             idle=self.n(math.degrees(idle)), ratio=self.n(working / idle, 4)))
+            strokes = self.t("note_strokes", link=scene.positions.working.link, working=self.n(math.degrees(working)),
+                             idle=self.n(math.degrees(idle)), ratio=self.n(working / idle, 4))
+            # K ≥ 1 where the working stroke is the slower one, as a machine that works in one stroke is laid out.
+            quicker = f" {self.t('note_strokes_quicker')}" if working / idle < 1.0 - 1e-6 else ""
+            self.para(strokes + quicker)
 
     def frame_rows(self) -> list[list[str]]:
         """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
