@@ -661,3 +661,50 @@ def test_a_plan_of_positions_of_many_draws_one_in_every_few_and_each_plan_sheet_
 def test_a_plan_of_positions_of_a_few_draws_them_all(ratchet):
     plan = positions_plan(ratchet)
     assert plan.numbers == tuple(range(12)) and ";" not in plan.caption
+
+
+def test_a_coupler_whose_centre_carries_another_links_joint_is_drawn_as_the_plate_through_it():
+    """Link 3's centre E is where rod 5 hangs from it: left out of the outline as a centre, E floated in empty
+    space beside a bare bar AB.  It is a corner of the plate ABE, as the similarity theorem's triangle is."""
+    from graphplan.scene import loads as scene_from_text
+
+    text = """
+[frame]
+points = { O = [0.0, 0.0], C = [0.40, 0.05] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.10
+omega = 12.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.35, 0.25]
+assembly = "left"
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["E", "F"]
+length = 0.20
+guide = { link = 4, through = "C", angle = 20.0 }
+assembly = "forward"
+[points]
+E = { link = 3, from = "A", toward = "B", at = 0.20, offset = -0.08 }
+S4 = { link = 4, from = "C", toward = "B", at = 0.1 }
+[links.3]
+mass = 4.0
+centre = "E"
+[links.4]
+mass = 3.0
+centre = "S4"
+[positions]
+count = 12
+plans = [2]
+"""
+    analysis = analyse(scene_from_text(text))
+    outlines = linkage.outline_points(analysis.mechanism, analysis.motion)
+    assert set(outlines[3]) == {"A", "B", "E"}
+    assert "S4" not in outlines[4]  # a centre that carries no other link stays inside its plate

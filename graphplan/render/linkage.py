@@ -45,7 +45,9 @@ def outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]
 
     def inside(link: int, name: str) -> bool:
         spec = mechanism.scene.links.get(link)
-        return spec is not None and spec.centre == name and name in named
+        # A centre another link is jointed at (a coupler's E carrying a rod) is a corner of the plate.
+        jointed = any(name in points for other, points in mechanism.fixed_on.items() if other != link)
+        return spec is not None and spec.centre == name and name in named and not jointed
 
     outlines = {link: [name for name in sorted(mechanism.fixed_on.get(link, ())) if not inside(link, name)]
                 for link in mechanism.moving_links}
