@@ -176,6 +176,7 @@ def analyse(scene: Scene) -> Analysis:
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(scene, (*plans, *every))
     in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions)
+                            + _idle_throughout(mechanism, positions)
                             + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction),
                             key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
@@ -206,6 +207,21 @@ def _turned_round(mechanism: Mechanism, ideal: Equilibrium | None,
         f"in the pairs holds them: the driver must drive it ({name} = {with_friction.balancing[index]:.6g} {unit}); "
         "the mechanism locks itself against its loads driving it (η′ ≤ 0)"))
         for index in np.flatnonzero(moving & turned_round(mechanism, ideal.balancing, with_friction.balancing)))
+
+
+def _idle_throughout(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
+    """A warning where a slider's travel or a rocking crank's swing never moves the working link in its working
+    sense: every position is then in the idle stroke, and a load of the working stroke is never applied."""
+    working, driver = mechanism.scene.positions.working, mechanism.driver
+    if driver.cyclic or positions.strokes is None or "working" in positions.strokes:
+        return ()
+    other = {"cw": "ccw", "ccw": "cw", "forward": "backward", "backward": "forward"}[working.sense]
+    dropped = [load.where for load in mechanism.scene.loads if load.during not in ("idle", "always")]
+    unused = f"; {', '.join(dropped)} of the working stroke {'is' if len(dropped) == 1 else 'are'} never applied" \
+        if dropped else ""
+    return (PositionWarning(0, "idle-throughout", (
+        f"positions.working: link {working.link} never moves {working.sense} over driver.{driver.run_key}, so every "
+        f"position is in the idle stroke{unused}; it moves {other}: is that its working sense?")),)
 
 
 def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:

@@ -124,6 +124,10 @@ def refuse_as_run_would(scene: Scene, analysis: Analysis | None, pieces: tuple[s
         from .render.sheet import refuse_overflows
 
         refuse_overflows(analysis)
+    if analysis is not None and {"diagrams", "sheets"} & set(pieces) and scene.positions.working is not None:
+        from .kinematic_diagrams import of_analysis
+
+        of_analysis(analysis)  # a derivative out of the pole method's reach near a toggle
     if "dynamics" in pieces and scene.dynamics is not None:
         _dynamics_of(scene, analysis, None).refuse()
 

@@ -298,6 +298,10 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
                            velocity=velocity_scale, acceleration=velocity_scale / (time_scale * acceleration_pole),
                            velocity_pole=velocity_pole, acceleration_pole=acceleration_pole, axis_mm=axis_mm)
     translating = working.link in mechanism.translating
+    for kind, dense, chords, scale in (("velocity", v, v_chord, scales.velocity),
+                                       ("acceleration", a, a_chord, scales.acceleration)):
+        _refuse_out_of_reach(kind, working.link, translating, np.concatenate((dense, chords)), scale, field_mm,
+                             numbers[int(np.argmin(np.abs(nodes - along[int(np.argmax(np.abs(dense)))])))])
     stroke_end = None
     if positions.extremes is not None and math.isclose(positions.extremes[0], start, abs_tol=1e-12):
         stroke_end = (driver.sense * (positions.extremes[1] - start)) % (2.0 * math.pi)
@@ -352,6 +356,26 @@ def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:
     angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)
     # A rocker swings through less than a half turn: its angle wrapped about the first stays continuous.
     return sign * np.angle(np.exp(1j * (angle - angle[0]))) + 0.0
+
+
+# A derivative's diagram this many times its field tall even at the shortest pole distance is out of reach of the
+# pole method: one position near a toggle, where it runs off to thousands of times its size elsewhere.
+OUT_OF_REACH = 10.0
+
+
+def _refuse_out_of_reach(kind: str, link: int, translating: bool, values: np.ndarray, scale: float, field_mm: float,
+                         nearest: int) -> None:
+    tall = _drawn_range(values) / scale
+    if tall <= OUT_OF_REACH * field_mm:
+        return
+    peak = float(values[np.argmax(np.abs(values))])
+    unit = ("m/s" if translating else "rad/s") + ("²" if kind == "acceleration" else "")
+    typical = float(np.median(np.abs(values)))
+    raise SceneError("positions", (
+        f"the {kind} diagram of link {link} cannot be drawn: its {kind} reaches {peak:.6g} {unit} near position "
+        f"{nearest}, {abs(peak) / typical:.0f} times its middling size, and even at the shortest pole distance, "
+        f"{LEAST_POLE_MM:g} mm, its diagram would be {tall:.4g} mm tall. Keep the driver's run clear of the toggle "
+        'there, or leave "diagrams" out of output.include'))
 
 
 def _drawn_range(values: np.ndarray) -> float:

@@ -75,11 +75,11 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     numbers = np.arange(spec.number_from, spec.number_from + spec.count)
     if not driver.cyclic:  # a slider's travel, a rocking crank's swing: from one end to the other
         values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
-        reference = reference_at(mechanism, float(values[0]))
+        reference = _first_reference(mechanism, float(values[0]), int(numbers[0]), f"driver.{driver.run_key}")
         extremes, reversals = None, ()
     else:
         start = 0.0 if spec.start == "extreme" else math.radians(float(spec.start))
-        reference = reference_at(mechanism, start)
+        reference = _first_reference(mechanism, start, int(numbers[0]), "positions.start")
         extremes, reversals = None, ()
         if spec.working is not None:
             extremes, reversals, reference = _settle_extremes(mechanism, start, reference)
@@ -95,6 +95,23 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes,
                        reversals=reversals)
+
+
+def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: str) -> Reference:
+    """The reference at the first position, where each group's assembly is chosen: a singular one is refused
+    as such, with what moves it (a position later in the run is only warned of)."""
+    try:
+        return reference_at(mechanism, value)
+    except SingularPositionError as error:
+        driver = mechanism.driver
+        elsewhere = value + (2.0 * math.pi / 3.0 if driver.cyclic else 0.5 * (driver.travel[1] - driver.travel[0]))
+        try:
+            reference_at(mechanism, elsewhere)
+        except (SingularPositionError, AssemblyError):
+            raise error from None  # no better elsewhere (parallel guides): another start is no advice
+        raise SingularPositionError(f"the first position, {number} ({mechanism.driver.describe(value)})", error.group,
+                                    f"{error.reason}; the first position fixes each group's assembly and may not be "
+                                    f"singular: start the run elsewhere ({moved_by})") from None
 
 
 def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:

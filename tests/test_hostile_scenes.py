@@ -512,6 +512,27 @@ def test_an_output_link_that_does_not_move_is_refused_as_such_not_as_a_sheet_too
     assert "drawing.sheet" not in line
 
 
+def test_a_travel_ending_next_to_a_toggle_is_refused_by_check_and_run_alike_naming_the_diagram_and_position(capsys):
+    """0.68° from the toggle ε4 reaches −157737 rad/s² (mpmath agrees): its chord diagram would stand 113 m tall
+    at the shortest pole distance.  The run said "fit on no A1 sheet; choose a bigger one" (A1 is the largest),
+    check said ok, and with no sheet the run wrote an SVG 113 m tall."""
+    from graphplan.cli import main
+
+    scene = tomllib.loads((FIXTURE.parent / "slider_driven.toml").read_text(encoding="utf-8"))
+    scene["driver"]["travel"] = [0.2, 0.4295]
+    scene.pop("measured", None)
+    line = assert_refused(capsys, to_toml(scene), "positions: the acceleration diagram of link 4 cannot be drawn: its "
+                                                  "acceleration reaches -157737 rad/s² near position 12")
+    assert "Keep the driver's run clear of the toggle" in line and "drawing.sheet" not in line
+    folder = Path(tempfile.mkdtemp())
+    try:
+        (folder / "near.toml").write_text(to_toml(scene), encoding="utf-8")
+        assert main(["check", str(folder / "near.toml")]) == 2
+        assert "the acceleration diagram of link 4 cannot be drawn" in capsys.readouterr().err
+    finally:
+        shutil.rmtree(folder)
+
+
 def test_a_crank_too_short_to_move_the_output_is_refused_as_such(capsys):
     # A femtometre crank rocks the rocker by some 1e-14 rad: refused through drawing.sheet before.
     scene = {**BASE, "driver": {**BASE["driver"], "length": 1e-15}}

@@ -135,6 +135,7 @@ def test_a_block_on_the_lever_s_pivot_at_the_first_position_is_refused_in_one_li
     scene.write_text(THROUGH_PIVOT.replace("C = [0.0, 0.1]", "C = [0.1, 0.0]"), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     error = capsys.readouterr().err.strip().splitlines()
-    assert error == [("graphplan: error: singular position at φ = 0° in group II(3,4): A passes over C, so nothing "
-                      "fixes the direction of link 4")]
+    assert error == [("graphplan: error: singular position at the first position, 1 (φ = 0°) in group II(3,4): A "
+                      "passes over C, so nothing fixes the direction of link 4; the first position fixes each group's "
+                      "assembly and may not be singular: start the run elsewhere (positions.start)")]
     assert not (tmp_path / "out").exists()

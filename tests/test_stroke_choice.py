@@ -195,3 +195,55 @@ def test_a_run_past_a_singular_position_prints_its_warning_once_and_no_arithmeti
     (line,) = [line for line in printed.out.splitlines() + printed.err.splitlines() if "singular position" in line]
     assert line.startswith("warning: position 7: singular position at φ = 345° in group II(5,6): ")
     assert line.count("position 7") == 1
+
+
+SLOTTED_BY_A_SLIDER = """
+[frame]
+points = { G = [0.0, 0.0], C = [0.05, 0.2] }
+[driver]
+kind = "slider"
+link = 2
+joint = "A"
+guide = { through = "G", angle = 0.0 }
+travel = [-0.1, 0.12]
+velocity = 0.5
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = 0.03
+[points]
+D = { link = 4, from = "C", toward = "A", at = -0.15 }
+[links.4]
+mass = 4.0
+centre = "C"
+[[loads]]
+kind = "force"
+link = 4
+point = "D"
+value = 200.0
+angle = 90.0
+resisting = true
+during = "working"
+[positions]
+count = 8
+working = { link = 4, sense = "SENSE" }
+plans = [2]
+"""
+
+
+def test_a_working_sense_the_travel_never_gives_is_warned_of_with_the_load_it_drops():
+    """The slider pushes the slotted link 4 counter-clockwise over its whole travel: with working sense cw every
+    position was idle and the 200 N load of the working stroke silently never applied."""
+    from graphplan.scene import loads as scene_from_text
+
+    analysis = analyse(scene_from_text(SLOTTED_BY_A_SLIDER.replace("SENSE", "cw")))
+    omega4 = analysis.motion.link(4).omega
+    assert np.all(np.asarray(omega4) > 0) and set(analysis.positions.strokes) == {"idle"}
+    (warning,) = [w for w in analysis.warnings if w.code == "idle-throughout"]
+    assert warning.detail == ("positions.working: link 4 never moves cw over driver.travel, so every position is in "
+                              "the idle stroke; loads[0] of the working stroke is never applied; it moves ccw: is "
+                              "that its working sense?")
+    assert all(np.all(load.force == 0) for load in analysis.loads if load.name.startswith("F4"))
+    right = analyse(scene_from_text(SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")))
+    assert set(right.positions.strokes) == {"working"} and not [w for w in right.warnings if w.code == "idle-throughout"]

@@ -240,10 +240,15 @@ def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -
         return
     context.singular_where(
         np.atleast_1d(np.abs(sine) < SINGULAR_SINE),
-        lambda i, at: SingularPositionError(
-            at, group.label, f"{what}: the lines of action of the velocity plan are parallel "
-                             f"(sine {float(np.atleast_1d(sine)[i] if np.ndim(sine) else sine):.1e})"),
+        lambda i, at: SingularPositionError(at, group.label, f"{what}: the lines of action of the velocity plan "
+                                                             f"are parallel{_sine(sine, i)}"),
     )
+
+
+def _sine(sine: Scalar, index: int) -> str:
+    """The sine of the lines' angle where it is not exactly nought (then it says nothing, and -0.0e+00 is noise)."""
+    value = abs(float(np.atleast_1d(sine)[index] if np.ndim(sine) else sine))
+    return f" (sine {value:.1e})" if value > 0 else ""
 
 
 def read_branch(table: Table, choices: tuple[str, ...]) -> tuple[str | None, tuple[float, float] | None]:

@@ -52,6 +52,7 @@ from .drawings import (
     with_length_scale,
 )
 from .formats import (
+    BIGGER,
     FORMATS,
     Rect,
     check_sheet,
@@ -416,8 +417,7 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
         axis, field = _shortened(drawn, sheet, form, intervals, (axis, field))
         title, drawn = drawn_at(axis, field)
     else:
-        raise SceneError("drawing.sheet", f"the kinematic diagrams fit on no {sheet} sheet; choose a bigger one "
-                         'or sheet = "none"', sheet)
+        raise SceneError("drawing.sheet", _no_sheet_holds(sheet), sheet)
     # The shortening is cautious where the words break narrower as the axis shortens: lengthen back while
     # the diagrams still fit.
     for grown in ((intervals, 0.0), (0.0, 1.0)):
@@ -455,9 +455,13 @@ def _shortened(drawn: Sequence[Sequence[Layer]], sheet: str, form: str, interval
         else:
             fitting_field -= 1
     if fitting_axis < intervals or fitting_field < _LEAST_FIELD_MM:
-        raise SceneError("drawing.sheet", f"the kinematic diagrams fit on no {sheet} sheet; choose a bigger one "
-                         'or sheet = "none"', sheet)
+        raise SceneError("drawing.sheet", _no_sheet_holds(sheet), sheet)
     return float(fitting_axis), float(fitting_field)
+
+
+def _no_sheet_holds(sheet: str) -> str:
+    bigger = f'choose a bigger one ({BIGGER[sheet]}) or sheet = "none"' if sheet in BIGGER else 'use sheet = "none"'
+    return f"the kinematic diagrams fit on no {sheet} sheet; {bigger}"
 
 
 # Sheets.
