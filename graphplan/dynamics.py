@@ -157,6 +157,23 @@ class EquivalentModel:
         """Me = Md + Mr: the reduced moment of every load but the inertia loads."""
         return self.driving + self.resisting
 
+    def mean_over_run(self, values: np.ndarray) -> float:
+        """The mean of ``values`` over the run, ∫ dψ / ψ: a plain mean of the samples would count twice each
+        point sampled on both sides of a jump of the loads."""
+        span = float(self.coordinate[-1] - self.coordinate[0])
+        return float(trapezoid(values, self.coordinate)) / span if span else float(np.mean(values))
+
+    @property
+    def inertia_is_constant(self) -> bool:
+        """Je the same all the cycle (a flywheel sized from load diagrams alone): the energy–mass diagram is then a
+        vertical segment, and the flywheel's three methods agree."""
+        return float(np.ptp(self.inertia)) <= 1e-12 * float(np.max(np.abs(self.inertia), initial=0.0))
+
+    @property
+    def mean_inertia(self) -> float:
+        """Je,mean: Je averaged over the run."""
+        return self.mean_over_run(self.inertia)
+
     @cached_property
     def driving_work(self) -> np.ndarray:
         """Ad(ψ) = ∫ Md dψ from the first sample (J)."""

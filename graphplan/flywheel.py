@@ -269,10 +269,10 @@ def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None 
         raise ValueError(f"the driving and resisting work differ by {model.imbalance:.6g} J over the cycle, so the "
                          f"motion is not periodic; take one moment constant (constant='driving' or 'resisting')")
     delta_w_max = float(np.max(energy) - np.min(energy))
-    approximate = flywheel_inertia(delta_w_max, omega_mean, delta, float(np.mean(inertia)))
+    approximate = flywheel_inertia(delta_w_max, omega_mean, delta, model.mean_inertia)
 
     peak = float(np.max(inertia))
-    constant = sum((float(np.mean(share)) for share in model.link_inertia.values()
+    constant = sum((model.mean_over_run(share) for share in model.link_inertia.values()
                     if np.ptp(share) <= _CONSTANT_SHARE * peak), 0.0)
     varying_energy = 0.5 * (inertia - constant) * omega_mean * omega_mean
     mertsalov = flywheel_inertia(float(np.ptp(energy - varying_energy)), omega_mean, delta, constant)

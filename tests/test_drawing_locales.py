@@ -24,6 +24,7 @@ from importlib import resources
 from pathlib import Path
 from xml.etree import ElementTree
 
+import numpy as np
 import pytest
 
 import graphplan
@@ -129,7 +130,9 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         crank, flywheel, slider = models()
         # A machine that keeps within δ unaided is drawn from a flywheel record with no inertia to add.
         unaided = dataclasses.replace(flywheel, inertia=-1.0)
-        return [t for model, wheel in ((crank, flywheel), (crank, unaided), (slider, None))
+        # A Je the same all the cycle (a flywheel from load diagrams alone): one flywheel, no energy–mass diagram.
+        steady = dataclasses.replace(crank, inertia=np.full(len(crank.inertia), crank.mean_inertia))
+        return [t for model, wheel in ((crank, flywheel), (crank, unaided), (steady, flywheel), (slider, None))
                 for t in svg_texts(dynamics.dynamics_svg(model, wheel, text))]
     if kind == "balancing":
         two_planes = balance(BalancingSpec(SHAFT, planes=(0.04, 0.22), correction_radius=0.05))

@@ -82,6 +82,22 @@ def test_the_machines_own_inertia_is_taken_off_the_flywheel(tmp_path):
     assert found["flywheel_inertia"] == pytest.approx(441.24 / ((100 * math.pi / 30) ** 2 * 0.05) - 30.0, rel=1e-9)
 
 
+def test_a_constant_je_gives_one_flywheel_with_no_energy_mass_diagram_named(tmp_path):
+    """With no linkage Je is the machine's own and constant: the note and the drawing named the energy–mass
+    diagram and its segment ab, which are not drawn, for a JF that is ΔWmax/(ωm²·δ) − Je exactly."""
+    status, out = run(tmp_path, PRESS.replace("inertia = 0.0", "inertia = 30.0"))
+    assert status == 0
+    expected = 441.24 / ((100 * math.pi / 30) ** 2 * 0.05) - 30.0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert re.search(r"with Je = 30 kg·m² the same all the cycle, JF = ΔWmax/\(ωm²·δ\) − Je = [\d.]+/\([\d.]+²·0\.05\) "
+                     r"− 30 = ([\d.]+) kg·m², exactly", note)
+    written = float(re.search(r"− 30 = ([\d.]+) kg·m², exactly", note)[1])
+    assert written == pytest.approx(expected, rel=5e-5)
+    drawing = (out / "dynamics.svg").read_text(encoding="utf-8")
+    assert "ab·μT" not in drawing and "energy–mass" not in drawing and "(Je constant)" in drawing
+    assert "energy–mass diagram, with Je variable" not in note
+
+
 def test_the_same_cycle_as_a_torque_diagram(tmp_path):
     omega = 100 * math.pi / 30
     low, high = 367.7 / omega, 3677.0 / omega

@@ -550,3 +550,56 @@ def test_a_constant_motor_stronger_than_the_mean_resistance_at_every_speed_is_re
     assert simulate(machine, ConstantTorque(1000.0), duration=1.0).omega[-1] > 0
     viscous = Machine(5.0, resisting=lambda phi, omega: 700.0 + 2.0 * omega)
     assert simulate(viscous, ConstantTorque(1000.0)).steady.mean_speed == pytest.approx(150.0, rel=1e-3)
+
+
+def test_a_constant_motor_equal_to_the_mean_resistance_is_no_runaway(tmp_path):
+    """300 N·m against a mean of exactly 300 N·m (100 for a third of the turn, 400 for the rest), which rounding
+    made 300.00000000000006: refused as "exceeds the mean resistance … speeds up without end".  Each turn gives
+    back what it takes: started at 100 rpm the machine keeps turning, ω² rising by 2·ΔWmax/J over the third."""
+    scene = tmp_path / "balanced.toml"
+    scene.write_text('[scene]\ntitle = "balanced"\n[dynamics]\nrpm = 100\ndelta = 0.05\n'
+                     "resisting_torque = [[0, 100], [120, 100], [120, 400], [360, 400]]\n"
+                     'motor = { kind = "constant", torque = 300.0 }\nstart = { rpm = 100 }\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    surplus = 200.0 * (2 * math.pi / 3)
+    assert motion["omega_max"] ** 2 - motion["omega_min"] ** 2 == pytest.approx(2 * surplus / motion["flywheel_inertia"],
+                                                                                rel=1e-5)
+    assert motion["omega_min"] == pytest.approx(100 * math.pi / 30, rel=1e-5)
+
+
+def test_a_brake_applied_while_the_motor_drives_gives_the_braked_steady_state(tmp_path):
+    """The brake comes on at 10 s and the motor keeps driving: the machine settles at a lower speed.  The run
+    went on for 1333 s and reported the steady state before the brake (ωm 9.42 against 8.45 rad/s)."""
+    from scipy.integrate import solve_ivp
+
+    scene = tmp_path / "braked.toml"
+    scene.write_text('[scene]\ntitle = "braked"\n[dynamics]\nrpm = 100\ndelta = 0.05\n'
+                     "resisting_torque = [[0, 100], [120, 100], [120, 400], [360, 400]]\n"
+                     'motor = { kind = "linear", stall_torque = 1200.0, no_load_rpm = 120.0 }\n'
+                     "brake = { torque = 50.0, damping = 5.0, at = 10.0 }\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    # The flywheel by hand: Md = 300 N·m balances the mean resistance; the largest surplus is 200 N·m over 120°.
+    omega_m = 100 * math.pi / 30
+    inertia = 200.0 * (2 * math.pi / 3) / (omega_m ** 2 * 0.05)
+    assert motion["flywheel_inertia"] == pytest.approx(inertia, rel=1e-9)
+
+    def rates(t, y):
+        phi, omega = y
+        resisting = 100.0 if math.degrees(phi) % 360.0 < 120.0 else 400.0
+        braking = 50.0 + 5.0 * omega if t >= 10.0 else 0.0
+        return [omega, (1200.0 * (1 - omega / (120 * math.pi / 30)) - resisting - braking) / inertia]
+
+    solved = solve_ivp(rates, (0.0, 60.0), [0.0, omega_m], method="DOP853", rtol=1e-10, atol=1e-10, max_step=0.002,
+                       dense_output=True)
+    turns = np.floor(solved.y[0] / (2 * math.pi))
+    starts = solved.t[1:][np.diff(turns) > 0]
+    first, last = starts[-2], starts[-1]
+    during = np.linspace(first, last, 20001)
+    omega = solved.sol(during)[1]
+    assert motion["duration"] < 100.0
+    assert motion["omega_mean"] == pytest.approx(2 * math.pi / (last - first), rel=1e-4)
+    assert motion["omega_max"] == pytest.approx(omega.max(), rel=1e-4)
+    assert motion["omega_min"] == pytest.approx(omega.min(), rel=1e-4)
+    assert motion["omega_mean"] < 9.0  # below the unbraked 9.42

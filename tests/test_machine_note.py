@@ -224,8 +224,9 @@ def test_a_shafts_stiffness_is_in_the_results_and_its_formula_in_the_note(tmp_pa
     document = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]
     assert document["stiffness"] == pytest.approx(k, rel=1e-11)
     assert document["natural_frequency"] == pytest.approx(math.sqrt(k / 20.0), rel=1e-11)
-    formula = (r"k = 3·E·I·L/\(a²·b²\) = 3·200000000000·([\d.]+)·1\.2/\(0\.3²·0\.9²\) = (\d+) N/m" if b is not None
-               else r"k = 3·E·I/a³ = 3·200000000000·([\d.]+)/0\.3³ = (\d+) N/m")
+    # E = 2·10¹¹ Pa is written as a power of ten: as 200000000000 its noughts have to be counted.
+    formula = (r"k = 3·E·I·L/\(a²·b²\) = 3·2·10¹¹·([\d.]+)·1\.2/\(0\.3²·0\.9²\) = (\d+) N/m" if b is not None
+               else r"k = 3·E·I/a³ = 3·2·10¹¹·([\d.]+)/0\.3³ = (\d+) N/m")
     found = re.search(formula, note)
     assert found, note
     shown_second, shown_k = float(found.group(1)), found.group(2)

@@ -569,3 +569,21 @@ def test_a_machine_on_a_moving_base_with_no_unbalance_is_not_plotted_as_a_rotati
     assert "Force transmitted" not in transmitted and "<!-- motion transmissibility X/Y -->" in transmitted
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert "Figure 1. Moving base: the motion relative to the base" in note and "Rotating unbalance" not in note
+
+
+def test_no_operand_of_the_note_runs_to_more_digits_than_are_read(tmp_path):
+    """A cantilever rotor at 1500 rpm: no few digits of ω made every equation come out as written, and the note
+    printed ω = 157.07963267948966 rad/s four times."""
+    import re
+
+    from graphplan.cli import main
+
+    scene = tmp_path / "cantilever.toml"
+    scene.write_text('[scene]\ntitle = "V4"\nlocale = "en"\n[vibration]\nmass = 10.0\nunbalance = 0.0005\n'
+                     'shaft = { modulus = 2.0e11, second_moment = 4.0e-8, length = 0.5, position = 0.4, '
+                     'support = "cantilever" }\nrpm = 1500.0\ntransmissibility = 0.3\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    written = re.findall(r"ω = ([\d.]+) rad/s", note)
+    assert written and all(float(value) == pytest.approx(1500 * math.pi / 30, rel=1e-5) for value in written)
+    assert max(len(re.sub(r"\D", "", number).strip("0")) for number in re.findall(r"\d+\.\d+", note)) <= 8

@@ -50,7 +50,8 @@ def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float]
     if motor.shaft_no_load_speed is not None:
         return None
     surplus = _mean_surplus(machine, motor)
-    if any(surplus(omega) <= 0 for omega in 2.0 ** np.arange(0, 31)):
+    # A torque equal to the mean resistance but for rounding balances it at any speed: no runaway.
+    if any(surplus(omega) <= 1e-9 * abs(motor.shaft_torque(omega)) for omega in 2.0 ** np.arange(0, 31)):
         return None
     fastest = 2.0 ** 30
     return motor.shaft_torque(fastest), motor.shaft_torque(fastest) - surplus(fastest)

@@ -160,6 +160,9 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         _, _, stiffness = choose_method(equations, omega_run, rtol, atol)
         chosen, reason = method, f"{method}: as asked (stiffness number {stiffness:.3g})"
     tolerance = max(steady_tolerance, 10.0 * rtol)
+    # The regime a run settles in: a brake that comes on while the motor drives gives a braked steady state, and
+    # the one before it is not the machine's; a motor switched off leaves the one before it, then runs down.
+    settles_after = brake.at if brake is not None and motor_off_at is None else -math.inf
     notes = []
     integrator = Integrator(equations, start, chosen, rtol, atol, max_evaluations)
     # A motor too weak to start the machine where it stands: one turn's time at rest shows it.
@@ -174,7 +177,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     else:
         period = TWO_PI / omega_run
         limit = start.time + max_cycles * period
-        run_down = motor_off_at is not None or brake is not None
+        run_down = motor_off_at is not None
         while True:
             integrator.advance(min(integrator.t + 20.0 * period, limit))
             if integrator.finished:
@@ -182,7 +185,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
             if not run_down:
                 t, y = np.concatenate(integrator.times), np.concatenate(integrator.states, axis=1)
                 cycles = find_cycles(t, y[0], integrator.dense(), limit=max_cycles)
-                if find_steady_state(cycles, tolerance) is not None:
+                if find_steady_state(_after(cycles, settles_after), tolerance) is not None:
                     break
             if integrator.t >= limit:
                 notes.append(f"stopped after {max_cycles} cycles' time ({limit - start.time:.6g} s) "
@@ -197,7 +200,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         notes.append("the machine did not move: the driving torque at rest does not overcome the resistance")
     dense = integrator.dense()
     cycles = find_cycles(t, y[0], dense, limit=max_cycles)
-    steady = find_steady_state(cycles, tolerance)
+    steady = find_steady_state(_after(cycles, settles_after), tolerance)
     if steady is not None:
         # The values the run reports, to the solver's accuracy (a corner of ω where Mr jumps included).
         exact = refined(steady.cycle, dense)
@@ -217,6 +220,11 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
                          stalled_at=stalled_at,
                          slip_energy=slip_energy, nfev=integrator.nfev, njev=integrator.njev, nlu=integrator.nlu,
                          notes=tuple(notes), _dense=dense)
+
+
+def _after(cycles: tuple[Cycle, ...], moment: float) -> tuple[Cycle, ...]:
+    """The cycles that start at ``moment`` or later."""
+    return tuple(cycle for cycle in cycles if cycle.start >= moment)
 
 
 @dataclass(frozen=True)

@@ -134,7 +134,7 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
     left_bottom = bottom
     # A constant Je (a flywheel sized from a load diagram alone) makes the energy–mass diagram a
     # vertical segment and Je(φ) a straight line: the ΔT diagram then says all they would.
-    if model.turning and np.ptp(model.inertia) > 0:
+    if model.turning and not model.inertia_is_constant:
         energy_mass = _energy_mass(model, flywheel, scales, words)
         # Clear of the left column's axis names ("φ, ° from position 1") by a gap, its own numbers included.
         left_column = max(bounds_of(layer.items)[2] for layer in layers)
@@ -360,10 +360,14 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
         words["dyn_delta"].format(delta=short(flywheel.delta), omega=short(flywheel.omega_mean, 5),
                               rpm=short(omega_to_rpm(flywheel.omega_mean), 5)),
         words["dyn_delta_w_max"].format(value=short(flywheel.delta_w_max, 5)),
-        words["dyn_exact"].format(value=short(flywheel.required, 5)),
-        words["dyn_approximate"].format(value=short(flywheel.approximate, 5)),
-        words["dyn_mertsalov"].format(value=short(flywheel.mertsalov, 5), constant=short(flywheel.constant_inertia, 4)),
     ]
+    if model.inertia_is_constant:
+        lines.append(words["dyn_exact_constant"].format(value=short(flywheel.required, 5)))
+    else:
+        lines += [words["dyn_exact"].format(value=short(flywheel.required, 5)),
+                  words["dyn_approximate"].format(value=short(flywheel.approximate, 5)),
+                  words["dyn_mertsalov"].format(value=short(flywheel.mertsalov, 5),
+                                                constant=short(flywheel.constant_inertia, 4))]
     if flywheel.moved is not None and flywheel.shaft_rpm is not None:
         lines.append(words["dyn_moved"].format(rpm=short(flywheel.shaft_rpm), value=short(flywheel.moved, 4)))
     for key, index in (("dyn_omega_max", flywheel.index_max), ("dyn_omega_min", flywheel.index_min)):

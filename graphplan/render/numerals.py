@@ -1,16 +1,16 @@
 """How a number is written on a drawing: short, with no exponent, and a true minus sign.
 
 The SVG writer puts in the locale's decimal mark; these functions write the point.  A number too large to
-read written out whole (a stiffness of 1e15, a reaction near a lock) is written as a power of ten, 6.3·10¹⁵.
+read written out whole (a steel's E, a reaction near a lock) is written as a power of ten, 2.1·10¹¹.
 """
 
 from __future__ import annotations
 
 import math
 
-
-# From this magnitude on a number is written as a power of ten: whole, it would run to more digits than are read.
-POWER_OF_TEN = 1e12
+# From this magnitude on a number is written as a power of ten (a steel's E = 2.1·10¹¹ Pa): whole, it would run to
+# more digits than are read.
+POWER_OF_TEN = 1e9
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 

@@ -43,7 +43,7 @@ def number(value: float, digits: int = 5, mark: str = ".") -> str:
 
     A value of :data:`ROUNDING_NOISE` or less is 0; others are written without an exponent: one of
     ``digits`` places before the point or more whole (868600, not 8.686e+05), a small one in decimals
-    (0.000036362, not 3.6362e−05), one of 10¹² or more as a power of ten (6.3·10³⁰⁷).
+    (0.000036362, not 3.6362e−05), one of 10⁹ or more as a power of ten (2.1·10¹¹).
     """
     if not math.isfinite(value):
         return "—"

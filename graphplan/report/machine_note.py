@@ -50,7 +50,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     note.heading(2, f"{section}. {note.t('note_dynamics')}")
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         note.para(note.t("note_dyn_model_diagrams", count=len(model.coordinate),
-                         inertia=note.n(float(np.mean(model.inertia)))))
+                         inertia=note.n(model.mean_inertia)))
     else:
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
                          count=len(model.coordinate)))
@@ -105,10 +105,15 @@ def _flywheel(note: Writer, flywheel, model) -> None:
                          low=note.n(flywheel.omega_min)))
         return
     omega = flywheel.omega_mean
-    note.para(note.t("note_dyn_flywheel", delta=note.n(flywheel.delta), omega=note.n(omega),
-                     rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max), mean=note.n(float(np.mean(model.inertia))),
-                     approximate=note.n(flywheel.approximate), exact=note.n(flywheel.inertia),
-                     mertsalov=note.n(flywheel.mertsalov)))
+    if model.inertia_is_constant:
+        note.para(note.t("note_dyn_flywheel_constant", delta=note.n(flywheel.delta), omega=note.n(omega),
+                         rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
+                         mean=note.n(model.mean_inertia), exact=note.n(flywheel.inertia)))
+    else:
+        note.para(note.t("note_dyn_flywheel", delta=note.n(flywheel.delta), omega=note.n(omega),
+                         rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
+                         mean=note.n(model.mean_inertia), approximate=note.n(flywheel.approximate),
+                         exact=note.n(flywheel.inertia), mertsalov=note.n(flywheel.mertsalov)))
     note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=note.n(flywheel.omega_max), low=note.n(flywheel.omega_min),
                      high_angle=note.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
                      low_angle=note.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
@@ -234,18 +239,27 @@ def _shaft(note: Writer, shaft: Shaft, stiffness: str) -> None:
 
 def shown_operand(note: Writer, value: float, results: list[tuple[Callable[[float], float], str]]) -> str:
     """``value`` written to as many digits (five at least) as make each function of ``results``, of the written
-    value, give its result as the note writes it: "mL = 1.58/0.05 = 31.599 kg" reads as a wrong sum."""
-    for digits in range(5, 18):
+    value, give its result as the note writes it: "mL = 1.58/0.05 = 31.599 kg" reads as a wrong sum.  Where
+    no few digits do (the other operands are written rounded too), five: ω = 157.07963267948966 is not read."""
+    for digits in range(5, MOST_SHOWN_DIGITS + 1):
         text = note.n(value, digits)
         shown = read_number(note, text)
         if all(_same_written(note, result_of(shown), result) for result_of, result in results):
             return text
-    return note.n(value, 17)
+    return note.n(value)
+
+
+# The most significant digits an operand is written with to make its equations come out as written.
+MOST_SHOWN_DIGITS = 8
+
+
+_FROM_SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 
 
 def read_number(note: Writer, text: str) -> float:
-    """A number as the note wrote it, read back."""
-    return float(text.replace("−", "-").replace(note.mark, "."))
+    """A number as the note wrote it, read back (2,1·10¹¹ too)."""
+    mantissa, _, exponent = text.replace("−", "-").replace(note.mark, ".").partition("·10")
+    return float(mantissa) * 10.0 ** int(exponent.translate(_FROM_SUPERSCRIPT)) if exponent else float(mantissa)
 
 
 def _same_written(note: Writer, value: float, written: str) -> bool:
