@@ -583,11 +583,12 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         warn(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its masses "
              "turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
     if "vibration" in pieces and warn is not None:
-        from .vibration import resonance_warning
+        from .vibration import isolation_warning, resonance_warning
 
         assert scene.vibration is not None
-        if (near := resonance_warning(scene.vibration)) is not None:
-            warn(near)
+        for told in (resonance_warning(scene.vibration), isolation_warning(scene.vibration)):
+            if told is not None:
+                warn(told)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))

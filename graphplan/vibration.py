@@ -43,6 +43,9 @@ Scalar = float | np.ndarray
 RESONANCE_TOLERANCE = 1e-6
 #: Without damping, a speed this close to ωn (relative) is warned of: the amplitude grows without bound towards it.
 NEAR_RESONANCE = 0.1
+# The most a machine's isolating mounts sag under its weight (m): steel springs reach some 50–100 mm, rubber less.
+MOST_MOUNT_SAG = 0.1
+STANDARD_GRAVITY = 9.80665
 Support = Literal["simply_supported", "cantilever"]
 SUPPORTS = ("simply_supported", "cantilever")
 
@@ -332,6 +335,24 @@ def resonance_warning(spec: VibrationSpec) -> str | None:
             f"amplitude X = {response.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
 
 
+def isolation_warning(spec: VibrationSpec) -> str | None:
+    """A line where the isolating mounts the scene asks for would sag more than :data:`MOST_MOUNT_SAG` under the
+    machine's weight (a low speed, a small transmissibility): no mount of springs gives them, or None."""
+    if spec.transmissibility is None:
+        return None
+    stiffness = steady_state(spec).isolation_stiffness
+    if stiffness is None or not stiffness > 0:
+        return None
+    sag = spec.mass * STANDARD_GRAVITY / stiffness
+    if sag <= MOST_MOUNT_SAG:
+        return None
+    # k = M·(ω/r)², so the sag M·g/k = g·r²/ω² is the speed's and the wanted TR's alone, whatever the mass.
+    return (f"vibration: the isolating mounts, k = {stiffness:.4g} N/m, would sag by M·g/k = {sag:.3g} m under the "
+            f"machine's weight, more than any spring mount ({MOST_MOUNT_SAG * 1000:g} mm); the sag, g·r²/ω², is the "
+            f"speed's and the wanted transmissibility's alone: TR = {spec.transmissibility:g} at "
+            f"{spec.omega * 30 / math.pi:.4g} rpm is out of reach of mounts, a larger TR or a higher speed is not")
+
+
 @dataclass(frozen=True)
 class Response:
     """The steady vibration of a :class:`VibrationSpec` machine (SI, angles in radians)."""
@@ -537,6 +558,7 @@ __all__ = [
     "force_magnification",
     "isolation_frequency_ratio",
     "isolation_stiffness",
+    "isolation_warning",
     "natural_frequency",
     "phase",
     "read_vibration",

@@ -603,3 +603,20 @@ def test_a_brake_applied_while_the_motor_drives_gives_the_braked_steady_state(tm
     assert motion["omega_max"] == pytest.approx(omega.max(), rel=1e-4)
     assert motion["omega_min"] == pytest.approx(omega.min(), rel=1e-4)
     assert motion["omega_mean"] < 9.0  # below the unbraked 9.42
+
+
+def test_a_brake_is_in_the_notes_equation_of_motion_and_stops_the_machine_when_the_closed_form_does(tmp_path):
+    """Motor off and brake on at t = 0: J·dω/dt = −(50 + 30 + 0.5·ω), so ω = (ω0 + 160)·e^(−t/4) − 160 stops at
+    t = 4·ln((ω0 + 160)/160).  The note's equation left the brake out."""
+    scene = tmp_path / "braked.toml"
+    scene.write_text('[scene]\ntitle = "run-down"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+                     "resisting_torque = [[0, 50], [360, 50]]\n"
+                     'motor = { kind = "constant", torque = 60.0, off_at = 0.0 }\nstart = { rpm = 90 }\n'
+                     "brake = { torque = 30.0, damping = 0.5, at = 0.0 }\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    omega0 = 90 * math.pi / 30
+    assert motion["stopped_at"] == pytest.approx(4 * math.log((omega0 + 160) / 160), rel=1e-6)
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert ("From t = 0 s a brake acts against the motion with the moment Mt(ω) = 30 + 0.5·ω N·m, which joins the "
+            "resistance: Je(φ)·dω/dt + ½·Je′(φ)·ω² = Md(ω) − Mr(φ) − Mt(ω).") in note

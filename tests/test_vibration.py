@@ -587,3 +587,21 @@ def test_no_operand_of_the_note_runs_to_more_digits_than_are_read(tmp_path):
     written = re.findall(r"ω = ([\d.]+) rad/s", note)
     assert written and all(float(value) == pytest.approx(1500 * math.pi / 30, rel=1e-5) for value in written)
     assert max(len(re.sub(r"\D", "", number).strip("0")) for number in re.findall(r"\d+\.\d+", note)) <= 8
+
+
+def test_isolating_mounts_that_would_sag_more_than_any_spring_are_warned_of(tmp_path, capsys):
+    """TR = 0.2 at 60 rpm: r = √(1 + 1/TR) at ζ = 0 makes k = M·(ω/r)², whose sag M·g/k = g·r²/ω² is 1.5 m
+    whatever the machine weighs.  The design was given without a word."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "slow.toml"
+    scene.write_text('[scene]\ntitle = "slow"\n[vibration]\nmass = 100.0\nunbalance = 0.02\nstiffness = 1e5\n'
+                     'rpm = 60.0\ntransmissibility = 0.2\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    (line,) = [line for line in capsys.readouterr().out.splitlines() if "would sag" in line]
+    omega = 2 * math.pi
+    sag = 9.80665 * (1 + 1 / 0.2) / omega ** 2
+    assert f"would sag by M·g/k = {sag:.3g} m" in line
+    scene.write_text(scene.read_text(encoding="utf-8").replace("rpm = 60.0", "rpm = 1500.0"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "fast")]) == 0
+    assert "would sag" not in capsys.readouterr().out

@@ -137,6 +137,10 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
     mounted = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
         if dynamics.flywheel_inertia > 0 else ""
     note.para(note.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=_method_reason(note, dynamics)))
+    brake = dynamics.spec.motion.brake
+    if brake is not None:
+        note.para(note.t("note_dyn_brake", at=note.n(brake.at, 4), torque=note.n(brake.torque),
+                         damping=note.n(brake.damping)))
     steady = motion.steady
     # Stopped with the motor on is a stall; stopped after it was switched off, a run-down.
     run_down = motion.stalled_at is None and motion.stopped_at is not None
