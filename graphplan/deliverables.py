@@ -354,6 +354,10 @@ class MachineDynamics:
             result.update(omega_mean=steady.mean_speed, omega_max=steady.max_speed, omega_min=steady.cycle.min_speed,
                           delta=steady.cycle.delta, steady_after=steady.reached_at,
                           start_up_time=motion.start_up_time(5.0))
+        if self.spec.motion.clutch is not None:
+            locked = motion.event_time("clutch locked")
+            result.update(clutch_locked_at=locked, slip_energy=motion.slip_energy,
+                          clutch_common_speed=None if locked is None else float(motion.state_at([locked])[1, 0]))
         if motion.stalled_at is not None:
             result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=self.stall_angle_deg())
         elif motion.stopped_at is not None:

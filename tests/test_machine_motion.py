@@ -620,3 +620,25 @@ def test_a_brake_is_in_the_notes_equation_of_motion_and_stops_the_machine_when_t
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert ("From t = 0 s a brake acts against the motion with the moment Mt(ω) = 30 + 0.5·ω N·m, which joins the "
             "resistance: Je(φ)·dω/dt + ½·Je′(φ)·ω² = Md(ω) − Mr(φ) − Mt(ω).") in note
+
+
+def test_a_clutch_run_down_goes_on_until_the_machine_stops_and_reports_the_lock(tmp_path):
+    """Motor off, the driving half (2 kg·m² at 100 rad/s) clutched to the machine (4 kg·m² at rest, 1 N·m of
+    resistance) through 20 N·m: the halves lock when 100 − 10·t = 4.75·t, at 32.203 rad/s, and the six kg·m²
+    then stop in 6·32.203 s more.  The run gave up at 122.9 s without a word of the lock or the stop."""
+    scene = tmp_path / "clutch.toml"
+    scene.write_text('[scene]\ntitle = "clutch"\n[dynamics]\nrpm = 300\ninertia = 4.0\n'
+                     "resisting_torque = [[0, 1], [360, 1]]\n"
+                     'motor = { kind = "constant", torque = 10.0, off_at = 0.0 }\n'
+                     "clutch = { torque = 20.0, engage_at = 0.0, inertia = 2.0 }\n"
+                     "start = { omega = 0.0, driving_omega = 100.0 }\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    locked = 100.0 / (10.0 + 19.0 / 4.0)
+    speed = 4.75 * locked
+    assert motion["clutch_locked_at"] == pytest.approx(locked, rel=1e-6)
+    assert motion["clutch_common_speed"] == pytest.approx(speed, rel=1e-6)
+    assert motion["slip_energy"] == pytest.approx(20.0 * (100.0 * locked - 14.75 * locked ** 2 / 2), rel=1e-6)
+    assert motion["stopped_at"] == pytest.approx(locked + 6.0 * speed / 1.0, rel=1e-6)
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert f"slip until t = {locked:.3g} s and turn together from then on at ω = {speed:.5g} rad/s" in note

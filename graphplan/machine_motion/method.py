@@ -43,6 +43,17 @@ def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration:
     return max(reached, 1e-3)
 
 
+def run_down_time(machine: Machine, inertia: float, speed: float, brake_torque: float = 0.0) -> float | None:
+    """How long the machine of reduced inertia Je (mean over a turn) plus ``inertia`` takes to come to rest from
+    ``speed`` against its mean resistance at rest and a brake's torque, at that deceleration: (J·ω)/M.  None where
+    nothing but the speed holds it back (a damping alone stops it only in the limit)."""
+    holding = float(np.mean([machine.mr(a, 0.0) for a in _TURN])) + brake_torque
+    if not holding > 0:
+        return None
+    total = float(np.mean([machine.je(a) for a in _TURN])) + inertia
+    return total * speed / holding
+
+
 def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float] | None:
     """(the motor's torque, the mean resistance) where a motor whose torque does not fall with speed (a constant
     one) outpulls the mean resistance at every speed up to 2³⁰ rad/s: the machine has no steady state.  None

@@ -15,7 +15,7 @@ from scipy.optimize import brentq
 from .cycles import Cycle, SteadyState, find_cycles, find_steady_state, refined
 from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
 from .integrator import MOST_EVALUATIONS, Equations, Integrator
-from .method import choose_method, is_stiff, refuse_runaway, running_speed
+from .method import choose_method, is_stiff, refuse_runaway, run_down_time, running_speed
 from .shaft import TWO_PI, Machine
 
 METHODS = ("auto", "RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -178,6 +178,15 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         period = TWO_PI / omega_run
         limit = start.time + max_cycles * period
         run_down = motor_off_at is not None
+        if run_down:
+            # A run-down lasts until the machine stops, however many turns that takes: long enough for it at
+            # the mean resistance alone (a clutch's halves locked together first), twice over.
+            inertia = equations.rotor + (clutch.inertia if clutch is not None else 0.0)
+            speed = max(start.omega, start.driving_omega or 0.0)
+            stopping = run_down_time(machine, inertia, speed, brake.torque if brake is not None else 0.0)
+            if stopping is not None:
+                limit = max(limit, max(motor_off_at, brake.at if brake is not None else 0.0, start.time)
+                            + 2.0 * stopping)
         while True:
             integrator.advance(min(integrator.t + 20.0 * period, limit))
             if integrator.finished:

@@ -137,6 +137,16 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
     mounted = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
         if dynamics.flywheel_inertia > 0 else ""
     note.para(note.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=_method_reason(note, dynamics)))
+    clutch = dynamics.spec.motion.clutch
+    if clutch is not None:
+        locked = motion.event_time("clutch locked")
+        if locked is None:
+            note.para(note.t("note_dyn_clutch_slips", torque=note.n(clutch.torque), engage=note.n(clutch.engage_at, 4),
+                             energy=note.n(motion.slip_energy)))
+        else:
+            note.para(note.t("note_dyn_clutch", torque=note.n(clutch.torque), engage=note.n(clutch.engage_at, 4),
+                             locked=note.n(locked, 4), speed=note.n(float(motion.state_at([locked])[1, 0])),
+                             energy=note.n(motion.slip_energy)))
     brake = dynamics.spec.motion.brake
     if brake is not None:
         note.para(note.t("note_dyn_brake", at=note.n(brake.at, 4), torque=note.n(brake.torque),
@@ -147,6 +157,9 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
     if steady is None:
         if run_down:
             _run_down(note, dynamics)
+        elif dynamics.spec.motion.motor_off_at is not None and motion.stalled_at is None:
+            note.para(note.t("note_dyn_not_stopped", off=note.n(dynamics.spec.motion.motor_off_at, 4),
+                             time=note.n(float(motion.t[-1]), 4), speed=note.n(float(motion.omega[-1]))))
         elif motion.stalled_at is None:
             note.para(note.text["note_dyn_no_steady"])
         else:
