@@ -123,7 +123,7 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
     # A stream takes the SVG text as it is (a run writes its whole folder at once).
     target = path if hasattr(path, "write") else Path(path)
     with matplotlib.rc_context(settings()):
-        figure = Figure(figsize=(7.0, 4.2), dpi=100)
+        figure = Figure(figsize=(8.4, 4.2), dpi=100)
         plot = figure.add_subplot()
         colours = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.85, len(curves)))
         for (zeta, values), colour in zip(curves, colours, strict=True):
@@ -154,7 +154,8 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         plot.set_ylabel(ylabel)
         plot.set_title(title, fontsize=11)
         plot.grid(True, which="both", linewidth=0.3)
-        plot.legend(fontsize=8, loc="upper right")
+        # Beside the plot, not on it: inside, it hid a curve wherever the curves ran (ζ = 1 at r ≈ 3.3–4.3).
+        plot.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
         figure.tight_layout()
         with_decimal_mark(figure, text["decimal_mark"])
         if isinstance(target, Path):
