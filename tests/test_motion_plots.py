@@ -11,7 +11,7 @@ from test_dynamics_without_linkage import PRESS
 
 from graphplan.cli import main
 from graphplan.locale import strings
-from graphplan.machine_motion import Brake, Clutch, LinearMotor, Machine, simulate
+from graphplan.machine_motion import Brake, Clutch, LinearMotor, Machine, Start, simulate
 from graphplan.report.motion_plots import motion_plot
 
 pytest.importorskip("matplotlib")
@@ -149,3 +149,17 @@ def test_a_machine_that_never_moves_gets_only_the_plot_of_why():
 def test_a_machine_that_moves_keeps_its_speed_over_time(motion):
     figure = motion_plot(motion, strings("en"))
     assert len(figure.axes) == 2
+
+
+def test_a_run_down_with_no_steady_state_is_the_speed_in_time_alone_with_no_empty_half():
+    """Motor off from the start, braked to rest: there is no steady turn to draw, and the lower half of the
+    figure was empty but for "no steady state within the run"."""
+    machine = Machine(INERTIA, resisting=lambda phi, omega: LOAD)
+    motion = simulate(machine, LinearMotor(200.0, 30.0), start=Start(omega=20.0), motor_off_at=0.0,
+                      brake=Brake(torque=60.0, at=0.0))
+    assert motion.steady is None and motion.stopped_at == pytest.approx(INERTIA * 20.0 / (LOAD + 60.0), rel=1e-6)
+    text = strings("en")
+    figure = motion_plot(motion, text)
+    (only,) = figure.axes
+    assert text["motion_shaft"] in {line.get_label() for line in only.get_lines()}
+    assert text["motion_no_steady"] not in {item.get_text() for item in figure.findobj(lambda a: hasattr(a, "get_text"))}

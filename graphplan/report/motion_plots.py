@@ -54,22 +54,33 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     from matplotlib import pyplot
 
     with matplotlib.rc_context(settings()):
-        if _moved(motion):
-            figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
-            _speed_over_time(run, motion, text)
-        else:
-            # A speed that is zero throughout is an empty plot along its axis: only why it stands still is drawn.
-            figure, turn = pyplot.subplots(1, 1, figsize=(7.5, 4.5))
         mark = text["decimal_mark"]
-        if motion.steady is not None:
-            _steady_turn(turn, motion, text, flywheel)
-        elif motion.stalled_at is not None and resisting is not None:
-            _stall(turn, motion, text, resisting)
+        below = motion.steady is not None or (motion.stalled_at is not None and resisting is not None)
+        run_down = motion.stalled_at is None and motion.stopped_at is not None
+        if _moved(motion) and not below:
+            # A run-down, or a run with no steady state: the speed in time says it all, no empty half below.
+            figure, run = pyplot.subplots(1, 1, figsize=(7.5, 5.5))
+            _speed_over_time(run, motion, text)
+            if not run_down:
+                why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
+                    time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
+                run.set_title(f"{run.get_title()}: {why}" if run.get_title() else why, fontsize=10)
         else:
-            turn.set_axis_off()
-            why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
-                time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
-            turn.text(0.5, 0.5, textwrap.fill(why, 80), ha="center", va="center", transform=turn.transAxes)
+            if _moved(motion):
+                figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
+                _speed_over_time(run, motion, text)
+            else:
+                # A speed zero throughout is an empty plot along its axis: only why it stands still is drawn.
+                figure, turn = pyplot.subplots(1, 1, figsize=(7.5, 4.5))
+            if motion.steady is not None:
+                _steady_turn(turn, motion, text, flywheel)
+            elif motion.stalled_at is not None and resisting is not None:
+                _stall(turn, motion, text, resisting)
+            else:
+                turn.set_axis_off()
+                why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
+                    time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
+                turn.text(0.5, 0.5, textwrap.fill(why, 80), ha="center", va="center", transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
         # After the decimal mark: the title quotes the scene's, which is the user's text.
         figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
