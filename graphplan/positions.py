@@ -79,7 +79,9 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         extremes, reversals = None, ()
     else:
         start = 0.0 if spec.start == "extreme" else math.radians(float(spec.start))
-        reference = _first_reference(mechanism, start, int(numbers[0]), "positions.start")
+        # With start = "extreme" the first position is found later; the branches are chosen at 0° first.
+        reference = reference_at(mechanism, start) if spec.start == "extreme" else \
+            _first_reference(mechanism, start, int(numbers[0]), "positions.start")
         extremes, reversals = None, ()
         if spec.working is not None:
             extremes, reversals, reference = _settle_extremes(mechanism, start, reference)
