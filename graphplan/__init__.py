@@ -2,7 +2,7 @@
 
 The Python interface::
 
-    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
+    scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")   # or graphplan.load_text(toml_text)
     motion = graphplan.solve(scene, driver=np.radians(np.arange(0, 360, 0.01)))
     motion.point("B").r, motion.link(4).omega
 """
@@ -17,6 +17,7 @@ from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionE
 from .mechanism import Mechanism, build
 from .motion import Motion
 from .scene import Scene, load
+from .scene import loads as load_text
 
 __version__ = "0.1.0"
 
@@ -65,5 +66,6 @@ __all__ = [
     "__version__",
     "build",
     "load",
+    "load_text",
     "solve",
 ]

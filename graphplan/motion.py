@@ -100,6 +100,10 @@ class Motion:
     warnings: tuple[PositionWarning, ...]
     singular: Mapping[int, str] = field(default_factory=dict)
 
+    def __post_init__(self) -> None:
+        # Handed out as it is (motion.driver): a view that cannot be written, as point() and link() hand theirs.
+        object.__setattr__(self, "driver", _read_only(np.asarray(self.driver).view()))
+
     @property
     def count(self) -> int:
         """The number of positions N."""
@@ -147,7 +151,9 @@ class Motion:
         """The sliding pair in which link ``slider`` slides."""
         for slide in self.slides:
             if slide.slider == slider:
-                return slide
+                # Views that cannot be written: a write would change the motion's own arrays.
+                return replace(slide, **{name: _read_only(np.asarray(getattr(slide, name)).view())
+                                         for name in ("u", "s", "velocity", "acceleration")})
         raise KeyError(f"link {slider} slides in no pair")
 
 

@@ -19,6 +19,7 @@ from types import MappingProxyType
 import numpy as np
 
 from .analysis import Analysis, PlanPosition, analyse
+from .errors import SceneError
 from .scene import Scene
 
 
@@ -120,8 +121,8 @@ def plan(scene: Scene, number: int) -> PositionPlans:
         raise TypeError(f"a position is named by its number, an integer: plan(5), not plan({number!r})")
     number = int(number)
     if not first <= number < first + scene.positions.count:
-        raise ValueError(f"no position {number}: the scene numbers its positions {first} to "
-                         f"{first + scene.positions.count - 1}")
+        raise SceneError("positions", f"no position {number}: the scene numbers its positions {first} to "
+                                      f"{first + scene.positions.count - 1}")
     # Hand readings of other positions belong to their own plans.
     measured = MappingProxyType({k: v for k, v in scene.measured.items() if k == number})
     only = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(number,)), measured=measured)
@@ -129,7 +130,7 @@ def plan(scene: Scene, number: int) -> PositionPlans:
     if not analysis.plans:
         reason = next((warning.detail for warning in analysis.warnings
                        if int(analysis.positions.numbers[warning.position]) == number), "it is singular")
-        raise ValueError(f"position {number} has no plans: {reason}")
+        raise SceneError("positions", f"position {number} has no plans: {reason}")
     return PositionPlans(analysis, analysis.plans[0])
 
 

@@ -199,6 +199,10 @@ def load(path: str | Path) -> Scene:
     SceneError
         naming the key path and what is wrong, for any problem of the file.
     """
+    if isinstance(path, bytes | bytearray) or (isinstance(path, str) and ("\n" in path or len(path) > 4096)):
+        # TOML text given for a path: its error would quote the whole scene as a file name.
+        raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
+                             "graphplan.load_text(text)")
     path = Path(path)
     try:
         size = path.stat().st_size

@@ -55,7 +55,9 @@ def test_a_position_shows_itself_as_its_plan_sheet(scene, tmp_path):
 
 
 def test_no_such_position(scene):
-    with pytest.raises(ValueError, match="no position 12: the scene numbers its positions 0 to 11"):
+    # A GraphplanError, as the README promises of bad input (a plain ValueError escaped `except GraphplanError`).
+    with pytest.raises(graphplan.GraphplanError, match="^positions: no position 12: the scene numbers its positions "
+                                                      "0 to 11$"):
         scene.plan(12)
 
 

@@ -8,6 +8,11 @@ so that ``B -= B[0]`` changed the motion; misuse passed on to numpy's errors or 
 
 from __future__ import annotations
 
+import dataclasses
+import math
+import re
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -109,3 +114,37 @@ def test_a_plan_is_named_by_numpy_s_integers_too_and_prints_in_a_line():
     five = scene.plan(np.int64(5))
     assert five.number == 5
     assert repr(five) == "<PositionPlans of position 5 of 'Crank-rocker of a ratchet feed'>"
+
+
+def test_a_scene_given_as_text_is_read_by_load_text_and_load_says_so_instead_of_quoting_it_as_a_path():
+    text = Path(RATCHET).read_text(encoding="utf-8")
+    for wrong in (text, text.encode()):
+        with pytest.raises(SceneError) as raised:
+            graphplan.load(wrong)
+        assert str(raised.value) == ("load takes the path of a scene file; for a scene given as TOML text use "
+                                     "graphplan.load_text(text)")
+    from_text, from_file = graphplan.load_text(text), graphplan.load(RATCHET)
+    assert (from_text.title, from_text.driver, from_text.groups) == (from_file.title, from_file.driver, from_file.groups)
+
+
+def test_the_driver_and_a_slides_arrays_cannot_be_written_either():
+    """point() and link() hand out read-only views; motion.driver and slide(n)'s arrays could be written, and the
+    write changed the motion's own data."""
+    motion = graphplan.solve(graphplan.load("fixtures/shaper_six_bar.toml"), driver=[0.1, 0.2])
+    slide = motion.slide(motion.slides[0].slider)
+    for array in (motion.driver, slide.s, slide.velocity, slide.acceleration):
+        with pytest.raises(ValueError, match="read-only"):
+            array[...] = 0.0
+    assert motion.driver.tolist() == [0.1, 0.2]
+
+
+def test_a_coupler_short_of_its_reach_by_a_hair_is_told_with_the_digits_that_show_it():
+    """With the crank pointing away from C, A–C = OC + OA = 0.725 m; BC 0.1 µm short of closing the gap was
+    told "A–C = 0.725 m > AB + BC = 0.725 m"."""
+    scene = graphplan.load(RATCHET)
+    ab, _ = scene.groups[0].lengths
+    short = dataclasses.replace(scene, groups=(dataclasses.replace(scene.groups[0], lengths=(ab, 0.725 - ab - 1e-7)),))
+    with pytest.raises(graphplan.AssemblyError) as raised:
+        graphplan.solve(short, driver=[-math.pi / 2])   # A straight below O, C straight above it
+    far, reach = re.search(r"A–C = ([\d.]+) m > AB \+ BC = ([\d.]+) m", str(raised.value)).groups()
+    assert float(far) == pytest.approx(0.725, abs=1e-12) and float(reach) < float(far)

@@ -245,6 +245,16 @@ def check_lines_cross(context: Context, group: Group, sine: Scalar, what: str) -
     )
 
 
+def told_apart(larger: float, smaller: float) -> tuple[str, str]:
+    """Two lengths written to six significant digits, or as many more as keep them apart: a group that fails to
+    assemble by 1e-7 m was told "A–C = 0.55 m > AB + BC = 0.55 m"."""
+    for digits in range(6, 18):
+        written = f"{larger:.{digits}g}", f"{smaller:.{digits}g}"
+        if written[0] != written[1]:
+            return written
+    return f"{larger!r}", f"{smaller!r}"
+
+
 def _sine(sine: Scalar, index: int) -> str:
     """The sine of the lines' angle where it is not exactly nought (then it says nothing, and -0.0e+00 is noise)."""
     value = abs(float(np.atleast_1d(sine)[index] if np.ndim(sine) else sine))

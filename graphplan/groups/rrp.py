@@ -43,6 +43,7 @@ from .base import (
     nearest_branch,
     read_branch,
     read_guide,
+    told_apart,
 )
 from .sliding import acceleration_on_guide, guide_link, velocity_on_guide
 
@@ -95,10 +96,9 @@ class RRP(Group):
         reach2 = at_toggle(self.length * self.length - height * height, self.length * self.length)
 
         def reason(i: int, at: str) -> AssemblyError:
-            gap = abs(float(np.atleast_1d(height)[i]))
+            gap, length = told_apart(abs(float(np.atleast_1d(height)[i])), self.length)
             a_name, b_name = self.joints
-            return AssemblyError(b_name, at, self.label,
-                                 f"{a_name} is {gap:.6g} m from the guide > {a_name}{b_name} = {self.length:.6g} m")
+            return AssemblyError(b_name, at, self.label, f"{a_name} is {gap} m from the guide > {a_name}{b_name} = {length} m")
 
         if not np.min(reach2) >= 0:
             context.fail_where(np.atleast_1d(~(reach2 >= 0)), reason)

@@ -28,6 +28,7 @@ from .base import (
     check_lines_cross,
     nearest_branch,
     read_branch,
+    told_apart,
 )
 
 # B left of the directed line A→C is the counter-clockwise turn of A→C.
@@ -84,9 +85,11 @@ class RRR(Group):
             if span == 0:
                 why = f"{a_name} and {c_name} coincide, so nothing fixes where {b_name} lies"
             elif span > ab + bc:
-                why = f"{a_name}–{c_name} = {span:.6g} m > {a_name}{b_name} + {b_name}{c_name} = {ab + bc:.6g} m"
+                far, reach = told_apart(span, ab + bc)
+                why = f"{a_name}–{c_name} = {far} m > {a_name}{b_name} + {b_name}{c_name} = {reach} m"
             else:
-                why = f"{a_name}–{c_name} = {span:.6g} m < |{a_name}{b_name} − {b_name}{c_name}| = {abs(ab - bc):.6g} m"
+                reach, near = told_apart(abs(ab - bc), span)
+                why = f"{a_name}–{c_name} = {near} m < |{a_name}{b_name} − {b_name}{c_name}| = {reach} m"
             return AssemblyError(b_name, at, self.label, why)
 
         if not np.min(h2) >= 0:  # NaN fails too
