@@ -52,6 +52,8 @@ class Drawing:
     stem: str
     layers: list[Layer]
     page: tuple[float, float] | None = None
+    # A force sheet's lever μV where it is drawn at another than the plan's enlarged one (on a small sheet).
+    lever_scale: float | None = None
 
 
 def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
@@ -230,7 +232,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
             layers = list(laid_out.layers) if laid_out else _force_sheet_layers(analysis, plan, pieces)
-            found.append(Drawing(f"forces_{plan.number}", layers))
+            found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None))
             rubbing = plan.with_friction
             if "forces" in pieces and rubbing is not None and not rubbing.locked:
                 laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
@@ -438,11 +440,13 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
 
 
 def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-           dynamics: MachineDynamics | None = None, pictures: tuple[str, ...] = ()) -> dict[str, str]:
+           dynamics: MachineDynamics | None = None, pictures: tuple[str, ...] = (),
+           lever_scales: Mapping[str, float] | None = None) -> dict[str, str]:
     """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its sections
     on the machine's ``dynamics``, its rotor's balancing and its vibration when the run has them, and the
-    drawings and plots written beside it that ``pictures`` names), each in Markdown and LaTeX (the note also in
-    HTML).  A scene without a linkage has only the note."""
+    drawings and plots written beside it that ``pictures`` names, each force sheet's lever worked at the μV it is
+    drawn at, ``lever_scales``), each in Markdown and LaTeX (the note also in HTML).  A scene without a linkage has
+    only the note."""
     files: dict[str, str] = {}
     from .report.latex import latex_document, latex_fragment
 
@@ -450,7 +454,7 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
-        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures)
+        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales)
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
         files["note.tex"] = latex_document(files["note.md"], scene.title, locale)
     if analysis is None:
@@ -594,8 +598,11 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
             if told is not None:
                 warn(told)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
+    lever_scales: dict[str, float] = {}
     for drawing in drawings(scene, analysis, pieces, dynamics):
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
+        if drawing.lever_scale is not None:
+            lever_scales[f"{drawing.stem}.svg"] = drawing.lever_scale
     plots = figures(scene, analysis, pieces, dynamics)
     if "accuracy" in pieces and analysis is not None:
         plots.update(accuracy_report(analysis))
@@ -606,7 +613,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
             found.update({f"{name[:-4]}.{kind}": _rendered(svg, kind) for kind in formats if kind in ("png", "pdf")})
     # The note shows the drawings and plots written beside it, each in the section it illustrates.
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
-    found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures)))
+    found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures), lever_scales=lever_scales))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 

@@ -13,6 +13,7 @@ drawings: the caption's μV, and the rays, which must be the velocities at that 
 import dataclasses
 import math
 import re
+from pathlib import Path
 
 import pytest
 from test_sheets import STANDARD, analyses_of, with_drawing
@@ -178,3 +179,31 @@ def test_a_force_sheet_cut_into_parts_all_the_same_keeps_a_larger_lever_on_its_p
         assert expected_scale(position.velocity) - 1e-15 <= drawn[position.number]
     monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity: None)
     assert [panel.name for panel in force_panels(analysis, "A3")] == [panel.name for panel in panels]
+
+
+def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_drawn_at(tmp_path):
+    """On A3 the shaper's lever of position 3 is drawn a step smaller than its enlarged μV (0.005 against 0.004
+    (m/s)/mm) to fit; the note worked pa and the arms at 0.004, so they were not the figure's beside it."""
+    from graphplan.analysis import analyse
+    from graphplan.cli import main
+    from graphplan.scene import loads
+
+    text = (Path(__file__).resolve().parent.parent / "fixtures" / "shaper_six_bar.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^sheet\s*=.*$", 'sheet = "A3"', re.sub(r"(?m)^length_scale\s*=.*$", "length_scale = 0.004",
+                                                                text))
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--locale", "en"]) == 0
+    analysis = analyse(loads(text))
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    pas = [float(value) for value in re.findall(r"Fb = \|Σ\(F·h\)\|/pa = [^/]+/([\d.]+) = ", note)]
+    assert len(pas) == len(analysis.plans)
+    smaller = 0
+    for pa, position in zip(pas, analysis.plans, strict=True):
+        figure = (tmp_path / "out" / f"forces_{position.number}.svg").read_text(encoding="utf-8")
+        drawn_at = float(re.search(r"μV = ([\d.]+) \(m/s\)/mm, forces", figure)[1])
+        velocity = position.velocity
+        assert pa == pytest.approx(abs(velocity.points[velocity.images["A"]]) / drawn_at, abs=0.006)
+        enlarged = force_layout.enlarged_lever_scale(velocity)
+        smaller += enlarged is not None and drawn_at > enlarged
+    assert smaller  # the case in point: a lever drawn smaller than enlarged for the small sheet

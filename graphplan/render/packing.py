@@ -73,6 +73,9 @@ class Panel:
     # False for a drawing to no length scale (a kinematic diagram, a plot of the dynamics): a sheet of such alone
     # leaves its title block's scale box empty.
     to_scale: bool = True
+    # μV of the Zhukovsky's lever on a force sheet as it is drawn here (a small sheet draws it smaller than the
+    # plan's enlarged lever): the note works the lever at this scale.
+    lever_scale: float | None = None
     # True where the parts are a sequence read in its order (the velocity plans of positions 1, 2, 3, … by rows):
     # they are never put tallest or largest first to save a sheet.
     in_order: bool = False

@@ -318,6 +318,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                 lever_scale=next_standard_scale(drawn.lever_drawn_scale) if lever else drawn.lever_scale)
         else:
             break
+    lever = drawn.lever_drawn_scale if drawn.lever is not None else None
+    one, panels = replace(one, lever_scale=lever), [replace(part, lever_scale=lever) for part in panels]
     if drawn.length_scale == length_scale(analysis):
         return one, panels
     return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]

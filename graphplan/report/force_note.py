@@ -30,6 +30,7 @@ class Writer(SectionWriter, Protocol):
 
     analysis: Analysis
     mechanism: Mechanism
+    lever_scales: Mapping[str, float]
 
     def captioned(self, caption: str, table_lines: list[str]) -> None: ...
     def product(self, *factors: str) -> str: ...
@@ -233,7 +234,8 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
     lever = plan.lever
     if lever is not None:
         velocity = plan.velocity
-        drawn_at = enlarged_lever_scale(velocity) or velocity.scale  # as the force sheet draws it
+        # As the force sheet beside the note draws it: a small sheet may draw it smaller than enlarged.
+        drawn_at = note.lever_scales.get(f"forces_{plan.number}.svg") or enlarged_lever_scale(velocity) or velocity.scale
         rows = []
         total = 0.0
         largest = max((abs(term.moment) for term in lever.terms), default=0.0)

@@ -31,7 +31,7 @@ import contextlib
 import itertools
 import math
 import re
-from collections.abc import Collection, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -67,7 +67,7 @@ _ROMAN = {1: "I", 2: "II", 3: "III"}
 
 
 def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None,
-                  figures: Collection[str] = ()) -> str:
+                  figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.deliverables.MachineDynamics`) adds the section on the
@@ -75,9 +75,11 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     with ``[balancing]`` or ``[vibration]`` has a section on its rotor or on its vibration too.  A
     scene without a linkage has no ``analysis``: its note is those sections alone, of ``scene``.
     ``figures`` names the drawings and plots written beside the note (``plan_2.svg``): each stands
-    in the section it illustrates, numbered, its caption under it.
+    in the section it illustrates, numbered, its caption under it; ``lever_scales`` the μV each force sheet's
+    lever is drawn at there where a small sheet draws it at its own (``forces_5.svg``: 0.01).
     """
-    note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures))
+    note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures),
+                 lever_scales=dict(lever_scales or {}))
     note.write()
     return "\n".join(note.lines).rstrip("\n") + "\n"
 
@@ -112,6 +114,8 @@ class _Note:
     scene: Scene | None = None
     figures: frozenset[str] = frozenset()
     figures_shown: int = 0
+    # μV of each force sheet's lever where the figure beside the note draws it at its own (``forces_5.svg``).
+    lever_scales: Mapping[str, float] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if self.analysis is not None:
