@@ -19,6 +19,13 @@ def balancing_symbol(mechanism: Mechanism, text: Mapping[str, str]) -> tuple[str
     return "Fb", text["newton"]
 
 
+def balancing_load(mechanism: Mechanism, text: Mapping[str, str], lower: bool = False) -> str:
+    """The balancing load by its name in ``text``'s locale: the balancing moment of a crank, the force of a slider
+    (a Russian note says «уравновешивающий момент», not the generic «нагрузка»)."""
+    words = text["balancing_moment_words" if mechanism.driver.kind == "crank" else "balancing_force_words"]
+    return words[:1].lower() + words[1:] if lower else words
+
+
 def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float, load: float, *,
                      write: Callable[[float], str], iterations: int, written_efficiency: str) -> str:
     """The balancing load with friction (``load``) after its repetitions, the one without (``ideal``), and η,

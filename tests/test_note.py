@@ -383,7 +383,8 @@ def test_a_scene_without_loads_or_plans_still_gets_its_note():
     no_plans = analyse(dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=()),
                                            measured={}))
     note = note_markdown(no_plans)
-    assert "План скоростей" not in note and "Уравновешивающая нагрузка за цикл" in note
+    # A crank's balancing load is its balancing moment, as a Russian note names it.
+    assert "План скоростей" not in note and "Уравновешивающий момент за цикл" in note
 
 
 def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
@@ -505,3 +506,13 @@ def test_a_link_at_rest_in_its_extreme_position_has_no_sense_of_turning():
 def test_a_working_stroke_slower_than_the_idle_one_gets_no_remark_on_k():
     note = note_of("shaper_six_bar", "en")
     assert re.search(r"K = φw/φi = 1\.\d+\.", note) and "K < 1" not in note
+
+
+@pytest.mark.parametrize(("name", "load", "other"), [("ratchet_crank_rocker", "Уравновешивающий момент Mb", "сила Fb"),
+                                                     ("slider_driven", "Уравновешивающая сила Fb", "момент Mb")])
+def test_a_russian_note_names_the_balancing_load_a_moment_or_a_force_as_the_driver_takes_it(name, load, other):
+    """«Уравновешивающая нагрузка Mb» for a crank read as a generic word where the course says «момент»."""
+    note = note_of(name, "ru")
+    forces = force_report.markdown(analysis_of(name, "ru"))
+    assert load in note and load in forces
+    assert "Уравновешивающая нагрузка" not in note + forces and f"Уравновешивающая {other}" not in note

@@ -147,7 +147,7 @@ def test_the_plot_of_the_balancing_load_closes_the_section_on_it(tmp_path):
     assert main(["run", str(scene), "--out", str(out), "--only", "forces,figures,note", "--locale", "en"]) == 0
     note = (out / "note.md").read_text(encoding="utf-8")
     assert [file for _, file, _ in figures(note)] == ["forces_5.svg", "forces_11.svg", "balancing.svg"]
-    assert heading_above(note, "balancing.svg", 3).endswith("Balancing load over the cycle")
+    assert heading_above(note, "balancing.svg", 3).endswith("Balancing moment over the cycle")
 
 
 def test_a_title_with_a_bracket_and_a_backslash_keeps_its_figure_whole(tmp_path):

@@ -20,6 +20,7 @@ from ..mechanism import Mechanism
 from ..plans import Plan
 from ..render.forces import enlarged_lever_scale
 from ..scales import format_scale
+from ..wording import balancing_load
 from . import forces as force_report
 from .forces import ROUNDING
 from .machine_note import Writer as SectionWriter
@@ -54,9 +55,11 @@ def forces_section(note: Writer, section: int) -> None:
     if note.analysis.equilibrium is not None:
         number += 1
         name, _ = force_report.balancing_symbol(note.analysis)
-        note.heading(3, f"{section}.{number}. {note.t('note_cycle')}")
-        note.captioned(note.t("note_cycle_table", name=name), force_report.cycle_lines(note.analysis, note.mark))
-        note.figure("balancing.svg", note.text["note_cycle"])
+        load = balancing_load(note.mechanism, note.text)
+        note.heading(3, f"{section}.{number}. {note.t('note_cycle', load=load)}")
+        note.captioned(note.t("note_cycle_table", load=load, name=name),
+                       force_report.cycle_lines(note.analysis, note.mark))
+        note.figure("balancing.svg", note.t("note_cycle", load=load))
 
 
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
@@ -269,9 +272,10 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
                          f"{note.n(abs(lever.balancing), 6)} {unit}{note.with_sense(lever.balancing)}")
         else:
             equation += f"; {name} = {note.n(lever.balancing, 6)} {unit}"
-        note.para(note.t("note_lever_result", equation=equation))
+        note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True), equation=equation))
         difference = lever.difference_percent(polygons)
         note.para(note.t("note_lever_difference", name=name, lever=note.n(lever.balancing, 6),
                          polygons=note.enclosed(note.n(polygons, 6)), delta=note.n(difference, 3)))
-    note.captioned(note.t("note_balancing_table", name=name, number=plan.number),
+    note.captioned(note.t("note_balancing_table", load=balancing_load(note.mechanism, text), name=name,
+                          number=plan.number),
                    force_report.balancing_lines(analysis, plan, note.mark))

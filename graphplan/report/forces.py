@@ -314,7 +314,7 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
                          f"{number(equation.value, mark=mark)}" + (f"; {terms}" if terms else ""))
     lines += ["", f"### {text['forces_reactions']}", "",
               _polygon_scales(forces, text, mark), "", *reaction_lines(analysis, plan, mark),
-              "", f"### {text['forces_balancing'].format(name=name, unit=unit)}", "", *balancing_lines(analysis, plan, mark)]
+              "", f"### {text['forces_balancing'].format(load=wording.balancing_load(analysis.mechanism, text), name=name, unit=unit)}", "", *balancing_lines(analysis, plan, mark)]
     if plan.with_friction is not None:
         lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan, mark)]
         lever = friction_lever_lines(analysis, plan, mark)
