@@ -516,3 +516,15 @@ def test_a_russian_note_names_the_balancing_load_a_moment_or_a_force_as_the_driv
     forces = force_report.markdown(analysis_of(name, "ru"))
     assert load in note and load in forces
     assert "Уравновешивающая нагрузка" not in note + forces and f"Уравновешивающая {other}" not in note
+
+
+def test_a_slides_reaction_with_no_couple_is_said_to_pass_through_its_joint():
+    """The shaper's ram 6 and block 3 carry no moment about their joints: the note wrote «R16·x = 0 ⇒ R16·x = 0
+    N·m», which says nothing; the offsets in results.json are nought."""
+    analysis = analysis_of("shaper_six_bar", "en")
+    note = note_of("shaper_six_bar", "en")
+    for position in analysis.plans:
+        offsets = {name: found.offset for name, found in position.forces.reactions.items()}
+        assert offsets["R16"] == pytest.approx(0.0, abs=1e-9)
+    assert "- ΣME(6) = R16·x = 0 ⇒ x = 0: the line of R16 passes through E" in note
+    assert "⇒ R16·x = 0" not in note

@@ -209,7 +209,11 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object]) -> str
             parts.append(f"M({term.name}) = {note.n(term.moment)} {text['newton_metre']}")
     terms = "".join(f" {'−' if term.moment < 0 else '+'} {note.n(abs(term.moment))}" for term in shown)
     sum_text = note.n(total)
-    if couple:
+    if couple and equation.unknown.endswith("·x") and abs(equation.value) <= ROUNDING * max(size, 1.0):
+        # A slide's normal reaction with no couple to carry: it passes through the moment centre, its joint.
+        line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
+                + note.t("note_couple_through", name=equation.unknown[:-2], point=equation.about))
+    elif couple:
         line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
                 f"{equation.unknown} = {note.n(equation.value)} {unit}")
     else:
