@@ -106,3 +106,20 @@ def test_a_page_grows_as_a_block_where_that_leaves_room():
               drawing("diagrams", 200, 312)]
     pages = pack(panels, "A1", "eskd")
     assert len(pages) == 1 and pages[0].growth == "block"
+
+
+def test_a_part_without_a_heading_shares_no_sheet_with_another_drawing():
+    """Position 2's Zhukovsky lever, too big to stand under a heading, stood on a sheet beside position 7's
+    force sheet and under its heading, where it read as position 7's.  It now has a sheet of its own, whose
+    title block names it; another drawing goes neither beside it nor after it."""
+    lever = Panel("forces-2-5", (box("drawing", 120.0, 150.0),), continues="forces-2-4", label="position 2")
+    seven = Panel("forces-7", (box(HEADING_LAYER, 100.0, HEADING_MM, HEADING_MM), box("drawing", 100.0, 60.0)),
+                  label="position 7")
+    eight = Panel("forces-8", (box(HEADING_LAYER, 100.0, HEADING_MM, HEADING_MM), box("drawing", 100.0, 60.0)),
+                  label="position 8")
+    for order in ([lever, seven, eight], [seven, lever, eight]):
+        pages = pack(order, SHEET, FORM)
+        for page in pages:
+            names = [drawing.name for drawing in page.drawings]
+            assert "forces-2-5" not in names or names == ["forces-2-5"], names
+        assert sum(len(page.drawings) for page in pages) == 3

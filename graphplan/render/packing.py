@@ -96,6 +96,16 @@ class Panel:
                        alternatives=tuple(way.without_heading() for way in self.alternatives))
 
 
+def _headless(panel: Panel) -> bool:
+    """Whether ``panel`` is a part that goes on from another with no heading of its own."""
+    return bool(panel.continues) and not any(layer.name == HEADING_LAYER for layer in panel.layers)
+
+
+def _whole_of(panel: Panel) -> str:
+    """The drawing a part is of: ``forces-2`` of ``forces-2-5``; a drawing that is no part, its own name."""
+    return re.sub(r"-\d+$", "", panel.name) if panel.continues else panel.name
+
+
 def smallest_drawings(parts: Sequence[Panel]) -> list[Panel]:
     """``parts`` cut into their smallest drawings: each part's own parts, or the part where it has none."""
     return [piece for part in parts for piece in (part.parts or (part,))]
@@ -126,6 +136,11 @@ class Page:
         height; as a ``row`` the other way round (:data:`GROWTHS`).  False
         when the panel does not fit.
         """
+        # A part too big to stand under its heading says whose it is only by its sheet's title block: beside
+        # another drawing it read as that one's (position 2's lever under "position 7"), so the two never share.
+        others = [drawing for drawing in self.drawings if _whole_of(drawing) != _whole_of(panel)]
+        if others and (_headless(panel) or any(_headless(drawing) for drawing in others)):
+            return False
         if panel.continues and any(placed.name == panel.continues for placed, _, _ in self.placed):
             # Under the heading of the part it goes on from, which it would only repeat as "continued".
             panel = panel.without_heading()
