@@ -552,16 +552,21 @@ def test_a_constant_motor_stronger_than_the_mean_resistance_at_every_speed_is_re
     assert simulate(viscous, ConstantTorque(1000.0)).steady.mean_speed == pytest.approx(150.0, rel=1e-3)
 
 
+def run_motion(tmp_path, scene_text: str) -> dict:
+    """``graphplan run`` of a scene given as text: its results.json's dynamics.motion."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(scene_text, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    return json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+
+
 def test_a_constant_motor_equal_to_the_mean_resistance_is_no_runaway(tmp_path):
     """300 N·m against a mean of exactly 300 N·m (100 for a third of the turn, 400 for the rest), which rounding
     made 300.00000000000006: refused as "exceeds the mean resistance … speeds up without end".  Each turn gives
     back what it takes: started at 100 rpm the machine keeps turning, ω² rising by 2·ΔWmax/J over the third."""
-    scene = tmp_path / "balanced.toml"
-    scene.write_text('[scene]\ntitle = "balanced"\n[dynamics]\nrpm = 100\ndelta = 0.05\n'
+    motion = run_motion(tmp_path, '[scene]\ntitle = "balanced"\n[dynamics]\nrpm = 100\ndelta = 0.05\n'
                      "resisting_torque = [[0, 100], [120, 100], [120, 400], [360, 400]]\n"
-                     'motor = { kind = "constant", torque = 300.0 }\nstart = { rpm = 100 }\n', encoding="utf-8")
-    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
-    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+                     'motor = { kind = "constant", torque = 300.0 }\nstart = { rpm = 100 }\n')
     surplus = 200.0 * (2 * math.pi / 3)
     assert motion["omega_max"] ** 2 - motion["omega_min"] ** 2 == pytest.approx(2 * surplus / motion["flywheel_inertia"],
                                                                                 rel=1e-5)
@@ -573,13 +578,10 @@ def test_a_brake_applied_while_the_motor_drives_gives_the_braked_steady_state(tm
     went on for 1333 s and reported the steady state before the brake (ωm 9.42 against 8.45 rad/s)."""
     from scipy.integrate import solve_ivp
 
-    scene = tmp_path / "braked.toml"
-    scene.write_text('[scene]\ntitle = "braked"\n[dynamics]\nrpm = 100\ndelta = 0.05\n'
+    motion = run_motion(tmp_path, '[scene]\ntitle = "braked"\n[dynamics]\nrpm = 100\ndelta = 0.05\n'
                      "resisting_torque = [[0, 100], [120, 100], [120, 400], [360, 400]]\n"
                      'motor = { kind = "linear", stall_torque = 1200.0, no_load_rpm = 120.0 }\n'
-                     "brake = { torque = 50.0, damping = 5.0, at = 10.0 }\n", encoding="utf-8")
-    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
-    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+                     "brake = { torque = 50.0, damping = 5.0, at = 10.0 }\n")
     # The flywheel by hand: Md = 300 N·m balances the mean resistance; the largest surplus is 200 N·m over 120°.
     omega_m = 100 * math.pi / 30
     inertia = 200.0 * (2 * math.pi / 3) / (omega_m ** 2 * 0.05)
@@ -608,13 +610,10 @@ def test_a_brake_applied_while_the_motor_drives_gives_the_braked_steady_state(tm
 def test_a_brake_is_in_the_notes_equation_of_motion_and_stops_the_machine_when_the_closed_form_does(tmp_path):
     """Motor off and brake on at t = 0: J·dω/dt = −(50 + 30 + 0.5·ω), so ω = (ω0 + 160)·e^(−t/4) − 160 stops at
     t = 4·ln((ω0 + 160)/160).  The note's equation left the brake out."""
-    scene = tmp_path / "braked.toml"
-    scene.write_text('[scene]\ntitle = "run-down"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+    motion = run_motion(tmp_path, '[scene]\ntitle = "run-down"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
                      "resisting_torque = [[0, 50], [360, 50]]\n"
                      'motor = { kind = "constant", torque = 60.0, off_at = 0.0 }\nstart = { rpm = 90 }\n'
-                     "brake = { torque = 30.0, damping = 0.5, at = 0.0 }\n", encoding="utf-8")
-    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
-    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+                     "brake = { torque = 30.0, damping = 0.5, at = 0.0 }\n")
     omega0 = 90 * math.pi / 30
     assert motion["stopped_at"] == pytest.approx(4 * math.log((omega0 + 160) / 160), rel=1e-6)
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
@@ -626,14 +625,11 @@ def test_a_clutch_run_down_goes_on_until_the_machine_stops_and_reports_the_lock(
     """Motor off, the driving half (2 kg·m² at 100 rad/s) clutched to the machine (4 kg·m² at rest, 1 N·m of
     resistance) through 20 N·m: the halves lock when 100 − 10·t = 4.75·t, at 32.203 rad/s, and the six kg·m²
     then stop in 6·32.203 s more.  The run gave up at 122.9 s without a word of the lock or the stop."""
-    scene = tmp_path / "clutch.toml"
-    scene.write_text('[scene]\ntitle = "clutch"\n[dynamics]\nrpm = 300\ninertia = 4.0\n'
+    motion = run_motion(tmp_path, '[scene]\ntitle = "clutch"\n[dynamics]\nrpm = 300\ninertia = 4.0\n'
                      "resisting_torque = [[0, 1], [360, 1]]\n"
                      'motor = { kind = "constant", torque = 10.0, off_at = 0.0 }\n'
                      "clutch = { torque = 20.0, engage_at = 0.0, inertia = 2.0 }\n"
-                     "start = { omega = 0.0, driving_omega = 100.0 }\n", encoding="utf-8")
-    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
-    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+                     "start = { omega = 0.0, driving_omega = 100.0 }\n")
     locked = 100.0 / (10.0 + 19.0 / 4.0)
     speed = 4.75 * locked
     assert motion["clutch_locked_at"] == pytest.approx(locked, rel=1e-6)
