@@ -793,3 +793,22 @@ def test_a_sheet_of_the_kinematic_diagrams_alone_has_no_scale_in_its_title_block
     for sheet in sheets:
         written = [text.text for text in texts([layer(sheet, "title-block")])]
         assert (ratio in written) == (sheet not in alone), (sheet.number, sorted(sheet.panels))
+
+
+def test_a_sheet_of_velocity_or_acceleration_plans_alone_has_no_scale_in_its_title_block(tmp_path):
+    """The plans are drawn at μV and μa: the sheet of every position's velocity plans, or of one acceleration
+    plan that stands apart from its mechanism, said 1:4 (the mechanism's) in its scale box.  A sheet with a
+    mechanism on it still gives its μl."""
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+    scene = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, velocity_plans=tuple(range(1, 13))))
+    analysis = drawings.with_length_scale(with_drawing(analyse(scene), length_scale=None, sheet="A3"))
+    sheets = course_sheets(analysis, "A3")
+    ratio = scale_text(length_scale(analysis), form_of(analysis.scene.locale), "μl = {value} m/mm")
+    plans_alone = [sheet for sheet in sheets
+                   if all(name.startswith("velocity-plans") or name.endswith(("-velocity", "-acceleration"))
+                          for name in sheet.panels)]
+    assert plans_alone
+    for sheet in sheets:
+        written = [text.text for text in texts([layer(sheet, "title-block")])]
+        drawn_to_scale = sheet not in plans_alone and not all(name.startswith("diagrams") for name in sheet.panels)
+        assert (ratio in written) == drawn_to_scale, (sheet.number, sorted(sheet.panels))

@@ -200,10 +200,18 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
         panels.append(velocity_plans_panel(analysis))
     for position in analysis.plans:
         sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
-        row, *others = (split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
-                              text["plan_sheet_title"].format(number=position.number)) for shape in plan_layout.SHAPES)
+        row, *others = (_plans_at_no_length_scale(split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
+                                                        text["plan_sheet_title"].format(number=position.number)))
+                        for shape in plan_layout.SHAPES)
         panels.append(replace(row, alternatives=tuple(others)))
     return panels
+
+
+def _plans_at_no_length_scale(panel: Panel) -> Panel:
+    """A plan sheet whose velocity and acceleration plans, standing apart from its mechanism on a sheet, are
+    drawn at μV and μa, no length scale: a sheet of them alone leaves its scale box empty."""
+    return replace(panel, parts=tuple(part if part.name.endswith("-mechanism") else _to_no_length_scale(part)
+                                      for part in panel.parts))
 
 
 # The grid of the velocity plans of every position is tried in up to this many columns, to fit a sheet's room.
@@ -219,7 +227,14 @@ def velocity_plans_panel(analysis: Analysis) -> Panel:
     first, *others = (replace(split(arrangement, "velocity-plans", label, _row_of(arrangement)), in_order=True)
                       for arrangement in velocity_plans_layout.arrangements(drawing, counts))
     others = [way for way in others if _size(way.layers) != _size(first.layers)]
-    return replace(first, alternatives=tuple(others))
+    # Plans drawn at μV, no length: a sheet of them alone leaves its title block's scale box empty.
+    return _to_no_length_scale(replace(first, alternatives=tuple(others)))
+
+
+def _to_no_length_scale(panel: Panel) -> Panel:
+    """``panel``, its parts and its other ways marked as drawn to no length scale."""
+    return replace(panel, to_scale=False, parts=tuple(_to_no_length_scale(part) for part in panel.parts),
+                   alternatives=tuple(_to_no_length_scale(way) for way in panel.alternatives))
 
 
 def _row_of(arrangement: Arrangement) -> Callable[[str], str]:
