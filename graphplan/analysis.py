@@ -22,6 +22,7 @@ from .joint_friction import FrictionPair, friction_loads, friction_pairs
 from .kinematics import at
 from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
+from .locale import strings
 from .mechanism import Mechanism, build
 from .misreadings import misread
 from .motion import Motion, PositionWarning, solve, toggles_between
@@ -30,6 +31,7 @@ from .positions import PositionSet, make_positions, reach
 from .scales import standard_scale
 from .scene import Scene
 from .statics import Equilibrium, equilibrium, pairs, turned_round
+from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
 PATH_SAMPLES = 360
@@ -200,7 +202,7 @@ def _turned_round(mechanism: Mechanism, ideal: Equilibrium | None,
     driver has to push it through, and η′ ≤ 0 (the efficiency of the flow backwards is not defined)."""
     if with_friction is None:
         return ()
-    name, unit = ("Mb", "N·m") if mechanism.driver.kind == "crank" else ("Fb", "N")
+    name, unit = balancing_symbol(mechanism, strings("en"))  # the warnings are in English
     moving = ~with_friction.locked
     return tuple(PositionWarning(int(index), "reverse-self-locking", (
         f"the loads would drive the mechanism here ({name}0 = {ideal.balancing[index]:.6g} {unit}), but the friction "

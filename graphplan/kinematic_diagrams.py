@@ -300,8 +300,11 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     translating = working.link in mechanism.translating
     for kind, dense, chords, scale in (("velocity", v, v_chord, scales.velocity),
                                        ("acceleration", a, a_chord, scales.acceleration)):
-        _refuse_out_of_reach(kind, working.link, translating, np.concatenate((dense, chords)), scale, field_mm,
-                             numbers[int(np.argmin(np.abs(nodes - along[int(np.argmax(np.abs(dense)))])))])
+        values = np.concatenate((dense, chords))
+        if _drawn_range(values) / scale > OUT_OF_REACH * field_mm:
+            peak_at = along[int(np.argmax(np.abs(dense)))]
+            raise _out_of_reach(kind, working.link, translating, values, scale,
+                                numbers[int(np.argmin(np.abs(nodes - peak_at)))])
     stroke_end = None
     if positions.extremes is not None and math.isclose(positions.extremes[0], start, abs_tol=1e-12):
         stroke_end = (driver.sense * (positions.extremes[1] - start)) % (2.0 * math.pi)
@@ -363,15 +366,15 @@ def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:
 OUT_OF_REACH = 10.0
 
 
-def _refuse_out_of_reach(kind: str, link: int, translating: bool, values: np.ndarray, scale: float, field_mm: float,
-                         nearest: int) -> None:
+def _out_of_reach(kind: str, link: int, translating: bool, values: np.ndarray, scale: float,
+                  nearest: int) -> SceneError:
+    """The refusal of a derivative's diagram :data:`OUT_OF_REACH` times its field tall, its peak near position
+    ``nearest``."""
     tall = _drawn_range(values) / scale
-    if tall <= OUT_OF_REACH * field_mm:
-        return
     peak = float(values[np.argmax(np.abs(values))])
     unit = ("m/s" if translating else "rad/s") + ("²" if kind == "acceleration" else "")
     typical = float(np.median(np.abs(values)))
-    raise SceneError("positions", (
+    return SceneError("positions", (
         f"the {kind} diagram of link {link} cannot be drawn: its {kind} reaches {peak:.6g} {unit} near position "
         f"{nearest}, {abs(peak) / typical:.0f} times its middling size, and even at the shortest pole distance, "
         f"{LEAST_POLE_MM:g} mm, its diagram would be {tall:.4g} mm tall. Keep the driver's run clear of the toggle "

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 from scipy.integrate import RK45
 from scipy.optimize import brentq
@@ -16,6 +18,12 @@ from .shaft import TWO_PI, Machine
 STIFFNESS_THRESHOLD = 3.0
 # The angles over a turn at which the mean resistance and inertia are taken.
 _TURN = np.linspace(0.0, TWO_PI, 64, endpoint=False)
+
+
+def _over_a_turn(function: Callable[[float], float]) -> float:
+    """The mean of ``function`` of the crank angle over a turn, on equal steps (the trapezoidal rule of a periodic
+    function)."""
+    return float(np.mean([function(phi) for phi in _TURN]))
 
 
 def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration: float | None = None) -> float:
@@ -38,7 +46,7 @@ def running_speed(machine: Machine, motor: Motor, start: Start = REST, duration:
         if surplus(top) < 0:
             return float(brentq(surplus, 0.0, top, xtol=1e-12 * top)) if surplus(0.0) > 0 else top
         top *= 2.0
-    inertia = float(np.mean([machine.je(a) for a in _TURN])) + motor.reduced_inertia
+    inertia = _over_a_turn(machine.je) + motor.reduced_inertia
     reached = given + max(surplus(given), 0.0) / inertia * (duration or 1.0)
     return max(reached, 1e-3)
 
@@ -47,10 +55,10 @@ def run_down_time(machine: Machine, inertia: float, speed: float, brake_torque: 
     """How long the machine of reduced inertia Je (mean over a turn) plus ``inertia`` takes to come to rest from
     ``speed`` against its mean resistance at rest and a brake's torque, at that deceleration: (J·ω)/M.  None where
     nothing but the speed holds it back (a damping alone stops it only in the limit)."""
-    holding = float(np.mean([machine.mr(a, 0.0) for a in _TURN])) + brake_torque
+    holding = _over_a_turn(lambda phi: machine.mr(phi, 0.0)) + brake_torque
     if not holding > 0:
         return None
-    total = float(np.mean([machine.je(a) for a in _TURN])) + inertia
+    total = _over_a_turn(machine.je) + inertia
     return total * speed / holding
 
 
@@ -93,7 +101,7 @@ def _mean_surplus(machine: Machine, motor: Motor):
         return lambda omega: motor.shaft_torque(omega) - mean
 
     def surplus(omega: float) -> float:
-        return motor.shaft_torque(omega) - float(np.mean([machine.mr(a, omega) for a in _TURN]))
+        return motor.shaft_torque(omega) - _over_a_turn(lambda phi: machine.mr(phi, omega))
     return surplus
 
 

@@ -294,12 +294,16 @@ def markdown(analysis: Analysis) -> str:
 def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -> list[str]:
     name, unit = balancing_symbol(analysis)
     forces, mark = plan.forces, text["decimal_mark"]
+    balancing = text["forces_balancing"].format(load=wording.balancing_load(analysis.mechanism, text), name=name,
+                                                unit=unit)
     lines = [f"## {text['position_heading'].format(number=plan.number)}", "",
              f"### {text['forces_initial_data']}", "", *initial_data_lines(analysis, plan, mark), ""]
     lines += external_load_lines(analysis, plan, mark)
     # A block's pin reaction along its slot, found from the block's forces before the moments.
-    projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = {number(projection.value, mark=mark)}"
-                   + "".join(f"; {name}: {number(value, mark=mark)} {text['newton']}" for name, value in projection.components)
+    projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = "
+                   f"{number(projection.value, mark=mark)}"
+                   + "".join(f"; {name}: {number(value, mark=mark)} {text['newton']}"
+                             for name, value in projection.components)
                    for group in forces.groups for projection in group.projections]
     if projections:
         lines += ["", f"### {text['forces_projections']}", "", *projections]
@@ -314,7 +318,7 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
                          f"{number(equation.value, mark=mark)}" + (f"; {terms}" if terms else ""))
     lines += ["", f"### {text['forces_reactions']}", "",
               _polygon_scales(forces, text, mark), "", *reaction_lines(analysis, plan, mark),
-              "", f"### {text['forces_balancing'].format(load=wording.balancing_load(analysis.mechanism, text), name=name, unit=unit)}", "", *balancing_lines(analysis, plan, mark)]
+              "", f"### {balancing}", "", *balancing_lines(analysis, plan, mark)]
     if plan.with_friction is not None:
         lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan, mark)]
         lever = friction_lever_lines(analysis, plan, mark)

@@ -54,7 +54,6 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     from matplotlib import pyplot
 
     with matplotlib.rc_context(settings()):
-        mark = text["decimal_mark"]
         below = motion.steady is not None or (motion.stalled_at is not None and resisting is not None)
         run_down = motion.stalled_at is None and motion.stopped_at is not None
         if _moved(motion) and not below:
@@ -62,8 +61,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             figure, run = pyplot.subplots(1, 1, figsize=(7.5, 5.5))
             _speed_over_time(run, motion, text)
             if not run_down:
-                why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
-                    time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
+                why = _why_not_steady(motion, text)
                 run.set_title(f"{run.get_title()}: {why}" if run.get_title() else why, fontsize=10)
         else:
             if _moved(motion):
@@ -78,15 +76,23 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 _stall(turn, motion, text, resisting)
             else:
                 turn.set_axis_off()
-                why = text["motion_no_steady"] if motion.stalled_at is None else text["motion_stalled"].format(
-                    time=number(motion.stalled_at, 4, mark), angle=number(motion.stalled_at_angle_deg, 4, mark))
-                turn.text(0.5, 0.5, textwrap.fill(why, 80), ha="center", va="center", transform=turn.transAxes)
+                turn.text(0.5, 0.5, textwrap.fill(_why_not_steady(motion, text), 80), ha="center", va="center",
+                          transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
         # After the decimal mark: the title quotes the scene's, which is the user's text.
         figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
                         fontsize=11)
         figure.tight_layout()
     return figure
+
+
+def _why_not_steady(motion: MachineMotion, text: Mapping[str, str]) -> str:
+    """Why a run has no steady turn to draw: none reached in the run, or where the machine stalled."""
+    if motion.stalled_at is None:
+        return text["motion_no_steady"]
+    mark = text["decimal_mark"]
+    return text["motion_stalled"].format(time=number(motion.stalled_at, 4, mark),
+                                         angle=number(motion.stalled_at_angle_deg, 4, mark))
 
 
 def _moved(motion: MachineMotion) -> bool:
