@@ -22,6 +22,7 @@ from pylatexenc.latex2text import LatexNodes2Text
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
+from graphplan.locale import strings
 from graphplan.render.primitives import character_width
 from graphplan.report.forces import markdown as forces_markdown
 from graphplan.report.latex import _COLUMN_GAP_PT, _LINE_PT, _layout, latex_document, latex_fragment
@@ -213,14 +214,18 @@ def typeset(tmp_path: Path, name: str, latex: str) -> tuple[str, Path]:
     return log, tmp_path / f"{name}.pdf"
 
 
-def pdf_text(path: Path) -> str:
+def pdf_pages(path: Path) -> list[str]:
     import pypdfium2
 
     document = pypdfium2.PdfDocument(path)
     try:
-        return "".join(page.get_textpage().get_text_range() for page in document)
+        return [page.get_textpage().get_text_range() for page in document]
     finally:
         document.close()
+
+
+def pdf_text(path: Path) -> str:
+    return "".join(pdf_pages(path))
 
 
 @needs_xelatex
@@ -238,6 +243,33 @@ def test_the_note_typesets_with_every_glyph_inside_the_margins(case, tmp_path):
         for number in numbers:
             at = text.find(number, at)
             assert at >= 0, number
+
+
+@needs_xelatex
+def test_a_table_running_onto_another_page_says_whose_continuation_it_is(case, tmp_path):
+    """GOST 2.105 puts «Продолжение таблицы 3» over the header repeated on each page a table runs onto; a reader
+    of page 9 otherwise had a header and numbers with no table to look up."""
+    analysis, _, latex = case
+    text = strings(analysis.scene.locale)
+    _, pdf = typeset(tmp_path, "note", latex)
+    def pattern(template: str) -> re.Pattern:
+        return re.compile(re.escape(template).replace(r"\{number\}", r"(\d+)").replace(r"\ ", r"\s*"))
+
+    continued_line = pattern(text["table_continued"])
+    caption_head = pattern(text["table_caption"].split("{caption}")[0])
+    marks = []   # (page, "caption" or "continued", table number) in reading order
+    for page, page_text in enumerate(pdf_pages(pdf)):
+        for line in page_text.splitlines():
+            if found := continued_line.fullmatch(line.strip()):
+                marks.append((page, "table_continued", int(found[1])))
+            elif found := caption_head.match(line.strip()):
+                marks.append((page, "table_caption", int(found[1])))
+    continued = [mark for mark in marks if mark[1] == "table_continued"]
+    assert continued, "the note has no table long enough to run onto another page"
+    for k, (page, kind, number) in enumerate(marks):
+        if kind == "table_continued":
+            last_caption = next(mark for mark in reversed(marks[:k]) if mark[1] == "table_caption")
+            assert last_caption[2] == number and last_caption[0] < page, (last_caption, (page, number))
 
 
 @needs_xelatex

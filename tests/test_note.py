@@ -134,6 +134,20 @@ def test_the_russian_note_writes_as_the_russian_textbooks_do():
     assert "F = 3n − 2PL − PH = 3×3 − 2×4 − 0 = 1" in chinese  # 机械原理's own notation
 
 
+@pytest.mark.parametrize("locale", LOCALES)
+def test_sections_are_numbered_in_order_with_no_point_after_the_number_in_russian_and_chinese(locale):
+    """GOST 2.105 and GB/T 7713 write «3.1 Положение 5», «3.1 位置 5»; English writes "3.1. Position 5"."""
+    note = note_of("shaper_six_bar", locale)
+    numbered = re.findall(r"^#{2,3} (\d+(?:\.\d+)?)(\.?) \S", note, flags=re.MULTILINE)
+    assert len(numbered) >= 6
+    assert {point for _, point in numbered} == ({"."} if locale == "en" else {""})
+    sections = [int(number) for number, _ in numbered if "." not in number]
+    assert sections == list(range(1, len(sections) + 1))
+    for section in sections:
+        subsections = [int(number.split(".")[1]) for number, _ in numbered if number.startswith(f"{section}.")]
+        assert subsections == list(range(1, len(subsections) + 1))
+
+
 # The numbers.
 
 def value_at(values, index: int) -> float:

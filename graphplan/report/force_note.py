@@ -44,7 +44,7 @@ class Writer(SectionWriter, Protocol):
 
 def forces_section(note: Writer, section: int) -> None:
     """Each plan position's force analysis, then the balancing load over the cycle where the scene asks for it."""
-    note.heading(2, f"{section}. {note.t('note_forces')}")
+    note.heading(2, note.t("note_forces"), section)
     note.para(note.t("note_forces_intro", gravity=note.n(note.analysis.scene.gravity)))
     number = 0
     for plan in note.analysis.plans:
@@ -56,7 +56,7 @@ def forces_section(note: Writer, section: int) -> None:
         number += 1
         name, _ = force_report.balancing_symbol(note.analysis)
         load = balancing_load(note.mechanism, note.text)
-        note.heading(3, f"{section}.{number}. {note.t('note_cycle', load=load)}")
+        note.heading(3, note.t("note_cycle", load=load), f"{section}.{number}")
         note.captioned(note.t("note_cycle_table", load=load, name=name),
                        force_report.cycle_lines(note.analysis, note.mark))
         note.figure("balancing.svg", note.t("note_cycle", load=load))
@@ -64,7 +64,7 @@ def forces_section(note: Writer, section: int) -> None:
 
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
     text, analysis = note.text, note.analysis
-    note.heading(3, f"{section}. {note.t('position_heading', number=plan.number)}")
+    note.heading(3, note.t("position_heading", number=plan.number), section)
     note.para(note.text["note_loads_formulas"])
     note.captioned(note.t("note_loads_table", number=plan.number),
                    force_report.initial_data_lines(analysis, plan, note.mark))

@@ -9,7 +9,8 @@ tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
   unbroken by a page (``\notefigure``: the drawing's name in a frame until
   ``--format pdf`` has written the PDFs);
 - a table as a longtable with booktabs rules, its header repeated on every
-  page it runs onto, and the paragraph right before it (the note's
+  page it runs onto under the locale's "continued" line (GOST 2.105's
+  «Продолжение таблицы 3»), and the paragraph right before it (the note's
   "Table 3. ...") as its caption, so that a page break never parts them;
   a wide table set smaller, and its columns still too wide for the line
   wrapped (:func:`_layout`);
@@ -31,11 +32,14 @@ comment at its head names what the including document needs.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 from markdown_it.tree import SyntaxTreeNode
 
+from ..locale import strings
 from ..render.primitives import FONT_SIZE_PER_CAP, em_width, has_wide
 from ..render.wrapping import fitted
 from .markdown import picture_source, plain, table_parts, tree
@@ -112,17 +116,24 @@ def latex_document(markdown_text: str, title: str, locale: str) -> str:
     preamble = _PREAMBLE % {"font": _CJK_FONT if cjk else _FONT, "locale": language}
     return (f"% {' '.join(title.split())}: typeset with xelatex, twice (longtable settles its columns' widths on the second)\n"
             f"{preamble}"
-            f"\\begin{{document}}\n{_body(markdown_text, titled=True)}\\end{{document}}\n")
+            f"\\begin{{document}}\n{_body(markdown_text, locale, titled=True)}\\end{{document}}\n")
 
 
 def latex_fragment(markdown_text: str, locale: str) -> str:
     """The body of ``markdown_text`` (the error tables, the force analysis) for ``\\input``, with no preamble."""
     font = _CJK_FONT if _has_cjk(markdown_text, locale) else _FONT
-    return _FRAGMENT_HEAD.replace("FONT", font) + _body(markdown_text, titled=False)
+    return _FRAGMENT_HEAD.replace("FONT", font) + _body(markdown_text, locale, titled=False)
 
 
-def _body(markdown_text: str, titled: bool) -> str:
-    return _Writer(titled).blocks(tree(markdown_text).children).lstrip("\n")
+def _body(markdown_text: str, locale: str, titled: bool) -> str:
+    return _Writer(titled, strings(locale)).blocks(tree(markdown_text).children).lstrip("\n")
+
+
+def _table_number(caption: str, text: Mapping[str, str]) -> str | None:
+    """The number of a table whose caption is written the locale's way ("Таблица 3 — ..."), else None."""
+    pattern = re.escape(text["table_caption"]).replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
+    found = re.fullmatch(pattern, caption.strip(), flags=re.DOTALL)
+    return found.group(1) if found else None
 
 
 def _escape(text: str) -> str:
@@ -198,8 +209,9 @@ class _Writer:
     ``titled``: the first heading is the document's title (the note), not a section (a fragment).
     """
 
-    def __init__(self, titled: bool) -> None:
+    def __init__(self, titled: bool, text: Mapping[str, str]) -> None:
         self.titled = titled
+        self.text = text
 
     def blocks(self, nodes) -> str:
         """The blocks in order, a paragraph right before a table taken into the table as its caption, one right
@@ -217,8 +229,9 @@ class _Writer:
                 continue
             if node.type == "table":
                 before = nodes[k - 1] if k else None
-                caption = self.inline(before.children) if before is not None and before.type == "paragraph" else None
-                parts.append(self.table(node, caption))
+                captioned = before is not None and before.type == "paragraph"
+                number = _table_number(plain(before), self.text) if captioned else None
+                parts.append(self.table(node, self.inline(before.children) if captioned else None, number))
             else:
                 parts.append(self.block(node))
         return "".join(parts)
@@ -280,7 +293,8 @@ class _Writer:
                 parts.append(self.inline(node.children))
         return "".join(parts)
 
-    def table(self, node: SyntaxTreeNode, caption: str | None) -> str:
+    def table(self, node: SyntaxTreeNode, caption: str | None, number: str | None = None) -> str:
+        """``number``: the table's, for the line over its header on the pages it runs onto."""
         parts = table_parts(node)
         header = [plain(cell) for cell in parts.header]
         rows = [[plain(cell) for cell in row] for row in parts.rows]
@@ -297,7 +311,9 @@ class _Writer:
             head = ["\\toprule", " & ".join(cells) + " \\\\", "\\midrule"]
         # A foot on every page as tall as the last one: longtable keeps room for it, so the last rows never
         # leave the bottom rule to a page of its own under a repeated header.
-        lines += [*head, "\\endfirsthead", *head, "\\endhead", "\\bottomrule", "\\endfoot", "\\bottomrule",
+        continued = [] if number is None else [
+            f"\\multicolumn{{{len(layout.sides)}}}{{@{{}}l@{{}}}}{{{_text(self.text['table_continued'].format(number=number))}}}\\\\"]
+        lines += [*head, "\\endfirsthead", *continued, *head, "\\endhead", "\\bottomrule", "\\endfoot", "\\bottomrule",
                   "\\endlastfoot"]
         lines += [" & ".join(self.inline(cell.children) for cell in row) + " \\\\" for row in parts.rows]
         size = f"\\{layout.size}\\setlength{{\\tabcolsep}}{{{_COLUMN_GAP_PT:g}pt}}"

@@ -35,7 +35,7 @@ class Writer(Protocol):
 
     def t(self, key: str, **values: object) -> str: ...
     def n(self, value: float, digits: int = 5) -> str: ...
-    def heading(self, level: int, title: str) -> None: ...
+    def heading(self, level: int, title: str, number: object = None) -> None: ...
     def para(self, *lines: str) -> None: ...
     def figure(self, file: str, caption: str) -> None: ...
     def table(self, caption: str | None, header: list[str], rows: list[list[str]], align: str | None = None) -> None: ...
@@ -47,7 +47,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     turning = model.turning
     # The texts of a run once over a swing or a travel, not over a cycle, say so.
     run = "" if model.cyclic else "_swing" if turning else "_travel"
-    note.heading(2, f"{section}. {note.t('note_dynamics')}")
+    note.heading(2, note.t("note_dynamics"), section)
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         note.para(note.t("note_dyn_model_diagrams", count=len(model.coordinate),
                          inertia=note.n(model.mean_inertia)))
@@ -187,7 +187,7 @@ def _run_down(note: Writer, dynamics) -> None:
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:
     """The rotor's masses, their products carried to the correction planes, each plane's polygon closed."""
     spec = result.spec
-    note.heading(2, f"{section}. {note.t('note_balancing')}")
+    note.heading(2, note.t("note_balancing"), section)
     rows = [[mass.name, note.n(mass.mass),
              note.n(mass.radius), note.n(mass.angle_deg, 4), note.n(mass.plane), note.n(abs(mass.unbalance))]
             for mass in spec.masses]
@@ -292,7 +292,7 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
 
     Each operand is written to as many digits as make the written operands give the written result
     (:func:`shown_operand`); a value used in several equations is written one way in all of them."""
-    note.heading(2, f"{section}. {note.t('note_vibration')}")
+    note.heading(2, note.t("note_vibration"), section)
     mass, unbalance = note.n(spec.mass), note.n(spec.unbalance)
     m = read_number(note, mass)
     natural = note.n(response.natural_frequency)

@@ -157,7 +157,10 @@ class _Note:
     def para(self, *lines: str) -> None:
         self.lines += [*lines, ""]
 
-    def heading(self, level: int, title: str) -> None:
+    def heading(self, level: int, title: str, number: object = None) -> None:
+        """``number`` the section's ("3.1"), written the locale's way: GOST 2.105 and GB/T 7713 put no point after it."""
+        if number is not None:
+            title = self.t("heading_numbered", number=number, title=title)
         self.lines += ["#" * level + " " + title, ""]
 
     def table(self, caption: str | None, header: Sequence[str], rows: Sequence[Sequence[str]],
@@ -217,7 +220,7 @@ class _Note:
         diagrams = self.t("kd_title", link=working.link, point="") if working is not None else None
         if plans or self.analysis.velocity_plans:
             section += 1
-            self.heading(2, f"{section}. {self.t('note_kinematics')}")
+            self.heading(2, self.t("note_kinematics"), section)
             if plans:
                 self.para(self.t("note_kinematics_intro", positions=", ".join(str(p.number) for p in plans)))
             for number, plan in enumerate(plans, 1):
@@ -225,7 +228,7 @@ class _Note:
             subsection = len(plans)
             if self.analysis.velocity_plans:
                 subsection += 1
-                self.heading(3, f"{section}.{subsection}. {self.t('velocity_plans_heading')}")
+                self.heading(3, self.t("velocity_plans_heading"), f"{section}.{subsection}")
                 self.para(velocity_plans_intro(self.analysis, self.mark))
                 self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
                 for position in measured_velocity_plans(self.analysis):
@@ -235,7 +238,7 @@ class _Note:
                 self.figure("velocity_plans.svg", self.text["velocity_plans_heading"])
             if diagrams is not None and "diagrams.svg" in self.figures:
                 subsection += 1
-                self.heading(3, f"{section}.{subsection}. {diagrams}")
+                self.heading(3, diagrams, f"{section}.{subsection}")
                 self.figure("diagrams.svg", diagrams)
         elif diagrams is not None:   # no plans: the diagrams follow the plan of positions they are read off
             self.figure("diagrams.svg", diagrams)
@@ -250,7 +253,7 @@ class _Note:
     def structure(self, section: int) -> None:
         mechanism = self.mechanism
         n, p5, w = mechanism.degrees_of_freedom
-        self.heading(2, f"{section}. {self.t('note_structure')}")
+        self.heading(2, self.t("note_structure"), section)
         self.para(self.t("note_links_and_pairs", n=n, p5=p5, p4=0))
         formula = self.t("dof_formula")
         numbers = f"3{self.text['times']}{n} − 2{self.text['times']}{p5} − 0 = {w}"
@@ -277,7 +280,7 @@ class _Note:
 
     def initial_data(self, section: int) -> None:
         scene, driver = self.analysis.scene, self.mechanism.driver
-        self.heading(2, f"{section}. {self.t('note_initial_data')}")
+        self.heading(2, self.t("note_initial_data"), section)
         rows = [[label, f"{self.n(value)} {self.text['unit_m']}"] for label, value in self.lengths()]
         rows.extend(self.frame_rows())
         if driver.kind == "crank":
@@ -375,7 +378,7 @@ class _Note:
         stroke = ""
         if positions.strokes is not None:
             stroke = self.text["comma"] + self.text[f"{positions.strokes[plan.index]}_stroke"]
-        self.heading(3, f"{section}. {self.t('position_heading', number=plan.number)}{self.text['colon']}{where}{stroke}")
+        self.heading(3, f"{self.t('position_heading', number=plan.number)}{self.text['colon']}{where}{stroke}", section)
         self.plan_section(plan, plan.velocity)
         self.plan_section(plan, plan.acceleration)
         for kind in ("velocity", "acceleration"):
@@ -894,7 +897,7 @@ class _Note:
 
     def errors(self, section: int) -> None:
         precision = self.n(self.analysis.scene.drawing.drafting_precision)
-        self.heading(2, f"{section}. {self.t('note_errors')}")
+        self.heading(2, self.t("note_errors"), section)
         intro = self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision)
         self.para(f"{intro} {self.text['errors_forces']}" if has_reactions(self.analysis) else intro)
         for plan in self.analysis.plans:
