@@ -23,6 +23,7 @@ from .kinematics import at
 from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
+from .locking import LockedSpan, locked_between
 from .mechanism import Mechanism, build
 from .misreadings import misread
 from .motion import Motion, PositionWarning, solve, toggles_between
@@ -91,6 +92,8 @@ class Analysis:
     with_friction: Equilibrium | None = None
     friction: tuple[FrictionPair, ...] = ()
     velocity_plans: tuple[VelocityPosition, ...] = ()
+    # Where the friction locks the mechanism between two analysed positions that move.
+    locked_spans: tuple[LockedSpan, ...] = ()
 
     @property
     def drawn_velocities(self) -> tuple[VelocityPosition, ...]:
@@ -174,16 +177,18 @@ def analyse(scene: Scene) -> Analysis:
             balance = equilibrium(mechanism, motion, loads)
             if friction:
                 with_friction = equilibrium(mechanism, motion, loads, friction)
+    locked_spans = locked_between(mechanism, positions, friction, sweep, paths) if friction else ()
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(scene, (*plans, *every))
     in_order = tuple(sorted(motion.warnings + stepped_over + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions)
-                            + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction),
+                            + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction)
+                            + _locked_between(mechanism, positions, locked_spans),
                             key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
-                    loads, balance, with_friction, friction, every)
+                    loads, balance, with_friction, friction, every, locked_spans)
 
 
 def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:
@@ -194,6 +199,18 @@ def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, .
     return tuple(PositionWarning(int(index), "self-locking", "the friction in the pairs locks the mechanism here: "
                                  "no driving load, however large, moves it")
                  for index in np.flatnonzero(with_friction.locked))
+
+
+def _locked_between(mechanism: Mechanism, positions: PositionSet,
+                    spans: tuple[LockedSpan, ...]) -> tuple[PositionWarning, ...]:
+    """A warning at the position before each stretch where the friction locks the mechanism between two positions
+    that move: their plans and force polygons do not show it."""
+    numbers, driver = positions.numbers, mechanism.driver
+    return tuple(PositionWarning(span.after, "self-locking-between", (
+        f"between positions {numbers[span.after]} and {numbers[(span.after + 1) % len(numbers)]} the friction in "
+        f"the pairs locks the mechanism, from {driver.describe(span.start)} to {driver.describe(span.end)}: no "
+        "driving load, however large, moves it there, though it moves at both positions"))
+        for span in spans)
 
 
 def _turned_round(mechanism: Mechanism, ideal: Equilibrium | None,

@@ -47,7 +47,7 @@ from numpy.typing import ArrayLike
 from scipy.integrate import cumulative_trapezoid, trapezoid
 
 from .kinematics import dot, norm2
-from .loads import State, activity, link_loads, motion_state, plan_state, power
+from .loads import State, activity, activity_at, link_loads, motion_state, plan_state, power
 from .mechanism import Mechanism, build
 from .motion import Motion, solve
 from .positions import PositionSet, make_positions
@@ -284,7 +284,7 @@ def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
             sweep = sweep[::-1]
     sweep = _with_switches(mechanism, positions, sweep)
     motion = solve(mechanism, sweep, positions.reference)
-    acting = _acting_at(mechanism, positions, sweep)
+    acting = activity_at(mechanism, positions, sweep)
     reductions = plan_reductions(analysis) if analysis is not None else ()
     return equivalent_model(mechanism, motion, acting, constant=constant, plans=reductions)
 
@@ -502,7 +502,7 @@ def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarr
     load changes all along its window: only where it starts and stops acting is a switch)."""
     if not mechanism.scene.loads:
         return sweep
-    acting = _acting_at(mechanism, positions, sweep) > 0
+    acting = activity_at(mechanism, positions, sweep) > 0
     rows, steps = np.nonzero(acting[:, :-1] != acting[:, 1:])
     if len(rows) == 0:
         return sweep
@@ -513,27 +513,13 @@ def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarr
         if np.all(np.abs(high - low) <= tolerance):
             break
         middle = 0.5 * (low + high)
-        state = _acting_at(mechanism, positions, middle)[rows, np.arange(len(rows))] > 0
+        state = activity_at(mechanism, positions, middle)[rows, np.arange(len(rows))] > 0
         same = state == before
         low = np.where(same, middle, low)
         high = np.where(same, high, middle)
     # A side that falls on a sample is that sample (the same position, the same loads): kept once.
     found = np.unique(np.concatenate([sweep, low, high]))
     return found if sweep[-1] > sweep[0] else found[::-1]
-
-
-def _acting_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray) -> np.ndarray:
-    """:func:`graphplan.loads.activity` at driver coordinates ``values``, read the same wherever they lie.
-
-    A window of the working stroke is measured by the working link's angle, which ``activity``
-    unwraps about the first position of the motion it is given; that position is here always
-    the start of the working stroke, so that a few positions far from it (a bisection's) are
-    measured as the cycle's own are.
-    """
-    if positions.extremes is None:
-        return activity(mechanism, positions, solve(mechanism, values, positions.reference))
-    padded = np.concatenate([[positions.extremes[0]], values])
-    return activity(mechanism, positions, solve(mechanism, padded, positions.reference))[:, 1:]
 
 
 def _full(value, count: int) -> np.ndarray:

@@ -147,6 +147,22 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
     return acting
 
 
+def activity_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray, *,
+                tolerant: bool = False) -> np.ndarray:
+    """:func:`activity` at driver coordinates ``values``, read the same wherever they lie (``tolerant``: a
+    singular one among them is not refused; its loads act as a working link at rest there decides).
+
+    A window of the working stroke is measured by the working link's angle, which ``activity``
+    unwraps about the first position of the motion it is given; that position is here always
+    the start of the working stroke, so that a few positions far from it (a bisection's) are
+    measured as the cycle's own are.
+    """
+    if positions.extremes is None:
+        return activity(mechanism, positions, solve(mechanism, values, positions.reference, tolerant=tolerant))
+    padded = np.concatenate([[positions.extremes[0]], values])
+    return activity(mechanism, positions, solve(mechanism, padded, positions.reference, tolerant=tolerant))[:, 1:]
+
+
 def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
     """The share of the working stroke the working link has travelled at each position (0 at its start)."""
     assert positions.extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"

@@ -6,6 +6,7 @@ decimal mark, a drawing four digits that the SVG writer localises.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 
 from .mechanism import Mechanism
@@ -24,6 +25,23 @@ def balancing_load(mechanism: Mechanism, text: Mapping[str, str], lower: bool = 
     (a Russian note says «уравновешивающий момент», not the generic «нагрузка»)."""
     words = text["balancing_moment_words" if mechanism.driver.kind == "crank" else "balancing_force_words"]
     return words[:1].lower() + words[1:] if lower else words
+
+
+def driver_at(mechanism: Mechanism, text: Mapping[str, str], value: float, write: Callable[[float], str]) -> str:
+    """Where the driver is, its coordinate written by ``write``: "φ = 325.05°" for a crank, "s = 0.12 m" for a
+    slider."""
+    if mechanism.driver.kind == "crank":
+        return f"φ = {write(math.degrees(value) % 360.0)}°"
+    return f"s = {write(value)} {text['unit_m']}"
+
+
+def locked_between(mechanism: Mechanism, text: Mapping[str, str], numbers, span,
+                   write: Callable[[float], str]) -> str:
+    """The sentence on a stretch between two positions where the friction locks the mechanism
+    (:class:`graphplan.locking.LockedSpan`)."""
+    return text["forces_locked_between"].format(
+        after=numbers[span.after], next=numbers[(span.after + 1) % len(numbers)],
+        start=driver_at(mechanism, text, span.start, write), end=driver_at(mechanism, text, span.end, write))
 
 
 def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float, load: float, *,

@@ -15,6 +15,7 @@ efficiency: 1 without friction, below 1 with it wherever the driver delivers pow
 from __future__ import annotations
 
 import dataclasses
+import json
 from pathlib import Path
 
 import numpy as np
@@ -274,6 +275,40 @@ def test_each_position_the_friction_locks_is_warned_of():
     assert warned == locked
     assert not [w for w in analyse(slider_crank("")).warnings if w.code == "self-locking"]
 
+    # Where it locks at positions, the stretches round them are theirs: none is told again as between positions.
+    assert not analysis.locked_spans and not [w for w in analysis.warnings if w.code == "self-locking-between"]
+
+
+def test_a_lock_between_two_positions_that_move_is_found_where_the_closed_form_puts_it(tmp_path):
+    """f = 3.9 in the guide locks the slider-crank only while f·tan β > 1 about φ = 270°, 13° in all: positions
+    18 and 19, 7.5° either side, both move, and the lock went unreported (found by a teacher's own sweep)."""
+    from graphplan.cli import main
+    from graphplan.report import forces as force_report
+
+    f = 3.9
+    text = slider_crank_text(f'[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = {f}')
+    analysis = analyse(scene_from_text(text))
+    assert not analysis.with_friction.locked.any()
+    # The closed form: cos β − f·|sin β| = 0 where tan β = 1/f, sin φ = (l/r)·sin β, the piston moving forward.
+    edge = np.degrees(np.arcsin(ROD / RADIUS * np.sin(np.arctan(1.0 / f))))   # 83.46°: φ from 180° + edge
+    low, high = 180.0 + edge, 360.0 - edge
+    (span,) = analysis.locked_spans
+    assert np.degrees([span.start, span.end]) % 360.0 == pytest.approx([low, high], abs=1e-3)
+    numbers = analysis.positions.numbers
+    assert (numbers[span.after], numbers[span.after + 1]) == (18, 19)
+    (warning,) = [w for w in analysis.warnings if w.code == "self-locking-between"]
+    assert warning.position == span.after and "between positions 18 and 19" in warning.detail
+    assert f"from φ = {low:.6g}° to φ = {high:.6g}°" in warning.detail
+    sentence = f"Between positions 18 and 19, from φ = {low:.5g}° to φ = {high:.5g}°"
+    assert sentence in force_report.markdown(analysis)
+    scene = tmp_path / "locks.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "forces"]) == 0
+    written = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert [(w["position"], w["code"]) for w in written["warnings"] if w["code"].startswith("self-locking")] == \
+        [(18, "self-locking-between")]
+    # A smaller friction never locks: f·tan β stays below 1 all the cycle.
+    assert not analyse(slider_crank('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 3.5')).locked_spans
 
 LARGE_JOURNALS = """
 [scene]

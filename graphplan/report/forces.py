@@ -277,6 +277,14 @@ def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:
     return lines
 
 
+def locked_between_lines(analysis: Analysis, mark: str = ".") -> list[str]:
+    """A paragraph for each stretch between two positions where the friction locks the mechanism."""
+    text = strings(analysis.scene.locale)
+    numbers = analysis.positions.numbers
+    return [wording.locked_between(analysis.mechanism, text, numbers, span, lambda value: number(value, 5, mark))
+            for span in analysis.locked_spans]
+
+
 def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
     mark = text["decimal_mark"]
@@ -288,6 +296,7 @@ def markdown(analysis: Analysis) -> str:
             lines += _position(analysis, plan, text)
     if analysis.equilibrium is not None:
         lines += [f"## {text['forces_cycle']}", "", text["forces_cycle_intro"], "", *cycle_lines(analysis, mark), ""]
+        lines += [line for sentence in locked_between_lines(analysis, mark) for line in (sentence, "")]
     return "\n".join(lines) + "\n"
 
 
