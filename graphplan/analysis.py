@@ -128,11 +128,19 @@ def _rocker_hint(mechanism: Mechanism) -> Iterator[None]:
                             f"{error.reason}; {_reach_advice(driver.link, ranges, driver.cyclic)}") from error
 
 
+def _inward(end: float, rounding) -> str:
+    """An end of the reach in degrees to two places, rounded towards the inside (``math.ceil`` at a lower end)
+    past the bisection's last digits, which would make -60° -59.99°."""
+    return f"{rounding(round(math.degrees(end) * 100.0, 4)) / 100.0:.2f}"
+
+
 def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool) -> str:
     """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try."""
     if not ranges:
         return f"the mechanism assembles at no angle of link {link}: check the lengths"
-    spans = " and ".join(f"from {math.degrees(low):.1f}° to {math.degrees(high):.1f}°" for low, high in ranges)
+    # Rounded inward: a swing to an end as written is then inside the reach (70.49° of a reach to 70.4907° was
+    # written 70.5° and refused).
+    spans = " and ".join(f"from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°" for low, high in ranges)
     told = f"link {link} reaches only {spans} (at each end two links stand in line)"
     if not cyclic:
         return f"{told}: keep driver.swing within one of these"

@@ -92,6 +92,14 @@ def test_the_plan_positions_are_tabulated_with_their_reduced_inertia(english):
         assert value(row[5]) == pytest.approx(plan["reduced_moment"], rel=1e-4)
 
 
+def test_the_reduction_is_written_with_the_driving_link_s_own_speed(english):
+    """The ratchet's crank is link 2: Je = Σ[m·(vS/ω2)² + ...], not the ω1 of the textbook's numbering."""
+    note, results = english
+    text = section(note, "Dynamics of the machine")
+    assert results["dynamics"]["driver_link"] == 2
+    assert "Je = Σ[m·(vS/ω2)² + JS·(ω/ω2)²]" in text and "Me = Σ[F·v·cos α ± M·ω]/ω2" in text and "ω1" not in text
+
+
 def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_path):
     note, _ = run(tmp_path / "ru", DYNAMICS, locale="ru")
     text = section(note, "Динамический анализ машины")

@@ -94,6 +94,20 @@ def test_plans_and_force_polygons_agree_with_the_analytic_solution_and_the_stati
         assert plan.lever.balancing == pytest.approx(plan.forces.balancing, rel=1e-9)
 
 
+@pytest.mark.parametrize("locale, word, crank", [("en", "rocker", "crank"), ("ru", "коромысло", "кривошип"),
+                                                  ("zh", "摇杆", "曲柄")])
+def test_the_note_names_a_swinging_driver_a_rocker(locale, word, crank):
+    """A hand lever over 45° was a «кривошип» (曲柄) in the structure table (a Chinese student's reading)."""
+    import dataclasses
+
+    from graphplan.report.note import note_markdown
+
+    scene = dataclasses.replace(graphplan.load(FIXTURE), locale=locale)
+    note = note_markdown(analyse(scene))
+    driver_row = next(line for line in note.splitlines() if line.startswith("| I(1,2) |"))
+    assert driver_row.split("|")[-2].strip() == word and crank not in driver_row
+
+
 def test_the_command_line_writes_the_run_with_the_driver_s_angles_over_the_swing(tmp_path):
     out = tmp_path / "out"
     assert main(["run", FIXTURE, "--out", str(out)]) == 0
@@ -186,7 +200,7 @@ def test_the_advice_gives_the_reach_and_a_swing_that_runs(text):
         analyse(loads(changed(text, r"^swing .*$", "")))
     message = str(raised.value)
     for low, high in lever_reach_by_hand():
-        assert f"from {low:.1f}° to {high:.1f}°" in message
+        assert f"from {math.ceil(low * 100) / 100:.2f}° to {math.floor(high * 100) / 100:.2f}°" in message
     suggested = re.search(r"driver\.swing = \[(\d+), (\d+)\]", message)
     assert suggested, message
     first, last = int(suggested[1]), int(suggested[2])
@@ -196,11 +210,17 @@ def test_the_advice_gives_the_reach_and_a_swing_that_runs(text):
     assert math.degrees(ran.positions.values[-1]) == pytest.approx(last)
 
 
-def test_a_swing_beyond_the_reach_is_told_the_reach(text):
+def test_a_swing_beyond_the_reach_is_told_the_reach_and_a_swing_to_its_end_as_told_runs(text):
+    """The reach was written to a tenth rounded to nearest: 70.5° for 70.486°, and a swing to 70.49° was
+    refused by the message that allowed it (a user's try)."""
     with pytest.raises(AssemblyError) as raised:
         analyse(loads(changed(text, r"^swing .*$", "swing = [20.0, 80.0]")))
-    assert "reaches only from 13.1° to 70.5°" in str(raised.value)
+    (low, high), _ = lever_reach_by_hand()
+    told = re.search(r"reaches only from ([\d.]+)° to ([\d.]+)°", str(raised.value))
+    assert low <= float(told[1]) < low + 0.01 and high - 0.01 < float(told[2]) <= high
     assert "keep driver.swing within" in str(raised.value)
+    ran = analyse(loads(changed(text, r"^swing .*$", f"swing = [20.0, {told[2]}]")))
+    assert math.degrees(ran.positions.values[-1]) == pytest.approx(float(told[2]))
 
 
 def test_a_mechanism_that_assembles_nowhere_is_told_to_check_its_lengths(text):

@@ -45,6 +45,7 @@ from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, St
 from ..render.drawings import length_scale
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
+from ..wording import driver_at
 from . import forces as force_report
 from .force_note import forces_section
 from .machine_note import balancing_section, dynamics_section, vibration_section
@@ -259,8 +260,10 @@ class _Note:
         numbers = f"3{self.text['times']}{n} − 2{self.text['times']}{p5} − 0 = {w}"
         self.para(self.t("note_dof", formula=f"{formula} = {numbers}"))
         driver = mechanism.driver
+        # A crank that swings (a hand lever) is a rocker, as the textbooks name a link that does not turn round.
+        kind = "rocker" if driver.kind == "crank" and not driver.cyclic else driver.kind
         rows = [[f"I({self.frame},{driver.link})", self.t("note_group_driver"), f"{self.frame}, {driver.link}",
-                 ", ".join(driver.known_joints() + driver.new_joints()), self.t(f"driver_{driver.kind}")]]
+                 ", ".join(driver.known_joints() + driver.new_joints()), self.t(f"driver_{kind}")]]
         for group in mechanism.groups:
             rows.append([group.label, self.t("note_class_order", klass=_ROMAN[group.klass], order=group.order),
                          ", ".join(str(link) for link in group.links), ", ".join(group.joints),
@@ -371,10 +374,9 @@ class _Note:
     # Kinematics of one position.
 
     def kinematics(self, section: str, plan: PlanPosition) -> None:
-        positions, driver = self.analysis.positions, self.mechanism.driver
+        positions = self.analysis.positions
         value = float(positions.values[plan.index])
-        where = (f"φ = {self.n(math.degrees(value) % 360.0)}°" if driver.kind == "crank"
-                 else f"s = {self.n(value)} {self.text['unit_m']}")
+        where = driver_at(self.mechanism, self.text, value, self.n)
         stroke = ""
         if positions.strokes is not None:
             stroke = self.text["comma"] + self.text[f"{positions.strokes[plan.index]}_stroke"]
