@@ -106,12 +106,17 @@ ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw",
            "anti-clockwise": "ccw",
            # A Russian student's words for the plans measured by hand.
            "скорость": "velocity", "скорости": "velocity", "ускорение": "acceleration", "ускорения": "acceleration",
-           "силы": "forces", "реакции": "forces"}
+           "силы": "forces", "реакции": "forces",
+           # Languages by the names and country codes people write for them.
+           "cn": "zh", "zh-cn": "zh", "zh_cn": "zh", "zh-hans": "zh", "chinese": "zh", "中文": "zh", "汉语": "zh",
+           "ru-ru": "ru", "ru_ru": "ru", "russian": "ru", "русский": "ru", "рус": "ru",
+           "en-us": "en", "en_us": "en", "en-gb": "en", "en_gb": "en", "english": "en"}
 
 
 def _suggestion(word: str, choices: Any) -> str:
     names = [str(c) for c in choices]
-    alias = ALIASES.get(word.strip().lower())
+    lowered = word.strip().lower()
+    alias = lowered if lowered in names else ALIASES.get(lowered)
     if alias in names:
         return f"; did you mean {alias!r}?"
     close = difflib.get_close_matches(word, names, n=1, cutoff=0.5)

@@ -234,6 +234,23 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     return _read_scene(Table(document, ""), source)
 
 
+# Typographic quotes an editor or an input method puts for the straight one TOML takes.
+_QUOTES = {"“": '"', "”": '"', "„": '"', "«": '"', "»": '"', "‘": "'", "’": "'", "「": '"', "」": '"'}
+
+
+def _ascii_counterpart(character: str) -> tuple[str, str] | None:
+    """The ASCII character a full-width or typographic one stands for, and what to call the one typed: a Chinese
+    input method types '，' for ',', '＝' for '=', '１２' for 12 and “ ” for quotes."""
+    if character in _QUOTES:
+        return _QUOTES[character], "a typographic quote (a word processor's or an input method's)"
+    if character in ("、", "。", "　"):
+        return {"、": ",", "。": ".", "　": " "}[character], "a Chinese or Japanese input method's punctuation"
+    plain = unicodedata.normalize("NFKC", character)
+    if character and not character.isascii() and len(plain) == 1 and plain.isascii() and plain.isprintable():
+        return plain, "a full-width character (a Chinese or Japanese input method's)"
+    return None
+
+
 def _toml_hint(data: str, message: str) -> str:
     """A hint where the line TOML stumbled on has a number with a decimal comma (``pb = 35,5``, as a Russian
     drawing writes it), which TOML reads as a number followed by something else, or a key with a letter a bare
@@ -247,6 +264,9 @@ def _toml_hint(data: str, message: str) -> str:
     if comma:
         return f"; a decimal comma? TOML numbers take a point: write {comma[1]}.{comma[2]}"
     letter = line[column - 1:column]
+    plain = _ascii_counterpart(letter)
+    if plain:
+        return f"; '{letter}' (U+{ord(letter):04X}) is {plain[1]}: TOML reads the ASCII '{plain[0]}' where one belongs"
     if letter and not letter.isascii():
         looks = " (a Cyrillic letter for a Latin one that looks the same?)" if unicodedata.name(
             letter, "").startswith("CYRILLIC") else ""

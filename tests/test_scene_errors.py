@@ -271,6 +271,13 @@ CASES: list[Case] = [
     Case("scene-locale-unknown", {"scene.locale": "it"}, "scene.locale", "must be one of en, ru, zh (got 'it')"),
     Case("scene-locale-near-miss", {"scene.locale": "rus"}, "scene.locale",
          "must be one of en, ru, zh; did you mean 'ru'? (got 'rus')"),
+    # China's country code and capitals, which a Chinese student tried: 'cn' was answered "did you mean 'en'?".
+    Case("scene-locale-country", {"scene.locale": "cn"}, "scene.locale",
+         "must be one of en, ru, zh; did you mean 'zh'? (got 'cn')"),
+    Case("scene-locale-capitals", {"scene.locale": "ZH"}, "scene.locale",
+         "must be one of en, ru, zh; did you mean 'zh'? (got 'ZH')"),
+    Case("scene-locale-language-name", {"scene.locale": "中文"}, "scene.locale",
+         "must be one of en, ru, zh; did you mean 'zh'? (got '中文')"),
     Case("scene-gravity-string", {"scene.gravity": "9.81"}, "scene.gravity",
          "must be a number, not a string (got '9.81')"),
     Case("scene-gravity-bool", {"scene.gravity": True}, "scene.gravity", "must be a number, not a boolean (got True)"),
@@ -953,7 +960,19 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
     ("[scene]\ngravity = 9,81\n", "; a decimal comma? TOML numbers take a point: write 9.81"),
     ("[measured.5]\nvelocity = { рb = 38.82 }\n", ("; a key's letters are Latin, digits, _ and -, not 'р' (U+0440) "
      "(a Cyrillic letter for a Latin one that looks the same?): type the Latin letter, or quote the key")),
-], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key"])
+    # A Chinese input method's full-width forms (a Chinese student's try): each was told to quote the key.
+    ("[positions]\ncount ＝ 12\n", "; '＝' (U+FF1D) is a full-width character (a Chinese or Japanese input "
+     "method's): TOML reads the ASCII '=' where one belongs"),
+    ("[positions]\nplans = [3，10]\n", "; '，' (U+FF0C) is a full-width character (a Chinese or Japanese input "
+     "method's): TOML reads the ASCII ',' where one belongs"),
+    ("[positions]\ncount = １２\n", "; '１' (U+FF11) is a full-width character (a Chinese or Japanese input "
+     "method's): TOML reads the ASCII '1' where one belongs"),
+    ("[scene]\ntitle = “牛头刨床”\n", "; '“' (U+201C) is a typographic quote (a word processor's or an input "
+     "method's): TOML reads the ASCII '\"' where one belongs"),
+    ("[scene]\ngravity = 9.81。\n", "; '。' (U+3002) is a Chinese or Japanese input method's punctuation: TOML "
+     "reads the ASCII '.' where one belongs"),
+], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key", "full-width-equals", "full-width-comma",
+        "full-width-digits", "typographic-quote", "ideographic-full-stop"])
 def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
     stage, error = first_error(text)
     assert stage == "load" and str(error).startswith("<scene>: is not valid TOML: ") and str(error).endswith(hint)
@@ -1270,7 +1289,7 @@ def test_a_crank_stopped_at_one_angle_alone_is_told_its_reach_not_a_traceback(tm
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     (line,) = capsys.readouterr().err.strip().splitlines()
     assert line.startswith("graphplan: error: B cannot be assembled at φ = 0° in group II(3,4): A and C coincide")
-    assert "reaches only from -60.0° to 0.0° and from 0.0° to 60.0°" in line
+    assert "reaches only from -60.00° to 0.00° and from 0.00° to 60.00°" in line
     assert not (tmp_path / "out").exists()
 
 
