@@ -123,6 +123,20 @@ def test_every_heading_of_a_chinese_note_is_in_chinese(name):
         assert re.search(r"[\u4e00-\u9fff]", heading), heading
 
 
+@pytest.mark.parametrize("name", [*KINDS, "double_rocker_swing"])
+def test_a_chinese_note_ends_its_sentences_and_lists_its_positions_the_chinese_way(name):
+    """「pa = VA/μV = 1/0.01 = 100.00 mm.」, 「**计入运动副摩擦.**」 and 「位置 3, 10」 were set with the Latin full stop and
+    comma (a Chinese student's reading): a sentence ends in 。, a list of positions takes 、."""
+    if name in KINDS:
+        note = note_of(name, "zh")
+    else:
+        note = note_markdown(analyse(dataclasses.replace(graphplan.load(FIXTURES / f"{name}.toml"), locale="zh")))
+    prose = [line for line in note.splitlines() if line and not line.startswith(("|", "!", "#"))]
+    assert not [line for line in prose if re.search(r"[.;]\**$", line)]
+    listed = re.search(r"对位置 ([\d、]+) ", note) or re.search(r"位置 ([\d、, ]+)", note)
+    assert listed and "," not in listed[1]
+
+
 def test_the_russian_note_writes_as_the_russian_textbooks_do():
     note = note_of("ratchet_crank_rocker", "ru")
     assert "W = 3n − 2p5 − p4 = 3·3 − 2·4 − 0 = 1" in note  # Chebyshev's formula with the numbers

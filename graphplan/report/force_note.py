@@ -100,8 +100,8 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
     _balancing(note, plan)
     note.figure(f"forces_{plan.number}.svg", note.t("tb_sheet_forces_position", number=plan.number))
     if plan.with_friction is not None:
-        note.para(f"**{text['forces_friction']}.** " + " ".join(force_report.friction_lines(analysis, plan,
-                                                                                             note.mark)))
+        lines = force_report.friction_lines(analysis, plan, note.mark)
+        note.para(f"**{text['forces_friction']}{text['full_stop']}** " + " ".join(lines))
         if not plan.with_friction.locked:
             _friction_loads(note, plan)
             note.figure(f"forces_friction_{plan.number}.svg",

@@ -340,7 +340,7 @@ def _polygon_scales(forces: ForcePlan, text: Mapping[str, str], mark: str) -> st
     if forces.one_scale:
         return text["forces_polygon_scale"].format(value=number(forces.scale, mark=mark))
     return text["forces_polygon_scales"].format(
-        values="; ".join(f"{label}: {number(scale, mark=mark)}" for label, scale in forces.group_scales.items()))
+        values=text["separator"].join(f"{label}: {number(scale, mark=mark)}" for label, scale in forces.group_scales.items()))
 
 
 __all__ = [

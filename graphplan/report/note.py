@@ -223,7 +223,7 @@ class _Note:
             section += 1
             self.heading(2, self.t("note_kinematics"), section)
             if plans:
-                self.para(self.t("note_kinematics_intro", positions=", ".join(str(p.number) for p in plans)))
+                self.para(self.t("note_kinematics_intro", positions=self.text["enumeration"].join(str(p.number) for p in plans)))
             for number, plan in enumerate(plans, 1):
                 self.kinematics(f"{section}.{number}", plan)
             subsection = len(plans)
@@ -546,10 +546,10 @@ class _Note:
                                  least=self.n(least), scale=scale, unit=unit,
                                  quantity_unit=self.text["unit_m_per_s" if velocity else "unit_m_per_s2"]))
             else:
-                self.para(f"{symbol} = {scale} {unit}.")
+                self.para(f"{symbol} = {scale} {unit}{self.text['full_stop']}")
             if value > 0:
                 self.para(f"{segment} = {quantity}/{symbol} = {self.n(value)}/{scale} = "
-                          f"{self.mm(value / plan.scale)} {self.text['millimetre']}.")
+                          f"{self.mm(value / plan.scale)} {self.text['millimetre']}{self.text['full_stop']}")
 
     # A group's vector equation.
 
@@ -560,7 +560,7 @@ class _Note:
         explanation = "" if step.translating is None else self.t("note_translates", link=step.translating)
         extra = "".join(f", {self.equation(clause)}" for clause in clauses[1:])
         if len(sides) < 3 and all(len(side) == 1 for side in sides):
-            self.para(f"{shown}{extra}" + (f" — {explanation}" if explanation else "") + ".")
+            self.para(f"{shown}{extra}" + (f" — {explanation}" if explanation else "") + self.text["full_stop"])
             return
         self.para(self.t("note_vector_equation", equation=shown + extra) + (f" ({explanation})" if explanation else ""))
         terms = self.terms(pp, plan, step, sides)
