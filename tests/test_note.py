@@ -392,6 +392,12 @@ def test_markdown_becomes_a_page_without_passing_raw_html_through():
     assert symbols_html("VBA = VB − VA; Group RRR; ω3, μV, R23τ, 2p5") == (
         "V<sub>BA</sub> = V<sub>B</sub> − V<sub>A</sub>; Group RRR; ω<sub>3</sub>, μ<sub>V</sub>, "
         "R<sub>23</sub><sup>τ</sup>, 2p<sub>5</sub>")
+    # The dynamics' symbols, set flat in every language's HTML before (a Chinese student's reading), and words
+    # that begin like them left alone.
+    assert symbols_html("ΔWmax = 441.24 J, JF′ = JF·(n/n′)², Je = Σ[m·(vS/ω2)²], Md = Ar/2π; ωm, ωmax; Made Admin") == (
+        "ΔW<sub>max</sub> = 441.24 J, J<sub>F′</sub> = J<sub>F</sub>·(n/n′)², J<sub>e</sub> = "
+        "Σ[m·(v<sub>S</sub>/ω<sub>2</sub>)²], M<sub>d</sub> = A<sub>r</sub>/2π; ω<sub>m</sub>, ω<sub>max</sub>; "
+        "Made Admin")
 
 
 # Determinism.

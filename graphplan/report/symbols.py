@@ -1,7 +1,7 @@
 """The textbook's symbols in the note's running text, with their indices told apart.
 
 The note writes its symbols flat, as plain text allows: ``VBA``, ``aBA^τ``,
-``ω3``, ``μV``, ``R23τ``; Assur's special point is an index like a letter
+``ω3``, ``μV``, ``R23τ``, ``JF``, ``ΔWmax``; Assur's special point is an index like a letter
 (``VDΣ6``).  :func:`pieces` splits a text into plain runs and
 :class:`Symbol` parts (base, index, component), so that the HTML
 (:mod:`graphplan.report.html`) and the LaTeX (:mod:`graphplan.report.latex`)
@@ -24,12 +24,15 @@ SYMBOL = re.compile(
     r"|(?P<base2>[ωε])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
-    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+)"
+    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+|[edr])"
     r"|(?P<base6>F)(?P<index6>y)"
-    r"|(?P<base7>[GJ])(?P<index7>\d+|S)|(?P<base11>m)(?P<index11>\d+)"
+    r"|(?P<base7>[GJ])(?P<index7>\d+|S|[Fe]′?)|(?P<base11>m)(?P<index11>\d+|e)"
     r"|(?<=Σ)(?P<base8>M)(?P<index8>[A-ZΣ][A-Z0-9Σ]*)"
     r"|(?P<base9>p)(?P<index9>[45])"
     r"|(?P<base10>P)(?P<index10>[LH])"
+    # The machine's dynamics: ΔWmax, Ad and Ar, ωm, ωmax and ωmin, vS of a reduction.
+    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base14>A)(?P<index14>[dr])"
+    r"|(?P<base15>ω)(?P<index15>max|min|m)|(?P<base16>v)(?P<index16>S)"
     r")(?![A-Za-z0-9_])")
 
 # Superscript letters stand for the component they show: aBAⁿ is aBA with an n above.
