@@ -80,7 +80,9 @@ class MomentEquation:
     """ΣM_about(link) = 0 solved for ``unknown``: ``value`` along the direction first assumed.
 
     A negative ``value`` means the first guess of the sense was wrong: the
-    component is turned round, as the textbook does.
+    component is turned round, as the textbook does.  ``couple``: the unknown
+    is a moment (Mb, a normal force's shift times the force, R14·x), in N·m,
+    not a force.
     """
 
     link: int
@@ -90,6 +92,7 @@ class MomentEquation:
     value: float
     arm: float
     links: tuple[int, ...] = ()
+    couple: bool = False
 
     @property
     def bodies(self) -> str:
@@ -284,7 +287,7 @@ class ForceBoard:
         """ΣM_about = 0 for a couple (a normal force's shift along its slide times the force)."""
         terms = self.moment_terms(link, self.positions[about]) + extra
         value = -sum(term.moment for term in terms)
-        self._moments.append(MomentEquation(link, about, terms, unknown, value, 1.0))
+        self._moments.append(MomentEquation(link, about, terms, unknown, value, 1.0, couple=True))
         return value
 
     def react(self, name: str, joint: str, source: int, target: int, force: complex,

@@ -304,6 +304,22 @@ def test_the_note_and_forces_md_print_the_same_tables():
         assert row in note, row
 
 
+@pytest.mark.parametrize("name", KINDS)
+def test_each_moment_equation_of_forces_md_gives_its_unknown_in_its_unit(name):
+    """«R45τ = 14.196», «Mb = −258.06» had no unit beside terms in N·m (a Chinese student's reading): a force
+    found from the moments is in N, a moment (Mb, a shift times its force R14·x) in N·m."""
+    analysis = analysis_of(name, "en")
+    if analysis.equilibrium is None:
+        pytest.skip("no forces")
+    found = re.findall(r"ΣM\w+\([\d,]+\) = 0 → (\S+) = ([−\d.e]+) (\S+?)(?:;|$)", force_report.markdown(analysis),
+                       flags=re.MULTILINE)
+    assert found
+    for unknown, _, unit in found:
+        assert unit == ("N·m" if unknown.startswith("M") or unknown.endswith("·x") else "N"), (unknown, unit)
+    assert all(line.endswith(" N") or " N; " in line
+               for line in force_report.markdown(analysis).splitlines() if "ΣFτ(" in line)
+
+
 def test_friction_reaches_the_note_and_forces_md():
     from graphplan.scene import FrictionSpec
 

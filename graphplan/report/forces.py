@@ -310,7 +310,7 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     lines += external_load_lines(analysis, plan, mark)
     # A block's pin reaction along its slot, found from the block's forces before the moments.
     projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = "
-                   f"{number(projection.value, mark=mark)}"
+                   f"{number(projection.value, mark=mark)} {text['newton']}"
                    + "".join(f"; {name}: {number(value, mark=mark)} {text['newton']}"
                              for name, value in projection.components)
                    for group in forces.groups for projection in group.projections]
@@ -323,8 +323,9 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
             terms = ", ".join(f"{term.name}: {number(term.moment, mark=mark)} {newton_metre}"
                               + (f" (h = {number(term.arm, 4, mark)} {metre})" if term.arm else "")
                               for term in equation.terms)
+            unit = newton_metre if equation.couple else text["newton"]
             lines.append(f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {equation.unknown} = "
-                         f"{number(equation.value, mark=mark)}" + (f"; {terms}" if terms else ""))
+                         f"{number(equation.value, mark=mark)} {unit}" + (f"; {terms}" if terms else ""))
     lines += ["", f"### {text['forces_reactions']}", "",
               _polygon_scales(forces, text, mark), "", *reaction_lines(analysis, plan, mark),
               "", f"### {balancing}", "", *balancing_lines(analysis, plan, mark)]
