@@ -43,6 +43,7 @@ from graphplan.render.sheet import (
     sheet_svg,
 )
 from graphplan.render.title_block import form_of, labels, scale_text
+from graphplan.scales import format_scale
 
 FIXTURES = ["engine_slider_crank", "offset_slider_crank", "quick_return_slotted_lever", "ratchet_crank_rocker",
             "scotch_yoke", "shaper_six_bar", "slider_driven", "stephenson_six_bar", "tangent_mechanism_prp",
@@ -584,13 +585,38 @@ def test_a_force_sheet_no_sheet_holds_whole_goes_in_parts_in_order_each_under_it
 
 
 def test_a_sheet_of_parts_of_one_drawing_is_named_after_it_in_the_title_block(analyses):
-    """On A3 the engine's force sheet of position 2 goes in parts, the first two on one sheet: its title block
+    """On A3 the triad's force sheet of position 8 goes in parts, the first two on one sheet: its title block
     names the drawing they are parts of, as the sheets with one part on them do, not the kind of drawing."""
-    sheets = course_sheets(analyses["engine_slider_crank"], "A3")
-    parts = [sheet for sheet in sheets if all(re.fullmatch(r"forces-2(-\d+)?", name) for name in sheet.panels)]
+    sheets = course_sheets(analyses_of("triad_class_iii"), "A3")
+    parts = [sheet for sheet in sheets if all(re.fullmatch(r"forces-8(-\d+)?", name) for name in sheet.panels)]
     assert any(len(sheet.panels) > 1 for sheet in parts) and len(parts) > 1
     for sheet in parts:
-        assert "Force analysis, position 2" in [text.text for text in texts([layer(sheet, "title-block")])]
+        assert "Force analysis, position 8" in [text.text for text in texts([layer(sheet, "title-block")])]
+
+
+def test_a_force_sheet_part_that_fits_under_its_heading_in_smaller_lettering_is_given_its_heading(analyses):
+    """On A3 the engine's force sheet of position 2 stood in four parts, one with no heading at all, said whose it
+    was by the title block alone (a student's reading of the sheets); lettered a size smaller, each of its parts
+    stands under its heading, the first under the sheet's title, the others «continued», at the same scales."""
+    analysis = analyses["engine_slider_crank"]
+    sheets = course_sheets(analysis, "A3")
+    for position in analysis.plans:
+        title = f"Force analysis, position {position.number}"
+        parts = sorted((name, sheet) for sheet in sheets for name in sheet.panels
+                       if re.fullmatch(rf"forces-{position.number}(-\d+)?", name))
+        assert len(parts) >= 2
+        for k, (name, sheet) in enumerate(parts):
+            heading = [text.text for text in texts([layer(sheet, f"{name}-sheet-title")]) if text.weight == "bold"]
+            assert " ".join(heading) == (title if k == 0 else f"{title} (continued)"), (sheet.number, name)
+    assert check_group_scale_is_the_mechanism_s(analysis, sheets)
+
+
+def check_group_scale_is_the_mechanism_s(analysis, sheets) -> bool:
+    """Whether every group cut free on the sheets is captioned at the mechanism's μl."""
+    wanted = f"μl = {format_scale(length_scale(analysis))} m/mm"
+    captions = [text.text for sheet in sheets for item in sheet.layers
+                if re.fullmatch(r"forces-\d+(-\d+)?-body-.*-caption", item.name) for text in texts([item])]
+    return bool(captions) and all(wanted in caption for caption in captions if caption.startswith("μl"))
 
 
 def test_a_force_sheet_too_big_in_two_columns_stands_whole_with_each_polygon_under_its_group(analyses):

@@ -144,27 +144,29 @@ class Rows:
         cut = min(range(1, len(heights)), key=lambda k: max(sum(heights[:k]), sum(heights[k:])))
         return (tuple((k, False) for k in range(cut)), tuple((k, False) for k in range(cut, len(heights))))
 
-    def parts(self, fits: Fits) -> list[Arrangement] | None:
+    def parts(self, fits: Fits, headless: bool = True) -> list[Arrangement] | None:
         """The rows in the fewest parts in order, each standing the way that ``fits`` and takes least paper
         (of as many parts, those that cut fewest rows apart); the first part under the heading's title, the
         others under its ``continued``.  Where a row fits in no way, every drawing stands as a row of its own
         (a polygon may then stand apart from its group, where no cut of as many parts keeps them together),
-        and a drawing too big to stand under a heading stands alone without one; None where a drawing does
-        not fit even so (:meth:`unheld`)."""
+        and a drawing too big to stand under a heading stands alone without one where ``headless`` allows it;
+        None where a drawing does not fit even so (:meth:`unheld`)."""
         found = self._parts(fits)
         if found is not None:
             return found
         apart = self._apart()
         if any(len(row) > 1 for row in self.drawings):
             found = apart._parts(fits)
-        return found if found is not None else apart._parts(fits, headless=True)
+        return found if found is not None or not headless else apart._parts(fits, headless=True)
 
-    def unheld(self, fits: Fits) -> dict[str, tuple[float, float]]:
-        """The drawings that do not fit even alone with no heading, with their (width, height)."""
+    def unheld(self, fits: Fits, headed: bool = False) -> dict[str, tuple[float, float]]:
+        """The drawings that do not fit even alone with no heading (``headed``: under the heading), with their
+        (width, height)."""
         alone = self._apart()
         sizes = {}
         for k, (drawing,) in enumerate(alone.drawings):
-            x0, y0, x1, y1 = bounds(alone.arranged((((k, False),),), HEADLESS).layers)
+            title = self.heading.part_title if headed else HEADLESS
+            x0, y0, x1, y1 = bounds(alone.arranged((((k, False),),), title).layers)
             if not fits(x1 - x0, y1 - y0):
                 sizes[drawing.name] = (round(x1 - x0), round(y1 - y0))
         return sizes

@@ -51,6 +51,7 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
+from .force_rows import HEADING_LAYER, Rows
 from .formats import (
     BIGGER,
     FORMATS,
@@ -273,6 +274,11 @@ def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[tuple[Pa
     return found
 
 
+def _headless(part: Arrangement) -> bool:
+    """Whether a part of a force sheet stands without a heading (a drawing too big to stand under one)."""
+    return not any(layer.name == HEADING_LAYER for layer in part.layers)
+
+
 def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                   with_friction: bool = False) -> tuple[Panel, list[Panel]]:
     """The force sheet of ``position`` whole, and as it stands on sheets: whole, or its parts in order where
@@ -287,7 +293,27 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         return holds(sheet, form, width, height)
 
     enlarged = drawn if drawn.lever_enlarged else None
+
+    def cut(drawn: force_layout.ForceSheet, rows: Rows, one: Panel,
+            parts: list[Arrangement]) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
+        """The parts as panels, each going on from the one before; the lever drawn larger where the sheet holds
+        it so on its part without adding a part."""
+        for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
+            larger_rows = force_layout.rows(larger)
+            larger_parts = larger_rows.parts(fits, headless=any(_headless(part) for part in parts))
+            if larger_parts is not None and len(larger_parts) == len(parts):
+                drawn, parts = larger, larger_parts
+                one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
+                break
+        names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
+        return drawn, one, [replace(split(arrangement, name, one.label, _group_of_field),
+                                    continues=names[k - 1] if k else "")
+                            for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
+
     before: dict[str, tuple[float, float]] = {}
+    # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
+    # gives every part its heading (a part with none says whose it is by its title block alone).
+    headless: tuple[force_layout.ForceSheet, Rows, Panel, list[Arrangement]] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
@@ -297,29 +323,27 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         # Its rows in two columns where a sheet is too low for them in one.
         panels = [replace(one, alternatives=(two,) if two.extent != one.extent else ())]
         if any(fits(width(way), height(way)) for way in panels[0].ways):
+            headless = None
             break
         # A lever drawn larger than its plan gives the room back, a step at a time, before the sheet is cut up.
         if drawn.lever_enlarged:
             drawn = replace(drawn, lever_scale=_smaller_lever(drawn))
             continue
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
-        parts = rows.parts(fits)
+        parts = rows.parts(fits, headless=False)
         if parts is not None:
-            # Cut up all the same, the sheet may hold the lever larger on its part, where that adds no part.
-            for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
-                larger_rows = force_layout.rows(larger)
-                larger_parts = larger_rows.parts(fits)
-                if larger_parts is not None and len(larger_parts) == len(parts):
-                    drawn, parts = larger, larger_parts
-                    one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
-                    break
-            names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
-            panels = [replace(split(arrangement, name, one.label, _group_of_field), continues=names[k - 1] if k else "")
-                      for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
+            drawn, one, panels = cut(drawn, rows, one, parts)
+            headless = None
             break
-        # A drawing too big for a sheet: smaller lettering, then a larger scale.
+        if headless is None:
+            parts = rows.parts(fits)
+            headless = (drawn, rows, one, parts) if parts is not None else None
+        # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
+        # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
         unheld = rows.unheld(fits)
-        if unheld == before:
+        if not unheld and drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:
+            unheld = rows.unheld(fits, headed=True)
+        if unheld == before or not unheld:
             break  # the packing cuts the panel up, or names the drawing that no sheet holds
         before = unheld
         bodies = any(drawing.startswith("body-") for drawing in unheld)
@@ -333,6 +357,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                 lever_scale=next_standard_scale(drawn.lever_drawn_scale) if lever else drawn.lever_scale)
         else:
             break
+    if headless is not None:
+        drawn, one, panels = cut(*headless)
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
     one, panels = replace(one, lever_scale=lever), [replace(part, lever_scale=lever) for part in panels]
     if drawn.length_scale == length_scale(analysis):
