@@ -388,6 +388,40 @@ def test_tangents_of_the_energy_mass_diagram_cut_ab_off_the_energy_axis():
     assert ab * scales.energy / (flywheel.upper.slope - flywheel.lower.slope) == pytest.approx(flywheel.inertia)
 
 
+def test_the_steep_tangents_of_a_fast_machine_stay_by_their_curve(tmp_path):
+    """tan ψ grows as ωm²: at 1000 rpm the shaper's tangents, drawn from the ΔT axis to past the curve, made the
+    energy–mass diagram 3.4 m tall (30 m at 3000 rpm) and the run refused it, on advice that did not help, while
+    check said ok (a teacher's variants).  Each is drawn only across the band of its curve, at its slope and
+    through the point it touches: the diagram is as tall at 3000 rpm as at 1000, and the run draws it."""
+    from importlib import resources
+
+    from graphplan.cli import main
+
+    template = resources.files("graphplan").joinpath("templates/shaper.toml").read_text(encoding="utf-8")
+    heights = []
+    for rpm in (-1000.0, -3000.0):
+        text = re.sub(r"^rpm .*$", f"rpm = {rpm}", template, count=1, flags=re.MULTILINE)
+        model = equivalent_model_of(analyse(loads(text)))
+        flywheel = flywheel_for(model, 0.05)
+        scales = scales_for(model)
+        mass = _layer(layout(model, flywheel, scales=scales), "energy-mass")
+        curve = next(item for item in mass.items if isinstance(item, Polyline) and item.closed)
+        tangents = [item for item in mass.items if isinstance(item, Polyline) and item.stroke.colour == "#b22222"]
+        for line, tangent in zip(tangents, (flywheel.upper, flywheel.lower), strict=True):
+            (x0, y0), (x1, y1) = line.points
+            slope = tangent.slope * scales.inertia / scales.energy
+            assert slope > 10.0   # steep: the case in point
+            assert (y1 - y0) / (x1 - x0) == pytest.approx(slope, rel=1e-9)
+            touch_x, touch_y = curve.points[tangent.touch]   # the curve's points are the model's samples, in order
+            assert touch_y - y0 == pytest.approx(slope * (touch_x - x0), rel=1e-6, abs=1e-6)
+        _, bottom, _, top = bounds_of(mass.items)
+        heights.append(top - bottom)
+        scene = tmp_path / f"fast_{-rpm:.0f}.toml"
+        scene.write_text(text, encoding="utf-8")
+        assert main(["run", str(scene), "--out", str(tmp_path / f"out_{-rpm:.0f}"), "--only", "dynamics,sheets"]) == 0
+    assert heights[1] < 1.5 * heights[0] and heights[0] < 1000.0
+
+
 def test_dynamics_sheet_renders_the_same_every_time():
     cairosvg = pytest.importorskip("cairosvg")
     model = model_of("engine_slider_crank")

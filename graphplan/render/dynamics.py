@@ -252,11 +252,15 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
             slope = tangent.slope * scales.inertia / scales.energy   # tan ψ on the paper
             touch = (float(xs[tangent.touch]), float(ys[tangent.touch]))
             intercept = tangent.intercept / scales.energy
+            # A steep tangent (a fast machine: tan ψ grows as ωm²) is drawn only across the band of the curve
+            # and a little beyond, where it starts and ends; run to the axis or past the curve it was metres long.
+            band = reach + max(abs(top_mm), abs(bottom_mm))
             start_x = 0.0
-            if abs(intercept) > reach + max(abs(top_mm), abs(bottom_mm)):
-                limit = math.copysign(reach + max(abs(top_mm), abs(bottom_mm)), intercept)
-                start_x = (limit - intercept) / slope if slope else 0.0
+            if abs(intercept) > band:
+                start_x = (math.copysign(band, intercept) - intercept) / slope if slope else 0.0
             end_x = width + 4.0
+            if abs(intercept + slope * end_x) > band:
+                end_x = (math.copysign(band, intercept + slope * end_x) - intercept) / slope
             line = ((start_x, intercept + slope * start_x), (end_x, intercept + slope * end_x))
             items.append(Polyline(line, _TANGENT))
             items.append(dot_marker(touch, 0.7, _TANGENT.colour))
