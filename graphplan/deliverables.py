@@ -350,7 +350,8 @@ class MachineDynamics:
         """The motion's part of ``results.json``: the integrator and its reason, the steady state."""
         motion = self.motion
         result: dict[str, Any] = {"method": motion.method, "method_reason": motion.method_reason,
-                                  "duration": float(motion.t[-1]), "flywheel_inertia": self.flywheel_inertia}
+                                  "duration": float(motion.t[-1]), "flywheel_inertia": self.flywheel_inertia,
+                                  "steady": motion.steady is not None}
         steady = motion.steady
         if steady is not None:
             result.update(omega_mean=steady.mean_speed, omega_max=steady.max_speed, omega_min=steady.cycle.min_speed,
@@ -403,6 +404,23 @@ class MachineDynamics:
         return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
+
+    def unsettled_warning(self) -> str | None:
+        """One line for the command line when a run with the motor on ends short of a steady state: the results
+        then have no ωm, δ or start-up time, which only the note said (a machine of great inertia still speeding
+        up after its 2000 turns' time)."""
+        from .machine_motion.simulation import MOST_CYCLES
+
+        motion, asked = self.motion, self.spec.motion
+        if (motion is None or motion.steady is not None or motion.stalled_at is not None or motion.stopped_at is not None
+                or asked.motor_off_at is not None):
+            return None
+        end, speed = float(motion.t[-1]), float(motion.omega[-1])
+        rising = speed >= float(motion.omega[len(motion.omega) * 9 // 10])
+        limit = "its duration" if asked.duration is not None else f"{MOST_CYCLES} turns' time at the running speed"
+        return (f"dynamics: no steady state within the run, t = {end:.4g} s ({limit}): the machine is still "
+                f"{'speeding up' if rising else 'slowing down'} at ω = {speed:.4g} rad/s, so the results have no ωm, "
+                "δ or start-up time; a longer [dynamics] duration (s) runs it on")
 
     def off_design_warning(self) -> str | None:
         """One line for the command line when the motor settles the machine away from the speed its flywheel
@@ -584,7 +602,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
     if dynamics is not None and warn is not None:
-        for told in (dynamics.stall_warning(), dynamics.off_design_warning()):
+        for told in (dynamics.stall_warning(), dynamics.unsettled_warning(), dynamics.off_design_warning()):
             if told is not None:
                 warn(told)
     if "balancing" in pieces and warn is not None and (couple := _static_couple(scene)) is not None:

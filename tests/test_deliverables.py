@@ -246,6 +246,29 @@ def test_a_machine_that_stalls_is_told_on_the_command_line_in_the_results_and_in
     assert "Why it stalls" in figure and "the resisting forces reduced to the shaft" in figure
 
 
+def test_a_run_that_ends_short_of_a_steady_state_is_told_so_and_flagged(tmp_path, capsys):
+    """The flywheel starter with a machine of 10⁶ kg·m²: after its 2000 turns' time the run ended still speeding
+    up with no word on the command line and nothing in results.json but the missing ωm (a teacher's variant)."""
+    scene = tmp_path / "heavy.toml"
+    heavy = starter("flywheel").replace("inertia = 0.0 ", "inertia = 1e6 ", 1)
+    assert heavy != starter("flywheel")
+    scene.write_text(heavy, encoding="utf-8")
+    status, out = run(tmp_path, "--only", "dynamics,note", scene=scene)
+    assert status == 0
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["steady"] is False and "omega_mean" not in motion and "stalled_at" not in motion
+    printed = capsys.readouterr().out
+    told = re.search(r"warning: dynamics: no steady state within the run, t = ([\d.]+) s .*still speeding up at "
+                     r"ω = ([\d.]+) rad/s", printed)
+    assert told and float(told[1]) == pytest.approx(motion["duration"], rel=1e-3)
+    assert "No steady state was reached within the run" in (out / "note.md").read_text(encoding="utf-8")
+    # The starter as it is settles: flagged steady, and no such warning.
+    scene.write_text(starter("flywheel"), encoding="utf-8")
+    status, out = run(tmp_path, "--only", "dynamics", scene=scene)
+    assert status == 0 and "no steady state" not in capsys.readouterr().out
+    assert json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]["steady"] is True
+
+
 def test_new_does_not_overwrite_a_scene(tmp_path, capsys):
     scene = tmp_path / "mine.toml"
     scene.write_text("# my own work\n", encoding="utf-8")
