@@ -43,6 +43,9 @@ Scalar = float | np.ndarray
 RESONANCE_TOLERANCE = 1e-6
 #: Without damping, a speed this close to ωn (relative) is warned of: the amplitude grows without bound towards it.
 NEAR_RESONANCE = 0.1
+#: With damping, a speed that near ωn is warned of where the magnification M·X/(m·e) reaches this (ζ below about
+#: 0.05 at resonance): a damping ratio of 1e-9 damps nothing, and had no warning where none had one.
+LARGE_MAGNIFICATION = 10.0
 # The most a machine's isolating mounts sag under its weight (m): steel springs reach some 50–100 mm, rubber less.
 MOST_MOUNT_SAG = 0.1
 STANDARD_GRAVITY = 9.80665
@@ -324,13 +327,18 @@ def at_resonance(omega: float, stiffness: float, mass: float) -> bool:
 
 
 def resonance_warning(spec: VibrationSpec) -> str | None:
-    """A line for a machine without damping run near its resonance (within :data:`NEAR_RESONANCE`), or None."""
-    if spec.damping_ratio > 0:
-        return None
+    """A line for a machine run near its resonance (within :data:`NEAR_RESONANCE`) without damping, or with so
+    little that its magnification reaches :data:`LARGE_MAGNIFICATION`; else None."""
     response = steady_state(spec)
     r = response.frequency_ratio
     if abs(r - 1.0) >= NEAR_RESONANCE:
         return None
+    if spec.damping_ratio > 0:
+        if response.magnification < LARGE_MAGNIFICATION:
+            return None
+        return (f"vibration: ω within {abs(r - 1.0):.2g} of the natural frequency (r = {r:.6g}) with little damping "
+                f"(ζ = {spec.damping_ratio:.3g}): the amplitude X = {response.amplitude:.4g} m is "
+                f"{response.magnification:.4g} times m·e/M; run the machine farther from resonance or damp it more")
     return (f"vibration: no damping and ω within {abs(r - 1.0):.2g} of the natural frequency (r = {r:.6g}): the "
             f"amplitude X = {response.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
 
