@@ -353,6 +353,29 @@ def test_a_plan_too_big_for_a4_names_the_largest_pole_distance_that_fits():
     assert named_pole(one_more, "acceleration") == fitting
 
 
+def test_a_plan_at_the_program_s_scale_too_big_for_a4_names_a_pole_distance_that_fits():
+    """The triad's acceleration plan of position 1 at the μa the program chose is 166 mm wide, 2 mm more than an
+    upright A4 holds: the error named no key to change (a student's A4 run), and now the pole distance that fits,
+    which the next one refuses."""
+    scene = graphplan.load("fixtures/triad_class_iii.toml")
+    positions = dataclasses.replace(scene.positions, plans=(1,))
+    drawing = dataclasses.replace(scene.drawing, sheet="A4", velocity_pole=None, acceleration_pole=None)
+
+    def on_sheet(**changes):
+        changed = dataclasses.replace(scene, positions=positions, drawing=dataclasses.replace(drawing, **changes))
+        return course_sheets(with_length_scale(analyse(changed)))   # the triad has no output link: no diagrams
+
+    with pytest.raises(SceneError) as error:
+        on_sheet()
+    message = str(error.value)
+    assert "'plan-1-acceleration'" in message and "acceleration scale μa = " in message and "(the program's)" in message
+    fitting = named_pole(message, "acceleration")
+    check_inside_frames(on_sheet(acceleration_pole=float(fitting)))
+    with pytest.raises(SceneError) as error:
+        on_sheet(acceleration_pole=fitting + 1.0)
+    assert named_pole(str(error.value), "acceleration") == fitting
+
+
 def test_plans_too_big_for_a4_are_named_together_with_a_pole_distance_for_each_kind():
     """The tangent mechanism's velocity and acceleration plans of position 10 both overflow A4 at the scene's
     pole distances; one error names both, and the two values it gives make the whole set fit."""

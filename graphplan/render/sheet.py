@@ -776,19 +776,25 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
             scale = next_standard_scale(scale)
         return f"drawing.{kind}_scale = {format_scale(given_scale)}", None
     driven = [abs(getattr(position, kind).value(analysis.mechanism.driver.joint)) for position in positions]
-    if pole is None or not all(pa > 0 for pa in driven):
-        return f"{kind} scale {scale_factor(getattr(positions[0], kind).scale)}", None
-    # A plan grows with its pole distance: for each position the largest whole millimetre that fits, by halving.
-    too_long = math.ceil(pole)
+    setting = f"drawing.{kind}_pole = {pole:g} mm" if pole is not None else \
+        f"{kind} scale {'μV' if kind == 'velocity' else 'μa'} = {scale_factor(getattr(positions[0], kind).scale)} " \
+        f"{'(m/s)/mm' if kind == 'velocity' else '(m/s²)/mm'} (the program's)"
+    if not all(pa > 0 for pa in driven):
+        return setting, None
+    # A plan grows with its pole distance: for each position the largest whole millimetre that fits, by halving,
+    # from the scene's pole distance or the one the program's scale draws (a small sheet's fix the error named
+    # no key for).
+    drawn = max(pa / getattr(position, kind).scale for position, pa in zip(positions, driven, strict=True))
+    too_long = math.ceil(pole if pole is not None else drawn)
     for position, pa in zip(positions, driven, strict=True):
         if not fits(position, pa / 1.0):
-            return f"drawing.{kind}_pole = {pole:g} mm", None
+            return setting, None
         fitting = 1
         while too_long - fitting > 1:
             middle = (fitting + too_long) // 2
             fitting, too_long = (middle, too_long) if fits(position, pa / middle) else (fitting, middle)
         too_long = fitting + 1
-    return f"drawing.{kind}_pole = {pole:g} mm", f"drawing.{kind}_pole = {too_long - 1} (or less)"
+    return setting, f"drawing.{kind}_pole = {too_long - 1} (or less)"
 
 
 def _sheets(drawings: Sequence[Panel | Sequence[Layer]], sheet: str, locale: str, kind: str, title: str,
