@@ -252,6 +252,25 @@ def test_frame_and_title_block_follow_the_standard(ratchet_sheets, locale):
             assert 20 <= block[3] - block[1] <= 60
 
 
+@pytest.mark.parametrize("locale", ["zh", "en"])
+def test_centring_marks_stand_on_the_sheet_s_axes_of_symmetry(ratchet_sheets, locale):
+    """ISO 5457 and GB/T 14689 put the four centring marks at the ends of the trimmed sheet's axes of symmetry;
+    they stood at the middle of the frame, 5 mm off on A1 (the frame's binding margin is wider), as a student
+    measuring the sheets found."""
+    for sheet in ratchet_sheets[locale]:
+        width, height = sheet.size
+        marks = [item for item in layer(sheet, "sheet-frame").items
+                 if isinstance(item, Polyline) and len(item.points) == 2 and item.stroke.width == 0.7]
+        assert len(marks) == 4
+        vertical = [item for item in marks if item.points[0][0] == item.points[1][0]]
+        horizontal = [item for item in marks if item.points[0][1] == item.points[1][1]]
+        assert [item.points[0][0] for item in vertical] == pytest.approx([width / 2] * 2)
+        assert [item.points[0][1] for item in horizontal] == pytest.approx([height / 2] * 2)
+        # Each runs in from the sheet's edge across the margin to the frame.
+        assert sorted(min(y for _, y in item.points) for item in vertical)[0] == 0.0
+        assert sorted(min(x for x, _ in item.points) for item in horizontal)[0] == 0.0
+
+
 @pytest.mark.parametrize("locale", ["ru", "zh", "en"])
 def test_title_block_prints_the_labels_of_its_standard(ratchet_sheets, locale):
     for sheet in ratchet_sheets[locale]:

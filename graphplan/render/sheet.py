@@ -870,7 +870,9 @@ def _frame(page: Page, form: str) -> list[Primitive]:
         Polyline(((0.0, 0.0), (width, 0.0), (width, height), (0.0, height)), _EDGE, closed=True),
         Polyline(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), MAIN, closed=True)]
     if form != "eskd":
-        middle_x, middle_y = (x0 + x1) / 2, (y0 + y1) / 2
+        # On the trimmed sheet's axes of symmetry (ISO 5457, GB/T 14689), not the frame's, which the wider
+        # binding margin moves 5 mm or more to the right.
+        middle_x, middle_y = width / 2, height / 2
         reach = CENTRING_REACH_MM
         # A mark that would run into the title block stops at the frame (GB/T 14689).
         bottom = y0 if page.block[0] <= middle_x <= page.block[2] else y0 + reach
