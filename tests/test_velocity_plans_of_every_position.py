@@ -205,6 +205,28 @@ def test_a_grid_no_sheet_holds_stands_row_by_row_in_the_order_of_the_positions()
                 assert all(rect[0] >= before[2] - 1e-6 or rect[3] < before[3] - 1e-6 for before in rects[:k])
 
 
+def test_a_grid_too_wide_for_a_sheet_stands_in_rows_as_wide_as_the_sheet_in_order():
+    """48 plans of the triad with a slider: the grid's seven columns are wider than an A1, so each row stood
+    apart plan by plan, each where it fitted best, and the sheet read 2, 7, 15, 34, 1, 10, … (a student's A1
+    sheets).  The grid is taken in as many columns as the sheet holds, its rows whole and in order."""
+    from graphplan.render.packing import pack
+    from graphplan.render.sheet import velocity_plans_panel
+
+    text = re.sub(r"^count\s*=\s*12", "count = 48", scene_text("triad_with_slider"), count=1, flags=re.MULTILINE)
+    analysis = drawings.with_length_scale(analyse(loads(text)))
+    assert len(analysis.positions.numbers) == 48
+    panel = velocity_plans_panel(analysis)
+    pages = pack([panel], "A1", "iso")
+    placed = [way for page in pages for way, _, _ in page.placed]
+    assert all(way.name.startswith("velocity-plans-row-") for way in placed)   # every row whole
+    numbers = [int(plan.name.rsplit("-", 1)[1]) for way in placed for plan in way.parts]
+    assert numbers == list(analysis.positions.numbers)
+    for page in pages:
+        rects = [rect for _, rect, _ in page.placed]
+        for k, rect in enumerate(rects):
+            assert all(rect[0] >= before[2] - 1e-6 or rect[3] < before[3] - 1e-6 for before in rects[:k])
+
+
 def test_a_plan_set_apart_has_its_caption_under_its_middle_and_the_first_not_under_the_title():
     """Set apart on a small sheet, the first plan's caption was centred under the title it carries, 90 mm off
     its plan (a user's A4 sheet of a shaper)."""

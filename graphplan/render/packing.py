@@ -363,12 +363,20 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
     def held(part: Panel) -> bool:
         return any(_empty_page(sheet, form, portrait).fits_empty(part) for portrait in turns)
 
+    if panel.in_order:
+        # Of its ways, the one of fewest groups that a sheet holds each of (the grid of velocity plans in as many
+        # columns as a sheet is wide): a group no sheet holds would stand apart drawing by drawing, out of order.
+        whole = [way for way in panel.ways if way.parts and all(held(part) for part in way.parts)]
+        if whole:
+            panel = min(whole, key=lambda way: len(way.parts))
     # A part too big for a sheet stands apart in its own parts.
     grouped = [piece for part in panel.parts
                for piece in (part.parts if part.parts and not held(part) else (part,))]
     single = smallest_drawings(grouped)
     best: list[Page] | None = None
-    for parts in (grouped, single):
+    # A sequence read in order keeps its groups (the grid's rows): its drawings one by one, each where it fits
+    # best, read 2, 7, 15, 34, 1, 10, … over the sheet.
+    for parts in (grouped,) if panel.in_order else (grouped, single):
         orders = [parts]
         if not panel.in_order:
             orders += [sorted(parts, key=lambda part: -height(part)), sorted(parts, key=lambda part: -_area(part)),
