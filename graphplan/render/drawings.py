@@ -38,6 +38,13 @@ _LARGER_SCALES_TRIED = 40
 _chosen_scales: OwnedMemo[float] = OwnedMemo()
 
 
+def paths_extent(analysis: Analysis) -> float:
+    """How far across (m) the paths of all points run, the larger of their width and height: the linework of
+    the plan of positions, without its words."""
+    tracks = np.concatenate([np.atleast_1d(p.r) for p in analysis.paths.points.values()])
+    return max(float(np.ptp(tracks.real)), float(np.ptp(tracks.imag)))
+
+
 def length_scale(analysis: Analysis) -> float:
     """μl from the scene; or the standard value that fits the paths of all points into the field, and the
     plan of positions and each plan sheet's mechanism on an empty sheet of the scene's format (a larger
@@ -48,8 +55,7 @@ def length_scale(analysis: Analysis) -> float:
     choice in a copy of the analysis for the drawings of a run.
     """
     given = analysis.scene.drawing.length_scale
-    tracks = np.concatenate([np.atleast_1d(p.r) for p in analysis.paths.points.values()])
-    extent = max(float(np.ptp(tracks.real)), float(np.ptp(tracks.imag)))
+    extent = paths_extent(analysis)
     if given is not None:
         if extent / given > LARGEST_PAPER_MM:
             raise SceneError("drawing.length_scale", f"draws the paths of the points {extent / given:.3g} mm across, "

@@ -44,10 +44,10 @@ from .drawings import (
     fitting_length_scale,
     force_sheet,
     length_scale,
+    paths_extent,
     plan_sheet,
     plan_size,
     positions_plan,
-    positions_size,
     velocity_plans_drawing,
     with_length_scale,
 )
@@ -68,9 +68,10 @@ from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, b
 from .svg import to_svg
 from .title_block import Details, TitleBlockFields, form_of, labels, scale_text, title_block
 
-# A plan of positions drawn smaller than this (its longer side, mm) to save a sheet would run its outlines
-# and position numbers together: μl is made no larger for fewer sheets.
-LEAST_POSITIONS_MM = 150.0
+# A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
+# this to save a sheet would run its outlines and position numbers together: μl is made no larger for fewer
+# sheets.  The first μl draws them about 200 mm across; a standard step smaller, 100 to 160.
+LEAST_POSITIONS_MM = 120.0
 # How far a centring mark reaches into the drawing area past the frame (ISO 5457, GB/T 14689).
 CENTRING_REACH_MM = 5.0
 # The kinematic diagrams are shortened for a small sheet in at most this many rounds, to no less of a field.
@@ -404,10 +405,11 @@ def fewest_sheets_length_scale(analysis: Analysis, sheet: str, largest: float) -
     """
     from ..kinematic_diagrams import unavailable
 
-    # Its lines shrink with μl, its words do not: the estimate errs on the small side.
-    longest = max(positions_size(analysis, largest))
+    # The paths of the points, its linework, at least so far across: measured with its words, which do not shrink
+    # with μl, the plan of positions came out 124 mm across on A2.
+    extent = paths_extent(analysis)
     candidates = [largest]
-    while longest * largest / next_standard_scale(candidates[-1]) >= LEAST_POSITIONS_MM:
+    while extent / next_standard_scale(candidates[-1]) >= LEAST_POSITIONS_MM:
         candidates.append(next_standard_scale(candidates[-1]))
     if len(candidates) == 1:
         return largest
