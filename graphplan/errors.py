@@ -34,10 +34,35 @@ class SceneError(GraphplanError, ValueError):
         self.value = value
         message = f"{where}: {problem}" if where else problem
         if value is not SceneError._NO_VALUE:
-            shown = value.isoformat() if hasattr(value, "isoformat") else repr(value)
-            message += f" (got {shown})"
+            message += f" (got {as_written(value)})"
         super().__init__(message)
 
+
+def as_written(value: object, nested: bool = False) -> str:
+    """A scene's value as the scene wrote it: a table as TOML's ``{ from = 0.9, to = 0.1 }`` (Python's dict was
+    ``{'from': 0.9, 'to': 0.1}``), a list's items and a table's so too (``kind = "RRR"``, ``true``); a single
+    value as Python writes it."""
+    if hasattr(value, "isoformat"):
+        return value.isoformat()
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{_key(key)} = {as_written(item, True)}" for key, item in value.items()) + " }"
+    if isinstance(value, list | tuple):
+        return "[" + ", ".join(as_written(item, True) for item in value) + "]"
+    if nested and isinstance(value, bool):
+        return "true" if value else "false"
+    if nested and isinstance(value, str):
+        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    return repr(value)
+
+
+def window_table(window: tuple[float, float]) -> dict[str, float]:
+    """A load's window of the working stroke as the scene's table writes it, for an error to show."""
+    return {"from": window[0], "to": window[1]}
+
+
+def _key(key: object) -> str:
+    text = str(key)
+    return text if text and all(c.isascii() and (c.isalnum() or c in "_-") for c in text) else f'"{text}"'
 
 class AssemblyError(GraphplanError, ValueError):
     """A position the mechanism cannot reach.

@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .errors import SceneError
+from .errors import SceneError, window_table
 from .groups import Driver, Group, Guide
 from .scene import PointSpec, Scene
 
@@ -312,12 +312,13 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
             raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point)
         if load.during != "always" and scene.positions.working is None:
             raise SceneError(f"{load.where}.during", "a load that acts in one stroke needs positions.working "
-                                                     "(which motion of which link is the working stroke)", load.during)
+                                                     "(which motion of which link is the working stroke)",
+                             window_table(load.during) if isinstance(load.during, tuple) else load.during)
         if isinstance(load.during, tuple) and not scene.driver.cyclic:
             raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank that turns "
                                                      f"round; a {scene.driver.kind} driver's positions run over its "
                                                      f"{scene.driver.run_key}: "
-                                                     "use always", list(load.during))
+                                                     "use always", window_table(load.during))
     working = scene.positions.working
     if working is not None:
         if working.link not in known_links or working.link == scene.frame_link:

@@ -251,17 +251,17 @@ CASES: list[Case] = [
     Case("top-driver-string", {"driver": "crank"}, "driver", "must be a table, not a string (got 'crank')"),
     Case("top-scene-string", {"scene": "ratchet"}, "scene", "must be a table, not a string (got 'ratchet')"),
     Case("top-groups-table", {"groups": {"kind": "RRR"}}, "groups",
-         "must be a list, not a table (got {'kind': 'RRR'})"),
+         "must be a list, not a table (got { kind = \"RRR\" })"),
     Case("top-groups-item-number", {"groups": [1]}, "groups[0]", "must be a table, not an integer (got 1)"),
-    Case("top-points-list", {"points": ["S2"]}, "points", "must be a table, not a list (got ['S2'])"),
+    Case("top-points-list", {"points": ["S2"]}, "points", "must be a table, not a list (got [\"S2\"])"),
     Case("top-links-list", {"links": [16.0]}, "links", "must be a table, not a list (got [16.0])"),
     Case("top-loads-table", {"loads": {"kind": "moment"}}, "loads",
-         "must be a list, not a table (got {'kind': 'moment'})"),
+         "must be a list, not a table (got { kind = \"moment\" })"),
     Case("top-loads-item-string", {"loads": ["moment"]}, "loads[0]", "must be a table, not a string (got 'moment')"),
     Case("top-positions-number", {"positions": 12}, "positions", "must be a table, not an integer (got 12)"),
     Case("top-drawing-bool", {"drawing": True}, "drawing", "must be a table, not a boolean (got True)"),
     Case("top-measured-list", {"measured": [5]}, "measured", "must be a table, not a list (got [5])"),
-    Case("top-output-list", {"output": ["note"]}, "output", "must be a table, not a list (got ['note'])"),
+    Case("top-output-list", {"output": ["note"]}, "output", "must be a table, not a list (got [\"note\"])"),
     Case("top-unknown-key", {"pionts": {}}, "pionts", "unknown key; did you mean 'points'?"),
     Case("top-unknown-key-no-suggestion", {"colour": "red"}, "colour", "unknown key"),
 
@@ -294,7 +294,7 @@ CASES: list[Case] = [
          "must be a table, not a list (got [[0.0, 0.0]])"),
     Case("frame-point-one-coordinate", {"frame.points.O": [0.0]}, "frame.points.O", "must be a point [x, y] (got [0.0])"),
     Case("frame-point-table", {"frame.points.O": {"x": 0.0, "y": 0.0}}, "frame.points.O",
-         "must be a point [x, y] (got {'x': 0.0, 'y': 0.0})"),
+         "must be a point [x, y] (got { x = 0.0, y = 0.0 })"),
     Case("frame-point-string", {"frame.points.C": ["0", 0.55]}, "frame.points.C[0]",
          "must be a number, not a string (got '0')"),
     Case("frame-point-nan", {"frame.points.C": [0.0, NAN]}, "frame.points.C[1]", "must be a finite number (got nan)"),
@@ -422,9 +422,9 @@ CASES: list[Case] = [
          "link 1 already belongs to the frame; a group's links are new", stage="build"),
     Case("group-joints-missing", {"groups.0.joints": DELETE}, "groups[0].joints", "is required but missing"),
     Case("group-joints-two", {"groups.0.joints": ["A", "B"]}, "groups[0].joints",
-         "must have 3 entries, not 2 (got ['A', 'B'])"),
+         "must have 3 entries, not 2 (got [\"A\", \"B\"])"),
     Case("group-joints-same", {"groups.0.joints": ["A", "A", "C"]}, "groups[0].joints",
-         "must name different joints (got ['A', 'A', 'C'])"),
+         "must name different joints (got [\"A\", \"A\", \"C\"])"),
     Case("group-joints-number", {"groups.0.joints": [1, "B", "C"]}, "groups[0].joints[0]",
          "must be a string, not an integer (got 1)"),
     Case("group-joints-empty", {"groups.0.joints": ["A", "", "C"]}, "groups[0].joints[1]", "must not be empty"),
@@ -438,7 +438,7 @@ CASES: list[Case] = [
     # -- RRR
     Case("rrr-lengths-missing", {"groups.0.lengths": DELETE}, "groups[0].lengths", "is required but missing"),
     Case("rrr-lengths-table", {"groups.0.lengths": {"AB": 0.55, "BC": 0.325}}, "groups[0].lengths",
-         "must be a list, not a table (got {'AB': 0.55, 'BC': 0.325})"),
+         "must be a list, not a table (got { AB = 0.55, BC = 0.325 })"),
     Case("rrr-lengths-one", {"groups.0.lengths": [0.55]}, "groups[0].lengths", "must have 2 entries, not 1 (got [0.55])"),
     Case("rrr-lengths-negative", {"groups.0.lengths.1": -0.325}, "groups[0].lengths[1]", "must be > 0 (got -0.325)"),
     Case("rrr-lengths-zero", {"groups.0.lengths.0": 0}, "groups[0].lengths[0]", "must be > 0 (got 0)"),
@@ -512,7 +512,7 @@ CASES: list[Case] = [
     Case("rrp-unknown-key", {"groups.0.lenght": 0.4}, "groups[0].lenght", "unknown key; did you mean 'length'?",
          base="SLIDER_CRANK"),
     Case("rrp-joints-three", {"groups.0.joints": ["A", "B", "C"]}, "groups[0].joints",
-         "must have 2 entries, not 3 (got ['A', 'B', 'C'])", base="SLIDER_CRANK"),
+         "must have 2 entries, not 3 (got [\"A\", \"B\", \"C\"])", base="SLIDER_CRANK"),
 
     # -- RPR
     Case("rpr-offset-string", {"groups.0.offset": "0.1"}, "groups[0].offset",
@@ -528,7 +528,7 @@ CASES: list[Case] = [
     Case("prp-guides-missing", {"groups.0.guides": DELETE}, "groups[0].guides", "is required but missing",
          base="CROSSED_SLIDERS"),
     Case("prp-guides-one", {"groups.0.guides": [{"through": [0.0, 0.0]}]}, "groups[0].guides",
-         "must have 2 entries, not 1 (got [{'through': [0.0, 0.0]}])", base="CROSSED_SLIDERS"),
+         "must have 2 entries, not 1 (got [{ through = [0.0, 0.0] }])", base="CROSSED_SLIDERS"),
     Case("prp-guide-item-number", {"groups.0.guides.1": 90.0}, "groups[0].guides[1]",
          "must be a table, not a number (got 90.0)", base="CROSSED_SLIDERS"),
     Case("prp-guide-unknown-link", {"groups.0.guides.1": {"link": 9, "through": "A"}}, "groups[0].guides[1].link",
@@ -613,7 +613,7 @@ CASES: list[Case] = [
     # -- [[loads]]
     Case("load-stroke-without-working", {"positions.working": DELETE, "positions.start": 0.0}, "loads[0].during",
          "a load that acts in one stroke needs positions.working (which motion of which link is the working stroke) "
-         "(got (0.0, 0.881))", stage="build"),
+         "(got { from = 0.0, to = 0.881 })", stage="build"),
     Case("load-kind-missing", {"loads.0.kind": DELETE}, "loads[0].kind", "is required but missing"),
     Case("load-kind-unknown", {"loads.0.kind": "pressure"}, "loads[0].kind",
          "must be one of moment, force (got 'pressure')"),
@@ -634,9 +634,13 @@ CASES: list[Case] = [
          "must be one of working, idle, always; did you mean 'working'? (got 'work')"),
     Case("load-during-number", {"loads.0.during": 0.5}, "loads[0].during", "must be a string, not a number (got 0.5)"),
     Case("load-during-window-backwards", {"loads.0.during": {"from": 0.9, "to": 0.2}}, "loads[0].during",
-         "must be a window 0 <= from < to <= 1 of the working stroke (got {'from': 0.9, 'to': 0.2})"),
+         "must be a window 0 <= from < to <= 1 of the working stroke (got { from = 0.9, to = 0.2 })"),
+    # Shown as the scene writes it, not as the tuple read from it ((0.0, 0.881), a teacher's variant).
+    Case("load-during-window-with-a-swing", {"driver.swing": [300.0, 340.0], "positions.start": DELETE},
+         "loads[0].during", "a window of the working stroke needs a crank that turns round; a crank driver's "
+         "positions run over its swing: use always (got { from = 0.0, to = 0.881 })", stage="build"),
     Case("load-during-window-past-end", {"loads.0.during.to": 1.5}, "loads[0].during",
-         "must be a window 0 <= from < to <= 1 of the working stroke (got {'from': 0.0, 'to': 1.5})"),
+         "must be a window 0 <= from < to <= 1 of the working stroke (got { from = 0.0, to = 1.5 })"),
     Case("load-during-window-to-missing", {"loads.0.during.to": DELETE}, "loads[0].during.to",
          "is required but missing"),
     Case("load-during-window-nan", {"loads.0.during.from": NAN}, "loads[0].during.from",
@@ -961,16 +965,16 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
     ("[measured.5]\nvelocity = { рb = 38.82 }\n", ("; a key's letters are Latin, digits, _ and -, not 'р' (U+0440) "
      "(a Cyrillic letter for a Latin one that looks the same?): type the Latin letter, or quote the key")),
     # A Chinese input method's full-width forms (a Chinese student's try): each was told to quote the key.
-    ("[positions]\ncount ＝ 12\n", "; '＝' (U+FF1D) is a full-width character (a Chinese or Japanese input "
-     "method's): TOML reads the ASCII '=' where one belongs"),
-    ("[positions]\nplans = [3，10]\n", "; '，' (U+FF0C) is a full-width character (a Chinese or Japanese input "
-     "method's): TOML reads the ASCII ',' where one belongs"),
-    ("[positions]\ncount = １２\n", "; '１' (U+FF11) is a full-width character (a Chinese or Japanese input "
-     "method's): TOML reads the ASCII '1' where one belongs"),
-    ("[scene]\ntitle = “牛头刨床”\n", "; '“' (U+201C) is a typographic quote (a word processor's or an input "
-     "method's): TOML reads the ASCII '\"' where one belongs"),
-    ("[scene]\ngravity = 9.81。\n", "; '。' (U+3002) is a Chinese or Japanese input method's punctuation: TOML "
-     "reads the ASCII '.' where one belongs"),
+    ("[positions]\ncount ＝ 12\n", ("; '＝' (U+FF1D) is a full-width character (a Chinese or Japanese input "
+     "method's): TOML reads the ASCII '=' where one belongs")),
+    ("[positions]\nplans = [3，10]\n", ("; '，' (U+FF0C) is a full-width character (a Chinese or Japanese input "
+     "method's): TOML reads the ASCII ',' where one belongs")),
+    ("[positions]\ncount = １２\n", ("; '１' (U+FF11) is a full-width character (a Chinese or Japanese input "
+     "method's): TOML reads the ASCII '1' where one belongs")),
+    ("[scene]\ntitle = “牛头刨床”\n", ("; '“' (U+201C) is a typographic quote (a word processor's or an input "
+     "method's): TOML reads the ASCII '\"' where one belongs")),
+    ("[scene]\ngravity = 9.81。\n", ("; '。' (U+3002) is a Chinese or Japanese input method's punctuation: TOML "
+     "reads the ASCII '.' where one belongs")),
 ], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key", "full-width-equals", "full-width-comma",
         "full-width-digits", "typographic-quote", "ideographic-full-stop"])
 def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
