@@ -206,6 +206,7 @@ def _find_extremes(mechanism: Mechanism, start: float,
     sweep = solve(mechanism, steps, reference)
     require_moving(sweep)
     speed, _ = working_speed(sweep)
+    _refuse_dwell(mechanism, steps, speed)
 
     def speeds_at(angles: Sequence[float]) -> np.ndarray:
         return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]
@@ -229,6 +230,32 @@ def _find_extremes(mechanism: Mechanism, start: float,
         found[name] = float(lo) if speed[index] == 0 else _zero_between(speeds_at, float(lo), float(hi))
     reversals = tuple(float(steps[i] + steps[i + 1]) / 2.0 for i in np.flatnonzero(rises | falls))
     return found["working"], found["idle"], reversals
+
+
+# A working link's speed this small beside its largest is rounding's: the link stands still.
+_STILL = 1e-9
+
+
+def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray) -> None:
+    """Refuse a working link that stands still over a stretch of the turn (a rod as long as its crank rests its
+    slider at the crank's pivot for half a turn): its speed there is rounding's, whose every change of sign was
+    a turn back (136 a turn), and its extremes and K were noise."""
+    finite = np.isfinite(speed)
+    scale = float(np.max(np.abs(speed[finite]), initial=0.0))
+    still = finite & (np.abs(speed) <= _STILL * scale)
+    if scale == 0.0 or np.count_nonzero(still) < 3:
+        return
+    runs = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
+    first, last = max(zip(runs[::2], runs[1::2] - 1), key=lambda run: run[1] - run[0])
+    if last - first < 2:
+        return
+    working = mechanism.scene.positions.working
+    driver = mechanism.driver
+    raise SceneError(working.where if working else "positions.working",
+                     f"link {working.link if working else '?'} stands still from {driver.describe(float(steps[first]))} "
+                     f"to {driver.describe(float(steps[last]))} (its speed there is rounding's): a working link that "
+                     "dwells has no one extreme position for its stroke to start at; two links lie along each other "
+                     "there (a rod as long as its crank?): change the lengths, or leave positions.working out")
 
 
 def _zero_between(speeds_at: Callable[[Sequence[float]], np.ndarray], lo: float, hi: float) -> float:

@@ -153,3 +153,31 @@ def test_unassemblable_or_singular_start_is_one_clear_error(tmp_path, capsys, na
     assert len(lines) == 1 and lines[0].startswith("graphplan: error: ") and REFUSED[name] in lines[0]
     assert "Traceback" not in captured.err
     assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_a_slider_that_stands_still_for_half_a_turn_is_refused_as_a_dwell(tmp_path):
+    """A rod as long as its crank: x_B = r·(cos φ + |cos φ|) is 0 from φ = 90° to 270°, where the rod lies back
+    along the crank and the slider rests at the pivot.  Its speed there is rounding's, whose every change of sign
+    was a turn back (136 a turn) and whose extremes and K = 0.85 were noise (a teacher's variant)."""
+    from importlib import resources
+
+    text = resources.files("graphplan").joinpath("templates/slider-crank.toml").read_text(encoding="utf-8")
+    crank = float(re.search(r"^length\s*=\s*([\d.]+)\s+# r = lOA", text, flags=re.MULTILINE)[1])
+    equal = re.sub(r"^(length\s*=\s*)[\d.]+(\s+# l = lAB)", rf"\g<1>{crank}\2", text, count=1, flags=re.MULTILINE)
+    assert equal != text
+    with pytest.raises(GraphplanError) as refused:
+        analyse(graphplan.load_text(equal))
+    told = re.search(r"^positions\.working: link 4 stands still from φ = ([\d.]+)° to φ = ([\d.]+)°", str(refused.value))
+    assert told, str(refused.value)
+    # The sweep's samples half a degree apart: the first and last still ones lie within a step inside the dwell.
+    assert 90.0 <= float(told[1]) <= 90.5 and 269.5 <= float(told[2]) <= 270.0
+    scene = tmp_path / "equal.toml"
+    scene.write_text(equal, encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    # Without a working link the mechanism is only moved: its kinematics stand.
+    kinematic = re.sub(r"^working\s*=.*$", "", equal, flags=re.MULTILINE)
+    kinematic = re.sub(r"^start\s*=\s*\"extreme\".*$", "start = 0.0", kinematic, flags=re.MULTILINE)
+    kinematic = re.sub(r"^\[\[loads\]\][\s\S]*?(?=^\[)", "", kinematic, flags=re.MULTILINE)
+    motion = analyse(graphplan.load_text(kinematic)).motion
+    phi = motion.driver
+    np.testing.assert_allclose(motion.point("B").r[:, 0], crank * (np.cos(phi) + np.abs(np.cos(phi))), atol=1e-12)
