@@ -317,6 +317,14 @@ def test_dxf_extents_are_the_svg_page_less_its_margin():
     xmin, ymin, xmax, ymax = bounds(layers)
     assert document.header["$EXTMIN"][:2] == pytest.approx((xmin, ymin))
     assert document.header["$EXTMAX"][:2] == pytest.approx((xmax, ymax))
+    # The limits a CAD program plots within are the drawing's too, not the template's 420 × 297.
+    assert document.header["$LIMMIN"][:2] == pytest.approx((xmin, ymin))
+    assert document.header["$LIMMAX"][:2] == pytest.approx((xmax, ymax))
+    # An A1 sheet's edge alone (a student's sheet_1.dxf had its extents unset, its limits 420 × 297).
+    edge, _ = read_back([Layer("sheet-frame", (Polyline(((0, 0), (841, 0), (841, 594), (0, 594)), closed=True),))])
+    assert edge.header["$EXTMIN"][:2] == pytest.approx((0, 0)) and edge.header["$LIMMIN"][:2] == pytest.approx((0, 0))
+    assert edge.header["$EXTMAX"][:2] == pytest.approx((841, 594))
+    assert edge.header["$LIMMAX"][:2] == pytest.approx((841, 594))
 
 
 def test_dxf_strokes_keep_their_dashes_widths_and_colours():

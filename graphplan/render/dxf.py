@@ -114,9 +114,14 @@ def to_dxf_document(layers: Sequence[Layer]):
         for item in layer.items:
             writer.add(dxf_layer(layer.name, item), item)
     xmin, ymin, xmax, ymax = bounds(layers)
-    # ezdxf copies the model space's extents into $EXTMIN/$EXTMAX when it writes.
     space.dxf.extmin = (xmin, ymin, 0.0)
     space.dxf.extmax = (xmax, ymax, 0.0)
+    # The header's extents and limits, by which a CAD program zooms and plots: they were unset and the template's
+    # 420 × 297 on an A1 sheet.  ezdxf writes $LIMMIN/$LIMMAX from the model space's limits.
+    document.header["$EXTMIN"] = (xmin, ymin, 0.0)
+    document.header["$EXTMAX"] = (xmax, ymax, 0.0)
+    space.dxf.limmin = (xmin, ymin)
+    space.dxf.limmax = (xmax, ymax)
     document.set_modelspace_vport(height=1.1 * (ymax - ymin), center=((xmin + xmax) / 2, (ymin + ymax) / 2))
     return document
 
