@@ -376,6 +376,25 @@ def test_a_plan_at_the_program_s_scale_too_big_for_a4_names_a_pole_distance_that
     assert named_pole(str(error.value), "acceleration") == fitting
 
 
+def test_a_pole_distance_too_long_for_the_sheet_is_refused_before_the_sheets_are_laid_out(monkeypatch):
+    """The plans at the scene's pole distances are drawn at no μl, yet check chose μl first, laying every force
+    sheet out at each μl it tried, and took 70 s to refuse a shaper's twelve plans on A4 (a student's check)."""
+    from graphplan.render import sheet as sheet_module
+
+    expected = named_pole(refusal_on_a4("shaper_six_bar"), "acceleration")   # as the sheets laid out refuse it
+
+    def laid_out(*_args, **_kwargs):
+        raise AssertionError("the force sheets were laid out before the refusal")
+
+    monkeypatch.setattr(sheet_module, "_force_sheets", laid_out)
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet="A4"))
+    with pytest.raises(SceneError) as error:
+        sheet_module.refuse_overflows(analyse(scene))
+    assert "'plan-10-acceleration'" in str(error.value) and "drawing.acceleration_pole = 100 mm" in str(error.value)
+    assert named_pole(str(error.value), "acceleration") == expected
+
+
 def test_plans_too_big_for_a4_are_named_together_with_a_pole_distance_for_each_kind():
     """The tangent mechanism's velocity and acceleration plans of position 10 both overflow A4 at the scene's
     pole distances; one error names both, and the two values it gives make the whole set fit."""

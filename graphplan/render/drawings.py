@@ -63,15 +63,20 @@ def length_scale(analysis: Analysis) -> float:
                              f"{format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} (a {POSITIONS_FIELD_MM:g} mm "
                              f"plan of positions), or leave it out for the program to choose", given)
         return given
-    first = fit_scale(extent, POSITIONS_FIELD_MM)
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
-        return first
+        return fit_scale(extent, POSITIONS_FIELD_MM)
     # The sheets build on this module's drawings: imported here, where they are laid out at each μl tried.
     from .sheet import fewest_sheets_length_scale
 
     return _chosen_scales.get(analysis, sheet, lambda: fewest_sheets_length_scale(
-        analysis, sheet, fitting_length_scale(analysis, sheet, first)))
+        analysis, sheet, largest_length_scale(analysis, sheet)))
+
+
+def largest_length_scale(analysis: Analysis, sheet: str) -> float:
+    """The standard μl that draws the paths of the points into the plan of positions' field, or the smallest
+    larger one at which the drawings at μl fit an empty ``sheet``: where the choice of μl starts."""
+    return fitting_length_scale(analysis, sheet, fit_scale(paths_extent(analysis), POSITIONS_FIELD_MM))
 
 
 def refuse_beyond_paper(analysis: Analysis) -> None:

@@ -43,6 +43,7 @@ from .drawings import (
     at_length_scale,
     fitting_length_scale,
     force_sheet,
+    largest_length_scale,
     length_scale,
     paths_extent,
     plan_sheet,
@@ -646,15 +647,24 @@ def refuse_overflows(analysis: Analysis) -> None:
     """What the scene's sheets would refuse (:func:`_refuse_overflows`), found by laying out the drawings at a
     scale the scene sets alone, not the sheets: ``check``'s word before a run."""
     sheet = analysis.scene.drawing.sheet
-    if sheet != "none":
-        analysis = with_length_scale(analysis)
-        _refuse_overflows(analysis, sheet, kinematics_panels(analysis))
+    if sheet == "none":
+        return
+    if analysis.scene.drawing.length_scale is None:
+        # The plans at the scene's pole distances and the polygons at its μF are drawn at no μl: refused before
+        # μl is chosen, which lays every sheet out at each μl it tries (70 s for a shaper's twelve plans on A4).
+        early = at_length_scale(analysis, largest_length_scale(analysis, sheet))
+        _refuse_overflows(early, sheet, kinematics_panels(early), at_length_scale_too=False)
+    analysis = with_length_scale(analysis)
+    _refuse_overflows(analysis, sheet, kinematics_panels(analysis))
 
 
-def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
+def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel],
+                      at_length_scale_too: bool = True) -> None:
     """One clear error naming every drawing at a scale the scene sets (μl, a pole distance) that fits no empty
-    ``sheet``, with the value of each key that fits and the format that would do, before anything is placed."""
-    overflows = [found for found in (_length_scale_overflow(analysis, sheet, kinematics),
+    ``sheet``, with the value of each key that fits and the format that would do, before anything is placed
+    (``at_length_scale_too``: the drawings at μl among them)."""
+    overflows = [found for found in (_length_scale_overflow(analysis, sheet, kinematics) if at_length_scale_too
+                                     else None,
                                      _plans_overflow(analysis, sheet, kinematics),
                                      _polygons_overflow(analysis, sheet)) if found is not None]
     if not overflows:
