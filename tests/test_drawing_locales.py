@@ -262,3 +262,19 @@ def test_a_chinese_figure_finds_its_cjk_font():
         warnings.simplefilter("always")
         vibration_plots.magnification_figure(io.StringIO(), operating=(1.3, 0.1), text=strings("zh"))
     assert not [str(w.message) for w in caught if "missing from font" in str(w.message)]
+
+
+def test_a_chinese_force_sheet_sets_its_scales_off_with_the_full_width_comma():
+    """«μl = 0.004 m/mm, 力：μF = 100 N/mm，最短 10 mm» mixed a Latin comma with Chinese ones and left «最短» unclear (a
+    Chinese student's reading): the scales are set off by 「，」, the least arrow said to be the arrows'."""
+    from graphplan.render import forces as force_layout
+    from graphplan.render.drawings import force_sheet, with_length_scale
+
+    analysis = with_length_scale(analyse(dataclasses.replace(graphplan.load("fixtures/shaper_six_bar.toml"),
+                                                             locale="zh")))
+    layers = force_layout.layout(force_sheet(analysis, analysis.plans[0]))
+    # A caption's lines joined as they read, a line broken after 「，」 or before 「（」 with nothing lost.
+    captions = "".join(item.text for layer in layers if layer.name.endswith("-caption")
+                       for item in layer.items if isinstance(item, Text))
+    assert "μl = 0.0025 m/mm，力的比例尺 μF = 100 N/mm（箭头不短于 10 mm）" in captions
+    assert "m/mm, " not in captions and "最短" not in captions

@@ -280,8 +280,9 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         anchors.append(Anchor(where, name, POINT_SIZE, open_direction(where, figure)))
     labels = _lettered(anchors + turning_anchors + circle_anchors + arm_anchors, figure)
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
-               ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
-                          text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}")))]
+               text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
+                                   text["body_force_scale"].format(value=format_scale(scale),
+                                                                   least=f"{LEAST_ARROW_MM:g}")))]
     caption += [line for equation in group.projections if (line := _projection(sheet, equation))]
     caption += equations
     caption += circle_caption
@@ -891,8 +892,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     parts.append(f"{_sign(-sum(moments.values()))} Fb·hb")
     equation = _leading(" ".join(parts))
     caption = [text["lever_title"],
-               ", ".join((sheet.lever_scale_line,
-                          text["body_force_scale"].format(value=format_scale(scale), least=f"{LEAST_ARROW_MM:g}"))),
+               text["comma"].join((sheet.lever_scale_line,
+                                   text["body_force_scale"].format(value=format_scale(scale),
+                                                                   least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
                _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
