@@ -29,6 +29,7 @@ examples:
   graphplan run fixtures/ratchet_crank_rocker.toml --sheet A2   the course-project sheets on A2
   graphplan check fixtures/ratchet_crank_rocker.toml            validates and prints the structure formula
   graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
+  graphplan new shaper --locale ru                              a starter whose sheets and note are in Russian
 """
 
 
@@ -73,6 +74,8 @@ def _parser() -> argparse.ArgumentParser:
     new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine")
     new.add_argument("kind", choices=KINDS, help="the kind of mechanism, or a flywheel or rotor without one")
     new.add_argument("--out", type=Path, default=None, help="the scene file to write (default: KIND.toml here)")
+    new.add_argument("--locale", choices=LOCALES, default="en",
+                     help="the language of its drawings and note (scene.locale; its comments stay English)")
     return parser
 
 
@@ -83,7 +86,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if arguments.command == "check":
             return _check(arguments.scene)
         if arguments.command == "new":
-            return _new(arguments.kind, arguments.out)
+            return _new(arguments.kind, arguments.out, arguments.locale)
         return _run(arguments)
     except GraphplanError as error:
         if isinstance(error, SceneError) and error.where == "drawing.sheet" and getattr(arguments, "sheet", None):
@@ -186,12 +189,12 @@ def _run(arguments: argparse.Namespace) -> int:
     return 0
 
 
-def _new(kind: str, out: Path | None) -> int:
+def _new(kind: str, out: Path | None, locale: str = "en") -> int:
     from .output import write_file
     from .starters import starter
 
     target = out if out is not None else Path(f"{kind}.toml")
-    write_file(target, starter(kind), replace=False)
+    write_file(target, starter(kind, locale), replace=False)
     print(f"wrote {target}")
     print(f"next: graphplan check {target}, then graphplan run {target}")
     return 0

@@ -277,6 +277,20 @@ def test_new_does_not_overwrite_a_scene(tmp_path, capsys):
     assert "exists already" in capsys.readouterr().err
 
 
+@pytest.mark.parametrize("kind", ["shaper", "rotor"])
+@pytest.mark.parametrize("locale", ["ru", "zh"])
+def test_new_writes_a_starter_in_the_language_asked_for(tmp_path, kind, locale):
+    """graphplan new wrote every starter with locale = "en": a Chinese student's first run drew English sheets."""
+    import graphplan
+
+    scene = tmp_path / f"{kind}.toml"
+    assert main(["new", kind, "--locale", locale, "--out", str(scene)]) == 0
+    written = scene.read_text(encoding="utf-8")
+    assert graphplan.load(scene).locale == locale
+    # Only the locale differs from the English starter; its comments and values are the same.
+    assert written.replace(f'"{locale}"', '"en"', 1) == starter(kind)
+
+
 def test_a_progress_line_only_once_a_second_has_passed(capsys):
     Progress(after=3600.0).say("analysing")
     assert capsys.readouterr().err == ""
