@@ -233,12 +233,23 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
             layers = list(laid_out.layers) if laid_out else _force_sheet_layers(analysis, plan, pieces)
             found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None))
+            found += _note_parts(f"forces_{plan.number}", layers, pieces)
             rubbing = plan.with_friction
             if "forces" in pieces and rubbing is not None and not rubbing.locked:
                 laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
                 layers = list(laid_out.layers) if laid_out else _force_sheet_layers(analysis, plan, pieces, True)
                 found.append(Drawing(f"forces_friction_{plan.number}", layers))
+                found += _note_parts(f"forces_friction_{plan.number}", layers, pieces)
     return found
+
+
+def _note_parts(stem: str, layers: list, pieces: tuple[str, ...]) -> list[Drawing]:
+    """A force sheet too tall for a page of the note, cut between its rows for the note to show part by part
+    (``forces_3-1.svg``, ...), where the run writes the note."""
+    from .render.note_parts import note_parts
+
+    parts = note_parts(layers) if "note" in pieces else None
+    return [Drawing(f"{stem}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 
 def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_friction: bool = False) -> list:

@@ -15,6 +15,7 @@ import re
 import shutil
 import subprocess
 from pathlib import Path
+from xml.etree import ElementTree
 
 import pytest
 
@@ -58,18 +59,35 @@ def pages_with(pdf_path: Path, words: str) -> list[str]:
     return [text for text in texts if words in text]
 
 
+SVG = "{http://www.w3.org/2000/svg}"
+PART = re.compile(r"^(.*)-(\d+)\.svg$")
+
+
+def shown_as(file: str, folder: Path) -> str:
+    """The picture the note shows for a drawing: itself, or the first of the parts it is cut into for the note."""
+    first = f"{file.removesuffix('.svg')}-1.svg"
+    return first if (folder / first).is_file() else file
+
+
 def test_every_drawing_and_plot_written_is_a_numbered_figure_in_its_section(shaper):
     note = (shaper / "note.md").read_text(encoding="utf-8")
     found = figures(note)
     written = {path.name for path in shaper.glob("*.svg") if not path.name.startswith("sheet_")}
-    assert [file for _, file, _ in found] and {file for _, file, _ in found} == written
-    for number, (alt, file, caption) in enumerate(found, 1):
+    # A drawing cut into parts for the note is shown part by part, not whole.
+    parted = {f"{PART.match(name)[1]}.svg" for name in written if PART.match(name)}
+    assert parted >= {"forces_3.svg", "forces_10.svg"}
+    assert [file for _, file, _ in found] and {file for _, file, _ in found} == written - parted
+    number = 0
+    for alt, file, caption in found:
+        part = PART.match(file)
+        if part is None or part[2] == "1":   # the parts of one drawing are one figure
+            number += 1
         assert caption == f"Figure {number}. {alt}"
         assert (shaper / file).is_file()
     for position in (3, 10):
         for file in (f"plan_{position}.svg", f"forces_{position}.svg", f"forces_friction_{position}.svg"):
-            assert heading_above(note, file, 3).split(": ")[0].endswith(f"Position {position}")
-    assert heading_above(note, "forces_3.svg", 2).endswith("Force analysis")
+            assert heading_above(note, shown_as(file, shaper), 3).split(": ")[0].endswith(f"Position {position}")
+    assert heading_above(note, shown_as("forces_3.svg", shaper), 2).endswith("Force analysis")
     assert heading_above(note, "plan_3.svg", 2).endswith("Kinematic analysis by the plan method")
     assert heading_above(note, "positions.svg", 2).endswith("Initial data")
     assert heading_above(note, "diagrams.svg", 3).endswith("Kinematic diagrams of the output link 6")
@@ -89,7 +107,7 @@ def test_the_html_sets_each_figure_with_its_caption_and_links_it_to_its_drawing(
 def test_the_pdf_shows_each_drawing_on_the_page_of_its_caption(shaper):
     # Lettering of the drawings that the note's text never writes: their captions.
     for caption, lettering in (("Figure 2. Velocity and acceleration plans, position 3", "Mechanism in position 3"),
-                               ("Figure 6. Force analysis, position 3", "Force polygon")):
+                               ("Figure 6. Force analysis, position 3 (part 1 of", "Force polygon")):
         pages = pages_with(shaper / "note.pdf", caption)
         assert len(pages) == 1 and lettering in pages[0]
     assert "Mechanism in position" not in (shaper / "note.md").read_text(encoding="utf-8")
@@ -146,7 +164,10 @@ def test_the_plot_of_the_balancing_load_closes_the_section_on_it(tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out), "--only", "forces,figures,note", "--locale", "en"]) == 0
     note = (out / "note.md").read_text(encoding="utf-8")
-    assert [file for _, file, _ in figures(note)] == ["forces_5.svg", "forces_11.svg", "balancing.svg"]
+    parts = {number: sorted((path.name for path in out.glob(f"forces_{number}-*.svg")),
+                            key=lambda name: int(PART.match(name)[2])) for number in (5, 11)}
+    assert all(parts.values())
+    assert [file for _, file, _ in figures(note)] == [*parts[5], *parts[11], "balancing.svg"]
     assert heading_above(note, "balancing.svg", 3).endswith("Balancing moment over the cycle")
 
 
@@ -160,3 +181,33 @@ def test_a_title_with_a_bracket_and_a_backslash_keeps_its_figure_whole(tmp_path)
     page = (out / "note.html").read_text(encoding="utf-8")
     assert ('<figure><a href="motion.svg"><img src="motion.svg" alt="Motion of the machine: Press v2] \\ draft" /></a>'
             "<figcaption>Figure 2. Motion of the machine: Press v2] \\ draft</figcaption></figure>") in page
+
+
+def test_a_force_sheet_too_tall_for_a_page_is_shown_in_parts_that_print_readably(shaper):
+    """The shaper's force sheet, 343 × 980 mm, went into the note's pages shrunk to a quarter, its letters 3 pt
+    high (a Chinese student's PDF and Word notes).  Cut between its rows, each part prints at half size or more on
+    a page; together the parts hold every layer of the whole, the heading over the first, in order down the sheet."""
+    from graphplan.render.note_parts import LEAST_PRINT_SCALE, PAGE_FIGURE_MM
+
+    whole = ElementTree.parse(shaper / "forces_3.svg").getroot()
+    whole_ids = {group.get("id") for group in whole.findall(f"{SVG}g") if len(group)}
+    parts = sorted(shaper.glob("forces_3-*.svg"), key=lambda path: int(PART.match(path.name)[2]))
+    assert len(parts) >= 2
+    seen: list[str] = []
+    for k, path in enumerate(parts):
+        root = ElementTree.parse(path).getroot()
+        ids = [group.get("id") for group in root.findall(f"{SVG}g")]
+        assert ("sheet-title" in ids) == (k == 0)
+        seen += ids
+        width, height = (float(root.get(side).removesuffix("mm")) for side in ("width", "height"))
+        # Less its 8 mm margins, the part prints at half size or more within a page's figure (bar its width,
+        # which no cut between rows changes).
+        scale = min(PAGE_FIGURE_MM[0] / (width - 16.0), PAGE_FIGURE_MM[1] / (height - 16.0))
+        assert scale >= LEAST_PRINT_SCALE or PAGE_FIGURE_MM[0] / (width - 16.0) < LEAST_PRINT_SCALE
+        assert PAGE_FIGURE_MM[1] / (height - 16.0) >= LEAST_PRINT_SCALE
+    assert sorted(seen) == sorted(whole_ids) and len(seen) == len(set(seen))
+    # In the whole's order down the sheet: each part's layers stand below the last part's.
+    order = [group.get("id") for group in whole.findall(f"{SVG}g") if len(group)]
+    firsts = [order.index(next(g.get("id") for g in ElementTree.parse(path).getroot().findall(f"{SVG}g")
+                                if g.get("id") != "sheet-title")) for path in parts]
+    assert firsts == sorted(firsts)

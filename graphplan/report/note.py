@@ -177,12 +177,22 @@ class _Note:
 
     def figure(self, file: str, caption: str) -> None:
         """The drawing ``file`` when the run writes it beside the note, numbered, its caption under it (as GOST
-        2.105 sets a figure's); a picture alone in its paragraph, which the HTML, LaTeX and Word notes place."""
-        if file in self.figures:
-            self.figures_shown += 1
-            alternative = re.sub(r"([\\\[\]])", r"\\\1", caption)   # a title's brackets must not close it
-            self.para(f"![{alternative}]({file})")
-            self.para(self.t("figure_caption", number=self.figures_shown, caption=caption))
+        2.105 sets a figure's); a picture alone in its paragraph, which the HTML, LaTeX and Word notes place.
+        A drawing too tall for a page (a force sheet) is shown in the parts the run cut it into for the note
+        (``forces_3-1.svg``, ...), each under the figure's number and caption with its part."""
+        if file not in self.figures:
+            return
+        self.figures_shown += 1
+        stem = file.removesuffix(".svg")
+        parts = list(itertools.takewhile(lambda part: part in self.figures,
+                                         (f"{stem}-{k}.svg" for k in itertools.count(1))))
+        shown = [(file, caption)] if not parts else [
+            (part, self.t("figure_part", caption=caption, part=k, count=len(parts)))
+            for k, part in enumerate(parts, start=1)]
+        for picture, words in shown:
+            alternative = re.sub(r"([\\\[\]])", r"\\\1", words)   # a title's brackets must not close it
+            self.para(f"![{alternative}]({picture})")
+            self.para(self.t("figure_caption", number=self.figures_shown, caption=words))
 
     def captioned(self, caption: str, table_lines: list[str]) -> None:
         """A table another report wrote, with the note's numbered caption."""

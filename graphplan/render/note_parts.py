@@ -1,0 +1,71 @@
+"""A drawing too tall for a page of the note, cut between its rows into parts a page holds at a readable size.
+
+A force sheet stands in one column of rows (each group beside its polygon, then Zhukovsky's lever): 330 mm wide
+and near a metre tall for a six-bar, it went into the note's PDF and Word pages shrunk to a quarter, its letters
+3 pt high.  The note shows it part by part instead, each part a whole number of rows, the sheet's heading over
+the first; the drawing itself, forces_N.svg, stays whole.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from .force_rows import HEADING_LAYER
+from .primitives import Layer, bounds
+
+# A note's page holds a figure this wide and tall (mm): A4's line, and the height that leaves room for its caption
+# (report/word.py and report/latex.py set their pictures within these).
+PAGE_FIGURE_MM = (170.0, 200.0)
+# A figure printed smaller than this (its letters 3.5 mm high come out under 1.75 mm, some 7 pt) is cut into parts.
+LEAST_PRINT_SCALE = 0.5
+
+
+def note_parts(layers: Sequence[Layer]) -> list[list[Layer]] | None:
+    """``layers`` cut between their rows into parts that each print on a page at :data:`LEAST_PRINT_SCALE` or
+    larger, the heading with the first; None where the drawing prints so whole, or no cut between rows helps."""
+    drawn = [layer for layer in layers if layer.items]
+    if not drawn:
+        return None
+    width, height = _size(drawn)
+    page_width, page_height = PAGE_FIGURE_MM
+    if min(page_width / width, page_height / height) >= LEAST_PRINT_SCALE:
+        return None
+    tallest = page_height / LEAST_PRINT_SCALE
+    heading = [layer for layer in drawn if layer.name == HEADING_LAYER]
+    parts: list[list[Layer]] = []
+    current: list[Layer] = list(heading)
+    for row in _rows([layer for layer in drawn if layer.name != HEADING_LAYER]):
+        if current and any(layer.name != HEADING_LAYER for layer in current) and _size([*current, *row])[1] > tallest:
+            parts.append(current)
+            current = []
+        current += row
+    parts.append(current)
+    return parts if len(parts) > 1 else None
+
+
+def _rows(layers: Sequence[Layer]) -> list[list[Layer]]:
+    """The layers grouped into bands that overlap in height, top down: a sheet's rows (a group cut free beside its
+    polygon); a band of captions alone goes with the drawings over it, whose captions they are."""
+    ordered = sorted(layers, key=lambda layer: -bounds([layer])[3])
+    rows: list[list[Layer]] = []
+    low = None
+    for layer in ordered:
+        _, bottom, _, top = bounds([layer])
+        if rows and low is not None and top >= low:
+            rows[-1].append(layer)
+            low = min(low, bottom)
+        else:
+            rows.append([layer])
+            low = bottom
+    joined: list[list[Layer]] = []
+    for row in rows:
+        if joined and all(layer.name.endswith("-caption") for layer in row):
+            joined[-1] += row
+        else:
+            joined.append(row)
+    return joined
+
+
+def _size(layers: Sequence[Layer]) -> tuple[float, float]:
+    x0, y0, x1, y1 = bounds(list(layers))
+    return x1 - x0, y1 - y0
