@@ -52,7 +52,7 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
-from .force_rows import HEADING_LAYER, Rows
+from .force_rows import HEADING_LAYER
 from .formats import (
     BIGGER,
     FORMATS,
@@ -296,7 +296,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
 
     enlarged = drawn if drawn.lever_enlarged else None
 
-    def cut(drawn: force_layout.ForceSheet, rows: Rows, one: Panel,
+    def cut(drawn: force_layout.ForceSheet, one: Panel,
             parts: list[Arrangement]) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
         """The parts as panels, each going on from the one before; the lever drawn larger where the sheet holds
         it so on its part without adding a part."""
@@ -315,7 +315,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     before: dict[str, tuple[float, float]] = {}
     # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
     # gives every part its heading (a part with none says whose it is by its title block alone).
-    headless: tuple[force_layout.ForceSheet, Rows, Panel, list[Arrangement]] | None = None
+    headless: tuple[force_layout.ForceSheet, Panel, list[Arrangement]] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
@@ -334,12 +334,12 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
         parts = rows.parts(fits, headless=False)
         if parts is not None:
-            drawn, one, panels = cut(drawn, rows, one, parts)
+            drawn, one, panels = cut(drawn, one, parts)
             headless = None
             break
         if headless is None:
             parts = rows.parts(fits)
-            headless = (drawn, rows, one, parts) if parts is not None else None
+            headless = (drawn, one, parts) if parts is not None else None
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
         unheld = rows.unheld(fits)
