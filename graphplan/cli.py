@@ -112,6 +112,7 @@ def _check(path: Path) -> int:
         print(f"{path}: ok")
         print(f"no mechanism; {', '.join(tables)}")
         print(pieces)
+        _print_outcomes(scene, None)
         return 0
     # The whole analysis, not only the structure: a position the mechanism cannot reach, or a reading of
     # [measured] that names no segment of its plan, is refused here as the run would refuse it.
@@ -130,7 +131,19 @@ def _check(path: Path) -> int:
               f"K = φw/φi = {working / idle:.4f}")
     print(pieces)
     _print_warnings(analysis)
+    _print_outcomes(scene, analysis)
     return 0
+
+
+def _print_outcomes(scene: Scene, analysis: Analysis | None) -> None:
+    """The warnings ``run`` gives of its outcomes (a machine that stalls, a speed near resonance), which
+    ``check`` gave none of: the dynamics integrated as the run integrates them."""
+    from .deliverables import MachineDynamics, chosen, outcome_warnings
+
+    pieces = chosen(scene, analysis)
+    dynamics = MachineDynamics(analysis if analysis is not None else scene) if "dynamics" in pieces else None
+    for told in outcome_warnings(scene, pieces, dynamics):
+        print(f"warning: {told}")
 
 
 def _pieces(scene: Scene, analysis: Analysis | None) -> str:

@@ -600,6 +600,25 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     return found
 
 
+def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[str]:
+    """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
+    stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
+    told = []
+    if dynamics is not None:
+        told += [line for line in (dynamics.stall_warning(), dynamics.unsettled_warning(),
+                                   dynamics.off_design_warning()) if line is not None]
+    if "balancing" in pieces and (couple := _static_couple(scene)) is not None:
+        told.append(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its "
+                    "masses turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
+    if "vibration" in pieces:
+        from .vibration import isolation_warning, resonance_warning
+
+        assert scene.vibration is not None
+        told += [line for line in (resonance_warning(scene.vibration), isolation_warning(scene.vibration))
+                 if line is not None]
+    return told
+
+
 def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
           formats: tuple[str, ...] = ("svg",), warn: Callable[[str], None] | None = None) -> dict[str, str | bytes]:
     """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots.
@@ -612,20 +631,9 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # which tells all the scene has whichever drawings are asked for.
     explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
-    if dynamics is not None and warn is not None:
-        for told in (dynamics.stall_warning(), dynamics.unsettled_warning(), dynamics.off_design_warning()):
-            if told is not None:
-                warn(told)
-    if "balancing" in pieces and warn is not None and (couple := _static_couple(scene)) is not None:
-        warn(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its masses "
-             "turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
-    if "vibration" in pieces and warn is not None:
-        from .vibration import isolation_warning, resonance_warning
-
-        assert scene.vibration is not None
-        for told in (resonance_warning(scene.vibration), isolation_warning(scene.vibration)):
-            if told is not None:
-                warn(told)
+    if warn is not None:
+        for told in outcome_warnings(scene, pieces, dynamics):
+            warn(told)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     lever_scales: dict[str, float] = {}
     for drawing in drawings(scene, analysis, pieces, dynamics):

@@ -241,6 +241,11 @@ def test_a_machine_that_stalls_is_told_on_the_command_line_in_the_results_and_in
     assert (f"warning: dynamics: the machine stalls at t = {motion['stalled_at']:.4g} s, "
             f"φ = {motion['stalled_at_angle_deg']:.1f}° ({turned:.1f}° from position 1)") in printed
     assert "it stalls, coming to rest" in (out / "note.md").read_text(encoding="utf-8")
+    # check warns of it as run does (it said ok and nothing more, a teacher's variant).
+    assert main(["check", str(scene)]) == 0
+    checked = capsys.readouterr().out
+    stall = next(line for line in printed.splitlines() if line.startswith("warning: dynamics: the machine stalls"))
+    assert stall in checked.splitlines()
     # motion.svg shows why: the motor's torque against the resistance over the angle turned.
     figure = (out / "motion.svg").read_text(encoding="utf-8")
     assert "Why it stalls" in figure and "the resisting forces reduced to the shaft" in figure

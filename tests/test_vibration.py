@@ -502,6 +502,10 @@ def test_a_damping_too_small_to_matter_near_resonance_is_warned_of_as_none_is(tm
     assert code == 0
     assert f"with little damping (ζ = 1e-09): the amplitude X = {0.02 / 100.0 * magnification:.4g} m is " \
            f"{magnification:.4g} times m·e/M" in told.out
+    from graphplan.cli import main
+
+    assert main(["check", str(tmp_path / "machine.toml")]) == 0   # check warns as run does
+    assert "warning: vibration: ω within" in capsys.readouterr().out
     (tmp_path / "damped").mkdir()
     code, told = _run(tmp_path / "damped", f"mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = {omega!r}\n"
                                           "damping_ratio = 0.2\n", capsys)
