@@ -133,6 +133,8 @@ def test_a_chinese_note_ends_its_sentences_and_lists_its_positions_the_chinese_w
         note = note_markdown(analyse(dataclasses.replace(graphplan.load(FIXTURES / f"{name}.toml"), locale="zh")))
     prose = [line for line in note.splitlines() if line and not line.startswith(("|", "!", "#"))]
     assert not [line for line in prose if re.search(r"[.;]\**$", line)]
+    # No Latin space beside full-width punctuation («比较。 运动副反力», «N （负号»).
+    assert not [line for line in prose if re.search(r"[。，；：！？、）] | （", line)]
     listed = re.search(r"对位置 ([\d、]+) ", note) or re.search(r"位置 ([\d、, ]+)", note)
     assert listed and "," not in listed[1]
 

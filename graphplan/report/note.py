@@ -85,6 +85,17 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     return "\n".join(note.lines).rstrip("\n") + "\n"
 
 
+# Chinese sets no space beside its full-width punctuation: the sentences joined with a Latin space read
+# «比较。 运动副反力», «122.9°） 处», «N （负号».
+_AFTER_FULL_WIDTH = re.compile(r"(?<=[。，；：！？、）」])[ ]+")
+_BEFORE_FULL_WIDTH = re.compile(r"[ ]+(?=[（「])")
+
+
+def _set_close(line: str) -> str:
+    """A line of a Chinese note without the Latin spaces beside its full-width punctuation."""
+    return _BEFORE_FULL_WIDTH.sub("", _AFTER_FULL_WIDTH.sub("", line))
+
+
 def note_html(analysis: Analysis | None, dynamics=None, markdown: str | None = None, scene: Scene | None = None) -> str:
     """The explanatory note as a standalone HTML page (from its ``markdown`` when already written)."""
     from .html import to_html
@@ -156,6 +167,8 @@ class _Note:
         return self.text["comma"] + self.sense(value) if self.n(value) != "0" else ""
 
     def para(self, *lines: str) -> None:
+        if self.scene.locale == "zh":
+            lines = tuple(map(_set_close, lines))
         self.lines += [*lines, ""]
 
     def heading(self, level: int, title: str, number: object = None) -> None:
