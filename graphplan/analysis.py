@@ -185,7 +185,7 @@ def analyse(scene: Scene) -> Analysis:
             balance = equilibrium(mechanism, motion, loads)
             if friction:
                 with_friction = equilibrium(mechanism, motion, loads, friction)
-    locked_spans = locked_between(mechanism, positions, friction, sweep, paths) if friction else ()
+    locked_spans = locked_between(mechanism, positions, friction, sweep, paths)
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(scene, (*plans, *every))

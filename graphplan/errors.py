@@ -55,14 +55,10 @@ def as_written(value: object, nested: bool = False) -> str:
     return repr(value)
 
 
-def window_table(window: tuple[float, float]) -> dict[str, float]:
-    """A load's window of the working stroke as the scene's table writes it, for an error to show."""
-    return {"from": window[0], "to": window[1]}
-
-
 def _key(key: object) -> str:
     text = str(key)
     return text if text and all(c.isascii() and (c.isalnum() or c in "_-") for c in text) else f'"{text}"'
+
 
 class AssemblyError(GraphplanError, ValueError):
     """A position the mechanism cannot reach.

@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .errors import SceneError, window_table
+from .errors import SceneError
 from .groups import Driver, Group, Guide
 from .scene import PointSpec, Scene
 
@@ -297,6 +297,11 @@ def _translating_links(scene: Scene) -> set[int]:
     return links
 
 
+def _as_written(window: tuple[float, float]) -> dict[str, float]:
+    """A load's window of the working stroke as the scene's table writes it, for an error to show."""
+    return {"from": window[0], "to": window[1]}
+
+
 def _check_references(mechanism: Mechanism, known_points: set[str], known_links: set[int]) -> None:
     scene = mechanism.scene
     for number, spec in scene.links.items():
@@ -313,12 +318,12 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if load.during != "always" and scene.positions.working is None:
             raise SceneError(f"{load.where}.during", "a load that acts in one stroke needs positions.working "
                                                      "(which motion of which link is the working stroke)",
-                             window_table(load.during) if isinstance(load.during, tuple) else load.during)
+                             _as_written(load.during) if isinstance(load.during, tuple) else load.during)
         if isinstance(load.during, tuple) and not scene.driver.cyclic:
             raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank that turns "
                                                      f"round; a {scene.driver.kind} driver's positions run over its "
                                                      f"{scene.driver.run_key}: "
-                                                     "use always", window_table(load.during))
+                                                     "use always", _as_written(load.during))
     working = scene.positions.working
     if working is not None:
         if working.link not in known_links or working.link == scene.frame_link:

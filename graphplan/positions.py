@@ -243,7 +243,7 @@ def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray) ->
     finite = np.isfinite(speed)
     scale = float(np.max(np.abs(speed[finite]), initial=0.0))
     still = finite & (np.abs(speed) <= _STILL * scale)
-    if scale == 0.0 or np.count_nonzero(still) < 3:
+    if scale == 0.0 or not still.any():
         return
     runs = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
     first, last = max(zip(runs[::2], runs[1::2] - 1), key=lambda run: run[1] - run[0])

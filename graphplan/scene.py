@@ -236,6 +236,8 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
 
 # Typographic quotes an editor or an input method puts for the straight one TOML takes.
 _QUOTES = {"“": '"', "”": '"', "„": '"', "«": '"', "»": '"', "‘": "'", "’": "'", "「": '"', "」": '"'}
+# Ideographic punctuation that Unicode does not fold to ASCII.
+_IDEOGRAPHIC = {"、": ",", "。": ".", "　": " "}
 
 
 def _ascii_counterpart(character: str) -> tuple[str, str] | None:
@@ -243,8 +245,8 @@ def _ascii_counterpart(character: str) -> tuple[str, str] | None:
     input method types '，' for ',', '＝' for '=', '１２' for 12 and “ ” for quotes."""
     if character in _QUOTES:
         return _QUOTES[character], "a typographic quote (a word processor's or an input method's)"
-    if character in ("、", "。", "　"):
-        return {"、": ",", "。": ".", "　": " "}[character], "a Chinese or Japanese input method's punctuation"
+    if character in _IDEOGRAPHIC:
+        return _IDEOGRAPHIC[character], "a Chinese or Japanese input method's punctuation"
     plain = unicodedata.normalize("NFKC", character)
     if character and not character.isascii() and len(plain) == 1 and plain.isascii() and plain.isprintable():
         return plain, "a full-width character (a Chinese or Japanese input method's)"

@@ -259,7 +259,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
             if abs(intercept) > band:
                 start_x = (math.copysign(band, intercept) - intercept) / slope if slope else 0.0
             end_x = width + 4.0
-            if abs(intercept + slope * end_x) > band:
+            if slope and abs(intercept + slope * end_x) > band:
                 end_x = (math.copysign(band, intercept + slope * end_x) - intercept) / slope
             line = ((start_x, intercept + slope * start_x), (end_x, intercept + slope * end_x))
             items.append(Polyline(line, _TANGENT))

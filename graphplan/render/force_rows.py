@@ -46,6 +46,11 @@ HEADLESS = ""
 Shape = tuple[tuple[tuple[int, bool], ...], ...]
 
 
+def has_heading(layers: Sequence[Layer]) -> bool:
+    """Whether a force sheet's drawing (or a part of it) stands under its heading."""
+    return any(layer.name == HEADING_LAYER for layer in layers)
+
+
 @dataclass(frozen=True)
 class Drawing:
     """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption, the first its title."""

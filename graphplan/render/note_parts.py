@@ -34,11 +34,13 @@ def note_parts(layers: Sequence[Layer]) -> list[list[Layer]] | None:
     heading = [layer for layer in drawn if layer.name == HEADING_LAYER]
     parts: list[list[Layer]] = []
     current: list[Layer] = list(heading)
+    holds_a_row = False   # the heading alone is no part: the first row goes under it, however tall
     for row in _rows([layer for layer in drawn if layer.name != HEADING_LAYER]):
-        if current and any(layer.name != HEADING_LAYER for layer in current) and _size([*current, *row])[1] > tallest:
+        if holds_a_row and _size([*current, *row])[1] > tallest:
             parts.append(current)
             current = []
         current += row
+        holds_a_row = True
     parts.append(current)
     return parts if len(parts) > 1 else None
 

@@ -33,7 +33,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..errors import SceneError
-from .force_rows import HEADING_LAYER
+from .force_rows import HEADING_LAYER, has_heading
 from .formats import BIGGER, PADDING_MM, PageGeometry, Rect, check_sheet, holds, orientations, page_geometry
 from .primitives import Layer, bounds
 
@@ -98,7 +98,7 @@ class Panel:
 
 def _headless(panel: Panel) -> bool:
     """Whether ``panel`` is a part that goes on from another with no heading of its own."""
-    return bool(panel.continues) and not any(layer.name == HEADING_LAYER for layer in panel.layers)
+    return bool(panel.continues) and not has_heading(panel.layers)
 
 
 def _whole_of(panel: Panel) -> str:

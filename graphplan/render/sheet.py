@@ -52,7 +52,7 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
-from .force_rows import HEADING_LAYER
+from .force_rows import has_heading
 from .formats import (
     BIGGER,
     FORMATS,
@@ -278,7 +278,7 @@ def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[tuple[Pa
 
 def _headless(part: Arrangement) -> bool:
     """Whether a part of a force sheet stands without a heading (a drawing too big to stand under one)."""
-    return not any(layer.name == HEADING_LAYER for layer in part.layers)
+    return not has_heading(part.layers)
 
 
 def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
@@ -649,22 +649,19 @@ def refuse_overflows(analysis: Analysis) -> None:
     sheet = analysis.scene.drawing.sheet
     if sheet == "none":
         return
-    if analysis.scene.drawing.length_scale is None:
-        # The plans at the scene's pole distances and the polygons at its μF are drawn at no μl: refused before
-        # μl is chosen, which lays every sheet out at each μl it tries (70 s for a shaper's twelve plans on A4).
-        early = at_length_scale(analysis, largest_length_scale(analysis, sheet))
-        _refuse_overflows(early, sheet, kinematics_panels(early), at_length_scale_too=False)
-    analysis = with_length_scale(analysis)
+    # Where μl is the program's, the drawings at μl fit at the largest it starts its choice from, and the plans
+    # at the scene's pole distances and the polygons at its μF are drawn at no μl: all measured there, not at the
+    # μl chosen, whose choice lays every sheet out at each μl it tries (70 s for a shaper's twelve plans on A4).
+    given = analysis.scene.drawing.length_scale
+    analysis = with_length_scale(analysis) if given is not None else \
+        at_length_scale(analysis, largest_length_scale(analysis, sheet))
     _refuse_overflows(analysis, sheet, kinematics_panels(analysis))
 
 
-def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel],
-                      at_length_scale_too: bool = True) -> None:
+def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
     """One clear error naming every drawing at a scale the scene sets (μl, a pole distance) that fits no empty
-    ``sheet``, with the value of each key that fits and the format that would do, before anything is placed
-    (``at_length_scale_too``: the drawings at μl among them)."""
-    overflows = [found for found in (_length_scale_overflow(analysis, sheet, kinematics) if at_length_scale_too
-                                     else None,
+    ``sheet``, with the value of each key that fits and the format that would do, before anything is placed."""
+    overflows = [found for found in (_length_scale_overflow(analysis, sheet, kinematics),
                                      _plans_overflow(analysis, sheet, kinematics),
                                      _polygons_overflow(analysis, sheet)) if found is not None]
     if not overflows:
@@ -788,9 +785,10 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
             scale = next_standard_scale(scale)
         return f"drawing.{kind}_scale = {format_scale(given_scale)}", None
     driven = [abs(getattr(position, kind).value(analysis.mechanism.driver.joint)) for position in positions]
+    # The program's scale as the plan's caption writes it (the errors are in English).
     setting = f"drawing.{kind}_pole = {pole:g} mm" if pole is not None else \
-        f"{kind} scale {'μV' if kind == 'velocity' else 'μa'} = {scale_factor(getattr(positions[0], kind).scale)} " \
-        f"{'(m/s)/mm' if kind == 'velocity' else '(m/s²)/mm'} (the program's)"
+        f"{kind} scale " + strings("en")[f"{kind}_scale"].format(
+            value=scale_factor(getattr(positions[0], kind).scale)) + " (the program's)"
     if not all(pa > 0 for pa in driven):
         return setting, None
     # A plan grows with its pole distance: for each position the largest whole millimetre that fits, by halving,
