@@ -141,6 +141,11 @@ class Polygon:
     lines: tuple[Line, ...] = ()
     crossing_deg: float | None = None
 
+    @property
+    def equations(self) -> tuple[str, ...]:
+        """The polygon's equations one by one: a group of a link and a block closes two, written ``…= 0;  …= 0``."""
+        return tuple(part.strip() for part in self.equation.split(";") if part.strip())
+
 
 @dataclass(frozen=True)
 class Found:

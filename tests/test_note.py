@@ -126,13 +126,15 @@ def test_every_heading_of_a_chinese_note_is_in_chinese(name):
 @pytest.mark.parametrize("name", [*KINDS, "double_rocker_swing"])
 def test_a_chinese_note_ends_its_sentences_and_lists_its_positions_the_chinese_way(name):
     """「pa = VA/μV = 1/0.01 = 100.00 mm.」, 「**计入运动副摩擦.**」 and 「位置 3, 10」 were set with the Latin full stop and
-    comma (a Chinese student's reading): a sentence ends in 。, a list of positions takes 、."""
+    comma (a Chinese student's reading): a sentence ends in 。, a list of positions takes 、, formulas in a line ；."""
     if name in KINDS:
         note = note_of(name, "zh")
     else:
         note = note_markdown(analyse(dataclasses.replace(graphplan.load(FIXTURES / f"{name}.toml"), locale="zh")))
     prose = [line for line in note.splitlines() if line and not line.startswith(("|", "!", "#"))]
     assert not [line for line in prose if re.search(r"[.;]\**$", line)]
+    # Nor a Latin semicolon between two formulas («R34 + ΣF4 + R14 = 0;  R43 + …», «Fb = … N; |Mb| = …»).
+    assert not [line for line in prose if ";" in line]
     # No Latin space beside full-width punctuation («比较。 运动副反力», «N （负号»).
     assert not [line for line in prose if re.search(r"[。，；：！？、）] | （", line)]
     listed = re.search(r"对位置 ([\d、]+) ", note) or re.search(r"位置 ([\d、, ]+)", note)

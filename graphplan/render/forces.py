@@ -698,7 +698,7 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
         x0, _, x1, _ = bounds_of(item for layer in drawing for item in layer.items)
         layers.extend(moved_layers(drawing, cursor - x0, 0.0))
         cursor += x1 - x0 + POLYGON_GAP_MM
-    caption = (text["force_polygon_title"], *_split_equation(group.polygon.equation),
+    caption = (text["force_polygon_title"], *group.polygon.equations,
                text["force_scale"].format(value=format_scale(scale)))
     return Drawing(f"polygon-{key}", layers, caption)
 
@@ -794,11 +794,6 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     labels = _lettered(anchors, figure)
     return [Layer(f"{name}-lines", tuple(actions)), Layer(f"{name}-vectors", tuple(arrows + dots)),
             Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)]
-
-
-def _split_equation(equation: str) -> tuple[str, ...]:
-    """An equation of two polygons (``…= 0;  …= 0``) as two caption lines."""
-    return tuple(part.strip() for part in equation.split(";") if part.strip())
 
 
 # Zhukovsky's lever.

@@ -172,7 +172,7 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
         force = vector.force
         rows.append([vector.name, force_report.polar(force, note.mark), note.mm(abs(force) / scale),
                      note.text[f"note_role_{vector.role}"]])
-    note.para(note.t("note_polygon", equation=polygon.equation, scale=note.n(scale), unit=text["unit_force_scale"]))
+    note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale), unit=text["unit_force_scale"]))
     header = [note.t("column_force"), f"{note.t('column_value')}, {text['newton']} ∠",
               f"{note.t('column_length')}, {text['millimetre']}", note.t("column_role")]
     note.table(None, header, rows, "lrrl")
@@ -274,10 +274,10 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
                     f"{text['newton']}")
         if driver.kind == "crank":
             length = f"l{driver.pivot}{driver.joint}"
-            equation += (f"; |{name}| = Fb·{length} = {note.product(note.n(force), note.n(driver.length))} = "
+            equation += (f"{text['separator']}|{name}| = Fb·{length} = {note.product(note.n(force), note.n(driver.length))} = "
                          f"{note.n(abs(lever.balancing), 6)} {unit}{note.with_sense(lever.balancing)}")
         else:
-            equation += f"; {name} = {note.n(lever.balancing, 6)} {unit}"
+            equation += f"{text['separator']}{name} = {note.n(lever.balancing, 6)} {unit}"
         note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True), equation=equation))
         difference = lever.difference_percent(polygons)
         note.para(note.t("note_lever_difference", name=name, lever=note.n(lever.balancing, 6),
