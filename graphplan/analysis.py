@@ -9,7 +9,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -333,6 +333,18 @@ def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[Velocit
                           scene.drawing.drafting_precision, measured)
         every.append(VelocityPosition(number, index, where, directions, velocity, tuple(table), tuple(rows)))
     return tuple(every), warnings
+
+
+def measured_on_velocity_plans(analysis: Analysis, number: int,
+                               measured: Mapping[str, Mapping[str, float]]) -> tuple[ErrorRow, ...]:
+    """The error rows of hand readings ``measured`` of position ``number``'s velocity plan among the plans of every
+    position, read at their μV: a notebook that draws the position's plan sheet too (at another μV, which its other
+    rows read) still checks a student's readings against the plan the student drew."""
+    grid = next(position for position in analysis.velocity_plans if position.number == number)
+    exact = _exact_values(analysis.mechanism, analysis.motion, list(grid.readings), grid.index)
+    rows = error_rows(number, exact, grid.plans, list(grid.readings), analysis.scene.drawing.drafting_precision,
+                      measured)
+    return tuple(row for row in rows if row.source == "measured")
 
 
 def _exact_values(mechanism: Mechanism, motion: Motion, table: list[Reading], index: int) -> dict[str, float]:

@@ -18,7 +18,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .analysis import Analysis, PlanPosition, analyse
+from .analysis import Analysis, PlanPosition, analyse, measured_on_velocity_plans
 from .errors import SceneError
 from .scene import Scene
 
@@ -123,15 +123,22 @@ def plan(scene: Scene, number: int) -> PositionPlans:
     if not first <= number < first + scene.positions.count:
         raise SceneError("positions", f"no position {number}: the scene numbers its positions {first} to "
                                       f"{first + scene.positions.count - 1}")
-    # Hand readings of other positions belong to their own plans.
-    measured = MappingProxyType({k: v for k, v in scene.measured.items() if k == number})
+    # Hand readings of other positions belong to their own plans; those of a position the scene draws only among
+    # the velocity plans of every position were read off that smaller plan, at its μV, not off this plan sheet's.
+    hand = scene.measured.get(number)
+    on_grid = number in scene.positions.velocity_plans and number not in scene.positions.plans
+    measured = MappingProxyType({number: hand} if hand and not on_grid else {})
     only = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(number,)), measured=measured)
     analysis = analyse(only)
     if not analysis.plans:
         reason = next((warning.detail for warning in analysis.warnings
                        if int(analysis.positions.numbers[warning.position]) == number), "it is singular")
         raise SceneError("positions", f"position {number} has no plans: {reason}")
-    return PositionPlans(analysis, analysis.plans[0])
+    position = analysis.plans[0]
+    if hand and on_grid:
+        position = dataclasses.replace(position, errors=position.errors + measured_on_velocity_plans(analysis, number,
+                                                                                                      hand))
+    return PositionPlans(analysis, position)
 
 
 __all__ = ["Drawing", "PositionPlans", "plan"]

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import dataclasses
 import xml.etree.ElementTree as ElementTree
+from types import MappingProxyType
 
 import numpy as np
 import pytest
@@ -72,3 +74,25 @@ def test_a_position_with_friction_shows_its_sheet_with_friction(scene):
     svg = plan(rubbing, 3).forces_with_friction_drawing.svg
     root = ElementTree.fromstring(svg)
     assert any((element.get("id") or "").endswith("-friction") for element in root.iter())
+
+
+def test_hand_readings_of_a_position_drawn_only_among_the_velocity_plans_are_read_at_their_scale(scene):
+    """A student who drew a position only among the velocity plans of every position measured it there, at their
+    μV; scene.plan(n) draws a plan sheet at another μV and read the readings at that one (40 % off where the
+    run's error table said 0.7 %)."""
+    first, count = scene.positions.number_from, scene.positions.count
+    speeds = np.hypot(*scene.solve().point("B").v.T)
+    # A position between the extremes (at an extreme B stands still and a percentage of it means nothing).
+    number = next(n for n in range(first, first + count) if n not in scene.positions.plans and speeds[n - first] > 0.1)
+    grid_scene = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions,
+                                                                          velocity_plans=tuple(range(first, first + count))))
+    grid = next(position for position in analyse(grid_scene).velocity_plans if position.number == number)
+    exact = float(speeds[number - first])
+    drawn = 1.02 * exact / grid.velocity.scale  # a reading 2 % long, on the plan drawn at the grid's μV
+    measured = dataclasses.replace(grid_scene, measured=MappingProxyType(
+        {number: MappingProxyType({"velocity": MappingProxyType({"pb": drawn})})}))
+    planned = measured.plan(number)
+    assert planned.velocity.scale != pytest.approx(grid.velocity.scale)  # the plan sheet is at another μV
+    [row] = [row for row in planned.errors if row.source == "measured" and row.quantity == "VB"]
+    assert row.plan == pytest.approx(1.02 * exact, rel=1e-9)
+    assert row.percent == pytest.approx(-2.0, rel=1e-6)
