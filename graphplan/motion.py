@@ -445,6 +445,10 @@ def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Posi
     return tuple(sorted(warnings, key=lambda w: w.position))
 
 
+# The most turns of a crank swept sample by sample for the toggles between the values the Python interface takes.
+MOST_SWEPT_TURNS = 100
+
+
 def with_toggles_between(motion: Motion, reference: Reference, samples: int) -> Motion:
     """``motion`` (driver values in any order, as the Python interface takes them) with a warning at each toggle
     between two of its positions, found as :func:`toggles_between` finds them between a scene's positions.
@@ -452,18 +456,31 @@ def with_toggles_between(motion: Motion, reference: Reference, samples: int) -> 
     Each value is solved on its own, so positions either side of a toggle may be of two assemblies: the real
     mechanism, moving from one to the other, would change its assembly there, or not, as it happens.  The
     positions are taken in increasing driver coordinate (repeated values once), without a crank's wrap from
-    the last back to the first, and swept over ``samples`` steps a turn (or over the values' span).
+    the last back to the first, and swept over ``samples`` steps a turn (or over the values' span); a crank's
+    values spanning more than :data:`MOST_SWEPT_TURNS` turns by their place in the turn, round it.
     """
     driver = motion.mechanism.driver
     distinct, first = np.unique(np.asarray(motion.driver, dtype=float), return_index=True)
     if len(distinct) < 2:
         return motion
     span = float(distinct[-1] - distinct[0])
-    steps = max(samples, math.ceil(samples * span / (2 * math.pi))) if driver.cyclic else samples
-    paths = solve(motion.mechanism, np.linspace(distinct[0], distinct[-1], steps + 1), reference, tolerant=True)
+    closed = driver.cyclic and span > MOST_SWEPT_TURNS * 2 * math.pi
+    if closed:
+        # Swept turn by turn, [0, 1e5] rad took 5.7 million samples and 2.9 GB, [0, 1e7] more than there is; a
+        # crank's mechanism is the same every turn, so the values are taken by their place in the turn, one turn
+        # swept round.
+        places, in_turn = np.unique(distinct[0] + np.mod(distinct - distinct[0], 2 * math.pi), return_index=True)
+        first = first[in_turn]
+        sweep = places[0] + np.linspace(0.0, 2 * math.pi, samples + 1)
+    else:
+        steps = max(samples, math.ceil(samples * span / (2 * math.pi))) if driver.cyclic else samples
+        sweep = np.linspace(distinct[0], distinct[-1], steps + 1)
+    paths = solve(motion.mechanism, sweep, reference, tolerant=True)
     # Values already rising (a linspace, the usual sweep) need no reordered copy of a motion that may be large.
     ordered = motion if len(first) == motion.count and np.all(np.diff(first) > 0) else motion.at_positions(first)
-    found = toggles_between(ordered, [int(index) for index in first], reference, paths, closed=False)
+    if closed:
+        ordered = replace(ordered, driver=places)
+    found = toggles_between(ordered, [int(index) for index in first], reference, paths, closed=closed)
     if not found:
         return motion
     stepped = tuple(replace(warning, position=int(first[warning.position])) for warning in found)

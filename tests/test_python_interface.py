@@ -71,6 +71,22 @@ def test_a_toggle_between_two_angles_asked_for_is_warned_of_as_the_command_line_
     assert not graphplan.solve(change_point, driver=np.radians([30.0, 60.0])).warnings
 
 
+def test_a_crank_s_values_many_turns_apart_are_taken_by_their_place_in_the_turn(change_point):
+    """[0.5, 0.5 + 1e7] rad were swept turn by turn for the toggles between them, 360 samples a turn: 1e5 rad took
+    2.9 GB and 1e7 rad raised numpy's MemoryError. The change point's toggles are at 0° and 180° every turn."""
+    values = np.array([0.5, 0.5 + 1e7, 2.0 + 2 * np.pi * 300])
+    motion = graphplan.solve(change_point, driver=values)
+    places = np.mod(values, 2 * np.pi)
+    order = np.argsort(places)
+    expected = set()
+    for here, following in zip(order, np.roll(order, -1), strict=True):
+        low, high = places[here], places[following] + (2 * np.pi if places[following] <= places[here] else 0.0)
+        if any(low < toggle < high for toggle in (np.pi, 2 * np.pi, 3 * np.pi)):
+            expected.add(int(here))
+    assert expected  # the check can fail
+    assert {w.position for w in motion.warnings if w.code == "toggle-between"} == expected
+
+
 def test_the_arrays_handed_out_are_read_only_and_the_driver_a_copy():
     scene = graphplan.load(RATCHET)
     angles = np.radians([0.0, 10.0, 20.0])
