@@ -213,6 +213,17 @@ class Table:
     def string(self, key: str, default: Any = _REQUIRED) -> Any:
         return self._take(key, default, check_str)
 
+    def date(self, key: str, default: Any = _REQUIRED) -> Any:
+        """A TOML date (``2026-12-01``), or a string for a date written otherwise."""
+        def check(value: Any, where: str) -> datetime.date | str:
+            # A date-time or a time of day is not the day a drawing is signed on.
+            if isinstance(value, datetime.date) and not isinstance(value, datetime.datetime):
+                return value
+            if isinstance(value, str):
+                return check_str(value, where)
+            raise SceneError(where, f"must be a date (2026-12-01) or a string, not {_type_name(value)}", value)
+        return self._take(key, default, check)
+
     def boolean(self, key: str, default: Any = _REQUIRED) -> Any:
         def check(value: Any, where: str) -> bool:
             if not isinstance(value, bool):

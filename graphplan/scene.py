@@ -7,6 +7,7 @@ structure of the mechanism) is checked by :mod:`graphplan.mechanism`.
 
 from __future__ import annotations
 
+import datetime
 import math
 import re
 import tomllib
@@ -140,6 +141,26 @@ class Drawing:
 
 
 @dataclass(frozen=True)
+class Project:
+    """What only the student knows: who made the project, who checks it, what it is filed as.
+
+    The sheets' title block and the note's head carry it; an empty field leaves its box blank.
+    """
+
+    author: str = ""
+    checked_by: str = ""
+    approved_by: str = ""
+    organization: str = ""
+    designation: str = ""
+    # A TOML date (written the locale's way where it is printed) or the text to print as it stands.
+    date: datetime.date | str = ""
+
+    @property
+    def given(self) -> bool:
+        return any(getattr(self, name) for name in self.__dataclass_fields__)
+
+
+@dataclass(frozen=True)
 class Scene:
     """Everything one scene file says, checked for syntax and range."""
 
@@ -165,6 +186,7 @@ class Scene:
     balancing: BalancingSpec | None = None
     vibration: VibrationSpec | None = None
     dynamics: Any = None  # flywheel.DynamicsSpec: the equivalent model, the flywheel, the equation of motion
+    project: Project = Project()
 
     @property
     def has_linkage(self) -> bool:
@@ -283,6 +305,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     locale = scene.choice("locale", LOCALES, "en")
     gravity = scene.number("gravity", 9.81, non_negative=True)
     scene.done()
+    project = _read_project(top.table("project", None))
 
     balancing = read_balancing(top.table("balancing")) if top.has("balancing") else None
     vibration = read_vibration(top.table("vibration")) if top.has("vibration") else None
@@ -305,7 +328,7 @@ def _read_scene(top: Table, source: str) -> Scene:
                      links=MappingProxyType({}), loads=(), friction=(),
                      positions=Positions(count=1, start=0.0, number_from=1, working=None, plans=()),
                      drawing=drawing, measured=MappingProxyType({}), include=include, source=source,
-                     balancing=balancing, vibration=vibration, dynamics=dynamics)
+                     balancing=balancing, vibration=vibration, dynamics=dynamics, project=project)
     if not top.has("frame"):
         # No [frame] where a misspelt table name ([vibrations]) was meant as a scene without a linkage.
         top.misspelt(*(name for name in ("frame", "driver", "balancing", "vibration", "dynamics") if not top.has(name)))
@@ -335,7 +358,8 @@ def _read_scene(top: Table, source: str) -> Scene:
                  frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
                  driver=driver, groups=groups, points=points, links=MappingProxyType(links), loads=loads_, friction=friction,
                  positions=positions, drawing=drawing, measured=MappingProxyType(measured), include=include,
-                 source=source, inertia=inertia, balancing=balancing, vibration=vibration, dynamics=dynamics)
+                 source=source, inertia=inertia, balancing=balancing, vibration=vibration, dynamics=dynamics,
+                 project=project)
 
 
 def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str, Guide]]:
@@ -569,6 +593,16 @@ def _position_numbers(table: Table, key: str, number_from: int, count: int) -> l
                              number)
         numbers.append(number)
     return numbers
+
+
+def _read_project(table: Table | None) -> Project:
+    if table is None:
+        return Project()
+    project = Project(**{name: table.string(name, "") for name in ("author", "checked_by", "approved_by",
+                                                                  "organization", "designation")},
+                      date=table.date("date", ""))
+    table.done(list_known=True)
+    return project
 
 
 def _read_drawing(table: Table) -> Drawing:

@@ -67,7 +67,7 @@ from .packing import Page, Panel, bigger_holding, height, pack, rooms, smallest_
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers, prefixed
 from .svg import to_svg
-from .title_block import Details, TitleBlockFields, form_of, labels, scale_text, title_block
+from .title_block import Details, TitleBlockFields, details_of, form_of, labels, scale_text, title_block
 
 # A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
 # this to save a sheet would run its outlines and position numbers together: μl is made no larger for fewer
@@ -616,7 +616,8 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     panels = panels or course_panels(analysis, diagrams, chosen)
     if chosen != "none":
         _refuse_overflows(analysis, chosen, panels.kinematics)
-    details = details or Details()
+    form = form_of(scene.locale)
+    details = details or details_of(scene.project, scene.title, form)
     if not details.title:
         details = replace(details, title=scene.title)
     scale = length_scale(analysis)
@@ -625,7 +626,6 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     if chosen == "none":
         pages = [panel for _, drawings, _ in kinds for panel in drawings]
         return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
-    form = form_of(scene.locale)
     packed = [(kind, pack(drawings, chosen, form) if drawings else [], at) for kind, drawings, at in kinds]
     total = sum(len(pages) for _, pages, _ in packed)
     sheets: list[Sheet] = []

@@ -25,6 +25,7 @@ its box.
 
 from __future__ import annotations
 
+import datetime
 import math
 import re
 from collections.abc import Mapping, Sequence
@@ -56,6 +57,10 @@ STANDARD_RATIOS = {
 }
 
 THIN = Stroke(0.25)
+
+# How each form writes a signature's date: ESKD's narrow date column as dd.mm.yy, GB/T 10609.1's 年、月、日
+# in that order, ISO 7200's date of issue as ISO 8601.
+DATE_FORMATS = {"eskd": "{date:%d.%m.%y}", "gb": "{date:%Y.%m.%d}", "iso": "{date:%Y-%m-%d}"}
 LABEL_SIZE = 2.0
 # ISO 7200's field names: small, but not below the 1.8 mm of ISO 3098's smallest lettering.
 CORNER_LABEL_SIZE = 1.8
@@ -80,6 +85,16 @@ class Details:
     checked_by: str = ""
     approved_by: str = ""
     date: str = ""
+
+
+def details_of(project: object, title: str, form: str) -> Details:
+    """The :class:`Details` a scene's ``[project]`` (:class:`graphplan.scene.Project`) gives, its date written as
+    ``form`` writes dates."""
+    fields = {name: getattr(project, name) for name in Details.__dataclass_fields__ if hasattr(project, name)}
+    date = fields.get("date", "")
+    if isinstance(date, datetime.date):
+        fields["date"] = DATE_FORMATS[form].format(date=date)
+    return Details(**{**fields, "title": title})
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -226,7 +241,7 @@ def _eskd(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> N
         block.label(text[key], (0.0, y, 17.0, y + 5.0), "start")
         block.text(name, (17.0, y, 40.0, y + 5.0), LABEL_SIZE, "start")
     if fields.date:
-        block.text(fields.date, (55.0, 25.0, 65.0, 30.0), LABEL_SIZE * 0.8)
+        block.label(fields.date, (55.0, 25.0, 65.0, 30.0))  # a label's padding: 10 mm hold dd.mm.yy
     block.text(fields.designation, (65.0, 40.0, 185.0, 55.0), 5.0)
     _name(block, fields, (65.0, 15.0, 135.0, 40.0))
     block.label(text["eskd_letter"], (135.0, 35.0, 150.0, 40.0))
@@ -334,8 +349,10 @@ def _name(block: _Block, fields: TitleBlockFields, box: tuple[float, float, floa
 _SPACES = re.compile(r"\s+")
 
 
-def _tokens(value: str) -> list[tuple[str, bool]]:
-    """Words and ideographs of ``value``, each with whether a space stands before it."""
+def _tokens(value: str, at_spaces: bool = False) -> list[tuple[str, bool]]:
+    """Words and ideographs of ``value`` (words alone ``at_spaces``), each with whether a space stands before it."""
+    if at_spaces:
+        return [(word, k > 0) for k, word in enumerate(_SPACES.split(value.strip())) if word]
     tokens: list[tuple[str, bool]] = []
     for k, word in enumerate(_SPACES.split(value.strip())):
         if not word:
@@ -362,13 +379,14 @@ def _joined(tokens: Sequence[tuple[str, bool]]) -> str:
     return "".join((" " if space and k else "") + token for k, (token, space) in enumerate(tokens))
 
 
-def wrapped(value: str, lines: int, size: float, weight: str = "normal") -> list[str]:
+def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spaces: bool = False) -> list[str]:
     """``value`` broken into at most ``lines`` lines so that the widest is as narrow as can be.
 
     The narrowest width that greedy filling still gets into ``lines`` lines
     is found by bisection: a line's width is the sum of its letters' widths.
+    A line breaks before or after any ideograph, or ``at_spaces`` only.
     """
-    tokens = _tokens(value)
+    tokens = _tokens(value, at_spaces)
     if not tokens:
         return []
     if lines <= 1 or len(tokens) == 1:
@@ -407,14 +425,16 @@ def fitted(value: str, box: tuple[float, float, float, float], size: float, anch
     width, height = x1 - x0 - 2 * padding, y1 - y0 - 2 * padding
     best: tuple[float, list[str]] | None = None
     for count in range(1, lines + 1):
-        parts = wrapped(value, count, size, weight)
-        widest = max(text_width(part, size, weight) for part in parts)
-        # The block of n lines is (n - 1) pitches plus one line's extent (1.45 cap heights) high.
-        tall = ((len(parts) - 1) * LINE_PITCH + 1.45) * size
-        fit = min(size, size * width / widest, size * height / tall)
-        if best is None or fit > best[0] + 1e-9:
-            best = (fit, parts)
-        if fit >= size:
+        # Broken at its spaces where that sets it as large as breaking between ideographs does: «清华大学 机械系»
+        # is not cut inside a word.
+        for parts in (wrapped(value, count, size, weight, at_spaces=True), wrapped(value, count, size, weight)):
+            widest = max(text_width(part, size, weight) for part in parts)
+            # The block of n lines is (n - 1) pitches plus one line's extent (1.45 cap heights) high.
+            tall = ((len(parts) - 1) * LINE_PITCH + 1.45) * size
+            fit = min(size, size * width / widest, size * height / tall)
+            if best is None or fit > best[0] + 1e-9:
+                best = (fit, parts)
+        if best[0] >= size:
             break
     assert best is not None
     fit, parts = best

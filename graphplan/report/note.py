@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import cmath
 import contextlib
+import datetime
 import itertools
 import math
 import re
@@ -217,6 +218,7 @@ class _Note:
 
     def write(self) -> None:
         self.heading(1, self.t("note_title", title=self.scene.title))
+        self.project()
         section = self.linkage() if self.analysis is not None else 0
         if self.dynamics is not None:
             section += 1
@@ -231,6 +233,20 @@ class _Note:
 
             section += 1
             vibration_section(self, section, self.scene.vibration, steady_state(self.scene.vibration))
+
+    def project(self) -> None:
+        """Under the title, what the scene's ``[project]`` gives: the designation, who made and checked it, where,
+        when; each on its own line (a Markdown hard break)."""
+        project = self.scene.project
+        lines = []
+        for name in ("designation", "author", "checked_by", "approved_by", "organization", "date"):
+            value = getattr(project, name)
+            if isinstance(value, datetime.date):
+                value = self.t("date_format", date=value)
+            if value:
+                lines.append(self.t(f"note_project_{name}", value=value))
+        if lines:
+            self.para(*(line + "\\" for line in lines[:-1]), lines[-1])
 
     def linkage(self) -> int:
         """The sections on the linkage: its structure, data, plans, errors and forces; the last one's number."""

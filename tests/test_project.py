@@ -1,0 +1,134 @@
+"""The scene's ``[project]``: who made the project, in the sheets' title block and at the head of the note.
+
+Before it, every title block's Разраб./设计/Created by, designation, organisation and date were drawn blank
+and a student had to write them in by hand on every printed sheet.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import datetime
+from pathlib import Path
+
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.errors import SceneError
+from graphplan.render.primitives import Text
+from graphplan.render.sheet import course_sheets
+from graphplan.render.title_block import fitted
+from graphplan.report.note import note_markdown
+from graphplan.scene import Project
+from graphplan.starters import KINDS, starter
+
+ROOT = Path(__file__).resolve().parents[1]
+RATCHET = (ROOT / "fixtures" / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+PROJECT = """
+[project]
+author       = "Иванов И. И."
+checked_by   = "Петров П. П."
+organization = "МГТУ, гр. РК3-51"
+designation  = "ТММ.КП.05.00.00"
+date         = 2026-12-01
+"""
+DAY = datetime.date(2026, 12, 1)
+
+
+def scene_with_project(locale: str):
+    return dataclasses.replace(graphplan.load_text(RATCHET + PROJECT), locale=locale)
+
+
+def texts_of(sheet) -> list[str]:
+    return [item.text for layer in sheet.layers for item in layer.items if isinstance(item, Text)]
+
+
+def test_the_project_is_read_with_its_date_as_a_date():
+    project = graphplan.load_text(RATCHET + PROJECT).project
+    assert project == Project(author="Иванов И. И.", checked_by="Петров П. П.", organization="МГТУ, гр. РК3-51",
+                              designation="ТММ.КП.05.00.00", date=DAY)
+    assert graphplan.load_text(RATCHET).project == Project()
+    assert not Project().given and project.given
+
+
+@pytest.mark.parametrize(("entry", "where", "words"), [
+    ('date = 2026-12-01T10:00:00', "project.date", "a date-time"),
+    ('author = ""', "project.author", "must not be empty"),
+    ('author = 5', "project.author", "must be a string"),
+    ('supervisor = "B"', "project.supervisor", "unknown key"),
+])
+def test_a_wrong_project_entry_is_named(entry, where, words):
+    with pytest.raises(SceneError) as raised:
+        graphplan.load_text(RATCHET + "\n[project]\n" + entry + "\n")
+    assert raised.value.where == where and words in str(raised.value)
+
+
+# How each drafting standard's form writes the date: ESKD's dd.mm.yy in its 10 mm date column, GB/T
+# 10609.1's 年、月、日 in that order, ISO 7200's ISO 8601.
+@pytest.mark.parametrize(("locale", "author", "date"), [("ru", "Иванов И. И.", "01.12.26"),
+                                                        ("zh", "Иванов И. И.", "2026.12.01"),
+                                                        ("en", "Иванов И. И.", "2026-12-01")])
+def test_every_sheet_s_title_block_carries_the_project(locale, author, date):
+    sheets = course_sheets(analyse(scene_with_project(locale)), "A1")
+    assert len(sheets) > 1
+    for sheet in sheets:
+        texts = texts_of(sheet)
+        for value in (author, "ТММ.КП.05.00.00", date):
+            assert value in texts, (sheet.number, value)
+        assert "МГТУ, гр. РК3-51" in texts or {"МГТУ, гр.", "РК3-51"} <= set(texts)
+        if locale != "en":  # ISO 7200 has no box for the checker
+            assert "Петров П. П." in texts
+
+
+def test_a_title_block_without_a_project_is_left_blank_for_the_pen():
+    sheet = course_sheets(analyse(graphplan.load_text(RATCHET)), "A1")[0]
+    assert not [text for text in texts_of(sheet) if "Иванов" in text or text.count(".") == 2 and text[:2].isdigit()]
+
+
+@pytest.mark.parametrize(("locale", "lines"), [
+    ("en", ["Designation: ТММ.КП.05.00.00", "Author: Иванов И. И.", "Checked by: Петров П. П.", "МГТУ, гр. РК3-51",
+            "Date: 2026-12-01"]),
+    ("ru", ["Обозначение: ТММ.КП.05.00.00", "Выполнил: Иванов И. И.", "Проверил: Петров П. П.", "МГТУ, гр. РК3-51",
+            "Дата: 01.12.2026"]),
+    ("zh", ["代号：ТММ.КП.05.00.00", "设计者：Иванов И. И.", "指导教师：Петров П. П.", "МГТУ, гр. РК3-51",
+            "日期：2026年12月1日"]),
+])
+def test_the_note_s_head_lists_the_project_one_line_a_field(locale, lines):
+    note = note_markdown(analyse(scene_with_project(locale))).splitlines()
+    assert note[0].startswith("# ") and note[1] == ""
+    # Hard line breaks: each field on a line of its own in HTML, PDF, Word and LaTeX alike.
+    assert note[2:2 + len(lines)] == [line + "\\" for line in lines[:-1]] + [lines[-1]]
+    assert note[2 + len(lines)] == ""
+    assert note_markdown(analyse(graphplan.load_text(RATCHET)))[0:200].count("\\\n") == 0
+
+
+def test_a_project_date_written_as_text_is_printed_as_written():
+    scene = dataclasses.replace(graphplan.load_text(RATCHET + '\n[project]\ndate = "December 2026"\n'), locale="en")
+    assert "Date: December 2026" in note_markdown(analyse(scene))
+    sheet = course_sheets(analyse(scene), "A1")[0]
+    assert "December 2026" in texts_of(sheet)
+
+
+def test_a_scene_without_a_linkage_has_the_project_at_the_head_of_its_note():
+    rotor = starter("rotor").replace("# [project]", "[project]").replace("# author ", "author ")
+    note = note_markdown(None, scene=graphplan.load_text(rotor))
+    assert "Author: A. Student" in note.splitlines()[2]
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_every_starter_offers_the_project_table_to_fill_in(kind):
+    text = starter(kind)
+    filled = "\n".join(line[2:] if line.startswith(("# [project]", "# author", "# checked_by", "# organization",
+                                                    "# designation", "# date")) else line
+                       for line in text.splitlines())
+    assert graphplan.load_text(filled).project == Project(author="A. Student", checked_by="Prof. B. Teacher",
+                                                          organization="University, group 21",
+                                                          designation="TMM.CP.01.00.00", date=DAY)
+
+
+def test_a_box_breaks_its_words_at_the_spaces_where_that_sets_them_as_large():
+    """«清华大学 机械系 21 级» stood in the GB/T organisation box as «清华大学 机 / 械系 21 级»."""
+    lines = [item.text for item in fitted("清华大学 机械系 21 级", (0.0, 0.0, 50.0, 18.0), 3.5, lines=2)]
+    assert lines == ["清华大学", "机械系 21 级"]
+    # An unspaced Chinese title still breaks between its ideographs.
+    assert len(fitted("曲柄摇杆机构运动分析与力分析", (0.0, 0.0, 30.0, 18.0), 3.5, lines=2)) == 2
