@@ -9,7 +9,9 @@ The Python interface::
 
 from __future__ import annotations
 
+import copyreg
 from collections.abc import Sequence
+from types import MappingProxyType
 
 import numpy as np
 
@@ -17,9 +19,23 @@ from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionE
 from .mechanism import Mechanism, build
 from .motion import Motion
 from .scene import Scene, load
-from .scene import loads as load_text
+from .scene import loads as _read_text  # graphplan.loads is the module of the mechanism's loads
 
 __version__ = "0.1.0"
+
+# Scenes and motions keep their tables in read-only mappings, which pickle and deepcopy cannot take apart by
+# themselves: a process pool's sweep of a parameter sends its scenes to the workers, a notebook copies one to vary.
+def _read_only_mapping(items: dict) -> MappingProxyType:
+    return MappingProxyType(items)
+
+
+copyreg.pickle(MappingProxyType, lambda proxy: (_read_only_mapping, (dict(proxy),)))
+
+
+def load_text(text: str | bytes, source: str = "<scene>") -> Scene:
+    """Read and check a scene given as its TOML text (or bytes), as :func:`load` reads a file; ``source`` names
+    it in the errors."""
+    return _read_text(text, source)
 
 
 def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> Motion:
@@ -38,7 +54,7 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     names each position near a toggle, and each toggle between two of the positions, where the real mechanism
     may change its assembly and the positions beyond it keep the scene's.
     """
-    from .analysis import PATH_SAMPLES
+    from .analysis import PATH_SAMPLES, reach_hint
     from .motion import reference_at, with_toggles_between
     from .motion import solve as solve_motion
     from .positions import make_positions
@@ -47,11 +63,13 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
         raise TypeError(f"solve takes a scene, as graphplan.load(path) reads it (got {scene!r})")
     mechanism = build(scene)
     uses_near = any(getattr(group, "near", None) is not None for group in mechanism.groups)
-    if driver is None:
-        positions = make_positions(mechanism)
-        return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
-    reference = make_positions(mechanism).reference if uses_near else None
-    motion = solve_motion(mechanism, driver, reference)
+    # Where a crank cannot go, the error says where it can, as the command line's does.
+    with reach_hint(mechanism):
+        if driver is None:
+            positions = make_positions(mechanism)
+            return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
+        reference = make_positions(mechanism).reference if uses_near else None
+        motion = solve_motion(mechanism, driver, reference, indexed=True)
     return with_toggles_between(motion, reference or reference_at(mechanism, float(motion.driver[0])), PATH_SAMPLES)
 
 

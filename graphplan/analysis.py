@@ -95,6 +95,11 @@ class Analysis:
     # Where the friction locks the mechanism between two analysed positions that move.
     locked_spans: tuple[LockedSpan, ...] = ()
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr ran to hundreds of thousands of characters.
+        return (f"<Analysis of {self.scene.title!r}: {len(self.positions.numbers)} positions, plans of "
+                f"{', '.join(str(plan.number) for plan in self.plans) or 'none'}, {len(self.warnings)} warnings>")
+
     @property
     def drawn_velocities(self) -> tuple[VelocityPosition, ...]:
         """Each position with a velocity plan, in order: its plan sheet's (drawn larger) where it has one, else
@@ -113,7 +118,7 @@ class Analysis:
 
 
 @contextlib.contextmanager
-def _rocker_hint(mechanism: Mechanism) -> Iterator[None]:
+def reach_hint(mechanism: Mechanism) -> Iterator[None]:
     """Where a crank cannot go, say where it can: the ranges of its reach, and a swing inside one of them."""
     try:
         yield
@@ -154,7 +159,7 @@ def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bo
 def analyse(scene: Scene) -> Analysis:
     """Build the mechanism, place the positions and solve them, with the extremes and a dense sweep."""
     mechanism = build(scene)
-    with _rocker_hint(mechanism):
+    with reach_hint(mechanism):
         positions = make_positions(mechanism)
         motion = solve(mechanism, positions.values, positions.reference, positions.numbers, tolerant=True)
     # The positions drawn bold: the working link's two extremes, a slider's or a rocking crank's two ends, or
@@ -171,7 +176,7 @@ def analyse(scene: Scene) -> Analysis:
         sweep = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * np.pi, PATH_SAMPLES + 1)
     else:
         sweep = np.linspace(driver.travel[0], driver.travel[1], PATH_SAMPLES + 1)
-    with _rocker_hint(mechanism):
+    with reach_hint(mechanism):
         paths = solve(mechanism, sweep, positions.reference, tolerant=True)
     stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None

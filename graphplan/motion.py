@@ -13,7 +13,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
+from types import MappingProxyType
 from typing import Any
 
 import numpy as np
@@ -75,7 +76,11 @@ class PointArrays:
 
 @dataclass(frozen=True)
 class LinkArrays:
-    """A link's angle (rad), ω (rad/s), ε (rad/s²) as ``(N,)`` arrays, counter-clockwise positive."""
+    """A link's angle (rad), ω (rad/s), ε (rad/s²) as ``(N,)`` arrays, counter-clockwise positive.
+
+    The angle is the direction of the link's reference line in (−π, π] (a driving crank's is the driver's
+    coordinate, unwrapped): ``np.unwrap`` it along a sweep before plotting or differentiating it.
+    """
 
     angle: np.ndarray
     omega: np.ndarray
@@ -103,6 +108,24 @@ class Motion:
     def __post_init__(self) -> None:
         # Handed out as it is (motion.driver): a view that cannot be written, as point() and link() hand theirs.
         object.__setattr__(self, "driver", _read_only(np.asarray(self.driver).view()))
+        # The motion's own arrays and tables are public fields: motion.points["B"].v[0] = … changed what point("B")
+        # gave after, and a slide's s written left its slider's point where it was.
+        for owner in (*self.points.values(), *self.links.values(), *self.slides):
+            for field_ in fields(owner):
+                value = getattr(owner, field_.name)
+                if isinstance(value, np.ndarray):
+                    value.flags.writeable = False
+        for name in ("points", "links", "conditioning", "singular"):
+            object.__setattr__(self, name, MappingProxyType(dict(getattr(self, name))))
+
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed the scene and every array (8 600 characters for twelve positions).
+        return (f"<Motion of {self.mechanism.scene.title!r} at {self.count} positions: points "
+                f"{', '.join(self.points)}; links {', '.join(map(str, self.links))}>")
+
+    def __reduce__(self):
+        # Unpickled through the constructor, whose __post_init__ makes the arrays read-only again.
+        return type(self), tuple(getattr(self, field_.name) for field_ in fields(self))
 
     @property
     def count(self) -> int:
@@ -254,12 +277,13 @@ def reference_at(mechanism: Mechanism, value: float) -> Reference:
 
 
 def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference: Reference | None = None,
-          numbers: Sequence[int] | None = None, tolerant: bool = False) -> Motion:
+          numbers: Sequence[int] | None = None, tolerant: bool = False, indexed: bool = False) -> Motion:
     """The motion at every driver coordinate in ``values`` (rad for a crank, m for a slider).
 
     ``reference`` fixes the branches and named points (see
     :func:`reference_at`); without it they are fixed at ``values[0]``.
-    ``numbers`` are the positions' numbers for error messages.  A position
+    ``numbers`` are the positions' numbers for error messages, or with ``indexed`` the values' indices
+    (``driver[3]``: values a caller gave, where a crank's is told within the turn).  A position
     where a group's lines of action are parallel has no determined velocity:
     it raises :class:`SingularPositionError`, or, when ``tolerant``, is listed
     in ``Motion.singular`` with its reason (its velocities and accelerations
@@ -286,7 +310,10 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
 
     def describe(index: int) -> str:
         text = driver.describe(float(values[index]))
-        return f"position {numbers[index]} ({text})" if numbers is not None else text
+        if numbers is not None:
+            return f"position {numbers[index]} ({text})"
+        # Which of the caller's values: a crank's is told within the turn (−1e-9 rad as φ = 360°).
+        return f"{text} (driver[{index}])" if indexed and len(values) > 1 else text
 
     solver = _solve_continued if any(group.continuation for group in mechanism.groups) else _solve
     if not tolerant:

@@ -19,7 +19,10 @@ from types import MappingProxyType
 import numpy as np
 
 from .analysis import Analysis, PlanPosition, analyse, measured_on_velocity_plans
+from .check import ErrorRow
 from .errors import SceneError
+from .forces import ForcePlan
+from .plans import Plan
 from .scene import Scene
 
 
@@ -28,6 +31,10 @@ class Drawing:
     """An SVG drawing that Jupyter shows inline and that can be saved."""
 
     svg: str
+
+    def __repr__(self) -> str:
+        # The whole SVG, some 25 000 characters, was its repr; Jupyter shows the drawing itself.
+        return f"<Drawing: {len(self.svg)} characters of SVG>"
 
     def _repr_svg_(self) -> str:
         return self.svg
@@ -56,12 +63,12 @@ class PositionPlans:
         return self.position.number
 
     @property
-    def velocity(self):
+    def velocity(self) -> Plan:
         """The velocity plan: its scale (``scale``, m/s per mm), its vectors and the steps it was built in."""
         return self.position.velocity
 
     @property
-    def acceleration(self):
+    def acceleration(self) -> Plan:
         """The acceleration plan, as :attr:`velocity`."""
         return self.position.acceleration
 
@@ -73,12 +80,12 @@ class PositionPlans:
         return {reading.quantity: reading.value(self.position.plans) for reading in self.position.readings}
 
     @property
-    def errors(self):
+    def errors(self) -> tuple[ErrorRow, ...]:
         """The error table's rows: each quantity as constructed and as read off the plan against the exact one."""
         return self.position.errors
 
     @property
-    def forces(self):
+    def forces(self) -> ForcePlan | None:
         """The force analysis of the position (reactions as complex numbers x + iy, N; the balancing load), or
         None when the scene has no masses and no loads."""
         return self.position.forces

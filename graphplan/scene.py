@@ -16,7 +16,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
@@ -24,6 +24,11 @@ from .groups.base import read_guide
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
 from .rotor_balancing import BalancingSpec, read_balancing
 from .vibration import VibrationSpec, read_vibration
+
+if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
+    from .analysis import Analysis
+    from .motion import Motion
+    from .notebook import PositionPlans
 
 MAX_SCENE_BYTES = 1_000_000
 MAX_POSITIONS = 100_000
@@ -194,19 +199,19 @@ class Scene:
         return self.driver is not None
 
     # The notebook's verbs.  They import the stages they run when called: a scene is read first of all.
-    def solve(self, driver=None):
+    def solve(self, driver=None) -> Motion:
         """The analytic motion at the scene's positions, or at ``driver`` (crank angles, rad; slider, m)."""
         from . import solve
 
         return solve(self, driver)
 
-    def analyse(self):
+    def analyse(self) -> Analysis:
         """The whole analysis of the scene (:func:`graphplan.analysis.analyse`)."""
         from .analysis import analyse
 
         return analyse(self)
 
-    def plan(self, number: int):
+    def plan(self, number: int) -> PositionPlans:
         """The plans of position ``number`` (:func:`graphplan.notebook.plan`); Jupyter shows its plan sheet."""
         from .notebook import plan
 
@@ -238,6 +243,9 @@ def load(path: str | Path) -> Scene:
 
 def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     """Read and check a scene given as TOML text or bytes."""
+    if not isinstance(data, str | bytes):
+        raise TypeError(f"a scene is given as its TOML text, a str (got {type(data).__name__}); "
+                        "graphplan.load(path) reads a file")
     size = len(data) if isinstance(data, bytes) else len(data.encode("utf-8", "surrogatepass"))
     if size > MAX_SCENE_BYTES:
         raise SceneError(source, f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")
@@ -250,7 +258,10 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     try:
         document = tomllib.loads(data)
     except tomllib.TOMLDecodeError as error:
-        raise SceneError(source, f"is not valid TOML: {error}{_toml_hint(data, str(error))}") from None
+        hint = _toml_hint(data, str(error))
+        if not hint and "\n" not in data.strip() and data.strip().lower().endswith(".toml"):
+            hint = f"; {data.strip()!r} looks like a file's name: graphplan.load(path) reads a scene file"
+        raise SceneError(source, f"is not valid TOML: {error}{hint}") from None
     except RecursionError:  # tomllib reads nested arrays and tables by recursion
         raise SceneError(source, "nests arrays or tables too deeply to be read") from None
     return _read_scene(Table(document, ""), source)
@@ -625,10 +636,10 @@ def _read_drawing(table: Table) -> Drawing:
     return drawing
 
 
-def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]]:
+def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, float]]]:
     if table is None:
         return {}
-    measured: dict[int, dict[str, dict[str, float]]] = {}
+    measured: dict[int, Mapping[str, Mapping[str, float]]] = {}
     for key, entry in table.subtables():
         assert entry is not None
         number = _numbered(key, entry.path, "must be a position number: write [measured.5]")
@@ -639,9 +650,14 @@ def _read_measured(table: Table | None) -> dict[int, dict[str, dict[str, float]]
             lengths = entry.table(plan, None)
             if lengths is None:
                 continue
-            readings[plan] = {name: lengths.number(name, non_negative=True) for name in list(lengths.data)}
+            if not lengths.data:
+                raise SceneError(lengths.path, "has no readings: give the lengths measured off the plan "
+                                               "(pb = 42.5, …), or leave the table out")
+            readings[plan] = MappingProxyType({name: lengths.number(name, non_negative=True)
+                                               for name in list(lengths.data)})
         entry.done(list_known=True)
-        measured[number] = readings
+        # Read-only all the way down: scene.measured[5]["velocity"]["pb"] = 1.0 changed what plan(5) read.
+        measured[number] = MappingProxyType(readings)
     return measured
 
 

@@ -105,6 +105,59 @@ def test_the_arrays_handed_out_are_read_only_and_the_driver_a_copy():
     assert np.array_equal(motion.point("B").r, before)
 
 
+def test_the_motion_s_own_tables_and_the_scene_s_readings_cannot_be_written_through():
+    """motion.points["B"].v[0] = … changed what point("B") gave after; a slide's s written left its slider where
+    it was; scene.measured[5]["velocity"]["pb"] = … changed what plan(5) read."""
+    motion = graphplan.solve(graphplan.load(Path(RATCHET).with_name("engine_slider_crank.toml")))
+    with pytest.raises(ValueError, match="read-only"):
+        motion.points["B"].v[0] = 123.0
+    with pytest.raises(ValueError, match="read-only"):
+        motion.slides[0].s[0] = 99.0
+    with pytest.raises(TypeError):
+        motion.points["Z"] = motion.points["B"]
+    with pytest.raises(ValueError, match="read-only"):
+        motion.at_positions([0, 1]).links[3].omega[0] = 0.0
+    measured = graphplan.load_text(Path(RATCHET).read_text(encoding="utf-8")
+                                   + "\n[measured.11]\nvelocity = { pb = 42.0 }\n").measured
+    with pytest.raises(TypeError):
+        measured[11]["velocity"]["pb"] = 1.0
+
+
+def test_scenes_and_motions_survive_pickle_and_deepcopy_as_they_were():
+    """A process pool's parameter sweep sends its scenes to the workers: pickle refused their read-only tables."""
+    import copy
+    import pickle
+
+    scene = graphplan.load_text(Path(RATCHET).read_text(encoding="utf-8") + "\n[measured.11]\nvelocity = { pb = 42.0 }\n")
+    motion = graphplan.solve(scene)
+    for clone in (pickle.loads(pickle.dumps(scene)), copy.deepcopy(scene)):
+        assert clone == scene and clone is not scene
+        np.testing.assert_array_equal(graphplan.solve(clone).point("B").a, motion.point("B").a)
+    for clone in (pickle.loads(pickle.dumps(motion)), copy.deepcopy(motion)):
+        np.testing.assert_array_equal(clone.link(4).epsilon, motion.link(4).epsilon)
+        with pytest.raises(ValueError, match="read-only"):
+            clone.points["B"].v[0] = 0.0
+
+
+def test_a_value_the_mechanism_cannot_reach_is_named_by_its_index_with_the_crank_s_reach():
+    """−1e-9 rad was told as «φ = 360°», a value the caller never gave, without the reach the run tells."""
+    scene = graphplan.load(Path(RATCHET).with_name("double_rocker_swing.toml"))
+    with pytest.raises(graphplan.AssemblyError) as raised:
+        graphplan.solve(scene, driver=[0.5, 0.6, -1e-9])
+    message = str(raised.value)
+    assert "(driver[2])" in message
+    # The crank OA = 0.25 about O, C 0.3 m away: A–C runs from |AB − BC| = 0.08 m up, reached where
+    # 0.25² + 0.3² − 2·0.25·0.3·cos φ = 0.08².
+    lowest = math.degrees(math.acos((0.25 ** 2 + 0.3 ** 2 - 0.08 ** 2) / (2 * 0.25 * 0.3)))
+    ends = [float(value) for value in re.findall(r"from (\d+\.\d+)° to (\d+\.\d+)°", message)[0]]
+    assert ends[0] == pytest.approx(lowest, abs=0.01)
+
+
+def test_a_table_of_readings_with_none_in_it_is_refused():
+    with pytest.raises(SceneError, match=r"^measured\.11\.velocity: has no readings"):
+        graphplan.load_text(Path(RATCHET).read_text(encoding="utf-8") + "\n[measured.11]\nvelocity = { }\n")
+
+
 @pytest.mark.parametrize("driver", [[1 + 1j], ["1", "2"], [True, False], np.array([0.1, "x"], dtype=object)])
 def test_a_driver_that_is_not_plain_numbers_is_refused(driver):
     with pytest.raises(SceneError, match=r"^driver: must be an array of numbers .* \(got "):
@@ -164,3 +217,21 @@ def test_a_coupler_short_of_its_reach_by_a_hair_is_told_with_the_digits_that_sho
         graphplan.solve(short, driver=[-math.pi / 2])   # A straight below O, C straight above it
     far, reach = re.search(r"A–C = ([\d.]+) m > AB \+ BC = ([\d.]+) m", str(raised.value)).groups()
     assert float(far) == pytest.approx(0.725, abs=1e-12) and float(reach) < float(far)
+
+
+def test_what_a_notebook_prints_of_a_motion_an_analysis_or_a_drawing_is_a_line():
+    """Their reprs ran to 8 600, 386 000 and 25 000 characters (the scene, every array, the whole SVG)."""
+    scene = graphplan.load(RATCHET)
+    motion, analysis, drawing = scene.solve(), scene.analyse(), scene.plan(5).drawing
+    for shown in (repr(motion), repr(analysis), repr(drawing)):
+        assert len(shown) < 200 and "\n" not in shown, shown
+    assert scene.title in repr(motion) and f"at {motion.count} positions" in repr(motion)
+    assert f"{len(drawing.svg)} characters of SVG" in repr(drawing)
+
+
+def test_load_text_says_what_it_takes():
+    with pytest.raises(TypeError, match=r"its TOML text, a str \(got NoneType\)"):
+        graphplan.load_text(None)
+    with pytest.raises(SceneError, match=r"looks like a file's name: graphplan\.load\(path\) reads a scene file"):
+        graphplan.load_text(RATCHET)
+    assert graphplan.load_text.__name__ == "load_text" and "TOML text" in graphplan.load_text.__doc__
