@@ -18,6 +18,7 @@ from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_r
 from .errors import AssemblyError, SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
+from .groups.base import Group
 from .joint_friction import FrictionPair, friction_loads, friction_pairs
 from .kinematics import at
 from .lever import Lever, lever
@@ -129,8 +130,10 @@ def reach_hint(mechanism: Mechanism) -> Iterator[None]:
         ranges = reach(mechanism)
         if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
             raise
+        stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
+                        Group.reach_ends)
         raise AssemblyError(error.joint, error.position, error.group,
-                            f"{error.reason}; {_reach_advice(driver.link, ranges, driver.cyclic)}") from error
+                            f"{error.reason}; {_reach_advice(driver.link, ranges, driver.cyclic, stopping)}") from error
 
 
 def _inward(end: float, rounding) -> str:
@@ -139,14 +142,16 @@ def _inward(end: float, rounding) -> str:
     return f"{rounding(round(math.degrees(end) * 100.0, 4)) / 100.0:.2f}"
 
 
-def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool) -> str:
-    """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try."""
+def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool,
+                  stopping: str = Group.reach_ends) -> str:
+    """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try;
+    ``stopping`` says what stops it at the ends."""
     if not ranges:
         return f"the mechanism assembles at no angle of link {link}: check the lengths"
     # Rounded inward: a swing to an end as written is then inside the reach (70.49° of a reach to 70.4907° was
     # written 70.5° and refused).
     spans = " and ".join(f"from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°" for low, high in ranges)
-    told = f"link {link} reaches only {spans} (at each end two links stand in line)"
+    told = f"link {link} reaches only {spans} (at each end {stopping})"
     if not cyclic:
         return f"{told}: keep driver.swing within one of these"
     low, high = max(ranges, key=lambda span: span[1] - span[0])

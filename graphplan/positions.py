@@ -32,6 +32,8 @@ _BRACKET_SWEEP = 720
 _INTERPOLANT_DEGREE = 12
 # Crank angles per turn on which the ends of a crank's reach are bracketed: half a degree apart.
 _REACH_GRID = 720
+# Narrower than this (rad), a range of the reach is one angle where it happens to assemble, which no run reaches.
+_REACH_POINT = 1e-6
 
 
 @dataclass(frozen=True)
@@ -114,6 +116,19 @@ def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: 
         raise SingularPositionError(f"the first position, {number} ({mechanism.driver.describe(value)})", error.group,
                                     f"{error.reason}; the first position fixes each group's assembly and may not be "
                                     f"singular: start the run elsewhere ({moved_by})") from None
+
+
+def _first_assembly(mechanism: Mechanism) -> Reference | None:
+    """The assemblies the scene's first position fixes, where it can be assembled; None where it cannot, or where a
+    group is followed by continuation (a walk to every angle of the grid would be long): each angle's own then."""
+    if any(group.continuation for group in mechanism.groups):
+        return None
+    driver, start = mechanism.driver, mechanism.scene.positions.start
+    first = driver.travel[0] if not driver.cyclic else 0.0 if start == "extreme" else math.radians(float(start))
+    try:
+        return reference_at(mechanism, first)
+    except (AssemblyError, SingularPositionError):
+        return None
 
 
 def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
@@ -295,15 +310,21 @@ def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
     """The ranges of crank angle (rad, lower end first) in which the mechanism assembles.
 
     An angle belongs to the reach when every group assembles there in the
-    scene's assembly.  The ranges are bracketed on a grid of half a degree
+    scene's assembly, as its first position fixes it where it can be assembled
+    (a PRP's guides crossing from one side).  The ranges are bracketed on a grid of half a degree
     and their ends, where two links stand in line, found by bisection to a
     nanoradian; a range narrower than the grid may be missed.  A range
     through 0 starts at a negative angle.  A crank that turns round has the
     one range (0, 2π); one that assembles nowhere has none.
     """
+    reference = _first_assembly(mechanism)
+
     def assembles(angle: float) -> bool:
         try:
-            reference_at(mechanism, angle)
+            if reference is None:
+                reference_at(mechanism, angle)
+            else:
+                solve(mechanism, np.array([angle]), reference)
         except AssemblyError:
             return False
         except SingularPositionError:  # assembled, at a toggle
@@ -333,5 +354,6 @@ def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
         upper = end(last, last + step)
         if lower >= math.pi and upper > 2.0 * math.pi:  # through 0: from a negative angle
             lower, upper = lower - 2.0 * math.pi, upper - 2.0 * math.pi
-        ranges.append((lower, upper))
+        if upper - lower > _REACH_POINT:  # not one angle alone, where it happens to assemble
+            ranges.append((lower, upper))
     return tuple(sorted(ranges))

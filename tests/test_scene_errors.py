@@ -156,7 +156,10 @@ SLOTTED_LEVER: dict[str, Any] = {
 # φ = 135° and 315°, between the positions).
 CROSSED_SLIDERS: dict[str, Any] = {
     "frame": {"points": {"O": [0.0, 0.0]}},
-    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0},
+    # A guide on the crank runs parallel to the fixed one twice a turn (at 135° and 315°), where B is at infinity:
+    # the crank rocks between the two.
+    "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.1, "omega": 10.0,
+               "swing": [-40.0, 130.0]},
     "groups": [{"kind": "PRP", "links": [3, 4], "joints": ["B"],
                 "guides": [{"link": 2, "through": "A", "angle": 45.0}, {"through": [0.0, 0.0], "angle": 0.0}]}],
     "positions": {"count": 12},
@@ -1043,10 +1046,13 @@ def test_rrr_too_short_to_reach() -> None:
     text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.4, 0.2]}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
+    # The crank's reach told after it, as the Python interface tells it too: ±acos(−0.35) = ±110.4873°, inward.
     assert str(error) == ("B cannot be assembled at position 5 (φ = 120°) in group II(3,4): "
-                          "A–C = 0.6245 m > AB + BC = 0.6 m")
+                          "A–C = 0.6245 m > AB + BC = 0.6 m; link 2 reaches only from -110.48° to 110.48° (at each "
+                          "end two links stand in line); since it cannot turn round, drive it as a rocker: "
+                          "driver.swing = [from, to] in degrees, e.g. driver.swing = [-109, 109]")
     assert (error.joint, error.position, error.group) == ("B", "position 5 (φ = 120°)", "II(3,4)")
-    assert error.reason == "A–C = 0.6245 m > AB + BC = 0.6 m"
+    assert error.reason.startswith("A–C = 0.6245 m > AB + BC = 0.6 m; link 2 reaches only")
     assert isinstance(error, ValueError)
 
 
@@ -1061,8 +1067,10 @@ def test_rrr_too_short_for_an_explicit_driver_array() -> None:
     scene = scene_module.loads(to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.4, 0.2]})))
     with pytest.raises(AssemblyError) as caught:
         graphplan.solve(scene, driver=np.radians([0.0, 90.0, 150.0]))
-    assert str(caught.value) == ("B cannot be assembled at φ = 150° in group II(3,4): "
-                                 "A–C = 0.680592 m > AB + BC = 0.6 m")
+    # Which of the values, by its index; the reach as for the scene's own positions.
+    assert str(caught.value).startswith("B cannot be assembled at φ = 150° (driver[2]) in group II(3,4): "
+                                        "A–C = 0.680592 m > AB + BC = 0.6 m; link 2 reaches only from -110.48° to "
+                                        "110.48°")
 
 
 def test_rrr_too_long_difference_at_the_first_position() -> None:
@@ -1070,7 +1078,8 @@ def test_rrr_too_long_difference_at_the_first_position() -> None:
     text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.5, 0.1]}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
-    assert str(error) == "B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m"
+    assert str(error).startswith("B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
+                                 "link 2 reaches only from ")
 
 
 def test_rrr_too_short_with_near() -> None:
@@ -1078,7 +1087,8 @@ def test_rrr_too_short_with_near() -> None:
                                       "groups.0.near": [0.3, 0.4]}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
-    assert str(error) == "B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m"
+    assert str(error).startswith("B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
+                                 "link 2 reaches only from ")
 
 
 def test_rrr_toggle_is_singular() -> None:
@@ -1099,8 +1109,8 @@ def test_rrp_too_short_to_reach_the_guide() -> None:
                                           "positions.working": DELETE, "positions.plans": DELETE}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
-    assert str(error) == ("B cannot be assembled at position 3 (φ = 60°) in group II(3,4): "
-                          "A is 0.0866025 m from the guide > AB = 0.05 m")
+    assert str(error).startswith("B cannot be assembled at position 3 (φ = 60°) in group II(3,4): "
+                                 "A is 0.0866025 m from the guide > AB = 0.05 m; link 2 reaches only from ")
 
 
 def _rrp_toggle_scene() -> dict[str, Any]:
@@ -1136,18 +1146,28 @@ def test_rpr_offset_wider_than_the_reach() -> None:
     text = to_toml(variant(SLOTTED_LEVER, {"groups.0.offset": 0.3}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
-    assert str(error) == ("A cannot be assembled at position 8 (φ = 210°) in group II(3,4): "
-                          "A–C = 0.264575 m is not more than the slide's offset 0.3 m")
+    assert str(error).startswith("A cannot be assembled at position 8 (φ = 210°) in group II(3,4): "
+                                 "A–C = 0.264575 m is not more than the slide's offset 0.3 m; link 2 reaches only from ")
 
 
-def test_prp_parallel_guides_are_singular() -> None:
-    text = to_toml(variant(CROSSED_SLIDERS, {"groups.0.guides.0.angle": 0.0}))
+def test_prp_guides_in_one_line_at_the_first_position_are_singular() -> None:
+    """The guide on the crank along the crank itself lies along the fixed one at φ = 0: B anywhere on it."""
+    text = to_toml(variant(CROSSED_SLIDERS, {"groups.0.guides.0.angle": 0.0, "driver.swing": [0.0, 130.0]}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is SingularPositionError
-    # The guide on the crank lies along the other one at φ = 0 only: a run started elsewhere passes it.
-    assert str(error) == ("singular position at the first position, 1 (φ = 0°) in group II(3,4): the two guides are "
-                          "parallel; the first position fixes each group's assembly and may not be singular: start the "
-                          "run elsewhere (positions.start)")
+    assert str(error) == ("singular position at the first position, 1 (φ = 0°) in group II(3,4): the two guides lie "
+                          "in one line; the first position fixes each group's assembly and may not be singular: start "
+                          "the run elsewhere (driver.swing)")
+
+
+@pytest.mark.parametrize("swing, where", [([130.0, 140.0], "position 7 (φ = 135.455°)"), ([135.0, 140.0], "φ = 135°")])
+def test_prp_guides_turning_parallel_take_b_off_to_infinity(swing, where) -> None:
+    """The crank's guide at 45° to it is parallel to the fixed one at φ = 135° and −45°, 0.0707 m apart."""
+    stage, error = first_error(to_toml(variant(CROSSED_SLIDERS, {"driver.swing": swing})))
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error).startswith(f"B cannot be assembled at {where} in group II(3,4): its two guides ")
+    assert "link 2 reaches only from -45.00° to 135.00°" in str(error)
+    assert "(at each end its two guides run parallel)" in str(error)
 
 
 @pytest.mark.parametrize("driver, problem", [

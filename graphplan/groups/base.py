@@ -155,6 +155,8 @@ class Group:
     klass: ClassVar[int] = 2
     order: ClassVar[int] = 2
     continuation: ClassVar[bool] = False
+    # What stops the group at an end of a crank's reach, in the refusal's words.
+    reach_ends: ClassVar[str] = "two links stand in line"
     where: str
     links: tuple[int, ...]
     joints: tuple[str, ...]

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import SingularPositionError
+from ..errors import AssemblyError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross
@@ -35,9 +35,14 @@ from .sliding import (
 )
 
 
+# Relative to the lengths about, what counts as nought: parallel guides this near one line lie in it.
+_TOLERANCE = 1e-9
+
+
 @dataclass(frozen=True)
 class PRP(Group):
     kind = "PRP"
+    reach_ends = "its two guides run parallel"
     joint_roles = ("inner B",)
     guide_pair: tuple[Guide, Guide] = (Guide(where=""), Guide(where=""))
     offsets: tuple[float, float] = (0.0, 0.0)
@@ -66,23 +71,57 @@ class PRP(Group):
     def revolutes(self) -> tuple[tuple[str, int, int | None], ...]:
         return ((self.joints[0], self.links[1], self.links[0]),)
 
-    def solve(self, context: Context, branch: int) -> GroupMotion:
+    def with_branch(self, context: Context) -> tuple[int, float]:
+        """The side the second guide crosses the first from at the first position, and how far along the first B
+        stands there. Turning through parallel takes B off to infinity and back from the other end, unless B is a
+        point of both guides' links that stays on both (the two guides pivot about it)."""
+        g1, g2 = (context.guide(g) for g in self.guide_pair)
+        lines = TwoLines(g1.u, -g2.u)
+        det = np.atleast_1d(lines.det)
+        self._refuse_parallel(context, g1, g2, det)
+        along, _ = lines.solve(self._gap(g1, g2))
+        return (1 if det[0] > 0 else -1), float(np.atleast_1d(along)[0])
+
+    def _gap(self, g1, g2):
+        o1, o2 = self.offsets
+        return g2.origin.r - g1.origin.r + 1j * (o2 * g2.u - o1 * g1.u)
+
+    def _refuse_parallel(self, context: Context, g1, g2, det) -> None:
+        """Parallel guides: B at infinity where they lie apart; undetermined where they lie in one line."""
+        parallel = np.abs(det) < SINGULAR_SINE
+        if not parallel.any():
+            return
+        gap = self._gap(g1, g2)
+        apart = np.atleast_1d(np.abs(cross(g1.u, gap)) > _TOLERANCE * (1.0 + np.abs(gap)))
+        context.fail_where(parallel & apart, lambda i, at: AssemblyError(
+            self.joints[0], at, self.label, "its two guides run parallel: B would be at infinity"))
+        context.fail_where(parallel & ~apart, lambda i, at: SingularPositionError(
+            at, self.label, "the two guides lie in one line"))
+
+    def solve(self, context: Context, branch: tuple[int, float]) -> GroupMotion:
         g1, g2 = (context.guide(g) for g in self.guide_pair)
         o1, o2 = self.offsets
         u1, u2 = g1.u, g2.u
         lines = TwoLines(u1, -u2)
         det = lines.det
-        context.fail_where(
-            np.atleast_1d(np.abs(det) < SINGULAR_SINE),
-            lambda i, at: SingularPositionError(at, self.label, "the two guides are parallel"),
-        )
+        self._refuse_parallel(context, g1, g2, np.atleast_1d(det))
         # Position: s1·u1 − s2·u2 = G2 − G1 + i·(o2·u2 − o1·u1).
-        gap = g2.origin.r - g1.origin.r + 1j * (o2 * u2 - o1 * u1)
-        s1, s2 = lines.solve(gap)
+        s1, s2 = lines.solve(self._gap(g1, g2))
         b_r = g1.origin.r + (s1 + 1j * o1) * u1
         v1, a1 = g1.carried(b_r)
         v2, a2 = g2.carried(b_r)
         s1_dot, s2_dot = lines.solve(v2 - v1)
+        # The guides crossing from the other side: on the way from the first position they ran parallel, and B off
+        # to infinity (a tangent mechanism's crank at 0° and 180°); the mechanism does not get there. Unless the
+        # guides pivot about B: the first position's B, carried on the first guide, lies on the second still and
+        # slides along neither.
+        side, along = branch
+        carried = g1.origin.r + (along + 1j * o1) * u1
+        pivoting = ((np.abs(cross(u2, carried - g2.origin.r) - o2) <= _TOLERANCE * (1.0 + np.abs(carried)))
+                    & (np.abs(s1_dot) + np.abs(s2_dot) <= _TOLERANCE * (1.0 + np.abs(v1) + np.abs(v2))))
+        context.fail_where(np.atleast_1d((det * side < 0) & ~pivoting), lambda i, at: AssemblyError(
+            self.joints[0], at, self.label, "its two guides cross from the other side than at the first position: "
+                                            "between the two they run parallel and B goes off to infinity"))
         coriolis1 = 2j * g1.omega * s1_dot * u1
         coriolis2 = 2j * g2.omega * s2_dot * u2
         s1_ddot, s2_ddot = lines.solve(a2 + coriolis2 - a1 - coriolis1)
