@@ -34,7 +34,6 @@ from .sliding import (
     guide_point,
 )
 
-
 # Relative to the lengths about, what counts as nought: parallel guides this near one line lie in it.
 _TOLERANCE = 1e-9
 
