@@ -17,6 +17,7 @@ from collections import Counter
 from pathlib import Path
 from xml.etree import ElementTree
 
+import numpy as np
 import pytest
 from shapely.geometry import LineString, Point
 from shapely.geometry import Polygon as ShapelyPolygon
@@ -42,6 +43,7 @@ from graphplan.render.primitives import (
     Text,
     arrowhead,
     bounds_of,
+    curved_arrow,
     place,
     text_width,
 )
@@ -316,6 +318,22 @@ def test_an_arrowhead_is_the_unit_symbol_placed_with_its_tip_at_the_end():
     # The shaft stops inside the head, so its round cap cannot show past the tip.
     assert math.dist(arrow.shaft().points[-1], arrow.end) == pytest.approx(0.7 * 3.5)
     assert arrowhead((1.0, 2.0), 0.0, 2.0).points[0] == (1.0, 2.0)
+
+
+@pytest.mark.parametrize("sweep_deg", [30.0, 170.0, 190.0, 270.0, 355.0, -30.0, -170.0, -190.0, -270.0, -355.0])
+def test_a_curved_arrow_runs_its_whole_sweep_but_for_its_head(sweep_deg):
+    centre, radius, start, head = (5.0, -3.0), 10.0, 0.4, 2.5
+    shaft, tip = curved_arrow(centre, radius, start, math.radians(sweep_deg), Stroke(0.35), head)
+    points = np.array(shaft.points) - centre
+    assert np.hypot(points[:, 0], points[:, 1]) == pytest.approx(radius)
+    # Each point's angle turned from the start in the arrow's sense, followed round without jumps.
+    turned = math.copysign(1.0, sweep_deg) * (np.unwrap(np.arctan2(points[:, 1], points[:, 0])) - start)
+    assert turned[0] == pytest.approx(0.0, abs=1e-12)
+    assert np.all(np.diff(turned) > 0)
+    # The shaft ends under the head: short of the tip by less than the head's length, and not past it.
+    assert math.radians(abs(sweep_deg)) - head / radius < turned[-1] < math.radians(abs(sweep_deg))
+    end = start + math.radians(sweep_deg)
+    assert tip.points[0] == pytest.approx((centre[0] + radius * math.cos(end), centre[1] + radius * math.sin(end)))
 
 
 def test_a_short_vector_gets_a_smaller_head():

@@ -135,21 +135,22 @@ def curved_arrow(centre: Point, radius: float, start: float, sweep: float, strok
     The head points along the chord of its own length, so it sits on the arc
     rather than on the tangent's overshoot.
     """
-    steps = max(8, int(abs(sweep) / math.radians(5)))
-    arc = [(centre[0] + radius * math.cos(start + sweep * k / steps),
-            centre[1] + radius * math.sin(start + sweep * k / steps)) for k in range(steps + 1)]
     end_angle = start + sweep
     back = end_angle - math.copysign(min(head / radius, abs(sweep) / 2), sweep)
-    tail = (centre[0] + radius * math.cos(back), centre[1] + radius * math.sin(back))
-    tip = arc[-1]
+    tail, tip = _on_circle(centre, radius, back), _on_circle(centre, radius, end_angle)
     direction = math.atan2(tip[1] - tail[1], tip[0] - tail[0])
-    shaft = [p for p in arc if _behind(p, tip, direction, 0.7 * head)] or arc[:1]
-    return [Polyline(tuple(shaft), stroke), arrowhead(tip, direction, head, stroke.colour)]
+    # The shaft stops 0.7 of the head short of the tip, inside the head, as a straight arrow's does. It is cut
+    # round the arc, not by the points' distance from the tip: an arc of more than half a turn comes back near
+    # its tip, and would lose its beginning.
+    hidden = 2 * math.asin(min(1.0, 0.35 * head / radius))
+    drawn = math.copysign(max(0.0, abs(sweep) - hidden), sweep)
+    steps = max(8, int(abs(drawn) / math.radians(5))) if drawn else 0
+    shaft = tuple(_on_circle(centre, radius, start + drawn * k / max(steps, 1)) for k in range(steps + 1))
+    return [Polyline(shaft, stroke), arrowhead(tip, direction, head, stroke.colour)]
 
 
-def _behind(point: Point, tip: Point, direction: float, distance: float) -> bool:
-    """Whether ``point`` lies at least ``distance`` behind ``tip`` along ``direction``."""
-    return (tip[0] - point[0]) * math.cos(direction) + (tip[1] - point[1]) * math.sin(direction) >= distance
+def _on_circle(centre: Point, radius: float, angle: float) -> Point:
+    return centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle)
 
 
 def hatching(start: Point, end: Point, side: float = -1.0, pitch: float = 2.0, depth: float = 2.0,
