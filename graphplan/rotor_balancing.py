@@ -87,7 +87,8 @@ class RotatingMass:
     @property
     def unbalance(self) -> complex:
         """The mass-radius product as a vector, m·r·e^{iθ} (kg·m)."""
-        return self.mass * self.radius * cmath.exp(1j * math.radians(self.angle_deg))
+        # Whole turns taken off in degrees, where fmod is exact: in radians a large angle keeps too few digits.
+        return self.mass * self.radius * cmath.exp(1j * math.radians(math.fmod(self.angle_deg, 360.0)))
 
     @property
     def label(self) -> str:

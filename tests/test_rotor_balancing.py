@@ -203,6 +203,15 @@ def test_turning_the_masses_turns_the_static_correction(data, turn):
     assert abs(other.correction - expected) < 1e-12 * (1 + sum(abs(m.unbalance) for m in masses))
 
 
+@pytest.mark.parametrize("turns", [0, 1, -3, 277_777_777_777])
+def test_a_mass_given_whole_turns_past_its_angle_is_balanced_as_at_that_angle(turns):
+    # 277 777 777 777 turns and 280° make 1e14°, which as radians keeps only about a thousandth of a degree.
+    (plane,) = balance(BalancingSpec([RotatingMass(1.0, 0.2, 360.0 * turns + 280.0)])).planes
+    assert plane.angle_deg == pytest.approx(100.0, abs=1e-9)
+    assert plane.correction == pytest.approx(-0.2 * complex(math.cos(math.radians(280)), math.sin(math.radians(280))),
+                                             abs=1e-15)
+
+
 # --- the specification --------------------------------------------------------------------------------
 
 
