@@ -48,6 +48,11 @@ def agrees(printed, exact, digits=5):
     return abs(value(printed) - exact) <= 0.5 * 10 ** (math.floor(math.log10(abs(exact))) - digits + 1) * (1 + 1e-9)
 
 
+def to_a_tenth(printed, exact):
+    """An angle printed to a tenth of a degree is ``exact`` within half a tenth."""
+    return re.fullmatch(r"\d+\.\d", printed) is not None and abs(value(printed) - exact) <= 0.05 * (1 + 1e-9)
+
+
 def test_a_rotor_alone_gets_a_note_whose_corrections_cancel_the_force_and_the_moment(tmp_path):
     out, note = note_of(tmp_path, ROTOR)
     assert {"note.md", "note.html", "note.tex"} <= {path.name for path in out.iterdir()}
@@ -63,7 +68,7 @@ def test_a_rotor_alone_gets_a_note_whose_corrections_cancel_the_force_and_the_mo
                           rf"so that at r = 0.05 m the correction mass is m{name} = [\d.]+/0.05 = (\d+(?:\.\d+)?) kg", note)
         assert found, name
         assert agrees(found.group(1), abs(correction))
-        assert agrees(found.group(2), math.degrees(cmath.phase(correction)) % 360, 4)
+        assert to_a_tenth(found.group(2), math.degrees(cmath.phase(correction)) % 360)
         assert agrees(found.group(3), abs(correction) / 0.05)
     assert "Σ m·r = 0 kg·m and Σ m·r·z = 0 kg·m²" in note
     # The shares carried to plane L: (zR − zi)/(zR − zL).
@@ -156,8 +161,43 @@ correction_radius = 0.1
     found = re.search(r"The closing vector mbrb = (\d+(?:\.\d+)?) kg·m at θ = (\d+(?:\.\d+)?)°, so that at r = 0.1 m "
                       r"the correction mass is mb = [\d.]+/0.1 = (\d+(?:\.\d+)?) kg\.", note)
     assert found and agrees(found.group(1), abs(correction)) and agrees(found.group(3), abs(correction) / 0.1)
-    assert agrees(found.group(2), math.degrees(cmath.phase(correction)) % 360, 4)
+    assert to_a_tenth(found.group(2), math.degrees(cmath.phase(correction)) % 360)
     assert "Check: with the correction Σ m·r = 0 kg·m: the rotor is balanced statically." in note
+
+
+def test_planes_with_long_names_name_their_correction_masses_after_them(tmp_path):
+    rotor = """[balancing]
+masses = [ { mass = 5.0, radius = 0.2, angle = 0.0, plane = -0.1 }, { mass = 4.0, radius = 0.15, angle = 90.0, plane = 0.35 } ]
+planes = [0.0, 0.6]
+correction_radius = [0.2, 0.1]
+plane_names = ["A-A", "B-B"]
+"""
+    _, note = note_of(tmp_path, rotor)
+    products = [5.0 * 0.2, 4.0 * 0.15 * 1j]
+    system = np.array([[1.0, 1.0], [0.0, 0.6]], dtype=complex)
+    corrections = np.linalg.solve(system, -np.array([sum(products), -0.1 * products[0] + 0.35 * products[1]]))
+    for name, correction, radius in zip(("A-A", "B-B"), corrections, (0.2, 0.1), strict=True):
+        found = re.search(rf"Plane {name}: .*?closing vector \(m·r\){name} = [\d.]+ kg·m at θ = [\d.]+°, so that at "
+                          rf"r = {radius} m the correction mass is m{name} = [\d.]+/{radius} = ([\d.]+) kg", note)
+        assert found, name
+        assert agrees(found.group(1), abs(correction) / radius)
+    assert "mb =" not in note
+
+
+@pytest.mark.parametrize(("masses", "planes", "angles"), [
+    # 5·0.2 at 0° and 4·0.15 at 90°: the correction points at 180° + atan(0.6/1.0) = 210.96°.
+    ("{ mass = 5.0, radius = 0.2, angle = 0.0, plane = -0.1 }, { mass = 4.0, radius = 0.15, angle = 90.0, plane = 0.2 }",
+     "[0.05]", [180.0 + math.degrees(math.atan2(0.6, 1.0))]),
+    # A pure couple, 0.2 kg·m at 45° and at 225° 0.2 m apart, balanced by planes 0.4 m apart: 0.1 kg·m each way.
+    ("{ mass = 2.0, radius = 0.1, angle = 45.0, plane = 0.0 }, { mass = 2.0, radius = 0.1, angle = -135.0, plane = 0.2 }",
+     "[0.5, 0.9]", [225.0, 45.0]),
+    # One mass at 179.97°: the correction lies 0.03° short of a whole turn, written 0.0°, not 360.0°.
+    ("{ mass = 1.0, radius = 0.1, angle = 179.97 }", "[0.0]", [0.0]),
+], ids=["one-plane", "couple", "near-a-turn"])
+def test_the_correction_angles_are_written_to_a_tenth_of_a_degree(tmp_path, masses, planes, angles):
+    _, note = note_of(tmp_path, f"[balancing]\nmasses = [ {masses} ]\nplanes = {planes}\ncorrection_radius = 0.1\n")
+    written = re.findall(r"kg·m at θ = ([\d.]+)°", note)
+    assert written == [f"{round(angle, 1) % 360.0:.1f}" for angle in angles]
 
 
 def test_an_instrument_on_a_shaken_floor_moves_by_the_displacement_transmissibility(tmp_path):

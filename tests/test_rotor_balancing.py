@@ -381,6 +381,13 @@ def test_the_drawing_writes_its_scale_and_labels_that_do_not_overlap(shaft_resul
         assert not text_box(a).intersects(text_box(b)), (a.text, b.text)
 
 
+def test_a_correction_just_short_of_a_whole_turn_is_written_at_0_degrees():
+    # The mass at 179.97° wants its correction at 359.97°, which to a tenth of a degree is 0.0°, not 360.0°.
+    result = balance(BalancingSpec([RotatingMass(1, 0.1, 179.97)], correction_radius=0.1))
+    written = [item.text for layer in drawing.layout(result) for item in layer.items if isinstance(item, Text)]
+    assert "mbrb = 0.1000 kg·m, θb = 0.0°" in written
+
+
 def test_a_locale_replaces_the_strings():
     result = balance(BalancingSpec([RotatingMass(1, 0.1, 30)], correction_radius=0.1))
     texts = [item.text for layer in drawing.layout(result, {"bal_disc": "Плоскость коррекции {name}"})

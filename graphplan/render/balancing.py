@@ -27,7 +27,7 @@ from ..locale import strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane
 from ..scales import format_scale, standard_scale
 from .labels import Anchor, Placement, obstacles_of, place_labels
-from .numerals import significant
+from .numerals import angle_in_turn, significant
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
 from .primitives import (
     Arrow,
@@ -188,7 +188,7 @@ def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], dyna
              if dynamic else text["bal_disc"].format(name=plane.name))
     lines = [title, text["bal_scale"].format(value=format_scale(scale)), plane.equation,
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
-                                                 value=significant(plane.mass_radius), angle=f"{plane.angle_deg:.1f}")]
+                                           value=significant(plane.mass_radius), angle=angle_in_turn(plane.angle_deg))]
     if plane.mass is not None and plane.radius is not None:
         lines.append(text["bal_mass"].format(name=plane.name, mass=significant(plane.mass),
                                                    radius=_given(plane.radius)))

@@ -33,6 +33,12 @@ def significant(value: float, digits: int = 4) -> str:
     return text.replace("-", "−") if text.strip("-0.") else "0"
 
 
+def angle_in_turn(angle_deg: float) -> str:
+    """An angle of [0°, 360°) to a tenth of a degree, its nought kept (211.0, not 211); one that rounds to a whole
+    turn is 0.0."""
+    return f"{round(float(angle_deg), 1) % 360.0:.1f}"
+
+
 def short(value: float, digits: int = 4) -> str:
     """``value`` to ``digits`` significant digits with the trailing noughts dropped: 0.05, not 0.05000.
 

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
+from ..render.numerals import angle_in_turn
 from ..rotor_balancing import BalancingResult, static_couple
 from ..units import RPM
 from ..vibration import Response, Shaft, VibrationSpec, damping_ratio
@@ -213,8 +214,8 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
             note.para(note.t("note_bal_none", name=plane.name))
             continue
         vector = plane.vectors[-1].name
-        # The correction mass is named as its product is (mLrL: mL), a long plane name's as mb.
-        symbol = f"m{plane.name}" if vector == f"m{plane.name}r{plane.name}" else "mb"
+        # The correction mass is named after its plane, as the drawing names it: mL, mA-A (whose product is (m·r)A-A).
+        symbol = f"m{plane.name}"
         value, mass = note.n(plane.mass_radius), ""
         if plane.mass is not None and plane.radius is not None:
             radius = plane.radius
@@ -222,9 +223,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
             value = shown_operand(note, plane.mass_radius, [(lambda product, radius=radius: product / radius, note.n(plane.mass))])
             mass = note.t("note_bal_mass", symbol=symbol, value=value, radius=note.n(radius), mass=note.n(plane.mass))
         # A disc's one plane has its equation in the paragraph before.
+        # The angle to a tenth of a degree, as the drawing writes it: to four digits 210.96° would read 211°.
+        angle = angle_in_turn(plane.angle_deg).replace(".", note.mark)
         note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=plane.name,
-                         equation=plane.equation, vector=vector, value=value, angle=note.n(plane.angle_deg, 4),
-                         mass=mass))
+                         equation=plane.equation, vector=vector, value=value, angle=angle, mass=mass))
     # The residual as results.json writes it (rounding as 0), and the verdict from it.
     force, moment = result.residual
     verdict = "note_bal_residual" + ("" if result.balanced else "_left") + ("" if spec.dynamic else "_static")
