@@ -345,8 +345,16 @@ def resonance_warning(spec: VibrationSpec) -> str | None:
 
 def isolation_warning(spec: VibrationSpec) -> str | None:
     """A line where the isolating mounts the scene asks for would sag more than :data:`MOST_MOUNT_SAG` under the
-    machine's weight (a low speed, a small transmissibility): no mount of springs gives them, or None."""
-    if spec.transmissibility is None:
+    machine's weight (a low speed, a small transmissibility, much damping), with what would bring them within it;
+    else None.
+
+    The sag M·g/k = g·r²/ω² is the mass's in nothing: r is the ratio that gives the wanted TR at the
+    mounts' ζ, and grows with ζ (the damper passes force of its own), from √(1 + 1/TR) undamped.  So
+    less damping, a larger TR or a higher speed each lower the sag; each is offered only where it
+    reaches the limit alone, rounded to the side that keeps within it.
+    """
+    wanted = spec.transmissibility
+    if wanted is None:
         return None
     stiffness = steady_state(spec).isolation_stiffness
     if stiffness is None or not stiffness > 0:
@@ -354,11 +362,43 @@ def isolation_warning(spec: VibrationSpec) -> str | None:
     sag = spec.mass * STANDARD_GRAVITY / stiffness
     if sag <= MOST_MOUNT_SAG:
         return None
-    # k = M·(ω/r)², so the sag M·g/k = g·r²/ω² is the speed's and the wanted TR's alone, whatever the mass.
-    return (f"vibration: the isolating mounts, k = {stiffness:.4g} N/m, would sag by M·g/k = {sag:.3g} m under the "
-            f"machine's weight, more than any spring mount ({MOST_MOUNT_SAG * 1000:g} mm); the sag, g·r²/ω², is the "
-            f"speed's and the wanted transmissibility's alone: TR = {spec.transmissibility:g} at "
-            f"{spec.omega * 30 / math.pi:.4g} rpm is out of reach of mounts, a larger TR or a higher speed is not")
+    zeta, omega = spec.damping_ratio, spec.omega
+    ratio = float(isolation_frequency_ratio(wanted, zeta))
+    undamped = 1.0 + 1.0 / wanted  # r² that gives the wanted TR without damping
+    # The largest r² mounts of the most sag can have at this speed.
+    reach = omega * omega * MOST_MOUNT_SAG / STANDARD_GRAVITY
+    limit = f"{MOST_MOUNT_SAG * 1000:g} mm"
+    line = (f"vibration: the isolating mounts, k = {stiffness:.4g} N/m, would sag by M·g/k = {sag:.3g} m under the "
+            f"machine's weight, more than any spring mount ({limit}); the sag is g·r²/ω², and ")
+    if zeta > 0:
+        line += (f"TR = {wanted:g} needs r = {ratio:.4g} at the mounts' damping ratio ζ = {zeta:g} (more damping, a "
+                 f"larger r; undamped, r = {math.sqrt(undamped):.4g})")
+    else:
+        line += f"TR = {wanted:g} needs r = {ratio:.4g} without damping"
+    ways = []
+    if zeta > 0 and undamped <= reach:
+        # TR²·((1 − s)² + 4ζ²s) = 1 + 4ζ²s at s = reach, solved for ζ².
+        most = math.sqrt((wanted * wanted * (1.0 - reach) ** 2 - 1.0) / (4.0 * reach * (1.0 - wanted * wanted)))
+        ways.append(f"damping ζ ≤ {_rounded(most, down=True)}")
+    elif zeta > 0:
+        line += f"; even undamped mounts would sag {STANDARD_GRAVITY * undamped / omega ** 2:.3g} m at this speed"
+    if reach > 2.0:  # every ζ passes TR = 1 at r = √2: a larger TR reaches r = √reach
+        least = _rounded(float(transmissibility(math.sqrt(reach), zeta)), down=False)
+        if float(least) < 1.0:  # not rounded up to no isolation at all
+            ways.append(f"TR ≥ {least}" + (f" at ζ = {zeta:g}" if zeta > 0 else ""))
+    else:
+        line += (f"; at this speed no mount isolates within {limit} (r = √2 already sags "
+                 f"{2 * STANDARD_GRAVITY / omega ** 2:.3g} m)")
+    fastest = ratio * math.sqrt(STANDARD_GRAVITY / MOST_MOUNT_SAG) / RPM
+    ways.append(f"a speed of {_rounded(fastest, down=False)} rpm or more (now {omega / RPM:.4g} rpm)")
+    return line + f"; within {limit}: " + ", or ".join(ways)
+
+
+def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
+    """``value`` to ``digits`` significant digits, rounded down or up (a bound offered must keep what it bounds), with
+    no exponent."""
+    step = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+    return f"{(math.floor if down else math.ceil)(value / step) * step:.{max(digits, 1 + int(math.log10(value)))}g}"
 
 
 @dataclass(frozen=True)

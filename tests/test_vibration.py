@@ -627,3 +627,50 @@ def test_isolating_mounts_that_would_sag_more_than_any_spring_are_warned_of(tmp_
     scene.write_text(scene.read_text(encoding="utf-8").replace("rpm = 60.0", "rpm = 1500.0"), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "fast")]) == 0
     assert "would sag" not in capsys.readouterr().out
+
+
+def _ratio_for(wanted, zeta):
+    """r > √2 where TR(r, ζ) = wanted, by Brent's method on the formula itself."""
+    return brentq(lambda r: math.hypot(1, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r) - wanted,
+                  math.sqrt(2.0) + 1e-12, 1e5)
+
+
+@pytest.mark.parametrize(("rpm", "zeta", "wanted", "offered"), [
+    (900.0, 2.0, 0.3, {"damping", "tr", "speed"}),  # the tester's: r = 12.8 at ζ = 2, 2.08 undamped
+    (211.0, 0.2, 0.1, {"tr", "speed"}),  # undamped r² = 11 is out of reach too, r = √2 is not
+    (60.0, 0.0, 0.2, {"speed"}),  # even r = √2 sags 0.5 m at 60 rpm
+])
+def test_the_sag_warning_offers_only_what_brings_the_mounts_within_the_limit(tmp_path, capsys, rpm, zeta, wanted,
+                                                                             offered):
+    """The sag g·r²/ω² was called the speed's and the TR's alone ("a larger TR or a higher speed is not" out of
+    reach), damping never named; but the r that gives a TR grows with ζ.  Each remedy offered must bring the sag
+    within 100 mm by itself, only just, and none left out may."""
+    import re
+
+    g, most = 9.80665, 0.1
+    omega = rpm * math.pi / 30
+
+    def sag(r, speed=omega):
+        return g * r * r / speed ** 2
+
+    code, told = _run(tmp_path, f"mass = 50.0\nunbalance = 0.01\nstiffness = 2e5\ndamping_ratio = {zeta}\n"
+                                f"rpm = {rpm}\ntransmissibility = {wanted}\n", capsys)
+    assert code == 0
+    (line,) = [line for line in told.out.splitlines() if "would sag" in line]
+    assert f"would sag by M·g/k = {sag(_ratio_for(wanted, zeta)):.3g} m" in line
+    assert "alone" not in line
+    found = {"damping": re.search(r"damping ζ ≤ ([\d.]+)", line), "tr": re.search(r"TR ≥ ([\d.]+)", line),
+             "speed": re.search(r"a speed of ([\d.]+) rpm or more", line)}
+    assert {name for name, match in found.items() if match} == offered
+    if "damping" in offered:
+        most_zeta = float(found["damping"].group(1))
+        assert sag(_ratio_for(wanted, most_zeta)) <= most < sag(_ratio_for(wanted, 1.01 * most_zeta))
+    elif zeta > 0:  # less damping would not do: even none sags too much
+        assert sag(math.sqrt(1 + 1 / wanted)) > most
+    if "tr" in offered:
+        least = float(found["tr"].group(1))
+        assert sag(_ratio_for(least, zeta)) <= most < sag(_ratio_for(0.99 * least, zeta))
+    else:  # every TR below 1 needs r > √2
+        assert sag(math.sqrt(2.0)) > most
+    fastest = float(found["speed"].group(1)) * math.pi / 30
+    assert sag(_ratio_for(wanted, zeta), fastest) <= most < sag(_ratio_for(wanted, zeta), 0.99 * fastest)
