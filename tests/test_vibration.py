@@ -674,3 +674,26 @@ def test_the_sag_warning_offers_only_what_brings_the_mounts_within_the_limit(tmp
         assert sag(math.sqrt(2.0)) > most
     fastest = float(found["speed"].group(1)) * math.pi / 30
     assert sag(_ratio_for(wanted, zeta), fastest) <= most < sag(_ratio_for(wanted, zeta), 0.99 * fastest)
+
+
+@pytest.mark.parametrize(("stiffness", "rpm", "zeta", "wanted", "designed_is"), [
+    (200.0, 6000.0, 0.1, 0.01, "stiffer"),  # the tester's: r = 314 already passes TR = 0.00064
+    (2e5, 900.0, 2.0, 0.3, "softer"),
+])
+def test_the_isolating_mounts_are_compared_with_the_present_ones_as_they_are(tmp_path, capsys, stiffness, rpm, zeta,
+                                                                             wanted, designed_is):
+    """Mounts 230 times stiffer were called "the softer mounts", and the note never said the present ones already
+    passed a fifteenth of the TR asked for."""
+    omega = rpm * math.pi / 30
+    designed = 50.0 * (omega / _ratio_for(wanted, zeta)) ** 2
+    r = omega / math.sqrt(stiffness / 50.0)
+    present = math.hypot(1, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r)
+    code, _ = _run(tmp_path, f"mass = 50.0\nunbalance = 0.01\nstiffness = {stiffness}\ndamping_ratio = {zeta}\n"
+                             f"rpm = {rpm}\ntransmissibility = {wanted}\n", capsys)
+    assert code == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    # The present dampers, c = 2ζ·√(k·M), on the designed mounts: ζ·√(k/k_designed).
+    assert f"on these {designed_is} mounts, would give ζ = {zeta * math.sqrt(stiffness / designed):.5g})" in note
+    assert ("softer" if designed_is == "stiffer" else "stiffer") not in note
+    already = f"The present mounts (r = {r:.5g}) already pass TR = {present:.5g}, less than the {wanted:g} asked for"
+    assert (already in note) == (present < wanted)
