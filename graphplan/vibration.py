@@ -416,6 +416,7 @@ class Response:
     isolation_ratio: float | None
     isolation_stiffness: float | None
     base: BaseResponse | None = None
+    combined: CombinedResponse | None = None
 
 
 @dataclass(frozen=True)
@@ -432,6 +433,29 @@ class BaseResponse:
     relative: float
 
 
+@dataclass(frozen=True)
+class CombinedResponse:
+    """The machine's steady motion where the unbalance and the base both excite it (SI, the lag in radians).
+
+    M·x″ + c·(x′ − y′) + k·(x − y) = m·e·ω²·sin ωt with y = Y·sin ωt is
+    linear: its steady motion is the sum of the unbalance's and the base's,
+    each with its own lag, the two taken in phase (a scene gives no angle
+    between them).  As complex amplitudes over D = 1 − r² + i·2ζr,
+
+        x = ((m·e/M)·r² + Y·(1 + i·2ζr)) / D,    x − y = (m·e/M + Y)·r² / D,
+
+    so the mounts' strokes add in phase, and the force they pass,
+    (k + i·cω)·(x − y), has the amplitude TR·ω²·(m·e + M·Y).
+    ``amplitude`` X and its ``phase`` behind sin ωt; ``relative`` the
+    mounts' stroke; ``transmitted_force`` (N).
+    """
+
+    amplitude: float
+    phase: float
+    relative: float
+    transmitted_force: float
+
+
 def steady_state(spec: VibrationSpec) -> Response:
     """Amplitude X = (m·e/M)·magnification, its lag φ, and the force m·e·ω²·TR passed to the base."""
     omega_n = natural_frequency(spec.stiffness, spec.mass)
@@ -444,26 +468,42 @@ def steady_state(spec: VibrationSpec) -> Response:
     base = None if spec.base_amplitude is None else BaseResponse(
         base_amplitude=spec.base_amplitude, amplitude=spec.base_amplitude * displacement_transmissibility(r, zeta),
         phase=displacement_transmissibility_phase(r, zeta), relative=spec.base_amplitude * magnification)
+    combined = None if base is None or spec.unbalance == 0 else _combined(spec, r, zeta, tr)
     return Response(
         natural_frequency=omega_n, frequency_ratio=r, magnification=magnification,
         amplitude=spec.unbalance / spec.mass * magnification, phase=phase(r, zeta), exciting_force=exciting,
         transmissibility=tr, transmitted_force=exciting * tr,
         isolation_ratio=None if wanted is None else isolation_frequency_ratio(wanted, zeta),
         isolation_stiffness=None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta),
-        base=base)
+        base=base, combined=combined)
+
+
+def _combined(spec: VibrationSpec, r: float, zeta: float, tr: float) -> CombinedResponse:
+    """The unbalance's and the base's responses added as complex amplitudes (:class:`CombinedResponse`)."""
+    assert spec.base_amplitude is not None
+    denominator = complex(1.0 - r * r, 2.0 * zeta * r)
+    own = spec.unbalance / spec.mass
+    motion = (own * r * r + spec.base_amplitude * complex(1.0, 2.0 * zeta * r)) / denominator
+    # Both parts lag by 0 to π, so their sum does too: −π (a zero imaginary part's sign) is π.
+    lag = -math.atan2(motion.imag, motion.real)
+    return CombinedResponse(amplitude=abs(motion), phase=lag + 2.0 * math.pi if lag < 0 else lag,
+                            relative=(own + spec.base_amplitude) * r * r / abs(denominator),
+                            transmitted_force=tr * spec.omega ** 2 * (spec.unbalance + spec.mass * spec.base_amplitude))
 
 
 def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
     """The steady vibration as the results file writes it: SI, angles in degrees, speeds also in rpm.
 
     ``amplitude`` (m), ``phase_deg`` and ``transmissibility`` are the
-    contract's keys; ``isolation`` appears when a transmissibility is wanted,
-    ``base_excitation`` when the base moves.
+    contract's keys: the unbalance's response, ``phase_deg`` None where there
+    is no unbalance (a zero amplitude has no lag); ``isolation`` appears when
+    a transmissibility is wanted, ``base_excitation`` when the base moves, and
+    ``combined`` when both the unbalance and the base excite the machine.
     """
     response = steady_state(spec)
     document: dict[str, Any] = {
         "amplitude": response.amplitude,
-        "phase_deg": math.degrees(response.phase),
+        "phase_deg": math.degrees(response.phase) if spec.unbalance > 0 else None,
         "transmissibility": response.transmissibility,
         "magnification": response.magnification,
         "frequency_ratio": response.frequency_ratio,
@@ -485,6 +525,11 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
                                        "amplitude": response.base.amplitude,
                                        "phase_deg": math.degrees(response.base.phase),
                                        "relative_amplitude": response.base.relative}
+    if response.combined is not None:
+        document["combined"] = {"amplitude": response.combined.amplitude,
+                                "phase_deg": math.degrees(response.combined.phase),
+                                "relative_amplitude": response.combined.relative,
+                                "transmitted_force": response.combined.transmitted_force}
     return document
 
 
@@ -592,6 +637,7 @@ __all__ = [
     "NEAR_RESONANCE",
     "RESONANCE_TOLERANCE",
     "BaseResponse",
+    "CombinedResponse",
     "Response",
     "Shaft",
     "VibrationSpec",

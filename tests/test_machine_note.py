@@ -229,6 +229,39 @@ base_amplitude = 0.0005
     assert document["phase_deg"] == pytest.approx(lag, rel=1e-10)
 
 
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_an_unbalance_on_a_moving_base_is_one_system_whose_two_motions_add(tmp_path, locale):
+    """The note wrote the unbalance's equation with no base in it, said the mounts pass 53 N to the base as if it
+    stood still, and gave the base's response apart, never the two together (0.000702 m)."""
+    body = ("[vibration]\nmass = 40.0\nunbalance = 0.01\nstiffness = 160000.0\ndamping_ratio = 0.1\n"
+            "omega = 158.11388300841895\nbase_amplitude = 0.002\n")
+    out, note = note_of(tmp_path, body, locale)
+    mass, me, k, zeta, omega, lift = 40.0, 0.01, 160000.0, 0.1, 158.11388300841895, 0.002
+    r = omega / math.sqrt(k / mass)
+    # M·x″ + c·(x′ − y′) + k·(x − y) = m·e·ω²·sin ωt, y = Y·sin ωt, as one complex amplitude.
+    denominator = 1 - r * r + 2j * zeta * r
+    motion = (me * omega ** 2 / k + lift * (1 + 2j * zeta * r)) / denominator
+    stroke = motion - lift
+    force = abs((k + 2j * zeta * math.sqrt(k * mass) * omega) * stroke)
+    assert "M·x″ + c·(x′ − y′) + k·(x − y) = m·e·ω²·sin ωt" in note
+    number = r"(\d+(?:[.,]\d+)?)"
+    found = re.search(r"X = √\(X₁² \+ X₂² \+ 2·X₁·X₂·cos\(φ₁ − φ₂\)\) = " + number + " (?:m|м)", note)
+    assert found and agrees(found.group(1), abs(motion))
+    found = re.search(r"= \(0[.,]01/40 \+ 0[.,]002\)·" + number + " = " + number + " (?:m|м)", note)
+    assert found and agrees(found.group(2), abs(stroke))
+    assert abs(value(found.group(1)) * (me / mass + lift) - value(found.group(2))) <= 5e-5 * abs(stroke)
+    found = re.search(r"= " + number + r"·" + number + r"²·\(0[.,]01 \+ 40·0[.,]002\) = " + number + " (?:N|Н)", note)
+    assert found and agrees(found.group(3), force, 3)
+    if locale == "en":
+        alone = me * omega ** 2 * abs((1 + 2j * zeta * r) / denominator)
+        assert f"on a base at rest the mounts would pass {alone:.3g} N to it" in note
+        assert "so the mounts pass" not in note
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]["combined"]
+    assert document["amplitude"] == pytest.approx(abs(motion), rel=1e-10)
+    assert document["phase_deg"] == pytest.approx(-math.degrees(cmath.phase(motion)), rel=1e-10)
+    assert document["transmitted_force"] == pytest.approx(force, rel=1e-10)
+
+
 def test_a_base_amplitude_must_be_positive_and_is_named_where_it_is_not(tmp_path, capsys):
     scene = tmp_path / "scene.toml"
     scene.write_text(MOUNTS.join(['[scene]\ntitle = "A machine"\n', "base_amplitude = -0.001\n"]), encoding="utf-8")

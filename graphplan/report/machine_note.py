@@ -312,6 +312,11 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     model = "note_vib_model_base" if balanced else "note_vib_model_shaft" if spec.on_shaft else "note_vib_model"
     note.para(note.t(model, mass=mass, stiffness=stiffness, zeta=zeta, unbalance=unbalance,
                      omega=omega, rpm=note.n(spec.omega / RPM)))
+    # The unbalance and a moving base excite one linear system: each is worked out alone, then the two added.
+    both = response.combined
+    base_text = "" if response.base is None else note.n(response.base.base_amplitude)
+    if both is not None:
+        note.para(note.t("note_vib_moving_base_shaft" if spec.on_shaft else "note_vib_moving_base", base=base_text))
     if spec.shaft is not None:
         _shaft(note, spec.shaft, stiffness)
     if spec.damping is not None:
@@ -323,24 +328,42 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     amplitude_checks = [] if balanced else [(lambda q: me_over_m * q, note.n(response.amplitude))]
     if response.base is not None:
         amplitude_checks.append((lambda q: response.base.base_amplitude * q, note.n(response.base.relative)))
+    if both is not None:
+        strokes = me_over_m + read_number(note, base_text)
+        amplitude_checks.append((lambda q: strokes * q, note.n(both.relative)))
     magnification = shown_operand(note, response.magnification, amplitude_checks)
     force = note.n(response.exciting_force)
     # The force passed on is said, not written as a product: TR need only give the base's motion it is written into.
     tr_checks = [] if response.base is None else [(lambda t: response.base.base_amplitude * t,
                                                    note.n(response.base.amplitude))]
+    if both is not None:
+        moved = spec.unbalance + m * read_number(note, base_text)
+        tr_checks.append((lambda t: t * w * w * moved, note.n(both.transmitted_force)))
     tr = shown_operand(note, response.transmissibility, tr_checks)
     if not balanced:
         note.para(note.t("note_vib_amplitude", magnification=magnification, unbalance=unbalance, mass=mass,
                          amplitude=note.n(response.amplitude), millimetres=note.n(response.amplitude * 1000.0),
                          phase=note.n(math.degrees(response.phase), 4)))
-        note.para(note.t("note_vib_transmitted_shaft" if spec.on_shaft else "note_vib_transmitted",
+        # On a moving base the force the unbalance alone passes is the one it would pass to a base at rest.
+        transmitted = "note_vib_transmitted_shaft" if spec.on_shaft else "note_vib_transmitted"
+        note.para(note.t(transmitted + ("_alone" if both is not None else ""),
                          unbalance=unbalance, omega=omega, force=force, tr=tr,
                          transmitted=note.n(response.transmitted_force)))
     if response.base is not None:
         base = response.base
-        note.para(note.t("note_vib_base", base=note.n(base.base_amplitude), tr=tr,
+        note.para(note.t("note_vib_base", base=base_text, tr=tr,
                          amplitude=note.n(base.amplitude), phase=note.n(math.degrees(base.phase), 4),
                          magnification=magnification, relative=note.n(base.relative)))
+    if both is not None:
+        first, second = response.amplitude, response.base.amplitude
+        note.para(note.t("note_vib_combined", first=note.n(first), first_phase=note.n(math.degrees(response.phase), 4),
+                         second=note.n(second), second_phase=note.n(math.degrees(response.base.phase), 4),
+                         amplitude=note.n(both.amplitude), phase=note.n(math.degrees(both.phase), 4),
+                         low=note.n(abs(first - second)), high=note.n(first + second), unbalance=unbalance,
+                         mass=mass, base=base_text, magnification=magnification, relative=note.n(both.relative)))
+        note.para(note.t("note_vib_combined_force_shaft" if spec.on_shaft else "note_vib_combined_force", tr=tr,
+                         omega=omega, unbalance=unbalance, mass=mass, base=base_text,
+                         force=note.n(both.transmitted_force)))
     if spec.transmissibility is not None and response.isolation_ratio is not None:
         designed = response.isolation_stiffness
         isolating = shown_operand(note, response.isolation_ratio, [(lambda r: m * (w / r) ** 2, note.n(designed))])
