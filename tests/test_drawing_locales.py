@@ -152,7 +152,9 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         stream = io.StringIO()
         vibration_plots.transmissibility_figure(stream, operating=(1.3, 0.1), design=(2.5, 0.2), text=words)
         found += figure_texts(stream.getvalue())
-    return found
+    stream = io.StringIO()  # next to no damping at resonance: the working point above the ordinate
+    vibration_plots.magnification_figure(stream, operating=(0.999, 1e-9), text=text)
+    return found + figure_texts(stream.getvalue())
 
 
 @functools.cache

@@ -613,6 +613,30 @@ def test_the_machines_own_damping_is_a_highlighted_curve_through_its_working_poi
     assert drawn == 7 - (not added)
 
 
+def test_next_to_no_damping_is_plotted_as_none_is_with_its_working_point_on_the_top_edge():
+    """ζ = 1e-9 ran the ordinate to 5·10⁸ (its peak 1/(2ζ)), every other curve and the working point flat at nought,
+    where ζ = 0 is cut at a little above the set's highest peak (ζ = 0.05: 1/(2ζ√(1 − ζ²)))."""
+    import io
+    import re
+
+    def ticks_and_point(zeta):
+        stream = io.StringIO()
+        magnification_figure(stream, operating=(0.998426, zeta))
+        text = stream.getvalue()
+        ticks = [float(tick) for tick in re.findall(r'<g id="ytick_\d+">.*?<!-- (.*?) -->', text, re.DOTALL)]
+        return ticks, re.findall(r"<!-- (working point.*?) -->", text)
+
+    r = 0.998426
+    working = r * r / math.hypot(1 - r * r, 2e-9 * r)
+    ticks, point = ticks_and_point(1e-9)
+    assert max(ticks) <= 1.15 / (2 * 0.05 * math.sqrt(1 - 0.05 ** 2)) and min(ticks) == 0
+    assert ticks_and_point(0.0) == (ticks, point) == (ticks, [f"working point, off the scale: {working:.3g}"])
+    stream = io.StringIO()
+    transmissibility_figure(stream, operating=(r, 1e-9))
+    tr = math.hypot(1, 2e-9 * r) / math.hypot(1 - r * r, 2e-9 * r)
+    assert f"<!-- working point, off the scale: {tr:.3g} -->" in stream.getvalue()
+
+
 def test_the_isolating_mounts_design_point_is_marked_where_the_wanted_transmissibility_is_met():
     import io
 

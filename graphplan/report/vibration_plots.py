@@ -22,7 +22,8 @@ from pathlib import Path
 import numpy as np
 
 from ..locale import strings as locale_strings
-from ..vibration import VibrationSpec, transmissibility, unbalance_magnification
+from ..render.numerals import short
+from ..vibration import LARGE_MAGNIFICATION, VibrationSpec, transmissibility, unbalance_magnification
 from .plot_style import settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
@@ -31,6 +32,11 @@ DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
 SAMPLES = 1201
 # The machine's own curve and its working point.
 MACHINE_COLOUR = "#a83a1f"
+#: A damped peak or a working point's magnification above this sets no ordinate: drawn to scale, ζ = 1e-9's peak of
+#: 5·10⁸ flattened every other curve and the working point to nought.  Such a curve is cut at the top as an undamped
+#: one is, and such a point marked on the top edge with its value.  Ten times the warning's large magnification,
+#: the peak of ζ = 0.005, while the textbooks' charts stop at ζ = 0.05 (a peak of 10).
+MOST_TO_SCALE = 10.0 * LARGE_MAGNIFICATION
 
 
 def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
@@ -40,15 +46,17 @@ def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETA
 
     ``operating`` = (r, ζ) marks a machine's working point on the curve of its ζ.
     The ordinate stops at a little above the highest damped peak drawn and the working point (an
-    undamped curve is cut there).
+    undamped curve is cut there), leaving out peaks and a working point above :data:`MOST_TO_SCALE`: a damping
+    so small is drawn as none is.
     """
     words = {**locale_strings("en"), **(text or {})}
     ratios = np.linspace(0.0, _reaching(ratio_max, operating), SAMPLES)
     drawn = _with_machine(_checked(zetas), operating)
     curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in drawn]
     working = None if operating is None else (operating[0], unbalance_magnification(*operating))
-    damped = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in drawn if 0 < zeta < math.sqrt(0.5)]
-    top = 1.15 * max([*damped, 2.0, *([] if working is None else [working[1]])])
+    peaks = [1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta * zeta)) for zeta in drawn if 0 < zeta < math.sqrt(0.5)]
+    shown = [value for value in [*peaks, *([] if working is None else [working[1]])] if value <= MOST_TO_SCALE]
+    top = 1.15 * max([*shown, 2.0])
     return _plot(path, ratios, curves, words, words["vib_magnification"], words["vib_magnification_title"],
                  ylim=(0.0, top), log=False, operating=working,
                  machine=None if operating is None else operating[1])
@@ -140,9 +148,12 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         else:
             plot.axhline(1.0, color="black", linewidth=0.6, linestyle=":")
         plot.axvline(1.0, color="black", linewidth=0.5, linestyle=":")
-        if operating is not None:
+        if operating is not None and operating[1] <= ylim[1]:
             plot.plot([operating[0]], [operating[1]], "o", color=MACHINE_COLOUR, markersize=6, zorder=4,
                       label=text["vib_operating"])
+        elif operating is not None:  # above the ordinate: on its top edge, pointing up, its value in the legend
+            plot.plot([operating[0]], [ylim[1]], "^", color=MACHINE_COLOUR, markersize=7, zorder=4, clip_on=False,
+                      label=text["vib_operating_off"].format(value=short(operating[1], 3)))
         if design is not None:
             plot.plot([design[0]], [design[1]], "D", color="#1f7a3a", markeredgecolor="black", markersize=6, zorder=4,
                       label=text["vib_design"].format(tr=f"{design[1]:g}", ratio=f"{design[0]:.3g}"))
