@@ -334,3 +334,20 @@ def test_the_notes_operands_as_written_give_the_results_as_written(tmp_path):
     isolation = re.search(r"= ([\d.]+)·\(([\d.]+)/([\d.]+)\)² = ([\d.]+) N/m", note)
     mass, omega_again, ratio_iso, stiffness = isolation.groups()
     assert omega_again == omega and written_as(float(mass) * (float(omega) / float(ratio_iso)) ** 2, stiffness)
+
+
+def test_the_russian_note_names_the_damping_and_the_magnification_as_the_textbooks_do(tmp_path):
+    """ζ was «коэффициент демпфирования», the textbooks' name for c (Бидерман, Тимошенко); M·X/(m·e) was
+    «коэффициент усиления» in the note and «безразмерная амплитуда» on its plot."""
+    body = ("[vibration]\nmass = 250.0\nunbalance = 0.1\nstiffness = 400000.0\ndamping = 3000.0\nrpm = 1200.0\n"
+            "transmissibility = 0.1\n")
+    out, note = note_of(tmp_path, body, "ru")
+    assert "с относительным коэффициентом демпфирования ζ" in note
+    assert "Коэффициент демпфирования c = 3000 Н·с/м даёт относительный коэффициент демпфирования ζ" in note
+    assert "при том же относительном коэффициенте демпфирования ζ" in note
+    named = re.findall(r"(\w+) коэффициент\w* демпфирования ζ", note)
+    assert len(named) == 3 and all(word.startswith("относительн") for word in named)
+    assert "Коэффициент динамичности при инерционном возбуждении M·X/(m·e) = " in note
+    assert "усиления" not in note
+    plot = (out / "vibration_magnification.svg").read_text(encoding="utf-8")
+    assert "<!-- коэффициент динамичности M·X/(m·e) -->" in plot and "безразмерная" not in plot
