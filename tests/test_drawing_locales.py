@@ -87,6 +87,13 @@ def swing_analysis():
 
 
 @functools.cache
+def pushed_slider_analysis():
+    """The slider-driven lever with its rod accelerating: the diagrams say they leave that acceleration out."""
+    text = Path("fixtures/slider_driven.toml").read_text(encoding="utf-8")
+    return analyse(loads(text.replace("acceleration = 0.0 ", "acceleration = 0.5 ")))
+
+
+@functools.cache
 def models():
     """A crank's equivalent model with its flywheel moved to a faster shaft, and a slider driver's model."""
     crank = equivalent_model_of(analysis_of("ratchet_crank_rocker"))
@@ -124,7 +131,7 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         # A rocker (ψ, ω, ε; working and idle strokes), a slider (s, v, a), a lever over a slider driver's
         # travel (t) and a rocker over its lever's swing (Δφ).
         runs = [analysis_of(name) for name in ("ratchet_crank_rocker", "engine_slider_crank", "slider_driven")]
-        return [t for analysis in (*runs, swing_analysis())
+        return [t for analysis in (*runs, swing_analysis(), pushed_slider_analysis())
                 for t in svg_texts(diagrams.diagrams_svg(of_analysis(analysis), text))]
     if kind == "dynamics":
         crank, flywheel, slider = models()

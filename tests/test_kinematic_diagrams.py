@@ -35,6 +35,7 @@ from graphplan.kinematic_diagrams import (
 )
 from graphplan.locale import strings
 from graphplan.mechanism import build
+from graphplan.motion import solve
 from graphplan.positions import make_positions
 from graphplan.render import diagrams
 from graphplan.render.primitives import Arrow, Circle, Polyline, Text, text_extent
@@ -168,6 +169,30 @@ def test_the_driver_s_acceleration_is_left_out_so_it_moves_uniformly(name, given
     accelerated = kinematic_diagrams(mechanism, make_positions(mechanism))
     assert accelerated.v == pytest.approx(uniform.v, rel=1e-12, abs=1e-12)
     assert accelerated.a == pytest.approx(uniform.a, rel=1e-9, abs=1e-9 * uniform.a_peak)
+
+
+def test_the_diagrams_say_they_count_in_the_working_sense_and_leave_the_driver_s_epsilon_out():
+    """ω4 = +4.46 in results.json stood as −4.46 on a clockwise-working rocker's diagram, and its ε4 as 121.84
+    where results.json has −125.18 (the crank's ε2 = 3 left out, −(ε4 − ε2/ω2·ω4)), nothing on the sheet saying so."""
+    text = scene_text("double_rocker_swing").replace("count = 7", 'count = 7\nworking = { link = 4, sense = "cw" }')
+    mechanism = build(loads(text))
+    positions = make_positions(mechanism)
+    found = kinematic_diagrams(mechanism, positions)
+    motion = solve(mechanism, positions.values, positions.reference)
+    omega2, epsilon2 = mechanism.driver.omega, mechanism.driver.epsilon
+    assert epsilon2 != 0.0
+    omega4, epsilon4 = motion.link(4).omega, motion.link(4).epsilon
+    # Clockwise working: the diagrams' ω is −ω4 and their ε is −(ε4 − ε2/ω2·ω4), at the positions in run order.
+    order = np.argsort(mechanism.driver.sense * (positions.values - positions.values[0]))
+    np.testing.assert_allclose(found.v_nodes, -omega4[order], rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(found.a_nodes, -(epsilon4 - epsilon2 / omega2 * omega4)[order], rtol=1e-9, atol=1e-9)
+    said = " ".join(item.text for layer in diagrams.layout(found, strings("en")) for item in layer.items
+                    if isinstance(item, Text))
+    assert "ψ4, ω4, ε4 counted positive in the working sense" in said
+    assert f"its ε = {epsilon2:.4g} rad/s² is left out of ε4" in said
+    steady = record("ratchet_crank_rocker")[2]
+    assert "left out" not in " ".join(item.text for layer in diagrams.layout(steady, strings("en"))
+                                      for item in layer.items if isinstance(item, Text))
 
 
 @pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar", "slider_driven"])
@@ -342,8 +367,10 @@ def test_every_text_key_is_used_and_words_come_from_the_mapping():
         "count = 7", 'count = 7\nworking = { link = 4, sense = "cw" }')))
     # A run's diagrams ring the velocities its plans give (kd_plans in the legend).
     with_plans = of_analysis(analyse(loads(scene_text("ratchet_crank_rocker"))))
+    pushed = build(loads(scene_text("slider_driven").replace("acceleration = 0.0 ", "acceleration = 0.5 ")))
     for found in (*(record(name)[2] for name in ("engine_slider_crank", "ratchet_crank_rocker", "slider_driven")),
-                  kinematic_diagrams(swing, make_positions(swing)), with_plans):
+                  kinematic_diagrams(swing, make_positions(swing)), kinematic_diagrams(pushed, make_positions(pushed)),
+                  with_plans):
         marked = {key: f"<{key}>" for key in keys}
         for layer in diagrams.layout(found, marked):
             shown.update(re.findall(r"<(\w+)>", " ".join(i.text for i in layer.items if isinstance(i, Text))))

@@ -284,9 +284,23 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
     ]
     width = scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole)
+    lines = [line for words_ in (_abscissa_scale(record, words), *_conventions(record, words))
+             for line in fitted(words_, max(width, second + 40.0), SCALE_SIZE)]
     items += [Text((0.0, y - 8.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
-              for k, line in enumerate(fitted(_abscissa_scale(record, words), max(width, second + 40.0), SCALE_SIZE))]
+              for k, line in enumerate(lines)]
     return Layer("legend", tuple(items))
+
+
+def _conventions(record: KinematicDiagrams, words: Mapping[str, str]) -> tuple[str, ...]:
+    """How the diagrams count what results.json counts otherwise: positive in the working sense (results.json:
+    counter-clockwise, along +x), and the driver moving uniformly, its ε (s̈) left out of the acceleration."""
+    symbols = [_symbol(record, kind, words)[0] for kind in KINDS]
+    said = [words["kd_positive"].format(symbols=words["enumeration"].join(symbols))]
+    if record.driver_rate:
+        key = "kd_uniform_crank" if record.driver == "crank" else "kd_uniform_slider"
+        said.append(words[key].format(speed=f"{record.driver_speed:.4g}", rate=f"{record.driver_rate:.4g}",
+                                      symbol=symbols[-1]))
+    return tuple(said)
 
 
 def _abscissa(record: KinematicDiagrams, words: Mapping[str, str]) -> str:
