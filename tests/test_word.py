@@ -12,6 +12,7 @@ import dataclasses
 import io
 import zipfile
 from pathlib import Path
+from xml.etree import ElementTree
 
 import docx
 import pytest
@@ -25,6 +26,7 @@ from graphplan.cli import main
 from graphplan.report.note import note_markdown
 from graphplan.report.symbols import Symbol, pieces
 from graphplan.report.word import note_docx
+from graphplan.starters import starter
 
 
 @pytest.fixture(scope="module", params=CASES, ids=[f"{Path(path).stem}-{locale}" for path, locale in CASES])
@@ -170,6 +172,58 @@ def test_the_page_the_fonts_and_the_language_are_the_note_s(case):
     language = normal.find(qn("w:lang"))
     assert language.get(qn("w:val")) == {"en": "en-GB", "ru": "ru-RU", "zh": "zh-CN"}[locale]
     assert language.get(qn("w:eastAsia")) == ("zh-CN" if locale == "zh" else language.get(qn("w:val")))
+
+
+WORD = "{http://schemas.openxmlformats.org/wordprocessingml/2006/main}"
+
+
+def package_parts(written: bytes) -> dict[str, ElementTree.Element]:
+    """The .docx's XML parts by their names in the package, parsed as they are stored."""
+    with zipfile.ZipFile(io.BytesIO(written)) as package:
+        return {name: ElementTree.fromstring(package.read(name)) for name in package.namelist()
+                if name.endswith((".xml", ".rels"))}
+
+
+def tables_and_line(written: bytes) -> tuple[list[list[int]], int]:
+    """Each table's grid column widths and the width of the text between the margins, twips, from the XML."""
+    body = package_parts(written)["word/document.xml"].find(f"{WORD}body")
+    section = body.find(f"{WORD}sectPr")
+    page, margins = section.find(f"{WORD}pgSz"), section.find(f"{WORD}pgMar")
+    line = int(page.get(f"{WORD}w")) - int(margins.get(f"{WORD}left")) - int(margins.get(f"{WORD}right"))
+    return [[int(column.get(f"{WORD}w")) for column in table.iter(f"{WORD}gridCol")]
+            for table in body.iter(f"{WORD}tbl")], line
+
+
+@pytest.fixture(scope="module")
+def wide_notes(tmp_path_factory):
+    """The notes whose tables outran the line before their columns were narrowed to it: the ratchet's error
+    table of nine columns, and the Russian shaper's reduced moments by plan and exact, of eight."""
+    folder = tmp_path_factory.mktemp("wide")
+    scene = folder / "shaper.toml"
+    scene.write_text(starter("shaper", "ru"), encoding="utf-8")
+    written = []
+    for path in ("fixtures/ratchet_crank_rocker.toml", scene):
+        out = folder / Path(path).stem
+        assert main(["run", str(path), "--out", str(out), "--only", "note", "--format", "docx"]) == 0
+        written.append((out / "note.docx").read_bytes())
+    return written
+
+
+def test_every_table_fits_between_the_margins(case, wide_notes):
+    for written in (case[2], *wide_notes):
+        tables, line = tables_and_line(written)
+        assert line == round((210 - 30 - 10) / 25.4 * 1440)
+        assert tables and all(sum(columns) <= line for columns in tables)
+    # The two notes have a table too wide for the line at the sizes a table is set at first.
+    assert max(len(columns) for written in wide_notes for columns in tables_and_line(written)[0]) == 9
+
+
+def test_a_table_too_wide_even_set_small_is_narrowed_to_the_line():
+    header = " | ".join(f"abcdefghijklmnopqrstuvwxyz{k}" for k in range(8))
+    note = f"# Note\n\n| {header} |\n|{'---|' * 8}\n| {' | '.join(['1.5'] * 8)} |\n"
+    (columns,), line = tables_and_line(note_docx(note, "Note", "en"))
+    assert len(columns) == 8 and line - 8 <= sum(columns) <= line
+    assert max(columns) - min(columns) <= 1   # all as wide: their words are
 
 
 def test_the_same_note_gives_the_same_file_with_no_date(case):

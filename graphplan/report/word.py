@@ -11,7 +11,8 @@ document:
 - the lists of readings as Word's bullet or numbered lists;
 - a table in a grid, its header row bold and repeated on every page it runs
   onto, each column aligned as the Markdown aligns it, and the paragraph
-  right before it (the note's "Table 3. ...") kept on the same page;
+  right before it (the note's "Table 3. ...") kept on the same page; a wide
+  table set smaller, and its columns narrowed to the line;
 - a figure's drawing as a picture (PNG at 200 dpi as printed), its natural
   size or smaller to fit the page, centred over its caption on the same page;
 - an A4 page with the margins of the LaTeX note (30 mm left, 10 mm right,
@@ -27,6 +28,7 @@ time and it carries no date.
 from __future__ import annotations
 
 import io
+import math
 import zipfile
 from collections.abc import Mapping
 
@@ -35,7 +37,7 @@ from docx.enum.table import WD_TABLE_ALIGNMENT
 from docx.enum.text import WD_ALIGN_PARAGRAPH
 from docx.oxml import OxmlElement
 from docx.oxml.ns import qn
-from docx.shared import Mm, Pt
+from docx.shared import Mm, Pt, Twips
 from markdown_it.tree import SyntaxTreeNode
 
 from ..render.primitives import FONT_SIZE_PER_CAP, text_width
@@ -47,14 +49,16 @@ _LANGUAGES = {"en": "en-GB", "ru": "ru-RU", "zh": "zh-CN"}
 _LATIN_FONT = "Times New Roman"
 _EAST_ASIAN_FONT = "SimSun"
 _BODY_PT = 12.0
-# A table of more columns than this is set a size smaller, so that its numbers keep to one line.
+# A table's type sizes, largest first: one of more columns than _WIDE_TABLE starts a size smaller, so that its
+# numbers keep to one line, and any table takes the first size at which its longest words fit the line.
 _WIDE_TABLE = 5
-_TABLE_PT = (10.0, 9.0)
+_TABLE_PT = (10.0, 9.0, 8.0)
 # The line a table spreads over: A4 less the margins (mm); what a cell keeps clear of its borders (Word's
-# default 0.19 cm a side); a point in mm.
+# default 0.19 cm a side); a point and a twip (Word's twentieth of one) in mm.
 _LINE_MM = 170.0
 _CELL_PADDING_MM = 3.8
 _POINT_MM = 25.4 / 72.0
+_TWIP_MM = _POINT_MM / 20.0
 # A header no wider than this (em) stays on one line where the table has room.
 _HEADER_LINE_EM = 7.0
 # A table of at most this many rows is kept on one page (a third of one at the table's size); a longer one
@@ -185,14 +189,15 @@ class _Writer:
         table = self.document.add_table(rows=len(rows), cols=count)
         table.style = self.document.styles["Table Grid"]
         table.alignment = WD_TABLE_ALIGNMENT.LEFT
-        points = _TABLE_PT[count > _WIDE_TABLE]
-        size = Pt(points)
         table.autofit = False
         columns = [[plain(row[c]) for row in rows if c < len(row)] for c in range(count)]
-        for c, width in enumerate(_column_widths(columns, bool(parts.header), points)):
-            table.columns[c].width = Mm(width)
+        points, widths = _column_widths(columns, bool(parts.header), _TABLE_PT[count > _WIDE_TABLE:])
+        size = Pt(points)
+        for c, width in enumerate(widths):
+            # In whole twips, rounded down: columns that fill the line never run past it by their roundings.
+            table.columns[c].width = Twips(math.floor(width / _TWIP_MM))
             for cell in table.columns[c].cells:
-                cell.width = Mm(width)
+                cell.width = table.columns[c].width
         for r, row in enumerate(rows):
             for c, cell in enumerate(row):
                 paragraph = table.cell(r, c).paragraphs[0]
@@ -243,10 +248,29 @@ class _Writer:
                     run.font.superscript = True
 
 
-def _column_widths(columns: list[list[str]], headed: bool, points: float) -> list[float]:
-    """Each column's width (mm): as wide as its widest cell where the table fits the line, else its longest
-    word and a share of the room left in proportion to how much wider its cells would be (as a browser
-    sets a table).  A header wider than :data:`_HEADER_LINE_EM` may wrap, and claims only that."""
+def _column_widths(columns: list[list[str]], headed: bool, sizes: tuple[float, ...]) -> tuple[float, list[float]]:
+    """The type size (pt) of a table and each column's width (mm): the first of ``sizes`` at which the columns
+    narrowed to their longest words fit the line, else the last.  A column is as wide as its widest cell where
+    the table fits the line, else its longest word and a share of the room left in proportion to how much wider
+    its cells would be (as a browser sets a table).  A header wider than :data:`_HEADER_LINE_EM` may wrap, and
+    claims only that."""
+    for points in sizes:
+        least, natural = _column_bounds(columns, headed, points)
+        if sum(least) <= _LINE_MM:
+            break
+    if sum(natural) <= _LINE_MM:
+        return points, natural
+    if sum(least) >= _LINE_MM:
+        # Too wide even at the smallest size: narrowed to the line all in proportion.  Their words are measured
+        # generously (as the drawings' sans serif, wider than the note's Times), and still fit as a rule.
+        return points, [w * _LINE_MM / sum(least) for w in least]
+    spare, wanting = _LINE_MM - sum(least), [n - w for n, w in zip(natural, least)]
+    return points, [w + spare * extra / sum(wanting) for w, extra in zip(least, wanting)]
+
+
+def _column_bounds(columns: list[list[str]], headed: bool, points: float) -> tuple[list[float], list[float]]:
+    """Each column's least width (its longest word) and natural width (its widest cell, a long header's
+    :data:`_HEADER_LINE_EM`), mm, at ``points``."""
     em = points * _POINT_MM
 
     def width(text: str, header: bool) -> float:   # as the drawings measure their words, at a cap height of em
@@ -261,10 +285,7 @@ def _column_widths(columns: list[list[str]], headed: bool, points: float) -> lis
         if header is not None:
             claims.append(min(width(header, True), _HEADER_LINE_EM * em))
         natural.append(max(least[-1], max(claims, default=0.0) + _CELL_PADDING_MM))
-    if sum(natural) <= _LINE_MM or sum(least) >= _LINE_MM:
-        return natural if sum(natural) <= _LINE_MM else least
-    spare, wanting = _LINE_MM - sum(least), [n - w for n, w in zip(natural, least)]
-    return [w + spare * extra / sum(wanting) for w, extra in zip(least, wanting)]
+    return least, natural
 
 
 def _symbol_runs(symbol: Symbol) -> tuple[tuple[str, str], ...]:
