@@ -175,6 +175,7 @@ def test_the_page_the_fonts_and_the_language_are_the_note_s(case):
 
 
 WORD = "{http://schemas.openxmlformats.org/wordprocessingml/2006/main}"
+RELATIONSHIPS = "{http://schemas.openxmlformats.org/officeDocument/2006/relationships}"
 
 
 def package_parts(written: bytes) -> dict[str, ElementTree.Element]:
@@ -224,6 +225,20 @@ def test_a_table_too_wide_even_set_small_is_narrowed_to_the_line():
     (columns,), line = tables_and_line(note_docx(note, "Note", "en"))
     assert len(columns) == 8 and line - 8 <= sum(columns) <= line
     assert max(columns) - min(columns) <= 1   # all as wide: their words are
+
+
+def test_every_page_is_numbered_at_its_foot_in_the_centre(case):
+    parts = package_parts(case[2])
+    section = parts["word/document.xml"].find(f"{WORD}body/{WORD}sectPr")
+    (reference,) = section.findall(f"{WORD}footerReference")
+    assert reference.get(f"{WORD}type") == "default"
+    targets = {relation.get("Id"): relation.get("Target") for relation in parts["word/_rels/document.xml.rels"]}
+    footer = parts["word/" + targets[reference.get(f"{RELATIONSHIPS}id")]]
+    (paragraph,) = footer.findall(f"{WORD}p")
+    assert paragraph.find(f"{WORD}pPr/{WORD}jc").get(f"{WORD}val") == "center"
+    fields = [field.get(f"{WORD}instr").split() for field in paragraph.iter(f"{WORD}fldSimple")]
+    instructions = "".join(text.text for text in paragraph.iter(f"{WORD}instrText"))
+    assert fields + ([instructions.split()] if instructions else []) == [["PAGE"]]
 
 
 def test_the_same_note_gives_the_same_file_with_no_date(case):

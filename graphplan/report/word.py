@@ -16,8 +16,9 @@ document:
 - a figure's drawing as a picture (PNG at 200 dpi as printed), its natural
   size or smaller to fit the page, centred over its caption on the same page;
 - an A4 page with the margins of the LaTeX note (30 mm left, 10 mm right,
-  20 mm top and bottom), the text in the language of the note, so that
-  Word checks its spelling and hyphenates it in that language.
+  20 mm top and bottom), numbered at the foot in the centre as that note is,
+  the text in the language of the note, so that Word checks its spelling
+  and hyphenates it in that language.
 
 Fonts are ones a reader's Word has: Times New Roman for Latin and Cyrillic,
 SimSun for Chinese (another font of the script where it is missing).  The
@@ -80,6 +81,7 @@ def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str
     document = WordDocument()
     _set_page(document)
     _set_styles(document, locale)
+    _number_pages(document)
     _Writer(document, pictures or {}).blocks(tree(markdown_text).children)
     properties = document.core_properties
     properties.title, properties.language = " ".join(title.split()), _LANGUAGES.get(locale, locale)
@@ -98,6 +100,21 @@ def _set_page(document) -> None:
     section.page_width, section.page_height = Mm(210), Mm(297)
     section.left_margin, section.right_margin = Mm(30), Mm(10)
     section.top_margin, section.bottom_margin = Mm(20), Mm(20)
+
+
+def _number_pages(document) -> None:
+    """Each page's number in its footer, centred, as Word counts them (a PAGE field): a note handed in has its
+    pages numbered at the foot (GOST 2.105), as the PDF and LaTeX notes have."""
+    paragraph = document.sections[0].footer.paragraphs[0]
+    paragraph.alignment = WD_ALIGN_PARAGRAPH.CENTER
+    field = OxmlElement("w:fldSimple")
+    field.set(qn("w:instr"), "PAGE")
+    shown = OxmlElement("w:r")   # what a reader shows until it works the field out
+    number = OxmlElement("w:t")
+    number.text = "1"
+    shown.append(number)
+    field.append(shown)
+    paragraph._p.append(field)
 
 
 def _set_styles(document, locale: str) -> None:
