@@ -12,6 +12,8 @@ tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
   page it runs onto under the locale's "continued" line (GOST 2.105's
   «Продолжение таблицы 3»), and the paragraph right before it (the note's
   "Table 3. ...") as its caption, so that a page break never parts them;
+  no page holding a single row of a table, and a heading right over a
+  table taken to the next page with it where its first rows do not fit;
   a wide table set smaller, and its columns still too wide for the line
   wrapped (:func:`_layout`);
 - the textbook's symbols with their indices as sub- and superscripts, read
@@ -61,6 +63,9 @@ _SIZES = (("small", 10.0), ("footnotesize", 9.0), ("scriptsize", 8.0))
 _RAGGED = {"l": "\\raggedright", "c": "\\centering", "r": "\\raggedleft"}
 # A header no wider than this (em) stays on one line where the table has room.
 _HEADER_LINE_EM = 7.0
+# The room a heading needs for the table right under it (its caption of up to two lines, a header of three and
+# the two rows it starts with), and its own.
+_ROOM_UNDER_HEADING = "10\\baselineskip"
 # The drawings' line breaker measures in mm at a cap height: at this one a mm is an em.
 _EM_CAP = 1.0 / FONT_SIZE_PER_CAP
 
@@ -79,6 +84,11 @@ _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \setlength{\LTleft}{0pt}
 \setlength{\LTright}{\fill}
 \AtBeginDocument{\setlength{\LTcapwidth}{\textwidth}}
+%% A heading with a table right under it goes to the next page unless the table's first rows fit under it too:
+%% longtable breaks the page where it starts when they do not, which left the heading alone at the foot of a page.
+\newdimen\noteroomleft
+\newcommand{\noteneedroom}[1]{\par\noteroomleft=\pagegoal\advance\noteroomleft-\pagetotal
+\ifdim#1>\noteroomleft\vfil\break\fi}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
 %% Lines may stretch rather than run over: a formula is a long run without a break.
@@ -203,6 +213,12 @@ def _layout(header: list[str], rows: list[list[str]], sides: tuple[str, ...]) ->
     return _Layout(size, points, specs, sides, tuple(widths))
 
 
+def _no_break_after(row: int, rows: int) -> bool:
+    """Whether a page must not break after body row ``row`` of ``rows``: its first or the one before its last, so
+    that no page holds a single row of the table under its header or over its bottom rule."""
+    return row in (0, rows - 2)
+
+
 class _Writer:
     """The blocks of the note's syntax tree as LaTeX.
 
@@ -227,6 +243,8 @@ class _Writer:
                 after = nodes[k + 1] if k + 1 < len(nodes) and nodes[k + 1].type == "paragraph" else None
                 parts.append(self.figure(source, self.inline(after.children) if after is not None else ""))
                 continue
+            if node.type == "heading" and self.titled and [n.type for n in nodes[k + 1:k + 3]] == ["paragraph", "table"]:
+                parts.append(f"\n\\noteneedroom{{{_ROOM_UNDER_HEADING}}}")
             if node.type == "table":
                 before = nodes[k - 1] if k else None
                 captioned = before is not None and before.type == "paragraph"
@@ -315,6 +333,7 @@ class _Writer:
             f"\\multicolumn{{{len(layout.sides)}}}{{@{{}}l@{{}}}}{{{_text(self.text['table_continued'].format(number=number))}}}\\\\"]
         lines += [*head, "\\endfirsthead", *continued, *head, "\\endhead", "\\bottomrule", "\\endfoot", "\\bottomrule",
                   "\\endlastfoot"]
-        lines += [" & ".join(self.inline(cell.children) for cell in row) + " \\\\" for row in parts.rows]
+        ends = [" \\\\*" if _no_break_after(k, len(parts.rows)) else " \\\\" for k in range(len(parts.rows))]
+        lines += [" & ".join(self.inline(cell.children) for cell in row) + end for row, end in zip(parts.rows, ends)]
         size = f"\\{layout.size}\\setlength{{\\tabcolsep}}{{{_COLUMN_GAP_PT:g}pt}}"
         return f"\n{{{size}\n" + "\n".join(lines) + "\n\\end{longtable}}\n"
