@@ -200,6 +200,20 @@ def test_the_page_numbers_are_set_in_the_body_s_font(notes):
     assert name.value.decode().split("+")[-1] == "DejaVu-Sans"
 
 
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_no_word_of_a_table_header_is_hyphenated(notes, locale):
+    """The error tables' headers broke inside their words ("quant-ity", "construc-tion", "draft-ing") while
+    their δ columns stood wide; a header wraps between its words only, a wide table set smaller to fit."""
+    html, data = notes[locale]
+    assert "<th" in html
+    for number, page in enumerate(pdfium.PdfDocument(data), 1):
+        text = page.get_textpage().get_text_range()
+        # A break the typesetter hyphenated: a hyphen of its own (U+2010) or a soft one at the end of a line.
+        assert not re.search(r"\w[\u2010\u00ad\ufffe]\s*\n", text), (number, text)
+    # The ratchet's error tables of a position have nine columns in every language (with the measured values).
+    assert max(len(re.findall(r"<th", row)) for row in re.findall(r"<tr>(.*?)</tr>", html, re.DOTALL)) == 9
+
+
 def test_a_bold_paragraph_that_heads_what_follows_never_ends_a_page():
     """The note heads each group's equations with a bold paragraph ("Group II(5,6), kind RRP"); a student's
     PDF had three of them alone at the foot of a page.  Filled with more and more lines before it, the lead

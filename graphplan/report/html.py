@@ -22,6 +22,7 @@ from .symbols import Symbol, pieces
 _FONTS = ('"DejaVu Sans", "Noto Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "Noto Sans SC", "Microsoft YaHei", '
           '"PingFang SC", sans-serif')
 # The page's margin boxes (its number) inherit nothing from the body: they name the body's fonts themselves.
+# A table's header wraps between its words only: hyphenated, the error table's read «quant-ity», «draft-ing».
 _STYLE = """\
 body { font-family: FONTS;
        max-width: 60em; margin: 2em auto; padding: 0 1em; line-height: 1.45; color: #111; }
@@ -38,10 +39,11 @@ p.table-caption { margin-bottom: 0.3em; }
 figure { margin: 1em 0 1.2em; text-align: center; break-inside: avoid; }
 figure img { max-width: 100%; max-height: 230mm; height: auto; }
 figcaption { margin-top: 0.4em; }
-th { hyphens: auto; }
+th { hyphens: manual; }
 @media print { body { max-width: none; margin: 0; } h2, h3, h4, p.table-caption, p.lead { break-after: avoid; }
                table { font-size: 0.8em; } table.whole, tr { break-inside: avoid; }
-               th, td { padding: 0.2em 0.4em; } }
+               th, td { padding: 0.2em 0.4em; }
+               table.wide { font-size: 0.67em; } table.wide th, table.wide td { padding: 0.2em 0.3em; } }
 """
 
 _STYLE = _STYLE.replace("FONTS", _FONTS)
@@ -50,6 +52,9 @@ _STYLE = _STYLE.replace("FONTS", _FONTS)
 # break between its rows, its header repeated), not to the next page whole, which left its caption alone.
 _WHOLE_ROWS = 20
 _TABLE = re.compile(r"<table>(.*?)</table>", re.DOTALL)
+# A table of more columns than this is printed a size smaller: its headers wrap only between words, and the
+# longest of them (the error table's «аналитически», «(построение),») must fit the line side by side.
+_WIDE_COLUMNS = 7
 
 # A paragraph right before a table is its caption (the note numbers its tables above them, as GOST 2.105
 # asks): marked so that a page break never parts it from its table.
@@ -79,6 +84,14 @@ def _symbol_html(symbol: Symbol) -> str:
     return base + (f"<sub>{index}</sub>" if index else "") + (f"<sup>{component}</sup>" if component else "")
 
 
+def _classed_table(table: re.Match) -> str:
+    """The table marked ``whole`` if short enough to keep to one page and ``wide`` if of many columns."""
+    columns = table[1].split("</tr>", 1)[0].count("<th")
+    classes = [name for name, marked in (("whole", table[1].count("<tr>") <= _WHOLE_ROWS),
+                                         ("wide", columns > _WIDE_COLUMNS)) if marked]
+    return table[0].replace("<table>", f'<table class="{" ".join(classes)}">', 1) if classes else table[0]
+
+
 def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) -> str:
     """A complete HTML5 page of ``markdown_text`` with ``title`` in its head, in language ``lang``.
 
@@ -94,8 +107,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
     body = _FIGURE.sub(r'<figure><a href="\2">\1</a><figcaption>\3</figcaption></figure>\n', body)
     body = _LEAD.sub(r'<p class="lead">\1</p>\n', body)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
-    body = _TABLE.sub(lambda table: table[0].replace("<table>", '<table class="whole">', 1)
-                      if table[1].count("<tr>") <= _WHOLE_ROWS else table[0], body)
+    body = _TABLE.sub(_classed_table, body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
             f"<title>{html.escape(title, quote=False)}</title>\n<style>\n{_STYLE}</style>\n</head>\n<body>\n"
