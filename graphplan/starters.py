@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from importlib import resources
 
+from .locale import strings
 from .scene import LOCALES
 
 # The kinds a newcomer starts from, each a scene under ``templates/``: mechanisms, and machines known without
@@ -13,13 +14,36 @@ MECHANISMS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad"
 MACHINES = ("flywheel", "rotor")
 KINDS = MECHANISMS + MACHINES
 
+# The names a starter gives that its drawings and note print as words ("∥ ram"), each under its locale key: the
+# frame lines. Points and links are letters and numbers, which every language writes alike.
+_NAMED_WORDS = {"ram": "starter_line_ram"}
+
 
 def starter(kind: str, locale: str = "en") -> str:
-    """The commented scene of ``kind`` (one of :data:`KINDS`), its drawings and note in ``locale`` (its comments
-    stay English)."""
+    """The commented scene of ``kind`` (one of :data:`KINDS`), its drawings and note in ``locale``: its title and
+    the names its note prints in that language (its comments stay English)."""
     if kind not in KINDS:
         raise ValueError(f"no starter scene {kind!r}; there are {', '.join(KINDS)}")
     if locale not in LOCALES:
         raise ValueError(f"no locale {locale!r}; there are {', '.join(LOCALES)}")
     text = resources.files("graphplan").joinpath("templates", f"{kind}.toml").read_text(encoding="utf-8")
+    words = strings(locale)
+    text = re.sub(r'^(title\s*=\s*)"[^"]*"', lambda title: f'{title[1]}"{words[_title_key(kind)]}"', text, count=1,
+                  flags=re.MULTILINE)
+    for name, key in _NAMED_WORDS.items():
+        if words[key] != name:
+            text = "\n".join(_renamed(line, name, words[key]) for line in text.split("\n"))
     return re.sub(r'^(locale\s*=\s*)"en"', rf'\1"{locale}"', text, count=1, flags=re.MULTILINE)
+
+
+def _title_key(kind: str) -> str:
+    return "starter_title_" + kind.replace("-", "_")
+
+
+def _renamed(line: str, name: str, word: str) -> str:
+    """``line`` of a starter with the name ``name`` written ``word`` where the scene reads it, as a key
+    (``ram = {``, quoted, since a bare TOML key is ASCII) or a string (``"ram"``); its comment stays English."""
+    code, hash_, comment = line.partition("#")
+    code = re.sub(rf'(?<![\w"]){re.escape(name)}(?=\s*=)', f'"{word}"', code)
+    code = code.replace(f'"{name}"', f'"{word}"')
+    return code + hash_ + comment
