@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
+from ..locale import Count
 from ..render.numerals import angle_in_turn
 from ..rotor_balancing import BalancingResult, static_couple
 from ..units import RPM
@@ -50,7 +51,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     run = "" if model.cyclic else "_swing" if turning else "_travel"
     note.heading(2, note.t("note_dynamics"), section)
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
-        note.para(note.t("note_dyn_model_diagrams", count=len(model.coordinate),
+        note.para(note.t("note_dyn_model_diagrams", count=Count(len(model.coordinate)),
                          inertia=note.n(model.mean_inertia)))
     else:
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
