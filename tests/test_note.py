@@ -424,6 +424,16 @@ def test_markdown_becomes_a_page_without_passing_raw_html_through():
         "Made Admin")
 
 
+def test_the_russian_dynamics_symbols_take_their_indices_below_the_line():
+    """The Russian note names the flywheel's quantities as its dynamics sheet does, with Cyrillic indices; the
+    words around them, and a Latin letter run on into a Russian word, stay as they are."""
+    assert symbols_html("Jм = ΔTнб/(ωср²·δ) − Jп,ср; Jм′ = Jм·(n/n′)²; ΔT = Aд − Aс; Mд(ω) − Mс(φ) − Mт(ω); "
+                        "Jп′(φ), mп, Fп, Mп; Машина Mсила Aдрес") == (
+        "J<sub>м</sub> = ΔT<sub>нб</sub>/(ω<sub>ср</sub>²·δ) − J<sub>п,ср</sub>; J<sub>м′</sub> = "
+        "J<sub>м</sub>·(n/n′)²; ΔT = A<sub>д</sub> − A<sub>с</sub>; M<sub>д</sub>(ω) − M<sub>с</sub>(φ) − "
+        "M<sub>т</sub>(ω); J<sub>п′</sub>(φ), m<sub>п</sub>, F<sub>п</sub>, M<sub>п</sub>; Машина Mсила Aдрес")
+
+
 # Determinism.
 
 def test_the_note_is_the_same_every_time():

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import re
 from pathlib import Path
+from xml.etree import ElementTree
 
 import pytest
 
@@ -103,10 +104,39 @@ def test_the_reduction_is_written_with_the_driving_link_s_own_speed(english):
 def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_path):
     note, _ = run(tmp_path / "ru", DYNAMICS, locale="ru")
     text = section(note, "Динамический анализ машины")
-    assert re.search(r"δ = 0,05 при ωm = 17 рад/с", text)
+    assert re.search(r"δ = 0,05 при ωср = 17 рад/с", text)
     assert "stiff" not in text and "auto:" not in text   # the integrator's reason is in Russian too
     plain, _ = run(tmp_path / "plain", "")
     assert "Dynamics of the machine" not in plain
+
+
+# A symbol of the flywheel's quantities: its letter and an index of letters, which may go on after a comma (Jп,ср,
+# Je,mean); a work's index is one letter (Ad, Aс, Wd), which tells it from a word.
+LETTER = "A-Za-zА-Яа-яЁё"
+DYNAMICS_SYMBOL = re.compile(rf"(?<!\w)(?:(?:ΔT|ΔE|ΔW|J|ω)[{LETTER}′]+(?:,[{LETTER}]+)?|[AW][{LETTER}](?![{LETTER}]))")
+
+
+def drawn_words(svg: Path) -> str:
+    return "\n".join(element.text or "" for element in ElementTree.parse(svg).getroot().iter())
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_note_and_the_dynamics_sheet_name_the_flywheel_s_quantities_alike(tmp_path, locale):
+    """The Russian sheet drew Jм, Jп, Jп,ср, ωср, ΔTнб where the note beside it wrote JF, Je, Je,ср, ωm, ΔWmax for
+    the same values: a reader met two notations for one quantity."""
+    note, _ = run(tmp_path, DYNAMICS, locale=locale)
+    text = note[note.index("\n## 6"):] if "\n## 6" in note else note
+    drawn = drawn_words(tmp_path / "out" / "dynamics.svg")
+    on_sheet, in_note = set(DYNAMICS_SYMBOL.findall(drawn)), set(DYNAMICS_SYMBOL.findall(text))
+    # Mertsalov's constant part of the reduced inertia is on the sheet alone, the note gives his flywheel only.
+    mertsalov = {"JпI", "Jc"}
+    assert on_sheet - mertsalov <= in_note, sorted(on_sheet - mertsalov - in_note)
+    # The flywheel's paragraphs name nothing the sheet does not: the note's other symbols are a link's own (JS),
+    # the equation of motion's (Jп′, Mд(ω)) and the reduction's (Mп).
+    flywheel = [line for line in text.splitlines() if re.search(r"Δ[TE] = |\(n/n′\)²|δ = 0.*/\(", line)]
+    assert len(flywheel) == 3, flywheel
+    flywheel = "\n".join(flywheel)
+    assert set(DYNAMICS_SYMBOL.findall(flywheel)) <= on_sheet, sorted(set(DYNAMICS_SYMBOL.findall(flywheel)) - on_sheet)
 
 
 @pytest.mark.parametrize(("stall_torque", "method", "stiff"), [(2000.0, "RK45", False), (2.0e6, "LSODA", True)])

@@ -74,9 +74,11 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
 
 def _reductions(note: Writer, model) -> None:
     text = note.text
-    inertia, moment = (("Je", text["kilogram_metre2"]), ("Me", text["newton_metre"])) if model.turning \
-        else (("me", text["kilogram"]), ("Fe", text["newton"]))
-    where = "φ, °" if model.turning else "s, m"
+    # The symbols the dynamics sheet draws, so that the table and the drawing name a quantity alike (Jп, Mп).
+    inertia, moment = ((text["dyn_inertia_symbol"], text["kilogram_metre2"]),
+                       (text["note_dyn_moment_symbol"], text["newton_metre"])) if model.turning \
+        else ((text["note_dyn_mass_symbol"], text["kilogram"]), (text["note_dyn_force_symbol"], text["newton"]))
+    where = text["dyn_angle_axis"] if model.turning else text["dyn_travel_axis"]
     header = [text["note_dyn_position"], where,
               f"{inertia[0]}, {inertia[1]} ({text['column_by_plan']})", f"{inertia[0]} ({text['column_analytic']})",
               text["note_dyn_error"],

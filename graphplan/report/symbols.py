@@ -1,8 +1,8 @@
 """The textbook's symbols in the note's running text, with their indices told apart.
 
 The note writes its symbols flat, as plain text allows: ``VBA``, ``aBA^τ``,
-``ω3``, ``μV``, ``R23τ``, ``JF``, ``ΔWmax``; Assur's special point is an index like a letter
-(``VDΣ6``).  :func:`pieces` splits a text into plain runs and
+``ω3``, ``μV``, ``R23τ``, ``JF``, ``ΔWmax``, and with a Russian textbook's indices ``Jм``, ``ωср``,
+``ΔTнб``; Assur's special point is an index like a letter (``VDΣ6``).  :func:`pieces` splits a text into plain runs and
 :class:`Symbol` parts (base, index, component), so that the HTML
 (:mod:`graphplan.report.html`) and the LaTeX (:mod:`graphplan.report.latex`)
 each set the indices as sub- and superscripts in their own markup.  Only a
@@ -24,16 +24,18 @@ SYMBOL = re.compile(
     r"|(?P<base2>[ωε])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
-    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+|[edr])"
+    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+|[edr]|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
-    r"|(?P<base7>[GJ])(?P<index7>\d+|S|[Fe]′?)|(?P<base11>m)(?P<index11>\d+|e)"
+    r"|(?P<base7>[GJ])(?P<index7>\d+|S|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
     r"|(?<=Σ)(?P<base8>M)(?P<index8>[A-ZΣ][A-Z0-9Σ]*)"
     r"|(?P<base9>p)(?P<index9>[45])"
     r"|(?P<base10>P)(?P<index10>[LH])"
-    # The machine's dynamics: ΔWmax, Ad and Ar, ωm, ωmax and ωmin, vS of a reduction.
-    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base14>A)(?P<index14>[dr])"
-    r"|(?P<base15>ω)(?P<index15>max|min|m)|(?P<base16>v)(?P<index16>S)"
-    r")(?![A-Za-z0-9_])")
+    # The machine's dynamics: ΔWmax, Ad and Ar, ωm, ωmax and ωmin, vS of a reduction; in Russian ΔTнб, Aд and Aс,
+    # ωср (and above Jп, Jп,ср, Mп, Mд, Mс, mп).
+    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>A)(?P<index14>[dr]|[дс])"
+    r"|(?P<base15>ω)(?P<index15>max|min|m|ср)|(?P<base16>v)(?P<index16>S)"
+    # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
+    r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
 # Superscript letters stand for the component they show: aBAⁿ is aBA with an n above.
 _SUPERSCRIPT = {"ⁿ": "n", "ᵏ": "k"}
