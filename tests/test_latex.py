@@ -132,6 +132,11 @@ def test_special_characters_are_escaped_and_symbols_take_their_indices():
     assert plain(body) == "Cost $5 & 10% of #3 {x} a_b ~ ^ \\ and VBA = VA + aBAτ, ω3, R23τ"
     assert r"V\textsubscript{BA} = V\textsubscript{A} + a\textsubscript{BA}\textsuperscript{τ}" in body
     assert r"ω\textsubscript{3}" in body and r"R\textsubscript{23}\textsuperscript{τ}" in body
+    # The friction's and the strokes' symbols, and the Russian dynamics' Cyrillic indices, after a comma too.
+    russian = latex_fragment("f′E·R16, Mf12 = ρO·R12; φр.х; Jм = ΔTнб/(ωср²·δ) − Jп,ср", "ru").split("\n", 3)[3]
+    for symbol in (r"f′\textsubscript{E}", r"M\textsubscript{f12}", r"ρ\textsubscript{O}", r"φ\textsubscript{р.х}",
+                   r"J\textsubscript{м}", r"ΔT\textsubscript{нб}", r"ω\textsubscript{ср}", r"J\textsubscript{п,ср}"):
+        assert symbol in russian, symbol
     # No character LaTeX would read as markup is left bare.
     assert not re.search(r"(?<!\\)[$&%#_{}~^]", body.replace(r"\textsubscript{", "").replace(r"\textsuperscript{", "")
                          .replace(r"\textbackslash{}", "").replace(r"\textasciitilde{}", "")

@@ -424,6 +424,38 @@ def test_markdown_becomes_a_page_without_passing_raw_html_through():
         "Made Admin")
 
 
+# The shaper's symbols that the HTML set flat: the mean reduced inertia's index ran on after a comma on the line,
+# the strokes' angles, the two reactions compared, an error's two values and the friction's symbols stayed plain
+# while R16 beside them took its index.
+SHAPER_INDICES = {
+    "en": ["J<sub>e,mean</sub>", "φ<sub>w</sub>", "φ<sub>i</sub>", "f′<sub>E</sub>", "F<sub>f16</sub>",
+           "M<sub>f12</sub>", "ρ<sub>O</sub>", "R<sub>16</sub>", "R<sub>12</sub>"],
+    "ru": ["J<sub>п,ср</sub>", "φ<sub>р.х</sub>", "φ<sub>х.х</sub>", "R<sub>сист</sub>", "R<sub>пл</sub>",
+           "X<sub>а</sub>", "X<sub>пл</sub>", "f′<sub>E</sub>", "F<sub>f16</sub>", "M<sub>f12</sub>", "ρ<sub>O</sub>",
+           "R<sub>16</sub>", "R<sub>12</sub>"],
+}
+# The same symbols written flat, as the page's text would show them where an index was missed.
+FLAT = re.compile(r"(?<![\w′])(?:J[eп],|φ(?:[wi]|р\.х|х\.х)(?![\w.])|R(?:сист|пл)|X(?:а|пл)(?!\w)|f′[A-Z]|ρ[A-Z]|"
+                  r"[FM]f\d)")
+
+
+@pytest.mark.parametrize("locale", ["en", "ru"])
+def test_the_shapers_note_sets_every_index_below_the_line(tmp_path, locale):
+    from graphplan.cli import main
+    from graphplan.starters import starter
+
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(starter("shaper", locale), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "note,forces,dynamics"]) == 0
+    page = (tmp_path / "out" / "note.html").read_text(encoding="utf-8")
+    for symbol in SHAPER_INDICES[locale]:
+        assert symbol in page, symbol
+    text = re.sub(r"<sub>[^<]*</sub>", "", re.sub(r"<(?!/?sub>)[^>]*>", " ", page))
+    assert not FLAT.findall(text), sorted(set(FLAT.findall(text)))
+    # Only a symbol's letter goes before an index: no word of the note is cut into a base and an index.
+    assert not re.findall(r"[A-Za-zА-Яа-яЁё]{2,}<sub>", page)
+
+
 def test_the_russian_dynamics_symbols_take_their_indices_below_the_line():
     """The Russian note names the flywheel's quantities as its dynamics sheet does, with Cyrillic indices; the
     words around them, and a Latin letter run on into a Russian word, stay as they are."""

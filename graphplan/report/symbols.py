@@ -24,15 +24,20 @@ SYMBOL = re.compile(
     r"|(?P<base2>[ωε])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
-    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|\d+|[edr]|[пдст])"
+    r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
-    r"|(?P<base7>[GJ])(?P<index7>\d+|S|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
+    r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
     r"|(?<=Σ)(?P<base8>M)(?P<index8>[A-ZΣ][A-Z0-9Σ]*)"
     r"|(?P<base9>p)(?P<index9>[45])"
     r"|(?P<base10>P)(?P<index10>[LH])"
-    # The machine's dynamics: ΔWmax, Ad and Ar, ωm, ωmax and ωmin, vS of a reduction; in Russian ΔTнб, Aд and Aс,
-    # ωср (and above Jп, Jп,ср, Mп, Mд, Mс, mп).
-    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>A)(?P<index14>[dr]|[дс])"
+    # The strokes' angles of the crank (φw, φi; φр.х, φх.х), the reactions of the linear system and of the
+    # polygons (Rсист, Rпл), an error's two values (Xа, Xпл); the friction in a pair: its reduced coefficient
+    # f′E, its circle's radius ρO, its force Ff16 and moment Mf12 (above).
+    r"|(?P<base18>φ)(?P<index18>[wi]|р\.х|х\.х)|(?P<base19>R)(?P<index19>сист|пл)|(?P<base20>X)(?P<index20>а|пл)"
+    r"|(?P<base21>f′|ρ)(?P<index21>[A-Z][A-Z0-9]*|\d+)"
+    # The machine's dynamics: ΔWmax, Ad and Ar (in Chinese Wd and Wr), ωm, ωmax and ωmin, vS of a reduction; in
+    # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).
+    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>[AW])(?P<index14>[dr]|[дс])"
     r"|(?P<base15>ω)(?P<index15>max|min|m|ср)|(?P<base16>v)(?P<index16>S)"
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
