@@ -423,7 +423,18 @@ def _lettering_hint(name: str, letters: list[str]) -> str:
         return f"; it has the Cyrillic letter{'s' if len(cyrillic) > 1 else ''} {written}: type the Latin one"
     if name != name.lower() and any(name.lower().startswith(letter) for letter in letters):
         return f"; the plan's letters are small: write {name.lower()}"
+    # 机械原理 letters the acceleration plan p′, b′; an input method types ｐｂ in full width.
+    plain = unicodedata.normalize("NFKC", name).translate(_PRIMES)
+    if plain != name:
+        why = "the plans' letters take no prime" if any(prime in name for prime in _PRIME_MARKS) else \
+            "it has full-width letters"
+        if any(plain.startswith(letter) and plain[len(letter):] in letters for letter in letters):
+            return f"; {why}: write {plain}"
     return ""
+
+
+_PRIME_MARKS = "′″'’`"
+_PRIMES = str.maketrans("", "", _PRIME_MARKS)
 
 
 _QUANTITY = re.compile(r"^(V|a|omega|epsilon)(.*)$")

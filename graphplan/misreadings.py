@@ -77,6 +77,11 @@ def misread(scene: Scene, drawn: Iterable[VelocityPosition]) -> tuple[PositionWa
         details = []
         for kind, (ratio, drawn_at) in found.rescaled.items():
             symbol, unit = _SCALES[kind]
+            if in_units(drawn_at):
+                quantity = unit.removeprefix("(").removesuffix(")/mm")
+                details.append(f"every reading of the {kind} plan is the value it stands for, in {quantity}, not "
+                               f"its length on the plan: give the millimetres measured (the value / {symbol})")
+                continue
             details.append(f"every reading of the {kind} plan is {ratio:.4g} times the plan as constructed at "
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
                            f"{drawn_at:.4g} {unit}? (set at that scale, the readings agree)")
@@ -90,6 +95,12 @@ def misread(scene: Scene, drawn: Iterable[VelocityPosition]) -> tuple[PositionWa
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
+
+
+def in_units(drawn_at: float) -> bool:
+    """Whether readings that agree at a plan scale of ``drawn_at`` (m/s or m/s² a millimetre) are the values
+    themselves, typed in their units where a plan's millimetres were asked for: a scale of one unit a millimetre."""
+    return abs(drawn_at - 1.0) <= FAR_OFF_PERCENT / 100.0
 
 
 def _far_off(row: ErrorRow, plan: float, precision: float) -> bool:
@@ -117,4 +128,4 @@ def _one_ratio(rows: list[tuple[ErrorRow, float]]) -> float | None:
     return ratio if all(abs(each / ratio - 1.0) <= FAR_OFF_PERCENT / 100.0 for each in ratios) else None
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Slips", "misread", "slips"]
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Slips", "in_units", "misread", "slips"]

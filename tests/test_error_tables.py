@@ -245,6 +245,22 @@ def test_a_velocity_plan_drawn_at_another_scale_is_named_as_such_not_as_misread_
     assert "misread" in warning.detail and "every reading" not in warning.detail
 
 
+def test_readings_given_as_the_values_in_their_units_are_named_as_such():
+    """A student who typed VB in m/s where pb in mm was asked for was told of «a plan drawn at μV = 0.9867
+    (m/s)/mm?»: a scale of one unit a millimetre is the values themselves."""
+    from graphplan.report.tables import markdown
+
+    exact = {name: abs(complex(*graphplan.solve(graphplan.load(FIXTURE)).point(point).v[5]))  # positions numbered from 0
+             for name, point in (("pb", "B"), ("pe", "E"))}
+    analysis = analyse(dataclasses.replace(with_measured({5: {"velocity": {name: value * 1.01
+                                                                          for name, value in exact.items()}}}),
+                                           locale="en"))
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    assert "is the value it stands for, in m/s, not its length on the plan" in warning.detail
+    assert "a plan drawn at" not in warning.detail
+    assert "Every reading of the velocity plan is the value it stands for" in markdown(analysis)
+
+
 def test_the_error_tables_say_under_a_position_which_readings_are_far_off_in_the_scenes_language():
     """The warning went to the terminal and results.json alone; the student reads errors.md and the note."""
     from graphplan.report.note import note_markdown

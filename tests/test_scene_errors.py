@@ -953,9 +953,15 @@ def test_invalid_toml(text: str, line: int) -> None:
     ({"forces": {"Р32": 3.0}}, "measured.5.forces.Р32",
      ("the force polygons have no reaction Р32; they have R23, R14, R34, R12; it has the Cyrillic letter 'Р' "
       "(U+0420): type the Latin one")),
-], ids=["cyrillic-letter", "capitals", "pi-on-the-velocity-plan", "cyrillic-reaction"])
+    ({"acceleration": {"p′b′": 58.5}}, "measured.5.acceleration.p′b′",
+     ("is not two letters of the plan (a, b, e, n3, n4, p, s2, s3, s4) (its pole π is p); the plans' letters take "
+      "no prime: write pb")),
+    ({"velocity": {"ｐｂ": 38.82}}, "measured.5.velocity.ｐｂ",
+     "is not two letters of the plan (a, b, e, p, s2, s3, s4); it has full-width letters: write pb"),
+], ids=["cyrillic-letter", "capitals", "pi-on-the-velocity-plan", "cyrillic-reaction", "primed", "full-width"])
 def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, problem) -> None:
-    """A Russian student's slips: a Cyrillic р or Р that looks Latin, capitals, π on the velocity plan."""
+    """A Russian student's slips: a Cyrillic р or Р that looks Latin, capitals, π on the velocity plan; a Chinese
+    student's: 机械原理's primed letters of the acceleration plan (p′b′), an input method's full-width ｐｂ."""
     scene = scene_module.loads(to_toml(variant(RATCHET, {"measured.5": measured})))
     with pytest.raises(SceneError) as raised:
         analyse(scene)

@@ -18,7 +18,7 @@ from collections import defaultdict
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
-from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, slips
+from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, in_units, slips
 from ..render.numerals import scale_factor
 from .forces import number
 from .results import PERCENT_FLOOR
@@ -83,6 +83,9 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> l
     lines = []
     for kind, (ratio, drawn_at) in found.rescaled.items():
         symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
+        if in_units(drawn_at):
+            lines.append(text["errors_in_units"].format(plan=text[f"{kind}_plan_title"].lower(), symbol=symbol))
+            continue
         lines.append(text["errors_rescaled"].format(
             plan=text[f"{kind}_plan_title"].lower(), ratio=number(ratio, 4, mark), symbol=symbol,
             scale=scale_factor(plan.plans[kind].scale).replace(".", mark), unit=unit,
