@@ -145,6 +145,23 @@ def test_the_csv_writes_an_error_of_rounding_as_none(tmp_path):
     assert percents[("5", "VB", "construction")] == "0"
 
 
+def test_the_csv_leaves_the_error_of_a_reading_of_what_stands_still_empty_as_results_json_writes_null():
+    """At the extreme position 0 the rocker stands still: a reading pb = 0.5 mm has no finite δ; errors.csv wrote
+    inf where results.json writes null and the table —, and −0 for a rounding's nought."""
+    from graphplan.report.results import results
+    from graphplan.report.tables import csv_text
+
+    scene = with_measured({0: {"velocity": {"pb": 0.5}}})
+    analysis = analyse(dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(0, 5, 11))))
+    lines = csv_text(analysis).splitlines()
+    assert not [line for line in lines if "inf" in line or ",-0," in line or line.endswith(",-0")]
+    (row,) = [line.split(",") for line in lines if line.startswith("0,VB,") and ",measured," in line]
+    assert row[-1] == ""
+    (written,) = [e for e in results(analysis)["errors"]
+                  if e["position"] == 0 and e["quantity"] == "VB" and e["source"] == "measured"]
+    assert written["percent"] is None
+
+
 def test_a_quantity_that_vanishes_at_the_position_has_no_error_of_rounding():
     # The Scotch yoke in position 4 (φ = 180°): the crank pin moves square to the slot, so the block
     # rests in it and the yoke does not accelerate; both solutions give zero up to rounding.

@@ -202,6 +202,12 @@ def csv_text(analysis: Analysis) -> str:
     for row in analysis.errors:
         # An error of rounding (1e-14 %) is none, as results.json writes it.
         percent = 0.0 if abs(row.percent) < PERCENT_FLOOR else row.percent
-        writer.writerow([row.position, row.quantity, f"{row.analytic:.12g}", row.source, f"{row.plan:.12g}",
-                         f"{percent:.6g}"])
+        writer.writerow([row.position, row.quantity, _cell(row.analytic, 12), row.source, _cell(row.plan, 12),
+                         _cell(percent, 6)])
     return out.getvalue()
+
+
+def _cell(value: float, digits: int) -> str:
+    """A number of the CSV: empty where it has none (the error of a reading of what stands still, which
+    results.json writes null and the tables —), and a rounding's −0 as 0."""
+    return f"{value + 0.0:.{digits}g}" if math.isfinite(value) else ""
