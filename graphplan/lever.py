@@ -32,7 +32,9 @@ class LeverTerm:
     ``arm`` is the perpendicular from the pole to the force's line on the
     turned plan, in the plan's own units (m/s); ``moment`` is in W.  A
     displaced force acts at the image of its own point: ``shift`` (m/s, on
-    the plan before it is turned) from ``image``, the image of its link's point.
+    the plan before it is turned) from ``image``, the image of its link's point.  A moment on a block,
+    which has no two points of its own on the plan, is no force: no ``image``, its ``moment`` M·ω of
+    ``link``'s ω.
     """
 
     name: str
@@ -41,6 +43,7 @@ class LeverTerm:
     arm: float
     moment: float
     shift: complex = 0j
+    link: int | None = None
 
 
 @dataclass(frozen=True)
@@ -123,7 +126,8 @@ def _couple(load: Load, positions: dict[str, complex], velocity: Plan) -> list[L
     named = list(velocity.members.get(load.link, ()))
     pairs = [(a, b) for i, a in enumerate(named) for b in named[i + 1:] if a[0] != b[0]]
     if not pairs:
-        return [LeverTerm(load.name, "", 0j, 0.0, float(load.moment * velocity.rates.get(load.link, 0.0)))]
+        return [LeverTerm(load.name, "", 0j, 0.0, float(load.moment * velocity.rates.get(load.link, 0.0)),
+                          link=load.link)]
     (first, first_letter), (second, second_letter) = max(pairs, key=lambda pair: abs(pair[0][0] - pair[1][0]))
     across = 1j * (second - first)
     force = load.moment * across / abs(second - first) ** 2

@@ -358,3 +358,28 @@ def test_a_reaction_acting_off_its_joint_along_a_guide_stands_on_the_guide_s_axi
     # The axis runs along the guide and reaches past the reaction's point by the 6 mm an axis runs on.
     assert abs(((end - start) / abs(end - start) * u.conjugate()).imag) < 1e-9
     assert abs(end - start) >= abs(shift_mm) + 6.0 + 14.0 - 1e-6
+
+
+def test_a_block_s_own_moment_enters_the_lever_as_its_power_over_the_plan_s_scale():
+    """The lever's terms are F·h in N·mm at μV; a block's inertia moment was written «Mu3·ω», a power in W, though
+    the lever took Mu3·ω3/μV."""
+    from pathlib import Path
+
+    from graphplan.report.note import note_markdown
+
+    text = Path(FIXTURES, "quick_return_slotted_lever.toml").read_text(encoding="utf-8")
+    text = text.replace('[links.3]\nmass    = 1.0\ncentre  = "A"', '[links.3]\nmass    = 1.0\ncentre  = "A"\ninertia = 0.004')
+    analysis = analyse(dataclasses.replace(graphplan.load_text(text), locale="en"))
+    plan = analysis.plans[0]
+    motion = analysis.motion
+    # d'Alembert: Mu3 = −JS3·ε3; its lever term M·ω over μV.
+    expected = -0.004 * float(motion.link(3).epsilon[plan.index]) * float(motion.link(3).omega[plan.index])
+    (term,) = [term for term in plan.lever.terms if not term.image]
+    assert (term.name, term.link) == ("Mu3", 3) and term.moment == pytest.approx(expected, rel=1e-9)
+    said = " ".join(item.text for layer in force_layout.layout(force_sheet(analysis, plan))
+                    for item in layer.items if isinstance(item, Text))
+    assert "Mu3·ω3/μV" in said and "Mu3·ω " not in said + " "
+    note = note_markdown(analysis)
+    assert "enters as its power over the plan's scale, Mu3·ω3/μV." in note
+    row = next(line for line in note.splitlines() if line.startswith("| Mu3 |"))
+    assert float(row.split("|")[-2].replace("−", "-")) == pytest.approx(expected / plan.velocity.scale, rel=1e-4)

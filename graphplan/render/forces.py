@@ -876,7 +876,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
         if name != "Fb":
             parts.append(f"{_sign(moments[name])} {name}·{arm}")
-    parts += [f"{_sign(term.moment)} {term.name}·ω" for term in lever.terms if not term.image and term.moment != 0]
+    # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
+    parts += [f"{_sign(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
+              if not term.image and term.moment != 0]
     groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
     dots = [dot_marker(_xy(mm(group[0])), 0.7 if group[0] == "p" else 0.5) for group in groups]
     figure = frame + arrows + dots + [item for layer in arm_layers for item in layer.items]

@@ -260,6 +260,9 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
             force = note.n(abs(term.force)) if term.image else "—"
             rows.append([term.name, point, force, arm, note.n(moment_mm)])
         note.para(note.text["note_lever_intro"])
+        for term in lever.terms:
+            if not term.image and term.moment != 0:  # a block's moment: no two points of its own to put a couple on
+                note.para(note.t("note_lever_block", name=term.name, link=term.link))
         if drawn_at != velocity.scale:
             scale = text["velocity_scale"].format(value=format_scale(drawn_at).replace(".", note.mark))
             note.para(note.t("note_lever_scale", scale=scale))
