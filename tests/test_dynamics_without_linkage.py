@@ -448,3 +448,15 @@ def test_a_motor_switched_off_at_the_start_runs_a_machine_down_from_its_starting
 def test_the_integrator_s_reason_sets_the_threshold_against_the_stiffness_number(tmp_path):
     motion = dynamics_of(tmp_path, BORDER)["motion"]
     assert re.search(r"= 0 ≤ 3\.0; cycle [\d.e+]+ s\): RK45$", motion["method_reason"]), motion["method_reason"]
+
+
+def test_the_flywheel_s_new_shaft_speed_is_drawn_as_the_scene_gives_it_and_the_note_writes_it(tmp_path):
+    """n′ = 1462.5 rpm: the note wrote 1462.5, the drawing 1462 (four digits, half to even)."""
+    status, out = run(tmp_path, PRESS.replace("flywheel_shaft_rpm = 1440", "flywheel_shaft_rpm = 1462.5"))
+    assert status == 0
+    drawn = (out / "dynamics.svg").read_text(encoding="utf-8")
+    assert "1462.5 rpm" in drawn and "1462 rpm" not in drawn
+    assert "n′ = 1462.5 rpm" in (out / "note.md").read_text(encoding="utf-8")
+    # JF′ = JF·(n/n′)²
+    found = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]
+    assert found["flywheel_inertia_moved"] == pytest.approx(found["flywheel_inertia"] * (100 / 1462.5) ** 2, rel=1e-9)

@@ -373,7 +373,8 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
                   words["dyn_mertsalov"].format(value=short(flywheel.mertsalov, 5),
                                                 constant=short(flywheel.constant_inertia, 4))]
     if flywheel.moved is not None and flywheel.shaft_rpm is not None:
-        lines.append(words["dyn_moved"].format(rpm=short(flywheel.shaft_rpm), value=short(flywheel.moved, 4)))
+        # The speed as the scene gives it: 1462.5 rpm, which four digits drew as 1462 beside the note's 1462.5.
+        lines.append(words["dyn_moved"].format(rpm=short(flywheel.shaft_rpm, 6), value=short(flywheel.moved, 4)))
     for key, index in (("dyn_omega_max", flywheel.index_max), ("dyn_omega_min", flywheel.index_min)):
         lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5),
                                        angle=short(math.degrees(model.driver[index]) % 360.0, 4),
