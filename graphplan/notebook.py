@@ -22,6 +22,7 @@ from .analysis import Analysis, PlanPosition, analyse, measured_on_velocity_plan
 from .check import ErrorRow
 from .errors import SceneError
 from .forces import ForcePlan
+from .motion import solve
 from .plans import Plan
 from .scene import Scene
 
@@ -138,6 +139,9 @@ def plan(scene: Scene, number: int) -> PositionPlans:
     only = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(number,)), measured=measured)
     analysis = analyse(only)
     if not analysis.plans:
+        # A toggle the analytic solution meets is the Python interface's SingularPositionError, as solve() raises it.
+        index = number - first
+        solve(analysis.mechanism, analysis.positions.values[index:index + 1], analysis.positions.reference, [number])
         reason = next((warning.detail for warning in analysis.warnings
                        if int(analysis.positions.numbers[warning.position]) == number), "it is singular")
         raise SceneError("positions", f"position {number} has no plans: {reason}")

@@ -78,6 +78,9 @@ def test_the_python_interface_still_refuses_to_guess():
     scene = graphplan.scene.loads(TOGGLE)
     with pytest.raises(SingularPositionError, match="position 7"):
         graphplan.solve(scene)
+    # The plans of that position too, with the error solve() raises (it was a SceneError naming positions).
+    with pytest.raises(SingularPositionError, match=r"^singular position at position 7 \("):
+        scene.plan(7)
 
 
 # A slotted lever whose crank's circle runs through the lever's pivot C (OA = OC): at φ = 90° the block A lies
