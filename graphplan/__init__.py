@@ -25,6 +25,8 @@ __version__ = "0.1.0"
 
 # Scenes and motions keep their tables in read-only mappings, which pickle and deepcopy cannot take apart by
 # themselves: a process pool's sweep of a parameter sends its scenes to the workers, a notebook copies one to vary.
+# Registered for the process, as copyreg registers: any mapping proxy then pickles as a read-only copy of its
+# mapping (graphplan's are nested deep in scenes, mechanisms and motions, where a __reduce__ apiece would not reach).
 def _read_only_mapping(items: dict) -> MappingProxyType:
     return MappingProxyType(items)
 
@@ -64,10 +66,15 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     mechanism = build(scene)
     uses_near = any(getattr(group, "near", None) is not None for group in mechanism.groups)
     # Where a crank cannot go, the error says where it can, as the command line's does.
-    with reach_hint(mechanism):
-        if driver is None:
+    if driver is None:
+        with reach_hint(mechanism):
             positions = make_positions(mechanism)
             return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
+    try:  # where the assemblies are taken: at the first value (the solve refuses values that are no numbers)
+        first: float | None = float(np.ravel(np.asarray(driver, dtype=float))[0])
+    except (TypeError, ValueError, IndexError):
+        first = None
+    with reach_hint(mechanism, first):
         reference = make_positions(mechanism).reference if uses_near else None
         motion = solve_motion(mechanism, driver, reference, indexed=True)
     return with_toggles_between(motion, reference or reference_at(mechanism, float(motion.driver[0])), PATH_SAMPLES)

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
-from .errors import AssemblyError, SceneError
+from .errors import AssemblyError, SceneError, SingularPositionError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .groups.base import Group
@@ -27,7 +27,7 @@ from .locale import strings
 from .locking import LockedSpan, locked_between
 from .mechanism import Mechanism, build
 from .misreadings import misread
-from .motion import Motion, PositionWarning, solve, toggles_between
+from .motion import Motion, PositionWarning, reference_at, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions, reach
 from .scales import standard_scale
@@ -119,21 +119,28 @@ class Analysis:
 
 
 @contextlib.contextmanager
-def reach_hint(mechanism: Mechanism) -> Iterator[None]:
-    """Where a crank cannot go, say where it can: the ranges of its reach, and a swing inside one of them."""
+def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[None]:
+    """Where a crank cannot go, say where it can: the ranges of its reach, and a swing inside one of them; or, for
+    values a caller gave (``first`` the first of them, where the assemblies were taken), that they keep within one."""
     try:
         yield
     except AssemblyError as error:
         driver = mechanism.driver
         if driver.kind != "crank":
             raise
-        ranges = reach(mechanism)
+        taken = None
+        if first is not None:
+            with contextlib.suppress(AssemblyError, SingularPositionError):
+                taken = reference_at(mechanism, first)
+        ranges = reach(mechanism, taken)
         if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
             raise
         stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
                         Group.reach_ends)
-        raise AssemblyError(error.joint, error.position, error.group,
-                            f"{error.reason}; {_reach_advice(driver.link, ranges, driver.cyclic, stopping)}") from error
+        # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
+        advice = (_reach_advice(driver.link, ranges, False, stopping, "the values") if first is not None
+                  else _reach_advice(driver.link, ranges, driver.cyclic, stopping))
+        raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
 
 
 def _inward(end: float, rounding) -> str:
@@ -143,9 +150,9 @@ def _inward(end: float, rounding) -> str:
 
 
 def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool,
-                  stopping: str = Group.reach_ends) -> str:
+                  stopping: str = Group.reach_ends, kept: str = "driver.swing") -> str:
     """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try;
-    ``stopping`` says what stops it at the ends."""
+    ``stopping`` says what stops it at the ends, ``kept`` what is to keep within them."""
     if not ranges:
         return f"the mechanism assembles at no angle of link {link}: check the lengths"
     # Rounded inward: a swing to an end as written is then inside the reach (70.49° of a reach to 70.4907° was
@@ -153,7 +160,7 @@ def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bo
     spans = " and ".join(f"from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°" for low, high in ranges)
     told = f"link {link} reaches only {spans} (at each end {stopping})"
     if not cyclic:
-        return f"{told}: keep driver.swing within one of these"
+        return f"{told}: keep {kept} within one of these"
     low, high = max(ranges, key=lambda span: span[1] - span[0])
     # A degree short of each end, where the velocities are determined.
     first, last = math.ceil(math.degrees(low) + 1.0), math.floor(math.degrees(high) - 1.0)
@@ -335,14 +342,20 @@ def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[Velocit
     every = []
     for number, index, where, directions, velocity in found:
         velocity = replace(velocity, scale=scale)
-        plans = {"velocity": velocity}
-        table = readings(mechanism, plans, where)
+        table = tuple(readings(mechanism, {"velocity": velocity}, where))
         # A plan position's hand readings are of its plan sheet's plan, drawn at another μV.
         measured = scene.measured.get(number) if number not in scene.positions.plans else None
-        rows = error_rows(number, _exact_values(mechanism, motion, table, index), plans, table,
-                          scene.drawing.drafting_precision, measured)
-        every.append(VelocityPosition(number, index, where, directions, velocity, tuple(table), tuple(rows)))
+        drawn = VelocityPosition(number, index, where, directions, velocity, table, ())
+        every.append(replace(drawn, errors=_grid_rows(mechanism, motion, drawn, measured)))
     return tuple(every), warnings
+
+
+def _grid_rows(mechanism: Mechanism, motion: Motion, position: VelocityPosition,
+               measured: Mapping[str, Mapping[str, float]] | None) -> tuple[ErrorRow, ...]:
+    """The error rows of a velocity plan among the plans of every position, with those of hand readings of it."""
+    table = list(position.readings)
+    return tuple(error_rows(position.number, _exact_values(mechanism, motion, table, position.index), position.plans,
+                            table, mechanism.scene.drawing.drafting_precision, measured))
 
 
 def measured_on_velocity_plans(analysis: Analysis, number: int,
@@ -351,10 +364,8 @@ def measured_on_velocity_plans(analysis: Analysis, number: int,
     position, read at their μV: a notebook that draws the position's plan sheet too (at another μV, which its other
     rows read) still checks a student's readings against the plan the student drew."""
     grid = next(position for position in analysis.velocity_plans if position.number == number)
-    exact = _exact_values(analysis.mechanism, analysis.motion, list(grid.readings), grid.index)
-    rows = error_rows(number, exact, grid.plans, list(grid.readings), analysis.scene.drawing.drafting_precision,
-                      measured)
-    return tuple(row for row in rows if row.source == "measured")
+    return tuple(row for row in _grid_rows(analysis.mechanism, analysis.motion, grid, measured)
+                 if row.source == "measured")
 
 
 def _exact_values(mechanism: Mechanism, motion: Motion, table: list[Reading], index: int) -> dict[str, float]:

@@ -244,7 +244,7 @@ class Reference:
     """What is fixed once, at one reference position, and kept for every solve.
 
     ``branches`` is the assembly branch of each group (a sign for a class-II
-    group, the pose found there for a triad); ``local`` the coordinates of
+    group, a PRP's side and place, the pose found there for a triad); ``local`` the coordinates of
     each named point in its link's frame (link origin, link direction), so
     that the point rides rigidly with its link; ``value`` the driver's
     coordinate there.
@@ -472,10 +472,6 @@ def _conditioning_warnings(conditioning: Mapping[str, np.ndarray]) -> tuple[Posi
     return tuple(sorted(warnings, key=lambda w: w.position))
 
 
-# The most turns of a crank swept sample by sample for the toggles between the values the Python interface takes.
-MOST_SWEPT_TURNS = 100
-
-
 def with_toggles_between(motion: Motion, reference: Reference, samples: int) -> Motion:
     """``motion`` (driver values in any order, as the Python interface takes them) with a warning at each toggle
     between two of its positions, found as :func:`toggles_between` finds them between a scene's positions.
@@ -484,18 +480,18 @@ def with_toggles_between(motion: Motion, reference: Reference, samples: int) -> 
     mechanism, moving from one to the other, would change its assembly there, or not, as it happens.  The
     positions are taken in increasing driver coordinate (repeated values once), without a crank's wrap from
     the last back to the first, and swept over ``samples`` steps a turn (or over the values' span); a crank's
-    values spanning more than :data:`MOST_SWEPT_TURNS` turns by their place in the turn, round it.
+    values spanning more than a turn by their place in the turn, round it.
     """
     driver = motion.mechanism.driver
     distinct, first = np.unique(np.asarray(motion.driver, dtype=float), return_index=True)
     if len(distinct) < 2:
         return motion
     span = float(distinct[-1] - distinct[0])
-    closed = driver.cyclic and span > MOST_SWEPT_TURNS * 2 * math.pi
+    closed = driver.cyclic and span > 2 * math.pi
     if closed:
-        # Swept turn by turn, [0, 1e5] rad took 5.7 million samples and 2.9 GB, [0, 1e7] more than there is; a
-        # crank's mechanism is the same every turn, so the values are taken by their place in the turn, one turn
-        # swept round.
+        # A crank's mechanism is the same every turn: values more than a turn apart are taken by their place in
+        # the turn, one turn swept round. Swept turn by turn, [0, 1e5] rad took 5.7 million samples and 2.9 GB,
+        # [0, 1e7] more than there is, and 99 turns warned of each toggle 198 times.
         places, in_turn = np.unique(distinct[0] + np.mod(distinct - distinct[0], 2 * math.pi), return_index=True)
         first = first[in_turn]
         sweep = places[0] + np.linspace(0.0, 2 * math.pi, samples + 1)

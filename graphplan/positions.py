@@ -306,7 +306,7 @@ def _stroke_length(turn: np.ndarray, index: int, rising: bool) -> int:
     return int(stops[0]) if len(stops) else len(following)
 
 
-def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
+def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tuple[float, float], ...]:
     """The ranges of crank angle (rad, lower end first) in which the mechanism assembles.
 
     An angle belongs to the reach when every group assembles there in the
@@ -315,9 +315,10 @@ def reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
     and their ends, where two links stand in line, found by bisection to a
     nanoradian; a range narrower than the grid may be missed.  A range
     through 0 starts at a negative angle.  A crank that turns round has the
-    one range (0, 2π); one that assembles nowhere has none.
+    one range (0, 2π); one that assembles nowhere has none.  ``reference``: the assemblies a solve took
+    elsewhere (from the first of the values a caller gave).
     """
-    reference = _first_assembly(mechanism)
+    reference = reference or _first_assembly(mechanism)
 
     def assembles(angle: float) -> bool:
         try:

@@ -149,7 +149,7 @@ class Drawing:
 class Project:
     """What only the student knows: who made the project, who checks it, what it is filed as.
 
-    The sheets' title block and the note's head carry it; an empty field leaves its box blank.
+    The sheets' title block and the note's head carry it; a field left out leaves its box blank.
     """
 
     author: str = ""
@@ -159,10 +159,6 @@ class Project:
     designation: str = ""
     # A TOML date (written the locale's way where it is printed) or the text to print as it stands.
     date: datetime.date | str = ""
-
-    @property
-    def given(self) -> bool:
-        return any(getattr(self, name) for name in self.__dataclass_fields__)
 
 
 @dataclass(frozen=True)

@@ -389,8 +389,8 @@ def isolation_warning(spec: VibrationSpec) -> str | None:
     else:
         line += (f"; at this speed no mount isolates within {limit} (r = √2 already sags "
                  f"{2 * STANDARD_GRAVITY / omega ** 2:.3g} m)")
-    fastest = ratio * math.sqrt(STANDARD_GRAVITY / MOST_MOUNT_SAG) / RPM
-    ways.append(f"a speed of {_rounded(fastest, down=False)} rpm or more (now {omega / RPM:.4g} rpm)")
+    least_speed = ratio * math.sqrt(STANDARD_GRAVITY / MOST_MOUNT_SAG) / RPM
+    ways.append(f"a speed of {_rounded(least_speed, down=False)} rpm or more (now {omega / RPM:.4g} rpm)")
     return line + f"; within {limit}: " + ", or ".join(ways)
 
 
@@ -398,7 +398,8 @@ def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
     """``value`` to ``digits`` significant digits, rounded down or up (a bound offered must keep what it bounds), with
     no exponent."""
     step = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
-    return f"{(math.floor if down else math.ceil)(value / step) * step:.{max(digits, 1 + int(math.log10(value)))}g}"
+    bound = (math.floor if down else math.ceil)(value / step) * step
+    return np.format_float_positional(bound, precision=digits, unique=False, fractional=False, trim="-")
 
 
 @dataclass(frozen=True)

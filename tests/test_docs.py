@@ -126,3 +126,14 @@ def test_the_course_project_s_stall_warning_is_the_one_printed(tmp_path, capsys)
     scene.write_text(starter("shaper").replace("power = 3000.0", "power = 1500.0"), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "dynamics"]) == 0
     assert shown in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("page", ["scene-format-extensions.md", "course-project.md"])
+def test_every_row_of_the_docs_tables_stands_in_a_table(page):
+    """A blank line inside the extensions' table ended it: the [project] row and every row after it were set as a
+    paragraph full of pipes."""
+    from markdown_it import MarkdownIt
+
+    html = MarkdownIt("commonmark").enable("table").render((ROOT / "docs" / page).read_text(encoding="utf-8"))
+    assert "<table>" in html
+    assert not re.findall(r"<p>\|", html)

@@ -82,3 +82,9 @@ def test_values_past_a_parallel_are_refused_in_the_python_interface_too():
     with pytest.raises(AssemblyError, match=r"at φ = 190° \(driver\[1\]\) .*B goes off to infinity"):
         graphplan.solve(scene, driver=np.radians([40.0, 190.0]))
     assert math.isfinite(float(graphplan.solve(scene, driver=[math.radians(179.0)]).point("B").r[0, 0]))
+    # Taken at the caller's first value, 190°, the reach is the other side's, and the values are what to keep in it.
+    with pytest.raises(AssemblyError) as raised:
+        graphplan.solve(scene, driver=np.radians([190.0, 40.0]))
+    low, high = map(float, re.search(r"reaches only from (-?[\d.]+)° to (-?[\d.]+)°", str(raised.value)).groups())
+    assert (low, high) == pytest.approx((180.0, 360.0), abs=0.01)
+    assert str(raised.value).endswith("keep the values within one of these")

@@ -48,7 +48,6 @@ def test_the_project_is_read_with_its_date_as_a_date():
     assert project == Project(author="Иванов И. И.", checked_by="Петров П. П.", organization="МГТУ, гр. РК3-51",
                               designation="ТММ.КП.05.00.00", date=DAY)
     assert graphplan.load_text(RATCHET).project == Project()
-    assert not Project().given and project.given
 
 
 @pytest.mark.parametrize(("entry", "where", "words"), [

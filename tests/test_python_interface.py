@@ -85,6 +85,10 @@ def test_a_crank_s_values_many_turns_apart_are_taken_by_their_place_in_the_turn(
             expected.add(int(here))
     assert expected  # the check can fail
     assert {w.position for w in motion.warnings if w.code == "toggle-between"} == expected
+    # 99 turns apart: each toggle of the turn once (it was warned of at every turn passed, 198 times).
+    stepped = [w for w in graphplan.solve(change_point, driver=[0.5, 0.5 + 2 * np.pi * 99]).warnings
+               if w.code == "toggle-between"]
+    assert len(stepped) == len({w.detail for w in stepped}) <= 2
 
 
 def test_the_arrays_handed_out_are_read_only_and_the_driver_a_copy():

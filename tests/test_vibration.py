@@ -765,3 +765,10 @@ def test_the_isolating_mounts_are_compared_with_the_present_ones_as_they_are(tmp
     assert ("softer" if designed_is == "stiffer" else "stiffer") not in note
     already = f"The present mounts (r = {r:.5g}) already pass TR = {present:.5g}, less than the {wanted:g} asked for"
     assert (already in note) == (present < wanted)
+
+
+def test_a_bound_offered_is_written_without_an_exponent_and_on_its_safe_side():
+    from graphplan.vibration import _rounded
+
+    assert _rounded(1.234e-5, down=True) == "0.0000123" and _rounded(1.234e-5, down=False) == "0.0000124"
+    assert _rounded(1219.6, down=False) == "1220" and _rounded(0.3921, down=True) == "0.392"

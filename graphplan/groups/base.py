@@ -215,8 +215,9 @@ class Group:
         """
         raise NotImplementedError
 
-    def with_branch(self, context: Context) -> int:
-        """The branch sign fixed at the first position; 1 for kinds with one solution."""
+    def with_branch(self, context: Context) -> object:
+        """The branch fixed at the first position: a sign for a kind with two solutions, 1 for one with one (a
+        PRP's side its guides cross from and B's place along the first, a triad's pose)."""
         return 1
 
     def solve(self, context: Context, branch: int) -> GroupMotion:
