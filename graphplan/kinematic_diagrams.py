@@ -140,6 +140,8 @@ class KinematicDiagrams:
     stroke_end: float | None = None
     # The driver's ε (a slider's s̈), which the uniformly moving driver of the diagrams leaves out.
     driver_rate: float = 0.0
+    # Whether the working sense is clockwise or backward: the diagrams' positive is then results.json's negative.
+    reversed: bool = False
     # (abscissa, velocity) of the output link read off the velocity plan of each position that has one.
     v_plans: tuple[tuple[float, float], ...] = ()
 
@@ -317,7 +319,7 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
         along=along, s=s, v=v, a=a, nodes=nodes, s_nodes=s_nodes, v_nodes=np.array(v_all[at_nodes]),
         a_nodes=np.array(a_all[at_nodes]), midpoints=midpoints, v_mid=np.array(v_all[at_midpoints]),
         v_chord=v_chord, a_chord=a_chord, v_peak=_peak(v), a_peak=_peak(a), scales=scales, stroke_end=stroke_end,
-        driver_rate=rate)
+        driver_rate=rate, reversed=working.sense in ("cw", "backward"))
 
 
 def of_analysis(analysis: Analysis, axis_mm: float = AXIS_MM, field_mm: float = FIELD_MM) -> KinematicDiagrams:

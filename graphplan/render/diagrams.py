@@ -283,19 +283,27 @@ def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> 
         Polyline(((second, y), (second + 12.0, y)), _CHORD), dot_marker((second + 6.0, y), 0.55, _CHORD_COLOUR),
         Text((second + 14.0, y - 1.2), words["kd_chord"], SCALE_SIZE, "start", _CHORD_COLOUR),
     ]
-    width = scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole)
-    lines = [line for words_ in (_abscissa_scale(record, words), *_conventions(record, words))
-             for line in fitted(words_, max(width, second + 40.0), SCALE_SIZE)]
+    width = max(scales.axis_mm + AXIS_RUN_MM + 6.0 + max(scales.velocity_pole, scales.acceleration_pole), second + 40.0)
+    conventions = list(_conventions(record, words))
+    # What the diagrams count otherwise than results.json stands beside the legend where it fits there: a line
+    # more under the diagrams took them off a sheet they had shared.
+    beside = second + 14.0 + text_width(words["kd_chord"], SCALE_SIZE) + 10.0
+    while conventions and beside + text_width(conventions[0], SCALE_SIZE) <= width:
+        items.append(Text((beside, y - 1.2), conventions[0], SCALE_SIZE, "start"))
+        beside += text_width(conventions.pop(0), SCALE_SIZE) + 10.0
+    lines = [line for words_ in (_abscissa_scale(record, words), *conventions)
+             for line in fitted(words_, width, SCALE_SIZE)]
     items += [Text((0.0, y - 8.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
               for k, line in enumerate(lines)]
     return Layer("legend", tuple(items))
 
 
 def _conventions(record: KinematicDiagrams, words: Mapping[str, str]) -> tuple[str, ...]:
-    """How the diagrams count what results.json counts otherwise: positive in the working sense (results.json:
-    counter-clockwise, along +x), and the driver moving uniformly, its ε (s̈) left out of the acceleration."""
+    """How the diagrams count what results.json counts otherwise: positive in a clockwise or backward working
+    sense (results.json: counter-clockwise, along the link), and the driver moving uniformly, its ε (s̈) left out
+    of the acceleration. Said only where it is so."""
     symbols = [_symbol(record, kind, words)[0] for kind in KINDS]
-    said = [words["kd_positive"].format(symbols=words["enumeration"].join(symbols))]
+    said = [words["kd_positive"].format(symbols=words["enumeration"].join(symbols))] if record.reversed else []
     if record.driver_rate:
         key = "kd_uniform_crank" if record.driver == "crank" else "kd_uniform_slider"
         said.append(words[key].format(speed=f"{record.driver_speed:.4g}", rate=f"{record.driver_rate:.4g}",
