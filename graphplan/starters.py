@@ -33,6 +33,10 @@ def starter(kind: str, locale: str = "en") -> str:
     for name, key in _NAMED_WORDS.items():
         if words[key] != name:
             text = "\n".join(_renamed(line, name, words[key]) for line in text.split("\n"))
+    # The [project] table to fill in shows names as that language writes them (Иванов И. И., 张三).
+    for field in ("author", "checked_by", "organization", "designation"):
+        text = re.sub(rf'^(# {field}\s*=\s*)"[^"]*"', lambda line, f=field: f'{line[1]}"{words["starter_project_" + f]}"',
+                      text, count=1, flags=re.MULTILINE)
     return re.sub(r'^(locale\s*=\s*)"en"', rf'\1"{locale}"', text, count=1, flags=re.MULTILINE)
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import datetime
+import re
 from pathlib import Path
 
 import pytest
@@ -123,6 +124,17 @@ def test_every_starter_offers_the_project_table_to_fill_in(kind):
     assert graphplan.load_text(filled).project == Project(author="A. Student", checked_by="Prof. B. Teacher",
                                                           organization="University, group 21",
                                                           designation="TMM.CP.01.00.00", date=DAY)
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh"])
+def test_a_russian_or_chinese_starter_shows_its_project_names_in_its_language(locale):
+    """«A. Student» stood in the [project] of a starter whose title and guide were Russian."""
+    text = starter("shaper", locale)
+    filled = "\n".join(line[2:] if line.startswith(("# [project]", "# author", "# checked_by", "# organization"))
+                       else line for line in text.splitlines())
+    project = graphplan.load_text(filled).project
+    for value in (project.author, project.checked_by, project.organization):
+        assert value and not re.search(r"[A-Za-z]", value), value
 
 
 def test_a_box_breaks_its_words_at_the_spaces_where_that_sets_them_as_large():
