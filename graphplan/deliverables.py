@@ -610,6 +610,20 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
     if "balancing" in pieces and (couple := _static_couple(scene)) is not None:
         told.append(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its "
                     "masses turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
+    if "sheets" in pieces:
+        from .render.title_block import SMALLEST_LETTERING, cramped, details_of, form_of, labels
+
+        form = form_of(scene.locale)
+        shorter = {"author": " to a surname and initials", "checked_by": " to a surname and initials",
+                   "approved_by": " to a surname and initials",
+                   "date": " (a TOML date, 2026-12-01, is written as the title block writes dates)"}
+        # A TOML date is written as the form writes dates, ESKD's dd.mm.yy in its 10 mm column: not the user's to
+        # shorten.
+        told += [f"project.{name}: the title block's box sets it at {size:.2g} mm to fit it in (printed letters are "
+                 f"no smaller than {SMALLEST_LETTERING:g} mm); shorten it{shorter.get(name, '')}"
+                 for name, size in cramped(details_of(scene.project, scene.title, form), form,
+                                           labels(scene.locale)).items()
+                 if name != "date" or isinstance(scene.project.date, str)]
     if "vibration" in pieces:
         from .vibration import isolation_warning, resonance_warning
 

@@ -126,6 +126,32 @@ def test_every_starter_offers_the_project_table_to_fill_in(kind):
                                                           designation="TMM.CP.01.00.00", date=DAY)
 
 
+def test_a_project_name_too_long_for_its_box_is_warned_of_by_check_and_run(tmp_path, capsys):
+    """A full name in ESKD's 23 mm Разраб. box was set at 1.2 mm without a word; a date the scene writes as text
+    too. A TOML date, which the block writes its own way, and a surname with initials are no trouble."""
+    from graphplan.cli import main
+    from graphplan.render.primitives import text_width
+    from graphplan.render.title_block import LABEL_SIZE, SMALLEST_LETTERING
+
+    long_name, long_date = "Иванов Иван Иванович", "1 декабря 2026 г."
+    # The 23 mm box less its paddings, at the block's size for names: the size the name is set at.
+    expected = LABEL_SIZE * (23.0 - 2 * 0.8) / text_width(long_name, LABEL_SIZE)
+    assert expected < SMALLEST_LETTERING
+    scene = tmp_path / "long.toml"
+    scene.write_text(RATCHET + f'\n[project]\nauthor = "{long_name}"\nchecked_by = "Петров П. П."\n'
+                               f'date = "{long_date}"\n', encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    said = "".join(capsys.readouterr())
+    assert f"project.author: the title block's box sets it at {expected:.2g} mm" in said
+    assert "project.date:" in said and "project.checked_by" not in said
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 0
+    assert "project.author:" in "".join(capsys.readouterr())
+    plain = tmp_path / "plain.toml"
+    plain.write_text(RATCHET + PROJECT, encoding="utf-8")
+    assert main(["check", str(plain)]) == 0
+    assert "project." not in "".join(capsys.readouterr())
+
+
 @pytest.mark.parametrize("locale", ["ru", "zh"])
 def test_a_russian_or_chinese_starter_shows_its_project_names_in_its_language(locale):
     """«A. Student» stood in the [project] of a starter whose title and guide were Russian."""

@@ -29,7 +29,7 @@ import datetime
 import math
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache
 from importlib import resources
 
@@ -95,6 +95,29 @@ def details_of(project: object, title: str, form: str) -> Details:
     if isinstance(date, datetime.date):
         fields["date"] = DATE_FORMATS[form].format(date=date)
     return Details(**{**fields, "title": title})
+
+
+# ISO 3098-0's smallest lettering (mm): a field set smaller to fit its box is hard to read printed.
+SMALLEST_LETTERING = 1.8
+
+
+def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, float]:
+    """The fields of ``details`` (``author``, …) that ``form``'s boxes set below :data:`SMALLEST_LETTERING` to fit
+    them in, with the size (mm) they get."""
+    fields = TitleBlockFields(**{name: getattr(details, name) for name in Details.__dataclass_fields__},
+                              drawing="", scale="", sheet=1, sheets=1)
+
+    def texts(of: TitleBlockFields) -> set[Text]:
+        return {item for item in title_block(form, of, text, (0.0, 0.0)) if isinstance(item, Text)}
+
+    drawn = texts(fields)
+    found = {}
+    for name in ("author", "checked_by", "approved_by", "organization", "designation", "date"):
+        # A field's lines are what the block draws with it and not without it.
+        sizes = [item.size for item in drawn - texts(replace(fields, **{name: ""}))]
+        if sizes and min(sizes) < SMALLEST_LETTERING:
+            found[name] = min(sizes)
+    return found
 
 
 @dataclass(frozen=True, kw_only=True)
