@@ -108,7 +108,7 @@ def peer_rows(case: Case) -> list[Row]:
 def analytic_vectors(case: Case, count: int = 360) -> dict[str, float]:
     """graphplan against the reference over a dense cycle: every point's r, v, a and every link's angle, ω, ε."""
     driver = case.mechanism.driver
-    if driver.kind == "crank":
+    if driver.cyclic:  # a rocking crank (double_rocker_swing) sweeps its swing, as a slider its travel
         values = case.values[0] + driver.sense * 2.0 * math.pi * np.arange(count) / count
     else:
         values = np.linspace(driver.travel[0], driver.travel[1], count)
