@@ -398,18 +398,20 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
 
 
 def observed_orders(rows: list[Row] | tuple[Row, ...]) -> dict[str, float]:
-    """The slope of log(error) against log(N) over the diagrams but the coarsest, per family (least squares).
+    """The order of convergence of the diagrams per family: the slope of log(error) against log(N) between the two
+    finest grids.
 
-    The coarsest (one node per position) is left out: its chords are too long for the error's leading term to rule.
+    An order is what the error does as the step goes to nought: the finest pair shows it. A fit over the coarser
+    grids too took in chords too long for the error's leading term to rule, and wrote 1.74 for the double
+    rocker's acceleration beside "order 2", its finest pair's 2.0.
     """
     out = {}
-    diagrams = [r for r in rows if r.method == "diagram"]
-    diagrams = [r for r in diagrams if r.positions > min(d.positions for d in diagrams)] if diagrams else []
+    diagrams = sorted((r for r in rows if r.method == "diagram"), key=lambda r: r.positions)
     for fam in ("velocity", "acceleration"):
-        points = [(math.log(r.positions), math.log(r.stat(fam, max))) for r in diagrams if r.stat(fam, max) > 0]
+        points = [(r.positions, r.stat(fam, max)) for r in diagrams if r.stat(fam, max) > 0]
         if len(points) >= 2:
-            x, y = np.array(points).T
-            out[fam] = float(-np.polyfit(x, y, 1)[0])
+            (coarse, coarse_error), (fine, fine_error) = points[-2:]
+            out[fam] = math.log(coarse_error / fine_error) / math.log(fine / coarse)
     return out
 
 
