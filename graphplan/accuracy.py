@@ -371,7 +371,7 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
     A few points are tagged with their drafting precision (in ``millimetre``) or the diagram's N;
     ``names`` gives the legend's word for a method (its own name where it gives none).
     """
-    from matplotlib.ticker import NullFormatter
+    from matplotlib.ticker import LogFormatterSciNotation, LogLocator, NullFormatter
 
     for method, (marker, colour) in STYLE.items():
         chosen = [r for r in rows if r.method == method]
@@ -386,11 +386,17 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
             # A few labels only: the drafting points share one run time, the small diagrams nearly so.
             if r.parameter in ("1 mm", "0.1 mm") or (r.method == "diagram" and (r.positions in (12, 360) or r.positions > 1000)):
                 tag = r.parameter.replace("N = ", "").replace(" mm", f" {millimetre}")
-                axes.annotate(tag, (r.seconds, max(r.stat("acceleration", max), FLOOR)),
-                              textcoords="offset points", xytext=(4, 3), fontsize=6, color=colour)
+                # The finest drafting's tag under its point: read to 1 and 0.1 mm alike (a scotch yoke's segment
+                # rounds the same), the two tags stood one on the other.
+                below = r.parameter == "0.1 mm"
+                axes.annotate(tag, (r.seconds, max(r.stat("acceleration", max), FLOOR)), textcoords="offset points",
+                              xytext=(4, -8 if below else 3), fontsize=6, color=colour)
     axes.set_xscale("log")
     axes.set_yscale("log")
-    # Over less than a decade of time matplotlib labels the minor ticks too, and they run into each other.
+    # Ticks at 1 and 3 of each decade, labelled: the times span a decade or two, where powers of ten alone left one
+    # labelled tick; matplotlib's own minor labels ran into each other.
+    axes.xaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 3.0)))
+    axes.xaxis.set_major_formatter(LogFormatterSciNotation(labelOnlyBase=False))
     axes.xaxis.set_minor_formatter(NullFormatter())
     axes.set_ylim(FLOOR / 3, 3.0)
     axes.grid(True, which="major", linewidth=0.3)
