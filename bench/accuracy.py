@@ -163,7 +163,7 @@ def plot(rows: list[Row]) -> str:
     for plot_ in axes[:, 0]:
         plot_.set_ylabel("largest relative error", fontsize=8)
     for plot_ in axes[-1, :]:
-        plot_.set_xlabel("run time at twelve positions, s", fontsize=8)
+        plot_.set_xlabel("run time at twelve positions (a diagram: at its N nodes), s", fontsize=8)
     handles, names = axes.flat[0].get_legend_handles_labels()
     for plot_ in axes.flat[1:len(fixtures)]:
         for handle, name in zip(*plot_.get_legend_handles_labels()):
