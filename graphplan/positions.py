@@ -80,7 +80,7 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         reference = _first_reference(mechanism, float(values[0]), int(numbers[0]), f"driver.{driver.run_key}")
         extremes, reversals = None, ()
     else:
-        start = 0.0 if spec.start == "extreme" else math.radians(float(spec.start))
+        start = _first_value(mechanism)
         # With start = "extreme" the first position is found later; the branches are chosen at 0° first.
         reference = reference_at(mechanism, start) if spec.start == "extreme" else \
             _first_reference(mechanism, start, int(numbers[0]), "positions.start")
@@ -118,15 +118,22 @@ def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: 
                                     f"singular: start the run elsewhere ({moved_by})") from None
 
 
+def _first_value(mechanism: Mechanism) -> float:
+    """The driver's coordinate where the scene's positions start and its assemblies are chosen: a travel's or a
+    swing's first end, a turning crank's ``start`` (0° for "extreme", whose position is found later)."""
+    driver, start = mechanism.driver, mechanism.scene.positions.start
+    if not driver.cyclic:
+        return float(driver.travel[0])
+    return 0.0 if start == "extreme" else math.radians(float(start))
+
+
 def _first_assembly(mechanism: Mechanism) -> Reference | None:
     """The assemblies the scene's first position fixes, where it can be assembled; None where it cannot, or where a
     group is followed by continuation (a walk to every angle of the grid would be long): each angle's own then."""
     if any(group.continuation for group in mechanism.groups):
         return None
-    driver, start = mechanism.driver, mechanism.scene.positions.start
-    first = driver.travel[0] if not driver.cyclic else 0.0 if start == "extreme" else math.radians(float(start))
     try:
-        return reference_at(mechanism, first)
+        return reference_at(mechanism, _first_value(mechanism))
     except (AssemblyError, SingularPositionError):
         return None
 

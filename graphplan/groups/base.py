@@ -220,7 +220,7 @@ class Group:
         PRP's side its guides cross from and B's place along the first, a triad's pose)."""
         return 1
 
-    def solve(self, context: Context, branch: int) -> GroupMotion:
+    def solve(self, context: Context, branch: object) -> GroupMotion:
         raise NotImplementedError
 
     # The plans (graphplan.plans): the same vector equations, solved by crossing lines of action

@@ -75,23 +75,23 @@ class PRP(Group):
         stands there. Turning through parallel takes B off to infinity and back from the other end, unless B is a
         point of both guides' links that stays on both (the two guides pivot about it)."""
         g1, g2 = (context.guide(g) for g in self.guide_pair)
-        lines = TwoLines(g1.u, -g2.u)
+        lines, gap = TwoLines(g1.u, -g2.u), self._gap(g1, g2)
         det = np.atleast_1d(lines.det)
-        self._refuse_parallel(context, g1, g2, det)
-        along, _ = lines.solve(self._gap(g1, g2))
+        self._refuse_parallel(context, g1.u, gap, det)
+        along, _ = lines.solve(gap)
         return (1 if det[0] > 0 else -1), float(np.atleast_1d(along)[0])
 
     def _gap(self, g1, g2):
         o1, o2 = self.offsets
         return g2.origin.r - g1.origin.r + 1j * (o2 * g2.u - o1 * g1.u)
 
-    def _refuse_parallel(self, context: Context, g1, g2, det) -> None:
-        """Parallel guides: B at infinity where they lie apart; undetermined where they lie in one line."""
+    def _refuse_parallel(self, context: Context, u1, gap, det) -> None:
+        """Parallel guides, the first along ``u1``, ``gap`` apart (:meth:`_gap`): B at infinity where they lie
+        apart; undetermined where they lie in one line."""
         parallel = np.abs(det) < SINGULAR_SINE
         if not parallel.any():
             return
-        gap = self._gap(g1, g2)
-        apart = np.atleast_1d(np.abs(cross(g1.u, gap)) > _TOLERANCE * (1.0 + np.abs(gap)))
+        apart = np.atleast_1d(np.abs(cross(u1, gap)) > _TOLERANCE * (1.0 + np.abs(gap)))
         context.fail_where(parallel & apart, lambda i, at: AssemblyError(
             self.joints[0], at, self.label, "its two guides run parallel: B would be at infinity"))
         context.fail_where(parallel & ~apart, lambda i, at: SingularPositionError(
@@ -101,11 +101,11 @@ class PRP(Group):
         g1, g2 = (context.guide(g) for g in self.guide_pair)
         o1, o2 = self.offsets
         u1, u2 = g1.u, g2.u
-        lines = TwoLines(u1, -u2)
+        lines, gap = TwoLines(u1, -u2), self._gap(g1, g2)
         det = lines.det
-        self._refuse_parallel(context, g1, g2, np.atleast_1d(det))
+        self._refuse_parallel(context, u1, gap, np.atleast_1d(det))
         # Position: s1·u1 − s2·u2 = G2 − G1 + i·(o2·u2 − o1·u1).
-        s1, s2 = lines.solve(self._gap(g1, g2))
+        s1, s2 = lines.solve(gap)
         b_r = g1.origin.r + (s1 + 1j * o1) * u1
         v1, a1 = g1.carried(b_r)
         v2, a2 = g2.carried(b_r)

@@ -57,19 +57,20 @@ STANDARD_RATIOS = {
 }
 
 THIN = Stroke(0.25)
-
-# How each form writes a signature's date: ESKD's narrow date column as dd.mm.yy, GB/T 10609.1's 年、月、日
-# in that order, ISO 7200's date of issue as ISO 8601.
-DATE_FORMATS = {"eskd": "{date:%d.%m.%y}", "gb": "{date:%Y.%m.%d}", "iso": "{date:%Y-%m-%d}"}
+# ISO 3098-0's smallest lettering (mm): a field set smaller to fit its box is hard to read printed.
+SMALLEST_LETTERING = 1.8
 LABEL_SIZE = 2.0
-# ISO 7200's field names: small, but not below the 1.8 mm of ISO 3098's smallest lettering.
-CORNER_LABEL_SIZE = 1.8
+# ISO 7200's field names: small, but not below ISO 3098's smallest lettering.
+CORNER_LABEL_SIZE = SMALLEST_LETTERING
 VALUE_SIZE = 3.5
 # Room between a text and the lines of its box (mm): a value, a printed label.
 PADDING = 0.8
 LABEL_PADDING = 0.5
 # Room an ISO 7200 field's name takes at the top of its field (mm).
 CORNER_LABEL_ROOM = LABEL_PADDING + 1.45 * CORNER_LABEL_SIZE
+# How each form writes a signature's date: ESKD's narrow date column as dd.mm.yy, GB/T 10609.1's 年、月、日
+# in that order, ISO 7200's date of issue as ISO 8601.
+DATE_FORMATS = {"eskd": "{date:%d.%m.%y}", "gb": "{date:%Y.%m.%d}", "iso": "{date:%Y-%m-%d}"}
 # Line pitch over cap height.
 LINE_PITCH = 1.55
 
@@ -95,10 +96,6 @@ def details_of(project: object, title: str, form: str) -> Details:
     if isinstance(date, datetime.date):
         fields["date"] = DATE_FORMATS[form].format(date=date)
     return Details(**{**fields, "title": title})
-
-
-# ISO 3098-0's smallest lettering (mm): a field set smaller to fit its box is hard to read printed.
-SMALLEST_LETTERING = 1.8
 
 
 def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, float]:
