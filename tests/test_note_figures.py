@@ -211,3 +211,18 @@ def test_a_force_sheet_too_tall_for_a_page_is_shown_in_parts_that_print_readably
     firsts = [order.index(next(g.get("id") for g in ElementTree.parse(path).getroot().findall(f"{SVG}g")
                                 if g.get("id") != "sheet-title")) for path in parts]
     assert firsts == sorted(firsts)
+
+
+def test_each_part_of_a_force_sheet_is_painted_in_the_whole_sheets_order(shaper):
+    """A part was painted in its layers' order by height: the group's links (white slider blocks and pins) over
+    its arrows and its names under everything, so a load pushing on the ram's block showed no head in the note.
+    Each part paints its layers in the order the whole sheet does: links, then forces, then names."""
+    whole = ElementTree.parse(shaper / "forces_3.svg").getroot()
+    order = [group.get("id") for group in whole.findall(f"{SVG}g") if len(group)]
+    for path in shaper.glob("forces_3-*.svg"):
+        ids = [group.get("id") for group in ElementTree.parse(path).getroot().findall(f"{SVG}g")
+               if len(group) and group.get("id") != "sheet-title"]  # the heading stands clear over the first part
+        assert ids == sorted(ids, key=order.index)
+        for links in (name for name in ids if name.startswith("body-") and name.endswith("-links")):
+            group = links.removesuffix("-links")
+            assert ids.index(links) < ids.index(f"{group}-forces") < ids.index(f"{group}-labels")

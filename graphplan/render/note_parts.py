@@ -65,7 +65,10 @@ def _rows(layers: Sequence[Layer]) -> list[list[Layer]]:
             joined[-1] += row
         else:
             joined.append(row)
-    return joined
+    # Each part is painted in the drawing's own order: taken by height, a group's white slider blocks and pins
+    # were laid over its arrows (a load pushing on a block lost its head) and its names under everything.
+    painting = {id(layer): index for index, layer in enumerate(layers)}
+    return [sorted(row, key=lambda layer: painting[id(layer)]) for row in joined]
 
 
 def _size(layers: Sequence[Layer]) -> tuple[float, float]:
