@@ -165,6 +165,11 @@ class Case:
     where: list[dict[str, complex]]
     left_out: dict[int, str] = field(default_factory=dict)
 
+    @property
+    def compared(self) -> list[int]:
+        """The indices of the positions every method is compared at: those not left out."""
+        return [index for index in range(len(self.values)) if index not in self.left_out]
+
 
 class AccuracyError(GraphplanError, ArithmeticError):
     """The scene's positions have no 50-digit reference (a toggle the reference cannot solve)."""
@@ -220,26 +225,29 @@ def motion_values(motion, index: int) -> Values:
 # --- the methods ----------------------------------------------------------------------------------
 
 def analytic(case: Case) -> Row:
-    seconds, motion = best_time(lambda: solve(case.mechanism, case.values, case.positions.reference))
-    got = [quantities(case.mechanism, case.tables[i], motion_values(motion, i)) for i in range(len(case.values))]
-    return Row(case.name, "analytic", "", len(case.values), seconds, relative_errors(got, case.exact))
+    compared = case.compared
+    values = case.values[compared]
+    seconds, motion = best_time(lambda: solve(case.mechanism, values, case.positions.reference))
+    got = [quantities(case.mechanism, case.tables[index], motion_values(motion, k)) for k, index in enumerate(compared)]
+    return Row(case.name, "analytic", "", len(compared), seconds,
+               relative_errors(got, [case.exact[index] for index in compared]))
 
 
 def _construct(case: Case):
     motion = solve(case.mechanism, case.values, case.positions.reference)
-    return [_plans_at(case.mechanism, *instant(motion, index)) for index in range(len(case.values))
-            if index not in case.left_out]
+    return [_plans_at(case.mechanism, *instant(motion, index)) for index in case.compared]
 
 
 def construction(case: Case) -> list[Row]:
     seconds, _ = best_time(lambda: _construct(case), 3)
-    drawn = [(plans, table) for plans, table in zip(case.plans, case.tables, strict=True) if plans is not None]
-    exact = [truth for index, truth in enumerate(case.exact) if index not in case.left_out]
+    compared = case.compared
+    drawn = [(case.plans[index], case.tables[index]) for index in compared]
+    exact = [case.exact[index] for index in compared]
     exact_reading = [{r.quantity: r.value(plans) for r in table} for plans, table in drawn]
-    rows = [Row(case.name, "construction", "", len(case.values), seconds, relative_errors(exact_reading, exact))]
+    rows = [Row(case.name, "construction", "", len(compared), seconds, relative_errors(exact_reading, exact))]
     for precision in PRECISIONS_MM:
         got = [{r.quantity: r.value(plans, drafted(r.millimetres(plans), precision)) for r in table} for plans, table in drawn]
-        rows.append(Row(case.name, "drafting", f"{precision:g} mm", len(case.values), seconds, relative_errors(got, exact)))
+        rows.append(Row(case.name, "drafting", f"{precision:g} mm", len(compared), seconds, relative_errors(got, exact)))
     return rows
 
 
@@ -323,12 +331,13 @@ def diagram(case: Case, refinement: int) -> Row:
 
     seconds, (v, a, omega, epsilon) = best_time(differentiate, 3 if len(grid) <= 360 else 1)
     got = []
-    for index in range(len(case.values)):
+    for index in case.compared:
         node = index * refinement
         values = Values({n: complex(x[node]) for n, x in v.items()}, {n: complex(x[node]) for n, x in a.items()},
                         {n: float(x[node]) for n, x in omega.items()}, {n: float(x[node]) for n, x in epsilon.items()})
         got.append(quantities(mechanism, case.tables[index], values))
-    return Row(case.name, "diagram", f"N = {len(grid)}", len(grid), seconds, relative_errors(got, case.exact))
+    return Row(case.name, "diagram", f"N = {len(grid)}", len(grid), seconds,
+               relative_errors(got, [case.exact[index] for index in case.compared]))
 
 
 # --- the study of one scene -----------------------------------------------------------------------

@@ -144,6 +144,12 @@ def test_a_position_without_a_plan_is_left_out_and_named(tmp_path):
     assert "Left out" in text and "position 1 (φ = 0°)" in text
     table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
     assert all(math.isfinite(float(row["velocity_max"])) for row in table)
+    # The methods are compared at the positions less those left out, and the report counts those (it said
+    # "at the 12 positions" and gave 12 in each row while comparing at 10).
+    left_out = next(line for line in text.splitlines() if line.startswith("Left out")).count("(φ =")
+    compared = len(analyse(graphplan.load(path)).positions.numbers) - left_out
+    assert f"at the {compared} positions" in text
+    assert {row["positions"] for row in table if row["method"] != "diagram"} == {str(compared)}
 
 
 def test_a_singular_position_has_no_accuracy_and_says_so(tmp_path, capsys):

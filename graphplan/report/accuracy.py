@@ -53,7 +53,7 @@ def markdown(study: Study, locale: str, title: str) -> str:
     """``accuracy.md``: what was compared with what, the table, and the diagrams' order of convergence."""
     text = strings(locale)
     lines = [f"# {text['accuracy_title'].format(title=title)}", "",
-             text["accuracy_explained"].format(count=Count(study.case.values.size)), "",
+             text["accuracy_explained"].format(count=Count(len(study.case.compared))), "",
              *([text["accuracy_left_out"].format(positions="; ".join(study.case.left_out.values())), ""]
                if study.case.left_out else []),
              *table_lines(study.rows, text), "", order_sentence(study.orders, text), "",
@@ -86,7 +86,7 @@ def figure(study: Study, locale: str, title: str) -> str:
         names = {key.removeprefix("accuracy_legend_"): word for key, word in text.items()
                  if key.startswith("accuracy_legend_")}
         draw_study(axes, study.rows, text["millimetre"], names)
-        axes.set_xlabel(text["accuracy_axis_time"].format(count=Count(study.case.values.size)), fontsize=9)
+        axes.set_xlabel(text["accuracy_axis_time"].format(count=Count(len(study.case.compared))), fontsize=9)
         axes.set_ylabel(text["accuracy_axis_error"], fontsize=9)
         axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9)
         axes.legend(fontsize=8, loc="best")
