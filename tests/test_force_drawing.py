@@ -383,3 +383,71 @@ def test_a_block_s_own_moment_enters_the_lever_as_its_power_over_the_plan_s_scal
     assert "enters as its power over the plan's scale, Mu3·ω3/μV." in note
     row = next(line for line in note.splitlines() if line.startswith("| Mu3 |"))
     assert float(row.split("|")[-2].replace("−", "-")) == pytest.approx(expected / plan.velocity.scale, rel=1e-4)
+
+
+def test_loads_along_a_slider_s_guide_stand_one_after_another_on_the_guide_clear_of_the_links():
+    """The shaper's ram: the cutting force F6, the inertia force Fu6 and the friction Ff16 all act at E along
+    the guide, and the connecting rod DE lies along it too.  They were drawn on top of the rod, one over the
+    other, their heads lost in its heavy line; each now stands clear of every link's outline, on the guide's
+    thin axis, none over another."""
+    from graphplan.starters import starter
+
+    analysis = analyse(graphplan.load_text(starter("shaper", "ru")))
+    position = next(p for p in analysis.plans if p.with_friction is not None and not p.with_friction.locked)
+    sheet = force_sheet(analysis, position, with_friction=True)
+    group = next(group for group in sheet.forces.groups if 6 in group.links)
+    key = force_layout.group_id(group.label)
+    layers = {layer.name: layer.items for layer in force_layout.layout(sheet)}
+    arrows = {item.key.rsplit("-", 1)[1]: item for item in layers[f"body-{key}-forces"] if isinstance(item, Arrow)}
+    heavy = [item for item in layers[f"body-{key}-links"]  # the links' outlines, not the blocks they cross
+             if isinstance(item, Polyline) and item.stroke == force_layout._LINK and item.fill is None]
+    assert heavy
+    slide = next(slide for slide in analysis.motion.slides if slide.slider == 6)
+    u = complex(at(slide.u, position.index))
+    along = {name: arrow for name, arrow in arrows.items() if name in ("F6", "Fu6", "Ff16")}
+    assert len(along) == 3
+    segments = {}
+    for name, arrow in along.items():
+        start, end = complex(*arrow.start), complex(*arrow.end)
+        assert abs(((end - start) * u.conjugate()).imag) < 1e-6 * abs(end - start)  # along the guide
+        for outline in heavy:
+            points = [complex(*point) for point in outline.points]
+            for a, b in itertools.pairwise(points + points[:1] if outline.closed else points):
+                assert _overlap_mm(start, end, a, b) < 1.0, (name, a, b)
+        segments[name] = (start, end)
+    for (first, (a, b)), (second, (c, d)) in itertools.combinations(segments.items(), 2):
+        assert _overlap_mm(a, b, c, d) < 1.0, (first, second)
+
+
+def _overlap_mm(a, b, c, d, within=0.8):
+    """How much of segment ab lies within ``within`` mm of segment cd (mm), sampled finely."""
+    samples = 400
+    near = sum(1 for k in range(samples + 1) if _distance(a + (b - a) * k / samples, c, d) < within)
+    return abs(b - a) * near / (samples + 1)
+
+
+def _distance(p, c, d):
+    t = max(0.0, min(1.0, ((p - c) * (d - c).conjugate()).real / max(abs(d - c) ** 2, 1e-18)))
+    return abs(p - (c + t * (d - c)))
+
+
+def test_a_reaction_along_a_plate_s_closing_edge_is_drawn_off_the_plate():
+    """The ratchet's coupler is a plate A–E–B whose outline closes on its edge BA; R23n at A acts along BA and was
+    judged clear of the links from its first two edges only.  Drawn along BA it lay on the plate's heavy line (once
+    the joint's own corner stopped tipping the balance); it stands off the plate, onto A from outside."""
+    analysis = analysis_of("ratchet_crank_rocker")
+    position = next(p for p in analysis.plans if p.number == 5)
+    sheet = force_sheet(analysis, position)
+    group = next(group for group in sheet.forces.groups if 3 in group.links)
+    key = force_layout.group_id(group.label)
+    layers = {layer.name: layer.items for layer in force_layout.layout(sheet)}
+    (plate,) = [item for item in layers[f"body-{key}-links"]
+                if isinstance(item, Polyline) and item.closed and item.fill is None]
+    corners = [complex(*point) for point in plate.points]
+    (arrow,) = [item for item in layers[f"body-{key}-forces"] if item.key == force_layout.svg_id("body", key, "R23n")]
+    start, end = complex(*arrow.start), complex(*arrow.end)
+    a = min(corners, key=lambda corner: min(abs(corner - start), abs(corner - end)))
+    edges = [corner - a for corner in corners if corner != a]
+    assert any(abs(((end - start) * edge.conjugate()).imag) < 1e-3 * abs(end - start) * abs(edge) for edge in edges)
+    for first, second in itertools.pairwise([*corners, corners[0]]):
+        assert _overlap_mm(start, end, first, second) < 6.0, (first, second)

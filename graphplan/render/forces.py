@@ -36,7 +36,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
-from shapely.geometry import LineString, MultiPoint
+from shapely.geometry import LineString, MultiPoint, Polygon
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
@@ -253,20 +253,30 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     arrows: list[Primitive] = []
     drawn: dict[str, tuple[complex, complex, complex]] = {}  # name → (arrow start, arrow end, unit), mm
     anchors: list[Anchor] = []
-    bars = unary_union([LineString(item.points) for item in links
-                        if isinstance(item, Polyline) and len(item.points) > 1]).buffer(1.0)
-    for force in forces:
-        if _negligible(force.force, [other.force for other in forces]):
-            continue
-        length = abs(force.force) / scale
+    # Only the links' heavy lines hide an arrow laid over them: a slide's thin axis is the line a slider's
+    # loads act along, and the textbooks draw them on it; a slider's block is crossed every way from its pin.
+    bars = unary_union([LineString(item.points + item.points[:1] if item.closed else item.points) for item in links
+                        if isinstance(item, Polyline) and len(item.points) > 1 and item.stroke.width >= _LINK.width
+                        and item.fill is None]).buffer(1.0)
+    blocks = unary_union([Polygon(item.points) for item in links
+                          if isinstance(item, Polyline) and item.closed and item.fill is not None])
+    shown = [force for force in forces if not _negligible(force.force, [other.force for other in forces])]
+    beside = {force.name: _beside(_c(paper(force.point)), max(abs(force.force) / scale, LEAST_ARROW_MM)
+                                  * force.force / abs(force.force), bars, blocks) for force in shown}
+    # Arrows pointing onto their joint are set first, so that where several share a line the others run on
+    # beyond their tails, not head against head.
+    stacked: dict[str, Arrow] = {}
+    for force in sorted(shown, key=lambda force: not _points_onto(*beside[force.name], _c(paper(force.point)))):
+        start, end = _unstacked(*beside[force.name], _c(paper(force.point)), list(stacked.values()))
+        stacked[force.name] = Arrow(_xy(start), _xy(end), force.stroke, 3.0, svg_id("body", key, force.name))
+    for force in shown:
+        arrow = stacked[force.name]
+        arrows.append(arrow)
+        start, end = _c(arrow.start), _c(arrow.end)
         unit = force.force / abs(force.force)
-        start, end = _beside(_c(paper(force.point)), max(length, LEAST_ARROW_MM) * unit, bars)
-        start, end = _unstacked(start, end, _c(paper(force.point)), arrows)
-        arrows.append(Arrow(_xy(start), _xy(end), force.stroke, 3.0, svg_id("body", key, force.name)))
         drawn[force.name] = (start, end, unit)
         # Named at the arrow's free end: its head, or its tail when it points onto its joint.
-        point = _c(paper(force.point))
-        free, outward = (end, unit) if abs(end - point) >= abs(start - point) else (start, -unit)
+        free, outward = (start, -unit) if _points_onto(start, end, _c(paper(force.point))) else (end, unit)
         anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
     circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
@@ -299,17 +309,28 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)], tuple(caption))
 
 
-def _beside(point: complex, vector: complex, bars: BaseGeometry) -> tuple[complex, complex]:
+def _beside(point: complex, vector: complex, bars: BaseGeometry, blocks: BaseGeometry) -> tuple[complex, complex]:
     """The arrow of a force at ``point``: from it, or onto it where that keeps it off the links' bars.
 
     A reaction pushing along a link (R23n) drawn from its joint would lie on
     the link; drawn onto the joint it stands clear, as the textbooks draw it.
+    Onto a slider's joint it pushes on the block's side: its head at the pin
+    would be lost inside the block.
     """
     def covered(start: complex, end: complex) -> float:
         return LineString((_xy(start), _xy(end))).intersection(bars).length
 
-    away, onto = (point, point + vector), (point - vector, point)
+    unit = vector / abs(vector)
+    shy = 0.0
+    if ShapelyPoint(_xy(point)).within(blocks):
+        shy = LineString((_xy(point), _xy(point - (abs(vector) + 100.0) * unit))).intersection(blocks).length
+    away, onto = (point, point + vector), (point - vector - shy * unit, point - shy * unit)
     return onto if covered(*onto) < covered(*away) - 0.5 else away
+
+
+def _points_onto(start: complex, end: complex, point: complex) -> bool:
+    """Whether the arrow from ``start`` to ``end`` points onto ``point``, its head the nearer end."""
+    return abs(end - point) < abs(start - point)
 
 
 def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Primitive]) -> tuple[complex, complex]:
@@ -320,7 +341,7 @@ def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Pr
     action, the second stands beyond the first and keeps its line.
     """
     unit = (end - start) / abs(end - start)
-    away = unit if abs(start - point) <= abs(end - point) else -unit
+    away = -unit if _points_onto(start, end, point) else unit
 
     def along(item: Arrow) -> bool:  # an arrow crossing this one hides nothing of it
         other = (_c(item.end) - _c(item.start)) / max(item.length, 1e-12)
