@@ -92,6 +92,7 @@ class Passage:
     at: str
     sine: float
     warned: bool
+    at_position: int | None = None   # the number of the position the toggle lies at, where the dip runs on to it
 
 
 @dataclass
@@ -194,7 +195,10 @@ def passages(analysis) -> list[Passage]:
         ends.append(values[0] + mechanism.driver.sense * 2.0 * math.pi)
     limit = math.sin(math.radians(ILL_CONDITIONED_DEG))
     warned = {w.position for w in analysis.warnings}
-    found = []
+    own = (np.min(np.array([np.abs(c) for c in analysis.motion.conditioning.values()]), axis=0)
+           if analysis.motion.conditioning else None)
+    numbers = analysis.positions.numbers
+    found, at_positions = [], set()
     for k in range(len(ends) - 1):
         inside = np.linspace(ends[k], ends[k + 1], BETWEEN + 2)[1:-1]
         with np.errstate(all="ignore"):
@@ -205,7 +209,16 @@ def passages(analysis) -> list[Passage]:
         worst = int(np.argmin(sine))
         if sine[worst] < limit:
             after, before = k, (k + 1) % len(values)
-            numbers = analysis.positions.numbers
+            # A dip that runs on to a position nearer parallel still is the toggle at that position (the
+            # change point's 180°), not one stepped over: once, as that position's.
+            end = {0: after, len(inside) - 1: before}.get(worst)
+            if end is not None and own is not None and own[end] <= sine[worst]:
+                if end not in at_positions:
+                    at_positions.add(end)
+                    found.append(Passage(int(numbers[after]), int(numbers[before]),
+                                         mechanism.driver.describe(float(values[end])), float(own[end]),
+                                         end in warned, int(numbers[end])))
+                continue
             found.append(Passage(int(numbers[after]), int(numbers[before]), mechanism.driver.describe(float(inside[worst])),
                                  float(sine[worst]), after in warned or before in warned))
     return found
@@ -279,8 +292,8 @@ def markdown(reports: list[SceneReport]) -> str:
              f"action cross (analytic: `Motion.conditioning`; construction: the plans' `crossing_deg`). Bound: {BOUND:g}·κ·ε "
              f"for velocities, {BOUND:g}·κ²·ε for accelerations, ε = {EPS:.3g}; the construction crosses lines drawn "
              f"{REACH:g} times the figure's size long, so its bound is {REACH:g} times larger. A position passes within its "
-             "bound, or with a warning; a scene passes when every position does, every toggle stepped over between two "
-             "positions is warned of, and results.json holds no NaN; or when graphplan refuses it with one clear error."), "",
+             "bound, or with a warning; a scene passes when every position does, every toggle at a position or stepped "
+             "over between two is warned of, and results.json holds no NaN; or when graphplan refuses it with one clear error."), "",
              ("| scene | outcome | positions within bound | warned | analytic: worst v error / κε | a error / κ²ε "
              "| construction: worst v error / κε | a error / κ²ε |"),
              "|---|---|---:|---:|---:|---:|---:|---:|"]
@@ -307,7 +320,10 @@ def markdown(reports: list[SceneReport]) -> str:
             silent = [row.number for row in report.rows if "SILENT" in row.verdict]
             if silent:
                 why.append(f"positions {', '.join(map(str, silent))} are outside their bound with no warning")
-            stepped = [f"{p.after}–{p.before}" for p in report.passages if not p.warned]
+            stepped = [f"{p.after}–{p.before}" for p in report.passages if not p.warned and p.at_position is None]
+            unwarned_at = [str(p.at_position) for p in report.passages if not p.warned and p.at_position is not None]
+            if unwarned_at:
+                why.append(f"a toggle at position {', '.join(unwarned_at)} has no warning")
             if stepped:
                 why.append(f"a toggle is stepped over without a warning between positions {', '.join(stepped)}")
             if report.nan:
@@ -328,6 +344,11 @@ def markdown(reports: list[SceneReport]) -> str:
         if report.nan:
             lines += ["**results.json would hold a NaN.**", ""]
         for passage in report.passages:
+            if passage.at_position is not None:
+                lines += [f"At position {passage.at_position} ({passage.at}) a group's lines of action come within "
+                          f"{math.degrees(math.asin(passage.sine)):.2g}° of parallel: a toggle at the position itself; "
+                          + ("graphplan warned of it." if passage.warned else "**graphplan says nothing of it.**"), ""]
+                continue
             lines += [f"Between positions {passage.after} and {passage.before} a group's lines of action come within "
                       f"{math.degrees(math.asin(passage.sine)):.2g}° of parallel (near {passage.at}): a toggle the positions "
                       f"step over, where the assembly may change branch; "
