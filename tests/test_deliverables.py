@@ -525,3 +525,18 @@ def test_a_scene_whose_plan_of_positions_fits_no_named_sheet_is_refused_with_the
     fitting = float(re.search(r"length_scale = ([0-9.]+)", error).group(1))
     # The ratchet's paths span 0.73 m; at the named scale they would be 730 mm, at the one given < 290 mm.
     assert 0.73 / fitting < 290.0
+
+
+def test_the_russian_shapers_note_writes_what_follows_parallel_as_russian_grammar_has_it():
+    """«∥ направляющая» read "parallel to" with a nominative noun, where Russian declines it («∥ направляющей»).
+    A line's name is one word in every case, so the Russian starter names its guide as the textbooks do, x–x:
+    no word after ∥ in its note is a noun or adjective left in the feminine nominative."""
+    import graphplan
+    from graphplan.analysis import analyse
+    from graphplan.report.note import note_markdown
+
+    scene = graphplan.load_text(starter("shaper", "ru"))
+    note = note_markdown(analyse(scene), scene=scene)
+    after_parallel = re.findall(r"∥ (\S+)", note)
+    assert after_parallel
+    assert not [word for word in after_parallel if re.fullmatch(r"[а-яё]+(ая|яя)", word)], set(after_parallel)
