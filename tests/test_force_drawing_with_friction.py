@@ -3,17 +3,21 @@
 Each journal with friction is drawn with its friction circle ρ = f·r (at μl,
 enlarged to a least radius when smaller), and the whole reaction of each outer
 pair lies on the circle's tangent on the side whose moment about the joint is
-the pair's friction moment on the group, ``ρ·|R|`` in size: the textbook's
-construction, read back off the paper and compared with the force records.
+the pair's friction moment on the group, ``ρ·|R|`` in size, the reactions a
+later group found among them (the crank's R32 = −R23, on R23's line): the
+textbook's construction, read back off the paper and compared with the force
+records and with the crank's moment equation worked out afresh.
 The sheet heads with the balancing load without friction and the efficiency;
 its lever carries the friction loads and agrees with the polygons.  The
 command line writes one such sheet per plan position whose reactions settle.
 """
 
+import dataclasses
 import math
+import re
 
 import pytest
-from test_joint_friction import ratchet_with_friction, slider_crank, slider_crank_text
+from test_joint_friction import FIXTURES, ratchet_with_friction, slider_crank, slider_crank_text
 from test_lever_with_friction import slotted_lever_with_friction
 
 import graphplan
@@ -24,6 +28,7 @@ from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg, length_scale, with_length_scale
 from graphplan.render.primitives import Circle, Polyline, Text
 from graphplan.render.sheet import course_sheets
+from graphplan.scene import FrictionSpec
 
 # Within this on the paper (mm) two drawn points are one.
 CLOSE_MM = 1e-6
@@ -84,15 +89,15 @@ def test_the_whole_reaction_lies_on_the_tangent_on_the_side_of_the_friction_mome
         lines = [item for item in drawn if isinstance(item, Polyline)]
         moments = {load.name: load.moment for load in group.loads if not load.is_force}
         journals = journals_of(analysis, group)
-        outer = [found for found in group.found if found.source not in group.links and found.joint in journals]
+        outer = outer_reactions(position.with_friction, group, journals)
         assert len(lines) == len(outer), group.label
-        for found in outer:
-            unit = found.force / abs(found.force)
+        for pair, joint, force in outer:
+            unit = force / abs(force)
             line = next(line for line in lines if abs(cross(unit, _direction(line))) < 1e-9)
             start = complex(*line.points[0])
             # The friction moment on the group is ρ·|R|: the reaction's own, settled.
-            moment = moments[f"Mf{found.source}{found.target}"]
-            assert abs(moment) == pytest.approx(journals[found.joint].radius * abs(found.force), rel=1e-9)
+            moment = moments[f"Mf{pair}"]
+            assert abs(moment) == pytest.approx(journals[joint].radius * abs(force), rel=1e-9)
             circle = min(circles, key=lambda c: abs(cross(unit, start - complex(*c.centre))) - c.radius)
             # A force along the line, in the reaction's sense, turns about the joint as the friction moment does.
             arm = cross(start - complex(*circle.centre), unit)
@@ -102,9 +107,120 @@ def test_the_whole_reaction_lies_on_the_tangent_on_the_side_of_the_friction_mome
     assert checked >= 2
 
 
+def outer_reactions(forces, group, journals):
+    """(pair, joint, force on the group) of each journal with friction joining one of the group's links to a link
+    outside it, the pair named from the outside in (``32``): the reaction its polygon finds (R12), or the one a later
+    group found, reversed (R32 = −R23)."""
+    outer = []
+    for joint, pair in journals.items():
+        ours, theirs = (pair.target, pair.source) if pair.target in group.links else (pair.source, pair.target)
+        if theirs in group.links:
+            continue
+        found = next(found for found in forces.reactions.values() if {found.source, found.target} == {ours, theirs})
+        outer.append((f"{theirs}{ours}", joint, found.force if found.target == ours else -found.force))
+    return outer
+
+
 def _direction(line: Polyline) -> complex:
     (x0, y0), (x1, y1) = line.points[0], line.points[-1]
     return complex(x1 - x0, y1 - y0) / math.hypot(x1 - x0, y1 - y0)
+
+
+def large_journals(name):
+    """The ratchet, or the slotted lever, with journals whose friction circles are drawn at μl, not enlarged:
+    ρ = 0.3·60 mm = 18 mm (7.2 mm on the ratchet's paper, 9 mm on the lever's)."""
+    if name not in _analyses:
+        scene = graphplan.load(FIXTURES / {"large ratchet": "ratchet_crank_rocker.toml",
+                                           "large slotted lever": "quick_return_slotted_lever.toml"}[name])
+        journals = {"large ratchet": [(joint, None) for joint in "OABC"],
+                    "large slotted lever": [("C", None), ("A", (2, 3))]}[name]
+        specs = tuple(FrictionSpec(f"friction[{k}]", joint, links, 0.3, 0.06, None)
+                      for k, (joint, links) in enumerate(journals))
+        if name == "large slotted lever":
+            specs += (FrictionSpec(f"friction[{len(specs)}]", "A", (3, 4), 0.15, None, None),)
+        _analyses[name] = with_length_scale(analyse(dataclasses.replace(scene, friction=specs)))
+    return _analyses[name]
+
+
+LARGE = [(name, k) for name in ("large ratchet", "large slotted lever") for k in (0, 1)]
+
+
+@pytest.mark.parametrize(("name", "k"), LARGE, ids=[f"{name}-{k}" for name, k in LARGE])
+def test_the_crank_takes_its_rod_s_reaction_on_the_rod_s_tangent_and_its_moment_equation_there(name, k):
+    """R32 = −R23 acts on the crank along the line R23 is drawn on at A, the tangent of A's friction circle whose
+    moment about A is the friction moment on the crank, −sign(ω2 − ω3)·ρA·|R32|.  Taken there, with R12 on its own
+    tangent at O, ΣMO of the crank gives the balancing moment the sheet writes; the caption's R32·h + Mf32, h
+    drawn to R32's arrow through A, is R32's moment on that tangent, and so is the tangent's arm drawn at μl."""
+    analysis = large_journals(name)
+    position = analysis.plans[k]
+    layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position, True))}
+    forces, driver, motion, i = position.with_friction, analysis.mechanism.driver, analysis.motion, position.index
+    scale = length_scale(analysis)
+    assert all(pair.radius / scale > force_layout.LEAST_FRICTION_CIRCLE_MM for pair in analysis.friction
+               if not pair.sliding)
+    crank, rod = forces.groups[-1], next(group for group in forces.groups
+                                         if any(found.source == driver.link for found in group.found))
+    rod_on_crank = next(found for found in rod.found if found.source == driver.link and found.joint == driver.joint)
+    force = -rod_on_crank.force
+    pivot, joint = (complex(*motion.point(point).r[i]) for point in (driver.pivot, driver.joint))
+    omega = {link: motion.link(link).omega[i] for link in (driver.link, rod_on_crank.target)}
+    journals = journals_of(analysis, crank)
+    rho = journals[driver.joint].radius
+    relative = omega[driver.link] - omega[rod_on_crank.target]
+    assert abs(relative) > 1e-6
+    friction_at_joint = -math.copysign(rho * abs(force), relative)
+    # The tangent's moment about O: the force's through A and the friction moment about A.
+    on_tangent = cross(joint - pivot, force) + friction_at_joint
+    at_pivot = 0.0
+    if driver.pivot in journals:
+        frame_on_crank = forces.reactions[f"R{analysis.mechanism.scene.frame_link}{driver.link}"].force
+        at_pivot = -math.copysign(journals[driver.pivot].radius * abs(frame_on_crank), omega[driver.link])
+    spec = analysis.mechanism.scene.links[driver.link]
+    centre = complex(*motion.point(spec.centre).r[i])
+    own = spec.mass * (-1j * analysis.mechanism.scene.gravity - complex(*motion.point(spec.centre).a[i]))
+    own_moment = cross(centre - pivot, own) - spec.inertia * motion.link(driver.link).epsilon[i]
+    balancing = -(own_moment + at_pivot + on_tangent)
+    assert forces.balancing == pytest.approx(balancing, rel=1e-9)
+
+    unit = force / abs(force)
+    key, rod_key = force_layout.group_id(crank.label), force_layout.group_id(rod.label)
+    paper = drawn_at(layers, key, scale, journals, motion, i)
+    # The pivot is drawn where the crank's pin at A puts it, with a friction circle or without.
+    paper_joint = paper[driver.joint]
+    paper_pivot = paper_joint + (pivot - joint) / scale
+    tangent = next(line for line in layers[f"body-{key}-friction"] if isinstance(line, Polyline)
+                   and abs(cross(unit, _direction(line))) < 1e-9
+                   and abs(abs(cross(complex(*line.points[0]) - paper_joint, unit)) - rho / scale) < 1e-6)
+    assert cross(complex(*tangent.points[0]) - paper_pivot, unit) * scale * abs(force) == \
+        pytest.approx(on_tangent, rel=1e-9)
+    # R23's line on the rod's drawing is the same line, about A.
+    rod_joint = drawn_at(layers, rod_key, scale, journals_of(analysis, rod), motion, i)[driver.joint]
+    rod_tangent = next(line for line in layers[f"body-{rod_key}-friction"] if isinstance(line, Polyline)
+                       and abs(cross(unit, _direction(line))) < 1e-9
+                       and abs(abs(cross(complex(*line.points[0]) - rod_joint, unit)) - rho / scale) < 1e-6)
+    assert cross(complex(*rod_tangent.points[0]) - rod_joint, unit) == \
+        pytest.approx(cross(complex(*tangent.points[0]) - paper_joint, unit), abs=CLOSE_MM)
+
+    caption = " ".join(item.text for item in layers[f"body-{key}-caption"])
+    equation = caption[caption.index(f"ΣM{driver.pivot}("):caption.index(f"Mb = {written(balancing)}")]
+    pair = f"{rod_on_crank.target}{driver.link}"
+    assert f"Mf{pair}" in equation and re.search(rf"R{pair}·h\d", equation)
+    arm = abs(cross(joint - pivot, unit)) / scale
+    assert any(isinstance(item, Polyline) and math.dist(item.points[0], (paper_pivot.real, paper_pivot.imag)) < 1e-6
+               and math.dist(*item.points) == pytest.approx(arm, abs=CLOSE_MM)
+               and abs(cross(complex(*item.points[-1]) - paper_joint, unit)) < 1e-6
+               for item in layers[f"body-{key}-arms"])
+
+
+def drawn_at(layers, key, scale, journals, motion, index):
+    """Where the group's journals stand on its drawing (mm, by joint), found by its friction circles at μl."""
+    joints = {joint: complex(*motion.point(joint).r[index]) / scale for joint in journals}
+    centres = [complex(*item.centre) for item in layers[f"body-{key}-friction"] if isinstance(item, Circle)]
+    for centre in centres:
+        shift = centre - next(iter(joints.values()))
+        if all(min(abs(other - where - shift) for other in centres) < 1e-6 for where in joints.values()):
+            return {joint: where + shift for joint, where in joints.items()}
+    raise AssertionError(f"no friction circles at {', '.join(joints)} on {key}")
 
 
 def test_the_driving_link_s_caption_gives_the_load_without_friction_and_the_efficiency(case):

@@ -34,7 +34,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from shapely.geometry import LineString, MultiPoint, Polygon
 from shapely.geometry import Point as ShapelyPoint
@@ -533,7 +533,8 @@ def _friction_moment_joints(sheet: ForceSheet) -> dict[str, str]:
 
 def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[Primitive], list[Anchor], list[str]]:
     """The friction circle of every journal of the group with friction, and the whole reaction of each outer
-    pair on the circle's tangent, on the side whose moment about the joint is the friction moment on the group.
+    pair on the circle's tangent, on the side whose moment about the joint is the friction moment on the group:
+    those the group finds, and those later groups found that act back on it (``R32``, with ``Mf32``).
 
     The reaction ``R23`` through the joint with the moment ``Mf23`` is one force
     ``R23`` shifted ρ across its line: ``cross(−i·û·ρ·sign Mf, R) = ρ·|R|·sign Mf``.
@@ -552,10 +553,17 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
                             _FRICTION_CIRCLE, fill=None))
     moments = {load.name: load.moment for load in group.loads if not load.is_force}
     split = {vector.name for vector in group.polygon.vectors}
-    for found in group.found:
+    # The outer pairs only (an inner reaction is not drawn on the group): the reactions the group finds, and those a
+    # later group found, which act back on the group's links on the same line (R32 = −R23, on R23's tangent).
+    outer = [found for found in group.found if found.source not in group.links]
+    outer += [replace(found, name=f"R{found.target}{found.source}", source=found.target, target=found.source,
+                      force=-found.force)
+              for found in sheet.forces.reactions.values()
+              if found.source in group.links and found.target not in group.links]
+    for found in outer:
         moment = moments.get(f"Mf{found.source}{found.target}", 0.0)
-        if found.source in group.links or moment == 0 or found.force == 0:
-            continue  # an inner reaction is not drawn on the group, nor one without friction
+        if moment == 0 or found.force == 0:
+            continue  # a reaction without friction has no tangent to lie on
         unit = found.force / abs(found.force)
         radius = drawn[frozenset((found.source, found.target))]
         touch = _c(paper(sheet.positions[found.joint])) - 1j * unit * math.copysign(radius, moment)
