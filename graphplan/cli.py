@@ -138,11 +138,11 @@ def _check(path: Path) -> int:
 def _print_outcomes(scene: Scene, analysis: Analysis | None) -> None:
     """The warnings ``run`` gives of its outcomes (a machine that stalls, a speed near resonance), which
     ``check`` gave none of: the dynamics integrated as the run integrates them."""
-    from .deliverables import MachineDynamics, chosen, outcome_warnings
+    from .deliverables import MachineDynamics, chosen, outcome_warnings, scale_warnings
 
     pieces = chosen(scene, analysis)
     dynamics = MachineDynamics(analysis if analysis is not None else scene) if "dynamics" in pieces else None
-    for told in outcome_warnings(scene, pieces, dynamics):
+    for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
         print(f"warning: {told}")
 
 

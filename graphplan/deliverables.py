@@ -600,6 +600,15 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     return found
 
 
+def scale_warnings(analysis: Analysis | None, pieces: tuple[str, ...]) -> list[str]:
+    """A line for each scale the scene gives that draws one of the drawings of ``pieces`` too small to read."""
+    if analysis is None or not {"positions", "velocity", "acceleration", "forces", "lever", "sheets"} & set(pieces):
+        return []
+    from .render.drawings import below_reading
+
+    return below_reading(analysis)
+
+
 def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[str]:
     """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
@@ -646,7 +655,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     explained = "note" in pieces and missing(scene, analysis, "dynamics") is None
     dynamics = _dynamics_of(scene, analysis, None) if "dynamics" in pieces or explained else None
     if warn is not None:
-        for told in outcome_warnings(scene, pieces, dynamics):
+        for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
             warn(told)
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     lever_scales: dict[str, float] = {}

@@ -376,6 +376,49 @@ def test_a_scale_that_draws_a_plan_or_polygon_larger_than_any_paper_is_refused_w
         shutil.rmtree(folder)
 
 
+@pytest.mark.parametrize("key, slip", [("length_scale", 1e3), ("velocity_pole", 1e-6), ("acceleration_pole", 1e-6),
+                                       ("velocity_scale", 1e5), ("force_scale", 1e12)])
+def test_a_scale_that_draws_a_figure_too_small_to_read_is_told_by_check_and_run(capsys, tmp_path, key, slip):
+    """μl = 1e3 for 1e-3 drew the mechanism as a dot under a pile of letters, μF = 1e12 polygons of 0.00 mm sides,
+    with no word from check or run (a scale drawing larger than any paper is refused).  Both tell it, naming the
+    key; the size they tell agrees with the positions' own extent over the scale, and the value they offer draws
+    the figure readably and is not told of."""
+    def scene(value: float) -> str:
+        document = copy.deepcopy(BASE)
+        document["drawing"][key] = value
+        if key == "velocity_scale":  # given instead of the pole distance, never with it
+            del document["drawing"]["velocity_pole"]
+        return to_toml(document)
+
+    path = tmp_path / "scene.toml"
+    path.write_text(scene(slip), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(path)]) == 0
+    told = [line for line in capsys.readouterr().out.splitlines() if line.startswith(f"warning: drawing.{key}: ")]
+    assert len(told) == 1 and "too small to read" in told[0], told
+    only = ("--only", "positions,velocity,acceleration,forces")
+    assert main(["run", str(path), "--out", str(tmp_path / "slip"), *only]) == 0
+    assert told[0] in capsys.readouterr().out.splitlines()
+    across = float(re.search(r"draws the [a-z ]+ ([0-9.e+-]+) mm across", told[0])[1])
+    offered = float(re.search(r"; (\S+) draws", told[0])[1])
+    path.write_text(scene(offered), encoding="utf-8")
+    assert main(["run", str(path), "--out", str(tmp_path / "offered"), *only]) == 0
+    assert "too small to read" not in capsys.readouterr().out
+    if key == "length_scale":
+        # The positions' own extent at μl, from results.json: no more than the paths' told (the paths run
+        # between the positions), and readable at the value offered.
+        def extent(folder: str, value: float) -> float:
+            positions = json.loads((tmp_path / folder / "results.json").read_text(encoding="utf-8"))["positions"]
+            points = [complex(*point["r"]) for position in positions for point in position["points"].values()]
+            return max(max(p.real for p in points) - min(p.real for p in points),
+                       max(p.imag for p in points) - min(p.imag for p in points)) / value
+        assert extent("slip", slip) <= across * (1 + 1e-6)
+        assert extent("offered", offered) > 0.1 * 200.0
+    elif key.endswith("_pole"):
+        # The pole's own vector (pa) is that many millimetres long, and a plan holds it.
+        assert slip <= across * (1 + 1e-6) and offered > 0.1 * 150.0
+
+
 def test_a_length_scale_that_would_draw_the_mechanism_kilometres_large_is_refused_before_drawing(capsys):
     """At μl = 1e-9 m/mm the hydraulic lever's guide would be 2e8 mm long, and its hatching, a stroke every
     2 mm, filled all the memory there was (found by the property test below); refused with the μl to give."""

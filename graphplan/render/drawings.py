@@ -30,6 +30,8 @@ POSITIONS_FIELD_MM = 200.0
 # No paper is longer (mm; a roll plotter's): a μl that draws the mechanism larger is a slip, refused before
 # anything is drawn, since the hatching along a guide alone would take all the memory there is.
 LARGEST_PAPER_MM = 5000.0
+# A figure the scene's scale draws under this share of its usual field is told of: unreadable, but asked for.
+READABLE_SHARE = 0.1
 # Standard scale factors tried above the first choice before a sheet is given up (each step ×1.25 at least).
 _LARGER_SCALES_TRIED = 40
 
@@ -113,6 +115,48 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
                              f"mm): give {format_scale(standard_scale(largest / POLYGON_FIELD_MM))} (the largest "
                              f"polygon {POLYGON_FIELD_MM:g} mm), or leave it out for the program to choose",
                              drawing.force_scale)
+
+
+def below_reading(analysis: Analysis) -> list[str]:
+    """A line for each scale the scene gives that draws its figures under a tenth of their usual size, where a
+    mechanism is a dot under its letters and a polygon's sides are a fraction of a millimetre (a slip of the
+    unit, as a μl of 1e3 for 1e-3): drawn as asked, but told, with the value that draws it at its usual size."""
+    drawing, told = analysis.scene.drawing, []
+    if drawing.length_scale is not None:
+        extent = paths_extent(analysis)
+        if extent / drawing.length_scale < READABLE_SHARE * POSITIONS_FIELD_MM:
+            told.append(f"drawing.length_scale: draws the paths of the points {extent / drawing.length_scale:.3g} mm "
+                        f"across, too small to read; {format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} draws a "
+                        f"{POSITIONS_FIELD_MM:g} mm plan of positions")
+    driver = analysis.mechanism.driver.joint
+    for kind in ("velocity", "acceleration"):
+        plans_of = [position.plans[kind] for position in analysis.plans if kind in position.plans]
+        if kind == "velocity":
+            plans_of += [position.velocity for position in analysis.velocity_plans]
+        drawn = [(spread(plan) / plan.scale, plan) for plan in plans_of if spread(plan) > 0.0]
+        if not drawn:
+            continue
+        across, plan = max(drawn, key=lambda pair: pair[0])
+        if across >= READABLE_SHARE * PLAN_FIELD_MM:
+            continue
+        fitting = spread(plan) / PLAN_FIELD_MM
+        if getattr(drawing, f"{kind}_scale") is not None:
+            key, fix = f"drawing.{kind}_scale", format_scale(standard_scale(fitting))
+        elif getattr(drawing, f"{kind}_pole") is not None:
+            key, fix = f"drawing.{kind}_pole", f"{max(1, math.floor(abs(plan.value(driver)) / fitting)):d}"
+        else:
+            continue
+        told.append(f"{key}: draws the largest {kind} plan {across:.3g} mm across, too small to read; {fix} draws it "
+                    f"{PLAN_FIELD_MM:g} mm")
+    if drawing.force_scale is not None:
+        largest = max((polygon_extent(group.polygon) for position in analysis.plans
+                       for found in (position.forces, position.with_friction) if found is not None and not found.locked
+                       for group in found.groups), default=0.0)
+        if 0.0 < largest / drawing.force_scale < READABLE_SHARE * POLYGON_FIELD_MM:
+            told.append(f"drawing.force_scale: draws the largest force polygon {largest / drawing.force_scale:.3g} mm "
+                        f"across, too small to read; {format_scale(standard_scale(largest / POLYGON_FIELD_MM))} draws it "
+                        f"{POLYGON_FIELD_MM:g} mm")
+    return told
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:
