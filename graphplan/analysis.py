@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
+from .cycle_work import CycleWork, cycle_work
 from .errors import AssemblyError, SceneError, SingularPositionError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
@@ -95,6 +96,8 @@ class Analysis:
     velocity_plans: tuple[VelocityPosition, ...] = ()
     # Where the friction locks the mechanism between two analysed positions that move.
     locked_spans: tuple[LockedSpan, ...] = ()
+    # The works over a crank's turn without and with the pairs' friction, and η over the cycle.
+    cycle: CycleWork | None = None
 
     def __repr__(self) -> str:
         # The dataclass's own repr ran to hundreds of thousands of characters.
@@ -203,6 +206,10 @@ def analyse(scene: Scene) -> Analysis:
             if friction:
                 with_friction = equilibrium(mechanism, motion, loads, friction)
     locked_spans = locked_between(mechanism, positions, friction, sweep, paths)
+    cycle = None
+    if with_friction is not None:
+        cycle = cycle_work(mechanism, positions, friction,
+                           locked_elsewhere=bool(with_friction.locked.any()) or bool(locked_spans))
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(scene, (*plans, *every))
@@ -213,7 +220,7 @@ def analyse(scene: Scene) -> Analysis:
                             key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
-                    loads, balance, with_friction, friction, every, locked_spans)
+                    loads, balance, with_friction, friction, every, locked_spans, cycle)
 
 
 def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:

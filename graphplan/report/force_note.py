@@ -1,6 +1,7 @@
 """The note's section on the force analysis: for each plan position the loads worked out (weights, d'Alembert's
 inertia forces and moments), each group's moment equations and force polygon, the reactions, the balancing
-load by the polygons and on Zhukovsky's lever, and the friction loads; then the balancing load over the cycle.
+load by the polygons and on Zhukovsky's lever, and the friction loads; then the balancing load over the cycle
+and, with friction, the efficiency over it.
 
 It is written by the note's own writer (:mod:`graphplan.report.note`), whose numbering, tables, language and
 plan letters it shares; the tables are those ``forces.md`` prints (:mod:`graphplan.report.forces`).
@@ -59,7 +60,8 @@ def forces_section(note: Writer, section: int) -> None:
         note.heading(3, note.t("note_cycle", load=load), f"{section}.{number}")
         note.captioned(note.t("note_cycle_table", load=load, name=name),
                        force_report.cycle_lines(note.analysis, note.mark))
-        for sentence in force_report.locked_between_lines(note.analysis, note.mark):
+        for sentence in [*force_report.locked_between_lines(note.analysis, note.mark),
+                         *force_report.cycle_efficiency_lines(note.analysis, note.mark)]:
             note.para(sentence)
         note.figure("balancing.svg", note.t("note_cycle", load=load))
 

@@ -5,7 +5,8 @@ Mu, G of every link, read off the plans), the moment equations with their
 arms, the reactions from the polygons against the linear system, the
 balancing load four ways (polygons, lever, linear system, power), and with
 friction its iterations and the efficiency.  Then the balancing load and the
-efficiency over the whole cycle.
+efficiency at every position of the cycle, and over the whole cycle: the driver's works with and without
+friction and their ratio.
 
 The rows are computed once here (:func:`initial_data`, :func:`reaction_rows`,
 :func:`balancing_rows`, :func:`cycle_rows`) and written by the ``*_lines``
@@ -277,6 +278,36 @@ def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:
     return lines
 
 
+def cycle_efficiency_lines(analysis: Analysis, mark: str = ".") -> list[str]:
+    """The driver's works over the cycle without and with friction and η over the cycle
+    (:mod:`graphplan.cycle_work`); where the friction locks the mechanism on the way, that there is none."""
+    cycle = analysis.cycle
+    if cycle is None:
+        return []
+    text = strings(analysis.scene.locale)
+    name, _ = balancing_symbol(analysis)
+    sign = -1.0 if cycle.loads_drive else 1.0   # what the loads give the driver, where they drive it
+
+    def write(value: float) -> str:
+        return number(sign * value, 6, mark)
+
+    values = {"name": name, "useful": write(cycle.without_friction), "driving": write(cycle.with_friction),
+              "friction": number(cycle.friction, 6, mark), "efficiency": number(cycle.efficiency, 4, mark)}
+    if cycle.locked:
+        key = "forces_cycle_efficiency_locked"
+        values["useful"] = number(cycle.without_friction, 6, mark)
+    elif cycle.without_friction == 0:
+        key = "forces_cycle_efficiency_idle"
+    elif not cycle.loads_drive:
+        key = "forces_cycle_efficiency"
+    elif math.isfinite(cycle.efficiency):
+        key = "forces_cycle_efficiency_reverse"
+    else:
+        key = "forces_cycle_efficiency_turned_round"
+        values["driving"] = number(cycle.with_friction, 6, mark)
+    return [text[key].format(**values)]
+
+
 def locked_between_lines(analysis: Analysis, mark: str = ".") -> list[str]:
     """A paragraph for each stretch between two positions where the friction locks the mechanism."""
     text = strings(analysis.scene.locale)
@@ -296,7 +327,8 @@ def markdown(analysis: Analysis) -> str:
             lines += _position(analysis, plan, text)
     if analysis.equilibrium is not None:
         lines += [f"## {text['forces_cycle']}", "", text["forces_cycle_intro"], "", *cycle_lines(analysis, mark), ""]
-        lines += [line for sentence in locked_between_lines(analysis, mark) for line in (sentence, "")]
+        sentences = [*locked_between_lines(analysis, mark), *cycle_efficiency_lines(analysis, mark)]
+        lines += [line for sentence in sentences for line in (sentence, "")]
     return "\n".join(lines) + "\n"
 
 
@@ -350,6 +382,7 @@ __all__ = [
     "balancing_lines",
     "balancing_rows",
     "balancing_symbol",
+    "cycle_efficiency_lines",
     "cycle_lines",
     "cycle_rows",
     "external_load_lines",

@@ -19,6 +19,7 @@ import numpy as np
 
 from .. import __version__
 from ..analysis import Analysis, PlanPosition, VelocityPosition
+from ..cycle_work import CycleWork
 from ..kinematics import as_xy, at
 from ..statics import efficiency
 
@@ -132,6 +133,8 @@ def results(analysis: Analysis) -> dict[str, Any]:
         working, idle = positions.stroke_turns(mechanism.driver.sense)
         document["strokes"] = {"working_deg": number(math.degrees(working)), "idle_deg": number(math.degrees(idle)),
                                "time_ratio": number(working / idle)}
+    if analysis.cycle is not None:
+        document["cycle_efficiency"] = _cycle_efficiency(analysis.cycle)
     document["positions"] = entries
     errors = analysis.errors
     if errors:
@@ -141,6 +144,15 @@ def results(analysis: Analysis) -> dict[str, Any]:
     document["warnings"] = [{"position": int(positions.numbers[w.position]), "code": w.code, "detail": w.detail}
                             for w in analysis.warnings]
     return document
+
+
+def _cycle_efficiency(cycle: CycleWork) -> dict[str, Any]:
+    """The driver's works over the cycle (J) and η over it; null with friction where the friction locks the
+    mechanism on the way, and η null where the friction takes all that loads driving the driver give."""
+    return {"work_without_friction": number(cycle.without_friction),
+            "work_with_friction": number(cycle.with_friction), "friction_work": number(cycle.friction),
+            "efficiency": number(cycle.efficiency), "loads_drive": cycle.loads_drive, "self_locking": cycle.locked,
+            "samples": cycle.samples}
 
 
 # The libraries whose arithmetic or geometry the numbers and drawings depend on.
