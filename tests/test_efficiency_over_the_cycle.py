@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import math
 
+import numpy as np
 import pytest
 from scipy.integrate import quad
 
@@ -128,6 +129,28 @@ def test_loads_that_drive_the_driver_give_the_efficiency_as_the_work_taken_off_o
     assert cycle.efficiency == pytest.approx(taken / given, rel=1e-7)
     sentence = force_report.cycle_efficiency_lines(analysis)[0]
     assert f"η = ∫Mb·dφ/∫Mb0·dφ = {force_report.number(taken / given, 4)}" in sentence
+
+
+def test_the_cycle_table_says_where_its_efficiency_is_the_reverse_ratio_and_where_it_is_not_defined():
+    """With P driving, the loads drive the crank all the working stroke, but within |sin(φ + β)| < ρ/r of the dead
+    centres the journal's friction takes more than P gives there: the driver must drive it (η′ ≤ 0)."""
+    analysis = analyse(scene_from_text(scene_text(DRIVING)))
+    phi = np.radians(7.5 + 15.0 * np.arange(24))
+    moments = np.array([driven_moment(angle) for angle in phi])
+    working = np.sin(phi) < 0
+    numbers = analysis.positions.numbers
+    reverse = ", ".join(str(numbers[i]) for i in np.flatnonzero(working & (moments < 0)))
+    held = ", ".join(str(numbers[i]) for i in np.flatnonzero(working & (moments > 0)))
+    assert held and reverse
+    notes = force_report.cycle_notes(analysis)
+    assert notes == [(f"At positions {reverse} the loads drive the driver (Mb0 and Mb against its motion): η there "
+                      "is the ratio Mb/Mb0."),
+                     (f"At positions {held} the loads would drive the mechanism, but the friction holds them and the "
+                      "driver has to drive it: the mechanism locks itself against its loads driving it (η′ ≤ 0), and η "
+                      "is not defined (—).")]
+    assert all(note in force_report.markdown(analysis) for note in notes)
+    # A press has neither: every position passes power on, or the loads take none.
+    assert force_report.cycle_notes(analyse(scene_from_text(scene_text(PRESSING)))) == []
 
 
 def test_a_load_that_takes_no_work_over_the_turn_leaves_the_friction_all_the_driver_s_work():

@@ -60,7 +60,8 @@ def forces_section(note: Writer, section: int) -> None:
         note.heading(3, note.t("note_cycle", load=load), f"{section}.{number}")
         note.captioned(note.t("note_cycle_table", load=load, name=name),
                        force_report.cycle_lines(note.analysis, note.mark))
-        for sentence in [*force_report.locked_between_lines(note.analysis, note.mark),
+        for sentence in [*force_report.cycle_notes(note.analysis),
+                         *force_report.locked_between_lines(note.analysis, note.mark),
                          *force_report.cycle_efficiency_lines(note.analysis, note.mark)]:
             note.para(sentence)
         note.figure("balancing.svg", note.t("note_cycle", load=load))

@@ -21,13 +21,15 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+import numpy as np
+
 from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..loads import motion_state
 from ..locale import strings
 from ..render.numerals import POWER_OF_TEN, power_of_ten
-from ..statics import balancing_by_power, efficiency
+from ..statics import balancing_by_power, delivers_power, efficiency, rounded_zero, turned_round
 
 # A rate or a load this small against the largest of its kind is the plan's rounding, not a value.
 ROUNDING = 1e-12
@@ -278,6 +280,28 @@ def cycle_lines(analysis: Analysis, mark: str = ".") -> list[str]:
     return lines
 
 
+def cycle_notes(analysis: Analysis) -> list[str]:
+    """What the cycle table's η column means where it is not Mb0/Mb: the positions where the loads drive the
+    driver (η = Mb/Mb0), and those where the friction turns that flow round (η′ ≤ 0, written —)."""
+    exact, rubbing = analysis.equilibrium, analysis.with_friction
+    if exact is None or rubbing is None:
+        return []
+    text = strings(analysis.scene.locale)
+    name, _ = balancing_symbol(analysis)
+    ideal = rounded_zero(exact.balancing, rubbing.balancing)
+    with np.errstate(invalid="ignore"):
+        moving = ~rubbing.locked & np.isfinite(ideal) & np.isfinite(rubbing.balancing)
+        held = moving & turned_round(analysis.mechanism, ideal, rubbing.balancing)
+        driven = moving & ~held & ~delivers_power(analysis.mechanism, ideal) & (ideal != 0)
+    numbers = analysis.positions.numbers
+    notes = []
+    for key, where in (("forces_cycle_reverse_ratio", driven), ("forces_cycle_turned_round", held)):
+        if where.any():
+            positions = text["enumeration"].join(str(numbers[index]) for index in np.flatnonzero(where))
+            notes.append(text[key].format(positions=positions, name=name))
+    return notes
+
+
 def cycle_efficiency_lines(analysis: Analysis, mark: str = ".") -> list[str]:
     """The driver's works over the cycle without and with friction and η over the cycle
     (:mod:`graphplan.cycle_work`); where the friction locks the mechanism on the way, that there is none."""
@@ -327,7 +351,7 @@ def markdown(analysis: Analysis) -> str:
             lines += _position(analysis, plan, text)
     if analysis.equilibrium is not None:
         lines += [f"## {text['forces_cycle']}", "", text["forces_cycle_intro"], "", *cycle_lines(analysis, mark), ""]
-        sentences = [*locked_between_lines(analysis, mark), *cycle_efficiency_lines(analysis, mark)]
+        sentences = [*cycle_notes(analysis), *locked_between_lines(analysis, mark), *cycle_efficiency_lines(analysis, mark)]
         lines += [line for sentence in sentences for line in (sentence, "")]
     return "\n".join(lines) + "\n"
 
@@ -384,6 +408,7 @@ __all__ = [
     "balancing_symbol",
     "cycle_efficiency_lines",
     "cycle_lines",
+    "cycle_notes",
     "cycle_rows",
     "external_load_lines",
     "external_loads",
