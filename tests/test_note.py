@@ -628,3 +628,20 @@ def test_a_slides_reaction_with_no_couple_is_said_to_pass_through_its_joint():
         assert offsets["R16"] == pytest.approx(0.0, abs=1e-9)
     assert "- ΣME(6) = R16·x = 0 ⇒ x = 0: the line of R16 passes through E" in note
     assert "⇒ R16·x = 0" not in note
+
+
+def test_a_chinese_note_s_friction_loads_join_their_formulas_with_the_full_width_semicolon():
+    """ρO = f·r and Mf12 = ρO·R12 (f′ and Ff of a slide) stood joined by a Latin "; " in the Chinese note, whose other
+    formulas the locale's "；" joins."""
+    from graphplan.scene import loads as scene_from_text
+    from graphplan.starters import starter
+
+    scene = scene_from_text(starter("shaper", "zh"))
+    note = note_markdown(analyse(scene))
+    journal = next(spec for spec in scene.friction if spec.radius is not None)
+    slide = next(spec for spec in scene.friction if spec.radius is None)
+    rubbing = [line for line in note.splitlines() if line.startswith(("- ρ", "- f′"))]
+    assert rubbing and not any("; " in line for line in rubbing)
+    rho = force_report.number(journal.f * journal.radius)
+    assert any(f"= {rho} m；Mf" in line for line in rubbing)
+    assert any(line.startswith(f"- f′{slide.joint} = {force_report.number(slide.f)}；Ff") for line in rubbing)

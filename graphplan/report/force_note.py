@@ -131,12 +131,12 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
             theta = pair.spec.groove_half_angle
             reduced = "" if theta is None else (
                 f" = f/sin θ = {note.n(pair.spec.f)}/sin {note.n(math.degrees(theta))}°")
-            lines.append(f"- f′{where}{reduced} = {note.n(pair.coefficient)}; {name} = "
+            lines.append(f"- f′{where}{reduced} = {note.n(pair.coefficient)}{text['semicolon']}{name} = "
                          f"f′{where}·{pair.reaction} = {note.product(note.n(pair.coefficient), note.n(reaction))}"
                          f" = {note.n(pair.coefficient * reaction)} {text['newton']}")
         else:
             lines.append(f"- ρ{where} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "
-                         f"{note.n(pair.radius)} {text['unit_m']}; {name} = "
+                         f"{note.n(pair.radius)} {text['unit_m']}{text['semicolon']}{name} = "
                          f"ρ{where}·{pair.reaction} = {note.product(note.n(pair.radius), note.n(reaction))} = "
                          f"{note.n(pair.radius * reaction)} {text['newton_metre']}")
     note.para(note.t("note_friction_loads"), *lines)
