@@ -152,3 +152,39 @@ def test_the_note_gives_the_run_s_own_reason_for_its_integrator(tmp_path, stall_
     assert value(said.group(1)) == pytest.approx(run_number, rel=5e-3)
     assert said.group(2) == (">" if stiff else "≤")
     assert ("an implicit method is taken" in note) == stiff
+
+
+@pytest.mark.parametrize("locale, words", [("en", "the friction in the pairs, which the force analysis takes in, is left out"),
+                                           ("ru", "трение в кинематических парах, учтённое в силовом расчёте, в них не входит"),
+                                           ("zh", "未计入力分析中考虑的运动副摩擦")])
+def test_the_dynamics_of_a_scene_with_friction_says_its_moments_leave_the_friction_out(tmp_path, locale, words):
+    """The shaper starter has [[friction]], but Mr, the works and the flywheel are reduced from its loads alone:
+    its works over the cycle are the driver's work without friction, ∫Mb0 dφ, not with it, ∫Mb dφ."""
+    import numpy as np
+
+    from graphplan.analysis import analyse
+    from graphplan.motion import solve
+    from graphplan.scene import load
+    from graphplan.starters import starter
+
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(starter("shaper", locale), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note,dynamics,forces"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert words in note and note.count(words) == 1
+    # The cutting force, 2000 N over 0.05 to 0.95 of the ram's stroke H, does 2000·0.9·H over the cycle.
+    analysis = analyse(load(scene))
+    ends = solve(analysis.mechanism, np.array(analysis.positions.extremes), analysis.positions.reference)
+    cutting = 2000.0 * 0.9 * abs(float(np.diff(ends.point("E").r[:, 0])[0]))
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    dynamics, cycle = results["dynamics"], results["cycle_efficiency"]
+    assert dynamics["driving_work"][-1] == pytest.approx(cutting, rel=1e-4)
+    assert cycle["work_without_friction"] == pytest.approx(cutting, rel=1e-8)
+    assert cycle["work_with_friction"] > cutting * 1.05 and not cycle["loads_drive"]
+    frictionless = tmp_path / "frictionless.toml"
+    # Each [[friction]] table of the starter runs to a blank line.
+    frictionless.write_text(re.sub(r"^\[\[friction\]\].*?\n\n", "", starter("shaper", locale), flags=re.MULTILINE | re.DOTALL),
+                            encoding="utf-8")
+    assert main(["run", str(frictionless), "--out", str(tmp_path / "bare"), "--only", "note,dynamics"]) == 0
+    assert words not in (tmp_path / "bare" / "note.md").read_text(encoding="utf-8")

@@ -56,6 +56,8 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     else:
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
                          count=len(model.coordinate)))
+        if note.scene.friction:   # the force analysis takes it in, and a reader would think these numbers do too
+            note.para(note.text["note_dyn_without_friction"])
     if model.plans:
         _reductions(note, model)
     if turning and model.constant in ("driving", "resisting"):
