@@ -85,7 +85,7 @@ def cycle_work(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fri
         without = 0.0
     locked = locked_elsewhere or bool(rubbing.locked.any())
     turn = float(sweep[-1] - sweep[0])   # ±2π: the works as mean balancing moments, signed as the driver turns
-    loads_drive = without * driver.sense < 0
+    loads_drive = without < 0   # summed along the motion, a work is the driver's whichever way it turns
     if locked:
         return CycleWork(without, math.nan, math.nan, True, loads_drive, len(sweep))
     work = _integral(rubbing.balancing, sweep)
