@@ -202,6 +202,9 @@ def test_results_forces_md_and_the_note_give_the_efficiency_over_the_cycle_in_ea
         assert main(["run", str(scene), "--out", str(out), "--only", "forces,note"]) == 0
         assert words in (out / "forces.md").read_text(encoding="utf-8")
         assert words in (out / "note.md").read_text(encoding="utf-8")
+        works = {"en": ("A", "u", "d", "f"), "ru": ("A", "пс", "дв", "тр"), "zh": ("W", "r", "d", "f")}[locale]
+        html = (out / "note.html").read_text(encoding="utf-8")
+        assert all(f"{works[0]}<sub>{index}</sub> = " in html for index in works[1:])
     written = results(analyse(scene_from_text(scene_text(PRESSING))))["cycle_efficiency"]
     assert written["work_without_friction"] == pytest.approx(useful, rel=1e-9)
     assert written["work_with_friction"] == pytest.approx(driving, rel=1e-7)

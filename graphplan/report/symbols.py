@@ -36,8 +36,9 @@ SYMBOL = re.compile(
     r"|(?P<base18>φ)(?P<index18>[wi]|р\.х|х\.х)|(?P<base19>R)(?P<index19>сист|пл)|(?P<base20>X)(?P<index20>а|пл)"
     r"|(?P<base21>f′|ρ)(?P<index21>[A-Z][A-Z0-9]*|\d+)"
     # The machine's dynamics: ΔWmax, Ad and Ar (in Chinese Wd and Wr), ωm, ωmax and ωmin, vS of a reduction; in
-    # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).
-    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>[AW])(?P<index14>[dr]|[дс])"
+    # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).  The efficiency over the cycle's
+    # works: Au, Ad, Af (Wr, Wd, Wf; Aпс, Aдв, Aтр).
+    r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>[AW])(?P<index14>[dfru]|[дс]|пс|дв|тр)"
     r"|(?P<base15>ω)(?P<index15>max|min|m|ср)|(?P<base16>v)(?P<index16>S)"
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
