@@ -216,3 +216,30 @@ def test_without_friction_there_is_no_efficiency_over_the_cycle_to_give():
     analysis = analyse(scene_from_text(scene_text(PRESSING, friction="")))
     assert analysis.cycle is None and force_report.cycle_efficiency_lines(analysis) == []
     assert "cycle_efficiency" not in results(analysis)
+
+
+def test_the_balancing_plot_shades_a_lock_and_keeps_its_axis_to_the_loads_that_move():
+    """f = 3.9 in the guide locks the piston for φ from 180° + e to 360° − e, sin e = (l/r)·sin(arctan 1/f): toward
+    the lock the moment with friction ran to 1e5 N·m on the axis and every other value lay flat on zero."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot
+
+    from graphplan.report.figures import LOCKED_REACH, _balancing_figure
+
+    f = 3.9
+    analysis = analyse(scene_from_text(scene_text(PRESSING, friction=f'[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = {f}')))
+    figure = _balancing_figure(analysis)
+    (plot,) = figure.axes
+    edge = math.degrees(math.asin(ROD / RADIUS * math.sin(math.atan(1.0 / f))))
+    (shade,) = [patch for patch in plot.patches if patch.get_label() == "self-locking"]
+    low, high = shade.get_x(), shade.get_x() + shade.get_width()
+    # From the first position (7.5°), to the half degree the sweep shades to.
+    assert (low, high) == pytest.approx((180.0 + edge - 7.5, 360.0 - edge - 7.5), abs=0.6)
+    phi = np.linspace(0.0, 2.0 * math.pi, 3601)
+    frictionless = [PUSH * RADIUS * abs(math.sin(angle + rod_angle(angle))) / math.cos(rod_angle(angle))
+                    for angle in phi if math.sin(angle) < 0]
+    bottom, top = plot.get_ylim()
+    assert max(frictionless) < top <= 1.1 * LOCKED_REACH * max(frictionless) and bottom < 0.0
+    pyplot.close(figure)

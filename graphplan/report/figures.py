@@ -52,6 +52,11 @@ def _balancing_figure(analysis: Analysis):
         rubbing = equilibrium(mechanism, sweep, loads, _friction(analysis, sweep))
         shown = np.where(rubbing.locked, np.nan, rubbing.balancing)
         plot.plot(along, shown, color="#a83a1f", linewidth=1.1, linestyle="--", label=text["diagram_friction"])
+        if rubbing.locked.any():
+            _locked_stretches(plot, along, rubbing.locked, text["diagram_locked"])
+            # Toward a lock the load with friction grows without bound (1e5 N·m beside 300): drawn to that, every
+            # other value lay flat on the axis.  The axis stops at a few times the load without friction.
+            _clipped(plot, ideal.balancing, shown)
     exact = analysis.equilibrium
     plot.plot(marks, exact.balancing, "o", color="#1f5fa8", markersize=3.5)
     for number, x, y in zip(positions.numbers, marks, exact.balancing, strict=True):
@@ -70,6 +75,29 @@ def _balancing_figure(analysis: Analysis):
     figure.tight_layout()
     with_decimal_mark(figure, text["decimal_mark"])
     return figure
+
+
+# How far past the largest balancing load without friction the axis runs where a lock sends the one with it off.
+LOCKED_REACH = 3.0
+
+
+def _locked_stretches(plot, along: np.ndarray, locked: np.ndarray, label: str) -> None:
+    """Each run of locked samples shaded, to halfway to the samples either side that move."""
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], locked.astype(int), [0]])))
+    for number, (first, last) in enumerate(zip(edges[::2], edges[1::2] - 1, strict=True)):
+        low = 0.5 * (along[max(first - 1, 0)] + along[first])
+        high = 0.5 * (along[last] + along[min(last + 1, len(along) - 1)])
+        plot.axvspan(low, high, color="#a83a1f", alpha=0.12, linewidth=0, label=label if number == 0 else None)
+
+
+def _clipped(plot, ideal: np.ndarray, rubbing: np.ndarray) -> None:
+    """The value axis over both curves as far as :data:`LOCKED_REACH` times the largest load without friction."""
+    reach = LOCKED_REACH * float(np.nanmax(np.abs(ideal)))
+    values = np.concatenate([ideal, rubbing])
+    values = values[np.isfinite(values) & (np.abs(values) <= reach)]
+    low, high = float(values.min()), float(values.max())
+    margin = 0.08 * (high - low)
+    plot.set_ylim(low - margin, high + margin)
 
 
 def _friction(analysis: Analysis, sweep):
