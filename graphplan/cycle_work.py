@@ -16,7 +16,6 @@ cycle, it does not run through a cycle, and there is no efficiency over it.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,7 +23,7 @@ from scipy.integrate import simpson, trapezoid
 
 from .joint_friction import FrictionPair
 from .kinematics import dot, unit
-from .loads import activity_at, link_loads, motion_state, sense_of_motion
+from .loads import SWITCH_TOLERANCE, activity_at, link_loads, motion_state, sense_of_motion, with_switches
 from .mechanism import Mechanism
 from .motion import Motion, solve
 from .positions import PositionSet
@@ -32,9 +31,6 @@ from .statics import efficiency, equilibrium
 
 # Steps of the driver's turn summed over, besides the places where the balancing load jumps.
 CYCLE_SAMPLES = 360
-# A switch is found by bisection to this share of the sweep's step: the sliver it leaves holds no work.
-SWITCH_TOLERANCE = 1e-12
-_MAX_BISECTIONS = 80
 # The driver's work without friction is none (no useful resistance, only inertia and weights) where it is this
 # share of ∫|Mb0| dφ: Simpson's rule over pieces cut at the switches leaves about 1e-9 of a zero at 1°.
 _ROUNDING_OF_ZERO = 1e-6
@@ -103,30 +99,6 @@ def _integral(values: np.ndarray, sweep: np.ndarray) -> float:
     return total + sum(float(trapezoid(values[cut - 1:cut + 1], sweep[cut - 1:cut + 1])) for cut in cuts)
 
 
-def with_switches(sweep: np.ndarray, state: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
-    """``sweep`` with the two sides of every place where ``state`` (an array of rows over driver coordinates)
-    changes between two samples put in, each found by bisection to :data:`SWITCH_TOLERANCE` of the step."""
-    now = state(sweep)
-    rows, steps = np.nonzero(now[:, :-1] != now[:, 1:])
-    if len(rows) == 0:
-        return sweep
-    low, high = sweep[steps].copy(), sweep[steps + 1].copy()
-    before = now[rows, steps]
-    tolerance = SWITCH_TOLERANCE * float(np.max(np.abs(np.diff(sweep))))
-    for _ in range(_MAX_BISECTIONS):
-        if np.all(np.abs(high - low) <= tolerance):
-            break
-        middle = 0.5 * (low + high)
-        # Rest is judged against the largest speed of the positions judged together: the middles beside the
-        # sweep, as the sweep with them in is judged after, not among a few positions all near rest.
-        same = state(np.concatenate([sweep, middle]))[rows, len(sweep) + np.arange(len(rows))] == before
-        low = np.where(same, middle, low)
-        high = np.where(same, high, middle)
-    # A side that falls on a sample is that sample (the same position, the same loads): kept once.
-    found = np.unique(np.concatenate([sweep, low, high]))
-    return found if sweep[-1] > sweep[0] else found[::-1]
-
-
 def _state(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
            values: np.ndarray) -> np.ndarray:
     """At each driver coordinate: which loads act, the sense each resisting load opposes and the sense each pair
@@ -169,4 +141,4 @@ def _senses(friction: tuple[FrictionPair, ...], motion: Motion) -> list[np.ndarr
     return [np.broadcast_to(sense, (motion.count,)) for sense in senses]
 
 
-__all__ = ["CYCLE_SAMPLES", "SWITCH_TOLERANCE", "CycleWork", "cycle_work", "with_switches"]
+__all__ = ["CYCLE_SAMPLES", "CycleWork", "cycle_work"]

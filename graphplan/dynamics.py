@@ -47,7 +47,7 @@ from numpy.typing import ArrayLike
 from scipy.integrate import cumulative_trapezoid, trapezoid
 
 from .kinematics import dot, norm2
-from .loads import State, activity, activity_at, link_loads, motion_state, plan_state, power
+from .loads import State, activity, activity_at, link_loads, motion_state, plan_state, power, with_switches
 from .mechanism import Mechanism, build
 from .motion import Motion, solve
 from .positions import PositionSet, make_positions
@@ -60,9 +60,6 @@ if TYPE_CHECKING:
 DEFAULT_COUNT = 360
 #: Which reduced moment is taken constant so that the work over the cycle balances.
 CONSTANT_CHOICES = ("auto", "driving", "resisting", "none")
-# A load window's ends are found by bisection to this share of the sweep's step.
-_SWITCH_TOLERANCE = 1e-12
-_MAX_BISECTIONS = 80
 
 
 @dataclass(frozen=True)
@@ -502,24 +499,7 @@ def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarr
     load changes all along its window: only where it starts and stops acting is a switch)."""
     if not mechanism.scene.loads:
         return sweep
-    acting = activity_at(mechanism, positions, sweep) > 0
-    rows, steps = np.nonzero(acting[:, :-1] != acting[:, 1:])
-    if len(rows) == 0:
-        return sweep
-    low, high = sweep[steps].copy(), sweep[steps + 1].copy()
-    before = acting[rows, steps]
-    tolerance = _SWITCH_TOLERANCE * float(np.max(np.abs(np.diff(sweep))))
-    for _ in range(_MAX_BISECTIONS):
-        if np.all(np.abs(high - low) <= tolerance):
-            break
-        middle = 0.5 * (low + high)
-        state = activity_at(mechanism, positions, middle)[rows, np.arange(len(rows))] > 0
-        same = state == before
-        low = np.where(same, middle, low)
-        high = np.where(same, high, middle)
-    # A side that falls on a sample is that sample (the same position, the same loads): kept once.
-    found = np.unique(np.concatenate([sweep, low, high]))
-    return found if sweep[-1] > sweep[0] else found[::-1]
+    return with_switches(sweep, lambda values: activity_at(mechanism, positions, values) > 0)
 
 
 def _full(value, count: int) -> np.ndarray:

@@ -14,7 +14,7 @@ the centre of mass, the inertia moment ``Mu = −J·ε`` on the link; weight is
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -30,6 +30,10 @@ from .positions import PositionSet, in_working_stroke
 # A speed this small against the cycle's largest is rest: a resisting load then opposes
 # the motion about to begin (the sense of the acceleration).
 _AT_REST = 1e-9
+# Where the loads switch (a window opens or closes, a resisting load's motion turns back), the bisection stops at
+# this share of the sweep's step: the sliver it leaves holds no work.
+SWITCH_TOLERANCE = 1e-12
+_MAX_BISECTIONS = 80
 
 
 class Turning(Protocol):
@@ -161,6 +165,30 @@ def activity_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray
         return activity(mechanism, positions, solve(mechanism, values, positions.reference, tolerant=tolerant))
     padded = np.concatenate([[positions.extremes[0]], values])
     return activity(mechanism, positions, solve(mechanism, padded, positions.reference, tolerant=tolerant))[:, 1:]
+
+
+def with_switches(sweep: np.ndarray, state: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
+    """``sweep`` with the two sides of every place where ``state`` (an array of rows over driver coordinates)
+    changes between two samples put in, each found by bisection to :data:`SWITCH_TOLERANCE` of the step."""
+    now = state(sweep)
+    rows, steps = np.nonzero(now[:, :-1] != now[:, 1:])
+    if len(rows) == 0:
+        return sweep
+    low, high = sweep[steps].copy(), sweep[steps + 1].copy()
+    before = now[rows, steps]
+    tolerance = SWITCH_TOLERANCE * float(np.max(np.abs(np.diff(sweep))))
+    for _ in range(_MAX_BISECTIONS):
+        if np.all(np.abs(high - low) <= tolerance):
+            break
+        middle = 0.5 * (low + high)
+        # Rest is judged against the largest speed of the positions judged together: the middles beside the
+        # sweep, as the sweep with them in is judged after, not among a few positions all near rest.
+        same = state(np.concatenate([sweep, middle]))[rows, len(sweep) + np.arange(len(rows))] == before
+        low = np.where(same, middle, low)
+        high = np.where(same, high, middle)
+    # A side that falls on a sample is that sample (the same position, the same loads): kept once.
+    found = np.unique(np.concatenate([sweep, low, high]))
+    return found if sweep[-1] > sweep[0] else found[::-1]
 
 
 def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
@@ -308,5 +336,5 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
     return total
 
 
-__all__ = ["Load", "Rates", "State", "activity", "at_rest", "has_loads", "link_loads", "load_at", "motion_state",
-           "plan_state", "power", "sense_of_motion"]
+__all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "has_loads",
+           "link_loads", "load_at", "motion_state", "plan_state", "power", "sense_of_motion", "with_switches"]
