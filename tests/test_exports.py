@@ -241,6 +241,7 @@ def test_layer_names_map_by_their_words():
     assert dxf_layer("velocity-curves") == CURVES
     assert dxf_layer("velocity-axes") == AXES
     assert dxf_layer("sheet-title") == SHEET
+    assert dxf_layer("title-block") == dxf_layer("title-block", Text((0.0, 0.0), "A")) == SHEET
     assert dxf_layer("mechanism-links", Text((0.0, 0.0), "A")) == TEXT
     assert dxf_layer("sheet-frame", Text((0.0, 0.0), "A")) == SHEET
     assert dxf_layer("odd name/x") == "ODD_NAME_X"
@@ -356,3 +357,36 @@ def test_dxf_is_the_same_every_time_and_written_to_paths_and_byte_streams(tmp_pa
     binary = io.BytesIO()
     layers_to_dxf(layers, binary)
     assert binary.getvalue().decode("utf-8") == first
+
+
+def svg_groups(svg: str, names: set[str]) -> tuple[Counter, int]:
+    """The texts of the SVG's groups ``names``, and how many lines and circles they draw, read off the SVG."""
+    from xml.etree import ElementTree
+
+    texts: Counter = Counter()
+    drawn = 0
+    for group in ElementTree.fromstring(svg).iter("{http://www.w3.org/2000/svg}g"):
+        if group.get("id") in names:
+            for element in group.iter():
+                tag = element.tag.rsplit("}", 1)[-1]
+                texts[" ".join(element.itertext())] += tag == "text"
+                drawn += tag in ("path", "circle", "line", "polyline", "polygon")
+    return +texts, drawn
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh", "en"])
+def test_dxf_puts_the_title_block_with_the_frame_on_sheet(locale):
+    """The title block's grid and words went to TEXT, the frame alone to SHEET (its group is ``title-block``, and
+    the last-word rule found 'block' nowhere), in every form: ESKD, GB/T and ISO 7200."""
+    from graphplan.render.sheet import kinematics_sheet
+    from graphplan.render.title_block import Details
+
+    details = Details(title="Crank-rocker", author="A. Student", checked_by="B. Teacher", designation="TMM.01.00",
+                      organization="University", date="2026-12-01")
+    (sheet,) = kinematics_sheet([list(plan_sheet_layers())], "A1", locale=locale, scale=0.002, details=details)
+    document, _ = read_back(sheet.layers)
+    texts, drawn = svg_groups(sheet.svg(), {"sheet-frame", "title-block"})
+    assert {"A. Student", "TMM.01.00", "2026-12-01"} <= set(texts)
+    space = document.modelspace()
+    assert Counter(entity.plain_text() for entity in space.query('TEXT[layer=="SHEET"]')) == texts
+    assert len(space.query('LWPOLYLINE CIRCLE[layer=="SHEET"]')) == drawn

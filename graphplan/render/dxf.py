@@ -77,14 +77,14 @@ _BAD_NAME = re.compile(r"[<>/\\\":;?*|=`,\s]")
 def dxf_layer(name: str, item: Primitive | None = None) -> str:
     """The DXF layer of a primitive in the graphplan layer ``name``.
 
-    A layer named ``sheet-…`` (the sheet's title, frame and title block) goes
-    whole to SHEET; any other text goes to TEXT; the rest goes where the last
+    The sheet's own layers, ``sheet-…`` (its title and frame) and ``title-block``,
+    go whole to SHEET; any other text goes to TEXT; the rest goes where the last
     word of ``name`` that :data:`LAYER_WORDS` knows sends it
     (``body-II-3-4-links`` → LINKS, ``lever-arm-Fu3`` → CONSTRUCTION).  A name
     with no known word keeps its own name, upper-cased, so nothing is lost.
     """
     words = name.lower().split("-")
-    if words[0] == "sheet":
+    if words[0] == "sheet" or name == "title-block":
         return SHEET
     if isinstance(item, Text):
         return TEXT
