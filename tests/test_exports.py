@@ -244,22 +244,30 @@ def test_layer_names_map_by_their_words():
     assert dxf_layer("title-block") == dxf_layer("title-block", Text((0.0, 0.0), "A")) == SHEET
     assert dxf_layer("mechanism-links", Text((0.0, 0.0), "A")) == TEXT
     assert dxf_layer("sheet-frame", Text((0.0, 0.0), "A")) == SHEET
+    assert dxf_layer("plane-L-reference") == CONSTRUCTION
     assert dxf_layer("odd name/x") == "ODD_NAME_X"
 
 
 def test_every_layer_of_the_drawings_has_a_known_dxf_layer():
+    from graphplan.dynamics import equivalent_model_of
+    from graphplan.flywheel import flywheel_for
     from graphplan.kinematic_diagrams import of_analysis
-    from graphplan.render import diagrams, forces, positions
+    from graphplan.render import balancing, diagrams, dynamics, forces, positions
+    from graphplan.rotor_balancing import BalancingSpec, RotatingMass, balance
 
     text = (FIXTURES / "shaper_six_bar.toml").read_text(encoding="utf-8")
     analysis = analyse(loads(text))
+    model = equivalent_model_of(analysis)
+    shaft = [RotatingMass(18, 0.05, 0, 0.0), RotatingMass(14, 0.06, -60, 0.08), RotatingMass(12, 0.06, -270, 0.28)]
     sheets = [positions.layout(drawings.positions_plan(analysis)), list(plan_sheet_layers()),
-              diagrams.layout(of_analysis(analysis))]
+              diagrams.layout(of_analysis(analysis)), dynamics.layout(model, flywheel_for(model, 0.05)),
+              balancing.layout(balance(BalancingSpec(shaft, planes=(0.04, 0.22), correction_radius=0.05)))]
     sheets += [forces.layout(drawings.force_sheet(analysis, p)) for p in analysis.plans if p.forces is not None]
     known = set(LAYER_WORDS.values()) | {SHEET, TEXT}
     for layers in sheets:
         for layer in layers:
             assert dxf_layer(layer.name) in known, layer.name
+            assert {dxf_layer(layer.name, item) for item in layer.items} <= known, layer.name
 
 
 @pytest.mark.parametrize("locale", [None, "zh"])
@@ -390,3 +398,30 @@ def test_dxf_puts_the_title_block_with_the_frame_on_sheet(locale):
     space = document.modelspace()
     assert Counter(entity.plain_text() for entity in space.query('TEXT[layer=="SHEET"]')) == texts
     assert len(space.query('LWPOLYLINE CIRCLE[layer=="SHEET"]')) == drawn
+
+
+def test_dxf_of_the_dynamics_takes_its_diagrams_apart_as_the_kinematic_diagrams_are_on_its_sheet_too():
+    """Each diagram of the dynamics is one layer of axes, curves and words: M(φ) went whole to VECTORS (its layer is
+    'moments', a word of the force sheets), the others to layers of their own names (ENERGY, WORKS; DYNAMICS-ENERGY
+    on the sheet).  Their axes go to AXES and their curves to CURVES, as in diagrams.dxf."""
+    from graphplan.dynamics import equivalent_model_of
+    from graphplan.flywheel import flywheel_for
+    from graphplan.render import dynamics
+    from graphplan.render.sheet import dynamics_panel, dynamics_sheet
+
+    model = equivalent_model_of(analyse(loads((FIXTURES / "shaper_six_bar.toml").read_text(encoding="utf-8"))))
+    layers = dynamics.layout(model, flywheel_for(model, 0.05))
+    (sheet,) = dynamics_sheet([dynamics_panel(layers, "en")], "A1")
+    found = []
+    for drawing in (layers, [layer for layer in sheet.layers if layer.name not in ("sheet-frame", "title-block")]):
+        document, _ = read_back(drawing)
+        space = document.modelspace()
+        assert {entity.dxf.layer for entity in space} == {AXES, CURVES, TEXT}
+        # Md, Mr, Ad, Ar, ΔT over the cycle, ΔT over Je and Je(φ): a vertex at each of the model's samples.
+        curves = [entity for entity in space.query("LWPOLYLINE") if len(entity) == len(model.coordinate)]
+        assert len(curves) == 7 and {entity.dxf.layer for entity in curves} == {CURVES}
+        grid = space.query('LWPOLYLINE[linetype=="GP-DASH-1-1"]')
+        assert len(grid) > 0 and {entity.dxf.layer for entity in grid} == {AXES}
+        found.append(Counter((entity.dxf.layer, entity.dxftype()) for entity in space))
+    standalone, on_the_sheet = found
+    assert standalone == on_the_sheet

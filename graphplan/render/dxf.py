@@ -1,8 +1,9 @@
 """The DXF backend: the same layers of primitives the SVG backend draws, written with ezdxf.
 
 Paper millimetres with y up are the DXF's own model space (``$INSUNITS`` =
-mm), so points are written as they are.  Each graphplan layer goes to one
-of a few DXF layers by :func:`dxf_layer`; each primitive becomes:
+mm), so points are written as they are.  Each graphplan layer (each primitive
+of a dynamics diagram) goes to one of a few DXF layers by :func:`dxf_layer`;
+each primitive becomes:
 
 * a :class:`~.primitives.Polyline`: an LWPOLYLINE, and a solid HATCH when it is filled;
 * a :class:`~.primitives.Circle`: a CIRCLE, and a solid HATCH when it is filled;
@@ -32,7 +33,7 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import IO
 
-from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide
+from .primitives import THIN, Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide
 
 # The DXF layers and the words of a graphplan layer's name that send it there.
 LINKS, CONSTRUCTION, VECTORS, TEXT, CURVES, AXES, SHEET = (
@@ -40,16 +41,20 @@ LINKS, CONSTRUCTION, VECTORS, TEXT, CURVES, AXES, SHEET = (
 LAYER_WORDS: dict[str, str] = {
     # the mechanism: links, blocks, pins, frame pivots; the lever's outline
     "links": LINKS, "positions": LINKS, "extremes": LINKS, "frame": LINKS, "plan": LINKS,
-    # thin lines: lines of action, arms, leaders, paths of points, pole rays and ordinates
+    # thin lines: lines of action, arms, leaders, paths of points, pole rays and ordinates; a balancing polygon's
+    # angle marks and the extension line they are measured from
     "lines": CONSTRUCTION, "arms": CONSTRUCTION, "arm": CONSTRUCTION, "leaders": CONSTRUCTION,
-    "paths": CONSTRUCTION, "rays": CONSTRUCTION, "friction": CONSTRUCTION,
+    "paths": CONSTRUCTION, "rays": CONSTRUCTION, "friction": CONSTRUCTION, "reference": CONSTRUCTION,
     # vectors and what marks them: plan vectors, forces, moments, senses of motion, plan points
     "vectors": VECTORS, "forces": VECTORS, "moments": VECTORS, "senses": VECTORS, "points": VECTORS,
-    # lettering
-    "labels": TEXT, "caption": TEXT, "title": TEXT,
+    # lettering; the dynamics' results written under its diagrams
+    "labels": TEXT, "caption": TEXT, "title": TEXT, "results": TEXT,
     # diagrams over the cycle
     "curves": CURVES, "legend": CURVES, "axes": AXES,
 }
+# The layers of the dynamics drawing (render/dynamics.py) as dynamics.dxf names them: each holds a whole diagram,
+# axes, curves and lettering together.  On a sheet they are named dynamics-….
+WHOLE_DIAGRAMS = frozenset({"moments", "works", "energy", "energy-mass", "inertia"})
 # Lineweight (1/100 mm), in the order the layers are created.
 LAYER_LINEWEIGHTS = {LINKS: 70, CONSTRUCTION: 25, VECTORS: 50, TEXT: 25, CURVES: 50, AXES: 35, SHEET: 50}
 
@@ -78,16 +83,24 @@ def dxf_layer(name: str, item: Primitive | None = None) -> str:
     """The DXF layer of a primitive in the graphplan layer ``name``.
 
     The sheet's own layers, ``sheet-…`` (its title and frame) and ``title-block``,
-    go whole to SHEET; any other text goes to TEXT; the rest goes where the last
-    word of ``name`` that :data:`LAYER_WORDS` knows sends it
-    (``body-II-3-4-links`` → LINKS, ``lever-arm-Fu3`` → CONSTRUCTION).  A name
-    with no known word keeps its own name, upper-cased, so nothing is lost.
+    go whole to SHEET; any other text goes to TEXT.  A diagram of the dynamics
+    drawing (:data:`WHOLE_DIAGRAMS`, ``dynamics-…`` on a sheet) is taken apart
+    as the kinematic diagrams are drawn: its arrows and thin lines (axes, ticks,
+    grid) to AXES, the rest (curves, their legend, the points marked on them,
+    the energy–mass diagram's tangents) to CURVES.  The rest goes where the last word of ``name`` that
+    :data:`LAYER_WORDS` knows sends it (``body-II-3-4-links`` → LINKS,
+    ``lever-arm-Fu3`` → CONSTRUCTION).  A name with no known word keeps its own
+    name, upper-cased, so nothing is lost.
     """
     words = name.lower().split("-")
     if words[0] == "sheet" or name == "title-block":
         return SHEET
     if isinstance(item, Text):
         return TEXT
+    if words[0] == "dynamics" or name in WHOLE_DIAGRAMS:
+        # Before the words: "moments" also names a force sheet's curved arrows, which are VECTORS.
+        thin = isinstance(item, Polyline) and item.stroke.width <= THIN.width
+        return AXES if isinstance(item, Arrow) or thin else CURVES
     for word in reversed(words):
         if word in LAYER_WORDS:
             return LAYER_WORDS[word]
