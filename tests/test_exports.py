@@ -425,3 +425,25 @@ def test_dxf_of_the_dynamics_takes_its_diagrams_apart_as_the_kinematic_diagrams_
         found.append(Counter((entity.dxf.layer, entity.dxftype()) for entity in space))
     standalone, on_the_sheet = found
     assert standalone == on_the_sheet
+
+
+def test_dxf_texts_are_read_back_as_written_whatever_codes_they_hold():
+    """%% opens a special character and a caret a control character in a TEXT: a title '50%%d' read as 50°, '^J' as
+    a line feed.  Each is escaped as the DXF reference says (ezdxf reads a trailing caret as nothing, and a TEXT
+    holds no line break, so neither is among them)."""
+    written = ["50%%d", "100%", "5 % of %%%", "%%123", "^J", "a^b^ c", "tab\there", r"x\P{y}", r"\U+00B0 and \M+1A2B3",
+               "%^%"]
+    document, _ = read_back([Layer("labels", tuple(Text((0.0, 5.0 * k), text) for k, text in enumerate(written)))])
+    read = [ezdxf.decode_dxf_unicode(entity.plain_text()) for entity in document.modelspace().query("TEXT")]
+    assert read == written
+    # A title block's lines, as the SVG has them.
+    from graphplan.render.sheet import kinematics_sheet
+    from graphplan.render.title_block import Details
+
+    details = Details(title='Rig "50%%d" ^J 100%', designation="TMM^01 %%c")
+    (sheet,) = kinematics_sheet([list(plan_sheet_layers())], "A1", locale="ru", scale=0.002, details=details)
+    document, _ = read_back(sheet.layers)
+    texts, _ = svg_groups(sheet.svg(), {"title-block"})
+    assert "TMM^01 %%c" in texts and any("50%%d" in text for text in texts)
+    space = document.modelspace()
+    assert Counter(ezdxf.decode_dxf_unicode(entity.plain_text()) for entity in space.query('TEXT[layer=="SHEET"]')) == texts

@@ -77,6 +77,12 @@ _BYLAYER = 256
 _PLINEGEN = 128
 # Characters a DXF layer name may not hold.
 _BAD_NAME = re.compile(r"[<>/\\\":;?*|=`,\s]")
+# What a CAD program reads in a TEXT as a code, not as the characters written: two percent signs open a special
+# character (%%d is °, %%c ⌀), a caret a control character (^J a line feed), \U+xxxx and \M+nxxxx a character by
+# its number.
+_PERCENTS = re.compile(r"%{2,}")
+_CARET_OR_CONTROL = re.compile(r"[\x00-\x1f^]")
+_CHARACTER_CODE = re.compile(r"\\(?=[UuMm]\+)")
 
 
 def dxf_layer(name: str, item: Primitive | None = None) -> str:
@@ -223,7 +229,8 @@ class _Writer:
         attributes = {"layer": layer, "style": style, **_colour_attributes(item.colour)}
         align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
                  "end": TextEntityAlignment.RIGHT}[item.anchor]
-        self._space.add_text(item.text, height=item.size, dxfattribs=attributes).set_placement(item.at, align=align)
+        self._space.add_text(_escaped(item.text), height=item.size,
+                             dxfattribs=attributes).set_placement(item.at, align=align)
 
     def _linetype(self, dash: tuple[float, ...]) -> str:
         name = "GP-DASH-" + "-".join(f"{d:g}" for d in dash)
@@ -234,6 +241,20 @@ class _Writer:
             self._document.linetypes.add(name, pattern=[sum(pattern), *elements],
                                          description="graphplan " + " ".join(f"{d:g}" for d in dash))
         return name
+
+
+def _escaped(text: str) -> str:
+    """``text`` as a TEXT's content that a CAD program reads as ``text`` (a title ``50%%d`` read as 50°).
+
+    As the DXF reference writes them: a percent sign as %%% wherever two or more
+    stand together (one alone is read as itself, and stays readable to a program
+    that knows no codes), a caret as a caret and a space, a control character as
+    a caret and its letter (a tab ^I); a backslash before U+ or M+ as its own
+    code, \\U+005C.
+    """
+    text = _PERCENTS.sub(lambda run: "%%%" * len(run.group()), text)
+    text = _CARET_OR_CONTROL.sub(lambda c: "^ " if c.group() == "^" else "^" + chr(ord(c.group()) + 64), text)
+    return _CHARACTER_CODE.sub(r"\\U+005C", text)
 
 
 def _filled(fill: str | None) -> bool:
