@@ -168,7 +168,7 @@ def _run(arguments: argparse.Namespace) -> int:
     import dataclasses
 
     from .analysis import analyse
-    from .deliverables import check_formats, chosen, files
+    from .deliverables import check_formats, chosen, files, missing
     from .output import write_folder
     from .scene import load
 
@@ -181,10 +181,12 @@ def _run(arguments: argparse.Namespace) -> int:
     if arguments.sheet is not None:  # as if the scene named it: the sheets are drawn unasked
         scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, sheet=arguments.sheet,
                                                                        sheet_given=True))
-    progress.say("analysing the mechanism")
+    progress.say("analysing the mechanism" if scene.has_linkage else "analysing the machine")
     analysis = analyse(scene) if scene.has_linkage else None
     only = arguments.only
     if arguments.figures:
+        if (reason := missing(scene, analysis, "figures")) is not None:
+            raise SceneError("--figures", f"'figures' {reason}")
         only = [*(only if only is not None else chosen(scene, analysis)), "figures"]
     pieces = chosen(scene, analysis, only)
     progress.say("drawing and writing the tables")

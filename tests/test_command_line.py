@@ -291,3 +291,18 @@ def test_a_run_will_not_replace_the_folder_it_runs_in(tmp_path, capsys, monkeypa
         assert main(["run", "ratchet.toml", "--out", out, "--only", "errors"]) == 2
         assert "is the folder the command runs in (or holds it)" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["ratchet.toml"]
+
+
+@pytest.mark.parametrize("kind", ["rotor", "flywheel"])
+def test_figures_of_a_machine_without_a_mechanism_are_refused_naming_the_flag_given(tmp_path, capsys, kind):
+    """--figures on a rotor's scene said "--only[3]: 'figures' needs a mechanism", naming an option never typed;
+    it names --figures, and writes nothing, as any refused run."""
+    from graphplan.starters import starter
+
+    scene = tmp_path / f"{kind}.toml"
+    scene.write_text(starter(kind), encoding="utf-8")
+    capsys.readouterr()
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--figures"]) == 2
+    error = capsys.readouterr().err.strip().splitlines()
+    assert error == ["graphplan: error: --figures: 'figures' needs a mechanism: the scene has no [frame] and [driver]"]
+    assert not (tmp_path / "out").exists()
