@@ -638,3 +638,119 @@ def test_a_clutch_run_down_goes_on_until_the_machine_stops_and_reports_the_lock(
     assert motion["stopped_at"] == pytest.approx(locked + 6.0 * speed / 1.0, rel=1e-6)
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert f"slip until t = {locked:.3g} s and turn together from then on at ω = {speed:.5g} rad/s" in note
+
+
+# --- a clutch that cannot pass the resistance's peaks, or not even its run ------------------------------------
+# A light machine behind a heavy motor rotor: locked, the clutch passes (J·Md + Jd·Mr)/(J + Jd), nearly Mr itself.
+SWINGING = 2.0 * np.pi * np.arange(720) / 720
+
+
+def swinging_load(mean: float, swing: float) -> np.ndarray:
+    return mean + swing * np.sin(SWINGING)
+
+
+def test_a_clutch_that_slips_at_every_peak_of_the_steady_turn_loses_its_slip_energy_per_turn():
+    """Mr = 40 + 35·sin φ on J = 0.2 kg·m², a linear motor (200 N·m, 30 rad/s) on Jd = 2 kg·m², a 60 N·m clutch:
+    locked at the peak it would have to pass (0.2·40 + 2·75)/2.2 ≈ 72 N·m, so it slips and locks again every turn.
+    Started at 24 rad/s, near where the motor meets the mean load (from rest the clutch stalls it at the first
+    peak).  The steady turn's loss, Tc·∫(ωd − ω)dt over its slips, by an integration of the two phases written
+    here."""
+    from scipy.integrate import solve_ivp
+
+    j, jd, tc, stall, no_load = 0.2, 2.0, 60.0, 200.0, 30.0
+
+    def mr(phi):
+        return 40.0 + 35.0 * math.sin(phi)
+
+    def md(speed):
+        return stall * (1.0 - speed / no_load)
+
+    def locked_torque(y):  # what the clutch passes with both halves turning as one
+        return md(y[1]) - jd * (md(y[1]) - mr(y[0])) / (j + jd)
+
+    def locked(t, y):
+        a = (md(y[1]) - mr(y[0])) / (j + jd)
+        return [y[1], a, a, 0.0]
+
+    def slipping(t, y):
+        return [y[1], (tc - mr(y[0])) / j, (md(y[2]) - tc) / jd, y[2] - y[1]]
+
+    def slips(t, y):
+        return tc - locked_torque(y)
+
+    def catches(t, y):
+        return y[2] - y[1]
+
+    slips.terminal = catches.terminal = True
+    slips.direction = catches.direction = -1
+    t, y, pieces, end = 0.0, np.array([0.0, 24.0, 24.0, 0.0]), [], 10.0
+    phase = "slipping" if locked_torque(y) > tc else "locked"
+    while t < end:
+        rates, event = (locked, slips) if phase == "locked" else (slipping, catches)
+        solved = solve_ivp(rates, (t, end), y, method="DOP853", rtol=1e-11, atol=1e-12, events=event,
+                           dense_output=True)
+        pieces.append(solved)
+        t, y = solved.t[-1], solved.y[:, -1].copy()
+        if solved.status == 1 and phase == "locked":
+            phase = "slipping"   # the torque it must pass has just risen to its capacity
+        elif solved.status == 1:
+            y[1] = y[2] = (j * y[1] + jd * y[2]) / (j + jd)
+            phase = "slipping" if locked_torque(y) > tc else "locked"
+
+    def state(at):
+        return next(piece.sol(at) for piece in pieces if piece.t[0] <= at <= piece.t[-1])
+
+    turns = math.floor(y[0] / (2 * math.pi))
+    first = brentq(lambda s: state(s)[0] - 2 * math.pi * (turns - 1), end - 2.0, end, xtol=1e-13)
+    last = brentq(lambda s: state(s)[0] - 2 * math.pi * turns, end - 2.0, end, xtol=1e-13)
+    per_turn = tc * (state(last)[3] - state(first)[3])
+    assert per_turn > 0.1
+
+    motion = simulate(Machine(j, resisting=swinging_load(40.0, 35.0)), LinearMotor(stall, no_load, rotor_inertia=jd),
+                      clutch=Clutch(tc), start=Start(omega=24.0), rtol=1e-10, steady_tolerance=1e-7)
+    assert motion.steady is not None
+    assert motion.steady_slip_energy == pytest.approx(per_turn, rel=1e-4)
+    assert motion.steady.period == pytest.approx(last - first, rel=1e-6)
+    # What it lost before the steady state, not a total that grows with every turn the run happened to take.
+    assert motion.slip_energy == pytest.approx(tc * state(motion.steady.reached_at)[3], rel=1e-4)
+
+
+def test_a_clutch_too_weak_for_the_load_stalls_the_machine_and_the_run_ends_there():
+    """Mr = 20 + 35·sin φ, a 30 N·m clutch slipping from the start, its driving half held at 90 rad/s by a motor
+    that gives the clutch's torque there: the machine obeys J·dω/dt = Tc − Mr alone, so ½·J·ω² = 10·φ −
+    35·(1 − cos φ), and it stalls where that is nought again.  The run went on to its 2000 turns' time."""
+    j, tc, speed = 2.0, 30.0, 90.0
+    where = brentq(lambda phi: (tc - 20.0) * phi - 35.0 * (1.0 - math.cos(phi)), 0.1, math.pi)
+    took = quad(lambda phi: 1.0 / math.sqrt(max((tc - 20.0) * phi - 35.0 * (1.0 - math.cos(phi)), 1e-300) * 2 / j),
+                0.0, where, limit=200)[0]
+    motor = LinearMotor(300.0, 100.0, rotor_inertia=1.0)   # 300·(1 − 90/100) = 30 N·m at the driving half's speed
+    motion = simulate(Machine(j, resisting=swinging_load(20.0, 35.0)), motor, clutch=Clutch(tc),
+                      start=Start(driving_omega=speed), rtol=1e-10)
+    assert motion.stalled_at is not None and motion.t[-1] == motion.stalled_at
+    assert motion.phi[-1] == pytest.approx(where, abs=1e-6)
+    assert motion.stalled_at == pytest.approx(took, rel=1e-4)
+    assert motion.stalled_slipping
+    assert motion.slip_energy == pytest.approx(tc * (speed * took - where), rel=1e-4)
+
+
+def test_a_constant_motor_above_the_mean_resistance_but_below_its_peak_stalls_from_rest_and_is_not_refused():
+    """45 N·m against Mr = 40 + 35·sin φ: above the mean, so each whole turn gains 2π·5 J, but from rest the
+    machine's energy 5·φ − 35·(1 − cos φ) runs out at once.  It was refused as speeding up without end."""
+    machine = Machine(2.0, resisting=swinging_load(40.0, 35.0))
+    where = brentq(lambda phi: 5.0 * phi - 35.0 * (1.0 - math.cos(phi)), 0.1, math.pi)
+    motion = simulate(machine, ConstantTorque(45.0), rtol=1e-10)
+    assert motion.stalled_at is not None and motion.phi[-1] == pytest.approx(where, abs=1e-6)
+    # Started fast enough to pass the deepest deficit of its first turn, it does speed up without end.
+    deficit = -minimize_scalar(lambda phi: 5.0 * phi - 35.0 * (1.0 - math.cos(phi)), bounds=(0.0, 2 * math.pi),
+                               method="bounded").fun
+    with pytest.raises(ValueError, match="speeds up without end"):
+        simulate(machine, ConstantTorque(45.0), start=Start(omega=1.01 * math.sqrt(deficit)))
+    assert simulate(machine, ConstantTorque(45.0), start=Start(omega=0.99 * math.sqrt(deficit))).stalled_at is not None
+
+
+def test_the_mean_resistance_a_runaway_is_refused_against_is_the_integral_over_the_turn():
+    """Mr = 100·|sin φ| in 360 samples, kinked at 0 and π: its mean is 200/π = 63.662 N·m; on 64 equal steps it
+    read 63.61."""
+    machine = Machine(2.0, resisting=100.0 * np.abs(np.sin(2.0 * np.pi * np.arange(360) / 360)))
+    with pytest.raises(ValueError, match=r"exceeds the mean resistance, 63\.66\d* N·m"):
+        simulate(machine, ConstantTorque(70.0), start=Start(omega=20.0))

@@ -310,13 +310,31 @@ class Integrator:
         return counted
 
     def held_at_rest(self) -> bool:
-        """Whether the machine, turning as one body, is at rest and held there: the motor switched off or too
-        weak to move it at this angle.  Nothing more will happen then, since no later switch (a brake, the
-        motor off) drives it harder and a body at rest keeps its angle."""
-        if self.phase not in (RIGID, LOCKED) or self.y[1] > 0.0:
+        """Whether the machine is at rest and held there for good: turning as one body, the motor switched off
+        or too weak to move it at this angle; or, its clutch slipping forward, the clutch's capacity too small
+        to move it while the motor keeps the driving half turning.  Nothing more will happen then, since no later
+        switch (a brake, the motor off) drives it harder and a body at rest keeps its angle."""
+        if self.y[1] > 0.0:
+            return False
+        if self.phase == SLIP_FORWARD:
+            return self._held_by_slipping_clutch()
+        if self.phase not in (RIGID, LOCKED):
             return False
         self.eq.settle(self.phase, self.t, self.y)
         return self.eq.machine_held
+
+    def _held_by_slipping_clutch(self) -> bool:
+        """The machine at rest against a clutch that slips at its capacity and will go on slipping: the driving
+        half, ``J·dω_d/dt = Md(ω_d) − Tc``, slows down no further than the fastest speed below its own at which
+        the motor gives the capacity or more (a speed the flow cannot pass), so while there is one above zero
+        it never comes down to the machine's rest to lock.  Its own speed alone would not do: it settles where
+        Md = Tc, which its rounding puts a hair either side."""
+        eq = self.eq
+        eq.settle(self.phase, self.t, self.y)
+        if not (eq.machine_held and eq.motor_on(self.t)):
+            return False
+        speeds = self.y[2] * np.linspace(0.0, 1.0, 257)[1:]
+        return any(eq.driving(self.t, speed) >= eq.clutch.torque for speed in speeds)
 
     def _finish_if_held_at_rest(self) -> None:
         self.finished = self.held_at_rest()

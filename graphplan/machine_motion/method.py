@@ -8,9 +8,10 @@ import numpy as np
 from scipy.integrate import RK45
 from scipy.optimize import brentq
 
-from .drive import REST, Motor, Start
+from .drive import REST, Clutch, Motor, Start
 from .integrator import Equations
-from .shaft import TWO_PI, Machine
+from .moment import PiecewiseMoment
+from .shaft import TWO_PI, Machine, periodic_spline
 
 # Above this value of (largest decay rate |∂f/∂ω|) × (the step RK45 takes for accuracy) the explicit
 # step would be held by stability instead: Dormand–Prince's RK45 is stable on the negative real
@@ -18,6 +19,10 @@ from .shaft import TWO_PI, Machine
 STIFFNESS_THRESHOLD = 3.0
 # The angles over a turn at which the mean resistance and inertia are taken.
 _TURN = np.linspace(0.0, TWO_PI, 64, endpoint=False)
+# The angles over a turn at which a resistance given as a function is averaged, and the work it takes summed, for
+# a verdict on a runaway: a reduced moment has kinks at the dead centres (a load switched on where the speed is
+# nought), where 64 equal steps missed the mean by 1e-3 of it.
+_FINE_TURN = np.linspace(0.0, TWO_PI, 4096, endpoint=False)
 
 
 def _over_a_turn(function: Callable[[float], float]) -> float:
@@ -76,13 +81,34 @@ def speeds_up_without_end(machine: Machine, motor: Motor) -> tuple[float, float]
     return motor.shaft_torque(fastest), motor.shaft_torque(fastest) - surplus(fastest)
 
 
-def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = True) -> None:
+def stalls_in_its_first_turn(machine: Machine, motor: Motor, start: Start = REST) -> bool:
+    """Whether a machine whose resistance depends on the angle alone, driven through a rigid drive by a motor of
+    constant torque, comes to rest within its first turn from ``start``.
+
+    The equation of motion is d(½·(Je + Jrotor)·ω²)/dφ = Md − Mr(φ): the kinetic energy at the start plus the
+    work of Md − Mr from there must stay above nought.  Where the work over a turn is a surplus, every later turn
+    starts with more energy than this one did, so a machine that passes its first turn never stalls."""
+    phi0 = start.angle
+    angles = phi0 + np.append(_FINE_TURN, TWO_PI)
+    surplus = np.array([motor.shaft_torque(0.0) - machine.mr(phi, 0.0) for phi in angles])
+    work = np.concatenate(([0.0], np.cumsum(0.5 * (surplus[1:] + surplus[:-1]) * np.diff(angles))))
+    energy = 0.5 * (machine.je(phi0) + motor.reduced_inertia) * start.omega ** 2
+    return bool(energy + np.min(work[1:]) <= 0.0) or (start.omega == 0.0 and surplus[0] <= 0.0)
+
+
+def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = True, start: Start = REST,
+                   clutch: Clutch | None = None) -> None:
     """Raise :class:`ValueError` where a run goes on ``to_the_steady_state`` (no duration, brake or switching off
     ends it) and the motor outpulls the resistance at every speed (:func:`speeds_up_without_end`): it would
-    never end."""
+    never end.  A motor that outpulls the mean resistance but not its peaks may stall from ``start`` before it
+    gains the speed to carry the machine past them (:func:`stalls_in_its_first_turn`): that run ends at the
+    stall, and is not refused."""
     if not to_the_steady_state:
         return
     outpulled = speeds_up_without_end(machine, motor)
+    of_the_angle = machine.moment is not None or not callable(machine.resisting)
+    if outpulled is not None and clutch is None and of_the_angle and stalls_in_its_first_turn(machine, motor, start):
+        return
     if outpulled is not None:
         raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "
                          f"{outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and has no "
@@ -93,16 +119,29 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
 def _mean_surplus(machine: Machine, motor: Motor):
     """The motor's torque less the resistance's mean over a turn, as a function of the speed (N·m).
 
-    A resistance with jumps depends on the angle alone and is integrated piece by piece; a smooth
-    periodic one is averaged over equal steps, which the trapezoidal rule integrates to the rounding."""
-    pieces = machine.moment
-    if pieces is not None:
-        mean = pieces.mean()
+    A resistance with jumps depends on the angle alone and is integrated piece by piece, and samples over
+    the turn through the periodic spline the machine takes them by; a function of the angle and speed is
+    averaged over :data:`_FINE_TURN`'s equal steps."""
+    resisting = machine.resisting
+    if isinstance(resisting, PiecewiseMoment) or not callable(resisting):
+        mean = mean_resistance(machine)
         return lambda omega: motor.shaft_torque(omega) - mean
 
     def surplus(omega: float) -> float:
-        return motor.shaft_torque(omega) - _over_a_turn(lambda phi: machine.mr(phi, omega))
+        return motor.shaft_torque(omega) - float(np.mean([machine.mr(phi, omega) for phi in _FINE_TURN]))
     return surplus
+
+
+def mean_resistance(machine: Machine) -> float:
+    """The mean over a turn of a resistance that depends on the angle alone, N·m: integrated exactly as the
+    machine takes it (piece by piece where it jumps, the periodic spline through samples)."""
+    resisting = machine.resisting
+    if isinstance(resisting, PiecewiseMoment):
+        return resisting.mean()
+    values = np.asarray(resisting, dtype=float)
+    if values.ndim == 0:
+        return float(values)
+    return float(periodic_spline(values).integrate(0.0, TWO_PI)) / TWO_PI
 
 
 def is_stiff(stiffness: float) -> bool:

@@ -37,9 +37,12 @@ class MachineMotion:
     ``t``, ``phi``, ``omega`` are at the solver's steps (a step is repeated where the state jumps,
     as when the clutch locks); :meth:`state_at` interpolates between them.  ``driving_omega`` is
     the clutch's driving half (None without a clutch), ``motor_torque`` the motor's torque on the
-    shaft at the steps, ``slip_energy`` the work lost in the clutch (J).  ``stopped_at`` is when the
+    shaft at the steps, ``slip_energy`` the work lost in the clutch (J) up to the steady state, or over the
+    whole run where it reaches none, and ``steady_slip_energy`` the work it loses in the steady turn (0 where
+    it stays locked through it; None without a clutch or a steady state).  ``stopped_at`` is when the
     machine came to rest for good, and ``stalled_at`` the same time when the motor was still on: it
-    could not carry the machine past the resistance there (``phi[-1]``), and the run ends at it.
+    could not carry the machine past the resistance there (``phi[-1]``), and the run ends at it (where the
+    clutch still slips then, its capacity fell short, :attr:`stalled_slipping`).
     """
 
     t: np.ndarray
@@ -56,6 +59,7 @@ class MachineMotion:
     stopped_at: float | None
     stalled_at: float | None
     slip_energy: float
+    steady_slip_energy: float | None
     nfev: int
     njev: int
     nlu: int
@@ -71,6 +75,18 @@ class MachineMotion:
     def stalled_at_angle_deg(self) -> float | None:
         """Where the machine stalled: the driving shaft's angle within its turn (degrees); None if it did not."""
         return None if self.stalled_at is None else math.degrees(float(self.phi[-1])) % 360.0
+
+    @property
+    def turned(self) -> bool:
+        """Whether the driving shaft turned at all in the run (one that never starts keeps its angle)."""
+        return bool(np.any(self.phi != self.phi[0]))
+
+    @property
+    def stalled_slipping(self) -> bool:
+        """Whether the clutch slipped as the machine stalled: its capacity, not the motor, fell short of the
+        resistance."""
+        return self.stalled_at is not None and self.driving_omega is not None and \
+            float(self.driving_omega[-1]) > float(self.omega[-1])
 
     def state_at(self, times: ArrayLike) -> np.ndarray:
         """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
@@ -150,7 +166,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         raise ValueError("start.driving_omega: only with a clutch")
     if isinstance(max_cycles, bool) or not isinstance(max_cycles, int) or max_cycles < 3:
         raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
-    refuse_runaway(machine, motor, duration is None and brake is None and motor_off_at is None)
+    refuse_runaway(machine, motor, duration is None and brake is None and motor_off_at is None, start, clutch)
     equations = Equations(machine, motor, brake, clutch, motor_off_at)
     omega_run = running_speed(machine, motor, start, duration)
     atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)
@@ -218,7 +234,17 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     speed_row = 2 if clutch is not None else 1
     torque = np.array([motor.shaft_torque(speed) if equations.motor_on(ti) else 0.0
                        for ti, speed in zip(t, y[speed_row], strict=True)])
-    slip_energy = clutch.torque * float(y[3, -1]) if clutch is not None else 0.0
+    slip_energy, steady_slip_energy = 0.0, None
+    if clutch is not None:
+        slip_energy = clutch.torque * float(y[3, -1])
+        if steady is not None:
+            # A clutch that cannot pass the resistance's peaks slips and locks again every turn for as long as the
+            # run goes on: the total to the run's end says only where it stopped.  The start-up's loss ends
+            # where the steady state begins, and the steady turn's own loss is given apart.
+            cycle = steady.cycle
+            slipped = dense(np.array([steady.reached_at, cycle.start, cycle.start + cycle.period]))[3]
+            slip_energy = clutch.torque * float(slipped[0])
+            steady_slip_energy = clutch.torque * float(slipped[2] - slipped[1])
     stops = [when for when, name in integrator.events if name == "stopped"]
     stopped_at = stops[-1] if stops and y[1, -1] == 0.0 else None
     stalled_at = start.time if never_starts else (
@@ -227,8 +253,8 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
                          motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
                          stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
                          stalled_at=stalled_at,
-                         slip_energy=slip_energy, nfev=integrator.nfev, njev=integrator.njev, nlu=integrator.nlu,
-                         notes=tuple(notes), _dense=dense)
+                         slip_energy=slip_energy, steady_slip_energy=steady_slip_energy, nfev=integrator.nfev,
+                         njev=integrator.njev, nlu=integrator.nlu, notes=tuple(notes), _dense=dense)
 
 
 def _after(cycles: tuple[Cycle, ...], moment: float) -> tuple[Cycle, ...]:

@@ -29,6 +29,9 @@ class MotionSpec:
     brake: Brake | None = None
     clutch: Clutch | None = None
     start: Start = REST
+    # Whether the scene gave start.angle_deg: a linkage's run then starts at that angle of the crank's own, else at
+    # the first position (start.angle is then the 0 of the run's φ, which counts from there).
+    start_angle_given: bool = False
     duration: float | None = None
     method: str = "auto"
     rtol: float = DEFAULT_RTOL
@@ -42,9 +45,11 @@ class MotionSpec:
 
     def refuse(self, machine: Machine) -> None:
         """Raise :class:`ValueError` for a run of ``machine`` that could not end: a motor that outpulls the
-        resistance at every speed, or more turns than a run integrates; found before integrating anything."""
+        resistance at every speed from a start that carries the machine past its peaks, or more turns than a run
+        integrates; found before integrating anything."""
         self._refuse_long_run(machine)
-        refuse_runaway(machine, self.motor, self.duration is None and self.brake is None and self.motor_off_at is None)
+        refuse_runaway(machine, self.motor, self.duration is None and self.brake is None and self.motor_off_at is None,
+                       self.start, self.clutch)
 
     def _refuse_long_run(self, machine: Machine) -> None:
         """Raise :class:`ValueError` for a run of more turns than a run integrates."""
@@ -166,7 +171,8 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     if clutch is not None and clutch.inertia + motor.reduced_inertia <= 0:
         raise SceneError(clutch_table.where("inertia"), "the clutch's driving half needs an inertia: "
                          "give clutch.inertia or motor.rotor_inertia")
-    start = _read_start(table.raw("start", "rest"), table.where("start"), clutch)
+    raw_start = table.raw("start", "rest")
+    start = _read_start(raw_start, table.where("start"), clutch)
     if off_at == 0 and start.omega == 0 and not start.driving_omega:
         # Nothing would ever move: the run would integrate a machine at rest to the longest run it allows.
         raise SceneError(motor_table.where("off_at"), "switches the motor off as a run from rest begins, so the "
@@ -182,5 +188,6 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     steady_tolerance = table.number("steady_tolerance", 1e-4, positive=True)
     if not owned:
         table.done()
-    return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start, duration=duration,
+    return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start,
+                      start_angle_given=isinstance(raw_start, Mapping) and "angle_deg" in raw_start, duration=duration,
                       method=method, rtol=rtol, steady_tolerance=steady_tolerance)
