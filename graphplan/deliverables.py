@@ -308,14 +308,26 @@ class MachineDynamics:
         if self.spec.motion is None:
             return None
         with _scene_values("dynamics"):
-            return self.spec.motion.run(self.machine)
+            return self._motion_spec.run(self.machine)
 
     def refuse(self) -> None:
         """Raise :class:`SceneError` for a motion the run could not integrate to its end (a motor that outpulls
         the resistance at every speed): found before anything is integrated, as ``check`` does."""
         if self.spec.motion is not None:
             with _scene_values("dynamics"):
-                self.spec.motion.refuse(self.machine)
+                self._motion_spec.refuse(self.machine)
+
+    @property
+    def _motion_spec(self):
+        """The scene's motion with its start's angle in the run's φ: the scene gives ``start.angle_deg`` as the
+        driver's ``angle_deg`` reads (the crank's own angle), and the run counts φ from the first position, where
+        the equivalent model starts, in the crank's sense of rotation.  Without it the run starts there."""
+        asked = self.spec.motion
+        model = self.model
+        if not asked.start_angle_given:
+            return asked
+        phi = (model.sense * (asked.start.angle - float(model.driver[0]))) % (2.0 * math.pi)
+        return dataclasses.replace(asked, start=dataclasses.replace(asked.start, angle=phi))
 
     @functools.cached_property
     def machine(self):
@@ -372,6 +384,9 @@ class MachineDynamics:
             locked = motion.event_time("clutch locked")
             result.update(clutch_locked_at=locked, slip_energy=motion.slip_energy,
                           clutch_common_speed=None if locked is None else float(motion.state_at([locked])[1, 0]))
+            if steady is not None:
+                result.update(slip_energy_per_turn=motion.steady_slip_energy,
+                              slip_power=motion.steady_slip_energy / steady.period)
         if motion.stalled_at is not None:
             result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=self.stall_angle_deg())
         elif motion.stopped_at is not None:
@@ -412,9 +427,29 @@ class MachineDynamics:
         if motion is None or motion.stalled_at is None:
             return None
         where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
+        if not motion.turned:
+            return (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
+                    f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there, "
+                    f"{self.machine.mr(float(motion.phi[0]), 0.0):.4g} N·m (a stronger motor, a larger gear ratio, "
+                    "or a start from another angle)")
+        if motion.stalled_slipping:
+            return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
+                    f"slipping at its {self.spec.motion.clutch.torque:g} N·m, cannot carry it past the resistance "
+                    f"there, {self.machine.mr(float(motion.phi[-1]), 0.0):.4g} N·m (a clutch of more torque)")
         return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
+
+    def slipping_warning(self) -> str | None:
+        """One line for the command line when the clutch slips in every steady turn: it cannot pass the peaks of
+        the resistance, and wears for as long as the machine runs."""
+        motion = self.motion
+        if motion is None or not motion.steady_slip_energy:
+            return None
+        power = motion.steady_slip_energy / motion.steady.period
+        return (f"dynamics: the clutch slips in every steady turn, losing {motion.steady_slip_energy:.4g} J a turn "
+                f"({power:.4g} W): its {self.spec.motion.clutch.torque:g} N·m cannot pass the resistance's peaks "
+                "(a clutch of more torque)")
 
     def unsettled_warning(self) -> str | None:
         """One line for the command line when a run with the motor on ends short of a steady state: the results
@@ -513,8 +548,10 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
         estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
+        clutch = scene.dynamics.motion.clutch
         found["motion.svg"] = motion_figure(dynamics.motion, _dynamics_words(scene, analysis), scene.title, estimate,
-                                            dynamics.resisting)
+                                            dynamics.resisting, stall_angle_deg=dynamics.rest_angle_deg(),
+                                            clutch_torque=clutch.torque if clutch is not None else None)
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 
@@ -614,8 +651,8 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
     told = []
     if dynamics is not None:
-        told += [line for line in (dynamics.stall_warning(), dynamics.unsettled_warning(),
-                                   dynamics.off_design_warning()) if line is not None]
+        told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),
+                                   dynamics.unsettled_warning(), dynamics.off_design_warning()) if line is not None]
     if "balancing" in pieces and (couple := _static_couple(scene)) is not None:
         told.append(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its "
                     "masses turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")

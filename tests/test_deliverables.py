@@ -540,3 +540,62 @@ def test_the_russian_shapers_note_writes_what_follows_parallel_as_russian_gramma
     after_parallel = re.findall(r"∥ (\S+)", note)
     assert after_parallel
     assert not [word for word in after_parallel if re.fullmatch(r"[а-яё]+(ая|яя)", word)], set(after_parallel)
+
+
+COMPRESSOR = """[scene]
+title = "Compressor"
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.06
+rpm = 300.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.24
+guide = { through = "O", angle = 0.0 }
+assembly = "forward"
+[links.2]
+mass = 5.0
+centre = "O"
+inertia = 0.02
+[links.4]
+mass = 3.0
+centre = "B"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = 2500.0
+angle = 180.0
+resisting = true
+during = "working"
+[positions]
+count = 12
+start = "extreme"
+working = { link = 4, sense = "forward" }
+[dynamics]
+delta = 0.04
+motor = { kind = "kloss", power = 1500.0, overload = 2.2, synchronous_rpm = 1500.0, rated_rpm = 1420.0, gear_ratio = 4.7 }
+"""
+
+
+def test_the_start_s_angle_is_the_crank_s_own_as_the_results_give_it(tmp_path):
+    """A motor that cannot move the compression stroke's load from rest, started at the crank's own 300° (position
+    1 is at 180°): it stands where it was started, and the results say so in the same angle.  The start was counted
+    from position 1, and the results gave 120°."""
+    scene = tmp_path / "compressor.toml"
+    scene.write_text(COMPRESSOR + "start = { omega = 0.0, angle_deg = 300.0 }\n", encoding="utf-8")
+    status, out = run(tmp_path, "--only", "dynamics", scene=scene)
+    assert status == 0
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    assert document["positions"][0]["driver"]["angle_deg"] == pytest.approx(180.0)
+    motion = document["dynamics"]["motion"]
+    assert motion["stalled_at"] == 0.0
+    assert motion["stalled_at_angle_deg"] == pytest.approx(300.0)

@@ -118,7 +118,7 @@ def test_a_stalled_run_shows_the_motors_torque_falling_short_of_the_resistance_w
     lower = figure.axes[1]
     lines = {line.get_label(): line for line in lower.get_lines()}
     mr, md = lines[text["motion_resisting"]], lines[text["motion_motor_torque"]]
-    (point,) = [line for label, line in lines.items() if label.startswith("остановка при φ")]
+    (point,) = [line for label, line in lines.items() if label.startswith("остановка при t")]
     x, y = (float(value[0]) for value in point.get_data())
     assert x == pytest.approx(math.degrees(motion.phi[-1]))
     assert y == pytest.approx(stall_torque * gear, rel=1e-3)
@@ -163,3 +163,29 @@ def test_a_run_down_with_no_steady_state_is_the_speed_in_time_alone_with_no_empt
     (only,) = figure.axes
     assert text["motion_shaft"] in {line.get_label() for line in only.get_lines()}
     assert text["motion_no_steady"] not in {item.get_text() for item in figure.findobj(lambda a: hasattr(a, "get_text"))}
+
+
+def test_a_stall_from_a_start_off_position_1_is_drawn_over_the_angle_turned_from_that_start():
+    """Started at φ = 200° of the run, the machine stalls 90° on: the axis says "φ turned from the start", so the
+    dot is at the angle turned, Mr is drawn as it is at the start plus that angle, and the legend gives both.  The
+    dot was at the run's own φ, past the turn the axis drew (450° for 90° turned)."""
+    count = 360
+    angles = 2.0 * np.pi * np.arange(count) / count
+    start = math.radians(200.0)
+    # Light for the quarter turn after the start, heavy after it: the shaft passes it on what it gained.
+    resisting = np.where((angles - start) % (2 * np.pi) < np.pi / 2, 10.0, 100.0)
+    motion = simulate(Machine(INERTIA, resisting=resisting), LinearMotor(10.0, 100.0, gear_ratio=3.0),
+                      start=Start(angle=start), rtol=1e-8)
+    turned = math.degrees(motion.phi[-1] - start)
+    assert motion.stalled_at is not None and 90.0 < turned < 180.0
+    text = strings("en")
+    figure = motion_plot(motion, text, resisting=(angles, resisting), stall_angle_deg=123.4)
+    lower = figure.axes[1]
+    lines = {line.get_label(): line for line in lower.get_lines()}
+    (point,) = [line for label, line in lines.items() if label.startswith("stalls at t")]
+    assert float(point.get_xdata()[0]) == pytest.approx(turned)
+    assert f"{turned:.4g}° from the start (φ = 123.4°)" in point.get_label()
+    along, drawn = lines[text["motion_resisting"]].get_data()
+    assert along[0] == 0.0 and along[-1] == 360.0
+    assert float(np.interp(45.0, along, drawn)) == pytest.approx(10.0)
+    assert float(np.interp(turned, along, drawn)) == pytest.approx(100.0)

@@ -143,16 +143,8 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
     mounted = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
         if dynamics.flywheel_inertia > 0 else ""
     note.para(note.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=_method_reason(note, dynamics)))
-    clutch = dynamics.spec.motion.clutch
-    if clutch is not None:
-        locked = motion.event_time("clutch locked")
-        if locked is None:
-            note.para(note.t("note_dyn_clutch_slips", torque=note.n(clutch.torque), engage=note.n(clutch.engage_at, 4),
-                             energy=note.n(motion.slip_energy)))
-        else:
-            note.para(note.t("note_dyn_clutch", torque=note.n(clutch.torque), engage=note.n(clutch.engage_at, 4),
-                             locked=note.n(locked, 4), speed=note.n(float(motion.state_at([locked])[1, 0])),
-                             energy=note.n(motion.slip_energy)))
+    if dynamics.spec.motion.clutch is not None:
+        _clutch(note, dynamics)
     brake = dynamics.spec.motion.brake
     if brake is not None:
         note.para(note.t("note_dyn_brake", at=note.n(brake.at, 4), torque=note.n(brake.torque),
@@ -169,8 +161,7 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
         elif motion.stalled_at is None:
             note.para(note.text["note_dyn_no_steady"])
         else:
-            note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4),
-                             angle=dynamics.stall_place(note.text, lambda value: note.n(value, 4))))
+            _stall(note, dynamics)
         return
     cycle = steady.cycle
     note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),
@@ -180,6 +171,43 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
         note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
     if run_down:
         _run_down(note, dynamics)
+
+
+def _clutch(note: Writer, dynamics) -> None:
+    """When the clutch's halves first turn together and whether they stay so: a clutch that cannot pass the
+    resistance's peaks slips again, in the steady state every turn, and its loss is then a power, not a sum."""
+    motion, clutch = dynamics.motion, dynamics.spec.motion.clutch
+    given = {"torque": note.n(clutch.torque), "engage": note.n(clutch.engage_at, 4), "energy": note.n(motion.slip_energy)}
+    locked = motion.event_time("clutch locked")
+    if locked is None:
+        note.para(note.t("note_dyn_clutch_slips", **given))
+        return
+    given.update(locked=note.n(locked, 4), speed=note.n(float(motion.state_at([locked])[1, 0])))
+    slips = [when for when, name in motion.events if name == "clutch slips" and when > locked]
+    if motion.steady_slip_energy:
+        steady = motion.steady
+        note.para(note.t("note_dyn_clutch_slips_steady", **given, after=note.n(steady.reached_at, 4),
+                         turn=note.n(motion.steady_slip_energy), power=note.n(motion.steady_slip_energy / steady.period)))
+    elif slips:
+        note.para(note.t("note_dyn_clutch_again", **given, count=Count(len(slips)), last=note.n(slips[-1], 4)))
+    else:
+        note.para(note.t("note_dyn_clutch", **given))
+
+
+def _stall(note: Writer, dynamics) -> None:
+    """Where the machine stalls and what falls short there: the motor, or a clutch slipping at its capacity; a
+    machine the motor cannot move from where it stands does not start at all."""
+    motion = dynamics.motion
+    angle = dynamics.stall_place(note.text, lambda value: note.n(value, 4))
+    resisting = note.n(dynamics.machine.mr(float(motion.phi[-1]), 0.0))
+    if not motion.turned:
+        note.para(note.t("note_dyn_never_starts", angle=angle, torque=note.n(float(motion.motor_torque[0])),
+                         resisting=resisting))
+    elif motion.stalled_slipping:
+        note.para(note.t("note_dyn_stalled_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
+                         torque=note.n(dynamics.spec.motion.clutch.torque), resisting=resisting))
+    else:
+        note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4), angle=angle))
 
 
 def _run_down(note: Writer, dynamics) -> None:

@@ -13,9 +13,11 @@ from __future__ import annotations
 import math
 import textwrap
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
+from ..locale import Count
 from ..machine_motion import MachineMotion
 from .forces import number
 from .plot_style import settings, svg_text, with_decimal_mark
@@ -29,25 +31,33 @@ _SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT = "#1f4e79", "#a83a1f", "#1f7a3a", "#55
 
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                   flywheel: tuple[np.ndarray, np.ndarray] | None = None,
-                  resisting: tuple[np.ndarray, np.ndarray] | None = None) -> str:
+                  resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
+                  clutch_torque: float | None = None) -> str:
     """The SVG text of :func:`motion_plot`."""
     import matplotlib
 
     with matplotlib.rc_context(settings()):
-        return svg_text(motion_plot(motion, text, title, flywheel, resisting))
+        return svg_text(motion_plot(motion, text, title, flywheel, resisting, stall_angle_deg=stall_angle_deg,
+                                    clutch_torque=clutch_torque))
 
 
 def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 flywheel: tuple[np.ndarray, np.ndarray] | None = None,
-                resisting: tuple[np.ndarray, np.ndarray] | None = None):
+                resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
+                clutch_torque: float | None = None):
     """The motion's matplotlib figure: the run above, the steady turn below (or only why the machine
     stands still, where it never moves).
 
     ``flywheel`` is the flywheel's estimate of the steady speed over the turn: the crank angles
     (rad, from the first position) and ω there, drawn beside the integrated steady turn.
-    ``resisting`` is Mr(φ) over one turn (the angles, rad, and N·m): where the machine stalls, the
-    lower plot sets it against the motor's torque along the run, to show where the motor falls short.
+    ``resisting`` is Mr(φ) over one turn (the angles, rad, in the run's φ, and N·m): where the machine
+    stalls, the lower plot sets it against the motor's torque along the run, over the angle turned from
+    the start, to show where the motor falls short; where the clutch slipped as it stalled, against the
+    clutch's ``clutch_torque`` too.  ``stall_angle_deg`` is where it stalled as the scene counts the crank's
+    angle (the motion's own φ within its turn where not given).
     """
+    stall = _Stall(stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg,
+                   clutch_torque if motion.stalled_slipping else None)
     import matplotlib
 
     matplotlib.use("Agg")
@@ -61,7 +71,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             figure, run = pyplot.subplots(1, 1, figsize=(7.5, 5.5))
             _speed_over_time(run, motion, text)
             if not run_down:
-                why = _why_not_steady(motion, text)
+                why = _why_not_steady(motion, text, stall)
                 run.set_title(f"{run.get_title()}: {why}" if run.get_title() else why, fontsize=10)
         else:
             if _moved(motion):
@@ -73,10 +83,10 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             if motion.steady is not None:
                 _steady_turn(turn, motion, text, flywheel)
             elif motion.stalled_at is not None and resisting is not None:
-                _stall(turn, motion, text, resisting)
+                _stall(turn, motion, text, resisting, stall)
             else:
                 turn.set_axis_off()
-                turn.text(0.5, 0.5, textwrap.fill(_why_not_steady(motion, text), 80), ha="center", va="center",
+                turn.text(0.5, 0.5, textwrap.fill(_why_not_steady(motion, text, stall), 80), ha="center", va="center",
                           transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
         # After the decimal mark: the title quotes the scene's, which is the user's text.
@@ -86,13 +96,23 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     return figure
 
 
-def _why_not_steady(motion: MachineMotion, text: Mapping[str, str]) -> str:
+@dataclass(frozen=True)
+class _Stall:
+    """Where a run stalled as the scene counts the crank's angle (°), and the clutch's capacity (N·m) where it
+    slipped as it stalled, the clutch then the limit, not the motor."""
+
+    angle_deg: float | None
+    clutch_torque: float | None
+
+
+def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stall) -> str:
     """Why a run has no steady turn to draw: none reached in the run, or where the machine stalled."""
     if motion.stalled_at is None:
         return text["motion_no_steady"]
     mark = text["decimal_mark"]
-    return text["motion_stalled"].format(time=number(motion.stalled_at, 4, mark),
-                                         angle=number(motion.stalled_at_angle_deg, 4, mark))
+    key = "motion_stalled_clutch" if stall.clutch_torque is not None else \
+        "motion_never_starts" if not motion.turned else "motion_stalled"
+    return text[key].format(time=number(motion.stalled_at, 4, mark), angle=number(stall.angle_deg, 4, mark))
 
 
 def _moved(motion: MachineMotion) -> bool:
@@ -134,13 +154,31 @@ def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> No
     plot.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
 
 
+# A clutch that slips again this many times after it first locks (every turn, where it cannot pass the resistance's
+# peaks) has its slips and locks summed up in one line of the legend: listed one by one they crowd out the plot.
+_REPEATS_LISTED = 2
+
+
 def _events(plot, motion: MachineMotion, text: Mapping[str, str], span: float) -> None:
     """Each event a dotted line numbered at the top; the numbers are explained in the legend.
 
-    Events close in time step their numbers down, so that they do not print over each other.
+    Events close in time step their numbers down, so that they do not print over each other.  A clutch that
+    slips and locks again more than :data:`_REPEATS_LISTED` times is one numbered entry from its first slip after
+    locking, its lines drawn faint and unnumbered.
     """
-    level, last = 0, -math.inf
-    for ordinal, (when, name) in enumerate(motion.events, start=1):
+    mark = text["decimal_mark"]
+    events = list(motion.events)
+    first_lock = next((k for k, (_, name) in enumerate(events) if name == "clutch locked"), None)
+    again = [] if first_lock is None else [k for k, (_, name) in enumerate(events)
+                                             if k > first_lock and name in ("clutch slips", "clutch locked")]
+    slips = [k for k in again if events[k][1] == "clutch slips"]
+    summed = set(again[again.index(slips[0]):]) if len(slips) > _REPEATS_LISTED else set()
+    level, last, ordinal = 0, -math.inf, 0
+    for k, (when, name) in enumerate(events):
+        if k in summed and k != slips[0]:
+            plot.axvline(when, color=_EVENT, linewidth=0.3, linestyle=":", alpha=0.5)
+            continue
+        ordinal += 1
         level = level + 1 if when - last < 0.04 * span else 0
         last = when
         plot.axvline(when, color=_EVENT, linewidth=0.6, linestyle=":")
@@ -148,9 +186,14 @@ def _events(plot, motion: MachineMotion, text: Mapping[str, str], span: float) -
         aside = -8 if when >= float(motion.t[-1]) - 0.02 * span else 2
         plot.annotate(str(ordinal), (when, 1.0), xycoords=("data", "axes fraction"), xytext=(aside, -10 - 10 * (level % 4)),
                       textcoords="offset points", fontsize=7, color=_EVENT)
-        words = text.get(f"motion_event_{name.replace(' ', '_')}", name)
-        plot.plot([], [], " ", label=text["motion_event"].format(number=ordinal, event=words,
-                                                                 time=number(when, 4, text["decimal_mark"])))
+        if k in summed:
+            label = text["motion_event_slips_again"].format(number=ordinal, count=Count(len(slips)),
+                                                            start=number(when, 4, mark),
+                                                            end=number(events[max(summed)][0], 4, mark))
+        else:
+            words = text.get(f"motion_event_{name.replace(' ', '_')}", name)
+            label = text["motion_event"].format(number=ordinal, event=words, time=number(when, 4, mark))
+        plot.plot([], [], " ", label=label)
 
 
 def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
@@ -179,21 +222,30 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     plot.legend(fontsize=7, loc="best")
 
 
-def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tuple[np.ndarray, np.ndarray]) -> None:
+def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tuple[np.ndarray, np.ndarray],
+           stall: _Stall) -> None:
     """The moments on the driving shaft over the angle it turned before it stalled: the motor's torque
-    along the run against the resisting forces' Mr(φ), the stall where the motor's falls short."""
+    along the run against the resisting forces' Mr(φ), the stall where the motor's falls short (where the
+    clutch slipped, the clutch's capacity, which falls short first)."""
     mark = text["decimal_mark"]
     angles, moments = resisting
-    turned = np.degrees(motion.phi)
+    # Counted from the start, as the axis says: the run's own φ counts from the first position.
+    start = float(motion.phi[0])
+    turned = np.degrees(motion.phi - start)
     end = float(turned[-1])
     # The whole turn the stall is in, from the start: where Mr rises past the motor is plain to see.
     right = 360.0 * max(math.floor(end / 360.0) + 1.0, 1.0)
     along = np.linspace(0.0, right, max(_TURN_SAMPLES, int(right) * 2 + 1))
-    plot.plot(along, np.interp(np.radians(along), angles, moments, period=2.0 * np.pi), color=_DRIVING_HALF,
+    plot.plot(along, np.interp(start + np.radians(along), angles, moments, period=2.0 * np.pi), color=_DRIVING_HALF,
               linewidth=1.0, label=text["motion_resisting"])
     plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
-    plot.plot([end], [float(motion.motor_torque[-1])], "o", color=_SHAFT, markersize=4,
-              label=text["motion_stall_point"].format(angle=number(motion.stalled_at_angle_deg, 4, mark),
+    held = float(motion.motor_torque[-1])
+    if stall.clutch_torque is not None:
+        held = stall.clutch_torque
+        plot.axhline(held, color=_FLYWHEEL, linewidth=1.0, linestyle="--",
+                     label=text["motion_clutch_capacity"].format(torque=number(held, 4, mark)))
+    plot.plot([end], [held], "o", color=_SHAFT, markersize=4,
+              label=text["motion_stall_point"].format(turned=number(end, 4, mark), angle=number(stall.angle_deg, 4, mark),
                                                       time=number(motion.stalled_at, 4, mark)))
     plot.axhline(0.0, color=_EVENT, linewidth=0.5)
     plot.set_xlim(0.0, right)
