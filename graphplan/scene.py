@@ -574,7 +574,7 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
         working_table.done()
     if start == "extreme" and working is None:
         raise SceneError(table.where("start"), "\"extreme\" needs working = { link, sense } to know which extreme")
-    plans = _position_numbers(table, "plans", number_from, count)
+    plans = _position_numbers(table, "plans", number_from, count, once_each=True)
     every = table.raw("velocity_plans", None)
     if isinstance(every, str):
         if every != "all":
@@ -590,13 +590,20 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
                      velocity_plans=tuple(velocity_plans))
 
 
-def _position_numbers(table: Table, key: str, number_from: int, count: int) -> list[int]:
-    """The position numbers listed under ``key``, each checked to be one of the scene's."""
+def _position_numbers(table: Table, key: str, number_from: int, count: int, once_each: bool = False) -> list[int]:
+    """The position numbers listed under ``key``, each checked to be one of the scene's.
+
+    With ``once_each`` a number listed again is refused: each listed position gets outputs of its own (a plan
+    sheet, a section of the note), so a repeat, most likely a slip for another number, would deliver them twice.
+    """
     numbers = []
     for where, item in table.items(key, default=[]) or []:
         number = check_int(item, where)
         if not number_from <= number < number_from + count:
             raise SceneError(where, f"must be a position number from {number_from} to {number_from + count - 1}",
+                             number)
+        if once_each and number in numbers:
+            raise SceneError(where, f"position {number} is already listed at {table.where(key)}[{numbers.index(number)}]",
                              number)
         numbers.append(number)
     return numbers

@@ -739,6 +739,8 @@ CASES: list[Case] = [
          "must be an integer, not a string (got '5')"),
     Case("positions-plans-float", {"positions.plans": [5.0]}, "positions.plans[0]",
          "must be an integer, not a number (got 5.0)"),
+    Case("positions-plans-repeated", {"positions.plans": [5, 5, 11]}, "positions.plans[1]",
+         "position 5 is already listed at positions.plans[0] (got 5)"),
     Case("positions-plans-number", {"positions.plans": 5}, "positions.plans", "must be a list, not an integer (got 5)"),
     Case("positions-unknown-key", {"positions.cuont": 12}, "positions.cuont", "unknown key; did you mean 'count'?"),
 
