@@ -3,6 +3,7 @@
 import json
 import math
 from pathlib import Path
+import signal
 import xml.etree.ElementTree as ElementTree
 
 import numpy as np
@@ -281,6 +282,28 @@ def test_ctrl_c_while_the_folder_is_swapped_puts_the_user_s_own_files_back(tmp_p
     assert capsys.readouterr().err == "graphplan: interrupted\n"
     assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["project"]
+
+
+def test_ctrl_c_while_cairo_writes_a_png_is_an_interruption_too(tmp_path, capsys, monkeypatch):
+    """cairo writes a PNG through a Python callback that no exception leaves: Ctrl-C there printed cffi's
+    traceback and ended in cairo's write error (OSError, exit status 1). Now the run says it was interrupted
+    and leaves no folder, as an interruption anywhere else does."""
+    cairocffi_surfaces = pytest.importorskip("cairocffi.surfaces")
+    make_write_func = cairocffi_surfaces._make_write_func
+
+    def interrupted_while_writing(target):
+        class Interrupted:
+            def write(self, data):
+                signal.raise_signal(signal.SIGINT)  # as a Ctrl-C from the terminal: handled inside the callback
+                return target.write(data)
+
+        return make_write_func(Interrupted())
+
+    monkeypatch.setattr(cairocffi_surfaces, "_make_write_func", interrupted_while_writing)
+    folder = tmp_path / "project"
+    assert main(["run", FIXTURE, "--out", str(folder), "--only", "positions", "--format", "png"]) == 130
+    assert capsys.readouterr().err == "graphplan: interrupted\n"
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_a_run_will_not_replace_the_folder_it_runs_in(tmp_path, capsys, monkeypatch):

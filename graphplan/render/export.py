@@ -19,8 +19,12 @@ names cairo's version.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import re
+import signal
+import threading
+from collections.abc import Iterator
 
 # Resolution of a PNG when none is asked for: enough for a sheet's 2.5 mm lettering on a screen.
 DEFAULT_DPI = 150.0
@@ -47,7 +51,31 @@ def svg_to_png(svg_text: str, dpi: float = DEFAULT_DPI) -> bytes:
         raise ValueError(f"dpi must be > 0 (got {dpi!r})")
     import cairosvg
 
-    return _with_resolution(cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi), dpi)
+    with _interruption_held():
+        png = cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi)
+    return _with_resolution(png, dpi)
+
+
+@contextlib.contextmanager
+def _interruption_held() -> Iterator[None]:
+    """Ctrl-C held back while cairo writes, and raised as ``KeyboardInterrupt`` once it has written.
+
+    cairo writes a PNG or PDF through a Python callback, which an exception cannot leave: a Ctrl-C there
+    printed cffi's traceback and came out as cairo's write error (OSError), not as an interruption. Only the
+    main thread receives signals, and a handler the caller installed is theirs to keep.
+    """
+    callers_own = signal.getsignal(signal.SIGINT) is not signal.default_int_handler
+    if threading.current_thread() is not threading.main_thread() or callers_own:
+        yield
+        return
+    held = []
+    previous = signal.signal(signal.SIGINT, lambda signum, frame: held.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if held:
+        raise KeyboardInterrupt
 
 
 def _with_resolution(png: bytes, dpi: float) -> bytes:
@@ -68,7 +96,8 @@ def _with_resolution(png: bytes, dpi: float) -> bytes:
 
 def svg_to_pdf(svg_text: str) -> bytes:
     """A one-page PDF of an SVG document, the page the SVG's size, without a creation date."""
-    return _undated_pdf_surface().convert(svg_text.encode("utf-8"))
+    with _interruption_held():
+        return _undated_pdf_surface().convert(svg_text.encode("utf-8"))
 
 
 @functools.cache
