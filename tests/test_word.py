@@ -251,6 +251,17 @@ def test_the_same_note_gives_the_same_file_with_no_date(case):
     assert document.core_properties.created is None
 
 
+def test_a_title_longer_than_a_document_property_holds_is_shortened_there_and_kept_whole_in_the_heading():
+    """Word's document properties hold at most 255 characters: a 300-character title crashed python-docx."""
+    title = " ".join(["Crank-rocker of a ratchet feed"] * 10)
+    assert len(title) == 309
+    document = docx.Document(io.BytesIO(note_docx(f"# Note: {title}\n\nText.\n", title, "en")))
+    shortened = document.core_properties.title
+    assert len(shortened) == 255 and shortened.endswith("…")
+    assert title.startswith(shortened.removesuffix("…"))
+    assert document.paragraphs[0].text == f"Note: {title}"
+
+
 def test_the_command_line_writes_the_note_for_word_when_asked(tmp_path):
     out = tmp_path / "out"
     assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out), "--only", "note",

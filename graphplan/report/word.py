@@ -73,6 +73,8 @@ _STORED_AT = (1980, 1, 1, 0, 0, 0)
 # printed (dots per inch).
 _PICTURE_HEIGHT_MM = 230.0
 _PICTURE_DPI = 200.0
+# The most characters a document property may have (python-docx refuses more; Word's own limit).
+_MOST_PROPERTY_CHARACTERS = 255
 
 
 def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str, str] | None = None) -> bytes:
@@ -84,7 +86,8 @@ def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str
     _number_pages(document)
     _Writer(document, pictures or {}).blocks(tree(markdown_text).children)
     properties = document.core_properties
-    properties.title, properties.language = " ".join(title.split()), _LANGUAGES.get(locale, locale)
+    properties.title = _shortened(" ".join(title.split()), _MOST_PROPERTY_CHARACTERS)
+    properties.language = _LANGUAGES.get(locale, locale)
     properties.author, properties.comments = "graphplan", ""
     # No date (python-docx's template carries its own): the same note gives the same file.
     for dated in ("dcterms:created", "dcterms:modified", "cp:lastPrinted"):
@@ -93,6 +96,11 @@ def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str
     written = io.BytesIO()
     document.save(written)
     return _stored_at_one_time(written.getvalue())
+
+
+def _shortened(text: str, most: int) -> str:
+    """``text`` cut to ``most`` characters with an ellipsis where it is longer (the note's heading keeps it whole)."""
+    return text if len(text) <= most else text[:most - 1].rstrip() + "…"
 
 
 def _set_page(document) -> None:
