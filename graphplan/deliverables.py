@@ -663,10 +663,12 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
         shorter = {"author": " to a surname and initials", "checked_by": " to a surname and initials",
                    "approved_by": " to a surname and initials",
                    "date": " (a TOML date, 2026-12-01, is written as the title block writes dates)"}
+        # The title is the scene's; the rest is the project's.
+        table_of = {"title": "scene"}
         # A TOML date is written as the form writes dates, ESKD's dd.mm.yy in its 10 mm column: not the user's to
         # shorten.
-        told += [f"project.{name}: the title block's box sets it at {size:.2g} mm to fit it in (printed letters are "
-                 f"no smaller than {SMALLEST_LETTERING:g} mm); shorten it{shorter.get(name, '')}"
+        told += [f"{table_of.get(name, 'project')}.{name}: the title block's box sets it at {size:.2g} mm to fit it "
+                 f"in (printed letters are no smaller than {SMALLEST_LETTERING:g} mm); shorten it{shorter.get(name, '')}"
                  for name, size in cramped(details_of(scene.project, scene.title, form), form,
                                            labels(scene.locale)).items()
                  if name != "date" or isinstance(scene.project.date, str)]

@@ -152,6 +152,28 @@ def test_a_project_name_too_long_for_its_box_is_warned_of_by_check_and_run(tmp_p
     assert "project." not in "".join(capsys.readouterr())
 
 
+def test_a_title_too_long_for_its_box_is_warned_of_as_a_project_name_is(tmp_path, capsys):
+    """A 300-character title was set in the title block at about 1 mm without a word, while a long [project] name
+    was warned of. The size told is the size the sheets set the title's lines at."""
+    from graphplan.cli import main
+    from graphplan.render.title_block import SMALLEST_LETTERING
+
+    title = " ".join(["Quixotic linkage study"] * 14)
+    text = RATCHET.replace('title   = "Crank-rocker of a ratchet feed"', f'title   = "{title}"')
+    assert len(title) > 300 and title in text
+    scene = tmp_path / "long.toml"
+    scene.write_text(text, encoding="utf-8")
+    sizes = {item.size for item in course_sheets(analyse(graphplan.load_text(text)))[0].layers
+             for item in getattr(item, "items", []) if isinstance(item, Text) and "Quixotic" in item.text}
+    assert max(sizes) < SMALLEST_LETTERING
+    assert main(["check", str(scene)]) == 0
+    said = "".join(capsys.readouterr())
+    assert f"scene.title: the title block's box sets it at {min(sizes):.2g} mm to fit it in" in said
+    assert "project." not in said
+    assert main(["check", str(ROOT / "fixtures" / "ratchet_crank_rocker.toml")]) == 0
+    assert "scene.title" not in "".join(capsys.readouterr())
+
+
 @pytest.mark.parametrize("locale", ["ru", "zh"])
 def test_a_russian_or_chinese_starter_shows_its_project_names_in_its_language(locale):
     """«A. Student» stood in the [project] of a starter whose title and guide were Russian."""

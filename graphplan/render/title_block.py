@@ -99,8 +99,8 @@ def details_of(project: object, title: str, form: str) -> Details:
 
 
 def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, float]:
-    """The fields of ``details`` (``author``, …) that ``form``'s boxes set below :data:`SMALLEST_LETTERING` to fit
-    them in, with the size (mm) they get."""
+    """The fields of ``details`` (``title``, ``author``, …) that ``form``'s boxes set below :data:`SMALLEST_LETTERING`
+    to fit them in, with the size (mm) they get."""
     fields = TitleBlockFields(**{name: getattr(details, name) for name in Details.__dataclass_fields__},
                               drawing="", scale="", sheet=1, sheets=1)
 
@@ -109,7 +109,7 @@ def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, f
 
     drawn = texts(fields)
     found = {}
-    for name in ("author", "checked_by", "approved_by", "organization", "designation", "date"):
+    for name in ("title", "author", "checked_by", "approved_by", "organization", "designation", "date"):
         # A field's lines are what the block draws with it and not without it.
         sizes = [item.size for item in drawn - texts(replace(fields, **{name: ""}))]
         if sizes and min(sizes) < SMALLEST_LETTERING:
