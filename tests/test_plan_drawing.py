@@ -13,6 +13,7 @@ import functools
 import itertools
 import math
 import re
+import warnings
 from collections import Counter
 from pathlib import Path
 from xml.etree import ElementTree
@@ -185,6 +186,27 @@ def test_each_label_stands_beside_its_point_or_is_led_to_it(sheet):
             assert distance <= beside or len(led) == 1, text.text
             # Within the outermost ring the labeller tries.
             assert distance <= 1.2 + max(labels.APART_SHARES) * text.size + 1e-6, text.text
+
+
+def test_a_label_wider_than_its_rings_are_far_is_never_led_from_under_itself():
+    """A long name set off obliquely on a ring led to its point reached back over the point: its leader had no
+    length and no direction (0/0), and the NaN it drew made shapely fail on a joint named with 60 letters."""
+    name = "B" + "x" * 80
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        placed = labels.place_labels([labels.Anchor((0.0, 0.0), name, prefer=math.pi / 32)], [])
+    (text,) = placed.texts
+    assert text.text == name and not text_box(text).intersects(Point(0.0, 0.0))
+    assert all(np.isfinite(leader.points).all() for leader in placed.leaders)
+
+
+def test_a_joint_with_a_long_name_is_lettered_on_its_sheet():
+    long_name = "B" + "x" * 60
+    text = Path(f"{FIXTURES}/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    text = re.sub(r"^(velocity|acceleration) += .*$", "", text.replace('"B"', f'"{long_name}"'), flags=re.MULTILINE)
+    sheet = plan_sheet(analyse(loads(text)), 5)
+    written = [item.text for layer in sheet_layout.layout(sheet) for item in layer.items if isinstance(item, Text)]
+    assert long_name in written and long_name.lower() in written
 
 
 def test_no_two_texts_on_the_sheet_overlap(sheet):

@@ -186,6 +186,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         cost[beside] += MISLEADING * misleading[beside]
         cost[led] += crossings + LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
         cost[ring >= apart_from] += SET_APART
+        # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
+        # it: beside the point already, it has no leader to draw.
+        cost[led[shapely.intersects(shapes[led], points[index])]] += OVERLAP
         return candidates, beside, led, lines, cost
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
@@ -246,10 +249,13 @@ def _most_crowded_first(anchors: Sequence[Anchor], at: np.ndarray) -> list[int]:
 
 
 def _leaders(at: tuple[float, float], shapes: np.ndarray) -> np.ndarray:
-    """The leader lines from just outside the point ``at`` to the nearest edge of each label's box."""
+    """The leader lines from just outside the point ``at`` to the nearest edge of each label's box.
+
+    A box over the point itself gets a leader of no length (:func:`place_labels` takes such a spot last)."""
     near = shapely.get_coordinates(shapely.shortest_line(Point(at), shapes)).reshape(-1, 2, 2)[:, 1]
     along = near - np.asarray(at)
-    unit = along / np.hypot(*along.T)[:, None]
+    length = np.hypot(*along.T)[:, None]
+    unit = np.divide(along, length, out=np.zeros_like(along), where=length > 0)
     start = np.asarray(at) + unit * LEADER_CLEARANCE
     return shapely.linestrings(np.stack((start, near - unit * 0.3), axis=1))
 
