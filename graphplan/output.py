@@ -21,19 +21,27 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     folder is complete, and a failure leaves no half-written folder behind.
     What the folder holds that no run wrote there (the scene itself, a draft,
     LaTeX's own output) is carried into the new folder: a run replaces its
-    own files alone, as listed in :data:`WRITTEN`.
+    own files alone, as listed in :data:`WRITTEN`. A ``target`` that is a
+    link to a folder is written as that folder, the link left as it is.
     """
     target = Path(target)
     here = Path.cwd().resolve()
     if target.resolve() == here or target.resolve() in here.parents:
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
                           "give --out a folder of its own")
-    staging = target.parent / f".{target.name}.partial-{os.getpid()}"
-    retired = target.parent / f".{target.name}.old-{os.getpid()}"
+    # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
+    folder = target.resolve() if target.is_symlink() else target
+    for above in folder.parents:
+        if above.exists():
+            if not above.is_dir():
+                raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
+            break
+    staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
+    retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
     carried: list[str] = []
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
+        folder.parent.mkdir(parents=True, exist_ok=True)
         shutil.rmtree(staging, ignore_errors=True)
         staging.mkdir()
         for name, content in sorted(files.items()):
@@ -44,20 +52,20 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
             else:
                 path.write_bytes(content)
         (staging / WRITTEN).write_text("".join(f"{name}\n" for name in written), encoding="utf-8")
-        if target.exists():
-            if not target.is_dir():
+        if folder.exists():
+            if not folder.is_dir():
                 raise OutputError(f"{target}: exists and is not a folder")
-            for name in _not_written_by_a_run(target, written):
-                (target / name).rename(staging / name)
+            for name in _not_written_by_a_run(folder, written):
+                (folder / name).rename(staging / name)
                 carried.append(name)
-            target.rename(retired)
-        staging.rename(target)
+            folder.rename(retired)
+        staging.rename(folder)
     except BaseException as error:
         # Ctrl-C too: the user's own files carried into the staging folder must go back before it is removed.
-        if retired.exists() and not target.exists():
-            retired.rename(target)
+        if retired.exists() and not folder.exists():
+            retired.rename(folder)
         for name in carried:
-            (staging / name).rename(target / name)
+            (staging / name).rename(folder / name)
         shutil.rmtree(staging, ignore_errors=True)
         if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise

@@ -306,6 +306,24 @@ def test_ctrl_c_while_cairo_writes_a_png_is_an_interruption_too(tmp_path, capsys
     assert list(tmp_path.iterdir()) == []
 
 
+def test_an_output_folder_given_as_a_link_is_written_through_the_link(tmp_path):
+    """A link to a folder was replaced by a folder of the run's, the user's files moved out of the folder it named
+    and the old folder left behind as .link.old-PID. Now the run writes into the folder the link names."""
+    from graphplan.output import WRITTEN
+
+    real = tmp_path / "real"
+    real.mkdir()
+    (real / "keep.txt").write_text("mine", encoding="utf-8")
+    link = tmp_path / "link"
+    link.symlink_to("real", target_is_directory=True)
+    for only in ("positions", "errors"):  # a second run replaces the first's files, still through the link
+        assert main(["run", FIXTURE, "--out", str(link), "--only", only]) == 0
+    assert link.is_symlink() and link.readlink() == Path("real")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link", "real"]
+    assert {p.name for p in real.iterdir()} == {"keep.txt", WRITTEN, "errors.md", "errors.csv", "errors.tex", "results.json"}
+    assert (real / "keep.txt").read_text(encoding="utf-8") == "mine"
+
+
 def test_a_run_will_not_replace_the_folder_it_runs_in(tmp_path, capsys, monkeypatch):
     scene = tmp_path / "ratchet.toml"
     scene.write_text(Path(FIXTURE).read_text(encoding="utf-8"), encoding="utf-8")

@@ -291,6 +291,19 @@ def test_an_output_path_that_is_a_file_is_left_alone(capsys, tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"], "a staging folder was left behind"
 
 
+@pytest.mark.parametrize("under", ["sub", "sub/deeper"])
+def test_an_output_path_under_a_file_names_the_file(capsys, tmp_path, under):
+    """It said "cannot write the output (File exists)", naming neither the file nor what was wrong with it."""
+    blocking = tmp_path / "afile"
+    blocking.write_text("keep me", encoding="utf-8")
+    status = main(["run", str(FIXTURE), "--out", str(blocking / under), "--only", "positions"])
+    err = capsys.readouterr().err
+    assert status == 2 and err == f"graphplan: error: {blocking / under}: {blocking} is not a folder, so the output " \
+                                  "cannot go in it\n"
+    assert blocking.read_text(encoding="utf-8") == "keep me"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
 def test_a_bad_scene_leaves_an_earlier_output_folder_untouched(capsys, tmp_path):
     target = tmp_path / "out"
     target.mkdir()
