@@ -7,6 +7,7 @@ structure of the mechanism) is checked by :mod:`graphplan.mechanism`.
 
 from __future__ import annotations
 
+import codecs
 import datetime
 import math
 import re
@@ -246,10 +247,12 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     if size > MAX_SCENE_BYTES:
         raise SceneError(source, f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")
     if isinstance(data, bytes):
+        if _utf16(data):
+            raise SceneError(source, "is not UTF-8 text but UTF-16: save it as UTF-8")
         try:
             data = data.decode("utf-8-sig")  # an editor's byte-order mark is no reason to refuse a scene
         except UnicodeDecodeError as error:
-            raise SceneError(source, f"is not UTF-8 text (byte {error.start})") from None
+            raise SceneError(source, f"is not UTF-8 text ({_place_of(error)}); save it as UTF-8") from None
     data = data.removeprefix("\ufeff")
     try:
         document = tomllib.loads(data)
@@ -261,6 +264,22 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     except RecursionError:  # tomllib reads nested arrays and tables by recursion
         raise SceneError(source, "nests arrays or tables too deeply to be read") from None
     return _read_scene(Table(document, ""), source)
+
+
+def _utf16(data: bytes) -> bool:
+    """Whether ``data`` is UTF-16 text: a byte-order mark, or zero bytes beside the letters of a Latin text (a TOML
+    file has no zero byte of its own)."""
+    head = data[:200]
+    return data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)) or 0 < len(head) <= 4 * head.count(0)
+
+
+def _place_of(error: UnicodeDecodeError) -> str:
+    """Where the first byte that is not UTF-8 stands, as an editor counts: line and column, and the byte."""
+    before = error.object[:error.start]
+    line_start = before.rfind(b"\n") + 1
+    column = len(before[line_start:].decode("utf-8")) + 1
+    line = before.count(b"\n") + 1
+    return f"line {line}, column {column}: byte 0x{error.object[error.start]:02X}"
 
 
 # Typographic quotes an editor or an input method puts for the straight one TOML takes.

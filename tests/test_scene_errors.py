@@ -13,6 +13,7 @@ pass, and the strict marker turns that into a failure so the marker is removed.
 
 from __future__ import annotations
 
+import codecs
 import copy
 import json
 import math
@@ -911,21 +912,35 @@ def test_a_group_joined_to_a_moving_link_by_a_guide_alone_moves() -> None:
 
 
 def test_non_utf8_bytes() -> None:
-    data = to_toml(RATCHET).encode("utf-8").replace(b"Crank-rocker", "Kurbelschwinge für".encode("cp1252"))
-    stage, error = first_error(data)
+    """The first byte that is not UTF-8 is told where an editor shows it, by line and column."""
+    text = to_toml(RATCHET).replace("Crank-rocker", "Kurbelschwinge für")
+    stage, error = first_error(text.encode("cp1252"))
     assert stage == "load" and type(error) is SceneError
-    position = data.index("ü".encode("cp1252"))
-    assert str(error) == f"<scene>: is not UTF-8 text (byte {position})"
+    before = text[:text.index("ü")]
+    line, column = before.count("\n") + 1, len(before) - before.rfind("\n")
+    assert str(error) == f"<scene>: is not UTF-8 text (line {line}, column {column}: byte 0xFC); save it as UTF-8"
     assert error.where == "<scene>"
 
 
 def test_non_utf8_file(tmp_path: Path) -> None:
-    path = tmp_path / "latin1.toml"
-    path.write_bytes(b'[scene]\ntitle = "\xe9"\n')
+    path = tmp_path / "cp1251.toml"
+    # An editor's byte-order mark is not counted in the columns: 'К' is the tenth character of its line.
+    path.write_bytes(codecs.BOM_UTF8 + '[scene]\ntitle = "Кривошип"\n'.encode("cp1251"))
     with pytest.raises(SceneError) as caught:
         graphplan.load(path)
-    assert str(caught.value) == f"{path}: is not UTF-8 text (byte 17)"
+    assert str(caught.value) == f"{path}: is not UTF-8 text (line 2, column 10: byte 0xCA); save it as UTF-8"
     assert caught.value.where == str(path)
+
+
+@pytest.mark.parametrize("encoding", ["utf-16", "utf-16-le", "utf-16-be"])
+def test_a_utf16_file_is_told_to_be_saved_as_utf8(tmp_path: Path, encoding: str) -> None:
+    """Windows editors save "Unicode" as UTF-16, with a byte-order mark or without: it was "not UTF-8 text (byte 0)",
+    or a TOML error where the zero bytes between its letters were read as text."""
+    path = tmp_path / "utf16.toml"
+    path.write_bytes(to_toml(RATCHET).encode(encoding))
+    with pytest.raises(SceneError) as caught:
+        graphplan.load(path)
+    assert str(caught.value) == f"{path}: is not UTF-8 text but UTF-16: save it as UTF-8"
 
 
 @pytest.mark.parametrize("text, line", [
