@@ -513,6 +513,10 @@ def _read_load(where: str, item: object) -> LoadSpec:
         value = table.number("value")
         during = _read_during(table)
     resisting = table.boolean("resisting", False)
+    if resisting and diagram is None and value < 0:
+        # Its sense is taken from the motion at each position, so a sign would be dropped without a word.
+        raise SceneError(table.where("value"), "a resisting load's value is its magnitude (resisting = true turns it "
+                         f"against the motion): write {-value:g}", value)
     point = table.string("point", None)
     angle = table.number("angle", None)
     if kind == "force" and (point is None or angle is None):

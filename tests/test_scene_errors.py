@@ -628,6 +628,9 @@ CASES: list[Case] = [
     Case("load-value-missing", {"loads.0.value": DELETE}, "loads[0].value", "is required but missing"),
     Case("load-value-string", {"loads.0.value": "1500"}, "loads[0].value", "must be a number, not a string (got '1500')"),
     Case("load-value-nan", {"loads.0.value": NAN}, "loads[0].value", "must be a finite number (got nan)"),
+    Case("load-resisting-negative", {"loads.0.value": -1500.0}, "loads[0].value",
+         "a resisting load's value is its magnitude (resisting = true turns it against the motion): write 1500 "
+         "(got -1500.0)"),
     Case("load-resisting-string", {"loads.0.resisting": "yes"}, "loads[0].resisting",
          "must be true or false, not a string (got 'yes')"),
     Case("load-resisting-number", {"loads.0.resisting": 1}, "loads[0].resisting",
