@@ -509,6 +509,12 @@ def test_read_motion_from_a_table_leaves_other_keys_to_their_owner():
       "(got 'running')")),
     ({"motor": {"kind": "constant", "torque": 3.0}, "start": {"driving_rpm": 5.0}},
      "dynamics.start.driving_rpm: only with a clutch"),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "start": {"rpm": -60.0}},
+     ("dynamics.start.rpm: must be >= 0: it is the speed's size, and its sense is the driver's (the sign of "
+      "driver.omega or driver.rpm) (got -60.0)")),
+    ({"motor": {"kind": "constant", "torque": 3.0}, "start": {"omega": -2.0}},
+     ("dynamics.start.omega: must be >= 0: it is the speed's size, and its sense is the driver's (the sign of "
+      "driver.omega or driver.rpm) (got -2.0)")),
     ({"motor": {"kind": "constant", "torque": 3.0}, "start": {"omega": 1.0, "rpm": 5.0}},
      "dynamics.start.rpm: give either omega or rpm, not both"),
     ({"motor": {"kind": "constant", "torque": 3.0}, "clutch": {"torque": 5.0}},
