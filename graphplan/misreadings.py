@@ -86,8 +86,9 @@ def misread(scene: Scene, drawn: Iterable[VelocityPosition]) -> tuple[PositionWa
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
                            f"{drawn_at:.4g} {unit}? (set at that scale, the readings agree)")
         if found.misread:
+            # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
-                f"{row.quantity} = {row.plan:.4g} against {plan:.4g}, "
+                f"{row.quantity} = {row.plan + 0.0:.4g} against {plan + 0.0:.4g}, "
                 + (f"{abs(row.plan - plan) / abs(plan) * 100.0:.1f} % off" if plan else "where the plan has none")
                 for row, plan in rows) for reading, rows in found.misread.items())
             details.append(f"readings more than {FAR_OFF_PERCENT:g} % and {FAR_OFF_PRECISIONS * precision:g} mm off "

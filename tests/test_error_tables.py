@@ -244,6 +244,14 @@ def test_a_reading_of_a_vanishing_velocity_is_far_off_only_beyond_the_drafting_p
     assert "inf" not in line and line.rstrip(" |").endswith("—")
 
 
+def test_a_reading_of_nothing_gives_no_negative_zero():
+    """pb read as 0 mm at position 11, where the rocker turns clockwise, was told as "omega4 = -0 against ..."."""
+    analysis = analyse(with_measured({11: {"velocity": {"pb": 0.0}}}))
+    assert rows(analysis, 11, "construction")["omega4"].plan < 0
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    assert "omega4 = 0 against " in warning.detail and "-0 " not in warning.detail
+
+
 def test_a_velocity_plan_drawn_at_another_scale_is_named_as_such_not_as_misread_lengths():
     """The worked example's readings at position 5 as a student would take them off a plan laid off with pa =
     100 mm instead of the scene's 150: every one is 2/3 of the construction, under its own few per cent.  That
