@@ -76,12 +76,17 @@ def _parser() -> argparse.ArgumentParser:
     new.add_argument("--out", type=Path, default=None, help="the scene file to write (default: KIND.toml here)")
     new.add_argument("--locale", choices=LOCALES, default="en",
                      help="the language of its drawings and note (scene.locale; its comments stay English)")
+    for command in (run, check, new):
+        command.set_defaults(command_parser=command)
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
-    arguments = _parser().parse_args(argv)
+    arguments, unknown = _parser().parse_known_args(argv)
+    if unknown:
+        # argparse hands a command's unknown options up to the top parser, whose usage lists no options at all.
+        arguments.command_parser.error(f"unrecognized arguments: {' '.join(unknown)}")
     try:
         if arguments.command == "check":
             return _check(arguments.scene)

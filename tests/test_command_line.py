@@ -324,6 +324,17 @@ def test_an_output_folder_given_as_a_link_is_written_through_the_link(tmp_path):
     assert (real / "keep.txt").read_text(encoding="utf-8") == "mine"
 
 
+@pytest.mark.parametrize("command", ["run", "check"])
+def test_an_unknown_option_of_a_command_is_told_with_that_command_s_usage(capsys, command):
+    """It printed the top-level usage, "graphplan [-h] COMMAND ...", which names none of the command's options."""
+    with pytest.raises(SystemExit) as stopped:
+        main([command, FIXTURE, "--bogus"])
+    assert stopped.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"usage: graphplan {command} [-h]")
+    assert err.endswith(f"graphplan {command}: error: unrecognized arguments: --bogus\n")
+
+
 def test_a_run_will_not_replace_the_folder_it_runs_in(tmp_path, capsys, monkeypatch):
     scene = tmp_path / "ratchet.toml"
     scene.write_text(Path(FIXTURE).read_text(encoding="utf-8"), encoding="utf-8")
