@@ -21,8 +21,9 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     folder is complete, and a failure leaves no half-written folder behind.
     What the folder holds that no run wrote there (the scene itself, a draft,
     LaTeX's own output) is carried into the new folder: a run replaces its
-    own files alone, as listed in :data:`WRITTEN`. A ``target`` that is a
-    link to a folder is written as that folder, the link left as it is.
+    own files alone, as listed in :data:`WRITTEN`, and refuses a folder
+    where a file no run wrote has the name of one of the run's. A ``target``
+    that is a link to a folder is written as that folder, the link left as it is.
     """
     target = Path(target)
     here = Path.cwd().resolve()
@@ -39,6 +40,13 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
     retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
+    if folder.is_dir():
+        # A file of the user's named as the run names one (their own note.md) would be replaced without a word.
+        theirs = [name for name in _not_written_by_a_run(folder, []) if name in written]
+        if theirs:
+            them = "it" if len(theirs) == 1 else "them"
+            raise OutputError(f"{target}: holds {', '.join(theirs)}, which no graphplan run wrote there and this run "
+                              f"would replace; move {them} away, or give --out another folder")
     carried: list[str] = []
     try:
         folder.parent.mkdir(parents=True, exist_ok=True)

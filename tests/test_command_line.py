@@ -259,6 +259,23 @@ def test_a_run_into_a_folder_keeps_what_no_run_wrote_there_and_replaces_its_own(
     assert set((folder / WRITTEN).read_text(encoding="utf-8").split()) == {"positions.svg", "results.json"}
 
 
+def test_a_run_will_not_replace_a_file_of_the_user_s_named_as_one_of_its_own(tmp_path, capsys):
+    """The README promises a run keeps what no run wrote; a note.md of the user's in a folder no run had written to
+    was replaced without a word. Now the run refuses and leaves the folder as it was."""
+    folder = tmp_path / "project"
+    folder.mkdir()
+    (folder / "note.md").write_text("MY OWN NOTES", encoding="utf-8")
+    (folder / "draft.txt").write_text("mine too", encoding="utf-8")
+    assert main(["run", FIXTURE, "--out", str(folder), "--only", "positions"]) == 0  # writes no note.md
+    capsys.readouterr()
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    assert main(["run", FIXTURE, "--out", str(folder), "--only", "note"]) == 2
+    assert capsys.readouterr().err == (f"graphplan: error: {folder}: holds note.md, which no graphplan run wrote there "
+                                       "and this run would replace; move it away, or give --out another folder\n")
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["project"]
+
+
 def test_ctrl_c_while_the_folder_is_swapped_puts_the_user_s_own_files_back(tmp_path, capsys, monkeypatch):
     """A run carries the scene and drafts beside its files into the new folder before the swap; Ctrl-C at
     the swap left them in a hidden staging folder and printed a traceback. Now the old folder is whole
