@@ -720,7 +720,8 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "docx" in formats and "note.md" in found:
         from .report.word import note_docx
 
-        found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale, pictures)
+        found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale, pictures,
+                                       author=scene.project.author)
     return found
 
 

@@ -262,6 +262,39 @@ def test_a_title_longer_than_a_document_property_holds_is_shortened_there_and_ke
     assert document.paragraphs[0].text == f"Note: {title}"
 
 
+def test_the_project_s_author_is_the_word_and_pdf_note_s_author(tmp_path):
+    """A note handed in from Word gave its author as "graphplan" though the scene's [project] names the student
+    (the title block and the note's head carry it); the PDF gave none.  Both give the student now, and the program
+    where the scene names no one."""
+    text = starter("crank-rocker", "ru").replace('# [project]\n# author       = "Иванов И. И."',
+                                                 '[project]\nauthor       = "Иванов И. И."')
+    assert '\nauthor       = "Иванов И. И."' in text
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    formats = "svg,docx,pdf" if _weasyprint() else "svg,docx"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note", "--format", formats]) == 0
+    assert docx.Document(out / "note.docx").core_properties.author == "Иванов И. И."
+    assert '<meta name="author" content="Иванов И. И.">' in (out / "note.html").read_text(encoding="utf-8")
+    if _weasyprint():
+        import pypdfium2
+
+        assert pypdfium2.PdfDocument(str(out / "note.pdf")).get_metadata_dict()["Author"] == "Иванов И. И."
+    unnamed = tmp_path / "unnamed"
+    assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(unnamed), "--only", "note",
+                 "--format", "docx"]) == 0
+    assert docx.Document(unnamed / "note.docx").core_properties.author == "graphplan"
+
+
+def _weasyprint() -> bool:
+    try:
+        import pypdfium2  # noqa: F401
+        import weasyprint  # noqa: F401
+    except (ImportError, OSError):
+        return False
+    return True
+
+
 def test_the_command_line_writes_the_note_for_word_when_asked(tmp_path):
     out = tmp_path / "out"
     assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out), "--only", "note",

@@ -92,8 +92,9 @@ def _classed_table(table: re.Match) -> str:
     return table[0].replace("<table>", f'<table class="{" ".join(classes)}">', 1) if classes else table[0]
 
 
-def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) -> str:
-    """A complete HTML5 page of ``markdown_text`` with ``title`` in its head, in language ``lang``.
+def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False, author: str = "") -> str:
+    """A complete HTML5 page of ``markdown_text`` with ``title`` (and ``author``, where given) in its head, in
+    language ``lang``; a PDF made of it takes them as its own.
 
     ``symbols`` sets the indices of the textbook's symbols (``VBA``, ``ω3``) as subscripts.
     """
@@ -110,7 +111,9 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False) ->
     body = _TABLE.sub(_classed_table, body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
-            f"<title>{html.escape(title, quote=False)}</title>\n<style>\n{_STYLE}</style>\n</head>\n<body>\n"
+            f"<title>{html.escape(title, quote=False)}</title>\n"
+            + (f'<meta name="author" content="{html.escape(author, quote=True)}">\n' if author else "")
+            + f"<style>\n{_STYLE}</style>\n</head>\n<body>\n"
             f"{body}</body>\n</html>\n")
 
 

@@ -105,7 +105,7 @@ def note_html(analysis: Analysis | None, dynamics=None, markdown: str | None = N
     assert scene is not None, "a note is of an analysis or of a scene"
     title = strings(scene.locale)["note_title"].format(title=scene.title)
     markdown = markdown if markdown is not None else note_markdown(analysis, dynamics, scene)
-    return to_html(markdown, title, scene.locale, symbols=True)
+    return to_html(markdown, title, scene.locale, symbols=True, author=scene.project.author)
 
 
 @dataclass(frozen=True)

@@ -77,9 +77,11 @@ _PICTURE_DPI = 200.0
 _MOST_PROPERTY_CHARACTERS = 255
 
 
-def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str, str] | None = None) -> bytes:
+def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str, str] | None = None,
+              author: str = "") -> bytes:
     """The explanatory note ``markdown_text`` as a Word document (the bytes of a .docx file) titled ``title``,
-    with the drawings its figures name (``plan_2.svg``) taken from ``pictures`` (file name → SVG text)."""
+    with the drawings its figures name (``plan_2.svg``) taken from ``pictures`` (file name → SVG text); its
+    author is ``author`` where the scene names one (the project's), else the program that made it."""
     document = WordDocument()
     _set_page(document)
     _set_styles(document, locale)
@@ -88,7 +90,7 @@ def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str
     properties = document.core_properties
     properties.title = _shortened(" ".join(title.split()), _MOST_PROPERTY_CHARACTERS)
     properties.language = _LANGUAGES.get(locale, locale)
-    properties.author, properties.comments = "graphplan", ""
+    properties.author, properties.comments = _shortened(author, _MOST_PROPERTY_CHARACTERS) or "graphplan", ""
     # No date (python-docx's template carries its own): the same note gives the same file.
     for dated in ("dcterms:created", "dcterms:modified", "cp:lastPrinted"):
         for element in properties._element.findall(qn(dated)):
