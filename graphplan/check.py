@@ -220,11 +220,14 @@ def _sliding_name(step: Step, vector: LaidVector, pair: SlidingPair) -> str:
     On a frame guide the sliding vector starts at the pole, where it is also
     the absolute vector (``vB``); the equation writes it as relative to the
     frame's point under the slider (``vB = … = vB1 + vBB1``).  A vector from
-    the pole already named as relative (a block pinned to the frame in a slot
-    of a moving link: ``vE6E``) keeps its name.
+    the pole already named as relative, of two points at the joint, keeps its
+    name: a block pinned to the frame in a slot of a moving link (``vE6E``),
+    an RPR's block pivoted on a frame point P, whose P3 is at the pole
+    (``vP4P3``).
     """
     named = vector.meaning.removesuffix("^r")[1:]
-    if vector.start != "p" or (named != pair.joint and named.endswith(pair.joint)):
+    at_joint = rf"{re.escape(pair.joint)}\d*"
+    if vector.start != "p" or re.fullmatch(at_joint * 2, named):
         return vector.meaning
     for term in re.split(r"\s*[=+]\s*", step.equation):
         rest = term[len(vector.meaning):].removesuffix("^r")

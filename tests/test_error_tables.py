@@ -311,3 +311,57 @@ def test_measuring_the_coriolis_segment_is_answered_with_why_it_gives_nothing():
                                          r"ak \(ak is the Coriolis component, laid off from 2·ω·v, not read off\); "
                                          r"its quantities are read from .*ka4"):
         analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ak": 16.0}}}))
+
+
+# An oscillating cylinder: crank OA turns the cylinder (lever 4) about A, whose rod's block 3 pivots on the
+# frame at P; so P3 is at the pole and the sliding velocity laid from it is vP4P3.
+OSCILLATING_CYLINDER = """
+[scene]
+title = "Oscillating cylinder"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], P = [0.3, 0.0] }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 15.0
+
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["P", "A"]
+
+[positions]
+count = 12
+plans = [3]
+
+[measured.3]
+velocity = { pp4 = 49.0 }
+"""
+
+
+def test_the_sliding_of_a_block_pivoted_on_the_frame_is_named_as_its_equation_names_it():
+    """The rows read VP4P3P4 (the vector's own name with the pair's joint and guide added again), though the
+    note's equation writes vP4 = vP3 + vP4P3; a hand reading of pp4 landed on that garbled row."""
+    analysis = analyse(graphplan.load_text(OSCILLATING_CYLINDER))
+    plan = analysis.plans[0]
+    quantities = {row.quantity for row in plan.errors}
+    assert {"VP4P3", "aP4P3^r"} <= quantities
+    assert not [quantity for quantity in quantities if "P4P3P" in quantity]
+    # ṡ and s̈ of the rod in the cylinder are the rates of the distance PA: s = |A − P|.
+    a, p, omega = plan.positions["A"], plan.positions["P"], 15.0
+    pa, v_a, a_a = a - p, 1j * omega * a, -omega**2 * a
+    s = abs(pa)
+    s_dot = (pa.conjugate() * v_a).real / s
+    s_ddot = (abs(v_a) ** 2 + (pa.conjugate() * a_a).real - s_dot**2) / s
+    construction = rows(analysis, 3, "construction")
+    assert construction["VP4P3"].plan == pytest.approx(abs(s_dot), rel=1e-9)
+    assert construction["aP4P3^r"].plan == pytest.approx(abs(s_ddot), rel=1e-9)
+    measured = rows(analysis, 3, "measured")
+    assert set(measured) == {"VP4", "VP4P3"}  # P3 is at the pole: pp4 is vP4 as well
+    assert measured["VP4P3"].plan == pytest.approx(49.0 * plan.velocity.scale, rel=1e-12)
