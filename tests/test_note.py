@@ -592,6 +592,123 @@ def test_a_named_guide_is_given_once_though_its_slider_starts_on_the_pivot():
     assert rows == ["| yoke | 0 m from O, at 90° to x |"]
 
 
+# A crank OA driving a slotted lever about C whose slide misses C by the offset.
+OFFSET_SLOTTED_LEVER = """
+[scene]
+title = "Slotted lever with an offset slide"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.0, -0.25] }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = OFFSET
+
+[positions]
+count = 12
+start = 0.0
+plans = [2]
+"""
+
+
+@pytest.mark.parametrize("offset", [0.02, -0.03])
+def test_an_rpr_slide_that_misses_the_levers_pivot_is_among_the_initial_data(offset):
+    """The offset defines the mechanism, yet the table left it out: it says how far the slide passes from the pivot C
+    and on which side, standing at C and facing the block's pin A (worked out here from the closure
+    A = C + (s + i·e)·u, the slide's foot from C at i·e·u)."""
+    analysis = analyse(graphplan.scene.loads(OFFSET_SLOTTED_LEVER.replace("OFFSET", repr(offset))))
+    a, c = complex(np.ravel(analysis.motion.points["A"].r)[0]), -0.25j
+    s = math.sqrt(abs(a - c) ** 2 - offset**2)
+    u = (a - c) / complex(s, offset)
+    foot = c + 1j * offset * u
+    towards = a - c
+    side = "left" if towards.real * (foot - c).imag - towards.imag * (foot - c).real > 0 else "right"
+    rows = [line for line in note_markdown(analysis).splitlines() if line.startswith("| slide of link 4 |")]
+    assert rows == [f"| slide of link 4 | {abs(foot - c):g} m from C, on the {side} seen from C toward A |"]
+    assert side == ("left" if offset > 0 else "right")
+
+
+def test_a_slide_through_the_levers_pivot_adds_no_row():
+    analysis = analyse(graphplan.scene.loads(OFFSET_SLOTTED_LEVER.replace("OFFSET", "0.0")))
+    assert "slide of link" not in note_markdown(analysis)
+
+
+INVERTED_SLIDER_CRANK = """
+[scene]
+title = "Inverted slider-crank: the block slides on the crank"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.2, 0.05] }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["C", "B"]
+length = 0.35
+guide = { link = 2, through = "A", angle = 30.0 }
+assembly = "forward"
+
+[positions]
+count = 12
+start = 0.0
+plans = [3]
+"""
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_guide_on_a_moving_link_is_among_the_initial_data(locale):
+    """The block B slides on a guide of the crank through A at 30° to OA, and the table did not list it at all.
+    The angle is checked on the motion: seen from the crank, B runs on the line through A at 30° to OA."""
+    scene = dataclasses.replace(graphplan.scene.loads(INVERTED_SLIDER_CRANK), locale=locale)
+    analysis = analyse(scene)
+    o, a, b = (np.broadcast_to(analysis.motion.points[name].r, (12,)) for name in ("O", "A", "B"))
+    seen_from_crank = np.degrees(np.angle((b - a) / (a - o))) % 180.0
+    assert seen_from_crank == pytest.approx(np.full(12, 30.0), abs=1e-9)
+    expected = {"en": "| guide of B | through A, at 30° to OA |",
+                "ru": "| направляющая точки B | через A, под углом 30° к OA |",
+                "zh": "| B的导路 | 过A，与OA成30° |"}[locale]
+    assert expected in note_markdown(analysis).splitlines()
+
+
+def test_a_point_off_the_line_it_is_placed_from_is_given_from_both_ends_of_that_line():
+    """The rocker CB carries a third joint D, the coupler AB a point M, each set off its line: the table gave lCD and
+    lAM only, though the similarity proportions read lBD and lBM.  Both follow from the scene's numbers: a point `at`
+    along a line of length l and `offset` off it is sqrt((l − at)² + offset²) from the line's far end."""
+    text = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    scene = tomllib.loads(text)
+    rrr = next(group for group in scene["groups"] if group["kind"] == "RRR")
+    ab, cb = rrr["lengths"]
+    points = {"D": ("C", "B", cb, 0.25 * cb, 0.06), "M": ("A", "B", ab, 0.6 * ab, -0.04)}
+    lines = [f'{name} = {{ link = {3 if start == "A" else 4}, from = "{start}", toward = "{toward}", '
+             f'at = {at!r}, offset = {offset!r} }}' for name, (start, toward, _, at, offset) in points.items()]
+    text = re.sub(r"(?m)^\[points\]$", "[points]\n" + "\n".join(lines), text)
+    note = note_markdown(analyse(dataclasses.replace(graphplan.scene.loads(text), locale="en")))
+    lengths = dict(re.findall(r"^\| (l[A-Z]\w*) \| ([\d.]+) m \|$", note, re.MULTILINE))
+    for name, (start, toward, length, at, offset) in points.items():
+        assert float(lengths[f"l{start}{name}"]) == pytest.approx(math.hypot(at, offset), rel=5e-5)
+        assert float(lengths[f"l{toward}{name}"]) == pytest.approx(math.hypot(length - at, offset), rel=5e-5)
+
+
 def test_a_link_at_rest_in_its_extreme_position_has_no_sense_of_turning():
     """At the crank-rocker's extreme ω4 is rounding's 1e-16, written 0: the note said "0 rad/s, clockwise"."""
     from graphplan.starters import starter

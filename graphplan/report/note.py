@@ -325,6 +325,7 @@ class _Note:
         self.heading(2, self.t("note_initial_data"), section)
         rows = [[label, f"{self.n(value)} {self.text['unit_m']}"] for label, value in self.lengths()]
         rows.extend(self.frame_rows())
+        rows.extend(self.moving_slide_rows())
         if driver.kind == "crank":
             omega = f"{self.n(abs(driver.omega))} {self.text['unit_rad_per_s']}{self.with_sense(driver.omega)}"
             rows.append([f"ω{driver.link}", omega])
@@ -385,8 +386,49 @@ class _Note:
                                        angle=self.n(angle))])
         return rows
 
+    def moving_slide_rows(self) -> list[list[str]]:
+        """The lines that slides run along on moving links: an RPR's slide where it misses the lever's pivot (how
+        far, on which side), and a guide a group puts on a moving link (through which point, at what angle to the
+        link's line)."""
+        metre, rows = self.text["unit_m"], []
+        for group in self.mechanism.groups:
+            if group.kind == "RPR" and group.offset != 0.0:
+                block, pivot = group.joints
+                # The scene's offset is to the left of the slide's direction, which runs from the pivot's side
+                # toward the block: standing at the pivot and facing the block, the slide passes on that side.
+                side = "note_slide_offset_left" if group.offset > 0 else "note_slide_offset_right"
+                rows.append([self.t("note_slide_line", link=group.links[1]),
+                             self.t(side, distance=f"{self.n(abs(group.offset))} {metre}", pivot=pivot, joint=block)])
+            joints = {carrier: joint for _, carrier, joint in reversed(group.sliding_pairs(self.mechanism))}
+            for guide in group.guides():
+                if guide.link is None or guide.link == self.frame or guide.link not in joints:
+                    continue
+                line = self.link_line(guide.link)
+                rows.append([self.t("note_guide_of", joint=joints[guide.link]),
+                             self.t("note_guide_on_moving_link", point=guide.through,
+                                    angle=self.n(math.degrees(guide.angle)),
+                                    line=line or self.t("note_line_of_link", link=guide.link))])
+        return rows
+
+    def link_line(self, link: int) -> str | None:
+        """The link's reference line, which a guide on it is set at an angle to, named by two of its points
+        (``OA``: the crank's pivot and pin); None where no second point lies on it (a slider's, along its guide)."""
+        motion = self.analysis.motion
+        reference = motion.links[link]
+
+        def at(name: str) -> complex:
+            return complex(np.ravel(motion.points[name].r)[0])
+
+        origin, along = at(reference.origin), complex(np.ravel(reference.u)[0])
+        ahead = [(abs(at(name) - origin), name) for name in self.mechanism.fixed_on.get(link, ())
+                 if name in motion.points and (at(name) - origin).real * along.real + (at(name) - origin).imag
+                 * along.imag > 0 and abs(cross(along, at(name) - origin)) <= _SAME * abs(at(name) - origin)]
+        return f"{reference.origin}{max(ahead)[1]}" if ahead else None
+
     def lengths(self) -> list[tuple[str, float]]:
-        """The constant distances between the points of each link that the construction uses (lOA, lAB, lAS3, ...)."""
+        """The constant distances between the points of each link that the construction uses (lOA, lAB, lAS3, ...);
+        a point off the line it is placed from (a coupler point M, a third joint D of a rocker) from both ends of
+        that line, the two sides that fix it and that its similarity proportions read."""
         motion, found, seen = self.analysis.motion, [], set()
 
         def add(first: str, second: str) -> None:
@@ -408,6 +450,8 @@ class _Note:
                     add(first, second)
             for spec in unit.points:
                 add(spec.start, spec.name)
+                if spec.offset != 0.0:
+                    add(spec.toward, spec.name)
         return found
 
     # Kinematics of one position.
