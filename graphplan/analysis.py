@@ -286,7 +286,8 @@ def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[Posi
     def apart(one: float, other: float) -> float:
         return abs((one - other + math.pi) % turn - math.pi)
 
-    # The extremes lie inside the sweep's brackets, whose middles the reversals are: a bracket is half a degree.
+    # The extremes are two of the reversals, the same roots; the others lie at least a step of the sweep (half a
+    # degree) from them, or the sweep would not have told them apart.
     others = [value for value in positions.reversals
               if min(apart(value, extreme) for extreme in positions.extremes) > math.radians(0.5)]
     if not others:
@@ -295,12 +296,13 @@ def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[Posi
                for index, value in enumerate(positions.values)}
     where = min(nearest, key=nearest.get)
     working, driver = mechanism.scene.positions.working, mechanism.driver
-    angles = ", ".join(f"{math.degrees(value) % 360.0:.1f}" for value in sorted(positions.reversals,
+    # As precise as the extremes beside them, and printed to the same hundredth of a degree.
+    angles = ", ".join(f"{math.degrees(value) % 360.0:.2f}" for value in sorted(positions.reversals,
                                                                                key=lambda v: v % turn))
     start, end = (math.degrees(value) % 360.0 for value in positions.extremes)
     return (PositionWarning(where, "extra-reversals",
                             f"link {working.link} turns back {len(positions.reversals)} times a turn of link "
-                            f"{driver.link} (at about {angles}°), not twice: its working stroke is taken from "
+                            f"{driver.link} (at {angles}°), not twice: its working stroke is taken from "
                             f"{start:.2f}° to {end:.2f}°, the longest it makes in its working sense, and each "
                             f"position's stroke follows its sense of motion there; if it should swing once a "
                             f"turn, check the lengths"),)

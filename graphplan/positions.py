@@ -45,10 +45,10 @@ class PositionSet:
 
     ``extremes`` are the driver coordinates where the working stroke starts
     and where it ends (the idle stroke starts), when the scene names the
-    working link.  ``reversals`` are the driver coordinates, to half a
-    degree, of every turn back of the working link over the crank's turn:
-    the two extremes, and more where the link swings to and fro more than
-    once a turn.
+    working link.  ``reversals`` are the driver coordinates, as precise as
+    the extremes, of every turn back of the working link over the crank's
+    turn: the two extremes, and more where the link swings to and fro more
+    than once a turn.
     """
 
     values: np.ndarray
@@ -220,8 +220,8 @@ def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Re
 
 def _find_extremes(mechanism: Mechanism, start: float,
                    reference: Reference) -> tuple[float, float, tuple[float, ...]]:
-    """Driver angles where the working stroke starts and ends, to machine precision, and where the working
-    link turns back at all (the middles of the sweep's brackets, in the driver's order from ``start``)."""
+    """Driver angles where the working stroke starts and ends, and where the working link turns back at all (in
+    the driver's order from ``start``), each to machine precision."""
     driver = mechanism.driver
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
@@ -233,7 +233,11 @@ def _find_extremes(mechanism: Mechanism, start: float,
     def speeds_at(angles: Sequence[float]) -> np.ndarray:
         return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]
 
-    found = {}
+    def zero_in(index: int) -> float:
+        lo, hi = steps[index], steps[index + 1]
+        return float(lo) if speed[index] == 0 else _zero_between(speeds_at, float(lo), float(hi))
+
+    found, roots = {}, {}
     before, after = speed[:-1], speed[1:]
     # A sign change is a turn back where the speed passes through zero, not through a singular position (a
     # toggle of a later group, where it runs off to infinity and back from the other side).
@@ -248,9 +252,10 @@ def _find_extremes(mechanism: Mechanism, start: float,
                              f"link {working.link if working else '?'} never reverses its motion, so it has no extreme position")
         # Several reversals (a dwell, a six-bar): take the one that begins the longest stroke.
         index = max(candidates, key=lambda i: _stroke_length(speed[:-1], i, rising))
-        lo, hi = steps[index], steps[index + 1]
-        found[name] = float(lo) if speed[index] == 0 else _zero_between(speeds_at, float(lo), float(hi))
-    reversals = tuple(float(steps[i] + steps[i + 1]) / 2.0 for i in np.flatnonzero(rises | falls))
+        found[name] = roots[index] = zero_in(index)
+    # Each turn back found as closely as the extremes: where there are more than two, a warning prints them all
+    # in the sentence that gives the extremes.
+    reversals = tuple(roots[i] if i in roots else zero_in(i) for i in np.flatnonzero(rises | falls))
     return found["working"], found["idle"], reversals
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import warnings
 
 import numpy as np
@@ -247,3 +248,83 @@ def test_a_working_sense_the_travel_never_gives_is_warned_of_with_the_load_it_dr
     assert all(np.all(load.force == 0) for load in analysis.loads if load.name.startswith("F4"))
     right = analyse(scene_from_text(SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")))
     assert set(right.positions.strokes) == {"working"} and not [w for w in right.warnings if w.code == "idle-throughout"]
+
+
+# The tester's scene: a crank-rocker whose ternary rocker CBD drives a slotted lever 6 about F through a block at D.
+TERNARY_ROCKER = """
+[scene]
+title = "Crank-rocker with a ternary rocker driving a slotted lever"
+
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.3, 0.05], F = [0.45, 0.3] }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.08
+omega = 10.0
+
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.28, 0.2]
+assembly = "left"
+
+[[groups]]
+kind = "RPR"
+links = [5, 6]
+joints = ["D", "F"]
+
+[points]
+D = { link = 4, from = "C", toward = "B", at = 0.15, offset = -0.07 }
+
+[positions]
+count = 12
+start = "extreme"
+working = { link = 6, sense = "ccw" }
+"""
+
+
+def test_the_warning_gives_each_turn_back_as_precisely_as_the_extremes():
+    """It printed 'at about 43.0, 169.0, 230.0, 292.0°' in the sentence that gives the extremes as 292.24° and
+    43.20°: the middles of the sweep's half-degree brackets, rounded.  Each is now the root of the lever's speed,
+    checked here against the roots of dθ6/dφ of the linkage closed afresh: the circles about A and C crossed at B,
+    D set off CB, θ6 the direction FD."""
+    from scipy.optimize import brentq
+
+    analysis = analyse(graphplan.scene.loads(TERNARY_ROCKER))
+    o, c, f = 0j, 0.3 + 0.05j, 0.45 + 0.3j
+    first_b = complex(np.ravel(analysis.motion.points["B"].r)[0])
+    first_angle = float(analysis.positions.values[0])
+
+    def b_of(phi: float, side: float) -> complex:
+        a = o + 0.08 * np.exp(1j * phi)
+        ac = c - a
+        along = (0.28**2 - 0.2**2 + abs(ac) ** 2) / (2 * abs(ac))
+        return a + ac / abs(ac) * complex(along, side * math.sqrt(0.28**2 - along**2))
+
+    # The assembly the scene chose, told by where B stands at the first position.
+    side = min((1.0, -1.0), key=lambda s: abs(b_of(first_angle, s) - first_b))
+
+    def theta6(phi: float) -> float:
+        b = b_of(phi, side)
+        along = (b - c) / abs(b - c)
+        return float(np.angle(c + (0.15 - 0.07j) * along - f))
+
+    def rate(phi: float, h: float = 1e-6) -> float:
+        return (theta6(phi + h) - theta6(phi - h)) / (2 * h)
+
+    grid = np.radians(np.arange(0.0, 361.0, 1.0))
+    rates = np.array([rate(phi) for phi in grid])
+    roots = sorted(math.degrees(brentq(rate, grid[i], grid[i + 1], xtol=1e-13)) % 360.0
+                   for i in np.flatnonzero(np.sign(rates[:-1]) != np.sign(rates[1:])))
+    assert len(roots) == 4
+    (warning,) = [w for w in analysis.warnings if w.code == "extra-reversals"]
+    printed = re.search(r"turns back 4 times a turn of link 2 \(at ([\d., ]+)°\)", warning.detail)[1].split(", ")
+    assert printed == [f"{root:.2f}" for root in roots]
+    found = sorted(math.degrees(value) % 360.0 for value in analysis.positions.reversals)
+    assert found == pytest.approx(roots, abs=1e-6)
