@@ -394,7 +394,7 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
                 readable = dict.fromkeys("".join(r.segment) for r in table if r.plan == kind)
                 # The Coriolis vector is laid off from 2·ω·v, not found by the construction: nothing to read.
                 coriolis = (f" ({segment[0]}{segment[1]} is the Coriolis component, laid off from 2·ω·v, not read off)"
-                            if kind == "acceleration" and any(letter.startswith("k") for letter in segment) else "")
+                            if set(segment) & _coriolis_ends(plans[kind]) else "")
                 raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}{coriolis}; its "
                                  f"quantities are read from {', '.join(readable)}")
             for reading in matches:
@@ -402,6 +402,11 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
                                      reading.value(plans, millimetres), "measured", f"{segment_name} = {millimetres:g} mm",
                                      abs(reading.value(plans, 1.0))))
     return rows
+
+
+def _coriolis_ends(plan: Plan) -> set[str]:
+    """The letters that end the plan's Coriolis components (``k``, ``k3``); a point named K has the image k."""
+    return {vector.end for step in plan.steps for vector in step.vectors if vector.meaning.endswith("ᵏ")}
 
 
 def split_segment(name: str, letters: list[str], where: str) -> tuple[str, str]:

@@ -3,6 +3,7 @@
 import dataclasses
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -365,3 +366,28 @@ def test_the_sliding_of_a_block_pivoted_on_the_frame_is_named_as_its_equation_na
     measured = rows(analysis, 3, "measured")
     assert set(measured) == {"VP4", "VP4P3"}  # P3 is at the pole: pp4 is vP4 as well
     assert measured["VP4P3"].plan == pytest.approx(49.0 * plan.velocity.scale, rel=1e-12)
+
+
+def test_a_point_named_k_keeps_its_letter_and_the_coriolis_end_takes_the_sliders_number():
+    """With a point K on the crank the Coriolis end was k′, which Chinese notation reads as K's own image on the
+    acceleration plan; and a reading from k (K's image) was refused as 'the Coriolis component'.  Now the Coriolis
+    end is k3 (block 3's), in the plans and their readings alike, and k is K's: πk reads aK, which is checked
+    here against aK = (iε2 − ω2²)·OK of the crank turning at the fixture's ω2 = 8 rad/s, ε2 = 0."""
+    text = Path("fixtures/quick_return_slotted_lever.toml").read_text(encoding="utf-8")
+    text = text.replace("[points]\n", '[points]\nK  = { link = 2, from = "O", toward = "A", at = 0.09, offset = 0.04 }\n')
+    scene = graphplan.scene.loads(text)
+    number = scene.positions.plans[0]
+    plan = next(p for p in analyse(scene).plans if p.number == number)
+    coriolis = [v for step in plan.acceleration.steps for v in step.vectors if v.meaning.endswith("ᵏ")]
+    assert [(v.start, v.end) for v in coriolis] == [("a", "k3")]
+    assert not [letter for letter in plan.acceleration.points if "′" in letter]
+    a_k = (0j - 8.0**2) * (plan.positions["K"] - plan.positions["O"])
+    assert abs(plan.acceleration.value("K")) == pytest.approx(abs(a_k), rel=1e-9)
+    pk = abs(a_k) / plan.acceleration.scale
+    measured = analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"πk": pk}}}))
+    (row,) = [r for r in measured.errors if r.position == number and r.source == "measured"]
+    assert (row.quantity, row.plan) == ("aK", pytest.approx(abs(a_k), rel=1e-12))
+    with pytest.raises(SceneError, match=r"no quantity read from ak3 \(ak3 is the Coriolis component"):
+        analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ak3": 10.0}}}))
+    with pytest.raises(SceneError, match=r"no quantity read from ka4; its quantities are read from .*k3a4"):
+        analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ka4": 10.0}}}))

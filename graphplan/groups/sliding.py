@@ -24,13 +24,16 @@ def guide_link(mechanism, guide: Guide) -> int:
 
 
 def coriolis_letter(board: Builder, slider: int) -> str:
-    """``k`` for the end of the Coriolis component, ``k`` + the slider's link number when the mechanism has several.
+    """``k`` for the end of the Coriolis component, ``k`` + the slider's link number (``k3``) when the mechanism
+    has several, or when a point of it is named K, whose image keeps the letter k.
 
-    Primed (``k′``) when a point of the mechanism is named K, so that its image keeps the letter.
+    Not primed, as a free letter otherwise is: k′ is the Chinese textbooks' letter of K's own image on the
+    acceleration plan, and the readings would take a segment to K's image for the Coriolis component.
     """
     count = sum(len(group.coriolis_sliders(board.mechanism)) for group in board.mechanism.groups)
-    base = free_letter(board, "k")
-    return base if count <= 1 else f"{base}{slider}"
+    if count <= 1 and free_letter(board, "k") == "k":
+        return "k"
+    return free_letter(board, f"k{slider}")
 
 
 def coriolis(omega: float, relative: complex) -> complex:
