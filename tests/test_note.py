@@ -762,3 +762,29 @@ def test_a_chinese_note_s_friction_loads_join_their_formulas_with_the_full_width
     rho = force_report.number(journal.f * journal.radius)
     assert any(f"= {rho} m；Mf" in line for line in rubbing)
     assert any(line.startswith(f"- f′{slide.joint} = {force_report.number(slide.f)}；Ff") for line in rubbing)
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_slider_driven_backward_keeps_the_sign_of_its_rate_and_gives_the_modulus(locale):
+    """The rod driven back along its cylinder (ṡ = −0.08 m/s, s̈ = −0.02 m/s²): the note wrote VA = ṡ = 0.08 m/s
+    along its guide, a positive ṡ where the table of data gives −0.08.  It writes the signed rate, then the modulus
+    of the vector, which points against the guide; the vector's length is checked on the analytic motion."""
+    text = (FIXTURES / "slider_driven.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^velocity( *)= 0\.08", r"velocity\1= -0.08", text)
+    text = re.sub(r"(?m)^acceleration( *)= 0\.0 ", r"acceleration\1= -0.02 ", text)
+    scene = dataclasses.replace(graphplan.scene.loads(text), locale=locale)
+    analysis = analyse(scene)
+    guide = 1.0 + 0j  # the cylinder's axis, along +x
+    v_a = complex(np.ravel(analysis.motion.points["A"].v)[0])
+    a_a = complex(np.ravel(analysis.motion.points["A"].a)[0])
+    assert (v_a / guide).real == pytest.approx(-0.08) and (a_a / guide).real == pytest.approx(-0.02)
+    mark = "," if locale == "ru" else "."
+    speed, rate = f"{abs(v_a):g}".replace(".", mark), f"{abs(a_a):g}".replace(".", mark)
+    unit = {"ru": ("м/с", "м/с²")}.get(locale, ("m/s", "m/s²"))
+    note = note_markdown(analysis)
+    assert f"ṡ = −{speed} {unit[0]}" in note and f"VA = |ṡ| = {speed} {unit[0]}" in note
+    assert f"s̈ = −{rate} {unit[1]}" in note and f"aA = |s̈| = {rate} {unit[1]}" in note
+    assert "VA = ṡ" not in note and "aA = s̈" not in note
+    against = {"en": "against the direction of its guide", "ru": "противоположную её положительному направлению",
+               "zh": "与导路的正向相反"}[locale]
+    assert note.count(against) == 2 * len(analysis.plans)

@@ -577,7 +577,14 @@ class _Note:
         if driver.kind == "slider":
             symbol = "ṡ" if velocity else "s̈"
             key = "note_slider_velocity" if velocity else "note_slider_acceleration"
-            self.para(self.t(key, equation=f"{'V' if velocity else 'a'}{joint} = {symbol} = {self.n(value)} {unit}"))
+            rate = driver.velocity if velocity else driver.acceleration
+            vector = f"{'V' if velocity else 'a'}{joint}"
+            if rate >= 0:
+                self.para(self.t(key, equation=f"{vector} = {symbol} = {self.n(value)} {unit}"))
+                return
+            # Moving (or speeding up) backward: the rate keeps its sign, the vector's modulus is its size.
+            self.para(self.t(f"{key}_against", rate=f"{symbol} = {self.n(rate)} {unit}",
+                             equation=f"{vector} = |{symbol}| = {self.n(value)} {unit}"))
             return
         length = f"l{driver.pivot}{joint}"
         omega, epsilon, arm = abs(driver.omega), driver.epsilon, driver.length
