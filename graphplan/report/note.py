@@ -399,7 +399,9 @@ class _Note:
                 side = "note_slide_offset_left" if group.offset > 0 else "note_slide_offset_right"
                 rows.append([self.t("note_slide_line", link=group.links[1]),
                              self.t(side, distance=f"{self.n(abs(group.offset))} {metre}", pivot=pivot, joint=block)])
-            joints = {carrier: joint for _, carrier, joint in reversed(group.sliding_pairs(self.mechanism))}
+            joints: dict[int, str] = {}  # the joint that slides on each link, the group's first on it
+            for _, carrier, joint in group.sliding_pairs(self.mechanism):
+                joints.setdefault(carrier, joint)
             for guide in group.guides():
                 if guide.link is None or guide.link == self.frame or guide.link not in joints:
                     continue
@@ -420,9 +422,11 @@ class _Note:
             return complex(np.ravel(motion.points[name].r)[0])
 
         origin, along = at(reference.origin), complex(np.ravel(reference.u)[0])
-        ahead = [(abs(at(name) - origin), name) for name in self.mechanism.fixed_on.get(link, ())
-                 if name in motion.points and (at(name) - origin).real * along.real + (at(name) - origin).imag
-                 * along.imag > 0 and abs(cross(along, at(name) - origin)) <= _SAME * abs(at(name) - origin)]
+        ahead = []  # (how far, name) of the link's points on its line, on the side the line points to
+        for name in self.mechanism.fixed_on.get(link, ()):
+            arm = at(name) - origin if name in motion.points else 0j
+            if (arm / along).real > 0 and abs(cross(along, arm)) <= _SAME * abs(arm):
+                ahead.append((abs(arm), name))
         return f"{reference.origin}{max(ahead)[1]}" if ahead else None
 
     def lengths(self) -> list[tuple[str, float]]:
