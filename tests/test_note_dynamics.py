@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 from xml.etree import ElementTree
@@ -188,3 +189,155 @@ def test_the_dynamics_of_a_scene_with_friction_says_its_moments_leave_the_fricti
                             encoding="utf-8")
     assert main(["run", str(frictionless), "--out", str(tmp_path / "bare"), "--only", "note,dynamics"]) == 0
     assert words not in (tmp_path / "bare" / "note.md").read_text(encoding="utf-8")
+
+
+# A machine known by its load diagram alone, driven at 60 rpm: 100 N·m of resistance over 240° of the turn and 400 N·m
+# over the rest, a mean of 200 N·m that the motor's line or Kloss curve carries; the shaper's motor and gear.
+MACHINE = ('[scene]\ntitle = "A machine"\nlocale = "{locale}"\n[dynamics]\nrpm = 60\ndelta = 0.05\ninertia = 1.5\n'
+           'resisting_torque = [[0, 100], [240, 100], [240, 400], [360, 400]]\n{motor}\n')
+KLOSS = ('motor = { kind = "kloss", power = 3000.0, overload = 2.2, synchronous_rpm = 1500.0, rated_rpm = 1440.0, '
+         'gear_ratio = 24.7, rotor_inertia = 0.004 }')
+# A number as a note of any language writes it: a decimal point or comma.
+WRITTEN = r"(−?\d+(?:[.,]\d+)?)"
+
+
+def machine_note(tmp_path: Path, motor: str, locale: str = "en") -> tuple[str, str, dict]:
+    """The note (Markdown and HTML) and results of :data:`MACHINE` driven by ``motor``."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(MACHINE.format(locale=locale, motor=motor), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note"]) == 0
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    return ((out / "note.md").read_text(encoding="utf-8"), (out / "note.html").read_text(encoding="utf-8"), results)
+
+
+def numbers(pattern: str, text: str) -> list[float]:
+    found = re.search(pattern.replace("{N}", WRITTEN), text)
+    assert found, pattern
+    return [value(group.replace(",", ".")) for group in found.groups()]
+
+
+def written_as(result: float, written: float, text: str) -> bool:
+    """``result`` of the written operands rounds to ``written``, given to the decimals of ``text``."""
+    decimals = len(text.partition(".")[2])
+    return abs(result - written) <= 0.5 * 10.0 ** -decimals * (1 + 1e-9)
+
+
+def close(written: float, exact: float) -> bool:
+    return written == pytest.approx(exact, rel=5e-5)
+
+
+def test_a_kloss_motor_is_worked_out_from_its_rated_point_to_the_crank(tmp_path):
+    """The note named no motor at all: a reader met Md(ω) with nothing to say what it is.  Kloss' motor from the
+    scene's numbers: ωN = 2π·1440/60, MN = P/ωN, Mmax = λ·MN, sk = sN·(λ + √(λ² − 1)), the starting torque
+    2·Mmax/(1/sk + sk) at s = 1, each u = 24.7 times on the crank, and each equation true as it is written."""
+    note, html, _ = machine_note(tmp_path, KLOSS)
+    synchronous, rated_speed, slip = 1500 * math.pi / 30, 1440 * math.pi / 30, 1 - 1440 / 1500
+    lam, power, u = 2.2, 3000.0, 24.7
+    rated = power / rated_speed
+    breakdown = lam * rated
+    critical = slip * (lam + math.sqrt(lam ** 2 - 1))
+    starting = 2 * breakdown / (1 / critical + critical)
+    assert "Kloss' formula M = 2·Mmax/(s/sk + sk/s) of the slip s = 1 − ωmot/ωs" in note
+    ws, sn, wn = numbers(r"ωs = {N} rad/s \(1500 rpm\), rated slip sN = {N}, so that the rated speed is "
+                         r"ωN = ωs·\(1 − sN\) = {N} rad/s \(1440 rpm\)", note)
+    assert close(ws, synchronous) and close(sn, slip) and close(wn, rated_speed)
+    p, w, mn = numbers(r"MN = P/ωN = {N}/{N} = {N} N·m", note)
+    assert close(mn, rated) and written_as(p / w, mn, str(mn)) and w == wn
+    lam_written, m, mmax = numbers(r"Mmax = λ·MN = {N}·{N} = {N} N·m", note)
+    assert close(mmax, breakdown) and m == mn and written_as(lam_written * m, mmax, str(mmax))
+    s, lam_again, lam_squared, sk = numbers(r"sk = sN·\(λ \+ √\(λ² − 1\)\) = {N}·\({N} \+ √\({N}² − 1\)\) = {N}", note)
+    assert close(sk, critical) and s == sn and lam_again == lam_squared == lam
+    assert written_as(s * (lam + math.sqrt(lam ** 2 - 1)), sk, str(sk))
+    m, s, s_again, start = numbers(r"2·Mmax/\(1/sk \+ sk\) = 2·{N}/\(1/{N} \+ {N}\) = {N} N·m", note)
+    assert close(start, starting) and m == mmax and s == s_again == sk
+    assert written_as(2 * m / (1 / s + s), start, str(start))
+    ratio, m, on_crank, speed, most, at_rest = numbers(
+        r"u·MN = {N}·{N} = {N} N·m at ω = ωN/u = {N} rad/s, u·Mmax = {N} N·m, {N} N·m at rest", note)
+    assert ratio == u and m == mn and close(on_crank, u * rated) and close(speed, rated_speed / u)
+    assert close(most, u * breakdown) and close(at_rest, u * starting)
+    # Each index set as one, as the note's other symbols are.
+    assert "M<sub>max</sub> = λ·M<sub>N</sub>" in html and "s<sub>k</sub> = s<sub>N</sub>·(λ" in html
+
+
+def test_the_equation_of_motion_is_the_one_integrated_with_the_rotor_reduced_through_the_gear(tmp_path):
+    """The note wrote Je(φ)·dω/dt + ½·Je′(φ)·ω² = Md(ω) − Mr(φ) while the run integrates with the flywheel and the
+    motor's rotor, 0.004 kg·m² turning 24.7 times as fast: 0.004·24.7² = 2.4404 kg·m² more on the crank.  The
+    flywheel by hand: the constant 200 N·m outruns 100 N·m over 240°, ΔWmax = 100·4π/3, JF = ΔWmax/(ωm²·δ) − 1.5."""
+    note, html, _ = machine_note(tmp_path, KLOSS)
+    assert ("as it is integrated: (Je(φ) + JF + Jrot·u²)·dω/dt + ½·Je′(φ)·ω² = Md(ω) − Mr(φ); Je(φ) is the "
+            "machine's reduced moment of inertia") in note
+    flywheel, = numbers(r"JF = {N} kg·m² the flywheel on the driving shaft", note)
+    assert close(flywheel, 100 * 4 * math.pi / 3 / ((2 * math.pi) ** 2 * 0.05) - 1.5)
+    rotor, ratio, reduced, rotor_again = numbers(
+        r"Jrot·u² = {N}·{N}² = {N} kg·m² the motor's rotor, Jrot = {N} kg·m², reduced to the driving shaft", note)
+    assert rotor == rotor_again == 0.004 and ratio == 24.7 and close(reduced, 0.004 * 24.7 ** 2)
+    assert "(J<sub>e</sub>(φ) + J<sub>F</sub> + J<sub>rot</sub>·u²)·dω/dt" in html
+
+
+@pytest.mark.parametrize(("locale", "patterns"), [
+    ("ru", (r"Mн = P/ωн = {N}/{N} = {N} Н·м", r"Mк = λ·Mн = {N}·{N} = {N} Н·м",
+            r"sк = sн·\(λ \+ √\(λ² − 1\)\) = {N}·\({N} \+ √\({N}² − 1\)\) = {N}",
+            r"\(Jп\(φ\) \+ Jм \+ Jрот·u²\)·dω/dt \+ ½·Jп′\(φ\)·ω² = Mд\(ω\) − Mс\(φ\)", r"Jрот·u² = {N}·{N}² = {N} кг·м²")),
+    ("zh", (r"MN = P/ωN = {N}/{N} = {N} N·m", r"Mmax = λ·MN = {N}·{N} = {N} N·m",
+            r"sm = sN·\(λ \+ √\(λ² − 1\)\) = {N}·\({N} \+ √\({N}² − 1\)\) = {N}",
+            r"\(Je\(φ\) \+ JF \+ Jrot·i²\)·dω/dt \+ ½·Je′\(φ\)·ω² = Md\(ω\) − Mr\(φ\)", r"Jrot·i² = {N}·{N}² = {N} kg·m²"))])
+def test_the_motor_and_the_equation_are_written_as_the_language_s_textbooks_write_them(tmp_path, locale, patterns):
+    """Russian: Mн, Mк, sк, sн, Jрот by формула Клосса; Chinese: MN, Mmax, sm, sN and the gear ratio i by 克罗斯公式;
+    the numbers those of the English note's closed forms."""
+    note, _, _ = machine_note(tmp_path, KLOSS, locale)
+    assert ("формулой Клосса" if locale == "ru" else "克罗斯公式") in note
+    rated = 3000.0 / (1440 * math.pi / 30)
+    _, _, mn = numbers(patterns[0], note)
+    _, _, mmax = numbers(patterns[1], note)
+    *_, sk = numbers(patterns[2], note)
+    assert close(mn, rated) and close(mmax, 2.2 * rated) and close(sk, 0.04 * (2.2 + math.sqrt(2.2 ** 2 - 1)))
+    assert re.search(patterns[3], note)
+    *_, reduced = numbers(patterns[4], note)
+    assert close(reduced, 0.004 * 24.7 ** 2)
+
+
+@pytest.mark.parametrize(("motor", "expected"), [
+    # Through (0 rpm, 90 N·m) and (1000 rpm, 30 N·m): M0 = 90 N·m, n0 = 1500 rpm; on the crank 4·90 and ω0/4.
+    ('motor = { kind = "linear", points = [[0, 90], [1000, 30]], gear_ratio = 4.0 }',
+     {r"stall torque M0 = {N} N·m at rest to none at its no-load speed ω0 = {N} rad/s \(1500 rpm\)":
+      (90.0, 1500 * math.pi / 30),
+      r"Md\(ω\) = u·M0·\(1 − u·ω/ω0\): u·M0 = {N}·{N} = {N} N·m at rest, none at ω = ω0/u = {N} rad/s":
+      (4.0, 90.0, 360.0, 1500 * math.pi / 30 / 4)}),
+    ('motor = { kind = "constant", torque = 60.0, gear_ratio = 4.0 }\nduration = 5.0',
+     {r"a constant torque M = {N} N·m\. Through a gear of ratio u = ωmot/ω = 4, it drives the driving shaft with "
+      r"Md = u·M = {N}·{N} = {N} N·m at every speed": (60.0, 4.0, 60.0, 240.0)}),
+    ('motor = { kind = "constant", torque = 240.0 }\nduration = 5.0',
+     {r"Mounted directly \(u = 1\), it drives the driving shaft with Md = u·M = {N}·{N} = {N} N·m": (1.0, 240.0, 240.0)}),
+])
+def test_a_linear_or_constant_motor_is_described_with_its_numbers_on_its_shaft_and_the_crank_s(tmp_path, motor,
+                                                                                               expected):
+    """Two points fix the line M = M0·(1 − ωmot/ω0) the scene's stall torque and no-load speed would; a constant
+    torque is u times as much on the crank; a motor without a gear reduces nothing.  Without rotor_inertia the
+    rotor is said to be left out of the equation, not left out silently."""
+    note, _, _ = machine_note(tmp_path, motor)
+    for pattern, exact in expected.items():
+        assert all(close(written, value) for written, value in zip(numbers(pattern, note), exact, strict=True))
+    assert "(Je(φ) + JF)·dω/dt" in note and "the motor's rotor is left out, the scene giving it no rotor_inertia" in note
+
+
+def test_a_clutch_gives_each_half_its_equation_while_it_slips_and_one_when_it_locks(tmp_path):
+    """Motor off, the driving half (2 kg·m² at 100 rad/s) clutched to the machine (4 kg·m², 1 N·m of resistance)
+    through 20 N·m.  The note's slipping equations, 4·dω/dt = 20 − 1 and 2·dωd/dt = 0 − 20, put the lock where
+    100 − 10·t = 4.75·t, which is when the note says the halves lock; after it the two turn as 6 kg·m²."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text('[scene]\ntitle = "clutch"\n[dynamics]\nrpm = 300\ninertia = 4.0\n'
+                     "resisting_torque = [[0, 1], [360, 1]]\n"
+                     'motor = { kind = "constant", torque = 10.0, off_at = 0.0 }\n'
+                     "clutch = { torque = 20.0, engage_at = 0.0, inertia = 2.0 }\n"
+                     "start = { omega = 0.0, driving_omega = 100.0 }\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "note"]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    html = (tmp_path / "out" / "note.html").read_text(encoding="utf-8")
+    assert ("while the clutch slips, Je(φ)·dω/dt + ½·Je′(φ)·ω² = Mcl − Mr(φ) on the machine's side and "
+            "Jcl·dωd/dt = Md(ωd) − Mcl on the driving half's") in note
+    assert "once its halves turn together, (Je(φ) + Jcl)·dω/dt + ½·Je′(φ)·ω² = Md(ω) − Mr(φ)" in note
+    half, = numbers(r"Jcl = {N} kg·m² the clutch's driving half", note)
+    locked, = numbers(r"its halves slip until t = {N} s", note)
+    assert half == 2.0 and locked == pytest.approx(100.0 / (20.0 / half + 19.0 / 4.0), rel=1e-3)
+    assert "J<sub>cl</sub>·dω<sub>d</sub>/dt = M<sub>d</sub>(ω<sub>d</sub>) − M<sub>cl</sub>" in html

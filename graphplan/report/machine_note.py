@@ -139,16 +139,15 @@ def _method_reason(note: Writer, dynamics) -> str:
 
 
 def _motion(note: Writer, dynamics, flywheel) -> None:
-    motion = dynamics.motion
-    mounted = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
-        if dynamics.flywheel_inertia > 0 else ""
-    note.para(note.t("note_dyn_motion", flywheel=mounted, method=motion.method, reason=_method_reason(note, dynamics)))
-    if dynamics.spec.motion.clutch is not None:
+    motion, spec = dynamics.motion, dynamics.spec.motion
+    _motor(note, spec.motor)
+    _equation(note, dynamics)
+    if spec.clutch is not None:
         _clutch(note, dynamics)
-    brake = dynamics.spec.motion.brake
+    brake = spec.brake
     if brake is not None:
         note.para(note.t("note_dyn_brake", at=note.n(brake.at, 4), torque=note.n(brake.torque),
-                         damping=note.n(brake.damping)))
+                         damping=note.n(brake.damping), equation=_shaft_equation(note, dynamics, braked=True)))
     steady = motion.steady
     # Stopped with the motor on is a stall; stopped after it was switched off, a run-down.
     run_down = motion.stalled_at is None and motion.stopped_at is not None
@@ -171,6 +170,115 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
         note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
     if run_down:
         _run_down(note, dynamics)
+
+
+def _motor(note: Writer, motor) -> None:
+    """The motor's characteristic with its numbers, and the driving moment it gives the driving shaft through its
+    gear, ``Md(ω) = u·M(u·ω)``: the scene gives the motor on its own shaft, the equation of motion takes it on the
+    crank's.  Each operand is written to the digits that make its equations come out as written
+    (:func:`shown_operand`)."""
+    from ..machine_motion import ConstantTorque, KlossMotor
+
+    u = motor.gear_ratio
+    # A motor on the driving shaft itself has no gear to name, and u = 1 reduces nothing.
+    gear = note.t("note_dyn_gear", ratio=note.n(u)) if u != 1 else note.text["note_dyn_gear_direct"]
+    ratio = read_number(note, note.n(u))
+    if isinstance(motor, ConstantTorque):
+        driving = note.n(u * motor.torque)
+        note.para(note.t("note_dyn_motor_constant", gear=gear, ratio=note.n(u), driving=driving,
+                         torque=shown_operand(note, motor.torque, [(lambda m: ratio * m, driving)])))
+    elif isinstance(motor, KlossMotor):
+        _kloss(note, motor, gear)
+    else:  # linear, by its stall torque and no-load speed or through two points, which fix the same line
+        stall_shaft, no_load_shaft = note.n(u * motor.stall_torque), note.n(motor.no_load / u)
+        note.para(note.t("note_dyn_motor_linear", gear=gear, ratio=note.n(u), rpm=note.n(motor.no_load / RPM),
+                         stall=shown_operand(note, motor.stall_torque, [(lambda m: ratio * m, stall_shaft)]),
+                         no_load=shown_operand(note, motor.no_load, [(lambda w: w / ratio, no_load_shaft)]),
+                         stall_shaft=stall_shaft, no_load_shaft=no_load_shaft))
+
+
+def _kloss(note: Writer, motor, gear: str) -> None:
+    """An induction motor by Kloss' formula: from its rated point and overload capacity to its breakdown torque,
+    critical slip and starting torque, on its own shaft and on the driving shaft."""
+    u, lam = motor.gear_ratio, motor.overload
+    sk = motor.critical_slip
+    starting = 2.0 * motor.max_torque / (1.0 / sk + sk)
+    ratio, overload = read_number(note, note.n(u)), read_number(note, note.n(lam))
+    written = {"rated_shaft": note.n(u * motor.rated_torque), "rated_speed_shaft": note.n(motor.rated_speed / u),
+               "max_shaft": note.n(u * motor.max_torque), "starting_shaft": note.n(u * starting),
+               "starting": note.n(starting)}
+    # Each operand is settled after the equations it is an operand of have theirs: sk and Mmax give the starting
+    # torque, sN gives sk, MN gives Mmax, ωN gives MN, ωs and sN give ωN.
+    written["critical"] = shown_operand(note, sk, [(lambda s: 2.0 * motor.max_torque / (1.0 / s + s),
+                                                    written["starting"])])
+    critical = read_number(note, written["critical"])
+    written["max"] = shown_operand(note, motor.max_torque, [
+        (lambda m: 2.0 * m / (1.0 / critical + critical), written["starting"]), (lambda m: ratio * m, written["max_shaft"])])
+    written["slip"] = shown_operand(note, motor.rated_slip, [
+        (lambda s: s * (overload + math.sqrt(overload ** 2 - 1.0)), written["critical"])])
+    written["rated"] = shown_operand(note, motor.rated_torque, [
+        (lambda m: overload * m, written["max"]), (lambda m: ratio * m, written["rated_shaft"])])
+    power = read_number(note, note.n(motor.power))
+    written["rated_speed"] = shown_operand(note, motor.rated_speed, [
+        (lambda w: power / w, written["rated"]), (lambda w: w / ratio, written["rated_speed_shaft"])])
+    slip = read_number(note, written["slip"])
+    written["synchronous"] = shown_operand(note, motor.synchronous_speed, [
+        (lambda w: w * (1.0 - slip), written["rated_speed"])])
+    note.para(note.t("note_dyn_motor_kloss", gear=gear, ratio=note.n(u), power=note.n(motor.power),
+                     overload=note.n(lam), synchronous_rpm=note.n(motor.synchronous_speed / RPM),
+                     rated_rpm=note.n(motor.rated_speed / RPM), **written))
+
+
+def _shaft_equation(note: Writer, dynamics, braked: bool = False, slipping: bool = False) -> str:
+    """The equation of motion of the driving shaft as the run integrates it: the machine's Je(φ) with the flywheel,
+    and the motor's rotor and the clutch's driving half where they turn with it (not while a clutch slips: the
+    driving half then has its own equation, and the machine is driven by the clutch's torque)."""
+    text = note.text
+    inertia = [text["dyn_inertia_symbol"] + "(φ)"]
+    if dynamics.flywheel_inertia > 0:
+        inertia.append(text["note_dyn_flywheel_symbol"])
+    if not slipping:
+        inertia += _driving_half(note, dynamics)
+    return note.t("note_dyn_equation", inertia=_sum(inertia),
+                  driving=text["note_dyn_clutch_torque_symbol" if slipping else "note_dyn_driving_symbol"],
+                  braking=text["note_dyn_braking_symbol"] if braked else "")
+
+
+def _sum(terms: list[str]) -> str:
+    """Inertias added up, in brackets where there are several, so that the sum multiplies dω/dt as a whole."""
+    return " + ".join(terms) if len(terms) == 1 else "(" + " + ".join(terms) + ")"
+
+
+def _driving_half(note: Writer, dynamics) -> list[str]:
+    """The inertias that turn with the motor: its rotor reduced to the driving shaft and a clutch's driving half."""
+    spec = dynamics.spec.motion
+    inertia = [note.text["note_dyn_rotor_symbol"]] if spec.motor.rotor_inertia > 0 else []
+    if spec.clutch is not None and spec.clutch.inertia > 0:
+        inertia.append(note.text["note_dyn_clutch_symbol"])
+    return inertia
+
+
+def _equation(note: Writer, dynamics) -> None:
+    """The equation of motion as it is integrated, each inertia in it with its value, and the integrator."""
+    spec = dynamics.spec.motion
+    motor, clutch = spec.motor, spec.clutch
+    if clutch is None:
+        equation = _shaft_equation(note, dynamics)
+    else:
+        equation = note.t("note_dyn_equation_clutch", machine=_shaft_equation(note, dynamics, slipping=True),
+                          driving=note.t("note_dyn_equation_half", inertia=_sum(_driving_half(note, dynamics))),
+                          locked=_shaft_equation(note, dynamics))
+    terms = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
+        if dynamics.flywheel_inertia > 0 else ""
+    if motor.rotor_inertia > 0:
+        terms += note.t("note_dyn_motion_rotor", rotor=note.n(motor.rotor_inertia), ratio=note.n(motor.gear_ratio),
+                        value=note.n(motor.reduced_inertia))
+    if clutch is not None and clutch.inertia > 0:
+        terms += note.t("note_dyn_motion_clutch", value=note.n(clutch.inertia))
+    if motor.rotor_inertia == 0:  # missing from the sum, which a reader would otherwise take for an oversight
+        terms += note.text["note_dyn_motion_no_rotor"]
+    note.para(note.t("note_dyn_motion", equation=equation, terms=terms, method=dynamics.motion.method,
+                     reason=_method_reason(note, dynamics)))
 
 
 def _clutch(note: Writer, dynamics) -> None:

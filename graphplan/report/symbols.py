@@ -18,7 +18,8 @@ from typing import NamedTuple
 
 # base, index, component: the symbols of the plan method and of the force analysis.
 SYMBOL = re.compile(
-    r"(?<![A-Za-z_])(?:"
+    # A derivative's d stands before the speed it differentiates: dωd/dt is d of ωd.
+    r"(?:(?<![A-Za-z_])|(?<=(?<![A-Za-z_])d)(?=ω))(?:"
     r"(?P<base>[Va]|l)(?P<index>[A-ZΣ][A-Z0-9Σ]*)(?P<component>ⁿ|ᵏ|\^τ|\^r)?"
     r"|(?P<base12>a)(?P<component12>\^τ)"
     r"|(?P<base2>[ωε])(?P<index2>\d+)"
@@ -40,6 +41,11 @@ SYMBOL = re.compile(
     # works: Au, Ad, Af (Wr, Wd, Wf; Aпс, Aдв, Aтр).
     r"|(?P<base13>ΔW)(?P<index13>max)|(?P<base17>ΔT)(?P<index17>нб)|(?P<base14>[AW])(?P<index14>[dfru]|[дс]|пс|дв|тр)"
     r"|(?P<base15>ω)(?P<index15>max|min|m|ср)|(?P<base16>v)(?P<index16>S)"
+    # The motor: its rated (MN, ωN, sN; Mн, ωн, sн), breakdown (Mmax; Mк) and critical (sk, sm; sк) values, its
+    # synchronous and own speeds (ωs; ωдв, ωmot), its rotor (Jrot; Jрот); a clutch's driving half (Jcl, Mcl, ωd;
+    # Jмуф, Mмуф, ωд); a brake (Mt).
+    r"|(?P<base22>M)(?P<index22>max|cl|муф|[Ntнк])|(?P<base23>s)(?P<index23>[kmNкн])"
+    r"|(?P<base24>ω)(?P<index24>mot|дв|[sNdнд])|(?P<base25>J)(?P<index25>rot|cl|рот|муф)"
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
