@@ -15,10 +15,13 @@ how far the graphical derivative strays from the exact one.
 The output link is ``[positions] working.link``.  Its displacement is its
 angle ψ (rad) for a turning link and its travel along its own direction (m)
 for a translating one, counted from the first position and positive in the
-working sense.  The driver is taken to move uniformly at the scene's speed,
-so that its coordinate is a time axis (``t = φ/|ω|``, or ``t = s/|v|`` for a
-slider); a scene's ε of the crank (s̈ of a slider) is left out of the
-acceleration so that both methods describe the same motion.
+working sense.  A link that turns round (it never turns back, so it has no
+extremes and no strokes) goes on past a whole turn: its angle turned,
+unwrapped, grows by a turn over each turn it makes.  The driver is taken to
+move uniformly at the scene's speed, so that its coordinate is a time axis
+(``t = φ/|ω|``, or ``t = s/|v|`` for a slider); a scene's ε of the crank (s̈
+of a slider) is left out of the acceleration so that both methods describe
+the same motion.
 
 A crank that turns round gives one cycle, closed: the last interval runs back
 to the first position, and the chord across the end of the cycle gives the
@@ -280,8 +283,9 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     along = np.linspace(0.0, span, samples + 1)
     nodes = step * np.arange(intervals + 1)
     midpoints = step * (np.arange(intervals) + 0.5)
-    motion = solve(mechanism, start + driver.sense * np.concatenate((along, nodes, midpoints)), positions.reference)
-    s_all = _displacement(mechanism, motion)
+    travelled = np.concatenate((along, nodes, midpoints))
+    motion = solve(mechanism, start + driver.sense * travelled, positions.reference)
+    s_all = _displacement(mechanism, motion, travelled)
     v_all, output_rate = working_speed(motion)
     # A uniformly moving driver: the acceleration its ε (s̈) adds belongs to no single driver speed.
     a_all = output_rate - rate * v_all / speed
@@ -351,8 +355,9 @@ def _read_off_plans(analysis: Analysis, record: KinematicDiagrams) -> tuple[tupl
     return tuple(found)
 
 
-def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:
-    """The output link's travel from the first value of ``motion``, positive in the working sense."""
+def _displacement(mechanism: Mechanism, motion: Motion, travelled: np.ndarray) -> np.ndarray:
+    """The output link's travel from the first value of ``motion``, positive in the working sense; ``travelled``
+    is how far the driver has gone at each value of ``motion`` (the first 0), in any order."""
     working = mechanism.scene.positions.working
     assert working is not None
     link = motion.links[working.link]
@@ -362,8 +367,12 @@ def _displacement(mechanism: Mechanism, motion: Motion) -> np.ndarray:
         along = np.broadcast_to(dot(link.u, motion.points[link.origin].r), shape)
         return sign * (along - along[0]) + 0.0   # + 0.0: no −0 at the first position
     angle = np.broadcast_to(np.asarray(link.angle, dtype=float), shape)
-    # A rocker swings through less than a half turn: its angle wrapped about the first stays continuous.
-    return sign * np.angle(np.exp(1j * (angle - angle[0]))) + 0.0
+    # Unwrapped in the order the driver meets the values: a link that turns round goes on past a whole turn
+    # rather than jumping back by one, and a rocker's swing across ±180° from its first angle stays whole.
+    order = np.argsort(travelled, kind="stable")
+    turned = np.empty(len(angle))
+    turned[order] = np.unwrap(angle[order] - angle[0])
+    return sign * turned + 0.0
 
 
 # A derivative's diagram this many times its field tall even at the shortest pole distance is out of reach of the

@@ -48,7 +48,10 @@ class PositionSet:
     working link.  ``reversals`` are the driver coordinates, as precise as
     the extremes, of every turn back of the working link over the crank's
     turn: the two extremes, and more where the link swings to and fro more
-    than once a turn.
+    than once a turn.  ``working_link_turns`` is how many times a working link
+    that never turns back goes round in a turn of the crank, positive in its
+    working sense; it has then no extremes and no strokes (0 for one that
+    swings to and fro, or without a working link).
     """
 
     values: np.ndarray
@@ -57,6 +60,7 @@ class PositionSet:
     reference: Reference
     extremes: tuple[float, float] | None
     reversals: tuple[float, ...] = ()
+    working_link_turns: int = 0
 
     def stroke_turns(self, sense: int) -> tuple[float, float] | None:
         """How far the crank turns (rad) in the working stroke and in the idle one, turning the way ``sense``
@@ -78,27 +82,28 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
     if not driver.cyclic:  # a slider's travel, a rocking crank's swing: from one end to the other
         values = np.linspace(driver.travel[0], driver.travel[1], spec.count)
         reference = _first_reference(mechanism, float(values[0]), int(numbers[0]), f"driver.{driver.run_key}")
-        extremes, reversals = None, ()
+        extremes, reversals, turns = None, (), 0
     else:
         start = _first_value(mechanism)
         # With start = "extreme" the first position is found later; the branches are chosen at 0° first.
         reference = reference_at(mechanism, start) if spec.start == "extreme" else \
             _first_reference(mechanism, start, int(numbers[0]), "positions.start")
-        extremes, reversals = None, ()
+        extremes, reversals, turns = None, (), 0
         if spec.working is not None:
-            extremes, reversals, reference = _settle_extremes(mechanism, start, reference)
+            extremes, reversals, turns, reference = _settle_extremes(mechanism, start, reference)
             if spec.start == "extreme":
                 start = extremes[0]
                 reference = reference_at(mechanism, start)
         values = start + driver.sense * 2.0 * math.pi * np.arange(spec.count) / spec.count
     strokes = None
-    if spec.working is not None:
+    # A link that turns round is in no stroke: every position of it would be "working", or "idle" against its sense.
+    if spec.working is not None and not turns:
         motion = solve(mechanism, values, reference, numbers, tolerant=True)
         if not driver.cyclic:   # a crank's turn was swept for its extremes already
             require_moving(motion)
         strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes,
-                       reversals=reversals)
+                       reversals=reversals, working_link_turns=turns)
 
 
 def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: str) -> Reference:
@@ -194,20 +199,22 @@ def in_working_stroke(motion: Motion) -> np.ndarray:
 
 
 def _settle_extremes(mechanism: Mechanism, start: float, reference: Reference):
-    """The extremes and every reversal, with branches chosen at the first position (a ``near`` branch may
-    depend on it)."""
+    """The extremes, every reversal and the working link's turns (:attr:`PositionSet.working_link_turns`), with
+    branches chosen at the first position (a ``near`` branch may depend on it)."""
     for _ in range(3):
-        *extremes, reversals = _find_extremes(mechanism, start, reference)
+        extremes, reversals, turns = _find_extremes(mechanism, start, reference)
+        if extremes is None:  # a link that turns round: the positions start where the scene says
+            return None, (), turns, reference
         first = extremes[0] if mechanism.scene.positions.start == "extreme" else start
         settled = reference_at(mechanism, first)
         if settled.branches == reference.branches:
-            return tuple(extremes), reversals, reference
+            return extremes, reversals, 0, reference
         # A triad's branch holds its pose where it was chosen: chosen again at the first position, the same
         # assembly is another branch, whose extremes are those just found.
         if _same_assembly(mechanism, first, reference, settled):
-            return tuple(extremes), reversals, settled
+            return extremes, reversals, 0, settled
         reference = settled
-    return tuple(extremes), reversals, reference
+    return extremes, reversals, 0, reference
 
 
 def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Reference) -> bool:
@@ -219,9 +226,11 @@ def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Re
 
 
 def _find_extremes(mechanism: Mechanism, start: float,
-                   reference: Reference) -> tuple[float, float, tuple[float, ...]]:
+                   reference: Reference) -> tuple[tuple[float, float] | None, tuple[float, ...], int]:
     """Driver angles where the working stroke starts and ends, and where the working link turns back at all (in
-    the driver's order from ``start``), each to machine precision."""
+    the driver's order from ``start``), each to machine precision; for a link that turns round and never turns
+    back, no extremes but its turns in the crank's (:attr:`PositionSet.working_link_turns`), where the scene asks
+    for nothing that needs extremes."""
     driver = mechanism.driver
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
@@ -244,6 +253,10 @@ def _find_extremes(mechanism: Mechanism, start: float,
     through_zero = np.minimum(np.abs(before), np.abs(after)) < np.median(np.abs(speed[np.isfinite(speed)]))
     rises = through_zero & (before <= 0) & (after > 0)
     falls = through_zero & (before >= 0) & (after < 0)
+    turns = 0 if (rises | falls).any() else _turns_round(mechanism, sweep)
+    if turns:
+        _refuse_needing_extremes(mechanism)
+        return None, (), turns
     for name, rising, crossing in (("working", True, rises), ("idle", False, falls)):
         candidates = np.flatnonzero(crossing)
         if len(candidates) == 0:
@@ -256,7 +269,44 @@ def _find_extremes(mechanism: Mechanism, start: float,
     # Each turn back found as closely as the extremes: where there are more than two, a warning prints them all
     # in the sentence that gives the extremes.
     reversals = tuple(roots[i] if i in roots else zero_in(i) for i in np.flatnonzero(rises | falls))
-    return found["working"], found["idle"], reversals
+    return (found["working"], found["idle"]), reversals, 0
+
+
+def _turns_round(mechanism: Mechanism, sweep: Motion) -> int:
+    """How many times the working link goes round over ``sweep`` (a crank's turn), positive in its working
+    sense: 0 for a translating link, or for a turning one that comes back to its angle without going round."""
+    working = mechanism.scene.positions.working
+    assert working is not None
+    if working.link in mechanism.translating:
+        return 0
+    angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
+    # A half-degree step of the crank turns the link through less than half a turn, away from a toggle.
+    turned = float(np.sum(np.angle(np.exp(1j * np.diff(angle)))))
+    sign = 1 if working.sense == "ccw" else -1
+    return sign * round(turned / (2.0 * math.pi))
+
+
+def _refuse_needing_extremes(mechanism: Mechanism) -> None:
+    """Refuse what needs the extremes of a working link that turns round, naming the key that asks for them: a
+    start at the extreme, a load of one stroke (or of a window of the working stroke, or along a diagram of it)."""
+    scene = mechanism.scene
+    working = scene.positions.working
+    assert working is not None
+    told = f"link {working.link} turns round and never reverses its motion, so it has no extreme position"
+    if scene.positions.start == "extreme":
+        raise SceneError("positions.start", f'"extreme" needs the extreme positions of the working link, but '
+                         f"{told}: start the positions at a crank angle in degrees", "extreme")
+    for load in scene.loads:
+        if load.diagram is not None:
+            raise SceneError(f"{load.where}.diagram", "a load diagram over the working stroke needs the strokes "
+                             f"of the working link, but {told} for one to begin at: make the load a value that "
+                             "acts always")
+        if load.during != "always":
+            what = f"a load of the {load.during} stroke" if isinstance(load.during, str) else \
+                "a window of the working stroke"
+            written = load.during if isinstance(load.during, str) else dict(zip(("from", "to"), load.during))
+            raise SceneError(f"{load.where}.during", f"{what} needs the strokes of the working link, but {told} "
+                             "for one to begin at: use always", written)
 
 
 # A working link's speed this small beside its largest is rounding's: the link stands still.
