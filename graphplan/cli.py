@@ -134,10 +134,24 @@ def _check(path: Path) -> int:
         working, idle = turns
         print(f"strokes: working φw = {math.degrees(working):.2f}°, idle φi = {math.degrees(idle):.2f}°, "
               f"K = φw/φi = {working / idle:.4f}")
+    elif analysis.positions.working_link_turns:
+        print(f"strokes: none: {_turning_round(analysis)}")
     print(pieces)
     _print_warnings(analysis)
     _print_outcomes(scene, analysis)
     return 0
+
+
+def _turning_round(analysis: Analysis) -> str:
+    """How a working link that turns round goes round, which is all there is to say of its strokes."""
+    working = analysis.scene.positions.working
+    turns = analysis.positions.working_link_turns
+    times = {1: "once", 2: "twice"}.get(abs(turns), f"{abs(turns)} times")
+    # The sense it turns in, which its diagrams count against where it is not the working sense the scene gives.
+    sense = working.sense if turns > 0 else {"ccw": "cw", "cw": "ccw"}[working.sense]
+    against = "" if turns > 0 else f", against positions.working's {working.sense}"
+    return (f"link {working.link} turns round {times} a turn of the crank ({sense}{against}) and never turns back, "
+            "so it has no extreme positions and no K")
 
 
 def _print_outcomes(scene: Scene, analysis: Analysis | None) -> None:

@@ -10,15 +10,18 @@ checked against that angle, unwrapped, and its finite differences.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
 
 from graphplan.analysis import analyse
+from graphplan.cli import main
 from graphplan.errors import SceneError
 from graphplan.kinematic_diagrams import closed_chord_derivative, kinematic_diagrams
 from graphplan.mechanism import build
 from graphplan.positions import make_positions
+from graphplan.report.note import note_markdown
 from graphplan.scene import loads
 
 O, C = np.array([0.0, 0.0]), np.array([0.2, 0.05])
@@ -144,3 +147,20 @@ def test_a_load_that_always_acts_on_a_link_that_turns_round_is_balanced_by_the_p
     phi, h = analysis.positions.values, 1e-6
     omega3 = (psi3(phi + h) - psi3(phi - h)) / (2 * h) * OMEGA
     assert np.abs(analysis.equilibrium.balancing) == pytest.approx(10.0 * np.abs(omega3) / OMEGA, rel=1e-7)
+
+
+def test_check_and_the_note_say_the_link_turns_round_and_has_no_k(tmp_path, capsys):
+    path = tmp_path / "turning.toml"
+    path.write_text(scene_text(), encoding="utf-8")
+    assert main(["check", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert ("strokes: none: link 3 turns round once a turn of the crank (ccw) and never turns back, so it has no "
+            "extreme positions and no K") in out.splitlines()
+    assert "diagrams" in re.search(r"run writes: (.*)", out)[1]
+    path.write_text(scene_text(sense="cw"), encoding="utf-8")
+    assert main(["check", str(path)]) == 0
+    assert "(ccw, against positions.working's cw)" in capsys.readouterr().out
+    note = note_markdown(analyse(loads(scene_text())))
+    assert ("The working link 3 turns round, 1 turn to a turn of the crank, and never turns back: it has no extreme "
+            "positions, and so no working and idle strokes and no coefficient K of the change of its mean speed.") in note
+    assert "φw" not in note and "K = " not in note

@@ -41,7 +41,7 @@ from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import Reading
 from ..errors import SceneError
 from ..kinematics import cross
-from ..locale import strings
+from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.drawings import length_scale
 from ..scales import format_scale, standard_scale
@@ -349,6 +349,9 @@ class _Note:
             # K ≥ 1 where the working stroke is the slower one, as a machine that works in one stroke is laid out.
             quicker = f" {self.t('note_strokes_quicker')}" if working / idle < 1.0 - 1e-6 else ""
             self.para(strokes + quicker)
+        elif self.analysis.positions.working_link_turns:
+            self.para(self.t("note_turns_round", link=scene.positions.working.link,
+                             turns=Count(abs(self.analysis.positions.working_link_turns))))
 
     def frame_rows(self) -> list[list[str]]:
         """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
