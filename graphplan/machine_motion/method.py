@@ -153,7 +153,8 @@ def choose_method(equations: Equations, omega_run: float, rtol: float, atol: flo
     """The solver for these equations, the reason in words, and the stiffness number.
 
     The stiffness number is the largest decay rate ``−∂(dω/dt)/∂ω`` over a turn and over speeds
-    up to the running speed (a steep motor characteristic gives most of it: ``|dMd/dω|/J``),
+    up to the running speed and the motor's no-load speed (a steep motor characteristic gives most of
+    it: ``|dMd/dω|/J``),
     times the step RK45 takes for accuracy near the running speed (:func:`_explicit_step`).
     Above ``STIFFNESS_THRESHOLD`` stability, not accuracy, would hold the explicit step: LSODA
     is chosen (it switches to BDF where the problem is stiff and back to Adams where it is not;
@@ -164,6 +165,10 @@ def choose_method(equations: Equations, omega_run: float, rtol: float, atol: flo
     inertia_driving = equations.driving_inertia if equations.clutch is not None else 0.0
     angles = np.linspace(0.0, TWO_PI, 24, endpoint=False)
     speeds = omega_run * np.array([0.05, 0.25, 0.5, 0.75, 0.9, 0.97, 1.0, 1.03])
+    # An induction motor is steepest at nought slip (M′ = 2·Mmax/sk), a little above the running speed and
+    # between the probes above: its synchronous speed on the shaft is probed too.
+    if motor.shaft_no_load_speed is not None:
+        speeds = np.append(speeds, motor.shaft_no_load_speed)
     on = equations.motor_off_at is None or equations.motor_off_at > 0
 
     def acceleration(phi: float, omega: float) -> float:
