@@ -19,7 +19,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import simpson, trapezoid
 
 from .joint_friction import FrictionPair
 from .kinematics import dot, unit
@@ -67,6 +66,8 @@ def cycle_work(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fri
     driver = mechanism.driver
     if not driver.cyclic or not friction:
         return None
+    from scipy.integrate import trapezoid  # imported here: a third of a cold run, and only friction needs it
+
     even = positions.values[0] + driver.sense * np.linspace(0.0, 2.0 * math.pi, count + 1)
     sweep = with_switches(even, lambda values: _state(mechanism, positions, friction, values))
     motion = solve(mechanism, sweep, positions.reference, tolerant=True)
@@ -92,6 +93,8 @@ def cycle_work(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fri
 def _integral(values: np.ndarray, sweep: np.ndarray) -> float:
     """∫ values d(sweep): Simpson's rule over each smooth piece, the slivers a switch's two sides leave between
     the pieces by the trapezoid (they hold no work to speak of, but a jump's two values)."""
+    from scipy.integrate import simpson, trapezoid
+
     step = float(np.max(np.abs(np.diff(sweep))))
     cuts = np.flatnonzero(np.abs(np.diff(sweep)) <= 2.0 * SWITCH_TOLERANCE * step) + 1
     pieces = np.split(np.arange(len(sweep)), cuts)

@@ -243,3 +243,15 @@ def test_the_balancing_plot_shades_a_lock_and_keeps_its_axis_to_the_loads_that_m
     bottom, top = plot.get_ylim()
     assert max(frictionless) < top <= 1.1 * LOCKED_REACH * max(frictionless) and bottom < 0.0
     pyplot.close(figure)
+
+
+def test_a_scene_without_friction_is_analysed_without_importing_scipy_s_integrators():
+    """The cycle's works imported scipy.integrate with the analysis, for every scene: a cold run of the bundled
+    scene, which has no friction, took a fifth longer (bench/cold_run.py)."""
+    import subprocess
+    import sys
+
+    code = ("import sys, graphplan; from graphplan.analysis import analyse; "
+            "analyse(graphplan.load('fixtures/ratchet_crank_rocker.toml')); print('scipy.integrate' in sys.modules)")
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert found.stdout.strip() == "False"
