@@ -210,8 +210,12 @@ def _run(arguments: argparse.Namespace) -> int:
     pieces = chosen(scene, analysis, only)
     progress.say("drawing and writing the tables")
     outcomes: list[str] = []
-    written = write_folder(arguments.out if arguments.out is not None else Path("output") / path.stem,
-                           files(scene, analysis, pieces, formats, warn=outcomes.append))
+    found = files(scene, analysis, pieces, formats, warn=outcomes.append)
+    # A format none of the pieces comes in (docx with no note, dxf of the accuracy's plots) is said, not dropped.
+    outcomes += [f"--format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
+                 f"{', '.join(pieces)})" for kind in formats if kind != "svg"
+                 and not any(name.endswith(f".{kind}") for name in found)]
+    written = write_folder(arguments.out if arguments.out is not None else Path("output") / path.stem, found)
     print(f"{scene.title}")
     if analysis is not None:
         print(f"structure: {analysis.mechanism.structure}")

@@ -375,3 +375,17 @@ def test_figures_of_a_machine_without_a_mechanism_are_refused_naming_the_flag_gi
     error = capsys.readouterr().err.strip().splitlines()
     assert error == ["graphplan: error: --figures: 'figures' needs a mechanism: the scene has no [frame] and [driver]"]
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("only, kind", [("positions", "docx"), ("accuracy", "dxf")])
+def test_a_format_none_of_the_pieces_comes_in_is_said_not_dropped(tmp_path, capsys, only, kind):
+    """--only positions --format docx wrote no note.docx and --only accuracy --format dxf no DXF, without a word;
+    the run says so, and writes what it would (PNG, where a drawing is asked, still comes)."""
+    out = tmp_path / "out"
+    capsys.readouterr()
+    assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out), "--only", only,
+                 "--format", f"{kind},png"]) == 0
+    told = [line for line in capsys.readouterr().out.splitlines() if line.startswith("warning: --format")]
+    assert told == [f"warning: --format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
+                    f"{only})"]
+    assert not list(out.glob(f"*.{kind}")) and list(out.glob("*.png"))
