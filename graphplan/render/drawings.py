@@ -8,9 +8,9 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from ..analysis import Analysis, PlanPosition, instant
+from ..analysis import Analysis, PlanPosition, VelocityPosition, instant
 from ..errors import SceneError
-from ..forces import POLYGON_FIELD_MM, polygon_extent
+from ..forces import POLYGON_FIELD_MM, GroupForces, polygon_extent
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
@@ -85,27 +85,15 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
     """Refuse a plan or force polygon that a scale the scene gives draws larger than any paper, naming the key
     and the value that draws it at its usual size: such a drawing is a slip of the unit, and written out it is
     an SVG metres wide that no viewer opens."""
-    drawing = analysis.scene.drawing
-    driver = analysis.mechanism.driver.joint
-    for position in (*analysis.velocity_plans, *analysis.plans):
-        plans_of = position.plans if isinstance(position, PlanPosition) else {"velocity": position.velocity}
-        for kind, plan in plans_of.items():
-            across = spread(plan) / plan.scale
-            if not across > LARGEST_PAPER_MM:  # NaN too: a singular position's plan is refused elsewhere
-                continue
-            fitting = spread(plan) / PLAN_FIELD_MM
-            if getattr(drawing, f"{kind}_scale") is not None:
-                key, given, fix = f"drawing.{kind}_scale", getattr(drawing, f"{kind}_scale"), format_scale(
-                    standard_scale(fitting))
-            else:
-                key, given = f"drawing.{kind}_pole", getattr(drawing, f"{kind}_pole")
-                fix = f"{max(1, math.floor(abs(plan.value(driver)) / fitting)):d}"
-            raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
-                             f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {PLAN_FIELD_MM:g} mm "
-                             "plan), or leave it out for the program to choose", given)
-    polygons = [(position, group) for position in analysis.plans
-                for found in (position.forces, position.with_friction) if found is not None and not found.locked
-                for group in found.groups]
+    for position, kind, plan in _drawn_plans(analysis):
+        across = spread(plan) / plan.scale
+        if not across > LARGEST_PAPER_MM:  # NaN too: a singular position's plan is refused elsewhere
+            continue
+        key, given, fix = _plan_scale(analysis, kind, plan)
+        raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
+                         f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {PLAN_FIELD_MM:g} mm "
+                         "plan), or leave it out for the program to choose", given)
+    polygons = _drawn_polygons(analysis)
     for position, group in polygons:
         across = polygon_extent(group.polygon) / group.scale
         if across > LARGEST_PAPER_MM:
@@ -114,7 +102,7 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
                              f"{position.number} {across:.3g} mm across, more than any paper ({LARGEST_PAPER_MM:g} "
                              f"mm): give {format_scale(standard_scale(largest / POLYGON_FIELD_MM))} (the largest "
                              f"polygon {POLYGON_FIELD_MM:g} mm), or leave it out for the program to choose",
-                             drawing.force_scale)
+                             analysis.scene.drawing.force_scale)
 
 
 def below_reading(analysis: Analysis) -> list[str]:
@@ -128,35 +116,48 @@ def below_reading(analysis: Analysis) -> list[str]:
             told.append(f"drawing.length_scale: draws the paths of the points {extent / drawing.length_scale:.3g} mm "
                         f"across, too small to read; {format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} draws a "
                         f"{POSITIONS_FIELD_MM:g} mm plan of positions")
-    driver = analysis.mechanism.driver.joint
     for kind in ("velocity", "acceleration"):
-        plans_of = [position.plans[kind] for position in analysis.plans if kind in position.plans]
-        if kind == "velocity":
-            plans_of += [position.velocity for position in analysis.velocity_plans]
-        drawn = [(spread(plan) / plan.scale, plan) for plan in plans_of if spread(plan) > 0.0]
+        drawn = [(spread(plan) / plan.scale, plan) for _, plan_kind, plan in _drawn_plans(analysis)
+                 if plan_kind == kind and spread(plan) > 0.0]
         if not drawn:
             continue
         across, plan = max(drawn, key=lambda pair: pair[0])
-        if across >= READABLE_SHARE * PLAN_FIELD_MM:
-            continue
-        fitting = spread(plan) / PLAN_FIELD_MM
-        if getattr(drawing, f"{kind}_scale") is not None:
-            key, fix = f"drawing.{kind}_scale", format_scale(standard_scale(fitting))
-        elif getattr(drawing, f"{kind}_pole") is not None:
-            key, fix = f"drawing.{kind}_pole", f"{max(1, math.floor(abs(plan.value(driver)) / fitting)):d}"
-        else:
-            continue
-        told.append(f"{key}: draws the largest {kind} plan {across:.3g} mm across, too small to read; {fix} draws it "
-                    f"{PLAN_FIELD_MM:g} mm")
+        key, given, fix = _plan_scale(analysis, kind, plan)
+        if across < READABLE_SHARE * PLAN_FIELD_MM and given is not None:
+            told.append(f"{key}: draws the largest {kind} plan {across:.3g} mm across, too small to read; {fix} draws "
+                        f"it {PLAN_FIELD_MM:g} mm")
     if drawing.force_scale is not None:
-        largest = max((polygon_extent(group.polygon) for position in analysis.plans
-                       for found in (position.forces, position.with_friction) if found is not None and not found.locked
-                       for group in found.groups), default=0.0)
+        largest = max((polygon_extent(group.polygon) for _, group in _drawn_polygons(analysis)), default=0.0)
         if 0.0 < largest / drawing.force_scale < READABLE_SHARE * POLYGON_FIELD_MM:
             told.append(f"drawing.force_scale: draws the largest force polygon {largest / drawing.force_scale:.3g} mm "
                         f"across, too small to read; {format_scale(standard_scale(largest / POLYGON_FIELD_MM))} draws it "
                         f"{POLYGON_FIELD_MM:g} mm")
     return told
+
+
+def _drawn_plans(analysis: Analysis) -> list[tuple[VelocityPosition | PlanPosition, str, Plan]]:
+    """(position, kind, plan) of every plan drawn: the velocity plans of every position, then the plan sheets'."""
+    return [(position, kind, plan) for position in (*analysis.velocity_plans, *analysis.plans)
+            for kind, plan in (position.plans if isinstance(position, PlanPosition)
+                               else {"velocity": position.velocity}).items()]
+
+
+def _drawn_polygons(analysis: Analysis) -> list[tuple[PlanPosition, GroupForces]]:
+    """(position, group) of every force polygon drawn: each group's, without friction and with it where it moves."""
+    return [(position, group) for position in analysis.plans
+            for found in (position.forces, position.with_friction) if found is not None and not found.locked
+            for group in found.groups]
+
+
+def _plan_scale(analysis: Analysis, kind: str, plan: Plan) -> tuple[str, float | None, str]:
+    """The key that sets ``kind``'s plans' scale (μ itself, or the pole distance), its value in the scene, and the
+    value of it that draws ``plan`` as large as its field."""
+    drawing = analysis.scene.drawing
+    fitting = spread(plan) / PLAN_FIELD_MM
+    if getattr(drawing, f"{kind}_scale") is not None:
+        return f"drawing.{kind}_scale", getattr(drawing, f"{kind}_scale"), format_scale(standard_scale(fitting))
+    fix = f"{max(1, math.floor(abs(plan.value(analysis.mechanism.driver.joint)) / fitting)):d}"
+    return f"drawing.{kind}_pole", getattr(drawing, f"{kind}_pole"), fix
 
 
 def with_length_scale(analysis: Analysis) -> Analysis:
