@@ -158,6 +158,12 @@ class Found:
     force: complex
     offset: float | None = None
 
+    @property
+    def back(self) -> Found:
+        """The same reaction as the target acts back on the source: ``R32`` of ``R23``."""
+        return replace(self, name=f"R{self.target}{self.source}", source=self.target, target=self.source,
+                       force=-self.force)
+
 
 @dataclass(frozen=True)
 class GroupForces:
@@ -319,8 +325,8 @@ class ForceBoard:
         if at is not None and at != self.positions[found.joint]:
             point = f"{found.joint}({found.name})"
             self.positions[point] = at
-        reverse = f"R{found.target}{found.source}"
-        self.applied.setdefault(found.source, []).append(Load(reverse, found.source, point, -found.force, 0.0))
+        back = found.back
+        self.applied.setdefault(found.source, []).append(Load(back.name, found.source, point, back.force, 0.0))
 
     def finish_group(self, label: str, links: tuple[int, ...], polygon: Polygon) -> None:
         loads = tuple(load for link in links for load in self.loads_on(link))

@@ -34,7 +34,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from shapely.geometry import LineString, MultiPoint, Polygon
 from shapely.geometry import Point as ShapelyPoint
@@ -556,9 +556,7 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
     # The outer pairs only (an inner reaction is not drawn on the group): the reactions the group finds, and those a
     # later group found, which act back on the group's links on the same line (R32 = −R23, on R23's tangent).
     outer = [found for found in group.found if found.source not in group.links]
-    outer += [replace(found, name=f"R{found.target}{found.source}", source=found.target, target=found.source,
-                      force=-found.force)
-              for found in sheet.forces.reactions.values()
+    outer += [found.back for found in sheet.forces.reactions.values()
               if found.source in group.links and found.target not in group.links]
     for found in outer:
         moment = moments.get(f"Mf{found.source}{found.target}", 0.0)
