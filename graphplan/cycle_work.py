@@ -20,9 +20,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .joint_friction import FrictionPair
-from .kinematics import dot, unit
-from .loads import SWITCH_TOLERANCE, activity_at, link_loads, motion_state, sense_of_motion, with_switches
+from .joint_friction import FrictionPair, turning_sense
+from .loads import (
+    SWITCH_TOLERANCE,
+    activity_at,
+    link_loads,
+    motion_state,
+    resisted_sense,
+    sense_of_motion,
+    with_switches,
+)
 from .mechanism import Mechanism
 from .motion import Motion, solve
 from .positions import PositionSet
@@ -115,17 +122,8 @@ def _state(mechanism: Mechanism, positions: PositionSet, friction: tuple[Frictio
 def _resisted(mechanism: Mechanism, motion: Motion) -> list[np.ndarray]:
     """The sense of the motion each resisting load opposes, as :func:`loads.link_loads` turns it against it."""
     state = motion_state(motion)
-    senses = []
-    for load in mechanism.scene.loads:
-        if not load.resisting:
-            continue
-        if load.kind == "moment":
-            turning = state.links[load.link]
-            senses.append(sense_of_motion(turning.omega, turning.epsilon, state.turning_scale))
-        else:
-            direction, point = unit(np.radians(load.angle_deg)), state.points[load.point]
-            senses.append(sense_of_motion(dot(direction, point.v), dot(direction, point.a), state.moving_scale))
-    return [np.broadcast_to(sense, (motion.count,)) for sense in senses]
+    return [np.broadcast_to(resisted_sense(load, state), (motion.count,))
+            for load in mechanism.scene.loads if load.resisting]
 
 
 def _senses(friction: tuple[FrictionPair, ...], motion: Motion) -> list[np.ndarray]:
@@ -138,9 +136,7 @@ def _senses(friction: tuple[FrictionPair, ...], motion: Motion) -> list[np.ndarr
             slide = slides[pair.target]
             senses.append(sense_of_motion(slide.velocity, slide.acceleration, state.moving_scale))
         else:
-            target, source = state.links[pair.target], state.links[pair.source]
-            senses.append(sense_of_motion(target.omega - source.omega, target.epsilon - source.epsilon,
-                                          state.turning_scale))
+            senses.append(turning_sense(pair, state))
     return [np.broadcast_to(sense, (motion.count,)) for sense in senses]
 
 

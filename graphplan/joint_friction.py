@@ -27,7 +27,7 @@ import numpy as np
 from .errors import SceneError
 from .forces import Load
 from .friction import friction_circle_radius, vee_groove_coefficient
-from .kinematics import Vector
+from .kinematics import Scalar, Vector
 from .loads import at_rest, sense_of_motion
 from .scene import FrictionSpec
 
@@ -98,13 +98,11 @@ def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping
     Loads on the frame are among them; the equations of moving links skip them.
     """
     loads: list[Load] = []
-    turning_scale, moving_scale = state.turning_scale, state.moving_scale
+    moving_scale = state.moving_scale
     for pair in friction:
         magnitude = np.abs(reactions[pair.reaction])
         if not pair.sliding:
-            target, source = state.links[pair.target], state.links[pair.source]
-            sense = sense_of_motion(target.omega - source.omega, target.epsilon - source.epsilon, turning_scale)
-            moment = -sense * pair.radius * magnitude
+            moment = -turning_sense(pair, state) * pair.radius * magnitude
             loads.append(Load(f"Mf{pair.source}{pair.target}", pair.target, None, 0j, moment))
             loads.append(Load(f"Mf{pair.target}{pair.source}", pair.source, None, 0j, -moment))
         else:
@@ -121,4 +119,11 @@ def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping
     return tuple(loads)
 
 
-__all__ = ["FrictionPair", "friction_loads", "friction_pairs"]
+def turning_sense(pair: FrictionPair, state) -> Scalar:
+    """The sense a turning pair's target turns in against its source (:func:`loads.sense_of_motion`), which its
+    friction moment opposes."""
+    target, source = state.links[pair.target], state.links[pair.source]
+    return sense_of_motion(target.omega - source.omega, target.epsilon - source.epsilon, state.turning_scale)
+
+
+__all__ = ["FrictionPair", "friction_loads", "friction_pairs", "turning_sense"]

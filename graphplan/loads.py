@@ -14,6 +14,7 @@ the centre of mass, the inertia moment ``Mu = −J·ε`` on the link; weight is
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Protocol
@@ -51,12 +52,13 @@ class State:
     sliding: Mapping[int, Vector] = field(default_factory=dict)
     sliding_acceleration: Mapping[int, Vector] = field(default_factory=dict)
 
-    @property
+    @functools.cached_property
     def turning_scale(self) -> float:
-        """The largest |ω| of the state: an angular speed far below it is rest."""
+        """The largest |ω| of the state: an angular speed far below it is rest (once a state: each load and pair
+        asks it)."""
         return max((float(np.max(np.abs(link.omega))) for link in self.links.values()), default=0.0)
 
-    @property
+    @functools.cached_property
     def moving_scale(self) -> float:
         """The largest speed of a point of the state: a speed far below it is rest."""
         return max((float(np.max(np.abs(point.v))) for point in self.points.values()), default=0.0)
@@ -274,7 +276,6 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
         per_link[load.link] = per_link.get(load.link, 0) + 1
     seen: dict[int, int] = {}
     found = []
-    turning_scale, moving_scale = state.turning_scale, state.moving_scale
     for row, load in enumerate(scene.loads):
         seen[load.link] = seen.get(load.link, 0) + 1
         suffix = f".{seen[load.link]}" if per_link[load.link] > 1 else ""
@@ -285,19 +286,25 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             # A resisting load opposes the motion whatever the sign its diagram is drawn with.
             on = np.abs(on)
         if load.kind == "moment":
-            turning = state.links[load.link]
-            value = (-abs(load.value) * sense_of_motion(turning.omega, turning.epsilon, turning_scale) if load.resisting
-                     else load.value)
+            value = -abs(load.value) * resisted_sense(load, state) if load.resisting else load.value
             found.append(Load(f"M{load.link}{suffix}", load.link, None, 0j, on * value))
         else:
             direction = unit(np.radians(load.angle_deg))
             force = load.value * direction
             if load.resisting:
-                point = state.points[load.point]
-                sense = sense_of_motion(dot(direction, point.v), dot(direction, point.a), moving_scale)
-                force = -abs(load.value) * direction * sense
+                force = -abs(load.value) * direction * resisted_sense(load, state)
             found.append(Load(f"F{load.link}{suffix}", load.link, load.point, on * force, 0.0))
     return found
+
+
+def resisted_sense(load, state: State) -> Scalar:
+    """The sense of the motion a resisting load opposes (:func:`sense_of_motion`): its link's turning for a
+    moment, its point's motion along the load's line for a force."""
+    if load.kind == "moment":
+        turning = state.links[load.link]
+        return sense_of_motion(turning.omega, turning.epsilon, state.turning_scale)
+    direction, point = unit(np.radians(load.angle_deg)), state.points[load.point]
+    return sense_of_motion(dot(direction, point.v), dot(direction, point.a), state.moving_scale)
 
 
 def sense_of_motion(speed: Scalar, rate: Scalar, scale: float) -> Scalar:
@@ -337,4 +344,5 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
 
 
 __all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "has_loads",
-           "link_loads", "load_at", "motion_state", "plan_state", "power", "sense_of_motion", "with_switches"]
+           "link_loads", "load_at", "motion_state", "plan_state", "power", "resisted_sense", "sense_of_motion",
+           "with_switches"]
