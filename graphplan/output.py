@@ -40,13 +40,13 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
     retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
-    if folder.is_dir():
-        # A file of the user's named as the run names one (their own note.md) would be replaced without a word.
-        theirs = [name for name in _not_written_by_a_run(folder, []) if name in written]
-        if theirs:
-            them = "it" if len(theirs) == 1 else "them"
-            raise OutputError(f"{target}: holds {', '.join(theirs)}, which no graphplan run wrote there and this run "
-                              f"would replace; move {them} away, or give --out another folder")
+    users = _not_written_by_a_run(folder) if folder.is_dir() else []
+    # A file of the user's named as the run names one (their own note.md) would be replaced without a word.
+    theirs = [name for name in users if name in written]
+    if theirs:
+        them = "it" if len(theirs) == 1 else "them"
+        raise OutputError(f"{target}: holds {', '.join(theirs)}, which no graphplan run wrote there and this run "
+                          f"would replace; move {them} away, or give --out another folder")
     carried: list[str] = []
     try:
         folder.parent.mkdir(parents=True, exist_ok=True)
@@ -63,7 +63,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
         if folder.exists():
             if not folder.is_dir():
                 raise OutputError(f"{target}: exists and is not a folder")
-            for name in _not_written_by_a_run(folder, written):
+            for name in users:  # none the run writes: those were refused above
                 (folder / name).rename(staging / name)
                 carried.append(name)
             folder.rename(retired)
@@ -82,12 +82,11 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     return [target / name for name in sorted(files)]
 
 
-def _not_written_by_a_run(folder: Path, replacing: list[str]) -> list[str]:
-    """The entries of ``folder`` no run wrote (by its :data:`WRITTEN` list) and this one does not replace."""
+def _not_written_by_a_run(folder: Path) -> list[str]:
+    """The entries of ``folder`` no run wrote (by its :data:`WRITTEN` list): the user's own."""
     record = folder / WRITTEN
     ours = set(record.read_text(encoding="utf-8").splitlines()) if record.is_file() else set()
-    return sorted(entry.name for entry in folder.iterdir()
-                  if entry.name != WRITTEN and entry.name not in ours and entry.name not in replacing)
+    return sorted(entry.name for entry in folder.iterdir() if entry.name != WRITTEN and entry.name not in ours)
 
 
 def write_file(target: Path, content: str, replace: bool = True) -> Path:
