@@ -186,27 +186,25 @@ class Table:
         """A speed in rad/s, given in rad/s under ``omega_key`` or in rev/min under ``rpm_key``, not both.
 
         A required speed that is missing is named by both keys, with ``sense``
-        (how it is signed, where it is) after them. A speed that may not be
-        negative is a size only, and a negative one is told where its sense comes from.
+        (how it is signed, where it is) after them; so is a negative one where
+        it may not be (a size only, whose sense comes from elsewhere).
         """
         if self.has(omega_key) and self.has(rpm_key):
             raise SceneError(self.where(rpm_key), f"give either {omega_key} or {rpm_key}, not both")
         if self.has(rpm_key):
             self._taken.add(omega_key)  # still a valid key, for the did-you-mean of a misspelt one
-            return self._speed_size(rpm_key, _REQUIRED, positive, non_negative) * RPM
+            return self._speed_size(rpm_key, _REQUIRED, positive, non_negative, sense) * RPM
         self._taken.add(rpm_key)
         if self.has(omega_key) or default is not _REQUIRED:
-            return self._speed_size(omega_key, default, positive, non_negative)
+            return self._speed_size(omega_key, default, positive, non_negative, sense)
         self.misspelt(omega_key, rpm_key)
         raise SceneError(self.where(omega_key),
                          f"is required but missing: give {omega_key} (rad/s) or {rpm_key} (rev/min){sense}")
 
-    def _speed_size(self, key: str, default: Any, positive: bool, non_negative: bool) -> Any:
+    def _speed_size(self, key: str, default: Any, positive: bool, non_negative: bool, sense: str) -> Any:
         value = self.number(key, default, positive=positive)
         if non_negative and key in self.data and value < 0:
-            # The speeds only a size is taken of (the motion's start) turn the way the driver does.
-            raise SceneError(self.where(key), "must be >= 0: it is the speed's size, and its sense is the driver's "
-                             "(the sign of driver.omega or driver.rpm)", self.data[key])
+            raise SceneError(self.where(key), f"must be >= 0{sense}", self.data[key])
         return value
 
     def integer(self, key: str, default: Any = _REQUIRED, *, minimum: int | None = None,

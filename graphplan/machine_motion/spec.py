@@ -135,6 +135,10 @@ def _read_clutch(table: Table) -> Clutch:
     return clutch
 
 
+# What a negative start speed is told: the run takes its size, and it turns the way the driver does.
+_SIZE_ONLY = ": it is the speed's size, and its sense is the driver's (the sign of driver.omega or driver.rpm)"
+
+
 def _read_start(value: Any, where: str, clutch: Clutch | None) -> Start:
     if isinstance(value, str):
         if value != "rest":
@@ -142,9 +146,9 @@ def _read_start(value: Any, where: str, clutch: Clutch | None) -> Start:
                              "driving_rpm}", value)
         return REST
     table = Table(value, where)
-    omega = table.speed(0.0, non_negative=True)
+    omega = table.speed(0.0, non_negative=True, sense=_SIZE_ONLY)
     angle = math.radians(table.number("angle_deg", 0.0))
-    driving = table.speed(None, omega_key="driving_omega", rpm_key="driving_rpm", non_negative=True)
+    driving = table.speed(None, omega_key="driving_omega", rpm_key="driving_rpm", non_negative=True, sense=_SIZE_ONLY)
     if driving is not None and clutch is None:
         key = "driving_omega" if table.has("driving_omega") else "driving_rpm"
         raise SceneError(table.where(key), "only with a clutch")
