@@ -385,8 +385,7 @@ class MachineDynamics:
             result.update(clutch_locked_at=locked, slip_energy=motion.slip_energy,
                           clutch_common_speed=None if locked is None else float(motion.state_at([locked])[1, 0]))
             if steady is not None:
-                result.update(slip_energy_per_turn=motion.steady_slip_energy,
-                              slip_power=motion.steady_slip_energy / steady.period)
+                result.update(slip_energy_per_turn=motion.steady_slip_energy, slip_power=motion.steady_slip_power)
         if motion.stalled_at is not None:
             result.update(stalled_at=motion.stalled_at, stalled_at_angle_deg=self.stall_angle_deg())
         elif motion.stopped_at is not None:
@@ -446,9 +445,8 @@ class MachineDynamics:
         motion = self.motion
         if motion is None or not motion.steady_slip_energy:
             return None
-        power = motion.steady_slip_energy / motion.steady.period
         return (f"dynamics: the clutch slips in every steady turn, losing {motion.steady_slip_energy:.4g} J a turn "
-                f"({power:.4g} W): its {self.spec.motion.clutch.torque:g} N·m cannot pass the resistance's peaks "
+                f"({motion.steady_slip_power:.4g} W): its {self.spec.motion.clutch.torque:g} N·m cannot pass the resistance's peaks "
                 "(a clutch of more torque)")
 
     def unsettled_warning(self) -> str | None:

@@ -10,7 +10,6 @@ from scipy.optimize import brentq
 
 from .drive import REST, Clutch, Motor, Start
 from .integrator import Equations
-from .moment import PiecewiseMoment
 from .shaft import TWO_PI, Machine, periodic_spline
 
 # Above this value of (largest decay rate |∂f/∂ω|) × (the step RK45 takes for accuracy) the explicit
@@ -106,8 +105,8 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
     if not to_the_steady_state:
         return
     outpulled = speeds_up_without_end(machine, motor)
-    of_the_angle = machine.moment is not None or not callable(machine.resisting)
-    if outpulled is not None and clutch is None and of_the_angle and stalls_in_its_first_turn(machine, motor, start):
+    if outpulled is not None and clutch is None and machine.resists_by_angle_alone \
+            and stalls_in_its_first_turn(machine, motor, start):
         return
     if outpulled is not None:
         raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "
@@ -122,8 +121,7 @@ def _mean_surplus(machine: Machine, motor: Motor):
     A resistance with jumps depends on the angle alone and is integrated piece by piece, and samples over
     the turn through the periodic spline the machine takes them by; a function of the angle and speed is
     averaged over :data:`_FINE_TURN`'s equal steps."""
-    resisting = machine.resisting
-    if isinstance(resisting, PiecewiseMoment) or not callable(resisting):
+    if machine.resists_by_angle_alone:
         mean = mean_resistance(machine)
         return lambda omega: motor.shaft_torque(omega) - mean
 
@@ -135,10 +133,9 @@ def _mean_surplus(machine: Machine, motor: Motor):
 def mean_resistance(machine: Machine) -> float:
     """The mean over a turn of a resistance that depends on the angle alone, N·m: integrated exactly as the
     machine takes it (piece by piece where it jumps, the periodic spline through samples)."""
-    resisting = machine.resisting
-    if isinstance(resisting, PiecewiseMoment):
-        return resisting.mean()
-    values = np.asarray(resisting, dtype=float)
+    if machine.moment is not None:
+        return machine.moment.mean()
+    values = np.asarray(machine.resisting, dtype=float)
     if values.ndim == 0:
         return float(values)
     return float(periodic_spline(values).integrate(0.0, TWO_PI)) / TWO_PI

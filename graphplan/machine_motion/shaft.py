@@ -129,3 +129,8 @@ class Machine:
     def moment(self) -> PiecewiseMoment | None:
         """Mr as pieces between its jumps, where it was given so (the integrator steps from jump to jump)."""
         return self.resisting if isinstance(self.resisting, PiecewiseMoment) else None
+
+    @property
+    def resists_by_angle_alone(self) -> bool:
+        """Whether Mr depends on the angle alone (pieces, samples over the turn, a constant), not on the speed."""
+        return self.moment is not None or not callable(self.resisting)

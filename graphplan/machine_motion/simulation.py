@@ -82,6 +82,14 @@ class MachineMotion:
         return bool(np.any(self.phi != self.phi[0]))
 
     @property
+    def steady_slip_power(self) -> float | None:
+        """The clutch's loss in the steady turn as a power (W): its work a turn over the turn's period; None where
+        there is no steady turn or no clutch."""
+        if self.steady is None or self.steady_slip_energy is None:
+            return None
+        return self.steady_slip_energy / self.steady.period
+
+    @property
     def stalled_slipping(self) -> bool:
         """Whether the clutch slipped as the machine stalled: its capacity, not the motor, fell short of the
         resistance."""

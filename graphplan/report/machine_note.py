@@ -295,7 +295,7 @@ def _clutch(note: Writer, dynamics) -> None:
     if motion.steady_slip_energy:
         steady = motion.steady
         note.para(note.t("note_dyn_clutch_slips_steady", **given, after=note.n(steady.reached_at, 4),
-                         turn=note.n(motion.steady_slip_energy), power=note.n(motion.steady_slip_energy / steady.period)))
+                         turn=note.n(motion.steady_slip_energy), power=note.n(motion.steady_slip_power)))
     elif slips:
         note.para(note.t("note_dyn_clutch_again", **given, count=Count(len(slips)), last=note.n(slips[-1], 4)))
     else:
