@@ -690,6 +690,38 @@ def test_a_guide_on_a_moving_link_is_among_the_initial_data(locale):
     assert expected in note_markdown(analysis).splitlines()
 
 
+@pytest.mark.parametrize("locale", LOCALES)
+def test_an_rpp_slot_angle_is_among_the_initial_data(locale):
+    """The Scotch yoke's slot set at 60° to its guide, which defines the mechanism as much as a length, was in no row.
+    The angle is read off the motion: the block turns with the slot, link b with the guide."""
+    text = (FIXTURES / "scotch_yoke.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^angle  = 90\.0 ", "angle  = 60.0 ", text)
+    analysis = analyse(dataclasses.replace(graphplan.scene.loads(text), locale=locale))
+    slot, guide = (np.ravel(analysis.motion.link(link).angle)[0] for link in (3, 4))
+    assert math.degrees(slot - guide) % 360.0 == pytest.approx(60.0)
+    expected = {"en": "| slot of link 4 | at 60° to the guide of B, counter-clockwise from the guide |",
+                "ru": "| паз звена 4 | под углом 60° к направляющей точки B, против часовой стрелки от неё |",
+                "zh": "| 构件 4 上的导槽 | 与B的导路成60°，自导路逆时针量取 |"}[locale]
+    assert expected in note_markdown(analysis).splitlines()
+
+
+@pytest.mark.parametrize("offset", [0.03, -0.02])
+def test_a_prp_joint_beside_a_guide_on_a_moving_link_is_among_the_initial_data(offset):
+    """The tangent mechanism's block B runs 30 mm beside the lever's slot line CA; the table gave the slot's line and
+    not the offset.  The side is checked on the motion: B stands |offset| from the line CA, on the left of C→A for a
+    positive offset."""
+    text = (FIXTURES / "tangent_mechanism_prp.toml").read_text(encoding="utf-8")
+    text = text.replace("offsets = [0.0, 0.0]", f"offsets = [{offset!r}, 0.0]")
+    analysis = analyse(dataclasses.replace(graphplan.scene.loads(text), locale="en"))
+    a, b = (complex(np.ravel(analysis.motion.points[name].r)[0]) for name in ("A", "B"))
+    along = a / abs(a)  # C is the origin
+    beside = along.real * b.imag - along.imag * b.real
+    assert abs(beside) == pytest.approx(abs(offset)) and (beside > 0) == (offset > 0)
+    side = "left" if offset > 0 else "right"
+    assert f"| slide of link 5 | {abs(offset):g} m from the guide of B, on its {side} seen along it |" in (
+        note_markdown(analysis).splitlines())
+
+
 def test_a_point_off_the_line_it_is_placed_from_is_given_from_both_ends_of_that_line():
     """The rocker CB carries a third joint D, the coupler AB a point M, each set off its line: the table gave lCD and
     lAM only, though the similarity proportions read lBD and lBM.  Both follow from the scene's numbers: a point `at`

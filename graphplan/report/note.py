@@ -391,8 +391,9 @@ class _Note:
 
     def moving_slide_rows(self) -> list[list[str]]:
         """The lines that slides run along on moving links: an RPR's slide where it misses the lever's pivot (how
-        far, on which side), and a guide a group puts on a moving link (through which point, at what angle to the
-        link's line)."""
+        far, on which side), a guide a group puts on a moving link (through which point, at what angle to the
+        link's line; a PRP's joint beside it, how far and on which side), and an RPP's slot (its angle to the
+        guide)."""
         metre, rows = self.text["unit_m"], []
         for group in self.mechanism.groups:
             if group.kind == "RPR" and group.offset != 0.0:
@@ -405,7 +406,7 @@ class _Note:
             joints: dict[int, str] = {}  # the joint that slides on each link, the group's first on it
             for _, carrier, joint in group.sliding_pairs(self.mechanism):
                 joints.setdefault(carrier, joint)
-            for guide in group.guides():
+            for index, guide in enumerate(group.guides()):
                 if guide.link is None or guide.link == self.frame or guide.link not in joints:
                     continue
                 line = self.link_line(guide.link)
@@ -413,6 +414,16 @@ class _Note:
                              self.t("note_guide_on_moving_link", point=guide.through,
                                     angle=self.n(math.degrees(guide.angle)),
                                     line=line or self.t("note_line_of_link", link=guide.link))])
+                # A PRP's joint may run beside its guide (on the frame, the joint's own line is a row of the frame's).
+                offset = group.offsets[index] if group.kind == "PRP" else 0.0
+                if offset != 0.0:
+                    side = "note_slide_beside_guide_left" if offset > 0 else "note_slide_beside_guide_right"
+                    rows.append([self.t("note_slide_line", link=group.links[index]),
+                                 self.t(side, distance=f"{self.n(abs(offset))} {metre}", joint=joints[guide.link])])
+            if group.kind == "RPP":  # the slot's angle to the guide, which the Scotch yoke's 90° hides
+                rows.append([self.t("note_slot_of", link=group.links[1]),
+                             self.t("note_slot_at_angle", angle=self.n(math.degrees(group.angle)),
+                                    joint=group.joints[1])])
         return rows
 
     def link_line(self, link: int) -> str | None:
