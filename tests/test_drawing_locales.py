@@ -94,6 +94,15 @@ def pushed_slider_analysis():
 
 
 @functools.cache
+def steady_crank_output_analysis():
+    """The ratchet's crank, at a steady ω, named the working link: its ε curve is nought throughout."""
+    text = Path("fixtures/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    text = text.replace('working     = { link = 4, sense = "ccw" }', 'working     = { link = 2, sense = "cw" }')
+    text = re.sub(r"(?ms)^\[\[loads\]\].*?(?=^\[)", "", text).replace('start       = "extreme"', "start = 0.0")
+    return analyse(loads(text))
+
+
+@functools.cache
 def models():
     """A crank's equivalent model with its flywheel moved to a faster shaft, and a slider driver's model."""
     crank = equivalent_model_of(analysis_of("ratchet_crank_rocker"))
@@ -129,9 +138,9 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         return title_block_texts(labels)
     if kind == "diagrams":
         # A rocker (ψ, ω, ε; working and idle strokes), a slider (s, v, a), a lever over a slider driver's
-        # travel (t) and a rocker over its lever's swing (Δφ).
+        # travel (t), a rocker over its lever's swing (Δφ) and a steady crank (an ε nought throughout).
         runs = [analysis_of(name) for name in ("ratchet_crank_rocker", "engine_slider_crank", "slider_driven")]
-        return [t for analysis in (*runs, swing_analysis(), pushed_slider_analysis())
+        return [t for analysis in (*runs, swing_analysis(), pushed_slider_analysis(), steady_crank_output_analysis())
                 for t in svg_texts(diagrams.diagrams_svg(of_analysis(analysis), text))]
     if kind == "dynamics":
         crank, flywheel, slider = models()

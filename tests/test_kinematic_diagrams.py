@@ -197,6 +197,28 @@ def test_the_diagrams_say_they_count_in_the_working_sense_and_leave_the_driver_s
     assert "left out" not in said and "working sense" not in said
 
 
+@functools.cache
+def steady_crank_as_output():
+    """The ratchet's crank, turning at a steady ω, named the working link (its loads, which need strokes, left out)."""
+    text = scene_text("ratchet_crank_rocker").replace('working     = { link = 4, sense = "ccw" }',
+                                                      'working     = { link = 2, sense = "cw" }')
+    text = re.sub(r"(?ms)^\[\[loads\]\].*?(?=^\[)", "", text).replace('start       = "extreme"', "start = 0.0")
+    mechanism = build(loads(text))
+    return mechanism, kinematic_diagrams(mechanism, make_positions(mechanism))
+
+
+def test_a_curve_nought_throughout_is_not_given_a_peak_of_one():
+    """The crank as the working link at a steady ω: its ε is nought everywhere, and the caption said the chord method
+    differs by "0.00 % of the peak |ε2| = 1 rad/s²", a peak that is nowhere.  Second differences of an angle growing
+    in equal steps are nought, so the chord method's ε is nought to rounding too."""
+    mechanism, found = steady_crank_as_output()
+    assert not np.any(found.a) and np.max(np.abs(found.a_chord)) < 1e-9 * abs(mechanism.driver.omega) ** 2
+    said = [item.text for layer in diagrams.layout(found, strings("en")) for item in layer.items
+            if isinstance(item, Text)]
+    assert "chord method − analytic: at most 0 rad/s²; the analytic ε2 is nought throughout" in said
+    assert f"chord method − analytic: at most 0.00 % of the peak |ω2| = {abs(mechanism.driver.omega):g} rad/s" in said
+
+
 @pytest.mark.parametrize("name", ["engine_slider_crank", "ratchet_crank_rocker", "shaper_six_bar", "slider_driven"])
 def test_pole_distance_is_the_largest_whole_mm_that_keeps_each_curve_in_its_field(name):
     found = record(name)[2]
@@ -372,7 +394,7 @@ def test_every_text_key_is_used_and_words_come_from_the_mapping():
     pushed = build(loads(scene_text("slider_driven").replace("acceleration = 0.0 ", "acceleration = 0.5 ")))
     for found in (*(record(name)[2] for name in ("engine_slider_crank", "ratchet_crank_rocker", "slider_driven")),
                   kinematic_diagrams(swing, make_positions(swing)), kinematic_diagrams(pushed, make_positions(pushed)),
-                  with_plans):
+                  with_plans, steady_crank_as_output()[1]):
         marked = {key: f"<{key}>" for key in keys}
         for layer in diagrams.layout(found, marked):
             shown.update(re.findall(r"<(\w+)>", " ".join(i.text for i in layer.items if isinstance(i, Text))))

@@ -224,8 +224,14 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     notes: tuple[Text, ...] = ()
     if kind != "displacement":
         largest = record.largest_v_difference if kind == "velocity" else record.largest_a_difference
-        difference = words["kd_difference"].format(value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}",
-                                                   unit=unit)
+        analytic = record.v if kind == "velocity" else record.a
+        if np.any(analytic):
+            difference = words["kd_difference"].format(value=f"{largest:.2f}", symbol=symbol, peak=f"{peak:.4g}",
+                                                       unit=unit)
+        else:  # a curve nought throughout (a crank's ε at constant ω) has no peak to give the difference a share of
+            scale = record.scales.velocity if kind == "velocity" else record.scales.acceleration
+            read = round(largest / 100.0 * peak / scale, 2) * scale  # to a hundredth of a millimetre of paper
+            difference = words["kd_difference_nought"].format(value=f"{read:.3g}", symbol=symbol, unit=unit)
         notes = tuple(Text((0.0, bottom - 6.0 - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start",
                            _CHORD_COLOUR) for k, line in enumerate(fitted(difference, width, SCALE_SIZE)))
     key: tuple[Primitive, ...] = ()
