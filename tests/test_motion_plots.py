@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -189,3 +190,32 @@ def test_a_stall_from_a_start_off_position_1_is_drawn_over_the_angle_turned_from
     assert along[0] == 0.0 and along[-1] == 360.0
     assert float(np.interp(45.0, along, drawn)) == pytest.approx(10.0)
     assert float(np.interp(turned, along, drawn)) == pytest.approx(100.0)
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_stall_through_a_slipping_clutch_is_blamed_on_the_clutch_in_a_title_that_stays_on_the_figure(locale):
+    """A 30 N·m clutch slipping from the start against Mr = 20 + 35·sin φ: the machine stalls with the clutch still
+    slipping.  Drawn without the moments (the library call with no Mr), the title blamed the motor and ran off both
+    sides of the figure in one line."""
+    from matplotlib import pyplot
+
+    angles = 2.0 * np.pi * np.arange(720) / 720
+    motion = simulate(Machine(INERTIA, resisting=20.0 + 35.0 * np.sin(angles)), LinearMotor(300.0, 100.0,
+                      rotor_inertia=1.0), clutch=Clutch(30.0), start=Start(driving_omega=90.0), rtol=1e-8)
+    assert motion.stalled_at is not None and motion.stalled_slipping
+    text = strings(locale)
+    figure = motion_plot(motion, text)
+    (run,) = figure.axes
+    try:
+        title = run.title
+        def tail(key):  # the words after the numbers, which blame the clutch or the motor
+            return re.sub(r"\s", "", text[key].rsplit("}", 1)[1])
+
+        said = re.sub(r"\s", "", title.get_text())
+        assert tail("motion_stalled_clutch") in said and tail("motion_stalled") not in said
+        assert "\n" in title.get_text()
+        figure.canvas.draw()
+        extent, page = title.get_window_extent(), figure.bbox
+        assert page.x0 <= extent.x0 and extent.x1 <= page.x1
+    finally:
+        pyplot.close(figure)

@@ -11,7 +11,6 @@ from the locale (``motion_`` keys).  matplotlib is imported only inside :func:`m
 from __future__ import annotations
 
 import math
-import textwrap
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -19,6 +18,8 @@ import numpy as np
 
 from ..locale import Count
 from ..machine_motion import MachineMotion
+from ..render.primitives import FONT_SIZE_PER_CAP
+from ..render.wrapping import fitted
 from .forces import number
 from .plot_style import settings, svg_text, with_decimal_mark
 
@@ -27,6 +28,9 @@ from .plot_style import settings, svg_text, with_decimal_mark
 _RUN_SAMPLES = 6000
 _TURN_SAMPLES = 721
 _SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT = "#1f4e79", "#a83a1f", "#1f7a3a", "#555555"
+# The width a plot's title and words may take (mm): its axes' on the 7.5-inch figure, less a margin.
+_WORDS_MM = 150.0
+_MM_PER_POINT = 25.4 / 72.0
 
 
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
@@ -72,7 +76,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             _speed_over_time(run, motion, text)
             if not run_down:
                 why = _why_not_steady(motion, text, stall)
-                run.set_title(f"{run.get_title()}: {why}" if run.get_title() else why, fontsize=10)
+                run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
         else:
             if _moved(motion):
                 figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
@@ -86,7 +90,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 _stall(turn, motion, text, resisting, stall)
             else:
                 turn.set_axis_off()
-                turn.text(0.5, 0.5, textwrap.fill(_why_not_steady(motion, text, stall), 80), ha="center", va="center",
+                turn.text(0.5, 0.5, _broken(_why_not_steady(motion, text, stall), 10), ha="center", va="center",
                           transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
         # After the decimal mark: the title quotes the scene's, which is the user's text.
@@ -110,9 +114,16 @@ def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stal
     if motion.stalled_at is None:
         return text["motion_no_steady"]
     mark = text["decimal_mark"]
-    key = "motion_stalled_clutch" if stall.clutch_torque is not None else \
+    key = "motion_stalled_clutch" if motion.stalled_slipping else \
         "motion_never_starts" if not motion.turned else "motion_stalled"
     return text[key].format(time=number(motion.stalled_at, 4, mark), angle=number(stall.angle_deg, 4, mark))
+
+
+def _broken(words: str, points: float) -> str:
+    """``words`` at a font size of ``points`` broken into lines as wide as a plot: by their width on the paper, so
+    that Chinese, twice as wide a character, breaks as soon."""
+    cap_mm = points * _MM_PER_POINT / FONT_SIZE_PER_CAP
+    return "\n".join(fitted(words, _WORDS_MM, cap_mm))
 
 
 def _moved(motion: MachineMotion) -> bool:
@@ -252,7 +263,7 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     plot.set_xticks(np.arange(0.0, right + 1.0, 30.0 * max(1, round(right / 360.0))))
     plot.set_xlabel(text["motion_turned_axis"])
     plot.set_ylabel(text["motion_moment_axis"])
-    plot.set_title(textwrap.fill(text["motion_stall_title"], 80), fontsize=10)
+    plot.set_title(_broken(text["motion_stall_title"], 10), fontsize=10)
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=7, loc="best")
 
