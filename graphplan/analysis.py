@@ -80,6 +80,19 @@ class PlanPosition(VelocityPosition):
 
 
 @dataclass(frozen=True)
+class Strokes:
+    """How far the crank turns in the working stroke and in the idle one (rad), between the extreme positions."""
+
+    working: float
+    idle: float
+
+    @property
+    def time_ratio(self) -> float:
+        """K = φw/φi, the coefficient of the change of the output link's mean speed."""
+        return self.working / self.idle
+
+
+@dataclass(frozen=True)
 class Analysis:
     scene: Scene
     mechanism: Mechanism
@@ -103,6 +116,13 @@ class Analysis:
         # The dataclass's own repr ran to hundreds of thousands of characters.
         return (f"<Analysis of {self.scene.title!r}: {len(self.positions.numbers)} positions, plans of "
                 f"{', '.join(str(plan.number) for plan in self.plans) or 'none'}, {len(self.warnings)} warnings>")
+
+    @property
+    def strokes(self) -> Strokes | None:
+        """The crank's turn in the working and the idle stroke and their ratio K, as ``results.json``'s
+        ``strokes``; None where the working link has no extreme positions (or the scene names none)."""
+        turns = self.positions.stroke_turns(self.mechanism.driver.sense)
+        return None if turns is None else Strokes(*turns)
 
     @property
     def drawn_velocities(self) -> tuple[VelocityPosition, ...]:

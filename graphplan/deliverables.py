@@ -282,11 +282,18 @@ class MachineDynamics:
     ``source`` is the analysis of a linkage, or a scene without one whose ``[dynamics]`` gives load diagrams.
     """
 
+    def __repr__(self) -> str:
+        # The model's arrays made a repr of tens of thousands of characters.
+        flywheel = f"JF = {self.flywheel.inertia:.5g} kg·m²" if self.flywheel is not None else "no flywheel asked for"
+        motor = "a motor to integrate" if self.spec.motion is not None else "no motor"
+        return f"<MachineDynamics of {self.title!r}: {flywheel}, {motor}>"
+
     def __init__(self, source: Analysis | Scene) -> None:
         from .dynamics import equivalent_model_of
         from .flywheel import diagram_model_of, flywheel_from_spec
 
         with _scene_values("dynamics"):
+            self.title = source.title if isinstance(source, Scene) else source.scene.title
             if isinstance(source, Scene):
                 self.spec = source.dynamics
                 self.model = diagram_model_of(self.spec)

@@ -41,9 +41,19 @@ class Drawing:
         return self.svg
 
     def save(self, path: str | Path) -> Path:
-        """Write the SVG to ``path`` (its size in mm, as printed); returns the path."""
+        """Write the drawing to ``path`` as its suffix says: ``.svg`` (its size in mm, as printed), ``.png``
+        (at the command line's resolution) or ``.pdf``; returns the path."""
+        from .render.export import svg_to_pdf, svg_to_png
+
         path = Path(path)
-        path.write_text(self.svg, encoding="utf-8")
+        suffix = path.suffix.lower()
+        if suffix == ".svg":
+            path.write_text(self.svg, encoding="utf-8")
+        elif suffix in (".png", ".pdf"):
+            # Converted before the file is opened: a failed conversion leaves no empty file behind.
+            path.write_bytes(svg_to_png(self.svg) if suffix == ".png" else svg_to_pdf(self.svg))
+        else:
+            raise ValueError(f"a drawing is saved as .svg, .png or .pdf, as its name's suffix says (got {path.name!r})")
         return path
 
 

@@ -28,6 +28,7 @@ from .vibration import VibrationSpec, read_vibration
 
 if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
     from .analysis import Analysis
+    from .deliverables import MachineDynamics
     from .motion import Motion
     from .notebook import PositionPlans
 
@@ -208,6 +209,15 @@ class Scene:
 
         return analyse(self)
 
+    def machine_dynamics(self) -> MachineDynamics:
+        """The scene's ``[dynamics]`` worked out as a run works it out: ``.model`` (Je, Me over the cycle),
+        ``.flywheel`` (None without δ) and ``.motion`` (the equation of motion integrated; None without a motor)."""
+        from .deliverables import MachineDynamics
+
+        if self.dynamics is None:
+            raise SceneError("dynamics", "the scene has no [dynamics] table to work out")
+        return MachineDynamics(self.analyse() if self.has_linkage else self)
+
     def plan(self, number: int) -> PositionPlans:
         """The plans of position ``number`` (:func:`graphplan.notebook.plan`); Jupyter shows its plan sheet."""
         from .notebook import plan
@@ -215,14 +225,17 @@ class Scene:
         return plan(self, number)
 
 
-def load(path: str | Path) -> Scene:
-    """Read and check the scene file at ``path``.
+def load(path: str | Path | Mapping[str, Any]) -> Scene:
+    """Read and check the scene file at ``path``, or a scene given as its tables: the mapping ``tomllib`` reads
+    of a scene file, changed as a parameter study changes it, is checked as the file would be.
 
     Raises
     ------
     SceneError
         naming the key path and what is wrong, for any problem of the file.
     """
+    if isinstance(path, Mapping):
+        return _read_scene(Table(_as_read(path, ""), ""), "<scene>")
     if isinstance(path, bytes | bytearray) or (isinstance(path, str) and ("\n" in path or len(path) > 4096)):
         # TOML text given for a path: its error would quote the whole scene as a file name.
         raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
@@ -238,11 +251,34 @@ def load(path: str | Path) -> Scene:
     return loads(data, source=str(path))
 
 
+def _as_read(value: Any, where: str) -> Any:
+    """``value`` as tomllib would have read it from a file: tuples and numpy arrays as lists, numpy numbers as
+    Python's, so that the checks of a scene's keys take a scene built in Python as they take a file."""
+    import numpy as np
+
+    if isinstance(value, Mapping):
+        for key in value:
+            if not isinstance(key, str):
+                raise SceneError(where, f"has the key {key!r}; a scene's keys are strings")
+        return {key: _as_read(item, f"{where}.{key}" if where else key) for key, item in value.items()}
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, list | tuple):
+        return [_as_read(item, f"{where}[{index}]") for index, item in enumerate(value)]
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, str | int | float | datetime.date | datetime.time):
+        return value
+    raise SceneError(where, f"is a {type(value).__name__}, which a scene file cannot hold (a number, a string, a "
+                            "list or a table)")
+
+
 def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     """Read and check a scene given as TOML text or bytes."""
     if not isinstance(data, str | bytes):
-        raise TypeError(f"a scene is given as its TOML text, a str (got {type(data).__name__}); "
-                        "graphplan.load(path) reads a file")
+        hint = "graphplan.load(tables) reads a scene given as its tables" if isinstance(data, Mapping) else \
+            "graphplan.load(path) reads a file"
+        raise TypeError(f"a scene is given as its TOML text, a str (got {type(data).__name__}); {hint}")
     size = len(data) if isinstance(data, bytes) else len(data.encode("utf-8", "surrogatepass"))
     if size > MAX_SCENE_BYTES:
         raise SceneError(source, f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")

@@ -239,3 +239,86 @@ def test_load_text_says_what_it_takes():
     with pytest.raises(SceneError, match=r"looks like a file's name: graphplan\.load\(path\) reads a scene file"):
         graphplan.load_text(RATCHET)
     assert graphplan.load_text.__name__ == "load_text" and "TOML text" in graphplan.load_text.__doc__
+
+
+# --- a parameter study, the strokes, the dynamics and the drawings from Python ---------------------------------
+
+
+def test_a_scene_given_as_its_tables_is_checked_as_its_file_is():
+    """A parameter study changes the tables tomllib reads of a scene: dataclasses.replace on a Scene skips every
+    check (a negative rod came out as a mirrored mechanism), so load takes the tables and checks them."""
+    import tomllib
+
+    tables = tomllib.loads(Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8"))
+    tables["groups"][0]["length"] = -0.26
+    with pytest.raises(SceneError, match=r"^groups\[0\]\.length: must be > 0 \(got -0\.26\)$"):
+        graphplan.load(tables)
+    tables["groups"][0]["length"] = np.float64(0.26)  # numpy's numbers, as a sweep's np.linspace gives them
+    tables["positions"]["count"] = np.int64(12)
+    scene = graphplan.load(tables)
+    assert scene.groups[0].length == 0.26 and scene.positions.count == 12
+    tables["groups"][0]["guide"]["angle"] = {0.0}
+    with pytest.raises(SceneError, match=r"^groups\[0\]\.guide\.angle: is a set, which a scene file cannot hold"):
+        graphplan.load(tables)
+    with pytest.raises(TypeError, match=r"graphplan\.load\(tables\) reads a scene given as its tables"):
+        graphplan.load_text(tables)
+
+
+def test_the_strokes_and_k_of_a_slotted_lever_are_the_closed_form_s():
+    """The crank-and-slotted-lever: the lever's extremes are where the crank stands square to it, so the crank
+    turns π ± 2·asin(r/d) in the two strokes (r the crank, d the pivots' distance)."""
+    scene = graphplan.load("fixtures/quick_return_slotted_lever.toml")
+    r = scene.driver.length
+    d = abs(scene.frame_points["C"] - scene.frame_points[scene.driver.pivot])
+    strokes = scene.analyse().strokes
+    assert strokes.working == pytest.approx(math.pi + 2 * math.asin(r / d), abs=1e-9)
+    assert strokes.idle == pytest.approx(math.pi - 2 * math.asin(r / d), abs=1e-9)
+    assert strokes.time_ratio == pytest.approx(strokes.working / strokes.idle)
+    assert graphplan.load("fixtures/slider_driven.toml").analyse().strokes is None
+
+
+def test_the_dynamics_of_a_scene_are_worked_out_from_python_with_a_short_repr():
+    """The flywheel starter is the punching press of the issue's worked example (power 367.7 W for a third of the
+    turn and 3677 W for two thirds at 100 rpm, δ = 0.05): JF = ΔWmax/(ωm²·δ) = 441.24/((100·π/30)²·0.05)."""
+    from graphplan.starters import starter
+
+    dynamics = graphplan.load_text(starter("flywheel")).machine_dynamics()
+    omega = 100 * math.pi / 30
+    assert dynamics.flywheel.inertia == pytest.approx(441.24 / (omega**2 * 0.05), rel=1e-4)
+    assert len(repr(dynamics)) < 200 and "JF = 80.47" in repr(dynamics)
+    with pytest.raises(SceneError, match=r"^dynamics: the scene has no \[dynamics\] table"):
+        graphplan.load(RATCHET).machine_dynamics()
+
+
+def test_a_drawing_is_saved_as_its_name_s_suffix_says(tmp_path):
+    """save("plan.png") wrote SVG text into a file named .png."""
+    drawing = graphplan.load(RATCHET).plan(5).drawing
+    png, pdf, svg = (drawing.save(tmp_path / f"plan.{kind}") for kind in ("png", "pdf", "svg"))
+    assert png.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+    assert pdf.read_bytes().startswith(b"%PDF-")
+    assert svg.read_text(encoding="utf-8") == drawing.svg
+    with pytest.raises(ValueError, match=r"\.svg, \.png or \.pdf"):
+        drawing.save(tmp_path / "plan.jpg")
+    assert not (tmp_path / "plan.jpg").exists()
+
+
+def test_drawing_the_report_figures_leaves_a_notebook_s_matplotlib_as_it_was(tmp_path):
+    """The figures chose matplotlib's Agg backend for the whole process (a notebook's inline plots stopped
+    showing after a run) and kept their figures open in pyplot."""
+    matplotlib = pytest.importorskip("matplotlib")
+    from matplotlib import pyplot
+
+    from graphplan.cli import main
+    from graphplan.starters import starter
+
+    before = matplotlib.get_backend()
+    pyplot.switch_backend("svg")  # a backend no figure of graphplan's asks for
+    try:
+        scene = tmp_path / "shaper.toml"
+        scene.write_text(starter("shaper"), encoding="utf-8")
+        assert main(["run", str(scene), "--only", "figures,dynamics", "--out", str(tmp_path / "out")]) == 0
+        assert {path.name for path in (tmp_path / "out").glob("*.svg")} >= {"balancing.svg", "motion.svg"}
+        assert matplotlib.get_backend() == "svg"
+        assert pyplot.get_fignums() == []
+    finally:
+        pyplot.switch_backend(before)

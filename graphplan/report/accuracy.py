@@ -76,13 +76,12 @@ def csv_text(rows: Iterable[Row]) -> str:
 def figure(study: Study, locale: str, title: str) -> str:
     """``accuracy.svg``: largest error against run time on log-log axes (filled: accelerations)."""
     import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib import pyplot
+    from matplotlib.figure import Figure
 
     text = strings(locale)
     with matplotlib.rc_context(settings()):
-        drawn, axes = pyplot.subplots(figsize=(7.0, 4.6), dpi=100)
+        drawn = Figure(figsize=(7.0, 4.6), dpi=100)
+        axes = drawn.subplots()
         names = {key.removeprefix("accuracy_legend_"): word for key, word in text.items()
                  if key.startswith("accuracy_legend_")}
         draw_study(axes, study.rows, text["millimetre"], names)

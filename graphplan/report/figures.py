@@ -23,14 +23,13 @@ def balancing_diagram(analysis: Analysis) -> str:
     when the scene has it; the analysed positions numbered, the force polygons' values marked."""
     import matplotlib
 
-    matplotlib.use("Agg")
     # In a context, not in rcParams: a figure's settings must not leak into the user's own plots.
     with matplotlib.rc_context(settings()):
         return svg_text(_balancing_figure(analysis))
 
 
 def _balancing_figure(analysis: Analysis):
-    from matplotlib import pyplot
+    from matplotlib.figure import Figure
 
     text = strings(analysis.scene.locale)
     mechanism, positions, sweep = analysis.mechanism, analysis.positions, analysis.paths
@@ -46,7 +45,8 @@ def _balancing_figure(analysis: Analysis):
         along, marks = sweep.driver, positions.values
         axis, unit = text["diagram_displacement"], text["newton"]
         name = text["balancing_force"]
-    figure, plot = pyplot.subplots(figsize=(7.0, 3.6), dpi=100)
+    figure = Figure(figsize=(7.0, 3.6), dpi=100)
+    plot = figure.subplots()
     plot.plot(along, ideal.balancing, color="#1f5fa8", linewidth=1.4, label=text["diagram_ideal"])
     if analysis.scene.friction and analysis.with_friction is not None:
         rubbing = equilibrium(mechanism, sweep, loads, _friction(analysis, sweep))

@@ -63,27 +63,28 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     stall = _Stall(stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg,
                    clutch_torque if motion.stalled_slipping else None)
     import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib import pyplot
+    from matplotlib.figure import Figure
 
     with matplotlib.rc_context(settings()):
         below = motion.steady is not None or (motion.stalled_at is not None and resisting is not None)
         run_down = motion.stalled_at is None and motion.stopped_at is not None
         if _moved(motion) and not below:
             # A run-down, or a run with no steady state: the speed in time says it all, no empty half below.
-            figure, run = pyplot.subplots(1, 1, figsize=(7.5, 5.5))
+            figure = Figure(figsize=(7.5, 5.5))
+            run = figure.subplots(1, 1)
             _speed_over_time(run, motion, text)
             if not run_down:
                 why = _why_not_steady(motion, text, stall)
                 run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
         else:
             if _moved(motion):
-                figure, (run, turn) = pyplot.subplots(2, 1, figsize=(7.5, 8.5), height_ratios=(3, 2))
+                figure = Figure(figsize=(7.5, 8.5))
+                run, turn = figure.subplots(2, 1, height_ratios=(3, 2))
                 _speed_over_time(run, motion, text)
             else:
                 # A speed zero throughout is an empty plot along its axis: only why it stands still is drawn.
-                figure, turn = pyplot.subplots(1, 1, figsize=(7.5, 4.5))
+                figure = Figure(figsize=(7.5, 4.5))
+                turn = figure.subplots(1, 1)
             if motion.steady is not None:
                 _steady_turn(turn, motion, text, flywheel)
             elif motion.stalled_at is not None and resisting is not None:

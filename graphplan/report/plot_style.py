@@ -75,10 +75,10 @@ def _marked_formatter(inner, mark: str):
 
 
 def svg_text(figure) -> str:
-    """``figure`` as SVG without a date (the same scene gives the same file), and closed."""
-    from matplotlib import pyplot
+    """``figure`` as SVG without a date (the same scene gives the same file).
 
+    The figures are matplotlib ``Figure`` objects made without pyplot: pyplot would keep them open, and choosing
+    its backend to draw them would change the backend of a notebook the run is called from."""
     buffer = io.StringIO()
     figure.savefig(buffer, format="svg", metadata={"Date": None})
-    pyplot.close(figure)
     return buffer.getvalue()

@@ -130,9 +130,9 @@ def results(analysis: Analysis) -> dict[str, Any]:
     }
     if positions.extremes is not None:
         document["extremes_deg"] = [number(_turn_deg(value), ANGLE_FLOOR_DEG) for value in positions.extremes]
-        working, idle = positions.stroke_turns(mechanism.driver.sense)
-        document["strokes"] = {"working_deg": number(math.degrees(working)), "idle_deg": number(math.degrees(idle)),
-                               "time_ratio": number(working / idle)}
+        strokes = analysis.strokes
+        document["strokes"] = {"working_deg": number(math.degrees(strokes.working)),
+                               "idle_deg": number(math.degrees(strokes.idle)), "time_ratio": number(strokes.time_ratio)}
     if analysis.cycle is not None:
         document["cycle_efficiency"] = _cycle_efficiency(analysis.cycle)
     document["positions"] = entries
