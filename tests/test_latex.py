@@ -23,7 +23,7 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.locale import strings
-from graphplan.render.primitives import character_width
+from graphplan.render.primitives import character_width, is_wide
 from graphplan.report.forces import markdown as forces_markdown
 from graphplan.report.latex import _COLUMN_GAP_PT, _LINE_PT, _layout, latex_document, latex_fragment
 from graphplan.report.note import note_markdown
@@ -325,7 +325,8 @@ def test_a_note_with_a_cjk_name_in_it_is_set_in_the_cjk_font_whatever_its_langua
     scene = graphplan.load("fixtures/ratchet_crank_rocker.toml")
     analysis = analyse(dataclasses.replace(scene, locale=locale, title="棘轮机构: crank-rocker"))
     latex = latex_document(note_markdown(analysis), analysis.scene.title, locale)
-    assert "\\setmainfont{Noto Sans CJK SC}" in latex and "XeTeXlinebreaklocale" in latex
+    assert "\\newfontfamily{\\notecjkfont}{Noto Sans CJK SC}" in latex and "XeTeXlinebreaklocale" in latex
+    assert "\\notecjk{棘轮机构}" in latex
     # Without the ideographs the same note keeps the drawings' Latin and Cyrillic font.
     plain_analysis = analyse(dataclasses.replace(scene, locale=locale))
     assert "\\setmainfont{DejaVu Sans}" in latex_document(note_markdown(plain_analysis), scene.title, locale)
@@ -353,3 +354,37 @@ def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns
     assert broken
     words = set(re.findall(r"[а-яё]+", note))
     assert all(head + tail in words for head, tail in broken), broken
+
+
+def test_a_chinese_note_sets_only_its_cjk_runs_in_the_cjk_font(tmp_path):
+    """Noto Sans CJK SC as the main font set · and × full-width (the quick-return note in Chinese: «ω2 · lOA =
+    8 × 0.12») and had no ⁿ: the Latin font is the main one, each run of ideographs and full-width punctuation
+    set apart in the CJK font."""
+    scene = graphplan.load("fixtures/quick_return_slotted_lever.toml")
+    analysis = analyse(dataclasses.replace(scene, locale="zh"))
+    note = note_markdown(analysis)
+    latex = latex_document(note, analysis.scene.title, "zh")
+    assert "\\setmainfont{DejaVu Sans}" in latex and "\\setmainfont{Noto Sans CJK SC}" not in latex
+    body = latex.split("\\begin{document}")[1]
+    runs = re.findall(r"\\notecjk\{([^{}]*)\}", body)
+    assert runs and all(all(is_wide(c) for c in run) for run in runs)
+    outside = re.sub(r"\\notecjk\{[^{}]*\}", "", body)
+    assert not any(map(is_wide, outside))
+    assert "·" in outside and "×" in outside and "→" in outside
+    if XELATEX is None:
+        pytest.skip("XeLaTeX is not installed (Debian: texlive-xetex)")
+    log, pdf = typeset(tmp_path, "note", latex)
+    assert "Missing character" not in log
+    import pymupdf
+
+    fonts = {}   # character → the fonts the PDF sets it in
+    with pymupdf.open(pdf) as document:
+        for page in document:
+            for block in page.get_text("rawdict")["blocks"]:
+                for line in block.get("lines", []):
+                    for span in line["spans"]:
+                        for char in span["chars"]:
+                            fonts.setdefault(char["c"], set()).add(span["font"])
+    for character in "·×→⊥ωφ":
+        assert fonts[character] and all("DejaVu" in font for font in fonts[character]), (character, fonts[character])
+    assert all("CJK" in font for font in fonts["机"] | fonts["，"])

@@ -22,10 +22,10 @@ tables, :mod:`graphplan.report.markdown`), and its syntax tree is written out:
   rest left Unicode (Greek, Cyrillic, CJK, −, ⊥, ²).
 
 The text being Unicode, the document is for XeLaTeX with fontspec, set in
-the fonts of the drawings: DejaVu Sans, or Noto Sans CJK SC with XeTeX's
-line breaks between CJK characters for Chinese and for any text with a CJK
-character in it (a scene's title or names, in a note of another language),
-and hyphenated by babel in Russian.  It uses only packages of TeX Live's base and recommended
+the fonts of the drawings: DejaVu Sans, and each run of CJK characters in
+Noto Sans CJK SC with XeTeX's line breaks between them (in Chinese, and in
+a note of another language with a CJK character in it: a scene's title or
+names), and hyphenated by babel in Russian.  It uses only packages of TeX Live's base and recommended
 collections (Debian: texlive-xetex, texlive-latex-recommended); Russian
 words break at their syllables where TeX Live's Cyrillic patterns are
 installed too (texlive-lang-cyrillic).  A fragment has no preamble: a
@@ -37,12 +37,13 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from itertools import groupby
 
 import numpy as np
 from markdown_it.tree import SyntaxTreeNode
 
 from ..locale import strings
-from ..render.primitives import FONT_SIZE_PER_CAP, em_width, has_wide
+from ..render.primitives import FONT_SIZE_PER_CAP, em_width, has_wide, is_wide
 from ..render.wrapping import fitted
 from .markdown import picture_source, plain, table_parts, tree
 from .symbols import Symbol, pieces
@@ -69,8 +70,10 @@ _ROOM_UNDER_HEADING = "10\\baselineskip"
 # The drawings' line breaker measures in mm at a cap height: at this one a mm is an em.
 _EM_CAP = 1.0 / FONT_SIZE_PER_CAP
 
-# XeTeX takes every glyph from the one main font, and DejaVu Sans has no ideographs: a text with any
-# takes Noto Sans CJK SC, which has the Latin, Greek and Cyrillic letters it mixes in.
+# XeTeX takes every glyph from the one font in force, and DejaVu Sans has no ideographs: each run of them
+# is set in Noto Sans CJK SC (``\notecjk``), the rest in DejaVu Sans.  Noto Sans CJK SC as the main font
+# set ·, ×, →, ⊥ full-width (GB 18030 gives them an ideograph's square) and has no ⁿ or ᵏ; xeCJK, which
+# would switch by itself, is in no collection the note may count on (texlive-lang-chinese).
 _FONT = "DejaVu Sans"
 _CJK_FONT = "Noto Sans CJK SC"
 
@@ -78,7 +81,7 @@ _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \usepackage[top=20mm,bottom=20mm,left=30mm,right=10mm]{geometry}
 \usepackage{fontspec}
 \setmainfont{%(font)s}
-\usepackage{array,longtable,booktabs}
+%(cjk_font)s\usepackage{array,longtable,booktabs}
 \usepackage[font=normalsize,justification=raggedright,singlelinecheck=false,skip=3pt]{caption}
 %% Tables flush left under their captions, which span the line (its width is geometry's once the document begins).
 \setlength{\LTleft}{0pt}
@@ -105,6 +108,8 @@ _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 
 # Chinese has no spaces: XeTeX may break a line between any two CJK characters.
 _CJK_BREAKS = "\\XeTeXlinebreaklocale \"zh\"\n\\XeTeXlinebreakskip = 0pt plus 1pt\n"
+# A run of CJK characters in the CJK font, in the series, shape and size around it.
+_CJK_RUNS = f"\\newfontfamily{{\\notecjkfont}}{{{_CJK_FONT}}}\n\\newcommand{{\\notecjk}}[1]{{{{\\notecjkfont #1}}}}\n"
 # Russian words break at their syllables by babel's Russian (its locale file is in TeX Live's base); the
 # patterns come with TeX Live's Cyrillic collection (Debian: texlive-lang-cyrillic), and a TeX without them
 # sets the note as before, unhyphenated.
@@ -113,6 +118,10 @@ _RUSSIAN = "\\usepackage{babel}\n\\babelprovide[import,main]{russian}\n"
 _FRAGMENT_HEAD = ("% Tables of graphplan for \\input into a document typeset by XeLaTeX (the text is Unicode),\n"
                   "% with \\usepackage{array,longtable,booktabs,caption} and a main font with the text's\n"
                   "% scripts (fontspec: \\setmainfont{FONT}).\n")
+# A fragment's runs of CJK characters are marked as the note's are; in a document that sets them in no font
+# of their own, in the main font.
+_FRAGMENT_CJK = ("% Its CJK runs are in \\notecjk{...}: \\newcommand{\\notecjk}[1]{{\\cjkfont #1}} before the \\input\n"
+                 "% sets them in a font of their own.\n\\providecommand{\\notecjk}[1]{#1}\n")
 
 
 def _has_cjk(markdown_text: str, locale: str) -> bool:
@@ -123,7 +132,7 @@ def latex_document(markdown_text: str, title: str, locale: str) -> str:
     """A complete XeLaTeX document of ``markdown_text`` (the explanatory note); its first line names ``title``."""
     cjk = _has_cjk(markdown_text, locale)
     language = (_RUSSIAN if locale == "ru" else "") + (_CJK_BREAKS if cjk else "")
-    preamble = _PREAMBLE % {"font": _CJK_FONT if cjk else _FONT, "locale": language}
+    preamble = _PREAMBLE % {"font": _FONT, "cjk_font": _CJK_RUNS if cjk else "", "locale": language}
     return (f"% {' '.join(title.split())}: typeset with xelatex, twice (longtable settles its columns' widths on the second)\n"
             f"{preamble}"
             f"\\begin{{document}}\n{_body(markdown_text, locale, titled=True)}\\end{{document}}\n")
@@ -131,8 +140,9 @@ def latex_document(markdown_text: str, title: str, locale: str) -> str:
 
 def latex_fragment(markdown_text: str, locale: str) -> str:
     """The body of ``markdown_text`` (the error tables, the force analysis) for ``\\input``, with no preamble."""
-    font = _CJK_FONT if _has_cjk(markdown_text, locale) else _FONT
-    return _FRAGMENT_HEAD.replace("FONT", font) + _body(markdown_text, locale, titled=False)
+    cjk = _has_cjk(markdown_text, locale)
+    return (_FRAGMENT_HEAD.replace("FONT", _CJK_FONT if cjk else _FONT) + (_FRAGMENT_CJK if cjk else "")
+            + _body(markdown_text, locale, titled=False))
 
 
 def _body(markdown_text: str, locale: str, titled: bool) -> str:
@@ -147,7 +157,9 @@ def _table_number(caption: str, text: Mapping[str, str]) -> str | None:
 
 
 def _escape(text: str) -> str:
-    return text.translate(_SPECIAL)
+    """Text with LaTeX's special characters escaped, each run of CJK characters marked for the CJK font."""
+    return "".join(f"\\notecjk{{{''.join(run)}}}" if wide else "".join(run)
+                   for wide, run in groupby(text.translate(_SPECIAL), key=is_wide))
 
 
 def _text(text: str) -> str:
