@@ -150,10 +150,14 @@ def _body(markdown_text: str, locale: str, titled: bool) -> str:
 
 
 def _table_number(caption: str, text: Mapping[str, str]) -> str | None:
-    """The number of a table whose caption is written the locale's way ("Таблица 3 — ..."), else None."""
-    pattern = re.escape(text["table_caption"]).replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
-    found = re.fullmatch(pattern, caption.strip(), flags=re.DOTALL)
-    return found.group(1) if found else None
+    """The number of a table whose caption is written the locale's way ("Таблица 3 — ...", or over a part after
+    its first "Продолжение таблицы 3"), else None."""
+    for key in ("table_caption", "table_continued"):
+        pattern = re.escape(text[key]).replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
+        found = re.fullmatch(pattern, caption.strip(), flags=re.DOTALL)
+        if found:
+            return found.group(1)
+    return None
 
 
 def _escape(text: str) -> str:

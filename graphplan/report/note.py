@@ -209,10 +209,18 @@ class _Note:
             self.para(self.t("figure_caption", number=self.figures_shown, caption=words))
 
     def captioned(self, caption: str, table_lines: list[str]) -> None:
-        """A table another report wrote, with the note's numbered caption."""
+        """A table another report wrote, with the note's numbered caption; a part it goes on in after the first
+        (the velocity plans, six positions a part) under the locale's "Table 7 (continued)"."""
         self.tables += 1
         self.para(self.t("table_caption", number=self.tables, caption=caption))
-        self.para(*table_lines)
+        blocks = [list(block) for blank, block in itertools.groupby(table_lines, key=lambda line: not line.strip())
+                  if not blank]
+        for k, block in enumerate(blocks):
+            # GOST 7.32 names the table once, over its first part, and writes «Продолжение таблицы 7» over
+            # every other: a part under no caption read as a table of its own with no number.
+            if k and block[0].startswith("|"):
+                self.para(self.t("table_continued", number=self.tables))
+            self.para(*block)
 
     # The note.
 

@@ -1,0 +1,104 @@
+"""The note's tables and figures as GOST 2.105 and 7.32 want them found: a table split into parts names every part
+after the first as the first's continuation.
+
+Each format is read back by its own means: the Markdown by markdown-it-py's tokens, the HTML by its elements,
+the LaTeX by its longtables, the Word document by python-docx, in the order of its body.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import io
+import re
+
+import pytest
+from docx import Document
+from docx.text.paragraph import Paragraph
+from markdown_it import MarkdownIt
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.locale import strings
+from graphplan.report.latex import latex_document
+from graphplan.report.note import note_html, note_markdown
+from graphplan.report.word import note_docx
+
+LOCALES = ("en", "ru", "zh")
+
+
+def template(text: str) -> re.Pattern:
+    """A locale's caption template as a pattern, its number caught."""
+    return re.compile(re.escape(text).replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
+                      .replace(r"\{part\}", r"\d+").replace(r"\{count\}", r"\d+"))
+
+
+@pytest.fixture(scope="module", params=LOCALES)
+def every_velocity_plan(request):
+    """The shaper with the velocity plans of all twelve positions: their table in two parts of six."""
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+    positions = dataclasses.replace(scene.positions, velocity_plans=tuple(range(1, 13)))
+    analysis = analyse(dataclasses.replace(scene, locale=request.param, positions=positions))
+    return analysis, note_markdown(analysis)
+
+
+def markdown_tables(note: str) -> list[str | None]:
+    """The paragraph right before each table of the Markdown (None where there is none), in order."""
+    tokens = MarkdownIt("commonmark").enable("table").parse(note)
+    return [tokens[k - 2].content if tokens[k - 1].type == "paragraph_close" else None
+            for k, token in enumerate(tokens) if token.type == "table_open"]
+
+
+def docx_tables(document: bytes) -> list[str | None]:
+    """The paragraph right before each table of the Word document, in the order of its body."""
+    document = Document(io.BytesIO(document))
+    before, found = None, []
+    for element in document.element.body.iterchildren():
+        tag = element.tag.rsplit("}", 1)[-1]
+        if tag == "tbl":
+            found.append(before)
+        before = Paragraph(element, document).text if tag == "p" else None
+    return found
+
+
+def test_a_table_split_into_parts_names_each_part_after_the_first_its_continuation(every_velocity_plan):
+    analysis, note = every_velocity_plan
+    text = strings(analysis.scene.locale)
+    caption, continued = template(text["table_caption"]), template(text["table_continued"])
+    befores = markdown_tables(note)
+    # The tables' numbers counted here: each paragraph over a table that is a caption is the next number.
+    numbers, count = [], 0
+    for before in befores:
+        if before is not None and caption.fullmatch(before):
+            count += 1
+            assert int(caption.fullmatch(before)[1]) == count
+        numbers.append(count)
+    heading = text["table_caption"].format(number=r"(\d+)", caption=text["velocity_plans_heading"])
+    first = next(k for k, before in enumerate(befores) if before and re.fullmatch(heading, before))
+    number = numbers[first]
+    # The twelve positions in two parts: the second under «Продолжение таблицы N», no caption of its own.
+    assert befores[first + 1] == text["table_continued"].format(number=number)
+    assert continued.fullmatch(befores[first + 1]) and numbers[first + 1] == number
+    assert not any(before and continued.fullmatch(before) for k, before in enumerate(befores) if k != first + 1)
+    wanted = text["table_continued"].format(number=number)
+
+    html = note_html(analysis, markdown=note)
+    assert re.search(rf'<p class="table-caption">{re.escape(wanted)}</p>\s*<table', html)
+
+    latex = latex_document(note, analysis.scene.title, analysis.scene.locale)
+    captions = re.findall(r"\\begin\{longtable\}[^\n]*\n\\caption\*\{(.*)\}\\\\\n", latex)
+    assert captions.count(_latex(wanted)) == 1
+    # Over the rows it runs onto another page, the continued part is said to be table N's.
+    part = latex.split(f"\\caption*{{{_latex(wanted)}}}")[1].split("\\end{longtable}")[0]
+    assert f"{{{_latex(wanted)}}}\\\\\n\\toprule" in part
+
+    def captions_only(befores: list[str | None]) -> list[str | None]:   # a symbol's index is no text in Word
+        return [before if before and (caption.fullmatch(before) or continued.fullmatch(before)) else None
+                for before in befores]
+
+    docx = docx_tables(note_docx(note, analysis.scene.title, analysis.scene.locale))
+    assert captions_only(docx) == captions_only(befores)
+
+
+def _latex(words: str) -> str:
+    """Words as the LaTeX note writes them: each run of CJK characters marked for its font."""
+    return re.sub(r"([\u3000-\u9fff\uff00-\uffef]+)", r"\\notecjk{\1}", words)
