@@ -351,3 +351,29 @@ def test_the_russian_note_names_the_damping_and_the_magnification_as_the_textboo
     assert "усиления" not in note
     plot = (out / "vibration_magnification.svg").read_text(encoding="utf-8")
     assert "<!-- коэффициент динамичности M·X/(m·e) -->" in plot and "безразмерная" not in plot
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_machine_known_by_its_diagrams_is_said_to_be_given_by_the_points_of_its_scene(tmp_path, locale):
+    """The press's power diagram has 4 points; the note said «в виде диаграмм (362 точки)», the samples the
+    model is worked on.  Counted here from the scene's own arrays, both sides given."""
+    from docx import Document
+
+    from graphplan.locale import Count, strings
+
+    driving = [[0, 50.0], [180, 150.0], [360, 50.0]]
+    resisting = [[0, 100.0], [90, 100.0], [90, 20.0], [270, 180.0], [270, 100.0], [360, 100.0]]  # as much work
+    both = f"[dynamics]\nrpm = 100\ndelta = 0.05\ndriving_torque = {driving}\nresisting_torque = {resisting}\n"
+    for k, body in enumerate((PRESS, both)):
+        given = sum(len(points) for key, points in tomllib.loads(body)["dynamics"].items()
+                    if key.endswith(("_power", "_torque")))
+        assert given == (4, 9)[k]
+        (tmp_path / str(k)).mkdir()
+        out, note = note_of(tmp_path / str(k), body, locale, extra=["--format", "docx"])
+        template = strings(locale)["note_dyn_model_diagrams"]
+        sentence = template.split("{inertia}")[0].format(count=Count(given))
+        said = sentence[:max(sentence.find(")"), sentence.find("）")) + 1]   # up to the count: Je is marked up
+        assert said in note and "362" not in note and "361" not in note
+        assert said in (out / "note.html").read_text(encoding="utf-8")
+        assert said in (out / "note.tex").read_text(encoding="utf-8").replace("\\notecjk{", "").replace("}", "")
+        assert any(said in paragraph.text for paragraph in Document(str(out / "note.docx")).paragraphs)

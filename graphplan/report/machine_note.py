@@ -51,8 +51,9 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     run = "" if model.cyclic else "_swing" if turning else "_travel"
     note.heading(2, note.t("note_dynamics"), section)
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
-        note.para(note.t("note_dyn_model_diagrams", count=Count(len(model.coordinate)),
-                         inertia=note.n(model.mean_inertia)))
+        # The points the scene gives, not the samples the model is worked on (362 for a diagram of 4).
+        given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
+        note.para(note.t("note_dyn_model_diagrams", count=Count(given), inertia=note.n(model.mean_inertia)))
     else:
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
                          count=len(model.coordinate)))
