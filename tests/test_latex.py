@@ -50,8 +50,8 @@ def plain(latex: str) -> str:
 
 
 def flat(text: str) -> str:
-    """The note's text as it reads once its symbols are set: ``aBA^τ`` is aBA with τ raised, ``aBAⁿ`` with n."""
-    return text.replace("^", "").replace("ⁿ", "n").replace("ᵏ", "k")
+    """The note's text as it reads once its symbols are set: ``aBAτ`` is aBA with τ raised, ``aBAⁿ`` with n."""
+    return text.replace("^", "").replace("ⁿ", "n").replace("ᵏ", "k").replace("ʳ", "r")
 
 
 def markdown_tables(text: str) -> list[tuple[str | None, list[list[str]]]]:

@@ -102,3 +102,29 @@ def test_a_table_split_into_parts_names_each_part_after_the_first_its_continuati
 def _latex(words: str) -> str:
     """Words as the LaTeX note writes them: each run of CJK characters marked for its font."""
     return re.sub(r"([\u3000-\u9fff\uff00-\uffef]+)", r"\\notecjk{\1}", words)
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_the_markdown_raises_its_components_with_no_caret_and_the_other_formats_still_raise_them(locale):
+    """note.md wrote «aEDⁿ + aED^τ», «aBB1^r», «ε = a^τ/l»: a Markdown viewer shows the caret.  The components are
+    counted here in the Markdown (r as ʳ, τ after an index or an a, as R23τ; R23n's n too), and each is a superscript in the
+    HTML, the LaTeX and the Word document."""
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")   # two sliding pairs: relative and Coriolis terms
+    analysis = analyse(dataclasses.replace(scene, locale=locale))
+    note = note_markdown(analysis)
+    assert "^" not in note
+    assert "ʳ" in note and "ⁿ" in note and "ᵏ" in note and re.search(r"aτ/l", note)
+    counts = {"r": note.count("ʳ"), "n": note.count("ⁿ") + len(re.findall(r"(?<![A-Za-z])R\d+n(?![A-Za-z0-9])", note)),
+              "k": note.count("ᵏ"),
+              "τ": len(re.findall(r"(?:[A-Z0-9Σ]|(?<![A-Za-z])a)τ(?![A-Za-z0-9])", note))}
+    assert counts["r"] > 5 and counts["τ"] > 5
+
+    html = note_html(analysis, markdown=note)
+    assert {letter: html.count(f"<sup>{letter}</sup>") for letter in counts} == counts
+    latex = latex_document(note, analysis.scene.title, locale)
+    assert {letter: latex.count(f"\\textsuperscript{{{letter}}}") for letter in counts} == counts
+    document = Document(io.BytesIO(note_docx(note, analysis.scene.title, locale)))
+    raised = [run.text for paragraph in document.paragraphs for run in paragraph.runs if run.font.superscript]
+    raised += [run.text for table in document.tables for row in table.rows for cell in row.cells
+               for paragraph in cell.paragraphs for run in paragraph.runs if run.font.superscript]
+    assert {letter: raised.count(letter) for letter in counts} == counts

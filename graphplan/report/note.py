@@ -83,7 +83,19 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures),
                  lever_scales=dict(lever_scales or {}))
     note.write()
-    return "\n".join(note.lines).rstrip("\n") + "\n"
+    return _raised("\n".join(note.lines).rstrip("\n") + "\n")
+
+
+# A component written with a caret (the plans' aBA^τ, aBB4^r), which a Markdown viewer shows as a caret beside
+# the note's aBAⁿ and aBA4ᵏ: r raised as its modifier letter, τ, which has none, on the line as in R23τ.
+_CARET_COMPONENT = re.compile(r"(?<=[A-Za-z0-9Σ])\^([τr])(?![A-Za-z])")
+_RAISED = {"τ": "τ", "r": "ʳ"}
+
+
+def _raised(markdown: str) -> str:
+    """The note's symbols with no caret: aBA^τ as aBAτ, aBB4^r as aBB4ʳ (the HTML, LaTeX and Word documents set
+    both as superscripts, :mod:`graphplan.report.symbols`)."""
+    return _CARET_COMPONENT.sub(lambda found: _RAISED[found[1]], markdown)
 
 
 # Chinese sets no space beside its full-width punctuation: the sentences joined with a Latin space read

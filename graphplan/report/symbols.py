@@ -1,6 +1,6 @@
 """The textbook's symbols in the note's running text, with their indices told apart.
 
-The note writes its symbols flat, as plain text allows: ``VBA``, ``aBA^τ``,
+The note writes its symbols flat, as plain text allows: ``VBA``, ``aBAτ`` (the plans' ``aBA^τ``), ``aBB4ʳ``,
 ``ω3``, ``μV``, ``R23τ``, ``JF``, ``ΔWmax``, and with a Russian textbook's indices ``Jм``, ``ωср``,
 ``ΔTнб``; Assur's special point is an index like a letter (``VDΣ6``).  :func:`pieces` splits a text into plain runs and
 :class:`Symbol` parts (base, index, component), so that the HTML
@@ -20,8 +20,8 @@ from typing import NamedTuple
 SYMBOL = re.compile(
     # A derivative's d stands before the speed it differentiates: dωd/dt is d of ωd.
     r"(?:(?<![A-Za-z_])|(?<=(?<![A-Za-z_])d)(?=ω))(?:"
-    r"(?P<base>[Va]|l)(?P<index>[A-ZΣ][A-Z0-9Σ]*)(?P<component>ⁿ|ᵏ|\^τ|\^r)?"
-    r"|(?P<base12>a)(?P<component12>\^τ)"
+    r"(?P<base>[Va]|l)(?P<index>[A-ZΣ][A-Z0-9Σ]*)(?P<component>ⁿ|ᵏ|ʳ|\^?τ|\^r)?"
+    r"|(?P<base12>a)(?P<component12>\^?τ)"
     r"|(?P<base2>[ωε])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
@@ -50,7 +50,7 @@ SYMBOL = re.compile(
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
 # Superscript letters stand for the component they show: aBAⁿ is aBA with an n above.
-_SUPERSCRIPT = {"ⁿ": "n", "ᵏ": "k"}
+_SUPERSCRIPT = {"ⁿ": "n", "ᵏ": "k", "ʳ": "r"}
 
 
 class Symbol(NamedTuple):
