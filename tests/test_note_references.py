@@ -1,5 +1,6 @@
-"""The note's tables and figures as GOST 2.105 and 7.32 want them found: a table split into parts names every part
-after the first as the first's continuation.
+"""The note's tables and figures as GOST 2.105 and 7.32 want them found: each referred to by its number in the text
+before it, and a table split into parts naming every part after the first as the first's continuation; and its
+symbols' components raised without a caret.
 
 Each format is read back by its own means: the Markdown by markdown-it-py's tokens, the HTML by its elements,
 the LaTeX by its longtables, the Word document by python-docx, in the order of its body.
@@ -10,11 +11,13 @@ from __future__ import annotations
 import dataclasses
 import io
 import re
+from html import unescape
 
 import pytest
 from docx import Document
 from docx.text.paragraph import Paragraph
 from markdown_it import MarkdownIt
+from pylatexenc.latex2text import LatexNodes2Text
 
 import graphplan
 from graphplan.analysis import analyse
@@ -28,7 +31,7 @@ LOCALES = ("en", "ru", "zh")
 
 def template(text: str) -> re.Pattern:
     """A locale's caption template as a pattern, its number caught."""
-    return re.compile(re.escape(text).replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
+    return re.compile(re.escape(text).replace(r"\ ", r"\s*").replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
                       .replace(r"\{part\}", r"\d+").replace(r"\{count\}", r"\d+"))
 
 
@@ -128,3 +131,68 @@ def test_the_markdown_raises_its_components_with_no_caret_and_the_other_formats_
     raised += [run.text for table in document.tables for row in table.rows for cell in row.cells
                for paragraph in cell.paragraphs for run in paragraph.runs if run.font.superscript]
     assert {letter: raised.count(letter) for letter in counts} == counts
+
+
+# Drawings the run would write beside the note, each a blank sheet: the note shows them as figures.
+DRAWINGS = ("positions.svg", "plan_3.svg", "plan_10.svg", "diagrams.svg", "forces_3.svg", "forces_10.svg",
+            "balancing.svg")
+BLANK = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" viewBox="0 0 100 60">'
+         '<rect x="1" y="1" width="98" height="58" fill="none" stroke="black"/></svg>')
+
+
+def sequence(lines: list[str], text) -> list[tuple[str, str, int]]:
+    """What each line is, in order: ("caption" or "lead", "table" or "figure", number); other lines left out."""
+    leads = {kind: [template(text[key]) for key in keys] for kind, keys in
+             (("table", ("table_lead", "note_groups_lead")), ("figure", ("figure_lead", "plot_lead")))}
+    captions = {kind: re.compile(template(text[f"{kind}_caption"]).pattern.removesuffix(".*"))
+                for kind in ("table", "figure")}
+    found = []
+    for line in lines:
+        line = " ".join(line.split())
+        for kind in ("table", "figure"):
+            if caption := captions[kind].match(line):
+                found.append(("caption", kind, int(caption[1])))
+            elif lead := next((match for pattern in leads[kind] if (match := pattern.fullmatch(line))), None):
+                found.append(("lead", kind, int(lead[1])))
+    return found
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_every_table_and_figure_is_referred_to_by_its_number_before_it_in_every_format(locale):
+    """GOST 2.105 and 7.32: each table and figure is referred to in the text before it.  The shaper's note had
+    12 figures and 31 tables and not one «рисунок 2» or «таблица 3»."""
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+    analysis = analyse(dataclasses.replace(scene, locale=locale))
+    note = note_markdown(analysis, figures=DRAWINGS)
+    text = strings(locale)
+    blocks = [block for block in note.split("\n\n") if not block.startswith(("|", "#", "!["))]
+    order = sequence(blocks, text)
+    # Counted here: the captions number the tables and the figures 1, 2, 3, ... each (a figure in parts under one).
+    for kind in ("table", "figure"):
+        numbers = list(dict.fromkeys(number for what, k, number in order if what == "caption" and k == kind))
+        assert numbers == list(range(1, len(numbers) + 1)) and len(numbers) >= (10 if kind == "table" else 5)
+        if kind == "table":   # a numbered table is a table of the Markdown, its parts one
+            assert len(numbers) <= len(re.findall(r"^\|---", note, flags=re.MULTILINE))
+        else:
+            assert len(numbers) == len(DRAWINGS)
+    # Each caption's number referred to before it, by a sentence that is no caption.
+    referred = set()
+    for what, kind, number in order:
+        if what == "lead":
+            referred.add((kind, number))
+        else:
+            assert (kind, number) in referred, (kind, number)
+
+    html = note_html(analysis, markdown=note)
+    html_lines = [unescape(re.sub(r"<[^>]+>", "", found[1]))
+                  for found in re.finditer(r"<(?:p|figcaption)[^>]*>(.*?)</(?:p|figcaption)>", html, re.DOTALL)]
+    assert sequence(html_lines, text) == order
+
+    latex = latex_document(note, analysis.scene.title, locale).split("\\begin{document}")[1]
+    to_text = LatexNodes2Text()
+    latex_lines = [to_text.latex_to_text(line.removeprefix("\\caption*{").removesuffix("}\\\\"))
+                   for line in latex.splitlines()]
+    assert sequence(latex_lines, text) == order
+
+    document = Document(io.BytesIO(note_docx(note, analysis.scene.title, locale, {name: BLANK for name in DRAWINGS})))
+    assert sequence([paragraph.text for paragraph in document.paragraphs], text) == order

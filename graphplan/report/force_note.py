@@ -64,7 +64,7 @@ def forces_section(note: Writer, section: int) -> None:
                          *force_report.locked_between_lines(note.analysis, note.mark),
                          *force_report.cycle_efficiency_lines(note.analysis, note.mark)]:
             note.para(sentence)
-        note.figure("balancing.svg", note.t("note_cycle", load=load))
+        note.figure("balancing.svg", note.t("note_cycle", load=load), lead="plot_lead")
 
 
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:

@@ -64,9 +64,9 @@ _SIZES = (("small", 10.0), ("footnotesize", 9.0), ("scriptsize", 8.0))
 _RAGGED = {"l": "\\raggedright", "c": "\\centering", "r": "\\raggedleft"}
 # A header no wider than this (em) stays on one line where the table has room.
 _HEADER_LINE_EM = 7.0
-# The room a heading needs for the table right under it (its caption of up to two lines, a header of three and
-# the two rows it starts with), and its own.
-_ROOM_UNDER_HEADING = "10\\baselineskip"
+# The room a heading needs for the table right under it (the sentence that refers to it, its caption of up to
+# two lines, a header of three and the two rows it starts with), and its own.
+_ROOM_UNDER_HEADING = "11\\baselineskip"
 # The drawings' line breaker measures in mm at a cap height: at this one a mm is an em.
 _EM_CAP = 1.0 / FONT_SIZE_PER_CAP
 
@@ -259,7 +259,10 @@ class _Writer:
                 after = nodes[k + 1] if k + 1 < len(nodes) and nodes[k + 1].type == "paragraph" else None
                 parts.append(self.figure(source, self.inline(after.children) if after is not None else ""))
                 continue
-            if node.type == "heading" and self.titled and [n.type for n in nodes[k + 1:k + 3]] == ["paragraph", "table"]:
+            # The sentence that refers to the table may stand between the heading and the caption.
+            following = [n.type for n in nodes[k + 1:k + 4]]
+            if node.type == "heading" and self.titled and (following[:2] == ["paragraph", "table"]
+                                                           or following == ["paragraph", "paragraph", "table"]):
                 parts.append(f"\n\\noteneedroom{{{_ROOM_UNDER_HEADING}}}")
             if node.type == "table":
                 before = nodes[k - 1] if k else None

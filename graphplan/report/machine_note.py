@@ -39,8 +39,9 @@ class Writer(Protocol):
     def n(self, value: float, digits: int = 5) -> str: ...
     def heading(self, level: int, title: str, number: object = None) -> None: ...
     def para(self, *lines: str) -> None: ...
-    def figure(self, file: str, caption: str) -> None: ...
-    def table(self, caption: str | None, header: list[str], rows: list[list[str]], align: str | None = None) -> None: ...
+    def figure(self, file: str, caption: str, lead: str = "figure_lead") -> None: ...
+    def table(self, caption: str | None, header: list[str], rows: list[list[str]], align: str | None = None,
+              lead: str = "table_lead") -> None: ...
 
 
 def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> None:
@@ -72,7 +73,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     note.figure("dynamics.svg", note.text["dyn_title"])
     if dynamics.motion is not None:
         _motion(note, dynamics, flywheel)
-        note.figure("motion.svg", note.t("motion_title", title=note.scene.title))
+        note.figure("motion.svg", note.t("motion_title", title=note.scene.title), lead="plot_lead")
 
 
 def _reductions(note: Writer, model) -> None:
@@ -528,8 +529,8 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         if response.transmissibility < spec.transmissibility and response.frequency_ratio > math.sqrt(2.0):
             note.para(note.t("note_vib_isolation_already", ratio=ratio, tr=tr, wanted=note.n(spec.transmissibility)))
     words = words_for(spec, note.text) or note.text  # a moving base's plots are captioned as they are titled
-    note.figure("vibration_magnification.svg", words["vib_magnification_title"])
-    note.figure("vibration_transmissibility.svg", words["vib_transmissibility_title"])
+    note.figure("vibration_magnification.svg", words["vib_magnification_title"], lead="plot_lead")
+    note.figure("vibration_transmissibility.svg", words["vib_transmissibility_title"], lead="plot_lead")
 
 
 __all__ = ["balancing_section", "vibration_section"]

@@ -190,25 +190,36 @@ class _Note:
             title = self.t("heading_numbered", number=number, title=title)
         self.lines += ["#" * level + " " + title, ""]
 
+    def numbered_table(self, caption: str, lead: str = "table_lead") -> None:
+        """The next table's number, the sentence that refers to it (the locale's ``lead``) and its caption.
+
+        GOST 2.105 and 7.32 want every table and figure referred to in the text before it: the reference is
+        written here and in :meth:`figure`, with the number the caption takes, so that the two never differ."""
+        self.tables += 1
+        self.para(self.t(lead, number=self.tables))
+        self.para(self.t("table_caption", number=self.tables, caption=caption))
+
     def table(self, caption: str | None, header: Sequence[str], rows: Sequence[Sequence[str]],
-              align: str | None = None) -> None:
+              align: str | None = None, lead: str = "table_lead") -> None:
+        """``lead``: the locale's sentence that refers to a captioned table by its number."""
         if caption is not None:
-            self.tables += 1
-            self.para(self.t("table_caption", number=self.tables, caption=caption))
+            self.numbered_table(caption, lead)
         align = align or "l" * len(header)
         self.lines.append("| " + " | ".join(header) + " |")
         self.lines.append("|" + "".join("---:|" if a == "r" else "---|" for a in align))
         self.lines += ["| " + " | ".join(row) + " |" for row in rows]
         self.lines.append("")
 
-    def figure(self, file: str, caption: str) -> None:
+    def figure(self, file: str, caption: str, lead: str = "figure_lead") -> None:
         """The drawing ``file`` when the run writes it beside the note, numbered, its caption under it (as GOST
         2.105 sets a figure's); a picture alone in its paragraph, which the HTML, LaTeX and Word notes place.
         A drawing too tall for a page (a force sheet) is shown in the parts the run cut it into for the note
-        (``forces_3-1.svg``, ...), each under the figure's number and caption with its part."""
+        (``forces_3-1.svg``, ...), each under the figure's number and caption with its part.  Before it, the
+        locale's ``lead`` refers to it by its number."""
         if file not in self.figures:
             return
         self.figures_shown += 1
+        self.para(self.t(lead, number=self.figures_shown))
         stem = file.removesuffix(".svg")
         parts = list(itertools.takewhile(lambda part: part in self.figures,
                                          (f"{stem}-{k}.svg" for k in itertools.count(1))))
@@ -223,8 +234,7 @@ class _Note:
     def captioned(self, caption: str, table_lines: list[str]) -> None:
         """A table another report wrote, with the note's numbered caption; a part it goes on in after the first
         (the velocity plans, six positions a part) under the locale's "Table 7 (continued)"."""
-        self.tables += 1
-        self.para(self.t("table_caption", number=self.tables, caption=caption))
+        self.numbered_table(caption)
         blocks = [list(block) for blank, block in itertools.groupby(table_lines, key=lambda line: not line.strip())
                   if not blank]
         for k, block in enumerate(blocks):
@@ -329,7 +339,7 @@ class _Note:
                          self.kind_name(group.kind)])
         header = [self.t("column_group"), self.t("column_class_order"), self.t("column_links"),
                   self.t("column_joints"), self.t("column_kind")]
-        self.table(self.t("note_groups_caption"), header, rows)
+        self.table(self.t("note_groups_caption"), header, rows, lead="note_groups_lead")
         klass = _ROMAN[max((group.klass for group in mechanism.groups), default=1)]
         self.para(self.t("note_structure_formula", formula=mechanism.structure, klass=klass))
 
