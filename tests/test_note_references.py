@@ -187,6 +187,9 @@ def test_every_table_and_figure_is_referred_to_by_its_number_before_it_in_every_
     html_lines = [unescape(re.sub(r"<[^>]+>", "", found[1]))
                   for found in re.finditer(r"<(?:p|figcaption)[^>]*>(.*?)</(?:p|figcaption)>", html, re.DOTALL)]
     assert sequence(html_lines, text) == order
+    # A page break never parts a reference from what it refers to (nor the heading over it from either).
+    refers = [unescape(re.sub(r"<[^>]+>", "", found)) for found in re.findall(r'<p class="refers">(.*?)</p>', html)]
+    assert sequence(refers, text) == [item for item in order if item[0] == "lead"]
 
     latex = latex_document(note, analysis.scene.title, locale).split("\\begin{document}")[1]
     to_text = LatexNodes2Text()
@@ -196,3 +199,7 @@ def test_every_table_and_figure_is_referred_to_by_its_number_before_it_in_every_
 
     document = Document(io.BytesIO(note_docx(note, analysis.scene.title, locale, {name: BLANK for name in DRAWINGS})))
     assert sequence([paragraph.text for paragraph in document.paragraphs], text) == order
+    leads = [paragraph for paragraph in document.paragraphs if sequence([paragraph.text], text)[:1]
+             and sequence([paragraph.text], text)[0][0] == "lead"]
+    assert len(leads) == sum(item[0] == "lead" for item in order)
+    assert all(paragraph.paragraph_format.keep_with_next for paragraph in leads)

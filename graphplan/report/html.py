@@ -40,7 +40,7 @@ figure { margin: 1em 0 1.2em; text-align: center; break-inside: avoid; }
 figure img { max-width: 100%; max-height: 230mm; height: auto; }
 figcaption { margin-top: 0.4em; }
 th { hyphens: manual; }
-@media print { body { max-width: none; margin: 0; } h2, h3, h4, p.table-caption, p.lead { break-after: avoid; }
+@media print { body { max-width: none; margin: 0; } h2, h3, h4, p.table-caption, p.lead, p.refers { break-after: avoid; }
                table { font-size: 0.8em; } table.whole, tr { break-inside: avoid; }
                th, td { padding: 0.2em 0.4em; }
                table.wide { font-size: 0.67em; } table.wide th, table.wide td { padding: 0.2em 0.3em; } }
@@ -65,6 +65,10 @@ _CAPTION = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<table>)", re.DOTALL)
 # figure, which a page break never parts.  The picture links to its file: a plan sheet drawn at 530 mm shows
 # at the page's width, and its full size is a click away.
 _FIGURE = re.compile(r'<p>(<img src="([^"]*)"[^>]*>)</p>\n<p>((?:(?!</p>).)*)</p>\n', re.DOTALL)
+
+# The sentence right before a table's caption or a figure refers to it by its number: marked so that a page break
+# never leaves it behind, and the heading over it, at the foot of a page.
+_REFERS = re.compile(r"<p>((?:(?!</p>).)*)</p>\n(?=<p class=\"table-caption\">|<figure>)", re.DOTALL)
 
 # A paragraph of bold text alone heads what follows (the note's "Group II(5,6), kind RRP" over a group's vector
 # equation): marked so that a page break never leaves it at the foot of a page.
@@ -106,6 +110,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False, au
     rendered = markdown.renderer.render(list(tokens(markdown_text)), markdown.options, {})
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', rendered)
     body = _FIGURE.sub(r'<figure><a href="\2">\1</a><figcaption>\3</figcaption></figure>\n', body)
+    body = _REFERS.sub(r'<p class="refers">\1</p>\n', body)
     body = _LEAD.sub(r'<p class="lead">\1</p>\n', body)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
     body = _TABLE.sub(_classed_table, body)

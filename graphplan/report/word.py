@@ -181,8 +181,11 @@ class _Writer:
                 if k and picture_source(nodes[k - 1]) in self.pictures:   # the figure's caption
                     paragraph.alignment = WD_ALIGN_PARAGRAPH.CENTER
                 self.spans(paragraph, node.children)
-                # A table's caption stays on the page of its table; a list's items stand as lines.
-                paragraph.paragraph_format.keep_with_next = k + 1 < len(nodes) and nodes[k + 1].type == "table"
+                # A table's caption stays on the page of its table, and the sentence that refers to a table or a
+                # figure with its caption or picture; a list's items stand as lines.
+                following = [node.type for node in nodes[k + 1:k + 3]]
+                paragraph.paragraph_format.keep_with_next = following[:1] == ["table"] or following == [
+                    "paragraph", "table"] or (k + 1 < len(nodes) and picture_source(nodes[k + 1]) in self.pictures)
                 if list_style is not None:
                     paragraph.paragraph_format.space_after = Pt(0)
             elif node.type in ("bullet_list", "ordered_list"):
