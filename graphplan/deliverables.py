@@ -173,13 +173,6 @@ def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
     return {**text, "dyn_angle_axis": axis, "motion_angle_axis": axis}
 
 
-def _static_couple(scene: Scene) -> float | None:
-    from .rotor_balancing import balance, static_couple
-
-    assert scene.balancing is not None
-    return static_couple(balance(scene.balancing))
-
-
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
     from .render import drawings as draw
     from .render import plans as plan_layout
@@ -658,9 +651,11 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),
                                    dynamics.unsettled_warning(), dynamics.off_design_warning()) if line is not None]
-    if "balancing" in pieces and (couple := _static_couple(scene)) is not None:
-        told.append(f"balancing: one correction plane leaves the rotor a couple Σ m·r·z = {couple:.4g} kg·m² (its "
-                    "masses turn in other planes than the correction's); planes = [zL, zR] balances it dynamically")
+    if "balancing" in pieces:
+        from .rotor_balancing import balance, cautions
+
+        assert scene.balancing is not None
+        told += [f"balancing: {found.detail}" for found in cautions(balance(scene.balancing))]
     if "sheets" in pieces:
         from .render.title_block import SMALLEST_LETTERING, cramped, details_of, form_of, labels
 

@@ -452,7 +452,8 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
     ``planes`` lists each correction plane with ``plane`` (its name),
     ``position`` (m), ``mass_radius`` (kg·m) and ``angle_deg``, and with
     ``radius`` (m) and ``mass`` (kg) when the correction radius is given;
-    ``unbalance`` is the rotor's before correction, ``residual`` after.
+    ``unbalance`` is the rotor's before correction, ``residual`` after; ``warnings`` lists each
+    :func:`cautions` as ``{code, detail}``.
     """
     planes = []
     for plane in result.planes:
@@ -472,6 +473,8 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
         # unbalance (not of the corrections, which cancellation may have blown up), as results.json writes every
         # quantity's rounding.
         "residual": dict(zip(("force", "moment"), result.residual, strict=True)),
+        # Recorded beside the numbers they qualify: the command line's warning is gone once the run is over.
+        "warnings": [{"code": found.code, "detail": found.detail} for found in cautions(result)],
     }
 
 
@@ -485,9 +488,30 @@ def static_couple(result: BalancingResult) -> float | None:
     return couple if couple > NEGLIGIBLE * scale else None
 
 
+@dataclass(frozen=True)
+class CoupleLeft:
+    """One correction plane balances the force of masses turning in other planes but leaves their ``couple``
+    Σ m·r·z (kg·m²), :func:`static_couple`."""
+
+    couple: float
+    code = "couple-left"
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        return (f"one correction plane leaves the rotor a couple Σ m·r·z = {self.couple:.4g} kg·m² (its masses turn "
+                "in other planes than the correction's); planes = [zL, zR] balances it dynamically")
+
+
+def cautions(result: BalancingResult) -> list[CoupleLeft]:
+    """What the balanced rotor is left that a reader should not miss: the couple of one plane."""
+    couple = static_couple(result)
+    return [] if couple is None else [CoupleLeft(couple)]
+
+
 def _above_noise(value: float, scale: float) -> float:
     return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
-__all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "PolygonVector", "RotatingMass", "balance",
-           "balancing_results", "read_balancing", "static_couple", "vector_name"]
+__all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PolygonVector", "RotatingMass",
+           "balance", "balancing_results", "cautions", "read_balancing", "static_couple", "vector_name"]

@@ -326,27 +326,106 @@ def at_resonance(omega: float, stiffness: float, mass: float) -> bool:
     return abs(omega / math.sqrt(stiffness / mass) - 1.0) < RESONANCE_TOLERANCE
 
 
-def resonance_warning(spec: VibrationSpec) -> str | None:
-    """A line for a machine run near its resonance (within :data:`NEAR_RESONANCE`) without damping, or with so
-    little that its magnification reaches :data:`LARGE_MAGNIFICATION`; else None."""
+@dataclass(frozen=True)
+class NearResonance:
+    """A machine run near its resonance with no damping or with next to none (:func:`near_resonance`).
+
+    ``ratio`` r = ω/ωn, ``zeta`` ζ, ``magnification`` r²/√((1 − r²)² + (2ζr)²) and ``amplitude`` X (m) of the
+    machine's motion (the unbalance's; where the ``base_moves``, the base's or the two added)."""
+
+    ratio: float
+    zeta: float
+    magnification: float
+    amplitude: float
+    base_moves: bool = False
+    code = "near-resonance"
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        off = abs(self.ratio - 1.0)
+        if self.zeta > 0:
+            # On a moving base X is not the magnification times m·e/M: the base's motion is in it.
+            times = (f", the magnification {self.magnification:.4g}" if self.base_moves
+                     else f" is {self.magnification:.4g} times m·e/M")
+            return (f"ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}) with little damping "
+                    f"(ζ = {self.zeta:.3g}): the amplitude X = {self.amplitude:.4g} m{times}; run the machine "
+                    "farther from resonance or damp it more")
+        return (f"no damping and ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}): the amplitude "
+                f"X = {self.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
+
+
+@dataclass(frozen=True)
+class MountsSag:
+    """Isolating mounts that would sag more than :data:`MOST_MOUNT_SAG` under the machine's weight
+    (:func:`mounts_sag`), with what would bring them within it.
+
+    ``stiffness`` k (N/m) and ``sag`` M·g/k (m) of the mounts designed; ``ratio`` the r they need for the
+    ``wanted`` TR at ``zeta``, ``undamped_ratio`` the r undamped mounts would need.  Each way out is given only
+    where it reaches the limit alone, rounded to its safe side: ``most_damping`` (ζ at most), ``least_transmissibility``
+    (TR at least) and ``least_rpm`` (the speed at least; ``rpm`` the machine's).  ``undamped_sag`` (m) is given
+    where even undamped mounts sag too much, ``root_two_sag`` (m) where even r = √2 does."""
+
+    stiffness: float
+    sag: float
+    wanted: float
+    ratio: float
+    zeta: float
+    undamped_ratio: float
+    least_rpm: str
+    rpm: float
+    most_damping: str | None = None
+    least_transmissibility: str | None = None
+    undamped_sag: float | None = None
+    root_two_sag: float | None = None
+    code = "mounts-sag"
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        limit = f"{MOST_MOUNT_SAG * 1000:g} mm"
+        line = (f"the isolating mounts, k = {self.stiffness:.4g} N/m, would sag by M·g/k = {self.sag:.3g} m under "
+                f"the machine's weight, more than any spring mount ({limit}); the sag is g·r²/ω², and ")
+        if self.zeta > 0:
+            line += (f"TR = {self.wanted:g} needs r = {self.ratio:.4g} at the mounts' damping ratio ζ = {self.zeta:g} "
+                     f"(more damping, a larger r; undamped, r = {self.undamped_ratio:.4g})")
+        else:
+            line += f"TR = {self.wanted:g} needs r = {self.ratio:.4g} without damping"
+        ways = []
+        if self.most_damping is not None:
+            ways.append(f"damping ζ ≤ {self.most_damping}")
+        if self.undamped_sag is not None:
+            line += f"; even undamped mounts would sag {self.undamped_sag:.3g} m at this speed"
+        if self.least_transmissibility is not None:
+            ways.append(f"TR ≥ {self.least_transmissibility}" + (f" at ζ = {self.zeta:g}" if self.zeta > 0 else ""))
+        if self.root_two_sag is not None:
+            line += f"; at this speed no mount isolates within {limit} (r = √2 already sags {self.root_two_sag:.3g} m)"
+        ways.append(f"a speed of {self.least_rpm} rpm or more (now {self.rpm:.4g} rpm)")
+        return line + f"; within {limit}: " + ", or ".join(ways)
+
+
+def near_resonance(spec: VibrationSpec) -> NearResonance | None:
+    """The machine run near its resonance (within :data:`NEAR_RESONANCE`) without damping, or with so little
+    that its magnification reaches :data:`LARGE_MAGNIFICATION`; else None."""
     response = steady_state(spec)
     r = response.frequency_ratio
     if abs(r - 1.0) >= NEAR_RESONANCE:
         return None
-    if spec.damping_ratio > 0:
-        if response.magnification < LARGE_MAGNIFICATION:
-            return None
-        return (f"vibration: ω within {abs(r - 1.0):.2g} of the natural frequency (r = {r:.6g}) with little damping "
-                f"(ζ = {spec.damping_ratio:.3g}): the amplitude X = {response.amplitude:.4g} m is "
-                f"{response.magnification:.4g} times m·e/M; run the machine farther from resonance or damp it more")
-    return (f"vibration: no damping and ω within {abs(r - 1.0):.2g} of the natural frequency (r = {r:.6g}): the "
-            f"amplitude X = {response.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
+    if spec.damping_ratio > 0 and response.magnification < LARGE_MAGNIFICATION:
+        return None
+    # The motion the machine makes: a balanced machine on a moving base has no unbalance's amplitude to grow.
+    amplitude = response.amplitude
+    if response.combined is not None:
+        amplitude = response.combined.amplitude
+    elif response.base is not None and spec.unbalance == 0:
+        amplitude = response.base.amplitude
+    return NearResonance(ratio=r, zeta=spec.damping_ratio, magnification=response.magnification, amplitude=amplitude,
+                         base_moves=response.base is not None)
 
 
-def isolation_warning(spec: VibrationSpec) -> str | None:
-    """A line where the isolating mounts the scene asks for would sag more than :data:`MOST_MOUNT_SAG` under the
-    machine's weight (a low speed, a small transmissibility, much damping), with what would bring them within it;
-    else None.
+def mounts_sag(spec: VibrationSpec) -> MountsSag | None:
+    """The isolating mounts the scene asks for where they would sag more than :data:`MOST_MOUNT_SAG` under the
+    machine's weight (a low speed, a small transmissibility, much damping); else None.
 
     The sag M·g/k = g·r²/ω² is the mass's in nothing: r is the ratio that gives the wanted TR at the
     mounts' ζ, and grows with ζ (the damper passes force of its own), from √(1 + 1/TR) undamped.  So
@@ -367,31 +446,42 @@ def isolation_warning(spec: VibrationSpec) -> str | None:
     undamped = 1.0 + 1.0 / wanted  # r² that gives the wanted TR without damping
     # The largest r² mounts of the most sag can have at this speed.
     reach = omega * omega * MOST_MOUNT_SAG / STANDARD_GRAVITY
-    limit = f"{MOST_MOUNT_SAG * 1000:g} mm"
-    line = (f"vibration: the isolating mounts, k = {stiffness:.4g} N/m, would sag by M·g/k = {sag:.3g} m under the "
-            f"machine's weight, more than any spring mount ({limit}); the sag is g·r²/ω², and ")
-    if zeta > 0:
-        line += (f"TR = {wanted:g} needs r = {ratio:.4g} at the mounts' damping ratio ζ = {zeta:g} (more damping, a "
-                 f"larger r; undamped, r = {math.sqrt(undamped):.4g})")
-    else:
-        line += f"TR = {wanted:g} needs r = {ratio:.4g} without damping"
-    ways = []
+    most_damping = undamped_sag = least = root_two_sag = None
     if zeta > 0 and undamped <= reach:
         # TR²·((1 − s)² + 4ζ²s) = 1 + 4ζ²s at s = reach, solved for ζ².
         most = math.sqrt((wanted * wanted * (1.0 - reach) ** 2 - 1.0) / (4.0 * reach * (1.0 - wanted * wanted)))
-        ways.append(f"damping ζ ≤ {_rounded(most, down=True)}")
+        most_damping = _rounded(most, down=True)
     elif zeta > 0:
-        line += f"; even undamped mounts would sag {STANDARD_GRAVITY * undamped / omega ** 2:.3g} m at this speed"
+        undamped_sag = STANDARD_GRAVITY * undamped / omega ** 2
     if reach > 2.0:  # every ζ passes TR = 1 at r = √2: a larger TR reaches r = √reach
-        least = _rounded(float(transmissibility(math.sqrt(reach), zeta)), down=False)
-        if float(least) < 1.0:  # not rounded up to no isolation at all
-            ways.append(f"TR ≥ {least}" + (f" at ζ = {zeta:g}" if zeta > 0 else ""))
+        rounded_up = _rounded(float(transmissibility(math.sqrt(reach), zeta)), down=False)
+        if float(rounded_up) < 1.0:  # not rounded up to no isolation at all
+            least = rounded_up
     else:
-        line += (f"; at this speed no mount isolates within {limit} (r = √2 already sags "
-                 f"{2 * STANDARD_GRAVITY / omega ** 2:.3g} m)")
+        root_two_sag = 2 * STANDARD_GRAVITY / omega ** 2
     least_speed = ratio * math.sqrt(STANDARD_GRAVITY / MOST_MOUNT_SAG) / RPM
-    ways.append(f"a speed of {_rounded(least_speed, down=False)} rpm or more (now {omega / RPM:.4g} rpm)")
-    return line + f"; within {limit}: " + ", or ".join(ways)
+    return MountsSag(stiffness=stiffness, sag=sag, wanted=wanted, ratio=ratio, zeta=zeta,
+                     undamped_ratio=math.sqrt(undamped), least_rpm=_rounded(least_speed, down=False),
+                     rpm=omega / RPM, most_damping=most_damping, least_transmissibility=least,
+                     undamped_sag=undamped_sag, root_two_sag=root_two_sag)
+
+
+def cautions(spec: VibrationSpec) -> list[NearResonance | MountsSag]:
+    """What the results hold that a reader should not take at face value: a speed near resonance, isolating
+    mounts no spring could be."""
+    return [found for found in (near_resonance(spec), mounts_sag(spec)) if found is not None]
+
+
+def resonance_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line for :func:`near_resonance`, or None."""
+    found = near_resonance(spec)
+    return None if found is None else f"vibration: {found.detail}"
+
+
+def isolation_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line for :func:`mounts_sag`, or None."""
+    found = mounts_sag(spec)
+    return None if found is None else f"vibration: {found.detail}"
 
 
 def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
@@ -499,7 +589,8 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
     contract's keys: the unbalance's response, ``phase_deg`` None where there
     is no unbalance (a zero amplitude has no lag); ``isolation`` appears when
     a transmissibility is wanted, ``base_excitation`` when the base moves, and
-    ``combined`` when both the unbalance and the base excite the machine.
+    ``combined`` when both the unbalance and the base excite the machine; ``warnings`` lists each
+    :func:`cautions` as ``{code, detail}``.
     """
     response = steady_state(spec)
     document: dict[str, Any] = {
@@ -531,6 +622,8 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
                                 "phase_deg": math.degrees(response.combined.phase),
                                 "relative_amplitude": response.combined.relative,
                                 "transmitted_force": response.combined.transmitted_force}
+    # Recorded beside the numbers they qualify: the command line's warning is gone once the run is over.
+    document["warnings"] = [{"code": found.code, "detail": found.detail} for found in cautions(spec)]
     return document
 
 
@@ -639,10 +732,13 @@ __all__ = [
     "RESONANCE_TOLERANCE",
     "BaseResponse",
     "CombinedResponse",
+    "MountsSag",
+    "NearResonance",
     "Response",
     "Shaft",
     "VibrationSpec",
     "at_resonance",
+    "cautions",
     "circular_second_moment",
     "critical_speed",
     "damping_from_phase",
@@ -654,7 +750,9 @@ __all__ = [
     "isolation_frequency_ratio",
     "isolation_stiffness",
     "isolation_warning",
+    "mounts_sag",
     "natural_frequency",
+    "near_resonance",
     "phase",
     "read_vibration",
     "resonance_warning",

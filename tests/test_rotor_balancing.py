@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import cmath
 import itertools
+import json
 import math
 
 import numpy as np
@@ -657,3 +658,26 @@ def test_the_rotor_starters_labels_stand_clear_of_the_vectors_and_the_angles():
                   if isinstance(item, Polyline)]
         for text in named[f"plane-{plane.name}-labels"]:
             assert not any(text_box(text).intersects(line) for line in lines), (plane.name, text.text)
+
+
+def test_the_couple_one_plane_leaves_is_recorded_in_the_results(tmp_path, capsys):
+    """The single plane's leftover couple was in the note and on the console, not in results.json."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "one.toml"
+    scene.write_text('[scene]\ntitle = "one"\n[balancing]\n'
+                     'masses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0 },\n'
+                     '           { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08 } ]\n'
+                     'planes = [0.3]\ncorrection_radius = 0.05\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    # The correction −Σ m·r at z = 0.3 leaves Σ m·r·(z − 0.3).
+    couple = abs(sum(m * r * cmath.exp(1j * math.radians(angle)) * (z - 0.3)
+                     for m, r, angle, z in [(18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08)]))
+    assert f"couple Σ m·r·z = {couple:.4g} kg·m²" in capsys.readouterr().out
+    results = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    (found,) = results["balancing"]["warnings"]
+    assert found["code"] == "couple-left" and f"Σ m·r·z = {couple:.4g} kg·m²" in found["detail"]
+    scene.write_text(scene.read_text(encoding="utf-8").replace("planes = [0.3]", "planes = [0.0, 0.3]"),
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "two")]) == 0
+    assert json.loads((tmp_path / "two" / "results.json").read_text(encoding="utf-8"))["balancing"]["warnings"] == []

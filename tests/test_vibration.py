@@ -772,3 +772,69 @@ def test_a_bound_offered_is_written_without_an_exponent_and_on_its_safe_side():
 
     assert _rounded(1.234e-5, down=True) == "0.0000123" and _rounded(1.234e-5, down=False) == "0.0000124"
     assert _rounded(1219.6, down=False) == "1220" and _rounded(0.3921, down=True) == "0.392"
+
+
+# --- the warnings recorded in the files, not only printed ----------------------------------------------------
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_speed_near_resonance_is_recorded_in_the_results_and_cautioned_in_the_note(tmp_path, capsys, locale):
+    """ω = 30 rad/s on k/M = 1000 s⁻² without damping was warned of on the console only: results.json and the
+    note said nothing, and the amplitude stood in the note as if it were the machine's."""
+    code, told = _run(tmp_path, "mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = 30.0\n", capsys)
+    assert code == 0 and "warning: vibration: no damping" in told.out
+    r = 30.0 / math.sqrt(1e5 / 100.0)
+    (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["warnings"]
+    assert found["code"] == "near-resonance" and f"(r = {r:.6g})" in found["detail"]
+    amplitude = 0.02 / 100.0 * r * r / abs(1 - r * r)
+    assert f"X = {amplitude:.4g} m" in found["detail"]
+    from graphplan.cli import main
+
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    caution = {"en": "Caution: there is no damping", "ru": "Внимание: демпфирования нет", "zh": "注意：系统无阻尼"}
+    share = f"{abs(r - 1) * 100:.2g}".replace(".", "," if locale == "ru" else ".")
+    (line,) = [line for line in note.splitlines() if line.startswith(caution[locale])]
+    assert f"{share} %" in line
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_isolating_mounts_no_spring_could_be_are_recorded_and_cautioned_in_the_note(tmp_path, capsys, locale):
+    """TR = 0.01 at ζ = 1 and 600 rpm needs r = 200: mounts of 9.87 N/m sagging 99 m, which the note offered as the
+    design without a word and results.json recorded as one."""
+    g, omega = 9.80665, 600 * math.pi / 30
+    code, told = _run(tmp_path, "mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\ndamping_ratio = 1.0\n"
+                                "rpm = 600.0\ntransmissibility = 0.01\n", capsys)
+    assert code == 0 and "would sag" in told.out
+    sag = g * _ratio_for(0.01, 1.0) ** 2 / omega ** 2
+    (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["warnings"]
+    assert found["code"] == "mounts-sag" and f"would sag by M·g/k = {sag:.3g} m" in found["detail"]
+    from graphplan.cli import main
+
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    caution = {"en": "Caution: the isolating mounts", "ru": "Внимание: рассчитанные выше виброизоляторы",
+               "zh": "注意：上面算出的隔振器"}
+    (line,) = [line for line in note.splitlines() if line.startswith(caution[locale])]
+    written = f"{sag:.3g}".replace(".", "," if locale == "ru" else ".")
+    assert f"M·g/k = {written} " in line
+
+
+def test_a_machine_with_nothing_to_warn_of_records_an_empty_list(tmp_path, capsys):
+    code, told = _run(tmp_path, "mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\ndamping_ratio = 0.1\n"
+                                "rpm = 600.0\ntransmissibility = 0.2\n", capsys)
+    assert code == 0 and "warning" not in told.out
+    results = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert results["vibration"]["warnings"] == []
+    assert "Caution" not in (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+
+
+def test_a_balanced_machine_on_a_shaken_base_near_resonance_warns_of_the_motion_it_makes(tmp_path, capsys):
+    """With no unbalance the warning gave "the amplitude X = 0 m grows without bound": the unbalance's, which is none;
+    the machine moves X = Y·TR."""
+    omega = 0.99 * math.sqrt(1e5 / 100.0)
+    code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.0\nstiffness = 1e5\nomega = {omega!r}\n"
+                                "base_amplitude = 0.01\n", capsys)
+    assert code == 0
+    r = 0.99
+    assert f"X = {0.01 / abs(1 - r * r):.4g} m grows without bound" in told.out

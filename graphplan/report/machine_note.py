@@ -20,7 +20,17 @@ from ..locale import Count
 from ..render.numerals import angle_in_turn
 from ..rotor_balancing import BalancingResult, static_couple
 from ..units import RPM
-from ..vibration import Response, Shaft, VibrationSpec, damping_ratio
+from ..vibration import (
+    MOST_MOUNT_SAG,
+    MountsSag,
+    NearResonance,
+    Response,
+    Shaft,
+    VibrationSpec,
+    damping_ratio,
+    mounts_sag,
+    near_resonance,
+)
 from .vibration_plots import words_for
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
@@ -507,6 +517,8 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         note.para(note.t("note_vib_combined_force_shaft" if spec.on_shaft else "note_vib_combined_force", tr=tr,
                          omega=omega, unbalance=unbalance, mass=mass, base=base_text,
                          force=note.n(both.transmitted_force)))
+    if (close := near_resonance(spec)) is not None:
+        _resonance_caution(note, close)
     if spec.transmissibility is not None and response.isolation_ratio is not None:
         designed = response.isolation_stiffness
         isolating = shown_operand(note, response.isolation_ratio, [(lambda r: m * (w / r) ** 2, note.n(designed))])
@@ -528,9 +540,47 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         # Above √2 a larger r passes less: mounts softer than the designed ones isolate better than asked.
         if response.transmissibility < spec.transmissibility and response.frequency_ratio > math.sqrt(2.0):
             note.para(note.t("note_vib_isolation_already", ratio=ratio, tr=tr, wanted=note.n(spec.transmissibility)))
+        if (sagging := mounts_sag(spec)) is not None:
+            _sag_caution(note, sagging, isolating)
     words = words_for(spec, note.text) or note.text  # a moving base's plots are captioned as they are titled
     note.figure("vibration_magnification.svg", words["vib_magnification_title"], lead="plot_lead")
     note.figure("vibration_transmissibility.svg", words["vib_transmissibility_title"], lead="plot_lead")
+
+
+def _resonance_caution(note: Writer, close: NearResonance) -> None:
+    """What the command line warns of a speed near resonance, said where the amplitude is: the file outlives the
+    console."""
+    share = note.n(abs(close.ratio - 1.0) * 100.0, 2)
+    if close.zeta > 0:
+        note.para(note.t("note_vib_caution_resonance", share=share, ratio=note.n(close.ratio),
+                         zeta=note.n(close.zeta), magnification=note.n(close.magnification)))
+    else:
+        note.para(note.t("note_vib_caution_resonance_undamped", share=share, ratio=note.n(close.ratio)))
+
+
+def _sag_caution(note: Writer, sagging: MountsSag, ratio: str) -> None:
+    """Mounts the formulas give but no spring could be (a sag of metres), with the ways to mounts that could:
+    without it the note offers them as a design.  ``ratio`` is r as the isolation paragraph writes it."""
+    limit = note.n(MOST_MOUNT_SAG * 1000.0)
+    at = "" if sagging.zeta == 0 else note.t("note_vib_caution_sag_damped", zeta=note.n(sagging.zeta),
+                                             undamped=note.n(sagging.undamped_ratio))
+    text = note.t("note_vib_caution_sag", stiffness=note.n(sagging.stiffness), sag=note.n(sagging.sag, 3),
+                  limit=limit, wanted=note.n(sagging.wanted), ratio=ratio, at=at)
+    if sagging.undamped_sag is not None:
+        text += note.t("note_vib_caution_sag_undamped", sag=note.n(sagging.undamped_sag, 3))
+    if sagging.root_two_sag is not None:
+        text += note.t("note_vib_caution_sag_no_mount", limit=limit, sag=note.n(sagging.root_two_sag, 3))
+    # The bounds are written as found, rounded to their safe side, not to the note's digits.
+    ways = []
+    if sagging.most_damping is not None:
+        ways.append(note.t("note_vib_caution_way_damping", value=sagging.most_damping.replace(".", note.mark)))
+    if sagging.least_transmissibility is not None:
+        ways.append(note.t("note_vib_caution_way_transmissibility",
+                           value=sagging.least_transmissibility.replace(".", note.mark)))
+    ways.append(note.t("note_vib_caution_way_speed", value=sagging.least_rpm.replace(".", note.mark),
+                       rpm=note.n(sagging.rpm)))
+    text += note.t("note_vib_caution_sag_ways", limit=limit, ways=note.text["note_vib_caution_or"].join(ways))
+    note.para(text)
 
 
 __all__ = ["balancing_section", "vibration_section"]
