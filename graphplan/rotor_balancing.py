@@ -107,6 +107,23 @@ def vector_name(name: str) -> str:
     return f"(m·r){name}"
 
 
+def label_clash(names: Sequence[str], plane_names: Sequence[str]) -> tuple[str, int, int, str] | None:
+    """The first two products that would read alike on the polygons and in the note (``m1r1`` of masses named
+    ``1`` and ``m1``, a correction plane's ``mbrb`` and a mass ``b``'s), or None.
+
+    ``("mass", k, j, label)``: mass k's label is mass j's (j < k); ``("plane", k, j, label)``: correction
+    plane k's is mass j's.  ``names`` are the masses' as the polygons letter them (numbered where unnamed)."""
+    labels = [vector_name(name) for name in names]
+    for k, label in enumerate(labels):
+        if label in labels[:k]:
+            return "mass", k, labels.index(label), label
+    for k, plane in enumerate(plane_names):
+        label = vector_name(plane)
+        if label in labels:
+            return "plane", k, labels.index(label), label
+    return None
+
+
 @dataclass(frozen=True)
 class BalancingSpec:
     """What to balance and where.
@@ -142,6 +159,18 @@ class BalancingSpec:
             if name in names[:k]:
                 raise ValueError(f"masses[{k}].name: repeats the name of an earlier mass ({name!r})")
         object.__setattr__(self, "masses", masses)
+        count = max(1, len(tuple(self.planes)))
+        given_planes = tuple(self.plane_names) or (DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES)
+        clash = label_clash(names, given_planes if len(given_planes) == count else ())
+        if clash is not None:
+            kind, k, j, label = clash
+            if kind == "mass":
+                where, told = f"masses[{k}].name", f"mass {names[k]!r} and mass {names[j]!r}"
+            else:
+                where = "plane_names" if self.plane_names else f"masses[{j}].name"
+                told = f"correction plane {given_planes[k]!r} and mass {names[j]!r}"
+            raise ValueError(f"{where}: the products of {told} would both read {label}; give names whose products "
+                             "read apart")
         planes = tuple(_finite(f"planes[{k}]", z) for k, z in enumerate(self.planes))
         if len(planes) > 2:
             raise ValueError(f"planes: must hold one or two correction planes (got {len(planes)})")
@@ -356,6 +385,7 @@ def read_balancing(table: Table) -> BalancingSpec:
         raise SceneError(table.where("masses"), "must list at least one rotating mass")
     masses = []
     names: dict[str, str] = {}
+    named: list[str] = []
     for where, item in pairs:
         entry = Table(item, where)
         mass = entry.number("mass", positive=True)
@@ -371,6 +401,7 @@ def read_balancing(table: Table) -> BalancingSpec:
             if name in names:
                 raise SceneError(entry.where("name"), f"repeats the name of {names[name]}", name)
             names[name] = where
+        named.append(name or "")
         masses.append(RotatingMass(mass, radius, angle, 0.0 if plane is None else plane, name or ""))
     if not planes:
         given = {mass.plane for mass in masses}
@@ -380,9 +411,46 @@ def read_balancing(table: Table) -> BalancingSpec:
     radius = _correction_radius(table, count)
     plane_names = _plane_names(table, count)
     table.done()
+    _refuse_label_clash(table, named, plane_names, count)
     spec = BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
     _check_computable(balance(spec), table.where("planes"))
     return spec
+
+
+def _refuse_label_clash(table: Table, given: list[str], plane_names: tuple[str, ...], count: int) -> None:
+    """Refuse names whose products would read alike ("mara + mbrb + mbrb = 0", or mass ``m1`` and mass ``1`` both
+    ``m1r1``): the polygon and the note could not be told apart.  The key blamed is a name the scene gave: of two
+    masses the later named one (an unnamed mass is numbered, ``2``), a mass's against a plane's default name
+    (``b``; ``L``, ``R``), else ``plane_names``."""
+    names = [name or str(k + 1) for k, name in enumerate(given)]
+    planes = plane_names or (DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES)
+    clash = label_clash(names, planes)
+    if clash is None:
+        return
+    kind, k, j, label = clash
+
+    def mass(index: int) -> str:
+        told = f"named {given[index]!r}" if given[index] else f"unnamed, so numbered {names[index]}"
+        return f"{table.where('masses')}[{index}] ({told})"
+
+    if kind == "mass":
+        blamed = k if given[k] else j
+        other = j if blamed == k else k
+        raise SceneError(join_path(join_path(table.where("masses"), blamed), "name"),
+                         f"its product and that of {mass(other)} would both read {label} on the polygons and in the "
+                         "note; give names whose products read apart", given[blamed])
+    if plane_names or not given[j]:
+        # A plane named as the mass is also gives its correction mass the mass's symbol: "mA = 1.204 kg" of mass A's 2.
+        symbol = f" (and its correction mass m{planes[k]} the mass's symbol)" if planes[k] == names[j] else ""
+        raise SceneError(table.where("plane_names"),
+                         f"the product of correction plane {planes[k]!r} and that of {mass(j)} would both read {label} "
+                         f"on the polygons and in the note{symbol}; name the planes apart from the masses",
+                         list(planes))
+    raise SceneError(join_path(join_path(table.where("masses"), j), "name"),
+                     f"its product and that of correction plane {planes[k]!r} (the default name of "
+                     f"{'the correction plane' if count == 1 else 'a correction plane'}) would both read {label} on "
+                     "the polygons and in the note; give the mass another name, or name the planes (plane_names)",
+                     given[j])
 
 
 def _check_computable(result: BalancingResult, where: str) -> None:
@@ -514,4 +582,4 @@ def _above_noise(value: float, scale: float) -> float:
 
 
 __all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PolygonVector", "RotatingMass",
-           "balance", "balancing_results", "cautions", "read_balancing", "static_couple", "vector_name"]
+           "balance", "balancing_results", "cautions", "label_clash", "read_balancing", "static_couple", "vector_name"]

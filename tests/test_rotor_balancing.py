@@ -17,6 +17,7 @@ import cmath
 import itertools
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -681,3 +682,43 @@ def test_the_couple_one_plane_leaves_is_recorded_in_the_results(tmp_path, capsys
                      encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "two")]) == 0
     assert json.loads((tmp_path / "two" / "results.json").read_text(encoding="utf-8"))["balancing"]["warnings"] == []
+
+
+@pytest.mark.parametrize(("table", "key", "label"), [
+    # Masses a and b balanced in one plane, named b by default: "mara + mbrb + mbrb = 0".
+    (('masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, name = "a" }, '
+     '{ mass = 1.0, radius = 0.1, angle = 100.0, name = "b" } ]\ncorrection_radius = 0.1\n'),
+     r"balancing\.masses\[1\]\.name", "mbrb"),
+    # Planes named as the masses: "(mArA)A + … + mArA = 0", and "mA = 1.204 kg" of mass A's 2 kg.
+    (('masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, plane = 0.3, name = "A" }, '
+     '{ mass = 1.0, radius = 0.1, angle = 200.0, plane = 0.8, name = "B" } ]\nplanes = [0, 1]\n'
+     'plane_names = ["A", "B"]\ncorrection_radius = 0.1\n'), r"balancing\.plane_names", "mArA"),
+    # m1 is lettered by its index, as 1 is.
+    (('masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, name = "m1" }, '
+     '{ mass = 1.0, radius = 0.1, angle = 100.0, name = "1" } ]\n'), r"balancing\.masses\[1\]\.name", "m1r1"),
+    # An unnamed second mass is numbered 2: a traceback, from the specification's own check.
+    ('masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, name = "2" }, { mass = 1.0, radius = 0.1, angle = 100.0 } ]\n',
+     r"balancing\.masses\[0\]\.name", "m2r2"),
+    (('masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, plane = 0.1, name = "L" }, '
+     '{ mass = 1.0, radius = 0.1, angle = 100.0, plane = 0.2 } ]\nplanes = [0, 1]\n'), r"balancing\.masses\[0\]\.name",
+     "mLrL"),
+])
+def test_names_whose_products_would_read_alike_are_refused_naming_the_key_and_the_label(tmp_path, capsys, table, key,
+                                                                                        label):
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    scene.write_text('[scene]\ntitle = "rotor"\n[balancing]\n' + table, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    error = capsys.readouterr().err
+    assert re.search(rf"^graphplan: error: {key}: .*would both read {label}\b", error), error
+    assert not (tmp_path / "out").exists()
+
+
+def test_the_specification_refuses_products_that_read_alike_too():
+    with pytest.raises(ValueError, match=r"masses\[1\]\.name: the products of mass '1' and mass 'm1' would both read "
+                                         r"m1r1"):
+        BalancingSpec([RotatingMass(1, 0.1, 0, name="m1"), RotatingMass(1, 0.1, 90, name="1")])
+    with pytest.raises(ValueError, match=r"masses\[0\]\.name: .* would both read mbrb"):
+        BalancingSpec([RotatingMass(1, 0.1, 0, name="b")])
+    assert BalancingSpec([RotatingMass(1, 0.1, 0, name="b")], plane_names=("c",)).plane_names == ("c",)
