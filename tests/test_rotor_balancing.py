@@ -722,3 +722,23 @@ def test_the_specification_refuses_products_that_read_alike_too():
     with pytest.raises(ValueError, match=r"masses\[0\]\.name: .* would both read mbrb"):
         BalancingSpec([RotatingMass(1, 0.1, 0, name="b")])
     assert BalancingSpec([RotatingMass(1, 0.1, 0, name="b")], plane_names=("c",)).plane_names == ("c",)
+
+
+@pytest.mark.parametrize(("locale", "placed", "disc"), [
+    ("en", "Correction plane b, z = 0.3 m", "Correction plane b"),
+    ("ru", "Плоскость коррекции b, z = 0.3 м", "Плоскость коррекции b"),
+    ("zh", "校正平面 b，z = 0.3 m", "校正平面 b"),
+])
+def test_one_correction_plane_the_scene_places_is_captioned_with_its_z(locale, placed, disc):
+    """The two planes' captions gave z, the one plane at planes = [0.3] did not ("Correction plane b"); a disc's
+    plane is its masses' own and keeps the caption without it."""
+    from graphplan.locale import strings
+
+    def captions(spec):
+        return [item.text for layer in drawing.layout(balance(spec), strings(locale)) if layer.name.endswith("-caption")
+                for item in layer.items]
+
+    masses = [RotatingMass(18.0, 0.05, 0.0, 0.0), RotatingMass(14.0, 0.06, -60.0, 0.08)]
+    assert captions(BalancingSpec(masses, planes=(0.3,), correction_radius=0.05))[0] == placed
+    flat = [RotatingMass(18.0, 0.05, 0.0), RotatingMass(14.0, 0.06, -60.0)]
+    assert captions(BalancingSpec(flat, correction_radius=0.05))[0] == disc

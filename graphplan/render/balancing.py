@@ -72,7 +72,9 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
     words = {**strings("en"), **(text or {})}
     layers: list[Layer] = []
     cursor = 0.0
-    panels = [_polygon(plane, plane_scale(plane), words, result.spec.dynamic) for plane in result.planes]
+    # A plane the scene places (two planes, or one at planes = [z]) is captioned with its z; a disc's is its masses'.
+    placed = bool(result.spec.planes)
+    panels = [_polygon(plane, plane_scale(plane), words, placed) for plane in result.planes]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
         width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in caption))
@@ -103,8 +105,9 @@ def plane_scale(plane: CorrectionPlane) -> float:
 
 
 def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
-             dynamic: bool) -> tuple[str, list[Layer], tuple[float, float, float, float], tuple[str, ...]]:
-    """One plane's polygon at μ: its key, its layers, their bounds (mm) and its caption lines."""
+             placed: bool) -> tuple[str, list[Layer], tuple[float, float, float, float], tuple[str, ...]]:
+    """One plane's polygon at μ: its key, its layers, their bounds (mm) and its caption lines (with its z where the
+    scene ``placed`` it)."""
     key = f"plane-{plane.name}"
 
     def mm(value: complex) -> complex:
@@ -145,7 +148,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
-    return key, layers, extent, _caption(plane, scale, text, dynamic)
+    return key, layers, extent, _caption(plane, scale, text, placed)
 
 
 def _beside(plane: CorrectionPlane, mm) -> complex:
@@ -183,9 +186,9 @@ def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> 
     return marks
 
 
-def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], dynamic: bool) -> tuple[str, ...]:
+def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], placed: bool) -> tuple[str, ...]:
     title = (text["bal_plane"].format(name=plane.name, position=_given(plane.position))
-             if dynamic else text["bal_disc"].format(name=plane.name))
+             if placed else text["bal_disc"].format(name=plane.name))
     lines = [title, text["bal_scale"].format(value=format_scale(scale)), plane.equation,
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
                                            value=significant(plane.mass_radius), angle=angle_in_turn(plane.angle_deg))]
