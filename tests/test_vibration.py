@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import subprocess
 import sys
 import warnings
@@ -838,3 +839,33 @@ def test_a_balanced_machine_on_a_shaken_base_near_resonance_warns_of_the_motion_
     assert code == 0
     r = 0.99
     assert f"X = {0.01 / abs(1 - r * r):.4g} m grows without bound" in told.out
+
+
+@pytest.mark.parametrize(("locale", "base", "both", "rotor"), [
+    ("en", "Vibration from base excitation", "Vibration from the rotating unbalance and base excitation",
+     "critical speed"),
+    ("ru", "Колебания при кинематическом возбуждении (от движения основания)",
+     "Колебания от вращающегося дисбаланса и движения основания", "критическая частота вращения"),
+    ("zh", "基础激励引起的振动", "回转不平衡与基础激励引起的振动", "临界转速"),
+])
+def test_the_vibration_section_is_titled_by_what_excites_the_machine(tmp_path, capsys, locale, base, both, rotor):
+    """A vehicle on a road (no unbalance, a moving base) was "Vibration from the rotating unbalance" with "the
+    critical speed" of a rotor it has not; its numbers stay."""
+    from graphplan.cli import main
+
+    road = "mass = 1200.0\nunbalance = 0.0\nstiffness = 4.0e5\ndamping_ratio = 0.5\nomega = 5.8178\nbase_amplitude = 0.05\n"
+    code, _ = _run(tmp_path, road, capsys)
+    assert code == 0
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    (heading,) = re.findall(r"^## \d+\.? (.+)$", note, flags=re.MULTILINE)
+    assert heading == base and rotor not in note
+    natural = math.sqrt(4.0e5 / 1200.0)
+    mark = "," if locale == "ru" else "."
+    assert f"= {natural:.5g} ".replace(".", mark) in note and f"{natural * 30 / math.pi:.5g}".replace(".", mark) in note
+    (tmp_path / "both").mkdir()
+    code, _ = _run(tmp_path / "both", road.replace("unbalance = 0.0", "unbalance = 0.5"), capsys)
+    assert main(["run", str(tmp_path / "both" / "machine.toml"), "--locale", locale, "--out",
+                 str(tmp_path / "both" / locale)]) == 0
+    note = (tmp_path / "both" / locale / "note.md").read_text(encoding="utf-8")
+    assert re.findall(r"^## \d+\.? (.+)$", note, flags=re.MULTILINE) == [both] and rotor in note

@@ -447,7 +447,10 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
 
     Each operand is written to as many digits as make the written operands give the written result
     (:func:`shown_operand`); a value used in several equations is written one way in all of them."""
-    note.heading(2, note.t("note_vibration"), section)
+    # What excites the machine names the section: a machine on a moving base has no rotating unbalance to speak of.
+    moved = spec.base_amplitude is not None
+    title = "note_vibration" if not moved else "note_vibration_base" if spec.unbalance == 0 else "note_vibration_both"
+    note.heading(2, note.t(title), section)
     mass, unbalance = note.n(spec.mass), note.n(spec.unbalance)
     m = read_number(note, mass)
     natural = note.n(response.natural_frequency)
@@ -475,8 +478,9 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     if spec.damping is not None:
         note.para(note.t("note_vib_damping", damping=note.n(spec.damping), stiffness=stiffness, mass=mass,
                          zeta=zeta))
-    note.para(note.t("note_vib_natural", stiffness=stiffness, mass=mass, value=natural,
-                     rpm=note.n(response.natural_frequency / RPM), omega=omega, ratio=ratio))
+    # A critical speed is a rotor's: with none turning, ωn is where the base's motion resonates.
+    note.para(note.t("note_vib_natural_base" if balanced else "note_vib_natural", stiffness=stiffness, mass=mass,
+                     value=natural, rpm=note.n(response.natural_frequency / RPM), omega=omega, ratio=ratio))
     me_over_m = spec.unbalance / m
     amplitude_checks = [] if balanced else [(lambda q: me_over_m * q, note.n(response.amplitude))]
     if response.base is not None:
