@@ -211,6 +211,12 @@ def _run(arguments: argparse.Namespace) -> int:
     progress.say("drawing and writing the tables")
     outcomes: list[str] = []
     found = files(scene, analysis, pieces, formats, warn=outcomes.append)
+    # A sheet asked for that the scene has nothing to draw on (a vibration alone) is said, not dropped.
+    if scene.drawing.sheet_given and scene.drawing.sheet != "none" and "sheets" not in pieces \
+            and (reason := missing(scene, analysis, "sheets")) is not None:
+        where = "--sheet" if arguments.sheet is not None else "drawing.sheet"
+        alone = "; without a mechanism only a [balancing] is drawn on a sheet" if analysis is None else ""
+        outcomes.append(f"{where}: no sheet is drawn: 'sheets' {reason}{alone}")
     # A format none of the pieces comes in (docx with no note, dxf of the accuracy's plots) is said, not dropped.
     outcomes += [f"--format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
                  f"{', '.join(pieces)})" for kind in formats if kind != "svg"

@@ -67,6 +67,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if piece == "note" and analysis is None and (
             scene.balancing is not None or scene.vibration is not None or missing(scene, None, "dynamics") is None):
         return None  # the note on the machine's flywheel, rotor or vibration alone
+    if piece == "sheets" and analysis is None and scene.balancing is not None and scene.drawing.sheet != "none":
+        return None  # a rotor's balancing has a sheet of its own
     if analysis is None:
         return _NO_LINKAGE
     if piece == "sheets" and scene.drawing.sheet == "none":
@@ -153,14 +155,25 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         found.append(Drawing("dynamics", dynamics_layout.layout(dynamics.model, dynamics.flywheel,
                                                                 strings(scene.locale))))
     if "balancing" in pieces:
-        from .render import balancing as balancing_layout
-        from .rotor_balancing import balance
+        found.append(Drawing("rotor_balancing", _balancing_layers(scene)))
+    if analysis is None and "sheets" in pieces:
+        from .render.sheet import balancing_panel, balancing_sheet
+        from .render.title_block import details_of, form_of
 
-        assert scene.balancing is not None
-        found.append(Drawing("rotor_balancing", balancing_layout.layout(balance(scene.balancing),
-                                                                         strings(scene.locale))))
+        details = details_of(scene.project, scene.title, form_of(scene.locale))
+        for sheet in balancing_sheet([balancing_panel(_balancing_layers(scene), scene.locale)], scene.drawing.sheet,
+                                     scene.locale, details.title or scene.title, details):
+            found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
     return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.title))
             for drawing in found]
+
+
+def _balancing_layers(scene: Scene) -> list[Layer]:
+    from .render import balancing as balancing_layout
+    from .rotor_balancing import balance
+
+    assert scene.balancing is not None
+    return balancing_layout.layout(balance(scene.balancing), strings(scene.locale))
 
 
 def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
@@ -258,14 +271,17 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_
 
 def _course_panels(analysis: Analysis, machine: list | None = None):
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
-    and the dynamics drawing ``machine`` where the run draws one."""
-    from .render.sheet import course_panels, diagrams_panel, dynamics_panel
+    the dynamics drawing ``machine`` where the run draws one, and the rotor's balancing where the scene has it."""
+    from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel
 
+    scene = analysis.scene
     diagrams = ()
-    if missing(analysis.scene, analysis, "diagrams") is None:
-        diagrams = (diagrams_panel(analysis, analysis.scene.drawing.sheet),)
-    dynamics = (dynamics_panel(machine, analysis.scene.locale),) if machine is not None else ()
-    return course_panels(analysis, diagrams, dynamics=dynamics)
+    if missing(scene, analysis, "diagrams") is None:
+        diagrams = (diagrams_panel(analysis, scene.drawing.sheet),)
+    dynamics = (dynamics_panel(machine, scene.locale),) if machine is not None else ()
+    # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
+    balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()
+    return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing)
 
 
 class MachineDynamics:

@@ -857,3 +857,88 @@ def test_a_sheet_of_velocity_or_acceleration_plans_alone_has_no_scale_in_its_tit
         written = [text.text for text in texts([layer(sheet, "title-block")])]
         drawn_to_scale = sheet not in plans_alone and not all(name.startswith("diagrams") for name in sheet.panels)
         assert (ratio in written) == drawn_to_scale, (sheet.number, sorted(sheet.panels))
+
+
+# --- the rotor's balancing on a sheet ----------------------------------------------------------------------
+
+_ROTOR_ALONE = """[scene]
+title = "Rotor of a fan"
+[balancing]
+masses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0 },
+           { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08 },
+           { mass = 10.0, radius = 0.04, angle = 135.0, plane = 0.16 } ]
+planes = [0.04, 0.22]
+correction_radius = 0.05
+[vibration]
+mass = 100.0
+unbalance = 0.02
+stiffness = 1.0e5
+damping_ratio = 0.1
+rpm = 600.0
+"""
+
+
+def _texts(svg: str) -> list[str]:
+    return ["".join(element.itertext()) for element in ElementTree.fromstring(svg).iter("{http://www.w3.org/2000/svg}text")]
+
+
+@pytest.mark.parametrize(("how", "locale", "label"), [
+    ("option", "en", "Balancing of the rotor"), ("scene", "en", "Balancing of the rotor"),
+    ("option", "ru", "Уравновешивание ротора"), ("option", "zh", "转子平衡"),
+])
+def test_a_rotor_without_a_linkage_gets_a_balancing_sheet_with_its_polygons_at_their_scales(tmp_path, capsys, how,
+                                                                                              locale, label):
+    """--sheet A3 on a balancing-only scene wrote no sheet and said nothing, though --help promises the sheets."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    text = _ROTOR_ALONE.replace('title = "Rotor of a fan"', f'title = "Rotor of a fan"\nlocale = "{locale}"')
+    scene.write_text(text + ('\n[drawing]\nsheet = "A3"\n' if how == "scene" else ""), encoding="utf-8")
+    arguments = ["run", str(scene), "--out", str(tmp_path / "out")] + (["--sheet", "A3"] if how == "option" else [])
+    assert main(arguments) == 0
+    assert "warning" not in capsys.readouterr().out
+    svg = (tmp_path / "out" / "sheet_1.svg").read_text(encoding="utf-8")
+    root = ElementTree.fromstring(svg)
+    assert (root.get("width"), root.get("height")) == ("420mm", "297mm")
+    texts = _texts(svg)
+    assert label in texts and "Rotor of a fan" in "".join(texts)
+    # Each plane's correction drawn at the plane's μ: |mb·rb| of the equilibrium equations, over the μ captioned.
+    products = [m * r * np.exp(1j * np.radians(angle)) for m, r, angle in [(18.0, 0.05, 0.0), (14.0, 0.06, -60.0),
+                                                                          (10.0, 0.04, 135.0)]]
+    zs = np.array([0.0, 0.08, 0.16])
+    corrections = np.linalg.solve(np.array([[1.0, 1.0], [0.04, 0.22]], dtype=complex),
+                                  -np.array([sum(products), sum(p * z for p, z in zip(products, zs, strict=True))]))
+    scales = [float(found.replace(",", ".")) for found in re.findall(r"μ = ([\d.,]+) ", " ".join(texts))]
+    assert len(scales) == 2
+    for name, correction, scale in zip("LR", corrections, scales, strict=True):
+        (arrow,) = [element for element in root.iter() if element.get("id") == f"balancing-plane-{name}-m{name}r{name}"]
+        # The shaft's tail, and the head's tip (its first corner), which ends the vector.
+        tail, tip = (complex(*map(float, path.get("d").split()[0][1:].split(","))) for path in list(arrow)[:2])
+        assert abs(tip - tail) == pytest.approx(abs(correction) / scale, abs=0.01)
+
+
+def test_a_linkages_sheets_end_with_the_rotors_balancing_where_the_scene_has_one(tmp_path):
+    from graphplan.cli import main
+
+    scene = tmp_path / "engine.toml"
+    rotor = _ROTOR_ALONE.split("[balancing]")[1].split("[vibration]")[0]
+    with open("fixtures/engine_slider_crank.toml", encoding="utf-8") as fixture:
+        linkage = fixture.read()
+    scene.write_text(linkage + "\n[balancing]" + rotor,
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--only", "sheets", "--out", str(tmp_path / "out")]) == 0
+    sheets = sorted((tmp_path / "out").glob("sheet_*.svg"), key=lambda path: int(path.stem.split("_")[1]))
+    last = _texts(sheets[-1].read_text(encoding="utf-8"))
+    assert "Balancing of the rotor" in last and f"{len(sheets)} of {len(sheets)}" in last
+    assert not any("Balancing of the rotor" in _texts(path.read_text(encoding="utf-8")) for path in sheets[:-1])
+
+
+def test_a_sheet_asked_for_a_scene_with_nothing_to_draw_on_one_is_said(tmp_path, capsys):
+    from graphplan.cli import main
+
+    scene = tmp_path / "mounts.toml"
+    scene.write_text("[scene]\ntitle = \"mounts\"\n[vibration]" + _ROTOR_ALONE.split("[vibration]")[1],
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--sheet", "A3", "--out", str(tmp_path / "out")]) == 0
+    assert "warning: --sheet: no sheet is drawn: 'sheets' needs a mechanism" in capsys.readouterr().out
+    assert not list((tmp_path / "out").glob("sheet_*"))

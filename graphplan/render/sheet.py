@@ -539,6 +539,30 @@ def dynamics_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1",
     return _sheets(panels, sheet, locale, "sheet_dynamics", title, None, details, first, count)
 
 
+def balancing_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", locale: str = "en",
+                    title: str = "", details: Details | None = None, first: int = 1,
+                    count: int | None = None) -> list[Sheet]:
+    """The sheets of the rotor's balancing (:func:`balancing_panel`; :func:`kinematics_sheet`), with no μl: its
+    polygons are drawn at scales of mass-radius products, each its own."""
+    return _sheets(panels, sheet, locale, "sheet_balancing", title, None, details, first, count)
+
+
+def balancing_panel(layers: Sequence[Layer], locale: str) -> Panel:
+    """The balancing drawing (:func:`graphplan.render.balancing.layout`) as a panel to no length scale.
+
+    Where no sheet holds it whole (two planes side by side on an A4), each plane's polygon with its caption
+    stands apart, the title block naming what they are."""
+    planes: dict[str, list[Layer]] = {}
+    for layer in layers:
+        stem, _, part = layer.name.rpartition("-")
+        if layer.name.startswith("plane-") and part in ("reference", "vectors", "leaders", "labels", "caption"):
+            planes.setdefault(stem, []).append(layer)
+    label = labels(locale)["sheet_balancing"]
+    parts = tuple(Panel(f"balancing-{k + 1}", tuple(own), label=label, to_scale=False)
+                  for k, own in enumerate(planes.values())) if len(planes) > 1 else ()
+    return Panel("balancing", tuple(layers), parts, label=label, to_scale=False)
+
+
 @dataclass(frozen=True)
 class CoursePanels:
     """The drawings of a course project's sheets, laid out once: the plan of positions first among the
@@ -550,6 +574,8 @@ class CoursePanels:
     whole_forces: tuple[Panel, ...] = ()
     # The dynamics of the machine (:func:`dynamics_panel`), where the run has them.
     dynamics: tuple[Panel, ...] = ()
+    # The rotor's balancing polygons (:func:`balancing_panel`), where the scene has a [balancing] table.
+    balancing: tuple[Panel, ...] = ()
 
     def named(self, name: str) -> Panel | None:
         """The drawing ``name`` whole (a force sheet that stands in parts on the sheets too)."""
@@ -558,12 +584,13 @@ class CoursePanels:
 
 
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
-                  sheet: str | None = None, dynamics: Sequence[Panel] = ()) -> CoursePanels:
+                  sheet: str | None = None, dynamics: Sequence[Panel] = (),
+                  balancing: Sequence[Panel] = ()) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
     linkage, forces = _laid_out(analysis, analysis.scene.drawing.sheet if sheet is None else sheet)
     kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
     return CoursePanels(tuple(kinematics), tuple(part for _, parts in forces for part in parts),
-                        tuple(whole for whole, _ in forces), tuple(dynamics))
+                        tuple(whole for whole, _ in forces), tuple(dynamics), tuple(balancing))
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
@@ -601,7 +628,8 @@ def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:
 
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
                   diagrams: Sequence[Panel | Sequence[Layer]] = (), panels: CoursePanels | None = None) -> list[Sheet]:
-    """Every sheet of the analysis, numbered as one set: kinematics first, then forces, then dynamics.
+    """Every sheet of the analysis, numbered as one set: kinematics first, then forces, then dynamics, then the
+    rotor's balancing.
 
     ``sheet`` defaults to the scene's ``drawing.sheet``; ``diagrams`` are
     further kinematics panels (the diagrams of the output link); ``panels``
@@ -622,7 +650,8 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
         details = replace(details, title=scene.title)
     scale = length_scale(analysis)
     kinds = (("sheet_kinematics", list(panels.kinematics), scale), ("sheet_forces", list(panels.forces), scale),
-             ("sheet_dynamics", list(panels.dynamics), None))  # no μl: the dynamics draws no linkage
+             ("sheet_dynamics", list(panels.dynamics), None),  # no μl: the dynamics draws no linkage
+             ("sheet_balancing", list(panels.balancing), None))
     if chosen == "none":
         pages = [panel for _, drawings, _ in kinds for panel in drawings]
         return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
