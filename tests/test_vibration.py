@@ -869,3 +869,28 @@ def test_the_vibration_section_is_titled_by_what_excites_the_machine(tmp_path, c
                  str(tmp_path / "both" / locale)]) == 0
     note = (tmp_path / "both" / locale / "note.md").read_text(encoding="utf-8")
     assert re.findall(r"^## \d+\.? (.+)$", note, flags=re.MULTILINE) == [both] and rotor in note
+
+
+def test_isolating_mounts_far_above_resonance_do_not_squeeze_the_resonance_into_the_axis_edge():
+    """TR = 0.01 at ζ = 1 needs r = 200: the linear axis ran to 240 and the working point at r = 1.99, with the
+    whole resonance, stood in its first percent.  Where the plot reaches that far, r runs on a log axis."""
+    import io
+
+    zeta, wanted = 1.0, 0.01
+    ratio = brentq(lambda r: math.hypot(1, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r) - wanted, 1.5, 1e4)
+    stream = io.StringIO()
+    transmissibility_figure(stream, operating=(1.99, zeta), design=(ratio, wanted))
+    text = stream.getvalue()
+    left, right = (float(v) for v in re.search(r'<g id="patch_2">\s*<path d="M ([\d.]+) [\d.]+\s*L ([\d.]+) ',
+                                                text).groups())
+
+    def marker(colour):
+        return float(re.search(rf'<use xlink:href="#\w+" x="(-?[\d.]+)" y="-?[\d.]+" style="fill: {colour}',
+                               text).group(1))
+
+    working, design = marker("#a83a1f"), marker("#1f7a3a")
+    assert left + 0.2 * (right - left) < working < left + 0.6 * (right - left)
+    assert working < design < right
+    # On a log axis equal ratios are equal distances: from r = 1.99 to 200 is log(200/1.99) of the decade's width.
+    decade = (design - working) / math.log10(ratio / 1.99)
+    assert (right - design) == pytest.approx(decade * math.log10(math.ceil(1.2 * ratio) / ratio), rel=0.02)

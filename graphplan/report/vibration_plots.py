@@ -37,6 +37,11 @@ MACHINE_COLOUR = "#a83a1f"
 #: one is, and such a point marked on the top edge with its value.  Ten times the warning's large magnification,
 #: the peak of ζ = 0.005, while the textbooks' charts stop at ζ = 0.05 (a peak of 10).
 MOST_TO_SCALE = 10.0 * LARGE_MAGNIFICATION
+#: A plot that has to run past this frequency ratio (a working point or isolating mounts far above resonance: r = 200
+#: for TR = 0.01 at ζ = 1) runs on a logarithmic axis from :data:`LEAST_LOG_RATIO`: on a linear one to 240 the
+#: resonance, where the curves differ, was squeezed into the first two millimetres.
+LOG_RATIO_FROM = 20.0
+LEAST_LOG_RATIO = 0.1
 
 
 def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETAS, *,
@@ -50,7 +55,7 @@ def magnification_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_ZETA
     so small is drawn as none is.
     """
     words = {**locale_strings("en"), **(text or {})}
-    ratios = np.linspace(0.0, _reaching(ratio_max, operating), SAMPLES)
+    ratios = _ratios(_reaching(ratio_max, operating))
     drawn = _with_machine(_checked(zetas), operating)
     curves = [(zeta, unbalance_magnification(ratios, zeta)) for zeta in drawn]
     working = None if operating is None else (operating[0], unbalance_magnification(*operating))
@@ -76,7 +81,7 @@ def transmissibility_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_Z
     reach = _reaching(ratio_max, operating)
     if design is not None:
         reach = max(reach, float(math.ceil(1.2 * design[0])))
-    ratios = np.linspace(0.0, reach, SAMPLES)
+    ratios = _ratios(reach)
     curves = [(zeta, transmissibility(ratios, zeta)) for zeta in _with_machine(_checked(zetas), operating)]
     working = None if operating is None else (operating[0], transmissibility(*operating))
     lowest = min([0.02, *(0.5 * point[1] for point in (working, design) if point is not None)])
@@ -107,6 +112,14 @@ def _reaching(ratio_max: float, operating: tuple[float, float] | None) -> float:
     """The frequency ratio the plot runs to: ``ratio_max``, or on past a working point beyond it (a fast machine at
     r = 6 fell off the plot its legend named it in)."""
     return ratio_max if operating is None else max(ratio_max, float(math.ceil(1.2 * operating[0])))
+
+
+def _ratios(reach: float) -> np.ndarray:
+    """The frequency ratios sampled up to ``reach``: evenly from 0, or beyond :data:`LOG_RATIO_FROM` evenly in log r
+    from :data:`LEAST_LOG_RATIO` (the plot then runs on a log axis)."""
+    if reach > LOG_RATIO_FROM:
+        return np.geomspace(LEAST_LOG_RATIO, reach, SAMPLES)
+    return np.linspace(0.0, reach, SAMPLES)
 
 
 def _checked(zetas: Sequence[float]) -> list[float]:
@@ -159,6 +172,12 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
                       label=text["vib_design"].format(tr=f"{design[1]:g}", ratio=f"{design[0]:.3g}"))
         if log:
             plot.set_yscale("log")
+        if ratios[0] > 0:  # sampled in log r (:func:`_ratios`)
+            from matplotlib.ticker import FuncFormatter
+
+            plot.set_xscale("log")
+            # r as a number, 0.1 … 100, as the linear axis writes it: not 10⁻¹ … 10².
+            plot.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
         plot.set_xlim(ratios[0], ratios[-1])
         plot.set_ylim(*ylim)
         plot.set_xlabel(text["vib_ratio"])
