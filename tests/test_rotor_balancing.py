@@ -742,3 +742,19 @@ def test_one_correction_plane_the_scene_places_is_captioned_with_its_z(locale, p
     assert captions(BalancingSpec(masses, planes=(0.3,), correction_radius=0.05))[0] == placed
     flat = [RotatingMass(18.0, 0.05, 0.0), RotatingMass(14.0, 0.06, -60.0)]
     assert captions(BalancingSpec(flat, correction_radius=0.05))[0] == disc
+
+
+def test_a_chinese_caption_line_with_a_middle_dot_is_set_in_the_latin_font():
+    """A full-width comma in "mLrL = 1.413 kg·m，θL = 160.5°" made the whole line CJK, whose middle dot is as wide as
+    an ideograph ("kg ・ m"); a line of symbols and numbers takes a Latin comma."""
+    import unicodedata
+
+    from graphplan.locale import strings
+
+    masses = [RotatingMass(18.0, 0.05, 0.0, 0.0), RotatingMass(14.0, 0.06, -60.0, 0.08)]
+    layers = drawing.layout(balance(BalancingSpec(masses, planes=(0.04, 0.22), correction_radius=0.05)),
+                            strings("zh"))
+    lines = [item.text for layer in layers if layer.name.endswith("-caption") for item in layer.items]
+    dotted = [line for line in lines if "·" in line]
+    assert len(dotted) == 4  # μ and the correction of each plane
+    assert not [line for line in dotted if any(unicodedata.east_asian_width(c) in "WF" for c in line)]
