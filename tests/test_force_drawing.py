@@ -451,3 +451,45 @@ def test_a_reaction_along_a_plate_s_closing_edge_is_drawn_off_the_plate():
     assert any(abs(((end - start) * edge.conjugate()).imag) < 1e-3 * abs(end - start) * abs(edge) for edge in edges)
     for first, second in itertools.pairwise([*corners, corners[0]]):
         assert _overlap_mm(start, end, first, second) < 6.0, (first, second)
+
+
+@pytest.mark.parametrize("scene, number, link, names", [
+    ("stephenson_six_bar", 3, 6, ("Fu6", "G6")),
+    ("engine_slider_crank", 2, 2, ("Fu2",)),
+    ("scotch_yoke", 4, 4, ("G4",)),
+])
+def test_a_load_along_its_own_link_at_a_point_inside_it_is_drawn_beside_the_link_tied_to_its_point(scene, number, link,
+                                                                                                   names):
+    """Stephenson's link 6 stands nearly upright: Fu6 and G6 at S6 both lay inside its heavy line, whichever way
+    they were drawn from S6; so did the engine crank's Fu2 at S2 (a steady crank's inertia force runs along it) and
+    the yoke's weight at S4.  Each now stands a few mm beside its link, parallel to its force, its near end a few mm
+    from its point and joined to it by a thin leader, its arm still taken to the force's true line."""
+    analysis = analysis_of(scene)
+    position = next(p for p in analysis.plans if p.number == number)
+    sheet = force_sheet(analysis, position)
+    group = next(group for group in sheet.forces.groups if link in group.links)
+    key = force_layout.group_id(group.label)
+    # The drawing as laid out before it is moved onto the sheet: at μl from the mechanism's origin.
+    (body,) = [drawing for row in force_layout.rows(sheet).drawings for drawing in row if drawing.name == f"body-{key}"]
+    layers = {layer.name: layer.items for layer in body.layers}
+    outlines = [item for item in layers[f"body-{key}-links"]
+                if isinstance(item, Polyline) and item.stroke == force_layout._LINK and item.fill is None]
+    forces = {item.key: item for item in layers[f"body-{key}-forces"] if isinstance(item, Arrow)}
+    leaders = [item for item in layers[f"body-{key}-forces"] if isinstance(item, Polyline)]
+    loads = {load.name: load for load in group.loads}
+    for name in names:
+        arrow = forces[force_layout.svg_id("body", key, name)]
+        start, end = complex(*arrow.start), complex(*arrow.end)
+        load = loads[name]
+        point = sheet.positions[load.point] / sheet.length_scale
+        unit = load.force / abs(load.force)
+        assert abs(((end - start) * unit.conjugate()).imag) < 1e-6 * abs(end - start), name  # parallel to the force
+        assert ((end - start) * unit.conjugate()).real > 0, name  # in its sense
+        for outline in outlines:
+            corners = [complex(*p) for p in outline.points]
+            for a, b in itertools.pairwise(corners + corners[:1] if outline.closed else corners):
+                assert _overlap_mm(start, end, a, b) < 1.0, (name, a, b)
+        near = min((start, end), key=lambda p: abs(p - point))
+        assert 1.0 < abs(near - point) < 4.0, name  # beside its point, not away from it
+        assert any(abs(complex(*leader.points[0]) - point) < CLOSE_MM and abs(complex(*leader.points[-1]) - near)
+                   < CLOSE_MM for leader in leaders), name

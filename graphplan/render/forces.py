@@ -84,6 +84,13 @@ ARROW_SHARE = 0.25
 LEAST_ARROW_MM = 10.0
 # A force less than this share of the largest beside it is a rounding error and is not drawn.
 NEGLIGIBLE = 1e-9
+# A load whose arrow would run this far (mm), and this share of its length, within a bar of the drawn links
+# either way from its point lies along its link (a long arrow leaving its link at a small angle reads well);
+# it is drawn this far beside its line instead, tied to its point by a thin leader.
+ALONG_BAR_MM = 4.5
+ALONG_BAR_SHARE = 0.4
+BESIDE_MM = 2.5
+_LEADER_WIDTH = 0.18
 # Radii of the curved arrows of moments on the links (mm).
 MOMENT_RADIUS_MM = 6.0
 BALANCING_RADIUS_MM = 9.0
@@ -266,17 +273,25 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     # Arrows pointing onto their joint are set first, so that where several share a line the others run on
     # beyond their tails, not head against head.
     stacked: dict[str, Arrow] = {}
-    for force in sorted(shown, key=lambda force: not _points_onto(*beside[force.name], _c(paper(force.point)))):
-        start, end = _unstacked(*beside[force.name], _c(paper(force.point)), list(stacked.values()))
+    for force in sorted(shown, key=lambda force: not _points_onto(*beside[force.name][:2], _c(paper(force.point)))):
+        start, end, shift = beside[force.name]
+        start, end = _unstacked(start, end, _c(paper(force.point)) + shift, list(stacked.values()))
         stacked[force.name] = Arrow(_xy(start), _xy(end), force.stroke, 3.0, svg_id("body", key, force.name))
+    leaders: list[Primitive] = []
     for force in shown:
         arrow = stacked[force.name]
         arrows.append(arrow)
         start, end = _c(arrow.start), _c(arrow.end)
         unit = force.force / abs(force.force)
-        drawn[force.name] = (start, end, unit)
+        shift = beside[force.name][2]
+        point = _c(paper(force.point))
+        if shift:
+            # Set beside its link, the arrow is tied to its point; its arm is still taken to its true line.
+            near = min((start, end), key=lambda end_: abs(end_ - point))
+            leaders.append(Polyline((_xy(point), _xy(near)), Stroke(_LEADER_WIDTH, force.stroke.colour)))
+        drawn[force.name] = (start - shift, end - shift, unit)
         # Named at the arrow's free end: its head, or its tail when it points onto its joint.
-        free, outward = (start, -unit) if _points_onto(start, end, _c(paper(force.point))) else (end, unit)
+        free, outward = (start, -unit) if _points_onto(start, end, point + shift) else (end, unit)
         anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
     circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
@@ -284,6 +299,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     displaced, displaced_anchors = _displacements(sheet, group, paper)
     arms += displaced
     arm_anchors += displaced_anchors
+    arrows += leaders
     figure = links + arrows + turning + circles + arms
     for name in _named_points(sheet, group) + special_names:
         where = paper(sheet.positions[name])
@@ -309,13 +325,18 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)], tuple(caption))
 
 
-def _beside(point: complex, vector: complex, bars: BaseGeometry, blocks: BaseGeometry) -> tuple[complex, complex]:
-    """The arrow of a force at ``point``: from it, or onto it where that keeps it off the links' bars.
+def _beside(point: complex, vector: complex, bars: BaseGeometry,
+            blocks: BaseGeometry) -> tuple[complex, complex, complex]:
+    """The arrow of a force at ``point``: from it, or onto it where that keeps it off the links' bars, or
+    beside the bar it runs along; with the shift that sets it beside (0 where it stands on its point).
 
     A reaction pushing along a link (R23n) drawn from its joint would lie on
     the link; drawn onto the joint it stands clear, as the textbooks draw it.
     Onto a slider's joint it pushes on the block's side: its head at the pin
-    would be lost inside the block.
+    would be lost inside the block.  A load at a point inside its link (a
+    crank's Fu2 at S2, a weight along an upright link) lies on the bar
+    either way: it is drawn parallel to its line, :data:`BESIDE_MM` off it
+    on the side the bars leave clearer (else away from them), tied to its point.
     """
     def covered(start: complex, end: complex) -> float:
         return LineString((_xy(start), _xy(end))).intersection(bars).length
@@ -325,7 +346,18 @@ def _beside(point: complex, vector: complex, bars: BaseGeometry, blocks: BaseGeo
     if ShapelyPoint(_xy(point)).within(blocks):
         shy = LineString((_xy(point), _xy(point - (abs(vector) + 100.0) * unit))).intersection(blocks).length
     away, onto = (point, point + vector), (point - vector - shy * unit, point - shy * unit)
-    return onto if covered(*onto) < covered(*away) - 0.5 else away
+    chosen = onto if covered(*onto) < covered(*away) - 0.5 else away
+    hidden = covered(*chosen)
+    # A block's loads along its slot stand as they do: set off, they would run along the block's own edge.
+    if hidden < max(ALONG_BAR_MM, ALONG_BAR_SHARE * abs(vector)) or shy:
+        return (*chosen, 0j)
+    sides = [(start + shift, end + shift, shift) for start, end in (away, onto)
+             for shift in (1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM)]
+    # Of sides as clear, the one away from the drawn links, where the loads stand round the group.
+    middle = _c(bars.centroid.coords[0]) if not bars.is_empty else point
+    best = min(sides, key=lambda side: (round(covered(side[0], side[1]), 6),
+                                        ((middle - point) * side[2].conjugate()).real > 0))
+    return best if covered(best[0], best[1]) < hidden - 0.5 * ALONG_BAR_MM else (*chosen, 0j)
 
 
 def _points_onto(start: complex, end: complex, point: complex) -> bool:
