@@ -262,7 +262,10 @@ def test_the_lever_arms_as_drawn_give_the_lever_moments(case):
         assert abs(start - pole) < CLOSE_MM, "every arm starts at the pole"
         along = (complex(*arrow.end) - complex(*arrow.start)) / arrow.length
         assert abs(((foot - start) * along.conjugate()).real) < CLOSE_MM, f"{name}: the arm is not square"
-        assert abs(((foot - complex(*arrow.start)) * along.conjugate()).imag) < CLOSE_MM, f"{name}: foot off the line"
+        # An arrow set beside its line (a second load on one line at one point) is tied to its point by a leader.
+        through = next((complex(*leader.points[0]) for leader in layers["lever-forces"]
+                        if isinstance(leader, Polyline) and leader.points[-1] == arrow.start), complex(*arrow.start))
+        assert abs(((foot - through) * along.conjugate()).imag) < CLOSE_MM, f"{name}: foot off the line"
         assert abs(foot - start) * scale * abs(force) == pytest.approx(abs(moment), rel=1e-6, abs=1e-9), name
         checked += 1
     assert checked >= 2
@@ -493,3 +496,48 @@ def test_a_load_along_its_own_link_at_a_point_inside_it_is_drawn_beside_the_link
         assert 1.0 < abs(near - point) < 4.0, name  # beside its point, not away from it
         assert any(abs(complex(*leader.points[0]) - point) < CLOSE_MM and abs(complex(*leader.points[-1]) - near)
                    < CLOSE_MM for leader in leaders), name
+
+
+@pytest.mark.parametrize("scene, number, locale", [("shaper_six_bar", 3, "en"), ("quick_return_slotted_lever", 4, "zh")])
+def test_loads_at_one_point_of_the_lever_on_one_line_are_drawn_apart_each_at_its_point(scene, number, locale):
+    """On the shaper's lever F6 and Fu6 act at e along one line, and so do Mu5′ and G6; on the quick-return lever the
+    couples' forces M4′ and Mu4′ at d, and M4″ and Mu4″ at p.  They were drawn one after another on their line, one
+    head against the next one's tail, and read as one arrow.  Each now stands at its point (pulling from it, pushing
+    onto it, or a few mm beside its line tied to it by a leader), and no arrow lies along another or has its head in
+    another's stroke."""
+    analysis = analyse(dataclasses.replace(graphplan.load(f"{FIXTURES}/{scene}.toml"), locale=locale))
+    position = next(p for p in analysis.plans if p.number == number)
+    sheet = force_sheet(analysis, position)
+    (lever,) = [drawing for row in force_layout.rows(sheet).drawings for drawing in row if drawing.name == "lever"]
+    items = next(layer.items for layer in lever.layers if layer.name == "lever-forces")
+    arrows = {item.key: item for item in items if isinstance(item, Arrow)}
+    leaders = [item for item in items if isinstance(item, Polyline)]
+    scale = sheet.lever_drawn_scale
+    at_points = {}
+    for term in position.lever.terms:
+        if term.image and term.force != 0:
+            # The plan turned 90° clockwise about the pole, at the lever's μV.
+            point = -1j * (position.velocity.points[term.image] + term.shift) / scale
+            at_points.setdefault((round(point.real, 6), round(point.imag, 6)), []).append((term.name, point, term.force))
+    pairs = 0
+    for loads in at_points.values():
+        for (first, point, force), (second, _, other) in itertools.combinations(loads, 2):
+            if abs((force * other.conjugate()).imag) > math.sin(math.radians(10.0)) * abs(force) * abs(other):
+                continue  # not along one line
+            pairs += 1
+            a, b = arrows[force_layout.svg_id("lever", first)], arrows[force_layout.svg_id("lever", second)]
+            a0, a1, b0, b1 = (complex(*p) for p in (a.start, a.end, b.start, b.end))
+            assert _overlap_mm(a0, a1, b0, b1) < 1.0 and _overlap_mm(b0, b1, a0, a1) < 1.0, (first, second)
+            # Neither head in the other's stroke, but where one pushes onto the point the other pulls from.
+            assert _distance(a1, b0, b1) > 0.8 or abs(a1 - point) < CLOSE_MM, (first, second)
+            assert _distance(b1, a0, a1) > 0.8 or abs(b1 - point) < CLOSE_MM, (first, second)
+    assert pairs >= 2
+    for name, arrow in arrows.items():
+        start, end = complex(*arrow.start), complex(*arrow.end)
+        loads = [load for loads in at_points.values() for load in loads if force_layout.svg_id("lever", load[0]) == name]
+        if not loads:
+            continue
+        point = loads[0][1]
+        tied = any(abs(complex(*leader.points[0]) - point) < CLOSE_MM and complex(*leader.points[-1]) in (start, end)
+                   and abs(complex(*leader.points[-1]) - point) < 3.0 for leader in leaders)
+        assert min(abs(start - point), abs(end - point)) < CLOSE_MM or tied, name

@@ -389,6 +389,36 @@ def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Pr
     return start, end
 
 
+def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive],
+                        lines: BaseGeometry) -> tuple[complex, complex, complex]:
+    """The arrow of a load on the lever at its point ``at``: from it, or onto it where a load drawn before
+    already lies along that line from it and the other side of the point is clear of ``lines``, or else
+    :data:`BESIDE_MM` beside that line; with the shift that sets it beside (0 on its line).
+
+    Two loads at one point on one line (F6 and Fu6 at e, a couple's forces
+    M4′ and Mu4′ at d) drawn one after another read as one arrow broken
+    by a head; one pulling from the point and one pushing onto it read as
+    two, and both at their point, as a hand drawing shows them.  Where the
+    other side is taken (the arms run from the pole, another load comes
+    in), the second stands beside the first, tied to the point; where that
+    too is taken, it runs on beyond the first (:func:`_unstacked`).
+    """
+    def clear(start: complex, end: complex) -> bool:
+        return (_unstacked(start, end, at, arrows) == (start, end)
+                and LineString((_xy(start), _xy(end))).intersection(lines).length < 1.0)
+
+    away = (at, at + vector)
+    if _unstacked(*away, at, arrows) == away:
+        return (*away, 0j)
+    onto = (at - vector, at)
+    if clear(*onto):
+        return (*onto, 0j)
+    for shift in (1j * vector / abs(vector) * BESIDE_MM, -1j * vector / abs(vector) * BESIDE_MM):
+        if clear(away[0] + shift, away[1] + shift):
+            return (away[0] + shift, away[1] + shift, shift)
+    return (*_unstacked(*away, at, arrows), 0j)
+
+
 def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]) -> list[Primitive]:
     """The group's links alone: their outlines, slider blocks with the axes of their slides, pins, centres."""
     mechanism, positions = sheet.mechanism, sheet.positions
@@ -911,21 +941,34 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     named.append(("Fb", lever.balancing_image, lever.balancing_force, _BALANCING, 0j))
     scale = _arrow_scale([force for _, _, force, _, _ in named], frame)
     arrows: list[Primitive] = []
+    leaders: list[Primitive] = []
     anchors: list[Anchor] = []
     arm_layers: list[Layer] = []
     arm_anchors: list[Anchor] = []
     parts: list[str] = []
     count = 0
     moments = {term.name: term.moment for term in lever.terms}
+    # The lever's bars and rays, and every arm (from the pole square to its force's line wherever the arrow
+    # stands on it), which an arrow pushing onto its point must not lie along.
+    feet = [_foot(0j, mm(image) + shift, force / abs(force)) for _, image, force, _, shift in named if force != 0]
+    lines = unary_union([LineString(item.points + item.points[:1] if item.closed else item.points)
+                         for item in frame if isinstance(item, Polyline)]
+                        + [LineString(((0.0, 0.0), _xy(foot))) for foot in feet if abs(foot) >= ZERO_MM]).buffer(0.8)
     for name, image, force, stroke, shift in named:
         if _negligible(force, [other for _, _, other, _, _ in named]):
             continue
         length = abs(force) / scale
         unit = force / abs(force)
         at = mm(image) + shift
-        start, end = _unstacked(at, at + max(length, LEAST_ARROW_MM) * unit, at, arrows)
+        start, end, beside = _pushing_or_pulling(at, max(length, LEAST_ARROW_MM) * unit, arrows, lines)
         arrows.append(Arrow(_xy(start), _xy(end), stroke, 3.0, svg_id("lever", name)))
-        anchors.append(Anchor(_xy(end), name, NAME_SIZE, _angle(unit), stroke.colour))
+        if beside:
+            leaders.append(Polyline((_xy(at), _xy(start)), Stroke(_LEADER_WIDTH, stroke.colour)))
+        # Named at its free end: its head, or its tail where it pushes onto its point.
+        free, outward = (start, -unit) if _points_onto(start, end, at + beside) else (end, unit)
+        anchors.append(Anchor(_xy(free), name, NAME_SIZE, _angle(outward), stroke.colour))
+        # The arm runs to the force's line, through its point, beside which the arrow may stand.
+        start, end = start - beside, end - beside
         foot = _foot(0j, start, unit)
         if abs(foot) < ZERO_MM:
             continue
@@ -938,6 +981,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
     parts += [f"{_sign(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
               if not term.image and term.moment != 0]
+    arrows += leaders
     groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
     dots = [dot_marker(_xy(mm(group[0])), 0.7 if group[0] == "p" else 0.5) for group in groups]
     figure = frame + arrows + dots + [item for layer in arm_layers for item in layer.items]
