@@ -13,6 +13,7 @@ import math
 import re
 
 import pytest
+from shapely.geometry import Point as shapely_point
 from test_stroke_choice import TOGGLE
 
 import graphplan
@@ -541,3 +542,43 @@ def test_loads_at_one_point_of_the_lever_on_one_line_are_drawn_apart_each_at_its
         tied = any(abs(complex(*leader.points[0]) - point) < CLOSE_MM and complex(*leader.points[-1]) in (start, end)
                    and abs(complex(*leader.points[-1]) - point) < 3.0 for leader in leaders)
         assert min(abs(start - point), abs(end - point)) < CLOSE_MM or tied, name
+
+
+@pytest.mark.parametrize("scene, number, locale, lever_scale", [
+    ("stephenson_six_bar", 9, "en", None), ("shaper_six_bar", 3, "en", None),
+    ("triad_class_iii", 2, "ru", 0.0025),  # as the A1 sheet draws it, smaller than on its own sheet
+])
+def test_the_lever_s_arms_are_lettered_clear_of_the_pole_or_given_under_it(scene, number, locale, lever_scale):
+    """The arms h of Zhukovsky's lever all start at the pole p; their names were set about it, h6 on the pole's dot,
+    among the names of the loads acting at p (Mu4″, Mu6″).  An arm whose name would stand by the pole is left
+    unlettered, and the line under the equation gives its length on the drawing; every arm the equation names is
+    lettered away from the pole or given there, at its length from the lever's records."""
+    analysis = analyse(dataclasses.replace(graphplan.load(f"{FIXTURES}/{scene}.toml"), locale=locale))
+    position = next(p for p in analysis.plans if p.number == number)
+    sheet = force_sheet(analysis, position)
+    if lever_scale is not None:
+        sheet = dataclasses.replace(sheet, lever_scale=lever_scale)
+    (lever,) = [drawing for row in force_layout.rows(sheet).drawings for drawing in row if drawing.name == "lever"]
+    scale = sheet.lever_drawn_scale
+    pole = -1j * position.velocity.points["p"] / scale
+    labels = [item for layer in lever.layers if layer.name == "lever-labels" for item in layer.items]
+    arms = {item.text: item for item in labels if re.fullmatch(r"h\d+|hb", item.text)}
+    for name, label in arms.items():
+        assert text_box(label).distance(shapely_point(pole.real, pole.imag)) >= 8.0, name
+    equation = next(line for line in lever.caption if line.startswith("ΣMp:"))
+    named = re.findall(r"·(h\d+)\b", equation)
+    assert len(named) >= 5
+    given = dict(re.findall(r"(h\d+) = ([\d.,]+)", " ".join(lever.caption[lever.caption.index(equation) + 1:])))
+    assert given, "some arm by the pole is left unlettered"
+    lengths = {}
+    count = 0
+    largest = max(abs(position.lever.balancing_force), *(abs(term.force) for term in position.lever.terms))
+    for term in position.lever.terms:  # a force that is rounding noise is not drawn, nor its arm numbered
+        if (term.image and abs(term.force) > 1e-9 * largest
+                and abs(term.moment) / abs(term.force) / scale >= ZERO_MM):
+            count += 1
+            lengths[f"h{count}"] = abs(term.moment) / abs(term.force) / scale
+    for name in named:
+        assert name in arms or name in given, name
+        if name in given:
+            assert float(given[name].replace(",", ".")) == pytest.approx(lengths[name], rel=2e-3), name

@@ -52,7 +52,7 @@ from ..plans import Plan
 from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import Drawing, Heading, Rows
-from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels
+from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels, text_box
 from .linkage import link_outlines, outline_points
 from .numerals import significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
@@ -99,6 +99,8 @@ BALANCING_RADIUS_MM = 9.0
 LEAST_FRICTION_CIRCLE_MM = 3.0
 # The whole reaction on the friction circle's tangent runs this far past the circle each way (mm).
 TANGENT_RUN_MM = 9.0
+# An arm on the lever whose name would stand nearer the pole than this (mm) is not lettered.
+POLE_CLEAR_MM = 10.0
 # Space between two polygons of one group (mm).
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
@@ -945,6 +947,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     anchors: list[Anchor] = []
     arm_layers: list[Layer] = []
     arm_anchors: list[Anchor] = []
+    arm_lengths: dict[str, float] = {}  # on the drawing, mm
     parts: list[str] = []
     count = 0
     moments = {term.name: term.moment for term in lever.terms}
@@ -976,6 +979,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         arm = "hb" if name == "Fb" else f"h{count}"
         arm_layers.append(Layer(svg_id("lever-arm", name), tuple(_perpendicular(0j, start, end, unit))))
         arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
+        arm_lengths[arm] = abs(foot)
         if name != "Fb":
             parts.append(f"{_sign(moments[name])} {name}·{arm}")
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
@@ -989,6 +993,18 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         where = _xy(mm(group[0]))
         anchors.append(Anchor(where, ", ".join(group), POINT_SIZE, open_direction(where, frame + arrows)))
     labels = _lettered(anchors + arm_anchors, figure)
+    # An arm lettered within reach of the pole (a short one, or one whose name found no room farther out) names
+    # no arm there, among the names of the loads at p and every other arm's start: it is left unlettered and
+    # its length stands under the drawing, beside the equation that names its force.
+    # Placed again without them, another arm's name may take the room they left: until none stands there.
+    crowded: list[Anchor] = []
+    lettered = list(arm_anchors)
+    while near := [anchor for anchor, placed in zip(lettered, labels.texts[len(anchors):])
+                   if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM]:
+        crowded += near
+        lettered = [anchor for anchor in lettered if anchor not in near]
+        labels = _lettered(anchors + lettered, figure)
+    crowded.sort(key=arm_anchors.index)
     parts.append(f"{_sign(-sum(moments.values()))} Fb·hb")
     equation = _leading(" ".join(parts))
     caption = [text["lever_title"],
@@ -996,6 +1012,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                    text["body_force_scale"].format(value=format_scale(scale),
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
+               *_wrapped([f"{anchor.text} = {significant(arm_lengths[anchor.text])} {text['millimetre']}"
+                          for anchor in crowded]),
                _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
