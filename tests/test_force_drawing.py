@@ -83,7 +83,15 @@ def test_every_polygon_closes_on_the_paper(case):
             gap = sum(abs(v.force) / scale for v in group.polygon.vectors
                       if v.role in ("load", "closing") and v.name not in drawn_names)
             for first, second in zip(chain, chain[1:] + chain[:1]):
-                assert math.dist(first.end, second.start) <= CLOSE_MM + gap, (prefix, first.key, second.key)
+                if math.dist(first.end, second.start) <= CLOSE_MM + gap:
+                    continue
+                # A side running back along another is drawn beside its line, square to itself, both heads seen.
+                step = complex(*second.start) - complex(*first.end)
+                aside = [arrow for arrow in (first, second)
+                         if abs(abs(step) - force_layout.SIDE_BY_SIDE_MM) < CLOSE_MM + gap
+                         and abs(((complex(*arrow.end) - complex(*arrow.start)) * step.conjugate()).real)
+                         < CLOSE_MM * arrow.length]
+                assert aside, (prefix, first.key, second.key)
 
 
 def test_every_polygon_vector_is_its_force_over_the_force_scale(case):
@@ -582,3 +590,27 @@ def test_the_lever_s_arms_are_lettered_clear_of_the_pole_or_given_under_it(scene
         assert name in arms or name in given, name
         if name in given:
             assert float(given[name].replace(",", ".")) == pytest.approx(lengths[name], rel=2e-3), name
+
+
+@pytest.mark.parametrize("scene, number, locale", [("shaper_six_bar", 3, "en"), ("quick_return_slotted_lever", 4, "zh"),
+                                                   ("engine_slider_crank", 2, "en")])
+def test_two_sides_of_a_polygon_on_one_line_in_opposite_senses_are_drawn_side_by_side(scene, number, locale):
+    """R43 + ΣF3 + R23 = 0 closes on a straight line: the red R23 ran back over the black R43 and neither head showed
+    (so did the engine's F4 over Fu4).  Of any two sides of a polygon along one line in opposite senses, neither
+    head now lies in the other's stroke."""
+    analysis = analyse(dataclasses.replace(graphplan.load(f"{FIXTURES}/{scene}.toml"), locale=locale))
+    position = next(p for p in analysis.plans if p.number == number)
+    layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position))}
+    pairs = 0
+    for group in position.forces.groups:
+        for _, arrows in polygon_layers(layers, group):
+            for a, b in itertools.combinations(arrows, 2):
+                a0, a1, b0, b1 = (complex(*p) for p in (a.start, a.end, b.start, b.end))
+                along, back = (a1 - a0) / abs(a1 - a0), (b1 - b0) / abs(b1 - b0)
+                if (along * back.conjugate()).real > -math.cos(math.radians(3.0)):
+                    continue  # not in opposite senses along one direction
+                if abs(((b0 - a0) * along.conjugate()).imag) > 2.0 or _overlap_mm(a0, a1, b0, b1, within=2.0) < 1.0:
+                    continue  # not on one line, or not running along each other
+                pairs += 1
+                assert _distance(a1, b0, b1) > 0.8 and _distance(b1, a0, a1) > 0.8, (a.key, b.key)
+    assert pairs >= 1

@@ -101,6 +101,8 @@ LEAST_FRICTION_CIRCLE_MM = 3.0
 TANGENT_RUN_MM = 9.0
 # An arm on the lever whose name would stand nearer the pole than this (mm) is not lettered.
 POLE_CLEAR_MM = 10.0
+# Two sides of a force polygon on one line in opposite senses are drawn this far apart (mm), side by side.
+SIDE_BY_SIDE_MM = 1.5
 # Space between two polygons of one group (mm).
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
@@ -865,16 +867,18 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     styles = {"load": _KNOWN, "closing": _CLOSING, "inner": _INNER, "whole": _WHOLE}
     arrows: list[Primitive] = []
     named: list[tuple[PolygonVector, Arrow]] = []
+    corners = [mm(v.start) for v in chain]
+    middle = sum(corners, 0j) / max(len(corners), 1)
     for vector in [*chain, *wholes]:
         if abs(mm(vector.force)) < ZERO_MM:
             continue
-        arrow = Arrow(_xy(mm(vector.start)), _xy(mm(vector.end)), styles[vector.role], 3.0,
-                      svg_id(name, vector.name))
+        start, end = mm(vector.start), mm(vector.end)
+        start, end = _side_by_side(start, end, [arrow for arrow in arrows if isinstance(arrow, Arrow)], middle)
+        arrow = Arrow(_xy(start), _xy(end), styles[vector.role], 3.0, svg_id(name, vector.name))
         arrows.append(arrow)
         named.append((vector, arrow))
     dots = [dot_marker(_xy(mm(chain[0].start)), 0.6)] if chain else []
     figure = actions + arrows + dots
-    middle = sum((mm(v.start) for v in chain), 0j) / max(len(chain), 1)
     anchors = []
     for vector, arrow in named:
         centre = (_c(arrow.start) + _c(arrow.end)) / 2
@@ -885,6 +889,40 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     labels = _lettered(anchors, figure)
     return [Layer(f"{name}-lines", tuple(actions)), Layer(f"{name}-vectors", tuple(arrows + dots)),
             Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)]
+
+
+def _side_by_side(start: complex, end: complex, arrows: Sequence[Arrow], middle: complex) -> tuple[complex, complex]:
+    """The vector ``start``→``end`` of a polygon, moved square to itself by :data:`SIDE_BY_SIDE_MM` (or twice
+    that, where another side stands there) where it runs back along a side drawn before (a polygon that closes
+    on a straight line: R43 + ΣF3 + R23 = 0).
+
+    Drawn over each other, the two sides hide each other's heads; side by
+    side, as a hand drawing sets them, both read.  It moves away from the
+    polygon's ``middle`` first, or to its left where the polygon is flat.
+    """
+    length = abs(end - start)
+    unit = (end - start) / length
+
+    def along(first: complex, last: complex, arrow: Arrow, back: bool) -> bool:
+        """Whether ``first``→``last`` runs along ``arrow`` (back along it, if ``back``) for more than 1 mm."""
+        other = _c(arrow.end) - _c(arrow.start)
+        if arrow.length < ZERO_MM or ((unit.conjugate() * other).real < 0) != back:
+            return False
+        if abs((unit.conjugate() * other).imag) / arrow.length > math.sin(math.radians(3.0)):
+            return False
+        return LineString((_xy(first), _xy(last))).intersection(
+            LineString((arrow.start, arrow.end)).buffer(0.8)).length >= 1.0
+
+    if not any(along(start, end, arrow, True) for arrow in arrows):
+        return start, end
+    aside = 1j * unit
+    if ((middle - start) * aside.conjugate()).real > 0.5:
+        aside = -aside
+    for shift in (SIDE_BY_SIDE_MM * aside, -SIDE_BY_SIDE_MM * aside, 2 * SIDE_BY_SIDE_MM * aside,
+                  -2 * SIDE_BY_SIDE_MM * aside):
+        if not any(along(start + shift, end + shift, arrow, back) for arrow in arrows for back in (True, False)):
+            return start + shift, end + shift
+    return start + SIDE_BY_SIDE_MM * aside, end + SIDE_BY_SIDE_MM * aside
 
 
 # Zhukovsky's lever.
