@@ -326,11 +326,13 @@ def test_force_sheets_name_their_position(ratchet_sheets):
 
 
 @pytest.mark.parametrize("length_scale, form, expected", [
-    (0.0025, "eskd", "1:2.5"), (0.0025, "gb", "1:2.5"), (0.0025, "iso", "μl = 0.0025 m/mm"),
+    (0.0025, "eskd", "1:2.5"), (0.0025, "gb", "1:2.5"), (0.0025, "iso", "1:2.5"),
     (0.001, "iso", "1:1"), (0.002, "iso", "1:2"), (0.0005, "eskd", "2:1"), (0.04, "eskd", "1:40"),
-    (0.003, "eskd", "μl = 0.003 m/mm"), (0.003, "gb", "1:3")])
+    (0.003, "eskd", "μl = 0.003 m/mm"), (0.003, "gb", "1:3"), (0.003, "iso", "1:3"), (0.0004, "iso", "2.5:1"),
+    (0.0026666, "iso", "μl = 0.0026666 m/mm")])
 def test_scale_box_is_a_standard_ratio_or_the_scale_factor(length_scale, form, expected):
-    """GOST 2.302 has 1:2.5 and 1:40 but not 1:3; GB/T 14690 has 1:2.5 and 1:3; ISO 5455 neither."""
+    """GOST 2.302 has 1:2.5 and 1:40 but not 1:3; GB/T 14690 has 1:2.5 and 1:3; ISO 5455 recommends neither
+    but allows intermediate scales, so any ratio of a few digits is written as one."""
     assert scale_text(length_scale, form, "μl = {value} m/mm") == expected
 
 

@@ -873,7 +873,7 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         page_scale = own.pop() if len(own) == 1 else scale
         if not any(panel.to_scale for panel, _, _ in page.placed):
             page_scale = None
-        scale_box = scale_text(page_scale, form, text["length_scale"]) if page_scale is not None else ""
+        scale_box = scale_text(page_scale, form, text["length_scale"], text["decimal_mark"]) if page_scale is not None else ""
         fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page) or words[kind], scale=scale_box,
                                   sheet=first + k, sheets=count, language=locale)
         layers: list[Layer] = []

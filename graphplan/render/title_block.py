@@ -66,6 +66,9 @@ VALUE_SIZE = 3.5
 # Room between a text and the lines of its box (mm): a value, a printed label.
 PADDING = 0.8
 LABEL_PADDING = 0.5
+# Room beside the title and the drawing's name, the block's largest lettering (mm): with a value's padding they ran
+# to their cell's sides as printed.  Two millimetres by the generous estimate keep 1.5 mm or more of paper.
+NAME_MARGIN = 2.0
 # Room an ISO 7200 field's name takes at the top of its field (mm).
 CORNER_LABEL_ROOM = LABEL_PADDING + 1.45 * CORNER_LABEL_SIZE
 # How each form writes a signature's date: ESKD's narrow date column as dd.mm.yy, GB/T 10609.1's 年、月、日
@@ -158,21 +161,42 @@ def locales() -> tuple[str, ...]:
     return tuple(sorted(entry.name.removesuffix(".toml") for entry in folder.iterdir() if entry.name.endswith(".toml")))
 
 
-def scale_text(length_scale: float, form: str, length_caption: str) -> str:
-    """The scale box's text: a standard ratio of the form (1:2.5) when μl is one, else μl written out.
+def scale_text(length_scale: float, form: str, length_caption: str, decimal_mark: str = ".") -> str:
+    """The scale box's text: a ratio (1:2.5) where the form allows μl's, else μl written out; its numbers with
+    ``decimal_mark`` (ESKD writes 1:2,5, as the rest of a Russian sheet writes its numbers).
 
     ``length_caption`` is the locale's line for μl with a ``{value}``
-    field (``μl = {value} m/mm``).
+    field (``μl = {value} m/mm``).  GOST 2.302 and GB/T 14690 allow only
+    their standard ratios; ISO 5455 allows intermediate scales where its
+    recommended ones do not serve, so any ratio written in a few digits is
+    written as one there (μl written out did not fit ISO 7200's Scale field).
     """
     real_per_paper = length_scale * 1000.0
-    for ratio in STANDARD_RATIOS[form]:
-        if abs(real_per_paper - ratio) <= 1e-9 * ratio:
-            return f"1:{_ratio_number(ratio)}" if ratio >= 1 else f"{_ratio_number(1 / ratio)}:1"
-    return length_caption.format(value=format_scale(length_scale))
+    ratios = [*STANDARD_RATIOS[form]]
+    if form == "iso":
+        ratios.append(real_per_paper)
+    for ratio in ratios:
+        if abs(real_per_paper - ratio) <= 1e-9 * ratio and _ratio_number(max(ratio, 1 / ratio)) is not None:
+            text = f"1:{_ratio_number(ratio)}" if ratio >= 1 else f"{_ratio_number(1 / ratio)}:1"
+            break
+    else:
+        text = length_caption.format(value=format_scale(length_scale))
+    return _DECIMAL_POINT.sub(decimal_mark, text)
 
 
-def _ratio_number(value: float) -> str:
-    return f"{value:.3f}".rstrip("0").rstrip(".")
+# A point between two digits: the decimal point of the scale box's numbers.
+_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
+# A ratio is written when its number has at most this many significant digits: 1:2.5, 1:3, not 1:2.66667.
+_RATIO_DIGITS = 4
+
+
+def _ratio_number(value: float) -> str | None:
+    """``value`` (≥ 1) written in at most :data:`_RATIO_DIGITS` significant digits, exactly; None when it takes
+    more."""
+    text = f"{value:.3f}".rstrip("0").rstrip(".")
+    if abs(float(text) - value) > 1e-9 * value or len(text.replace(".", "").lstrip("0")) > _RATIO_DIGITS:
+        return None
+    return text
 
 
 def title_block(form: str, fields: TitleBlockFields, text: Mapping[str, str],
@@ -209,11 +233,11 @@ class _Block:
                                     (self.x, self.y + height)), MAIN, closed=True))
 
     def text(self, value: str, box: tuple[float, float, float, float], size: float = VALUE_SIZE,
-             anchor: str = "middle", weight: str = "normal", lines: int = 1) -> None:
-        """``value`` fitted into ``box`` (x0, y0, x1, y1 from the block's corner)."""
+             anchor: str = "middle", weight: str = "normal", lines: int = 1, margin: float | None = None) -> None:
+        """``value`` fitted into ``box`` (x0, y0, x1, y1 from the block's corner), ``margin`` mm from its sides."""
         x0, y0, x1, y1 = box
         self.items.extend(fitted(value, (self.x + x0, self.y + y0, self.x + x1, self.y + y1), size, anchor,
-                                 weight, lines))
+                                 weight, lines, margin=margin))
 
     def label(self, value: str, box: tuple[float, float, float, float], anchor: str = "middle") -> None:
         x0, y0, x1, y1 = box
@@ -349,19 +373,21 @@ def _iso(block: _Block, fields: TitleBlockFields, text: Mapping[str, str]) -> No
     )
     for key, (x0, y0, x1, y1), value in cells:
         block.corner_label(text[key], (x0, y0, x1, y1))
-        block.text(value, (x0, y0, x1, y1 - CORNER_LABEL_ROOM), 3.0)
+        block.text(value, (x0, y0, x1, y1 - CORNER_LABEL_ROOM), 3.0,
+                   margin=NAME_MARGIN if key == "iso_document_type" else None)
     block.corner_label(text["iso_legal_owner"], (0.0, 0.0, 60.0, 30.0))
     block.text(fields.organization, (0.0, 0.0, 60.0, 30.0 - CORNER_LABEL_ROOM), VALUE_SIZE, lines=3)
     block.corner_label(text["iso_title"], (60.0, 10.0, 180.0, 30.0))
-    block.text(fields.title, (60.0, 10.0, 180.0, 30.0 - CORNER_LABEL_ROOM), 5.0, weight="bold", lines=3)
+    block.text(fields.title, (60.0, 10.0, 180.0, 30.0 - CORNER_LABEL_ROOM), 5.0, weight="bold", lines=3,
+               margin=NAME_MARGIN)
 
 
 def _name(block: _Block, fields: TitleBlockFields, box: tuple[float, float, float, float]) -> None:
     """The drawing's name: the scene's title over the kind of drawing, each fitted into its share of ``box``."""
     x0, y0, x1, y1 = box
     split = y0 + 0.32 * (y1 - y0)
-    block.text(fields.title, (x0, split, x1, y1), 4.0, weight="bold", lines=4)
-    block.text(fields.drawing, (x0, y0, x1, split), 3.0, lines=2)
+    block.text(fields.title, (x0, split, x1, y1), 4.0, weight="bold", lines=4, margin=NAME_MARGIN)
+    block.text(fields.drawing, (x0, y0, x1, split), 3.0, lines=2, margin=NAME_MARGIN)
 
 
 # Fitting a text into a box.
@@ -437,12 +463,14 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
 
 
 def fitted(value: str, box: tuple[float, float, float, float], size: float, anchor: str = "middle",
-           weight: str = "normal", lines: int = 1, padding: float = PADDING) -> list[Text]:
-    """``value`` in at most ``lines`` lines, centred in ``box`` (x0, y0, x1, y1), set smaller when it must."""
+           weight: str = "normal", lines: int = 1, padding: float = PADDING, margin: float | None = None) -> list[Text]:
+    """``value`` in at most ``lines`` lines, centred in ``box`` (x0, y0, x1, y1), set smaller when it must;
+    ``padding`` mm from the box's lines, ``margin`` (if given) from its sides."""
     if not value.strip():
         return []
     x0, y0, x1, y1 = box
-    width, height = x1 - x0 - 2 * padding, y1 - y0 - 2 * padding
+    side = padding if margin is None else margin
+    width, height = x1 - x0 - 2 * side, y1 - y0 - 2 * padding
     best: tuple[float, list[str]] | None = None
     for count in range(1, lines + 1):
         # Broken at its spaces where that sets it as large as breaking between ideographs does: «清华大学 机械系»
@@ -461,5 +489,5 @@ def fitted(value: str, box: tuple[float, float, float, float], size: float, anch
     pitch = LINE_PITCH * fit
     tall = (len(parts) - 1) * pitch + 1.45 * fit
     top = (y0 + y1) / 2 + tall / 2 - 1.15 * fit
-    x = {"start": x0 + padding, "middle": (x0 + x1) / 2, "end": x1 - padding}[anchor]
+    x = {"start": x0 + side, "middle": (x0 + x1) / 2, "end": x1 - side}[anchor]
     return [Text((x, top - k * pitch), part, math.floor(fit * 1000) / 1000, anchor, weight=weight) for k, part in enumerate(parts)]
