@@ -393,7 +393,8 @@ def test_dxf_puts_the_title_block_with_the_frame_on_sheet(locale):
                       organization="University", date="2026-12-01")
     (sheet,) = kinematics_sheet([list(plan_sheet_layers())], "A1", locale=locale, scale=0.002, details=details)
     document, _ = read_back(sheet.layers)
-    texts, drawn = svg_groups(sheet.svg(), {"sheet-frame", "title-block"})
+    # ESKD's графа 26 (the designation upside down in the frame's corner) is the sheet's too.
+    texts, drawn = svg_groups(sheet.svg(), {"sheet-frame", "title-block", "sheet-designation"})
     assert {"A. Student", "TMM.01.00", "2026-12-01"} <= set(texts)
     space = document.modelspace()
     assert Counter(entity.plain_text() for entity in space.query('TEXT[layer=="SHEET"]')) == texts
@@ -443,7 +444,7 @@ def test_dxf_texts_are_read_back_as_written_whatever_codes_they_hold():
     details = Details(title='Rig "50%%d" ^J 100%', designation="TMM^01 %%c")
     (sheet,) = kinematics_sheet([list(plan_sheet_layers())], "A1", locale="ru", scale=0.002, details=details)
     document, _ = read_back(sheet.layers)
-    texts, _ = svg_groups(sheet.svg(), {"title-block"})
+    texts, _ = svg_groups(sheet.svg(), {"title-block", "sheet-designation"})
     assert "TMM^01 %%c" in texts and any("50%%d" in text for text in texts)
     space = document.modelspace()
     assert Counter(ezdxf.decode_dxf_unicode(entity.plain_text()) for entity in space.query('TEXT[layer=="SHEET"]')) == texts

@@ -169,9 +169,13 @@ def fits_a4(panel):
 
 def test_on_a4_the_ratchet_forces_keep_their_scales_with_smaller_lettering(ratchet_a4):
     analysis, sheets = ratchet_a4
-    assert check_group_scale(analysis, sheets) == [MECHANISM_SCALE] * len(analysis.plans)
-    assert check_lever_scale(analysis, sheets) == pytest.approx([p.velocity.scale for p in analysis.plans],
-                                                                  rel=1e-3)
+    # Position 5's group II(3,4) at 1:5 stands 214 mm tall under its heading, and the levers at their plans' μV
+    # 209 and 212: they filled the 216 mm of an upright A4, of which GOST 2.104's графа 26 (14 mm in the frame's
+    # top left corner) leaves 202 beside its 70 mm.  Position 11's group keeps its scale in smaller lettering.
+    assert [position.number for position in analysis.plans] == [5, 11]
+    assert check_group_scale(analysis, sheets) == [2 * MECHANISM_SCALE, MECHANISM_SCALE]
+    # The levers two standard steps smaller: at 0.02 they still stand over 202 mm tall.
+    assert check_lever_scale(analysis, sheets) == [0.025, 0.025]
     force_captions = [text for sheet in sheets for item in sheet.layers
                       if item.name.startswith("forces-") and item.name.endswith("-caption") for text in item.items]
     assert force_captions and {text.size for text in force_captions} == {force_layout.SMALL_CAPTION_SIZE}

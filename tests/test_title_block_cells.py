@@ -7,14 +7,19 @@ estimate the block fits its texts by.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
+from xml.etree import ElementTree
 
 import pytest
 from PIL import ImageFont
 
+import graphplan
+from graphplan.analysis import analyse
 from graphplan.render.packing import Panel
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, Layer, Polyline, Text, has_wide
-from graphplan.render.sheet import forces_sheet, kinematics_sheet
+from graphplan.render.sheet import course_sheets, forces_sheet, kinematics_sheet
+from graphplan.render.title_block import Details
 
 DRAWING = [Layer("square", (Polyline(((0, 0), (100, 0), (100, 80), (0, 80)), closed=True),))]
 FONTS = {("latin", "normal"): "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
@@ -97,3 +102,50 @@ def test_the_title_and_the_drawing_s_name_keep_clear_of_their_cell_s_sides(local
                     and bottom + cell[1] < text.at[1] < bottom + cell[3])
         left_margin, right_margin = x0 - (right + cell[0]), right + cell[2] - x1
         assert min(left_margin, right_margin) >= LEAST_MARGIN_MM, (text.text, left_margin, right_margin)
+
+
+@pytest.fixture(scope="module")
+def ratchet_sheets():
+    analysis = analyse(graphplan.load("fixtures/ratchet_crank_rocker.toml"))
+    return {locale: course_sheets(analyse(dataclasses.replace(analysis.scene, locale=locale)), "A1",
+                                  Details(designation="ТММ.01.02.000 Д1"))
+            for locale in ("ru", "zh", "en")}
+
+
+def test_every_eskd_sheet_writes_its_designation_upside_down_in_the_frame_s_top_left_corner(ratchet_sheets):
+    """GOST 2.104 form 1, графа 26: a 70 × 14 mm box against the frame's top and left lines, the designation in it
+    turned through 180°, clear of every drawing on the sheet."""
+    for sheet in ratchet_sheets["ru"]:
+        x0, _, _, y1 = sheet.frame
+        box = (x0, y1 - 14.0, x0 + 70.0, y1)
+        corner = next(layer for layer in sheet.layers if layer.name == "sheet-designation")
+        lines = [item for item in corner.items if isinstance(item, Polyline)]
+        points = {point for line in lines for point in line.points}
+        # Its bottom and right side drawn; its top and left are the frame's.
+        assert {(box[0], box[1]), (box[2], box[1]), (box[2], box[3])} <= {(round(x, 6), round(y, 6)) for x, y in points}
+        designation = [item for item in corner.items if isinstance(item, Text)]
+        assert [text.text for text in designation] == ["ТММ.01.02.000 Д1"]
+        assert "ТММ.01.02.000 Д1" in [text.text for text in block_texts(sheet)]
+        for text in designation:
+            assert text.rotation == 180.0
+            # Turned about its anchor, the text runs leftwards from it and hangs below its baseline.
+            width = printed_width(text)
+            left, right = text.at[0] - width / 2, text.at[0] + width / 2
+            assert box[0] + 1.0 <= left and right <= box[2] - 1.0
+            assert box[1] + 1.0 <= text.at[1] - text.size and text.at[1] + 0.3 * text.size <= box[3] - 1.0
+        for name, placed in sheet.panels.items():
+            assert not (placed[0] < box[2] and box[0] < placed[2] and placed[1] < box[3] and box[1] < placed[3]), name
+
+
+@pytest.mark.parametrize("locale", ["zh", "en"])
+def test_gb_and_iso_sheets_have_no_box_in_the_top_left_corner(ratchet_sheets, locale):
+    for sheet in ratchet_sheets[locale]:
+        assert "sheet-designation" not in [layer.name for layer in sheet.layers]
+
+
+def test_the_upside_down_designation_is_turned_in_the_svg(ratchet_sheets):
+    svg = ratchet_sheets["ru"][0].svg()
+    root = ElementTree.fromstring(svg)
+    group = next(element for element in root.iter() if element.get("id") == "sheet-designation")
+    text, = [element for element in group.iter() if element.tag.endswith("text")]
+    assert text.get("transform") == f"rotate(-180 {text.get('x')} {text.get('y')})"

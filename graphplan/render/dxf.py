@@ -227,6 +227,8 @@ class _Writer:
         script = "cjk" if has_wide(item.text) else "latin"
         style = TEXT_STYLES[(script, "bold" if item.weight == "bold" else "normal")][0]
         attributes = {"layer": layer, "style": style, **_colour_attributes(item.colour)}
+        if item.rotation:
+            attributes["rotation"] = item.rotation
         align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
                  "end": TextEntityAlignment.RIGHT}[item.anchor]
         self._space.add_text(_escaped(item.text), height=item.size,

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..errors import SceneError
-from .title_block import SIZES
+from .title_block import CORNER_SIZES, SIZES
 
 Rect = tuple[float, float, float, float]
 
@@ -33,19 +33,27 @@ def check_sheet(sheet: str) -> None:
 
 @dataclass(frozen=True)
 class PageGeometry:
-    """An empty sheet: its size, the inner frame, the title block and the area drawings may take (mm, y up)."""
+    """An empty sheet: its size, the inner frame, the title block and the area drawings may take (mm, y up);
+    ``corner`` the box in the frame's top left corner that no drawing may take either (ESKD's графа 26)."""
 
     size: tuple[float, float]
     frame: Rect
     block: Rect
     area: Rect
+    corner: Rect | None = None
 
-    def rooms(self) -> tuple[tuple[float, float], tuple[float, float]]:
-        """The two largest free rectangles (width, height): above the title block, and left of it."""
+    def rooms(self) -> tuple[tuple[float, float], ...]:
+        """The largest free rectangles (width, height): above the title block, and left of it; with a corner
+        box, each of those below it or right of it."""
         ax0, ay0, ax1, ay1 = self.area
-        above = (ax1 - ax0, ay1 - (self.block[3] + PADDING_MM))
-        beside = (self.block[0] - PADDING_MM - ax0, ay1 - ay0)
-        return above, beside
+        below_top = ay1 if self.corner is None else self.corner[1] - PADDING_MM
+        if self.corner is None:
+            return (ax1 - ax0, ay1 - (self.block[3] + PADDING_MM)), (self.block[0] - PADDING_MM - ax0, ay1 - ay0)
+        right_of = self.corner[2] + PADDING_MM
+        return ((ax1 - ax0, below_top - (self.block[3] + PADDING_MM)),
+                (ax1 - right_of, ay1 - (self.block[3] + PADDING_MM)),
+                (self.block[0] - PADDING_MM - ax0, below_top - ay0),
+                (self.block[0] - PADDING_MM - right_of, ay1 - ay0))
 
     def holds(self, width: float, height: float) -> bool:
         """Whether a drawing of this size fits on the empty sheet, clear of the title block."""
@@ -74,7 +82,11 @@ def page_geometry(sheet: str, form: str, portrait: bool = False) -> PageGeometry
     block_width, block_height = SIZES[form]
     block = (frame[2] - block_width, frame[1], frame[2], frame[1] + block_height)
     area = (frame[0] + PADDING_MM, frame[1] + PADDING_MM, frame[2] - PADDING_MM, frame[3] - PADDING_MM)
-    return PageGeometry((width, height), frame, block, area)
+    corner = None
+    if form in CORNER_SIZES:
+        corner_width, corner_height = CORNER_SIZES[form]
+        corner = (frame[0], frame[3] - corner_height, frame[0] + corner_width, frame[3])
+    return PageGeometry((width, height), frame, block, area, corner)
 
 
 def orientations(sheet: str) -> tuple[bool, ...]:

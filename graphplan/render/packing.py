@@ -5,7 +5,7 @@ panel is never scaled, since μl, μV, μa and μF are written beside it and a
 shrunken drawing would falsify them.  Panels are placed in the order given,
 each where the drawings of the sheet stay most compact (then as high and
 as far left as can be), never nearer than :data:`GAP_MM` to another or
-than :data:`PADDING_MM` to the frame and the title block; the drawings of
+than :data:`PADDING_MM` to the frame, the title block and ESKD's графа 26; the drawings of
 a sheet are then moved together towards its middle.  A panel goes on the
 first sheet of the set with room for it, else on a new sheet of the same
 format, but never on a sheet before one with a drawing of its kind (the
@@ -124,6 +124,14 @@ class Page:
     # The drawings placed, each with every way it may stand, for the page to be laid out afresh.
     drawings: list[Panel] = field(default_factory=list)
     growth: str = "block"
+    # The box in the frame's top left corner that drawings keep clear of as of the title block (ESKD's графа 26).
+    corner: Rect | None = None
+    # Whether a drawing goes under the corner box rather than beside it where both are as compact.
+    tuck: bool = True
+
+    def obstacles(self) -> list[Rect]:
+        """The title block and the corner box, each grown by the room a drawing keeps from it."""
+        return [_grown(box, PADDING_MM) for box in (self.block, self.corner) if box is not None]
 
     def place(self, panel: Panel) -> bool:
         """Put ``panel``, arranged in the first of its ways that fits, where the drawings stay most compact,
@@ -166,7 +174,14 @@ class Page:
               *(r[0] - GAP_MM - width for r in rects), *(r[0] for r in rects)}
         tops = {self.area[3], self.block[3] + PADDING_MM + height, *(r[1] - GAP_MM for r in rects),
                 *(r[3] for r in rects)}
+        if self.corner is not None:
+            # Beside the corner box, or under it.
+            xs.add(self.corner[2] + PADDING_MM)
+            tops.add(self.corner[1] - PADDING_MM)
         area_width, area_height = self.area[2] - self.area[0], self.area[3] - self.area[1]
+        # Under a corner box is as high as beside it: a drawing put beside it, as high as can be, left the box's
+        # width unused under it (the diagrams then found no room beside a plan sheet).
+        highest = self.area[3] if self.corner is None or not self.tuck else self.corner[1] - PADDING_MM
         best: tuple[tuple[float, ...], Rect] | None = None
         for top in tops:
             for left in xs:
@@ -176,7 +191,9 @@ class Page:
                 union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
                          max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
                 key = self._compactness((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
-                key += (-top, left)
+                # Of two as high, the one level with the line under the corner box: drawings beside one another
+                # keep one top.
+                key += (-min(top, highest), left, top)
                 if best is None or key < best[0]:
                     best = (key, rect)
         return best[1] if best is not None else None
@@ -191,7 +208,7 @@ class Page:
         return (round(max(width_share, height_share), 3),)
 
     def fits_empty(self, panel: Panel) -> bool:
-        geometry = PageGeometry(self.size, self.frame, self.block, self.area)
+        geometry = PageGeometry(self.size, self.frame, self.block, self.area, self.corner)
         return any(geometry.holds(width(way), height(way)) for way in panel.ways)
 
     def _free(self, rect: Rect) -> bool:
@@ -199,7 +216,7 @@ class Page:
         eps = 1e-6
         if rect[0] < ax0 - eps or rect[1] < ay0 - eps or rect[2] > ax1 + eps or rect[3] > ay1 + eps:
             return False
-        if _overlap(rect, _grown(self.block, PADDING_MM)):
+        if any(_overlap(rect, box) for box in self.obstacles()):
             return False
         return not any(_overlap(rect, _grown(other, GAP_MM - eps)) for _, other, _ in self.placed)
 
@@ -224,7 +241,7 @@ def _grown(rect: Rect, by: float) -> Rect:
 
 def _empty_page(sheet: str, form: str, portrait: bool) -> Page:
     geometry = page_geometry(sheet, form, portrait)
-    return Page(geometry.size, geometry.frame, geometry.block, geometry.area)
+    return Page(geometry.size, geometry.frame, geometry.block, geometry.area, corner=geometry.corner)
 
 
 def pack(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
@@ -315,15 +332,20 @@ def _rearranged(page: Page, panel: Panel) -> Page | None:
     drawings = [*page.drawings, panel]
     choices = [[replace(way, alternatives=()) for way in drawing.ways] for drawing in drawings]
     counts = [len(ways) for ways in choices]
-    for growth in sorted(GROWTHS, key=lambda growth: growth != page.growth):
-        # Every drawing in its first way was tried in the page's own growth as the page was filled.
-        tried = _arrangements(counts) if growth == page.growth else \
-            itertools.chain([(0,) * len(counts)], _arrangements(counts))
-        for picked in itertools.islice(tried, _MOST_REARRANGEMENTS):
-            fresh = Page(page.size, page.frame, page.block, page.area, growth=growth)
-            if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
-                fresh.drawings = drawings
-                return fresh
+    # With a corner box, the drawings also beside it as high as can be: under it, the first left a plan of
+    # positions' height too little for the plan sheet under it.
+    tucks = (page.tuck,) if page.corner is None else (page.tuck, not page.tuck)
+    for tuck in tucks:
+        for growth in sorted(GROWTHS, key=lambda growth: growth != page.growth):
+            # Every drawing in its first way was tried in the page's own growth as the page was filled.
+            tried = _arrangements(counts) if growth == page.growth and tuck == page.tuck else \
+                itertools.chain([(0,) * len(counts)], _arrangements(counts))
+            for picked in itertools.islice(tried, _MOST_REARRANGEMENTS):
+                fresh = Page(page.size, page.frame, page.block, page.area, growth=growth, corner=page.corner,
+                             tuck=tuck)
+                if all(fresh.place(ways[k]) for ways, k in zip(choices, picked, strict=True)):
+                    fresh.drawings = drawings
+                    return fresh
     return None
 
 
@@ -413,17 +435,18 @@ def _area(panel: Panel) -> float:
 
 
 def _centre(page: Page) -> None:
-    """Move the drawings of a page together towards the middle of its area, as far as the title block lets them."""
+    """Move the drawings of a page together towards the middle of its area, as far as the title block (and the
+    corner box) lets them."""
     rects = [rect for _, rect, _ in page.placed]
     ux0, uy0 = min(r[0] for r in rects), min(r[1] for r in rects)
     ux1, uy1 = max(r[2] for r in rects), max(r[3] for r in rects)
     ax0, ay0, ax1, ay1 = page.area
     towards = ((ax0 + ax1 - ux0 - ux1) / 2, (ay0 + ay1 - uy0 - uy1) / 2)
-    block = _grown(page.block, PADDING_MM)
+    boxes = page.obstacles()
     steps = 20
     for k in range(steps, 0, -1):
         dx, dy = towards[0] * k / steps, towards[1] * k / steps
-        if not any(_overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), block) for r in rects):
+        if not any(_overlap((r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), box) for r in rects for box in boxes):
             page.placed = [(panel, (r[0] + dx, r[1] + dy, r[2] + dx, r[3] + dy), (ox + dx, oy + dy))
                            for panel, r, (ox, oy) in page.placed]
             return

@@ -47,7 +47,8 @@ class Circle:
 
 @dataclass(frozen=True)
 class Text:
-    """Text at ``at``; ``anchor`` is start, middle or end; ``size`` is the cap height in mm."""
+    """Text at ``at``; ``anchor`` is start, middle or end; ``size`` is the cap height in mm; ``rotation`` the
+    degrees it is turned counter-clockwise about ``at`` (ESKD's графа 26 is written upside down)."""
 
     at: Point
     text: str
@@ -55,6 +56,7 @@ class Text:
     anchor: str = "middle"
     colour: str = "black"
     weight: str = "normal"
+    rotation: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -242,7 +244,14 @@ def text_extent(text: Text) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of a text as rendered: its width estimated, descenders and accents included."""
     width = text_width(text.text, text.size, text.weight)
     x0 = text.at[0] + {"start": 0.0, "middle": -width / 2, "end": -width}[text.anchor]
-    return (x0, text.at[1] - 0.3 * text.size, x0 + width, text.at[1] + 1.15 * text.size)
+    extent = (x0, text.at[1] - 0.3 * text.size, x0 + width, text.at[1] + 1.15 * text.size)
+    if not text.rotation:
+        return extent
+    turn = complex(math.cos(math.radians(text.rotation)), math.sin(math.radians(text.rotation)))
+    about = to_complex(text.at)
+    corners = [about + (complex(x, y) - about) * turn for x in extent[0::2] for y in extent[1::2]]
+    return (min(c.real for c in corners), min(c.imag for c in corners),
+            max(c.real for c in corners), max(c.imag for c in corners))
 
 
 def text_span(text: Text) -> float:
@@ -305,8 +314,9 @@ def moved(item: Primitive, dx: float, dy: float) -> Primitive:
 
 # A point between two digits is a decimal point: no other text of a drawing puts one there.
 _DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
-# The title block holds what the user wrote (a designation ТММ.01.02, a date 21.11.2026): never changed.
-_USER_LAYERS = ("title-block",)
+# The title block and ESKD's графа 26 hold what the user wrote (a designation ТММ.01.02, a date 21.11.2026): never
+# changed.
+_USER_LAYERS = ("title-block", "sheet-designation")
 
 
 def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = ()) -> list[Layer]:

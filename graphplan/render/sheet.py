@@ -67,7 +67,16 @@ from .packing import Page, Panel, bigger_holding, height, pack, rooms, smallest_
 from .plans import CAPTION_GAP_MM, Arrangement
 from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers, prefixed
 from .svg import to_svg
-from .title_block import Details, TitleBlockFields, details_of, form_of, labels, scale_text, title_block
+from .title_block import (
+    Details,
+    TitleBlockFields,
+    corner_box,
+    details_of,
+    form_of,
+    labels,
+    scale_text,
+    title_block,
+)
 
 # A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
 # this to save a sheet would run its outlines and position numbers together: μl is made no larger for fewer
@@ -883,6 +892,8 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
             placed[panel.name] = rect
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
+        if page.corner is not None:
+            layers.append(Layer("sheet-designation", tuple(corner_box(form, fields.designation, page.frame))))
         sheets.append(Sheet(sheet, page.size, layers, page.frame, page.block, placed, first + k, count))
     return sheets
 

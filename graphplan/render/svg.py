@@ -93,6 +93,9 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
                                 "text-anchor": item.anchor, "fill": item.colour})
                 if item.weight != "normal":
                     element.update({"font-weight": item.weight})
+                if item.rotation:
+                    # Counter-clockwise on the paper is clockwise once y points down.
+                    element.update({"transform": f"rotate({_n(-item.rotation)} {x} {y})"})
             else:  # pragma: no cover - the Primitive union is closed
                 raise TypeError(f"unknown primitive {item!r}")
             group.add(element)
