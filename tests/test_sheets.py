@@ -538,7 +538,8 @@ def test_a_panel_too_big_whole_goes_part_by_part_on_sheets_of_its_own(analyses):
         written = [text.text for text in texts([layer(sheet, "title-block")])]
         assert "Velocity and acceleration plans, position 11" in written
     parts = {panel for sheet in own for panel in sheet.panels}
-    assert parts == {"plan-11-mechanism", "plan-11-velocity", "plan-11-acceleration"}
+    # The parts and, over them, the plan sheet's heading.
+    assert parts == {"plan-11-mechanism", "plan-11-velocity", "plan-11-acceleration", "plan-11-heading"}
     # A drawing set apart keeps its caption just under it.
     for sheet in own:
         for item in sheet.layers:

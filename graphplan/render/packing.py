@@ -79,6 +79,10 @@ class Panel:
     # True where the parts are a sequence read in its order (the velocity plans of positions 1, 2, 3, … by rows):
     # they are never put tallest or largest first to save a sheet.
     in_order: bool = False
+    # The drawing's heading, in no part of it (a plan sheet's "Velocity and acceleration plans, position 11"): put
+    # over its parts where they stand on sheets of their own and that costs no sheet; they stood headless, the
+    # heading only in the title block, the top drawing against the frame's margin.
+    heading: tuple[Layer, ...] = ()
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -415,9 +419,56 @@ def _parts_on(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> lis
             if best is None or len(pages) < len(best):
                 best = pages
     assert best is not None
+    if panel.heading:
+        best = _headed(panel, best, sheet, form, turns) or best
     for page in best:
         page.label = panel.label or panel.name
     return best
+
+
+# The most orders a page's drawings are tried in under a heading that takes the sheet's corner: every order of a plan
+# sheet's three.
+_MOST_HEADED_ORDERS = 6
+
+
+def _headed(panel: Panel, pages: list[Page], sheet: str, form: str, turns: Sequence[bool]) -> list[Page] | None:
+    """``pages`` of ``panel``'s parts laid out again under its heading, each page's drawings that much lower, on
+    no more pages; None where the parts need more under a heading."""
+    heading = Panel(f"{panel.name}-heading", panel.heading)
+    # As far over the drawings as the whole sets it over its fields.
+    parts_top = bounds([layer for layer in panel.layers if layer not in panel.heading])[3]
+    gap = heading.extent[1] - parts_top
+    room = height(heading) + gap
+    headed: list[Page] = []
+    for page in pages:
+        drawings = [drawing for drawing, _, _ in page.placed]
+        fresh = _empty_page(sheet, form, _upright(page))
+        lowered = replace(fresh, area=(*fresh.area[:3], fresh.area[3] - room))
+        if lowered.area[3] <= lowered.area[1] or not all(lowered.place(drawing) for drawing in drawings):
+            # A drawing as tall as the sheet: the heading takes its corner first, the drawings the room left, in
+            # the order they stood in or, where that leaves none, in another.
+            for order in itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS):
+                first = _empty_page(sheet, form, _upright(page))
+                if first.place(heading) and all(first.place(drawing) for drawing in order):
+                    headed.append(first)
+                    break
+            else:
+                return None
+            continue
+        rects = [rect for _, rect, _ in lowered.placed]
+        left, top = min(rect[0] for rect in rects), max(rect[3] for rect in rects)
+        # Over the drawings' left edge, or right of a corner box it would run into.
+        spots = [(x, top + gap, x + width(heading), top + gap + height(heading))
+                 for x in (left, *([lowered.corner[2] + PADDING_MM] if lowered.corner else []))]
+        rect = next((spot for spot in spots if spot[2] <= fresh.area[2] + 1e-6
+                     and not any(_overlap(spot, box) for box in lowered.obstacles())), None)
+        if rect is None:
+            return None
+        x0, y0, _, _ = heading.extent
+        lowered.placed.append((heading, rect, (rect[0] - x0, rect[1] - y0)))
+        lowered.area = fresh.area
+        headed.append(lowered)
+    return headed
 
 
 def width(panel: Panel) -> float:

@@ -76,6 +76,8 @@ CAPTION_LINE = 1.6
 LETTER_SIZE = 4.0
 CAPTION_SIZE = 5.0
 TITLE_SIZE = 7.0
+# The layer of the sheet's title, over all its drawings: the heading its parts stand under apart.
+TITLE_LAYER = "sheet-title"
 
 _ABSOLUTE = Stroke(0.6)
 _RELATIVE = Stroke(0.45)
@@ -186,7 +188,7 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
     for name, (x0, y0, x1, _) in fields.items():
         layers.append(Layer(f"{name}-caption", caption_texts(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
-    layers.append(Layer("sheet-title", (Text((left, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
+    layers.append(Layer(TITLE_LAYER, (Text((left, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
     return Arrangement(layers, fields)
 
 

@@ -165,6 +165,12 @@ def split(arrangement: Arrangement, name: str, label: str,
     return Panel(name, tuple(arrangement.layers), tuple(parts), label)
 
 
+def _headed(panel: Panel) -> Panel:
+    """A plan sheet as a panel with its title as the heading its parts stand under on sheets of their own."""
+    heading = tuple(layer for layer in panel.layers if layer.name == plan_layout.TITLE_LAYER)
+    return replace(panel, heading=heading, alternatives=tuple(_headed(way) for way in panel.alternatives))
+
+
 def _group_of_field(field_name: str) -> str:
     """The part a field of the force sheet goes in: a group cut free with its polygons, the lever alone."""
     for kind in ("body-", "polygon-"):
@@ -215,7 +221,7 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
         row, *others = (_plans_at_no_length_scale(split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
                                                         text["plan_sheet_title"].format(number=position.number)))
                         for shape in plan_layout.SHAPES)
-        panels.append(replace(row, alternatives=tuple(others)))
+        panels.append(_headed(replace(row, alternatives=tuple(others))))
     return panels
 
 
