@@ -430,8 +430,8 @@ def _locale_patterns(locale):
 
 
 # The notation, the same in every language: points (B, S3, p′), plan letters (n3, k5), ω2, ε4, π, and
-# the numbers of the positions.
-NOTATION = re.compile(r"[0-9]+|(?:[A-Za-z][A-Za-z0-9]*′*|[ωε][0-9]+|π)(?:, (?:[A-Za-z][A-Za-z0-9]*′*|π))*")
+# the numbers of the positions (an extreme between two named after the one it follows, 5′).
+NOTATION = re.compile(r"[0-9]+′?|(?:[A-Za-z][A-Za-z0-9]*′*|[ωε][0-9]+|π)(?:, (?:[A-Za-z][A-Za-z0-9]*′*|π))*")
 
 
 def _words_of(layers):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -257,7 +257,32 @@ def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.
         mechanism=analysis.mechanism, positions=analysis.motion.at_positions(drawn),
         numbers=tuple(int(analysis.positions.numbers[index]) for index in drawn),
         emphasised=analysis.emphasised,
-        paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption)
+        paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption,
+        extremes=extreme_names(analysis, drawn))
+
+
+def extreme_names(analysis: Analysis, drawn: Sequence[int]) -> tuple[str, ...]:
+    """What each bold position of the plan of positions is named by where it is no numbered position drawn: the
+    number of the position it follows, turning the driver's way, with a prime (8′); empty for a numbered one."""
+    driver = analysis.mechanism.driver
+    values = analysis.positions.values
+    numbers = [int(number) for number in analysis.positions.numbers]
+    shown = {numbers[index] for index in drawn}
+    names = []
+    for value in np.atleast_1d(analysis.emphasised.driver):
+        if driver.cyclic:
+            turn = 2.0 * math.pi
+            ahead = (driver.sense * (float(value) - values[0])) % turn
+            steps = ahead / (turn / len(values))
+        else:
+            span = values[-1] - values[0]
+            steps = (float(value) - values[0]) / span * (len(values) - 1) if span else 0.0
+        nearest = round(steps) % len(values)
+        if abs(steps - round(steps)) < 1e-6:
+            names.append("" if numbers[nearest] in shown else str(numbers[nearest]))
+        else:
+            names.append(f"{numbers[math.floor(steps) % len(values)]}′")
+    return tuple(names)
 
 
 def plan_svg(analysis: Analysis, index: int, velocity: Plan | None = None, acceleration: Plan | None = None) -> str:

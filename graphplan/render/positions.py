@@ -13,6 +13,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry.base import BaseGeometry
 
 from ..kinematics import at
 from ..mechanism import Mechanism
@@ -32,6 +34,7 @@ from .linkage import (
 from .plans import CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE
 from .primitives import (
     BOLD,
+    PIN_RADIUS_MM,
     Layer,
     Polyline,
     Primitive,
@@ -45,6 +48,11 @@ _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
 _PATH_STROKE = Stroke(0.25, "#1f5fa8", (2.0, 1.2))
 _CRANK_CIRCLE_STROKE = Stroke(0.25, "#7a7a7a")
 _LABEL = 3.0
+# A point of the second extreme nearer than this to where it stands at the first (mm on the paper) is lettered there
+# already: a frame point, a pin that hardly moves.
+_SAME_POINT_MM = 2.0
+# Room a label keeps round the driver's pin at a bold position (mm), past the pin's own radius.
+_PIN_CLEARANCE_MM = 0.8
 
 
 @dataclass(frozen=True)
@@ -53,6 +61,10 @@ class PositionsPlan:
 
     ``emphasised`` holds the positions drawn bold: the two extremes of the
     working link, or the first position when the scene names none.
+    ``extremes`` names each of them that is no numbered position drawn, as
+    Russian course projects mark an extreme: the number of the position it
+    follows with a prime (8′), its points lettered with a prime (A′, D′);
+    empty for one that is a numbered position.
     """
 
     mechanism: Mechanism
@@ -63,6 +75,7 @@ class PositionsPlan:
     length_scale: float
     title: str
     caption: str
+    extremes: tuple[str, ...] = ()
 
 
 def layout(plan: PositionsPlan) -> list[Layer]:
@@ -78,7 +91,8 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     frame = _frame(plan, paper)
     paths = _paths(plan, paper)
     drawn = every + bold + frame + paths
-    labels = place_labels(_position_anchors(plan, paper) + _point_anchors(plan, paper), obstacles_of(drawn))
+    labels = place_labels(_position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper),
+                          obstacles_of(drawn) + _crowded_pins(plan, paper))
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
               Layer("frame", tuple(frame)), Layer("leaders", labels.leaders),
               Layer("labels", labels.texts + tuple(_centre_marks(plan, paper)))]
@@ -143,15 +157,59 @@ def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     """Each position's number at the driver's joint, on the side away from the driver's centre."""
     driver = plan.mechanism.driver
     joint = plan.positions.points[driver.joint].r
-    if driver.kind == "crank":
-        centre = plan.mechanism.scene.frame_points[driver.pivot]
-    else:
-        centre = complex(np.mean(np.atleast_1d(joint))) + 1j * complex(at(plan.positions.links[driver.link].u, 0))
+    centre = _driver_centre(plan)
     anchors = []
     for index, number in enumerate(plan.numbers):
         outward = complex(at(joint, index)) - centre
         anchors.append(Anchor(paper(complex(at(joint, index))), str(number), _LABEL, math.atan2(outward.imag, outward.real),
                               "#333333"))
+    return anchors
+
+
+def _crowded_pins(plan: PositionsPlan, paper: Paper) -> list[BaseGeometry]:
+    """The driver's pin at each bold position, grown: its number and its letter both stand round it, and a
+    label only clear of the pin itself read as run into it (position 0's "0" and "A" on the Stephenson six-bar)."""
+    joint = plan.emphasised.points[plan.mechanism.driver.joint].r
+    return [ShapelyPoint(paper(complex(at(joint, index)))).buffer(PIN_RADIUS_MM + _PIN_CLEARANCE_MM)
+            for index in range(plan.emphasised.count)]
+
+
+def _driver_centre(plan: PositionsPlan) -> complex:
+    """Where the position numbers point away from: a crank's pivot, else the middle of the driver's run."""
+    driver = plan.mechanism.driver
+    if driver.kind == "crank":
+        return plan.mechanism.scene.frame_points[driver.pivot]
+    joint = plan.positions.points[driver.joint].r
+    return complex(np.mean(np.atleast_1d(joint))) + 1j * complex(at(plan.positions.links[driver.link].u, 0))
+
+
+def _extreme_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
+    """An extreme that is no numbered position: its name (8′) at the driver's joint, as the positions are
+    numbered, and its points lettered with a prime; it stood bold with neither."""
+    driver = plan.mechanism.driver
+    motion = plan.emphasised
+    centre = _driver_centre(plan)
+    # The letters of the joints and points; a centre of mass that is no joint (S4) at the first extreme only.
+    named = {spec.name for spec in plan.mechanism.scene.points}
+    centres = {spec.centre for spec in plan.mechanism.scene.links.values()} & named
+    drawn = {name for names in plan.mechanism.fixed_on.values() for name in names} - centres
+    anchors = []
+    for index, label in enumerate(plan.extremes):
+        if not label or index >= motion.count:
+            continue
+        joint = complex(at(motion.points[driver.joint].r, index))
+        outward = joint - centre
+        anchors.append(Anchor(paper(joint), label, _LABEL, math.atan2(outward.imag, outward.real), "#333333"))
+        moving = [name for name in motion.points if name in drawn
+                  and abs(complex(at(motion.points[name].r, index)) - complex(at(motion.points[name].r, 0)))
+                  > _SAME_POINT_MM * plan.length_scale]
+        if not moving:
+            continue
+        middle = sum(complex(at(motion.points[name].r, index)) for name in moving) / len(moving)
+        for name in moving:
+            r = complex(at(motion.points[name].r, index))
+            away = r - middle
+            anchors.append(Anchor(paper(r), f"{name}′", _LABEL, math.atan2(away.imag, away.real) if away else math.pi / 2))
     return anchors
 
 

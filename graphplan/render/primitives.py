@@ -180,7 +180,11 @@ def frame_pivot(at: Point, size: float = 5.0) -> list[Primitive]:
     return items
 
 
-def pin(at: Point, radius: float = 1.3) -> Circle:
+# The radius of a revolute joint's circle (mm).
+PIN_RADIUS_MM = 1.3
+
+
+def pin(at: Point, radius: float = PIN_RADIUS_MM) -> Circle:
     """A revolute joint."""
     return Circle(at, radius, MAIN, "white")
 
