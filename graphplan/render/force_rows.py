@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
@@ -25,6 +26,8 @@ from .wrapping import fitted
 
 # The least width a caption is broken to (mm), so that a narrow drawing's equations are not set a word a line.
 CAPTION_WIDTH_MM = 160.0
+# A width no title reaches: a heading broken to it stands on one line.
+_ONE_LINE_MM = 100_000
 # The heading's scales line stands this far (mm) above the drawings' top.
 HEADING_GAP_MM = 8.0
 # The estimate of a way's size errs by a few mm (a caption's last line is counted whole): a way estimated
@@ -117,9 +120,10 @@ class Rows:
         block = self.stacked[index] if stacked else None
         return block if block is not None else self.beside[index]
 
-    def arranged(self, shape: Shape, title: str | None = None) -> Arrangement:
+    def arranged(self, shape: Shape, title: str | None = None, one_line: bool = False) -> Arrangement:
         """The rows as ``shape`` has them, under the heading: the sheet's title on one line, or ``title`` (a
-        part's) broken to the drawings' width where it is wider than they are."""
+        part's) on one line too where ``one_line``, else broken to the drawings' width where it is wider than
+        they are."""
         layers: list[Layer] = []
         fields: dict[str, tuple[float, float, float, float]] = {}
         left = 0.0
@@ -134,7 +138,7 @@ class Rows:
             left += max(self.block(index, stacked).width for index, stacked in column) + GAP_MM
         left, _, right, upper = bounds(layers)
         if title != HEADLESS:
-            width = math.inf if title is None else right - left
+            width = math.inf if title is None or one_line else right - left
             layers.append(self._heading_layer(left, upper + HEADING_GAP_MM, title or self.heading.title, width))
         return Arrangement(layers, fields)
 
@@ -190,10 +194,10 @@ class Rows:
         for title in (heading.title, heading.part_title):
             whole = self._least(0, count, fits, title)
             if whole is not None:
-                return [self.arranged(whole[1], title)]
-        best_of: dict[tuple[int, int], tuple[float, Shape, str] | None] = {}
+                return [self.arranged(whole[1], title, whole[2])]
+        best_of: dict[tuple[int, int], tuple[float, Shape, bool, str] | None] = {}
 
-        def best(start: int, stop: int) -> tuple[float, Shape, str] | None:
+        def best(start: int, stop: int) -> tuple[float, Shape, bool, str] | None:
             if (start, stop) not in best_of:
                 titles = (self._title_of(start), HEADLESS) if headless and stop == start + 1 else (self._title_of(start),)
                 best_of[start, stop] = next(((*found, title) for title in titles
@@ -201,7 +205,7 @@ class Rows:
             return best_of[start, stop]
 
         for pieces in range(2, count + 1):
-            least: tuple[tuple[int, float], list[tuple[Shape, str]]] | None = None
+            least: tuple[tuple[int, float], list[tuple[Shape, str, bool]]] | None = None
             for cuts in itertools.combinations(range(1, count), pieces - 1):
                 chosen = [best(a, b) for a, b in itertools.pairwise((0, *cuts, count))]
                 if any(choice is None for choice in chosen):
@@ -210,29 +214,35 @@ class Rows:
                 cost = (sum(self.origins[cut - 1] == self.origins[cut] for cut in cuts),
                         sum(choice[0] for choice in chosen if choice is not None))
                 if least is None or cost < least[0]:
-                    least = (cost, [(choice[1], choice[2]) for choice in chosen if choice is not None])
+                    least = (cost, [(choice[1], choice[3], choice[2]) for choice in chosen if choice is not None])
             if least is not None:
                 # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
-                headed = next((k for k, (_, title) in enumerate(least[1]) if title != HEADLESS), None)
-                return [self.arranged(shape, self.heading.part_title if k == headed else title)
-                        for k, (shape, title) in enumerate(least[1])]
+                headed = next((k for k, (_, title, _) in enumerate(least[1]) if title != HEADLESS), None)
+                return [self.arranged(shape, self.heading.part_title if k == headed else title, one_line)
+                        for k, (shape, title, one_line) in enumerate(least[1])]
         return None
 
     def _title_of(self, start: int) -> str:
         """The heading of the part of several that begins with row ``start``."""
         return self.heading.part_title if start == 0 else self.heading.continued
 
-    def _least(self, start: int, stop: int, fits: Fits, title: str) -> tuple[float, Shape] | None:
+    def _least(self, start: int, stop: int, fits: Fits, title: str) -> tuple[float, Shape, bool] | None:
         """Of the ways rows ``start``..``stop`` may stand under ``title``, the one taking least paper that
-        ``fits`` once drawn (the estimate of its size may be a little off), with its area; None when none
-        does."""
+        ``fits`` once drawn (the estimate of its size may be a little off), with its area and whether its title
+        stands on one line; None when none does.
+
+        The title stands on one line where that fits: broken to drawings
+        narrower than it, it went onto two lines though the sheet had room.
+        """
         sized = [(self._size(shape, title), shape) for shape in self._shapes(start, stop)]
-        for (width, height), shape in sorted(sized, key=lambda item: item[0][0] * item[0][1]):
-            if not fits(width - ESTIMATE_SLACK_MM, height - ESTIMATE_SLACK_MM):
-                continue
-            x0, y0, x1, y1 = bounds(self.arranged(shape, title).layers)
-            if fits(x1 - x0, y1 - y0):
-                return (x1 - x0) * (y1 - y0), shape
+        for _, shape in sorted(sized, key=lambda item: item[0][0] * item[0][1]):
+            for one_line in (True, False):
+                width, height = self._size(shape, title, one_line)
+                if not fits(width - ESTIMATE_SLACK_MM, height - ESTIMATE_SLACK_MM):
+                    continue
+                x0, y0, x1, y1 = bounds(self.arranged(shape, title, one_line).layers)
+                if fits(x1 - x0, y1 - y0):
+                    return (x1 - x0) * (y1 - y0), shape, one_line
         return None
 
     def _shapes(self, start: int, stop: int) -> Iterator[Shape]:
@@ -249,7 +259,7 @@ class Rows:
                 bounds = (start, *cuts, stop)
                 yield tuple(tuple((k, k in stacks) for k in range(a, b)) for a, b in itertools.pairwise(bounds))
 
-    def _size(self, shape: Shape, title: str) -> tuple[float, float]:
+    def _size(self, shape: Shape, title: str, one_line: bool = False) -> tuple[float, float]:
         """The size ``shape`` takes under ``title``, estimated from the rows' sizes without drawing it."""
         widths = [max(self.block(k, stacked).width for k, stacked in column) for column in shape]
         heights = [sum(self.block(k, stacked).height for k, stacked in column) + GAP_MM * (len(column) - 1)
@@ -257,7 +267,7 @@ class Rows:
         width = sum(widths) + GAP_MM * (len(shape) - 1)
         if title == HEADLESS:
             return width, max(heights)
-        heading_width, heading_height = self._heading_size(title, round(width))
+        heading_width, heading_height = self._heading_size(title, _ONE_LINE_MM if one_line else round(width))
         return max(width, heading_width), max(heights) + HEADING_GAP_MM + heading_height
 
     def _heading_size(self, title: str, width: float) -> tuple[float, float]:
@@ -324,6 +334,28 @@ def _caption_layer(name: str, middle: float, under: float, caption: Sequence[tup
 
 
 def caption_lines(caption: Sequence[str], width: float, size: float) -> list[tuple[str, str]]:
-    """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm."""
-    return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(caption)
+    """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm; a line
+    that only says again what an equation above it found is left out."""
+    return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(_unrepeated(caption))
             for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]
+
+
+# What an equation's line finds, at its end: "ΣMO(2): Mb − G2·h1 − R32·h2 = 0,  Mb = 96.55 N·m".
+_FOUND = re.compile(r"= 0,\s+(\S+ = \S+(?: \S+)?)$")
+
+
+def _unrepeated(caption: Sequence[str]) -> list[str]:
+    """``caption`` without the lines that give nothing but a value an equation above already found: the
+    crank's "balancing moment Mb = 96.55 N·m (force polygons)" under its ΣMO(2) that ends "Mb = 96.55 N·m"."""
+    found: list[str] = []
+    kept = []
+    for line in caption:
+        rest = line
+        for value in found:
+            rest = rest.replace(value, "")
+        if rest != line and "=" not in rest:
+            continue
+        kept.append(line)
+        if (match := _FOUND.search(line)) is not None:
+            found.append(match.group(1))
+    return kept
