@@ -314,10 +314,12 @@ def test_drawing_the_report_figures_leaves_a_notebook_s_matplotlib_as_it_was(tmp
     before = matplotlib.get_backend()
     pyplot.switch_backend("svg")  # a backend no figure of graphplan's asks for
     try:
-        scene = tmp_path / "shaper.toml"
-        scene.write_text(starter("shaper"), encoding="utf-8")
-        assert main(["run", str(scene), "--only", "figures,dynamics", "--out", str(tmp_path / "out")]) == 0
-        assert {path.name for path in (tmp_path / "out").glob("*.svg")} >= {"balancing.svg", "motion.svg"}
+        for kind, pieces, drawn in (("shaper", "figures,dynamics", {"balancing.svg", "motion.svg"}),
+                                    ("rotor", "vibration", {"vibration_magnification.svg"})):
+            scene = tmp_path / f"{kind}.toml"
+            scene.write_text(starter(kind), encoding="utf-8")
+            assert main(["run", str(scene), "--only", pieces, "--out", str(tmp_path / kind)]) == 0
+            assert {path.name for path in (tmp_path / kind).glob("*.svg")} >= drawn
         assert matplotlib.get_backend() == "svg"
         assert pyplot.get_fignums() == []
     finally:

@@ -8,8 +8,8 @@ lacks it); the transmissibility also marks the isolating mounts' design
 point.  A machine on a moving base with no unbalance of its own reads the
 same curves as Z/Y and X/Y (:func:`words_for`).  Every word comes from ``text``,
 the ``vib_`` keys of a locale (:func:`graphplan.locale.strings`); English when
-none is given.  matplotlib is imported only inside the functions, with the Agg
-backend; the SVG has no date and a fixed hash salt, so the same call writes
+none is given.  matplotlib is imported only inside the functions, and its figures made without
+pyplot (a notebook's backend is left as it was); the SVG has no date and a fixed hash salt, so the same call writes
 the same bytes.
 """
 
@@ -137,8 +137,6 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
           operating: tuple[float, float] | None, isolation: bool = False, machine: float | None = None,
           design: tuple[float, float] | None = None) -> Path:
     import matplotlib
-
-    matplotlib.use("Agg")
     from matplotlib.figure import Figure
 
     # A stream takes the SVG text as it is (a run writes its whole folder at once).
