@@ -224,7 +224,7 @@ def test_the_error_tables_hold_each_binary_links_relative_velocity():
 def test_the_note_reads_each_binary_links_tangential_part_off_the_plan():
     analysis = analyse(graphplan.load(FIXTURE))
     text = note_markdown(analysis)
-    rows = re.findall(r"\| a([BDF])([ACE])\^τ \| ([\d.]+) m/s² \| n(\d)[bdf] = [\d.]+ \| ⊥ \2\1 \|", text)
+    rows = re.findall(r"\| a([BDF])([ACE])τ \| ([\d.]+) m/s² \| n(\d)[bdf] = [\d.]+ \| ⊥ \2\1 \|", text)
     assert len(rows) == 2 * len(analysis.plans)
     expected = set()
     for pp in analysis.plans:
