@@ -356,6 +356,30 @@ def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns
     assert all(head + tail in words for head, tail in broken), broken
 
 
+def characters_fonts(pdf: Path) -> dict[str, set[str]]:
+    """Each character of the typeset PDF and the names of the fonts it is set in, read by pdfium (a test
+    dependency, as the other PDF checks here)."""
+    import ctypes
+
+    import pypdfium2
+    import pypdfium2.raw as pdfium_c
+
+    fonts: dict[str, set[str]] = {}
+    document = pypdfium2.PdfDocument(pdf)
+    try:
+        for page in document:
+            text = page.get_textpage()
+            for index in range(text.count_chars()):
+                character = chr(pdfium_c.FPDFText_GetUnicode(text.raw, index))
+                size = pdfium_c.FPDFText_GetFontInfo(text.raw, index, None, 0, None)
+                name = ctypes.create_string_buffer(size)
+                pdfium_c.FPDFText_GetFontInfo(text.raw, index, name, size, None)
+                fonts.setdefault(character, set()).add(name.value.decode("utf-8", "replace"))
+    finally:
+        document.close()
+    return fonts
+
+
 def test_a_chinese_note_sets_only_its_cjk_runs_in_the_cjk_font(tmp_path):
     """Noto Sans CJK SC as the main font set · and × full-width (the quick-return note in Chinese: «ω2 · lOA =
     8 × 0.12») and had no ⁿ: the Latin font is the main one, each run of ideographs and full-width punctuation
@@ -375,16 +399,7 @@ def test_a_chinese_note_sets_only_its_cjk_runs_in_the_cjk_font(tmp_path):
         pytest.skip("XeLaTeX is not installed (Debian: texlive-xetex)")
     log, pdf = typeset(tmp_path, "note", latex)
     assert "Missing character" not in log
-    import pymupdf
-
-    fonts = {}   # character → the fonts the PDF sets it in
-    with pymupdf.open(pdf) as document:
-        for page in document:
-            for block in page.get_text("rawdict")["blocks"]:
-                for line in block.get("lines", []):
-                    for span in line["spans"]:
-                        for char in span["chars"]:
-                            fonts.setdefault(char["c"], set()).add(span["font"])
+    fonts = characters_fonts(pdf)
     for character in "·×→⊥ωφ":
         assert fonts[character] and all("DejaVu" in font for font in fonts[character]), (character, fonts[character])
     assert all("CJK" in font for font in fonts["机"] | fonts["，"])
