@@ -203,6 +203,11 @@ class ForcePlan:
     locked: bool = False
     auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every polygon's vectors (some 8 000 characters).
+        return (f"<ForcePlan of {len(self.groups)} groups: reactions {', '.join(self.reactions)}; "
+                f"balancing {self.balancing:.5g}; μF = {self.scale:g} N/mm>")
+
     @property
     def group_scales(self) -> dict[str, float]:
         """μF of each group's polygon, by the group's label."""

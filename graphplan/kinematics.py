@@ -175,6 +175,11 @@ class SlideMotion:
     velocity: Scalar
     acceleration: Scalar
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every array: 28 000 characters at 360 positions.
+        return (f"<SlideMotion of link {self.slider} on link {self.guide} at {self.joint}: "
+                f"{np.size(self.s)} positions>")
+
 
 def point_on_link(origin: PointMotion, link: LinkMotion, arm: Vector) -> PointMotion:
     """Motion of the point P fixed on ``link`` at ``arm`` = OP from its known point O.

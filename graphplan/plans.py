@@ -211,6 +211,10 @@ class Plan:
     members: Mapping[int, tuple[tuple[complex, str], ...]] = field(default_factory=dict)
     auxiliary: Mapping[str, complex] = field(default_factory=dict)
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every step of the construction (some 3 500 characters).
+        return f"<Plan ({self.kind}) of points {', '.join(self.points)} at μ = {self.scale:g} per mm>"
+
     def mm(self, letter: str) -> complex:
         return self.points[letter] / self.scale
 

@@ -74,6 +74,11 @@ class Equilibrium:
     iterations: np.ndarray
     locked: np.ndarray
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every reaction's arrays.
+        return (f"<Equilibrium at {np.size(self.balancing)} positions: reactions "
+                f"{', '.join(reaction.name for reaction in self.reactions)}>")
+
     def reaction(self, name: str) -> Reaction:
         for reaction in self.reactions:
             if reaction.name == name:
