@@ -950,3 +950,15 @@ def test_a_sheet_asked_for_a_scene_with_nothing_to_draw_on_one_is_said(tmp_path,
     assert main(["run", str(scene), "--sheet", "A3", "--out", str(tmp_path / "out")]) == 0
     assert "warning: --sheet: no sheet is drawn: 'sheets' needs a mechanism" in capsys.readouterr().out
     assert not list((tmp_path / "out").glob("sheet_*"))
+
+
+def test_a_refusal_offers_only_rooms_a_drawing_could_stand_in():
+    """On an upright ESKD A4 the strip between графа 26 (70 mm wide, top left) and the title block (185 mm of the
+    frame's 185 mm) is 1 mm wide: the refusal offered "1 × 184 mm" among the rooms of an empty sheet."""
+    from graphplan.render.packing import rooms
+
+    said = rooms("A4", "eskd", (False, True))
+    sizes = [(float(w), float(h)) for w, h in re.findall(r"(\d+) × (\d+)", said)]
+    assert sizes and all(min(size) >= 10.0 for size in sizes), said
+    # The landscape sheet's room over its title block stays offered: the frame's 277 mm less the margins.
+    assert any(width > 250.0 for width, _ in sizes), said

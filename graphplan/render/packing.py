@@ -39,6 +39,8 @@ from .primitives import Layer, bounds
 
 # Space between two drawings (mm).
 GAP_MM = 15.0
+# A free strip of an empty sheet narrower than this (mm) is no room a refusal offers.
+_LEAST_ROOM_MM = 10.0
 # How a page's drawings grow as each is placed (:meth:`Page.place`): as a block of the sheet's shape, which
 # fills a page, or down a column or along a row, which a page is laid out afresh in where a block leaves no room
 # for the next drawing.
@@ -516,9 +518,11 @@ def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: 
 
 
 def rooms(sheet: str, form: str, turns: Sequence[bool]) -> str:
-    """The rooms an empty ``sheet`` has clear of its title block, in words."""
+    """The rooms an empty ``sheet`` has clear of its title block, in words: those a drawing could stand in (an
+    upright A4's strip between ESKD's графа 26 and the title block, 1 mm wide, is none)."""
     rooms = dict.fromkeys(f"{width:.0f} × {height:.0f}" for portrait in turns
-                          for width, height in page_geometry(sheet, form, portrait).rooms() if width > 0 < height)
+                          for width, height in page_geometry(sheet, form, portrait).rooms()
+                          if min(width, height) >= _LEAST_ROOM_MM)
     return f"an empty one has room for {' or '.join(rooms)} mm clear of its title block"
 
 
