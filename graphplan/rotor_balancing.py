@@ -107,6 +107,11 @@ def vector_name(name: str) -> str:
     return f"(m·r){name}"
 
 
+def default_plane_names(count: int) -> tuple[str, ...]:
+    """The correction planes' names where the scene gives none: L and R of two, b of one."""
+    return DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES
+
+
 def label_clash(names: Sequence[str], plane_names: Sequence[str]) -> tuple[str, int, int, str] | None:
     """The first two products that would read alike on the polygons and in the note (``m1r1`` of masses named
     ``1`` and ``m1``, a correction plane's ``mbrb`` and a mass ``b``'s), or None.
@@ -159,18 +164,6 @@ class BalancingSpec:
             if name in names[:k]:
                 raise ValueError(f"masses[{k}].name: repeats the name of an earlier mass ({name!r})")
         object.__setattr__(self, "masses", masses)
-        count = max(1, len(tuple(self.planes)))
-        given_planes = tuple(self.plane_names) or (DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES)
-        clash = label_clash(names, given_planes if len(given_planes) == count else ())
-        if clash is not None:
-            kind, k, j, label = clash
-            if kind == "mass":
-                where, told = f"masses[{k}].name", f"mass {names[k]!r} and mass {names[j]!r}"
-            else:
-                where = "plane_names" if self.plane_names else f"masses[{j}].name"
-                told = f"correction plane {given_planes[k]!r} and mass {names[j]!r}"
-            raise ValueError(f"{where}: the products of {told} would both read {label}; give names whose products "
-                             "read apart")
         planes = tuple(_finite(f"planes[{k}]", z) for k, z in enumerate(self.planes))
         if len(planes) > 2:
             raise ValueError(f"planes: must hold one or two correction planes (got {len(planes)})")
@@ -190,10 +183,21 @@ class BalancingSpec:
                 if not _finite(f"correction_radius[{k}]", value) > 0:
                     raise ValueError(f"correction_radius[{k}]: must be > 0 (got {value!r})")
             object.__setattr__(self, "correction_radius", tuple(float(value) for value in radii))
-        names = tuple(self.plane_names) or (DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES)
-        if len(names) != count or len(set(names)) != count or not all(isinstance(n, str) and n for n in names):
+        plane_names = tuple(self.plane_names) or default_plane_names(count)
+        if (len(plane_names) != count or len(set(plane_names)) != count
+                or not all(isinstance(n, str) and n for n in plane_names)):
             raise ValueError(f"plane_names: must be {count} different names, one per correction plane")
-        object.__setattr__(self, "plane_names", names)
+        clash = label_clash(names, plane_names)
+        if clash is not None:
+            kind, k, j, label = clash
+            if kind == "mass":
+                where, told = f"masses[{k}].name", f"mass {names[k]!r} and mass {names[j]!r}"
+            else:
+                where = "plane_names" if self.plane_names else f"masses[{j}].name"
+                told = f"correction plane {plane_names[k]!r} and mass {names[j]!r}"
+            raise ValueError(f"{where}: the products of {told} would both read {label}; give names whose products "
+                             "read apart")
+        object.__setattr__(self, "plane_names", plane_names)
 
     @property
     def dynamic(self) -> bool:
@@ -423,7 +427,7 @@ def _refuse_label_clash(table: Table, given: list[str], plane_names: tuple[str, 
     masses the later named one (an unnamed mass is numbered, ``2``), a mass's against a plane's default name
     (``b``; ``L``, ``R``), else ``plane_names``."""
     names = [name or str(k + 1) for k, name in enumerate(given)]
-    planes = plane_names or (DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES)
+    planes = plane_names or default_plane_names(count)
     clash = label_clash(names, planes)
     if clash is None:
         return
