@@ -154,14 +154,16 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         dynamics = _dynamics_of(scene, analysis, dynamics)
         found.append(Drawing("dynamics", dynamics_layout.layout(dynamics.model, dynamics.flywheel,
                                                                 strings(scene.locale))))
+    # Laid out once for its own drawing and the sheet of a rotor without a linkage.
+    rotor = _balancing_layers(scene) if "balancing" in pieces or (analysis is None and "sheets" in pieces) else []
     if "balancing" in pieces:
-        found.append(Drawing("rotor_balancing", _balancing_layers(scene)))
+        found.append(Drawing("rotor_balancing", rotor))
     if analysis is None and "sheets" in pieces:
         from .render.sheet import balancing_panel, balancing_sheet
         from .render.title_block import details_of, form_of
 
         details = details_of(scene.project, scene.title, form_of(scene.locale))
-        for sheet in balancing_sheet([balancing_panel(_balancing_layers(scene), scene.locale)], scene.drawing.sheet,
+        for sheet in balancing_sheet([balancing_panel(rotor, scene.locale)], scene.drawing.sheet,
                                      scene.locale, details.title or scene.title, details):
             found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
     return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.title))
