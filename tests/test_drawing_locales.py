@@ -26,6 +26,7 @@ from xml.etree import ElementTree
 
 import numpy as np
 import pytest
+from test_kinematic_diagrams import steady_crank_as_output
 
 import graphplan
 from graphplan.analysis import analyse
@@ -94,15 +95,6 @@ def pushed_slider_analysis():
 
 
 @functools.cache
-def steady_crank_output_analysis():
-    """The ratchet's crank, at a steady ω, named the working link: its ε curve is nought throughout."""
-    text = Path("fixtures/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
-    text = text.replace('working     = { link = 4, sense = "ccw" }', 'working     = { link = 2, sense = "cw" }')
-    text = re.sub(r"(?ms)^\[\[loads\]\].*?(?=^\[)", "", text).replace('start       = "extreme"', "start = 0.0")
-    return analyse(loads(text))
-
-
-@functools.cache
 def models():
     """A crank's equivalent model with its flywheel moved to a faster shaft, and a slider driver's model."""
     crank = equivalent_model_of(analysis_of("ratchet_crank_rocker"))
@@ -140,8 +132,9 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         # A rocker (ψ, ω, ε; working and idle strokes), a slider (s, v, a), a lever over a slider driver's
         # travel (t), a rocker over its lever's swing (Δφ) and a steady crank (an ε nought throughout).
         runs = [analysis_of(name) for name in ("ratchet_crank_rocker", "engine_slider_crank", "slider_driven")]
-        return [t for analysis in (*runs, swing_analysis(), pushed_slider_analysis(), steady_crank_output_analysis())
-                for t in svg_texts(diagrams.diagrams_svg(of_analysis(analysis), text))]
+        records = [of_analysis(analysis) for analysis in (*runs, swing_analysis(), pushed_slider_analysis())]
+        return [t for record in (*records, steady_crank_as_output()[1])
+                for t in svg_texts(diagrams.diagrams_svg(record, text))]
     if kind == "dynamics":
         crank, flywheel, slider = models()
         # A machine that keeps within δ unaided is drawn from a flywheel record with no inertia to add.
