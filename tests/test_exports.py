@@ -377,7 +377,7 @@ def svg_groups(svg: str, names: set[str]) -> tuple[Counter, int]:
         if group.get("id") in names:
             for element in group.iter():
                 tag = element.tag.rsplit("}", 1)[-1]
-                texts[" ".join(element.itertext())] += tag == "text"
+                texts["".join(element.itertext())] += tag == "text"
                 drawn += tag in ("path", "circle", "line", "polyline", "polygon")
     return +texts, drawn
 

@@ -23,6 +23,7 @@ from .primitives import (
     bounds,
     has_wide,
 )
+from .script_runs import is_mixed, script_runs, width_em
 
 # Latin, Greek and Cyrillic from DejaVu Sans; a viewer that falls back glyph by glyph takes
 # Chinese from Noto Sans CJK.
@@ -73,6 +74,29 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
         element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
         return element
 
+    def text(item: Text):
+        x, y = xy(item.at)
+        size = item.size * FONT_SIZE_PER_CAP
+        runs = script_runs(item.text)
+        width = width_em(runs, item.weight) if is_mixed(runs) else None
+        if width is None:
+            element = document.text(item.text, insert=(x, y))
+            element.update({"font-family": font_family(item.text), "text-anchor": item.anchor})
+        else:
+            # Set from its start, run by run in each script's font: cairosvg would anchor every run on its own.
+            start = {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
+            element = document.text("", insert=(_n(float(x) + start), y))
+            element.update({"font-family": CJK_FONT_FAMILY, "text-anchor": "start"})
+            for run, wide in runs:
+                element.add(document.tspan(run, font_family=CJK_FONT_FAMILY if wide else FONT_FAMILY))
+        element.update({"font-size": _n(size), "fill": item.colour})
+        if item.weight != "normal":
+            element.update({"font-weight": item.weight})
+        if item.rotation:
+            # Counter-clockwise on the paper is clockwise once y points down; about the anchor, not the start.
+            element.update({"transform": f"rotate({_n(-item.rotation)} {x} {y})"})
+        return element
+
     for layer in layers:
         group = document.g(id=layer.name)
         for item in layer.items:
@@ -87,15 +111,7 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
                 element = document.circle(center=(cx, cy), r=_n(item.radius))
                 element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
             elif isinstance(item, Text):
-                x, y = xy(item.at)
-                element = document.text(item.text, insert=(x, y))
-                element.update({"font-size": _n(item.size * FONT_SIZE_PER_CAP), "font-family": font_family(item.text),
-                                "text-anchor": item.anchor, "fill": item.colour})
-                if item.weight != "normal":
-                    element.update({"font-weight": item.weight})
-                if item.rotation:
-                    # Counter-clockwise on the paper is clockwise once y points down.
-                    element.update({"transform": f"rotate({_n(-item.rotation)} {x} {y})"})
+                element = text(item)
             else:  # pragma: no cover - the Primitive union is closed
                 raise TypeError(f"unknown primitive {item!r}")
             group.add(element)
