@@ -215,7 +215,8 @@ def _run(arguments: argparse.Namespace) -> int:
     if scene.drawing.sheet_given and scene.drawing.sheet != "none" and "sheets" not in pieces \
             and (reason := missing(scene, analysis, "sheets")) is not None:
         where = "--sheet" if arguments.sheet is not None else "drawing.sheet"
-        alone = "; without a mechanism only a [balancing] is drawn on a sheet" if analysis is None else ""
+        alone = ("; without a mechanism only a [balancing] and a [dynamics] of load diagrams are drawn on sheets"
+                 if analysis is None else "")
         outcomes.append(f"{where}: no sheet is drawn: 'sheets' {reason}{alone}")
     # A format none of the pieces comes in (docx with no note, dxf of the accuracy's plots) is said, not dropped.
     outcomes += [f"--format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "

@@ -67,8 +67,9 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if piece == "note" and analysis is None and (
             scene.balancing is not None or scene.vibration is not None or missing(scene, None, "dynamics") is None):
         return None  # the note on the machine's flywheel, rotor or vibration alone
-    if piece == "sheets" and analysis is None and scene.balancing is not None and scene.drawing.sheet != "none":
-        return None  # a rotor's balancing has a sheet of its own
+    if piece == "sheets" and analysis is None and scene.drawing.sheet != "none" and (
+            scene.balancing is not None or missing(scene, None, "dynamics") is None):
+        return None  # a rotor's balancing and a machine's load diagrams have sheets of their own
     if analysis is None:
         return _NO_LINKAGE
     if piece == "sheets" and scene.drawing.sheet == "none":
@@ -148,26 +149,36 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     found: list[Drawing] = []
     if analysis is not None:
         found += _linkage_drawings(analysis, pieces, dynamics)
-    elif "dynamics" in pieces:
+    sheets = analysis is None and "sheets" in pieces
+    # Each laid out once for its own drawing and the sheets of a machine without a linkage.
+    machine = []
+    if analysis is None and ("dynamics" in pieces or sheets and missing(scene, None, "dynamics") is None):
         from .render import dynamics as dynamics_layout
 
         dynamics = _dynamics_of(scene, analysis, dynamics)
-        found.append(Drawing("dynamics", dynamics_layout.layout(dynamics.model, dynamics.flywheel,
-                                                                strings(scene.locale))))
-    # Laid out once for its own drawing and the sheet of a rotor without a linkage.
-    rotor = _balancing_layers(scene) if "balancing" in pieces or (analysis is None and "sheets" in pieces) else []
+        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, strings(scene.locale))
+    if "dynamics" in pieces and analysis is None:
+        found.append(Drawing("dynamics", machine))
+    rotor = _balancing_layers(scene) if "balancing" in pieces or sheets and scene.balancing is not None else []
     if "balancing" in pieces:
         found.append(Drawing("rotor_balancing", rotor))
-    if analysis is None and "sheets" in pieces:
-        from .render.sheet import balancing_panel, balancing_sheet
-        from .render.title_block import details_of, form_of
-
-        details = details_of(scene.project, scene.title, form_of(scene.locale))
-        for sheet in balancing_sheet([balancing_panel(rotor, scene.locale)], scene.drawing.sheet,
-                                     scene.locale, details.title or scene.title, details):
-            found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
+    if sheets:
+        found += _machine_sheets(scene, machine, rotor)
     return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.title))
             for drawing in found]
+
+
+def _machine_sheets(scene: Scene, machine: list[Layer], rotor: list[Layer]) -> list[Drawing]:
+    """The sheets of a machine without a linkage: its dynamics drawing ``machine`` and its rotor's balancing."""
+    from .render.sheet import balancing_panel, dynamics_panel, machine_sheets
+    from .render.title_block import details_of, form_of
+
+    details = details_of(scene.project, scene.title, form_of(scene.locale))
+    details = dataclasses.replace(details, title=details.title or scene.title)
+    dynamics = [dynamics_panel(machine, scene.locale)] if machine else []
+    balancing = [balancing_panel(rotor, scene.locale)] if rotor else []
+    return [Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size)
+            for sheet in machine_sheets(dynamics, balancing, scene.drawing.sheet, scene.locale, details)]
 
 
 def _balancing_layers(scene: Scene) -> list[Layer]:

@@ -941,6 +941,42 @@ def test_a_linkages_sheets_end_with_the_rotors_balancing_where_the_scene_has_one
     assert not any("Balancing of the rotor" in _texts(path.read_text(encoding="utf-8")) for path in sheets[:-1])
 
 
+# A machine known by its load diagrams alone: driving power constant, resistance 367.7 W for a third of the turn and
+# 3677 W for two thirds, n = 100 rpm, δ = 0.05 (the power cycle of issue 7's worked example: JF = 80.473 kg·m²).
+_PRESS = """[scene]
+title = "Punching press"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+driving = "constant"
+"""
+
+
+def test_a_machine_without_a_linkage_gets_its_dynamics_on_sheets_then_its_rotors_balancing(tmp_path, capsys):
+    """--sheet A3 on a scene of load diagrams drew no sheet ("only a [balancing] is drawn on a sheet"), though its
+    work, energy and flywheel are a course project's dynamics sheet."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "press.toml"
+    scene.write_text(_PRESS + "[balancing]" + _ROTOR_ALONE.split("[balancing]")[1].split("[vibration]")[0],
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--sheet", "A3", "--out", str(tmp_path / "out")]) == 0
+    assert "warning" not in capsys.readouterr().out
+    sheets = sorted((tmp_path / "out").glob("sheet_*.svg"), key=lambda path: int(path.stem.split("_")[1]))
+    texts = [_texts(path.read_text(encoding="utf-8")) for path in sheets]
+    assert len(sheets) >= 2 and all(f"{k} of {len(sheets)}" in " ".join(own) for k, own in enumerate(texts, 1))
+    # The flywheel as the power cycle gives it: ΔWmax = (3677 − 2573.9) W over two thirds of a turn at 100 rpm.
+    mean_power = (367.7 + 2 * 3677) / 3
+    surplus = (3677 - mean_power) * (2 / 3) * 60 / 100
+    omega = 100 * 2 * np.pi / 60
+    flywheel = surplus / (omega**2 * 0.05)
+    drawn = " ".join(" ".join(own) for own in texts[:-1])
+    assert "Dynamics of the machine" in drawn
+    assert re.search(rf"JF = [^=]*= {flywheel:.3f} kg·m²", drawn), drawn
+    assert "Balancing of the rotor" in " ".join(texts[-1]) and "Balancing of the rotor" not in drawn
+
+
 def test_a_sheet_asked_for_a_scene_with_nothing_to_draw_on_one_is_said(tmp_path, capsys):
     from graphplan.cli import main
 

@@ -664,17 +664,33 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     if not details.title:
         details = replace(details, title=scene.title)
     scale = length_scale(analysis)
-    kinds = (("sheet_kinematics", list(panels.kinematics), scale), ("sheet_forces", list(panels.forces), scale),
-             ("sheet_dynamics", list(panels.dynamics), None),  # no μl: the dynamics draws no linkage
-             ("sheet_balancing", list(panels.balancing), None))
-    if chosen == "none":
+    kinds = (("sheet_kinematics", panels.kinematics, scale), ("sheet_forces", panels.forces, scale),
+             ("sheet_dynamics", panels.dynamics, None),  # no μl: the dynamics draws no linkage
+             ("sheet_balancing", panels.balancing, None))
+    return _numbered_set(kinds, chosen, scene.locale, details)
+
+
+def machine_sheets(dynamics: Sequence[Panel], balancing: Sequence[Panel], sheet: str, locale: str,
+                   details: Details) -> list[Sheet]:
+    """The sheets of a machine without a linkage, numbered as one set: its dynamics from load diagrams
+    (:func:`dynamics_panel`), then its rotor's balancing (:func:`balancing_panel`); no μl, neither draws a linkage."""
+    check_sheet(sheet)
+    return _numbered_set((("sheet_dynamics", dynamics, None), ("sheet_balancing", balancing, None)), sheet, locale,
+                         details)
+
+
+def _numbered_set(kinds: Sequence[tuple[str, Sequence[Panel], float | None]], sheet: str, locale: str,
+                  details: Details) -> list[Sheet]:
+    """Sheets of each kind in turn, (kind, its panels, μl for the title block), numbered as one set."""
+    if sheet == "none":
         pages = [panel for _, drawings, _ in kinds for panel in drawings]
         return [_unframed(panel, k + 1, len(pages)) for k, panel in enumerate(pages)]
-    packed = [(kind, pack(drawings, chosen, form) if drawings else [], at) for kind, drawings, at in kinds]
+    form = form_of(locale)
+    packed = [(kind, pack(list(drawings), sheet, form) if drawings else [], at) for kind, drawings, at in kinds]
     total = sum(len(pages) for _, pages, _ in packed)
     sheets: list[Sheet] = []
     for kind, pages, at in packed:
-        sheets += _drawn(pages, chosen, scene.locale, kind, at, details, len(sheets) + 1, total)
+        sheets += _drawn(pages, sheet, locale, kind, at, details, len(sheets) + 1, total)
     return sheets
 
 
