@@ -207,3 +207,20 @@ def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_dra
         enlarged = force_layout.enlarged_lever_scale(velocity)
         smaller += enlarged is not None and drawn_at > enlarged
     assert smaller  # the case in point: a lever drawn smaller than enlarged for the small sheet
+
+
+def test_the_lever_is_laid_out_once_whatever_the_length_scale_its_sheet_is_tried_at(monkeypatch):
+    """The lever is drawn at μV: choosing μl laid each force sheet out at every μl it tried, and the lever's lettering
+    was placed again each time (three quarters of a class III triad's run on A3). At another μV it is drawn anew."""
+    analysis = analysis_of("triad_class_iii")
+    position = next(position for position in analysis.plans if position.lever is not None)
+    drawn = []
+    original = force_layout._lever
+    monkeypatch.setattr(force_layout, "_lever", lambda sheet, lever: drawn.append(sheet) or original(sheet, lever))
+    sheet = force_sheet(analysis, position)
+    first = force_layout.rows(sheet)
+    before = len(drawn)
+    again = force_layout.rows(dataclasses.replace(sheet, length_scale=sheet.length_scale * 2))
+    assert len(drawn) == before and again.drawings[-1] == first.drawings[-1]
+    larger = dataclasses.replace(sheet, lever_scale=sheet.lever_drawn_scale / 2)
+    assert force_layout.rows(larger).drawings[-1] != first.drawings[-1] and len(drawn) == before + 1

@@ -36,6 +36,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
+import shapely
 from shapely.geometry import LineString, MultiPoint, Polygon
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
@@ -47,6 +48,7 @@ from ..joint_friction import FrictionPair
 from ..kinematics import at
 from ..lever import Lever, turned
 from ..mechanism import Mechanism
+from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import Plan
 from ..scales import fit_scale, format_scale, standard_scale
@@ -217,7 +219,7 @@ def rows(sheet: ForceSheet) -> Rows:
     for group in sheet.forces.groups:
         drawings.append([_body(sheet, group), _polygons(sheet, group)])
     if sheet.lever is not None:
-        drawings.append([_lever(sheet, sheet.lever)])
+        drawings.append([_lever_drawing(sheet, sheet.lever)])
     text = sheet.text
     # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.
     scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
@@ -953,6 +955,19 @@ def draws_larger(scale: float, than: float) -> bool:
     return scale < than * (1.0 - 1e-9)
 
 
+# The lever is drawn at μV, whatever μl the groups are drawn at: choosing μl lays each force sheet out at
+# every μl it tries, and the lever's lettering was placed again each time (three quarters of a triad's run).
+_LEVERS: OwnedMemo[Drawing] = OwnedMemo()
+
+
+def _lever_drawing(sheet: ForceSheet, lever: Lever) -> Drawing:
+    """The lever of :func:`_lever`, made once for each lever, plan and scale while the lever lives."""
+    # What _lever reads of the sheet besides the lever (a lever's plan position holds its velocity plan).
+    key = (id(sheet.velocity), sheet.lever_drawn_scale, sheet.lever_scale_line, sheet.forces.balancing,
+           sheet.mechanism.scene.frame_link, tuple(sheet.text.items()))
+    return _LEVERS.get(lever, key, lambda: _lever(sheet, lever))
+
+
 def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     """The velocity plan turned 90° clockwise about the pole p, the loads at the images of their points."""
     text = sheet.text
@@ -1066,7 +1081,8 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placeme
     A label covering another one's anchor (the tail of a moment's arc)
     would leave that one no room beside it, so the anchors count as points.
     """
-    spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
+    # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
+    spots = list(shapely.buffer(shapely.points([anchor.at for anchor in anchors]), 0.8, quad_segs=16))
     return place_labels(anchors, obstacles_of(figure) + spots)
 
 
