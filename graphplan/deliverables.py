@@ -158,7 +158,7 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         dynamics = _dynamics_of(scene, analysis, dynamics)
         machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, strings(scene.locale))
     if "dynamics" in pieces and analysis is None:
-        found.append(Drawing("dynamics", machine))
+        found += _dynamics_drawings(machine, pieces)
     rotor = _balancing_layers(scene) if "balancing" in pieces or sheets and scene.balancing is not None else []
     if "balancing" in pieces:
         found.append(Drawing("rotor_balancing", rotor))
@@ -221,7 +221,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
         found.append(Drawing("positions", layers))
     if "dynamics" in pieces:
-        found.append(Drawing("dynamics", machine))
+        found += _dynamics_drawings(machine, pieces)
     if "diagrams" in pieces:
         from .kinematic_diagrams import of_analysis
         from .render import diagrams as diagrams_layout
@@ -260,6 +260,16 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
                 found.append(Drawing(f"forces_friction_{plan.number}", layers))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces)
     return found
+
+
+def _dynamics_drawings(machine: list[Layer], pieces: tuple[str, ...]) -> list[Drawing]:
+    """The dynamics drawing, and where the run writes the note, the parts it shows it in (``dynamics-1.svg``, ...):
+    whole, 400 mm wide, it printed on the note's page with letters 1 mm high."""
+    from .render.dynamics import TITLE_LAYER
+    from .render.note_parts import note_parts_in_order
+
+    parts = note_parts_in_order(machine, TITLE_LAYER) if "note" in pieces else None
+    return [Drawing("dynamics", machine), *(Drawing(f"dynamics-{k}", part) for k, part in enumerate(parts or (), 1))]
 
 
 def _note_parts(stem: str, layers: list, pieces: tuple[str, ...]) -> list[Drawing]:

@@ -22,6 +22,7 @@ import functools
 import math
 import re
 from pathlib import Path
+from xml.etree import ElementTree
 
 import numpy as np
 import pytest
@@ -559,3 +560,34 @@ working = { link = 4, sense = "backward" }
 delta = 0.04
 count = 360
 """
+
+
+def test_the_note_shows_the_dynamics_in_parts_each_printed_at_a_readable_size(tmp_path):
+    """Whole, the dynamics drawing (two columns, 400 mm wide) printed on the note's 170 × 200 mm figure with letters
+    about 1 mm high; the note shows it in parts, each at half size or larger, nothing of it left out or shown twice."""
+    from graphplan.cli import main
+    from graphplan.render.dynamics import TITLE_LAYER
+
+    page_width, page_height, least = 170.0, 200.0, 0.5   # A4's line and a figure's room, as note_parts.py sets them
+
+    def print_scale(svg_file):
+        root = ElementTree.parse(svg_file).getroot()
+        width, height = (float(root.get(key).removesuffix("mm")) for key in ("width", "height"))
+        return min(page_width / width, page_height / height)
+
+    def groups(svg_file):
+        return [group.get("id") for group in ElementTree.parse(svg_file).getroot()
+                if group.tag.endswith("}g") and len(group)]
+
+    scene = tmp_path / "shaper.toml"
+    scene.write_text(Path("fixtures/shaper_six_bar.toml").read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n",
+                     encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+    parts = sorted(out.glob("dynamics-*.svg"), key=lambda path: int(path.stem.split("-")[1]))
+    assert print_scale(out / "dynamics.svg") < least and len(parts) >= 2
+    assert all(print_scale(part) >= least for part in parts)
+    shown = [name for part in parts for name in groups(part)]
+    assert sorted(shown) == sorted(groups(out / "dynamics.svg")) and TITLE_LAYER in groups(parts[0])
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert [f"dynamics-{k}.svg" for k in range(1, len(parts) + 1)] == re.findall(r"\]\((dynamics[-\d]*\.svg)\)", note)

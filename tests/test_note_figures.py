@@ -92,7 +92,7 @@ def test_every_drawing_and_plot_written_is_a_numbered_figure_in_its_section(shap
     assert heading_above(note, "positions.svg", 2).endswith("Initial data")
     assert heading_above(note, "diagrams.svg", 3).endswith("Kinematic diagrams of the output link 6")
     for file in ("dynamics.svg", "motion.svg"):
-        assert heading_above(note, file, 2).endswith("Dynamics of the machine")
+        assert heading_above(note, shown_as(file, shaper), 2).endswith("Dynamics of the machine")
 
 
 def test_the_html_sets_each_figure_with_its_caption_and_links_it_to_its_drawing(shaper):

@@ -57,6 +57,8 @@ GAP_MM = 24.0
 LABEL = 2.8
 HEADING = 3.8
 TITLE = 5.0
+# The drawing's title, laid over the first of the parts a note shows it in.
+TITLE_LAYER = "title"
 # How far an axis runs past its last tick, to its arrowhead (mm).
 AXIS_RUN_MM = 8.0
 TICK_MM = 1.2
@@ -155,7 +157,7 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
         layers.append(_layer("results", results, 0.0, left_bottom - GAP_MM - bounds_of(results)[3]))
     xmin, _, _, ymax = bounds(layers)
     title = words["dyn_title"] if flywheel is not None else words["dyn_title_model"]
-    layers.append(Layer("title", (Text((xmin, ymax + 8.0), title, TITLE, "start", weight="bold"),)))
+    layers.append(Layer(TITLE_LAYER, (Text((xmin, ymax + 8.0), title, TITLE, "start", weight="bold"),)))
     return layers
 
 

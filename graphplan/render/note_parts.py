@@ -24,13 +24,9 @@ def note_parts(layers: Sequence[Layer]) -> list[list[Layer]] | None:
     """``layers`` cut between their rows into parts that each print on a page at :data:`LEAST_PRINT_SCALE` or
     larger, the heading with the first; None where the drawing prints so whole, or no cut between rows helps."""
     drawn = [layer for layer in layers if layer.items]
-    if not drawn:
+    if not drawn or _prints(drawn):
         return None
-    width, height = _size(drawn)
-    page_width, page_height = PAGE_FIGURE_MM
-    if min(page_width / width, page_height / height) >= LEAST_PRINT_SCALE:
-        return None
-    tallest = page_height / LEAST_PRINT_SCALE
+    tallest = PAGE_FIGURE_MM[1] / LEAST_PRINT_SCALE
     heading = [layer for layer in drawn if layer.name == HEADING_LAYER]
     parts: list[list[Layer]] = []
     current: list[Layer] = list(heading)
@@ -43,6 +39,31 @@ def note_parts(layers: Sequence[Layer]) -> list[list[Layer]] | None:
         holds_a_row = True
     parts.append(current)
     return parts if len(parts) > 1 else None
+
+
+def note_parts_in_order(layers: Sequence[Layer], heading: str) -> list[list[Layer]] | None:
+    """``layers`` of a drawing in columns (the dynamics: the diagrams over φ down one side, the energy–mass diagram
+    over Je(φ) down the other) gathered in their own order into parts that each print on a page at
+    :data:`LEAST_PRINT_SCALE` or larger, the layer ``heading`` over the first; None where the drawing prints so
+    whole.  Cut into rows, each row still spanned both columns and printed as small as the whole."""
+    drawn = [layer for layer in layers if layer.items]
+    if not drawn or _prints(drawn):
+        return None
+    parts: list[list[Layer]] = []
+    current = [layer for layer in drawn if layer.name == heading]
+    for layer in (layer for layer in drawn if layer.name != heading):
+        if current and any(item.name != heading for item in current) and not _prints([*current, layer]):
+            parts.append(current)
+            current = []
+        current.append(layer)
+    parts.append(current)
+    return parts if len(parts) > 1 else None
+
+
+def _prints(layers: Sequence[Layer]) -> bool:
+    """Whether ``layers`` print on a note's page at :data:`LEAST_PRINT_SCALE` or larger."""
+    width, height = _size(layers)
+    return min(PAGE_FIGURE_MM[0] / width, PAGE_FIGURE_MM[1] / height) >= LEAST_PRINT_SCALE
 
 
 def _rows(layers: Sequence[Layer]) -> list[list[Layer]]:

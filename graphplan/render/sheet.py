@@ -52,6 +52,7 @@ from .drawings import (
     velocity_plans_drawing,
     with_length_scale,
 )
+from .dynamics import TITLE_LAYER
 from .force_rows import has_heading
 from .formats import (
     BIGGER,
@@ -629,7 +630,7 @@ def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:
     diagram with Je(φ) under it while a sheet holds the two together, for
     they share the axis of Je.
     """
-    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,)) for layer in layers if layer.name != "title"}
+    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,)) for layer in layers if layer.name != TITLE_LAYER}
     parts: list[Panel] = []
     for name, part in alone.items():
         if name == "inertia" and "energy-mass" in alone:
