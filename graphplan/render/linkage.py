@@ -13,7 +13,7 @@ import math
 from collections.abc import Callable, Iterable
 
 import numpy as np
-from shapely.geometry import MultiPoint
+from shapely.geometry import MultiPoint, Point, Polygon
 
 from ..kinematics import at
 from ..mechanism import Mechanism
@@ -75,12 +75,14 @@ def link_outlines(motion: Motion, index: int, outlines: dict[int, list[str]], pa
                   stroke: Stroke) -> list[Primitive]:
     """The outlines of the links in ``outlines`` at position ``index``, each with the slots it carries.
 
-    A link is drawn as the hull of the points fixed on it; a slot or slide
+    A link is drawn as the hull of the points fixed on it, with bars to a
+    joint that stands inside the hull (:func:`_bars_to_inner_joints`); a slot or slide
     it carries is drawn as a line of its own along the slide, from where it
     leaves the link to past the slider's block, so that a Scotch yoke shows
     its slot and its rod rather than a triangle.
     """
     mechanism = motion.mechanism
+    jointed = _jointed(mechanism)
     items: list[Primitive] = []
 
     def where(name: str) -> complex:
@@ -104,7 +106,40 @@ def link_outlines(motion: Motion, index: int, outlines: dict[int, list[str]], pa
         outline = _outline([paper(r) for r in corners], stroke)
         if outline is not None:
             items.append(outline)
+            pivots = [paper(where(name)) for name in fixed if name in jointed.get(link, ())]
+            items.extend(_bars_to_inner_joints(outline, pivots, stroke))
     return items
+
+
+def _jointed(mechanism: Mechanism) -> dict[int, set[str]]:
+    """For every link, the points at which it turns on another link or on the frame."""
+    found: dict[int, set[str]] = {}
+    for name, first, second in mechanism.revolutes:
+        found.setdefault(first, set()).add(name)
+        found.setdefault(second, set()).add(name)
+    return found
+
+
+def _bars_to_inner_joints(outline: Polyline, pivots: list[tuple[float, float]], stroke: Stroke) -> list[Polyline]:
+    """Bars that tie to the plate ``outline`` each of its joints at ``pivots`` (paper mm) that stands inside it.
+
+    A ternary link with a point beyond one of its joints (K past D) has that
+    joint inside the hull of its points, where no line of the hull reaches
+    it: the pin would be drawn free of its link. A draughtsman ties it to
+    the link's other joints on the outline (the triangle of its pins drawn
+    within the plate), or to the nearest corner where no other joint is on it.
+    """
+    if not outline.closed:
+        return []
+    plate = Polygon(outline.points)
+    # A joint within a hundredth of a millimetre of the outline is on it.
+    inner = [pivot for pivot in pivots if plate.boundary.distance(Point(pivot)) > 0.01 and plate.contains(Point(pivot))]
+    corners = [pivot for pivot in pivots if pivot not in inner]
+    bars: list[Polyline] = []
+    for joint in inner:
+        ends = corners or [min(outline.points, key=lambda corner: math.dist(corner, joint))]
+        bars.extend(Polyline((joint, end), stroke) for end in ends)
+    return bars
 
 
 def _outline(corners: list[tuple[float, float]], stroke: Stroke) -> Polyline | None:
