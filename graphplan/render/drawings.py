@@ -258,7 +258,8 @@ def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.
         numbers=tuple(int(analysis.positions.numbers[index]) for index in drawn),
         emphasised=analysis.emphasised,
         paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption,
-        extremes=extreme_names(analysis, drawn))
+        extremes=extreme_names(analysis, drawn),
+        marked=tuple(sorted({int(analysis.positions.numbers[plan.index]) for plan in analysis.plans})))
 
 
 def extreme_names(analysis: Analysis, drawn: Sequence[int]) -> tuple[str, ...]:

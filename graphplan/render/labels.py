@@ -108,7 +108,8 @@ REPAIR_ROUNDS = 2
 LEADER_CLEARANCE = 0.9
 
 
-def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2) -> Placement:
+def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2,
+                 standing: Sequence[Text] = ()) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 
     Another label or leader is never covered when any spot avoids it.  A
@@ -125,6 +126,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     label that still had to cover another is placed again once all stand,
     after the one it covers, which may now find a clear spot elsewhere.
 
+    ``standing`` are labels set already (the numbers round a crank's
+    circle): the anchors' labels keep clear of them as of one another.
+
     All spots of one anchor are costed at once by shapely's array
     functions: a sheet has a few hundred labels and ninety-six spots each.
     """
@@ -138,6 +142,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     leader_lines: dict[int, BaseGeometry] = {}
     texts: dict[int, Text] = {}
     paid: dict[int, float] = {}
+    # The labels standing already, under indices no anchor has.
+    for number, text in enumerate(standing):
+        placed_boxes[-1 - number] = spaced_box(text)
 
     def covered(shapes: np.ndarray) -> np.ndarray:
         if tree is None:
@@ -208,10 +215,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         x0, y0, x1, _ = candidates[best]
         texts[index] = Text(((x0 + x1) / 2, y0 + 0.3 * anchor.size), anchor.text, anchor.size, "middle",
                             anchor.colour)
-        # Kept apart by a little more than touching, so that two letters never read as one (s5g): the upright
-        # box grown by the spacing on every side (a mitred buffer, without shapely's general buffer's cost).
-        x0, y0, x1, y1 = text_extent(texts[index])
-        placed_boxes[index] = box(x0 - LABEL_SPACING, y0 - LABEL_SPACING, x1 + LABEL_SPACING, y1 + LABEL_SPACING)
+        placed_boxes[index] = spaced_box(texts[index])
         leader_lines.pop(index, None)
         if not beside[best]:
             leader_lines[index] = lines[best - led[0]]
@@ -233,6 +237,13 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
     return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
+
+
+def spaced_box(text: Text, spacing: float = LABEL_SPACING) -> BaseGeometry:
+    """The box of ``text`` kept apart by a little more than touching, so that two letters never read as one (s5g):
+    the upright box grown by ``spacing`` on every side (a mitred buffer, without shapely's general buffer's cost)."""
+    x0, y0, x1, y1 = text_extent(text)
+    return box(x0 - spacing, y0 - spacing, x1 + spacing, y1 + spacing)
 
 
 def _clash(one: int, other: int, boxes: dict[int, BaseGeometry], leaders: dict[int, BaseGeometry]) -> bool:

@@ -9,17 +9,22 @@ mechanics.
 
 from __future__ import annotations
 
+import cmath
+import itertools
 import math
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry import Polygon as ShapelyPolygon
 from shapely.geometry.base import BaseGeometry
+from shapely.strtree import STRtree
 
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
-from .labels import Anchor, obstacles_of, place_labels
+from .labels import LABEL_SPACING, Anchor, obstacles_of, place_labels, spaced_box, text_box
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -42,6 +47,8 @@ from .primitives import (
     Text,
     bounds,
     dot_marker,
+    slider_block,
+    text_width,
 )
 
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
@@ -64,7 +71,8 @@ class PositionsPlan:
     ``extremes`` names each of them that is no numbered position drawn, as
     Russian course projects mark an extreme: the number of the position it
     follows with a prime (8′), its points lettered with a prime (A′, D′);
-    empty for one that is a numbered position.
+    empty for one that is a numbered position.  ``marked`` holds the numbers
+    always lettered however the numbers are thinned: the plan sheets' positions.
     """
 
     mechanism: Mechanism
@@ -76,6 +84,7 @@ class PositionsPlan:
     title: str
     caption: str
     extremes: tuple[str, ...] = ()
+    marked: tuple[int, ...] = ()
 
 
 def layout(plan: PositionsPlan) -> list[Layer]:
@@ -91,11 +100,18 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     frame = _frame(plan, paper)
     paths = _paths(plan, paper)
     drawn = every + bold + frame + paths
-    labels = place_labels(_position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper),
-                          obstacles_of(drawn) + _crowded_pins(plan, paper))
+    if plan.mechanism.driver.kind == "crank":
+        # Round the crank pin's circle: set outside it, one in every few where they would run together.
+        numbers, number_leaders = _numbers_round_the_circle(plan, paper, obstacles_of(bold))
+        anchors = _point_anchors(plan, paper) + _extreme_anchors(plan, paper, names=False)
+    else:
+        numbers, number_leaders = [], []
+        anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
+    labels = place_labels(anchors, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
+                          standing=numbers)
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
-              Layer("frame", tuple(frame)), Layer("leaders", labels.leaders),
-              Layer("labels", labels.texts + tuple(_centre_marks(plan, paper)))]
+              Layer("frame", tuple(frame)), Layer("leaders", tuple(number_leaders) + labels.leaders),
+              Layer("labels", tuple(numbers) + labels.texts + tuple(_centre_marks(plan, paper)))]
     xmin, _, _, ymax = bounds(layers)
     # Lettered as the plan sheets' headings beside it on the kinematics sheet: the title over its scale.
     scale_line = ymax + 5.0
@@ -166,6 +182,142 @@ def _position_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
     return anchors
 
 
+@dataclass(frozen=True)
+class _Number:
+    """A number (or an extreme's name, 8′) to set beside the crank pin at ``pin`` (paper mm), along ``outward``,
+    clear of the slider ``block`` drawn on the pin (a slotted lever's)."""
+
+    text: str
+    pin: complex
+    outward: complex
+    block: BaseGeometry | None = None
+
+
+def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
+                              bold: list[BaseGeometry]) -> tuple[list[Text], list[Polyline]]:
+    """The positions' numbers round the crank pin's circle (or a rocking crank's arc), each just outside it on the
+    line from the pivot through its pin, as a draughtsman numbers them, and the leaders of those set aside.
+
+    The first position, the plan sheets' positions (``PositionsPlan.marked``) and the extremes named 8′ are always
+    numbered; one that would run into another, or into the ``bold`` lines of the extreme positions (the rod leaving
+    its pin outward), is set a little round the circle or farther out, on a leader. Of the
+    rest, one in every few is numbered, the fewest skipped that keep every number clear of its neighbours
+    (36 positions on a small crank are numbered 1, 3, 5, …); where they are thinned so, one that would run into a
+    number always given is left out, and where every position is numbered, it is set aside as those are.
+    """
+    driver = plan.mechanism.driver
+    centre = complex(*paper(plan.mechanism.scene.frame_points[driver.pivot]))
+
+    def number(name: str, motion: Motion, index: int) -> _Number:
+        pin = complex(*paper(complex(at(motion.points[driver.joint].r, index))))
+        outward = pin - centre
+        blocks = [ShapelyPolygon(slider_block((pin.real, pin.imag), float(np.angle(complex(at(slide.u, index))))).points)
+                  for slide in motion.slides if slide.joint == driver.joint]
+        return _Number(name, pin, outward / abs(outward) if abs(outward) > 1e-9 else 1j, blocks[0] if blocks else None)
+
+    every = [number(str(value), plan.positions, index) for index, value in enumerate(plan.numbers)]
+    always = [every[0], *(item for index, item in enumerate(every) if index and plan.numbers[index] in plan.marked)]
+    always += [number(name, plan.emphasised, index)
+               for index, name in enumerate(plan.extremes) if name and index < plan.emphasised.count]
+    texts: list[Text] = []
+    leaders: list[Polyline] = []
+    boxes: list[BaseGeometry] = []
+    for item in always:
+        text, leader = _set_aside(item, centre, boxes, bold)
+        texts.append(text)
+        boxes.append(spaced_box(text, LABEL_SPACING / 2))
+        if leader is not None:
+            leaders.append(leader)
+    # The positions drawn one in every few (more than 36 of them) are numbered on that grid, the plan sheets' positions
+    # drawn besides them off it.
+    first = plan.numbers[0]
+    drawing_step = math.gcd(*(value - first for value in plan.numbers if value not in plan.marked)) or 1
+    step = next(step for step in itertools.count(drawing_step, drawing_step)
+                if _clear([item for item, value in zip(every, plan.numbers) if (value - first) % step == 0]))
+    for item, value in zip(every[1:], plan.numbers[1:]):
+        if (value - first) % step or value in plan.marked:
+            continue
+        # A little farther out along its line where a bold line runs through it, if that clears it.
+        text = next((text for text in (_number_text(item, out) for out in (0.0, 1.0, 2.0, 3.0))
+                     if not any(text_box(text).intersects(line) for line in bold)), _number_text(item, 0.0))
+        spaced = spaced_box(text, LABEL_SPACING / 2)
+        leader = None
+        if any(spaced.intersects(other) for other in boxes):
+            if step > drawing_step:
+                continue  # numbered one in every few already: one more left out is not missed
+            # Every position is numbered: this one is set aside on a leader rather than left out.
+            text, leader = _set_aside(item, centre, boxes, bold)
+            spaced = spaced_box(text, LABEL_SPACING / 2)
+            if any(spaced.intersects(other) for other in boxes):
+                continue
+        texts.append(text)
+        boxes.append(spaced)
+        if leader is not None:
+            leaders.append(leader)
+    return texts, leaders
+
+
+def _set_aside(item: _Number, centre: complex, boxes: list[BaseGeometry],
+               lines: list[BaseGeometry]) -> tuple[Text, Polyline | None]:
+    """The number of ``item`` beside its pin, or where that runs into one of ``boxes`` or ``lines``, the nearest spot
+    clear of them a few degrees round the circle or farther out, with a leader from its pin; clear of the boxes
+    alone where no spot near is clear of both."""
+    spots = [(out, turn) for out in (0.0, 2.0, 4.0, 6.0, 9.0, 12.0) for step in range(13)
+             for turn in ((0.0,) if step == 0 else (step * _ROUND_STEP, -step * _ROUND_STEP))]
+    for avoided in (lines, []):
+        for out, turn in spots:
+            turned = cmath.exp(1j * turn)
+            text = _number_text(_Number(item.text, centre + (item.pin - centre) * turned, item.outward * turned,
+                                        item.block), out)
+            spaced = spaced_box(text, LABEL_SPACING / 2)
+            if any(spaced.intersects(other) for other in boxes) or any(text_box(text).intersects(line)
+                                                                     for line in avoided):
+                continue
+            if not out and not turn:
+                return text, None
+            # The leader from the pin's rim to the near side of the box.
+            near = shapely.shortest_line(ShapelyPoint(item.pin.real, item.pin.imag), text_box(text)).coords[1]
+            along = complex(*near) - item.pin
+            start = item.pin + along / abs(along) * _NUMBER_GAP_MM
+            return text, Polyline(((start.real, start.imag), near), Stroke(0.18, _NUMBER_COLOUR))
+    return _number_text(item, 0.0), None  # nowhere near is clear: beside its pin after all
+
+
+# How far round the circle a number set aside is tried at a time (radians).
+_ROUND_STEP = math.radians(4.0)
+
+
+# How far a number stands off its crank pin (mm): clear of the pin drawn at a bold position.
+_NUMBER_GAP_MM = PIN_RADIUS_MM + _PIN_CLEARANCE_MM
+_NUMBER_COLOUR = "#333333"
+
+
+def _number_text(item: _Number, out: float) -> Text:
+    """The number of ``item`` set with the nearest side of its box ``out`` mm past :data:`_NUMBER_GAP_MM` off its
+    pin, along the line from the pivot (and past the block on it): the box then stands wholly outside the crank's
+    circle."""
+    width, height = text_width(item.text, _LABEL), 1.45 * _LABEL
+    # The half-extent of the box along the outward line, and its middle above the text's baseline.
+    reach = abs(item.outward.real) * width / 2 + abs(item.outward.imag) * height / 2
+
+    def text(off: float) -> Text:
+        middle = item.pin + item.outward * (_NUMBER_GAP_MM + off + reach)
+        return Text((middle.real, middle.imag - 0.425 * _LABEL), item.text, _LABEL, "middle", _NUMBER_COLOUR)
+
+    past = 0.0
+    while item.block is not None and past < 10.0 and spaced_box(text(past), LABEL_SPACING / 2).intersects(item.block):
+        past += 0.5
+    return text(past + out)
+
+
+def _clear(items: list[_Number]) -> bool:
+    """Whether the numbers of ``items``, each set beside its pin, all stand apart from one another."""
+    boxes = [spaced_box(_number_text(item, 0.0), LABEL_SPACING / 2) for item in items]
+    tree = STRtree(boxes)
+    first, second = tree.query(boxes, predicate="intersects")
+    return bool(np.all(first == second))
+
+
 def _crowded_pins(plan: PositionsPlan, paper: Paper) -> list[BaseGeometry]:
     """The driver's pin at each bold position, grown: its number and its letter both stand round it, and a
     label only clear of the pin itself read as run into it (position 0's "0" and "A" on the Stephenson six-bar)."""
@@ -183,9 +335,10 @@ def _driver_centre(plan: PositionsPlan) -> complex:
     return complex(np.mean(np.atleast_1d(joint))) + 1j * complex(at(plan.positions.links[driver.link].u, 0))
 
 
-def _extreme_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
+def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> list[Anchor]:
     """An extreme that is no numbered position: its name (8′) at the driver's joint, as the positions are
-    numbered, and its points lettered with a prime; it stood bold with neither."""
+    numbered (unless ``names`` is false: round a crank's circle they are set with the numbers), and its points
+    lettered with a prime; it stood bold with neither."""
     driver = plan.mechanism.driver
     motion = plan.emphasised
     centre = _driver_centre(plan)
@@ -199,7 +352,8 @@ def _extreme_anchors(plan: PositionsPlan, paper: Paper) -> list[Anchor]:
             continue
         joint = complex(at(motion.points[driver.joint].r, index))
         outward = joint - centre
-        anchors.append(Anchor(paper(joint), label, _LABEL, math.atan2(outward.imag, outward.real), "#333333"))
+        if names:
+            anchors.append(Anchor(paper(joint), label, _LABEL, math.atan2(outward.imag, outward.real), "#333333"))
         moving = [name for name in motion.points if name in drawn
                   and abs(complex(at(motion.points[name].r, index)) - complex(at(motion.points[name].r, 0)))
                   > _SAME_POINT_MM * plan.length_scale]
