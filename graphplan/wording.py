@@ -7,10 +7,22 @@ decimal mark, a drawing four digits that the SVG writer localises.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Mapping
 
 from .mechanism import Mechanism
 from .statics import delivers_power, rounded_zero, turned_round
+
+# A component written with a caret (the plans' aBA^τ, aBB4^r), which a reader would see as a caret beside
+# aBAⁿ and aBA4ᵏ: r raised as its modifier letter, τ, which has none, on the line as in R23τ.
+_CARET_COMPONENT = re.compile(r"(?<=[A-Za-z0-9Σ])\^([τr])(?![A-Za-z])")
+_RAISED = {"τ": "τ", "r": "ʳ"}
+
+
+def raised(text: str) -> str:
+    """Symbols with no caret, as the note and the drawings write them: aBA^τ as aBAτ, aBB4^r as aBB4ʳ (the note's
+    HTML, LaTeX and Word documents set both as superscripts, :mod:`graphplan.report.symbols`)."""
+    return _CARET_COMPONENT.sub(lambda found: _RAISED[found[1]], text)
 
 
 def balancing_symbol(mechanism: Mechanism, text: Mapping[str, str]) -> tuple[str, str]:

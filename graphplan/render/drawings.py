@@ -16,6 +16,7 @@ from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
 from ..statics import efficiency
+from ..wording import raised
 from . import forces as force_layout
 from . import plans, positions, velocity_plans
 from .formats import holds
@@ -350,7 +351,8 @@ def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str
     if not short:
         return []
     unit = text["unit_m_per_s" if kind == "velocity" else "unit_m_per_s2"]
-    values = [f"{name} = {value:.3g} {unit}" for name, value in short]
+    # Named as the note names them: aΣ6C^τ as aΣ6Cτ.
+    values = [f"{raised(name)} = {value:.3g} {unit}" for name, value in short]
     lines = [text["plan_too_short"].format(least=f"{plans.ZERO_MM:g}")]
     # A line too wide for the plan's field (long names such as aΣ6Bⁿ) breaks after a semicolon.
     lines += [piece for k in range(0, len(values), _SHORT_PER_LINE)

@@ -46,7 +46,7 @@ from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, St
 from ..render.drawings import length_scale
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
-from ..wording import driver_at
+from ..wording import driver_at, raised
 from . import forces as force_report
 from .force_note import forces_section
 from .machine_note import balancing_section, dynamics_section, vibration_section
@@ -83,19 +83,7 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures),
                  lever_scales=dict(lever_scales or {}))
     note.write()
-    return _raised("\n".join(note.lines).rstrip("\n") + "\n")
-
-
-# A component written with a caret (the plans' aBA^τ, aBB4^r), which a Markdown viewer shows as a caret beside
-# the note's aBAⁿ and aBA4ᵏ: r raised as its modifier letter, τ, which has none, on the line as in R23τ.
-_CARET_COMPONENT = re.compile(r"(?<=[A-Za-z0-9Σ])\^([τr])(?![A-Za-z])")
-_RAISED = {"τ": "τ", "r": "ʳ"}
-
-
-def _raised(markdown: str) -> str:
-    """The note's symbols with no caret: aBA^τ as aBAτ, aBB4^r as aBB4ʳ (the HTML, LaTeX and Word documents set
-    both as superscripts, :mod:`graphplan.report.symbols`)."""
-    return _CARET_COMPONENT.sub(lambda found: _RAISED[found[1]], markdown)
+    return raised("\n".join(note.lines).rstrip("\n") + "\n")
 
 
 # Chinese sets no space beside its full-width punctuation: the sentences joined with a Latin space read
