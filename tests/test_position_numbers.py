@@ -14,7 +14,7 @@ from shapely.geometry import Point
 from graphplan.analysis import analyse
 from graphplan.render import positions
 from graphplan.render.drawings import positions_plan
-from graphplan.render.labels import text_box
+from graphplan.render.labels import obstacles_of, text_box
 from graphplan.render.primitives import Text
 from graphplan.scene import loads
 
@@ -59,3 +59,20 @@ def test_twelve_positions_on_a_crank_drawn_large_are_all_numbered():
     texts = {item.text for layer in positions.layout(plan) if layer.name == "labels" for item in layer.items
              if isinstance(item, Text)}
     assert {str(number) for number in range(12)} <= texts
+
+
+CRANKS = [path.stem for path in sorted(Path("fixtures").glob("*.toml"))
+          if loads(path.read_text(encoding="utf-8")).driver.kind == "crank"]
+
+
+@pytest.mark.parametrize("name", CRANKS)
+def test_no_number_round_the_crank_is_written_over_an_extreme_position(name):
+    """The Scotch yoke's rod runs out along the radius of its top position: no spot along that line was clear of it,
+    and "7" was written over the bold rod and its guide."""
+    plan = positions_plan(analyse(loads(Path(f"fixtures/{name}.toml").read_text(encoding="utf-8"))))
+    layers = {layer.name: layer.items for layer in positions.layout(plan)}
+    bold = [item for item in layers["extremes"] if not isinstance(item, Text)]
+    lines = obstacles_of(bold)
+    for item in layers["labels"]:
+        if isinstance(item, Text) and NUMBER.match(item.text):
+            assert not any(text_box(item).intersects(line) for line in lines), item.text

@@ -237,11 +237,14 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
     for item, value in zip(every[1:], plan.numbers[1:]):
         if (value - first) % step or value in plan.marked:
             continue
-        # A little farther out along its line where a bold line runs through it, if that clears it.
+        # A little farther out along its line where a bold line runs through it, if that clears it; else round the
+        # circle on a leader (the Scotch yoke's rod runs out along the line of its top position's number).
         text = next((text for text in (_number_text(item, out) for out in (0.0, 1.0, 2.0, 3.0))
-                     if not any(text_box(text).intersects(line) for line in bold)), _number_text(item, 0.0))
-        spaced = spaced_box(text, LABEL_SPACING / 2)
+                     if not any(text_box(text).intersects(line) for line in bold)), None)
         leader = None
+        if text is None:
+            text, leader = _set_aside(item, centre, boxes, bold)
+        spaced = spaced_box(text, LABEL_SPACING / 2)
         if any(spaced.intersects(other) for other in boxes):
             if step > drawing_step:
                 continue  # numbered one in every few already: one more left out is not missed
