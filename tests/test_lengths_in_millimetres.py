@@ -1,0 +1,88 @@
+"""Lengths typed in millimetres where the scene asks for metres: the mechanism a thousand times too large, every
+result wrong by as much, and nothing said (a class III course project ran with its crank pin at 750 m/s)."""
+
+from __future__ import annotations
+
+import json
+import tomllib
+
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+
+FIXTURE = "fixtures/ratchet_crank_rocker.toml"
+
+
+def scaled(factor: float, omega: float | None = None) -> dict:
+    """The ratchet's crank-rocker (its kinematics alone) with every length times ``factor``."""
+    with open(FIXTURE, "rb") as file:
+        data = tomllib.load(file)
+    for name in ("links", "loads", "forces", "measured", "dynamics"):
+        data.pop(name, None)
+    data["frame"]["points"] = {name: [x * factor for x in xy] for name, xy in data["frame"]["points"].items()}
+    data["driver"]["length"] *= factor
+    if omega is not None:
+        data["driver"]["omega"] = omega
+    data["groups"][0]["lengths"] = [length * factor for length in data["groups"][0]["lengths"]]
+    data["points"] = {name: point | {"at": point["at"] * factor, "offset": point.get("offset", 0.0) * factor}
+                      for name, point in data["points"].items()}
+    data.pop("drawing", None)
+    return data
+
+
+def _toml(data: dict, where: str = "") -> str:
+    """``data`` as TOML (its tables, lists of tables, numbers, strings and lists of them)."""
+    head = [f"{key} = {json.dumps(value, ensure_ascii=False)}" for key, value in data.items()
+            if not isinstance(value, dict) and not (isinstance(value, list) and value and isinstance(value[0], dict))]
+    lines = ([f"[{where}]"] if where else []) + head
+    for key, value in data.items():
+        if isinstance(value, dict):
+            lines.append(_toml(value, f"{where}.{key}" if where else key))
+        elif isinstance(value, list) and value and isinstance(value[0], dict):
+            lines += [f"[[{key}]]\n" + _toml(item).strip() for item in value]
+    return "\n".join(lines) + "\n"
+
+
+def told(data: dict) -> list[str]:
+    return [warning.detail for warning in analyse(graphplan.load(data)).warnings if warning.code == "lengths-in-mm"]
+
+
+def test_lengths_in_millimetres_are_warned_of_by_check_and_run_and_kept_in_the_results(tmp_path, capsys):
+    scene = tmp_path / "in_mm.toml"
+    scene.write_text(_toml(scaled(1000.0)))
+    assert main(["check", str(scene)]) == 0
+    out = capsys.readouterr().out
+    warning = ("warning: position 0: groups[0].lengths[0] = 550 m is longer than any machine's link (over 20 m); "
+               "driver.length = 175 m at ω = 17 rad/s moves the crank pin A at 2975 m/s, faster than any machine's "
+               "(over 100 m/s): are the lengths in millimetres? The scene's lengths are in metres (divide them by "
+               "1000)")
+    assert warning in out
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
+    assert warning in capsys.readouterr().out
+    (kept,) = [w for w in json.loads((tmp_path / "out" / "results.json").read_text())["warnings"]
+               if w["code"] == "lengths-in-mm"]
+    assert kept["position"] == 0 and f"warning: position 0: {kept['detail']}" == warning
+
+
+def test_a_small_mechanism_in_millimetres_is_given_away_by_its_crank_pins_speed():
+    """Lengths of 4.5 to 16.5 "m" are no machine's, but under what a press may measure: the crank pin's 135 m/s is."""
+    (detail,) = told(scaled(30.0, omega=-30.0))
+    assert detail.startswith("driver.length = 5.25 m at ω = 30 rad/s moves the crank pin A at 157.5 m/s")
+    assert "are the lengths in millimetres?" in detail and "rev/min are given as driver.rpm" in detail
+    assert "longer than any machine's link" not in detail
+
+
+def test_a_frame_far_larger_than_its_links_is_warned_of():
+    """A frame point typed in millimetres, the links in metres: a pivot 550 m away that no link reaches."""
+    data = scaled(1.0)
+    data["frame"]["points"]["D"] = [0.0, 550.0]
+    (detail,) = told(data)
+    assert detail.startswith("frame.points.D = [0, 550] lies 550 m from O, farther apart than any machine's pivots")
+
+
+@pytest.mark.parametrize(("factor", "omega"), [(1.0, None), (10.0, -5.0), (0.2, -300.0)])
+def test_machines_of_a_real_size_and_speed_are_not_warned_of(factor, omega):
+    """The ratchet as drawn, a 5.5 m press turning slowly, a small fast mechanism (crank pin at 10.5 m/s)."""
+    assert told(scaled(factor, omega)) == []
