@@ -20,7 +20,7 @@ from .errors import AssemblyError, SceneError, SingularPositionError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .groups.base import Group
-from .joint_friction import FrictionPair, friction_loads, friction_pairs
+from .joint_friction import FrictionPair, check_journals, friction_loads, friction_pairs
 from .kinematics import at
 from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
@@ -225,6 +225,7 @@ def analyse(scene: Scene) -> Analysis:
     stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
     friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()
+    check_journals(friction, mechanism, motion)
     loads, balance, with_friction = (), None, None
     if acting is not None:
         # A singular position's velocities and accelerations are not numbers: its loads and reactions come

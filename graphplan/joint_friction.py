@@ -29,6 +29,8 @@ from .forces import Load
 from .friction import friction_circle_radius, vee_groove_coefficient
 from .kinematics import Scalar, Vector
 from .loads import at_rest, sense_of_motion
+from .mechanism import Mechanism
+from .motion import Motion
 from .scene import FrictionSpec
 
 
@@ -89,6 +91,41 @@ def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[Fri
             found.append(FrictionPair(spec, pair.name, False, pair.joint, pair.source, pair.target,
                                       radius=float(friction_circle_radius(spec.f, spec.radius))))
     return tuple(found)
+
+
+def check_journals(friction: tuple[FrictionPair, ...], mechanism: Mechanism, motion: Motion) -> None:
+    """Refuse a turning pair's journal ``radius`` larger than every link the pair joins (a radius in millimetres
+    typed as metres): no pin is wider than the links it is on, and its friction circle ρ = f·r would change every
+    reaction, the efficiency and the drawings' scale.  A journal wider than one of its links, an eccentric's sheave
+    on its short crank, is built; one wider than all of them is not."""
+    for pair in friction:
+        if pair.sliding:
+            continue
+        spans = [span for link in (pair.source, pair.target)
+                 if (span := _longest_span(mechanism, motion, link)) is not None]
+        if not spans or pair.spec.radius <= max(length for _, length, _ in spans):
+            continue
+        radius = pair.spec.radius
+        joined = "; ".join(f"{'the frame' if link == mechanism.scene.frame_link else f'link {link}'} {between}: "
+                           f"{length:.4g} m" for link, length, between in spans)
+        raise SceneError(f"{pair.spec.where}.radius", (
+            f"a journal of radius {radius:g} m at {pair.joint} is larger than the links it joins ({joined}): a pin "
+            f"cannot be wider than the links it is on, and its friction circle ρ = {pair.radius:.4g} m would change "
+            f"every reaction and the efficiency; the radius is in metres (in millimetres? {radius:g} mm is "
+            f"{radius / 1000.0:g} m)"), radius)
+
+
+def _longest_span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[int, float, str] | None:
+    """The largest distance between two points of ``link`` (the same at every position: take the first), with the
+    two points, or None for a link with one point (a slider's block)."""
+    names = sorted(name for name in mechanism.fixed_on.get(link, ()) if name in motion.points)
+    where = {name: complex(*motion.point(name).r[0]) for name in names}
+    spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
+             if np.isfinite(abs(where[a] - where[b]))]
+    if not spans:
+        return None
+    length, between = max(spans)
+    return link, length, between
 
 
 def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping[str, Vector]) -> tuple[Load, ...]:

@@ -249,11 +249,39 @@ def test_efficiency_is_one_without_friction_and_below_one_with_it():
     ('joint = "O"\nf = 0.1\nradius = 0.01\ngroove_half_angle = 30', "friction[0].groove_half_angle", "turns: a groove"),
     ('joint = "B"\nlinks = [1, 4]\nf = 0.1\ngroove_half_angle = 95', "friction[0].groove_half_angle",
      "must be at most 90 degrees: the angle between a flank and the groove's plane of symmetry, 90 for a flat guide"),
+    ('joint = "O"\nf = 0.1\nradius = 30.0', "friction[0].radius",
+     ("a journal of radius 30 m at O is larger than the links it joins (link 2 A–O: 0.1 m): a pin cannot be wider "
+      "than the links it is on, and its friction circle ρ = 3 m would change every reaction and the efficiency; the "
+      "radius is in metres (in millimetres? 30 mm is 0.03 m)")),
+    ('joint = "B"\nlinks = [3, 4]\nf = 0.1\nradius = 0.5', "friction[0].radius",
+     "a journal of radius 0.5 m at B is larger than the links it joins (link 3 A–B: 0.4 m)"),
 ])
 def test_bad_friction_entries_name_their_key(entry, where, message):
     with pytest.raises(graphplan.SceneError) as raised:
         analyse(slider_crank("[[friction]]\n" + entry))
     assert str(raised.value).startswith(where) and message in str(raised.value)
+
+
+def test_a_journal_in_millimetres_is_refused_before_anything_is_written(tmp_path, capsys):
+    """A crank-rocker's frame journal typed as 30 (mm) was taken for 30 m: ρ = 3 m round a 0.175 m crank, η = 0.035
+    and every drawing rescaled, and neither check nor run said a word."""
+    from graphplan.cli import main
+
+    text = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "journal_in_mm.toml"
+    scene.write_text(text + '[[friction]]\njoint = "O"\nf = 0.1\nradius = 30.0\n', encoding="utf-8")
+    for command in (["check", str(scene)], ["run", str(scene), "--out", str(tmp_path / "out")]):
+        assert main(command) == 2
+        assert ("graphplan: error: friction[0].radius: a journal of radius 30 m at O is larger than the links it "
+                "joins (the frame C–O: 0.55 m; link 2 A–O: 0.175 m)") in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_journal_wider_than_one_of_its_links_is_an_eccentric_and_is_taken():
+    """An eccentric's sheave is wider than its crank is long: a journal is refused only where it is wider than
+    every link it joins."""
+    analysis = analyse(slider_crank('[[friction]]\njoint = "A"\nf = 0.1\nradius = 0.2'))
+    assert RADIUS < 0.2 < ROD and analysis.friction[0].radius == pytest.approx(0.02)
 
 
 def test_efficiency_is_not_defined_where_friction_turns_the_power_flow_round():
