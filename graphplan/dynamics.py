@@ -128,6 +128,9 @@ class EquivalentModel:
     cyclic
         True when the samples close a cycle (a crank turning round, a load diagram's turn); False
         when they run once over a rocking crank's swing or a slider's travel.
+    driving_loads, resisting_loads
+        The scene's loads on each side by their key paths (``loads[1]``), for the advice where the work does not
+        balance.
     """
 
     kind: str
@@ -144,6 +147,8 @@ class EquivalentModel:
     constant: str
     plans: tuple[PlanReduction, ...] = ()
     cyclic: bool = True
+    driving_loads: tuple[str, ...] = ()
+    resisting_loads: tuple[str, ...] = ()
 
     @property
     def turning(self) -> bool:
@@ -250,7 +255,9 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
     return EquivalentModel(kind=driver.kind, link=driver.link, speed=speed, sense=sense, driver=values,
                            coordinate=coordinate, inertia=inertia, inertia_slope=slope,
                            link_inertia=MappingProxyType(shares), driving=driving, resisting=resisting,
-                           constant=chosen, plans=tuple(plans), cyclic=driver.cyclic)
+                           constant=chosen, plans=tuple(plans), cyclic=driver.cyclic,
+                           driving_loads=tuple(load.where for load in mechanism.scene.loads if not load.resisting),
+                           resisting_loads=tuple(load.where for load in mechanism.scene.loads if load.resisting))
 
 
 def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,

@@ -251,6 +251,29 @@ class Flywheel:
         return int(np.argmin(self.omega[:-1]))
 
 
+def _balancing_advice(model: EquivalentModel) -> str:
+    """What balances the cycle's work: a side left out taken constant, or where the scene gives both sides (a
+    constant moment replaces a side, so ``constant`` has none to replace), a side left out or the moment that
+    balances them added on the driving link."""
+    driving, resisting = model.driving_loads, model.resisting_loads
+    absent = [side for side, given in (("driving", driving), ("resisting", resisting)) if not given]
+    if absent:
+        return f'take the {absent[0]} moment constant (constant = "{absent[0]}")'
+    # The mean moment that makes up the work left over: a driving one in the sense of the crank's turn where the
+    # resistance takes more, a resisting one where the driving loads give more.
+    moment = abs(model.imbalance) / float(model.coordinate[-1] - model.coordinate[0])
+    if model.imbalance < 0:
+        added = f"value = {model.sense * moment:.7g} (N·m, in the sense link {model.link} turns)"
+        dropped, kept, both = "driving", "resistance", ", ".join(driving)
+    else:
+        added = f"value = {moment:.7g}, resisting = true"
+        dropped, kept, both = "resisting", "driving loads", ", ".join(resisting)
+    return ('a constant moment (constant = "driving" or "resisting") replaces a side the scene leaves out, and it '
+            f"gives both (driving {', '.join(driving)}; resisting {', '.join(resisting)}): leave out the {dropped} "
+            f"loads ({both}) for a constant {dropped} moment to balance the {kept}, or add the moment that balances "
+            f'the work on the driving link: [[loads]] kind = "moment", link = {model.link}, {added}')
+
+
 def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None = None, *,
                  shaft_rpm: float | None = None) -> Flywheel:
     """The flywheel that keeps a turning equivalent model within δ at ``omega_mean`` (default: the driver's |ω1|).
@@ -267,7 +290,7 @@ def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None 
     work = max(float(np.max(np.abs(model.driving_work))), float(np.max(np.abs(model.resisting_work))), 1e-300)
     if abs(model.imbalance) > _BALANCE * work:
         raise ValueError(f"the driving and resisting work differ by {model.imbalance:.6g} J over the cycle, so the "
-                         f"motion is not periodic; take one moment constant (constant='driving' or 'resisting')")
+                         f"motion is not periodic; {_balancing_advice(model)}")
     delta_w_max = float(np.max(energy) - np.min(energy))
     approximate = flywheel_inertia(delta_w_max, omega_mean, delta, model.mean_inertia)
 

@@ -21,6 +21,7 @@ import functools
 import itertools
 import json
 import math
+import re
 from pathlib import Path
 from types import MappingProxyType
 
@@ -33,7 +34,6 @@ from graphplan.analysis import analyse
 from graphplan.dynamics import equivalent_model_of
 from graphplan.errors import SceneError
 from graphplan.flywheel import (
-
     dynamics_results,
     fluctuation,
     fluctuation_from_areas,
@@ -313,3 +313,37 @@ def test_results_carry_the_contract_keys():
     bare = dynamics_results(model_of("slider_driven"))
     assert bare["equivalent_link"] == "translating" and "flywheel_inertia" not in bare
     assert len(bare["displacement"]) == len(bare["reduced_inertia"])
+
+
+@pytest.mark.parametrize("driving", [
+    'kind = "force"\nlink = 3\npoint = "E"\nvalue = 300.0\nangle = 200.0',  # no work over the turn: too little
+    'kind = "moment"\nlink = 2\nvalue = -1000.0',                           # 6283 J a turn: too much
+])
+def test_work_that_does_not_balance_is_told_a_way_out_the_program_then_takes(tmp_path, capsys, driving):
+    """A scene with driving and resisting loads whose work over the cycle differs was told "take one moment
+    constant (constant='driving' or 'resisting')", and either was then refused: it gives both sides.  The way out
+    it is told now, leaving a side out or adding the moment that balances the work, is checked as it says."""
+    from graphplan.cli import main
+
+    text = (Path("fixtures") / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    text += f"\n[[loads]]\n{driving}\n\n[dynamics]\ndelta = 0.05\n"
+    scene = tmp_path / "unbalanced.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    told = capsys.readouterr().err
+    assert "so the motion is not periodic; a constant moment" in told and "gives both (driving loads[1]; resisting " \
+        "loads[0])" in told
+    added = re.search(r'\[\[loads\]\] kind = "moment", link = 2, (value = \S+?)(?:,| \(N·m)( resisting = true)?',
+                      told)
+    too_little = "force" in driving
+    assert bool(added[2]) is not too_little
+    dropped = "loads[1]" if too_little else "loads[0]"
+    assert f"leave out the {'driving' if too_little else 'resisting'} loads ({dropped})" in told
+    scene.write_text(text.replace("\n[dynamics]", f"\n[[loads]]\nkind = \"moment\"\nlink = 2\n{added[1]}\n"
+                                  f"{'resisting = true' if added[2] else ''}\n\n[dynamics]"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+    first, second = text.index("[[loads]]"), text.rindex("[[loads]]")
+    left = text[:second] + text[text.index("[dynamics]"):] if too_little else \
+        text[:first] + text[text.index("[positions]"):]
+    scene.write_text(left, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0, capsys.readouterr().err
