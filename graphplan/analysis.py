@@ -9,7 +9,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -171,7 +171,8 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
                         Group.reach_ends)
         # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
         advice = (_reach_advice(driver.link, ranges, False, stopping, "the values") if first is not None
-                  else _reach_advice(driver.link, ranges, driver.cyclic, stopping))
+                  else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
+                                     runs=functools.partial(_swing_that_runs, mechanism.scene)))
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
 
 
@@ -182,9 +183,11 @@ def _inward(end: float, rounding) -> str:
 
 
 def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool,
-                  stopping: str = Group.reach_ends, kept: str = "driver.swing") -> str:
-    """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try;
-    ``stopping`` says what stops it at the ends, ``kept`` what is to keep within them."""
+                  stopping: str = Group.reach_ends, kept: str = "driver.swing",
+                  runs: Callable[[float, float], tuple[int, int] | None] | None = None) -> str:
+    """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try (of
+    ``runs``, the swing within a range that the run takes, where given); ``stopping`` says what stops it at the
+    ends, ``kept`` what is to keep within them."""
     if not ranges:
         return f"the mechanism assembles at no angle of link {link}: check the lengths"
     # Rounded inward: a swing to an end as written is then inside the reach (70.49° of a reach to 70.4907° was
@@ -194,10 +197,45 @@ def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bo
     if not cyclic:
         return f"{told}: keep {kept} within one of these"
     low, high = max(ranges, key=lambda span: span[1] - span[0])
-    # A degree short of each end, where the velocities are determined.
-    first, last = math.ceil(math.degrees(low) + 1.0), math.floor(math.degrees(high) - 1.0)
-    example = f", e.g. driver.swing = [{first}, {last}]" if last > first else ""
+    if runs is not None:
+        swing = runs(low, high)
+    else:
+        # A degree short of each end, where the velocities are determined.
+        first, last = math.ceil(math.degrees(low) + 1.0), math.floor(math.degrees(high) - 1.0)
+        swing = (first, last) if last > first else None
+    example = f", e.g. driver.swing = [{swing[0]}, {swing[1]}]" if swing is not None else ""
     return f"{told}; since it cannot turn round, drive it as a rocker: driver.swing = [from, to] in degrees{example}"
+
+
+# How far (degrees) inside the ends of a crank's reach the swing it is advised to rock over keeps, tried in turn:
+# a degree where the velocities are determined, and further in where the accelerations a toggle at an end drives up
+# are more than the plans or the kinematic diagrams can draw (a swing a degree short of its ends was refused at once).
+SWING_MARGINS_DEG = (1.0, 2.0, 3.0, 5.0, 8.0, 13.0, 21.0, 34.0)
+
+
+def _swing_that_runs(scene: Scene, low: float, high: float) -> tuple[int, int] | None:
+    """The swing (whole degrees) within the reach from ``low`` to ``high`` (rad), nearest its ends, that the run
+    takes: the scene rocking over it is analysed and checked for everything a run would refuse, as ``check`` does;
+    None where none of :data:`SWING_MARGINS_DEG` gives one."""
+    # The run's refusals belong to the deliverables, a later stage: imported only on this path of a refusal.
+    from .deliverables import chosen, refuse_as_run_would
+    from .errors import GraphplanError
+
+    driver = scene.driver
+    for margin in SWING_MARGINS_DEG:
+        first, last = math.ceil(math.degrees(low) + margin), math.floor(math.degrees(high) - margin)
+        if last <= first:
+            return None
+        # A rocking crank takes no positions.start and no flywheel: as the user who rocks it leaves them out.
+        rocking = replace(scene, driver=replace(driver, swing=(math.radians(first), math.radians(last))),
+                          positions=replace(scene.positions, start=0.0), dynamics=None)
+        try:
+            analysis = analyse(rocking)
+            refuse_as_run_would(rocking, analysis, chosen(rocking, analysis))
+        except GraphplanError:
+            continue
+        return first, last
+    return None
 
 
 def analyse(scene: Scene) -> Analysis:

@@ -248,3 +248,56 @@ def test_the_kinematic_diagrams_run_over_the_swing_as_worked_by_hand(text):
     backward = of_analysis(analyse(loads(changed(changed(text, *WORKING), r"^swing .*$", "swing = [65.0, 20.0]"))))
     assert backward.numbers == tuple(range(7, 0, -1))
     assert backward.s == pytest.approx(found.s, abs=1e-12)
+
+
+# A class III six-bar whose crank is too long to turn round (a student's, 0.075 m): its reach ends where the triad
+# stands in a limit position, and a degree inside it the acceleration of link 5 still runs to −162 452 rad/s².
+TRIAD_TOO_LONG_A_CRANK = """
+[scene]
+title = "Six-bar with a class III triad"
+locale = "en"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.30, -0.04], E = [0.02, 0.42] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.075
+omega = -15.0
+epsilon = 5.0
+[[groups]]
+kind = "triad"
+links = [3, 4, 5, 6]
+joints = ["A", "B", "C", "D", "E", "F"]
+lengths = [0.163, 0.18, 0.248]
+sides = [0.141, 0.149, 0.136]
+near = { B = [0.16, 0.12], D = [0.30, 0.14], F = [0.20, 0.25] }
+[positions]
+count = 12
+start = "extreme"
+number_from = 1
+working = { link = 5, sense = "ccw" }
+plans = [3, 9]
+[drawing]
+velocity_pole = 100.0
+acceleration_pole = 100.0
+"""
+
+
+def test_the_swing_advised_is_one_the_next_check_takes(tmp_path, capsys):
+    """The advice gave driver.swing = [85, 392], a degree inside the reach, and the next check refused it: the
+    kinematic diagram of link 5 would be 2667 mm tall near its first position.  The swing advised is now one the
+    program takes when it is fed back (with positions.start left out, as a rocking crank has none)."""
+    scene = tmp_path / "too_long_a_crank.toml"
+    scene.write_text(TRIAD_TOO_LONG_A_CRANK, encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    told = capsys.readouterr().err
+    assert "link 2 reaches only from 83.86° to 393.46°" in told
+    first, last = map(int, re.search(r"e\.g\. driver\.swing = \[(-?\d+), (-?\d+)\]", told).groups())
+    assert 83.86 < first < last < 393.46
+    rocking = TRIAD_TOO_LONG_A_CRANK.replace('start = "extreme"\n', "").replace(
+        "epsilon = 5.0\n", f"epsilon = 5.0\nswing = [{first}, {last}]\n")
+    scene.write_text(rocking, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0, capsys.readouterr().err
