@@ -16,7 +16,7 @@ import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
 from .cycle_work import CycleWork, cycle_work
-from .errors import AssemblyError, SceneError, SingularPositionError
+from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .groups.base import Group
@@ -167,6 +167,8 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
         ranges = reach(mechanism, taken)
         if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
             raise
+        if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
+            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
         stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
                         Group.reach_ends)
         # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
@@ -174,6 +176,39 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
                   else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
                                      runs=functools.partial(_swing_that_runs, mechanism.scene)))
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
+
+
+def _mirrored_sketch(mechanism: Mechanism) -> str | None:
+    """Where a mechanism assembles at no angle of its crank, but would with a group's sketched orientation turned
+    over (a triad's corners sketched running the other way round): what to sketch instead.  None where that is
+    not so, and the lengths are to check."""
+    scene = mechanism.scene
+    for n, group in enumerate(scene.groups):
+        turned = group.mirrored()
+        if turned is None:
+            continue
+        other = replace(scene, groups=(*scene.groups[:n], turned, *scene.groups[n + 1:]))
+        try:
+            ranges = reach(build(other))
+        except GraphplanError:
+            continue
+        if not ranges:
+            continue
+        sketch, mirrored = dict(group.near), dict(turned.near)
+        b, d, f = group.inner_joints
+        running = "counter-clockwise" if ((sketch[d] - sketch[b]).conjugate() * (sketch[f] - sketch[b])).imag > 0 \
+            else "clockwise"
+        other_way = {"clockwise": "counter-clockwise", "counter-clockwise": "clockwise"}[running]
+        where = mirrored[f]
+        reaches = "" if ranges == ((0.0, 2.0 * math.pi),) else " (" + "; ".join(
+            f"link {mechanism.driver.link} then reaches from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°"
+            for low, high in ranges) + ")"
+        return (f"the mechanism assembles at no angle of link {mechanism.driver.link} as sketched: {group.where}.near "
+                f"runs {b}, {d}, {f} {running} round the ternary link {group.ternary}, and its lengths close it only "
+                f"the other way round, {other_way}: the lengths are right, the sketch is mirrored; sketch {f} on the "
+                f"other side of {b}{d}, e.g. {f} = [{where.real:.4g}, {where.imag:.4g}] (its mirror image across "
+                f"{b}{d}){reaches}")
+    return None
 
 
 def _inward(end: float, rounding) -> str:
@@ -219,7 +254,6 @@ def _swing_that_runs(scene: Scene, low: float, high: float) -> tuple[int, int] |
     None where none of :data:`SWING_MARGINS_DEG` gives one."""
     # The run's refusals belong to the deliverables, a later stage: imported only on this path of a refusal.
     from .deliverables import chosen, refuse_as_run_would
-    from .errors import GraphplanError
 
     driver = scene.driver
     for margin in SWING_MARGINS_DEG:

@@ -233,3 +233,53 @@ def test_the_note_reads_each_binary_links_tangential_part_off_the_plan():
             expected.add((inner, outer, abs(analysis.motion.link(link).epsilon[pp.index]) * arm))
     for inner, outer, value, _ in rows:
         assert any(i == inner and o == outer and math.isclose(float(value), v, rel_tol=1e-4) for i, o, v in expected)
+
+
+# A student's class III six-bar (its crank 0.05 m turns round), with F sketched on the other side of BD: the sketch
+# runs B, D, F clockwise round link 6, and these lengths close the ternary link only counter-clockwise.
+MIRRORED_SKETCH = """
+[scene]
+title = "Six-bar with a class III triad, sketched mirrored"
+locale = "en"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.30, -0.04], E = [0.02, 0.42] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.05
+omega = -15.0
+[[groups]]
+kind = "triad"
+links = [3, 4, 5, 6]
+joints = ["A", "B", "C", "D", "E", "F"]
+lengths = [0.163, 0.18, 0.248]
+sides = [0.141, 0.149, 0.136]
+near = { B = [0.16, 0.12], D = [0.30, 0.14], F = [0.24, 0.03] }
+[positions]
+count = 12
+"""
+
+
+def test_a_mirrored_sketch_is_told_so_not_to_check_the_lengths(tmp_path, capsys):
+    """The lengths are right, and the advice was "check the lengths": it is the sketch that runs the other way."""
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(MIRRORED_SKETCH))
+    message = str(raised.value)
+    assert "check the lengths" not in message
+    assert ("the mechanism assembles at no angle of link 2 as sketched: groups[0].near runs B, D, F clockwise round "
+            "the ternary link 6, and its lengths close it only the other way round, counter-clockwise: the lengths are "
+            "right, the sketch is mirrored; sketch F on the other side of BD, e.g. F = [") in message
+    x, y = map(float, re.search(r"e\.g\. F = \[([-\d.]+), ([-\d.]+)\]", message).groups())
+    scene = tmp_path / "sketched_again.toml"
+    scene.write_text(MIRRORED_SKETCH.replace("F = [0.24, 0.03]", f"F = [{x}, {y}]"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+
+
+def test_lengths_that_close_the_triad_neither_way_are_still_to_check():
+    short = MIRRORED_SKETCH.replace("lengths = [0.163, 0.18, 0.248]", "lengths = [0.063, 0.08, 0.048]")
+    with pytest.raises(AssemblyError) as raised:
+        analyse(loads(short))
+    assert "the mechanism assembles at no angle of link 2: check the lengths" in str(raised.value)

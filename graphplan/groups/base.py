@@ -171,6 +171,11 @@ class Group:
         """Its lower pairs: 3n/2 for an Assur group of n links (W = 3n − 2·p5 = 0)."""
         return 3 * self.link_count // 2
 
+    def mirrored(self) -> Group | None:
+        """The group with the orientation its sketch fixes turned over (a triad's ``near``: which way round its
+        ternary link's corners run), for the advice where it assembles nowhere; None where no sketch fixes one."""
+        return None
+
     # Membership, used to check the structure and to place named points.
     def known_joints(self) -> tuple[str, ...]:
         """Joints that must be known before this group is solved."""

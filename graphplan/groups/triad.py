@@ -385,6 +385,15 @@ class Triad(Group):
                 poses.append(Pose(complex(b[0]), float(np.angle(rotation[0]))))
         return poses
 
+    def mirrored(self) -> Triad:
+        """The triad with its sketch's third inner joint mirrored across the line of the first two: its ternary
+        link's corners then run the other way round."""
+        near = dict(self.near)
+        b, d, _ = (near[name] for name in self.inner_joints)
+        return replace(self, near=tuple((name, b + (d - b) * ((point - b) / (d - b)).conjugate())
+                                        if name == self.inner_joints[2] else (name, point)
+                                        for name, point in self.near))
+
     def with_branch(self, context: Context) -> TriadBranch:
         """The assembly nearest the sketch, its triangle turning the way the sketch's does.
 
