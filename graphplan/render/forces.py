@@ -36,6 +36,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
+import numpy as np
 import shapely
 from shapely.geometry import LineString, MultiPoint, Polygon
 from shapely.geometry import Point as ShapelyPoint
@@ -1082,7 +1083,8 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placeme
     would leave that one no room beside it, so the anchors count as points.
     """
     # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
-    spots = list(shapely.buffer(shapely.points([anchor.at for anchor in anchors]), 0.8, quad_segs=16))
+    centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
+    spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
     return place_labels(anchors, obstacles_of(figure) + spots)
 
 
