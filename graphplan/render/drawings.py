@@ -371,7 +371,8 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
 
     ``with_friction`` shows the force analysis with the pairs' friction, its
     friction circles and its lever, the driving link's caption giving the
-    balancing load without friction and the efficiency.  Raises :class:`ValueError` for a
+    balancing load without friction and the efficiency; without it, the
+    sheet of a position the friction locks says so under the driving link.  Raises :class:`ValueError` for a
     position without a force analysis (``plan_position.forces`` is None), or
     without one with friction that settled when it is asked for.
     """
@@ -380,7 +381,9 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
     text = strings(analysis.scene.locale)
     velocity = plan_position.velocity
     forces, lever, title = plan_position.forces, plan_position.lever, "tb_sheet_forces_position"
-    friction, ideal, eta = (), None, None
+    friction, ideal, eta, locked = (), None, None, None
+    if not with_friction and plan_position.with_friction is not None and plan_position.with_friction.locked:
+        locked = plan_position.with_friction.iterations
     if with_friction:
         rubbing = plan_position.with_friction
         if rubbing is None or rubbing.locked:
@@ -395,5 +398,5 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         lever=lever, velocity=velocity, length_scale=length_scale(analysis),
         # As on the plan sheets, every word is the locale's: the scene's title stays off the sheet.
         title=text[title].format(number=plan_position.number), text=text, friction=friction,
-        without_friction=ideal, efficiency=eta, lever_scale=force_layout.enlarged_lever_scale(velocity),
+        without_friction=ideal, efficiency=eta, locked_with_friction=locked, lever_scale=force_layout.enlarged_lever_scale(velocity),
         velocity_scale=text["velocity_scale"].format(value=scale_factor(velocity.scale)))

@@ -346,14 +346,16 @@ _FOUND = re.compile(r"= 0,\s+(\S+ = \S+(?: \S+)?)$")
 
 def _unrepeated(caption: Sequence[str]) -> list[str]:
     """``caption`` without the lines that give nothing but a value an equation above already found: the
-    crank's "balancing moment Mb = 96.55 N·m (force polygons)" under its ΣMO(2) that ends "Mb = 96.55 N·m"."""
+    crank's "balancing moment Mb = 96.55 N·m (force polygons)" under its ΣMO(2) that ends "Mb = 96.55 N·m".
+    A line that goes on with a number of its own is kept: the sheet with friction's "Mb = −2.00 N·m after 10
+    solves; without friction 6.48 N·m: …" gives the load without friction, though no "=" is left in it."""
     found: list[str] = []
     kept = []
     for line in caption:
         rest = line
         for value in found:
             rest = rest.replace(value, "")
-        if rest != line and "=" not in rest:
+        if rest != line and "=" not in rest and not any(character.isdigit() for character in rest):
             continue
         kept.append(line)
         if (match := _FOUND.search(line)) is not None:
