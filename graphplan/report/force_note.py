@@ -10,11 +10,8 @@ plan letters it shares; the tables are those ``forces.md`` prints (:mod:`graphpl
 from __future__ import annotations
 
 import math
-from collections import Counter
 from collections.abc import Mapping
 from typing import Protocol
-
-import numpy as np
 
 from ..analysis import Analysis, PlanPosition
 from ..mechanism import Mechanism
@@ -114,31 +111,25 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
 def _friction_loads(note: Writer, plan: PlanPosition) -> None:
     """Each pair's friction load worked out at the settled reactions, and the lever that checks them."""
     text, rubbing = note.text, plan.with_friction
-    acting = {load.name: load for load in plan.friction_loads}
-    at_joint = Counter(pair.joint for pair in note.analysis.friction)
     lines = []
-    for pair in note.analysis.friction:
-        # Two pairs with friction at one joint (a block's slide and its pin) are told apart by their links.
-        where = pair.joint if at_joint[pair.joint] == 1 else f"{pair.source}{pair.target}"
-        name = f"{'Ff' if pair.sliding else 'Mf'}{pair.source}{pair.target}"
-        load = acting.get(name)
-        if load is not None and not np.any(load.force if pair.sliding else load.moment):
+    for row in force_report.friction_load_rows(note.analysis, plan):
+        pair, where, name = row.pair, row.where, row.name
+        if not row.moving:
             moved = "note_friction_not_sliding" if pair.sliding else "note_friction_not_turning"
             lines.append(f"- {note.t(moved, name=name, first=pair.source, second=pair.target)}")
             continue
-        reaction = abs(rubbing.reactions[pair.reaction].force)
         if pair.sliding:
             theta = pair.spec.groove_half_angle
             reduced = "" if theta is None else (
                 f" = f/sin θ = {note.n(pair.spec.f)}/sin {note.n(math.degrees(theta))}°")
-            lines.append(f"- f′{where}{reduced} = {note.n(pair.coefficient)}{text['semicolon']}{name} = "
-                         f"f′{where}·{pair.reaction} = {note.product(note.n(pair.coefficient), note.n(reaction))}"
-                         f" = {note.n(pair.coefficient * reaction)} {text['newton']}")
+            lines.append(f"- f′{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
+                         f"f′{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))}"
+                         f" = {note.n(row.value)} {text['newton']}")
         else:
             lines.append(f"- ρ{where} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "
-                         f"{note.n(pair.radius)} {text['unit_m']}{text['semicolon']}{name} = "
-                         f"ρ{where}·{pair.reaction} = {note.product(note.n(pair.radius), note.n(reaction))} = "
-                         f"{note.n(pair.radius * reaction)} {text['newton_metre']}")
+                         f"{note.n(row.factor)} {text['unit_m']}{text['semicolon']}{name} = "
+                         f"ρ{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))} = "
+                         f"{note.n(row.value)} {text['newton_metre']}")
     note.para(note.t("note_friction_loads"), *lines)
     lever = plan.lever_with_friction
     name, unit = force_report.balancing_symbol(note.analysis)

@@ -4,7 +4,8 @@ Per plan position: the initial data of the force analysis (m, aS, Fu, J, ε,
 Mu, G of every link, read off the plans), the moment equations with their
 arms, the reactions from the polygons against the linear system, the
 balancing load four ways (polygons, lever, linear system, power), and with
-friction its iterations and the efficiency.  Then the balancing load and the
+friction its iterations and the efficiency, the reactions with friction (the polygons against the linear
+system) and each pair's friction load (Mf = ρ·|R|, Ff = f′·|R|).  Then the balancing load and the
 efficiency at every position of the cycle, and over the whole cycle: the driver's works with and without
 friction and their ratio.
 
@@ -18,6 +19,7 @@ from __future__ import annotations
 
 import cmath
 import math
+from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -26,6 +28,7 @@ import numpy as np
 from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
+from ..joint_friction import FrictionPair
 from ..loads import motion_state
 from ..locale import strings
 from ..render.numerals import POWER_OF_TEN, power_of_ten
@@ -218,11 +221,15 @@ def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
 
 
 def reaction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    return _reaction_table(analysis, reaction_rows(analysis, plan), mark)
+
+
+def _reaction_table(analysis: Analysis, rows: list[tuple[str, complex, complex]], mark: str) -> list[str]:
     text = strings(analysis.scene.locale)
     header = (f"| {text['column_reaction']} | {text['column_polygons']}, {text['newton']} ∠ | "
               f"{text['column_linear']}, {text['newton']} ∠ | δ, % |")
     lines = [header, "|---|---:|---:|---:|"]
-    for name, drawn, solved in reaction_rows(analysis, plan):
+    for name, drawn, solved in rows:
         lines.append(f"| {name} | {polar(drawn, mark)} | {polar(solved, mark)} | "
                      f"{error_percent(abs(solved), abs(drawn), mark) if math.isfinite(abs(solved)) else '—'} |")
     return lines
@@ -250,6 +257,87 @@ def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
         analysis.mechanism, text, plan.forces.balancing, rubbing.balancing,
         write=lambda value: number(value, 6, mark), iterations=rubbing.iterations,
         written_efficiency=number(float(eta), 4, mark))]
+
+
+@dataclass(frozen=True)
+class FrictionLoad:
+    """A pair's friction load at the settled reactions: ``Mf23 = ρ·|R23|`` of a journal, ``Ff16 = f′·|R16|`` of a
+    slide, against the pair's relative motion.
+
+    ``where`` names the pair in ρ and f′: its joint (ρO, f′E), or its links where two pairs with friction share
+    the joint (ρ23 and f′43 at a block's pin in its slot); ``reaction`` is |R| of the pair (N); ``moving`` is
+    false where the pair's links do not move relative to each other, and its load is then 0.
+    """
+
+    pair: FrictionPair
+    where: str
+    name: str
+    reaction: float
+    moving: bool = True
+
+    @property
+    def factor(self) -> float:
+        """ρ of a journal (m), f′ of a slide."""
+        return self.pair.coefficient if self.pair.sliding else self.pair.radius
+
+    @property
+    def value(self) -> float:
+        """Mf (N·m) or Ff (N): ρ·|R| or f′·|R|, 0 where the pair does not move."""
+        return self.factor * self.reaction if self.moving else 0.0
+
+
+def friction_load_rows(analysis: Analysis, plan: PlanPosition) -> list[FrictionLoad]:
+    """Each pair's friction load at the settled reactions of a plan position, in the scene's order of the pairs;
+    none where the position locks."""
+    rubbing = plan.with_friction
+    if rubbing is None or rubbing.locked:
+        return []
+    acting = {load.name: load for load in plan.friction_loads}
+    at_joint = Counter(pair.joint for pair in analysis.friction)
+    rows = []
+    for pair in analysis.friction:
+        # Two pairs with friction at one joint (a block's slide and its pin) are told apart by their links.
+        where = pair.joint if at_joint[pair.joint] == 1 else f"{pair.source}{pair.target}"
+        name = f"{'Ff' if pair.sliding else 'Mf'}{pair.source}{pair.target}"
+        load = acting.get(name)
+        moving = load is None or bool(np.any(load.force if pair.sliding else load.moment))
+        rows.append(FrictionLoad(pair, where, name, abs(rubbing.reactions[pair.reaction].force), moving))
+    return rows
+
+
+def friction_reaction_rows(analysis: Analysis, plan: PlanPosition) -> list[tuple[str, complex, complex]]:
+    """Every reaction with friction as (name, from the polygons with friction, from the linear system with
+    friction); none where the position locks."""
+    rubbing, exact = plan.with_friction, analysis.with_friction
+    if rubbing is None or rubbing.locked:
+        return []
+    return [(reaction.name, reaction.force,
+             complex(exact.reaction(reaction.name).force[plan.index]) if exact is not None else complex(math.nan))
+            for reaction in rubbing.reactions.values()]
+
+
+def friction_reaction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    """The reactions with friction, as :func:`reaction_lines` tabulates those without."""
+    return _reaction_table(analysis, friction_reaction_rows(analysis, plan), mark)
+
+
+def friction_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    """The friction loads of :func:`friction_load_rows` as a table: the pair, its ρ or f′, its reaction, the load."""
+    text = strings(analysis.scene.locale)
+    lines = [(f"| {text['column_pair']} | {text['column_friction_factor']} | {text['column_reaction']}, "
+              f"{text['newton']} | {text['column_friction_load']} |"), "|---|---:|---:|---:|"]
+    for row in friction_load_rows(analysis, plan):
+        pair = row.pair
+        if pair.sliding:
+            factor = f"f′{row.where} = {number(row.factor, mark=mark)}"
+            unit = text["newton"]
+        else:
+            factor = f"ρ{row.where} = {number(row.factor, mark=mark)} {text['unit_m']}"
+            unit = text["newton_metre"]
+        lines.append(f"| {pair.joint} ({pair.source}–{pair.target}) | {factor} | "
+                     f"{pair.reaction} = {number(row.reaction, mark=mark)} | "
+                     f"{row.name} = {number(row.value, mark=mark)} {unit} |")
+    return lines
 
 
 def friction_lever_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
@@ -387,6 +475,9 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
               "", f"### {balancing}", "", *balancing_lines(analysis, plan, mark)]
     if plan.with_friction is not None:
         lines += ["", f"### {text['forces_friction']}", "", *friction_lines(analysis, plan, mark)]
+        if not plan.with_friction.locked:
+            lines += ["", text["forces_friction_reactions"], "", *friction_reaction_lines(analysis, plan, mark),
+                      "", text["note_friction_loads"], "", *friction_load_lines(analysis, plan, mark)]
         lever = friction_lever_lines(analysis, plan, mark)
         lines += ["", *lever] if lever else []
     return lines + [""]
@@ -402,6 +493,7 @@ def _polygon_scales(forces: ForcePlan, text: Mapping[str, str], mark: str) -> st
 
 __all__ = [
     "METHODS",
+    "FrictionLoad",
     "LinkData",
     "balancing_lines",
     "balancing_rows",
@@ -414,6 +506,10 @@ __all__ = [
     "external_loads",
     "friction_lever_lines",
     "friction_lines",
+    "friction_load_lines",
+    "friction_load_rows",
+    "friction_reaction_lines",
+    "friction_reaction_rows",
     "initial_data",
     "initial_data_lines",
     "markdown",
