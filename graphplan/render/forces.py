@@ -57,7 +57,7 @@ from ..wording import balancing_symbol, friction_summary
 from .force_rows import Drawing, Heading, Rows
 from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels, text_box
 from .linkage import link_outlines, outline_points
-from .numerals import significant
+from .numerals import short, significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
 from .plans import _coincident as coincident_letters
 from .primitives import (
@@ -327,6 +327,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption += [line for equation in group.projections if (line := _projection(sheet, equation))]
     caption += equations
     caption += circle_caption
+    caption += _slide_friction(sheet, group)
     if is_driver:
         caption.append(_balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
         # Under the load it balances, so that a sheet set part by part keeps it.
@@ -653,6 +654,39 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
     if any(pair.radius / sheet.length_scale < LEAST_FRICTION_CIRCLE_MM for pair in journals):
         caption.append(text["friction_circles_enlarged"].format(least=f"{LEAST_FRICTION_CIRCLE_MM:g}"))
     return items, anchors, caption
+
+
+def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
+    """The caption of the group's slides with friction: each one's coefficient f (f′ = f/sin θ in a V-guide), the
+    friction angle φ = arctan f by which its reaction and friction force lean together, and its friction force
+    Ff at the settled reactions, the load the drawing shows as an arrow of its own."""
+    text = sheet.text
+    values = []
+    for pair in sorted((pair for pair in sheet.friction if pair.sliding
+                        and (pair.source in group.links or pair.target in group.links)),
+                       key=lambda pair: (pair.joint, pair.source, pair.target)):
+        where = _pair_name(sheet, pair)
+        theta = pair.spec.groove_half_angle
+        if theta is None or math.isclose(theta, math.pi / 2):
+            coefficient = f"f{where} = {short(pair.coefficient)}, φ = arctan f"
+        else:
+            # f′ = f/sin θ, written with the numbers alone: a break inside "sin θ" would part it
+            coefficient = (f"f′{where} = {short(pair.spec.f)}/sin {short(math.degrees(theta))}° = "
+                           f"{short(pair.coefficient)}, φ = arctan f′")
+        values.append(f"{coefficient} = {significant(math.degrees(math.atan(pair.coefficient)))}°")
+        name = f"Ff{pair.source}{pair.target}"
+        load = next((load for load in group.loads if load.name in (name, f"Ff{pair.target}{pair.source}")), None)
+        force = abs(load.force) if load is not None else pair.coefficient * abs(
+            sheet.forces.reactions[pair.reaction].force)
+        values.append(f"{name} = {significant(force)} {text['newton']}")
+    if not values:
+        return []
+    return _wrapped([text["sliding_friction"].format(values=values[0]), *values[1:]])
+
+
+def _pair_name(sheet: ForceSheet, pair: FrictionPair) -> str:
+    """How a pair with friction is named in its ρ or f: by its joint."""
+    return pair.joint
 
 
 def _link_centre(sheet: ForceSheet, link: int) -> complex:
