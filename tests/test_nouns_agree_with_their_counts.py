@@ -3,12 +3,18 @@ note said «362 точек»."""
 
 from __future__ import annotations
 
+import dataclasses
+import math
 import re
 
 import pytest
+from test_joint_friction import RADIUS, ROD, slider_crank
 from test_machine_note import PRESS, note_of
 
+from graphplan.analysis import analyse
 from graphplan.locale import Count, strings
+from graphplan.report.forces import cycle_notes
+from graphplan.report.note import note_markdown
 
 # The forms as a Russian grammar gives them, number by number.
 POINTS = {0: "точек", 1: "точка", 2: "точки", 4: "точки", 5: "точек", 11: "точек", 12: "точек", 14: "точек",
@@ -55,3 +61,47 @@ def test_the_flywheel_note_counts_the_points_of_its_diagrams_in_agreement(tmp_pa
     agreeing = "точка" if last == 1 and last_two != 11 else "точки" if 2 <= last <= 4 and not 12 <= last_two <= 14 \
         else "точек"
     assert noun == agreeing
+
+
+# The sentences that name positions: "At position 8", «В положении 6» for one, the plural for more (a teacher
+# found "At positions 8" and «В положениях 6»).  The slider-crank of test_joint_friction with friction in its
+# crank's journal alone: Mb = Mb0 + sign(ω)·ρ·P/cos β, Mb0 = −P·r·sin(φ + β)/cos β, so where the piston drives
+# the crank, 0 < r·sin(φ + β) < ρ, the friction turns the flow round.
+SINGULAR_PLURAL = {"en": ("At position ", "At positions "), "ru": ("В положении ", "В положениях "),
+                   "zh": ("在位置 ", "在位置 ")}
+
+
+def _turned_round(rho: float) -> list[int]:
+    """The positions (numbered from 1) where the friction turns the power flow round, by the closed form."""
+    found = []
+    for k in range(24):
+        phi = math.radians(7.5 + 15.0 * k)
+        beta = math.asin(RADIUS * math.sin(phi) / ROD)
+        if 0.0 < RADIUS * math.sin(phi + beta) < rho:
+            found.append(k + 1)
+    return found
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+@pytest.mark.parametrize("rho", [0.012, 0.02])
+def test_the_positions_where_friction_turns_the_flow_round_are_one_or_several(locale, rho):
+    where = _turned_round(rho)
+    assert len(where) == (1 if rho == 0.012 else 2)
+    scene = slider_crank(f'[[friction]]\njoint = "O"\nf = 0.4\nradius = {rho / 0.4}')
+    notes = cycle_notes(analyse(dataclasses.replace(scene, locale=locale)))
+    enumeration = strings(locale)["enumeration"]
+    one, several = SINGULAR_PLURAL[locale]
+    lead = (one if len(where) == 1 else several) + enumeration.join(map(str, where))
+    assert any(note.startswith(lead) and not note.startswith(lead + enumeration) for note in notes), notes
+
+
+@pytest.mark.parametrize(("locale", "one", "several"), [
+    ("en", "constructed for position 5 from", "constructed for positions 1, 5 from"),
+    ("ru", "построены для положения 5 по", "построены для положений 1, 5 по"),
+    ("zh", "作位置 5 的", "作位置 1、5 的")])
+def test_the_note_constructs_its_plans_for_one_position_or_several(locale, one, several):
+    scene = slider_crank("")
+    for plans, expected in (((5,), one), ((1, 5), several)):
+        only = dataclasses.replace(scene, locale=locale,
+                                   positions=dataclasses.replace(scene.positions, plans=plans))
+        assert expected in note_markdown(analyse(only))

@@ -54,7 +54,8 @@ def markdown(study: Study, locale: str, title: str) -> str:
     text = strings(locale)
     lines = [f"# {text['accuracy_title'].format(title=title)}", "",
              text["accuracy_explained"].format(count=Count(len(study.case.compared))), "",
-             *([text["accuracy_left_out"].format(positions="; ".join(study.case.left_out.values())), ""]
+             *([text["accuracy_left_out"].format(positions="; ".join(study.case.left_out.values()),
+                                                 count=Count(len(study.case.left_out))), ""]
                if study.case.left_out else []),
              *table_lines(study.rows, text), "", order_sentence(study.orders, text), "",
              text["accuracy_measured"], ""]

@@ -30,7 +30,7 @@ from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..joint_friction import FrictionPair
 from ..loads import motion_state
-from ..locale import strings
+from ..locale import Count, strings
 from ..render.numerals import POWER_OF_TEN, power_of_ten
 from ..statics import balancing_by_power, delivers_power, efficiency, rounded_zero, turned_round
 
@@ -385,8 +385,9 @@ def cycle_notes(analysis: Analysis) -> list[str]:
     notes = []
     for key, where in (("forces_cycle_reverse_ratio", driven), ("forces_cycle_turned_round", held)):
         if where.any():
-            positions = text["enumeration"].join(str(numbers[index]) for index in np.flatnonzero(where))
-            notes.append(text[key].format(positions=positions, name=name))
+            indices = np.flatnonzero(where)
+            positions = text["enumeration"].join(str(numbers[index]) for index in indices)
+            notes.append(text[key].format(positions=positions, count=Count(len(indices)), name=name))
     return notes
 
 

@@ -280,7 +280,8 @@ class _Note:
             section += 1
             self.heading(2, self.t("note_kinematics"), section)
             if plans:
-                self.para(self.t("note_kinematics_intro", positions=self.text["enumeration"].join(str(p.number) for p in plans)))
+                numbers = self.text["enumeration"].join(str(p.number) for p in plans)
+                self.para(self.t("note_kinematics_intro", positions=numbers, count=Count(len(plans))))
             for number, plan in enumerate(plans, 1):
                 self.kinematics(f"{section}.{number}", plan)
             subsection = len(plans)
