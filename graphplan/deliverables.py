@@ -254,7 +254,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None))
             found += _note_parts(f"forces_{plan.number}", layers, pieces)
             rubbing = plan.with_friction
-            if "forces" in pieces and rubbing is not None and not rubbing.locked:
+            # The sheet with friction comes with the sheet it repeats: with `lever` its lever with friction on it.
+            if rubbing is not None and not rubbing.locked:
                 laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
                 layers = list(laid_out.layers) if laid_out else _force_sheet_layers(analysis, plan, pieces, True)
                 found.append(Drawing(f"forces_friction_{plan.number}", layers))

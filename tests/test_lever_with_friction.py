@@ -12,13 +12,16 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
+import re
 from pathlib import Path
 
 import pytest
-from test_joint_friction import ratchet_with_friction, slider_crank
+from test_joint_friction import OMEGA, PUSH, RADIUS, ROD, ratchet_with_friction, slider_crank, slider_crank_text
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.cli import main
 from graphplan.report import forces as force_report
 from graphplan.report.note import note_markdown
 from graphplan.report.results import results
@@ -131,3 +134,30 @@ def test_forces_md_gives_the_lever_with_friction_once_per_settled_position_and_t
     # The note works the loads out and gives the lever in its own words, not twice.
     assert "Zhukovsky's lever with the pairs' friction loads" not in note
     assert note.count("Zhukovsky's lever with these loads") == len(analysis.plans)
+
+
+@pytest.mark.parametrize(("only", "lever"), [("lever", True), ("forces", False), ("forces,lever", True)])
+def test_the_lever_piece_brings_the_lever_with_friction_and_forces_alone_the_sheets_without_a_lever(tmp_path, only,
+                                                                                                    lever):
+    """`--only lever` wrote forces_N.svg with the plain lever and no sheet with friction at all; the sheet with
+    friction comes with the force sheet it repeats, its lever with friction on it where the lever is asked.
+    Friction in the crank's journal alone: Mb = Mb0 + sign(ω)·ρ·P/cos β, Mb0 = −P·r·sin(φ + β)/cos β."""
+    f, journal = 0.1, 0.03
+    scene = tmp_path / "journal.toml"
+    scene.write_text(slider_crank_text(f'[[friction]]\njoint = "O"\nf = {f}\nradius = {journal}'))
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", only]) == 0
+    for number in (1, 5, 9, 17):
+        plain = (tmp_path / "out" / f"forces_{number}.svg").read_text(encoding="utf-8")
+        rubbing = (tmp_path / "out" / f"forces_friction_{number}.svg").read_text(encoding="utf-8")
+        assert ('id="lever-caption"' in plain) == lever and ('id="lever-caption"' in rubbing) == lever
+        if not lever:
+            continue
+        phi = math.radians(7.5 + 15.0 * (number - 1))
+        beta = math.asin(RADIUS * math.sin(phi) / ROD)
+        expected = -PUSH * RADIUS * math.sin(phi + beta) / math.cos(beta) + math.copysign(
+            f * journal * PUSH / math.cos(beta), OMEGA)
+        caption = re.search(r'<g id="lever-caption">(.*?)</g>', rubbing).group(1)
+        on_lever = re.search(r"Mb = (−?[\d.]+) N·m</text><text[^>]*>\(Zhukovsky's lever\)", caption)
+        assert float(on_lever.group(1).replace("−", "-")) == pytest.approx(expected, rel=2e-3)
+        # Its loads are the friction's too: the journal's friction moment, as a couple of forces on the lever.
+        assert 'id="lever-Mf12-1"' in rubbing and 'id="lever-Mf12' not in plain
