@@ -19,7 +19,8 @@ is iterated (:func:`graphplan.statics.equilibrium`,
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,6 +51,20 @@ class FrictionPair:
     target: int
     radius: float = 0.0
     coefficient: float = 0.0
+
+    @property
+    def in_vee(self) -> bool:
+        """Whether the pair slides in a V-guide, its coefficient reduced to f′ = f/sin θ (θ of 90° is a flat guide)."""
+        theta = self.spec.groove_half_angle
+        return self.sliding and theta is not None and not math.isclose(theta, math.pi / 2)
+
+
+def pair_name(pair: FrictionPair, pairs: Sequence[FrictionPair]) -> str:
+    """How the drawings and the report name a pair with friction in its ρ or f (ρO, fE, ρ23): by its joint, or by
+    its links where another pair with friction shares the joint (a block's slide and its pin, ρ23 and f43)."""
+    if sum(other.joint == pair.joint for other in pairs) == 1:
+        return pair.joint
+    return f"{pair.source}{pair.target}"
 
 
 def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[FrictionPair, ...]:
@@ -163,4 +178,4 @@ def turning_sense(pair: FrictionPair, state) -> Scalar:
     return sense_of_motion(target.omega - source.omega, target.epsilon - source.epsilon, state.turning_scale)
 
 
-__all__ = ["FrictionPair", "friction_loads", "friction_pairs", "turning_sense"]
+__all__ = ["FrictionPair", "friction_loads", "friction_pairs", "pair_name", "turning_sense"]

@@ -121,4 +121,4 @@ def test_the_note_gives_no_friction_moment_to_a_pin_whose_links_do_not_turn_and_
     assert "ρ34·R34" not in note
     # Three pairs at B: each named by its links; the groove's f′ = f/sin θ = 0.2/0.5.
     assert "f′14 = f/sin θ = 0.2/sin 30° = 0.4; Ff14 = f′14·R14" in note
-    assert "f′23 = 0.2; Ff23 = f′23·R23" in note
+    assert "f23 = 0.2; Ff23 = f23·R23" in note  # a flat slide: f as given, no reduced f′

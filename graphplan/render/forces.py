@@ -45,7 +45,7 @@ from shapely.ops import unary_union
 
 from ..forces import ForcePlan, GroupForces, MomentEquation, PolygonVector, ProjectionEquation
 from ..geometry import Line
-from ..joint_friction import FrictionPair
+from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
 from ..lever import Lever, turned
 from ..mechanism import Mechanism
@@ -648,8 +648,8 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
         if f"{found.name}n" in split:  # split into τ and n on the drawing, the whole reaction is named only here
             anchors.append(Anchor(_xy(touch + run * unit), found.name, NAME_SIZE, _angle(unit), _ON_TANGENT.colour))
     text = sheet.text
-    values = [f"ρ{pair.joint} = {significant(1000.0 * pair.radius)} {text['millimetre']}"
-              for pair in sorted(journals, key=lambda pair: pair.joint)]
+    values = [f"ρ{_pair_name(sheet, pair)} = {significant(1000.0 * pair.radius)} {text['millimetre']}"
+              for pair in sorted(journals, key=lambda pair: (pair.joint, pair.source, pair.target))]
     caption = _wrapped([text["friction_circles"].format(values=values[0]), *values[1:]])
     if any(pair.radius / sheet.length_scale < LEAST_FRICTION_CIRCLE_MM for pair in journals):
         caption.append(text["friction_circles_enlarged"].format(least=f"{LEAST_FRICTION_CIRCLE_MM:g}"))
@@ -667,7 +667,7 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
                        key=lambda pair: (pair.joint, pair.source, pair.target)):
         where = _pair_name(sheet, pair)
         theta = pair.spec.groove_half_angle
-        if theta is None or math.isclose(theta, math.pi / 2):
+        if not pair.in_vee:
             coefficient = f"f{where} = {short(pair.coefficient)}, φ = arctan f"
         else:
             # f′ = f/sin θ, written with the numbers alone: a break inside "sin θ" would part it
@@ -685,8 +685,8 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
 
 
 def _pair_name(sheet: ForceSheet, pair: FrictionPair) -> str:
-    """How a pair with friction is named in its ρ or f: by its joint."""
-    return pair.joint
+    """How a pair with friction is named in its ρ or f, as the note names it (:func:`pair_name`)."""
+    return pair_name(pair, sheet.friction)
 
 
 def _link_centre(sheet: ForceSheet, link: int) -> complex:

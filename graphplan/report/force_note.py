@@ -119,11 +119,13 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
             lines.append(f"- {note.t(moved, name=name, first=pair.source, second=pair.target)}")
             continue
         if pair.sliding:
-            theta = pair.spec.groove_half_angle
-            reduced = "" if theta is None else (
-                f" = f/sin θ = {note.n(pair.spec.f)}/sin {note.n(math.degrees(theta))}°")
-            lines.append(f"- f′{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
-                         f"f′{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))}"
+            # f of a flat guide as given; f′ = f/sin θ of a V-guide, the coefficient reduced
+            symbol, reduced = "f", ""
+            if pair.in_vee:
+                symbol = "f′"
+                reduced = f" = f/sin θ = {note.n(pair.spec.f)}/sin {note.n(math.degrees(pair.spec.groove_half_angle))}°"
+            lines.append(f"- {symbol}{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
+                         f"{symbol}{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))}"
                          f" = {note.n(row.value)} {text['newton']}")
         else:
             lines.append(f"- ρ{where} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "

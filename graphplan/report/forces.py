@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import cmath
 import math
-from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -28,7 +27,7 @@ import numpy as np
 from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
-from ..joint_friction import FrictionPair
+from ..joint_friction import FrictionPair, pair_name
 from ..loads import motion_state
 from ..locale import Count, strings
 from ..render.numerals import POWER_OF_TEN, power_of_ten
@@ -264,8 +263,9 @@ class FrictionLoad:
     """A pair's friction load at the settled reactions: ``Mf23 = ρ·|R23|`` of a journal, ``Ff16 = f′·|R16|`` of a
     slide, against the pair's relative motion.
 
-    ``where`` names the pair in ρ and f′: its joint (ρO, f′E), or its links where two pairs with friction share
-    the joint (ρ23 and f′43 at a block's pin in its slot); ``reaction`` is |R| of the pair (N); ``moving`` is
+    ``where`` names the pair in ρ and f (f′ in a V-guide) as the drawings do (:func:`pair_name`): its joint (ρO,
+    fE), or its links where two pairs with friction share the joint (ρ23 and f43 at a block's pin in its slot);
+    ``reaction`` is |R| of the pair (N); ``moving`` is
     false where the pair's links do not move relative to each other, and its load is then 0.
     """
 
@@ -293,11 +293,9 @@ def friction_load_rows(analysis: Analysis, plan: PlanPosition) -> list[FrictionL
     if rubbing is None or rubbing.locked:
         return []
     acting = {load.name: load for load in plan.friction_loads}
-    at_joint = Counter(pair.joint for pair in analysis.friction)
     rows = []
     for pair in analysis.friction:
-        # Two pairs with friction at one joint (a block's slide and its pin) are told apart by their links.
-        where = pair.joint if at_joint[pair.joint] == 1 else f"{pair.source}{pair.target}"
+        where = pair_name(pair, analysis.friction)
         name = f"{'Ff' if pair.sliding else 'Mf'}{pair.source}{pair.target}"
         load = acting.get(name)
         moving = load is None or bool(np.any(load.force if pair.sliding else load.moment))
@@ -329,7 +327,7 @@ def friction_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
     for row in friction_load_rows(analysis, plan):
         pair = row.pair
         if pair.sliding:
-            factor = f"f′{row.where} = {number(row.factor, mark=mark)}"
+            factor = f"{'f′' if pair.in_vee else 'f'}{row.where} = {number(row.factor, mark=mark)}"
             unit = text["newton"]
         else:
             factor = f"ρ{row.where} = {number(row.factor, mark=mark)} {text['unit_m']}"

@@ -32,10 +32,10 @@ SYMBOL = re.compile(
     r"|(?P<base9>p)(?P<index9>[45])"
     r"|(?P<base10>P)(?P<index10>[LH])"
     # The strokes' angles of the crank (φw, φi; φр.х, φх.х), the reactions of the linear system and of the
-    # polygons (Rсист, Rпл), an error's two values (Xа, Xпл); the friction in a pair: its reduced coefficient
-    # f′E, its circle's radius ρO, its force Ff16 and moment Mf12 (above).
+    # polygons (Rсист, Rпл), an error's two values (Xа, Xпл); the friction in a pair: its coefficient fE (reduced
+    # in a V-guide, f′E), its circle's radius ρO, its force Ff16 and moment Mf12 (above).
     r"|(?P<base18>φ)(?P<index18>[wi]|р\.х|х\.х)|(?P<base19>R)(?P<index19>сист|пл)|(?P<base20>X)(?P<index20>а|пл)"
-    r"|(?P<base21>f′|ρ)(?P<index21>[A-Z][A-Z0-9]*|\d+)"
+    r"|(?P<base21>f′?|ρ)(?P<index21>[A-Z][A-Z0-9]*|\d+)"
     # The machine's dynamics: ΔWmax, Ad and Ar (in Chinese Wd and Wr), ωm, ωmax and ωmin, vS of a reduction; in
     # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).  The efficiency over the cycle's
     # works: Au, Ad, Af (Wr, Wd, Wf; Aпс, Aдв, Aтр).
