@@ -141,7 +141,8 @@ def test_a_position_without_a_plan_is_left_out_and_named(tmp_path):
     out = tmp_path / "out"
     assert main(["run", str(path), "--out", str(out), "--only", "accuracy"]) == 0
     text = (out / "accuracy.md").read_text(encoding="utf-8")
-    assert "Left out" in text and "position 1 (φ = 0°)" in text
+    # Two positions left out: "positions", not the "position" it wrote for any number of them.
+    assert "Left out" in text and "positions 1 (φ = 0°)" in text
     table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
     assert all(math.isfinite(float(row["velocity_max"])) for row in table)
     # The methods are compared at the positions less those left out, and the report counts those (it said
