@@ -314,7 +314,7 @@ def analyse(scene: Scene) -> Analysis:
                            locked_elsewhere=bool(with_friction.locked.any()) or bool(locked_spans))
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
-    warnings += misread(scene, (*plans, *every))
+    warnings += misread(mechanism, (*plans, *every))
     in_order = tuple(sorted(_lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions)

@@ -87,6 +87,9 @@ class ErrorRow:
     reading: str = ""
     # What a millimetre of that reading's segment stands for (m/s, rad/s, N, ... per mm): a measured row's slack.
     per_millimetre: float = 0.0
+    # The label of the force polygon a measured reaction is read off (II(3,4)): each polygon may have a μF of its
+    # own, so a polygon drawn at another scale shows as its readings alone in one ratio to the construction.
+    polygon: str = ""
 
     @property
     def percent(self) -> float:
@@ -338,32 +341,35 @@ def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForceP
     read: dict[str, str] = {}
     for name, millimetres in (measured or {}).items():
         where = f"measured.{position}.forces.{name}"
-        reaction, scale = _measured_reaction(forces, name, where)
+        reaction, polygon, scale = _measured_reaction(forces, name, where)
         if reaction in read:
             raise SceneError(where, f"measures the reaction {read[reaction]} measures (one is the other reversed): "
                              "give each reaction once")
         read[reaction] = name
         rows.append(ErrorRow(position, reaction, analytic[reaction], millimetres * scale, "measured",
-                             f"{name} = {millimetres:g} mm at μF = {scale:g} N/mm", scale))
+                             f"{name} = {millimetres:g} mm at μF = {scale:g} N/mm", scale, polygon))
     return rows
 
 
-def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, float]:
-    """The reaction a hand reading ``name`` measures and μF of the polygon it was read on.
+def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, str, float]:
+    """The reaction a hand reading ``name`` measures, the label of the polygon it was read on and its μF.
 
     A polygon draws a reaction under the name of the link it acts on: group II(3,4) closes with R43 (link 4
     on 3, −R34), the crank's polygon lays off R32 (−R23, found by the group before).  Such a reading is of
     the reaction the other way round, at the μF of the polygon that draws it.
     """
     if name in forces.reactions:
-        return name, forces.scale_of(name)
+        finds = next((group for group in forces.groups if any(found.name == name for found in group.found)), None)
+        return name, finds.label if finds else "", forces.scale_of(name)
     opposite = next((found for found in forces.reactions.values() if f"R{found.target}{found.source}" == name), None)
     if opposite is None:
         raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}"
                          f"{_lettering_hint(name, [])}")
-    drawn = next((group.scale for group in forces.groups
-                  if any(vector.name == name for vector in group.polygon.vectors)), None)
-    return opposite.name, drawn if drawn is not None else forces.scale_of(opposite.name)
+    drawn = next((group for group in forces.groups if any(vector.name == name for vector in group.polygon.vectors)),
+                 None)
+    if drawn is None:
+        return opposite.name, "", forces.scale_of(opposite.name)
+    return opposite.name, drawn.label, drawn.scale
 
 
 def _vanishes(reading: Reading, plans: Mapping[str, Plan], exact: float) -> bool:

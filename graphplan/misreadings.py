@@ -11,6 +11,7 @@ pole distance, and the warning gives the scale that makes the readings agree.
 
 from __future__ import annotations
 
+import math
 import statistics
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -18,10 +19,12 @@ from typing import TYPE_CHECKING
 
 from .check import ErrorRow, is_reaction
 from .motion import PositionWarning
+from .scales import STANDARD_MANTISSAS
 
 if TYPE_CHECKING:
     from .analysis import VelocityPosition
-    from .scene import Scene
+    from .mechanism import Mechanism
+    from .scene import Drawing
 
 # A hand reading this far (per cent) from the same quantity of the plan as constructed is a misread length or
 # a segment taken for another, not a drawing's error ...
@@ -33,56 +36,186 @@ _SCALES = {"velocity": ("μV", "(m/s)/mm"), "acceleration": ("μa", "(m/s²)/mm"
 
 
 @dataclass(frozen=True)
+class Rescaled:
+    """Every reading of one drawing in one ratio to its construction: the drawing laid off at another scale.
+
+    ``kind`` is the plan read (``velocity``, ``acceleration``) or ``forces``; ``polygon`` the label of the one
+    force polygon so read (None: a plan, or readings of several polygons); ``read_at`` each polygon's μF (by
+    label) or the plan's scale (under its kind) the readings were read at; ``drawn_at`` the scale they agree
+    best at (the median of the scales each implies).  ``key`` is the scene's key that sets that scale
+    (``drawing.velocity_pole``, ``drawing.force_scale``), ``setting`` its value as the readings give it and
+    ``rounded`` the round value near it a student would have drawn at; ``off`` the largest share by which a
+    reading taken at ``rounded`` is off the construction: how close "agree" is.
+    """
+
+    kind: str
+    polygon: str | None
+    read_at: Mapping[str, float]
+    drawn_at: float
+    key: str
+    setting: float
+    rounded: float
+    off: float
+
+    @property
+    def ratio(self) -> float:
+        """The readings over the construction, where every reading was read at one scale (else NaN)."""
+        scales = set(self.read_at.values())
+        return next(iter(scales)) / self.drawn_at if len(scales) == 1 else math.nan
+
+
+@dataclass(frozen=True)
 class Slips:
     """A position's hand readings far off its construction.
 
-    ``rescaled``: by plan kind, the one ratio of every reading to the
-    construction and the scale (μV, μa) at which the readings agree.
-    ``misread``: by the reading as the scene writes it (``pb = 25.9 mm``),
-    the error rows it gives far off, each with the constructed value.
+    ``rescaled``: each drawing (a plan, the force polygons, one polygon) whose readings stand in one ratio to
+    the construction, drawn at another scale.  ``misread``: by the reading as the scene writes it
+    (``pb = 25.9 mm``), the error rows it gives far off, each with the constructed value.
     """
 
-    rescaled: Mapping[str, tuple[float, float]]
+    rescaled: tuple[Rescaled, ...]
     misread: Mapping[str, tuple[tuple[ErrorRow, float], ...]]
 
 
-def slips(position: VelocityPosition, precision: float) -> Slips | None:
-    """The hand readings of ``position`` far off its constructed plans, or None where all are near."""
+def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | None:
+    """The hand readings of ``position`` far off its constructed plans and polygons, or None where all are near.
+
+    ``drawing`` is the scene's (its precision and the keys a rescaled drawing is set by), ``joint`` the driver's
+    point, whose vector on a plan is its pole distance.
+    """
+    precision = drawing.drafting_precision
     constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
     measured = [(row, constructed[row.quantity]) for row in position.errors
                 if row.source == "measured" and row.quantity in constructed]
     far = [(row, plan) for row, plan in measured if _far_off(row, plan, precision)]
     if not far:
         return None
-    rescaled = {}
-    for kind in _SCALES:
-        ratio = _one_ratio([(row, plan) for row, plan in measured if _plan_of(row) == kind])
-        if ratio is not None and any(_plan_of(row) == kind for row, _ in far):
-            rescaled[kind] = (ratio, position.plans[kind].scale / ratio)
-            far = [(row, plan) for row, plan in far if _plan_of(row) != kind]
+    # One rule for every drawing: the plans, then every force polygon together (the scene's one force_scale
+    # sets them all, so a student who drew them all at one μF is told that one key), then each polygon alone.
+    reactions = [(row, plan) for row, plan in measured if _plan_of(row) == "forces"]
+    drawings = [(kind, None, [(row, plan) for row, plan in measured if _plan_of(row) == kind]) for kind in _SCALES]
+    labels = dict.fromkeys(row.polygon for row, _ in reactions)
+    drawings.append(("forces", next(iter(labels)) if len(labels) == 1 else None, reactions))
+    drawings += [("forces", label, [(row, plan) for row, plan in reactions if row.polygon == label])
+                 for label in labels if len(labels) > 1]
+    rescaled = []
+    for kind, polygon, rows in drawings:
+        if not any(row is each for row, _ in rows for each, _ in far):
+            continue
+        read = [(row, plan, _read_at(position, row)) for row, plan in rows]
+        drawn_at = _one_scale(read)
+        if drawn_at is not None:
+            rescaled.append(_rescaled(kind, polygon, read, drawn_at, position, drawing, joint))
+            far = [(row, plan) for row, plan in far if not any(row is each for each, _ in rows)]
     misread: dict[str, list[tuple[ErrorRow, float]]] = {}
     for row, plan in far:
         misread.setdefault(row.reading, []).append((row, plan))
-    return Slips(rescaled, {reading: tuple(rows) for reading, rows in misread.items()})
+    return Slips(tuple(rescaled), {reading: tuple(rows) for reading, rows in misread.items()})
 
 
-def misread(scene: Scene, drawn: Iterable[VelocityPosition]) -> tuple[PositionWarning, ...]:
+def _read_at(position: VelocityPosition, row: ErrorRow) -> float:
+    """The scale a measured row was read at: its plan's, or the μF of its force polygon."""
+    kind = _plan_of(row)
+    return row.per_millimetre if kind == "forces" else position.plans[kind].scale
+
+
+def _one_scale(read: list[tuple[ErrorRow, float, float]]) -> float | None:
+    """The one scale at which two readings or more agree with the construction where they were read at another:
+    each reading implies the scale it was drawn at (read at μ as r, of a construction c: μ·c/r), and all those
+    agree within :data:`FAR_OFF_PERCENT` of their median (a scale's slip, under the readings' own
+    errors of a few per cent), which is far from a scale some were read at."""
+    # A segment gives several quantities (pb: VB, ω4) in one ratio: two segments at least make a scale.
+    implied = {}
+    for row, plan, scale in read:
+        if not plan:
+            continue
+        if row.plan / plan <= 0:
+            return None
+        implied[row.reading] = (scale * plan / row.plan, scale)
+    if len(implied) < 2:
+        return None
+    drawn_at = statistics.median(each for each, _ in implied.values())
+    tolerance = FAR_OFF_PERCENT / 100.0
+    if not all(abs(each / drawn_at - 1.0) <= tolerance for each, _ in implied.values()):
+        return None
+    return drawn_at if any(abs(scale / drawn_at - 1.0) > tolerance for _, scale in implied.values()) else None
+
+
+def _rescaled(kind: str, polygon: str | None, read: list[tuple[ErrorRow, float, float]], drawn_at: float,
+              position: VelocityPosition, drawing: Drawing, joint: str) -> Rescaled:
+    """A drawing found at another scale, with the scene's key that sets it and how close the readings come."""
+    read_at = ({row.polygon: scale for row, _, scale in read} if kind == "forces"
+               else {kind: position.plans[kind].scale})
+    driver = 0.0
+    if kind == "forces":
+        key = "drawing.force_scale"
+    else:
+        # A plan sheet's plans are set by the scene's pole distance or scale, the velocity plans of every
+        # position (no acceleration plan beside them) by velocity_plans_pole; the driver's vector is the pole's.
+        sheet = hasattr(position, "acceleration")
+        given = getattr(drawing, f"{kind}_scale") if sheet else None
+        plan = position.plans[kind]
+        driver = abs(plan.value(joint)) if joint in plan.images else 0.0
+        key = (f"drawing.{kind}_scale" if given is not None or not driver
+               else f"drawing.{kind}_pole" if sheet else "drawing.velocity_plans_pole")
+    if key.endswith("_pole"):
+        # pa = VA / μV: the pole distance the driver's vector is drawn at.
+        setting = driver / drawn_at
+        rounded = _round_pole(setting)
+        at = driver / rounded
+    else:
+        setting = drawn_at
+        rounded = at = _round_scale(drawn_at)
+    off = max((abs(row.plan * at / scale - plan) / abs(plan) for row, plan, scale in read if plan), default=0.0)
+    return Rescaled(kind, polygon, read_at, drawn_at, key, setting, rounded, off)
+
+
+def _round_scale(scale: float) -> float:
+    """The standard scale factor nearest ``scale`` where one is within 5 % of it (a student draws at one), else
+    ``scale`` to three digits."""
+    exponent = math.floor(math.log10(scale))
+    standard = [mantissa * 10.0 ** power for power in (exponent - 1, exponent, exponent + 1)
+                for mantissa in STANDARD_MANTISSAS]
+    near = float(f"{min(standard, key=lambda value: abs(math.log(value / scale))):.12g}")
+    return near if abs(near / scale - 1.0) <= _ROUND_SHARE else float(f"{scale:.3g}")
+
+
+def _round_pole(pole: float) -> float:
+    """The round pole distance (mm) a student lays off nearest ``pole``: the coarsest of 50, 25, 10, 5, 1 mm
+    steps within 5 % of it, else ``pole`` to a tenth of a millimetre."""
+    for step in (50.0, 25.0, 10.0, 5.0, 1.0):
+        value = round(pole / step) * step
+        if value > 0 and abs(value / pole - 1.0) <= _ROUND_SHARE:
+            return value
+    return round(pole, 1)
+
+
+# A round value this close to the scale the readings give is taken for the one the student drew at.
+_ROUND_SHARE = 0.05
+
+
+def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[PositionWarning, ...]:
     """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans."""
-    precision = scene.drawing.drafting_precision
+    drawing = mechanism.scene.drawing
+    precision = drawing.drafting_precision
     warnings = []
     for position in drawn:
-        found = slips(position, precision)
+        found = slips(position, drawing, mechanism.driver.joint)
         if found is None:
             continue
         details = []
-        for kind, (ratio, drawn_at) in found.rescaled.items():
-            symbol, unit = _SCALES[kind]
+        for rescaled in found.rescaled:
+            if rescaled.kind == "forces":
+                details.append(_polygons_detail(rescaled))
+                continue
+            symbol, unit = _SCALES[rescaled.kind]
+            drawn_at, kind = rescaled.drawn_at, rescaled.kind
             if in_units(drawn_at):
                 quantity = unit.removeprefix("(").removesuffix(")/mm")
                 details.append(f"every reading of the {kind} plan is the value it stands for, in {quantity}, not "
                                f"its length on the plan: give the millimetres measured (the value / {symbol})")
                 continue
-            details.append(f"every reading of the {kind} plan is {ratio:.4g} times the plan as constructed at "
+            details.append(f"every reading of the {kind} plan is {rescaled.ratio:.4g} times the plan as constructed at "
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
                            f"{drawn_at:.4g} {unit}? (set at that scale, the readings agree)")
         if found.misread:
@@ -96,6 +229,26 @@ def misread(scene: Scene, drawn: Iterable[VelocityPosition]) -> tuple[PositionWa
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
+
+
+def read_at(rescaled: Rescaled) -> str:
+    """The μF the readings of force polygons were read at: ``10`` (one), ``I(1,2) 20, II(3,4) 10`` (each its own)."""
+    scales = set(rescaled.read_at.values())
+    if len(scales) == 1:
+        return f"{next(iter(scales)):g}"
+    return ", ".join(f"{label} {scale:g}" for label, scale in rescaled.read_at.items())
+
+
+def _polygons_detail(rescaled: Rescaled) -> str:
+    """The warning's words for force polygons drawn at another μF than they were read at, or readings in N."""
+    what = f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons"
+    if in_units(rescaled.drawn_at):
+        # A polygon may truly be drawn at 1 N/mm: the readings cannot tell, so both are said.
+        return (f"every reading of {what} is the force it stands for, in N, not its length on the polygon: give the "
+                f"millimetres measured (the force / μF), or, drawn at μF = 1 N/mm, give `[drawing] force_scale = 1`")
+    return (f"every reading of {what} fits polygons drawn at μF = {rescaled.drawn_at:.4g} N/mm, not the μF they were "
+            f"read at ({read_at(rescaled)} N/mm): give `[drawing] force_scale = {rescaled.rounded:g}` (taken at it, "
+            f"every reading is within {rescaled.off * 100.0:.1f} % of the polygons as constructed)")
 
 
 def in_units(drawn_at: float) -> bool:
@@ -116,17 +269,4 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-def _one_ratio(rows: list[tuple[ErrorRow, float]]) -> float | None:
-    """The ratio of two readings or more to the construction where one ratio, far from 1, accounts for them all:
-    divided by it, none is far off (a scale's slip, under the readings' own errors of a few per cent)."""
-    # A segment gives several quantities (pb: VB, ω4) in one ratio: two segments at least make a scale.
-    ratios = list({row.reading: row.plan / plan for row, plan in rows if plan}.values())
-    if len(ratios) < 2:
-        return None
-    ratio = statistics.median(ratios)
-    if ratio <= 0 or abs(ratio - 1.0) <= FAR_OFF_PERCENT / 100.0:
-        return None
-    return ratio if all(abs(each / ratio - 1.0) <= FAR_OFF_PERCENT / 100.0 for each in ratios) else None
-
-
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Slips", "in_units", "misread", "slips"]
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Rescaled", "Slips", "in_units", "misread", "read_at", "slips"]

@@ -202,3 +202,61 @@ def test_the_reactions_table_signs_its_errors_as_the_error_tables_do():
     assert row.percent == pytest.approx(2.0)
     assert error_percent(100.0, 98.0) == "2"
     assert error_percent(0.0, 0.0) == "0" and error_percent(0.0, 1.0) == "—"
+
+
+def exact_millimetres(analysis, number, scale):
+    """The ratchet's reactions at position ``number`` from the linear system (not the polygons), in mm at μF ``scale``:
+    what a student reads off polygons drawn with care at that μF."""
+    index = next(p.index for p in analysis.plans if p.number == number)
+    return {name: abs(complex(analysis.equilibrium.reaction(name).force[index])) / scale
+            for name in ("R23", "R12", "R34", "R14")}
+
+
+def far_off(analysis):
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    return warning.detail
+
+
+def test_force_polygons_all_drawn_at_another_scale_are_named_as_such_with_the_key_to_give():
+    """Every reaction read off polygons drawn at 10 N/mm where the scene says force_scale = 20 was called a
+    100 % misread length; the plans' readings in one ratio were already told as a plan at another scale."""
+    plain = analyse(graphplan.load(RATCHET))
+    readings = {5: {"forces": exact_millimetres(plain, 5, 10.0)}}
+    analysis = analyse(with_scene(RATCHET, drawing={"force_scale": 20.0}, measured=readings))
+    detail = far_off(analysis)
+    assert "misread" not in detail
+    assert "every reading of the force polygons fits polygons drawn at μF = 10 N/mm" in detail
+    assert "not the μF they were read at (20 N/mm): give `[drawing] force_scale = 10`" in detail
+    assert "within 0.0 % of the polygons as constructed" in detail
+    text = markdown(dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, locale="en")))
+    assert "Every reading of the force polygons fits polygons drawn at μF = 10 N/mm" in text
+
+
+def test_polygons_each_at_the_programs_own_scale_read_off_a_drawing_at_one_are_told_the_one_scale():
+    """Without force_scale each group's polygon has its own μF, which a student cannot guess: readings of polygons
+    all drawn at 20 N/mm showed II(3,4)'s as 50 % misread."""
+    plain = analyse(graphplan.load(RATCHET))
+    scales = next(p for p in plain.plans if p.number == 5).forces.group_scales
+    assert scales["II(3,4)"] != 20.0 and 20.0 in scales.values()
+    analysis = analyse(with_scene(RATCHET, measured={5: {"forces": exact_millimetres(plain, 5, 20.0)}}))
+    detail = far_off(analysis)
+    assert "misread" not in detail and "give `[drawing] force_scale = 20`" in detail
+    assert f"II(3,4) {scales['II(3,4)']:g}" in detail
+
+
+def test_one_polygon_at_another_scale_is_told_apart_from_a_misread_reaction_of_another():
+    plain = analyse(graphplan.load(RATCHET))
+    scales = next(p for p in plain.plans if p.number == 5).forces.group_scales
+    at = exact_millimetres(plain, 5, scales["II(3,4)"] / 2.0)  # group II's polygon drawn twice as large
+    at["R12"] = exact_millimetres(plain, 5, scales["I(1,2)"])["R12"] * 1.5  # the crank's reaction misread
+    detail = far_off(analyse(with_scene(RATCHET, measured={5: {"forces": at}})))
+    assert f"every reading of the force polygon II(3,4) fits polygons drawn at μF = {scales['II(3,4)'] / 2:g}" in detail
+    assert "R12 = " in detail.split("misread")[0].split("readings more than")[1]
+    assert "R23 = " not in detail.split("readings more than")[1]
+
+
+def test_reactions_typed_in_newtons_are_named_as_such():
+    plain = analyse(graphplan.load(RATCHET))
+    newtons = exact_millimetres(plain, 5, 1.0)
+    detail = far_off(analyse(with_scene(RATCHET, measured={5: {"forces": newtons}})))
+    assert "is the force it stands for, in N, not its length on the polygon" in detail and "misread" not in detail

@@ -18,7 +18,7 @@ from collections import defaultdict
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
-from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, in_units, slips
+from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, Rescaled, in_units, read_at, slips
 from ..render.numerals import scale_factor
 from .forces import number
 from .results import PERCENT_FLOOR
@@ -76,18 +76,22 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
 def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> list[str]:
     """The hand readings of a position far off its construction (:mod:`graphplan.misreadings`), said under its
     error table in the scene's language: a plan drawn at another scale, or each misread length."""
-    found = slips(plan, analysis.scene.drawing.drafting_precision)
+    found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint)
     if found is None:
         return []
     text = strings(analysis.scene.locale)
     lines = []
-    for kind, (ratio, drawn_at) in found.rescaled.items():
+    for rescaled in found.rescaled:
+        if rescaled.kind == "forces":
+            lines.append(_polygons_line(rescaled, text, mark))
+            continue
+        kind, drawn_at = rescaled.kind, rescaled.drawn_at
         symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
         if in_units(drawn_at):
             lines.append(text["errors_in_units"].format(plan=text[f"{kind}_plan_title"].lower(), symbol=symbol))
             continue
         lines.append(text["errors_rescaled"].format(
-            plan=text[f"{kind}_plan_title"].lower(), ratio=number(ratio, 4, mark), symbol=symbol,
+            plan=text[f"{kind}_plan_title"].lower(), ratio=number(rescaled.ratio, 4, mark), symbol=symbol,
             scale=scale_factor(plan.plans[kind].scale).replace(".", mark), unit=unit,
             drawn=scale_factor(drawn_at).replace(".", mark)))
     if found.misread:
@@ -98,6 +102,17 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> l
             percent=f"{FAR_OFF_PERCENT:g}", readings=readings,
             millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
     return lines
+
+
+def _polygons_line(rescaled: Rescaled, text: dict[str, str], mark: str) -> str:
+    """Force polygons drawn at another μF than they were read at, or readings typed in N, in the locale's words."""
+    polygons = (text["errors_polygon"].format(label=rescaled.polygon) if rescaled.polygon
+                else text["errors_polygons"])
+    if in_units(rescaled.drawn_at):
+        return text["errors_forces_in_units"].format(polygons=polygons)
+    return text["errors_forces_rescaled"].format(
+        polygons=polygons, drawn=number(rescaled.drawn_at, 4, mark), read=read_at(rescaled).replace(".", mark),
+        setting=f"{rescaled.rounded:g}", off=f"{rescaled.off * 100.0:.1f}".replace(".", mark))
 
 
 def _reading(row: ErrorRow, text: dict[str, str], mark: str) -> str:
