@@ -363,6 +363,9 @@ def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, s
         return name, finds.label if finds else "", forces.scale_of(name)
     opposite = next((found for found in forces.reactions.values() if f"R{found.target}{found.source}" == name), None)
     if opposite is None:
+        component = _component_of(forces, name)
+        if component is not None:
+            raise SceneError(where, f"{component}; the polygons find {', '.join(forces.reactions)}")
         raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}"
                          f"{_lettering_hint(name, [])}")
     drawn = next((group for group in forces.groups if any(vector.name == name for vector in group.polygon.vectors)),
@@ -370,6 +373,37 @@ def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, s
     if drawn is None:
         return opposite.name, "", forces.scale_of(opposite.name)
     return opposite.name, drawn.label, drawn.scale
+
+
+# A reaction's normal or tangential component as a polygon letters it (R23n, R23τ) or a student types it (R23t).
+_COMPONENT = re.compile(r"^(R\d+)\^?(n|ⁿ|τ|t)$")
+
+
+def _component_of(forces: ForcePlan, name: str) -> str | None:
+    """What a reading named as a reaction's component (``R23n``, ``R14τ``) is, and what to give instead.
+
+    A polygon lays the components off to find the whole reaction (the tangential one from a moment equation,
+    the normal one by closing the polygon); the error table compares whole reactions with the linear system's,
+    and the polygon letters the whole one too, so that one is read.
+    """
+    matched = _COMPONENT.match(name)
+    if matched is None:
+        return None
+    whole, part = matched[1], "normal" if matched[2] in "nⁿ" else "tangential"
+    # The reaction either way round (R32 is R23 on the crank's polygon), as a reading of the whole one is taken.
+    same = {pair for found in forces.reactions.values()
+            for pair in ((found.name, f"R{found.target}{found.source}"), (f"R{found.target}{found.source}", found.name))
+            if pair[0] == whole}
+    if not same:
+        return None
+    names = {each for pair in same for each in pair}
+    drawn = next(((group.label, component[1]) for group in forces.groups for vector in group.polygon.vectors
+                  if (component := _COMPONENT.match(vector.name)) and component[1] in names), None)
+    if drawn is None:
+        return f"{name} would be a component of {whole}, which no polygon lays off in components: give {whole} whole"
+    label, lettered = drawn
+    return (f"{name} is the {part} component of {whole} on the polygon of {label}, laid off to find it and not "
+            f"checked: give the whole reaction {lettered} (lettered on that polygon beside its components)")
 
 
 def _vanishes(reading: Reading, plans: Mapping[str, Plan], exact: float) -> bool:
@@ -398,16 +432,29 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
             matches = [r for r in table if r.plan == kind and set(r.segment) == set(segment)]
             if not matches:
                 readable = dict.fromkeys("".join(r.segment) for r in table if r.plan == kind)
-                # The Coriolis vector is laid off from 2·ω·v, not found by the construction: nothing to read.
-                coriolis = (f" ({segment[0]}{segment[1]} is the Coriolis component, laid off from 2·ω·v, not read off)"
-                            if set(segment) & _coriolis_ends(plans[kind]) else "")
-                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}{coriolis}; its "
-                                 f"quantities are read from {', '.join(readable)}")
+                raise SceneError(where, f"the plan has no quantity read from {segment[0]}{segment[1]}"
+                                 f"{_laid_off(plans[kind], segment)}; its quantities are read from {', '.join(readable)}")
             for reading in matches:
                 rows.append(ErrorRow(position, reading.quantity, analytic[reading.quantity],
                                      reading.value(plans, millimetres), "measured", f"{segment_name} = {millimetres:g} mm",
                                      abs(reading.value(plans, 1.0))))
     return rows
+
+
+def _laid_off(plan: Plan, segment: tuple[str, str]) -> str:
+    """Why a segment the plan letters gives nothing to check: the Coriolis and normal components are laid off
+    from a computed value (2·ω·v, ω²·l), not found by the construction, so a reading of them checks the
+    arithmetic, not the drawing; the tangential part beside a normal one gives ε (the table's list says which)."""
+    written = f"{segment[0]}{segment[1]}"
+    # The Coriolis vector is laid off from 2·ω·v, not found by the construction: nothing to read.
+    if set(segment) & _coriolis_ends(plan):
+        return f" ({written} is the Coriolis component, laid off from 2·ω·v, not read off)"
+    normal = next((vector.meaning for step in plan.steps for vector in step.vectors
+                   if vector.meaning.endswith("ⁿ") and {vector.start, vector.end} == set(segment)), None)
+    if normal is not None:
+        return (f" ({written} is the normal component {normal}, laid off from ω²·l = v²/l, not read off: "
+                "the tangential component beside it gives ε)")
+    return ""
 
 
 def _coriolis_ends(plan: Plan) -> set[str]:

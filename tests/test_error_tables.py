@@ -314,6 +314,19 @@ def test_measuring_the_coriolis_segment_is_answered_with_why_it_gives_nothing():
         analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ak": 16.0}}}))
 
 
+@pytest.mark.parametrize("segment", ["an3", "n3a", "pn4"])
+def test_measuring_a_normal_component_is_answered_with_why_it_gives_nothing(segment):
+    """an3 is aBAⁿ, lettered on the acceleration plan: "the plan has no quantity read from an3" read as a wrong
+    name, not as a component laid off from ω²·l, which checks the arithmetic and not the drawing."""
+    written = segment  # as the student wrote it, either way round
+    meaning = "aBCⁿ" if segment == "pn4" else "aBAⁿ"
+    with pytest.raises(SceneError, match=rf"^measured\.5\.acceleration\.{segment}: the plan has no quantity read from "
+                                         rf"{written} \({written} is the normal component {meaning}, laid off from ω²·l "
+                                         r"= v²/l, not read off: the tangential component beside it gives ε\); its "
+                                         r"quantities are read from .*n3b, n4b$"):
+        analyse(with_measured({5: {"acceleration": {segment: 12.7}}}))
+
+
 # An oscillating cylinder: crank OA turns the cylinder (lever 4) about A, whose rod's block 3 pivots on the
 # frame at P; so P3 is at the pole and the sliding velocity laid from it is vP4P3.
 OSCILLATING_CYLINDER = """

@@ -260,3 +260,18 @@ def test_reactions_typed_in_newtons_are_named_as_such():
     newtons = exact_millimetres(plain, 5, 1.0)
     detail = far_off(analyse(with_scene(RATCHET, measured={5: {"forces": newtons}})))
     assert "is the force it stands for, in N, not its length on the polygon" in detail and "misread" not in detail
+
+
+@pytest.mark.parametrize(("reading", "part", "whole"), [("R23n", "normal", "R23"), ("R14τ", "tangential", "R14"),
+                                                        ("R23t", "tangential", "R23"), ("R32t", "tangential", "R23")])
+def test_a_reading_of_a_reactions_component_says_it_is_one_and_which_whole_reaction_to_give(reading, part, whole):
+    """The force sheet letters R23n and R23τ on group II's polygon: "the force polygons have no reaction R23n" read
+    as a misspelt name, not as "components are not checked"."""
+    plan = next(p for p in analyse(graphplan.load(RATCHET)).plans if p.number == 5)
+    (group,) = [g for g in plan.forces.groups if any(v.name == "R23τ" for v in g.polygon.vectors)]
+    with pytest.raises(SceneError) as caught:
+        analyse(with_scene(RATCHET, measured={5: {"forces": {reading: 50.0}}}))
+    assert str(caught.value).startswith(
+        f"measured.5.forces.{reading}: {reading} is the {part} component of {reading[:3]} on the polygon of "
+        f"{group.label}, laid off to find it and not checked: give the whole reaction {whole} (lettered on that "
+        "polygon beside its components); the polygons find R23, R14, R34, R12")
