@@ -410,3 +410,24 @@ def test_the_velocity_diagram_rings_the_output_velocity_of_each_plan_on_the_exac
         assert ring.centre[1] - origin[1] == pytest.approx(value / record.scales.velocity, abs=1e-9)
         # ...and on the curve of the exact velocity, drawn through 360 samples.
         assert ring.centre[1] == pytest.approx(float(np.interp(ring.centre[0], xs, ys)), abs=0.3)
+
+
+def test_the_largest_measured_error_of_a_position_skips_a_reading_of_what_stands_still_and_names_it():
+    """At the shaper's extreme the ram is at rest: pe read as 0.5 mm has no finite δ, and the row of the largest
+    measured errors wrote "—" for the position, hiding pa's finite error."""
+    from graphplan.starters import starter
+
+    scene = loads(starter("shaper") + "\n[measured.1]\nvelocity = { pe = 0.5, pd = 0.0, pa = 31.5 }\n")
+    analysis = analyse(scene)
+    position = next(p for p in analysis.velocity_plans if p.number == 1)
+    va = float(np.hypot(*analysis.motion.point(analysis.mechanism.driver.joint).v[position.index]))
+    ve = float(np.hypot(*analysis.motion.point("E").v[position.index]))
+    assert ve < 1e-9 * va  # the extreme: VE vanishes, and pe = 0.5 mm reads a speed where there is none
+    expected = abs(va - 31.5 * position.velocity.scale) / va * 100.0  # pa's error, which ω2's shares
+    text = strings(analysis.scene.locale)
+    name = text["velocity_plans_largest"].format(source=text["source_measured"])
+    (line,) = [line for line in tables.velocity_plans_lines(analysis) if line.startswith(f"| {name} |")]
+    cell = line.strip("|").split("|")[2 + [p.number for p in analysis.velocity_plans].index(1)].strip()
+    value, undefined = re.fullmatch(r"([\d.,]+) \((.*): —\)", cell).groups()
+    assert float(value.replace(",", ".")) == pytest.approx(expected, abs=5e-4) and expected > 0.1
+    assert "VE" in undefined.split(", ")

@@ -198,16 +198,25 @@ def velocity_plans_lines(analysis: Analysis, mark: str = ".") -> list[str]:
                      for table in tables]
             lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
         for source in sources:
-            # A position not measured by hand has no measured error: its cell stays empty, not 0.
-            cells = [_percent(max(errors), mark) if errors else ""
-                     for errors in ([abs(rows[source].percent) for rows in table.values() if source in rows]
-                                    for table in tables)]
+            cells = [_largest(table, source, mark) for table in tables]
             if not any(cells):
                 continue
             name = text["velocity_plans_largest"].format(source=text[f"source_{source}"])
             lines.append("| " + " | ".join([name, "%", *cells]) + " |")
         lines.append("")
     return lines[:-1]
+
+
+def _largest(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str:
+    """A position's largest error of ``source`` in magnitude, of those that have a value; a reading of a quantity
+    that vanishes there has none (its δ is written —) and is named beside it, so that it hides no finite
+    error (``0.268 (VE: —)``).  A position not measured by hand has no measured error: empty, not 0."""
+    errors = {quantity: abs(rows[source].percent) for quantity, rows in table.items() if source in rows}
+    finite = [value for value in errors.values() if math.isfinite(value)]
+    undefined = [quantity_symbol(quantity) for quantity, value in errors.items() if not math.isfinite(value)]
+    if not finite:
+        return _percent(math.inf, mark) if undefined else ""
+    return _percent(max(finite), mark) + (f" ({', '.join(undefined)}: —)" if undefined else "")
 
 
 def csv_text(analysis: Analysis) -> str:
