@@ -215,9 +215,14 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                 details.append(f"every reading of the {kind} plan is the value it stands for, in {quantity}, not "
                                f"its length on the plan: give the millimetres measured (the value / {symbol})")
                 continue
+            # The scale the readings fit best is the median's, not the one drawn at: the key to give is the round
+            # value near it, with how close the readings come there (the student's own errors stay).
+            fit = f", {rescaled.key.removeprefix('drawing.')} ≈ {rescaled.setting:.4g} mm" if rescaled.key.endswith(
+                "_pole") else ""
             details.append(f"every reading of the {kind} plan is {rescaled.ratio:.4g} times the plan as constructed at "
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
-                           f"{drawn_at:.4g} {unit}? (set at that scale, the readings agree)")
+                           f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
+                           f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)")
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
@@ -229,6 +234,12 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
+
+
+def setting(rescaled: Rescaled) -> str:
+    """The scene's setting that draws a rescaled drawing as the student did: ```[drawing] velocity_pole = 300```."""
+    table, key = rescaled.key.split(".")
+    return f"`[{table}] {key} = {rescaled.rounded:g}`"
 
 
 def read_at(rescaled: Rescaled) -> str:
@@ -247,7 +258,7 @@ def _polygons_detail(rescaled: Rescaled) -> str:
         return (f"every reading of {what} is the force it stands for, in N, not its length on the polygon: give the "
                 f"millimetres measured (the force / μF), or, drawn at μF = 1 N/mm, give `[drawing] force_scale = 1`")
     return (f"every reading of {what} fits polygons drawn at μF = {rescaled.drawn_at:.4g} N/mm, not the μF they were "
-            f"read at ({read_at(rescaled)} N/mm): give `[drawing] force_scale = {rescaled.rounded:g}` (taken at it, "
+            f"read at ({read_at(rescaled)} N/mm): give {setting(rescaled)} (taken at it, "
             f"every reading is within {rescaled.off * 100.0:.1f} % of the polygons as constructed)")
 
 
@@ -269,4 +280,4 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Rescaled", "Slips", "in_units", "misread", "read_at", "slips"]
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Rescaled", "Slips", "in_units", "misread", "read_at", "setting", "slips"]

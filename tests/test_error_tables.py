@@ -300,7 +300,8 @@ def test_the_error_tables_say_under_a_position_which_readings_are_far_off_in_the
     (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
     drawn_at = re.search(r"a plan drawn at μV = ([\d.]+)", warning.detail)[1].replace(".", ",")
     for text in (markdown(analysis), note_markdown(analysis)):
-        assert f"не построен ли план в масштабе μV = {drawn_at} (м/с)/мм?" in text
+        assert f"не построен ли план в масштабе μV = {drawn_at} (м/с)/мм (velocity_pole ≈ " in text
+        assert "Укажите `[drawing] velocity_pole = 100`" in text  # pa = 100 mm, as the readings were made
         assert "более чем на 15 % и на 1 мм: pb = 84,487 мм (aB, aBC)." in text
     assert "замеры" not in markdown(analyse(dataclasses.replace(graphplan.load(FIXTURE), locale="ru"))).lower()
 
@@ -404,3 +405,29 @@ def test_a_point_named_k_keeps_its_letter_and_the_coriolis_end_takes_the_sliders
         analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ak3": 10.0}}}))
     with pytest.raises(SceneError, match=r"no quantity read from ka4; its quantities are read from .*k3a4"):
         analyse(dataclasses.replace(scene, measured={number: {"acceleration": {"ka4": 10.0}}}))
+
+
+def test_a_plan_at_another_scale_is_told_the_key_to_give_and_how_close_the_readings_come_there():
+    """The hint gave the median's μV and said "set at that scale, the readings agree" while pb read 7.9 % off there,
+    and named no key: readings of the worked example doubled, as off a plan laid off with pa = 300 mm."""
+    printed = {"pb": 77.64, "ab": 297.98, "ps3": 176.98, "pe": 166.38}  # the worked example's readings, doubled
+    scene = with_measured({5: {"velocity": printed}})
+    motion = graphplan.solve(scene)
+    v = {name: complex(*motion.point(name).v[5]) for name in ("A", "B", "S3", "E")}
+    exact = {"pb": abs(v["B"]), "ab": abs(v["B"] - v["A"]), "ps3": abs(v["S3"]), "pe": abs(v["E"])}
+    at_300 = abs(v["A"]) / 300.0  # μV of a plan with pa = 300 mm
+    off = max(abs(mm * at_300 / exact[name] - 1.0) for name, mm in printed.items()) * 100.0
+    assert off > 5.0  # the readings do not agree at any scale to better than their own errors
+    (warning,) = [w for w in analyse(scene).warnings if w.code == "measured-far-off"]
+    assert "agree" not in warning.detail
+    assert "velocity_pole ≈ 305.5 mm? give `[drawing] velocity_pole = 300`" in warning.detail
+    within = float(re.search(r"every reading is within ([\d.]+) % of the plan as constructed", warning.detail)[1])
+    assert within == pytest.approx(off, abs=0.06)
+
+
+def test_readings_of_a_plan_at_a_scale_given_directly_are_told_that_key():
+    scene = with_measured({5: {"velocity": {"pb": 77.64, "ab": 297.98, "ps3": 176.98, "pe": 166.38}}})
+    drawing = dataclasses.replace(scene.drawing, velocity_scale=0.02, velocity_pole=None)
+    (warning,) = [w for w in analyse(dataclasses.replace(scene, drawing=drawing)).warnings
+                  if w.code == "measured-far-off"]
+    assert "give `[drawing] velocity_scale = 0.01`" in warning.detail and "velocity_pole" not in warning.detail

@@ -18,7 +18,7 @@ from collections import defaultdict
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
-from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, Rescaled, in_units, read_at, slips
+from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, Rescaled, in_units, read_at, setting, slips
 from ..render.numerals import scale_factor
 from .forces import number
 from .results import PERCENT_FLOOR
@@ -93,7 +93,11 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> l
         lines.append(text["errors_rescaled"].format(
             plan=text[f"{kind}_plan_title"].lower(), ratio=number(rescaled.ratio, 4, mark), symbol=symbol,
             scale=scale_factor(plan.plans[kind].scale).replace(".", mark), unit=unit,
-            drawn=scale_factor(drawn_at).replace(".", mark)))
+            drawn=scale_factor(drawn_at).replace(".", mark), setting=setting(rescaled),
+            off=f"{rescaled.off * 100.0:.1f}".replace(".", mark),
+            fit=text["errors_pole_fit"].format(key=rescaled.key.removeprefix("drawing."),
+                                               fit=number(rescaled.setting, 4, mark))
+            if rescaled.key.endswith("_pole") else ""))
     if found.misread:
         # A segment's name may be on both plans (pb): the quantities it gives say which.
         readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity) for row, _ in rows)})"
@@ -112,7 +116,7 @@ def _polygons_line(rescaled: Rescaled, text: dict[str, str], mark: str) -> str:
         return text["errors_forces_in_units"].format(polygons=polygons)
     return text["errors_forces_rescaled"].format(
         polygons=polygons, drawn=number(rescaled.drawn_at, 4, mark), read=read_at(rescaled).replace(".", mark),
-        setting=f"{rescaled.rounded:g}", off=f"{rescaled.off * 100.0:.1f}".replace(".", mark))
+        setting=setting(rescaled), off=f"{rescaled.off * 100.0:.1f}".replace(".", mark))
 
 
 def _reading(row: ErrorRow, text: dict[str, str], mark: str) -> str:
