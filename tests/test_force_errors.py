@@ -275,3 +275,23 @@ def test_a_reading_of_a_reactions_component_says_it_is_one_and_which_whole_react
         f"measured.5.forces.{reading}: {reading} is the {part} component of {reading[:3]} on the polygon of "
         f"{group.label}, laid off to find it and not checked: give the whole reaction {whole} (lettered on that "
         "polygon beside its components); the polygons find R23, R14, R34, R12")
+
+
+@pytest.mark.parametrize("drawn_with_friction", [True, False])
+def test_with_friction_the_errors_say_which_polygons_the_readings_are_checked_against(drawn_with_friction):
+    """The shaper's friction sheet prints R45 = 2123 N; read off it, errors.md showed −1.8 % against the polygons
+    without friction and never said which polygons the readings were checked against."""
+    from graphplan.report.note import note_markdown
+    from graphplan.starters import starter
+
+    plain = analyse(graphplan.scene.loads(starter("shaper")))
+    plan = next(p for p in plain.plans if p.number == 3)
+    balance = plain.with_friction if drawn_with_friction else plain.equilibrium  # the linear systems, not the polygons
+    reaction = abs(complex(balance.reaction("R45").force[plan.index]))
+    millimetres = round(reaction / plan.forces.scale_of("R45"), 1)
+    analysis = analyse(graphplan.scene.loads(starter("shaper") + f"\n[measured.3]\nforces = {{ R45 = {millimetres} }}\n"))
+    for text in (markdown(analysis), note_markdown(analysis)):
+        assert "these are the polygons without friction (forces_N.svg), and the readings of [measured] forces are " \
+               "checked against them" in text
+        nearer = "Every reading of a reaction stands nearer the polygons with friction (forces_friction_3.svg: R45 = "
+        assert (nearer in text) is drawn_with_friction

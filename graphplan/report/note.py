@@ -55,6 +55,7 @@ from .tables import (
     has_reactions,
     measured_velocity_plans,
     quantity_symbol,
+    reactions_intro,
     slip_lines,
     unit_of,
     velocity_plans_intro,
@@ -1028,7 +1029,7 @@ class _Note:
         precision = self.n(self.analysis.scene.drawing.drafting_precision)
         self.heading(2, self.t("note_errors"), section)
         intro = self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision)
-        self.para(f"{intro} {self.text['errors_forces']}" if has_reactions(self.analysis) else intro)
+        self.para(f"{intro} {reactions_intro(self.analysis)}" if has_reactions(self.analysis) else intro)
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))

@@ -77,10 +77,11 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> l
     """The hand readings of a position far off its construction (:mod:`graphplan.misreadings`), said under its
     error table in the scene's language: a plan drawn at another scale, or each misread length."""
     found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint)
+    nearer = _nearer_with_friction(analysis, plan, mark)
     if found is None:
-        return []
+        return nearer
     text = strings(analysis.scene.locale)
-    lines = []
+    lines = nearer
     for rescaled in found.rescaled:
         if rescaled.kind == "forces":
             lines.append(_polygons_line(rescaled, text, mark))
@@ -140,6 +141,34 @@ def has_reactions(analysis: Analysis) -> bool:
     return any(is_reaction(row.quantity) for plan in analysis.plans for row in plan.errors)
 
 
+def reactions_intro(analysis: Analysis) -> str:
+    """What the reaction rows compare, in the scene's language; with friction in the pairs, which polygons: those
+    without friction, the linear system's reference, so a student who drew the friction polygons knows."""
+    text = strings(analysis.scene.locale)
+    return text["errors_forces"] + (f" {text['errors_forces_without_friction']}" if analysis.friction else "")
+
+
+def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str) -> list[str]:
+    """Hand readings of reactions that every one stands nearer the polygons with friction than those without,
+    which the table checks them against: said, with each reaction as the friction polygon gives it."""
+    rubbing = getattr(plan, "with_friction", None)
+    if rubbing is None:
+        return []
+    ideal = {row.quantity: row.plan for row in plan.errors if row.source == "construction"}
+    read = [row for row in plan.errors if row.source == "measured" and is_reaction(row.quantity)
+            and row.quantity in rubbing.reactions]
+    with_friction = {row.quantity: abs(rubbing.reactions[row.quantity].force) for row in read}
+    # Nearer by more than the drafting precision on the paper: polygons alike within it cannot be told apart.
+    slack = analysis.scene.drawing.drafting_precision
+    if not read or not all(abs(row.plan - with_friction[row.quantity]) + slack * row.per_millimetre
+                           < abs(row.plan - ideal[row.quantity]) for row in read):
+        return []
+    text = strings(analysis.scene.locale)
+    values = ", ".join(f"{row.quantity} = {number(with_friction[row.quantity], mark=mark)} {text['newton']}"
+                       for row in read)
+    return [text["errors_nearer_friction"].format(number=plan.number, values=values)]
+
+
 def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
     mark = text["decimal_mark"]
@@ -147,7 +176,7 @@ def markdown(analysis: Analysis) -> str:
     lines = [f"# {text['errors_title'].format(title=analysis.scene.title)}", "",
              f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}", ""]
     if has_reactions(analysis):
-        lines += [text["errors_forces"], ""]
+        lines += [reactions_intro(analysis), ""]
     for plan in analysis.plans:
         lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
                   *error_table_lines(analysis, plan, mark), ""]
