@@ -26,6 +26,7 @@ from . import kinematic_diagrams
 from .analysis import Analysis
 from .errors import GraphplanError, SceneError
 from .locale import strings
+from .misreadings import FAR_OFF_PRECISIONS
 from .reader import check_choice
 from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene
@@ -684,6 +685,25 @@ def scale_warnings(analysis: Analysis | None, pieces: tuple[str, ...]) -> list[s
     return below_reading(analysis)
 
 
+# The lengths a ruler reads a plan to, in mm: a precision outside them is a slip of the unit (5 for 0.5) that spoils the
+# drafting column and, through the measured-far-off threshold (twice it), hides misread lengths.
+SENSIBLE_DRAFTING_PRECISION = (0.05, 2.0)
+
+
+def drafting_precision_warnings(scene: Scene) -> list[str]:
+    """A line where the scene's ``drafting_precision`` is outside what a ruler reads, as a force_scale that draws a
+    polygon too small to read is told: drawn as asked, but said."""
+    precision = scene.drawing.drafting_precision
+    least, most = SENSIBLE_DRAFTING_PRECISION
+    if least <= precision <= most:
+        return []
+    effect = (f"every length read off a plan is rounded to {precision:g} mm and a hand reading is far off only "
+              f"beyond {FAR_OFF_PRECISIONS * precision:g} mm" if precision > most
+              else "finer than a ruler reads, the drafting column shows next to no error")
+    return [(f"drawing.drafting_precision: {precision:g} mm is outside what a ruler reads ({least:g} to {most:g} mm): "
+             f"{effect}; give 0.5 (a ruler read to half a millimetre)")]
+
+
 def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[str]:
     """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
@@ -712,6 +732,8 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
                  for name, size in cramped(details_of(scene.project, scene.title, form), form,
                                            labels(scene.locale)).items()
                  if name != "date" or isinstance(scene.project.date, str)]
+    if "errors" in pieces or "note" in pieces:
+        told += drafting_precision_warnings(scene)
     if "vibration" in pieces:
         from .vibration import isolation_warning, resonance_warning
 

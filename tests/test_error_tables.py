@@ -431,3 +431,27 @@ def test_readings_of_a_plan_at_a_scale_given_directly_are_told_that_key():
     (warning,) = [w for w in analyse(dataclasses.replace(scene, drawing=drawing)).warnings
                   if w.code == "measured-far-off"]
     assert "give `[drawing] velocity_scale = 0.01`" in warning.detail and "velocity_pole" not in warning.detail
+
+
+COARSE = "rounded to 100 mm and a hand reading is far off only beyond 200 mm"
+
+
+@pytest.mark.parametrize(("precision", "told"), [(100.0, COARSE), (0.01, "finer than a ruler reads"),
+                                                 (0.5, None), (2.0, None), (0.05, None)])
+def test_a_drafting_precision_no_ruler_reads_is_told_by_check_and_run(tmp_path, capsys, precision, told):
+    """drafting_precision = 100 (a slip for 1.0) rounded every drafted length to 0 or 100 mm and raised the far-off
+    threshold to 200 mm without a word, where a force_scale that draws a polygon too small to read is told."""
+    text = Path(FIXTURE).read_text(encoding="utf-8")
+    assert "drafting_precision = 0.5" in text
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text.replace("drafting_precision = 0.5", f"drafting_precision = {precision}"), encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    printed = capsys.readouterr()
+    lines = [line for line in (printed.out + printed.err).splitlines() if "drawing.drafting_precision" in line]
+    if told is None:
+        assert not lines
+    else:
+        (line,) = lines
+        assert line.startswith(f"warning: drawing.drafting_precision: {precision:g} mm is outside what a ruler reads "
+                               "(0.05 to 2 mm): ") and told in line and line.endswith("give 0.5 (a ruler read to half "
+                                                                                     "a millimetre)")
