@@ -424,7 +424,11 @@ def _measured_rows(position, analytic, plans, table, measured) -> list[ErrorRow]
             where = f"measured.{position}.{kind}.{segment_name}"
             # The acceleration plan's pole is drawn π and named p; a reading may call it either.
             written = segment_name.replace("π", "p") if kind == "acceleration" else segment_name
-            segment = split_segment(written, letters, where)
+            try:
+                segment = split_segment(written, letters, where)
+            except SceneError:
+                _refuse_a_value(segment_name, table, where)
+                raise
             if frozenset(segment) in read:
                 raise SceneError(where, f"is the segment {read[frozenset(segment)]} again (the same two points): "
                                  "measure each segment once")
@@ -455,6 +459,25 @@ def _laid_off(plan: Plan, segment: tuple[str, str]) -> str:
         return (f" ({written} is the normal component {normal}, laid off from ω²·l = v²/l, not read off: "
                 "the tangential component beside it gives ε)")
     return ""
+
+
+# How a student may type a value's name: the table's own (VE, omega4) or the textbook's letters (ω4, ε3).
+_GREEK_NAMES = {"ω": "omega", "ε": "epsilon"}
+
+
+def _refuse_a_value(name: str, table: list[Reading], where: str) -> None:
+    """Refuse a reading named as the value it stands for (``VE = 0.758``, ``omega4``), not as its segment: the
+    hint names the segment to measure instead, on the plan that gives the value (a student's common slip)."""
+    quantity = next((f"{word}{name[len(letter):]}" for letter, word in _GREEK_NAMES.items() if name.startswith(letter)),
+                    name)
+    reading = next((reading for reading in table if reading.quantity == quantity), None)
+    if reading is None:
+        return
+    segment = "".join(reading.segment)
+    plan = where.split(".")[2] if where.count(".") >= 3 else reading.plan
+    under = "" if plan == reading.plan else f" under [measured.{where.split('.')[1]}] {reading.plan}"
+    raise SceneError(where, f"{name} is the value, not a segment: give the segment {segment}{under} it is read from, "
+                     f"its length on the {reading.plan} plan in mm")
 
 
 def _coriolis_ends(plan: Plan) -> set[str]:

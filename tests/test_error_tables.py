@@ -455,3 +455,17 @@ def test_a_drafting_precision_no_ruler_reads_is_told_by_check_and_run(tmp_path, 
         assert line.startswith(f"warning: drawing.drafting_precision: {precision:g} mm is outside what a ruler reads "
                                "(0.05 to 2 mm): ") and told in line and line.endswith("give 0.5 (a ruler read to half "
                                                                                      "a millimetre)")
+
+
+@pytest.mark.parametrize(("kind", "name", "segment", "plan"), [
+    ("velocity", "VB", "pb", "velocity"), ("velocity", "VE", "pe", "velocity"),
+    ("velocity", "omega4", "pb", "velocity"), ("velocity", "ω4", "pb", "velocity"),  # ω4 = VB / lBC, C on the frame
+    ("acceleration", "aB", "pb", "acceleration"), ("acceleration", "VB", "pb", "velocity")])
+def test_a_value_typed_where_its_segment_was_asked_for_is_told_the_segment(kind, name, segment, plan):
+    """VE = 0.758 (the value, in m/s) was answered "is not two letters of the plan": a student's slip deserves
+    the segment to measure instead."""
+    under = "" if kind == plan else f" under [measured.5] {plan}"
+    with pytest.raises(SceneError) as caught:
+        analyse(with_measured({5: {kind: {name: 0.758}}}))
+    assert str(caught.value) == (f"measured.5.{kind}.{name}: {name} is the value, not a segment: give the segment "
+                                 f"{segment}{under} it is read from, its length on the {plan} plan in mm")
