@@ -114,7 +114,7 @@ def _polygons_line(rescaled: Rescaled, text: dict[str, str], mark: str) -> str:
     polygons = (text["errors_polygon"].format(label=rescaled.polygon) if rescaled.polygon
                 else text["errors_polygons"])
     if in_units(rescaled.drawn_at):
-        return text["errors_forces_in_units"].format(polygons=polygons)
+        return text["errors_forces_in_units"].format(polygons=polygons, setting="`[drawing] force_scale = 1`")
     return text["errors_forces_rescaled"].format(
         polygons=polygons, drawn=number(rescaled.drawn_at, 4, mark), read=read_at(rescaled).replace(".", mark),
         setting=setting(rescaled), off=f"{rescaled.off * 100.0:.1f}".replace(".", mark))
@@ -145,7 +145,10 @@ def reactions_intro(analysis: Analysis) -> str:
     """What the reaction rows compare, in the scene's language; with friction in the pairs, which polygons: those
     without friction, the linear system's reference, so a student who drew the friction polygons knows."""
     text = strings(analysis.scene.locale)
-    return text["errors_forces"] + (f" {text['errors_forces_without_friction']}" if analysis.friction else "")
+    # The file names and the key are written as they are in every language: placeholders keep them out of the words.
+    without = text["errors_forces_without_friction"].format(plain="forces_N.svg", with_friction="forces_friction_N.svg",
+                                                            measured="[measured] forces")
+    return text["errors_forces"] + (f" {without}" if analysis.friction else "")
 
 
 def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str) -> list[str]:
@@ -166,7 +169,8 @@ def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str)
     text = strings(analysis.scene.locale)
     values = ", ".join(f"{row.quantity} = {number(with_friction[row.quantity], mark=mark)} {text['newton']}"
                        for row in read)
-    return [text["errors_nearer_friction"].format(number=plan.number, values=values)]
+    return [text["errors_nearer_friction"].format(values=values, plain=f"forces_{plan.number}.svg",
+                                                  with_friction=f"forces_friction_{plan.number}.svg")]
 
 
 def markdown(analysis: Analysis) -> str:
