@@ -1,12 +1,14 @@
 """Hand readings (``[measured.N]``) far off the plan as constructed: a length misread, a segment taken for
-another, or a whole plan drawn at another scale than the scene's.
+another, or a whole plan or force polygon drawn at another scale than the scene's.
 
 A plan drawn with care keeps within a few per cent of the construction, and
 a short segment within the drafting precision of its two ends; a reading
-beyond both is a slip.  Where every reading of one plan stands in the same
-ratio to the construction, the slip is the plan's scale, not its lengths:
-the student laid off the driver's velocity (or acceleration) at another
-pole distance, and the warning gives the scale that makes the readings agree.
+beyond both is a slip.  Where every reading of one drawing implies the same
+scale (μV, μa; μF of a polygon, or of all of them), the slip is the drawing's
+scale, not its lengths: the student laid off the driver's velocity (or
+acceleration) at another pole distance, or drew the polygons at a μF of
+their own, and the warning gives the scene's key that sets that scale, at
+the round value near it, with how close the readings come there.
 """
 
 from __future__ import annotations
