@@ -146,9 +146,13 @@ def test_the_cycle_table_says_where_its_efficiency_is_the_reverse_ratio_and_wher
     held = ", ".join(str(numbers[i]) for i in np.flatnonzero(working & (moments > 0)))
     assert held and reverse
     notes = force_report.cycle_notes(analysis)
-    assert notes == [(f"At positions {reverse} the loads drive the driver (Mb0 and Mb against its motion): η there "
+
+    def at(numbers: str) -> str:   # one position is named in the singular
+        return f"At position{'s' if ',' in numbers else ''} {numbers}"
+
+    assert notes == [(f"{at(reverse)} the loads drive the driver (Mb0 and Mb against its motion): η there "
                       "is the ratio Mb/Mb0."),
-                     (f"At positions {held} the loads would drive the mechanism, but the friction holds them and the "
+                     (f"{at(held)} the loads would drive the mechanism, but the friction holds them and the "
                       "driver has to drive it: the mechanism locks itself against its loads driving it (η′ ≤ 0), and η "
                       "is not defined (—).")]
     assert all(note in force_report.markdown(analysis) for note in notes)
