@@ -12,7 +12,8 @@ through zero does not read as an infinite error.  The methods:
 * ``analytic``: graphplan's solver (:func:`graphplan.motion.solve`);
 * ``construction``: the velocity and acceleration plans as constructed, read exactly;
 * ``drafting d mm``: the same plans read with a ruler to d = 1, 0.5, 0.25, 0.1 mm at the scene's
-  scales (:func:`graphplan.check.drafted`);
+  scales (:func:`graphplan.check.drafted`), and to the scene's own ``[drawing] drafting_precision``
+  among them where it is none of these (its row marked ``own``);
 * ``diagram N``: kinematic diagrams at N driver positions per cycle (a slider driver: N − 1
   equal steps over its travel, a multiple of the intervals between the positions) differentiated
   by chords: the slope at a position is the chord through its two neighbours, twice
@@ -54,7 +55,11 @@ REPEATS = 5
 
 @dataclass
 class Row:
-    """One method's errors at the positions, and its run time."""
+    """One method's errors at the positions, and its run time.
+
+    ``own`` marks the drafting row read to the scene's own ``drafting_precision``: the one a student's plans
+    are read to.
+    """
 
     fixture: str
     method: str
@@ -62,10 +67,24 @@ class Row:
     positions: int
     seconds: float
     errors: dict[str, list[float]] = field(default_factory=dict)   # "velocity"/"acceleration" → errors
+    own: bool = False
 
     def stat(self, family: str, how: Callable) -> float:
         values = self.errors.get(family, [])
         return how(values) if values else math.nan
+
+
+def drafting_precisions(scene: Scene) -> tuple[tuple[float, bool], ...]:
+    """The precisions the plans are read to, coarsest first, each with whether it is the scene's own.
+
+    The standard :data:`PRECISIONS_MM` and the scene's ``[drawing] drafting_precision`` in its place among
+    them; a scene's precision equal to a standard one marks that one instead of adding a second row.
+    """
+    own = scene.drawing.drafting_precision
+    standard = [(precision, math.isclose(precision, own, rel_tol=1e-9)) for precision in PRECISIONS_MM]
+    if any(mine for _, mine in standard):
+        return tuple(standard)
+    return tuple(sorted([*standard, (own, True)], key=lambda pair: -pair[0]))
 
 
 def best_time(function: Callable, repeats: int = REPEATS):
@@ -245,9 +264,10 @@ def construction(case: Case) -> list[Row]:
     exact = [case.exact[index] for index in compared]
     exact_reading = [{r.quantity: r.value(plans) for r in table} for plans, table in drawn]
     rows = [Row(case.name, "construction", "", len(compared), seconds, relative_errors(exact_reading, exact))]
-    for precision in PRECISIONS_MM:
+    for precision, own in drafting_precisions(case.scene):
         got = [{r.quantity: r.value(plans, drafted(r.millimetres(plans), precision)) for r in table} for plans, table in drawn]
-        rows.append(Row(case.name, "drafting", f"{precision:g} mm", len(compared), seconds, relative_errors(got, exact)))
+        rows.append(Row(case.name, "drafting", f"{precision:g} mm", len(compared), seconds, relative_errors(got, exact),
+                        own))
     return rows
 
 
@@ -374,11 +394,13 @@ FLOOR = 1e-17
 
 
 def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
-               names: Mapping[str, str] | None = None) -> None:
+               names: Mapping[str, str] | None = None, own_tag: str = "{tag} (the scene's)") -> None:
     """Error against run time of one scene's rows on matplotlib ``axes`` (log-log; filled: accelerations).
 
     A few points are tagged with their drafting precision (in ``millimetre``) or the diagram's N;
-    ``names`` gives the legend's word for a method (its own name where it gives none).
+    ``names`` gives the legend's word for a method (its own name where it gives none).  The drafting row
+    read to the scene's own precision (:attr:`Row.own`) has its acceleration's point ringed and its tag written by
+    ``own_tag`` (``{tag}`` is the precision).
     """
     from matplotlib.ticker import LogFormatterSciNotation, LogLocator, NullFormatter
 
@@ -392,14 +414,27 @@ def draw_study(axes, rows: list[Row] | tuple[Row, ...], millimetre: str = "mm",
             axes.plot(x, y, marker=marker, color=colour, markerfacecolor=fill, linestyle="-" if len(chosen) > 1 else "none",
                       linewidth=0.8, markersize=6, label=(names or {}).get(method, method) if fam == "acceleration" else None)
         for r in chosen:
+            at = (r.seconds, max(r.stat("acceleration", max), FLOOR))
+            if r.own:
+                # Ringed at the acceleration, where the tags are: a second ring round its velocity's point ran into it.
+                axes.plot(*at, marker="o", markersize=11, markerfacecolor="none", markeredgecolor=colour,
+                          markeredgewidth=0.8, linestyle="none", gid="own-precision")
             # A few labels only: the drafting points share one run time, the small diagrams nearly so.
-            if r.parameter in ("1 mm", "0.1 mm") or (r.method == "diagram" and (r.positions in (12, 360) or r.positions > 1000)):
-                tag = r.parameter.replace("N = ", "").replace(" mm", f" {millimetre}")
+            tagged = r.parameter in ("1 mm", "0.1 mm") or (r.method == "diagram" and (r.positions in (12, 360) or r.positions > 1000))
+            if not (tagged or r.own):
+                continue
+            tag = r.parameter.replace("N = ", "").replace(" mm", f" {millimetre}")
+            if r.own:
+                tag = own_tag.format(tag=tag)
+            if tagged:
                 # The finest drafting's tag under its point: read to 1 and 0.1 mm alike (a scotch yoke's segment
                 # rounds the same), the two tags stood one on the other.
                 below = r.parameter == "0.1 mm"
-                axes.annotate(tag, (r.seconds, max(r.stat("acceleration", max), FLOOR)), textcoords="offset points",
-                              xytext=(4, -8 if below else 3), fontsize=6, color=colour)
+                axes.annotate(tag, at, textcoords="offset points", xytext=(4, -8 if below else 3), fontsize=6, color=colour)
+            else:
+                # The scene's own precision between the standard ones: its tag left of its point, clear of their tags.
+                axes.annotate(tag, at, textcoords="offset points", xytext=(-7, -2), fontsize=6, color=colour,
+                              horizontalalignment="right")
     axes.set_xscale("log")
     axes.set_yscale("log")
     # Ticks at 1 and 3 of each decade, labelled: the times span a decade or two, where powers of ten alone left one

@@ -10,8 +10,11 @@ is h²/6 of the third derivative).
 from __future__ import annotations
 
 import csv
+import dataclasses
 import io
+import json
 import math
+import statistics
 import tomllib
 from pathlib import Path
 
@@ -20,12 +23,21 @@ from test_motion_against_finite_differences import CASES
 from test_scene_errors import to_toml
 
 import graphplan
-from graphplan.accuracy import DIAGRAM_REFINEMENTS, diagram_refinements, prepare, study
-from graphplan.analysis import analyse
-from graphplan.check import drafted
+from graphplan.accuracy import (
+    DIAGRAM_REFINEMENTS,
+    Row,
+    diagram_refinements,
+    drafting_precisions,
+    draw_study,
+    prepare,
+    study,
+)
+from graphplan.analysis import analyse, instant
+from graphplan.check import drafted, readings
 from graphplan.cli import main
 from graphplan.deliverables import chosen
 from graphplan.output import WRITTEN
+from graphplan.plans import acceleration_plan, velocity_plan
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "fixtures"
@@ -113,8 +125,11 @@ def test_accuracy_is_delivered_on_request_only(tmp_path):
     table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
     assert [row["method"] for row in table][:2] == ["analytic", "construction"]
     assert all(float(row["velocity_max"]) < 1e-12 for row in table[:2])
+    # The scene reads its plans to 0.5 mm, one of the standard precisions: that row is marked as its own, not repeated.
+    assert [(row["parameter"], row["scene_precision"]) for row in table if row["method"] == "drafting"] == [
+        ("1 mm", "false"), ("0.5 mm", "true"), ("0.25 mm", "false"), ("0.1 mm", "false")]
     note = (out / "accuracy.md").read_text(encoding="utf-8")
-    assert note.startswith("# Точность методов") and "чертёжной точностью 0,5 мм" in note  # the scene is ru
+    assert note.startswith("# Точность методов") and "чертёжной точностью 0,5 мм (точность сцены) |" in note  # ru
     latex = (out / "accuracy.tex").read_text(encoding="utf-8")
     rows = latex.split("\\endlastfoot\n")[1].split("\\end{longtable}")[0].strip().splitlines()
     assert len(rows) == len(table)
@@ -178,3 +193,99 @@ def test_the_english_report_reads_the_study(tmp_path):
     assert text.startswith("# ")
     assert f"{result.orders['acceleration']:.2f}" in text
     assert math.isfinite(result.orders["velocity"])
+
+
+def test_the_scene_s_own_drafting_precision_has_its_row(tmp_path):
+    """A scene read to 0.3 mm was shown the plans read to 1, 0.5, 0.25 and 0.1 mm only, never its own.
+
+    Its row stands between 0.5 and 0.25 mm, marked as the scene's, and its errors are worked out here apart from
+    the study: every segment of the plans constructed at the positions rounded to 0.3 mm, turned into its quantity by
+    the plan's scale (and the link's length), against the analytic values results.json gives, each divided by the
+    largest magnitude of its quantity over the positions.
+    """
+    document = tomllib.loads((FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8"))
+    document["drawing"]["drafting_precision"] = 0.3
+    document["scene"]["locale"] = "en"
+    path = tmp_path / "scene.toml"
+    path.write_text(to_toml(document), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--only", "accuracy"]) == 0
+    table = list(csv.DictReader(io.StringIO((out / "accuracy.csv").read_text(encoding="utf-8"))))
+    assert [(row["parameter"], row["scene_precision"]) for row in table if row["method"] == "drafting"] == [
+        ("1 mm", "false"), ("0.5 mm", "false"), ("0.3 mm", "true"), ("0.25 mm", "false"), ("0.1 mm", "false")]
+    assert all(row["scene_precision"] == "false" for row in table if row["method"] != "drafting")
+    (own,) = [row for row in table if row["scene_precision"] == "true"]
+    note = (out / "accuracy.md").read_text(encoding="utf-8")
+    assert [line.split(" | ")[0] for line in note.splitlines() if "(the scene's)" in line] == [
+        "| plans read to 0.3 mm (the scene's)"]
+
+    scene = graphplan.load(path)
+    motion = analyse(scene).motion
+    mechanism = motion.mechanism
+    exact = json.loads((out / "results.json").read_text(encoding="utf-8"))["positions"]
+    assert len(exact) == int(own["positions"]) == 12  # no position is left out
+
+    def analytic(reading, at):
+        name, kind = reading.quantity, "v" if reading.plan == "velocity" else "a"
+        assert reading.slide is None  # a four-bar: no sliding pair
+        if name.startswith(("omega", "epsilon")):
+            return at["links"][name.removeprefix("omega").removeprefix("epsilon")]["omega" if kind == "v" else "epsilon"]
+        first, second = reading.points or (name[1:], None)
+        vector = complex(*at["points"][first][kind]) - (complex(*at["points"][second][kind]) if second else 0)
+        return abs(vector)
+
+    pairs = []  # (quantity, drafted value, analytic value) at every position
+    for index, at in enumerate(exact):
+        where, directions = instant(motion, index)
+        velocity = velocity_plan(mechanism, where, directions)
+        plans = {"velocity": velocity, "acceleration": acceleration_plan(mechanism, where, directions, velocity)}
+        for reading in readings(mechanism, plans, where):
+            plan = plans[reading.plan]
+            millimetres = abs(plan.mm(reading.segment[1]) - plan.mm(reading.segment[0]))
+            ruled = round(millimetres / 0.3) * 0.3
+            pairs.append((reading.quantity, reading.sign * ruled * plan.scale / reading.length, analytic(reading, at)))
+    peak: dict[str, float] = {}
+    for quantity, _, value in pairs:
+        peak[quantity] = max(peak.get(quantity, 0.0), abs(value))
+    assert min(peak.values()) > 0  # no quantity vanishes at every position
+    errors: dict[str, list[float]] = {"velocity": [], "acceleration": []}
+    for quantity, ruled, value in pairs:
+        family = "velocity" if quantity.startswith(("V", "omega")) else "acceleration"
+        errors[family].append(abs(ruled - value) / peak[quantity])
+    for family in ("velocity", "acceleration"):
+        assert float(own[f"{family}_max"]) == pytest.approx(max(errors[family]), rel=2e-4)
+        assert float(own[f"{family}_median"]) == pytest.approx(statistics.median(errors[family]), rel=2e-4)
+    # Between the standard precisions' errors: coarser than 0.25 mm, finer than 0.5 mm.
+    largest = {row["parameter"]: float(row["acceleration_max"]) for row in table if row["method"] == "drafting"}
+    assert largest["0.5 mm"] > largest["0.3 mm"] > largest["0.25 mm"]
+
+
+@pytest.mark.parametrize("precision, expected", [
+    (2.0, [(2.0, True), (1.0, False), (0.5, False), (0.25, False), (0.1, False)]),
+    (0.25, [(1.0, False), (0.5, False), (0.25, True), (0.1, False)]),
+    (0.05, [(1.0, False), (0.5, False), (0.25, False), (0.1, False), (0.05, True)]),
+])
+def test_the_scene_s_precision_takes_its_place_among_the_standard_ones_once(precision, expected):
+    scene = graphplan.load(FIXTURES / "slider_driven.toml")
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, drafting_precision=precision))
+    assert list(drafting_precisions(scene)) == expected
+
+
+@pytest.mark.parametrize("own, tags", [
+    ("0.3 mm", {"1 mm", "0.3 mm (the scene's)", "0.1 mm"}),
+    ("1 mm", {"1 mm (the scene's)", "0.1 mm"}),  # a standard precision tagged already: one tag, the scene's
+])
+def test_the_plot_rings_and_tags_the_scene_s_precision(own, tags):
+    from matplotlib.figure import Figure
+
+    parameters = ["1 mm", "0.5 mm", "0.3 mm", "0.1 mm"] if own == "0.3 mm" else ["1 mm", "0.5 mm", "0.1 mm"]
+    rows = [Row("scene", "drafting", parameter, 12, 4e-3, {"velocity": [k * 1e-4], "acceleration": [k * 2e-4]},
+                own=parameter == own) for k, parameter in enumerate(parameters, start=1)]
+    axes = Figure().subplots()
+    draw_study(axes, rows)
+    assert {text.get_text() for text in axes.texts} == tags
+    (tag,) = [text for text in axes.texts if "(the scene's)" in text.get_text()]
+    (mine,) = [row for row in rows if row.own]
+    assert tag.xy == (4e-3, mine.stat("acceleration", max))
+    (ring,) = [line for line in axes.lines if line.get_gid() == "own-precision"]
+    assert (list(ring.get_xdata()), list(ring.get_ydata())) == ([4e-3], [mine.stat("acceleration", max)])

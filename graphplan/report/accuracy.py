@@ -21,9 +21,11 @@ FAMILIES = ("velocity", "acceleration")
 
 
 def method_name(row: Row, text: Mapping[str, str]) -> str:
-    """A row's method as a reader calls it: "plans read to 0.5 mm", "kinematic diagrams, N = 48"."""
+    """A row's method as a reader calls it: "plans read to 0.5 mm", "plans read to 0.3 mm (the scene's)",
+    "kinematic diagrams, N = 48"."""
     if row.method == "drafting":
-        return text["accuracy_drafting"].format(precision=row.parameter.removesuffix(" mm").replace(".", text["decimal_mark"]))
+        precision = row.parameter.removesuffix(" mm").replace(".", text["decimal_mark"])
+        return text["accuracy_drafting_own" if row.own else "accuracy_drafting"].format(precision=precision)
     if row.method == "diagram":
         return text["accuracy_diagram"].format(count=row.positions)
     return text.get(f"accuracy_{row.method}", row.method)
@@ -63,19 +65,25 @@ def markdown(study: Study, locale: str, title: str) -> str:
 
 
 def csv_text(rows: Iterable[Row]) -> str:
-    """The rows for a spreadsheet, with the contract's identifiers (``fixture`` is the scene's name)."""
+    """The rows for a spreadsheet, with the contract's identifiers (``fixture`` is the scene's name).
+
+    The last column, ``scene_precision``, is ``true`` on the drafting row read to the scene's own
+    ``drafting_precision``.
+    """
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["fixture", "method", "parameter", "positions", "seconds",
-                     *(f"{family}_{stat}" for family in FAMILIES for stat in ("max", "median"))])
+                     *(f"{family}_{stat}" for family in FAMILIES for stat in ("max", "median")), "scene_precision"])
     for row in rows:
         writer.writerow([row.fixture, row.method, row.parameter, row.positions, f"{row.seconds:.4e}",
-                         *(f"{row.stat(family, how):.4e}" for family in FAMILIES for how in (max, statistics.median))])
+                         *(f"{row.stat(family, how):.4e}" for family in FAMILIES for how in (max, statistics.median)),
+                         "true" if row.own else "false"])
     return out.getvalue()
 
 
 def figure(study: Study, locale: str, title: str) -> str:
-    """``accuracy.svg``: largest error against run time on log-log axes (filled: accelerations)."""
+    """``accuracy.svg``: largest error against run time on log-log axes (filled: accelerations; ringed: the plans
+    read to the scene's own drafting precision)."""
     import matplotlib
     from matplotlib.figure import Figure
 
@@ -85,7 +93,7 @@ def figure(study: Study, locale: str, title: str) -> str:
         axes = drawn.subplots()
         names = {key.removeprefix("accuracy_legend_"): word for key, word in text.items()
                  if key.startswith("accuracy_legend_")}
-        draw_study(axes, study.rows, text["millimetre"], names)
+        draw_study(axes, study.rows, text["millimetre"], names, text["accuracy_tag_own"])
         axes.set_xlabel(text["accuracy_axis_time"].format(count=Count(len(study.case.compared))), fontsize=9)
         axes.set_ylabel(text["accuracy_axis_error"], fontsize=9)
         axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9)
