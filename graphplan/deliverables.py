@@ -18,7 +18,7 @@ import dataclasses
 import functools
 import io
 import math
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -152,31 +152,35 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         found += _linkage_drawings(analysis, pieces, dynamics)
     sheets = analysis is None and "sheets" in pieces
     # Each laid out once for its own drawing and the sheets of a machine without a linkage.
-    machine = []
+    machine, larger = [], []
     if analysis is None and ("dynamics" in pieces or sheets and missing(scene, None, "dynamics") is None):
         from .render import dynamics as dynamics_layout
 
         dynamics = _dynamics_of(scene, analysis, dynamics)
         machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, strings(scene.locale))
+        if sheets:
+            larger = dynamics_layout.larger_layouts(dynamics.model, dynamics.flywheel, strings(scene.locale))
     if "dynamics" in pieces and analysis is None:
         found += _dynamics_drawings(machine, pieces)
     rotor = _balancing_layers(scene) if "balancing" in pieces or sheets and scene.balancing is not None else []
     if "balancing" in pieces:
         found.append(Drawing("rotor_balancing", rotor))
     if sheets:
-        found += _machine_sheets(scene, machine, rotor)
+        found += _machine_sheets(scene, machine, rotor, larger)
     return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.title))
             for drawing in found]
 
 
-def _machine_sheets(scene: Scene, machine: list[Layer], rotor: list[Layer]) -> list[Drawing]:
-    """The sheets of a machine without a linkage: its dynamics drawing ``machine`` and its rotor's balancing."""
+def _machine_sheets(scene: Scene, machine: list[Layer], rotor: list[Layer],
+                    larger: Sequence[list[Layer]] = ()) -> list[Drawing]:
+    """The sheets of a machine without a linkage: its dynamics drawing ``machine`` (drawn ``larger`` where the
+    sheet has room) and its rotor's balancing."""
     from .render.sheet import balancing_panel, dynamics_panel, machine_sheets
     from .render.title_block import details_of, form_of
 
     details = details_of(scene.project, scene.title, form_of(scene.locale))
     details = dataclasses.replace(details, title=details.title or scene.title)
-    dynamics = [dynamics_panel(machine, scene.locale)] if machine else []
+    dynamics = [dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet)] if machine else []
     balancing = [balancing_panel(rotor, scene.locale)] if rotor else []
     return [Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size)
             for sheet in machine_sheets(dynamics, balancing, scene.drawing.sheet, scene.locale, details)]
@@ -209,15 +213,18 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     found: list[Drawing] = []
     analysis = draw.with_length_scale(analysis)
     draw.refuse_beyond_paper(analysis)
-    machine = None
+    machine, larger = None, []
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):
         from .render import dynamics as dynamics_layout
 
         dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
-        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, _dynamics_words(analysis.scene, analysis))
+        words = _dynamics_words(analysis.scene, analysis)
+        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, words)
+        if "sheets" in pieces:
+            larger = dynamics_layout.larger_layouts(dynamics.model, dynamics.flywheel, words)
     # The sheets hold the drawings that are also written on their own: each is laid out once.
-    panels = _course_panels(analysis, machine) if "sheets" in pieces else None
+    panels = _course_panels(analysis, machine, larger) if "sheets" in pieces else None
     if "positions" in pieces:
         layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
         found.append(Drawing("positions", layers))
@@ -294,16 +301,17 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_
     return force_layout.layout(sheet)
 
 
-def _course_panels(analysis: Analysis, machine: list | None = None):
+def _course_panels(analysis: Analysis, machine: list | None = None, larger: Sequence[list] = ()):
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
-    the dynamics drawing ``machine`` where the run draws one, and the rotor's balancing where the scene has it."""
+    the dynamics drawing ``machine`` where the run draws one (drawn ``larger`` where the sheet has room), and the
+    rotor's balancing where the scene has it."""
     from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel
 
     scene = analysis.scene
     diagrams = ()
     if missing(scene, analysis, "diagrams") is None:
         diagrams = (diagrams_panel(analysis, scene.drawing.sheet),)
-    dynamics = (dynamics_panel(machine, scene.locale),) if machine is not None else ()
+    dynamics = (dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet),) if machine is not None else ()
     # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
     balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()
     return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing)

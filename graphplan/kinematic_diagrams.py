@@ -65,6 +65,9 @@ FIELD_MM = 50.0
 # Bounds of a pole distance: a shorter one draws steep, unreadable rays, a longer one a wide sheet.
 LEAST_POLE_MM = 10.0
 GREATEST_POLE_MM = 80.0
+# The longest φ axis and the tallest field of diagrams drawn larger to fill a big sheet (mm): 1°/mm over a turn.
+GREATEST_AXIS_MM = 360.0
+GREATEST_FIELD_MM = 120.0
 
 
 @dataclass(frozen=True)
@@ -229,17 +232,25 @@ def closed_chord_derivative(values: np.ndarray, step: float) -> np.ndarray:
     return np.append(around, around[0])
 
 
-def pole_distance(span_mm: float, range_value: float, scale: float, time_scale: float) -> float:
+def greatest_pole(axis_mm: float) -> float:
+    """The longest pole distance (mm) of diagrams on a φ axis ``axis_mm`` long: :data:`GREATEST_POLE_MM`, and as
+    much longer as the axis is longer than :data:`AXIS_MM` (a pole distance that fills a field grows as μt
+    shrinks, with the axis, whatever the field's height)."""
+    return float(max(GREATEST_POLE_MM, math.floor(GREATEST_POLE_MM * axis_mm / AXIS_MM)))
+
+
+def pole_distance(span_mm: float, range_value: float, scale: float, time_scale: float,
+                  greatest: float = GREATEST_POLE_MM) -> float:
     """The whole pole distance H (mm) at which the derivative's range fills ``span_mm``.
 
     The derivative is drawn at ``μ' = μ/(μt·H)``, so its range takes
     ``range·μt·H/μ`` mm; H is rounded down to whole mm and kept between
-    :data:`LEAST_POLE_MM` and :data:`GREATEST_POLE_MM`.
+    :data:`LEAST_POLE_MM` and ``greatest``.
     """
     if range_value <= 0:
-        return GREATEST_POLE_MM
+        return greatest
     fitting = math.floor(span_mm * scale / (time_scale * range_value))
-    return float(min(GREATEST_POLE_MM, max(LEAST_POLE_MM, fitting)))
+    return float(min(greatest, max(LEAST_POLE_MM, fitting)))
 
 
 def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: int = DENSE_SAMPLES,
@@ -299,9 +310,10 @@ def kinematic_diagrams(mechanism: Mechanism, positions: PositionSet, samples: in
     along_scale = span / axis_mm
     time_scale = along_scale / abs(speed)
     displacement_scale = fit_scale(_drawn_range(s), field_mm)
-    velocity_pole = pole_distance(field_mm, _drawn_range(v), displacement_scale, time_scale)
+    greatest = greatest_pole(axis_mm)
+    velocity_pole = pole_distance(field_mm, _drawn_range(v), displacement_scale, time_scale, greatest)
     velocity_scale = displacement_scale / (time_scale * velocity_pole)
-    acceleration_pole = pole_distance(field_mm, _drawn_range(a), velocity_scale, time_scale)
+    acceleration_pole = pole_distance(field_mm, _drawn_range(a), velocity_scale, time_scale, greatest)
     scales = DiagramScales(along=along_scale, time=time_scale, displacement=displacement_scale,
                            velocity=velocity_scale, acceleration=velocity_scale / (time_scale * acceleration_pole),
                            velocity_pole=velocity_pole, acceleration_pole=acceleration_pole, axis_mm=axis_mm)

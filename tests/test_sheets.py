@@ -795,8 +795,9 @@ def test_the_kinematic_diagrams_fit_the_sheet_each_whole_or_shortened_by_whole_i
         assert not all(holds(sheet, form, *(bounds(part)[2] - bounds(part)[0], bounds(part)[3] - bounds(part)[1]))
                        for part in longer)
     else:
-        assert axis == 240.0
-        assert [layer.items for layer in panel.layers] == [layer.items for layer in usual]
+        # A1 has room to spare: drawn larger, the usual diagrams its last way, for a sheet with little room left.
+        assert axis == 240.0 if sheet == "A3" else axis >= 240.0
+        assert [layer.items for layer in panel.ways[-1].layers] == [layer.items for layer in usual]
 
 
 def test_diagrams_too_big_for_a_sheet_whole_stand_apart_on_it(analyses):

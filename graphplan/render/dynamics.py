@@ -83,21 +83,48 @@ class Scales:
     work: float       # μA, J/mm
     energy: float     # μT, J/mm: the ΔT diagram and the energy–mass diagram
     inertia: float    # μJ, kg·m²/mm (kg/mm)
+    # μm, kg/mm, of the reduced mass over a slider's travel (a driver that turns has none); 0: fitted to WORKS_MM.
+    mass: float = 0.0
 
 
-def scales_for(model: EquivalentModel) -> Scales:
-    """Round scales at which each diagram fills its field."""
+# Drawn larger to fill a big sheet (:func:`larger_layouts`): the abscissa of a cycle at 1.5°/mm and 1°/mm besides
+# the usual 2°/mm, and the fields this many times their usual height.
+LARGER_ABSCISSAE_MM = (360.0, 240.0, ABSCISSA_MM)
+LARGER_FIELDS = (2.0, 1.6, 1.3, 1.0)
+
+
+def scales_for(model: EquivalentModel, abscissa_mm: float = ABSCISSA_MM, fields: float = 1.0) -> Scales:
+    """Round scales at which each diagram fills its field: the cycle ``abscissa_mm`` long, each field ``fields``
+    times its usual height (:data:`MOMENTS_MM`, ...; the energy–mass diagram as many times its width)."""
     if model.turning and model.cyclic:
-        angle = 2.0 * math.pi / ABSCISSA_MM
+        angle = 2.0 * math.pi / abscissa_mm
     elif model.turning:  # a swing: a round number of degrees per millimetre
-        angle = math.radians(fit_scale(math.degrees(float(model.coordinate[-1])), ABSCISSA_MM))
+        angle = math.radians(fit_scale(math.degrees(float(model.coordinate[-1])), abscissa_mm))
     else:
-        angle = fit_scale(float(model.coordinate[-1]), ABSCISSA_MM)
+        angle = fit_scale(float(model.coordinate[-1]), abscissa_mm)
     moments = np.concatenate([model.driving, model.resisting])
     works = np.concatenate([model.driving_work, model.resisting_work])
-    return Scales(angle=angle, moment=fit_scale(_span(moments), MOMENTS_MM), work=fit_scale(_span(works), WORKS_MM),
-                  energy=fit_scale(_span(model.energy), ENERGY_MM),
-                  inertia=fit_scale(float(np.max(model.inertia)), ENERGY_MASS_MM))
+    mass = 0.0 if model.turning else \
+        fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM * fields)
+    return Scales(angle=angle, moment=fit_scale(_span(moments), MOMENTS_MM * fields),
+                  work=fit_scale(_span(works), WORKS_MM * fields), energy=fit_scale(_span(model.energy), ENERGY_MM * fields),
+                  inertia=fit_scale(float(np.max(model.inertia)), ENERGY_MASS_MM * fields), mass=mass)
+
+
+def larger_layouts(model: EquivalentModel, flywheel: Flywheel | None = None,
+                   text: Mapping[str, str] | None = None) -> list[list[Layer]]:
+    """The dynamics sheet (:func:`layout`) drawn larger, for a big sheet with room: on each of
+    :data:`LARGER_ABSCISSAE_MM` with the fields each of :data:`LARGER_FIELDS` times as high, but the usual
+    size; at round scales, each its own."""
+    found: list[list[Layer]] = []
+    seen = {scales_for(model)}
+    for abscissa in LARGER_ABSCISSAE_MM:
+        for fields in LARGER_FIELDS:
+            scales = scales_for(model, abscissa, fields)
+            if scales not in seen:
+                seen.add(scales)
+                found.append(layout(model, flywheel, text, scales))
+    return found
 
 
 def dynamics_svg(model: EquivalentModel, flywheel: Flywheel | None = None,
@@ -140,13 +167,13 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
         energy_mass = _energy_mass(model, flywheel, scales, words)
         # Clear of the left column's axis names ("φ, ° from position 1") by a gap, its own numbers included.
         left_column = max(bounds_of(layer.items)[2] for layer in layers)
-        right = max(ABSCISSA_MM + AXIS_RUN_MM + GAP_MM + 12.0, left_column + GAP_MM - bounds_of(energy_mass)[0])
+        right = max(max(ABSCISSA_MM, float(x[-1])) + AXIS_RUN_MM + GAP_MM + 12.0, left_column + GAP_MM - bounds_of(energy_mass)[0])
         layers.append(_layer("energy-mass", energy_mass, right, energy_dy))
         turned = _inertia_turned(model, scales, words)
         low = min(bottom, bounds_of(layers[-1].items)[1])
         layers.append(_layer("inertia", turned, right, low - GAP_MM - bounds_of(turned)[3]))
     elif not model.turning:
-        mass_scale = fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM)
+        mass_scale = scales.mass or fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM)
         mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, words["dyn_mass_axis"],
                         words["dyn_mass_scale"].format(value=format_scale(mass_scale)), words["dyn_mass"], scales,
                         words, floor=True)
@@ -400,4 +427,4 @@ def _nice_step(rough: float) -> float:
     return 10.0 * power
 
 
-__all__ = ["Scales", "dynamics_svg", "layout", "scales_for"]
+__all__ = ["Scales", "dynamics_svg", "larger_layouts", "layout", "scales_for"]

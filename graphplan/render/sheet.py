@@ -457,7 +457,10 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     shortened until each diagram fits beside or above the title block:
     the φ axis by whole intervals, so that the positions stay at whole
     millimetres, the fields by whole millimetres; the scales follow
-    from them as they always do.
+    from them as they always do.  On a sheet that holds them whole with
+    room to spare they are drawn larger as well (:func:`_larger_diagram_sizes`):
+    the panel's ways, largest first and the usual last, of which the
+    packing takes the largest that the room left on a sheet holds.
     """
     from ..kinematic_diagrams import AXIS_MM, FIELD_MM, interval_count, of_analysis
     from . import diagrams as diagrams_layout
@@ -490,7 +493,47 @@ def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
             axis, field = axis + grown[0], field + grown[1]
             title, drawn = longer
     parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
-    return Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+    usual = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+    if sheet == "none" or (axis, field) != (AXIS_MM, FIELD_MM) or not holds(sheet, form, *_size(usual.layers)):
+        return usual
+    # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
+    # larger way that an empty sheet holds, largest first, for the packing to take the largest the room left holds.
+    larger = []
+    for axis, field in _larger_diagram_sizes(intervals):
+        title, drawn = drawn_at(axis, field)
+        way = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+        if holds(sheet, form, width(way), height(way)):
+            larger.append(way)
+    if not larger:
+        return usual
+    # The parts are the usual diagrams': where no sheet holds a way whole, they stand apart at the usual size.
+    first, *others = sorted(larger, key=lambda way: -width(way) * height(way))
+    return replace(first, alternatives=(*others, usual))
+
+
+# Diagrams drawn larger on a sheet with room are tried at these multiples of the usual φ axis and of the usual
+# field, each kept within GREATEST_AXIS_MM and GREATEST_FIELD_MM: longer and taller, or only taller (as long as
+# the usual, they fit the room beside a plan sheet), for the packing to take the largest the room left holds.
+_AXIS_GROWTHS = (1.5, 1.25, 1.0)
+_FIELD_GROWTHS = (2.4, 2.0, 1.6, 1.3, 1.0)
+
+
+def _larger_diagram_sizes(intervals: int) -> list[tuple[float, float]]:
+    """The (φ axis, field) mm of diagrams drawn larger than the usual: the axis a whole number of millimetres
+    per interval, up to :data:`~graphplan.kinematic_diagrams.GREATEST_AXIS_MM`, the field whole millimetres up
+    to :data:`~graphplan.kinematic_diagrams.GREATEST_FIELD_MM`."""
+    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, GREATEST_AXIS_MM, GREATEST_FIELD_MM
+
+    sizes: list[tuple[float, float]] = []
+    for along in _AXIS_GROWTHS:
+        # The usual axis as it is (240 mm, however many intervals), a longer one by whole millimetres per interval.
+        axis = AXIS_MM if along == 1.0 else \
+            float(intervals * math.floor(min(AXIS_MM * along, GREATEST_AXIS_MM) / intervals))
+        for up in _FIELD_GROWTHS:
+            field = float(math.floor(min(FIELD_MM * up, GREATEST_FIELD_MM)))
+            if axis >= AXIS_MM and (axis, field) not in sizes and (axis, field) != (AXIS_MM, FIELD_MM):
+                sizes.append((axis, field))
+    return sizes
 
 
 def _size(layers: Sequence[Layer]) -> tuple[float, float]:
@@ -623,12 +666,17 @@ def _laid_out(analysis: Analysis, sheet: str) -> _LaidOut:
                                 lambda: (kinematics_panels(analysis), _force_sheets(analysis, sheet)))
 
 
-def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:
+def dynamics_panel(layers: Sequence[Layer], locale: str, larger: Sequence[Sequence[Layer]] = (),
+                   sheet: str | None = None) -> Panel:
     """The dynamics drawing (:func:`graphplan.render.dynamics.layout`) as a panel.
 
     Where no sheet holds it whole, its diagrams stand apart: the energy–mass
     diagram with Je(φ) under it while a sheet holds the two together, for
-    they share the axis of Je.
+    they share the axis of Je.  ``larger`` are the same drawing drawn larger
+    (:func:`graphplan.render.dynamics.larger_layouts`): where an empty
+    ``sheet`` holds the usual one whole, those it holds too are its ways,
+    largest first, so that the drawing fills the sheet as a course project's
+    does; its parts stay the usual drawing's.
     """
     alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,)) for layer in layers if layer.name != TITLE_LAYER}
     parts: list[Panel] = []
@@ -639,7 +687,16 @@ def dynamics_panel(layers: Sequence[Layer], locale: str) -> Panel:
             together = (part, alone["inertia"])
             part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together)
         parts.append(part)
-    return Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"])
+    usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"])
+    if sheet is None or sheet == "none" or not larger:
+        return usual
+    form = form_of(locale)
+    if not holds(sheet, form, width(usual), height(usual)):
+        return usual
+    ways = [replace(usual, layers=tuple(drawn)) for drawn in larger]
+    ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
+                  key=lambda way: -width(way) * height(way))
+    return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
 
 
 def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details | None = None,
