@@ -349,7 +349,8 @@ class _Note:
         if driver.kind == "crank":
             omega = f"{self.n(abs(driver.omega))} {self.text['unit_rad_per_s']}{self.with_sense(driver.omega)}"
             rows.append([f"ω{driver.link}", omega])
-            rows.append([f"ε{driver.link}", f"{self.n(driver.epsilon)} {self.text['unit_rad_per_s2']}"])
+            epsilon = f"{self.n(abs(driver.epsilon))} {self.text['unit_rad_per_s2']}{self.with_sense(driver.epsilon)}"
+            rows.append([f"ε{driver.link}", epsilon])
             if not driver.cyclic:  # a rocking crank: the angles its positions run between
                 rows.append([f"φ{driver.link}", " … ".join(f"{self.n(math.degrees(end))}°" for end in driver.travel)])
         else:
@@ -642,7 +643,7 @@ class _Note:
                       f"{self.n(abs(epsilon) * arm)} {unit}")
         total = f"a{joint} = √((a{joint}ⁿ)² + (a{joint}^τ)²) = {self.n(value)} {unit}"
         self.para(self.t("note_crank_acceleration_tangential", normal=normal, tangential=tangential, total=total,
-                         joint=joint, pivot=driver.pivot, link=driver.link))
+                         joint=joint, pivot=driver.pivot, link=driver.link, sense=self.sense(epsilon)))
 
     def scale(self, pp: PlanPosition, plan: Plan) -> None:
         """The scale factor of the plan with the arithmetic that chose it (as :func:`graphplan.plans` does)."""
