@@ -339,6 +339,11 @@ def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
     return found
 
 
+# Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
+# the console gives them without one.
+SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout"})
+
+
 def _lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     """A ``lengths-in-mm`` warning, at the first position, where the scene's lengths are implausible as metres: a
     link or the frame larger than any machine's, or a crank turning its pin faster than any machine does."""

@@ -178,9 +178,12 @@ def _pieces(scene: Scene, analysis: Analysis | None) -> str:
 
 
 def _print_warnings(analysis: Analysis) -> None:
+    from .analysis import SCENE_WIDE_WARNINGS
+
     for warning in analysis.warnings:
         number = int(analysis.positions.numbers[warning.position])
-        print(f"warning: position {number}: {warning.detail}")
+        where = "" if warning.code in SCENE_WIDE_WARNINGS else f"position {number}: "
+        print(f"warning: {where}{warning.detail}")
 
 
 def _run(arguments: argparse.Namespace) -> int:
