@@ -56,10 +56,11 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     names each position near a toggle, and each toggle between two of the positions, where the real mechanism
     may change its assembly and the positions beyond it keep the scene's.
     """
-    from .analysis import PATH_SAMPLES, reach_hint
+    from .analysis import PATH_SAMPLES
     from .motion import reference_at, with_toggles_between
     from .motion import solve as solve_motion
     from .positions import make_positions
+    from .reach_advice import reach_hint
 
     if not isinstance(scene, Scene):
         raise TypeError(f"solve takes a scene, as graphplan.load(path) reads it (got {scene!r})")

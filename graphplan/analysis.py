@@ -6,20 +6,18 @@ so that the numbers in ``results.json``, the drawings and a notebook agree.
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import math
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
 from .cycle_work import CycleWork, cycle_work
-from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionError
+from .errors import SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
-from .groups.base import Group
 from .joint_friction import FrictionPair, check_journals, friction_loads, friction_pairs
 from .kinematics import at
 from .lever import Lever, lever
@@ -28,9 +26,10 @@ from .locale import strings
 from .locking import LockedSpan, locked_between
 from .mechanism import Mechanism, build
 from .misreadings import misread
-from .motion import Motion, PositionWarning, reference_at, solve, toggles_between
+from .motion import Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
-from .positions import PositionSet, make_positions, reach
+from .positions import PositionSet, make_positions
+from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import Scene
 from .statics import Equilibrium, equilibrium, pairs, turned_round
@@ -148,128 +147,6 @@ class Analysis:
         planned = {plan.number for plan in self.plans}
         return (*(row for plan in self.plans for row in plan.errors),
                 *(row for position in self.velocity_plans if position.number not in planned for row in position.errors))
-
-
-@contextlib.contextmanager
-def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[None]:
-    """Where a crank cannot go, say where it can: the ranges of its reach, and a swing inside one of them; or, for
-    values a caller gave (``first`` the first of them, where the assemblies were taken), that they keep within one."""
-    try:
-        yield
-    except AssemblyError as error:
-        driver = mechanism.driver
-        if driver.kind != "crank":
-            raise
-        taken = None
-        if first is not None:
-            with contextlib.suppress(AssemblyError, SingularPositionError):
-                taken = reference_at(mechanism, first)
-        ranges = reach(mechanism, taken)
-        if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
-            raise
-        if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
-            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
-        stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
-                        Group.reach_ends)
-        # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
-        advice = (_reach_advice(driver.link, ranges, False, stopping, "the values") if first is not None
-                  else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
-                                     runs=functools.partial(_swing_that_runs, mechanism.scene)))
-        raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
-
-
-def _mirrored_sketch(mechanism: Mechanism) -> str | None:
-    """Where a mechanism assembles at no angle of its crank, but would with a group's sketched orientation turned
-    over (a triad's corners sketched running the other way round): what to sketch instead.  None where that is
-    not so, and the lengths are to check."""
-    scene = mechanism.scene
-    for n, group in enumerate(scene.groups):
-        turned = group.mirrored()
-        if turned is None:
-            continue
-        other = replace(scene, groups=(*scene.groups[:n], turned, *scene.groups[n + 1:]))
-        try:
-            ranges = reach(build(other))
-        except GraphplanError:
-            continue
-        if not ranges:
-            continue
-        sketch, mirrored = dict(group.near), dict(turned.near)
-        b, d, f = group.inner_joints
-        running = "counter-clockwise" if ((sketch[d] - sketch[b]).conjugate() * (sketch[f] - sketch[b])).imag > 0 \
-            else "clockwise"
-        other_way = {"clockwise": "counter-clockwise", "counter-clockwise": "clockwise"}[running]
-        where = mirrored[f]
-        reaches = "" if ranges == ((0.0, 2.0 * math.pi),) else " (" + "; ".join(
-            f"link {mechanism.driver.link} then reaches from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°"
-            for low, high in ranges) + ")"
-        return (f"the mechanism assembles at no angle of link {mechanism.driver.link} as sketched: {group.where}.near "
-                f"runs {b}, {d}, {f} {running} round the ternary link {group.ternary}, and its lengths close it only "
-                f"the other way round, {other_way}: the lengths are right, the sketch is mirrored; sketch {f} on the "
-                f"other side of {b}{d}, e.g. {f} = [{where.real:.4g}, {where.imag:.4g}] (its mirror image across "
-                f"{b}{d}){reaches}")
-    return None
-
-
-def _inward(end: float, rounding) -> str:
-    """An end of the reach in degrees to two places, rounded towards the inside (``math.ceil`` at a lower end)
-    past the bisection's last digits, which would make -60° -59.99°."""
-    return f"{rounding(round(math.degrees(end) * 100.0, 4)) / 100.0:.2f}"
-
-
-def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool,
-                  stopping: str = Group.reach_ends, kept: str = "driver.swing",
-                  runs: Callable[[float, float], tuple[int, int] | None] | None = None) -> str:
-    """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try (of
-    ``runs``, the swing within a range that the run takes, where given); ``stopping`` says what stops it at the
-    ends, ``kept`` what is to keep within them."""
-    if not ranges:
-        return f"the mechanism assembles at no angle of link {link}: check the lengths"
-    # Rounded inward: a swing to an end as written is then inside the reach (70.49° of a reach to 70.4907° was
-    # written 70.5° and refused).
-    spans = " and ".join(f"from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°" for low, high in ranges)
-    told = f"link {link} reaches only {spans} (at each end {stopping})"
-    if not cyclic:
-        return f"{told}: keep {kept} within one of these"
-    low, high = max(ranges, key=lambda span: span[1] - span[0])
-    if runs is not None:
-        swing = runs(low, high)
-    else:
-        # A degree short of each end, where the velocities are determined.
-        first, last = math.ceil(math.degrees(low) + 1.0), math.floor(math.degrees(high) - 1.0)
-        swing = (first, last) if last > first else None
-    example = f", e.g. driver.swing = [{swing[0]}, {swing[1]}]" if swing is not None else ""
-    return f"{told}; since it cannot turn round, drive it as a rocker: driver.swing = [from, to] in degrees{example}"
-
-
-# How far (degrees) inside the ends of a crank's reach the swing it is advised to rock over keeps, tried in turn:
-# a degree where the velocities are determined, and further in where the accelerations a toggle at an end drives up
-# are more than the plans or the kinematic diagrams can draw (a swing a degree short of its ends was refused at once).
-SWING_MARGINS_DEG = (1.0, 2.0, 3.0, 5.0, 8.0, 13.0, 21.0, 34.0)
-
-
-def _swing_that_runs(scene: Scene, low: float, high: float) -> tuple[int, int] | None:
-    """The swing (whole degrees) within the reach from ``low`` to ``high`` (rad), nearest its ends, that the run
-    takes: the scene rocking over it is analysed and checked for everything a run would refuse, as ``check`` does;
-    None where none of :data:`SWING_MARGINS_DEG` gives one."""
-    # The run's refusals belong to the deliverables, a later stage: imported only on this path of a refusal.
-    from .deliverables import chosen, refuse_as_run_would
-
-    driver = scene.driver
-    for margin in SWING_MARGINS_DEG:
-        first, last = math.ceil(math.degrees(low) + margin), math.floor(math.degrees(high) - margin)
-        if last <= first:
-            return None
-        # A rocking crank takes no positions.start and no flywheel: as the user who rocks it leaves them out.
-        rocking = replace(scene, driver=replace(driver, swing=(math.radians(first), math.radians(last))),
-                          positions=replace(scene.positions, start=0.0), dynamics=None)
-        try:
-            analysis = analyse(rocking)
-            refuse_as_run_would(rocking, analysis, chosen(rocking, analysis))
-        except GraphplanError:
-            continue
-        return first, last
-    return None
 
 
 def analyse(scene: Scene) -> Analysis:
