@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 
 from .check import ErrorRow, is_reaction
 from .motion import PositionWarning
-from .scales import STANDARD_MANTISSAS
+from .scales import nearest_standard_scale
 
 if TYPE_CHECKING:
     from .analysis import VelocityPosition
@@ -175,10 +175,7 @@ def _rescaled(kind: str, polygon: str | None, read: list[tuple[ErrorRow, float, 
 def _round_scale(scale: float) -> float:
     """The standard scale factor nearest ``scale`` where one is within 5 % of it (a student draws at one), else
     ``scale`` to three digits."""
-    exponent = math.floor(math.log10(scale))
-    standard = [mantissa * 10.0 ** power for power in (exponent - 1, exponent, exponent + 1)
-                for mantissa in STANDARD_MANTISSAS]
-    near = float(f"{min(standard, key=lambda value: abs(math.log(value / scale))):.12g}")
+    near = nearest_standard_scale(scale)
     return near if abs(near / scale - 1.0) <= _ROUND_SHARE else float(f"{scale:.3g}")
 
 

@@ -28,6 +28,15 @@ def standard_scale(least: float) -> float:
     raise AssertionError("unreachable: 10^(exponent+1) ≥ least")
 
 
+def nearest_standard_scale(value: float) -> float:
+    """The standard scale factor nearest ``value`` (which must be > 0) by ratio: the one a drawing found at
+    ``value`` was most likely drawn at."""
+    exponent = math.floor(math.log10(value))
+    near = [float(f"{mantissa}e{power}") for power in (exponent - 1, exponent, exponent + 1)
+            for mantissa in STANDARD_MANTISSAS]
+    return min(near, key=lambda candidate: abs(math.log(candidate / value)))
+
+
 def next_standard_scale(scale: float) -> float:
     """The standard scale factor just above ``scale``: the drawing a step smaller."""
     return standard_scale(scale * (1.0 + 1e-9))
