@@ -18,6 +18,7 @@ from xml.etree import ElementTree
 import cairosvg
 import numpy as np
 import pytest
+from test_dynamics_without_linkage import PRESS
 
 import graphplan
 from graphplan.analysis import analyse
@@ -942,25 +943,14 @@ def test_a_linkages_sheets_end_with_the_rotors_balancing_where_the_scene_has_one
     assert not any("Balancing of the rotor" in _texts(path.read_text(encoding="utf-8")) for path in sheets[:-1])
 
 
-# A machine known by its load diagrams alone: driving power constant, resistance 367.7 W for a third of the turn and
-# 3677 W for two thirds, n = 100 rpm, δ = 0.05 (the power cycle of issue 7's worked example: JF = 80.473 kg·m²).
-_PRESS = """[scene]
-title = "Punching press"
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-driving = "constant"
-"""
-
-
 def test_a_machine_without_a_linkage_gets_its_dynamics_on_sheets_then_its_rotors_balancing(tmp_path, capsys):
     """--sheet A3 on a scene of load diagrams drew no sheet ("only a [balancing] is drawn on a sheet"), though its
     work, energy and flywheel are a course project's dynamics sheet."""
     from graphplan.cli import main
 
     scene = tmp_path / "press.toml"
-    scene.write_text(_PRESS + "[balancing]" + _ROTOR_ALONE.split("[balancing]")[1].split("[vibration]")[0],
+    # The power cycle of issue 7's worked example: JF = 80.473 kg·m² (its flywheel on a 1440 rpm shaft besides).
+    scene.write_text(PRESS + "[balancing]" + _ROTOR_ALONE.split("[balancing]")[1].split("[vibration]")[0],
                      encoding="utf-8")
     assert main(["run", str(scene), "--sheet", "A3", "--out", str(tmp_path / "out")]) == 0
     assert "warning" not in capsys.readouterr().out
