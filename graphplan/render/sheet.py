@@ -598,14 +598,6 @@ def dynamics_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1",
     return _sheets(panels, sheet, locale, "sheet_dynamics", title, None, details, first, count)
 
 
-def balancing_sheet(panels: Sequence[Panel | Sequence[Layer]], sheet: str = "A1", locale: str = "en",
-                    title: str = "", details: Details | None = None, first: int = 1,
-                    count: int | None = None) -> list[Sheet]:
-    """The sheets of the rotor's balancing (:func:`balancing_panel`; :func:`kinematics_sheet`), with no μl: its
-    polygons are drawn at scales of mass-radius products, each its own."""
-    return _sheets(panels, sheet, locale, "sheet_balancing", title, None, details, first, count)
-
-
 def balancing_panel(layers: Sequence[Layer], locale: str) -> Panel:
     """The balancing drawing (:func:`graphplan.render.balancing.layout`) as a panel to no length scale.
 
