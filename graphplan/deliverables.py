@@ -152,14 +152,10 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         found += _linkage_drawings(analysis, pieces, dynamics)
     sheets = analysis is None and "sheets" in pieces
     # Each laid out once for its own drawing and the sheets of a machine without a linkage.
-    machine, larger = [], []
+    machine: list[Layer] = []
+    larger = None
     if analysis is None and ("dynamics" in pieces or sheets and missing(scene, None, "dynamics") is None):
-        from .render import dynamics as dynamics_layout
-
-        dynamics = _dynamics_of(scene, analysis, dynamics)
-        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, strings(scene.locale))
-        if sheets:
-            larger = dynamics_layout.larger_layouts(dynamics.model, dynamics.flywheel, strings(scene.locale))
+        machine, larger = _machine_layouts(_dynamics_of(scene, analysis, dynamics), strings(scene.locale))
     if "dynamics" in pieces and analysis is None:
         found += _dynamics_drawings(machine, pieces)
     rotor = _balancing_layers(scene) if "balancing" in pieces or sheets and scene.balancing is not None else []
@@ -171,8 +167,20 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
             for drawing in found]
 
 
+# The dynamics drawn larger (:func:`graphplan.render.dynamics.larger_layouts`), laid out when called.
+Larger = Callable[[], Sequence[Sequence[Layer]]]
+
+
+def _machine_layouts(dynamics: MachineDynamics, words: Mapping[str, str]) -> tuple[list[Layer], Larger]:
+    """The dynamics drawing, and the same drawn larger for a sheet with room, laid out only when a sheet asks."""
+    from .render import dynamics as dynamics_layout
+
+    return (dynamics_layout.layout(dynamics.model, dynamics.flywheel, words),
+            functools.partial(dynamics_layout.larger_layouts, dynamics.model, dynamics.flywheel, words))
+
+
 def _machine_sheets(scene: Scene, machine: list[Layer], rotor: list[Layer],
-                    larger: Sequence[list[Layer]] = ()) -> list[Drawing]:
+                    larger: Larger | None = None) -> list[Drawing]:
     """The sheets of a machine without a linkage: its dynamics drawing ``machine`` (drawn ``larger`` where the
     sheet has room) and its rotor's balancing."""
     from .render.sheet import balancing_panel, dynamics_panel, machine_sheets
@@ -213,16 +221,11 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     found: list[Drawing] = []
     analysis = draw.with_length_scale(analysis)
     draw.refuse_beyond_paper(analysis)
-    machine, larger = None, []
+    machine, larger = None, None
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):
-        from .render import dynamics as dynamics_layout
-
-        dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
-        words = _dynamics_words(analysis.scene, analysis)
-        machine = dynamics_layout.layout(dynamics.model, dynamics.flywheel, words)
-        if "sheets" in pieces:
-            larger = dynamics_layout.larger_layouts(dynamics.model, dynamics.flywheel, words)
+        machine, larger = _machine_layouts(_dynamics_of(analysis.scene, analysis, dynamics),
+                                           _dynamics_words(analysis.scene, analysis))
     # The sheets hold the drawings that are also written on their own: each is laid out once.
     panels = _course_panels(analysis, machine, larger) if "sheets" in pieces else None
     if "positions" in pieces:
@@ -301,7 +304,7 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...], with_
     return force_layout.layout(sheet)
 
 
-def _course_panels(analysis: Analysis, machine: list | None = None, larger: Sequence[list] = ()):
+def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larger | None = None):
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
     the dynamics drawing ``machine`` where the run draws one (drawn ``larger`` where the sheet has room), and the
     rotor's balancing where the scene has it."""

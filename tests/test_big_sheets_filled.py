@@ -101,7 +101,7 @@ def test_the_dynamics_fill_an_a1_sheet_at_a_standard_angle_scale(shaper):
     flywheel = flywheel_for(model, 0.05)
     usual = layout(model, flywheel)
     (before,) = dynamics_sheet([dynamics_panel(usual, "en")], "A1")
-    (sheet,) = dynamics_sheet([dynamics_panel(usual, "en", larger_layouts(model, flywheel), "A1")], "A1")
+    (sheet,) = dynamics_sheet([dynamics_panel(usual, "en", lambda: larger_layouts(model, flywheel), "A1")], "A1")
     grown, was = _share(sheet.panels["dynamics"], sheet.frame), _share(before.panels["dynamics"], before.frame)
     assert grown >= 0.5 and grown > was * 1.15
     written = _written(sheet, "dynamics-moments")

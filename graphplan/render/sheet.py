@@ -658,17 +658,18 @@ def _laid_out(analysis: Analysis, sheet: str) -> _LaidOut:
                                 lambda: (kinematics_panels(analysis), _force_sheets(analysis, sheet)))
 
 
-def dynamics_panel(layers: Sequence[Layer], locale: str, larger: Sequence[Sequence[Layer]] = (),
-                   sheet: str | None = None) -> Panel:
+def dynamics_panel(layers: Sequence[Layer], locale: str,
+                   larger: Callable[[], Sequence[Sequence[Layer]]] | None = None, sheet: str | None = None) -> Panel:
     """The dynamics drawing (:func:`graphplan.render.dynamics.layout`) as a panel.
 
     Where no sheet holds it whole, its diagrams stand apart: the energy–mass
     diagram with Je(φ) under it while a sheet holds the two together, for
-    they share the axis of Je.  ``larger`` are the same drawing drawn larger
-    (:func:`graphplan.render.dynamics.larger_layouts`): where an empty
-    ``sheet`` holds the usual one whole, those it holds too are its ways,
-    largest first, so that the drawing fills the sheet as a course project's
-    does; its parts stay the usual drawing's.
+    they share the axis of Je.  ``larger`` lays out the same drawing drawn
+    larger (:func:`graphplan.render.dynamics.larger_layouts`); it is called
+    only where an empty ``sheet`` holds the usual one whole, and those of
+    them it holds too are the panel's ways, largest first, so that the
+    drawing fills the sheet as a course project's does; its parts stay the
+    usual drawing's.
     """
     alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,)) for layer in layers if layer.name != TITLE_LAYER}
     parts: list[Panel] = []
@@ -680,12 +681,12 @@ def dynamics_panel(layers: Sequence[Layer], locale: str, larger: Sequence[Sequen
             part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together)
         parts.append(part)
     usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"])
-    if sheet is None or sheet == "none" or not larger:
+    if sheet is None or sheet == "none" or larger is None:
         return usual
     form = form_of(locale)
     if not holds(sheet, form, width(usual), height(usual)):
         return usual
-    ways = [replace(usual, layers=tuple(drawn)) for drawn in larger]
+    ways = [replace(usual, layers=tuple(drawn)) for drawn in larger()]
     ways = sorted((way for way in ways if holds(sheet, form, width(way), height(way))),
                   key=lambda way: -width(way) * height(way))
     return replace(ways[0], alternatives=(*ways[1:], usual)) if ways else usual
