@@ -58,6 +58,13 @@ class FrictionPair:
         theta = self.spec.groove_half_angle
         return self.sliding and theta is not None and not math.isclose(theta, math.pi / 2)
 
+    @property
+    def load_names(self) -> tuple[str, str]:
+        """The pair's friction loads: on the target from the source, as the tables letter it (``Ff16``,
+        ``Mf12``), and back on the source (``Ff61``)."""
+        letters = "Ff" if self.sliding else "Mf"
+        return f"{letters}{self.source}{self.target}", f"{letters}{self.target}{self.source}"
+
 
 def pair_name(pair: FrictionPair, pairs: Sequence[FrictionPair]) -> str:
     """How the drawings and the report name a pair with friction in its ρ or f (ρO, fE, ρ23): by its joint, or by
@@ -155,8 +162,9 @@ def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping
         magnitude = np.abs(reactions[pair.reaction])
         if not pair.sliding:
             moment = -turning_sense(pair, state) * pair.radius * magnitude
-            loads.append(Load(f"Mf{pair.source}{pair.target}", pair.target, None, 0j, moment))
-            loads.append(Load(f"Mf{pair.target}{pair.source}", pair.source, None, 0j, -moment))
+            on_target, on_source = pair.load_names
+            loads.append(Load(on_target, pair.target, None, 0j, moment))
+            loads.append(Load(on_source, pair.source, None, 0j, -moment))
         else:
             relative = state.sliding[pair.target]
             # At rest in its pair (an extreme position), against the sliding about to begin.
@@ -166,8 +174,9 @@ def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping
             with np.errstate(invalid="ignore", divide="ignore"):
                 direction = np.where(speed > 0, relative / np.where(speed > 0, speed, 1.0), 0j)
             force = -pair.coefficient * magnitude * direction
-            loads.append(Load(f"Ff{pair.source}{pair.target}", pair.target, pair.joint, force, 0.0))
-            loads.append(Load(f"Ff{pair.target}{pair.source}", pair.source, pair.joint, -force, 0.0))
+            on_target, on_source = pair.load_names
+            loads.append(Load(on_target, pair.target, pair.joint, force, 0.0))
+            loads.append(Load(on_source, pair.source, pair.joint, -force, 0.0))
     return tuple(loads)
 
 

@@ -606,7 +606,7 @@ def _turn(centre: complex, radius: float, moment: float, name: str, stroke: Stro
 def _friction_moment_joints(sheet: ForceSheet) -> dict[str, str]:
     """The journal each friction moment turns about: ``Mf23`` and ``Mf32`` about the joint of 2 and 3."""
     return {name: pair.joint for pair in sheet.friction if not pair.sliding
-            for name in (f"Mf{pair.source}{pair.target}", f"Mf{pair.target}{pair.source}")}
+            for name in pair.load_names}
 
 
 def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[Primitive], list[Anchor], list[str]]:
@@ -674,11 +674,10 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
             coefficient = (f"f′{where} = {short(pair.spec.f)}/sin {short(math.degrees(theta))}° = "
                            f"{short(pair.coefficient)}, φ = arctan f′")
         values.append(f"{coefficient} = {significant(math.degrees(math.atan(pair.coefficient)))}°")
-        name = f"Ff{pair.source}{pair.target}"
-        load = next((load for load in group.loads if load.name in (name, f"Ff{pair.target}{pair.source}")), None)
+        load = next((load for load in group.loads if load.name in pair.load_names), None)
         force = abs(load.force) if load is not None else pair.coefficient * abs(
             sheet.forces.reactions[pair.reaction].force)
-        values.append(f"{name} = {significant(force)} {text['newton']}")
+        values.append(f"{pair.load_names[0]} = {significant(force)} {text['newton']}")
     if not values:
         return []
     return _wrapped([text["sliding_friction"].format(values=values[0]), *values[1:]])

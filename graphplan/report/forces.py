@@ -296,7 +296,7 @@ def friction_load_rows(analysis: Analysis, plan: PlanPosition) -> list[FrictionL
     rows = []
     for pair in analysis.friction:
         where = pair_name(pair, analysis.friction)
-        name = f"{'Ff' if pair.sliding else 'Mf'}{pair.source}{pair.target}"
+        name = pair.load_names[0]
         load = acting.get(name)
         moving = load is None or bool(np.any(load.force if pair.sliding else load.moment))
         rows.append(FrictionLoad(pair, where, name, abs(rubbing.reactions[pair.reaction].force), moving))

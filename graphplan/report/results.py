@@ -20,7 +20,10 @@ import numpy as np
 from .. import __version__
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..cycle_work import CycleWork
+from ..forces import Load
+from ..joint_friction import FrictionPair, friction_loads
 from ..kinematics import as_xy, at
+from ..loads import motion_state
 from ..statics import efficiency
 
 SIGNIFICANT = 12
@@ -76,6 +79,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
     balance, rubbing = analysis.equilibrium, analysis.with_friction
     balance_noise = _cycle_noise(balance) if balance is not None else {}
     rubbing_noise = _cycle_noise(rubbing) if balance is not None and rubbing is not None else {}
+    rubbing_loads = _cycle_friction_loads(analysis) if balance is not None and rubbing is not None else {}
     planned = {plan.index: plan for plan in analysis.plans}
     velocity_planned = {position.index: position for position in analysis.velocity_plans}
     settled = {*analysis.scene.frame_points, driver.joint, driver.link}
@@ -106,12 +110,14 @@ def results(analysis: Analysis) -> dict[str, Any]:
         if i in planned:
             entry["plans"] = _plans(planned[i])
             if planned[i].forces is not None:
-                entry["forces"] = _forces(planned[i], mechanism)
+                entry["forces"] = _forces(planned[i], mechanism, analysis.friction)
         if balance is not None:
             entry["equilibrium"] = _equilibrium(balance, i, driver.kind, balance_noise)
             if rubbing is not None:
                 entry["equilibrium"]["friction"] = {
                     **_equilibrium(rubbing, i, driver.kind, rubbing_noise, blank=bool(rubbing.locked[i])),
+                    "loads": None if rubbing.locked[i] or rubbing.singular[i] else _friction_loads(
+                        analysis.friction, rubbing_loads, rubbing_noise["reactions"], i),
                     "efficiency": None if rubbing.locked[i] else number(
                         efficiency(mechanism, balance.balancing[i], rubbing.balancing[i])),
                     "iterations": int(rubbing.iterations[i]),
@@ -231,7 +237,7 @@ def _balancing_key(driver_kind: str) -> str:
     return "balancing_moment" if driver_kind == "crank" else "balancing_force"
 
 
-def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
+def _forces(plan: PlanPosition, mechanism, friction: tuple[FrictionPair, ...]) -> dict[str, Any]:
     """``forces`` of one plan position: the polygons' reactions and balancing load, the lever's, μF;
     with friction in the pairs the same with friction, the efficiency and the self-locking flag."""
     forces, lever = plan.forces, plan.lever
@@ -252,6 +258,7 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
         result["offsets"] = offsets
     rubbing = plan.with_friction
     if rubbing is not None:
+        acting = {load.name: load for load in plan.friction_loads}
         result["friction"] = {
             key: None if rubbing.locked else number(rubbing.balancing),
             "efficiency": None if rubbing.locked else number(efficiency(mechanism, forces.balancing, rubbing.balancing)),
@@ -260,12 +267,40 @@ def _forces(plan: PlanPosition, mechanism) -> dict[str, Any]:
             "reactions": None if rubbing.locked else {
                 name: _pair(np.array([found.force.real, found.force.imag]), reaction_floor)
                 for name, found in rubbing.reactions.items()},
+            "loads": None if rubbing.locked else _friction_loads(friction, acting, reaction_floor),
         }
         if plan.lever_with_friction is not None:
             result["friction"][f"lever_{key}"] = number(plan.lever_with_friction.balancing)
             result["friction"]["lever_difference_percent"] = number(
                 plan.lever_with_friction.difference_percent(rubbing.balancing), PERCENT_FLOOR)
     return result
+
+
+def _friction_loads(pairs: tuple[FrictionPair, ...], acting: dict[str, Load], reaction_floor: float,
+                    i: int = 0) -> dict[str, Any]:
+    """Each pair's friction load on its later link from its earlier (``Ff16`` on 6 from 1), as the tables name
+    it: a slide's force [x, y] (N), a journal's moment (N·m, counter-clockwise positive); 0 in a pair at rest.
+
+    ``acting`` holds the loads at one position or, as arrays, at every position (then ``i`` picks one)."""
+    result: dict[str, Any] = {}
+    for pair in pairs:
+        name = pair.load_names[0]
+        load = acting[name]
+        if pair.sliding:
+            force = complex(at(load.force, i))
+            result[name] = _pair(np.array([force.real, force.imag]), reaction_floor * pair.coefficient)
+        else:
+            result[name] = number(float(at(load.moment, i)), reaction_floor * pair.radius)
+    return result
+
+
+def _cycle_friction_loads(analysis: Analysis) -> dict[str, Load]:
+    """The pairs' friction loads at every position, from the reactions with friction settled there (the
+    locked positions' are not numbers)."""
+    settled = {reaction.name: reaction.force for reaction in analysis.with_friction.reactions}
+    with np.errstate(invalid="ignore"):
+        loads = friction_loads(analysis.friction, motion_state(analysis.motion), settled)
+    return {load.name: load for load in loads}
 
 
 def _cycle_noise(balance) -> dict[str, Any]:
