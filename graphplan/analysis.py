@@ -173,8 +173,11 @@ def analyse(scene: Scene) -> Analysis:
         paths = solve(mechanism, sweep, positions.reference, tolerant=True)
     stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
-    friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides)) if acting is not None else ()
+    friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides))
     check_journals(friction, mechanism, motion)
+    if friction and acting is None:
+        raise SceneError(friction[0].spec.where, "the pairs' friction acts through their reactions, and the scene has "
+                         "no force analysis: give the links' masses or loads, or leave [[friction]] out")
     loads, balance, with_friction = (), None, None
     if acting is not None:
         # A singular position's velocities and accelerations are not numbers: its loads and reactions come

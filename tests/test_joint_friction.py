@@ -441,3 +441,19 @@ def test_a_balancing_load_without_friction_that_is_rounding_of_zero_gives_an_eff
     np.testing.assert_array_equal(efficiency(mechanism, ideal, rubbing), [0.0, 0.0, 0.0, 0.4])
     np.testing.assert_array_equal(rounded_zero(ideal, rubbing), [0.0, 0.0, 0.0, 2.0])
     assert not turned_round(mechanism, ideal, rubbing).any()
+
+
+def test_friction_in_a_scene_without_a_force_analysis_is_refused_not_ignored():
+    """Friction acts through the reactions: a scene with [[friction]] but no masses or loads has none to act
+    through, and its friction would vanish from every output without a word."""
+    text = slider_crank_text('[[friction]]\njoint = "O"\nf = 0.1\nradius = 0.02')
+    unloaded = text[:text.index("[[loads]]")] + text[text.index("[positions]"):]
+    with pytest.raises(graphplan.SceneError, match=r"^friction\[0\]: .*no force analysis: give the links' masses"):
+        analyse(scene_from_text(unloaded))
+
+
+def test_a_friction_entry_naming_no_joint_is_refused_without_a_force_analysis_too():
+    text = slider_crank_text('[[friction]]\njoint = "Q"\nf = 0.1\nradius = 0.02')
+    unloaded = text[:text.index("[[loads]]")] + text[text.index("[positions]"):]
+    with pytest.raises(graphplan.SceneError, match=r"^friction\[0\]"):
+        analyse(scene_from_text(unloaded))
