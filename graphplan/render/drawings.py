@@ -381,9 +381,8 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
     text = strings(analysis.scene.locale)
     velocity = plan_position.velocity
     forces, lever, title = plan_position.forces, plan_position.lever, "tb_sheet_forces_position"
-    friction, ideal, eta, locked = (), None, None, None
-    if not with_friction and plan_position.with_friction is not None and plan_position.with_friction.locked:
-        locked = plan_position.with_friction.iterations
+    friction, ideal, eta = (), None, None
+    locked = not with_friction and plan_position.with_friction is not None and plan_position.with_friction.locked
     if with_friction:
         rubbing = plan_position.with_friction
         if rubbing is None or rubbing.locked:

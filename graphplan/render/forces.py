@@ -152,10 +152,9 @@ class ForceSheet:
     ``friction`` holds the pairs with friction when ``forces`` is the plan
     with friction; ``without_friction`` is then the balancing load without
     it and ``efficiency`` η (NaN where friction turns the power flow round).
-    ``locked_with_friction`` is, on the sheet without friction of a position
-    the pairs' friction locks, the solves that found it locks: the driving
-    link's caption says so, as the tables do (that position has no sheet with
-    friction).
+    ``locked_with_friction`` marks the sheet without friction of a position
+    the pairs' friction locks: the driving link's caption says so, as the
+    tables do (that position has no sheet with friction).
     ``lever_scale`` is μV of the lever when it is drawn at another scale
     than the velocity plan (a similar figure at any scale gives the same
     balancing load): larger where the plan's points crowd
@@ -179,7 +178,7 @@ class ForceSheet:
     friction: tuple[FrictionPair, ...] = ()
     without_friction: float | None = None
     efficiency: float | None = None
-    locked_with_friction: int | None = None
+    locked_with_friction: bool = False
     lever_scale: float | None = None
     caption_size: float = CAPTION_SIZE
 
@@ -240,8 +239,8 @@ def rows(sheet: ForceSheet) -> Rows:
 def _friction_summary(sheet: ForceSheet) -> list[str]:
     """The line of the sheet with friction under the driving link: the balancing load with and without it, η;
     on the sheet without friction of a position the friction locks, that it locks."""
-    if sheet.locked_with_friction is not None:
-        return [sheet.text["forces_locked"].format(iterations=sheet.locked_with_friction)]
+    if sheet.locked_with_friction:
+        return [sheet.text["forces_locked"]]
     if sheet.without_friction is None:
         return []
     eta = "—" if sheet.efficiency is None or not math.isfinite(sheet.efficiency) else significant(sheet.efficiency)

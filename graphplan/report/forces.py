@@ -250,7 +250,7 @@ def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
     text = strings(analysis.scene.locale)
     rubbing = plan.with_friction
     if rubbing.locked:
-        return [text["forces_locked"].format(iterations=rubbing.iterations)]
+        return [text["forces_locked"]]
     eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing)
     return [wording.friction_summary(
         analysis.mechanism, text, plan.forces.balancing, rubbing.balancing,
