@@ -20,6 +20,7 @@ from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .joint_friction import FrictionPair, check_journals, friction_loads, friction_pairs
 from .kinematics import at
+from .length_units import lengths_in_millimetres
 from .lever import Lever, lever
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
@@ -40,15 +41,6 @@ PATH_SAMPLES = 360
 # The field (mm) the largest of the velocity plans of every position fits at their μV, when the scene fixes
 # none: smaller than a plan sheet's 150 mm, so that twelve stand in a grid on a sheet.
 VELOCITY_PLANS_FIELD_MM = 120.0
-# Lengths typed in millimetres where the scene asks for metres make a mechanism a thousand times too large, and
-# every result follows it (a crank pin at 750 m/s, μl = 2.5 m/mm).  The linkages this method serves are a course
-# project's 0.05–2 m, a press's or a pump jack's a few metres: a length over LONGEST_LINK_M is none a machine's
-# linkage has, while one in millimetres (20 mm and up) reaches it ...
-LONGEST_LINK_M = 20.0
-# ... and where a small mechanism's millimetres stay under it, its crank pin gives them away: the fastest
-# linkages' crank pins (an engine's at 6000 rev/min, a racing engine's) make some 20–40 m/s, so a crank pin over
-# FASTEST_CRANK_PIN_M_S is a length a thousand times too long (or a speed not in rad/s).
-FASTEST_CRANK_PIN_M_S = 100.0
 
 
 @dataclass(frozen=True)
@@ -195,7 +187,7 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every))
-    in_order = tuple(sorted(_lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
+    in_order = tuple(sorted(lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions)
                             + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction)
@@ -206,51 +198,9 @@ def analyse(scene: Scene) -> Analysis:
                     loads, balance, with_friction, friction, every, locked_spans, cycle)
 
 
-def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
-    """The links' lengths the scene gives, each with its key path: the crank's, the groups' links' and sides (a
-    triad's ``lengths`` lists its turning legs only, its non-zero entries)."""
-    found = [("driver.length", mechanism.driver.length)] if mechanism.driver.kind == "crank" else []
-    for group in mechanism.groups:
-        for key in ("lengths", "sides"):
-            values = [value for value in getattr(group, key, ()) if value]
-            found += [(f"{group.where}.{key}[{n}]", value) for n, value in enumerate(values)]
-        if getattr(group, "length", 0.0):
-            found.append((f"{group.where}.length", group.length))
-    return found
-
-
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout"})
-
-
-def _lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
-    """A ``lengths-in-mm`` warning, at the first position, where the scene's lengths are implausible as metres: a
-    link or the frame larger than any machine's, or a crank turning its pin faster than any machine does."""
-    told = []
-    lengths = given_lengths(mechanism)
-    key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
-    if longest > LONGEST_LINK_M:
-        told.append(f"{key} = {longest:g} m is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
-    else:
-        points = list(mechanism.scene.frame_points.items())
-        (first, origin) = points[0]
-        name, far = max(points, key=lambda item: abs(item[1] - origin))
-        if abs(far - origin) > LONGEST_LINK_M:
-            told.append(f"frame.points.{name} = [{far.real:g}, {far.imag:g}] lies {abs(far - origin):.4g} m from "
-                        f"{first}, farther apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
-    driver = mechanism.driver
-    fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S
-    if fast:
-        told.append(f"driver.length = {driver.length:g} m at ω = {abs(driver.omega):.4g} rad/s moves the crank pin "
-                    f"{driver.joint} at {abs(driver.omega) * driver.length:.4g} m/s, faster than any machine's (over "
-                    f"{FASTEST_CRANK_PIN_M_S:g} m/s)")
-    if not told:
-        return ()
-    unless = ", unless ω is too large: it is in rad/s, and rev/min are given as driver.rpm" if len(told) == 1 and fast \
-        else ""
-    return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + ": are the lengths in millimetres? The scene's "
-                            f"lengths are in metres (divide them by 1000){unless}"),)
 
 
 def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:

@@ -15,6 +15,7 @@ from dataclasses import replace
 
 from .errors import AssemblyError, GraphplanError, SingularPositionError
 from .groups.base import Group
+from .length_units import mixed_units
 from .mechanism import Mechanism, build
 from .motion import reference_at
 from .positions import reach
@@ -28,6 +29,9 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
     try:
         yield
     except AssemblyError as error:
+        # A length in millimetres among metres: the reach and the swing it allows would be advice about a typo.
+        if (units := mixed_units(mechanism)) is not None:
+            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {units}") from error
         driver = mechanism.driver
         if driver.kind != "crank":
             raise

@@ -88,3 +88,36 @@ def test_a_frame_far_larger_than_its_links_is_warned_of():
 def test_machines_of_a_real_size_and_speed_are_not_warned_of(factor, omega):
     """The ratchet as drawn, a 5.5 m press turning slowly, a small fast mechanism (crank pin at 10.5 m/s)."""
     assert told(scaled(factor, omega)) == []
+
+
+def refusal(data: dict) -> str:
+    with pytest.raises(graphplan.AssemblyError) as refused:
+        analyse(graphplan.load(data))
+    return str(refused.value)
+
+
+def test_one_length_in_millimetres_among_metres_is_named_where_the_mechanism_cannot_assemble():
+    """lBC typed as 325 (mm) beside the crank's 0.175 m: no crank angle assembles it, and a swing to rock it over,
+    or "check the lengths", sends the student after the geometry instead of the typo."""
+    data = scaled(1.0)
+    data["groups"][0]["lengths"][1] = 325.0
+    said = refusal(data)
+    assert ("groups[0].lengths[1] = 325 m beside driver.length = 0.175 m: are some lengths in millimetres? The "
+            "scene's lengths are all in metres") in said
+    assert "driver.swing" not in said and "check the lengths" not in said
+
+
+def test_links_in_millimetres_on_a_frame_in_metres_are_told_so():
+    """Every link in millimetres, the frame's pivots in metres: the links are all alike, the frame is not."""
+    data = scaled(1.0)
+    data["driver"]["length"] = 175.0
+    data["groups"][0]["lengths"] = [550.0, 325.0]
+    assert ("groups[0].lengths[0] = 550 m beside frame.points.C (0.55 m from O): are some lengths in millimetres?"
+            in refusal(data))
+
+
+def test_a_mechanism_of_plausible_lengths_that_cannot_turn_round_keeps_its_reach_advice():
+    data = scaled(1.0)
+    data["driver"]["length"] = 0.5
+    said = refusal(data)
+    assert "millimetres" not in said and "driver.swing = [" in said

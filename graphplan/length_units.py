@@ -1,0 +1,86 @@
+"""Lengths typed in millimetres where the scene asks for metres: the warning where the mechanism still runs (every
+length a thousand times too long, the results with them), and the hint where one typed so stops it assembling.
+"""
+
+from __future__ import annotations
+
+from .mechanism import Mechanism
+from .motion import PositionWarning
+
+# Lengths typed in millimetres where the scene asks for metres make a mechanism a thousand times too large, and
+# every result follows it (a crank pin at 750 m/s, μl = 2.5 m/mm).  The linkages this method serves are a course
+# project's 0.05–2 m, a press's or a pump jack's a few metres: a length over LONGEST_LINK_M is none a machine's
+# linkage has, while one in millimetres (20 mm and up) reaches it ...
+LONGEST_LINK_M = 20.0
+# ... and where a small mechanism's millimetres stay under it, its crank pin gives them away: the fastest
+# linkages' crank pins (an engine's at 6000 rev/min, a racing engine's) make some 20–40 m/s, so a crank pin over
+# FASTEST_CRANK_PIN_M_S is a length a thousand times too long (or a speed not in rad/s).
+FASTEST_CRANK_PIN_M_S = 100.0
+
+
+def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
+    """The links' lengths the scene gives, each with its key path: the crank's, the groups' links' and sides (a
+    triad's ``lengths`` lists its turning legs only, its non-zero entries)."""
+    found = [("driver.length", mechanism.driver.length)] if mechanism.driver.kind == "crank" else []
+    for group in mechanism.groups:
+        for key in ("lengths", "sides"):
+            values = [value for value in getattr(group, key, ()) if value]
+            found += [(f"{group.where}.{key}[{n}]", value) for n, value in enumerate(values)]
+        if getattr(group, "length", 0.0):
+            found.append((f"{group.where}.length", group.length))
+    return found
+
+
+def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
+    """A ``lengths-in-mm`` warning, at the first position, where the scene's lengths are implausible as metres: a
+    link or the frame larger than any machine's, or a crank turning its pin faster than any machine does."""
+    told = []
+    lengths = given_lengths(mechanism)
+    key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
+    if longest > LONGEST_LINK_M:
+        told.append(f"{key} = {longest:g} m is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
+    else:
+        points = list(mechanism.scene.frame_points.items())
+        (first, origin) = points[0]
+        name, far = max(points, key=lambda item: abs(item[1] - origin))
+        if abs(far - origin) > LONGEST_LINK_M:
+            told.append(f"frame.points.{name} = [{far.real:g}, {far.imag:g}] lies {abs(far - origin):.4g} m from "
+                        f"{first}, farther apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
+    driver = mechanism.driver
+    fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S
+    if fast:
+        told.append(f"driver.length = {driver.length:g} m at ω = {abs(driver.omega):.4g} rad/s moves the crank pin "
+                    f"{driver.joint} at {abs(driver.omega) * driver.length:.4g} m/s, faster than any machine's (over "
+                    f"{FASTEST_CRANK_PIN_M_S:g} m/s)")
+    if not told:
+        return ()
+    unless = ", unless ω is too large: it is in rad/s, and rev/min are given as driver.rpm" if len(told) == 1 and fast \
+        else ""
+    return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + ": are the lengths in millimetres? The scene's "
+                            f"lengths are in metres (divide them by 1000){unless}"),)
+
+
+# A linkage's lengths stand within some 1:50 of each other (a shaper's 0.1 m crank beside its 0.6 m rocker is
+# 1:6): a length MIXED_RATIO times another is one in millimetres among metres.
+MIXED_RATIO = 200.0
+
+
+def mixed_units(mechanism: Mechanism) -> str | None:
+    """What to tell a user whose mechanism does not assemble where a length looks typed in millimetres: one over
+    :data:`LONGEST_LINK_M`, or :data:`MIXED_RATIO` times another (the frame's pivots' spread among them); None
+    where the lengths are plausible together, and the geometry is to check."""
+    lengths = [(f"{key} = {value:g} m", value) for key, value in given_lengths(mechanism) if value > 0]
+    points = list(mechanism.scene.frame_points.items())
+    if points:
+        first, origin = points[0]
+        name, far = max(points, key=lambda item: abs(item[1] - origin))
+        if abs(far - origin) > 0:
+            lengths.append((f"frame.points.{name} ({abs(far - origin):g} m from {first})", abs(far - origin)))
+    if len(lengths) < 2:
+        return None
+    (long_one, longest), (short_one, shortest) = max(lengths, key=lambda item: item[1]), min(
+        lengths, key=lambda item: item[1])
+    if longest <= LONGEST_LINK_M and longest < MIXED_RATIO * shortest:
+        return None
+    return (f"{long_one} beside {short_one}: are some lengths in millimetres? The scene's lengths are all in metres "
+            "(divide millimetres by 1000)")
