@@ -26,7 +26,8 @@ from .kinematics import PointMotion, Scalar, Vector, at, dot, unit
 from .mechanism import Mechanism
 from .motion import Motion, solve
 from .plans import Plan
-from .positions import PositionSet, in_working_stroke
+from .positions import PositionSet, in_working_stroke, stroke_extremes
+from .scene import Working
 
 # A speed this small against the cycle's largest is rest: a resisting load then opposes
 # the motion about to begin (the sense of the acceleration).
@@ -121,29 +122,29 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
 
     A window ``during = {from, to}`` is a share of the working stroke of the
     working link, measured by its travel (angle or displacement) from the
-    extreme where the working stroke starts.
+    extreme where the working stroke starts; of the load's own ``stroke``
+    where it names one (a second cylinder's piston).
     """
     scene = mechanism.scene
     count = motion.count
     acting = np.ones((len(scene.loads), count))
     if not scene.loads:
         return acting
-    progress = working = None
+    # Each stroke once: several loads of one stroke (a shaper's cutting force and its window's edges) share it.
+    in_stroke = functools.cache(lambda stroke: in_working_stroke(motion, stroke))
+    progress = functools.cache(lambda stroke: _working_progress(mechanism, positions, motion, stroke))
     for row, load in enumerate(scene.loads):
         if load.during == "always":
             continue
-        if working is None:
-            working = in_working_stroke(motion)
+        working = in_stroke(load.stroke)
         if load.during == "working":
             acting[row] = working
         elif load.during == "idle":
             acting[row] = ~working
         else:
-            if progress is None:
-                progress = _working_progress(mechanism, positions, motion)
             start, end = load.during
             # Equal ends at 12 digits: a window that ends where a position lies includes it.
-            share = np.round(progress, 12)
+            share = np.round(progress(load.stroke), 12)
             inside = working & (share >= start) & (share <= end)
             if load.diagram is None:
                 acting[row] = inside
@@ -193,24 +194,28 @@ def with_switches(sweep: np.ndarray, state: Callable[[np.ndarray], np.ndarray]) 
     return found if sweep[-1] > sweep[0] else found[::-1]
 
 
-def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
-    """The share of the working stroke the working link has travelled at each position (0 at its start)."""
-    assert positions.extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"
-    ends = solve(mechanism, np.array(positions.extremes), positions.reference)
-    start, end = _output_coordinate(mechanism, ends)
+def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion,
+                      stroke: Working | None = None) -> np.ndarray:
+    """The share of the working stroke (of ``stroke``, a load's own, or the working link's) travelled at each
+    position (0 at its start)."""
+    extremes = stroke_extremes(positions, stroke)
+    assert extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"
+    ends = solve(mechanism, np.array(extremes), positions.reference)
+    start, end = _output_coordinate(mechanism, ends, stroke)
     travel = end - start
-    here = _output_coordinate(mechanism, motion, about=float(start))
+    here = _output_coordinate(mechanism, motion, stroke, about=float(start))
     return (here - start) / travel
 
 
-def _output_coordinate(mechanism: Mechanism, motion: Motion, about: float | None = None) -> np.ndarray:
-    """The working link's angle, within half a turn of ``about`` (default: its first angle in ``motion``),
-    or its displacement along its direction.
+def _output_coordinate(mechanism: Mechanism, motion: Motion, stroke: Working | None = None,
+                       about: float | None = None) -> np.ndarray:
+    """The working link's (or ``stroke``'s link's) angle, within half a turn of ``about`` (default: its first
+    angle in ``motion``), or its displacement along its direction.
 
     A window of the stroke is measured from the stroke's start: unwrapped
     about any other angle, a swing across ±180° would be cut in two.
     """
-    working = mechanism.scene.positions.working
+    working = stroke or mechanism.scene.positions.working
     assert working is not None
     link = motion.links[working.link]
     if working.link in mechanism.translating:

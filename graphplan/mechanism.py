@@ -324,8 +324,8 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
                                                      f"round; a {scene.driver.kind} driver's positions run over its "
                                                      f"{scene.driver.run_key}: "
                                                      "use always", _as_written(load.during))
-    working = scene.positions.working
-    if working is not None:
+    strokes = [scene.positions.working, *(load.stroke for load in scene.loads)]
+    for working in (stroke for stroke in strokes if stroke is not None):
         if working.link not in known_links or working.link == scene.frame_link:
             raise SceneError(f"{working.where}.link", f"must be a moving link of the mechanism: {_known(mechanism.moving_links)}", working.link)
         translates = working.link in mechanism.translating

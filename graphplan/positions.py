@@ -14,8 +14,8 @@ that a scene can be given a swing inside it.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.polynomial import Chebyshev
@@ -24,6 +24,7 @@ from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
 from .mechanism import Mechanism
 from .motion import Motion, Reference, reference_at, solve
+from .scene import Working
 
 # Driver positions per cycle of the sweep that brackets the extremes.
 _BRACKET_SWEEP = 720
@@ -51,7 +52,9 @@ class PositionSet:
     than once a turn.  ``working_link_turns`` is how many times a working link
     that never turns back goes round in a turn of the crank, positive in its
     working sense; it has then no extremes and no strokes (0 for one that
-    swings to and fro, or without a working link).
+    swings to and fro, or without a working link).  ``load_strokes`` holds the
+    extremes of the strokes loads name as their own (``loads[].stroke``, a
+    second cylinder's piston), by link and sense.
     """
 
     values: np.ndarray
@@ -61,6 +64,7 @@ class PositionSet:
     extremes: tuple[float, float] | None
     reversals: tuple[float, ...] = ()
     working_link_turns: int = 0
+    load_strokes: Mapping[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
 
     def stroke_turns(self, sense: int) -> tuple[float, float] | None:
         """How far the crank turns (rad) in the working stroke and in the idle one, turning the way ``sense``
@@ -95,6 +99,7 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
                 start = extremes[0]
                 reference = reference_at(mechanism, start)
         values = start + driver.sense * 2.0 * math.pi * np.arange(spec.count) / spec.count
+    load_strokes = _load_strokes(mechanism, start, reference) if driver.cyclic else {}
     strokes = None
     # A link that turns round is in no stroke: every position of it would be "working", or "idle" against its sense.
     if spec.working is not None and not turns:
@@ -103,7 +108,41 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
             require_moving(motion)
         strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes,
-                       reversals=reversals, working_link_turns=turns)
+                       reversals=reversals, working_link_turns=turns, load_strokes=load_strokes)
+
+
+def _load_strokes(mechanism: Mechanism, start: float, reference: Reference) -> dict[tuple[int, str], tuple[float, float]]:
+    """The extremes of each stroke a load of one stroke names as its own, by link and sense; a link that turns
+    round has no strokes for a load to act in, and is refused."""
+    found: dict[tuple[int, str], tuple[float, float]] = {}
+    for load in mechanism.scene.loads:
+        stroke = load.stroke
+        if stroke is None or load.during == "always" or (stroke.link, stroke.sense) in found:
+            continue
+        ends, _, _ = _find_extremes(mechanism, start, reference, stroke)
+        if ends is None:
+            raise SceneError(f"{stroke.where}.link", f"link {stroke.link} turns round and never reverses its motion, "
+                             "so it has no strokes for the load to act in: name a link that swings or slides to and "
+                             "fro, or leave stroke out", stroke.link)
+        found[(stroke.link, stroke.sense)] = ends
+    return found
+
+
+def link_extremes(mechanism: Mechanism, positions: PositionSet, link: int) -> tuple[float, float] | None:
+    """The crank angles where ``link`` turns back (its strokes' ends, in either sense); None for a link that
+    turns round or stands still."""
+    sense = "forward" if link in mechanism.translating else "ccw"
+    try:
+        ends, _, _ = _find_extremes(mechanism, float(positions.values[0]), positions.reference,
+                                    Working(link=link, sense=sense, where=f"links.{link}"))
+    except SceneError:  # it stands still, or dwells: it has no strokes to compare
+        return None
+    return ends
+
+
+def stroke_extremes(positions: PositionSet, stroke: Working | None) -> tuple[float, float] | None:
+    """The driver coordinates where ``stroke`` (a load's own, or None: the working link's) starts and ends."""
+    return positions.extremes if stroke is None else positions.load_strokes[(stroke.link, stroke.sense)]
 
 
 def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: str) -> Reference:
@@ -143,14 +182,15 @@ def _first_assembly(mechanism: Mechanism) -> Reference | None:
         return None
 
 
-def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
-    """The output link's velocity and acceleration, signed so that positive is the working sense.
+def working_speed(motion: Motion, working: Working | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The output link's velocity and acceleration, signed so that positive is the working sense; of ``working``'s
+    link and sense where given (a load's own stroke), else of the scene's ``positions.working``.
 
     A turning link gives ω and ε, a translating one its velocity and
     acceleration along its own direction.
     """
     mechanism = motion.mechanism
-    working = mechanism.scene.positions.working
+    working = working or mechanism.scene.positions.working
     assert working is not None
     link = motion.links[working.link]
     if working.link in mechanism.translating:
@@ -163,12 +203,12 @@ def working_speed(motion: Motion) -> tuple[np.ndarray, np.ndarray]:
     return np.broadcast_to(sign * speed, shape), np.broadcast_to(sign * rate, shape)
 
 
-def require_moving(motion: Motion) -> None:
-    """Refuse a working link that stays where it is over ``motion`` (a sweep of the driver's run): it has no
-    strokes, and its diagrams would be drawn at an endless scale.  A slip of the scene, such as a slider's
-    guide through the pivot of the slotted link, or a crank too short to move anything."""
+def require_moving(motion: Motion, working: Working | None = None) -> None:
+    """Refuse a working link (``working``'s, or the scene's) that stays where it is over ``motion`` (a sweep of the
+    driver's run): it has no strokes, and its diagrams would be drawn at an endless scale.  A slip of the scene,
+    such as a slider's guide through the pivot of the slotted link, or a crank too short to move anything."""
     mechanism = motion.mechanism
-    working = mechanism.scene.positions.working
+    working = working or mechanism.scene.positions.working
     assert working is not None
     link = motion.links[working.link]
     shape = motion.driver.shape
@@ -181,15 +221,16 @@ def require_moving(motion: Motion) -> None:
         travel, rest, unit = float(np.ptp(np.angle(np.exp(1j * (angle - angle[0]))))), 1e-9, "rad"
     if travel <= rest:
         run = "the crank's turn" if mechanism.driver.cyclic else f"driver.{mechanism.driver.run_key}"
-        raise SceneError("positions.working", f"link {working.link} does not move over {run}: its travel is "
+        raise SceneError(working.where, f"link {working.link} does not move over {run}: its travel is "
                          f"{travel:.3g} {unit}, so it has no strokes and its kinematic diagrams nothing to draw; "
                          "name a link the mechanism moves, or check the lengths and guides that should move it",
                          working.link)
 
 
-def in_working_stroke(motion: Motion) -> np.ndarray:
-    """Whether each position of ``motion`` belongs to the working stroke (the scene must name the working link)."""
-    speed, rate = working_speed(motion)
+def in_working_stroke(motion: Motion, working: Working | None = None) -> np.ndarray:
+    """Whether each position of ``motion`` belongs to the working stroke of ``working`` (a load's own stroke), or
+    of the scene's working link."""
+    speed, rate = working_speed(motion, working)
     # Of the finite speeds: a singular position's is not (it would make every other position one at rest).
     finite = np.abs(speed[np.isfinite(speed)])
     scale = float(np.max(finite)) if finite.size else 0.0
@@ -225,22 +266,25 @@ def _same_assembly(mechanism: Mechanism, value: float, one: Reference, other: Re
                for name, point in first.points.items())
 
 
-def _find_extremes(mechanism: Mechanism, start: float,
-                   reference: Reference) -> tuple[tuple[float, float] | None, tuple[float, ...], int]:
+def _find_extremes(mechanism: Mechanism, start: float, reference: Reference, working: Working | None = None
+                   ) -> tuple[tuple[float, float] | None, tuple[float, ...], int]:
     """Driver angles where the working stroke starts and ends, and where the working link turns back at all (in
     the driver's order from ``start``), each to machine precision; for a link that turns round and never turns
     back, no extremes but its turns in the crank's (:attr:`PositionSet.working_link_turns`), where the scene asks
-    for nothing that needs extremes."""
+    for nothing that needs extremes.  Of ``working``'s link and sense where given (a load's own stroke), whose
+    link turning round is its caller's to refuse."""
     driver = mechanism.driver
+    own = working is None
+    working = working or mechanism.scene.positions.working
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
     sweep = solve(mechanism, steps, reference)
-    require_moving(sweep)
-    speed, _ = working_speed(sweep)
-    _refuse_dwell(mechanism, steps, speed)
+    require_moving(sweep, working)
+    speed, _ = working_speed(sweep, working)
+    _refuse_dwell(mechanism, steps, speed, working)
 
     def speeds_at(angles: Sequence[float]) -> np.ndarray:
-        return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference))[0]
+        return working_speed(solve(mechanism, np.asarray(angles, dtype=float), reference), working)[0]
 
     def zero_in(index: int) -> float:
         lo, hi = steps[index], steps[index + 1]
@@ -253,16 +297,16 @@ def _find_extremes(mechanism: Mechanism, start: float,
     through_zero = np.minimum(np.abs(before), np.abs(after)) < np.median(np.abs(speed[np.isfinite(speed)]))
     rises = through_zero & (before <= 0) & (after > 0)
     falls = through_zero & (before >= 0) & (after < 0)
-    turns = 0 if (rises | falls).any() else _turns_round(mechanism, sweep)
+    turns = 0 if (rises | falls).any() else _turns_round(mechanism, sweep, working)
     if turns:
-        _refuse_needing_extremes(mechanism)
+        if own:
+            _refuse_needing_extremes(mechanism)
         return None, (), turns
     for name, rising, crossing in (("working", True, rises), ("idle", False, falls)):
         candidates = np.flatnonzero(crossing)
         if len(candidates) == 0:
-            working = mechanism.scene.positions.working
-            raise SceneError(working.where if working else "positions.working",
-                             f"link {working.link if working else '?'} never reverses its motion, so it has no extreme position")
+            raise SceneError(working.where, f"link {working.link} never reverses its motion, so it has no extreme "
+                             "position")
         # Several reversals (a dwell, a six-bar): take the one that begins the longest stroke.
         index = max(candidates, key=lambda i: _stroke_length(speed[:-1], i, rising))
         found[name] = roots[index] = zero_in(index)
@@ -272,11 +316,9 @@ def _find_extremes(mechanism: Mechanism, start: float,
     return (found["working"], found["idle"]), reversals, 0
 
 
-def _turns_round(mechanism: Mechanism, sweep: Motion) -> int:
+def _turns_round(mechanism: Mechanism, sweep: Motion, working: Working) -> int:
     """How many times the working link goes round over ``sweep`` (a crank's turn), positive in its working
     sense: 0 for a translating link, or for a turning one that comes back to its angle without going round."""
-    working = mechanism.scene.positions.working
-    assert working is not None
     if working.link in mechanism.translating:
         return 0
     angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
@@ -313,7 +355,7 @@ def _refuse_needing_extremes(mechanism: Mechanism) -> None:
 _STILL = 1e-9
 
 
-def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray) -> None:
+def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray, working: Working) -> None:
     """Refuse a working link that stands still over a stretch of the turn (a rod as long as its crank rests its
     slider at the crank's pivot for half a turn): its speed there is rounding's, whose every change of sign was
     a turn back (136 a turn), and its extremes and K were noise."""
@@ -326,10 +368,9 @@ def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray) ->
     first, last = max(zip(runs[::2], runs[1::2] - 1), key=lambda run: run[1] - run[0])
     if last - first < 2:
         return
-    working = mechanism.scene.positions.working
     driver = mechanism.driver
-    raise SceneError(working.where if working else "positions.working",
-                     f"link {working.link if working else '?'} stands still from {driver.describe(float(steps[first]))} "
+    raise SceneError(working.where,
+                     f"link {working.link} stands still from {driver.describe(float(steps[first]))} "
                      f"to {driver.describe(float(steps[last]))} (its speed there is rounding's): a working link that "
                      "dwells has no one extreme position for its stroke to start at; two links lie along each other "
                      "there (a rod as long as its crank?): change the lengths, or leave positions.working out")

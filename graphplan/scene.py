@@ -79,7 +79,9 @@ class LoadSpec:
 
     With a ``diagram`` (share of the working stroke, value) the load follows
     it piecewise-linearly over the window its shares span, and ``value`` is
-    its largest magnitude.
+    its largest magnitude.  ``stroke`` names the link and sense whose strokes
+    ``during`` and the diagram are of, where they are not the working link's
+    (a second cylinder's piston, whose strokes come at other crank angles).
     """
 
     where: str
@@ -91,6 +93,7 @@ class LoadSpec:
     point: str | None
     angle_deg: float | None
     diagram: tuple[tuple[float, float], ...] | None = None
+    stroke: Working | None = None
 
 
 @dataclass(frozen=True)
@@ -553,6 +556,16 @@ def _read_load(where: str, item: object) -> LoadSpec:
         # Its sense is taken from the motion at each position, so a sign would be dropped without a word.
         raise SceneError(table.where("value"), "a resisting load's value is its magnitude (resisting = true turns it "
                          f"against the motion): write {-value:g}", value)
+    if resisting and diagram is not None and any(v < 0 for _, v in diagram):
+        raise SceneError(table.where("diagram"), "a resisting load's diagram gives magnitudes (resisting = true turns "
+                         "it against the motion), and a negative value's sign would be dropped: for a load that "
+                         "helps the motion over part of the stroke, give resisting = false and the load's angle, its "
+                         "values signed along it", [v for _, v in diagram])
+    stroke_table = table.table("stroke", None)
+    stroke = _read_working(stroke_table) if stroke_table is not None else None
+    if stroke is not None and during == "always":
+        raise SceneError(stroke.where, "names the stroke the load acts in, and the load acts always: give during or a "
+                         "diagram, or leave stroke out")
     point = table.string("point", None)
     angle = table.number("angle", None)
     if kind == "force" and (point is None or angle is None):
@@ -564,7 +577,14 @@ def _read_load(where: str, item: object) -> LoadSpec:
                 raise SceneError(table.where(key), "a moment acts on its whole link: leave point and angle out")
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
-                    point=point, angle_deg=angle, diagram=diagram)
+                    point=point, angle_deg=angle, diagram=diagram, stroke=stroke)
+
+
+def _read_working(table: Table) -> Working:
+    """A stroke: which link's motion, and its sense that is the working stroke."""
+    working = Working(link=table.integer("link", minimum=1), sense=table.choice("sense", SENSES), where=table.path)
+    table.done()
+    return working
 
 
 def _read_during(table: Table) -> str | tuple[float, float]:
@@ -626,11 +646,7 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
                          f"a {driver.kind} driver's positions run over driver.{driver.run_key}: leave start out")
     number_from = table.integer("number_from", 1, minimum=0, maximum=1)
     working_table = table.table("working", None)
-    working = None
-    if working_table is not None:
-        working = Working(link=working_table.integer("link", minimum=1),
-                          sense=working_table.choice("sense", SENSES), where=working_table.path)
-        working_table.done()
+    working = _read_working(working_table) if working_table is not None else None
     if start == "extreme" and working is None:
         raise SceneError(table.where("start"), "\"extreme\" needs working = { link, sense } to know which extreme")
     plans = _position_numbers(table, "plans", number_from, count, once_each=True)

@@ -1,0 +1,74 @@
+"""Whose strokes a load of one stroke acts in: the working link's, unless the load names its own.
+
+A window or a diagram of a load is read along the working link's stroke (``positions.working``).  On a link whose
+strokes turn back elsewhere, a second cylinder's piston, that reading is silently another cylinder's: the load
+acts while the first piston compresses, and not while its own does.  The scene then names the load's own stroke
+(``loads[].stroke``); where it does not, it is warned of.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .kinematics import dot
+from .mechanism import Mechanism
+from .motion import PositionWarning, solve
+from .positions import PositionSet, link_extremes
+
+# Strokes that turn back within this of each other (degrees of the crank) are one stroke, read alike.
+SAME_STROKE_DEG = 1.0
+
+
+def strokes_of_other_links(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
+    """A ``stroke-of-another-link`` warning for each load of one stroke on a link whose strokes turn back away from
+    the working link's, read along the working link's for want of its own ``stroke``."""
+    scene = mechanism.scene
+    working = scene.positions.working
+    if working is None or positions.extremes is None:
+        return ()
+    told = []
+    for load in scene.loads:
+        if load.during == "always" or load.stroke is not None or load.link == working.link:
+            continue
+        read = "diagram" if load.diagram is not None else "during"
+        sense = '"forward" or "backward"' if load.link in mechanism.translating else '"ccw" or "cw"'
+        give = f"give {load.where}.stroke = {{ link = {load.link}, sense = {sense} }}"
+        own = link_extremes(mechanism, positions, load.link)
+        if own is not None and not _same_ends(own, positions.extremes):
+            told.append(PositionWarning(0, "stroke-of-another-link", (
+                f"{load.where} acts on link {load.link}, which turns back at {_angles(own)}, not where link "
+                f"{working.link} does ({_angles(positions.extremes)}): its {read} is read along link "
+                f"{working.link}'s working stroke (positions.working); to read it along link {load.link}'s own, "
+                f"{give}")))
+        elif own is not None and load.link in mechanism.translating:
+            # Turning back together, a second piston may still run the other way (an in-line twin's crank pins
+            # half a turn apart): which of its strokes the load is of, only the scene can say.
+            told.append(PositionWarning(0, "stroke-of-another-link", (
+                f"{load.where} acts on link {load.link}, a slider other than the working link {working.link}: its "
+                f"{read} is read along link {working.link}'s working stroke (positions.working), in which link "
+                f"{load.link} moves {_sense_in_working_stroke(mechanism, positions, load.link)} along its guide; "
+                f"if that is not the stroke the load is of, {give}")))
+    return tuple(told)
+
+
+def _sense_in_working_stroke(mechanism: Mechanism, positions: PositionSet, link: int) -> str:
+    """Which way a slider moves along its guide halfway through the working link's working stroke."""
+    start, end = positions.extremes
+    sense = mechanism.driver.sense
+    halfway = start + sense * ((sense * (end - start)) % (2.0 * math.pi)) / 2.0
+    motion = solve(mechanism, np.array([halfway]), positions.reference)
+    slider = motion.links[link]
+    return "forward" if float(dot(slider.u, motion.points[slider.origin].v)[0]) > 0 else "backward"
+
+
+def _same_ends(one: tuple[float, float], other: tuple[float, float]) -> bool:
+    """Whether two pairs of crank angles are the same two angles, in either order, within SAME_STROKE_DEG."""
+    def apart(a: float, b: float) -> float:
+        return abs(math.degrees(math.remainder(a - b, 2.0 * math.pi)))
+    return all(min(apart(end, theirs) for theirs in other) <= SAME_STROKE_DEG for end in one)
+
+
+def _angles(ends: tuple[float, float]) -> str:
+    return " and ".join(f"φ = {round(math.degrees(end), 1) % 360.0:.1f}°" for end in ends)
