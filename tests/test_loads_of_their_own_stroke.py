@@ -21,8 +21,7 @@ RADIUS, ROD, OMEGA = 0.075, 0.3, 20.0 * math.pi
 DIAGRAM = [[0.0, 0.0], [0.2, 400.0], [0.4, 1000.0], [0.6, 2200.0], [0.75, 5300.0], [1.0, 5300.0]]
 
 
-def twin(second_pin_deg: float, second_guide_deg: float, stroke: str) -> str:
-    return f"""
+CRANK = f"""
 [scene]
 gravity = 0.0
 [frame]
@@ -41,6 +40,11 @@ joints = ["A", "B"]
 length = {ROD}
 guide = {{ through = "O", angle = 0.0 }}
 assembly = "forward"
+"""
+
+
+def twin(second_pin_deg: float, second_guide_deg: float, stroke: str) -> str:
+    return CRANK + f"""
 [[groups]]
 kind = "RRP"
 links = [5, 6]
@@ -133,3 +137,40 @@ def test_a_negative_value_in_a_resisting_diagram_is_refused_not_dropped():
     text = twin(0.0, 90.0, "").replace("[[0.0, 0.0], [0.2, 400.0]", "[[0.0, -800.0], [0.2, 400.0]", 1)
     with pytest.raises(graphplan.SceneError, match=r"^loads\[0\]\.diagram: a resisting load's diagram gives magnitudes"):
         graphplan.load_text(text)
+
+
+def test_a_gas_force_over_the_whole_cycle_acts_at_both_dead_centres_as_the_stroke_beginning_there_gives_it():
+    """An indicator diagram over the cycle as two loads of fixed direction, one per stroke of the piston (its own
+    forward and backward strokes): at each dead centre the stroke about to begin gives the force, at its share 0,
+    and between them each diagram its own stroke's (checked at mid-stroke, share 1/2 of the closed form's x)."""
+    loads = """
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+diagram = [[0.0, 100.0], [0.5, 2000.0], [1.0, 5300.0]]
+stroke = { link = 4, sense = "forward" }
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+diagram = [[0.0, 5300.0], [0.5, 300.0], [1.0, 100.0]]
+stroke = { link = 4, sense = "backward" }
+[positions]
+count = 4
+start = "extreme"
+working = { link = 4, sense = "forward" }
+"""
+    analysis = analyse(graphplan.load_text(CRANK + loads))
+    phi = np.degrees(analysis.motion.driver) % 360.0
+    # Positions at 180° (BDC: the forward stroke begins), 270°, 0° (TDC: the backward begins), 90°.
+    np.testing.assert_allclose(phi, [180.0, 270.0, 0.0, 90.0], atol=1e-9)
+    force = [sum(load.force for load in analysis.loads if load.name.startswith("F4"))[i] for i in range(4)]
+    x = RADIUS * np.cos(np.radians(phi)) + np.sqrt(ROD**2 - (RADIUS * np.sin(np.radians(phi))) ** 2)
+    share = (x - (ROD - RADIUS)) / (2.0 * RADIUS)
+    expected = [100.0, np.interp(share[1], [0.0, 0.5, 1.0], [100.0, 2000.0, 5300.0]), 5300.0,
+                np.interp(1.0 - share[3], [0.0, 0.5, 1.0], [5300.0, 300.0, 100.0])]
+    np.testing.assert_allclose(np.real(force), [-value for value in expected], rtol=1e-9)
+    np.testing.assert_allclose(np.imag(force), 0.0, atol=1e-9)
