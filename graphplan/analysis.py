@@ -22,7 +22,7 @@ from .joint_friction import FrictionPair, check_journals, friction_loads, fricti
 from .kinematics import at
 from .length_units import lengths_in_millimetres
 from .lever import Lever, lever
-from .load_strokes import strokes_of_other_links
+from .load_strokes import diagrams_in_travel, strokes_of_other_links
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
 from .locking import LockedSpan, locked_between
@@ -191,6 +191,7 @@ def analyse(scene: Scene) -> Analysis:
     in_order = tuple(sorted(lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + strokes_of_other_links(mechanism, positions)
+                            + diagrams_in_travel(mechanism, positions)
                             + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction)
                             + _locked_between(mechanism, positions, locked_spans),
                             key=lambda warning: warning.position))
@@ -201,7 +202,7 @@ def analyse(scene: Scene) -> Analysis:
 
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
 # the console gives them without one.
-SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "stroke-of-another-link"})
+SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "stroke-of-another-link", "diagram-in-travel"})
 
 
 def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:

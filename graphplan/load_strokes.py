@@ -1,9 +1,11 @@
-"""Whose strokes a load of one stroke acts in: the working link's, unless the load names its own.
+"""Whose strokes a load of one stroke acts in, and what its diagram's shares are of: the working link's stroke,
+unless the load names its own.
 
 A window or a diagram of a load is read along the working link's stroke (``positions.working``).  On a link whose
 strokes turn back elsewhere, a second cylinder's piston, that reading is silently another cylinder's: the load
 acts while the first piston compresses, and not while its own does.  The scene then names the load's own stroke
-(``loads[].stroke``); where it does not, it is warned of.
+(``loads[].stroke``); where it does not, it is warned of.  A diagram whose shares end at the stroke's travel in
+metres was typed in metres, not shares: warned of too.
 """
 
 from __future__ import annotations
@@ -13,12 +15,15 @@ import math
 import numpy as np
 
 from .kinematics import dot
+from .loads import stroke_travel
 from .mechanism import Mechanism
 from .motion import PositionWarning, solve
 from .positions import PositionSet, link_extremes
 
 # Strokes that turn back within this of each other (degrees of the crank) are one stroke, read alike.
 SAME_STROKE_DEG = 1.0
+# A diagram's last share within this share of the stroke's travel (m or rad) is the travel typed for shares.
+TRAVEL_MATCH = 0.01
 
 
 def strokes_of_other_links(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
@@ -61,6 +66,26 @@ def _sense_in_working_stroke(mechanism: Mechanism, positions: PositionSet, link:
     motion = solve(mechanism, np.array([halfway]), positions.reference)
     slider = motion.links[link]
     return "forward" if float(dot(slider.u, motion.points[slider.origin].v)[0]) > 0 else "backward"
+
+
+def diagrams_in_travel(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
+    """A ``diagram-in-travel`` warning for a load diagram whose shares end where the stroke's travel does (0.15 of a
+    0.15 m stroke): the travel typed for shares of it, the load then acting over the stroke's first 15 % alone."""
+    if positions.extremes is None:
+        return ()
+    told = []
+    for load in mechanism.scene.loads:
+        if load.diagram is None or (last := load.diagram[-1][0]) >= 1.0 - TRAVEL_MATCH:
+            continue
+        travel = stroke_travel(mechanism, positions, load.stroke)
+        if abs(last - travel) <= TRAVEL_MATCH * travel:
+            link = (load.stroke or mechanism.scene.positions.working).link
+            unit = "m" if link in mechanism.translating else "rad"
+            told.append(PositionWarning(0, "diagram-in-travel", (
+                f"{load.where}.diagram's shares end at {last:g}, where link {link}'s stroke of {travel:.4g} {unit} "
+                f"does: are they the travel in {unit}? They are shares of the stroke, 0 where it starts and 1 where "
+                f"it ends: divide them by {travel:.4g}")))
+    return tuple(told)
 
 
 def _same_ends(one: tuple[float, float], other: tuple[float, float]) -> bool:

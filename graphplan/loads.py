@@ -198,13 +198,24 @@ def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Moti
                       stroke: Working | None = None) -> np.ndarray:
     """The share of the working stroke (of ``stroke``, a load's own, or the working link's) travelled at each
     position (0 at its start)."""
+    start, end = _stroke_ends(mechanism, positions, stroke)
+    here = _output_coordinate(mechanism, motion, stroke, about=start)
+    return (here - start) / (end - start)
+
+
+def stroke_travel(mechanism: Mechanism, positions: PositionSet, stroke: Working | None = None) -> float:
+    """How far the working link (or ``stroke``'s) travels in its working stroke: m along a guide, rad turning."""
+    start, end = _stroke_ends(mechanism, positions, stroke)
+    return abs(end - start)
+
+
+def _stroke_ends(mechanism: Mechanism, positions: PositionSet, stroke: Working | None) -> tuple[float, float]:
+    """The working link's (or ``stroke``'s) coordinate where its working stroke starts and where it ends."""
     extremes = stroke_extremes(positions, stroke)
     assert extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"
     ends = solve(mechanism, np.array(extremes), positions.reference)
     start, end = _output_coordinate(mechanism, ends, stroke)
-    travel = end - start
-    here = _output_coordinate(mechanism, motion, stroke, about=float(start))
-    return (here - start) / travel
+    return float(start), float(end)
 
 
 def _output_coordinate(mechanism: Mechanism, motion: Motion, stroke: Working | None = None,

@@ -608,7 +608,9 @@ def _read_load_diagram(table: Table) -> tuple[tuple[float, float], ...]:
         raise SceneError(where, "must have at least two points [share of the working stroke, value]")
     shares = [share for share, _ in points]
     if not 0.0 <= shares[0] or not shares[-1] <= 1.0 or any(b <= a for a, b in zip(shares, shares[1:])):
-        raise SceneError(where, "shares of the working stroke must rise strictly within 0..1", list(shares))
+        beyond = " (shares, not crank angles in degrees or the travel in metres or mm)" if shares[-1] > 1.0 else ""
+        raise SceneError(where, f"shares of the working stroke must rise strictly within 0..1{beyond}: 0 where the "
+                         "stroke starts, 1 where it ends", list(shares))
     if not any(value for _, value in points):
         raise SceneError(where, "must have a value other than zero")
     return points

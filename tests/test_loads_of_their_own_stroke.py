@@ -174,3 +174,28 @@ working = { link = 4, sense = "forward" }
                 np.interp(1.0 - share[3], [0.0, 0.5, 1.0], [5300.0, 300.0, 100.0])]
     np.testing.assert_allclose(np.real(force), [-value for value in expected], rtol=1e-9)
     np.testing.assert_allclose(np.imag(force), 0.0, atol=1e-9)
+
+
+def test_a_diagram_typed_in_metres_of_travel_is_warned_of():
+    """Shares 0 … 0.15 of a 0.15 m stroke (2r): the travel in metres typed for shares, which would make the gas force
+    act over the stroke's first 15 % alone."""
+    travel = 2.0 * RADIUS
+    in_metres = [[share * travel, value] for share, value in DIAGRAM]
+    text = CRANK + f"""
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+resisting = true
+diagram = {in_metres}
+[positions]
+count = 12
+start = "extreme"
+working = {{ link = 4, sense = "forward" }}
+"""
+    (warning,) = [w for w in analyse(graphplan.load_text(text)).warnings if w.code == "diagram-in-travel"]
+    assert warning.detail.startswith(f"loads[0].diagram's shares end at {travel:g}, where link 4's stroke of "
+                                     f"{travel:g} m does: are they the travel in m?")
+    as_shares = text.replace(str(in_metres), str(DIAGRAM))
+    assert not [w for w in analyse(graphplan.load_text(as_shares)).warnings if w.code == "diagram-in-travel"]

@@ -668,10 +668,13 @@ CASES: list[Case] = [
          "loads[0].diagram", "must have at least two points [share of the working stroke, value]"),
     Case("load-diagram-falling", {"loads.0.value": DELETE, "loads.0.during": DELETE,
                                   "loads.0.diagram": [[0.5, 1.0], [0.2, 2.0]]},
-         "loads[0].diagram", "shares of the working stroke must rise strictly within 0..1 (got [0.5, 0.2])"),
+         "loads[0].diagram", ("shares of the working stroke must rise strictly within 0..1: 0 where the stroke starts, "
+                              "1 where it ends (got [0.5, 0.2])")),
     Case("load-diagram-past-end", {"loads.0.value": DELETE, "loads.0.during": DELETE,
                                    "loads.0.diagram": [[0.5, 1.0], [1.2, 2.0]]},
-         "loads[0].diagram", "shares of the working stroke must rise strictly within 0..1 (got [0.5, 1.2])"),
+         "loads[0].diagram", ("shares of the working stroke must rise strictly within 0..1 (shares, not crank angles "
+                              "in degrees or the travel in metres or mm): 0 where the stroke starts, 1 where it ends "
+                              "(got [0.5, 1.2])")),
     Case("load-diagram-all-zero", {"loads.0.value": DELETE, "loads.0.during": DELETE,
                                    "loads.0.diagram": [[0.0, 0.0], [1.0, 0.0]]},
          "loads[0].diagram", "must have a value other than zero"),
