@@ -41,6 +41,9 @@ POLYGON_FIELD_MM = 150.0
 _KEPT_FIELDS = 2.0
 # A force whose line passes this close to a moment centre (a share of the mechanism's size) passes through it.
 _THROUGH = 1e-12
+# A term's moment this small beside its equation's largest is the plan's rounding (an inertia moment of a link at
+# rest in its turning), not a moment: the note leaves it out by the same share (report.forces.ROUNDING).
+TERM_ROUNDING = 1e-12
 
 
 @dataclass(frozen=True)
@@ -98,6 +101,16 @@ class MomentEquation:
     def bodies(self) -> str:
         """What the equation is written for: ``3``, or ``3,4,5,6`` for a whole group (``links``)."""
         return ",".join(map(str, self.links)) if self.links else str(self.link)
+
+    @property
+    def standing_terms(self) -> tuple[Term, ...]:
+        """The terms every writing of the equation keeps: all but the rounding, however short their arms.
+
+        Their moments are what the value balances, so an equation written with
+        these alone still gives its value.
+        """
+        size = max([abs(term.moment) for term in self.terms] + [abs(self.value * self.arm)])
+        return tuple(term for term in self.terms if abs(term.moment) > TERM_ROUNDING * size)
 
     @property
     def equation(self) -> str:

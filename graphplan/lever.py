@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .forces import Load
+from .forces import TERM_ROUNDING, Load
 from .kinematics import cross
 from .mechanism import Mechanism
 from .plans import Plan
@@ -54,6 +54,12 @@ class Lever:
     balancing_force: complex
     balancing_image: str
     balancing: float
+
+    def stands(self, term: LeverTerm) -> bool:
+        """Whether ``term`` stands in the lever's equation: its moment is more than the rounding beside the largest
+        (the balancing force's among them), however short its arm on the drawing."""
+        largest = max([abs(other.moment) for other in self.terms] + [abs(sum(other.moment for other in self.terms))])
+        return abs(term.moment) > TERM_ROUNDING * largest
 
     def difference_percent(self, polygons: float) -> float:
         """(lever − polygons)/polygons · 100: how far the two methods part."""

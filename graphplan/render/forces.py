@@ -718,7 +718,10 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
     An arm is the perpendicular from the moment centre to the force's line;
     the line runs on, dashed, from the arrow to the foot when the foot lies
     off the arrow.  A force whose line passes through the centre has no arm
-    and no term.
+    and no term.  Every term whose moment is in the value stands in the
+    equation (:attr:`MomentEquation.standing_terms`), as in the note: an arm
+    too short to draw (a crank near a dead centre) is given by its length
+    under the equation instead.
     """
     items: list[Primitive] = []
     anchors: list[Anchor] = []
@@ -727,25 +730,28 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
     for equation in group.moments:
         centre = _c(paper(sheet.positions[equation.about]))
         parts: list[str] = []
-        for term in equation.terms:
+        undrawn: list[str] = []
+        for term in equation.standing_terms:
             if term.name in drawn:
-                if term.arm / sheet.length_scale < ZERO_MM:
-                    continue
                 start, end, unit = drawn[term.name]
                 count += 1
                 name = f"h{count}"
+                parts.append(f"{_sign(term.moment)} {term.name}·{name}")
+                if term.arm / sheet.length_scale < ZERO_MM:
+                    undrawn.append(f"{name} = {significant(term.arm / sheet.length_scale)} {sheet.text['millimetre']}")
+                    continue
                 items += _perpendicular(centre, start, end, unit)
                 foot = _foot(centre, start, unit)
                 anchors.append(Anchor(_xy((centre + foot) / 2), name, NAME_SIZE - 0.4,
                                       _angle(1j * (foot - centre)), _ARM.colour))
-                parts.append(f"{_sign(term.moment)} {term.name}·{name}")
-            elif term.moment != 0.0:
+            else:
                 # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.
                 couple = any(load.name == term.name and not load.is_force for load in group.loads)
                 parts.append(f"{_sign(term.moment)} {term.name if couple else f'M({term.name})'}")
         line = _equation(sheet, group, equation, parts)
         if line:
             lines.append(line)
+            lines += _wrapped(undrawn)
     return items, anchors, lines
 
 
@@ -771,7 +777,7 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
             shift = f",  x = {significant(1000.0 * found.offset)} {text['millimetre']}"
         return f"{about} {unknown} {terms} = 0{shift}"
     if unknown == "Mb":
-        return f"{about} Mb {terms} = 0,  Mb = {significant(equation.value)} {text['newton_metre']}"
+        return f"{about} {' '.join(['Mb', *parts])} = 0,  Mb = {significant(equation.value)} {text['newton_metre']}"
     # The unknown's sense as first assumed: its moment balances the others'.
     sign = "" if equation.value == 0 or -total / equation.value >= 0 else "−"
     joint = next((found.joint for found in group.found
@@ -1045,6 +1051,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     parts: list[str] = []
     count = 0
     moments = {term.name: term.moment for term in lever.terms}
+    standing = {term.name for term in lever.terms if lever.stands(term)} | {"Fb"}
+    undrawn: list[str] = []  # arms in the equation too short to draw, given under it
     # The lever's bars and rays, and every arm (from the pole square to its force's line wherever the arrow
     # stands on it), which an arrow pushing onto its point must not lie along.
     feet = [_foot(0j, mm(image) + shift, force / abs(force)) for _, image, force, _, shift in named if force != 0]
@@ -1067,18 +1075,22 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         # The arm runs to the force's line, through its point, beside which the arrow may stand.
         start, end = start - beside, end - beside
         foot = _foot(0j, start, unit)
-        if abs(foot) < ZERO_MM:
+        if name not in standing:
             continue
         count += 1
         arm = "hb" if name == "Fb" else f"h{count}"
-        arm_layers.append(Layer(svg_id("lever-arm", name), tuple(_perpendicular(0j, start, end, unit))))
-        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
         arm_lengths[arm] = abs(foot)
         if name != "Fb":
             parts.append(f"{_sign(moments[name])} {name}·{arm}")
+        if abs(foot) < ZERO_MM:
+            # Too short to draw (a point's image by the pole, near a dead centre), its moment is still in Mb.
+            undrawn.append(arm)
+            continue
+        arm_layers.append(Layer(svg_id("lever-arm", name), tuple(_perpendicular(0j, start, end, unit))))
+        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
     parts += [f"{_sign(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
-              if not term.image and term.moment != 0]
+              if not term.image and lever.stands(term)]
     arrows += leaders
     groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
     dots = [dot_marker(_xy(mm(group[0])), 0.7 if group[0] == "p" else 0.5) for group in groups]
@@ -1098,7 +1110,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         crowded += near
         lettered = [anchor for anchor in lettered if anchor not in near]
         labels = _lettered(anchors + lettered, figure)
-    crowded.sort(key=arm_anchors.index)
+    given = sorted([anchor.text for anchor in crowded] + undrawn, key=list(arm_lengths).index)
     parts.append(f"{_sign(-sum(moments.values()))} Fb·hb")
     equation = _leading(" ".join(parts))
     caption = [text["lever_title"],
@@ -1106,8 +1118,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                    text["body_force_scale"].format(value=format_scale(scale),
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
-               *_wrapped([f"{anchor.text} = {significant(arm_lengths[anchor.text])} {text['millimetre']}"
-                          for anchor in crowded]),
+               *_wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
                _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
