@@ -121,3 +121,94 @@ def test_a_mechanism_of_plausible_lengths_that_cannot_turn_round_keeps_its_reach
     data["driver"]["length"] = 0.5
     said = refusal(data)
     assert "millimetres" not in said and "driver.swing = [" in said
+
+
+# A student's compressor with its lengths typed in millimetres (75, 300, 100 for 0.075, 0.30, 0.10 m), its
+# dynamics drawn on A1 sheets: its energy–mass diagram's tangents stand at ψ ≈ 89.9°.
+COMPRESSOR_IN_MM = """
+[scene]
+title = "Piston compressor"
+gravity = 9.81
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 75.0
+rpm = 600.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 300.0
+guide = { through = "O", angle = 0.0 }
+assembly = "forward"
+[points]
+S2 = { link = 2, from = "O", toward = "A", at = 0.0 }
+S3 = { link = 3, from = "A", toward = "B", at = 100.0 }
+[links.2]
+mass = 8.0
+centre = "S2"
+inertia = 0.05
+[links.3]
+mass = 3.0
+centre = "S3"
+inertia = 0.03
+[links.4]
+mass = 4.0
+centre = "B"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+resisting = true
+diagram = [[0.0, 0.0], [0.2, 400.0], [0.4, 1000.0], [0.6, 2200.0], [0.75, 5300.0], [1.0, 5300.0]]
+[positions]
+count = 12
+start = "extreme"
+working = { link = 4, sense = "forward" }
+plans = [1]
+[dynamics]
+delta = 0.0125
+[drawing]
+sheet = "A1"
+"""
+
+
+def _compressor_in_mm(tmp_path, drawing: str = ""):
+    scene = tmp_path / "compressor_mm.toml"
+    scene.write_text(COMPRESSOR_IN_MM + drawing, encoding="utf-8")
+    return scene
+
+
+def test_the_energy_mass_diagram_of_steep_tangents_stays_about_its_curve(tmp_path):
+    """Tangents at ψ ≈ 89.9° cut three heights of ΔT beyond the curve each way made the diagram 685 mm tall, which no
+    A1 sheet held, and the run was refused; cut a little past the curve's band, it stays near the curve's size."""
+    from graphplan.deliverables import MachineDynamics
+    from graphplan.render import dynamics as dynamics_layout
+    from graphplan.render.primitives import Polyline, bounds_of
+
+    dynamics = MachineDynamics(analyse(graphplan.load(_compressor_in_mm(tmp_path))))
+    layers = {layer.name: layer.items for layer in dynamics_layout.layout(dynamics.model, dynamics.flywheel)}
+    scales = dynamics_layout.scales_for(dynamics.model)
+    curve = dynamics.model.energy / scales.energy
+    _, bottom, _, top = bounds_of(layers["energy-mass"])
+    assert top - bottom < float(curve.max() - curve.min()) + 2 * dynamics_layout.CUT_TANGENT_RUN_MM + 40.0
+    # Both tangents are still drawn across the curve's band.
+    tangents = [item for item in layers["energy-mass"] if isinstance(item, Polyline) and item.stroke.colour == "#b22222"]
+    assert len(tangents) == 2
+    for tangent in tangents:
+        (_, y0), (_, y1) = tangent.points
+        assert abs(y1 - y0) >= float(curve.max() - curve.min())
+
+
+def test_check_and_run_agree_on_a_compressor_in_millimetres(tmp_path, capsys):
+    scene = _compressor_in_mm(tmp_path)
+    assert main(["check", str(scene)]) == 0
+    assert "are the lengths in millimetres?" in capsys.readouterr().out
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 0
+    assert "are the lengths in millimetres?" in capsys.readouterr().out

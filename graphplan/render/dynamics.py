@@ -65,8 +65,12 @@ TICK_MM = 1.2
 # The ring round a value read off a velocity plan on the curve of the exact one (mm).
 PLAN_RING_MM = 1.2
 # A tangent of the energy–mass diagram is drawn to the ΔT axis unless its intercept lies further
-# than this many heights of the ΔT diagram from its abscissa; then it is cut there.
+# than this many heights of the ΔT diagram from its abscissa; then it is cut short of the axis.
 INTERCEPT_REACH = 3.0
+# A tangent cut short of the axis runs this far (mm) past the curve's band at either end, enough to read its
+# angle by: cut at the reach both ways, a steep one (ψ near 90°, a machine whose own Je far outweighs its ΔT)
+# stood 8 heights of ΔT tall, a 685 mm drawing no A1 sheet held.
+CUT_TANGENT_RUN_MM = 10.0
 
 _DRIVING = Stroke(0.5, "#1f5fa8", (3.0, 1.5))
 _RESISTING = Stroke(0.5, "black")
@@ -274,6 +278,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     ys = model.energy / scales.energy
     items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE, closed=True)]
     top_mm, bottom_mm = float(np.max(ys)), float(np.min(ys))
+    curve = (bottom_mm - CUT_TANGENT_RUN_MM, top_mm + CUT_TANGENT_RUN_MM)
     width = float(np.max(xs))
     if flywheel is not None:
         reach = INTERCEPT_REACH * max(top_mm - bottom_mm, 1.0)
@@ -281,15 +286,14 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
             slope = tangent.slope * scales.inertia / scales.energy   # tan ψ on the paper
             touch = (float(xs[tangent.touch]), float(ys[tangent.touch]))
             intercept = tangent.intercept / scales.energy
-            # A steep tangent (a fast machine: tan ψ grows as ωm²) is drawn only across the band of the curve
-            # and a little beyond, where it starts and ends; run to the axis or past the curve it was metres long.
+            # A steep tangent (a fast machine: tan ψ grows as ωm²) whose intercept lies beyond the reach is drawn
+            # only across the band of the curve and a little beyond; run to the axis it was metres long.
             band = reach + max(abs(top_mm), abs(bottom_mm))
-            start_x = 0.0
-            if abs(intercept) > band:
-                start_x = (math.copysign(band, intercept) - intercept) / slope if slope else 0.0
-            end_x = width + 4.0
-            if slope and abs(intercept + slope * end_x) > band:
-                end_x = (math.copysign(band, intercept + slope * end_x) - intercept) / slope
+            low, high = (-band, band) if abs(intercept) <= band else curve
+            start_x, end_x = 0.0, width + 4.0
+            if slope:
+                ends = sorted(((low - intercept) / slope, (high - intercept) / slope))
+                start_x, end_x = max(start_x, ends[0]), min(end_x, ends[1])
             line = ((start_x, intercept + slope * start_x), (end_x, intercept + slope * end_x))
             items.append(Polyline(line, _TANGENT))
             items.append(dot_marker(touch, 0.7, _TANGENT.colour))
