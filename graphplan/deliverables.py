@@ -136,6 +136,19 @@ def refuse_as_run_would(scene: Scene, analysis: Analysis | None, pieces: tuple[s
         of_analysis(analysis)  # a derivative out of the pole method's reach near a toggle
     if "dynamics" in pieces and scene.dynamics is not None:
         _dynamics_of(scene, analysis, None).refuse()
+    if "sheets" in pieces and scene.drawing.sheet != "none" and missing(scene, analysis, "dynamics") is None:
+        _refuse_dynamics_overflow(scene, analysis)
+
+
+def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None) -> None:
+    """The refusal the sheets meet where no sheet holds the dynamics drawing, even part by part: its scales are the
+    program's, fitted to the machine, so only packing it shows whether it fits."""
+    from .render.packing import pack
+    from .render.sheet import dynamics_panel
+    from .render.title_block import form_of
+
+    machine, _ = _machine_layouts(_dynamics_of(scene, analysis, None), _dynamics_words(scene, analysis))
+    pack([dynamics_panel(machine, scene.locale)], scene.drawing.sheet, form_of(scene.locale))
 
 
 def _by_default(scene: Scene, piece: str) -> bool:

@@ -212,3 +212,22 @@ def test_check_and_run_agree_on_a_compressor_in_millimetres(tmp_path, capsys):
     assert "are the lengths in millimetres?" in capsys.readouterr().out
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 0
     assert "are the lengths in millimetres?" in capsys.readouterr().out
+
+
+def test_check_refuses_a_dynamics_drawing_no_sheet_holds_as_the_run_does_without_offering_a_length_scale(
+        tmp_path, capsys, monkeypatch):
+    """The dynamics diagrams are at scales the program fits to the machine: no μl changes them.  A drawing of them no
+    sheet holds (here the steep tangents run on as far as they once did) is refused by check as by the run, and the
+    advice names a bigger sheet or none, not drawing.length_scale."""
+    from graphplan.render import dynamics as dynamics_layout
+
+    monkeypatch.setattr(dynamics_layout, "CUT_TANGENT_RUN_MM", 300.0)
+    scene = _compressor_in_mm(tmp_path)
+    assert main(["check", str(scene)]) == 2
+    checked = capsys.readouterr().err
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "sheets"]) == 2
+    ran = capsys.readouterr().err
+    error = checked.strip().splitlines()[-1]
+    assert error.startswith("graphplan: error: drawing.sheet: the drawing 'Dynamics of the machine: dynamics-")
+    assert error in ran.splitlines()
+    assert "length_scale" not in error and error.endswith("clear of its title block); sheet = \"none\" (got 'A1')")

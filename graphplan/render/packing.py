@@ -511,10 +511,13 @@ def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: 
     x0, y0, x1, y1 = panel.extent
     what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
     bigger = bigger_holding(sheet, form, [panel])
-    ways = [f"choose {bigger} or a bigger sheet"] if bigger else ["a larger μl (drawing.length_scale)"]
+    ways = [f"choose {bigger} or a bigger sheet"] if bigger else []
+    # Only a drawing at μl shrinks with a larger μl: the dynamics and the diagrams are at scales the program fits.
+    ways += ["a larger μl (drawing.length_scale)"] if not bigger and panel.to_scale else []
+    ways.append('sheet = "none"')
     return SceneError("drawing.sheet",
                       f"the drawing {what!r} ({x1 - x0:.0f} × {y1 - y0:.0f} mm at its scales) does not fit on {sheet} "
-                      f"({rooms(sheet, form, turns)}); {', or '.join(ways)}, or sheet = \"none\"", sheet)
+                      f"({rooms(sheet, form, turns)}); {', or '.join(ways)}", sheet)
 
 
 def rooms(sheet: str, form: str, turns: Sequence[bool]) -> str:

@@ -671,16 +671,19 @@ def dynamics_panel(layers: Sequence[Layer], locale: str,
     drawing fills the sheet as a course project's does; its parts stay the
     usual drawing's.
     """
-    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,)) for layer in layers if layer.name != TITLE_LAYER}
+    # Its diagrams are at scales fitted to the machine, none a length's: no μl in a title block, nor in advice.
+    alone = {layer.name: Panel(f"dynamics-{layer.name}", (layer,), to_scale=False) for layer in layers
+             if layer.name != TITLE_LAYER}
     parts: list[Panel] = []
     for name, part in alone.items():
         if name == "inertia" and "energy-mass" in alone:
             continue
         if name == "energy-mass" and "inertia" in alone:
             together = (part, alone["inertia"])
-            part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together)
+            part = Panel("dynamics-flywheel", tuple(layer for piece in together for layer in piece.layers), together,
+                         to_scale=False)
         parts.append(part)
-    usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"])
+    usual = Panel("dynamics", tuple(layers), tuple(parts), labels(locale)["sheet_dynamics"], to_scale=False)
     if sheet is None or sheet == "none" or larger is None:
         return usual
     form = form_of(locale)
