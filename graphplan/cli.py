@@ -177,21 +177,20 @@ def _pieces(scene: Scene, analysis: Analysis | None) -> str:
     return f"run writes: {', '.join(pieces)}" + (f"\nleft out: {'; '.join(wanting)}" if wanting else "")
 
 
-def _print_warnings(analysis: Analysis) -> None:
+def _print_warnings(analysis: Analysis, file=None) -> None:
     from .analysis import SCENE_WIDE_WARNINGS
 
     for warning in analysis.warnings:
         number = int(analysis.positions.numbers[warning.position])
         where = "" if warning.code in SCENE_WIDE_WARNINGS else f"position {number}: "
-        print(f"warning: {where}{warning.detail}")
+        print(f"warning: {where}{warning.detail}", file=file)
 
 
 def _run(arguments: argparse.Namespace) -> int:
     import dataclasses
 
     from .analysis import analyse
-    from .deliverables import check_formats, chosen, files, missing
-    from .output import write_folder
+    from .deliverables import check_formats
     from .scene import load
 
     progress = Progress()
@@ -205,6 +204,23 @@ def _run(arguments: argparse.Namespace) -> int:
                                                                        sheet_given=True))
     progress.say("analysing the mechanism" if scene.has_linkage else "analysing the machine")
     analysis = analyse(scene) if scene.has_linkage else None
+    try:
+        return _deliver(arguments, scene, analysis, formats, progress)
+    except GraphplanError:
+        # The analysis's warnings come only with a finished run: a refused one would hide the cause they may name
+        # (lengths in millimetres behind a drawing no sheet holds).
+        if analysis is not None:
+            _print_warnings(analysis, sys.stderr)
+        raise
+
+
+def _deliver(arguments: argparse.Namespace, scene: Scene, analysis: Analysis | None, formats: Sequence[str],
+             progress: Progress) -> int:
+    """The run's pieces drawn, written and told, once the scene is analysed."""
+    from .deliverables import chosen, files, missing
+    from .output import write_folder
+
+    path: Path = arguments.scene
     only = arguments.only
     if arguments.figures:
         if (reason := missing(scene, analysis, "figures")) is not None:

@@ -231,3 +231,14 @@ def test_check_refuses_a_dynamics_drawing_no_sheet_holds_as_the_run_does_without
     assert error.startswith("graphplan: error: drawing.sheet: the drawing 'Dynamics of the machine: dynamics-")
     assert error in ran.splitlines()
     assert "length_scale" not in error and error.endswith("clear of its title block); sheet = \"none\" (got 'A1')")
+
+
+def test_a_refused_run_tells_the_scene_s_warnings_before_its_error(tmp_path, capsys):
+    """The plan of positions of a mechanism in millimetres drawn at a μl for metres fits no paper: the run's error
+    comes after the warning that names the cause, not alone."""
+    scene = _compressor_in_mm(tmp_path, "length_scale = 0.002\n")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert lines[-1].startswith("graphplan: error: drawing.length_scale: draws the paths of the points")
+    told_at = next(k for k, line in enumerate(lines) if "are the lengths in millimetres?" in line)
+    assert lines[told_at].startswith("warning: ") and told_at < len(lines) - 1
