@@ -124,8 +124,12 @@ def _check(path: Path) -> int:
     analysis = analyse(scene)
     mechanism = analysis.mechanism
     n, p5, w = mechanism.degrees_of_freedom
-    pieces = _pieces(scene, analysis)  # an [output] include the scene cannot give is refused before "ok"
-    refuse_as_run_would(scene, analysis, chosen(scene, analysis))
+    try:
+        pieces = _pieces(scene, analysis)  # an [output] include the scene cannot give is refused before "ok"
+        refuse_as_run_would(scene, analysis, chosen(scene, analysis))
+    except GraphplanError:
+        _print_warnings(analysis, sys.stderr)  # as the run, whose refusal this is, prints them
+        raise
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")

@@ -218,7 +218,9 @@ def test_check_refuses_what_the_run_s_drawings_would_refuse_before_it_says_ok(tm
     scene.write_text(text.replace("acceleration_pole = 100.0", f"acceleration_pole = {pole}"), encoding="utf-8")
     assert main(["check", str(scene)]) == 2
     checked = capsys.readouterr()
-    assert checked.out == "" and checked.err.startswith(f"graphplan: error: {key}: ")
+    # The scene's warnings first, as the run gives them, then the one error.
+    assert checked.out == "" and checked.err.splitlines()[-1].startswith(f"graphplan: error: {key}: ")
+    assert all(line.startswith("warning: ") for line in checked.err.splitlines()[:-1])
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     assert capsys.readouterr().err == checked.err
 
