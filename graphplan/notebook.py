@@ -63,6 +63,8 @@ class PositionPlans:
 
     analysis: Analysis = dataclasses.field(repr=False)
     position: PlanPosition = dataclasses.field(repr=False)
+    # The scene as given, whose run's μl the drawings take: ``analysis`` is of a copy that plans this position alone.
+    scene: Scene = dataclasses.field(repr=False)
 
     def __repr__(self) -> str:
         # The dataclass's own repr printed the whole analysis (hundreds of thousands of characters).
@@ -102,11 +104,24 @@ class PositionPlans:
         return self.position.forces
 
     @cached_property
+    def _drawn(self) -> Analysis:
+        """The analysis at the μl the scene's run draws its mechanism at.
+
+        Left to the program, μl is the one that lays the run's drawings (every plan position's) on the fewest
+        sheets: chosen for this position alone, it drew the mechanism at 0.005 m/mm where the run's plan sheet has
+        0.004.  The run's analysis is worked out only here, when a drawing is asked for."""
+        from .render.drawings import at_length_scale, length_scale
+
+        if self.scene.drawing.length_scale is not None:
+            return self.analysis
+        return at_length_scale(self.analysis, length_scale(analyse(self.scene)))
+
+    @cached_property
     def drawing(self) -> Drawing:
-        """The plan sheet: the mechanism in the position, its velocity and acceleration plans."""
+        """The plan sheet: the mechanism in the position (at the run's μl), its velocity and acceleration plans."""
         from .render.drawings import plan_svg
 
-        return Drawing(plan_svg(self.analysis, self.position.index, self.position.velocity,
+        return Drawing(plan_svg(self._drawn, self.position.index, self.position.velocity,
                                 self.position.acceleration))
 
     @cached_property
@@ -116,7 +131,7 @@ class PositionPlans:
             return None
         from .render.drawings import forces_svg
 
-        return Drawing(forces_svg(self.analysis, self.position))
+        return Drawing(forces_svg(self._drawn, self.position))
 
     @cached_property
     def forces_with_friction_drawing(self) -> Drawing | None:
@@ -126,7 +141,7 @@ class PositionPlans:
             return None
         from .render.drawings import forces_svg
 
-        return Drawing(forces_svg(self.analysis, self.position, with_friction=True))
+        return Drawing(forces_svg(self._drawn, self.position, with_friction=True))
 
     def _repr_svg_(self) -> str:
         return self.drawing.svg
@@ -159,7 +174,7 @@ def plan(scene: Scene, number: int) -> PositionPlans:
     if hand and on_grid:
         position = dataclasses.replace(position, errors=position.errors + measured_on_velocity_plans(analysis, number,
                                                                                                       hand))
-    return PositionPlans(analysis, position)
+    return PositionPlans(analysis, position, scene)
 
 
 __all__ = ["Drawing", "PositionPlans", "plan"]

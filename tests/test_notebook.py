@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import dataclasses
-import xml.etree.ElementTree as ElementTree
 from types import MappingProxyType
+from xml.etree import ElementTree
 
 import numpy as np
 import pytest
@@ -96,3 +96,17 @@ def test_hand_readings_of_a_position_drawn_only_among_the_velocity_plans_are_rea
     [row] = [row for row in planned.errors if row.source == "measured" and row.quantity == "VB"]
     assert row.plan == pytest.approx(1.02 * exact, rel=1e-9)
     assert row.percent == pytest.approx(-2.0, rel=1e-6)
+
+
+def test_a_position_s_plan_sheet_is_the_run_s_at_the_mu_l_the_run_chooses(tmp_path):
+    """The Russian shaper leaves μl to the program, which takes the one that lays the run's drawings (positions 3
+    and 10) on the fewest sheets, 0.004 m/mm; the notebook chose it for position 3 alone and drew 0.005."""
+    from graphplan.cli import main
+    from graphplan.starters import starter
+
+    path = tmp_path / "shaper.toml"
+    path.write_text(starter("shaper", "ru"), encoding="utf-8")
+    assert main(["run", str(path), "--out", str(tmp_path / "run"), "--only", "velocity,acceleration"]) == 0
+    written = (tmp_path / "run" / "plan_3.svg").read_text(encoding="utf-8")
+    assert "μl = 0,004 м/мм" in written
+    assert graphplan.load(path).plan(3).drawing.svg == written
