@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .errors import GraphplanError, SceneError
+from .errors import GraphplanError
 
 if TYPE_CHECKING:
     from .analysis import Analysis
@@ -94,8 +94,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _new(arguments.kind, arguments.out, arguments.locale)
         return _run(arguments)
     except GraphplanError as error:
-        if isinstance(error, SceneError) and error.where == "drawing.sheet" and getattr(arguments, "sheet", None):
-            error = SceneError("--sheet (in place of drawing.sheet)", error.problem, error.value)
+        # The scene's warnings that may name the refusal's cause (lengths in millimetres behind a drawing no sheet
+        # holds) come before it, as the refusing stage noted them.
+        for note in getattr(error, "__notes__", ()):
+            print(note, file=sys.stderr)
         print(f"graphplan: error: {error}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
@@ -107,6 +109,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _check(path: Path) -> int:
     from .analysis import analyse
     from .deliverables import chosen, refuse_as_run_would
+    from .run import note_warnings
     from .scene import load
 
     scene = load(path)
@@ -127,8 +130,8 @@ def _check(path: Path) -> int:
     try:
         pieces = _pieces(scene, analysis)  # an [output] include the scene cannot give is refused before "ok"
         refuse_as_run_would(scene, analysis, chosen(scene, analysis))
-    except GraphplanError:
-        _print_warnings(analysis, sys.stderr)  # as the run, whose refusal this is, prints them
+    except GraphplanError as error:
+        note_warnings(error, analysis)  # as the run, whose refusal this is, tells them
         raise
     print(f"{path}: ok")
     print(f"structure: {mechanism.structure}")
@@ -181,78 +184,28 @@ def _pieces(scene: Scene, analysis: Analysis | None) -> str:
     return f"run writes: {', '.join(pieces)}" + (f"\nleft out: {'; '.join(wanting)}" if wanting else "")
 
 
-def _print_warnings(analysis: Analysis, file=None) -> None:
-    from .analysis import SCENE_WIDE_WARNINGS
+def _print_warnings(analysis: Analysis) -> None:
+    from .run import position_warnings
 
-    for warning in analysis.warnings:
-        number = int(analysis.positions.numbers[warning.position])
-        where = "" if warning.code in SCENE_WIDE_WARNINGS else f"position {number}: "
-        print(f"warning: {where}{warning.detail}", file=file)
+    for line in position_warnings(analysis):
+        print(f"warning: {line}")
 
 
 def _run(arguments: argparse.Namespace) -> int:
-    import dataclasses
-
-    from .analysis import analyse
-    from .deliverables import check_formats
+    from .run import run
     from .scene import load
 
     progress = Progress()
     path: Path = arguments.scene
-    formats = check_formats(arguments.formats)
     scene = load(path)
-    if arguments.locale is not None:
-        scene = dataclasses.replace(scene, locale=arguments.locale)
-    if arguments.sheet is not None:  # as if the scene named it: the sheets are drawn unasked
-        scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, sheet=arguments.sheet,
-                                                                       sheet_given=True))
-    progress.say("analysing the mechanism" if scene.has_linkage else "analysing the machine")
-    analysis = analyse(scene) if scene.has_linkage else None
-    try:
-        return _deliver(arguments, scene, analysis, formats, progress)
-    except GraphplanError:
-        # The analysis's warnings come only with a finished run: a refused one would hide the cause they may name
-        # (lengths in millimetres behind a drawing no sheet holds).
-        if analysis is not None:
-            _print_warnings(analysis, sys.stderr)
-        raise
-
-
-def _deliver(arguments: argparse.Namespace, scene: Scene, analysis: Analysis | None, formats: Sequence[str],
-             progress: Progress) -> int:
-    """The run's pieces drawn, written and told, once the scene is analysed."""
-    from .deliverables import chosen, files, missing
-    from .output import write_folder
-
-    path: Path = arguments.scene
-    only = arguments.only
-    if arguments.figures:
-        if (reason := missing(scene, analysis, "figures")) is not None:
-            raise SceneError("--figures", f"'figures' {reason}")
-        only = [*(only if only is not None else chosen(scene, analysis)), "figures"]
-    pieces = chosen(scene, analysis, only)
-    progress.say("drawing and writing the tables")
-    outcomes: list[str] = []
-    found = files(scene, analysis, pieces, formats, warn=outcomes.append)
-    # A sheet asked for that the scene has nothing to draw on (a vibration alone) is said, not dropped.
-    if scene.drawing.sheet_given and scene.drawing.sheet != "none" and "sheets" not in pieces \
-            and (reason := missing(scene, analysis, "sheets")) is not None:
-        where = "--sheet" if arguments.sheet is not None else "drawing.sheet"
-        alone = ("; without a mechanism only a [balancing] and a [dynamics] of load diagrams are drawn on sheets"
-                 if analysis is None else "")
-        outcomes.append(f"{where}: no sheet is drawn: 'sheets' {reason}{alone}")
-    # A format none of the pieces comes in (docx with no note, dxf of the accuracy's plots) is said, not dropped.
-    outcomes += [f"--format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
-                 f"{', '.join(pieces)})" for kind in formats if kind != "svg"
-                 and not any(name.endswith(f".{kind}") for name in found)]
-    written = write_folder(arguments.out if arguments.out is not None else Path("output") / path.stem, found)
-    print(f"{scene.title}")
-    if analysis is not None:
-        print(f"structure: {analysis.mechanism.structure}")
-        _print_warnings(analysis)
-    for outcome in outcomes:
-        print(f"warning: {outcome}")
-    for file in written:
+    done = run(scene, arguments.out if arguments.out is not None else Path("output") / path.stem, arguments.only,
+               arguments.formats, arguments.figures, arguments.locale, arguments.sheet, say=progress.say)
+    print(f"{done.scene.title}")
+    if done.analysis is not None:
+        print(f"structure: {done.analysis.mechanism.structure}")
+    for line in done.warnings:
+        print(f"warning: {line}")
+    for file in done.files:
         print(f"wrote {file}")
     return 0
 

@@ -13,8 +13,9 @@ from .errors import OutputError
 WRITTEN = ".graphplan-written"
 
 
-def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
-    """Write ``files`` (relative name → content) as the folder ``target``.
+def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "--out") -> list[Path]:
+    """Write ``files`` (relative name → content) as the folder ``target``; ``option`` is what the refusals tell
+    the user to give another folder (the command line's ``--out``, the notebook's ``scene.write()``).
 
     Everything is written into a temporary sibling first, which then takes
     ``target``'s place; an existing ``target`` is replaced only once the new
@@ -29,7 +30,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     here = Path.cwd().resolve()
     if target.resolve() == here or target.resolve() in here.parents:
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
-                          "give --out a folder of its own")
+                          f"give {option} a folder of its own")
     # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
     folder = target.resolve() if target.is_symlink() else target
     for above in folder.parents:
@@ -46,7 +47,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes]) -> list[Path]:
     if theirs:
         them = "it" if len(theirs) == 1 else "them"
         raise OutputError(f"{target}: holds {', '.join(theirs)}, which no graphplan run wrote there and this run "
-                          f"would replace; move {them} away, or give --out another folder")
+                          f"would replace; move {them} away, or give {option} another folder")
     carried: list[str] = []
     try:
         folder.parent.mkdir(parents=True, exist_ok=True)

@@ -1,0 +1,166 @@
+"""One run of a scene: its pieces chosen, its files made, its output folder written whole or not at all.
+
+The command line's ``graphplan run`` and the notebook's ``scene.write(folder)`` both go through :func:`run`, so
+that they write the same files, warn of the same outcomes and refuse the same things; each names its own options
+(``--only`` or ``only``) in what it says.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from .errors import GraphplanError, SceneError
+from .reader import check_choice
+from .scene import LOCALES, SHEETS, Scene
+
+if TYPE_CHECKING:
+    from .analysis import Analysis
+
+
+@dataclass(frozen=True)
+class Options:
+    """How a caller names the run's options, for the errors and warnings that name them."""
+
+    only: str
+    formats: str
+    figures: str
+    sheet: str
+    locale: str
+    # Who is to be given another folder where the one given cannot be written.
+    out: str
+
+
+COMMAND_LINE = Options(only="--only", formats="--format", figures="--figures", sheet="--sheet", locale="--locale",
+                       out="--out")
+PYTHON = Options(only="only", formats="formats", figures="figures", sheet="sheet", locale="locale",
+                 out="scene.write()")
+
+
+@dataclass(frozen=True)
+class Run:
+    """What a run wrote and what it warned of.
+
+    ``scene`` is the scene as run (in the locale and on the sheet asked for), ``analysis`` its mechanism's analysis
+    (None without a linkage), ``files`` the paths written, ``warnings`` each line the command line prints after
+    ``warning:``: the positions near a toggle, then the outcomes (a machine that stalls, a speed near resonance).
+    """
+
+    scene: Scene = dataclasses.field(repr=False)
+    analysis: Analysis | None = dataclasses.field(repr=False)
+    folder: Path
+    files: tuple[Path, ...]
+    warnings: tuple[str, ...]
+
+    def __repr__(self) -> str:
+        told = "".join(f"\nwarning: {line}" for line in self.warnings)
+        return f"<Run of {self.scene.title!r}: {len(self.files)} files in {self.folder}>{told}"
+
+
+def as_asked(scene: Scene, locale: str | None = None, sheet: str | None = None,
+             options: Options = COMMAND_LINE) -> Scene:
+    """``scene`` in another ``locale`` and on another ``sheet``, as if it named them: the sheets are then drawn
+    unasked."""
+    if locale is not None:
+        scene = dataclasses.replace(scene, locale=check_choice(locale, options.locale, LOCALES))
+    if sheet is not None:
+        scene = dataclasses.replace(scene, drawing=dataclasses.replace(
+            scene.drawing, sheet=check_choice(sheet, options.sheet, SHEETS), sheet_given=True))
+    return scene
+
+
+def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: Iterable[str] = ("svg",),
+        figures: bool = False, locale: str | None = None, sheet: str | None = None,
+        options: Options = COMMAND_LINE, say: Callable[[str], None] | None = None) -> Run:
+    """Analyse ``scene``, make the files of the pieces ``only`` names (else those the scene asks for or has data
+    for; ``figures`` adds the report figures) in ``formats``, and write them as ``folder``, which is replaced only
+    once they are all made (:func:`graphplan.output.write_folder`).  ``say`` is told of each stage as it begins.
+
+    Raises
+    ------
+    SceneError
+        for a piece, format, locale or sheet the scene cannot give, naming the option as ``options`` spells it.
+    OutputError
+        for a folder the run cannot write, or one holding a file of the user's named as one of the run's.
+    """
+    try:
+        # A sheet the caller gives stands in the scene's place: a warning of it names the caller's option.
+        sheet_key = options.sheet if sheet is not None else "drawing.sheet"
+        return _run(as_asked(scene, locale, sheet, options), folder, only, formats, figures, options, sheet_key, say)
+    except SceneError as error:
+        if sheet is not None and error.where == "drawing.sheet":
+            renamed = SceneError(f"{options.sheet} (in place of drawing.sheet)", error.problem, error.value)
+            for note in getattr(error, "__notes__", ()):
+                renamed.add_note(note)
+            raise renamed from None
+        raise
+
+
+def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterable[str], figures: bool,
+         options: Options, sheet_key: str, say: Callable[[str], None] | None) -> Run:
+    from .analysis import analyse
+    from .deliverables import check_formats
+
+    tell = say if say is not None else (lambda stage: None)
+    formats = check_formats(formats, options.formats)
+    tell("analysing the mechanism" if scene.has_linkage else "analysing the machine")
+    analysis = analyse(scene) if scene.has_linkage else None
+    try:
+        return _deliver(scene, analysis, folder, only, formats, figures, options, sheet_key, tell)
+    except GraphplanError as error:
+        note_warnings(error, analysis)
+        raise
+
+
+def note_warnings(error: GraphplanError, analysis: Analysis | None) -> None:
+    """Add the analysis's warnings to a refusal as notes: the warnings come only with a finished run, and a refused
+    one would hide the cause they may name (lengths in millimetres behind a drawing no sheet holds)."""
+    for line in position_warnings(analysis):
+        error.add_note(f"warning: {line}")
+
+
+def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterable[str] | None,
+             formats: tuple[str, ...], figures: bool, options: Options, sheet_key: str,
+             tell: Callable[[str], None]) -> Run:
+    """The run's pieces drawn and written, once the scene is analysed."""
+    from .deliverables import chosen, files, missing
+    from .output import write_folder
+
+    asked = list(only) if only is not None else None
+    if figures:
+        if (reason := missing(scene, analysis, "figures")) is not None:
+            raise SceneError(options.figures, f"'figures' {reason}")
+        asked = [*(asked if asked is not None else chosen(scene, analysis)), "figures"]
+    pieces = chosen(scene, analysis, asked, options.only)
+    tell("drawing and writing the tables")
+    outcomes: list[str] = []
+    found = files(scene, analysis, pieces, formats, warn=outcomes.append)
+    # A sheet asked for that the scene has nothing to draw on (a vibration alone) is said, not dropped.
+    if scene.drawing.sheet_given and scene.drawing.sheet != "none" and "sheets" not in pieces \
+            and (reason := missing(scene, analysis, "sheets")) is not None:
+        alone = ("; without a mechanism only a [balancing] and a [dynamics] of load diagrams are drawn on sheets"
+                 if analysis is None else "")
+        outcomes.append(f"{sheet_key}: no sheet is drawn: 'sheets' {reason}{alone}")
+    # A format none of the pieces comes in (docx with no note, dxf of the accuracy's plots) is said, not dropped.
+    outcomes += [f"{options.formats} {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
+                 f"{', '.join(pieces)})" for kind in formats if kind != "svg"
+                 and not any(name.endswith(f".{kind}") for name in found)]
+    written = write_folder(folder, found, options.out)
+    return Run(scene, analysis, Path(folder), tuple(written), tuple(position_warnings(analysis) + outcomes))
+
+
+def position_warnings(analysis: Analysis | None) -> list[str]:
+    """The analysis's warnings, each a line as the command line prints it: a position's with its number."""
+    from .analysis import SCENE_WIDE_WARNINGS
+
+    if analysis is None:
+        return []
+    return [("" if warning.code in SCENE_WIDE_WARNINGS else
+             f"position {int(analysis.positions.numbers[warning.position])}: ") + warning.detail
+            for warning in analysis.warnings]
+
+
+__all__ = ["COMMAND_LINE", "PYTHON", "Options", "Run", "as_asked", "note_warnings", "position_warnings", "run"]
