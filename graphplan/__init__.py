@@ -18,7 +18,7 @@ import numpy as np
 from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionError
 from .mechanism import Mechanism, build
 from .motion import Motion
-from .scene import Scene, load
+from .scene import Scene, load, missing_part
 from .scene import loads as _read_text  # graphplan.loads is the module of the mechanism's loads
 
 __version__ = "0.1.0"
@@ -64,6 +64,8 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
 
     if not isinstance(scene, Scene):
         raise TypeError(f"solve takes a scene, as graphplan.load(path) reads it (got {scene!r})")
+    if not scene.has_linkage:
+        raise missing_part(scene, "mechanism")
     mechanism = build(scene)
     uses_near = any(getattr(group, "near", None) is not None for group in mechanism.groups)
     # Where a crank cannot go, the error says where it can, as the command line's does.

@@ -620,22 +620,30 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
         found["balancing.svg"] = balancing_diagram(analysis)
     if "vibration" in pieces:
-        from .report.vibration_plots import magnification_figure, transmissibility_figure, words_for
-        from .vibration import steady_state
+        found.update(vibration_figures(scene))
+    return found
 
-        spec = scene.vibration
-        assert spec is not None
-        response = steady_state(spec)
-        operating = (response.frequency_ratio, spec.damping_ratio)
-        text = words_for(spec, strings(scene.locale))
-        design = None if response.isolation_ratio is None or spec.transmissibility is None \
-            else (response.isolation_ratio, spec.transmissibility)
-        stream = io.StringIO()
-        magnification_figure(stream, operating=operating, text=text)
-        found["vibration_magnification.svg"] = stream.getvalue()
-        stream = io.StringIO()
-        transmissibility_figure(stream, operating=operating, design=design, text=text)
-        found["vibration_transmissibility.svg"] = stream.getvalue()
+
+def vibration_figures(scene: Scene) -> dict[str, str]:
+    """The scene's vibration plotted (matplotlib's SVG): the magnification and the transmissibility, each against
+    the frequency ratio, the machine's working point on them (and the isolation's design point)."""
+    from .report.vibration_plots import magnification_figure, transmissibility_figure, words_for
+    from .vibration import steady_state
+
+    spec = scene.vibration
+    assert spec is not None
+    response = steady_state(spec)
+    operating = (response.frequency_ratio, spec.damping_ratio)
+    text = words_for(spec, strings(scene.locale))
+    design = None if response.isolation_ratio is None or spec.transmissibility is None \
+        else (response.isolation_ratio, spec.transmissibility)
+    found = {}
+    stream = io.StringIO()
+    magnification_figure(stream, operating=operating, text=text)
+    found["vibration_magnification.svg"] = stream.getvalue()
+    stream = io.StringIO()
+    transmissibility_figure(stream, operating=operating, design=design, text=text)
+    found["vibration_transmissibility.svg"] = stream.getvalue()
     return found
 
 
@@ -688,16 +696,30 @@ def document(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         if dynamics.motion is not None:
             found["dynamics"]["motion"] = rounded(dynamics.motion_results())
     if "balancing" in pieces:
-        from .rotor_balancing import balance, balancing_results
-
-        assert scene.balancing is not None
-        found["balancing"] = rounded(balancing_results(balance(scene.balancing)))
+        found["balancing"] = balancing_document(scene)
     if "vibration" in pieces:
-        from .vibration import vibration_results
-
-        assert scene.vibration is not None
-        found["vibration"] = rounded(vibration_results(scene.vibration))
+        found["vibration"] = vibration_document(scene)
     return found
+
+
+def balancing_document(scene: Scene) -> dict[str, Any]:
+    """``results.json``'s ``balancing``: each correction plane's mass-radius product and angle (its mass where the
+    scene gives the radius), the unbalance before and after, rounded as the results file rounds every number."""
+    from .report.results import rounded
+    from .rotor_balancing import balance, balancing_results
+
+    assert scene.balancing is not None
+    return rounded(balancing_results(balance(scene.balancing)))
+
+
+def vibration_document(scene: Scene) -> dict[str, Any]:
+    """``results.json``'s ``vibration``: the amplitude, phase, transmissibility and what follows from them, rounded
+    as the results file rounds every number."""
+    from .report.results import rounded
+    from .vibration import vibration_results
+
+    assert scene.vibration is not None
+    return rounded(vibration_results(scene.vibration))
 
 
 def scale_warnings(analysis: Analysis | None, pieces: tuple[str, ...]) -> list[str]:
@@ -827,5 +849,5 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
             "accuracy.svg": accuracy.figure(found, scene.locale, scene.title)}
 
 
-__all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "check_formats", "chosen", "document", "drawings",
-           "files", "missing"]
+__all__ = ["DRAWING_FORMATS", "FORMATS", "PIECES", "Drawing", "balancing_document", "check_formats", "chosen",
+           "document", "drawings", "files", "missing", "vibration_document", "vibration_figures"]

@@ -6,6 +6,10 @@
     motion = scene.solve()            # the analytic solution at the scene's positions
     five = scene.plan(5)              # the plans of position 5; in Jupyter it shows its plan sheet
     five.values["VB"], five.velocity.scale, five.forces_drawing
+    rotor = graphplan.load("rotor.toml").balance()   # the correction planes; in Jupyter it shows its polygons
+    rotor.planes[0].mass_radius, rotor.results["planes"], rotor.drawing.save("polygons.png")
+    shaking = graphplan.load("rotor.toml").vibration_response()
+    shaking.response.amplitude, shaking.results["transmissibility"], shaking.magnification_plot
 """
 
 from __future__ import annotations
@@ -24,7 +28,9 @@ from .errors import SceneError
 from .forces import ForcePlan
 from .motion import solve
 from .plans import Plan
+from .rotor_balancing import BalancingResult, CorrectionPlane
 from .scene import Scene
+from .vibration import Response
 
 
 @dataclass(frozen=True)
@@ -177,4 +183,99 @@ def plan(scene: Scene, number: int) -> PositionPlans:
     return PositionPlans(analysis, position, scene)
 
 
-__all__ = ["Drawing", "PositionPlans", "plan"]
+@dataclass(frozen=True)
+class RotorBalancing:
+    """The rotor's balancing as a run works it out: each correction plane's polygon of mass-radius products closed
+    by its correction, the numbers ``results.json`` writes and the polygons' drawing, which Jupyter shows."""
+
+    scene: Scene = dataclasses.field(repr=False)
+
+    def __repr__(self) -> str:
+        corrections = "; ".join(f"plane {plane.name}: {plane.mass_radius:.4g} kg·m at {plane.angle_deg:.1f}°"
+                                for plane in self.planes)
+        return f"<RotorBalancing of {self.scene.title!r}: {corrections}>"
+
+    @cached_property
+    def result(self) -> BalancingResult:
+        """The record the run works from: the planes, the rotor's unbalance before (``unbalance``, kg·m, and
+        ``unbalance_moment``, kg·m²) and after (``residual``)."""
+        from .rotor_balancing import balance
+
+        assert self.scene.balancing is not None
+        return balance(self.scene.balancing)
+
+    @property
+    def planes(self) -> tuple[CorrectionPlane, ...]:
+        """Each correction plane: its ``name`` and ``position`` (m along the axis), its correction's
+        ``mass_radius`` (kg·m) and ``angle_deg``, its ``mass`` (kg, None without a correction radius) and the
+        polygon's ``vectors`` as laid off (kg·m, complex numbers x + iy)."""
+        return self.result.planes
+
+    @cached_property
+    def results(self) -> dict:
+        """``results.json``'s ``balancing``, as the run writes it: ``kind``, ``planes``, ``unbalance``, ``residual``,
+        ``warnings``."""
+        from .deliverables import balancing_document
+
+        return balancing_document(self.scene)
+
+    @cached_property
+    def drawing(self) -> Drawing:
+        """The polygons of mass-radius products, one per correction plane: the run's ``rotor_balancing.svg``."""
+        from .deliverables import drawings, encoded
+
+        [polygons] = drawings(self.scene, None, ("balancing",))
+        return Drawing(str(encoded(polygons, ("svg",))[f"{polygons.stem}.svg"]))
+
+    def _repr_svg_(self) -> str:
+        return self.drawing.svg
+
+
+@dataclass(frozen=True)
+class VibrationResponse:
+    """The machine's steady vibration on its mounts as a run works it out: the numbers ``results.json`` writes and
+    its plots of the magnification and the transmissibility."""
+
+    scene: Scene = dataclasses.field(repr=False)
+
+    def __repr__(self) -> str:
+        found = self.response
+        return (f"<VibrationResponse of {self.scene.title!r}: X = {found.amplitude:.4g} m, "
+                f"TR = {found.transmissibility:.4g} at ω/ωn = {found.frequency_ratio:.4g}>")
+
+    @cached_property
+    def response(self) -> Response:
+        """The record the run works from (SI, the lag ``phase`` in radians): ``amplitude``, ``transmissibility``,
+        ``transmitted_force``, ``natural_frequency``, ``frequency_ratio``, ``magnification``, the isolation's, the
+        base's (``base``) and both together (``combined``) where the scene has them."""
+        from .vibration import steady_state
+
+        assert self.scene.vibration is not None
+        return steady_state(self.scene.vibration)
+
+    @cached_property
+    def results(self) -> dict:
+        """``results.json``'s ``vibration``, as the run writes it (angles in degrees, speeds also in rpm)."""
+        from .deliverables import vibration_document
+
+        return vibration_document(self.scene)
+
+    @cached_property
+    def _plots(self) -> dict[str, str]:
+        from .deliverables import vibration_figures
+
+        return vibration_figures(self.scene)
+
+    @property
+    def magnification_plot(self) -> Drawing:
+        """M·X/(m·e) against ω/ωn, the machine marked on its curve: the run's ``vibration_magnification.svg``."""
+        return Drawing(self._plots["vibration_magnification.svg"])
+
+    @property
+    def transmissibility_plot(self) -> Drawing:
+        """TR against ω/ωn, the machine and the isolation's design marked: the run's
+        ``vibration_transmissibility.svg``."""
+        return Drawing(self._plots["vibration_transmissibility.svg"])
+
+
+__all__ = ["Drawing", "PositionPlans", "RotorBalancing", "VibrationResponse", "plan"]

@@ -13,7 +13,7 @@ import math
 import re
 import tomllib
 import unicodedata
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
@@ -30,7 +30,8 @@ if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
     from .analysis import Analysis
     from .deliverables import MachineDynamics
     from .motion import Motion
-    from .notebook import PositionPlans
+    from .notebook import PositionPlans, RotorBalancing, VibrationResponse
+    from .run import Run
 
 MAX_SCENE_BYTES = 1_000_000
 MAX_POSITIONS = 100_000
@@ -207,9 +208,11 @@ class Scene:
         return solve(self, driver)
 
     def analyse(self) -> Analysis:
-        """The whole analysis of the scene (:func:`graphplan.analysis.analyse`)."""
+        """The whole analysis of the scene's mechanism (:func:`graphplan.analysis.analyse`)."""
         from .analysis import analyse
 
+        if not self.has_linkage:
+            raise missing_part(self, "mechanism")
         return analyse(self)
 
     def machine_dynamics(self) -> MachineDynamics:
@@ -218,14 +221,67 @@ class Scene:
         from .deliverables import MachineDynamics
 
         if self.dynamics is None:
-            raise SceneError("dynamics", "the scene has no [dynamics] table to work out")
+            raise missing_part(self, "dynamics")
         return MachineDynamics(self.analyse() if self.has_linkage else self)
 
     def plan(self, number: int) -> PositionPlans:
         """The plans of position ``number`` (:func:`graphplan.notebook.plan`); Jupyter shows its plan sheet."""
         from .notebook import plan
 
+        if not self.has_linkage:
+            raise missing_part(self, "mechanism")
         return plan(self, number)
+
+    def balance(self) -> RotorBalancing:
+        """The scene's ``[balancing]`` rotor balanced as a run balances it: ``.planes`` (each correction's m·r and
+        angle), ``.results`` (``results.json``'s ``balancing``), ``.drawing`` (the polygons; Jupyter shows them)."""
+        from .notebook import RotorBalancing
+
+        if self.balancing is None:
+            raise missing_part(self, "balancing")
+        return RotorBalancing(self)
+
+    def vibration_response(self) -> VibrationResponse:
+        """The scene's ``[vibration]`` machine's steady vibration as a run works it out: ``.response`` (SI),
+        ``.results`` (``results.json``'s ``vibration``), ``.magnification_plot``, ``.transmissibility_plot``."""
+        from .notebook import VibrationResponse
+
+        if self.vibration is None:
+            raise missing_part(self, "vibration")
+        return VibrationResponse(self)
+
+    def write(self, folder: str | Path, *, only: Sequence[str] | None = None, formats: Sequence[str] = ("svg",),
+              figures: bool = False, locale: str | None = None, sheet: str | None = None) -> Run:
+        """Write the scene's run to ``folder`` as ``graphplan run SCENE --out FOLDER`` writes it, the same files
+        refused and warned of alike (:func:`graphplan.run.run`): ``only``, ``formats``, ``figures``, ``locale``
+        and ``sheet`` are the command line's ``--only``, ``--format``, ``--figures``, ``--locale`` and ``--sheet``.
+        The folder is written whole or not at all.  Returns the paths written (``.files``) and the lines the
+        command line warns with (``.warnings``)."""
+        from .run import PYTHON, run
+
+        for name, value in (("only", only), ("formats", formats)):
+            if isinstance(value, str):  # taken letter by letter, "svg" would be refused as 's', 'v', 'g'
+                raise TypeError(f"{name} is a list of names: {name}=[{value!r}], not {name}={value!r}")
+        return run(self, Path(folder), only, formats, figures, locale, sheet, options=PYTHON)
+
+
+# What each verb of a scene needs, and the verb that works it out, for the error that says what else to call.
+_PARTS = {"mechanism": ("mechanism ([frame] and [driver])", "its mechanism", "analyse"),
+          "dynamics": ("[dynamics] table", "its [dynamics]", "machine_dynamics"),
+          "balancing": ("[balancing] table", "its [balancing]", "balance"),
+          "vibration": ("[vibration] table", "its [vibration]", "vibration_response")}
+
+
+def missing_part(scene: Scene, part: str) -> SceneError:
+    """The error of a verb asked of ``scene`` without the ``part`` it works out (``mechanism``, ``dynamics``,
+    ``balancing``, ``vibration``): what the scene lacks, and the verbs that work out what it has instead."""
+    has = {"mechanism": scene.has_linkage, "dynamics": scene.dynamics is not None,
+           "balancing": scene.balancing is not None, "vibration": scene.vibration is not None}
+    instead = [f"for {what} call scene.{verb}()" for name, (_, what, verb) in _PARTS.items() if has[name]]
+    lacking = f"the scene has no {_PARTS[part][0]}" + (f"; {', '.join(instead)}" if instead else "")
+    if part == "mechanism":  # the key a mechanism begins with, as a scene file without it is told
+        return SceneError("driver", f"is required but missing: {lacking}")
+    return SceneError(part, lacking)
 
 
 def load(path: str | Path | Mapping[str, Any]) -> Scene:

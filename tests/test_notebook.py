@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import dataclasses
+import json
+from pathlib import Path
 from types import MappingProxyType
 from xml.etree import ElementTree
 
@@ -110,3 +112,125 @@ def test_a_position_s_plan_sheet_is_the_run_s_at_the_mu_l_the_run_chooses(tmp_pa
     written = (tmp_path / "run" / "plan_3.svg").read_text(encoding="utf-8")
     assert "μl = 0,004 м/мм" in written
     assert graphplan.load(path).plan(3).drawing.svg == written
+
+
+
+@pytest.fixture(scope="module")
+def rotor_path(tmp_path_factory):
+    """The starter rotor: masses to balance in two planes, and the machine that carries it on its mounts."""
+    from graphplan.starters import starter
+
+    path = tmp_path_factory.mktemp("rotor") / "rotor.toml"
+    path.write_text(starter("rotor"), encoding="utf-8")
+    return path
+
+
+@pytest.fixture(scope="module")
+def rotor_run(rotor_path):
+    """The folder the command line's run of the rotor writes."""
+    from graphplan.cli import main
+
+    folder = rotor_path.parent / "run"
+    assert main(["run", str(rotor_path), "--out", str(folder)]) == 0
+    return folder
+
+
+def test_a_rotor_s_balancing_from_python_is_the_run_s(rotor_path, rotor_run):
+    balancing = graphplan.load(rotor_path).balance()
+    written = json.loads((rotor_run / "results.json").read_text(encoding="utf-8"))
+    assert balancing.results == written["balancing"]
+    assert balancing.drawing.svg == (rotor_run / "rotor_balancing.svg").read_text(encoding="utf-8")
+    assert balancing._repr_svg_() == balancing.drawing.svg
+    # The corrections by the two equilibrium equations solved at once, not by the polygons: Σ m·r = 0 and
+    # Σ m·r·z = 0 with the corrections in planes L (z = 0.04 m) and R (z = 0.22 m).
+    masses = [(18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08), (10.0, 0.04, 135.0, 0.16)]
+    unbalance = [m * r * np.exp(1j * np.radians(angle)) for m, r, angle, _ in masses]
+    moment = sum(u * z for u, (*_, z) in zip(unbalance, masses, strict=True))
+    left, right = np.linalg.solve([[1.0, 1.0], [0.04, 0.22]], [-sum(unbalance), -moment])
+    for plane, correction in zip(balancing.planes, (left, right), strict=True):
+        assert plane.mass_radius == pytest.approx(abs(correction), rel=1e-12)
+        assert plane.angle_deg == pytest.approx(np.degrees(np.angle(correction)) % 360.0, abs=1e-9)
+        assert plane.mass == pytest.approx(abs(correction) / 0.05, rel=1e-12)
+    assert repr(balancing).startswith("<RotorBalancing of 'Rotor of a fan on its mounts': plane L: 1.413 kg·m at ")
+
+
+def test_a_machine_s_vibration_from_python_is_the_run_s(rotor_path, rotor_run):
+    shaking = graphplan.load(rotor_path).vibration_response()
+    written = json.loads((rotor_run / "results.json").read_text(encoding="utf-8"))
+    assert shaking.results == written["vibration"]
+    for plot in ("magnification", "transmissibility"):
+        assert getattr(shaking, f"{plot}_plot").svg == (rotor_run / f"vibration_{plot}.svg").read_text(encoding="utf-8")
+    # X = m·e·ω²/√((k − M·ω²)² + (c·ω)²), TR = √(k² + (c·ω)²)/√(...) with c = 2·ζ·√(k·M).
+    mass, unbalance, stiffness, omega = 100.0, 0.02, 1.0e5, 600.0 * 2.0 * np.pi / 60.0
+    damping = 2.0 * 0.1 * np.sqrt(stiffness * mass)
+    across = np.hypot(stiffness - mass * omega ** 2, damping * omega)
+    assert shaking.response.amplitude == pytest.approx(unbalance * omega ** 2 / across, rel=1e-12)
+    assert shaking.response.transmissibility == pytest.approx(np.hypot(stiffness, damping * omega) / across,
+                                                              rel=1e-12)
+    assert shaking.results["phase_deg"] == pytest.approx(
+        np.degrees(np.arctan2(damping * omega, stiffness - mass * omega ** 2)), rel=1e-11)
+
+
+def test_a_scene_s_run_written_from_python_is_the_command_line_s(rotor_path, rotor_run, tmp_path):
+    done = graphplan.load(rotor_path).write(tmp_path / "from-python")
+    assert sorted(path.name for path in done.files) == sorted(path.name for path in rotor_run.iterdir()
+                                                               if path.name != ".graphplan-written")
+    for path in done.files:
+        assert path.read_bytes() == (rotor_run / path.name).read_bytes(), path.name
+    assert done.warnings == ()
+    assert repr(done).startswith(f"<Run of 'Rotor of a fan on its mounts': {len(done.files)} files in ")
+
+
+def test_a_run_written_from_python_refuses_what_the_command_line_refuses_and_leaves_no_folder(rotor_path, tmp_path):
+    from graphplan.errors import OutputError
+
+    scene = graphplan.load(rotor_path)
+    with pytest.raises(graphplan.SceneError, match=r"^only\[0\]: 'forces' needs a mechanism"):
+        scene.write(tmp_path / "none", only=["forces"])
+    with pytest.raises(graphplan.SceneError, match=r"^formats\[1\]: "):
+        scene.write(tmp_path / "none", formats=["svg", "bmp"])
+    with pytest.raises(graphplan.SceneError, match=r"^sheet: "):
+        scene.write(tmp_path / "none", sheet="A0")
+    with pytest.raises(TypeError, match=r"^formats is a list of names: formats=\['png'\], not formats='png'$"):
+        scene.write(tmp_path / "none", formats="png")
+    assert not (tmp_path / "none").exists()
+    theirs = tmp_path / "theirs"
+    theirs.mkdir()
+    (theirs / "note.md").write_text("my own note", encoding="utf-8")
+    with pytest.raises(OutputError, match=r"holds note\.md, .*move it away, or give scene\.write\(\) another folder$"):
+        scene.write(theirs)
+    assert [path.name for path in theirs.iterdir()] == ["note.md"]
+
+
+def test_a_scene_asked_for_what_it_has_not_says_what_it_lacks_and_what_to_call(rotor_path, scene):
+    rotor = graphplan.load(rotor_path)
+    for verb in ("analyse", "solve"):
+        with pytest.raises(graphplan.SceneError, match=r"^driver: is required but missing: the scene has no mechanism "
+                                                       r"\(\[frame\] and \[driver\]\); for its \[balancing\] call "
+                                                       r"scene\.balance\(\), for its \[vibration\] call "
+                                                       r"scene\.vibration_response\(\)$"):
+            getattr(rotor, verb)()
+    with pytest.raises(graphplan.SceneError, match=r"^driver: .*scene\.balance\(\)"):
+        rotor.plan(1)
+    with pytest.raises(graphplan.SceneError, match=r"^driver: .*scene\.balance\(\)"):
+        graphplan.solve(rotor)
+    for verb, table in (("balance", "balancing"), ("vibration_response", "vibration"),
+                        ("machine_dynamics", "dynamics")):
+        with pytest.raises(graphplan.SceneError, match=rf"^{table}: the scene has no \[{table}\] table; for its "
+                                                       r"mechanism call scene\.analyse\(\)$"):
+            getattr(scene, verb)()
+
+
+def test_a_linkage_s_rotor_and_vibration_are_worked_out_from_python_too(rotor_path, tmp_path):
+    """A course project's mechanism with its rotor: the Analysis is the mechanism's, the scene balances the rotor."""
+    import tomllib
+
+    tables = tomllib.loads(Path(RATCHET).read_text(encoding="utf-8"))
+    machine = tomllib.loads(rotor_path.read_text(encoding="utf-8"))
+    tables.update(balancing=machine["balancing"], vibration=machine["vibration"])
+    both = graphplan.load(tables)
+    done = both.write(tmp_path / "run", only=["balancing", "vibration"])
+    written = json.loads((done.folder / "results.json").read_text(encoding="utf-8"))
+    assert both.balance().results == written["balancing"]
+    assert both.vibration_response().results == written["vibration"]
+    assert both.balance().results == graphplan.load(rotor_path).balance().results
