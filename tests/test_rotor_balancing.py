@@ -625,11 +625,13 @@ def test_two_planes_name_each_side_the_masss_share_carried_to_the_plane(shaft_re
     # The sides were lettered m1r1 and the caption said "m1r1 + m2r2 + m3r3 + m4r4 + mLrL = 0", which is false: each
     # side is (mi·ri)·(zR − zi)/(zR − zL) in L and (mi·ri)·(zi − zL)/(zR − zL) in R.
     left_z, right_z = 0.04, 0.22
-    texts = [item.text for layer in drawing.layout(shaft_result) for item in layer.items if isinstance(item, Text)]
+    layers = drawing.layout(shaft_result)
     for plane, share_of in zip(shaft_result.planes, (lambda z: (right_z - z) / (right_z - left_z),
                                                      lambda z: (z - left_z) / (right_z - left_z)), strict=True):
         name = plane.name
-        assert f"(m1r1){name} + (m2r2){name} + (m3r3){name} + (m4r4){name} + m{name}r{name} = 0" in texts
+        # The equation is broken before a sign where it is wider than a caption: its lines joined give it back.
+        caption = " ".join(item.text for layer in layers if layer.name == f"plane-{name}-caption" for item in layer.items)
+        assert f"(m1r1){name} + (m2r2){name} + (m3r3){name} + (m4r4){name} + m{name}r{name} = 0" in caption
         for k, mass in enumerate(SHAFT_OF_FOUR, start=1):
             side = next(v for v in plane.vectors if v.name == f"(m{k}r{k}){name}")
             assert abs(side.vector - mass.unbalance * share_of(mass.plane)) < 1e-12
@@ -758,3 +760,80 @@ def test_a_chinese_caption_line_with_a_middle_dot_is_set_in_the_latin_font():
     dotted = [line for line in lines if "·" in line]
     assert len(dotted) == 4  # μ and the correction of each plane
     assert not [line for line in dotted if any(unicodedata.east_asian_width(c) in "WF" for c in line)]
+
+
+# --- the drawing's width follows its polygons --------------------------------------------------------------------
+
+DISC = [RotatingMass(3.0, 0.1, 30.0, 0.0), RotatingMass(2.0, 0.08, 150.0, 0.0)]
+NAMED = [RotatingMass(18.0, 0.05, 0.0, 0.0, name="А"), RotatingMass(14.0, 0.06, -60.0, 0.08, name="Б"),
+         RotatingMass(10.0, 0.04, 135.0, 0.16, name="шкив"), RotatingMass(2.0, 0.10, 270.0, 0.30, name="муфта")]
+SPECS = {"disc": BalancingSpec(DISC, correction_radius=0.1),
+         "named": BalancingSpec(NAMED, planes=(0.04, 0.22), plane_names=("I", "II"), correction_radius=(0.05, 0.08))}
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+@pytest.mark.parametrize("kind", sorted(SPECS))
+def test_the_title_and_captions_are_broken_to_the_polygons_width(locale, kind):
+    """The title at 9.7 mm on one line made a disc's drawing 366 mm wide about a polygon of 60 mm, and one equation
+    of four named masses made plane II's 242 mm: neither went on an A4."""
+    from graphplan.locale import strings
+    from graphplan.render.force_rows import CAPTION_WIDTH_MM
+    from graphplan.render.primitives import bounds, text_width
+
+    layers = drawing.layout(balance(SPECS[kind]), strings(locale))
+    body = [layer for layer in layers if layer.name != "balancing-title"]
+    x0, _, x1, _ = bounds(body)
+    whole_x0, _, whole_x1, _ = bounds(layers)
+    assert whole_x1 - whole_x0 <= max(x1 - x0, CAPTION_WIDTH_MM) + 1e-9
+    for plane in SPECS[kind].plane_names:
+        polygon = [layer for layer in layers if layer.name.startswith(f"plane-{plane}-")
+                   and not layer.name.endswith("-caption")]
+        px0, _, px1, _ = bounds(polygon)
+        (caption,) = [layer for layer in layers if layer.name == f"plane-{plane}-caption"]
+        for text in caption.items:
+            assert text_width(text.text, text.size, text.weight) <= max(px1 - px0, CAPTION_WIDTH_MM) + 1e-9, text.text
+
+
+@pytest.mark.parametrize(("locale", "one", "two"), [
+    ("en", "Balancing of rotating masses: polygon of mass-radius products",
+     "Balancing of rotating masses: polygons of mass-radius products"),
+    ("ru", "Уравновешивание ротора: многоугольник дисбалансов", "Уравновешивание ротора: многоугольники дисбалансов"),
+    ("zh", "转子平衡：质径积矢量多边形", "转子平衡：质径积矢量多边形"),
+])
+def test_the_title_names_one_polygon_or_several(locale, one, two):
+    from graphplan.locale import strings
+
+    def title(spec):
+        (layer,) = [layer for layer in drawing.layout(balance(spec), strings(locale)) if layer.name == "balancing-title"]
+        return ("" if locale == "zh" else " ").join(item.text for item in layer.items)
+
+    assert title(SPECS["disc"]) == one
+    assert title(BalancingSpec(NAMED, planes=(0.05,), correction_radius=0.1)) == one
+    assert title(SPECS["named"]) == two
+
+
+ROTOR_SCENES = {
+    "disc": ('masses = [ { mass = 3.0, radius = 0.1, angle = 30.0, plane = 0.0 },\n'
+             '           { mass = 2.0, radius = 0.08, angle = 150.0, plane = 0.0 } ]\ncorrection_radius = 0.1\n'),
+    "one plane": ('masses = [ { mass = 3.0, radius = 0.1, angle = 30.0, plane = 0.0 },\n'
+                  '           { mass = 2.0, radius = 0.08, angle = 150.0, plane = 0.05 },\n'
+                  '           { mass = 1.0, radius = 0.12, angle = 250.0, plane = 0.1 } ]\n'
+                  'planes = [0.05]\ncorrection_radius = 0.1\n'),
+    "named": ('masses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0, name = "А" },\n'
+              '           { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08, name = "Б" },\n'
+              '           { mass = 10.0, radius = 0.04, angle = 135.0, plane = 0.16, name = "шкив" },\n'
+              '           { mass = 2.0, radius = 0.10, angle = 270.0, plane = 0.30, name = "муфта" } ]\n'
+              'planes = [0.04, 0.22]\nplane_names = ["I", "II"]\ncorrection_radius = [0.05, 0.08]\n'),
+}
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+@pytest.mark.parametrize("kind", sorted(ROTOR_SCENES))
+def test_a_rotors_balancing_goes_on_an_a4(tmp_path, capsys, locale, kind):
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(f'[scene]\ntitle = "Rotor"\nlocale = "{locale}"\n[balancing]\n' + ROTOR_SCENES[kind],
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--sheet", "A4"]) == 0, capsys.readouterr().err
+    assert (tmp_path / "out" / "sheet_1.svg").exists()

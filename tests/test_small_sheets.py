@@ -436,6 +436,20 @@ def test_a_force_scale_given_in_the_scene_and_too_small_for_a4_is_answered_with_
     assert any("μF = 10 Н/мм" in item.text for sheet in sheets for item in texts(sheet.layers))
 
 
+def test_a_term_in_brackets_keeps_its_sign_and_a_title_breaks_after_its_colon():
+    # "(mArA)II + (mБrБ)II + ((m·r)шкив)II +" ended a balancing caption's line on the sign: the break before a
+    # bracket was taken after the sign of the bracketed term.
+    equation = "(mArA)II + (mБrБ)II + ((m·r)шкив)II + ((m·r)муфта)II + mIIrII = 0"
+    for width in range(60, 240, 5):
+        pieces = fitted(equation, float(width), CAPTION)
+        assert " ".join(pieces) == equation
+        assert not any(piece.endswith(("+", "−")) for piece in pieces), (width, pieces)
+    assert fitted(equation, 160.0, CAPTION) == ["(mArA)II + (mБrБ)II + ((m·r)шкив)II", "+ ((m·r)муфта)II + mIIrII = 0"]
+    title = "Уравновешивание ротора: многоугольник дисбалансов"
+    assert fitted(title, 180.0, 7.0, "bold") == ["Уравновешивание ротора:", "многоугольник дисбалансов"]
+    assert fitted("转子平衡：质径积矢量多边形", 80.0, 7.0, "bold") == ["转子平衡：", "质径积矢量多边形"]
+
+
 def test_a_chinese_caption_breaks_after_its_full_width_comma_and_before_its_bracket():
     line = "μV = 0.01983 (m/s)/mm，力：μF = 25 N/mm，最短 10 mm；平衡力矩 Mb = 49.02 N·m（茹可夫斯基杠杆）"
     pieces = fitted(line, 80.0, CAPTION)

@@ -23,9 +23,10 @@ from collections.abc import Mapping, Sequence
 
 from shapely.geometry import Point as ShapelyPoint
 
-from ..locale import strings
+from ..locale import Count, strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane
 from ..scales import format_scale, standard_scale
+from .force_rows import CAPTION_WIDTH_MM, caption_lines
 from .labels import Anchor, Placement, obstacles_of, place_labels
 from .numerals import angle_in_turn, significant
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
@@ -40,16 +41,20 @@ from .primitives import (
     curved_arrow,
     dot_marker,
     moved_layers,
+    text_width,
 )
-from .primitives import text_span as _width
 from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
 from .svg import to_svg
+from .wrapping import fitted
 
 # Each polygon is drawn at the standard scale that makes it at most this wide or tall (mm).
 POLYGON_FIELD_MM = 90.0
 # Space between the polygons of two planes (mm).
 GAP_MM = 25.0
+# The title's baseline stands this far over the drawing's top (mm), and takes at most this many lines at its size.
+TITLE_GAP_MM = 8.0
+MOST_TITLE_LINES = 2
 # The dashed x-direction at the correction's tail, and the arc of its angle (mm).
 REFERENCE_MM = 16.0
 ANGLE_RADIUS_MM = 7.0
@@ -68,7 +73,8 @@ _ANGLE = Stroke(0.3, "#a83a1f")
 _LEADER = Stroke(0.18, "#a83a1f", (1.0, 1.0))
 
 def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
-    """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under."""
+    """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under,
+    the title over them broken to their width."""
     words = {**strings("en"), **(text or {})}
     layers: list[Layer] = []
     cursor = 0.0
@@ -77,18 +83,38 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
     panels = [_polygon(plane, plane_scale(plane), words, placed) for plane in result.planes]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
-        width = max(x1 - x0, *(_width(Text((0.0, 0.0), line, CAPTION_SIZE)) for line in caption))
+        # Broken as a force polygon's caption is: a long equation of many named masses set no wider than the
+        # polygon or a caption's least width, so that one line does not widen the drawing past its sheet.
+        lines = caption_lines(caption, max(x1 - x0, CAPTION_WIDTH_MM), CAPTION_SIZE)
+        width = max(x1 - x0, *(text_width(line, CAPTION_SIZE, weight) for line, weight in lines))
         layers.extend(moved_layers(drawing, cursor + (width - (x1 - x0)) / 2 - x0, -height / 2 - (y0 + y1) / 2))
         middle = cursor + width / 2
         layers.append(Layer(f"{key}-caption", tuple(
             Text((middle, -height - CAPTION_GAP_MM - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
-                 weight="bold" if k == 0 else "normal")
-            for k, line in enumerate(caption))))
+                 weight=weight)
+            for k, (line, weight) in enumerate(lines))))
         cursor += width + GAP_MM
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
-    layers.append(Layer("balancing-title", (
-        Text((left, top + 8.0), words["bal_title"], TITLE_SIZE, "start", weight="bold"),)))
+    size, title = _title(words["bal_title"].format(count=Count(len(result.planes))), cursor - GAP_MM)
+    layers.append(Layer("balancing-title", tuple(
+        Text((left, top + TITLE_GAP_MM + (len(title) - 1 - k) * CAPTION_LINE * size), line, size, "start",
+             weight="bold")
+        for k, line in enumerate(title))))
     return layers
+
+
+def _title(title: str, width: float) -> tuple[float, list[str]]:
+    """The title's lettering size and its lines, broken to the polygons' width (to no less than a caption's): at
+    the title's size where that takes at most :data:`MOST_TITLE_LINES` lines, else at the captions' size.
+
+    One polygon is narrower than the title at a title's size; broken into three or four lines it stood over the
+    polygon as a paragraph, and left whole it made the drawing two and a half times as wide as the polygon."""
+    reach = max(width, CAPTION_WIDTH_MM)
+    for size in (TITLE_SIZE, CAPTION_SIZE):
+        lines = fitted(title, reach, size, "bold")
+        if len(lines) <= MOST_TITLE_LINES:
+            break
+    return size, lines
 
 
 def balancing_svg(result: BalancingResult, text: Mapping[str, str] | None = None) -> str:

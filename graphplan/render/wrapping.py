@@ -1,6 +1,6 @@
 """Long lines of a drawing's text broken to a width on the paper, where a reader expects the break.
 
-First after a comma or semicolon, before the sign of a term, before a
+First after a comma, semicolon or colon, before the sign of a term, before a
 bracket; a piece still too wide is then broken between words, into pieces
 as even as can be, never inside ``name = value unit`` nor after the sign
 of a term.  Widths are the generous estimate of
@@ -16,9 +16,10 @@ import numpy as np
 
 from .primitives import text_width
 
-# Where a line may break first: after a comma or semicolon, before the sign of a term, before a bracket;
-# in Chinese, which puts no space there, after its full-width comma and semicolon and before its bracket.
-PHRASE_BREAK = re.compile(r"(?<=[,;])\s+|\s+(?=[+−] )|\s+(?=\()|(?<=[，；、])(?=\S)|(?<=\S)(?=（)")
+# Where a line may break first: after a comma, semicolon or colon, before the sign of a term, before a bracket (but
+# one after a sign, which would end the line on the sign);
+# in Chinese, which puts no space there, after its full-width comma, semicolon and colon and before its bracket.
+PHRASE_BREAK = re.compile(r"(?<=[,;:])\s+|\s+(?=[+−] )|(?<![+−=])\s+(?=\()|(?<=[，；、：])(?=\S)|(?<=\S)(?=（)")
 # Where a piece still too wide breaks: between words, but not round "=", nor between a number and its unit,
 # nor between a sign and its term.
 WORD_BREAK = re.compile(r"(?<![\d=+−])\s+(?![=\d])")

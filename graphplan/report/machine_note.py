@@ -385,7 +385,7 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
     verdict = "note_bal_residual" + ("" if result.balanced else "_left") + ("" if spec.dynamic else "_static")
     note.para(note.t(verdict, force=note.n(force), moment=note.n(moment),
                      own=note.n(sum(abs(mass.unbalance) for mass in spec.masses))))
-    note.figure("rotor_balancing.svg", note.text["bal_title"])
+    note.figure("rotor_balancing.svg", note.text["bal_title"].format(count=Count(len(result.planes))))
 
 
 def _shaft(note: Writer, shaft: Shaft, stiffness: str) -> None:
