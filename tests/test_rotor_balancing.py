@@ -837,3 +837,30 @@ def test_a_rotors_balancing_goes_on_an_a4(tmp_path, capsys, locale, kind):
                      encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--sheet", "A4"]) == 0, capsys.readouterr().err
     assert (tmp_path / "out" / "sheet_1.svg").exists()
+
+
+@pytest.mark.parametrize(("locale", "names"), [("ru", ("А", "Б", "шкив", "муфта")),
+                                               ("zh", ("叶轮", "齿轮", "带轮", "联轴器"))])
+def test_long_names_of_masses_stand_clear_of_every_vector_and_of_one_another(locale, names):
+    """Plane II's "((m·r)шкив)II" stood inside the polygon with the шкив vector through its "II", and "(m齿轮r齿轮)II"
+    on the correction: no spot beside the middle of a long side inside the polygon is clear of the lines."""
+    from shapely.geometry import LineString
+
+    from graphplan.locale import strings
+    from graphplan.render.primitives import Polyline
+
+    masses = [RotatingMass(mass.mass, mass.radius, mass.angle_deg, mass.plane, name=name)
+              for mass, name in zip(NAMED, names, strict=True)]
+    result = balance(BalancingSpec(masses, planes=(0.04, 0.22), plane_names=("I", "II"), correction_radius=(0.05, 0.08)))
+    named = {layer.name: layer.items for layer in drawing.layout(result, strings(locale))}
+    for plane in result.planes:
+        lines = [LineString((item.start, item.end)) for item in named[f"plane-{plane.name}-vectors"]
+                 if isinstance(item, Arrow)]
+        lines += [LineString(item.points) for item in named[f"plane-{plane.name}-reference"]
+                  if isinstance(item, Polyline)]
+        texts = named[f"plane-{plane.name}-labels"]
+        assert len(texts) == len(masses) + 2  # each share, the correction and its angle
+        for text in texts:
+            assert not any(text_box(text).intersects(line) for line in lines), (plane.name, text.text)
+        for a, b in itertools.combinations(texts, 2):
+            assert not text_box(a).intersects(text_box(b)), (a.text, b.text)

@@ -229,10 +229,11 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], heavy: Seq
 
     The ``heavy`` marks (the vectors, the correction's angle's arc and x-direction) count as areas, as heavy as a
     point: a polygon has few lines and room beside them, and a short vector's name by the correction's tail read as
-    if it were written on them (plane L of the rotor starter)."""
+    if it were written on them (plane L of the rotor starter).  Where no spot near a long name is clear of them, it
+    stands farther out on a leader (``off_lines``) rather than on a line."""
     spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
     marks = [shape.buffer(0.4) for shape in obstacles_of(heavy)]
-    return place_labels(anchors, obstacles_of(figure) + spots + marks)
+    return place_labels(anchors, obstacles_of(figure) + spots + marks, off_lines=True)
 
 
 def _given(value: float) -> str:

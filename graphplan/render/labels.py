@@ -104,12 +104,15 @@ OVERLAP = 1000.0
 LEADERS_CROSSING = 60.0
 # How many times the labels that cover another are placed again among all the rest.
 REPAIR_ROUNDS = 2
+# What covering a drawn line costs where the labels keep off the lines (``off_lines``): more than any clear spot,
+# less than covering another label.
+LINE_COVERED = OVERLAP / 2
 # A leader starts this far from its point (mm), clear of the point's dot.
 LEADER_CLEARANCE = 0.9
 
 
 def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2,
-                 standing: Sequence[Text] = ()) -> Placement:
+                 standing: Sequence[Text] = (), off_lines: bool = False) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 
     Another label or leader is never covered when any spot avoids it.  A
@@ -128,6 +131,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 
     ``standing`` are labels set already (the numbers round a crank's
     circle): the anchors' labels keep clear of them as of one another.
+
+    ``off_lines`` keeps the labels off the drawn lines wherever any spot,
+    farther out too, does, for a drawing of few lines with room round them
+    (a balancing polygon): a long name on the middle of a side inside the
+    polygon has no clear spot near it, and read crossed by its own vector;
+    on a longer leader it stands clear.
 
     All spots of one anchor are costed at once by shapely's array
     functions: a sheet has a few hundred labels and ninety-six spots each.
@@ -196,21 +205,25 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
         # it: beside the point already, it has no leader to draw.
         cost[led[shapely.intersects(shapes[led], points[index])]] += OVERLAP
-        return candidates, beside, led, lines, cost
+        covering = covers[:len(shapes)] > 0
+        if off_lines:
+            cost[covering] += LINE_COVERED
+        return candidates, beside, led, lines, cost, covering
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
 
     def place(index: int) -> None:
         """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
         anchor = anchors[index]
-        candidates, beside, led, lines, cost = costed(index, near_shares, 0)
+        candidates, beside, led, lines, cost, covering = costed(index, near_shares, 0)
         best = int(np.argmin(cost))
-        if cost[best] >= OVERLAP:
-            # Every spot near the point covers a label or a leader (the pole of a crowded lever): farther
-            # out, on a longer leader, before writing one label over another.
+        if cost[best] >= OVERLAP or (off_lines and covering[best]):
+            # Every spot near the point covers a label or a leader (the pole of a crowded lever), or a drawn line
+            # where the drawing has room to keep off its lines: farther out, on a longer leader, before writing one
+            # label over another.
             far = costed(index, FAR_SHARES, len(near_shares))
             if far[4].min() < cost[best]:
-                candidates, beside, led, lines, cost = far
+                candidates, beside, led, lines, cost, _ = far
                 best = int(np.argmin(cost))
         x0, y0, x1, _ = candidates[best]
         texts[index] = Text(((x0 + x1) / 2, y0 + 0.3 * anchor.size), anchor.text, anchor.size, "middle",
