@@ -269,10 +269,11 @@ class CorrectionPlane:
         return abs(self.correction) > NEGLIGIBLE * sum(abs(share) for share in self.shares)
 
     @property
-    def angle_deg(self) -> float:
-        """The correction's angle in [0, 360) degrees; 0 where no correction is needed."""
+    def angle_deg(self) -> float | None:
+        """The correction's angle in [0, 360) degrees; None where no correction is needed: a vector of no length has
+        no direction, and 0° would read as a correction set along x."""
         if not self.needed:
-            return 0.0
+            return None
         angle = math.degrees(cmath.phase(self.correction)) % 360.0
         return 0.0 if angle >= 360.0 else angle
 
@@ -522,7 +523,8 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
     """The balancing as the results file writes it: SI, angles in degrees.
 
     ``planes`` lists each correction plane with ``plane`` (its name),
-    ``position`` (m), ``mass_radius`` (kg·m) and ``angle_deg``, and with
+    ``position`` (m), ``mass_radius`` (kg·m) and ``angle_deg`` (None where
+    the plane needs no correction), and with
     ``radius`` (m) and ``mass`` (kg) when the correction radius is given;
     ``unbalance`` is the rotor's before correction, ``residual`` after; ``warnings`` lists each
     :func:`cautions` as ``{code, detail}``.

@@ -409,7 +409,7 @@ def test_the_svg_renders_and_is_deterministic(shaft_result):
 def test_a_balanced_rotor_needs_no_correction_and_its_angle_is_not_rounding_noise():
     masses = [RotatingMass(1.0, 0.1, 0, 0.0), RotatingMass(1.0, 0.1, 180, 0.0)]
     document = balancing_results(balance(BalancingSpec(masses, planes=(0.0, 1.0))))
-    assert all(entry["mass_radius"] < 1e-15 and entry["angle_deg"] == 0.0 for entry in document["planes"])
+    assert all(entry["mass_radius"] < 1e-15 and entry["angle_deg"] is None for entry in document["planes"])
     assert document["unbalance"]["angle_deg"] == 0.0
 
 
@@ -596,7 +596,7 @@ BALANCED_ALREADY = {  # the teacher's: each plane's shares close by themselves b
 
 
 @pytest.mark.parametrize("kind", sorted(BALANCED_ALREADY))
-def test_a_rotor_balanced_already_writes_its_corrections_0_in_the_results_drawing_and_note(kind, tmp_path):
+def test_a_rotor_balanced_already_writes_its_corrections_0_and_no_angle_in_the_results_drawing_and_note(kind, tmp_path):
     import json
     import tomllib
 
@@ -613,12 +613,15 @@ def test_a_rotor_balanced_already_writes_its_corrections_0_in_the_results_drawin
     document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["balancing"]
     assert document["unbalance"] == {"mass_radius": 0.0, "angle_deg": 0.0, "moment": 0.0}
     for entry in document["planes"]:
-        assert entry["mass_radius"] == 0.0 and entry["mass"] == 0.0 and entry["angle_deg"] == 0.0
+        # A vector of no length has no direction: "θL = 0.0°" and angle_deg 0.0 read as a correction set along x.
+        assert entry["mass_radius"] == 0.0 and entry["mass"] == 0.0 and entry["angle_deg"] is None
+    assert '"angle_deg": null' in (tmp_path / "out" / "results.json").read_text(encoding="utf-8")
     svg = (tmp_path / "out" / "rotor_balancing.svg").read_text(encoding="utf-8")
     name = "L" if kind == "dynamic" else "b"
-    assert f"m{name}r{name} = 0 kg·m" in svg and "0000000" not in svg
+    assert f"m{name}r{name} = 0 kg·m, θ{name} = —" in svg and "0000000" not in svg and "θL = 0.0°" not in svg
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert f"Plane {name}: the masses' products close by themselves" in note and "e-1" not in note
+    assert f"m{name}r{name} = 0 kg·m, its angle θ undefined (—)" in note
 
 
 def test_two_planes_name_each_side_the_masss_share_carried_to_the_plane(shaft_result):
@@ -864,3 +867,51 @@ def test_long_names_of_masses_stand_clear_of_every_vector_and_of_one_another(loc
             assert not any(text_box(text).intersects(line) for line in lines), (plane.name, text.text)
         for a, b in itertools.combinations(texts, 2):
             assert not text_box(a).intersects(text_box(b)), (a.text, b.text)
+
+
+# --- the note words the rotor by its masses' planes ---------------------------------------------------------------
+
+IN_ONE_PLANE = ('[balancing]\nmasses = [ { mass = 2.0, radius = 0.1, angle = 0.0, plane = 0.1 },\n'
+                '           { mass = 4.0, radius = 0.05, angle = 180.0, plane = 0.1 } ]\n'
+                'planes = [0.0, 0.2]\ncorrection_radius = 0.1\n')
+
+
+@pytest.mark.parametrize(("locale", "together", "apart", "undefined"), [
+    ("en", "The rotor's masses all turn in one plane, z = 0.1 m, and a correction mass", "The rotor is long",
+     "its angle θ undefined (—)"),
+    ("ru", "Все массы ротора вращаются в одной плоскости, z = 0,1 м, и его уравновешивают", "Ротор длинный",
+     "угол θ не определён (—)"),
+    ("zh", "转子各质量均在同一平面（z = 0.1 m）内回转，在平面 L", "转子为长转子", "方位角 θ 无定义（—）"),
+])
+def test_masses_in_one_plane_balanced_in_two_are_not_called_a_long_rotor(tmp_path, locale, together, apart,
+                                                                         undefined):
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(f'[scene]\ntitle = "Rotor"\nlocale = "{locale}"\n' + IN_ONE_PLANE, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "one")]) == 0
+    note = (tmp_path / "one" / "note.md").read_text(encoding="utf-8")
+    assert together in note and apart not in note
+    # Both planes' shares close by themselves: 2·0.1 = 4·0.05 kg·m at 0° and 180°, at z = 0.1 between them.
+    assert note.count(undefined) == 2
+    scene.write_text(scene.read_text(encoding="utf-8").replace("plane = 0.1 },\n", "plane = 0.15 },\n", 1),
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "two")]) == 0
+    note = (tmp_path / "two" / "note.md").read_text(encoding="utf-8")
+    assert apart in note and together not in note and undefined not in note
+
+
+def test_one_correction_plane_for_masses_whose_moments_cancel_is_no_disc(tmp_path):
+    from graphplan.cli import main
+
+    # Equal products at one angle, at z = 0 and z = 0.2, corrected at z = 0.1: Σ m·r·(z − 0.1) = 0, no couple left,
+    # yet the masses turn in two planes.
+    scene = tmp_path / "rotor.toml"
+    scene.write_text('[scene]\ntitle = "Rotor"\n[balancing]\n'
+                     'masses = [ { mass = 1.0, radius = 0.1, angle = 30.0, plane = 0.0 },\n'
+                     '           { mass = 2.0, radius = 0.05, angle = 30.0, plane = 0.2 } ]\n'
+                     'planes = [0.1]\ncorrection_radius = 0.1\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert "a disc" not in note and "in one plane" not in note
+    assert "Its masses turn at z = 0 … 0.2 m and the correction at z = 0.1 m; their moments" in note

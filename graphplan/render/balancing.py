@@ -165,7 +165,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
             across = -across
         anchors.append(Anchor(_xy(centre), name, NAME_SIZE, math.atan2(across.imag, across.real),
                               arrow.stroke.colour))
-    if angle_marks:
+    if angle_marks and plane.angle_deg is not None:
         tail = mm(plane.vectors[-1].start) + beside
         half = math.radians(plane.angle_deg) / 2
         at = tail + (ANGLE_RADIUS_MM + 1.0) * complex(math.cos(half), math.sin(half))
@@ -203,7 +203,7 @@ def _beside(plane: CorrectionPlane, mm) -> complex:
 
 def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> list[Primitive]:
     """The dashed x-direction at the correction's tail and the arc from it to the correction, ccw."""
-    if abs(correction) < ZERO_MM:
+    if plane.angle_deg is None or abs(correction) < ZERO_MM:
         return []
     marks: list[Primitive] = [Polyline((_xy(tail), _xy(tail + REFERENCE_MM)), _REFERENCE)]
     sweep = math.radians(plane.angle_deg)
@@ -217,7 +217,7 @@ def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], plac
              if placed else text["bal_disc"].format(name=plane.name))
     lines = [title, text["bal_scale"].format(value=format_scale(scale)), plane.equation,
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
-                                           value=significant(plane.mass_radius), angle=angle_in_turn(plane.angle_deg))]
+                                           value=significant(plane.mass_radius), angle=_angle(plane.angle_deg))]
     if plane.mass is not None and plane.radius is not None:
         lines.append(text["bal_mass"].format(name=plane.name, mass=significant(plane.mass),
                                                    radius=_given(plane.radius)))
@@ -234,6 +234,12 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], heavy: Seq
     spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
     marks = [shape.buffer(0.4) for shape in obstacles_of(heavy)]
     return place_labels(anchors, obstacles_of(figure) + spots + marks, off_lines=True)
+
+
+def _angle(angle_deg: float | None) -> str:
+    """A correction's angle θ as the caption writes it: to a tenth of a degree, or "—" where there is no correction
+    to have one."""
+    return "—" if angle_deg is None else f"{angle_in_turn(angle_deg)}°"
 
 
 def _given(value: float) -> str:

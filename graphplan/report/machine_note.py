@@ -347,24 +347,31 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
             for mass in spec.masses]
     note.table(note.t("note_bal_masses"), note.t("note_bal_masses_header").split(" | "), rows, "lrrrrr")
     planes = result.planes
+    along = [mass.plane for mass in spec.masses]
     if spec.dynamic:
         left, right = planes
-        note.para(note.t("note_bal_dynamic", left=left.name, right=right.name, zl=note.n(left.position),
-                         zr=note.n(right.position)))
+        # Two planes balance masses that all turn in one plane as well: the rotor is then no long one.
+        masses = (note.t("note_bal_masses_together", z=note.n(along[0])) if len(set(along)) == 1
+                  else note.t("note_bal_masses_apart"))
+        note.para(note.t("note_bal_dynamic", masses=masses, left=left.name, right=right.name,
+                         zl=note.n(left.position), zr=note.n(right.position)))
         header = note.t("note_bal_shares_header", left=left.name, right=right.name).split(" | ")
         rows = [[mass.label, note.n(abs(mass.unbalance)), note.n(share_left, 4), note.n(abs(mass.unbalance) * share_left),
                  note.n(share_right, 4), note.n(abs(mass.unbalance) * share_right)]
                 for mass, share_left, share_right in zip(spec.masses, left.factors, right.factors, strict=True)]
         note.table(note.t("note_bal_shares"), header, rows, "lrrrrr")
     elif (couple := static_couple(result)) is not None:
-        along = [mass.plane for mass in spec.masses]
         note.para(note.t("note_bal_static_planes", equation=planes[0].equation, low=note.n(min(along)),
                          high=note.n(max(along)), plane=note.n(planes[0].position), moment=note.n(couple)))
+    elif len(set(along)) > 1:
+        # Masses in several planes whose moments about the correction's plane happen to cancel: no disc.
+        note.para(note.t("note_bal_static_planes_even", equation=planes[0].equation, low=note.n(min(along)),
+                         high=note.n(max(along)), plane=note.n(planes[0].position)))
     else:
         note.para(note.t("note_bal_static", equation=planes[0].equation))
     for plane in planes:
         if not plane.needed:
-            note.para(note.t("note_bal_none", name=plane.name))
+            note.para(note.t("note_bal_none", name=plane.name, vector=plane.vectors[-1].name))
             continue
         vector = plane.vectors[-1].name
         # The correction mass is named after its plane, as the drawing names it: mL, mA-A (whose product is (m·r)A-A).
