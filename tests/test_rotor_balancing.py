@@ -915,3 +915,22 @@ def test_one_correction_plane_for_masses_whose_moments_cancel_is_no_disc(tmp_pat
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert "a disc" not in note and "in one plane" not in note
     assert "Its masses turn at z = 0 … 0.2 m and the correction at z = 0.1 m; their moments" in note
+
+
+@pytest.mark.parametrize(("locale", "plane"), [("en", "Balancing of the rotor: Correction plane"),
+                                               ("ru", "Уравновешивание ротора: Плоскость коррекции"),
+                                               ("zh", "转子平衡: 校正平面")])
+def test_a_plane_no_sheet_holds_is_named_as_its_caption_names_it(tmp_path, capsys, locale, plane):
+    """The refusal named the part's id: "the drawing 'Уравновешивание ротора: balancing-2'"."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    # A name with no space to break at: its share's label and the caption's equation wider than an A4 holds.
+    scene.write_text(f'[scene]\ntitle = "Rotor"\nlocale = "{locale}"\n[balancing]\n'
+                     'masses = [ { mass = 18.0, radius = 0.05, angle = 0.0, plane = 0.0, name = "A" },\n'
+                     '           { mass = 14.0, radius = 0.06, angle = -60.0, plane = 0.08, '
+                     'name = "high_pressure_feed_pump_drive_pulley_hub_with_its_key_and_its_locking_collar" } ]\n'
+                     'planes = [0.04, 0.22]\nplane_names = ["I", "II"]\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--sheet", "A4"]) == 2
+    error = capsys.readouterr().err
+    assert re.search(rf"the drawing '{plane} II?' \(", error) and "balancing-" not in error, error

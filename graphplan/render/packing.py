@@ -509,7 +509,10 @@ def _too_big(panel: Panel, sheet: str, form: str, turns: Sequence[bool], whose: 
     """The error for a drawing no empty sheet holds (one whose scale the scene sets is refused before the
     packing, by :mod:`graphplan.render.sheet`, with the value that fits)."""
     x0, y0, x1, y1 = panel.extent
-    what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
+    if whose and panel.label not in ("", whose):
+        what = panel.label  # a part that names itself: a balancing plane's polygon
+    else:
+        what = f"{whose}: {panel.name}" if whose else (panel.label or panel.name)
     bigger = bigger_holding(sheet, form, [panel])
     ways = [f"choose {bigger} or a bigger sheet"] if bigger else []
     # Only a drawing at μl shrinks with a larger μl: the dynamics and the diagrams are at scales the program fits.

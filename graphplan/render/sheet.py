@@ -602,15 +602,18 @@ def balancing_panel(layers: Sequence[Layer], locale: str) -> Panel:
     """The balancing drawing (:func:`graphplan.render.balancing.layout`) as a panel to no length scale.
 
     Where no sheet holds it whole (two planes side by side on an A4), each plane's polygon with its caption
-    stands apart, the title block naming what they are."""
+    stands apart, the title block naming what they are; a part no sheet holds is named by its plane, as its caption
+    names it ("Balancing of the rotor: Correction plane II"), not by its panel's id."""
     planes: dict[str, list[Layer]] = {}
     for layer in layers:
         stem, _, part = layer.name.rpartition("-")
         if layer.name.startswith("plane-") and part in ("reference", "vectors", "leaders", "labels", "caption"):
             planes.setdefault(stem, []).append(layer)
     label = labels(locale)["sheet_balancing"]
-    parts = tuple(Panel(f"balancing-{k + 1}", tuple(own), label=label, to_scale=False)
-                  for k, own in enumerate(planes.values())) if len(planes) > 1 else ()
+    plane = strings(locale)["bal_disc"]
+    parts = tuple(Panel(f"balancing-{k + 1}", tuple(own),
+                        label=f"{label}: {plane.format(name=stem.removeprefix('plane-'))}", to_scale=False)
+                  for k, (stem, own) in enumerate(planes.items())) if len(planes) > 1 else ()
     return Panel("balancing", tuple(layers), parts, label=label, to_scale=False)
 
 
