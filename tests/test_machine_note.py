@@ -297,17 +297,21 @@ def test_a_shafts_stiffness_is_in_the_results_and_its_formula_in_the_note(tmp_pa
     document = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]
     assert document["stiffness"] == pytest.approx(k, rel=1e-11)
     assert document["natural_frequency"] == pytest.approx(math.sqrt(k / 20.0), rel=1e-11)
-    # E = 2·10¹¹ Pa is written as a power of ten: as 200000000000 its noughts have to be counted.
-    formula = (r"k = 3·E·I·L/\(a²·b²\) = 3·2·10¹¹·([\d.]+)·1\.2/\(0\.3²·0\.9²\) = (\d+) N/m" if b is not None
-               else r"k = 3·E·I/a³ = 3·2·10¹¹·([\d.]+)/0\.3³ = (\d+) N/m")
+    # E = 2·10¹¹ Pa is written as a power of ten: as 200000000000 its noughts have to be counted; and I beside it
+    # likewise, 3.0680·10⁻⁷ m⁴, not 0.00000030680.
+    formula = (r"k = 3·E·I·L/\(a²·b²\) = 3·2·10¹¹·([\d.]+)·10([⁻¹²³⁴⁵⁶⁷⁸⁹⁰]+)·1\.2/\(0\.3²·0\.9²\) = (\d+) N/m"
+               if b is not None else r"k = 3·E·I/a³ = 3·2·10¹¹·([\d.]+)·10([⁻¹²³⁴⁵⁶⁷⁸⁹⁰]+)/0\.3³ = (\d+) N/m")
     found = re.search(formula, note)
     assert found, note
-    shown_second, shown_k = float(found.group(1)), found.group(2)
-    assert written_as(second, found.group(1)) and written_as(k, shown_k)
+    mantissa, power, shown_k = found.groups()
+    exponent = int(power.translate(str.maketrans("⁻¹²³⁴⁵⁶⁷⁸⁹⁰", "-1234567890")))
+    assert exponent == math.floor(math.log10(second)) and 1 <= float(mantissa) < 10
+    shown_second = float(mantissa) * 10.0 ** exponent
+    assert written_as(second / 10.0 ** exponent, mantissa) and written_as(k, shown_k)
     # The operands as written give the result as written.
     again = 3 * 2.0e11 * shown_second * (1.2 / (a * a * b * b) if b is not None else 1 / a ** 3)
     assert written_as(again, shown_k)
-    assert f"I = π·d⁴/64 = π·{diameter:g}⁴/64 = {found.group(1)} m⁴" in note
+    assert f"I = π·d⁴/64 = π·{diameter:g}⁴/64 = {mantissa}·10{power} m⁴" in note
     (tmp_path / "mounts").mkdir()
     mounts = json.loads((note_of(tmp_path / "mounts", MOUNTS)[0] / "results.json").read_text(encoding="utf-8"))
     assert "stiffness" not in mounts["vibration"]  # the mounts' stiffness is the scene's own

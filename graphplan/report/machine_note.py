@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Protocol
 import numpy as np
 
 from ..locale import Count
-from ..render.numerals import angle_in_turn
+from ..render.numerals import angle_in_turn, power_of_ten
 from ..rotor_balancing import BalancingResult, static_couple
 from ..units import RPM
 from ..vibration import (
@@ -406,7 +406,11 @@ def _shaft(note: Writer, shaft: Shaft, stiffness: str) -> None:
             return 3.0 * shaft.modulus * second * shaft.length / (a * a * b * b)
         return 3.0 * shaft.modulus * second / a ** 3
 
-    second = shown_operand(note, shaft.second_moment, [(k_of, stiffness)])
+    def in_powers(value: float, digits: int) -> str:
+        # Beside E = 2.1·10¹¹ in one product, I = 0.000000125664 had its zeros counted by the reader.
+        return power_of_ten(value, digits).replace(".", note.mark) if abs(value) < SMALL_IN_POWERS else note.n(value, digits)
+
+    second = shown_operand(note, shaft.second_moment, [(k_of, stiffness)], in_powers)
     if shaft.diameter is not None:
         note.para(note.t("note_vib_shaft_section", diameter=note.n(shaft.diameter), second=second))
     values = {"modulus": note.n(shaft.modulus), "second": second, "length": note.n(shaft.length), "a": note.n(a),
@@ -416,20 +420,25 @@ def _shaft(note: Writer, shaft: Shaft, stiffness: str) -> None:
     note.para(note.t(f"note_vib_shaft_{shaft.support}", **values))
 
 
-def shown_operand(note: Writer, value: float, results: list[tuple[Callable[[float], float], str]]) -> str:
+def shown_operand(note: Writer, value: float, results: list[tuple[Callable[[float], float], str]],
+                  write: Callable[[float, int], str] | None = None) -> str:
     """``value`` written to as many digits (five at least) as make each function of ``results``, of the written
     value, give its result as the note writes it: "mL = 1.58/0.05 = 31.599 kg" reads as a wrong sum.  Where
-    no few digits do (the other operands are written rounded too), five: ω = 157.07963267948966 is not read."""
+    no few digits do (the other operands are written rounded too), five: ω = 157.07963267948966 is not read.
+    ``write`` writes it to so many digits (the note's way, ``note.n``, unless given)."""
+    written = write or note.n
     for digits in range(5, MOST_SHOWN_DIGITS + 1):
-        text = note.n(value, digits)
+        text = written(value, digits)
         shown = read_number(note, text)
         if all(_same_written(note, result_of(shown), result) for result_of, result in results):
             return text
-    return note.n(value)
+    return written(value, 5)
 
 
 # The most significant digits an operand is written with to make its equations come out as written.
 MOST_SHOWN_DIGITS = 8
+# Below this a shaft's second moment of area is written as a power of ten, as its E beside it is from 10⁹ on.
+SMALL_IN_POWERS = 1e-3
 
 
 _FROM_SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
