@@ -14,8 +14,9 @@ from .mechanism import Mechanism
 from .statics import delivers_power, rounded_zero, turned_round
 
 # A component written with a caret (the plans' aBA^τ, aBB4^r), which a reader would see as a caret beside
-# aBAⁿ and aBA4ᵏ: r raised as its modifier letter, τ, which has none, on the line as in R23τ.
-_CARET_COMPONENT = re.compile(r"(?<=[A-Za-z0-9Σ])\^([τr])(?![A-Za-z])")
+# aBAⁿ and aBA4ᵏ: r raised as its modifier letter, τ, which has none, on the line as in R23τ.  After a point's
+# name in any alphabet (aВА^τ of a Russian scheme's points), before no letter.
+_CARET_COMPONENT = re.compile(r"(?<=[^\W_])\^([τr])(?![^\W\d_])")
 _RAISED = {"τ": "τ", "r": "ʳ"}
 
 

@@ -50,6 +50,7 @@ from ..wording import driver_at, raised
 from . import forces as force_report
 from .force_note import forces_section
 from .machine_note import balancing_section, dynamics_section, vibration_section
+from .symbols import CAPITALS
 from .tables import (
     error_table_lines,
     has_reactions,
@@ -704,7 +705,7 @@ class _Note:
 
     def equation(self, text: str) -> str:
         """An equation of the record with velocities written V, as the textbooks print them."""
-        return re.sub(r"(?<![A-Za-z])v(?=[A-ZΣ])", "V", text)
+        return re.sub(rf"(?<![A-Za-z])v(?=[{CAPITALS}])", "V", text)
 
     def line(self, along: LineMeaning) -> str:
         """A line of action (⊥ AB, ∥ guide) in the note's language; points and frame lines keep their names."""
@@ -1050,7 +1051,7 @@ def _places(pp: PlanPosition) -> dict[str, complex]:
 
 def _guide_points(text: str) -> set[str]:
     """Names like ``B4`` (a link's point over a joint) that occur in ``text``."""
-    return set(re.findall(r"[A-Z][a-z]?\d+", text))
+    return set(re.findall(rf"[{CAPITALS}][a-z]?\d+", text))
 
 
 __all__ = ["note_html", "note_markdown"]

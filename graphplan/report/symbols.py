@@ -16,11 +16,17 @@ import re
 from collections.abc import Iterator
 from typing import NamedTuple
 
+#: The capitals a point's name is written in, as the body of a regular expression's class: Latin, Cyrillic (a
+#: Russian scheme's О, А, В) and Greek (Assur's Σ6) alike, since a scene may name its points in any of them.
+CAPITALS = "A-ZА-ЯЁΑ-Ω"
+# A point's name, or two of them, as an index: a capital, then capitals and digits (B4, S3, ВА, Σ6C).
+_POINTS = f"[{CAPITALS}][{CAPITALS}0-9]*"
+
 # base, index, component: the symbols of the plan method and of the force analysis.
 SYMBOL = re.compile(
     # A derivative's d stands before the speed it differentiates: dωd/dt is d of ωd.
     r"(?:(?<![A-Za-z_])|(?<=(?<![A-Za-z_])d)(?=ω))(?:"
-    r"(?P<base>[Va]|l)(?P<index>[A-ZΣ][A-Z0-9Σ]*)(?P<component>ⁿ|ᵏ|ʳ|\^?τ|\^r)?"
+    rf"(?P<base>[Va]|l)(?P<index>{_POINTS})(?P<component>ⁿ|ᵏ|ʳ|\^?τ|\^r)?"
     r"|(?P<base12>a)(?P<component12>\^?τ)"
     r"|(?P<base2>[ωε])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
@@ -28,14 +34,14 @@ SYMBOL = re.compile(
     r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
     r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
-    r"|(?<=Σ)(?P<base8>M)(?P<index8>[A-ZΣ][A-Z0-9Σ]*)"
+    rf"|(?<=Σ)(?P<base8>M)(?P<index8>{_POINTS})"
     r"|(?P<base9>p)(?P<index9>[45])"
     r"|(?P<base10>P)(?P<index10>[LH])"
     # The strokes' angles of the crank (φw, φi; φр.х, φх.х), the reactions of the linear system and of the
     # polygons (Rсист, Rпл), an error's two values (Xа, Xпл); the friction in a pair: its coefficient fE (reduced
     # in a V-guide, f′E), its circle's radius ρO, its force Ff16 and moment Mf12 (above).
     r"|(?P<base18>φ)(?P<index18>[wi]|р\.х|х\.х)|(?P<base19>R)(?P<index19>сист|пл)|(?P<base20>X)(?P<index20>а|пл)"
-    r"|(?P<base21>f′?|ρ)(?P<index21>[A-Z][A-Z0-9]*|\d+)"
+    rf"|(?P<base21>f′?|ρ)(?P<index21>{_POINTS}|\d+)"
     # The machine's dynamics: ΔWmax, Ad and Ar (in Chinese Wd and Wr), ωm, ωmax and ωmin, vS of a reduction; in
     # Russian ΔTнб, Aд and Aс, ωср (and above Je,mean, Jп, Jп,ср, Mп, Mд, Mс, mп).  The efficiency over the cycle's
     # works: Au, Ad, Af (Wr, Wd, Wf; Aпс, Aдв, Aтр).
