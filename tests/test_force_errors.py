@@ -290,8 +290,12 @@ def test_with_friction_the_errors_say_which_polygons_the_readings_are_checked_ag
     reaction = abs(complex(balance.reaction("R45").force[plan.index]))
     millimetres = round(reaction / plan.forces.scale_of("R45"), 1)
     analysis = analyse(graphplan.scene.loads(starter("shaper") + f"\n[measured.3]\nforces = {{ R45 = {millimetres} }}\n"))
-    for text in (markdown(analysis), note_markdown(analysis)):
-        assert "these are the polygons without friction (forces_N.svg), and the readings of [measured] forces are " \
-               "checked against them" in text
-        nearer = "Every reading of a reaction stands nearer the polygons with friction (forces_friction_3.svg: R45 = "
-        assert (nearer in text) is drawn_with_friction
+    errors, note = markdown(analysis), note_markdown(analysis)
+    assert "these are the polygons without friction (forces_N.svg), and the reactions measured on the hand-drawn " \
+           "polygons ([measured] forces) are checked against them" in errors
+    assert ("Every reading of a reaction stands nearer the polygons with friction (forces_friction_3.svg: R45 = "
+            in errors) is drawn_with_friction
+    # The note's reader has the figures, not the run's files: the polygons are named in words.
+    assert "these are the force polygons without friction, and the reactions measured on the hand-drawn polygons " \
+           "are checked against them" in note
+    assert ("Every reading of a reaction stands nearer the polygons with friction (R45 = " in note) is drawn_with_friction

@@ -1023,7 +1023,7 @@ class _Note:
 
     def slips(self, position: VelocityPosition) -> None:
         """Under a position's error table, its hand readings far off the construction, if any."""
-        slipped = slip_lines(self.analysis, position, self.mark)
+        slipped = slip_lines(self.analysis, position, self.mark, in_note=True)
         if slipped:
             self.para(*slipped)
 
@@ -1031,7 +1031,7 @@ class _Note:
         precision = self.n(self.analysis.scene.drawing.drafting_precision)
         self.heading(2, self.t("note_errors"), section)
         intro = self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision)
-        self.para(f"{intro} {reactions_intro(self.analysis)}" if has_reactions(self.analysis) else intro)
+        self.para(f"{intro} {reactions_intro(self.analysis, in_note=True)}" if has_reactions(self.analysis) else intro)
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),
                            error_table_lines(self.analysis, plan, self.mark))

@@ -73,11 +73,12 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
     return lines
 
 
-def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".") -> list[str]:
+def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_note: bool = False) -> list[str]:
     """The hand readings of a position far off its construction (:mod:`graphplan.misreadings`), said under its
-    error table in the scene's language: a plan drawn at another scale, or each misread length."""
+    error table in the scene's language: a plan drawn at another scale, or each misread length.  ``in_note``:
+    for the explanatory note's reader, who knows the sheets by their captions, not by the files they are in."""
     found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint)
-    nearer = _nearer_with_friction(analysis, plan, mark)
+    nearer = _nearer_with_friction(analysis, plan, mark, in_note)
     if found is None:
         return nearer
     text = strings(analysis.scene.locale)
@@ -141,17 +142,23 @@ def has_reactions(analysis: Analysis) -> bool:
     return any(is_reaction(row.quantity) for plan in analysis.plans for row in plan.errors)
 
 
-def reactions_intro(analysis: Analysis) -> str:
+def reactions_intro(analysis: Analysis, in_note: bool = False) -> str:
     """What the reaction rows compare, in the scene's language; with friction in the pairs, which polygons: those
-    without friction, the linear system's reference, so a student who drew the friction polygons knows."""
+    without friction, the linear system's reference, so a student who drew the friction polygons knows.  The
+    student who ran the program is told the files and the scene's key too; the note's reader (``in_note``), who
+    has neither, the polygons in words alone."""
     text = strings(analysis.scene.locale)
-    # The file names and the key are written as they are in every language: placeholders keep them out of the words.
-    without = text["errors_forces_without_friction"].format(plain="forces_N.svg", with_friction="forces_friction_N.svg",
-                                                            measured="[measured] forces")
+    if in_note:
+        without = text["note_forces_without_friction"]
+    else:
+        # The file names and the key are written as they are in every language: placeholders keep them out of
+        # the words.
+        without = text["errors_forces_without_friction"].format(
+            plain="forces_N.svg", with_friction="forces_friction_N.svg", measured="[measured] forces")
     return text["errors_forces"] + (f" {without}" if analysis.friction else "")
 
 
-def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str) -> list[str]:
+def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str, in_note: bool) -> list[str]:
     """Hand readings of reactions that every one stands nearer the polygons with friction than those without,
     which the table checks them against: said, with each reaction as the friction polygon gives it."""
     rubbing = getattr(plan, "with_friction", None)
@@ -169,6 +176,8 @@ def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str)
     text = strings(analysis.scene.locale)
     values = ", ".join(f"{row.quantity} = {number(with_friction[row.quantity], mark=mark)} {text['newton']}"
                        for row in read)
+    if in_note:
+        return [text["note_nearer_friction"].format(values=values)]
     return [text["errors_nearer_friction"].format(values=values, plain=f"forces_{plan.number}.svg",
                                                   with_friction=f"forces_friction_{plan.number}.svg")]
 
