@@ -553,6 +553,27 @@ def test_the_initial_data_give_the_frame_from_which_the_mechanism_is_drawn(local
     assert above in value and "O" in value and "0°" in value
 
 
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_speed_given_in_rpm_is_among_the_initial_data_with_omega_worked_out_from_it(locale):
+    """The engine's crank turns at 1500 rpm: the note gave only ω2 = 157.08 rad/s, and the reader could not see
+    the assignment's n in it.  A speed given as ω stays as it is, with no n."""
+    unit = {"en": "rpm", "ru": "об/мин", "zh": "r/min"}[locale]
+    rows = dict(table_after(note_of("engine_slider_crank", locale), {"en": "Table 2", "ru": "Таблица 2",
+                                                                     "zh": "表 2"}[locale]))
+    assert rows["n2"] == f"1500 {unit}"
+    omega = re.fullmatch(r"πn2/30 = π[·×]1500/30 = ([\d.,]+) .*", rows["ω2"]).group(1)
+    assert agrees(omega, math.pi * 1500 / 30) and agrees(omega, analysis_of("engine_slider_crank", locale)
+                                                          .mechanism.driver.omega)
+    ratchet = note_of("ratchet_crank_rocker", locale)
+    assert "| ω2 | " in ratchet and "| n2 |" not in ratchet and "πn2/30" not in ratchet
+
+
+def test_the_speed_in_rpm_takes_its_index_below_the_line_and_the_plans_letter_n3_does_not():
+    assert symbols_html("n2") == "n<sub>2</sub>"
+    assert symbols_html("πn2/30 = π·1500/30; ⊥ CB через n4; πn4 = 2,99; n4b") == (
+        "πn<sub>2</sub>/30 = π·1500/30; ⊥ CB через n4; πn4 = 2,99; n4b")
+
+
 def test_a_point_placed_on_another_has_no_length_among_the_initial_data():
     """The rocker's centre of mass put on its pivot (at = 0): lCS4 = 0 is no dimension of the link."""
     text = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")

@@ -46,6 +46,9 @@ class Crank:
     omega: float
     epsilon: float
     swing: tuple[float, float] | None = None
+    # The speed in rev/min where the scene gave it so (signed as omega), for the note to write n beside ω; None
+    # where it gave omega.
+    rpm: float | None = None
 
     @classmethod
     def read(cls, table: Table, link: int) -> Crank:
@@ -65,7 +68,7 @@ class Crank:
             swing = (math.radians(ends[0]), math.radians(ends[1]))
         table.done()
         return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
-                   epsilon=epsilon, swing=swing)
+                   epsilon=epsilon, swing=swing, rpm=float(table.raw("rpm")) if table.has("rpm") else None)
 
     def known_joints(self) -> tuple[str, ...]:
         return (self.pivot,)

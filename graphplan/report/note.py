@@ -349,6 +349,12 @@ class _Note:
         rows.extend(self.moving_slide_rows())
         if driver.kind == "crank":
             omega = f"{self.n(abs(driver.omega))} {self.text['unit_rad_per_s']}{self.with_sense(driver.omega)}"
+            if driver.rpm is not None:
+                # The speed as the scene gave it, and ω from it, as a note on paper writes them: the reader checks
+                # the conversion against the assignment, which gives n.
+                n = self.n(abs(driver.rpm))
+                rows.append([f"n{driver.link}", f"{n} {self.text['unit_rpm']}"])
+                omega = f"πn{driver.link}/30 = π{self.text['times']}{n}/30 = {omega}"
             rows.append([f"ω{driver.link}", omega])
             epsilon = f"{self.n(abs(driver.epsilon))} {self.text['unit_rad_per_s2']}{self.with_sense(driver.epsilon)}"
             rows.append([f"ε{driver.link}", epsilon])

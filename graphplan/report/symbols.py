@@ -36,6 +36,9 @@ SYMBOL = re.compile(
     r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
     rf"|(?<=Σ)(?P<base8>M)(?P<index8>{_POINTS})"
     r"|(?P<base9>p)(?P<index9>[45])"
+    # The crank's speed in rev/min where the scene gives it: the cell of n2 and its conversion πn2/30.  Only there:
+    # elsewhere n3 is the plans' letter for a normal component's end (πn3, через n3), which the drawings write flat.
+    r"|(?P<base26>n)(?P<index26>\d+)(?=/30|$)"
     r"|(?P<base10>P)(?P<index10>[LH])"
     # The strokes' angles of the crank (φw, φi; φр.х, φх.х), the reactions of the linear system and of the
     # polygons (Rсист, Rпл), an error's two values (Xа, Xпл); the friction in a pair: its coefficient fE (reduced
