@@ -37,10 +37,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..analysis import Analysis, PlanPosition, VelocityPosition
+from ..analysis import SCENE_WIDE_WARNINGS, Analysis, PlanPosition, VelocityPosition
 from ..check import Reading
 from ..errors import SceneError
 from ..kinematics import cross
+from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
 from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.drawings import length_scale
@@ -380,6 +381,18 @@ class _Note:
         elif self.analysis.positions.working_link_turns:
             self.para(self.t("note_turns_round", link=scene.positions.working.link,
                              turns=Count(abs(self.analysis.positions.working_link_turns))))
+        self.scene_warnings()
+
+    def scene_warnings(self) -> None:
+        """What the run warned of about the scene as a whole (its lengths in millimetres, a working sense its link
+        never takes), said under the data it is about: the console's line is gone by the time the note is handed
+        in, and a note of 550-m links must not read as if nothing were amiss."""
+        codes = sorted({warning.code for warning in self.analysis.warnings if warning.code in SCENE_WIDE_WARNINGS})
+        working = self.analysis.scene.positions.working
+        if codes:
+            self.para(" ".join(self.t("note_warning_" + code.replace("-", "_"), link=working.link if working else "",
+                                      longest=self.n(LONGEST_LINK_M), fastest=self.n(FASTEST_CRANK_PIN_M_S))
+                               for code in codes))
 
     def frame_rows(self) -> list[list[str]]:
         """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
