@@ -23,6 +23,7 @@ from dataclasses import dataclass, replace
 
 from .errors import SceneError
 from .forces import ForcePlan
+from .lookalikes import lookalike_hint, twin
 from .mechanism import Mechanism
 from .plans import LaidVector, Plan, Step
 
@@ -367,7 +368,7 @@ def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, s
         if component is not None:
             raise SceneError(where, f"{component}; the polygons find {', '.join(forces.reactions)}")
         raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}"
-                         f"{_lettering_hint(name, [])}")
+                         f"{_lettering_hint(name, [], _reaction_names(forces))}")
     drawn = next((group for group in forces.groups if any(vector.name == name for vector in group.polygon.vectors)),
                  None)
     if drawn is None:
@@ -495,12 +496,21 @@ def split_segment(name: str, letters: list[str], where: str) -> tuple[str, str]:
     if kind == ["velocity"] and "π" in name:
         pole = " (π is the acceleration plan's pole; the velocity plan's is p)"
     raise SceneError(where, f"is not two letters of the plan ({', '.join(sorted(letters))}){pole}"
-                     f"{_lettering_hint(name, letters)}")
+                     f"{_lettering_hint(name, letters, [a + b for a in letters for b in letters if a != b])}")
 
 
-def _lettering_hint(name: str, letters: list[str]) -> str:
-    """Why a name a student typed is no plan's or polygon's: a Cyrillic letter that looks Latin (р, а, с, е, Р),
-    or capitals where the plan's letters are small."""
+def _reaction_names(forces: ForcePlan) -> list[str]:
+    """Every name a reading of the polygons may give: each reaction, and each the other way round."""
+    return [name for found in forces.reactions.values()
+            for name in (f"R{found.source}{found.target}", f"R{found.target}{found.source}")]
+
+
+def _lettering_hint(name: str, letters: list[str], names: list[str]) -> str:
+    """Why a name a student typed is none of ``names``, a plan's segments or a polygon's reactions: one of them
+    that looks the same in other letters (a Cyrillic р for the Latin p, or the Latin a where the plan's letters
+    are Cyrillic), another Cyrillic letter, or capitals where the plan's letters are small."""
+    if twin(name, names) is not None:
+        return lookalike_hint(name, names)
     cyrillic = [letter for letter in dict.fromkeys(name) if unicodedata.name(letter, "").startswith("CYRILLIC")]
     if cyrillic:
         written = ", ".join(f"'{letter}' (U+{ord(letter):04X})" for letter in cyrillic)

@@ -24,18 +24,22 @@ class SceneError(GraphplanError, ValueError):
         What is wrong, in words, for instance ``must be > 0``.
     value
         The offending value, shown after the problem when given.
+    hint
+        What the value was likely meant to be, after it (``"; 'О' has the Cyrillic 'О' …"``): it reads only
+        once the value is seen.
     """
 
     _NO_VALUE = object()
 
-    def __init__(self, where: str, problem: str, value: object = _NO_VALUE) -> None:
+    def __init__(self, where: str, problem: str, value: object = _NO_VALUE, *, hint: str = "") -> None:
         self.where = where
         self.problem = problem
         self.value = value
+        self.hint = hint
         message = f"{where}: {problem}" if where else problem
         if value is not SceneError._NO_VALUE:
             message += f" (got {as_written(value)})"
-        super().__init__(message)
+        super().__init__(message + hint)
 
 
 def as_written(value: object, nested: bool = False) -> str:

@@ -16,6 +16,7 @@ from types import MappingProxyType
 
 from .errors import SceneError
 from .groups import Driver, Group, Guide
+from .lookalikes import contrast, difference, lookalike_hint, plain, twin
 from .scene import PointSpec, Scene
 
 _ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -108,7 +109,7 @@ def build(scene: Scene) -> Mechanism:
     carried_by: dict[str, int] = dict.fromkeys(scene.frame_points, frame)
     sliding_on: dict[int, dict[str, complex]] = {}
     pending = list(scene.points)
-    _check_point_names(scene)
+    named_at = _check_point_names(scene)
     units = []
     solvers: list[Driver | Group] = [scene.driver, *scene.groups]
     for index, solver in enumerate(solvers):
@@ -120,10 +121,10 @@ def build(scene: Scene) -> Mechanism:
                                  f"link {number} already belongs to {'the frame' if number == frame else 'an earlier group'}; a group's links are new")
         if index == 0 and scene.driver.kind == "crank" and scene.driver.pivot not in scene.frame_points:
             raise SceneError(f"{where}.pivot", f"must be a point of [frame] points: {_known(scene.frame_points)}",
-                             scene.driver.pivot)
+                             scene.driver.pivot, hint=lookalike_hint(scene.driver.pivot, scene.frame_points))
         for name in solver.known_joints():
             if name not in known_points:
-                raise SceneError(_joint_where(solver, name), _unknown_point(name, known_points))
+                raise _unknown_joint(solver, name, known_points, named_at)
         if index == 0 and scene.driver.kind == "slider" and not on_frame(scene, scene.driver.guide):
             raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
         for guide in solver.guides():
@@ -203,27 +204,58 @@ def _known(names) -> str:
     return ", ".join(str(n) for n in names) if names else "none"
 
 
-def _unknown_point(name: str, known: set[str]) -> str:
+def _unknown_joint(solver: Driver | Group, name: str, known: set[str], named_at: dict[str, str]) -> SceneError:
+    """Why a joint the solver needs is not known by then.  Where a known point looks the same in other
+    characters, the slip is the one not in ASCII: a group's Latin A joined to the driver's Cyrillic А is told at
+    the driver, where the Cyrillic letter was typed."""
     import difflib
+    where = _joint_where(solver, name)
+    meant = twin(name, known)
+    if meant is not None and name.isascii():
+        return SceneError(named_at[meant], f"{meant!r} is not the {name!r} that {where} joins to; "
+                          f"{difference(meant, name)}")
+    if meant is not None:
+        return SceneError(where, f"{name!r} is not known at this stage{lookalike_hint(name, known)}")
     close = difflib.get_close_matches(name, sorted(known), n=1, cutoff=0.5)
     hint = f"; did you mean {close[0]!r}?" if close else ""
-    return (f"{name!r} is not known at this stage: it must be a frame point, a joint of the driver or "
-            f"of an earlier group, or a named point of a link already found{hint}")
+    return SceneError(where, f"{name!r} is not known at this stage: it must be a frame point, a joint of the driver "
+                             f"or of an earlier group, or a named point of a link already found{hint}")
 
 
-def _check_point_names(scene: Scene) -> None:
-    joints = set(scene.frame_points)
+def _check_point_names(scene: Scene) -> dict[str, str]:
+    """Every point the scene names (frame points, joints, [points]) by the key that names it, each name once and
+    no two that look the same on screen: the sheets would letter a Cyrillic С and the Latin C both C."""
+    named_at = {name: f"frame.points.{name}" for name in scene.frame_points}
     for solver in (scene.driver, *scene.groups):
-        joints.update(solver.new_joints())
+        for name in solver.new_joints():
+            named_at.setdefault(name, _new_joint_where(solver, name))
     for spec in scene.points:
-        if spec.name in joints:
+        if spec.name in named_at:
             raise SceneError(spec.where, f"{spec.name!r} is already a joint's name")
+        named_at[spec.name] = spec.where
+    seen: dict[str, str] = {}
+    for name, where in named_at.items():
+        other = seen.setdefault(plain(name), name)
+        if other != name:
+            raise SceneError(where, f"{name!r} looks the same as the point {other!r} of "
+                             f"{named_at[other]}, and the drawings would letter both alike; "
+                             f"{contrast(name, other)}: name the two apart")
+    return named_at
+
+
+def _new_joint_where(solver: Driver | Group, name: str) -> str:
+    """The key that names a joint the solver finds: ``driver.joint``, ``groups[0].joints[1]``."""
+    joints = getattr(solver, "joints", None)
+    if joints is None:
+        return f"{solver.where}.joint"
+    return f"{solver.where}.joints[{joints.index(name)}]" if name in joints else f"{solver.where}.joints"
 
 
 def _check_guide(scene: Scene, guide: Guide, known_links: set[int], fixed_on: dict[int, set[str]]) -> None:
     if guide.line is not None:
         if guide.line not in scene.frame_lines:
-            raise SceneError(guide.where, f"no frame line {guide.line!r}; [frame] lines has {_known(scene.frame_lines)}")
+            raise SceneError(guide.where, f"no frame line {guide.line!r}; [frame] lines has "
+                             f"{_known(scene.frame_lines)}{lookalike_hint(guide.line, scene.frame_lines)}")
         return
     link = scene.frame_link if guide.link is None else guide.link
     if link not in known_links:
@@ -232,7 +264,7 @@ def _check_guide(scene: Scene, guide: Guide, known_links: set[int], fixed_on: di
         raise SceneError(f"{guide.where}.through", f"on a moving link must name a point of link {link}", list(guide.through or ()))
     if isinstance(guide.through, str) and guide.through not in fixed_on.get(link, ()):
         raise SceneError(f"{guide.where}.through", f"must be a point fixed on link {link}: {_known(sorted(fixed_on.get(link, ())))}",
-                         guide.through)
+                         guide.through, hint=lookalike_hint(guide.through, fixed_on.get(link, ())))
 
 
 def _place_points(pending, known_links, fixed_on, sliding_on, known_points):
@@ -265,7 +297,8 @@ def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on) ->
         for key, name in (("from", spec.start), ("toward", spec.toward)):
             usable = name in on_link or (key == "toward" and name in sliding_on.get(spec.link, {}))
             if not usable and name not in pending_names:
-                return SceneError(f"{spec.where}.{key}", f"{name!r} is not a point of link {spec.link}; its points are {_known(sorted(on_link))}")
+                return SceneError(f"{spec.where}.{key}", f"{name!r} is not a point of link {spec.link}; its points "
+                                  f"are {_known(sorted(on_link))}{lookalike_hint(name, on_link)}")
     spec = pending[0]
     key, name = ("from", spec.start) if spec.start in pending_names else ("toward", spec.toward)
     if name == spec.name:
@@ -309,12 +342,13 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
             raise SceneError(spec.where, f"no link {number} in the mechanism; links are {_known(sorted(known_links))}")
         if spec.centre is not None and spec.centre not in mechanism.fixed_on.get(number, ()):
             raise SceneError(f"{spec.where}.centre", f"must be a point fixed on link {number}: {_known(sorted(mechanism.fixed_on.get(number, ())))}",
-                             spec.centre)
+                             spec.centre, hint=lookalike_hint(spec.centre, mechanism.fixed_on.get(number, ())))
     for load in scene.loads:
         if load.link not in known_links:
             raise SceneError(f"{load.where}.link", f"no link {load.link} in the mechanism", load.link)
         if load.point is not None and load.point not in mechanism.fixed_on.get(load.link, ()):
-            raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point)
+            raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point,
+                             hint=lookalike_hint(load.point, mechanism.fixed_on.get(load.link, ())))
         if load.during != "always" and scene.positions.working is None:
             raise SceneError(f"{load.where}.during", "a load that acts in one stroke needs positions.working "
                                                      "(which motion of which link is the working stroke)",

@@ -92,7 +92,8 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
         return _run(as_asked(scene, locale, sheet, options), folder, only, formats, figures, options, sheet_key, say)
     except SceneError as error:
         if sheet is not None and error.where == "drawing.sheet":
-            renamed = SceneError(f"{options.sheet} (in place of drawing.sheet)", error.problem, error.value)
+            renamed = SceneError(f"{options.sheet} (in place of drawing.sheet)", error.problem, error.value,
+                                 hint=error.hint)
             for note in getattr(error, "__notes__", ()):
                 renamed.add_note(note)
             raise renamed from None

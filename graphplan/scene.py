@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
+from .lookalikes import lookalike_hint
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
 from .rotor_balancing import BalancingSpec, read_balancing
 from .vibration import VibrationSpec, read_vibration
@@ -505,7 +506,7 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
                 raise SceneError(table.where(name), "a frame line needs through and angle, on the frame")
             if isinstance(guide.through, str) and guide.through not in points:
                 raise SceneError(f"{table.where(name)}.through", f"must be a point of [frame] points: {', '.join(points) or 'none'}",
-                                 guide.through)
+                                 guide.through, hint=lookalike_hint(guide.through, points))
             lines[name] = guide
     frame.done()
     return link, points, lines

@@ -974,8 +974,8 @@ def test_invalid_toml(text: str, line: int) -> None:
 
 @pytest.mark.parametrize(("measured", "where", "problem"), [
     ({"velocity": {"рb": 38.82}}, "measured.5.velocity.рb",
-     ("is not two letters of the plan (a, b, e, p, s2, s3, s4); it has the Cyrillic letter 'р' (U+0440): "
-      "type the Latin one")),
+     ("is not two letters of the plan (a, b, e, p, s2, s3, s4); 'рb' has the Cyrillic 'р' (U+0440) where 'pb' has "
+      "the Latin 'p' (U+0070): type the Latin letter")),
     ({"velocity": {"PB": 38.82}}, "measured.5.velocity.PB",
      "is not two letters of the plan (a, b, e, p, s2, s3, s4); the plan's letters are small: write pb"),
     ({"velocity": {"πb": 38.82}}, "measured.5.velocity.πb",

@@ -1,0 +1,89 @@
+"""Names that look the same on screen but are other characters: a Cyrillic С typed for the Latin C, a hyphen
+for the en dash a starter names its guide with, a full-width Ａ from a Chinese input method.
+
+A scene's names are looked up among the names it has given already; where the two differ only in such
+characters, an error that shows both ("must be one of O, C (got 'О')") contradicts itself on screen, and one
+that letters two points alike (a Cyrillic С beside the Latin C) draws sheets with two points C.  This module
+tells such names apart and says which character is which, for every place that looks a name up.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+from collections.abc import Iterable
+
+# Letters drawn like a Latin one: what a Russian keyboard types for the Latin names beside them (and Greek capitals,
+# which a mathematical font draws the same).  Every dash and the minus sign read as the hyphen a keyboard has.
+_LOOKS_LATIN = str.maketrans({
+    **dict(zip("АВСЕНКМОРТХУЅІЈаесорхуѕіј", "ABCEHKMOPTXYSIJaecopxysij")),
+    **dict(zip("ΑΒΕΖΗΙΚΜΝΟΡΤΥΧο", "ABEZHIKMNOPTYXo")),
+    **dict.fromkeys("‐‑‒–—―−", "-"),
+})
+
+
+def plain(name: str) -> str:
+    """``name`` as it looks: every character that looks like an ASCII one replaced by it (full-width forms too)."""
+    return unicodedata.normalize("NFKC", name).translate(_LOOKS_LATIN)
+
+
+def twin(name: str, names: Iterable[str]) -> str | None:
+    """The one of ``names`` that is not ``name`` but looks the same, or None."""
+    looks = plain(name)
+    return next((other for other in names if other != name and plain(other) == looks), None)
+
+
+def described(character: str) -> str:
+    """A character as an error names it, so that two that look the same read apart: "the Cyrillic 'С' (U+0421)",
+    "a hyphen '-' (U+002D)", "an en dash '–' (U+2013)"."""
+    name = unicodedata.name(character, "")
+    code = f"'{character}' (U+{ord(character):04X})"
+    for script in ("LATIN", "CYRILLIC", "GREEK"):
+        if name.startswith(script):
+            return f"the {script.capitalize()} {code}"
+    if name.startswith("FULLWIDTH"):
+        return f"the full-width {code}"
+    what = {"HYPHEN-MINUS": "a hyphen"}.get(name) or f"a{'n' if name[:1] in 'AEIOU' else ''} {name.lower()}"
+    return f"{what} {code}"
+
+
+def difference(typed: str, meant: str) -> str:
+    """What sets ``typed`` apart from ``meant``, which looks the same, and what to type: "'О' has the Cyrillic 'О'
+    (U+041E) where 'O' has the Latin 'O' (U+004F): type the Latin letter"."""
+    if unicodedata.normalize("NFKC", typed) == meant:  # a Chinese input method's full-width forms, all of them
+        return f"it has full-width letters: write {meant}"
+    return f"{contrast(typed, meant)}: {_advice(typed, meant)}"
+
+
+def contrast(typed: str, meant: str) -> str:
+    """Each character of ``typed`` beside the one of ``meant`` it looks like: "'О' has the Cyrillic 'О' (U+041E)
+    where 'O' has the Latin 'O' (U+004F)"."""
+    if len(typed) == len(meant):
+        pairs = [(mine, theirs) for mine, theirs in zip(typed, meant) if mine != theirs]
+    else:  # a full-width form folds to more than one character: name the typed ones alone
+        pairs = [(mine, "") for mine in dict.fromkeys(typed) if not mine.isascii()]
+    pairs = list(dict.fromkeys(pairs))
+    mine = ", ".join(described(a) for a, _ in pairs)
+    theirs = ", ".join(described(b) for _, b in pairs if b)
+    return f"{typed!r} has {mine}" + (f" where {meant!r} has {theirs}" if theirs else "")
+
+
+def _advice(typed: str, meant: str) -> str:
+    pairs = [(mine, theirs) for mine, theirs in zip(typed, meant) if mine != theirs] if len(typed) == len(meant) \
+        else []
+    if pairs and all(theirs.isascii() for _, theirs in pairs):
+        if all(theirs.isalpha() for _, theirs in pairs):
+            return "type the Latin letter" + ("s" if len(set(pairs)) > 1 else "")
+        return f"type {meant!r}"
+    if not pairs and meant.isascii():
+        return f"type {meant!r}"
+    return f"write it as {meant!r} is written (copy it), or name both alike in ASCII"
+
+
+def lookalike_hint(name: str, names: Iterable[str]) -> str:
+    """The hint for a ``name`` looked up among ``names`` and not found, where one of them looks the same:
+    "; 'О' has the Cyrillic 'О' … where 'O' has the Latin 'O' …: type the Latin letter"; else ""."""
+    meant = twin(name, names)
+    return f"; {difference(name, meant)}" if meant is not None else ""
+
+
+__all__ = ["contrast", "described", "difference", "lookalike_hint", "plain", "twin"]
