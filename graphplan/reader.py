@@ -12,6 +12,7 @@ import datetime
 import difflib
 import json
 import math
+import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -61,7 +62,7 @@ SMALLEST = 1e-15
 def check_number(value: Any, where: str) -> float:
     """``value`` as a finite float of a magnitude graphplan computes with, or a SceneError naming ``where``."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(where, f"must be a number, not {_type_name(value)}", value)
+        raise SceneError(where, f"must be a number, not {_type_name(value)}", value, hint=_number_in_text(value))
     try:
         number = float(value)
     except OverflowError:
@@ -71,6 +72,42 @@ def check_number(value: Any, where: str) -> float:
     if number != 0 and not SMALLEST <= abs(number) <= LARGEST:
         raise SceneError(where, f"must be 0 or of a magnitude from {SMALLEST:g} to {LARGEST:g}", value)
     return number
+
+
+_COMMA_DECIMAL = re.compile(r"[-+]?\d+,\d+")
+
+
+def _number_in_text(value: Any) -> str:
+    """The hint for a number written as a string with the decimal comma a Russian text takes (``"0,175"``)."""
+    if not isinstance(value, str) or not _COMMA_DECIMAL.fullmatch(value.strip()):
+        return ""
+    return f"; a decimal comma? TOML numbers take a point and no quotes: write {value.strip().replace(',', '.')}"
+
+
+def decimal_comma_hint(value: Any, length: int) -> str:
+    """The hint for a list of ``length`` numbers that has more, which decimal commas give: TOML reads
+    ``[0,55, 0,325]`` as the four integers 0, 55, 0, 325.  Each way of pairing integers back into numbers that
+    makes ``length`` of them is offered (two at most: beyond that the list is no slip of a comma)."""
+    if not isinstance(value, list) or len(value) <= length:
+        return ""
+    readings = _comma_readings(value, length)
+    if not readings or len(readings) > 2:
+        return ""
+    written = " or ".join("[" + ", ".join(reading) + "]" for reading in readings)
+    return f"; a decimal comma? TOML reads a comma in a list as the next entry: write {written}"
+
+
+def _comma_readings(items: list[Any], count: int) -> list[list[str]]:
+    """Every way ``items`` read as ``count`` numbers, each an item or two integers joined by a decimal point."""
+    if count == 0 or not items:
+        return [[]] if count == 0 and not items else []
+    readings = []
+    if isinstance(items[0], int | float) and not isinstance(items[0], bool):
+        readings += [[repr(items[0]), *rest] for rest in _comma_readings(items[1:], count - 1)]
+    whole, fraction = items[0], items[1] if len(items) > 1 else None
+    if all(isinstance(part, int) and not isinstance(part, bool) for part in (whole, fraction)) and fraction >= 0:
+        readings += [[f"{whole}.{fraction}", *rest] for rest in _comma_readings(items[2:], count - 1)]
+    return readings
 
 
 def check_int(value: Any, where: str) -> int:
@@ -90,7 +127,7 @@ def check_str(value: Any, where: str) -> str:
 def check_xy(value: Any, where: str) -> tuple[float, float]:
     """A point given as ``[x, y]``."""
     if not isinstance(value, list) or len(value) != 2:
-        raise SceneError(where, "must be a point [x, y]", value)
+        raise SceneError(where, "must be a point [x, y]", value, hint=decimal_comma_hint(value, 2))
     return (check_number(value[0], join_path(where, 0)), check_number(value[1], join_path(where, 1)))
 
 
@@ -259,7 +296,8 @@ class Table:
         if not isinstance(value, list):
             raise SceneError(where, f"must be a list, not {_type_name(value)}", value)
         if length is not None and len(value) != length:
-            raise SceneError(where, f"must have {length} entries, not {len(value)}", value)
+            raise SceneError(where, f"must have {length} entries, not {len(value)}", value,
+                             hint=decimal_comma_hint(value, length))
         return [(join_path(where, i), item) for i, item in enumerate(value)]
 
     def numbers(self, key: str, length: int, default: Any = _REQUIRED, *, positive: bool = False) -> Any:

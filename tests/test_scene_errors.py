@@ -1022,6 +1022,28 @@ def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: s
     assert stage == "load" and str(error).startswith("<scene>: is not valid TOML: ") and str(error).endswith(hint)
 
 
+@pytest.mark.parametrize(("changes", "message"), [
+    ({"groups.0.lengths": [0, 55, 0, 325]},
+     ("groups[0].lengths: must have 2 entries, not 4 (got [0, 55, 0, 325]); a decimal comma? TOML reads a comma in "
+      "a list as the next entry: write [0.55, 0.325]")),
+    ({"frame.points.C": [0, 0, 55]},
+     ("frame.points.C: must be a point [x, y] (got [0, 0, 55]); a decimal comma? TOML reads a comma in a list as "
+      "the next entry: write [0, 0.55] or [0.0, 55]")),
+    ({"groups.0.near": [0, 2, 0, 5], "groups.0.assembly": DELETE},
+     ("groups[0].near: must be a point [x, y] (got [0, 2, 0, 5]); a decimal comma? TOML reads a comma in a list "
+      "as the next entry: write [0.2, 0.5]")),
+    ({"driver.length": "0,175"},
+     ("driver.length: must be a number, not a string (got '0,175'); a decimal comma? TOML numbers take a point "
+      "and no quotes: write 0.175")),
+    # Five entries for two are no slip of a comma: nothing is guessed.
+    ({"groups.0.lengths": [1, 2, 3, 4, 5]}, "groups[0].lengths: must have 2 entries, not 5 (got [1, 2, 3, 4, 5])"),
+], ids=["lengths", "point", "near", "string-with-a-comma", "too-many-to-be-commas"])
+def test_a_decimal_comma_in_a_list_or_a_string_is_told_to_take_a_point(changes, message) -> None:
+    """Inside brackets TOML reads a decimal comma as the next entry, so `[0,55, 0,325]` is four integers."""
+    stage, error = first_error(to_toml(variant(RATCHET, changes)))
+    assert (stage, str(error)) == ("load", message)
+
+
 def test_invalid_toml_names_the_file(tmp_path: Path) -> None:
     path = tmp_path / "broken.toml"
     path.write_text("[frame\n", encoding="utf-8")
