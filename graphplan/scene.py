@@ -22,7 +22,8 @@ from typing import TYPE_CHECKING, Any
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
-from .lookalikes import lookalike_hint
+from .lookalikes import described, difference, lookalike_hint
+from .lookalikes import plain as lookalike_plain
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
 from .rotor_balancing import BalancingSpec, read_balancing
 from .vibration import VibrationSpec, read_vibration
@@ -399,8 +400,10 @@ def _ascii_counterpart(character: str) -> tuple[str, str] | None:
 
 def _toml_hint(data: str, message: str) -> str:
     """A hint where the line TOML stumbled on has a number with a decimal comma (``pb = 35,5``, as a Russian
-    drawing writes it), which TOML reads as a number followed by something else, or a key with a letter a bare
-    TOML key cannot have (a Cyrillic р for the Latin p, or π)."""
+    drawing writes it), which TOML reads as a number followed by something else; a character a value cannot have
+    (a degree sign, the typographic minus graphplan's own notes print, a non-breaking space copied from Word or a
+    PDF, an input method's full-width forms); or a key with a letter a bare TOML key cannot have (a Cyrillic р
+    for the Latin p, or a Russian word for the English key)."""
     place = re.search(r"at line (\d+), column (\d+)", message)
     lines = data.splitlines()
     if place is None or not 0 < int(place[1]) <= len(lines):
@@ -410,15 +413,66 @@ def _toml_hint(data: str, message: str) -> str:
     if comma:
         return f"; a decimal comma? TOML numbers take a point: write {comma[1]}.{comma[2]}"
     letter = line[column - 1:column]
+    code = f"'{letter}' (U+{ord(letter):04X})" if letter else ""
+    if letter in _DEGREE_SIGNS:
+        written = (line[:column - 1] + line[column:]).split("#")[0].strip()
+        return f"; {code} is a degree sign: an angle is a number, in degrees, so drop it: write {written}"
+    if letter in _DASHES:
+        return (f"; {described(letter)} is a typographic sign (as the notes print a minus), which TOML does not "
+                "read: type the ASCII '-'")
+    if letter != " " and unicodedata.category(letter or "x") == "Zs" and letter not in _IDEOGRAPHIC:
+        return (f"; {code} is a non-breaking space (copied from Word or a PDF): type an ordinary space, or delete "
+                "it")
     plain = _ascii_counterpart(letter)
     if plain:
-        return f"; '{letter}' (U+{ord(letter):04X}) is {plain[1]}: TOML reads the ASCII '{plain[0]}' where one belongs"
+        return f"; {code} is {plain[1]}: TOML reads the ASCII '{plain[0]}' where one belongs"
     if letter and not letter.isascii():
-        looks = " (a Cyrillic letter for a Latin one that looks the same?)" if unicodedata.name(
-            letter, "").startswith("CYRILLIC") else ""
-        return (f"; a key's letters are Latin, digits, _ and -, not '{letter}' (U+{ord(letter):04X}){looks}: "
-                "type the Latin letter, or quote the key")
+        return _key_hint(line, column)
     return ""
+
+
+_DEGREE_SIGNS = "°º˚"
+_DASHES = "‐‑‒–—―−"
+
+
+def _key_hint(line: str, column: int) -> str:
+    """The hint for a bare key with a letter that is not ASCII: the Latin letter that looks the same (рb for pb),
+    the English key a Russian word stands for (группы for groups), the number a numbered table takes."""
+    start = column - 1
+    while start > 0 and _in_key(line[start - 1]):
+        start -= 1
+    end = column - 1
+    while end < len(line) and _in_key(line[end]):
+        end += 1
+    word = line[start:end]
+    looks = lookalike_plain(word)
+    if looks != word and looks.isascii():
+        return f"; {difference(word, looks)}"
+    if re.search(r"\[\s*(links|measured)\.\s*$", line[:start]):
+        return f"; {line[:start].strip(' [').rstrip('.')} are numbered: write [{line[:start].strip(' [')}3]"
+    english = next((key for stem, key in _RUSSIAN_KEYS.items() if word.lower().startswith(stem)), None)
+    if english is not None:
+        return f"; a key is the English word, not the Russian {word!r}: write {line[:start]}{english}{line[end:]}"
+    if line.lstrip().startswith("["):
+        return f"; a table's name is an English word, not {word!r}: the tables are {', '.join(_TABLES)}"
+    return (f"; a key is an English word, not {word!r}: quote a name of your own in other letters "
+            f'("{word}" = …)')
+
+
+def _in_key(character: str) -> bool:
+    return character.isalnum() or character in "_-"
+
+
+# The tables of a scene, and the Russian words a student writes for them and for their commonest keys (by the
+# stem, so that every case of the word is found).
+_TABLES = ("scene", "project", "frame", "driver", "groups", "points", "links", "loads", "friction", "positions",
+           "drawing", "measured", "output", "forces", "dynamics", "balancing", "vibration")
+_RUSSIAN_KEYS = {"сцен": "scene", "проект": "project", "стойк": "frame", "кривошип": "driver", "привод": "driver",
+                 "ведущ": "driver", "групп": "groups", "точк": "points", "звен": "links", "нагрузк": "loads",
+                 "трени": "friction", "положени": "positions", "чертеж": "drawing", "чертёж": "drawing",
+                 "замер": "measured", "измерен": "measured", "вывод": "output", "сил": "forces",
+                 "динамик": "dynamics", "маховик": "dynamics", "балансировк": "balancing", "вибраци": "vibration",
+                 "масс": "mass", "длин": "length", "угол": "angle", "угл": "angle"}
 
 
 def _read_scene(top: Table, source: str) -> Scene:

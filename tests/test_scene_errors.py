@@ -1002,8 +1002,21 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
 @pytest.mark.parametrize("text, hint", [
     ("[measured.5]\nvelocity = { pb = 38,82 }\n", "; a decimal comma? TOML numbers take a point: write 38.82"),
     ("[scene]\ngravity = 9,81\n", "; a decimal comma? TOML numbers take a point: write 9.81"),
-    ("[measured.5]\nvelocity = { рb = 38.82 }\n", ("; a key's letters are Latin, digits, _ and -, not 'р' (U+0440) "
-     "(a Cyrillic letter for a Latin one that looks the same?): type the Latin letter, or quote the key")),
+    ("[measured.5]\nvelocity = { рb = 38.82 }\n", ("; 'рb' has the Cyrillic 'р' (U+0440) where 'pb' has the Latin "
+     "'p' (U+0070): type the Latin letter")),
+    # A Russian word for the key: no letter of it looks Latin, the key is the English word.
+    ('[[группы]]\nkind = "RRR"\n', "; a key is the English word, not the Russian 'группы': write [[groups]]"),
+    ("[links.шатун]\nmass = 1.0\n", "; links are numbered: write [links.3]"),
+    ("[foo]\nшатун = 1\n", "; a key is an English word, not 'шатун': quote a name of your own in other letters "
+     '("шатун" = …)'),
+    # What a value cannot hold: a degree sign, the typographic minus graphplan's own notes print, a non-breaking
+    # space from Word or a PDF (no input method's full-width character).
+    ("[positions]\nstart = 30°   # the first\n", ("; '°' (U+00B0) is a degree sign: an angle is a number, in "
+     "degrees, so drop it: write start = 30")),
+    ("[driver]\nomega = −17.0\n", ("; a minus sign '−' (U+2212) is a typographic sign (as the notes print a minus), "
+     "which TOML does not read: type the ASCII '-'")),
+    ("[driver]\nlength\u00a0= 0.175\n", ("; '\u00a0' (U+00A0) is a non-breaking space (copied from Word or a PDF): type "
+     "an ordinary space, or delete it")),
     # A Chinese input method's full-width forms (a Chinese student's try): each was told to quote the key.
     ("[positions]\ncount ＝ 12\n", ("; '＝' (U+FF1D) is a full-width character (a Chinese or Japanese input "
      "method's): TOML reads the ASCII '=' where one belongs")),
@@ -1015,7 +1028,8 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
      "method's): TOML reads the ASCII '\"' where one belongs")),
     ("[scene]\ngravity = 9.81。\n", ("; '。' (U+3002) is a Chinese or Japanese input method's punctuation: TOML "
      "reads the ASCII '.' where one belongs")),
-], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key", "full-width-equals", "full-width-comma",
+], ids=["decimal-comma-in-a-table", "decimal-comma", "cyrillic-key", "russian-table-name", "russian-link-name",
+        "russian-key", "degree-sign", "typographic-minus", "non-breaking-space", "full-width-equals", "full-width-comma",
         "full-width-digits", "typographic-quote", "ideographic-full-stop"])
 def test_invalid_toml_with_a_students_slip_says_what_to_write(text: str, hint: str) -> None:
     stage, error = first_error(text)
