@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import codecs
 import datetime
+import difflib
 import math
 import re
 import tomllib
@@ -751,7 +752,7 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
     start_raw = table.raw("start", 0.0)
     start: str | float
     if isinstance(start_raw, str):
-        start = check_choice(start_raw, table.where("start"), ("extreme",))
+        start = _start_word(start_raw, table.where("start"))
     else:
         start = check_number(start_raw, table.where("start"))
     if not driver.cyclic and table.has("start"):
@@ -776,6 +777,26 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
     table.done()
     return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans),
                      velocity_plans=tuple(velocity_plans))
+
+
+def _start_word(text: str, where: str) -> str:
+    """``positions.start`` given as a string, which only "extreme" may be: a crank angle is a number, and one
+    quoted or written with its degree sign ("30°") is told so."""
+    if text == "extreme":
+        return text
+    angle = text.strip().rstrip("°º˚").strip().replace(",", ".").replace("−", "-")
+    try:
+        example = f"start = {float(angle):g}"
+    except ValueError:
+        example = "start = 30.0"
+    word = text.strip().lower()
+    near = word in _EXTREME_WORDS or difflib.get_close_matches(word, ["extreme"], n=1, cutoff=0.5)
+    hint = "; did you mean 'extreme'?" if near else ""
+    raise SceneError(where, f'must be "extreme" or a crank angle in degrees, a number: {example}', text, hint=hint)
+
+
+# The Russian for the extreme position a student writes for "extreme".
+_EXTREME_WORDS = ("крайнее", "крайнее положение", "крайн")
 
 
 def _position_numbers(table: Table, key: str, number_from: int, count: int, once_each: bool = False) -> list[int]:

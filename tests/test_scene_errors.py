@@ -701,9 +701,16 @@ CASES: list[Case] = [
     Case("positions-count-bool", {"positions.count": True}, "positions.count",
          "must be an integer, not a boolean (got True)"),
     Case("positions-start-unknown", {"positions.start": "middle"}, "positions.start",
-         "must be one of extreme (got 'middle')"),
+         "must be \"extreme\" or a crank angle in degrees, a number: start = 30.0 (got 'middle')"),
     Case("positions-start-near-miss", {"positions.start": "extremes"}, "positions.start",
-         "must be one of extreme; did you mean 'extreme'? (got 'extremes')"),
+         "must be \"extreme\" or a crank angle in degrees, a number: start = 30.0 (got 'extremes'); did you mean "
+         "'extreme'?"),
+    # An angle is a number: one quoted with its degree sign was told that only "extreme" may be given.
+    Case("positions-start-degrees-quoted", {"positions.start": "30°"}, "positions.start",
+         "must be \"extreme\" or a crank angle in degrees, a number: start = 30 (got '30°')"),
+    Case("positions-start-russian", {"positions.start": "крайнее"}, "positions.start",
+         "must be \"extreme\" or a crank angle in degrees, a number: start = 30.0 (got 'крайнее'); did you mean "
+         "'extreme'?"),
     Case("positions-start-bool", {"positions.start": True}, "positions.start",
          "must be a number, not a boolean (got True)"),
     Case("positions-start-nan", {"positions.start": NAN}, "positions.start", "must be a finite number (got nan)"),
