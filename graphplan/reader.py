@@ -16,10 +16,14 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from .errors import SceneError
+from .errors import SceneError, as_written
 from .units import RPM
 
 _REQUIRED = object()
+
+# The symbols a textbook writes a speed under, by the kind of key that takes it here: n is a Russian textbook's
+# speed in об/мин, ω (w where it cannot be typed) the angular velocity.
+_SPEED_SYMBOLS = {"n": "rpm", "об/мин": "rpm", "обмин": "rpm", "rev/min": "rpm", "ω": "omega", "w": "omega"}
 
 
 def _type_name(value: object) -> str:
@@ -198,7 +202,8 @@ class Table:
         """A required key that is missing is often there, misspelt: name the misspelling of one of ``keys``."""
         strangers = [k for k in self.data if k not in self._taken]
         for key in keys:
-            close = difflib.get_close_matches(key, strangers, n=1, cutoff=0.7)
+            close = [k for k in strangers if k.lower() == key.lower()] or difflib.get_close_matches(
+                key, strangers, n=1, cutoff=0.7)
             if close:
                 raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
 
@@ -232,11 +237,24 @@ class Table:
             self._taken.add(omega_key)  # still a valid key, for the did-you-mean of a misspelt one
             return self._speed_size(rpm_key, _REQUIRED, positive, non_negative, sense) * RPM
         self._taken.add(rpm_key)
-        if self.has(omega_key) or default is not _REQUIRED:
+        if self.has(omega_key):
             return self._speed_size(omega_key, default, positive, non_negative, sense)
+        self._speed_symbol(omega_key, rpm_key)
+        if default is not _REQUIRED:
+            return default
         self.misspelt(omega_key, rpm_key)
         raise SceneError(self.where(omega_key),
                          f"is required but missing: give {omega_key} (rad/s) or {rpm_key} (rev/min){sense}")
+
+    def _speed_symbol(self, omega_key: str, rpm_key: str) -> None:
+        """A speed given under a textbook's symbol for it, where neither key is: n (об/мин, as a Russian textbook
+        writes the speed in rev/min) or ω, named with the key it is given as here, before the speed is missed."""
+        for key in self.data:
+            meant = _SPEED_SYMBOLS.get(key.strip().lower()) if key not in self._taken else None
+            if meant is not None:
+                right, unit = (rpm_key, "rev/min") if meant == "rpm" else (omega_key, "rad/s")
+                raise SceneError(self.where(key), f"unknown key; a speed in {unit} is given as {right}: "
+                                 f"write {right} = {as_written(self.data[key])}")
 
     def _speed_size(self, key: str, default: Any, positive: bool, non_negative: bool, sense: str) -> Any:
         value = self.number(key, default, positive=positive)

@@ -1325,6 +1325,19 @@ def test_a_speed_in_rev_per_min_is_read_in_rad_per_s(table: str) -> None:
     assert Table({}, table).speed(None) is None
 
 
+@pytest.mark.parametrize(("key", "message"), [
+    ("n", "driver.n: unknown key; a speed in rev/min is given as rpm: write rpm = -150"),
+    ("RPM", "driver.RPM: unknown key; did you mean 'rpm'?"),
+    ("Omega", "driver.Omega: unknown key; did you mean 'omega'?"),
+    ("ω", "driver.ω: unknown key; a speed in rad/s is given as omega: write omega = -150"),
+], ids=["russian-n", "capitals", "capital-omega", "greek-omega"])
+def test_a_speed_under_another_key_is_named_before_the_speed_is_missed(key: str, message: str) -> None:
+    """n, the speed in об/мин of a Russian textbook, was answered 'driver.omega: is required but missing'."""
+    scene = variant(RATCHET, {"driver.omega": DELETE, f"driver.{key}": -150})
+    stage, error = first_error(to_toml(scene))
+    assert (stage, str(error)) == ("load", message)
+
+
 def test_frame_line_through_unknown_point() -> None:
     text = to_toml(variant(SLIDER_CRANK, {"frame.lines": {"rail": {"through": "Z", "angle": 0.0}},
                                           "groups.0.guide": "rail"}))
