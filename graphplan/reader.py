@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from .errors import SceneError, as_written
+from .lookalikes import plain
 from .units import RPM
 
 _REQUIRED = object()
@@ -158,6 +159,9 @@ def _suggestion(word: str, choices: Any) -> str:
     names = [str(c) for c in choices]
     lowered = word.strip().lower()
     alias = lowered if lowered in names else ALIASES.get(lowered)
+    # Capitals or small letters, and letters that look the same in another script (a Cyrillic А1 for A1).
+    folded = {plain(name).casefold(): name for name in names}
+    alias = alias if alias in names else folded.get(plain(word.strip()).casefold())
     if alias in names:
         return f"; did you mean {alias!r}?"
     close = difflib.get_close_matches(word, names, n=1, cutoff=0.5)

@@ -592,6 +592,7 @@ _COUNTS = {2: "two", 4: "four"}
 
 def _read_group(where: str, item: object) -> Group:
     table = Table(item, where)
+    _refuse_russian_kind(table)
     kind = table.choice("kind", tuple(GROUPS))
     cls = GROUPS[kind]
     pairs = table.items("links", length=cls.link_count)
@@ -606,6 +607,22 @@ def _read_group(where: str, item: object) -> Group:
     if len(set(joints)) != len(joints):
         raise SceneError(table.where("joints"), "must name different joints", list(joints))
     return cls.read(table, links, joints)
+
+
+# A Russian textbook letters its pairs В (вращательная, turning) and П (поступательная, sliding), and the ru note
+# titles a group "ВВВ (RRR)"; a Russian keyboard types Р for the R it sounds as.
+_RUSSIAN_PAIRS = str.maketrans("ВПР", "RPR")
+
+
+def _refuse_russian_kind(table: Table) -> None:
+    """A group's kind in the Russian notation (ВВП, or РРР as a Russian keyboard types RRR), told the Latin one."""
+    kind = table.data.get("kind")
+    if not isinstance(kind, str) or kind in GROUPS:
+        return
+    latin = kind.strip().upper().translate(_RUSSIAN_PAIRS)
+    if latin in GROUPS and not kind.strip().upper().isascii():
+        raise SceneError(table.where("kind"), f"must be one of {', '.join(GROUPS)}; did you mean {latin!r}?", kind,
+                         hint="; the Latin notation letters a turning pair (В) R and a sliding one (П) P")
 
 
 def _read_points(table: Table | None) -> tuple[PointSpec, ...]:

@@ -1338,6 +1338,20 @@ def test_a_speed_under_another_key_is_named_before_the_speed_is_missed(key: str,
     assert (stage, str(error)) == ("load", message)
 
 
+@pytest.mark.parametrize(("kind", "hint"), [
+    ("ВВВ", "; the Latin notation letters a turning pair (В) R and a sliding one (П) P"),
+    ("ВВП", "; the Latin notation letters a turning pair (В) R and a sliding one (П) P"),
+    ("РРР", "; the Latin notation letters a turning pair (В) R and a sliding one (П) P"),
+    ("rrr", ""),
+], ids=["russian-notation", "russian-slider", "cyrillic-er", "small-letters"])
+def test_a_group_kind_in_russian_notation_or_small_letters_is_told_the_latin_one(kind: str, hint: str) -> None:
+    """The ru note titles a group "ВВВ (RRR)", and a student copies it."""
+    meant = kind.upper().translate(str.maketrans("ВПР", "RPR"))
+    stage, error = first_error(to_toml(variant(RATCHET, {"groups.0.kind": kind})))
+    assert (stage, str(error)) == ("load", f"groups[0].kind: must be one of RRR, RRP, RPR, PRP, RPP, triad; did you "
+                                           f"mean {meant!r}? (got {kind!r}){hint}")
+
+
 def test_frame_line_through_unknown_point() -> None:
     text = to_toml(variant(SLIDER_CRANK, {"frame.lines": {"rail": {"through": "Z", "angle": 0.0}},
                                           "groups.0.guide": "rail"}))
