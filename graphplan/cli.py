@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import shlex
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -41,6 +42,17 @@ def _listed(text: str) -> list[str]:
     return items
 
 
+def _sheet(text: str) -> str:
+    """A sheet format as drawing.sheet takes it, with the same did-you-mean (a Cyrillic а1 for A1)."""
+    from .reader import check_choice
+    from .scene import SHEETS
+
+    try:
+        return check_choice(text, "--sheet", SHEETS)
+    except SceneError as error:
+        raise argparse.ArgumentTypeError(str(error).removeprefix("--sheet: ")) from None
+
+
 def _parser() -> argparse.ArgumentParser:
     from .deliverables import FORMATS, PIECES
     from .scene import LOCALES, SHEETS
@@ -58,7 +70,7 @@ def _parser() -> argparse.ArgumentParser:
                      help="output folder (default: output/<scene file name>)")
     run.add_argument("--locale", choices=LOCALES, default=None,
                      help="the language of the drawings and the text (default: the scene's [scene] locale)")
-    run.add_argument("--sheet", choices=SHEETS, default=None,
+    run.add_argument("--sheet", type=_sheet, default=None, metavar="{" + ",".join(SHEETS) + "}",
                      help="the sheet format of the course-project sheets, which it also draws (default: the scene's "
                           "[drawing] sheet)")
     run.add_argument("--only", type=_listed, default=None, metavar="PIECES",
@@ -217,7 +229,9 @@ def _new(kind: str, out: Path | None, locale: str = "en") -> int:
     target = out if out is not None else Path(f"{kind}.toml")
     write_file(target, starter(kind, locale), replace=False)
     print(f"wrote {target}")
-    print(f"next: graphplan check {target}, then graphplan run {target}")
+    # Quoted as a shell reads it, so that the command copied runs with a path that has a space.
+    shown = shlex.quote(str(target))
+    print(f"next: graphplan check {shown}, then graphplan run {shown}")
     return 0
 
 

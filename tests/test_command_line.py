@@ -129,6 +129,31 @@ def test_the_sheet_option_draws_the_sheets_on_that_format_even_for_a_scene_that_
         assert (root.get("width"), root.get("height")) == ("594mm", "420mm")
 
 
+@pytest.mark.parametrize(("sheet", "told"), [
+    ("а1", "must be one of A1, A2, A3, A4, none; did you mean 'A1'? (got 'а1')"),  # a Cyrillic а
+    ("a2", "must be one of A1, A2, A3, A4, none; did you mean 'A2'? (got 'a2')"),
+    ("B5", "must be one of A1, A2, A3, A4, none (got 'B5')"),
+], ids=["cyrillic-a", "small-letter", "no-such-format"])
+def test_a_sheet_option_mistyped_is_told_as_drawing_sheet_is(tmp_path, capsys, sheet, told):
+    """argparse's 'invalid choice' gave --sheet none of the did-you-mean drawing.sheet = "А1" gets."""
+    out = tmp_path / "out"
+    with pytest.raises(SystemExit) as stopped:
+        main(["run", FIXTURE, "--out", str(out), "--sheet", sheet])
+    assert stopped.value.code == 2
+    assert capsys.readouterr().err.splitlines()[-1] == f"graphplan run: error: argument --sheet: {told}"
+    assert not out.exists()
+
+
+def test_a_new_scene_in_a_folder_with_a_space_is_quoted_in_the_next_command(tmp_path, capsys, monkeypatch):
+    """The next command, copied into a shell, must name the scene whole."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "вариант 7").mkdir()
+    assert main(["new", "shaper", "--out", "вариант 7/строгальный.toml"]) == 0
+    printed = capsys.readouterr().out.splitlines()
+    assert printed[-1] == ("next: graphplan check 'вариант 7/строгальный.toml', "
+                           "then graphplan run 'вариант 7/строгальный.toml'")
+
+
 def test_a_sheet_option_too_small_for_the_scene_names_the_option(tmp_path, capsys):
     out = tmp_path / "out"
     assert main(["run", "fixtures/quick_return_slotted_lever.toml", "--out", str(out), "--sheet", "A3"]) == 2
