@@ -14,7 +14,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .errors import GraphplanError
+from .errors import GraphplanError, SceneError
 
 if TYPE_CHECKING:
     from .analysis import Analysis
