@@ -771,13 +771,13 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
                    "date": " (a TOML date, 2026-12-01, is written as the title block writes dates)"}
         # The title is the scene's; the rest is the project's.
         table_of = {"title": "scene"}
-        # A TOML date is written as the form writes dates, ESKD's dd.mm.yy in its 10 mm column: not the user's to
-        # shorten.
+        # A date the block writes as the form writes dates (a TOML date; in ESKD's 10 mm column dd.mm.yy, also of a
+        # dd.mm.yyyy typed as text) is not the user's to shorten.
+        details = details_of(scene.project, scene.title, form)
         told += [f"{table_of.get(name, 'project')}.{name}: the title block's box sets it at {size:.2g} mm to fit it "
                  f"in (printed letters are no smaller than {SMALLEST_LETTERING:g} mm); shorten it{shorter.get(name, '')}"
-                 for name, size in cramped(details_of(scene.project, scene.title, form), form,
-                                           labels(scene.locale)).items()
-                 if name != "date" or isinstance(scene.project.date, str)]
+                 for name, size in cramped(details, form, labels(scene.locale)).items()
+                 if name != "date" or details.date == scene.project.date]
     if "errors" in pieces or "note" in pieces:
         told += drafting_precision_warnings(scene)
     if "vibration" in pieces:

@@ -152,6 +152,29 @@ def test_a_project_name_too_long_for_its_box_is_warned_of_by_check_and_run(tmp_p
     assert "project." not in "".join(capsys.readouterr())
 
 
+@pytest.mark.parametrize(("typed", "written"), [("12.03.2025", "12.03.25"), ("1.3.2025", "01.03.25"),
+                                                ("31.02.2025", "31.02.2025")])
+def test_a_full_dotted_date_is_written_in_eskd_s_box_as_dd_mm_yy(typed, written, tmp_path, capsys):
+    """The Russian habit, date = "12.03.2025", was set at 1.1 mm in ESKD's 10 mm date column and warned of; ESKD
+    writes dates dd.mm.yy there, as it writes a TOML date. Text that names no day of the calendar is printed as
+    written, and warned of."""
+    from graphplan.cli import main
+    from graphplan.render.title_block import details_of
+
+    text = RATCHET + f'\n[project]\ndate = "{typed}"\n'
+    scene = graphplan.load_text(text)
+    assert scene.locale == "ru"
+    details = details_of(scene.project, scene.title, "eskd")
+    assert details.date == written
+    assert written in texts_of(course_sheets(analyse(scene), "A1")[0])
+    path = tmp_path / "dated.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", str(path)]) == 0
+    assert ("project.date:" in "".join(capsys.readouterr())) == (written == typed)
+    # The other standards' boxes hold the date as typed.
+    assert details_of(scene.project, scene.title, "iso").date == typed
+
+
 def test_a_title_too_long_for_its_box_is_warned_of_as_a_project_name_is(tmp_path, capsys):
     """A 300-character title was set in the title block at about 1 mm without a word, while a long [project] name
     was warned of. The size told is the size the sheets set the title's lines at."""

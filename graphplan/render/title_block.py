@@ -77,6 +77,9 @@ CORNER_LABEL_ROOM = LABEL_PADDING + 1.45 * CORNER_LABEL_SIZE
 # How each form writes a signature's date: ESKD's narrow date column as dd.mm.yy, GB/T 10609.1's 年、月、日
 # in that order, ISO 7200's date of issue as ISO 8601.
 DATE_FORMATS = {"eskd": "{date:%d.%m.%y}", "gb": "{date:%Y.%m.%d}", "iso": "{date:%Y-%m-%d}"}
+# A date typed as text the way Russian forms write it in full, dd.mm.yyyy: ESKD's 10 mm column sets it at about
+# 1 mm, so the block reads it as the date it is and writes it as it writes a TOML date.
+_FULL_DOTTED_DATE = re.compile(r"(\d{1,2})\.(\d{1,2})\.(\d{4})")
 # Line pitch over cap height.
 LINE_PITCH = 1.55
 
@@ -99,9 +102,23 @@ def details_of(project: object, title: str, form: str) -> Details:
     ``form`` writes dates."""
     fields = {name: getattr(project, name) for name in Details.__dataclass_fields__ if hasattr(project, name)}
     date = fields.get("date", "")
+    if isinstance(date, str) and form == "eskd":
+        date = _dotted_date(date) or date
     if isinstance(date, datetime.date):
         fields["date"] = DATE_FORMATS[form].format(date=date)
     return Details(**{**fields, "title": title})
+
+
+def _dotted_date(text: str) -> datetime.date | None:
+    """The day ``text`` names as dd.mm.yyyy, if it does (not a day of the calendar, such as 31.02.2025: None)."""
+    found = _FULL_DOTTED_DATE.fullmatch(text.strip())
+    if found is None:
+        return None
+    day, month, year = (int(part) for part in found.groups())
+    try:
+        return datetime.date(year, month, day)
+    except ValueError:
+        return None
 
 
 def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, float]:
