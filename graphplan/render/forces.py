@@ -74,6 +74,7 @@ from .primitives import (
     moved_layers,
     pin,
     slider_block,
+    svg_id,
 )
 from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
@@ -1201,15 +1202,6 @@ def _paper(length_scale: float) -> Callable[[complex], tuple[float, float]]:
 
 def _angle(value: complex) -> float:
     return math.atan2(value.imag, value.real)
-
-
-_SPELLED = {"τ": "tau", "′": "-1", "″": "-2", "·": "-", "(": "-", ")": "", ",": "-"}
-
-
-def svg_id(*parts: str) -> str:
-    """An svg id from the names of forces: ``polygon-II-3-4-R23tau``."""
-    return "-".join("".join(_SPELLED.get(c, c if re.fullmatch(r"[A-Za-z0-9_.\-]", c) else "_") for c in part)
-                    for part in parts)
 
 
 def group_id(label: str) -> str:

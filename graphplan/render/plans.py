@@ -15,7 +15,6 @@ it constructs its plans; it computes no mechanics.
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -52,6 +51,7 @@ from .primitives import (
     curved_arrow,
     dot_marker,
     moved_layers,
+    svg_id,
 )
 from .primitives import text_span as _width
 from .primitives import to_xy as _xy
@@ -310,7 +310,7 @@ def _senses(sheet: PlanSheet, outlines: dict[int, list[str]], where: Callable[[s
         # From the rim of the pin, so that the pin does not hide the start.
         start = paper(where(name) + 1.6 * sheet.length_scale * sense)
         end = (start[0] + SENSE_ARROW_MM * sense.real, start[1] + SENSE_ARROW_MM * sense.imag)
-        items.append(Arrow(start, end, Stroke(0.45, _VELOCITY_COLOUR), 3.0, _key("mechanism", "v", name)))
+        items.append(Arrow(start, end, Stroke(0.45, _VELOCITY_COLOUR), 3.0, svg_id("mechanism", "v", name)))
     points = MultiPoint([paper(where(name)) for name in sheet.motion.points])
     anchors: list[Anchor] = []
     for link in sheet.mechanism.moving_links:
@@ -382,7 +382,7 @@ def _vectors(plan: Plan, kind: str) -> list[Primitive]:
     for start, end, _ in _laid(plan, kind):
         if abs(plan.mm(end) - plan.mm(start)) >= ZERO_MM:
             stroke = _ABSOLUTE if start == "p" else _RELATIVE
-            arrows.append(Arrow(_xy(plan.mm(start)), _xy(plan.mm(end)), stroke, key=_key(kind, start, end)))
+            arrows.append(Arrow(_xy(plan.mm(start)), _xy(plan.mm(end)), stroke, key=svg_id(kind, start, end)))
     return arrows
 
 
@@ -491,11 +491,6 @@ def caption_texts(lines: Sequence[str], at: tuple[float, float]) -> tuple[Text, 
                       weight="bold" if k == 0 else "normal") for k, line in enumerate(lines))
 
 
-
-
-def _key(*parts: str) -> str:
-    """An svg id from plan letters: ``velocity-p-b``."""
-    return "-".join(re.sub(r"[^A-Za-z0-9_]", "_", part) for part in parts)
 
 
 __all__ = ["ZERO_MM", "PlanSheet", "caption_texts", "layout", "plan_layers", "too_short"]

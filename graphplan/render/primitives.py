@@ -357,6 +357,38 @@ def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
     return [Layer(layer.name, tuple(moved(item, dx, dy) for item in layer.items)) for layer in layers]
 
 
+# Characters of a name that an id spells out: the textbook's τ and primes, and the brackets and signs of a moment's
+# name, as the force drawings' ids have always written them.
+_SPELLED_IN_IDS = {"τ": "tau", "′": "-1", "″": "-2", "·": "-", "(": "-", ")": "", ",": "-"}
+# Beyond ASCII, the code points XML 1.0 (fifth edition) allows in a name (NameStartChar and NameChar): an id keeps
+# a letter of these as it is.
+_XML_NAME_RANGES = ((0xC0, 0xD6), (0xD8, 0xF6), (0xF8, 0x37D), (0x37F, 0x1FFF), (0x200C, 0x200D), (0x203F, 0x2040),
+                    (0x2070, 0x218F), (0x2C00, 0x2FEF), (0x3001, 0xD7FF), (0xF900, 0xFDCF), (0xFDF0, 0xFFFD),
+                    (0x10000, 0xEFFFF))
+
+
+def svg_id(*parts: str) -> str:
+    """An SVG id from the names a drawing shows (points, plan letters, forces), joined by ``-``:
+    ``velocity-p-b``, ``polygon-II-3-4-R23tau``.
+
+    A letter or digit of any script stays as it is, since XML ids allow
+    them: the Cyrillic А and В of two points' names give two ids, where
+    both once came out ``_``.  τ and the primes are spelled out; any other
+    character is written as its code point (``_2212_`` for a minus), so
+    that two names never give one id.
+    """
+    return "-".join("".join(_id_characters(c) for c in part) for part in parts)
+
+
+def _id_characters(c: str) -> str:
+    if c in _SPELLED_IN_IDS:
+        return _SPELLED_IN_IDS[c]
+    if re.fullmatch(r"[A-Za-z0-9_.\-]", c) or c.isalnum() and any(low <= ord(c) <= high
+                                                                for low, high in _XML_NAME_RANGES):
+        return c
+    return f"_{ord(c):x}_"
+
+
 def prefixed(layers: Sequence[Layer], prefix: str) -> list[Layer]:
     """Layers and arrow keys named ``prefix-...``: the ids of two drawings in one SVG never clash."""
     def named(value: str) -> str:
