@@ -30,6 +30,7 @@ from .forces import Load
 from .friction import friction_circle_radius, vee_groove_coefficient
 from .kinematics import Scalar, Vector
 from .loads import at_rest, sense_of_motion
+from .lookalikes import lookalike_hint
 from .mechanism import Mechanism
 from .motion import Motion
 from .scene import FrictionSpec
@@ -83,7 +84,8 @@ def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[Fri
         matching = [pair for pair in at_joint if spec.links is None or set(spec.links) == {pair.source, pair.target}]
         if not at_joint:
             known = ", ".join(f"{p.joint} ({p.source}–{p.target})" for p in pairs)
-            raise SceneError(f"{spec.where}.joint", f"names no pair of the mechanism; its pairs are {known}", spec.joint)
+            raise SceneError(f"{spec.where}.joint", f"names no pair of the mechanism; its pairs are {known}", spec.joint,
+                             hint=lookalike_hint(spec.joint, [pair.joint for pair in pairs]))
         if not matching:
             joined = " and ".join(f"{p.source}–{p.target}" for p in at_joint)
             raise SceneError(f"{spec.where}.links", f"joint {spec.joint} joins links {joined}, not these",

@@ -17,7 +17,7 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from .errors import SceneError, as_written
-from .lookalikes import plain
+from .lookalikes import lookalike_hint, plain
 from .units import RPM
 
 _REQUIRED = object()
@@ -139,7 +139,9 @@ def check_xy(value: Any, where: str) -> tuple[float, float]:
 def check_choice(value: Any, where: str, choices: tuple[str, ...]) -> str:
     text = check_str(value, where)
     if text not in choices:
-        raise SceneError(where, f"must be one of {', '.join(choices)}{_suggestion(text, choices)}", value)
+        # A choice in look-alike letters (a Cyrillic о in "forward") reads on screen as the one it is told of.
+        raise SceneError(where, f"must be one of {', '.join(choices)}{_suggestion(text, choices)}", value,
+                         hint=lookalike_hint(text, choices))
     return text
 
 

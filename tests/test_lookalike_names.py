@@ -10,6 +10,7 @@ from test_scene_errors import RATCHET, SLIDER_CRANK, first_error, to_toml, varia
 import graphplan
 from graphplan import SceneError
 from graphplan import scene as scene_module
+from graphplan.analysis import analyse
 
 CYRILLIC_O = "'О' has the Cyrillic 'О' (U+041E) where 'O' has the Latin 'O' (U+004F): type the Latin letter"
 CYRILLIC_C = "'С' has the Cyrillic 'С' (U+0421) where 'C' has the Latin 'C' (U+0043): type the Latin letter"
@@ -76,3 +77,20 @@ def test_a_scene_named_in_cyrillic_throughout_is_no_lookalike_of_itself() -> Non
         text = text.replace(f'"{latin}"', f'"{cyrillic}"')
     mechanism = graphplan.build(scene_module.loads(text))
     assert set(mechanism.point_names()) >= {"О", "С", "А", "В"}
+
+
+def test_a_friction_joint_in_lookalike_letters_is_told_which_letter_is_which() -> None:
+    """[[friction]] joint = "О" listed the pairs O (1–2), … beside the 'О' it did not find."""
+    scene = scene_module.loads(to_toml(variant(RATCHET, {"friction": [{"joint": "О", "f": 0.1, "radius": 0.02}]})))
+    with pytest.raises(SceneError) as raised:
+        analyse(scene)
+    assert raised.value.where == "friction[0].joint"
+    assert str(raised.value).endswith(f"(got 'О'); {CYRILLIC_O}")
+
+
+def test_a_working_sense_in_lookalike_letters_is_told_which_letter_is_which() -> None:
+    """sense = "fоrward" with a Cyrillic о was told "did you mean 'forward'?" of the word it seems to be."""
+    stage, error = first_error(to_toml(variant(SLIDER_CRANK, {"positions.working.sense": "fоrward"})))
+    assert (stage, str(error)) == ("load", (
+        "positions.working.sense: must be one of ccw, cw, forward, backward; did you mean 'forward'? (got 'fоrward'); "
+        "'fоrward' has the Cyrillic 'о' (U+043E) where 'forward' has the Latin 'o' (U+006F): type the Latin letter"))
