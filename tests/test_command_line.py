@@ -156,10 +156,11 @@ def test_a_new_scene_in_a_folder_with_a_space_is_quoted_in_the_next_command(tmp_
 
 def test_a_sheet_option_too_small_for_the_scene_names_the_option(tmp_path, capsys):
     out = tmp_path / "out"
-    assert main(["run", "fixtures/quick_return_slotted_lever.toml", "--out", str(out), "--sheet", "A3"]) == 2
+    # 219 × 366 mm at the scene's μl: taller than an A3 stood upright leaves clear of its title block.
+    assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out), "--sheet", "A3"]) == 2
     error = capsys.readouterr().err
     assert error.startswith("graphplan: error: --sheet (in place of drawing.sheet): the plan of positions is ")
-    assert "no A3 sheet holds them" in error
+    assert "no A3 sheet holds it" in error
     assert not out.exists()
 
 

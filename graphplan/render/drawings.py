@@ -200,9 +200,10 @@ def _drawing_size(sheet: plans.PlanSheet, drawing: str) -> tuple[float, float]:
     return float(x1 - x0), float(y1 - y0)
 
 
-def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
+def fitting_length_scale(analysis: Analysis, sheet: str, least: float, either_way: bool = False) -> float:
     """The smallest standard μl ≥ ``least`` at which the drawings at μl fit on an empty ``sheet`` each:
-    the plan of positions and the mechanism of every plan sheet.
+    the plan of positions and the mechanism of every plan sheet; on a sheet as it is laid out, or ``either_way``
+    it may stand (the μl a refusal offers).
 
     (The force sheets' drawings are drawn at a larger scale where they do
     not fit.)  Raises :class:`SceneError` when no μl does: the words and
@@ -211,8 +212,9 @@ def fitting_length_scale(analysis: Analysis, sheet: str, least: float) -> float:
     form = form_of(analysis.scene.locale)
 
     def fits(scale: float) -> bool:
-        return (holds(sheet, form, *positions_size(analysis, scale))
-                and all(holds(sheet, form, *mechanism_size(analysis, position, scale)) for position in analysis.plans))
+        return (holds(sheet, form, *positions_size(analysis, scale), either_way)
+                and all(holds(sheet, form, *mechanism_size(analysis, position, scale), either_way)
+                        for position in analysis.plans))
 
     scale = standard_scale(least)
     for _ in range(_LARGER_SCALES_TRIED):

@@ -21,6 +21,8 @@ FORMATS: dict[str, tuple[float, float]] = {"A1": (841.0, 594.0), "A2": (594.0, 4
                                            "A4": (297.0, 210.0)}
 SHEET_NAMES = (*FORMATS, "none")
 BIGGER = {"A4": "A3", "A3": "A2", "A2": "A1"}
+# The formats a sheet of the set may stand upright on.
+UPRIGHT_FORMATS = ("A4", "A3")
 # Space between a drawing and the frame or the title block (mm).
 PADDING_MM = 8.0
 
@@ -85,15 +87,30 @@ def page_geometry(sheet: str, form: str, portrait: bool = False) -> PageGeometry
     corner = None
     if form in CORNER_SIZES:
         corner_width, corner_height = CORNER_SIZES[form]
+        if portrait and sheet != "A4":
+            # GOST 2.104: a sheet bigger than A4 stood upright has its title block along its short side, and
+            # графа 26 down the frame's left side instead of along its top.
+            corner_width, corner_height = corner_height, corner_width
         corner = (frame[0], frame[3] - corner_height, frame[0] + corner_width, frame[3])
     return PageGeometry((width, height), frame, block, area, corner)
 
 
 def orientations(sheet: str) -> tuple[bool, ...]:
-    """Whether the format may stand upright: only A4 is turned, as its drawings need (``portrait`` values)."""
-    return (False, True) if sheet == "A4" else (False,)
+    """The ways the format may stand (``portrait`` values), across first: GOST 2.301, GB/T 14689 and ISO 5457
+    allow every format either way round; an A4 is turned as its drawings need, an A3 stood upright only for a
+    drawing that no A3 across holds (:func:`graphplan.render.packing.pack`)."""
+    return (False, True) if sheet in UPRIGHT_FORMATS else (False,)
 
 
-def holds(sheet: str, form: str, width: float, height: float) -> bool:
-    """Whether a drawing of ``width`` × ``height`` mm fits on an empty ``sheet`` in either allowed orientation."""
-    return any(page_geometry(sheet, form, portrait).holds(width, height) for portrait in orientations(sheet))
+def usual_orientations(sheet: str) -> tuple[bool, ...]:
+    """The ways the drawings are laid out for (their size, a force sheet's parts, the diagrams' length): an A4 either
+    way, a bigger sheet across; it stands upright only for a drawing at the scene's scale that it holds no other
+    way, so that a set that fits across is laid out as it always was."""
+    return orientations(sheet) if sheet == "A4" else (False,)
+
+
+def holds(sheet: str, form: str, width: float, height: float, either_way: bool = False) -> bool:
+    """Whether a drawing of ``width`` × ``height`` mm fits on an empty ``sheet`` the ways it is laid out for, or
+    ``either_way`` it may stand (whether the scene's scale is refused)."""
+    turns = orientations(sheet) if either_way else usual_orientations(sheet)
+    return any(page_geometry(sheet, form, portrait).holds(width, height) for portrait in turns)

@@ -27,6 +27,7 @@ sheets of its own whose title block names it.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import re
 from collections.abc import Iterator, Sequence
@@ -256,10 +257,16 @@ def pack(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
     An A4 stands upright or across, all sheets one way when that needs no
     more of them, else each sheet the way its drawings fit (a tall plan of
     positions upright, wide diagrams across), as a set of A4 drawings may.
+    A bigger sheet stands across, as a course project's do, and a sheet of
+    it upright only where it opens with a drawing too tall for it across.
     """
     check_sheet(sheet)
     turns = orientations(sheet)
     if len(turns) == 1:
+        return _pack_on(panels, sheet, form, turns)
+    if sheet != "A4":
+        with contextlib.suppress(SceneError):  # a drawing too tall across: its sheet stands upright
+            return _pack_on(panels, sheet, form, (False,))
         return _pack_on(panels, sheet, form, turns)
     # ESKD puts an A4 upright; the other standards turn it as the drawing needs.
     upright_first = form == "eskd"

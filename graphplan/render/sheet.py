@@ -62,6 +62,7 @@ from .formats import (
     holds,
     orientations,
     page_geometry,
+    usual_orientations,
 )
 from .numerals import scale_factor
 from .packing import Page, Panel, bigger_holding, height, pack, rooms, smallest_drawings, width
@@ -549,7 +550,7 @@ def _shortened(drawn: Sequence[Sequence[Layer]], sheet: str, form: str, interval
     sizes = [_size(part) for part in drawn]
     around_width = max(width for width, _ in sizes) - axis
     around_height = max(height for _, height in sizes) - field
-    rooms = [room for portrait in orientations(sheet) for room in page_geometry(sheet, form, portrait).rooms()]
+    rooms = [room for portrait in usual_orientations(sheet) for room in page_geometry(sheet, form, portrait).rooms()]
     room = max(rooms, key=lambda r: min((r[0] - around_width) / axis, (r[1] - around_height) / field))
     fitting_axis = min(axis, math.floor((room[0] - around_width) / intervals) * intervals)
     fitting_field = min(field, math.floor(room[1] - around_height))
@@ -802,13 +803,13 @@ def _length_scale_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[
     form = form_of(analysis.scene.locale)
     at_scale = [kinematics[0]] + [part for panel in kinematics[1:] for part in panel.parts
                                   if part.name.endswith("-mechanism")]
-    too_big = next((panel for panel in at_scale if not holds(sheet, form, width(panel), height(panel))), None)
+    too_big = next((panel for panel in at_scale if not holds(sheet, form, width(panel), height(panel), True)), None)
     if too_big is None:
         return None
     scale = length_scale(analysis)
     what = "the plan of positions" if too_big is kinematics[0] else f"the drawing {too_big.name!r}"
     return _Overflow(f"{what} is {width(too_big):.0f} × {height(too_big):.0f} mm at μl = {format_scale(scale)} m/mm",
-                     (f"drawing.length_scale = {format_scale(fitting_length_scale(analysis, sheet, scale))} (or more)",),
+                     (f"drawing.length_scale = {format_scale(fitting_length_scale(analysis, sheet, scale, True))} (or more)",),
                      (too_big,))
 
 
@@ -820,7 +821,7 @@ def _plans_overflow(analysis: Analysis, sheet: str, kinematics: Sequence[Panel])
     too_big = [(position, kind, part) for position in analysis.plans
                for part in getattr(plan_panels.get(f"plan-{position.number}"), "parts", ())
                for kind in [part.name.rsplit("-", 1)[-1]]
-               if kind in ("velocity", "acceleration") and not holds(sheet, form, width(part), height(part))]
+               if kind in ("velocity", "acceleration") and not holds(sheet, form, width(part), height(part), True)]
     if not too_big:
         return None
     settings, fixes = [], []
@@ -847,7 +848,7 @@ def _polygons_overflow(analysis: Analysis, sheet: str) -> _Overflow | None:
 
     def unheld(scale: float) -> list[Panel]:
         return [piece for piece in _polygon_pieces(analysis, scale)
-                if not holds(sheet, form, width(piece), height(piece))]
+                if not holds(sheet, form, width(piece), height(piece), True)]
 
     too_big = unheld(given)
     if not too_big:
@@ -891,7 +892,7 @@ def _plan_setting(analysis: Analysis, sheet: str, kind: str,
     pole, given_scale = getattr(drawing, f"{kind}_pole"), getattr(drawing, f"{kind}_scale")
 
     def fits(position: PlanPosition, scale: float) -> bool:
-        return holds(sheet, form, *plan_size(analysis, position, kind, scale))
+        return holds(sheet, form, *plan_size(analysis, position, kind, scale), True)
 
     if given_scale is not None:
         scale = standard_scale(given_scale)
@@ -972,7 +973,7 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
         if page.corner is not None:
-            layers.append(Layer("sheet-designation", tuple(corner_box(form, fields.designation, page.frame))))
+            layers.append(Layer("sheet-designation", tuple(corner_box(form, fields.designation, page.corner))))
         sheets.append(Sheet(sheet, page.size, layers, page.frame, page.block, placed, first + k, count))
     return sheets
 

@@ -45,8 +45,9 @@ PREFIX = "tb_"
 FORMS = {"ru": "eskd", "zh": "gb", "en": "iso"}
 # Width and height of each form (mm).
 SIZES = {"eskd": (185.0, 55.0), "gb": (180.0, 56.0), "iso": (180.0, 40.0)}
-# The box a form adds in the frame's top left corner (mm): GOST 2.104's графа 26, the designation turned through
-# 180°, 70 × 14 mm, on an A4 and on a larger sheet with the title block along its long side (as every sheet here).
+# The box a form adds in the frame's top left corner (mm): GOST 2.104's графа 26, 70 × 14 mm along the top with the
+# designation turned through 180° on an A4 and on a larger sheet with the title block along its long side; down
+# the left side, turned through 90°, on a larger sheet stood upright (:func:`graphplan.render.formats.page_geometry`).
 CORNER_SIZES = {"eskd": (70.0, 14.0)}
 
 # Standard scales as ``real`` per ``paper`` (mm of the object per mm of the drawing): reductions above
@@ -234,20 +235,23 @@ def title_block(form: str, fields: TitleBlockFields, text: Mapping[str, str],
     return block.items
 
 
-def corner_box(form: str, designation: str, frame: tuple[float, float, float, float]) -> list[Primitive]:
-    """The box ``form`` adds in the top left corner of ``frame`` (x0, y0, x1, y1; none but ESKD's): графа 26, the
-    designation as the title block writes it, turned through 180° so that it reads from the sheet's top edge
-    when the set is filed."""
+def corner_box(form: str, designation: str, corner: tuple[float, float, float, float]) -> list[Primitive]:
+    """The box ``form`` adds at ``corner`` (x0, y0, x1, y1, in the frame's top left corner; none but ESKD's):
+    графа 26, the designation as the title block writes it, turned through 180° in a box along the frame's top
+    and through 90° in one down its left side, so that it reads from the sheet's edge when the set is filed."""
     if form not in CORNER_SIZES:
         return []
-    width, height = CORNER_SIZES[form]
-    x0, y1 = frame[0], frame[3]
-    items: list[Primitive] = [Polyline(((x0, y1 - height), (x0 + width, y1 - height), (x0 + width, y1)), MAIN)]
-    # Fitted as the title block's designation (5 mm in its 15 mm row), then turned about the box's middle.
-    middle = (x0 + width / 2, y1 - height / 2)
-    for text in fitted(designation, (x0, y1 - height, x0 + width, y1), 5.0):
-        turned = (2 * middle[0] - text.at[0], 2 * middle[1] - text.at[1])
-        items.append(replace(text, at=turned, rotation=180.0))
+    x0, y0, x1, y1 = corner
+    items: list[Primitive] = [Polyline(((x0, y0), (x1, y0), (x1, y1)), MAIN)]
+    # Fitted as the title block's designation (5 mm in its 15 mm row) in the box laid along it, then turned
+    # about the box's middle.
+    middle = complex((x0 + x1) / 2, (y0 + y1) / 2)
+    length, depth = max(x1 - x0, y1 - y0), min(x1 - x0, y1 - y0)
+    rotation, turn = (180.0, -1 + 0j) if x1 - x0 >= y1 - y0 else (90.0, 1j)
+    along = (middle.real - length / 2, middle.imag - depth / 2, middle.real + length / 2, middle.imag + depth / 2)
+    for text in fitted(designation, along, 5.0):
+        turned = middle + (complex(*text.at) - middle) * turn
+        items.append(replace(text, at=(turned.real, turned.imag), rotation=rotation))
     return items
 
 
