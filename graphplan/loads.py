@@ -27,7 +27,7 @@ from .mechanism import Mechanism
 from .motion import Motion, solve
 from .plans import Plan
 from .positions import PositionSet, in_working_stroke, stroke_extremes
-from .scene import Working
+from .scene import LoadSpec, Working
 
 # A speed this small against the cycle's largest is rest: a resisting load then opposes
 # the motion about to begin (the sense of the acceleration).
@@ -132,7 +132,7 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
         return acting
     # Each stroke once: several loads of one stroke (a shaper's cutting force and its window's edges) share it.
     in_stroke = functools.cache(lambda stroke: in_working_stroke(motion, stroke))
-    progress = functools.cache(lambda stroke: _working_progress(mechanism, positions, motion, stroke))
+    progress = functools.cache(lambda stroke: stroke_share(mechanism, positions, motion, stroke))
     for row, load in enumerate(scene.loads):
         if load.during == "always":
             continue
@@ -194,22 +194,22 @@ def with_switches(sweep: np.ndarray, state: Callable[[np.ndarray], np.ndarray]) 
     return found if sweep[-1] > sweep[0] else found[::-1]
 
 
-def _working_progress(mechanism: Mechanism, positions: PositionSet, motion: Motion,
-                      stroke: Working | None = None) -> np.ndarray:
+def stroke_share(mechanism: Mechanism, positions: PositionSet, motion: Motion,
+                 stroke: Working | None = None) -> np.ndarray:
     """The share of the working stroke (of ``stroke``, a load's own, or the working link's) travelled at each
     position (0 at its start)."""
-    start, end = _stroke_ends(mechanism, positions, stroke)
+    start, end = stroke_ends(mechanism, positions, stroke)
     here = _output_coordinate(mechanism, motion, stroke, about=start)
     return (here - start) / (end - start)
 
 
 def stroke_travel(mechanism: Mechanism, positions: PositionSet, stroke: Working | None = None) -> float:
     """How far the working link (or ``stroke``'s) travels in its working stroke: m along a guide, rad turning."""
-    start, end = _stroke_ends(mechanism, positions, stroke)
+    start, end = stroke_ends(mechanism, positions, stroke)
     return abs(end - start)
 
 
-def _stroke_ends(mechanism: Mechanism, positions: PositionSet, stroke: Working | None) -> tuple[float, float]:
+def stroke_ends(mechanism: Mechanism, positions: PositionSet, stroke: Working | None) -> tuple[float, float]:
     """The working link's (or ``stroke``'s) coordinate where its working stroke starts and where it ends."""
     extremes = stroke_extremes(positions, stroke)
     assert extremes is not None, "mechanism.build requires a crank driver for a window of the stroke"
@@ -285,16 +285,25 @@ def _displaced(number: int, centre: str, force: Vector, moment: Scalar) -> list[
     return loads
 
 
-def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> list[Load]:
-    scene = mechanism.scene
+def external_names(loads: tuple[LoadSpec, ...]) -> tuple[str, ...]:
+    """The name of each of the scene's loads as the force analysis gives it: F4, M3, and F4.1, F4.2 where a
+    link has several (the force sheets, the note and the load diagrams name them alike)."""
     per_link: dict[int, int] = {}
-    for load in scene.loads:
+    for load in loads:
         per_link[load.link] = per_link.get(load.link, 0) + 1
     seen: dict[int, int] = {}
-    found = []
-    for row, load in enumerate(scene.loads):
+    names = []
+    for load in loads:
         seen[load.link] = seen.get(load.link, 0) + 1
         suffix = f".{seen[load.link]}" if per_link[load.link] > 1 else ""
+        names.append(f"{'M' if load.kind == 'moment' else 'F'}{load.link}{suffix}")
+    return tuple(names)
+
+
+def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> list[Load]:
+    scene = mechanism.scene
+    found = []
+    for row, (load, name) in enumerate(zip(scene.loads, external_names(scene.loads), strict=True)):
         on = 1.0 if acting is None else acting[row].astype(float)
         if np.ndim(on) and len(on) == 1:
             on = float(on[0])
@@ -303,13 +312,13 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             on = np.abs(on)
         if load.kind == "moment":
             value = -abs(load.value) * resisted_sense(load, state) if load.resisting else load.value
-            found.append(Load(f"M{load.link}{suffix}", load.link, None, 0j, on * value))
+            found.append(Load(name, load.link, None, 0j, on * value))
         else:
             direction = unit(np.radians(load.angle_deg))
             force = load.value * direction
             if load.resisting:
                 force = -abs(load.value) * direction * resisted_sense(load, state)
-            found.append(Load(f"F{load.link}{suffix}", load.link, load.point, on * force, 0.0))
+            found.append(Load(name, load.link, load.point, on * force, 0.0))
     return found
 
 
@@ -359,6 +368,6 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
     return total
 
 
-__all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "has_loads",
-           "link_loads", "load_at", "motion_state", "plan_state", "power", "resisted_sense", "sense_of_motion",
-           "with_switches"]
+__all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "external_names",
+           "has_loads", "link_loads", "load_at", "motion_state", "plan_state", "power", "resisted_sense",
+           "sense_of_motion", "stroke_ends", "stroke_share", "stroke_travel", "with_switches"]
