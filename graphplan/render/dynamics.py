@@ -210,13 +210,13 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     values = np.concatenate([c[0] for c in curves])
     base = 0.0
     if floor:  # from a round value under the smallest, so that the abscissa is a tick
-        step = _nice_step(float(np.ptp(values)) / 4)
+        step = nice_step(float(np.ptp(values)) / 4)
         base = math.floor(float(np.min(values)) / step + 1e-9) * step
     top_mm = (max(float(np.max(values)), base) - base) / scale
     bottom_mm = min(float(np.min(values)) - base, 0.0) / scale
     width = float(x[-1])
     items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm, words)
-    items += _ordinate(0.0, bottom_mm, top_mm, scale, base, axis)
+    items += ordinate_axis(0.0, bottom_mm, top_mm, scale, base, axis)
     for data, stroke, _ in curves:
         y = (np.asarray(data) - base) / scale
         items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
@@ -244,7 +244,7 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
         name = words["dyn_angle_axis"]
     else:
         travel = float(model.coordinate[-1])
-        step = _nice_step(travel / 5)
+        step = nice_step(travel / 5)
         ticks = [(v / scales.angle, short(v)) for v in np.arange(0.0, travel * (1 + 1e-9), step)]
         name = words["dyn_travel_axis"]
     for at, label in ticks:
@@ -256,12 +256,12 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
     return items
 
 
-def _ordinate(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str) -> list[Primitive]:
+def ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str) -> list[Primitive]:
     """A vertical axis at ``x`` from the lowest value to past the highest, ticked at round values."""
     items: list[Primitive] = [Polyline(((x, bottom_mm), (x, 0.0)), THIN),
                               Arrow((x, 0.0), (x, top_mm + AXIS_RUN_MM), THIN, head=2.5)]
     low, high = base + bottom_mm * scale, base + top_mm * scale
-    step = _nice_step((high - low) / 4)
+    step = nice_step((high - low) / 4)
     first = math.ceil(low / step - 1e-9) * step
     for value in np.arange(first, high + step * 1e-9, step):
         at = (value - base) / scale
@@ -308,7 +308,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
         ab = (flywheel.upper.intercept - flywheel.lower.intercept) / scales.energy
         items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), words["dyn_segment"].format(value=f"{ab:.1f}"),
                           LABEL, "middle", _TANGENT.colour))
-    items += _ordinate(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
+    items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
     # Je graduated as on Je(φ) under it; lettered on the side of the axis the curve comes less near.
     near = LABEL + TICK_MM + 2.0
@@ -370,7 +370,7 @@ def _travel(model: EquivalentModel, driver: float) -> float:
 def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float]]:
     """(Je, its abscissa in mm) of the ticks of Je: round steps, about four to the largest Je."""
     largest = float(np.max(model.inertia))
-    step = _nice_step(largest / 4)
+    step = nice_step(largest / 4)
     return [(float(value), float(value) / scales.inertia) for value in np.arange(step, largest + step * 1e-9, step)]
 
 
@@ -380,7 +380,7 @@ def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:
         return [(math.radians(degrees), f"{degrees}") for degrees in range(0, 361, 30)]
     span = math.degrees(float(model.coordinate[-1]))
     return [(math.radians(degrees), short(degrees))
-            for degrees in np.arange(0.0, span * (1 + 1e-9), _nice_step(span / 6))]
+            for degrees in np.arange(0.0, span * (1 + 1e-9), nice_step(span / 6))]
 
 
 def _angle_scale(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> str:
@@ -420,7 +420,7 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
     return items
 
 
-def _nice_step(rough: float) -> float:
+def nice_step(rough: float) -> float:
     """A round step (1, 2, 2.5, 5 × 10ⁿ) at least ``rough``."""
     if not rough > 0:
         return 1.0
@@ -431,4 +431,4 @@ def _nice_step(rough: float) -> float:
     return 10.0 * power
 
 
-__all__ = ["Scales", "dynamics_svg", "larger_layouts", "layout", "scales_for"]
+__all__ = ["Scales", "dynamics_svg", "larger_layouts", "layout", "nice_step", "ordinate_axis", "scales_for"]

@@ -1,0 +1,234 @@
+"""The load diagrams: each load given over a stroke drawn against its link's travel, as the force sheet reads it.
+
+As a course project draws the useful-resistance diagram of a press or a
+shaper, or the indicator diagram of a compressor, on its kinetostatics
+sheet: the value F (or M) at μF over the travel s (or ψ) at μs, the stroke
+from its start on the left; every analysed position ticked on the travel
+axis at its link's travel there and numbered under it, in a row for each
+stroke, an arrow giving the row's sense of travel; each position's value
+its ordinate, and the plan positions' values ringed and written, the very
+values their force sheets take.  Both strokes of a piston stand in one
+diagram, the other stroke's load dashed.
+
+The layout reads :class:`graphplan.load_diagrams.LoadDiagram` records and
+computes no mechanics; its axes, lettering and stacking are those of the
+kinematic diagrams (:mod:`graphplan.render.diagrams`) and the dynamics
+(:mod:`graphplan.render.dynamics`).  Every word comes from the ``ld_`` keys of
+a locale (:func:`graphplan.locale.strings`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+
+from ..load_diagrams import LoadDiagram
+from ..locale import strings
+from ..scales import fit_scale, format_scale
+from .diagrams import (
+    AXIS_HEAD_MM,
+    AXIS_RUN_MM,
+    CAPTION_SIZE,
+    LINE_SPACING,
+    MOST_CONSTRUCTION_LINES,
+    NUMBER_SIZE,
+    PLAN_RING_MM,
+    SCALE_SIZE,
+    TICK_MM,
+    TITLE_SIZE,
+    stacked,
+)
+from .dynamics import ordinate_axis
+from .labels import Anchor, obstacles_of, place_labels
+from .numerals import short
+from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds_of, dot_marker, text_width
+from .svg import to_svg
+from .wrapping import fitted
+
+# The field of a stroke's travel and of the values (mm): the standard scales fill them to between 40 % and
+# all of them, 75 to 150 mm of travel, as a sheet's stroke is drawn beside the plans.
+TRAVEL_MM = 150.0
+FIELD_MM = 60.0
+# The rows of the positions' numbers under the diagram, and between them (mm).
+ROW_GAP_MM = 5.0
+# The drawing's title, laid over its first diagram.
+TITLE_LAYER = "title"
+
+_AXIS = Stroke(0.35)
+_THIN = Stroke(0.18, "#555555")
+_GUIDE = Stroke(0.15, "#9a9a9a", (1.0, 1.0))
+# The reference stroke's load solid, the other stroke's dashed (a piston's return), as the dynamics draws its
+# two moments.
+_STROKES = (Stroke(0.5), Stroke(0.5, "#1f5fa8", (3.0, 1.5)))
+
+
+def load_diagrams_svg(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None) -> str:
+    """The SVG text of the load diagrams (:func:`layout`)."""
+    return to_svg(layout(diagrams, text))
+
+
+def layout(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None) -> list[Layer]:
+    """The diagrams one under another, the drawing's title over the first; paper mm, y up."""
+    return stacked(parts(diagrams, text))
+
+
+def parts(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None) -> list[list[Layer]]:
+    """Each diagram round the origin of its own travel axis, the drawing's title over the first."""
+    words = {**strings("en"), **(text or {})}
+    drawn = [_panel(diagram, words) for diagram in diagrams]
+    left, _, _, top = bounds_of(item for layer in drawn[0] for item in layer.items)
+    heading = Text((left, top + 6.0), words["ld_title"], TITLE_SIZE, "start", weight="bold")
+    drawn[0] = [*drawn[0], Layer(TITLE_LAYER, (heading,))]
+    return drawn
+
+
+def scales_of(diagram: LoadDiagram) -> tuple[float, float]:
+    """(μs, μF): the standard scales at which the stroke fills :data:`TRAVEL_MM` and the values :data:`FIELD_MM`
+    (μs in m/mm, or rad/mm at a round number of degrees per mm; μF in N/mm or N·m/mm)."""
+    if diagram.translating:
+        along = fit_scale(diagram.travel, TRAVEL_MM)
+    else:
+        along = math.radians(fit_scale(math.degrees(diagram.travel), TRAVEL_MM))
+    values = [value for load in diagram.loads for _, value in load.outline]
+    span = max(max(values), 0.0) - min(min(values), 0.0)
+    return along, fit_scale(span, FIELD_MM)
+
+
+def _panel(diagram: LoadDiagram, words: Mapping[str, str]) -> list[Layer]:
+    """One diagram with the start of its reference stroke at (0, 0)."""
+    along, scale = scales_of(diagram)
+    xs = (diagram.coordinates / along).tolist()
+    length = diagram.travel / along
+    lows = [value / scale for load in diagram.loads for _, value in load.outline]
+    low, high = min(0.0, *lows), max(0.0, *lows)
+    unit = words["newton"] if diagram.kind == "force" else words["newton_metre"]
+    letter = "F" if diagram.kind == "force" else "M"
+    symbol = _travel_symbol(diagram, words)
+
+    axes: list[Primitive] = [
+        Arrow((-4.0, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"load-{diagram.link}-travel-axis"),
+        *ordinate_axis(0.0, low, high, scale, 0.0, f"{letter}, {unit}"),
+        Text((length + AXIS_RUN_MM + 1.5, -SCALE_SIZE / 2), symbol, SCALE_SIZE, "start"),
+    ]
+    count = len(xs)
+    every = math.ceil(count / MOST_CONSTRUCTION_LINES)
+    shown = [k for k in range(count) if k % every == 0 or k in diagram.plans]
+    axes.extend(Polyline(((xs[k], 0.0), (xs[k], TICK_MM)), _AXIS) for k in shown)
+
+    curves: list[Primitive] = []
+    ordinates: list[Primitive] = []
+    for load in diagram.loads:
+        stroke = _STROKES[0 if load.with_reference else 1]
+        curves.append(Polyline(tuple((x / along, value / scale) for x, value in load.outline), stroke))
+        for k in shown:
+            value = float(load.values[k]) / scale
+            if value:
+                ordinates.append(Polyline(((xs[k], 0.0), (xs[k], value)), _THIN))
+                curves.append(dot_marker((xs[k], value), 0.55, stroke.colour))
+
+    # The values the force sheets take, ringed and written at the plan positions.
+    anchors: list[Anchor] = []
+    rings: list[Primitive] = []
+    for k in diagram.plans:
+        acting = [load for load in diagram.loads if load.values[k]]
+        for load in acting or diagram.loads[:1]:
+            value = float(load.values[k])
+            at = (xs[k], value / scale)
+            rings.append(Circle(at, PLAN_RING_MM, _AXIS, None))
+            names = [load.name] if acting else [other.name for other in diagram.loads]
+            anchors.append(Anchor(at, f"{' = '.join(names)} = {short(value)} {unit}", SCALE_SIZE, math.pi / 4))
+    rows, guides = _numbers(diagram, xs, shown, low)
+    # Clear of the lines, so that a written value never stands on the curve it is read off.
+    placed = place_labels(anchors, obstacles_of(axes + curves + ordinates + rings + rows + guides), off_lines=True)
+    width = max(length + AXIS_RUN_MM + 4.0 + text_width(symbol, SCALE_SIZE),
+                max((text.at[0] + text_width(text.text, SCALE_SIZE) for text in placed.texts), default=0.0))
+    caption = _caption(diagram, words, symbol, along, scale, high, width)
+    bottom = min(item.at[1] for item in rows if isinstance(item, Text)) - 4.0
+    legend = _legend(diagram, words, bottom)
+    name = f"load-{diagram.link}"
+    return [Layer(f"{name}-axes", tuple(axes + guides)), Layer(f"{name}-ordinates", tuple(ordinates)),
+            Layer(f"{name}-curves", tuple(curves + rings)), Layer(f"{name}-leaders", placed.leaders),
+            Layer(f"{name}-labels", placed.texts + tuple(rows) + legend), Layer(f"{name}-caption", caption)]
+
+
+def _numbers(diagram: LoadDiagram, xs: list[float], shown: list[int], low: float) -> tuple[list[Primitive],
+                                                                                             list[Primitive]]:
+    """The positions' numbers in a row for each stroke under the diagram, each under its tick (a number that would
+    touch the one before it a line lower), an arrow before each row in its sense of travel; and, where the values
+    reach below the axis, dotted guides down from the ticks to the rows."""
+    items: list[Primitive] = []
+    top = min(low, 0.0) - ROW_GAP_MM
+    for reference in (True, False):
+        members = sorted((k for k in shown if bool(diagram.in_reference[k]) == reference), key=lambda k: xs[k])
+        if not members:
+            continue
+        ends: list[float] = []   # the right end of the last number on each line of the row
+        for k in members:
+            label = str(diagram.numbers[k])
+            half = text_width(label, NUMBER_SIZE) / 2
+            line = next((n for n, end in enumerate(ends) if xs[k] - half >= end + 0.6), len(ends))
+            if line == len(ends):
+                ends.append(-math.inf)
+            ends[line] = xs[k] + half
+            items.append(Text((xs[k], top - NUMBER_SIZE - line * (NUMBER_SIZE + 1.2)), label, NUMBER_SIZE, "middle"))
+        y = top - NUMBER_SIZE / 2
+        items.append(Arrow((-12.0, y), (-5.0, y), _THIN, 1.8) if reference else Arrow((-5.0, y), (-12.0, y), _THIN, 1.8))
+        top -= len(ends) * (NUMBER_SIZE + 1.2) + ROW_GAP_MM - 1.2
+    guides: list[Primitive] = []
+    if low < 0:
+        guides = [Polyline(((xs[k], 0.0), (xs[k], low - ROW_GAP_MM + 1.0)), _GUIDE) for k in shown]
+    return items, guides
+
+
+def _travel_symbol(diagram: LoadDiagram, words: Mapping[str, str]) -> str:
+    """The abscissa's symbol: the travel sB of a translating link's point, or the angle ψ4 of a turning link."""
+    if diagram.translating:
+        return words["ld_travel_translating"].format(point=diagram.point or diagram.link)
+    return words["ld_travel_turning"].format(link=diagram.link)
+
+
+def _caption(diagram: LoadDiagram, words: Mapping[str, str], symbol: str, along: float, scale: float, high: float,
+             width: float) -> tuple[Text, ...]:
+    """The diagram's title and its scales above it, the words no wider than the diagram."""
+    names = words["enumeration"].join(load.name for load in diagram.loads)
+    title = words["ld_diagram"].format(names=names, symbol=symbol, link=diagram.link)
+    values = words["ld_force_scale" if diagram.kind == "force" else "ld_moment_scale"].format(
+        value=format_scale(scale))
+    if diagram.translating:
+        travel = words["ld_travel_scale"].format(value=format_scale(along), travel=short(diagram.travel),
+                                                 length=short(diagram.travel / along))
+    else:
+        travel = words["ld_angle_scale"].format(value=short(along, 4), degrees=short(math.degrees(along)),
+                                                travel=short(math.degrees(diagram.travel)),
+                                                length=short(diagram.travel / along))
+    lines = fitted(f"{values}; {travel}", max(width, 80.0), SCALE_SIZE)
+    lowest = high + AXIS_RUN_MM + 4.0
+    items = [Text((0.0, lowest + (len(lines) - 1 - k) * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
+             for k, line in enumerate(lines)]
+    titled = lowest + (len(lines) - 1) * LINE_SPACING * SCALE_SIZE + SCALE_SIZE + 3.0
+    return (Text((0.0, titled), title, CAPTION_SIZE, "start", weight="bold"), *items)
+
+
+def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple[Primitive, ...]:
+    """Under the rows: each load's line with its name and stroke, and the ring of the plan positions' values."""
+    items: list[Primitive] = []
+    y = top - SCALE_SIZE
+    for load in diagram.loads:
+        stroke = _STROKES[0 if load.with_reference else 1]
+        own = load.spec.stroke or diagram.reference
+        sense = own.sense if load.spec.during != "idle" else _other_sense(own.sense)
+        items.append(Polyline(((0.0, y + SCALE_SIZE / 3), (10.0, y + SCALE_SIZE / 3)), stroke))
+        items.append(Text((12.0, y), words["ld_legend"].format(name=load.name, stroke=words[f"ld_stroke_{sense}"],
+                                                              link=own.link), SCALE_SIZE, "start"))
+        y -= LINE_SPACING * SCALE_SIZE + 1.0
+    if diagram.plans:
+        items.append(Circle((5.0, y + SCALE_SIZE / 3), PLAN_RING_MM, _AXIS, None))
+        items.append(Text((12.0, y), words["ld_plans"], SCALE_SIZE, "start"))
+    return tuple(items)
+
+
+def _other_sense(sense: str) -> str:
+    return {"forward": "backward", "backward": "forward", "ccw": "cw", "cw": "ccw"}[sense]
+
+
+__all__ = ["FIELD_MM", "TITLE_LAYER", "TRAVEL_MM", "layout", "load_diagrams_svg", "parts", "scales_of"]
