@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from . import kinematic_diagrams
+from . import kinematic_diagrams, load_diagrams
 from .analysis import Analysis
 from .errors import GraphplanError, SceneError
 from .locale import strings
@@ -78,6 +78,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if piece == "dynamics" and scene.dynamics is None:
         return "needs a [dynamics] table"
     if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene, analysis)) is not None:
+        return reason
+    if piece == "load_diagrams" and (reason := load_diagrams.unavailable(analysis)) is not None:
         return reason
     if piece == "accuracy" and analysis.motion.singular:
         index = min(analysis.motion.singular)
@@ -252,6 +254,10 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
 
         found.append(Drawing("diagrams", diagrams_layout.layout(of_analysis(analysis),
                                                                 strings(analysis.scene.locale))))
+    if "load_diagrams" in pieces:
+        laid_out = panels.named("load-diagrams") if panels else None
+        layers = list(laid_out.layers) if laid_out else _load_diagram_layers(analysis)
+        found.append(Drawing("load_diagrams", layers))
     if panels is not None:
         from .render.sheet import course_sheets
 
@@ -285,6 +291,12 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
                 found.append(Drawing(f"forces_friction_{plan.number}", layers))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces)
     return found
+
+
+def _load_diagram_layers(analysis: Analysis) -> list[Layer]:
+    from .render import load_diagrams as load_diagrams_layout
+
+    return load_diagrams_layout.layout(load_diagrams.of_analysis(analysis), strings(analysis.scene.locale))
 
 
 def _dynamics_drawings(machine: list[Layer], pieces: tuple[str, ...]) -> list[Drawing]:
@@ -321,16 +333,22 @@ def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larg
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
     the dynamics drawing ``machine`` where the run draws one (drawn ``larger`` where the sheet has room), and the
     rotor's balancing where the scene has it."""
-    from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel
+    from .render import load_diagrams as load_diagrams_layout
+    from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel, load_diagrams_panel
 
     scene = analysis.scene
     diagrams = ()
     if missing(scene, analysis, "diagrams") is None:
         diagrams = (diagrams_panel(analysis, scene.drawing.sheet),)
+    # The load diagrams stand on the force sheets wherever the scene has them, as the kinematic diagrams do on theirs.
+    loads = ()
+    if missing(scene, analysis, "load_diagrams") is None:
+        drawn = load_diagrams_layout.parts(load_diagrams.of_analysis(analysis), strings(scene.locale))
+        loads = (load_diagrams_panel(drawn, scene.locale),)
     dynamics = (dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet),) if machine is not None else ()
     # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
     balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()
-    return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing)
+    return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing, loads=loads)
 
 
 class MachineDynamics:

@@ -76,15 +76,31 @@ def drawn(spec: LoadSpec) -> bool:
     return spec.during != "always"
 
 
+def unavailable(analysis: Analysis) -> str | None:
+    """Why the run has no load diagram to draw, or None where it has one."""
+    scene = analysis.scene
+    if not any(drawn(spec) for spec in scene.loads):
+        return "needs a load given over a stroke: a [[loads]] diagram, during window or stroke"
+    if not _drawn_rows(analysis):
+        return "needs the extremes of the loads' strokes: the working link turns round or the driver is a slider"
+    return None
+
+
+def _drawn_rows(analysis: Analysis) -> list[int]:
+    """The scene's loads that have a diagram to draw and a stroke with extremes to draw it over."""
+    scene, positions = analysis.scene, analysis.positions
+    return [row for row, spec in enumerate(scene.loads)
+            if drawn(spec) and (spec.stroke or scene.positions.working) is not None
+            and stroke_extremes(positions, spec.stroke) is not None]
+
+
 def of_analysis(analysis: Analysis) -> tuple[LoadDiagram, ...]:
     """The load diagrams of ``analysis``: one for each link and kind with a load over a stroke, in the scene's
     order of their first loads; none where the scene has none, or the stroke has no extremes."""
     mechanism, positions, motion = analysis.mechanism, analysis.positions, analysis.motion
     scene = analysis.scene
     names = external_names(scene.loads)
-    rows = [row for row, spec in enumerate(scene.loads)
-            if drawn(spec) and (spec.stroke or scene.positions.working) is not None
-            and stroke_extremes(positions, spec.stroke) is not None]
+    rows = _drawn_rows(analysis)
     if not rows:
         return ()
     acting = activity(mechanism, positions, motion)
@@ -151,4 +167,4 @@ def _outline(spec: LoadSpec, along) -> tuple[tuple[float, float], ...]:
     return ((first[0], 0.0), *corners, (last[0], 0.0))
 
 
-__all__ = ["DrawnLoad", "LoadDiagram", "drawn", "of_analysis"]
+__all__ = ["DrawnLoad", "LoadDiagram", "drawn", "of_analysis", "unavailable"]

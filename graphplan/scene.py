@@ -49,9 +49,10 @@ MOST_VELOCITY_PLANS = 48
 LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces")
 INERTIA_FORMS = ("couple", "displaced")
 # Every piece a run can deliver, in the order a course project presents them (graphplan.deliverables):
-# the seven of the scene contract, then the kinematic diagrams, the accuracy report, the machine's
-# dynamics, the rotor's balancing, the vibration, the sheets and the report figures.
-OUTPUT_PIECES = ("positions", "velocity", "acceleration", "diagrams", "forces", "lever", "errors", "accuracy", "note",
+# the seven of the scene contract, then the kinematic diagrams, the load diagrams the force analysis reads, the
+# accuracy report, the machine's dynamics, the rotor's balancing, the vibration, the sheets and the report figures.
+OUTPUT_PIECES = ("positions", "velocity", "acceleration", "diagrams", "load_diagrams", "forces", "lever", "errors",
+                 "accuracy", "note",
                  "dynamics", "balancing", "vibration", "sheets", "figures")
 
 

@@ -640,12 +640,24 @@ class CoursePanels:
 
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
                   sheet: str | None = None, dynamics: Sequence[Panel] = (),
-                  balancing: Sequence[Panel] = ()) -> CoursePanels:
-    """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own."""
+                  balancing: Sequence[Panel] = (), loads: Sequence[Panel] = ()) -> CoursePanels:
+    """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own; ``loads``, the
+    load diagrams (:func:`load_diagrams_panel`), head the force sheets, whose values they give."""
     linkage, forces = _laid_out(analysis, analysis.scene.drawing.sheet if sheet is None else sheet)
     kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
-    return CoursePanels(tuple(kinematics), tuple(part for _, parts in forces for part in parts),
+    return CoursePanels(tuple(kinematics), (*loads, *(part for _, parts in forces for part in parts)),
                         tuple(whole for whole, _ in forces), tuple(dynamics), tuple(balancing))
+
+
+def load_diagrams_panel(drawn: Sequence[Sequence[Layer]], locale: str) -> Panel:
+    """The load diagrams (:func:`graphplan.render.load_diagrams.parts`) as a panel to no length scale, each
+    diagram a part of its own where no sheet holds them together."""
+    from .diagrams import stacked
+
+    label = strings(locale)["ld_title"]
+    parts = tuple(Panel(f"load-diagrams-{k + 1}", tuple(part), to_scale=False)
+                  for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
+    return Panel("load-diagrams", tuple(stacked([list(part) for part in drawn])), parts, label=label, to_scale=False)
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
