@@ -65,10 +65,18 @@ class LoadDiagram:
     plans: tuple[int, ...]    # the indices of the plan positions, whose values the force sheets use
     loads: tuple[DrawnLoad, ...]
 
-    @property
-    def shares(self) -> np.ndarray:
-        """Each position's share of the reference stroke, as a diagram's shares count."""
-        return self.coordinates / self.travel
+    def stroke_at(self, index: int) -> tuple[str, float]:
+        """The sense of the stroke position ``index`` is in and its share of that stroke, as a diagram of that
+        stroke counts it (the other stroke runs back from the reference's end)."""
+        share = float(self.coordinates[index] / self.travel)
+        if self.in_reference[index]:
+            return self.reference.sense, share
+        return other_sense(self.reference.sense), 1.0 - share
+
+
+def other_sense(sense: str) -> str:
+    """The sense of a link's other stroke."""
+    return {"forward": "backward", "backward": "forward", "ccw": "cw", "cw": "ccw"}[sense]
 
 
 def drawn(spec: LoadSpec) -> bool:
@@ -167,4 +175,4 @@ def _outline(spec: LoadSpec, along) -> tuple[tuple[float, float], ...]:
     return ((first[0], 0.0), *corners, (last[0], 0.0))
 
 
-__all__ = ["DrawnLoad", "LoadDiagram", "drawn", "of_analysis", "unavailable"]
+__all__ = ["DrawnLoad", "LoadDiagram", "drawn", "of_analysis", "other_sense", "unavailable"]

@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
-from ..load_diagrams import LoadDiagram
+from ..load_diagrams import LoadDiagram, other_sense
 from ..locale import strings
 from ..scales import fit_scale, format_scale
 from .diagrams import (
@@ -216,7 +216,7 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
     for load in diagram.loads:
         stroke = _STROKES[0 if load.with_reference else 1]
         own = load.spec.stroke or diagram.reference
-        sense = own.sense if load.spec.during != "idle" else _other_sense(own.sense)
+        sense = own.sense if load.spec.during != "idle" else other_sense(own.sense)
         items.append(Polyline(((0.0, y + SCALE_SIZE / 3), (10.0, y + SCALE_SIZE / 3)), stroke))
         items.append(Text((12.0, y), words["ld_legend"].format(name=load.name, stroke=words[f"ld_stroke_{sense}"],
                                                               link=own.link), SCALE_SIZE, "start"))
@@ -225,10 +225,6 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
         items.append(Circle((5.0, y + SCALE_SIZE / 3), PLAN_RING_MM, _AXIS, None))
         items.append(Text((12.0, y), words["ld_plans"], SCALE_SIZE, "start"))
     return tuple(items)
-
-
-def _other_sense(sense: str) -> str:
-    return {"forward": "backward", "backward": "forward", "ccw": "cw", "cw": "ccw"}[sense]
 
 
 __all__ = ["FIELD_MM", "TITLE_LAYER", "TRAVEL_MM", "layout", "load_diagrams_svg", "parts", "scales_of"]

@@ -13,6 +13,9 @@ import math
 from collections.abc import Mapping
 from typing import Protocol
 
+import numpy as np
+
+from .. import load_diagrams
 from ..analysis import Analysis, PlanPosition
 from ..mechanism import Mechanism
 from ..plans import Plan
@@ -44,6 +47,7 @@ def forces_section(note: Writer, section: int) -> None:
     """Each plan position's force analysis, then the balancing load over the cycle where the scene asks for it."""
     note.heading(2, note.t("note_forces"), section)
     note.para(note.t("note_forces_intro", gravity=note.n(note.analysis.scene.gravity)))
+    _load_diagrams(note)
     number = 0
     for plan in note.analysis.plans:
         if plan.forces is None:
@@ -62,6 +66,36 @@ def forces_section(note: Writer, section: int) -> None:
                          *force_report.cycle_efficiency_lines(note.analysis, note.mark)]:
             note.para(sentence)
         note.figure("balancing.svg", note.t("note_cycle", load=load), lead="plot_lead")
+
+
+def _load_diagrams(note: Writer) -> None:
+    """The loads given over a stroke: each position's value read off its load diagram, which the force analysis
+    takes there (the plan positions' on their force sheets), and the diagrams' figure."""
+    if load_diagrams.unavailable(note.analysis) is not None:
+        return
+    text = note.text
+    plans = text["enumeration"].join(str(plan.number) for plan in note.analysis.plans if plan.forces is not None)
+    for diagram in load_diagrams.of_analysis(note.analysis):
+        names = text["enumeration"].join(load.name for load in diagram.loads)
+        if diagram.translating:
+            symbol = note.t("ld_travel_translating", point=diagram.point or diagram.link)
+            travel = note.t("note_ld_travel_translating", symbol=symbol)
+            coordinates = diagram.coordinates
+        else:
+            symbol = note.t("ld_travel_turning", link=diagram.link)
+            travel = note.t("note_ld_travel_turning", symbol=symbol)
+            coordinates = np.degrees(diagram.coordinates)
+        unit = text["newton"] if diagram.kind == "force" else text["newton_metre"]
+        note.para(note.t("note_ld_intro", names=names, link=diagram.link, symbol=symbol, plans=plans or "—"))
+        header = [text["column_position"], text["note_ld_stroke"], travel, text["note_ld_share"],
+                  *(f"{load.name}, {unit}" for load in diagram.loads)]
+        rows = []
+        for k, number in enumerate(diagram.numbers):
+            sense, share = diagram.stroke_at(k)
+            rows.append([str(number), text[f"ld_stroke_{sense}"], note.n(float(coordinates[k]), 4),
+                         note.n(share, 4), *(note.n(float(load.values[k])) for load in diagram.loads)])
+        note.table(note.t("note_ld_table", names=names, link=diagram.link), header, rows, "llrr" + "r" * len(diagram.loads))
+    note.figure("load_diagrams.svg", text["ld_title"], lead="plot_lead")
 
 
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
