@@ -121,18 +121,19 @@ def of_analysis(analysis: Analysis) -> tuple[LoadDiagram, ...]:
     found = []
     for (link, kind), members in groups.items():
         working = scene.positions.working
-        reference = working if working is not None and working.link == link else \
-            (scene.loads[members[0]].stroke or working)
-        start, end = stroke_ends(mechanism, positions, reference)
+        # A stroke is named None where it is the working link's: positions.load_strokes keeps the others'.
+        named = None if working is not None and working.link == link else scene.loads[members[0]].stroke
+        reference = named or working
+        start, end = stroke_ends(mechanism, positions, named)
         translating = link in mechanism.translating
         travel = abs(end - start)
-        coordinates = stroke_share(mechanism, positions, motion, reference) * travel
+        coordinates = stroke_share(mechanism, positions, motion, named) * travel
         loads = []
         for row in members:
             spec = scene.loads[row]
             own = spec.stroke or working
             # The load's shares run along its own stroke: from the reference's start, or back from its end.
-            own_start, own_end = stroke_ends(mechanism, positions, own)
+            own_start, own_end = stroke_ends(mechanism, positions, spec.stroke)
             along = functools.partial(_travel_at, own=(own_start, own_end), origin=start,
                                       sense=1.0 if end > start else -1.0, turning=not translating)
             values = acting[row] * spec.value
@@ -142,7 +143,7 @@ def of_analysis(analysis: Analysis) -> tuple[LoadDiagram, ...]:
             same = own.link == reference.link and own.sense == reference.sense
             loads.append(DrawnLoad(names[row], spec, _outline(spec, along), values, same != (spec.during == "idle")))
         found.append(LoadDiagram(link, kind, translating, _origin(analysis, link), reference, travel, tuple(positions.numbers),
-                                 coordinates, in_working_stroke(motion, reference), plans, tuple(loads)))
+                                 coordinates, in_working_stroke(motion, named), plans, tuple(loads)))
     return tuple(found)
 
 
