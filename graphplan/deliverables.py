@@ -333,7 +333,6 @@ def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larg
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
     the dynamics drawing ``machine`` where the run draws one (drawn ``larger`` where the sheet has room), and the
     rotor's balancing where the scene has it."""
-    from .render import load_diagrams as load_diagrams_layout
     from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel, load_diagrams_panel
 
     scene = analysis.scene
@@ -343,8 +342,7 @@ def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larg
     # The load diagrams stand on the force sheets wherever the scene has them, as the kinematic diagrams do on theirs.
     loads = ()
     if missing(scene, analysis, "load_diagrams") is None:
-        drawn = load_diagrams_layout.parts(load_diagrams.of_analysis(analysis), strings(scene.locale))
-        loads = (load_diagrams_panel(drawn, scene.locale),)
+        loads = (load_diagrams_panel(load_diagrams.of_analysis(analysis), scene.locale, scene.drawing.sheet),)
     dynamics = (dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet),) if machine is not None else ()
     # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
     balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()

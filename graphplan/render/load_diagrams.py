@@ -49,6 +49,8 @@ from .wrapping import fitted
 # all of them, 75 to 150 mm of travel, as a sheet's stroke is drawn beside the plans.
 TRAVEL_MM = 150.0
 FIELD_MM = 60.0
+# Smaller fields for a small sheet that holds no diagram at the usual ones: tried in turn, largest first.
+SMALLER_FIELDS = ((120.0, 45.0), (100.0, 40.0), (80.0, 30.0))
 # The rows of the positions' numbers under the diagram, and between them (mm).
 ROW_GAP_MM = 5.0
 # The drawing's title, laid over its first diagram.
@@ -67,36 +69,41 @@ def load_diagrams_svg(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] |
     return to_svg(layout(diagrams, text))
 
 
-def layout(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None) -> list[Layer]:
+def layout(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None,
+           field: tuple[float, float] = (TRAVEL_MM, FIELD_MM)) -> list[Layer]:
     """The diagrams one under another, the drawing's title over the first; paper mm, y up."""
-    return stacked(parts(diagrams, text))
+    return stacked(parts(diagrams, text, field))
 
 
-def parts(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None) -> list[list[Layer]]:
-    """Each diagram round the origin of its own travel axis, the drawing's title over the first."""
+def parts(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None,
+          field: tuple[float, float] = (TRAVEL_MM, FIELD_MM)) -> list[list[Layer]]:
+    """Each diagram round the origin of its own travel axis, the drawing's title over the first; ``field`` the mm
+    the stroke and the values fill at their standard scales (a small sheet's smaller)."""
     words = {**strings("en"), **(text or {})}
-    drawn = [_panel(diagram, words) for diagram in diagrams]
+    drawn = [_panel(diagram, words, field) for diagram in diagrams]
     left, _, _, top = bounds_of(item for layer in drawn[0] for item in layer.items)
     heading = Text((left, top + 6.0), words["ld_title"], TITLE_SIZE, "start", weight="bold")
     drawn[0] = [*drawn[0], Layer(TITLE_LAYER, (heading,))]
     return drawn
 
 
-def scales_of(diagram: LoadDiagram) -> tuple[float, float]:
-    """(μs, μF): the standard scales at which the stroke fills :data:`TRAVEL_MM` and the values :data:`FIELD_MM`
-    (μs in m/mm, or rad/mm at a round number of degrees per mm; μF in N/mm or N·m/mm)."""
+def scales_of(diagram: LoadDiagram, field: tuple[float, float] = (TRAVEL_MM, FIELD_MM)) -> tuple[float, float]:
+    """(μs, μF): the standard scales at which the stroke fills ``field``'s first mm (:data:`TRAVEL_MM`) and the
+    values its second (:data:`FIELD_MM`); μs in m/mm, or rad/mm at a round number of degrees per mm, μF in N/mm
+    or N·m/mm."""
+    travel_mm, values_mm = field
     if diagram.translating:
-        along = fit_scale(diagram.travel, TRAVEL_MM)
+        along = fit_scale(diagram.travel, travel_mm)
     else:
-        along = math.radians(fit_scale(math.degrees(diagram.travel), TRAVEL_MM))
+        along = math.radians(fit_scale(math.degrees(diagram.travel), travel_mm))
     values = [value for load in diagram.loads for _, value in load.outline]
     span = max(max(values), 0.0) - min(min(values), 0.0)
-    return along, fit_scale(span, FIELD_MM)
+    return along, fit_scale(span, values_mm)
 
 
-def _panel(diagram: LoadDiagram, words: Mapping[str, str]) -> list[Layer]:
+def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, float]) -> list[Layer]:
     """One diagram with the start of its reference stroke at (0, 0)."""
-    along, scale = scales_of(diagram)
+    along, scale = scales_of(diagram, field)
     xs = (diagram.coordinates / along).tolist()
     length = diagram.travel / along
     lows = [value / scale for load in diagram.loads for _, value in load.outline]
@@ -227,4 +234,4 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
     return tuple(items)
 
 
-__all__ = ["FIELD_MM", "TITLE_LAYER", "TRAVEL_MM", "layout", "load_diagrams_svg", "parts", "scales_of"]
+__all__ = ["FIELD_MM", "SMALLER_FIELDS", "TITLE_LAYER", "TRAVEL_MM", "layout", "load_diagrams_svg", "parts", "scales_of"]

@@ -32,6 +32,7 @@ from dataclasses import asdict, dataclass, replace
 
 from ..analysis import Analysis, PlanPosition
 from ..errors import SceneError
+from ..load_diagrams import LoadDiagram
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..scales import format_scale, next_standard_scale, standard_scale
@@ -649,15 +650,23 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
                         tuple(whole for whole, _ in forces), tuple(dynamics), tuple(balancing))
 
 
-def load_diagrams_panel(drawn: Sequence[Sequence[Layer]], locale: str) -> Panel:
+def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str | None = None) -> Panel:
     """The load diagrams (:func:`graphplan.render.load_diagrams.parts`) as a panel to no length scale, each
-    diagram a part of its own where no sheet holds them together."""
+    diagram a part of its own where no sheet holds them together; on a ``sheet`` too small for a diagram at the
+    usual fields, at the first of the smaller ones that it holds (the scales stated follow)."""
+    from . import load_diagrams as load_layout
     from .diagrams import stacked
 
-    label = strings(locale)["ld_title"]
+    text = strings(locale)
+    form = form_of(locale)
+    drawn = load_layout.parts(diagrams, text)
+    for field in load_layout.SMALLER_FIELDS:
+        if sheet is None or sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
+            break
+        drawn = load_layout.parts(diagrams, text, field)
     parts = tuple(Panel(f"load-diagrams-{k + 1}", tuple(part), to_scale=False)
                   for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
-    return Panel("load-diagrams", tuple(stacked([list(part) for part in drawn])), parts, label=label, to_scale=False)
+    return Panel("load-diagrams", tuple(stacked(drawn)), parts, label=text["ld_title"], to_scale=False)
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
