@@ -113,7 +113,7 @@ def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, f
     symbol = _travel_symbol(diagram, words)
 
     axes: list[Primitive] = [
-        Arrow((-4.0, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"load-{diagram.link}-travel-axis"),
+        Arrow((0.0, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"load-{diagram.link}-travel-axis"),
         *ordinate_axis(0.0, low, high, scale, 0.0, f"{letter}, {unit}"),
         Text((length + AXIS_RUN_MM + 1.5, -SCALE_SIZE / 2), symbol, SCALE_SIZE, "start"),
     ]

@@ -643,10 +643,12 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
                   sheet: str | None = None, dynamics: Sequence[Panel] = (),
                   balancing: Sequence[Panel] = (), loads: Sequence[Panel] = ()) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own; ``loads``, the
-    load diagrams (:func:`load_diagrams_panel`), head the force sheets, whose values they give."""
+    load diagrams (:func:`load_diagrams_panel`), stand among the force sheets, whose values they give."""
     linkage, forces = _laid_out(analysis, analysis.scene.drawing.sheet if sheet is None else sheet)
     kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
-    return CoursePanels(tuple(kinematics), (*loads, *(part for _, parts in forces for part in parts)),
+    # Placed after the force sheets, the load diagrams take the first room left beside one (the first sheet of
+    # forces that has it); placed first, one took an A1 alone where the force sheet after it needed a whole sheet.
+    return CoursePanels(tuple(kinematics), (*(part for _, parts in forces for part in parts), *loads),
                         tuple(whole for whole, _ in forces), tuple(dynamics), tuple(balancing))
 
 
