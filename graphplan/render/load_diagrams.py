@@ -39,7 +39,6 @@ from .diagrams import (
     stacked,
 )
 from .dynamics import ordinate_axis
-from .labels import Anchor, obstacles_of, place_labels
 from .numerals import short
 from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds_of, dot_marker, text_width
 from .svg import to_svg
@@ -133,29 +132,51 @@ def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, f
                 ordinates.append(Polyline(((xs[k], 0.0), (xs[k], value)), _THIN))
                 curves.append(dot_marker((xs[k], value), 0.55, stroke.colour))
 
-    # The values the force sheets take, ringed and written at the plan positions.
-    anchors: list[Anchor] = []
+    # The values the force sheets take, ringed at the plan positions and written over the diagram, each on a
+    # dotted leader up its ordinate: set free beside their rings they stood on the curves they are read off.
     rings: list[Primitive] = []
+    written: list[tuple[float, float, str]] = []
     for k in diagram.plans:
         acting = [load for load in diagram.loads if load.values[k]]
         for load in acting or diagram.loads[:1]:
             value = float(load.values[k])
-            at = (xs[k], value / scale)
-            rings.append(Circle(at, PLAN_RING_MM, _AXIS, None))
+            rings.append(Circle((xs[k], value / scale), PLAN_RING_MM, _AXIS, None))
             names = [load.name] if acting else [other.name for other in diagram.loads]
-            anchors.append(Anchor(at, f"{' = '.join(names)} = {short(value)} {unit}", SCALE_SIZE, math.pi / 4))
+            written.append((xs[k], value / scale, f"{' = '.join(names)} = {short(value)} {unit}"))
+    values_top, values = _written_values(written, high + AXIS_RUN_MM + 3.0)
     rows, guides = _numbers(diagram, xs, shown, low)
-    # Clear of the lines, so that a written value never stands on the curve it is read off.
-    placed = place_labels(anchors, obstacles_of(axes + curves + ordinates + rings + rows + guides), off_lines=True)
-    width = max(length + AXIS_RUN_MM + 4.0 + text_width(symbol, SCALE_SIZE),
-                max((text.at[0] + text_width(text.text, SCALE_SIZE) for text in placed.texts), default=0.0))
-    caption = _caption(diagram, words, symbol, along, scale, high, width)
     bottom = min(item.at[1] for item in rows if isinstance(item, Text)) - 4.0
     legend = _legend(diagram, words, bottom)
+    width = max(length + AXIS_RUN_MM + 4.0 + text_width(symbol, SCALE_SIZE),
+                max((item.at[0] + text_width(item.text, SCALE_SIZE) / 2 for item in values if isinstance(item, Text)),
+                    default=0.0))
+    caption = _caption(diagram, words, symbol, along, scale, max(high, values_top - AXIS_RUN_MM), width)
     name = f"load-{diagram.link}"
     return [Layer(f"{name}-axes", tuple(axes + guides)), Layer(f"{name}-ordinates", tuple(ordinates)),
-            Layer(f"{name}-curves", tuple(curves + rings)), Layer(f"{name}-leaders", placed.leaders),
-            Layer(f"{name}-labels", placed.texts + tuple(rows) + legend), Layer(f"{name}-caption", caption)]
+            Layer(f"{name}-curves", tuple(curves + rings)),
+            Layer(f"{name}-leaders", tuple(item for item in values if not isinstance(item, Text))),
+            Layer(f"{name}-labels", tuple(item for item in values if isinstance(item, Text)) + tuple(rows) + legend),
+            Layer(f"{name}-caption", caption)]
+
+
+def _written_values(written: list[tuple[float, float, str]], base: float) -> tuple[float, list[Primitive]]:
+    """The plan positions' values written over the diagram from ``base`` up, each centred over its ring (a value that
+    would touch the one before it a line higher) on a dotted leader down to the ring; and the top of the lines."""
+    items: list[Primitive] = []
+    ends: list[float] = []
+    top = base
+    for x, y, label in sorted(written):
+        half = text_width(label, SCALE_SIZE) / 2
+        centre = max(x, half)   # not left of the ordinate axis, whose numbers stand there
+        line = next((n for n, end in enumerate(ends) if centre - half >= end + 2.0), len(ends))
+        if line == len(ends):
+            ends.append(-math.inf)
+        ends[line] = centre + half
+        at = base + line * (SCALE_SIZE + 2.0)
+        items.append(Text((centre, at), label, SCALE_SIZE, "middle"))
+        items.append(Polyline(((x, y + PLAN_RING_MM), (x, at - 1.0)), _GUIDE))
+        top = max(top, at + SCALE_SIZE)
+    return top, items
 
 
 def _numbers(diagram: LoadDiagram, xs: list[float], shown: list[int], low: float) -> tuple[list[Primitive],
