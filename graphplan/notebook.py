@@ -191,7 +191,9 @@ class RotorBalancing:
     scene: Scene = dataclasses.field(repr=False)
 
     def __repr__(self) -> str:
-        corrections = "; ".join(f"plane {plane.name}: {plane.mass_radius:.4g} kg·m at {plane.angle_deg:.1f}°"
+        # A zero correction has no angle (None): written —, as the drawing writes it.
+        corrections = "; ".join(f"plane {plane.name}: {plane.mass_radius:.4g} kg·m at "
+                                + ("—" if plane.angle_deg is None else f"{plane.angle_deg:.1f}°")
                                 for plane in self.planes)
         return f"<RotorBalancing of {self.scene.title!r}: {corrections}>"
 

@@ -107,7 +107,8 @@ def test_the_html_sets_each_figure_with_its_caption_and_links_it_to_its_drawing(
 def test_the_pdf_shows_each_drawing_on_the_page_of_its_caption(shaper):
     # Lettering of the drawings that the note's text never writes: their captions.
     for caption, lettering in (("Figure 2. Velocity and acceleration plans, position 3", "Mechanism in position 3"),
-                               ("Figure 6. Force analysis, position 3 (part 1 of", "Force polygon")):
+                               ("Figure 7. Force analysis, position 3 (part 1 of", "Force polygon"),
+                               ("Figure 6. Load diagrams", "Load diagram F6(sE) of link 6")):
         pages = pages_with(shaper / "note.pdf", caption)
         assert len(pages) == 1 and lettering in pages[0]
     assert "Mechanism in position" not in (shaper / "note.md").read_text(encoding="utf-8")

@@ -26,7 +26,7 @@ from graphplan.starters import starter
 # The starters' point names, renamed: a Russian student's letters (О, А, В, С look Latin, Д does not), and
 # Greek capitals whose small letters the English note never writes.
 ALPHABETS = {"cyrillic": {"O": "О", "A": "А", "B": "В", "C": "С", "D": "Д", "S4": "Ц4"},
-             "greek": {"O": "Ξ", "A": "Γ", "B": "Χ", "C": "Κ", "D": "Ι", "S4": "Ψ4"}}
+             "greek": {"O": "Ξ", "A": "Γ", "B": "Χ", "C": "Κ", "D": "Ι", "S4": "Ζ4"}}
 # The crank-rocker's tangential components, and the slotted lever's block and lever (A3, A4: aA4A3ᵏ, aA4A3ʳ).
 STARTERS = ("crank-rocker", "slotted-lever")
 

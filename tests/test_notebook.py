@@ -234,3 +234,16 @@ def test_a_linkage_s_rotor_and_vibration_are_worked_out_from_python_too(rotor_pa
     assert both.balance().results == written["balancing"]
     assert both.vibration_response().results == written["vibration"]
     assert both.balance().results == graphplan.load(rotor_path).balance().results
+
+
+def test_a_rotor_balanced_already_shows_its_corrections_without_an_angle():
+    """Two masses in one plane whose m·r cancel: each plane's correction is zero, its angle undefined (None), and
+    the notebook's line writes it —, as the drawing does (it raised formatting None)."""
+    rotor = graphplan.load_text("""
+[balancing]
+masses = [ { mass = 2.0, radius = 0.1, angle = 0.0, plane = 0.1 },
+           { mass = 4.0, radius = 0.05, angle = 180.0, plane = 0.1 } ]
+planes = [0.0, 0.2]
+""").balance()
+    assert [plane.angle_deg for plane in rotor.planes] == [None, None]
+    assert repr(rotor).count(" kg·m at —") == 2

@@ -829,11 +829,11 @@ CASES: list[Case] = [
     # -- [output]
     Case("output-include-string", {"output.include": "all"}, "output.include", "must be a list, not a string (got 'all')"),
     Case("output-include-unknown", {"output.include": ["positions", "plans"]}, "output.include[1]",
-         "must be one of positions, velocity, acceleration, diagrams, forces, lever, errors, accuracy, note, dynamics, "
-         "balancing, vibration, sheets, figures (got 'plans')"),
+         "must be one of positions, velocity, acceleration, diagrams, load_diagrams, forces, lever, errors, accuracy, "
+         "note, dynamics, balancing, vibration, sheets, figures (got 'plans')"),
     Case("output-include-near-miss", {"output.include": ["velocities"]}, "output.include[0]",
-         "must be one of positions, velocity, acceleration, diagrams, forces, lever, errors, accuracy, note, dynamics, "
-         "balancing, vibration, sheets, figures; did you mean 'velocity'? (got 'velocities')"),
+         "must be one of positions, velocity, acceleration, diagrams, load_diagrams, forces, lever, errors, accuracy, "
+         "note, dynamics, balancing, vibration, sheets, figures; did you mean 'velocity'? (got 'velocities')"),
     Case("output-include-number", {"output.include": [1]}, "output.include[0]",
          "must be a string, not an integer (got 1)"),
     Case("output-unknown-key", {"output.include": DELETE, "output.includes": ["note"]}, "output.includes",
