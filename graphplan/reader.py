@@ -83,10 +83,22 @@ _COMMA_DECIMAL = re.compile(r"[-+]?\d+,\d+")
 
 
 def _number_in_text(value: Any) -> str:
-    """The hint for a number written as a string with the decimal comma a Russian text takes (``"0,175"``)."""
-    if not isinstance(value, str) or not _COMMA_DECIMAL.fullmatch(value.strip()):
+    """The hint for a number written as a string: in quotes (``"0.175"``), or with the decimal comma a Russian
+    text takes (``"0,175"``)."""
+    if not isinstance(value, str):
         return ""
-    return f"; a decimal comma? TOML numbers take a point and no quotes: write {value.strip().replace(',', '.')}"
+    text = value.strip()
+    if _COMMA_DECIMAL.fullmatch(text):
+        return f"; a decimal comma? TOML numbers take a point and no quotes: write {text.replace(',', '.')}"
+    try:
+        number = float(text)
+    except ValueError:
+        return ""
+    # "inf" and "nan" read as floats too, and are no number a scene means.
+    return _UNQUOTED.format(text=text) if math.isfinite(number) else ""
+
+
+_UNQUOTED = "; TOML numbers take no quotes: write {text}"
 
 
 def decimal_comma_hint(value: Any, length: int) -> str:
@@ -117,7 +129,9 @@ def _comma_readings(items: list[Any], count: int) -> list[list[str]]:
 
 def check_int(value: Any, where: str) -> int:
     if isinstance(value, bool) or not isinstance(value, int):
-        raise SceneError(where, f"must be an integer, not {_type_name(value)}", value)
+        quoted = isinstance(value, str) and re.fullmatch(r"[-+]?\d+", value.strip()) is not None
+        raise SceneError(where, f"must be an integer, not {_type_name(value)}", value,
+                         hint=_UNQUOTED.format(text=value.strip()) if quoted else "")
     return value
 
 
