@@ -540,8 +540,9 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
     force, moment = result.unbalance_written
     return {
         "kind": result.kind,
+        # A rotor balanced already has no unbalance to point anywhere: its angle is null, as a zero correction's.
         "unbalance": {"mass_radius": force, "angle_deg": math.degrees(cmath.phase(result.unbalance)) % 360.0
-                      if force else 0.0, "moment": moment},
+                      if force else None, "moment": moment},
         "planes": planes,
         # Zero but for rounding where the corrections balance: written as 0 below 1e-12 of the rotor's own
         # unbalance (not of the corrections, which cancellation may have blown up), as results.json writes every

@@ -410,7 +410,7 @@ def test_a_balanced_rotor_needs_no_correction_and_its_angle_is_not_rounding_nois
     masses = [RotatingMass(1.0, 0.1, 0, 0.0), RotatingMass(1.0, 0.1, 180, 0.0)]
     document = balancing_results(balance(BalancingSpec(masses, planes=(0.0, 1.0))))
     assert all(entry["mass_radius"] < 1e-15 and entry["angle_deg"] is None for entry in document["planes"])
-    assert document["unbalance"]["angle_deg"] == 0.0
+    assert document["unbalance"]["angle_deg"] is None  # no unbalance points anywhere (0.0 read as along x)
 
 
 def test_the_residual_left_by_rounding_is_written_as_none_and_a_real_one_as_it_is():
@@ -611,7 +611,7 @@ def test_a_rotor_balanced_already_writes_its_corrections_0_and_no_angle_in_the_r
     scene.write_text('[scene]\ntitle = "Rotor"\n' + BALANCED_ALREADY[kind], encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
     document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["balancing"]
-    assert document["unbalance"] == {"mass_radius": 0.0, "angle_deg": 0.0, "moment": 0.0}
+    assert document["unbalance"] == {"mass_radius": 0.0, "angle_deg": None, "moment": 0.0}
     for entry in document["planes"]:
         # A vector of no length has no direction: "θL = 0.0°" and angle_deg 0.0 read as a correction set along x.
         assert entry["mass_radius"] == 0.0 and entry["mass"] == 0.0 and entry["angle_deg"] is None
