@@ -55,14 +55,22 @@ class State:
 
     @functools.cached_property
     def turning_scale(self) -> float:
-        """The largest |ω| of the state: an angular speed far below it is rest (once a state: each load and pair
-        asks it)."""
-        return max((float(np.max(np.abs(link.omega))) for link in self.links.values()), default=0.0)
+        """The largest finite |ω| of the state: an angular speed far below it is rest (once a state: each load and
+        pair asks it)."""
+        return max((_largest_finite(link.omega) for link in self.links.values()), default=0.0)
 
     @functools.cached_property
     def moving_scale(self) -> float:
-        """The largest speed of a point of the state: a speed far below it is rest."""
-        return max((float(np.max(np.abs(point.v))) for point in self.points.values()), default=0.0)
+        """The largest finite speed of a point of the state: a speed far below it is rest."""
+        return max((_largest_finite(point.v) for point in self.points.values()), default=0.0)
+
+
+def _largest_finite(values) -> float:
+    """The largest finite magnitude among ``values``: a singular position's speeds are infinite (a swing that ends
+    at a toggle), and beside them every other position's was rest, its resisting loads turned the wrong way."""
+    magnitudes = np.abs(np.asarray(values))
+    finite = magnitudes[np.isfinite(magnitudes)]
+    return float(finite.max()) if finite.size else 0.0
 
 
 @dataclass(frozen=True)

@@ -301,3 +301,16 @@ def test_the_swing_advised_is_one_the_next_check_takes(tmp_path, capsys):
         "epsilon = 5.0\n", f"epsilon = 5.0\nswing = [{first}, {last}]\n")
     scene.write_text(rocking, encoding="utf-8")
     assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+
+
+def test_a_swing_that_ends_at_its_toggle_leaves_every_other_position_s_resisting_load_turned_right(text):
+    """The swing up to the very end of the lever's reach: the last position is a toggle, its ω infinite.  Beside an
+    infinite ω every other position's ω4 counted as rest, and the resisting moment was turned against ε4 instead
+    of against ω4: the linear system's Mb at position 2 came out 1.912 N·m where the force polygons (and the power
+    balance) give 5.424, and the note called the student's right polygons 65 % off."""
+    (_, toggle), _ = lever_reach_by_hand()  # A–C = AB + BC: the coupler and the rocker in line
+    at_toggle = loads(text.replace("swing   = [20.0, 65.0]", f"swing   = [20.0, {toggle!r}]"))
+    analysis = analyse(at_toggle)
+    assert analysis.motion.singular and max(analysis.motion.singular) == analysis.motion.count - 1
+    for plan in analysis.plans:
+        assert analysis.equilibrium.balancing[plan.index] == pytest.approx(plan.forces.balancing, rel=1e-9)
