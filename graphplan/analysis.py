@@ -33,7 +33,7 @@ from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, veloci
 from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
 from .scales import standard_scale
-from .scene import Scene
+from .scene import OTHER_SENSE, Scene
 from .statics import Equilibrium, equilibrium, pairs, turned_round
 from .wording import balancing_symbol
 
@@ -249,7 +249,7 @@ def _idle_throughout(mechanism: Mechanism, positions: PositionSet) -> tuple[Posi
     working, driver = mechanism.scene.positions.working, mechanism.driver
     if driver.cyclic or positions.strokes is None or "working" in positions.strokes:
         return ()
-    other = {"cw": "ccw", "ccw": "cw", "forward": "backward", "backward": "forward"}[working.sense]
+    other = OTHER_SENSE[working.sense]
     dropped = [load.where for load in mechanism.scene.loads if load.during not in ("idle", "always")]
     unused = f"; {', '.join(dropped)} of the working stroke {'is' if len(dropped) == 1 else 'are'} never applied" \
         if dropped else ""

@@ -28,7 +28,7 @@ import numpy as np
 from .analysis import Analysis
 from .loads import activity, external_names, stroke_ends, stroke_share
 from .positions import in_working_stroke, stroke_extremes
-from .scene import LoadSpec, Working
+from .scene import OTHER_SENSE, LoadSpec, Working
 
 
 @dataclass(frozen=True)
@@ -71,12 +71,7 @@ class LoadDiagram:
         share = float(self.coordinates[index] / self.travel)
         if self.in_reference[index]:
             return self.reference.sense, share
-        return other_sense(self.reference.sense), 1.0 - share
-
-
-def other_sense(sense: str) -> str:
-    """The sense of a link's other stroke."""
-    return {"forward": "backward", "backward": "forward", "ccw": "cw", "cw": "ccw"}[sense]
+        return OTHER_SENSE[self.reference.sense], 1.0 - share
 
 
 def drawn(spec: LoadSpec) -> bool:
@@ -176,4 +171,4 @@ def _outline(spec: LoadSpec, along) -> tuple[tuple[float, float], ...]:
     return ((first[0], 0.0), *corners, (last[0], 0.0))
 
 
-__all__ = ["DrawnLoad", "LoadDiagram", "drawn", "of_analysis", "other_sense", "unavailable"]
+__all__ = ["DrawnLoad", "LoadDiagram", "drawn", "of_analysis", "unavailable"]

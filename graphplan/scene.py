@@ -41,6 +41,8 @@ MAX_POSITIONS = 100_000
 LOCALES = ("en", "ru", "zh")
 SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
+# Each sense's opposite: a link's other stroke.
+OTHER_SENSE = {"ccw": "cw", "cw": "ccw", "forward": "backward", "backward": "forward"}
 STROKES = ("working", "idle", "always")
 # The most velocity plans of every position one scene draws: a course project draws 12, a fine one 24 or 36.
 MOST_VELOCITY_PLANS = 48

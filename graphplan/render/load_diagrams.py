@@ -22,9 +22,10 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
-from ..load_diagrams import LoadDiagram, other_sense
+from ..load_diagrams import LoadDiagram
 from ..locale import strings
 from ..scales import fit_scale, format_scale
+from ..scene import OTHER_SENSE
 from .diagrams import (
     AXIS_HEAD_MM,
     AXIS_RUN_MM,
@@ -244,7 +245,7 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
     for load in diagram.loads:
         stroke = _STROKES[0 if load.with_reference else 1]
         own = load.spec.stroke or diagram.reference
-        sense = own.sense if load.spec.during != "idle" else other_sense(own.sense)
+        sense = own.sense if load.spec.during != "idle" else OTHER_SENSE[own.sense]
         items.append(Polyline(((0.0, y + SCALE_SIZE / 3), (10.0, y + SCALE_SIZE / 3)), stroke))
         items.append(Text((12.0, y), words["ld_legend"].format(name=load.name, stroke=words[f"ld_stroke_{sense}"],
                                                               link=own.link), SCALE_SIZE, "start"))
