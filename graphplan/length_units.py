@@ -40,11 +40,10 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     if longest > LONGEST_LINK_M:
         told.append(f"{key} = {longest:g} m is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
     else:
-        points = list(mechanism.scene.frame_points.items())
-        (first, origin) = points[0]
-        name, far = max(points, key=lambda item: abs(item[1] - origin))
-        if abs(far - origin) > LONGEST_LINK_M:
-            told.append(f"frame.points.{name} = [{far.real:g}, {far.imag:g}] lies {abs(far - origin):.4g} m from "
+        spread = _frame_spread(mechanism)
+        if spread is not None and spread[3] > LONGEST_LINK_M:
+            first, name, far, apart = spread
+            told.append(f"frame.points.{name} = [{far.real:g}, {far.imag:g}] lies {apart:.4g} m from "
                         f"{first}, farther apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
     driver = mechanism.driver
     fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S
@@ -60,6 +59,16 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
                             f"lengths are in metres (divide them by 1000){unless}"),)
 
 
+def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | None:
+    """The frame's first point, the point farthest from it with where it stands, and how far apart they are."""
+    points = list(mechanism.scene.frame_points.items())
+    if not points:
+        return None
+    first, origin = points[0]
+    name, far = max(points, key=lambda item: abs(item[1] - origin))
+    return first, name, far, abs(far - origin)
+
+
 # A linkage's lengths stand within some 1:50 of each other (a shaper's 0.1 m crank beside its 0.6 m rocker is
 # 1:6): a length MIXED_RATIO times another is one in millimetres among metres.
 MIXED_RATIO = 200.0
@@ -70,12 +79,10 @@ def mixed_units(mechanism: Mechanism) -> str | None:
     :data:`LONGEST_LINK_M`, or :data:`MIXED_RATIO` times another (the frame's pivots' spread among them); None
     where the lengths are plausible together, and the geometry is to check."""
     lengths = [(f"{key} = {value:g} m", value) for key, value in given_lengths(mechanism) if value > 0]
-    points = list(mechanism.scene.frame_points.items())
-    if points:
-        first, origin = points[0]
-        name, far = max(points, key=lambda item: abs(item[1] - origin))
-        if abs(far - origin) > 0:
-            lengths.append((f"frame.points.{name} ({abs(far - origin):g} m from {first})", abs(far - origin)))
+    spread = _frame_spread(mechanism)
+    if spread is not None and spread[3] > 0:
+        first, name, _, apart = spread
+        lengths.append((f"frame.points.{name} ({apart:g} m from {first})", apart))
     if len(lengths) < 2:
         return None
     (long_one, longest), (short_one, shortest) = max(lengths, key=lambda item: item[1]), min(
