@@ -142,3 +142,63 @@ def test_a_block_on_the_lever_s_pivot_at_the_first_position_is_refused_in_one_li
                       "passes over C, so nothing fixes the direction of link 4; the first position fixes each group's "
                       "assembly and may not be singular: start the run elsewhere (positions.start)")]
     assert not (tmp_path / "out").exists()
+
+
+# A piston A on the x axis drives crank CB through rod AB: at s = AC = AB − BC = 0.2 rod and crank lie in one line,
+# the crank's dead centre, which a push along the line cannot turn it through. In binary 0.3 − 0.1 falls short of 0.2,
+# so the triangle's squared height came out as rounding above zero.
+PISTON_TO_DEAD_CENTRE = """
+[frame]
+points = { G = [0.0, 0.0], C = [0.4, 0.0] }
+[driver]
+kind = "slider"
+link = 2
+joint = "A"
+guide = { through = "G", angle = 0.0 }
+travel = [0.02, 0.2]
+velocity = 0.5
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.3, 0.1]
+assembly = "left"
+[links.2]
+mass = 0.0
+[[loads]]
+kind = "moment"
+link = 4
+value = 10.0
+resisting = true
+during = "always"
+[positions]
+count = 9
+plans = [1]
+"""
+
+
+def _crank_speed(s: float, h: float = 1e-6) -> float:
+    """ω4 = dθ/dt of crank CB by a central difference of its law-of-cosines angle, with ds/dt = 0.5 m/s."""
+    def angle(x: float) -> float:
+        span = 0.4 - x  # A = (x, 0), C = (0.4, 0)
+        at_c = math.acos((0.1 ** 2 + span ** 2 - 0.3 ** 2) / (2 * 0.1 * span))
+        return math.pi - at_c  # "left": B above the line A→C, CB measured from +x
+    return 0.5 * (angle(s + h) - angle(s - h)) / (2 * h)
+
+
+def test_a_travel_typed_to_end_at_the_crank_s_dead_centre_is_singular_there_and_nowhere_else(tmp_path):
+    """The last position was solved from rounding: ω4 = −1.3e8 rad/s and Fb = 8e29 N in results.json, beside which
+    every other position's whole-mechanism equilibrium was written as 0 (noise)."""
+    scene = tmp_path / "piston.toml"
+    scene.write_text(PISTON_TO_DEAD_CENTRE, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "forces"]) == 0
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    assert [(w["position"], w["code"]) for w in document["warnings"]] == [(9, "singular")]
+    *regular, last = document["positions"]
+    assert last["links"]["4"]["omega"] is None and last["equilibrium"]["balancing_force"] is None
+    for position in regular:
+        s = position["driver"]["displacement"]
+        omega = _crank_speed(s)
+        assert position["links"]["4"]["omega"] == pytest.approx(omega, rel=1e-6)
+        # Massless links: the piston's push does the moment's work, Fb·v = M·|ω4|.
+        assert position["equilibrium"]["balancing_force"] == pytest.approx(10.0 * abs(omega) / 0.5, rel=1e-6)

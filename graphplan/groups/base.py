@@ -25,12 +25,15 @@ from ..reader import Table, check_str, check_xy
 SINGULAR_SINE = 1e-12
 # A squared height this small (relative to the squares it is the difference
 # of) is rounding at a toggle: the joint lies on the line, and is placed there.
+# Either side of zero: a travel typed to end at a dead centre (0.3 − 0.1 falls
+# short of 0.2 in binary) left a height of 1e-8 above it, and a "position"
+# whose velocities were rounding divided by rounding (ω 1e8 rad/s, Fb 1e29 N).
 TOGGLE_ROUNDING = 1e-12
 
 
-def at_toggle(square: np.ndarray | float, scale: float) -> np.ndarray | float:
-    """``square`` with rounding below zero at a toggle set to zero; a real shortfall stays negative."""
-    return np.where((square < 0) & (square > -TOGGLE_ROUNDING * scale), 0.0, square)
+def at_toggle(square: np.ndarray | float, scale: np.ndarray | float) -> np.ndarray | float:
+    """``square`` with rounding either side of zero at a toggle set to zero; a real shortfall stays negative."""
+    return np.where(np.abs(square) < TOGGLE_ROUNDING * scale, 0.0, square)
 
 
 @dataclass(frozen=True)

@@ -92,10 +92,10 @@ class RRR(Group):
                 why = f"{a_name}–{c_name} = {near} m < |{a_name}{b_name} − {b_name}{c_name}| = {reach} m"
             return AssemblyError(b_name, at, self.label, why)
 
+        with np.errstate(invalid="ignore"):  # A on C: inf − inf, refused below
+            h2 = at_toggle(h2, ab * ab * inverse)
         if not np.min(h2) >= 0:  # NaN fails too
-            h2 = at_toggle(h2, 1.0)
-            if not np.min(h2) >= 0:
-                context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
+            context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
         # AB = AC·(x + ih), built in place: h straight into its imaginary part, then turned and scaled by AC.
         arm = np.empty(d.shape, dtype=complex)
         arm.real = x
