@@ -421,43 +421,82 @@ def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tup
     one range (0, 2π); one that assembles nowhere has none.  ``reference``: the assemblies a solve took
     elsewhere (from the first of the values a caller gave).
     """
+    grid = 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
+    found = _assembled_ranges(_assembles(mechanism, reference), grid, wraps=True, tolerance=1e-9)
+    if found is None:
+        return ((0.0, 2.0 * math.pi),)
+    ranges = []
+    for lower, upper in found:
+        if lower >= math.pi and upper > 2.0 * math.pi:  # through 0: from a negative angle
+            lower, upper = lower - 2.0 * math.pi, upper - 2.0 * math.pi
+        if upper - lower > _REACH_POINT:  # not one angle alone, where it happens to assemble
+            ranges.append((lower, upper))
+    return tuple(sorted(ranges))
+
+
+def travel_reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
+    """The ranges of a slider driver's typed travel (m, in the travel's own order) in which the mechanism
+    assembles, found as :func:`reach` finds a crank's, on a grid of the travel's 720th parts."""
+    low, high = sorted(mechanism.driver.travel)
+    grid = np.linspace(low, high, _REACH_GRID + 1)
+    found = _assembled_ranges(_assembles(mechanism, None), grid, wraps=False, tolerance=1e-9 * (high - low))
+    ranges = ((low, high),) if found is None else \
+        tuple((lower, upper) for lower, upper in found if upper - lower > 1e-6 * (high - low))
+    return ranges if mechanism.driver.travel[0] <= mechanism.driver.travel[1] else \
+        tuple((upper, lower) for lower, upper in reversed(ranges))
+
+
+def _assembles(mechanism: Mechanism, reference: Reference | None) -> Callable[[float], bool]:
+    """Whether every group assembles at a driver's value in the scene's assembly (taken at the first position
+    where it can be, or ``reference``'s); a toggle counts as assembled."""
     reference = reference or _first_assembly(mechanism)
 
-    def assembles(angle: float) -> bool:
+    def assembles(value: float) -> bool:
         try:
             if reference is None:
-                reference_at(mechanism, angle)
+                reference_at(mechanism, value)
             else:
-                solve(mechanism, np.array([angle]), reference)
+                solve(mechanism, np.array([value]), reference)
         except AssemblyError:
             return False
         except SingularPositionError:  # assembled, at a toggle
             return True
         return True
 
-    grid = 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
-    inside = np.array([assembles(float(angle)) for angle in grid])
-    if inside.all():
-        return ((0.0, 2.0 * math.pi),)
-    step = grid[1]
+    return assembles
 
-    from scipy.optimize import bisect  # imported here: only a crank that cannot turn round needs it
+
+def _assembled_ranges(assembles: Callable[[float], bool], grid: np.ndarray, wraps: bool,
+                      tolerance: float) -> list[tuple[float, float]] | None:
+    """The ranges of the driver's value where ``assembles``, None where it assembles all over ``grid``: bracketed
+    on ``grid`` (evenly spaced; ``wraps`` round its end to its start for a crank's turn), each end found by
+    bisection to ``tolerance``."""
+    inside = np.array([assembles(float(value)) for value in grid])
+    step = grid[1] - grid[0]
+    if inside.all():
+        return None
+
+    from scipy.optimize import bisect  # imported here: only a driver that cannot go everywhere needs it
 
     def end(inner: float, outer: float) -> float:
-        """The end of a range between a grid angle inside it and the next one outside it."""
-        if assembles(outer):  # it fails at that one angle alone (its outer joints meet), not a rounding off it
+        """The end of a range between a grid value inside it and the next one outside it."""
+        if assembles(outer):  # it fails at that one value alone (its outer joints meet), not a rounding off it
             return outer
-        return bisect(lambda angle: 1.0 if assembles(angle) else -1.0, min(inner, outer), max(inner, outer),
-                      xtol=1e-9)
+        return bisect(lambda value: 1.0 if assembles(value) else -1.0, min(inner, outer), max(inner, outer),
+                      xtol=tolerance)
 
+    if wraps:
+        firsts = np.flatnonzero(inside & ~np.roll(inside, 1))
+        counts = [int(np.argmin(np.roll(inside, -first))) for first in firsts]  # up to the first outside
+    else:
+        edges = np.diff(np.concatenate([[0], inside.astype(int), [0]]))
+        firsts = np.flatnonzero(edges == 1)
+        counts = list(np.flatnonzero(edges == -1) - firsts)
     ranges = []
-    for first in np.flatnonzero(inside & ~np.roll(inside, 1)):  # each range's first angle on the grid
-        count = int(np.argmin(np.roll(inside, -first)))  # its angles on the grid, up to the first outside
-        lower = end(float(grid[first]), float(grid[first] - step))
+    for first, count in zip(firsts, counts, strict=True):
         last = float(grid[first] + (count - 1) * step)
-        upper = end(last, last + step)
-        if lower >= math.pi and upper > 2.0 * math.pi:  # through 0: from a negative angle
-            lower, upper = lower - 2.0 * math.pi, upper - 2.0 * math.pi
-        if upper - lower > _REACH_POINT:  # not one angle alone, where it happens to assemble
-            ranges.append((lower, upper))
-    return tuple(sorted(ranges))
+        # A travel's own ends bound it: what lies past them was not asked for.
+        lower = float(grid[0]) if not wraps and first == 0 else end(float(grid[first]), float(grid[first] - step))
+        upper = float(grid[-1]) if not wraps and first + count == len(grid) else end(last, last + step)
+        ranges.append((lower, upper))
+    return ranges

@@ -18,7 +18,7 @@ from .groups.base import Group
 from .length_units import mixed_units
 from .mechanism import Mechanism, build
 from .motion import reference_at
-from .positions import reach
+from .positions import reach, travel_reach
 from .scene import Scene
 
 
@@ -33,6 +33,11 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
         if (units := mixed_units(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {units}") from error
         driver = mechanism.driver
+        if driver.kind == "slider":
+            advice = _travel_advice(mechanism)
+            if advice is None:
+                raise
+            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
         if driver.kind != "crank":
             raise
         taken = None
@@ -51,6 +56,36 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
                   else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
                                      runs=functools.partial(_swing_that_runs, mechanism.scene)))
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
+
+
+def _travel_advice(mechanism: Mechanism) -> str | None:
+    """What part of a slider's typed travel the mechanism assembles over, and a travel within it that runs; None
+    where it is all of it (the solve lost its assembly, and the lengths are no help)."""
+    travel = mechanism.driver.travel
+    ranges = travel_reach(mechanism)
+    if ranges == (travel,):
+        return None
+    if not ranges:
+        return "the mechanism assembles nowhere along driver.travel: check the lengths"
+    quantum = 10.0 ** (math.floor(math.log10(abs(travel[1] - travel[0]))) - 5)
+    spans = " and ".join(f"from s = {_inward_m(first, last, quantum)} m to s = {_inward_m(last, first, quantum)} m"
+                         for first, last in ranges)
+    # An end inside the typed travel is a dead centre: singular, and refused as the first position.
+    first, last = max(ranges, key=lambda span: abs(span[1] - span[0]))
+    inset = 0.01 * (last - first)
+    example = [end if end in travel else end + sign * inset for end, sign in ((first, 1.0), (last, -1.0))]
+    quantum = 10.0 ** (math.floor(math.log10(abs(inset))) - 1)
+    return (f"along the travel typed the mechanism assembles only {spans} (an end inside the travel typed is a "
+            f"dead centre: two links stand in line): keep driver.travel within {'it' if len(ranges) == 1 else 'one'}"
+            f", e.g. driver.travel = [{_inward_m(example[0], example[1], quantum)}, "
+            f"{_inward_m(example[1], example[0], quantum)}]")
+
+
+def _inward_m(end: float, other_end: float, quantum: float) -> str:
+    """An end of a travel to ``quantum`` (m), rounded towards ``other_end`` past the bisection's last digits, so
+    that a travel to it as written assembles."""
+    rounding = math.ceil if other_end > end else math.floor
+    return f"{rounding(round(end / quantum, 4)) * quantum + 0.0:.6g}"
 
 
 def _mirrored_sketch(mechanism: Mechanism) -> str | None:

@@ -2,6 +2,7 @@
 
 import json
 import math
+import re
 
 import pytest
 
@@ -202,3 +203,24 @@ def test_a_travel_typed_to_end_at_the_crank_s_dead_centre_is_singular_there_and_
         assert position["links"]["4"]["omega"] == pytest.approx(omega, rel=1e-6)
         # Massless links: the piston's push does the moment's work, Fb·v = M·|ω4|.
         assert position["equilibrium"]["balancing_force"] == pytest.approx(10.0 * abs(omega) / 0.5, rel=1e-6)
+
+
+@pytest.mark.parametrize(("travel", "ends"), [([-0.05, 0.2], (0.0, 0.2)), ([0.05, 0.35], (0.05, 0.2)),
+                                             ([0.35, 0.05], (0.2, 0.05))])
+def test_a_travel_past_the_reach_is_told_the_part_of_it_that_assembles(tmp_path, capsys, travel, ends):
+    """The piston's rod AB = 0.3 and crank BC = 0.1 close on C = (0.4, 0) for 0.2 ≤ |A–C| ≤ 0.4, s = 0.4 − |A–C|:
+    from s = 0 (stretched) to s = 0.2 (folded). The refusal named neither, where a swing's names its reach."""
+    scene = tmp_path / "piston.toml"
+    scene.write_text(PISTON_TO_DEAD_CENTRE.replace("travel = [0.02, 0.2]", f"travel = {travel}"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    told = capsys.readouterr().err
+    first, last = (float(x) for x in re.search(r"assembles only from s = (-?[\d.]+) m to s = (-?[\d.]+) m", told).groups())
+    assert (first, last) == pytest.approx(ends, abs=1e-6)
+    assert not (tmp_path / "out").exists()
+    # The travel it gives for an example runs: within those ends, short of a dead centre at its first end.
+    example = re.search(r"e\.g\. driver\.travel = (\[[-\d., ]+\])", told).group(1)
+    begin, end = json.loads(example)
+    assert min(first, last) <= min(begin, end) < max(begin, end) <= max(first, last)
+    assert (begin - end) * (travel[0] - travel[1]) > 0
+    scene.write_text(PISTON_TO_DEAD_CENTRE.replace("travel = [0.02, 0.2]", f"travel = {example}"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "velocity"]) == 0
