@@ -129,3 +129,8 @@ def test_the_command_line_draws_and_writes_the_swing_s_equivalent_model(tmp_path
     assert {0, 10, 20, 30, 40} <= ticks and not ticks & {50, 60, 90, 360}
     note = (out / "note.md").read_text(encoding="utf-8")
     assert "which rocks over its swing" in note and "over the swing ranges from" in note
+    # A swing has no flywheel, and its figure says none (its caption named one); the steps are the scene's
+    # count (one sample more than it, 91, was told as the samples: count = 81 over 80° gave 82).
+    captions = [line for line in note.splitlines() if line.startswith("Figure") and "Dynamics" in line]
+    assert captions and not [line for line in captions if "flywheel" in line]
+    assert f"over the swing ({SAMPLES} steps)" in note and len(found["angle_deg"]) == SAMPLES + 1

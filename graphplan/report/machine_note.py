@@ -66,8 +66,9 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
         note.para(note.t("note_dyn_model_diagrams", count=Count(given), inertia=note.n(model.mean_inertia)))
     else:
+        # The scene's steps: the samples are one more over a travel, and more again where a load switches on.
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
-                         count=len(model.coordinate)))
+                         count=note.scene.dynamics.count))
         if note.scene.friction:   # the force analysis takes it in, and a reader would think these numbers do too
             note.para(note.text["note_dyn_without_friction"])
     if model.plans:
@@ -80,7 +81,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
                      value=note.n(float(np.ptp(energy)))))
     if flywheel is not None:
         _flywheel(note, flywheel, model)
-    note.figure("dynamics.svg", note.text["dyn_title"])
+    note.figure("dynamics.svg", note.text["dyn_title" if flywheel is not None else "dyn_title_model"])
     if dynamics.motion is not None:
         _motion(note, dynamics, flywheel)
         note.figure("motion.svg", note.t("motion_title", title=note.scene.title), lead="plot_lead")
