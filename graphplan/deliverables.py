@@ -178,7 +178,7 @@ def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         found.append(Drawing("rotor_balancing", rotor))
     if sheets:
         found += _machine_sheets(scene, machine, rotor, larger)
-    return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.title))
+    return [dataclasses.replace(drawing, layers=in_language(drawing.layers, scene.locale, scene.own_words))
             for drawing in found]
 
 

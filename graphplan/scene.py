@@ -202,6 +202,14 @@ class Scene:
     project: Project = Project()
 
     @property
+    def own_words(self) -> tuple[str, ...]:
+        """What a drawing quotes as written, never put into its language: the title and the loads' names (a link's
+        second load F4.2 is no decimal number, to be written F4,2 in Russian)."""
+        from .loads import external_names
+
+        return (self.title, *external_names(self.loads))
+
+    @property
     def has_linkage(self) -> bool:
         """Whether the scene describes a mechanism (a rotor, a vibrating machine or a load diagram alone does not)."""
         return self.driver is not None

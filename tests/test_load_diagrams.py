@@ -172,6 +172,18 @@ def test_the_load_diagrams_stand_on_a_force_sheet_and_are_written_alone():
     assert any(layer.name == "load-4-curves" for layer in alone.layers)
 
 
+def test_a_russian_drawing_writes_its_numbers_with_a_comma_and_the_loads_names_as_named():
+    """F4.1 and F4.2 are the first and second loads on link 4 (as the note and the force sheets call them): the
+    decimal-comma pass wrote them F4,1 and F4,2 on a Russian drawing."""
+    text = COMPRESSOR.read_text(encoding="utf-8").replace('locale  = "en"', 'locale  = "ru"')
+    assert 'locale  = "ru"' in text
+    analysis = graphplan.load_text(text).analyse()
+    made = drawings(analysis.scene, analysis, chosen(analysis.scene, analysis, ["load_diagrams"]))
+    (drawing,) = [drawing for drawing in made if drawing.stem == "load_diagrams"]
+    texts = [item.text for layer in drawing.layers for item in layer.items if isinstance(item, Text)]
+    assert "F4.1 = 407,7 Н" in texts and "F4.2 = −150 Н" in texts
+
+
 def test_the_note_tables_each_position_s_value_and_shows_the_figure():
     analysis = compressor()
     note = note_markdown(analysis, figures={"load_diagrams.svg"})

@@ -227,7 +227,7 @@ def fitting_length_scale(analysis: Analysis, sheet: str, least: float, either_wa
 
 def _svg(analysis: Analysis, layers: list[Layer]) -> str:
     """The SVG text of a drawing of the analysis, its numbers with the decimal mark of the scene's language."""
-    return to_svg(in_language(layers, analysis.scene.locale, analysis.scene.title))
+    return to_svg(in_language(layers, analysis.scene.locale, analysis.scene.own_words))
 
 
 def positions_svg(analysis: Analysis) -> str:

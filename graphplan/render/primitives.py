@@ -345,11 +345,12 @@ def with_decimal_mark(layers: Sequence[Layer], mark: str, kept: Iterable[str] = 
             for layer in layers]
 
 
-def in_language(layers: Sequence[Layer], locale: str, title: str = "") -> list[Layer]:
-    """``layers`` with the decimal mark of ``locale``; the scene's ``title`` as the user wrote it."""
+def in_language(layers: Sequence[Layer], locale: str, own_words: Iterable[str] = ()) -> list[Layer]:
+    """``layers`` with the decimal mark of ``locale``; the scene's ``own_words`` (``Scene.own_words``) as the user
+    wrote them."""
     from ..locale import strings
 
-    return with_decimal_mark(layers, strings(locale)["decimal_mark"], (title,))
+    return with_decimal_mark(layers, strings(locale)["decimal_mark"], own_words)
 
 
 def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
