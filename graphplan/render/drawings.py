@@ -11,6 +11,7 @@ import numpy as np
 from ..analysis import Analysis, PlanPosition, VelocityPosition, instant
 from ..errors import SceneError
 from ..forces import POLYGON_FIELD_MM, GroupForces, polygon_extent
+from ..kinematics import at
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
@@ -262,7 +263,42 @@ def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.
         emphasised=analysis.emphasised,
         paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption,
         extremes=extreme_names(analysis, drawn),
-        marked=tuple(sorted({int(analysis.positions.numbers[plan.index]) for plan in analysis.plans})))
+        marked=tuple(sorted({int(analysis.positions.numbers[plan.index]) for plan in analysis.plans})),
+        travel=dimensioned_travel(analysis, text))
+
+
+def dimensioned_travel(analysis: Analysis, text: Mapping[str, str]) -> positions.Travel | None:
+    """What travel the plan of positions dimensions between its bold positions: a slider driver's stroke (a
+    cylinder's), or the working link's, its stroke H where it slides on a frame guide, its swing ψ where it rocks
+    about a frame pivot; None where the bold positions are no two extremes (a crank turning with no working link)."""
+    mechanism, emphasised = analysis.mechanism, analysis.emphasised
+    driver = mechanism.driver
+    if emphasised.count < 2:
+        return None
+    if driver.kind == "slider":
+        point, link = driver.joint, driver.link
+    else:
+        working = analysis.scene.positions.working
+        if working is None or analysis.positions.extremes is None:
+            return None
+        link = working.link
+        frame = mechanism.scene.frame_link
+        if link in mechanism.translating:
+            point = next((slide.joint for slide in emphasised.slides if slide.slider == link and slide.guide == frame),
+                         None)
+        else:
+            pivot = next((joint for joint, first, second in mechanism.revolutes if {first, second} == {link, frame}),
+                         None)
+            if pivot is None:
+                return None
+            turned = emphasised.links[link].angle
+            swing = abs(math.degrees(math.remainder(float(at(turned, 1)) - float(at(turned, 0)), 2 * math.pi)))
+            return positions.Travel(pivot, link, f"ψ = {swing:.1f}°", swing=True)
+        if point is None:
+            return None
+    track = emphasised.points[point].r
+    stroke = abs(complex(at(track, 1)) - complex(at(track, 0)))
+    return positions.Travel(point, link, f"H = {stroke:.4g} {text['unit_m']}")
 
 
 def extreme_names(analysis: Analysis, drawn: Sequence[int]) -> tuple[str, ...]:

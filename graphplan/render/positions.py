@@ -24,6 +24,7 @@ from shapely.strtree import STRtree
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
+from . import dimensions
 from .labels import LABEL_SPACING, Anchor, obstacles_of, place_labels, spaced_box, text_box
 from .linkage import (
     GROUND_MARGIN_MM,
@@ -49,6 +50,8 @@ from .primitives import (
     dot_marker,
     slider_block,
     text_width,
+    to_complex,
+    to_xy,
 )
 
 _POSITION_STROKE = Stroke(0.3, "#7a7a7a")
@@ -85,6 +88,19 @@ class PositionsPlan:
     caption: str
     extremes: tuple[str, ...] = ()
     marked: tuple[int, ...] = ()
+    travel: Travel | None = None
+
+
+@dataclass(frozen=True)
+class Travel:
+    """The travel between the two bold positions that the plan of positions dimensions, as a course drawing marks
+    it: a slider's stroke H, where ``point`` slides along a frame guide, or a rocker's swing ψ, ``link`` rocking
+    about the frame pivot ``point``; ``text`` is what is written (H = 0.2 m)."""
+
+    point: str
+    link: int
+    text: str
+    swing: bool = False
 
 
 def layout(plan: PositionsPlan) -> list[Layer]:
@@ -99,7 +115,8 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
     frame = _frame(plan, paper)
     paths = _paths(plan, paper)
-    drawn = every + bold + frame + paths
+    dimension, swing_label = _travel_dimension(plan, paper, outlines, every + bold + frame + paths)
+    drawn = every + bold + frame + paths + dimension
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together.
         numbers, number_leaders = _numbers_round_the_circle(plan, paper, obstacles_of(bold))
@@ -107,10 +124,11 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels = place_labels(anchors, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
+    labels = place_labels(anchors + swing_label, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
                           standing=numbers)
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
-              Layer("frame", tuple(frame)), Layer("leaders", tuple(number_leaders) + labels.leaders),
+              Layer("frame", tuple(frame)), Layer("travel", tuple(dimension)),
+              Layer("leaders", tuple(number_leaders) + labels.leaders),
               Layer("labels", tuple(numbers) + labels.texts + tuple(_centre_marks(plan, paper)))]
     xmin, _, _, ymax = bounds(layers)
     # Lettered as the plan sheets' headings beside it on the kinematics sheet: the title over its scale.
@@ -150,6 +168,51 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
     items.extend(frame_pivots(mechanism, paper))
     items.extend(loose_frame_points(mechanism, paper))
     return items
+
+
+# How far a stroke's dimension line stands off the slider's joint: past the block and the guide's hatching (mm).
+_STROKE_OFFSET_MM = 10.0
+# The radii a swing's arc is tried at, as shares of the rocker's length on the paper (the middle one preferred),
+# and the least radius it is drawn at (mm).
+_SWING_SHARES = (0.55, 0.5, 0.6, 0.45, 0.65, 0.4, 0.7, 0.35, 0.75, 0.8, 0.85)
+_SWING_LEAST_MM = 8.0
+
+
+def _travel_dimension(plan: PositionsPlan, paper: Paper, outlines: dict[int, list[str]],
+                      drawn: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
+    """The stroke H or the swing ψ between the two bold positions, dimensioned, and a swing's label to place at
+    its arc's middle; nothing where there are not two.  A swing's arc is drawn at the radius where it crosses the
+    fewest of the ``drawn`` lines (through the crank's circle, the quick-return lever's ran over the crank)."""
+    travel, bold = plan.travel, plan.emphasised
+    if travel is None or bold.count < 2:
+        return [], []
+    track = [to_complex(paper(complex(at(bold.points[travel.point].r, i)))) for i in (0, 1)]
+    if not travel.swing:
+        # Out from the mechanism's middle, where the guide's hatching is and nothing else is drawn.
+        middle = np.mean([to_complex(paper(complex(r))) for point in plan.paths.points.values()
+                          for r in np.atleast_1d(point.r)])
+        return dimensions.linear(to_xy(track[0]), to_xy(track[1]), (track[0] + track[1]) / 2 - middle,
+                                 _STROKE_OFFSET_MM, travel.text), []
+    pivot = track[0]
+    far = max((name for name in outlines.get(travel.link, ()) if name != travel.point),
+              key=lambda name: abs(complex(at(bold.points[name].r, 0)) - complex(at(bold.points[travel.point].r, 0))),
+              default=None)
+    if far is None:
+        return [], []
+    ends = [to_complex(paper(complex(at(bold.points[far].r, i)))) - pivot for i in (0, 1)]
+    start = cmath.phase(ends[0])
+    sweep = cmath.phase(ends[1] / ends[0])
+    shapes = STRtree(obstacles_of(drawn))
+
+    def crossings(share: float) -> int:
+        arc = dimensions.angular(to_xy(pivot), share * min(abs(end) for end in ends), start, sweep)[0]
+        return len(shapes.query(shapely.LineString(arc.points), predicate="intersects"))
+
+    share = min(_SWING_SHARES, key=crossings)  # the first of the fewest: the nearest the middle share
+    radius = max(share * min(abs(end) for end in ends), _SWING_LEAST_MM)
+    middle = start + sweep / 2
+    label = Anchor(to_xy(pivot + cmath.rect(radius, middle)), travel.text, _LABEL, prefer=middle)
+    return dimensions.angular(to_xy(pivot), radius, start, sweep), [label]
 
 
 def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
