@@ -22,11 +22,18 @@ positive when it drives the motion on (``Me·|ω1|`` is the power the loads put 
 read as the textbook draws them: ``Ad = ∫Md dψ`` and ``Ar = −∫Mr dψ``, both positive, and the
 kinetic energy changes by ``ΔT = Ad − Ar``.
 
-Driving and resisting.  A scene load marked ``resisting = true`` is a resistance, any other load
-drives; the weights are counted with the resistances (they do no work over a cycle).  Unless the
-scene gives both, one side is taken constant so that the work over the cycle balances, as the
-textbook takes the motor's moment constant: the driving moment when the scene gives no driving
-load, the resisting moment (the weights kept) when it gives no resisting one.
+Driving and resisting.  A scene load is sorted by its work over the run (the crank's cycle, the
+swing or the travel), ``∫Me dψ`` of the load alone.  A load marked ``resisting = true`` is a
+resistance.  The other loads drive where their work is positive, and are counted with the
+resistances, as the weights are, where it is zero (within :data:`NO_WORK` of the work they give and
+take) or negative: a payload given as a force of fixed direction that a cylinder lifts, a force that
+opposes a swing all over it.  Such loads along one line at one point (moments on one link) are one
+force given over several strokes, and are sorted as one: an engine's gas force, given as one load a
+stroke, takes work on compression but gives more on expansion, and drives; a compressor's takes
+work over the cycle, and resists.  Unless the scene gives both sides, one side is taken constant so
+that the work over the run balances, as the textbook takes the motor's moment constant: the
+driving moment (a cylinder's push) when no load drives, the resisting moment when no load is
+marked resisting (the weights, and the loads counted with them, kept).
 
 The reduction is also made from the velocity plans of the plan positions and of the positions of
 ``positions.velocity_plans`` (ratios read off the plans), so that the two can be compared
@@ -95,6 +102,16 @@ def _percent(value: float, exact: float) -> float:
 
 
 @dataclass(frozen=True)
+class MovedLoad:
+    """A load the scene gives as driving (``resisting = false``) that gives no work over the run, counted with the
+    resistances: ``loads``, its key paths (a force given over several strokes, or a window each, along one line at
+    one point, is their sum, and is sorted as one), and ``work``, its work over the run (J), zero or negative."""
+
+    loads: tuple[str, ...]
+    work: float
+
+
+@dataclass(frozen=True)
 class EquivalentModel:
     """The equivalent link of a machine over its cycle (a crank) or its travel (a slider driver).
 
@@ -129,8 +146,11 @@ class EquivalentModel:
         True when the samples close a cycle (a crank turning round, a load diagram's turn); False
         when they run once over a rocking crank's swing or a slider's travel.
     driving_loads, resisting_loads
-        The scene's loads on each side by their key paths (``loads[1]``), for the advice where the work does not
-        balance.
+        The scene's loads on each side by their key paths (``loads[1]``), sorted by their work over the run (see
+        the module's notes), for the advice where the work does not balance.
+    moved
+        The loads the scene gives as driving (``resisting = false``) that are counted with the resistances, as
+        :class:`MovedLoad`: each with its work over the run, zero or negative.
     """
 
     kind: str
@@ -149,6 +169,7 @@ class EquivalentModel:
     cyclic: bool = True
     driving_loads: tuple[str, ...] = ()
     resisting_loads: tuple[str, ...] = ()
+    moved: tuple[MovedLoad, ...] = ()
 
     @property
     def turning(self) -> bool:
@@ -214,8 +235,9 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
         :func:`graphplan.loads.activity` of the scene's loads at the samples; None lets every load act.
     constant
         Which reduced moment is taken constant so that the work over the samples balances:
-        ``"auto"`` (the driving one when the scene has no driving load, else the resisting one
-        when it has no resisting load, else none), ``"driving"``, ``"resisting"`` or ``"none"``.
+        ``"auto"`` (the driving one when no load drives, the loads sorted by their work over the run as the
+        module's notes say, else the resisting one when none is marked resisting, else none), ``"driving"``,
+        ``"resisting"`` or ``"none"``.
     plans
         Reductions of the plan positions to keep with the model (:func:`plan_reductions`).
     """
@@ -249,15 +271,20 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
             slope = slope + spec.inertia * _full(link.omega * steady_epsilon, count)
     slope = 2.0 * slope / (velocity * velocity * speed)
 
-    drive_power, resist_power = _powers(mechanism, state, acting, count)
-    driving, resisting = drive_power / speed, resist_power / speed
-    driving, resisting, chosen = _balanced(mechanism, coordinate, driving, resisting, constant)
+    weights, load_powers = _powers(mechanism, state, acting, count)
+    loads = mechanism.scene.loads
+    drives, moved = _sides(loads, [share / speed for share in load_powers], coordinate)
+    driving = sum((share for share, on in zip(load_powers, drives, strict=True) if on), np.zeros(count)) / speed
+    resisting = sum((share for share, on in zip(load_powers, drives, strict=True) if not on), weights) / speed
+    driving_loads = tuple(load.where for load, on in zip(loads, drives, strict=True) if on)
+    resisting_loads = tuple(load.where for load, on in zip(loads, drives, strict=True) if not on)
+    driving, resisting, chosen = _balanced(coordinate, driving, resisting, constant, driving_loads,
+                                           tuple(load.where for load in loads if load.resisting))
     return EquivalentModel(kind=driver.kind, link=driver.link, speed=speed, sense=sense, driver=values,
                            coordinate=coordinate, inertia=inertia, inertia_slope=slope,
                            link_inertia=MappingProxyType(shares), driving=driving, resisting=resisting,
                            constant=chosen, plans=tuple(plans), cyclic=driver.cyclic,
-                           driving_loads=tuple(load.where for load in mechanism.scene.loads if not load.resisting),
-                           resisting_loads=tuple(load.where for load in mechanism.scene.loads if load.resisting))
+                           driving_loads=driving_loads, resisting_loads=resisting_loads, moved=moved)
 
 
 def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
@@ -406,14 +433,14 @@ def plan_reductions(analysis: Analysis) -> tuple[PlanReduction, ...]:
     acting = activity(mechanism, analysis.positions, motion)
     exact_state = motion_state(motion)
     exact_inertia = sum(_link_inertia(mechanism, exact_state, velocity, motion.count).values(), np.zeros(motion.count))
-    exact_power = sum(_powers(mechanism, exact_state, acting, motion.count))
+    exact_power = _total_power(mechanism, exact_state, acting, motion.count)
     found = []
     for plan in analysis.drawn_velocities:  # only velocities enter: no acceleration is read
         index = plan.index
         state = plan_state(mechanism, plan.positions, plan.velocity, None)
         column = acting[:, index:index + 1]
         inertia = float(sum(_link_inertia(mechanism, state, velocity, 1).values(), np.zeros(1))[0])
-        moment = float(sum(_powers(mechanism, state, column, 1))[0]) / speed
+        moment = float(_total_power(mechanism, state, column, 1)[0]) / speed
         found.append(PlanReduction(plan.number, index, float(motion.driver[index]), inertia, moment,
                                    float(exact_inertia[index]), float(exact_power[index]) / speed))
     return tuple(found)
@@ -442,8 +469,9 @@ def _link_inertia(mechanism: Mechanism, state: State, velocity: float, count: in
     return shares
 
 
-def _powers(mechanism: Mechanism, state: State, acting: np.ndarray | None, count: int) -> tuple[np.ndarray, np.ndarray]:
-    """The power of the driving loads, and of the resisting loads with the weights (W), over the positions.
+def _powers(mechanism: Mechanism, state: State, acting: np.ndarray | None,
+            count: int) -> tuple[np.ndarray, list[np.ndarray]]:
+    """The power of the weights, and of each scene load (W), over the positions.
 
     Each scene load's power is that of all the loads with it alone acting, less that of all the
     loads with none acting: what :func:`graphplan.loads.link_loads` makes of it, and nothing else.
@@ -456,32 +484,75 @@ def _powers(mechanism: Mechanism, state: State, acting: np.ndarray | None, count
     acting = np.asarray(acting, dtype=float)
     if acting.shape != (len(loads), count):
         raise ValueError(f"acting must have shape {(len(loads), count)} (loads, positions), not {acting.shape}")
-    driving, resisting = np.zeros(count), np.zeros(count)
+    weights = np.zeros(count)
     for number, spec in _massive(mechanism):
         if spec.mass > 0 and scene.gravity != 0:
             # G = m·g along −y: its power is −m·g·vSy.
-            resisting = resisting - spec.mass * scene.gravity * _full(state.points[spec.centre].v.imag, count)
+            weights = weights - spec.mass * scene.gravity * _full(state.points[spec.centre].v.imag, count)
     if not loads:
-        return driving, resisting
+        return weights, []
     silent = np.zeros_like(acting)
     base = _full(power(link_loads(mechanism, state, silent), state), count)
-    for row, load in enumerate(loads):
+    shares = []
+    for row in range(len(loads)):
         alone = silent.copy()
         alone[row] = acting[row]
-        share = _full(power(link_loads(mechanism, state, alone), state), count) - base
-        if load.resisting:
-            resisting = resisting + share
+        shares.append(_full(power(link_loads(mechanism, state, alone), state), count) - base)
+    return weights, shares
+
+
+def _total_power(mechanism: Mechanism, state: State, acting: np.ndarray | None, count: int) -> np.ndarray:
+    """The power of the weights and of every scene load (W), over the positions."""
+    weights, shares = _powers(mechanism, state, acting, count)
+    return sum(shares, weights)
+
+
+#: A load's work over the run within this share of the work it gives and takes, ∫|Me| dψ, is none: a force of fixed
+#: direction on a crank turning round does none over the cycle, but the sum over the samples leaves some 10⁻⁶ of
+#: it where a load's window puts samples in unevenly (10⁻⁵ at 36 samples a turn).
+NO_WORK = 1e-4
+
+
+def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarray
+           ) -> tuple[list[bool], tuple[MovedLoad, ...]]:
+    """Whether each scene load drives, by its reduced moment's work over the run, and the loads given as driving
+    that are counted with the resistances.
+
+    A load given as resisting resists.  The other loads along one line at one point (a moment: on one link) are
+    one force, given over several strokes or windows (a gas force as its indicator diagram, one load a stroke),
+    and are sorted as one: they drive where their work is positive, and go with the weights where it is zero
+    (within :data:`NO_WORK` of the work they give and take) or negative.
+    """
+    forces: dict[tuple, list[int]] = {}
+    for row, load in enumerate(loads):
+        if not load.resisting:
+            forces.setdefault(_line(load), []).append(row)
+    drives = [False] * len(loads)
+    moved = []
+    for rows in forces.values():
+        work = sum(float(trapezoid(moments[row], coordinate)) for row in rows)
+        given = sum(float(trapezoid(np.abs(moments[row]), coordinate)) for row in rows)
+        if work > NO_WORK * given:
+            for row in rows:
+                drives[row] = True
         else:
-            driving = driving + share
-    return driving, resisting
+            moved.append(MovedLoad(tuple(loads[row].where for row in rows), work if abs(work) > NO_WORK * given
+                                   else 0.0))
+    return drives, tuple(moved)
 
 
-def _balanced(mechanism: Mechanism, coordinate: np.ndarray, driving: np.ndarray, resisting: np.ndarray,
-              constant: str) -> tuple[np.ndarray, np.ndarray, str]:
-    """The moments with one side made constant so that their work over the samples balances."""
-    loads = mechanism.scene.loads
-    drives = [load.where for load in loads if not load.resisting]
-    resists = [load.where for load in loads if load.resisting]
+def _line(load) -> tuple:
+    """What makes loads one force: its kind, link, point and direction (a moment: its kind and link)."""
+    if load.kind == "moment":
+        return load.kind, load.link
+    return load.kind, load.link, load.point, round((load.angle_deg or 0.0) % 360.0, 9) % 360.0
+
+
+def _balanced(coordinate: np.ndarray, driving: np.ndarray, resisting: np.ndarray, constant: str,
+              drives: Sequence[str], resists: Sequence[str]) -> tuple[np.ndarray, np.ndarray, str]:
+    """The moments with one side made constant so that their work over the samples balances; ``drives`` are the
+    scene's driving loads, ``resists`` those it gives as resisting (the loads given as driving that go with the
+    weights are kept with them)."""
     if constant == "auto":
         constant = "driving" if not drives else "resisting" if not resists else "none"
     if constant == "none":
@@ -494,7 +565,8 @@ def _balanced(mechanism: Mechanism, coordinate: np.ndarray, driving: np.ndarray,
     travel = float(coordinate[-1] - coordinate[0])
     if travel <= 0:
         raise ValueError("the driver does not move over the samples, so no constant moment balances their work")
-    # Every load on the replaced side is absent, so what is left of ``resisting`` is the weights, kept.
+    # Every load on the replaced side is absent, so what is left of ``resisting`` is the weights, and the loads
+    # counted with them, kept.
     level = -float(trapezoid(driving + resisting, coordinate)) / travel
     if constant == "driving":
         return driving + level, resisting, constant
@@ -513,5 +585,5 @@ def _full(value, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (count,))
 
 
-__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "EquivalentModel", "PlanReduction", "diagram_model",
-           "equivalent_model", "equivalent_model_of", "plan_reductions"]
+__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "NO_WORK", "EquivalentModel", "MovedLoad", "PlanReduction",
+           "diagram_model", "equivalent_model", "equivalent_model_of", "plan_reductions"]

@@ -256,7 +256,11 @@ def _balancing_advice(model: EquivalentModel) -> str:
     constant moment replaces a side, so ``constant`` has none to replace), a side left out or the moment that
     balances them added on the driving link."""
     driving, resisting = model.driving_loads, model.resisting_loads
-    absent = [side for side, given in (("driving", driving), ("resisting", resisting)) if not given]
+    # A side is left out where no load is on it, the resisting one where none is marked resisting: the loads given
+    # as driving that take work are kept with the weights, as a constant resisting moment keeps them.
+    moved = {where for load in model.moved for where in load.loads}
+    given = (("driving", driving), ("resisting", [where for where in resisting if where not in moved]))
+    absent = [side for side, loads in given if not loads]
     if absent:
         return f'take the {absent[0]} moment constant (constant = "{absent[0]}")'
     # The mean moment that makes up the work left over: a driving one in the sense of the crank's turn where the
@@ -568,7 +572,8 @@ def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel |
 def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -> dict[str, Any]:
     """The dynamics part of ``results.json``: SI, angles in degrees, unrounded (the writer rounds).
 
-    Per sample of the cycle: ``angle_deg`` (the driver's coordinate: crank angle in degrees, or
+    ``driving_loads`` and ``resisting_loads``: the scene's loads on each side by their key paths, sorted by their
+    work over the run (:mod:`graphplan.dynamics`).  Per sample of the cycle: ``angle_deg`` (the driver's coordinate: crank angle in degrees, or
     displacement in m under ``displacement``), ``travel`` (ψ), ``reduced_inertia``,
     ``reduced_inertia_slope``, ``reduced_moment`` (= ``driving_moment`` + ``resisting_moment``),
     ``driving_work``, ``resisting_work``, ``kinetic_energy_change``; then the flywheel.
@@ -578,6 +583,8 @@ def dynamics_results(model: EquivalentModel, flywheel: Flywheel | None = None) -
         "equivalent_link": "turning" if turning else "translating",
         "driver_link": model.link or None,  # a model made from load diagrams has no link
         "constant": model.constant,
+        "driving_loads": list(model.driving_loads),
+        "resisting_loads": list(model.resisting_loads),
     }
     if turning:
         found["angle_deg"] = _numbers(np.degrees(model.driver) % 360.0)

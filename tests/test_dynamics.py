@@ -235,11 +235,12 @@ def test_slider_crank_in_closed_form():
     np.testing.assert_allclose(model.inertia_slope, slope, rtol=0, atol=1e-11 * float(np.max(np.abs(slope))))
     # The massless crank's share is its constant moment of inertia about O.
     np.testing.assert_allclose(model.link_inertia[2], m2 * s2**2 + j2, rtol=1e-14)
-    # A force of 100 N along −x on the piston drives with F·vB/ω1 = −100·dxB/dφ; nothing resists
-    # but the constant moment that balances it, and the piston's travel over a cycle is zero.
-    np.testing.assert_allclose(model.driving, -force * x1, rtol=0, atol=1e-10 * force * r)
-    assert model.constant == "resisting"
-    np.testing.assert_allclose(model.resisting, 0.0, atol=1e-9 * force * r)
+    # A force of 100 N along −x on the piston gives F·vB/ω1 = −100·dxB/dφ.  The piston's travel over a cycle
+    # is zero, so it does no work over the cycle: it goes with the resistances, as a weight does, and the
+    # constant driving moment that balances it is none.
+    np.testing.assert_allclose(model.resisting, -force * x1, rtol=0, atol=1e-10 * force * r)
+    assert model.constant == "driving" and model.resisting_loads == ("loads[0]",) and model.driving_loads == ()
+    np.testing.assert_allclose(model.driving, 0.0, atol=1e-9 * force * r)
 
 
 def test_massless_links_with_a_piston_mass_give_m_times_the_velocity_ratio_squared():

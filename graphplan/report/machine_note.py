@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
+from ..loads import external_names
 from ..locale import Count
 from ..render.numerals import angle_in_turn, power_of_ten
 from ..rotor_balancing import BalancingResult, static_couple
@@ -73,7 +74,12 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
             note.para(note.text["note_dyn_without_friction"])
     if model.plans:
         _reductions(note, model)
-    if turning and model.constant in ("driving", "resisting"):
+    if model.moved:  # a load the scene gives as driving that takes work: counted with the resistances
+        names = dict(zip((load.where for load in note.scene.loads), external_names(note.scene.loads), strict=True))
+        for moved in model.moved:  # a force given over several strokes is their sum
+            note.para(note.t(f"note_dyn_reclassified{run}", name=" + ".join(names[where] for where in moved.loads),
+                             work=note.n(moved.work)))
+    if model.constant in ("driving", "resisting"):
         side = model.driving if model.constant == "driving" else -model.resisting
         note.para(note.t(f"note_dyn_constant_{model.constant}{run}", value=note.n(float(np.mean(side)))))
     energy = model.energy
