@@ -35,7 +35,7 @@ def test_the_offset_slider_crank_s_stroke_is_dimensioned_at_its_length():
     r, rod, e = 0.08, 0.26, 0.08
     stroke = math.sqrt((rod + r) ** 2 - e ** 2) - math.sqrt((rod - r) ** 2 - e ** 2)
     plan, layers = _plan(FIXTURES / "offset_slider_crank.toml")
-    (travel,) = [layer for layer in layers if layer.name == "travel"]
+    (travel,) = [layer for layer in layers if layer.name == "dimensions"]
     (written,) = [item.text for item in travel.items if isinstance(item, Text)]
     assert float(re.fullmatch(r"H = ([\d.]+) m", written).group(1)) == pytest.approx(stroke, rel=1e-4)
     # The dimension line between the arrowheads is the stroke at μl, parallel to the guide (level here).
@@ -57,7 +57,7 @@ def test_the_crank_rocker_s_swing_is_dimensioned_by_its_angle():
     _, layers = _plan(FIXTURES / "ratchet_crank_rocker.toml", **{'locale  = "ru"': 'locale  = "en"'})
     (written,) = [text for text in _texts(layers) if text.startswith("ψ = ")]
     assert float(re.fullmatch(r"ψ = ([\d.]+)°", written).group(1)) == pytest.approx(swing, abs=0.05)
-    assert [layer for layer in layers if layer.name == "travel" and layer.items]
+    assert [layer for layer in layers if layer.name == "dimensions" and layer.items]
 
 
 def test_a_cylinder_s_stroke_is_its_travel_and_a_turning_crank_with_no_working_link_has_none():

@@ -92,8 +92,9 @@ class RRR(Group):
                 why = f"{a_name}–{c_name} = {near} m < |{a_name}{b_name} − {b_name}{c_name}| = {reach} m"
             return AssemblyError(b_name, at, self.label, why)
 
+        # x's rounding is of its 0.5, x²'s then of x: the scale is 1, or the squares where AB outreaches AC.
         with np.errstate(invalid="ignore"):  # A on C: inf − inf, refused below
-            h2 = at_toggle(h2, ab * ab * inverse)
+            h2 = at_toggle(h2, np.maximum(1.0, ab * ab * inverse))
         if not np.min(h2) >= 0:  # NaN fails too
             context.fail_where(np.atleast_1d(~(h2 >= 0)), reason)
         # AB = AC·(x + ih), built in place: h straight into its imaginary part, then turned and scaled by AC.

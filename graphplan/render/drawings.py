@@ -293,12 +293,12 @@ def dimensioned_travel(analysis: Analysis, text: Mapping[str, str]) -> positions
                 return None
             turned = emphasised.links[link].angle
             swing = abs(math.degrees(math.remainder(float(at(turned, 1)) - float(at(turned, 0)), 2 * math.pi)))
-            return positions.Travel(pivot, link, f"ψ = {swing:.1f}°", swing=True)
+            return positions.Travel(pivot, link, text["positions_swing"].format(value=f"{swing:.1f}"), swing=True)
         if point is None:
             return None
     track = emphasised.points[point].r
     stroke = abs(complex(at(track, 1)) - complex(at(track, 0)))
-    return positions.Travel(point, link, f"H = {stroke:.4g} {text['unit_m']}")
+    return positions.Travel(point, link, text["positions_stroke"].format(value=f"{stroke:.4g}"))
 
 
 def extreme_names(analysis: Analysis, drawn: Sequence[int]) -> tuple[str, ...]:

@@ -127,7 +127,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     labels = place_labels(anchors + swing_label, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
                           standing=numbers)
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
-              Layer("frame", tuple(frame)), Layer("travel", tuple(dimension)),
+              Layer("frame", tuple(frame)), Layer("dimensions", tuple(dimension)),
               Layer("leaders", tuple(number_leaders) + labels.leaders),
               Layer("labels", tuple(numbers) + labels.texts + tuple(_centre_marks(plan, paper)))]
     xmin, _, _, ymax = bounds(layers)
