@@ -160,33 +160,39 @@ def _rescaled(kind: str, polygon: str | None, read: list[tuple[ErrorRow, float, 
         driver = abs(plan.value(joint)) if joint in plan.images else 0.0
         key = (f"drawing.{kind}_scale" if given is not None or not driver
                else f"drawing.{kind}_pole" if sheet else "drawing.velocity_plans_pole")
+    # How far the readings' own scales stray from their fit: a round value within it they cannot tell from the fit.
+    spread = max((abs(plan / row.plan * scale / drawn_at - 1.0) for row, plan, scale in read if plan and row.plan),
+                 default=0.0)
     if key.endswith("_pole"):
         # pa = VA / μV: the pole distance the driver's vector is drawn at.
         setting = driver / drawn_at
-        rounded = _round_pole(setting)
+        rounded = _round_pole(setting, spread)
         at = driver / rounded
     else:
         setting = drawn_at
-        rounded = at = _round_scale(drawn_at)
+        rounded = at = _round_scale(drawn_at, spread)
     off = max((abs(row.plan * at / scale - plan) / abs(plan) for row, plan, scale in read if plan), default=0.0)
     return Rescaled(kind, polygon, read_at, drawn_at, key, setting, rounded, off)
 
 
-def _round_scale(scale: float) -> float:
-    """The standard scale factor nearest ``scale`` where one is within 5 % of it (a student draws at one), else
-    ``scale`` to three digits."""
+def _round_scale(scale: float, spread: float) -> float:
+    """The standard scale factor nearest ``scale`` where the readings cannot tell one from it (within their own
+    ``spread``, a share of the fit, and within 5 %: a student draws at one), else ``scale`` to three digits."""
     near = nearest_standard_scale(scale)
-    return near if abs(near / scale - 1.0) <= _ROUND_SHARE else float(f"{scale:.3g}")
+    return near if abs(near / scale - 1.0) <= min(spread, _ROUND_SHARE) else float(f"{scale:.3g}")
 
 
-def _round_pole(pole: float) -> float:
-    """The round pole distance (mm) a student lays off nearest ``pole``: the coarsest of 50, 25, 10, 5, 1 mm
-    steps within 5 % of it, else ``pole`` to a tenth of a millimetre."""
-    for step in (50.0, 25.0, 10.0, 5.0, 1.0):
+def _round_pole(pole: float, spread: float) -> float:
+    """The round pole distance (mm) a student laid off at ``pole``: the coarsest of 50, 25, 10, 5 mm steps the
+    readings cannot tell from it (within their own ``spread``, a share of the fit, and within 5 %), else the whole
+    millimetre nearest it (a tenth of one for a pole under 10 mm).  The coarsest step within 5 % alone took a plan
+    drawn at 120 mm for one at 125 and put every reading 4 % off."""
+    share = min(spread, _ROUND_SHARE)
+    for step in (50.0, 25.0, 10.0, 5.0):
         value = round(pole / step) * step
-        if value > 0 and abs(value / pole - 1.0) <= _ROUND_SHARE:
+        if value > 0 and abs(value / pole - 1.0) <= share:
             return value
-    return round(pole, 1)
+    return float(round(pole)) if pole >= 10.0 else round(pole, 1)
 
 
 # A round value this close to the scale the readings give is taken for the one the student drew at.
