@@ -58,6 +58,11 @@ class Rescaled:
     setting: float
     rounded: float
     off: float
+    # A plan's readings that agree at one unit a millimetre may be the values typed, or a plan truly drawn at
+    # μ = 1: the scene's setting that draws it so (```[drawing] acceleration_scale = 1```), and the pole key it
+    # stands in place of (a scene gives a plan's pole or its scale, not both), if any.
+    unit_setting: str = ""
+    replaces: str | None = None
 
     @property
     def ratio(self) -> float:
@@ -172,7 +177,14 @@ def _rescaled(kind: str, polygon: str | None, read: list[tuple[ErrorRow, float, 
         setting = drawn_at
         rounded = at = _round_scale(drawn_at, spread)
     off = max((abs(row.plan * at / scale - plan) / abs(plan) for row, plan, scale in read if plan), default=0.0)
-    return Rescaled(kind, polygon, read_at, drawn_at, key, setting, rounded, off)
+    unit_setting, replaces = "`[drawing] force_scale = 1`", None
+    if key == "drawing.velocity_plans_pole":
+        # The plans of every position have no scale key: at μV = 1 the driver's vector is VA mm long.
+        unit_setting = f"`[drawing] velocity_plans_pole = {driver:.4g}`"
+    elif kind != "forces":
+        unit_setting = f"`[drawing] {kind}_scale = 1`"
+        replaces = f"{kind}_pole" if getattr(drawing, f"{kind}_pole") is not None else None
+    return Rescaled(kind, polygon, read_at, drawn_at, key, setting, rounded, off, unit_setting, replaces)
 
 
 def _round_scale(scale: float, spread: float) -> float:
@@ -217,8 +229,11 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             drawn_at, kind = rescaled.drawn_at, rescaled.kind
             if in_units(drawn_at):
                 quantity = unit.removeprefix("(").removesuffix(")/mm")
+                # A plan may truly be drawn at one unit a millimetre: the readings cannot tell, so both are said.
+                instead = f" (in place of {rescaled.replaces})" if rescaled.replaces else ""
                 details.append(f"every reading of the {kind} plan is the value it stands for, in {quantity}, not "
-                               f"its length on the plan: give the millimetres measured (the value / {symbol})")
+                               f"its length on the plan: give the millimetres measured (the value / {symbol}), "
+                               f"or, drawn at {symbol} = 1 {unit}, give {rescaled.unit_setting}{instead}")
                 continue
             # The scale the readings fit best is the median's, not the one drawn at: the key to give is the round
             # value near it, with how close the readings come there (the student's own errors stay).

@@ -77,3 +77,36 @@ def test_the_velocity_plans_of_every_position_drawn_at_a_whole_pole_are_advised_
     assert not far_off(analysis)
     rows = [row for row in analysis.errors if row.position == 3 and row.source == "measured"]
     assert rows and all(abs(row.percent) < 0.1 for row in rows)
+
+
+@pytest.mark.parametrize(("kind", "given", "told", "instead"), [
+    ("velocity", {}, "`[drawing] velocity_scale = 1` (in place of velocity_pole)", "(вместо velocity_pole)"),
+    ("acceleration", {"acceleration_pole": None, "acceleration_scale": 0.5}, "`[drawing] acceleration_scale = 1`",
+     None),
+])
+def test_readings_that_agree_at_one_unit_a_millimetre_are_told_both_explanations(kind, given, told, instead):
+    """An acceleration plan truly drawn at μa = 1 (m/s²)/mm (πa = |aA| mm) was told only "values typed in m/s²:
+    give the millimetres", which turns correct readings wrong; the force polygons' message gives both."""
+    from graphplan.report.tables import markdown
+
+    scene = graphplan.load(FIXTURE)
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, **given))
+    motion = graphplan.solve(scene)
+    # At one unit a millimetre the driver's vector is |v_A| (|a_A|) mm long: the readings are the values themselves.
+    driver = _magnitude(motion, "v" if kind == "velocity" else "a", ("A",), POSITION)
+    readings = readings_at(motion, kind, driver)
+    measured = dataclasses.replace(scene, measured={POSITION: {kind: readings}})
+    (warning,) = far_off(analyse(measured))
+    unit = "(m/s)/mm" if kind == "velocity" else "(m/s²)/mm"
+    symbol = "μV" if kind == "velocity" else "μa"
+    assert "give the millimetres measured" in warning.detail
+    assert f"or, drawn at {symbol} = 1 {unit}, give {told}" in warning.detail, warning.detail
+    russian = markdown(analyse(dataclasses.replace(measured, locale="ru")))
+    assert f"или, если план построен в масштабе {symbol} = 1 {unit.replace('m/s', 'м/с').replace('mm', 'мм')}" in russian
+    assert (instead or told) in russian
+    # Taken at μ = 1 the readings agree with the construction.
+    setting = {f"{kind}_pole": None, f"{kind}_scale": 1.0}
+    followed = analyse(dataclasses.replace(measured, drawing=dataclasses.replace(scene.drawing, **setting)))
+    assert not far_off(followed)
+    rows = [row for row in followed.errors if row.position == POSITION and row.source == "measured"]
+    assert rows and all(abs(row.percent) < 0.5 for row in rows)

@@ -90,7 +90,9 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         kind, drawn_at = rescaled.kind, rescaled.drawn_at
         symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
         if in_units(drawn_at):
-            lines.append(text["errors_in_units"].format(plan=text[f"{kind}_plan_title"].lower(), symbol=symbol))
+            instead = text["errors_in_place"].format(key=rescaled.replaces) if rescaled.replaces else ""
+            lines.append(text["errors_in_units"].format(plan=text[f"{kind}_plan_title"].lower(), symbol=symbol,
+                                                        unit=unit, setting=rescaled.unit_setting + instead))
             continue
         lines.append(text["errors_rescaled"].format(
             plan=text[f"{kind}_plan_title"].lower(), ratio=number(rescaled.ratio, 4, mark), symbol=symbol,
