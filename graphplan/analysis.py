@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -307,6 +307,22 @@ def _regular(motion: Motion, numbers: tuple[int, ...]) -> Iterator[tuple[int, in
             yield (number, index, *instant(motion, index))
 
 
+def _refuse_unplanned_readings(scene: Scene, motion: Motion, numbers: Iterable[int], what: str = "plan") -> None:
+    """Refuse the hand readings of a position of ``numbers`` that the motion found singular: it has no plan
+    (``what``) to check them against, and they are refused as a reading of a position without a plan is, not
+    dropped without a word."""
+    for number in numbers:
+        reason = motion.singular.get(int(number - scene.positions.number_from))
+        if reason is not None and scene.measured.get(number):
+            _refuse_singular(number, reason, what)
+
+
+def _refuse_singular(number: int, reason: object, what: str = "plan", kind: str = "") -> None:
+    where = f"measured.{number}" + (f".{kind}" if kind else "")
+    raise SceneError(where, f"cannot be checked: position {number} is singular and has no {what} to check the "
+                     f"readings against ({reason}); measure a regular position instead")
+
+
 def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[VelocityPosition, ...], list[PositionWarning]]:
     """The velocity plans of every position of ``positions.velocity_plans``, all at one μV.
 
@@ -318,11 +334,16 @@ def _velocity_plans(mechanism: Mechanism, motion: Motion) -> tuple[tuple[Velocit
     """
     scene = mechanism.scene
     found, warnings = [], []
+    # A plan position's readings are of its plan sheet's plans, refused there if it has none.
+    grid_only = [number for number in scene.positions.velocity_plans if number not in scene.positions.plans]
+    _refuse_unplanned_readings(scene, motion, grid_only, "velocity plan")
     for number, index, where, directions in _regular(motion, scene.positions.velocity_plans):
         try:
             found.append((number, index, where, directions, velocity_plan(mechanism, where, directions)))
         except ParallelLinesError as error:
             if number not in scene.positions.plans:
+                if scene.measured.get(number):
+                    _refuse_singular(number, error, "velocity plan")
                 warnings.append(PositionWarning(index, "singular", f"no velocity plan: {error}"))
     if not found:
         return (), warnings
@@ -380,11 +401,14 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
     """
     scene = mechanism.scene
     found, warnings = [], []
+    _refuse_unplanned_readings(scene, motion, scene.positions.plans)
     for number, index, where, directions in _regular(motion, scene.positions.plans):
         try:
             velocity = velocity_plan(mechanism, where, directions)
             acceleration = acceleration_plan(mechanism, where, directions, velocity)
         except ParallelLinesError as error:
+            if scene.measured.get(number):
+                _refuse_singular(number, error)
             warnings.append(PositionWarning(index, "singular", f"no plan: {error}"))
             continue
         plans = {"velocity": velocity, "acceleration": acceleration}
@@ -406,6 +430,8 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
                     rubbing = force_plan(mechanism, where, directions, loads, forces.group_scales,
                                          functools.partial(friction_loads, friction, state))
             except ParallelLinesError as error:
+                if measured_forces:
+                    _refuse_singular(number, error, "force polygon", "forces")
                 warnings.append(PositionWarning(index, "singular", f"no force plan: {error}"))
             if forces is not None and balance is not None and not balance.singular[index]:
                 solved = {reaction.name: complex(reaction.force[index]) for reaction in balance.reactions}

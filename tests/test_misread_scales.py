@@ -110,3 +110,50 @@ def test_readings_that_agree_at_one_unit_a_millimetre_are_told_both_explanations
     assert not far_off(followed)
     rows = [row for row in followed.errors if row.position == POSITION and row.source == "measured"]
     assert rows and all(abs(row.percent) < 0.5 for row in rows)
+
+
+# A four-bar whose coupler and rocker lie in one line at φ = 180° (|AC| = 0.2 + 1.0 = AB + BC = 1.2), position 7 of
+# 12 numbered from 1: no plan can be drawn there.
+TOGGLE = """
+[scene]
+title = "Four-bar through a toggle"
+[frame]
+points = { O = [0.0, 0.0], C = [1.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.2
+omega = 10.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.5, 0.7]
+assembly = "left"
+[positions]
+count = 12
+"""
+
+
+@pytest.mark.parametrize(("positions", "plan"), [("plans = [2, 7]", "plan"),
+                                                 ('plans = [2]\nvelocity_plans = "all"', "velocity plan")])
+def test_readings_of_a_singular_plan_position_are_refused_by_check_and_run_alike(tmp_path, capsys, positions, plan):
+    """The readings of a plan position that turned out singular were dropped without a word: `check` said "ok",
+    and errors.md, results.json and the note had nothing for them, as if they had been checked."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "toggle.toml"
+    scene.write_text(TOGGLE + positions + "\n[measured.2]\nvelocity = { pb = 10.0 }\n"
+                     "[measured.7]\nvelocity = { pb = 10.0, ab = 20.0 }\n", encoding="utf-8")
+    told = []
+    for command in (["check", str(scene)], ["run", str(scene), "--out", str(tmp_path / "out")]):
+        assert main(command) != 0
+        told.append(capsys.readouterr().err)
+    assert told[0] == told[1]
+    assert (f"measured.7: cannot be checked: position 7 is singular and has no {plan} to check the readings "
+            "against (") in told[0]
+    # Readings of the regular position alone are checked as before.
+    scene.write_text(TOGGLE + positions + "\n[measured.2]\nvelocity = { pb = 10.0 }\n", encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
