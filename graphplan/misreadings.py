@@ -211,19 +211,63 @@ def _round_pole(pole: float, spread: float) -> float:
 _ROUND_SHARE = 0.05
 
 
+def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[VelocityPosition], drawing: Drawing,
+            joint: str) -> tuple[int, ...]:
+    """The other positions whose drawings the key of ``rescaled`` sets too and whose readings of them fit the present
+    scale: the key is the scene's, one for every position (every plan sheet's pole or scale, ``force_scale`` for
+    every position's polygons, ``velocity_plans_pole`` for the plans of every position), so giving it as this
+    position's readings ask would put theirs off."""
+    sheet = hasattr(position, "acceleration")
+    numbers = []
+    for other in drawn:
+        if other.number == position.number or hasattr(other, "acceleration") != sheet:
+            continue
+        if not any(row.source == "measured" and _plan_of(row) == rescaled.kind for row in other.errors):
+            continue
+        found = slips(other, drawing, joint)
+        if found is None or not any(each.key == rescaled.key for each in found.rescaled):
+            numbers.append(other.number)
+    return tuple(numbers)
+
+
+def factors(rescaled: Rescaled) -> dict[str, float]:
+    """By the plan (or force polygon) read, the factor that turns readings of the drawing as the student drew it into
+    lengths at the scale it was read at: the key then stays, for the other positions it sets."""
+    at = rescaled.rounded if not rescaled.key.endswith("_pole") else rescaled.setting * rescaled.drawn_at / rescaled.rounded
+    return {label: at / scale for label, scale in rescaled.read_at.items()}
+
+
+def factor_text(rescaled: Rescaled, mark: str = ".") -> str:
+    """:func:`factors` as a warning says it: ``0.5``, or ``0.5 (I(1,2)), 0.4 (II(3,4))`` for polygons read apart."""
+    each = factors(rescaled)
+    values = {f"{value:.4g}" for value in each.values()}
+    if len(values) == 1:
+        return values.pop().replace(".", mark)
+    return ", ".join(f"{value:.4g} ({label})".replace(".", mark) for label, value in each.items())
+
+
 def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[PositionWarning, ...]:
     """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans."""
     drawing = mechanism.scene.drawing
     precision = drawing.drafting_precision
+    joint = mechanism.driver.joint
+    drawn = tuple(drawn)
     warnings = []
     for position in drawn:
-        found = slips(position, drawing, mechanism.driver.joint)
+        found = slips(position, drawing, joint)
         if found is None:
             continue
         details = []
         for rescaled in found.rescaled:
+            shared = sharing(rescaled, position, drawn, drawing, joint)
+            # The key sets other positions whose readings fit it as it is: said, with how to keep it.
+            caveat = (f"; but {rescaled.key.removeprefix('drawing.')} sets the scale of position"
+                      f"{'s' if len(shared) > 1 else ''} {', '.join(map(str, shared))} too, whose readings fit the "
+                      f"present scale and would then be off: rather keep it and give the readings of position "
+                      f"{position.number} times "
+                      f"{factor_text(rescaled)}" if shared else "")
             if rescaled.kind == "forces":
-                details.append(_polygons_detail(rescaled))
+                details.append(_polygons_detail(rescaled) + ("" if in_units(rescaled.drawn_at) else caveat))
                 continue
             symbol, unit = _SCALES[rescaled.kind]
             drawn_at, kind = rescaled.drawn_at, rescaled.kind
@@ -242,7 +286,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             details.append(f"every reading of the {kind} plan is {rescaled.ratio:.4g} times the plan as constructed at "
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
                            f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
-                           f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)")
+                           f"within {rescaled.off * 100.0:.1f} % of the plan as constructed){caveat}")
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
@@ -300,4 +344,5 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Rescaled", "Slips", "in_units", "misread", "read_at", "setting", "slips"]
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Rescaled", "Slips", "factor_text", "in_units", "misread", "read_at",
+           "setting", "sharing", "slips"]

@@ -24,11 +24,11 @@ def _magnitude(motion, attribute, points, index):
     return abs(values[0] - values[1]) if len(values) == 2 else abs(values[0])
 
 
-def readings_at(motion, kind, pole, index=POSITION):
-    """The segments of a plan laid off with the driver's vector at ``pole`` mm, read to 0.01 mm."""
+def readings_at(motion, kind, pole, index=POSITION, digits=2):
+    """The segments of a plan laid off with the driver's vector at ``pole`` mm, read to 0.01 mm (``digits``)."""
     attribute = "v" if kind == "velocity" else "a"
     driver = _magnitude(motion, attribute, ("A",), index)
-    return {name: round(_magnitude(motion, attribute, points, index) * pole / driver, 2)
+    return {name: round(_magnitude(motion, attribute, points, index) * pole / driver, digits)
             for name, points in SEGMENTS.items()}
 
 
@@ -157,3 +157,55 @@ def test_readings_of_a_singular_plan_position_are_refused_by_check_and_run_alike
     # Readings of the regular position alone are checked as before.
     scene.write_text(TOGGLE + positions + "\n[measured.2]\nvelocity = { pb = 10.0 }\n", encoding="utf-8")
     assert main(["check", str(scene)]) == 0
+
+
+def _grid_scene(pole=60.0):
+    scene = graphplan.load(FIXTURE)
+    return dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, velocity_plans=tuple(range(12))),
+                               drawing=dataclasses.replace(scene.drawing, velocity_plans_pole=pole))
+
+
+@pytest.mark.parametrize("grid", [True, False])
+def test_a_key_that_sets_every_position_is_not_advised_from_one_position_alone(grid):
+    """Position 3 measured at the scene's scale, position 4 off a plan drawn at pa = 95 mm: position 4 was told
+    velocity_plans_pole = 95 without a word that the key sets position 3 too, whose readings it then put off (the
+    advice went back and forth).  The same with velocity_pole for two plan-sheet positions."""
+    from graphplan.report.tables import markdown
+
+    if grid:
+        scene, right, wrong, key = _grid_scene(60.0), 3, 4, "velocity_plans_pole"
+    else:
+        scene = graphplan.load(FIXTURE)
+        scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, velocity_pole=60.0))
+        right, wrong, key = 5, 11, "velocity_pole"
+    motion = graphplan.solve(scene)
+    # Read to 1e-6 mm: a short segment read to 0.01 mm is itself 0.1 % off.
+    measured = {right: {"velocity": readings_at(motion, "velocity", 60.0, right, 6)},
+                wrong: {"velocity": readings_at(motion, "velocity", 95.0, wrong, 6)}}
+    analysis = analyse(dataclasses.replace(scene, measured=measured))
+    (warning,) = far_off(analysis)
+    assert warning.detail.startswith(f"measured.{wrong}: ")
+    # Readings at 95 mm are lengths at 60 mm times 60 / 95.
+    factor = 60.0 / 95.0
+    assert f"give `[drawing] {key} = 95`" in warning.detail
+    assert (f"but {key} sets the scale of position {right} too, whose readings fit the present scale and would then "
+            f"be off: rather keep it and give the readings of position {wrong} times {factor:.4g}") in warning.detail
+    russian = markdown(dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, locale="ru")))
+    assert (f"Но {key} задаёт масштаб и для положения {right}: замеры там согласуются с нынешним масштабом" in russian)
+    assert f"замеры положения {wrong} умножьте на {f'{factor:.4g}'.replace('.', ',')}." in russian
+    # Following that advice leaves both positions' readings within 0.1 % and warns of nothing.
+    measured[wrong] = {"velocity": {name: mm * factor for name, mm in measured[wrong]["velocity"].items()}}
+    followed = analyse(dataclasses.replace(scene, measured=measured))
+    assert not far_off(followed)
+    rows = [row for row in followed.errors if row.position in (right, wrong) and row.source == "measured"]
+    assert {row.position for row in rows} == {right, wrong} and all(abs(row.percent) < 0.1 for row in rows)
+
+
+def test_positions_all_drawn_at_one_other_scale_are_advised_the_key_without_a_caveat():
+    scene = _grid_scene(60.0)
+    motion = graphplan.solve(scene)
+    measured = {number: {"velocity": readings_at(motion, "velocity", 120.0, number)} for number in (3, 4)}
+    warnings = far_off(analyse(dataclasses.replace(scene, measured=measured)))
+    assert len(warnings) == 2
+    for warning in warnings:
+        assert "give `[drawing] velocity_plans_pole = 120`" in warning.detail and "but " not in warning.detail

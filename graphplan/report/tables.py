@@ -18,7 +18,17 @@ from collections import defaultdict
 from ..analysis import Analysis, PlanPosition, VelocityPosition
 from ..check import SOURCES, ErrorRow, is_reaction
 from ..locale import strings
-from ..misreadings import FAR_OFF_PERCENT, FAR_OFF_PRECISIONS, Rescaled, in_units, read_at, setting, slips
+from ..misreadings import (
+    FAR_OFF_PERCENT,
+    FAR_OFF_PRECISIONS,
+    Rescaled,
+    factor_text,
+    in_units,
+    read_at,
+    setting,
+    sharing,
+    slips,
+)
 from ..render.numerals import scale_factor
 from .forces import number
 from .results import PERCENT_FLOOR
@@ -83,9 +93,16 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         return nearer
     text = strings(analysis.scene.locale)
     lines = nearer
+    drawn = (*analysis.plans, *analysis.velocity_plans)
     for rescaled in found.rescaled:
+        shared = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint)
+        # The key sets other positions whose readings fit it as it is: said, with how to keep it.
+        caveat = (" " + text["errors_shared"].format(
+            key=rescaled.key.removeprefix("drawing."), factor=factor_text(rescaled, mark), number=plan.number,
+            positions=text["errors_shared_positions" if len(shared) > 1 else "errors_shared_position"].format(
+                numbers=", ".join(map(str, shared)))) if shared else "")
         if rescaled.kind == "forces":
-            lines.append(_polygons_line(rescaled, text, mark))
+            lines.append(_polygons_line(rescaled, text, mark) + ("" if in_units(rescaled.drawn_at) else caveat))
             continue
         kind, drawn_at = rescaled.kind, rescaled.drawn_at
         symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
@@ -101,7 +118,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             off=f"{rescaled.off * 100.0:.1f}".replace(".", mark),
             fit=text["errors_pole_fit"].format(key=rescaled.key.removeprefix("drawing."),
                                                fit=number(rescaled.setting, 4, mark))
-            if rescaled.key.endswith("_pole") else ""))
+            if rescaled.key.endswith("_pole") else "") + caveat)
     if found.misread:
         # A segment's name may be on both plans (pb): the quantities it gives say which.
         readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity) for row, _ in rows)})"
