@@ -7,7 +7,8 @@ beyond both is a slip.  Where every reading of one drawing implies the same
 scale (μV, μa; μF of a polygon, or of all of them), the slip is the drawing's
 scale, not its lengths: the student laid off the driver's velocity (or
 acceleration) at another pole distance, or drew the polygons at a μF of
-their own, and the warning gives the scene's key that sets that scale, at
+their own (even where no reading is far off, every one in one ratio off 1 beyond the
+drafting precision), and the warning gives the scene's key that sets that scale, at
 the round value near it, with how close the readings come there.
 """
 
@@ -28,6 +29,9 @@ if TYPE_CHECKING:
     from .mechanism import Mechanism
     from .scene import Drawing
 
+# Every reading of a plan in one ratio to the construction, to within the drafting precision, and the ratio off 1 by
+# more than this (per cent): a plan laid off at another pole, though no reading is far off.
+UNIFORM_SLIP_PERCENT = 5.0
 # A hand reading this far (per cent) from the same quantity of the plan as constructed is a misread length or
 # a segment taken for another, not a drawing's error ...
 FAR_OFF_PERCENT = 15.0
@@ -95,8 +99,6 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     measured = [(row, constructed[row.quantity]) for row in position.errors
                 if row.source == "measured" and row.quantity in constructed]
     far = [(row, plan) for row, plan in measured if _far_off(row, plan, precision)]
-    if not far:
-        return None
     # One rule for every drawing: the plans, then every force polygon together (the scene's one force_scale
     # sets them all, so a student who drew them all at one μF is told that one key), then each polygon alone.
     reactions = [(row, plan) for row, plan in measured if _plan_of(row) == "forces"]
@@ -107,13 +109,20 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
                  for label in labels if len(labels) > 1]
     rescaled = []
     for kind, polygon, rows in drawings:
-        if not any(row is each for row, _ in rows for each, _ in far):
-            continue
         read = [(row, plan, _read_at(position, row)) for row, plan in rows]
+        if not any(row is each for row, _ in rows for each, _ in far):
+            # No reading far off, yet every reading of a plan in one ratio to it, off 1 beyond the readings' errors:
+            # a plan laid off at another pole (pa = 110 mm for 100), not a drawing 10 % wrong everywhere.
+            drawn_at = _uniform_scale(read, precision) if kind in _SCALES else None
+            if drawn_at is not None:
+                rescaled.append(_rescaled(kind, polygon, read, drawn_at, position, drawing, joint))
+            continue
         drawn_at = _one_scale(read)
         if drawn_at is not None:
             rescaled.append(_rescaled(kind, polygon, read, drawn_at, position, drawing, joint))
             far = [(row, plan) for row, plan in far if not any(row is each for each, _ in rows)]
+    if not rescaled and not far:
+        return None
     misread: dict[str, list[tuple[ErrorRow, float]]] = {}
     for row, plan in far:
         misread.setdefault(row.reading, []).append((row, plan))
@@ -146,6 +155,26 @@ def _one_scale(read: list[tuple[ErrorRow, float, float]]) -> float | None:
     if not all(abs(each / drawn_at - 1.0) <= tolerance for each, _ in implied.values()):
         return None
     return drawn_at if any(abs(scale / drawn_at - 1.0) > tolerance for _, scale in implied.values()) else None
+
+
+def _uniform_scale(read: list[tuple[ErrorRow, float, float]], precision: float) -> float | None:
+    """The scale a plan was drawn at whose readings, none far off, all stand in one ratio to the construction: each
+    within the drafting ``precision`` (mm) of that ratio times its constructed length, the ratio off 1 by more than
+    :data:`UNIFORM_SLIP_PERCENT` and some reading off its construction by more than twice the precision (a ratio
+    the readings tell apart from 1).  None where they do not (a student's own errors scatter)."""
+    implied = [(row, plan, scale) for row, plan, scale in read if plan and row.per_millimetre]
+    if len({row.reading for row, _, _ in implied}) < 2 or any(row.plan / plan <= 0 for row, plan, _ in implied):
+        return None
+    ratio = statistics.median(row.plan / plan for row, plan, _ in implied)
+    if abs(ratio - 1.0) <= UNIFORM_SLIP_PERCENT / 100.0:
+        return None
+    if any(abs(row.plan - ratio * plan) / row.per_millimetre > precision for row, plan, _ in implied):
+        return None
+    if all(abs(row.plan - plan) / row.per_millimetre <= FAR_OFF_PRECISIONS * precision for row, plan, _ in implied):
+        return None
+    drawn_at = statistics.median(scale * plan / row.plan for row, plan, scale in implied)
+    # At one unit a millimetre read at about one, "values typed in their units" would be said of a plan's slip.
+    return None if in_units(drawn_at) else drawn_at
 
 
 def _rescaled(kind: str, polygon: str | None, read: list[tuple[ErrorRow, float, float]], drawn_at: float,
@@ -344,5 +373,5 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "Rescaled", "Slips", "factor_text", "in_units", "misread", "read_at",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "Rescaled", "Slips", "factor_text", "in_units", "misread", "read_at",
            "setting", "sharing", "slips"]

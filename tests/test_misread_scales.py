@@ -209,3 +209,23 @@ def test_positions_all_drawn_at_one_other_scale_are_advised_the_key_without_a_ca
     assert len(warnings) == 2
     for warning in warnings:
         assert "give `[drawing] velocity_plans_pole = 120`" in warning.detail and "but " not in warning.detail
+
+
+@pytest.mark.parametrize("kind", ["velocity", "acceleration"])
+def test_a_uniform_scale_slip_under_the_far_off_threshold_is_named_as_such(kind):
+    """Every reading exactly 1.1 times the construction (pa = 165 mm for the scene's 150, πa = 110 for 100) gave
+    no warning: each row showed δ = −10 % as if the drawing were 10 % wrong everywhere, not laid off at another pole."""
+    scene = graphplan.load(FIXTURE)
+    given = getattr(scene.drawing, f"{kind}_pole")
+    motion = graphplan.solve(scene)
+    (warning,) = far_off(analyse(dataclasses.replace(scene, measured={
+        POSITION: {kind: readings_at(motion, kind, given * 1.1)}})))
+    assert f"every reading of the {kind} plan is 1.1 times the plan as constructed" in warning.detail
+    assert f"give `[drawing] {kind}_pole = {given * 1.1:g}`" in warning.detail
+    # A ratio within 5 % of one, or readings that scatter by more than the drafting precision, are a drawing's
+    # own errors: nothing is said.
+    assert not far_off(analyse(dataclasses.replace(scene, measured={
+        POSITION: {kind: readings_at(motion, kind, given * 1.04)}})))
+    scattered = {name: mm * (1.0 + (0.04 if index % 2 else -0.02))
+                 for index, (name, mm) in enumerate(readings_at(motion, kind, given * 1.1).items())}
+    assert not far_off(analyse(dataclasses.replace(scene, measured={POSITION: {kind: scattered}})))
