@@ -241,22 +241,26 @@ _ROUND_SHARE = 0.05
 
 
 def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[VelocityPosition], drawing: Drawing,
-            joint: str) -> tuple[int, ...]:
-    """The other positions whose drawings the key of ``rescaled`` sets too and whose readings of them fit the present
-    scale: the key is the scene's, one for every position (every plan sheet's pole or scale, ``force_scale`` for
+            joint: str) -> tuple[tuple[int, ...], dict[int, float]]:
+    """The other positions whose drawings the key of ``rescaled`` sets too: those whose readings of them fit the
+    present scale, and (by number) the value of the key those found drawn at another scale ask, where it is not this
+    one's.  The key is the scene's, one for every position (every plan sheet's pole or scale, ``force_scale`` for
     every position's polygons, ``velocity_plans_pole`` for the plans of every position), so giving it as this
-    position's readings ask would put theirs off."""
+    position's readings ask would put the others' off."""
     sheet = hasattr(position, "acceleration")
-    numbers = []
+    fitting, asking = [], {}
     for other in drawn:
         if other.number == position.number or hasattr(other, "acceleration") != sheet:
             continue
         if not any(row.source == "measured" and _plan_of(row) == rescaled.kind for row in other.errors):
             continue
         found = slips(other, drawing, joint)
-        if found is None or not any(each.key == rescaled.key for each in found.rescaled):
-            numbers.append(other.number)
-    return tuple(numbers)
+        theirs = [each for each in (found.rescaled if found else ()) if each.key == rescaled.key]
+        if not theirs:
+            fitting.append(other.number)
+        elif theirs[0].rounded != rescaled.rounded and not in_units(theirs[0].drawn_at):
+            asking[other.number] = theirs[0].rounded
+    return tuple(fitting), asking
 
 
 def factors(rescaled: Rescaled) -> dict[str, float]:
@@ -288,13 +292,19 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             continue
         details = []
         for rescaled in found.rescaled:
-            shared = sharing(rescaled, position, drawn, drawing, joint)
-            # The key sets other positions whose readings fit it as it is: said, with how to keep it.
-            caveat = (f"; but {rescaled.key.removeprefix('drawing.')} sets the scale of position"
-                      f"{'s' if len(shared) > 1 else ''} {', '.join(map(str, shared))} too, whose readings fit the "
-                      f"present scale and would then be off: rather keep it and give the readings of position "
-                      f"{position.number} times "
-                      f"{factor_text(rescaled)}" if shared else "")
+            fitting, asking = sharing(rescaled, position, drawn, drawing, joint)
+            # The key sets other positions whose readings fit it as it is, or ask it another value: said, with how
+            # to keep it.
+            name = rescaled.key.removeprefix("drawing.")
+            caveat = ""
+            if fitting or asking:
+                shared = fitting or tuple(asking)
+                why = ("whose readings fit the present scale and would then be off" if fitting else
+                       "whose readings ask " + ", ".join(f"{name} = {value:g}" for value in asking.values())
+                       + " (no one value fits them all)")
+                caveat = (f"; but {name} sets the scale of position{'s' if len(shared) > 1 else ''} "
+                          f"{', '.join(map(str, shared))} too, {why}: rather keep it and give the readings of "
+                          f"position {position.number} times {factor_text(rescaled)}")
             if rescaled.kind == "forces":
                 details.append(_polygons_detail(rescaled) + ("" if in_units(rescaled.drawn_at) else caveat))
                 continue

@@ -229,3 +229,25 @@ def test_a_uniform_scale_slip_under_the_far_off_threshold_is_named_as_such(kind)
     scattered = {name: mm * (1.0 + (0.04 if index % 2 else -0.02))
                  for index, (name, mm) in enumerate(readings_at(motion, kind, given * 1.1).items())}
     assert not far_off(analyse(dataclasses.replace(scene, measured={POSITION: {kind: scattered}})))
+
+
+def test_positions_drawn_at_two_other_scales_are_told_no_one_value_of_the_key_fits_both():
+    """Position 3 drawn at pa = 95 mm and position 4 at 120 were told velocity_plans_pole = 95 and = 120, one key
+    that cannot be both, and neither warning said so."""
+    from graphplan.report.tables import markdown
+
+    scene = _grid_scene(60.0)
+    motion = graphplan.solve(scene)
+    poles = {3: 95.0, 4: 120.0}
+    measured = {number: {"velocity": readings_at(motion, "velocity", pole, number, 6)} for number, pole in poles.items()}
+    analysis = analyse(dataclasses.replace(scene, measured=measured))
+    warnings = {w.position: w.detail for w in far_off(analysis)}
+    assert len(warnings) == 2
+    for number, other in ((3, 4), (4, 3)):
+        detail = next(d for d in warnings.values() if d.startswith(f"measured.{number}: "))
+        assert f"give `[drawing] velocity_plans_pole = {poles[number]:g}`" in detail
+        assert (f"but velocity_plans_pole sets the scale of position {other} too, whose readings ask "
+                f"velocity_plans_pole = {poles[other]:g} (no one value fits them all): rather keep it and give the "
+                f"readings of position {number} times {60.0 / poles[number]:.4g}") in detail
+    russian = markdown(dataclasses.replace(analysis, scene=dataclasses.replace(analysis.scene, locale="ru")))
+    assert "Но velocity_plans_pole задаёт масштаб и для положения 4, а замеры там требуют velocity_plans_pole = 120" in russian

@@ -95,10 +95,14 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     lines = nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
     for rescaled in found.rescaled:
-        shared = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint)
-        # The key sets other positions whose readings fit it as it is: said, with how to keep it.
-        caveat = (" " + text["errors_shared"].format(
-            key=rescaled.key.removeprefix("drawing."), factor=factor_text(rescaled, mark), number=plan.number,
+        fitting, asking = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint)
+        # The key sets other positions whose readings fit it as it is, or ask it another value: said, with how to
+        # keep it.
+        key = rescaled.key.removeprefix("drawing.")
+        shared = fitting or tuple(asking)
+        caveat = (" " + text["errors_shared" if fitting else "errors_shared_other"].format(
+            key=key, factor=factor_text(rescaled, mark), number=plan.number,
+            values=", ".join(f"{key} = {value:g}".replace(".", mark) for value in asking.values()),
             positions=text["errors_shared_positions" if len(shared) > 1 else "errors_shared_position"].format(
                 numbers=", ".join(map(str, shared)))) if shared else "")
         if rescaled.kind == "forces":
