@@ -11,6 +11,7 @@ a warning, never silently.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, fields, replace
@@ -19,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import SceneError
+from .errors import AssemblyError, SceneError, SingularPositionError
 from .groups.base import Guide, GuideMotion
 from .kinematics import (
     LinkMotion,
@@ -39,6 +40,10 @@ from .scene import PointSpec
 ILL_CONDITIONED_DEG = 1.0
 
 _STILL = 0j
+
+# A slider this close to a named point's ``from`` along its slide (relative to their coordinates) is level with it:
+# the coordinates' rounding, not a side to place the point toward.
+_LEVEL = 1e-9
 
 # A group found by continuation (a triad) is solved at least this often a turn of the crank (or along
 # the slider's travel): Newton's method then starts within a degree of the next position.
@@ -247,20 +252,43 @@ class Reference:
     group, a PRP's side and place, the pose found there for a triad); ``local`` the coordinates of
     each named point in its link's frame (link origin, link direction), so
     that the point rides rigidly with its link; ``value`` the driver's
-    coordinate there.
+    coordinate there; ``slides`` for each named point placed ``toward`` a slider,
+    the slide's direction in the link's frame in the sense from ``from`` toward
+    the slider there (see :func:`toward_slider`).
     """
 
     branches: tuple[object, ...]
     local: Mapping[str, complex]
     value: float = 0.0
+    slides: Mapping[str, complex] = field(default_factory=dict)
 
 
-def reference_at(mechanism: Mechanism, value: float) -> Reference:
-    """Branches (from ``assembly`` or ``near``) and named points' local coordinates at driver coordinate ``value``."""
+def first_value(mechanism: Mechanism) -> float:
+    """The driver's coordinate where the scene's positions start and its assemblies are chosen: a travel's or a
+    swing's first end, a turning crank's ``start`` (0° for "extreme", whose position is found later)."""
+    driver, start = mechanism.driver, mechanism.scene.positions.start
+    if not driver.cyclic:
+        return float(driver.travel[0])
+    return 0.0 if start == "extreme" else math.radians(float(start))
+
+
+def reference_at(mechanism: Mechanism, value: float, slides: Mapping[str, complex] | None = None) -> Reference:
+    """Branches (from ``assembly`` or ``near``) and named points' local coordinates at driver coordinate ``value``.
+
+    A point placed toward a slider takes its sense (``slides``) at the scene's first driver value
+    (:func:`first_value`), whatever ``value`` is: a slider that crosses ``from`` (a sine mechanism's block) would
+    otherwise put the point, and any group joined at it, on one side for one reference and on the other for the next.
+    """
+    if slides is None and any(spec.toward not in mechanism.fixed_on.get(spec.link, ()) for spec in mechanism.scene.points):
+        first = first_value(mechanism)
+        if float(value) != first:
+            with contextlib.suppress(AssemblyError, SingularPositionError):  # then taken here
+                slides = reference_at(mechanism, first).slides
     values = np.array([float(value)])
     context = _Context(mechanism, values, lambda _: mechanism.driver.describe(float(value)))
     branches = []
     local: dict[str, complex] = {}
+    given, slides = slides, {}
     for step, unit_ in enumerate(mechanism.units):
         if step == 0:
             found = mechanism.driver.solve(context, values)
@@ -271,9 +299,13 @@ def reference_at(mechanism: Mechanism, value: float) -> Reference:
         context.points.update(found.points)
         context.links.update(found.links)
         for spec in unit_.points:
-            local[spec.name] = _local_coordinates(context, spec, mechanism)
+            if spec.toward not in mechanism.fixed_on.get(spec.link, ()):
+                slides[spec.name] = given[spec.name] if given is not None else toward_slider(
+                    mechanism, spec, complex(at(context.point(spec.start).r, 0)),
+                    complex(at(context.point(spec.toward).r, 0)), complex(at(context.link(spec.link).u, 0)))
+            local[spec.name] = _local_coordinates(context, spec, mechanism, slides.get(spec.name))
             context.points[spec.name] = _place(context, spec, mechanism, local[spec.name])
-    return Reference(tuple(branches), local, float(value))
+    return Reference(tuple(branches), local, float(value), MappingProxyType(slides))
 
 
 def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference: Reference | None = None,
@@ -434,17 +466,31 @@ def _run(mechanism: Mechanism, context: _Context, values: np.ndarray, reference:
     return context.points, context.links, tuple(slides), conditioning
 
 
-def _local_coordinates(context: _Context, spec: PointSpec, mechanism: Mechanism) -> complex:
-    """Where a named point sits in its link's frame, from its definition at the reference position."""
+def toward_slider(mechanism: Mechanism, spec: PointSpec, start: complex, slider: complex, u: complex) -> complex:
+    """The direction, in its link's frame, of a named point placed ``toward`` a slider on the link: along the slide
+    line, in the sense from ``from`` toward where the slider is at the reference position (``start``, ``slider``
+    the two points there, ``u`` the link's direction). A block may sit on either side of the point its slot is
+    measured from (an RPP's block on the slot's negative side), so the slide's own sense is no answer to "toward".
+    Where the slider is level with ``from`` there (a Scotch yoke's pin on the guide line at its extreme), no side
+    is nearer: the slide's own sense is kept."""
+    slide = complex(mechanism.sliding_on[spec.link][spec.toward])
+    along = ((slider - start) * (u * slide).conjugate()).real
+    level = _LEVEL * max(abs(start), abs(slider))
+    return -slide if along < -level else slide
+
+
+def _local_coordinates(context: _Context, spec: PointSpec, mechanism: Mechanism, slide: complex | None) -> complex:
+    """Where a named point sits in its link's frame, from its definition at the reference position; ``slide`` the
+    direction in the link's frame of a point placed toward a slider (:func:`toward_slider`)."""
     start = complex(at(context.point(spec.start).r, 0))
     link = context.link(spec.link)
-    if spec.toward in mechanism.fixed_on.get(spec.link, ()):
+    if slide is None:
         chord = complex(at(context.point(spec.toward).r, 0)) - start
         if chord == 0:
             raise SceneError(spec.where, f"from {spec.start!r} and toward {spec.toward!r} coincide, so they give no direction")
         direction = chord / abs(chord)
     else:
-        direction = complex(at(link.u, 0)) * mechanism.sliding_on[spec.link][spec.toward]
+        direction = complex(at(link.u, 0)) * slide
     placed = start + (spec.at + 1j * spec.offset) * direction
     if spec.link == mechanism.scene.frame_link:
         return placed

@@ -388,18 +388,19 @@ def _solve_group(group, scene, points, angles, guess) -> tuple[tuple[Jet, ...], 
     return unknowns, tuple(max(abs(getattr(z, part)) for z in closed) for part in ("d0", "d1", "d2"))  # type: ignore[return-value]
 
 
-def _place(spec, mechanism, points, angles) -> Jet:
-    """A named point by its definition: from + (at + i·offset)·direction."""
+def _place(spec, mechanism, points, angles, slides: Mapping[str, complex]) -> Jet:
+    """A named point by its definition: from + (at + i·offset)·direction; toward a slider, the direction is the
+    slide's, in the sense toward the slider at the reference position (``slides``, :func:`toward_slider`)."""
     start = points[spec.start]
     if spec.toward in mechanism.fixed_on.get(spec.link, ()):
         direction = unit_of(points[spec.toward] - start)
     else:
-        slide = complex(mechanism.sliding_on[spec.link][spec.toward])
-        direction = expi(angles[spec.link]) * mpc(slide)
+        direction = expi(angles[spec.link]) * mpc(slides[spec.name])
     return start + (mpf(spec.at) + 1j * mpf(spec.offset)) * direction
 
 
-def _instant(mechanism, value: float, near: Mapping[str, complex], near_angles: Mapping[int, float]) -> Instant:
+def _instant(mechanism, value: float, near: Mapping[str, complex], near_angles: Mapping[int, float],
+             slides: Mapping[str, complex]) -> Instant:
     scene = mechanism.scene
     driver = mechanism.driver
     points: dict[str, Jet] = {name: Jet(mpc(z.real, z.imag)) for name, z in scene.frame_points.items()}
@@ -426,7 +427,7 @@ def _instant(mechanism, value: float, near: Mapping[str, complex], near_angles: 
             angles.update(turned)
             under_pins += group.coincident_points()
         for spec in unit.points:
-            points[spec.name] = _place(spec, mechanism, points, angles)
+            points[spec.name] = _place(spec, mechanism, points, angles, slides)
     result = {name: (jet.d0, jet.d1, jet.d2) for name, jet in points.items()}
     for name, on, pivot, lever in under_pins:
         # The link's material point under the block: rigid with the link.
@@ -454,14 +455,15 @@ def solve_reference(scene, values: Sequence[float] | np.ndarray) -> ReferenceMot
     mechanism = build(scene)
     values = np.atleast_1d(np.asarray(values, dtype=float))
     start = _start(mechanism)
+    reference = reference_at(mechanism, start)
     with np.errstate(all="ignore"):
-        guess = solve(mechanism, values, reference_at(mechanism, start), tolerant=True)
+        guess = solve(mechanism, values, reference, tolerant=True)
     instants = []
     with mp.workdps(DPS):
         for index, value in enumerate(values):
             near = {name: complex(guess.point(name).r[index][0], guess.point(name).r[index][1]) for name in guess.points}
             near_angles = {number: float(guess.link(number).angle[index]) for number in guess.links}
-            instants.append(_instant(mechanism, float(value), near, near_angles))
+            instants.append(_instant(mechanism, float(value), near, near_angles, reference.slides))
     return ReferenceMotion(tuple(instants))
 
 

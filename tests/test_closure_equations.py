@@ -18,6 +18,7 @@ import pytest
 
 import graphplan
 from graphplan.mechanism import build
+from graphplan.motion import first_value
 
 # Every fixture, and the variants that exercise what no fixture has (moving guides of RRP and
 # RPP, PRP offsets, an offset slot); defined beside the finite-difference tests.
@@ -251,7 +252,8 @@ def test_every_group_satisfies_its_closure_equations(mechanism_motion):
 
 def test_named_points_sit_where_they_are_defined(mechanism_motion):
     """P = from + (at + i·offset)·direction at every position, the direction along from→toward
-    (or along the slide, when toward slides on the link)."""
+    (or along the slide, when toward slides on the link: in the sense toward the slider at the scene's first
+    driver value; the slide's own sense where the slider is level with from there)."""
     m = mechanism_motion
     for spec in m.scene.points:
         start, point = m.r(spec.start), m.r(spec.name)
@@ -260,6 +262,11 @@ def test_named_points_sit_where_they_are_defined(mechanism_motion):
             direction = chord / np.abs(chord)
         else:
             direction = m.direction(spec.link) * m.mechanism.sliding_on[spec.link][spec.toward]
+            first = graphplan.solve(m.scene, driver=[first_value(m.mechanism)])
+            line = np.exp(1j * first.link(spec.link).angle[0]) * m.mechanism.sliding_on[spec.link][spec.toward]
+            ahead = first.point(spec.toward).r[0] - first.point(spec.start).r[0]
+            if dot(line, complex(*ahead)) < -1e-9 * m.size:
+                direction = -direction
         expected = start + (spec.at + 1j * spec.offset) * direction
         assert_small(f"{spec.name} − its definition", point - expected, m.size)
 

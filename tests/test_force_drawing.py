@@ -344,9 +344,10 @@ def test_labels_that_took_each_other_s_only_spot_are_placed_again():
 
 
 # The teacher's sine mechanism with its rocker links in a regular proportion: group II(3,4)'s yoke 4 slides on the
-# frame's guide, whose reaction R14 acts 190 mm along it from B in position 2.
+# frame's guide, whose reaction R14 acts 190 mm along it from B in position 2. S4 is placed from B toward A, which is
+# on the slot's negative side at φ = 0°: its offset is to the right of B→A.
 SINE_ROCKER = TOGGLE.replace("lengths = [0.15, 0.123392747509]", "lengths = [0.25, 0.16]").replace(
-    'S6 = { link = 6', 'S4 = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.12 }\nS6 = { link = 6').replace(
+    'S6 = { link = 6', 'S4 = { link = 4, from = "B", toward = "A", at = 0.0, offset = -0.12 }\nS6 = { link = 6').replace(
     "[links.6]", '[links.4]\nmass = 4.0\ncentre = "S4"\ninertia = 0.02\n\n[links.6]') + (
     "\n[drawing]\nlength_scale = 0.0025\n")
 

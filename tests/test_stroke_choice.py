@@ -110,7 +110,8 @@ def test_a_link_that_turns_back_twice_has_no_such_warning():
 
 
 # A sine mechanism driving a rocker through a link (a teacher's scene) whose links 5 and 6 come into line at
-# position 7 (φ = 345°): there ω6 is not determined.
+# position 7 (φ = 345°): there ω6 is not determined. P is placed from B toward A, which is on the slot's negative side
+# at φ = 0°: its offset is to the right of B→A.
 TOGGLE = """
 [scene]
 title = "Sine mechanism with a rocker"
@@ -144,7 +145,7 @@ lengths = [0.15, 0.123392747509]
 assembly = "right"
 
 [points]
-P = { link = 4, from = "B", toward = "A", at = 0.0, offset = 0.25 }
+P = { link = 4, from = "B", toward = "A", at = 0.0, offset = -0.25 }
 S6 = { link = 6, from = "G", toward = "E", at = 0.07 }
 
 [links.6]
