@@ -100,6 +100,11 @@ def _set_close(line: str) -> str:
     return _BEFORE_FULL_WIDTH.sub("", _AFTER_FULL_WIDTH.sub("", line))
 
 
+def _beyond_rounding(value: float, rates: Collection[float]) -> bool:
+    """Whether an ω or ε is a value rather than the plan's rounding: more than ROUNDING of the largest of its plan."""
+    return abs(value) > force_report.ROUNDING * max((abs(rate) for rate in rates), default=0.0)
+
+
 def note_html(analysis: Analysis | None, dynamics=None, markdown: str | None = None, scene: Scene | None = None) -> str:
     """The explanatory note as a standalone HTML page (from its ``markdown`` when already written)."""
     from .html import to_html
@@ -971,8 +976,13 @@ class _Note:
                     f"{self.mm(millimetres)}{self.text['times']}{scale}/{self.n(reading.length)} = "
                     f"{self.n(abs(value))} {unit}{self.with_sense(value)}")
             if not angular:
+                # Accelerated or decelerated only where both ω and ε are more than the plans' rounding: an ε of
+                # 1e-16 where it is nought (a lever passing its greatest ω) is written 0 and has no sense. Every ε
+                # of a plan may be such a residue (a uniform crank): ε is measured against ω² as well.
+                omegas = pp.velocity.rates.values()
                 omega = pp.velocity.rates.get(link, 0.0)
-                if value != 0 and abs(omega) > force_report.ROUNDING * max(abs(r) for r in pp.velocity.rates.values()):
+                if _beyond_rounding(value, [*plan.rates.values(), *(w * w for w in omegas)]) and \
+                        _beyond_rounding(omega, omegas):
                     key = "note_accelerated" if omega * value > 0 else "note_decelerated"
                     text += self.text["semicolon"] + self.t(key, link=link)
             return text
