@@ -95,6 +95,17 @@ _AFTER_FULL_WIDTH = re.compile(r"(?<=[。，；：！？、）」])[ ]+")
 _BEFORE_FULL_WIDTH = re.compile(r"[ ]+(?=[（「])")
 
 
+def _equal_terms(clauses: Sequence[str]) -> dict[str, str]:
+    """The terms a step's further clauses set equal, each to its like: ``aFF4ᵏ + aFF4^r = aE6E4ᵏ + aE6E4^r`` gives
+    aFF4ᵏ = aE6E4ᵏ and aFF4^r = aE6E4^r."""
+    equal: dict[str, str] = {}
+    for clause in clauses:
+        sides = [side.split(" + ") for side in clause.split(" = ")]
+        if len(sides) == 2 and len(sides[0]) == len(sides[1]):
+            equal.update(zip(*sides, strict=True))
+    return equal
+
+
 def _set_close(line: str) -> str:
     """A line of a Chinese note without the Latin spaces beside its full-width punctuation."""
     return _BEFORE_FULL_WIDTH.sub("", _AFTER_FULL_WIDTH.sub("", line))
@@ -717,7 +728,7 @@ class _Note:
             self.para(f"{shown}{extra}" + (f" — {explanation}" if explanation else "") + self.text["full_stop"])
             return
         self.para(self.t("note_vector_equation", equation=shown + extra) + (f" ({explanation})" if explanation else ""))
-        terms = self.terms(pp, plan, step, sides)
+        terms = self.terms(pp, plan, step, sides, _equal_terms(clauses[1:]))
         header = [self.t("column_vector"), self.t("column_modulus"), self.t("column_on_plan"),
                   self.t("column_direction")]
         self.table(None, header, [[term.name, term.modulus, term.segment, term.direction] for term in terms])
@@ -757,12 +768,14 @@ class _Note:
                 return plan.images[base]
         return None
 
-    def terms(self, pp: PlanPosition, plan: Plan, step: Step, sides: list[list[str]]) -> list[_Term]:
+    def terms(self, pp: PlanPosition, plan: Plan, step: Step, sides: list[list[str]],
+              equal: Mapping[str, str] | None = None) -> list[_Term]:
         """Each term of each side with its modulus, its segment on the plan and its line of action.
 
         A side is walked as it is laid off: from the image of its first
         (known) term, each component from the end of the one before, the last
-        ending at the point the step fixes.
+        ending at the point the step fixes. A term ``equal`` names is known as the term it equals, found before
+        (:meth:`copied`).
         """
         by_meaning = {vector.meaning: vector for vector in step.vectors}
         result = self.resolve(plan, _body(sides[0][0])[1])
@@ -784,8 +797,32 @@ class _Note:
                 if name in listed:
                     continue
                 listed.add(name)
+                if equal and name in equal:
+                    terms.append(self.copied(pp, plan, name, equal[name], vector))
+                    continue
                 terms.append(self.component(pp, plan, step, name, start, end, vector, number))
         return terms
+
+    def copied(self, pp: PlanPosition, plan: Plan, name: str, same: str, laid: LaidVector | None) -> _Term:
+        """A term the step copies from one found before, not one it solves for: link b of an RPP on a turning guide
+        slides on it without turning relative to it, so every point of b moves alike relative to the guide's link
+        (aFF4ᵏ + aFF4^r = aE6E4ᵏ + aE6E4^r, each part equal to its like). Its modulus is that term's, its Coriolis
+        part 2·ω·V of the same relative velocity; its segment is its own where the step lays it (f4f)."""
+        shown = self.equation(name)
+        found = next(((vector, step) for step in plan.steps for vector in step.vectors if vector.meaning == same), None)
+        if found is None:
+            return _Term(shown, "?", "—", "—")
+        source, source_step = found
+        value = abs(plan.points[source.end] - plan.points[source.start])
+        segment = "—" if laid is None else \
+            f"{self.segment(plan, laid.start, laid.end)} = {self.mm(abs(plan.points[laid.end] - plan.points[laid.start]) / plan.scale)}"
+        if name.endswith(_CORIOLIS):
+            modulus, direction = self.coriolis(pp, name, value)
+            return _Term(shown, modulus, segment, direction)
+        unit = self.text["unit_m_per_s" if plan.kind == "velocity" else "unit_m_per_s2"]
+        along = [line.along for line in source_step.lines if line.through == source.start]
+        return _Term(shown, f"{self.equation(same)} = {self.n(value)} {unit}", segment,
+                     self.line(along[0]) if along else "—")
 
     def known_term(self, plan: Plan, name: str, letter: str | None) -> _Term:
         shown = self.equation(name)
