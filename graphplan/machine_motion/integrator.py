@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
 
 from .drive import Brake, Clutch, Motor, Start
 from .shaft import TWO_PI, Machine
@@ -394,12 +395,44 @@ class Integrator:
             self.y = solution.y[:, -1].copy()
             if solution.status == 1:
                 fired = next(name for (_, name), hits in zip(events, solution.t_events, strict=True) if hits.size)
-                self._restarted_at_jump = fired == _JUMP
                 self.y = solution.y_events[[name for _, name in events].index(fired)][-1].copy()
+            else:
+                fired = None
+            passed = self._passed_jump(solution, started)
+            if passed is not None:
+                # The jump of Mr was stepped over: cut the segment there and go on with the next piece.
+                self.t, self.y = passed
+                self.times[-1] = np.append(solution.t[solution.t < self.t], self.t)
+                self.states[-1] = np.column_stack([solution.y[:, solution.t < self.t], self.y])
+                self.pieces[-1] = (solution.t[0], self.t, solution.sol)
+                fired = _JUMP
+            if fired is not None:
+                self._restarted_at_jump = fired == _JUMP
                 self._count_stall(started)
                 self._on_event(fired)
             elif stop in self.boundaries:
                 self._on_boundary(stop)
+
+    def _passed_jump(self, solution: Any, started: float) -> tuple[float, np.ndarray] | None:
+        """Where a segment passed the jump of Mr ahead without its event seeing it, else None.
+
+        The event is seen only where ``φ − φ_jump`` changes sign between the ends of a solver's step.  A machine
+        coasting against a piecewise constant Mr is followed in long steps, and the moving equations go on
+        smoothly through ω = 0: within one step φ passes the jump, turns back and ends below it, and the
+        segment ends at the stop with the first piece's Mr carried on past its end.  Up to its end (the first
+        rest, or a switch) the segment moves forward, so φ there is the farthest it came."""
+        if self._jump is None or self.eq.machine_held or self.t <= started:
+            return None
+        turn, k = self._jump
+        at = turn + self.eq.machine.moment.jumps[k]
+        if not self.y[0] > at:
+            return None
+        sol = solution.sol
+        when = brentq(lambda s: float(sol(s)[0]) - at, started, self.t, xtol=1e-14 * max(1.0, abs(self.t)),
+                      rtol=4 * np.finfo(float).eps)
+        state = np.asarray(sol(when), dtype=float).copy()
+        state[0] = at
+        return when, state
 
     def _solved(self, stop: float, events: list[tuple[Callable[[float, np.ndarray], float], str]],
                 method: str | None = None) -> Any:
