@@ -372,8 +372,10 @@ class MachineDynamics:
                 self.spec = source.dynamics
                 self.model = diagram_model_of(self.spec)
                 self.first_position: int | None = None
+                self.scene_loads: tuple = ()
             else:
                 self.spec = source.scene.dynamics
+                self.scene_loads = tuple(source.scene.loads)
                 self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
                 self.first_position = int(source.positions.numbers[0])
             self.flywheel = flywheel_from_spec(self.model, self.spec)
@@ -425,7 +427,14 @@ class MachineDynamics:
         resisting = PiecewiseMoment(angles, moments) if np.any(np.diff(angles) == 0) else moments
         with _scene_values("dynamics"):
             return Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
-                           inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting)
+                           inertia_slope=np.interp(phi, model.coordinate, model.inertia_slope), resisting=resisting,
+                           reversible=self.weights_alone)
+
+    @property
+    def weights_alone(self) -> bool:
+        """Whether Mr is the moment of the weights alone (a linkage with no loads): it acts whichever way the
+        shaft turns, so that at rest it turns the machine back where the brake cannot hold it."""
+        return self.first_position is not None and not self.scene_loads
 
     @property
     def resisting(self):

@@ -120,3 +120,95 @@ def test_press_starter_runs_down_with_a_brake_as_a_fine_step_integration():
     t_stop, phi_stop = _fine_stop(inertia, mr, float(phi0), float(omega0), brake=100.0)
     assert motion.stopped_at == pytest.approx(6.0 + t_stop, abs=2e-4)
     assert float(motion.phi[-1]) == pytest.approx(phi_stop, abs=2e-5)
+
+
+# An unbalanced crank: 20 kg at 0.05 m from its pivot (the rest of the linkage massless), run by a motor that is
+# switched off at 1 s while a brake comes on. Its Mr is its weight's moment alone, m·g·r·cos θ.
+MASS, RADIUS, G = 20.0, 0.05, 9.81
+
+
+def _pendulum_scene(brake: float) -> dict:
+    return {
+        "scene": {"title": "unbalanced crank", "locale": "en", "gravity": G},
+        "frame": {"link": 1, "points": {"O": [0.0, 0.0]}},
+        "driver": {"kind": "crank", "link": 2, "pivot": "O", "joint": "A", "length": 0.06, "rpm": 600.0},
+        "groups": [{"kind": "RRP", "links": [3, 4], "joints": ["A", "B"], "length": 0.24,
+                    "guide": {"through": "O", "angle": 0.0}, "assembly": "forward"}],
+        "points": {"S2": {"link": 2, "from": "O", "toward": "A", "at": RADIUS}},
+        "links": {"2": {"mass": MASS, "centre": "S2", "inertia": 0.01}},
+        "positions": {"count": 12, "number_from": 1},
+        "dynamics": {"motor": {"kind": "kloss", "power": 4000.0, "overload": 2.2, "synchronous_rpm": 1500,
+                               "rated_rpm": 1440, "gear_ratio": 2.4, "rotor_inertia": 0.01, "off_at": 1.0},
+                     "brake": {"torque": brake, "at": 1.0}},
+    }
+
+
+def _weight_moment(theta: float) -> float:
+    return MASS * G * RADIUS * math.cos(theta)
+
+
+def _swing_to_rest(inertia: float, theta: float, omega: float, brake: float,
+                   moment=_weight_moment, max_step: float = 1e-3) -> tuple[float, float, int]:
+    """The crank from (θ, ω) with the motor off: J·dω/dt = −Mr(θ) − brake·sign(ω), Mr the weight's moment
+    m·g·r·cos θ, the brake holding it at rest while that moment is within its torque. When and where it rests for
+    good, and how often it turned back on the way."""
+    t, turned_back = 0.0, 0
+    while True:
+        sense = 1.0 if omega > 0 or (omega == 0 and -moment(theta) > 0) else -1.0
+
+        def rest(_, y, sense=sense):
+            return sense * y[1]
+        rest.terminal, rest.direction = True, -1
+        solution = solve_ivp(lambda _, y, sense=sense: [y[1], (-moment(y[0]) - sense * brake) / inertia],
+                             (t, t + 100.0), [theta, omega], events=rest, rtol=1e-12, atol=1e-12, max_step=max_step)
+        t, theta, omega = float(solution.t_events[0][0]), float(solution.y_events[0][0][0]), 0.0
+        if abs(moment(theta)) <= brake:
+            return t, theta, turned_back
+        turned_back += 1
+
+
+@pytest.mark.parametrize("brake", [2.0, 5.0, 6.0, 9.0, 12.0])
+def test_a_brake_holds_an_unbalanced_crank_only_where_its_torque_outdoes_the_weight(brake):
+    dynamics = graphplan.load(_pendulum_scene(brake)).machine_dynamics()
+    motion = dynamics.motion
+    rest = math.radians(dynamics.rest_angle_deg())
+    assert abs(_weight_moment(rest)) <= brake * (1 + 1e-9)  # the brake holds it where it rests
+    model = dynamics.model
+    for when, name in motion.events:
+        if name == "turns back":  # and where it turned back, the weight outpulled the brake
+            phi = float(motion.state_at(when)[0])
+            assert abs(_weight_moment(float(model.driver[0]) + model.sense * phi)) > brake
+    # The same crank integrated here from its state when the motor goes off.
+    inertia = dynamics.machine.je(0.0) + dynamics.spec.motion.motor.reduced_inertia
+    assert dynamics.machine.je(2.0) == pytest.approx(dynamics.machine.je(0.0), rel=1e-9)
+    phi0, omega0 = (float(v) for v in motion.state_at(1.0))
+    t_rest, theta, turned_back = _swing_to_rest(inertia, float(model.driver[0]) + model.sense * phi0,
+                                                model.sense * omega0, brake)
+    assert motion.stopped_at == pytest.approx(1.0 + t_rest, abs=1e-4)
+    assert dynamics.rest_angle_deg() == pytest.approx(math.degrees(theta) % 360.0, abs=1e-3)
+    assert sum(name == "turns back" for _, name in motion.events) == turned_back
+    assert dynamics.machine.reversible
+
+
+@pytest.mark.parametrize(("start", "omega"), [(0.5, 3.0), (1.0, 0.0), (5.5, 6.0), (3.0, 9.0)])
+def test_a_machine_that_turns_back_takes_the_jumps_of_its_moment_either_way(start, omega):
+    """A reversible Mr with two jumps (6·cos φ + 3 up to φ = 2 rad, 6·cos φ − 6/(2π − 2) from there to the
+    turn's end: no work over a turn, as weights that act both ways) and a 2 N·m brake: the machine swings across the jumps both ways until the brake
+    holds it, as a fine-step integration has it."""
+    from graphplan.machine_motion import Brake, ConstantTorque, Machine, PiecewiseMoment, Start, simulate
+    LOW = -6.0 / (2.0 * math.pi - 2.0)
+
+    def exact(phi):
+        phi %= 2.0 * math.pi
+        return 6.0 * math.cos(phi) + (LOW if phi >= 2.0 else 3.0)
+    first, second = np.linspace(0.0, 2.0, 81), np.linspace(2.0, 2.0 * math.pi, 201)
+    moment = PiecewiseMoment(np.concatenate([first, second]),
+                             np.concatenate([6.0 * np.cos(first) + 3.0, 6.0 * np.cos(second) + LOW]))
+    machine = Machine(inertia=0.5, resisting=moment, reversible=True)
+    motion = simulate(machine, ConstantTorque(0.0), start=Start(omega=omega, angle=start),
+                      brake=Brake(torque=2.0, at=0.0), motor_off_at=0.0, rtol=1e-10)
+    t_rest, phi, turned_back = _swing_to_rest(0.5, start, omega, 2.0, moment=exact, max_step=1e-4)
+    assert turned_back >= 1
+    assert sum(name == "turns back" for _, name in motion.events) == turned_back
+    assert motion.stopped_at == pytest.approx(t_rest, abs=1e-4)
+    assert float(motion.phi[-1]) == pytest.approx(phi, abs=1e-4)

@@ -32,6 +32,10 @@ class Equations:
     it): its derivatives are zero for the whole segment.  A moving body follows its equation
     without that switch, so the right-hand side stays smooth and the solver finds the instant it
     comes to rest as an event (a switch inside a step would stall the step-size control).
+
+    A machine whose Mr acts whichever way it turns (:attr:`Machine.reversible`: its weights alone), run down with
+    the motor off and no clutch, turns back from rest where Mr outpulls the brake, whose torque holds it at most
+    (static friction); :attr:`sense` is the way it moves in the segment, and the brake acts against it.
     """
 
     def __init__(self, machine: Machine, motor: Motor, brake: Brake | None, clutch: Clutch | None,
@@ -56,6 +60,8 @@ class Equations:
         # The piece of a resisting moment with jumps the segment is on (the integrator sets it): within a segment
         # Mr is that piece's smooth curve, carried on past the jump that ends the segment.
         self.piece: int | None = None
+        # The way the machine moves in the segment: +1 forward, −1 back (only a reversible machine turns back).
+        self.sense = 1.0
 
     def motor_on(self, t: float) -> bool:
         return self.motor_off_at is None or t < self.motor_off_at
@@ -67,6 +73,8 @@ class Equations:
         brake = self.brake
         if brake is None or self.clock < brake.at:
             return 0.0
+        if self.sense < 0:
+            return -brake.torque + brake.damping * min(omega, 0.0)
         return brake.torque + brake.damping * max(omega, 0.0)
 
     def passive(self, t: float, phi: float, omega: float) -> float:
@@ -86,6 +94,10 @@ class Equations:
     def settle(self, phase: str, t: float, y: np.ndarray) -> None:
         """Decide, at a segment's start, which bodies are held at rest."""
         self.machine_held = self.driving_held = False
+        self.sense = 1.0
+        if phase == RIGID and self.turns_back() and (y[1] < 0.0 or (y[1] == 0.0 and self.pulled_back(t, y[0]))):
+            self.sense = -1.0
+            return
         if phase in (RIGID, LOCKED):
             driving, passive = self.driving(t, y[1]), self.passive(t, y[0], y[1])
             self.machine_held = y[1] <= 0.0 and not _overcomes(driving, passive)
@@ -93,6 +105,18 @@ class Equations:
         torque = self.clutch_torque(phase)
         self.machine_held = y[1] <= 0.0 and not _overcomes(torque, self.passive(t, y[0], y[1]))
         self.driving_held = y[2] <= 0.0 and not _overcomes(self.driving(t, y[2]), -torque)
+
+    def turns_back(self) -> bool:
+        """Whether the machine may turn back now: its Mr acts both ways, the motor is off and no clutch."""
+        return self.machine.reversible and self.clutch is None and not self.motor_on(self.clock)
+
+    def pulled_back(self, t: float, phi: float) -> bool:
+        """Whether Mr at rest at ``phi`` turns the machine back against the brake's static torque."""
+        brake = self.brake
+        holding = brake.torque if brake is not None and self.clock >= brake.at else 0.0
+        moment = self.machine.moment
+        resisting = self.machine.mr(phi, 0.0) if moment is None else moment(phi)
+        return _overcomes(resisting, -holding)
 
     def rigid(self, t: float, y: np.ndarray) -> list[float]:
         if self.machine_held:
@@ -191,6 +215,8 @@ class Integrator:
         # The next jump of Mr ahead (the turn's start and its index among the jumps), where Mr has jumps.
         moment = equations.machine.moment
         self._jump: tuple[float, int] | None = None
+        # The way the machine moved when the jump ahead was aimed at (a machine that turns back aims anew).
+        self._jump_sense = 1.0
         self._restarted_at_jump = False
         # What the run had to do otherwise than asked, for its notes.
         self.fallbacks: list[str] = []
@@ -267,20 +293,42 @@ class Integrator:
             events.append((_event(lambda t, y: capacity - abs(eq.transmitted(t, y)), -1.0), "clutch slips"))
         # Coming to rest switches the passive resistances from moving to holding: the moving
         # equations go on smoothly through ω = 0, where this event stops them.
+        sense = eq.sense
         if not eq.machine_held:
-            events.append((_event(lambda t, y: y[1], -1.0), "stopped"))
+            events.append((_event(lambda t, y: sense * y[1], -1.0), "stopped"))
         if self.phase in (OPEN, SLIP_FORWARD, SLIP_BACKWARD) and not eq.driving_held:
             events.append((_event(lambda t, y: y[2], -1.0), "driving half stopped"))
         if self._jump is not None and not eq.machine_held:
             turn, k = self._jump
             at = turn + eq.machine.moment.jumps[k]
-            events.append((_event(lambda t, y: y[0] - at, 1.0), _JUMP))
+            events.append((_event(lambda t, y: sense * (y[0] - at), 1.0), _JUMP))
         return events
+
+    def _aim_jumps(self) -> None:
+        """Aim at the next jump of Mr the way the machine now moves, and take the piece it is on (it turns back)."""
+        sense = self._jump_sense = self.eq.sense
+        moment = self.eq.machine.moment
+        if self._jump is None:
+            return
+        phi, count = self.y[0], len(moment.jumps)
+        base = math.floor(phi / TWO_PI) * TWO_PI
+        if sense > 0:
+            self._jump = next((turn, k) for turn in (base, base + TWO_PI) for k, jump in enumerate(moment.jumps)
+                              if turn + jump > phi)
+            self.eq.piece = moment.pieces_from[self._jump[1] - 1]
+        else:
+            self._jump = next((turn, k) for turn in (base, base - TWO_PI) for k in reversed(range(count))
+                              if turn + moment.jumps[k] < phi)
+            self.eq.piece = moment.pieces_from[self._jump[1]]
 
     def _on_event(self, name: str) -> None:
         if name == _JUMP:  # not an event of the run: Mr goes on with its next piece
             moment = self.eq.machine.moment
             turn, k = self._jump
+            if self._jump_sense < 0:  # turning back: on with the piece that ends at the jump
+                self.eq.piece = moment.pieces_from[k - 1]
+                self._jump = (turn, k - 1) if k > 0 else (turn - TWO_PI, len(moment.jumps) - 1)
+                return
             self.eq.piece = moment.pieces_from[k]
             self._jump = (turn, k + 1) if k + 1 < len(moment.jumps) else (turn + TWO_PI, 0)
             return
@@ -296,7 +344,11 @@ class Integrator:
                 self.phase = self._lock()  # at rest the motor may pull harder than the clutch can pass
         elif name == "driving half stopped":
             self.y[2] = 0.0
+        moving = self.eq.sense
         self._finish_if_held_at_rest()
+        if name == "stopped" and not self.finished and self.phase == RIGID and self.eq.sense != moving:
+            # At rest for an instant only: Mr outpulls the brake, and the machine turns back.
+            self.events[-1] = (self.t, "turns back")
 
     def _counted(self, rhs: Callable[[float, np.ndarray], list[float]]) -> Callable[[float, np.ndarray], list[float]]:
         """``rhs`` that stops the run once it has been evaluated :attr:`max_evaluations` times."""
@@ -361,6 +413,8 @@ class Integrator:
         while not self.finished and self.t < t_end:
             self.eq.clock = self.t
             self.eq.settle(self.phase, self.t, self.y)
+            if self.eq.sense != self._jump_sense:
+                self._aim_jumps()
             stop = min([b for b in self.boundaries if b > self.t] + [t_end])
             events = self._events()
             if self._restarted_at_jump and self.method != _ROBUST:
@@ -425,7 +479,7 @@ class Integrator:
             return None
         turn, k = self._jump
         at = turn + self.eq.machine.moment.jumps[k]
-        if not self.y[0] > at:
+        if not self.eq.sense * (self.y[0] - at) > 0:
             return None
         sol = solution.sol
         when = brentq(lambda s: float(sol(s)[0]) - at, started, self.t, xtol=1e-14 * max(1.0, abs(self.t)),

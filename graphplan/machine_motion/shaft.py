@@ -75,11 +75,18 @@ class Machine:
     inertia_slope
         ``dJe/dφ``, kg·m²/rad: samples or a callable of φ.  Taken from the spline when
         ``inertia`` is samples, zero when it is a number; required when it is a callable.
+    reversible
+        Whether ``Mr`` is the moment of forces that act whichever way the shaft turns (the weights alone, which
+        give back on the way down what they took on the way up), not of passive resistances that only resist the
+        motion.  Run down with the motor off, such a machine turns back from rest where Mr outpulls the brake
+        (which holds it at most with its torque) and swings until the brake holds it.  Otherwise a machine at
+        rest is held wherever its moments do not drive it forward.
     """
 
     inertia: Any
     resisting: Any = 0.0
     inertia_slope: Any = None
+    reversible: bool = False
     _je: Callable[[float], float] = field(init=False, repr=False)
     _je_slope: Callable[[float], float] = field(init=False, repr=False)
     _mr: Callable[[float, float], float] = field(init=False, repr=False)

@@ -343,6 +343,11 @@ def _run_down(note: Writer, dynamics) -> None:
     note.para(note.t("note_dyn_stopped", off=note.n(dynamics.spec.motion.motor_off_at, 4),
                      time=note.n(motion.stopped_at, 4),
                      angle=dynamics.stall_place(note.text, lambda value: note.n(value, 4))))
+    turns = sum(name == "turns back" for _, name in motion.events)
+    if turns:
+        brake = dynamics.spec.motion.brake
+        note.para(note.t("note_dyn_turns_back", torque=note.n(brake.torque if brake is not None else 0.0),
+                         count=Count(turns)))
 
 
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:
