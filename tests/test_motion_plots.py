@@ -84,6 +84,36 @@ def test_the_steady_turn_is_one_whole_turn_between_the_steady_extremes(motion):
         pyplot.close(figure)
 
 
+@pytest.mark.parametrize("start_deg", [180.0, 97.0])
+def test_the_steady_turn_of_a_run_started_away_from_position_1_spans_the_whole_turn(start_deg):
+    """A run that starts at 180° from position 1 has its steady turn from 180° to 540°: drawn over 0…360°, the
+    part past 360° from 0°, not left outside the axis (the turn's lower half, with ωmin, was missing)."""
+    from matplotlib import pyplot
+
+    machine = Machine(INERTIA, resisting=lambda phi, omega: LOAD + SWING * math.sin(phi))
+    motion = simulate(machine, LinearMotor(200.0, 30.0, rotor_inertia=0.2),
+                      start=Start(angle=math.radians(start_deg)), rtol=1e-8)
+    figure = motion_plot(motion, strings("en"))
+    _, turn = figure.axes
+    try:
+        integrated = turn.get_lines()[0]
+        angles, speeds = np.asarray(integrated.get_xdata(), float), np.asarray(integrated.get_ydata(), float)
+        drawn = np.isfinite(angles)
+        assert np.all((angles[drawn] >= 0.0) & (angles[drawn] <= 360.0))
+        assert angles[drawn].min() == pytest.approx(0.0, abs=1e-9)
+        assert angles[drawn].max() == pytest.approx(360.0, abs=1e-9)
+        # Every degree of the turn is drawn, with no gap wider than the samples' spacing.
+        covered = np.sort(angles[drawn])
+        assert np.max(np.diff(covered)) < 2.0
+        cycle = motion.steady.cycle
+        assert np.nanmax(speeds) == pytest.approx(cycle.max_speed, rel=1e-6)
+        assert np.nanmin(speeds) == pytest.approx(cycle.min_speed, rel=1e-6)
+        # The same turn as the one a run from position 1 settles in, angle for angle.
+        assert 90.0 < angles[np.nanargmin(speeds)] < 180.0 and 270.0 < angles[np.nanargmax(speeds)] <= 360.0
+    finally:
+        pyplot.close(figure)
+
+
 def test_a_scene_with_a_motor_gets_the_figure_of_its_motion_and_one_without_none(tmp_path):
     scene = tmp_path / "press.toml"
     scene.write_text(PRESS, encoding="utf-8")

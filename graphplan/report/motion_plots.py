@@ -208,15 +208,30 @@ def _events(plot, motion: MachineMotion, text: Mapping[str, str], span: float) -
         plot.plot([], [], " ", label=label)
 
 
+def _within_turn(angles: np.ndarray, speeds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A turn's angles (degrees, rising over 360°) and speeds, the angles taken within 0…360°.
+
+    The steady turn starts where the run started, plus whole turns: a run started away from position 1 has its
+    turn run from there (180…540° for a start at 180°).  The part past 360° is drawn from 0°, the curve broken
+    where it wraps, with the speed at 360° (= 0°) at both ends of the break."""
+    angles = angles - 360.0 * math.floor(angles[0] / 360.0 + 1e-9)
+    past = angles > 360.0 * (1.0 + 1e-12)
+    if not np.any(past):
+        return angles, speeds
+    wrapped = np.where(past, angles - 360.0, angles)
+    i = int(np.argmax(past))
+    at_edge = float(np.interp(360.0, angles[i - 1:i + 1], speeds[i - 1:i + 1]))
+    return (np.concatenate([wrapped[:i], [360.0, np.nan, 0.0], wrapped[i:]]),
+            np.concatenate([speeds[:i], [at_edge, np.nan, at_edge], speeds[i:]]))
+
+
 def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
                  flywheel: tuple[np.ndarray, np.ndarray] | None) -> None:
     cycle, mark = motion.steady.cycle, text["decimal_mark"]
     times = np.linspace(cycle.start, cycle.start + cycle.period, _TURN_SAMPLES)
     state = motion.state_at(times)
-    # The cycle starts where the shaft has made whole turns: counted from there, it runs 0…360°.
-    angles = np.degrees(state[0])
-    angles -= 360.0 * math.floor(angles[0] / 360.0 + 1e-9)
-    plot.plot(angles, state[1], color=_SHAFT, linewidth=1.1,
+    angles, speeds = _within_turn(np.degrees(state[0]), state[1])
+    plot.plot(angles, speeds, color=_SHAFT, linewidth=1.1,
               label=text["motion_integrated"].format(delta=number(cycle.delta, 4, mark)))
     if flywheel is not None:
         along, omega = flywheel
