@@ -550,11 +550,39 @@ class MachineDynamics:
                 or asked.motor_off_at is not None):
             return None
         end, speed = float(motion.t[-1]), float(motion.omega[-1])
-        rising = speed >= float(motion.omega[len(motion.omega) * 9 // 10])
         limit = "its duration" if asked.duration is not None else f"{MOST_CYCLES} turns' time at the running speed"
-        return (f"dynamics: no steady state within the run, t = {end:.4g} s ({limit}): the machine is still "
-                f"{'speeding up' if rising else 'slowing down'} at ω = {speed:.4g} rad/s, so the results have no ωm, "
-                "δ or start-up time; a longer [dynamics] duration (s) runs it on")
+        head = f"dynamics: no steady state within the run, t = {end:.4g} s ({limit}): "
+        runaway = self.runaway()
+        if runaway is not None:
+            return (head + f"the machine speeds up without end, at ω = {speed:.4g} rad/s by then: the motor's torque on "
+                    f"the shaft, {runaway[0]:.6g} N·m, exceeds the mean resistance, {runaway[1]:.6g} N·m, at every "
+                    "speed, so no duration reaches a steady state (more resistance, or a motor whose torque falls "
+                    "with speed: linear, kloss)")
+        return (head + f"the machine is still {'speeding up' if self.speeding_up() else 'slowing down'} at "
+                f"ω = {speed:.4g} rad/s, so the results have no ωm, δ or start-up time; a longer [dynamics] "
+                "duration (s) runs it on")
+
+    def runaway(self) -> tuple[float, float] | None:
+        """(the motor's torque on the shaft, the mean resistance) where the motor, on to the run's end with no
+        brake, outpulls the resistance at every speed: the machine speeds up without end (a run given a duration
+        ends at it); None otherwise."""
+        from .machine_motion.method import speeds_up_without_end
+
+        asked = self.spec.motion
+        if self.motion is None or asked.motor_off_at is not None or asked.brake is not None:
+            return None
+        return speeds_up_without_end(self.machine, asked.motor)
+
+    def speeding_up(self) -> bool:
+        """Whether the run ends speeding up, on the average over whole turns: the last turn's mean speed against
+        the one before it (within a turn the speed rises and falls with the resistance, so two instants say
+        nothing); short of two turns, the speed at the end against the mean over the run."""
+        motion = self.motion
+        cycles = motion.cycles
+        if len(cycles) >= 2:
+            return cycles[-1].mean_speed >= cycles[-2].mean_speed
+        travel, span = float(motion.phi[-1] - motion.phi[0]), float(motion.t[-1] - motion.t[0])
+        return span <= 0 or float(motion.omega[-1]) >= travel / span
 
     def off_design_warning(self) -> str | None:
         """One line for the command line when the motor settles the machine away from the speed its flywheel

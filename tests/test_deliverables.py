@@ -13,6 +13,7 @@ from xml.etree import ElementTree
 import pytest
 from test_scene_errors import to_toml
 
+import graphplan
 from graphplan.cli import Progress, main
 from graphplan.output import WRITTEN
 from graphplan.starters import KINDS, MECHANISMS, starter
@@ -272,6 +273,39 @@ def test_a_run_that_ends_short_of_a_steady_state_is_told_so_and_flagged(tmp_path
     status, out = run(tmp_path, "--only", "dynamics", scene=scene)
     assert status == 0 and "no steady state" not in capsys.readouterr().out
     assert json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]["steady"] is True
+
+
+@pytest.mark.parametrize("duration", [3.3, 3.9])
+def test_a_run_that_ends_short_of_a_steady_state_inside_a_turn_is_told_its_trend_over_whole_turns(duration):
+    """The flywheel starter run for a few seconds gains speed turn by turn (the turns' mean speeds 2.99, 7.23,
+    10.4 rad/s), but within a turn it slows while the press punches: a run that ends there was told the machine
+    was still slowing down."""
+    scene = tomllib.loads(starter("flywheel"))
+    scene["dynamics"]["duration"] = duration
+    dynamics = graphplan.load(scene).machine_dynamics()
+    motion = dynamics.motion
+    assert motion.steady is None and len(motion.cycles) >= 2
+    assert motion.cycles[-1].mean_speed > motion.cycles[-2].mean_speed
+    warning = dynamics.unsettled_warning()
+    assert "still speeding up" in warning and "slowing" not in warning
+
+
+def test_a_machine_that_speeds_up_without_end_is_told_so_not_to_run_longer(tmp_path):
+    """A constant motor above the press's mean resistance (18·14.4 = 259.2 N·m against 245.79) run for 5 s: the
+    machine gains 84 J a turn and never settles, but it was told it was still slowing down and that a longer
+    duration would run it on."""
+    text = re.sub(r"^motor = .*$", 'motor = { kind = "constant", torque = 18.0, gear_ratio = 14.4 }\nduration = 5.0',
+                  starter("flywheel"), count=1, flags=re.MULTILINE)
+    assert "duration = 5.0" in text
+    scene = tmp_path / "runaway.toml"
+    scene.write_text(text, encoding="utf-8")
+    dynamics = graphplan.load(tomllib.loads(text)).machine_dynamics()
+    warning = dynamics.unsettled_warning()
+    assert "speeds up without end" in warning and "259.2 N·m" in warning and "245.789 N·m" in warning
+    assert "slowing" not in warning and "longer" not in warning
+    status, out = run(tmp_path, "--only", "dynamics,note", scene=scene)
+    assert status == 0
+    assert "so it speeds up without end" in (out / "note.md").read_text(encoding="utf-8")
 
 
 def test_new_does_not_overwrite_a_scene(tmp_path, capsys):

@@ -178,6 +178,9 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
                              time=note.n(float(motion.t[-1]), 4), speed=note.n(float(motion.omega[-1]))))
         elif motion.stalled_at is None:
             note.para(note.text["note_dyn_no_steady"])
+            runaway = dynamics.runaway()
+            if runaway is not None:
+                note.para(note.t("note_dyn_runaway", torque=note.n(runaway[0]), resisting=note.n(runaway[1])))
         else:
             _stall(note, dynamics)
         return
