@@ -212,3 +212,29 @@ def test_a_machine_that_turns_back_takes_the_jumps_of_its_moment_either_way(star
     assert sum(name == "turns back" for _, name in motion.events) == turned_back
     assert motion.stopped_at == pytest.approx(t_rest, abs=1e-4)
     assert float(motion.phi[-1]) == pytest.approx(phi, abs=1e-4)
+
+
+@pytest.mark.parametrize("damping", [None, 0.05])
+def test_a_run_down_with_nothing_to_take_its_energy_is_told_so(damping, tmp_path):
+    """The unbalanced crank switched off with no brake (or a brake of damping alone): its weight gives back over a
+    turn what it takes, so it never comes to rest. It was run until the equation of motion had been evaluated
+    300000 times and blamed on the motor's speed, the gear ratio and the inertias."""
+    from graphplan.cli import main
+    from graphplan.errors import GraphplanError
+
+    scene = _pendulum_scene(5.0)
+    if damping is None:
+        del scene["dynamics"]["brake"]
+    else:
+        scene["dynamics"]["brake"] = {"torque": 0.0, "damping": damping, "at": 1.0}
+    with pytest.raises(GraphplanError) as caught:
+        assert graphplan.load(scene).machine_dynamics().motion is None  # raises first
+    told = str(caught.value)
+    assert "nothing to take its energy" in told and "never comes to rest" in told and "brake" in told
+    assert "too slow or too stiff" not in told and "gear ratio" not in told
+    assert ("only in the limit" in told) == (damping is not None)
+    # check says the same, before anything is integrated.
+    from test_scene_errors import to_toml
+    path = tmp_path / "swing.toml"
+    path.write_text(to_toml(scene), encoding="utf-8")
+    assert main(["check", str(path)]) == 2

@@ -115,6 +115,28 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
                          "(linear, kloss)")
 
 
+def refuse_endless_run_down(machine: Machine, brake_torque: float, brake_damping: float = 0.0) -> None:
+    """Raise :class:`ValueError` for a run-down (the motor switched off, no duration) that nothing brings to rest:
+    the resistance at rest takes no work over a turn on the average (the weights alone give back on the way down
+    what they take on the way up) and no brake's torque holds the machine, so that it turns, or swings, for ever.
+    A brake's damping alone slows it only in the limit."""
+    values = [machine.mr(phi, 0.0) for phi in _FINE_TURN]
+    resisting = float(np.mean(values))
+    scale = max(abs(v) for v in values)
+    # The weights' moment averages to nought but for rounding, either side of it.
+    if resisting + brake_torque > 1e-9 * scale:
+        return
+    if abs(resisting) <= 1e-9 * scale:
+        resisting = 0.0
+    damping = (f"; the brake's damping, {brake_damping:g} N·m·s, slows it only in the limit and never to rest"
+               if brake_damping > 0 else "")
+    raise ValueError(f"motor: switched off, the machine has nothing to take its energy: its resistance, {resisting:.4g} N·m "
+                     f"on the average over a turn, takes no work from it turn by turn (weights give back on the way "
+                     f"down what they take on the way up) and no brake holds it{damping}, so it never comes to rest; "
+                     "give a "
+                     "brake with a torque (brake = { torque, at }) or a duration")
+
+
 def _mean_surplus(machine: Machine, motor: Motor):
     """The motor's torque less the resistance's mean over a turn, as a function of the speed (N·m).
 

@@ -15,7 +15,7 @@ from scipy.optimize import brentq
 from .cycles import Cycle, SteadyState, find_cycles, find_steady_state, refined
 from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
 from .integrator import MOST_EVALUATIONS, Equations, Integrator
-from .method import choose_method, is_stiff, refuse_runaway, run_down_time, running_speed
+from .method import choose_method, is_stiff, refuse_endless_run_down, refuse_runaway, run_down_time, running_speed
 from .shaft import TWO_PI, Machine
 
 METHODS = ("auto", "RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -175,6 +175,9 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     if isinstance(max_cycles, bool) or not isinstance(max_cycles, int) or max_cycles < 3:
         raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
     refuse_runaway(machine, motor, duration is None and brake is None and motor_off_at is None, start, clutch)
+    if duration is None and motor_off_at is not None:
+        refuse_endless_run_down(machine, brake.torque if brake is not None else 0.0,
+                                brake.damping if brake is not None else 0.0)
     equations = Equations(machine, motor, brake, clutch, motor_off_at)
     omega_run = running_speed(machine, motor, start, duration)
     atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)

@@ -11,7 +11,7 @@ from ..errors import SceneError
 from ..reader import Table, check_number
 from ..units import RPM
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
-from .method import refuse_runaway, running_speed
+from .method import refuse_endless_run_down, refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
 from .simulation import DEFAULT_RTOL, METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
 
@@ -50,6 +50,10 @@ class MotionSpec:
         self._refuse_long_run(machine)
         refuse_runaway(machine, self.motor, self.duration is None and self.brake is None and self.motor_off_at is None,
                        self.start, self.clutch)
+        if self.duration is None and self.motor_off_at is not None:
+            brake = self.brake
+            refuse_endless_run_down(machine, brake.torque if brake is not None else 0.0,
+                                    brake.damping if brake is not None else 0.0)
 
     def _refuse_long_run(self, machine: Machine) -> None:
         """Raise :class:`ValueError` for a run of more turns than a run integrates."""
