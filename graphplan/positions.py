@@ -88,7 +88,7 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         reference = _first_reference(mechanism, float(values[0]), int(numbers[0]), f"driver.{driver.run_key}")
         extremes, reversals, turns = None, (), 0
     else:
-        start = _first_value(mechanism)
+        start = first_value(mechanism)
         # With start = "extreme" the first position is found later; the branches are chosen at 0° first.
         reference = reference_at(mechanism, start) if spec.start == "extreme" else \
             _first_reference(mechanism, start, int(numbers[0]), "positions.start")
@@ -162,18 +162,13 @@ def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: 
                                     f"singular: start the run elsewhere ({moved_by})") from None
 
 
-def _first_value(mechanism: Mechanism) -> float:
-    """The driver's coordinate where the scene's positions start and its assemblies are chosen (:func:`first_value`)."""
-    return first_value(mechanism)
-
-
 def _first_assembly(mechanism: Mechanism) -> Reference | None:
     """The assemblies the scene's first position fixes, where it can be assembled; None where it cannot, or where a
     group is followed by continuation (a walk to every angle of the grid would be long): each angle's own then."""
     if any(group.continuation for group in mechanism.groups):
         return None
     try:
-        return reference_at(mechanism, _first_value(mechanism))
+        return reference_at(mechanism, first_value(mechanism))
     except (AssemblyError, SingularPositionError):
         return None
 
