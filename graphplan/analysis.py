@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .check import ErrorRow, Reading, analytic_values, error_rows, force_error_rows, readings
+from .check import ErrorRow, Reading, analytic_values, balancing_error_rows, error_rows, force_error_rows, readings
 from .cycle_work import CycleWork, cycle_work
 from .errors import SceneError
 from .forces import ForcePlan, Load, force_plan
@@ -416,8 +416,12 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
         exact = _exact_values(mechanism, motion, table, index)
         measured = dict(scene.measured.get(number, {}))
         measured_forces = measured.pop("forces", None)
-        if measured_forces and acting is None:
-            raise SceneError(f"measured.{number}.forces", "the scene has no force analysis: give the links' masses or loads")
+        # The balancing load found by hand (a value, N·m or N), checked as the force readings are.
+        measured_balancing = measured.pop("balancing", None)
+        for key, given in (("forces", measured_forces), ("balancing", measured_balancing is not None)):
+            if given and acting is None:
+                raise SceneError(f"measured.{number}.{key}",
+                                 "the scene has no force analysis: give the links' masses or loads")
         rows = error_rows(number, exact, plans, table, scene.drawing.drafting_precision, measured)
         warnings += _shallow_crossings(index, plans, scene.drawing.drafting_precision)
         loads, forces, on_lever, rubbing, rubbing_lever, rubbing_loads = (), None, None, None, None, ()
@@ -430,12 +434,16 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
                     rubbing = force_plan(mechanism, where, directions, loads, forces.group_scales,
                                          functools.partial(friction_loads, friction, state))
             except ParallelLinesError as error:
-                if measured_forces:
-                    _refuse_singular(number, error, "force polygon", "forces")
+                if measured_forces or measured_balancing is not None:
+                    _refuse_singular(number, error, "force polygon", "forces" if measured_forces else "balancing")
                 warnings.append(PositionWarning(index, "singular", f"no force plan: {error}"))
             if forces is not None and balance is not None and not balance.singular[index]:
                 solved = {reaction.name: complex(reaction.force[index]) for reaction in balance.reactions}
                 rows += force_error_rows(number, solved, forces, scene.drawing.drafting_precision, measured_forces)
+                if measured_balancing is not None:
+                    symbol, unit = balancing_symbol(mechanism, strings("en"))
+                    rows += balancing_error_rows(number, float(balance.balancing[index]), forces, symbol, unit,
+                                                 measured_balancing)
             on_lever = lever(mechanism, where, velocity, loads)
             if rubbing is not None and not rubbing.locked:
                 settled = {name: found.force for name, found in rubbing.reactions.items()}

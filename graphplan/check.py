@@ -318,6 +318,27 @@ def is_reaction(quantity: str) -> bool:
     return quantity.startswith("R") and quantity[1:].isdigit()
 
 
+# The balancing load's quantity in the error table: the moment on a driving crank (N·m), the force on a slider (N).
+BALANCING = ("Mb", "Fb")
+
+
+def is_balancing(quantity: str) -> bool:
+    """Whether an error row's quantity is the balancing load (``Mb``, ``Fb``), a value found by hand, not a length."""
+    return quantity in BALANCING
+
+
+def balancing_error_rows(position: int, exact: float, forces: ForcePlan, symbol: str, unit: str,
+                         measured: float) -> list[ErrorRow]:
+    """The balancing load a student found by hand (``[measured.N] balancing``: Mb = R32·h, or off Zhukovsky's
+    lever) against the linear system's ``exact`` one, beside the force analysis's own (the crank's moment equation,
+    the slider's polygon).  The student gives its size; its sense is taken from the force analysis, as a plan
+    reading's ω takes the plan's, so the rows are signed as the exact value is (ccw, or along the guide, positive).
+    A value, not a length: no drafting row, and nothing a millimetre stands for."""
+    sense = -1.0 if (forces.balancing or exact) < 0 else 1.0
+    return [ErrorRow(position, symbol, exact, forces.balancing, "construction"),
+            ErrorRow(position, symbol, exact, sense * measured, "measured", f"balancing = {measured:g} {unit}")]
+
+
 def force_error_rows(position: int, exact: Mapping[str, complex], forces: ForcePlan, precision: float,
                      measured: Mapping[str, float] | None = None) -> list[ErrorRow]:
     """The reactions of the force polygons against the linear system's ``exact`` ones, per source.
@@ -367,6 +388,11 @@ def _measured_reaction(forces: ForcePlan, name: str, where: str) -> tuple[str, s
         component = _component_of(forces, name)
         if component is not None:
             raise SceneError(where, f"{component}; the polygons find {', '.join(forces.reactions)}")
+        # Mb, Fb, or the Russian Му (уравновешивающий) in either alphabet.
+        if name.lower() in ("mb", "fb", "mу", "му", "fу"):
+            raise SceneError(where, f"{name} is the balancing load, a value, not a reaction's length on a polygon: "
+                             f"give it as [measured.{where.split('.')[1]}] balancing = … (N·m for a crank's moment, "
+                             f"N for a slider's force); the polygons have {', '.join(forces.reactions)}")
         raise SceneError(where, f"the force polygons have no reaction {name}; they have {', '.join(forces.reactions)}"
                          f"{_lettering_hint(name, [], _reaction_names(forces))}")
     drawn = next((group for group in forces.groups if any(vector.name == name for vector in group.polygon.vectors)),

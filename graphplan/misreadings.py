@@ -20,7 +20,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from .check import ErrorRow, is_reaction
+from .check import ErrorRow, is_balancing, is_reaction
 from .motion import PositionWarning
 from .scales import nearest_standard_scale
 
@@ -96,8 +96,9 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     """
     precision = drawing.drafting_precision
     constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
+    # The balancing load found by hand is a value, not a length read off a drawing: its error is the table's alone.
     measured = [(row, constructed[row.quantity]) for row in position.errors
-                if row.source == "measured" and row.quantity in constructed]
+                if row.source == "measured" and row.quantity in constructed and not is_balancing(row.quantity)]
     far = [(row, plan) for row, plan in measured if _far_off(row, plan, precision)]
     # One rule for every drawing: the plans, then every force polygon together (the scene's one force_scale
     # sets them all, so a student who drew them all at one μF is told that one key), then each polygon alone.

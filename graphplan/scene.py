@@ -191,7 +191,8 @@ class Scene:
     friction: tuple[FrictionSpec, ...]
     positions: Positions
     drawing: Drawing
-    measured: Mapping[int, Mapping[str, Mapping[str, float]]]
+    # By position: each plan's (and the polygons') readings in mm by segment, and "balancing", a value (N·m or N).
+    measured: Mapping[int, Mapping[str, Mapping[str, float] | float]]
     include: tuple[str, ...] | None
     source: str = "<scene>"
     # "couple": Fu at the centre and Mu; "displaced": one resultant Fu displaced by h = Mu/Fu.
@@ -876,16 +877,16 @@ def _read_drawing(table: Table) -> Drawing:
     return drawing
 
 
-def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, float]]]:
+def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, float] | float]]:
     if table is None:
         return {}
-    measured: dict[int, Mapping[str, Mapping[str, float]]] = {}
+    measured: dict[int, Mapping[str, Mapping[str, float] | float]] = {}
     for key, entry in table.subtables():
         assert entry is not None
         number = _numbered(key, entry.path, "must be a position number: write [measured.5]")
         if number in measured:
             raise SceneError(entry.path, f"position {number} is given twice")
-        readings: dict[str, dict[str, float]] = {}
+        readings: dict[str, Mapping[str, float] | float] = {}
         for plan in ("velocity", "acceleration", "forces"):
             lengths = entry.table(plan, None)
             if lengths is None:
@@ -895,6 +896,11 @@ def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, f
                                                "(pb = 42.5, …), or leave the table out")
             readings[plan] = MappingProxyType({name: lengths.number(name, non_negative=True)
                                                for name in list(lengths.data)})
+        # The balancing moment (a crank, N·m) or force (a slider, N) the student found by hand: a value, not a length,
+        # its size alone (its sense is the force analysis's, as ω's is the plan's).
+        balancing = entry.number("balancing", None, non_negative=True)
+        if balancing is not None:
+            readings["balancing"] = balancing
         entry.done(list_known=True)
         # Read-only all the way down: scene.measured[5]["velocity"]["pb"] = 1.0 changed what plan(5) read.
         measured[number] = MappingProxyType(readings)

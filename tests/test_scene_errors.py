@@ -821,7 +821,7 @@ CASES: list[Case] = [
     Case("measured-russian-word", {"measured.5.скорость": {"pb": 39.0}}, "measured.5.скорость",
          "unknown key; did you mean 'velocity'?"),
     Case("measured-unknown-key-listed", {"measured.5.замер": {"pb": 39.0}}, "measured.5.замер",
-         "unknown key; the keys here are acceleration, forces, velocity"),
+         "unknown key; the keys here are acceleration, balancing, forces, velocity"),
     Case("measured-not-in-plans", {"measured.7": {"velocity": {"pb": 39.0}}}, "measured.7",
          "position 7 is not in positions.plans [5, 11] nor in positions.velocity_plans", stage="build"),
     Case("measured-not-in-velocity-plans", {"positions.velocity_plans": [1, 2], "measured.7": {"velocity": {"pb": 39.0}}},

@@ -16,7 +16,7 @@ import math
 from collections import defaultdict
 
 from ..analysis import Analysis, PlanPosition, VelocityPosition
-from ..check import SOURCES, ErrorRow, is_reaction
+from ..check import SOURCES, ErrorRow, is_balancing, is_reaction
 from ..locale import strings
 from ..misreadings import (
     FAR_OFF_PERCENT,
@@ -30,6 +30,7 @@ from ..misreadings import (
     slips,
 )
 from ..render.numerals import scale_factor
+from ..wording import balancing_load
 from .forces import number
 from .results import PERCENT_FLOOR
 
@@ -52,8 +53,10 @@ def unit_of(quantity: str, text: dict[str, str]) -> str:
         return text["unit_rad_per_s"]
     if quantity.startswith("epsilon"):
         return text["unit_rad_per_s2"]
-    if is_reaction(quantity):
+    if is_reaction(quantity) or quantity == "Fb":
         return text["newton"]
+    if quantity == "Mb":
+        return text["newton_metre"]
     return text["unit_m_per_s" if quantity.startswith("V") else "unit_m_per_s2"]
 
 
@@ -178,7 +181,15 @@ def reactions_intro(analysis: Analysis, in_note: bool = False) -> str:
         # the words.
         without = text["errors_forces_without_friction"].format(
             plain="forces_N.svg", with_friction="forces_friction_N.svg", measured="[measured] forces")
-    return text["errors_forces"] + (f" {without}" if analysis.friction else "")
+    # The balancing load found by hand, checked beside the reactions: what its rows compare, and its sense's source.
+    balancing = next((row.quantity for plan in analysis.plans for row in plan.errors
+                      if row.source == "measured" and is_balancing(row.quantity)), None)
+    found = ""
+    if balancing is not None:
+        found = " " + text["note_balancing_measured" if in_note else "errors_balancing_measured"].format(
+            symbol=balancing, unit=unit_of(balancing, text), load=balancing_load(analysis.mechanism, text, lower=True),
+            key="[measured] balancing")
+    return text["errors_forces"] + (f" {without}" if analysis.friction else "") + found
 
 
 def _nearer_with_friction(analysis: Analysis, plan: VelocityPosition, mark: str, in_note: bool) -> list[str]:
