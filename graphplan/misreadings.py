@@ -17,7 +17,8 @@ from __future__ import annotations
 import math
 import statistics
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from .check import ErrorRow, is_balancing, is_reaction
@@ -86,6 +87,24 @@ class Slips:
 
     rescaled: tuple[Rescaled, ...]
     misread: Mapping[str, tuple[tuple[ErrorRow, float], ...]]
+    # Far-off readings that are, to the drafting precision, other segments of the plans as constructed: by the reading
+    # as the scene writes it, each segment it matches as (plan, segment, its length in mm), nearest first.  Those are
+    # not in ``misread``.
+    named: Mapping[str, tuple[Segment, ...]] = field(default_factory=lambda: MappingProxyType({}))
+    # By the plan a table of readings was given for (``acceleration``), the other plan (``velocity``) whose segments of
+    # the same names every one of them is, to the drafting precision: that plan's readings typed under the wrong table.
+    other_plan: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=lambda: MappingProxyType({}))
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A segment of a plan as constructed that a hand reading matches: its plan, its letters, its length (mm)."""
+
+    plan: str
+    name: str
+    millimetres: float
+    # On the other plan than the one the reading was given for: read off the wrong plan, not a segment swapped.
+    other: bool = False
 
 
 def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | None:
@@ -127,7 +146,90 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     misread: dict[str, list[tuple[ErrorRow, float]]] = {}
     for row, plan in far:
         misread.setdefault(row.reading, []).append((row, plan))
-    return Slips(tuple(rescaled), {reading: tuple(rows) for reading, rows in misread.items()})
+    # Readings far off that are other segments of the plans as constructed: a whole table read off the other plan, or
+    # a segment taken for another (pb read where ab was), named rather than told "a length misread".
+    other_plan = _other_plan(position, measured, misread, precision)
+    for _, read in other_plan.values():
+        for reading in read:
+            misread.pop(reading, None)
+    named = {}
+    for reading, rows in list(misread.items()):
+        matches = _matching_segments(position, rows[0][0], precision)
+        if matches:
+            named[reading] = matches
+            del misread[reading]
+    return Slips(tuple(rescaled), {reading: tuple(rows) for reading, rows in misread.items()},
+                 MappingProxyType(named),
+                 MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
+                                   for kind, (other, read) in other_plan.items()}))
+
+
+def _name(reading: str) -> str:
+    """A reading's segment as the scene writes it: ``pb`` of ``pb = 100.98 mm``."""
+    return reading.split(" = ")[0]
+
+
+def _hand_millimetres(row: ErrorRow) -> float:
+    """The length a measured row was read as (mm)."""
+    return abs(row.plan) / row.per_millimetre if row.per_millimetre else math.nan
+
+
+def _segment_of(position: VelocityPosition, row: ErrorRow) -> tuple[str, str] | None:
+    """The two plan letters of the segment a measured row of a plan was read from."""
+    return next((reading.segment for reading in position.readings if reading.quantity == row.quantity), None)
+
+
+def _length(plan, segment: tuple[str, str]) -> float | None:
+    """A segment's length (mm) on a plan as constructed, None where the plan has not both its letters."""
+    if not all(letter in plan.points for letter in segment):
+        return None
+    return abs(plan.mm(segment[1]) - plan.mm(segment[0]))
+
+
+def _other_plan(position: VelocityPosition, measured: list[tuple[ErrorRow, float]],
+                misread: Mapping[str, list[tuple[ErrorRow, float]]],
+                precision: float) -> dict[str, tuple[str, tuple[str, ...]]]:
+    """By the plan a table of readings was given for, the other plan of the position and the readings (as the scene
+    writes them) where every reading of that table is the other plan's segment of its name, to the drafting
+    ``precision``, and one at least is far off its own plan: the other plan's readings typed under the wrong table."""
+    found = {}
+    for kind in _SCALES:
+        other = next((each for each in _SCALES if each != kind), None)
+        if kind not in position.plans or other not in position.plans:
+            continue
+        rows = {row.reading: row for row, _ in measured if _plan_of(row) == kind}
+        if not rows or not any(reading in misread for reading in rows):
+            continue
+        if all(_same_named(position, position.plans[other], row, precision) for row in rows.values()):
+            found[kind] = (other, tuple(rows))
+    return found
+
+
+def _same_named(position: VelocityPosition, other, row: ErrorRow, precision: float) -> bool:
+    """Whether a reading is, to the drafting ``precision``, the segment of its letters on the ``other`` plan."""
+    segment = _segment_of(position, row)
+    length = _length(other, segment) if segment is not None else None
+    return length is not None and abs(_hand_millimetres(row) - length) <= precision
+
+
+def _matching_segments(position: VelocityPosition, row: ErrorRow, precision: float) -> tuple[Segment, ...]:
+    """The segments a student measures on the position's plans as constructed (those the error table reads), other
+    than the one the reading names, that a far-off reading is to the drafting ``precision``, nearest first."""
+    own = _segment_of(position, row)
+    kind = _plan_of(row)
+    millimetres = _hand_millimetres(row)
+    seen: set[tuple[str, frozenset[str]]] = set()
+    matches = []
+    for plan in sorted(position.plans, key=lambda each: each != kind):  # its own plan's segments first
+        for reading in position.readings:
+            key = (plan, frozenset(reading.segment))
+            if reading.plan != plan or key in seen or (plan == kind and set(reading.segment) == set(own or ())):
+                continue
+            seen.add(key)
+            length = reading.millimetres(position.plans)
+            if abs(millimetres - length) <= precision:
+                matches.append(Segment(plan, "".join(reading.segment), length, plan != kind))
+    return tuple(sorted(matches, key=lambda each: abs(millimetres - each.millimetres)))
 
 
 def _read_at(position: VelocityPosition, row: ErrorRow) -> float:
@@ -335,6 +437,19 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                 for row, plan in rows) for reading, rows in found.misread.items())
             details.append(f"readings more than {FAR_OFF_PERCENT:g} % and {FAR_OFF_PRECISIONS * precision:g} mm off "
                            f"the plan as constructed ({readings}): a length misread, or a segment taken for another?")
+        for kind, (other, names) in found.other_plan.items():
+            details.append(f"the readings given for the {kind} plan are the {other} plan's {', '.join(names)} (each to "
+                           f"the drafting precision, {precision:g} mm): readings of the {other} plan typed under "
+                           f"{kind}?")
+        if found.named:
+            named = "; ".join(f"{reading} is " + " or ".join(
+                f"the {segment.plan} plan's {segment.name} ({segment.millimetres:.2f} mm as constructed)"
+                for segment in segments) for reading, segments in found.named.items())
+            question = ("a segment taken for another, or read off the other plan?" if any(
+                segment.other for segments in found.named.values() for segment in segments)
+                else "segments taken for one another?")
+            details.append(f"readings far off their own segments that are other segments of the plans as constructed, "
+                           f"to the drafting precision ({precision:g} mm): {named}: {question}")
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
@@ -384,5 +499,5 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "Rescaled", "Slips", "factor_text", "in_units", "misread", "read_at",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "Rescaled", "Segment", "Slips", "factor_text", "in_units", "misread", "read_at",
            "setting", "sharing", "slips"]

@@ -293,8 +293,9 @@ def test_the_error_tables_say_under_a_position_which_readings_are_far_off_in_the
     from graphplan.report.tables import markdown
 
     printed = {"pb": 38.82, "ab": 148.99, "ps3": 88.49, "pe": 83.19}
+    # pb 1.45 times, not 1.3: 84.487 mm is the acceleration plan's ps3 (84.75 mm) to 0.5 mm, and is named so.
     measured = {5: {"velocity": {name: mm * 100 / 150 for name, mm in printed.items()},
-                    "acceleration": {"pb": 64.99 * 1.3, "ps3": 84.49}}}
+                    "acceleration": {"pb": 64.99 * 1.45, "ps3": 84.49}}}
     scene = dataclasses.replace(with_measured(measured), locale="ru")
     analysis = analyse(scene)
     (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
@@ -302,7 +303,7 @@ def test_the_error_tables_say_under_a_position_which_readings_are_far_off_in_the
     for text in (markdown(analysis), note_markdown(analysis)):
         assert f"не построен ли план в масштабе μV = {drawn_at} (м/с)/мм (velocity_pole ≈ " in text
         assert "Укажите `[drawing] velocity_pole = 100`" in text  # pa = 100 mm, as the readings were made
-        assert "более чем на 15 % и на 1 мм: pb = 84,487 мм (aB, aBC)." in text
+        assert "более чем на 15 % и на 1 мм: pb = 94,2355 мм (aB, aBC)." in text
     assert "замеры" not in markdown(analyse(dataclasses.replace(graphplan.load(FIXTURE), locale="ru"))).lower()
 
 

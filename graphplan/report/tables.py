@@ -133,7 +133,27 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         lines.append(text["errors_misread"].format(
             percent=f"{FAR_OFF_PERCENT:g}", readings=readings,
             millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
+    precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
+    for other, names in found.other_plan.values():
+        # Readings of the other plan typed under this one's table: named, with the other plan's segments they are.
+        lines.append(text[f"errors_other_plan_{other}"].format(segments=", ".join(names), precision=precision))
+    if found.named:
+        items = "; ".join(text["errors_or"].join(
+            text[f"errors_segment_{segment.plan}"].format(
+                reading=_written(reading, text, mark), segment=segment.name,
+                millimetres=f"{segment.millimetres:.2f}".replace(".", mark))
+            for segment in segments) for reading, segments in found.named.items())
+        other = any(segment.other for segments in found.named.values() for segment in segments)
+        lines.append(text["errors_named"].format(
+            precision=precision, readings=items,
+            question=text["errors_named_other" if other else "errors_named_swapped"]))
     return lines
+
+
+def _written(reading: str, text: dict[str, str], mark: str) -> str:
+    """A reading as the scene gives it (``pb = 100.98 mm``) in the locale's words: ``pb = 100,98 мм``."""
+    name, value = reading.split(" = ", 1)
+    return f"{name} = {value.removesuffix(' mm').replace('.', mark)} {text['millimetre']}"
 
 
 def _polygons_line(rescaled: Rescaled, text: dict[str, str], mark: str) -> str:

@@ -1,0 +1,67 @@
+"""Hand readings far off their own segments that are other segments of the plans as constructed are named as such: a
+segment swapped for another (``pb = 100.98 is the plan's ab``), or a whole table of the other plan's readings typed
+under the wrong plan.  They were told only the generic "a length misread, or a segment taken for another?".
+
+Every reading here is a length of the plans as the program constructs them, read in the test off its plan points.
+"""
+
+import dataclasses
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.report.tables import markdown
+
+FIXTURE = "fixtures/ratchet_crank_rocker.toml"
+POSITION = 5
+
+
+def _scene():
+    return dataclasses.replace(graphplan.load(FIXTURE), measured={})
+
+
+def _lengths(kind, segments):
+    """The segments' lengths (mm) on the plan of ``kind`` of the position as constructed, to 0.01 mm."""
+    plan = next(p for p in analyse(_scene()).plans if p.number == POSITION).plans[kind]
+    return {name: round(abs(plan.mm(name[1:]) - plan.mm(name[0])), 2) for name in segments}
+
+
+def _far_off(measured, locale="en"):
+    scene = dataclasses.replace(_scene(), locale=locale, measured={POSITION: measured})
+    analysis = analyse(scene)
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    return warning.detail, markdown(analysis)
+
+
+def test_two_segments_swapped_are_named():
+    velocity = _lengths("velocity", ("pb", "ab", "pe", "ps3"))
+    swapped = {**velocity, "pb": velocity["ab"], "ab": velocity["pb"]}
+    detail, _ = _far_off({"velocity": swapped})
+    assert (f"pb = {velocity['ab']:g} mm is the velocity plan's ab ({velocity['ab']:.2f} mm as constructed); "
+            f"ab = {velocity['pb']:g} mm is the velocity plan's pb ({velocity['pb']:.2f} mm as constructed): "
+            "segments taken for one another?") in detail, detail
+    assert "a length misread" not in detail
+    for locale, words in (("ru", "— это отрезок ab плана скоростей"), ("zh", "即速度多边形上的 ab")):
+        _, table = _far_off({"velocity": swapped}, locale)
+        assert words in table, table
+    # Far off, and no two points of either plan within the drafting precision of it.
+    plans = next(p for p in analyse(_scene()).plans if p.number == POSITION).plans.values()
+    lengths = [abs(plan.mm(b) - plan.mm(a)) for plan in plans for a in plan.points for b in plan.points]
+    odd = next(value for value in (200.0, 210.0, 220.0, 230.0) if all(abs(value - each) > 0.5 for each in lengths))
+    detail, _ = _far_off({"velocity": {**velocity, "pb": odd}})
+    assert "a length misread, or a segment taken for another?" in detail
+    assert "taken for one another" not in detail and "typed under" not in detail
+
+
+def test_the_other_plan_s_readings_typed_under_the_wrong_table_are_named():
+    velocity = _lengths("velocity", ("pb", "pe", "ps3"))
+    detail, table = _far_off({"acceleration": velocity})
+    assert ("the readings given for the acceleration plan are the velocity plan's pb, pe, ps3 (each to the drafting "
+            "precision, 0.5 mm): readings of the velocity plan typed under acceleration?") in detail, detail
+    assert "a length misread" not in detail
+    assert "The readings given for the acceleration plan are the velocity plan's pb, pe, ps3" in table
+    _, russian = _far_off({"acceleration": velocity}, "ru")
+    assert "Замеры, данные для плана ускорений, — это отрезки pb, pe, ps3 плана скоростей" in russian
+    # The other way round: the acceleration plan's lengths typed for the velocity plan.
+    acceleration = _lengths("acceleration", ("pb", "pe", "ps3"))
+    detail, _ = _far_off({"velocity": acceleration})
+    assert "the readings given for the velocity plan are the acceleration plan's pb, pe, ps3" in detail, detail
