@@ -351,6 +351,7 @@ def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[Velo
     every position's polygons, ``velocity_plans_pole`` for the plans of every position), so giving it as this
     position's readings ask would put the others' off."""
     sheet = hasattr(position, "acceleration")
+    drawn = tuple(drawn)
     fitting, asking = [], {}
     for other in drawn:
         if other.number == position.number or hasattr(other, "acceleration") != sheet:
@@ -359,11 +360,48 @@ def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[Velo
             continue
         found = slips(other, drawing, joint)
         theirs = [each for each in (found.rescaled if found else ()) if each.key == rescaled.key]
+        if any(on_grid(each, other, drawn) is not None for each in theirs):
+            continue  # read off its small plan among the velocity plans of every position: no scale of the key's
         if not theirs:
             fitting.append(other.number)
         elif theirs[0].rounded != rescaled.rounded and not in_units(theirs[0].drawn_at):
             asking[other.number] = theirs[0].rounded
     return tuple(fitting), asking
+
+
+@dataclass(frozen=True)
+class OnGrid:
+    """A plan sheet's velocity readings that fit the same position's small plan among the velocity plans of every
+    position (``velocity_plans.svg``) instead: ``scale`` its μV, ``sheet`` the plan sheet's the readings are checked
+    at, ``off`` the largest share by which a reading taken at ``scale`` is off the construction."""
+
+    scale: float
+    sheet: float
+    off: float
+
+    @property
+    def factor(self) -> float:
+        """What turns a length of the small plan into the same length on the plan sheet."""
+        return self.scale / self.sheet
+
+
+def on_grid(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[VelocityPosition]) -> OnGrid | None:
+    """Where the velocity readings of a plan-sheet position, found drawn at another μV, fit the position's own plan
+    among the velocity plans of every position (its μV within 5 % of the one they fit): the student measured that
+    small plan, and the key to change is none.  None where the position has no such plan or they fit another μV."""
+    if rescaled.kind != "velocity" or not hasattr(position, "acceleration") or in_units(rescaled.drawn_at):
+        return None
+    grid = next((each for each in drawn if each.number == position.number and not hasattr(each, "acceleration")), None)
+    if grid is None:
+        return None
+    scale, sheet = grid.velocity.scale, position.velocity.scale
+    if abs(rescaled.drawn_at / scale - 1.0) > _ROUND_SHARE:
+        return None
+    constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
+    off = max((abs(row.plan * scale / sheet - constructed[row.quantity]) / abs(constructed[row.quantity])
+               for row in position.errors if row.source == "measured" and _plan_of(row) == "velocity"
+               and constructed.get(row.quantity)), default=0.0)
+    return OnGrid(scale, sheet, off)
 
 
 def factors(rescaled: Rescaled) -> dict[str, float]:
@@ -413,6 +451,18 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                 continue
             symbol, unit = _SCALES[rescaled.kind]
             drawn_at, kind = rescaled.drawn_at, rescaled.kind
+            grid = on_grid(rescaled, position, drawn)
+            if grid is not None:
+                # The position's small plan among the velocity plans of every position, read for its plan sheet's:
+                # no key is off, the plan measured is.
+                details.append(
+                    f"every reading of the velocity plan fits position {position.number}'s plan among the velocity "
+                    f"plans of every position (velocity_plans.svg, at {symbol} = {grid.scale:.4g} {unit}; taken "
+                    f"at it, every reading is within {grid.off * 100.0:.1f} % of the plan as constructed), not its "
+                    f"plan sheet's (plan_{position.number}.svg, at {symbol} = {grid.sheet:.4g} {unit}), which they "
+                    f"are checked against: readings of that small plan? measure the plan sheet's velocity plan, or "
+                    f"give these readings times {grid.factor:.4g}")
+                continue
             if in_units(drawn_at):
                 quantity = unit.removeprefix("(").removesuffix(")/mm")
                 # A plan may truly be drawn at one unit a millimetre: the readings cannot tell, so both are said.
@@ -499,5 +549,5 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "Rescaled", "Segment", "Slips", "factor_text", "in_units", "misread", "read_at",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_units", "misread", "on_grid", "read_at",
            "setting", "sharing", "slips"]

@@ -24,6 +24,7 @@ from ..misreadings import (
     Rescaled,
     factor_text,
     in_units,
+    on_grid,
     read_at,
     setting,
     sharing,
@@ -113,6 +114,15 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             continue
         kind, drawn_at = rescaled.kind, rescaled.drawn_at
         symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
+        grid = on_grid(rescaled, plan, drawn)
+        if grid is not None:
+            # The position's small plan among the velocity plans of every position, read for its plan sheet's.
+            lines.append(text["note_on_grid" if in_note else "errors_on_grid"].format(
+                number=plan.number, grid=scale_factor(grid.scale).replace(".", mark),
+                sheet=scale_factor(grid.sheet).replace(".", mark), unit=unit,
+                off=f"{grid.off * 100.0:.1f}".replace(".", mark), factor=number(grid.factor, 4, mark),
+                grid_file="velocity_plans.svg", sheet_file=f"plan_{plan.number}.svg"))
+            continue
         if in_units(drawn_at):
             instead = text["errors_in_place"].format(key=rescaled.replaces) if rescaled.replaces else ""
             lines.append(text["errors_in_units"].format(plan=text[f"{kind}_plan_title"].lower(), symbol=symbol,
