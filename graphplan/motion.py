@@ -272,15 +272,23 @@ def first_value(mechanism: Mechanism) -> float:
     return 0.0 if start == "extreme" else math.radians(float(start))
 
 
+def sides_value(mechanism: Mechanism) -> float:
+    """The driver's coordinate where a point placed toward a slider takes its side: a turning crank's 0°, whatever
+    the positions' ``start`` (a Scotch yoke's centre of mass jumped across its guide when the run started at 90°
+    for 0°), a travel's or a swing's first end."""
+    driver = mechanism.driver
+    return float(driver.travel[0]) if not driver.cyclic else 0.0
+
+
 def reference_at(mechanism: Mechanism, value: float, slides: Mapping[str, complex] | None = None) -> Reference:
     """Branches (from ``assembly`` or ``near``) and named points' local coordinates at driver coordinate ``value``.
 
-    A point placed toward a slider takes its sense (``slides``) at the scene's first driver value
-    (:func:`first_value`), whatever ``value`` is: a slider that crosses ``from`` (a sine mechanism's block) would
-    otherwise put the point, and any group joined at it, on one side for one reference and on the other for the next.
+    A point placed toward a slider takes its sense (``slides``) at :func:`sides_value`, whatever ``value`` is: a
+    slider that crosses ``from`` (a sine mechanism's block) would otherwise put the point, and any group joined at it,
+    on one side for one reference and on the other for the next.
     """
     if slides is None and any(spec.toward not in mechanism.fixed_on.get(spec.link, ()) for spec in mechanism.scene.points):
-        first = first_value(mechanism)
+        first = sides_value(mechanism)
         if float(value) != first:
             with contextlib.suppress(AssemblyError, SingularPositionError):  # then taken here
                 slides = reference_at(mechanism, first).slides

@@ -2,7 +2,7 @@
 
 docs/scene-format-extensions.md: "`[points]` `toward` may be a slider on the link | the direction is then that of
 the slide line". The line is the slide's; "toward" says which way along it: from ``from`` toward where the slider
-is (at the scene's first driver value: the start angle, 0° for "extreme"). A slot's own direction is no answer: an RPP's block
+is (at the crank's 0°, whatever the start; a travel's first end). A slot's own direction is no answer: an RPP's block
 or a triad's may sit on the slot's negative side, and the point was once put on the far side of ``from``
 (bug hunt 7, F1). Every expectation here is computed from the scene's dimensions, not from graphplan's solve.
 """
@@ -208,13 +208,13 @@ start = START
 
 
 @pytest.mark.parametrize("start", [0.0, 30.0, 150.0, 180.0])
-def test_a_point_toward_a_scotch_yoke_s_pin_lies_on_the_pin_s_side_at_the_first_position(start):
-    """The yoke's slot runs along −x (the guide up, the slot at 90° to it): the pin is on its positive side at a
-    start of 150° or 180°, on its negative side at 0° or 30°. The point is on the pin's side at the first position
-    and rides with the yoke, which translates: B→Q is the same at every position, and in a solve at other values
-    (a run starting past 90°, where the pin is on the other side, keeps the scene's side)."""
+def test_a_point_toward_a_scotch_yoke_s_pin_lies_on_the_pin_s_side_at_the_crank_s_nought(start):
+    """The yoke's slot runs along −x (the guide up, the slot at 90° to it): the pin is on its negative side at the
+    crank's 0°, at x = +0.075. The point is on the pin's side there, whatever the run's start (a start of 150° put it
+    on the other side of the guide, as the pin is there), and rides with the yoke, which translates: B→Q is the same
+    at every position, and in a solve at other values."""
     scene = graphplan.load_text(SCOTCH_YOKE.replace("START", str(start)))
-    pin_x = 0.075 * math.cos(math.radians(start))
+    pin_x = 0.075 * math.cos(0.0)
     toward = complex(math.copysign(1.0, pin_x), 0.0)
     for motion in (graphplan.solve(scene), graphplan.solve(scene, driver=np.radians(start + 120.0 + np.arange(5.0)))):
         bq = motion.point("Q").r - motion.point("B").r
