@@ -91,3 +91,16 @@ assembly = "left"
 [positions]
 count = 12
 """
+
+
+def test_a_stroke_s_text_is_set_clear_of_the_lines_and_numbers():
+    """The Scotch yoke's guide runs through the crank's pivot, so the mechanism's middle lies on the stroke's own line:
+    its H was set inside the crank's circle, over position 10's crank and block and against its number."""
+    from graphplan.render.labels import obstacles_of, text_box
+
+    _, layers = _plan(FIXTURES / "scotch_yoke.toml")
+    (dimension,) = [layer for layer in layers if layer.name == "dimensions"]
+    (written,) = [item for item in dimension.items if isinstance(item, Text)]
+    others = [item for layer in layers if layer.name not in ("dimensions", "caption") for item in layer.items]
+    assert others
+    assert not [shape for shape in obstacles_of(others) if shape.intersects(text_box(written))]

@@ -20,9 +20,10 @@ _TEXT_MM = 3.5
 _TEXT_GAP_MM = 1.0
 
 
-def linear(start: Point, end: Point, outward: complex, offset: float, text: str) -> list[Primitive]:
+def linear(start: Point, end: Point, outward: complex, offset: float, text: str,
+           size: float = _TEXT_MM) -> list[Primitive]:
     """The distance from ``start`` to ``end`` dimensioned ``offset`` mm away from them along ``outward`` (a
-    direction, made square to the measured line)."""
+    direction, made square to the measured line), its text ``size`` mm high."""
     a, b = to_complex(start), to_complex(end)
     along = b - a
     if abs(along) == 0:
@@ -35,7 +36,7 @@ def linear(start: Point, end: Point, outward: complex, offset: float, text: str)
     items.append(Polyline((to_xy(line_a), to_xy(line_b)), DIMENSION_STROKE))
     angle = cmath.phase(u)
     items += [arrowhead(to_xy(line_b), angle, _HEAD_MM), arrowhead(to_xy(line_a), angle + math.pi, _HEAD_MM)]
-    items.append(_beside(0.5 * (line_a + line_b), normal, text))
+    items.append(_beside(0.5 * (line_a + line_b), normal, text, size))
     return items
 
 
@@ -53,12 +54,12 @@ def angular(centre: Point, radius: float, start: float, sweep: float) -> list[Pr
     return [Polyline(arc, DIMENSION_STROKE), *heads]
 
 
-def _beside(at: complex, outward: complex, text: str) -> Text:
+def _beside(at: complex, outward: complex, text: str, size: float) -> Text:
     """``text`` set level just clear of ``at`` on the side ``outward`` (a unit direction)."""
-    probe = Text((0.0, 0.0), text, _TEXT_MM)
+    probe = Text((0.0, 0.0), text, size)
     left, bottom, right, top = text_extent(probe)
     half_width, half_height = (right - left) / 2, (top - bottom) / 2
     clear = abs(outward.real) * half_width + abs(outward.imag) * half_height + _TEXT_GAP_MM
     centre = at + clear * outward
     # Text stands on its baseline: lowered by half its height (and what text_extent counts below it).
-    return Text((centre.real, centre.imag - (top + bottom) / 2), text, _TEXT_MM)
+    return Text((centre.real, centre.imag - (top + bottom) / 2), text, size)

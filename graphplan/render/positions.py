@@ -119,7 +119,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     drawn = every + bold + frame + paths + dimension
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together.
-        numbers, number_leaders = _numbers_round_the_circle(plan, paper, obstacles_of(bold))
+        numbers, number_leaders = _numbers_round_the_circle(plan, paper, obstacles_of(bold + dimension))
         anchors = _point_anchors(plan, paper) + _extreme_anchors(plan, paper, names=False)
     else:
         numbers, number_leaders = [], []
@@ -170,8 +170,8 @@ def _frame(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
     return items
 
 
-# How far a stroke's dimension line stands off the slider's joint: past the block and the guide's hatching (mm).
-_STROKE_OFFSET_MM = 10.0
+# How far a stroke's dimension line is tried off the slider's joint: past the block and the guide's hatching (mm).
+_STROKE_OFFSETS_MM = (10.0, 14.0, 18.0, 24.0, 30.0, 40.0, 50.0)
 # The radii a swing's arc is tried at, as shares of the rocker's length on the paper (the middle one preferred),
 # and the least radius it is drawn at (mm).
 _SWING_SHARES = (0.55, 0.5, 0.6, 0.45, 0.65, 0.4, 0.7, 0.35, 0.75, 0.8, 0.85)
@@ -182,17 +182,28 @@ def _travel_dimension(plan: PositionsPlan, paper: Paper, outlines: dict[int, lis
                       drawn: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
     """The stroke H or the swing ψ between the two bold positions, dimensioned, and a swing's label to place at
     its arc's middle; nothing where there are not two.  A swing's arc is drawn at the radius where it crosses the
-    fewest of the ``drawn`` lines (through the crank's circle, the quick-return lever's ran over the crank)."""
+    fewest of the ``drawn`` lines (through the crank's circle, the quick-return lever's ran over the crank), a
+    stroke's on the side and at the offset where its lines and text cross fewest."""
     travel, bold = plan.travel, plan.emphasised
     if travel is None or bold.count < 2:
         return [], []
     track = [to_complex(paper(complex(at(bold.points[travel.point].r, i)))) for i in (0, 1)]
+    shapes = STRtree(obstacles_of(drawn))
+
+    def crossed(items: list[Primitive]) -> int:
+        """What ``items`` run over; a text over a line three times a line over a line (it hides, a line crosses)."""
+        return sum((3 if isinstance(item, Text) else 1) * len(shapes.query(shape, predicate="intersects"))
+                   for item in items for shape in obstacles_of([item]))
+
     if not travel.swing:
-        # Out from the mechanism's middle, where the guide's hatching is and nothing else is drawn.
+        # Out from the mechanism's middle, where the guide's hatching is, unless the other side is clearer (a
+        # Scotch yoke's middle lies on its stroke's line: its H landed on the crank's circle).
         middle = np.mean([to_complex(paper(complex(r))) for point in plan.paths.points.values()
                           for r in np.atleast_1d(point.r)])
-        return dimensions.linear(to_xy(track[0]), to_xy(track[1]), (track[0] + track[1]) / 2 - middle,
-                                 _STROKE_OFFSET_MM, travel.text), []
+        away = (track[0] + track[1]) / 2 - middle
+        tried = [dimensions.linear(to_xy(track[0]), to_xy(track[1]), side * away, offset, travel.text, _LABEL)
+                 for offset in _STROKE_OFFSETS_MM for side in (1.0, -1.0)]
+        return min(tried, key=crossed), []  # the first of the clearest: the nearest, away from the middle
     pivot = track[0]
     far = max((name for name in outlines.get(travel.link, ()) if name != travel.point),
               key=lambda name: abs(complex(at(bold.points[name].r, 0)) - complex(at(bold.points[travel.point].r, 0))),
@@ -202,11 +213,8 @@ def _travel_dimension(plan: PositionsPlan, paper: Paper, outlines: dict[int, lis
     ends = [to_complex(paper(complex(at(bold.points[far].r, i)))) - pivot for i in (0, 1)]
     start = cmath.phase(ends[0])
     sweep = cmath.phase(ends[1] / ends[0])
-    shapes = STRtree(obstacles_of(drawn))
-
     def crossings(share: float) -> int:
-        arc = dimensions.angular(to_xy(pivot), share * min(abs(end) for end in ends), start, sweep)[0]
-        return len(shapes.query(shapely.LineString(arc.points), predicate="intersects"))
+        return crossed(dimensions.angular(to_xy(pivot), share * min(abs(end) for end in ends), start, sweep)[:1])
 
     share = min(_SWING_SHARES, key=crossings)  # the first of the fewest: the nearest the middle share
     radius = max(share * min(abs(end) for end in ends), _SWING_LEAST_MM)
@@ -263,7 +271,7 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
 
     The first position, the plan sheets' positions (``PositionsPlan.marked``) and the extremes named 8′ are always
     numbered; one that would run into another, or into the ``bold`` lines of the extreme positions (the rod leaving
-    its pin outward), is set a little round the circle or farther out, on a leader. Of the
+    its pin outward) or the travel's dimension, is set a little round the circle or farther out, on a leader. Of the
     rest, one in every few is numbered, the fewest skipped that keep every number clear of its neighbours
     (36 positions on a small crank are numbered 1, 3, 5, …); where they are thinned so, one that would run into a
     number always given is left out, and where every position is numbered, it is set aside as those are.
