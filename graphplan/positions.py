@@ -425,10 +425,10 @@ def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tup
     return tuple(sorted(ranges))
 
 
-def travel_reach(mechanism: Mechanism) -> tuple[tuple[float, float], ...]:
-    """The ranges of a slider driver's typed travel (m, in the travel's own order) in which the mechanism
-    assembles, found as :func:`reach` finds a crank's, on a grid of the travel's 720th parts."""
-    low, high = sorted(mechanism.driver.travel)
+def travel_reach(mechanism: Mechanism, over: tuple[float, float] | None = None) -> tuple[tuple[float, float], ...]:
+    """The ranges of a slider driver's typed travel (or of the coordinates ``over``; m, in the travel's own order)
+    in which the mechanism assembles, found as :func:`reach` finds a crank's, on a grid of their 720th parts."""
+    low, high = sorted(mechanism.driver.travel if over is None else over)
     grid = np.linspace(low, high, _REACH_GRID + 1)
     found = _assembled_ranges(_assembles(mechanism, None), grid, wraps=False, tolerance=1e-9 * (high - low))
     ranges = ((low, high),) if found is None else \

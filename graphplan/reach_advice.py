@@ -65,20 +65,40 @@ def _travel_advice(mechanism: Mechanism) -> str | None:
     ranges = travel_reach(mechanism)
     if ranges == (travel,):
         return None
+    where = "along the travel typed the mechanism assembles only"
     if not ranges:
-        return "the mechanism assembles nowhere along driver.travel: check the lengths"
+        # Past the travel typed: as far as the frame's points and the groups' lengths reach from the guide's point.
+        bound = _farthest_reach(mechanism)
+        ranges = travel_reach(mechanism, (-bound, bound))
+        if not ranges:
+            return "the mechanism assembles nowhere along driver.travel: check the lengths"
+        where = "the mechanism assembles nowhere along the travel typed, only"
+        ends = "at each end two links stand in line"
+        middle = 0.5 * (travel[0] + travel[1])
+        nearest = min(ranges, key=lambda span: abs(0.5 * (span[0] + span[1]) - middle))
+    else:
+        ends = "an end inside the travel typed is a dead centre: two links stand in line"
+        nearest = max(ranges, key=lambda span: abs(span[1] - span[0]))
     quantum = 10.0 ** (math.floor(math.log10(abs(travel[1] - travel[0]))) - 5)
     spans = " and ".join(f"from s = {_inward_m(first, last, quantum)} m to s = {_inward_m(last, first, quantum)} m"
                          for first, last in ranges)
     # An end inside the typed travel is a dead centre: singular, and refused as the first position.
-    first, last = max(ranges, key=lambda span: abs(span[1] - span[0]))
+    first, last = nearest
     inset = 0.01 * (last - first)
     example = [end if end in travel else end + sign * inset for end, sign in ((first, 1.0), (last, -1.0))]
     quantum = 10.0 ** (math.floor(math.log10(abs(inset))) - 1)
-    return (f"along the travel typed the mechanism assembles only {spans} (an end inside the travel typed is a "
-            f"dead centre: two links stand in line): keep driver.travel within {'it' if len(ranges) == 1 else 'one'}"
+    return (f"{where} {spans} ({ends}): keep driver.travel within {'it' if len(ranges) == 1 else 'one'}"
             f", e.g. driver.travel = [{_inward_m(example[0], example[1], quantum)}, "
             f"{_inward_m(example[1], example[0], quantum)}]")
+
+
+def _farthest_reach(mechanism: Mechanism) -> float:
+    """How far along its guide a slider driver can be from the guide's point and the mechanism still close: no
+    farther than the frame's points and every length of its groups laid end to end, nor than the travel typed."""
+    # Wherever the guide's point is among the frame's, twice their farthest from the origin covers the way to it.
+    frame = 2.0 * max((abs(point) for point in mechanism.scene.frame_points.values()), default=0.0)
+    lengths = sum(sum(getattr(group, "lengths", ())) + getattr(group, "length", 0.0) for group in mechanism.groups)
+    return max(frame + lengths, *(abs(end) for end in mechanism.driver.travel))
 
 
 def _inward_m(end: float, other_end: float, quantum: float) -> str:

@@ -224,3 +224,18 @@ def test_a_travel_past_the_reach_is_told_the_part_of_it_that_assembles(tmp_path,
     assert (begin - end) * (travel[0] - travel[1]) > 0
     scene.write_text(PISTON_TO_DEAD_CENTRE.replace("travel = [0.02, 0.2]", f"travel = {example}"), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "velocity"]) == 0
+
+
+def test_a_travel_wholly_past_the_reach_is_told_where_the_mechanism_does_assemble(tmp_path, capsys):
+    """Past C = (0.4, 0) the piston closes the triangle again for 0.2 ≤ |A–C| ≤ 0.4: s from 0.6 to 0.8 m. A travel
+    typed from 1.0 to 1.2 m was told to check the lengths, which were right."""
+    scene = tmp_path / "piston.toml"
+    scene.write_text(PISTON_TO_DEAD_CENTRE.replace("travel = [0.02, 0.2]", "travel = [1.0, 1.2]"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    told = capsys.readouterr().err
+    assert "nowhere along the travel typed" in told and "check the lengths" not in told
+    begin, end = json.loads(re.search(r"e\.g\. driver\.travel = (\[[-\d., ]+\])", told).group(1))
+    assert 0.6 < begin < end < 0.8
+    scene.write_text(PISTON_TO_DEAD_CENTRE.replace("travel = [0.02, 0.2]", f"travel = [{begin}, {end}]"),
+                     encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "velocity"]) == 0
