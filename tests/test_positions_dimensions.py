@@ -60,14 +60,33 @@ def test_the_crank_rocker_s_swing_is_dimensioned_by_its_angle():
     assert [layer for layer in layers if layer.name == "dimensions" and layer.items]
 
 
-def test_a_cylinder_s_stroke_is_its_travel_and_a_turning_crank_with_no_working_link_has_none():
+def _lever_angle(s: float) -> float:
+    """The angle of CB (rad) with A = (s, 0), C = (0.15, 0.25), AB = 0.225, BC = 0.15, B right of A→C."""
+    a, c = complex(s, 0.0), complex(0.15, 0.25)
+    span = abs(c - a)
+    along = (0.225 ** 2 - 0.15 ** 2 + span ** 2) / (2 * span)
+    height = math.sqrt(0.225 ** 2 - along ** 2)
+    unit = (c - a) / span
+    b = a + unit * complex(along, -height)  # right of A→C: turned clockwise
+    return math.atan2((b - c).imag, (b - c).real)
+
+
+def test_a_cylinder_s_stroke_is_its_travel_and_its_lever_s_swing_is_dimensioned_too():
+    """The hydraulic lever: the rod's travel H, and the lever's swing ψ between the travel's ends (it turns one way
+    over the whole travel)."""
     _, layers = _plan(FIXTURES / "slider_driven.toml")
     scene = graphplan.load(FIXTURES / "slider_driven.toml")
     low, high = scene.driver.travel
-    (written,) = [text for text in _texts(layers) if text.startswith("H = ")]
-    assert float(written.split()[2]) == pytest.approx(abs(high - low), rel=1e-4)
+    (stroke,) = [text for text in _texts(layers) if text.startswith("H = ")]
+    assert float(stroke.split()[2]) == pytest.approx(abs(high - low), rel=1e-4)
+    swing = abs(math.degrees(math.remainder(_lever_angle(high) - _lever_angle(low), 2 * math.pi)))
+    (written,) = [text for text in _texts(layers) if text.startswith("ψ = ")]
+    assert float(re.fullmatch(r"ψ = ([\d.]+)°", written).group(1)) == pytest.approx(swing, abs=0.05)
+
+
+def test_a_turning_crank_with_no_working_link_has_no_dimension():
     plan = positions_plan(graphplan.load_text(TURNING).analyse())
-    assert plan.travel is None
+    assert plan.travels == ()
     assert not [t for t in _texts(positions.layout(plan)) if t.startswith(("H = ", "ψ = "))]
 
 

@@ -264,41 +264,60 @@ def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.
         paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption,
         extremes=extreme_names(analysis, drawn),
         marked=tuple(sorted({int(analysis.positions.numbers[plan.index]) for plan in analysis.plans})),
-        travel=dimensioned_travel(analysis, text))
+        travels=dimensioned_travels(analysis, text))
 
 
-def dimensioned_travel(analysis: Analysis, text: Mapping[str, str]) -> positions.Travel | None:
-    """What travel the plan of positions dimensions between its bold positions: a slider driver's stroke (a
-    cylinder's), or the working link's, its stroke H where it slides on a frame guide, its swing ψ where it rocks
-    about a frame pivot; None where the bold positions are no two extremes (a crank turning with no working link)."""
+def dimensioned_travels(analysis: Analysis, text: Mapping[str, str]) -> tuple[positions.Travel, ...]:
+    """What the plan of positions dimensions between its bold positions: a slider driver's stroke (a cylinder's),
+    and the working link's travel, its stroke H where it slides on a frame guide, its swing ψ where it rocks about a
+    frame pivot, where the bold positions are its extremes (a crank's run) or the ends of a travel or a swing it
+    moves one way over (a cylinder's lever); none where they are no two (a crank turning with no working link)."""
     mechanism, emphasised = analysis.mechanism, analysis.emphasised
     driver = mechanism.driver
     if emphasised.count < 2:
-        return None
+        return ()
+    found = []
     if driver.kind == "slider":
-        point, link = driver.joint, driver.link
-    else:
-        working = analysis.scene.positions.working
-        if working is None or analysis.positions.extremes is None:
-            return None
-        link = working.link
-        frame = mechanism.scene.frame_link
-        if link in mechanism.translating:
-            point = next((slide.joint for slide in emphasised.slides if slide.slider == link and slide.guide == frame),
-                         None)
-        else:
-            pivot = next((joint for joint, first, second in mechanism.revolutes if {first, second} == {link, frame}),
-                         None)
-            if pivot is None:
-                return None
-            turned = emphasised.links[link].angle
-            swing = abs(math.degrees(math.remainder(float(at(turned, 1)) - float(at(turned, 0)), 2 * math.pi)))
-            return positions.Travel(pivot, link, text["positions_swing"].format(value=f"{swing:.1f}"), swing=True)
-        if point is None:
-            return None
+        found.append(_stroke(emphasised, driver.joint, driver.link, text))
+    working = analysis.scene.positions.working
+    if working is None or working.link == driver.link:
+        return tuple(found)
+    if analysis.positions.extremes is None and (driver.cyclic or not _one_way(analysis, working.link)):
+        return tuple(found)
+    link, frame = working.link, mechanism.scene.frame_link
+    if link in mechanism.translating:
+        point = next((slide.joint for slide in emphasised.slides if slide.slider == link and slide.guide == frame), None)
+        if point is not None:
+            found.append(_stroke(emphasised, point, link, text))
+        return tuple(found)
+    pivot = next((joint for joint, first, second in mechanism.revolutes if {first, second} == {link, frame}), None)
+    if pivot is not None:
+        turned = emphasised.links[link].angle
+        swing = abs(math.degrees(math.remainder(float(at(turned, 1)) - float(at(turned, 0)), 2 * math.pi)))
+        found.append(positions.Travel(pivot, link, text["positions_swing"].format(value=f"{swing:.1f}"), swing=True))
+    return tuple(found)
+
+
+def _stroke(emphasised, point: str, link: int, text: Mapping[str, str]) -> positions.Travel:
     track = emphasised.points[point].r
     stroke = abs(complex(at(track, 1)) - complex(at(track, 0)))
     return positions.Travel(point, link, text["positions_stroke"].format(value=f"{stroke:.4g}"))
+
+
+def _one_way(analysis: Analysis, link: int) -> bool:
+    """Whether ``link`` moves one way over the whole travel or swing (its angle, or its place along its guide): its
+    travel between the run's ends is then its swing or its stroke."""
+    paths = analysis.paths
+    if link in analysis.mechanism.translating:
+        joint = next((slide.joint for slide in paths.slides if slide.slider == link), None)
+        if joint is None:
+            return False
+        along = paths.points[joint].r
+        coordinate = np.real((along - along[0]) * np.conj(along[-1] - along[0]))
+    else:
+        coordinate = np.unwrap(np.asarray(paths.links[link].angle))
+    steps = np.diff(coordinate)
+    return bool(np.all(steps >= 0) or np.all(steps <= 0))
 
 
 def extreme_names(analysis: Analysis, drawn: Sequence[int]) -> tuple[str, ...]:

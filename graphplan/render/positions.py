@@ -88,7 +88,7 @@ class PositionsPlan:
     caption: str
     extremes: tuple[str, ...] = ()
     marked: tuple[int, ...] = ()
-    travel: Travel | None = None
+    travels: tuple[Travel, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -115,7 +115,12 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
     frame = _frame(plan, paper)
     paths = _paths(plan, paper)
-    dimension, swing_label = _travel_dimension(plan, paper, outlines, every + bold + frame + paths)
+    dimension: list[Primitive] = []
+    swing_labels: list[Anchor] = []
+    for travel in plan.travels:  # each kept clear of those before it
+        items, labels_of = _travel_dimension(plan, travel, paper, outlines, every + bold + frame + paths + dimension)
+        dimension += items
+        swing_labels += labels_of
     drawn = every + bold + frame + paths + dimension
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together.
@@ -124,7 +129,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels = place_labels(anchors + swing_label, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
+    labels = place_labels(anchors + swing_labels, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
                           standing=numbers)
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
               Layer("frame", tuple(frame)), Layer("dimensions", tuple(dimension)),
@@ -178,14 +183,14 @@ _SWING_SHARES = (0.55, 0.5, 0.6, 0.45, 0.65, 0.4, 0.7, 0.35, 0.75, 0.8, 0.85)
 _SWING_LEAST_MM = 8.0
 
 
-def _travel_dimension(plan: PositionsPlan, paper: Paper, outlines: dict[int, list[str]],
+def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outlines: dict[int, list[str]],
                       drawn: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
     """The stroke H or the swing ψ between the two bold positions, dimensioned, and a swing's label to place at
     its arc's middle; nothing where there are not two.  A swing's arc is drawn at the radius where it crosses the
     fewest of the ``drawn`` lines (through the crank's circle, the quick-return lever's ran over the crank), a
     stroke's on the side and at the offset where its lines and text cross fewest."""
-    travel, bold = plan.travel, plan.emphasised
-    if travel is None or bold.count < 2:
+    bold = plan.emphasised
+    if bold.count < 2:
         return [], []
     track = [to_complex(paper(complex(at(bold.points[travel.point].r, i)))) for i in (0, 1)]
     shapes = STRtree(obstacles_of(drawn))
