@@ -8,7 +8,7 @@ import numpy as np
 from scipy.integrate import RK45
 from scipy.optimize import brentq
 
-from .drive import REST, Clutch, Motor, Start
+from .drive import REST, Brake, Clutch, Motor, Start
 from .integrator import Equations
 from .shaft import TWO_PI, Machine, periodic_spline
 
@@ -115,11 +115,12 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
                          "(linear, kloss)")
 
 
-def refuse_endless_run_down(machine: Machine, brake_torque: float, brake_damping: float = 0.0) -> None:
+def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
     """Raise :class:`ValueError` for a run-down (the motor switched off, no duration) that nothing brings to rest:
     the resistance at rest takes no work over a turn on the average (the weights alone give back on the way down
     what they take on the way up) and no brake's torque holds the machine, so that it turns, or swings, for ever.
     A brake's damping alone slows it only in the limit."""
+    brake_torque, brake_damping = (brake.torque, brake.damping) if brake is not None else (0.0, 0.0)
     values = [machine.mr(phi, 0.0) for phi in _FINE_TURN]
     resisting = float(np.mean(values))
     scale = max(abs(v) for v in values)
@@ -133,8 +134,7 @@ def refuse_endless_run_down(machine: Machine, brake_torque: float, brake_damping
     raise ValueError(f"motor: switched off, the machine has nothing to take its energy: its resistance, {resisting:.4g} N·m "
                      f"on the average over a turn, takes no work from it turn by turn (weights give back on the way "
                      f"down what they take on the way up) and no brake holds it{damping}, so it never comes to rest; "
-                     "give a "
-                     "brake with a torque (brake = { torque, at }) or a duration")
+                     "give a brake with a torque (brake = { torque, at }) or a duration")
 
 
 def _mean_surplus(machine: Machine, motor: Motor):

@@ -176,8 +176,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
         raise ValueError(f"max_cycles: must be an integer >= 3 (got {max_cycles!r})")
     refuse_runaway(machine, motor, duration is None and brake is None and motor_off_at is None, start, clutch)
     if duration is None and motor_off_at is not None:
-        refuse_endless_run_down(machine, brake.torque if brake is not None else 0.0,
-                                brake.damping if brake is not None else 0.0)
+        refuse_endless_run_down(machine, brake)
     equations = Equations(machine, motor, brake, clutch, motor_off_at)
     omega_run = running_speed(machine, motor, start, duration)
     atol = atol if atol is not None else 1e-3 * rtol * max(omega_run, 1e-3)

@@ -51,9 +51,7 @@ class MotionSpec:
         refuse_runaway(machine, self.motor, self.duration is None and self.brake is None and self.motor_off_at is None,
                        self.start, self.clutch)
         if self.duration is None and self.motor_off_at is not None:
-            brake = self.brake
-            refuse_endless_run_down(machine, brake.torque if brake is not None else 0.0,
-                                    brake.damping if brake is not None else 0.0)
+            refuse_endless_run_down(machine, self.brake)
 
     def _refuse_long_run(self, machine: Machine) -> None:
         """Raise :class:`ValueError` for a run of more turns than a run integrates."""
