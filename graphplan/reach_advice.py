@@ -15,7 +15,7 @@ from dataclasses import replace
 
 from .errors import AssemblyError, GraphplanError, SingularPositionError
 from .groups.base import Group
-from .length_units import mixed_units
+from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
 from .motion import reference_at
 from .positions import reach, travel_reach
@@ -97,7 +97,7 @@ def _farthest_reach(mechanism: Mechanism) -> float:
     farther than the frame's points and every length of its groups laid end to end, nor than the travel typed."""
     # Wherever the guide's point is among the frame's, twice their farthest from the origin covers the way to it.
     frame = 2.0 * max((abs(point) for point in mechanism.scene.frame_points.values()), default=0.0)
-    lengths = sum(sum(getattr(group, "lengths", ())) + getattr(group, "length", 0.0) for group in mechanism.groups)
+    lengths = sum(value for _, value in given_lengths(mechanism))
     return max(frame + lengths, *(abs(end) for end in mechanism.driver.travel))
 
 
