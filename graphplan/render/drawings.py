@@ -15,7 +15,9 @@ from ..kinematics import at
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
+from ..positions import working_speed
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
+from ..scene import Working
 from ..statics import efficiency
 from ..wording import raised
 from . import forces as force_layout
@@ -282,7 +284,7 @@ def dimensioned_travels(analysis: Analysis, text: Mapping[str, str]) -> tuple[po
     working = analysis.scene.positions.working
     if working is None or working.link == driver.link:
         return tuple(found)
-    if analysis.positions.extremes is None and (driver.cyclic or not _one_way(analysis, working.link)):
+    if analysis.positions.extremes is None and (driver.cyclic or not _one_way(analysis, working)):
         return tuple(found)
     link, frame = working.link, mechanism.scene.frame_link
     if link in mechanism.translating:
@@ -304,20 +306,13 @@ def _stroke(emphasised, point: str, link: int, text: Mapping[str, str]) -> posit
     return positions.Travel(point, link, text["positions_stroke"].format(value=f"{stroke:.4g}"))
 
 
-def _one_way(analysis: Analysis, link: int) -> bool:
-    """Whether ``link`` moves one way over the whole travel or swing (its angle, or its place along its guide): its
-    travel between the run's ends is then its swing or its stroke."""
-    paths = analysis.paths
-    if link in analysis.mechanism.translating:
-        joint = next((slide.joint for slide in paths.slides if slide.slider == link), None)
-        if joint is None:
-            return False
-        along = paths.points[joint].r
-        coordinate = np.real((along - along[0]) * np.conj(along[-1] - along[0]))
-    else:
-        coordinate = np.unwrap(np.asarray(paths.links[link].angle))
-    steps = np.diff(coordinate)
-    return bool(np.all(steps >= 0) or np.all(steps <= 0))
+def _one_way(analysis: Analysis, working: Working) -> bool:
+    """Whether the working link moves one way over the whole travel or swing (its speed of one sign where it moves,
+    a singular position's left out): its travel between the run's ends is then its swing or its stroke."""
+    speed, _ = working_speed(analysis.paths, working)
+    finite = speed[np.isfinite(speed)]
+    moving = finite[np.abs(finite) > 1e-9 * float(np.max(np.abs(finite), initial=0.0))]
+    return bool(np.all(moving > 0) or np.all(moving < 0))
 
 
 def extreme_names(analysis: Analysis, drawn: Sequence[int]) -> tuple[str, ...]:

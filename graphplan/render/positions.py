@@ -218,6 +218,7 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
     ends = [to_complex(paper(complex(at(bold.points[far].r, i)))) - pivot for i in (0, 1)]
     start = cmath.phase(ends[0])
     sweep = cmath.phase(ends[1] / ends[0])
+
     def crossings(share: float) -> int:
         return crossed(dimensions.angular(to_xy(pivot), share * min(abs(end) for end in ends), start, sweep)[:1])
 
