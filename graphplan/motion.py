@@ -263,15 +263,6 @@ class Reference:
     slides: Mapping[str, complex] = field(default_factory=dict)
 
 
-def first_value(mechanism: Mechanism) -> float:
-    """The driver's coordinate where the scene's positions start and its assemblies are chosen: a travel's or a
-    swing's first end, a turning crank's ``start`` (0° for "extreme", whose position is found later)."""
-    driver, start = mechanism.driver, mechanism.scene.positions.start
-    if not driver.cyclic:
-        return float(driver.travel[0])
-    return 0.0 if start == "extreme" else math.radians(float(start))
-
-
 def sides_value(mechanism: Mechanism) -> float:
     """The driver's coordinate where a point placed toward a slider takes its side: a turning crank's 0°, whatever
     the positions' ``start`` (a Scotch yoke's centre of mass jumped across its guide when the run started at 90°

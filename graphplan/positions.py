@@ -23,7 +23,7 @@ from numpy.polynomial import Chebyshev
 from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
 from .mechanism import Mechanism
-from .motion import Motion, Reference, first_value, reference_at, solve
+from .motion import Motion, Reference, reference_at, solve
 from .scene import Working
 
 # Driver positions per cycle of the sweep that brackets the extremes.
@@ -160,6 +160,15 @@ def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: 
         raise SingularPositionError(f"the first position, {number} ({mechanism.driver.describe(value)})", error.group,
                                     f"{error.reason}; the first position fixes each group's assembly and may not be "
                                     f"singular: start the run elsewhere ({moved_by})") from None
+
+
+def first_value(mechanism: Mechanism) -> float:
+    """The driver's coordinate where the scene's positions start and its assemblies are chosen: a travel's or a
+    swing's first end, a turning crank's ``start`` (0° for "extreme", whose position is found later)."""
+    driver, start = mechanism.driver, mechanism.scene.positions.start
+    if not driver.cyclic:
+        return float(driver.travel[0])
+    return 0.0 if start == "extreme" else math.radians(float(start))
 
 
 def _first_assembly(mechanism: Mechanism) -> Reference | None:

@@ -18,7 +18,7 @@ import pytest
 
 import graphplan
 from graphplan.mechanism import build
-from graphplan.motion import first_value
+from graphplan.positions import first_value
 
 # Every fixture, and the variants that exercise what no fixture has (moving guides of RRP and
 # RPP, PRP offsets, an offset slot); defined beside the finite-difference tests.
