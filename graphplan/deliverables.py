@@ -372,10 +372,8 @@ class MachineDynamics:
                 self.spec = source.dynamics
                 self.model = diagram_model_of(self.spec)
                 self.first_position: int | None = None
-                self.scene_loads: tuple = ()
             else:
                 self.spec = source.scene.dynamics
-                self.scene_loads = tuple(source.scene.loads)
                 self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
                 self.first_position = int(source.positions.numbers[0])
             self.flywheel = flywheel_from_spec(self.model, self.spec)
@@ -434,7 +432,8 @@ class MachineDynamics:
     def weights_alone(self) -> bool:
         """Whether Mr is the moment of the weights alone (a linkage with no loads): it acts whichever way the
         shaft turns, so that at rest it turns the machine back where the brake cannot hold it."""
-        return self.first_position is not None and not self.scene_loads
+        model = self.model  # every scene load is on one side of the model or the other
+        return self.first_position is not None and not (model.driving_loads or model.resisting_loads)
 
     @property
     def resisting(self):
