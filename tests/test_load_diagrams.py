@@ -175,13 +175,22 @@ def test_the_load_diagrams_stand_on_a_force_sheet_and_are_written_alone():
 def test_a_russian_drawing_writes_its_numbers_with_a_comma_and_the_loads_names_as_named():
     """F4.1 and F4.2 are the first and second loads on link 4 (as the note and the force sheets call them): the
     decimal-comma pass wrote them F4,1 and F4,2 on a Russian drawing."""
-    text = COMPRESSOR.read_text(encoding="utf-8").replace('locale  = "en"', 'locale  = "ru"')
-    assert 'locale  = "ru"' in text
-    analysis = graphplan.load_text(text).analyse()
-    made = drawings(analysis.scene, analysis, chosen(analysis.scene, analysis, ["load_diagrams"]))
-    (drawing,) = [drawing for drawing in made if drawing.stem == "load_diagrams"]
-    texts = [item.text for layer in drawing.layers for item in layer.items if isinstance(item, Text)]
-    assert "F4.1 = 407,7 Н" in texts and "F4.2 = −150 Н" in texts
+    def values_written(text: str) -> list[str]:
+        analysis = graphplan.load_text(text).analyse()
+        made = drawings(analysis.scene, analysis, chosen(analysis.scene, analysis, ["load_diagrams"]))
+        (drawing,) = [drawing for drawing in made if drawing.stem == "load_diagrams"]
+        return [item.text for layer in drawing.layers for item in layer.items
+                if isinstance(item, Text) and item.text.startswith("F4.") and " = " in item.text]
+
+    english = COMPRESSOR.read_text(encoding="utf-8")
+    russian = english.replace('locale  = "en"', 'locale  = "ru"')
+    assert russian != english
+    in_english = values_written(english)
+    assert {line.split(" = ")[0] for line in in_english} == {"F4.1", "F4.2"}
+    # The same lines, the value's point a comma and N the Russian Н: the load's name as it was.
+    expected = [f"{name} = {value.replace('.', ',').removesuffix(' N')} Н"
+                for name, value in (line.split(" = ") for line in in_english)]
+    assert values_written(russian) == expected
 
 
 def test_the_note_tables_each_position_s_value_and_shows_the_figure():
