@@ -146,10 +146,14 @@ def stroke_extremes(positions: PositionSet, stroke: Working | None) -> tuple[flo
 
 
 def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: str) -> Reference:
-    """The reference at the first position, where each group's assembly is chosen: a singular one is refused
-    as such, with what moves it (a position later in the run is only warned of)."""
+    """The reference at the first position, where each group's assembly is chosen: one that cannot be assembled is
+    named by its number, as a later position is; a singular one is refused as such, with what moves it (a position
+    later in the run is only warned of)."""
     try:
         return reference_at(mechanism, value)
+    except AssemblyError as error:
+        where = f"position {number} ({mechanism.driver.describe(value)})"
+        raise AssemblyError(error.joint, where, error.group, error.reason) from None
     except SingularPositionError as error:
         driver = mechanism.driver
         elsewhere = value + (2.0 * math.pi / 3.0 if driver.cyclic else 0.5 * (driver.travel[1] - driver.travel[0]))

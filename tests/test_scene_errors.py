@@ -1163,7 +1163,7 @@ def test_rrr_too_long_difference_at_the_first_position() -> None:
     text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.5, 0.1]}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
-    assert str(error).startswith("B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
+    assert str(error).startswith("B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
                                  "link 2 reaches only from ")
 
 
@@ -1172,7 +1172,7 @@ def test_rrr_too_short_with_near() -> None:
                                       "groups.0.near": [0.3, 0.4]}))
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
-    assert str(error).startswith("B cannot be assembled at φ = 0° in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
+    assert str(error).startswith("B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A–C = 0.3 m < |AB − BC| = 0.4 m; "
                                  "link 2 reaches only from ")
 
 
@@ -1245,7 +1245,7 @@ def test_prp_guides_in_one_line_at_the_first_position_are_singular() -> None:
                           "the run elsewhere (driver.swing)")
 
 
-@pytest.mark.parametrize("swing, where", [([130.0, 140.0], "position 7 (φ = 135.455°)"), ([135.0, 140.0], "φ = 135°")])
+@pytest.mark.parametrize("swing, where", [([130.0, 140.0], "position 7 (φ = 135.455°)"), ([135.0, 140.0], "position 1 (φ = 135°)")])
 def test_prp_guides_turning_parallel_take_b_off_to_infinity(swing, where) -> None:
     """The crank's guide at 45° to it is parallel to the fixed one at φ = 135° and −45°, 0.0707 m apart."""
     stage, error = first_error(to_toml(variant(CROSSED_SLIDERS, {"driver.swing": swing})))
@@ -1424,7 +1424,7 @@ def test_a_crank_stopped_at_one_angle_alone_is_told_its_reach_not_a_traceback(tm
                      encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     (line,) = capsys.readouterr().err.strip().splitlines()
-    assert line.startswith("graphplan: error: B cannot be assembled at φ = 0° in group II(3,4): A and C coincide")
+    assert line.startswith("graphplan: error: B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A and C coincide")
     assert "reaches only from -60.00° to 0.00° and from 0.00° to 60.00°" in line
     assert not (tmp_path / "out").exists()
 
