@@ -237,6 +237,18 @@ def isolation_stiffness(mass: ArrayLike, omega: ArrayLike, wanted: ArrayLike, ze
     return _out(m * (w / r) ** 2)
 
 
+def series_mount_stiffness(total: float, shaft: float) -> float | None:
+    """The stiffness k_m (N/m, at the disc) of mounts under a shaft's bearings that, in series with the shaft's own
+    k_s, give the support the ``total`` stiffness k: 1/k = 1/k_s + 1/k_m, so k_m = k·k_s/(k_s − k).
+
+    None where k ≥ k_s: mounts in series only soften the shaft, so no mount gives a support stiffer than the shaft
+    on rigid bearings (at k = k_s, rigid ones do).
+    """
+    k = float(_array("total", total, least=0.0, strict=True))
+    k_s = float(_array("shaft", shaft, least=0.0, strict=True))
+    return None if k >= k_s else k * k_s / (k_s - k)
+
+
 def damping_from_resonance(resonant_amplitude: ArrayLike, high_speed_amplitude: ArrayLike, *,
                            at: Literal["resonance", "peak"] = "resonance") -> Scalar:
     """ζ of a machine with rotating unbalance from its amplitude at resonance and far above it.
@@ -378,14 +390,22 @@ class MountsSag:
     least_transmissibility: str | None = None
     undamped_sag: float | None = None
     root_two_sag: float | None = None
+    # On a shaft, the shaft's own bending under the rotor's weight, M·g/k_s (m): the mounts under its bearings sag
+    # the rest of g·r²/ω².  0 on mounts alone.
+    shaft_sag: float = 0.0
     code = "mounts-sag"
 
     @property
     def detail(self) -> str:
         """The warning in a line (English, as the command line prints it)."""
         limit = f"{MOST_MOUNT_SAG * 1000:g} mm"
-        line = (f"the isolating mounts, k = {self.stiffness:.4g} N/m, would sag by M·g/k = {self.sag:.3g} m under "
-                f"the machine's weight, more than any spring mount ({limit}); the sag is g·r²/ω², and ")
+        if self.shaft_sag > 0:
+            line = (f"the mounts under the shaft's bearings, k_m = {self.stiffness:.4g} N/m at the disc, would sag by "
+                    f"M·g/k_m = {self.sag:.3g} m under the rotor's weight, more than any spring mount ({limit}); "
+                    f"the sag is g·r²/ω² less the shaft's own bending M·g/k_s = {self.shaft_sag:.3g} m, and ")
+        else:
+            line = (f"the isolating mounts, k = {self.stiffness:.4g} N/m, would sag by M·g/k = {self.sag:.3g} m "
+                    f"under the machine's weight, more than any spring mount ({limit}); the sag is g·r²/ω², and ")
         if self.zeta > 0:
             line += (f"TR = {self.wanted:g} needs r = {self.ratio:.4g} at the mounts' damping ratio ζ = {self.zeta:g} "
                      f"(more damping, a larger r; undamped, r = {self.undamped_ratio:.4g})")
@@ -430,40 +450,45 @@ def mounts_sag(spec: VibrationSpec) -> MountsSag | None:
     The sag M·g/k = g·r²/ω² is the mass's in nothing: r is the ratio that gives the wanted TR at the
     mounts' ζ, and grows with ζ (the damper passes force of its own), from √(1 + 1/TR) undamped.  So
     less damping, a larger TR or a higher speed each lower the sag; each is offered only where it
-    reaches the limit alone, rounded to the side that keeps within it.
+    reaches the limit alone, rounded to the side that keeps within it.  Mounts under a shaft's bearings
+    sag M·g/k_m = g·r²/ω² − M·g/k_s: the shaft's own bending takes the rest.
     """
     wanted = spec.transmissibility
     if wanted is None:
         return None
-    stiffness = steady_state(spec).isolation_stiffness
+    # A shaft soft enough by itself needs no mounts (None), and none can sag.
+    stiffness = steady_state(spec).isolation_mount_stiffness
     if stiffness is None or not stiffness > 0:
         return None
     sag = spec.mass * STANDARD_GRAVITY / stiffness
     if sag <= MOST_MOUNT_SAG:
         return None
+    # Mounts under a shaft's bearings are in series with it: the disc sinks g·r²/ω² in all, the shaft's own
+    # bending M·g/k_s of it, and the mounts the rest.
+    own = spec.mass * STANDARD_GRAVITY / spec.stiffness if spec.on_shaft else 0.0
     zeta, omega = spec.damping_ratio, spec.omega
     ratio = float(isolation_frequency_ratio(wanted, zeta))
     undamped = 1.0 + 1.0 / wanted  # r² that gives the wanted TR without damping
-    # The largest r² mounts of the most sag can have at this speed.
-    reach = omega * omega * MOST_MOUNT_SAG / STANDARD_GRAVITY
+    # The largest r² a support whose mounts sag the most can have at this speed.
+    reach = omega * omega * (MOST_MOUNT_SAG + own) / STANDARD_GRAVITY
     most_damping = undamped_sag = least = root_two_sag = None
     if zeta > 0 and undamped <= reach:
         # TR²·((1 − s)² + 4ζ²s) = 1 + 4ζ²s at s = reach, solved for ζ².
         most = math.sqrt((wanted * wanted * (1.0 - reach) ** 2 - 1.0) / (4.0 * reach * (1.0 - wanted * wanted)))
         most_damping = _rounded(most, down=True)
     elif zeta > 0:
-        undamped_sag = STANDARD_GRAVITY * undamped / omega ** 2
+        undamped_sag = STANDARD_GRAVITY * undamped / omega ** 2 - own
     if reach > 2.0:  # every ζ passes TR = 1 at r = √2: a larger TR reaches r = √reach
         rounded_up = _rounded(float(transmissibility(math.sqrt(reach), zeta)), down=False)
         if float(rounded_up) < 1.0:  # not rounded up to no isolation at all
             least = rounded_up
     else:
-        root_two_sag = 2 * STANDARD_GRAVITY / omega ** 2
-    least_speed = ratio * math.sqrt(STANDARD_GRAVITY / MOST_MOUNT_SAG) / RPM
+        root_two_sag = 2 * STANDARD_GRAVITY / omega ** 2 - own
+    least_speed = ratio * math.sqrt(STANDARD_GRAVITY / (MOST_MOUNT_SAG + own)) / RPM
     return MountsSag(stiffness=stiffness, sag=sag, wanted=wanted, ratio=ratio, zeta=zeta,
                      undamped_ratio=math.sqrt(undamped), least_rpm=_rounded(least_speed, down=False),
                      rpm=omega / RPM, most_damping=most_damping, least_transmissibility=least,
-                     undamped_sag=undamped_sag, root_two_sag=root_two_sag)
+                     undamped_sag=undamped_sag, root_two_sag=root_two_sag, shaft_sag=own)
 
 
 def cautions(spec: VibrationSpec) -> list[NearResonance | MountsSag]:
@@ -508,6 +533,9 @@ class Response:
     isolation_stiffness: float | None
     base: BaseResponse | None = None
     combined: CombinedResponse | None = None
+    # The mounts' own stiffness for the isolation: on mounts alone the support's, ``isolation_stiffness``; under a
+    # shaft's bearings, in series with it, :func:`series_mount_stiffness` (None: the shaft alone is soft enough).
+    isolation_mount_stiffness: float | None = None
 
 
 @dataclass(frozen=True)
@@ -560,13 +588,14 @@ def steady_state(spec: VibrationSpec) -> Response:
         base_amplitude=spec.base_amplitude, amplitude=spec.base_amplitude * displacement_transmissibility(r, zeta),
         phase=displacement_transmissibility_phase(r, zeta), relative=spec.base_amplitude * magnification)
     combined = None if base is None or spec.unbalance == 0 else _combined(spec, r, zeta, tr)
+    designed = None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta)
+    mounts = designed if designed is None or not spec.on_shaft else series_mount_stiffness(designed, spec.stiffness)
     return Response(
         natural_frequency=omega_n, frequency_ratio=r, magnification=magnification,
         amplitude=spec.unbalance / spec.mass * magnification, phase=phase(r, zeta), exciting_force=exciting,
         transmissibility=tr, transmitted_force=exciting * tr,
         isolation_ratio=None if wanted is None else isolation_frequency_ratio(wanted, zeta),
-        isolation_stiffness=None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta),
-        base=base, combined=combined)
+        isolation_stiffness=designed, base=base, combined=combined, isolation_mount_stiffness=mounts)
 
 
 def _combined(spec: VibrationSpec, r: float, zeta: float, tr: float) -> CombinedResponse:
@@ -611,7 +640,8 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
     if spec.transmissibility is not None:
         document["isolation"] = {"transmissibility": spec.transmissibility,
                                  "frequency_ratio": response.isolation_ratio,
-                                 "stiffness": response.isolation_stiffness}
+                                 "stiffness": response.isolation_stiffness,
+                                 "mount_stiffness": response.isolation_mount_stiffness}
     if response.base is not None:
         document["base_excitation"] = {"base_amplitude": response.base.base_amplitude,
                                        "amplitude": response.base.amplitude,
@@ -756,6 +786,7 @@ __all__ = [
     "phase",
     "read_vibration",
     "resonance_warning",
+    "series_mount_stiffness",
     "shaft_stiffness",
     "steady_state",
     "transmissibility",

@@ -147,13 +147,17 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         two_planes = balance(BalancingSpec(SHAFT, planes=(0.04, 0.22), correction_radius=0.05))
         disc = balance(BalancingSpec([RotatingMass(1, 0.1, 30)], correction_radius=0.1))
         return [t for result in (two_planes, disc) for t in svg_texts(balancing.balancing_svg(result, text))]
-    from graphplan.vibration import VibrationSpec
+    from graphplan.vibration import Shaft, VibrationSpec
 
     found = []
-    # A machine with an unbalance and isolating mounts designed, and an instrument on a moving base.
+    # A machine with an unbalance and isolating mounts designed, an instrument on a moving base, and a disc on a
+    # shaft whose whole support is designed.
     rotating = VibrationSpec(mass=100.0, unbalance=0.02, stiffness=1e5, damping_ratio=0.1, omega=60.0)
     shaken = VibrationSpec(mass=20.0, unbalance=0.0, stiffness=2e4, damping_ratio=0.1, omega=60.0, base_amplitude=1e-3)
-    for spec in (rotating, shaken):
+    disc = Shaft(modulus=2.1e11, second_moment=4e-8, length=0.8)
+    whirling = VibrationSpec(mass=20.0, unbalance=0.001, stiffness=disc.stiffness, damping_ratio=0.1, omega=400.0,
+                             shaft=disc)
+    for spec in (rotating, shaken, whirling):
         words = vibration_plots.words_for(spec, text)
         stream = io.StringIO()
         vibration_plots.magnification_figure(stream, operating=(1.3, 0.1), text=words)

@@ -47,6 +47,7 @@ from graphplan.vibration import (
     natural_frequency,
     phase,
     read_vibration,
+    series_mount_stiffness,
     shaft_stiffness,
     steady_state,
     transmissibility,
@@ -894,3 +895,85 @@ def test_isolating_mounts_far_above_resonance_do_not_squeeze_the_resonance_into_
     # On a log axis equal ratios are equal distances: from r = 1.99 to 200 is log(200/1.99) of the decade's width.
     decade = (design - working) / math.log10(ratio / 1.99)
     assert (right - design) == pytest.approx(decade * math.log10(math.ceil(1.2 * ratio) / ratio), rel=0.02)
+
+
+# --- isolating a disc on a shaft: the mounts are in series with the shaft ---------------------------------------
+
+# The hunter's disc: 20 kg on a simply supported shaft, E = 2.1e11 Pa, d = 30 mm, L = 0.8 m, a = 0.3 m, 3000 rpm.
+_SHAFT_DISC = ('mass = 20.0\nunbalance = 0.001\nshaft = {{ modulus = 2.1e11, diameter = {diameter}, length = 0.8, '
+               'position = 0.3 }}\ndamping_ratio = 0.05\nrpm = {rpm}\ntransmissibility = 0.1\n')
+
+
+def _shaft_k(diameter):
+    """The shaft's stiffness at the disc from δ = F·a²·b²/(3·E·I·L), I = π·d⁴/64."""
+    second = math.pi * diameter ** 4 / 64.0
+    return 3.0 * 2.1e11 * second * 0.8 / (0.3 ** 2 * 0.5 ** 2)
+
+
+def test_series_mounts_give_the_total_with_the_shaft_and_none_where_the_shaft_is_softer():
+    assert series_mount_stiffness(1.0e5, 4.0e5) == pytest.approx(1.0 / (1.0 / 1.0e5 - 1.0 / 4.0e5), rel=1e-14)
+    assert series_mount_stiffness(4.0e5, 4.0e5) is None and series_mount_stiffness(5.0e5, 4.0e5) is None
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_disc_on_a_shaft_is_isolated_by_mounts_in_series_with_the_shaft(tmp_path, capsys, locale):
+    """M·(ω/r)² is the whole support's stiffness: the note called it the mounts' (170 810 N/m), where mounts under
+    the bearings, in series with the 890 640 N/m shaft, must be 211 334 N/m."""
+    code, _ = _run(tmp_path, _SHAFT_DISC.format(diameter=0.03, rpm=3000.0), capsys)
+    assert code == 0
+    omega, shaft = 3000.0 * math.pi / 30.0, _shaft_k(0.03)
+    total = 20.0 * (omega / _ratio_for(0.1, 0.05)) ** 2
+    mounts = 1.0 / (1.0 / total - 1.0 / shaft)
+    # The shaft on those mounts, ζ kept, passes the 0.1 asked for.
+    together = shaft * mounts / (shaft + mounts)
+    r = omega / math.sqrt(together / 20.0)
+    assert math.hypot(1, 0.1 * r) / math.hypot(1 - r * r, 0.1 * r) == pytest.approx(0.1, rel=1e-9)
+    isolation = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["isolation"]
+    assert isolation["stiffness"] == pytest.approx(total, rel=1e-9)
+    assert isolation["mount_stiffness"] == pytest.approx(mounts, rel=1e-9)
+    from graphplan.cli import main
+
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    found = re.search(r"km = k·ks/\(ks − k\) = [^=]+ = (\d+(?:[.,]\d+)?) ", note)
+    written = float(found.group(1).replace(",", "."))
+    assert abs(written - mounts) <= 0.5 * 10 ** (math.floor(math.log10(mounts)) - 4)
+    assert {"en": "mounts of stiffness", "ru": "опоры жёсткостью", "zh": "隔振器刚度 k"}[locale] not in note
+    assert {"en": "present mounts", "ru": "Нынешние опоры", "zh": "现有隔振器"}[locale] not in note
+
+
+def test_a_shaft_softer_than_the_support_asked_for_needs_no_mounts(tmp_path, capsys):
+    """d = 10 mm: the shaft alone (11 000 N/m) is softer than the 170 805 N/m the isolation asks for at most, so it
+    already passes less than TR = 0.1; no mount in series could stiffen it to k, and none is needed."""
+    code, told = _run(tmp_path, _SHAFT_DISC.format(diameter=0.01, rpm=3000.0), capsys)
+    assert code == 0 and "warning" not in told.out
+    shaft, omega = _shaft_k(0.01), 3000.0 * math.pi / 30.0
+    assert 20.0 * (omega / _ratio_for(0.1, 0.05)) ** 2 > shaft
+    vibration = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]
+    assert vibration["isolation"]["mount_stiffness"] is None
+    r = omega / math.sqrt(shaft / 20.0)
+    tr = math.hypot(1, 0.1 * r) / math.hypot(1 - r * r, 0.1 * r)
+    assert vibration["transmissibility"] == pytest.approx(tr, rel=1e-9) and tr < 0.1
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert f"already passes TR = {tr:.4g}" in note and "it needs no mounts" in note
+    assert "km =" not in note and "present mounts" not in note
+    plot = (tmp_path / "out" / "vibration_transmissibility.svg").read_text(encoding="utf-8")
+    assert "isolating support: TR = 0.1" in plot and "isolating mounts" not in plot
+
+
+def test_mounts_under_a_shafts_bearings_sag_what_the_shafts_own_bending_leaves(tmp_path, capsys):
+    """At 300 rpm the support must be 1708 N/m: the disc sinks g·r²/ω² = 0.115 m, of which the shaft bends 0.22 mm
+    and the mounts sag the rest, M·g/km."""
+    code, told = _run(tmp_path, _SHAFT_DISC.format(diameter=0.03, rpm=300.0), capsys)
+    assert code == 0 and "warning: vibration: the mounts under the shaft's bearings" in told.out
+    g, omega, shaft = 9.80665, 300.0 * math.pi / 30.0, _shaft_k(0.03)
+    total = 20.0 * (omega / _ratio_for(0.1, 0.05)) ** 2
+    mounts = total * shaft / (shaft - total)
+    sag = 20.0 * g / mounts
+    assert sag == pytest.approx(g * _ratio_for(0.1, 0.05) ** 2 / omega ** 2 - 20.0 * g / shaft, rel=1e-9)
+    (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["warnings"]
+    assert found["code"] == "mounts-sag" and f"k_m = {mounts:.4g} N/m" in found["detail"]
+    assert f"M·g/k_m = {sag:.3g} m" in found["detail"]
+    # The speed that brings the mounts within 0.1 m: g·r²/ω² − M·g/ks = 0.1.
+    least = _ratio_for(0.1, 0.05) * math.sqrt(g / (0.1 + 20.0 * g / shaft)) * 30.0 / math.pi
+    assert f"a speed of {math.ceil(least)} rpm or more" in found["detail"]

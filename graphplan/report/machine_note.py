@@ -557,7 +557,10 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     if spec.transmissibility is not None and response.isolation_ratio is not None:
         designed = response.isolation_stiffness
         isolating = shown_operand(note, response.isolation_ratio, [(lambda r: m * (w / r) ** 2, note.n(designed))])
-        if spec.damping_ratio > 0:
+        if spec.on_shaft:
+            isolating = _shaft_isolation(note, spec, response, mass=mass, omega=omega, stiffness=stiffness,
+                                         ratio=ratio, tr=tr)
+        elif spec.damping_ratio > 0:
             # The ratio is found at the same ζ: the mounts need dampers to match.  The present ones,
             # c = 2ζ·√(k·M), keep ζ only on mounts as stiff as now: on softer ones they give more, on stiffer less.
             def damping_for(stiffness: float) -> float:  # c that gives the scene's ζ on mounts of that stiffness
@@ -572,14 +575,50 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         else:
             note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=isolating, mass=mass,
                              omega=omega, stiffness=note.n(designed)))
-        # Above √2 a larger r passes less: mounts softer than the designed ones isolate better than asked.
-        if response.transmissibility < spec.transmissibility and response.frequency_ratio > math.sqrt(2.0):
+        # Above √2 a larger r passes less: mounts softer than the designed ones isolate better than asked.  (A shaft
+        # that does has been told so: it needs no mounts.)
+        if (not spec.on_shaft and response.transmissibility < spec.transmissibility
+                and response.frequency_ratio > math.sqrt(2.0)):
             note.para(note.t("note_vib_isolation_already", ratio=ratio, tr=tr, wanted=note.n(spec.transmissibility)))
         if (sagging := mounts_sag(spec)) is not None:
             _sag_caution(note, sagging, isolating)
     words = words_for(spec, note.text) or note.text  # a moving base's plots are captioned as they are titled
     note.figure("vibration_magnification.svg", words["vib_magnification_title"], lead="plot_lead")
     note.figure("vibration_transmissibility.svg", words["vib_transmissibility_title"], lead="plot_lead")
+
+
+def _shaft_isolation(note: Writer, spec: VibrationSpec, response: Response, *, mass: str, omega: str,
+                     stiffness: str, ratio: str, tr: str) -> str:
+    """The isolation of a disc on a shaft: M·(ω/r)² is the whole support's stiffness, the shaft's and the mounts'
+    under its bearings in series, so the mounts need k_m = k·k_s/(k_s − k); where the shaft alone is no stiffer than
+    k it already isolates as asked, and no mount is needed (one in series could only soften it further).
+    ``stiffness`` and ``ratio`` are the shaft's k_s and the present r as the note writes them; returns the isolating
+    r as written."""
+    designed = response.isolation_stiffness
+    assert designed is not None and spec.transmissibility is not None and response.isolation_ratio is not None
+    m, w, shaft = read_number(note, mass), read_number(note, omega), read_number(note, stiffness)
+    mounts = response.isolation_mount_stiffness
+    # k is written to as many digits as make k·k_s/(k_s − k) come out as written, and r to as many as make M·(ω/r)²
+    # come out as that k.
+    total = note.n(designed) if mounts is None else shown_operand(
+        note, designed, [(lambda k: k * shaft / (shaft - k), note.n(mounts))])
+    isolating = shown_operand(note, response.isolation_ratio, [(lambda r: m * (w / r) ** 2, total)])
+    zeta = spec.damping_ratio
+    at = "" if zeta == 0 else note.t("note_vib_isolation_shaft_at", zeta=note.n(zeta))
+    values = {"wanted": note.n(spec.transmissibility), "ratio": isolating, "mass": mass, "omega": omega,
+              "total": total, "shaft": stiffness, "at": at}
+    if mounts is None:
+        note.para(note.t("note_vib_isolation_shaft_already", present=ratio, tr=tr, **values))
+        return isolating
+    text = note.t("note_vib_isolation_shaft", mounts=note.n(mounts), **values)
+    if zeta > 0:
+        # The damping found keeps ζ on the softer support; the present damping, c = 2ζ·√(k_s·M), would give it more.
+        kept = note.n(float(damping_ratio(2.0 * zeta * math.sqrt(spec.stiffness * spec.mass), designed, spec.mass)))
+        present = "" if kept == note.n(zeta) else note.t("note_vib_kept_shaft", zeta=kept)
+        text += note.t("note_vib_isolation_shaft_damped", damping=note.n(2.0 * zeta * math.sqrt(designed * spec.mass)),
+                       kept=present)
+    note.para(text)
+    return isolating
 
 
 def _resonance_caution(note: Writer, close: NearResonance) -> None:
@@ -599,8 +638,10 @@ def _sag_caution(note: Writer, sagging: MountsSag, ratio: str) -> None:
     limit = note.n(MOST_MOUNT_SAG * 1000.0)
     at = "" if sagging.zeta == 0 else note.t("note_vib_caution_sag_damped", zeta=note.n(sagging.zeta),
                                              undamped=note.n(sagging.undamped_ratio))
-    text = note.t("note_vib_caution_sag", stiffness=note.n(sagging.stiffness), sag=note.n(sagging.sag, 3),
-                  limit=limit, wanted=note.n(sagging.wanted), ratio=ratio, at=at)
+    # Under a shaft's bearings the mounts sag what the shaft's own bending leaves of g·r²/ω².
+    text = note.t("note_vib_caution_sag_shaft" if sagging.shaft_sag > 0 else "note_vib_caution_sag",
+                  stiffness=note.n(sagging.stiffness), sag=note.n(sagging.sag, 3), limit=limit,
+                  wanted=note.n(sagging.wanted), ratio=ratio, at=at, own=note.n(sagging.shaft_sag, 3))
     if sagging.undamped_sag is not None:
         text += note.t("note_vib_caution_sag_undamped", sag=note.n(sagging.undamped_sag, 3))
     if sagging.root_two_sag is not None:

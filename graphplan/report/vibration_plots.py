@@ -93,12 +93,18 @@ def transmissibility_figure(path: str | Path, zetas: Sequence[float] = DEFAULT_Z
 def words_for(spec: VibrationSpec, text: Mapping[str, str] | None) -> Mapping[str, str] | None:
     """The plots' words for ``spec`` (``text`` as the figures take it; None: English): a machine with no unbalance
     on a moving base reads the magnification as its motion relative to the base, Z/Y, and the transmissibility as
-    the motion passed to it, X/Y (the same curves), not as a rotating unbalance and a force."""
-    if not (spec.unbalance == 0 and spec.base_amplitude is not None):
+    the motion passed to it, X/Y (the same curves), not as a rotating unbalance and a force.  A disc on a shaft
+    has its whole support designed, the shaft and any mounts under its bearings, not mounts alone."""
+    moved = spec.unbalance == 0 and spec.base_amplitude is not None
+    if not (moved or spec.on_shaft):
         return text
     words = {**locale_strings("en"), **(text or {})}
-    return {**words, "vib_magnification": words["vib_relative"], "vib_magnification_title": words["vib_relative_title"],
-            "vib_transmissibility": words["vib_motion"], "vib_transmissibility_title": words["vib_motion_title"]}
+    if spec.on_shaft:
+        words["vib_design"] = words["vib_design_shaft"]
+    if moved:
+        words.update({"vib_magnification": words["vib_relative"], "vib_magnification_title": words["vib_relative_title"],
+                      "vib_transmissibility": words["vib_motion"], "vib_transmissibility_title": words["vib_motion_title"]})
+    return words
 
 
 def _with_machine(zetas: list[float], operating: tuple[float, float] | None) -> list[float]:
