@@ -45,6 +45,7 @@ from typing import Any
 
 from .errors import SceneError
 from .reader import Table, check_number, check_str, join_path
+from .rotor_lengths import LARGEST_RADIUS_M, LONGEST_ROTOR_M, MIXED_RATIO, Implausible, LengthsInMillimetres
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
 NEGLIGIBLE = 1e-12
@@ -578,10 +579,49 @@ class CoupleLeft:
                 "in other planes than the correction's); planes = [zL, zR] balances it dynamically")
 
 
-def cautions(result: BalancingResult) -> list[CoupleLeft]:
-    """What the balanced rotor is left that a reader should not miss: the couple of one plane."""
+def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
+    """The rotor's lengths that no machine has as metres, each with its key (``balancing.masses[0].radius``), as
+    lengths typed in millimetres make them; None where they are plausible.  A radius over
+    :data:`~graphplan.rotor_lengths.LARGEST_RADIUS_M`, a mass :data:`~graphplan.rotor_lengths.MIXED_RATIO` times
+    farther out than the nearest correction, planes farther apart than
+    :data:`~graphplan.rotor_lengths.LONGEST_ROTOR_M`."""
+    found = []
+    for k, mass in enumerate(spec.masses):
+        if mass.radius > LARGEST_RADIUS_M:
+            found.append(Implausible("radius", f"balancing.masses[{k}].radius", mass.radius, LARGEST_RADIUS_M,
+                                     name=mass.name))
+    radii = tuple(spec.correction_radius or ())
+    # One radius for every plane is named by its key alone, as the scene most likely gave it.
+    keys = ["balancing.correction_radius" if len(set(radii)) == 1 else f"balancing.correction_radius[{k}]"
+            for k in range(len(radii))]
+    for k, radius in enumerate(radii):
+        if radius > LARGEST_RADIUS_M and keys[k] not in {item.key for item in found}:
+            found.append(Implausible("correction_radius", keys[k], radius, LARGEST_RADIUS_M,
+                                     name=spec.plane_names[k]))
+    if radii and not found:
+        k, mass = max(enumerate(spec.masses), key=lambda item: item[1].radius)
+        j = min(range(len(radii)), key=lambda index: radii[index])
+        if mass.radius > MIXED_RATIO * radii[j]:
+            found.append(Implausible("mixed", f"balancing.masses[{k}].radius", mass.radius, MIXED_RATIO,
+                                     name=mass.name, other_key=keys[j], other=radii[j],
+                                     other_name=spec.plane_names[j]))
+    along = [(f"balancing.masses[{k}].plane", mass.plane) for k, mass in enumerate(spec.masses)]
+    along += [(f"balancing.planes[{k}]", z) for k, z in enumerate(spec.planes)]
+    (low_key, low), (high_key, high) = min(along, key=lambda item: item[1]), max(along, key=lambda item: item[1])
+    if high - low > LONGEST_ROTOR_M:
+        found.append(Implausible("rotor_length", high_key, high, LONGEST_ROTOR_M, other_key=low_key, other=low))
+    return LengthsInMillimetres(tuple(found)) if found else None
+
+
+def cautions(result: BalancingResult) -> list[CoupleLeft | LengthsInMillimetres]:
+    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres, the
+    couple of one plane."""
+    found: list[CoupleLeft | LengthsInMillimetres] = []
+    lengths = lengths_in_millimetres(result.spec)
+    if lengths is not None:
+        found.append(lengths)
     couple = static_couple(result)
-    return [] if couple is None else [CoupleLeft(couple)]
+    return found if couple is None else [*found, CoupleLeft(couple)]
 
 
 def _above_noise(value: float, scale: float) -> float:
@@ -589,4 +629,5 @@ def _above_noise(value: float, scale: float) -> float:
 
 
 __all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PolygonVector", "RotatingMass",
-           "balance", "balancing_results", "cautions", "label_clash", "read_balancing", "static_couple", "vector_name"]
+           "balance", "balancing_results", "cautions", "label_clash", "lengths_in_millimetres", "read_balancing",
+           "static_couple", "vector_name"]

@@ -36,6 +36,15 @@ from numpy.typing import ArrayLike
 
 from .errors import SceneError
 from .reader import Table, check_choice
+from .rotor_lengths import (
+    FASTEST_BASE_M_S,
+    LARGEST_RADIUS_M,
+    LARGEST_SECOND_MOMENT_M4,
+    LONGEST_ROTOR_M,
+    THICKEST_SHAFT_M,
+    Implausible,
+    LengthsInMillimetres,
+)
 from .units import RPM
 
 Scalar = float | np.ndarray
@@ -309,9 +318,11 @@ class VibrationSpec:
     omega: float
     transmissibility: float | None = None
     base_amplitude: float | None = None
-    # How the scene gave k and ζ, for the note to say: the shaft whose stiffness k is, the damping c (N·s/m).
+    # How the scene gave k and ζ, for the note to say: the shaft whose stiffness k is, the damping c (N·s/m); and
+    # the eccentricity e (m) where it gave m·e as a mass and its eccentricity, for the lengths to be checked.
     shaft: Shaft | None = None
     damping: float | None = None
+    eccentricity: float | None = None
 
     @property
     def on_shaft(self) -> bool:
@@ -491,10 +502,38 @@ def mounts_sag(spec: VibrationSpec) -> MountsSag | None:
                      undamped_sag=undamped_sag, root_two_sag=root_two_sag, shaft_sag=own)
 
 
-def cautions(spec: VibrationSpec) -> list[NearResonance | MountsSag]:
-    """What the results hold that a reader should not take at face value: a speed near resonance, isolating
-    mounts no spring could be."""
-    return [found for found in (near_resonance(spec), mounts_sag(spec)) if found is not None]
+def lengths_in_millimetres(spec: VibrationSpec) -> LengthsInMillimetres | None:
+    """The machine's lengths that no machine has as metres, each with its key (``vibration.shaft.diameter``), as
+    lengths typed in millimetres make them; None where they are plausible (limits in :mod:`graphplan.rotor_lengths`)."""
+    found = []
+    if spec.eccentricity is not None and spec.eccentricity > LARGEST_RADIUS_M:
+        found.append(Implausible("eccentricity", "vibration.eccentricity", spec.eccentricity, LARGEST_RADIUS_M))
+    shaft = spec.shaft
+    if shaft is not None:
+        if shaft.diameter is not None and shaft.diameter > THICKEST_SHAFT_M:
+            found.append(Implausible("diameter", "vibration.shaft.diameter", shaft.diameter, THICKEST_SHAFT_M))
+        elif shaft.diameter is None and shaft.second_moment > LARGEST_SECOND_MOMENT_M4:
+            found.append(Implausible("second_moment", "vibration.shaft.second_moment", shaft.second_moment,
+                                     LARGEST_SECOND_MOMENT_M4))
+        if shaft.length > LONGEST_ROTOR_M:
+            found.append(Implausible("span", "vibration.shaft.length", shaft.length, LONGEST_ROTOR_M))
+    base = spec.base_amplitude
+    if base is not None and base * spec.omega > FASTEST_BASE_M_S:
+        found.append(Implausible("base", "vibration.base_amplitude", base, FASTEST_BASE_M_S, other=spec.omega))
+    return LengthsInMillimetres(tuple(found)) if found else None
+
+
+def cautions(spec: VibrationSpec) -> list[LengthsInMillimetres | NearResonance | MountsSag]:
+    """What the results hold that a reader should not take at face value: lengths that look typed in millimetres,
+    a speed near resonance, isolating mounts no spring could be."""
+    return [found for found in (lengths_in_millimetres(spec), near_resonance(spec), mounts_sag(spec))
+            if found is not None]
+
+
+def lengths_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line for :func:`lengths_in_millimetres`, or None."""
+    found = lengths_in_millimetres(spec)
+    return None if found is None else f"vibration: {found.detail}"
 
 
 def resonance_warning(spec: VibrationSpec) -> str | None:
@@ -670,7 +709,7 @@ def read_vibration(table: Table) -> VibrationSpec:
     ``base_amplitude`` (m, optional: the base moving at ω too).
     """
     mass = table.number("mass", positive=True)
-    unbalance = _unbalance(table, mass)
+    unbalance, eccentricity = _unbalance(table, mass)
     shaft = _shaft(table)
     stiffness = table.number("stiffness", positive=True) if shaft is None else shaft.stiffness
     omega = table.speed(positive=True)
@@ -689,7 +728,7 @@ def read_vibration(table: Table) -> VibrationSpec:
                          "is 0 and the base does not move (no base_amplitude): nothing excites the machine")
     return VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega,
                          transmissibility=wanted, base_amplitude=base, shaft=shaft,
-                         damping=table.number("damping") if table.has("damping") else None)
+                         damping=table.number("damping") if table.has("damping") else None, eccentricity=eccentricity)
 
 
 def _one_of(table: Table, first: str, second: str) -> str:
@@ -702,7 +741,8 @@ def _one_of(table: Table, first: str, second: str) -> str:
     return first if table.has(first) else second
 
 
-def _unbalance(table: Table, mass: float) -> float:
+def _unbalance(table: Table, mass: float) -> tuple[float, float | None]:
+    """m·e (kg·m), and e (m) where the table gives it apart."""
     whole = table.has("unbalance")
     parts = table.has("unbalanced_mass") or table.has("eccentricity")
     if whole and parts:
@@ -711,13 +751,13 @@ def _unbalance(table: Table, mass: float) -> float:
     if not parts:
         if not whole:
             raise SceneError(table.where("unbalance"), "is required (m·e, kg·m), or unbalanced_mass and eccentricity")
-        return table.number("unbalance", non_negative=True)
+        return table.number("unbalance", non_negative=True), None
     small = table.number("unbalanced_mass", positive=True)
     eccentricity = table.number("eccentricity", non_negative=True)
     if small > mass:
         raise SceneError(table.where("unbalanced_mass"), f"must not exceed mass ({mass:g} kg), which includes it",
                          small)
-    return small * eccentricity
+    return small * eccentricity, eccentricity
 
 
 def _shaft(table: Table) -> Shaft | None:
@@ -780,6 +820,8 @@ __all__ = [
     "isolation_frequency_ratio",
     "isolation_stiffness",
     "isolation_warning",
+    "lengths_in_millimetres",
+    "lengths_warning",
     "mounts_sag",
     "natural_frequency",
     "near_resonance",

@@ -20,6 +20,8 @@ from ..loads import external_names
 from ..locale import Count
 from ..render.numerals import angle_in_turn, power_of_ten
 from ..rotor_balancing import BalancingResult, static_couple
+from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
+from ..rotor_lengths import LengthsInMillimetres
 from ..units import RPM
 from ..vibration import (
     MOST_MOUNT_SAG,
@@ -29,6 +31,7 @@ from ..vibration import (
     Shaft,
     VibrationSpec,
     damping_ratio,
+    lengths_in_millimetres,
     mounts_sag,
     near_resonance,
 )
@@ -361,6 +364,8 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
              note.n(mass.radius), note.n(mass.angle_deg, 4), note.n(mass.plane), note.n(abs(mass.unbalance))]
             for mass in spec.masses]
     note.table(note.t("note_bal_masses"), note.t("note_bal_masses_header").split(" | "), rows, "lrrrrr")
+    if (lengths := rotor_lengths(spec)) is not None:
+        _lengths_caution(note, lengths)
     planes = result.planes
     along = [mass.plane for mass in spec.masses]
     if spec.dynamic:
@@ -506,6 +511,8 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         note.para(note.t("note_vib_moving_base_shaft" if spec.on_shaft else "note_vib_moving_base", base=base_text))
     if spec.shaft is not None:
         _shaft(note, spec.shaft, stiffness)
+    if (lengths := lengths_in_millimetres(spec)) is not None:
+        _lengths_caution(note, lengths)
     if spec.damping is not None:
         note.para(note.t("note_vib_damping", damping=note.n(spec.damping), stiffness=stiffness, mass=mass,
                          zeta=zeta))
@@ -619,6 +626,26 @@ def _shaft_isolation(note: Writer, spec: VibrationSpec, response: Response, *, m
                        kept=present)
     note.para(text)
     return isolating
+
+
+def _lengths_caution(note: Writer, lengths: LengthsInMillimetres) -> None:
+    """What the command line warns of lengths that look typed in millimetres, said in words under the data they are
+    in: the note's reader has no scene to look its keys up in, and a 30 m shaft must not read as if nothing were
+    amiss."""
+    found = []
+    for item in lengths.found:
+        values = {"name": item.name, "value": note.n(item.value), "limit": note.n(item.limit, 3),
+                  "other": note.n(item.other), "other_name": item.other_name}
+        if item.kind == "mixed":
+            values["ratio"] = note.n(item.value / item.other, 3)
+        elif item.kind == "rotor_length":
+            values["apart"] = note.n(item.value - item.other)
+        elif item.kind == "base":
+            values["speed"] = note.n(item.value * item.other, 4)
+        found.append(note.t(f"note_len_{item.kind}", **values))
+    mixed = any(item.kind == "mixed" for item in lengths.found)
+    key = "_speed" if lengths.only_speed else "_mixed" if mixed else ""
+    note.para(note.t("note_lengths_caution" + key, found=note.text["note_len_separator"].join(found)))
 
 
 def _resonance_caution(note: Writer, close: NearResonance) -> None:

@@ -1,0 +1,104 @@
+"""Lengths typed in millimetres where ``[balancing]`` and ``[vibration]`` ask for metres: a radius of 80 m, a shaft
+30 m thick.  The rotor and the machine still work out, every result a thousand times off (correction masses of
+1680 kg for a 5 kg rotor), so the run warns, naming each key with its value, as the linkage's ``lengths-in-mm`` does
+(:mod:`graphplan.length_units`).  The limits are beyond every real machine, so a true one is never told its lengths
+are millimetres; a length in millimetres is caught where it passes them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+# The largest rotors are wind turbines', whose blade tips turn some 120 m from the axis (a hydro-turbine runner or a
+# generator rotor, balanced in planes, a few metres): a radius or an eccentricity over LARGEST_RADIUS_M is no
+# machine's.
+LARGEST_RADIUS_M = 150.0
+# The longest rotors balanced in two planes, turbine-generator rotors and paper-machine rolls, are some 10–15 m
+# long, and no shaft spans more between its bearings (a ship's propeller shaft has bearings every few metres).
+LONGEST_ROTOR_M = 50.0
+# The thickest shafts, a hydro-generator's or a large ship's, are 1–2 m across; a shaft given by its second moment
+# of area is judged by a round one's, I = π·d⁴/64.
+THICKEST_SHAFT_M = 5.0
+LARGEST_SECOND_MOMENT_M4 = math.pi * THICKEST_SHAFT_M ** 4 / 64.0
+# A correction mass is fixed near the rim, where it does the most: a mass turning MIXED_RATIO times farther out than
+# the corrections is one in millimetres among metres.  (The other way round is real: a disc's eccentricity of
+# 0.1 mm, corrected at 0.2 m.)
+MIXED_RATIO = 200.0
+# The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
+# faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
+FASTEST_BASE_M_S = 20.0
+
+
+@dataclass(frozen=True)
+class Implausible:
+    """One length of the scene that no machine has, as metres.
+
+    ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``rotor_length``, ``eccentricity``,
+    ``diameter``, ``second_moment``, ``span``, ``base``); ``key`` its key path and ``value`` what it gives;
+    ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it belongs to; ``other_key`` and
+    ``other`` the second key it is judged against (``mixed``: the correction radius; ``rotor_length``: the farthest
+    plane), or for ``base`` ω (rad/s).
+    """
+
+    kind: str
+    key: str
+    value: float
+    limit: float
+    name: str = ""
+    other_key: str = ""
+    other: float = 0.0
+    other_name: str = ""
+
+    @property
+    def detail(self) -> str:
+        """The finding in English, as the command line prints it."""
+        given = f"{self.key} = {self.value:g}"
+        if self.kind == "mixed":
+            return (f"{given} m is {self.value / self.other:.3g} times {self.other_key} = {self.other:g} m (a mass "
+                    f"turning more than {MIXED_RATIO:g} times farther out than its correction)")
+        if self.kind == "rotor_length":
+            return (f"{given} m lies {abs(self.value - self.other):.4g} m from {self.other_key} = {self.other:g} m, "
+                    f"farther apart than any rotor's planes (over {self.limit:g} m)")
+        if self.kind == "base":
+            return (f"{given} m at ω = {self.other:.4g} rad/s moves the base at Y·ω = {self.value * self.other:.4g} "
+                    f"m/s, faster than any floor or shaking table (over {self.limit:g} m/s)")
+        if self.kind == "second_moment":
+            return (f"{given} m⁴ is more than any shaft's (over {self.limit:.3g} m⁴, a {THICKEST_SHAFT_M:g} m round "
+                    "shaft's)")
+        what = {"radius": "a radius larger than any rotor's", "correction_radius": "a radius larger than any rotor's",
+                "eccentricity": "larger than any rotor's radius", "diameter": "thicker than any shaft",
+                "span": "longer than any shaft between its bearings"}[self.kind]
+        return f"{given} m is {what} (over {self.limit:g} m)"
+
+
+@dataclass(frozen=True)
+class LengthsInMillimetres:
+    """The scene's lengths that are implausible as metres (:class:`Implausible`), as lengths typed in millimetres
+    make them."""
+
+    found: tuple[Implausible, ...]
+    code = "lengths-in-mm"
+
+    @property
+    def only_speed(self) -> bool:
+        """Whether a moving base's speed alone gives them away: ω in rev/min would too."""
+        return all(item.kind == "base" for item in self.found)
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        second = any(item.kind == "second_moment" for item in self.found)
+        divide = "divide them by 1000" + (", a second moment of area by 10¹²" if second else "")
+        unless = ", unless ω is too large: it is in rad/s, and rev/min are given as vibration.rpm" if self.only_speed \
+            else ""
+        asked = "are the lengths in millimetres? The scene's lengths are in metres"
+        if any(item.kind == "mixed" for item in self.found):
+            # Millimetres among metres: dividing every length would spoil the ones in metres.
+            asked, divide = "are some lengths in millimetres? The scene's lengths are all in metres", \
+                "divide millimetres by 1000"
+        return "; ".join(item.detail for item in self.found) + f": {asked} ({divide}){unless}"
+
+
+__all__ = ["FASTEST_BASE_M_S", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4", "LONGEST_ROTOR_M", "MIXED_RATIO",
+           "THICKEST_SHAFT_M", "Implausible", "LengthsInMillimetres"]
