@@ -49,6 +49,10 @@ from .rotor_lengths import LARGEST_RADIUS_M, LONGEST_ROTOR_M, MIXED_RATIO, Impla
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
 NEGLIGIBLE = 1e-12
+#: Corrections whose Σ |mb·rb| is more than this many times the masses' own Σ |mi·ri| are cautioned of: the planes are
+#: too close for the masses' spread, and the corrections a large couple on a short arm (a mass d beyond planes s apart
+#: carries shares of some d/s into them, so 10 is a mass some 4.5 spacings out).
+LARGE_CORRECTIONS = 10.0
 #: Names of the correction planes when the scene does not name them.
 DYNAMIC_PLANE_NAMES = ("L", "R")
 STATIC_PLANE_NAMES = ("b",)
@@ -579,6 +583,46 @@ class CoupleLeft:
                 "in other planes than the correction's); planes = [zL, zR] balances it dynamically")
 
 
+@dataclass(frozen=True)
+class PlanesClose:
+    """Two correction planes so close for the masses' spread that the ``corrections``' Σ |mb·rb| (kg·m) is more than
+    :data:`LARGE_CORRECTIONS` times the ``masses``' Σ |mi·ri|: the planes are ``spacing`` (m) apart, the farthest
+    mass ``distance`` (m) from one of them."""
+
+    corrections: float
+    masses: float
+    spacing: float
+    distance: float
+    code = "planes-close"
+
+    @property
+    def ratio(self) -> float:
+        return self.corrections / self.masses
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        return (f"the corrections' Σ |m·r| = {self.corrections:.4g} kg·m is {self.ratio:.3g} times the masses' "
+                f"({self.masses:.4g} kg·m): the correction planes, {self.spacing:g} m apart, are close for masses up "
+                f"to {self.distance:g} m from them, and the corrections make a large couple on a short arm; set the "
+                "planes farther apart")
+
+
+def planes_close(result: BalancingResult) -> PlanesClose | None:
+    """Two correction planes whose corrections are more than :data:`LARGE_CORRECTIONS` times the masses' Σ |m·r|;
+    else None (one plane's correction is never more than the masses')."""
+    spec = result.spec
+    if not spec.dynamic:
+        return None
+    own = sum(abs(mass.unbalance) for mass in spec.masses)
+    corrections = sum(plane.mass_radius for plane in result.planes)
+    if not corrections > LARGE_CORRECTIONS * own:
+        return None
+    left, right = spec.planes
+    distance = max(max(abs(mass.plane - left), abs(mass.plane - right)) for mass in spec.masses)
+    return PlanesClose(corrections=corrections, masses=own, spacing=abs(right - left), distance=distance)
+
+
 def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     """The rotor's lengths that no machine has as metres, each with its key (``balancing.masses[0].radius``), as
     lengths typed in millimetres make them; None where they are plausible.  A radius over
@@ -613,21 +657,18 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     return LengthsInMillimetres(tuple(found)) if found else None
 
 
-def cautions(result: BalancingResult) -> list[CoupleLeft | LengthsInMillimetres]:
-    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres, the
-    couple of one plane."""
-    found: list[CoupleLeft | LengthsInMillimetres] = []
-    lengths = lengths_in_millimetres(result.spec)
-    if lengths is not None:
-        found.append(lengths)
+def cautions(result: BalancingResult) -> list[CoupleLeft | LengthsInMillimetres | PlanesClose]:
+    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres,
+    corrections dwarfing the masses, the couple of one plane."""
     couple = static_couple(result)
-    return found if couple is None else [*found, CoupleLeft(couple)]
+    return [found for found in (lengths_in_millimetres(result.spec), planes_close(result),
+                                None if couple is None else CoupleLeft(couple)) if found is not None]
 
 
 def _above_noise(value: float, scale: float) -> float:
     return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
-__all__ = ["BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PolygonVector", "RotatingMass",
-           "balance", "balancing_results", "cautions", "label_clash", "lengths_in_millimetres", "read_balancing",
-           "static_couple", "vector_name"]
+__all__ = ["LARGE_CORRECTIONS", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PlanesClose",
+           "PolygonVector", "RotatingMass", "balance", "balancing_results", "cautions", "label_clash",
+           "lengths_in_millimetres", "planes_close", "read_balancing", "static_couple", "vector_name"]

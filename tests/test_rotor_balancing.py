@@ -34,6 +34,7 @@ from graphplan.rotor_balancing import (
     RotatingMass,
     balance,
     balancing_results,
+    cautions,
     read_balancing,
 )
 
@@ -934,3 +935,53 @@ def test_a_plane_no_sheet_holds_is_named_as_its_caption_names_it(tmp_path, capsy
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--sheet", "A4"]) == 2
     error = capsys.readouterr().err
     assert re.search(rf"the drawing '{plane} II?' \(", error) and "balancing-" not in error, error
+
+
+# --- correction planes close together ---------------------------------------------------------------------------
+
+# The hunter's B14: 6 kg of masses up to 0.8 m along the rotor, corrected in planes 1 mm apart.
+_CLOSE = [(2.0, 0.1, 0.0, 0.0), (3.0, 0.1, 100.0, 0.3), (1.0, 0.2, 250.0, 0.8)]
+
+
+def _corrections_by_moments(masses, left, right):
+    """mL·rL and mR·rR from Σ m·r + corrections = 0 and Σ m·r·z + z·corrections = 0, solved as one system."""
+    products = [m * r * cmath.exp(1j * math.radians(angle)) for m, r, angle, _ in masses]
+    system = np.array([[1.0, 1.0], [left, right]], dtype=complex)
+    return np.linalg.solve(system, -np.array([sum(products), sum(p * z for p, (*_, z) in zip(products, masses,
+                                                                                            strict=True))]))
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_correction_planes_close_together_are_cautioned_against(tmp_path, capsys, locale):
+    """mL = 1464 kg and mR = 1463 kg for a 6 kg rotor, worked out right and said nothing of."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    masses = ",\n".join(f"{{ mass = {m}, radius = {r}, angle = {a}, plane = {z} }}" for m, r, a, z in _CLOSE)
+    scene.write_text(f'[scene]\ntitle = "Rotor"\nlocale = "{locale}"\n[balancing]\nmasses = [{masses}]\n'
+                     "planes = [0.4, 0.401]\ncorrection_radius = 0.1\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    told = capsys.readouterr().out
+    corrections = sum(abs(c) for c in _corrections_by_moments(_CLOSE, 0.4, 0.401))
+    own = sum(m * r for m, r, _, _ in _CLOSE)
+    ratio = corrections / own
+    assert ratio > 10
+    line = f"the corrections' Σ |m·r| = {corrections:.4g} kg·m is {ratio:.3g} times the masses' ({own:.4g} kg·m)"
+    assert f"warning: balancing: {line}" in told and "set the planes farther apart" in told
+    (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["balancing"]["warnings"]
+    assert found["code"] == "planes-close" and found["detail"].startswith(line)
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    mark = "," if locale == "ru" else "."
+    written = f"{ratio:.3g}".replace(".", mark)
+    caution = {"en": f"Caution: the corrections' Σ |m·r| = {corrections:.5g} kg·m is {written} times",
+               "ru": f"Внимание: сумма |m·r| корректирующих масс, {corrections:.5g} кг·м, более чем в десять раз",
+               "zh": f"注意：校正质量的 Σ |m·r| = {corrections:.5g} kg·m，是各质量本身"}[locale]
+    assert caution.replace(".", mark) in note and f"{written}" in note
+
+
+def test_planes_a_rotor_length_apart_are_not_cautioned_against():
+    """The same masses corrected at the rotor's ends, 0 and 0.8 m: the corrections are the size of the masses."""
+    result = balance(BalancingSpec([RotatingMass(m, r, a, z) for m, r, a, z in _CLOSE], planes=(0.0, 0.8)))
+    corrections = sum(abs(c) for c in _corrections_by_moments(_CLOSE, 0.0, 0.8))
+    assert corrections < 10 * sum(m * r for m, r, _, _ in _CLOSE)
+    assert [found.code for found in cautions(result)] == []

@@ -42,7 +42,8 @@ def test_a_rotors_radii_in_millimetres_beside_a_correction_radius_in_metres_are_
     (found,) = results["balancing"]["warnings"]
     assert found["code"] == "lengths-in-mm" and line in found["detail"]
     words = {"en": f"Caution: as metres, mass 1's radius, 80 m, is {ratio:g} times the correction radius in plane L",
-             "ru": f"Внимание: если считать в метрах, радиус массы 1, 80 м, в {ratio:g} раз больше радиуса",
+             "ru": "Внимание: если считать в метрах, радиус массы 1, 80 м, более чем в 200 раз превышает радиус "
+                   f"корректирующей массы в плоскости L, 0,1 м (отношение {ratio:g})",
              "zh": f"注意：若按米计，质量 1 的半径 80 m 是平面 L 校正半径 0.1 m 的 {ratio:g} 倍"}[locale]
     assert words in note
     assert "balancing.masses" not in note  # the note's reader has no scene to look a key up in

@@ -19,7 +19,7 @@ import numpy as np
 from ..loads import external_names
 from ..locale import Count
 from ..render.numerals import angle_in_turn, power_of_ten
-from ..rotor_balancing import BalancingResult, static_couple
+from ..rotor_balancing import BalancingResult, planes_close, static_couple
 from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
 from ..rotor_lengths import LengthsInMillimetres
 from ..units import RPM
@@ -407,6 +407,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         angle = angle_in_turn(plane.angle_deg).replace(".", note.mark)
         note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=plane.name,
                          equation=plane.equation, vector=vector, value=value, angle=angle, mass=mass))
+    if (close := planes_close(result)) is not None:
+        note.para(note.t("note_bal_caution_planes_close", corrections=note.n(close.corrections),
+                         ratio=note.n(close.ratio, 3), masses=note.n(close.masses), spacing=note.n(close.spacing),
+                         distance=note.n(close.distance)))
     # The residual as results.json writes it (rounding as 0), and the verdict from it.
     force, moment = result.residual
     verdict = "note_bal_residual" + ("" if result.balanced else "_left") + ("" if spec.dynamic else "_static")
