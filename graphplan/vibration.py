@@ -582,13 +582,15 @@ class BaseResponse:
     """The machine's steady motion where its base moves as y = Y·sin ωt (SI, the lag in radians).
 
     ``amplitude`` X = Y·TR, lagging the base by ``phase``; ``relative``
-    Z = Y·r²/√((1 − r²)² + (2ζr)²), the mount's stroke.
+    Z = Y·r²/√((1 − r²)² + (2ζr)²), the mount's stroke; ``transmitted_force``
+    the amplitude of the force the mounts pass, |(k + i·c·ω)·Z| = TR·M·ω²·Y (N).
     """
 
     base_amplitude: float
     amplitude: float
     phase: float
     relative: float
+    transmitted_force: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -623,9 +625,12 @@ def steady_state(spec: VibrationSpec) -> Response:
     exciting = spec.unbalance * spec.omega ** 2
     tr = transmissibility(r, zeta)
     wanted = spec.transmissibility
+    # The mounts pass k·Z + c·Z′ whatever moves them: |k + i·c·ω|·Z = k·√(1 + (2ζr)²)·Y·r²/√((1 − r²)² + (2ζr)²),
+    # which is TR·M·ω²·Y since k·r² = M·ω².
     base = None if spec.base_amplitude is None else BaseResponse(
         base_amplitude=spec.base_amplitude, amplitude=spec.base_amplitude * displacement_transmissibility(r, zeta),
-        phase=displacement_transmissibility_phase(r, zeta), relative=spec.base_amplitude * magnification)
+        phase=displacement_transmissibility_phase(r, zeta), relative=spec.base_amplitude * magnification,
+        transmitted_force=tr * spec.mass * spec.omega ** 2 * spec.base_amplitude)
     combined = None if base is None or spec.unbalance == 0 else _combined(spec, r, zeta, tr)
     designed = None if wanted is None else isolation_stiffness(spec.mass, spec.omega, wanted, zeta)
     mounts = designed if designed is None or not spec.on_shaft else series_mount_stiffness(designed, spec.stiffness)
@@ -685,7 +690,8 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
         document["base_excitation"] = {"base_amplitude": response.base.base_amplitude,
                                        "amplitude": response.base.amplitude,
                                        "phase_deg": math.degrees(response.base.phase),
-                                       "relative_amplitude": response.base.relative}
+                                       "relative_amplitude": response.base.relative,
+                                       "transmitted_force": response.base.transmitted_force}
     if response.combined is not None:
         document["combined"] = {"amplitude": response.combined.amplitude,
                                 "phase_deg": math.degrees(response.combined.phase),

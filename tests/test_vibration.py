@@ -977,3 +977,30 @@ def test_mounts_under_a_shafts_bearings_sag_what_the_shafts_own_bending_leaves(t
     # The speed that brings the mounts within 0.1 m: g·r²/ω² − M·g/ks = 0.1.
     least = _ratio_for(0.1, 0.05) * math.sqrt(g / (0.1 + 20.0 * g / shaft)) * 30.0 / math.pi
     assert f"a speed of {math.ceil(least)} rpm or more" in found["detail"]
+
+
+# --- the force a moving base's mounts pass ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_force_a_moving_bases_mounts_pass_is_given_beside_its_transmissibility(tmp_path, capsys, locale):
+    """An instrument on a shaken floor wrote transmitted_force = 0 beside TR = 0.857: the mounts pass
+    (k + i·c·ω)·(x − y), 190 N, which only a machine with an unbalance too was told of."""
+    mass, k, zeta, rpm, base = 50.0, 5.0e4, 0.2, 450.0, 0.002
+    code, _ = _run(tmp_path, f'mass = {mass}\nunbalance = 0.0\nstiffness = {k}\ndamping_ratio = {zeta}\nrpm = {rpm}\n'
+                             f'base_amplitude = {base}\n', capsys)
+    assert code == 0
+    omega = rpm * math.pi / 30.0
+    c = 2.0 * zeta * math.sqrt(k * mass)
+    # M·x″ + c·(x′ − y′) + k·(x − y) = 0 with y = Y·e^{iωt}: (k − M·ω² + i·c·ω)·X = (k + i·c·ω)·Y.
+    motion = (k + 1j * c * omega) * base / (k - mass * omega ** 2 + 1j * c * omega)
+    force = abs((k + 1j * c * omega) * (motion - base))
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]
+    assert document["base_excitation"]["transmitted_force"] == pytest.approx(force, rel=1e-10)
+    assert document["transmitted_force"] == 0.0  # the unbalance's alone, as documented
+    from graphplan.cli import main
+
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    found = re.search(r"TR·M·ω²·Y = [^=]+ = (\d+(?:[.,]\d+)?) [NН]", note)
+    assert found and abs(float(found.group(1).replace(",", ".")) - force) <= 0.5 * 10 ** (math.floor(math.log10(force)) - 4)

@@ -538,6 +538,9 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     if both is not None:
         moved = spec.unbalance + m * read_number(note, base_text)
         tr_checks.append((lambda t: t * w * w * moved, note.n(both.transmitted_force)))
+    if balanced:
+        shaken = m * read_number(note, base_text)
+        tr_checks.append((lambda t: t * w * w * shaken, note.n(response.base.transmitted_force)))
     tr = shown_operand(note, response.transmissibility, tr_checks)
     if not balanced:
         note.para(note.t("note_vib_amplitude", magnification=magnification, unbalance=unbalance, mass=mass,
@@ -553,6 +556,10 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         note.para(note.t("note_vib_base", base=base_text, tr=tr,
                          amplitude=note.n(base.amplitude), phase=note.n(math.degrees(base.phase), 4),
                          magnification=magnification, relative=note.n(base.relative)))
+        if balanced:
+            # With an unbalance too the two strokes' force is told together below; alone, the base's is the one.
+            note.para(note.t("note_vib_base_force_shaft" if spec.on_shaft else "note_vib_base_force", tr=tr,
+                             mass=mass, omega=omega, base=base_text, force=note.n(base.transmitted_force)))
     if both is not None:
         first, second = response.amplitude, response.base.amplitude
         note.para(note.t("note_vib_combined", first=note.n(first), first_phase=note.n(math.degrees(response.phase), 4),
