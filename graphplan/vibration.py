@@ -367,13 +367,19 @@ class NearResonance:
     def detail(self) -> str:
         """The warning in a line (English, as the command line prints it)."""
         off = abs(self.ratio - 1.0)
+        # r = 1 to the digits written is resonance itself: "within 0 of the natural frequency" said it in riddles.
+        at = f"{self.ratio:.6g}" == "1"
         if self.zeta > 0:
             # On a moving base X is not the magnification times m·e/M: the base's motion is in it.
             times = (f", the magnification {self.magnification:.4g}" if self.base_moves
                      else f" is {self.magnification:.4g} times m·e/M")
-            return (f"ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}) with little damping "
-                    f"(ζ = {self.zeta:.3g}): the amplitude X = {self.amplitude:.4g} m{times}; run the machine "
-                    "farther from resonance or damp it more")
+            where = ("ω at the natural frequency (r = 1): the machine runs at resonance" if at
+                     else f"ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g})")
+            return (f"{where} with little damping (ζ = {self.zeta:.3g}): the amplitude X = {self.amplitude:.4g} "
+                    f"m{times}; run the machine {'away from' if at else 'farther from'} resonance or damp it more")
+        if at:
+            return (f"no damping and ω at the natural frequency to six digits (r = 1): the machine runs at resonance, "
+                    f"and the amplitude X = {self.amplitude:.4g} m hangs on how near; give damping_ratio or damping")
         return (f"no damping and ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}): the amplitude "
                 f"X = {self.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
 

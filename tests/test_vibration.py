@@ -1004,3 +1004,37 @@ def test_the_force_a_moving_bases_mounts_pass_is_given_beside_its_transmissibili
     note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
     found = re.search(r"TR·M·ω²·Y = [^=]+ = (\d+(?:[.,]\d+)?) [NН]", note)
     assert found and abs(float(found.group(1).replace(",", ".")) - force) <= 0.5 * 10 ** (math.floor(math.log10(force)) - 4)
+
+
+# --- at resonance itself ----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_machine_at_resonance_is_said_to_run_at_it_not_within_nought_of_it(tmp_path, capsys, locale):
+    """ω = ωn with ζ = 0.002 read "within 0 % of the natural frequency … grows steeply nearer resonance"."""
+    code, told = _run(tmp_path, "mass = 100.0\nunbalance = 0.01\nstiffness = 1.0e6\ndamping_ratio = 0.002\n"
+                                "omega = 100.0\n", capsys)
+    assert code == 0
+    magnification = 1.0 / (2.0 * 0.002)  # r²/√((1 − r²)² + (2ζr)²) at r = 1
+    assert "ω at the natural frequency (r = 1): the machine runs at resonance" in told.out and "within 0" not in told.out
+    assert f"X = {0.01 / 100.0 * magnification:.4g} m is {magnification:.4g} times m·e/M" in told.out
+    from graphplan.cli import main
+
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    start = {"en": "Caution: the machine runs at resonance (r = 1)", "ru": "Внимание: машина работает в резонансе (r = 1)",
+             "zh": "注意：机器在共振状态下运行（r = 1）"}[locale]
+    (line,) = [line for line in note.splitlines() if line.startswith(start)]
+    assert f"{magnification:g}" in line and "0 %" not in line
+
+
+def test_an_undamped_machine_at_resonance_to_the_digits_shown_is_said_to_run_at_it(tmp_path, capsys):
+    """r = 1.000003: outside the 10⁻⁶ that is refused as resonance, but r = 1 to six digits on the console and to
+    five in the note."""
+    r = 1.000003
+    code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.01\nstiffness = 1.0e6\nomega = {100.0 * r!r}\n", capsys)
+    assert code == 0 and f"{r:.6g}" == "1"
+    assert "no damping and ω at the natural frequency to six digits (r = 1)" in told.out
+    assert f"X = {0.01 / 100.0 * r * r / abs(1 - r * r):.4g} m" in told.out
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert "Caution: there is no damping and the machine runs at resonance to the digits shown (r = 1)" in note

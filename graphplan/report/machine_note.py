@@ -663,11 +663,14 @@ def _resonance_caution(note: Writer, close: NearResonance) -> None:
     """What the command line warns of a speed near resonance, said where the amplitude is: the file outlives the
     console."""
     share = note.n(abs(close.ratio - 1.0) * 100.0, 2)
+    ratio = note.n(close.ratio)
+    # r = 1 as written is resonance itself, not "within 0 % of" it.
+    at = "_at" if ratio == note.n(1.0) else ""
     if close.zeta > 0:
-        note.para(note.t("note_vib_caution_resonance", share=share, ratio=note.n(close.ratio),
-                         zeta=note.n(close.zeta), magnification=note.n(close.magnification)))
+        note.para(note.t(f"note_vib_caution_resonance{at}", share=share, ratio=ratio, zeta=note.n(close.zeta),
+                         magnification=note.n(close.magnification)))
     else:
-        note.para(note.t("note_vib_caution_resonance_undamped", share=share, ratio=note.n(close.ratio)))
+        note.para(note.t(f"note_vib_caution_resonance{at}_undamped", share=share, ratio=ratio))
 
 
 def _sag_caution(note: Writer, sagging: MountsSag, ratio: str) -> None:
