@@ -497,9 +497,10 @@ def _read_scene(top: Table, source: str) -> Scene:
     project = _read_project(top.table("project", None))
 
     balancing = read_balancing(top.table("balancing")) if top.has("balancing") else None
-    vibration = read_vibration(top.table("vibration")) if top.has("vibration") else None
-    if not top.has("frame") and not top.has("driver") and (balancing is not None or vibration is not None
-                                                          or top.has("dynamics")):
+    linkage = top.has("frame") or top.has("driver")
+    # With a linkage, [vibration] is read after the driver, whose speed it takes where it gives none.
+    vibration = read_vibration(top.table("vibration")) if top.has("vibration") and not linkage else None
+    if not linkage and (balancing is not None or vibration is not None or top.has("dynamics")):
         # A rotor to balance, a machine on its springs, a flywheel from a load diagram: no linkage to read.
         for key in LINKAGE_KEYS:
             if top.has(key):
@@ -523,6 +524,8 @@ def _read_scene(top: Table, source: str) -> Scene:
         top.misspelt(*(name for name in ("frame", "driver", "balancing", "vibration", "dynamics") if not top.has(name)))
     frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
     driver = _read_driver(top.table("driver"))
+    if top.has("vibration"):
+        vibration = read_vibration(top.table("vibration"), driver_speed=_steady_crank_speed(driver))
     dynamics = None
     if top.has("dynamics"):
         # Imported here: the machine's dynamics are built on the analysis, which reads scenes.
@@ -590,6 +593,14 @@ def _refuse_on_frame(frame_link: int, links: dict[int, LinkSpec], loads_: tuple[
         if load.link == frame_link:
             raise SceneError(f"{load.where}.link", f"link {frame_link} is the frame, which does not move: a load on it "
                              "does no work and is taken by the frame itself", frame_link)
+
+
+def _steady_crank_speed(driver: Driver) -> float | None:
+    """|ω| (rad/s) of a crank turning round at a steady speed, the speed a machine's ``[vibration]`` turns at where it
+    gives none; None for a slider, a rocking crank or one speeding up, which give no one speed of turning."""
+    if driver.kind != "crank" or not driver.cyclic or driver.coordinate_acceleration != 0.0:
+        return None
+    return abs(driver.coordinate_speed)
 
 
 def _read_driver(table: Table | None) -> Driver:

@@ -323,6 +323,8 @@ class VibrationSpec:
     shaft: Shaft | None = None
     damping: float | None = None
     eccentricity: float | None = None
+    # Whether ω is the linkage's crank's, the table giving no speed of its own, for the note to say so.
+    driver_speed: bool = False
 
     @property
     def on_shaft(self) -> bool:
@@ -711,20 +713,22 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
 # --- the scene table -------------------------------------------------------------------------------
 
 
-def read_vibration(table: Table) -> VibrationSpec:
+def read_vibration(table: Table, driver_speed: float | None = None) -> VibrationSpec:
     """The ``[vibration]`` table of a scene as a :class:`VibrationSpec`, each bad key named by its path.
 
     ``mass``; ``unbalance`` (m·e) or ``unbalanced_mass`` and ``eccentricity``;
     ``stiffness`` or ``shaft = {modulus, second_moment or diameter, length,
     position, support}``; ``damping_ratio`` or ``damping`` (c; neither: 0);
-    ``omega`` or ``rpm``; ``transmissibility`` (wanted, optional);
-    ``base_amplitude`` (m, optional: the base moving at ω too).
+    ``omega`` or ``rpm`` (or neither where ``driver_speed``, a linkage's crank's
+    |ω| in rad/s, is given: the machine turns at it); ``transmissibility``
+    (wanted, optional); ``base_amplitude`` (m, optional: the base moving at ω too).
     """
     mass = table.number("mass", positive=True)
     unbalance, eccentricity = _unbalance(table, mass)
     shaft = _shaft(table)
     stiffness = table.number("stiffness", positive=True) if shaft is None else shaft.stiffness
-    omega = table.speed(positive=True)
+    given = table.has("omega") or table.has("rpm")
+    omega = table.speed(positive=True) if driver_speed is None else table.speed(driver_speed, positive=True)
     zeta = _damping(table, stiffness, mass)
     wanted = table.number("transmissibility", None, positive=True)
     base = table.number("base_amplitude", None, positive=True)
@@ -733,6 +737,10 @@ def read_vibration(table: Table) -> VibrationSpec:
                          wanted)
     table.done()
     if zeta == 0 and at_resonance(omega, stiffness, mass):
+        if not given:
+            raise SceneError(table.path, f"turns at the crank's speed, ω = {omega:.6g} rad/s, which is the natural "
+                                         "frequency, and there is no damping: the amplitude has no bound; give "
+                                         "damping, or another speed (omega or rpm)")
         raise SceneError(table.where("omega" if table.has("omega") else "rpm"),
                          "is the natural frequency and there is no damping: the amplitude has no bound")
     if unbalance == 0 and base is None:
@@ -740,7 +748,8 @@ def read_vibration(table: Table) -> VibrationSpec:
                          "is 0 and the base does not move (no base_amplitude): nothing excites the machine")
     return VibrationSpec(mass=mass, unbalance=unbalance, stiffness=stiffness, damping_ratio=zeta, omega=omega,
                          transmissibility=wanted, base_amplitude=base, shaft=shaft,
-                         damping=table.number("damping") if table.has("damping") else None, eccentricity=eccentricity)
+                         damping=table.number("damping") if table.has("damping") else None, eccentricity=eccentricity,
+                         driver_speed=not given)
 
 
 def _one_of(table: Table, first: str, second: str) -> str:

@@ -1038,3 +1038,48 @@ def test_an_undamped_machine_at_resonance_to_the_digits_shown_is_said_to_run_at_
     assert f"X = {0.01 / 100.0 * r * r / abs(1 - r * r):.4g} m" in told.out
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert "Caution: there is no damping and the machine runs at resonance to the digits shown (r = 1)" in note
+
+
+# --- a linkage's crank gives its speed ----------------------------------------------------------------------------
+
+_ENGINE_MOUNTS = "\n[vibration]\nmass = 60.0\nunbalance = 0.08\nstiffness = 4.0e5\ndamping_ratio = 0.08\n"
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_linkages_vibration_without_a_speed_turns_at_its_cranks(tmp_path, capsys, locale):
+    """The engine's crank turns at 1500 rpm; [vibration] with no rpm was refused (vibration.omega: is required)."""
+    from pathlib import Path
+
+    from graphplan.cli import main
+
+    scene = tmp_path / "engine.toml"
+    scene.write_text(Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8").replace(
+        'locale  = "en"', f'locale  = "{locale}"') + _ENGINE_MOUNTS, encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "vibration,note"]) == 0
+    omega = 1500.0 * 2.0 * math.pi / 60.0
+    r = omega / math.sqrt(4.0e5 / 60.0)
+    document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]
+    assert document["frequency_ratio"] == pytest.approx(r, rel=1e-10)
+    assert document["exciting_force"] == pytest.approx(0.08 * omega ** 2, rel=1e-10)
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    said = {"en": "The machine turns at the crank's speed n = 1500 rpm (ω = 157.08 rad/s)",
+            "ru": "Машина вращается с частотой вращения кривошипа n = 1500 об/мин (ω = 157,08 рад/с)",
+            "zh": "机器以曲柄的转速 n = 1500 r/min（ω = 157.08 rad/s）回转"}[locale]
+    assert said in note
+
+
+def test_a_linkage_whose_driver_has_no_steady_turning_speed_still_needs_one_in_vibration(tmp_path, capsys):
+    """A slider driver, a rocking crank, a crank speeding up: no one speed to take, and the refusal stays."""
+    from pathlib import Path
+
+    from graphplan.cli import main
+
+    engine = Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8")
+    for name, text in (("slider", Path("fixtures/slider_driven.toml").read_text(encoding="utf-8")),
+                       ("rocking", engine.replace("epsilon = 0.0", "epsilon = 0.0\nswing = [0.0, 120.0]")),
+                       ("speeding", engine.replace("epsilon = 0.0", "epsilon = 10.0"))):
+        scene = tmp_path / f"{name}.toml"
+        scene.write_text(text + _ENGINE_MOUNTS, encoding="utf-8")
+        assert main(["check", str(scene)]) == 2, name
+        assert "vibration.omega: is required but missing: give omega (rad/s) or rpm (rev/min)" in \
+            capsys.readouterr().err, name

@@ -508,6 +508,9 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     model = "note_vib_model_base" if balanced else "note_vib_model_shaft" if spec.on_shaft else "note_vib_model"
     note.para(note.t(model, mass=mass, stiffness=stiffness, zeta=zeta, unbalance=unbalance,
                      omega=omega, rpm=note.n(spec.omega / RPM)))
+    if spec.driver_speed:
+        # The table gave no speed: the reader is told whose it is, not left to think it typed.
+        note.para(note.t("note_vib_driver_speed", rpm=note.n(spec.omega / RPM), omega=omega))
     # The unbalance and a moving base excite one linear system: each is worked out alone, then the two added.
     both = response.combined
     base_text = "" if response.base is None else note.n(response.base.base_amplitude)
