@@ -109,10 +109,17 @@ def force_magnification(r: ArrayLike, zeta: ArrayLike) -> Scalar:
         return _out(1.0 / _denominator(ratio, damping))
 
 
+def _at_undamped_resonance(ratio: np.ndarray, damping: np.ndarray, lag: np.ndarray) -> np.ndarray:
+    """``lag`` with π/2 where r = 1 and ζ = 0: every ζ > 0 lags by π/2 there, and so does the limit ζ → 0, where
+    atan2(0, 0) = 0 would read as in phase."""
+    return np.where((ratio == 1.0) & (damping == 0.0), np.pi / 2.0, lag)
+
+
 def phase(r: ArrayLike, zeta: ArrayLike) -> Scalar:
-    """φ = atan2(2ζr, 1 − r²) (rad), in [0, π]: how far the motion lags behind the exciting force."""
+    """φ = atan2(2ζr, 1 − r²) (rad), in [0, π]: how far the motion lags behind the exciting force (π/2 at r = 1
+    for every ζ, the undamped limit included)."""
     ratio, damping = _ratio_and_damping(r, zeta)
-    return _out(np.arctan2(2.0 * damping * ratio, 1.0 - ratio * ratio))
+    return _out(_at_undamped_resonance(ratio, damping, np.arctan2(2.0 * damping * ratio, 1.0 - ratio * ratio)))
 
 
 def transmissibility(r: ArrayLike, zeta: ArrayLike) -> Scalar:
@@ -135,9 +142,11 @@ def displacement_transmissibility(r: ArrayLike, zeta: ArrayLike) -> Scalar:
 
 
 def displacement_transmissibility_phase(r: ArrayLike, zeta: ArrayLike) -> Scalar:
-    """The lag (rad) of the mass's motion behind its base's: atan2(2ζr³, 1 − r² + (2ζr)²), in [0, π]."""
+    """The lag (rad) of the mass's motion behind its base's: atan2(2ζr³, 1 − r² + (2ζr)²), in [0, π] (π/2 at r = 1
+    and ζ = 0, the limit of atan2(2ζ, 4ζ²) as ζ → 0)."""
     ratio, damping = _ratio_and_damping(r, zeta)
-    return _out(np.arctan2(2.0 * damping * ratio ** 3, 1.0 - ratio * ratio + (2.0 * damping * ratio) ** 2))
+    lag = np.arctan2(2.0 * damping * ratio ** 3, 1.0 - ratio * ratio + (2.0 * damping * ratio) ** 2)
+    return _out(_at_undamped_resonance(ratio, damping, lag))
 
 
 # --- the system's constants --------------------------------------------------------------------

@@ -1083,3 +1083,20 @@ def test_a_linkage_whose_driver_has_no_steady_turning_speed_still_needs_one_in_v
         assert main(["check", str(scene)]) == 2, name
         assert "vibration.omega: is required but missing: give omega (rad/s) or rpm (rev/min)" in \
             capsys.readouterr().err, name
+
+
+# --- the lag at resonance -------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("function", "at_resonance"), [
+    (phase, lambda zeta: math.pi / 2),  # tan φ = 2ζ/0
+    (displacement_transmissibility_phase, lambda zeta: math.atan(1.0 / (2.0 * zeta))),  # tan φ = 2ζ/(2ζ)²
+])
+def test_at_resonance_the_lag_is_a_quarter_turn_without_damping(function, at_resonance):
+    """phase(1, 0) was atan2(0, 0) = 0, "in phase", where every ζ > 0 lags by π/2 and so does the limit ζ → 0; a
+    moving base's lag at r = 1, atan(1/(2ζ)), tends to π/2 too."""
+    for zeta in (1e-300, 1e-9, 0.05, 2.0):
+        assert function(1.0, zeta) == pytest.approx(at_resonance(zeta), rel=1e-12)
+    assert function(1.0, 0.0) == math.pi / 2
+    lags = function(np.array([0.5, 1.0, 2.0]), np.array([0.0, 0.0, 0.0]))
+    assert list(lags) == [0.0, math.pi / 2, math.pi]
