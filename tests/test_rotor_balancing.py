@@ -23,6 +23,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from shapely.geometry import LineString
+from shapely.geometry import Point as ShapelyPoint
 
 from graphplan.errors import SceneError
 from graphplan.reader import Table
@@ -566,9 +568,13 @@ def test_a_correction_along_the_masses_is_drawn_beside_them_with_leaders_to_the_
         assert moved[0] == pytest.approx(moved[1], abs=1e-9)
         assert abs(moved[0]) == pytest.approx(drawing.BESIDE_MM, rel=1e-9)
         assert abs((moved[0] / across).imag) < 1e-9  # straight across, the correction parallel to itself
-        for share in shares:
-            assert min(_distance_to_line(end, correction.start, correction.end)
-                       for end in (share.start, share.end)) == pytest.approx(drawing.BESIDE_MM, abs=1e-6)
+        # A share on the chain stands BESIDE_MM from the correction; one folded back over the share before it (the
+        # couple's second) is set beside the chain on the other side, twice that.
+        apart = [min(_distance_to_line(end, correction.start, correction.end) for end in (share.start, share.end))
+                 for share in shares]
+        assert min(apart) == pytest.approx(drawing.BESIDE_MM, abs=1e-6)
+        assert all(value == pytest.approx(drawing.BESIDE_MM, abs=1e-6)
+                   or value == pytest.approx(2 * drawing.BESIDE_MM, abs=1e-6) for value in apart)
         leaders = [item for item in layers[f"plane-{plane.name}-reference"] if item.stroke == drawing._LEADER]
         joined = {(round(x, 6), round(y, 6)) for leader in leaders for x, y in leader.points}
         for point in (tip, pole, complex(*correction.start), complex(*correction.end)):
@@ -985,3 +991,84 @@ def test_planes_a_rotor_length_apart_are_not_cautioned_against():
     corrections = sum(abs(c) for c in _corrections_by_moments(_CLOSE, 0.0, 0.8))
     assert corrections < 10 * sum(m * r for m, r, _, _ in _CLOSE)
     assert [found.code for found in cautions(result)] == []
+
+
+# --- a share folded back over the one before it, and the correction's angle ------------------------------------
+
+
+def _segment_distance(point, start, end):
+    return LineString((start, end)).distance(ShapelyPoint(point))
+
+
+@pytest.mark.parametrize(("masses", "planes", "plane_index", "folded"), [
+    # The rotor starter's plane L: (m3r3)L, 6.7 mm long, turns back 16° off (m2r2)L and ended on its arrowhead.
+    ("starter", None, 0, "(m3r3)L"),
+    # The hunter's B13, plane L: (m3r3)L runs straight back down (m2r2)L, over it.
+    ([RotatingMass(20, 1, 0, 0), RotatingMass(30, 2, 90, 2), RotatingMass(10, 3, -270, 5)], (1, 4), 0, "(m3r3)L"),
+], ids=["starter", "collinear"])
+def test_a_share_folded_back_over_the_one_before_is_drawn_beside_it_with_leaders(masses, planes, plane_index, folded):
+    if masses == "starter":
+        import tomllib
+        from importlib import resources
+
+        data = tomllib.loads(resources.files("graphplan").joinpath("templates/rotor.toml").read_text(encoding="utf-8"))
+        result = balance(read(data["balancing"]))
+    else:
+        result = balance(BalancingSpec(masses, planes=planes, correction_radius=2))
+    plane = result.planes[plane_index]
+    scale = drawing.plane_scale(plane)
+    layers = {layer.name: layer.items for layer in drawing.layout(result)}
+    arrows = {item.key: item for item in layers[f"plane-{plane.name}-vectors"] if isinstance(item, Arrow)}
+    index = next(k for k, vector in enumerate(plane.vectors) if vector.name == folded)
+    share, before = plane.vectors[index], plane.vectors[index - 1]
+    # The share turns back within 25° of the one before it, and its true end lies within 2.5 mm of it.
+    turn = math.degrees(abs(cmath.phase(share.vector / -before.vector)))
+    assert turn < 25
+    first = arrows[f"plane-{plane.name}-{drawing._id(plane.vectors[0].name)}"]
+    origin = complex(*first.start) - plane.vectors[0].start / scale  # where the panel was moved to
+    true_start, true_end = share.start / scale + origin, share.end / scale + origin
+    prior = [before.start / scale + origin, before.end / scale + origin]
+    assert _segment_distance((true_end.real, true_end.imag), *((p.real, p.imag) for p in prior)) < 2.5
+    drawn = arrows[f"plane-{plane.name}-{drawing._id(folded)}"]
+    moved = [complex(*drawn.start) - true_start, complex(*drawn.end) - true_end]
+    # Drawn parallel to itself, its own length, BESIDE_MM across the share before it.
+    assert moved[0] == pytest.approx(moved[1], abs=1e-9) and abs(moved[0]) == pytest.approx(drawing.BESIDE_MM)
+    assert abs((moved[0] / (before.vector / abs(before.vector))).real) < 1e-9
+    assert drawn.length == pytest.approx(abs(share.vector) / scale, rel=1e-9)
+    # Its arrowhead clear of the share before it, and thin leaders from its true ends to the drawn ones.
+    assert _segment_distance(drawn.end, *((p.real, p.imag) for p in prior)) > 2.5
+    joined = {(round(x, 6), round(y, 6)) for item in layers[f"plane-{plane.name}-reference"]
+              if getattr(item, "stroke", None) == drawing._SHARE_LEADER for x, y in item.points}
+    for point in (true_start, true_end, complex(*drawn.start), complex(*drawn.end)):
+        assert (round(point.real, 6), round(point.imag, 6)) in joined
+    # Its name nearer its own arrow than any other side.
+    (label,) = [text for text in layers[f"plane-{plane.name}-labels"] if text.text == folded]
+    box = text_box(label)
+    own = box.distance(LineString((drawn.start, drawn.end)))
+    assert all(own < box.distance(LineString((arrow.start, arrow.end))) for key, arrow in arrows.items()
+               if arrow is not drawn)
+
+
+def test_the_correction_angle_is_drawn_at_the_radius_crossing_fewest_sides():
+    """The hunter's B9, plane L: θL's arc at 7 mm ran over (m1r1)L as well as the (m2r2)L it cannot miss."""
+    from graphplan.render.primitives import Polyline
+
+    result = balance(BalancingSpec([RotatingMass(2.0, 0.1, 10.0, 0.1), RotatingMass(1.0, 0.1, 200.0, 0.1)],
+                                   planes=(0.1, 0.5), correction_radius=0.1))
+    plane = result.planes[0]
+    layers = {layer.name: layer.items for layer in drawing.layout(result)}
+    sides = [LineString((item.start, item.end)) for item in layers["plane-L-vectors"] if isinstance(item, Arrow)
+             and item.stroke != drawing._CORRECTION]
+    arc = next(item for item in layers["plane-L-reference"] if isinstance(item, Polyline)
+               and item.stroke == drawing._ANGLE)
+    correction = next(item for item in layers["plane-L-vectors"] if isinstance(item, Arrow)
+                      and item.stroke == drawing._CORRECTION)
+    tail = complex(*correction.start)
+
+    def crossed(radius):  # the arc from the x-direction to θ about the correction's tail, as a polyline
+        sweep = math.radians(plane.angle_deg)
+        points = [tail + radius * cmath.exp(1j * sweep * k / 90) for k in range(91)]
+        return sum(LineString([(p.real, p.imag) for p in points]).intersects(side) for side in sides)
+
+    radius = abs(complex(*arc.points[0]) - tail)
+    assert crossed(radius) == min(crossed(r) for r in drawing.ANGLE_RADII_MM) < crossed(7.0)

@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
+from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
 
 from ..locale import Count, strings
@@ -57,7 +58,6 @@ TITLE_GAP_MM = 8.0
 MOST_TITLE_LINES = 2
 # The dashed x-direction at the correction's tail, and the arc of its angle (mm).
 REFERENCE_MM = 16.0
-ANGLE_RADIUS_MM = 7.0
 NAME_SIZE = 3.2
 # A correction that would lie along a mass vector (one mass, masses at one angle, a couple: the polygon a straight
 # line) would hide it: it is drawn this far beside the chain, parallel to where it closes the polygon, with thin
@@ -65,12 +65,22 @@ NAME_SIZE = 3.2
 BESIDE_MM = 6.0
 # Closer than this to the correction's line, over a common stretch longer than this, a mass vector is hidden (mm).
 ALONG_MM = 0.8
+# A share that turns back along the one before it, within this angle of straight back, and ends within
+# FOLDED_ONTO_MM of it (an arrowhead's length and width), runs over it from their common corner: its arrowhead sat on
+# the other's and its name by the other's head.  It is drawn BESIDE_MM beside the chain, parallel to where it lies,
+# with thin leaders from its true ends, as the correction along the masses is.  (A long share turning back at an
+# acute corner stands clear of the other but near the corner, and stays where it is.)
+FOLDED_BACK_DEG = 25.0
+FOLDED_ONTO_MM = 2.5
+# The radii tried for the correction's angle θ (mm), the first preferred: the one whose arc crosses the fewest sides.
+ANGLE_RADII_MM = (7.0, 5.5, 4.5, 9.0, 11.0)
 
 _SHARE = Stroke(0.5)
 _CORRECTION = Stroke(0.8, "#a83a1f")
 _REFERENCE = Stroke(0.25, "#333333", (2.5, 1.5))
 _ANGLE = Stroke(0.3, "#a83a1f")
 _LEADER = Stroke(0.18, "#a83a1f", (1.0, 1.0))
+_SHARE_LEADER = Stroke(0.18, "#333333", (1.0, 1.0))
 
 def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> list[Layer]:
     """The layers of the balancing drawing in paper millimetres (y up): the polygons left to right, captions under,
@@ -140,21 +150,26 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
         return value / scale
 
     beside = _beside(plane, mm)
+    folded = _folded_back(plane, mm)
     arrows: list[Primitive] = []
     named: list[tuple[str, Arrow]] = []
-    for vector in plane.vectors:
+    leaders: list[Primitive] = []
+    for index, vector in enumerate(plane.vectors):
         if abs(mm(vector.vector)) < ZERO_MM:
             continue
-        shift = beside if vector.role == "correction" else 0j
+        shift = beside if vector.role == "correction" else folded.get(index, 0j)
         stroke = _CORRECTION if vector.role == "correction" else _SHARE
         arrow = Arrow(_xy(mm(vector.start) + shift), _xy(mm(vector.end) + shift), stroke,
                       3.5 if vector.role == "correction" else 3.0, f"{key}-{_id(vector.name)}")
         arrows.append(arrow)
         named.append((vector.name, arrow))
-    leaders: list[Primitive] = [Polyline((_xy(end), _xy(end + beside)), _LEADER)
-                                for end in (mm(plane.vectors[-1].start), mm(plane.vectors[-1].end))] if beside else []
+        if shift:
+            leaders += [Polyline((_xy(end), _xy(end + shift)), _LEADER if vector.role == "correction" else _SHARE_LEADER)
+                        for end in (mm(vector.start), mm(vector.end))]
     pole = [dot_marker(_xy(mm(plane.vertices[0])), 0.7)]
-    angle_marks = _angle_marks(plane, mm(plane.correction), mm(plane.vectors[-1].start) + beside)
+    tail = mm(plane.vectors[-1].start) + beside
+    radius = _angle_radius(plane, tail, arrows + leaders)
+    angle_marks = _angle_marks(plane, mm(plane.correction), tail, radius)
     figure = arrows + leaders + pole + angle_marks
     middle = sum((mm(vertex) for vertex in plane.vertices[:-1]), 0j) / max(len(plane.vertices) - 1, 1)
     anchors = []
@@ -166,9 +181,8 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
         anchors.append(Anchor(_xy(centre), name, NAME_SIZE, math.atan2(across.imag, across.real),
                               arrow.stroke.colour))
     if angle_marks and plane.angle_deg is not None:
-        tail = mm(plane.vectors[-1].start) + beside
         half = math.radians(plane.angle_deg) / 2
-        at = tail + (ANGLE_RADIUS_MM + 1.0) * complex(math.cos(half), math.sin(half))
+        at = tail + (radius + 1.0) * complex(math.cos(half), math.sin(half))
         anchors.append(Anchor(_xy(at), f"θ{plane.name}", NAME_SIZE - 0.4, half, _ANGLE.colour))
     labels = _lettered(anchors, figure, [*angle_marks, *arrows])
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
@@ -201,14 +215,59 @@ def _beside(plane: CorrectionPlane, mm) -> complex:
     return along * 1j * (BESIDE_MM if offside < -ALONG_MM else -BESIDE_MM)
 
 
-def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex) -> list[Primitive]:
+def _folded_back(plane: CorrectionPlane, mm) -> dict[int, complex]:
+    """Where each share that turns back onto the share before it (within :data:`FOLDED_BACK_DEG` of straight back,
+    its end within :data:`FOLDED_ONTO_MM` of it) is drawn from where it lies (mm), by its index among the plane's
+    vectors: :data:`BESIDE_MM` across the share before, to the side its own end already leans to (where it lies on
+    that share's line, away from the chain's other corners)."""
+    shifts: dict[int, complex] = {}
+    before: complex | None = None
+    corners = [mm(vertex) for vertex in plane.vertices]
+    for index, vector in enumerate(plane.vectors):
+        if vector.role != "mass" or abs(mm(vector.vector)) < ZERO_MM:
+            continue
+        side = mm(vector.vector)
+        if before is not None:
+            back = -before / abs(before)
+            turned = side / back  # the share in the frame of the one before, turned back: 0° is straight back
+            # How far its end stands from the share before, which runs from 0 to |before| along ``back`` here.
+            reach = min(max(turned.real, 0.0), abs(before))
+            onto = abs(turned - reach)
+            if abs(math.degrees(math.atan2(turned.imag, turned.real))) < FOLDED_BACK_DEG and onto < FOLDED_ONTO_MM:
+                across = turned.imag
+                if abs(across) < ALONG_MM:
+                    start = mm(vector.start)
+                    across = -sum(((corner - start) / back).imag for corner in corners)
+                shifts[index] = back * 1j * math.copysign(BESIDE_MM, across if across else -1.0)
+        before = side
+    return shifts
+
+
+def _angle_radius(plane: CorrectionPlane, tail: complex, drawn: Sequence[Primitive]) -> float:
+    """The radius (mm) of the correction's angle arc, of :data:`ANGLE_RADII_MM`, that crosses the fewest sides drawn:
+    the arc at 7 mm ran through a share passing near the correction's tail."""
+    if plane.angle_deg is None:
+        return ANGLE_RADII_MM[0]
+    lines = obstacles_of(drawn)
+    sweep = math.radians(plane.angle_deg)
+
+    def crossings(radius: float) -> int:
+        steps = max(8, int(sweep / math.radians(5)))
+        arc = LineString([_xy(tail + radius * complex(math.cos(sweep * k / steps), math.sin(sweep * k / steps)))
+                          for k in range(steps + 1)])
+        return sum(arc.intersects(line) for line in lines)
+
+    return min(ANGLE_RADII_MM, key=crossings)
+
+
+def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex, radius: float) -> list[Primitive]:
     """The dashed x-direction at the correction's tail and the arc from it to the correction, ccw."""
     if plane.angle_deg is None or abs(correction) < ZERO_MM:
         return []
     marks: list[Primitive] = [Polyline((_xy(tail), _xy(tail + REFERENCE_MM)), _REFERENCE)]
     sweep = math.radians(plane.angle_deg)
     if sweep > math.radians(2.0):
-        marks.extend(curved_arrow(_xy(tail), ANGLE_RADIUS_MM, 0.0, sweep, _ANGLE, head=2.0))
+        marks.extend(curved_arrow(_xy(tail), radius, 0.0, sweep, _ANGLE, head=2.0))
     return marks
 
 
