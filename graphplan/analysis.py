@@ -34,7 +34,7 @@ from .positions import PositionSet, make_positions
 from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import OTHER_SENSE, Scene
-from .statics import Equilibrium, equilibrium, pairs, turned_round
+from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
 from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
@@ -124,6 +124,12 @@ class Analysis:
         ``strokes``; None where the working link has no extreme positions (or the scene names none)."""
         turns = self.positions.stroke_turns(self.mechanism.driver.sense)
         return None if turns is None else Strokes(*turns)
+
+    @property
+    def balancing_scale(self) -> float:
+        """The largest balancing load without friction over the positions: what its rounding noise (an extreme
+        position's, where the loads take no power) is judged against for η (:func:`statics.efficiency`)."""
+        return 0.0 if self.equilibrium is None else balancing_scale(self.equilibrium.balancing)
 
     @property
     def drawn_velocities(self) -> tuple[VelocityPosition, ...]:
@@ -240,7 +246,8 @@ def _turned_round(mechanism: Mechanism, ideal: Equilibrium | None,
         f"the loads would drive the mechanism here ({name}0 = {ideal.balancing[index]:.6g} {unit}), but the friction "
         f"in the pairs holds them: the driver must drive it ({name} = {with_friction.balancing[index]:.6g} {unit}); "
         "the mechanism locks itself against its loads driving it (η′ ≤ 0)"))
-        for index in np.flatnonzero(moving & turned_round(mechanism, ideal.balancing, with_friction.balancing)))
+        for index in np.flatnonzero(moving & turned_round(mechanism, ideal.balancing, with_friction.balancing,
+                                                          balancing_scale(ideal.balancing))))
 
 
 def _idle_throughout(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:

@@ -261,42 +261,58 @@ def balancing_by_power(mechanism: Mechanism, state: State, loads: tuple[Load, ..
 # A balancing load without friction this small beside the one with it is rounding of a zero (an extreme
 # position, where the loads take no power): η is then 0, all the driver's power going into friction.
 _ROUNDING_OF_ZERO = 1e-9
+# Where the pairs rub no harder there (a slide's normal reaction is 0 at a slider-crank's dead centre, or f = 0),
+# Mb is the same rounding as Mb0, and beside it Mb0 is no smaller: it is told from the cycle's largest Mb0
+# instead, as results.json writes a value under 10⁻¹² of its quantity's largest as 0.
+_CYCLE_NOISE = 1e-12
 
 
-def efficiency(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar) -> Scalar:
+def balancing_scale(ideal: Scalar) -> float:
+    """The largest balancing load without friction over the positions (finite ones): the scale ``scale`` of
+    :func:`efficiency`, :func:`turned_round` and :func:`rounded_zero` judges rounding against."""
+    magnitudes = np.abs(np.asarray(ideal, dtype=float))
+    finite = magnitudes[np.isfinite(magnitudes)]
+    return float(finite.max()) if finite.size else 0.0
+
+
+def efficiency(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar, scale: float = 0.0) -> Scalar:
     """The instantaneous efficiency from the balancing load without and with friction.
 
     η = Mb0/Mb where the driver delivers power (Mb0·ω1 > 0); where the load
     drives the driver the power flows back, and η = Mb/Mb0.  Below 1 with
-    friction, 1 without, 0 where the loads take no power.  Where friction
+    friction, 1 without, 0 where the loads take no power (Mb0 rounding of a zero beside Mb, or beside
+    ``scale``, the cycle's largest Mb0: :func:`balancing_scale`).  Where friction
     turns the flow round (:func:`turned_round`) no power is passed on in
     either sense, and η is not defined (NaN).
     """
     ideal, rubbing = np.asarray(ideal, dtype=float), np.asarray(rubbing, dtype=float)
-    idle = _idle(ideal, rubbing)
+    idle = _idle(ideal, rubbing, scale)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         ratio = np.where(delivers_power(mechanism, ideal), ideal / rubbing, rubbing / ideal)
         return np.where(idle, 0.0, np.where(ideal * rubbing > 0, ratio, np.nan))
 
 
-def turned_round(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar) -> np.ndarray:
+def turned_round(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar, scale: float = 0.0) -> np.ndarray:
     """Where the loads would drive the driver back (η = Mb/Mb0) but with friction the driver must drive: the
-    mechanism locks itself against its loads driving it (η′ ≤ 0), and the driver pushes it through."""
+    mechanism locks itself against its loads driving it (η′ ≤ 0), and the driver pushes it through.  An Mb0
+    that is rounding of a zero (``scale`` as :func:`efficiency` takes it) drives nothing."""
     ideal, rubbing = np.asarray(ideal, dtype=float), np.asarray(rubbing, dtype=float)
     speed = mechanism.driver.coordinate_speed
     with np.errstate(invalid="ignore"):
-        return (~delivers_power(mechanism, ideal) & ~_idle(ideal, rubbing) & (rubbing * speed >= 0)
+        return (~delivers_power(mechanism, ideal) & ~_idle(ideal, rubbing, scale) & (rubbing * speed >= 0)
                 & np.isfinite(ideal) & np.isfinite(rubbing))
 
 
-def rounded_zero(ideal: Scalar, rubbing: Scalar) -> Scalar:
-    """The balancing load without friction, 0 where it is rounding of a zero beside the one with friction."""
+def rounded_zero(ideal: Scalar, rubbing: Scalar, scale: float = 0.0) -> Scalar:
+    """The balancing load without friction, 0 where it is rounding of a zero beside the one with friction or
+    beside ``scale`` (as :func:`efficiency` takes it)."""
     ideal = np.asarray(ideal, dtype=float)
-    return np.where(_idle(ideal, np.asarray(rubbing, dtype=float)), 0.0, ideal)
+    return np.where(_idle(ideal, np.asarray(rubbing, dtype=float), scale), 0.0, ideal)
 
 
-def _idle(ideal: np.ndarray, rubbing: np.ndarray) -> np.ndarray:
-    return np.abs(ideal) <= _ROUNDING_OF_ZERO * np.abs(rubbing)
+def _idle(ideal: np.ndarray, rubbing: np.ndarray, scale: float) -> np.ndarray:
+    size = np.abs(ideal)
+    return (size <= _ROUNDING_OF_ZERO * np.abs(rubbing)) | (size <= _CYCLE_NOISE * scale)
 
 
 def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:
@@ -311,5 +327,5 @@ def _full(value: Vector | Scalar, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=complex), (count,))
 
 
-__all__ = ["SINGULAR_CONDITION", "Equilibrium", "Pair", "Reaction", "balancing_by_power", "delivers_power", "efficiency",
-           "equilibrium", "pairs", "rounded_zero", "turned_round"]
+__all__ = ["SINGULAR_CONDITION", "Equilibrium", "Pair", "Reaction", "balancing_by_power", "balancing_scale",
+           "delivers_power", "efficiency", "equilibrium", "pairs", "rounded_zero", "turned_round"]

@@ -58,18 +58,22 @@ def locked_between(mechanism: Mechanism, text: Mapping[str, str], numbers, span,
 
 
 def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float, load: float, *,
-                     write: Callable[[float], str], iterations: int, written_efficiency: str) -> str:
+                     write: Callable[[float], str], iterations: int, written_efficiency: str,
+                     scale: float = 0.0) -> str:
     """The balancing load with friction (``load``) after its repetitions, the one without (``ideal``), and η,
-    each number written by ``write``.
+    each number written by ``write``; ``ideal`` is rounding of a zero beside ``scale`` as
+    :func:`graphplan.statics.efficiency` takes it.
 
     η is named by the ratio it is: Mb0/Mb where the driver delivers power,
     Mb/Mb0 where the loads drive it back.  Where friction turns that flow
     round, the sentence says so instead of giving an η.
     """
     name, unit = balancing_symbol(mechanism, text)
-    ideal = float(rounded_zero(ideal, load))
+    ideal = float(rounded_zero(ideal, load, scale))
     values = {"name": name, "value": write(load), "unit": unit, "iterations": iterations, "ideal": write(ideal)}
-    if turned_round(mechanism, ideal, load):
+    if turned_round(mechanism, ideal, load, scale):
         return text["forces_turned_round"].format(**values)
-    ratio = f"{name}0/{name}" if delivers_power(mechanism, ideal) else f"{name}/{name}0"
+    # Where the loads take no power η = 0 is Mb0/Mb: the driver's power all goes into friction (Mb/Mb0 would
+    # divide by 0).
+    ratio = f"{name}0/{name}" if ideal == 0 or delivers_power(mechanism, ideal) else f"{name}/{name}0"
     return text["forces_with_friction"].format(**values, ratio=ratio, efficiency=written_efficiency)

@@ -18,7 +18,7 @@ from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_pla
 from ..positions import working_speed
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
 from ..scene import Working
-from ..statics import efficiency
+from ..statics import efficiency, rounded_zero
 from ..wording import raised
 from . import forces as force_layout
 from . import plans, positions, velocity_plans
@@ -441,7 +441,9 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
             raise ValueError(f"position {plan_position.number} has no settled force analysis with friction")
         forces, lever = rubbing, plan_position.lever_with_friction
         title = "tb_sheet_forces_friction_position"
-        friction, ideal = analysis.friction, plan_position.forces.balancing
+        # Rounded here, so that the caption's Mb0 and η judge an extreme position's noise as the tables do.
+        friction = analysis.friction
+        ideal = float(rounded_zero(plan_position.forces.balancing, rubbing.balancing, analysis.balancing_scale))
         eta = float(efficiency(analysis.mechanism, ideal, rubbing.balancing))
     return force_layout.ForceSheet(
         mechanism=analysis.mechanism, motion=analysis.motion, index=plan_position.index,

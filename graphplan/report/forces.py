@@ -179,7 +179,7 @@ def cycle_rows(analysis: Analysis) -> list[tuple[int, float, float | None, float
             continue
         locked = bool(rubbing.locked[i])
         rubbed = float(rubbing.balancing[i])
-        eta = float(efficiency(analysis.mechanism, exact.balancing[i], rubbing.balancing[i]))
+        eta = float(efficiency(analysis.mechanism, exact.balancing[i], rubbing.balancing[i], analysis.balancing_scale))
         rows.append((int(position), ideal, None if locked else rubbed, None if locked else eta, locked))
     return rows
 
@@ -251,9 +251,10 @@ def friction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
     rubbing = plan.with_friction
     if rubbing.locked:
         return [text["forces_locked"]]
-    eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing)
+    scale = analysis.balancing_scale
+    eta = efficiency(analysis.mechanism, plan.forces.balancing, rubbing.balancing, scale)
     return [wording.friction_summary(
-        analysis.mechanism, text, plan.forces.balancing, rubbing.balancing,
+        analysis.mechanism, text, plan.forces.balancing, rubbing.balancing, scale=scale,
         write=lambda value: number(value, 6, mark), iterations=rubbing.iterations,
         written_efficiency=number(float(eta), 4, mark))]
 
@@ -374,10 +375,10 @@ def cycle_notes(analysis: Analysis) -> list[str]:
         return []
     text = strings(analysis.scene.locale)
     name, _ = balancing_symbol(analysis)
-    ideal = rounded_zero(exact.balancing, rubbing.balancing)
+    ideal = rounded_zero(exact.balancing, rubbing.balancing, analysis.balancing_scale)
     with np.errstate(invalid="ignore"):
         moving = ~rubbing.locked & np.isfinite(ideal) & np.isfinite(rubbing.balancing)
-        held = moving & turned_round(analysis.mechanism, ideal, rubbing.balancing)
+        held = moving & turned_round(analysis.mechanism, ideal, rubbing.balancing, analysis.balancing_scale)
         driven = moving & ~held & ~delivers_power(analysis.mechanism, ideal) & (ideal != 0)
     numbers = analysis.positions.numbers
     notes = []

@@ -110,7 +110,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
         if i in planned:
             entry["plans"] = _plans(planned[i])
             if planned[i].forces is not None:
-                entry["forces"] = _forces(planned[i], mechanism, analysis.friction)
+                entry["forces"] = _forces(planned[i], mechanism, analysis.friction, analysis.balancing_scale)
         if balance is not None:
             entry["equilibrium"] = _equilibrium(balance, i, driver.kind, balance_noise)
             if rubbing is not None:
@@ -119,7 +119,7 @@ def results(analysis: Analysis) -> dict[str, Any]:
                     "loads": None if rubbing.locked[i] or rubbing.singular[i] else _friction_loads(
                         analysis.friction, rubbing_loads, rubbing_noise["reactions"], i),
                     "efficiency": None if rubbing.locked[i] else number(
-                        efficiency(mechanism, balance.balancing[i], rubbing.balancing[i])),
+                        efficiency(mechanism, balance.balancing[i], rubbing.balancing[i], analysis.balancing_scale)),
                     "iterations": int(rubbing.iterations[i]),
                     "self_locking": bool(rubbing.locked[i]),
                 }
@@ -237,7 +237,7 @@ def _balancing_key(driver_kind: str) -> str:
     return "balancing_moment" if driver_kind == "crank" else "balancing_force"
 
 
-def _forces(plan: PlanPosition, mechanism, friction: tuple[FrictionPair, ...]) -> dict[str, Any]:
+def _forces(plan: PlanPosition, mechanism, friction: tuple[FrictionPair, ...], scale: float) -> dict[str, Any]:
     """``forces`` of one plan position: the polygons' reactions and balancing load, the lever's, μF;
     with friction in the pairs the same with friction, the efficiency and the self-locking flag."""
     forces, lever = plan.forces, plan.lever
@@ -261,7 +261,8 @@ def _forces(plan: PlanPosition, mechanism, friction: tuple[FrictionPair, ...]) -
         acting = {load.name: load for load in plan.friction_loads}
         result["friction"] = {
             key: None if rubbing.locked else number(rubbing.balancing),
-            "efficiency": None if rubbing.locked else number(efficiency(mechanism, forces.balancing, rubbing.balancing)),
+            "efficiency": None if rubbing.locked else number(
+                efficiency(mechanism, forces.balancing, rubbing.balancing, scale)),
             "iterations": rubbing.iterations,
             "self_locking": rubbing.locked,
             "reactions": None if rubbing.locked else {
