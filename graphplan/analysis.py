@@ -18,14 +18,21 @@ from .cycle_work import CycleWork, cycle_work
 from .errors import SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
-from .joint_friction import FrictionPair, check_journals, friction_loads, friction_pairs
+from .joint_friction import (
+    FrictionPair,
+    check_journals,
+    described,
+    friction_loads,
+    friction_pairs,
+    unusual_coefficients,
+)
 from .kinematics import at
 from .length_units import lengths_in_millimetres
 from .lever import Lever, lever
 from .load_strokes import diagrams_in_travel, strokes_of_other_links
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
-from .locking import LockedSpan, locked_between
+from .locking import LockedSpan, locked_between, pairs_that_lock
 from .mechanism import Mechanism, build
 from .misreadings import misread
 from .motion import Motion, PositionWarning, solve, toggles_between
@@ -176,6 +183,7 @@ def analyse(scene: Scene) -> Analysis:
     # is refused all the same, not only once masses are given.
     friction = friction_pairs(scene.friction, pairs(mechanism, motion.slides))
     check_journals(friction, mechanism, motion)
+    unusual = unusual_coefficients(friction)
     if acting is None:
         friction = ()
     loads, balance, with_friction = (), None, None
@@ -198,9 +206,10 @@ def analyse(scene: Scene) -> Analysis:
     in_order = tuple(sorted(lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + strokes_of_other_links(mechanism, positions)
-                            + diagrams_in_travel(mechanism, positions)
-                            + _self_locking(with_friction) + _turned_round(mechanism, balance, with_friction)
-                            + _locked_between(mechanism, positions, locked_spans),
+                            + diagrams_in_travel(mechanism, positions) + unusual
+                            + _self_locking(mechanism, positions, friction, with_friction)
+                            + _turned_round(mechanism, balance, with_friction)
+                            + _locked_between(mechanism, positions, friction, locked_spans),
                             key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
@@ -209,28 +218,42 @@ def analyse(scene: Scene) -> Analysis:
 
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
 # the console gives them without one.
-SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "stroke-of-another-link", "diagram-in-travel"})
+SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "stroke-of-another-link", "diagram-in-travel",
+                                 "high-friction"})
 
 
-def _self_locking(with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:
+def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
+                  with_friction: Equilibrium | None) -> tuple[PositionWarning, ...]:
     """A warning at each position where the pairs' friction locks the mechanism: no driving load moves it
-    (its balancing load and reactions are then null, and it has no force sheet with friction)."""
+    (its balancing load and reactions are then null, and it has no force sheet with friction).  It names the
+    pair whose friction locks it, the one to change."""
     if with_friction is None:
         return ()
-    return tuple(PositionWarning(int(index), "self-locking", "the friction in the pairs locks the mechanism here: "
-                                 "no driving load, however large, moves it")
-                 for index in np.flatnonzero(with_friction.locked))
+    locked = np.flatnonzero(with_friction.locked)
+    culprits = pairs_that_lock(mechanism, positions, friction, positions.values[locked])
+    return tuple(PositionWarning(int(index), "self-locking", f"{_locking_friction(friction, alone)} locks the "
+                                 "mechanism here: no driving load, however large, moves it")
+                 for index, alone in zip(locked, culprits, strict=True))
 
 
-def _locked_between(mechanism: Mechanism, positions: PositionSet,
+def _locking_friction(friction: tuple[FrictionPair, ...], alone: tuple[FrictionPair, ...]) -> str:
+    """Whose friction locks: the pairs that lock alone, or all of them together where none does."""
+    if not alone:
+        return f"the friction in the pairs together ({'; '.join(described(pair) for pair in friction)}; none alone)"
+    return "the friction in " + " and in ".join(described(pair) for pair in alone) + (
+        ", each alone," if len(alone) > 1 else "")
+
+
+def _locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
                     spans: tuple[LockedSpan, ...]) -> tuple[PositionWarning, ...]:
     """A warning at the position before each stretch where the friction locks the mechanism between two positions
     that move: their plans and force polygons do not show it."""
     numbers, driver = positions.numbers, mechanism.driver
     return tuple(PositionWarning(span.after, "self-locking-between", (
-        f"between positions {numbers[span.after]} and {numbers[(span.after + 1) % len(numbers)]} the friction in "
-        f"the pairs locks the mechanism, from {driver.describe(span.start)} to {driver.describe(span.end)}: no "
-        "driving load, however large, moves it there, though it moves at both positions"))
+        f"between positions {numbers[span.after]} and {numbers[(span.after + 1) % len(numbers)]} "
+        f"{_locking_friction(friction, span.pairs)} locks the mechanism, from {driver.describe(span.start)} to "
+        f"{driver.describe(span.end)}: no driving load, however large, moves it there, though it moves at both "
+        "positions"))
         for span in spans)
 
 

@@ -32,7 +32,7 @@ from .kinematics import Scalar, Vector
 from .loads import at_rest, sense_of_motion
 from .lookalikes import lookalike_hint
 from .mechanism import Mechanism
-from .motion import Motion
+from .motion import Motion, PositionWarning
 from .scene import FrictionSpec
 
 
@@ -121,22 +121,62 @@ def check_journals(friction: tuple[FrictionPair, ...], mechanism: Mechanism, mot
     """Refuse a turning pair's journal ``radius`` larger than every link the pair joins (a radius in millimetres
     typed as metres): no pin is wider than the links it is on, and its friction circle ρ = f·r would change every
     reaction, the efficiency and the drawings' scale.  A journal wider than one of its links, an eccentric's sheave
-    on its short crank, is built; one wider than all of them is not."""
+    on its short crank, is built; one wider than all of them is not.
+
+    The friction circle is refused by the same rule: ρ ≤ r while f ≤ 1, so one wider than every link the pair
+    joins comes of an f no pair of materials has (a percentage typed for it), and locked a slider-crank at every
+    position, each warned of alike, with nothing left to show of the friction."""
     for pair in friction:
         if pair.sliding:
             continue
         spans = [span for link in (pair.source, pair.target)
                  if (span := _longest_span(mechanism, motion, link)) is not None]
-        if not spans or pair.spec.radius <= max(length for _, length, _ in spans):
+        if not spans:
             continue
-        radius = pair.spec.radius
+        longest = max(length for _, length, _ in spans)
+        if pair.spec.radius <= longest and pair.radius <= longest:
+            continue
+        radius, f = pair.spec.radius, pair.spec.f
         joined = "; ".join(f"{'the frame' if link == mechanism.scene.frame_link else f'link {link}'} {between}: "
                            f"{length:.4g} m" for link, length, between in spans)
-        raise SceneError(f"{pair.spec.where}.radius", (
-            f"a journal of radius {radius:g} m at {pair.joint} is larger than the links it joins ({joined}): a pin "
-            f"cannot be wider than the links it is on, and its friction circle ρ = {pair.radius:.4g} m would change "
-            f"every reaction and the efficiency; the radius is in metres (in millimetres? {radius:g} mm is "
-            f"{radius / 1000.0:g} m)"), radius)
+        if radius > longest:
+            raise SceneError(f"{pair.spec.where}.radius", (
+                f"a journal of radius {radius:g} m at {pair.joint} is larger than the links it joins ({joined}): a "
+                f"pin cannot be wider than the links it is on, and its friction circle ρ = {pair.radius:.4g} m would "
+                f"change every reaction and the efficiency; the radius is in metres (in millimetres? {radius:g} mm "
+                f"is {radius / 1000.0:g} m)"), radius)
+        raise SceneError(f"{pair.spec.where}.f", (
+            f"makes the friction circle at {pair.joint} ρ = f·r = {f:g} × {radius:g} m = {pair.radius:.4g} m, larger "
+            f"than the links the journal joins ({joined}): no pair of materials rubs so hard (f is about 0.1 in a "
+            f"journal, rarely above 1 in any pair), and the reactions would pass farther from the pin than the "
+            f"links reach; f is a coefficient, not a percentage ({f:g} % is f = {f / 100.0:g})"), f)
+
+
+# Dry steel on steel rubs at 0.15 to 0.8, lubricated pairs at about 0.1: an f above this is a slip (a percentage)
+# more often than a material, though clean like metals and rubber do reach it.
+UNUSUAL_F = 1.0
+
+
+def unusual_coefficients(friction: tuple[FrictionPair, ...]) -> tuple[PositionWarning, ...]:
+    """A ``high-friction`` warning, at the first position, naming each entry whose f is above :data:`UNUSUAL_F`.
+
+    The f given, not a V-guide's f′ = f/sin θ, which is above f by the groove's wedging alone."""
+    told = [f"{pair.spec.where}.f = {pair.spec.f:g} (at {pair.joint})" for pair in friction if pair.spec.f > UNUSUAL_F]
+    if not told:
+        return ()
+    first = next(pair.spec.f for pair in friction if pair.spec.f > UNUSUAL_F)
+    return (PositionWarning(0, "high-friction", "; ".join(told) + ": few pairs of materials rub with an f above 1 "
+                            "(dry steel on steel 0.15 to 0.8, lubricated pairs about 0.1): is it a percentage? "
+                            f"({first:g} % is f = {first / 100.0:g})"),)
+
+
+def described(pair: FrictionPair) -> str:
+    """A pair with friction as a warning names it: ``the slide at B (links 4–1, f = 0.15)``, ``the journal at A
+    (links 2–3, ρ = 0.0015 m)``, a V-guide's by its f′."""
+    if pair.sliding:
+        coefficient = f"f′ = {pair.coefficient:.4g}" if pair.in_vee else f"f = {pair.coefficient:.4g}"
+        return f"the slide at {pair.joint} (links {pair.source}–{pair.target}, {coefficient})"
+    return f"the journal at {pair.joint} (links {pair.source}–{pair.target}, ρ = {pair.radius:.4g} m)"
 
 
 def _longest_span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[int, float, str] | None:
@@ -189,4 +229,13 @@ def turning_sense(pair: FrictionPair, state) -> Scalar:
     return sense_of_motion(target.omega - source.omega, target.epsilon - source.epsilon, state.turning_scale)
 
 
-__all__ = ["FrictionPair", "friction_loads", "friction_pairs", "pair_name", "turning_sense"]
+__all__ = [
+    "UNUSUAL_F",
+    "FrictionPair",
+    "described",
+    "friction_loads",
+    "friction_pairs",
+    "pair_name",
+    "turning_sense",
+    "unusual_coefficients",
+]

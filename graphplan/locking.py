@@ -9,7 +9,7 @@ ends.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -33,6 +33,8 @@ class LockedSpan:
     after: int
     start: float
     end: float
+    # The pairs whose friction alone locks it there (:func:`pairs_that_lock`, at the stretch's middle).
+    pairs: tuple[FrictionPair, ...] = ()
 
 
 def locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
@@ -64,7 +66,7 @@ def locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple
                      open_end=~cyclic & (lasts == len(samples) - 1))
     span = float(sweep[-1] - sweep[0])
     analysed = (positions.values - sweep[0]) / span
-    spans = []
+    spans, middles = [], []
     for start, end in zip(starts, ends, strict=True):
         low = (start - sweep[0]) / span
         length = (end - start) / span % 1.0 if cyclic else (end - start) / span
@@ -76,7 +78,21 @@ def locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple
             place = len(analysed) - 1
         if 0 <= place < len(analysed) - (0 if cyclic else 1):
             spans.append(LockedSpan(place, float(start), float(end)))
-    return tuple(spans)
+            middles.append(start + 0.5 * length * span)
+    culprits = pairs_that_lock(mechanism, positions, friction, np.array(middles))
+    return tuple(replace(found, pairs=pairs) for found, pairs in zip(spans, culprits, strict=True))
+
+
+def pairs_that_lock(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
+                    values: np.ndarray) -> tuple[tuple[FrictionPair, ...], ...]:
+    """At each driver coordinate of ``values``, where ``friction`` locks the mechanism: the pairs whose friction
+    alone locks it there, none where only the pairs' together does.  What the user changes to free it."""
+    values = np.asarray(values, dtype=float)
+    if len(friction) == 1:
+        return tuple(friction for _ in values)
+    alone = [_locked(mechanism, positions, (pair,), values) for pair in friction]
+    return tuple(tuple(pair for pair, locks in zip(friction, alone, strict=True) if locks[k])
+                 for k in range(len(values)))
 
 
 def _narrowed(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
@@ -110,3 +126,6 @@ def _locked(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fricti
         loads = link_loads(mechanism, motion_state(motion), acting)
         found = equilibrium(mechanism, motion, loads, friction)
     return found.locked & ~found.singular
+
+
+__all__ = ["LockedSpan", "locked_between", "pairs_that_lock"]

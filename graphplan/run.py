@@ -154,14 +154,40 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
 
 
 def position_warnings(analysis: Analysis | None) -> list[str]:
-    """The analysis's warnings, each a line as the command line prints it: a position's with its number."""
+    """The analysis's warnings, each a line as the command line prints it: a position's with its number.
+
+    A warning told alike at several positions (the friction locking twelve of them) is one line naming them all,
+    where the first of them stands: results.json keeps one a position."""
     from .analysis import SCENE_WIDE_WARNINGS
 
     if analysis is None:
         return []
-    return [("" if warning.code in SCENE_WIDE_WARNINGS else
-             f"position {int(analysis.positions.numbers[warning.position])}: ") + warning.detail
-            for warning in analysis.warnings]
+    lines: list[str | tuple[str, str]] = []
+    where: dict[tuple[str, str], list[int]] = {}
+    for warning in analysis.warnings:
+        if warning.code in SCENE_WIDE_WARNINGS:
+            lines.append(warning.detail)
+            continue
+        told = (warning.code, warning.detail)
+        if told not in where:
+            where[told] = []
+            lines.append(told)
+        where[told].append(int(analysis.positions.numbers[warning.position]))
+    return [line if isinstance(line, str) else f"{_positions(where[line])}: {line[1]}" for line in lines]
+
+
+def _positions(numbers: list[int]) -> str:
+    """``position 3``, or ``positions 1–5, 7–11`` with runs of three or more numbers in a row joined."""
+    if len(numbers) == 1:
+        return f"position {numbers[0]}"
+    runs: list[list[int]] = []
+    for number in numbers:
+        if runs and number == runs[-1][-1] + 1:
+            runs[-1].append(number)
+        else:
+            runs.append([number])
+    written = [f"{run[0]}–{run[-1]}" if len(run) > 2 else ", ".join(map(str, run)) for run in runs]
+    return "positions " + ", ".join(written)
 
 
 __all__ = ["COMMAND_LINE", "PYTHON", "Options", "Run", "as_asked", "note_warnings", "position_warnings", "run"]

@@ -394,25 +394,26 @@ def test_friction_circles_a_hair_short_of_locking_settle_in_the_system_and_the_p
         assert position.with_friction.balancing == pytest.approx(exact.balancing[i], rel=1e-8)
 
 
-def test_a_friction_circle_wider_than_the_rod_is_long_locks_every_position():
+def test_a_friction_circle_wider_than_the_rod_is_long_is_refused():
     """A massless rod carries its force along a line through the frictionless wrist pin B tangent to the friction
-    circle at the crank pin A: there is none when ρ exceeds the rod's length AB, and every position locks."""
-    f, journal = 1000.0, 0.01
-    assert f * journal > ROD
-    analysis = analyse(slider_crank(f'[[friction]]\njoint = "A"\nf = {f}\nradius = {journal}'))
-    assert analysis.with_friction.locked.all()
-    for entry in results(analysis)["positions"]:
-        friction = entry["equilibrium"]["friction"]
-        assert friction["self_locking"] is True and friction["balancing_moment"] is None
+    circle at the crank pin A: there is none when ρ exceeds the rod's length AB, and every position locked, each
+    warned of alike.  Only an f no material has makes ρ = f·r wider than the links (r is no wider): refused, as a
+    journal wider than them is; one just inside the rod is taken."""
+    journal = 0.01
+    with pytest.raises(graphplan.SceneError, match=r"^friction\[0\]\.f: makes the friction circle at A"):
+        analyse(slider_crank(f'[[friction]]\njoint = "A"\nf = {1.01 * ROD / journal:g}\nradius = {journal}'))
+    taken = analyse(slider_crank(f'[[friction]]\njoint = "A"\nf = {0.99 * ROD / journal:g}\nradius = {journal}'))
+    assert taken.friction[0].radius == pytest.approx(0.99 * ROD)
 
 
 def test_a_friction_that_overflows_the_repetitions_is_a_lock_not_a_settled_position():
-    """ρ = 10 m at the ratchet's rocker pivot, a hundred times the rocker: the repetitions overflowed to inf,
+    """ρ = 10 m at the ratchet's rocker pivot, thirty times the rocker (refused now: ρ = 0.5 m, inside the frame's
+    0.55 m, overflows them as well): the repetitions overflowed to inf,
     inf ≤ 1e-13·inf passed for settled, and positions came out not locking with an efficiency of 2e-305, a
     balancing moment of -4e307 or none at all.  Whatever locks, a position that moves must have a finite
     balancing moment that takes at least the frictionless power (friction only takes power)."""
     scene = graphplan.load(FIXTURES / "ratchet_crank_rocker.toml")
-    analysis = analyse(dataclasses.replace(scene, friction=(FrictionSpec("friction[0]", "C", None, 1000.0, 0.01, None),)))
+    analysis = analyse(dataclasses.replace(scene, friction=(FrictionSpec("friction[0]", "C", None, 50.0, 0.01, None),)))
     ideal, rubbing = analysis.equilibrium, analysis.with_friction
     omega, written = scene.driver.omega, results(analysis)["positions"]
     for index, locked in enumerate(rubbing.locked):
