@@ -32,7 +32,7 @@ from .lever import Lever, lever
 from .load_strokes import diagrams_in_travel, strokes_of_other_links
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
-from .locking import LockedSpan, locked_between, pairs_that_lock
+from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
 from .misreadings import misread
 from .motion import Motion, PositionWarning, solve, toggles_between
@@ -119,6 +119,8 @@ class Analysis:
     locked_spans: tuple[LockedSpan, ...] = ()
     # The works over a crank's turn without and with the pairs' friction, and η over the cycle.
     cycle: CycleWork | None = None
+    # Where, between two analysed positions, the friction holds loads that would drive the mechanism (η′ ≤ 0).
+    turned_round_spans: tuple[LockedSpan, ...] = ()
 
     def __repr__(self) -> str:
         # The dataclass's own repr ran to hundreds of thousands of characters.
@@ -196,6 +198,9 @@ def analyse(scene: Scene) -> Analysis:
             if friction:
                 with_friction = equilibrium(mechanism, motion, loads, friction)
     locked_spans = locked_between(mechanism, positions, friction, sweep, paths)
+    # Only where the loads can drive it at all: a positive-work machine's friction never turns its flow round.
+    held_spans = (turned_round_between(mechanism, positions, friction, sweep, paths)
+                  if with_friction is not None else ())
     cycle = None
     if with_friction is not None:
         cycle = cycle_work(mechanism, positions, friction,
@@ -209,11 +214,12 @@ def analyse(scene: Scene) -> Analysis:
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + _self_locking(mechanism, positions, friction, with_friction)
                             + _turned_round(mechanism, balance, with_friction)
-                            + _locked_between(mechanism, positions, friction, locked_spans),
+                            + _locked_between(mechanism, positions, friction, locked_spans)
+                            + _turned_round_between(mechanism, positions, held_spans),
                             key=lambda warning: warning.position))
     return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
-                    loads, balance, with_friction, friction, every, locked_spans, cycle)
+                    loads, balance, with_friction, friction, every, locked_spans, cycle, held_spans)
 
 
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
@@ -254,6 +260,19 @@ def _locked_between(mechanism: Mechanism, positions: PositionSet, friction: tupl
         f"{_locking_friction(friction, span.pairs)} locks the mechanism, from {driver.describe(span.start)} to "
         f"{driver.describe(span.end)}: no driving load, however large, moves it there, though it moves at both "
         "positions"))
+        for span in spans)
+
+
+def _turned_round_between(mechanism: Mechanism, positions: PositionSet,
+                          spans: tuple[LockedSpan, ...]) -> tuple[PositionWarning, ...]:
+    """A warning at the position before each stretch where the friction holds loads that would drive the
+    mechanism between two positions: the positions' own η does not show it."""
+    numbers, driver = positions.numbers, mechanism.driver
+    return tuple(PositionWarning(span.after, "reverse-self-locking-between", (
+        f"between positions {numbers[span.after]} and {numbers[(span.after + 1) % len(numbers)]}, from "
+        f"{driver.describe(span.start)} to {driver.describe(span.end)}, the loads would drive the mechanism, but "
+        "the friction in the pairs holds them: the driver must drive it there; the mechanism locks itself against "
+        "its loads driving it (η′ ≤ 0)"))
         for span in spans)
 
 

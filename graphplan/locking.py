@@ -4,11 +4,13 @@ The equilibrium with friction is solved at the analysed positions, and a positio
 moves the mechanism is warned of.  A mechanism can as well lock for a few degrees between two of them (its
 transmission angle falls below the friction's reach and rises again) with both positions moving: the cycle
 is swept densely, and each run of locked samples is narrowed to where the locking begins and
-ends.
+ends.  So is each run where the friction turns the power flow round, holding loads that would drive the
+mechanism so that the driver must drive it (η′ ≤ 0): an engine's gas force just past its dead centre.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -18,7 +20,7 @@ from .loads import activity_at, link_loads, motion_state
 from .mechanism import Mechanism
 from .motion import Motion, solve
 from .positions import PositionSet
-from .statics import equilibrium
+from .statics import balancing_scale, equilibrium, turned_round
 
 # Each round divides the brackets by the grid: a sweep's 1° narrowed to about 0.001°.
 _GRID, _ROUNDS = 32, 2
@@ -26,7 +28,8 @@ _GRID, _ROUNDS = 32, 2
 
 @dataclass(frozen=True)
 class LockedSpan:
-    """A stretch of the driver's motion where the friction locks the mechanism, between two analysed positions
+    """A stretch of the driver's motion where the friction locks the mechanism (or, of
+    :func:`turned_round_between`, holds the loads that would drive it), between two analysed positions
     that move: ``after`` is the index of the one before it; ``start`` and ``end`` are driver coordinates (rad
     or m), in the order the driver moves."""
 
@@ -47,22 +50,50 @@ def locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple
     """
     if not friction:
         return ()
+
+    def locked(values: np.ndarray, motion: Motion | None = None) -> np.ndarray:
+        return _locked(mechanism, positions, friction, values, motion)
+
+    spans, middles = _stretches(mechanism, positions, locked, sweep, swept)
+    culprits = pairs_that_lock(mechanism, positions, friction, middles)
+    return tuple(replace(found, pairs=pairs) for found, pairs in zip(spans, culprits, strict=True))
+
+
+def turned_round_between(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
+                         sweep: np.ndarray, swept: Motion) -> tuple[LockedSpan, ...]:
+    """The stretches between the analysed positions where the loads would drive the mechanism but ``friction``
+    holds them, and the driver must drive it (:func:`statics.turned_round`), as :func:`locked_between` finds
+    its; rounding of a zero Mb0 is judged against the sweep's largest."""
+    if not friction:
+        return ()
+    scale = balancing_scale(_balancing(mechanism, positions, friction, sweep, swept)[0])
+
+    def held(values: np.ndarray, motion: Motion | None = None) -> np.ndarray:
+        ideal, rubbing, moving = _balancing(mechanism, positions, friction, values, motion)
+        return moving & turned_round(mechanism, ideal, rubbing, scale)
+
+    return tuple(_stretches(mechanism, positions, held, sweep, swept)[0])
+
+
+def _stretches(mechanism: Mechanism, positions: PositionSet, flagged: Callable[..., np.ndarray],
+               sweep: np.ndarray, swept: Motion) -> tuple[list[LockedSpan], np.ndarray]:
+    """The runs of the sweep where ``flagged`` (at driver coordinates, with their motion where it is known)
+    holds, narrowed at both ends, between two analysed positions; with the middle of each."""
     cyclic = mechanism.driver.cyclic
-    locked = _locked(mechanism, positions, friction, sweep, swept)
+    marked = flagged(sweep, swept)
     samples = sweep
     if cyclic:
-        locked, samples = locked[:-1], sweep[:-1]
-    if not locked.any() or locked.all():
-        return ()
+        marked, samples = marked[:-1], sweep[:-1]
+    if not marked.any() or marked.all():
+        return [], np.zeros(0)
     step = float(sweep[1] - sweep[0])
-    before = np.roll(locked, 1) if cyclic else np.concatenate([[False], locked[:-1]])
-    after = np.roll(locked, -1) if cyclic else np.concatenate([locked[1:], [False]])
-    firsts, lasts = np.flatnonzero(locked & ~before), np.flatnonzero(locked & ~after)
+    before = np.roll(marked, 1) if cyclic else np.concatenate([[False], marked[:-1]])
+    after = np.roll(marked, -1) if cyclic else np.concatenate([marked[1:], [False]])
+    firsts, lasts = np.flatnonzero(marked & ~before), np.flatnonzero(marked & ~after)
     if cyclic and lasts[0] < firsts[0]:   # the run over the start of the sweep ends first
         lasts = np.roll(lasts, -1)
-    starts = _narrowed(mechanism, positions, friction, samples[firsts] - step, samples[firsts],
-                       open_end=~cyclic & (firsts == 0))
-    ends = _narrowed(mechanism, positions, friction, samples[lasts] + step, samples[lasts],
+    starts = _narrowed(flagged, samples[firsts] - step, samples[firsts], open_end=~cyclic & (firsts == 0))
+    ends = _narrowed(flagged, samples[lasts] + step, samples[lasts],
                      open_end=~cyclic & (lasts == len(samples) - 1))
     span = float(sweep[-1] - sweep[0])
     analysed = (positions.values - sweep[0]) / span
@@ -77,10 +108,24 @@ def locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple
         if place < 0 and cyclic:
             place = len(analysed) - 1
         if 0 <= place < len(analysed) - (0 if cyclic else 1):
-            spans.append(LockedSpan(place, float(start), float(end)))
             middles.append(start + 0.5 * length * span)
-    culprits = pairs_that_lock(mechanism, positions, friction, np.array(middles))
-    return tuple(replace(found, pairs=pairs) for found, pairs in zip(spans, culprits, strict=True))
+            spans.append(LockedSpan(place, _at_position(start, positions, step, cyclic),
+                                    _at_position(end, positions, step, cyclic)))
+    return spans, np.array(middles)
+
+
+def _at_position(value: float, positions: PositionSet, step: float, cyclic: bool) -> float:
+    """An end narrowed to within its precision of an analysed position (that is not flagged itself: a dead centre
+    where the loads take no power) is that position's coordinate: φ = 0°, not 0.000488°."""
+    gaps = positions.values - value
+    if cyclic:
+        gaps = (gaps + np.pi) % (2.0 * np.pi) - np.pi   # the nearer way round
+    nearest = int(np.argmin(np.abs(gaps)))
+    if abs(gaps[nearest]) > abs(step) / _GRID ** _ROUNDS:
+        return float(value)
+    position = float(positions.values[nearest])
+    # The position's own coordinate, in the turn the sweep has reached (a gap's sum would leave rounding of it).
+    return position + 2.0 * np.pi * round((value - position) / (2.0 * np.pi)) if cyclic else position
 
 
 def pairs_that_lock(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
@@ -95,10 +140,10 @@ def pairs_that_lock(mechanism: Mechanism, positions: PositionSet, friction: tupl
                  for k in range(len(values)))
 
 
-def _narrowed(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
-              free: np.ndarray, held: np.ndarray, open_end: np.ndarray) -> np.ndarray:
-    """Where the locking begins between each ``free`` driver coordinate and its ``held`` (locked) neighbour;
-    at an ``open_end`` (the end of a travel, locked) the locked sample itself.
+def _narrowed(flagged: Callable[..., np.ndarray], free: np.ndarray, held: np.ndarray,
+              open_end: np.ndarray) -> np.ndarray:
+    """Where ``flagged`` begins to hold between each ``free`` driver coordinate and its ``held`` (flagged)
+    neighbour; at an ``open_end`` (the end of a travel, flagged) the flagged sample itself.
 
     Each round solves a grid across every bracket at once, not a bisection's midpoint at a time: a locked
     position takes the settling its longest way, and a few solves of many positions cost what one does."""
@@ -106,7 +151,7 @@ def _narrowed(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fric
     rows = np.arange(len(free))
     for _ in range(_ROUNDS):
         grid = np.linspace(free, held, _GRID + 1, axis=1)
-        now = _locked(mechanism, positions, friction, grid.ravel()).reshape(grid.shape)
+        now = flagged(grid.ravel()).reshape(grid.shape)
         now[:, -1] = True
         first = np.maximum(np.argmax(now, axis=1), 1)
         free, held = grid[rows, first - 1], grid[rows, first]
@@ -119,13 +164,29 @@ def _locked(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fricti
     not lock: its own warning tells of it)."""
     if len(values) == 0:
         return np.zeros(0, dtype=bool)
+    found = _equilibria(mechanism, positions, values, motion, friction)[-1]
+    return found.locked & ~found.singular
+
+
+def _balancing(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
+               values: np.ndarray, motion: Motion | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The balancing load without and with ``friction`` at each driver coordinate of ``values``, and where the
+    mechanism moves with it (neither singular nor locked)."""
+    if len(values) == 0:
+        return np.zeros(0), np.zeros(0), np.zeros(0, dtype=bool)
+    ideal, rubbing = _equilibria(mechanism, positions, values, motion, (), friction)
+    return ideal.balancing, rubbing.balancing, ~rubbing.locked & ~rubbing.singular & ~ideal.singular
+
+
+def _equilibria(mechanism: Mechanism, positions: PositionSet, values: np.ndarray, motion: Motion | None,
+                *frictions: tuple[FrictionPair, ...]) -> list:
+    """The equilibrium at each driver coordinate of ``values`` with each of ``frictions`` in turn."""
     if motion is None:
         motion = solve(mechanism, values, positions.reference, tolerant=True)
     acting = activity_at(mechanism, positions, values, tolerant=True)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
         loads = link_loads(mechanism, motion_state(motion), acting)
-        found = equilibrium(mechanism, motion, loads, friction)
-    return found.locked & ~found.singular
+        return [equilibrium(mechanism, motion, loads, friction) for friction in frictions]
 
 
-__all__ = ["LockedSpan", "locked_between", "pairs_that_lock"]
+__all__ = ["LockedSpan", "locked_between", "pairs_that_lock", "turned_round_between"]

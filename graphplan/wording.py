@@ -49,10 +49,11 @@ def driver_at(mechanism: Mechanism, text: Mapping[str, str], value: float, write
 
 
 def locked_between(mechanism: Mechanism, text: Mapping[str, str], numbers, span,
-                   write: Callable[[float], str]) -> str:
+                   write: Callable[[float], str], key: str = "forces_locked_between") -> str:
     """The sentence on a stretch between two positions where the friction locks the mechanism
-    (:class:`graphplan.locking.LockedSpan`)."""
-    return text["forces_locked_between"].format(
+    (:class:`graphplan.locking.LockedSpan`), or with ``key`` ``forces_turned_round_between`` where it holds
+    the loads that would drive it."""
+    return text[key].format(
         after=numbers[span.after], next=numbers[(span.after + 1) % len(numbers)],
         start=driver_at(mechanism, text, span.start, write), end=driver_at(mechanism, text, span.end, write))
 

@@ -116,7 +116,11 @@ class Crank:
         return self.swing
 
     def describe(self, value: float) -> str:
-        return f"φ = {math.degrees(value) % 360.0:.6g}°"
+        angle = math.degrees(value) % 360.0
+        # An extreme found as a root lies 1e-18 rad off 0: rounding of a turn, written 0° as results.json does.
+        if min(angle, 360.0 - angle) < 360.0e-12:
+            angle = 0.0
+        return f"φ = {angle:.6g}°"
 
     def solve(self, context: Context, values: np.ndarray) -> GroupMotion:
         u = unit_vectors(values)

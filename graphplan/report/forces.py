@@ -421,11 +421,18 @@ def cycle_efficiency_lines(analysis: Analysis, mark: str = ".") -> list[str]:
 
 
 def locked_between_lines(analysis: Analysis, mark: str = ".") -> list[str]:
-    """A paragraph for each stretch between two positions where the friction locks the mechanism."""
+    """A paragraph for each stretch between two positions where the friction locks the mechanism, then for each
+    where it holds the loads that would drive it."""
     text = strings(analysis.scene.locale)
     numbers = analysis.positions.numbers
-    return [wording.locked_between(analysis.mechanism, text, numbers, span, lambda value: number(value, 5, mark))
-            for span in analysis.locked_spans]
+
+    def write(value: float) -> str:
+        return number(value, 5, mark)
+
+    return [*(wording.locked_between(analysis.mechanism, text, numbers, span, write)
+              for span in analysis.locked_spans),
+            *(wording.locked_between(analysis.mechanism, text, numbers, span, write, "forces_turned_round_between")
+              for span in analysis.turned_round_spans)]
 
 
 def markdown(analysis: Analysis) -> str:
