@@ -227,6 +227,18 @@ class Table:
             if close:
                 raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
 
+    def named_otherwise(self, key: str, names: frozenset[str], what: str) -> None:
+        """A key that is another name people use for ``key`` (μ, mu or coefficient for a friction coefficient's
+        f) named with the one to write, before ``key`` is missed (or with its value, where it is given too).
+        ``names`` are lower case; ``what`` says what the value is."""
+        for other in self.data:
+            if other not in self._taken and other.strip().casefold() in names:
+                if key in self.data:
+                    raise SceneError(self.where(other), f"unknown key; {what} is given as {key}, which this table "
+                                     f"has already: {key} = {as_written(self.data[key])}")
+                raise SceneError(self.where(other), f"unknown key; {what} is given as {key}: write "
+                                 f"{key} = {as_written(self.data[other])}")
+
     def _take(self, key: str, default: Any, check: Callable[[Any, str], Any]) -> Any:
         value = self.raw(key, default)
         if key not in self.data:
@@ -332,7 +344,9 @@ class Table:
             return value
         where = self.where(key)
         if not isinstance(value, list):
-            raise SceneError(where, f"must be a list, not {_type_name(value)}", value)
+            # The document's lists are of tables: [friction] for [[friction]] makes one table of its entry.
+            hint = f"; write [[{key}]] (an array of tables), not [{key}]" if not self.path and isinstance(value, dict) else ""
+            raise SceneError(where, f"must be a list, not {_type_name(value)}", value, hint=hint)
         if length is not None and len(value) != length:
             raise SceneError(where, f"must have {length} entries, not {len(value)}", value,
                              hint=decimal_comma_hint(value, length))

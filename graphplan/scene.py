@@ -768,6 +768,11 @@ def _read_load_diagram(table: Table) -> tuple[tuple[float, float], ...]:
     return points
 
 
+# What people write for a friction coefficient's f: the Greek letter, its name, the word.
+_COEFFICIENT_NAMES = frozenset({"μ", "mu", "coefficient", "friction_coefficient", "coefficient_of_friction",
+                                "friction", "cof", "коэффициент", "коэффициент_трения", "摩擦系数"})
+
+
 def _read_friction(where: str, item: object) -> FrictionSpec:
     table = Table(item, where)
     joint = table.string("joint")
@@ -776,13 +781,17 @@ def _read_friction(where: str, item: object) -> FrictionSpec:
         links = tuple(check_int(item, at) for at, item in table.items("links", length=2))
         if links[0] == links[1] or min(links) < 1:
             raise SceneError(table.where("links"), "must be two different link numbers", list(links))
-    f = table.number("f", non_negative=True)
+    f = table.number("f", None, non_negative=True)
     radius = table.number("radius", None, positive=True)
     half_angle = table.number("groove_half_angle", None, positive=True)
     if half_angle is not None and not half_angle <= 90.0:
         raise SceneError(table.where("groove_half_angle"), "must be at most 90 degrees: the angle between a flank and "
                          "the groove's plane of symmetry, 90 for a flat guide", half_angle)
+    # A key typed for f is named before f is missed: "f is required" left `coefficient = 0.1` unmentioned.
+    table.named_otherwise("f", _COEFFICIENT_NAMES, "the coefficient of friction")
     table.done()
+    if f is None:
+        raise SceneError(table.where("f"), "is required but missing: the coefficient of friction")
     return FrictionSpec(where=where, joint=joint, links=links, f=f, radius=radius,
                         groove_half_angle=None if half_angle is None else math.radians(half_angle))
 
