@@ -117,3 +117,18 @@ def test_a_force_sheet_at_a_dead_centre_names_its_zero_efficiency_mb0_over_mb():
         assert plan.with_friction.balancing == pytest.approx(0.2 * 0.05 * PUSH, rel=1e-9)
         line = force_report.friction_lines(analysis, plan)[0]
         assert line.endswith("efficiency η = Mb0/Mb = 0."), line
+
+
+def test_where_the_friction_locks_every_position_but_the_dead_centres_their_mb_is_written_0():
+    """f = 50 in the guide jams the piston wherever cos β − f·|sin β| ≤ 0, every position but the dead centres;
+    there N = 0 and Mb = 0.  results.json wrote −9.18e-15: judged against its own largest, the noise itself."""
+    f = 50.0
+    analysis = analyse(scene_from_text(scene_text(f, 10.0)))
+    phi = analysis.motion.link(2).angle
+    beta = np.arcsin(RADIUS * np.sin(phi) / ROD)
+    dead = np.isclose(np.abs(np.sin(phi)), 0.0, atol=1e-9)
+    np.testing.assert_array_equal(analysis.with_friction.locked, np.cos(beta) - f * np.abs(np.sin(beta)) <= 0)
+    np.testing.assert_array_equal(analysis.with_friction.locked, ~dead)
+    written = [entry["equilibrium"]["friction"] for entry in results(analysis)["positions"]]
+    assert [entry["balancing_moment"] for entry in written] == [0.0 if at else None for at in dead]
+    assert [entry["efficiency"] for entry in written] == [0.0 if at else None for at in dead]

@@ -79,6 +79,10 @@ def results(analysis: Analysis) -> dict[str, Any]:
     balance, rubbing = analysis.equilibrium, analysis.with_friction
     balance_noise = _cycle_noise(balance) if balance is not None else {}
     rubbing_noise = _cycle_noise(rubbing) if balance is not None and rubbing is not None else {}
+    if rubbing_noise:
+        # Mb's scale is Mb0's, give or take the friction's share; where the friction locks every position but the
+        # dead centres, Mb's own largest is their rounding noise, which only Mb0's scale tells for noise.
+        rubbing_noise["balancing"] = max(rubbing_noise["balancing"], balance_noise["balancing"])
     rubbing_loads = _cycle_friction_loads(analysis) if balance is not None and rubbing is not None else {}
     planned = {plan.index: plan for plan in analysis.plans}
     velocity_planned = {position.index: position for position in analysis.velocity_plans}
