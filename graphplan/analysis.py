@@ -271,8 +271,8 @@ def _turned_round_between(mechanism: Mechanism, positions: PositionSet,
     return tuple(PositionWarning(span.after, "reverse-self-locking-between", (
         f"between positions {numbers[span.after]} and {numbers[(span.after + 1) % len(numbers)]}, from "
         f"{driver.describe(span.start)} to {driver.describe(span.end)}, the loads would drive the mechanism, but "
-        "the friction in the pairs holds them: the driver must drive it there; the mechanism locks itself against "
-        "its loads driving it (η′ ≤ 0)"))
+        "the friction in the pairs holds them, however large those that drive it there: the driver must drive it; "
+        "the mechanism locks itself against its loads driving it (η′ ≤ 0)"))
         for span in spans)
 
 

@@ -15,8 +15,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from .forces import Load
 from .joint_friction import FrictionPair
-from .loads import activity_at, link_loads, motion_state
+from .loads import activity_at, link_loads, motion_state, power
 from .mechanism import Mechanism
 from .motion import Motion, solve
 from .positions import PositionSet
@@ -63,14 +64,21 @@ def turned_round_between(mechanism: Mechanism, positions: PositionSet, friction:
                          sweep: np.ndarray, swept: Motion) -> tuple[LockedSpan, ...]:
     """The stretches between the analysed positions where the loads would drive the mechanism but ``friction``
     holds them, and the driver must drive it (:func:`statics.turned_round`), as :func:`locked_between` finds
-    its; rounding of a zero Mb0 is judged against the sweep's largest."""
+    its; rounding of a zero Mb0 is judged against the sweep's largest.
+
+    Only where it holds the loads that drive there alone as well (η′ ≤ 0 however large they are: an engine's
+    gas force whose lever is shorter than the friction circle), the self-locking of the textbooks: near every
+    place where the loads' powers come to cancel (the inertia loads of a shaper's ram overtaking its weights)
+    friction outweighs what is left of them over a degree or so, which says nothing of the mechanism."""
     if not friction:
         return ()
     scale = balancing_scale(_balancing(mechanism, positions, friction, sweep, swept)[0])
 
     def held(values: np.ndarray, motion: Motion | None = None) -> np.ndarray:
         ideal, rubbing, moving = _balancing(mechanism, positions, friction, values, motion)
-        return moving & turned_round(mechanism, ideal, rubbing, scale)
+        alone, alone_rubbing, alone_moving = _balancing(mechanism, positions, friction, values, motion, driving=True)
+        return (moving & turned_round(mechanism, ideal, rubbing, scale)
+                & alone_moving & turned_round(mechanism, alone, alone_rubbing, scale))
 
     return tuple(_stretches(mechanism, positions, held, sweep, swept)[0])
 
@@ -169,24 +177,35 @@ def _locked(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fricti
 
 
 def _balancing(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
-               values: np.ndarray, motion: Motion | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+               values: np.ndarray, motion: Motion | None = None,
+               driving: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The balancing load without and with ``friction`` at each driver coordinate of ``values``, and where the
-    mechanism moves with it (neither singular nor locked)."""
+    mechanism moves with it (neither singular nor locked); with ``driving``, of the loads alone that give the
+    mechanism power there."""
     if len(values) == 0:
         return np.zeros(0), np.zeros(0), np.zeros(0, dtype=bool)
-    ideal, rubbing = _equilibria(mechanism, positions, values, motion, (), friction)
+    ideal, rubbing = _equilibria(mechanism, positions, values, motion, (), friction, driving=driving)
     return ideal.balancing, rubbing.balancing, ~rubbing.locked & ~rubbing.singular & ~ideal.singular
 
 
 def _equilibria(mechanism: Mechanism, positions: PositionSet, values: np.ndarray, motion: Motion | None,
-                *frictions: tuple[FrictionPair, ...]) -> list:
-    """The equilibrium at each driver coordinate of ``values`` with each of ``frictions`` in turn."""
+                *frictions: tuple[FrictionPair, ...], driving: bool = False) -> list:
+    """The equilibrium at each driver coordinate of ``values`` with each of ``frictions`` in turn; with
+    ``driving`` under the loads alone that give the mechanism power there (the others 0)."""
     if motion is None:
         motion = solve(mechanism, values, positions.reference, tolerant=True)
     acting = activity_at(mechanism, positions, values, tolerant=True)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
-        loads = link_loads(mechanism, motion_state(motion), acting)
+        state = motion_state(motion)
+        loads = link_loads(mechanism, state, acting)
+        if driving:
+            loads = tuple(_where(np.asarray(power((load,), state)) > 0, load) for load in loads)
         return [equilibrium(mechanism, motion, loads, friction) for friction in frictions]
+
+
+def _where(keep: np.ndarray, load: Load) -> Load:
+    """``load`` where ``keep``, nothing elsewhere."""
+    return replace(load, force=np.where(keep, load.force, 0j), moment=np.where(keep, load.moment, 0.0))
 
 
 __all__ = ["LockedSpan", "locked_between", "pairs_that_lock", "turned_round_between"]
