@@ -420,8 +420,8 @@ class MachineDynamics:
         model = self.model
         phi = 2.0 * np.pi * np.arange(self.spec.count) / self.spec.count
         angles, moments = self.resisting
-        # A load over part of the stroke makes Mr jump (the model gives the angle twice): the integrator takes it
-        # piece by piece, where a spline through samples would ring round the jump.
+        # A load over part of the stroke makes Mr jump or turn a corner (the model gives the angle twice): the
+        # integrator takes it piece by piece, where a spline through samples would ring round the jump.
         resisting = PiecewiseMoment(angles, moments) if np.any(np.diff(angles) == 0) else moments
         with _scene_values("dynamics"):
             return Machine(inertia=np.interp(phi, model.coordinate, model.inertia) + self.flywheel_inertia,
@@ -439,8 +439,9 @@ class MachineDynamics:
     def resisting(self):
         """Mr(φ) for the equation of motion: angles over one turn (rad) and the reduced moment of the scene's own
         loads there (N·m, positive where they resist), without the constant moment the flywheel's balance of
-        work assumed in place of the motor.  Equally spaced on [0, 2π) where it is smooth; where it jumps, the
-        model's own samples from 0 to 2π, each jump's angle given twice."""
+        work assumed in place of the motor.  Equally spaced on [0, 2π) where it is smooth; where it jumps or turns
+        a corner (a load's switch, a vertex of its diagram), the model's own samples from 0 to 2π, each such
+        angle given twice (:func:`~graphplan.machine_motion.moment.exact_jumps`)."""
         import numpy as np
 
         from .machine_motion.moment import exact_jumps

@@ -5,7 +5,10 @@ moment jump.  A periodic spline through samples of it rings round each jump (12 
 either side for the quintic one the shaft takes, the integral kept) and moves the steady δ in its
 fourth digit and a stall's threshold; :class:`PiecewiseMoment` keeps each piece between two jumps
 smooth on its own and tells the integrator where the jumps are, so that it stops at each and goes
-on with the next piece (:mod:`graphplan.machine_motion.integrator`).
+on with the next piece (:mod:`graphplan.machine_motion.integrator`).  A corner (a load switched on
+at an extreme, where it does no work yet; a vertex of a load's diagram) is taken as a jump of
+nought: a spline through it rang by 0.7 N·m at a compressor's peak of 157 N·m, and missed the mean
+by the trapezoid's error.
 """
 
 from __future__ import annotations
@@ -19,18 +22,27 @@ from numpy.typing import ArrayLike
 from scipy.interpolate import make_interp_spline
 
 TWO_PI = 2.0 * math.pi
-# Samples closer than this (rad) to the end of their piece stand for that end: a load's switch found by
-# bisection a hair from a sample of the sweep would pin the spline between two nearly equal abscissae.
-_CROWDED = 1e-6
+# Samples of a piece closer than this share of its usual step stand for one another: a load's switch found by
+# bisection a hair from a sample of the sweep (or from the turn's end, where the last piece is carried on into
+# the first) would pin a quintic spline between two nearly equal abscissae, and a rounding's difference between
+# their values, over a hair, is a slope that rang by ±100 N·m over a degree of a compressor's turn.  A sample
+# dropped a hundredth of a step from another loses nothing a spline through the rest would not give back.
+_CROWDED = 1e-2
+# A step of the moment smaller than this share of its largest value is no jump: where a load switches on or off at
+# an extreme, the speed ratio there is nought and the two sides differ only by the switch's place found a hair off
+# it (a compressor's 4 kN at a piston speed ratio of 10⁻¹¹, 2.6·10⁻⁷ N·m); taken as continuous, a real step this
+# small would move the turn's work by a hundred-thousandth of a step's share of the peak.
+_JUMP = 1e-5
 
 
 class PiecewiseMoment:
     """A moment over one turn from its samples, an angle given twice being a jump.
 
     ``angles`` rise from 0 to 2π (both ends given); where an angle is given twice, the first value
-    is the one reached from the left and the second the one it jumps to.  Unequal values at 0 and
-    2π are a jump at 0.  Between two jumps the samples are interpolated by a spline of degree 5
-    (lower where a piece has fewer samples), each piece on its own.
+    is the one reached from the left and the second the one it jumps to (the same value: a corner).
+    Unequal values at 0 and 2π, or 2π given twice, are a jump at 0.  Between two jumps the samples
+    are interpolated by a spline of degree 5 (lower where a piece has fewer samples), each piece on
+    its own.
     """
 
     def __init__(self, angles: ArrayLike, values: ArrayLike) -> None:
@@ -52,9 +64,14 @@ class PiecewiseMoment:
         pieces = [(px, py) for px, py in zip(np.split(x, cuts), np.split(y, cuts), strict=True) if px.size > 1]
         if not pieces:
             raise ValueError("a piecewise moment needs two samples between its jumps somewhere")
-        closing_jump = pieces[-1][1][-1] != pieces[0][1][0]
+        # The turn's ends are one place: values there a rounding apart (a sweep's two ends) are no jump, unless
+        # an angle given twice there says it is one (a corner).
+        scale = float(np.max(np.abs(y)))
+        given_twice = x[1] == x[0] or x[-1] == x[-2]
+        closing_jump = given_twice or abs(pieces[-1][1][-1] - pieces[0][1][0]) > _JUMP * scale
         if len(pieces) > 1 and not closing_jump:
-            # No jump at 0: the turn's last piece goes on into its first.
+            # No jump at 0: the turn's last piece goes on into its first (a sample of it a hair before 2π and
+            # the first piece's at 0 crowding together at the seam: _smooth keeps one).
             (last_x, last_y), (first_x, first_y) = pieces[-1], pieces[0]
             pieces = [(np.concatenate([last_x[:-1] - TWO_PI, first_x]), np.concatenate([last_y[:-1], first_y])),
                       *pieces[1:-1]]
@@ -95,26 +112,61 @@ class PiecewiseMoment:
 
 
 def exact_jumps(angles: ArrayLike, values: ArrayLike, *, gap: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:
-    """Samples of a sweep whose load switches were found by bisection, two samples a hair apart (closer than
-    ``gap`` rad) on either side of each: where their values differ, a jump, given at one angle twice as
-    :class:`PiecewiseMoment` reads it; where they do not (a diagram's load setting in from nought), one sample."""
+    """Samples of a sweep over a turn (0 to 2π) whose load switches and diagrams' vertices were found by
+    bisection, two samples a hair apart (closer than ``gap`` rad) on either side of each, as
+    :class:`PiecewiseMoment` reads them: each such place one angle given twice, with the values on its two sides
+    where they differ by more than :data:`_JUMP` of the moment's largest (a jump), else the first twice (a
+    corner).  Samples closer than :data:`_CROWDED` of the sweep's step to such a place stand for it, and are
+    left out; such a place that close to the turn's ends is one at 0 (2π given twice), as a load switched at the
+    dead centre where the turn starts, found a hair either side of it, is."""
     x = np.array(angles, dtype=float)
     y = np.array(values, dtype=float)
-    scale = float(np.max(np.abs(y))) if y.size else 0.0
-    keep = np.ones(x.size, dtype=bool)
-    for i in np.flatnonzero(np.diff(x) <= gap):
-        if abs(y[i + 1] - y[i]) > 1e-9 * scale:
-            x[i + 1] = x[i]
+    close = np.diff(x) <= gap
+    if not np.any(close):
+        return x, y
+    scale = float(np.max(np.abs(y)))
+    near = _CROWDED * float(np.median(np.diff(x)[~close])) if not np.all(close) else 0.0
+    # Each run of samples a hair apart is one place: its first sample the value from the left, its last the right.
+    edges = np.diff(np.concatenate([[0], close.astype(int), [0]]))
+    places = []
+    for first, last in zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1), strict=True):
+        angle, left, right = x[first], y[first], y[last]
+        if abs(right - left) <= _JUMP * scale:
+            right = left
+        if places and angle - places[-1][0] <= near:
+            places[-1] = (places[-1][0], places[-1][1], right)
         else:
-            keep[i + 1] = False
-    return x[keep], y[keep]
+            places.append((angle, left, right))
+    start, end = x[0], x[-1]
+    at_start = [place for place in places if place[0] - start <= near]
+    at_end = [place for place in places if end - place[0] <= near]
+    inside = [place for place in places if place not in at_start and place not in at_end]
+    alone = np.ones(x.size, dtype=bool)
+    for angle, _, _ in places:
+        alone &= np.abs(x - angle) > near
+    points = [(angle, value) for angle, value in zip(x[alone], y[alone], strict=True)
+              if not (at_start or at_end) or near < angle - start and near < end - angle]
+    for angle, left, right in inside:
+        points += [(angle, left), (angle, right)]
+    points.sort(key=lambda point: point[0])  # stable: a place's left side stays before its right
+    if at_start or at_end:
+        # The turn's ends: the value after the dead centre at 0, the value before it at 2π, and 2π given twice;
+        # the samples at the ends themselves where the place near them is a corner (the others are a hair off).
+        after, before = y[0], y[-1]
+        if at_start and abs(at_start[-1][2] - after) > _JUMP * scale:
+            after = at_start[-1][2]
+        if at_end and abs(at_end[0][1] - before) > _JUMP * scale:
+            before = at_end[0][1]
+        if abs(after - before) <= _JUMP * scale:
+            after = before
+        points = [(start, after), *points, (end, before), (end, after)]
+    found = np.array(points, dtype=float)
+    return found[:, 0].copy(), found[:, 1].copy()
 
 
 def _smooth(x: np.ndarray, y: np.ndarray) -> Callable[[float], float]:
     """A spline through one piece's samples: quintic where it has six or more, lower where fewer."""
-    keep = np.ones(x.size, dtype=bool)
-    keep[1:-1] = (x[1:-1] - x[0] > _CROWDED) & (x[-1] - x[1:-1] > _CROWDED)
-    x, y = x[keep], y[keep]
+    x, y = _uncrowded(x, y)
     if x.size == 1 or x[-1] == x[0]:
         value = float(y[-1])
         return lambda phi: value
@@ -122,3 +174,19 @@ def _smooth(x: np.ndarray, y: np.ndarray) -> Callable[[float], float]:
     spline = make_interp_spline(x, y, k=degree)
     spline.extrapolate = True
     return spline
+
+
+def _uncrowded(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """One piece's samples without those closer than :data:`_CROWDED` of its usual step to the last one kept, or
+    to the piece's end: the ends, where it jumps, are kept."""
+    steps = np.diff(x)
+    steps = steps[steps > 0]
+    if x.size <= 2 or steps.size == 0:
+        return x, y
+    near = _CROWDED * float(np.median(steps))
+    kept = [0]
+    for i in range(1, x.size - 1):
+        if x[i] - x[kept[-1]] > near and x[-1] - x[i] > near:
+            kept.append(i)
+    kept.append(x.size - 1)
+    return x[kept], y[kept]
