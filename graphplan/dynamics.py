@@ -42,6 +42,7 @@ The reduction is also made from the velocity plans of the plan positions and of 
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -51,10 +52,20 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.integrate import cumulative_trapezoid, trapezoid
+from scipy.integrate import cumulative_simpson, cumulative_trapezoid, trapezoid
 
 from .kinematics import dot, norm2
-from .loads import State, activity, activity_at, link_loads, motion_state, plan_state, power, with_switches
+from .loads import (
+    State,
+    activity,
+    activity_at,
+    link_loads,
+    load_corners_at,
+    motion_state,
+    plan_state,
+    power,
+    with_switches,
+)
 from .mechanism import Mechanism, build
 from .motion import Motion, solve
 from .positions import PositionSet, make_positions
@@ -151,6 +162,12 @@ class EquivalentModel:
     moved
         The loads the scene gives as driving (``resisting = false``) that are counted with the resistances, as
         :class:`MovedLoad`: each with its work over the run, zero or negative.
+    breaks
+        The samples (indices) where the moments may have a corner or a jump: the two sides of each place where a
+        load switches or its diagram turns a corner, put in a hair apart.  The works are integrated by Simpson's
+        rule over each stretch between two, where the moments are smooth.  None: found from the samples, as the
+        pairs closer than :data:`_PAIR` of the run; a model from load diagrams gives every sample (its moments are
+        straight between its vertices, where the trapezoidal rule is exact).
     """
 
     kind: str
@@ -170,6 +187,7 @@ class EquivalentModel:
     driving_loads: tuple[str, ...] = ()
     resisting_loads: tuple[str, ...] = ()
     moved: tuple[MovedLoad, ...] = ()
+    breaks: np.ndarray | None = None
 
     @property
     def turning(self) -> bool:
@@ -184,7 +202,26 @@ class EquivalentModel:
         """The mean of ``values`` over the run, ∫ dψ / ψ: a plain mean of the samples would count twice each
         point sampled on both sides of a jump of the loads."""
         span = float(self.coordinate[-1] - self.coordinate[0])
-        return float(trapezoid(values, self.coordinate)) / span if span else float(np.mean(values))
+        return float(self.integral(values)[-1]) / span if span else float(np.mean(values))
+
+    @cached_property
+    def _breaks(self) -> np.ndarray:
+        return _breaks_of(self.coordinate) if self.breaks is None else np.asarray(self.breaks, dtype=int)
+
+    def integral(self, values: np.ndarray) -> np.ndarray:
+        """∫ values dψ from the first sample to each: Simpson's rule on each smooth stretch between
+        :attr:`breaks`."""
+        return _integral(values, self.coordinate, self._breaks)
+
+    @cached_property
+    def work_uncertainty(self) -> float:
+        """How far the integrated work over the run may be off (J): the trapezoidal rule's total of the net moment
+        less Simpson's.  The trapezoid's error is of the step squared, Simpson's of its fourth power on a smooth
+        stretch, so their difference is the trapezoid's error, and more than Simpson's; where a corner falls
+        between two samples unseen, both are off by as much, and the difference says so."""
+        net = self.driving + self.resisting
+        trapezoid_total = float(cumulative_trapezoid(net, self.coordinate)[-1]) if net.size > 1 else 0.0
+        return abs(trapezoid_total - float(self.integral(net)[-1]))
 
     @property
     def inertia_is_constant(self) -> bool:
@@ -200,12 +237,12 @@ class EquivalentModel:
     @cached_property
     def driving_work(self) -> np.ndarray:
         """Ad(ψ) = ∫ Md dψ from the first sample (J)."""
-        return cumulative_trapezoid(self.driving, self.coordinate, initial=0.0)
+        return self.integral(self.driving)
 
     @cached_property
     def resisting_work(self) -> np.ndarray:
         """Ar(ψ) = −∫ Mr dψ from the first sample (J): positive when the resistances take work."""
-        return -cumulative_trapezoid(self.resisting, self.coordinate, initial=0.0)
+        return -self.integral(self.resisting)
 
     @property
     def energy(self) -> np.ndarray:
@@ -273,18 +310,20 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
 
     weights, load_powers = _powers(mechanism, state, acting, count)
     loads = mechanism.scene.loads
-    drives, moved = _sides(loads, [share / speed for share in load_powers], coordinate)
+    breaks = _breaks_of(coordinate)
+    drives, moved = _sides(loads, [share / speed for share in load_powers], coordinate, breaks)
     driving = sum((share for share, on in zip(load_powers, drives, strict=True) if on), np.zeros(count)) / speed
     resisting = sum((share for share, on in zip(load_powers, drives, strict=True) if not on), weights) / speed
     driving_loads = tuple(load.where for load, on in zip(loads, drives, strict=True) if on)
     resisting_loads = tuple(load.where for load, on in zip(loads, drives, strict=True) if not on)
     driving, resisting, chosen = _balanced(coordinate, driving, resisting, constant, driving_loads,
-                                           tuple(load.where for load in loads if load.resisting))
+                                           tuple(load.where for load in loads if load.resisting), breaks)
     return EquivalentModel(kind=driver.kind, link=driver.link, speed=speed, sense=sense, driver=values,
                            coordinate=coordinate, inertia=inertia, inertia_slope=slope,
                            link_inertia=MappingProxyType(shares), driving=driving, resisting=resisting,
                            constant=chosen, plans=tuple(plans), cyclic=driver.cyclic,
-                           driving_loads=driving_loads, resisting_loads=resisting_loads, moved=moved)
+                           driving_loads=driving_loads, resisting_loads=resisting_loads, moved=moved,
+                           breaks=breaks)
 
 
 def equivalent_model_of(source: Analysis | Scene, count: int = DEFAULT_COUNT, *,
@@ -376,7 +415,7 @@ def diagram_model(speed: float, driving: tuple[ArrayLike, ArrayLike] | None = No
     return EquivalentModel(kind="crank", link=0, speed=float(speed), sense=1.0, driver=samples, coordinate=samples,
                            inertia=np.full(len(samples), float(inertia)), inertia_slope=np.zeros(len(samples)),
                            link_inertia=MappingProxyType({0: np.full(len(samples), float(inertia))}),
-                           driving=drive, resisting=-resist, constant=chosen)
+                           driving=drive, resisting=-resist, constant=chosen, breaks=np.arange(len(samples)))
 
 
 def _turn_diagram(name: str, given: tuple[ArrayLike, ArrayLike]) -> tuple[np.ndarray, np.ndarray]:
@@ -513,7 +552,7 @@ def _total_power(mechanism: Mechanism, state: State, acting: np.ndarray | None, 
 NO_WORK = 1e-4
 
 
-def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarray
+def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarray, breaks: np.ndarray
            ) -> tuple[list[bool], tuple[MovedLoad, ...]]:
     """Whether each scene load drives, by its reduced moment's work over the run, and the loads given as driving
     that are counted with the resistances.
@@ -530,8 +569,8 @@ def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarra
     drives = [False] * len(loads)
     moved = []
     for rows in forces.values():
-        work = sum(float(trapezoid(moments[row], coordinate)) for row in rows)
-        given = sum(float(trapezoid(np.abs(moments[row]), coordinate)) for row in rows)
+        work = sum(float(_integral(moments[row], coordinate, breaks)[-1]) for row in rows)
+        given = sum(float(_integral(np.abs(moments[row]), coordinate, breaks)[-1]) for row in rows)
         if work > NO_WORK * given:
             for row in rows:
                 drives[row] = True
@@ -549,7 +588,7 @@ def _line(load) -> tuple:
 
 
 def _balanced(coordinate: np.ndarray, driving: np.ndarray, resisting: np.ndarray, constant: str,
-              drives: Sequence[str], resists: Sequence[str]) -> tuple[np.ndarray, np.ndarray, str]:
+              drives: Sequence[str], resists: Sequence[str], breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray, str]:
     """The moments with one side made constant so that their work over the samples balances; ``drives`` are the
     scene's driving loads, ``resists`` those it gives as resisting (the loads given as driving that go with the
     weights are kept with them)."""
@@ -567,18 +606,44 @@ def _balanced(coordinate: np.ndarray, driving: np.ndarray, resisting: np.ndarray
         raise ValueError("the driver does not move over the samples, so no constant moment balances their work")
     # Every load on the replaced side is absent, so what is left of ``resisting`` is the weights, and the loads
     # counted with them, kept.
-    level = -float(trapezoid(driving + resisting, coordinate)) / travel
+    level = -float(_integral(driving + resisting, coordinate, breaks)[-1]) / travel
     if constant == "driving":
         return driving + level, resisting, constant
     return driving, resisting + level, constant
 
 
 def _with_switches(mechanism: Mechanism, positions: PositionSet, sweep: np.ndarray) -> np.ndarray:
-    """``sweep`` with the two sides of every place where a load's window opens or closes put in (a diagram's
-    load changes all along its window: only where it starts and stops acting is a switch)."""
+    """``sweep`` with the two sides put in of every place where a load's window opens or closes, a vertex of its
+    diagram lies (its value turns a corner there, and the reduced moment with it) or a resisting load's link
+    turns back (the load turns round with its motion): the works are integrated by Simpson's rule between them,
+    where the moments are smooth."""
     if not mechanism.scene.loads:
         return sweep
-    return with_switches(sweep, lambda values: activity_at(mechanism, positions, values) > 0)
+    return with_switches(sweep, lambda values: load_corners_at(mechanism, positions, values))
+
+
+#: Samples closer than this share of the run are the two sides of one place where the loads switch or turn a
+#: corner (the bisection puts them 10⁻¹² of a step apart): they bound the smooth stretches the works are integrated
+#: over.
+_PAIR = 1e-9
+
+
+def _breaks_of(coordinate: np.ndarray) -> np.ndarray:
+    """The run's ends and both samples of every pair closer than :data:`_PAIR` of the run."""
+    span = float(abs(coordinate[-1] - coordinate[0]))
+    close = np.flatnonzero(np.diff(coordinate) <= _PAIR * span)
+    return np.unique(np.concatenate([[0, len(coordinate) - 1], close, close + 1]))
+
+
+def _integral(values: np.ndarray, coordinate: np.ndarray, breaks: np.ndarray) -> np.ndarray:
+    """∫ values dψ from the first sample to each: Simpson's rule (scipy's, for unequal steps) on each stretch
+    between two breaks, whose values are smooth; the trapezoid across a stretch of two samples."""
+    values = np.asarray(values, dtype=float)
+    found = np.zeros(len(coordinate))
+    for start, stop in itertools.pairwise(breaks):
+        stretch = slice(start, stop + 1)
+        found[stretch] = found[start] + cumulative_simpson(values[stretch], x=coordinate[stretch], initial=0.0)
+    return found
 
 
 def _full(value, count: int) -> np.ndarray:

@@ -172,10 +172,61 @@ def activity_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray
     the start of the working stroke, so that a few positions far from it (a bisection's) are
     measured as the cycle's own are.
     """
+    return _read_at(activity, mechanism, positions, values, tolerant)
+
+
+def diagram_segments(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
+    """Which segment of its diagram each load with a ``diagram`` is on at each position of ``motion``: a
+    ``(loads, N)`` array of integers, the count of the diagram's shares at or below the share of the stroke
+    travelled (−1 where the load does not act; 0 for a load without a diagram).  Where it changes, the load's
+    value has a corner (a vertex of the diagram): the reduced moment kinks there."""
+    scene = mechanism.scene
+    segments = np.zeros((len(scene.loads), motion.count), dtype=int)
+    progress = functools.cache(lambda stroke: stroke_share(mechanism, positions, motion, stroke))
+    for row, load in enumerate(scene.loads):
+        if load.diagram is None:
+            continue
+        start, end = load.during
+        # Read as activity reads the share: equal ends at 12 digits.
+        share = np.round(progress(load.stroke), 12)
+        inside = in_working_stroke(motion, load.stroke) & (share >= start) & (share <= end)
+        shares = np.array([vertex for vertex, _ in load.diagram])
+        segments[row] = np.where(inside, np.searchsorted(shares, share, side="right"), -1)
+    return segments
+
+
+def load_corners(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np.ndarray:
+    """What sets each load's value at a position apart from its neighbours', at each position of ``motion``: a
+    ``(loads, N)`` array of codes, one row a load, that change where its :func:`diagram_segments` does (where it
+    has a diagram; else where it starts or stops acting, :func:`activity`) and, for a resisting load where it
+    acts, where the sense of the motion it opposes does (:func:`resisted_sense`: its link turns back).  Where a
+    row changes between two positions, the load's reduced moment jumps there or turns a corner."""
+    scene = mechanism.scene
+    acting = activity(mechanism, positions, motion) > 0
+    drawn = np.array([[load.diagram is not None] for load in scene.loads], dtype=bool)
+    shares = np.where(drawn, diagram_segments(mechanism, positions, motion), acting) if drawn.size else acting
+    state = motion_state(motion)
+    with np.errstate(invalid="ignore"):
+        senses = np.array([np.where(on, np.nan_to_num(np.broadcast_to(resisted_sense(load, state), (motion.count,))),
+                                    0.0) if load.resisting else np.zeros(motion.count)
+                           for load, on in zip(scene.loads, acting, strict=True)]).reshape(shares.shape)
+    # One code a load (the sense −1, 0 or 1 beside the segment), so that a place where both change is found once.
+    return 3 * shares.astype(int) + senses.astype(int) + 1
+
+
+def load_corners_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray) -> np.ndarray:
+    """:func:`load_corners` at driver coordinates ``values``, read as :func:`activity_at` reads them."""
+    return _read_at(load_corners, mechanism, positions, values, False)
+
+
+def _read_at(read: Callable[[Mechanism, PositionSet, Motion], np.ndarray], mechanism: Mechanism,
+             positions: PositionSet, values: np.ndarray, tolerant: bool) -> np.ndarray:
+    """``read`` of a motion solved at ``values``, with the start of the working stroke put first (see
+    :func:`activity_at`)."""
     if positions.extremes is None:
-        return activity(mechanism, positions, solve(mechanism, values, positions.reference, tolerant=tolerant))
+        return read(mechanism, positions, solve(mechanism, values, positions.reference, tolerant=tolerant))
     padded = np.concatenate([[positions.extremes[0]], values])
-    return activity(mechanism, positions, solve(mechanism, padded, positions.reference, tolerant=tolerant))[:, 1:]
+    return read(mechanism, positions, solve(mechanism, padded, positions.reference, tolerant=tolerant))[:, 1:]
 
 
 def with_switches(sweep: np.ndarray, state: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:

@@ -532,8 +532,9 @@ def test_a_diagram_load_enters_the_reduced_moment_by_its_diagram_and_switches_on
     energy_rate = 0.5 * model.inertia_slope * model.speed ** 3 + model.inertia * velocity * rate
     residual = balance.balancing * velocity + model.moment * model.speed - energy_rate
     np.testing.assert_allclose(residual, 0.0, atol=1e-8 * float(np.max(np.abs(balance.balancing * velocity))))
-    # The diagram sets in from nought and ends at nought: no jump anywhere, and two switches' samples at most.
-    assert len(model.coordinate) <= 361 + 4
+    # The diagram sets in from nought and ends at nought: no jump anywhere, and a switch's two samples at each of
+    # its four vertices at most (where it starts, turns its two corners and stops).
+    assert len(model.coordinate) <= 361 + 2 * 4
     steps = np.abs(np.diff(model.resisting))
     assert float(np.max(steps)) < 0.25 * float(np.max(np.abs(model.resisting)))
 
