@@ -452,6 +452,10 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
     omega = table.speed(None, positive=True)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
+    if shaft is not None and delta is None:
+        raise SceneError(table.where("flywheel_shaft_rpm"), "moves the flywheel sized for delta to another shaft, but "
+                         "no delta is given, so no flywheel is sized: give delta (the coefficient of speed "
+                         "fluctuation, 0.05 for 5 %), or leave flywheel_shaft_rpm out", shaft)
     count = table.integer("count", DEFAULT_COUNT, minimum=12, maximum=100_000)
     if not linkage:
         return _read_diagram_dynamics(table, DynamicsSpec(where=table.path, delta=delta, omega=omega,

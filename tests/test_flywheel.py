@@ -284,6 +284,9 @@ def test_dynamics_table_is_read_with_its_keys_checked():
     ({"constant": "motor"}, "dynamics.constant: must be one of auto, driving, resisting, none"),
     ({"count": 5}, "dynamics.count: must be >= 12 (got 5)"),
     ({"flywheel_shaft_rpm": "fast"}, "dynamics.flywheel_shaft_rpm: must be a number, not a string"),
+    # Without δ no flywheel is sized, and the shaft it was to be moved to was passed over without a word.
+    ({"flywheel_shaft_rpm": 1450.0}, "dynamics.flywheel_shaft_rpm: moves the flywheel sized for delta to another "
+                                     "shaft, but no delta is given"),
 ])
 def test_bad_dynamics_table_names_the_key(data, message):
     with pytest.raises(SceneError) as caught:
