@@ -807,6 +807,10 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
     """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
     told = []
+    if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
+        from .flywheel import delta_warning
+
+        told += [line for line in (delta_warning(scene.dynamics),) if line is not None]
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),
                                    dynamics.unsettled_warning(), dynamics.off_design_warning()) if line is not None]

@@ -48,6 +48,12 @@ from .units import RPM
 _BALANCE = 1e-6
 # Share of the largest reduced inertia under which a link's share counts as constant (Mertsalov's Jc).
 _CONSTANT_SHARE = 1e-9
+#: The largest coefficient of speed fluctuation machines are built to run with (crushers and punches 1/5; pumps
+#: 1/5…1/30, machine tools 1/20…1/50, generators 1/100…1/300).  Above it, up to δ < 2 where ωmin = ωm·(1 − δ/2)
+#: reaches nought, the flywheel is still worked out, and rightly (the tangents' slopes ωm²·(1 ± δ/2)²/2 are exact,
+#: not the small-δ ωm²·(1 ± δ)/2), so it is not refused; but a speed swinging ωmax/ωmin = (2 + δ)/(2 − δ) is no
+#: steady running, and such a δ is more likely a percentage typed for a fraction: it is warned of.
+LARGEST_USUAL_DELTA = 0.2
 
 
 # --- standalone: a cycle of torque or power ---------------------------------------------------
@@ -566,6 +572,16 @@ def diagram_model_of(spec: DynamicsSpec) -> EquivalentModel:
     return diagram_model(spec.omega, sides["driving"], sides["resisting"], inertia=spec.inertia, count=spec.count)
 
 
+def delta_warning(spec: DynamicsSpec) -> str | None:
+    """A line for the command line where ``delta`` is above :data:`LARGEST_USUAL_DELTA`, else None."""
+    delta = spec.delta
+    if delta is None or delta <= LARGEST_USUAL_DELTA:
+        return None
+    return (f"{spec.where}.delta: {delta:g} is above the {LARGEST_USUAL_DELTA:g} of the most unevenly running "
+            f"machines (crushers, punches): the speed swings ωmax/ωmin = (2 + δ)/(2 − δ) = {(2 + delta) / (2 - delta):.3g} "
+            f"over the turn; a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
+
+
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
     """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
     if spec.delta is None:
@@ -675,7 +691,7 @@ def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     return np.concatenate([x, zeros])[order], np.concatenate([net, np.zeros(len(zeros))])[order]
 
 
-__all__ = ["DIAGRAM_KEYS", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel", "LoadDiagram", "Tangent",
-           "diagram_model_of", "dynamics_results", "fluctuation", "fluctuation_from_areas", "flywheel_for",
-           "flywheel_from_spec", "flywheel_inertia", "moved_inertia", "omega_to_rpm", "read_dynamics", "rpm_to_omega",
-           "speed_fluctuation", "speed_limits"]
+__all__ = ["DIAGRAM_KEYS", "LARGEST_USUAL_DELTA", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel", "LoadDiagram",
+           "Tangent", "delta_warning", "diagram_model_of", "dynamics_results", "fluctuation", "fluctuation_from_areas",
+           "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia", "omega_to_rpm", "read_dynamics",
+           "rpm_to_omega", "speed_fluctuation", "speed_limits"]

@@ -285,8 +285,8 @@ def test_dynamics_table_is_read_with_its_keys_checked():
     ({"count": 5}, "dynamics.count: must be >= 12 (got 5)"),
     ({"flywheel_shaft_rpm": "fast"}, "dynamics.flywheel_shaft_rpm: must be a number, not a string"),
     # Without δ no flywheel is sized, and the shaft it was to be moved to was passed over without a word.
-    ({"flywheel_shaft_rpm": 1450.0}, "dynamics.flywheel_shaft_rpm: moves the flywheel sized for delta to another "
-                                     "shaft, but no delta is given"),
+    ({"flywheel_shaft_rpm": 1450.0}, ("dynamics.flywheel_shaft_rpm: moves the flywheel sized for delta to another "
+                                      "shaft, but no delta is given")),
 ])
 def test_bad_dynamics_table_names_the_key(data, message):
     with pytest.raises(SceneError) as caught:
@@ -349,3 +349,31 @@ def test_work_that_does_not_balance_is_told_a_way_out_the_program_then_takes(tmp
         text[:first] + text[text.index("[positions]"):]
     scene.write_text(left, encoding="utf-8")
     assert main(["check", str(scene)]) == 0, capsys.readouterr().err
+
+
+@pytest.mark.parametrize("delta,warned", [(0.2, False), (0.25, True), (1.5, True)])
+def test_a_delta_above_what_machines_run_with_is_worked_out_and_warned_of(tmp_path, capsys, delta, warned):
+    """δ = 1.5 passed without a word: ωmin = ωm·(1 − δ/2) stays above nought up to δ < 2 and the tangents' slopes
+    ωm²·(1 ± δ/2)²/2 are exact there, so the flywheel is worked out, but a speed swinging (2 + δ)/(2 − δ) to 1 is
+    no steady running: a percentage typed for a fraction, most likely."""
+    from graphplan.cli import main
+
+    text = (FIXTURE_DIR / "ratchet_crank_rocker.toml").read_text(encoding="utf-8") + f"\n[dynamics]\ndelta = {delta}\n"
+    scene = tmp_path / "uneven.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    told = capsys.readouterr().out
+    ratio = (2 + delta) / (2 - delta)
+    assert ("dynamics.delta: " in told) is warned
+    if warned:
+        assert f"ωmax/ωmin = (2 + δ)/(2 − δ) = {ratio:.3g}" in told and f"is δ = {delta / 100:g}" in told
+        # The flywheel is the one that keeps the speed within the ratio asked for.
+        flywheel = flywheel_for(model_of("ratchet_crank_rocker"), delta)
+        assert flywheel.omega_max / flywheel.omega_min == pytest.approx(ratio, rel=1e-9)
+    for locale, caution in (("en", "Caution: δ = "), ("ru", "Внимание: δ = "), ("zh", "注意：δ = ")):
+        scene.write_text(re.sub(r'(?m)^locale\s*=.*$', f'locale = "{locale}"', text), encoding="utf-8")
+        out = tmp_path / locale
+        assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+        note = (out / "note.md").read_text(encoding="utf-8")
+        assert (caution in note) is warned, locale
+    capsys.readouterr()
