@@ -577,9 +577,10 @@ def delta_warning(spec: DynamicsSpec) -> str | None:
     delta = spec.delta
     if delta is None or delta <= LARGEST_USUAL_DELTA:
         return None
+    ratio = (2 + delta) / (2 - delta)
     return (f"{spec.where}.delta: {delta:g} is above the {LARGEST_USUAL_DELTA:g} of the most unevenly running "
-            f"machines (crushers, punches): the speed swings ωmax/ωmin = (2 + δ)/(2 − δ) = {(2 + delta) / (2 - delta):.3g} "
-            f"over the turn; a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
+            f"machines (crushers, punches): the speed swings ωmax/ωmin = (2 + δ)/(2 − δ) = {ratio:.3g} over the turn; "
+            f"a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
@@ -691,7 +692,7 @@ def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     return np.concatenate([x, zeros])[order], np.concatenate([net, np.zeros(len(zeros))])[order]
 
 
-__all__ = ["DIAGRAM_KEYS", "LARGEST_USUAL_DELTA", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel", "LoadDiagram",
-           "Tangent", "delta_warning", "diagram_model_of", "dynamics_results", "fluctuation", "fluctuation_from_areas",
-           "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia", "omega_to_rpm", "read_dynamics",
-           "rpm_to_omega", "speed_fluctuation", "speed_limits"]
+__all__ = ["DIAGRAM_KEYS", "LARGEST_USUAL_DELTA", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel",
+           "LoadDiagram", "Tangent", "delta_warning", "diagram_model_of", "dynamics_results", "fluctuation",
+           "fluctuation_from_areas", "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia",
+           "omega_to_rpm", "read_dynamics", "rpm_to_omega", "speed_fluctuation", "speed_limits"]
