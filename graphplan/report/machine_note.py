@@ -98,10 +98,15 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
 
 def _reductions(note: Writer, model) -> None:
     text = note.text
-    # The symbols the dynamics sheet draws, so that the table and the drawing name a quantity alike (Jп, Mп).
-    inertia, moment = ((text["dyn_inertia_symbol"], text["kilogram_metre2"]),
-                       (text["note_dyn_moment_symbol"], text["newton_metre"])) if model.turning \
-        else ((text["note_dyn_mass_symbol"], text["kilogram"]), (text["note_dyn_force_symbol"], text["newton"]))
+    # A plan gives the loads' and the weights' reduced load, never the constant side: that is Mr where the driving
+    # side is taken constant, Me where neither is, and where the resisting side is, the driving loads' and the
+    # weights' (an engine's gas force), which no curve of the drawing is and a column headed Me passed for.
+    kind = "" if model.turning else "force_"
+    loaded = text[f"note_dyn_plans_{kind}symbol_{model.constant}"] if model.constant != "none" else \
+        text["note_dyn_moment_symbol" if model.turning else "note_dyn_force_symbol"]
+    # The symbols the dynamics sheet draws, so that the table and the drawing name a quantity alike (Jп, Mс).
+    inertia, moment = ((text["dyn_inertia_symbol"], text["kilogram_metre2"]), (loaded, text["newton_metre"])) \
+        if model.turning else ((text["note_dyn_mass_symbol"], text["kilogram"]), (loaded, text["newton"]))
     where = text["dyn_angle_axis"] if model.turning else text["dyn_travel_axis"]
     header = [text["note_dyn_position"], where,
               f"{inertia[0]}, {inertia[1]} ({text['column_by_plan']})", f"{inertia[0]} ({text['column_analytic']})",
@@ -115,6 +120,7 @@ def _reductions(note: Writer, model) -> None:
                      _percent(note, plan.inertia_error_percent), note.n(plan.moment), note.n(plan.moment_exact),
                      _percent(note, plan.moment_error_percent)])
     note.table(text["note_dyn_table"], header, rows, align="rrrrrrrr")
+    note.para(note.t(f"note_dyn_plans_load_{model.constant}", symbol=loaded))
 
 
 def _percent(note: Writer, value: float) -> str:
