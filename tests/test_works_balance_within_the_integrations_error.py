@@ -12,6 +12,7 @@ worked out here on 72 000 steps of the turn.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -19,6 +20,7 @@ from scipy.integrate import cumulative_trapezoid
 from scipy.optimize import brentq
 
 from graphplan.analysis import analyse
+from graphplan.cli import main
 from graphplan.deliverables import MachineDynamics
 from graphplan.errors import SceneError
 from graphplan.scene import loads
@@ -209,6 +211,17 @@ def test_an_engine_whose_consumer_takes_its_indicator_diagrams_work_is_taken_as_
     alone = MachineDynamics(analyse(loads(ENGINE + "\n[dynamics]\ndelta = 0.02\n"))).model
     assert alone.constant == "resisting"
     assert alone.resisting_work[-1] == pytest.approx(work, rel=1e-8)
+
+
+def test_the_note_gives_the_constant_resisting_moment_that_takes_the_indicator_diagrams_work(tmp_path):
+    # The weights stay on the resisting side: a mean over the samples weighed their moment twice at each switch.
+    work = STROKE * float(np.trapezoid(EXPANSION[1], EXPANSION[0]) - np.trapezoid(COMPRESSION[1], COMPRESSION[0]))
+    scene = tmp_path / "engine.toml"
+    scene.write_text(ENGINE + "\n[dynamics]\ndelta = 0.02\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "dynamics,note"]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    told = re.search(r"Mr = Ad/2π = ([\d.]+) N·m", note)
+    assert float(told[1]) == pytest.approx(work / (2 * math.pi), abs=0.0015)
 
 
 def _crank_rocker_turn(count: int):

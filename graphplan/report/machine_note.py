@@ -84,7 +84,9 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
                              work=note.n(moved.work)))
     if model.constant in ("driving", "resisting"):
         side = model.driving if model.constant == "driving" else -model.resisting
-        note.para(note.t(f"note_dyn_constant_{model.constant}{run}", value=note.n(float(np.mean(side)))))
+        # Over the run, not over the samples: a resisting side keeps the weights, whose moment the two samples of
+        # every switch and corner would weigh twice (40.752 N·m for an engine's 256 J/2π = 40.744).
+        note.para(note.t(f"note_dyn_constant_{model.constant}{run}", value=note.n(model.mean_over_run(side))))
     energy = model.energy
     note.para(note.t(f"note_dyn_energy{run}", low=note.n(float(energy.min())), high=note.n(float(energy.max())),
                      value=note.n(float(np.ptp(energy)))))
