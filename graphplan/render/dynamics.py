@@ -306,8 +306,9 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                 items.append(Text((1.2, letter_y), letter, LABEL, "start", _TANGENT.colour))
             top_mm, bottom_mm = max(top_mm, line[0][1], line[1][1]), min(bottom_mm, line[0][1], line[1][1])
         ab = (flywheel.upper.intercept - flywheel.lower.intercept) / scales.energy
-        items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), words["dyn_segment"].format(value=f"{ab:.1f}"),
-                          LABEL, "middle", _TANGENT.colour))
+        # ab ≤ 0 is a flywheel of negative inertia, which the machine's own spares: said so, not as a length.
+        told = words["dyn_segment"].format(value=f"{ab:.1f}") if flywheel.inertia > 0 else words["dyn_segment_none"]
+        items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), told, LABEL, "middle", _TANGENT.colour))
     items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
     # Je graduated as on Je(φ) under it; lettered on the side of the axis the curve comes less near.
@@ -318,7 +319,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     for value, at in _inertia_ticks(model, scales):
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
         items.append(Text((at, letter_y), short(value), LABEL, "middle"))
-    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_symbol"], LABEL, "start"))
+    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "

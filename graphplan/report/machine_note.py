@@ -107,7 +107,7 @@ def _reductions(note: Writer, model) -> None:
     loaded = text[f"note_dyn_plans_{kind}symbol_{model.constant}"] if model.constant != "none" else \
         text["note_dyn_moment_symbol" if model.turning else "note_dyn_force_symbol"]
     # The symbols the dynamics sheet draws, so that the table and the drawing name a quantity alike (Jп, Mс).
-    inertia, moment = ((text["dyn_inertia_symbol"], text["kilogram_metre2"]), (loaded, text["newton_metre"])) \
+    inertia, moment = ((text["note_dyn_inertia_symbol"], text["kilogram_metre2"]), (loaded, text["newton_metre"])) \
         if model.turning else ((text["note_dyn_mass_symbol"], text["kilogram"]), (loaded, text["newton"]))
     where = text["dyn_angle_axis"] if model.turning else text["dyn_travel_axis"]
     header = [text["note_dyn_position"], where,
@@ -154,6 +154,9 @@ def _flywheel(note: Writer, flywheel, model) -> None:
                          rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
                          mean=note.n(model.mean_inertia), approximate=note.n(flywheel.approximate),
                          exact=note.n(flywheel.inertia), mertsalov=note.n(flywheel.mertsalov)))
+        if flywheel.approximate < 0:   # the constant-Je estimate spares what the varying Je does not
+            note.para(note.t("note_dyn_approximate_negative", low=note.n(float(np.min(model.inertia))),
+                             high=note.n(float(np.max(model.inertia))), exact=note.n(flywheel.inertia)))
     note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=note.n(flywheel.omega_max), low=note.n(flywheel.omega_min),
                      high_angle=note.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
                      low_angle=note.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
@@ -271,7 +274,7 @@ def _shaft_equation(note: Writer, dynamics, braked: bool = False, slipping: bool
     and the motor's rotor and the clutch's driving half where they turn with it (not while a clutch slips: the
     driving half then has its own equation, and the machine is driven by the clutch's torque)."""
     text = note.text
-    inertia = [text["dyn_inertia_symbol"] + "(φ)"]
+    inertia = [text["note_dyn_inertia_symbol"] + "(φ)"]
     if dynamics.flywheel_inertia > 0:
         inertia.append(text["note_dyn_flywheel_symbol"])
     if not slipping:
