@@ -175,8 +175,12 @@ DIAGRAM = "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]
     (('driving = "constant"', 'resisting = "constant"'), "dynamics.resisting: says the resisting side is constant"),
     (('driving = "constant"', 'constant = "driving"'), "dynamics.constant: is for a linkage"),
     (('driving = "constant"', 'motor = { kind = "constant", torque = 50 }\nrtol = 2'), "dynamics.rtol: must be < 1"),
-    (('delta = 0.05', 'motor = { kind = "constant", torque = 50 }'),
+    # Without δ (nor the shaft its flywheel would be moved to) the machine's own inertia is all the motor turns.
+    ((PRESS[PRESS.index("delta"):], PRESS[PRESS.index("resisting_power"):].replace(
+        "flywheel_shaft_rpm = 1440", 'motor = { kind = "constant", torque = 50 }')),
      "dynamics.inertia: the equation of motion needs the machine's inertia"),
+    (("delta = 0.05\n", ""), ("dynamics.flywheel_shaft_rpm: moves the flywheel sized for delta to another shaft, but no "
+                              "delta is given")),
     ((DIAGRAM + '\ndriving = "constant"',
       'driving_torque = [[0, 10], [180, 30], [360, 10]]\nmotor = { kind = "constant", torque = 50 }'),
      "dynamics.motor: drives the machine in place of its driving side, so the resistance must be a diagram"),
@@ -245,7 +249,8 @@ def test_the_steady_turn_at_the_default_tolerance_holds_the_four_digits_the_note
 
 def test_without_a_flywheel_the_machines_own_inertia_carries_the_swing(tmp_path):
     """No δ: the machine runs on its own 200 kg·m², and the swing grows as that inertia is smaller."""
-    text = PRESS.replace("delta = 0.05\n", "").replace("inertia = 0.0", "inertia = 200.0\n" + MOTOR)
+    text = PRESS.replace("delta = 0.05\n", "").replace("flywheel_shaft_rpm = 1440\n", "").replace(
+        "inertia = 0.0", "inertia = 200.0\n" + MOTOR)
     found = dynamics_of(tmp_path, text)
     motion = found["motion"]
     assert motion["flywheel_inertia"] == 0.0
