@@ -431,3 +431,32 @@ def test_the_largest_measured_error_of_a_position_skips_a_reading_of_what_stands
     value, undefined = re.fullmatch(r"([\d.,]+) \((.*): —\)", cell).groups()
     assert float(value.replace(",", ".")) == pytest.approx(expected, abs=5e-4) and expected > 0.1
     assert "VE" in undefined.split(", ")
+
+
+@pytest.mark.parametrize("sheet", ["A3", "A4"])
+def test_every_sheet_of_the_grid_states_its_mu_v_under_the_title_or_continued(sheet):
+    """The shaper's grid on A3 and A4 went on onto later sheets bare: no heading, no μV, and a plan sheet's
+    title block leaves the scale box empty, so a grader could not measure those plans (a hunt's sheets 3 to 6).
+    Every sheet with plans of the grid now reads the μV they are drawn at, under the title on the first and
+    under the title «continued» on the others."""
+    import xml.etree.ElementTree as ET
+
+    text = scene_text("shaper_six_bar")
+    if sheet == "A4":  # the plans of positions and acceleration an A4 holds, as the refusals advise
+        for key, value in (("acceleration_pole", "81.0"), ("length_scale", "0.004")):
+            text = re.sub(rf"^{key}\s*=.*$", f"{key} = {value}", text, count=1, flags=re.MULTILINE)
+    analysis = analyse(loads(text))
+    scale = analysis.velocity_plans[0].velocity.scale
+    title = strings("en")["velocity_plans_heading"]
+    holding = [page for page in course_sheets(analysis, sheet)
+               if any(name.startswith("velocity-plans") for name in page.panels)]
+    assert len(holding) > 1, sheet  # the grid goes on onto another sheet
+    for k, page in enumerate(holding):
+        lines = ["".join(text.itertext()) for text in ET.fromstring(page.svg()).iter("{http://www.w3.org/2000/svg}text")]
+        values = [float(found[1]) for line in lines for found in [re.fullmatch(r"μV = ([\d.]+) \(m/s\)/mm", line)]
+                  if found]
+        assert values and all(value == pytest.approx(scale, rel=1e-3) for value in values), (sheet, page.number)
+        # The heading's lines (broken where the sheet is narrow) run on into its μV line.
+        at = lines.index(next(line for line in lines if line.startswith("μV")))
+        heading = title if k == 0 else f"{title} (continued)"
+        assert " ".join(lines[:at]).endswith(heading), (sheet, page.number, lines[:at])

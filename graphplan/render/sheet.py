@@ -54,7 +54,7 @@ from .drawings import (
     with_length_scale,
 )
 from .dynamics import TITLE_LAYER
-from .force_rows import has_heading
+from .force_rows import HEADING_LAYER, has_heading
 from .formats import (
     BIGGER,
     FORMATS,
@@ -68,7 +68,19 @@ from .formats import (
 from .numerals import scale_factor
 from .packing import Page, Panel, bigger_holding, height, pack, rooms, smallest_drawings, width
 from .plans import CAPTION_GAP_MM, Arrangement
-from .primitives import MAIN, Arrow, Layer, Polyline, Primitive, Stroke, Text, bounds, moved_layers, prefixed
+from .primitives import (
+    MAIN,
+    Arrow,
+    Layer,
+    Polyline,
+    Primitive,
+    Stroke,
+    Text,
+    bounds,
+    moved_layers,
+    prefixed,
+    text_width,
+)
 from .svg import to_svg
 from .title_block import (
     Details,
@@ -80,6 +92,7 @@ from .title_block import (
     scale_text,
     title_block,
 )
+from .wrapping import fitted
 
 # A plan of positions whose paths of the points (its linework, the longer side, mm) would come out shorter than
 # this to save a sheet would run its outlines and position numbers together: μl is made no larger for fewer
@@ -243,13 +256,38 @@ def velocity_plans_panel(analysis: Analysis) -> Panel:
     """The velocity plans of every position as a panel: in the grid shaped like a sheet, or in another count of
     columns where that fits the room, or each plan apart where no sheet holds the grid."""
     drawing = velocity_plans_drawing(analysis)
-    label = strings(analysis.scene.locale)["velocity_plans_heading"]
+    text = strings(analysis.scene.locale)
+    label = text["velocity_plans_heading"]
+    # The force sheets' "(continued)": one wording for every drawing that goes on onto another sheet.
+    continued = text["force_sheet_continued"].format(title=drawing.title)
     counts = (None, *range(1, min(len(drawing.plans), _MOST_VELOCITY_PLAN_COLUMNS) + 1))
-    first, *others = (replace(split(arrangement, "velocity-plans", label, _row_of(arrangement)), in_order=True)
+    first, *others = (_rows_continued(replace(split(arrangement, "velocity-plans", label, _row_of(arrangement)),
+                                              in_order=True), drawing, continued)
                       for arrangement in velocity_plans_layout.arrangements(drawing, counts))
     others = [way for way in others if _size(way.layers) != _size(first.layers)]
     # Plans drawn at μV, no length: a sheet of them alone leaves its title block's scale box empty.
     return _to_no_length_scale(replace(first, alternatives=tuple(others)))
+
+
+def _rows_continued(panel: Panel, drawing: velocity_plans_layout.VelocityPlans, continued: str) -> Panel:
+    """The grid's rows after the first each under a "continued" heading with μV, going on from the row before.
+
+    The title and μV stand over the first row only: a row that the packing
+    puts on a sheet of its own stood bare, and its plans could not be
+    measured.  A row on the sheet of the row before loses the heading there
+    (:attr:`Panel.continues`), so the grid on one sheet reads as one drawing.
+    """
+    # Broken to no narrower than the first row's title, which a sheet holds, nor than the row's plans.
+    least = text_width(drawing.title, plan_layout.TITLE_SIZE, "bold")
+    rows = []
+    for k, part in enumerate(panel.parts):
+        if k:
+            x0, _, x1, top = part.extent
+            lines = fitted(continued, max(least, x1 - x0), plan_layout.TITLE_SIZE, "bold")
+            heading = Layer(HEADING_LAYER, velocity_plans_layout.heading_texts(lines, drawing.scale_line, (x0, top)))
+            part = replace(part, layers=(*part.layers, heading), continues=panel.parts[k - 1].name)
+        rows.append(part)
+    return replace(panel, parts=tuple(rows))
 
 
 def _to_no_length_scale(panel: Panel) -> Panel:

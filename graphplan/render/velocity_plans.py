@@ -25,6 +25,8 @@ from .primitives import Layer, Text, bounds, bounds_of, moved_layers, prefixed, 
 
 # Between two cells of the grid (mm): less than between a plan sheet's drawings, as the plans are one set.
 CELL_GAP_MM = 15.0
+# The line of μV stands this far (mm) over the plans' top.
+HEADING_GAP_MM = 8.0
 # The width against the height of a sheet of the A series, which the grid is shaped after.
 SHEET_ASPECT = math.sqrt(2.0)
 
@@ -95,10 +97,19 @@ def _grid_arrangement(drawing: VelocityPlans, drawn: Sequence[Sequence[Layer]], 
                             caption_texts(caption, (left + width / 2, top - height - CAPTION_GAP_MM))))
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     # The title goes with the first plan, over it: where a sheet takes the plans apart, μV stays in view.
-    layers.append(Layer(f"{field_name(drawing.plans[0][0])}-title", (
-        Text((left, top + 8.0 + CAPTION_LINE * CAPTION_SIZE), drawing.title, TITLE_SIZE, "start", weight="bold"),
-        Text((left, top + 8.0), drawing.scale_line, CAPTION_SIZE, "start"))))
+    layers.append(Layer(f"{field_name(drawing.plans[0][0])}-title",
+                        heading_texts((drawing.title,), drawing.scale_line, (left, top))))
     return Arrangement(layers, fields)
+
+
+def heading_texts(title_lines: Sequence[str], scale_line: str, corner: tuple[float, float]) -> tuple[Text, ...]:
+    """The title (its lines) and the line of μV over plans whose top left corner is ``corner``: over the whole
+    grid, and over each part of it that goes on onto another sheet, where a grader measures by that μV too."""
+    left, top = corner
+    base = top + HEADING_GAP_MM
+    return (*(Text((left, base + CAPTION_LINE * CAPTION_SIZE + CAPTION_LINE * TITLE_SIZE * (len(title_lines) - 1 - k)),
+                   line, TITLE_SIZE, "start", weight="bold") for k, line in enumerate(title_lines)),
+            Text((left, base), scale_line, CAPTION_SIZE, "start"))
 
 
 def _grid(columns: int, widths: Sequence[float], heights: Sequence[float],
@@ -119,4 +130,4 @@ def _aspect(columns: int, widths: Sequence[float], heights: Sequence[float], dep
     return width / height / SHEET_ASPECT
 
 
-__all__ = ["VelocityPlans", "arrange", "arrangements", "field_name", "layout"]
+__all__ = ["VelocityPlans", "arrange", "arrangements", "field_name", "heading_texts", "layout"]
