@@ -989,3 +989,22 @@ def test_a_refusal_offers_only_rooms_a_drawing_could_stand_in():
     assert sizes and all(min(size) >= 10.0 for size in sizes), said
     # The landscape sheet's room over its title block stays offered: the frame's 277 mm less the margins.
     assert any(width > 250.0 for width, _ in sizes), said
+
+
+@pytest.mark.parametrize("name", ["triad_class_iii", "shaper_six_bar"])
+def test_a_plan_sheet_in_parts_says_continued_over_its_parts_after_the_first(name):
+    """On A3 the acceleration plan of the shaper's position 10 stood on a sheet of its own under the very heading
+    of the sheet before, «position 10», read as a second plan sheet of that position (a hunt's sheets 5 and 6); the
+    force sheets say «continued» there, and so do the plan sheets now."""
+    analysis = analyses_of(name)
+    sheets = course_sheets(analysis, "A3")
+    split_up = 0
+    for position in analysis.plans:
+        holding = [sheet for sheet in sheets if f"plan-{position.number}-heading" in sheet.panels]
+        split_up += len(holding) > 1
+        title = strings(analysis.scene.locale)["plan_sheet_title"].format(number=position.number)
+        for k, sheet in enumerate(holding):
+            heading = [text.text for text in texts([layer(sheet, f"plan-{position.number}-heading-sheet-title")])]
+            assert " ".join(heading) == (title if k == 0 else f"{title} (continued)"), (sheet.number, heading)
+    assert split_up
+

@@ -86,6 +86,10 @@ class Panel:
     # over its parts where they stand on sheets of their own and that costs no sheet; they stood headless, the
     # heading only in the title block, the top drawing against the frame's margin.
     heading: tuple[Layer, ...] = ()
+    # The heading over the parts on the sheets after the first (the title "continued"), as the force sheets' parts
+    # have it: the same title repeated read as another drawing.  Its ways (on one line, broken), the first a sheet
+    # holds taken; none given: ``heading`` on every sheet.
+    continued_heading: tuple[tuple[Layer, ...], ...] = ()
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -441,43 +445,51 @@ _MOST_HEADED_ORDERS = 6
 
 
 def _headed(panel: Panel, pages: list[Page], sheet: str, form: str, turns: Sequence[bool]) -> list[Page] | None:
-    """``pages`` of ``panel``'s parts laid out again under its heading, each page's drawings that much lower, on
-    no more pages; None where the parts need more under a heading."""
-    heading = Panel(f"{panel.name}-heading", panel.heading)
-    # As far over the drawings as the whole sets it over its fields.
+    """``pages`` of ``panel``'s parts laid out again under its heading (the sheets after the first under its
+    continued heading, the first of its ways that the sheet holds), each page's drawings that much lower, on no
+    more pages; None where the parts need more under a heading."""
+    # As far over the drawings as the whole sets its heading over its fields.
     parts_top = bounds([layer for layer in panel.layers if layer not in panel.heading])[3]
-    gap = heading.extent[1] - parts_top
-    room = height(heading) + gap
+    gap = bounds(panel.heading)[1] - parts_top
     headed: list[Page] = []
-    for page in pages:
-        drawings = [drawing for drawing, _, _ in page.placed]
-        fresh = _empty_page(sheet, form, _upright(page))
-        lowered = replace(fresh, area=(*fresh.area[:3], fresh.area[3] - room))
-        if lowered.area[3] <= lowered.area[1] or not all(lowered.place(drawing) for drawing in drawings):
-            # A drawing as tall as the sheet: the heading takes its corner first, the drawings the room left, in
-            # the order they stood in or, where that leaves none, in another.
-            for order in itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS):
-                first = _empty_page(sheet, form, _upright(page))
-                if first.place(heading) and all(first.place(drawing) for drawing in order):
-                    headed.append(first)
-                    break
-            else:
-                return None
-            continue
-        rects = [rect for _, rect, _ in lowered.placed]
-        left, top = min(rect[0] for rect in rects), max(rect[3] for rect in rects)
-        # Over the drawings' left edge, or right of a corner box it would run into.
-        spots = [(x, top + gap, x + width(heading), top + gap + height(heading))
-                 for x in (left, *([lowered.corner[2] + PADDING_MM] if lowered.corner else []))]
-        rect = next((spot for spot in spots if spot[2] <= fresh.area[2] + 1e-6
-                     and not any(_overlap(spot, box) for box in lowered.obstacles())), None)
-        if rect is None:
+    for k, page in enumerate(pages):
+        ways = panel.continued_heading if k and panel.continued_heading else (panel.heading,)
+        fresh = next((found for way in ways
+                      for found in [_under_heading(Panel(f"{panel.name}-heading", way), page, gap, sheet, form)]
+                      if found is not None), None)
+        if fresh is None:
             return None
-        x0, y0, _, _ = heading.extent
-        lowered.placed.append((heading, rect, (rect[0] - x0, rect[1] - y0)))
-        lowered.area = fresh.area
-        headed.append(lowered)
+        headed.append(fresh)
     return headed
+
+
+def _under_heading(heading: Panel, page: Page, gap: float, sheet: str, form: str) -> Page | None:
+    """``page``'s drawings laid out afresh under ``heading``, ``gap`` mm under it; None where the sheet does
+    not hold them so."""
+    drawings = [drawing for drawing, _, _ in page.placed]
+    fresh = _empty_page(sheet, form, _upright(page))
+    lowered = replace(fresh, area=(*fresh.area[:3], fresh.area[3] - height(heading) - gap))
+    if lowered.area[3] <= lowered.area[1] or not all(lowered.place(drawing) for drawing in drawings):
+        # A drawing as tall as the sheet: the heading takes its corner first, the drawings the room left, in
+        # the order they stood in or, where that leaves none, in another.
+        for order in itertools.islice(itertools.permutations(drawings), _MOST_HEADED_ORDERS):
+            cornered = _empty_page(sheet, form, _upright(page))
+            if cornered.place(heading) and all(cornered.place(drawing) for drawing in order):
+                return cornered
+        return None
+    rects = [rect for _, rect, _ in lowered.placed]
+    left, top = min(rect[0] for rect in rects), max(rect[3] for rect in rects)
+    # Over the drawings' left edge, or right of a corner box it would run into.
+    spots = [(x, top + gap, x + width(heading), top + gap + height(heading))
+             for x in (left, *([lowered.corner[2] + PADDING_MM] if lowered.corner else []))]
+    rect = next((spot for spot in spots if spot[2] <= fresh.area[2] + 1e-6
+                 and not any(_overlap(spot, box) for box in lowered.obstacles())), None)
+    if rect is None:
+        return None
+    x0, y0, _, _ = heading.extent
+    lowered.placed.append((heading, rect, (rect[0] - x0, rect[1] - y0)))
+    lowered.area = fresh.area
+    return lowered
 
 
 def width(panel: Panel) -> float:

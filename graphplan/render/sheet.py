@@ -181,10 +181,26 @@ def split(arrangement: Arrangement, name: str, label: str,
     return Panel(name, tuple(arrangement.layers), tuple(parts), label)
 
 
-def _headed(panel: Panel) -> Panel:
-    """A plan sheet as a panel with its title as the heading its parts stand under on sheets of their own."""
+def _headed(panel: Panel, continued: str) -> Panel:
+    """A plan sheet as a panel with its title as the heading its parts stand under on sheets of their own, the
+    sheets after the first under the title "continued" (``continued``, a format of ``{title}``)."""
     heading = tuple(layer for layer in panel.layers if layer.name == plan_layout.TITLE_LAYER)
-    return replace(panel, heading=heading, alternatives=tuple(_headed(way) for way in panel.alternatives))
+    ways = tuple(tuple(_continued(layer, continued, broken) for layer in heading) for broken in (False, True))
+    return replace(panel, heading=heading, continued_heading=tuple(dict.fromkeys(ways)),
+                   alternatives=tuple(_headed(way, continued) for way in panel.alternatives))
+
+
+def _continued(title: Layer, continued: str, broken: bool) -> Layer:
+    """``title``'s layer with its title "continued" (``continued``, a format of ``{title}``), on one line or
+    ``broken`` to no wider than the title (which a sheet holds), its last line where the title stands and the
+    others above."""
+    first = next(item for item in title.items if isinstance(item, Text))
+    line = continued.format(title=first.text)
+    lines = fitted(line, text_width(first.text, first.size, first.weight), first.size, first.weight) if broken \
+        else [line]
+    step = plan_layout.CAPTION_LINE * first.size
+    return Layer(title.name, tuple(replace(first, at=(first.at[0], first.at[1] + step * (len(lines) - 1 - k)),
+                                           text=text) for k, text in enumerate(lines)))
 
 
 def _group_of_field(field_name: str) -> str:
@@ -237,7 +253,8 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
         row, *others = (_plans_at_no_length_scale(split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
                                                         text["plan_sheet_title"].format(number=position.number)))
                         for shape in plan_layout.SHAPES)
-        panels.append(_headed(replace(row, alternatives=tuple(others))))
+        # In the force sheets' words: one "continued" for every drawing that goes on onto another sheet.
+        panels.append(_headed(replace(row, alternatives=tuple(others)), text["force_sheet_continued"]))
     return panels
 
 
