@@ -860,7 +860,7 @@ def test_a_sheet_of_velocity_or_acceleration_plans_alone_has_no_scale_in_its_tit
     sheets = course_sheets(analysis, "A3")
     ratio = scale_text(length_scale(analysis), form_of(analysis.scene.locale), "μl = {value} m/mm")
     plans_alone = [sheet for sheet in sheets
-                   if all(name.startswith("velocity-plans") or name.endswith(("-velocity", "-acceleration"))
+                   if all(name.startswith("velocity-plans") or name.endswith(("-velocity", "-acceleration", "-heading"))
                           for name in sheet.panels)]
     assert plans_alone
     for sheet in sheets:
@@ -1008,3 +1008,15 @@ def test_a_plan_sheet_in_parts_says_continued_over_its_parts_after_the_first(nam
             assert " ".join(heading) == (title if k == 0 else f"{title} (continued)"), (sheet.number, heading)
     assert split_up
 
+
+
+def test_a_sheet_of_plans_under_their_heading_leaves_the_scale_box_empty():
+    """The heading of a plan sheet in parts took its sheet's scale box for a drawing at μl: a sheet holding the
+    acceleration plan alone under it said 1:4 (a hunt's sheet 6), as if the plan were a drawing at μl."""
+    sheets = course_sheets(analyses_of("triad_class_iii"), "A3")
+    plans_alone = [sheet for sheet in sheets if sheet.panels and all(
+        re.fullmatch(r"plan-\d+-(velocity|acceleration|heading)", name) for name in sheet.panels)]
+    assert plans_alone
+    for sheet in plans_alone:
+        assert not re.search(r"\d:\d", " ".join(text.text for text in texts([layer(sheet, "title-block")]))), \
+            sheet.number

@@ -454,8 +454,10 @@ def _headed(panel: Panel, pages: list[Page], sheet: str, form: str, turns: Seque
     headed: list[Page] = []
     for k, page in enumerate(pages):
         ways = panel.continued_heading if k and panel.continued_heading else (panel.heading,)
+        # Lettering, at no length scale: a sheet of plans under it leaves its scale box empty.
         fresh = next((found for way in ways
-                      for found in [_under_heading(Panel(f"{panel.name}-heading", way), page, gap, sheet, form)]
+                      for found in [_under_heading(Panel(f"{panel.name}-heading", way, to_scale=False), page, gap,
+                                                   sheet, form)]
                       if found is not None), None)
         if fresh is None:
             return None
