@@ -1120,8 +1120,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
                *_wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
-               _balancing_line(sheet, lever.balancing, "balancing_by_lever"),
-               _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"),
+               # The symbol alone: "balancing moment" said twice broke each line in two under a narrow lever (the
+               # lever's title and its ΣMp say what Mb is).
+               _balancing_line(sheet, lever.balancing, "balancing_by_lever", named=False),
+               _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
     return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
                              Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
@@ -1159,11 +1161,13 @@ def _arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> floa
 
 # Text.
 
-def _balancing_line(sheet: ForceSheet, value: float, how: str) -> str:
+def _balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = True) -> str:
+    """The balancing load found ``how``, with its words (``balancing moment Mb = …``) or, not ``named``, its
+    symbol alone."""
     text = sheet.text
     name, unit = balancing_symbol(sheet.mechanism, text)
-    what = text["balancing_moment" if name == "Mb" else "balancing_force"]
-    return text[how].format(what=what, name=name, value=significant(value), unit=unit)
+    what = text["balancing_moment" if name == "Mb" else "balancing_force"] if named else ""
+    return text[how].format(what=what, name=name, value=significant(value), unit=unit).strip()
 
 
 def _wrapped(items: Sequence[str]) -> list[str]:
