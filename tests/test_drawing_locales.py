@@ -293,3 +293,37 @@ def test_a_chinese_force_sheet_sets_its_scales_off_with_the_full_width_comma():
                        for item in layer.items if isinstance(item, Text))
     assert "μl = 0.0025 m/mm，力的比例尺 μF = 100 N/mm（箭头不短于 10 mm）" in captions
     assert "m/mm, " not in captions and "最短" not in captions
+
+
+def test_a_chinese_caption_separates_its_clauses_full_width_where_it_has_chinese_words_else_latin():
+    """The rule of the Chinese drawings (as the balancing polygons' lines have it): a caption line with Chinese words
+    in it separates its clauses with ，and ；, a line of symbols and numbers alone with , and ; (a full-width one
+    after Latin alone read as a slip).  The shaper's sheets mixed them: «滑动摩擦：fE = 0.1, φ = arctan f = …,»,
+    «μF = 40 N/mm; μs = 0.0025 m/mm，行程 H = …», «L = 240 mm；  μt = …» (a hunt's sheet 4 and diagrams)."""
+    from graphplan.load_diagrams import of_analysis as load_diagrams_of
+    from graphplan.render import forces as force_layout
+    from graphplan.render import load_diagrams
+    from graphplan.render.drawings import force_sheet
+    from graphplan.starters import starter
+
+    chinese = re.compile(r"[\u4e00-\u9fff]")
+
+    def follows_the_rule(line: str) -> bool:
+        return not re.search(r"[,;] ", line) if chinese.search(line) else not re.search(r"[，；]", line)
+
+    analysis = graphplan.load_text(starter("shaper", "zh")).analyse()
+    words = strings("zh")
+    captions = [line for position in analysis.plans for friction in (False, True)
+                for row in force_layout.rows(force_sheet(analysis, position, friction)).drawings
+                for drawing in row for line in drawing.caption]
+    assert any(line.startswith("滑动摩擦：") for line in captions)
+    assert [line for line in captions if not follows_the_rule(line)] == []
+    # The diagrams' scale lines are broken to their width: read whole, each as its words make it.
+    for layers in (load_diagrams.layout(load_diagrams_of(analysis), words), diagrams.layout(of_analysis(analysis), words)):
+        lines = [item.text for layer in layers for item in layer.items if isinstance(item, Text)]
+        scales = "".join(line for line in lines if "μ" in line or "行程" in line)
+        assert "μ" in scales
+        assert not re.search(r"[,;] μ", scales) and not re.search(r"m；\s*μt", scales), scales
+    loads_scale = " ".join(item.text for layer in load_diagrams.layout(load_diagrams_of(analysis), words)
+                           for item in layer.items if isinstance(item, Text))
+    assert "N/mm；" in loads_scale

@@ -22,6 +22,8 @@ from graphplan.render.drawings import force_sheet, with_length_scale
 
 F = 0.1
 NUMBER = r"([\d.]+)"
+# The clauses of the line after «sliding friction:», Latin or, after Chinese words, full-width (and broken there).
+COMMA = r"(?:, |，\s?)"
 
 
 def caption_of(analysis, position) -> str:
@@ -43,11 +45,11 @@ def test_a_slide_s_coefficient_friction_angle_and_friction_force_are_written_und
         caption = caption_of(analysis, position)  # the SVG writer puts in the locale's decimal mark
         assert strings(locale)["sliding_friction"].split("{")[0].strip() in caption
         if theta is None or theta == 90.0:  # a flat guide: f itself, no reduced f′
-            assert re.search(rf"\bfB = {NUMBER}, φ = arctan f = {NUMBER}°", caption) and "f′" not in caption
-            written_f, angle = map(float, re.search(rf"\bfB = {NUMBER}, φ = arctan f = {NUMBER}°", caption).groups())
+            assert re.search(rf"\bfB = {NUMBER}{COMMA}φ = arctan f = {NUMBER}°", caption) and "f′" not in caption
+            written_f, angle = map(float, re.search(rf"\bfB = {NUMBER}{COMMA}φ = arctan f = {NUMBER}°", caption).groups())
         else:
             given, half, written_f, angle = map(float, re.search(
-                rf"f′B = {NUMBER}/sin {NUMBER}° = {NUMBER}, φ = arctan f′ = {NUMBER}°", caption).groups())
+                rf"f′B = {NUMBER}/sin {NUMBER}° = {NUMBER}{COMMA}φ = arctan f′ = {NUMBER}°", caption).groups())
             assert (given, half) == (F, theta)
         assert written_f == pytest.approx(reduced, rel=1e-3)
         assert angle == pytest.approx(math.degrees(math.atan(reduced)), rel=1e-3)

@@ -661,26 +661,33 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
     friction angle φ = arctan f by which its reaction and friction force lean together, and its friction force
     Ff at the settled reactions, the load the drawing shows as an arrow of its own."""
     text = sheet.text
-    values = []
+    values: list[tuple[str, ...]] = []  # each value as its clauses: f and φ, or Ff
     for pair in sorted((pair for pair in sheet.friction if pair.sliding
                         and (pair.source in group.links or pair.target in group.links)),
                        key=lambda pair: (pair.joint, pair.source, pair.target)):
         where = _pair_name(sheet, pair)
         theta = pair.spec.groove_half_angle
         if not pair.in_vee:
-            coefficient = f"f{where} = {short(pair.coefficient)}, φ = arctan f"
+            coefficient, angle = f"f{where} = {short(pair.coefficient)}", "φ = arctan f"
         else:
             # f′ = f/sin θ, written with the numbers alone: a break inside "sin θ" would part it
             coefficient = (f"f′{where} = {short(pair.spec.f)}/sin {short(math.degrees(theta))}° = "
-                           f"{short(pair.coefficient)}, φ = arctan f′")
-        values.append(f"{coefficient} = {significant(math.degrees(math.atan(pair.coefficient)))}°")
+                           f"{short(pair.coefficient)}")
+            angle = "φ = arctan f′"
+        values.append((coefficient, f"{angle} = {significant(math.degrees(math.atan(pair.coefficient)))}°"))
         load = next((load for load in group.loads if load.name in pair.load_names), None)
         force = abs(load.force) if load is not None else pair.coefficient * abs(
             sheet.forces.reactions[pair.reaction].force)
-        values.append(f"{pair.load_names[0]} = {significant(force)} {text['newton']}")
+        values.append((f"{pair.load_names[0]} = {significant(force)} {text['newton']}",))
     if not values:
         return []
-    return _wrapped([text["sliding_friction"].format(values=values[0]), *values[1:]])
+    # The line after the locale's words takes the locale's separators (full-width after Chinese: "滑动摩擦：fE = 0.1，
+    # φ = …" read with ASCII commas after a full-width colon); the lines of symbols and numbers alone after it
+    # Latin ones, as every such line of the sheet.
+    comma = text["comma"]
+    spaced = ",  " if comma == ", " else comma
+    first = text["sliding_friction"].format(values=spaced.join(comma.join(value) for value in values[:PER_LINE]))
+    return [first, *_wrapped([", ".join(value) for value in values[PER_LINE:]])]
 
 
 def _pair_name(sheet: ForceSheet, pair: FrictionPair) -> str:

@@ -230,7 +230,8 @@ def _caption(diagram: LoadDiagram, words: Mapping[str, str], symbol: str, along:
         travel = words["ld_angle_scale"].format(value=short(along, 4), degrees=short(math.degrees(along)),
                                                 travel=short(math.degrees(diagram.travel)),
                                                 length=short(diagram.travel / along))
-    lines = fitted(f"{values}; {travel}", max(width, 80.0), SCALE_SIZE)
+    # The locale's semicolon: the travel's words (行程) make the line Chinese, its separators full-width.
+    lines = fitted(words["semicolon"].join((values, travel)), max(width, 80.0), SCALE_SIZE)
     lowest = high + AXIS_RUN_MM + 4.0
     items = [Text((0.0, lowest + (len(lines) - 1 - k) * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
              for k, line in enumerate(lines)]
