@@ -327,3 +327,13 @@ def test_a_chinese_caption_separates_its_clauses_full_width_where_it_has_chinese
     loads_scale = " ".join(item.text for layer in load_diagrams.layout(load_diagrams_of(analysis), words)
                            for item in layer.items if isinstance(item, Text))
     assert "N/mm；" in loads_scale
+
+
+def test_chinese_names_the_velocity_and_acceleration_plans_as_the_plan_sheets_do():
+    """The plan sheets say 速度多边形 and 加速度多边形; the grid of every position's plans, the velocity diagram's
+    legend and the curve of Je read off the plans said 速度图, another term for the same drawing (a hunt's zh sheets)."""
+    words = strings("zh")
+    assert (words["velocity_plan_title"], words["acceleration_plan_title"]) == ("速度多边形", "加速度多边形")
+    assert [key for key, value in words.items() if "速度图" in value] == []
+    for key in ("velocity_plans_heading", "kd_plans", "dyn_inertia_plans", "velocity_plan_errors"):
+        assert words["velocity_plan_title"] in words[key], key
