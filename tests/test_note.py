@@ -842,3 +842,14 @@ def test_a_slider_driven_backward_keeps_the_sign_of_its_rate_and_gives_the_modul
     against = {"en": "against the direction of its guide", "ru": "противоположную её положительному направлению",
                "zh": "与导路的正向相反"}[locale]
     assert note.count(against) == 2 * len(analysis.plans)
+
+
+
+def test_a_russian_note_names_each_group_s_kind_grammatically():
+    """«Группа III(3,4,5,6), вид трёхповодковая»: an adjective with no noun, in a heading of the note (a hunt's
+    triad).  The kind stands after «вид:» as a name, the triad's with its noun, a dyad's by its pairs."""
+    triad = note_markdown(analyse(dataclasses.replace(graphplan.load(FIXTURES / "triad_class_iii.toml"), locale="ru")))
+    assert re.search(r"\*\*Группа III\S*, вид: трёхповодковая группа\*\*", triad)
+    assert "вид трёхповодковая" not in triad
+    dyads = re.findall(r"\*\*Группа II(?!I)\S*, вид: (\S+)", note_of("ratchet_crank_rocker", "ru"))
+    assert dyads and all(set(kind) <= set("ВП") for kind in dyads)
