@@ -593,3 +593,23 @@ def test_the_note_shows_the_dynamics_in_parts_each_printed_at_a_readable_size(tm
     assert sorted(shown) == sorted(groups(out / "dynamics.svg")) and TITLE_LAYER in groups(parts[0])
     note = (out / "note.md").read_text(encoding="utf-8")
     assert [f"dynamics-{k}.svg" for k in range(1, len(parts) + 1)] == re.findall(r"\]\((dynamics[-\d]*\.svg)\)", note)
+
+
+@pytest.mark.parametrize("name", CRANKS)
+def test_the_ordinate_is_ticked_down_to_within_half_a_step_of_the_lowest_value(name):
+    """The engine's resisting moment, a constant −71.6 N·m, ran under an ordinate ticked 0, 100, 200 alone: under
+    the φ numbers it read as a second abscissa (a hunt's zh dynamics sheet).  The ordinate now runs on to the tick
+    under a value that lies over half a step under the lowest tick."""
+    model = model_of(name)
+    layers = {layer.name: layer for layer in layout(model)}
+    for diagram, curves in (("moments", (model.driving, model.resisting)),
+                            ("works", (model.driving_work, model.resisting_work)), ("energy", (model.energy,))):
+        ticks = sorted(float(item.text.replace("−", "-")) for item in layers[diagram].items
+                       if isinstance(item, Text) and item.anchor == "end")
+        step = ticks[1] - ticks[0]
+        lowest = min(float(np.min(curve)) for curve in curves)
+        assert lowest >= ticks[0] - step / 2 - 1e-9, (diagram, ticks, lowest)
+    if name == "engine_slider_crank":
+        moments = sorted(float(item.text.replace("−", "-")) for item in layers["moments"].items
+                         if isinstance(item, Text) and item.anchor == "end")
+        assert moments[0] < 0 and moments[0] <= float(np.min(model.resisting))
