@@ -481,3 +481,26 @@ def test_the_key_of_the_rings_stands_under_the_velocity_diagram_that_has_them():
     curves_bottom = min(y for layer in velocity if layer.name == "velocity-curves"
                         for item in layer.items if isinstance(item, Polyline) for _, y in item.points)
     assert key.at[1] < curves_bottom
+
+
+@pytest.mark.parametrize("name", ["crank-rocker", "shaper", "slotted-lever", "slider-crank"])
+def test_every_position_number_stands_under_the_axis_as_its_tick_stands_over_it(name):
+    """In the crank-rocker's ε4(φ) the number 9, pushed off the curve crossing under it, stood up on the φ axis
+    line (and 2 over it, beside the curve), read as lettering the curve (a hunt's zh sheet 1).  A number moved off
+    the curve stays under the axis, on a leader where it must."""
+    import graphplan
+    from graphplan.kinematic_diagrams import of_analysis
+    from graphplan.starters import starter
+
+    analysis = graphplan.load_text(starter(name, "zh")).analyse()
+    layers = {layer.name: layer for layer in diagrams.layout(of_analysis(analysis))}
+    checked = 0
+    for kind in ("displacement", "velocity", "acceleration"):
+        (axis,) = [item for item in layers[f"{kind}-axes"].items if isinstance(item, Arrow) and item.key == f"{kind}-phi-axis"]
+        numbers = [item for item in layers[f"{kind}-labels"].items
+                   if isinstance(item, Text) and item.size == diagrams.NUMBER_SIZE and item.text.isdigit()]
+        assert numbers
+        for number in numbers:
+            assert text_extent(number)[3] < axis.start[1], (kind, number.text)
+        checked += len(numbers)
+    assert checked

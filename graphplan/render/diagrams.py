@@ -61,6 +61,8 @@ CAPTION_SIZE = 4.0
 SCALE_SIZE = 3.2
 AXIS_LABEL_SIZE = 3.5
 NUMBER_SIZE = 2.5
+# A position's number stands at least this far (mm) under the φ axis.
+_NUMBER_CLEARANCE_MM = 0.5
 # How far an axis runs past the curves, and its arrowhead (mm).
 AXIS_RUN_MM = 12.0
 AXIS_HEAD_MM = 3.0
@@ -197,7 +199,8 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     labels = [Text((-2.0, high + AXIS_RUN_MM - 1.0), words["kd_axis"].format(symbol=symbol, unit=unit),
                    AXIS_LABEL_SIZE, "end"),
               Text((length + AXIS_RUN_MM, -5.0), _abscissa(record, words), AXIS_LABEL_SIZE, "middle")]
-    anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2)
+    # Each number under the axis, as its tick stands over it: one moved up off the curve stood on the axis line.
+    anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2, under=-_NUMBER_CLEARANCE_MM)
                for k, (x, number) in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True))
                if ticked(k)]
     if pole is not None:

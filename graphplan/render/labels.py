@@ -45,6 +45,9 @@ class Anchor:
     size: float = 3.0
     prefer: float = math.pi / 4
     colour: str = "black"
+    # The height (mm) the label stays wholly under, where its side of a line means something: a position's number
+    # under the φ axis, where one set above it beside the curve read as lettering the curve.  None: any side.
+    under: float | None = None
 
 
 def text_box(text: Text) -> BaseGeometry:
@@ -205,6 +208,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
         # it: beside the point already, it has no leader to draw.
         cost[led[shapely.intersects(shapes[led], points[index])]] += OVERLAP
+        if anchor.under is not None:
+            cost[candidates[:, 3] > anchor.under + 1e-9] += OVERLAP
         covering = covers[:len(shapes)] > 0
         if off_lines:
             cost[covering] += LINE_COVERED
