@@ -23,7 +23,7 @@ from graphplan.report.pdf import note_pdf
 
 pdfium = pytest.importorskip("pypdfium2")
 try:
-    import weasyprint  # noqa: F401
+    import weasyprint
 except (ImportError, OSError) as error:  # OSError: no Pango library
     pytest.skip(f"WeasyPrint cannot typeset here: {error}", allow_module_level=True)
 
@@ -228,3 +228,20 @@ def test_a_bold_paragraph_that_heads_what_follows_never_ends_a_page():
         for number, lines in enumerate(pages, 1):
             body = lines[:-1] if lines and lines[-1] == str(number) else lines
             assert body[-1] != "Group II(5,6), kind RRP", (filler, number)
+
+
+def test_a_unit_is_never_broken_across_lines_of_the_pdf():
+    """WeasyPrint broke a Chinese line of the note after a unit's slash: «（g = 9.81 m/» ended one line and «s²）»
+    opened the next (a hunt's zh note.pdf, p. 21).  A paragraph set with its unit at every place along the line
+    breaks before or after each unit, never inside it."""
+    from weasyprint.formatting_structure import boxes
+
+    from graphplan.report.html import to_html
+
+    sentence = "重力 G = m·g（g = 9.81 m/s²），μV = 0.02 (m/s)/mm，平衡力矩 Mb = 49.02 N·m，ω = 12.5 rad/s。"
+    page = to_html("\n\n".join("按" * shift + sentence for shift in range(60)), "units", "zh", symbols=True)
+    lines = ["".join(text.text for text in line.descendants() if isinstance(text, boxes.TextBox))
+             for laid in weasyprint.HTML(string=page).render().pages
+             for line in laid._page_box.descendants() if isinstance(line, boxes.LineBox)]
+    assert len(lines) > 60  # the sentence does break, somewhere
+    assert [line for line in lines if line.rstrip().endswith(("/", "·"))] == []

@@ -33,6 +33,7 @@ th, td { border: 1px solid #999; padding: 0.2em 0.55em; vertical-align: top; }
 th { background: #eee; }
 td { font-variant-numeric: tabular-nums; }
 td.word { white-space: nowrap; }
+span.unit { white-space: nowrap; }
 @page { size: A4; margin: 20mm 10mm 20mm 30mm;
         @bottom-center { content: counter(page); font-family: FONTS; font-size: 9pt; } }
 p.table-caption { margin-bottom: 0.3em; }
@@ -77,6 +78,35 @@ _LEAD = re.compile(r"<p>(<strong>(?:(?!</strong>).)*</strong>)</p>\n", re.DOTALL
 # A cell of one word (a number, a unit, a symbol): a narrow column must not break it after a slash (рад/с²).
 _ONE_WORD_CELL = re.compile(r"<td((?: [^>]*)?)>((?:(?!</td>)[^\s])+)</td>")
 
+# A unit of measure (m/s², (m/s)/mm, N·m, кг·м²) or a quotient of letters (Mb0/Mb): never broken across lines.
+# In a Chinese line WeasyPrint broke one after its slash, «（g = 9.81 m/» ending a line and «s²）» opening the next.
+_UNIT_CHARACTER = r"[A-Za-zА-Яа-яЁёΑ-Ωα-ω0-9()²³⁻¹′°.,]"
+_UNIT = re.compile(rf"{_UNIT_CHARACTER}+(?:[/·]{_UNIT_CHARACTER}+)+")
+_TAG = re.compile(r"(<[^>]*>)")
+
+
+def _units_unbroken(body: str) -> str:
+    """``body`` with each unit in its text (not in its tags) set in a span that is not broken across lines; a
+    product that runs on into or out of a symbol's index (λ·M<sub>N</sub>, J<sub>rot</sub>·u²) is a formula, left
+    as it is."""
+    pieces = _TAG.split(body)
+
+    def spanned(k: int) -> str:
+        piece = pieces[k]
+        indexed_after = k + 1 < len(pieces) and pieces[k + 1] in ("<sub>", "<sup>")
+        indexed_before = k > 0 and pieces[k - 1] in ("</sub>", "</sup>")
+
+        def unit(match: re.Match) -> str:
+            if (indexed_after and not piece[match.end():].strip("/·")) or \
+                    (indexed_before and not piece[:match.start()].strip("/·")):
+                return match[0]
+            return f'<span class="unit">{match[0]}</span>'
+
+        return _UNIT.sub(unit, piece)
+
+    return "".join(piece if piece.startswith("<") else spanned(k) for k, piece in enumerate(pieces))
+
+
 def symbols_html(text: str) -> str:
     """Escape ``text`` for HTML and set the indices of its symbols as subscripts and superscripts."""
     return "".join(html.escape(piece, quote=False) if isinstance(piece, str) else _symbol_html(piece)
@@ -114,6 +144,7 @@ def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False, au
     body = _LEAD.sub(r'<p class="lead">\1</p>\n', body)
     body = _ONE_WORD_CELL.sub(r'<td class="word"\1>\2</td>', body)
     body = _TABLE.sub(_classed_table, body)
+    body = _units_unbroken(body)
     return (f'<!DOCTYPE html>\n<html lang="{html.escape(lang, quote=True)}">\n<head>\n<meta charset="utf-8">\n'
             f'<meta name="viewport" content="width=device-width, initial-scale=1">\n'
             f"<title>{html.escape(title, quote=False)}</title>\n"
