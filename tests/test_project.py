@@ -214,3 +214,18 @@ def test_a_box_breaks_its_words_at_the_spaces_where_that_sets_them_as_large():
     assert lines == ["清华大学", "机械系 21 级"]
     # An unspaced Chinese title still breaks between its ideographs.
     assert len(fitted("曲柄摇杆机构运动分析与力分析", (0.0, 0.0, 30.0, 18.0), 3.5, lines=2)) == 2
+
+
+def test_a_chinese_title_broken_as_evenly_either_way_puts_the_shorter_line_first():
+    """«单缸内燃机曲柄滑块机构» stood in the GB/T title box as «单缸内燃机曲 / 柄滑块机构», 曲柄 (crank) cut in two
+    (a hunt's engine sheets): filling the first line took six ideographs of eleven.  Of the breaks as narrow, a
+    Chinese title takes the one with the shorter lines first, short over long, as GB/T 9704 sets a title."""
+    from graphplan.render.title_block import TitleBlockFields, labels, title_block
+
+    fields = TitleBlockFields(title="单缸内燃机曲柄滑块机构", drawing="动力学分析", scale="", sheet=7, sheets=7,
+                              language="zh")
+    texts = [item.text for item in title_block("gb", fields, labels("zh"), (0.0, 0.0)) if isinstance(item, Text)]
+    assert texts[texts.index("单缸内燃机") + 1] == "曲柄滑块机构"
+    # A Latin title, and one broken at its spaces, fill their first line as before.
+    assert [item.text for item in fitted("Crank-rocker of a ratchet feed", (0.0, 0.0, 40.0, 18.0), 4.0,
+                                         lines=2)] == ["Crank-rocker of", "a ratchet feed"]

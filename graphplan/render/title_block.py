@@ -500,7 +500,32 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
             high = middle
         else:
             low = middle
-    return [_joined(row) for row in filled(high)]
+    rows = filled(high)
+    if not at_spaces and any(is_wide(character) for character in value):
+        # Of the breaks as narrow, Chinese takes the one with the shorter lines first (GB/T 9704 sets a title
+        # broken over lines as a trapezoid, short over long): «单缸内燃机 / 曲柄滑块机构», where filling the first
+        # line cut 曲柄 in two.  The same lines filled from the end, as many and no wider.
+        backwards = [list(reversed(row)) for row in reversed(_filled_from_end(tokens, word, space, high))]
+        if len(backwards) == len(rows):
+            rows = backwards
+    return [_joined(row) for row in rows]
+
+
+def _filled_from_end(tokens: Sequence[tuple[str, bool]], word: Sequence[float], space: float,
+                     limit: float) -> list[list[tuple[str, bool]]]:
+    """``tokens`` filled greedily into lines no wider than ``limit`` from the last token back: the lines in reverse
+    order, each's tokens last first."""
+    rows: list[list[tuple[str, bool]]] = [[]]
+    width = 0.0
+    for k in range(len(tokens) - 1, -1, -1):
+        # The space before the token after this one, which joins the two on a line.
+        joint = space if rows[-1] and tokens[k + 1][1] else 0.0
+        if rows[-1] and width + joint + word[k] > limit:
+            rows.append([])
+            width, joint = 0.0, 0.0
+        rows[-1].append(tokens[k])
+        width += joint + word[k]
+    return rows
 
 
 def fitted(value: str, box: tuple[float, float, float, float], size: float, anchor: str = "middle",
