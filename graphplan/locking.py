@@ -55,7 +55,7 @@ def locked_between(mechanism: Mechanism, positions: PositionSet, friction: tuple
     def locked(values: np.ndarray, motion: Motion | None = None) -> np.ndarray:
         return _locked(mechanism, positions, friction, values, motion)
 
-    spans, middles = _stretches(mechanism, positions, locked, sweep, swept)
+    spans, middles = _stretches(mechanism, positions, locked, sweep, locked(sweep, swept))
     culprits = pairs_that_lock(mechanism, positions, friction, middles)
     return tuple(replace(found, pairs=pairs) for found, pairs in zip(spans, culprits, strict=True))
 
@@ -72,23 +72,26 @@ def turned_round_between(mechanism: Mechanism, positions: PositionSet, friction:
     friction outweighs what is left of them over a degree or so, which says nothing of the mechanism."""
     if not friction:
         return ()
-    scale = balancing_scale(_balancing(mechanism, positions, friction, sweep, swept)[0])
+    # The sweep's own balancing gives the scale and its flags: solved once, not again for each.
+    swept_balancing = _balancings(mechanism, positions, friction, sweep, swept)
+    scale = balancing_scale(swept_balancing[0][0])
 
-    def held(values: np.ndarray, motion: Motion | None = None) -> np.ndarray:
-        ideal, rubbing, moving = _balancing(mechanism, positions, friction, values, motion)
-        alone, alone_rubbing, alone_moving = _balancing(mechanism, positions, friction, values, motion, driving=True)
+    def turned(balancings: tuple[tuple[np.ndarray, np.ndarray, np.ndarray], ...]) -> np.ndarray:
+        (ideal, rubbing, moving), (alone, alone_rubbing, alone_moving) = balancings
         return (moving & turned_round(mechanism, ideal, rubbing, scale)
                 & alone_moving & turned_round(mechanism, alone, alone_rubbing, scale))
 
-    return tuple(_stretches(mechanism, positions, held, sweep, swept)[0])
+    def held(values: np.ndarray) -> np.ndarray:
+        return turned(_balancings(mechanism, positions, friction, values))
+
+    return tuple(_stretches(mechanism, positions, held, sweep, turned(swept_balancing))[0])
 
 
-def _stretches(mechanism: Mechanism, positions: PositionSet, flagged: Callable[..., np.ndarray],
-               sweep: np.ndarray, swept: Motion) -> tuple[list[LockedSpan], np.ndarray]:
-    """The runs of the sweep where ``flagged`` (at driver coordinates, with their motion where it is known)
-    holds, narrowed at both ends, between two analysed positions; with the middle of each."""
+def _stretches(mechanism: Mechanism, positions: PositionSet, flagged: Callable[[np.ndarray], np.ndarray],
+               sweep: np.ndarray, marked: np.ndarray) -> tuple[list[LockedSpan], np.ndarray]:
+    """The runs of the sweep where ``flagged`` (at driver coordinates) holds, ``marked`` at the sweep's own samples,
+    narrowed at both ends, between two analysed positions; with the middle of each."""
     cyclic = mechanism.driver.cyclic
-    marked = flagged(sweep, swept)
     samples = sweep
     if cyclic:
         marked, samples = marked[:-1], sweep[:-1]
@@ -172,35 +175,39 @@ def _locked(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fricti
     not lock: its own warning tells of it)."""
     if len(values) == 0:
         return np.zeros(0, dtype=bool)
-    found = _equilibria(mechanism, positions, values, motion, friction)[-1]
+    motion, _, loads = _loads_at(mechanism, positions, values, motion)
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        found = equilibrium(mechanism, motion, loads, friction)
     return found.locked & ~found.singular
 
 
-def _balancing(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
-               values: np.ndarray, motion: Motion | None = None,
-               driving: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _balancings(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
+                values: np.ndarray, motion: Motion | None = None) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], ...]:
     """The balancing load without and with ``friction`` at each driver coordinate of ``values``, and where the
-    mechanism moves with it (neither singular nor locked); with ``driving``, of the loads alone that give the
-    mechanism power there."""
+    mechanism moves with it (neither singular nor locked): of all the loads, then of the loads alone that give the
+    mechanism power there (the others 0); the motion and the loads found once for both."""
     if len(values) == 0:
-        return np.zeros(0), np.zeros(0), np.zeros(0, dtype=bool)
-    ideal, rubbing = _equilibria(mechanism, positions, values, motion, (), friction, driving=driving)
-    return ideal.balancing, rubbing.balancing, ~rubbing.locked & ~rubbing.singular & ~ideal.singular
+        empty = np.zeros(0), np.zeros(0), np.zeros(0, dtype=bool)
+        return empty, empty
+    motion, state, loads = _loads_at(mechanism, positions, values, motion)
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        driving = tuple(_where(np.asarray(power((load,), state)) > 0, load) for load in loads)
+        found = []
+        for chosen in (loads, driving):
+            ideal, rubbing = (equilibrium(mechanism, motion, chosen, rubs) for rubs in ((), friction))
+            found.append((ideal.balancing, rubbing.balancing, ~rubbing.locked & ~rubbing.singular & ~ideal.singular))
+    return tuple(found)
 
 
-def _equilibria(mechanism: Mechanism, positions: PositionSet, values: np.ndarray, motion: Motion | None,
-                *frictions: tuple[FrictionPair, ...], driving: bool = False) -> list:
-    """The equilibrium at each driver coordinate of ``values`` with each of ``frictions`` in turn; with
-    ``driving`` under the loads alone that give the mechanism power there (the others 0)."""
+def _loads_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray,
+              motion: Motion | None) -> tuple[Motion, object, tuple[Load, ...]]:
+    """The motion at each driver coordinate of ``values`` (``motion`` where known), its state, and the loads there."""
     if motion is None:
         motion = solve(mechanism, values, positions.reference, tolerant=True)
     acting = activity_at(mechanism, positions, values, tolerant=True)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
         state = motion_state(motion)
-        loads = link_loads(mechanism, state, acting)
-        if driving:
-            loads = tuple(_where(np.asarray(power((load,), state)) > 0, load) for load in loads)
-        return [equilibrium(mechanism, motion, loads, friction) for friction in frictions]
+        return motion, state, link_loads(mechanism, state, acting)
 
 
 def _where(keep: np.ndarray, load: Load) -> Load:
