@@ -219,9 +219,8 @@ class EquivalentModel:
         less Simpson's.  The trapezoid's error is of the step squared, Simpson's of its fourth power on a smooth
         stretch, so their difference is the trapezoid's error, and more than Simpson's; where a corner falls
         between two samples unseen, both are off by as much, and the difference says so."""
-        net = self.driving + self.resisting
-        trapezoid_total = float(cumulative_trapezoid(net, self.coordinate)[-1]) if net.size > 1 else 0.0
-        return abs(trapezoid_total - float(self.integral(net)[-1]))
+        trapezoid_total = float(trapezoid(self.moment, self.coordinate)) if self.moment.size > 1 else 0.0
+        return abs(trapezoid_total - float(self.integral(self.moment)[-1]))
 
     @property
     def inertia_is_constant(self) -> bool:
@@ -639,6 +638,8 @@ def _integral(values: np.ndarray, coordinate: np.ndarray, breaks: np.ndarray) ->
     """∫ values dψ from the first sample to each: Simpson's rule (scipy's, for unequal steps) on each stretch
     between two breaks, whose values are smooth; the trapezoid across a stretch of two samples."""
     values = np.asarray(values, dtype=float)
+    if len(breaks) == len(coordinate):   # every sample a break (a load diagram's vertices): the trapezoid, at once
+        return cumulative_trapezoid(values, coordinate, initial=0.0)
     found = np.zeros(len(coordinate))
     for start, stop in itertools.pairwise(breaks):
         stretch = slice(start, stop + 1)
