@@ -592,25 +592,28 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         _resonance_caution(note, close)
     if spec.transmissibility is not None and response.isolation_ratio is not None:
         designed = response.isolation_stiffness
-        isolating = shown_operand(note, response.isolation_ratio, [(lambda r: m * (w / r) ** 2, note.n(designed))])
         if spec.on_shaft:
             isolating = _shaft_isolation(note, spec, response, mass=mass, omega=omega, stiffness=stiffness,
                                          ratio=ratio, tr=tr)
-        elif spec.damping_ratio > 0:
-            # The ratio is found at the same ζ: the mounts need dampers to match.  The present ones,
-            # c = 2ζ·√(k·M), keep ζ only on mounts as stiff as now: on softer ones they give more, on stiffer less.
-            def damping_for(stiffness: float) -> float:  # c that gives the scene's ζ on mounts of that stiffness
-                return 2.0 * spec.damping_ratio * math.sqrt(stiffness * spec.mass)
-
-            kept = note.n(float(damping_ratio(damping_for(spec.stiffness), designed, spec.mass)))
-            present = "" if kept == zeta else note.t(
-                "note_vib_kept_softer" if designed < spec.stiffness else "note_vib_kept_stiffer", zeta=kept)
-            note.para(note.t("note_vib_isolation_damped", wanted=note.n(spec.transmissibility), ratio=isolating,
-                             mass=mass, omega=omega, stiffness=note.n(designed), zeta=zeta,
-                             damping=note.n(damping_for(designed)), kept=present))
         else:
-            note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=isolating, mass=mass,
-                             omega=omega, stiffness=note.n(designed)))
+            isolating = shown_operand(note, response.isolation_ratio,
+                                      [(lambda r: m * (w / r) ** 2, note.n(designed))])
+            if spec.damping_ratio > 0:
+                # The ratio is found at the same ζ: the mounts need dampers to match.  The present ones,
+                # c = 2ζ·√(k·M), keep ζ only on mounts as stiff as now: on softer ones they give more, on stiffer
+                # less.
+                def damping_for(stiffness: float) -> float:  # c that gives the scene's ζ on mounts that stiff
+                    return 2.0 * spec.damping_ratio * math.sqrt(stiffness * spec.mass)
+
+                kept = note.n(float(damping_ratio(damping_for(spec.stiffness), designed, spec.mass)))
+                present = "" if kept == zeta else note.t(
+                    "note_vib_kept_softer" if designed < spec.stiffness else "note_vib_kept_stiffer", zeta=kept)
+                note.para(note.t("note_vib_isolation_damped", wanted=note.n(spec.transmissibility), ratio=isolating,
+                                 mass=mass, omega=omega, stiffness=note.n(designed), zeta=zeta,
+                                 damping=note.n(damping_for(designed)), kept=present))
+            else:
+                note.para(note.t("note_vib_isolation", wanted=note.n(spec.transmissibility), ratio=isolating, mass=mass,
+                                 omega=omega, stiffness=note.n(designed)))
         # Above √2 a larger r passes less: mounts softer than the designed ones isolate better than asked.  (A shaft
         # that does has been told so: it needs no mounts.)
         if (not spec.on_shaft and response.transmissibility < spec.transmissibility
