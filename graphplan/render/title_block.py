@@ -35,7 +35,7 @@ from importlib import resources
 
 from ..locale import strings
 from ..scales import format_scale
-from .primitives import MAIN, Polyline, Primitive, Stroke, Text, is_wide, text_width
+from .primitives import MAIN, Polyline, Primitive, Stroke, Text, has_wide, is_wide, text_width
 
 # The strings of the three forms and of what graphplan writes into them are the locale files' ``tb_`` keys;
 # every locale has every key, so that any form can be drawn in any language.
@@ -501,7 +501,7 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
         else:
             low = middle
     rows = filled(high)
-    if not at_spaces and any(is_wide(character) for character in value):
+    if not at_spaces and has_wide(value):
         # Of the breaks as narrow, Chinese takes the one with the shorter lines first (GB/T 9704 sets a title
         # broken over lines as a trapezoid, short over long): «单缸内燃机 / 曲柄滑块机构», where filling the first
         # line cut 曲柄 in two.  The same lines filled from the end, as many and no wider.
