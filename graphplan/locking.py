@@ -182,7 +182,8 @@ def _locked(mechanism: Mechanism, positions: PositionSet, friction: tuple[Fricti
 
 
 def _balancings(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
-                values: np.ndarray, motion: Motion | None = None) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], ...]:
+                values: np.ndarray, motion: Motion | None = None
+                ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], ...]:
     """The balancing load without and with ``friction`` at each driver coordinate of ``values``, and where the
     mechanism moves with it (neither singular nor locked): of all the loads, then of the loads alone that give the
     mechanism power there (the others 0); the motion and the loads found once for both."""
