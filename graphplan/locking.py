@@ -146,7 +146,10 @@ def pairs_that_lock(mechanism: Mechanism, positions: PositionSet, friction: tupl
     values = np.asarray(values, dtype=float)
     if len(friction) == 1:
         return tuple(friction for _ in values)
-    alone = [_locked(mechanism, positions, (pair,), values) for pair in friction]
+    if len(values) == 0:
+        return ()
+    motion, _, loads = _loads_at(mechanism, positions, values, None)
+    alone = [_locks(mechanism, motion, loads, (pair,)) for pair in friction]
     return tuple(tuple(pair for pair, locks in zip(friction, alone, strict=True) if locks[k])
                  for k in range(len(values)))
 
@@ -171,11 +174,17 @@ def _narrowed(flagged: Callable[..., np.ndarray], free: np.ndarray, held: np.nda
 
 def _locked(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
             values: np.ndarray, motion: Motion | None = None) -> np.ndarray:
-    """Whether the friction locks the mechanism at each driver coordinate of ``values`` (a singular one does
-    not lock: its own warning tells of it)."""
+    """Whether the friction locks the mechanism at each driver coordinate of ``values``."""
     if len(values) == 0:
         return np.zeros(0, dtype=bool)
     motion, _, loads = _loads_at(mechanism, positions, values, motion)
+    return _locks(mechanism, motion, loads, friction)
+
+
+def _locks(mechanism: Mechanism, motion: Motion, loads: tuple[Load, ...],
+           friction: tuple[FrictionPair, ...]) -> np.ndarray:
+    """Whether ``friction`` locks the mechanism under ``loads`` in ``motion`` (a singular position does not lock:
+    its own warning tells of it)."""
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
         found = equilibrium(mechanism, motion, loads, friction)
     return found.locked & ~found.singular
