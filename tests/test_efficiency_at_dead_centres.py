@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 
 from graphplan.analysis import analyse
 from graphplan.report import forces as force_report
@@ -25,25 +26,7 @@ RADIUS, ROD, PUSH = 0.1, 0.4, 1000.0
 
 def scene_text(f: float, omega: float) -> str:
     # Started at 30° as the user's scene was: 180° and 0° are then reached by adding steps, not given.
-    return f"""
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {RADIUS}
-omega = {omega}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
+    return central_slider_crank(RADIUS, ROD, omega) + f"""
 [[loads]]
 kind = "force"
 link = 4

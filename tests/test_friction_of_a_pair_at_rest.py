@@ -15,6 +15,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 from scipy.optimize import brentq
 
 from graphplan.analysis import analyse
@@ -23,25 +24,7 @@ from graphplan.scene import loads as scene_from_text
 
 RADIUS, ROD, PUSH, OMEGA, RHO = 0.1, 0.4, 1000.0, 10.0, 0.2 * 0.02
 
-SCENE = f"""
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {RADIUS}
-omega = {OMEGA}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
+SCENE = central_slider_crank(RADIUS, ROD, OMEGA) + f"""
 [[loads]]
 kind = "force"
 link = 4

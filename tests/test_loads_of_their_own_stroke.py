@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 
 import graphplan
 from graphplan.analysis import analyse
@@ -21,26 +22,7 @@ RADIUS, ROD, OMEGA = 0.075, 0.3, 20.0 * math.pi
 DIAGRAM = [[0.0, 0.0], [0.2, 400.0], [0.4, 1000.0], [0.6, 2200.0], [0.75, 5300.0], [1.0, 5300.0]]
 
 
-CRANK = f"""
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {RADIUS}
-omega = {OMEGA}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
-"""
+CRANK = central_slider_crank(RADIUS, ROD, OMEGA)
 
 
 def twin(second_pin_deg: float, second_guide_deg: float, stroke: str) -> str:

@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 from scipy.optimize import brentq
 
 from graphplan.analysis import analyse
@@ -27,25 +28,7 @@ RHO = JOURNAL_F * JOURNAL_R
 
 
 def engine(omega: float) -> str:
-    return f"""
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {RADIUS}
-omega = {omega}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
+    return central_slider_crank(RADIUS, ROD, omega) + f"""
 [[loads]]
 kind = "force"
 link = 4
@@ -128,25 +111,7 @@ def test_where_the_loads_barely_outweigh_each_other_the_friction_holding_the_res
     must drive), but M alone puts no force on the pivot and turns the mechanism freely.  No self-locking: the
     shaper starter's inertia loads and weights warned so three times."""
     rho, moment, push = 0.005, 50.0, 1000.0
-    text = f"""
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = 10.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.4
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
+    text = central_slider_crank(0.1, 0.4, 10.0) + f"""
 [[loads]]
 kind = "force"
 link = 4
