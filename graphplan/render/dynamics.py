@@ -26,6 +26,7 @@ from ..dynamics import EquivalentModel
 from ..flywheel import Flywheel, omega_to_rpm
 from ..locale import strings
 from ..scales import fit_scale, format_scale
+from .labels import Anchor, obstacles_of, place_labels
 from .numerals import short
 from .primitives import (
     THIN,
@@ -77,6 +78,13 @@ _RESISTING = Stroke(0.5, "black")
 _CURVE = Stroke(0.5, "black")
 _TANGENT = Stroke(0.35, "#b22222")
 _GRID = Stroke(0.15, "#9a9a9a", (1.0, 1.0))
+# The angles of ωmax and ωmin on ΔT(φ), in the colour of the tangents at ψmax and ψmin that the two speeds set.
+_SPEED_EXTREME = Stroke(0.35, _TANGENT.colour)
+_SPEED_ORDINATE = Stroke(0.2, _TANGENT.colour)
+SPEED_TICK_MM = 2.0
+# A plan position's point on the energy–mass diagram and the size of its number.
+POSITION_DOT_MM = 0.5
+POSITION_NUMBER = 2.5
 
 @dataclass(frozen=True)
 class Scales:
@@ -157,6 +165,8 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
     energy = _diagram(x, [(model.energy, _CURVE, "")], scales.energy, model, words["dyn_energy_axis"],
                       words["dyn_energy_scale"].format(value=format_scale(scales.energy)), words["dyn_energy"], scales,
                       words)
+    if flywheel is not None:
+        energy += _speed_extremes(model, flywheel, scales, energy)
     layers: list[Layer] = []
     bottom = GAP_MM
     for name, items in (("moments", moments), ("works", works), ("energy", energy)):
@@ -264,6 +274,24 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
     return items
 
 
+def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales,
+                    drawn: Sequence[Primitive]) -> list[Primitive]:
+    """The crank angles of ωmax and ωmin on ΔT(φ): a tick across the φ axis, named, and a thin ordinate from it to
+    the curve, as a course project marks them.  With Je varying they need not lie at the extremes of ΔT."""
+    items: list[Primitive] = []
+    anchors: list[Anchor] = []
+    for name, index in (("ωmax", flywheel.index_max), ("ωmin", flywheel.index_min)):
+        x = float(model.coordinate[index]) / scales.angle
+        y = float(model.energy[index]) / scales.energy
+        items.append(Polyline(((x, 0.0), (x, y)), _SPEED_ORDINATE))
+        items.append(Polyline(((x, -SPEED_TICK_MM), (x, SPEED_TICK_MM)), _SPEED_EXTREME))
+        items.append(dot_marker((x, y), 0.6, _SPEED_EXTREME.colour))
+        # Named on the side of the axis away from the curve there, where its ordinate does not run.
+        anchors.append(Anchor((x, 0.0), name, LABEL, -math.pi / 3 if y > 0 else math.pi / 3, _SPEED_EXTREME.colour))
+    placed = place_labels(anchors, obstacles_of([*drawn, *items]))
+    return items + list(placed.leaders) + list(placed.texts)
+
+
 def ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str,
                   step: float | None = None) -> list[Primitive]:
     """A vertical axis at ``x`` from the lowest value to past the highest, ticked at round values (``step``, by
@@ -335,7 +363,26 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
                                       f"{words['dyn_energy_scale'].format(value=format_scale(scales.energy))}",
                       LABEL, "start"))
-    return items
+    return items + _numbered_positions(model, scales, items)
+
+
+def _numbered_positions(model: EquivalentModel, scales: Scales, drawn: Sequence[Primitive]) -> list[Primitive]:
+    """The plan positions' points on the energy–mass diagram, each a dot numbered as the position is: (Je, ΔT) of
+    the exact curve at the position's angle, so that the diagram is read against the plans as ΔT(φ) and Je(φ) are."""
+    plans = {plan.number: plan for plan in model.plans}
+    if not plans:
+        return []
+    points = []
+    for number, plan in sorted(plans.items()):
+        energy = float(np.interp(_travel(model, plan.driver), model.coordinate, model.energy))
+        points.append((number, (plan.inertia_exact / scales.inertia, energy / scales.energy)))
+    dots: list[Primitive] = [dot_marker(at, POSITION_DOT_MM) for _, at in points]
+    # Each number away from the middle of the loop, where the tangents' letters and the other numbers crowd.
+    middle = np.mean([at for _, at in points], axis=0)
+    anchors = [Anchor(at, str(number), POSITION_NUMBER, math.atan2(at[1] - middle[1], at[0] - middle[0]))
+               for number, at in points]
+    placed = place_labels(anchors, obstacles_of([*drawn, *dots]))
+    return dots + list(placed.leaders) + list(placed.texts)
 
 
 def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> list[Primitive]:
