@@ -17,6 +17,8 @@ from xml.etree import ElementTree
 
 import numpy as np
 import pytest
+from test_no_flywheel_said_in_words import HEAVY_CRANK
+from test_no_flywheel_said_in_words import run as run_compressor
 
 from graphplan.cli import main
 
@@ -132,3 +134,19 @@ def test_the_plan_positions_are_numbered_on_the_energy_mass_diagram(tmp_path):
                 and all(math.hypot(tx - x, ty - y) <= math.hypot(tx - ox, ty - oy) + 1e-9
                         for other, (ox, oy) in expected.items() if other != number)]
         assert len(near) == 1, number
+
+
+@pytest.mark.parametrize(("locale", "speed"), [("en", "ωmax = {high} rad/s at φ = {angle}°"),
+                                               ("ru", "ωmax = {high} рад/с при φ = {angle}°"),
+                                               ("zh", "在 φ = {angle}° 时 ωmax = {high} rad/s")])
+def test_the_note_names_the_angles_of_the_extreme_speeds_where_no_flywheel_is_needed(tmp_path, locale, speed):
+    _, note, dynamics = run_compressor(tmp_path, locale, 500.0, HEAVY_CRANK)
+    assert dynamics["flywheel_inertia"] == 0.0
+    omega = _speed(dynamics)
+    mark = "," if locale == "ru" else "."
+    for name, index in (("max", int(np.argmax(omega[:-1]))), ("min", int(np.argmin(omega[:-1])))):
+        angle = dynamics[f"omega_{name}_angle_deg"]
+        assert angle == pytest.approx(dynamics["angle_deg"][index] % 360.0, abs=1e-6)
+        told = speed.replace("max", name).format(
+            high=f"{dynamics[f'omega_{name}']:.5g}".replace(".", mark), angle=f"{angle:.4g}".replace(".", mark))
+        assert told in note, (told, [line for line in note.splitlines() if "ωmax" in line])

@@ -142,7 +142,7 @@ def _flywheel(note: Writer, flywheel, model) -> None:
     if flywheel.inertia <= 0:
         note.para(note.t("note_dyn_no_flywheel", delta=note.n(flywheel.delta), required=note.n(flywheel.required),
                          reached=note.n(flywheel.reached, 4), high=note.n(flywheel.omega_max),
-                         low=note.n(flywheel.omega_min)))
+                         low=note.n(flywheel.omega_min), **_speed_extreme_angles(note, flywheel, model)))
         return
     omega = flywheel.omega_mean
     if model.inertia_is_constant:
@@ -157,11 +157,16 @@ def _flywheel(note: Writer, flywheel, model) -> None:
         if flywheel.approximate < 0:   # the constant-Je estimate spares what the varying Je does not
             note.para(note.t("note_dyn_approximate_negative", low=note.n(float(np.min(model.inertia))),
                              high=note.n(float(np.max(model.inertia))), exact=note.n(flywheel.inertia)))
-    note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=note.n(flywheel.omega_max), low=note.n(flywheel.omega_min),
-                     high_angle=note.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
-                     low_angle=note.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)))
+    note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=note.n(flywheel.omega_max),
+                     low=note.n(flywheel.omega_min), **_speed_extreme_angles(note, flywheel, model)))
     if flywheel.moved is not None:
         note.para(note.t("note_dyn_moved", rpm=note.n(flywheel.shaft_rpm), value=note.n(flywheel.moved)))
+
+
+def _speed_extreme_angles(note: Writer, flywheel, model) -> dict[str, str]:
+    """The crank angles φ (°, within a turn) of ωmax and ωmin, as the note's sentences on the speeds name them."""
+    return {"high_angle": note.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
+            "low_angle": note.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)}
 
 
 def _method_reason(note: Writer, dynamics) -> str:
