@@ -134,7 +134,7 @@ class Analysis:
         turns = self.positions.stroke_turns(self.mechanism.driver.sense)
         return None if turns is None else Strokes(*turns)
 
-    @property
+    @functools.cached_property
     def balancing_scale(self) -> float:
         """The largest balancing load without friction over the positions: what its rounding noise (an extreme
         position's, where the loads take no power) is judged against for η (:func:`statics.efficiency`)."""

@@ -27,6 +27,7 @@ from .kinematics import Scalar, Vector, cross
 from .loads import Load, State, motion_state, power
 from .mechanism import Mechanism
 from .motion import Motion
+from .rounding import RELATIVE_NOISE, largest_finite
 from .settling import settle
 
 # A system whose condition number exceeds this is singular at that position:
@@ -261,18 +262,12 @@ def balancing_by_power(mechanism: Mechanism, state: State, loads: tuple[Load, ..
 # A balancing load without friction this small beside the one with it is rounding of a zero (an extreme
 # position, where the loads take no power): η is then 0, all the driver's power going into friction.
 _ROUNDING_OF_ZERO = 1e-9
-# Where the pairs rub no harder there (a slide's normal reaction is 0 at a slider-crank's dead centre, or f = 0),
-# Mb is the same rounding as Mb0, and beside it Mb0 is no smaller: it is told from the cycle's largest Mb0
-# instead, as results.json writes a value under 10⁻¹² of its quantity's largest as 0.
-_CYCLE_NOISE = 1e-12
 
 
 def balancing_scale(ideal: Scalar) -> float:
     """The largest balancing load without friction over the positions (finite ones): the scale ``scale`` of
     :func:`efficiency`, :func:`turned_round` and :func:`rounded_zero` judges rounding against."""
-    magnitudes = np.abs(np.asarray(ideal, dtype=float))
-    finite = magnitudes[np.isfinite(magnitudes)]
-    return float(finite.max()) if finite.size else 0.0
+    return largest_finite(np.asarray(ideal, dtype=float))
 
 
 def efficiency(mechanism: Mechanism, ideal: Scalar, rubbing: Scalar, scale: float = 0.0) -> Scalar:
@@ -312,7 +307,10 @@ def rounded_zero(ideal: Scalar, rubbing: Scalar, scale: float = 0.0) -> Scalar:
 
 def _idle(ideal: np.ndarray, rubbing: np.ndarray, scale: float) -> np.ndarray:
     size = np.abs(ideal)
-    return (size <= _ROUNDING_OF_ZERO * np.abs(rubbing)) | (size <= _CYCLE_NOISE * scale)
+    # Where the pairs rub no harder there (a slide's normal reaction is 0 at a slider-crank's dead centre, or
+    # f = 0), Mb is the same rounding as Mb0, and beside it Mb0 is no smaller: it is told from the cycle's
+    # largest Mb0 instead, by the rule results.json writes a value as 0 by (rounding.noise_floor).
+    return (size <= _ROUNDING_OF_ZERO * np.abs(rubbing)) | (size <= RELATIVE_NOISE * scale)
 
 
 def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:

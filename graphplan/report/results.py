@@ -24,9 +24,8 @@ from ..forces import Load
 from ..joint_friction import FrictionPair, friction_loads
 from ..kinematics import as_xy, at
 from ..loads import motion_state
+from ..rounding import ANGLE_FLOOR_DEG, PERCENT_FLOOR, SIGNIFICANT, noise_floor
 from ..statics import efficiency
-
-SIGNIFICANT = 12
 
 
 def number(value: float, noise: float = 0.0) -> float | None:
@@ -43,18 +42,6 @@ def number(value: float, noise: float = 0.0) -> float | None:
     return 0.0 if rounded == 0 else rounded
 
 
-def noise_floor(values: Any) -> float:
-    """The size below which a value of ``values``' quantity is rounding noise:
-    :data:`SIGNIFICANT` digits of the largest finite one."""
-    magnitudes = np.abs(np.asarray(values, dtype=complex if np.iscomplexobj(values) else float))
-    finite = magnitudes[np.isfinite(magnitudes)]
-    return float(finite.max()) * 10.0 ** -SIGNIFICANT if finite.size else 0.0
-
-
-# Angles are judged against the full turn and percentages against the whole,
-# whatever the largest of them happens to be.
-ANGLE_FLOOR_DEG = 360.0 * 10.0 ** -SIGNIFICANT
-PERCENT_FLOOR = 100.0 * 10.0 ** -SIGNIFICANT
 KEY_FLOORS = {"deg": ANGLE_FLOOR_DEG, "percent": PERCENT_FLOOR}
 
 

@@ -1,0 +1,37 @@
+"""Rounding noise: the digits a computed value is trusted to, and the size below which a value of a quantity is
+the noise its arithmetic leaves (a velocity that is zero by the geometry computed as 1e-18).
+
+It knows nothing of linkages, so that the equilibrium's efficiency (``statics``) and ``results.json``
+(``report/results``) judge noise by one rule.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+#: The significant digits a value is written to, and trusted to beside its quantity's largest.
+SIGNIFICANT = 12
+#: A value this small beside its quantity's largest is rounding noise.
+RELATIVE_NOISE = 10.0 ** -SIGNIFICANT
+# Angles are judged against the full turn and percentages against the whole,
+# whatever the largest of them happens to be.
+ANGLE_FLOOR_DEG = 360.0 * RELATIVE_NOISE
+PERCENT_FLOOR = 100.0 * RELATIVE_NOISE
+
+
+def largest_finite(values: Any) -> float:
+    """The largest finite magnitude among ``values`` (real or complex), 0 where none is finite."""
+    magnitudes = np.abs(np.asarray(values, dtype=complex if np.iscomplexobj(values) else float))
+    finite = magnitudes[np.isfinite(magnitudes)]
+    return float(finite.max()) if finite.size else 0.0
+
+
+def noise_floor(values: Any) -> float:
+    """The size below which a value of ``values``' quantity is rounding noise:
+    :data:`SIGNIFICANT` digits of the largest finite one."""
+    return largest_finite(values) * RELATIVE_NOISE
+
+
+__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor"]

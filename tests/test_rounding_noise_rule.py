@@ -1,0 +1,83 @@
+"""One rule for rounding noise: the equilibrium's η and results.json judge a value as noise by the same size.
+
+A value is noise below 10⁻¹² of its quantity's largest finite magnitude (12 significant digits): results.json
+writes it as 0, and the efficiency takes a balancing load without friction that small beside the cycle's largest
+as the rounding of a zero (the loads take no power there).  Both read it from ``rounding``, which statics may
+import without importing the report.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphplan import rounding, statics
+from graphplan.analysis import analyse
+from graphplan.report import results
+from graphplan.scene import loads as scene_from_text
+
+
+def test_the_largest_finite_magnitude_skips_what_is_not_finite_and_measures_complex_values_by_modulus():
+    assert rounding.largest_finite([3.0, -7.0, math.nan, math.inf, -math.inf]) == 7.0
+    assert rounding.largest_finite([3 + 4j, 1j, complex(math.nan, 0.0)]) == 5.0  # |3 + 4i| = 5
+    assert rounding.largest_finite([math.nan]) == 0.0
+    assert rounding.largest_finite(np.zeros(0)) == 0.0
+
+
+def test_the_noise_floor_is_twelve_digits_of_the_largest():
+    assert rounding.noise_floor([2.0, -5.0, math.nan]) == 5.0 * 1e-12
+    assert rounding.ANGLE_FLOOR_DEG == 360.0 * 1e-12
+    assert rounding.PERCENT_FLOOR == 100.0 * 1e-12
+
+
+def test_statics_and_results_json_share_the_rule():
+    assert results.noise_floor is rounding.noise_floor
+    assert results.SIGNIFICANT == rounding.SIGNIFICANT == 12
+    ideal = np.array([-40.0, 10.0, math.nan])
+    assert statics.balancing_scale(ideal) * rounding.RELATIVE_NOISE == rounding.noise_floor(ideal)
+
+
+SCENE = """
+[scene]
+gravity = 0.0
+[frame]
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.4
+guide = { through = "O", angle = 0.0 }
+assembly = "forward"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = 1000.0
+angle = 0.0
+resisting = true
+[positions]
+count = 12
+"""
+
+
+def test_an_analysis_works_out_its_balancing_scale_once(monkeypatch):
+    analysis = analyse(scene_from_text(SCENE))
+    calls = []
+
+    def counted(ideal):
+        calls.append(ideal)
+        return rounding.largest_finite(np.asarray(ideal, dtype=float))
+
+    monkeypatch.setattr("graphplan.analysis.balancing_scale", counted)
+    first = analysis.balancing_scale
+    assert analysis.balancing_scale == first == float(np.max(np.abs(analysis.equilibrium.balancing)))
+    assert len(calls) == 1
