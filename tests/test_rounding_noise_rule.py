@@ -81,3 +81,14 @@ def test_an_analysis_works_out_its_balancing_scale_once(monkeypatch):
     first = analysis.balancing_scale
     assert analysis.balancing_scale == first == float(np.max(np.abs(analysis.equilibrium.balancing)))
     assert len(calls) == 1
+
+
+def test_a_crank_angle_within_the_angles_noise_of_a_whole_turn_is_told_as_0_degrees():
+    # The warnings name a position by its angle as results.json writes it: rounding of a turn is 0°.
+    describe = analyse(scene_from_text(SCENE)).mechanism.driver.describe
+    floor = rounding.ANGLE_FLOOR_DEG
+    assert describe(math.radians(floor / 2)) == "φ = 0°"
+    assert describe(math.radians(360.0 - floor / 2)) == "φ = 0°"
+    assert describe(math.radians(-floor / 2)) == "φ = 0°"
+    assert describe(math.radians(floor * 2)) != "φ = 0°"
+    assert describe(math.radians(30.0)) == "φ = 30°"

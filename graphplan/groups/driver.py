@@ -30,6 +30,7 @@ from ..kinematics import (
 )
 from ..plans import Builder, LaidVector, Plan, Step
 from ..reader import Table
+from ..rounding import ANGLE_FLOOR_DEG
 from .base import Context, GroupMotion, Guide, read_guide
 
 
@@ -118,7 +119,7 @@ class Crank:
     def describe(self, value: float) -> str:
         angle = math.degrees(value) % 360.0
         # An extreme found as a root lies 1e-18 rad off 0: rounding of a turn, written 0° as results.json does.
-        if min(angle, 360.0 - angle) < 360.0e-12:
+        if min(angle, 360.0 - angle) < ANGLE_FLOOR_DEG:
             angle = 0.0
         return f"φ = {angle:.6g}°"
 
