@@ -314,11 +314,12 @@ def _idle(ideal: np.ndarray, rubbing: np.ndarray, scale: float) -> np.ndarray:
 
 
 def delivers_power(mechanism: Mechanism, ideal: Scalar) -> np.ndarray:
-    """Whether the driver delivers power against the balancing load ``ideal`` without friction
-    (η = Mb0/Mb), or the loads drive it back (η = Mb/Mb0)."""
+    """Whether η is Mb0/Mb: the driver delivers power against the balancing load ``ideal`` without friction,
+    or the loads take none (η = 0 is then Mb0/Mb: the driver's power all goes into friction, and Mb/Mb0 would
+    divide by 0); not where the loads drive the driver back (η = Mb/Mb0)."""
     driver = mechanism.driver
     speed = driver.coordinate_speed
-    return np.asarray(ideal, dtype=float) * speed > 0
+    return np.asarray(ideal, dtype=float) * speed >= 0
 
 
 def _full(value: Vector | Scalar, count: int) -> np.ndarray:

@@ -74,7 +74,5 @@ def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float
     values = {"name": name, "value": write(load), "unit": unit, "iterations": iterations, "ideal": write(ideal)}
     if turned_round(mechanism, ideal, load, scale):
         return text["forces_turned_round"].format(**values)
-    # Where the loads take no power η = 0 is Mb0/Mb: the driver's power all goes into friction (Mb/Mb0 would
-    # divide by 0).
-    ratio = f"{name}0/{name}" if ideal == 0 or delivers_power(mechanism, ideal) else f"{name}/{name}0"
+    ratio = f"{name}0/{name}" if delivers_power(mechanism, ideal) else f"{name}/{name}0"
     return text["forces_with_friction"].format(**values, ratio=ratio, efficiency=written_efficiency)

@@ -379,7 +379,7 @@ def cycle_notes(analysis: Analysis) -> list[str]:
     with np.errstate(invalid="ignore"):
         moving = ~rubbing.locked & np.isfinite(ideal) & np.isfinite(rubbing.balancing)
         held = moving & turned_round(analysis.mechanism, ideal, rubbing.balancing, analysis.balancing_scale)
-        driven = moving & ~held & ~delivers_power(analysis.mechanism, ideal) & (ideal != 0)
+        driven = moving & ~held & ~delivers_power(analysis.mechanism, ideal)
     numbers = analysis.positions.numbers
     notes = []
     for key, where in (("forces_cycle_reverse_ratio", driven), ("forces_cycle_turned_round", held)):
