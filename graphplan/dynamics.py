@@ -151,6 +151,12 @@ class EquivalentModel:
     constant
         ``"driving"`` or ``"resisting"``: the side taken constant to balance the work over the
         cycle; ``"none"`` when both are as the scene gives them.
+    breaks
+        The samples (indices) where the moments may have a corner or a jump: the run's ends and the two sides of
+        each place where a load switches or its diagram turns a corner, put in a hair apart (a linkage's: the pairs
+        closer than :data:`_PAIR` of the run).  The works are integrated by Simpson's rule over each stretch
+        between two, where the moments are smooth; a model from load diagrams gives every sample (its moments are
+        straight between its vertices, where the trapezoidal rule is exact).
     plans
         The reduction read off the velocity plans of the plan positions.
     cyclic
@@ -162,12 +168,6 @@ class EquivalentModel:
     moved
         The loads the scene gives as driving (``resisting = false``) that are counted with the resistances, as
         :class:`MovedLoad`: each with its work over the run, zero or negative.
-    breaks
-        The samples (indices) where the moments may have a corner or a jump: the two sides of each place where a
-        load switches or its diagram turns a corner, put in a hair apart.  The works are integrated by Simpson's
-        rule over each stretch between two, where the moments are smooth.  None: found from the samples, as the
-        pairs closer than :data:`_PAIR` of the run; a model from load diagrams gives every sample (its moments are
-        straight between its vertices, where the trapezoidal rule is exact).
     """
 
     kind: str
@@ -182,12 +182,12 @@ class EquivalentModel:
     driving: np.ndarray
     resisting: np.ndarray
     constant: str
+    breaks: np.ndarray
     plans: tuple[PlanReduction, ...] = ()
     cyclic: bool = True
     driving_loads: tuple[str, ...] = ()
     resisting_loads: tuple[str, ...] = ()
     moved: tuple[MovedLoad, ...] = ()
-    breaks: np.ndarray | None = None
 
     @property
     def turning(self) -> bool:
@@ -204,14 +204,10 @@ class EquivalentModel:
         span = float(self.coordinate[-1] - self.coordinate[0])
         return float(self.integral(values)[-1]) / span if span else float(np.mean(values))
 
-    @cached_property
-    def _breaks(self) -> np.ndarray:
-        return _breaks_of(self.coordinate) if self.breaks is None else np.asarray(self.breaks, dtype=int)
-
     def integral(self, values: np.ndarray) -> np.ndarray:
         """∫ values dψ from the first sample to each: Simpson's rule on each smooth stretch between
         :attr:`breaks`."""
-        return _integral(values, self.coordinate, self._breaks)
+        return _integral(values, self.coordinate, self.breaks)
 
     @cached_property
     def work_uncertainty(self) -> float:
