@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from .mechanism import Mechanism
 from .motion import PositionWarning
+from .units import MIXED_RATIO, millimetres_question
 
 # Lengths typed in millimetres where the scene asks for metres make a mechanism a thousand times too large, and
 # every result follows it (a crank pin at 750 m/s, μl = 2.5 m/mm).  The linkages this method serves are a course
@@ -55,8 +56,7 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
         return ()
     unless = ", unless ω is too large: it is in rad/s, and rev/min are given as driver.rpm" if len(told) == 1 and fast \
         else ""
-    return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + ": are the lengths in millimetres? The scene's "
-                            f"lengths are in metres (divide them by 1000){unless}"),)
+    return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + f": {millimetres_question()}{unless}"),)
 
 
 def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | None:
@@ -67,11 +67,6 @@ def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | Non
     first, origin = points[0]
     name, far = max(points, key=lambda item: abs(item[1] - origin))
     return first, name, far, abs(far - origin)
-
-
-# A linkage's lengths stand within some 1:50 of each other (a shaper's 0.1 m crank beside its 0.6 m rocker is
-# 1:6): a length MIXED_RATIO times another is one in millimetres among metres.
-MIXED_RATIO = 200.0
 
 
 def mixed_units(mechanism: Mechanism) -> str | None:
@@ -89,5 +84,4 @@ def mixed_units(mechanism: Mechanism) -> str | None:
         lengths, key=lambda item: item[1])
     if longest <= LONGEST_LINK_M and longest < MIXED_RATIO * shortest:
         return None
-    return (f"{long_one} beside {short_one}: are some lengths in millimetres? The scene's lengths are all in metres "
-            "(divide millimetres by 1000)")
+    return f"{long_one} beside {short_one}: {millimetres_question(some=True)}"

@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .units import MIXED_RATIO, millimetres_question
+
 # The largest rotors are wind turbines', whose blade tips turn some 120 m from the axis (a hydro-turbine runner or a
 # generator rotor, balanced in planes, a few metres): a radius or an eccentricity over LARGEST_RADIUS_M is no
 # machine's.
@@ -22,9 +24,8 @@ LONGEST_ROTOR_M = 50.0
 THICKEST_SHAFT_M = 5.0
 LARGEST_SECOND_MOMENT_M4 = math.pi * THICKEST_SHAFT_M ** 4 / 64.0
 # A correction mass is fixed near the rim, where it does the most: a mass turning MIXED_RATIO times farther out than
-# the corrections is one in millimetres among metres.  (The other way round is real: a disc's eccentricity of
-# 0.1 mm, corrected at 0.2 m.)
-MIXED_RATIO = 200.0
+# the corrections is one in millimetres among metres, as a linkage's length that many times another is.  (The other
+# way round is real: a disc's eccentricity of 0.1 mm, corrected at 0.2 m.)
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
@@ -88,16 +89,11 @@ class LengthsInMillimetres:
     @property
     def detail(self) -> str:
         """The warning in a line (English, as the command line prints it)."""
-        second = any(item.kind == "second_moment" for item in self.found)
-        divide = "divide them by 1000" + (", a second moment of area by 10¹²" if second else "")
         unless = ", unless ω is too large: it is in rad/s, and rev/min are given as vibration.rpm" if self.only_speed \
             else ""
-        asked = "are the lengths in millimetres? The scene's lengths are in metres"
-        if any(item.kind == "mixed" for item in self.found):
-            # Millimetres among metres: dividing every length would spoil the ones in metres.
-            asked, divide = "are some lengths in millimetres? The scene's lengths are all in metres", \
-                "divide millimetres by 1000"
-        return "; ".join(item.detail for item in self.found) + f": {asked} ({divide}){unless}"
+        asked = millimetres_question(some=any(item.kind == "mixed" for item in self.found),
+                                     second_moment=any(item.kind == "second_moment" for item in self.found))
+        return "; ".join(item.detail for item in self.found) + f": {asked}{unless}"
 
 
 __all__ = ["FASTEST_BASE_M_S", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4", "LONGEST_ROTOR_M", "MIXED_RATIO",
