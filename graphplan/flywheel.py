@@ -572,12 +572,20 @@ def diagram_model_of(spec: DynamicsSpec) -> EquivalentModel:
     return diagram_model(spec.omega, sides["driving"], sides["resisting"], inertia=spec.inertia, count=spec.count)
 
 
+def unusual_speed_swing(delta: float | None) -> float | None:
+    """ωmax/ωmin = (2 + δ)/(2 − δ), how far the speed swings over the turn, where δ is above
+    :data:`LARGEST_USUAL_DELTA` (the warning's and the note's caution); None where δ is a usual one or not given."""
+    if delta is None or delta <= LARGEST_USUAL_DELTA:
+        return None
+    return (2 + delta) / (2 - delta)
+
+
 def delta_warning(spec: DynamicsSpec) -> str | None:
     """A line for the command line where ``delta`` is above :data:`LARGEST_USUAL_DELTA`, else None."""
     delta = spec.delta
-    if delta is None or delta <= LARGEST_USUAL_DELTA:
+    ratio = unusual_speed_swing(delta)
+    if ratio is None:
         return None
-    ratio = (2 + delta) / (2 - delta)
     return (f"{spec.where}.delta: {delta:g} is above the {LARGEST_USUAL_DELTA:g} of the most unevenly running "
             f"machines (crushers, punches): the speed swings ωmax/ωmin = (2 + δ)/(2 − δ) = {ratio:.3g} over the turn; "
             f"a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
@@ -695,4 +703,4 @@ def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]
 __all__ = ["DIAGRAM_KEYS", "LARGEST_USUAL_DELTA", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel",
            "LoadDiagram", "Tangent", "delta_warning", "diagram_model_of", "dynamics_results", "fluctuation",
            "fluctuation_from_areas", "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia",
-           "omega_to_rpm", "read_dynamics", "rpm_to_omega", "speed_fluctuation", "speed_limits"]
+           "omega_to_rpm", "read_dynamics", "rpm_to_omega", "speed_fluctuation", "speed_limits", "unusual_speed_swing"]

@@ -133,12 +133,12 @@ def _percent(note: Writer, value: float) -> str:
 
 
 def _flywheel(note: Writer, flywheel, model) -> None:
-    from ..flywheel import LARGEST_USUAL_DELTA, omega_to_rpm
+    from ..flywheel import LARGEST_USUAL_DELTA, omega_to_rpm, unusual_speed_swing
 
     delta = flywheel.delta
-    if delta > LARGEST_USUAL_DELTA:
+    if (swing := unusual_speed_swing(delta)) is not None:
         note.para(note.t("note_dyn_caution_delta", delta=note.n(delta), usual=note.n(LARGEST_USUAL_DELTA),
-                         ratio=note.n((2 + delta) / (2 - delta), 3), fraction=note.n(delta / 100)))
+                         ratio=note.n(swing, 3), fraction=note.n(delta / 100)))
     if flywheel.inertia <= 0:
         note.para(note.t("note_dyn_no_flywheel", delta=note.n(flywheel.delta), required=note.n(flywheel.required),
                          reached=note.n(flywheel.reached, 4), high=note.n(flywheel.omega_max),
