@@ -150,16 +150,22 @@ def activity(mechanism: Mechanism, positions: PositionSet, motion: Motion) -> np
         elif load.during == "idle":
             acting[row] = ~working
         else:
-            start, end = load.during
-            # Equal ends at 12 digits: a window that ends where a position lies includes it.
-            share = np.round(progress(load.stroke), 12)
-            inside = working & (share >= start) & (share <= end)
+            inside, share = _in_window(working, progress(load.stroke), load.during)
             if load.diagram is None:
                 acting[row] = inside
             else:
                 shares, values = np.array(load.diagram).T
                 acting[row] = np.where(inside, np.interp(share, shares, values) / load.value, 0.0)
     return acting
+
+
+def _in_window(working: np.ndarray, progress: np.ndarray, window: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """Where a load given over ``window`` (shares of its stroke) acts, in the working stroke between the window's
+    ends, and the share of the stroke travelled it is read at there, ``progress`` to 12 digits: equal ends then,
+    so that a window that ends where a position lies includes it."""
+    start, end = window
+    share = np.round(progress, 12)
+    return working & (share >= start) & (share <= end), share
 
 
 def activity_at(mechanism: Mechanism, positions: PositionSet, values: np.ndarray, *,
@@ -182,14 +188,13 @@ def diagram_segments(mechanism: Mechanism, positions: PositionSet, motion: Motio
     value has a corner (a vertex of the diagram): the reduced moment kinks there."""
     scene = mechanism.scene
     segments = np.zeros((len(scene.loads), motion.count), dtype=int)
+    in_stroke = functools.cache(lambda stroke: in_working_stroke(motion, stroke))
     progress = functools.cache(lambda stroke: stroke_share(mechanism, positions, motion, stroke))
     for row, load in enumerate(scene.loads):
         if load.diagram is None:
             continue
-        start, end = load.during
-        # Read as activity reads the share: equal ends at 12 digits.
-        share = np.round(progress(load.stroke), 12)
-        inside = in_working_stroke(motion, load.stroke) & (share >= start) & (share <= end)
+        # Read as activity reads it, so that a segment is found wherever the load acts.
+        inside, share = _in_window(in_stroke(load.stroke), progress(load.stroke), load.during)
         shares = np.array([vertex for vertex, _ in load.diagram])
         segments[row] = np.where(inside, np.searchsorted(shares, share, side="right"), -1)
     return segments
