@@ -27,6 +27,7 @@ from .mechanism import Mechanism
 from .motion import Motion, solve
 from .plans import Plan
 from .positions import PositionSet, in_working_stroke, stroke_extremes
+from .rounding import largest_finite
 from .scene import LoadSpec, Working
 
 # A speed this small against the cycle's largest is rest: a resisting load then opposes
@@ -53,24 +54,18 @@ class State:
     sliding: Mapping[int, Vector] = field(default_factory=dict)
     sliding_acceleration: Mapping[int, Vector] = field(default_factory=dict)
 
+    # The scales are of the finite speeds alone: a singular position's are infinite (a swing that ends at a toggle),
+    # and beside them every other position's was rest, its resisting loads turned the wrong way.
     @functools.cached_property
     def turning_scale(self) -> float:
         """The largest finite |ω| of the state: an angular speed far below it is rest (once a state: each load and
         pair asks it)."""
-        return max((_largest_finite(link.omega) for link in self.links.values()), default=0.0)
+        return max((largest_finite(link.omega) for link in self.links.values()), default=0.0)
 
     @functools.cached_property
     def moving_scale(self) -> float:
         """The largest finite speed of a point of the state: a speed far below it is rest."""
-        return max((_largest_finite(point.v) for point in self.points.values()), default=0.0)
-
-
-def _largest_finite(values) -> float:
-    """The largest finite magnitude among ``values``: a singular position's speeds are infinite (a swing that ends
-    at a toggle), and beside them every other position's was rest, its resisting loads turned the wrong way."""
-    magnitudes = np.abs(np.asarray(values))
-    finite = magnitudes[np.isfinite(magnitudes)]
-    return float(finite.max()) if finite.size else 0.0
+        return max((largest_finite(point.v) for point in self.points.values()), default=0.0)
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,8 @@ import numpy as np
 
 from graphplan import rounding, statics
 from graphplan.analysis import analyse
+from graphplan.kinematics import PointMotion
+from graphplan.loads import Rates, State
 from graphplan.report import results
 from graphplan.scene import loads as scene_from_text
 
@@ -92,3 +94,13 @@ def test_a_crank_angle_within_the_angles_noise_of_a_whole_turn_is_told_as_0_degr
     assert describe(math.radians(-floor / 2)) == "φ = 0°"
     assert describe(math.radians(floor * 2)) != "φ = 0°"
     assert describe(math.radians(30.0)) == "φ = 30°"
+
+
+
+def test_a_state_s_speed_scales_are_of_its_finite_speeds():
+    # A singular position's speeds are infinite: the scales rest is judged against are the others' largest.
+    still = np.zeros(3, dtype=complex)
+    state = State(points={"B": PointMotion(still, np.array([3 + 4j, complex(math.inf, 0.0), 1j]), still)},
+                  links={2: Rates(np.array([2.0, -math.inf, -7.0]), np.zeros(3))})
+    assert state.moving_scale == 5.0  # |3 + 4i|
+    assert state.turning_scale == 7.0
