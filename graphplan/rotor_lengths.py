@@ -23,9 +23,9 @@ LONGEST_ROTOR_M = 50.0
 # of area is judged by a round one's, I = π·d⁴/64.
 THICKEST_SHAFT_M = 5.0
 LARGEST_SECOND_MOMENT_M4 = math.pi * THICKEST_SHAFT_M ** 4 / 64.0
-# A correction mass is fixed near the rim, where it does the most: a mass turning MIXED_RATIO times farther out than
-# the corrections is one in millimetres among metres, as a linkage's length that many times another is.  (The other
-# way round is real: a disc's eccentricity of 0.1 mm, corrected at 0.2 m.)
+# A correction mass is fixed near the rim, where it does the most: a mass turning MIXED_RATIO (units') times farther
+# out than the corrections is one in millimetres among metres, as a linkage's length that many times another is.
+# (The other way round is real: a disc's eccentricity of 0.1 mm, corrected at 0.2 m.)
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
