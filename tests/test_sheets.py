@@ -98,6 +98,18 @@ def layer(sheet, name):
     return next(layer for layer in sheet.layers if layer.name == name)
 
 
+def force_drawings_on(sheet):
+    """What a sheet's force drawings are: ``lever``, ``body`` (a group cut free), ``polygon``; the heading over
+    them (``sheet-title``) is none."""
+    found = (re.match(r"forces(?:-friction)?-\d+(?:-\d+)?-(lever|body|polygon)-", item.name) for item in sheet.layers)
+    return {match.group(1) for match in found if match}
+
+
+def forces_to_no_length_scale(sheet):
+    """Whether a sheet's drawings are force drawings to no length scale: Zhukovsky's lever alone, at μV."""
+    return force_drawings_on(sheet) == {"lever"}
+
+
 def placed_bounds(sheet):
     """The bounds of each placed drawing, from the layers on the sheet that carry its name."""
     names = sorted(sheet.panels, key=len, reverse=True)
@@ -847,7 +859,8 @@ def test_a_sheet_of_the_kinematic_diagrams_alone_has_no_scale_in_its_title_block
     assert alone
     for sheet in sheets:
         written = [text.text for text in texts([layer(sheet, "title-block")])]
-        assert (ratio in written) == (sheet not in alone), (sheet.number, sorted(sheet.panels))
+        assert (ratio in written) == (sheet not in alone and not forces_to_no_length_scale(sheet)), \
+            (sheet.number, sorted(sheet.panels))
 
 
 def test_a_sheet_of_velocity_or_acceleration_plans_alone_has_no_scale_in_its_title_block(tmp_path):
@@ -865,7 +878,8 @@ def test_a_sheet_of_velocity_or_acceleration_plans_alone_has_no_scale_in_its_tit
     assert plans_alone
     for sheet in sheets:
         written = [text.text for text in texts([layer(sheet, "title-block")])]
-        drawn_to_scale = sheet not in plans_alone and not all(name.startswith("diagrams") for name in sheet.panels)
+        drawn_to_scale = sheet not in plans_alone and not all(name.startswith("diagrams") for name in sheet.panels) \
+            and not forces_to_no_length_scale(sheet)
         assert (ratio in written) == drawn_to_scale, (sheet.number, sorted(sheet.panels))
 
 

@@ -15,7 +15,18 @@ import re
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from test_sheets import FIXTURES, STANDARD, analyses_of, inside, layer, overlap, placed_bounds, texts, with_drawing
+from test_sheets import (
+    FIXTURES,
+    STANDARD,
+    analyses_of,
+    force_drawings_on,
+    inside,
+    layer,
+    overlap,
+    placed_bounds,
+    texts,
+    with_drawing,
+)
 
 import graphplan
 from graphplan.analysis import analyse
@@ -183,6 +194,26 @@ def test_on_a4_the_ratchet_forces_keep_their_scales_with_smaller_lettering(ratch
     # The usual lettering would not do: some drawing of the force sheet then fits no A4.
     unframed = force_panels(analysis, "none")
     assert not all(fits_a4(piece) for panel in unframed for part in panel.parts for piece in part.parts or (part,))
+
+
+def scale_box(sheet):
+    """The ratios (1:10) written in the sheet's title block: its scale box's, the ESKD form giving μl as one."""
+    return re.findall(r"\d+:\d+", " ".join(text.text for text in texts([layer(sheet, "title-block")])))
+
+
+def test_a_sheet_of_a_lever_alone_leaves_the_scale_box_empty(ratchet_a4):
+    """Zhukovsky's lever is the velocity plan turned through 90°, drawn at μV, to no length scale: the A4 that
+    holds position 5's lever alone said 1:10 in its scale box (the group cut free's μl, on another sheet), and
+    position 11's 1:5, as a sheet of velocity plans alone once did."""
+    analysis, sheets = ratchet_a4
+    levers_alone = [sheet for sheet in sheets if force_drawings_on(sheet) == {"lever"}]
+    assert len(levers_alone) == len(analysis.plans) == 2
+    for sheet in levers_alone:
+        assert scale_box(sheet) == [], sheet.number
+    # A sheet with a group cut free on it still gives the μl the group is drawn at.
+    for sheet in sheets:
+        if "body" in force_drawings_on(sheet):
+            assert len(scale_box(sheet)) == 1, sheet.number
 
 
 def test_force_drawings_no_a4_holds_are_drawn_at_the_next_standard_scales_that_fit(drawn_smaller):

@@ -435,10 +435,19 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     if headless is not None:
         drawn, one, panels = cut(*headless)
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
-    one, panels = replace(one, lever_scale=lever), [replace(part, lever_scale=lever) for part in panels]
+    one, panels = (replace(_lever_at_no_length_scale(one), lever_scale=lever),
+                   [replace(_lever_at_no_length_scale(part), lever_scale=lever) for part in panels])
     if drawn.length_scale == length_scale(analysis):
         return one, panels
     return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]
+
+
+def _lever_at_no_length_scale(panel: Panel) -> Panel:
+    """A force sheet, or a part of one, whose lever, the velocity plan turned and drawn at μV, is drawn to no
+    length scale: a sheet of the lever alone leaves its title block's scale box empty, as one of plans alone."""
+    parts = tuple(_to_no_length_scale(part) if part.name.endswith("-lever") else part for part in panel.parts)
+    return replace(panel, parts=parts, to_scale=any(part.to_scale for part in parts) if parts else panel.to_scale,
+                   alternatives=tuple(_lever_at_no_length_scale(way) for way in panel.alternatives))
 
 
 def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
