@@ -106,8 +106,10 @@ def force_drawings_on(sheet):
 
 
 def forces_to_no_length_scale(sheet):
-    """Whether a sheet's drawings are force drawings to no length scale: Zhukovsky's lever alone, at μV."""
-    return force_drawings_on(sheet) == {"lever"}
+    """Whether a sheet's drawings are force drawings to no length scale: Zhukovsky's lever at μV, force polygons
+    at μF, no group cut free at μl."""
+    drawn = force_drawings_on(sheet)
+    return bool(drawn) and "body" not in drawn
 
 
 def placed_bounds(sheet):

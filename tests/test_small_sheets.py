@@ -216,6 +216,17 @@ def test_a_sheet_of_a_lever_alone_leaves_the_scale_box_empty(ratchet_a4):
             assert len(scale_box(sheet)) == 1, sheet.number
 
 
+def test_a_sheet_of_force_polygons_alone_leaves_the_scale_box_empty(ratchet_a4):
+    """A force polygon is drawn at μF, to no length scale: the A4s that hold a polygon of position 5 or 11 alone
+    under the heading "(continued)" said 1:10 or 1:5 in their scale boxes, the μl of the group on the sheet
+    before."""
+    _, sheets = ratchet_a4
+    polygons_alone = [sheet for sheet in sheets if force_drawings_on(sheet) == {"polygon"}]
+    assert polygons_alone
+    for sheet in polygons_alone:
+        assert scale_box(sheet) == [], sheet.number
+
+
 def test_force_drawings_no_a4_holds_are_drawn_at_the_next_standard_scales_that_fit(drawn_smaller):
     analysis, sheets = drawn_smaller
     group_scales = check_group_scale(analysis, sheets)

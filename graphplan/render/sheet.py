@@ -435,19 +435,26 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     if headless is not None:
         drawn, one, panels = cut(*headless)
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
-    one, panels = (replace(_lever_at_no_length_scale(one), lever_scale=lever),
-                   [replace(_lever_at_no_length_scale(part), lever_scale=lever) for part in panels])
+    one, panels = (replace(_at_no_length_scale(one), lever_scale=lever),
+                   [replace(_at_no_length_scale(part), lever_scale=lever) for part in panels])
     if drawn.length_scale == length_scale(analysis):
         return one, panels
     return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]
 
 
-def _lever_at_no_length_scale(panel: Panel) -> Panel:
-    """A force sheet, or a part of one, whose lever, the velocity plan turned and drawn at μV, is drawn to no
-    length scale: a sheet of the lever alone leaves its title block's scale box empty, as one of plans alone."""
-    parts = tuple(_to_no_length_scale(part) if part.name.endswith("-lever") else part for part in panel.parts)
+def _at_no_length_scale(panel: Panel) -> Panel:
+    """A force sheet, or a part of one, whose lever (the velocity plan turned, at μV) and force polygons (at μF)
+    are drawn to no length scale: a sheet of them alone leaves its title block's scale box empty, as one of plans
+    alone; only a group cut free is drawn at μl."""
+    parts = tuple(_to_no_length_scale(part) if _at_force_or_velocity_scale(part.name)
+                  else _at_no_length_scale(part) for part in panel.parts)
     return replace(panel, parts=parts, to_scale=any(part.to_scale for part in parts) if parts else panel.to_scale,
-                   alternatives=tuple(_lever_at_no_length_scale(way) for way in panel.alternatives))
+                   alternatives=tuple(_at_no_length_scale(way) for way in panel.alternatives))
+
+
+def _at_force_or_velocity_scale(name: str) -> bool:
+    """Whether the part ``name`` of a force sheet is its lever or a force polygon (``forces-5-polygon-II-3-4``)."""
+    return name.endswith("-lever") or "-polygon-" in name
 
 
 def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
