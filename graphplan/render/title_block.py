@@ -480,51 +480,41 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
         return [value.strip()]
     word = [text_width(token, size, weight) for token, _ in tokens]
     space = text_width(" ", size, weight)
-
-    def filled(limit: float) -> list[list[tuple[str, bool]]]:
-        rows: list[list[tuple[str, bool]]] = [[]]
-        width = 0.0
-        for (token, spaced), token_width in zip(tokens, word, strict=True):
-            extra = token_width + (space if spaced and rows[-1] else 0.0)
-            if rows[-1] and width + extra > limit:
-                rows.append([])
-                width, extra = 0.0, token_width
-            rows[-1].append((token, spaced))
-            width += extra
-        return rows
+    # The space a token is joined to the token before it by, where the two share a line.
+    joint = [space if spaced else 0.0 for _, spaced in tokens]
 
     low, high = max(word), sum(word) + space * len(word)
     for _ in range(40):
         middle = (low + high) / 2
-        if len(filled(middle)) <= lines:
+        if len(_filled(tokens, word, joint, middle)) <= lines:
             high = middle
         else:
             low = middle
-    rows = filled(high)
+    rows = _filled(tokens, word, joint, high)
     if not at_spaces and has_wide(value):
         # Of the breaks as narrow, Chinese takes the one with the shorter lines first (GB/T 9704 sets a title
         # broken over lines as a trapezoid, short over long): «单缸内燃机 / 曲柄滑块机构», where filling the first
-        # line cut 曲柄 in two.  The same lines filled from the end, as many and no wider.
-        backwards = [list(reversed(row)) for row in reversed(_filled_from_end(tokens, word, space, high))]
-        if len(backwards) == len(rows):
-            rows = backwards
+        # line cut 曲柄 in two.  The same lines filled from the end, as many and no wider: the tokens last first,
+        # each joined to the one after it (now before it) by that one's space.
+        from_end = _filled(tokens[::-1], word[::-1], [*joint[1:], 0.0][::-1], high)
+        if len(from_end) == len(rows):
+            rows = [row[::-1] for row in from_end[::-1]]
     return [_joined(row) for row in rows]
 
 
-def _filled_from_end(tokens: Sequence[tuple[str, bool]], word: Sequence[float], space: float,
-                     limit: float) -> list[list[tuple[str, bool]]]:
-    """``tokens`` filled greedily into lines no wider than ``limit`` from the last token back: the lines in reverse
-    order, each's tokens last first."""
+def _filled(tokens: Sequence[tuple[str, bool]], word: Sequence[float], joint: Sequence[float],
+            limit: float) -> list[list[tuple[str, bool]]]:
+    """``tokens`` (each ``word`` mm wide, ``joint`` mm from the token before it on a line) filled greedily into
+    lines no wider than ``limit`` where they can be."""
     rows: list[list[tuple[str, bool]]] = [[]]
     width = 0.0
-    for k in range(len(tokens) - 1, -1, -1):
-        # The space before the token after this one, which joins the two on a line.
-        joint = space if rows[-1] and tokens[k + 1][1] else 0.0
-        if rows[-1] and width + joint + word[k] > limit:
+    for token, token_width, before in zip(tokens, word, joint, strict=True):
+        extra = token_width + (before if rows[-1] else 0.0)
+        if rows[-1] and width + extra > limit:
             rows.append([])
-            width, joint = 0.0, 0.0
-        rows[-1].append(tokens[k])
-        width += joint + word[k]
+            width, extra = 0.0, token_width
+        rows[-1].append(token)
+        width += extra
     return rows
 
 
