@@ -68,13 +68,17 @@ class Reading:
 
     def value(self, plans: Mapping[str, Plan], millimetres: float | None = None) -> float:
         """The quantity from the segment's length (``millimetres`` overrides the plan's own)."""
-        plan = plans[self.plan]
-        mm = abs(plan.mm(self.segment[1]) - plan.mm(self.segment[0])) if millimetres is None else millimetres
-        return self.sign * mm * plan.scale / self.length
+        mm = self.millimetres(plans) if millimetres is None else millimetres
+        return self.sign * mm * plans[self.plan].scale / self.length
 
     def millimetres(self, plans: Mapping[str, Plan]) -> float:
-        plan = plans[self.plan]
-        return abs(plan.mm(self.segment[1]) - plan.mm(self.segment[0]))
+        """The segment's length (mm) on its plan as constructed."""
+        return segment_millimetres(plans[self.plan], self.segment)
+
+
+def segment_millimetres(plan: Plan, segment: tuple[str, str]) -> float:
+    """The length (mm) of ``segment``, two of ``plan``'s letters, on the plan as constructed."""
+    return abs(plan.mm(segment[1]) - plan.mm(segment[0]))
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
-from .check import ErrorRow, is_balancing, is_reaction
+from .check import ErrorRow, is_balancing, is_reaction, segment_millimetres
 from .motion import PositionWarning
 from .scales import nearest_standard_scale
 
@@ -179,13 +179,6 @@ def _segment_of(position: VelocityPosition, row: ErrorRow) -> tuple[str, str] | 
     return next((reading.segment for reading in position.readings if reading.quantity == row.quantity), None)
 
 
-def _length(plan, segment: tuple[str, str]) -> float | None:
-    """A segment's length (mm) on a plan as constructed, None where the plan has not both its letters."""
-    if not all(letter in plan.points for letter in segment):
-        return None
-    return abs(plan.mm(segment[1]) - plan.mm(segment[0]))
-
-
 def _other_plan(position: VelocityPosition, measured: list[tuple[ErrorRow, float]],
                 misread: Mapping[str, list[tuple[ErrorRow, float]]],
                 precision: float) -> dict[str, tuple[str, tuple[str, ...]]]:
@@ -208,8 +201,9 @@ def _other_plan(position: VelocityPosition, measured: list[tuple[ErrorRow, float
 def _same_named(position: VelocityPosition, other, row: ErrorRow, precision: float) -> bool:
     """Whether a reading is, to the drafting ``precision``, the segment of its letters on the ``other`` plan."""
     segment = _segment_of(position, row)
-    length = _length(other, segment) if segment is not None else None
-    return length is not None and abs(_hand_millimetres(row) - length) <= precision
+    if segment is None or not all(letter in other.points for letter in segment):
+        return False
+    return abs(_hand_millimetres(row) - segment_millimetres(other, segment)) <= precision
 
 
 def _matching_segments(position: VelocityPosition, row: ErrorRow, precision: float) -> tuple[Segment, ...]:
