@@ -111,6 +111,9 @@ SIDE_BY_SIDE_MM = 1.5
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
 PER_LINE = 4
+# Between the values a caption line lists: a comma and two spaces, so that a value with a comma of its own (fE =
+# 0.1, φ = …) reads as one.  A line of symbols and numbers alone takes it in every language.
+VALUE_SEPARATOR = ",  "
 # The captions' lettering where the usual does not fit a small sheet: the next size down of GOST 2.304 and
 # ISO 3098 (the usual is plans.CAPTION_SIZE, 5 mm).
 SMALL_CAPTION_SIZE = 3.5
@@ -685,7 +688,7 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
     # φ = …" read with ASCII commas after a full-width colon); the lines of symbols and numbers alone after it
     # Latin ones, as every such line of the sheet.
     comma = text["comma"]
-    spaced = ",  " if comma == ", " else comma
+    spaced = VALUE_SEPARATOR if comma == ", " else comma
     first = text["sliding_friction"].format(values=spaced.join(comma.join(value) for value in values[:PER_LINE]))
     return [first, *_wrapped([", ".join(value) for value in values[PER_LINE:]])]
 
@@ -1179,7 +1182,7 @@ def _balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = Tru
 
 def _wrapped(items: Sequence[str]) -> list[str]:
     """Values listed ``PER_LINE`` to a caption line."""
-    return [",  ".join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
+    return [VALUE_SEPARATOR.join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
 
 
 def _percent(value: float) -> str:
