@@ -414,6 +414,23 @@ def factor_text(rescaled: Rescaled, mark: str = ".") -> str:
     return ", ".join(f"{value:.4g} ({label})".replace(".", mark) for label, value in each.items())
 
 
+def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[VelocityPosition, ...],
+                   drawing: Drawing, joint: str) -> str:
+    """Where the key of ``rescaled`` sets other positions whose readings fit it as it is, or ask it another value
+    (:func:`sharing`): that said, with how to keep it; else nothing.  Asked only where the warning gives the key."""
+    fitting, asking = sharing(rescaled, position, drawn, drawing, joint)
+    if not (fitting or asking):
+        return ""
+    name = rescaled.key.removeprefix("drawing.")
+    shared = fitting or tuple(asking)
+    why = ("whose readings fit the present scale and would then be off" if fitting else
+           "whose readings ask " + ", ".join(f"{name} = {value:g}" for value in asking.values())
+           + " (no one value fits them all)")
+    return (f"; but {name} sets the scale of position{'s' if len(shared) > 1 else ''} "
+            f"{', '.join(map(str, shared))} too, {why}: rather keep it and give the readings of "
+            f"position {position.number} times {factor_text(rescaled)}")
+
+
 def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[PositionWarning, ...]:
     """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans."""
     drawing = mechanism.scene.drawing
@@ -427,21 +444,10 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             continue
         details = []
         for rescaled in found.rescaled:
-            fitting, asking = sharing(rescaled, position, drawn, drawing, joint)
-            # The key sets other positions whose readings fit it as it is, or ask it another value: said, with how
-            # to keep it.
-            name = rescaled.key.removeprefix("drawing.")
-            caveat = ""
-            if fitting or asking:
-                shared = fitting or tuple(asking)
-                why = ("whose readings fit the present scale and would then be off" if fitting else
-                       "whose readings ask " + ", ".join(f"{name} = {value:g}" for value in asking.values())
-                       + " (no one value fits them all)")
-                caveat = (f"; but {name} sets the scale of position{'s' if len(shared) > 1 else ''} "
-                          f"{', '.join(map(str, shared))} too, {why}: rather keep it and give the readings of "
-                          f"position {position.number} times {factor_text(rescaled)}")
             if rescaled.kind == "forces":
-                details.append(_polygons_detail(rescaled) + ("" if in_units(rescaled.drawn_at) else caveat))
+                caveat = "" if in_units(rescaled.drawn_at) else \
+                    _shared_caveat(rescaled, position, drawn, drawing, joint)
+                details.append(_polygons_detail(rescaled) + caveat)
                 continue
             symbol, unit = _SCALES[rescaled.kind]
             drawn_at, kind = rescaled.drawn_at, rescaled.kind
@@ -472,7 +478,8 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             details.append(f"every reading of the {kind} plan is {rescaled.ratio:.4g} times the plan as constructed at "
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
                            f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
-                           f"within {rescaled.off * 100.0:.1f} % of the plan as constructed){caveat}")
+                           f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)"
+                           f"{_shared_caveat(rescaled, position, drawn, drawing, joint)}")
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(

@@ -99,18 +99,9 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     lines = nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
     for rescaled in found.rescaled:
-        fitting, asking = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint)
-        # The key sets other positions whose readings fit it as it is, or ask it another value: said, with how to
-        # keep it.
-        key = rescaled.key.removeprefix("drawing.")
-        shared = fitting or tuple(asking)
-        caveat = (" " + text["errors_shared" if fitting else "errors_shared_other"].format(
-            key=key, factor=factor_text(rescaled, mark), number=plan.number,
-            values=", ".join(f"{key} = {value:g}".replace(".", mark) for value in asking.values()),
-            positions=text["errors_shared_positions" if len(shared) > 1 else "errors_shared_position"].format(
-                numbers=", ".join(map(str, shared)))) if shared else "")
         if rescaled.kind == "forces":
-            lines.append(_polygons_line(rescaled, text, mark) + ("" if in_units(rescaled.drawn_at) else caveat))
+            caveat = "" if in_units(rescaled.drawn_at) else _shared_caveat(analysis, plan, drawn, rescaled, text, mark)
+            lines.append(_polygons_line(rescaled, text, mark) + caveat)
             continue
         kind, drawn_at = rescaled.kind, rescaled.drawn_at
         symbol, unit = ("μV", text["unit_velocity_scale"]) if kind == "velocity" else ("μa", text["unit_acceleration_scale"])
@@ -135,7 +126,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             off=f"{rescaled.off * 100.0:.1f}".replace(".", mark),
             fit=text["errors_pole_fit"].format(key=rescaled.key.removeprefix("drawing."),
                                                fit=number(rescaled.setting, 4, mark))
-            if rescaled.key.endswith("_pole") else "") + caveat)
+            if rescaled.key.endswith("_pole") else "") + _shared_caveat(analysis, plan, drawn, rescaled, text, mark))
     if found.misread:
         # A segment's name may be on both plans (pb): the quantities it gives say which.
         readings = ", ".join(f"{_reading(rows[0][0], text, mark)} ({', '.join(quantity_symbol(row.quantity) for row, _ in rows)})"
@@ -158,6 +149,23 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
             precision=precision, readings=items,
             question=text["errors_named_other" if other else "errors_named_swapped"]))
     return lines
+
+
+def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[VelocityPosition, ...],
+                   rescaled: Rescaled, text: dict[str, str], mark: str) -> str:
+    """Where the key of ``rescaled`` sets other positions whose readings fit it as it is, or ask it another value
+    (:func:`~graphplan.misreadings.sharing`): that said, with how to keep it; else nothing.  Asked only where the
+    line gives the key."""
+    fitting, asking = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint)
+    shared = fitting or tuple(asking)
+    if not shared:
+        return ""
+    key = rescaled.key.removeprefix("drawing.")
+    return " " + text["errors_shared" if fitting else "errors_shared_other"].format(
+        key=key, factor=factor_text(rescaled, mark), number=plan.number,
+        values=", ".join(f"{key} = {value:g}".replace(".", mark) for value in asking.values()),
+        positions=text["errors_shared_positions" if len(shared) > 1 else "errors_shared_position"].format(
+            numbers=", ".join(map(str, shared))))
 
 
 def _written(reading: str, text: dict[str, str], mark: str) -> str:
