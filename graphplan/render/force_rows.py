@@ -20,7 +20,7 @@ import re
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
-from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, Arrangement
+from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, TITLE_LAYER, Arrangement, title_texts
 from .primitives import Layer, Text, bounds, bounds_of, moved_layers, text_width
 from .wrapping import fitted
 
@@ -40,8 +40,9 @@ MOST_ROWS_TRIED_STACKED = 6
 LETTER_SIZES = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)
 
 Fits = Callable[[float, float], bool]
-# The layer of a force sheet's (or a part's) heading: its title and the line of its scales.
-HEADING_LAYER = "sheet-title"
+# The layer of a force sheet's (or a part's) heading: its title and the line of its scales; the plan sheet's
+# title layer, as every heading's, by which the packing knows a heading to leave off a part that goes on.
+HEADING_LAYER = TITLE_LAYER
 # The title of a part that stands with no heading at all: a drawing that a sheet holds only so.  A heading's
 # own titles are never empty.
 HEADLESS = ""
@@ -281,10 +282,8 @@ class Rows:
         """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales."""
         size = self.heading.title_size
         lines = fitted(title, max(width, CAPTION_WIDTH_MM), size, "bold")
-        return Layer(HEADING_LAYER, (
-            *(Text((left, scales_line + CAPTION_LINE * size * (len(lines) - k)), line, size, "start",
-                   weight="bold") for k, line in enumerate(lines)),
-            Text((left, scales_line), self.heading.scales, self.heading.size, "start")))
+        return Layer(HEADING_LAYER, (*title_texts(lines, size, (left, scales_line + CAPTION_LINE * size)),
+                                     Text((left, scales_line), self.heading.scales, self.heading.size, "start")))
 
 
 def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:

@@ -188,7 +188,7 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
     for name, (x0, y0, x1, _) in fields.items():
         layers.append(Layer(f"{name}-caption", caption_texts(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
-    layers.append(Layer(TITLE_LAYER, (Text((left, top + 8.0), sheet.title, TITLE_SIZE, "start", weight="bold"),)))
+    layers.append(Layer(TITLE_LAYER, title_texts((sheet.title,), TITLE_SIZE, (left, top + 8.0))))
     return Arrangement(layers, fields)
 
 
@@ -485,6 +485,15 @@ def _off_line(point: complex, through: complex, unit: complex) -> float:
     return ((point - through) * unit.conjugate()).imag
 
 
+def title_texts(lines: Sequence[str], size: float, at: tuple[float, float]) -> tuple[Text, ...]:
+    """A drawing's title in bold at cap height ``size``, its ``lines`` (one, or the title broken) a caption's line
+    apart, from the left of ``at`` up, the last line's baseline at ``at``: the heading of a plan sheet, of the
+    velocity plans, of a force sheet, and each "continued"."""
+    left, last = at
+    return tuple(Text((left, last + CAPTION_LINE * size * (len(lines) - 1 - k)), line, size, "start", weight="bold")
+                 for k, line in enumerate(lines))
+
+
 def caption_texts(lines: Sequence[str], at: tuple[float, float]) -> tuple[Text, ...]:
     """A drawing's caption centred under ``at``: its name in bold, then its scale."""
     return tuple(Text((at[0], at[1] - k * CAPTION_LINE * CAPTION_SIZE), line, CAPTION_SIZE, "middle",
@@ -493,4 +502,4 @@ def caption_texts(lines: Sequence[str], at: tuple[float, float]) -> tuple[Text, 
 
 
 
-__all__ = ["ZERO_MM", "PlanSheet", "caption_texts", "layout", "plan_layers", "too_short"]
+__all__ = ["ZERO_MM", "PlanSheet", "caption_texts", "layout", "plan_layers", "title_texts", "too_short"]

@@ -198,9 +198,7 @@ def _continued(title: Layer, continued: str, broken: bool) -> Layer:
     line = continued.format(title=first.text)
     lines = fitted(line, text_width(first.text, first.size, first.weight), first.size, first.weight) if broken \
         else [line]
-    step = plan_layout.CAPTION_LINE * first.size
-    return Layer(title.name, tuple(replace(first, at=(first.at[0], first.at[1] + step * (len(lines) - 1 - k)),
-                                           text=text) for k, text in enumerate(lines)))
+    return Layer(title.name, plan_layout.title_texts(lines, first.size, first.at))
 
 
 def _group_of_field(field_name: str) -> str:

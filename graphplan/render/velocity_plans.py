@@ -20,7 +20,16 @@ from dataclasses import dataclass
 
 from ..mechanism import Mechanism
 from ..plans import Plan
-from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, Arrangement, caption_texts, plan_layers
+from .plans import (
+    CAPTION_GAP_MM,
+    CAPTION_LINE,
+    CAPTION_SIZE,
+    TITLE_SIZE,
+    Arrangement,
+    caption_texts,
+    plan_layers,
+    title_texts,
+)
 from .primitives import Layer, Text, bounds, bounds_of, moved_layers, prefixed, text_width
 
 # Between two cells of the grid (mm): less than between a plan sheet's drawings, as the plans are one set.
@@ -107,8 +116,7 @@ def heading_texts(title_lines: Sequence[str], scale_line: str, corner: tuple[flo
     grid, and over each part of it that goes on onto another sheet, where a grader measures by that μV too."""
     left, top = corner
     base = top + HEADING_GAP_MM
-    return (*(Text((left, base + CAPTION_LINE * CAPTION_SIZE + CAPTION_LINE * TITLE_SIZE * (len(title_lines) - 1 - k)),
-                   line, TITLE_SIZE, "start", weight="bold") for k, line in enumerate(title_lines)),
+    return (*title_texts(title_lines, TITLE_SIZE, (left, base + CAPTION_LINE * CAPTION_SIZE)),
             Text((left, base), scale_line, CAPTION_SIZE, "start"))
 
 
