@@ -5,10 +5,15 @@ A scene's names are looked up among the names it has given already; where the tw
 characters, an error that shows both ("must be one of O, C (got 'О')") contradicts itself on screen, and one
 that letters two points alike (a Cyrillic С beside the Latin C) draws sheets with two points C.  This module
 tells such names apart and says which character is which, for every place that looks a name up.
+
+The plans letter points in lower case (B → b), so two names that differ in case alone (b beside B, s3 beside S3),
+or one whose letter is a construction's own (N3 beside the normal component's n3), would be one point on them:
+:func:`plan_letter` and :func:`construction_letter_clash` tell the reader which.
 """
 
 from __future__ import annotations
 
+import re
 import unicodedata
 from collections.abc import Iterable
 
@@ -79,6 +84,31 @@ def _advice(typed: str, meant: str) -> str:
     return f"write it as {meant!r} is written (copy it), or name both alike in ASCII"
 
 
+def plan_letter(point: str) -> str:
+    """The letter the plans give the image of ``point``: ``B`` → ``b``, ``S3`` → ``s3``.
+
+    ``p`` is the pole's, so a point named P is lettered ``p′``.
+    """
+    letter = point.lower()
+    return f"{letter}′" if letter == "p" else letter
+
+
+# The letters the constructions give their own points: the ends of normal components (n3, the triad's n5′, n5″)
+# and the triad's special point Σ5 (σ5), each followed by a link's number.
+_CONSTRUCTION_LETTER = re.compile(r"([nσ])(\d+)[′″]*")
+
+
+def construction_letter_clash(point: str, moving_links: Iterable[int]) -> str | None:
+    """What the constructions letter as ``point``'s plan letter, where a construction of one of ``moving_links`` does
+    ("the end of a normal component (aⁿ) on link 3"), else None."""
+    match = _CONSTRUCTION_LETTER.fullmatch(plan_letter(point))
+    if match is None or int(match.group(2)) not in set(moving_links):
+        return None
+    if match.group(1) == "σ":
+        return f"the special point of the triad whose ternary link is {match.group(2)}"
+    return f"the end of a normal component (aⁿ) on link {match.group(2)}"
+
+
 def lookalike_hint(name: str, names: Iterable[str]) -> str:
     """The hint for a ``name`` looked up among ``names`` and not found, where one of them looks the same:
     "; 'О' has the Cyrillic 'О' … where 'O' has the Latin 'O' …: type the Latin letter"; else ""."""
@@ -86,4 +116,5 @@ def lookalike_hint(name: str, names: Iterable[str]) -> str:
     return f"; {difference(name, meant)}" if meant is not None else ""
 
 
-__all__ = ["contrast", "described", "difference", "lookalike_hint", "plain", "twin"]
+__all__ = ["construction_letter_clash", "contrast", "described", "difference", "lookalike_hint", "plain", "plan_letter",
+           "twin"]

@@ -16,7 +16,7 @@ from types import MappingProxyType
 
 from .errors import SceneError
 from .groups import Driver, Group, Guide
-from .lookalikes import contrast, difference, lookalike_hint, plain, twin
+from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
 from .scene import PointSpec, Scene
 
 _ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -240,7 +240,30 @@ def _check_point_names(scene: Scene) -> dict[str, str]:
             raise SceneError(where, f"{name!r} looks the same as the point {other!r} of "
                              f"{named_at[other]}, and the drawings would letter both alike; "
                              f"{contrast(name, other)}: name the two apart")
+    _check_plan_letters(scene, named_at)
     return named_at
+
+
+def _check_plan_letters(scene: Scene, named_at: dict[str, str]) -> None:
+    """No two points the plans letter alike: each construction puts its image under its letter, the later over the
+    earlier, so the plans, and the forces and error tables read off them, would come out wrong without a word.
+    Points on the frame stand at the pole and have no letter of their own."""
+    moving = {scene.driver.link, *(link for group in scene.groups for link in group.links)}  # type: ignore[union-attr]
+    unlettered = {*scene.frame_points, *(spec.name for spec in scene.points if spec.link == scene.frame_link)}
+    lettered: dict[str, str] = {}
+    for name, where in named_at.items():
+        if name in unlettered:
+            continue
+        letter = plan_letter(name)
+        construction = construction_letter_clash(name, moving)
+        if construction is not None:
+            raise SceneError(where, f"the plans letter points in lower case, so {name} would be {letter}, the letter of "
+                             f"{construction}: name it otherwise")
+        other = lettered.setdefault(letter, name)
+        if other != name:
+            pole = " (p is the pole's letter, so P is p′)" if "p" in (name.lower(), other.lower()) else ""
+            raise SceneError(where, f"the plans letter points in lower case, so {name} and the point {other} of "
+                             f"{named_at[other]} would both be {letter}{pole}, one point on them: name it otherwise")
 
 
 def _new_joint_where(solver: Driver | Group, name: str) -> str:

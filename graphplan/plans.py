@@ -27,6 +27,7 @@ from .geometry import (
     crossing_angle_deg,
     similar_point,
 )
+from .lookalikes import plan_letter
 from .scales import standard_scale
 
 if TYPE_CHECKING:
@@ -39,12 +40,9 @@ SHALLOW_CROSSING_DEG = 5.0
 
 
 def image_name(point: str) -> str:
-    """The plan's letter for a point of the mechanism: ``B`` → ``b``, ``S3`` → ``s3``.
-
-    ``p`` is the pole's, so a point named P is lettered ``p′``.
-    """
-    letter = point.lower()
-    return f"{letter}′" if letter == "p" else letter
+    """The plan's letter for a point of the mechanism: ``B`` → ``b``, ``S3`` → ``s3``, P → ``p′`` (``p`` is the
+    pole's); the reader refuses two points lettered alike (:func:`graphplan.mechanism.build`)."""
+    return plan_letter(point)
 
 
 @dataclass(frozen=True)
