@@ -13,6 +13,7 @@ import difflib
 import json
 import math
 import re
+import unicodedata
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -57,6 +58,44 @@ def join_path(path: str, key: str | int) -> str:
         # Quoted as TOML quotes it, so that an empty name or one with a dot still reads as one key.
         key = json.dumps(key, ensure_ascii=False)
     return f"{path}.{key}" if path else key
+
+
+# Control characters a string may hold: the tab and the line breaks of a multi-line """…""" string, which XML and
+# LaTeX take.  Every other one (a form feed, a backspace, a bell) makes a sheet's SVG XML that does not parse.
+_HARMLESS_CONTROLS = frozenset("\t\n\r")
+_CONTROL_NAMES = {"\0": "a null", "\a": "a bell", "\b": "a backspace", "\f": "a form feed", "\v": "a vertical tab",
+                  "\x1b": "an escape"}
+
+
+def refuse_control_characters(value: Any, where: str) -> None:
+    """Refuse a string or key anywhere under ``value`` that holds a control character no drawing can hold.
+
+    TOML lets "\\f" and "\\b" stand for a form feed and a backspace, so a Windows path pasted into a "…" string
+    ("D:\\files\\fourbar") parses, and writes sheets no browser opens.
+    """
+    if isinstance(value, dict):
+        for key, item in value.items():
+            _refuse_in_string(key, where, key=True)
+            refuse_control_characters(item, join_path(where, key))
+    elif isinstance(value, list):
+        for index, item in enumerate(value):
+            refuse_control_characters(item, join_path(where, index))
+    elif isinstance(value, str):
+        _refuse_in_string(value, where, key=False)
+
+
+def _refuse_in_string(text: str, where: str, *, key: bool) -> None:
+    bad = next((c for c in text if unicodedata.category(c) == "Cc" and c not in _HARMLESS_CONTROLS), None)
+    if bad is None:
+        return
+    what = f"{_CONTROL_NAMES.get(bad, 'a control character')} (U+{ord(bad):04X})"
+    hint = ""
+    if bad in "\b\f":
+        hint = (f"; a backslash in a TOML \"…\" string starts an escape (\\{'b' if bad == chr(8) else 'f'} is "
+                f"{_CONTROL_NAMES[bad]}): in a path write / for \\, or use a literal '…' string, which takes "
+                "backslashes as they are")
+    problem = f"{'the key ' + repr(text) + ' ' if key else ''}holds {what}, which no drawing or note can show"
+    raise SceneError(where, problem, *(() if key else (text,)), hint=hint)
 
 
 # The magnitudes a scene may give: beyond them a square overflows or a length vanishes into rounding.

@@ -25,7 +25,7 @@ from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
 from .lookalikes import described, difference, lookalike_hint
 from .lookalikes import plain as lookalike_plain
-from .reader import Table, check_choice, check_int, check_number, check_str, check_xy
+from .reader import Table, check_choice, check_int, check_number, check_str, check_xy, refuse_control_characters
 from .rotor_balancing import BalancingSpec, read_balancing
 from .vibration import VibrationSpec, read_vibration
 
@@ -489,6 +489,7 @@ _RUSSIAN_KEYS = {"сцен": "scene", "проект": "project", "стойк": "
 
 
 def _read_scene(top: Table, source: str) -> Scene:
+    refuse_control_characters(top.data, "")
     scene = top.table("scene", None) or Table({}, "scene")
     title = scene.string("title", Path(source).stem)
     locale = scene.choice("locale", LOCALES, "en")
