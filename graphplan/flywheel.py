@@ -443,9 +443,12 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     if linkage:
         for key in _DIAGRAM_ONLY:
             if table.has(key):
+                # The flywheel starter's driving = "constant" is the diagram scene's spelling of the linkage's key.
+                spelt = f'; with a linkage write constant = "{key}"' if key in _SIDES and \
+                    table.data[key] == "constant" else ""
                 raise SceneError(table.where(key), "is for a scene without a linkage: this one has [frame] and "
                                  "[driver], whose loads and masses ([[loads]], [links.N]) are reduced to the crank "
-                                 "instead; leave it out, or leave out the linkage")
+                                 "instead; leave it out, or leave out the linkage" + spelt)
     if once_over is not None:
         for key in (*_FLYWHEEL_KEYS, *MOTION_KEYS):
             if table.has(key):

@@ -207,7 +207,10 @@ ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw",
            # Languages by the names and country codes people write for them.
            "cn": "zh", "zh-cn": "zh", "zh_cn": "zh", "zh-hans": "zh", "chinese": "zh", "中文": "zh", "汉语": "zh",
            "ru-ru": "ru", "ru_ru": "ru", "russian": "ru", "русский": "ru", "рус": "ru",
-           "en-us": "en", "en_us": "en", "en-gb": "en", "en_gb": "en", "english": "en"}
+           "en-us": "en", "en_us": "en", "en-gb": "en", "en_gb": "en", "english": "en",
+           # Keys by the textbook's symbols and by the American spelling; each meets only the key it names.
+           "center": "centre", "j": "inertia", "m": "mass", "g": "gravity", "language": "locale", "lang": "locale",
+           "r": "length"}
 
 
 def _suggestion(word: str, choices: Any) -> str:
@@ -261,8 +264,8 @@ class Table:
         """A required key that is missing is often there, misspelt: name the misspelling of one of ``keys``."""
         strangers = [k for k in self.data if k not in self._taken]
         for key in keys:
-            close = [k for k in strangers if k.lower() == key.lower()] or difflib.get_close_matches(
-                key, strangers, n=1, cutoff=0.7)
+            close = [k for k in strangers if k.lower() == key.lower() or ALIASES.get(k.strip().lower()) == key] \
+                or difflib.get_close_matches(key, strangers, n=1, cutoff=0.7)
             if close:
                 raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
 
@@ -321,6 +324,9 @@ class Table:
         """A speed given under a textbook's symbol for it, where neither key is: n (об/мин, as a Russian textbook
         writes the speed in rev/min) or ω, named with the key it is given as here, before the speed is missed."""
         for key in self.data:
+            if key not in self._taken and key.strip().lower() in ("rps", "rev/s") and isinstance(self.data[key], int | float):
+                raise SceneError(self.where(key), f"unknown key; a speed in rev/s is given in rev/min as {rpm_key}: "
+                                 f"write {rpm_key} = {as_written(60 * self.data[key])}")
             meant = _SPEED_SYMBOLS.get(key.strip().lower()) if key not in self._taken else None
             if meant is not None:
                 right, unit = (rpm_key, "rev/min") if meant == "rpm" else (omega_key, "rad/s")

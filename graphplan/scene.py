@@ -422,11 +422,13 @@ def _toml_hint(data: str, message: str) -> str:
     if place is None or not 0 < int(place[1]) <= len(lines):
         return ""
     line, column = lines[int(place[1]) - 1], int(place[2])
-    comma = re.search(r"=\s*\{?[^=#]*?([-+]?\d+),(\d+)", line)
+    comma = _decimal_comma(line)
     if comma:
         return f"; a decimal comma? TOML numbers take a point: write {comma[1]}.{comma[2]}"
     letter = line[column - 1:column]
-    code = f"'{letter}' (U+{ord(letter):04X})" if letter else ""
+    if not line[column - 1:].split("#")[0].strip():  # at the line's end: what was left open, or a key given again
+        return _end_of_line_hint(line, message)
+    code = f"'{letter}' (U+{ord(letter):04X})"
     if letter in _DEGREE_SIGNS:
         written = (line[:column - 1] + line[column:]).split("#")[0].strip()
         return f"; {code} is a degree sign: an angle is a number, in degrees, so drop it: write {written}"
@@ -441,6 +443,28 @@ def _toml_hint(data: str, message: str) -> str:
         return f"; {code} is {plain[1]}: TOML reads the ASCII '{plain[0]}' where one belongs"
     if letter and not letter.isascii():
         return _key_hint(line, column)
+    return ""
+
+
+def _decimal_comma(line: str) -> re.Match[str] | None:
+    """The first number written with a comma after an =, outside a [ ] list: a list such as [0,0] is valid TOML,
+    so its comma is never what TOML stumbled on."""
+    for comma in re.finditer(r"=\s*\{?[^=#]*?([-+]?\d+),(\d+)", line):
+        before = line[:comma.start(1)]
+        if before.count("[") <= before.count("]"):
+            return comma
+    return None
+
+
+def _end_of_line_hint(line: str, message: str) -> str:
+    """The hint for a line TOML found unfinished at its end (a string or a table's bracket left open) or a key
+    given twice."""
+    if message.startswith(("Cannot overwrite a value", "Cannot declare")):
+        return "; a key or a table given twice: keep one"
+    if "Illegal character '\\n'" in message and line.count('"') % 2 == 1:
+        return '; the string opened on this line is not closed: end it with "'
+    if message.startswith("Unclosed inline table"):
+        return "; an inline table { … } ends on the line it starts: close it with }"
     return ""
 
 
@@ -546,6 +570,9 @@ def _read_scene(top: Table, source: str) -> Scene:
     forces = top.table("forces", None) or Table({}, "forces")
     inertia = forces.choice("inertia", INERTIA_FORMS, "couple")
     forces.done()
+    # The optional tables are looked for, never read, where absent: a misspelt one is named before done() likens it
+    # to a table that was read ([vibrations] to positions).
+    top.misspelt(*(name for name in ("balancing", "vibration", "dynamics") if not top.has(name)))
     top.done()
     return Scene(title=title, locale=locale, gravity=gravity, frame_link=frame_link,
                  frame_points=MappingProxyType(frame_points), frame_lines=MappingProxyType(frame_lines),
@@ -684,9 +711,9 @@ def _read_links(table: Table | None) -> dict[int, LinkSpec]:
             centre=entry.string("centre", None),
             inertia=entry.number("inertia", 0.0, non_negative=True),
         )
+        entry.done()  # a centre given as center is named before it is missed
         if links[number].mass > 0 and links[number].centre is None:
             raise SceneError(f"{entry.path}.centre", "a link with a mass needs its centre of mass: a point fixed on it")
-        entry.done()
     return links
 
 
@@ -799,6 +826,9 @@ def _read_friction(where: str, item: object) -> FrictionSpec:
 
 def _read_positions(table: Table, driver: Driver) -> Positions:
     count = table.integer("count", 12, minimum=1, maximum=MAX_POSITIONS)
+    if not driver.cyclic and count < 2:
+        raise SceneError(table.where("count"), f"a {driver.kind} driver's positions run from one end of "
+                         f"driver.{driver.run_key} to the other, which takes at least 2", count)
     start_raw = table.raw("start", 0.0)
     start: str | float
     if isinstance(start_raw, str):

@@ -1,0 +1,85 @@
+"""Hints that fit the slip: a TOML error at a line's end is not taken for a degree sign (every string holds the
+empty one), a coordinate list [0,0] is not taken for a decimal comma, a misspelt optional table or a key written
+as the textbook's symbol or in American spelling is named with the key meant, one position cannot run over a
+travel or a swing, and driving = "constant" in a linkage scene is told the linkage's spelling."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from test_scene_errors import first_error
+
+from graphplan.starters import starter
+
+CRANK_ROCKER = starter("crank-rocker")
+SHAPER = starter("shaper")
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+
+
+def changed(text: str, old: str, new: str) -> str:
+    assert old in text, old
+    return text.replace(old, new, 1)
+
+
+@pytest.mark.parametrize(("old", "new", "hint"), [
+    ("[positions]", "[positions", ""),
+    ('title   = "Crank-rocker mechanism"', 'title   = "Crank-rocker mechanism',
+     '; the string opened on this line is not closed: end it with "'),
+    ('title   = "Crank-rocker mechanism"', 'title   = "a"\ntitle = "b"', "; a key or a table given twice: keep one"),
+    ('points = { O = [0.0, 0.0], C = [0.0, 0.55] }', 'points = { O = [0,0], C = [0,0.55]',
+     "; an inline table { … } ends on the line it starts: close it with }"),
+], ids=["open-bracket", "open-quote", "key-twice", "open-inline-table"])
+def test_a_toml_error_at_a_lines_end_gets_a_hint_that_fits_or_none(old, new, hint) -> None:
+    stage, error = first_error(changed(CRANK_ROCKER, old, new))
+    message = str(error)
+    assert stage == "load" and "degree sign" not in message and "decimal comma" not in message
+    assert message.endswith(")" + hint)
+
+
+def test_a_decimal_comma_outside_a_list_is_still_told() -> None:
+    stage, error = first_error(changed(CRANK_ROCKER, "length  = 0.175", "length  = 0,175"))
+    assert stage == "load" and str(error).endswith("; a decimal comma? TOML numbers take a point: write 0.175")
+
+
+@pytest.mark.parametrize(("table", "meant"), [
+    ("dynamic", "dynamics"), ("Dynamics", "dynamics"), ("balance", "balancing"), ("vibrations", "vibration"),
+])
+def test_a_misspelt_optional_table_is_named_with_the_one_meant(table, meant) -> None:
+    stage, error = first_error(changed(CRANK_ROCKER, "[links.3]", f"[{table}]\n[links.3]"))
+    assert (stage, str(error)) == ("load", f"{table}: unknown key; did you mean {meant!r}?")
+
+
+@pytest.mark.parametrize(("old", "new", "message"), [
+    ('centre  = "S3"', 'center  = "S3"', "links.3.center: unknown key; did you mean 'centre'?"),
+    ("inertia = 0.51", "J = 0.51", "links.3.J: unknown key; did you mean 'inertia'?"),
+    ('mass    = 17.0\ncentre  = "S3"', 'm = 17.0\ncentre  = "S3"', "links.3.m: unknown key; did you mean 'mass'?"),
+    ("gravity = 9.81", "g = 9.81", "scene.g: unknown key; did you mean 'gravity'?"),
+    ('locale  = "en"', 'language = "en"', "scene.language: unknown key; did you mean 'locale'?"),
+    ("length  = 0.175", "r = 0.175", "driver.r: unknown key; did you mean 'length'?"),
+    # 2.5 rev/s is 150 rev/min, exactly in binary.
+    ("omega   = -17.0", "rps = 2.5",
+     "driver.rps: unknown key; a speed in rev/s is given in rev/min as rpm: write rpm = 150.0"),
+], ids=["center", "J", "m", "g", "language", "r", "rps"])
+def test_a_key_under_its_symbol_or_american_spelling_is_named_with_the_key(old, new, message) -> None:
+    stage, error = first_error(changed(CRANK_ROCKER, old, new))
+    assert (stage, str(error)) == ("load", message)
+
+
+@pytest.mark.parametrize("fixture", ["slider_driven", "double_rocker_swing"])
+def test_one_position_over_a_travel_or_a_swing_is_refused_naming_count(fixture) -> None:
+    text = (FIXTURES / f"{fixture}.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^count\s*=.*$", "count = 1", text)
+    text = re.sub(r"(?m)^plans\s*=.*$", "plans = [1]", text)
+    stage, error = first_error(text)
+    assert stage == "load" and str(error).startswith("positions.count: a ")
+    assert "to the other, which takes at least 2 (got 1)" in str(error)
+
+
+def test_driving_constant_in_a_linkage_scene_is_told_the_linkages_spelling() -> None:
+    """The flywheel starter teaches driving = "constant"; a scene with a linkage writes constant = "driving"."""
+    text = changed(SHAPER, "delta              = 0.05", 'delta              = 0.05\ndriving = "constant"')
+    stage, error = first_error(text)
+    assert stage == "load" and str(error).startswith("dynamics.driving: is for a scene without a linkage")
+    assert str(error).endswith('leave it out, or leave out the linkage; with a linkage write constant = "driving"')
