@@ -37,7 +37,10 @@ if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
     from .run import Run
 
 MAX_SCENE_BYTES = 1_000_000
-MAX_POSITIONS = 100_000
+# A run's cost grows in step with its positions, about 2 ms of CPU and 28 kB of memory each beside 6 s of its own
+# (bench/positions_count.py): 20 000 run in about a minute.  100 000 took 14 minutes and 2.8 GB on a shared
+# machine, with the console silent, which a student takes for a hang.
+MAX_POSITIONS = 20_000
 LOCALES = ("en", "ru", "zh")
 SHEETS = ("A1", "A2", "A3", "A4", "none")
 SENSES = ("ccw", "cw", "forward", "backward")
@@ -825,7 +828,10 @@ def _read_friction(where: str, item: object) -> FrictionSpec:
 
 
 def _read_positions(table: Table, driver: Driver) -> Positions:
-    count = table.integer("count", 12, minimum=1, maximum=MAX_POSITIONS)
+    count = table.integer("count", 12, minimum=1)
+    if count > MAX_POSITIONS:
+        raise SceneError(table.where("count"), f"must be <= {MAX_POSITIONS}: a run takes about a minute for "
+                         f"{MAX_POSITIONS}, and minutes and gigabytes beyond", count)
     if not driver.cyclic and count < 2:
         raise SceneError(table.where("count"), f"a {driver.kind} driver's positions run from one end of "
                          f"driver.{driver.run_key} to the other, which takes at least 2", count)

@@ -235,7 +235,7 @@ def _without(path: str) -> str:
     (_with("driver.length", -0.175), "driver.length: must be > 0 (got -0.175)"),
     (_with("groups[0].lengths[0]", 0.0), "groups[0].lengths[0]: must be > 0"),
     (_with("scene.gravity", -math.inf), "scene.gravity: must be a finite number"),
-    (_with("positions.count", 10**12), "positions.count: must be <= 100000"),
+    (_with("positions.count", 10**12), "positions.count: must be <= 20000"),
     (_with("driver.pivot", "Q"), "driver.pivot: must be a point of [frame] points"),
     (_with("links.3.centre", "Nowhere"), "links.3.centre: must be a point fixed on link 3"),
     (_with("groups[0].lengths[0]", 0.1), "B cannot be assembled at φ = "),
