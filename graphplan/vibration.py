@@ -565,6 +565,18 @@ def isolation_warning(spec: VibrationSpec) -> str | None:
     return None if found is None else f"vibration: {found.detail}"
 
 
+def damping_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line for a ``damping_ratio`` above 1, else None: over-critical damping lets a mount creep
+    back with no vibration at all, which no machine's mount does (they damp at a few hundredths to a few tenths),
+    so such a ζ is rather a percentage typed for a fraction, as ``f`` and ``delta`` are told."""
+    zeta = spec.damping_ratio
+    if spec.damping is not None or not zeta > 1:
+        return None
+    percentage = f"; a percentage typed for a fraction? ({zeta:g} % is ζ = {zeta / 100:g})" if zeta >= 2 else ""
+    return (f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1): the machine would creep back to rest "
+            f"without vibrating, which no mount's damping does (a few hundredths to a few tenths){percentage}")
+
+
 def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
     """``value`` to ``digits`` significant digits, rounded down or up (a bound offered must keep what it bounds), with
     no exponent."""
@@ -844,6 +856,7 @@ __all__ = [
     "damping_from_phase",
     "damping_from_resonance",
     "damping_ratio",
+    "damping_warning",
     "displacement_transmissibility",
     "displacement_transmissibility_phase",
     "force_magnification",

@@ -1,7 +1,8 @@
 """Hints that fit the slip: a TOML error at a line's end is not taken for a degree sign (every string holds the
 empty one), a coordinate list [0,0] is not taken for a decimal comma, a misspelt optional table or a key written
 as the textbook's symbol or in American spelling is named with the key meant, one position cannot run over a
-travel or a swing, and driving = "constant" in a linkage scene is told the linkage's spelling."""
+travel or a swing, driving = "constant" in a linkage scene is told the linkage's spelling, and a damping ratio
+above 1 is warned of (above 2 asked whether it is a percentage)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,10 @@ from pathlib import Path
 import pytest
 from test_scene_errors import first_error
 
+import graphplan
+from graphplan.deliverables import outcome_warnings
 from graphplan.starters import starter
+from graphplan.vibration import damping_warning
 
 CRANK_ROCKER = starter("crank-rocker")
 SHAPER = starter("shaper")
@@ -83,3 +87,22 @@ def test_driving_constant_in_a_linkage_scene_is_told_the_linkages_spelling() -> 
     stage, error = first_error(text)
     assert stage == "load" and str(error).startswith("dynamics.driving: is for a scene without a linkage")
     assert str(error).endswith('leave it out, or leave out the linkage; with a linkage write constant = "driving"')
+
+
+@pytest.mark.parametrize(("zeta", "percentage"), [(50.0, True), (1.5, False), (1.0, None), (0.1, None)])
+def test_an_over_critical_damping_ratio_is_warned_of_and_a_large_one_asked_if_a_percentage(zeta, percentage) -> None:
+    """f = 8 and delta = 1 are asked whether they are percentages; damping_ratio = 50 was taken as ζ = 50, with only
+    the mounts' sag to hint at it.  ζ ≤ 1 (critical damping) is a damping some mount may have: no word."""
+    scene = graphplan.load_text(changed(starter("rotor"), "damping_ratio = 0.1 ", f"damping_ratio = {zeta}"))
+    line = damping_warning(scene.vibration)
+    if percentage is None:
+        assert line is None
+        return
+    assert line.startswith(f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1)")
+    assert line.endswith(f"; a percentage typed for a fraction? ({zeta:g} % is ζ = {zeta / 100:g})") == percentage
+
+
+def test_the_damping_warning_is_among_what_check_and_run_tell() -> None:
+    scene = graphplan.load_text(changed(starter("rotor"), "damping_ratio = 0.1 ", "damping_ratio = 50.0"))
+    told = outcome_warnings(scene, ("vibration",), None)
+    assert any(line.startswith("vibration.damping_ratio: ζ = 50 is over-critical") for line in told)
