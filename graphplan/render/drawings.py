@@ -8,7 +8,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from ..analysis import Analysis, PlanPosition, VelocityPosition, instant
+from ..analysis import VELOCITY_PLANS_FIELD_MM, Analysis, PlanPosition, VelocityPosition, instant
 from ..errors import SceneError
 from ..forces import POLYGON_FIELD_MM, GroupForces, polygon_extent
 from ..kinematics import at
@@ -93,9 +93,12 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
         across = spread(plan) / plan.scale
         if not across > LARGEST_PAPER_MM:  # NaN too: a singular position's plan is refused elsewhere
             continue
-        key, given, fix = _plan_scale(analysis, kind, plan)
+        # The velocity plans of every position are drawn at velocity_plans_pole, not at the plan sheets' pole.
+        grid = isinstance(position, VelocityPosition) and analysis.scene.drawing.velocity_plans_pole is not None
+        field = VELOCITY_PLANS_FIELD_MM if grid else PLAN_FIELD_MM
+        key, given, fix = _plan_scale(analysis, kind, plan, grid)
         raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
-                         f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {PLAN_FIELD_MM:g} mm "
+                         f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {field:g} mm "
                          "plan), or leave it out for the program to choose", given)
     polygons = _drawn_polygons(analysis)
     for position, group in polygons:
@@ -153,10 +156,17 @@ def _drawn_polygons(analysis: Analysis) -> list[tuple[PlanPosition, GroupForces]
             for group in found.groups]
 
 
-def _plan_scale(analysis: Analysis, kind: str, plan: Plan) -> tuple[str, float | None, str]:
+def _plan_scale(analysis: Analysis, kind: str, plan: Plan, grid: bool = False) -> tuple[str, float | None, str]:
     """The key that sets ``kind``'s plans' scale (μ itself, or the pole distance), its value in the scene, and the
-    value of it that draws ``plan`` as large as its field."""
+    value of it that draws ``plan`` as large as its field; ``grid`` for a velocity plan of every position drawn at
+    ``velocity_plans_pole``."""
     drawing = analysis.scene.drawing
+    if grid:  # one μV for them all: the largest of them fills the field
+        every = [position.velocity for position in analysis.velocity_plans]
+        pin = analysis.mechanism.driver.joint
+        fitting = max(spread(each) for each in every) / VELOCITY_PLANS_FIELD_MM
+        fix = f"{max(1, math.floor(max(abs(each.value(pin)) for each in every) / fitting)):d}"
+        return "drawing.velocity_plans_pole", drawing.velocity_plans_pole, fix
     fitting = spread(plan) / PLAN_FIELD_MM
     if getattr(drawing, f"{kind}_scale") is not None:
         return f"drawing.{kind}_scale", getattr(drawing, f"{kind}_scale"), format_scale(standard_scale(fitting))
