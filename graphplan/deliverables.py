@@ -29,7 +29,7 @@ from .locale import strings
 from .misreadings import FAR_OFF_PRECISIONS
 from .reader import check_choice
 from .render.primitives import Layer, in_language
-from .scene import OUTPUT_PIECES, Scene
+from .scene import OUTPUT_PIECES, Scene, guides_without_angle
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = OUTPUT_PIECES
@@ -806,7 +806,7 @@ def drafting_precision_warnings(scene: Scene) -> list[str]:
 def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[str]:
     """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
-    told = []
+    told = guides_without_angle(scene)
     if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
         from .flywheel import delta_warning
 

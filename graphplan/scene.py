@@ -379,6 +379,21 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     return _read_scene(Table(document, ""), source)
 
 
+def guides_without_angle(scene: Scene) -> list[str]:
+    """A line for each guide whose ``angle`` the scene left out: it then runs at 0° (along +x on the frame, along its
+    link's reference line on a moving link), which a forgotten angle makes another mechanism of without a word."""
+    solvers = [solver for solver in (scene.driver, *scene.groups) if solver is not None]
+    guides = [*scene.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
+    told = []
+    for guide in guides:
+        if guide.line is not None or guide.angle_given:
+            continue
+        along = "+x" if guide.link in (None, scene.frame_link) else f"link {guide.link}'s reference line"
+        told.append(f"{guide.where}: no angle, so the guide is taken at 0°, along {along}: write angle = 0.0 if "
+                    "that is meant")
+    return told
+
+
 def _utf16(data: bytes) -> bool:
     """Whether ``data`` is UTF-16 text: a byte-order mark, or zero bytes beside the letters of a Latin text (a TOML
     file has no zero byte of its own)."""

@@ -1,8 +1,9 @@
 """Hints that fit the slip: a TOML error at a line's end is not taken for a degree sign (every string holds the
 empty one), a coordinate list [0,0] is not taken for a decimal comma, a misspelt optional table or a key written
 as the textbook's symbol or in American spelling is named with the key meant, one position cannot run over a
-travel or a swing, driving = "constant" in a linkage scene is told the linkage's spelling, and a damping ratio
-above 1 is warned of (above 2 asked whether it is a percentage)."""
+travel or a swing, driving = "constant" in a linkage scene is told the linkage's spelling, a damping ratio
+above 1 is warned of (above 2 asked whether it is a percentage), and a guide whose angle is left out is told it
+runs at 0°."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from test_scene_errors import first_error
 
 import graphplan
 from graphplan.deliverables import outcome_warnings
+from graphplan.scene import guides_without_angle
 from graphplan.starters import starter
 from graphplan.vibration import damping_warning
 
@@ -106,3 +108,30 @@ def test_the_damping_warning_is_among_what_check_and_run_tell() -> None:
     scene = graphplan.load_text(changed(starter("rotor"), "damping_ratio = 0.1 ", "damping_ratio = 50.0"))
     told = outcome_warnings(scene, ("vibration",), None)
     assert any(line.startswith("vibration.damping_ratio: ζ = 50 is over-critical") for line in told)
+
+
+@pytest.mark.parametrize(("old", "new", "told"), [
+    ("lines  = { ram = { through = [0.0, 0.64], angle = 0.0 } }", "lines  = { ram = { through = [0.0, 0.64] } }",
+     "frame.lines.ram: no angle, so the guide is taken at 0°, along +x"),
+    ('guide    = "ram"', "guide    = { through = [0.0, 0.64] }",
+     "groups[1].guide: no angle, so the guide is taken at 0°, along +x"),
+], ids=["frame-line", "group-guide"])
+def test_a_guide_without_its_angle_is_told_it_runs_along_x(old, new, told) -> None:
+    """The contract always writes a guide's angle and gives it no default: one left out runs along +x, another
+    mechanism than the one meant, so check and run say so."""
+    scene = graphplan.load_text(changed(SHAPER, old, new))
+    assert guides_without_angle(scene) == [f"{told}: write angle = 0.0 if that is meant"]
+    assert f"{told}: write angle = 0.0 if that is meant" in outcome_warnings(scene, (), None)
+
+
+def test_a_triad_leg_guide_without_its_angle_is_told() -> None:
+    text = starter("triad")
+    lengths = next(line for line in text.splitlines() if line.startswith("lengths"))
+    scene = graphplan.load_text(text.replace(lengths, lengths + "\nguides = { F = {} }", 1).replace(
+        lengths, "lengths = " + lengths.split("=", 1)[1].split("]")[0].rsplit(",", 1)[0] + "]", 1))
+    assert [line.split(":")[0] for line in guides_without_angle(scene)] == ["groups[0].guides.F"]
+
+
+@pytest.mark.parametrize("kind", ["crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad"])
+def test_the_starters_write_every_guides_angle(kind) -> None:
+    assert guides_without_angle(graphplan.load_text(starter(kind))) == []

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
 
 import numpy as np
@@ -52,6 +52,8 @@ class Guide:
     through: str | tuple[float, float] | None = None
     angle: float = 0.0
     line: str | None = None
+    # Whether the scene wrote the angle: the contract always does, so one left out is told (it runs along +x).
+    angle_given: bool = field(default=True, compare=False, repr=False)
 
     @property
     def on_frame(self) -> bool:
@@ -71,7 +73,7 @@ def read_guide(value: object, where: str) -> Guide:
         through = check_xy(through_raw, table.where("through"))
     angle = math.radians(table.number("angle", 0.0))
     table.done()
-    return Guide(where=where, link=link, through=through, angle=angle)
+    return Guide(where=where, link=link, through=through, angle=angle, angle_given=table.has("angle"))
 
 
 @dataclass(frozen=True)
