@@ -8,6 +8,8 @@ the scene, the joint, the position.
 
 from __future__ import annotations
 
+import math
+
 
 class GraphplanError(Exception):
     """Base of every error graphplan raises on purpose."""
@@ -56,7 +58,21 @@ def as_written(value: object, nested: bool = False) -> str:
         return "true" if value else "false"
     if nested and isinstance(value, str):
         return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= _LONGEST_INTEGER_SHOWN:
+        # A page of digits hides the message around it (positions.count = 10**400 from Python).
+        return f"{'-' if value < 0 else ''}an integer of {_digits(abs(value))} digits"
     return repr(value)
+
+
+_LONGEST_INTEGER_SHOWN = 10 ** 30
+
+
+def _digits(value: int) -> str:
+    """How many decimal digits ``value`` has; beyond what Python turns into a string, roughly."""
+    try:
+        return str(len(str(value)))
+    except ValueError:
+        return f"about {int(value.bit_length() * math.log10(2)) + 1}"
 
 
 def _key(key: object) -> str:

@@ -135,3 +135,11 @@ def test_a_triad_leg_guide_without_its_angle_is_told() -> None:
 @pytest.mark.parametrize("kind", ["crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad"])
 def test_the_starters_write_every_guides_angle(kind) -> None:
     assert guides_without_angle(graphplan.load_text(starter(kind))) == []
+
+
+def test_a_huge_integer_is_told_by_its_digits_not_spelt_out() -> None:
+    """positions.count = 10**400 from Python printed all 401 digits, hiding the message around them."""
+    text = re.sub(r"(?m)^count\s*=.*$", f"count = {10 ** 400}", CRANK_ROCKER)
+    stage, error = first_error(text)
+    assert stage == "load" and str(error).endswith("(got an integer of 401 digits)")
+    assert str(error).startswith("positions.count: must be <= ")
