@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 
 from graphplan.analysis import analyse
 from graphplan.locale import strings
@@ -18,25 +19,9 @@ from graphplan.scene import loads as scene_from_text
 from graphplan.statics import delivers_power
 from graphplan.wording import friction_summary
 
-SCENE = """
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = {omega}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.4
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
+
+def scene_text(omega: float) -> str:
+    return central_slider_crank(0.1, 0.4, omega) + """
 [positions]
 count = 12
 """
@@ -44,7 +29,7 @@ count = 12
 
 @pytest.mark.parametrize("omega", [10.0, -10.0])
 def test_the_ratio_is_mb0_over_mb_unless_the_loads_drive_the_driver_back(omega):
-    mechanism = analyse(scene_from_text(SCENE.format(omega=omega))).mechanism
+    mechanism = analyse(scene_from_text(scene_text(omega))).mechanism
     sense = math.copysign(1.0, omega)
     # Power Mb0·ω1: positive, zero (either sign of zero) and negative; a balancing load not found is not power.
     ideal = np.array([5.0 * sense, 0.0, -0.0, -5.0 * sense, math.nan])
@@ -52,7 +37,7 @@ def test_the_ratio_is_mb0_over_mb_unless_the_loads_drive_the_driver_back(omega):
 
 
 def test_the_friction_sentence_names_mb0_over_mb_where_the_loads_take_no_power():
-    mechanism = analyse(scene_from_text(SCENE.format(omega=10.0))).mechanism
+    mechanism = analyse(scene_from_text(scene_text(10.0))).mechanism
     text = strings("en")
 
     def ratio(ideal: float, load: float) -> str:
