@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scene_texts import central_slider_crank
 
 from graphplan import rounding, statics
 from graphplan.analysis import analyse
@@ -40,25 +41,7 @@ def test_statics_and_results_json_share_the_rule():
     assert statics.balancing_scale(ideal) * rounding.RELATIVE_NOISE == rounding.noise_floor(ideal)
 
 
-SCENE = """
-[scene]
-gravity = 0.0
-[frame]
-points = { O = [0.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = 10.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.4
-guide = { through = "O", angle = 0.0 }
-assembly = "forward"
+SCENE = central_slider_crank(0.1, 0.4, 10.0) + """
 [[loads]]
 kind = "force"
 link = 4
