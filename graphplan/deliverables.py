@@ -510,12 +510,28 @@ class MachineDynamics:
             return f"{crank}°"
         return text["angle_and_turned"].format(angle=crank, turned=turned, number=self.first_position)
 
+    def starting_brake(self) -> float | None:
+        """The brake's torque where the brake is on as the run starts, holding the machine at rest with it (a
+        damping alone takes nothing at rest); None otherwise."""
+        motion, brake = self.motion, self.spec.motion.brake if self.spec.motion is not None else None
+        if motion is None or brake is None or brake.torque == 0 or brake.at > float(motion.t[0]):
+            return None
+        return brake.torque
+
     def stall_warning(self) -> str | None:
         """One line for the command line when the motor cannot keep the machine turning."""
         motion = self.motion
         if motion is None or motion.stalled_at is None:
             return None
         where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
+        held = self.starting_brake()
+        if not motion.turned and held is not None:
+            resisting = self.machine.mr(float(motion.phi[0]), 0.0)
+            return (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
+                    f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there and the "
+                    f"brake applied at t = {self.spec.motion.brake.at:g} s, {resisting:.4g} + {held:g} = "
+                    f"{resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the machine "
+                    "from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
         if not motion.turned:
             return (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
                     f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there, "

@@ -7,6 +7,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from ..errors import SceneError
 from ..reader import Table, check_number
 from ..units import RPM
@@ -18,6 +20,10 @@ from .simulation import DEFAULT_RTOL, METHODS, MOST_CYCLES, SMALLEST_RTOL, Machi
 # The most turns of the shaft a scene's run integrates: a start-up and a steady state take tens to hundreds; a
 # duration of many more is a slip of the unit, and would hold the run for hours.
 MOST_TURNS = 100_000
+# The shortest time constant J/c a brake's damping may give, as a share of a turn's period at the running speed.  A
+# damping far stiffer stops the shaft within a sliver of a turn and then lets it creep at (Md − Mr)/c: a rigid stop
+# the run cannot integrate turn by turn (a hundred-thousandth of the period took a minute and then gave up).
+SHORTEST_BRAKE_TIME_CONSTANT = 0.01
 
 
 @dataclass(frozen=True)
@@ -54,8 +60,10 @@ class MotionSpec:
             refuse_endless_run_down(machine, self.brake)
 
     def _refuse_long_run(self, machine: Machine) -> None:
-        """Raise :class:`ValueError` for a run of more turns than a run integrates."""
+        """Raise :class:`ValueError` for a run of more turns than a run integrates, or a brake's damping too stiff
+        to integrate."""
         omega_run = running_speed(machine, self.motor, self.start, self.duration)
+        self._refuse_stiff_brake(machine, TWO_PI / omega_run)
         if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
             raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
                              f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
@@ -68,6 +76,27 @@ class MotionSpec:
             raise ValueError(f"start: {fastest:.4g} rad/s is {fastest / omega_run:.3g} times the running speed, "
                              f"{omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} turns, "
                              f"and it integrates at most {MOST_TURNS}")
+
+
+    def _refuse_stiff_brake(self, machine: Machine, period: float) -> None:
+        """Raise :class:`ValueError` for a brake's damping whose time constant J/c, J the least inertia it brakes,
+        is below :data:`SHORTEST_BRAKE_TIME_CONSTANT` of a turn's ``period``."""
+        brake = self.brake
+        if brake is None or brake.damping == 0:
+            return
+        # With a clutch the brake may hold the machine's side alone, the driving half slipping.
+        rotor = self.motor.reduced_inertia if self.clutch is None else 0.0
+        inertia = min(machine.je(phi) for phi in np.linspace(0.0, TWO_PI, 64, endpoint=False)) + rotor
+        time_constant = inertia / brake.damping
+        if time_constant >= SHORTEST_BRAKE_TIME_CONSTANT * period:
+            return
+        stiffest = inertia / (SHORTEST_BRAKE_TIME_CONSTANT * period)
+        raise ValueError(f"brake.damping: {brake.damping:g} N·m·s brakes the shaft's {inertia:.4g} kg·m² with the "
+                         f"time constant J/c = {time_constant:.3g} s, {time_constant / period:.3g} of a turn's "
+                         f"period at the running speed, {period:.4g} s: it stops the machine dead within a sliver "
+                         "of a turn and leaves it creeping at (Md − Mr)/c, which the run cannot follow turn by "
+                         f"turn; give a damping of at most {stiffest:.3g} N·m·s (a time constant of "
+                         f"{SHORTEST_BRAKE_TIME_CONSTANT:g} of the period), or brake.torque to hold the machine")
 
 
 def _read_motor(table: Table) -> tuple[Motor, float | None]:
@@ -123,7 +152,8 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
 def _read_brake(table: Table) -> Brake:
     torque = table.number("torque", 0.0, non_negative=True)
     damping = table.number("damping", 0.0, non_negative=True)
-    at = table.number("at", 0.0)
+    # A brake switched on before the run starts would be on from its start: a negative time is a slip.
+    at = table.number("at", 0.0, non_negative=True)
     if torque == 0 and damping == 0:
         raise SceneError(table.path, "needs torque > 0 or damping > 0")
     table.done()

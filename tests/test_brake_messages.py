@@ -1,0 +1,94 @@
+"""What a scene's brake is told: a brake on from the start that holds the machine is named in the "does not start"
+message with its torque, a brake switched on before the run is refused, and a viscous brake too stiff to integrate
+is refused before the run, not after a minute of integrating."""
+
+from __future__ import annotations
+
+import math
+import time
+
+import pytest
+
+from graphplan.cli import main
+from graphplan.errors import SceneError
+from graphplan.machine_motion import read_motion
+
+# A machine of 2 kg·m² against a constant 100 N·m, driven by a constant 150 N·m: it starts unless a brake adds
+# more than 50 N·m at rest.
+HELD = ('[scene]\ntitle = "held"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+        "resisting_torque = [[0, 100], [360, 100]]\n"
+        'motor = { kind = "constant", torque = 150.0 }\nduration = 2.0\n')
+
+
+def _run(tmp_path, text: str, command: str = "run") -> int:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    return main([command, str(scene)] + (["--out", str(tmp_path / "out")] if command == "run" else []))
+
+
+def _said(capsys) -> str:
+    """What the command printed: its warnings go to the standard output, its errors to the standard error."""
+    printed = capsys.readouterr()
+    return printed.out + printed.err
+
+
+def test_a_brake_on_from_the_start_is_named_with_its_torque_where_the_machine_does_not_start(tmp_path, capsys):
+    """The brake's 80 N·m at t = 0 joins the 100 N·m of resistance: 150 N·m cannot move 180.  The message said
+    "150 N·m does not overcome 100 N·m" and advised a stronger motor."""
+    assert _run(tmp_path, HELD + "brake = { torque = 80.0 }\n") == 0
+    told = _said(capsys)
+    resisting, brake = 100.0, 80.0  # the scene's Mr at rest and the brake's torque
+    assert "does not start" in told
+    assert f"the brake applied at t = 0 s, {resisting:.4g} + {brake:g} = {resisting + brake:.4g} N·m" in told
+    assert "dynamics.brake.torque" in told and "dynamics.brake.at" in told
+    assert "a stronger motor" not in told
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert (f"the brake applied at t = 0 s, Mr + Mt = {resisting:g} + {brake:g} = {resisting + brake:g} N·m. "
+            "The brake on from the start holds the machine") in note
+
+
+def test_a_brake_that_comes_on_after_the_start_leaves_the_does_not_start_message_alone(tmp_path, capsys):
+    """A weak motor (90 N·m against 100) and a brake at 1 s: the resistance alone holds the machine, and the
+    message is the motor's, with no brake in it."""
+    assert _run(tmp_path, HELD.replace("torque = 150.0", "torque = 90.0") + "brake = { torque = 80.0, at = 1.0 }\n") == 0
+    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    assert "does not start" in told and "brake" not in told and "a stronger motor" in told
+
+
+def test_a_brake_switched_on_before_the_run_is_refused_naming_the_key():
+    with pytest.raises(SceneError) as caught:
+        read_motion({"motor": {"kind": "constant", "torque": 3.0}, "brake": {"torque": 1.0, "at": -1.0}})
+    assert str(caught.value) == "dynamics.brake.at: must be >= 0 (got -1.0)"
+
+
+# A machine of 2 kg·m² against 300 N·m, driven by a linear motor of 1200 N·m at rest and 120 rpm unloaded: it runs
+# where 1200·(1 − ω/ω0) = 300, at ω = 0.75·ω0, a turn in 2π/ω.
+STIFF = ('[scene]\ntitle = "stiff brake"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+         "resisting_torque = [[0, 300], [360, 300]]\n"
+         'motor = { kind = "linear", stall_torque = 1200.0, no_load_rpm = 120.0 }\n')
+INERTIA = 2.0
+PERIOD = 2 * math.pi / (0.75 * 120 * math.pi / 30)
+
+
+def test_a_viscous_brake_far_too_stiff_to_integrate_is_refused_at_once_naming_the_key(tmp_path, capsys):
+    """1e12 N·m·s on 2 kg·m² gives J/c = 2e-12 s against a turn of 0.67 s.  The like of it in the flywheel
+    starter integrated for 75 s and then blamed the motor ("look at the motor's speed, its gear ratio")."""
+    began = time.perf_counter()
+    assert _run(tmp_path, STIFF + "brake = { damping = 1.0e12, at = 0.5 }\n", "check") != 0
+    assert time.perf_counter() - began < 20.0
+    told = _said(capsys)
+    assert "dynamics: brake.damping: 1e+12 N·m·s" in told
+    assert f"J/c = {INERTIA / 1e12:.3g} s" in told and f"{PERIOD:.4g} s" in told
+    # The stiffest it takes: a time constant of a hundredth of the period.
+    assert f"at most {INERTIA / (0.01 * PERIOD):.3g} N·m·s" in told
+    assert "motor's speed" not in told
+
+
+@pytest.mark.parametrize("share, refused", [(0.9, True), (1.1, False)])
+def test_the_stiffest_damping_a_brake_may_have_gives_a_hundredth_of_a_turn(tmp_path, capsys, share, refused):
+    """Either side of c = J/(0.01·T): a little stiffer is refused, a little softer runs."""
+    damping = INERTIA / (share * 0.01 * PERIOD)
+    code = _run(tmp_path, STIFF + f"brake = {{ damping = {damping!r}, at = 0.5 }}\nduration = 3.0\n")
+    told = _said(capsys)
+    assert (code != 0) == refused
+    assert ("brake.damping" in told) == refused
