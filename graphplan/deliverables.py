@@ -524,19 +524,17 @@ class MachineDynamics:
         if motion is None or motion.stalled_at is None:
             return None
         where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
-        held = self.starting_brake()
-        if not motion.turned and held is not None:
-            resisting = self.machine.mr(float(motion.phi[0]), 0.0)
-            return (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
-                    f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there and the "
-                    f"brake applied at t = {self.spec.motion.brake.at:g} s, {resisting:.4g} + {held:g} = "
-                    f"{resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the machine "
-                    "from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
         if not motion.turned:
-            return (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
-                    f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there, "
-                    f"{self.machine.mr(float(motion.phi[0]), 0.0):.4g} N·m (a stronger motor, a larger gear ratio, "
-                    "or a start from another angle)")
+            resisting = self.machine.mr(float(motion.phi[0]), 0.0)
+            unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
+                       f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there")
+            held = self.starting_brake()
+            if held is None:
+                return (f"{unmoved}, {resisting:.4g} N·m (a stronger motor, a larger gear ratio, or a start from "
+                        "another angle)")
+            return (f"{unmoved} and the brake applied at t = {self.spec.motion.brake.at:g} s, {resisting:.4g} + "
+                    f"{held:g} = {resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the "
+                    "machine from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
         if motion.stalled_slipping:
             return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
                     f"slipping at its {self.spec.motion.clutch.torque:g} N·m, cannot carry it past the resistance "
