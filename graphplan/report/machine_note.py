@@ -352,10 +352,10 @@ def _stall(note: Writer, dynamics) -> None:
     machine the motor cannot move from where it stands does not start at all."""
     motion = dynamics.motion
     angle = dynamics.stall_place(note.text, lambda value: note.n(value, 4))
-    resisting = note.n(dynamics.machine.mr(float(motion.phi[-1]), 0.0))
+    mr = dynamics.machine.mr(float(motion.phi[-1]), 0.0)
+    resisting = note.n(mr)
     held = dynamics.starting_brake()
     if not motion.turned and held is not None:
-        mr = dynamics.machine.mr(float(motion.phi[-1]), 0.0)
         note.para(note.t("note_dyn_never_starts_braked", angle=angle, torque=note.n(float(motion.motor_torque[0])),
                          resisting=resisting, brake=note.n(held), at=note.n(dynamics.spec.motion.brake.at, 4),
                          total=note.n(mr + held)))
