@@ -44,11 +44,10 @@ def _listed(text: str) -> list[str]:
 
 def _sheet(text: str) -> str:
     """A sheet format as drawing.sheet takes it, with the same did-you-mean (a Cyrillic а1 for A1)."""
-    from .reader import check_choice
-    from .scene import SHEETS
+    from .scene import check_sheet
 
     try:
-        return check_choice(text, "--sheet", SHEETS)
+        return check_sheet(text, "--sheet")
     except SceneError as error:
         raise argparse.ArgumentTypeError(str(error).removeprefix("--sheet: ")) from None
 

@@ -281,7 +281,8 @@ class Table:
                 raise SceneError(self.where(other), f"unknown key; {what} is given as {key}: write "
                                  f"{key} = {as_written(self.data[other])}")
 
-    def _take(self, key: str, default: Any, check: Callable[[Any, str], Any]) -> Any:
+    def take(self, key: str, default: Any, check: Callable[[Any, str], Any]) -> Any:
+        """The value of ``key`` as ``check(value, where)`` returns it, or ``default`` where the key is absent."""
         value = self.raw(key, default)
         if key not in self.data:
             return value
@@ -289,7 +290,7 @@ class Table:
 
     def number(self, key: str, default: Any = _REQUIRED, *, positive: bool = False,
                non_negative: bool = False) -> Any:
-        value = self._take(key, default, check_number)
+        value = self.take(key, default, check_number)
         if key in self.data:
             if positive and not value > 0:
                 raise SceneError(self.where(key), "must be > 0", self.data[key])
@@ -341,7 +342,7 @@ class Table:
 
     def integer(self, key: str, default: Any = _REQUIRED, *, minimum: int | None = None,
                 maximum: int | None = None) -> Any:
-        value = self._take(key, default, check_int)
+        value = self.take(key, default, check_int)
         if key in self.data:
             if minimum is not None and value < minimum:
                 raise SceneError(self.where(key), f"must be >= {minimum}", value)
@@ -350,7 +351,7 @@ class Table:
         return value
 
     def string(self, key: str, default: Any = _REQUIRED) -> Any:
-        return self._take(key, default, check_str)
+        return self.take(key, default, check_str)
 
     def date(self, key: str, default: Any = _REQUIRED) -> Any:
         """A TOML date (``2026-12-01``), or a string for a date written otherwise."""
@@ -361,20 +362,20 @@ class Table:
             if isinstance(value, str):
                 return check_str(value, where)
             raise SceneError(where, f"must be a date (2026-12-01) or a string, not {_type_name(value)}", value)
-        return self._take(key, default, check)
+        return self.take(key, default, check)
 
     def boolean(self, key: str, default: Any = _REQUIRED) -> Any:
         def check(value: Any, where: str) -> bool:
             if not isinstance(value, bool):
                 raise SceneError(where, f"must be true or false, not {_type_name(value)}", value)
             return value
-        return self._take(key, default, check)
+        return self.take(key, default, check)
 
     def choice(self, key: str, choices: tuple[str, ...], default: Any = _REQUIRED) -> Any:
-        return self._take(key, default, lambda v, w: check_choice(v, w, choices))
+        return self.take(key, default, lambda v, w: check_choice(v, w, choices))
 
     def xy(self, key: str, default: Any = _REQUIRED) -> Any:
-        return self._take(key, default, check_xy)
+        return self.take(key, default, check_xy)
 
     def table(self, key: str, default: Any = _REQUIRED) -> Table | None:
         value = self.raw(key, default)

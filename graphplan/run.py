@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from .errors import GraphplanError, SceneError
 from .reader import check_choice
-from .scene import LOCALES, SHEETS, Scene
+from .scene import LOCALES, Scene, check_sheet
 
 if TYPE_CHECKING:
     from .analysis import Analysis
@@ -68,7 +68,7 @@ def as_asked(scene: Scene, locale: str | None = None, sheet: str | None = None,
         scene = dataclasses.replace(scene, locale=check_choice(locale, options.locale, LOCALES))
     if sheet is not None:
         scene = dataclasses.replace(scene, drawing=dataclasses.replace(
-            scene.drawing, sheet=check_choice(sheet, options.sheet, SHEETS), sheet_given=True))
+            scene.drawing, sheet=check_sheet(sheet, options.sheet), sheet_given=True))
     return scene
 
 

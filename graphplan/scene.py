@@ -11,6 +11,7 @@ import codecs
 import datetime
 import difflib
 import math
+import os
 import re
 import tomllib
 import unicodedata
@@ -43,6 +44,8 @@ MAX_SCENE_BYTES = 1_000_000
 MAX_POSITIONS = 20_000
 LOCALES = ("en", "ru", "zh")
 SHEETS = ("A1", "A2", "A3", "A4", "none")
+# A sheet of the ISO A series the drawings are not laid out on (A0, A5): told so, not guessed at as the nearest name.
+_OTHER_A_SIZE = re.compile(r"[AaАа][0-9]+")
 SENSES = ("ccw", "cw", "forward", "backward")
 # Each sense's opposite: a link's other stroke.
 OTHER_SENSE = {"ccw": "cw", "cw": "ccw", "forward": "backward", "backward": "forward"}
@@ -302,6 +305,17 @@ def missing_part(scene: Scene, part: str) -> SceneError:
     return SceneError(part, lacking)
 
 
+def check_sheet(value: Any, where: str) -> str:
+    """A sheet format of :data:`SHEETS`; another size of the A series is told which sizes there are (difflib would
+    offer A4 for A0, a sheet sixteen times smaller)."""
+    # A Cyrillic А1 is A1 mistyped, which check_choice tells so.
+    if (isinstance(value, str) and _OTHER_A_SIZE.fullmatch(value.strip())
+            and lookalike_plain(value.strip()).upper() not in SHEETS):
+        raise SceneError(where, "is a paper size the sheets are not laid out on: A1 (the largest), A2, A3, A4, or "
+                                "none for no course sheets", value)
+    return check_choice(value, where, SHEETS)
+
+
 def load(path: str | Path | Mapping[str, Any]) -> Scene:
     """Read and check the scene file at ``path``, or a scene given as its tables: the mapping ``tomllib`` reads
     of a scene file, changed as a parameter study changes it, is checked as the file would be.
@@ -311,6 +325,9 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
     SceneError
         naming the key path and what is wrong, for any problem of the file.
     """
+    if not isinstance(path, str | bytes | bytearray | os.PathLike | Mapping):
+        raise TypeError(f"load takes the path of a scene file, or the scene's tables as a mapping (got "
+                        f"{type(path).__name__}); graphplan.load_text(text) reads a scene given as TOML text")
     if isinstance(path, Mapping):
         return _read_scene(Table(_as_read(path, ""), ""), "<scene>")
     if isinstance(path, bytes | bytearray) or (isinstance(path, str) and ("\n" in path or len(path) > 4096)):
@@ -871,7 +888,7 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
             raise SceneError(table.where("velocity_plans"), 'must be "all" or a list of position numbers', every)
         velocity_plans = list(range(number_from, number_from + count))
     else:
-        velocity_plans = sorted(set(_position_numbers(table, "velocity_plans", number_from, count)))
+        velocity_plans = sorted(_position_numbers(table, "velocity_plans", number_from, count, once_each=True))
     if len(velocity_plans) > MOST_VELOCITY_PLANS:
         raise SceneError(table.where("velocity_plans"), f"draws {len(velocity_plans)} velocity plans: at most "
                          f"{MOST_VELOCITY_PLANS} make a readable drawing; list the positions to draw")
@@ -937,7 +954,7 @@ def _read_drawing(table: Table) -> Drawing:
         velocity_scale=table.number("velocity_scale", None, positive=True),
         acceleration_scale=table.number("acceleration_scale", None, positive=True),
         drafting_precision=table.number("drafting_precision", 0.5, positive=True),
-        sheet=table.choice("sheet", SHEETS, "A1"),
+        sheet=table.take("sheet", "A1", check_sheet),
         force_scale=table.number("force_scale", None, positive=True),
         sheet_given=table.has("sheet"),
         velocity_plans_pole=table.number("velocity_plans_pole", None, positive=True),

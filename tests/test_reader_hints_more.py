@@ -2,8 +2,9 @@
 empty one), a coordinate list [0,0] is not taken for a decimal comma, a misspelt optional table or a key written
 as the textbook's symbol or in American spelling is named with the key meant, one position cannot run over a
 travel or a swing, driving = "constant" in a linkage scene is told the linkage's spelling, a damping ratio
-above 1 is warned of (above 2 asked whether it is a percentage), and a guide whose angle is left out is told it
-runs at 0°."""
+above 1 is warned of (above 2 asked whether it is a percentage), a guide whose angle is left out is told it
+runs at 0°, a paper size the sheets are not laid out on (A0) is told so rather than taken for a slip of A4, a velocity
+plan listed twice is refused as a plan sheet listed twice is, and load given no path says what it takes."""
 
 from __future__ import annotations
 
@@ -143,3 +144,37 @@ def test_a_huge_integer_is_told_by_its_digits_not_spelt_out() -> None:
     stage, error = first_error(text)
     assert stage == "load" and str(error).endswith("(got an integer of 401 digits)")
     assert str(error).startswith("positions.count: must be <= ")
+
+
+@pytest.mark.parametrize("size", ["A0", "a5", "А0"])
+def test_a_paper_size_the_sheets_are_not_laid_out_on_is_told_so_not_offered_a4(size, tmp_path, capsys) -> None:
+    from graphplan.cli import main
+
+    stage, error = first_error(changed(CRANK_ROCKER, 'sheet              = "A1"', f'sheet = "{size}"'))
+    assert (stage, error.where) == ("load", "drawing.sheet")
+    assert "paper size the sheets are not laid out on" in str(error) and "did you mean" not in str(error)
+    scene = tmp_path / "scene.toml"
+    scene.write_text(CRANK_ROCKER, encoding="utf-8")
+    with pytest.raises(SystemExit):
+        main(["run", str(scene), "--sheet", size, "--out", str(tmp_path / "out")])
+    told = capsys.readouterr().err
+    assert "paper size the sheets are not laid out on" in told and "'A4'" not in told
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_sheet_name_mistyped_is_still_offered_the_one_meant() -> None:
+    _, error = first_error(changed(CRANK_ROCKER, 'sheet              = "A1"', 'sheet = "A3x"'))
+    assert "did you mean 'A3'?" in str(error)
+
+
+def test_a_velocity_plan_listed_twice_is_refused_as_a_plan_sheet_listed_twice_is() -> None:
+    text = changed(CRANK_ROCKER, "[positions]", "[positions]\nvelocity_plans = [2, 5, 2]")
+    stage, error = first_error(text)
+    assert (stage, error.where) == ("load", "positions.velocity_plans[2]")
+    assert "already listed at positions.velocity_plans[0]" in str(error)
+
+
+@pytest.mark.parametrize("given", [None, 123, [FIXTURES / "scotch_yoke.toml"]])
+def test_load_given_no_path_says_what_it_takes(given) -> None:
+    with pytest.raises(TypeError, match=r"load takes the path of a scene file.*got (NoneType|int|list)"):
+        graphplan.load(given)
