@@ -7,10 +7,13 @@ and exit status 2, never a traceback.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 import shlex
+import signal
 import sys
-from collections.abc import Sequence
+import threading
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -99,11 +102,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         # argparse hands a command's unknown options up to the top parser, whose usage lists no options at all.
         arguments.command_parser.error(f"unrecognized arguments: {' '.join(unknown)}")
     try:
-        if arguments.command == "check":
-            return _check(arguments.scene)
-        if arguments.command == "new":
-            return _new(arguments.kind, arguments.out, arguments.locale)
-        return _run(arguments)
+        with _terminated_as_interrupted():
+            if arguments.command == "check":
+                return _check(arguments.scene)
+            if arguments.command == "new":
+                return _new(arguments.kind, arguments.out, arguments.locale)
+            return _run(arguments)
     except GraphplanError as error:
         # The scene's warnings that may name the refusal's cause (lengths in millimetres behind a drawing no sheet
         # holds) come before it, as the refusing stage noted them.
@@ -115,6 +119,30 @@ def main(argv: Sequence[str] | None = None) -> int:
         # The output folder is written whole or not at all, so an interrupted run has nothing to clean up.
         print("graphplan: interrupted", file=sys.stderr)
         return 130
+    except _Terminated:
+        print("graphplan: terminated", file=sys.stderr)
+        return 128 + signal.SIGTERM
+
+
+class _Terminated(BaseException):
+    """SIGTERM (``timeout``, a job killed) as an exception: Python's default ends the process at once, leaving the
+    output folder's half-written staging folder behind; raised, it unwinds through the writers' clean-up."""
+
+
+@contextlib.contextmanager
+def _terminated_as_interrupted() -> Iterator[None]:
+    if threading.current_thread() is not threading.main_thread():  # only the main thread may handle signals
+        yield
+        return
+
+    def terminate(number: int, frame: object) -> None:
+        raise _Terminated
+
+    previous = signal.signal(signal.SIGTERM, terminate)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _check(path: Path) -> int:

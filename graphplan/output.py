@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import stat
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -67,6 +68,9 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
             for name in users:  # none the run writes: those were refused above
                 (folder / name).rename(staging / name)
                 carried.append(name)
+            # The folder is replaced, not written into: it keeps its permissions (a project folder shared with the
+            # group) only if the new one is given them.
+            staging.chmod(stat.S_IMODE(folder.stat().st_mode))
             folder.rename(retired)
         staging.rename(folder)
     except BaseException as error:

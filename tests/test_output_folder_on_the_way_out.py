@@ -1,0 +1,47 @@
+"""The output folder when a run is stopped or replaces one: a run killed by SIGTERM (``timeout``, a job stopped)
+while it writes leaves no half-written staging folder and the previous output as it was, as Ctrl-C does; a folder
+the run replaces keeps its permissions (a project folder the group may write to)."""
+
+from __future__ import annotations
+
+import os
+import pathlib
+import signal
+import stat
+from pathlib import Path
+
+from graphplan.cli import main
+
+FIXTURE = str(Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml")
+
+
+def test_a_run_terminated_while_it_writes_leaves_no_staging_folder_and_the_old_output(tmp_path, capsys, monkeypatch):
+    out = tmp_path / "out"
+    assert main(["run", FIXTURE, "--out", str(out), "--only", "positions"]) == 0
+    before = {path.name: path.read_bytes() for path in out.iterdir()}
+    handler_before = signal.getsignal(signal.SIGTERM)
+    write_text = pathlib.Path.write_text
+
+    def terminated_on_the_way(path, *args, **kwargs):
+        written = write_text(path, *args, **kwargs)
+        if ".partial-" in str(path):
+            os.kill(os.getpid(), signal.SIGTERM)
+        return written
+
+    monkeypatch.setattr(pathlib.Path, "write_text", terminated_on_the_way)
+    assert main(["run", FIXTURE, "--out", str(out), "--only", "positions,velocity"]) == 128 + signal.SIGTERM
+    assert "graphplan: terminated" in capsys.readouterr().err
+    assert sorted(entry.name for entry in tmp_path.iterdir()) == ["out"]
+    assert {path.name: path.read_bytes() for path in out.iterdir()} == before
+    assert signal.getsignal(signal.SIGTERM) == handler_before
+
+
+def test_a_folder_the_run_replaces_keeps_its_permissions(tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    out.chmod(0o775)
+    assert main(["run", FIXTURE, "--out", str(out), "--only", "positions"]) == 0
+    assert stat.S_IMODE(out.stat().st_mode) == 0o775
+    out.chmod(0o750)
+    assert main(["run", FIXTURE, "--out", str(out), "--only", "positions"]) == 0
+    assert stat.S_IMODE(out.stat().st_mode) == 0o750
