@@ -311,8 +311,9 @@ def check_sheet(value: Any, where: str) -> str:
     # A Cyrillic А1 is A1 mistyped, which check_choice tells so.
     if (isinstance(value, str) and _OTHER_A_SIZE.fullmatch(value.strip())
             and lookalike_plain(value.strip()).upper() not in SHEETS):
-        raise SceneError(where, "is a paper size the sheets are not laid out on: A1 (the largest), A2, A3, A4, or "
-                                "none for no course sheets", value)
+        nearest = "A1 is the largest" if int(value.strip()[1:]) < 1 else "A4 is the smallest"
+        raise SceneError(where, f"is a paper size the sheets are not laid out on: {nearest} of A1, A2, A3, A4 (or none "
+                                f"for no course sheets)", value)
     return check_choice(value, where, SHEETS)
 
 

@@ -806,8 +806,11 @@ CASES: list[Case] = [
          "give acceleration_pole or acceleration_scale, not both"),
     Case("drawing-sheet-unknown", {"drawing.sheet": "letter"}, "drawing.sheet",
          "must be one of A1, A2, A3, A4, none (got 'letter')"),
-    Case("drawing-sheet-near-miss", {"drawing.sheet": "A5"}, "drawing.sheet",
-         "must be one of A1, A2, A3, A4, none; did you mean 'A4'? (got 'A5')"),
+    Case("drawing-sheet-near-miss", {"drawing.sheet": "A3x"}, "drawing.sheet",
+         "must be one of A1, A2, A3, A4, none; did you mean 'A3'? (got 'A3x')"),
+    Case("drawing-sheet-smaller-size", {"drawing.sheet": "A5"}, "drawing.sheet",
+         "is a paper size the sheets are not laid out on: A4 is the smallest of A1, A2, A3, A4 (or none for no course "
+         "sheets) (got 'A5')"),
     Case("drawing-sheet-number", {"drawing.sheet": 1}, "drawing.sheet", "must be a string, not an integer (got 1)"),
     Case("drawing-unknown-key", {"drawing.sheets": "A1"}, "drawing.sheets", "unknown key; did you mean 'sheet'?"),
     Case("drawing-force-scale-zero", {"drawing.force_scale": 0.0}, "drawing.force_scale", "must be > 0 (got 0.0)"),

@@ -178,7 +178,8 @@ def test_the_guides_reaction_is_square_to_it_and_shifted_by_the_sliders_moment()
      "runs through its outer joint E"),
     (GUIDES, "guides = { F = { angel = -30.0 } }", "groups[0].guides.F.angel", "unknown key"),
     (GUIDES, "guides = { F = { link = 7, angle = 0.0 } }", "groups[0].guides.F.link", "not known before"),
-    (GUIDES, "guides = { F = { link = 2, angle = 0.0 } }", "groups[0].guides.F.through", "point fixed on link 2"),
+    (GUIDES, "guides = { F = { link = 2, angle = 0.0 } }", "groups[0].guides.F.link",
+     "runs through E, which is not on link 2: leave link out, E being a point of the frame"),
     (LENGTHS, "lengths = [0.17, 0.14, 0.2]", "groups[0].lengths", "lAB, lCD (the leg EF slides)"),
     (LENGTHS, "lengths = [0.17, -0.14]", "groups[0].lengths[1]", "must be > 0"),
 ])
@@ -186,6 +187,17 @@ def test_a_bad_sliding_leg_is_refused_with_its_key(old, new, where, message):
     with pytest.raises(SceneError) as caught:
         graphplan.build(_scene(old, new))
     assert caught.value.where == where and message in str(caught.value), str(caught.value)
+
+
+def test_a_leg_sliding_on_a_guide_through_a_moving_joint_is_told_the_link_that_carries_it():
+    # The leg AB's guide runs through A, the crank's joint: left on the frame, it is told to be on the crank, under
+    # the key the scene wrote (there is no guides.B.through to write).
+    text = TEXT.replace(LENGTHS, "lengths = [0.14]").replace(GUIDES, "guides  = { F = { angle = -30.0 }, B = { angle = 0.0 } }")
+    with pytest.raises(SceneError) as caught:
+        graphplan.build(loads(text))
+    assert caught.value.where == "groups[0].guides.B.link"
+    assert "runs through A, which is not on the frame: give link = 2, the link that carries A" in str(caught.value)
+    assert "(got" not in str(caught.value)
 
 
 def test_a_guide_the_triad_cannot_reach_says_so_and_writes_nothing(tmp_path, capsys):

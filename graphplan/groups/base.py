@@ -54,6 +54,9 @@ class Guide:
     line: str | None = None
     # Whether the scene wrote the angle: the contract always does, so one left out is told (it runs along +x).
     angle_given: bool = field(default=True, compare=False, repr=False)
+    # Whether the scene wrote ``through``: a triad's sliding leg takes its outer joint, and a problem with that point
+    # is told on the key the user wrote (the guide's link), not on one they cannot write.
+    through_given: bool = field(default=True, compare=False, repr=False)
 
     @property
     def on_frame(self) -> bool:

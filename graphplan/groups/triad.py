@@ -1086,7 +1086,8 @@ def _read_sliding_legs(table: Table, joints: tuple[str, ...]) -> tuple[Guide | N
         link = spec.integer("link", None, minimum=1)
         angle = math.radians(spec.number("angle", 0.0))
         spec.done()
-        legs[leg] = Guide(where=spec.path, link=link, through=outer, angle=angle, angle_given=spec.has("angle"))
+        legs[leg] = Guide(where=spec.path, link=link, through=outer, angle=angle, angle_given=spec.has("angle"),
+                          through_given=False)
     return legs[0], legs[1], legs[2]
 
 
