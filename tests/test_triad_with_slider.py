@@ -192,7 +192,8 @@ def test_a_bad_sliding_leg_is_refused_with_its_key(old, new, where, message):
 def test_a_leg_sliding_on_a_guide_through_a_moving_joint_is_told_the_link_that_carries_it():
     # The leg AB's guide runs through A, the crank's joint: left on the frame, it is told to be on the crank, under
     # the key the scene wrote (there is no guides.B.through to write).
-    text = TEXT.replace(LENGTHS, "lengths = [0.14]").replace(GUIDES, "guides  = { F = { angle = -30.0 }, B = { angle = 0.0 } }")
+    text = TEXT.replace(LENGTHS, "lengths = [0.14]")
+    text = text.replace(GUIDES, "guides  = { F = { angle = -30.0 }, B = { angle = 0.0 } }")
     with pytest.raises(SceneError) as caught:
         graphplan.build(loads(text))
     assert caught.value.where == "groups[0].guides.B.link"
