@@ -123,16 +123,25 @@ def below_reading(analysis: Analysis) -> list[str]:
             told.append(f"drawing.length_scale: draws the paths of the points {extent / drawing.length_scale:.3g} mm "
                         f"across, too small to read; {format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} draws a "
                         f"{POSITIONS_FIELD_MM:g} mm plan of positions")
-    for kind in ("velocity", "acceleration"):
-        drawn = [(spread(plan) / plan.scale, plan) for _, plan_kind, plan in _drawn_plans(analysis)
-                 if plan_kind == kind and spread(plan) > 0.0]
+    # The velocity plans of every position drawn at velocity_plans_pole are judged apart, each at that pole (a plan
+    # sheet's position among them holds its sheet's larger plan): the plan sheets' plans would hide a slip of the
+    # key's unit.
+    pole, pin = drawing.velocity_plans_pole, analysis.mechanism.driver.joint
+    for kind, grid in (("velocity", False), ("acceleration", False), ("velocity", True)):
+        if grid and pole is None:
+            continue
+        drawn = [(spread(plan) * pole / abs(plan.value(pin)) if grid else spread(plan) / plan.scale, plan)
+                 for position, plan_kind, plan in _drawn_plans(analysis)
+                 if plan_kind == kind and spread(plan) > 0.0
+                 and (pole is not None and isinstance(position, VelocityPosition)) == grid]
         if not drawn:
             continue
         across, plan = max(drawn, key=lambda pair: pair[0])
-        key, given, fix = _plan_scale(analysis, kind, plan)
-        if across < READABLE_SHARE * PLAN_FIELD_MM and given is not None:
+        key, given, fix = _plan_scale(analysis, kind, plan, grid)
+        field = VELOCITY_PLANS_FIELD_MM if grid else PLAN_FIELD_MM
+        if across < READABLE_SHARE * field and given is not None:
             told.append(f"{key}: draws the largest {kind} plan {across:.3g} mm across, too small to read; {fix} draws "
-                        f"it {PLAN_FIELD_MM:g} mm")
+                        f"it {field:g} mm")
     if drawing.force_scale is not None:
         largest = max((polygon_extent(group.polygon) for _, group in _drawn_polygons(analysis)), default=0.0)
         if 0.0 < largest / drawing.force_scale < READABLE_SHARE * POLYGON_FIELD_MM:
