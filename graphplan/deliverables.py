@@ -57,8 +57,9 @@ class Drawing:
     lever_scale: float | None = None
 
 
-def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
-    """Why the scene cannot give ``piece``, or None when it can."""
+def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str = "drawing.sheet") -> str | None:
+    """Why the scene cannot give ``piece``, or None when it can; ``sheet_key`` names what set the sheet format
+    (``--sheet`` given on the command line)."""
     if piece == "balancing":
         return None if scene.balancing is not None else "needs a [balancing] table"
     if piece == "vibration":
@@ -74,7 +75,7 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
     if analysis is None:
         return _NO_LINKAGE
     if piece == "sheets" and scene.drawing.sheet == "none":
-        return 'needs a sheet format: drawing.sheet is "none"'
+        return f'needs a sheet format: {sheet_key} is "none"'
     if piece == "dynamics" and scene.dynamics is None:
         return "needs a [dynamics] table"
     if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene, analysis)) is not None:
@@ -99,7 +100,7 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str) -> str | None:
 
 
 def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None = None,
-           where: str = "--only") -> tuple[str, ...]:
+           where: str = "--only", sheet_key: str = "drawing.sheet") -> tuple[str, ...]:
     """The pieces to deliver: ``only`` (from ``--only``), else the scene's ``[output] include``, else every
     piece the scene has data for (those :data:`ON_REQUEST` excepted).
 
@@ -114,7 +115,7 @@ def chosen(scene: Scene, analysis: Analysis | None, only: Iterable[str] | None =
     if asked is None:
         return tuple(piece for piece in PIECES if _by_default(scene, piece) and missing(scene, analysis, piece) is None)
     for k, piece in enumerate(asked):
-        reason = missing(scene, analysis, piece)
+        reason = missing(scene, analysis, piece, sheet_key)
         if reason is not None:
             raise SceneError(f"{where}[{k}]", f"{piece!r} {reason}")
     return tuple(piece for piece in PIECES if piece in asked)

@@ -135,7 +135,7 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
         if (reason := missing(scene, analysis, "figures")) is not None:
             raise SceneError(options.figures, f"'figures' {reason}")
         asked = [*(asked if asked is not None else chosen(scene, analysis)), "figures"]
-    pieces = chosen(scene, analysis, asked, options.only)
+    pieces = chosen(scene, analysis, asked, options.only, sheet_key)
     tell("drawing and writing the tables")
     outcomes: list[str] = []
     found = files(scene, analysis, pieces, formats, warn=outcomes.append)

@@ -4,7 +4,8 @@ as the textbook's symbol or in American spelling is named with the key meant, on
 travel or a swing, driving = "constant" in a linkage scene is told the linkage's spelling, a damping ratio
 above 1 is warned of (above 2 asked whether it is a percentage), a guide whose angle is left out is told it
 runs at 0°, a paper size the sheets are not laid out on (A0) is told so rather than taken for a slip of A4, a velocity
-plan listed twice is refused as a plan sheet listed twice is, and load given no path says what it takes."""
+plan listed twice is refused as a plan sheet listed twice is, load given no path says what it takes, and sheets asked
+for with --sheet none blame --sheet, not the scene's drawing.sheet."""
 
 from __future__ import annotations
 
@@ -179,3 +180,18 @@ def test_a_velocity_plan_listed_twice_is_refused_as_a_plan_sheet_listed_twice_is
 def test_load_given_no_path_says_what_it_takes(given) -> None:
     with pytest.raises(TypeError, match=r"load takes the path of a scene file.*got (NoneType|int|list)"):
         graphplan.load(given)
+
+
+def test_sheets_asked_for_on_no_sheet_blame_the_option_that_said_none(tmp_path, capsys) -> None:
+    from graphplan.cli import main
+    from graphplan.run import run
+
+    scene = tmp_path / "scene.toml"
+    scene.write_text(CRANK_ROCKER, encoding="utf-8")
+    assert 'sheet              = "A1"' in CRANK_ROCKER
+    assert main(["run", str(scene), "--sheet", "none", "--only", "sheets", "--out", str(tmp_path / "out")]) == 2
+    assert "'sheets' needs a sheet format: --sheet is \"none\"" in capsys.readouterr().err
+    with pytest.raises(graphplan.SceneError, match='needs a sheet format: drawing.sheet is "none"'):
+        run(graphplan.load_text(changed(CRANK_ROCKER, 'sheet              = "A1"', 'sheet = "none"')),
+                      tmp_path / "out", only=["sheets"])
+    assert not (tmp_path / "out").exists()
