@@ -87,7 +87,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("scene", type=Path, help="the scene file (TOML)")
     new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine")
     new.add_argument("kind", choices=KINDS, help="the kind of mechanism, or a flywheel or rotor without one")
-    new.add_argument("--out", type=Path, default=None, help="the scene file to write (default: KIND.toml here)")
+    new.add_argument("--out", type=Path, default=None,
+                     help="the scene file to write, or a folder to write KIND.toml in (default: KIND.toml here)")
     new.add_argument("--locale", choices=LOCALES, default="en",
                      help="the language of its drawings and note (scene.locale; its comments stay English)")
     for command in (run, check, new):
@@ -254,6 +255,8 @@ def _new(kind: str, out: Path | None, locale: str = "en") -> int:
     from .starters import starter
 
     target = out if out is not None else Path(f"{kind}.toml")
+    if target.is_dir():  # a folder to put it in, as cp takes one
+        target = target / f"{kind}.toml"
     write_file(target, starter(kind, locale), replace=False)
     print(f"wrote {target}")
     # Quoted as a shell reads it, so that the command copied runs with a path that has a space.

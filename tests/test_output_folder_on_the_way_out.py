@@ -1,6 +1,7 @@
 """The output folder when a run is stopped or replaces one: a run killed by SIGTERM (``timeout``, a job stopped)
 while it writes leaves no half-written staging folder and the previous output as it was, as Ctrl-C does; a folder
-the run replaces keeps its permissions (a project folder the group may write to)."""
+the run replaces keeps its permissions (a project folder the group may write to); a starter scene given a folder is written
+in it."""
 
 from __future__ import annotations
 
@@ -45,3 +46,15 @@ def test_a_folder_the_run_replaces_keeps_its_permissions(tmp_path):
     out.chmod(0o750)
     assert main(["run", FIXTURE, "--out", str(out), "--only", "positions"]) == 0
     assert stat.S_IMODE(out.stat().st_mode) == 0o750
+
+
+def test_a_new_scene_given_a_folder_is_written_in_it_as_cp_would(tmp_path, capsys):
+    folder = tmp_path / "project"
+    folder.mkdir()
+    assert main(["new", "crank-rocker", "--out", str(folder)]) == 0
+    written = folder / "crank-rocker.toml"
+    assert f"wrote {written}" in capsys.readouterr().out
+    assert "[driver]" in written.read_text(encoding="utf-8")
+    # Written once; a second time it is not overwritten.
+    assert main(["new", "crank-rocker", "--out", str(folder)]) == 2
+    assert "exists already" in capsys.readouterr().err
