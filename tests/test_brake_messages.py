@@ -1,6 +1,7 @@
 """What a scene's brake is told: a brake on from the start that holds the machine is named in the "does not start"
-message with its torque, a brake switched on before the run is refused, and a viscous brake too stiff to integrate
-is refused before the run, not after a minute of integrating."""
+message with its torque, a brake applied later that brings the running machine to rest against its motor is named
+for the stall (not a motor too weak), a brake switched on before the run is refused, and a viscous brake too stiff to
+integrate is refused before the run, not after a minute of integrating."""
 
 from __future__ import annotations
 
@@ -53,6 +54,42 @@ def test_a_brake_that_comes_on_after_the_start_leaves_the_does_not_start_message
     assert _run(tmp_path, HELD.replace("torque = 150.0", "torque = 90.0") + "brake = { torque = 80.0, at = 1.0 }\n") == 0
     told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
     assert "does not start" in told and "brake" not in told and "a stronger motor" in told
+
+
+@pytest.mark.parametrize(("locale", "sentence"), [
+    ("en", "the brake applied at t = 0.5 s brings it to rest at t = 1.333 s"),
+    ("ru", "тормоз, включённый при t = 0,5 с, останавливает машину при t = 1,333 с"),
+    ("zh", "t = 0.5 s 接合的制动器使机器在 t = 1.333 s"),
+])
+def test_a_brake_that_stops_the_running_machine_against_its_motor_is_named_for_the_stall(tmp_path, capsys, locale,
+                                                                                      sentence):
+    """150 N·m against 100 N·m speeds 2 kg·m² up at 25 rad/s² to 12.5 rad/s at 0.5 s; the brake's 80 N·m then
+    slows it at (150 − 180)/2 = −15 rad/s², to rest 12.5/15 s later, at 1.333 s, where 150 N·m cannot move 180.
+    It said the motor could not carry the machine past the resistance and advised a stronger motor."""
+    scene = HELD.replace("[scene]\n", f'[scene]\nlocale = "{locale}"\n') + "brake = { torque = 80.0, at = 0.5 }\n"
+    assert _run(tmp_path, scene) == 0
+    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    stop = 0.5 + 12.5 / 15.0
+    assert f"the brake applied at t = 0.5 s brings the machine to rest at t = {stop:.4g} s" in told
+    assert "against the brake's 80 N·m and the resistance there, 100 N·m" in told and "stronger motor" not in told
+    assert sentence in (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+
+
+def test_the_motion_plot_names_the_brake_that_holds_the_machine_where_it_stands():
+    from graphplan.locale import strings
+    from graphplan.report.motion_plots import _Stall, _why_not_steady
+
+    class Stalled:
+        stalled_at, stalled_slipping = 1.333, False
+
+    for turned, key in ((True, "motion_stalled_braked"), (False, "motion_never_starts_braked")):
+        Stalled.turned = turned
+        for locale in ("en", "ru", "zh"):
+            text = strings(locale)
+            said = _why_not_steady(Stalled(), text, _Stall(170.0, None, 0.5))
+            assert said == text[key].format(time=text["decimal_mark"].join(["1", "333"]),
+                                            angle="170", at=text["decimal_mark"].join(["0", "5"]))
+            assert said != _why_not_steady(Stalled(), text, _Stall(170.0, None))
 
 
 def test_a_brake_switched_on_before_the_run_is_refused_naming_the_key():

@@ -362,6 +362,9 @@ def _stall(note: Writer, dynamics) -> None:
     elif not motion.turned:
         note.para(note.t("note_dyn_never_starts", angle=angle, torque=note.n(float(motion.motor_torque[0])),
                          resisting=resisting))
+    elif (stopping := dynamics.stopping_brake()) is not None:
+        note.para(note.t("note_dyn_stalled_braked", time=note.n(motion.stalled_at, 4), angle=angle,
+                         at=note.n(dynamics.spec.motion.brake.at, 4), brake=note.n(stopping), resisting=resisting))
     elif motion.stalled_slipping:
         note.para(note.t("note_dyn_stalled_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
                          torque=note.n(dynamics.spec.motion.clutch.torque), resisting=resisting))

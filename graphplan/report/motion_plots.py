@@ -36,19 +36,19 @@ _MM_PER_POINT = 25.4 / 72.0
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                   flywheel: tuple[np.ndarray, np.ndarray] | None = None,
                   resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
-                  clutch_torque: float | None = None) -> str:
+                  clutch_torque: float | None = None, brake_at: float | None = None) -> str:
     """The SVG text of :func:`motion_plot`."""
     import matplotlib
 
     with matplotlib.rc_context(settings()):
         return svg_text(motion_plot(motion, text, title, flywheel, resisting, stall_angle_deg=stall_angle_deg,
-                                    clutch_torque=clutch_torque))
+                                    clutch_torque=clutch_torque, brake_at=brake_at))
 
 
 def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 flywheel: tuple[np.ndarray, np.ndarray] | None = None,
                 resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
-                clutch_torque: float | None = None):
+                clutch_torque: float | None = None, brake_at: float | None = None):
     """The motion's matplotlib figure: the run above, the steady turn below (or only why the machine
     stands still, where it never moves).
 
@@ -58,10 +58,11 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     stalls, the lower plot sets it against the motor's torque along the run, over the angle turned from
     the start, to show where the motor falls short; where the clutch slipped as it stalled, against the
     clutch's ``clutch_torque`` too.  ``stall_angle_deg`` is where it stalled as the scene counts the crank's
-    angle (the motion's own φ within its turn where not given).
+    angle (the motion's own φ within its turn where not given).  ``brake_at`` is when the brake that holds the
+    machine where it stands was applied, None where no brake's torque holds it: the title then names the brake.
     """
     stall = _Stall(stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg,
-                   clutch_torque if motion.stalled_slipping else None)
+                   clutch_torque if motion.stalled_slipping else None, brake_at)
     import matplotlib
     from matplotlib.figure import Figure
 
@@ -103,11 +104,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
 
 @dataclass(frozen=True)
 class _Stall:
-    """Where a run stalled as the scene counts the crank's angle (°), and the clutch's capacity (N·m) where it
-    slipped as it stalled, the clutch then the limit, not the motor."""
+    """Where a run stalled as the scene counts the crank's angle (°), the clutch's capacity (N·m) where it
+    slipped as it stalled, the clutch then the limit, not the motor, and when the brake holding it was applied (s)."""
 
     angle_deg: float | None
     clutch_torque: float | None
+    brake_at: float | None = None
 
 
 def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stall) -> str:
@@ -115,9 +117,11 @@ def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stal
     if motion.stalled_at is None:
         return text["motion_no_steady"]
     mark = text["decimal_mark"]
+    braked = "_braked" if stall.brake_at is not None else ""
     key = "motion_stalled_clutch" if motion.stalled_slipping else \
-        "motion_never_starts" if not motion.turned else "motion_stalled"
-    return text[key].format(time=number(motion.stalled_at, 4, mark), angle=number(stall.angle_deg, 4, mark))
+        f"motion_never_starts{braked}" if not motion.turned else f"motion_stalled{braked}"
+    return text[key].format(time=number(motion.stalled_at, 4, mark), angle=number(stall.angle_deg, 4, mark),
+                            at=number(stall.brake_at, 4, mark) if stall.brake_at is not None else "")
 
 
 def _broken(words: str, points: float) -> str:
