@@ -521,7 +521,20 @@ def fewest_sheets_length_scale(analysis: Analysis, sheet: str, largest: float) -
     return largest if fewest is None else fewest[1]
 
 
+# The kinematic diagrams' panels, by what they depend on: they stand to no length scale, so the μl choice and the
+# run at the μl chosen share one (its layout, with the larger ways tried, took a tenth of a shaper's run each time).
+_diagrams_panels: OwnedMemo[Panel] = OwnedMemo()
+
+
 def diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
+    """The kinematic diagrams of the output link as a panel whose three diagrams may stand apart
+    (:func:`_diagrams_panel`), laid out once for the analysis at any μl."""
+    scene = analysis.scene
+    unscaled = (replace(scene.drawing, length_scale=None), scene.locale, sheet)
+    return _diagrams_panels.get(analysis.motion, unscaled, lambda: _diagrams_panel(analysis, sheet))
+
+
+def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     """The kinematic diagrams of the output link as a panel whose three diagrams may stand apart.
 
     On a sheet too small for the usual φ axis and fields, both are
