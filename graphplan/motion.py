@@ -198,6 +198,9 @@ class _Context:
         self.raised: dict[int, Exception] = {}
         self.count = len(values)
         self.start = start
+        frame = list(mechanism.scene.frame_points.values())
+        self.size = max([abs(r) for r in frame] + [abs(p - q) for p in frame for q in frame]
+                        + [float(getattr(mechanism.driver, "length", 0.0) or 0.0)])
         scene = mechanism.scene
         self._scene = scene
         self._describe = describe

@@ -310,7 +310,7 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference, wor
         candidates = np.flatnonzero(crossing)
         if len(candidates) == 0:
             raise SceneError(working.where, f"link {working.link} never reverses its motion, so it has no extreme "
-                             "position")
+                             f"position{_half_turned(mechanism, sweep, working)}")
         # Several reversals (a dwell, a six-bar): take the one that begins the longest stroke.
         index = max(candidates, key=lambda i: _stroke_length(speed[:-1], i, rising))
         found[name] = roots[index] = zero_in(index)
@@ -331,6 +331,19 @@ def _turns_round(mechanism: Mechanism, sweep: Motion, working: Working) -> int:
     sign = 1 if working.sense == "ccw" else -1
     return sign * round(turned / (2.0 * math.pi))
 
+
+def _half_turned(mechanism: Mechanism, sweep: Motion, working: Working) -> str:
+    """Why a turning link never reverses, where its angle flips over by half a turn between two neighbouring
+    steps of the sweep: it passes a singular position each cycle, and its motion there has no extreme to find."""
+    if working.link in mechanism.translating:
+        return ""
+    angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
+    # A half-degree step turns a link through far less than a quarter turn, away from a singular position.
+    if not np.any(np.abs(np.angle(np.exp(1j * np.diff(angle)))) > 0.75 * math.pi):
+        return ""
+    return (": its angle flips over by half a turn once a cycle, at a singular position where nothing fixes its "
+            "direction (the block of a slotted lever passing over the lever's pivot, where the crank is as long "
+            "as the distance between the pivots); make those lengths differ")
 
 def _refuse_needing_extremes(mechanism: Mechanism) -> None:
     """Refuse what needs the extremes of a working link that turns round, naming the key that asks for them: a

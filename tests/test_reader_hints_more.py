@@ -9,6 +9,7 @@ for with --sheet none blame --sheet, not the scene's drawing.sheet."""
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 
@@ -195,3 +196,24 @@ def test_sheets_asked_for_on_no_sheet_blame_the_option_that_said_none(tmp_path, 
         run(graphplan.load_text(changed(CRANK_ROCKER, 'sheet              = "A1"', 'sheet = "none"')),
                       tmp_path / "out", only=["sheets"])
     assert not (tmp_path / "out").exists()
+
+
+def test_a_slotted_lever_whose_crank_spans_the_pivots_is_told_why_its_lever_has_no_extremes() -> None:
+    """lOA = lOC = 0.30 m: A's circle passes through C, and where A is at C (φ = 270° here, C straight below O)
+    nothing fixes the lever's direction; the lever turns half a turn a cycle and flips back there, so it never
+    reverses. The refusal named no cause. Solved alone there, the position is singular too: with A and C both at the
+    origin the rounding was judged against a mechanism of their size (1e-16 m), and the lever was given the
+    direction of the rounding noise without a word."""
+    text = starter("slotted-lever")
+    text = changed(text, "length  = 0.12 ", "length  = 0.30 ")
+    text = changed(text, 'start       = "extreme"', "start = 0.0")
+    text = changed(text, "during    = { from = 0.05, to = 0.95 }", 'during = "always"')
+    scene = graphplan.load_text(text)
+    assert abs(scene.frame_points["O"] - scene.frame_points["C"]) == pytest.approx(scene.driver.length)
+    with pytest.raises(graphplan.GraphplanError, match="A passes over C"):
+        graphplan.solve(scene, driver=[math.radians(270.0)])
+    stage, error = first_error(text)
+    assert error.where == "positions.working"
+    assert "never reverses its motion" in str(error) and "flips over by half a turn once a cycle" in str(error)
+    # A shorter crank swings the lever, which then has its extremes.
+    assert graphplan.solve(graphplan.load_text(changed(text, "length  = 0.30 ", "length  = 0.12 "))) is not None

@@ -107,6 +107,10 @@ class Context(Protocol):
 
     count: int
     start: int
+    # The mechanism's size (m), the same at every position: its frame points' largest coordinate or distance apart,
+    # or its driver's length.  A scale for the rounding of the coordinates where the positions asked for leave
+    # none (one position, with the joints at the origin).
+    size: float
 
     def point(self, name: str) -> PointMotion: ...
 

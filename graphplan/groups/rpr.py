@@ -86,7 +86,8 @@ class RPR(Group):
         if e == 0.0:
             # A block on the lever's own pivot assembles at every direction of the lever: the group leaves ω
             # to 0/0. Within rounding of the coordinates (A a hair off C) the direction is noise as well.
-            size = max(float(np.max(np.abs(a.r))), float(np.max(np.abs(c.r))), float(np.max(np.sqrt(ca2))))
+            size = max(float(np.max(np.abs(a.r))), float(np.max(np.abs(c.r))), float(np.max(np.sqrt(ca2))),
+                       context.size)
             over = np.atleast_1d(ca2 <= (SINGULAR_SINE * size) ** 2)
             if over.any():
                 def over_pivot(i: int, at: str) -> SingularPositionError:
