@@ -212,7 +212,7 @@ def test_a_slotted_lever_whose_crank_spans_the_pivots_is_told_why_its_lever_has_
     assert abs(scene.frame_points["O"] - scene.frame_points["C"]) == pytest.approx(scene.driver.length)
     with pytest.raises(graphplan.GraphplanError, match="A passes over C"):
         graphplan.solve(scene, driver=[math.radians(270.0)])
-    stage, error = first_error(text)
+    _, error = first_error(text)
     assert error.where == "positions.working"
     assert "never reverses its motion" in str(error) and "flips over by half a turn once a cycle" in str(error)
     # A shorter crank swings the lever, which then has its extremes.
