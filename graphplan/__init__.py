@@ -74,7 +74,8 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
             positions = make_positions(mechanism)
             return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
     try:  # where the assemblies are taken: at the first value (the solve refuses values that are no numbers)
-        first: float | None = float(np.ravel(np.asarray(driver, dtype=float))[0])
+        # Complex values are refused by the solve too: cast here, they printed numpy's warning before the refusal.
+        first: float | None = None if np.iscomplexobj(driver) else float(np.ravel(np.asarray(driver, dtype=float))[0])
     except (TypeError, ValueError, IndexError):
         first = None
     with reach_hint(mechanism, first):

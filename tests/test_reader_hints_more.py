@@ -217,3 +217,15 @@ def test_a_slotted_lever_whose_crank_spans_the_pivots_is_told_why_its_lever_has_
     assert "never reverses its motion" in str(error) and "flips over by half a turn once a cycle" in str(error)
     # A shorter crank swings the lever, which then has its extremes.
     assert graphplan.solve(graphplan.load_text(changed(text, "length  = 0.30 ", "length  = 0.12 "))) is not None
+
+
+@pytest.mark.parametrize("driver", [[1j], [1 + 0j, 2.0]])
+def test_complex_driver_values_are_refused_without_numpy_s_casting_warning(driver) -> None:
+    import warnings
+
+    scene = graphplan.load(FIXTURES / "ratchet_crank_rocker.toml")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(graphplan.SceneError) as caught:
+            graphplan.solve(scene, driver=driver)
+    assert caught.value.where == "driver" and "must be an array of numbers" in str(caught.value)
