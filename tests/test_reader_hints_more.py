@@ -13,6 +13,7 @@ import math
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 from test_scene_errors import first_error
 
@@ -219,7 +220,7 @@ def test_a_slotted_lever_whose_crank_spans_the_pivots_is_told_why_its_lever_has_
     assert graphplan.solve(graphplan.load_text(changed(text, "length  = 0.30 ", "length  = 0.12 "))) is not None
 
 
-@pytest.mark.parametrize("driver", [[1j], [1 + 0j, 2.0]])
+@pytest.mark.parametrize("driver", [[1j], np.array([1j]), np.array([1 + 0j, 2.0])], ids=["list", "array", "real-as-complex"])
 def test_complex_driver_values_are_refused_without_numpy_s_casting_warning(driver) -> None:
     import warnings
 
