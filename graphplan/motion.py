@@ -57,7 +57,11 @@ _LONGEST_WALK = 100 * CONTINUATION_STEPS
 # the least, so ten rounds narrow a 1° bracket to about 1e-9 rad.
 _ZOOM_ROUNDS, _ZOOM_POINTS = 10, 17
 
-# What the groups found by continuation found at each step of their walks, by mechanism and reference position.
+# What the groups found by continuation found at each step of their walks, by scene and reference position.  By
+# the scene, not the mechanism: every build of one scene is the same mechanism (its driver and groups are the
+# scene's own), and graphplan.solve, the analysis, the reference solution and the dynamics each build their own, so
+# that each walked the whole grid again (graphplan.solve at every call).  Not the built mechanism kept by scene
+# instead: it holds its scene, so a memo of it would keep every scene alive.
 _walks: OwnedMemo[dict[str, dict[int, Any]]] = OwnedMemo()
 
 
@@ -364,7 +368,7 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
     positions are solved in driver order on a grid from the reference position out to every
     value asked for, :data:`CONTINUATION_STEPS` steps a turn (of the travel, for a slider) counted
     from the reference position, and the values asked for are taken out of it; the steps a solve
-    walked are remembered for the next (``walk_memo``).  A position between them where the
+    walked are remembered for the next solve of the same scene (``walk_memo``).  A position between them where the
     mechanism does not assemble stops the walk with its error, as it stops the real mechanism; a
     singular one between them only matters when it is one of the values.
     """
@@ -383,7 +387,7 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
                                    f"followed there a {CONTINUATION_STEPS}th of a {span[:-1]} at a time, which would "
                                    f"not end; give values within {_LONGEST_WALK // CONTINUATION_STEPS} {span} of it")
     # The grid is counted in steps from the reference position, the same for every solve: a group keeps what it
-    # found at each step of it (while the mechanism lives) and walks on from there on the next solve.
+    # found at each step of it (while the scene lives) and walks on from there on the next solve.
     counted = np.arange(math.ceil((low - reference.value) / step), math.floor((high - reference.value) / step) + 1)
     grid = reference.value + counted * step
     on_grid = {float(value): int(k) for value, k in zip(grid, counted, strict=True) if low <= value <= high}
@@ -391,7 +395,7 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
     asked = inverse[:len(values)]
     start = int(inverse[len(values)])
     where_asked = {int(w): i for i, w in enumerate(asked)}
-    walked = _walks.get(mechanism, (reference.value, reference.branches), dict)
+    walked = _walks.get(mechanism.scene, (reference.value, reference.branches), dict)
 
     def describe_walk(index: int) -> str:
         if index in where_asked:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from types import MappingProxyType
 
 import numpy as np
 from numpy.polynomial import Chebyshev
@@ -23,6 +24,7 @@ from numpy.polynomial import Chebyshev
 from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
 from .mechanism import Mechanism
+from .memo import OwnedMemo
 from .motion import Motion, Reference, reference_at, solve
 from .scene import Working
 
@@ -77,8 +79,19 @@ class PositionSet:
         return working, 2.0 * math.pi - working
 
 
+# The positions of each scene while it lives: finding a crank's extremes solves the mechanism a few dozen times (the
+# sweep, the roots, the assemblies chosen again at the first position), and graphplan.solve, the analysis, the
+# reference solution, the accuracy study and the dynamics each ask for them; graphplan.solve at every call.
+_position_sets: OwnedMemo[PositionSet] = OwnedMemo()
+
+
 def make_positions(mechanism: Mechanism) -> PositionSet:
-    """The positions of the scene's ``[positions]`` table."""
+    """The positions of the scene's ``[positions]`` table, found once while the scene lives (a scene that has
+    none is refused each time it is asked)."""
+    return _position_sets.get(mechanism.scene, "positions", lambda: _found_positions(mechanism))
+
+
+def _found_positions(mechanism: Mechanism) -> PositionSet:
     scene = mechanism.scene
     spec = scene.positions
     driver = mechanism.driver
@@ -107,8 +120,10 @@ def make_positions(mechanism: Mechanism) -> PositionSet:
         if not driver.cyclic:   # a crank's turn was swept for its extremes already
             require_moving(motion)
         strokes = tuple("working" if working else "idle" for working in in_working_stroke(motion))
+    # Read-only: every caller is handed the same set.
+    values.flags.writeable = numbers.flags.writeable = False
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes,
-                       reversals=reversals, working_link_turns=turns, load_strokes=load_strokes)
+                       reversals=reversals, working_link_turns=turns, load_strokes=MappingProxyType(load_strokes))
 
 
 def _load_strokes(mechanism: Mechanism, start: float, reference: Reference) -> dict[tuple[int, str], tuple[float, float]]:

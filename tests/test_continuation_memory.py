@@ -1,11 +1,14 @@
-"""A group found by continuation (a triad) remembers the steps of its walk while the mechanism lives.
+"""A group found by continuation (a triad) remembers the steps of its walk while the scene lives.
 
 Each solve walks from the reference position to the positions asked for in steps of a degree; the
 positions of a run are found by several solves (the sweep for the extremes, the roots, the positions,
 the paths), and each walked the whole turn again.  What is checked here: a second solve takes the
 steps already walked from memory and Newton's method only finds the positions between them, with the
-same motion as a fresh mechanism's; the memory goes with its mechanism; the extremes are found in
-one round, the same assembly chosen again at the first position being recognised as the same.
+same motion as a fresh mechanism's; every mechanism built from one scene shares the memory, and
+``graphplan.solve`` finds the scene's positions once (it built the mechanism afresh at each call, and
+walked the whole grid and found the extremes again each time); the memory goes with its scene; the
+extremes are found in one round, the same assembly chosen again at the first position being
+recognised as the same.
 """
 
 from __future__ import annotations
@@ -87,15 +90,85 @@ def test_dense_positions_are_settled_together_as_each_would_be_alone(settled):
             assert abs(together.point(name).a[index] - alone.point(name).a[0]) == pytest.approx(0.0, abs=1e-9)
 
 
-def test_the_memory_goes_with_its_mechanism():
+def test_a_second_solve_of_the_same_scene_walks_no_step_and_finds_its_positions_once(settled, monkeypatch):
+    """graphplan.solve built the mechanism afresh at each call: a finite-difference stencil's eleven solves of one
+    scene each walked the whole turn and found the extremes again (seconds a solve)."""
+    rounds = []
+    original = positions_module._find_extremes
+
+    def counted(*args):
+        rounds.append(1)
+        return original(*args)
+
+    monkeypatch.setattr(positions_module, "_find_extremes", counted)
+    path = FIXTURES / "triad_with_slider.toml"  # starts at an extreme: the positions are found by solves too
+    scene = graphplan.load(path)
+    asked = [0.1, 0.2, 3.0]
+    settled.update(alone=0, batches=[])
+    first = graphplan.solve(scene, driver=asked)
+    assert settled["alone"] >= 360 and len(rounds) == 1  # the whole turn walked to find the extremes
+    settled.update(alone=0, batches=[])
+    again = graphplan.solve(scene, driver=asked)
+    assert settled["alone"] == 0 and len(rounds) == 1  # no step walked, the extremes not sought again
+    positions = graphplan.solve(scene)
+    assert settled["alone"] == 0 and len(rounds) == 1
+    settled.update(alone=0, batches=[])
+    fresh_scene = graphplan.load(path)
+    fresh = graphplan.solve(fresh_scene, driver=asked)
+    assert settled["alone"] >= 360 and len(rounds) == 2  # another scene (the same file): its own walk
+    fresh_positions = graphplan.solve(fresh_scene)
+    for name in fresh.points:
+        for kind in ("r", "v", "a"):
+            assert np.array_equal(getattr(again.point(name), kind), getattr(fresh.point(name), kind)), (name, kind)
+            assert np.array_equal(getattr(first.point(name), kind), getattr(fresh.point(name), kind)), (name, kind)
+            assert np.array_equal(getattr(positions.point(name), kind), getattr(fresh_positions.point(name), kind))
+    assert np.array_equal(positions.driver, fresh_positions.driver)
+
+
+def test_the_memory_goes_with_its_scene():
     gc.collect()
-    before = len(motion_module._walks)
-    mechanism = graphplan.build(graphplan.load(FIXTURE))
+    walks, position_sets = len(motion_module._walks), len(positions_module._position_sets)
+    scene = graphplan.load(FIXTURE)
+    mechanism = graphplan.build(scene)
     solve(mechanism, [0.5, 1.0], reference_at(mechanism, 0.3))
-    assert len(motion_module._walks) == before + 1
+    positions_module.make_positions(mechanism)
+    assert len(motion_module._walks) == walks + 1
+    assert len(positions_module._position_sets) == position_sets + 1
     del mechanism
     gc.collect()
-    assert len(motion_module._walks) == before
+    # Another build of the scene is the same mechanism: it walks on from the first one's steps.
+    other = graphplan.build(scene)
+    solve(other, [0.5, 2.0], reference_at(other, 0.3))
+    assert len(motion_module._walks) == walks + 1
+    del other, scene
+    gc.collect()
+    assert len(motion_module._walks) == walks
+    assert len(positions_module._position_sets) == position_sets
+
+
+def test_positions_refused_are_refused_at_every_call_and_those_found_cannot_be_changed():
+    """Only positions found are kept: a scene refused is refused again (not handed a set, nor another error); and
+    the arrays every caller is handed are read-only, so that no caller changes another's positions."""
+    import dataclasses
+
+    from graphplan.errors import SceneError
+
+    scene = graphplan.load(FIXTURES / "triad_with_slider.toml")
+    # The crank as the working link: it turns round, so there is no extreme for the positions to start from.
+    cranked = dataclasses.replace(scene, positions=dataclasses.replace(
+        scene.positions, working=dataclasses.replace(scene.positions.working, link=2, sense="ccw")))
+    gc.collect()
+    kept = len(positions_module._position_sets)
+    for _ in range(2):
+        with pytest.raises(SceneError, match=r"^positions\.start: .*link 2 turns round"):
+            graphplan.solve(cranked)
+        assert len(positions_module._position_sets) == kept
+    positions = positions_module.make_positions(graphplan.build(scene))
+    for array in (positions.values, positions.numbers):
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 0
+    with pytest.raises(TypeError):
+        positions.load_strokes[(5, "forward")] = (0.0, 1.0)  # type: ignore[index]
 
 
 def test_the_extremes_of_a_triad_are_found_in_one_round(monkeypatch):

@@ -120,7 +120,7 @@ class Context(Protocol):
 
     def walk_memo(self, group: str) -> tuple[dict[int, Any], Sequence[int | None]]:
         """For a group found by continuation: what it found before at the steps of the walk (by step, counted
-        from the reference position; kept while the mechanism lives), and each position's step, or None for a
+        from the reference position; kept while the scene lives), and each position's step, or None for a
         position off the steps (one asked for between them)."""
         ...
 
