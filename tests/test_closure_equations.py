@@ -13,16 +13,17 @@ from __future__ import annotations
 
 import dataclasses
 import math
+
 import numpy as np
 import pytest
+
+# Every fixture, and the variants that exercise what no fixture has (moving guides of RRP and
+# RPP, PRP offsets, an offset slot); defined beside the finite-difference tests.
+from test_motion_against_finite_differences import CASES, DENSE, FIXTURE_DIR, sample, scene_of
 
 import graphplan
 from graphplan.mechanism import build
 from graphplan.positions import first_value
-
-# Every fixture, and the variants that exercise what no fixture has (moving guides of RRP and
-# RPP, PRP offsets, an offset slot); defined beside the finite-difference tests.
-from test_motion_against_finite_differences import CASES, DENSE, FIXTURE_DIR, sample  # noqa: E402
 
 RATCHET = FIXTURE_DIR / "ratchet_crank_rocker.toml"
 
@@ -49,7 +50,7 @@ class Solved:
 
 
 def solved(case: str, which: str) -> Solved:
-    scene = CASES[case]()
+    scene = scene_of(case)
     motion = graphplan.solve(scene, driver=sample(scene, which))
     every = np.concatenate([motion.point(name).r for name in motion.points])
     size = float(np.max(np.ptp(every, axis=0)))
@@ -57,7 +58,9 @@ def solved(case: str, which: str) -> Solved:
     return Solved(scene, build(scene), motion, size)
 
 
-@pytest.fixture(params=[(case, which) for case in CASES for which in SAMPLES],
+# Module-scoped: the tests only read the solved motion (its arrays are read-only), so each case is solved once
+# for all of them rather than once a test.
+@pytest.fixture(scope="module", params=[(case, which) for case in CASES for which in SAMPLES],
                 ids=[f"{case}-{which}" for case in CASES for which in SAMPLES])
 def mechanism_motion(request) -> Solved:
     return solved(*request.param)

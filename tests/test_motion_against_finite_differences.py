@@ -152,6 +152,14 @@ VARIANTS["quick_return+slot-offset"] = _offset_slot
 VARIANTS["triad_with_slider+square-guides"] = square_guides
 CASES = {path.stem: functools.partial(graphplan.load, path) for path in FIXTURES} | VARIANTS
 
+
+@functools.cache
+def scene_of(case: str):
+    """The case's scene, one for the module: a scene is frozen, and its mechanism's positions and a triad's walk,
+    found at its first solve, are kept while it lives, so that the positions, the sweep and every stencil of the
+    case solve it without finding them again."""
+    return CASES[case]()
+
 H_VELOCITY = 1e-5
 H_ACCELERATION = 1e-3
 RELATIVE_TOLERANCE = 1e-6
@@ -244,7 +252,7 @@ def derivatives(path_v, path_a, h_v: float, h_a: float, rates):
 @functools.cache
 def finite_differences(case: str, which: str):
     """Analytic and finite-difference motion of every point, link and slide of one case."""
-    scene = CASES[case]()
+    scene = scene_of(case)
     return compare(scene, sample(scene, which))
 
 
@@ -352,7 +360,7 @@ def with_driver_acceleration(scene):
 
 @pytest.mark.parametrize("case", CASES)
 def test_driver_acceleration_adds_its_tangential_term_exactly(case):
-    scene = CASES[case]()
+    scene = scene_of(case)
     accelerated = with_driver_acceleration(scene)
     # The reference has q̈ = 0 even where the scene gives one (the hand lever's ε2).
     rate = "epsilon" if scene.driver.kind == "crank" else "acceleration"
@@ -392,7 +400,7 @@ def test_driver_acceleration_adds_its_tangential_term_exactly(case):
 
 @pytest.mark.parametrize("case", CASES)
 def test_driver_acceleration_against_finite_differences(case):
-    accelerated = with_driver_acceleration(CASES[case]())
+    accelerated = with_driver_acceleration(scene_of(case))
     scene, points, links, slides = compare(accelerated, sample(accelerated, "positions"))
     v_scale, a_scale = scales(points.values(), scene)
     for name, (v, a, v_fd, a_fd) in points.items():

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from mpmath import mp, mpc, mpf
-from test_motion_against_finite_differences import CASES
+from test_motion_against_finite_differences import CASES, scene_of
 
 import graphplan
 from graphplan import reference
@@ -28,7 +28,7 @@ CLOSURE = mpf("1e-40")
 
 @pytest.fixture(scope="module", params=sorted(CASES))
 def case(request):
-    scene = CASES[request.param]()
+    scene = scene_of(request.param)  # its positions found once, for the reference and graphplan.solve alike
     values = reference.scene_positions(scene)
     return scene, build(scene), values, reference.solve_reference(scene, values)
 
