@@ -8,6 +8,7 @@ point against its definition, the structure formula, and every kind of bad input
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from pathlib import Path
@@ -26,6 +27,13 @@ from graphplan.report.note import note_html, note_markdown
 from graphplan.scene import loads
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "triad_class_iii.toml"
+
+
+@functools.cache
+def fixture_analysis():
+    """The fixture's analysis, one for the module's tests: an analysis is a frozen record that they only read (its
+    note, drawings and tables are made from it afresh by each)."""
+    return analyse(graphplan.load(FIXTURE))
 TEXT = FIXTURE.read_text(encoding="utf-8")
 SKETCH = 'near    = { B = [0.14, 0.10], D = [0.26, 0.10], F = [0.20, 0.19] }'
 assert SKETCH in TEXT
@@ -76,7 +84,7 @@ def test_the_assembly_is_the_same_whatever_positions_are_asked_for():
 
 
 def test_assurs_point_lies_on_two_binary_links_and_moves_with_the_ternary_link():
-    analysis = analyse(graphplan.load(FIXTURE))
+    analysis = fixture_analysis()
     for plan_position in analysis.plans:
         velocity = plan_position.velocity
         positions = plan_position.positions
@@ -155,7 +163,7 @@ def test_the_plan_sheet_marks_assurs_point_on_the_mechanism(tmp_path):
 
 
 def test_the_force_sheet_marks_assurs_point_where_the_group_moment_is_taken():
-    analysis = analyse(graphplan.load(FIXTURE))
+    analysis = fixture_analysis()
     plan_position = analysis.plans[0]
     (name, sigma), = plan_position.forces.auxiliary.items()
     assert any(equation.about == name for group in plan_position.forces.groups for equation in group.moments)
@@ -185,7 +193,7 @@ def test_the_force_sheet_marks_assurs_point_where_the_group_moment_is_taken():
 
 
 def test_the_note_names_the_length_each_omega_and_epsilon_is_read_over():
-    analysis = analyse(graphplan.load(FIXTURE))
+    analysis = fixture_analysis()
     text = note_markdown(analysis)
     places = [{**pp.positions, **pp.velocity.auxiliary} for pp in analysis.plans]
     names = sorted(set().union(*places), key=len, reverse=True)
@@ -208,7 +216,7 @@ def test_the_note_names_the_length_each_omega_and_epsilon_is_read_over():
 
 
 def test_the_error_tables_hold_each_binary_links_relative_velocity():
-    analysis = analyse(graphplan.load(FIXTURE))
+    analysis = fixture_analysis()
     arms = {3: ("A", "B"), 4: ("C", "D"), 5: ("E", "F")}
     for pp in analysis.plans:
         rows = {row.quantity: row for row in pp.errors if row.source == "construction"}
@@ -222,7 +230,7 @@ def test_the_error_tables_hold_each_binary_links_relative_velocity():
 
 
 def test_the_note_reads_each_binary_links_tangential_part_off_the_plan():
-    analysis = analyse(graphplan.load(FIXTURE))
+    analysis = fixture_analysis()
     text = note_markdown(analysis)
     rows = re.findall(r"\| a([BDF])([ACE])τ \| ([\d.]+) m/s² \| n(\d)[bdf] = [\d.]+ \| ⊥ \2\1 \|", text)
     assert len(rows) == 2 * len(analysis.plans)
