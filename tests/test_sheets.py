@@ -10,6 +10,7 @@ form's column lines, and the field labels each standard prints.
 """
 
 import dataclasses
+import functools
 import itertools
 import math
 import re
@@ -58,6 +59,14 @@ EPS = 1e-6
 
 def analyses_of(name):
     return analyse(graphplan.load(f"fixtures/{name}.toml"))
+
+
+@functools.cache
+def on_a3(name):
+    """The fixture's analysis and its sheets on A3, laid out once for the tests that read them (the triad's take
+    some 15 s each time: its μl is chosen by laying every sheet out at each μl tried)."""
+    analysis = analyses_of(name)
+    return analysis, course_sheets(analysis, "A3")
 
 
 @pytest.fixture(scope="module")
@@ -625,7 +634,7 @@ def test_a_sheet_of_parts_of_one_drawing_is_named_after_it_in_the_title_block(an
     """On A3 a force sheet of the triad goes in parts, the first two on one sheet (which position's depends on how
     tall its drawings stand: position 2's, once position 8's): its title block names the drawing they are parts of,
     as the sheets with one part on them do, not the kind of drawing."""
-    sheets = course_sheets(analyses_of("triad_class_iii"), "A3")
+    _, sheets = on_a3("triad_class_iii")
     shared = [number for number in (2, 8) for sheet in sheets if len(sheet.panels) > 1
               and all(re.fullmatch(rf"forces-{number}(-\d+)?", name) for name in sheet.panels)]
     assert shared
@@ -1012,8 +1021,7 @@ def test_a_plan_sheet_in_parts_says_continued_over_its_parts_after_the_first(nam
     """On A3 the acceleration plan of the shaper's position 10 stood on a sheet of its own under the very heading
     of the sheet before, «position 10», read as a second plan sheet of that position (a hunt's sheets 5 and 6); the
     force sheets say «continued» there, and so do the plan sheets now."""
-    analysis = analyses_of(name)
-    sheets = course_sheets(analysis, "A3")
+    analysis, sheets = on_a3(name)
     split_up = 0
     for position in analysis.plans:
         holding = [sheet for sheet in sheets if f"plan-{position.number}-heading" in sheet.panels]
@@ -1029,7 +1037,7 @@ def test_a_plan_sheet_in_parts_says_continued_over_its_parts_after_the_first(nam
 def test_a_sheet_of_plans_under_their_heading_leaves_the_scale_box_empty():
     """The heading of a plan sheet in parts took its sheet's scale box for a drawing at μl: a sheet holding the
     acceleration plan alone under it said 1:4 (a hunt's sheet 6), as if the plan were a drawing at μl."""
-    sheets = course_sheets(analyses_of("triad_class_iii"), "A3")
+    _, sheets = on_a3("triad_class_iii")
     plans_alone = [sheet for sheet in sheets if sheet.panels and all(
         re.fullmatch(r"plan-\d+-(velocity|acceleration|heading)", name) for name in sheet.panels)]
     assert plans_alone
