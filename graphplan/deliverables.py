@@ -235,8 +235,14 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     from .render import velocity_plans as velocity_plans_layout
 
     found: list[Drawing] = []
-    analysis = draw.with_length_scale(analysis)
+    # Refused as check refuses, before μl is chosen: the choice lays every sheet out at each μl it tries, and
+    # a plan no sheet holds at the scene's pole distance was refused only after it.
     draw.refuse_beyond_paper(analysis)
+    if "sheets" in pieces:
+        from .render.sheet import refuse_overflows
+
+        refuse_overflows(analysis)
+    analysis = draw.with_length_scale(analysis)
     machine, larger = None, None
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):

@@ -51,6 +51,7 @@ from graphplan.render.sheet import (
 )
 from graphplan.render.title_block import form_of, scale_text
 from graphplan.render.wrapping import fitted
+from graphplan.run import run
 
 MECHANISM_SCALE = 0.005  # m/mm, the ratchet's scene gives 0.0025
 CAPTION = plan_layout.CAPTION_SIZE
@@ -370,7 +371,9 @@ def on_a4(name, **changes):
     """The fixture's course sheets on A4 at its automatic μl, with its drawing's keys changed."""
     scene = graphplan.load(f"fixtures/{name}.toml")
     drawing = dataclasses.replace(scene.drawing, length_scale=None, sheet="A4", **changes)
-    analysis = with_length_scale(analyse(dataclasses.replace(scene, drawing=drawing)))
+    # μl is left to the sheets to choose, as a run's are: they refuse what overflows before the choice, which lays
+    # every sheet out at each μl it tries.  The diagrams draw no linkage: the same at any μl.
+    analysis = analyse(dataclasses.replace(scene, drawing=drawing))
     return course_sheets(analysis, diagrams=(diagrams_panel(analysis, "A4"),))
 
 
@@ -413,7 +416,7 @@ def test_a_plan_at_the_program_s_scale_too_big_for_a4_names_a_pole_distance_that
 
     def on_sheet(**changes):
         changed = dataclasses.replace(scene, positions=positions, drawing=dataclasses.replace(drawing, **changes))
-        return course_sheets(with_length_scale(analyse(changed)))   # the triad has no output link: no diagrams
+        return course_sheets(analyse(changed))   # μl chosen by the sheets; the triad has no output link: no diagrams
 
     with pytest.raises(SceneError) as error:
         on_sheet()
@@ -426,23 +429,33 @@ def test_a_plan_at_the_program_s_scale_too_big_for_a4_names_a_pole_distance_that
     assert named_pole(str(error.value), "acceleration") == fitting
 
 
-def test_a_pole_distance_too_long_for_the_sheet_is_refused_before_the_sheets_are_laid_out(monkeypatch):
+def test_a_pole_distance_too_long_for_the_sheet_is_refused_before_the_sheets_are_laid_out(monkeypatch, tmp_path):
     """The plans at the scene's pole distances are drawn at no μl, yet check chose μl first, laying every force
     sheet out at each μl it tried, and took 70 s to refuse a shaper's twelve plans on A4 (a student's check)."""
     from graphplan.render import sheet as sheet_module
 
-    expected = named_pole(refusal_on_a4("shaper_six_bar"), "acceleration")   # as the sheets laid out refuse it
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet="A4"))
+    # As the sheets laid out at the μl the program chooses refuse it (the choice lays them out at each μl tried).
+    chosen = with_length_scale(analyse(scene))
+    with pytest.raises(SceneError) as error:
+        sheet_module._refuse_overflows(chosen, "A4", kinematics_panels(chosen))
+    expected = named_pole(str(error.value), "acceleration")
 
     def laid_out(*_args, **_kwargs):
         raise AssertionError("the force sheets were laid out before the refusal")
 
     monkeypatch.setattr(sheet_module, "_force_sheets", laid_out)
-    scene = graphplan.load("fixtures/shaper_six_bar.toml")
-    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=None, sheet="A4"))
     with pytest.raises(SceneError) as error:
         sheet_module.refuse_overflows(analyse(scene))
     assert "'plan-10-acceleration'" in str(error.value) and "drawing.acceleration_pole = 100 mm" in str(error.value)
     assert named_pole(str(error.value), "acceleration") == expected
+    # The sheets themselves, and a run of them, refuse it so too: before μl is chosen or a force sheet laid out.
+    monkeypatch.setattr(sheet_module, "fewest_sheets_length_scale", laid_out)
+    assert refusal_on_a4("shaper_six_bar") == str(error.value)
+    with pytest.raises(SceneError) as run_error:
+        run(scene, tmp_path / "out", only=["sheets"])
+    assert str(run_error.value) == str(error.value)
 
 
 def test_plans_too_big_for_a4_are_named_together_with_a_pole_distance_for_each_kind():

@@ -42,6 +42,7 @@ _LARGER_SCALES_TRIED = 40
 # μl chosen for an analysis while it lives: the choice lays out every sheet at a few μl, and each drawing of an
 # analysis whose μl is not fixed (:func:`with_length_scale`) asks for it again.
 _chosen_scales: OwnedMemo[float] = OwnedMemo()
+_largest_scales: OwnedMemo[float] = OwnedMemo()
 
 
 def paths_extent(analysis: Analysis) -> float:
@@ -82,7 +83,9 @@ def length_scale(analysis: Analysis) -> float:
 def largest_length_scale(analysis: Analysis, sheet: str) -> float:
     """The standard μl that draws the paths of the points into the plan of positions' field, or the smallest
     larger one at which the drawings at μl fit an empty ``sheet``: where the choice of μl starts."""
-    return fitting_length_scale(analysis, sheet, fit_scale(paths_extent(analysis), POSITIONS_FIELD_MM))
+    # Found once: the sheets' refusal measures the drawings there before the choice starts from it.
+    return _largest_scales.get(analysis, (sheet, POSITIONS_FIELD_MM), lambda: fitting_length_scale(
+        analysis, sheet, fit_scale(paths_extent(analysis), POSITIONS_FIELD_MM)))
 
 
 def refuse_beyond_paper(analysis: Analysis) -> None:

@@ -757,14 +757,23 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
 # few μl (:func:`fewest_sheets_length_scale`) and the run lays out those of the μl chosen once more.  An
 # analysis fixed at a μl (:func:`~graphplan.render.drawings.at_length_scale`) shares its motion with the
 # analysis it is made from: the panels are kept by that motion while it lives.
+# The kinematics panels are kept apart from the force sheets: the refusal of drawings no sheet holds reads them
+# alone, before any force sheet is laid out, and the sheets then take them as laid out for it.
 _LaidOut = tuple[list[Panel], list[tuple[Panel, list[Panel]]]]
 _laid_out_panels: OwnedMemo[_LaidOut] = OwnedMemo()
+_laid_out_kinematics: OwnedMemo[list[Panel]] = OwnedMemo()
 
 
 def _laid_out(analysis: Analysis, sheet: str) -> _LaidOut:
     """:func:`kinematics_panels` and :func:`_force_sheets` of ``analysis`` on ``sheet``, each laid out once."""
     return _laid_out_panels.get(analysis.motion, (analysis.scene.drawing, analysis.scene.locale, sheet),
-                                lambda: (kinematics_panels(analysis), _force_sheets(analysis, sheet)))
+                                lambda: (_kinematics_laid_out(analysis), _force_sheets(analysis, sheet)))
+
+
+def _kinematics_laid_out(analysis: Analysis) -> list[Panel]:
+    """:func:`kinematics_panels` of ``analysis``, laid out once."""
+    return _laid_out_kinematics.get(analysis.motion, (analysis.scene.drawing, analysis.scene.locale),
+                                    lambda: kinematics_panels(analysis))
 
 
 def dynamics_panel(layers: Sequence[Layer], locale: str,
@@ -817,10 +826,16 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     """
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     check_sheet(chosen)
+    # On the scene's own sheet, what it refuses is found before the drawings are: before μl is chosen, whose
+    # choice lays every sheet out at each μl it tries, and before the force sheets (a shaper's plans refused on A4
+    # after 15 s of it).  On another sheet μl is still chosen for the scene's, and only the sheets laid out tell.
+    refused_first = chosen != "none" and chosen == analysis.scene.drawing.sheet
+    if refused_first:
+        refuse_overflows(analysis)
     analysis = with_length_scale(analysis)
     scene = analysis.scene
     panels = panels or course_panels(analysis, diagrams, chosen)
-    if chosen != "none":
+    if chosen != "none" and not refused_first:
         _refuse_overflows(analysis, chosen, panels.kinematics)
     form = form_of(scene.locale)
     details = details or details_of(scene.project, scene.title, form)
@@ -878,7 +893,7 @@ def refuse_overflows(analysis: Analysis) -> None:
     given = analysis.scene.drawing.length_scale
     analysis = with_length_scale(analysis) if given is not None else \
         at_length_scale(analysis, largest_length_scale(analysis, sheet))
-    _refuse_overflows(analysis, sheet, kinematics_panels(analysis))
+    _refuse_overflows(analysis, sheet, _kinematics_laid_out(analysis))
 
 
 def _refuse_overflows(analysis: Analysis, sheet: str, kinematics: Sequence[Panel]) -> None:
