@@ -223,14 +223,17 @@ class _Writer:
         columns = [[plain(row[c]) for row in rows if c < len(row)] for c in range(count)]
         points, widths = _column_widths(columns, bool(parts.header), _TABLE_PT[count > _WIDE_TABLE:])
         size = Pt(points)
+        # The cells are taken a row at a time: python-docx finds one by its row and column (table.cell, a
+        # column's cells) by listing every cell of the table, which took a long note's tables quadratic time.
+        grid = [table_row.cells for table_row in table.rows]
         for c, width in enumerate(widths):
             # In whole twips, rounded down: columns that fill the line never run past it by their roundings.
             table.columns[c].width = Twips(math.floor(width / _TWIP_MM))
-            for cell in table.columns[c].cells:
-                cell.width = table.columns[c].width
+            for cells in grid:
+                cells[c].width = table.columns[c].width
         for r, row in enumerate(rows):
             for c, cell in enumerate(row):
-                paragraph = table.cell(r, c).paragraphs[0]
+                paragraph = grid[r][c].paragraphs[0]
                 paragraph.alignment = _ALIGN[parts.sides[c] if c < len(parts.sides) else "l"]
                 paragraph.paragraph_format.space_after = Pt(0)
                 self.spans(paragraph, cell.children, bold=r == 0 and bool(parts.header), size=size)
@@ -238,9 +241,9 @@ class _Writer:
             _repeat_as_header(table.rows[0])
         # Word keeps a table on one page when each of its rows but the last keeps with the next.
         kept = len(rows) - 1 if len(rows) <= _KEPT_TOGETHER_ROWS else int(bool(parts.header))
-        for r, row in enumerate(table.rows):
+        for r, (row, cells) in enumerate(zip(table.rows, grid)):
             _never_split(row)
-            for cell in row.cells:
+            for cell in cells:
                 for paragraph in cell.paragraphs:
                     paragraph.paragraph_format.keep_with_next = r < kept
         self.document.add_paragraph()   # the space under a table, as under a paragraph
