@@ -164,9 +164,11 @@ def test_svg_alone_imports_neither_cairosvg_nor_ezdxf():
     assert found.stdout.strip() == "[]"
 
 
-@pytest.mark.parametrize("kind, plots", [("flywheel", ("motion",)),
-                                         ("rotor", ("vibration_magnification", "vibration_transmissibility"))])
-def test_the_plots_come_as_png_and_pdf_of_their_own_size_beside_the_drawings(tmp_path, kind, plots):
+# Each starter's pieces with the plots and a drawing beside them: the note and the sheets would add neither.
+@pytest.mark.parametrize("kind, pieces, drawing, plots", [
+    ("flywheel", "dynamics", "dynamics", ("motion",)),
+    ("rotor", "balancing,vibration", "rotor_balancing", ("vibration_magnification", "vibration_transmissibility"))])
+def test_the_plots_come_as_png_and_pdf_of_their_own_size_beside_the_drawings(tmp_path, kind, pieces, drawing, plots):
     """A report takes the plots (matplotlib's SVG, sized in pt) in the formats asked for, as it takes the drawings:
     each PNG is the SVG's size at 150 dpi with the plot's lines inked across it, each PDF one page of that size;
     DXF, a drafting format, stays with the drawings."""
@@ -176,7 +178,8 @@ def test_the_plots_come_as_png_and_pdf_of_their_own_size_beside_the_drawings(tmp
     scene = tmp_path / f"{kind}.toml"
     scene.write_text(starter(kind), encoding="utf-8")
     out = tmp_path / "out"
-    assert main(["run", str(scene), "--out", str(out), "--format", "png,pdf,dxf"]) == 0
+    assert main(["run", str(scene), "--out", str(out), "--format", "png,pdf,dxf", "--only", pieces]) == 0
+    assert all((out / f"{drawing}.{form}").is_file() for form in ("svg", "png", "pdf", "dxf"))
     for name in plots:
         svg = (out / f"{name}.svg").read_text(encoding="utf-8")
         width, height = (float(v) for v in re.search(r'<svg[^>]* width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
