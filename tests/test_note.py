@@ -804,11 +804,14 @@ def test_a_slides_reaction_with_no_couple_is_said_to_pass_through_its_joint():
 def test_a_chinese_note_s_friction_loads_join_their_formulas_with_the_full_width_semicolon():
     """ρO = f·r and Mf12 = ρO·R12 (f′ and Ff of a slide) stood joined by a Latin "; " in the Chinese note, whose other
     formulas the locale's "；" joins."""
+    from graphplan.run import as_asked
     from graphplan.scene import loads as scene_from_text
     from graphplan.starters import starter
 
     scene = scene_from_text(starter("shaper", "zh"))
-    note = note_markdown(analyse(scene))
+    # On no sheet: the friction's lines are the same whatever sheet the drawings go on, and the note's scale for
+    # its sheets is chosen by laying them all out (the Chinese shaper's note on its sheet is test_note_dynamics's).
+    note = note_markdown(analyse(as_asked(scene, sheet="none")))
     journal = next(spec for spec in scene.friction if spec.radius is not None)
     slide = next(spec for spec in scene.friction if spec.radius is None)
     rubbing = [line for line in note.splitlines() if line.startswith(("- ρ", "- f"))]
