@@ -38,8 +38,23 @@ def run(tmp_path: Path, extra: str, locale: str = "en") -> tuple[str, dict]:
 
 
 @pytest.fixture(scope="module")
-def english(tmp_path_factory):
-    return run(tmp_path_factory.mktemp("note"), DYNAMICS)
+def with_dynamics(tmp_path_factory):
+    """The ratchet with :data:`DYNAMICS` run in a language: its note, results and folder, each language run once for
+    the tests that read that same run (the integrator's gentle motor is :data:`DYNAMICS`'s own)."""
+    runs = {}
+
+    def in_locale(locale: str) -> tuple[str, dict, Path]:
+        if locale not in runs:
+            folder = tmp_path_factory.mktemp(f"dynamics-{locale}")
+            runs[locale] = (*run(folder, DYNAMICS, locale=locale), folder / "out")
+        return runs[locale]
+
+    return in_locale
+
+
+@pytest.fixture(scope="module")
+def english(with_dynamics):
+    return with_dynamics("en")[:2]
 
 
 def section(note: str, heading: str) -> str:
@@ -102,8 +117,8 @@ def test_the_reduction_is_written_with_the_driving_link_s_own_speed(english):
     assert "Je = Σ[m·(vS/ω2)² + JS·(ω/ω2)²]" in text and "Me = Σ[F·v·cos α ± M·ω]/ω2" in text and "ω1" not in text
 
 
-def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_path):
-    note, _ = run(tmp_path / "ru", DYNAMICS, locale="ru")
+def test_in_russian_with_a_decimal_comma_and_without_dynamics_no_section(tmp_path, with_dynamics):
+    note, _, _ = with_dynamics("ru")
     text = section(note, "Динамический анализ машины")
     assert re.search(r"δ = 0,05 при ωср = 17 рад/с", text)
     assert "stiff" not in text and "auto:" not in text   # the integrator's reason is in Russian too
@@ -122,12 +137,12 @@ def drawn_words(svg: Path) -> str:
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
-def test_the_note_and_the_dynamics_sheet_name_the_flywheel_s_quantities_alike(tmp_path, locale):
+def test_the_note_and_the_dynamics_sheet_name_the_flywheel_s_quantities_alike(with_dynamics, locale):
     """The Russian sheet drew Jм, Jп, Jп,ср, ωср, ΔTнб where the note beside it wrote JF, Je, Je,ср, ωm, ΔWmax for
     the same values: a reader met two notations for one quantity."""
-    note, _ = run(tmp_path, DYNAMICS, locale=locale)
+    note, _, out = with_dynamics(locale)
     text = note[note.index("\n## 6"):] if "\n## 6" in note else note
-    drawn = drawn_words(tmp_path / "out" / "dynamics.svg")
+    drawn = drawn_words(out / "dynamics.svg")
     on_sheet, in_note = set(DYNAMICS_SYMBOL.findall(drawn)), set(DYNAMICS_SYMBOL.findall(text))
     # Mertsalov's constant part of the reduced inertia is on the sheet alone, the note gives his flywheel only.
     mertsalov = {"JпI", "Jc"}
@@ -141,10 +156,12 @@ def test_the_note_and_the_dynamics_sheet_name_the_flywheel_s_quantities_alike(tm
 
 
 @pytest.mark.parametrize(("stall_torque", "method", "stiff"), [(2000.0, "RK45", False), (2.0e6, "LSODA", True)])
-def test_the_note_gives_the_run_s_own_reason_for_its_integrator(tmp_path, stall_torque, method, stiff):
+def test_the_note_gives_the_run_s_own_reason_for_its_integrator(tmp_path, with_dynamics, stall_torque, method, stiff):
     """A gentle linear motor and one a thousand times steeper: the note says stiff exactly when the run took
     LSODA for stiffness, with the run's stiffness number."""
-    note, results = run(tmp_path, DYNAMICS.replace("stall_torque = 2000.0", f"stall_torque = {stall_torque}"))
+    assert "stall_torque = 2000.0" in DYNAMICS
+    extra = DYNAMICS.replace("stall_torque = 2000.0", f"stall_torque = {stall_torque}")
+    note, results = with_dynamics("en")[:2] if extra == DYNAMICS else run(tmp_path, extra)
     motion = results["dynamics"]["motion"]
     assert motion["method"] == method
     assert motion["method_reason"].startswith("auto: stiff" if stiff else "auto: not stiff")
