@@ -190,8 +190,10 @@ def test_the_dynamics_of_a_scene_with_friction_says_its_moments_leave_the_fricti
     scene.write_text(starter("shaper", locale), encoding="utf-8")
     out = tmp_path / "out"
     # The run's own analysis is the scene's (graphplan.run analyses it as the command line does): the works are
-    # checked on it, not on a second analysis of the same scene.  The note and results.json are what is read.
-    written = run_scene(load(scene), out, only=["note", "dynamics"])
+    # checked on it, not on a second analysis of the same scene.  The note and results.json are what is read, on no
+    # sheet: the sheets' scale, chosen by laying them all out, has no part in the dynamics' words or works (the
+    # shaper's note on its sheet in each language is test_note_names_no_files_or_keys's).
+    written = run_scene(load(scene), out, only=["note", "dynamics"], sheet="none")
     note = (out / "note.md").read_text(encoding="utf-8")
     assert words in note and note.count(words) == 1
     # The cutting force, 2000 N over 0.05 to 0.95 of the ram's stroke H, does 2000·0.9·H over the cycle.
@@ -207,8 +209,7 @@ def test_the_dynamics_of_a_scene_with_friction_says_its_moments_leave_the_fricti
     # Each [[friction]] table of the starter runs to a blank line.
     frictionless.write_text(re.sub(r"^\[\[friction\]\].*?\n\n", "", starter("shaper", locale), flags=re.MULTILINE | re.DOTALL),
                             encoding="utf-8")
-    # Without friction the sentence is not said: the note's dynamics, which it explains whatever the pieces drawn,
-    # told on no sheet (the sheets' scale, chosen by laying them all out, has no part in the dynamics' words).
+    # Without friction the sentence is not said in the note's dynamics, which it explains whatever the pieces drawn.
     bare = load(frictionless)
     assert not bare.friction and bare.dynamics == load(scene).dynamics
     run_scene(bare, tmp_path / "bare", only=["note"], sheet="none")
