@@ -810,7 +810,8 @@ def test_a_chinese_note_s_friction_loads_join_their_formulas_with_the_full_width
 
     scene = scene_from_text(starter("shaper", "zh"))
     # On no sheet: the friction's lines are the same whatever sheet the drawings go on, and the note's scale for
-    # its sheets is chosen by laying them all out (the Chinese shaper's note on its sheet is test_note_dynamics's).
+    # its sheets is chosen by laying them all out (the Chinese shaper's note on its sheet is made by
+    # test_note_names_no_files_or_keys).
     note = note_markdown(analyse(as_asked(scene, sheet="none")))
     journal = next(spec for spec in scene.friction if spec.radius is not None)
     slide = next(spec for spec in scene.friction if spec.radius is None)
