@@ -21,7 +21,9 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.locale import strings
 from graphplan.plans import DrawnLine, LineMeaning, Similarity, Step, guide_at
+from graphplan.render.drawings import POSITIONS_FIELD_MM, paths_extent
 from graphplan.report.note import note_markdown
+from graphplan.scales import fit_scale
 
 FIXTURES = sorted((Path(__file__).resolve().parent.parent / "fixtures").glob("*.toml"))
 # Directions and similar figures agree to the plan's rounding, relative to the figures' size.
@@ -44,8 +46,16 @@ CASES["quick_return+slot-offset"] = _offset_slot
 @functools.cache
 def analysed(case: str, locale: str | None = None):
     scene = CASES[case]()
+    if locale is None:
+        return analyse(scene)
+    # A note words its records alike at any μl.  Where the scene leaves μl to the program, the note's is fixed at the
+    # standard one that draws the paths into the plan of positions' field: choosing it lays every sheet out at a few
+    # μl, seven seconds a note and none of its words (the choice in Russian and Chinese is test_drawing_locales').
+    drawing = scene.drawing
+    if drawing.length_scale is None:
+        drawing = dataclasses.replace(drawing, length_scale=fit_scale(paths_extent(analysed(case)), POSITIONS_FIELD_MM))
     # The title is the user's own text, in whatever language the user wrote it.
-    return analyse(scene if locale is None else dataclasses.replace(scene, locale=locale, title="—"))
+    return analyse(dataclasses.replace(scene, locale=locale, title="—", drawing=drawing))
 
 
 def _steps(case: str):
