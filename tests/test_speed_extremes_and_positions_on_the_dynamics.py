@@ -26,8 +26,11 @@ SVG = "{http://www.w3.org/2000/svg}"
 TANGENT_COLOUR = "#b22222"
 
 
-def _run_shaper(tmp_path) -> tuple[ElementTree.Element, dict]:
-    """The shaper of ``graphplan new shaper``: a velocity plan at each of its twelve positions, δ = 0.05."""
+@pytest.fixture(scope="module")
+def shaper_dynamics(tmp_path_factory) -> tuple[ElementTree.Element, dict]:
+    """The shaper of ``graphplan new shaper``: a velocity plan at each of its twelve positions, δ = 0.05.  Its
+    dynamics.svg and results.json, run once for the two tests that read them (each ran the same run)."""
+    tmp_path = tmp_path_factory.mktemp("shaper")
     scene = tmp_path / "shaper.toml"
     assert main(["new", "shaper", "--out", str(scene)]) == 0
     out = tmp_path / "out"
@@ -71,8 +74,8 @@ def _speed(dynamics: dict) -> np.ndarray:
     return np.sqrt(2.0 * energy / inertia)
 
 
-def test_the_angles_of_omega_max_and_omega_min_are_marked_on_the_energy_diagram(tmp_path):
-    drawing, results = _run_shaper(tmp_path)
+def test_the_angles_of_omega_max_and_omega_min_are_marked_on_the_energy_diagram(shaper_dynamics):
+    drawing, results = shaper_dynamics
     dynamics = results["dynamics"]
     energy = _group(drawing, "energy")
     degrees_per_mm = _scale(energy, r"μφ = ([\d.]+)°/mm")
@@ -101,8 +104,8 @@ def test_the_angles_of_omega_max_and_omega_min_are_marked_on_the_energy_diagram(
         labels["ωmax"][0] - (origin_x + travel[int(np.argmin(speed[:-1]))] / degrees_per_mm))
 
 
-def test_the_plan_positions_are_numbered_on_the_energy_mass_diagram(tmp_path):
-    drawing, results = _run_shaper(tmp_path)
+def test_the_plan_positions_are_numbered_on_the_energy_mass_diagram(shaper_dynamics):
+    drawing, results = shaper_dynamics
     dynamics = results["dynamics"]
     diagram = _group(drawing, "energy-mass")
     mass_per_mm = _scale(diagram, r"μJ = ([\d.]+) kg·m²/mm")
