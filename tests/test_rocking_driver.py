@@ -100,9 +100,15 @@ def test_the_note_names_a_swinging_driver_a_rocker(locale, word, crank):
     """A hand lever over 45° was a «кривошип» (曲柄) in the structure table (a Chinese student's reading)."""
     import dataclasses
 
+    from graphplan.render.drawings import POSITIONS_FIELD_MM, paths_extent
     from graphplan.report.note import note_markdown
+    from graphplan.scales import fit_scale
 
     scene = dataclasses.replace(graphplan.load(FIXTURE), locale=locale)
+    # The structure table names the driver alike at any μl: fixed at the one that draws the paths into the plan of
+    # positions' field, not chosen by laying the sheets out at a few μl (seconds a note, none of its words).
+    length_scale = fit_scale(paths_extent(analyse(scene)), POSITIONS_FIELD_MM)
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=length_scale))
     note = note_markdown(analyse(scene))
     driver_row = next(line for line in note.splitlines() if line.startswith("| I(1,2) |"))
     assert driver_row.split("|")[-2].strip() == word and crank not in driver_row
