@@ -311,7 +311,14 @@ def test_a_chinese_caption_separates_its_clauses_full_width_where_it_has_chinese
     def follows_the_rule(line: str) -> bool:
         return not re.search(r"[,;] ", line) if chinese.search(line) else not re.search(r"[，；]", line)
 
-    analysis = graphplan.load_text(starter("shaper", "zh")).analyse()
+    from graphplan.render.drawings import POSITIONS_FIELD_MM, paths_extent
+    from graphplan.scales import fit_scale
+
+    scene = graphplan.load_text(starter("shaper", "zh"))
+    # The captions' commas and semicolons are the same at any μl: fixed at the one that draws the paths into the plan
+    # of positions' field, not chosen by laying every sheet out at a few μl (eight seconds of this test).
+    length_scale = fit_scale(paths_extent(analyse(scene)), POSITIONS_FIELD_MM)
+    analysis = analyse(dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=length_scale)))
     words = strings("zh")
     captions = [line for position in analysis.plans for friction in (False, True)
                 for row in force_layout.rows(force_sheet(analysis, position, friction)).drawings
