@@ -228,6 +228,11 @@ def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
     return {**text, "dyn_angle_axis": axis, "motion_angle_axis": axis}
 
 
+# The pieces of a linkage drawn at μl, or on its sheets, or to scales that follow it (the diagrams' μs).
+_DRAWN_AT_LENGTH_SCALE = frozenset({"positions", "velocity", "acceleration", "forces", "lever", "diagrams",
+                                    "load_diagrams", "sheets"})
+
+
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
     from .render import drawings as draw
     from .render import plans as plan_layout
@@ -242,7 +247,12 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         from .render.sheet import refuse_overflows
 
         refuse_overflows(analysis)
-    analysis = draw.with_length_scale(analysis)
+    if set(pieces) & _DRAWN_AT_LENGTH_SCALE:
+        analysis = draw.with_length_scale(analysis)
+    else:
+        # The dynamics alone are drawn at scales of their own: choosing μl would lay every sheet out at a few μl
+        # (the shaper's seconds) for nothing drawn.  The scene is still refused where the choice refuses it.
+        draw.refuse_unfit_length_scale(analysis)
     machine, larger = None, None
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):

@@ -3,6 +3,9 @@ cannot give; the command line's options; the starter scenes of ``graphplan new``
 
 from __future__ import annotations
 
+import contextlib
+import functools
+import io
 import json
 import math
 import re
@@ -46,9 +49,17 @@ def without_masses_and_loads(tmp_path: Path) -> Path:
     return path
 
 
-def test_by_default_every_piece_the_scene_has_data_for(tmp_path):
-    status, out = run(tmp_path)
+@pytest.fixture(scope="module")
+def plain_ratchet(tmp_path_factory) -> Path:
+    """The ratchet run as it is, with no option: the folder of the run that three tests read (each read it of a
+    run of its own, the same run three times)."""
+    status, out = run(tmp_path_factory.mktemp("plain"))
     assert status == 0
+    return out
+
+
+def test_by_default_every_piece_the_scene_has_data_for(plain_ratchet):
+    out = plain_ratchet
     assert {"results.json", "positions.svg", "diagrams.svg", "plan_5.svg", "plan_11.svg", "forces_5.svg",
             "forces_11.svg", "errors.md", "errors.csv", "forces.md", "note.md", "note.html"} <= names(out)
     # Nothing the scene has no data for: it balances no rotor and has no springs.
@@ -150,21 +161,30 @@ def test_the_locale_option_turns_the_drawings_language(tmp_path):
     assert re.search(r"[\u4e00-\u9fff]", texts)
 
 
-def new_checked_and_run(tmp_path, kind, capsys):
-    """``graphplan new KIND`` written as the starter, checked, and run: what check printed and the run's folder."""
-    scene = tmp_path / f"{kind}.toml"
-    assert main(["new", kind, "--out", str(scene)]) == 0
-    assert scene.read_text(encoding="utf-8") == starter(kind)
-    assert main(["check", str(scene)]) == 0
-    checked = capsys.readouterr().out
-    status, out = run(tmp_path, scene=scene)
-    assert status == 0
-    return checked, out
+@pytest.fixture(scope="module")
+def new_checked_and_run(tmp_path_factory):
+    """``graphplan new KIND`` written as the starter, checked, and run: what check printed and the run's folder,
+    made once a kind for the module (the shaper's whole run is read by two tests)."""
+
+    @functools.cache
+    def made(kind: str) -> tuple[str, Path]:
+        folder = tmp_path_factory.mktemp(kind)
+        scene = folder / f"{kind}.toml"
+        assert main(["new", kind, "--out", str(scene)]) == 0
+        assert scene.read_text(encoding="utf-8") == starter(kind)
+        printed = io.StringIO()
+        with contextlib.redirect_stdout(printed):
+            assert main(["check", str(scene)]) == 0
+        status, out = run(folder, scene=scene)
+        assert status == 0
+        return printed.getvalue(), out
+
+    return made
 
 
 @pytest.mark.parametrize("kind", MECHANISMS)
-def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
-    checked, out = new_checked_and_run(tmp_path, kind, capsys)
+def test_each_starter_scene_checks_and_runs(kind, new_checked_and_run):
+    checked, out = new_checked_and_run(kind)
     assert "structure:" in checked
     assert {"results.json", "positions.svg", "errors.md"} <= names(out)
     assert any(name.startswith("forces_") for name in names(out))
@@ -174,8 +194,8 @@ def test_each_starter_scene_checks_and_runs(tmp_path, kind, capsys):
     ("flywheel", {"dynamics.svg", "motion.svg"}),
     ("rotor", {"rotor_balancing.svg", "vibration_magnification.svg", "vibration_transmissibility.svg"}),
 ])
-def test_each_machine_starter_runs_without_a_linkage_and_explains_itself(tmp_path, kind, drawings, capsys):
-    checked, out = new_checked_and_run(tmp_path, kind, capsys)
+def test_each_machine_starter_runs_without_a_linkage_and_explains_itself(kind, drawings, new_checked_and_run):
+    checked, out = new_checked_and_run(kind)
     assert "no mechanism; " in checked
     assert names(out) == {"results.json", "note.md", "note.html", "note.tex"} | drawings
     note = (out / "note.md").read_text(encoding="utf-8")
@@ -197,13 +217,10 @@ def test_the_sheets_alone_hold_the_dynamics_too(tmp_path):
     assert "dynamics-energy-mass" in set().union(*(layer_ids(sheet) for sheet in sheets))
 
 
-def test_the_shaper_starter_runs_the_whole_course(tmp_path):
+def test_the_shaper_starter_runs_the_whole_course(new_checked_and_run):
     """Plans, forces with friction, the flywheel and the equation of motion, whose steady turn keeps the 60 rpm the
     scene's crank is given (the gear ratio is chosen for it) and stays within the flywheel's δ."""
-    scene = tmp_path / "shaper.toml"
-    scene.write_text(starter("shaper"), encoding="utf-8")
-    status, out = run(tmp_path, scene=scene)
-    assert status == 0
+    _, out = new_checked_and_run("shaper")   # the starter as written, run with no option
     assert {"forces_friction_3.svg", "dynamics.svg", "motion.svg", "sheet_1.svg"} <= names(out)
     # The course's last sheet is the dynamics of the machine, as the course project's is.
     sheets = sorted(out.glob("sheet_*.svg"), key=lambda path: int(path.stem.removeprefix("sheet_")))
@@ -217,6 +234,23 @@ def test_the_shaper_starter_runs_the_whole_course(tmp_path):
     efficiencies = [position["forces"]["friction"]["efficiency"] for position in results["positions"]
                     if position.get("forces")]
     assert len(efficiencies) == 2 and all(0 < eta < 1 for eta in efficiencies)
+
+
+def test_the_dynamics_alone_are_drawn_without_choosing_the_length_scale(new_checked_and_run, tmp_path, monkeypatch):
+    """--only dynamics chose μl, laying every sheet of the shaper out at a few μl, for drawings that have scales of
+    their own: the run took 9 s where its dynamics take 2.  The drawings are the whole run's, byte for byte."""
+    from graphplan.render import sheet
+
+    _, whole = new_checked_and_run("shaper")
+
+    def refused(*_):
+        raise AssertionError("μl chosen for a run that draws nothing at μl")
+
+    monkeypatch.setattr(sheet, "fewest_sheets_length_scale", refused)
+    status, out = run(tmp_path, "--only", "dynamics", scene=whole.parent / "shaper.toml")
+    assert status == 0
+    assert {name for name in names(out) if name.endswith(".svg")} == {"dynamics.svg", "motion.svg"}
+    assert all((out / name).read_bytes() == (whole / name).read_bytes() for name in ("dynamics.svg", "motion.svg"))
 
 
 def test_a_machine_that_stalls_is_told_on_the_command_line_in_the_results_and_in_the_note(tmp_path, capsys):
@@ -353,20 +387,25 @@ def test_the_english_starter_is_its_template(kind):
     assert starter(kind) == resources.files("graphplan").joinpath("templates", f"{kind}.toml").read_text("utf-8")
 
 
+@functools.cache
+def starter_note(kind: str, locale: str):
+    """The starter of ``kind`` in ``locale`` as loaded, and its note: the Russian shaper's is read by two tests."""
+    from graphplan.analysis import analyse
+    from graphplan.report.note import note_markdown
+
+    scene = graphplan.load_text(starter(kind, locale))
+    return scene, note_markdown(analyse(scene) if scene.has_linkage else None, scene=scene)
+
+
 @pytest.mark.parametrize("kind", KINDS)
 @pytest.mark.parametrize("locale", ["ru", "zh"])
 def test_a_starter_in_another_language_prints_no_english_words(kind, locale):
     """graphplan new shaper --locale ru titled its note «Пояснительная записка: Shaping machine» and named the
     ram's guide «∥ ram» in its plans, and the title block of every sheet read "Shaping machine"."""
-    import graphplan
-    from graphplan.analysis import analyse
-    from graphplan.report.note import note_markdown
-
-    scene = graphplan.load_text(starter(kind, locale))
+    scene, note = starter_note(kind, locale)
     assert scene.locale == locale
     assert not LATIN_WORD.search(scene.title), scene.title
     assert not any(LATIN_WORD.search(name) for name in scene.frame_lines), list(scene.frame_lines)
-    note = note_markdown(analyse(scene) if scene.has_linkage else None, scene=scene)
     heading = note.splitlines()[0]
     assert heading.startswith("# ") and scene.title in heading and not LATIN_WORD.search(heading), heading
 
@@ -468,7 +507,7 @@ def test_a_linkage_piece_of_a_rotor_scene_is_refused(tmp_path, capsys):
     assert "--only[1]: 'velocity' needs a mechanism" in capsys.readouterr().err
 
 
-def test_a_dynamics_table_brings_the_flywheel(tmp_path):
+def test_a_dynamics_table_brings_the_flywheel(tmp_path, plain_ratchet):
     scene = tmp_path / "with_flywheel.toml"
     scene.write_text(RATCHET.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n", encoding="utf-8")
     status, out = run(tmp_path, scene=scene)
@@ -482,8 +521,7 @@ def test_a_dynamics_table_brings_the_flywheel(tmp_path):
     assert dynamics["delta_w_max"] == pytest.approx(max(energy) - min(energy), rel=1e-9)
     assert len(dynamics["reduced_inertia"]) == len(dynamics["reduced_moment"]) == len(energy)
     # Without the table, no dynamics at all.
-    status, plain = run(tmp_path / "plain")
-    assert "dynamics.svg" not in names(plain)
+    assert "dynamics.svg" not in names(plain_ratchet)
 
 
 def test_the_machine_run_by_its_motor_fluctuates_as_its_flywheel_was_sized(tmp_path):
@@ -512,7 +550,7 @@ def test_a_motor_for_a_slider_driven_mechanism_is_refused_by_name(tmp_path, caps
                           "of a crank; this scene's positions run once over driver.travel")
 
 
-def test_sheets_when_the_scene_names_its_sheet_each_the_size_of_its_format(tmp_path):
+def test_sheets_when_the_scene_names_its_sheet_each_the_size_of_its_format(tmp_path, plain_ratchet):
     status, out = run(tmp_path, "--only", "sheets")
     assert status == 0
     sheets = sorted(name for name in names(out) if name.startswith("sheet_"))
@@ -521,7 +559,7 @@ def test_sheets_when_the_scene_names_its_sheet_each_the_size_of_its_format(tmp_p
         root = ElementTree.parse(out / name).getroot()
         assert (root.get("width"), root.get("height")) == ("841mm", "594mm")  # the ratchet asks for A1
     # The ratchet names its sheet: a plain run draws the sheets too, the same as when asked for.
-    status, plain = run(tmp_path / "plain")
+    plain = plain_ratchet
     assert {name for name in names(plain) if name.startswith("sheet_")} == set(sheets)
     assert all((plain / name).read_bytes() == (out / name).read_bytes() for name in sheets)
     # A scene that names no sheet gets none unless it asks.
@@ -565,12 +603,7 @@ def test_the_russian_shapers_note_writes_what_follows_parallel_as_russian_gramma
     """«∥ направляющая» read "parallel to" with a nominative noun, where Russian declines it («∥ направляющей»).
     A line's name is one word in every case, so the Russian starter names its guide as the textbooks do, x–x:
     no word after ∥ in its note is a noun or adjective left in the feminine nominative."""
-    import graphplan
-    from graphplan.analysis import analyse
-    from graphplan.report.note import note_markdown
-
-    scene = graphplan.load_text(starter("shaper", "ru"))
-    note = note_markdown(analyse(scene), scene=scene)
+    _, note = starter_note("shaper", "ru")
     after_parallel = re.findall(r"∥ (\S+)", note)
     assert after_parallel
     assert not [word for word in after_parallel if re.fullmatch(r"[а-яё]+(ая|яя)", word)], set(after_parallel)

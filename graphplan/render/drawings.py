@@ -80,6 +80,17 @@ def length_scale(analysis: Analysis) -> float:
         analysis, sheet, largest_length_scale(analysis, sheet)))
 
 
+def refuse_unfit_length_scale(analysis: Analysis) -> None:
+    """Refuse the scene as :func:`length_scale` does, without choosing μl, for a run that draws nothing at μl: a μl
+    given beyond any paper, or drawings that fit no sheet of the scene's format at any μl (the choice's other
+    attempts are made only where the first one fits, and refuse nothing)."""
+    sheet = analysis.scene.drawing.sheet
+    if analysis.scene.drawing.length_scale is not None:
+        length_scale(analysis)
+    elif sheet != "none":
+        largest_length_scale(analysis, sheet)
+
+
 def largest_length_scale(analysis: Analysis, sheet: str) -> float:
     """The standard μl that draws the paths of the points into the plan of positions' field, or the smallest
     larger one at which the drawings at μl fit an empty ``sheet``: where the choice of μl starts."""
