@@ -318,7 +318,8 @@ def test_a_chinese_caption_separates_its_clauses_full_width_where_it_has_chinese
     # The captions' commas and semicolons are the same at any μl: fixed at the one that draws the paths into the plan
     # of positions' field, not chosen by laying every sheet out at a few μl (eight seconds of this test).
     length_scale = fit_scale(paths_extent(analyse(scene)), POSITIONS_FIELD_MM)
-    analysis = analyse(dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, length_scale=length_scale)))
+    fixed = dataclasses.replace(scene.drawing, length_scale=length_scale)
+    analysis = analyse(dataclasses.replace(scene, drawing=fixed))
     words = strings("zh")
     captions = [line for position in analysis.plans for friction in (False, True)
                 for row in force_layout.rows(force_sheet(analysis, position, friction)).drawings
