@@ -193,8 +193,10 @@ def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_dra
                                                                 text))
     scene = tmp_path / "shaper.toml"
     scene.write_text(text, encoding="utf-8")
-    # Only the note and the force drawings, which are read: each force sheet is fitted to the A3 all the same.
-    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--locale", "en", "--only", "note,forces"]) == 0
+    # The note and the force drawings with their levers, which are read, and the sheets: the force drawings written
+    # are the sheets' own, each fitted to the A3.
+    pieces = "note,forces,lever,sheets"
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--locale", "en", "--only", pieces]) == 0
     analysis = analyse(loads(text))
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     pas = [float(value) for value in re.findall(r"Fb = \|Σ\(F·h\)\|/pa = [^/]+/([\d.]+) = ", note)]
