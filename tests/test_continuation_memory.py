@@ -90,17 +90,23 @@ def test_dense_positions_are_settled_together_as_each_would_be_alone(settled):
             assert abs(together.point(name).a[index] - alone.point(name).a[0]) == pytest.approx(0.0, abs=1e-9)
 
 
-def test_a_second_solve_of_the_same_scene_walks_no_step_and_finds_its_positions_once(settled, monkeypatch):
-    """graphplan.solve built the mechanism afresh at each call: a finite-difference stencil's eleven solves of one
-    scene each walked the whole turn and found the extremes again (seconds a solve)."""
-    rounds = []
+@pytest.fixture
+def rounds(monkeypatch):
+    """One entry for each round of the search for the extremes (a sweep of the turn and the roots in it)."""
+    found = []
     original = positions_module._find_extremes
 
     def counted(*args):
-        rounds.append(1)
+        found.append(1)
         return original(*args)
 
     monkeypatch.setattr(positions_module, "_find_extremes", counted)
+    return found
+
+
+def test_a_second_solve_of_the_same_scene_walks_no_step_and_finds_its_positions_once(settled, rounds):
+    """graphplan.solve built the mechanism afresh at each call: a finite-difference stencil's eleven solves of one
+    scene each walked the whole turn and found the extremes again (seconds a solve)."""
     path = FIXTURES / "triad_with_slider.toml"  # starts at an extreme: the positions are found by solves too
     scene = graphplan.load(path)
     asked = [0.1, 0.2, 3.0]
@@ -171,15 +177,7 @@ def test_positions_refused_are_refused_at_every_call_and_those_found_cannot_be_c
         positions.load_strokes[(5, "forward")] = (0.0, 1.0)  # type: ignore[index]
 
 
-def test_the_extremes_of_a_triad_are_found_in_one_round(monkeypatch):
-    rounds = []
-    original = positions_module._find_extremes
-
-    def counted(*args):
-        rounds.append(1)
-        return original(*args)
-
-    monkeypatch.setattr(positions_module, "_find_extremes", counted)
+def test_the_extremes_of_a_triad_are_found_in_one_round(rounds):
     found = graphplan.solve(graphplan.load(FIXTURES / "triad_with_slider.toml"))  # starts at an extreme
     assert len(rounds) == 1
     # The first position is the extreme: the working link is at rest there.
