@@ -553,8 +553,9 @@ class MachineDynamics:
         if motion is None or motion.stalled_at is None:
             return None
         where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
+        # Where it stands at the end of the run: where it never started, where it stood from the start.
+        resisting = self.machine.mr(float(motion.phi[-1]), 0.0)
         if not motion.turned:
-            resisting = self.machine.mr(float(motion.phi[0]), 0.0)
             unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
                        f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there")
             held = self.starting_brake()
@@ -567,13 +568,12 @@ class MachineDynamics:
         if motion.stalled_slipping:
             return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
                     f"slipping at its {self.spec.motion.clutch.torque:g} N·m, cannot carry it past the resistance "
-                    f"there, {self.machine.mr(float(motion.phi[-1]), 0.0):.4g} N·m (a clutch of more torque)")
+                    f"there, {resisting:.4g} N·m (a clutch of more torque)")
         if (held := self.stopping_brake()) is not None:
             return (f"dynamics: the brake applied at t = {self.spec.motion.brake.at:g} s brings the machine to rest "
                     f"at t = {motion.stalled_at:.4g} s, φ = {where}, and the motor stalls: it cannot turn the machine "
-                    f"against the brake's {held:g} N·m and the resistance there, "
-                    f"{self.machine.mr(float(motion.phi[-1]), 0.0):.4g} N·m (a smaller dynamics.brake.torque keeps "
-                    "it turning; dynamics.motor.off_at switches the motor off to stop it)")
+                    f"against the brake's {held:g} N·m and the resistance there, {resisting:.4g} N·m (a smaller "
+                    "dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off to stop it)")
         return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")

@@ -285,20 +285,26 @@ def _check_guide(scene: Scene, guide: Guide, known_links: set[int], fixed_on: di
         raise SceneError(f"{guide.where}.link", f"link {link} is not known before this group", link)
     if not isinstance(guide.through, str) and link != scene.frame_link:
         raise SceneError(f"{guide.where}.through", f"on a moving link must name a point of link {link}", list(guide.through or ()))
-    if isinstance(guide.through, str) and guide.through not in fixed_on.get(link, ()) and not guide.through_given:
-        carriers = sorted(number for number, points in fixed_on.items() if guide.through in points)
-        on = "the frame" if link == scene.frame_link else f"link {link}"
-        if not carriers:
-            advice = ""
-        elif carriers[0] == scene.frame_link:
-            advice = f": leave link out, {guide.through} being a point of the frame"
-        else:
-            advice = f": give link = {carriers[0]}, the link that carries {guide.through}"
-        raise SceneError(f"{guide.where}.link", f"the guide runs through {guide.through}, which is not on {on}{advice}",
-                         *(() if guide.link is None else (guide.link,)))
     if isinstance(guide.through, str) and guide.through not in fixed_on.get(link, ()):
+        if not guide.through_given:
+            _refuse_implied_through(scene, guide, link, fixed_on)
         raise SceneError(f"{guide.where}.through", f"must be a point fixed on link {link}: {_known(sorted(fixed_on.get(link, ())))}",
                          guide.through, hint=lookalike_hint(guide.through, fixed_on.get(link, ())))
+
+
+def _refuse_implied_through(scene: Scene, guide: Guide, link: int, fixed_on: dict[int, set[str]]) -> None:
+    """Refuse a guide through a point the scene did not name for it (a triad leg's outer joint) that is not on its
+    link, under the key the scene wrote, ``link``, with the link that carries the point."""
+    carriers = sorted(number for number, points in fixed_on.items() if guide.through in points)
+    on = "the frame" if link == scene.frame_link else f"link {link}"
+    if not carriers:
+        advice = ""
+    elif carriers[0] == scene.frame_link:
+        advice = f": leave link out, {guide.through} being a point of the frame"
+    else:
+        advice = f": give link = {carriers[0]}, the link that carries {guide.through}"
+    raise SceneError(f"{guide.where}.link", f"the guide runs through {guide.through}, which is not on {on}{advice}",
+                     *(() if guide.link is None else (guide.link,)))
 
 
 def _place_points(pending, known_links, fixed_on, sliding_on, known_points):

@@ -340,25 +340,28 @@ def _turns_round(mechanism: Mechanism, sweep: Motion, working: Working) -> int:
     sense: 0 for a translating link, or for a turning one that comes back to its angle without going round."""
     if working.link in mechanism.translating:
         return 0
-    angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
-    # A half-degree step of the crank turns the link through less than half a turn, away from a toggle.
-    turned = float(np.sum(np.angle(np.exp(1j * np.diff(angle)))))
+    turned = float(np.sum(_turning_steps(sweep, working)))
     sign = 1 if working.sense == "ccw" else -1
     return sign * round(turned / (2.0 * math.pi))
+
+
+def _turning_steps(sweep: Motion, working: Working) -> np.ndarray:
+    """The angle (rad) the working link turns through at each step of ``sweep``, within ±π: a half-degree step of
+    the crank turns it through less than half a turn, away from a toggle."""
+    angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
+    return np.angle(np.exp(1j * np.diff(angle)))
 
 
 def _half_turned(mechanism: Mechanism, sweep: Motion, working: Working) -> str:
     """Why a turning link never reverses, where its angle flips over by half a turn between two neighbouring
     steps of the sweep: it passes a singular position each cycle, and its motion there has no extreme to find."""
-    if working.link in mechanism.translating:
-        return ""
-    angle = np.broadcast_to(np.asarray(sweep.links[working.link].angle, dtype=float), sweep.driver.shape)
     # A half-degree step turns a link through far less than a quarter turn, away from a singular position.
-    if not np.any(np.abs(np.angle(np.exp(1j * np.diff(angle)))) > 0.75 * math.pi):
+    if working.link in mechanism.translating or not np.any(np.abs(_turning_steps(sweep, working)) > 0.75 * math.pi):
         return ""
     return (": its angle flips over by half a turn once a cycle, at a singular position where nothing fixes its "
             "direction (the block of a slotted lever passing over the lever's pivot, where the crank is as long "
             "as the distance between the pivots); make those lengths differ")
+
 
 def _refuse_needing_extremes(mechanism: Mechanism) -> None:
     """Refuse what needs the extremes of a working link that turns round, naming the key that asks for them: a
