@@ -527,53 +527,37 @@ class MachineDynamics:
             return f"{crank}°"
         return text["angle_and_turned"].format(angle=crank, turned=turned, number=self.first_position)
 
-    def starting_brake(self) -> float | None:
-        """The brake's torque where the brake is on as the run starts, holding the machine at rest with it (a
-        damping alone takes nothing at rest); None otherwise."""
-        return None if self.motion is None else self.brake_holding(float(self.motion.t[0]))
-
-    def stopping_brake(self) -> float | None:
-        """The brake's torque where the machine, having turned, stalls with the brake on: the brake brought it to
-        rest against its motor, which then cannot turn it (a damping alone takes nothing at rest); None otherwise."""
-        motion = self.motion
-        if motion is None or motion.stalled_at is None or not motion.turned or motion.stalled_slipping:
-            return None
-        return self.brake_holding(motion.stalled_at)
-
-    def brake_holding(self, time: float) -> float | None:
-        """The brake's torque where it is on at ``time`` with a torque of its own; None otherwise."""
-        brake = self.spec.motion.brake if self.spec.motion is not None else None
-        if brake is None or brake.torque == 0 or brake.at > time:
-            return None
-        return brake.torque
-
     def stall_warning(self) -> str | None:
         """One line for the command line when the motor cannot keep the machine turning."""
+        from .machine_motion import Stall
+
         motion = self.motion
         if motion is None or motion.stalled_at is None:
             return None
         where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
         # Where it stands at the end of the run: where it never started, where it stood from the start.
         resisting = self.machine.mr(float(motion.phi[-1]), 0.0)
-        if not motion.turned:
+        stall = motion.stall
+        if stall in (Stall.NEVER_STARTS, Stall.NEVER_STARTS_BRAKED):
             unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
                        f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there")
-            held = self.starting_brake()
-            if held is None:
+            if stall is Stall.NEVER_STARTS:
                 return (f"{unmoved}, {resisting:.4g} N·m (a stronger motor, a larger gear ratio, or a start from "
                         "another angle)")
-            return (f"{unmoved} and the brake applied at t = {self.spec.motion.brake.at:g} s, {resisting:.4g} + "
+            held = motion.brake.torque
+            return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting:.4g} + "
                     f"{held:g} = {resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the "
                     "machine from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
-        if motion.stalled_slipping:
+        if stall is Stall.CLUTCH:
             return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
                     f"slipping at its {self.spec.motion.clutch.torque:g} N·m, cannot carry it past the resistance "
                     f"there, {resisting:.4g} N·m (a clutch of more torque)")
-        if (held := self.stopping_brake()) is not None:
-            return (f"dynamics: the brake applied at t = {self.spec.motion.brake.at:g} s brings the machine to rest "
+        if stall is Stall.BRAKE:
+            return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
                     f"at t = {motion.stalled_at:.4g} s, φ = {where}, and the motor stalls: it cannot turn the machine "
-                    f"against the brake's {held:g} N·m and the resistance there, {resisting:.4g} N·m (a smaller "
-                    "dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off to stop it)")
+                    f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting:.4g} N·m (a "
+                    "smaller dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off to stop "
+                    "it)")
         return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
@@ -713,12 +697,10 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
         estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
-        clutch, brake = scene.dynamics.motion.clutch, scene.dynamics.motion.brake
-        holding = dynamics.starting_brake() is not None or dynamics.stopping_brake() is not None
+        clutch = scene.dynamics.motion.clutch
         found["motion.svg"] = motion_figure(dynamics.motion, _dynamics_words(scene, analysis), scene.title, estimate,
                                             dynamics.resisting, stall_angle_deg=dynamics.rest_angle_deg(),
-                                            clutch_torque=clutch.torque if clutch is not None else None,
-                                            brake_at=brake.at if holding else None)
+                                            clutch_torque=clutch.torque if clutch is not None else None)
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 

@@ -76,20 +76,31 @@ def test_a_brake_that_stops_the_running_machine_against_its_motor_is_named_for_t
 
 
 def test_the_motion_plot_names_the_brake_that_holds_the_machine_where_it_stands():
+    """HELD's machine run from Python: the brake at 0.5 s brings it to rest at 0.5 + 12.5/15 s (as above), and on
+    from the start it holds the machine where it stands (150 N·m against 100 + 80).  A brake of damping alone takes
+    nothing at rest: the stall is the motor's, and the title names no brake."""
     from graphplan.locale import strings
+    from graphplan.machine_motion import Brake, ConstantTorque, Machine, Stall, simulate
     from graphplan.report.motion_plots import _Stall, _why_not_steady
 
-    class Stalled:
-        stalled_at, stalled_slipping = 1.333, False
-
-    for turned, key in ((True, "motion_stalled_braked"), (False, "motion_never_starts_braked")):
-        Stalled.turned = turned
+    machine, motor = Machine(2.0, resisting=100.0), ConstantTorque(150.0)
+    for brake, stall, key in ((Brake(torque=80.0, at=0.5), Stall.BRAKE, "motion_stalled_braked"),
+                              (Brake(torque=80.0), Stall.NEVER_STARTS_BRAKED, "motion_never_starts_braked")):
+        motion = simulate(machine, motor, brake=brake, duration=2.0, rtol=1e-10)
+        assert motion.stall is stall and motion.stall_brake is brake
         for locale in ("en", "ru", "zh"):
             text = strings(locale)
-            said = _why_not_steady(Stalled(), text, _Stall(170.0, None, 0.5))
-            assert said == text[key].format(time=text["decimal_mark"].join(["1", "333"]),
-                                            angle="170", at=text["decimal_mark"].join(["0", "5"]))
-            assert said != _why_not_steady(Stalled(), text, _Stall(170.0, None))
+            time = f"{motion.stalled_at:.4g}".replace(".", text["decimal_mark"])
+            assert time == ("0" if brake.at == 0 else text["decimal_mark"].join(["1", "333"]))
+            said = _why_not_steady(motion, text, _Stall(170.0, None))
+            at = f"{brake.at:g}".replace(".", text["decimal_mark"])
+            assert said == text[key].format(time=time, angle="170", at=at)
+    damped = simulate(Machine(2.0, resisting=lambda phi, omega: 100.0 + 200.0 * (phi > 1.0)), motor,
+                      brake=Brake(damping=1.0), rtol=1e-10)
+    assert damped.stall is Stall.MOTOR and damped.stall_brake is None
+    text = strings("en")
+    said = _why_not_steady(damped, text, _Stall(57.3, None))
+    assert said == text["motion_stalled"].format(time=f"{damped.stalled_at:.4g}", angle="57.3")
 
 
 def test_a_brake_switched_on_before_the_run_is_refused_naming_the_key():

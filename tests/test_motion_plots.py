@@ -249,3 +249,26 @@ def test_a_stall_through_a_slipping_clutch_is_blamed_on_the_clutch_in_a_title_th
         assert page.x0 <= extent.x0 and extent.x1 <= page.x1
     finally:
         pyplot.close(figure)
+
+
+def test_a_clutch_slipping_with_the_shaft_never_turned_is_blamed_in_the_warning_and_the_note_as_in_the_plot(
+        tmp_path, capsys):
+    """A 150 N·m motor behind a 30 N·m clutch against a constant 50 N·m: the clutch slips from the start and the
+    shaft never turns.  The plot's title blamed the clutch; the warning and the note said the motor's 150 N·m did
+    not overcome 50 N·m and advised a stronger motor."""
+    clutch, resisting, motor = 30.0, 50.0, 150.0
+    scene = tmp_path / "held.toml"
+    scene.write_text('[scene]\ntitle = "held by its clutch"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+                     f"resisting_torque = [[0, {resisting}], [360, {resisting}]]\n"
+                     f'motor = {{ kind = "constant", torque = {motor}, rotor_inertia = 1.0 }}\n'
+                     f"clutch = {{ torque = {clutch} }}\nduration = 2.0\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    told = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("warning:"))
+    assert f"the clutch, slipping at its {clutch:g} N·m, cannot carry it past the resistance there, {resisting:g} N·m" \
+        in told
+    assert "does not start" not in told and "stronger motor" not in told
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    text = strings("en")
+    assert text["note_dyn_stalled_clutch"].format(time="0", angle="0°", torque=f"{clutch:g}",
+                                                  resisting=f"{resisting:g}") in note
+    assert text["note_dyn_never_starts"].split(":")[0] not in note

@@ -60,6 +60,7 @@ from .simulation import (
     SMALLEST_RTOL,
     ClutchEngagement,
     MachineMotion,
+    Stall,
     engage_clutch,
     simulate,
 )
@@ -68,7 +69,7 @@ from .spec import MOST_TURNS, MotionSpec, read_motion
 __all__ = [
     "DEFAULT_RTOL", "METHODS", "MOST_CYCLES", "MOST_EVALUATIONS", "MOST_TURNS", "MOTOR_KINDS", "REST", "RPM", "SMALLEST_RTOL",
     "STIFFNESS_THRESHOLD", "TWO_PI", "Brake", "Clutch", "ClutchEngagement", "ConstantTorque", "Cycle", "KlossMotor",
-    "LinearMotor", "Machine", "MachineMotion", "MotionSpec", "Motor", "PiecewiseMoment", "Start", "SteadyState",
-    "choose_method", "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline", "read_motion",
+    "LinearMotor", "Machine", "MachineMotion", "MotionSpec", "Motor", "PiecewiseMoment", "Stall", "Start",
+    "SteadyState", "choose_method", "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline", "read_motion",
     "running_speed", "simulate",
 ]

@@ -4,6 +4,7 @@ joined by a clutch (:func:`engage_clutch`)."""
 from __future__ import annotations
 
 import dataclasses
+import enum
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -30,6 +31,17 @@ DEFAULT_RTOL = 1e-8
 MOST_CYCLES = 2000
 
 
+class Stall(enum.Enum):
+    """What fell short where a run stalled with the motor on; each value ends the names of the locale's sentences
+    that tell it (``motion_stalled_braked``, ``note_dyn_stalled_braked``)."""
+
+    MOTOR = "stalled"  # having turned the machine, the motor cannot carry it past the resistance
+    CLUTCH = "stalled_clutch"  # the clutch, slipping at its torque, cannot, whether the shaft turned or not
+    BRAKE = "stalled_braked"  # the brake, applied as the motor drove it, brought it to rest against the motor
+    NEVER_STARTS = "never_starts"  # the motor cannot move it from where it stands
+    NEVER_STARTS_BRAKED = "never_starts_braked"  # nor against the brake on from the start
+
+
 @dataclass(frozen=True, eq=False)
 class MachineMotion:
     """The integrated motion.
@@ -42,7 +54,8 @@ class MachineMotion:
     it stays locked through it; None without a clutch or a steady state).  ``stopped_at`` is when the
     machine came to rest for good, and ``stalled_at`` the same time when the motor was still on: it
     could not carry the machine past the resistance there (``phi[-1]``), and the run ends at it (where the
-    clutch still slips then, its capacity fell short, :attr:`stalled_slipping`).
+    clutch still slips then, its capacity fell short, :attr:`stalled_slipping`).  ``brake`` is the run's brake
+    (None without one).
     """
 
     t: np.ndarray
@@ -65,6 +78,7 @@ class MachineMotion:
     nlu: int
     notes: tuple[str, ...]
     _dense: Callable[[np.ndarray], np.ndarray] = field(repr=False)
+    brake: Brake | None = None
 
     @property
     def stiff(self) -> bool:
@@ -95,6 +109,29 @@ class MachineMotion:
         resistance."""
         return self.stalled_at is not None and self.driving_omega is not None and \
             float(self.driving_omega[-1]) > float(self.omega[-1])
+
+    @property
+    def stall(self) -> Stall | None:
+        """What fell short where the machine stalled (None where it did not): the clutch where it still slips,
+        the shaft at rest or not; else, where the shaft never turned, the motor, against the brake too where that
+        was on from the start; else the brake where it was on by the time the machine came to rest, or the motor."""
+        if self.stalled_at is None:
+            return None
+        if self.stalled_slipping:
+            return Stall.CLUTCH
+        if not self.turned:
+            return Stall.NEVER_STARTS_BRAKED if self._brake_holds(float(self.t[0])) else Stall.NEVER_STARTS
+        return Stall.BRAKE if self._brake_holds(self.stalled_at) else Stall.MOTOR
+
+    @property
+    def stall_brake(self) -> Brake | None:
+        """The brake that holds the machine where it stalled, the brake's :attr:`stall`; None where another cause
+        did."""
+        return self.brake if self.stall in (Stall.BRAKE, Stall.NEVER_STARTS_BRAKED) else None
+
+    def _brake_holds(self, time: float) -> bool:
+        """Whether the brake is on at ``time`` with a torque of its own: a damping alone takes nothing at rest."""
+        return self.brake is not None and self.brake.torque != 0 and self.brake.at <= time
 
     def state_at(self, times: ArrayLike) -> np.ndarray:
         """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
@@ -264,7 +301,7 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
                          stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
                          stalled_at=stalled_at,
                          slip_energy=slip_energy, steady_slip_energy=steady_slip_energy, nfev=integrator.nfev,
-                         njev=integrator.njev, nlu=integrator.nlu, notes=tuple(notes), _dense=dense)
+                         njev=integrator.njev, nlu=integrator.nlu, notes=tuple(notes), _dense=dense, brake=brake)
 
 
 def _after(cycles: tuple[Cycle, ...], moment: float) -> tuple[Cycle, ...]:

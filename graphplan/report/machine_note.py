@@ -348,24 +348,27 @@ def _clutch(note: Writer, dynamics) -> None:
 
 
 def _stall(note: Writer, dynamics) -> None:
-    """Where the machine stalls and what falls short there: the motor, or a clutch slipping at its capacity; a
-    machine the motor cannot move from where it stands does not start at all."""
+    """Where the machine stalls and what falls short there: the motor, a clutch slipping at its capacity, or a brake
+    applied as the motor drove it; a machine the motor cannot move from where it stands does not start at all."""
+    from ..machine_motion import Stall
+
     motion = dynamics.motion
     angle = dynamics.stall_place(note.text, lambda value: note.n(value, 4))
     mr = dynamics.machine.mr(float(motion.phi[-1]), 0.0)
     resisting = note.n(mr)
-    held = dynamics.starting_brake()
-    if not motion.turned and held is not None:
+    stall = motion.stall
+    if stall is Stall.NEVER_STARTS_BRAKED:
+        held = motion.brake.torque
         note.para(note.t("note_dyn_never_starts_braked", angle=angle, torque=note.n(float(motion.motor_torque[0])),
-                         resisting=resisting, brake=note.n(held), at=note.n(dynamics.spec.motion.brake.at, 4),
+                         resisting=resisting, brake=note.n(held), at=note.n(motion.brake.at, 4),
                          total=note.n(mr + held)))
-    elif not motion.turned:
+    elif stall is Stall.NEVER_STARTS:
         note.para(note.t("note_dyn_never_starts", angle=angle, torque=note.n(float(motion.motor_torque[0])),
                          resisting=resisting))
-    elif (stopping := dynamics.stopping_brake()) is not None:
+    elif stall is Stall.BRAKE:
         note.para(note.t("note_dyn_stalled_braked", time=note.n(motion.stalled_at, 4), angle=angle,
-                         at=note.n(dynamics.spec.motion.brake.at, 4), brake=note.n(stopping), resisting=resisting))
-    elif motion.stalled_slipping:
+                         at=note.n(motion.brake.at, 4), brake=note.n(motion.brake.torque), resisting=resisting))
+    elif stall is Stall.CLUTCH:
         note.para(note.t("note_dyn_stalled_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
                          torque=note.n(dynamics.spec.motion.clutch.torque), resisting=resisting))
     else:

@@ -36,19 +36,19 @@ _MM_PER_POINT = 25.4 / 72.0
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                   flywheel: tuple[np.ndarray, np.ndarray] | None = None,
                   resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
-                  clutch_torque: float | None = None, brake_at: float | None = None) -> str:
+                  clutch_torque: float | None = None) -> str:
     """The SVG text of :func:`motion_plot`."""
     import matplotlib
 
     with matplotlib.rc_context(settings()):
         return svg_text(motion_plot(motion, text, title, flywheel, resisting, stall_angle_deg=stall_angle_deg,
-                                    clutch_torque=clutch_torque, brake_at=brake_at))
+                                    clutch_torque=clutch_torque))
 
 
 def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 flywheel: tuple[np.ndarray, np.ndarray] | None = None,
                 resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
-                clutch_torque: float | None = None, brake_at: float | None = None):
+                clutch_torque: float | None = None):
     """The motion's matplotlib figure: the run above, the steady turn below (or only why the machine
     stands still, where it never moves).
 
@@ -58,11 +58,11 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     stalls, the lower plot sets it against the motor's torque along the run, over the angle turned from
     the start, to show where the motor falls short; where the clutch slipped as it stalled, against the
     clutch's ``clutch_torque`` too.  ``stall_angle_deg`` is where it stalled as the scene counts the crank's
-    angle (the motion's own φ within its turn where not given).  ``brake_at`` is when the brake that holds the
-    machine where it stands was applied, None where no brake's torque holds it: the title then names the brake.
+    angle (the motion's own φ within its turn where not given).  Where the run's brake holds the machine where it
+    stands (:attr:`~graphplan.machine_motion.MachineMotion.stall`), the title names the brake.
     """
     stall = _Stall(stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg,
-                   clutch_torque if motion.stalled_slipping else None, brake_at)
+                   clutch_torque if motion.stalled_slipping else None)
     import matplotlib
     from matplotlib.figure import Figure
 
@@ -104,12 +104,11 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
 
 @dataclass(frozen=True)
 class _Stall:
-    """Where a run stalled as the scene counts the crank's angle (°), the clutch's capacity (N·m) where it
-    slipped as it stalled, the clutch then the limit, not the motor, and when the brake holding it was applied (s)."""
+    """Where a run stalled as the scene counts the crank's angle (°), and the clutch's capacity (N·m) where it
+    slipped as it stalled, the clutch then the limit, not the motor."""
 
     angle_deg: float | None
     clutch_torque: float | None
-    brake_at: float | None = None
 
 
 def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stall) -> str:
@@ -117,11 +116,10 @@ def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stal
     if motion.stalled_at is None:
         return text["motion_no_steady"]
     mark = text["decimal_mark"]
-    braked = "_braked" if stall.brake_at is not None else ""
-    key = "motion_stalled_clutch" if motion.stalled_slipping else \
-        f"motion_never_starts{braked}" if not motion.turned else f"motion_stalled{braked}"
-    return text[key].format(time=number(motion.stalled_at, 4, mark), angle=number(stall.angle_deg, 4, mark),
-                            at=number(stall.brake_at, 4, mark) if stall.brake_at is not None else "")
+    brake = motion.stall_brake
+    return text[f"motion_{motion.stall.value}"].format(time=number(motion.stalled_at, 4, mark),
+                                                       angle=number(stall.angle_deg, 4, mark),
+                                                       at=number(brake.at, 4, mark) if brake is not None else "")
 
 
 def _broken(words: str, points: float) -> str:
