@@ -555,9 +555,9 @@ class MachineDynamics:
         if stall is Stall.BRAKE:
             return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
                     f"at t = {motion.stalled_at:.4g} s, φ = {where}, and the motor stalls: it cannot turn the machine "
-                    f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting:.4g} N·m (a "
-                    "smaller dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off to stop "
-                    "it)")
+                    f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting:.4g} N·m "
+                    "(a smaller dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off "
+                    "to stop it)")
         return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")

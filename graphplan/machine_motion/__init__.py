@@ -70,6 +70,6 @@ __all__ = [
     "DEFAULT_RTOL", "METHODS", "MOST_CYCLES", "MOST_EVALUATIONS", "MOST_TURNS", "MOTOR_KINDS", "REST", "RPM", "SMALLEST_RTOL",
     "STIFFNESS_THRESHOLD", "TWO_PI", "Brake", "Clutch", "ClutchEngagement", "ConstantTorque", "Cycle", "KlossMotor",
     "LinearMotor", "Machine", "MachineMotion", "MotionSpec", "Motor", "PiecewiseMoment", "Stall", "Start",
-    "SteadyState", "choose_method", "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline", "read_motion",
-    "running_speed", "simulate",
+    "SteadyState", "choose_method", "engage_clutch", "find_cycles", "find_steady_state", "is_stiff", "periodic_spline",
+    "read_motion", "running_speed", "simulate",
 ]
