@@ -272,3 +272,117 @@ def test_a_clutch_slipping_with_the_shaft_never_turned_is_blamed_in_the_warning_
     assert text["note_dyn_stalled_clutch"].format(time="0", angle="0°", torque=f"{clutch:g}",
                                                   resisting=f"{resisting:g}") in note
     assert text["note_dyn_never_starts"].split(":")[0] not in note
+
+
+# A machine of 2 kg·m² driven by a constant 150 N·m against 100 N·m up to 200°, 145 falling to 110 N·m from there to
+# 300°, 100 N·m after: it runs up at (150 − 100)/2 = 25 rad/s² and is still short of 200° at 0.5 s, where a brake of
+# 80 N·m comes on; 150 N·m cannot turn it against 100 + 80 or more anywhere, and it stalls.
+BRAKED_TABLE = [(0.0, 100.0), (200.0, 100.0), (200.0, 145.0), (300.0, 110.0), (300.0, 100.0), (360.0, 100.0)]
+BRAKE_TORQUE, BRAKE_AT, MOTOR_TORQUE, BRAKED_INERTIA = 80.0, 0.5, 150.0, 2.0
+
+
+def braked_dynamics(brake: str, motor_torque: float = MOTOR_TORQUE):
+    import tomllib
+
+    from graphplan.deliverables import MachineDynamics
+    from graphplan.scene import load
+
+    table = ", ".join(f"[{angle:g}, {moment:g}]" for angle, moment in BRAKED_TABLE)
+    return MachineDynamics(load(tomllib.loads(
+        f'[scene]\ntitle = "braked"\n[dynamics]\ninertia = {BRAKED_INERTIA}\nrpm = 90\nresisting_torque = [{table}]\n'
+        f'motor = {{ kind = "constant", torque = {motor_torque} }}\nduration = 3.0\n{brake}')))
+
+
+def scene_mr(turned_deg: np.ndarray) -> np.ndarray:
+    """Mr as the scene's table gives it, piece by piece between its jumps (the run starts at 0°)."""
+    angles, moments = np.array(BRAKED_TABLE).T
+    within = np.asarray(turned_deg) % 360.0
+    falling = np.interp(within, angles[2:4], moments[2:4])
+    return np.where(within < 200.0, 100.0, np.where(within < 300.0, falling, 100.0))
+
+
+def brake_line(axes, text):
+    """The lower plot's line of Mr + Mt, found by its label's words before the numbers; None where there is none."""
+    words = text["motion_resisting_braked"].split("{")[0]
+    found = [line for line in axes.get_lines() if line.get_label().startswith(words)]
+    assert len(found) <= 1
+    return found[0] if found else None
+
+
+@pytest.mark.parametrize(("locale", "brake_word"), [("en", "brake"), ("ru", "тормоз"), ("zh", "制动器")])
+def test_a_brake_that_brings_the_machine_to_rest_is_drawn_on_top_of_mr_from_where_it_came_on(locale, brake_word):
+    """The lower plot drew the motor's 150 N·m above Mr's 100 N·m, which read as a machine that should not stall.
+    From where the brake came on, the shaft having turned ½·25·0.5² = 3.125 rad = 179.05° at constant acceleration,
+    the resistance the motor falls short of is Mr(φ) + 80 N·m: a step up from Mr there, and Mr + 80 on after it."""
+    from matplotlib import pyplot
+
+    dynamics = braked_dynamics(f"brake = {{ torque = {BRAKE_TORQUE}, at = {BRAKE_AT} }}\n")
+    motion = dynamics.motion
+    text = strings(locale)
+    figure = motion_plot(motion, text, "braked", resisting=dynamics.resisting,
+                         stall_angle_deg=dynamics.rest_angle_deg())
+    try:
+        lower = figure.axes[1]
+        line = brake_line(lower, text)
+        mark = text["decimal_mark"]
+        assert line.get_label() == text["motion_resisting_braked"].format(torque="80", at=f"0{mark}5")
+        assert brake_word in line.get_label() and line.get_label() in legend_texts(lower)
+        along, drawn = (np.asarray(values, dtype=float) for values in line.get_data())
+        acceleration = (MOTOR_TORQUE - 100.0) / BRAKED_INERTIA
+        on = math.degrees(0.5 * acceleration * BRAKE_AT ** 2)
+        assert on < 200.0  # still where Mr is 100 N·m
+        # Before the brake's angle nothing but Mr; at it, the step from Mr up to Mr + Mt.
+        assert along.min() == pytest.approx(on, abs=1e-6) and along[0] == along[1]
+        assert drawn[0] == pytest.approx(100.0) and drawn[1] == pytest.approx(100.0 + BRAKE_TORQUE)
+        # After it, Mr(φ) + Mt over the rest of the plot, the jumps themselves left out (drawn at either side).
+        after = along[1:]
+        clear = np.all(np.abs(after[:, None] % 360.0 - np.array([200.0, 300.0])) > 1e-6, axis=1)
+        assert drawn[1:][clear] == pytest.approx(scene_mr(after[clear]) + BRAKE_TORQUE)
+        assert after[-1] == 720.0 and np.any((after % 360.0 > 200.0) & (after % 360.0 < 300.0))
+        # Mr is still drawn alone over the whole plot, and the motor's torque falls short of the brake's line only.
+        mr_along, mr = (np.asarray(values, dtype=float) for values in lower.get_lines()[0].get_data())
+        assert lower.get_lines()[0].get_label() == text["motion_resisting"] and mr_along[0] == 0.0
+        clear = np.all(np.abs(mr_along[:, None] % 360.0 - np.array([200.0, 300.0])) > 1e-6, axis=1)
+        assert mr[clear] == pytest.approx(scene_mr(mr_along[clear]))
+        assert np.all(motion.motor_torque > scene_mr(np.degrees(motion.phi)))
+        assert MOTOR_TORQUE < float(np.min(drawn[1:]))
+    finally:
+        pyplot.close(figure)
+
+
+def test_a_brake_on_from_the_start_that_holds_the_machine_makes_the_whole_curve_mr_and_the_brake():
+    """Applied at t = 0, the brake holds the machine where it stands (150 N·m against 100 + 80): the resistance is
+    Mr + Mt from the start, no step in it."""
+    from matplotlib import pyplot
+
+    dynamics = braked_dynamics(f"brake = {{ torque = {BRAKE_TORQUE} }}\n")
+    assert not dynamics.motion.turned
+    text = strings("en")
+    figure = motion_plot(dynamics.motion, text, "braked", resisting=dynamics.resisting,
+                         stall_angle_deg=dynamics.rest_angle_deg())
+    try:
+        (only,) = figure.axes
+        along, drawn = (np.asarray(values, dtype=float) for values in brake_line(only, text).get_data())
+        assert along[0] == 0.0 and along[-1] == 360.0 and np.all(np.diff(along) > 0)
+        clear = np.all(np.abs(along[:, None] - np.array([200.0, 300.0])) > 1e-6, axis=1)
+        assert drawn[clear] == pytest.approx(scene_mr(along[clear]) + BRAKE_TORQUE)
+    finally:
+        pyplot.close(figure)
+
+
+@pytest.mark.parametrize("brake", ["", "brake = { damping = 1.0 }\n"])
+def test_a_machine_no_brake_holds_draws_no_brake_curve(brake):
+    """A motor of 90 N·m against 100 N·m does not start, with no brake or one of damping alone, which takes nothing
+    at rest: the plot sets the motor against Mr alone."""
+    from matplotlib import pyplot
+
+    dynamics = braked_dynamics(brake, motor_torque=90.0)
+    text = strings("en")
+    motion = dynamics.motion
+    assert motion.stalled_at == 0.0 and motion.stall_brake is None
+    figure = motion_plot(motion, text, "braked", resisting=dynamics.resisting)
+    try:
+        lower = figure.axes[-1]
+        assert text["motion_resisting"] in legend_texts(lower) and brake_line(lower, text) is None
+    finally:
+        pyplot.close(figure)

@@ -4,7 +4,8 @@ The upper plot is the driving shaft's speed over the whole run (and the clutch's
 when there is a clutch), with the events of the run (motor off, brake on, clutch locked, ...)
 and the band of the steady state; the lower plot is the speed over the last steady turn against
 the crank angle, beside the flywheel's estimate from the energy–mass diagram; where the machine
-stalls, the moments on the shaft over the angle it turned, the motor's falling short of Mr(φ).  Every word comes
+stalls, the moments on the shaft over the angle it turned, the motor's falling short of Mr(φ), or of Mr(φ) + Mt from
+where a brake that brought it to rest, or held it from the start, was applied.  Every word comes
 from the locale (``motion_`` keys).  matplotlib is imported only inside :func:`motion_figure`.
 """
 
@@ -27,7 +28,7 @@ from .plot_style import settings, svg_text, with_decimal_mark
 # smooth fluctuation at a few hundred turns.
 _RUN_SAMPLES = 6000
 _TURN_SAMPLES = 721
-_SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT = "#1f4e79", "#a83a1f", "#1f7a3a", "#555555"
+_SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT, _BRAKE = "#1f4e79", "#a83a1f", "#1f7a3a", "#555555", "#6a2c91"
 # The width a plot's title and words may take (mm): its axes' on the 7.5-inch figure, less a margin.
 _WORDS_MM = 150.0
 _MM_PER_POINT = 25.4 / 72.0
@@ -57,7 +58,8 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     ``resisting`` is Mr(φ) over one turn (the angles, rad, in the run's φ, and N·m): where the machine
     stalls, the lower plot sets it against the motor's torque along the run, over the angle turned from
     the start, to show where the motor falls short; where the clutch slipped as it stalled, against the
-    clutch's ``clutch_torque`` too.  ``stall_angle_deg`` is where it stalled as the scene counts the crank's
+    clutch's ``clutch_torque`` too; where the run's brake holds it, against Mr(φ) + Mt from where the brake was
+    applied on.  ``stall_angle_deg`` is where it stalled as the scene counts the crank's
     angle (the motion's own φ within its turn where not given).  Where the run's brake holds the machine where it
     stands (:attr:`~graphplan.machine_motion.MachineMotion.stall`), the title names the brake.
     """
@@ -255,7 +257,8 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
            stall: _Stall) -> None:
     """The moments on the driving shaft over the angle it turned before it stalled: the motor's torque
     along the run against the resisting forces' Mr(φ), the stall where the motor's falls short (where the
-    clutch slipped, the clutch's capacity, which falls short first)."""
+    clutch slipped, the clutch's capacity, which falls short first; where the brake holds the machine, Mr(φ) + Mt
+    from where it was applied on: the motor's may stand above Mr alone)."""
     mark = text["decimal_mark"]
     angles, moments = resisting
     # Counted from the start, as the axis says: the run's own φ counts from the first position.
@@ -265,8 +268,32 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     # The whole turn the stall is in, from the start: where Mr rises past the motor is plain to see.
     right = 360.0 * max(math.floor(end / 360.0) + 1.0, 1.0)
     along = np.linspace(0.0, right, max(_TURN_SAMPLES, int(right) * 2 + 1))
-    plot.plot(along, np.interp(start + np.radians(along), angles, moments, period=2.0 * np.pi), color=_DRIVING_HALF,
-              linewidth=1.0, label=text["motion_resisting"])
+
+    # Wrapped into the samples' turn by hand: np.interp's period takes 2π as 0 and sorts the samples again, which
+    # may swap the two values given at a jump's angle (Mr drawn slanting into the jump from the sample before it).
+    closed = angles[-1] >= angles[0] + 2.0 * np.pi
+    turn_angles = angles if closed else np.append(angles, angles[0] + 2.0 * np.pi)
+    turn_moments = moments if closed else np.append(moments, moments[0])
+
+    def resisting_at(turned_deg: np.ndarray) -> np.ndarray:
+        phi = angles[0] + np.mod(start + np.radians(turned_deg) - angles[0], 2.0 * np.pi)
+        return np.interp(phi, turn_angles, turn_moments)
+
+    plot.plot(along, resisting_at(along), color=_DRIVING_HALF, linewidth=1.0, label=text["motion_resisting"])
+    brake = motion.stall_brake
+    if brake is not None:
+        # The brake's torque joins Mr where it came on, a step up from Mr there; on from the start (where the machine
+        # never turned), it is there all along.
+        if brake.at <= float(motion.t[0]):
+            drawn, total = along, resisting_at(along) + brake.torque
+        else:
+            on = math.degrees(float(motion.state_at([brake.at])[0, 0]) - start)
+            after = np.concatenate(([on], along[along > on]))
+            drawn = np.concatenate(([on], after))
+            total = np.concatenate((resisting_at(after[:1]), resisting_at(after) + brake.torque))
+        plot.plot(drawn, total, color=_BRAKE, linewidth=1.3,
+                  label=text["motion_resisting_braked"].format(torque=number(brake.torque, 4, mark),
+                                                               at=number(brake.at, 4, mark)))
     plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
     held = float(motion.motor_torque[-1])
     if stall.clutch_torque is not None:
@@ -283,7 +310,9 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     plot.set_ylabel(text["motion_moment_axis"])
     plot.set_title(_broken(text["motion_stall_title"], 10), fontsize=10)
     plot.grid(True, linewidth=0.3)
-    plot.legend(fontsize=7, loc="best")
+    # Under the plot, below the axis's words: inside, no corner is clear of a resistance that swings over the turn,
+    # and a brake's curve above it.
+    plot.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1, frameon=False)
 
 
 __all__ = ["motion_figure", "motion_plot"]
