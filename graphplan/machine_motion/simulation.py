@@ -125,8 +125,8 @@ class MachineMotion:
 
     @property
     def stall_brake(self) -> Brake | None:
-        """The brake that holds the machine where it stalled, the brake's :attr:`stall`; None where another cause
-        did."""
+        """The run's brake where it is what holds the machine where it stalled (:attr:`stall` ``BRAKE`` or
+        ``NEVER_STARTS_BRAKED``); None where something else fell short, or it did not stall."""
         return self.brake if self.stall in (Stall.BRAKE, Stall.NEVER_STARTS_BRAKED) else None
 
     def _brake_holds(self, time: float) -> bool:

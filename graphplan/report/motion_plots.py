@@ -58,10 +58,10 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     ``resisting`` is Mr(φ) over one turn (the angles, rad, in the run's φ, and N·m): where the machine
     stalls, the lower plot sets it against the motor's torque along the run, over the angle turned from
     the start, to show where the motor falls short; where the clutch slipped as it stalled, against the
-    clutch's ``clutch_torque`` too; where the run's brake holds it, against Mr(φ) + Mt from where the brake was
-    applied on.  ``stall_angle_deg`` is where it stalled as the scene counts the crank's
-    angle (the motion's own φ within its turn where not given).  Where the run's brake holds the machine where it
-    stands (:attr:`~graphplan.machine_motion.MachineMotion.stall`), the title names the brake.
+    clutch's ``clutch_torque`` too; where the run's brake holds it where it stands
+    (:attr:`~graphplan.machine_motion.MachineMotion.stall_brake`), against Mr(φ) + Mt from where the brake was
+    applied on, and the title names the brake.  ``stall_angle_deg`` is where it stalled as the scene counts the
+    crank's angle (the motion's own φ within its turn where not given).
     """
     stall = _Stall(stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg,
                    clutch_torque if motion.stalled_slipping else None)
