@@ -34,11 +34,13 @@ import zipfile
 from collections.abc import Mapping
 
 from docx import Document as WordDocument
+from docx.enum.style import WD_STYLE_TYPE
 from docx.enum.table import WD_TABLE_ALIGNMENT
 from docx.enum.text import WD_ALIGN_PARAGRAPH
 from docx.oxml import OxmlElement
 from docx.oxml.ns import qn
 from docx.shared import Mm, Pt, Twips
+from lxml.etree import SubElement
 from markdown_it.tree import SyntaxTreeNode
 
 from ..render.primitives import FONT_SIZE_PER_CAP, text_width
@@ -161,11 +163,33 @@ def _set_styles(document, locale: str) -> None:
 
 
 class _Writer:
-    """Writes the blocks of the note's syntax tree into the document, in order."""
+    """Writes the blocks of the note's syntax tree into the document, in order.
+
+    Paragraphs and runs are built as python-docx's XML elements, each with the properties it has from the start:
+    setting them one by one through python-docx's objects looked up the style by its name for each paragraph and
+    searched an element's every possible child to place each property (a shaper's note took 6 s so).
+    """
 
     def __init__(self, document, pictures: Mapping[str, str]) -> None:
         self.document = document
         self.pictures = pictures
+        self.body = document.element.body
+        self.style_ids: dict[str, str | None] = {}
+        self.table_style_id = document.part.get_style_id(document.styles["Table Grid"], WD_STYLE_TYPE.TABLE)
+
+    def style_id(self, name: str) -> str | None:
+        """The id of the paragraph style ``name``, as python-docx finds it (None for the default style)."""
+        if name not in self.style_ids:
+            self.style_ids[name] = self.document.part.get_style_id(name, WD_STYLE_TYPE.PARAGRAPH)
+        return self.style_ids[name]
+
+    def paragraph(self, style: str | None = None, keep_with_next: bool | None = None, alignment=None,
+                  no_space_after: bool = False):
+        """A new paragraph at the end of the document (its ``w:p`` element)."""
+        paragraph = self.body.add_p()
+        _paragraph_properties(paragraph, None if style is None else self.style_id(style), keep_with_next,
+                              alignment, no_space_after, styled=style is not None)
+        return paragraph
 
     def blocks(self, nodes, list_style: str | None = None, depth: int = 0) -> None:
         """``nodes`` in order; inside a list (``list_style``), nested ``depth`` lists deep."""
@@ -173,21 +197,20 @@ class _Writer:
         for k, node in enumerate(nodes):
             if node.type == "heading":
                 level = int(node.tag[1:])
-                self.spans(self.document.add_heading("", level=0 if level == 1 else min(level - 1, 3)), node.children)
+                heading = "Title" if level == 1 else f"Heading {min(level - 1, 3)}"
+                self.spans(self.paragraph(heading), node.children)
             elif node.type == "paragraph" and (source := picture_source(node)) in self.pictures:
                 self.picture(self.pictures[source])
             elif node.type == "paragraph":
-                paragraph = self.document.add_paragraph(style=list_style)
-                if k and picture_source(nodes[k - 1]) in self.pictures:   # the figure's caption
-                    paragraph.alignment = WD_ALIGN_PARAGRAPH.CENTER
-                self.spans(paragraph, node.children)
                 # A table's caption stays on the page of its table, and the sentence that refers to a table or a
                 # figure with its caption or picture; a list's items stand as lines.
                 following = [node.type for node in nodes[k + 1:k + 3]]
-                paragraph.paragraph_format.keep_with_next = following[:1] == ["table"] or following == [
-                    "paragraph", "table"] or (k + 1 < len(nodes) and picture_source(nodes[k + 1]) in self.pictures)
-                if list_style is not None:
-                    paragraph.paragraph_format.space_after = Pt(0)
+                keep_with_next = following[:1] == ["table"] or following == ["paragraph", "table"] or (
+                    k + 1 < len(nodes) and picture_source(nodes[k + 1]) in self.pictures)
+                caption = bool(k) and picture_source(nodes[k - 1]) in self.pictures   # the figure's caption
+                paragraph = self.paragraph(list_style, keep_with_next, WD_ALIGN_PARAGRAPH.CENTER if caption else None,
+                                           no_space_after=list_style is not None)
+                self.spans(paragraph, node.children)
             elif node.type in ("bullet_list", "ordered_list"):
                 inside = depth + 1 if list_style is not None else 0
                 style = ("List Number" if node.type == "ordered_list" else "List Bullet") + (
@@ -197,7 +220,7 @@ class _Writer:
             elif node.type == "table":
                 self.table(node)
             elif node.type == "hr":
-                self.document.add_paragraph()
+                self.paragraph()
             else:
                 raise ValueError(f"the note has a {node.type}, which its Word document does not write")
 
@@ -217,38 +240,40 @@ class _Writer:
         rows = ([parts.header] if parts.header else []) + list(parts.rows)
         count = max(len(row) for row in rows)
         table = self.document.add_table(rows=len(rows), cols=count)
-        table.style = self.document.styles["Table Grid"]
+        table._tbl.tblStyle_val = self.table_style_id   # as table.style sets it, the style found once a note
         table.alignment = WD_TABLE_ALIGNMENT.LEFT
         table.autofit = False
         columns = [[plain(row[c]) for row in rows if c < len(row)] for c in range(count)]
         points, widths = _column_widths(columns, bool(parts.header), _TABLE_PT[count > _WIDE_TABLE:])
         size = Pt(points)
-        # The cells are taken a row at a time: python-docx finds one by its row and column (table.cell, a
+        # The cells are taken as the rows' elements: python-docx finds one by its row and column (table.cell, a
         # column's cells) by listing every cell of the table, which took a long note's tables quadratic time.
-        grid = [table_row.cells for table_row in table.rows]
+        grid = [row.tc_lst for row in table._tbl.tr_lst]
         for c, width in enumerate(widths):
             # In whole twips, rounded down: columns that fill the line never run past it by their roundings.
-            table.columns[c].width = Twips(math.floor(width / _TWIP_MM))
+            column = table.columns[c]
+            column.width = Twips(math.floor(width / _TWIP_MM))
             for cells in grid:
-                cells[c].width = table.columns[c].width
-        for r, row in enumerate(rows):
-            for c, cell in enumerate(row):
-                paragraph = grid[r][c].paragraphs[0]
-                paragraph.alignment = _ALIGN[parts.sides[c] if c < len(parts.sides) else "l"]
-                paragraph.paragraph_format.space_after = Pt(0)
-                self.spans(paragraph, cell.children, bold=r == 0 and bool(parts.header), size=size)
-        if parts.header:
-            _repeat_as_header(table.rows[0])
+                cells[c].width = column.width
         # Word keeps a table on one page when each of its rows but the last keeps with the next.
         kept = len(rows) - 1 if len(rows) <= _KEPT_TOGETHER_ROWS else int(bool(parts.header))
-        for r, (row, cells) in enumerate(zip(table.rows, grid)):
+        for r, (row, cells) in enumerate(zip(rows, grid)):
+            for c, cell in enumerate(cells):
+                paragraph = cell.p_lst[0]
+                if c >= len(row):   # a cell the row leaves out: empty, as it stands
+                    _paragraph_properties(paragraph, None, r < kept, None, no_space_after=False)
+                    continue
+                side = parts.sides[c] if c < len(parts.sides) else "l"
+                _paragraph_properties(paragraph, None, r < kept, _ALIGN[side], no_space_after=True)
+                self.spans(paragraph, row[c].children, bold=r == 0 and bool(parts.header), size=size)
+        if parts.header:
+            _repeat_as_header(table.rows[0])
+        for row in table.rows:
             _never_split(row)
-            for cell in cells:
-                for paragraph in cell.paragraphs:
-                    paragraph.paragraph_format.keep_with_next = r < kept
-        self.document.add_paragraph()   # the space under a table, as under a paragraph
+        self.paragraph()   # the space under a table, as under a paragraph
 
     def spans(self, paragraph, nodes, bold: bool = False, italic: bool = False, size=None) -> None:
+        """The inline ``nodes`` as runs at the end of ``paragraph`` (a ``w:p`` element)."""
         for node in nodes:
             if node.type == "text":
                 self.text(paragraph, node.content, bold, italic, size)
@@ -257,11 +282,15 @@ class _Writer:
             elif node.type == "em":
                 self.spans(paragraph, node.children, bold, True, size)
             elif node.type == "code_inline":
-                paragraph.add_run(node.content).font.name = "Courier New"
+                run = SubElement(paragraph, _RUN)
+                fonts = SubElement(SubElement(run, _RUN_PROPERTIES), qn("w:rFonts"))
+                fonts.set(qn("w:ascii"), "Courier New")
+                fonts.set(qn("w:hAnsi"), "Courier New")
+                _add_text(run, node.content)
             elif node.type == "softbreak":
-                paragraph.add_run(" ")
+                _add_text(SubElement(paragraph, _RUN), " ")
             elif node.type == "hardbreak":
-                paragraph.add_run().add_break()
+                SubElement(SubElement(paragraph, _RUN), qn("w:br"))
             else:   # the block's inline node, a link or an image: its text
                 self.spans(paragraph, node.children, bold, italic, size)
 
@@ -271,14 +300,53 @@ class _Writer:
         for piece in pieces(text):
             parts = ((piece, ""),) if isinstance(piece, str) else _symbol_runs(piece)
             for content, position in parts:
-                run = paragraph.add_run(content)
-                run.bold, run.italic = bold or None, italic or None
+                run = SubElement(paragraph, _RUN)
+                # Every run has its properties, empty where it is plain (as python-docx leaves them when asked for
+                # no bold and no italic); they stand in the order Word's schema gives them.
+                properties = SubElement(run, _RUN_PROPERTIES)
+                if bold:
+                    SubElement(properties, _BOLD)
+                if italic:
+                    SubElement(properties, _ITALIC)
                 if size is not None:
-                    run.font.size = size
-                if position == "sub":
-                    run.font.subscript = True
-                elif position == "super":
-                    run.font.superscript = True
+                    SubElement(properties, _SIZE).val = size
+                if position:
+                    SubElement(properties, _VERTICAL_ALIGN).val = "subscript" if position == "sub" else "superscript"
+                _add_text(run, content)
+
+
+# The elements a run is made of, by their names as lxml knows them.
+_RUN, _RUN_PROPERTIES, _TEXT, _SPACE = qn("w:r"), qn("w:rPr"), qn("w:t"), qn("xml:space")
+_BOLD, _ITALIC, _SIZE, _VERTICAL_ALIGN = qn("w:b"), qn("w:i"), qn("w:sz"), qn("w:vertAlign")
+
+
+def _paragraph_properties(paragraph, style_id: str | None, keep_with_next: bool | None, alignment,
+                          no_space_after: bool, styled: bool = False) -> None:
+    """The properties of the new paragraph ``paragraph`` (a ``w:p`` element), in the order Word's schema gives
+    them: its style (a style asked for has them even where it is the default one), whether it keeps with the next
+    paragraph (``w:val="0"`` where it is asked not to), no space after it, its alignment."""
+    if not styled and keep_with_next is None and alignment is None and not no_space_after:
+        return
+    properties = SubElement(paragraph, qn("w:pPr"))   # the first child, as the paragraph is new and empty
+    if style_id is not None:
+        SubElement(properties, qn("w:pStyle")).val = style_id
+    if keep_with_next is not None:
+        SubElement(properties, qn("w:keepNext")).val = keep_with_next
+    if no_space_after:
+        SubElement(properties, qn("w:spacing")).after = Pt(0)
+    if alignment is not None:
+        SubElement(properties, qn("w:jc")).val = alignment
+
+
+def _add_text(run, text: str) -> None:
+    """``text`` in ``run`` (a ``w:r`` element), as python-docx writes it: a tab or a line break as its element."""
+    if any(special in text for special in "\t\r\n"):
+        run.text = text
+    elif text:
+        element = SubElement(run, _TEXT)
+        element.text = text
+        if len(text.strip()) < len(text):
+            element.set(_SPACE, "preserve")
 
 
 def _column_widths(columns: list[list[str]], headed: bool, sizes: tuple[float, ...]) -> tuple[float, list[float]]:
