@@ -34,6 +34,7 @@ similarity.  The force analysis takes the whole group's moments about Σ likewis
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, replace
 
@@ -60,6 +61,12 @@ from .sliding import (
 # Samples of a turning leg's circle at the reference position: two assemblies closer than a 2048th of a
 # turn would be missed, and such a triad is at a singular position anyway.
 _SWEEP = 2048
+# The sweep's angles and the turns e^{iθ} at them, the same for every sweep: made once (a crank's reach sweeps at
+# each of its 720 angles), read-only.
+_SWEEP_ANGLES = np.linspace(0.0, 2 * math.pi, _SWEEP + 1)
+_SWEEP_ANGLES.flags.writeable = False
+_SWEEP_TURNS = np.exp(1j * _SWEEP_ANGLES)
+_SWEEP_TURNS.flags.writeable = False
 # Newton's step is trusted when it converges to this share of the group's size.
 _CONVERGED = 1e-12
 # Plain Newton steps for the positions between the walk's steps, each started within a step of its root:
@@ -313,15 +320,21 @@ class Triad(Group):
 
     def local_corners(self, turn: int) -> tuple[complex, complex, complex]:
         """B, D, F in the ternary link's own frame."""
-        return 0j, complex(self.sides[0]), self.corner_f(turn)
+        known = self._local_corners_by_turn.get(turn)
+        return known if known is not None else (0j, complex(self.sides[0]), self.corner_f(turn))
+
+    @functools.cached_property
+    def _local_corners_by_turn(self) -> dict[int, tuple[complex, complex, complex]]:
+        # Worked out once: Newton's method asks for them at every step, thousands of times along a crank's reach.
+        return {turn: (0j, complex(self.sides[0]), self.corner_f(turn)) for turn in (1, -1)}
 
     def corners(self, pose: Pose, turn: int) -> tuple[complex, complex, complex]:
         direction = complex(math.cos(pose.psi), math.sin(pose.psi))
         return tuple(pose.b + corner * direction for corner in self.local_corners(turn))  # type: ignore[return-value]
 
-    @property
+    @functools.cached_property
     def size(self) -> float:
-        """The group's size (m): the scale of its closure's residuals."""
+        """The group's size (m): the scale of its closure's residuals (worked out once: every closure asks)."""
         return sum(self.lengths) + sum(self.sides)
 
     @property
@@ -342,19 +355,23 @@ class Triad(Group):
         """
         first, second, third = self.turning_legs + self.sliding_legs + self.slotted_legs
         local = self.local_corners(turn)
-        theta = np.linspace(0.0, 2 * math.pi, _SWEEP + 1)
+        theta = _SWEEP_ANGLES
+
+        def turns(angle):
+            """e^{i·angle}: the sweep's made once."""
+            return _SWEEP_TURNS if angle is theta else np.exp(1j * angle)
 
         def around(angle, sign):
             """The first pin, on its circle at ``angle``, and the ternary link's turn e^{iψ} with the second pin at
             either meeting of its track with the circle of the side between them (NaN where they do not meet)."""
-            p = tracks[first].centre + tracks[first].radius * np.exp(1j * angle)
+            p = tracks[first].centre + tracks[first].radius * turns(angle)
             q = _at_distance(tracks[second], p, abs(local[second] - local[first]), sign)
             return p, (q - p) / (local[second] - local[first])
 
         def turned(angle, sign):
             """The ternary link turned to e^{iψ} = e^{i·angle}, and the first pin where B's two tracks by the first two
             legs meet, carried back to the first corner (NaN where they do not meet)."""
-            rotation = np.exp(1j * angle)
+            rotation = turns(angle)
             one, other = (_carried_back(tracks[n], local[n] * rotation, rotation) for n in (first, second))
             return _meet(one, other, sign) + local[first] * rotation, rotation
 
