@@ -146,9 +146,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     """
     fixed = list(obstacles)
     weights = np.array([HEAVY if shape.geom_type in ("Polygon", "MultiPolygon") else 1.0 for shape in fixed])
-    tree = STRtree(fixed) if fixed else None
+    pieces, owners = _pieces(fixed)
+    tree = STRtree(pieces) if fixed else None
     at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
-    points = shapely.points(at)
     # Each placed label's box (kept apart by a little more than touching) and leader, by its anchor's index.
     placed_boxes: dict[int, BaseGeometry] = {}
     leader_lines: dict[int, BaseGeometry] = {}
@@ -161,14 +161,17 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     def covered(shapes: np.ndarray) -> np.ndarray:
         if tree is None:
             return np.zeros(len(shapes))
-        hit, obstacle = tree.query(shapes, predicate="intersects")
+        hit, piece = tree.query(shapes, predicate="intersects")
+        # A shape covers a line once however many of its segments it covers.
+        hit, obstacle = np.divmod(np.unique(hit * len(fixed) + owners[piece]), len(fixed))
         return np.bincount(hit, weights[obstacle], minlength=len(shapes))
 
     def crossing(shapes: np.ndarray, placed: dict[int, BaseGeometry], own: int) -> np.ndarray:
-        others = [shape for index, shape in placed.items() if index != own]
-        if not others:
-            return np.zeros(len(shapes), dtype=int)
-        return shapely.intersects(shapes[:, None], np.array(others)[None, :]).sum(axis=1)
+        others = np.array([shape for index, shape in placed.items() if index != own], dtype=object)
+        # Only the pairs whose boxes meet are tested: of a few hundred labels placed, a spot is near a few.
+        mine, theirs = np.nonzero(_boxes_meet(shapely.bounds(shapes)[:, None], shapely.bounds(others)))
+        hit = shapely.intersects(shapes[mine], others[theirs])
+        return np.bincount(mine[hit], minlength=len(shapes))
 
     led_from = len(BESIDE_SHARES)
     apart_from = led_from + len(LED_SHARES)
@@ -186,13 +189,13 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         away = np.hypot(*(at - at[index]).T)
         off = np.abs(candidates - np.tile(at[index], 2))
         reach = np.hypot(off[:, [0, 2]].max(axis=1), off[:, [1, 3]].max(axis=1)).max()
-        neighbours = points[(away > 1e-9) & (away < 2 * reach + 0.8 + 1e-9)]
+        neighbours = at[(away > 1e-9) & (away < 2 * reach + 0.8 + 1e-9)]
         # Each spot's distance from its own point (column 0) and from those neighbours, in one call.
-        distance = shapely.distance(shapes[:, None], np.concatenate(([points[index]], neighbours))[None, :])
+        distance = _box_distances(candidates, np.concatenate(([at[index]], neighbours)))
         misleading = (distance[:, 1:] < distance[:, :1] + 0.8).sum(axis=1)
         beside = ring < led_from
         led = np.flatnonzero(~beside)
-        lines = _leaders(anchor.at, shapes[led])
+        lines = _leaders(anchor.at, candidates[led])
         # What the boxes and the leaders cover, in one query of the tree.
         covers = covered(np.concatenate((shapes, lines)))
         cost = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
@@ -207,7 +210,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         cost[ring >= apart_from] += SET_APART
         # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
         # it: beside the point already, it has no leader to draw.
-        cost[led[shapely.intersects(shapes[led], points[index])]] += OVERLAP
+        cost[led[_box_distances(candidates[led], at[index:index + 1])[:, 0] == 0.0]] += OVERLAP
         if anchor.under is not None:
             cost[candidates[:, 3] > anchor.under + 1e-9] += OVERLAP
         covering = covers[:len(shapes)] > 0
@@ -279,16 +282,48 @@ def _most_crowded_first(anchors: Sequence[Anchor], at: np.ndarray) -> list[int]:
     return sorted(range(len(anchors)), key=lambda index: -neighbours[index])
 
 
-def _leaders(at: tuple[float, float], shapes: np.ndarray) -> np.ndarray:
-    """The leader lines from just outside the point ``at`` to the nearest edge of each label's box.
+def _leaders(at: tuple[float, float], boxes: np.ndarray) -> np.ndarray:
+    """The leader lines from just outside the point ``at`` to the nearest edge of each label's box
+    ((xmin, ymin, xmax, ymax) rows).
 
     A box over the point itself gets a leader of no length (:func:`place_labels` takes such a spot last)."""
-    near = shapely.get_coordinates(shapely.shortest_line(Point(at), shapes)).reshape(-1, 2, 2)[:, 1]
+    near = np.clip(np.asarray(at), boxes[:, :2], boxes[:, 2:])
     along = near - np.asarray(at)
     length = np.hypot(*along.T)[:, None]
     unit = np.divide(along, length, out=np.zeros_like(along), where=length > 0)
     start = np.asarray(at) + unit * LEADER_CLEARANCE
     return shapely.linestrings(np.stack((start, near - unit * 0.3), axis=1))
+
+
+def _pieces(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
+    """The obstacles as the tree holds them, and the index of the obstacle each piece is of: a line by its segments,
+    whose boxes the tree tells apart (a curve of a diagram spans it, and every label's spot was tested against
+    all its vertices), any other shape whole."""
+    whole = np.array(shapes, dtype=object)
+    kinds = shapely.get_type_id(whole)
+    lines = np.flatnonzero((kinds == shapely.GeometryType.LINESTRING) | (kinds == shapely.GeometryType.LINEARRING))
+    ends, of_line = shapely.get_coordinates(whole[lines], return_index=True)
+    # Each vertex and the next of the same line; a segment of no length is a vertex of its neighbours.
+    segment = (of_line[:-1] == of_line[1:]) & np.any(ends[:-1] != ends[1:], axis=1)
+    owners = lines[of_line[:-1][segment]]
+    segments = shapely.linestrings(np.stack((ends[:-1][segment], ends[1:][segment]), axis=1))
+    # A line that is one point, like any other shape, stays whole.
+    kept = np.setdiff1d(np.arange(len(whole)), owners)
+    return np.concatenate((segments, whole[kept])), np.concatenate((owners, kept))
+
+
+def _boxes_meet(one: np.ndarray, other: np.ndarray) -> np.ndarray:
+    """Whether upright boxes ((xmin, ymin, xmax, ymax) in the last axis, broadcast) meet, edges included."""
+    return ((one[..., 0] <= other[..., 2]) & (other[..., 0] <= one[..., 2])
+            & (one[..., 1] <= other[..., 3]) & (other[..., 1] <= one[..., 3]))
+
+
+def _box_distances(boxes: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """The distance of each upright box ((xmin, ymin, xmax, ymax) rows) from each point: nought inside it."""
+    x, y = points[None, :, 0], points[None, :, 1]
+    dx = np.maximum(np.maximum(boxes[:, None, 0] - x, x - boxes[:, None, 2]), 0.0)
+    dy = np.maximum(np.maximum(boxes[:, None, 1] - y, y - boxes[:, None, 3]), 0.0)
+    return np.hypot(dx, dy)
 
 
 def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
