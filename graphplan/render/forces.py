@@ -31,6 +31,7 @@ what they hold on paper and computes no mechanics.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Callable, Mapping, Sequence
@@ -409,9 +410,9 @@ def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Pr
 
 
 def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive],
-                        lines: BaseGeometry) -> tuple[complex, complex, complex]:
+                        lines: Callable[[], BaseGeometry]) -> tuple[complex, complex, complex]:
     """The arrow of a load on the lever at its point ``at``: from it, or onto it where a load drawn before
-    already lies along that line from it and the other side of the point is clear of ``lines``, or else
+    already lies along that line from it and the other side of the point is clear of ``lines()``, or else
     :data:`BESIDE_MM` beside that line; with the shift that sets it beside (0 on its line).
 
     Two loads at one point on one line (F6 and Fu6 at e, a couple's forces
@@ -424,7 +425,7 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     """
     def clear(start: complex, end: complex) -> bool:
         return (_unstacked(start, end, at, arrows) == (start, end)
-                and LineString((_xy(start), _xy(end))).intersection(lines).length < 1.0)
+                and LineString((_xy(start), _xy(end))).intersection(lines()).length < 1.0)
 
     away = (at, at + vector)
     if _unstacked(*away, at, arrows) == away:
@@ -1067,9 +1068,16 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # The lever's bars and rays, and every arm (from the pole square to its force's line wherever the arrow
     # stands on it), which an arrow pushing onto its point must not lie along.
     feet = [_foot(0j, mm(image) + shift, force / abs(force)) for _, image, force, _, shift in named if force != 0]
-    lines = unary_union([LineString(item.points + item.points[:1] if item.closed else item.points)
-                         for item in frame if isinstance(item, Polyline)]
-                        + [LineString(((0.0, 0.0), _xy(foot))) for foot in feet if abs(foot) >= ZERO_MM]).buffer(0.8)
+
+    @functools.cache
+    def lines() -> BaseGeometry:
+        # Made only for a load drawn onto its point or beside, which few are: grown from the union of all the
+        # lever's lines, it took a quarter of a second a lever.
+        return unary_union([LineString(item.points + item.points[:1] if item.closed else item.points)
+                            for item in frame if isinstance(item, Polyline)]
+                           + [LineString(((0.0, 0.0), _xy(foot))) for foot in feet if abs(foot) >= ZERO_MM]
+                           ).buffer(0.8)
+
     for name, image, force, stroke, shift in named:
         if _negligible(force, [other for _, _, other, _, _ in named]):
             continue
