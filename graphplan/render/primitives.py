@@ -281,25 +281,25 @@ def bounds(layers: Sequence[Layer]) -> tuple[float, float, float, float]:
 
 def bounds_of(items: Iterable[Primitive]) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of ``items``; a unit square for none."""
-    xs: list[float] = []
-    ys: list[float] = []
+    # Each item's extent, then theirs: a sheet is measured often, and its curves have hundreds of points each.
+    extents: list[tuple[float, float, float, float]] = []
     for item in items:
         if isinstance(item, Polyline):
-            xs.extend(p[0] for p in item.points)
-            ys.extend(p[1] for p in item.points)
+            if item.points:
+                xs, ys = zip(*item.points, strict=True)
+                extents.append((min(xs), min(ys), max(xs), max(ys)))
         elif isinstance(item, Arrow):
-            xs.extend((item.start[0], item.end[0]))
-            ys.extend((item.start[1], item.end[1]))
+            extents.append((min(item.start[0], item.end[0]), min(item.start[1], item.end[1]),
+                            max(item.start[0], item.end[0]), max(item.start[1], item.end[1])))
         elif isinstance(item, Circle):
-            xs.extend((item.centre[0] - item.radius, item.centre[0] + item.radius))
-            ys.extend((item.centre[1] - item.radius, item.centre[1] + item.radius))
+            extents.append((item.centre[0] - item.radius, item.centre[1] - item.radius,
+                            item.centre[0] + item.radius, item.centre[1] + item.radius))
         else:
-            x0, y0, x1, y1 = text_extent(item)
-            xs.extend((x0, x1))
-            ys.extend((y0, y1))
-    if not xs:
+            extents.append(text_extent(item))
+    if not extents:
         return (0.0, 0.0, 1.0, 1.0)
-    return (min(xs), min(ys), max(xs), max(ys))
+    x0, y0, x1, y1 = zip(*extents, strict=True)
+    return (min(x0), min(y0), max(x1), max(y1))
 
 
 def moved(item: Primitive, dx: float, dy: float) -> Primitive:
