@@ -34,7 +34,7 @@ from __future__ import annotations
 import functools
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -223,11 +223,18 @@ def arrangements(sheet: ForceSheet, columns: Sequence[int]) -> list[Arrangement]
     return [made.arranged(made.in_columns(count)) for count in columns]
 
 
-def rows(sheet: ForceSheet) -> Rows:
-    """The drawings of the sheet in their rows under its heading, to stand as a sheet's room lets them."""
+def rows(sheet: ForceSheet, bodies: MutableMapping[tuple[int, float], Drawing] | None = None) -> Rows:
+    """The drawings of the sheet in their rows under its heading, to stand as a sheet's room lets them.
+
+    ``bodies`` keeps the groups cut free, by group and μl, for the other versions of this one sheet (its lever at
+    another scale, its lettering smaller), which draw them the same.
+    """
+    made = {} if bodies is None else bodies
     drawings: list[list[Drawing]] = []
-    for group in sheet.forces.groups:
-        drawings.append([_body(sheet, group), _polygons(sheet, group)])
+    for number, group in enumerate(sheet.forces.groups):
+        if (number, sheet.length_scale) not in made:
+            made[number, sheet.length_scale] = _body(sheet, group)
+        drawings.append([made[number, sheet.length_scale], _polygons_drawing(sheet, group)])
     if sheet.lever is not None:
         drawings.append([_lever_drawing(sheet, sheet.lever)])
     text = sheet.text
@@ -835,6 +842,16 @@ def _foot(centre: complex, through: complex, unit: complex) -> complex:
 
 
 # The force polygon of a group.
+
+# A group's polygons are drawn at its μF, whatever μl its body is drawn at: the choice of μl lays each force sheet
+# out at every μl it tries, and the polygons' lettering was placed again each time.
+_POLYGONS: OwnedMemo[Drawing] = OwnedMemo()
+
+
+def _polygons_drawing(sheet: ForceSheet, group: GroupForces) -> Drawing:
+    """The polygons of :func:`_polygons`, made once for each group and language while the group lives."""
+    return _POLYGONS.get(group, tuple(sheet.text.items()), lambda: _polygons(sheet, group))
+
 
 def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
     """The group's polygon at μF; a record closed twice gives two polygons side by side."""

@@ -366,13 +366,15 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         return holds(sheet, form, width, height)
 
     enlarged = drawn if drawn.lever_enlarged else None
+    # The groups cut free, drawn once for all the versions of the sheet tried (:func:`force_layout.rows`).
+    groups_cut_free: dict[tuple[int, float], force_layout.Drawing] = {}
 
     def cut(drawn: force_layout.ForceSheet, one: Panel,
             parts: list[Arrangement]) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
         """The parts as panels, each going on from the one before; the lever drawn larger where the sheet holds
         it so on its part without adding a part."""
         for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
-            larger_rows = force_layout.rows(larger)
+            larger_rows = force_layout.rows(larger, groups_cut_free)
             larger_parts = larger_rows.parts(fits, headless=any(_headless(part) for part in parts))
             if larger_parts is not None and len(larger_parts) == len(parts):
                 drawn, parts = larger, larger_parts
@@ -388,7 +390,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     # gives every part its heading (a part with none says whose it is by its title block alone).
     headless: tuple[force_layout.ForceSheet, Panel, list[Arrangement]] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
-        rows = force_layout.rows(drawn)
+        rows = force_layout.rows(drawn, groups_cut_free)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
         if sheet == "none":
