@@ -163,6 +163,11 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
     spaced and the captions under them read as one line; in a cell of two
     drawings the lower one's field takes the height the upper one leaves.
     """
+    return arrangements(sheet, (shape,))[0]
+
+
+def arrangements(sheet: PlanSheet, shapes: Sequence[str]) -> list[Arrangement]:
+    """The sheet of :func:`arrange` in each of ``shapes`` in turn: the same drawings, made once."""
     drawers = {
         "mechanism": lambda: _mechanism(sheet),
         "velocity": lambda: plan_layers(sheet.velocity, "velocity", sheet.velocity_pole, sheet.mechanism),
@@ -176,20 +181,25 @@ def arrange(sheet: PlanSheet, shape: str = "row") -> Arrangement:
     widths = {name: max(x1 - x0, least[name], max(_width(text) for text in caption_texts(captions[name], (0.0, 0.0))))
               for name, (x0, _, x1, _) in extents.items()}
     heights = {name: y1 - y0 for name, (_, y0, _, y1) in extents.items()}
-    # Only the drawings the sheet shows: a run asked for velocities has no acceleration plan.
-    rows = [row for row in ([cell for cell in (tuple(name for name in cell if name in panels) for cell in cells) if cell]
-                            for cells in SHAPES[shape]) if row]
-    fields = _fields(rows, widths, heights, {name: _caption_depth(captions[name]) for name in panels})
-    layers: list[Layer] = []
-    for name, drawing in panels.items():
-        x0, y0, x1, y1 = extents[name]
-        fx0, fy0, fx1, fy1 = fields[name]
-        layers.extend(moved_layers(drawing, (fx0 + fx1 - x0 - x1) / 2, (fy0 + fy1 - y0 - y1) / 2))
-    for name, (x0, y0, x1, _) in fields.items():
-        layers.append(Layer(f"{name}-caption", caption_texts(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
-    left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
-    layers.append(Layer(TITLE_LAYER, title_texts((sheet.title,), TITLE_SIZE, (left, top + 8.0))))
-    return Arrangement(layers, fields)
+    depths = {name: _caption_depth(captions[name]) for name in panels}
+
+    def arranged(shape: str) -> Arrangement:
+        # Only the drawings the sheet shows: a run asked for velocities has no acceleration plan.
+        rows = [row for row in ([cell for cell in (tuple(name for name in cell if name in panels) for cell in cells)
+                                 if cell] for cells in SHAPES[shape]) if row]
+        fields = _fields(rows, widths, heights, depths)
+        layers: list[Layer] = []
+        for name, drawing in panels.items():
+            x0, y0, x1, y1 = extents[name]
+            fx0, fy0, fx1, fy1 = fields[name]
+            layers.extend(moved_layers(drawing, (fx0 + fx1 - x0 - x1) / 2, (fy0 + fy1 - y0 - y1) / 2))
+        for name, (x0, y0, x1, _) in fields.items():
+            layers.append(Layer(f"{name}-caption", caption_texts(captions[name], ((x0 + x1) / 2, y0 - CAPTION_GAP_MM))))
+        left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
+        layers.append(Layer(TITLE_LAYER, title_texts((sheet.title,), TITLE_SIZE, (left, top + 8.0))))
+        return Arrangement(layers, fields)
+
+    return [arranged(shape) for shape in shapes]
 
 
 def _fields(rows: list[list[tuple[str, ...]]], widths: dict[str, float], heights: dict[str, float],

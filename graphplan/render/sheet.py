@@ -248,9 +248,9 @@ def kinematics_panels(analysis: Analysis) -> list[Panel]:
         panels.append(velocity_plans_panel(analysis))
     for position in analysis.plans:
         sheet = plan_sheet(analysis, position.index, position.velocity, position.acceleration)
-        row, *others = (_plans_at_no_length_scale(split(plan_layout.arrange(sheet, shape), f"plan-{position.number}",
+        row, *others = (_plans_at_no_length_scale(split(arrangement, f"plan-{position.number}",
                                                         text["plan_sheet_title"].format(number=position.number)))
-                        for shape in plan_layout.SHAPES)
+                        for arrangement in plan_layout.arrangements(sheet, tuple(plan_layout.SHAPES)))
         # In the force sheets' words: one "continued" for every drawing that goes on onto another sheet.
         panels.append(_headed(replace(row, alternatives=tuple(others)), text["force_sheet_continued"]))
     return panels
