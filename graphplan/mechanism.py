@@ -14,9 +14,10 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .errors import SceneError
+from .errors import SceneError, as_written
 from .groups import Driver, Group, Guide
 from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
+from .reader import join_path
 from .scene import PointSpec, Scene
 
 _ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -148,6 +149,7 @@ def build(scene: Scene) -> Mechanism:
         units.append(Unit(solver, placed))
     if pending:
         raise _unplaceable(pending, known_links, fixed_on, sliding_on)
+    _refuse_unused_frame_lines(scene, solvers)
     mechanism = Mechanism(
         scene=scene,
         units=tuple(units),
@@ -290,6 +292,22 @@ def _check_guide(scene: Scene, guide: Guide, known_links: set[int], fixed_on: di
             _refuse_implied_through(scene, guide, link, fixed_on)
         raise SceneError(f"{guide.where}.through", f"must be a point fixed on link {link}: {_known(sorted(fixed_on.get(link, ())))}",
                          guide.through, hint=lookalike_hint(guide.through, fixed_on.get(link, ())))
+
+
+def _refuse_unused_frame_lines(scene: Scene, solvers: list[Driver | Group]) -> None:
+    """Refuse a frame line no guide runs along: a line is read for a guide to name it, and nothing else takes it
+    (no drawing shows it), so one left over is a slip, most often a guide given inline or by another name where
+    the line was meant, which would then run where the scene did not mean it to."""
+    guides = [guide for solver in solvers for guide in solver.guides()]
+    named = {guide.line for guide in guides if guide.line is not None}
+    for name in scene.frame_lines:
+        if name in named:
+            continue
+        inline = [guide.where for guide in guides if guide.line is None and on_frame(scene, guide)]
+        also = (f"; {', '.join(inline)} {'gives its line' if len(inline) == 1 else 'give their lines'} inline"
+                if inline else "")
+        raise SceneError(join_path("frame.lines", name), f"no guide runs along this line: name it in the guide meant "
+                         f"to run on it (guide = {as_written(name, True)}), or leave it out{also}")
 
 
 def _refuse_implied_through(scene: Scene, guide: Guide, link: int, fixed_on: dict[int, set[str]]) -> None:

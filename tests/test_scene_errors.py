@@ -341,6 +341,15 @@ CASES: list[Case] = [
          "must be a finite number (got nan)"),
     Case("frame-line-unknown-key", {"frame.lines": {"L": {"through": [0.0, 0.0], "angel": 0.0}}},
          "frame.lines.L.angel", "unknown key; did you mean 'angle'?"),
+    # A line read for a guide that names none of them: the slider runs on the inline guide, not the line meant.
+    Case("frame-line-unused", {"frame.lines": {"ram": {"through": [0.0, 0.05], "angle": 0.0}}}, "frame.lines.ram",
+         "no guide runs along this line: name it in the guide meant to run on it (guide = \"ram\"), or leave it out; "
+         "groups[0].guide gives its line inline", stage="build", base="SLIDER_CRANK"),
+    Case("frame-line-unused-beside-a-named-one",
+         {"frame.lines": {"ram": {"through": [0.0, 0.0], "angle": 0.0}, "x–x": {"through": "O", "angle": 90.0}},
+          "groups.0.guide": "ram"}, "frame.lines.x–x",
+         "no guide runs along this line: name it in the guide meant to run on it (guide = \"x–x\"), or leave it out",
+         stage="build", base="SLIDER_CRANK"),
 
     # -- [driver], a crank
     Case("crank-kind-missing", {"driver.kind": DELETE}, "driver.kind", "is required but missing"),
