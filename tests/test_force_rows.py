@@ -11,7 +11,7 @@ from graphplan.render.force_rows import Drawing, Heading, Rows
 from graphplan.render.plans import CAPTION_GAP_MM, GAP_MM
 from graphplan.render.primitives import Layer, Polyline, Text, bounds
 
-HEADING = Heading("Crank-rocker: force analysis, position 3", "μl = 0.0025 m/mm", 5.0,
+HEADING = Heading("Crank-rocker: force analysis, position 3", (("μl = 0.0025 m/mm", "body-"),), 5.0,
                   "Force analysis, position 3", "Force analysis, position 3 (continued)")
 
 
@@ -103,6 +103,46 @@ def test_of_as_many_parts_the_cuts_keep_most_groups_with_their_polygons():
     parts = rows.parts(fits)
     assert parts is not None and all(fits(*size(part)) for part in parts)
     assert [list(part.fields) for part in parts] == [["body-a"], ["polygon-a", "body-b", "polygon-b"], ["lever"]]
+
+
+def scales_of(arrangement) -> list[str]:
+    return [item.text for layer in arrangement.layers if layer.name == "sheet-title" for item in layer.items
+            if isinstance(item, Text) and item.weight != "bold"]
+
+
+def test_each_part_names_the_scales_of_the_drawings_that_may_stand_under_it():
+    """The sheet of the test above with μl, μF and μV in its heading: standing whole it names all three; in parts,
+    the lever alone on the last is drawn at μV only, so its heading names μV, not the groups' μl and the
+    polygons' μF it once named.  A part's heading names the later parts' scales too: a part that goes on on the
+    sheet of the part before stands under that part's heading, without its own."""
+    lines = {"body-": "μl = 0.0025 m/mm", "polygon-": "μF = 10 N/mm", "lever": "μV = 0.02 (m/s)/mm"}
+    heading = Heading(HEADING.title, tuple((line, start) for start, line in lines.items()), HEADING.size,
+                      HEADING.part_title, HEADING.continued)
+    rows = Rows([[box("body-a", 100.0, 200.0), box("polygon-a", 150.0, 40.0)],
+                 [box("body-b", 100.0, 40.0), box("polygon-b", 150.0, 40.0)], [box("lever", 150.0, 150.0)]], heading)
+    every = ", ".join(lines.values())
+    assert scales_of(rows.arranged(rows.in_columns(1))) == [every]
+    # 220 mm wide: the line of all three scales is some 206 mm long at 5 mm, and every heading is measured with it.
+    parts = rows.parts(within(220.0, 300.0))
+    assert parts is not None
+    assert [list(part.fields) for part in parts] == [["body-a"], ["polygon-a", "body-b", "polygon-b"], ["lever"]]
+    assert scales_of(parts[-1]) == [lines["lever"]]
+    for k, part in enumerate(parts):
+        later = {name for after in parts[k:] for name in after.fields}
+        assert scales_of(part) == [", ".join(line for start, line in lines.items()
+                                             if any(name.startswith(start) for name in later))], list(part.fields)
+
+
+def test_a_last_part_whose_drawings_have_none_of_the_sheet_s_scales_is_headed_by_its_title_alone():
+    """A polygon at a μF of its own (its caption gives it) on the last part of a sheet without a lever: none of the
+    heading's scales is one it is drawn at."""
+    heading = Heading(HEADING.title, (("μl = 0.0025 m/mm", "body-"),), HEADING.size, HEADING.part_title,
+                      HEADING.continued)
+    rows = Rows([[box("body-a", 150.0, 250.0)], [box("polygon-a", 150.0, 250.0)]], heading)
+    parts = rows.parts(within(200.0, 330.0))
+    assert parts is not None and [list(part.fields) for part in parts] == [["body-a"], ["polygon-a"]]
+    assert [scales_of(part) for part in parts] == [["μl = 0.0025 m/mm"], []]
+    assert [" ".join(heading_of(part)) for part in parts] == [HEADING.part_title, HEADING.continued]
 
 
 def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_tall_for_a_heading_alone():

@@ -32,10 +32,11 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.errors import SceneError
 from graphplan.kinematic_diagrams import of_analysis
+from graphplan.locale import strings
 from graphplan.render import forces as force_layout
 from graphplan.render import plans as plan_layout
 from graphplan.render.drawings import force_sheet, with_length_scale
-from graphplan.render.force_rows import CAPTION_WIDTH_MM
+from graphplan.render.force_rows import CAPTION_WIDTH_MM, HEADING_LAYER
 from graphplan.render.formats import FORMATS, page_geometry
 from graphplan.render.numerals import scale_factor, significant
 from graphplan.render.primitives import Circle, Layer, Polyline, Text, bounds, text_extent, text_width
@@ -52,6 +53,7 @@ from graphplan.render.sheet import (
 from graphplan.render.title_block import form_of, scale_text
 from graphplan.render.wrapping import fitted
 from graphplan.run import run
+from graphplan.scales import format_scale
 
 MECHANISM_SCALE = 0.005  # m/mm, the ratchet's scene gives 0.0025
 CAPTION = plan_layout.CAPTION_SIZE
@@ -226,6 +228,48 @@ def test_a_sheet_of_force_polygons_alone_leaves_the_scale_box_empty(ratchet_a4):
     assert polygons_alone
     for sheet in polygons_alone:
         assert scale_box(sheet) == [], sheet.number
+
+
+def heading_scales(panel):
+    """The line of scales under a force sheet's (or a part's) heading, none where it stands without one."""
+    return [item.text for part in panel.layers if part.name == HEADING_LAYER for item in part.items
+            if isinstance(item, Text) and item.weight != "bold"]
+
+
+def drawings_in(panel):
+    return {part.name.removesuffix("-caption") for part in panel.layers if part.name.endswith("-caption")}
+
+
+def test_a_part_of_a_force_sheet_names_only_the_scales_its_drawings_are_drawn_at():
+    """The shaper's force sheets on A4 at one μF stand in parts, position 10's lever alone on its last, under
+    "(continued)": that heading said μl = 0.004 m/mm, μF = 50 N/mm, μV = 0.02 (m/s)/mm, though the lever is the
+    velocity plan turned, drawn at μV alone (its arrows at a μF its caption gives).  Each part's heading names
+    the scales of the drawings that may stand under it: its own and the later parts' (a part that goes on on the
+    sheet of the part before stands under that one's heading), the groups cut free μl, the polygons μF, the
+    lever μV."""
+    scene = graphplan.load("fixtures/shaper_six_bar.toml")
+    analysis = analyse(dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, sheet="A4",
+                                                                                force_scale=50.0)))
+    words = strings(analysis.scene.locale)
+    panels = force_panels(analysis, "A4")
+    levers = [panel for panel in panels if drawings_in(panel) == {"lever"} and heading_scales(panel)]
+    assert levers, [(panel.name, drawings_in(panel)) for panel in panels]
+    for panel in levers:
+        drawn_at = words["velocity_scale"].format(value=format_scale(panel.lever_scale))
+        assert heading_scales(panel) == [drawn_at], panel.name
+        # The μV the lever's caption gives: the scale it is drawn at.
+        assert drawn_at in " ".join(item.text for part in panel.layers if part.name == "lever-caption"
+                                    for item in part.items), panel.name
+    for position in analysis.plans:
+        parts = [panel for panel in panels if re.fullmatch(rf"forces-{position.number}(-\d+)?", panel.name)]
+        assert len(parts) > 1, position.number
+        for k, panel in enumerate(parts):
+            if not heading_scales(panel):  # a drawing too big to stand under a heading
+                continue
+            later = {name.split("-")[0] for part in parts[k:] for name in drawings_in(part)}
+            (line,) = heading_scales(panel)
+            assert ("μl" in line, "μF" in line, "μV" in line) == ("body" in later, "polygon" in later,
+                                                                  "lever" in later), (panel.name, line)
 
 
 def test_force_drawings_no_a4_holds_are_drawn_at_the_next_standard_scales_that_fit(drawn_smaller):

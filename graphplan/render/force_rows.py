@@ -69,13 +69,23 @@ class Heading:
     """The sheet's title and the line of its scales, lettered at ``size`` (the captions' height);
     the title one size of lettering above.
 
-    Where the sheet stands in parts, the first part is headed ``part_title``
-    (the title without the mechanism's name, which the title block gives)
-    and the others ``continued``.
+    ``scales`` are the scales the drawings are drawn at, in the order the
+    line names them, each with the start of the names of the drawings drawn
+    at it (``("μl = 0.0025 m/mm", "body-")``).  Where the sheet stands in
+    parts, the first part is headed ``part_title`` (the title without the
+    mechanism's name, which the title block gives) and the others
+    ``continued``; each part's heading names the scales of the drawings that
+    may stand under it, its own and the later parts' (a part that goes on
+    on the sheet of the part before stands under that part's heading), so
+    that the last part, the lever alone, names μV, not the groups' μl.
+    Where the parts stand is found with every heading measured at all of
+    ``scales`` (:attr:`whole_scales`), as before a part named only its own:
+    a lever under a shorter heading fitted at the usual lettering in more
+    parts, and the engine's force sheets on A3 took a sheet more.
     """
 
     title: str
-    scales: str
+    scales: tuple[tuple[str, str], ...]
     size: float
     part_title: str
     continued: str
@@ -83,6 +93,16 @@ class Heading:
     def __post_init__(self) -> None:
         if HEADLESS in (self.title, self.part_title, self.continued):
             raise ValueError(f"a heading's titles are not empty: {self!r}")
+
+    def scales_of(self, names: Sequence[str]) -> str:
+        """The line of the scales the drawings ``names`` are drawn at; empty where none has one of the sheet's
+        (force polygons each at its own μF, which their captions give)."""
+        return ", ".join(line for line, start in self.scales if any(name.startswith(start) for name in names))
+
+    @property
+    def whole_scales(self) -> str:
+        """The line of all the sheet's scales, which every heading is measured with."""
+        return ", ".join(line for line, _ in self.scales)
 
     @property
     def title_size(self) -> float:
@@ -109,7 +129,7 @@ class Rows:
         # The row of the sheet each row was cut from (:meth:`_apart`), so that a cut keeps them together where
         # it can: a group cut free and its polygon on one sheet.
         self.origins = tuple(origins) or tuple(range(len(self.drawings)))
-        self._heading_sizes: dict[tuple[str, float], tuple[float, float]] = {}
+        self._heading_sizes: dict[tuple[str, str, float], tuple[float, float]] = {}
         self.beside = [_side_by_side(row, heading.size) for row in rows]
         # A row of one drawing (the lever) stands the same either way.
         self.stacked = [_stacked(row, heading.size) if len(row) > 1 else None for row in rows]
@@ -121,10 +141,12 @@ class Rows:
         block = self.stacked[index] if stacked else None
         return block if block is not None else self.beside[index]
 
-    def arranged(self, shape: Shape, title: str | None = None, one_line: bool = False) -> Arrangement:
+    def arranged(self, shape: Shape, title: str | None = None, one_line: bool = False,
+                 part: bool = False) -> Arrangement:
         """The rows as ``shape`` has them, under the heading: the sheet's title on one line, or ``title`` (a
         part's) on one line too where ``one_line``, else broken to the drawings' width where it is wider than
-        they are."""
+        they are; over the line of all the sheet's scales, or where ``part`` (a part as it is drawn, once
+        chosen), of those of the drawings that may stand under it."""
         layers: list[Layer] = []
         fields: dict[str, tuple[float, float, float, float]] = {}
         left = 0.0
@@ -140,8 +162,16 @@ class Rows:
         left, _, right, upper = bounds(layers)
         if title != HEADLESS:
             width = math.inf if title is None or one_line else right - left
-            layers.append(self._heading_layer(left, upper + HEADING_GAP_MM, title or self.heading.title, width))
+            scales = self._scales(shape) if part else self.heading.whole_scales
+            layers.append(self._heading_layer(left, upper + HEADING_GAP_MM, title or self.heading.title, scales,
+                                              width))
         return Arrangement(layers, fields)
+
+    def _scales(self, shape: Shape) -> str:
+        """The line of the scales of the drawings that may stand under the heading of ``shape``: those it holds
+        and those of the rows after it, which may go on under its heading on its sheet."""
+        first = min(index for column in shape for index, _ in column)
+        return self.heading.scales_of([drawing.name for row in self.drawings[first:] for drawing in row])
 
     def in_columns(self, count: int) -> Shape:
         """All the rows side by side, in ``count`` columns (fewer where there are fewer rows), in order, split
@@ -195,7 +225,7 @@ class Rows:
         for title in (heading.title, heading.part_title):
             whole = self._least(0, count, fits, title)
             if whole is not None:
-                return [self.arranged(whole[1], title, whole[2])]
+                return [self.arranged(whole[1], title, whole[2], part=True)]
         best_of: dict[tuple[int, int], tuple[float, Shape, bool, str] | None] = {}
 
         def best(start: int, stop: int) -> tuple[float, Shape, bool, str] | None:
@@ -219,7 +249,7 @@ class Rows:
             if least is not None:
                 # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
                 headed = next((k for k, (_, title, _) in enumerate(least[1]) if title != HEADLESS), None)
-                return [self.arranged(shape, self.heading.part_title if k == headed else title, one_line)
+                return [self.arranged(shape, self.heading.part_title if k == headed else title, one_line, part=True)
                         for k, (shape, title, one_line) in enumerate(least[1])]
         return None
 
@@ -268,22 +298,25 @@ class Rows:
         width = sum(widths) + GAP_MM * (len(shape) - 1)
         if title == HEADLESS:
             return width, max(heights)
-        heading_width, heading_height = self._heading_size(title, _ONE_LINE_MM if one_line else round(width))
+        heading_width, heading_height = self._heading_size(title, self.heading.whole_scales,
+                                                           _ONE_LINE_MM if one_line else round(width))
         return max(width, heading_width), max(heights) + HEADING_GAP_MM + heading_height
 
-    def _heading_size(self, title: str, width: float) -> tuple[float, float]:
+    def _heading_size(self, title: str, scales: str, width: float) -> tuple[float, float]:
         """The heading's (width, height) over drawings ``width`` mm wide (remembered: every way asks)."""
-        if (title, width) not in self._heading_sizes:
-            x0, y0, x1, y1 = bounds_of(self._heading_layer(0.0, 0.0, title, width).items)
-            self._heading_sizes[title, width] = (x1 - x0, y1 - y0)
-        return self._heading_sizes[title, width]
+        if (title, scales, width) not in self._heading_sizes:
+            x0, y0, x1, y1 = bounds_of(self._heading_layer(0.0, 0.0, title, scales, width).items)
+            self._heading_sizes[title, scales, width] = (x1 - x0, y1 - y0)
+        return self._heading_sizes[title, scales, width]
 
-    def _heading_layer(self, left: float, scales_line: float, title: str, width: float) -> Layer:
-        """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales."""
+    def _heading_layer(self, left: float, scales_line: float, title: str, scales: str, width: float) -> Layer:
+        """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales
+        ``scales``, where the drawings under it have any."""
         size = self.heading.title_size
         lines = fitted(title, max(width, CAPTION_WIDTH_MM), size, "bold")
+        scale_texts = (Text((left, scales_line), scales, self.heading.size, "start"),) if scales else ()
         return Layer(HEADING_LAYER, (*title_texts(lines, size, (left, scales_line + CAPTION_LINE * size)),
-                                     Text((left, scales_line), self.heading.scales, self.heading.size, "start")))
+                                     *scale_texts))
 
 
 def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:

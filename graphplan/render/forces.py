@@ -238,11 +238,12 @@ def rows(sheet: ForceSheet, bodies: MutableMapping[tuple[int, float], Drawing] |
     if sheet.lever is not None:
         drawings.append([_lever_drawing(sheet, sheet.lever)])
     text = sheet.text
-    # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.
-    scales = ", ".join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
-                        *([text["force_scale"].format(value=format_scale(sheet.forces.scale))]
-                          if sheet.forces.one_scale else []),
-                        sheet.lever_scale_line))
+    # μF heads the sheet when the polygons share it; else each polygon's caption gives its own.  μV is the lever's:
+    # a sheet without it (forces asked without the lever) names none.
+    scales = ((text["length_scale"].format(value=format_scale(sheet.length_scale)), "body-"),
+              *([(text["force_scale"].format(value=format_scale(sheet.forces.scale)), "polygon-")]
+                if sheet.forces.one_scale else []),
+              *([(sheet.lever_scale_line, "lever")] if sheet.lever is not None else []))
     part_title = sheet.part_title or sheet.title
     return Rows(drawings, Heading(sheet.title, scales, sheet.caption_size, part_title,
                                   text["force_sheet_continued"].format(title=part_title)))
