@@ -161,11 +161,15 @@ def _by_default(scene: Scene, piece: str) -> bool:
 
 
 def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-             dynamics: MachineDynamics | None = None) -> list[Drawing]:
-    """The drawings of ``pieces``, each laid out once for every format it is written in."""
+             dynamics: MachineDynamics | None = None, say: Callable[[str], None] | None = None) -> list[Drawing]:
+    """The drawings of ``pieces``, each laid out once for every format it is written in; ``say`` is told of each
+    kind of drawing as its laying out begins."""
     found: list[Drawing] = []
+    tell = say if say is not None else _silent
     if analysis is not None:
-        found += _linkage_drawings(analysis, pieces, dynamics)
+        found += _linkage_drawings(analysis, pieces, dynamics, tell)
+    elif {"dynamics", "balancing", "sheets"} & set(pieces):
+        tell("drawing the machine")
     sheets = analysis is None and "sheets" in pieces
     # Each laid out once for its own drawing and the sheets of a machine without a linkage.
     machine: list[Layer] = []
@@ -233,7 +237,12 @@ _DRAWN_AT_LENGTH_SCALE = frozenset({"positions", "velocity", "acceleration", "fo
                                     "load_diagrams", "sheets"})
 
 
-def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[Drawing]:
+def _silent(stage: str) -> None:
+    """A stage nobody is told of."""
+
+
+def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None,
+                      tell: Callable[[str], None] = _silent) -> list[Drawing]:
     from .render import drawings as draw
     from .render import plans as plan_layout
     from .render import positions as positions_layout
@@ -248,6 +257,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
 
         refuse_overflows(analysis)
     if set(pieces) & _DRAWN_AT_LENGTH_SCALE:
+        if analysis.scene.drawing.length_scale is None:
+            tell("choosing the length scale")
         analysis = draw.with_length_scale(analysis)
     else:
         # The dynamics alone are drawn at scales of their own: choosing μl would lay every sheet out at a few μl
@@ -256,35 +267,45 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     machine, larger = None, None
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):
+        tell("drawing the dynamics")
         machine, larger = _machine_layouts(_dynamics_of(analysis.scene, analysis, dynamics),
                                            _dynamics_words(analysis.scene, analysis))
     # The sheets hold the drawings that are also written on their own: each is laid out once.
+    if "sheets" in pieces:
+        tell("laying out the sheets")
     panels = _course_panels(analysis, machine, larger) if "sheets" in pieces else None
     if "positions" in pieces:
+        tell("drawing the plan of positions")
         layers = list(panels.kinematics[0].layers) if panels else positions_layout.layout(draw.positions_plan(analysis))
         found.append(Drawing("positions", layers))
     if "dynamics" in pieces:
         found += _dynamics_drawings(machine, pieces)
     if "diagrams" in pieces:
+        tell("drawing the kinematic diagrams")
         from .kinematic_diagrams import of_analysis
         from .render import diagrams as diagrams_layout
 
         found.append(Drawing("diagrams", diagrams_layout.layout(of_analysis(analysis),
                                                                 strings(analysis.scene.locale))))
     if "load_diagrams" in pieces:
+        tell("drawing the load diagrams")
         laid_out = panels.named("load-diagrams") if panels else None
         layers = list(laid_out.layers) if laid_out else _load_diagram_layers(analysis)
         found.append(Drawing("load_diagrams", layers))
     if panels is not None:
         from .render.sheet import course_sheets
 
+        tell("drawing the sheets")
         for sheet in course_sheets(analysis, panels=panels):
             found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
     if "velocity" in pieces and analysis.velocity_plans:
+        tell("drawing the velocity plans of the positions")
         laid_out = panels.named("velocity-plans") if panels else None
         layers = list(laid_out.layers) if laid_out else velocity_plans_layout.layout(draw.velocity_plans_drawing(analysis))
         found.append(Drawing("velocity_plans", layers))
     shown = tuple(name for name in ("velocity", "acceleration") if name in pieces)
+    if analysis.plans and (shown or {"forces", "lever"} & set(pieces)):
+        tell("drawing the plans and the force sheets")
     for plan in analysis.plans:
         if shown:
             laid_out = panels.named(f"plan-{plan.number}") if panels and len(shown) == 2 else None
@@ -687,11 +708,14 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
 
 def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-            dynamics: MachineDynamics | None = None) -> dict[str, str]:
-    """The plots drawn with matplotlib, which is imported only here."""
+            dynamics: MachineDynamics | None = None, say: Callable[[str], None] | None = None) -> dict[str, str]:
+    """The plots drawn with matplotlib, which is imported only here; ``say`` is told of each as it begins."""
     found: dict[str, str] = {}
+    tell = say if say is not None else _silent
     if "dynamics" in pieces and scene.dynamics.motion is not None:
         from .report.motion_plots import motion_figure
+
+        tell("plotting the motion of the machine")
 
         dynamics = _dynamics_of(scene, analysis, dynamics)
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
@@ -704,8 +728,11 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 
+        tell("plotting the balancing load")
+
         found["balancing.svg"] = balancing_diagram(analysis)
     if "vibration" in pieces:
+        tell("plotting the vibration")
         found.update(vibration_figures(scene))
     return found
 
@@ -881,12 +908,16 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
 
 def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-          formats: tuple[str, ...] = ("svg",), warn: Callable[[str], None] | None = None) -> dict[str, str | bytes]:
+          formats: tuple[str, ...] = ("svg",), warn: Callable[[str], None] | None = None,
+          say: Callable[[str], None] | None = None) -> dict[str, str | bytes]:
     """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots.
 
     ``warn`` is told, in a line, of an outcome the files record but a user should not miss (a machine
-    that stalls)."""
+    that stalls); ``say`` of each stage as it begins, so that a long run's progress line names the piece
+    it is making (a note of 20 000 positions takes a minute), not the first of them."""
     from .report.results import dumps
+
+    tell = say if say is not None else _silent
 
     # The model, the flywheel and the integrated motion serve the results, the drawing, the plot and the note,
     # which tells all the scene has whichever drawings are asked for.
@@ -895,14 +926,19 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if warn is not None:
         for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
             warn(told)
+    tell("writing the results")
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     lever_scales: dict[str, float] = {}
-    for drawing in drawings(scene, analysis, pieces, dynamics):
+    made = drawings(scene, analysis, pieces, dynamics, say=tell)
+    if made:
+        tell("writing the drawings")
+    for drawing in made:
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
         if drawing.lever_scale is not None:
             lever_scales[f"{drawing.stem}.svg"] = drawing.lever_scale
-    plots = figures(scene, analysis, pieces, dynamics)
+    plots = figures(scene, analysis, pieces, dynamics, say=tell)
     if "accuracy" in pieces and analysis is not None:
+        tell("studying the accuracy")
         plots.update(accuracy_report(analysis))
     found.update(plots)
     # A report takes its plots as PNG or PDF as it takes the drawings; DXF, a drafting format, is for the drawings.
@@ -911,14 +947,18 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
             found.update({f"{name[:-4]}.{kind}": _rendered(svg, kind) for kind in formats if kind in ("png", "pdf")})
     # The note shows the drawings and plots written beside it, each in the section it illustrates.
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
+    if {"note", "errors", "forces"} & set(pieces):
+        tell("writing the note and the tables" if "note" in pieces else "writing the tables")
     found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures), lever_scales=lever_scales))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 
+        tell("typesetting the note as pdf")
         found["note.pdf"] = note_pdf(str(found["note.html"]), pictures)
     if "docx" in formats and "note.md" in found:
         from .report.word import note_docx
 
+        tell("writing the note as docx")
         found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale, pictures,
                                        author=scene.project.author)
     return found

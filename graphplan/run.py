@@ -136,9 +136,8 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
             raise SceneError(options.figures, f"'figures' {reason}")
         asked = [*(asked if asked is not None else chosen(scene, analysis)), "figures"]
     pieces = chosen(scene, analysis, asked, options.only, sheet_key)
-    tell("drawing and writing the tables")
     outcomes: list[str] = []
-    found = files(scene, analysis, pieces, formats, warn=outcomes.append)
+    found = files(scene, analysis, pieces, formats, warn=outcomes.append, say=tell)
     # A sheet asked for that the scene has nothing to draw on (a vibration alone) is said, not dropped.
     if scene.drawing.sheet_given and scene.drawing.sheet != "none" and "sheets" not in pieces \
             and (reason := missing(scene, analysis, "sheets")) is not None:
@@ -149,6 +148,7 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
     outcomes += [f"{options.formats} {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
                  f"{', '.join(pieces)})" for kind in formats if kind != "svg"
                  and not any(name.endswith(f".{kind}") for name in found)]
+    tell("writing the folder")
     written = write_folder(folder, found, options.out)
     return Run(scene, analysis, Path(folder), tuple(written), tuple(position_warnings(analysis) + outcomes))
 

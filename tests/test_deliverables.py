@@ -446,6 +446,53 @@ def test_a_progress_line_only_once_a_second_has_passed(capsys):
     assert capsys.readouterr().err.startswith("graphplan: analysing (")
 
 
+# A stage the command line tells: lower-case words, as test_hostile_scenes knows its progress lines.
+STAGE = re.compile(r"[a-z ,]+")
+
+
+def test_a_long_run_s_progress_line_names_the_piece_being_made(monkeypatch, tmp_path):
+    """A run told "drawing and writing the tables" once it had analysed, and nothing more: with 100 000
+    positions its line sat on that stale "(3.7 s)" for 13 minutes, through the plan of positions and the note.
+    Each piece's stage is told as it begins: the line standing while the plan of positions, the note and the
+    folder are made names them."""
+    from graphplan import deliverables, output
+    from graphplan.render import positions as positions_layout
+    from graphplan.run import run
+
+    told: list[str] = []
+    standing: dict[str, str] = {}
+
+    def watched(key, make):
+        def made(*args, **kwargs):
+            standing[key] = told[-1]
+            return make(*args, **kwargs)
+        return made
+
+    monkeypatch.setattr(positions_layout, "layout", watched("positions", positions_layout.layout))
+    monkeypatch.setattr(deliverables, "tables", watched("note", deliverables.tables))
+    monkeypatch.setattr(output, "write_folder", watched("folder", output.write_folder))
+    run(graphplan.load(RATCHET), tmp_path / "out", only=["positions", "note"], say=told.append)
+    assert standing == {"positions": "drawing the plan of positions", "note": "writing the note and the tables",
+                        "folder": "writing the folder"}
+    assert all(STAGE.fullmatch(stage) for stage in told), told
+
+
+def test_the_command_line_ends_every_progress_line_and_the_last_names_the_folder(monkeypatch, capsys, tmp_path):
+    """Past its second, a run prints a whole line a stage on stderr, the last the folder being written; its
+    output stays on stdout."""
+    from graphplan import cli
+
+    monkeypatch.setattr(cli, "Progress", lambda: Progress(after=-1.0))
+    assert main(["run", str(RATCHET), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
+    out, err = capsys.readouterr()
+    assert err.endswith("\n")
+    lines = err.splitlines()
+    assert all(re.fullmatch(r"graphplan: [a-z ,]+ \(\d+\.\d s\)", line) for line in lines), err
+    stages = [line.removeprefix("graphplan: ").split(" (")[0] for line in lines]
+    assert "drawing the plan of positions" in stages and stages[-1] == "writing the folder", stages
+    assert "wrote " in out and "graphplan:" not in out
+
+
 ROTOR = """
 [scene]
 title = "Fan rotor on its mounts"
