@@ -2,12 +2,13 @@
 
 import json
 import math
-from pathlib import Path
 import signal
-import xml.etree.ElementTree as ElementTree
+from pathlib import Path
+from xml.etree import ElementTree
 
 import numpy as np
 import pytest
+from console import without_progress
 
 import graphplan
 from graphplan.cli import main
@@ -175,7 +176,7 @@ def test_check_refuses_a_reading_that_names_no_segment_of_the_plan_as_the_run_do
     checked = capsys.readouterr().err
     assert checked.startswith("graphplan: error: measured.11.velocity.pz: is not two letters of the plan")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
-    assert capsys.readouterr().err == checked
+    assert without_progress(capsys.readouterr().err) == checked
 
 
 def test_check_tells_what_run_writes_and_what_it_leaves_out_for_want_of_data(tmp_path, capsys, run_folder):
@@ -254,7 +255,7 @@ def test_check_refuses_what_the_run_s_drawings_would_refuse_before_it_says_ok(tm
     assert checked.out == "" and checked.err.splitlines()[-1].startswith(f"graphplan: error: {key}: ")
     assert all(line.startswith("warning: ") for line in checked.err.splitlines()[:-1])
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
-    assert capsys.readouterr().err == checked.err
+    assert without_progress(capsys.readouterr().err) == checked.err
 
 
 def test_check_refuses_a_motor_that_would_speed_the_machine_up_without_end(tmp_path, capsys):
@@ -268,7 +269,7 @@ def test_check_refuses_a_motor_that_would_speed_the_machine_up_without_end(tmp_p
     checked = capsys.readouterr()
     assert checked.out == "" and "exceeds the mean resistance" in checked.err
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
-    assert capsys.readouterr().err == checked.err
+    assert without_progress(capsys.readouterr().err) == checked.err
 
 
 def test_a_run_into_a_folder_keeps_what_no_run_wrote_there_and_replaces_its_own(tmp_path):
@@ -304,7 +305,7 @@ def test_a_run_will_not_replace_a_file_of_the_user_s_named_as_one_of_its_own(tmp
     capsys.readouterr()
     before = {p.name: p.read_bytes() for p in folder.iterdir()}
     assert main(["run", FIXTURE, "--out", str(folder), "--only", "note"]) == 2
-    assert capsys.readouterr().err == (f"graphplan: error: {folder}: holds note.md, which no graphplan run wrote there "
+    assert without_progress(capsys.readouterr().err) == (f"graphplan: error: {folder}: holds note.md, which no graphplan run wrote there "
                                        "and this run would replace; move it away, or give --out another folder\n")
     assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["project"]
@@ -330,7 +331,7 @@ def test_ctrl_c_while_the_folder_is_swapped_puts_the_user_s_own_files_back(tmp_p
 
     monkeypatch.setattr(Path, "rename", interrupted_at_the_swap)
     assert main(["run", str(scene), "--out", str(folder), "--only", "errors"]) == 130
-    assert capsys.readouterr().err == "graphplan: interrupted\n"
+    assert without_progress(capsys.readouterr().err) == "graphplan: interrupted\n"
     assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["project"]
 
@@ -353,7 +354,7 @@ def test_ctrl_c_while_cairo_writes_a_png_is_an_interruption_too(tmp_path, capsys
     monkeypatch.setattr(cairocffi_surfaces, "_make_write_func", interrupted_while_writing)
     folder = tmp_path / "project"
     assert main(["run", FIXTURE, "--out", str(folder), "--only", "positions", "--format", "png"]) == 130
-    assert capsys.readouterr().err == "graphplan: interrupted\n"
+    assert without_progress(capsys.readouterr().err) == "graphplan: interrupted\n"
     assert list(tmp_path.iterdir()) == []
 
 
@@ -406,7 +407,7 @@ def test_figures_of_a_machine_without_a_mechanism_are_refused_naming_the_flag_gi
     scene.write_text(starter(kind), encoding="utf-8")
     capsys.readouterr()
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--figures"]) == 2
-    error = capsys.readouterr().err.strip().splitlines()
+    error = without_progress(capsys.readouterr().err).strip().splitlines()
     assert error == ["graphplan: error: --figures: 'figures' needs a mechanism: the scene has no [frame] and [driver]"]
     assert not (tmp_path / "out").exists()
 

@@ -29,6 +29,7 @@ import warnings
 from pathlib import Path
 
 import pytest
+from console import PROGRESS, without_progress
 from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 from test_scene_errors import to_toml
@@ -38,7 +39,6 @@ from graphplan.starters import starter
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 BASE = tomllib.loads(FIXTURE.read_text(encoding="utf-8"))
-PROGRESS = re.compile(r"^graphplan: [a-z ,]+ \(\d+\.\d s\)$")   # cli.Progress lines of a run past a second
 
 
 # --- key paths as graphplan writes them -------------------------------------------------------------
@@ -299,7 +299,7 @@ def test_an_output_path_under_a_file_names_the_file(capsys, tmp_path, under):
     blocking = tmp_path / "afile"
     blocking.write_text("keep me", encoding="utf-8")
     status = main(["run", str(FIXTURE), "--out", str(blocking / under), "--only", "positions"])
-    err = capsys.readouterr().err
+    err = without_progress(capsys.readouterr().err)
     assert status == 2 and err == f"graphplan: error: {blocking / under}: {blocking} is not a folder, so the output " \
                                   "cannot go in it\n"
     assert blocking.read_text(encoding="utf-8") == "keep me"
