@@ -716,7 +716,6 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         from .report.motion_plots import motion_figure
 
         tell("plotting the motion of the machine")
-
         dynamics = _dynamics_of(scene, analysis, dynamics)
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
@@ -729,7 +728,6 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         from .report.figures import balancing_diagram
 
         tell("plotting the balancing load")
-
         found["balancing.svg"] = balancing_diagram(analysis)
     if "vibration" in pieces:
         tell("plotting the vibration")

@@ -79,9 +79,10 @@ class Heading:
     on the sheet of the part before stands under that part's heading), so
     that the last part, the lever alone, names μV, not the groups' μl.
     Where the parts stand is found with every heading measured at all of
-    ``scales`` (:attr:`whole_scales`), as before a part named only its own:
-    a lever under a shorter heading fitted at the usual lettering in more
-    parts, and the engine's force sheets on A3 took a sheet more.
+    ``scales`` (:attr:`whole_scales`), so that which of them a part names
+    moves no drawing: measured at its own, a lever under a shorter heading
+    fitted at the usual lettering in more parts, and the engine's force
+    sheets on A3 took a sheet more.
     """
 
     title: str
