@@ -28,7 +28,6 @@ from .lookalikes import described, difference, lookalike_hint
 from .lookalikes import plain as lookalike_plain
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy, refuse_control_characters
 from .rotor_balancing import BalancingSpec, read_balancing
-from .rounding import noise_floor
 from .vibration import VibrationSpec, read_vibration
 
 if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
@@ -628,7 +627,6 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
         for name in table.data:
             x, y = check_xy(table.raw(name), table.where(name))
             points[check_str(name, table.where(name))] = complex(x, y)
-        _refuse_coinciding_frame_points(table, points)
     lines: dict[str, Guide] = {}
     table = frame.table("lines", None)
     if table is not None:
@@ -646,22 +644,6 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
             lines[name] = guide
     frame.done()
     return link, points, lines
-
-
-def _refuse_coinciding_frame_points(table: Table, points: dict[str, complex]) -> None:
-    """Two frame points at one place are a slip (a coordinate copied from the other point): the frame between them
-    has no length, so the links pivoted there turn about one axis, and the run stops at an assembly that does not
-    say why. Links that share a pivot name one point, which may carry any number of them."""
-    noise = noise_floor([abs(point) for point in points.values()])
-    seen: list[str] = []
-    for name, point in points.items():
-        other = next((earlier for earlier in seen if abs(points[earlier] - point) <= noise), None)
-        if other is not None:
-            raise SceneError(table.where(name), f"coincides with {table.where(other)}: two frame points at one "
-                             f"place leave no frame between them, and links pivoted at {other} and {name} would "
-                             f"turn about one axis; give {name} its own place, or, for links that share a pivot, "
-                             f"name {other} for all of them", table.raw(name))
-        seen.append(name)
 
 
 def _refuse_on_frame(frame_link: int, links: dict[int, LinkSpec], loads_: tuple[LoadSpec, ...]) -> None:

@@ -318,18 +318,6 @@ CASES: list[Case] = [
     Case("frame-point-nan", {"frame.points.C": [0.0, NAN]}, "frame.points.C[1]", "must be a finite number (got nan)"),
     Case("frame-point-inf", {"frame.points.O": [-INF, 0.0]}, "frame.points.O[0]", "must be a finite number (got -inf)"),
     Case("frame-unknown-key", {"frame.pionts": {}}, "frame.pionts", "unknown key; did you mean 'points'?"),
-    # A coordinate copied from the other pivot: the four-bar's frame OC has no length, and without this the run stops
-    # at an assembly error (A–C = 0.175 m < |AB − BC|) that does not say why.
-    Case("frame-points-coincide", {"frame.points.C": [0.0, 0.0]}, "frame.points.C",
-         "coincides with frame.points.O: two frame points at one place leave no frame between them, and links pivoted "
-         "at O and C would turn about one axis; give C its own place, or, for links that share a pivot, name O for all "
-         "of them (got [0.0, 0.0])"),
-    # Told against the earlier of the two, whichever other points stand between them.
-    Case("frame-points-coincide-later", {"frame.points": {"O": [0.0, 0.0], "C": [0.5, 0.0], "D": [0.5, 0.0]}},
-         "frame.points.D",
-         "coincides with frame.points.C: two frame points at one place leave no frame between them, and links pivoted "
-         "at C and D would turn about one axis; give D its own place, or, for links that share a pivot, name C for all "
-         "of them (got [0.5, 0.0])", base="FOUR_BAR"),
     Case("frame-line-name", {"frame.lines": {"L": "M"}}, "frame.lines.L",
          "a frame line needs through and angle, on the frame"),
     Case("frame-line-on-moving-link", {"frame.lines": {"L": {"link": 2, "through": "A"}}}, "frame.lines.L",
@@ -628,11 +616,9 @@ CASES: list[Case] = [
          "'T' refers back to 'S' through the named points S, T (a cyclic reference)", stage="build"),
     Case("point-refers-to-itself", {"points.S": {"link": 3, "from": "S", "toward": "A", "at": 0.1}}, "points.S.from",
          "'S' is the point itself; name two other points of link 3", stage="build"),
-    # S3 put at A (a link's centre of mass may sit on its joint): two points of link 3 at one place.  (Two frame
-    # points at one place are refused as they are read: frame-points-coincide.)
     Case("point-from-and-toward-coincide",
-         {"points.S3.at": 0.0, "points.Q": {"link": 3, "from": "A", "toward": "S3", "at": 0.1}}, "points.Q",
-         "from 'A' and toward 'S3' coincide, so they give no direction", stage="solve"),
+         {"frame.points.P": [0.0, 0.0], "points.Q": {"link": 1, "from": "O", "toward": "P", "at": 0.1}}, "points.Q",
+         "from 'O' and toward 'P' coincide, so they give no direction", stage="solve"),
 
     # -- [links]
     Case("links-not-numbered", {"links.x": {"mass": 1.0}}, "links.x", "links are numbered: write [links.3]"),
