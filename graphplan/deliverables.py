@@ -160,16 +160,19 @@ def _by_default(scene: Scene, piece: str) -> bool:
     return piece not in ON_REQUEST
 
 
+def _silent(stage: str) -> None:
+    """A stage nobody is told of."""
+
+
 def drawings(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-             dynamics: MachineDynamics | None = None, say: Callable[[str], None] | None = None) -> list[Drawing]:
+             dynamics: MachineDynamics | None = None, say: Callable[[str], None] = _silent) -> list[Drawing]:
     """The drawings of ``pieces``, each laid out once for every format it is written in; ``say`` is told of each
     kind of drawing as its laying out begins."""
     found: list[Drawing] = []
-    tell = say if say is not None else _silent
     if analysis is not None:
-        found += _linkage_drawings(analysis, pieces, dynamics, tell)
+        found += _linkage_drawings(analysis, pieces, dynamics, say)
     elif {"dynamics", "balancing", "sheets"} & set(pieces):
-        tell("drawing the machine")
+        say("drawing the machine")
     sheets = analysis is None and "sheets" in pieces
     # Each laid out once for its own drawing and the sheets of a machine without a linkage.
     machine: list[Layer] = []
@@ -235,10 +238,6 @@ def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
 # The pieces of a linkage drawn at μl, or on its sheets, or to scales that follow it (the diagrams' μs).
 _DRAWN_AT_LENGTH_SCALE = frozenset({"positions", "velocity", "acceleration", "forces", "lever", "diagrams",
                                     "load_diagrams", "sheets"})
-
-
-def _silent(stage: str) -> None:
-    """A stage nobody is told of."""
 
 
 def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: MachineDynamics | None,
@@ -708,14 +707,13 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
 
 def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
-            dynamics: MachineDynamics | None = None, say: Callable[[str], None] | None = None) -> dict[str, str]:
+            dynamics: MachineDynamics | None = None, say: Callable[[str], None] = _silent) -> dict[str, str]:
     """The plots drawn with matplotlib, which is imported only here; ``say`` is told of each as it begins."""
     found: dict[str, str] = {}
-    tell = say if say is not None else _silent
     if "dynamics" in pieces and scene.dynamics.motion is not None:
         from .report.motion_plots import motion_figure
 
-        tell("plotting the motion of the machine")
+        say("plotting the motion of the machine")
         dynamics = _dynamics_of(scene, analysis, dynamics)
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
@@ -727,10 +725,10 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 
-        tell("plotting the balancing load")
+        say("plotting the balancing load")
         found["balancing.svg"] = balancing_diagram(analysis)
     if "vibration" in pieces:
-        tell("plotting the vibration")
+        say("plotting the vibration")
         found.update(vibration_figures(scene))
     return found
 
@@ -907,15 +905,13 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
 def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
           formats: tuple[str, ...] = ("svg",), warn: Callable[[str], None] | None = None,
-          say: Callable[[str], None] | None = None) -> dict[str, str | bytes]:
+          say: Callable[[str], None] = _silent) -> dict[str, str | bytes]:
     """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots.
 
     ``warn`` is told, in a line, of an outcome the files record but a user should not miss (a machine
     that stalls); ``say`` of each stage as it begins, so that a long run's progress line names the piece
     it is making (a note of 20 000 positions takes a minute), not the first of them."""
     from .report.results import dumps
-
-    tell = say if say is not None else _silent
 
     # The model, the flywheel and the integrated motion serve the results, the drawing, the plot and the note,
     # which tells all the scene has whichever drawings are asked for.
@@ -924,19 +920,19 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if warn is not None:
         for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
             warn(told)
-    tell("writing the results")
+    say("writing the results")
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     lever_scales: dict[str, float] = {}
-    made = drawings(scene, analysis, pieces, dynamics, say=tell)
+    made = drawings(scene, analysis, pieces, dynamics, say=say)
     if made:
-        tell("writing the drawings")
+        say("writing the drawings")
     for drawing in made:
         found.update(encoded(drawing, [kind for kind in formats if kind in DRAWING_FORMATS]))
         if drawing.lever_scale is not None:
             lever_scales[f"{drawing.stem}.svg"] = drawing.lever_scale
-    plots = figures(scene, analysis, pieces, dynamics, say=tell)
+    plots = figures(scene, analysis, pieces, dynamics, say=say)
     if "accuracy" in pieces and analysis is not None:
-        tell("studying the accuracy")
+        say("studying the accuracy")
         plots.update(accuracy_report(analysis))
     found.update(plots)
     # A report takes its plots as PNG or PDF as it takes the drawings; DXF, a drafting format, is for the drawings.
@@ -946,17 +942,17 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     # The note shows the drawings and plots written beside it, each in the section it illustrates.
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
     if {"note", "errors", "forces"} & set(pieces):
-        tell("writing the note and the tables" if "note" in pieces else "writing the tables")
+        say("writing the note and the tables" if "note" in pieces else "writing the tables")
     found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures), lever_scales=lever_scales))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 
-        tell("typesetting the note as pdf")
+        say("typesetting the note as pdf")
         found["note.pdf"] = note_pdf(str(found["note.html"]), pictures)
     if "docx" in formats and "note.md" in found:
         from .report.word import note_docx
 
-        tell("writing the note as docx")
+        say("writing the note as docx")
         found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale, pictures,
                                        author=scene.project.author)
     return found
