@@ -130,7 +130,7 @@ class Rows:
         # The row of the sheet each row was cut from (:meth:`_apart`), so that a cut keeps them together where
         # it can: a group cut free and its polygon on one sheet.
         self.origins = tuple(origins) or tuple(range(len(self.drawings)))
-        self._heading_sizes: dict[tuple[str, str, float], tuple[float, float]] = {}
+        self._heading_sizes: dict[tuple[str, float], tuple[float, float]] = {}
         self.beside = [_side_by_side(row, heading.size) for row in rows]
         # A row of one drawing (the lever) stands the same either way.
         self.stacked = [_stacked(row, heading.size) if len(row) > 1 else None for row in rows]
@@ -299,16 +299,16 @@ class Rows:
         width = sum(widths) + GAP_MM * (len(shape) - 1)
         if title == HEADLESS:
             return width, max(heights)
-        heading_width, heading_height = self._heading_size(title, self.heading.whole_scales,
-                                                           _ONE_LINE_MM if one_line else round(width))
+        heading_width, heading_height = self._heading_size(title, _ONE_LINE_MM if one_line else round(width))
         return max(width, heading_width), max(heights) + HEADING_GAP_MM + heading_height
 
-    def _heading_size(self, title: str, scales: str, width: float) -> tuple[float, float]:
-        """The heading's (width, height) over drawings ``width`` mm wide (remembered: every way asks)."""
-        if (title, scales, width) not in self._heading_sizes:
-            x0, y0, x1, y1 = bounds_of(self._heading_layer(0.0, 0.0, title, scales, width).items)
-            self._heading_sizes[title, scales, width] = (x1 - x0, y1 - y0)
-        return self._heading_sizes[title, scales, width]
+    def _heading_size(self, title: str, width: float) -> tuple[float, float]:
+        """The heading's (width, height) over drawings ``width`` mm wide, measured with the line of all the sheet's
+        scales (:class:`Heading`: which of them a part names moves no drawing; remembered: every way asks)."""
+        if (title, width) not in self._heading_sizes:
+            x0, y0, x1, y1 = bounds_of(self._heading_layer(0.0, 0.0, title, self.heading.whole_scales, width).items)
+            self._heading_sizes[title, width] = (x1 - x0, y1 - y0)
+        return self._heading_sizes[title, width]
 
     def _heading_layer(self, left: float, scales_line: float, title: str, scales: str, width: float) -> Layer:
         """``title`` broken to ``width`` mm (to no less than a caption's width) over the line of the scales
