@@ -19,6 +19,7 @@ from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
 from .motion import reference_at
 from .positions import reach, travel_reach
+from .rounding import noise_floor
 from .scene import Scene
 
 
@@ -47,6 +48,8 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
         ranges = reach(mechanism, taken)
         if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
             raise
+        if not ranges and (copied := _frame_points_at_one_place(mechanism)) is not None:
+            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {copied}") from error
         if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
         stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
@@ -99,6 +102,25 @@ def _farthest_reach(mechanism: Mechanism) -> float:
     frame = 2.0 * max((abs(point) for point in mechanism.scene.frame_points.values()), default=0.0)
     lengths = sum(value for _, value in given_lengths(mechanism))
     return max(frame + lengths, *(abs(end) for end in mechanism.driver.travel))
+
+
+def _frame_points_at_one_place(mechanism: Mechanism) -> str | None:
+    """Where a mechanism assembles nowhere and two of its frame points stand at one place, that is the likelier slip
+    than a length: a coordinate copied from the other point leaves no frame between them.  (Links meant to turn about
+    one axis may share a place: such a mechanism runs where its lengths close it, so this is told only where they
+    do not.)  None where every frame point has a place of its own."""
+    points = mechanism.scene.frame_points
+    noise = noise_floor([*(abs(point) for point in points.values()),
+                         *(value for _, value in given_lengths(mechanism))])
+    names = list(points)
+    for n, first in enumerate(names):
+        for second in names[n + 1:]:
+            if abs(points[second] - points[first]) <= noise:
+                place = points[first]
+                return (f"frame points {first} and {second} stand at one place, [{place.real:.6g}, {place.imag:.6g}], "
+                        f"so the links pivoted at them turn about one axis: give {second} its own place (its coordinates copied from {first}?), or check the "
+                        f"lengths")
+    return None
 
 
 def _inward_m(end: float, other_end: float, quantum: float) -> str:

@@ -1194,6 +1194,31 @@ def test_rrr_too_long_difference_at_the_first_position() -> None:
                                  "link 2 reaches only from ")
 
 
+def test_frame_points_at_one_place_are_named_where_the_mechanism_closes_nowhere() -> None:
+    """C's coordinates copied from O: A–C is then the crank, 0.2 m, at every angle, short of |AB − BC| = 0.4 m
+    (the same lengths with C at [0.5, 0] reach part of a turn, test_rrr_too_long_difference_at_the_first_position),
+    so the mechanism closes nowhere and the slip is the place, not a length."""
+    text = to_toml(variant(FOUR_BAR, {"frame.points.C": [0.0, 0.0], "groups.0.lengths": [0.5, 0.1]}))
+    stage, error = first_error(text)
+    assert stage == "solve" and type(error) is AssemblyError
+    assert str(error) == ("B cannot be assembled at position 1 (φ = 0°) in group II(3,4): A–C = 0.2 m < |AB − BC| = "
+                          "0.4 m; frame points O and C stand at one place, [0, 0], so the links pivoted at them turn "
+                          "about one axis: give C its own place (its coordinates copied from O?), or check the lengths")
+
+
+def test_frame_points_at_one_place_that_close_run() -> None:
+    """A crank and a rocker about one axis are a mechanism where the lengths close it (|AB − BC| = 0.05 m ≤
+    A–C = 0.2 m ≤ AB + BC): it runs, B a fixed corner of the triangle ABC that turns with the crank."""
+    scene = scene_module.loads(to_toml(variant(FOUR_BAR, {"frame.points.C": [0.0, 0.0]})))
+    solved = graphplan.solve(scene, driver=np.radians([0.0, 90.0]))
+    a, b = (solved.points[name] for name in ("A", "B"))
+    assert np.allclose(np.abs(b.r - a.r), 0.4) and np.allclose(np.abs(b.r), 0.35)
+    # The triangle turns rigidly with the crank (ω = 10 rad/s about O): B's angle from A's is one at both
+    # positions, and B moves as a point of the crank would, v = iω·r.
+    assert np.isclose(np.angle(b.r[1] / a.r[1]), np.angle(b.r[0] / a.r[0]))
+    assert np.allclose(b.v, 10j * b.r)
+
+
 def test_rrr_too_short_with_near() -> None:
     text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.5, 0.1], "groups.0.assembly": DELETE,
                                       "groups.0.near": [0.3, 0.4]}))
