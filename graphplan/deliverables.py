@@ -558,9 +558,13 @@ class MachineDynamics:
         # Where it stands at the end of the run: where it never started, where it stood from the start.
         resisting = self.machine.mr(float(motion.phi[-1]), 0.0)
         stall = motion.stall
+        if stall is Stall.NEVER_STARTS_CLUTCH:
+            return (f"dynamics: the machine does not start: at rest at φ = {where} the clutch, slipping at its "
+                    f"{motion.clutch.torque:g} N·m, does not overcome the resistance there, {resisting:.4g} N·m (a "
+                    "clutch of more torque)")
         if stall in (Stall.NEVER_STARTS, Stall.NEVER_STARTS_BRAKED):
             unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
-                       f"{float(motion.motor_torque[0]):.4g} N·m, does not overcome the resistance there")
+                       f"{motion.torque_at_rest:.4g} N·m, does not overcome the resistance there")
             if stall is Stall.NEVER_STARTS:
                 return (f"{unmoved}, {resisting:.4g} N·m (a stronger motor, a larger gear ratio, or a start from "
                         "another angle)")
@@ -570,7 +574,7 @@ class MachineDynamics:
                     "machine from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
         if stall is Stall.CLUTCH:
             return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
-                    f"slipping at its {self.spec.motion.clutch.torque:g} N·m, cannot carry it past the resistance "
+                    f"slipping at its {motion.clutch.torque:g} N·m, cannot carry it past the resistance "
                     f"there, {resisting:.4g} N·m (a clutch of more torque)")
         if stall is Stall.BRAKE:
             return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
@@ -718,10 +722,8 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
         estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
-        clutch = scene.dynamics.motion.clutch
         found["motion.svg"] = motion_figure(dynamics.motion, _dynamics_words(scene, analysis), scene.title, estimate,
-                                            dynamics.resisting, stall_angle_deg=dynamics.rest_angle_deg(),
-                                            clutch_torque=clutch.torque if clutch is not None else None)
+                                            dynamics.resisting, stall_angle_deg=dynamics.rest_angle_deg())
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 

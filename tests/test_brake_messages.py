@@ -80,8 +80,8 @@ def test_the_motion_plot_names_the_brake_that_holds_the_machine_where_it_stands(
     from the start it holds the machine where it stands (150 N·m against 100 + 80).  A brake of damping alone takes
     nothing at rest: the stall is the motor's, and the title names no brake."""
     from graphplan.locale import strings
-    from graphplan.machine_motion import Brake, ConstantTorque, Machine, Stall, simulate
-    from graphplan.report.motion_plots import _Stall, _why_not_steady
+    from graphplan.machine_motion import Brake, Clutch, ConstantTorque, Machine, Stall, simulate
+    from graphplan.report.motion_plots import _why_not_steady
 
     machine, motor = Machine(2.0, resisting=100.0), ConstantTorque(150.0)
     for brake, stall, key in ((Brake(torque=80.0, at=0.5), Stall.BRAKE, "motion_stalled_braked"),
@@ -92,14 +92,22 @@ def test_the_motion_plot_names_the_brake_that_holds_the_machine_where_it_stands(
             text = strings(locale)
             time = f"{motion.stalled_at:.4g}".replace(".", text["decimal_mark"])
             assert time == ("0" if brake.at == 0 else text["decimal_mark"].join(["1", "333"]))
-            said = _why_not_steady(motion, text, _Stall(170.0, None))
+            said = _why_not_steady(motion, text, 170.0)
             at = f"{brake.at:g}".replace(".", text["decimal_mark"])
             assert said == text[key].format(time=time, angle="170", at=at)
+    # 30 N·m through a slipping clutch would not start it against Mr's 100 alone: the clutch is blamed, not the
+    # brake on from the start.
+    held = simulate(machine, motor, brake=Brake(torque=80.0), clutch=Clutch(30.0, inertia=1.0), duration=2.0,
+                    rtol=1e-10)
+    assert held.stall is Stall.NEVER_STARTS_CLUTCH and held.stall_brake is None
+    for locale in ("en", "ru", "zh"):
+        text = strings(locale)
+        assert _why_not_steady(held, text, 170.0) == text["motion_never_starts_clutch"].format(angle="170")
     damped = simulate(Machine(2.0, resisting=lambda phi, omega: 100.0 + 200.0 * (phi > 1.0)), motor,
                       brake=Brake(damping=1.0), rtol=1e-10)
     assert damped.stall is Stall.MOTOR and damped.stall_brake is None
     text = strings("en")
-    said = _why_not_steady(damped, text, _Stall(57.3, None))
+    said = _why_not_steady(damped, text, 57.3)
     assert said == text["motion_stalled"].format(time=f"{damped.stalled_at:.4g}", angle="57.3")
 
 

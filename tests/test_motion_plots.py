@@ -12,7 +12,7 @@ from test_dynamics_without_linkage import PRESS
 
 from graphplan.cli import main
 from graphplan.locale import strings
-from graphplan.machine_motion import Brake, Clutch, LinearMotor, Machine, Start, simulate
+from graphplan.machine_motion import Brake, Clutch, LinearMotor, Machine, Stall, Start, simulate
 from graphplan.report.motion_plots import motion_plot
 
 pytest.importorskip("matplotlib")
@@ -251,27 +251,50 @@ def test_a_stall_through_a_slipping_clutch_is_blamed_on_the_clutch_in_a_title_th
         pyplot.close(figure)
 
 
-def test_a_clutch_slipping_with_the_shaft_never_turned_is_blamed_in_the_warning_and_the_note_as_in_the_plot(
-        tmp_path, capsys):
-    """A 150 N·m motor behind a 30 N·m clutch against a constant 50 N·m: the clutch slips from the start and the
-    shaft never turns.  The plot's title blamed the clutch; the warning and the note said the motor's 150 N·m did
-    not overcome 50 N·m and advised a stronger motor."""
-    clutch, resisting, motor = 30.0, 50.0, 150.0
+def held_by_clutch(tmp_path, capsys, clutch: float, brake: str = "") -> tuple[str, str]:
+    """A 150 N·m motor behind a clutch of ``clutch`` N·m against a constant 50 N·m, run from the command line: its
+    warning line and its note."""
     scene = tmp_path / "held.toml"
     scene.write_text('[scene]\ntitle = "held by its clutch"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
-                     f"resisting_torque = [[0, {resisting}], [360, {resisting}]]\n"
-                     f'motor = {{ kind = "constant", torque = {motor}, rotor_inertia = 1.0 }}\n'
-                     f"clutch = {{ torque = {clutch} }}\nduration = 2.0\n", encoding="utf-8")
+                     "resisting_torque = [[0, 50], [360, 50]]\n"
+                     'motor = { kind = "constant", torque = 150, rotor_inertia = 1.0 }\n'
+                     f"clutch = {{ torque = {clutch} }}\nduration = 2.0\n{brake}", encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
     told = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("warning:"))
-    assert f"the clutch, slipping at its {clutch:g} N·m, cannot carry it past the resistance there, {resisting:g} N·m" \
-        in told
-    assert "does not start" not in told and "stronger motor" not in told
-    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    return told, (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("brake", ["", "brake = { torque = 40 }\n"])
+def test_a_clutch_slipping_with_the_shaft_never_turned_is_told_the_machine_does_not_start_for_the_clutch(
+        tmp_path, capsys, brake):
+    """A 150 N·m motor behind a 30 N·m clutch against a constant 50 N·m: the clutch slips from the start and the
+    shaft never turns, with or without a 40 N·m brake on from the start (30 N·m would not turn it against the 50
+    alone).  The warning and the note said the motor's 150 N·m did not overcome 50 N·m; then that the machine
+    stalled, coming to rest at t = 0, where it never moved."""
+    clutch, resisting = 30.0, 50.0
+    told, note = held_by_clutch(tmp_path, capsys, clutch, brake)
+    assert told == (f"warning: dynamics: the machine does not start: at rest at φ = 0.0° the clutch, slipping at its "
+                    f"{clutch:g} N·m, does not overcome the resistance there, {resisting:g} N·m (a clutch of more "
+                    "torque)")
     text = strings("en")
-    assert text["note_dyn_stalled_clutch"].format(time="0", angle="0°", torque=f"{clutch:g}",
-                                                  resisting=f"{resisting:g}") in note
-    assert text["note_dyn_never_starts"].split(":")[0] not in note
+    assert text["note_dyn_never_starts_clutch"].format(angle="0°", torque=f"{clutch:g}",
+                                                       resisting=f"{resisting:g}") in note
+    assert "stalls" not in note and "brake applied" not in note
+
+
+def test_a_clutch_that_would_start_the_machine_but_for_the_brake_on_from_the_start_blames_the_brake(tmp_path, capsys):
+    """A 60 N·m clutch against 50 N·m would start the machine; a 40 N·m brake on from the start makes 90 N·m,
+    and holds it.  The warning and the note said the clutch's 60 N·m could not pass 50 N·m and advised a larger
+    clutch."""
+    told, note = held_by_clutch(tmp_path, capsys, 60.0, "brake = { torque = 40 }\n")
+    assert told == ("warning: dynamics: the machine does not start: at rest at φ = 0.0° the driving torque, 60 N·m, "
+                    "does not overcome the resistance there and the brake applied at t = 0 s, 50 + 40 = 90 N·m: the "
+                    "brake's torque (dynamics.brake.torque) holds the machine from the start (a later "
+                    "dynamics.brake.at, after the start-up, or a smaller brake torque)")
+    text = strings("en")
+    assert text["note_dyn_never_starts_braked"].format(angle="0°", torque="60", resisting="50", brake="40", at="0",
+                                                       total="90") in note
+    assert "clutch of a larger torque" not in note
 
 
 # A machine of 2 kg·m² driven by a constant 150 N·m against 100 N·m up to 200°, 145 falling to 110 N·m from there to
@@ -370,16 +393,19 @@ def test_a_brake_on_from_the_start_that_holds_the_machine_makes_the_whole_curve_
         pyplot.close(figure)
 
 
-@pytest.mark.parametrize("brake", ["", "brake = { damping = 1.0 }\n"])
+@pytest.mark.parametrize("brake", ["", "brake = { damping = 1.0 }\n", f"brake = {{ torque = {BRAKE_TORQUE} }}\n"])
 def test_a_machine_no_brake_holds_draws_no_brake_curve(brake):
-    """A motor of 90 N·m against 100 N·m does not start, with no brake or one of damping alone, which takes nothing
-    at rest: the plot sets the motor against Mr alone."""
+    """A motor of 90 N·m against 100 N·m does not start, with no brake, one of damping alone, which takes nothing
+    at rest, or one of 80 N·m on from the start, which the motor would not start against Mr alone either (that
+    brake was blamed, and the advice was to apply it later): the motor is what falls short, and the plot sets it
+    against Mr alone."""
     from matplotlib import pyplot
 
     dynamics = braked_dynamics(brake, motor_torque=90.0)
     text = strings("en")
     motion = dynamics.motion
-    assert motion.stalled_at == 0.0 and motion.stall_brake is None
+    assert motion.stalled_at == 0.0 and motion.stall_brake is None and motion.stall is Stall.NEVER_STARTS
+    assert "brake" not in dynamics.stall_warning() and "a stronger motor" in dynamics.stall_warning()
     figure = motion_plot(motion, text, "braked", resisting=dynamics.resisting)
     try:
         lower = figure.axes[-1]

@@ -36,10 +36,11 @@ class Stall(enum.Enum):
     that tell it (``motion_stalled_braked``, ``note_dyn_stalled_braked``)."""
 
     MOTOR = "stalled"  # having turned the machine, the motor cannot carry it past the resistance
-    CLUTCH = "stalled_clutch"  # the clutch, slipping at its torque, cannot, whether the shaft turned or not
+    CLUTCH = "stalled_clutch"  # having turned the machine, the clutch slipping at its torque cannot
     BRAKE = "stalled_braked"  # the brake, applied as the motor drove it, brought it to rest against the motor
     NEVER_STARTS = "never_starts"  # the motor cannot move it from where it stands
-    NEVER_STARTS_BRAKED = "never_starts_braked"  # nor against the brake on from the start
+    NEVER_STARTS_CLUTCH = "never_starts_clutch"  # nor can the clutch, slipping at its torque from the start
+    NEVER_STARTS_BRAKED = "never_starts_braked"  # what drives it would, but not against the brake on from the start
 
 
 @dataclass(frozen=True, eq=False)
@@ -54,8 +55,8 @@ class MachineMotion:
     it stays locked through it; None without a clutch or a steady state).  ``stopped_at`` is when the
     machine came to rest for good, and ``stalled_at`` the same time when the motor was still on: it
     could not carry the machine past the resistance there (``phi[-1]``), and the run ends at it (where the
-    clutch still slips then, its capacity fell short, :attr:`stalled_slipping`).  ``brake`` is the run's brake
-    (None without one).
+    clutch still slips then, its capacity fell short, :attr:`stalled_slipping`).  ``brake`` and ``clutch`` are the
+    run's (None without one), and ``stall`` what fell short where it stalled (None where it did not).
     """
 
     t: np.ndarray
@@ -79,6 +80,8 @@ class MachineMotion:
     notes: tuple[str, ...]
     _dense: Callable[[np.ndarray], np.ndarray] = field(repr=False)
     brake: Brake | None = None
+    clutch: Clutch | None = None
+    stall: Stall | None = None
 
     @property
     def stiff(self) -> bool:
@@ -111,27 +114,16 @@ class MachineMotion:
             float(self.driving_omega[-1]) > float(self.omega[-1])
 
     @property
-    def stall(self) -> Stall | None:
-        """What fell short where the machine stalled (None where it did not): the clutch where it still slips,
-        the shaft at rest or not; else, where the shaft never turned, the motor, against the brake too where that
-        was on from the start; else the brake where it was on by the time the machine came to rest, or the motor."""
-        if self.stalled_at is None:
-            return None
-        if self.stalled_slipping:
-            return Stall.CLUTCH
-        if not self.turned:
-            return Stall.NEVER_STARTS_BRAKED if self._brake_holds(float(self.t[0])) else Stall.NEVER_STARTS
-        return Stall.BRAKE if self._brake_holds(self.stalled_at) else Stall.MOTOR
+    def torque_at_rest(self) -> float:
+        """The torque that reaches the machine's shaft at the run's start (N·m): the clutch's capacity where it
+        slips as the machine stalls, else the motor's."""
+        return self.clutch.torque if self.stalled_slipping else float(self.motor_torque[0])
 
     @property
     def stall_brake(self) -> Brake | None:
         """The run's brake where it is what holds the machine where it stalled (:attr:`stall` ``BRAKE`` or
         ``NEVER_STARTS_BRAKED``); None where something else fell short, or it did not stall."""
         return self.brake if self.stall in (Stall.BRAKE, Stall.NEVER_STARTS_BRAKED) else None
-
-    def _brake_holds(self, time: float) -> bool:
-        """Whether the brake is on at ``time`` with a torque of its own: a damping alone takes nothing at rest."""
-        return self.brake is not None and self.brake.torque != 0 and self.brake.at <= time
 
     def state_at(self, times: ArrayLike) -> np.ndarray:
         """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
@@ -296,12 +288,35 @@ def simulate(machine: Machine, motor: Motor, *, duration: float | None = None, s
     stopped_at = stops[-1] if stops and y[1, -1] == 0.0 else None
     stalled_at = start.time if never_starts else (
         stopped_at if stopped_at is not None and equations.motor_on(stopped_at) else None)
-    return MachineMotion(t=t, phi=y[0], omega=y[1], driving_omega=y[2] if clutch is not None else None,
-                         motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
-                         stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
-                         stalled_at=stalled_at,
-                         slip_energy=slip_energy, steady_slip_energy=steady_slip_energy, nfev=integrator.nfev,
-                         njev=integrator.njev, nlu=integrator.nlu, notes=tuple(notes), _dense=dense, brake=brake)
+    motion = MachineMotion(t=t, phi=y[0], omega=y[1], driving_omega=y[2] if clutch is not None else None,
+                           motor_torque=torque, cycles=cycles, steady=steady, method=chosen, method_reason=reason,
+                           stiffness=stiffness, events=tuple(integrator.events), stopped_at=stopped_at,
+                           stalled_at=stalled_at, slip_energy=slip_energy, steady_slip_energy=steady_slip_energy,
+                           nfev=integrator.nfev, njev=integrator.njev, nlu=integrator.nlu, notes=tuple(notes),
+                           _dense=dense, brake=brake, clutch=clutch)
+    return dataclasses.replace(motion, stall=_stall(motion, machine))
+
+
+def _stall(motion: MachineMotion, machine: Machine) -> Stall | None:
+    """What fell short where the machine stalled (None where it did not).  Where the shaft never turned: the torque
+    that reached it at rest (:attr:`~MachineMotion.torque_at_rest`) against Mr there, a brake on from the start
+    blamed only where that torque overcomes Mr alone (the machine would start without it), else the clutch where it
+    slips, or the motor.  Where it turned: the clutch where it still slips, else the brake where it was on by the
+    time the machine came to rest, or the motor."""
+    if motion.stalled_at is None:
+        return None
+    brake = motion.brake
+
+    def brake_holds(time: float) -> bool:  # a damping alone takes nothing at rest
+        return brake is not None and brake.torque != 0 and brake.at <= time
+
+    if not motion.turned:
+        if brake_holds(float(motion.t[0])) and motion.torque_at_rest > machine.mr(float(motion.phi[0]), 0.0):
+            return Stall.NEVER_STARTS_BRAKED
+        return Stall.NEVER_STARTS_CLUTCH if motion.stalled_slipping else Stall.NEVER_STARTS
+    if motion.stalled_slipping:
+        return Stall.CLUTCH
+    return Stall.BRAKE if brake_holds(motion.stalled_at) else Stall.MOTOR
 
 
 def _after(cycles: tuple[Cycle, ...], moment: float) -> tuple[Cycle, ...]:

@@ -359,18 +359,21 @@ def _stall(note: Writer, dynamics) -> None:
     stall = motion.stall
     if stall is Stall.NEVER_STARTS_BRAKED:
         held = motion.brake.torque
-        note.para(note.t("note_dyn_never_starts_braked", angle=angle, torque=note.n(float(motion.motor_torque[0])),
+        note.para(note.t("note_dyn_never_starts_braked", angle=angle, torque=note.n(motion.torque_at_rest),
                          resisting=resisting, brake=note.n(held), at=note.n(motion.brake.at, 4),
                          total=note.n(mr + held)))
     elif stall is Stall.NEVER_STARTS:
-        note.para(note.t("note_dyn_never_starts", angle=angle, torque=note.n(float(motion.motor_torque[0])),
+        note.para(note.t("note_dyn_never_starts", angle=angle, torque=note.n(motion.torque_at_rest),
+                         resisting=resisting))
+    elif stall is Stall.NEVER_STARTS_CLUTCH:
+        note.para(note.t("note_dyn_never_starts_clutch", angle=angle, torque=note.n(motion.clutch.torque),
                          resisting=resisting))
     elif stall is Stall.BRAKE:
         note.para(note.t("note_dyn_stalled_braked", time=note.n(motion.stalled_at, 4), angle=angle,
                          at=note.n(motion.brake.at, 4), brake=note.n(motion.brake.torque), resisting=resisting))
     elif stall is Stall.CLUTCH:
         note.para(note.t("note_dyn_stalled_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
-                         torque=note.n(dynamics.spec.motion.clutch.torque), resisting=resisting))
+                         torque=note.n(motion.clutch.torque), resisting=resisting))
     else:
         note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4), angle=angle))
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -36,20 +35,18 @@ _MM_PER_POINT = 25.4 / 72.0
 
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                   flywheel: tuple[np.ndarray, np.ndarray] | None = None,
-                  resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
-                  clutch_torque: float | None = None) -> str:
+                  resisting: tuple[np.ndarray, np.ndarray] | None = None, *,
+                  stall_angle_deg: float | None = None) -> str:
     """The SVG text of :func:`motion_plot`."""
     import matplotlib
 
     with matplotlib.rc_context(settings()):
-        return svg_text(motion_plot(motion, text, title, flywheel, resisting, stall_angle_deg=stall_angle_deg,
-                                    clutch_torque=clutch_torque))
+        return svg_text(motion_plot(motion, text, title, flywheel, resisting, stall_angle_deg=stall_angle_deg))
 
 
 def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 flywheel: tuple[np.ndarray, np.ndarray] | None = None,
-                resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None,
-                clutch_torque: float | None = None):
+                resisting: tuple[np.ndarray, np.ndarray] | None = None, *, stall_angle_deg: float | None = None):
     """The motion's matplotlib figure: the run above, the steady turn below (or only why the machine
     stands still, where it never moves).
 
@@ -58,13 +55,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     ``resisting`` is Mr(φ) over one turn (the angles, rad, in the run's φ, and N·m): where the machine
     stalls, the lower plot sets it against the motor's torque along the run, over the angle turned from
     the start, to show where the motor falls short; where the clutch slipped as it stalled, against the
-    clutch's ``clutch_torque`` too; where the run's brake holds it where it stands
+    clutch's capacity too; where the run's brake holds it where it stands
     (:attr:`~graphplan.machine_motion.MachineMotion.stall_brake`), against Mr(φ) + Mt from where the brake was
     applied on, and the title names the brake.  ``stall_angle_deg`` is where it stalled as the scene counts the
     crank's angle (the motion's own φ within its turn where not given).
     """
-    stall = _Stall(stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg,
-                   clutch_torque if motion.stalled_slipping else None)
+    stall_deg = stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg
     import matplotlib
     from matplotlib.figure import Figure
 
@@ -77,7 +73,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             run = figure.subplots(1, 1)
             _speed_over_time(run, motion, text)
             if not run_down:
-                why = _why_not_steady(motion, text, stall)
+                why = _why_not_steady(motion, text, stall_deg)
                 run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
         else:
             if _moved(motion):
@@ -91,10 +87,10 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
             if motion.steady is not None:
                 _steady_turn(turn, motion, text, flywheel)
             elif motion.stalled_at is not None and resisting is not None:
-                _stall(turn, motion, text, resisting, stall)
+                _stall(turn, motion, text, resisting, stall_deg)
             else:
                 turn.set_axis_off()
-                turn.text(0.5, 0.5, _broken(_why_not_steady(motion, text, stall), 10), ha="center", va="center",
+                turn.text(0.5, 0.5, _broken(_why_not_steady(motion, text, stall_deg), 10), ha="center", va="center",
                           transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
         # After the decimal mark: the title quotes the scene's, which is the user's text.
@@ -104,23 +100,14 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     return figure
 
 
-@dataclass(frozen=True)
-class _Stall:
-    """Where a run stalled as the scene counts the crank's angle (°), and the clutch's capacity (N·m) where it
-    slipped as it stalled, the clutch then the limit, not the motor."""
-
-    angle_deg: float | None
-    clutch_torque: float | None
-
-
-def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall: _Stall) -> str:
+def _why_not_steady(motion: MachineMotion, text: Mapping[str, str], stall_deg: float | None) -> str:
     """Why a run has no steady turn to draw: none reached in the run, or where the machine stalled."""
     if motion.stalled_at is None:
         return text["motion_no_steady"]
     mark = text["decimal_mark"]
     brake = motion.stall_brake
     return text[f"motion_{motion.stall.value}"].format(time=number(motion.stalled_at, 4, mark),
-                                                       angle=number(stall.angle_deg, 4, mark),
+                                                       angle=number(stall_deg, 4, mark),
                                                        at=number(brake.at, 4, mark) if brake is not None else "")
 
 
@@ -254,7 +241,7 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
 
 
 def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tuple[np.ndarray, np.ndarray],
-           stall: _Stall) -> None:
+           stall_deg: float) -> None:
     """The moments on the driving shaft over the angle it turned before it stalled: the motor's torque
     along the run against the resisting forces' Mr(φ), the stall where the motor's falls short (where the
     clutch slipped, the clutch's capacity, which falls short first; where the brake holds the machine, Mr(φ) + Mt
@@ -296,12 +283,12 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
                                                                at=number(brake.at, 4, mark)))
     plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
     held = float(motion.motor_torque[-1])
-    if stall.clutch_torque is not None:
-        held = stall.clutch_torque
+    if motion.stalled_slipping:
+        held = motion.clutch.torque
         plot.axhline(held, color=_FLYWHEEL, linewidth=1.0, linestyle="--",
                      label=text["motion_clutch_capacity"].format(torque=number(held, 4, mark)))
     plot.plot([end], [held], "o", color=_SHAFT, markersize=4,
-              label=text["motion_stall_point"].format(turned=number(end, 4, mark), angle=number(stall.angle_deg, 4, mark),
+              label=text["motion_stall_point"].format(turned=number(end, 4, mark), angle=number(stall_deg, 4, mark),
                                                       time=number(motion.stalled_at, 4, mark)))
     plot.axhline(0.0, color=_EVENT, linewidth=0.5)
     plot.set_xlim(0.0, right)
