@@ -576,6 +576,12 @@ class MachineDynamics:
             return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
                     f"slipping at its {motion.clutch.torque:g} N·m, cannot carry it past the resistance "
                     f"there, {resisting:.4g} N·m (a clutch of more torque)")
+        if stall is Stall.BRAKE_CLUTCH:
+            return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
+                    f"at t = {motion.stalled_at:.4g} s, φ = {where}, where the clutch, slipping at its "
+                    f"{motion.clutch.torque:g} N·m, cannot turn it against the brake's {motion.brake.torque:g} N·m "
+                    f"and the resistance there, {resisting:.4g} N·m (a smaller dynamics.brake.torque keeps it "
+                    "turning; dynamics.motor.off_at switches the motor off to stop it)")
         if stall is Stall.BRAKE:
             return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
                     f"at t = {motion.stalled_at:.4g} s, φ = {where}, and the motor stalls: it cannot turn the machine "

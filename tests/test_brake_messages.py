@@ -75,6 +75,45 @@ def test_a_brake_that_stops_the_running_machine_against_its_motor_is_named_for_t
     assert sentence in (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
 
 
+# HELD's machine behind a 60 N·m clutch, the motor's rotor 1 kg·m² (the driving half): the clutch slips from the start,
+# speeding the shaft up at (60 − 50)/2 = 5 rad/s² against a constant 50 N·m.
+CLUTCHED = ('[scene]\ntitle = "clutched"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+            'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }\nclutch = { torque = 60.0 }\n'
+            "duration = 2.0\n")
+
+
+@pytest.mark.parametrize(("locale", "sentence"), [
+    ("en", "where the clutch, slipping at its 60 N·m, cannot turn it against the brake's 40 N·m"),
+    ("ru", "где муфта, пробуксовывая с моментом 60 Н·м, не может провернуть её против тормоза с моментом 40 Н·м"),
+    ("zh", "离合器以 60 N·m 打滑，克服不了 40 N·m 的制动力矩"),
+])
+def test_a_brake_that_stops_the_machine_against_its_slipping_clutch_is_named_for_the_stall(tmp_path, capsys, locale,
+                                                                                         sentence):
+    """At 0.5 s the shaft runs at 2.5 rad/s, 0.625 rad on; the brake's 40 N·m then slows it at (60 − 90)/2 =
+    −15 rad/s², to rest 2.5/15 s later, at 0.6667 s, 0.625 + 2.5²/30 rad = 47.75° on, where the clutch's 60 N·m
+    beats Mr's 50 alone.  It said the clutch could not pass the resistance, 50 N·m, and advised a larger clutch."""
+    scene = (CLUTCHED.replace("[scene]\n", f'[scene]\nlocale = "{locale}"\n') + "resisting_torque = [[0, 50], "
+             "[360, 50]]\nbrake = { torque = 40.0, at = 0.5 }\n")
+    assert _run(tmp_path, scene) == 0
+    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    stop, angle = 0.5 + 2.5 / 15.0, math.degrees(0.625 + 2.5 ** 2 / 30.0)
+    assert told == (f"warning: dynamics: the brake applied at t = 0.5 s brings the machine to rest at t = {stop:.4g} "
+                    f"s, φ = {angle:.1f}°, where the clutch, slipping at its 60 N·m, cannot turn it against the "
+                    "brake's 40 N·m and the resistance there, 50 N·m (a smaller dynamics.brake.torque keeps it "
+                    "turning; dynamics.motor.off_at switches the motor off to stop it)")
+    assert sentence in (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+
+
+def test_a_clutch_short_of_mr_alone_where_the_braked_machine_stalls_is_blamed_not_the_brake(tmp_path, capsys):
+    """Mr rises from 50 to 100 N·m at 90°: a brake of 5 N·m at 0.5 s still lets 60 N·m speed the shaft up
+    ((60 − 55)/2 > 0), and it stalls past 90°, where 60 N·m is short of Mr's 100 alone: the clutch is to blame."""
+    scene = CLUTCHED + "resisting_torque = [[0, 50], [90, 50], [90, 100], [360, 100]]\nbrake = { torque = 5.0, at = 0.5 }\n"
+    assert _run(tmp_path, scene) == 0
+    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    assert "the clutch, slipping at its 60 N·m, cannot carry it past the resistance there, 100 N·m" in told
+    assert "brake" not in told
+
+
 def test_the_motion_plot_names_the_brake_that_holds_the_machine_where_it_stands():
     """HELD's machine run from Python: the brake at 0.5 s brings it to rest at 0.5 + 12.5/15 s (as above), and on
     from the start it holds the machine where it stands (150 N·m against 100 + 80).  A brake of damping alone takes
@@ -103,6 +142,15 @@ def test_the_motion_plot_names_the_brake_that_holds_the_machine_where_it_stands(
     for locale in ("en", "ru", "zh"):
         text = strings(locale)
         assert _why_not_steady(held, text, 170.0) == text["motion_never_starts_clutch"].format(angle="170")
+    # 60 N·m through it beats Mr's 50 N·m alone: the brake at 0.5 s, not the clutch, brings it to rest.
+    braked = simulate(Machine(2.0, resisting=50.0), motor, brake=Brake(torque=40.0, at=0.5),
+                      clutch=Clutch(60.0, inertia=1.0), duration=2.0, rtol=1e-10)
+    assert braked.stall is Stall.BRAKE_CLUTCH and braked.stall_brake is braked.brake
+    for locale in ("en", "ru", "zh"):
+        text = strings(locale)
+        mark = text["decimal_mark"]
+        assert _why_not_steady(braked, text, 47.75) == text["motion_stalled_braked_clutch"].format(
+            time=f"0{mark}6667", angle=f"47{mark}75", at=f"0{mark}5")
     damped = simulate(Machine(2.0, resisting=lambda phi, omega: 100.0 + 200.0 * (phi > 1.0)), motor,
                       brake=Brake(damping=1.0), rtol=1e-10)
     assert damped.stall is Stall.MOTOR and damped.stall_brake is None

@@ -38,6 +38,7 @@ class Stall(enum.Enum):
     MOTOR = "stalled"  # having turned the machine, the motor cannot carry it past the resistance
     CLUTCH = "stalled_clutch"  # having turned the machine, the clutch slipping at its torque cannot
     BRAKE = "stalled_braked"  # the brake, applied as the motor drove it, brought it to rest against the motor
+    BRAKE_CLUTCH = "stalled_braked_clutch"  # or against the clutch, slipping at a torque that beats Mr alone
     NEVER_STARTS = "never_starts"  # the motor cannot move it from where it stands
     NEVER_STARTS_CLUTCH = "never_starts_clutch"  # nor can the clutch, slipping at its torque from the start
     NEVER_STARTS_BRAKED = "never_starts_braked"  # what drives it would, but not against the brake on from the start
@@ -121,9 +122,9 @@ class MachineMotion:
 
     @property
     def stall_brake(self) -> Brake | None:
-        """The run's brake where it is what holds the machine where it stalled (:attr:`stall` ``BRAKE`` or
-        ``NEVER_STARTS_BRAKED``); None where something else fell short, or it did not stall."""
-        return self.brake if self.stall in (Stall.BRAKE, Stall.NEVER_STARTS_BRAKED) else None
+        """The run's brake where it is what holds the machine where it stalled (:attr:`stall` ``BRAKE``,
+        ``BRAKE_CLUTCH`` or ``NEVER_STARTS_BRAKED``); None where something else fell short, or it did not stall."""
+        return self.brake if self.stall in (Stall.BRAKE, Stall.BRAKE_CLUTCH, Stall.NEVER_STARTS_BRAKED) else None
 
     def state_at(self, times: ArrayLike) -> np.ndarray:
         """The state ``[φ, ω, …]`` at the given times (rows are the components)."""
@@ -301,8 +302,9 @@ def _stall(motion: MachineMotion, machine: Machine) -> Stall | None:
     """What fell short where the machine stalled (None where it did not).  Where the shaft never turned: the torque
     that reached it at rest (:attr:`~MachineMotion.torque_at_rest`) against Mr there, a brake on from the start
     blamed only where that torque overcomes Mr alone (the machine would start without it), else the clutch where it
-    slips, or the motor.  Where it turned: the clutch where it still slips, else the brake where it was on by the
-    time the machine came to rest, or the motor."""
+    slips, or the motor.  Where it turned: the brake where it was on by the time the machine came to rest, unless the
+    clutch still slips at a capacity short of Mr there; else the clutch where it slips, or the motor.  (A motor that
+    came to rest against the brake is not weighed against Mr there: it may have carried the machine past it.)"""
     if motion.stalled_at is None:
         return None
     brake = motion.brake
@@ -315,7 +317,8 @@ def _stall(motion: MachineMotion, machine: Machine) -> Stall | None:
             return Stall.NEVER_STARTS_BRAKED
         return Stall.NEVER_STARTS_CLUTCH if motion.stalled_slipping else Stall.NEVER_STARTS
     if motion.stalled_slipping:
-        return Stall.CLUTCH
+        held = brake_holds(motion.stalled_at) and motion.clutch.torque > machine.mr(float(motion.phi[-1]), 0.0)
+        return Stall.BRAKE_CLUTCH if held else Stall.CLUTCH
     return Stall.BRAKE if brake_holds(motion.stalled_at) else Stall.MOTOR
 
 

@@ -371,6 +371,10 @@ def _stall(note: Writer, dynamics) -> None:
     elif stall is Stall.BRAKE:
         note.para(note.t("note_dyn_stalled_braked", time=note.n(motion.stalled_at, 4), angle=angle,
                          at=note.n(motion.brake.at, 4), brake=note.n(motion.brake.torque), resisting=resisting))
+    elif stall is Stall.BRAKE_CLUTCH:
+        note.para(note.t("note_dyn_stalled_braked_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
+                         at=note.n(motion.brake.at, 4), torque=note.n(motion.clutch.torque),
+                         brake=note.n(motion.brake.torque), resisting=resisting))
     elif stall is Stall.CLUTCH:
         note.para(note.t("note_dyn_stalled_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
                          torque=note.n(motion.clutch.torque), resisting=resisting))
