@@ -369,6 +369,7 @@ def test_a_brake_that_brings_the_machine_to_rest_is_drawn_on_top_of_mr_from_wher
         assert mr[clear] == pytest.approx(scene_mr(mr_along[clear]))
         assert np.all(motion.motor_torque > scene_mr(np.degrees(motion.phi)))
         assert MOTOR_TORQUE < float(np.min(drawn[1:]))
+        assert re.sub(r"\s", "", lower.get_title()) == re.sub(r"\s", "", text["motion_stall_title"])
     finally:
         pyplot.close(figure)
 
@@ -410,5 +411,8 @@ def test_a_machine_no_brake_holds_draws_no_brake_curve(brake):
     try:
         lower = figure.axes[-1]
         assert text["motion_resisting"] in legend_texts(lower) and brake_line(lower, text) is None
+        # It never ran, so it did not stall: the plot says why it does not start, and where it stands.
+        assert re.sub(r"\s", "", lower.get_title()) == re.sub(r"\s", "", text["motion_never_starts_title"])
+        assert text["motion_rest_point"].format(angle="0") in legend_texts(lower)
     finally:
         pyplot.close(figure)

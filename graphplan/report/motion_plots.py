@@ -287,15 +287,18 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
         held = motion.clutch.torque
         plot.axhline(held, color=_FLYWHEEL, linewidth=1.0, linestyle="--",
                      label=text["motion_clutch_capacity"].format(torque=number(held, 4, mark)))
+    # A machine that never started did not stall after a run: it stands where it stood.
+    point = text["motion_stall_point"] if motion.turned else text["motion_rest_point"]
     plot.plot([end], [held], "o", color=_SHAFT, markersize=4,
-              label=text["motion_stall_point"].format(turned=number(end, 4, mark), angle=number(stall_deg, 4, mark),
-                                                      time=number(motion.stalled_at, 4, mark)))
+              label=point.format(turned=number(end, 4, mark), angle=number(stall_deg, 4, mark),
+                                 time=number(motion.stalled_at, 4, mark)))
     plot.axhline(0.0, color=_EVENT, linewidth=0.5)
     plot.set_xlim(0.0, right)
     plot.set_xticks(np.arange(0.0, right + 1.0, 30.0 * max(1, round(right / 360.0))))
     plot.set_xlabel(text["motion_turned_axis"])
     plot.set_ylabel(text["motion_moment_axis"])
-    plot.set_title(_broken(text["motion_stall_title"], 10), fontsize=10)
+    plot.set_title(_broken(text["motion_stall_title" if motion.turned else "motion_never_starts_title"], 10),
+                   fontsize=10)
     plot.grid(True, linewidth=0.3)
     # Under the plot, below the axis's words: inside, no corner is clear of a resistance that swings over the turn,
     # and a brake's curve above it.
