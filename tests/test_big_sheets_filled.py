@@ -111,3 +111,27 @@ def test_the_dynamics_fill_an_a1_sheet_at_a_standard_angle_scale(shaper):
     ticks = {item.text: item.at[0] for item in _layer(sheet, "dynamics-moments").items
              if isinstance(item, Text) and item.anchor == "middle" and item.text in ("0", "360")}
     assert ticks["360"] - ticks["0"] == pytest.approx(360.0 / degrees, abs=1e-6)
+
+
+def test_je_turned_runs_at_its_own_angle_scale_so_that_the_cycle_above_may_run_longer(shaper):
+    """Je(φ) turned under the energy–mass diagram shares its axis of Je with that diagram, not its φ with the
+    cycle's diagrams beside it: on A1 the cycle runs at 1°/mm while Je(φ) runs shorter (at 1°/mm it was as tall
+    as the cycle is long, and held the whole drawing at 1.5°/mm).  Each is drawn as long as its own μφ says."""
+    model = equivalent_model_of(shaper)
+    flywheel = flywheel_for(model, 0.05)
+    (sheet,) = dynamics_sheet([dynamics_panel(layout(model, flywheel), "en",
+                                              lambda: larger_layouts(model, flywheel), "A1")], "A1")
+    above = _number(r"μφ = ([0-9.]+)°/mm", _written(sheet, "dynamics-moments"))
+    turned = _number(r"μφ = ([0-9.]+)°/mm", _written(sheet, "dynamics-inertia"))
+    assert above == 1.0 and turned > above
+    column = _layer(sheet, "dynamics-inertia")
+    ticks = {item.text: item.at[1] for item in column.items
+             if isinstance(item, Text) and item.anchor == "end" and item.text in ("0", "360")}
+    assert ticks["0"] - ticks["360"] == pytest.approx(360.0 / turned, abs=1e-6)
+    # The curve over the whole cycle, Je across at the energy–mass diagram's μJ, φ down at the column's μφ.
+    curve = next(item for item in column.items if isinstance(item, Polyline) and len(item.points) > 2)
+    heights = [y for _, y in curve.points]
+    assert max(heights) - min(heights) == pytest.approx(360.0 / turned, rel=1e-9)
+    mu_j = _number(r"μJ = ([0-9.]+) kg·m²/mm", _written(sheet, "dynamics-inertia"))
+    widths = [x for x, _ in curve.points]
+    assert max(widths) - min(widths) == pytest.approx(float(np.ptp(model.inertia)) / mu_j, rel=1e-9)

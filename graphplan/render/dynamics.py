@@ -97,30 +97,52 @@ class Scales:
     inertia: float    # μJ, kg·m²/mm (kg/mm)
     # μm, kg/mm, of the reduced mass over a slider's travel (a driver that turns has none); 0: fitted to WORKS_MM.
     mass: float = 0.0
+    # μφ, rad/mm, of Je(φ) turned under the energy–mass diagram, which shares its axis of Je with that diagram and
+    # nothing with the φ axes beside it: on a big sheet it may run shorter than they do, and let their fields grow
+    # (it hung the whole column's height on the cycle's length); 0: the abscissa's μφ.
+    turned: float = 0.0
+
+    @property
+    def turned_angle(self) -> float:
+        """μφ of Je(φ) turned, rad/mm."""
+        return self.turned or self.angle
 
 
 # Drawn larger to fill a big sheet (:func:`larger_layouts`): the abscissa of a cycle at 1.5°/mm and 1°/mm besides
-# the usual 2°/mm, and the fields this many times their usual height.
+# the usual 2°/mm, and the fields this many times their usual height; Je(φ) turned as long as the abscissa, or as
+# long as one of the shorter ones (at 3°/mm the shortest).
 LARGER_ABSCISSAE_MM = (360.0, 240.0, ABSCISSA_MM)
 LARGER_FIELDS = (2.0, 1.6, 1.3, 1.0)
+TURNED_MM = (*LARGER_ABSCISSAE_MM[1:], 120.0)
 
 
-def scales_for(model: EquivalentModel, abscissa_mm: float = ABSCISSA_MM, fields: float = 1.0) -> Scales:
+def scales_for(model: EquivalentModel, abscissa_mm: float = ABSCISSA_MM, fields: float = 1.0,
+               turned_mm: float | None = None) -> Scales:
     """Round scales at which each diagram fills its field: the cycle ``abscissa_mm`` long, each field ``fields``
-    times its usual height (:data:`MOMENTS_MM`, ...; the energy–mass diagram as many times its width)."""
-    if model.turning and model.cyclic:
-        angle = 2.0 * math.pi / abscissa_mm
-    elif model.turning:  # a swing: a round number of degrees per millimetre
-        angle = math.radians(fit_scale(math.degrees(float(model.coordinate[-1])), abscissa_mm))
-    else:
-        angle = fit_scale(float(model.coordinate[-1]), abscissa_mm)
+    times its usual height (:data:`MOMENTS_MM`, ...; the energy–mass diagram as many times its width), and Je(φ)
+    turned ``turned_mm`` long (as long as the abscissa where not given, or where the drawing has no Je(φ))."""
+    angle = _angle_per_mm(model, abscissa_mm)
+    turned = 0.0
+    if turned_mm is not None and model.turning and not model.inertia_is_constant:
+        turned = _angle_per_mm(model, turned_mm)
+        turned = 0.0 if turned == angle else turned
     moments = np.concatenate([model.driving, model.resisting])
     works = np.concatenate([model.driving_work, model.resisting_work])
     mass = 0.0 if model.turning else \
         fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM * fields)
     return Scales(angle=angle, moment=fit_scale(_span(moments), MOMENTS_MM * fields),
                   work=fit_scale(_span(works), WORKS_MM * fields), energy=fit_scale(_span(model.energy), ENERGY_MM * fields),
-                  inertia=fit_scale(float(np.max(model.inertia)), ENERGY_MASS_MM * fields), mass=mass)
+                  inertia=fit_scale(float(np.max(model.inertia)), ENERGY_MASS_MM * fields), mass=mass, turned=turned)
+
+
+def _angle_per_mm(model: EquivalentModel, length_mm: float) -> float:
+    """μφ (rad/mm; a slider's μs, m/mm) at which the cycle, the swing or the travel is about ``length_mm`` long:
+    exactly, for a cycle; a round number of degrees (or metres) per millimetre otherwise."""
+    if model.turning and model.cyclic:
+        return 2.0 * math.pi / length_mm
+    if model.turning:
+        return math.radians(fit_scale(math.degrees(float(model.coordinate[-1])), length_mm))
+    return fit_scale(float(model.coordinate[-1]), length_mm)
 
 
 def larger_layouts(model: EquivalentModel, flywheel: Flywheel | None = None,
@@ -132,10 +154,11 @@ def larger_layouts(model: EquivalentModel, flywheel: Flywheel | None = None,
     seen = {scales_for(model)}
     for abscissa in LARGER_ABSCISSAE_MM:
         for fields in LARGER_FIELDS:
-            scales = scales_for(model, abscissa, fields)
-            if scales not in seen:
-                seen.add(scales)
-                found.append(layout(model, flywheel, text, scales))
+            for turned in (abscissa, *(length for length in TURNED_MM if length < abscissa)):
+                scales = scales_for(model, abscissa, fields, turned)
+                if scales not in seen:
+                    seen.add(scales)
+                    found.append(layout(model, flywheel, text, scales))
     return found
 
 
@@ -240,7 +263,7 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
     scale_y = top_mm + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), heading, HEADING, "start", weight="bold"))
-    scale_line = f"{scale_text}, {_angle_scale(model, scales, words)}"
+    scale_line = f"{scale_text}, {_angle_scale(model, scales.angle, words)}"
     items.append(Text((0.0, scale_y), scale_line, LABEL, "start"))
     # The legend runs on along the scale's line, each curve's stroke before its name.
     cursor = text_width(scale_line, LABEL) + 8.0
@@ -388,14 +411,15 @@ def _numbered_positions(model: EquivalentModel, scales: Scales, drawn: Sequence[
 def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> list[Primitive]:
     """Je(φ) with Je across (the energy–mass diagram's abscissa) and φ running down from y = 0."""
     xs = model.inertia / scales.inertia
-    ys = -model.coordinate / scales.angle
+    angle = scales.turned_angle
+    ys = -model.coordinate / angle
     width = float(np.max(xs))
     items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE)]
     length = float(-ys[-1])
     items.append(Arrow((0.0, 0.0), (0.0, -length - AXIS_RUN_MM), THIN, head=2.5))
     items.append(Text((1.5, -length - AXIS_RUN_MM - LABEL), words["dyn_angle_axis"], LABEL, "start"))
     for psi, label in _angle_ticks(model):
-        at = -psi / scales.angle
+        at = -psi / angle
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
         items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), label, LABEL, "end"))
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
@@ -408,14 +432,14 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
     if model.plans:
         # Je read off each position's velocity plan, ringed on the curve of the exact Je: the two methods side
         # by side; the legend on a line of its own under the scale, so that the diagram grows no wider.
-        items += [Circle((plan.inertia / scales.inertia, -_travel(model, plan.driver) / scales.angle), PLAN_RING_MM,
+        items += [Circle((plan.inertia / scales.inertia, -_travel(model, plan.driver) / angle), PLAN_RING_MM,
                          THIN, None) for plan in model.plans]
         items.append(Circle((PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((2 * PLAN_RING_MM + 2.0, scale_y), words["dyn_inertia_plans"], LABEL, "start"))
         scale_y += LABEL + 2.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_inertia"], HEADING, "start", weight="bold"))
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
-                                      f"{_angle_scale(model, scales, words)}", LABEL, "start"))
+                                      f"{_angle_scale(model, angle, words)}", LABEL, "start"))
     return items
 
 
@@ -441,11 +465,11 @@ def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:
             for degrees in np.arange(0.0, span * (1 + 1e-9), nice_step(span / 6))]
 
 
-def _angle_scale(model: EquivalentModel, scales: Scales, words: Mapping[str, str]) -> str:
+def _angle_scale(model: EquivalentModel, angle: float, words: Mapping[str, str]) -> str:
+    """The scale line of a φ axis drawn at ``angle`` (rad/mm; a slider's travel, m/mm)."""
     if model.turning:
-        return words["dyn_angle_scale"].format(degrees=short(math.degrees(scales.angle), 4),
-                                               radians=short(scales.angle, 4))
-    return words["dyn_travel_scale"].format(value=format_scale(scales.angle))
+        return words["dyn_angle_scale"].format(degrees=short(math.degrees(angle), 4), radians=short(angle, 4))
+    return words["dyn_travel_scale"].format(value=format_scale(angle))
 
 
 def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[str, str]) -> list[Primitive]:
