@@ -118,8 +118,8 @@ def _frame_points_at_one_place(mechanism: Mechanism) -> str | None:
             if abs(points[second] - points[first]) <= noise:
                 place = points[first]
                 return (f"frame points {first} and {second} stand at one place, [{place.real:.6g}, {place.imag:.6g}], "
-                        f"so the links pivoted at them turn about one axis: give {second} its own place (its coordinates copied from {first}?), or check the "
-                        f"lengths")
+                        f"so the links pivoted at them turn about one axis: give {second} its own place (its "
+                        f"coordinates copied from {first}?), or check the lengths")
     return None
 
 
