@@ -924,6 +924,31 @@ def test_one_correction_plane_for_masses_whose_moments_cancel_is_no_disc(tmp_pat
     assert "Its masses turn at z = 0 … 0.2 m and the correction at z = 0.1 m; their moments" in note
 
 
+@pytest.mark.parametrize(("locale", "where", "span"), [
+    ("en", "Its masses turn at z = 0.1 m and the correction at z = 0.3 m, and one plane", "z = 0.1 … 0.1 m"),
+    ("ru", "Его массы вращаются при z = 0,1 м, корректирующая — при z = 0,3 м, и одна плоскость", "z = 0,1 … 0,1 м"),
+    ("zh", "各质量位于 z = 0.1 m，校正质量位于 z = 0.3 m，一个平面", "z = 0.1 … 0.1 m"),
+], ids=["en", "ru", "zh"])
+def test_masses_in_one_plane_corrected_in_another_are_placed_at_their_z_not_a_range_of_it(tmp_path, locale, where,
+                                                                                           span):
+    """A disc at z = 0.1 corrected at planes = [0.3] (a pulley corrected on its hub's face) was said to turn at
+    "z = 0.1 … 0.1 m", a span of one plane."""
+    from graphplan.cli import main
+
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(f'[scene]\ntitle = "Rotor"\nlocale = "{locale}"\n[balancing]\n'
+                     'masses = [ { mass = 2.0, radius = 0.1, angle = 0.0, plane = 0.1 },\n'
+                     '           { mass = 1.0, radius = 0.1, angle = 90.0, plane = 0.1 } ]\n'
+                     'planes = [0.3]\ncorrection_radius = 0.1\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert where in note and span not in note
+    # Σ m·r = 0.2 + 0.1i kg·m at z = 0.1 and its correction −Σ m·r at z = 0.3 leave (0.1 − 0.3)·(0.2 + 0.1i):
+    # |−0.04 − 0.02i| = 0.02·√5 = 0.044721 kg·m², the couple the sentence goes on to name.
+    couple = f"{0.02 * math.sqrt(5):.5g}".replace(".", "," if locale == "ru" else ".")
+    assert f"Σ m·r·z = {couple} " in note
+
+
 @pytest.mark.parametrize(("locale", "plane"), [("en", "Balancing of the rotor: Correction plane"),
                                                ("ru", "Уравновешивание ротора: Плоскость коррекции"),
                                                ("zh", "转子平衡: 校正平面")])

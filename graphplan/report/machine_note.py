@@ -420,8 +420,11 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
                 for mass, share_left, share_right in zip(spec.masses, left.factors, right.factors, strict=True)]
         note.table(note.t("note_bal_shares"), header, rows, "lrrrrr")
     elif (couple := static_couple(result)) is not None:
-        note.para(note.t("note_bal_static_planes", equation=planes[0].equation, low=note.n(min(along)),
-                         high=note.n(max(along)), plane=note.n(planes[0].position), moment=note.n(couple)))
+        # Masses of one plane (a disc corrected on its hub's face) turn at one z, not over "z = 0.1 … 0.1 m".
+        where = (note.t("note_bal_along_one", z=note.n(along[0])) if len(set(along)) == 1
+                 else note.t("note_bal_along_span", low=note.n(min(along)), high=note.n(max(along))))
+        note.para(note.t("note_bal_static_planes", equation=planes[0].equation, along=where,
+                         plane=note.n(planes[0].position), moment=note.n(couple)))
     elif len(set(along)) > 1:
         # Masses in several planes whose moments about the correction's plane happen to cancel: no disc.
         note.para(note.t("note_bal_static_planes_even", equation=planes[0].equation, low=note.n(min(along)),
