@@ -112,6 +112,13 @@ def vector_name(name: str) -> str:
     return f"(m·r){name}"
 
 
+def direction_deg(vector: complex) -> float:
+    """The direction of a mass-radius product in [0, 360) degrees.  A phase a rounding below 0 (Σ m·r along +x of a
+    mass at −180°, e^(−iπ) = −1 − 1.2e-16i) is 0, not the 360.0 that ``% 360`` makes of it."""
+    angle = math.degrees(cmath.phase(vector)) % 360.0
+    return 0.0 if angle >= 360.0 else angle
+
+
 def default_plane_names(count: int) -> tuple[str, ...]:
     """The correction planes' names where the scene gives none: L and R of two, b of one."""
     return DYNAMIC_PLANE_NAMES if count == 2 else STATIC_PLANE_NAMES
@@ -279,8 +286,7 @@ class CorrectionPlane:
         no direction, and 0° would read as a correction set along x."""
         if not self.needed:
             return None
-        angle = math.degrees(cmath.phase(self.correction)) % 360.0
-        return 0.0 if angle >= 360.0 else angle
+        return direction_deg(self.correction)
 
     @property
     def mass(self) -> float | None:
@@ -546,8 +552,8 @@ def balancing_results(result: BalancingResult) -> dict[str, Any]:
     return {
         "kind": result.kind,
         # A rotor balanced already has no unbalance to point anywhere: its angle is null, as a zero correction's.
-        "unbalance": {"mass_radius": force, "angle_deg": math.degrees(cmath.phase(result.unbalance)) % 360.0
-                      if force else None, "moment": moment},
+        "unbalance": {"mass_radius": force, "angle_deg": direction_deg(result.unbalance) if force else None,
+                      "moment": moment},
         "planes": planes,
         # Zero but for rounding where the corrections balance: written as 0 below 1e-12 of the rotor's own
         # unbalance (not of the corrections, which cancellation may have blown up), as results.json writes every
@@ -670,5 +676,5 @@ def _above_noise(value: float, scale: float) -> float:
 
 
 __all__ = ["LARGE_CORRECTIONS", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PlanesClose",
-           "PolygonVector", "RotatingMass", "balance", "balancing_results", "cautions", "label_clash",
+           "PolygonVector", "RotatingMass", "balance", "balancing_results", "cautions", "direction_deg", "label_clash",
            "lengths_in_millimetres", "planes_close", "read_balancing", "static_couple", "vector_name"]

@@ -393,6 +393,18 @@ def test_a_correction_just_short_of_a_whole_turn_is_written_at_0_degrees():
     assert "mbrb = 0.1000 kg·m, θb = 0.0°" in written
 
 
+def test_an_unbalance_along_x_is_written_at_0_degrees_not_a_whole_turn():
+    """The results' angles lie in [0°, 360°): 2·0.1 kg·m at 0° and 1·0.1 kg·m at −180° leave Σ m·r = 0.2 − 0.1 =
+    0.1 kg·m along +x, at 0°, its correction at 180°.  e^(−iπ) has the imaginary part −1.2e-16, so the phase of the sum
+    came out a hair below 0 and the unbalance was written at 360.0°."""
+    result = balance(BalancingSpec([RotatingMass(2.0, 0.1, 0.0), RotatingMass(1.0, 0.1, -180.0)],
+                                   correction_radius=0.1))
+    written = balancing_results(result)
+    assert written["unbalance"]["mass_radius"] == pytest.approx(0.1, rel=1e-12)
+    assert written["unbalance"]["angle_deg"] == pytest.approx(0.0, abs=1e-9)
+    assert written["planes"][0]["angle_deg"] == pytest.approx(180.0, abs=1e-9)
+
+
 def test_a_locale_replaces_the_strings():
     result = balance(BalancingSpec([RotatingMass(1, 0.1, 30)], correction_radius=0.1))
     texts = [item.text for layer in drawing.layout(result, {"bal_disc": "Плоскость коррекции {name}"})
