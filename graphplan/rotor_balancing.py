@@ -387,6 +387,12 @@ def _close_polygon(name: str, position: float, factors: tuple[float, ...], masse
 # --- the scene table -------------------------------------------------------------------------
 
 
+# The symbols the textbooks give a rotating mass's keys by (lower case, as ``Table.named_otherwise`` compares them).
+_MASS_SYMBOLS = (("radius", frozenset({"r", "ri"}), "a mass's radius"),
+                 ("angle", frozenset({"theta", "θ", "phi", "φ", "alpha", "α"}), "a mass's angle"),
+                 ("plane", frozenset({"z", "zi"}), "a mass's axial position"))
+
+
 def read_balancing(table: Table) -> BalancingSpec:
     """The ``[balancing]`` table of a scene as a :class:`BalancingSpec`, each bad key named by its path.
 
@@ -404,6 +410,10 @@ def read_balancing(table: Table) -> BalancingSpec:
     named: list[str] = []
     for where, item in pairs:
         entry = Table(item, where)
+        # A key written as the textbook's symbol is named with the one to write: "radius: is required but missing"
+        # left the r typed for it unmentioned, and z was an unknown key with no word of plane.
+        for key, symbols, what in _MASS_SYMBOLS:
+            entry.named_otherwise(key, symbols, what)
         mass = entry.number("mass", positive=True)
         radius = entry.number("radius", non_negative=True)
         angle = entry.number("angle")

@@ -734,6 +734,22 @@ def vibration_results(spec: VibrationSpec) -> dict[str, Any]:
 # --- the scene table -------------------------------------------------------------------------------
 
 
+# The symbols the textbooks write a machine's and its shaft's keys as (lower case, as ``Table.named_otherwise``
+# compares them); the speed's (n, ω) are told by ``Table.speed``.
+_MACHINE_SYMBOLS = (("stiffness", frozenset({"k"}), "the mounts' stiffness"),
+                    ("unbalance", frozenset({"me", "m·e", "m*e", "m_e"}), "the unbalance m·e"),
+                    ("eccentricity", frozenset({"e"}), "the eccentricity"),
+                    ("damping_ratio", frozenset({"zeta", "ζ", "xi"}), "the damping ratio ζ"),
+                    ("damping", frozenset({"c"}), "the damping coefficient c"),
+                    ("transmissibility", frozenset({"tr"}), "the transmissibility wanted"),
+                    ("base_amplitude", frozenset({"y"}), "the base's amplitude Y"))
+_SHAFT_SYMBOLS = (("modulus", frozenset({"e"}), "the shaft's modulus of elasticity E"),
+                  ("diameter", frozenset({"d"}), "the shaft's diameter"),
+                  ("second_moment", frozenset({"i"}), "the shaft's second moment of area I"),
+                  ("length", frozenset({"l"}), "the shaft's span"),
+                  ("position", frozenset({"a"}), "the disc's place on the shaft"))
+
+
 def read_vibration(table: Table, driver_speed: float | None = None) -> VibrationSpec:
     """The ``[vibration]`` table of a scene as a :class:`VibrationSpec`, each bad key named by its path.
 
@@ -744,6 +760,10 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
     |ω| in rad/s, is given: the machine turns at it); ``transmissibility``
     (wanted, optional); ``base_amplitude`` (m, optional: the base moving at ω too).
     """
+    # A key written as the textbook's symbol is named with the one to write: "stiffness: is required (or shaft)" left
+    # the k typed for it unmentioned.
+    for key, symbols, what in _MACHINE_SYMBOLS:
+        table.named_otherwise(key, symbols, what)
     mass = table.number("mass", positive=True)
     unbalance, eccentricity = _unbalance(table, mass)
     shaft = _shaft(table)
@@ -808,6 +828,8 @@ def _shaft(table: Table) -> Shaft | None:
         return None
     shaft = table.table("shaft")
     assert shaft is not None
+    for key, symbols, what in _SHAFT_SYMBOLS:
+        shaft.named_otherwise(key, symbols, what)
     modulus = shaft.number("modulus", positive=True)
     if shaft.has("second_moment") and shaft.has("diameter"):
         raise SceneError(shaft.where("diameter"), "give either second_moment or diameter, not both")

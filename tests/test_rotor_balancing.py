@@ -305,6 +305,20 @@ def test_a_bad_table_names_the_key(data, message):
         read(data)
 
 
+@pytest.mark.parametrize(("entry", "message"), [
+    # "radius: is required but missing" of a mass whose radius was there, under the textbook's r.
+    ({"mass": 1, "r": 0.1, "angle": 0}, r"^balancing.masses\[0\].r: unknown key; .* radius: write radius = 0.1$"),
+    ({"mass": 1, "radius": 0.1, "theta": 30}, r"^balancing.masses\[0\].theta: unknown key; .* angle: write angle = 30$"),
+    ({"mass": 1, "radius": 0.1, "φ": 30}, r"^balancing.masses\[0\].φ: unknown key; .* angle: write angle = 30$"),
+    # "z: unknown key", with no word of plane.
+    ({"mass": 1, "radius": 0.1, "angle": 0, "z": 0.2},
+     r"^balancing.masses\[0\].z: unknown key; .* plane: write plane = 0.2$"),
+])
+def test_a_mass_given_by_the_textbooks_symbols_is_told_the_key_to_write(entry, message):
+    with pytest.raises(SceneError, match=message):
+        read({"masses": [entry], "planes": [0, 1]})
+
+
 # --- results --------------------------------------------------------------------------------------------
 
 

@@ -399,6 +399,35 @@ def test_a_bad_table_names_the_key(data, message):
         read(data)
 
 
+_MACHINE = {"mass": 100.0, "unbalance": 0.02, "stiffness": 1e5, "rpm": 600.0}
+
+
+@pytest.mark.parametrize(("replaced", "given", "message"), [
+    # "stiffness: is required (or shaft)" of a table that gave it, under the textbook's k.
+    ("stiffness", {"k": 1e5}, r"^vibration.k: unknown key; .* stiffness: write stiffness = 100000.0$"),
+    ("unbalance", {"me": 0.02}, r"^vibration.me: unknown key; .* unbalance: write unbalance = 0.02$"),
+    (None, {"zeta": 0.1}, r"^vibration.zeta: unknown key; .* damping_ratio: write damping_ratio = 0.1$"),
+    (None, {"ζ": 0.1}, r"^vibration.ζ: unknown key; .* damping_ratio: write damping_ratio = 0.1$"),
+    (None, {"c": 400.0}, r"^vibration.c: unknown key; .* damping: write damping = 400.0$"),
+    (None, {"TR": 0.2}, r"^vibration.TR: unknown key; .* transmissibility: write transmissibility = 0.2$"),
+    (None, {"Y": 0.001}, r"^vibration.Y: unknown key; .* base_amplitude: write base_amplitude = 0.001$"),
+    ("stiffness", {"shaft": {"E": 2.1e11, "d": 0.03, "length": 0.5}},
+     r"^vibration.shaft.E: unknown key; .* modulus: write modulus = 210000000000.0$"),
+    ("stiffness", {"shaft": {"modulus": 2.1e11, "d": 0.03, "length": 0.5}},
+     r"^vibration.shaft.d: unknown key; .* diameter: write diameter = 0.03$"),
+    ("stiffness", {"shaft": {"modulus": 2.1e11, "I": 4e-8, "length": 0.5}},
+     r"^vibration.shaft.I: unknown key; .* second_moment: write second_moment = 4e-08$"),
+    ("stiffness", {"shaft": {"modulus": 2.1e11, "diameter": 0.03, "L": 0.5}},
+     r"^vibration.shaft.L: unknown key; .* length: write length = 0.5$"),
+    ("stiffness", {"shaft": {"modulus": 2.1e11, "diameter": 0.03, "length": 0.5, "a": 0.2}},
+     r"^vibration.shaft.a: unknown key; .* position: write position = 0.2$"),
+])
+def test_a_machine_given_by_the_textbooks_symbols_is_told_the_key_to_write(replaced, given, message):
+    data = {key: value for key, value in _MACHINE.items() if key != replaced} | given
+    with pytest.raises(SceneError, match=message):
+        read(data)
+
+
 def test_results_carry_the_contract_keys():
     spec = VibrationSpec(mass=100.0, unbalance=0.02, stiffness=1.0e5, damping_ratio=0.1, omega=60.0,
                          transmissibility=0.2)
