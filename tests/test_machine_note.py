@@ -215,7 +215,7 @@ base_amplitude = 0.0005
     response = (1 + 2j * zeta * r) / (1 - r * r + 2j * zeta * r)
     machine, relative = base * abs(response), base * abs(response - 1)
     lag = -math.degrees(cmath.phase(response))
-    found = re.search(r"moves the machine by X = .* = (\d+(?:\.\d+)?) m, lagging the base by (\d+(?:\.\d+)?)° .* "
+    found = re.search(r"moves the instrument by X = .* = (\d+(?:\.\d+)?) m, lagging the base by (\d+(?:\.\d+)?)° .* "
                       r"is Z = .* = (\d+(?:\.\d+)?) m\.", note)
     assert found and agrees(found.group(1), machine) and agrees(found.group(2), lag, 4)
     assert agrees(found.group(3), relative)
@@ -227,6 +227,31 @@ base_amplitude = 0.0005
     assert document["amplitude"] == pytest.approx(machine, rel=1e-10)
     assert document["relative_amplitude"] == pytest.approx(relative, rel=1e-10)
     assert document["phase_deg"] == pytest.approx(lag, rel=1e-10)
+
+
+@pytest.mark.parametrize(("locale", "instrument", "moves", "machine"), [
+    ("en", "The instrument, of mass M = 20 kg", "moves the instrument by X = Y·√(1 + (2ζr)²)/√((1 − r²)² + (2ζr)²) = 0.0005·{tr} = {x} m", "the machine"),
+    ("ru", "Прибор массой M = 20 кг", "раскачивает прибор с амплитудой X = Y·√(1 + (2ζr)²)/√((1 − r²)² + (2ζr)²) = 0,0005·{tr} = {x} м", "машин"),
+    ("zh", "质量 M = 20 kg 的仪器", "使仪器振幅 X = Y·√(1 + (2ζr)²)/√((1 − r²)² + (2ζr)²) = 0.0005·{tr} = {x} m", "机器"),
+], ids=["en", "ru", "zh"])
+def test_an_instrument_on_a_shaken_floor_is_not_called_a_machine(tmp_path, locale, instrument, moves, machine):
+    """The note named the instrument, then said the base "moves the machine by X" (раскачивает машину, 使机器振幅):
+    a machine the scene, with no unbalance, has not."""
+    floor = ("[vibration]\nmass = 20.0\nunbalance = 0.0\nstiffness = 2.0e4\ndamping_ratio = 0.05\nrpm = 1200\n"
+             "base_amplitude = 0.0005\n")
+    _, note = note_of(tmp_path, floor, locale)
+    # r = (1200·2π/60)/√(2·10⁴/20) = 125.664/31.623 = 3.97384; X/Y = √(1 + (2ζr)²)/√((1 − r²)² + (2ζr)²)
+    # = √(1 + 0.397384²)/√(14.7914² + 0.397384²) = 1.076078/14.79674 = 0.072723, X = 0.0005·0.072723 = 0.000036362 m.
+    r = (1200 * 2 * math.pi / 60) / math.sqrt(2.0e4 / 20.0)
+    tr = math.hypot(1.0, 0.1 * r) / math.hypot(1.0 - r * r, 0.1 * r)
+    assert tr == pytest.approx(0.072723, rel=1e-5)
+
+    def five_digits(number: float) -> str:  # as the note writes a value: five significant digits, no exponent
+        return np.format_float_positional(float(f"{number:.5g}"), trim="-").replace(".", "," if locale == "ru" else ".")
+
+    written = moves.format(tr=five_digits(tr), x=five_digits(0.0005 * tr))
+    assert instrument in note and written in note, note
+    assert machine not in note.split("\n## ")[1].split("![")[0], note
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])

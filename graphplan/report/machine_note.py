@@ -598,7 +598,8 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
                          transmitted=note.n(response.transmitted_force)))
     if response.base is not None:
         base = response.base
-        note.para(note.t("note_vib_base", base=base_text, tr=tr,
+        # With no unbalance the scene is an instrument on a shaken floor, as the model's sentence names it.
+        note.para(note.t("note_vib_base_instrument" if balanced else "note_vib_base", base=base_text, tr=tr,
                          amplitude=note.n(base.amplitude), phase=note.n(math.degrees(base.phase), 4),
                          magnification=magnification, relative=note.n(base.relative)))
         if balanced:
