@@ -150,7 +150,8 @@ def _refuse_dynamics_overflow(scene: Scene, analysis: Analysis | None) -> None:
     from .render.sheet import dynamics_panel
     from .render.title_block import form_of
 
-    machine, _ = _machine_layouts(_dynamics_of(scene, analysis, None), _dynamics_words(scene, analysis))
+    dynamics = _dynamics_of(scene, analysis, None)
+    machine, _ = _machine_layouts(dynamics, _dynamics_words(scene, analysis, dynamics))
     pack([dynamics_panel(machine, scene.locale)], scene.drawing.sheet, form_of(scene.locale))
 
 
@@ -225,14 +226,21 @@ def _balancing_layers(scene: Scene) -> list[Layer]:
     return balancing_layout.layout(balance(scene.balancing), strings(scene.locale))
 
 
-def _dynamics_words(scene: Scene, analysis: Analysis | None) -> dict[str, str]:
-    """The locale's strings for the dynamics' drawings and plots: of a linkage, their angle is counted from the
-    first position, where its cycle starts (the note's φ of ωmax and ωmin is the crank's own angle)."""
+def _dynamics_words(scene: Scene, analysis: Analysis | None, dynamics: MachineDynamics) -> dict[str, str]:
+    """The locale's strings for the dynamics' drawings and plots: of a linkage, their angle (a slider's travel) is
+    counted from the position where the model's run starts (the note's φ of ωmax and ωmin is the crank's own
+    angle, and its table's s the slider's own displacement)."""
     text = strings(scene.locale)
     if analysis is None:
         return text
-    axis = text["angle_axis_from_position"].format(number=int(analysis.positions.numbers[0]))
-    return {**text, "dyn_angle_axis": axis, "motion_angle_axis": axis}
+    # A cycle starts at the first position; a swing or a travel that the driver runs from its far end (a lever
+    # lowered, a rod drawn in) starts at the last, and its drawing read "from position 1" there.
+    first = float(dynamics.model.driver[0])
+    _, start = min(zip(analysis.positions.values.tolist(), analysis.positions.numbers.tolist(), strict=True),
+                   key=lambda position: abs(position[0] - first))
+    angle = text["angle_axis_from_position"].format(number=start)
+    travel = text["travel_axis_from_position"].format(number=start)
+    return {**text, "dyn_angle_axis": angle, "motion_angle_axis": angle, "dyn_travel_axis": travel}
 
 
 # The pieces of a linkage drawn at μl, or on its sheets, or to scales that follow it (the diagrams' μs).
@@ -267,8 +275,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
     # The sheets hold the dynamics wherever the scene has them, as they hold the plans and forces unasked.
     if "dynamics" in pieces or ("sheets" in pieces and missing(analysis.scene, analysis, "dynamics") is None):
         tell("drawing the dynamics")
-        machine, larger = _machine_layouts(_dynamics_of(analysis.scene, analysis, dynamics),
-                                           _dynamics_words(analysis.scene, analysis))
+        dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
+        machine, larger = _machine_layouts(dynamics, _dynamics_words(analysis.scene, analysis, dynamics))
     # The sheets hold the drawings that are also written on their own: each is laid out once.
     if "sheets" in pieces:
         tell("laying out the sheets")
@@ -728,8 +736,8 @@ def figures(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         # A flywheel is sized only for a turning driver, the one the equation of motion is for.
         flywheel = dynamics.flywheel
         estimate = (dynamics.model.coordinate, flywheel.omega) if flywheel is not None else None
-        found["motion.svg"] = motion_figure(dynamics.motion, _dynamics_words(scene, analysis), scene.title, estimate,
-                                            dynamics.resisting, stall_angle_deg=dynamics.rest_angle_deg())
+        found["motion.svg"] = motion_figure(dynamics.motion, _dynamics_words(scene, analysis, dynamics), scene.title,
+                                            estimate, dynamics.resisting, stall_angle_deg=dynamics.rest_angle_deg())
     if "figures" in pieces and analysis is not None:
         from .report.figures import balancing_diagram
 
