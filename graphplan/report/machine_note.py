@@ -121,8 +121,9 @@ def _reductions(note: Writer, model) -> None:
         rows.append([str(plan.number), note.n(at, 4), note.n(plan.inertia), note.n(plan.inertia_exact),
                      _percent(note, plan.inertia_error_percent), note.n(plan.moment), note.n(plan.moment_exact),
                      _percent(note, plan.moment_error_percent)])
-    note.table(text["note_dyn_table"], header, rows, align="rrrrrrrr")
-    note.para(note.t(f"note_dyn_plans_load_{model.constant}", symbol=loaded))
+    # A slider's are a mass and a force, named as its drawing names them (Fr, not the crank's Mr).
+    note.table(text["note_dyn_table" if model.turning else "note_dyn_table_slider"], header, rows, align="rrrrrrrr")
+    note.para(note.t(f"note_dyn_plans_load_{kind}{model.constant}", symbol=loaded))
 
 
 def _percent(note: Writer, value: float) -> str:
