@@ -20,7 +20,7 @@ import io
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from . import kinematic_diagrams, load_diagrams
 from .analysis import Analysis
@@ -30,6 +30,9 @@ from .misreadings import FAR_OFF_PRECISIONS
 from .reader import check_choice
 from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene, guides_without_angle
+
+if TYPE_CHECKING:
+    from .dynamics import ConstantSideError
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = OUTPUT_PIECES
@@ -408,7 +411,7 @@ class MachineDynamics:
         return f"<MachineDynamics of {self.title!r}: {flywheel}, {motor}>"
 
     def __init__(self, source: Analysis | Scene) -> None:
-        from .dynamics import equivalent_model_of
+        from .dynamics import ConstantSideError, equivalent_model_of
         from .flywheel import diagram_model_of, flywheel_from_spec
 
         with _scene_values("dynamics"):
@@ -419,7 +422,10 @@ class MachineDynamics:
                 self.first_position: int | None = None
             else:
                 self.spec = source.scene.dynamics
-                self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
+                try:
+                    self.model = equivalent_model_of(source, self.spec.count, constant=self.spec.constant)
+                except ConstantSideError as refused:
+                    raise _constant_refused(refused) from refused
                 self.first_position = int(source.positions.numbers[0])
             self.flywheel = flywheel_from_spec(self.model, self.spec)
 
@@ -671,6 +677,18 @@ class MachineDynamics:
 
 # The share by which the steady speed may differ from the one the flywheel was sized at before a run warns.
 OFF_DESIGN = 0.05
+
+
+def _constant_refused(refused: ConstantSideError) -> SceneError:
+    """``[dynamics] constant`` naming a side the scene gives loads on, refused at that key with the ways out that
+    work: ``"none"``, the other side only where the scene gives no loads on it too (it was offered where it did,
+    and was refused in its turn), or the loads left out."""
+    loads = ", ".join(refused.loads)
+    ways = " or ".join(f'constant = "{way}"' for way in refused.ways_out)
+    both = " (the scene gives loads of both sides)" if len(refused.ways_out) == 1 else ""
+    return SceneError("dynamics.constant", f"would take the {refused.constant} {refused.noun} constant in place of "
+                      f"the scene's {refused.constant} loads ({loads}): write {ways}{both}, or leave {loads} out",
+                      refused.constant)
 
 
 @contextlib.contextmanager

@@ -112,6 +112,20 @@ def _percent(value: float, exact: float) -> float:
     return 100.0 * (value - exact) / abs(exact) if exact else math.inf
 
 
+class ConstantSideError(ValueError):
+    """``constant`` asks a side to be taken constant that the scene gives loads on.
+
+    ``constant``, the side asked for; ``loads``, the key paths of the scene's loads on it; ``ways_out``, the choices
+    that keep the scene's loads as they are (``"none"``, and the other side where the scene gives no loads on it);
+    ``noun``, what a side is: a crank's ``"moment"``, a slider driver's ``"force"``.
+    """
+
+    def __init__(self, constant: str, loads: tuple[str, ...], ways_out: tuple[str, ...], noun: str) -> None:
+        self.constant, self.loads, self.ways_out, self.noun = constant, loads, ways_out, noun
+        super().__init__(f"constant={constant!r} replaces the {constant} {noun}, but the scene gives {constant} loads "
+                         f"({', '.join(loads)}); take " + " or ".join(f"constant={way!r}" for way in ways_out))
+
+
 @dataclass(frozen=True)
 class MovedLoad:
     """A load the scene gives as driving (``resisting = false``) that gives no work over the run, counted with the
@@ -312,7 +326,8 @@ def equivalent_model(mechanism: Mechanism, motion: Motion, acting: np.ndarray | 
     driving_loads = tuple(load.where for load, on in zip(loads, drives, strict=True) if on)
     resisting_loads = tuple(load.where for load, on in zip(loads, drives, strict=True) if not on)
     driving, resisting, chosen = _balanced(coordinate, driving, resisting, constant, driving_loads,
-                                           tuple(load.where for load in loads if load.resisting), breaks)
+                                           tuple(load.where for load in loads if load.resisting), breaks,
+                                           "moment" if driver.kind == "crank" else "force")
     return EquivalentModel(kind=driver.kind, link=driver.link, speed=speed, sense=sense, driver=values,
                            coordinate=coordinate, inertia=inertia, inertia_slope=slope,
                            link_inertia=MappingProxyType(shares), driving=driving, resisting=resisting,
@@ -583,19 +598,21 @@ def _line(load) -> tuple:
 
 
 def _balanced(coordinate: np.ndarray, driving: np.ndarray, resisting: np.ndarray, constant: str,
-              drives: Sequence[str], resists: Sequence[str], breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray, str]:
+              drives: Sequence[str], resists: Sequence[str], breaks: np.ndarray,
+              noun: str = "moment") -> tuple[np.ndarray, np.ndarray, str]:
     """The moments with one side made constant so that their work over the samples balances; ``drives`` are the
     scene's driving loads, ``resists`` those it gives as resisting (the loads given as driving that go with the
-    weights are kept with them)."""
+    weights are kept with them); ``noun``, what a side is (a slider driver's is a force)."""
     if constant == "auto":
         constant = "driving" if not drives else "resisting" if not resists else "none"
     if constant == "none":
         return driving, resisting, constant
     replaced = drives if constant == "driving" else resists
     if replaced:
+        # The other side is a way out only where the scene gives no loads on it either.
         other = "resisting" if constant == "driving" else "driving"
-        raise ValueError(f"constant={constant!r} replaces the {constant} moment, but the scene gives {constant} loads "
-                         f"({', '.join(replaced)}); take constant={other!r} or 'none'")
+        kept = resists if constant == "driving" else drives
+        raise ConstantSideError(constant, tuple(replaced), ("none",) if kept else (other, "none"), noun)
     travel = float(coordinate[-1] - coordinate[0])
     if travel <= 0:
         raise ValueError("the driver does not move over the samples, so no constant moment balances their work")
@@ -647,5 +664,5 @@ def _full(value, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(value, dtype=float), (count,))
 
 
-__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "NO_WORK", "EquivalentModel", "MovedLoad", "PlanReduction",
-           "diagram_model", "equivalent_model", "equivalent_model_of", "plan_reductions"]
+__all__ = ["CONSTANT_CHOICES", "DEFAULT_COUNT", "NO_WORK", "ConstantSideError", "EquivalentModel", "MovedLoad",
+           "PlanReduction", "diagram_model", "equivalent_model", "equivalent_model_of", "plan_reductions"]
