@@ -407,10 +407,21 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if load.point is not None and load.point not in mechanism.fixed_on.get(load.link, ()):
             raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point,
                              hint=lookalike_hint(load.point, mechanism.fixed_on.get(load.link, ())))
+        if load.diagram is not None and scene.positions.working is None:
+            raise SceneError(f"{load.where}.diagram", "a load diagram is read over shares of the working stroke, "
+                                                      "which needs positions.working (which motion of which link "
+                                                      "is the working stroke)")
         if load.during != "always" and scene.positions.working is None:
             raise SceneError(f"{load.where}.during", "a load that acts in one stroke needs positions.working "
                                                      "(which motion of which link is the working stroke)",
                              _as_written(load.during) if isinstance(load.during, tuple) else load.during)
+        if load.diagram is not None and not scene.driver.cyclic:
+            # The diagram sets the load's window itself: refused under the window's key, it named a key never
+            # written and showed a window never typed.
+            run = scene.driver.run_key
+            raise SceneError(f"{load.where}.diagram", "a load diagram is read over shares of the working stroke, "
+                             f"which needs a crank that turns round; the positions run once over driver.{run}: "
+                             'give the load a value, with during = "working" (or "idle", "always")')
         if isinstance(load.during, tuple) and not scene.driver.cyclic:
             raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank that turns "
                                                      f"round; a {scene.driver.kind} driver's positions run over its "
