@@ -618,3 +618,20 @@ def test_the_ordinate_is_ticked_down_to_within_half_a_step_of_the_lowest_value(n
         moments = sorted(float(item.text.replace("−", "-")) for item in layers["moments"].items
                          if isinstance(item, Text) and item.anchor == "end")
         assert moments[0] < 0 and moments[0] <= float(np.min(model.resisting))
+
+
+def test_a_swing_s_energy_mass_curve_runs_from_its_first_position_to_its_last_and_does_not_close():
+    """A rocking crank's model is run once over its swing: Je at its end differs from Je at its start, and the
+    energy–mass curve drawn closed ran a false chord from its last point back to its first (through the Je axis's
+    tick labels on the double rocker).  A cycle's curve still closes on itself."""
+    from graphplan.dynamics import equivalent_model_of
+
+    model = equivalent_model_of(analyse(load(Path(__file__).parent.parent / "fixtures" / "double_rocker_swing.toml")))
+    assert not model.cyclic and model.inertia[-1] != pytest.approx(model.inertia[0], rel=1e-3)
+    scales = scales_for(model)
+    (curve, *_) = next(layer.items for layer in layout(model, None, None, scales) if layer.name == "energy-mass")
+    assert isinstance(curve, Polyline) and not curve.closed
+    # Its ends are the swing's first and last samples, at the drawing's own scales (the layer is moved as a whole).
+    (x0, y0), (x1, y1) = curve.points[0], curve.points[-1]
+    assert x1 - x0 == pytest.approx((model.inertia[-1] - model.inertia[0]) / scales.inertia, rel=1e-9)
+    assert y1 - y0 == pytest.approx((model.energy[-1] - model.energy[0]) / scales.energy, rel=1e-9, abs=1e-9)

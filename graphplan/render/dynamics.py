@@ -337,7 +337,8 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     """ΔT over Je (origin at Je = 0, ΔT = 0), the tangents at ψmax, ψmin and the segment ab they cut off."""
     xs = model.inertia / scales.inertia
     ys = model.energy / scales.energy
-    items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE, closed=True)]
+    # A cycle closes on itself; a swing or a travel run once ends elsewhere, and a chord back would be a false arc.
+    items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE, closed=model.cyclic)]
     top_mm, bottom_mm = float(np.max(ys)), float(np.min(ys))
     curve = (bottom_mm - CUT_TANGENT_RUN_MM, top_mm + CUT_TANGENT_RUN_MM)
     width = float(np.max(xs))
