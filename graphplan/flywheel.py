@@ -447,8 +447,8 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
                 spelt = f'; with a linkage write constant = "{key}"' if key in _SIDES and \
                     table.data[key] == "constant" else ""
                 raise SceneError(table.where(key), "is for a scene without a linkage: this one has [frame] and "
-                                 "[driver], whose loads and masses ([[loads]], [links.N]) are reduced to the crank "
-                                 "instead; leave it out, or leave out the linkage" + spelt)
+                                 "[driver], whose loads and masses ([[loads]], [links.N]) are reduced to its driving "
+                                 "link instead; leave it out, or leave out the linkage" + spelt)
     if once_over is not None:
         for key in (*_FLYWHEEL_KEYS, *MOTION_KEYS):
             if table.has(key):

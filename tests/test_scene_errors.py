@@ -1219,6 +1219,15 @@ def test_frame_points_at_one_place_that_close_run() -> None:
     assert np.allclose(b.v, 10j * b.r)
 
 
+def test_a_diagram_scene_s_key_beside_a_slider_driver_names_no_crank() -> None:
+    """A slider driver's loads and masses are reduced to the slider, not to a crank: the refusal of [dynamics]
+    inertia (a key of a scene without a linkage) told a slider-driven scene they were reduced to the crank."""
+    text = to_toml(variant(SLIDER_DRIVEN, {"dynamics": {"inertia": 2.0}}))
+    stage, error = first_error(text)
+    assert stage == "load" and str(error).startswith("dynamics.inertia: is for a scene without a linkage")
+    assert "reduced to its driving link" in str(error) and "crank" not in str(error)
+
+
 def test_rrr_too_short_with_near() -> None:
     text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.5, 0.1], "groups.0.assembly": DELETE,
                                       "groups.0.near": [0.3, 0.4]}))
