@@ -33,6 +33,11 @@ def _said(capsys) -> str:
     return printed.out + printed.err
 
 
+def _warning(capsys) -> str:
+    """The command's first warning line."""
+    return next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+
+
 def test_a_brake_on_from_the_start_is_named_with_its_torque_where_the_machine_does_not_start(tmp_path, capsys):
     """The brake's 80 N·m at t = 0 joins the 100 N·m of resistance: 150 N·m cannot move 180.  The message said
     "150 N·m does not overcome 100 N·m" and advised a stronger motor."""
@@ -52,7 +57,7 @@ def test_a_brake_that_comes_on_after_the_start_leaves_the_does_not_start_message
     """A weak motor (90 N·m against 100) and a brake at 1 s: the resistance alone holds the machine, and the
     message is the motor's, with no brake in it."""
     assert _run(tmp_path, HELD.replace("torque = 150.0", "torque = 90.0") + "brake = { torque = 80.0, at = 1.0 }\n") == 0
-    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    told = _warning(capsys)
     assert "does not start" in told and "brake" not in told and "a stronger motor" in told
 
 
@@ -68,7 +73,7 @@ def test_a_brake_that_stops_the_running_machine_against_its_motor_is_named_for_t
     It said the motor could not carry the machine past the resistance and advised a stronger motor."""
     scene = HELD.replace("[scene]\n", f'[scene]\nlocale = "{locale}"\n') + "brake = { torque = 80.0, at = 0.5 }\n"
     assert _run(tmp_path, scene) == 0
-    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    told = _warning(capsys)
     stop = 0.5 + 12.5 / 15.0
     assert f"the brake applied at t = 0.5 s brings the machine to rest at t = {stop:.4g} s" in told
     assert "against the brake's 80 N·m and the resistance there, 100 N·m" in told and "stronger motor" not in told
@@ -95,7 +100,7 @@ def test_a_brake_that_stops_the_machine_against_its_slipping_clutch_is_named_for
     scene = (CLUTCHED.replace("[scene]\n", f'[scene]\nlocale = "{locale}"\n') + "resisting_torque = [[0, 50], "
              "[360, 50]]\nbrake = { torque = 40.0, at = 0.5 }\n")
     assert _run(tmp_path, scene) == 0
-    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    told = _warning(capsys)
     stop, angle = 0.5 + 2.5 / 15.0, math.degrees(0.625 + 2.5 ** 2 / 30.0)
     assert told == (f"warning: dynamics: the brake applied at t = 0.5 s brings the machine to rest at t = {stop:.4g} "
                     f"s, φ = {angle:.1f}°, where the clutch, slipping at its 60 N·m, cannot turn it against the "
@@ -109,7 +114,7 @@ def test_a_clutch_short_of_mr_alone_where_the_braked_machine_stalls_is_blamed_no
     ((60 − 55)/2 > 0), and it stalls past 90°, where 60 N·m is short of Mr's 100 alone: the clutch is to blame."""
     scene = CLUTCHED + "resisting_torque = [[0, 50], [90, 50], [90, 100], [360, 100]]\nbrake = { torque = 5.0, at = 0.5 }\n"
     assert _run(tmp_path, scene) == 0
-    told = next(line for line in _said(capsys).splitlines() if line.startswith("warning:"))
+    told = _warning(capsys)
     assert "the clutch, slipping at its 60 N·m, cannot carry it past the resistance there, 100 N·m" in told
     assert "brake" not in told
 
