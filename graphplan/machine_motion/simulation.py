@@ -116,8 +116,8 @@ class MachineMotion:
 
     @property
     def torque_at_rest(self) -> float:
-        """The torque that reaches the machine's shaft at the run's start (N·m): the clutch's capacity where it
-        slips as the machine stalls, else the motor's."""
+        """The torque that reached the machine's shaft where it stood, for one that never turned (N·m): the clutch's
+        capacity where the clutch slips as it stalls, else the motor's at the run's start."""
         return self.clutch.torque if self.stalled_slipping else float(self.motor_torque[0])
 
     @property
