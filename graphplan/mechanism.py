@@ -425,8 +425,9 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if isinstance(load.during, tuple) and not scene.driver.cyclic:
             raise SceneError(f"{load.where}.during", "a window of the working stroke needs a crank that turns "
                                                      f"round; a {scene.driver.kind} driver's positions run over its "
-                                                     f"{scene.driver.run_key}: "
-                                                     "use always", _as_written(load.during))
+                                                     f"{scene.driver.run_key}, once: give the whole "
+                                                     'stroke, during = "working" or "idle", or "always"',
+                             _as_written(load.during))
     strokes = [scene.positions.working, *(load.stroke for load in scene.loads)]
     for working in (stroke for stroke in strokes if stroke is not None):
         if working.link not in known_links or working.link == scene.frame_link:

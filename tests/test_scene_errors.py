@@ -673,7 +673,8 @@ CASES: list[Case] = [
     # Shown as the scene writes it, not as the tuple read from it ((0.0, 0.881), a teacher's variant).
     Case("load-during-window-with-a-swing", {"driver.swing": [300.0, 340.0], "positions.start": DELETE},
          "loads[0].during", "a window of the working stroke needs a crank that turns round; a crank driver's "
-         "positions run over its swing: use always (got { from = 0.0, to = 0.881 })", stage="build"),
+         "positions run over its swing, once: give the whole stroke, during = \"working\" or \"idle\", or "
+         "\"always\" (got { from = 0.0, to = 0.881 })", stage="build"),
     Case("load-during-window-past-end", {"loads.0.during.to": 1.5}, "loads[0].during",
          "must be a window 0 <= from < to <= 1 of the working stroke (got { from = 0.0, to = 1.5 })"),
     Case("load-during-window-to-missing", {"loads.0.during.to": DELETE}, "loads[0].during.to",
