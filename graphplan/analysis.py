@@ -210,7 +210,8 @@ def analyse(scene: Scene) -> Analysis:
     warnings += misread(mechanism, (*plans, *every))
     in_order = tuple(sorted(lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
-                            + _idle_throughout(mechanism, positions) + strokes_of_other_links(mechanism, positions)
+                            + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
+                            + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + _self_locking(mechanism, positions, friction, with_friction)
                             + _turned_round(mechanism, balance, with_friction)
@@ -224,8 +225,8 @@ def analyse(scene: Scene) -> Analysis:
 
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
 # the console gives them without one.
-SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "stroke-of-another-link", "diagram-in-travel",
-                                 "high-friction"})
+SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
+                                 "diagram-in-travel", "high-friction"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],
@@ -299,12 +300,37 @@ def _idle_throughout(mechanism: Mechanism, positions: PositionSet) -> tuple[Posi
     if driver.cyclic or positions.strokes is None or "working" in positions.strokes:
         return ()
     other = OTHER_SENSE[working.sense]
-    dropped = [load.where for load in mechanism.scene.loads if load.during not in ("idle", "always")]
-    unused = f"; {', '.join(dropped)} of the working stroke {'is' if len(dropped) == 1 else 'are'} never applied" \
-        if dropped else ""
+    unused = _never_applied(mechanism, "working")
     return (PositionWarning(0, "idle-throughout", (
         f"positions.working: link {working.link} never moves {working.sense} over driver.{driver.run_key}, so every "
         f"position is in the idle stroke{unused}; it moves {other}: is that its working sense?")),)
+
+
+def _working_throughout(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:
+    """A warning where a run once over a travel or a swing keeps the working link in its working sense and a load
+    is given to the idle stroke: that load is never applied.  A swing that is all working stroke is the usual case,
+    so it is told only for the load it silently drops."""
+    working, driver = mechanism.scene.positions.working, mechanism.driver
+    if driver.cyclic or positions.strokes is None or "idle" in positions.strokes:
+        return ()
+    unused = _never_applied(mechanism, "idle")
+    if not unused:
+        return ()
+    return (PositionWarning(0, "working-throughout", (
+        f"positions.working: link {working.link} moves {working.sense} over the whole driver.{driver.run_key}, so "
+        f"every position is in the working stroke{unused}: is that the stroke it acts in?")),)
+
+
+def _never_applied(mechanism: Mechanism, stroke: str) -> str:
+    """The clause naming the loads of ``stroke`` (of the working link's strokes) that the run never applies; a load
+    with its own ``stroke`` moves with another link's and is not among them."""
+    def stroke_of(during) -> str | None:  # a window is a share of the working stroke
+        return None if during == "always" else "idle" if during == "idle" else "working"
+
+    dropped = [load.where for load in mechanism.scene.loads if load.stroke is None and stroke_of(load.during) == stroke]
+    if not dropped:
+        return ""
+    return f"; {', '.join(dropped)} of the {stroke} stroke {'is' if len(dropped) == 1 else 'are'} never applied"
 
 
 def _extra_reversals(mechanism: Mechanism, positions: PositionSet) -> tuple[PositionWarning, ...]:

@@ -44,3 +44,11 @@ def test_a_working_sense_never_taken_is_told_in_the_note(locale):
 def test_every_scene_wide_warning_has_the_note_s_sentence(locale):
     text = strings(locale)
     assert [code for code in sorted(SCENE_WIDE_WARNINGS) if "note_warning_" + code.replace("-", "_") not in text] == []
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_load_of_an_idle_stroke_never_reached_is_told_in_the_note(locale):
+    scene = SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")
+    note = _note(graphplan.scene.loads(scene.replace('during = "working"', 'during = "idle"')), locale)
+    assert strings(locale)["note_warning_working_throughout"].format(link=4) in note
+    assert CAUTION[locale] not in _note(graphplan.scene.loads(scene), locale)

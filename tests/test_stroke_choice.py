@@ -251,6 +251,37 @@ def test_a_working_sense_the_travel_never_gives_is_warned_of_with_the_load_it_dr
     assert set(right.positions.strokes) == {"working"} and not [w for w in right.warnings if w.code == "idle-throughout"]
 
 
+def test_a_load_of_the_idle_stroke_a_travel_never_reaches_is_warned_of():
+    """The mirror case: the working sense is the one the travel gives throughout, and a load is given to the idle
+    stroke, which the run never reaches (its link turns ccw at every position): the load was silently dropped."""
+    from graphplan.scene import loads as scene_from_text
+
+    idle_load = SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw").replace('during = "working"', 'during = "idle"')
+    analysis = analyse(scene_from_text(idle_load))
+    assert np.all(np.asarray(analysis.motion.link(4).omega) > 0)
+    assert all(np.all(load.force == 0) for load in analysis.loads if load.name.startswith("F4"))
+    (warning,) = [w for w in analysis.warnings if w.code == "working-throughout"]
+    assert warning.detail == ("positions.working: link 4 moves ccw over the whole driver.travel, so every position "
+                              "is in the working stroke; loads[0] of the idle stroke is never applied: is that the "
+                              "stroke it acts in?")
+    # A travel all in the working stroke with its loads in it is the usual case: nothing to tell.
+    usual = analyse(scene_from_text(SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")))
+    assert not [w for w in usual.warnings if w.code.endswith("-throughout")]
+
+
+def test_a_load_with_its_own_stroke_is_not_named_among_those_the_working_link_drops():
+    """A load given its own stroke (here link 4's other sense) acts by that link's motion, not by the working
+    link's: the idle-throughout warning named it among the loads never applied although it acts everywhere."""
+    from graphplan.scene import loads as scene_from_text
+
+    own = SLOTTED_BY_A_SLIDER.replace("SENSE", "cw").replace(
+        'during = "working"', 'during = "working"\nstroke = { link = 4, sense = "ccw" }')
+    analysis = analyse(scene_from_text(own))
+    (warning,) = [w for w in analysis.warnings if w.code == "idle-throughout"]
+    assert "never applied" not in warning.detail
+    assert all(np.all(load.force != 0) for load in analysis.loads if load.name.startswith("F4"))
+
+
 # The tester's scene: a crank-rocker whose ternary rocker CBD drives a slotted lever 6 about F through a block at D.
 TERNARY_ROCKER = """
 [scene]
