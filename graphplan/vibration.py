@@ -365,18 +365,23 @@ class NearResonance:
     """A machine run near its resonance with no damping or with next to none (:func:`near_resonance`).
 
     ``ratio`` r = ω/ωn, ``zeta`` ζ, ``magnification`` r²/√((1 − r²)² + (2ζr)²) and ``amplitude`` X (m) of the
-    machine's motion (the unbalance's; where the ``base_moves``, the base's or the two added)."""
+    machine's motion (the unbalance's; where the ``base_moves``, the base's or the two added).  An ``instrument``
+    (no unbalance, on a moving base) turns at no speed: the base shakes it, ``transmissibility`` X/Y times as far."""
 
     ratio: float
     zeta: float
     magnification: float
     amplitude: float
     base_moves: bool = False
+    instrument: bool = False
+    transmissibility: float = 0.0
     code = "near-resonance"
 
     @property
     def detail(self) -> str:
         """The warning in a line (English, as the command line prints it)."""
+        if self.instrument:
+            return self._instrument_detail()
         off = abs(self.ratio - 1.0)
         # r = 1 to the digits written is resonance itself: "within 0 of the natural frequency" said it in riddles.
         at = f"{self.ratio:.6g}" == "1"
@@ -393,6 +398,21 @@ class NearResonance:
                     f"and the amplitude X = {self.amplitude:.4g} m hangs on how near; give damping_ratio or damping")
         return (f"no damping and ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}): the amplitude "
                 f"X = {self.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
+
+    def _instrument_detail(self) -> str:
+        """The warning of an instrument shaken near its resonance: the base's frequency, not a speed it runs at, is
+        near ωn, and the way out is its mounts (another natural frequency) or their damping."""
+        at = f"{self.ratio:.6g}" == "1"
+        where = ("the base's ω at the natural frequency" + (" to six digits" if self.zeta == 0 else "") + " (r = 1): "
+                 "the instrument is shaken at resonance" if at else
+                 f"the base's ω within {abs(self.ratio - 1.0):.2g} of the natural frequency (r = {self.ratio:.6g})")
+        if self.zeta > 0:
+            return (f"{where} with little damping (ζ = {self.zeta:.3g}): the instrument moves X = "
+                    f"{self.amplitude:.4g} m, {self.transmissibility:.4g} times the base's Y; mount it with its natural "
+                    "frequency farther from the base's (softer mounts) or damp the mounts more")
+        grows = "hangs on how near" if at else "grows without bound nearer it"
+        return (f"no damping and {where}: the instrument's amplitude X = {self.amplitude:.4g} m {grows}; give "
+                "damping_ratio or damping")
 
 
 @dataclass(frozen=True)
@@ -467,8 +487,10 @@ def near_resonance(spec: VibrationSpec) -> NearResonance | None:
         amplitude = response.combined.amplitude
     elif response.base is not None and spec.unbalance == 0:
         amplitude = response.base.amplitude
+    instrument = response.base is not None and spec.unbalance == 0
     return NearResonance(ratio=r, zeta=spec.damping_ratio, magnification=response.magnification, amplitude=amplitude,
-                         base_moves=response.base is not None)
+                         base_moves=response.base is not None, instrument=instrument,
+                         transmissibility=response.transmissibility)
 
 
 def mounts_sag(spec: VibrationSpec) -> MountsSag | None:

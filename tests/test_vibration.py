@@ -29,8 +29,9 @@ from scipy.integrate import quad, solve_ivp, trapezoid
 from scipy.optimize import brentq, minimize_scalar
 
 from graphplan.errors import SceneError
+from graphplan.locale import strings
 from graphplan.reader import Table
-from graphplan.report.vibration_plots import magnification_figure, transmissibility_figure
+from graphplan.report.vibration_plots import magnification_figure, transmissibility_figure, words_for
 from graphplan.vibration import (
     RPM,
     VibrationSpec,
@@ -1129,3 +1130,49 @@ def test_at_resonance_the_lag_is_a_quarter_turn_without_damping(function, at_res
     assert function(1.0, 0.0) == math.pi / 2
     lags = function(np.array([0.5, 1.0, 2.0]), np.array([0.0, 0.0, 0.0]))
     assert list(lags) == [0.0, math.pi / 2, math.pi]
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_an_instrument_shaken_near_resonance_is_told_of_its_base_not_of_a_speed_it_runs_at(tmp_path, capsys, locale):
+    """An instrument on a shaken floor near resonance was told "the speed is within 1 % of the natural frequency …
+    run the machine farther from it", with the magnification of an unbalance it has not: it runs at no speed, its
+    base shakes it X/Y times as far, and the way out is its mounts."""
+    natural = math.sqrt(1e5 / 100.0)
+    code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.0\nstiffness = 1e5\ndamping_ratio = 0.01\n"
+                                f"omega = {0.99 * natural!r}\nbase_amplitude = 0.01\n", capsys)
+    assert code == 0
+    # X/Y = √(1 + (2ζr)²)/√((1 − r²)² + (2ζr)²) at r = 0.99, ζ = 0.01: √(1 + 0.0198²)/√(0.0199² + 0.0198²) = 35.63.
+    r, zeta = 0.99, 0.01
+    ratio = math.hypot(1.0, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r)
+    assert ratio == pytest.approx(35.63, rel=1e-3)
+    (line,) = [line for line in told.out.splitlines() if "warning: vibration:" in line]
+    assert "the base's ω within 0.01 of the natural frequency" in line
+    assert f"the instrument moves X = {0.01 * ratio:.4g} m, {ratio:.4g} times the base's Y" in line
+    assert "run the machine" not in line
+    from graphplan.cli import main
+
+    assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
+    note = (tmp_path / locale / "note.md").read_text(encoding="utf-8")
+    text = strings(locale)
+    mark = "," if locale == "ru" else "."
+    caution = text["note_vib_caution_resonance_base"].format(
+        share="1", ratio="0.99".replace(".", mark), zeta="0.01".replace(".", mark),
+        tr=f"{ratio:.5g}".replace(".", mark))
+    assert caution in note, note
+    machine = {"en": "machine", "ru": "машин", "zh": "机器"}[locale]
+    assert machine not in caution
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_an_instrument_s_plots_name_the_instrument_not_a_machine(locale):
+    text = strings(locale)
+    instrument = VibrationSpec(mass=100.0, unbalance=0.0, stiffness=1e5, damping_ratio=0.1, omega=20.0,
+                               base_amplitude=0.01)
+    words = words_for(instrument, text)
+    assert words["vib_zeta_machine"] == text["vib_zeta_instrument"]
+    assert words["vib_transmissibility_title"] == text["vib_motion_title"]
+    machine = {"en": "machine", "ru": "машин", "zh": "机器"}[locale]
+    assert machine not in words["vib_zeta_machine"] + words["vib_transmissibility_title"]
+    # A machine with an unbalance keeps its own words.
+    unbalanced = VibrationSpec(mass=100.0, unbalance=0.02, stiffness=1e5, damping_ratio=0.1, omega=20.0)
+    assert words_for(unbalanced, text) is text

@@ -716,11 +716,14 @@ def _resonance_caution(note: Writer, close: NearResonance) -> None:
     ratio = note.n(close.ratio)
     # r = 1 as written is resonance itself, not "within 0 % of" it.
     at = "_at" if ratio == note.n(1.0) else ""
+    # An instrument is shaken by its base: no speed of its own to run away from resonance, and it moves X/Y times
+    # as far as the base, not by a magnification of an unbalance it has not.
+    shaken = "_base" if close.instrument else ""
     if close.zeta > 0:
-        note.para(note.t(f"note_vib_caution_resonance{at}", share=share, ratio=ratio, zeta=note.n(close.zeta),
-                         magnification=note.n(close.magnification)))
+        note.para(note.t(f"note_vib_caution_resonance{at}{shaken}", share=share, ratio=ratio, zeta=note.n(close.zeta),
+                         magnification=note.n(close.magnification), tr=note.n(close.transmissibility)))
     else:
-        note.para(note.t(f"note_vib_caution_resonance{at}_undamped", share=share, ratio=ratio))
+        note.para(note.t(f"note_vib_caution_resonance{at}_undamped{shaken}", share=share, ratio=ratio))
 
 
 def _sag_caution(note: Writer, sagging: MountsSag, ratio: str) -> None:

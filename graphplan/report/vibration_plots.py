@@ -103,7 +103,8 @@ def words_for(spec: VibrationSpec, text: Mapping[str, str] | None) -> Mapping[st
         words["vib_design"] = words["vib_design_shaft"]
     if moved:
         words.update({"vib_magnification": words["vib_relative"], "vib_magnification_title": words["vib_relative_title"],
-                      "vib_transmissibility": words["vib_motion"], "vib_transmissibility_title": words["vib_motion_title"]})
+                      "vib_transmissibility": words["vib_motion"], "vib_transmissibility_title": words["vib_motion_title"],
+                      "vib_zeta_machine": words["vib_zeta_instrument"]})
     return words
 
 
