@@ -639,6 +639,25 @@ def planes_close(result: BalancingResult) -> PlanesClose | None:
     return PlanesClose(corrections=corrections, masses=own, spacing=abs(right - left), distance=distance)
 
 
+@dataclass(frozen=True)
+class OnAxis:
+    """Every mass of the rotor turns on its axis (r = 0): it is balanced as it stands, which a rotor given to be
+    balanced most likely is not (a radius left at 0)."""
+
+    code = "on-axis"
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        return ("every mass turns on the axis (radius = 0): the rotor is balanced as it stands, and no correction "
+                "is needed; was a radius left at 0?")
+
+
+def on_axis(spec: BalancingSpec) -> OnAxis | None:
+    """:class:`OnAxis` where every mass's radius is 0; else None."""
+    return OnAxis() if all(mass.radius == 0 for mass in spec.masses) else None
+
+
 def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     """The rotor's lengths that no machine has as metres, each with its key (``balancing.masses[0].radius``), as
     lengths typed in millimetres make them; None where they are plausible.  A radius over
@@ -673,11 +692,11 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     return LengthsInMillimetres(tuple(found)) if found else None
 
 
-def cautions(result: BalancingResult) -> list[CoupleLeft | LengthsInMillimetres | PlanesClose]:
+def cautions(result: BalancingResult) -> list[CoupleLeft | LengthsInMillimetres | OnAxis | PlanesClose]:
     """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres,
-    corrections dwarfing the masses, the couple of one plane."""
+    masses all on the axis, corrections dwarfing the masses, the couple of one plane."""
     couple = static_couple(result)
-    return [found for found in (lengths_in_millimetres(result.spec), planes_close(result),
+    return [found for found in (lengths_in_millimetres(result.spec), on_axis(result.spec), planes_close(result),
                                 None if couple is None else CoupleLeft(couple)) if found is not None]
 
 
@@ -685,6 +704,6 @@ def _above_noise(value: float, scale: float) -> float:
     return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
-__all__ = ["LARGE_CORRECTIONS", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "PlanesClose",
+__all__ = ["LARGE_CORRECTIONS", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "OnAxis", "PlanesClose",
            "PolygonVector", "RotatingMass", "balance", "balancing_results", "cautions", "direction_deg", "label_clash",
-           "lengths_in_millimetres", "planes_close", "read_balancing", "static_couple", "vector_name"]
+           "lengths_in_millimetres", "on_axis", "planes_close", "read_balancing", "static_couple", "vector_name"]

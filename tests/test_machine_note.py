@@ -406,3 +406,25 @@ def test_a_machine_known_by_its_diagrams_is_said_to_be_given_by_the_points_of_it
         assert said in (out / "note.html").read_text(encoding="utf-8")
         assert said in (out / "note.tex").read_text(encoding="utf-8").replace("\\notecjk{", "").replace("}", "")
         assert any(said in paragraph.text for paragraph in Document(str(out / "note.docx")).paragraphs)
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_rotor_whose_masses_all_turn_on_the_axis_is_cautioned_and_draws_no_scale_of_nothing(tmp_path, locale):
+    """A rotor given with every radius 0 (left unfilled) was balanced without a word, and its drawing showed a lone
+    pole dot at "μ = 1 kg·m/mm": a scale of nothing.  Σ m·r = 0 by hand, so nothing needs correcting either way."""
+    axis = ("[balancing]\nmasses = [ { mass = 1.0, radius = 0.0, angle = 0.0, plane = 0.1 } ]\n"
+            "planes = [0.0, 0.3]\ncorrection_radius = 0.1\n")
+    from graphplan.locale import strings
+
+    out, note = note_of(tmp_path, axis, locale)
+    assert strings(locale)["note_bal_caution_on_axis"] in note
+    document = json.loads((out / "results.json").read_text(encoding="utf-8"))["balancing"]
+    assert [found["code"] for found in document["warnings"]] == ["on-axis"]
+    assert all(plane["mass_radius"] == 0 for plane in document["planes"])
+    drawing = (out / "rotor_balancing.svg").read_text(encoding="utf-8")
+    assert "μ =" not in drawing and "<circle" not in drawing
+    # Off the axis the rotor is drawn at its scale, and nothing is cautioned.
+    (tmp_path / "off").mkdir()
+    out, note = note_of(tmp_path / "off", axis.replace("radius = 0.0", "radius = 0.05"), locale)
+    assert strings(locale)["note_bal_caution_on_axis"] not in note
+    assert "μ =" in (out / "rotor_balancing.svg").read_text(encoding="utf-8")

@@ -134,10 +134,15 @@ def balancing_svg(result: BalancingResult, text: Mapping[str, str] | None = None
 
 def plane_scale(plane: CorrectionPlane) -> float:
     """μ (kg·m/mm): the standard scale at which the plane's polygon fits :data:`POLYGON_FIELD_MM`."""
+    extent = _extent(plane)
+    return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else 1.0
+
+
+def _extent(plane: CorrectionPlane) -> float:
+    """The polygon's width or height, the larger (kg·m): 0 where every mass turns on the axis."""
     xs = [vertex.real for vertex in plane.vertices]
     ys = [vertex.imag for vertex in plane.vertices]
-    extent = max(max(xs) - min(xs), max(ys) - min(ys))
-    return standard_scale(extent / POLYGON_FIELD_MM) if extent > 0 else 1.0
+    return max(max(xs) - min(xs), max(ys) - min(ys))
 
 
 def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
@@ -166,7 +171,9 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
         if shift:
             leaders += [Polyline((_xy(end), _xy(end + shift)), _LEADER if vector.role == "correction" else _SHARE_LEADER)
                         for end in (mm(vector.start), mm(vector.end))]
-    pole = [dot_marker(_xy(mm(plane.vertices[0])), 0.7)]
+    # A polygon of nothing but its pole (every mass on the axis) is no drawing: a lone dot, at a scale of nothing.
+    empty = _extent(plane) == 0
+    pole = [] if empty else [dot_marker(_xy(mm(plane.vertices[0])), 0.7)]
     tail = mm(plane.vectors[-1].start) + beside
     radius = _angle_radius(plane, tail, arrows + leaders)
     angle_marks = _angle_marks(plane, mm(plane.correction), tail, radius)
@@ -188,7 +195,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
-    return key, layers, extent, _caption(plane, scale, text, placed)
+    return key, layers, extent, _caption(plane, None if empty else scale, text, placed)
 
 
 def _beside(plane: CorrectionPlane, mm) -> complex:
@@ -271,10 +278,11 @@ def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex, rad
     return marks
 
 
-def _caption(plane: CorrectionPlane, scale: float, text: Mapping[str, str], placed: bool) -> tuple[str, ...]:
+def _caption(plane: CorrectionPlane, scale: float | None, text: Mapping[str, str], placed: bool) -> tuple[str, ...]:
+    """The plane's caption lines; ``scale`` None for a polygon with nothing drawn, which has none."""
     title = (text["bal_plane"].format(name=plane.name, position=_given(plane.position))
              if placed else text["bal_disc"].format(name=plane.name))
-    lines = [title, text["bal_scale"].format(value=format_scale(scale)), plane.equation,
+    lines = [title, *([] if scale is None else [text["bal_scale"].format(value=format_scale(scale))]), plane.equation,
              text["bal_correction"].format(vector=plane.vectors[-1].name, name=plane.name,
                                            value=significant(plane.mass_radius), angle=_angle(plane.angle_deg))]
     if plane.mass is not None and plane.radius is not None:

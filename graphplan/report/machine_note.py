@@ -19,7 +19,7 @@ import numpy as np
 from ..loads import external_names
 from ..locale import Count
 from ..render.numerals import angle_in_turn, power_of_ten
-from ..rotor_balancing import BalancingResult, planes_close, static_couple
+from ..rotor_balancing import BalancingResult, on_axis, planes_close, static_couple
 from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
 from ..rotor_lengths import LengthsInMillimetres
 from ..units import RPM
@@ -406,6 +406,8 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
     note.table(note.t("note_bal_masses"), note.t("note_bal_masses_header").split(" | "), rows, "lrrrrr")
     if (lengths := rotor_lengths(spec)) is not None:
         _lengths_caution(note, lengths)
+    if on_axis(spec) is not None:
+        note.para(note.t("note_bal_caution_on_axis"))
     planes = result.planes
     along = [mass.plane for mass in spec.masses]
     if spec.dynamic:
