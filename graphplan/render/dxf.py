@@ -144,7 +144,18 @@ def to_dxf_document(layers: Sequence[Layer]):
     space.dxf.limmin = (xmin, ymin)
     space.dxf.limmax = (xmax, ymax)
     document.set_modelspace_vport(height=1.1 * (ymax - ymin), center=((xmin + xmax) / 2, (ymin + ymax) / 2))
+    _register_classes_in_a_fixed_order(document)
     return document
+
+
+def _register_classes_in_a_fixed_order(document) -> None:
+    """The CLASS records of the entity types ``document`` uses, registered in the order of their names.
+
+    ezdxf registers them as it writes, in the order of a set of the names, which string hashing changes from
+    process to process (``PYTHONHASHSEED``): two runs of one scene wrote two DXF files.  A class registered
+    already is kept where it stands, so ezdxf's own pass adds none."""
+    for name in sorted(document.entitydb.dxf_types_in_use()):
+        document.classes.add_class(name)
 
 
 def layers_to_dxf(layers: Sequence[Layer], target: str | os.PathLike[str] | IO) -> None:
