@@ -984,6 +984,11 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         say("typesetting the note as pdf")
         found["note.pdf"] = note_pdf(str(found["note.html"]), pictures)
     if "docx" in formats and "note.md" in found:
+        from .render.export import CAIRO, tool_for
+
+        tool_for("docx", "docx")
+        if pictures:  # the figures go into the document as PNG
+            tool_for("docx", CAIRO)
         from .report.word import note_docx
 
         say("writing the note as docx")

@@ -3,16 +3,24 @@
 * The DXF of a drawing is the same bytes in every process: ezdxf lists the CLASS records of the entity types a
   document uses in the order of a set of their names, which Python's string hashing changes from run to run
   (``PYTHONHASHSEED``), so two runs of one scene wrote different DXF files.
+* A format whose tool cannot be loaded (cairosvg for PNG, PDF and the Word document's pictures, cairo's library
+  under it, ezdxf for DXF, python-docx for the Word document) is refused as the WeasyPrint of note.pdf is: one line
+  naming the format, the package and how to install it, exit 2, no folder written. It came out as a traceback
+  after the whole analysis.
 """
 
 from __future__ import annotations
 
+import importlib.abc
 import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from graphplan.cli import main
+from graphplan.render import export
 
 pytest.importorskip("ezdxf")
 
@@ -41,3 +49,88 @@ def test_dxf_is_the_same_bytes_whatever_the_string_hashing_of_the_process():
     # Six seeds: with the classes in a set's order, about half of them listed two classes the other way round.
     written = {_dxf_written_with_hash_seed(seed) for seed in range(6)}
     assert len(written) == 1
+
+
+SLIDER_CRANK = """
+[scene]
+title = "Slider-crank"
+gravity = 0.0
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+lines = { g = { through = [0.0, 0.0], angle = 0.0 } }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.3
+guide = "g"
+assembly = "forward"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = 1000.0
+angle = 0.0
+resisting = true
+during = "always"
+[positions]
+count = 6
+plans = [2]
+[drawing]
+sheet = "none"
+"""
+
+
+class _LibraryMissing(importlib.abc.MetaPathFinder):
+    """Imports of ``names`` fail as cairocffi's does where the cairo library is not installed."""
+
+    def __init__(self, names: tuple[str, ...]) -> None:
+        self.names = names
+
+    def find_spec(self, fullname, path, target=None):
+        if fullname.split(".")[0] in self.names:
+            raise OSError("no library called \"cairo-2\" was found")
+
+
+def _without(monkeypatch, *packages: str, library: bool = False) -> None:
+    """``packages`` unimportable: not installed (ImportError), or with ``library`` their C library missing
+    (OSError)."""
+    export._undated_pdf_surface.cache_clear()  # it holds the PDF surface of cairo once loaded
+    for name in [name for name in sys.modules if name.split(".")[0] in packages]:
+        monkeypatch.delitem(sys.modules, name)
+    if library:
+        monkeypatch.setattr(sys, "meta_path", [_LibraryMissing(packages), *sys.meta_path])
+    else:
+        for package in packages:
+            monkeypatch.setitem(sys.modules, package, None)
+
+
+@pytest.mark.parametrize(("kind", "only", "packages", "library", "named"), [
+    ("png", "positions", ("cairosvg",), False, "cairosvg"),
+    ("png", "positions", ("cairosvg", "cairocffi"), True, "cairosvg"),
+    ("pdf", "positions", ("cairosvg", "cairocffi"), True, "libcairo2"),
+    ("dxf", "positions", ("ezdxf",), False, "ezdxf"),
+    ("docx", "velocity,note", ("docx",), False, "python-docx"),
+    ("docx", "velocity,note", ("cairosvg",), False, "cairosvg"),
+])
+def test_a_format_whose_tool_cannot_be_loaded_is_refused_naming_it_and_writes_nothing(
+        tmp_path, monkeypatch, capsys, kind, only, packages, library, named):
+    scene = tmp_path / "scene.toml"
+    scene.write_text(SLIDER_CRANK, encoding="utf-8")
+    out = tmp_path / "out"
+    _without(monkeypatch, *packages, library=library)
+    status = main(["run", str(scene), "--out", str(out), "--only", only, "--format", kind])
+    told = capsys.readouterr().err
+    assert status == 2, told
+    assert "Traceback" not in told
+    refusal = next(line for line in told.splitlines() if line.startswith("graphplan: error:"))
+    assert refusal.startswith(f"graphplan: error: {kind}: ") and named in refusal and "install" in refusal
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["scene.toml"]

@@ -33,6 +33,7 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import IO
 
+from .export import tool_for
 from .primitives import THIN, Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds, has_wide
 
 # The DXF layers and the words of a graphplan layer's name that send it there.
@@ -117,7 +118,7 @@ def dxf_layer(name: str, item: Primitive | None = None) -> str:
 
 def to_dxf_document(layers: Sequence[Layer]):
     """An ezdxf document (R2013, mm, y up) holding ``layers``."""
-    import ezdxf
+    ezdxf = tool_for("dxf", "ezdxf")
     from ezdxf import units
 
     with _fixed_metadata():
@@ -177,7 +178,7 @@ def layers_to_dxf(layers: Sequence[Layer], target: str | os.PathLike[str] | IO) 
 @contextmanager
 def _fixed_metadata() -> Iterator[None]:
     """ezdxf writes a fixed date and GUIDs instead of now and random ones, for the duration."""
-    import ezdxf
+    ezdxf = tool_for("dxf", "ezdxf")
 
     before = ezdxf.options.write_fixed_meta_data_for_testing
     ezdxf.options.write_fixed_meta_data_for_testing = True

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import importlib
 import re
 import signal
 import threading
@@ -31,6 +32,32 @@ DEFAULT_DPI = 150.0
 # Millimetres in a unit an SVG document may give its size in (the drawings give mm, matplotlib pt).
 _MM_PER = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72.0, "pc": 25.4 / 6.0, "px": 25.4 / 96.0, "": 25.4 / 96.0}
 _ROOT = re.compile(r"<svg\b[^>]*>", re.DOTALL)
+
+
+# The package each format needs that no SVG does (by the name it is imported as): its name and how to install it.
+CAIRO = "cairosvg"
+_CAIRO = ("cairosvg", "pip install cairosvg; it draws with the cairo library: Debian apt install libcairo2")
+_PACKAGES = {
+    CAIRO: _CAIRO,
+    "cairocffi": _CAIRO,
+    "ezdxf": ("ezdxf", "pip install ezdxf"),
+    "docx": ("python-docx", "pip install python-docx"),
+}
+
+
+def tool_for(kind: str, module: str):
+    """``module``, which writing a file of format ``kind`` (``png``, ``dxf``) needs, imported; an
+    :class:`~graphplan.errors.OutputError` that names the format, the package and how to install it where it cannot
+    be: a missing package, or cairo's library that cairocffi loads as it is imported (an OSError), came out as a
+    traceback after the whole analysis."""
+    try:
+        return importlib.import_module(module)
+    except (ImportError, OSError) as error:
+        from ..errors import OutputError
+
+        package, install = _PACKAGES[module.split(".")[0]]
+        raise OutputError(f"{kind}: writing {kind} needs {package}, which cannot be loaded ({error}); install it "
+                          f"({install}) or leave {kind} out of the formats asked for") from error
 
 
 def svg_size_mm(svg_text: str) -> tuple[float, float]:
@@ -49,7 +76,7 @@ def svg_to_png(svg_text: str, dpi: float = DEFAULT_DPI) -> bytes:
     """The PNG of an SVG document whose size is in physical units (mm, pt), at ``dpi`` pixels per inch."""
     if not dpi > 0:
         raise ValueError(f"dpi must be > 0 (got {dpi!r})")
-    import cairosvg
+    cairosvg = tool_for("png", CAIRO)
 
     with _interruption_held():
         png = cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi)
@@ -103,8 +130,8 @@ def svg_to_pdf(svg_text: str) -> bytes:
 @functools.cache
 def _undated_pdf_surface():
     """cairosvg's PDF surface with cairo's creation date left out of the document."""
-    import cairocffi
-    from cairosvg.surface import PDFSurface
+    cairocffi = tool_for("pdf", "cairocffi")
+    PDFSurface = tool_for("pdf", "cairosvg.surface").PDFSurface
 
     class UndatedPDFSurface(PDFSurface):
         def _create_surface(self, width, height):
