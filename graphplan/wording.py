@@ -10,6 +10,7 @@ import math
 import re
 from collections.abc import Callable, Mapping
 
+from .locale import Count
 from .mechanism import Mechanism
 from .statics import delivers_power, rounded_zero, turned_round
 
@@ -71,7 +72,7 @@ def friction_summary(mechanism: Mechanism, text: Mapping[str, str], ideal: float
     """
     name, unit = balancing_symbol(mechanism, text)
     ideal = float(rounded_zero(ideal, load, scale))
-    values = {"name": name, "value": write(load), "unit": unit, "iterations": iterations, "ideal": write(ideal)}
+    values = {"name": name, "value": write(load), "unit": unit, "iterations": Count(iterations), "ideal": write(ideal)}
     if turned_round(mechanism, ideal, load, scale):
         return text["forces_turned_round"].format(**values)
     ratio = f"{name}0/{name}" if delivers_power(mechanism, ideal) else f"{name}/{name}0"

@@ -7,6 +7,8 @@
   under it, ezdxf for DXF, python-docx for the Word document) is refused as the WeasyPrint of note.pdf is: one line
   naming the format, the package and how to install it, exit 2, no folder written. It came out as a traceback
   after the whole analysis.
+* A friction settled at its first solve is told "after 1 solve", not "after 1 solves": the friction in a driving
+  slider's own guide changes no reaction it is taken from, so the linear system needs no second solve.
 """
 
 from __future__ import annotations
@@ -19,8 +21,11 @@ from pathlib import Path
 
 import pytest
 
+from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.render import export
+from graphplan.report.forces import markdown
+from graphplan.scene import loads
 
 pytest.importorskip("ezdxf")
 
@@ -134,3 +139,13 @@ def test_a_format_whose_tool_cannot_be_loaded_is_refused_naming_it_and_writes_no
     refusal = next(line for line in told.splitlines() if line.startswith("graphplan: error:"))
     assert refusal.startswith(f"graphplan: error: {kind}: ") and named in refusal and "install" in refusal
     assert sorted(path.name for path in tmp_path.iterdir()) == ["scene.toml"]
+
+
+def test_a_friction_settled_at_its_first_solve_is_told_after_one_solve():
+    # The cylinder's rod on its own guide: its normal reaction comes from the rod's link and the weights, which the
+    # friction along the guide does not change (the balancing force takes it all).
+    text = (ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8")
+    analysis = analyse(loads(text + '\n[[friction]]\njoint = "A"\nlinks = [1, 2]\nf = 0.15\n'))
+    assert {plan.with_friction.iterations for plan in analysis.plans} == {1}
+    written = markdown(analysis)
+    assert "after 1 solve;" in written and "1 solves" not in written
