@@ -9,6 +9,8 @@
   after the whole analysis.
 * A friction settled at its first solve is told "after 1 solve", not "after 1 solves": the friction in a driving
   slider's own guide changes no reaction it is taken from, so the linear system needs no second solve.
+* A scene of loads alone (no link given a mass) has no table of the links' masses and inertia loads in forces.md
+  and the note: it was a header over no row, numbered as a table in the note.
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.render import export
 from graphplan.report.forces import markdown
+from graphplan.report.note import note_markdown
 from graphplan.scene import loads
 
 pytest.importorskip("ezdxf")
@@ -149,3 +152,28 @@ def test_a_friction_settled_at_its_first_solve_is_told_after_one_solve():
     assert {plan.with_friction.iterations for plan in analysis.plans} == {1}
     written = markdown(analysis)
     assert "after 1 solve;" in written and "1 solves" not in written
+
+
+def _tables(text: str) -> list[list[str]]:
+    """The Markdown tables of ``text``, each its lines."""
+    tables: list[list[str]] = []
+    previous = ""
+    for line in text.splitlines():
+        if line.startswith("|"):
+            if previous.startswith("|"):
+                tables[-1].append(line)
+            else:
+                tables.append([line])
+        previous = line
+    return tables
+
+
+def test_a_scene_of_loads_alone_writes_no_empty_table_of_the_links_loads():
+    analysis = analyse(loads(SLIDER_CRANK))
+    for written in (markdown(analysis), note_markdown(analysis)):
+        # A header, its rule, then a row at least.
+        assert all(len(table) >= 3 for table in _tables(written))
+        assert "Fu, N" not in written and "1000 ∠ 0° N" in written
+    # With masses the table stays, a row a link with data.
+    engine = analyse(loads((ROOT / "fixtures" / "engine_slider_crank.toml").read_text(encoding="utf-8")))
+    assert sum("Fu, N" in table[0] and len(table) >= 3 for table in _tables(markdown(engine))) == len(engine.plans)

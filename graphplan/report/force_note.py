@@ -101,9 +101,9 @@ def _load_diagrams(note: Writer) -> None:
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
     text, analysis = note.text, note.analysis
     note.heading(3, note.t("position_heading", number=plan.number), section)
-    note.para(note.text["note_loads_formulas"])
-    note.captioned(note.t("note_loads_table", number=plan.number),
-                   force_report.initial_data_lines(analysis, plan, note.mark))
+    if table := force_report.initial_data_lines(analysis, plan, note.mark):
+        note.para(note.text["note_loads_formulas"])
+        note.captioned(note.t("note_loads_table", number=plan.number), table)
     details = []
     for row in force_report.initial_data(analysis, plan):
         parts = []

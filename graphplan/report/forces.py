@@ -192,12 +192,17 @@ def balancing_symbol(analysis: Analysis) -> tuple[str, str]:
 # Tables shared with the explanatory note: each returns Markdown lines in the scene's language.
 
 def initial_data_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
+    """The table of the links' masses, inertias and inertia loads; none where no link has any (a scene of loads
+    alone), whose table was its header over no row."""
+    rows = initial_data(analysis, plan)
+    if not rows:
+        return []
     text = strings(analysis.scene.locale)
     header = (f"| {text['column_link']} | m, {text['unit_kg']} | aS, {text['unit_m_per_s2']} | Fu, {text['newton']} | "
               f"J, {text['unit_kg_m2']} | ε, {text['unit_rad_per_s2']} | Mu, {text['newton_metre']} | "
               f"G, {text['newton']} |")
     lines = [header, "|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for row in initial_data(analysis, plan):
+    for row in rows:
         cells = (row.mass, row.centre_acceleration, row.inertia_force, row.inertia, row.epsilon, row.inertia_moment,
                  row.weight)
         lines.append(f"| {row.link} | " + " | ".join(number(value, mark=mark) for value in cells) + " |")
@@ -457,7 +462,9 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
     balancing = text["forces_balancing"].format(load=wording.balancing_load(analysis.mechanism, text), name=name,
                                                 unit=unit)
     lines = [f"## {text['position_heading'].format(number=plan.number)}", "",
-             f"### {text['forces_initial_data']}", "", *initial_data_lines(analysis, plan, mark), ""]
+             f"### {text['forces_initial_data']}", ""]
+    if table := initial_data_lines(analysis, plan, mark):
+        lines += [*table, ""]
     lines += external_load_lines(analysis, plan, mark)
     # A block's pin reaction along its slot, found from the block's forces before the moments.
     projections = [f"- {group.label}: ΣFτ({projection.link}) = 0 → {projection.unknown} = "
