@@ -34,8 +34,10 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
         if (units := mixed_units(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {units}") from error
         driver = mechanism.driver
+        stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
+                        Group.reach_ends)
         if driver.kind == "slider":
-            advice = _travel_advice(mechanism)
+            advice = _travel_advice(mechanism, stopping)
             if advice is None:
                 raise
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
@@ -52,8 +54,6 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {copied}") from error
         if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
-        stopping = next((group.reach_ends for group in mechanism.groups if group.label == error.group),
-                        Group.reach_ends)
         # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
         advice = (_reach_advice(driver.link, ranges, False, stopping, "the values") if first is not None
                   else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
@@ -61,9 +61,10 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
 
 
-def _travel_advice(mechanism: Mechanism) -> str | None:
+def _travel_advice(mechanism: Mechanism, stopping: str = Group.reach_ends) -> str | None:
     """What part of a slider's typed travel the mechanism assembles over, and a travel within it that runs; None
-    where it is all of it (the solve lost its assembly, and the lengths are no help)."""
+    where it is all of it (the solve lost its assembly, and the lengths are no help); ``stopping`` says what stops
+    it at the ends."""
     travel = mechanism.driver.travel
     ranges = travel_reach(mechanism)
     if ranges == (travel,):
@@ -76,11 +77,11 @@ def _travel_advice(mechanism: Mechanism) -> str | None:
         if not ranges:
             return "the mechanism assembles nowhere along driver.travel: check the lengths"
         where = "the mechanism assembles nowhere along the travel typed, only"
-        ends = "at each end two links stand in line"
+        ends = f"at each end {stopping}"
         middle = 0.5 * (travel[0] + travel[1])
         nearest = min(ranges, key=lambda span: abs(0.5 * (span[0] + span[1]) - middle))
     else:
-        ends = "an end inside the travel typed is a dead centre: two links stand in line"
+        ends = f"an end inside the travel typed is a dead centre: {stopping}"
         nearest = max(ranges, key=lambda span: abs(span[1] - span[0]))
     quantum = 10.0 ** (math.floor(math.log10(abs(travel[1] - travel[0]))) - 5)
     spans = " and ".join(f"from s = {_inward_m(first, last, quantum)} m to s = {_inward_m(last, first, quantum)} m"

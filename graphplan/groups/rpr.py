@@ -36,6 +36,8 @@ from .sliding import coriolis, coriolis_letter
 @dataclass(frozen=True)
 class RPR(Group):
     kind = "RPR"
+    # |CA| comes down to the slide's offset: CA is then square to the slide (only an offset slide stops a crank).
+    reach_ends = "the block stands at the foot of the perpendicular from the lever's pivot to the slide"
     joint_roles = ("outer A (slider block, link a)", "outer C (lever, link b)")
     offset: float = 0.0
 

@@ -55,6 +55,8 @@ _BRANCHES = {"forward": 1, "backward": -1}
 @dataclass(frozen=True)
 class RRP(Group):
     kind = "RRP"
+    # Past where A's distance from the guide is AB, B is A's foot on it: no two links stand in line there.
+    reach_ends = "the rod stands square to the guide"
     joint_roles = ("outer A (link a)", "inner B (slider, link b)")
     length: float = 0.0
     guide: Guide = Guide(where="")

@@ -145,6 +145,9 @@ def _taken(tracks: tuple[Track, Track, Track], which) -> tuple[Track, Track, Tra
 @dataclass(frozen=True)
 class Triad(Group):
     kind = "triad"
+    # A triad folds where the ternary link can turn about one point that all three legs allow (a sliding leg's line
+    # the normal to its guide or slot at its pin): no two of its links need stand in line there.
+    reach_ends = "the lines of its three legs meet in one point"
     link_count = 4
     klass = 3
     order = 3

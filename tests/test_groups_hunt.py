@@ -1,0 +1,201 @@
+"""What the groups tell the user in less common configurations, checked against hand geometry.
+
+* Where a crank cannot turn round (or a slider's travel runs out), the refusal says what stops the mechanism at
+  each end of its reach. That is a geometric fact of the group that stops it, and it differs by kind: an RRR's two
+  links stand in line, an RRP's rod stands square to its guide, an RPR with an offset slide has its block at the
+  foot of the perpendicular from the lever's pivot, a triad's three legs' lines meet in one point. Each is checked
+  here at the end the message names, from the positions solved just inside it.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.errors import AssemblyError
+
+# A slider-crank whose rod is too short to reach the guide on every turn: crank OA = 0.1 m about O, the guide the
+# line y = −0.05 m, the rod AB = 0.09 m. A is 0.1·sin φ + 0.05 m from the guide, which AB reaches while
+# sin φ ≤ 0.4: the reach ends at φ = asin 0.4 = 23.578° and 180° − 23.578°, where A's distance is AB itself, so
+# that B is the foot of A's perpendicular and the rod stands square to the guide (no two links in line there).
+SHORT_ROD = """
+[scene]
+title = "Slider-crank with a short rod"
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.09
+guide = { through = [0.0, -0.05], angle = 0.0 }
+assembly = "forward"
+[positions]
+count = 12
+"""
+
+# A slotted lever whose slide runs 0.1 m to the left of its pivot C = (0.06, −0.04) m, driven by a crank
+# OA = 0.15 m: the block assembles while |CA| > 0.1 m, and at each end of the crank's reach |CA| = 0.1 m, the
+# block at the foot of the perpendicular from C on the slide.
+OFFSET_SLOT = """
+[scene]
+title = "Slotted lever with an offset slide"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.06, -0.04] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.15
+omega = 10.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = 0.1
+[positions]
+count = 12
+start = 90.0
+"""
+
+# The fixture's class III triad with a crank of 0.09 m in place of 0.05 m: it stops short of a turn.
+TRIAD = """
+[scene]
+title = "Crank and a class III triad that stops short of a turn"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.22, 0.0], E = [0.10, 0.35] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.09
+omega = 10.0
+[[groups]]
+kind = "triad"
+links = [3, 4, 5, 6]
+joints = ["A", "B", "C", "D", "E", "F"]
+lengths = [0.135, 0.108, 0.189]
+sides = [0.12, 0.108, 0.108]
+near = { B = [0.14, 0.10], D = [0.26, 0.10], F = [0.20, 0.19] }
+[positions]
+count = 12
+"""
+
+# A slider driving a second slider through a rod: A runs along the x axis, B along the line x = 0.1 m; the rod
+# AB = 0.25 m reaches B while |xA − 0.1| ≤ 0.25, so up to s = 0.35 m, where AB lies along the x axis, square to
+# B's guide.
+SLIDER_AND_SHORT_ROD = """
+[scene]
+title = "Slider driving a slider through a rod"
+[frame]
+link = 1
+points = { G = [0.0, 0.0] }
+[driver]
+kind = "slider"
+link = 2
+joint = "A"
+guide = { through = "G", angle = 0.0 }
+travel = [0.0, 0.5]
+velocity = 0.5
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.25
+guide = { through = [0.1, 0.0], angle = 90.0 }
+assembly = "forward"
+[positions]
+count = 9
+"""
+
+
+def _refusal(text: str) -> AssemblyError:
+    with pytest.raises(AssemblyError) as caught:
+        graphplan.solve(graphplan.load_text(text))
+    return caught.value
+
+
+def _reach_ends_deg(message: str) -> list[float]:
+    (span,) = re.findall(r"reaches only from (-?[\d.]+)° to (-?[\d.]+)°", message)
+    return [float(end) for end in span]
+
+
+def _at(scene, degrees: float) -> dict[str, complex]:
+    motion = graphplan.solve(scene, driver=np.radians([degrees]))
+    return {name: complex(*motion.point(name).r[0]) for name in motion.points}
+
+
+def test_an_rrp_whose_rod_cannot_reach_its_guide_says_the_rod_stands_square_to_it():
+    message = str(_refusal(SHORT_ROD))
+    assert "(at each end the rod stands square to the guide)" in message
+    assert "two links stand in line" not in message
+    ends = _reach_ends_deg(message)
+    reach = math.degrees(math.asin(0.4))
+    assert sorted(end % 360.0 for end in ends) == pytest.approx([reach, 180.0 - reach], abs=0.01)
+
+
+def test_an_rpr_with_an_offset_slide_says_its_block_stands_at_the_foot_of_the_pivots_perpendicular():
+    message = str(_refusal(OFFSET_SLOT))
+    assert "(at each end the block stands at the foot of the perpendicular from the lever's pivot to the slide)" \
+        in message
+    scene = graphplan.load_text(OFFSET_SLOT)
+    for end, inward in zip(_reach_ends_deg(message), (0.001, -0.001)):
+        points = _at(scene, end + inward)
+        # |CA| comes down to the offset there: CA is then square to the slide, whose line is 0.1 m from C.
+        assert abs(points["A"] - points["C"]) == pytest.approx(0.1, abs=2e-5)
+
+
+def test_a_triad_that_stops_a_crank_says_its_three_legs_lines_meet_in_one_point():
+    message = str(_refusal(TRIAD))
+    assert "(at each end the lines of its three legs meet in one point)" in message
+    scene = graphplan.load_text(TRIAD)
+
+    def miss(degrees: float) -> float:
+        """How far the line EF passes from where the lines AB and CD cross, in m."""
+        p = _at(scene, degrees)
+        ab, cd, ef = p["B"] - p["A"], p["D"] - p["C"], p["F"] - p["E"]
+        cross = (lambda u, v: (u.conjugate() * v).imag)
+        crossing = p["A"] + ab * cross(p["C"] - p["A"], cd) / cross(ab, cd)
+        return abs(cross(ef, crossing - p["E"])) / abs(ef)
+
+    def last_assembled(inside: float, outside: float) -> float:
+        """The end of the reach between two crank angles, by bisection on whether the triad assembles."""
+        for _ in range(40):
+            middle = 0.5 * (inside + outside)
+            try:
+                _at(scene, middle)
+                inside = middle
+            except graphplan.GraphplanError:
+                outside = middle
+        return inside
+
+    low, high = _reach_ends_deg(message)
+    # Inside the reach the lines miss one another by centimetres; at the ends (the message's, rounded inward to
+    # 0.01°, found again to 1e-12°) by nothing.
+    assert miss(0.5 * (low + high)) > 0.05
+    for named, outward in ((low, -0.02), (high, 0.02)):
+        assert miss(last_assembled(named, named + outward)) < 1e-6
+
+
+def test_a_slider_whose_rod_runs_out_of_reach_says_what_stops_it_at_the_end_of_the_travel():
+    message = str(_refusal(SLIDER_AND_SHORT_ROD))
+    assert "an end inside the travel typed is a dead centre: the rod stands square to the guide" in message
+    assert "two links stand in line" not in message
+    (end,) = re.findall(r"assembles only from s = 0 m to s = ([\d.]+) m", message)
+    assert float(end) == pytest.approx(0.35, abs=1e-5)
