@@ -407,6 +407,12 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if load.point is not None and load.point not in mechanism.fixed_on.get(load.link, ()):
             raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point,
                              hint=lookalike_hint(load.point, mechanism.fixed_on.get(load.link, ())))
+        if load.kind == "moment" and load.resisting and load.link in mechanism.translating:
+            # Resisting is against the link's ω, or at rest the turning about to begin: a link that never turns has
+            # neither, and the load was dropped at every position without a word.
+            raise SceneError(f"{load.where}.resisting", f"link {load.link} never turns (it slides on a guide that "
+                             "does not turn), so a moment resisting its turning never acts: put the moment on a link "
+                             'that turns, or resist the motion with a force (kind = "force", point, angle)')
         if load.diagram is not None and scene.positions.working is None:
             raise SceneError(f"{load.where}.diagram", "a load diagram is read over shares of the working stroke, "
                                                       "which needs positions.working (which motion of which link "

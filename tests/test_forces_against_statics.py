@@ -43,14 +43,16 @@ RATCHET = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_r
 
 def loaded(scene):
     """``scene`` with a mass, a centre, a moment of inertia on every moving link, a force on the last
-    link and a resisting moment on the one before (different numbers per link, so that no two loads
-    cancel by symmetry)."""
+    link and a resisting moment on the last before it that turns (different numbers per link, so that no
+    two loads cancel by symmetry)."""
     mechanism = build(scene)
     links = {}
     for rank, number in enumerate(mechanism.moving_links):
         centre = sorted(mechanism.fixed_on[number])[-1]
         links[number] = LinkSpec(number, f"links.{number}", 2.0 + rank, centre, 0.05 * (rank + 1))
-    last, before = mechanism.moving_links[-1], mechanism.moving_links[-2]
+    last = mechanism.moving_links[-1]
+    # The resisting moment on a link that turns: one that never turns (a slider) has no sense for it, and is refused.
+    before = next(link for link in reversed(mechanism.moving_links[:-1]) if link not in mechanism.translating)
     external = (LoadSpec("loads[0]", "force", last, 300.0, False, "always", sorted(mechanism.fixed_on[last])[0], 30.0),
                 LoadSpec("loads[1]", "moment", before, 50.0, True, "always", None, None))
     return dataclasses.replace(scene, links=MappingProxyType(links), loads=external)

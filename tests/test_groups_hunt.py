@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -199,3 +200,69 @@ def test_a_slider_whose_rod_runs_out_of_reach_says_what_stops_it_at_the_end_of_t
     assert "two links stand in line" not in message
     (end,) = re.findall(r"assembles only from s = 0 m to s = ([\d.]+) m", message)
     assert float(end) == pytest.approx(0.35, abs=1e-5)
+
+
+# --- a load that never acts ----------------------------------------------------------------------------------------
+
+# A slider-crank (crank 0.1 m, rod 0.35 m, the slider 4 on the x axis) with a resisting moment put on the slider.
+SLIDER_WITH_A_MOMENT = """
+[scene]
+title = "Slider-crank with a moment on its slider"
+[frame]
+link = 1
+points = { O = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.35
+guide = { through = [0.0, 0.0], angle = 0.0 }
+assembly = "forward"
+[links.4]
+mass = 2.0
+centre = "B"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = 100.0
+angle = 180.0
+resisting = true
+[[loads]]
+kind = "moment"
+link = %d
+value = 40.0
+resisting = true
+[positions]
+count = 12
+"""
+
+
+def test_a_resisting_moment_on_a_link_that_never_turns_is_refused_at_its_key():
+    # The slider keeps its direction at every crank angle (ω4 ≡ 0): a moment against its turning has no sense to
+    # take and does no work, so the force analysis had dropped it at every position ("not acting here").
+    turning = graphplan.solve(graphplan.load_text(SLIDER_WITH_A_MOMENT % 3), driver=np.radians(np.arange(360.0)))
+    assert not np.any(turning.link(4).omega) and not np.any(turning.link(4).epsilon)
+    with pytest.raises(graphplan.SceneError) as caught:
+        graphplan.build(graphplan.load_text(SLIDER_WITH_A_MOMENT % 4))
+    assert str(caught.value) == (
+        "loads[1].resisting: link 4 never turns (it slides on a guide that does not turn), so a moment resisting its "
+        'turning never acts: put the moment on a link that turns, or resist the motion with a force (kind = "force", '
+        "point, angle)")
+
+
+def test_a_resisting_moment_on_the_scotch_yokes_block_is_refused_a_driving_one_is_taken():
+    """The yoke's block slides in a slot that does not turn: it keeps its direction as the yoke does."""
+    text = (Path(__file__).resolve().parent.parent / "fixtures" / "scotch_yoke.toml").read_text(encoding="utf-8")
+    moment = '\n[[loads]]\nkind = "moment"\nlink = 3\nvalue = 5.0\nresisting = %s\n'
+    with pytest.raises(graphplan.SceneError, match=r"^loads\[1\]\.resisting: link 3 never turns"):
+        graphplan.build(graphplan.load_text(text + moment % "true"))
+    # A moment of a set sense on it is a load the slot takes as a couple: it stays.
+    assert len(graphplan.build(graphplan.load_text(text + moment % "false")).scene.loads) == 2
