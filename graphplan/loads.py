@@ -67,6 +67,17 @@ class State:
         """The largest finite speed of a point of the state: a speed far below it is rest."""
         return max((largest_finite(point.v) for point in self.points.values()), default=0.0)
 
+    @functools.cached_property
+    def turning_rate_scale(self) -> float:
+        """The largest finite |ε| of the state: an ε far below it at rest is rounding, no turning about to begin."""
+        return max((largest_finite(link.epsilon) for link in self.links.values()), default=0.0)
+
+    @functools.cached_property
+    def moving_rate_scale(self) -> float:
+        """The largest finite acceleration of a point of the state: one far below it at rest is rounding, no
+        motion about to begin."""
+        return max((largest_finite(point.a) for point in self.points.values()), default=0.0)
+
 
 @dataclass(frozen=True)
 class Rates:
@@ -384,18 +395,24 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
 def resisted_sense(load, state: State) -> Scalar:
     """The sense of the motion a resisting load opposes (:func:`sense_of_motion`): its link's turning for a
     moment, its point's motion along the load's line for a force."""
+    # A point that never moves along the load's line (a force square to a slider's guide), a link that never turns
+    # (a parallelogram's coupler): its speed and its rate there are rounding, whose signs turned the load to and fro.
     if load.kind == "moment":
         turning = state.links[load.link]
-        return sense_of_motion(turning.omega, turning.epsilon, state.turning_scale)
+        return sense_of_motion(turning.omega, turning.epsilon, state.turning_scale, state.turning_rate_scale)
     direction, point = unit(np.radians(load.angle_deg)), state.points[load.point]
-    return sense_of_motion(dot(direction, point.v), dot(direction, point.a), state.moving_scale)
+    return sense_of_motion(dot(direction, point.v), dot(direction, point.a), state.moving_scale,
+                           state.moving_rate_scale)
 
 
-def sense_of_motion(speed: Scalar, rate: Scalar, scale: float) -> Scalar:
+def sense_of_motion(speed: Scalar, rate: Scalar, scale: float, rate_scale: float = 0.0) -> Scalar:
     """+1 or −1: the sense of motion, or at rest (against the mechanism's ``scale`` of speeds)
-    the sense of the motion about to begin; 0 at rest with nothing about to begin."""
-    speed_array = np.asarray(speed, dtype=float)
-    return np.where(at_rest(speed_array, scale), np.sign(np.asarray(rate, dtype=float)), np.sign(speed_array))
+    the sense of the motion about to begin; 0 at rest with nothing about to begin (a ``rate`` that is
+    rounding against ``rate_scale``, where one is given)."""
+    speed_array, rate_array = np.asarray(speed, dtype=float), np.asarray(rate, dtype=float)
+    about = np.where(at_rest(rate_array, rate_scale), 0.0, np.sign(rate_array)) if rate_scale > 0.0 \
+        else np.sign(rate_array)
+    return np.where(at_rest(speed_array, scale), about, np.sign(speed_array))
 
 
 def at_rest(speed: Scalar | Vector, scale: float) -> Scalar:

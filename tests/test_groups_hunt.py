@@ -9,6 +9,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import re
 from pathlib import Path
@@ -266,3 +267,51 @@ def test_a_resisting_moment_on_the_scotch_yokes_block_is_refused_a_driving_one_i
         graphplan.build(graphplan.load_text(text + moment % "true"))
     # A moment of a set sense on it is a load the slot takes as a couple: it stays.
     assert len(graphplan.build(graphplan.load_text(text + moment % "false")).scene.loads) == 2
+
+
+# A slider-crank whose slider 4 runs along the x axis, with a resisting force square to the guide put on it: the
+# slider never moves along the force's line, so there is no motion for it to resist, and it does nothing.
+SQUARE_RESISTANCE = """
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = 500.0
+angle = 90.0
+resisting = true
+"""
+
+
+def _forces_of(text: str, folder: Path) -> list[dict]:
+    from graphplan.cli import main
+
+    assert main(["run", str(_written(text, folder)), "--out", str(folder / "out")]) == 0
+    document = json.loads((folder / "out" / "results.json").read_text(encoding="utf-8"))
+    return [{key: position.get(key) for key in ("forces", "equilibrium")} for position in document["positions"]]
+
+
+def _written(text: str, folder: Path) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "scene.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_a_resisting_force_square_to_the_only_motion_of_its_point_acts_nowhere(tmp_path):
+    base = (SLIDER_WITH_A_MOMENT % 3).replace("[positions]\ncount = 12\n", "[positions]\ncount = 12\nplans = [2, 5, 9]\n")
+    scene = graphplan.load_text(base + SQUARE_RESISTANCE)
+    motion = graphplan.solve(scene)
+    # Along its line (the y axis) the slider neither moves nor is about to: its v and a there are rounding.
+    assert np.all(np.abs(motion.point("B").v[:, 1]) < 1e-12) and np.all(np.abs(motion.point("B").a[:, 1]) < 1e-9)
+    with_it = _forces_of(base + SQUARE_RESISTANCE, tmp_path / "with")
+    without = _forces_of(base, tmp_path / "without")
+    # Its sense was taken from the rounding's sign, so that it pushed the slider up at some positions and down at
+    # others, and the guide's reaction R14 jumped by 1000 N from one to the next.
+    for position, (found, expected) in enumerate(zip(with_it, without, strict=True)):
+        for part in ("forces", "equilibrium"):
+            if expected[part] is None:
+                continue
+            for name, force in expected[part]["reactions"].items():
+                assert found[part]["reactions"][name] == pytest.approx(force, abs=1e-6), (position, part, name)
+            key = "balancing_moment"
+            assert found[part][key] == pytest.approx(expected[part][key], abs=1e-9)
