@@ -67,16 +67,20 @@ class State:
         """The largest finite speed of a point of the state: a speed far below it is rest."""
         return max((largest_finite(point.v) for point in self.points.values()), default=0.0)
 
+    # The rates' scales are at least what the speeds make (ω², v·ω): where every ε of one instant is nought but for
+    # rounding (a crank at constant speed, a parallelogram's coupler), the largest would be that rounding itself.
     @functools.cached_property
     def turning_rate_scale(self) -> float:
-        """The largest finite |ε| of the state: an ε far below it at rest is rounding, no turning about to begin."""
-        return max((largest_finite(link.epsilon) for link in self.links.values()), default=0.0)
+        """The scale of the state's ε: one far below it at rest is rounding, no turning about to begin."""
+        largest = max((largest_finite(link.epsilon) for link in self.links.values()), default=0.0)
+        return max(largest, self.turning_scale ** 2)
 
     @functools.cached_property
     def moving_rate_scale(self) -> float:
-        """The largest finite acceleration of a point of the state: one far below it at rest is rounding, no
-        motion about to begin."""
-        return max((largest_finite(point.a) for point in self.points.values()), default=0.0)
+        """The scale of the state's accelerations: one far below it at rest is rounding, no motion about to
+        begin."""
+        largest = max((largest_finite(point.a) for point in self.points.values()), default=0.0)
+        return max(largest, self.moving_scale * self.turning_scale)
 
 
 @dataclass(frozen=True)

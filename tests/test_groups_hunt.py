@@ -315,3 +315,55 @@ def test_a_resisting_force_square_to_the_only_motion_of_its_point_acts_nowhere(t
                 assert found[part]["reactions"][name] == pytest.approx(force, abs=1e-6), (position, part, name)
             key = "balancing_moment"
             assert found[part][key] == pytest.approx(expected[part][key], abs=1e-9)
+
+
+# A parallelogram (crank OA = rocker CB = 0.1 m, coupler AB = OC = 0.3 m) with a resisting moment on its coupler 3,
+# which keeps its direction (ω3 = ε3 = 0) from 15° to 165° of the crank; past the toggle at 180° the solution goes on
+# in the crossed (antiparallelogram) branch, where the coupler turns.
+PARALLELOGRAM = """
+[scene]
+title = "Parallelogram with a resisting moment on its coupler"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.3, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.3, 0.1]
+assembly = "left"
+[points]
+S3 = { link = 3, from = "A", toward = "B", at = 0.15 }
+[links.3]
+mass = 2.0
+centre = "S3"
+inertia = 0.02
+[positions]
+count = 12
+start = 15.0
+plans = [1, 4]
+"""
+
+COUPLER_MOMENT = '\n[[loads]]\nkind = "moment"\nlink = 3\nvalue = 30.0\nresisting = true\n'
+
+
+def test_a_resisting_moment_on_a_coupler_that_keeps_its_direction_acts_on_no_plan_either(tmp_path):
+    motion = graphplan.solve(graphplan.load_text(PARALLELOGRAM))
+    assert np.all(np.abs(motion.link(3).omega[:6]) < 1e-12) and np.all(np.abs(motion.link(3).epsilon[:6]) < 1e-9)
+    with_it = _forces_of(PARALLELOGRAM + COUPLER_MOMENT, tmp_path / "with")
+    without = _forces_of(PARALLELOGRAM, tmp_path / "without")
+    # The plans of one instant have a crank at constant speed and a coupler that keeps its direction: every ε there
+    # is rounding, the largest too, against which the coupler's had seemed a turning about to begin.
+    for position in range(6):
+        for part in ("forces", "equilibrium"):
+            if without[position][part] is None:
+                continue
+            for name, force in without[position][part]["reactions"].items():
+                assert with_it[position][part]["reactions"][name] == pytest.approx(force, abs=1e-6), (position, name)
