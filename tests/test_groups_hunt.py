@@ -367,3 +367,44 @@ def test_a_resisting_moment_on_a_coupler_that_keeps_its_direction_acts_on_no_pla
                 continue
             for name, force in without[position][part]["reactions"].items():
                 assert with_it[position][part]["reactions"][name] == pytest.approx(force, abs=1e-6), (position, name)
+
+
+# --- an RPR's side --------------------------------------------------------------------------------------------------
+
+SLOTTED_LEVER = """
+[scene]
+title = "Slotted lever"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.0, -0.2] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+"""
+
+
+@pytest.mark.parametrize("key", ['assembly = "left"', "near = [0.1, 0.0]"])
+def test_an_rpr_given_an_assembly_is_told_that_offset_s_sign_is_its_side(key):
+    """The other dyads take assembly or near; an RPR refused them as a bare "unknown key"."""
+    with pytest.raises(graphplan.SceneError) as refused:
+        graphplan.load_text(SLOTTED_LEVER + key + "\n")
+    assert refused.value.where == f"groups[0].{key.split()[0]}"
+    assert "an RPR has one assembly" in str(refused.value)
+    assert "the slide runs that far to the left of C, looking along the lever toward the block" in str(refused.value)
+
+
+def test_an_rpr_s_positive_offset_puts_its_slide_to_the_left_of_c_along_the_lever():
+    """What the refusal above says of the sign, checked: A − C across the lever's direction u (θ4) is +e."""
+    motion = graphplan.solve(graphplan.load_text(SLOTTED_LEVER + "offset = 0.03\n"),
+                             driver=np.radians([30.0, 100.0, 200.0, 300.0]))
+    across = [np.cross([np.cos(theta), np.sin(theta)], a - np.array([0.0, -0.2]))
+              for a, theta in zip(motion.point("A").r, motion.link(4).angle, strict=True)]
+    assert np.allclose(across, 0.03, atol=1e-12)

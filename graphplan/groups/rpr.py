@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import AssemblyError, SingularPositionError
+from ..errors import AssemblyError, SceneError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
@@ -44,6 +44,14 @@ class RPR(Group):
     @classmethod
     def read(cls, table: Table, links: tuple[int, int], joints: tuple[str, ...]) -> RPR:
         offset = table.number("offset", 0.0)
+        # The other dyads pick one of two assemblies; a lever through its block has one, and only an offset slide
+        # has a side to choose, which offset's sign gives: "unknown key" left the student looking for another name.
+        for key in ("assembly", "near"):
+            if table.has(key):
+                raise SceneError(f"{table.path}.{key}", "unknown key: an RPR has one assembly, its lever laid "
+                                 "through the block; an offset slide's side is the sign of offset (m: the slide runs "
+                                 "that far to the left of C, looking along the lever toward the block; negative, to "
+                                 "its right)")
         table.done()
         return cls(where=table.path, links=links, joints=joints, offset=offset)
 
