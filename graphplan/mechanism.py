@@ -10,6 +10,7 @@ it, which the placement of named points needs.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -388,6 +389,43 @@ def _translating_links(scene: Scene) -> set[int]:
     return links
 
 
+def _frame_guides(scene: Scene) -> dict[int, Guide]:
+    """The frame guide of each link that slides along one without turning: its points move along that line alone."""
+    guides = {}
+    if scene.driver.kind == "slider":
+        guides[scene.driver.link] = scene.driver.guide
+    for group in scene.groups:
+        if group.kind in ("RRP", "RPP") and on_frame(scene, group.guide):
+            guides[group.links[1]] = group.guide  # an RRP's slider; an RPP's link b (its block moves with A)
+        if group.kind == "PRP":
+            guides.update((link, guide) for guide, link in zip(group.guide_pair, group.links) if on_frame(scene, guide))
+        if group.kind == "triad":
+            guides.update((slider, guide) for slider, guide in group.sliders() if on_frame(scene, guide))
+    return {link: scene.frame_lines[guide.line] if guide.line is not None else guide for link, guide in guides.items()}
+
+
+# A force this near square to its point's only line of motion (|cos| of the angle between them) takes from it a speed
+# and a rate that the force analysis reads as rest at every position (loads' _AT_REST): no motion to resist.
+_SQUARE = 1e-9
+
+
+def _refuse_force_with_no_motion(mechanism: Mechanism, load) -> None:
+    """Refuse a resisting force whose point never moves along its line at any position: resisting is against that
+    motion, or at rest the motion about to begin, and with neither the force acted nowhere without a word."""
+    scene = mechanism.scene
+    if load.point in scene.frame_points:
+        raise SceneError(f"{load.where}.resisting", f"{load.point} is a point of the frame (link {load.link} turns "
+                         "about it), so it never moves and a force there has no motion to resist: put the force at a "
+                         "point that moves, or give it a set sense (resisting = false)")
+    guide = _frame_guides(scene).get(load.link)
+    if guide is None or abs(math.cos(math.radians(load.angle_deg) - guide.angle)) > _SQUARE:
+        return
+    raise SceneError(f"{load.where}.resisting", f"{load.point} on link {load.link} moves only along its frame guide "
+                     f"(at {math.degrees(guide.angle):g}°), square to the force's line (at {load.angle_deg:g}°), so "
+                     "it has no motion along that line to resist at any position: turn the force along the guide, or "
+                     "give it a set sense (resisting = false)")
+
+
 def _as_written(window: tuple[float, float]) -> dict[str, float]:
     """A load's window of the working stroke as the scene's table writes it, for an error to show."""
     return {"from": window[0], "to": window[1]}
@@ -413,6 +451,8 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
             raise SceneError(f"{load.where}.resisting", f"link {load.link} never turns (it slides on a guide that "
                              "does not turn), so a moment resisting its turning never acts: put the moment on a link "
                              'that turns, or resist the motion with a force (kind = "force", point, angle)')
+        if load.kind == "force" and load.resisting:
+            _refuse_force_with_no_motion(mechanism, load)
         if load.diagram is not None and scene.positions.working is None:
             raise SceneError(f"{load.where}.diagram", "a load diagram is read over shares of the working stroke, "
                                                       "which needs positions.working (which motion of which link "
