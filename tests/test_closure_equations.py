@@ -362,7 +362,9 @@ def test_extremes_of_a_horizontal_scotch_yoke_at_crank_angles_0_and_180():
     scene = graphplan.load(FIXTURE_DIR / "scotch_yoke.toml")
     (yoke,) = scene.groups
     horizontal = dataclasses.replace(yoke, guide=dataclasses.replace(yoke.guide, through=(0.0, 0.0), angle=0.0))
-    scene = dataclasses.replace(scene, groups=(horizontal,))
+    # The plunger's resisting load turned with the guide: square to it, it would resist no motion and is refused.
+    (plunger,) = scene.loads
+    scene = dataclasses.replace(scene, groups=(horizontal,), loads=(dataclasses.replace(plunger, angle_deg=180.0),))
     # x = r·cos φ, the crank counter-clockwise: the yoke moves forward (+x) from φ = 180° to 360°.
     start, end = make_positions(build(scene)).extremes
     assert wrapped(start - math.pi) == pytest.approx(0.0, abs=1e-12)
