@@ -13,12 +13,14 @@ import math
 from collections.abc import Callable, Iterator
 from dataclasses import replace
 
+import numpy as np
+
 from .errors import AssemblyError, GraphplanError, SingularPositionError
 from .groups.base import Group
 from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
-from .motion import reference_at
-from .positions import reach, travel_reach
+from .motion import reference_at, solve
+from .positions import first_value, reach, travel_reach
 from .rounding import noise_floor
 from .scene import Scene
 
@@ -54,11 +56,39 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {copied}") from error
         if not ranges and (turned_over := _mirrored_sketch(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {turned_over}") from error
+        if not ranges and (stopped := _stopped_nowhere(mechanism, error.group)) is not None:
+            raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; the mechanism assembles "
+                                f"at no angle of link {driver.link}: {stopped}") from error
         # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
         advice = (_reach_advice(driver.link, ranges, False, stopping, "the values") if first is not None
                   else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
                                      runs=functools.partial(_swing_that_runs, mechanism.scene)))
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
+
+
+# A hundredth of a degree: the farthest or nearest a group reads off the sweep of the crank is then the true one to
+# some 10⁻¹⁰ of its lengths.
+_NOWHERE_SWEEP = 36000
+
+
+def _stopped_nowhere(mechanism: Mechanism, label: str) -> str | None:
+    """Where a crank's mechanism assembles at no angle, what in the geometry of the group ``label`` stops it (its
+    :meth:`~graphplan.groups.base.Group.nowhere`), read off the groups before it, in the assemblies the scene's
+    first position gives them, over the turn or the parts of it where they assemble; None where the group has
+    nothing to say, or those before it assemble nowhere either."""
+    step = next((n for n, unit in enumerate(mechanism.units) if n and unit.solver.label == label), None)
+    if step is None:
+        return None
+    before = replace(mechanism, units=mechanism.units[:step])
+    try:
+        reference = reference_at(before, first_value(before))
+        ranges = reach(before, reference)
+        if not ranges:
+            return None
+        values = np.concatenate([np.linspace(low, high, _NOWHERE_SWEEP + 1) for low, high in ranges])
+        return mechanism.units[step].solver.nowhere(solve(before, values, reference, tolerant=True))
+    except GraphplanError:
+        return None
 
 
 def _travel_advice(mechanism: Mechanism, stopping: str = Group.reach_ends) -> str | None:

@@ -2,16 +2,21 @@
 
 * A resisting force whose point can never move along the force's line (a point of a slider on a frame guide with
   the force square to the guide, or a frame point a link turns about) has no motion to resist at any position.
+* An RPR whose slide runs farther from the lever's pivot C than the block's pivot A comes: the block cannot reach the
+  slide. The refusal names the offset's key and both distances, at the position where it fails and, where it fails
+  at every angle, at A's farthest from C over the turn (checked against the circle A runs on).
 """
 
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
 
 import graphplan
+from graphplan.errors import AssemblyError
 
 # --- a resisting force with no motion to resist -------------------------------------------------------------------
 
@@ -100,3 +105,76 @@ def test_a_resisting_force_square_to_a_named_frame_line_is_refused():
         "points = { O = [0.0, 0.0] }", 'points = { O = [0.0, 0.0] }\nlines = { x = { through = [0.0, 0.0], angle = 0.0 } }')
     with pytest.raises(graphplan.SceneError, match=r"^loads\[0\]\.resisting: B on link 4 moves only along"):
         graphplan.build(graphplan.load_text(text))
+
+
+# --- an RPR's slide out of its block's reach ----------------------------------------------------------------------
+
+# A slotted lever: crank OA = 0.15 m about O = (0, 0), the lever turning about C = (0.06, −0.04) m, its slide
+# `offset` m to the left of C. A runs on the circle of 0.15 m about O, so |CA| ranges between 0.15 − |OC| and
+# 0.15 + |OC|, |OC| = √(0.06² + 0.04²) = 0.0721110 m: 0.0778890 m to 0.2221110 m, the farthest where A stands
+# opposite C across O, at φ = atan2(0.04, −0.06) = 146.3099°. The block pivoted at A reaches a slide |offset| m
+# from C only where |CA| > |offset|.
+OFFSET_SLOT = """
+[scene]
+title = "Slotted lever with an offset slide"
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0], C = [0.06, -0.04] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.15
+omega = 10.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = {offset}
+[positions]
+count = 12
+start = 90.0
+"""
+
+OC = math.hypot(0.06, 0.04)
+
+
+def _rpr_refusal(offset: float) -> AssemblyError:
+    with pytest.raises(AssemblyError) as caught:
+        graphplan.solve(graphplan.load_text(OFFSET_SLOT.format(offset=offset)))
+    return caught.value
+
+
+@pytest.mark.parametrize("offset", [0.5, -0.5])
+def test_an_rpr_slide_farther_from_c_than_a_ever_comes_names_the_offset_and_a_s_farthest(offset):
+    message = str(_rpr_refusal(offset))
+    # The first position, φ = 90°: A = (0, 0.15), |CA| = √(0.06² + 0.19²).
+    ca = math.hypot(0.06, 0.19)
+    head = (f"A cannot be assembled at position 1 (φ = 90°) in group II(3,4): the slide runs 0.5 m from C "
+            f"(groups[0].offset) but A is only {ca:.6g} m from C, so the block at A cannot reach it; ")
+    assert message.startswith(head), message
+    farthest = 0.15 + OC
+    tail = message[len(head):]
+    found = re.fullmatch(r"the mechanism assembles at no angle of link 2: A comes no farther than ([\d.]+) m from C "
+                         r"\(at φ = ([\d.]+)°\), short of the slide's 0\.5 m: give groups\[0\]\.offset a size under "
+                         r"([\d.]+) m", tail)
+    assert found, tail
+    assert float(found[1]) == pytest.approx(farthest, abs=1e-6)
+    assert float(found[2]) == pytest.approx(math.degrees(math.atan2(0.04, -0.06)), abs=0.01)
+    # The size advised is one the block reaches, to four figures: rounded down, not up.
+    assert farthest - 1e-4 <= float(found[3]) < farthest
+    assert "check the lengths" not in message
+
+
+def test_an_rpr_slide_out_of_reach_at_some_angles_names_the_offset_the_distance_and_the_angle():
+    message = str(_rpr_refusal(0.1))
+    # Position 8 of 12 from 90°: φ = 90° + 7·30° = 300°, A = 0.15·(cos 300°, sin 300°).
+    a = complex(0.15 * math.cos(math.radians(300.0)), 0.15 * math.sin(math.radians(300.0)))
+    ca = abs(a - complex(0.06, -0.04))
+    assert ca < 0.1
+    assert message.startswith(
+        f"A cannot be assembled at position 8 (φ = 300°) in group II(3,4): the slide runs 0.1 m from C "
+        f"(groups[0].offset) but A is only {ca:.6g} m from C, so the block at A cannot reach it; link 2 reaches only "
+        "from "), message
+

@@ -1294,7 +1294,8 @@ def test_rpr_offset_wider_than_the_reach() -> None:
     stage, error = first_error(text)
     assert stage == "solve" and type(error) is AssemblyError
     assert str(error).startswith("A cannot be assembled at position 8 (φ = 210°) in group II(3,4): "
-                                 "A–C = 0.264575 m is not more than the slide's offset 0.3 m; link 2 reaches only from ")
+                                 "the slide runs 0.3 m from C (groups[0].offset) but A is only 0.264575 m from C, so "
+                                 "the block at A cannot reach it; link 2 reaches only from ")
 
 
 def test_prp_guides_in_one_line_at_the_first_position_are_singular() -> None:

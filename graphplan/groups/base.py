@@ -188,6 +188,12 @@ class Group:
         ternary link's corners run), for the advice where it assembles nowhere; None where no sketch fixes one."""
         return None
 
+    def nowhere(self, before) -> str | None:
+        """Where the mechanism assembles nowhere and this group stops it, what in its own geometry does, read off
+        ``before``, the motion of the groups before it over the driver's reach (an RPR's slide farther from the
+        lever's pivot than the block ever comes); None where the lengths are to check."""
+        return None
+
     # Membership, used to check the structure and to place named points.
     def known_joints(self) -> tuple[str, ...]:
         """Joints that must be known before this group is solved."""

@@ -19,7 +19,9 @@ and :meth:`RPR.construct_acceleration`).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -31,6 +33,9 @@ from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
 from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross
 from .sliding import coriolis, coriolis_letter
+
+if TYPE_CHECKING:
+    from ..motion import Motion
 
 
 @dataclass(frozen=True)
@@ -54,6 +59,28 @@ class RPR(Group):
                                  "its right)")
         table.done()
         return cls(where=table.path, links=links, joints=joints, offset=offset)
+
+    def _out_of_reach(self, gap: float) -> str:
+        """Why the block pivoted at A, ``gap`` m from C, cannot reach the slide: it runs farther from C than that."""
+        a_name, c_name = self.joints
+        return (f"the slide runs {abs(self.offset):.6g} m from {c_name} ({self.where}.offset) but {a_name} is only "
+                f"{gap:.6g} m from {c_name}, so the block at {a_name} cannot reach it")
+
+    def nowhere(self, before: Motion) -> str | None:
+        """Where the mechanism assembles nowhere: A's farthest from C over the driver's values ``before`` the group
+        is solved, where that falls short of the slide's offset, with the size of offset under it that reaches."""
+        a_name, c_name = self.joints
+        gaps = np.abs(before.points[a_name].r - before.points[c_name].r)
+        farthest = int(np.argmax(gaps))
+        reach = float(gaps[farthest])
+        if reach > abs(self.offset) or reach == 0.0:
+            return None
+        # To four figures, rounded down, so that an offset of the size written reaches at the farthest.
+        quantum = 10.0 ** (math.floor(math.log10(reach)) - 3)
+        under = math.floor(reach / quantum) * quantum
+        return (f"{a_name} comes no farther than {reach:.6g} m from {c_name} "
+                f"(at {before.mechanism.driver.describe(float(before.driver[farthest]))}), short of the slide's "
+                f"{abs(self.offset):.6g} m: give {self.where}.offset a size under {under:.6g} m")
 
     @property
     def coincident(self) -> str:
@@ -89,9 +116,7 @@ class RPR(Group):
         s2 = ca2 - e * e
 
         def reason(i: int, at: str) -> AssemblyError:
-            gap = float(np.sqrt(np.atleast_1d(ca2)[i]))
-            why = f"{a_name}–{c_name} = {gap:.6g} m is not more than the slide's offset {abs(e):.6g} m"
-            return AssemblyError(a_name, at, self.label, why)
+            return AssemblyError(a_name, at, self.label, self._out_of_reach(float(np.sqrt(np.atleast_1d(ca2)[i]))))
 
         if e == 0.0:
             # A block on the lever's own pivot assembles at every direction of the lever: the group leaves ω
