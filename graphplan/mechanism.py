@@ -422,8 +422,8 @@ def _refuse_force_with_no_motion(mechanism: Mechanism, load) -> None:
         return
     raise SceneError(f"{load.where}.resisting", f"{load.point} on link {load.link} moves only along its frame guide "
                      f"(at {math.degrees(guide.angle):g}°), square to the force's line (at {load.angle_deg:g}°), so "
-                     "it has no motion along that line to resist at any position: turn the force along the guide, or "
-                     "give it a set sense (resisting = false)")
+                     "it has no motion along that line to resist at any position: turn the force along the guide or the "
+                     "guide along the force, or give it a set sense (resisting = false)")
 
 
 def _as_written(window: tuple[float, float]) -> dict[str, float]:

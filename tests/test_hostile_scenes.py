@@ -568,6 +568,7 @@ def test_an_output_link_that_does_not_move_is_refused_as_such_not_as_a_sheet_too
     # stays at C, and the diagrams' scale came out endless, refused as "fit on no A1 sheet".
     scene = tomllib.loads((FIXTURE.parent / "tangent_mechanism_prp.toml").read_text(encoding="utf-8"))
     scene["frame"]["lines"]["ram"]["angle"] = 90.0
+    scene["loads"][0]["angle"] = 270.0  # turned with the guide: square to it, it would be refused as resisting nothing
     line = assert_refused(capsys, to_toml(scene), "positions.working: link 6 does not move over the crank's turn")
     assert "drawing.sheet" not in line
 
@@ -695,6 +696,7 @@ def test_check_refuses_an_output_link_that_does_not_move_as_the_run_does(capsys,
     # check said "ok" and printed strokes of the resting link's rounding noise (φw = 223°).
     scene = tomllib.loads((FIXTURE.parent / "tangent_mechanism_prp.toml").read_text(encoding="utf-8"))
     scene["frame"]["lines"]["ram"]["angle"] = 90.0
+    scene["loads"][0]["angle"] = 270.0  # turned with the guide: square to it, it would be refused as resisting nothing
     path = tmp_path / "scene.toml"
     path.write_text(to_toml(scene), encoding="utf-8")
     capsys.readouterr()

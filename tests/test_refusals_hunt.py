@@ -76,7 +76,7 @@ def test_a_resisting_force_square_to_its_sliders_frame_guide_is_refused(guide_de
     assert str(caught.value) == (
         f"loads[0].resisting: B on link 4 moves only along its frame guide (at {guide_deg:g}°), square to the "
         f"force's line (at {force_deg:g}°), so it has no motion along that line to resist at any position: "
-        "turn the force along the guide, or give it a set sense (resisting = false)")
+        "turn the force along the guide or the guide along the force, or give it a set sense (resisting = false)")
 
 
 @pytest.mark.parametrize(("guide_deg", "force_deg"), [(0.0, 180.0), (0.0, 89.0), (30.0, 45.0)])
