@@ -44,6 +44,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from .errors import SceneError
+from .lookalikes import contrast, plain, twin
 from .reader import Table, check_number, check_str, join_path
 from .rotor_lengths import LARGEST_RADIUS_M, LONGEST_ROTOR_M, MIXED_RATIO, Implausible, LengthsInMillimetres
 
@@ -130,14 +131,30 @@ def label_clash(names: Sequence[str], plane_names: Sequence[str]) -> tuple[str, 
 
     ``("mass", k, j, label)``: mass k's label is mass j's (j < k); ``("plane", k, j, label)``: correction
     plane k's is mass j's.  ``names`` are the masses' as the polygons letter them (numbered where unnamed)."""
-    labels = [vector_name(name) for name in names]
-    for k, label in enumerate(labels):
-        if label in labels[:k]:
-            return "mass", k, labels.index(label), label
+    # As they look: a Cyrillic А's mАrА is lettered as the Latin A's mArA.
+    looks = [plain(vector_name(name)) for name in names]
+    for k, label in enumerate(looks):
+        if label in looks[:k]:
+            return "mass", k, looks.index(label), vector_name(names[k])
     for k, plane in enumerate(plane_names):
-        label = vector_name(plane)
-        if label in labels:
-            return "plane", k, labels.index(label), label
+        label = plain(vector_name(plane))
+        if label in looks:
+            return "plane", k, looks.index(label), vector_name(plane)
+    return None
+
+
+def _told_apart(name: str, other: str) -> str:
+    """Which character is which, where two names that look alike are spelt apart ("; 'А' has the Cyrillic 'А'
+    (U+0410) where 'A' has the Latin 'A' (U+0041)"); else ""."""
+    return f"; {contrast(name, other)}" if name != other and plain(name) == plain(other) else ""
+
+
+def _lookalike_in(names: Sequence[str]) -> tuple[int, int] | None:
+    """The first name (k) of ``names`` that looks like an earlier one (j), spelt apart, as (k, j); or None."""
+    for k, name in enumerate(names):
+        other = twin(name, names[:k])
+        if other is not None:
+            return k, names.index(other)
     return None
 
 
@@ -175,6 +192,10 @@ class BalancingSpec:
         for k, name in enumerate(names):
             if name in names[:k]:
                 raise ValueError(f"masses[{k}].name: repeats the name of an earlier mass ({name!r})")
+        if (alike := _lookalike_in(names)) is not None:
+            k, j = alike
+            raise ValueError(f"masses[{k}].name: looks the same as the name of an earlier mass ({names[j]!r}); "
+                             f"{contrast(names[k], names[j])}: name the two apart")
         object.__setattr__(self, "masses", masses)
         planes = tuple(_finite(f"planes[{k}]", z) for k, z in enumerate(self.planes))
         if len(planes) > 2:
@@ -199,16 +220,22 @@ class BalancingSpec:
         if (len(plane_names) != count or len(set(plane_names)) != count
                 or not all(isinstance(n, str) and n for n in plane_names)):
             raise ValueError(f"plane_names: must be {count} different names, one per correction plane")
+        if (alike := _lookalike_in(plane_names)) is not None:
+            k, j = alike
+            raise ValueError(f"plane_names: {plane_names[k]!r} looks the same as {plane_names[j]!r}; "
+                             f"{contrast(plane_names[k], plane_names[j])}: name the two apart")
         clash = label_clash(names, plane_names)
         if clash is not None:
             kind, k, j, label = clash
             if kind == "mass":
                 where, told = f"masses[{k}].name", f"mass {names[k]!r} and mass {names[j]!r}"
+                apart = _told_apart(names[k], names[j])
             else:
                 where = "plane_names" if self.plane_names else f"masses[{j}].name"
                 told = f"correction plane {plane_names[k]!r} and mass {names[j]!r}"
-            raise ValueError(f"{where}: the products of {told} would both read {label}; give names whose products "
-                             "read apart")
+                apart = _told_apart(plane_names[k], names[j])
+            raise ValueError(f"{where}: the products of {told} would both read {label}{apart}; give names whose "
+                             "products read apart")
         object.__setattr__(self, "plane_names", plane_names)
 
     @property
@@ -426,6 +453,11 @@ def read_balancing(table: Table) -> BalancingSpec:
         if name is not None:
             if name in names:
                 raise SceneError(entry.where("name"), f"repeats the name of {names[name]}", name)
+            if (other := twin(name, names)) is not None:
+                # Drawn alike, the polygons and the note would letter two products mArA, told apart by no one.
+                raise SceneError(entry.where("name"), f"looks the same as the name of {names[other]} ({other!r}), "
+                                 "and the polygons and the note would letter both alike; "
+                                 f"{contrast(name, other)}: name the two apart", name)
             names[name] = where
         named.append(name or "")
         masses.append(RotatingMass(mass, radius, angle, 0.0 if plane is None else plane, name or ""))
@@ -464,18 +496,21 @@ def _refuse_label_clash(table: Table, given: list[str], plane_names: tuple[str, 
         other = j if blamed == k else k
         raise SceneError(join_path(join_path(table.where("masses"), blamed), "name"),
                          f"its product and that of {mass(other)} would both read {label} on the polygons and in the "
-                         "note; give names whose products read apart", given[blamed])
+                         f"note{_told_apart(names[blamed], names[other])}; give names whose products read apart",
+                         given[blamed])
     if plane_names or not given[j]:
         # A plane named as the mass is also gives its correction mass the mass's symbol: "mA = 1.204 kg" of mass A's 2.
         symbol = f" (and its correction mass m{planes[k]} the mass's symbol)" if planes[k] == names[j] else ""
         raise SceneError(table.where("plane_names"),
                          f"the product of correction plane {planes[k]!r} and that of {mass(j)} would both read {label} "
-                         f"on the polygons and in the note{symbol}; name the planes apart from the masses",
+                         f"on the polygons and in the note{symbol}{_told_apart(planes[k], names[j])}; name the planes "
+                         "apart from the masses",
                          list(planes))
     raise SceneError(join_path(join_path(table.where("masses"), j), "name"),
                      f"its product and that of correction plane {planes[k]!r} (the default name of "
                      f"{'the correction plane' if count == 1 else 'a correction plane'}) would both read {label} on "
-                     "the polygons and in the note; give the mass another name, or name the planes (plane_names)",
+                     f"the polygons and in the note{_told_apart(names[j], planes[k])}; give the mass another name, or "
+                     "name the planes (plane_names)",
                      given[j])
 
 
@@ -534,6 +569,11 @@ def _plane_names(table: Table, count: int) -> tuple[str, ...]:
     names = tuple(check_str(item, where) for where, item in pairs)
     if len(set(names)) != len(names):
         raise SceneError(table.where("plane_names"), "must be different names", list(names))
+    if (alike := _lookalike_in(names)) is not None:
+        k, j = alike
+        raise SceneError(table.where("plane_names"), f"{names[k]!r} looks the same as {names[j]!r}, and the "
+                         f"polygons and the note would letter both alike; {contrast(names[k], names[j])}: name the "
+                         "two apart", list(names))
     return names
 
 

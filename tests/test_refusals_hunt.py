@@ -5,12 +5,16 @@
 * An RPR whose slide runs farther from the lever's pivot C than the block's pivot A comes: the block cannot reach the
   slide. The refusal names the offset's key and both distances, at the position where it fails and, where it fails
   at every angle, at A's farthest from C over the turn (checked against the circle A runs on).
+* Balancing masses' or correction planes' names that look alike in other characters (a Cyrillic А beside the Latin
+  A): the polygons and the note would letter two products alike. Each is refused saying which character is which,
+  as the linkage's point names are.
 """
 
 from __future__ import annotations
 
 import math
 import re
+import unicodedata
 
 import numpy as np
 import pytest
@@ -178,3 +182,63 @@ def test_an_rpr_slide_out_of_reach_at_some_angles_names_the_offset_the_distance_
         f"(groups[0].offset) but A is only {ca:.6g} m from C, so the block at A cannot reach it; link 2 reaches only "
         "from "), message
 
+
+# --- balancing names that look alike --------------------------------------------------------------------------------
+
+# Two masses in two planes, balanced in planes at 0 and 1 m; names and the planes' names filled in per test. The
+# Latin A is U+0041 and the Cyrillic А U+0410; the Latin B U+0042 and the Cyrillic В U+0412: drawn alike, the
+# polygons and the note would letter two products mArA.
+LATIN_A, CYRILLIC_A, LATIN_B, CYRILLIC_B = "A", "\u0410", "B", "\u0412"
+ROTOR = """
+[scene]
+title = "Rotor"
+[balancing]
+masses = [ {{ mass = 2.0, radius = 0.1, angle = 30.0, plane = 0.3, name = "{first}" }},
+           {{ mass = 1.0, radius = 0.1, angle = 200.0, plane = 0.8, name = "{second}" }} ]
+planes = [0.0, 1.0]
+{plane_names}
+"""
+
+
+def _rotor_refusal(first: str, second: str, plane_names: str = "") -> str:
+    with pytest.raises(graphplan.SceneError) as caught:
+        graphplan.load_text(ROTOR.format(first=first, second=second, plane_names=plane_names))
+    return str(caught.value)
+
+
+def test_two_masses_whose_names_look_alike_are_refused_saying_which_character_is_which():
+    assert CYRILLIC_A != LATIN_A and unicodedata.name(CYRILLIC_A) == "CYRILLIC CAPITAL LETTER A"
+    assert _rotor_refusal(LATIN_A, CYRILLIC_A) == (
+        f"balancing.masses[1].name: looks the same as the name of balancing.masses[0] ('A'), and the polygons and the "
+        f"note would letter both alike; '{CYRILLIC_A}' has the Cyrillic '{CYRILLIC_A}' (U+0410) where 'A' has the "
+        f"Latin 'A' (U+0041): name the two apart (got '{CYRILLIC_A}')")
+
+
+def test_two_correction_planes_whose_names_look_alike_are_refused_saying_which_character_is_which():
+    message = _rotor_refusal("1", "2", f'plane_names = ["{LATIN_B}", "{CYRILLIC_B}"]')
+    assert message == (
+        f"balancing.plane_names: '{CYRILLIC_B}' looks the same as 'B', and the polygons and the note would letter "
+        f"both alike; '{CYRILLIC_B}' has the Cyrillic '{CYRILLIC_B}' (U+0412) where 'B' has the Latin 'B' (U+0042): "
+        f'name the two apart (got ["B", "{CYRILLIC_B}"])')
+
+
+def test_a_plane_named_like_a_mass_in_other_characters_is_refused_saying_which_character_is_which():
+    # The plane A's correction m·r would read mArA, as mass А's does.
+    message = _rotor_refusal(CYRILLIC_A, "2", f'plane_names = ["{LATIN_A}", "R"]')
+    assert message.startswith(
+        "balancing.plane_names: the product of correction plane 'A' and that of balancing.masses[0] (named "
+        f"'{CYRILLIC_A}') would both read mArA on the polygons and in the note"), message
+    # Told at the planes' key, the plane's name first.
+    assert f"'A' has the Latin 'A' (U+0041) where '{CYRILLIC_A}' has the Cyrillic '{CYRILLIC_A}' (U+0410)" in message
+
+
+def test_the_balancing_specification_refuses_names_that_look_alike_too():
+    from graphplan.rotor_balancing import BalancingSpec, RotatingMass
+
+    with pytest.raises(ValueError, match=r"^masses\[1\]\.name: looks the same as the name of an earlier mass \('A'\); "
+                                         r".*\(U\+0410\) where 'A' has the Latin 'A' \(U\+0041\)"):
+        BalancingSpec([RotatingMass(1, 0.1, 0, name=LATIN_A), RotatingMass(1, 0.1, 90, name=CYRILLIC_A)])
+    with pytest.raises(ValueError, match=r"^plane_names: .*\(U\+0412\) where 'B' has the Latin 'B' \(U\+0042\)"):
+        BalancingSpec([RotatingMass(1, 0.1, 0, plane=0.3)], planes=(0.0, 1.0), plane_names=(LATIN_B, CYRILLIC_B))
+    # Names that look apart stay.
+    assert BalancingSpec([RotatingMass(1, 0.1, 0, name="A"), RotatingMass(1, 0.1, 90, name="D")]).plane_names == ("b",)
