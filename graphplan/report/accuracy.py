@@ -15,6 +15,7 @@ from collections.abc import Iterable, Mapping
 
 from ..accuracy import Row, Study, draw_study
 from ..locale import Count, strings
+from .markdown import literal
 from .plot_style import settings, svg_text, with_decimal_mark
 
 FAMILIES = ("velocity", "acceleration")
@@ -54,7 +55,7 @@ def order_sentence(orders: Mapping[str, float], text: Mapping[str, str]) -> str:
 def markdown(study: Study, locale: str, title: str) -> str:
     """``accuracy.md``: what was compared with what, the table, and the diagrams' order of convergence."""
     text = strings(locale)
-    lines = [f"# {text['accuracy_title'].format(title=title)}", "",
+    lines = [f"# {text['accuracy_title'].format(title=literal(title))}", "",
              text["accuracy_explained"].format(count=Count(len(study.case.compared))), "",
              *([text["accuracy_left_out"].format(positions="; ".join(study.case.left_out.values()),
                                                  count=Count(len(study.case.left_out))), ""]

@@ -32,6 +32,7 @@ from ..loads import motion_state
 from ..locale import Count, strings
 from ..render.numerals import POWER_OF_TEN, power_of_ten
 from ..statics import balancing_by_power, delivers_power, efficiency, rounded_zero, turned_round
+from .markdown import literal
 
 # A rate or a load this small against the largest of its kind is the plan's rounding, not a value.
 ROUNDING = 1e-12
@@ -444,7 +445,7 @@ def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
     mark = text["decimal_mark"]
     name, unit = balancing_symbol(analysis)
-    lines = [f"# {text['forces_title'].format(title=analysis.scene.title)}", "",
+    lines = [f"# {text['forces_title'].format(title=literal(analysis.scene.title))}", "",
              text["forces_intro"].format(structure=analysis.mechanism.structure, name=name, unit=unit), ""]
     for plan in analysis.plans:
         if plan.forces is not None:

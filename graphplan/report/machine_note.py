@@ -35,6 +35,7 @@ from ..vibration import (
     mounts_sag,
     near_resonance,
 )
+from .markdown import literal
 from .vibration_plots import words_for
 
 if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
@@ -95,7 +96,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     note.figure("dynamics.svg", note.text["dyn_title" if flywheel is not None else "dyn_title_model"])
     if dynamics.motion is not None:
         _motion(note, dynamics, flywheel)
-        note.figure("motion.svg", note.t("motion_title", title=note.scene.title), lead="plot_lead")
+        note.figure("motion.svg", note.t("motion_title", title=literal(note.scene.title)), lead="plot_lead")
 
 
 def _reductions(note: Writer, model) -> None:

@@ -15,14 +15,40 @@ paragraph, :func:`picture_source`).
 from __future__ import annotations
 
 import functools
+import re
 from dataclasses import dataclass
 
 from markdown_it import MarkdownIt
+from markdown_it.common.utils import ESCAPABLE
 from markdown_it.token import Token
 from markdown_it.tree import SyntaxTreeNode
 
 # A table column's alignment, as markdown-it writes it on its cells, and as the side it is set to.
 _SIDES = {"text-align:left": "l", "text-align:center": "c", "text-align:right": "r"}
+
+
+# Where a line begins, every mark CommonMark lets a backslash make plain (markdown-it's list of them) may begin a
+# block: a list's - or +, a quote's >, a fence's ~~~, a setext heading's ===, and after digits an ordered list's . or ).
+# Anywhere in a line: code, emphasis, links and pictures, autolinks and tags, entities, a table's cells, a heading's
+# closing #s, and the carets ``raised`` lifts (aBA^τ).
+_MARKUP = re.compile(rf"^(\d*)([{ESCAPABLE}])|([\\`*_\[\]<&|#^])")
+
+
+def literal(text: str) -> str:
+    """``text`` of the user's own (a scene's title, a ``[project]`` value) as Markdown that reads as it is written.
+
+    A title ``Project #3 *draft*`` was set in italics in every format, and a ``|`` split a table's cell: each mark
+    CommonMark could read as markup where it stands is backslash-escaped, which it reads as the mark alone (the
+    others left as typed, so that ``note.md`` reads as plain text too), and the HTML, LaTeX and Word writers then
+    escape as their own markup needs.  Its line breaks, and the spaces round them, are one space: a heading and a
+    cell are one line, and a line that went on with ``- `` or ``#`` would begin a list or a heading.
+    """
+    def escaped(found: re.Match[str]) -> str:
+        if found[2] is not None:
+            return f"{found[1]}\\{found[2]}"
+        return f"\\{found[3]}"
+
+    return _MARKUP.sub(escaped, " ".join(text.split()))
 
 
 def parser() -> MarkdownIt:

@@ -51,6 +51,7 @@ from ..wording import driver_at, raised
 from . import forces as force_report
 from .force_note import forces_section
 from .machine_note import balancing_section, dynamics_section, vibration_section
+from .markdown import literal
 from .symbols import CAPITALS
 from .tables import (
     error_table_lines,
@@ -234,7 +235,8 @@ class _Note:
             (part, self.t("figure_part", caption=caption, part=k, count=len(parts)))
             for k, part in enumerate(parts, start=1)]
         for picture, words in shown:
-            alternative = re.sub(r"([\\\[\]])", r"\\\1", words)   # a title's brackets must not close it
+            # A bracket of the note's own words must not close it; the title's come escaped (``literal``).
+            alternative = re.sub(r"(?<!\\)([\[\]])", r"\\\1", words)
             self.para(f"![{alternative}]({picture})")
             self.para(self.t("figure_caption", number=self.figures_shown, caption=words))
 
@@ -254,7 +256,7 @@ class _Note:
     # The note.
 
     def write(self) -> None:
-        self.heading(1, self.t("note_title", title=self.scene.title))
+        self.heading(1, self.t("note_title", title=literal(self.scene.title)))
         self.project()
         section = self.linkage() if self.analysis is not None else 0
         if self.dynamics is not None:
@@ -280,6 +282,8 @@ class _Note:
             value = getattr(project, name)
             if isinstance(value, datetime.date):
                 value = self.t("date_format", date=value)
+            else:
+                value = literal(value)
             if value:
                 lines.append(self.t(f"note_project_{name}", value=value))
         if lines:

@@ -33,6 +33,7 @@ from ..misreadings import (
 from ..render.numerals import scale_factor
 from ..wording import balancing_load
 from .forces import number
+from .markdown import literal
 from .results import PERCENT_FLOOR
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
@@ -258,7 +259,7 @@ def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
     mark = text["decimal_mark"]
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
-    lines = [f"# {text['errors_title'].format(title=analysis.scene.title)}", "",
+    lines = [f"# {text['errors_title'].format(title=literal(analysis.scene.title))}", "",
              f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}", ""]
     if has_reactions(analysis):
         lines += [reactions_intro(analysis), ""]

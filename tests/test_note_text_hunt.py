@@ -1,0 +1,163 @@
+"""What a user writes is shown as written, and the command line refuses what it can before it analyses.
+
+The note is written once as Markdown and every other format (HTML, the PDF typeset from it, LaTeX, Word) is read
+from that Markdown's syntax tree: a title with Markdown in it (``Project #3 *draft*``) came out in italics, with
+a link and a code span, in all of them.  Each format is read back here with a reader of its own: the HTML with
+Python's parser, the PDF with PDFium, the Word document with python-docx.
+"""
+
+from __future__ import annotations
+
+import re
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+from scene_texts import central_slider_crank
+
+from graphplan.cli import main
+
+# Every character CommonMark reads as markup somewhere in a line, and the HTML's and LaTeX's own.
+TITLE = r"Project #3 *draft* of `x` [a](b) <b>bold</b> & A|B __u__ \ 50% ~ $1 {c} ^2 !x"
+AUTHOR = "J. *Doe* [student] | group_7"
+
+
+def _toml_string(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _scene_text(title: str) -> str:
+    """A small slider-crank titled ``title`` (a TOML string as written in the file), with one plan."""
+    head = f'[scene]\ntitle = {title}\nlocale = "en"\ngravity = 0.0\n[project]\nauthor = {_toml_string(AUTHOR)}\n'
+    return (central_slider_crank(0.1, 0.4, 10.0).replace("[scene]\ngravity = 0.0\n", head, 1)
+            + "[positions]\ncount = 4\nplans = [1]\n")
+
+
+def _run(tmp_path: Path, formats: str = "svg", title: str = _toml_string(TITLE)) -> Path:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(_scene_text(title), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note,errors", "--format", formats]) == 0
+    return out
+
+
+AWKWARD = [TITLE, AUTHOR, "1. Faculty of machines", "2) group", "- a list?", "+ plus", "> quoted", "~~~ fence",
+           "```", "=====", "---", "***", "#", "Title #", "R&D &amp; &copy;", "<http://x.org>", "a<b", "a^r and aBA^τ",
+           "x_1_ _y_ __z__", "a\\*b\\", "    four spaces", "|", "cell | cell", "![x](y.svg)", "[a]: /url"]
+
+
+@pytest.mark.parametrize("text", AWKWARD)
+def test_literal_text_reads_back_as_written_in_a_heading_a_line_s_start_and_a_cell(text):
+    """Read back by markdown-it's CommonMark with tables, as the note's writers read it, and through ``raised``,
+    which the whole note goes through."""
+    from markdown_it import MarkdownIt
+    from markdown_it.tree import SyntaxTreeNode
+
+    from graphplan.report.markdown import literal
+    from graphplan.wording import raised
+
+    def read(markdown: str) -> list[tuple[str, str]]:
+        """Each block's type and its inline's text, made of nothing but text and breaks."""
+        tree = SyntaxTreeNode(MarkdownIt("commonmark").enable("table").parse(raised(markdown)))
+        found = []
+        for node in tree.walk():
+            if node.type == "inline":
+                assert {child.type for child in node.children} <= {"text", "softbreak", "hardbreak"}, markdown
+                found.append((node.parent.type, "".join(child.content or " " for child in node.children)))
+        return found
+
+    shown = " ".join(text.split())
+    assert read(f"# Explanatory note: {literal(text)}") == [("heading", f"Explanatory note: {shown}")]
+    # The project's lines, the organisation's alone on its own (a hard break ends the line before it).
+    assert read(f"Author: A\\\n{literal(text)}\\\nDate: 1") == [("paragraph", f"Author: A {shown} Date: 1")]
+    assert read(f"| a | b |\n|---|---|\n| {literal(text)} | c |") == [("th", "a"), ("th", "b"), ("td", shown),
+                                                                     ("td", "c")]
+
+
+class _Elements(HTMLParser):
+    """The text of each element named in ``tags`` and the tags found inside it."""
+
+    def __init__(self, tags: tuple[str, ...]) -> None:
+        super().__init__()
+        self.tags = tags
+        self.texts: list[str] = []
+        self.inner: list[list[str]] = []
+        self._depth = 0
+
+    def handle_starttag(self, tag, attrs):
+        if tag in self.tags and not self._depth:
+            self.texts.append("")
+            self.inner.append([])
+            self._depth = 1
+        elif self._depth:
+            self.inner[-1].append(tag)
+
+    def handle_endtag(self, tag):
+        if tag in self.tags:
+            self._depth = 0
+
+    def handle_data(self, data):
+        if self._depth:
+            self.texts[-1] += data
+
+
+def test_the_title_and_project_markdown_is_shown_as_written_in_the_markdown_and_html_notes(tmp_path):
+    out = _run(tmp_path)
+    page = (out / "note.html").read_text(encoding="utf-8")
+    heading = _Elements(("h1",))
+    heading.feed(page)
+    assert heading.texts == [f"Explanatory note: {TITLE}"]
+    # No emphasis, code, link or strong made of the title's characters.
+    assert heading.inner == [[]]
+    paragraphs = _Elements(("p",))
+    paragraphs.feed(page)
+    assert f"Author: {AUTHOR}" in paragraphs.texts
+    # The Markdown itself, read by a CommonMark reader, says the same.
+    from markdown_it import MarkdownIt
+
+    tokens = MarkdownIt("commonmark").enable("table").parse((out / "note.md").read_text(encoding="utf-8"))
+    inline = tokens[1]
+    assert tokens[0].tag == "h1" and [child.type for child in inline.children] == ["text"]
+    assert inline.children[0].content == f"Explanatory note: {TITLE}"
+    # The error tables' own heading too.
+    errors = (out / "errors.md").read_text(encoding="utf-8").splitlines()[0]
+    tokens = MarkdownIt("commonmark").parse(errors)
+    assert [child.type for child in tokens[1].children] == ["text"] and TITLE in tokens[1].children[0].content
+
+
+def test_the_title_is_shown_as_written_in_the_latex_note(tmp_path):
+    tex = (_run(tmp_path) / "note.tex").read_text(encoding="utf-8")
+    title_line = next(line for line in tex.splitlines() if "Explanatory note" in line and "bfseries" in line)
+    # Nothing of the title set in italics, bold or typewriter; its characters each escaped as LaTeX wants.
+    assert "\\textit" not in title_line and "\\texttt" not in title_line and "\\textbf" not in title_line
+    assert "\\#3" in title_line and "\\&" in title_line and "\\%" in title_line and "\\$1" in title_line
+
+
+def test_the_title_is_shown_as_written_in_the_word_and_pdf_notes(tmp_path):
+    docx = pytest.importorskip("docx")
+    pdfium = pytest.importorskip("pypdfium2")
+    try:
+        import weasyprint  # noqa: F401
+    except (ImportError, OSError) as error:  # OSError: no Pango library
+        pytest.skip(f"WeasyPrint cannot typeset here: {error}")
+    out = _run(tmp_path, "pdf,docx")
+    document = docx.Document(str(out / "note.docx"))
+    first = next(paragraph for paragraph in document.paragraphs if paragraph.text.strip())
+    assert first.text == f"Explanatory note: {TITLE}"
+    assert not any(run.italic or run.font.name == "Courier New" for run in first.runs)
+    pdf = pdfium.PdfDocument(str(out / "note.pdf"))
+    text = pdf[0].get_textpage().get_text_range()
+    squeezed = re.sub(r"\s+", "", text)
+    assert re.sub(r"\s+", "", f"Explanatory note: {TITLE}") in squeezed
+
+
+def test_a_title_on_several_lines_is_one_line_of_the_note(tmp_path):
+    """A TOML multi-line string holds a long title as it is typed; the note's heading is one line (its second
+    line was a paragraph of its own): the line breaks and the spaces round them read as one space."""
+    multiline = '"""Crank-rocker\n   of a *ratchet*\r\n# feed"""'
+    out = _run(tmp_path, title=multiline)
+    heading = _Elements(("h1",))
+    heading.feed((out / "note.html").read_text(encoding="utf-8"))
+    assert heading.texts == ["Explanatory note: Crank-rocker of a *ratchet* # feed"]
+    assert (out / "note.md").read_text(encoding="utf-8").startswith("# Explanatory note: Crank-rocker of a ")
+
