@@ -28,17 +28,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
     that is a link to a folder is written as that folder, the link left as it is.
     """
     target = Path(target)
-    here = Path.cwd().resolve()
-    if target.resolve() == here or target.resolve() in here.parents:
-        raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
-                          f"give {option} a folder of its own")
-    # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
-    folder = target.resolve() if target.is_symlink() else target
-    for above in folder.parents:
-        if above.exists():
-            if not above.is_dir():
-                raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
-            break
+    folder = check_folder(target, option)
     staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
     retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
@@ -63,8 +53,6 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
                 path.write_bytes(content)
         (staging / WRITTEN).write_text("".join(f"{name}\n" for name in written), encoding="utf-8")
         if folder.exists():
-            if not folder.is_dir():
-                raise OutputError(f"{target}: exists and is not a folder")
             for name in users:  # none the run writes: those were refused above
                 (folder / name).rename(staging / name)
                 carried.append(name)
@@ -85,6 +73,32 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
         raise OutputError(f"{target}: cannot write the output ({error.strerror or error})") from None
     shutil.rmtree(retired, ignore_errors=True)
     return [target / name for name in sorted(files)]
+
+
+def check_folder(target: Path, option: str = "--out") -> Path:
+    """The folder a run writes as ``target`` (the folder a link names), refused as :func:`write_folder` refuses it
+    where the path alone says so: a run asks before it analyses, not after a minute of it.
+
+    Raises
+    ------
+    OutputError
+        for the folder the command runs in or one holding it, a file (or a path through one).
+    """
+    target = Path(target)
+    here = Path.cwd().resolve()
+    if target.resolve() == here or target.resolve() in here.parents:
+        raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
+                          f"give {option} a folder of its own")
+    # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
+    folder = target.resolve() if target.is_symlink() else target
+    for above in folder.parents:
+        if above.exists():
+            if not above.is_dir():
+                raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
+            break
+    if folder.exists() and not folder.is_dir():
+        raise OutputError(f"{target}: exists and is not a folder")
+    return folder
 
 
 def _not_written_by_a_run(folder: Path) -> list[str]:

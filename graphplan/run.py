@@ -104,9 +104,12 @@ def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterab
          options: Options, sheet_key: str, say: Callable[[str], None] | None) -> Run:
     from .analysis import analyse
     from .deliverables import check_formats
+    from .output import check_folder
 
     tell = say if say is not None else (lambda stage: None)
     formats = check_formats(formats, options.formats)
+    # A folder the run could never write is told at once, not once the analysis and the drawings are done.
+    check_folder(folder, options.out)
     tell("analysing the mechanism" if scene.has_linkage else "analysing the machine")
     analysis = analyse(scene) if scene.has_linkage else None
     try:

@@ -161,3 +161,40 @@ def test_a_title_on_several_lines_is_one_line_of_the_note(tmp_path):
     assert heading.texts == ["Explanatory note: Crank-rocker of a *ratchet* # feed"]
     assert (out / "note.md").read_text(encoding="utf-8").startswith("# Explanatory note: Crank-rocker of a ")
 
+
+def _analysis_refused(*args, **kwargs):
+    raise AssertionError("the run analysed the scene before it refused its --out")
+
+
+@pytest.mark.parametrize("inside", [False, True], ids=["a file", "a path through a file"])
+def test_an_out_that_is_a_file_is_refused_before_the_analysis(tmp_path, monkeypatch, capsys, inside):
+    import graphplan.analysis
+
+    scene = tmp_path / "scene.toml"
+    scene.write_text(_scene_text(_toml_string("Small")), encoding="utf-8")
+    file = tmp_path / "report"
+    file.write_text("the user's own", encoding="utf-8")
+    out = file / "sub" if inside else file
+    monkeypatch.setattr(graphplan.analysis, "analyse", _analysis_refused)
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    told = capsys.readouterr().err.strip().splitlines()
+    assert told[-1] == (f"graphplan: error: {out}: {file} is not a folder, so the output cannot go in it" if inside
+                        else f"graphplan: error: {out}: exists and is not a folder")
+    # Nothing written beside it, the file as it was.
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["report", "scene.toml"]
+    assert file.read_text(encoding="utf-8") == "the user's own"
+
+
+def test_the_notebook_s_write_refuses_a_file_before_the_analysis_too(tmp_path, monkeypatch):
+    import graphplan.analysis
+    from graphplan.errors import OutputError
+    from graphplan.scene import load
+
+    scene = tmp_path / "scene.toml"
+    scene.write_text(_scene_text(_toml_string("Small")), encoding="utf-8")
+    file = tmp_path / "report"
+    file.write_text("", encoding="utf-8")
+    monkeypatch.setattr(graphplan.analysis, "analyse", _analysis_refused)
+    with pytest.raises(OutputError, match="exists and is not a folder"):
+        load(scene).write(file)
+
