@@ -75,12 +75,15 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--sheet", type=_sheet, default=None, metavar="{" + ",".join(SHEETS) + "}",
                      help="the sheet format of the course-project sheets, which it also draws (default: the scene's "
                           "[drawing] sheet)")
-    run.add_argument("--only", type=_listed, default=None, metavar="PIECES",
-                     help=f"deliver only these pieces, comma-separated: {', '.join(PIECES)} "
+    # Each given again adds to the list ("--format svg --format png" is svg,png): the last alone was taken,
+    # and the pieces or formats named before it were dropped without a word.
+    run.add_argument("--only", type=_listed, action="extend", default=None, metavar="PIECES",
+                     help=f"deliver only these pieces, comma-separated or the option repeated: {', '.join(PIECES)} "
                           "(default: the scene's [output] include, else every piece the scene has data for)")
-    run.add_argument("--format", type=_listed, default=["svg"], metavar="FORMATS", dest="formats",
-                     help=f"formats of the drawings and the note, comma-separated: {', '.join(FORMATS)} (SVG "
-                          "always; pdf also typesets the note as note.pdf; docx writes the note for Word)")
+    run.add_argument("--format", type=_listed, action="extend", default=None, metavar="FORMATS", dest="formats",
+                     help=f"formats of the drawings and the note, comma-separated or the option repeated: "
+                          f"{', '.join(FORMATS)} (SVG always; pdf also typesets the note as note.pdf; docx writes the "
+                          "note for Word)")
     run.add_argument("--figures", action="store_true",
                      help="also draw the report figures with matplotlib (the same as adding 'figures' to --only)")
     check = commands.add_parser("check", help="validate a scene and print its structure formula")
@@ -239,7 +242,7 @@ def _run(arguments: argparse.Namespace) -> int:
     path: Path = arguments.scene
     scene = load(path)
     done = run(scene, arguments.out if arguments.out is not None else Path("output") / path.stem, arguments.only,
-               arguments.formats, arguments.figures, arguments.locale, arguments.sheet, say=progress.say)
+               arguments.formats or ("svg",), arguments.figures, arguments.locale, arguments.sheet, say=progress.say)
     print(f"{done.scene.title}")
     if done.analysis is not None:
         print(f"structure: {done.analysis.mechanism.structure}")

@@ -198,3 +198,13 @@ def test_the_notebook_s_write_refuses_a_file_before_the_analysis_too(tmp_path, m
     with pytest.raises(OutputError, match="exists and is not a folder"):
         load(scene).write(file)
 
+
+def test_a_repeated_format_or_only_adds_to_the_list_as_a_comma_would(tmp_path):
+    """``--format`` and ``--only`` take comma-separated lists; given twice, the first list was dropped unsaid."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(_scene_text(_toml_string("Small")), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "positions", "--only", "note",
+                 "--format", "png", "--format", "dxf"]) == 0
+    written = {path.name for path in out.iterdir()}
+    assert {"positions.svg", "positions.png", "positions.dxf", "note.md"} <= written
