@@ -208,3 +208,31 @@ def test_a_repeated_format_or_only_adds_to_the_list_as_a_comma_would(tmp_path):
                  "--format", "png", "--format", "dxf"]) == 0
     written = {path.name for path in out.iterdir()}
     assert {"positions.svg", "positions.png", "positions.dxf", "note.md"} <= written
+
+
+def test_a_rotor_s_mass_and_plane_names_are_shown_as_typed(tmp_path):
+    """A rotor's masses and correction planes are named by the user: a mass named c|d split its table's row, and
+    planes named _L_ and `R` were set in italics and as code in every sentence and formula that names them."""
+    from graphplan.starters import starter
+
+    text = starter("rotor", "en")
+    text = text.replace("{ mass = 18.0,", '{ name = "a*b*", mass = 18.0,', 1)
+    text = text.replace("{ mass = 14.0,", '{ name = "c|d", mass = 14.0,', 1)
+    text = re.sub(r"(?m)^planes = \[0\.04, 0\.22\]", 'planes = [0.04, 0.22]\nplane_names = ["_L_", "`R`"]', text)
+    assert text.count("a*b*") == text.count("c|d") == text.count("plane_names") == 1
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "balancing,note"]) == 0
+    page = (out / "note.html").read_text(encoding="utf-8")
+    cells, paragraphs = _Elements(("td", "th")), _Elements(("p",))
+    cells.feed(page)
+    paragraphs.feed(page)
+    assert {"a*b*", "c|d", "(m·r)a*b*", "(m·r)c|d", "share in _L_", "(m·r)`R`, kg·m"} <= set(cells.texts)
+    # Every row of the masses' table as long as its header.
+    rows = [row for row in (out / "note.md").read_text(encoding="utf-8").splitlines() if row.startswith("| ")]
+    assert all(len(re.split(r"(?<!\\)\|", row)) == 8 for row in rows)
+    assert any(line.startswith("Plane _L_: ((m·r)a*b*)_L_ + ((m·r)c|d)_L_ + (m3r3)_L_ + (m·r)_L_ = 0")
+               for line in paragraphs.texts)
+    assert any("correction mass is m`R` = " in line for line in paragraphs.texts)
+    assert not any(tag in ("em", "code") for inner in cells.inner + paragraphs.inner for tag in inner)

@@ -401,7 +401,7 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
     """The rotor's masses, their products carried to the correction planes, each plane's polygon closed."""
     spec = result.spec
     note.heading(2, note.t("note_balancing"), section)
-    rows = [[mass.name, note.n(mass.mass),
+    rows = [[literal(mass.name), note.n(mass.mass),
              note.n(mass.radius), note.n(mass.angle_deg, 4), note.n(mass.plane), note.n(abs(mass.unbalance))]
             for mass in spec.masses]
     note.table(note.t("note_bal_masses"), note.t("note_bal_masses_header").split(" | "), rows, "lrrrrr")
@@ -416,10 +416,11 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         # Two planes balance masses that all turn in one plane as well: the rotor is then no long one.
         masses = (note.t("note_bal_masses_together", z=note.n(along[0])) if len(set(along)) == 1
                   else note.t("note_bal_masses_apart"))
-        note.para(note.t("note_bal_dynamic", masses=masses, left=left.name, right=right.name,
+        note.para(note.t("note_bal_dynamic", masses=masses, left=literal(left.name), right=literal(right.name),
                          zl=note.n(left.position), zr=note.n(right.position)))
-        header = note.t("note_bal_shares_header", left=left.name, right=right.name).split(" | ")
-        rows = [[mass.label, note.n(abs(mass.unbalance)), note.n(share_left, 4), note.n(abs(mass.unbalance) * share_left),
+        header = note.t("note_bal_shares_header", left=literal(left.name), right=literal(right.name)).split(" | ")
+        rows = [[literal(mass.label), note.n(abs(mass.unbalance)), note.n(share_left, 4),
+                 note.n(abs(mass.unbalance) * share_left),
                  note.n(share_right, 4), note.n(abs(mass.unbalance) * share_right)]
                 for mass, share_left, share_right in zip(spec.masses, left.factors, right.factors, strict=True)]
         note.table(note.t("note_bal_shares"), header, rows, "lrrrrr")
@@ -427,21 +428,21 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         # Masses of one plane (a disc corrected on its hub's face) turn at one z, not over "z = 0.1 … 0.1 m".
         where = (note.t("note_bal_along_one", z=note.n(along[0])) if len(set(along)) == 1
                  else note.t("note_bal_along_span", low=note.n(min(along)), high=note.n(max(along))))
-        note.para(note.t("note_bal_static_planes", equation=planes[0].equation, along=where,
+        note.para(note.t("note_bal_static_planes", equation=literal(planes[0].equation), along=where,
                          plane=note.n(planes[0].position), moment=note.n(couple)))
     elif len(set(along)) > 1:
         # Masses in several planes whose moments about the correction's plane happen to cancel: no disc.
-        note.para(note.t("note_bal_static_planes_even", equation=planes[0].equation, low=note.n(min(along)),
+        note.para(note.t("note_bal_static_planes_even", equation=literal(planes[0].equation), low=note.n(min(along)),
                          high=note.n(max(along)), plane=note.n(planes[0].position)))
     else:
-        note.para(note.t("note_bal_static", equation=planes[0].equation))
+        note.para(note.t("note_bal_static", equation=literal(planes[0].equation)))
     for plane in planes:
         if not plane.needed:
-            note.para(note.t("note_bal_none", name=plane.name, vector=plane.vectors[-1].name))
+            note.para(note.t("note_bal_none", name=literal(plane.name), vector=literal(plane.vectors[-1].name)))
             continue
-        vector = plane.vectors[-1].name
+        vector = literal(plane.vectors[-1].name)
         # The correction mass is named after its plane, as the drawing names it: mL, mA-A (whose product is (m·r)A-A).
-        symbol = f"m{plane.name}"
+        symbol = literal(f"m{plane.name}")
         value, mass = note.n(plane.mass_radius), ""
         if plane.mass is not None and plane.radius is not None:
             radius = plane.radius
@@ -451,8 +452,8 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         # A disc's one plane has its equation in the paragraph before.
         # The angle to a tenth of a degree, as the drawing writes it: to four digits 210.96° would read 211°.
         angle = angle_in_turn(plane.angle_deg).replace(".", note.mark)
-        note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=plane.name,
-                         equation=plane.equation, vector=vector, value=value, angle=angle, mass=mass))
+        note.para(note.t("note_bal_plane" if spec.dynamic else "note_bal_closing", name=literal(plane.name),
+                         equation=literal(plane.equation), vector=vector, value=value, angle=angle, mass=mass))
     if (close := planes_close(result)) is not None:
         note.para(note.t("note_bal_caution_planes_close", corrections=note.n(close.corrections),
                          ratio=note.n(close.ratio, 3), masses=note.n(close.masses), spacing=note.n(close.spacing),

@@ -19,7 +19,6 @@ import re
 from dataclasses import dataclass
 
 from markdown_it import MarkdownIt
-from markdown_it.common.utils import ESCAPABLE
 from markdown_it.token import Token
 from markdown_it.tree import SyntaxTreeNode
 
@@ -27,15 +26,16 @@ from markdown_it.tree import SyntaxTreeNode
 _SIDES = {"text-align:left": "l", "text-align:center": "c", "text-align:right": "r"}
 
 
-# Where a line begins, every mark CommonMark lets a backslash make plain (markdown-it's list of them) may begin a
-# block: a list's - or +, a quote's >, a fence's ~~~, a setext heading's ===, and after digits an ordered list's . or ).
-# Anywhere in a line: code, emphasis, links and pictures, autolinks and tags, entities, a table's cells, a heading's
-# closing #s, and the carets ``raised`` lifts (aBA^τ).
-_MARKUP = re.compile(rf"^(\d*)([{ESCAPABLE}])|([\\`*_\[\]<&|#^])")
+# Marks CommonMark reads as markup wherever they stand in a line: code, emphasis, links and pictures, autolinks and
+# tags, entities, a table's cells, a heading's closing #s, and the carets ``raised`` lifts (aBA^τ); and where a line
+# begins (a [project] value has a line of its own) those that begin a block: a list's -, + or 1. (1)), a quote's >,
+# a fence's ~~~, a setext heading's === (the others begin one only where they are markup anywhere).
+_MARKUP = re.compile(r"(?P<anywhere>[\\`*_\[\]<&|#^])|^(?P<number>\d+)(?P<after>[.)])|^(?P<start>[-+=>~])")
 
 
 def literal(text: str) -> str:
-    """``text`` of the user's own (a scene's title, a ``[project]`` value) as Markdown that reads as it is written.
+    """``text`` of the user's own (a scene's title, a ``[project]`` value, a rotor's mass's name) as Markdown that
+    reads as it is written.
 
     A title ``Project #3 *draft*`` was set in italics in every format, and a ``|`` split a table's cell: each mark
     CommonMark could read as markup where it stands is backslash-escaped, which it reads as the mark alone (the
@@ -44,9 +44,9 @@ def literal(text: str) -> str:
     cell are one line, and a line that went on with ``- `` or ``#`` would begin a list or a heading.
     """
     def escaped(found: re.Match[str]) -> str:
-        if found[2] is not None:
-            return f"{found[1]}\\{found[2]}"
-        return f"\\{found[3]}"
+        if found["number"] is not None:
+            return f"{found['number']}\\{found['after']}"
+        return "\\" + (found["anywhere"] or found["start"])
 
     return _MARKUP.sub(escaped, " ".join(text.split()))
 
