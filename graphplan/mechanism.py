@@ -238,6 +238,7 @@ def _check_point_names(scene: Scene) -> dict[str, str]:
         named_at[spec.name] = spec.where
     seen: dict[str, str] = {}
     for name, where in named_at.items():
+        _refuse_markup(name, where)
         other = seen.setdefault(plain(name), name)
         if other != name:
             raise SceneError(where, f"{name!r} looks the same as the point {other!r} of "
@@ -245,6 +246,22 @@ def _check_point_names(scene: Scene) -> dict[str, str]:
                              f"{contrast(name, other)}: name the two apart")
     _check_plan_letters(scene, named_at)
     return named_at
+
+
+# A point's name enters the note's vector equations, symbols and tables in a hundred places (VBA, lAB, R23 beside
+# its name), all written as Markdown and set from it as HTML, LaTeX and Word: one of these marks there sets what
+# follows in italics or as code, or splits a table's row.  Letters of any script, digits, primes and the hyphen a
+# guide's name may hold read as typed.
+_MARKUP_IN_NAMES = "*_`|[]<>#&\\^~$%{}"
+
+
+def _refuse_markup(name: str, where: str) -> None:
+    marks = [mark for mark in dict.fromkeys(name) if mark in _MARKUP_IN_NAMES or mark.isspace()]
+    if marks:
+        shown = ", ".join("a space" if mark.isspace() else repr(mark) for mark in marks)
+        raise SceneError(where, f"the name {name!r} holds {shown}, which the note's equations and tables would read "
+                         "as markup (italics, code, a table's column) or split: name points with letters, digits "
+                         "and primes (S4, B′); a digit after the letters is set as a subscript")
 
 
 def _check_plan_letters(scene: Scene, named_at: dict[str, str]) -> None:

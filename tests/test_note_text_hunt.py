@@ -15,7 +15,10 @@ from pathlib import Path
 import pytest
 from scene_texts import central_slider_crank
 
+from graphplan import load_text
 from graphplan.cli import main
+from graphplan.errors import SceneError
+from graphplan.mechanism import build
 
 # Every character CommonMark reads as markup somewhere in a line, and the HTML's and LaTeX's own.
 TITLE = r"Project #3 *draft* of `x` [a](b) <b>bold</b> & A|B __u__ \ 50% ~ $1 {c} ^2 !x"
@@ -236,3 +239,21 @@ def test_a_rotor_s_mass_and_plane_names_are_shown_as_typed(tmp_path):
                for line in paragraphs.texts)
     assert any("correction mass is m`R` = " in line for line in paragraphs.texts)
     assert not any(tag in ("em", "code") for inner in cells.inner + paragraphs.inner for tag in inner)
+
+
+@pytest.mark.parametrize(("name", "shown"), [("E*x*", "'*'"), ("S_2", "'_'"), ("a|b", "'|'"), ("E`1`", "'`'"),
+                                             ("E 1", "a space"), ("E[1]", "'[', ']'")])
+def test_a_point_name_the_note_would_read_as_markup_is_refused_at_its_key(name, shown):
+    # A point's name is built into a hundred symbols and equations of the note (VE, lSE, ps2 = pa·lOS2/lOA): a
+    # '*' there set the rest of the line in italics, a '|' split the table's row.  Refused where it is named.
+    point = f'[points]\n"{name}" = {{ link = 3, from = "A", toward = "B", at = 0.5 }}\n'
+    text = central_slider_crank(0.1, 0.4, 10.0) + point
+    with pytest.raises(SceneError) as refused:
+        build(load_text(text))
+    assert refused.value.where in (f"points.{name}", f'points."{name}"')
+    assert f"holds {shown}, which the note's equations and tables would read as markup" in str(refused.value)
+
+
+def test_a_point_name_in_another_script_with_primes_is_kept():
+    text = central_slider_crank(0.1, 0.4, 10.0) + '[points]\n"Е′1" = { link = 3, from = "A", toward = "B", at = 0.5 }\n'
+    assert [spec.name for spec in build(load_text(text)).scene.points] == ["Е′1"]
