@@ -248,20 +248,24 @@ def _check_point_names(scene: Scene) -> dict[str, str]:
     return named_at
 
 
-# A point's name enters the note's vector equations, symbols and tables in a hundred places (VBA, lAB, R23 beside
-# its name), all written as Markdown and set from it as HTML, LaTeX and Word: one of these marks there sets what
-# follows in italics or as code, or splits a table's row.  Letters of any script, digits, primes and the hyphen a
-# guide's name may hold read as typed.
+# A point's or a frame line's name enters the note's vector equations, symbols and tables in a hundred places
+# (VBA, lAB, R23 beside a point's name; "∥ ram" for a line), all written as Markdown and set from it as HTML, LaTeX
+# and Word: one of these marks there sets what follows in italics or as code, or splits a table's row.  Letters of
+# any script, digits, primes and the hyphens and dashes of a guide's name (x–x) read as typed.
 _MARKUP_IN_NAMES = "*_`|[]<>#&\\^~$%{}"
 
 
-def _refuse_markup(name: str, where: str) -> None:
-    marks = [mark for mark in dict.fromkeys(name) if mark in _MARKUP_IN_NAMES or mark.isspace()]
-    if marks:
-        shown = ", ".join("a space" if mark.isspace() else repr(mark) for mark in marks)
-        raise SceneError(where, f"the name {name!r} holds {shown}, which the note's equations and tables would read "
-                         "as markup (italics, code, a table's column) or split: name points with letters, digits "
-                         "and primes (S4, B′); a digit after the letters is set as a subscript")
+def _refuse_markup(name: str, where: str, *, line: bool = False) -> None:
+    """Refuse a mark of ``_MARKUP_IN_NAMES`` in a name; a space too in a point's, which its symbols run together
+    with the names beside it (VBA), where a line's name stands alone ("guide along ram guide" reads)."""
+    marks = [mark for mark in dict.fromkeys(name) if mark in _MARKUP_IN_NAMES or (mark.isspace() and not line)]
+    if not marks:
+        return
+    shown = ", ".join("a space" if mark.isspace() else repr(mark) for mark in marks)
+    advice = ("name the line with letters, digits, dashes and spaces (x–x, ram)" if line else
+              "name points with letters, digits and primes (S4, B′); a digit after the letters is set as a subscript")
+    raise SceneError(where, f"the name {name!r} holds {shown}, which the note's equations and tables would read as "
+                     f"markup (italics, code, a table's column) or split: {advice}")
 
 
 def _check_plan_letters(scene: Scene, named_at: dict[str, str]) -> None:
@@ -319,6 +323,7 @@ def _refuse_unused_frame_lines(scene: Scene, solvers: list[Driver | Group]) -> N
     guides = [guide for solver in solvers for guide in solver.guides()]
     named = {guide.line for guide in guides if guide.line is not None}
     for name in scene.frame_lines:
+        _refuse_markup(name, join_path("frame.lines", name), line=True)
         if name in named:
             continue
         inline = [guide.where for guide in guides if guide.line is None and on_frame(scene, guide)]

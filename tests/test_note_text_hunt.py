@@ -257,3 +257,18 @@ def test_a_point_name_the_note_would_read_as_markup_is_refused_at_its_key(name, 
 def test_a_point_name_in_another_script_with_primes_is_kept():
     text = central_slider_crank(0.1, 0.4, 10.0) + '[points]\n"Е′1" = { link = 3, from = "A", toward = "B", at = 0.5 }\n'
     assert [spec.name for spec in build(load_text(text)).scene.points] == ["Е′1"]
+
+
+def _slider_crank_on_a_frame_line(line_name: str) -> str:
+    line = f'lines = {{ "{line_name}" = {{ through = "O", angle = 0.0 }} }}'
+    on_a_line = central_slider_crank(0.1, 0.4, 10.0).replace("points = { O = [0.0, 0.0] }",
+                                                              "points = { O = [0.0, 0.0] }\n" + line)
+    return on_a_line.replace('guide = { through = "O", angle = 0.0 }', f'guide = "{line_name}"')
+
+
+def test_a_frame_line_name_the_note_would_read_as_markup_is_refused_and_one_with_a_space_kept():
+    # The note names a guide's line in its tables and lines of action ("∥ ram"): 'r*a*m' came out as r<em>a</em>m.
+    with pytest.raises(SceneError) as refused:
+        build(load_text(_slider_crank_on_a_frame_line("r*a*m")))
+    assert refused.value.where.startswith("frame.lines.") and "holds '*'" in str(refused.value)
+    assert "ram guide" in build(load_text(_slider_crank_on_a_frame_line("ram guide"))).scene.frame_lines
