@@ -20,6 +20,7 @@ import pytest
 import graphplan
 from graphplan.errors import AssemblyError
 from graphplan.loads import motion_state, resisted_sense
+from graphplan.motion import reference_at
 
 # A slider-crank whose rod is too short to reach the guide on every turn: crank OA = 0.1 m about O, the guide the
 # line y = −0.05 m, the rod AB = 0.09 m. A is 0.1·sin φ + 0.05 m from the guide, which AB reaches while
@@ -177,12 +178,15 @@ def test_a_triad_that_stops_a_crank_says_its_three_legs_lines_meet_in_one_point(
         crossing = p["A"] + ab * cross(p["C"] - p["A"], cd) / cross(ab, cd)
         return abs(cross(ef, crossing - p["E"])) / abs(ef)
 
+    mechanism = graphplan.build(scene)
+
     def last_assembled(inside: float, outside: float) -> float:
-        """The end of the reach between two crank angles, by bisection on whether the triad assembles."""
+        """The end of the reach between two crank angles, by bisection on whether the triad assembles (asked of
+        reference_at, which assembles one position as solve does without working out a refusal's reach advice)."""
         for _ in range(40):
             middle = 0.5 * (inside + outside)
             try:
-                _at(scene, middle)
+                reference_at(mechanism, math.radians(middle))
                 inside = middle
             except graphplan.GraphplanError:
                 outside = middle
