@@ -718,6 +718,7 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     only the note."""
     files: dict[str, str] = {}
     from .report.latex import latex_document, latex_fragment
+    from .report.markdown import user_texts
 
     locale = scene.locale
     if "note" in pieces:
@@ -725,7 +726,7 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
         files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales)
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
-        files["note.tex"] = latex_document(files["note.md"], scene.title, locale)
+        files["note.tex"] = latex_document(files["note.md"], scene.title, locale, user_texts(scene))
     if analysis is None:
         return files
     if "errors" in pieces:
@@ -733,12 +734,12 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
         files["errors.md"] = markdown(analysis)
         files["errors.csv"] = csv_text(analysis)
-        files["errors.tex"] = latex_fragment(files["errors.md"], locale)
+        files["errors.tex"] = latex_fragment(files["errors.md"], locale, user_texts(scene))
     if "forces" in pieces:
         from .report.forces import markdown as forces_markdown
 
         files["forces.md"] = forces_markdown(analysis)
-        files["forces.tex"] = latex_fragment(files["forces.md"], locale)
+        files["forces.tex"] = latex_fragment(files["forces.md"], locale, user_texts(scene))
     return files
 
 
@@ -989,11 +990,12 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
         tool_for("docx", "docx")
         if pictures:  # the figures go into the document as PNG
             tool_for("docx", CAIRO)
+        from .report.markdown import user_texts
         from .report.word import note_docx
 
         say("writing the note as docx")
         found["note.docx"] = note_docx(str(found["note.md"]), scene.title, scene.locale, pictures,
-                                       author=scene.project.author)
+                                       author=scene.project.author, verbatim=user_texts(scene))
     return found
 
 
@@ -1004,11 +1006,12 @@ def accuracy_report(analysis: Analysis) -> dict[str, str]:
     from .accuracy import study
     from .report import accuracy
     from .report.latex import latex_fragment
+    from .report.markdown import user_texts
 
     scene = analysis.scene
     found = study(scene, PurePath(scene.source).stem)
     text = accuracy.markdown(found, scene.locale, scene.title)
-    return {"accuracy.md": text, "accuracy.tex": latex_fragment(text, scene.locale),
+    return {"accuracy.md": text, "accuracy.tex": latex_fragment(text, scene.locale, user_texts(scene)),
             "accuracy.csv": accuracy.csv_text(found.rows),
             "accuracy.svg": accuracy.figure(found, scene.locale, scene.title)}
 

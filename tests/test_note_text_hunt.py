@@ -241,6 +241,43 @@ def test_a_rotor_s_mass_and_plane_names_are_shown_as_typed(tmp_path):
     assert not any(tag in ("em", "code") for inner in cells.inner + paragraphs.inner for tag in inner)
 
 
+
+def test_the_user_s_own_text_is_plain_where_it_holds_a_symbol_s_shape_and_the_note_s_symbols_are_not():
+    from graphplan.report.symbols import Symbol, pieces
+
+    said = "Press F1: the force F1 and M12"
+    assert list(pieces(said, ["Press F1"])) == ["Press F1: the force ", Symbol("F", "1", ""), " and ",
+                                                 Symbol("M", "12", "")]
+    # A text is the user's where it stands whole: a title "M" is not the M of M12, nor of the word "Mass".
+    assert list(pieces("M12 and M", ["M"])) == [Symbol("M", "12", ""), " and M"]
+    assert list(pieces(said)) == ["Press ", Symbol("F", "1", ""), ": the force ", Symbol("F", "1", ""), " and ",
+                                  Symbol("M", "12", "")]
+
+
+def test_a_title_and_author_shaped_like_symbols_are_set_as_typed_in_html_latex_and_word(tmp_path):
+    """A title "Press F1 of line M3" came out in the HTML, LaTeX and Word notes as a force F with an index 1 and a
+    moment M with an index 3: the symbol pass read the user's text as the textbook's."""
+    docx = pytest.importorskip("docx")
+    title = "Press F1 of line M3"
+    out = _run(tmp_path, "docx", title=_toml_string(title))
+    page = (out / "note.html").read_text(encoding="utf-8")
+    heading = _Elements(("h1",))
+    heading.feed(page)
+    assert heading.texts == [f"Explanatory note: {title}"] and heading.inner == [[]]
+    # The note's own symbols are still set with their indices.
+    assert "F<sub>" in page or "M<sub>" in page or "V<sub>" in page
+    tex = (out / "note.tex").read_text(encoding="utf-8")
+    title_line = next(line for line in tex.splitlines() if "Explanatory note" in line and "bfseries" in line)
+    assert title in title_line and "textsubscript" not in title_line
+    assert "\\textsubscript" in tex
+    errors_tex = (out / "errors.tex").read_text(encoding="utf-8")
+    assert title in errors_tex
+    document = docx.Document(str(out / "note.docx"))
+    first = next(paragraph for paragraph in document.paragraphs if paragraph.text.strip())
+    assert first.text == f"Explanatory note: {title}"
+    assert not any(run.font.subscript for run in first.runs)
+    assert any(run.font.subscript for paragraph in document.paragraphs for run in paragraph.runs)
+
 @pytest.mark.parametrize(("name", "shown"), [("E*x*", "'*'"), ("S_2", "'_'"), ("a|b", "'|'"), ("E`1`", "'`'"),
                                              ("E 1", "a space"), ("E[1]", "'[', ']'")])
 def test_a_point_name_the_note_would_read_as_markup_is_refused_at_its_key(name, shown):

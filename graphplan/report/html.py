@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import html
 import re
+from collections.abc import Collection
 
 from .symbols import Symbol, pieces
 
@@ -107,10 +108,11 @@ def _units_unbroken(body: str) -> str:
     return "".join(piece if piece.startswith("<") else spanned(k) for k, piece in enumerate(pieces))
 
 
-def symbols_html(text: str) -> str:
-    """Escape ``text`` for HTML and set the indices of its symbols as subscripts and superscripts."""
+def symbols_html(text: str, verbatim: Collection[str] = ()) -> str:
+    """Escape ``text`` for HTML and set the indices of its symbols as subscripts and superscripts (none in the
+    user's own texts ``verbatim``)."""
     return "".join(html.escape(piece, quote=False) if isinstance(piece, str) else _symbol_html(piece)
-                   for piece in pieces(text))
+                   for piece in pieces(text, verbatim))
 
 
 def _symbol_html(symbol: Symbol) -> str:
@@ -126,17 +128,19 @@ def _classed_table(table: re.Match) -> str:
     return table[0].replace("<table>", f'<table class="{" ".join(classes)}">', 1) if classes else table[0]
 
 
-def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False, author: str = "") -> str:
+def to_html(markdown_text: str, title: str, lang: str, symbols: bool = False, author: str = "",
+            verbatim: Collection[str] = ()) -> str:
     """A complete HTML5 page of ``markdown_text`` with ``title`` (and ``author``, where given) in its head, in
     language ``lang``; a PDF made of it takes them as its own.
 
-    ``symbols`` sets the indices of the textbook's symbols (``VBA``, ``ω3``) as subscripts.
+    ``symbols`` sets the indices of the textbook's symbols (``VBA``, ``ω3``) as subscripts, except in the user's
+    own texts ``verbatim`` (:func:`graphplan.report.markdown.user_texts`).
     """
     from .markdown import parser, tokens
 
     markdown = parser()
     if symbols:
-        markdown.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content))
+        markdown.add_render_rule("text", lambda self, tokens, idx, options, env: symbols_html(tokens[idx].content, verbatim))
     rendered = markdown.renderer.render(list(tokens(markdown_text)), markdown.options, {})
     body = _CAPTION.sub(r'<p class="table-caption">\1</p>\n', rendered)
     body = _FIGURE.sub(r'<figure><a href="\2">\1</a><figcaption>\3</figcaption></figure>\n', body)

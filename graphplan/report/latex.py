@@ -35,7 +35,7 @@ comment at its head names what the including document needs.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from itertools import groupby
 
@@ -128,25 +128,27 @@ def _has_cjk(markdown_text: str, locale: str) -> bool:
     return locale == "zh" or has_wide(markdown_text)
 
 
-def latex_document(markdown_text: str, title: str, locale: str) -> str:
-    """A complete XeLaTeX document of ``markdown_text`` (the explanatory note); its first line names ``title``."""
+def latex_document(markdown_text: str, title: str, locale: str, verbatim: Collection[str] = ()) -> str:
+    """A complete XeLaTeX document of ``markdown_text`` (the explanatory note); its first line names ``title``.
+    The user's own texts ``verbatim`` are set as typed, with no symbol's index in them."""
     cjk = _has_cjk(markdown_text, locale)
     language = (_RUSSIAN if locale == "ru" else "") + (_CJK_BREAKS if cjk else "")
     preamble = _PREAMBLE % {"font": _FONT, "cjk_font": _CJK_RUNS if cjk else "", "locale": language}
     return (f"% {' '.join(title.split())}: typeset with xelatex, twice (longtable settles its columns' widths on the second)\n"
             f"{preamble}"
-            f"\\begin{{document}}\n{_body(markdown_text, locale, titled=True)}\\end{{document}}\n")
+            f"\\begin{{document}}\n{_body(markdown_text, locale, titled=True, verbatim=verbatim)}\\end{{document}}\n")
 
 
-def latex_fragment(markdown_text: str, locale: str) -> str:
-    """The body of ``markdown_text`` (the error tables, the force analysis) for ``\\input``, with no preamble."""
+def latex_fragment(markdown_text: str, locale: str, verbatim: Collection[str] = ()) -> str:
+    """The body of ``markdown_text`` (the error tables, the force analysis) for ``\\input``, with no preamble;
+    the user's own texts ``verbatim`` as typed."""
     cjk = _has_cjk(markdown_text, locale)
     return (_FRAGMENT_HEAD.replace("FONT", _CJK_FONT if cjk else _FONT) + (_FRAGMENT_CJK if cjk else "")
-            + _body(markdown_text, locale, titled=False))
+            + _body(markdown_text, locale, titled=False, verbatim=verbatim))
 
 
-def _body(markdown_text: str, locale: str, titled: bool) -> str:
-    return _Writer(titled, strings(locale)).blocks(tree(markdown_text).children).lstrip("\n")
+def _body(markdown_text: str, locale: str, titled: bool, verbatim: Collection[str]) -> str:
+    return _Writer(titled, strings(locale), verbatim).blocks(tree(markdown_text).children).lstrip("\n")
 
 
 def _table_number(caption: str, text: Mapping[str, str]) -> str | None:
@@ -166,9 +168,10 @@ def _escape(text: str) -> str:
                    for wide, run in groupby(text.translate(_SPECIAL), key=is_wide))
 
 
-def _text(text: str) -> str:
-    """Text with LaTeX's special characters escaped and the symbols' indices set as sub- and superscripts."""
-    return "".join(_escape(piece) if isinstance(piece, str) else _symbol(piece) for piece in pieces(text))
+def _text(text: str, verbatim: Collection[str] = ()) -> str:
+    """Text with LaTeX's special characters escaped and the symbols' indices set as sub- and superscripts (none in
+    the user's own texts ``verbatim``)."""
+    return "".join(_escape(piece) if isinstance(piece, str) else _symbol(piece) for piece in pieces(text, verbatim))
 
 
 def _symbol(symbol: Symbol) -> str:
@@ -238,12 +241,14 @@ def _no_break_after(row: int, rows: int) -> bool:
 class _Writer:
     """The blocks of the note's syntax tree as LaTeX.
 
-    ``titled``: the first heading is the document's title (the note), not a section (a fragment).
+    ``titled``: the first heading is the document's title (the note), not a section (a fragment); ``verbatim``: the
+    user's own texts, set with no symbol's index.
     """
 
-    def __init__(self, titled: bool, text: Mapping[str, str]) -> None:
+    def __init__(self, titled: bool, text: Mapping[str, str], verbatim: Collection[str] = ()) -> None:
         self.titled = titled
         self.text = text
+        self.verbatim = tuple(verbatim)
 
     def blocks(self, nodes) -> str:
         """The blocks in order, a paragraph right before a table taken into the table as its caption, one right
@@ -315,7 +320,7 @@ class _Writer:
             if node.type == "inline":
                 parts.append(self.inline(node.children))
             elif node.type == "text":
-                parts.append(_text(node.content))
+                parts.append(_text(node.content, self.verbatim))
             elif node.type == "strong":
                 parts.append(f"\\textbf{{{self.inline(node.children)}}}")
             elif node.type == "em":
@@ -343,7 +348,7 @@ class _Writer:
         if header:
             cells = []
             for text, width, side in zip(header, layout.widths, layout.sides):
-                stacked = "\\\\".join(_text(line) for line in fitted(text, width, _EM_CAP))
+                stacked = "\\\\".join(_text(line, self.verbatim) for line in fitted(text, width, _EM_CAP))
                 cells.append(f"\\begin{{tabular}}[b]{{@{{}}{side}@{{}}}}{stacked}\\end{{tabular}}")
             head = ["\\toprule", " & ".join(cells) + " \\\\", "\\midrule"]
         # A foot on every page as tall as the last one: longtable keeps room for it, so the last rows never

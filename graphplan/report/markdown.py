@@ -14,6 +14,7 @@ paragraph, :func:`picture_source`).
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import re
 from dataclasses import dataclass
@@ -49,6 +50,13 @@ def literal(text: str) -> str:
         return "\\" + (found["anywhere"] or found["start"])
 
     return _MARKUP.sub(escaped, " ".join(text.split()))
+
+
+def user_texts(scene) -> tuple[str, ...]:
+    """The scene's title and its ``[project]``'s words as the note shows them (each on one line), for the writers'
+    symbol pass to leave as typed: the textbook's symbols are the note's, not the user's."""
+    typed = [scene.title, *(getattr(scene.project, field.name) for field in dataclasses.fields(scene.project))]
+    return tuple(" ".join(text.split()) for text in typed if isinstance(text, str) and text.strip())
 
 
 def parser() -> MarkdownIt:

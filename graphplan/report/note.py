@@ -51,7 +51,7 @@ from ..wording import driver_at, raised
 from . import forces as force_report
 from .force_note import forces_section
 from .machine_note import balancing_section, dynamics_section, vibration_section
-from .markdown import literal
+from .markdown import literal, user_texts
 from .symbols import CAPITALS
 from .tables import (
     error_table_lines,
@@ -125,7 +125,8 @@ def note_html(analysis: Analysis | None, dynamics=None, markdown: str | None = N
     assert scene is not None, "a note is of an analysis or of a scene"
     title = strings(scene.locale)["note_title"].format(title=scene.title)
     markdown = markdown if markdown is not None else note_markdown(analysis, dynamics, scene)
-    return to_html(markdown, title, scene.locale, symbols=True, author=scene.project.author)
+    return to_html(markdown, title, scene.locale, symbols=True, author=scene.project.author,
+                   verbatim=user_texts(scene))
 
 
 @dataclass(frozen=True)

@@ -12,8 +12,9 @@ of the note's languages.
 
 from __future__ import annotations
 
+import functools
 import re
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from typing import NamedTuple
 
 #: The capitals a point's name is written in, as the body of a regular expression's class: Latin, Cyrillic (a
@@ -78,13 +79,27 @@ def _symbol(match: re.Match[str]) -> Symbol:
     return Symbol(base, index, _SUPERSCRIPT.get(component, component.removeprefix("^")))
 
 
-def pieces(text: str) -> Iterator[str | Symbol]:
-    """``text`` as its plain runs (str) and its symbols (:class:`Symbol`), in order; nothing is left out."""
+def pieces(text: str, verbatim: Collection[str] = ()) -> Iterator[str | Symbol]:
+    """``text`` as its plain runs (str) and its symbols (:class:`Symbol`), in order; nothing is left out.
+
+    ``verbatim``: the user's own texts (a title, a ``[project]`` value) wherever they stand whole in ``text`` are
+    plain runs: a title "Press F1" is no force F with an index 1.
+    """
+    kept = [found.span() for found in _occurrences(tuple(verbatim)).finditer(text)] if verbatim else []
     done = 0
     for match in SYMBOL.finditer(text):
+        if any(start < match.end() and match.start() < end for start, end in kept):
+            continue
         if match.start() > done:
             yield text[done:match.start()]
         yield _symbol(match)
         done = match.end()
     if done < len(text):
         yield text[done:]
+
+
+@functools.lru_cache(maxsize=16)
+def _occurrences(verbatim: tuple[str, ...]) -> re.Pattern[str]:
+    """A pattern of the texts ``verbatim``, each standing whole: a title "M" is not the M of the symbol M12."""
+    return re.compile("|".join(rf"(?<!\w){re.escape(typed)}(?!\w)"
+                               for typed in sorted(filter(None, verbatim), key=len, reverse=True)) or "(?!)")

@@ -31,7 +31,7 @@ from __future__ import annotations
 import io
 import math
 import zipfile
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 
 from docx import Document as WordDocument
 from docx.enum.style import WD_STYLE_TYPE
@@ -80,15 +80,16 @@ _MOST_PROPERTY_CHARACTERS = 255
 
 
 def note_docx(markdown_text: str, title: str, locale: str, pictures: Mapping[str, str] | None = None,
-              author: str = "") -> bytes:
+              author: str = "", verbatim: Collection[str] = ()) -> bytes:
     """The explanatory note ``markdown_text`` as a Word document (the bytes of a .docx file) titled ``title``,
     with the drawings its figures name (``plan_2.svg``) taken from ``pictures`` (file name → SVG text); its
-    author is ``author`` where the scene names one (the project's), else the program that made it."""
+    author is ``author`` where the scene names one (the project's), else the program that made it.  The user's own
+    texts ``verbatim`` are set as typed, with no symbol's index."""
     document = WordDocument()
     _set_page(document)
     _set_styles(document, locale)
     _number_pages(document)
-    _Writer(document, pictures or {}).blocks(tree(markdown_text).children)
+    _Writer(document, pictures or {}, verbatim).blocks(tree(markdown_text).children)
     properties = document.core_properties
     properties.title = _shortened(" ".join(title.split()), _MOST_PROPERTY_CHARACTERS)
     properties.language = _LANGUAGES.get(locale, locale)
@@ -170,9 +171,10 @@ class _Writer:
     searched an element's every possible child to place each property (a shaper's note took 6 s so).
     """
 
-    def __init__(self, document, pictures: Mapping[str, str]) -> None:
+    def __init__(self, document, pictures: Mapping[str, str], verbatim: Collection[str] = ()) -> None:
         self.document = document
         self.pictures = pictures
+        self.verbatim = tuple(verbatim)
         self.body = document.element.body
         self.style_ids: dict[str, str | None] = {}
         self.table_style_id = document.part.get_style_id(document.styles["Table Grid"], WD_STYLE_TYPE.TABLE)
@@ -294,10 +296,9 @@ class _Writer:
             else:   # the block's inline node, a link or an image: its text
                 self.spans(paragraph, node.children, bold, italic, size)
 
-    @staticmethod
-    def text(paragraph, text: str, bold: bool, italic: bool, size) -> None:
+    def text(self, paragraph, text: str, bold: bool, italic: bool, size) -> None:
         """``text`` as runs, a symbol's index below the line and its component above it."""
-        for piece in pieces(text):
+        for piece in pieces(text, self.verbatim):
             parts = ((piece, ""),) if isinstance(piece, str) else _symbol_runs(piece)
             for content, position in parts:
                 run = SubElement(paragraph, _RUN)
