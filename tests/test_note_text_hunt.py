@@ -278,6 +278,46 @@ def test_a_title_and_author_shaped_like_symbols_are_set_as_typed_in_html_latex_a
     assert not any(run.font.subscript for run in first.runs)
     assert any(run.font.subscript for paragraph in document.paragraphs for run in paragraph.runs)
 
+
+# matplotlib reads text between two dollars as mathtext: "$5 to $10" came out in italics, and "$\\frac$" (no
+# numerator) stopped the run with a parser's traceback.
+MATHTEXT_TITLE = r"Press $\frac$ costs $5 to $10"
+
+
+def _drawn_by(monkeypatch, module, name: str) -> list:
+    """The figures ``module.name`` returns while a run draws them."""
+    drawn, drawing = [], getattr(module, name)
+    monkeypatch.setattr(module, name, lambda *args, **kwargs: drawn.append(drawing(*args, **kwargs)) or drawn[-1])
+    return drawn
+
+
+def test_a_title_with_dollars_is_plain_text_in_the_motion_plot(tmp_path, monkeypatch):
+    from graphplan.report import motion_plots
+    from graphplan.starters import starter
+
+    text = re.sub(r"(?m)^title\s*=.*$", lambda _: f"title = {_toml_string(MATHTEXT_TITLE)}", starter("flywheel", "en"),
+                  count=1)
+    scene = tmp_path / "flywheel.toml"
+    scene.write_text(text, encoding="utf-8")
+    drawn = _drawn_by(monkeypatch, motion_plots, "motion_plot")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    (figure,) = drawn
+    assert MATHTEXT_TITLE in figure._suptitle.get_text() and not figure._suptitle.get_parse_math()
+
+
+def test_a_title_with_dollars_is_plain_text_in_the_balancing_figure(tmp_path, monkeypatch):
+    from graphplan.report import figures
+
+    ratchet = (Path(__file__).parents[1] / "fixtures" / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "scene.toml"
+    scene.write_text(re.sub(r"(?m)^title\s*=.*$", lambda _: f"title = {_toml_string(MATHTEXT_TITLE)}", ratchet,
+                            count=1), encoding="utf-8")
+    drawn = _drawn_by(monkeypatch, figures, "_balancing_figure")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "positions", "--figures"]) == 0
+    (figure,) = drawn
+    (title,) = {axes.title for axes in figure.axes if axes.get_title()}
+    assert title.get_text() == MATHTEXT_TITLE and not title.get_parse_math()
+
 @pytest.mark.parametrize(("name", "shown"), [("E*x*", "'*'"), ("S_2", "'_'"), ("a|b", "'|'"), ("E`1`", "'`'"),
                                              ("E 1", "a space"), ("E[1]", "'[', ']'")])
 def test_a_point_name_the_note_would_read_as_markup_is_refused_at_its_key(name, shown):

@@ -97,7 +97,7 @@ def figure(study: Study, locale: str, title: str) -> str:
         draw_study(axes, study.rows, text["millimetre"], names, text["accuracy_tag_own"])
         axes.set_xlabel(text["accuracy_axis_time"].format(count=Count(len(study.case.compared))), fontsize=9)
         axes.set_ylabel(text["accuracy_axis_error"], fontsize=9)
-        axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9)
+        axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9, parse_math=False)  # the user's title
         axes.legend(fontsize=8, loc="best")
         drawn.tight_layout()
         with_decimal_mark(drawn, text["decimal_mark"])

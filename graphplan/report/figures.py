@@ -69,7 +69,7 @@ def _balancing_figure(analysis: Analysis):
     plot.axhline(0.0, color="black", linewidth=0.5)
     plot.set_xlabel(axis)
     plot.set_ylabel(f"{name}, {unit}")
-    plot.set_title(analysis.scene.title, fontsize=10)
+    plot.set_title(analysis.scene.title, fontsize=10, parse_math=False)  # the user's text, not mathtext
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=8, loc="best")
     figure.tight_layout()

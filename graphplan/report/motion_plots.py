@@ -93,9 +93,10 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 turn.text(0.5, 0.5, _broken(_why_not_steady(motion, text, stall_deg), 10), ha="center", va="center",
                           transform=turn.transAxes)
         with_decimal_mark(figure, text["decimal_mark"])
-        # After the decimal mark: the title quotes the scene's, which is the user's text.
+        # After the decimal mark, and no mathtext: the title quotes the scene's, which is the user's text (a title
+        # "$5 to $10" was set in italics, and "$\frac$" stopped the run).
         figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
-                        fontsize=11)
+                        fontsize=11, parse_math=False)
         figure.tight_layout()
     return figure
 
