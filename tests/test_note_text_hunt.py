@@ -318,6 +318,18 @@ def test_a_title_with_dollars_is_plain_text_in_the_balancing_figure(tmp_path, mo
     (title,) = {axes.title for axes in figure.axes if axes.get_title()}
     assert title.get_text() == MATHTEXT_TITLE and not title.get_parse_math()
 
+
+def test_a_title_with_dollars_is_plain_text_in_the_accuracy_plot(tmp_path, monkeypatch):
+    from graphplan.report import accuracy
+
+    scene = tmp_path / "scene.toml"
+    scene.write_text(_scene_text(_toml_string(MATHTEXT_TITLE)), encoding="utf-8")
+    drawn = []
+    monkeypatch.setattr(accuracy, "svg_text", lambda figure: drawn.append(figure) or "<svg/>")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "accuracy"]) == 0
+    ((axes,),) = [figure.axes for figure in drawn]
+    assert axes.title.get_text().startswith(MATHTEXT_TITLE + "\n") and not axes.title.get_parse_math()
+
 @pytest.mark.parametrize(("name", "shown"), [("E*x*", "'*'"), ("S_2", "'_'"), ("a|b", "'|'"), ("E`1`", "'`'"),
                                              ("E 1", "a space"), ("E[1]", "'[', ']'")])
 def test_a_point_name_the_note_would_read_as_markup_is_refused_at_its_key(name, shown):
