@@ -18,7 +18,7 @@ import numpy as np
 from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionError
 from .mechanism import Mechanism, build
 from .motion import Motion
-from .scene import Scene, load, missing_part
+from .scene import Scene, load, missing_part, not_a_scene
 from .scene import loads as _read_text  # graphplan.loads is the module of the mechanism's loads
 
 __version__ = "0.1.0"
@@ -63,7 +63,7 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     from .reach_advice import reach_hint
 
     if not isinstance(scene, Scene):
-        raise TypeError(f"solve takes a scene, as graphplan.load(path) reads it (got {scene!r})")
+        raise not_a_scene("solve", scene)
     if not scene.has_linkage:
         raise missing_part(scene, "mechanism")
     mechanism = build(scene)

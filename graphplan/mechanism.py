@@ -19,7 +19,7 @@ from .errors import SceneError, as_written
 from .groups import Driver, Group, Guide
 from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
 from .reader import join_path
-from .scene import PointSpec, Scene
+from .scene import PointSpec, Scene, not_a_scene
 
 _ROMAN = {1: "I", 2: "II", 3: "III"}
 
@@ -41,6 +41,11 @@ class Mechanism:
     fixed_on: Mapping[int, frozenset[str]]
     sliding_on: Mapping[int, Mapping[str, complex]]
     translating: frozenset[int]
+
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed the whole scene, some 3 000 characters.
+        return (f"<Mechanism of {self.scene.title!r}: driver link {self.driver.link}, groups "
+                f"{', '.join(group.label for group in self.groups) or 'none'}>")
 
     @property
     def driver(self) -> Driver:
@@ -101,6 +106,8 @@ class Mechanism:
 
 def build(scene: Scene) -> Mechanism:
     """Check the names of ``scene`` against each other and order the solution."""
+    if not isinstance(scene, Scene):  # a path or a dict failed deep inside, on its missing .driver
+        raise not_a_scene("build", scene)
     if scene.driver is None:
         raise SceneError("driver", "is required but missing: this scene has no mechanism ([frame] and [driver])")
     frame = scene.frame_link

@@ -305,6 +305,18 @@ def missing_part(scene: Scene, part: str) -> SceneError:
     return SceneError(part, lacking)
 
 
+def not_a_scene(verb: str, value: Any) -> TypeError:
+    """The error of ``verb`` given something other than a scene: the value shown where it is short (a mechanism's
+    repr printed its whole scene, 3 000 characters), and where it has a scene, where that is."""
+    shown = repr(value)
+    if len(shown) > 100:
+        name = type(value).__name__
+        shown = f"{'an' if name[:1] in 'AEIOU' else 'a'} {name}"
+    hint = f"; its scene is {type(value).__name__.lower()}.scene" if isinstance(getattr(value, "scene", None), Scene) \
+        else ""
+    return TypeError(f"{verb} takes a scene, as graphplan.load(path) reads it (got {shown}){hint}")
+
+
 def check_sheet(value: Any, where: str) -> str:
     """A sheet format of :data:`SHEETS`; another size of the A series is told which sizes there are (difflib would
     offer A4 for A0, a sheet sixteen times smaller)."""
