@@ -31,6 +31,7 @@ from .kinematics import (
     point_fixed_on,
     unit,
 )
+from .lookalikes import lookalike_hint
 from .mechanism import Mechanism, on_frame
 from .memo import OwnedMemo
 from .scene import PointSpec
@@ -147,7 +148,8 @@ class Motion:
         if not isinstance(name, str):
             raise TypeError(f"a point is named by its name, a string: point('B'), not point({name!r})")
         if name not in self.points:
-            raise KeyError(f"no point {name!r}; points are {', '.join(self.points)}")
+            # A Cyrillic В among Latin names: the B it meant stood in the list, looking the same.
+            raise KeyError(f"no point {name!r}; points are {', '.join(self.points)}{lookalike_hint(name, self.points)}")
         motion = self.points[name]
         return PointArrays(*(_read_only(as_xy(value, self.count)) for value in (motion.r, motion.v, motion.a)))
 
@@ -181,12 +183,16 @@ class Motion:
 
     def slide(self, slider: int) -> SlideMotion:
         """The sliding pair in which link ``slider`` slides."""
+        if isinstance(slider, bool) or not isinstance(slider, int | np.integer):
+            # slide('6') compared a string with the links' numbers and told of a link 6 that slides in no pair.
+            raise TypeError(f"a sliding pair is named by its slider's number, an integer: slide(6), not slide({slider!r})")
         for slide in self.slides:
             if slide.slider == slider:
                 # Views that cannot be written: a write would change the motion's own arrays.
                 return replace(slide, **{name: _read_only(np.asarray(getattr(slide, name)).view())
                                          for name in ("u", "s", "velocity", "acceleration")})
-        raise KeyError(f"link {slider} slides in no pair")
+        pairs = ", ".join(f"link {slide.slider} on link {slide.guide}" for slide in self.slides) or "none"
+        raise KeyError(f"link {slider} slides in no pair; the sliding pairs are {pairs}")
 
 
 class _Context:
