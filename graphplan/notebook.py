@@ -15,6 +15,7 @@
 from __future__ import annotations
 
 import dataclasses
+import os
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
@@ -51,7 +52,12 @@ class Drawing:
         (at the command line's resolution) or ``.pdf``; returns the path."""
         from .render.export import svg_to_pdf, svg_to_png
 
-        path = Path(path)
+        if not isinstance(path, str | os.PathLike):  # pathlib's error named neither save nor its path
+            raise TypeError(f"save takes the path of the file to write, such as 'plan.svg' (got {path!r})")
+        path = Path(path).expanduser()  # a notebook has no shell to expand ~
+        if path.is_dir():  # told its name had no suffix, or, named plan.svg, IsADirectoryError from the write
+            raise IsADirectoryError(f"{path}: is a folder; save the drawing as a file in it, such as "
+                                    f"{path / 'drawing.svg'}")
         suffix = path.suffix.lower()
         if suffix == ".svg":
             path.write_text(self.svg, encoding="utf-8")

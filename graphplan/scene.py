@@ -15,7 +15,7 @@ import os
 import re
 import tomllib
 import unicodedata
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
@@ -278,12 +278,22 @@ class Scene:
         and ``sheet`` are the command line's ``--only``, ``--format``, ``--figures``, ``--locale`` and ``--sheet``.
         The folder is written whole or not at all.  Returns the paths written (``.files``) and the lines the
         command line warns with (``.warnings``)."""
+        import numpy as np
+
         from .run import PYTHON, run
 
-        for name, value in (("only", only), ("formats", formats)):
+        if not isinstance(folder, str | os.PathLike):  # pathlib's error named neither write nor its folder
+            raise TypeError(f"write takes the folder to write, a path such as 'ratchet' (got {folder!r})")
+        for name, value, example in (("only", only, "note"), ("formats", formats, "png")):
             if isinstance(value, str):  # taken letter by letter, "svg" would be refused as 's', 'v', 'g'
                 raise TypeError(f"{name} is a list of names: {name}=[{value!r}], not {name}={value!r}")
-        return run(self, Path(folder), only, formats, figures, locale, sheet, options=PYTHON)
+            if not isinstance(value, Iterable) and not (name == "only" and value is None):
+                raise TypeError(f"{name} is a list of names: {name}=[{example!r}] (got {value!r})")
+        # A string is true: figures="no" drew the figures.
+        if not isinstance(figures, bool | np.bool_):
+            raise TypeError(f"figures is True or False (got {figures!r})")
+        # A notebook has no shell to expand ~: the run went to a folder named ~ in the working folder.
+        return run(self, Path(folder).expanduser(), only, formats, bool(figures), locale, sheet, options=PYTHON)
 
 
 # What each verb of a scene needs, and the verb that works it out, for the error that says what else to call.
@@ -347,7 +357,7 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
         # TOML text given for a path: its error would quote the whole scene as a file name.
         raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
                              "graphplan.load_text(text)")
-    path = Path(path)
+    path = Path(os.fsdecode(path)).expanduser()  # a notebook has no shell to expand ~
     try:
         size = path.stat().st_size
         if size > MAX_SCENE_BYTES:

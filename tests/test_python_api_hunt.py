@@ -57,3 +57,57 @@ def test_a_sliding_pair_is_named_by_its_slider_s_number_and_an_unknown_one_lists
                                        r"link 6 on link 1"):
         motion.slide(9)
     assert motion.slide(6).guide == 1
+
+
+# --- scene.write and drawing.save -------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("keyword", "value", "told"), [
+    ("only", 5, r"^only is a list of names: only=\['note'\] \(got 5\)$"),
+    ("formats", None, r"^formats is a list of names: formats=\['png'\] \(got None\)$"),
+    ("figures", "no", r"^figures is True or False \(got 'no'\)$"),
+])
+def test_write_refuses_an_option_of_the_wrong_kind_before_it_writes(ratchet, tmp_path, keyword, value, told):
+    """only=5 and formats=None raised «'int' object is not iterable» from inside the run; figures='no', a string and
+    so true, drew the report figures."""
+    with pytest.raises(TypeError, match=told):
+        ratchet.write(tmp_path / "run", **{"only": ["note"], keyword: value})
+    assert not (tmp_path / "run").exists()
+
+
+@pytest.mark.parametrize("folder", [None, {}, 5])
+def test_write_given_no_folder_says_it_takes_one(ratchet, folder):
+    """write(None) raised pathlib's «expected str, bytes or os.PathLike object, not NoneType»."""
+    with pytest.raises(TypeError, match=r"^write takes the folder to write, a path such as 'ratchet' \(got "):
+        ratchet.write(folder)
+
+
+def test_a_path_from_the_home_folder_is_the_home_folder_s(ratchet, tmp_path, monkeypatch):
+    """A notebook has no shell to expand ~: write('~/ratchet') wrote a folder named ~ in the working folder, and
+    save('~/plan.svg') raised FileNotFoundError."""
+    scene_text = Path(RATCHET).read_bytes()
+    home, working = tmp_path / "home", tmp_path / "work"
+    home.mkdir()
+    working.mkdir()
+    monkeypatch.setenv("HOME", str(home))
+    monkeypatch.chdir(working)
+    done = ratchet.write("~/ratchet", only=["note"])
+    assert done.folder == home / "ratchet" and (home / "ratchet" / "note.md").is_file()
+    assert ratchet.plan(5).drawing.save("~/plan.svg") == home / "plan.svg"
+    (home / "copy.toml").write_bytes(scene_text)
+    assert graphplan.load("~/copy.toml").title == ratchet.title
+    assert list(working.iterdir()) == []
+
+
+def test_save_says_it_takes_a_file_s_path_and_not_a_folder(ratchet, tmp_path):
+    """save(None) raised pathlib's TypeError; save(folder) was told that the folder's name had no suffix, and a
+    folder named plan.svg raised IsADirectoryError."""
+    drawing = ratchet.plan(5).drawing
+    with pytest.raises(TypeError, match=r"^save takes the path of the file to write, such as 'plan\.svg' \(got None\)$"):
+        drawing.save(None)
+    (tmp_path / "plan.svg").mkdir()
+    for folder in (tmp_path, tmp_path / "plan.svg"):
+        with pytest.raises(IsADirectoryError, match=rf"^{folder}: is a folder; save the drawing as a file in it, such "
+                                                    rf"as {folder / 'drawing.svg'}$"):
+            drawing.save(folder)
+    assert [path.name for path in tmp_path.iterdir()] == ["plan.svg"]
