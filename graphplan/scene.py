@@ -353,6 +353,8 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
                         f"{type(path).__name__}); graphplan.load_text(text) reads a scene given as TOML text")
     if isinstance(path, Mapping):
         return _read_scene(Table(_as_read(path, ""), ""), "<scene>")
+    if isinstance(path, str) and not path.strip():  # Path("") is the working folder, told as «.: cannot be read»
+        raise SceneError("", f"load takes the path of a scene file, such as 'ratchet.toml' (got an empty path {path!r})")
     if isinstance(path, bytes | bytearray) or (isinstance(path, str) and ("\n" in path or len(path) > 4096)):
         # TOML text given for a path: its error would quote the whole scene as a file name.
         raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
@@ -396,6 +398,10 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
         hint = "graphplan.load(tables) reads a scene given as its tables" if isinstance(data, Mapping) else \
             "graphplan.load(path) reads a file"
         raise TypeError(f"a scene is given as its TOML text, a str (got {type(data).__name__}); {hint}")
+    if isinstance(source, os.PathLike):
+        source = os.fspath(source)
+    if not isinstance(source, str):  # the title's default, Path(source).stem, raised pathlib's TypeError
+        raise TypeError(f"source names the scene in its errors, a string such as 'ratchet.toml' (got {source!r})")
     size = len(data) if isinstance(data, bytes) else len(data.encode("utf-8", "surrogatepass"))
     if size > MAX_SCENE_BYTES:
         raise SceneError(source, f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")

@@ -111,3 +111,23 @@ def test_save_says_it_takes_a_file_s_path_and_not_a_folder(ratchet, tmp_path):
                                                     rf"as {folder / 'drawing.svg'}$"):
             drawing.save(folder)
     assert [path.name for path in tmp_path.iterdir()] == ["plan.svg"]
+
+
+# --- load and load_text -----------------------------------------------------------------------------------------
+
+
+def test_load_text_s_source_is_a_name():
+    """source=None raised pathlib's «expected str, bytes or os.PathLike object, not NoneType» from the title's
+    default; a path names the scene as its text."""
+    text = Path(RATCHET).read_text(encoding="utf-8")
+    with pytest.raises(TypeError, match=r"^source names the scene in its errors, a string such as 'ratchet\.toml' "
+                                        r"\(got None\)$"):
+        graphplan.load_text(text, source=None)
+    assert graphplan.load_text(text, source=Path("drafts/lever.toml")).source == "drafts/lever.toml"
+
+
+def test_load_of_an_empty_path_does_not_read_the_working_folder():
+    """load('') was told «.: cannot be read: Is a directory», a folder the caller never named."""
+    with pytest.raises(graphplan.SceneError, match=r"^load takes the path of a scene file, such as "
+                                                   r"'ratchet\.toml' \(got an empty path ''\)$"):
+        graphplan.load("")
