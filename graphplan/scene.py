@@ -354,7 +354,8 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
     if isinstance(path, Mapping):
         return _read_scene(Table(_as_read(path, ""), ""), "<scene>")
     if isinstance(path, str) and not path.strip():  # Path("") is the working folder, told as «.: cannot be read»
-        raise SceneError("", f"load takes the path of a scene file, such as 'ratchet.toml' (got an empty path {path!r})")
+        raise SceneError("", f"load takes the path of a scene file, such as 'ratchet.toml' (got an empty path "
+                             f"{path!r})")
     if isinstance(path, bytes | bytearray) or (isinstance(path, str) and ("\n" in path or len(path) > 4096)):
         # TOML text given for a path: its error would quote the whole scene as a file name.
         raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
