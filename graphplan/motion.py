@@ -185,7 +185,8 @@ class Motion:
         """The sliding pair in which link ``slider`` slides."""
         if isinstance(slider, bool) or not isinstance(slider, int | np.integer):
             # slide('6') compared a string with the links' numbers and told of a link 6 that slides in no pair.
-            raise TypeError(f"a sliding pair is named by its slider's number, an integer: slide(6), not slide({slider!r})")
+            raise TypeError(f"a sliding pair is named by its slider's number, an integer: slide(6), "
+                            f"not slide({slider!r})")
         for slide in self.slides:
             if slide.slider == slider:
                 # Views that cannot be written: a write would change the motion's own arrays.

@@ -103,7 +103,8 @@ def test_save_says_it_takes_a_file_s_path_and_not_a_folder(ratchet, tmp_path):
     """save(None) raised pathlib's TypeError; save(folder) was told that the folder's name had no suffix, and a
     folder named plan.svg raised IsADirectoryError."""
     drawing = ratchet.plan(5).drawing
-    with pytest.raises(TypeError, match=r"^save takes the path of the file to write, such as 'plan\.svg' \(got None\)$"):
+    with pytest.raises(TypeError, match=r"^save takes the path of the file to write, such as 'plan\.svg' "
+                                        r"\(got None\)$"):
         drawing.save(None)
     (tmp_path / "plan.svg").mkdir()
     for folder in (tmp_path, tmp_path / "plan.svg"):
