@@ -192,8 +192,9 @@ class Motion:
                 # Views that cannot be written: a write would change the motion's own arrays.
                 return replace(slide, **{name: _read_only(np.asarray(getattr(slide, name)).view())
                                          for name in ("u", "s", "velocity", "acceleration")})
-        pairs = ", ".join(f"link {slide.slider} on link {slide.guide}" for slide in self.slides) or "none"
-        raise KeyError(f"link {slider} slides in no pair; the sliding pairs are {pairs}")
+        pairs = ", ".join(f"link {slide.slider} on link {slide.guide}" for slide in self.slides)
+        raise KeyError(f"link {slider} slides in no pair; " + (f"the sliding pairs are {pairs}" if pairs
+                                                                else "the mechanism has no sliding pair"))
 
 
 class _Context:

@@ -1342,7 +1342,7 @@ def test_motion_lookups_name_what_exists() -> None:
     assert caught.value.args[0] == "no link 9; links are 1, 2, 3, 4"
     with pytest.raises(KeyError) as caught:
         motion.slide(3)
-    assert caught.value.args[0] == "link 3 slides in no pair"
+    assert caught.value.args[0] == "link 3 slides in no pair; the mechanism has no sliding pair"
 
 
 def test_motion_lookups_by_the_wrong_kind_of_name_say_what_kind_it_takes() -> None:
