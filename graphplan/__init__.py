@@ -10,6 +10,7 @@ The Python interface::
 from __future__ import annotations
 
 import copyreg
+import warnings
 from collections.abc import Sequence
 from types import MappingProxyType
 
@@ -75,13 +76,46 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
             return solve_motion(mechanism, positions.values, positions.reference, positions.numbers)
     try:  # where the assemblies are taken: at the first value (the solve refuses values that are no numbers)
         # Complex values are refused by the solve too: cast here, they printed numpy's warning before the refusal.
-        first: float | None = None if np.iscomplexobj(driver) else float(np.ravel(np.asarray(driver, dtype=float))[0])
+        given = None if np.iscomplexobj(driver) else np.ravel(np.asarray(driver, dtype=float))
+        first: float | None = None if given is None else float(given[0])
     except (TypeError, ValueError, IndexError):
-        first = None
-    with reach_hint(mechanism, first):
-        reference = make_positions(mechanism).reference if uses_near else None
-        motion = solve_motion(mechanism, driver, reference, indexed=True)
+        given, first = None, None
+    slip = _unit_slip(mechanism, given)
+    try:
+        with reach_hint(mechanism, first):
+            reference = make_positions(mechanism).reference if uses_near else None
+            motion = solve_motion(mechanism, driver, reference, indexed=True)
+    except AssemblyError as error:
+        if slip is None:
+            raise
+        raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {slip}") from error
+    if slip is not None and mechanism.driver.kind == "crank":  # a slider's values outside its travel may be meant
+        warnings.warn(f"driver: {slip}", UserWarning, stacklevel=2)
     return with_toggles_between(motion, reference or reference_at(mechanism, float(motion.driver[0])), PATH_SAMPLES)
+
+
+def _unit_slip(mechanism: Mechanism, values: np.ndarray | None) -> str | None:
+    """What to say of driver values that look given in the wrong unit, or None: a crank's whole numbers beyond a turn
+    (degrees, read as radians: np.arange(0, 360, 30) is 52 turns), a slider's values outside its travel (metres,
+    a thousand times it where they are millimetres).  Only said, never changed: 7 rad may be meant."""
+    if values is None or not values.size or not np.all(np.isfinite(values)):
+        return None
+    driver = mechanism.driver
+    largest = float(np.max(np.abs(values)))
+    if driver.kind == "crank":
+        if largest <= 2 * np.pi or not np.all(values == np.round(values)):
+            return None
+        return (f"the values are whole numbers up to {largest:g}, read as radians ({largest:g} rad is "
+                f"{largest / (2 * np.pi):.3g} turns): for degrees give np.radians(values)")
+    low, high = sorted(driver.travel)
+    margin = 1e-9 * (high - low)  # np.linspace's last value a hair past the end is within the travel
+    if np.all((values >= low - margin) & (values <= high + margin)):
+        return None
+    said = f"the scene's travel is s = {driver.travel[0]:g} … {driver.travel[1]:g} m and the values are in metres"
+    thousandth = values / 1000.0
+    if largest > 10 * max(abs(low), abs(high)) and np.all((thousandth >= low - margin) & (thousandth <= high + margin)):
+        said += ": given in millimetres? divide them by 1000"
+    return said
 
 
 __all__ = [

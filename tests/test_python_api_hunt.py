@@ -3,8 +3,10 @@ argument and what is wrong, never passed on as a traceback from deep inside nor 
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import graphplan
@@ -132,3 +134,45 @@ def test_load_of_an_empty_path_does_not_read_the_working_folder():
     with pytest.raises(graphplan.SceneError, match=r"^load takes the path of a scene file, such as "
                                                    r"'ratchet\.toml' \(got an empty path ''\)$"):
         graphplan.load("")
+
+
+# --- the driver's values in the wrong unit ------------------------------------------------------------------------
+
+
+def test_whole_degrees_given_for_a_crank_s_radians_are_warned_of(ratchet):
+    """np.arange(0, 360, 30) went to the crank as radians, 57 turns of it, without a word: the motion came out, at
+    angles the student never meant."""
+    with pytest.warns(UserWarning, match=r"^driver: the values are whole numbers up to 330, read as radians "
+                                         r"\(330 rad is 52\.5 turns\): for degrees give np\.radians\(values\)$"):
+        ratchet.solve(driver=np.arange(0, 360, 30))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ratchet.solve(driver=np.radians(np.arange(0, 360, 30)))
+        ratchet.solve(driver=[0, 1, 2, 3, 4, 5, 6])  # whole radians within a turn
+        ratchet.solve(driver=[0.5, 0.5 + 2 * np.pi * 3])  # turns on, not whole
+
+
+def test_degrees_a_rocking_crank_cannot_reach_as_radians_are_told_as_such():
+    """[20, 65] for a lever swinging 20°…65° was told «cannot be assembled at φ = 124.226°», an angle the student
+    never gave (65 rad), with no word of the unit."""
+    scene = graphplan.load("fixtures/double_rocker_swing.toml")
+    with pytest.raises(graphplan.AssemblyError, match=r"at φ = 124\.226° \(driver\[1\]\) .*; the values are whole "
+                                                      r"numbers up to 65, read as radians \(65 rad is 10\.3 turns\): "
+                                                      r"for degrees give np\.radians\(values\)$"):
+        scene.solve(driver=[20, 65])
+    assert 65 / (2 * np.pi) == pytest.approx(10.345, abs=1e-3)
+    assert np.degrees(65) % 360 == pytest.approx(124.226, abs=1e-3)
+
+
+def test_a_slider_s_millimetres_it_cannot_reach_as_metres_are_told_as_such():
+    """[0, 50, 100] for a rod travelling 0…200 mm was told «cannot be assembled at s = 50 m», no word of its travel
+    in metres."""
+    scene = graphplan.load("fixtures/slider_driven.toml")
+    with pytest.raises(graphplan.AssemblyError, match=r"at s = 50 m \(driver\[1\]\) .*; the scene's travel is s = 0 "
+                                                      r"… 0\.2 m and the values are in metres: given in millimetres\? "
+                                                      r"divide them by 1000$"):
+        scene.solve(driver=[0, 50, 100])
+    # Beyond the travel, not a thousand times it: the travel is told, not millimetres.
+    with pytest.raises(graphplan.AssemblyError, match=r"; the scene's travel is s = 0 … 0\.2 m and the values are in "
+                                                      r"metres$"):
+        scene.solve(driver=[0.1, 0.5])
