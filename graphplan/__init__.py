@@ -78,7 +78,7 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
         # Complex values are refused by the solve too: cast here, they printed numpy's warning before the refusal.
         given = None if np.iscomplexobj(driver) else np.ravel(np.asarray(driver, dtype=float))
         first: float | None = None if given is None else float(given[0])
-    except (TypeError, ValueError, IndexError):
+    except (TypeError, ValueError, IndexError, OverflowError):
         given, first = None, None
     slip = _unit_slip(mechanism, given)
     try:

@@ -344,7 +344,7 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
             raise TypeError  # complex parts dropped, booleans and strings read as numbers: none is meant
         # A copy: the motion keeps its driver, whatever the caller does to the array afterwards.
         values = np.array(np.atleast_1d(given), dtype=float)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):  # OverflowError: a Python integer past float's range
         raise SceneError("driver", f"{numbers_only} (got {_shown(values)})") from None
     if values.ndim != 1 or len(values) == 0:
         raise SceneError("driver", "must be a non-empty 1-D array of driver positions")

@@ -285,8 +285,9 @@ class Scene:
         if not isinstance(folder, str | os.PathLike):  # pathlib's error named neither write nor its folder
             raise TypeError(f"write takes the folder to write, a path such as 'ratchet' (got {folder!r})")
         for name, value, example in (("only", only, "note"), ("formats", formats, "png")):
-            if isinstance(value, str):  # taken letter by letter, "svg" would be refused as 's', 'v', 'g'
-                raise TypeError(f"{name} is a list of names: {name}=[{value!r}], not {name}={value!r}")
+            if isinstance(value, str | bytes):  # taken letter by letter, "svg" would be refused as 's', 'v', 'g'
+                shown = value if isinstance(value, str) else value.decode("utf-8", "replace")
+                raise TypeError(f"{name} is a list of names: {name}=[{shown!r}], not {name}={value!r}")
             if not isinstance(value, Iterable) and not (name == "only" and value is None):
                 raise TypeError(f"{name} is a list of names: {name}=[{example!r}] (got {value!r})")
         # A string is true: figures="no" drew the figures.

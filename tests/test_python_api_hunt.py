@@ -77,6 +77,12 @@ def test_write_refuses_an_option_of_the_wrong_kind_before_it_writes(ratchet, tmp
     assert not (tmp_path / "run").exists()
 
 
+def test_names_given_as_bytes_are_a_list_of_names_too(ratchet, tmp_path):
+    """only=b'note' was taken byte by byte: «only[0]: must be a string, not an integer (got 110)»."""
+    with pytest.raises(TypeError, match=r"^only is a list of names: only=\['note'\], not only=b'note'$"):
+        ratchet.write(tmp_path / "run", only=b"note")
+
+
 @pytest.mark.parametrize("folder", [None, {}, 5])
 def test_write_given_no_folder_says_it_takes_one(ratchet, folder):
     """write(None) raised pathlib's «expected str, bytes or os.PathLike object, not NoneType»."""
@@ -176,3 +182,9 @@ def test_a_slider_s_millimetres_it_cannot_reach_as_metres_are_told_as_such():
     with pytest.raises(graphplan.AssemblyError, match=r"; the scene's travel is s = 0 … 0\.2 m and the values are in "
                                                       r"metres$"):
         scene.solve(driver=[0.1, 0.5])
+
+
+def test_a_driver_value_past_float_s_range_is_refused_as_the_others_are(ratchet):
+    """A Python integer of 400 digits raised OverflowError from numpy's cast instead of the driver's refusal."""
+    with pytest.raises(graphplan.SceneError, match=r"^driver: must be an array of numbers .* \(got \[1000"):
+        ratchet.solve(driver=[10 ** 400])
