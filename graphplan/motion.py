@@ -168,8 +168,11 @@ class Motion:
     def at_positions(self, indices: Sequence[int]) -> Motion:
         """The motion at some of its positions only, in the order given (their warnings renumbered)."""
         chosen = np.asarray(indices)
+        if chosen.ndim == 1 and not len(chosen):  # [] is read as floats: it was refused as no list of integers
+            chosen = chosen.astype(int)
         if chosen.ndim != 1 or chosen.dtype.kind not in "iu":
-            raise TypeError(f"positions are picked by their indices, a list of integers (got {indices!r})")
+            mask = "; a mask picks them as np.flatnonzero(mask)" if chosen.dtype.kind == "b" else ""
+            raise TypeError(f"positions are picked by their indices, a list of integers (got {indices!r}){mask}")
         if len(chosen) and not (np.all(chosen < self.count) and np.all(chosen >= -self.count)):
             raise IndexError(f"the motion has {self.count} positions, indices 0 to {self.count - 1} (got {indices!r})")
         chosen = chosen % max(self.count, 1)

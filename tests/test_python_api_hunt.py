@@ -188,3 +188,16 @@ def test_a_driver_value_past_float_s_range_is_refused_as_the_others_are(ratchet)
     """A Python integer of 400 digits raised OverflowError from numpy's cast instead of the driver's refusal."""
     with pytest.raises(graphplan.SceneError, match=r"^driver: must be an array of numbers .* \(got \[1000"):
         ratchet.solve(driver=[10 ** 400])
+
+
+def test_positions_picked_by_a_mask_or_by_none_are_taken_or_told_what_at_positions_takes(ratchet):
+    """at_positions([]) was refused as «a list of integers (got [])», which it is, where np.array([], int) gave the
+    motion at no position; a mask (motion.driver < 1, numpy's own
+    way of picking) was refused without a word of how to turn it into indices."""
+    motion = ratchet.solve(driver=[0.5, 1.5, 2.5])
+    none = motion.at_positions([])  # as numpy's indexing picks none
+    assert none.count == 0 and none.point("B").r.shape == (0, 2) and none.link(4).omega.shape == (0,)
+    with pytest.raises(TypeError, match=r"a list of integers \(got array\(\[ True, False, False\]\)\); a mask picks "
+                                        r"them as np\.flatnonzero\(mask\)$"):
+        motion.at_positions(motion.driver < 1)
+    assert motion.at_positions(np.flatnonzero(motion.driver < 1)).driver.tolist() == [0.5]
