@@ -382,10 +382,13 @@ def _as_read(value: Any, where: str) -> Any:
             if not isinstance(key, str):
                 raise SceneError(where, f"has the key {key!r}; a scene's keys are strings")
         return {key: _as_read(item, f"{where}.{key}" if where else key) for key, item in value.items()}
-    if isinstance(value, np.ndarray):
-        value = value.tolist()
+    if isinstance(value, np.ndarray):  # element by element: tolist() expands single precision as item() does
+        value = value[()] if value.ndim == 0 else list(value)
     if isinstance(value, list | tuple):
         return [_as_read(item, f"{where}[{index}]") for index, item in enumerate(value)]
+    if isinstance(value, np.floating) and value.dtype.itemsize < 8:
+        # As its digits read: np.float32(0.26).item() is 0.25999999046325684, where a file's 0.26 is 0.26.
+        return float(str(value))
     if isinstance(value, np.generic):
         return value.item()
     if isinstance(value, str | int | float | datetime.date | datetime.time):

@@ -61,6 +61,23 @@ def test_a_sliding_pair_is_named_by_its_slider_s_number_and_an_unknown_one_lists
     assert motion.slide(6).guide == 1
 
 
+def test_a_single_precision_number_in_a_scene_s_tables_is_the_number_its_digits_say():
+    """np.float32(0.26), from a sweep in single precision, became a rod of 0.25999999046325684 m, where the file's
+    0.26 is the double nearest 0.26."""
+    import tomllib
+
+    tables = tomllib.loads(Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8"))
+    for rod in np.linspace(0.2, 0.3, 11, dtype=np.float32):
+        tables["groups"][0]["length"] = rod
+        assert graphplan.load(tables).groups[0].length == float(f"{rod:.2f}")
+    tables["groups"][0]["length"] = np.float16(0.25)
+    assert graphplan.load(tables).groups[0].length == 0.25
+    tables["driver"]["length"] = np.array([0.05], dtype=np.float32)[0]
+    tables["frame"]["points"] = {"O": np.array([0.0, 0.1], dtype=np.float32)}
+    scene = graphplan.load(tables)
+    assert (scene.driver.length, scene.frame_points["O"]) == (0.05, 0.1j)
+
+
 # --- scene.write and drawing.save -------------------------------------------------------------------------------
 
 
