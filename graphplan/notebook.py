@@ -30,7 +30,7 @@ from .forces import ForcePlan
 from .motion import solve
 from .plans import Plan
 from .rotor_balancing import BalancingResult, CorrectionPlane
-from .scene import Scene
+from .scene import Scene, missing_part, not_a_scene
 from .vibration import Response
 
 
@@ -161,6 +161,10 @@ class PositionPlans:
 
 def plan(scene: Scene, number: int) -> PositionPlans:
     """The plans of the position numbered ``number`` (as the scene numbers them), drawn whether listed or not."""
+    if not isinstance(scene, Scene):  # a path failed on its missing .positions
+        raise not_a_scene("plan", scene)
+    if not scene.has_linkage:
+        raise missing_part(scene, "mechanism")
     first = scene.positions.number_from
     if isinstance(number, bool) or not isinstance(number, int | np.integer):
         raise TypeError(f"a position is named by its number, an integer: plan(5), not plan({number!r})")

@@ -27,6 +27,14 @@ def test_build_given_no_scene_says_it_takes_one(wrong):
         graphplan.build(wrong)
 
 
+def test_the_notebook_s_plan_given_no_scene_says_it_takes_one():
+    """graphplan.notebook.plan(path, 5) raised AttributeError: 'str' object has no attribute 'positions'."""
+    from graphplan.notebook import plan
+
+    with pytest.raises(TypeError, match=r"^plan takes a scene, as graphplan\.load\(path\) reads it \(got 'fix"):
+        plan(RATCHET, 5)
+
+
 def test_a_mechanism_prints_in_a_line_and_solve_given_one_says_where_its_scene_is(ratchet):
     """A mechanism's repr printed its whole scene (3 000 characters), and so did solve's error given one."""
     mechanism = graphplan.build(ratchet)
