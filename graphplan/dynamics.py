@@ -203,6 +203,13 @@ class EquivalentModel:
     resisting_loads: tuple[str, ...] = ()
     moved: tuple[MovedLoad, ...] = ()
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every array: 28 000 characters on a notebook's line.
+        unit = "kg·m²" if self.turning else "kg"
+        link = f"link {self.link}" if self.link else "the load diagrams"
+        return (f"<EquivalentModel of {link} ({self.kind}): Je {float(np.min(self.inertia)):.4g} … "
+                f"{float(np.max(self.inertia)):.4g} {unit}, {len(self.driver)} samples>")
+
     @property
     def turning(self) -> bool:
         return self.kind == "crank"

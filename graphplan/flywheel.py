@@ -234,6 +234,11 @@ class Flywheel:
     moved: float | None = None
     required: float = 0.0
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed the speed at every sample: 5 700 characters on a notebook's line.
+        return (f"<Flywheel for δ = {self.delta:.4g} at ωm = {self.omega_mean:.4g} rad/s: JF = {self.inertia:.5g} "
+                f"kg·m², ΔWmax = {self.delta_w_max:.5g} J>")
+
     @property
     def reached(self) -> float:
         """The δ the machine has with the flywheel mounted: the one asked for, or less without a flywheel."""

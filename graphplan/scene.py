@@ -208,6 +208,13 @@ class Scene:
     dynamics: Any = None  # flywheel.DynamicsSpec: the equivalent model, the flywheel, the equation of motion
     project: Project = Project()
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every table: 3 000 characters on a notebook's line.
+        parts = [f"a mechanism at {self.positions.count} positions"] if self.has_linkage else []
+        parts += [f"[{name}]" for name, part in (("dynamics", self.dynamics), ("balancing", self.balancing),
+                                                 ("vibration", self.vibration)) if part is not None]
+        return f"<Scene {self.title!r} from {self.source}: {', '.join(parts) or 'nothing to work out'}>"
+
     @property
     def own_words(self) -> tuple[str, ...]:
         """What a drawing quotes as written, never put into its language: the title and the loads' names (a link's

@@ -226,3 +226,26 @@ def test_positions_picked_by_a_mask_or_by_none_are_taken_or_told_what_at_positio
                                         r"them as np\.flatnonzero\(mask\)$"):
         motion.at_positions(motion.driver < 1)
     assert motion.at_positions(np.flatnonzero(motion.driver < 1)).driver.tolist() == [0.5]
+
+
+# --- what a notebook prints --------------------------------------------------------------------------------------
+
+
+def test_a_scene_and_its_dynamics_print_in_a_line_that_names_them():
+    """A scene's repr ran to 3 000 characters; the dynamics' model, flywheel and integrated motion, which the README
+    points to, to 28 500, 5 700 and 34 000 on the flywheel starter (every array)."""
+    from graphplan.starters import starter
+
+    scene = graphplan.load_text(starter("flywheel"), source="press.toml")
+    dynamics = scene.machine_dynamics()
+    model, flywheel, motion = dynamics.model, dynamics.flywheel, dynamics.motion
+    shown = [repr(item) for item in (scene, graphplan.load(RATCHET), model, flywheel, motion)]
+    assert all(len(line) < 200 and "\n" not in line for line in shown), shown
+    assert shown[0] == f"<Scene {scene.title!r} from press.toml: [dynamics]>"
+    assert shown[1] == ("<Scene 'Crank-rocker of a ratchet feed' from fixtures/ratchet_crank_rocker.toml: a mechanism "
+                        "at 12 positions>")
+    assert f"Je {model.inertia.min():.4g} … {model.inertia.max():.4g} kg·m²" in shown[2]
+    assert f"{len(model.driver)} samples" in shown[2]
+    assert f"JF = {flywheel.inertia:.5g} kg·m²" in shown[3] and f"δ = {flywheel.delta:.4g}" in shown[3]
+    assert f"{len(motion.t)} steps over {motion.t[-1]:.4g} s" in shown[4]
+    assert f"ω {motion.omega.min():.4g} … {motion.omega.max():.4g} rad/s" in shown[4]

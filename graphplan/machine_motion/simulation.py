@@ -84,6 +84,14 @@ class MachineMotion:
     clutch: Clutch | None = None
     stall: Stall | None = None
 
+    def __repr__(self) -> str:
+        # The dataclass's own repr printed every step: 34 000 characters on a notebook's line.
+        ending = (f", stalled at {self.stalled_at:.4g} s" if self.stalled_at is not None
+                  else f", at rest from {self.stopped_at:.4g} s" if self.stopped_at is not None
+                  else ", steady" if self.steady is not None else "")
+        return (f"<MachineMotion ({self.method}): {len(self.t)} steps over {float(self.t[-1]):.4g} s, ω "
+                f"{float(np.min(self.omega)):.4g} … {float(np.max(self.omega)):.4g} rad/s{ending}>")
+
     @property
     def stiff(self) -> bool:
         """Whether stability, not accuracy, would hold an explicit method's step (:func:`choose_method`)."""
