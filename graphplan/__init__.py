@@ -90,8 +90,21 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
             raise
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {slip}") from error
     if slip is not None and mechanism.driver.kind == "crank":  # a slider's values outside its travel may be meant
-        warnings.warn(f"driver: {slip}", UserWarning, stacklevel=2)
+        warnings.warn(f"driver: {slip}", UserWarning, stacklevel=_caller_level())
     return with_toggles_between(motion, reference or reference_at(mechanism, float(motion.driver[0])), PATH_SAMPLES)
+
+
+def _caller_level() -> int:
+    """The stacklevel of the first caller outside graphplan: through scene.solve() a warning named scene.py's line,
+    not the notebook's cell."""
+    import sys
+    from pathlib import Path
+
+    package = str(Path(__file__).parent)
+    frame, level = sys._getframe(1), 1  # solve's frame: stacklevel 1
+    while frame is not None and frame.f_code.co_filename.startswith(package):
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 def _unit_slip(mechanism: Mechanism, values: np.ndarray | None) -> str | None:

@@ -171,11 +171,14 @@ def test_load_of_an_empty_path_does_not_read_the_working_folder():
 
 
 def test_whole_degrees_given_for_a_crank_s_radians_are_warned_of(ratchet):
-    """np.arange(0, 360, 30) went to the crank as radians, 57 turns of it, without a word: the motion came out, at
+    """np.arange(0, 360, 30) went to the crank as radians, 52 turns of it, without a word: the motion came out, at
     angles the student never meant."""
-    with pytest.warns(UserWarning, match=r"^driver: the values are whole numbers up to 330, read as radians "
-                                         r"\(330 rad is 52\.5 turns\): for degrees give np\.radians\(values\)$"):
+    told_so = (r"^driver: the values are whole numbers up to 330, read as radians \(330 rad is 52\.5 turns\): for "
+               r"degrees give np\.radians\(values\)$")
+    with pytest.warns(UserWarning, match=told_so) as told:
         ratchet.solve(driver=np.arange(0, 360, 30))
+    # Told at the notebook's line, not at graphplan's own through which scene.solve() calls graphplan.solve().
+    assert [Path(warning.filename).name for warning in told] == [Path(__file__).name]
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         ratchet.solve(driver=np.radians(np.arange(0, 360, 30)))
