@@ -339,6 +339,10 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
     are then not numbers and must not be read).
     """
     numbers_only = "must be an array of numbers (crank angles in rad, or slider positions in m)"
+    if np.ma.is_masked(values):  # np.asarray keeps what the mask hides: the motion came out at those values
+        hidden = ", ".join(f"driver[{index}]" for index in np.flatnonzero(np.ma.getmaskarray(values))[:3])
+        raise SceneError("driver", f"has masked values ({hidden}), which the solve cannot leave out: give "
+                                   f"driver.compressed(), the values the mask shows")
     try:
         given = np.asarray(values)
         if given.dtype.kind not in "iuf" and not (given.dtype.kind == "O" and all(

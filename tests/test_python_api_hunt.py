@@ -252,3 +252,14 @@ def test_a_scene_and_its_dynamics_print_in_a_line_that_names_them():
     assert f"JF = {flywheel.inertia:.5g} kg·m²" in shown[3] and f"δ = {flywheel.delta:.4g}" in shown[3]
     assert f"{len(motion.t)} steps over {motion.t[-1]:.4g} s" in shown[4]
     assert f"ω {motion.omega.min():.4g} … {motion.omega.max():.4g} rad/s" in shown[4]
+
+
+def test_a_driver_with_masked_values_is_refused_rather_than_solved_at_what_the_mask_hides(ratchet):
+    """np.ma.masked_invalid(...) keeps its hidden values: the motion came out at them, as if the mask were not
+    there."""
+    angles = np.ma.masked_array([0.1, 0.2, 0.3], mask=[False, True, False])
+    with pytest.raises(graphplan.SceneError, match=r"^driver: has masked values \(driver\[1\]\), which the solve "
+                                                   r"cannot leave out: give driver\.compressed\(\)"):
+        ratchet.solve(driver=angles)
+    assert ratchet.solve(driver=angles.compressed()).driver.tolist() == [0.1, 0.3]
+    assert ratchet.solve(driver=np.ma.masked_array([0.1, 0.2])).count == 2  # a mask that hides nothing
