@@ -50,7 +50,9 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
         A scene from :func:`load`.
     driver
         Driver coordinates: crank angles in rad, or slider displacements in m, in any order.
-        Without it, the positions of the scene's ``[positions]`` table.
+        Without it, the positions of the scene's ``[positions]`` table.  A crank's whole numbers beyond a turn
+        (degrees, read as radians) warn with a ``UserWarning``; a slider's values it cannot reach are told
+        against its travel.
 
     The velocities and accelerations are at the driver's ω and ε (a slider's velocity and acceleration) of the
     scene's ``[driver]`` table, the same at every position, as the plan method takes them.  ``Motion.warnings``
