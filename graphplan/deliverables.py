@@ -721,12 +721,13 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     from .report.markdown import user_texts
 
     locale = scene.locale
+    verbatim = user_texts(scene)
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
         files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales)
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
-        files["note.tex"] = latex_document(files["note.md"], scene.title, locale, user_texts(scene))
+        files["note.tex"] = latex_document(files["note.md"], scene.title, locale, verbatim)
     if analysis is None:
         return files
     if "errors" in pieces:
@@ -734,12 +735,12 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
 
         files["errors.md"] = markdown(analysis)
         files["errors.csv"] = csv_text(analysis)
-        files["errors.tex"] = latex_fragment(files["errors.md"], locale, user_texts(scene))
+        files["errors.tex"] = latex_fragment(files["errors.md"], locale, verbatim)
     if "forces" in pieces:
         from .report.forces import markdown as forces_markdown
 
         files["forces.md"] = forces_markdown(analysis)
-        files["forces.tex"] = latex_fragment(files["forces.md"], locale, user_texts(scene))
+        files["forces.tex"] = latex_fragment(files["forces.md"], locale, verbatim)
     return files
 
 
