@@ -10,6 +10,8 @@ from __future__ import annotations
 import codecs
 import datetime
 import difflib
+import errno
+import json
 import math
 import os
 import re
@@ -369,14 +371,57 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
         raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
                              "graphplan.load_text(text)")
     path = Path(os.fsdecode(path)).expanduser()  # a notebook has no shell to expand ~
+    if path.is_dir():  # Windows reads a folder as "Permission denied", which sends the user to their rights
+        raise SceneError(str(path), f"is a folder, not a scene file{_scenes_in(path)}")
     try:
         size = path.stat().st_size
         if size > MAX_SCENE_BYTES:
             raise SceneError(str(path), f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")
-        data = path.read_bytes()
+        with path.open("rb") as file:
+            # A device or a pipe has no size to ask first (/dev/zero is endless): read no more than a scene may be.
+            data = file.read(MAX_SCENE_BYTES + 1)
+    except FileNotFoundError as error:
+        raise SceneError(str(path), f"cannot be read: {error.strerror or error}{_near_names(path)}") from None
     except OSError as error:
+        if error.errno == errno.ELOOP:
+            raise SceneError(str(path), "cannot be read: it is a link that leads round to itself (a loop of "
+                                        "links)") from None
         raise SceneError(str(path), f"cannot be read: {error.strerror or error}") from None
+    if len(data) > MAX_SCENE_BYTES:
+        raise SceneError(str(path), f"goes on past {MAX_SCENE_BYTES} bytes, the most a scene may have (a device or a "
+                                    "stream, not a scene file?)")
     return loads(data, source=str(path))
+
+
+def _near_names(path: Path) -> str:
+    """The files beside a missing ``path`` that are it but for capitals or a suffix: Notepad's ``scene.toml.txt``,
+    a ``Scene.TOML`` from Windows, the ``.toml`` left off."""
+    wanted = path.name.casefold()
+    try:
+        entries = [entry.name for entry in path.parent.iterdir() if entry.is_file()]
+    except OSError:
+        return ""
+    near = sorted(name for name in entries
+                  if name.casefold() == wanted or name.casefold().startswith(wanted + ".")
+                  or Path(name.casefold()).stem == wanted or name.casefold().removesuffix(".txt") == wanted)
+    if not near:
+        return ""
+    shown = " or ".join(repr(str(path.parent / name)) for name in near[:3])
+    return f"; did you mean {shown}?"
+
+
+def _scenes_in(folder: Path) -> str:
+    """The scene files in ``folder``, which the user may have meant to give."""
+    try:
+        scenes = sorted(entry.name for entry in folder.iterdir()
+                        if entry.suffix.casefold() == ".toml" and entry.is_file())
+    except OSError:
+        return ""
+    if not scenes:
+        return ": give the path of a .toml scene file"
+    if len(scenes) == 1:
+        return f": give the scene file in it, {str(folder / scenes[0])!r}"
+    return f": give one of the {len(scenes)} scene files in it, such as {str(folder / scenes[0])!r}"
 
 
 def _as_read(value: Any, where: str) -> Any:
@@ -418,6 +463,10 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
     if size > MAX_SCENE_BYTES:
         raise SceneError(source, f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")
     if isinstance(data, bytes):
+        kind = _binary_kind(data)
+        if kind:
+            raise SceneError(source, f"is not a text file but {kind}: a scene is TOML text, written in a plain text "
+                                     "editor (graphplan new KIND writes one to begin from)")
         if _utf16(data):
             raise SceneError(source, "is not UTF-8 text but UTF-16: save it as UTF-8")
         try:
@@ -425,16 +474,63 @@ def loads(data: bytes | str, source: str = "<scene>") -> Scene:
         except UnicodeDecodeError as error:
             raise SceneError(source, f"is not UTF-8 text ({_place_of(error)}); save it as UTF-8") from None
     data = data.removeprefix("\ufeff")
+    # Line ends of a classic Mac editor, a carriage return alone, which TOML refuses; no TOML text has a carriage
+    # return outside a CR LF, so reading each as a line end changes no scene that TOML reads.
+    data = re.sub(r"\r(?!\n)", "\n", data)
     try:
         document = tomllib.loads(data)
     except tomllib.TOMLDecodeError as error:
-        hint = _toml_hint(data, str(error))
+        hint = _other_format(data) or _toml_hint(data, str(error))
         if not hint and "\n" not in data.strip() and data.strip().lower().endswith(".toml"):
             hint = f"; {data.strip()!r} looks like a file's name: graphplan.load(path) reads a scene file"
         raise SceneError(source, f"is not valid TOML: {error}{hint}") from None
     except RecursionError:  # tomllib reads nested arrays and tables by recursion
         raise SceneError(source, "nests arrays or tables too deeply to be read") from None
+    if not document:
+        told = "is empty" if not data.strip() else "holds nothing but comments"
+        raise SceneError(source, f"{told}: a scene has a mechanism's tables ([frame], [driver], [[groups]]) or a "
+                                 "machine's ([dynamics], [balancing], [vibration]); graphplan new KIND writes one to "
+                                 "begin from")
     return _read_scene(Table(document, ""), source)
+
+
+# The first bytes of the files a student may give for the scene: a drawing saved as an image, the note from Word.
+_SIGNATURES = ((b"\x89PNG", "a PNG image"), (b"\xff\xd8\xff", "a JPEG image"), (b"GIF8", "a GIF image"),
+               (b"%PDF", "a PDF document"), (b"PK\x03\x04", "a zip archive (a Word .docx, .xlsx or .odt is one)"),
+               (b"\xd0\xcf\x11\xe0", "an Office document (.doc, .xls)"), (b"{\\rtf", "an RTF document (WordPad's)"),
+               (b"\x1f\x8b", "a gzip archive"), (b"\x7fELF", "a program"))
+
+
+def _binary_kind(data: bytes) -> str:
+    """What ``data`` is where it is not text: a known file's signature, or control bytes no text has."""
+    for signature, kind in _SIGNATURES:
+        if data.startswith(signature):
+            return kind
+    head = data[:4096]
+    if _utf16(head):
+        return ""
+    controls = sum(head.count(bytes([code])) for code in (*range(9), 11, *range(14, 32)))
+    # Any encoding of text, Latin-1 or a Cyrillic code page as well as UTF-8, has no control bytes but tab and the
+    # line ends; a few strays may be slips in a text, which the decoder or the reader names where they stand.
+    return "binary data" if controls > max(8, len(head) // 100) else ""
+
+
+def _other_format(data: str) -> str:
+    """A hint where the text TOML refused is another format a scene might be written in: JSON or YAML."""
+    text = data.strip()
+    if text.startswith("{"):  # a TOML document cannot begin with a brace
+        return "; it looks like JSON, not TOML: a scene writes key = value, and a table as [name] on a line of its own"
+    if text.startswith("["):
+        try:
+            json.loads(text)
+        except ValueError:
+            return ""
+        return "; it looks like JSON, not TOML: a scene writes key = value, and a table as [name] on a line of its own"
+    first = next((line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")), "")
+    if first.rstrip() == "---" or re.fullmatch(r"[A-Za-z_][\w-]*\s*:(\s.*)?", first.rstrip()):
+        return ("; it looks like YAML (key: value), not TOML: a scene writes key = value, and a table as [name] on a "
+                "line of its own")
+    return ""
 
 
 def guides_without_angle(scene: Scene) -> list[str]:
@@ -591,7 +687,11 @@ _RUSSIAN_KEYS = {"сцен": "scene", "проект": "project", "стойк": "
 def _read_scene(top: Table, source: str) -> Scene:
     refuse_control_characters(top.data, "")
     scene = top.table("scene", None) or Table({}, "scene")
-    title = scene.string("title", Path(source).stem)
+    # A file name of bytes that are not UTF-8 (os.fsdecode's surrogates) titles the scene as a file browser shows it:
+    # a surrogate could be written in no drawing, note or results.json; nor can the title a tab or a line break.
+    stem = Path(source).stem.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+    stem = "".join(" " if unicodedata.category(character) == "Cc" else character for character in stem)
+    title = scene.string("title", stem)
     locale = scene.choice("locale", LOCALES, "en")
     gravity = scene.number("gravity", 9.81, non_negative=True)
     scene.done()

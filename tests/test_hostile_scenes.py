@@ -268,7 +268,7 @@ def test_text_that_is_not_toml(capsys):
 
 
 def test_an_empty_file(capsys):
-    assert_refused(capsys, "", "frame: is required but missing")
+    assert_refused(capsys, "", "scene.toml: is empty")
 
 
 def test_a_10_mb_file_is_refused_before_it_is_read(capsys):

@@ -1,0 +1,156 @@
+"""A hostile user at the command line: the files given as the scene and as --out, and the console it prints on.
+
+Each is answered in one line naming the file and what is wrong with it, exit status 2, no traceback, nothing
+half-written: a picture or a Word document given for the scene, a JSON or YAML scene, Notepad's scene.toml.txt,
+a folder, an empty file, /dev/zero, a loop of links; a console that cannot print the names; a pipe closed early.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+from console import without_progress
+
+from graphplan import scene as scene_module
+from graphplan.cli import main
+
+FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
+PACKAGE_ROOT = FIXTURE.parent.parent
+
+
+def refused(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
+    """The one error line of a command that exits 2, with no traceback."""
+    status = main(argv)
+    err = without_progress(capsys.readouterr().err)
+    assert status == 2, err
+    assert "Traceback" not in err and err.count("\n") == 1 and err.startswith("graphplan: error: "), err
+    return err.removeprefix("graphplan: error: ").rstrip("\n")
+
+
+def command(*argv: str, cwd: Path, env: dict[str, str] | None = None, **options) -> subprocess.CompletedProcess:
+    """``python -m graphplan`` as a user runs it, with this checkout's package first on the path."""
+    environment = {**os.environ, "PYTHONPATH": str(PACKAGE_ROOT), **(env or {})}
+    return subprocess.run([sys.executable, "-m", "graphplan", *argv], cwd=cwd, env=environment, capture_output=True,
+                          timeout=300, check=False, **options)
+
+
+# --- the scene: a file that is not a scene, or not where it was said to be ---------------------------------------
+
+
+def _docx(path: Path) -> None:
+    with zipfile.ZipFile(path, "w") as archive:
+        archive.writestr("word/document.xml", "<w:document/>")
+
+
+@pytest.mark.parametrize(("name", "write", "kind"), [
+    ("drawing.png", lambda path: path.write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR" + bytes(range(256))),
+     "a PNG image"),
+    # Its many zero bytes were read as UTF-16 text: "save it as UTF-8".
+    ("scene.docx", _docx, "a zip archive (a Word .docx"),
+    ("noise.toml", lambda path: path.write_bytes(bytes((7 * index * index + 3) % 256 for index in range(3000))),
+     "binary data"),
+])
+def test_a_file_that_is_not_text_is_told_for_what_it_is(capsys, tmp_path, name, write, kind):
+    path = tmp_path / name
+    write(path)
+    err = refused(capsys, ["check", str(path)])
+    assert err.startswith(f"{path}: is not a text file but {kind}"), err
+    assert "UTF" not in err and "TOML:" not in err
+
+
+@pytest.mark.parametrize(("text", "format_"), [
+    ('{"frame": {"link": 1, "points": {"O": [0, 0]}}}\n', "JSON"),
+    ('[{"kind": "RRR"}]\n', "JSON"),
+    ("frame:\n  link: 1\n  points:\n    O: [0, 0]\n", "YAML"),
+    ("---\nscene:\n  title: ratchet\n", "YAML"),
+])
+def test_a_json_or_yaml_scene_is_told_it_is_not_toml(capsys, tmp_path, text, format_):
+    path = tmp_path / "scene.toml"
+    path.write_text(text, encoding="utf-8")
+    err = refused(capsys, ["check", str(path)])
+    assert err.startswith(f"{path}: is not valid TOML") and f"it looks like {format_}" in err, err
+
+
+def test_a_scene_with_classic_mac_line_ends_is_read(capsys, tmp_path):
+    """A carriage return alone ends each line: TOML refused the first one it met."""
+    path = tmp_path / "mac.toml"
+    path.write_bytes(FIXTURE.read_bytes().replace(b"\r\n", b"\n").replace(b"\n", b"\r"))
+    assert main(["check", str(path)]) == 0
+    assert capsys.readouterr().out.startswith(f"{path}: ok\nstructure: I(1,2)")
+
+
+@pytest.mark.parametrize(("given", "beside"), [
+    ("scene.toml", "scene.toml.txt"),  # Notepad's "Save as" adds .txt
+    ("scene.toml", "Scene.TOML"),
+    ("ratchet", "ratchet.toml"),
+])
+def test_a_missing_scene_names_the_file_it_likely_is(capsys, tmp_path, given, beside):
+    shutil.copy(FIXTURE, tmp_path / beside)
+    err = refused(capsys, ["run", str(tmp_path / given), "--out", str(tmp_path / "out")])
+    assert err == f"{tmp_path / given}: cannot be read: No such file or directory; did you mean " \
+                  f"{str(tmp_path / beside)!r}?"
+    assert sorted(path.name for path in tmp_path.iterdir()) == [beside]
+
+
+@pytest.mark.parametrize(("text", "told"), [("", "is empty"), ("  \n\n", "is empty"),
+                                            ("# my scene\n\n# to do\n", "holds nothing but comments")])
+def test_an_empty_scene_is_told_so_naming_the_file(capsys, tmp_path, text, told):
+    """It said "frame: is required but missing", as of a scene that forgot one table."""
+    path = tmp_path / "scene.toml"
+    path.write_text(text, encoding="utf-8")
+    err = refused(capsys, ["check", str(path)])
+    assert err.startswith(f"{path}: {told}: a scene has a mechanism's tables ([frame], [driver], [[groups]])"), err
+
+
+def test_a_folder_given_as_the_scene_is_refused_naming_a_scene_in_it(capsys, tmp_path):
+    """Windows reads a folder as "Permission denied"; here it was "Is a directory", with nothing more."""
+    shutil.copy(FIXTURE, tmp_path / "ratchet.toml")
+    (tmp_path / "notes.md").write_text("mine", encoding="utf-8")
+    err = refused(capsys, ["check", str(tmp_path)])
+    assert err == f"{tmp_path}: is a folder, not a scene file: give the scene file in it, " \
+                  f"{str(tmp_path / 'ratchet.toml')!r}"
+
+
+def test_a_scene_that_is_a_loop_of_links_is_told_so(capsys, tmp_path):
+    (tmp_path / "a.toml").symlink_to(tmp_path / "b.toml")
+    (tmp_path / "b.toml").symlink_to(tmp_path / "a.toml")
+    err = refused(capsys, ["check", str(tmp_path / "a.toml")])
+    assert err == f"{tmp_path / 'a.toml'}: cannot be read: it is a link that leads round to itself (a loop of links)"
+
+
+def _little_memory() -> None:
+    import resource
+
+    # Should the read go on without end again, it fails here instead of taking the shared machine's memory.
+    resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, 3 * 2**30))
+
+
+def test_an_endless_device_given_as_the_scene_is_refused_at_the_size_limit(tmp_path):
+    """/dev/zero has no size to ask: it was read until the memory ran out."""
+    if not Path("/dev/zero").exists() or sys.platform == "win32":
+        pytest.skip("no /dev/zero here")
+    done = command("check", "/dev/zero", cwd=tmp_path, preexec_fn=_little_memory, text=True)
+    told = (f"graphplan: error: /dev/zero: goes on past {scene_module.MAX_SCENE_BYTES} bytes, the most a scene may "
+            "have (a device or a stream, not a scene file?)\n")
+    assert (done.returncode, done.stderr) == (2, told)
+
+
+def test_a_scene_file_name_that_is_not_utf8_titles_the_run(tmp_path):
+    """Without a title the scene takes its file's name, whose undecodable byte no drawing could hold (a
+    ParseError traceback as the sheets were read back)."""
+    if sys.platform == "win32" or os.fsencode("x\udcff") != b"x\xff":
+        pytest.skip("file names here are not bytes")
+    text = "".join(line for line in FIXTURE.read_text(encoding="utf-8").splitlines(keepends=True)
+                   if not line.startswith("title"))
+    name = b"ratchet\xff.toml"
+    (tmp_path / os.fsdecode(name)).write_text(text, encoding="utf-8")
+    done = command("run", os.fsdecode(name), "--out", "out", "--only", "positions", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr.decode(errors="replace")
+    assert json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["scene"] == "ratchet\ufffd"
