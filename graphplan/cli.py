@@ -9,6 +9,8 @@ from __future__ import annotations
 import argparse
 import contextlib
 import math
+import os
+import re
 import shlex
 import signal
 import sys
@@ -42,6 +44,10 @@ def _listed(text: str) -> list[str]:
     if not items:
         # An empty list would quietly mean "the default" for --format and "nothing but results.json" for --only.
         raise argparse.ArgumentTypeError("names nothing: give one or more, comma-separated")
+    # "svg;png" or "svg png" was told as one unknown name, with a did-you-mean of its first word.
+    if any(re.search(r"[\s;|+]", item) for item in items):
+        commas = ",".join(word for item in items for word in re.split(r"[\s;|+]+", item) if word)
+        raise argparse.ArgumentTypeError(f"separate the names with commas: {commas} (got {text!r})")
     return items
 
 
@@ -90,7 +96,8 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("scene", type=Path, help="the scene file (TOML)")
     new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine")
     new.add_argument("kind", choices=KINDS, help="the kind of mechanism, or a flywheel or rotor without one")
-    new.add_argument("--out", type=Path, default=None,
+    # A string, not a Path: a Path drops the trailing slash that says "a folder" of one not made yet.
+    new.add_argument("--out", default=None,
                      help="the scene file to write, or a folder to write KIND.toml in (default: KIND.toml here)")
     new.add_argument("--locale", choices=LOCALES, default="en",
                      help="the language of its drawings and note (scene.locale; its comments stay English)")
@@ -101,6 +108,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
+    _print_what_the_console_cannot_show_escaped()
     arguments, unknown = _parser().parse_known_args(argv)
     if unknown:
         # argparse hands a command's unknown options up to the top parser, whose usage lists no options at all.
@@ -123,14 +131,34 @@ def main(argv: Sequence[str] | None = None) -> int:
         # The output folder is written whole or not at all, so an interrupted run has nothing to clean up.
         print("graphplan: interrupted", file=sys.stderr)
         return 130
-    except _Terminated:
-        print("graphplan: terminated", file=sys.stderr)
-        return 128 + signal.SIGTERM
+    except _Terminated as ended:
+        print(f"graphplan: {ended.told}", file=sys.stderr)
+        return 128 + ended.number
+    except BrokenPipeError:
+        # The reader of the output went away (| head -1): nothing is left to tell it. Python would print the error
+        # again as it flushes stdout on the way out, so stdout goes nowhere from here.
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 128 + getattr(signal, "SIGPIPE", 13)
+
+
+def _print_what_the_console_cannot_show_escaped() -> None:
+    """A console that cannot print a character (Windows' code page, PYTHONIOENCODING=ascii) shows it as an escape
+    (the structure's →, a Cyrillic file name): it stopped the command with a UnicodeEncodeError."""
+    for stream in (sys.stdout, sys.stderr):
+        if getattr(stream, "errors", None) == "strict" and hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="backslashreplace")
 
 
 class _Terminated(BaseException):
-    """SIGTERM (``timeout``, a job killed) as an exception: Python's default ends the process at once, leaving the
-    output folder's half-written staging folder behind; raised, it unwinds through the writers' clean-up."""
+    """SIGTERM (``timeout``, a job killed) or SIGHUP (the terminal closed) as an exception: Python's default ends
+    the process at once, leaving the output folder's half-written staging folder behind; raised, it unwinds through
+    the writers' clean-up."""
+
+    def __init__(self, number: int) -> None:
+        super().__init__(number)
+        self.number = number
+        self.told = "the terminal was closed" if number == getattr(signal, "SIGHUP", None) else "terminated"
 
 
 @contextlib.contextmanager
@@ -140,13 +168,15 @@ def _terminated_as_interrupted() -> Iterator[None]:
         return
 
     def terminate(number: int, frame: object) -> None:
-        raise _Terminated
+        raise _Terminated(number)
 
-    previous = signal.signal(signal.SIGTERM, terminate)
+    numbers = [signal.SIGTERM] + ([signal.SIGHUP] if hasattr(signal, "SIGHUP") else [])
+    previous = {number: signal.signal(number, terminate) for number in numbers}
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for number, handler in previous.items():
+            signal.signal(number, handler)
 
 
 def _check(path: Path) -> int:
@@ -253,12 +283,13 @@ def _run(arguments: argparse.Namespace) -> int:
     return 0
 
 
-def _new(kind: str, out: Path | None, locale: str = "en") -> int:
+def _new(kind: str, out: str | Path | None, locale: str = "en") -> int:
     from .output import write_file
     from .starters import starter
 
-    target = out if out is not None else Path(f"{kind}.toml")
-    if target.is_dir():  # a folder to put it in, as cp takes one
+    target = Path(out) if out is not None else Path(f"{kind}.toml")
+    # A folder to put it in, as cp takes one; one that ends in a slash is a folder, made if it is not there yet.
+    if target.is_dir() or (isinstance(out, str) and out.endswith(("/", os.sep))):
         target = target / f"{kind}.toml"
     write_file(target, starter(kind, locale), replace=False)
     print(f"wrote {target}")

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import zipfile
@@ -154,3 +155,84 @@ def test_a_scene_file_name_that_is_not_utf8_titles_the_run(tmp_path):
     done = command("run", os.fsdecode(name), "--out", "out", "--only", "positions", cwd=tmp_path)
     assert done.returncode == 0, done.stderr.decode(errors="replace")
     assert json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["scene"] == "ratchet\ufffd"
+
+
+# --- the command line and its console ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("option", "given", "commas"), [
+    ("--format", "svg;png", "svg,png"), ("--format", "svg png", "svg,png"), ("--format", "svg, png;", "svg,png"),
+    ("--only", "positions velocity", "positions,velocity"),
+])
+def test_a_list_given_with_semicolons_or_spaces_is_told_to_take_commas(capsys, tmp_path, option, given, commas):
+    """It was told as one unknown name, with a did-you-mean of its first word: "did you mean 'svg'?"."""
+    with pytest.raises(SystemExit) as ended:
+        main(["run", str(FIXTURE), "--out", str(tmp_path / "out"), option, given])
+    err = capsys.readouterr().err
+    assert ended.value.code == 2
+    assert f"argument {option}: separate the names with commas: {commas} (got {given!r})" in err
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("slash", ["/", os.sep])
+def test_a_new_scene_given_a_folder_not_made_yet_is_written_in_it(capsys, tmp_path, slash):
+    """``--out project/`` wrote a file named project."""
+    out = str(tmp_path / "project") + slash
+    assert main(["new", "crank-rocker", "--out", out]) == 0
+    written = tmp_path / "project" / "crank-rocker.toml"
+    assert f"wrote {written}" in capsys.readouterr().out
+    assert "[driver]" in written.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(("encoding", "name"), [("ascii", "ratchet.toml"), ("cp1252", "кривошип.toml")])
+def test_a_console_that_cannot_print_a_character_shows_it_escaped(tmp_path, encoding, name):
+    """The structure's arrow, or a Cyrillic file name, on a console of another code page: a UnicodeEncodeError."""
+    shutil.copy(FIXTURE, tmp_path / name)
+    done = command("check", name, cwd=tmp_path, env={"PYTHONIOENCODING": encoding})
+    out = done.stdout.decode(encoding)
+    assert done.returncode == 0 and b"Traceback" not in done.stderr, done.stderr.decode(encoding)
+    shown = name.encode(encoding, "backslashreplace").decode(encoding)
+    assert out.startswith(f"{shown}: ok\nstructure: I(1,2) \\u2192 II2(3,4)\n"), out
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGPIPE is a POSIX signal")
+@pytest.mark.parametrize("argv", [["check", str(FIXTURE)], ["new", "crank-rocker", "--out", "new.toml"],
+                                  ["run", str(FIXTURE), "--only", "positions", "--out", "out"]])
+def test_output_piped_to_a_reader_that_has_gone_ends_quietly(tmp_path, argv):
+    """``graphplan check scene.toml | head -1``: a BrokenPipeError traceback once head had its line."""
+    environment = {**os.environ, "PYTHONPATH": str(PACKAGE_ROOT)}
+    process = subprocess.Popen([sys.executable, "-m", "graphplan", *argv], cwd=tmp_path, env=environment,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    process.stdout.close()  # the reader gone before the first line
+    err = without_progress(process.stderr.read().decode())
+    assert (process.wait(timeout=300), err) == (128 + signal.SIGPIPE, "")
+
+
+def test_a_run_whose_terminal_is_closed_ends_as_when_terminated(tmp_path, capsys, monkeypatch):
+    """SIGHUP ended the process at once, leaving the half-written staging folder beside the output."""
+    if not hasattr(signal, "SIGHUP"):
+        pytest.skip("no SIGHUP here")
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions"]) == 0
+    before = {path.name: path.read_bytes() for path in out.iterdir()}
+    # Python's default SIGHUP would end pytest itself should the command line not take the signal.
+    handler_before = signal.signal(signal.SIGHUP, lambda number, frame: None)
+    write_text = Path.write_text
+
+    def hung_up_on_the_way(path, *args, **kwargs):
+        written = write_text(path, *args, **kwargs)
+        if ".partial-" in str(path):
+            os.kill(os.getpid(), signal.SIGHUP)
+        return written
+
+    monkeypatch.setattr(Path, "write_text", hung_up_on_the_way)
+    try:
+        ignoring = signal.getsignal(signal.SIGHUP)
+        status = main(["run", str(FIXTURE), "--out", str(out), "--only", "positions,velocity"])
+        assert signal.getsignal(signal.SIGHUP) == ignoring
+    finally:
+        signal.signal(signal.SIGHUP, handler_before)
+    assert status == 128 + signal.SIGHUP
+    assert "graphplan: the terminal was closed" in capsys.readouterr().err
+    assert sorted(entry.name for entry in tmp_path.iterdir()) == ["out"]
+    assert {path.name: path.read_bytes() for path in out.iterdir()} == before
