@@ -32,12 +32,17 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
     staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
     retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
-    users = _not_written_by_a_run(folder) if folder.is_dir() else []
-    # A file of the user's named as the run names one (their own note.md) would be replaced without a word.
-    theirs = [name for name in users if name in written]
+    users = _not_written_by_a_run(folder, option) if folder.is_dir() else []
+    # A file of the user's named as the run names one (their own note.md) would be replaced without a word; so would
+    # their Note.md on a disk that does not tell capitals apart (Windows', macOS's), where it is the run's note.md.
+    ours = {name.casefold() for name in written}
+    theirs = [name for name in users if name.casefold() in ours]
     if theirs:
         them = "it" if len(theirs) == 1 else "them"
-        raise OutputError(f"{target}: holds {', '.join(theirs)}, which no graphplan run wrote there and this run "
+        named = {name.casefold(): name for name in written}
+        shown = [name if name in named.values() else f"{name} (the run's {named[name.casefold()]} on a disk that does "
+                 f"not tell capitals apart)" for name in theirs]
+        raise OutputError(f"{target}: holds {', '.join(shown)}, which no graphplan run wrote there and this run "
                           f"would replace; move {them} away, or give {option} another folder")
     carried: list[str] = []
     try:
@@ -86,11 +91,16 @@ def check_folder(target: Path, option: str = "--out") -> Path:
     """
     target = Path(target)
     here = Path.cwd().resolve()
-    if target.resolve() == here or target.resolve() in here.parents:
+    try:
+        resolved = target.resolve()
+    except (RuntimeError, OSError):  # Python 3.11 tells a loop of links as a RuntimeError, 3.13 as an OSError
+        raise OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give {option} "
+                          "another folder") from None
+    if resolved == here or resolved in here.parents:
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
                           f"give {option} a folder of its own")
     # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
-    folder = target.resolve() if target.is_symlink() else target
+    folder = resolved if target.is_symlink() else target
     for above in folder.parents:
         if above.exists():
             if not above.is_dir():
@@ -98,13 +108,29 @@ def check_folder(target: Path, option: str = "--out") -> Path:
             break
     if folder.exists() and not folder.is_dir():
         raise OutputError(f"{target}: exists and is not a folder")
+    if folder.is_dir() and os.path.ismount(folder):
+        # The folder is replaced by renaming a new one into its place, which a disk's mount point refuses ("Device or
+        # resource busy") once the run has analysed and drawn everything.
+        raise OutputError(f"{target}: is where a disk is mounted, which a run cannot replace; give {option} a folder "
+                          "in it")
     return folder
 
 
-def _not_written_by_a_run(folder: Path) -> list[str]:
-    """The entries of ``folder`` no run wrote (by its :data:`WRITTEN` list): the user's own."""
+def _not_written_by_a_run(folder: Path, option: str = "--out") -> list[str]:
+    """The entries of ``folder`` no run wrote (by its :data:`WRITTEN` list): the user's own.
+
+    Only a name of an entry of ``folder`` counts: a list edited to name ``../thesis.docx`` or an absolute path
+    takes nothing outside it. A list that is not a run's text is refused, not guessed at.
+    """
     record = folder / WRITTEN
-    ours = set(record.read_text(encoding="utf-8").splitlines()) if record.is_file() else set()
+    ours: set[str] = set()
+    if record.is_file():
+        try:
+            ours = set(record.read_text(encoding="utf-8").splitlines())
+        except (UnicodeDecodeError, OSError) as error:
+            why = "not text" if isinstance(error, UnicodeDecodeError) else error.strerror or str(error)
+            raise OutputError(f"{record}: the list of the files runs wrote there cannot be read ({why}); give "
+                              f"{option} another folder, or delete the list and the runs' files in {folder}") from None
     return sorted(entry.name for entry in folder.iterdir() if entry.name != WRITTEN and entry.name not in ours)
 
 
@@ -115,7 +141,8 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
     and stays as it was.
     """
     target = Path(target)
-    if not replace and target.exists():
+    # A link counts even where it leads nowhere (to itself, or to a file gone): it would be replaced by the file.
+    if not replace and (target.exists() or target.is_symlink()):
         raise OutputError(f"{target}: exists already; give another name with --out")
     staging = target.parent / f".{target.name}.partial-{os.getpid()}"
     try:

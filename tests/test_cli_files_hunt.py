@@ -21,6 +21,7 @@ from console import without_progress
 
 from graphplan import scene as scene_module
 from graphplan.cli import main
+from graphplan.output import WRITTEN
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 PACKAGE_ROOT = FIXTURE.parent.parent
@@ -236,3 +237,66 @@ def test_a_run_whose_terminal_is_closed_ends_as_when_terminated(tmp_path, capsys
     assert "graphplan: the terminal was closed" in capsys.readouterr().err
     assert sorted(entry.name for entry in tmp_path.iterdir()) == ["out"]
     assert {path.name: path.read_bytes() for path in out.iterdir()} == before
+
+
+# --- the output folder ---------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("under", ["", "sub"])
+def test_an_output_folder_through_a_loop_of_links_is_refused_before_the_run(capsys, tmp_path, under):
+    """pathlib's RuntimeError "Symlink loop" came out as a traceback."""
+    (tmp_path / "a").symlink_to(tmp_path / "b")
+    (tmp_path / "b").symlink_to(tmp_path / "a")
+    out = tmp_path / "a" / under if under else tmp_path / "a"
+    err = refused(capsys, ["run", str(FIXTURE), "--out", str(out), "--only", "positions"])
+    assert err == f"{out}: leads through a link that leads round to itself (a loop of links); give --out another folder"
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["a", "b"]
+
+
+def test_a_new_scene_is_not_written_over_a_link_that_leads_nowhere(capsys, tmp_path):
+    """A link to itself does not exist as a file: ``new --out`` put a file in its place."""
+    link = tmp_path / "scene.toml"
+    link.symlink_to(link)
+    err = refused(capsys, ["new", "crank-rocker", "--out", str(link)])
+    assert err == f"{link}: exists already; give another name with --out"
+    assert link.is_symlink() and os.readlink(link) == str(link)
+
+
+def test_a_user_file_named_as_the_run_s_but_for_capitals_is_refused(capsys, tmp_path):
+    """On Windows' and macOS's disks Note.md is the run's note.md: the user's note was replaced by the run's, or
+    theirs put back over it as the folder was swapped."""
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "note"]) == 0
+    capsys.readouterr()
+    (out / "Note.md").write_text("my own note", encoding="utf-8")
+    before = {path.name: path.read_bytes() for path in out.iterdir()}
+    err = refused(capsys, ["run", str(FIXTURE), "--out", str(out), "--only", "note"])
+    assert err == f"{out}: holds Note.md (the run's note.md on a disk that does not tell capitals apart), which no " \
+                  "graphplan run wrote there and this run would replace; move it away, or give --out another folder"
+    assert {path.name: path.read_bytes() for path in out.iterdir()} == before
+
+
+def test_a_spoilt_list_of_what_runs_wrote_is_refused_naming_it(capsys, tmp_path):
+    """A list of bytes that are not text (overwritten by a tool, a disk's fault) was a UnicodeDecodeError traceback."""
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "thesis.docx").write_bytes(b"PK\x03\x04 mine")
+    (out / WRITTEN).write_bytes(b"\x89PNG\r\n\x1a\n\xff\xfe")
+    err = refused(capsys, ["run", str(FIXTURE), "--out", str(out), "--only", "positions"])
+    assert err == f"{out / WRITTEN}: the list of the files runs wrote there cannot be read (not text); give --out " \
+                  f"another folder, or delete the list and the runs' files in {out}"
+    assert sorted(path.name for path in out.iterdir()) == [WRITTEN, "thesis.docx"]
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["out"]
+
+
+def test_a_mount_point_given_as_the_output_is_refused_before_the_run(capsys, tmp_path, monkeypatch):
+    """The folder is replaced by a rename, which a mount point refuses ("Device or resource busy") once everything
+    has been analysed and drawn."""
+    out = tmp_path / "usb"
+    out.mkdir()
+    monkeypatch.setattr(os.path, "ismount", lambda path: Path(path) == out)
+    analysed = []
+    monkeypatch.setattr("graphplan.analysis.analyse", lambda *args, **kwargs: analysed.append(args))
+    err = refused(capsys, ["run", str(FIXTURE), "--out", str(out), "--only", "positions"])
+    assert err == f"{out}: is where a disk is mounted, which a run cannot replace; give --out a folder in it"
+    assert analysed == [] and list(out.iterdir()) == []
