@@ -288,8 +288,11 @@ def _new(kind: str, out: str | Path | None, locale: str = "en") -> int:
     from .starters import starter
 
     target = Path(out) if out is not None else Path(f"{kind}.toml")
+    is_folder = False
     # A folder to put it in, as cp takes one; one that ends in a slash is a folder, made if it is not there yet.
-    if target.is_dir() or (isinstance(out, str) and out.endswith(("/", os.sep))):
+    with contextlib.suppress(OSError):  # a name too long for the disk: write_file tells it
+        is_folder = target.is_dir()
+    if is_folder or (isinstance(out, str) and out.endswith(("/", os.sep))):
         target = target / f"{kind}.toml"
     write_file(target, starter(kind, locale), replace=False)
     print(f"wrote {target}")

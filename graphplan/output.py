@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
 import stat
@@ -99,6 +100,13 @@ def check_folder(target: Path, option: str = "--out") -> Path:
     if resolved == here or resolved in here.parents:
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
                           f"give {option} a folder of its own")
+    try:
+        return _folder_to_replace(target, resolved, option)
+    except OSError as error:  # a name too long for the disk, a folder that may not be looked into
+        raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+
+
+def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
     # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
     folder = resolved if target.is_symlink() else target
     for above in folder.parents:
@@ -141,16 +149,17 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
     and stays as it was.
     """
     target = Path(target)
-    # A link counts even where it leads nowhere (to itself, or to a file gone): it would be replaced by the file.
-    if not replace and (target.exists() or target.is_symlink()):
-        raise OutputError(f"{target}: exists already; give another name with --out")
     staging = target.parent / f".{target.name}.partial-{os.getpid()}"
     try:
+        # A link counts even where it leads nowhere (to itself, or to a file gone): it would be replaced by the file.
+        if not replace and (target.exists() or target.is_symlink()):
+            raise OutputError(f"{target}: exists already; give another name with --out")
         target.parent.mkdir(parents=True, exist_ok=True)
         staging.write_text(content, encoding="utf-8", newline="\n")
         staging.replace(target)
     except BaseException as error:
-        staging.unlink(missing_ok=True)
+        with contextlib.suppress(OSError):  # a name too long for the disk cannot have been written either
+            staging.unlink(missing_ok=True)
         if not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None

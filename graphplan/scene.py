@@ -371,9 +371,9 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
         raise SceneError("", "load takes the path of a scene file; for a scene given as TOML text use "
                              "graphplan.load_text(text)")
     path = Path(os.fsdecode(path)).expanduser()  # a notebook has no shell to expand ~
-    if path.is_dir():  # Windows reads a folder as "Permission denied", which sends the user to their rights
-        raise SceneError(str(path), f"is a folder, not a scene file{_scenes_in(path)}")
     try:
+        if path.is_dir():  # Windows reads a folder as "Permission denied", which sends the user to their rights
+            raise SceneError(str(path), f"is a folder, not a scene file{_scenes_in(path)}")
         size = path.stat().st_size
         if size > MAX_SCENE_BYTES:
             raise SceneError(str(path), f"is {size} bytes; a scene may have at most {MAX_SCENE_BYTES}")

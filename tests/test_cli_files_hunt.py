@@ -300,3 +300,26 @@ def test_a_mount_point_given_as_the_output_is_refused_before_the_run(capsys, tmp
     err = refused(capsys, ["run", str(FIXTURE), "--out", str(out), "--only", "positions"])
     assert err == f"{out}: is where a disk is mounted, which a run cannot replace; give --out a folder in it"
     assert analysed == [] and list(out.iterdir()) == []
+
+
+@pytest.mark.parametrize("argv", [["check", "{long}.toml"], ["run", str(FIXTURE), "--out", "{long}"],
+                                  ["run", str(FIXTURE), "--out", "{long}/sub"], ["new", "crank-rocker", "--out", "{long}"],
+                                  ["new", "crank-rocker", "--out", "{long}/"]])
+def test_a_name_too_long_for_the_disk_is_told_in_one_line(capsys, tmp_path, argv):
+    """Looking whether it was a folder raised "File name too long" as a traceback (pathlib asks without a guard)."""
+    long = str(tmp_path / ("x" * 300))
+    err = refused(capsys, [word.format(long=long) for word in argv])
+    assert err.endswith(("cannot be read: File name too long", "cannot be written (File name too long)")), err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_name_that_is_not_utf8_is_printed_on_a_strict_utf8_console(tmp_path):
+    """PYTHONIOENCODING=utf-8 prints no surrogate os.fsdecode makes of an undecodable byte: a UnicodeEncodeError
+    as the run said what it wrote."""
+    if sys.platform == "win32" or os.fsencode("x\udcff") != b"x\xff":
+        pytest.skip("file names here are not bytes")
+    out = os.fsdecode(b"out\xfe")
+    done = command("run", str(FIXTURE), "--out", out, "--only", "positions", cwd=tmp_path,
+                   env={"PYTHONIOENCODING": "utf-8"})
+    assert done.returncode == 0 and b"Traceback" not in done.stderr, done.stderr.decode(errors="replace")
+    assert done.stdout.decode("utf-8").endswith("wrote out\\udcfe/results.json\n")
