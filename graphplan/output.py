@@ -102,6 +102,8 @@ def check_folder(target: Path, option: str = "--out") -> Path:
                           f"give {option} a folder of its own")
     try:
         return _folder_to_replace(target, resolved, option)
+    except OutputError:
+        raise
     except OSError as error:  # a name too long for the disk, a folder that may not be looked into
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
 
@@ -160,7 +162,7 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
     except BaseException as error:
         with contextlib.suppress(OSError):  # a name too long for the disk cannot have been written either
             staging.unlink(missing_ok=True)
-        if not isinstance(error, OSError):
+        if isinstance(error, OutputError) or not isinstance(error, OSError):
             raise
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
     return target
