@@ -115,6 +115,12 @@ def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
         if above.exists():
             if not above.is_dir():
                 raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
+            # The new folder is made, and renamed into place, in the folder above it: one that may not be written in
+            # (a read-only disk, another user's folder) refused the rename only once everything was drawn. Windows
+            # is not asked: its read-only mark on a folder does not stop writing in it.
+            if os.name == "posix" and not os.access(above, os.W_OK | os.X_OK):
+                raise OutputError(f"{target}: {above} may not be written in (a read-only disk, or another user's "
+                                  f"folder); give {option} another folder")
             break
     if folder.exists() and not folder.is_dir():
         raise OutputError(f"{target}: exists and is not a folder")

@@ -323,3 +323,21 @@ def test_a_name_that_is_not_utf8_is_printed_on_a_strict_utf8_console(tmp_path):
                    env={"PYTHONIOENCODING": "utf-8"})
     assert done.returncode == 0 and b"Traceback" not in done.stderr, done.stderr.decode(errors="replace")
     assert done.stdout.decode("utf-8").endswith("wrote out\\udcfe/results.json\n")
+
+
+@pytest.mark.skipif(os.name != "posix", reason="asked of POSIX disks alone")
+@pytest.mark.parametrize("given", ["out", "out/deeper"])
+def test_an_output_in_a_folder_that_may_not_be_written_in_is_refused_before_the_run(capsys, tmp_path, monkeypatch,
+                                                                                       given):
+    """A read-only disk refused the staging folder only after the analysis and the drawings (and root, who runs the
+    tests here, may write anywhere: the disk's answer is asked through os.access)."""
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    asked = os.access
+    monkeypatch.setattr(os, "access", lambda path, mode, **kw: Path(path) != locked and asked(path, mode, **kw))
+    analysed = []
+    monkeypatch.setattr("graphplan.analysis.analyse", lambda *args, **kwargs: analysed.append(args))
+    err = refused(capsys, ["run", str(FIXTURE), "--out", str(locked / given), "--only", "positions"])
+    assert err == f"{locked / given}: {locked} may not be written in (a read-only disk, or another user's folder); " \
+                  "give --out another folder"
+    assert analysed == [] and list(locked.iterdir()) == []
