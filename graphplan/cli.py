@@ -271,8 +271,10 @@ def _run(arguments: argparse.Namespace) -> int:
     progress = Progress()
     path: Path = arguments.scene
     scene = load(path)
-    done = run(scene, arguments.out if arguments.out is not None else Path("output") / path.stem, arguments.only,
-               arguments.formats or ("svg",), arguments.figures, arguments.locale, arguments.sheet, say=progress.say)
+    # --out=~/report reaches us with its ~ (the shell expands none after an =): a folder named ~ was written here.
+    out = arguments.out.expanduser() if arguments.out is not None else Path("output") / path.stem
+    done = run(scene, out, arguments.only, arguments.formats or ("svg",), arguments.figures, arguments.locale,
+               arguments.sheet, say=progress.say)
     print(f"{done.scene.title}")
     if done.analysis is not None:
         print(f"structure: {done.analysis.mechanism.structure}")
@@ -287,7 +289,7 @@ def _new(kind: str, out: str | Path | None, locale: str = "en") -> int:
     from .output import write_file
     from .starters import starter
 
-    target = Path(out) if out is not None else Path(f"{kind}.toml")
+    target = Path(out).expanduser() if out is not None else Path(f"{kind}.toml")
     is_folder = False
     # A folder to put it in, as cp takes one; one that ends in a slash is a folder, made if it is not there yet.
     with contextlib.suppress(OSError):  # a name too long for the disk: write_file tells it

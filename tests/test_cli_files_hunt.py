@@ -341,3 +341,18 @@ def test_an_output_in_a_folder_that_may_not_be_written_in_is_refused_before_the_
     assert err == f"{locked / given}: {locked} may not be written in (a read-only disk, or another user's folder); " \
                   "give --out another folder"
     assert analysed == [] and list(locked.iterdir()) == []
+
+
+@pytest.mark.parametrize("argv", [["run", str(FIXTURE), "--out=~/report", "--only", "positions"],
+                                  ["new", "crank-rocker", "--out=~/report/"]])
+def test_an_output_given_from_the_home_folder_after_an_equals_sign_goes_there(capsys, tmp_path, monkeypatch, argv):
+    """The shell expands no ~ after --out=: a folder named ~ was made in the folder the command ran in."""
+    home = tmp_path / "home"
+    home.mkdir()
+    monkeypatch.setenv("HOME", str(home))
+    monkeypatch.setenv("USERPROFILE", str(home))
+    monkeypatch.chdir(tmp_path)
+    assert main(argv) == 0
+    assert f"wrote {home / 'report'}" in capsys.readouterr().out
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["home"]
+    assert (home / "report").is_dir()
