@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import shutil
 import stat
@@ -91,13 +92,21 @@ def check_folder(target: Path, option: str = "--out") -> Path:
         for the folder the command runs in or one holding it, a file (or a path through one).
     """
     target = Path(target)
-    here = Path.cwd().resolve()
+    try:
+        here = Path.cwd().resolve()
+    except OSError:  # the folder the command runs in deleted under it (a terminal left in a folder removed)
+        if not target.is_absolute():
+            raise OutputError(f"{target}: is a path from the folder the command runs in, which is gone (deleted or "
+                              f"moved); give {option} a full path, or run the command in another folder") from None
+        here = None
     try:
         resolved = target.resolve()
-    except (RuntimeError, OSError):  # Python 3.11 tells a loop of links as a RuntimeError, 3.13 as an OSError
-        raise OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give {option} "
-                          "another folder") from None
-    if resolved == here or resolved in here.parents:
+    except (RuntimeError, OSError) as error:  # Python 3.11 tells a loop of links as a RuntimeError, 3.13 as an OSError
+        if isinstance(error, RuntimeError) or error.errno == errno.ELOOP:
+            raise OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give "
+                              f"{option} another folder") from None
+        raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+    if here is not None and (resolved == here or resolved in here.parents):
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
                           f"give {option} a folder of its own")
     try:

@@ -356,3 +356,18 @@ def test_an_output_given_from_the_home_folder_after_an_equals_sign_goes_there(ca
     assert f"wrote {home / 'report'}" in capsys.readouterr().out
     assert sorted(path.name for path in tmp_path.iterdir()) == ["home"]
     assert (home / "report").is_dir()
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="Windows removes no folder a process runs in")
+def test_a_run_in_a_folder_deleted_under_it_is_told_so(capsys, tmp_path, monkeypatch):
+    """A terminal left in a folder that was removed: os.getcwd's FileNotFoundError came out as a traceback, for
+    an absolute --out as well as the default output/<scene>."""
+    gone = tmp_path / "gone"
+    gone.mkdir()
+    monkeypatch.chdir(gone)
+    gone.rmdir()
+    err = refused(capsys, ["run", str(FIXTURE), "--only", "positions"])
+    assert err == "output/ratchet_crank_rocker: is a path from the folder the command runs in, which is gone " \
+                  "(deleted or moved); give --out a full path, or run the command in another folder"
+    assert main(["run", str(FIXTURE), "--only", "positions", "--out", str(tmp_path / "out")]) == 0
+    assert sorted(path.name for path in (tmp_path / "out").iterdir()) == [WRITTEN, "positions.svg", "results.json"]
