@@ -395,8 +395,9 @@ def load(path: str | Path | Mapping[str, Any]) -> Scene:
 
 def _near_names(path: Path) -> str:
     """The files beside a missing ``path`` that are it but for capitals or a suffix: Notepad's ``scene.toml.txt``,
-    a ``Scene.TOML`` from Windows, the ``.toml`` left off."""
-    wanted = path.name.casefold()
+    a ``Scene.TOML`` from Windows, the ``.toml`` left off; or but for the quotes Windows' cmd passes on as typed
+    (``'scene.toml'``) and a space copied with the name."""
+    wanted = path.name.casefold().strip().strip("'\"").strip()
     try:
         entries = [entry.name for entry in path.parent.iterdir() if entry.is_file()]
     except OSError:

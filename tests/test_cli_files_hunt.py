@@ -92,6 +92,8 @@ def test_a_scene_with_classic_mac_line_ends_is_read(capsys, tmp_path):
     ("scene.toml", "scene.toml.txt"),  # Notepad's "Save as" adds .txt
     ("scene.toml", "Scene.TOML"),
     ("ratchet", "ratchet.toml"),
+    ("'ratchet.toml'", "ratchet.toml"),  # Windows' cmd passes single quotes on
+    ("ratchet.toml ", "ratchet.toml"),
 ])
 def test_a_missing_scene_names_the_file_it_likely_is(capsys, tmp_path, given, beside):
     shutil.copy(FIXTURE, tmp_path / beside)
