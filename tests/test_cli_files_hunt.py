@@ -373,3 +373,17 @@ def test_a_run_in_a_folder_deleted_under_it_is_told_so(capsys, tmp_path, monkeyp
                   "(deleted or moved); give --out a full path, or run the command in another folder"
     assert main(["run", str(FIXTURE), "--only", "positions", "--out", str(tmp_path / "out")]) == 0
     assert sorted(path.name for path in (tmp_path / "out").iterdir()) == [WRITTEN, "positions.svg", "results.json"]
+
+
+def test_a_list_of_what_runs_wrote_that_names_paths_outside_the_folder_touches_nothing_there(capsys, tmp_path):
+    """A hand-edited list may name anything: only the folder's own entries are ever taken for a run's."""
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions"]) == 0
+    outside = tmp_path / "outside.txt"
+    outside.write_text("mine", encoding="utf-8")
+    listed = (out / WRITTEN).read_text(encoding="utf-8")
+    (out / WRITTEN).write_text(listed + f"../outside.txt\n{outside}\n{tmp_path}\n..\n.\n", encoding="utf-8")
+    (out / "draft.md").write_text("mine too", encoding="utf-8")
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions"]) == 0
+    assert outside.read_text(encoding="utf-8") == "mine" and (out / "draft.md").read_text(encoding="utf-8") == "mine too"
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["out", "outside.txt"]
