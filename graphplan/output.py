@@ -106,6 +106,13 @@ def check_folder(target: Path, option: str = "--out") -> Path:
             raise OutputError(f"{target}: leads through a link that leads round to itself (a loop of links); give "
                               f"{option} another folder") from None
         raise OutputError(f"{target}: cannot be written ({error.strerror or error})") from None
+    try:
+        home = Path.home().resolve()
+    except (RuntimeError, OSError):  # no home to be told of
+        home = None
+    if resolved == home:  # --out ~ meant "put it in my home folder": the run would swap it for a new one
+        raise OutputError(f"{target}: is your home folder, which a run cannot replace; give {option} a folder of its "
+                          "own")
     if here is not None and (resolved == here or resolved in here.parents):
         raise OutputError(f"{target}: is the folder the command runs in (or holds it), which a run cannot replace; "
                           f"give {option} a folder of its own")

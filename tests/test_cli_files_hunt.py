@@ -387,3 +387,17 @@ def test_a_list_of_what_runs_wrote_that_names_paths_outside_the_folder_touches_n
     assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions"]) == 0
     assert outside.read_text(encoding="utf-8") == "mine" and (out / "draft.md").read_text(encoding="utf-8") == "mine too"
     assert sorted(path.name for path in tmp_path.iterdir()) == ["out", "outside.txt"]
+
+
+def test_the_home_folder_given_as_the_output_is_refused(capsys, tmp_path, monkeypatch):
+    """``--out ~`` meant "put it in my home": the run renamed the home folder away and a new one into its place."""
+    home = tmp_path / "home"
+    home.mkdir()
+    (home / "thesis.docx").write_bytes(b"mine")
+    monkeypatch.setenv("HOME", str(home))
+    monkeypatch.setenv("USERPROFILE", str(home))
+    monkeypatch.chdir(tmp_path)  # where a ~ taken for a name would have been written
+    inode = home.stat().st_ino
+    err = refused(capsys, ["run", str(FIXTURE), "--only", "positions", "--out", "~"])
+    assert err == f"{home}: is your home folder, which a run cannot replace; give --out a folder of its own"
+    assert home.stat().st_ino == inode and sorted(path.name for path in home.iterdir()) == ["thesis.docx"]
