@@ -178,6 +178,10 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
         # A link counts even where it leads nowhere (to itself, or to a file gone): it would be replaced by the file.
         if not replace and (target.exists() or target.is_symlink()):
             raise OutputError(f"{target}: exists already; give another name with --out")
+        # A file where a folder on the way should be was told as mkdir's "File exists", naming neither.
+        above = next((folder for folder in target.parents if folder.exists()), None)
+        if above is not None and not above.is_dir():
+            raise OutputError(f"{target}: {above} is not a folder, so the file cannot go in it")
         target.parent.mkdir(parents=True, exist_ok=True)
         staging.write_text(content, encoding="utf-8", newline="\n")
         staging.replace(target)

@@ -401,3 +401,14 @@ def test_the_home_folder_given_as_the_output_is_refused(capsys, tmp_path, monkey
     err = refused(capsys, ["run", str(FIXTURE), "--only", "positions", "--out", "~"])
     assert err == f"{home}: is your home folder, which a run cannot replace; give --out a folder of its own"
     assert home.stat().st_ino == inode and sorted(path.name for path in home.iterdir()) == ["thesis.docx"]
+
+
+@pytest.mark.parametrize("under", ["", "sub/"])
+def test_a_new_scene_under_a_file_names_the_file(capsys, tmp_path, under):
+    """``new --out afile/`` said "cannot be written (File exists)": mkdir's words for a file in the folder's place."""
+    blocking = tmp_path / "afile"
+    blocking.write_text("keep me", encoding="utf-8")
+    out = f"{blocking}/{under}"
+    err = refused(capsys, ["new", "crank-rocker", "--out", out])
+    assert err == f"{Path(out) / 'crank-rocker.toml'}: {blocking} is not a folder, so the file cannot go in it"
+    assert blocking.read_text(encoding="utf-8") == "keep me" and sorted(tmp_path.iterdir()) == [blocking]
