@@ -405,6 +405,11 @@ def _near_names(path: Path) -> str:
     near = sorted(name for name in entries
                   if name.casefold() == wanted or name.casefold().startswith(wanted + ".")
                   or Path(name.casefold()).stem == wanted or name.casefold().removesuffix(".txt") == wanted)
+    if not near:  # a slip of a letter (rachet.toml), or the name's beginning alone (scotch for scotch_yoke.toml)
+        scenes = {name.casefold(): name for name in entries if name.casefold().endswith(".toml")}
+        near = [scenes[name] for name in difflib.get_close_matches(wanted, scenes, n=3, cutoff=0.85)]
+        stem = wanted.removesuffix(".toml")
+        near = near or sorted(name for key, name in scenes.items() if len(stem) >= 3 and key.startswith(stem))
     if not near:
         return ""
     shown = " or ".join(repr(str(path.parent / name)) for name in near[:3])

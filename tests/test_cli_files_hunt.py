@@ -94,6 +94,8 @@ def test_a_scene_with_classic_mac_line_ends_is_read(capsys, tmp_path):
     ("ratchet", "ratchet.toml"),
     ("'ratchet.toml'", "ratchet.toml"),  # Windows' cmd passes single quotes on
     ("ratchet.toml ", "ratchet.toml"),
+    ("rachet_crank_rocker.toml", "ratchet_crank_rocker.toml"),  # a slip of a letter
+    ("ratchet.toml", "ratchet_crank_rocker.toml"),  # the name's beginning alone
 ])
 def test_a_missing_scene_names_the_file_it_likely_is(capsys, tmp_path, given, beside):
     shutil.copy(FIXTURE, tmp_path / beside)
