@@ -132,7 +132,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("graphplan: interrupted", file=sys.stderr)
         return 130
     except _Terminated as ended:
-        print(f"graphplan: {ended.told}", file=sys.stderr)
+        with contextlib.suppress(OSError):  # a terminal closed takes stderr with it
+            print(f"graphplan: {ended.told}", file=sys.stderr)
         return 128 + ended.number
     except BrokenPipeError:
         # The reader of the output went away (| head -1): nothing is left to tell it. Python would print the error
