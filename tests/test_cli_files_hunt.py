@@ -414,3 +414,32 @@ def test_a_new_scene_under_a_file_names_the_file(capsys, tmp_path, under):
     err = refused(capsys, ["new", "crank-rocker", "--out", out])
     assert err == f"{Path(out) / 'crank-rocker.toml'}: {blocking} is not a folder, so the file cannot go in it"
     assert blocking.read_text(encoding="utf-8") == "keep me" and sorted(tmp_path.iterdir()) == [blocking]
+
+
+class _GoneTerminal:
+    """stderr of a terminal closed: every write fails as a tty hung up does."""
+
+    def write(self, text: str) -> int:
+        raise OSError(5, "Input/output error")
+
+    def flush(self) -> None:
+        raise OSError(5, "Input/output error")
+
+
+def test_a_run_whose_terminal_is_closed_with_its_stderr_exits_with_sighup_s_status(tmp_path, monkeypatch):
+    """The line saying so could not be written either: its EIO came out as a traceback, with status 1."""
+    if not hasattr(signal, "SIGHUP"):
+        pytest.skip("no SIGHUP here")
+
+    def hung_up(*args, **kwargs):
+        os.kill(os.getpid(), signal.SIGHUP)
+
+    monkeypatch.setattr("graphplan.analysis.analyse", hung_up)
+    monkeypatch.setattr(sys, "stderr", _GoneTerminal())
+    handler_before = signal.signal(signal.SIGHUP, lambda number, frame: None)  # pytest's own, should it get through
+    try:
+        status = main(["run", str(FIXTURE), "--out", str(tmp_path / "out"), "--only", "positions"])
+    finally:
+        signal.signal(signal.SIGHUP, handler_before)
+    assert status == 128 + signal.SIGHUP
+    assert list(tmp_path.iterdir()) == []
