@@ -127,6 +127,7 @@ def check_folder(target: Path, option: str = "--out") -> Path:
 def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
     # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
     folder = resolved if target.is_symlink() else target
+    _refuse_a_link_to_nothing_on_the_way(target, folder, option)
     for above in folder.parents:
         if above.exists():
             if not above.is_dir():
@@ -146,6 +147,15 @@ def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
         raise OutputError(f"{target}: is where a disk is mounted, which a run cannot replace; give {option} a folder "
                           "in it")
     return folder
+
+
+def _refuse_a_link_to_nothing_on_the_way(target: Path, path: Path, option: str) -> None:
+    """A folder on the way to ``path`` that is a link to nothing (its folder moved or not made yet): mkdir takes it
+    for a file in the way, "File exists", once everything is drawn."""
+    for above in path.parents:
+        if above.is_symlink() and not above.exists():
+            raise OutputError(f"{target}: {above} is a link to {os.readlink(above)}, which is not there; make that "
+                              f"folder, or give {option} another")
 
 
 def _not_written_by_a_run(folder: Path, option: str = "--out") -> list[str]:
@@ -179,6 +189,7 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
         if not replace and (target.exists() or target.is_symlink()):
             raise OutputError(f"{target}: exists already; give another name with --out")
         # A file where a folder on the way should be was told as mkdir's "File exists", naming neither.
+        _refuse_a_link_to_nothing_on_the_way(target, target, "--out")
         above = next((folder for folder in target.parents if folder.exists()), None)
         if above is not None and not above.is_dir():
             raise OutputError(f"{target}: {above} is not a folder, so the file cannot go in it")

@@ -443,3 +443,19 @@ def test_a_run_whose_terminal_is_closed_with_its_stderr_exits_with_sighup_s_stat
         signal.signal(signal.SIGHUP, handler_before)
     assert status == 128 + signal.SIGHUP
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(("argv", "told"), [
+    (["run", str(FIXTURE), "--only", "positions", "--out", "{link}/sub"], "{link}/sub"),
+    (["new", "crank-rocker", "--out", "{link}/sub/"], "{link}/sub/crank-rocker.toml"),
+])
+def test_a_link_to_nothing_on_the_way_to_the_output_is_named(capsys, tmp_path, monkeypatch, argv, told):
+    """mkdir took the link for a file in the way: "File exists", after the analysis and the drawings."""
+    link = tmp_path / "results"
+    link.symlink_to(tmp_path / "moved")
+    analysed = []
+    monkeypatch.setattr("graphplan.analysis.analyse", lambda *args, **kwargs: analysed.append(args))
+    err = refused(capsys, [word.format(link=link) for word in argv])
+    assert err == f"{told.format(link=link)}: {link} is a link to {tmp_path / 'moved'}, which is not there; make " \
+                  "that folder, or give --out another"
+    assert analysed == [] and sorted(path.name for path in tmp_path.iterdir()) == ["results"]
