@@ -123,8 +123,10 @@ def layout(plan: PositionsPlan) -> list[Layer]:
         swing_labels += labels_of
     drawn = every + bold + frame + paths + dimension
     if plan.mechanism.driver.kind == "crank":
-        # Round the crank pin's circle: set outside it, one in every few where they would run together.
-        numbers, number_leaders = _numbers_round_the_circle(plan, paper, obstacles_of(bold + dimension))
+        # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
+        # the frame's pivots too: round a crank drawn a few millimetres long they fell on its pivot's triangle.
+        numbers, number_leaders = _numbers_round_the_circle(
+            plan, paper, obstacles_of(bold + dimension + frame_pivots(plan.mechanism, paper)))
         anchors = _point_anchors(plan, paper) + _extreme_anchors(plan, paper, names=False)
     else:
         numbers, number_leaders = [], []
