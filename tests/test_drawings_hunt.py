@@ -7,12 +7,18 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import matplotlib
+import pytest
+from fontTools.ttLib import TTFont
+
 from graphplan.analysis import analyse
+from graphplan.locale import strings
 from graphplan.render import positions
 from graphplan.render.drawings import positions_plan
 from graphplan.render.labels import obstacles_of, text_box
 from graphplan.render.linkage import frame_pivots
-from graphplan.render.primitives import Text
+from graphplan.render.primitives import FONT_SIZE_PER_CAP, Polyline, Text, boxed_width, is_wide
+from graphplan.render.title_block import TitleBlockFields, labels, scale_text, title_block
 from graphplan.scene import loads
 
 RATCHET = Path("fixtures/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
@@ -34,3 +40,72 @@ def test_a_crank_drawn_a_millimetre_long_keeps_its_position_numbers_off_its_pivo
     pivot = obstacles_of(frame_pivots(plan.mechanism, lambda r: (r.real * paper, r.imag * paper)))
     on_pivot = [number.text for number in numbers if any(text_box(number).intersects(shape) for shape in pivot)]
     assert on_pivot == []
+
+
+def _dejavu(weight: str) -> TTFont:
+    """DejaVu Sans as matplotlib ships it: the font the drawings name first, wherever they are measured."""
+    name = "DejaVuSans-Bold.ttf" if weight == "bold" else "DejaVuSans.ttf"
+    return TTFont(Path(matplotlib.get_data_path()) / "fonts" / "ttf" / name)
+
+
+def _advance(font: TTFont, text: str) -> float:
+    """How wide ``text`` is set in ``font``, in em: the sum of its glyphs' advances."""
+    glyphs, metrics, unit = font.getBestCmap(), font["hmtx"], font["head"].unitsPerEm
+    return sum(metrics[glyphs[ord(character)]][0] / unit for character in text if ord(character) in glyphs)
+
+
+def _letters_beyond_ascii() -> list[str]:
+    """Every character beyond ASCII that the locales write, the Russian alphabet and the Greek letters, the signs of
+    the drawings' equations and units, and what else a title or a name may hold."""
+    written = set().union(*(set(path.read_text(encoding="utf-8")) for path in Path("graphplan/locales").glob("*.toml")))
+    more = {chr(code) for code in [*range(0xA1, 0x180), *range(0x391, 0x3CA), *range(0x400, 0x460)]}
+    return sorted(character for character in written | more | set("′″–—…№−±×÷≈≤≥·°→#%&<>@^~")
+                  if (not character.isascii() or character in "#%&<>@^~") and character.isprintable()
+                  and not character.isspace() and not is_wide(character))
+
+
+@pytest.mark.parametrize("weight", ["normal", "bold"])
+def test_no_letter_is_boxed_narrower_than_dejavu_sans_sets_it(weight: str) -> None:
+    font = _dejavu(weight)
+    em = 1.0 / FONT_SIZE_PER_CAP  # the cap height at which a text's width in mm is its width in em
+    narrower = {character: round(_advance(font, character), 3) for character in _letters_beyond_ascii()
+                if _advance(font, character) > boxed_width(character, em, weight) + 1e-9}
+    assert narrower == {}
+
+
+def _between_its_lines(items: list, font_of) -> list[str]:
+    """The texts of a title block that, as DejaVu Sans sets them, reach within 0.5 mm of the lines on either side
+    of them (a line up to 0.7 mm wide stands half inside a cell): each with the room it has and takes."""
+    walls = [(p[0], min(p[1], q[1]), max(p[1], q[1])) for item in items if isinstance(item, Polyline)
+             for p, q in zip(item.points, item.points[1:] + ((item.points[0],) if item.closed else ()))
+             if abs(p[0] - q[0]) < 1e-9]
+    crowded = []
+    for item in items:
+        if not isinstance(item, Text) or not item.text.strip() or item.rotation:
+            continue
+        width = _advance(font_of(item.weight), item.text) * item.size * FONT_SIZE_PER_CAP
+        left = item.at[0] - {"start": 0.0, "middle": width / 2, "end": width}[item.anchor]
+        middle = item.at[1] + 0.4 * item.size
+        beside = [x for x, y0, y1 in walls if y0 <= middle <= y1]
+        room = (max(x for x in beside if x <= item.at[0] + 1e-9), min(x for x in beside if x >= item.at[0] - 1e-9))
+        if left < room[0] + 0.5 or left + width > room[1] - 0.5:
+            crowded.append(f"{item.text!r} {left:.2f}..{left + width:.2f} in {room[0]:.2f}..{room[1]:.2f}")
+    return crowded
+
+
+HOSTILE_PROJECT = {"author": "Шмидт-Щербакова Ю. М.", "checked_by": "Жмышенко Ш. Щ.", "approved_by": "Мышкин Ф. Ы.",
+                   "organization": "МГТУ им. Н. Э. Баумана, каф. РК-2 «Теория механизмов и машин» — №5…",
+                   "designation": "ТММ.КП.МФ.02.00.00.000 ПЗ", "date": "01.12.26"}
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh", "en"])
+def test_a_title_block_s_texts_stay_between_their_cell_s_lines_as_dejavu_sans_sets_them(locale: str) -> None:
+    # μl = 4 m/mm, no ratio GOST 2.302 allows: written out in ESKD's 18 mm scale cell, "4 м/мм" ran over its
+    # lines; so did the Russian names above in their cells, measured as Latin letters of their case.
+    words = strings(locale)
+    form = {"ru": "eskd", "zh": "gb", "en": "iso"}[locale]
+    scale = scale_text(4.0, form, words["length_scale"], words["decimal_mark"])
+    fields = TitleBlockFields(title="Кривошипно-шатунный механизм ДВС «Жук-Ш»", drawing=words["tb_sheet_kinematics"],
+                              scale=scale, sheet=1, sheets=12, **HOSTILE_PROJECT)
+    crowded = _between_its_lines(title_block(form, fields, labels(locale), (185.0, 0.0)), _dejavu)
+    assert crowded == []
