@@ -18,7 +18,7 @@ from graphplan.render.drawings import positions_plan
 from graphplan.render.labels import obstacles_of, text_box
 from graphplan.render.linkage import frame_pivots
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, Polyline, Text, boxed_width, is_wide
-from graphplan.render.title_block import TitleBlockFields, labels, scale_text, title_block
+from graphplan.render.title_block import SIZES, SMALLEST_LETTERING, TitleBlockFields, labels, scale_text, title_block
 from graphplan.scene import loads
 
 RATCHET = Path("fixtures/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
@@ -109,3 +109,20 @@ def test_a_title_block_s_texts_stay_between_their_cell_s_lines_as_dejavu_sans_se
                               scale=scale, sheet=1, sheets=12, **HOSTILE_PROJECT)
     crowded = _between_its_lines(title_block(form, fields, labels(locale), (185.0, 0.0)), _dejavu)
     assert crowded == []
+
+
+@pytest.mark.parametrize("length_scale", [0.00004, 0.000004])
+def test_a_length_scale_no_ratio_of_the_form_writes_is_written_out_no_smaller_than_the_least_lettering(
+        length_scale: float) -> None:
+    # 25:1 and 250:1 are no ratios of GOST 2.302's: μl is written out in the 18 × 15 mm scale box, on two lines at
+    # 1.7 and 1.6 mm, where three give it 2.8 and 2.4 mm.
+    locale, form, cell = "ru", "eskd", (167.0, 20.0, 185.0, 35.0)
+    words = strings(locale)
+    scale = scale_text(length_scale, form, words["length_scale"], words["decimal_mark"])
+    assert scale.startswith("μl = ")
+    fields = TitleBlockFields(title="Механизм", drawing=words["tb_sheet_kinematics"], scale=scale, sheet=1, sheets=1)
+    x0, y0, x1, y1 = cell  # from the block's lower left corner, as the form's drawing gives it
+    block = title_block(form, fields, labels(locale), (SIZES[form][0], 0.0))
+    written = [item for item in block if isinstance(item, Text) and x0 <= item.at[0] <= x1 and y0 <= item.at[1] <= y1]
+    assert " ".join(item.text for item in written) == scale
+    assert min(item.size for item in written) >= SMALLEST_LETTERING
