@@ -47,6 +47,15 @@ def fit_scale(extent: float, field_mm: float) -> float:
     return standard_scale(max(extent, 1e-300) / field_mm)
 
 
+# Beyond these a scale factor is written as a power of ten (2.5·10⁻¹², 1·10⁹): whole, its noughts are not read.
+_WHOLE_SCALES = (1e-10, 1e9)
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
 def format_scale(value: float) -> str:
-    """A scale factor as written on a drawing: 0.0025, not 2.5e-03."""
-    return f"{value:.10f}".rstrip("0").rstrip(".") if value < 1000 else f"{value:g}"
+    """A scale factor as written on a drawing: 0.0025, not 2.5e-03; 10000000, not 1e+07 (a 450 MN press's μF
+    was written "1e+07 Н/мм" on its force sheet, the only exponent of the drawings)."""
+    if value and not _WHOLE_SCALES[0] <= abs(value) < _WHOLE_SCALES[1]:
+        mantissa, exponent = f"{value:.6e}".split("e")
+        return f"{mantissa.rstrip('0').rstrip('.')}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+    return f"{value:.10f}".rstrip("0").rstrip(".")

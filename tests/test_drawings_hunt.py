@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from xml.etree import ElementTree
 
 import matplotlib
 import pytest
@@ -14,7 +15,7 @@ from fontTools.ttLib import TTFont
 from graphplan.analysis import analyse
 from graphplan.locale import strings
 from graphplan.render import positions
-from graphplan.render.drawings import positions_plan
+from graphplan.render.drawings import forces_svg, positions_plan
 from graphplan.render.labels import obstacles_of, text_box
 from graphplan.render.linkage import frame_pivots
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, Polyline, Text, boxed_width, is_wide
@@ -126,3 +127,18 @@ def test_a_length_scale_no_ratio_of_the_form_writes_is_written_out_no_smaller_th
     written = [item for item in block if isinstance(item, Text) and x0 <= item.at[0] <= x1 and y0 <= item.at[1] <= y1]
     assert " ".join(item.text for item in written) == scale
     assert min(item.size for item in written) >= SMALLEST_LETTERING
+
+
+EXPONENT = re.compile(r"\de[+-]?\d")
+
+
+def test_the_force_sheet_of_a_450_mn_press_writes_its_force_scales_without_an_exponent() -> None:
+    # The engine's gas force times 10⁵: μF came out 1·10⁷ N/mm, written "μF = 1e+07 N/mm" in the captions.
+    engine = Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8")
+    analysis = analyse(loads(engine.replace("value     = 4500.0", "value     = 450000000.0")))
+    position = next(plan for plan in analysis.plans if plan.forces is not None)
+    texts = ["".join(element.itertext()) for element in ElementTree.fromstring(forces_svg(analysis, position)).iter()
+             if element.tag.endswith("}text")]
+    scales = [text for text in texts if "μF = " in text]
+    assert scales and not [text for text in texts if EXPONENT.search(text)]
+    assert any("μF = 10000000 N/mm" in text for text in scales)
