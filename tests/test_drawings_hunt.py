@@ -142,3 +142,21 @@ def test_the_force_sheet_of_a_450_mn_press_writes_its_force_scales_without_an_ex
     scales = [text for text in texts if "μF = " in text]
     assert scales and not [text for text in texts if EXPONENT.search(text)]
     assert any("μF = 10000000 N/mm" in text for text in scales)
+
+
+def test_a_press_s_force_polygon_is_one_polygon_however_short_its_small_vectors() -> None:
+    # Beside the 450 MN load the weights, inertia forces and R23τ are under 0.01 mm at μF: R23τ + ΣF3 "closed" to
+    # 0.01 mm and the polygon was cut into three, two of them a lone dot beside the third.
+    engine = Path("fixtures/engine_slider_crank.toml").read_text(encoding="utf-8")
+    analysis = analyse(loads(engine.replace("value     = 4500.0", "value     = 450000000.0")))
+    for position in (plan for plan in analysis.plans if plan.forces is not None):
+        groups = {element.get("id"): element for element in
+                  ElementTree.fromstring(forces_svg(analysis, position)).iter("{http://www.w3.org/2000/svg}g")}
+        polygons = [name for name in groups if name and name.startswith("polygon-") and name.endswith("-vectors")]
+        assert polygons
+        # Each polygon drawn has an arrow (a group of its own, shaft and head) besides its starting dot.
+        assert [name for name in polygons if not groups[name].findall("{http://www.w3.org/2000/svg}g")] == []
+        # One polygon a group: its vectors under the group's own name, not numbered apart (polygon-II-3-4-1).
+        captions = [name.removesuffix("-caption") for name in groups if name and name.startswith("polygon-")
+                    and name.endswith("-caption")]
+        assert sorted(polygons) == sorted(f"{caption}-vectors" for caption in captions), position.number

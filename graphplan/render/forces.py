@@ -876,21 +876,30 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
 
 
 def _chains(vectors: Sequence[PolygonVector], scale: float) -> list[list[PolygonVector]]:
-    """The polygon's vectors as closed chains: a chain ends where it returns to its start.
+    """The polygon's vectors as closed chains: a chain ends where it returns to its start, having gone somewhere.
 
-    An inner vector goes with the chain whose vertices it joins.
+    An inner vector goes with the chain whose vertices it joins.  Vectors too
+    short to draw close no chain of their own: a press's weights and inertia
+    forces beside its 450 MN load (R23τ + ΣF3 = 0 to 0.01 mm) stood apart as
+    polygons of a lone dot each.
     """
+    def drawn(chain: list[PolygonVector]) -> bool:
+        return any(abs(vector.force) / scale >= 0.01 for vector in chain)
+
     chains: list[list[PolygonVector]] = []
     current: list[PolygonVector] = []
     for vector in vectors:
         if vector.role == "inner":
             continue
         current.append(vector)
-        if abs(vector.end - current[0].start) / scale < 0.01 and len(current) > 1:
+        if abs(vector.end - current[0].start) / scale < 0.01 and len(current) > 1 and drawn(current):
             chains.append(current)
             current = []
     if current:
-        chains.append(current)
+        if chains and not drawn(current):
+            chains[-1].extend(current)
+        else:
+            chains.append(current)
     for vector in vectors:
         if vector.role == "inner":
             vertices = [{v.start for v in chain} | {v.end for v in chain} for chain in chains]
