@@ -20,6 +20,7 @@ from graphplan.render.labels import obstacles_of, text_box
 from graphplan.render.linkage import frame_pivots
 from graphplan.render.primitives import FONT_SIZE_PER_CAP, Polyline, Text, boxed_width, is_wide
 from graphplan.render.title_block import SIZES, SMALLEST_LETTERING, TitleBlockFields, labels, scale_text, title_block
+from graphplan.scales import format_scale
 from graphplan.scene import loads
 
 RATCHET = Path("fixtures/ratchet_crank_rocker.toml").read_text(encoding="utf-8")
@@ -160,3 +161,9 @@ def test_a_press_s_force_polygon_is_one_polygon_however_short_its_small_vectors(
         captions = [name.removesuffix("-caption") for name in groups if name and name.startswith("polygon-")
                     and name.endswith("-caption")]
         assert sorted(polygons) == sorted(f"{caption}-vectors" for caption in captions), position.number
+
+
+def test_a_scale_factor_beyond_a_thousand_millionth_is_a_power_of_ten_not_nought() -> None:
+    # Ten decimals wrote an acceleration scale of a crank turning once a day, 2.5·10⁻¹² (m/s²)/mm, as "0".
+    assert [format_scale(value) for value in (2.5e-12, 1e-10, 4e8, 2e9)] == [
+        "2.5·10⁻¹²", "0.0000000001", "400000000", "2·10⁹"]
