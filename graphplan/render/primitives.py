@@ -16,6 +16,7 @@ import re
 import unicodedata
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 
 Point = tuple[float, float]
 
@@ -208,35 +209,6 @@ FONT_SIZE_PER_CAP = 1.0 / 0.72
 _NARROW = frozenset(" ,.:;'!|ijlfrtIJ()/-′‘’")
 _WIDE = frozenset("mwMWжшщюЖШЩЮЫ=+ω")
 _BOLD_WIDENING = 1.1
-# DejaVu Sans's own advances (rounded up to 0.01 em) of its book and its bold face beyond ASCII, of the decimal point
-# and comma, and of the signs of ASCII wider than their class, for the texts that must stay inside a box drawn round
-# them (:func:`boxed_width`): the classes told Cyrillic and the signs wrong both ways.
-_ADVANCES = {weight: {character: width for width, characters in groups for character in characters}
-             for weight, groups in (("normal", (
-    (0.23, "′"), (0.28, "ìíîïĩīĭįıĵĺļіїј"), (0.29, "ł"), (0.3, "ÌÍÎÏĨĪĬĮİĴΙΪІЇЈ"), (0.32, ".,·‘’"), (0.34, "¦ίι"),
-    (0.35, "ŀ"), (0.36, "ſ"), (0.38, "ľ″"), (0.4, "ţťŧ"), (0.41, "¡²³¹"), (0.42, "ŕŗř"), (0.48, "ªº"),
-    (0.5, "§¨¯°´¸–"), (0.52, "“”"), (0.53, "śŝşšźżžгѓѕ"), (0.54, "¿з"), (0.55, "çćĉċčέεζсэє"), (0.56, "ĳĹĻĽĿΓνξ"),
-    (0.57, "Ł"), (0.58, "ķĸΰυχ"), (0.59, "Ĳκςвть"), (0.6, "ýÿŷγλухчў"), (0.61, "ÞΡπτЃЎГРУкяќ"),
-    (0.62, "«»ÝàáâãäåèéêëðòóôõöøāăąēĕėęěōŏőŢŤŦŶŸΤΥΫδθοТабеоѐё"), (0.63, "ßђ"),
-    (0.64, "¢£¤¥µ¶ÈÉÊËñùúûüþďđĒĔĖĘĚĝğġģĥńņňŋŚŜŞŠũūŭůűųΕΞΣήβημρσЀЁЅЕлр"), (0.65, "Зийѝ"), (0.66, "ĶΚάαφψнпћџ"),
-    (0.69, "ÀÁÂÃÄÅĀĂĄŹŻŽΑΒΔΖΛΧАБВХЧЬцⅢ"), (0.7, "ÇĆĈĊČħŔŖŘЄСЭЯд"), (0.71, "ЌКъ"), (0.74, "ÙÚÛÜŨŪŬŮŰŲ"),
-    (0.75, "ÑŃŅŇŊΝЍИЙ"), (0.76, "ĤΗΠЏЛНПм"), (0.77, "Ω△"), (0.78, "ÐĎĐĜĞĠĢЦ&"), (0.79, "ÒÓÔÕÖØŌŎŐΘΟΦΨЂЋДОы"),
-    (0.82, "ŉŵ"), (0.84, "¬±×÷ωЪ−≈≤≥→←↑↓∞∽#<>^~"), (0.85, "ю"), (0.86, "ф"), (0.87, "ΜМФ"), (0.88, "⊥"), (0.89, "Ы"),
-    (0.9, "њ"), (0.91, "жљ"), (0.92, "Ħш"), (0.95, "щ"), (0.96, "%"), (0.97, "¼½¾"), (0.98, "Æ"), (0.99, "æŴ"),
-    (1.0, "©®—…@"), (1.03, "œ"), (1.05, "Њ№"), (1.07, "ŒШ"), (1.08, "ЖЮ"), (1.1, "ЉЩ"))), ("bold", (
-    (0.27, "′"), (0.35, "ìíîïĩīĭįıĵĺļіїј"), (0.37, "¦"), (0.38, ".,·ÌÍÎÏĨĪĬĮİĴłΙΪІЇЈ‘’"), (0.39, "ίι"), (0.44, "²³¹ſ"),
-    (0.45, "″"), (0.46, "¡"), (0.48, "ľţťŧ"), (0.5, "§¨¯°´¸ŕŗř–"), (0.53, "гѓ"), (0.56, "ŀέε"), (0.57, "ªº"),
-    (0.58, "т"), (0.59, "¿źżžз"), (0.6, "çćĉċčśŝşšζξςсэєѕ"), (0.64, "¤¶ĹĻĽĿΓΞλτЃГвь"), (0.65, "«»Łχхя"),
-    (0.66, "ýÿŷуў“”"), (0.67, "ķĸ"), (0.68, "àáâãäåèéêëāăąēĕėęěΰυаекѐёќ"),
-    (0.69, "ÈÉÊËðòóôõöøĒĔĖĘĚĳōŏőŢŤŦΕΣΤάαγδθνοЀЁЕТоч"), (0.7, "¢£¥бнпџ"), (0.71, "ийѝ"),
-    (0.72, "ßñùúûüþďđĝğġģĥńņňŋũūŭůűųήβηκρЗрђ"), (0.73, "ÝŚŜŞŠŶŸŹŻŽΖΥΫЅ"), (0.74, "µÇÞĆĈĊČΡμЄРСЭлћ"), (0.75, "Ĳц"),
-    (0.76, "ъ"), (0.77, "ΒБВЬ△"), (0.78, "ÀÁÂÃÄÅĀĂĄĶŔŖŘΑΔΚΛΧσЎАУХЯ"), (0.79, "φ"), (0.8, "ħπψ"), (0.81, "Чд"),
-    (0.82, "ÙÚÛÜŨŪŬŮŰŲЌКм"), (0.83, "ĜĞĠĢ"), (0.84, "¬±ÐÑ×÷ĎĐĤŃŅŇŊΗΝΠЍЏИЙЛНП−≈≤≥→←↑↓∞∽#<>^~"), (0.85, "Ψ"),
-    (0.86, "ÒÓÔÕÖØŌŎŐΘΟΦΩО"), (0.87, "ω"), (0.88, "ЂЋ&"), (0.9, "Д"), (0.91, "ы"), (0.92, "⊥"), (0.93, "ŵЦ"),
-    (0.94, "Ъ"), (0.95, "Ⅲ"), (0.96, "њ"), (0.98, "Ħю"), (0.99, "ŉ"), (1.0, "©®ΜМФжфљ—…@"), (1.01, "%"),
-    (1.04, "¼½¾Ы"), (1.05, "æ"), (1.07, "ш"), (1.09, "Æ"), (1.1, "œ"), (1.11, "Ŵщ"), (1.13, "Њ"), (1.16, "Љ"),
-    (1.17, "Œ"), (1.18, "Ю"), (1.21, "№"), (1.23, "Ж"), (1.24, "Ш"), (1.33, "Щ")
-)))}
 
 
 def is_wide(character: str) -> bool:
@@ -276,11 +248,29 @@ def boxed_width(text: str, size: float, weight: str = "normal") -> float:
 
 @functools.lru_cache(maxsize=8192)
 def _set_em_width(text: str, weight: str) -> float:
-    """How wide DejaVu Sans sets ``text`` in em: its own advances where :data:`_ADVANCES` has them, the classes'
-    elsewhere (ASCII's letters and digits; a CJK ideograph its em square)."""
-    advances = _ADVANCES["bold" if weight == "bold" else "normal"]
+    """How wide DejaVu Sans sets ``text`` in em: its own advances where it has the character, the classes' elsewhere
+    (a CJK ideograph its em square, set in another font)."""
+    advance = _dejavu_advances("bold" if weight == "bold" else "normal")
     widening = _BOLD_WIDENING if weight == "bold" else 1.0
-    return sum(advances[c] if c in advances else widening * character_width(c) for c in text)
+    return sum(advance(character) or widening * character_width(character) for character in text)
+
+
+@functools.cache
+def _dejavu_advances(weight: str):
+    """A character's advance (em) in the DejaVu Sans that matplotlib ships, or None where the font has no glyph
+    for it: the drawings' own font, read from the same file on every machine, so that what fits is no machine's."""
+    import matplotlib
+    from fontTools.ttLib import TTFont
+
+    name = "DejaVuSans-Bold.ttf" if weight == "bold" else "DejaVuSans.ttf"
+    font = TTFont(Path(matplotlib.get_data_path()) / "fonts" / "ttf" / name, lazy=True)
+    glyphs, metrics, units = font.getBestCmap(), font["hmtx"], font["head"].unitsPerEm
+
+    def advance(character: str) -> float | None:
+        glyph = None if is_wide(character) else glyphs.get(ord(character))
+        return None if glyph is None else metrics[glyph][0] / units
+
+    return advance
 
 
 @functools.lru_cache(maxsize=8192)
