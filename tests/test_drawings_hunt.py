@@ -12,6 +12,7 @@ import matplotlib
 import pytest
 from fontTools.ttLib import TTFont
 
+import graphplan
 from graphplan.analysis import analyse
 from graphplan.locale import strings
 from graphplan.render import positions
@@ -56,21 +57,21 @@ def _advance(font: TTFont, text: str) -> float:
     return sum(metrics[glyphs[ord(character)]][0] / unit for character in text if ord(character) in glyphs)
 
 
-def _letters_beyond_ascii() -> list[str]:
-    """Every character beyond ASCII that the locales write, the Russian alphabet and the Greek letters, the signs of
+def _letters() -> list[str]:
+    """Every character that the locales write, ASCII's, the Russian alphabet and the Greek letters, the signs of
     the drawings' equations and units, and what else a title or a name may hold."""
-    written = set().union(*(set(path.read_text(encoding="utf-8")) for path in Path("graphplan/locales").glob("*.toml")))
-    more = {chr(code) for code in [*range(0xA1, 0x180), *range(0x391, 0x3CA), *range(0x400, 0x460)]}
-    return sorted(character for character in written | more | set("′″–—…№−±×÷≈≤≥·°→#%&<>@^~")
-                  if (not character.isascii() or character in "#%&<>@^~") and character.isprintable()
-                  and not character.isspace() and not is_wide(character))
+    locales = Path(graphplan.__file__).parent / "locales"
+    written = set().union(*(set(path.read_text(encoding="utf-8")) for path in locales.glob("*.toml")))
+    more = {chr(code) for code in [*range(0x21, 0x7F), *range(0xA1, 0x180), *range(0x391, 0x3CA), *range(0x400, 0x460)]}
+    return sorted(character for character in written | more | set("′″–—…№−±×÷≈≤≥·°→")
+                  if character.isprintable() and not character.isspace() and not is_wide(character))
 
 
 @pytest.mark.parametrize("weight", ["normal", "bold"])
 def test_no_letter_is_boxed_narrower_than_dejavu_sans_sets_it(weight: str) -> None:
     font = _dejavu(weight)
     em = 1.0 / FONT_SIZE_PER_CAP  # the cap height at which a text's width in mm is its width in em
-    narrower = {character: round(_advance(font, character), 3) for character in _letters_beyond_ascii()
+    narrower = {character: round(_advance(font, character), 3) for character in _letters()
                 if _advance(font, character) > boxed_width(character, em, weight) + 1e-9}
     assert narrower == {}
 
