@@ -79,8 +79,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--locale", choices=LOCALES, default=None,
                      help="the language of the drawings and the text (default: the scene's [scene] locale)")
     run.add_argument("--sheet", type=_sheet, default=None, metavar="{" + ",".join(SHEETS) + "}",
-                     help="the sheet format of the course-project sheets, which it also draws (default: the scene's "
-                          "[drawing] sheet)")
+                     help="the sheet format of the course-project sheets, which it then draws unless --only or the "
+                          "scene's [output] include leaves out 'sheets' (default: the scene's [drawing] sheet)")
     # Each given again adds to the list ("--format svg --format png" is svg,png): the last alone was taken,
     # and the pieces or formats named before it were dropped without a word.
     run.add_argument("--only", type=_listed, action="extend", default=None, metavar="PIECES",

@@ -248,3 +248,19 @@ def test_the_starters_run_without_a_warning_in_every_language(tmp_path, capsys):
             assert main(["check", str(scene)]) == 0
             told = capsys.readouterr()
             assert "warning" not in told.out + told.err, (kind, locale)
+
+
+def test_the_sheet_option_draws_the_sheets_as_its_help_says(student_folder, capsys):
+    """``--sheet``'s help said the run 'also draws' the sheets: with ``--only`` that leaves them out it draws none,
+    as the help now says; without, a scene whose ``[drawing] sheet`` is "none" gets them."""
+    with pytest.raises(SystemExit):
+        main(["run", "--help"])
+    helped = " ".join(capsys.readouterr().out.split())
+    assert "which it then draws unless --only or the scene's [output] include leaves out 'sheets'" in helped
+    scene = Path("engine.toml")
+    text = (ROOT / "fixtures" / "engine_slider_crank.toml").read_text(encoding="utf-8")
+    scene.write_text(re.sub(r'(?m)^sheet\s*=.*$', 'sheet = "none"', text), encoding="utf-8")
+    run_as_printed(["run", str(scene), "--sheet", "A1", "--only", "positions", "--out", "only"], capsys)
+    assert not list(Path("only").glob("sheet_*"))
+    run_as_printed(["run", str(scene), "--sheet", "A1", "--out", "all"], capsys)
+    assert ElementTree.parse(Path("all", "sheet_1.svg")).getroot().get("width") == "841mm"
