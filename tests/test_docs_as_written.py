@@ -271,3 +271,14 @@ def test_the_readme_names_every_bundled_scene():
     crank: a student looking for one was told there is none."""
     listed = set(re.findall(r"`(\w+\.toml)`", README.split("## Fixtures", 1)[1].split("\n## ", 1)[0]))
     assert listed == {path.name for path in (ROOT / "fixtures").glob("*.toml")}
+
+
+def test_a_machine_run_down_to_rest_shows_its_speed_as_0_not_rounding():
+    """``scene.machine_dynamics().motion``, which the README offers, showed ``ω -1.11e-15 … 6.377 rad/s`` of the
+    shaper switched off and run down to rest: the integration's rounding, which results.json writes as 0."""
+    text = starter("shaper")
+    motor = re.search(r"(?m)^motor = .*$", text)[0]
+    motion = graphplan.load_text(text.replace(motor, motor.replace(" }", ", off_at = 6.0 }"))).machine_dynamics().motion
+    assert motion.stopped_at is not None
+    assert abs(float(motion.omega.min())) < 1e-12 * float(motion.omega.max())
+    assert re.search(r", ω 0 … [\d.]+ rad/s, at rest from ", repr(motion)), repr(motion)

@@ -13,6 +13,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
+from ..rounding import noise_floor
 from .cycles import Cycle, SteadyState, find_cycles, find_steady_state, refined
 from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
 from .integrator import MOST_EVALUATIONS, Equations, Integrator
@@ -89,8 +90,12 @@ class MachineMotion:
         ending = (f", stalled at {self.stalled_at:.4g} s" if self.stalled_at is not None
                   else f", at rest from {self.stopped_at:.4g} s" if self.stopped_at is not None
                   else ", steady" if self.steady is not None else "")
+        # A machine run down to rest reads ω 0 there, not the -1.11e-15 its integration leaves, as results.json does.
+        floor = noise_floor(self.omega)
+        lowest, highest = (0.0 if abs(value) < floor else value
+                           for value in (float(np.min(self.omega)), float(np.max(self.omega))))
         return (f"<MachineMotion ({self.method}): {len(self.t)} steps over {float(self.t[-1]):.4g} s, ω "
-                f"{float(np.min(self.omega)):.4g} … {float(np.max(self.omega)):.4g} rad/s{ending}>")
+                f"{lowest:.4g} … {highest:.4g} rad/s{ending}>")
 
     @property
     def stiff(self) -> bool:
