@@ -17,7 +17,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass
 
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, TITLE_LAYER, Arrangement, title_texts
@@ -62,6 +62,10 @@ class Drawing:
     name: str
     layers: list[Layer]
     caption: tuple[str, ...]
+    # The drawing under the head of its caption, and the rest of its caption (a group's equations) as a drawing of
+    # its own to go on from it: for a sheet that holds the drawing only without them at a scale its labels stand
+    # apart at (:meth:`Rows.parted`).  None where the caption stays whole under its drawing.
+    parted: tuple[Drawing, Drawing] | None = None
 
 
 @dataclass(frozen=True)
@@ -200,6 +204,26 @@ class Rows:
             found = apart._parts(fits)
         return found if found is not None or not headless else apart._parts(fits, headless=True)
 
+    def parted(self, names: Collection[str]) -> Rows:
+        """The rows with each drawing of ``names`` that may be parted (:attr:`Drawing.parted`) ending its row
+        under the head of its caption, the rest of its caption beginning the next row, with the drawings after it:
+        a group cut free on a part of its own, its equations going on with its polygon."""
+        rows: list[list[Drawing]] = []
+        origins: list[int] = []
+        for origin, row in zip(self.origins, self.drawings, strict=True):
+            current: list[Drawing] = []
+            for drawing in row:
+                if drawing.name in names and drawing.parted is not None:
+                    head, rest = drawing.parted
+                    rows.append([*current, head])
+                    origins.append(origin)
+                    current = [rest]
+                else:
+                    current.append(drawing)
+            rows.append(current)
+            origins.append(origin)
+        return Rows(rows, self.heading, origins)
+
     def unheld(self, fits: Fits, headed: bool = False) -> dict[str, tuple[float, float]]:
         """The drawings that do not fit even alone with no heading (``headed``: under the heading), with their
         (width, height)."""
@@ -320,9 +344,15 @@ class Rows:
                                      *scale_texts))
 
 
+def _extent(drawing: Drawing) -> tuple[float, float, float, float]:
+    """The bounds of ``drawing``'s lines and words; a caption with no drawing (a group's equations set apart) has
+    none, its field no height."""
+    return bounds(drawing.layers) if any(layer.items for layer in drawing.layers) else (0.0, 0.0, 0.0, 0.0)
+
+
 def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
-    extents = [bounds(drawing.layers) for drawing in row]
+    extents = [_extent(drawing) for drawing in row]
     height = max(y1 - y0 for _, y0, _, y1 in extents)
     captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
@@ -342,7 +372,7 @@ def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
 def _stacked(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` one under another (the polygon under its group), each with its caption, in
     the middle of a field as wide as the widest."""
-    extents = [bounds(drawing.layers) for drawing in row]
+    extents = [_extent(drawing) for drawing in row]
     captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     width = max(max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))

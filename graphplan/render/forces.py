@@ -69,6 +69,7 @@ from .primitives import (
     Polyline,
     Primitive,
     Stroke,
+    Text,
     bounds_of,
     curved_arrow,
     dot_marker,
@@ -347,10 +348,24 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption += _wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
-    return Drawing(f"body-{key}", [
-        Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
-        Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
-        Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)], tuple(caption))
+    layers = [Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
+              Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
+              Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)]
+    # Its title and scales stay with the group; its equations, under its title again, may go on after it.
+    parted = (Drawing(f"body-{key}", layers, tuple(caption[:2])),
+              Drawing(f"equations-{key}", [], (caption[0], *caption[2:]))) if len(caption) > 2 else None
+    return Drawing(f"body-{key}", layers, tuple(caption), parted)
+
+
+def labels_cover_one_another(drawing: Drawing) -> bool:
+    """Whether two of the labels of a group cut free cover one another: drawn so small that the names of its
+    points, loads and arms find no room apart (:func:`~graphplan.render.labels.place_labels` lets a label cover
+    another only where no spot round its point is clear)."""
+    boxes = np.array([text_box(item).bounds for layer in drawing.layers if layer.name == f"{drawing.name}-labels"
+                      for item in layer.items if isinstance(item, Text)], dtype=float).reshape(-1, 4)
+    apart = ((boxes[:, None, 0] > boxes[None, :, 2]) | (boxes[None, :, 0] > boxes[:, None, 2])
+             | (boxes[:, None, 1] > boxes[None, :, 3]) | (boxes[None, :, 1] > boxes[:, None, 3]))
+    return bool((~apart)[np.triu_indices(len(boxes), 1)].any())
 
 
 def _beside(point: complex, vector: complex, bars: BaseGeometry,

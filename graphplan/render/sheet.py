@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterator, Sequence
 from dataclasses import asdict, dataclass, replace
 
 from ..analysis import Analysis, PlanPosition
@@ -36,6 +36,7 @@ from ..load_diagrams import LoadDiagram
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..scales import format_scale, next_standard_scale, standard_scale
+from . import force_rows
 from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
@@ -202,8 +203,9 @@ def _continued(title: Layer, continued: str, broken: bool) -> Layer:
 
 
 def _group_of_field(field_name: str) -> str:
-    """The part a field of the force sheet goes in: a group cut free with its polygons, the lever alone."""
-    for kind in ("body-", "polygon-"):
+    """The part a field of the force sheet goes in: a group cut free with its equations and polygons, the lever
+    alone."""
+    for kind in ("body-", "equations-", "polygon-"):
         if field_name.startswith(kind):
             return "group-" + field_name[len(kind):]
     return field_name
@@ -368,6 +370,12 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     enlarged = drawn if drawn.lever_enlarged else None
     # The groups cut free, drawn once for all the versions of the sheet tried (:func:`force_layout.rows`).
     groups_cut_free: dict[tuple[int, float], force_layout.Drawing] = {}
+    # The groups cut free that stand on a part of their own, their equations going on after them: drawn smaller
+    # with their equations under them, their labels would cover one another.
+    parted: set[str] = set()
+
+    def laid(rows: force_rows.Rows) -> force_rows.Rows:
+        return rows.parted(parted) if parted else rows
 
     def cut(drawn: force_layout.ForceSheet, one: Panel,
             parts: list[Arrangement]) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
@@ -375,7 +383,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         it so on its part without adding a part."""
         for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
             larger_rows = force_layout.rows(larger, groups_cut_free)
-            larger_parts = larger_rows.parts(fits, headless=any(_headless(part) for part in parts))
+            larger_parts = laid(larger_rows).parts(fits, headless=any(_headless(part) for part in parts))
             if larger_parts is not None and len(larger_parts) == len(parts):
                 drawn, parts = larger, larger_parts
                 one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
@@ -405,26 +413,30 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             drawn = replace(drawn, lever_scale=_smaller_lever(drawn))
             continue
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
-        parts = rows.parts(fits, headless=False)
+        parts = laid(rows).parts(fits, headless=False)
         if parts is not None:
             drawn, one, panels = cut(drawn, one, parts)
             headless = None
             break
         if headless is None:
-            parts = rows.parts(fits)
+            parts = laid(rows).parts(fits)
             headless = (drawn, one, parts) if parts is not None else None
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
-        unheld = rows.unheld(fits)
+        unheld = laid(rows).unheld(fits)
         if not unheld and drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:
-            unheld = rows.unheld(fits, headed=True)
+            unheld = laid(rows).unheld(fits, headed=True)
         if unheld == before or not unheld:
             break  # the packing cuts the panel up, or names the drawing that no sheet holds
         before = unheld
-        bodies = any(drawing.startswith("body-") for drawing in unheld)
         lever = "lever" in unheld
+        if drawn.caption_size == force_layout.SMALL_CAPTION_SIZE:
+            parted |= _parted_for_legibility(rows, drawn, groups_cut_free, unheld, fits)
+        bodies = any(drawing.startswith("body-") and drawing not in parted for drawing in unheld)
         if drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:  # the next size of lettering first
             drawn = replace(drawn, caption_size=force_layout.SMALL_CAPTION_SIZE)
+        elif parted and not bodies and not lever:
+            continue  # the same drawings, the groups parted from their equations
         elif bodies or lever:
             drawn = replace(
                 drawn,
@@ -442,19 +454,36 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]
 
 
+def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet,
+                           groups_cut_free: dict[tuple[int, float], force_layout.Drawing],
+                           unheld: Collection[str], fits: Callable[[float, float], bool]) -> set[str]:
+    """The groups cut free among ``unheld`` to stand on a part of their own, their equations going on after
+    them, rather than be drawn at the next larger μl: those that a sheet holds so and whose labels would cover
+    one another drawn smaller, as a draughtsman goes on to the next sheet before letters run together."""
+    bodies = [name for name in unheld if name.startswith("body-")]
+    if not bodies:
+        return set()
+    held = set(bodies) - set(rows.parted(bodies).unheld(fits))
+    smaller = force_layout.rows(replace(drawn, length_scale=next_standard_scale(drawn.length_scale)), groups_cut_free)
+    crowded = {drawing.name for row in smaller.drawings for drawing in row
+               if drawing.name in held and force_layout.labels_cover_one_another(drawing)}
+    return crowded
+
+
 def _at_no_length_scale(panel: Panel) -> Panel:
     """A force sheet, or a part of one, whose lever (the velocity plan turned, at μV) and force polygons (at μF)
     are drawn to no length scale: a sheet of them alone leaves its title block's scale box empty, as one of plans
     alone; only a group cut free is drawn at μl."""
-    parts = tuple(_to_no_length_scale(part) if _at_force_or_velocity_scale(part.name)
+    parts = tuple(_to_no_length_scale(part) if _drawn_to_no_length_scale(part.name)
                   else _at_no_length_scale(part) for part in panel.parts)
     return replace(panel, parts=parts, to_scale=any(part.to_scale for part in parts) if parts else panel.to_scale,
                    alternatives=tuple(_at_no_length_scale(way) for way in panel.alternatives))
 
 
-def _at_force_or_velocity_scale(name: str) -> bool:
-    """Whether the part ``name`` of a force sheet is its lever or a force polygon (``forces-5-polygon-II-3-4``)."""
-    return name.endswith("-lever") or "-polygon-" in name
+def _drawn_to_no_length_scale(name: str) -> bool:
+    """Whether the part ``name`` of a force sheet is its lever or a force polygon (``forces-5-polygon-II-3-4``),
+    or a group's equations set apart from it, which draw nothing."""
+    return name.endswith("-lever") or "-polygon-" in name or "-equations-" in name
 
 
 def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
