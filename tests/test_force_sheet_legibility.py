@@ -117,3 +117,20 @@ def test_the_force_drawing_whole_keeps_the_equations_under_the_group(triad):
         assert not any("equations-" in name for name in names), whole.name
         words = " ".join(text.text for text in texts(whole.layers))
         assert "ΣMB(3)" in words, whole.name
+
+
+def test_parting_keeps_the_caption_whole_and_the_reading_order(triad):
+    plan = next(plan for plan in triad.plans if plan.forces is not None)
+    rows = force_layout.rows(force_sheet(triad, plan))
+    body = rows.drawings[0][0]
+    parted = rows.parted([body.name])
+    names = [[drawing.name for drawing in row] for row in parted.drawings]
+    assert names[:2] == [[f"body-{GROUP}"], [f"equations-{GROUP}", f"polygon-{GROUP}"]]
+    assert names[2:] == [[drawing.name for drawing in row] for row in rows.drawings[1:]]
+    head, rest = parted.drawings[0][0], parted.drawings[1][0]
+    assert head.layers == body.layers and rest.layers == []
+    # The title heads both; nothing of the caption is lost or said twice but the title.
+    assert head.caption[0] == rest.caption[0] == body.caption[0]
+    assert (*head.caption, *rest.caption[1:]) == body.caption
+    # One group still: a cut between its two rows costs what a cut between a group and its polygon does.
+    assert parted.origins[:2] == (0, 0)

@@ -430,13 +430,14 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             break  # the packing cuts the panel up, or names the drawing that no sheet holds
         before = unheld
         lever = "lever" in unheld
-        if drawn.caption_size == force_layout.SMALL_CAPTION_SIZE:
-            parted |= _parted_for_legibility(rows, drawn, groups_cut_free, unheld, fits)
-        bodies = any(drawing.startswith("body-") and drawing not in parted for drawing in unheld)
+        newly_parted = _parted_for_legibility(rows, drawn, groups_cut_free, unheld, fits) \
+            if drawn.caption_size <= force_layout.SMALL_CAPTION_SIZE else set()
+        parted |= newly_parted
+        bodies = any(drawing.startswith("body-") and drawing not in newly_parted for drawing in unheld)
         if drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:  # the next size of lettering first
             drawn = replace(drawn, caption_size=force_layout.SMALL_CAPTION_SIZE)
-        elif parted and not bodies and not lever:
-            continue  # the same drawings, the groups parted from their equations
+        elif newly_parted and not bodies and not lever:
+            continue  # the same drawings, those groups parted from their equations
         elif bodies or lever:
             drawn = replace(
                 drawn,
@@ -460,14 +461,16 @@ def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet
     """The groups cut free among ``unheld`` to stand on a part of their own, their equations going on after
     them, rather than be drawn at the next larger μl: those that a sheet holds so and whose labels would cover
     one another drawn smaller, as a draughtsman goes on to the next sheet before letters run together."""
-    bodies = [name for name in unheld if name.startswith("body-")]
+    bodies = [drawing for row in rows.drawings for drawing in row
+              if drawing.name in unheld and drawing.name.startswith("body-") and drawing.parted is not None]
     if not bodies:
         return set()
-    held = set(bodies) - set(rows.parted(bodies).unheld(fits))
+    # Both the group and its equations on a sheet of their own: equations longer than a sheet stay under it.
+    still_unheld = rows.parted([body.name for body in bodies]).unheld(fits)
+    held = {body.name for body in bodies if not any(piece.name in still_unheld for piece in body.parted or ())}
     smaller = force_layout.rows(replace(drawn, length_scale=next_standard_scale(drawn.length_scale)), groups_cut_free)
-    crowded = {drawing.name for row in smaller.drawings for drawing in row
-               if drawing.name in held and force_layout.labels_cover_one_another(drawing)}
-    return crowded
+    return {drawing.name for row in smaller.drawings for drawing in row
+            if drawing.name in held and force_layout.labels_cover_one_another(drawing)}
 
 
 def _at_no_length_scale(panel: Panel) -> Panel:
