@@ -11,6 +11,7 @@ in one place.
 from __future__ import annotations
 
 import functools
+import importlib.util
 import math
 import re
 import unicodedata
@@ -259,11 +260,12 @@ def _set_em_width(text: str, weight: str) -> float:
 def _dejavu_advances(weight: str):
     """A character's advance (em) in the DejaVu Sans that matplotlib ships, or None where the font has no glyph
     for it: the drawings' own font, read from the same file on every machine, so that what fits is no machine's."""
-    import matplotlib
     from fontTools.ttLib import TTFont
 
+    # Found, not imported: importing matplotlib costs a run that draws no plot a second.
+    matplotlib = Path(importlib.util.find_spec("matplotlib").submodule_search_locations[0])
     name = "DejaVuSans-Bold.ttf" if weight == "bold" else "DejaVuSans.ttf"
-    font = TTFont(Path(matplotlib.get_data_path()) / "fonts" / "ttf" / name, lazy=True)
+    font = TTFont(matplotlib / "mpl-data" / "fonts" / "ttf" / name, lazy=True)
     glyphs, metrics, units = font.getBestCmap(), font["hmtx"], font["head"].unitsPerEm
 
     def advance(character: str) -> float | None:
