@@ -407,6 +407,7 @@ def test_an_rpr_s_positive_offset_puts_its_slide_to_the_left_of_c_along_the_leve
     """What the refusal above says of the sign, checked: A − C across the lever's direction u (θ4) is +e."""
     motion = graphplan.solve(graphplan.load_text(SLOTTED_LEVER + "offset = 0.03\n"),
                              driver=np.radians([30.0, 100.0, 200.0, 300.0]))
-    across = [np.cross([np.cos(theta), np.sin(theta)], a - np.array([0.0, -0.2]))
+    # u × (A − C), the z of the cross product: numpy 2 deprecates np.cross of plane vectors.
+    across = [np.cos(theta) * (a[1] + 0.2) - np.sin(theta) * a[0]
               for a, theta in zip(motion.point("A").r, motion.link(4).angle, strict=True)]
     assert np.allclose(across, 0.03, atol=1e-12)
