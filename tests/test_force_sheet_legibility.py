@@ -64,12 +64,14 @@ def test_the_group_cut_free_stands_with_its_labels_apart(sheets, triad):
         assert covering_one_another(texts([labels])) == [], f"position {number}, sheet {sheet.number}"
 
 
-def test_its_equations_go_on_on_the_next_sheet_whole(sheets, triad):
+def plans_with_their_body_sheets(sheets, triad):
+    """Each plan position with forces, and the sheet its group cut free stands on."""
     drawn = body_sheets(sheets)
-    for plan in triad.plans:
-        if plan.forces is None:
-            continue
-        sheet, _ = drawn[plan.number]
+    return [(plan, drawn[plan.number][0]) for plan in triad.plans if plan.forces is not None]
+
+
+def test_its_equations_go_on_on_the_next_sheet_whole(sheets, triad):
+    for plan, sheet in plans_with_their_body_sheets(sheets, triad):
         group = next(group for group in plan.forces.groups if force_layout.group_id(group.label) == GROUP)
         body_words = " ".join(text.text for layer in sheet.layers if layer.name.endswith(f"body-{GROUP}-caption")
                               for text in layer.items)
@@ -95,11 +97,7 @@ def test_the_sheet_of_equations_alone_gives_no_scale(sheets):
 
 def test_a_group_is_set_apart_only_where_drawn_smaller_its_labels_would_meet(sheets, triad):
     """The step not taken: at the next standard μl, with the equations under it, the labels meet."""
-    drawn = body_sheets(sheets)
-    for plan in triad.plans:
-        if plan.forces is None:
-            continue
-        sheet, _ = drawn[plan.number]
+    for plan, sheet in plans_with_their_body_sheets(sheets, triad):
         scale = next(text.text for text in texts(sheet.layers) if text.text.startswith("μl = "))
         value = float(re.match(r"μl = ([\d.,]+)", scale).group(1).replace(",", "."))
         smaller = dataclasses.replace(force_sheet(triad, plan), length_scale=next_standard_scale(value))
