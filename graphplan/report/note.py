@@ -406,7 +406,7 @@ class _Note:
 
     def scene_warnings(self) -> None:
         """What the run warned of about the scene as a whole (its lengths in millimetres, a working sense its link
-        never takes), said under the data it is about: the console's line is gone by the time the note is handed
+        never takes) and the positions near a singular one, said under the data it is about: the console's line is gone by the time the note is handed
         in, and a note of 550-m links must not read as if nothing were amiss."""
         codes = sorted({warning.code for warning in self.analysis.warnings if warning.code in SCENE_WIDE_WARNINGS})
         working = self.analysis.scene.positions.working
@@ -414,6 +414,14 @@ class _Note:
             self.para(" ".join(self.t("note_warning_" + code.replace("-", "_"), link=working.link if working else "",
                                       longest=self.n(LONGEST_LINK_M), fastest=self.n(FASTEST_CRANK_PIN_M_S))
                                for code in codes))
+        # Near a singular position the plans, and a hand drawing of them, magnify every slip: a note that hands in
+        # their values must say where, as the console did.
+        numbers = self.analysis.positions.numbers
+        singular = sorted({int(numbers[warning.position]) for warning in self.analysis.warnings
+                           if warning.code == "ill-conditioned"})
+        if singular:
+            self.para(self.t("note_warning_ill_conditioned", count=Count(len(singular)),
+                             positions=self.text["enumeration"].join(map(str, singular))))
 
     def frame_rows(self) -> list[list[str]]:
         """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
