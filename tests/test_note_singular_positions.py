@@ -52,3 +52,19 @@ def test_the_note_names_the_position_near_a_singular_one(locale, words):
 def test_a_note_of_a_mechanism_far_from_singular_says_nothing_of_it():
     note = note_markdown(analyse(graphplan.load(RATCHET)))
     assert "близок к особому положению" not in note
+
+
+@pytest.mark.parametrize(("locale", "words"), [
+    ("en", "passes close to a singular position"),
+    ("ru", "проходит вблизи особого положения"),
+    ("zh", "经过奇异位置附近"),
+])
+def test_the_note_names_the_positions_a_singular_one_lies_between(locale, words):
+    """Started at 15°, the positions step over the crank's 270° between position 3 (−75°) and 4 (−105°): none of
+    them is near the singular position, but the mechanism passes it between them."""
+    scene = graphplan.load_text(near_toggle(locale).replace("start       = 0.0", "start       = 15.0"))
+    analysis = analyse(scene)
+    assert {w.code for w in analysis.warnings} == {"toggle-between"}
+    said = [line for line in note_markdown(analysis).splitlines() if words in line]
+    assert len(said) == 1
+    assert "3–4" in said[0]

@@ -406,7 +406,7 @@ class _Note:
 
     def scene_warnings(self) -> None:
         """What the run warned of about the scene as a whole (its lengths in millimetres, a working sense its link
-        never takes) and the positions near a singular one, said under the data it is about: the console's line is gone by the time the note is handed
+        never takes) and the positions near a singular one or passing one, said under the data it is about: the console's line is gone by the time the note is handed
         in, and a note of 550-m links must not read as if nothing were amiss."""
         codes = sorted({warning.code for warning in self.analysis.warnings if warning.code in SCENE_WIDE_WARNINGS})
         working = self.analysis.scene.positions.working
@@ -422,6 +422,11 @@ class _Note:
         if singular:
             self.para(self.t("note_warning_ill_conditioned", count=Count(len(singular)),
                              positions=self.text["enumeration"].join(map(str, singular))))
+        # Between two positions the real mechanism may change its assembly where the solution keeps the first's.
+        toggles = sorted({warning.position for warning in self.analysis.warnings if warning.code == "toggle-between"})
+        if toggles:
+            pairs = (f"{numbers[after]}–{numbers[(after + 1) % len(numbers)]}" for after in toggles)
+            self.para(self.t("note_warning_toggle_between", pairs=self.text["enumeration"].join(pairs)))
 
     def frame_rows(self) -> list[list[str]]:
         """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
