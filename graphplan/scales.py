@@ -11,6 +11,9 @@ from __future__ import annotations
 
 import math
 
+# How the drawings write a number too large or too small to read whole: a leaf of no imports of its own.
+from .render.numerals import POWER_OF_TEN, power_of_ten
+
 # Mantissas of the standard scale factors, as in drafting scales 1:1, 1:2, 1:2.5, 1:4, 1:5.
 STANDARD_MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0)
 
@@ -47,15 +50,14 @@ def fit_scale(extent: float, field_mm: float) -> float:
     return standard_scale(max(extent, 1e-300) / field_mm)
 
 
-# Beyond these a scale factor is written as a power of ten (2.5·10⁻¹², 1·10⁹): whole, its noughts are not read.
-_WHOLE_SCALES = (1e-10, 1e9)
-_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+# Below this, as from the drawings' POWER_OF_TEN on, a scale factor is written as a power of ten (2.5·10⁻¹²,
+# 1·10⁹): whole, its noughts are not read.
+_SMALLEST_WHOLE_SCALE = 1e-10
 
 
 def format_scale(value: float) -> str:
     """A scale factor as written on a drawing: 0.0025, not 2.5e-03; 10000000, not 1e+07 (a 450 MN press's μF
     was written "1e+07 Н/мм" on its force sheet, the only exponent of the drawings)."""
-    if value and not _WHOLE_SCALES[0] <= abs(value) < _WHOLE_SCALES[1]:
-        mantissa, exponent = f"{value:.6e}".split("e")
-        return f"{mantissa.rstrip('0').rstrip('.')}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+    if value and not _SMALLEST_WHOLE_SCALE <= abs(value) < POWER_OF_TEN:
+        return power_of_ten(value, 7)
     return f"{value:.10f}".rstrip("0").rstrip(".")

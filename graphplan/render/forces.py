@@ -56,7 +56,7 @@ from ..plans import Plan
 from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import Drawing, Heading, Rows
-from .labels import Anchor, Placement, obstacles_of, open_direction, place_labels, text_box
+from .labels import Anchor, Placement, cover_one_another, obstacles_of, open_direction, place_labels, text_box
 from .linkage import link_outlines, outline_points
 from .numerals import short, significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
@@ -361,11 +361,8 @@ def labels_cover_one_another(drawing: Drawing) -> bool:
     """Whether two of the labels of a group cut free cover one another: drawn so small that the names of its
     points, loads and arms find no room apart (:func:`~graphplan.render.labels.place_labels` lets a label cover
     another only where no spot round its point is clear)."""
-    boxes = np.array([text_box(item).bounds for layer in drawing.layers if layer.name == f"{drawing.name}-labels"
-                      for item in layer.items if isinstance(item, Text)], dtype=float).reshape(-1, 4)
-    apart = ((boxes[:, None, 0] > boxes[None, :, 2]) | (boxes[None, :, 0] > boxes[:, None, 2])
-             | (boxes[:, None, 1] > boxes[None, :, 3]) | (boxes[None, :, 1] > boxes[:, None, 3]))
-    return bool((~apart)[np.triu_indices(len(boxes), 1)].any())
+    return cover_one_another([item for layer in drawing.layers if layer.name == f"{drawing.name}-labels"
+                              for item in layer.items if isinstance(item, Text)])
 
 
 def _beside(point: complex, vector: complex, bars: BaseGeometry,

@@ -312,6 +312,12 @@ def _pieces(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
     return np.concatenate((segments, whole[kept])), np.concatenate((owners, kept))
 
 
+def cover_one_another(texts: Sequence[Text]) -> bool:
+    """Whether two of ``texts`` cover one another on the paper (their boxes meet)."""
+    boxes = np.array([text_box(text).bounds for text in texts], dtype=float).reshape(-1, 4)
+    return bool(_boxes_meet(boxes[:, None], boxes[None, :])[np.triu_indices(len(boxes), 1)].any())
+
+
 def _boxes_meet(one: np.ndarray, other: np.ndarray) -> np.ndarray:
     """Whether upright boxes ((xmin, ymin, xmax, ymax) in the last axis, broadcast) meet, edges included."""
     return ((one[..., 0] <= other[..., 2]) & (other[..., 0] <= one[..., 2])
