@@ -37,12 +37,11 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
     users = _not_written_by_a_run(folder, option) if folder.is_dir() else []
     # A file of the user's named as the run names one (their own note.md) would be replaced without a word; so would
     # their Note.md on a disk that does not tell capitals apart (Windows', macOS's), where it is the run's note.md.
-    ours = {name.casefold() for name in written}
+    ours = {name.casefold(): name for name in written}
     theirs = [name for name in users if name.casefold() in ours]
     if theirs:
         them = "it" if len(theirs) == 1 else "them"
-        named = {name.casefold(): name for name in written}
-        shown = [name if name in named.values() else f"{name} (the run's {named[name.casefold()]} on a disk that does "
+        shown = [name if name in written else f"{name} (the run's {ours[name.casefold()]} on a disk that does "
                  f"not tell capitals apart)" for name in theirs]
         raise OutputError(f"{target}: holds {', '.join(shown)}, which no graphplan run wrote there and this run "
                           f"would replace; move {them} away, or give {option} another folder")
@@ -128,17 +127,16 @@ def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
     # Replacing the link itself would put a folder in its place and take the user's files out of the one it names.
     folder = resolved if target.is_symlink() else target
     _refuse_a_link_to_nothing_on_the_way(target, folder, option)
-    for above in folder.parents:
-        if above.exists():
-            if not above.is_dir():
-                raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
-            # The new folder is made, and renamed into place, in the folder above it: one that may not be written in
-            # (a read-only disk, another user's folder) refused the rename only once everything was drawn. Windows
-            # is not asked: its read-only mark on a folder does not stop writing in it.
-            if os.name == "posix" and not os.access(above, os.W_OK | os.X_OK):
-                raise OutputError(f"{target}: {above} may not be written in (a read-only disk, or another user's "
-                                  f"folder); give {option} another folder")
-            break
+    above = _nearest_there(folder)
+    if above is not None:
+        if not above.is_dir():
+            raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
+        # The new folder is made, and renamed into place, in the folder above it: one that may not be written in
+        # (a read-only disk, another user's folder) refused the rename only once everything was drawn. Windows
+        # is not asked: its read-only mark on a folder does not stop writing in it.
+        if os.name == "posix" and not os.access(above, os.W_OK | os.X_OK):
+            raise OutputError(f"{target}: {above} may not be written in (a read-only disk, or another user's "
+                              f"folder); give {option} another folder")
     if folder.exists() and not folder.is_dir():
         raise OutputError(f"{target}: exists and is not a folder")
     if folder.is_dir() and os.path.ismount(folder):
@@ -147,6 +145,11 @@ def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
         raise OutputError(f"{target}: is where a disk is mounted, which a run cannot replace; give {option} a folder "
                           "in it")
     return folder
+
+
+def _nearest_there(path: Path) -> Path | None:
+    """The nearest of the folders ``path`` goes in that is there (or the file that stands in its place)."""
+    return next((above for above in path.parents if above.exists()), None)
 
 
 def _refuse_a_link_to_nothing_on_the_way(target: Path, path: Path, option: str) -> None:
@@ -190,7 +193,7 @@ def write_file(target: Path, content: str, replace: bool = True) -> Path:
             raise OutputError(f"{target}: exists already; give another name with --out")
         # A file where a folder on the way should be was told as mkdir's "File exists", naming neither.
         _refuse_a_link_to_nothing_on_the_way(target, target, "--out")
-        above = next((folder for folder in target.parents if folder.exists()), None)
+        above = _nearest_there(target)
         if above is not None and not above.is_dir():
             raise OutputError(f"{target}: {above} is not a folder, so the file cannot go in it")
         target.parent.mkdir(parents=True, exist_ok=True)

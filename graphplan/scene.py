@@ -524,18 +524,18 @@ def _binary_kind(data: bytes) -> str:
 def _other_format(data: str) -> str:
     """A hint where the text TOML refused is another format a scene might be written in: JSON or YAML."""
     text = data.strip()
+    how = "not TOML: a scene writes key = value, and a table as [name] on a line of its own"
     if text.startswith("{"):  # a TOML document cannot begin with a brace
-        return "; it looks like JSON, not TOML: a scene writes key = value, and a table as [name] on a line of its own"
+        return f"; it looks like JSON, {how}"
     if text.startswith("["):
         try:
             json.loads(text)
         except ValueError:
             return ""
-        return "; it looks like JSON, not TOML: a scene writes key = value, and a table as [name] on a line of its own"
+        return f"; it looks like JSON, {how}"
     first = next((line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")), "")
     if first.rstrip() == "---" or re.fullmatch(r"[A-Za-z_][\w-]*\s*:(\s.*)?", first.rstrip()):
-        return ("; it looks like YAML (key: value), not TOML: a scene writes key = value, and a table as [name] on a "
-                "line of its own")
+        return f"; it looks like YAML (key: value), {how}"
     return ""
 
 

@@ -413,19 +413,20 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             drawn = replace(drawn, lever_scale=_smaller_lever(drawn))
             continue
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
-        parts = laid(rows).parts(fits, headless=False)
+        placed = laid(rows)  # the groups parted so far set apart from their equations, laid out once for the step
+        parts = placed.parts(fits, headless=False)
         if parts is not None:
             drawn, one, panels = cut(drawn, one, parts)
             headless = None
             break
         if headless is None:
-            parts = laid(rows).parts(fits)
+            parts = placed.parts(fits)
             headless = (drawn, one, parts) if parts is not None else None
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
-        unheld = laid(rows).unheld(fits)
+        unheld = placed.unheld(fits)
         if not unheld and drawn.caption_size > force_layout.SMALL_CAPTION_SIZE:
-            unheld = laid(rows).unheld(fits, headed=True)
+            unheld = placed.unheld(fits, headed=True)
         if unheld == before or not unheld:
             break  # the packing cuts the panel up, or names the drawing that no sheet holds
         before = unheld

@@ -406,8 +406,9 @@ class _Note:
 
     def scene_warnings(self) -> None:
         """What the run warned of about the scene as a whole (its lengths in millimetres, a working sense its link
-        never takes) and the positions near a singular one or passing one, said under the data it is about: the console's line is gone by the time the note is handed
-        in, and a note of 550-m links must not read as if nothing were amiss."""
+        never takes) and the positions near a singular one or passing one, said under the data it is about: the
+        console's line is gone by the time the note is handed in, and a note of 550-m links must not read as if
+        nothing were amiss."""
         codes = sorted({warning.code for warning in self.analysis.warnings if warning.code in SCENE_WIDE_WARNINGS})
         working = self.analysis.scene.positions.working
         if codes:
