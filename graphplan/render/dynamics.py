@@ -19,13 +19,13 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..dynamics import EquivalentModel
-from ..flywheel import Flywheel, omega_to_rpm
 from ..locale import strings
 from ..scales import fit_scale, format_scale
+from ..units import RPM
 from .labels import Anchor, obstacles_of, place_labels
 from .numerals import short
 from .primitives import (
@@ -44,6 +44,12 @@ from .primitives import (
     text_width,
 )
 from .svg import to_svg
+
+if TYPE_CHECKING:
+    # Read, never made here: the dynamics and the flywheel import scipy.integrate, a third of a cold run that
+    # every sheet's import of this module's layer names would pay.
+    from ..dynamics import EquivalentModel
+    from ..flywheel import Flywheel
 
 # The abscissa of a whole cycle (mm): 2°/mm, as the textbook draws it.
 ABSCISSA_MM = 180.0
@@ -478,7 +484,7 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
         return []
     lines = [
         words["dyn_delta"].format(delta=short(flywheel.delta), omega=short(flywheel.omega_mean, 5),
-                              rpm=short(omega_to_rpm(flywheel.omega_mean), 5)),
+                              rpm=short(flywheel.omega_mean / RPM, 5)),
         words["dyn_delta_w_max"].format(value=short(flywheel.delta_w_max, 5)),
     ]
     if model.inertia_is_constant:
