@@ -34,9 +34,18 @@ examples:
   graphplan run fixtures/ratchet_crank_rocker.toml --only note --format docx              the note for Word
   graphplan run fixtures/ratchet_crank_rocker.toml --sheet A2   the course-project sheets on A2
   graphplan check fixtures/ratchet_crank_rocker.toml            validates and prints the structure formula
+  graphplan run - --only velocity < fixtures/ratchet_crank_rocker.toml    a scene piped in: writes output/stdin/
   graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
   graphplan new shaper --locale ru                              a starter whose sheets and note are in Russian
 """
+
+
+# A scene piped in has no file name to name its output folder after.
+STDIN_FOLDER = "stdin"
+
+
+def _piped(command: str) -> str:
+    return f" (graphplan {command} - < scene.toml; a file named - is ./-)"
 
 
 def _listed(text: str) -> list[str]:
@@ -73,9 +82,11 @@ def _parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = commands.add_parser("run", help="analyse a scene and write results.json, the drawings and the tables",
                               epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
-    run.add_argument("scene", type=Path, help="the scene file (TOML)")
+    # A string: a Path reads ./- as -, which names standard input, not the file ./- names.
+    run.add_argument("scene",
+                     help=f"the scene file (TOML), or - to read it from standard input{_piped('run')}")
     run.add_argument("--out", type=Path, default=None,
-                     help="output folder (default: output/<scene file name>)")
+                     help=f"output folder (default: output/<scene file name>, {Path('output', STDIN_FOLDER)} for -)")
     run.add_argument("--locale", choices=LOCALES, default=None,
                      help="the language of the drawings and the text (default: the scene's [scene] locale)")
     run.add_argument("--sheet", type=_sheet, default=None, metavar="{" + ",".join(SHEETS) + "}",
@@ -93,7 +104,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--figures", action="store_true",
                      help="also draw the report figures with matplotlib (the same as adding 'figures' to --only)")
     check = commands.add_parser("check", help="validate a scene and print its structure formula")
-    check.add_argument("scene", type=Path, help="the scene file (TOML)")
+    check.add_argument("scene",
+                       help=f"the scene file (TOML), or - to read it from standard input{_piped('check')}")
     new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine")
     new.add_argument("kind", choices=KINDS, help="the kind of mechanism, or a flywheel or rotor without one")
     # A string, not a Path: a Path drops the trailing slash that says "a folder" of one not made yet.
@@ -180,18 +192,26 @@ def _terminated_as_interrupted() -> Iterator[None]:
             signal.signal(number, handler)
 
 
-def _check(path: Path) -> int:
+def _load(given: str) -> Scene:
+    """The scene at the path ``given``, or piped into standard input for ``-`` (a file of that name is ``./-``)."""
+    from .scene import load, load_stdin
+
+    return load_stdin() if given == "-" else load(Path(given))
+
+
+def _check(given: str) -> int:
     from .analysis import analyse
     from .deliverables import chosen, refuse_as_run_would
     from .run import note_warnings
-    from .scene import load
+    from .scene import STDIN
 
-    scene = load(path)
+    scene = _load(given)
+    shown = STDIN if given == "-" else Path(given)
     if not scene.has_linkage:
         tables = [name for name in ("dynamics", "balancing", "vibration") if getattr(scene, name) is not None]
         pieces = _pieces(scene, None)
         refuse_as_run_would(scene, None, chosen(scene, None))
-        print(f"{path}: ok")
+        print(f"{shown}: ok")
         print(f"no mechanism; {', '.join(tables)}")
         print(pieces)
         _print_outcomes(scene, None)
@@ -207,7 +227,7 @@ def _check(path: Path) -> int:
     except GraphplanError as error:
         note_warnings(error, analysis)  # as the run, whose refusal this is, tells them
         raise
-    print(f"{path}: ok")
+    print(f"{shown}: ok")
     print(f"structure: {mechanism.structure}")
     print(f"W = 3·{n} − 2·{p5} = {w}")
     turns = analysis.positions.stroke_turns(mechanism.driver.sense)
@@ -267,13 +287,13 @@ def _print_warnings(analysis: Analysis) -> None:
 
 def _run(arguments: argparse.Namespace) -> int:
     from .run import run
-    from .scene import load
 
     progress = Progress()
-    path: Path = arguments.scene
-    scene = load(path)
+    given: str = arguments.scene
+    scene = _load(given)
     # --out=~/report reaches us with its ~ (the shell expands none after an =): a folder named ~ was written here.
-    out = arguments.out.expanduser() if arguments.out is not None else Path("output") / path.stem
+    default = Path("output") / (STDIN_FOLDER if given == "-" else Path(given).stem)
+    out = arguments.out.expanduser() if arguments.out is not None else default
     done = run(scene, out, arguments.only, arguments.formats or ("svg",), arguments.figures, arguments.locale,
                arguments.sheet, say=progress.say)
     print(f"{done.scene.title}")

@@ -9,9 +9,11 @@ tests/test_docs.py.)
 from __future__ import annotations
 
 import cmath
+import io
 import math
 import re
 import shlex
+import sys
 import tomllib
 from pathlib import Path
 from xml.etree import ElementTree
@@ -59,15 +61,34 @@ def student_folder(tmp_path, monkeypatch):
     return tmp_path
 
 
+def piped(words: list[str]) -> tuple[list[str], Path | None]:
+    """A command's words before the shell's ``< file``, and the file it pipes into standard input."""
+    if "<" not in words:
+        return words, None
+    at = words.index("<")
+    return words[:at], Path(words[at + 1])
+
+
 def run_as_printed(words: list[str], capsys) -> str:
-    assert main(words) == 0, " ".join(words)
+    words, stdin = piped(words)
+    with pytest.MonkeyPatch.context() as patch:
+        if stdin is not None:
+            patch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(stdin.read_bytes())))
+        assert main(words) == 0, " ".join(words)
     return capsys.readouterr().out
 
 
+def scene_file(words: list[str]) -> Path:
+    """The scene file a run or check reads: its path, or the file piped in for ``-``."""
+    words, stdin = piped(words)
+    return stdin if words[1] == "-" and stdin is not None else Path(words[1])
+
+
 def out_folder(words: list[str]) -> Path:
+    words, _ = piped(words)
     if "--out" in words:
         return Path(words[words.index("--out") + 1])
-    return Path("output") / Path(words[1]).stem
+    return Path("output") / ("stdin" if words[1] == "-" else Path(words[1]).stem)
 
 
 def test_the_readme_commands_run_in_order_and_write_what_they_say(student_folder, capsys):
@@ -78,7 +99,7 @@ def test_the_readme_commands_run_in_order_and_write_what_they_say(student_folder
     for words, comment in commands:
         printed = run_as_printed(words, capsys)
         if words[0] == "check":
-            assert f"{words[1]}: ok" in printed and "structure: I(1,2)" in printed
+            assert f"{'<stdin>' if words[1] == '-' else words[1]}: ok" in printed and "structure: I(1,2)" in printed
         elif words[0] == "new":
             locale = words[words.index("--locale") + 1] if "--locale" in words else "en"
             written = Path(words[words.index("--out") + 1]) if "--out" in words else Path(f"{words[1]}.toml")
@@ -90,7 +111,7 @@ def test_the_readme_commands_run_in_order_and_write_what_they_say(student_folder
                 assert Path(named) == folder
             names = {path.name for path in folder.iterdir() if not path.name.startswith(".")}
             assert "results.json" in names
-            plans = tomllib.loads(Path(words[1]).read_text(encoding="utf-8"))["positions"]["plans"]
+            plans = tomllib.loads(scene_file(words).read_text(encoding="utf-8"))["positions"]["plans"]
             if "--only" in words and set(words[words.index("--only") + 1].split(",")) <= {"velocity", "acceleration"}:
                 assert {name.split(".")[0] for name in names} - {"results"} == {f"plan_{index}" for index in plans}
             formats = words[words.index("--format") + 1].split(",") if "--format" in words else []
