@@ -117,6 +117,12 @@ class LinkData:
         return self.inertia * abs(self.epsilon)
 
     @property
+    def inertia_moment_signed(self) -> float:
+        """Mu = −J·ε, N·m, counter-clockwise positive as ε is: beside the signed ε, its modulus would read as turning
+        with ε where it turns against it."""
+        return -self.inertia * self.epsilon + 0.0
+
+    @property
     def weight(self) -> float:
         """G = m·g, N."""
         return self.mass * self.gravity
@@ -204,8 +210,8 @@ def initial_data_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") 
               f"G, {text['newton']} |")
     lines = [header, "|---|---:|---:|---:|---:|---:|---:|---:|"]
     for row in rows:
-        cells = (row.mass, row.centre_acceleration, row.inertia_force, row.inertia, row.epsilon, row.inertia_moment,
-                 row.weight)
+        cells = (row.mass, row.centre_acceleration, row.inertia_force, row.inertia, row.epsilon,
+                 row.inertia_moment_signed, row.weight)
         lines.append(f"| {row.link} | " + " | ".join(number(value, mark=mark) for value in cells) + " |")
     return lines
 
