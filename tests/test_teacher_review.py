@@ -160,3 +160,68 @@ def test_the_loads_table_gives_the_inertia_moment_signed_as_epsilon_is_against_i
 def test_the_loads_table_s_inertia_moment_is_signed_alike_in_every_language(shaper, locale, formulas):
     _, note, _ = shaper(locale)
     assert formulas in note
+
+
+@pytest.fixture(scope="module")
+def displaced_shaper(tmp_path_factory):
+    """The shaper of `graphplan new` with its inertia loads applied as one displaced force a link ([forces] inertia =
+    "displaced"), without its friction and dynamics: its scene and note."""
+    folder = tmp_path_factory.mktemp("shaper-displaced")
+    scene_file = folder / "shaper.toml"
+    assert main(["new", "shaper", "--out", str(scene_file)]) == 0
+    scene = tomllib.loads(scene_file.read_text(encoding="utf-8"))
+    del scene["friction"], scene["dynamics"]
+    text = scene_file.read_text(encoding="utf-8")
+    text = re.sub(r"^\[\[friction\]\].*?(?=^\[positions\])", "", text, flags=re.MULTILINE | re.DOTALL)
+    text = re.sub(r"^\[dynamics\].*?(?=^\[drawing\])", "", text, flags=re.MULTILINE | re.DOTALL)
+    scene_file.write_text(text + '\n[forces]\ninertia = "displaced"\n', encoding="utf-8")
+    out = folder / "out"
+    assert main(["run", str(scene_file), "--out", str(out), "--only", "note"]) == 0
+    return scene, (out / "note.md").read_text(encoding="utf-8")
+
+
+def test_a_displaced_inertia_force_is_told_with_its_shift_and_its_point_on_the_lever(displaced_shaper):
+    """With the inertia loads displaced the note still said only "Fu at the centre of mass", while its moment equation
+    gave M(Fu4) = Fu4·h with h measured to the displaced line (0.4042 m, not S4's 0.3012 m) and its lever put Fu4 at
+    s4 with an arm of s4's image shifted.  By hand at position 3: hu4 = J4·|ε4|/(m4·aS4), the line through
+    K = S4 + hu4 across Fu4 with Fu4's moment about S4 equal to Mu4 = −J4·ε4; its arm about C; and on the lever the
+    image k of K, s4 + ω4 × SK, whose arm about the pole at the lever's μV."""
+    scene, note = displaced_shaper
+    angle = shaper_position_angle(scene, 3)
+    velocity, acceleration = shaper_rates(scene, angle)
+    points = shaper_points(scene, angle)
+    link = scene["links"]["4"]
+    force = -link["mass"] * acceleration["4"]
+    moment = -link["inertia"] * float(acceleration["ψ4"])
+    shift = np.array([force[1], -force[0]]) * moment / (force @ force)  # cross(shift, Fu) = Mu
+    assert float(shift[0] * force[1] - shift[1] * force[0]) == pytest.approx(moment)
+    section = note[note.index("### 5.1. Position 3"):note.index("### 5.2.")]
+    hu, = (value(found) for found in re.findall(rf"hu4 = Mu4/Fu4 = {NUMBER}/{NUMBER} = {NUMBER} m", section)[0][2:])
+    assert hu == pytest.approx(np.linalg.norm(shift), rel=1e-4)
+    assert "Fu4 acts on a line hu4 off S4, so that its moment about S4 is Mu4, and takes the place of Mu4" in section
+    line_point = points["4"] + shift
+    arm_about_c = abs(float(line_point[0] * force[1] - line_point[1] * force[0])) / np.linalg.norm(force)
+    product = re.search(rf"M\(Fu4\) = −?Fu4·h = {NUMBER}·{NUMBER} = ", section)
+    assert value(product.group(2)) == pytest.approx(arm_about_c, abs=6e-5)
+    image = velocity["4"] + float(velocity["ψ4"]) * np.array([-shift[1], shift[0]])
+    lever_scale = value(re.search(rf"drawn larger than the velocity plan, at μV = {NUMBER} \(m/s\)/mm", section)
+                        .group(1))
+    # turned by 90°, the image's arm about the pole across the force is the image's part along it
+    arm_on_lever = abs(float(image @ force)) / np.linalg.norm(force) / lever_scale
+    row = re.search(rf"^\| Fu4 \| s4 \+ ω4·hu4 \| {NUMBER} \| {NUMBER} \| {NUMBER} \|$", section, re.MULTILINE)
+    assert row and value(row.group(2)) == pytest.approx(arm_on_lever, abs=6e-3)
+
+
+@pytest.mark.parametrize(("locale", "told"), [
+    ("ru", "сила Fu4 приложена на линии, смещённой на hu4 от S4 так, что её момент относительно S4 равен Mu4"),
+    ("zh", "Fu4 的作用线偏离 S4 距离 hu4，使其对 S4 之矩等于 Mu4")], ids=["ru", "zh"])
+def test_a_displaced_inertia_force_is_told_alike_in_every_language(tmp_path, locale, told):
+    scene_file = tmp_path / "shaper.toml"
+    assert main(["new", "shaper", "--out", str(scene_file), "--locale", locale]) == 0
+    text = scene_file.read_text(encoding="utf-8")
+    text = re.sub(r"^\[\[friction\]\].*?(?=^\[positions\])", "", text, flags=re.MULTILINE | re.DOTALL)
+    text = re.sub(r"^\[dynamics\].*?(?=^\[drawing\])", "", text, flags=re.MULTILINE | re.DOTALL)
+    scene_file.write_text(text + '\n[forces]\ninertia = "displaced"\n', encoding="utf-8")
+    assert main(["run", str(scene_file), "--out", str(tmp_path / "out"), "--only", "note"]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert told in note and "| Fu4 | s4 + ω4·hu4 |" in note

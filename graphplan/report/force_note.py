@@ -119,6 +119,13 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
                       f"{note.n(row.inertia_moment)} {text['newton_metre']}")
             moment += note.with_sense(-row.epsilon)
             parts.append(moment)
+        # [forces] inertia = "displaced": Fu's line is off the centre, which the arms of the moment equations and the
+        # lever's point of Fu measure from; a reader told "Fu at the centre of mass" would measure them from S.
+        displaced = next((load for load in plan.loads if load.name == f"Fu{row.link}" and load.offset != 0), None)
+        if displaced is not None:
+            parts.append(note.t("note_inertia_displaced", link=row.link, centre=row.centre,
+                                moment=note.n(row.inertia_moment), force=note.n(row.inertia_force),
+                                shift=note.n(abs(complex(displaced.offset)))))
         if parts:
             details.append(f"- {note.t('note_link', link=row.link)}{note.text['colon']}"
                            + note.text["semicolon"].join(parts))
@@ -286,6 +293,9 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
             moment_mm = term.moment / drawn_at if abs(term.moment) > ROUNDING * largest else 0.0
             total += moment_mm
             point = note.letter(velocity, term.image) if term.image else "—"
+            if term.image and term.shift:  # a displaced Fu acts at the image of its own point, off its link's
+                link = term.name.removeprefix("Fu")
+                point += f" + ω{link}·hu{link}"
             arm = note.mm(term.arm / drawn_at) if term.image else "—"
             force = note.n(abs(term.force)) if term.image else "—"
             rows.append([term.name, point, force, arm, note.n(moment_mm)])
