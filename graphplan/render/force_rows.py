@@ -18,7 +18,7 @@ import itertools
 import math
 import re
 from collections.abc import Callable, Collection, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, GAP_MM, TITLE_LAYER, Arrangement, title_texts
 from .primitives import Layer, Text, bounds, bounds_of, moved_layers, text_width
@@ -78,10 +78,12 @@ class Heading:
     at it (``("μl = 0.0025 m/mm", "body-")``).  Where the sheet stands in
     parts, the first part is headed ``part_title`` (the title without the
     mechanism's name, which the title block gives) and the others
-    ``continued``; each part's heading names the scales of the drawings that
-    may stand under it, its own and the later parts' (a part that goes on
-    on the sheet of the part before stands under that part's heading), so
-    that the last part, the lever alone, names μV, not the groups' μl.
+    ``continued``; each part's heading is drawn naming the scales of the
+    drawings that may stand under it, its own and the later parts' (a part
+    that goes on on the sheet of the part before stands under that part's
+    heading), and once the parts are packed names those that do
+    (:func:`with_scales_line`): the lever alone names μV, not the groups' μl,
+    and a group alone on its sheet not the μF of polygons on the next.
     Where the parts stand is found with every heading measured at all of
     ``scales`` (:attr:`whole_scales`), so that which of them a part names
     moves no drawing: measured at its own, a lever under a shorter heading
@@ -100,9 +102,8 @@ class Heading:
             raise ValueError(f"a heading's titles are not empty: {self!r}")
 
     def scales_of(self, names: Sequence[str]) -> str:
-        """The line of the scales the drawings ``names`` are drawn at; empty where none has one of the sheet's
-        (force polygons each at its own μF, which their captions give)."""
-        return ", ".join(line for line, start in self.scales if any(name.startswith(start) for name in names))
+        """The line of the scales the drawings ``names`` are drawn at (:func:`scales_line`)."""
+        return scales_line(self.scales, names)
 
     @property
     def whole_scales(self) -> str:
@@ -113,6 +114,28 @@ class Heading:
     def title_size(self) -> float:
         """The next size of GOST 2.304 / ISO 3098 above the captions': 7 mm over 5, 5 mm over 3.5."""
         return next((size for size in LETTER_SIZES if size > self.size + 1e-9), self.size * math.sqrt(2))
+
+
+def scales_line(scales: Sequence[tuple[str, str]], names: Sequence[str]) -> str:
+    """The line of those of ``scales`` (:attr:`Heading.scales`) that the drawings ``names`` (or their layers) are
+    drawn at; empty where none has one of the sheet's (force polygons each at its own μF, which their captions
+    give)."""
+    return ", ".join(line for line, start in scales if any(name.startswith(start) for name in names))
+
+
+def with_scales_line(heading: Layer, line: str) -> Layer:
+    """A heading's layer (:meth:`Rows._heading_layer`) with its line of scales saying ``line``, none where that is
+    empty: the title's lines, in bold, stay where they stand.  Only the words change, so that a heading narrowed
+    to the drawings a sheet holds under it moves none of them."""
+    titles = tuple(item for item in heading.items if not _is_scales_line(item))
+    lines = tuple(replace(item, text=line) for item in heading.items if _is_scales_line(item) and line)
+    return Layer(heading.name, (*titles, *lines))
+
+
+def _is_scales_line(item: object) -> bool:
+    """Whether ``item`` of a heading's layer is its line of scales, the one text not in bold (the title's lines
+    are, :func:`~graphplan.render.plans.title_texts`)."""
+    return isinstance(item, Text) and item.weight != "bold"
 
 
 @dataclass(frozen=True)
@@ -174,7 +197,8 @@ class Rows:
 
     def _scales(self, shape: Shape) -> str:
         """The line of the scales of the drawings that may stand under the heading of ``shape``: those it holds
-        and those of the rows after it, which may go on under its heading on its sheet."""
+        and those of the rows after it, which may go on under its heading on its sheet (once packed, the heading
+        names those that do: :func:`with_scales_line`)."""
         first = min(index for column in shape for index, _ in column)
         return self.heading.scales_of([drawing.name for row in self.drawings[first:] for drawing in row])
 

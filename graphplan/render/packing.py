@@ -18,7 +18,8 @@ the drawings already on a sheet are arranged afresh in their other ways,
 or grown down a column or along a row instead of as a block, where only
 that makes room for the next (fewest changed first); a force sheet stands
 in one column of rows, else in two, and a part of it that goes on from a
-part on the same sheet stands under that part's heading, without its own.  A panel too big for
+part on the same sheet stands under that part's heading, without its own, and each heading then names the
+scales of the drawings under it on its sheet.  A panel too big for
 an empty sheet every way it may stand is placed part by part (a plan sheet
 of one position as its mechanism, velocity plan and acceleration plan; a
 force sheet as its groups, each beside its polygon, and the lever), on
@@ -34,7 +35,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..errors import SceneError
-from .force_rows import HEADING_LAYER, has_heading
+from .force_rows import HEADING_LAYER, has_heading, scales_line, with_scales_line
 from .formats import BIGGER, PADDING_MM, PageGeometry, Rect, check_sheet, holds, orientations, page_geometry
 from .primitives import Layer, bounds
 
@@ -90,6 +91,10 @@ class Panel:
     # have it: the same title repeated read as another drawing.  Its ways (on one line, broken), the first a sheet
     # holds taken; none given: ``heading`` on every sheet.
     continued_heading: tuple[tuple[Layer, ...], ...] = ()
+    # The scales a force sheet's part's heading may name, each with the start of the names of the drawings drawn at
+    # it (:attr:`force_rows.Heading.scales`): drawn naming those of every drawing that may stand under it, once
+    # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
+    heading_scales: tuple[tuple[str, str], ...] = ()
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -317,7 +322,40 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
         last_of_kind[kind] = len(pages) - 1
     for page in pages:
         _centre(page)
+        _headings_named(page)
     return pages
+
+
+def _headings_named(page: Page) -> None:
+    """Each heading on ``page`` naming the scales of the drawings that stand under it there: its part's own and
+    those of the parts that go on from it without their headings (:attr:`Panel.heading_scales`).
+
+    A part is drawn with a heading that names the scales of every later
+    part too, any of which may go on under it; where they went to other
+    sheets, a group cut free alone under it named the μF of polygons and
+    the μV of a lever on other sheets, two μF on one sheet with its own
+    caption's.  Only the words change: every drawing stays where it was
+    placed.
+    """
+    placed = {panel.name: panel for panel, _, _ in page.placed}
+
+    def heading_over(panel: Panel) -> Panel:
+        while _headless(panel) and panel.continues in placed:
+            panel = placed[panel.continues]
+        return panel
+
+    under: dict[str, list[str]] = {}
+    for panel, _, _ in page.placed:
+        under.setdefault(heading_over(panel).name, []).extend(layer.name for layer in panel.layers)
+    page.placed = [(_with_scales_of(panel, under[panel.name]) if panel.heading_scales and panel.name in under
+                    else panel, rect, offset) for panel, rect, offset in page.placed]
+
+
+def _with_scales_of(panel: Panel, names: Sequence[str]) -> Panel:
+    """``panel`` with its heading's line of scales naming those the drawings (or layers) ``names`` are drawn at."""
+    line = scales_line(panel.heading_scales, names)
+    return replace(panel, layers=tuple(with_scales_line(layer, line) if layer.name == HEADING_LAYER else layer
+                                       for layer in panel.layers))
 
 
 # The most arrangements of a page's drawings tried to make room for one more, fewest changed first: each

@@ -377,26 +377,27 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def laid(rows: force_rows.Rows) -> force_rows.Rows:
         return rows.parted(parted) if parted else rows
 
-    def cut(drawn: force_layout.ForceSheet, one: Panel,
-            parts: list[Arrangement]) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
-        """The parts as panels, each going on from the one before; the lever drawn larger where the sheet holds
-        it so on its part without adding a part."""
+    def cut(drawn: force_layout.ForceSheet, one: Panel, parts: list[Arrangement],
+            heading: force_rows.Heading) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
+        """The parts as panels, each going on from the one before, their headings to name the scales of the
+        drawings the packing puts under them (``heading``'s); the lever drawn larger where the sheet holds it so
+        on its part without adding a part."""
         for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
             larger_rows = force_layout.rows(larger, groups_cut_free)
             larger_parts = laid(larger_rows).parts(fits, headless=any(_headless(part) for part in parts))
             if larger_parts is not None and len(larger_parts) == len(parts):
-                drawn, parts = larger, larger_parts
+                drawn, parts, heading = larger, larger_parts, larger_rows.heading
                 one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
                 break
         names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
         return drawn, one, [replace(split(arrangement, name, one.label, _group_of_field),
-                                    continues=names[k - 1] if k else "")
+                                    continues=names[k - 1] if k else "", heading_scales=heading.scales)
                             for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
 
     before: dict[str, tuple[float, float]] = {}
     # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
     # gives every part its heading (a part with none says whose it is by its title block alone).
-    headless: tuple[force_layout.ForceSheet, Panel, list[Arrangement]] | None = None
+    headless: tuple[force_layout.ForceSheet, Panel, list[Arrangement], force_rows.Heading] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn, groups_cut_free)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
@@ -416,12 +417,12 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         placed = laid(rows)  # the groups parted so far set apart from their equations, laid out once for the step
         parts = placed.parts(fits, headless=False)
         if parts is not None:
-            drawn, one, panels = cut(drawn, one, parts)
+            drawn, one, panels = cut(drawn, one, parts, rows.heading)
             headless = None
             break
         if headless is None:
             parts = placed.parts(fits)
-            headless = (drawn, one, parts) if parts is not None else None
+            headless = (drawn, one, parts, rows.heading) if parts is not None else None
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
         unheld = placed.unheld(fits)

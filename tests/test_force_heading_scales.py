@@ -1,0 +1,157 @@
+"""The heading over a force sheet's part names the scales of the drawings that stand under it on its sheet.
+
+A force sheet too big for one sheet stands in parts, each under its heading, a part that goes on on the sheet of
+the part before under that part's heading.  Each heading was drawn naming the scales of its own drawings and of
+every later part's, as any of them might go on under it; where they went to other sheets, the triad's group
+III(3,4,5,6) alone on an A4 (its caption "forces: μF = 4 N/mm") stood under "μl = 0.0025 m/mm, μF = 1 N/mm, μV =
+0.004 (m/s)/mm": the polygons' μF and the lever's μV, both on other sheets, and two μF on one sheet.
+
+The sheets are read as written: which drawings stand on a sheet from their ids (``forces-2-3-polygon-…``, a part's
+name, then its drawing's), the scale each is drawn at from its own caption.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import defaultdict
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+
+from graphplan.cli import main
+
+SVG = "{http://www.w3.org/2000/svg}"
+# A force sheet's part (``forces-2``, ``forces-2-3``, ``forces-friction-8-2``), then the drawing a layer is of.
+PART = re.compile(r"(forces(?:-friction)?-\d+)(?:-(\d+))?-(body-|polygon-|equations-|lever|sheet-title)")
+# The scales a caption or a heading names: "μl = 0.0025 m/mm", "μF = 1 N/mm", "μV = 0.004 (m/s)/mm".
+SCALE = re.compile(r"μ([lFV]) = ([^,]+)")
+
+
+def written(scene: Path, sheet: str, out: Path) -> list[Path]:
+    assert main(["run", str(scene), "--only", "sheets", "--format", "svg", "--sheet", sheet, "--out", str(out)]) == 0
+    return sorted(out.glob("sheet_*.svg"), key=lambda path: int(path.stem.split("_")[1]))
+
+
+def lines_of(group: ElementTree.Element) -> list[str]:
+    """The lines of a caption or heading that are not in bold: a drawing's scales, a heading's line of scales."""
+    return [text.text or "" for text in group.iter(f"{SVG}text") if text.get("font-weight") != "bold"]
+
+
+def scales_in(lines: list[str], symbol: str) -> list[str]:
+    return [f"μ{found} = {value.strip()}" for line in lines for found, value in SCALE.findall(line)
+            if found == symbol]
+
+
+def force_sheet_parts(paths: list[Path]) -> list[dict]:
+    """Each part of a force sheet as it stands on the sheets: the index of its sheet, the force sheet it is a part
+    of (``forces-2``), its number there, its heading's lines not in bold, its line of scales (None: it stands
+    without a heading) and the lines of each of its drawings' captions not in bold, by drawing."""
+    parts: dict[tuple[int, str, int], dict] = {}
+    for page, path in enumerate(paths):
+        for group in ElementTree.parse(path).getroot().iter(f"{SVG}g"):
+            found = PART.match(group.get("id", ""))
+            if found is None:
+                continue
+            whole, number, kind = found.group(1), int(found.group(2) or 1), found.group(3)
+            part = parts.setdefault((page, whole, number), {"page": page, "whole": whole, "number": number,
+                                                            "heading": None, "drawings": {}})
+            rest = group.get("id")[found.start(3):]
+            if kind == "sheet-title":
+                part["heading"] = lines_of(group)
+            elif rest.endswith("-caption"):
+                part["drawings"][rest.removesuffix("-caption")] = lines_of(group)
+    return list(parts.values())
+
+
+def heading_faults(paths: list[Path]) -> list[str]:
+    """Where a heading names a scale no drawing under it on its sheet is drawn at, or leaves out one that is.
+
+    A part without a heading stands under that of the part it goes on from where that stands on its sheet.
+    The groups cut free are drawn at μl, the lever at μV, the polygons at μF, which the heading names where they
+    share one (on every sheet their captions give the same)."""
+    parts = force_sheet_parts(paths)
+    by_key = {(part["page"], part["whole"], part["number"]): part for part in parts}
+    polygon_scales: dict[str, set[str]] = defaultdict(set)
+    for part in parts:
+        for drawing, lines in part["drawings"].items():
+            if drawing.startswith("polygon-"):
+                polygon_scales[part["whole"]].update(scales_in(lines, "F"))
+    under: dict[tuple[int, str, int], set[str]] = defaultdict(set)
+    for part in parts:
+        head = part
+        while head["heading"] is None and (head["page"], head["whole"], head["number"] - 1) in by_key:
+            head = by_key[head["page"], head["whole"], head["number"] - 1]
+        if head["heading"] is None:
+            continue  # a drawing too big to stand under a heading
+        key = (head["page"], head["whole"], head["number"])
+        for drawing, lines in part["drawings"].items():
+            if drawing.startswith("body-"):
+                under[key].update(scales_in(lines, "l"))
+            elif drawing == "lever":
+                under[key].update(scales_in(lines, "V"))
+            elif drawing.startswith("polygon-") and len(polygon_scales[part["whole"]]) == 1:
+                under[key].update(polygon_scales[part["whole"]])
+    faults = []
+    for part in parts:
+        if part["heading"] is None:
+            continue
+        key = (part["page"], part["whole"], part["number"])
+        named = [scale for symbol in "lFV" for scale in scales_in(part["heading"], symbol)]
+        if len(part["heading"]) > 1 or sorted(named) != sorted(under[key]):
+            faults.append(f"{paths[part['page']].name}: {part['whole']} part {part['number']} heading "
+                          f"{part['heading']}, drawings under it at {sorted(under[key])}")
+    return faults
+
+
+# Scenes whose force sheets stand in parts on several sheets: the triad on A4, the Stephenson six-bar on its own
+# A1 (position 3's groups on one sheet under μV, its lever on the next), the Scotch yoke on A3 (a lever going on
+# under the heading of the part before, on its sheet).
+CASES = [("triad_class_iii", "A4"), ("stephenson_six_bar", "A1"), ("scotch_yoke", "A3")]
+
+
+@pytest.fixture(scope="module")
+def sheets_of(tmp_path_factory):
+    made: dict[tuple[str, str], list[Path]] = {}
+
+    def sheets(name: str, sheet: str) -> list[Path]:
+        if (name, sheet) not in made:
+            out = tmp_path_factory.mktemp(f"{name}-{sheet}")
+            made[name, sheet] = written(Path(f"fixtures/{name}.toml"), sheet, out)
+        return made[name, sheet]
+
+    return sheets
+
+
+def test_the_triads_group_alone_on_an_a4_is_headed_with_its_own_scale_alone(sheets_of):
+    parts = force_sheet_parts(sheets_of("triad_class_iii", "A4"))
+    (alone,) = [part for part in parts if part["whole"] == "forces-2" and part["number"] == 1]
+    assert list(alone["drawings"]) == ["body-III-3-4-5-6"]
+    (body_scale,) = scales_in(alone["drawings"]["body-III-3-4-5-6"], "l")
+    assert alone["heading"] == [body_scale]
+    # The equations that go on from it on the next sheet are drawn at no scale: their "continued" names none.
+    (equations,) = [part for part in parts if part["whole"] == "forces-2" and part["number"] == 2]
+    assert [drawing.split("-")[0] for drawing in equations["drawings"]] == ["equations"]
+    assert equations["heading"] == []
+
+
+@pytest.mark.parametrize(("name", "sheet"), CASES)
+def test_every_heading_of_a_force_sheet_in_parts_names_the_scales_of_the_drawings_under_it(sheets_of, name, sheet):
+    paths = sheets_of(name, sheet)
+    parts = force_sheet_parts(paths)
+    pages = {(part["whole"], part["number"]): part["page"] for part in parts}
+    # The case has what it is for: a heading whose part the next goes on from on another sheet.
+    assert any(part["heading"] is not None and pages.get((part["whole"], part["number"] + 1), part["page"])
+               != part["page"] for part in parts)
+    assert heading_faults(paths) == []
+
+
+def test_a_lever_going_on_under_the_heading_of_the_part_before_is_named_in_it(sheets_of):
+    parts = force_sheet_parts(sheets_of("scotch_yoke", "A3"))
+    levers = [part for part in parts if "lever" in part["drawings"] and part["heading"] is None]
+    assert levers
+    for lever in levers:
+        (over,) = [part for part in parts if (part["page"], part["whole"], part["number"])
+                   == (lever["page"], lever["whole"], lever["number"] - 1)]
+        (drawn_at,) = scales_in(lever["drawings"]["lever"], "V")
+        assert drawn_at in over["heading"][0]
