@@ -155,3 +155,45 @@ def test_a_lever_going_on_under_the_heading_of_the_part_before_is_named_in_it(sh
                    == (lever["page"], lever["whole"], lever["number"] - 1)]
         (drawn_at,) = scales_in(lever["drawings"]["lever"], "V")
         assert drawn_at in over["heading"][0]
+
+
+def note_heading_faults(folder: Path) -> list[str]:
+    """Where the heading over the first of the parts the note shows a force sheet in (``forces_2-1.svg``) names
+    another scale than those of the drawings in that part: the whole sheet's polygons share a μF where every
+    polygon caption of it gives the same."""
+    faults = []
+    wholes = [path for path in folder.glob("forces_*.svg") if not re.search(r"-\d+$", path.stem)]
+    assert wholes
+    for whole in wholes:
+        parts = sorted(folder.glob(f"{whole.stem}-*.svg"), key=lambda path: int(path.stem.rsplit("-", 1)[1]))
+        groups = {path: {group.get("id"): group for group in ElementTree.parse(path).getroot().iter(f"{SVG}g")}
+                  for path in (whole, *parts)}
+        polygons = {scale for name, group in groups[whole].items() if name.startswith("polygon-")
+                    and name.endswith("-caption") for scale in scales_in(lines_of(group), "F")}
+        for part in parts:
+            if "sheet-title" not in groups[part]:
+                continue
+            drawn_at = set()
+            for name, group in groups[part].items():
+                if name.startswith("body-") and name.endswith("-caption"):
+                    drawn_at.update(scales_in(lines_of(group), "l"))
+                elif name == "lever-caption":
+                    drawn_at.update(scales_in(lines_of(group), "V"))
+                elif name.startswith("polygon-") and name.endswith("-caption") and len(polygons) == 1:
+                    drawn_at.update(polygons)
+            heading = lines_of(groups[part]["sheet-title"])
+            named = [scale for symbol in "lFV" for scale in scales_in(heading, symbol)]
+            if len(heading) > 1 or sorted(named) != sorted(drawn_at):
+                faults.append(f"{part.name}: heading {heading}, drawings in it at {sorted(drawn_at)}")
+    return faults
+
+
+@pytest.mark.parametrize("only", [[], ["--only", "forces,lever,note", "--format", "svg"]])
+def test_the_heading_over_the_first_part_the_note_shows_a_force_sheet_in_names_its_drawings_scales(tmp_path, only):
+    """The note shows a force sheet too tall for its page in parts, the heading over the first: that heading named
+    every scale of the whole sheet, the lever's μV over the triad's groups, its lever in the next part.  Written
+    with the sheets, the note's force sheet is the sheets' own (laid out for them); without, drawn for itself."""
+    out = tmp_path / "out"
+    assert main(["run", "fixtures/triad_class_iii.toml", *only, "--out", str(out)]) == 0
+    assert list(out.glob("forces_*-1.svg")), "the case: the note shows the force sheets in parts"
+    assert note_heading_faults(out) == []

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from .force_rows import HEADING_LAYER
+from .force_rows import HEADING_LAYER, scales_line, with_scales_line
 from .primitives import Layer, bounds
 
 # A note's page holds a figure this wide and tall (mm): A4's line, and the height that leaves room for its caption
@@ -20,9 +20,15 @@ PAGE_FIGURE_MM = (170.0, 200.0)
 LEAST_PRINT_SCALE = 0.5
 
 
-def note_parts(layers: Sequence[Layer]) -> list[list[Layer]] | None:
+def note_parts(layers: Sequence[Layer], scales: Sequence[tuple[str, str]] = ()) -> list[list[Layer]] | None:
     """``layers`` cut between their rows into parts that each print on a page at :data:`LEAST_PRINT_SCALE` or
-    larger, the heading with the first; None where the drawing prints so whole, or no cut between rows helps."""
+    larger, the heading with the first; None where the drawing prints so whole, or no cut between rows helps.
+
+    Where ``scales`` gives the scales its heading names with the drawings
+    drawn at each (:attr:`~graphplan.render.force_rows.Heading.scales`), the
+    heading names those of the first part's drawings alone: over the
+    groups of the first part it named the μV of a lever on the next.
+    """
     drawn = [layer for layer in layers if layer.items]
     if not drawn or _prints(drawn):
         return None
@@ -38,7 +44,12 @@ def note_parts(layers: Sequence[Layer]) -> list[list[Layer]] | None:
         current += row
         holds_a_row = True
     parts.append(current)
-    return parts if len(parts) > 1 else None
+    if len(parts) < 2:
+        return None
+    if scales:
+        line = scales_line(scales, [layer.name for layer in parts[0]])
+        parts[0] = [with_scales_line(layer, line) if layer.name == HEADING_LAYER else layer for layer in parts[0]]
+    return parts
 
 
 def note_parts_in_order(layers: Sequence[Layer], heading: str) -> list[list[Layer]] | None:

@@ -377,8 +377,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def laid(rows: force_rows.Rows) -> force_rows.Rows:
         return rows.parted(parted) if parted else rows
 
-    def cut(drawn: force_layout.ForceSheet, one: Panel, parts: list[Arrangement],
-            heading: force_rows.Heading) -> tuple[force_layout.ForceSheet, Panel, list[Panel]]:
+    def cut(drawn: force_layout.ForceSheet, one: Panel, parts: list[Arrangement], heading: force_rows.Heading
+            ) -> tuple[force_layout.ForceSheet, Panel, list[Panel], force_rows.Heading]:
         """The parts as panels, each going on from the one before, their headings to name the scales of the
         drawings the packing puts under them (``heading``'s); the lever drawn larger where the sheet holds it so
         on its part without adding a part."""
@@ -392,7 +392,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
         return drawn, one, [replace(split(arrangement, name, one.label, _group_of_field),
                                     continues=names[k - 1] if k else "", heading_scales=heading.scales)
-                            for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
+                            for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))], heading
 
     before: dict[str, tuple[float, float]] = {}
     # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
@@ -402,6 +402,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         rows = force_layout.rows(drawn, groups_cut_free)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
+        heading = rows.heading
         if sheet == "none":
             return one, [one]
         # Its rows in two columns where a sheet is too low for them in one.
@@ -417,7 +418,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         placed = laid(rows)  # the groups parted so far set apart from their equations, laid out once for the step
         parts = placed.parts(fits, headless=False)
         if parts is not None:
-            drawn, one, panels = cut(drawn, one, parts, rows.heading)
+            drawn, one, panels, heading = cut(drawn, one, parts, rows.heading)
             headless = None
             break
         if headless is None:
@@ -448,9 +449,10 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         else:
             break
     if headless is not None:
-        drawn, one, panels = cut(*headless)
+        drawn, one, panels, heading = cut(*headless)
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
-    one, panels = (replace(_at_no_length_scale(one), lever_scale=lever),
+    # The whole names its heading's scales for the note, which shows it in parts (:func:`note_parts.note_parts`).
+    one, panels = (replace(_at_no_length_scale(one), lever_scale=lever, heading_scales=heading.scales),
                    [replace(_at_no_length_scale(part), lever_scale=lever) for part in panels])
     if drawn.length_scale == length_scale(analysis):
         return one, panels
