@@ -19,7 +19,7 @@ from graphplan.render import positions
 from graphplan.render.drawings import forces_svg, positions_plan
 from graphplan.render.labels import obstacles_of, text_box
 from graphplan.render.linkage import frame_pivots
-from graphplan.render.primitives import FONT_SIZE_PER_CAP, Polyline, Text, boxed_width, is_wide
+from graphplan.render.primitives import FONT_SIZE_PER_CAP, Polyline, Text, is_wide, text_width
 from graphplan.render.title_block import SIZES, SMALLEST_LETTERING, TitleBlockFields, labels, scale_text, title_block
 from graphplan.scales import format_scale
 from graphplan.scene import loads
@@ -72,7 +72,7 @@ def test_no_letter_is_boxed_narrower_than_dejavu_sans_sets_it(weight: str) -> No
     font = _dejavu(weight)
     em = 1.0 / FONT_SIZE_PER_CAP  # the cap height at which a text's width in mm is its width in em
     narrower = {character: round(_advance(font, character), 3) for character in _letters()
-                if _advance(font, character) > boxed_width(character, em, weight) + 1e-9}
+                if _advance(font, character) > text_width(character, em, weight) + 1e-9}
     assert narrower == {}
 
 

@@ -223,7 +223,7 @@ def has_wide(text: str) -> bool:
 
 
 def character_width(character: str) -> float:
-    """The advance width of ``character`` in em: a CJK ideograph fills its em square."""
+    """The advance width of ``character`` in em by its class: a CJK ideograph fills its em square."""
     if is_wide(character):
         return 1.0
     if character in _NARROW:
@@ -234,26 +234,26 @@ def character_width(character: str) -> float:
 
 
 def text_width(text: str, size: float, weight: str = "normal") -> float:
-    """How wide ``text`` is drawn at cap height ``size`` (mm), generously, so that its box holds it."""
+    """How wide a box must be to hold ``text`` at cap height ``size`` (mm): :func:`em_width` at that size."""
+    return size * FONT_SIZE_PER_CAP * em_width(text, weight)
+
+
+@functools.lru_cache(maxsize=16384)
+def em_width(text: str, weight: str = "normal") -> float:
+    """How wide ``text`` is in em of its font, generously: as DejaVu Sans sets it, or by the characters' classes
+    (:func:`character_width`) where that is wider.
+
+    The classes alone fall short of letters DejaVu sets wide (ф, ы, м, Ф, №, r, t, W, a minus, an em dash): a
+    Russian scale box's "4 м/мм" ran over its cell's lines, and a label's box, which keeps the labels off one another
+    and the lines, must hold its text too.  The classes stay where they are wider: narrow letters and subscripts
+    are measured generously.  Remembered: a sheet measures its labels at every spot it tries.
+    """
     widening = _BOLD_WIDENING if weight == "bold" else 1.0
-    return widening * size * FONT_SIZE_PER_CAP * em_width(text)
-
-
-def boxed_width(text: str, size: float, weight: str = "normal") -> float:
-    """How wide a box must be to hold ``text`` at cap height ``size`` (mm): as DejaVu Sans sets it, or as
-    :func:`text_width` measures it where that is wider.  A Russian scale box's "4 м/мм" (м is 0.75 em, not a lower
-    case letter's 0.64) ran over its cell's lines, as did Ж, Ш, Щ, Ю in an ESKD name box and №, a minus, an em
-    dash or an ellipsis."""
-    return max(text_width(text, size, weight), size * FONT_SIZE_PER_CAP * _set_em_width(text, weight))
-
-
-@functools.lru_cache(maxsize=8192)
-def _set_em_width(text: str, weight: str) -> float:
-    """How wide DejaVu Sans sets ``text`` in em: its own advances where it has the character, the classes' elsewhere
-    (a CJK ideograph its em square, set in another font)."""
     advance = _dejavu_advances("bold" if weight == "bold" else "normal")
-    widening = _BOLD_WIDENING if weight == "bold" else 1.0
-    return sum(advance(character) or widening * character_width(character) for character in text)
+    by_class = [widening * character_width(character) for character in text]
+    # A character DejaVu has no glyph for (a CJK ideograph, set in Noto Sans CJK) counts by its class.
+    as_set = sum(advance(character) or estimate for character, estimate in zip(text, by_class))
+    return max(sum(by_class), as_set)
 
 
 @functools.cache
@@ -273,13 +273,6 @@ def _dejavu_advances(weight: str):
         return None if glyph is None else metrics[glyph][0] / units
 
     return advance
-
-
-@functools.lru_cache(maxsize=8192)
-def em_width(text: str) -> float:
-    """How wide ``text`` is in em of its font, generously (remembered: a sheet measures its labels at every
-    spot it tries)."""
-    return sum(character_width(c) for c in text)
 
 
 def text_extent(text: Text) -> tuple[float, float, float, float]:

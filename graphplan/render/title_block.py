@@ -35,7 +35,7 @@ from importlib import resources
 
 from ..locale import strings
 from ..scales import format_scale
-from .primitives import MAIN, Polyline, Primitive, Stroke, Text, boxed_width, has_wide, is_wide
+from .primitives import MAIN, Polyline, Primitive, Stroke, Text, has_wide, is_wide, text_width
 
 # The strings of the three forms and of what graphplan writes into them are the locale files' ``tb_`` keys;
 # every locale has every key, so that any form can be drawn in any language.
@@ -293,7 +293,7 @@ class _Block:
         """An ISO 7200 field's name, small in the top left corner of its field."""
         x0, _, x1, y1 = box
         size = min(CORNER_LABEL_SIZE, CORNER_LABEL_SIZE * (x1 - x0 - 2 * LABEL_PADDING)
-                   / boxed_width(value, CORNER_LABEL_SIZE))
+                   / text_width(value, CORNER_LABEL_SIZE))
         self.items.append(Text((self.x + x0 + LABEL_PADDING, self.y + y1 - LABEL_PADDING - 1.15 * size), value,
                                math.floor(size * 1000) / 1000, "start"))
 
@@ -482,8 +482,8 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
         return []
     if lines <= 1 or len(tokens) == 1:
         return [value.strip()]
-    word = [boxed_width(token, size, weight) for token, _ in tokens]
-    space = boxed_width(" ", size, weight)
+    word = [text_width(token, size, weight) for token, _ in tokens]
+    space = text_width(" ", size, weight)
     # The space a token is joined to the token before it by, where the two share a line.
     joint = [space if spaced else 0.0 for _, spaced in tokens]
 
@@ -536,7 +536,7 @@ def fitted(value: str, box: tuple[float, float, float, float], size: float, anch
         # Broken at its spaces where that sets it as large as breaking between ideographs does: «清华大学 机械系»
         # is not cut inside a word.
         for parts in (wrapped(value, count, size, weight, at_spaces=True), wrapped(value, count, size, weight)):
-            widest = max(boxed_width(part, size, weight) for part in parts)
+            widest = max(text_width(part, size, weight) for part in parts)
             # The block of n lines is (n - 1) pitches plus one line's extent (1.45 cap heights) high.
             tall = ((len(parts) - 1) * LINE_PITCH + 1.45) * size
             fit = min(size, size * width / widest, size * height / tall)
