@@ -13,8 +13,11 @@ from xml.etree import ElementTree
 
 import numpy as np
 import pytest
+from shapely.geometry import LineString
 
 from graphplan.cli import main
+from graphplan.render import forces as force_layout
+from graphplan.render.primitives import Arrow
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 SVG = "{http://www.w3.org/2000/svg}"
@@ -353,3 +356,43 @@ def test_the_rotor_balancing_polygons_close_on_the_hand_corrections(tmp_path):
         assert f"θ{plane} = {angle:.1f}°" in caption
         assert number(re.search(rf"m{plane}r{plane} = {NUMBER} kg", caption).group(1)) == pytest.approx(
             abs(corrections[plane]), rel=1e-3)
+
+
+# A load drawn beside its link: on its true line's side of the point its moment is taken about.
+
+@pytest.mark.parametrize("index", [3, 9])
+def test_a_crank_weight_set_beside_the_crank_turns_about_o_as_its_equation_signs_it(tmp_path, index):
+    """The Stephenson six-bar's crank stands nearly upright in positions 3 and 9: G2's line passes half a
+    millimetre from O on the paper, and its arrow, which would lie on the crank's bar, is drawn 2.5 mm beside it.
+    Drawn on the far side of O, it turned about O against the term +G2·h1 written under it."""
+    scene_path = FIXTURES / "stephenson_six_bar.toml"
+    scene = tomllib.loads(scene_path.read_text(encoding="utf-8"))
+    out = run(tmp_path, scene_path, "--only", "forces")
+    position = next(p for p in json.loads((out / "results.json").read_text())["positions"] if p["index"] == index)
+    phi = math.radians(position["driver"]["angle_deg"])
+    # By hand: S2 lies 0.08 m from O along OA (O at the origin); the weight, straight down, turns the crank about O
+    # counter-clockwise where S2 is left of O.
+    centre_of_mass = scene["points"]["S2"]["at"] * math.cos(phi)
+    by_hand = -math.copysign(1.0, centre_of_mass)
+    drawing = Drawing(out / f"forces_{index}.svg")
+    pivot = min(drawing.groups["body-I-1-2-links"]["circles"],
+                key=lambda circle: np.linalg.norm(circle - next(where for text, where in drawing.groups[
+                    "body-I-1-2-labels"]["texts"] if text == "O")))
+    start, tip = drawing.groups["body-I-1-2-G2"]["arrows"][0]
+    direction = tip - start
+    drawn = math.copysign(1.0, (start - pivot)[0] * direction[1] - (start - pivot)[1] * direction[0])
+    written = re.search(r"ΣMO\(2\):.*?([+−]) G2·h\d", drawing.caption("body-I-1-2-caption")).group(1)
+    assert {"+": 1.0, "−": -1.0}[written] == by_hand
+    assert drawn == by_hand, f"G2 drawn turning {'counter-' if drawn > 0 else ''}clockwise about O, written {written}"
+
+
+def test_a_lever_load_set_beside_another_keeps_to_its_lines_side_of_the_pole():
+    """Two loads at one image on one line: the second stands 2.5 mm beside the first where its other side is taken.
+    Its line 1 mm left of the pole, the side to the right would carry it across the pole the lever's moments are
+    taken about, turning it on the drawing against its term in ΣMp."""
+    image, load = complex(-1.0, 5.0), complex(0.0, -10.0)
+    first = [Arrow((-1.0, 5.0), (-1.0, -5.0))]  # drawn before from the same image down the same line
+    taken = LineString(((-1.0, 5.0), (-1.0, 20.0))).buffer(0.8)  # the line's other side, an arm there
+    start, end, shift = force_layout._pushing_or_pulling(image, load, first, lambda: taken)
+    assert abs(shift) == pytest.approx(force_layout.BESIDE_MM)
+    assert start.real < 0 and end.real < 0, f"drawn at x = {start.real:.1f} mm, its line at x = −1 mm, the pole at 0"

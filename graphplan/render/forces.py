@@ -296,8 +296,15 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     blocks = unary_union([Polygon(item.points) for item in links
                           if isinstance(item, Polyline) and item.closed and item.fill is not None])
     shown = [force for force in forces if not _negligible(force.force, [other.force for other in forces])]
+    # The points the equations take each force's moment about: an arrow set beside its line stays on its line's
+    # side of them, so that it turns about each as its term in the equation is signed.
+    centres: dict[str, list[complex]] = {}
+    for equation in group.moments:
+        for term in equation.standing_terms:
+            centres.setdefault(term.name, []).append(_c(paper(sheet.positions[equation.about])))
     beside = {force.name: _beside(_c(paper(force.point)), max(abs(force.force) / scale, LEAST_ARROW_MM)
-                                  * force.force / abs(force.force), bars, blocks) for force in shown}
+                                  * force.force / abs(force.force), bars, blocks, centres.get(force.name, ()))
+              for force in shown}
     # Arrows pointing onto their joint are set first, so that where several share a line the others run on
     # beyond their tails, not head against head.
     stacked: dict[str, Arrow] = {}
@@ -366,7 +373,7 @@ def labels_cover_one_another(drawing: Drawing) -> bool:
 
 
 def _beside(point: complex, vector: complex, bars: BaseGeometry,
-            blocks: BaseGeometry) -> tuple[complex, complex, complex]:
+            blocks: BaseGeometry, centres: Sequence[complex] = ()) -> tuple[complex, complex, complex]:
     """The arrow of a force at ``point``: from it, or onto it where that keeps it off the links' bars, or
     beside the bar it runs along; with the shift that sets it beside (0 where it stands on its point).
 
@@ -377,6 +384,10 @@ def _beside(point: complex, vector: complex, bars: BaseGeometry,
     crank's Fu2 at S2, a weight along an upright link) lies on the bar
     either way: it is drawn parallel to its line, :data:`BESIDE_MM` off it
     on the side the bars leave clearer (else away from them), tied to its point.
+    Set beside, it never crosses a moment centre of ``centres`` its line
+    passes within :data:`BESIDE_MM` of: the crank's G2 with its line 0.5 mm
+    left of O, drawn 2.5 mm to its right, turned clockwise about O on the
+    drawing while its equation and arm h1 took it counter-clockwise.
     """
     def covered(start: complex, end: complex) -> float:
         return LineString((_xy(start), _xy(end))).intersection(bars).length
@@ -391,13 +402,22 @@ def _beside(point: complex, vector: complex, bars: BaseGeometry,
     # A block's loads along its slot stand as they do: set off, they would run along the block's own edge.
     if hidden < max(ALONG_BAR_MM, ALONG_BAR_SHARE * abs(vector)) or shy:
         return (*chosen, 0j)
+    def across(where: complex) -> float:
+        return (where * unit.conjugate()).imag
+
+    def crossed(shift: complex) -> int:
+        return sum(across(point - centre) * across(point + shift - centre) < 0 for centre in centres)
+
     sides = [(start + shift, end + shift, shift) for start, end in (away, onto)
              for shift in (1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM)]
-    # Of sides as clear, the one away from the drawn links, where the loads stand round the group.
+    sides = [side for side in sides if covered(side[0], side[1]) < hidden - 0.5 * ALONG_BAR_MM]
+    if not sides:
+        return (*chosen, 0j)
+    # Of the sides that clear it, one that crosses no moment centre; of those as clear, the one away from the
+    # drawn links, where the loads stand round the group.
     middle = _c(bars.centroid.coords[0]) if not bars.is_empty else point
-    best = min(sides, key=lambda side: (round(covered(side[0], side[1]), 6),
+    return min(sides, key=lambda side: (crossed(side[2]), round(covered(side[0], side[1]), 6),
                                         ((middle - point) * side[2].conjugate()).real > 0))
-    return best if covered(best[0], best[1]) < hidden - 0.5 * ALONG_BAR_MM else (*chosen, 0j)
 
 
 def _points_onto(start: complex, end: complex, point: complex) -> bool:
@@ -441,7 +461,8 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     two, and both at their point, as a hand drawing shows them.  Where the
     other side is taken (the arms run from the pole, another load comes
     in), the second stands beside the first, tied to the point; where that
-    too is taken, it runs on beyond the first (:func:`_unstacked`).
+    too is taken, it runs on beyond the first (:func:`_unstacked`).  Set
+    beside, it keeps to its line's side of the pole where either side is clear.
     """
     def clear(start: complex, end: complex) -> bool:
         return (_unstacked(start, end, at, arrows) == (start, end)
@@ -453,7 +474,12 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     onto = (at - vector, at)
     if clear(*onto):
         return (*onto, 0j)
-    for shift in (1j * vector / abs(vector) * BESIDE_MM, -1j * vector / abs(vector) * BESIDE_MM):
+    unit = vector / abs(vector)
+
+    def crosses_pole(shift: complex) -> bool:  # the lever's moments are about the pole, at 0
+        return (at * unit.conjugate()).imag * ((at + shift) * unit.conjugate()).imag < 0
+
+    for shift in sorted((1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM), key=crosses_pole):
         if clear(away[0] + shift, away[1] + shift):
             return (away[0] + shift, away[1] + shift, shift)
     return (*_unstacked(*away, at, arrows), 0j)
