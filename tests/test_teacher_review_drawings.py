@@ -396,3 +396,23 @@ def test_a_lever_load_set_beside_another_keeps_to_its_lines_side_of_the_pole():
     start, end, shift = force_layout._pushing_or_pulling(image, load, first, lambda: taken)
     assert abs(shift) == pytest.approx(force_layout.BESIDE_MM)
     assert start.real < 0 and end.real < 0, f"drawn at x = {start.real:.1f} mm, its line at x = −1 mm, the pole at 0"
+
+
+def test_the_lever_at_a_scotch_yokes_dead_centre_writes_no_load_that_does_no_work(tmp_path):
+    """At the top dead centre (position 1, the crank at 90°) the yoke stands still and the crank pin moves across
+    the guide: by hand no load does work (the weights and the pin's inertia force are vertical, the yoke's loads act
+    on a link at rest), so Mb = 0 and the lever's equation has no load in it. The drawing wrote every load with arms
+    of 10⁻¹⁴ mm and Mb = −0.00000000000001040 N·m, its rounding."""
+    text = (FIXTURES / "scotch_yoke.toml").read_text(encoding="utf-8")
+    scene_path = tmp_path / "scotch_yoke.toml"
+    scene_path.write_text(re.sub(r"(?m)^plans\s*=.*$", "plans = [1]", text), encoding="utf-8")
+    scene = tomllib.loads(scene_path.read_text(encoding="utf-8"))
+    out = run(tmp_path, scene_path, "--only", "forces,lever")
+    position = next(p for p in json.loads((out / "results.json").read_text())["positions"] if p["index"] == 1)
+    phi = math.radians(position["driver"]["angle_deg"])
+    pin_velocity = scene["driver"]["omega"] * scene["driver"]["length"] * np.array([-math.sin(phi), math.cos(phi)])
+    assert abs(pin_velocity[1]) < 1e-9  # the dead centre: the yoke, moving with the pin's vertical part, at rest
+    caption = Drawing(out / "forces_1.svg").caption("lever-caption")
+    assert "ΣMp: Fb·hb = 0" in caption, caption
+    assert not re.search(r"\bh\d+ = ", caption), caption
+    assert number(re.search(rf"Mb = (−?{NUMBER}) N·m \(Zhukovsky's lever\)", caption).group(1)) == 0.0

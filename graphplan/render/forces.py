@@ -44,11 +44,11 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
-from ..forces import ForcePlan, GroupForces, MomentEquation, PolygonVector, ProjectionEquation
+from ..forces import TERM_ROUNDING, ForcePlan, GroupForces, MomentEquation, PolygonVector, ProjectionEquation
 from ..geometry import Line
 from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
-from ..lever import Lever, turned
+from ..lever import Lever, LeverTerm, turned
 from ..mechanism import Mechanism
 from ..memo import OwnedMemo
 from ..motion import Motion
@@ -1128,7 +1128,17 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     parts: list[str] = []
     count = 0
     moments = {term.name: term.moment for term in lever.terms}
-    standing = {term.name for term in lever.terms if lever.stands(term)} | {"Fb"}
+    # Beside the loads' powers at the plan's fastest point, a term's is rounding where its point stands still or moves
+    # square to it: at a Scotch yoke's dead centre every one is, and the lever wrote h1 = 0.000000000000006661 mm
+    # and Mb = −0.00000000000001040 N·m where the polygons find Mb = 0.
+    reach = (max((abs(value) for value in velocity.points.values()), default=0.0)
+             * max((abs(term.force) for term in lever.terms), default=0.0))
+
+    def stands(term: LeverTerm) -> bool:
+        return lever.stands(term) and abs(term.moment) > TERM_ROUNDING * reach
+
+    standing = {term.name for term in lever.terms if stands(term)} | {"Fb"}
+    balancing = lever.balancing if len(standing) > 1 else 0.0
     undrawn: list[str] = []  # arms in the equation too short to draw, given under it
     # The lever's bars and rays, and every arm (from the pole square to its force's line wherever the arrow
     # stands on it), which an arrow pushing onto its point must not lie along.
@@ -1174,7 +1184,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
     parts += [f"{_sign(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
-              if not term.image and lever.stands(term)]
+              if not term.image and stands(term)]
     arrows += leaders
     groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
     dots = [dot_marker(_xy(mm(group[0])), 0.7 if group[0] == "p" else 0.5) for group in groups]
@@ -1195,7 +1205,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         lettered = [anchor for anchor in lettered if anchor not in near]
         labels = _lettered(anchors + lettered, figure)
     given = sorted([anchor.text for anchor in crowded] + undrawn, key=list(arm_lengths).index)
-    parts.append(f"{_sign(-sum(moments.values()))} Fb·hb")
+    parts.append(f"{_sign(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
     equation = _leading(" ".join(parts))
     caption = [text["lever_title"],
                text["comma"].join((sheet.lever_scale_line,
@@ -1205,7 +1215,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                *_wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
                # The symbol alone: "balancing moment" said twice broke each line in two under a narrow lever (the
                # lever's title and its ΣMp say what Mb is).
-               _balancing_line(sheet, lever.balancing, "balancing_by_lever", named=False),
+               _balancing_line(sheet, balancing, "balancing_by_lever", named=False),
                _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
                text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
     return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
