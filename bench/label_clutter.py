@@ -11,7 +11,7 @@ and placement are kept. For each placement:
   point's dot), a filled block's outline or another label's leader (its own leader starts at its own point and ends at its box, and is not counted);
 * obstacle hits: (label, obstacle) pairs whose shapes meet, any obstacle (lines, dots, arrowheads, texts);
 * overlapping: pairs of labels whose boxes meet (the placer keeps them apart: must stay 0);
-* leaders and their mean length (mm); the time spent placing (s).
+* leaders and their mean length (mm); the CPU time spent placing (s: the machine is shared, its wall time noisy).
 
 The machine is shared and noisy, so with ``--baseline`` both placers run fixture by fixture alternately and the
 figures that matter are the ratios of the one run. Results go to bench/results/label_clutter.md.
@@ -67,14 +67,14 @@ class Recorder:
     calls: list = field(default_factory=list)
 
     def __call__(self, anchors, obstacles, *args, **kwargs):
-        start = time.perf_counter()
+        start = time.process_time()
         placement = self.place(anchors, obstacles, *args, **kwargs)
-        self.calls.append((list(anchors), list(obstacles), placement, time.perf_counter() - start))
+        self.calls.append((list(anchors), list(obstacles), placement, time.process_time() - start))
         return placement
 
 
 # The obstacles drawn as lines, by id while their call lasts: what a label can lie on.
-LINES: dict[int, object] = {}
+LINES: dict[int, tuple] = {}
 # A circle smaller than this (radius, mm) is a point's dot or a pin, not a line a label lies on.
 DOT_RADIUS = 1.5
 
@@ -88,7 +88,8 @@ def recording_obstacles_of(items):
         for shape in own:
             if isinstance(item, labels.Text) or (isinstance(item, labels.Circle) and item.radius < DOT_RADIUS):
                 continue
-            LINES[id(shape)] = shape.boundary if shape.geom_type == "Polygon" else shape
+            # The shape kept beside its line: an id is only unique while its object lives.
+            LINES[id(shape)] = (shape, shape.boundary if shape.geom_type == "Polygon" else shape)
         shapes += own
     return shapes
 
@@ -107,7 +108,7 @@ def clutter_of(anchors, obstacles, placement, seconds: float) -> Clutter:
     for leader in leaders:
         start = np.array(leader.coords[0])
         leader_owner.append(int(np.argmin([np.hypot(*(start - anchor.at)) for anchor in anchors])))
-    lines = [LINES[id(shape)] for shape in obstacles if id(shape) in LINES]
+    lines = [LINES[id(shape)][1] for shape in obstacles if id(shape) in LINES and LINES[id(shape)][0] is shape]
     line_tree = shapely.STRtree(lines) if lines else None
     leader_tree = shapely.STRtree(leaders) if leaders else None
     for index, label in enumerate(boxes):
@@ -195,7 +196,7 @@ def main() -> None:
                           file=sys.stderr)
     lines = ["# Label clutter", "", "`python bench/label_clutter.py" + (f" --baseline {args.baseline}`" if
              args.baseline else "`"), "", "Every fixture, en and ru, `--sheet none`; the columns as the script's",
-             "docstring defines them. Placing time is the sum over all calls of `place_labels` (noisy machine).", ""]
+             "docstring defines them. Placing time is the CPU time of all calls of `place_labels`.", ""]
     totals = {}
     for name, rows in results.items():
         section, totals[name] = table(name, rows)
