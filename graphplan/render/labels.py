@@ -4,12 +4,14 @@ A label is tried at sixteen spots on each of a few rings around its point,
 nearest first in the preferred direction; a spot costs for what the label's
 box would cover (the drawn lines, the boxes of labels already placed) and
 for standing nearer another point than its own.  Where nothing beside the
-point is free the label is set apart on a thin leader line.  Shapely does
+point is free the label is set apart on a thin leader line.  A label left
+on a line once all stand tries finer spots, and a neighbour's.  Shapely does
 the intersection tests.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -110,6 +112,17 @@ REPAIR_ROUNDS = 2
 # What covering a drawn line costs where the labels keep off the lines (``off_lines``): more than any clear spot,
 # less than covering another label.
 LINE_COVERED = OVERLAP / 2
+# The rings of the finer spots tried for a label left on a line (in twice the directions): a ring between the two
+# beside the point, and those beside it and led to it.
+FINE_SHARES = (0.0, 0.25, 0.5, 1.1, 1.8)
+# A leader with more than this of its length (mm) within ALONG_WIDTH of a drawn line runs along it, reading as part
+# of it: a neighbour is not moved to such a spot.
+ALONG = 1.0
+ALONG_WIDTH = 0.25
+# How many cheaper spots a label left on a line looks at, and how many of those it tries, each by moving the one
+# neighbour that stands there (a spot two labels stand on is passed over).
+SPOTS_LOOKED_AT = 12
+MOVES_TRIED = 2
 # A leader starts this far from its point (mm), clear of the point's dot.
 LEADER_CLEARANCE = 0.9
 
@@ -131,6 +144,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     near a point covers another label, rings farther out are tried; and a
     label that still had to cover another is placed again once all stand,
     after the one it covers, which may now find a clear spot elsewhere.
+    Then each label left covering a line (or a point, or a text) looks
+    for a spot that covers less at a lower cost: among finer spots round
+    its point (between two directions, where lines meeting at the point
+    leave room), or where a single neighbour stands that can move without
+    covering more or taking a leader it had not.
 
     ``standing`` are labels set already (the numbers round a crank's
     circle): the anchors' labels keep clear of them as of one another.
@@ -176,12 +194,13 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     led_from = len(BESIDE_SHARES)
     apart_from = led_from + len(LED_SHARES)
 
-    def costed(index: int, shares: tuple[float, ...], first_ring: int):
-        """The spots on the rings at ``shares`` round the anchor, numbered from ``first_ring``: their
-        boxes, their rings, the leaders of those led, and what each costs."""
+    def costed(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int = 16):
+        """The spots on the rings at ``shares`` round the anchor, numbered ``rings`` (a ring between two of the
+        standard rings costs between them): their boxes, their rings, the leaders of those led, and what each
+        costs."""
         anchor = anchors[index]
-        ring, order, candidates = _candidates(anchor, gap, shares)
-        ring = ring + first_ring
+        ring, order, candidates = _candidates(anchor, gap, shares, directions)
+        ring = np.asarray(rings, dtype=float)[ring]
         shapes = shapely.box(*candidates.T)
         # A label nearer another labelled point than its own would name the wrong one.  A box reaching
         # at most `reach` from its point is at least `away - reach` from a point `away` off, and at most
@@ -198,7 +217,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         lines = _leaders(anchor.at, candidates[led])
         # What the boxes and the leaders cover, in one query of the tree.
         covers = covered(np.concatenate((shapes, lines)))
-        cost = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
+        clashing = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
+        cost = clashing.copy()
         cost = cost + COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         # Two thin leaders crossing each other still lead each to its own label: less amiss than a leader
         # through a label, yet more than any drawn line covered.
@@ -207,32 +227,37 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # The leader says which point the label names: standing near a neighbour misleads less.
         cost[beside] += MISLEADING * misleading[beside]
         cost[led] += crossings + LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
+        clashing[led] += crossings
         cost[ring >= apart_from] += SET_APART
         # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
         # it: beside the point already, it has no leader to draw.
         cost[led[_box_distances(candidates[led], at[index:index + 1])[:, 0] == 0.0]] += OVERLAP
         if anchor.under is not None:
             cost[candidates[:, 3] > anchor.under + 1e-9] += OVERLAP
-        covering = covers[:len(shapes)] > 0
+        covering = covers[:len(shapes)]
         if off_lines:
-            cost[covering] += LINE_COVERED
-        return candidates, beside, led, lines, cost, covering
+            cost[covering > 0] += LINE_COVERED
+        return candidates, beside, led, lines, cost, covering, clashing
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
 
-    def place(index: int) -> None:
-        """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
+    fine_rings = np.interp(FINE_SHARES, (*BESIDE_SHARES, *LED_SHARES), np.arange(apart_from))
+    kinds = {"near": (near_shares, np.arange(len(near_shares)), 16),
+             "far": (FAR_SHARES, np.arange(len(FAR_SHARES)) + len(near_shares), 16),
+             "fine": (FINE_SHARES, fine_rings, 2 * 16)}
+
+    # Each standard spot short of those set apart, as the finer spot at the same place: its direction's turn doubled.
+    standard_turns, fine_turns = _turns(16), list(_turns(2 * 16))
+    as_fine = np.array([FINE_SHARES.index(share) * len(fine_turns) + fine_turns.index(2 * turn)
+                        for share in (*BESIDE_SHARES, *LED_SHARES) for turn in standard_turns])
+
+    def spots(index: int, kind: str = "near"):
+        return costed(index, *kinds[kind])
+
+    def put(index: int, spot: tuple, best: int, kind: str) -> None:
+        """Set the label of ``index`` at spot ``best`` of ``spot`` (what :func:`costed` gave)."""
         anchor = anchors[index]
-        candidates, beside, led, lines, cost, covering = costed(index, near_shares, 0)
-        best = int(np.argmin(cost))
-        if cost[best] >= OVERLAP or (off_lines and covering[best]):
-            # Every spot near the point covers a label or a leader (the pole of a crowded lever), or a drawn line
-            # where the drawing has room to keep off its lines: farther out, on a longer leader, before writing one
-            # label over another.
-            far = costed(index, FAR_SHARES, len(near_shares))
-            if far[4].min() < cost[best]:
-                candidates, beside, led, lines, cost, _ = far
-                best = int(np.argmin(cost))
+        candidates, beside, led, lines, cost = spot[:5]
         x0, y0, x1, _ = candidates[best]
         texts[index] = Text(((x0 + x1) / 2, y0 + 0.3 * anchor.size), anchor.text, anchor.size, "middle",
                             anchor.colour)
@@ -241,8 +266,112 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         if not beside[best]:
             leader_lines[index] = lines[best - led[0]]
         paid[index] = float(cost[best])
+        where[index] = (kind, best, float(spot[5][best]))
+
+    def place(index: int) -> None:
+        """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
+        spot = spots(index)
+        cost, covering = spot[4], spot[5]
+        best, kind = int(np.argmin(cost)), "near"
+        if cost[best] >= OVERLAP or (off_lines and covering[best] > 0):
+            # Every spot near the point covers a label or a leader (the pole of a crowded lever), or a drawn line
+            # where the drawing has room to keep off its lines: farther out, on a longer leader, before writing one
+            # label over another.
+            farther = spots(index, "far")
+            if farther[4].min() < cost[best]:
+                spot, best, kind = farther, int(np.argmin(farther[4])), "far"
+        put(index, spot, best, kind)
+
+    def saved(*indices: int) -> list:
+        return [(k, texts[k], placed_boxes[k], leader_lines.get(k), paid[k], where[k]) for k in indices]
+
+    def restore(state: list) -> None:
+        for k, text, spaced, leader, cost, spot in state:
+            texts[k], placed_boxes[k], paid[k], where[k] = text, spaced, cost, spot
+            leader_lines.pop(k, None)
+            if leader is not None:
+                leader_lines[k] = leader
+
+    straight = shapely.get_type_id(pieces) == shapely.GeometryType.LINESTRING if fixed else np.zeros(0, dtype=bool)
+
+    def runs_along(leader: BaseGeometry) -> bool:
+        """Whether ``leader`` runs along a drawn line (more than ALONG of it on the line), reading as part of it."""
+        if tree is None:
+            return False
+        # Within a stroke's width of the line, not only on it: a point a hair off its line leads along it too.
+        near = tree.query(leader, predicate="dwithin", distance=ALONG_WIDTH)
+        near = near[straight[near]]
+        strokes = shapely.buffer(pieces[near], ALONG_WIDTH, quad_segs=1)
+        return bool(shapely.length(shapely.intersection(leader, strokes)).max(initial=0.0) > ALONG)
+
+    def off_the_line(index: int) -> None:
+        """Move the label of ``index``, which covers a drawn line, where it covers less and costs less: to the
+        cheapest of finer spots round its point (twice the directions, a ring between the two beside it, no farther
+        out than those led to it), and else to one of those that a single neighbouring label stands on, when that
+        neighbour finds another spot covering no more, and the two cost less together."""
+        kind, best, covers = where[index]
+        # Between lines meeting at a point a clear spot often lies between two of the standard ones.
+        spot = spots(index, "fine")
+        cost, covering, clashing = spot[4], spot[5], spot[6]
+        # Only spots that cover less: a move trades no line for another, nor for a point or a text.
+        less = covering < covers - 1e-9
+        # The standard spots beside the point and led to it are among the finer ones (but for the order's tie-break).
+        same = best if kind == "fine" else as_fine[best] if kind == "near" and best < len(as_fine) else None
+        before = float(cost[same] if same is not None else spots(index, kind)[4][best])
+        if before >= OVERLAP:
+            return  # left covering another label's leader: the repair rounds' business, not this one's
+        finest = int(np.argmin(np.where(less, cost, np.inf)))
+        if less[finest] and cost[finest] < before - 1e-9:
+            put(index, spot, finest, "fine")
+            if not covering[finest]:
+                return
+            before, less = float(cost[finest]), covering < covering[finest] - 1e-9
+        # Spots that would be cheaper but for one neighbour's label or leader, cheapest first.
+        free = cost - clashing
+        hopeful = [k for k in np.argsort(free, kind="stable")
+                   if less[k] and free[k] < before - 1e-9 and clashing[k] > 0]
+        owners = np.array([k for k in placed_boxes if k != index] + [k for k in leader_lines if k != index])
+        shapes = np.array([placed_boxes[k] for k in placed_boxes if k != index]
+                          + [leader_lines[k] for k in leader_lines if k != index], dtype=object)
+        tried: set[int] = set()
+        for candidate in hopeful[:SPOTS_LOOKED_AT]:
+            if len(tried) == MOVES_TRIED:
+                break
+            mine = [shapely.box(*spot[0][candidate])]
+            if not spot[1][candidate]:
+                mine.append(spot[3][candidate - spot[2][0]])
+            hit = np.zeros(len(shapes), dtype=bool)
+            for shape in mine:
+                hit |= shapely.intersects(shape, shapes)
+            neighbours = set(owners[hit].tolist())
+            # One neighbour that is an anchor's (not a label standing already), and not tried yet.
+            if len(neighbours) != 1 or min(neighbours) < 0 or neighbours <= tried:
+                continue
+            (neighbour,) = neighbours
+            tried.add(neighbour)
+            state = saved(index, neighbour)
+            # What the neighbour paid where it stands: at most what it costs now, which labels lettered after it
+            # can only have raised; a move judged against it is never worse.
+            together, its_covers, its_leader = before + paid[neighbour], where[neighbour][2], neighbour in leader_lines
+            put(index, spot, int(candidate), "fine")
+            place(neighbour)
+            # The spot costs what it would but for the neighbour, and what it pays for the neighbour where it went.
+            theirs = [placed_boxes[neighbour], *([leader_lines[neighbour]] if neighbour in leader_lines else [])]
+            moved = float(free[candidate]) + sum(
+                LEADERS_CROSSING if (one, other) == (1, 1) else OVERLAP  # two leaders crossing, else a label hit
+                for one, mine_shape in enumerate(mine) for other, their in enumerate(theirs)
+                if mine_shape.intersects(their))
+            # The neighbour covers no more than it did, and stays beside its point if it stood there: a label off a
+            # line never puts another on one, nor sends it off on a leader (one run along a line reads as the line).
+            if (moved < OVERLAP and paid[neighbour] < OVERLAP and moved + paid[neighbour] < together - 1e-9
+                    and where[neighbour][2] <= its_covers + 1e-9 and (its_leader or neighbour not in leader_lines)
+                    and not (neighbour in leader_lines and runs_along(leader_lines[neighbour]))):
+                paid[index] = moved
+                return
+            restore(state)
 
     order = _most_crowded_first(anchors, at)
+    where: dict[int, tuple[str, int, float]] = {}
     for index in order:
         place(index)
     # Lettered one by one, a label can take the only clear spot of a later one.  Each label that had to cover
@@ -255,6 +384,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                         and any(_clash(index, other, placed_boxes, leader_lines) for index in clashing)]
         for index in covered_ones + clashing:
             place(index)
+    # Lettered one by one, a label can also be left on a line beside its point where a neighbour lettered before
+    # it took the clear spot, which the neighbour did not need: the two change places when that costs less.
+    for index in order:
+        if where[index][2] > 0 and paid[index] < OVERLAP:
+            off_the_line(index)
     leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
     return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
@@ -332,8 +466,10 @@ def _box_distances(boxes: np.ndarray, points: np.ndarray) -> np.ndarray:
     return np.hypot(dx, dy)
 
 
-def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(ring, order, box) of every spot: sixteen directions on each ring, the preferred direction first.
+def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...],
+                directions: int = 16) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(ring, order, box) of every spot: sixteen directions (or ``directions``) on each ring, the preferred
+    direction first.
 
     The rings of :data:`BESIDE_SHARES` stand beside the point; a label on
     those of :data:`LED_SHARES` and :data:`APART_SHARES` gets a leader line.
@@ -341,14 +477,22 @@ def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...]) -> tuple[
     """
     width = text_width(anchor.text, anchor.size)
     radii = np.array([gap + share * anchor.size for share in shares])
-    turns = np.array((0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8))
+    half = directions // 2
+    turns = _turns(directions)
     ring, order = np.divmod(np.arange(len(radii) * len(turns)), len(turns))
-    direction = anchor.prefer + turns[order] * math.pi / 8
+    direction = anchor.prefer + turns[order] * math.pi / half
     # Push the box's near edge, not its centre, out to the radius.
     x = anchor.at[0] + np.cos(direction) * (radii[ring] + width / 2)
     y = anchor.at[1] + np.sin(direction) * (radii[ring] + 0.55 * anchor.size) - 0.45 * anchor.size
     boxes = np.stack((x - width / 2, y - 0.3 * anchor.size, x + width / 2, y + 1.15 * anchor.size), axis=1)
     return ring, order, boxes
+
+
+def _turns(directions: int) -> np.ndarray:
+    """The steps of a full turn / ``directions`` from the preferred direction, in the order the spots are tried:
+    nearest first, each way."""
+    half = directions // 2
+    return np.array([0, *(turn for step in range(1, half) for turn in (step, -step)), half])
 
 
 def open_direction(at: tuple[float, float], items: Sequence[Primitive], default: float = math.pi / 4,
@@ -367,7 +511,7 @@ def open_direction(at: tuple[float, float], items: Sequence[Primitive], default:
             segments = [(item.start, item.end)]
         elif isinstance(item, Polyline):
             points = item.points + ((item.points[0],) if item.closed else ())
-            segments = list(zip(points, points[1:]))
+            segments = list(itertools.pairwise(points))
         else:
             continue
         for (x0, y0), (x1, y1) in segments:
