@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 from console import without_progress
 
-from graphplan import scene as scene_module
+from graphplan import scene_file as scene_module
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 PACKAGE_ROOT = FIXTURE.parent.parent
