@@ -71,5 +71,6 @@ def test_the_tables_with_friction_are_in_the_scene_s_language(locale):
     settled = [p for p in analysis.plans if not p.with_friction.locked]
     assert written.count(text["forces_friction_reactions"]) == len(settled)
     assert written.count(f"| {text['column_pair']} | {text['column_friction_factor']} |") == len(settled)
-    load = r"\| Ff14 = [\d,]+ Н \|" if locale == "ru" else r"\| Ff14 = [\d.]+ N \|"
+    # The friction force with its direction along the guide, as every load is written.
+    load = r"\| Ff14 = [\d,]+ ∠ −?[\d,]+° Н \|" if locale == "ru" else r"\| Ff14 = [\d.]+ ∠ −?[\d.]+° N \|"
     assert len(re.findall(load, written)) == len(settled)

@@ -9,6 +9,7 @@ plan letters it shares; the tables are those ``forces.md`` prints (:mod:`graphpl
 
 from __future__ import annotations
 
+import cmath
 import math
 from collections.abc import Mapping
 from typing import Protocol
@@ -167,17 +168,25 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
                 reduced = f" = f/sin θ = {note.n(pair.spec.f)}/sin {note.n(math.degrees(pair.spec.groove_half_angle))}°"
             lines.append(f"- {symbol}{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
                          f"{symbol}{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))}"
-                         f" = {note.n(row.value)} {text['newton']}")
+                         f" = {note.n(row.value)}{_direction(note, row.acting)} {text['newton']}")
         else:
             lines.append(f"- ρ{where} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "
                          f"{note.n(row.factor)} {text['unit_m']}{text['semicolon']}{name} = "
                          f"ρ{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))} = "
-                         f"{note.n(row.value)} {text['newton_metre']}")
+                         f"{note.n(row.value)} {text['newton_metre']}{note.with_sense(row.acting.real)}")
     note.para(note.t("note_friction_loads"), *lines)
     lever = plan.lever_with_friction
     name, unit = force_report.balancing_symbol(note.analysis)
     note.para(note.t("note_friction_lever", name=name, value=note.n(lever.balancing), unit=unit,
                      difference=force_report.percent(lever.balancing, rubbing.balancing, note.mark)))
+
+
+def _direction(note: Writer, force: complex) -> str:
+    """`` ∠ 180°`` after a friction force's size: which way it acts along the slide, against the sliding, as the
+    note writes the external loads' directions; nothing for a force of rounding noise, which has none."""
+    if not abs(force) > force_report.ROUNDING_NOISE:
+        return ""
+    return f" ∠ {note.n(math.degrees(cmath.phase(force)))}°"
 
 
 def _force_group(note: Writer, plan: PlanPosition, group) -> None:

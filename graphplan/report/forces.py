@@ -279,7 +279,9 @@ class FrictionLoad:
     ``where`` names the pair in ρ and f (f′ in a V-guide) as the drawings do (:func:`pair_name`): its joint (ρO,
     fE), or its links where two pairs with friction share the joint (ρ23 and f43 at a block's pin in its slot);
     ``reaction`` is |R| of the pair (N); ``moving`` is
-    false where the pair's links do not move relative to each other, and its load is then 0.
+    false where the pair's links do not move relative to each other, and its load is then 0.  ``acting`` is the
+    load as it acts on the pair's later link: a journal's moment signed counter-clockwise positive, a slide's force
+    as a vector, whose sense against the relative motion the reader checks the drawing by.
     """
 
     pair: FrictionPair
@@ -287,6 +289,7 @@ class FrictionLoad:
     name: str
     reaction: float
     moving: bool = True
+    acting: complex = 0j
 
     @property
     def factor(self) -> float:
@@ -312,7 +315,8 @@ def friction_load_rows(analysis: Analysis, plan: PlanPosition) -> list[FrictionL
         name = pair.load_names[0]
         load = acting.get(name)
         moving = load is None or bool(np.any(load.force if pair.sliding else load.moment))
-        rows.append(FrictionLoad(pair, where, name, abs(rubbing.reactions[pair.reaction].force), moving))
+        signed = 0j if load is None else complex(np.asarray(load.force if pair.sliding else load.moment).item())
+        rows.append(FrictionLoad(pair, where, name, abs(rubbing.reactions[pair.reaction].force), moving, signed))
     return rows
 
 
@@ -339,16 +343,25 @@ def friction_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
               f"{text['newton']} | {text['column_friction_load']} |"), "|---|---:|---:|---:|"]
     for row in friction_load_rows(analysis, plan):
         pair = row.pair
+        # With its sense, as the note writes it: a moment's size ρ·|R| and the way it turns the later link, a force
+        # ∠ its direction; a size alone left the reader to guess which way each pair rubs.
         if pair.sliding:
             factor = f"{'f′' if pair.in_vee else 'f'}{row.where} = {number(row.factor, mark=mark)}"
-            unit = text["newton"]
+            load = f"{polar(row.acting if row.moving else 0j, mark)} {text['newton']}"
         else:
             factor = f"ρ{row.where} = {number(row.factor, mark=mark)} {text['unit_m']}"
-            unit = text["newton_metre"]
+            load = f"{number(row.value, mark=mark)} {text['newton_metre']}{_turning(text, row, mark)}"
         lines.append(f"| {pair.joint} ({pair.source}–{pair.target}) | {factor} | "
-                     f"{pair.reaction} = {number(row.reaction, mark=mark)} | "
-                     f"{row.name} = {number(row.value, mark=mark)} {unit} |")
+                     f"{pair.reaction} = {number(row.reaction, mark=mark)} | {row.name} = {load} |")
     return lines
+
+
+def _turning(text: Mapping[str, str], row: FrictionLoad, mark: str) -> str:
+    """``, clockwise`` after a friction moment's size: the sense it turns the pair's later link in; nothing after
+    one written 0."""
+    if not row.moving or number(row.acting.real, mark=mark) == "0":
+        return ""
+    return text["comma"] + text["sense_ccw" if row.acting.real > 0 else "sense_cw"]
 
 
 def friction_lever_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
