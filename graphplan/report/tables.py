@@ -170,9 +170,12 @@ def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[Velo
 
 
 def _written(reading: str, text: dict[str, str], mark: str) -> str:
-    """A reading as the scene gives it (``pb = 100.98 mm``) in the locale's words: ``pb = 100,98 мм``."""
+    """A reading as the scene gives it (``pb = 100.98 mm``) in the locale's words: ``pb = 100,98 мм``.  A reaction's
+    reading names its polygon's μF in English (``R23 = 40 mm at μF = 50 N/mm``, for the warnings): only the
+    length is kept, the one the sentence compares with the other segment's."""
     name, value = reading.split(" = ", 1)
-    return f"{name} = {value.removesuffix(' mm').replace('.', mark)} {text['millimetre']}"
+    millimetres = value.split(" ", 1)[0]
+    return f"{name} = {millimetres.replace('.', mark)} {text['millimetre']}"
 
 
 def _polygons_line(rescaled: Rescaled, text: dict[str, str], mark: str) -> str:
