@@ -5,6 +5,7 @@ import dataclasses
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.report.note import note_markdown
 from graphplan.report.tables import markdown
 
 SHAPER = "fixtures/shaper_six_bar.toml"
@@ -35,3 +36,32 @@ def test_a_reaction_read_as_another_segment_is_told_in_the_table_s_language_with
         assert f"R23 = {f'{typed:g}'.replace('.', mark)} {millimetre}" in line, line
         assert "N/mm" not in line and " at " not in line, line
         assert "pa4" in line, line
+
+
+def _ram_at_rest_position(analysis):
+    """The position whose ram stands still, found here from the motion's own points: E's speed against A's."""
+    return min((p for p in analysis.velocity_plans),
+               key=lambda p: abs(analysis.motion.points["E"].v[p.number - 1]) / abs(analysis.motion.points["A"].v[0]))
+
+
+def test_a_reading_of_a_quantity_that_vanishes_gets_a_dash_and_the_reports_say_what_it_means():
+    # At the extreme position the ram stands: VE = 0, and a hand reading pe = 1 mm has no relative error.  The
+    # tables wrote δ — and no sentence of errors.md or the note said what the dash meant.
+    every = tuple(range(1, 13))
+    first = _shaper({}, velocity_plans=every)
+    resting = _ram_at_rest_position(first)
+    assert abs(first.motion.points["E"].v[resting.number - 1]) < 1e-9
+    for locale in ("en", "ru", "zh"):
+        scene = dataclasses.replace(graphplan.load(SHAPER), locale=locale,
+                                    measured={resting.number: {"velocity": {"pe": 1.0}}})
+        scene = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, velocity_plans=every))
+        analysis = analyse(scene)
+        (row,) = [row for position in analysis.velocity_plans for row in position.errors
+                  if row.source == "measured" and row.quantity == "VE"]
+        assert row.analytic == 0.0 and row.plan > 0.0
+        table = markdown(analysis)
+        assert any(line.startswith("| VE |") and line.rstrip(" |").endswith("—") for line in table.splitlines())
+        explained = [line for line in table.splitlines() if "δ —" in line]
+        assert explained and "|" not in explained[0], table[:600]
+        note = note_markdown(analysis)
+        assert "δ —" in note

@@ -60,6 +60,7 @@ from .tables import (
     quantity_symbol,
     reactions_intro,
     slip_lines,
+    undefined_errors,
     unit_of,
     velocity_plans_intro,
     velocity_plans_lines,
@@ -312,7 +313,8 @@ class _Note:
             if self.analysis.velocity_plans:
                 subsection += 1
                 self.heading(3, self.t("velocity_plans_heading"), f"{section}.{subsection}")
-                self.para(velocity_plans_intro(self.analysis, self.mark))
+                undefined = undefined_errors(self.analysis, self.analysis.velocity_plans)
+                self.para(velocity_plans_intro(self.analysis, self.mark) + (f" {undefined}" if undefined else ""))
                 self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
                 for position in measured_velocity_plans(self.analysis):
                     self.captioned(self.t("velocity_plan_errors", number=position.number),
@@ -1116,6 +1118,8 @@ class _Note:
         precision = self.n(self.analysis.scene.drawing.drafting_precision)
         self.heading(2, self.t("note_errors"), section)
         intro = self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision)
+        undefined = undefined_errors(self.analysis, self.analysis.plans)
+        intro += f" {undefined}" if undefined else ""
         self.para(f"{intro} {reactions_intro(self.analysis, in_note=True)}" if has_reactions(self.analysis) else intro)
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),

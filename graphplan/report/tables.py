@@ -205,6 +205,14 @@ def _percent(value: float, mark: str) -> str:
     return text.replace("-", "−").replace(".", mark)
 
 
+def undefined_errors(analysis: Analysis, positions: tuple[VelocityPosition, ...]) -> str:
+    """What a δ written — means, where the tables of ``positions`` write one: a hand reading of a quantity that
+    is zero at its position has no relative error (its δ would divide by that zero); else nothing."""
+    if any(not math.isfinite(row.percent) for position in positions for row in position.errors):
+        return strings(analysis.scene.locale)["errors_undefined"]
+    return ""
+
+
 def has_reactions(analysis: Analysis) -> bool:
     """Whether the error tables compare the force polygons' reactions too."""
     return any(is_reaction(row.quantity) for plan in analysis.plans for row in plan.errors)
@@ -262,8 +270,10 @@ def markdown(analysis: Analysis) -> str:
     text = strings(analysis.scene.locale)
     mark = text["decimal_mark"]
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
+    undefined = undefined_errors(analysis, (*analysis.plans, *measured_velocity_plans(analysis)))
     lines = [f"# {text['errors_title'].format(title=literal(analysis.scene.title))}", "",
-             f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}", ""]
+             f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}"
+             + (f" {undefined}" if undefined else ""), ""]
     if has_reactions(analysis):
         lines += [reactions_intro(analysis), ""]
     for plan in analysis.plans:
