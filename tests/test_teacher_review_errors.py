@@ -5,6 +5,7 @@ import dataclasses
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.locale import strings
 from graphplan.report.note import note_markdown
 from graphplan.report.tables import markdown
 
@@ -65,3 +66,20 @@ def test_a_reading_of_a_quantity_that_vanishes_gets_a_dash_and_the_reports_say_w
         assert explained and "|" not in explained[0], table[:600]
         note = note_markdown(analysis)
         assert "δ —" in note
+
+
+def test_a_note_with_velocity_plans_of_every_position_alone_says_what_its_errors_are():
+    # Without a plan sheet the note has no section on the plans' accuracy, yet its velocity plans of every position
+    # give each position's largest δ by source: it never said how δ is formed nor what drafting means.
+    for locale in ("en", "ru", "zh"):
+        scene = dataclasses.replace(graphplan.load(SHAPER), locale=locale)
+        scene = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(),
+                                                                         velocity_plans=tuple(range(1, 13))))
+        analysis = analyse(scene)
+        assert not analysis.plans and analysis.velocity_plans
+        text = strings(locale)
+        note = note_markdown(analysis)
+        assert text["errors_formula"] in note, locale
+        precision = f"{scene.drawing.drafting_precision:g}".replace(".", text["decimal_mark"])
+        assert text["note_errors_intro"].split("{precision}")[0].split("{formula}")[-1] in note
+        assert f"{precision} " in note

@@ -313,8 +313,13 @@ class _Note:
             if self.analysis.velocity_plans:
                 subsection += 1
                 self.heading(3, self.t("velocity_plans_heading"), f"{section}.{subsection}")
+                intro = velocity_plans_intro(self.analysis, self.mark)
+                if not plans:
+                    # No plan sheet, so no section on the plans' accuracy follows to say what δ and its columns are.
+                    intro += " " + self.t("note_errors_intro", formula=self.text["errors_formula"],
+                                          precision=self.n(self.analysis.scene.drawing.drafting_precision))
                 undefined = undefined_errors(self.analysis, self.analysis.velocity_plans)
-                self.para(velocity_plans_intro(self.analysis, self.mark) + (f" {undefined}" if undefined else ""))
+                self.para(intro + (f" {undefined}" if undefined else ""))
                 self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
                 for position in measured_velocity_plans(self.analysis):
                     self.captioned(self.t("velocity_plan_errors", number=position.number),
