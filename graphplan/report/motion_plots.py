@@ -232,6 +232,11 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
                   label=text["motion_flywheel"].format(delta=number(estimate, 4, mark)))
     for value in (cycle.max_speed, cycle.min_speed):
         plot.axhline(value, color=_EVENT, linewidth=0.5, linestyle=":")
+    if cycle.max_speed == cycle.min_speed and flywheel is None:
+        # A uniform turn: left to itself the axis would stretch the start-up's last creep, 10⁻⁹ of ω, over its
+        # height, as if the speed swung.
+        half = 0.005 * abs(cycle.max_speed)
+        plot.set_ylim(cycle.max_speed - half, cycle.max_speed + half)
     plot.set_xlim(0.0, 360.0)
     plot.set_xticks(np.arange(0.0, 361.0, 30.0))
     plot.set_xlabel(text["motion_angle_axis"])

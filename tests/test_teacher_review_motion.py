@@ -1,0 +1,134 @@
+"""A teacher's review of the machine's motion: each run of the equation of motion set against its own integration
+(scipy's solve_ivp at tight tolerances on a right-hand side written here, Kloss' formula written here), and what
+the note and the plot say of it."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from graphplan.cli import main
+from graphplan.locale import strings
+from graphplan.machine_motion import LinearMotor, Machine, Start, simulate
+from graphplan.report.motion_plots import motion_plot
+
+# A machine of constant Je and Mr joined to a straight-line motor by a friction clutch: its steady state is a
+# uniform turn, Md(ω) = Mr.
+CLUTCH_SCENE = """[scene]
+title = "Clutch"
+[dynamics]
+rpm = 100
+inertia = 30.0
+resisting_torque = [[0, 150.0], [360, 150.0]]
+motor = { kind = "linear", stall_torque = 60.0, no_load_rpm = 1500, gear_ratio = 14.0, rotor_inertia = 0.03 }
+clutch = { torque = 400.0, engage_at = 2.0, inertia = 2.0 }
+"""
+
+
+def _run(tmp_path, text):
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    return results["dynamics"]["motion"], (out / "note.md").read_text(encoding="utf-8")
+
+
+def _clutch_run_of_my_own():
+    """The clutch scene integrated here: the driving half spun up alone, slipping at 400 N·m, then locked."""
+    gear, no_load = 14.0, 1500.0 * math.pi / 30.0
+    driving, driven, capacity, resisting = 0.03 * gear ** 2 + 2.0, 30.0, 400.0, 150.0
+
+    def motor(speed):
+        return gear * 60.0 * (1.0 - gear * speed / no_load)
+
+    spun = solve_ivp(lambda t, y: [motor(y[0]) / driving], (0.0, 2.0), [0.0], rtol=1e-12, atol=1e-12)
+
+    def locked(t, y):
+        return y[0] - y[1]
+
+    locked.terminal = True
+    slipping = solve_ivp(lambda t, y: [(motor(y[0]) - capacity) / driving, (capacity - resisting) / driven,
+                                       capacity * (y[0] - y[1])],
+                         (2.0, 10.0), [spun.y[0, -1], 0.0, 0.0], rtol=1e-12, atol=1e-12, events=locked)
+    uniform = no_load / gear * (1.0 - resisting / (gear * 60.0))
+    return slipping.t[-1], slipping.y[1, -1], slipping.y[2, -1], uniform
+
+
+def test_a_machine_that_settles_to_a_uniform_turn_is_told_delta_0_not_the_start_ups_last_creep(tmp_path):
+    motion, note = _run(tmp_path, CLUTCH_SCENE)
+    lock, common, slip_energy, uniform = _clutch_run_of_my_own()
+    assert abs(motion["clutch_locked_at"] - lock) < 1e-6
+    assert abs(motion["clutch_common_speed"] - common) < 1e-6
+    assert abs(motion["slip_energy"] - slip_energy) < 1e-5 * slip_energy
+    # Constant Je, constant Mr, a motor whose torque depends on ω alone: ω is constant once it is periodic.
+    assert motion["delta"] == 0.0
+    assert motion["omega_max"] == motion["omega_min"]
+    assert abs(motion["omega_max"] - uniform) < 1e-6 * uniform
+    assert "δ = (ωmax − ωmin)/ωm = 0." in note
+    assert "0.0000000" not in note
+
+
+def test_the_plot_of_a_uniform_turn_does_not_stretch_its_creep_over_the_axis():
+    # The scene's machine after the clutch has locked: Je + Jrot·u² + Jcl, started a hair below its uniform speed.
+    gear, no_load = 14.0, 1500.0 * math.pi / 30.0
+    motor = LinearMotor(stall_torque=60.0, no_load=no_load, gear_ratio=gear, rotor_inertia=0.03)
+    machine = Machine(inertia=30.0 + 2.0, resisting=150.0)
+    uniform = no_load / gear * (1.0 - 150.0 / (gear * 60.0))
+    motion = simulate(machine, motor, start=Start(omega=0.9 * uniform))
+    assert motion.steady is not None and motion.steady.delta == 0.0
+    figure = motion_plot(motion, strings("en"))
+    low, high = figure.axes[-1].get_ylim()
+    # The axis spans a share of ω one can see, not the 10⁻⁹ the start-up leaves.
+    assert (high - low) > 1e-3 * uniform
+    assert low < uniform < high
+
+
+def test_a_fluctuating_steady_turn_keeps_its_delta_against_my_own_integration(tmp_path):
+    # The flywheel starter's press: Mr steps between two values; the Kloss motor through a gear.
+    motion, _ = _run(tmp_path, """[scene]
+title = "Press"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+driving = "constant"
+inertia = 0.0
+motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_rpm = 1500, rated_rpm = 1440, gear_ratio = 14.4, rotor_inertia = 0.02 }
+""")
+    synchronous, rated = 1500 * math.pi / 30, 1440 * math.pi / 30
+    slip, overload, gear = 1 - rated / synchronous, 2.2, 14.4
+    breakdown = overload * 4000.0 / rated
+    critical = slip * (overload + math.sqrt(overload ** 2 - 1))
+
+    def kloss(speed):
+        s = 1 - speed / synchronous
+        return 2 * breakdown / (s / critical + critical / s)
+
+    mean = 100 * math.pi / 30
+    light, heavy = 367.7 / mean, 3677 / mean
+    excess = (light + 2 * heavy) / 3 - light
+    inertia = excess * 2 * math.pi / 3 / (0.05 * mean ** 2) + 0.02 * gear ** 2
+    # Turn by turn, each stretch of constant Mr on its own, to the 16th turn.
+    t, state, speeds = 0.0, [0.0, 0.0], []
+    for stretch in range(32):
+        moment = light if stretch % 2 == 0 else heavy
+        end = (stretch // 2) * 2 * math.pi + (2 * math.pi / 3 if stretch % 2 == 0 else 2 * math.pi)
+
+        def reached(t, y, end=end):
+            return y[0] - end
+
+        reached.terminal = True
+        part = solve_ivp(lambda t, y, m=moment: [y[1], (gear * kloss(gear * y[1]) - m) / inertia], (t, t + 30),
+                         state, method="DOP853", rtol=1e-12, atol=1e-12, events=reached, dense_output=True)
+        if stretch >= 30:
+            speeds.append(part.sol(np.linspace(part.t[0], part.t[-1], 4001))[1])
+        t, state = part.t[-1], list(part.y[:, -1])
+    turn = np.concatenate(speeds)
+    delta = (turn.max() - turn.min()) / ((turn.max() + turn.min()) / 2)
+    assert abs(motion["delta"] - delta) < 1e-5 * delta
+    assert abs(motion["omega_max"] - turn.max()) < 1e-6 * turn.max()
+    assert abs(motion["omega_min"] - turn.min()) < 1e-6 * turn.min()
