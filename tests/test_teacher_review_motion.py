@@ -132,3 +132,55 @@ motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_rpm = 1500
     assert abs(motion["delta"] - delta) < 1e-5 * delta
     assert abs(motion["omega_max"] - turn.max()) < 1e-6 * turn.max()
     assert abs(motion["omega_min"] - turn.min()) < 1e-6 * turn.min()
+
+
+# A press known by its resisting torque alone, a triangle over its first half turn, driven by a straight-line motor.
+TRIANGLE_SCENE = """[scene]
+title = "Triangle"
+[dynamics]
+rpm = 100
+inertia = 20.0
+resisting_torque = [[0, 100.0], [90, 300.0], [180, 100.0], [360, 100.0]]
+motor = { kind = "linear", points = [[1400, 20.0], [1450, 10.0]], gear_ratio = 14.5 }
+"""
+
+
+def _triangle(degrees):
+    degrees %= 360.0
+    return float(np.interp(degrees, [0.0, 90.0, 180.0, 360.0], [100.0, 300.0, 100.0, 100.0]))
+
+
+def test_a_load_diagrams_vertices_are_corners_of_mr_not_splined_through():
+    from graphplan import load_text
+    from graphplan.deliverables import MachineDynamics
+
+    machine = MachineDynamics(load_text(TRIANGLE_SCENE)).machine
+    for degrees in (0.5, 89.5, 90.5, 179.5, 180.5, 359.5, 45.0, 270.0):
+        assert abs(machine.mr(math.radians(degrees), 10.0) - _triangle(degrees)) < 1e-9, degrees
+
+
+def test_the_steady_turn_under_a_diagram_with_vertices_matches_my_own_integration(tmp_path):
+    motion, _ = _run(tmp_path, TRIANGLE_SCENE)
+    # Two points of the line: M0 = 20 + 0.2·1400 = 300 N·m at rest, none at 1500 rpm.
+    gear, stall, no_load, inertia = 14.5, 300.0, 1500 * math.pi / 30, 20.0
+    ends = (math.pi / 2, math.pi, 2 * math.pi)  # each stretch of the turn straight, integrated on its own
+    t, state, speeds, times = 0.0, [0.0, 0.0], [], []
+    for stretch in range(3 * 30):
+        end = (stretch // 3) * 2 * math.pi + ends[stretch % 3]
+
+        def reached(t, y, end=end):
+            return y[0] - end
+
+        reached.terminal = True
+        part = solve_ivp(lambda t, y, end=end: [y[1], (gear * stall * (1 - gear * y[1] / no_load)
+                                                       - _triangle(math.degrees(min(y[0], end - 1e-12)))) / inertia],
+                         (t, t + 30), state, method="DOP853", rtol=1e-12, atol=1e-12, events=reached, dense_output=True)
+        if stretch >= 3 * 29:
+            speeds.append(part.sol(np.linspace(part.t[0], part.t[-1], 4001))[1])
+            times.append(part.t[[0, -1]])
+        t, state = part.t[-1], list(part.y[:, -1])
+    turn = np.concatenate(speeds)
+    delta = (turn.max() - turn.min()) / ((turn.max() + turn.min()) / 2)
+    assert abs(motion["delta"] - delta) < 1e-6 * delta
+    assert abs(motion["omega_min"] - turn.min()) < 1e-7 * turn.min()
+    assert abs(motion["omega_mean"] - 2 * math.pi / (times[-1][1] - times[0][0])) < 1e-7 * turn.min()
