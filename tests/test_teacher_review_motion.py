@@ -8,6 +8,7 @@ import json
 import math
 
 import numpy as np
+import pytest
 from scipy.integrate import solve_ivp
 
 from graphplan.cli import main
@@ -184,3 +185,95 @@ def test_the_steady_turn_under_a_diagram_with_vertices_matches_my_own_integratio
     assert abs(motion["delta"] - delta) < 1e-6 * delta
     assert abs(motion["omega_min"] - turn.min()) < 1e-7 * turn.min()
     assert abs(motion["omega_mean"] - 2 * math.pi / (times[-1][1] - times[0][0])) < 1e-7 * turn.min()
+
+
+def test_kloss_torque_at_its_slips_is_the_textbooks():
+    from graphplan.machine_motion import KlossMotor
+
+    power, synchronous, slip, overload = 4000.0, 1000 * math.pi / 30, 0.05, 2.5
+    motor = KlossMotor(power, synchronous, slip, overload)
+    rated = power / (synchronous * (1 - slip))
+    critical = slip * (overload + math.sqrt(overload ** 2 - 1))
+    for s in (1.0, 0.5, critical, 0.1, slip, 0.01, -0.02):
+        mine = 2 * overload * rated / (s / critical + critical / s)
+        assert abs(motor.characteristic(synchronous * (1 - s)) - mine) < 1e-12 * overload * rated, s
+    assert abs(motor.characteristic(synchronous * (1 - slip)) - rated) < 1e-12 * rated
+    assert abs(motor.characteristic(synchronous * (1 - critical)) - overload * rated) < 1e-12 * rated
+    assert motor.characteristic(synchronous) == 0.0
+
+
+def close(value):
+    return pytest.approx(value, rel=1e-9)
+
+
+def _response(mass, unbalance, stiffness, damping, omega, base):
+    """The machine's steady motion as complex amplitudes of e^{iωt}: M·x″ + c·(x′ − y′) + k·(x − y) = m·e·ω²."""
+    receptance = 1 / (stiffness - mass * omega ** 2 + 1j * damping * omega)
+    return unbalance * omega ** 2 * receptance, (stiffness + 1j * damping * omega) * base * receptance
+
+
+def test_vibration_on_a_moving_base_with_isolation_matches_the_closed_forms(tmp_path):
+    from scipy.optimize import brentq
+
+    scene = tmp_path / "scene.toml"
+    for mass, unbalance, stiffness, zeta, rpm, base, wanted in ((250.0, 0.05, 4e5, 0.075, 1200.0, 5e-4, 0.1),
+                                                                 (100.0, 0.02, 1e5, 0.3, 250.0, 1e-3, 0.4),
+                                                                 (60.0, 0.01, 2e6, 0.02, 3000.0, 2e-4, 0.05)):
+        scene.write_text(f"""[scene]\ntitle = "Mounts"\n[vibration]\nmass = {mass}\nunbalance = {unbalance}
+stiffness = {stiffness}\ndamping_ratio = {zeta}\nrpm = {rpm}\nbase_amplitude = {base}\ntransmissibility = {wanted}
+""", encoding="utf-8")
+        out = tmp_path / f"out{rpm:g}"
+        assert main(["run", str(scene), "--out", str(out)]) == 0
+        found = json.loads((out / "results.json").read_text(encoding="utf-8"))["vibration"]
+        omega = rpm * math.pi / 30
+        damping = 2 * zeta * math.sqrt(stiffness * mass)
+        by_unbalance, by_base = _response(mass, unbalance, stiffness, damping, omega, base)
+        r = omega / math.sqrt(stiffness / mass)
+        transmissibility = math.hypot(1, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r)
+        assert found["frequency_ratio"] == close(r)
+        assert found["amplitude"] == close(abs(by_unbalance))
+        assert found["phase_deg"] == close(-math.degrees(np.angle(by_unbalance)) % 360)
+        assert found["magnification"] == close(mass * abs(by_unbalance) / unbalance)
+        assert found["transmissibility"] == close(transmissibility)
+        assert found["transmitted_force"] == close(abs((stiffness + 1j * damping * omega) * by_unbalance))
+        moved = found["base_excitation"]
+        assert moved["amplitude"] == close(abs(by_base))
+        assert moved["phase_deg"] == close(-math.degrees(np.angle(by_base)) % 360)
+        assert moved["relative_amplitude"] == close(abs(by_base - base))
+        both = found["combined"]
+        assert both["amplitude"] == close(abs(by_unbalance + by_base))
+        assert both["transmitted_force"] == close(
+            abs((stiffness + 1j * damping * omega) * (by_unbalance + by_base - base)))
+        design = brentq(lambda q, z=zeta, tr=wanted: math.hypot(1, 2 * z * q) / math.hypot(1 - q * q, 2 * z * q) - tr,
+                        math.sqrt(2) * 1.000001, 1e4, xtol=1e-14)
+        assert found["isolation"]["frequency_ratio"] == close(design)
+        assert found["isolation"]["stiffness"] == close(mass * (omega / design) ** 2)
+        assert found["critical_speed"] == close(math.sqrt(stiffness / mass))
+
+
+@pytest.mark.parametrize("planes", [None, [0.2], [0.0, 0.6]])
+def test_the_balancing_corrections_close_the_force_and_the_couple_as_my_own_algebra_does(tmp_path, planes):
+    masses = [(2.0, 0.1, 30.0, 0.0), (3.0, 0.08, 150.0, 0.1), (1.5, 0.12, 260.0, 0.3)]
+    on_axis = planes is None  # a disc: every mass in one plane
+    rows = ",\n".join(f"{{ mass = {m}, radius = {r}, angle = {a}" + ("" if on_axis else f", plane = {z}") + " }"
+                      for m, r, a, z in masses)
+    scene = tmp_path / "scene.toml"
+    scene.write_text(f"[scene]\ntitle = \"Rotor\"\n[balancing]\nmasses = [{rows}]\ncorrection_radius = 0.09\n"
+                     + ("" if on_axis else f"planes = {planes}\n"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    found = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["balancing"]
+    products = [m * r * np.exp(1j * math.radians(a)) for m, r, a, _ in masses]
+    force = sum(products)
+    couple = 0.0 if on_axis else sum(p * z for p, (*_, z) in zip(products, masses, strict=True))
+    if planes is None or len(planes) == 1:
+        corrections = [-force]
+    else:
+        left, right = planes
+        far = (-couple + force * left) / (right - left)
+        corrections = [-force - far, far]
+    for plane, correction in zip(found["planes"], corrections, strict=True):
+        assert plane["mass_radius"] == close(abs(correction))
+        assert plane["angle_deg"] == close(math.degrees(np.angle(correction)) % 360)
+        assert plane["mass"] == close(abs(correction) / 0.09)
+    left_over = 0.0 if on_axis else abs(couple + sum(c * z for c, z in zip(corrections, planes, strict=True)))
+    assert found["residual"]["moment"] == pytest.approx(left_over, rel=1e-9, abs=1e-15)
