@@ -16,9 +16,11 @@ through zero does not read as an infinite error.  The methods:
   among them where it is none of these (its row marked ``own``);
 * ``diagram N``: kinematic diagrams at N driver positions per cycle (a slider driver: N − 1
   equal steps over its travel, a multiple of the intervals between the positions) differentiated
-  by chords: the slope at a position is the chord through its two neighbours, twice
-  (displacement → velocity → acceleration diagram), then v = q̇·r′, a = q̇²·r″ + q̈·r′ with q
-  the driver's coordinate.
+  by chords as ``kinematic_diagrams`` draws them: the velocity diagram's ordinates stand at the
+  mid-intervals, so the slope at a position is the mean of the two chords beside it (the chord
+  through its two neighbours); the acceleration at a position is the chord of those two slopes,
+  the second difference over one step either side (one-sided at a travel's ends), then
+  v = q̇·r′, a = q̇²·r″ + q̈·r′ with q the driver's coordinate.
 
 Run time is the best of a few runs of the whole method at all the positions (the positions
 included; for the diagrams, the positions they need).  It is measured, so it differs from run to run.
@@ -302,19 +304,28 @@ def _chords(values: np.ndarray, step: float, periodic: bool, angle: bool = False
     return np.gradient(values, step, edge_order=2)
 
 
-def _second_at_ends(second: np.ndarray, values: np.ndarray, step: float) -> np.ndarray:
-    """Second-order second differences at the two nodes next to each end of a travel.
+def _second_chords(values: np.ndarray, step: float, periodic: bool, angle: bool = False) -> np.ndarray:
+    """The second derivative at each node as the acceleration diagram draws it: the chord between the slopes of
+    the two intervals beside the node, (y₊ − 2y + y₋)/h².
 
-    There a chord of the (one-sided) velocity diagram would divide its O(h²) error by h: the
-    acceleration diagram takes its slopes from the displacements directly instead.
+    Differentiating the neighbours' chords again spans two steps either side and errs four times as much
+    (h²·y⁗/3 against h²·y⁗/12): at 12 positions it put 14 % beside the 3.7 % the diagram itself draws. At a
+    travel's ends, where the diagram has no chord beyond, a one-sided second-order difference.
     """
-    if len(values) < 4:
-        return second
-    second = second.copy()
-    second[0] = (2 * values[0] - 5 * values[1] + 4 * values[2] - values[3]) / step**2
-    second[-1] = (2 * values[-1] - 5 * values[-2] + 4 * values[-3] - values[-4]) / step**2
-    second[1] = (values[0] - 2 * values[1] + values[2]) / step**2
-    second[-2] = (values[-1] - 2 * values[-2] + values[-3]) / step**2
+    if periodic:
+        ahead, behind = np.roll(values, -1) - values, values - np.roll(values, 1)
+        if angle:
+            ahead, behind = np.angle(np.exp(1j * ahead)), np.angle(np.exp(1j * behind))
+        return (ahead - behind) / step**2
+    if angle:
+        values = np.unwrap(values)
+    second = np.empty_like(values)
+    second[1:-1] = (values[2:] - 2 * values[1:-1] + values[:-2]) / step**2
+    if len(values) >= 4:
+        second[0] = (2 * values[0] - 5 * values[1] + 4 * values[2] - values[3]) / step**2
+        second[-1] = (2 * values[-1] - 5 * values[-2] + 4 * values[-3] - values[-4]) / step**2
+    else:
+        second[0], second[-1] = second[1], second[-2]
     return second
 
 
@@ -333,14 +344,11 @@ def diagram(case: Case, refinement: int) -> Row:
         for name in motion.points:
             xy = motion.point(name).r
             r = xy[:, 0] + 1j * xy[:, 1]
-            first = _chords(r, step, periodic)
-            second = _chords(first, step, periodic) if periodic else _second_at_ends(_chords(first, step, False), r, step)
+            first, second = _chords(r, step, periodic), _second_chords(r, step, periodic)
             v[name], a[name] = rate * first, rate * rate * second + rate_rate * first
         for number in motion.links:
-            first = _chords(np.asarray(motion.link(number).angle, dtype=float), step, periodic, angle=True)
-            second = _chords(first, step, periodic)
-            if not periodic:
-                second = _second_at_ends(second, np.unwrap(np.asarray(motion.link(number).angle, dtype=float)), step)
+            angle = np.asarray(motion.link(number).angle, dtype=float)
+            first, second = _chords(angle, step, periodic, angle=True), _second_chords(angle, step, periodic, angle=True)
             omega[number], epsilon[number] = rate * first, rate * rate * second + rate_rate * first
         for name, on, pivot, lever in under_pins:
             # A link's point under a block is no path of its own: it moves rigidly with the link.
