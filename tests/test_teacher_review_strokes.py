@@ -65,3 +65,29 @@ def test_the_accuracy_study_s_diagrams_take_the_acceleration_as_the_diagram_draw
     # aB is among the quantities compared, so the largest is at least its error; the wide chords' is far off.
     assert largest >= drawn_error * (1.0 - 1e-6)
     assert largest < 0.5 * wide_error
+
+
+def test_the_note_gives_theta_and_the_stroke_from_the_dead_centres(tmp_path):
+    """The first sheet's text: θ between the rod's extreme positions, K = (180° + θ)/(180° − θ), and the stroke H
+    the plan of positions dimensions, each from the closure's own dead centres."""
+    import re
+
+    from graphplan.cli import main
+
+    extended = extended_dead_centre()
+    folded = math.pi + math.asin(OFFSET / (ROD - CRANK))
+    rod_extended = extended                                        # O, A, B in line: the rod along the crank
+    rod_folded = math.atan2(OFFSET - CRANK * math.sin(folded), slider_x(np.array(folded)) - CRANK * math.cos(folded))
+    theta = math.degrees(rod_extended - rod_folded) % 360.0
+    theta = min(theta, 360.0 - theta)
+    stroke = float(slider_x(np.array(extended)) - slider_x(np.array(folded)))
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURES / "offset_slider_crank.toml"), "--out", str(out), "--only", "note",
+                 "--locale", "en"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    said = re.search(r"θ = \|φw − φi\|/2 = ([\d.]+)°.*K = \(180° \+ θ\)/\(180° − θ\) = ([\d.]+);", note)
+    assert said, "the note gives no θ with K = (180° + θ)/(180° − θ)"
+    assert float(said.group(1)) == pytest.approx(theta, rel=1e-4)
+    assert float(said.group(2)) == pytest.approx((180.0 + theta) / (180.0 - theta), rel=1e-3)
+    travel = re.search(r"plan of positions: H = ([\d.]+) m\.", note)
+    assert travel and float(travel.group(1)) == pytest.approx(stroke, rel=1e-3)

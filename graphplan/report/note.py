@@ -44,7 +44,7 @@ from ..kinematics import cross
 from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
 from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
-from ..render.drawings import length_scale
+from ..render.drawings import dimensioned_travels, length_scale
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
 from ..wording import driver_at, raised
@@ -403,9 +403,18 @@ class _Note:
             working, idle = turns
             strokes = self.t("note_strokes", link=scene.positions.working.link, working=self.n(math.degrees(working)),
                              idle=self.n(math.degrees(idle)), ratio=self.n(working / idle, 4))
+            # The textbook's θ: how far the crank's two extremes are off a straight line, whatever the linkage (the
+            # rod's angle between its extremes in a four-bar or slider-crank, the swing ψ of a slotted lever).
+            quicker_working = working < idle
+            formula = "(180° − θ)/(180° + θ)" if quicker_working else "(180° + θ)/(180° − θ)"
+            theta = self.t("note_strokes_theta", theta=self.n(math.degrees(abs(working - idle)) / 2.0),
+                           formula=formula, ratio=self.n(working / idle, 4))
             # K ≥ 1 where the working stroke is the slower one, as a machine that works in one stroke is laid out.
             quicker = f" {self.t('note_strokes_quicker')}" if working / idle < 1.0 - 1e-6 else ""
-            self.para(strokes + quicker)
+            # The stroke H or swing ψ the plan of positions dimensions, which the note handed in alone would lack.
+            travels = [travel.text.replace(".", self.mark) for travel in dimensioned_travels(self.analysis, self.text)]
+            travel = f" {self.t('note_strokes_travel', travels=', '.join(travels))}" if travels else ""
+            self.para(f"{strokes} {theta}{quicker}{travel}")
         elif self.analysis.positions.working_link_turns:
             self.para(self.t("note_turns_round", link=scene.positions.working.link,
                              turns=Count(abs(self.analysis.positions.working_link_turns))))
