@@ -492,3 +492,21 @@ def test_the_triad_with_a_slider_slides_and_balances_as_its_own_newton_solution_
         assert abs(np.dot(r15, guide)) < 1e-9 * np.linalg.norm(r15)  # a frictionless guide pushes square to itself
     # the guide is the frame's: the slider's sliding has no Coriolis part
     assert "ᵏ" not in note and "aFF1ʳ" in note
+
+
+@pytest.mark.parametrize("locale, turning_word", [("en", "clockwise"), ("ru", "часовой"), ("zh", "时针")])
+def test_forces_md_gives_a_slider_s_fb_its_sense_along_the_guide_and_a_crank_s_mb_its_turning_sense(
+        tmp_path, locale, turning_word):
+    """The sign rule at the head of forces.md: Fb, a force along the driving slider's guide, has no turning sense
+    (its sign, checked above by the power balance, is along the guide's direction); Mb has no guide."""
+    def intro(fixture: str) -> str:
+        folder = tmp_path / fixture
+        assert main(["run", str(FIXTURES / f"{fixture}.toml"), "--out", str(folder), "--only", "forces",
+                     "--locale", locale]) == 0
+        return (folder / "forces.md").read_text(encoding="utf-8").split("\n")[2]
+
+    slider, crank = intro("slider_driven"), intro("scotch_yoke")
+    assert "Fb" in slider and turning_word not in slider
+    assert "Mb" in crank and turning_word in crank
+    guide_word = {"en": "guide", "ru": "направляющ", "zh": "导路"}[locale]
+    assert guide_word in slider and guide_word not in crank

@@ -465,7 +465,9 @@ def markdown(analysis: Analysis) -> str:
     mark = text["decimal_mark"]
     name, unit = balancing_symbol(analysis)
     lines = [f"# {text['forces_title'].format(title=literal(analysis.scene.title))}", "",
-             text["forces_intro"].format(structure=analysis.mechanism.structure, name=name, unit=unit), ""]
+             text["forces_intro"].format(structure=analysis.mechanism.structure, name=name, unit=unit,
+                                         sense=text["forces_sense_moment" if name == "Mb" else "forces_sense_force"]),
+             ""]
     for plan in analysis.plans:
         if plan.forces is not None:
             lines += _position(analysis, plan, text)
