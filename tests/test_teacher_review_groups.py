@@ -510,3 +510,22 @@ def test_forces_md_gives_a_slider_s_fb_its_sense_along_the_guide_and_a_crank_s_m
     assert "Mb" in crank and turning_word in crank
     guide_word = {"en": "guide", "ru": "направляющ", "zh": "导路"}[locale]
     assert guide_word in slider and guide_word not in crank
+
+
+def test_the_rpp_s_slot_link_has_its_omega_read_over_a_named_length(hung):
+    """ω6 of the RPP's slotted link is read off the segment e6k (E6: link 6's point under the block's pin E) over
+    the distance E6K, which the note names as it names every other length, not as a bare l."""
+    results, note = hung["RPP"]
+    for position in _plan_positions(results):
+        phi, omega = np.radians(position["driver"]["angle_deg"]), position["driver"]["omega"]
+        motion = _differences(_rpp, phi, omega)
+        distance = np.linalg.norm(motion["E"][0] - motion["K"][0])
+        section = note.split(f"Position {position['index']}: ")[1].split("\n### ")[0]
+        (line,) = re.findall(r"- ω6 = [^\n]*", section)
+        found = re.fullmatch(r"- ω6 = e6k·μV/lE6K = ([\d.]+)·([\d.]+)/([\d.]+) = ([\d.]+) rad/s, (\S+)", line)
+        assert found, line
+        millimetres, scale, length, value = (float(found.group(k)) for k in range(1, 5))
+        assert length == pytest.approx(distance, rel=1e-4)
+        assert value == pytest.approx(abs(motion["th4"][1]), rel=1e-4)
+        assert found.group(5) == ("counter-clockwise" if motion["th4"][1] > 0 else "clockwise")
+        assert millimetres * scale / length == pytest.approx(value, rel=2e-3)

@@ -1097,6 +1097,10 @@ class _Note:
                 image = plan.images.get(name, image_name(name) if name in plan.auxiliary else None)
                 if where == position and image == letter:
                     return name
+                if where == position and letter == f"{image_name(name)}{link}":
+                    # The link's own point under a joint of another link (E6 under the block's pin E), as the
+                    # vector equations name it.
+                    return f"{name}{link}"
         return None
 
     def values_table(self, pp: PlanPosition, kind: str) -> None:
