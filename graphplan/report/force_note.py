@@ -9,7 +9,6 @@ plan letters it shares; the tables are those ``forces.md`` prints (:mod:`graphpl
 
 from __future__ import annotations
 
-import cmath
 import math
 from collections.abc import Mapping
 from typing import Protocol
@@ -186,7 +185,7 @@ def _direction(note: Writer, force: complex) -> str:
     note writes the external loads' directions; nothing for a force of rounding noise, which has none."""
     if not abs(force) > force_report.ROUNDING_NOISE:
         return ""
-    return f" ∠ {note.n(math.degrees(cmath.phase(force)))}°"
+    return f" {force_report.direction(force, note.mark)}"
 
 
 def _force_group(note: Writer, plan: PlanPosition, group) -> None:

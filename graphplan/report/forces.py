@@ -72,8 +72,12 @@ def polar(force: complex, mark: str = ".") -> str:
         return "—"
     if abs(force) < ROUNDING_NOISE:
         return "0"
-    angle = math.degrees(cmath.phase(force))
-    return f"{number(abs(force), mark=mark)} ∠ {number(angle, 4, mark)}°"
+    return f"{number(abs(force), mark=mark)} {direction(force, mark)}"
+
+
+def direction(force: complex, mark: str = ".") -> str:
+    """``∠ 180°``: which way ``force`` acts, in degrees from the x axis, as :func:`polar` writes it."""
+    return f"∠ {number(math.degrees(cmath.phase(force)), 4, mark)}°"
 
 
 def percent(value: float, reference: float, mark: str = ".") -> str:
