@@ -15,6 +15,7 @@ import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import shapely
@@ -82,6 +83,20 @@ class Placement:
 
     texts: tuple[Text, ...]
     leaders: tuple[Polyline, ...] = ()
+
+
+class _Spots(NamedTuple):
+    """The spots tried for one label (:func:`place_labels`' ``costed``): each spot's box, whether it stands beside
+    its point, the indices of those led to it and their leaders, what each costs, what it covers of the drawing,
+    and the part of its cost that is for covering another label or leader."""
+
+    boxes: np.ndarray
+    beside: np.ndarray
+    led: np.ndarray
+    leaders: np.ndarray
+    cost: np.ndarray
+    covering: np.ndarray
+    clashing: np.ndarray
 
 
 # What a spot costs: each drawn line it covers, HEAVY times as much for a point, an arrowhead or a
@@ -218,8 +233,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # What the boxes and the leaders cover, in one query of the tree.
         covers = covered(np.concatenate((shapes, lines)))
         clashing = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
-        cost = clashing.copy()
-        cost = cost + COVER * covers[:len(shapes)] + RING * ring + order * 0.01
+        cost = clashing + COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         # Two thin leaders crossing each other still lead each to its own label: less amiss than a leader
         # through a label, yet more than any drawn line covered.
         crossings = (OVERLAP * crossing(lines, placed_boxes, index)
@@ -237,7 +251,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         covering = covers[:len(shapes)]
         if off_lines:
             cost[covering > 0] += LINE_COVERED
-        return candidates, beside, led, lines, cost, covering, clashing
+        return _Spots(candidates, beside, led, lines, cost, covering, clashing)
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
 
@@ -254,10 +268,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     def spots(index: int, kind: str = "near"):
         return costed(index, *kinds[kind])
 
-    def put(index: int, spot: tuple, best: int, kind: str) -> None:
+    def put(index: int, spot: _Spots, best: int, kind: str) -> None:
         """Set the label of ``index`` at spot ``best`` of ``spot`` (what :func:`costed` gave)."""
         anchor = anchors[index]
-        candidates, beside, led, lines, cost = spot[:5]
+        candidates, beside, led, lines, cost = spot.boxes, spot.beside, spot.led, spot.leaders, spot.cost
         x0, y0, x1, _ = candidates[best]
         texts[index] = Text(((x0 + x1) / 2, y0 + 0.3 * anchor.size), anchor.text, anchor.size, "middle",
                             anchor.colour)
@@ -266,20 +280,20 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         if not beside[best]:
             leader_lines[index] = lines[best - led[0]]
         paid[index] = float(cost[best])
-        where[index] = (kind, best, float(spot[5][best]))
+        where[index] = (kind, best, float(spot.covering[best]))
 
     def place(index: int) -> None:
         """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
         spot = spots(index)
-        cost, covering = spot[4], spot[5]
+        cost, covering = spot.cost, spot.covering
         best, kind = int(np.argmin(cost)), "near"
         if cost[best] >= OVERLAP or (off_lines and covering[best] > 0):
             # Every spot near the point covers a label or a leader (the pole of a crowded lever), or a drawn line
             # where the drawing has room to keep off its lines: farther out, on a longer leader, before writing one
             # label over another.
             farther = spots(index, "far")
-            if farther[4].min() < cost[best]:
-                spot, best, kind = farther, int(np.argmin(farther[4])), "far"
+            if farther.cost.min() < cost[best]:
+                spot, best, kind = farther, int(np.argmin(farther.cost)), "far"
         put(index, spot, best, kind)
 
     def saved(*indices: int) -> list:
@@ -312,12 +326,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         kind, best, covers = where[index]
         # Between lines meeting at a point a clear spot often lies between two of the standard ones.
         spot = spots(index, "fine")
-        cost, covering, clashing = spot[4], spot[5], spot[6]
+        cost, covering, clashing = spot.cost, spot.covering, spot.clashing
         # Only spots that cover less: a move trades no line for another, nor for a point or a text.
         less = covering < covers - 1e-9
         # The standard spots beside the point and led to it are among the finer ones (but for the order's tie-break).
         same = best if kind == "fine" else as_fine[best] if kind == "near" and best < len(as_fine) else None
-        before = float(cost[same] if same is not None else spots(index, kind)[4][best])
+        before = float(cost[same] if same is not None else spots(index, kind).cost[best])
         if before >= OVERLAP:
             return  # left covering another label's leader: the repair rounds' business, not this one's
         finest = int(np.argmin(np.where(less, cost, np.inf)))
@@ -337,9 +351,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         for candidate in hopeful[:SPOTS_LOOKED_AT]:
             if len(tried) == MOVES_TRIED:
                 break
-            mine = [shapely.box(*spot[0][candidate])]
-            if not spot[1][candidate]:
-                mine.append(spot[3][candidate - spot[2][0]])
+            mine = [shapely.box(*spot.boxes[candidate])]
+            if not spot.beside[candidate]:
+                mine.append(spot.leaders[candidate - spot.led[0]])
             hit = np.zeros(len(shapes), dtype=bool)
             for shape in mine:
                 hit |= shapely.intersects(shape, shapes)
