@@ -157,6 +157,23 @@ def _rocker_kinematics(phi: float) -> tuple[dict[str, complex], dict[int, float]
     return points, {1: 0.0, 2: -17.0, 3: float(omega3), 4: float(omega4)}
 
 
+def _journals(matrix: np.ndarray, known: np.ndarray, pairs, points: dict[str, complex],
+              moments: dict[str, float]) -> None:
+    """Into the equilibrium of links 2, 3, 4 (rows 3·(link − 2) … + 2: ΣFx, ΣFy, ΣM about the origin), each
+    journal's reaction on its later link (columns 2k, 2k + 1) and its friction moment, the reverse on its earlier
+    link; the frame, link 1, has no equations."""
+    for column, (joint, i, j) in enumerate(pairs):
+        for sign, link in ((1.0, j), (-1.0, i)):
+            if link == 1:
+                continue
+            row = 3 * (link - 2)
+            for k, unit in enumerate((1 + 0j, 1j)):
+                matrix[row, 2 * column + k] += sign * unit.real
+                matrix[row + 1, 2 * column + k] += sign * unit.imag
+                matrix[row + 2, 2 * column + k] += sign * _cross(points[joint], unit)
+            known[row + 2] -= sign * moments[joint]
+
+
 def _rocker_statics(phi: float, friction: bool = True) -> tuple[float, dict[str, float]]:
     """Mb and each journal's friction moment on its later link (Mf12, Mf23, Mf34, Mf14), ccw positive."""
     points, omega = _rocker_kinematics(phi)
@@ -169,16 +186,7 @@ def _rocker_statics(phi: float, friction: bool = True) -> tuple[float, dict[str,
         moments = {joint: -math.copysign(1.0, omega[j] - omega[i]) * ROCKER_RHO[joint] * abs(reactions[joint])
                    if friction else 0.0 for joint, i, j in pairs}
         matrix, known = np.zeros((9, 9)), np.zeros(9)
-        for column, (joint, i, j) in enumerate(pairs):
-            for sign, link in ((1.0, j), (-1.0, i)):
-                if link == 1:
-                    continue
-                row = 3 * (link - 2)
-                for k, unit in enumerate((1 + 0j, 1j)):
-                    matrix[row, 2 * column + k] += sign * unit.real
-                    matrix[row + 1, 2 * column + k] += sign * unit.imag
-                    matrix[row + 2, 2 * column + k] += sign * _cross(points[joint], unit)
-                known[row + 2] -= sign * moments[joint]
+        _journals(matrix, known, pairs, points, moments)
         matrix[2, 8] = 1.0
         known[3:6] -= (force.real, force.imag, _cross(points["B"], force))
         known[8] -= resisting
@@ -213,16 +221,7 @@ def _slider_statics(phi: float, friction: bool = True) -> tuple[float, dict[str,
                    if friction else 0.0 for joint, i, j in pairs}
         rubbing = -SLIDE_F * abs(reactions["N"]) * math.copysign(1.0, speed) if friction else 0.0
         matrix, known = np.zeros((9, 9)), np.zeros(9)
-        for column, (joint, i, j) in enumerate(pairs):
-            for sign, link in ((1.0, j), (-1.0, i)):
-                if link == 1:
-                    continue
-                row = 3 * (link - 2)
-                for k, unit in enumerate((1 + 0j, 1j)):
-                    matrix[row, 2 * column + k] += sign * unit.real
-                    matrix[row + 1, 2 * column + k] += sign * unit.imag
-                    matrix[row + 2, 2 * column + k] += sign * _cross(points[joint], unit)
-                known[row + 2] -= sign * moments[joint]
+        _journals(matrix, known, pairs, points, moments)
         # The guide's normal force on the slider 4 at B, and the couple that places it along the guide.
         matrix[7, 6], matrix[8, 6], matrix[8, 7] = 1.0, points["B"].real, 1.0
         matrix[2, 8] = 1.0
