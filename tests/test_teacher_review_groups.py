@@ -531,16 +531,19 @@ def test_the_rpp_s_slot_link_has_its_omega_read_over_a_named_length(hung):
         assert millimetres * scale / length == pytest.approx(value, rel=2e-3)
 
 
+@pytest.mark.parametrize("piece", ["note", "forces"])
 @pytest.mark.parametrize("locale, couple_word", [("en", "couple"), ("ru", "пар"), ("zh", "力偶")])
-def test_a_guide_whose_reaction_is_nought_is_told_to_hold_its_moment_as_a_couple(tmp_path, locale, couple_word):
+def test_a_guide_whose_reaction_is_nought_is_told_to_hold_its_moment_as_a_couple(tmp_path, locale, couple_word,
+                                                                                   piece):
     """The Scotch yoke's frame guide: the slot pushes the yoke square to itself, vertically, so nothing pushes it
     sideways and R14 = 0 at every position; the yoke's moment about B, R34's 0.075·R34 at φ = 0, is held by the
-    guide as a couple alone. "R14·x = −95.518 N·m" beside "R14 = 0" would put x at infinity: the note says so."""
+    guide as a couple alone. "R14·x = −95.518 N·m" beside "R14 = 0" would put x at infinity: the note says so,
+    and forces.md, which writes the same moment equations, too."""
     folder = tmp_path / locale
-    assert main(["run", str(FIXTURES / "scotch_yoke.toml"), "--out", str(folder), "--only", "note",
+    assert main(["run", str(FIXTURES / "scotch_yoke.toml"), "--out", str(folder), "--only", piece,
                  "--locale", locale]) == 0
     results = json.loads((folder / "results.json").read_text(encoding="utf-8"))
-    note = (folder / "note.md").read_text(encoding="utf-8")
+    note = (folder / f"{piece}.md").read_text(encoding="utf-8")
     for position in _plan_positions(results):
         phi = np.radians(position["driver"]["angle_deg"])
         omega = position["driver"]["omega"]
@@ -550,7 +553,7 @@ def test_a_guide_whose_reaction_is_nought_is_told_to_hold_its_moment_as_a_couple
         couple = -0.075 * np.cos(phi) * r34_y  # about B, the yoke's point on the guide under A's slot line
         assert position["forces"]["reactions"]["R14"] == [0.0, 0.0]
         assert position["forces"]["offsets"]["R14"] is None
-        section = note.split("ΣMB(4) = R14·x")[1 + _plan_positions(results).index(position)].split("\n")[0]
+        section = [line for line in note.splitlines() if "ΣMB(4)" in line][_plan_positions(results).index(position)]
         written = float(re.search(r"R14·x = (−?[\d.,]+)", section).group(1).replace("−", "-").replace(",", "."))
         assert written == pytest.approx(couple, rel=1e-4)
         assert couple_word in section, section

@@ -205,16 +205,10 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
     if group.projections:
         note.para(note.t("note_slot_projections"), *(f"- {_projection(note, equation)}" for equation in group.projections))
     loads = {load.name: load for load in group.loads}
-    found = {item.name: item.force for item in group.found}
-    strongest = max((abs(force) for force in found.values()), default=0.0)
     lines = []
     for equation in group.moments:
         line = f"- {_moment_equation(note, equation, loads)}"
-        reaction = equation.unknown[:-2] if equation.unknown.endswith("·x") else None
-        if reaction in found and abs(found[reaction]) <= ROUNDING * strongest and \
-                abs(equation.value) > ROUNDING * max(strongest, 1.0):
-            # A guide whose normal reaction is nought (the Scotch yoke's) holds the moment as a couple alone:
-            # R·x beside R = 0 would put x at infinity.
+        if reaction := force_report.held_as_couple_alone(group, equation):
             line += note.text["semicolon"] + note.t("note_couple_alone", name=reaction)
         lines.append(line)
     if lines:
