@@ -628,6 +628,24 @@ def test_a_brake_is_in_the_notes_equation_of_motion_and_stops_the_machine_when_t
             "resistance: Je(φ)·dω/dt + ½·Je′(φ)·ω² = Md(ω) − Mr(φ) − Mt(ω).") in note
 
 
+@pytest.mark.parametrize("locale, moment", [("en", "Mt"), ("ru", "Mт"), ("zh", "Mt")])
+def test_a_brake_with_no_damping_is_told_as_its_constant_moment(tmp_path, locale, moment):
+    """Motor off and a brake of 30 N·m alone at t = 0: J·dω/dt = −(50 + 30), so the machine stops at
+    t = J·ω0/80.  The note wrote the brake as "Mt(ω) = 30 + 0·ω", a term that is not there."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text('[scene]\ntitle = "run-down"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+                     "resisting_torque = [[0, 50], [360, 50]]\n"
+                     'motor = { kind = "constant", torque = 60.0, off_at = 0.0 }\nstart = { rpm = 90 }\n'
+                     "brake = { torque = 30.0, at = 0.0 }\n", encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--locale", locale]) == 0
+    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    assert motion["stopped_at"] == pytest.approx(2.0 * (90 * math.pi / 30) / 80, rel=1e-6)
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    brake = next(line for line in note.splitlines() if f"{moment} = 30 " in line)
+    assert "·ω" not in brake.split("=")[1] and f"{moment}(ω)" not in brake, brake
+    assert brake.rstrip("。.").endswith(f"(φ) − {moment}"), brake
+
+
 def test_a_clutch_run_down_goes_on_until_the_machine_stops_and_reports_the_lock(tmp_path):
     """Motor off, the driving half (2 kg·m² at 100 rad/s) clutched to the machine (4 kg·m² at rest, 1 N·m of
     resistance) through 20 N·m: the halves lock when 100 − 10·t = 4.75·t, at 32.203 rad/s, and the six kg·m²

@@ -190,8 +190,11 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
         _clutch(note, dynamics)
     brake = spec.brake
     if brake is not None:
-        note.para(note.t("note_dyn_brake", at=note.n(brake.at, 4), torque=note.n(brake.torque),
-                         damping=note.n(brake.damping), equation=_shaft_equation(note, dynamics, braked=True)))
+        # With no damping the brake's moment is its torque alone: "+ 0·ω" would name a term that is not there.
+        key = "note_dyn_brake" if brake.damping else "note_dyn_brake_constant"
+        note.para(note.t(key, at=note.n(brake.at, 4), torque=note.n(brake.torque),
+                         damping=note.n(brake.damping),
+                         equation=_shaft_equation(note, dynamics, braking=f"{key}_symbol")))
     steady = motion.steady
     # Stopped with the motor on is a stall; stopped after it was switched off, a run-down.
     run_down = motion.stalled_at is None and motion.stopped_at is not None
@@ -276,10 +279,11 @@ def _kloss(note: Writer, motor, gear: str) -> None:
                      rated_rpm=note.n(motor.rated_speed / RPM), **written))
 
 
-def _shaft_equation(note: Writer, dynamics, braked: bool = False, slipping: bool = False) -> str:
+def _shaft_equation(note: Writer, dynamics, braking: str | None = None, slipping: bool = False) -> str:
     """The equation of motion of the driving shaft as the run integrates it: the machine's Je(φ) with the flywheel,
     and the motor's rotor and the clutch's driving half where they turn with it (not while a clutch slips: the
-    driving half then has its own equation, and the machine is driven by the clutch's torque)."""
+    driving half then has its own equation, and the machine is driven by the clutch's torque); ``braking`` is the
+    key of the brake's term, where one acts."""
     text = note.text
     inertia = [text["note_dyn_inertia_symbol"] + "(φ)"]
     if dynamics.flywheel_inertia > 0:
@@ -288,7 +292,7 @@ def _shaft_equation(note: Writer, dynamics, braked: bool = False, slipping: bool
         inertia += _driving_half(note, dynamics)
     return note.t("note_dyn_equation", inertia=_sum(inertia),
                   driving=text["note_dyn_clutch_torque_symbol" if slipping else "note_dyn_driving_symbol"],
-                  braking=text["note_dyn_braking_symbol"] if braked else "")
+                  braking=text[braking] if braking else "")
 
 
 def _sum(terms: list[str]) -> str:
