@@ -4,14 +4,17 @@ student who missed the console's line handed in a note of 550-m links that said 
 from __future__ import annotations
 
 import dataclasses
+import re
 
+import numpy as np
 import pytest
 from test_lengths_in_millimetres import scaled
-from test_stroke_choice import SLOTTED_BY_A_SLIDER
+from test_stroke_choice import SLOTTED_BY_A_SLIDER, crusher
 
 import graphplan
 from graphplan.analysis import SCENE_WIDE_WARNINGS, analyse
 from graphplan.locale import strings
+from graphplan.motion import solve
 from graphplan.report.note import note_markdown
 
 LOCALES = ("en", "ru", "zh")
@@ -52,3 +55,28 @@ def test_a_load_of_an_idle_stroke_never_reached_is_told_in_the_note(locale):
     note = _note(graphplan.scene.loads(scene.replace('during = "working"', 'during = "idle"')), locale)
     assert strings(locale)["note_warning_working_throughout"].format(link=4) in note
     assert CAUTION[locale] not in _note(graphplan.scene.loads(scene), locale)
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_working_link_that_turns_back_more_than_twice_is_told_in_the_note_after_its_strokes(locale, tmp_path):
+    """The crusher's jaw turns back four times a turn; the strokes paragraph names two extremes as if it swung once,
+    and only the console said they were a choice.  The note now gives the turning-back angles, found here
+    independently as the zeros of the jaw's angle's derivative by finite differences on a 0.01° grid."""
+    analysis = analyse(dataclasses.replace(graphplan.load(crusher(tmp_path, '"extreme"')), locale=locale))
+    grid = np.radians(np.arange(0.0, 360.0, 0.01))
+    jaw = solve(analysis.mechanism, grid, analysis.positions.reference).point("E").r  # link 6 turns about F
+    angle = np.unwrap(np.arctan2(jaw[:, 1] - 1.20, jaw[:, 0] + 0.50))
+    rate = np.gradient(angle, grid)
+    turning = np.flatnonzero(np.sign(rate) != np.sign(np.roll(rate, -1)))
+    mark = "," if locale == "ru" else "."
+    note = note_markdown(analysis)
+    told = next(line for line in note.splitlines() if line.startswith(CAUTION[locale]) and " 4 " in line)
+    printed = [float(value.replace(mark, ".")) for value in re.findall(r"(\d+[.,]\d\d)°", told)]
+    assert len(turning) == len(printed) == 4
+    assert printed == pytest.approx(sorted(np.degrees(grid[turning]) % 360.0), abs=0.02)
+    # Right after the strokes paragraph that names the two extremes it qualifies.
+    paragraphs = note.split("\n\n")
+    here = next(k for k, paragraph in enumerate(paragraphs) if told in paragraph)
+    assert paragraphs[here - 1].startswith(strings(locale)["note_strokes"].split("{")[0])
+    straight = dataclasses.replace(graphplan.load("fixtures/stephenson_six_bar.toml"), locale=locale)
+    assert CAUTION[locale] not in note_markdown(analyse(straight))

@@ -415,10 +415,21 @@ class _Note:
             travels = [travel.text.replace(".", self.mark) for travel in dimensioned_travels(self.analysis, self.text)]
             travel = f" {self.t('note_strokes_travel', travels=', '.join(travels))}" if travels else ""
             self.para(f"{strokes} {theta}{quicker}{travel}")
+            self.extra_reversals()
         elif self.analysis.positions.working_link_turns:
             self.para(self.t("note_turns_round", link=scene.positions.working.link,
                              turns=Count(abs(self.analysis.positions.working_link_turns))))
         self.scene_warnings()
+
+    def extra_reversals(self) -> None:
+        """Where the working link turns back more than twice a turn, the two extremes the strokes paragraph names are
+        a choice the run warned of: the note handed in must say so, or it reads as a link that swings once."""
+        if not any(warning.code == "extra-reversals" for warning in self.analysis.warnings):
+            return
+        reversals = sorted(math.degrees(value) % 360.0 for value in self.analysis.positions.reversals)
+        angles = self.text["enumeration"].join(f"{value:.2f}°".replace(".", self.mark) for value in reversals)
+        self.para(self.t("note_warning_extra_reversals", link=self.analysis.scene.positions.working.link,
+                         count=Count(len(reversals)), angles=angles))
 
     def scene_warnings(self) -> None:
         """What the run warned of about the scene as a whole (its lengths in millimetres, a working sense its link
