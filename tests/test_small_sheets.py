@@ -188,9 +188,10 @@ def test_on_a4_the_ratchet_forces_keep_their_scales_with_smaller_lettering(ratch
     # top left corner) leaves 202 beside its 70 mm.  Position 11's group keeps its scale in smaller lettering.
     assert [position.number for position in analysis.plans] == [5, 11]
     assert check_group_scale(analysis, sheets) == [2 * MECHANISM_SCALE, MECHANISM_SCALE]
-    # Position 5's lever a standard step smaller, position 11's at its plan's μV: each balancing load on one line
-    # of the caption (two lines, once four) leaves them the room; at 0.025 both stood, at 0.02 they stood too tall.
-    assert check_lever_scale(analysis, sheets) == [0.02, pytest.approx(analysis.plans[1].velocity.scale)]
+    # Each balancing load on one line of the caption (two lines, once four) leaves the levers room at 0.025 under
+    # the line that says the plan is turned 90° clockwise, which a lever read without the note needs; at 0.02
+    # both now stand too tall, 0.025 is a standard step smaller than position 11's plan's μV.
+    assert check_lever_scale(analysis, sheets) == [0.025, 0.025]
     force_captions = [text for sheet in sheets for item in sheet.layers
                       if item.name.startswith("forces-") and item.name.endswith("-caption") for text in item.items]
     assert force_captions and {text.size for text in force_captions} == {force_layout.SMALL_CAPTION_SIZE}

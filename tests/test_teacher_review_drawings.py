@@ -132,6 +132,10 @@ def test_the_note_names_the_sense_the_lever_drawing_turns_the_velocity_plan(tmp_
     against, along = SENSES[locale]
     stated = "counter-clockwise" if against in intro else "clockwise" if along in intro else None
     assert stated == drawn_sense, f"the note's lever turns the plan {stated}, the drawing {drawn_sense}: {intro}"
+    # And the drawing's own caption, for the sheet read without the note: its words may be broken over lines.
+    caption = forces.caption("lever-caption")
+    written = "counter-clockwise" if against in caption else "clockwise" if along in caption else None
+    assert written == drawn_sense and "90°" in caption, caption
 
 
 # The plan sheet of the centric slider-crank, position 2 (crank at 60° from the top dead centre, turning

@@ -1207,7 +1207,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     given = sorted([anchor.text for anchor in crowded] + undrawn, key=list(arm_lengths).index)
     parts.append(f"{_sign(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
     equation = _leading(" ".join(parts))
-    caption = [text["lever_title"],
+    # Drawn turned as every lever is: a reader laying the velocity plan beside it must know which way.
+    caption = [text["lever_title"], text["lever_turned"],
                text["comma"].join((sheet.lever_scale_line,
                                    text["body_force_scale"].format(value=format_scale(scale),
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
