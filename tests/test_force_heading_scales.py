@@ -197,3 +197,37 @@ def test_the_heading_over_the_first_part_the_note_shows_a_force_sheet_in_names_i
     assert main(["run", "fixtures/triad_class_iii.toml", *only, "--out", str(out)]) == 0
     assert list(out.glob("forces_*-1.svg")), "the case: the note shows the force sheets in parts"
     assert note_heading_faults(out) == []
+
+
+def heading_gaps(path: Path) -> list[tuple[str, float]]:
+    """Each heading on a sheet: whether it names scales ("scales", "none") and how far its lowest line's baseline
+    stands above the top of the part's drawings under it (mm, read as drawn: a text's top is its baseline less
+    its font size, a path's its highest vertex)."""
+    tops: dict[str, float] = defaultdict(lambda: float("inf"))
+    headings: dict[str, tuple[str, float]] = {}
+    for group in ElementTree.parse(path).getroot().iter(f"{SVG}g"):
+        found = PART.match(group.get("id", ""))
+        if found is None:
+            continue
+        key = f"{found.group(1)}-{found.group(2) or 1}"
+        texts = list(group.iter(f"{SVG}text"))
+        if found.group(3) == "sheet-title":
+            named = [text for text in texts if text.get("font-weight") != "bold"]
+            headings[key] = ("scales" if named else "none", max(float(text.get("y")) for text in texts))
+            continue
+        for text in texts:
+            tops[key] = min(tops[key], float(text.get("y")) - float(text.get("font-size")))
+        for element in group.iter(f"{SVG}path"):
+            ys = [float(y) for y in re.findall(r"[ML]\s*-?[\d.]+,(-?[\d.]+)", element.get("d", ""))]
+            tops[key] = min([tops[key], *ys])
+    return [(kind, tops[key] - baseline) for key, (kind, baseline) in headings.items() if tops[key] < float("inf")]
+
+
+def test_a_heading_left_with_no_scale_stands_as_close_over_its_drawings_as_a_line_of_scales_does(sheets_of):
+    """The triad's equations that go on alone on an A4 are drawn at no scale: their heading named none but kept
+    the line's room, a line's gap between the title and the equations."""
+    gaps = [gap for path in sheets_of("triad_class_iii", "A4") for gap in heading_gaps(path)]
+    bare = [gap for kind, gap in gaps if kind == "none"]
+    named = [gap for kind, gap in gaps if kind == "scales"]
+    assert bare and named
+    assert max(bare) <= max(named) + 0.5, (bare, named)

@@ -125,11 +125,18 @@ def scales_line(scales: Sequence[tuple[str, str]], names: Sequence[str]) -> str:
 
 def with_scales_line(heading: Layer, line: str) -> Layer:
     """A heading's layer (:meth:`Rows._heading_layer`) with its line of scales saying ``line``, none where that is
-    empty: the title's lines, in bold, stay where they stand.  Only the words change, so that a heading narrowed
-    to the drawings a sheet holds under it moves none of them."""
+    empty.  Only the heading changes, so that a heading narrowed to the drawings a sheet holds under it moves none
+    of them; with no scales left, its title comes down onto their line, which would stand empty between it and
+    the drawings under it."""
     titles = tuple(item for item in heading.items if not _is_scales_line(item))
-    lines = tuple(replace(item, text=line) for item in heading.items if _is_scales_line(item) and line)
-    return Layer(heading.name, (*titles, *lines))
+    scales = tuple(item for item in heading.items if _is_scales_line(item))
+    if line or not scales:
+        return Layer(heading.name, (*titles, *(replace(item, text=line) for item in scales)))
+    below = scales[0].at[1]
+    nearest = min((item.at[1] for item in titles if isinstance(item, Text)), key=lambda y: abs(y - below),
+                  default=below)
+    return Layer(heading.name, tuple(replace(item, at=(item.at[0], item.at[1] + below - nearest))
+                                     if isinstance(item, Text) else item for item in titles))
 
 
 def _is_scales_line(item: object) -> bool:
