@@ -221,8 +221,8 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
         rows.append([vector.name, force_report.polar(force, note.mark), note.mm(abs(force) / scale),
                      note.text[f"note_role_{vector.role}"]])
     note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale), unit=text["unit_force_scale"]))
-    header = [note.t("column_force"), f"{note.t('column_value')}, {text['newton']} ∠",
-              f"{note.t('column_length')}, {text['millimetre']}", note.t("column_role")]
+    header = [note.t("column_force"), f"{note.t('column_value')}{text['comma']}{text['newton']} ∠",
+              f"{note.t('column_length')}{text['comma']}{text['millimetre']}", note.t("column_role")]
     note.table(None, header, rows, "lrrl")
     if group.found:
         found = note.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, note.mark)} {text['newton']}"

@@ -258,8 +258,8 @@ def reaction_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> l
 
 def _reaction_table(analysis: Analysis, rows: list[tuple[str, complex, complex]], mark: str) -> list[str]:
     text = strings(analysis.scene.locale)
-    header = (f"| {text['column_reaction']} | {text['column_polygons']}, {text['newton']} ∠ | "
-              f"{text['column_linear']}, {text['newton']} ∠ | δ, % |")
+    header = (f"| {text['column_reaction']} | {text['column_polygons']}{text['comma']}{text['newton']} ∠ | "
+              f"{text['column_linear']}{text['comma']}{text['newton']} ∠ | δ, % |")
     lines = [header, "|---|---:|---:|---:|"]
     for name, drawn, solved in rows:
         lines.append(f"| {name} | {polar(drawn, mark)} | {polar(solved, mark)} | "
@@ -360,8 +360,8 @@ def friction_reaction_lines(analysis: Analysis, plan: PlanPosition, mark: str = 
 def friction_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
     """The friction loads of :func:`friction_load_rows` as a table: the pair, its ρ or f′, its reaction, the load."""
     text = strings(analysis.scene.locale)
-    lines = [(f"| {text['column_pair']} | {text['column_friction_factor']} | {text['column_reaction']}, "
-              f"{text['newton']} | {text['column_friction_load']} |"), "|---|---:|---:|---:|"]
+    lines = [(f"| {text['column_pair']} | {text['column_friction_factor']} | {text['column_reaction']}"
+              f"{text['comma']}{text['newton']} | {text['column_friction_load']} |"), "|---|---:|---:|---:|"]
     for row in friction_load_rows(analysis, plan):
         pair = row.pair
         # With its sense, as the note writes it: a moment's size ρ·|R| and the way it turns the later link, a force

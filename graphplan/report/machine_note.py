@@ -111,11 +111,10 @@ def _reductions(note: Writer, model) -> None:
     inertia, moment = ((text["note_dyn_inertia_symbol"], text["kilogram_metre2"]), (loaded, text["newton_metre"])) \
         if model.turning else ((text["note_dyn_mass_symbol"], text["kilogram"]), (loaded, text["newton"]))
     where = text["dyn_angle_axis"] if model.turning else text["dyn_travel_axis"]
+    by_plan, analytic = (text["bracketed"].format(words=text[key]) for key in ("column_by_plan", "column_analytic"))
     header = [text["note_dyn_position"], where,
-              f"{inertia[0]}, {inertia[1]} ({text['column_by_plan']})", f"{inertia[0]} ({text['column_analytic']})",
-              text["note_dyn_error"],
-              f"{moment[0]}, {moment[1]} ({text['column_by_plan']})", f"{moment[0]} ({text['column_analytic']})",
-              text["note_dyn_error"]]
+              f"{inertia[0]}, {inertia[1]}{by_plan}", f"{inertia[0]}{analytic}", text["note_dyn_error"],
+              f"{moment[0]}, {moment[1]}{by_plan}", f"{moment[0]}{analytic}", text["note_dyn_error"]]
     rows = []
     for plan in model.plans:
         at = math.degrees(plan.driver) % 360.0 if model.turning else plan.driver

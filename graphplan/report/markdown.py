@@ -34,6 +34,17 @@ _SIDES = {"text-align:left": "l", "text-align:center": "c", "text-align:right": 
 _MARKUP = re.compile(r"(?P<anywhere>[\\`*_\[\]<&|#^])|^(?P<number>\d+)(?P<after>[.)])|^(?P<start>[-+=>~])")
 
 
+# Chinese sets no space beside its full-width punctuation: the sentences joined with a Latin space read
+# «比较。 运动副反力», «122.9°） 处», «N （负号».
+_AFTER_FULL_WIDTH = re.compile(r"(?<=[。，；：！？、）」])[ ]+")
+_BEFORE_FULL_WIDTH = re.compile(r"[ ]+(?=[（「])")
+
+
+def set_close(line: str) -> str:
+    """A line of Chinese text without the Latin spaces beside its full-width punctuation."""
+    return _BEFORE_FULL_WIDTH.sub("", _AFTER_FULL_WIDTH.sub("", line))
+
+
 def literal(text: str) -> str:
     """``text`` of the user's own (a scene's title, a ``[project]`` value, a rotor's mass's name) as Markdown that
     reads as it is written.

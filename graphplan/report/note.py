@@ -51,7 +51,7 @@ from ..wording import driver_at, raised
 from . import forces as force_report
 from .force_note import forces_section
 from .machine_note import balancing_section, dynamics_section, vibration_section
-from .markdown import literal, user_texts
+from .markdown import literal, set_close, user_texts
 from .symbols import CAPITALS
 from .tables import (
     error_table_lines,
@@ -91,12 +91,6 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     return raised("\n".join(note.lines).rstrip("\n") + "\n")
 
 
-# Chinese sets no space beside its full-width punctuation: the sentences joined with a Latin space read
-# «比较。 运动副反力», «122.9°） 处», «N （负号».
-_AFTER_FULL_WIDTH = re.compile(r"(?<=[。，；：！？、）」])[ ]+")
-_BEFORE_FULL_WIDTH = re.compile(r"[ ]+(?=[（「])")
-
-
 def _equal_terms(clauses: Sequence[str]) -> dict[str, str]:
     """The terms a step's further clauses set equal, each to its like: ``aFF4ᵏ + aFF4^r = aE6E4ᵏ + aE6E4^r`` gives
     aFF4ᵏ = aE6E4ᵏ and aFF4^r = aE6E4^r."""
@@ -106,11 +100,6 @@ def _equal_terms(clauses: Sequence[str]) -> dict[str, str]:
         if len(sides) == 2 and len(sides[0]) == len(sides[1]):
             equal.update(zip(*sides, strict=True))
     return equal
-
-
-def _set_close(line: str) -> str:
-    """A line of a Chinese note without the Latin spaces beside its full-width punctuation."""
-    return _BEFORE_FULL_WIDTH.sub("", _AFTER_FULL_WIDTH.sub("", line))
 
 
 def _beyond_rounding(value: float, rates: Collection[float]) -> bool:
@@ -191,7 +180,7 @@ class _Note:
 
     def para(self, *lines: str) -> None:
         if self.scene.locale == "zh":
-            lines = tuple(map(_set_close, lines))
+            lines = tuple(map(set_close, lines))
         self.lines += [*lines, ""]
 
     def heading(self, level: int, title: str, number: object = None) -> None:
@@ -1128,7 +1117,7 @@ class _Note:
                          unit_of(reading.quantity, self.text)])
         if not rows:
             return
-        length = f"{self.t('column_length')}, {self.text['millimetre']}"
+        length = f"{self.t('column_length')}{self.text['comma']}{self.text['millimetre']}"
         header = [self.t("column_quantity"), self.t("column_segment"), length, self.t("column_by_plan"),
                   self.t("column_analytic"), self.t("column_unit")]
         caption = self.t(f"note_{kind}_table", number=pp.number)

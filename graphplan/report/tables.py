@@ -33,7 +33,7 @@ from ..misreadings import (
 from ..render.numerals import scale_factor
 from ..wording import balancing_load
 from .forces import number
-from .markdown import literal
+from .markdown import literal, set_close
 from .results import PERCENT_FLOOR
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
@@ -272,10 +272,12 @@ def markdown(analysis: Analysis) -> str:
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
     undefined = undefined_errors(analysis, (*analysis.plans, *measured_velocity_plans(analysis)))
     lines = [f"# {text['errors_title'].format(title=literal(analysis.scene.title))}", "",
-             f"{text['errors_formula']}; {text['errors_drafting'].format(precision=precision)}"
+             f"{text['errors_formula']}{text['semicolon']}{text['errors_drafting'].format(precision=precision)}"
              + (f" {undefined}" if undefined else ""), ""]
     if has_reactions(analysis):
         lines += [reactions_intro(analysis), ""]
+    if analysis.scene.locale == "zh":  # its sentences, joined with a Latin space, set close as the note's are
+        lines = [line if line.startswith("|") else set_close(line) for line in lines]
     for plan in analysis.plans:
         lines += [f"## {text['position_heading'].format(number=plan.number)}", "",
                   *error_table_lines(analysis, plan, mark), ""]

@@ -1,0 +1,110 @@
+"""The Russian and Chinese texts as a teacher of the theory of machines reads them: the textbooks' terms and
+notation, the facts a term states, and each language's punctuation.
+
+Found on a review of every fixture and starter in ru and zh: the Chinese structure table gave the class III triad
+«3 个构件» (it has four links; its order 3 counts its outer pairs) and headed it «Ⅲ级杆组 型»; Chinese table headers
+and errors.md set ASCII commas, semicolons and a space after «。» beside Chinese words; the Chinese dynamics wrote
+ΔT once where all else writes ΔE; a Russian force sheet wrote the friction angle «arctan f» where Russian writes
+arctg (as the note's tg φ); «интегрирование даёт 0,0235 с учётом» read as 0.0235 seconds; a slider driver's note
+named its balancing force twice, «the balancing force on the lever and the balancing force».
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from pathlib import Path
+
+import pytest
+
+from graphplan.analysis import analyse
+from graphplan.locale import strings
+from graphplan.mechanism import build
+from graphplan.report import forces as force_report
+from graphplan.report import tables
+from graphplan.run import run as run_scene
+from graphplan.scene import load
+from graphplan.starters import starter
+
+ROOT = Path(__file__).resolve().parent.parent
+FIXTURES = ROOT / "fixtures"
+CJK = "\u4e00-\u9fff"
+
+
+def note_of(scene_path: Path, out: Path, locale: str, only=("note",)) -> str:
+    scene = dataclasses.replace(load(scene_path), locale=locale)
+    run_scene(scene, out, only=list(only), sheet="none")
+    return (out / "note.md").read_text(encoding="utf-8")
+
+
+def test_the_chinese_structure_table_counts_a_triad_s_outer_pairs_and_names_its_kind_once(tmp_path):
+    """A group's order is the number of its outer pairs, the joints it shares with links outside it: the triad's
+    four links meet the crank and the frame at three (A, C, E), which the Chinese table had written as 3 links."""
+    path = FIXTURES / "triad_class_iii.toml"
+    note = note_of(path, tmp_path / "out", "zh")
+    mechanism = build(load(path))
+    for group in mechanism.groups:
+        outside = [link for link in mechanism.fixed_on if link not in group.links]
+        outer = {joint for joint in group.joints if any(joint in mechanism.fixed_on[link] for link in outside)}
+        row = next(line for line in note.splitlines() if line.startswith(f"| {group.label} |"))
+        cells = [cell.strip() for cell in row.strip("|").split("|")]
+        found = re.fullmatch(r"(I+) 级杆组（(\d+) 个外副）", cells[1])
+        assert found, row
+        assert found.group(1) == "I" * group.klass and int(found.group(2)) == len(outer) == 3
+        assert len(cells[2].split(", ")) == len(group.links) == 4
+        # The heading names the kind after «类型：», not «Ⅲ级杆组 型» (a kind with a type word after it).
+        assert f"**杆组 {group.label}，类型：III 级杆组**" in note
+    assert "个构件" not in note and " 型**" not in note
+    assert "Ⅲ" not in note  # one way of writing a Roman numeral, as the class column writes it
+
+
+@pytest.fixture(scope="module")
+def chinese_shaper(tmp_path_factory):
+    """The shaper starter in Chinese (friction in its pairs, a flywheel and a motor): its note and errors.md."""
+    folder = tmp_path_factory.mktemp("shaper-zh")
+    scene = folder / "shaper.toml"
+    scene.write_text(starter("shaper", "zh"), encoding="utf-8")
+    written = run_scene(load(scene), folder / "out", only=["note", "errors", "dynamics"], sheet="none")
+    files = {name: (folder / "out" / name).read_text(encoding="utf-8") for name in ("note.md", "errors.md")}
+    # forces.md as the run writes it with the forces (their sheets left undrawn: their layout is not the words')
+    return {**files, "forces.md": force_report.markdown(written.analysis)}
+
+
+def test_chinese_tables_and_errors_md_set_full_width_punctuation_beside_chinese_words(chinese_shaper):
+    note, errors, forces = chinese_shaper["note.md"], chinese_shaper["errors.md"], chinese_shaper["forces.md"]
+    headers = [line for text in (note, errors, forces) for line in text.splitlines()
+               if line.startswith("|") and re.search(f"[{CJK}]", line)]
+    assert headers
+    for line in headers:
+        assert not re.search(f"[{CJK}][,;] ", line), line  # «长度, mm», «数值, N ∠»
+        assert not re.search(rf"[{CJK}]\)| \([{CJK}]", line), line  # «Je, kg·m² (图解值)»
+    assert "| 线段 | 长度，mm |" in note and "数值，N ∠" in note and "Je, kg·m²（图解值）" in note
+    assert "| 反力，N | 摩擦载荷 |" in forces and "| 力多边形，N ∠ | 平衡方程组，N ∠ |" in forces
+    prose = [line for line in errors.splitlines() if line and not line.startswith(("|", "#"))]
+    assert prose
+    for line in prose:
+        assert not re.search(r"[。；：，] ", line), line  # «比较。 运动副有摩擦时»
+        assert not re.search(f"; [{CJK}]", line), line  # «× 100 %; 量取»
+    # Each of the two sentences the reactions' paragraph joins is there, set close.
+    assert "结果比较。运动副有摩擦时" in errors
+
+
+def test_the_chinese_dynamics_writes_the_change_of_kinetic_energy_as_its_drawings_do(chinese_shaper):
+    note = chinese_shaper["note.md"]
+    dynamics = note[note.index(f"## 6 {strings('zh')['note_dynamics']}"):]
+    assert "ΔE = Wd − Wr" in dynamics and "ΔE 和飞轮" in dynamics
+    assert "ΔT" not in note
+
+
+def test_the_chinese_note_sets_the_balancing_load_s_symbol_apart_from_its_name(chinese_shaper):
+    note = chinese_shaper["note.md"]
+    assert "四种方法求得的平衡力矩 Mb" in note and "各位置的平衡力矩 Mb" in note
+    assert not re.search("平衡力矩?[A-Za-z]", note)
+
+
+def test_errors_md_of_every_language_keeps_its_own_semicolon(tmp_path):
+    scene = load(FIXTURES / "engine_slider_crank.toml")
+    for locale, joined in (("en", "; "), ("ru", "; "), ("zh", "；")):
+        text = strings(locale)
+        written = tables.markdown(analyse(dataclasses.replace(scene, locale=locale)))
+        assert f"{text['errors_formula']}{joined}" in written
