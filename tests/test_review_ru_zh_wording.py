@@ -14,12 +14,16 @@ from __future__ import annotations
 import dataclasses
 import re
 from pathlib import Path
+from xml.etree import ElementTree
 
 import pytest
+from test_joint_friction import slider_crank
+from test_note_dynamics import KLOSS, machine_note
 
 from graphplan.analysis import analyse
 from graphplan.locale import strings
 from graphplan.mechanism import build
+from graphplan.render.drawings import with_length_scale
 from graphplan.report import forces as force_report
 from graphplan.report import tables
 from graphplan.run import run as run_scene
@@ -100,6 +104,56 @@ def test_the_chinese_note_sets_the_balancing_load_s_symbol_apart_from_its_name(c
     note = chinese_shaper["note.md"]
     assert "四种方法求得的平衡力矩 Mb" in note and "各位置的平衡力矩 Mb" in note
     assert not re.search("平衡力矩?[A-Za-z]", note)
+
+
+def test_a_russian_force_sheet_writes_the_friction_angle_with_arctg(tmp_path):
+    """Russian writes tg and arctg (the note's vibration: tg φ = …); the slide's friction angle read arctan f."""
+    from test_slide_friction_on_the_sheet import caption_of
+
+    scene = slider_crank('[[friction]]\njoint = "B"\nlinks = [1, 4]\nf = 0.1')
+    for locale, written in (("ru", "arctg"), ("zh", "arctan"), ("en", "arctan")):
+        analysis = with_length_scale(analyse(dataclasses.replace(scene, locale=locale)))
+        for position in analysis.plans:
+            caption = caption_of(analysis, position)
+            found = re.search(r"φ = (\w+) f = ([\d.,]+)°", caption)
+            assert found and found.group(1) == written, caption
+            assert float(found.group(2).replace(",", ".")) == pytest.approx(5.711, abs=1e-3)  # atan 0.1 in degrees
+
+
+def test_the_russian_integrated_delta_is_not_read_as_seconds(tmp_path):
+    """«интегрирование даёт 0,0235 с учётом…»: a number followed by «с» reads as seconds in a Russian text."""
+    note = machine_note(tmp_path, KLOSS, "ru")[0]
+    line = next(line for line in note.splitlines() if line.startswith("Маховик рассчитан"))
+    found = re.search(r"интегрирование даёт δ = (\d+,\d+)\.$", line)
+    assert found, line
+    steady = re.search(r"δ = \(ωmax − ωmin\)/ωср = (\d+,\d+)", note)
+    assert steady and steady.group(1) == found.group(1)
+    assert not re.search(r"\d с учётом", note)
+
+
+def test_the_russian_load_diagram_says_what_its_ring_marks_in_the_note_s_terms(tmp_path):
+    out = tmp_path / "out"
+    scene = dataclasses.replace(load(FIXTURES / "engine_slider_crank.toml"), locale="ru")
+    run_scene(scene, out, only=["load_diagrams", "note"], sheet="none")
+    drawn = [" ".join(element.itertext()) for element in ElementTree.parse(out / "load_diagrams.svg").iter()
+             if element.tag.endswith("}text")]
+    legend = strings("ru")["ld_plans"]
+    assert legend in drawn
+    # The note calls those sheets «листы силового расчёта»; the legend had «лист сил положения плана».
+    assert "листы силового расчёта" in (out / "note.md").read_text(encoding="utf-8")
+    assert "силового расчёта" in legend and not any("лист сил " in text for text in drawn)
+
+
+def test_the_russian_friction_reactions_sentence_reads_as_russian(tmp_path):
+    scene = slider_crank('[[friction]]\njoint = "A"\nlinks = [2, 3]\nf = 0.1\nradius = 0.01')
+    analysis = analyse(dataclasses.replace(scene, locale="ru"))
+    written = force_report.markdown(analysis)
+    # Once for each position whose friction settles: «…с решением всех уравнений равновесия с трением совместно:»
+    # left «совместно» hanging at the sentence's end.
+    said = ("Реакции с учётом трения по планам сил с трением в сравнении с совместным решением всех уравнений "
+            "равновесия с трением:")
+    assert written.count(said) == len(analysis.plans) > 0
+    assert "совместно:" not in written
 
 
 def test_errors_md_of_every_language_keeps_its_own_semicolon(tmp_path):

@@ -44,12 +44,14 @@ def test_a_slide_s_coefficient_friction_angle_and_friction_force_are_written_und
     for position in analysis.plans:
         caption = caption_of(analysis, position)  # the SVG writer puts in the locale's decimal mark
         assert strings(locale)["sliding_friction"].split("{")[0].strip() in caption
+        arctan = strings(locale)["arctangent"]  # arctg in Russian
         if theta is None or theta == 90.0:  # a flat guide: f itself, no reduced f′
-            assert re.search(rf"\bfB = {NUMBER}{COMMA}φ = arctan f = {NUMBER}°", caption) and "f′" not in caption
-            written_f, angle = map(float, re.search(rf"\bfB = {NUMBER}{COMMA}φ = arctan f = {NUMBER}°", caption).groups())
+            flat = re.search(rf"\bfB = {NUMBER}{COMMA}φ = {arctan} f = {NUMBER}°", caption)
+            assert flat and "f′" not in caption
+            written_f, angle = map(float, flat.groups())
         else:
             given, half, written_f, angle = map(float, re.search(
-                rf"f′B = {NUMBER}/sin {NUMBER}° = {NUMBER}{COMMA}φ = arctan f′ = {NUMBER}°", caption).groups())
+                rf"f′B = {NUMBER}/sin {NUMBER}° = {NUMBER}{COMMA}φ = {arctan} f′ = {NUMBER}°", caption).groups())
             assert (given, half) == (F, theta)
         assert written_f == pytest.approx(reduced, rel=1e-3)
         assert angle == pytest.approx(math.degrees(math.atan(reduced)), rel=1e-3)

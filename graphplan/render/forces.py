@@ -718,12 +718,12 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
         where = _pair_name(sheet, pair)
         theta = pair.spec.groove_half_angle
         if not pair.in_vee:
-            coefficient, angle = f"f{where} = {short(pair.coefficient)}", "φ = arctan f"
+            coefficient, angle = f"f{where} = {short(pair.coefficient)}", f"φ = {text['arctangent']} f"
         else:
             # f′ = f/sin θ, written with the numbers alone: a break inside "sin θ" would part it
             coefficient = (f"f′{where} = {short(pair.spec.f)}/sin {short(math.degrees(theta))}° = "
                            f"{short(pair.coefficient)}")
-            angle = "φ = arctan f′"
+            angle = f"φ = {text['arctangent']} f′"
         values.append((coefficient, f"{angle} = {significant(math.degrees(math.atan(pair.coefficient)))}°"))
         load = next((load for load in group.loads if load.name in pair.load_names), None)
         force = abs(load.force) if load is not None else pair.coefficient * abs(
