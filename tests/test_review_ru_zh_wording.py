@@ -156,6 +156,25 @@ def test_the_russian_friction_reactions_sentence_reads_as_russian(tmp_path):
     assert "совместно:" not in written
 
 
+@pytest.mark.parametrize("locale, words", [("ru", "уравновешивающ"), ("zh", "平衡力"), ("en", "balancing")])
+def test_a_slider_driver_s_lever_names_its_balancing_force_once(tmp_path, locale, words):
+    """The lever's force of a slider driver is its balancing force: «Уравновешивающая сила на рычаге и
+    уравновешивающая сила: Fb = …; Fb = …» named one force twice as if two."""
+    note = note_of(FIXTURES / "slider_driven.toml", tmp_path / "out", locale)
+    lines = [line for line in note.splitlines() if line.startswith(("Уравновешивающая сила на рычаге",
+                                                                    "杠杆上的平衡力", "Balancing force on the lever"))]
+    assert lines
+    for line in lines:
+        assert line.lower().count(words) == 1, line
+        assert re.search(r"Fb = \|Σ\(F·h\)\|/pa = ", line), line
+    assert len(lines) == len(analyse(load(FIXTURES / "slider_driven.toml")).plans)
+
+
+def test_a_crank_s_lever_still_gives_the_balancing_moment_beside_the_force(chinese_shaper):
+    lines = [line for line in chinese_shaper["note.md"].splitlines() if line.startswith("杠杆上的平衡力")]
+    assert lines and all(line.startswith("杠杆上的平衡力及平衡力矩：Fb = ") and "|Mb| = Fb·lOA" in line for line in lines)
+
+
 def test_errors_md_of_every_language_keeps_its_own_semicolon(tmp_path):
     scene = load(FIXTURES / "engine_slider_crank.toml")
     for locale, joined in (("en", "; "), ("ru", "; "), ("zh", "；")):

@@ -330,9 +330,11 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
             length = f"l{driver.pivot}{driver.joint}"
             equation += (f"{text['separator']}|{name}| = Fb·{length} = {note.product(note.n(force), note.n(driver.length))} = "
                          f"{note.n(abs(lever.balancing), 6)} {unit}{note.with_sense(lever.balancing)}")
-        else:
+            note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True),
+                             equation=equation))
+        else:  # a slider's balancing load is the lever's force itself, signed: not named twice as if another load
             equation += f"{text['separator']}{name} = {note.n(lever.balancing, 6)} {unit}"
-        note.para(note.t("note_lever_result", load=balancing_load(note.mechanism, text, lower=True), equation=equation))
+            note.para(note.t("note_lever_result_force", equation=equation))
         difference = lever.difference_percent(polygons)
         note.para(note.t("note_lever_difference", name=name, lever=note.n(lever.balancing, 6),
                          polygons=note.enclosed(note.n(polygons, 6)), delta=note.n(difference, 3)))
