@@ -60,6 +60,9 @@ def test_the_chinese_structure_table_counts_a_triad_s_outer_pairs_and_names_its_
         assert f"**杆组 {group.label}，类型：III 级杆组**" in note
     assert "个构件" not in note and " 型**" not in note
     assert "Ⅲ" not in note  # one way of writing a Roman numeral, as the class column writes it
+    # The two lines that close the triad's polygon, listed in a Chinese sentence, take its enumeration comma.
+    closing = re.findall(r"外反力分量（([^）]*)）", note)
+    assert closing and all(re.fullmatch(r"R\d+n、R\d+n", pair) for pair in closing), closing
 
 
 @pytest.fixture(scope="module")
@@ -181,3 +184,26 @@ def test_errors_md_of_every_language_keeps_its_own_semicolon(tmp_path):
         text = strings(locale)
         written = tables.markdown(analyse(dataclasses.replace(scene, locale=locale)))
         assert f"{text['errors_formula']}{joined}" in written
+
+
+def test_the_chinese_balancing_plot_and_accuracy_report_set_full_width_punctuation_beside_chinese_words():
+    """The cycle's balancing-moment plot labelled its axes «曲柄自第一位置转过的角度, °» and «平衡力矩, N·m»; the
+    accuracy report said «基准解 (mpmath) 比较»."""
+    from types import SimpleNamespace
+
+    import matplotlib
+
+    from graphplan.report import accuracy as accuracy_report
+    from graphplan.report.figures import _balancing_figure
+    from graphplan.report.plot_style import settings
+
+    scene = load(FIXTURES / "engine_slider_crank.toml")
+    with matplotlib.rc_context(settings()):  # as balancing_diagram draws it, in the fonts that set Chinese
+        plot = _balancing_figure(analyse(dataclasses.replace(scene, locale="zh"))).axes[0]
+        russian = _balancing_figure(analyse(dataclasses.replace(scene, locale="ru"))).axes[0]
+    assert plot.get_xlabel() == "曲柄自第一位置转过的角度，°" and plot.get_ylabel() == "平衡力矩，N·m"
+    assert russian.get_ylabel() == "уравновешивающий момент, Н·м"
+    study = SimpleNamespace(case=SimpleNamespace(compared=(1, 2, 3), left_out={}), rows=(), orders={})
+    report = accuracy_report.markdown(study, "zh", "曲柄滑块机构")
+    assert "基准解（mpmath）比较" in report
+    assert not re.search(rf"[{CJK}][,;] |[{CJK}] ?\(|\) ?[{CJK}]", report)

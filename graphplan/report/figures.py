@@ -68,7 +68,7 @@ def _balancing_figure(analysis: Analysis):
                   label=text["diagram_polygons"])
     plot.axhline(0.0, color="black", linewidth=0.5)
     plot.set_xlabel(axis)
-    plot.set_ylabel(f"{name}, {unit}")
+    plot.set_ylabel(f"{name}{text['comma']}{unit}")  # a Chinese name takes a full-width comma
     plot.set_title(analysis.scene.title, fontsize=10, parse_math=False)  # the user's text, not mathtext
     plot.grid(True, linewidth=0.3)
     plot.legend(fontsize=8, loc="best")

@@ -201,7 +201,7 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
         key = "note_assur_forces" if all(name.endswith("n") for name in closing) else "note_assur_forces_sliding"
         if group.projections:
             key = "note_assur_forces_slot"
-        note.para(note.t(key, point=whole.about, unknown=whole.unknown, closing=", ".join(closing)))
+        note.para(note.t(key, point=whole.about, unknown=whole.unknown, closing=text["enumeration"].join(closing)))
     if group.projections:
         note.para(note.t("note_slot_projections"), *(f"- {_projection(note, equation)}" for equation in group.projections))
     loads = {load.name: load for load in group.loads}
