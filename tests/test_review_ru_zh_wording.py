@@ -207,3 +207,11 @@ def test_the_chinese_balancing_plot_and_accuracy_report_set_full_width_punctuati
     report = accuracy_report.markdown(study, "zh", "曲柄滑块机构")
     assert "基准解（mpmath）比较" in report
     assert not re.search(rf"[{CJK}][,;] |[{CJK}] ?\(|\) ?[{CJK}]", report)
+
+
+def test_the_chinese_machine_note_says_starting_one_way(tmp_path):
+    """The motor's «起动转矩» and «起动时» stood beside «机器启动用时» in one paragraph: 起动, as GB/T 2900 names a
+    motor's start, throughout."""
+    note = machine_note(tmp_path, KLOSS, "zh")[0]
+    assert "起动转矩" in note and "机器起动用时" in note
+    assert "启动" not in note

@@ -60,8 +60,8 @@ def test_the_reduced_load_of_a_slider_is_a_force_in_the_note(tmp_path, constant,
     force = {"driving": text["note_dyn_plans_force_symbol_driving"],
              "resisting": text["note_dyn_plans_force_symbol_resisting"],
              "none": text["note_dyn_force_symbol"]}[constant]
-    # The column the sentence explains is headed with the same symbol, in newtons.
-    assert f"| {force}, {text['newton']} (" in section
+    # The column the sentence explains is headed with the same symbol, in newtons (by plan: « (…)», «（…）»).
+    assert f"| {force}, {text['newton']}{text['bracketed'].format(words=text['column_by_plan'])} |" in section
     assert text["note_dyn_table_slider"] in section and text["note_dyn_table"] not in section
     if constant == "none":
         assert {"en": "Fe = Fd + Fr", "ru": "Fп = Fд + Fс", "zh": "Fe = Fd + Fr"}[locale] in section
