@@ -256,7 +256,7 @@ def test_every_position_holds_what_the_contract_promises(name):
             assert entry["stroke"] in ("working", "idle") and "working" in tables["positions"]
     for warning in results["warnings"]:
         assert set(warning) == {"position", "code", "detail"} and warning["position"] in numbers
-    for row in results.get("errors", []):
+    for row in results["errors"]:
         assert set(row) == {"position", "quantity", "analytic", "plan", "source", "percent"}
         assert row["source"] in ("construction", "drafting", "measured") and row["position"] in numbers
     if "extremes_deg" in results:
@@ -625,3 +625,14 @@ def test_a_clutch_s_driving_half_may_start_at_a_speed_of_its_own():
     assert in_rad.dynamics.motion.start.driving_omega == 3.0
     with pytest.raises(SceneError, match=r"dynamics\.start\.driving_rpm: only with a clutch"):
         graphplan.load(flywheel_starting({"driving_rpm": 60.0}, clutch=False))
+
+
+def test_a_scene_without_plans_writes_an_empty_list_of_errors():
+    """The contract shows `errors` beside `warnings`; without plan positions the key was left out, and a script's
+    results["errors"] failed where `warnings` held an empty list."""
+    tables = tomllib.loads(starter("crank-rocker"))
+    del tables["positions"]["plans"]
+    scene = graphplan.load(tables)
+    analysis = analyse(scene)
+    results = strict(dumps(document(scene, analysis, chosen(scene, analysis))).encode("utf-8"))
+    assert results["errors"] == [] and results["warnings"] == []

@@ -133,11 +133,10 @@ def results(analysis: Analysis) -> dict[str, Any]:
     if analysis.cycle is not None:
         document["cycle_efficiency"] = _cycle_efficiency(analysis.cycle)
     document["positions"] = entries
-    errors = analysis.errors
-    if errors:
-        document["errors"] = [{"position": row.position, "quantity": row.quantity, "analytic": number(row.analytic),
-                               "plan": number(row.plan), "source": row.source, "percent": number(row.percent, PERCENT_FLOOR)}
-                              for row in errors]
+    # Always a list, as `warnings` is: a script reading the contract's `errors` of a scene with no plans finds none.
+    document["errors"] = [{"position": row.position, "quantity": row.quantity, "analytic": number(row.analytic),
+                           "plan": number(row.plan), "source": row.source, "percent": number(row.percent, PERCENT_FLOOR)}
+                          for row in analysis.errors]
     document["warnings"] = [{"position": int(positions.numbers[w.position]), "code": w.code, "detail": w.detail}
                             for w in analysis.warnings]
     return document
