@@ -151,13 +151,18 @@ def test_every_results_key_is_documented(name):
 
 
 def test_the_command_line_writes_the_results_these_tests_walk(tmp_path, capsys):
+    """The file on disk is the bytes the walk reads, UTF-8 whatever the platform's encoding: a Russian title's
+    letters as they are."""
     scene = tmp_path / "slider-crank.toml"
-    scene.write_text(scene_text("starter:slider-crank"), encoding="utf-8")
+    scene.write_text(starter("slider-crank", "ru"), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "positions,forces,errors"]) == 0
     loaded = graphplan.scene.loads(scene.read_text(encoding="utf-8"))
     analysis = analyse(loaded)
     expected = dumps(document(loaded, analysis, chosen(loaded, analysis, ["positions", "forces", "errors"])))
-    assert (tmp_path / "out" / "results.json").read_bytes() == expected.encode("utf-8")
+    written = (tmp_path / "out" / "results.json").read_bytes()
+    assert written == expected.encode("utf-8")
+    title = strict(written)["scene"]
+    assert title == loaded.title and re.search("[а-яА-Я]", title)
 
 
 # --- 2. the keys promised for a scene of its kind, with their shapes --------------------------------------------------
@@ -378,6 +383,16 @@ def test_a_plan_s_scale_and_values_are_in_m_s_per_mm_and_m_s(name):
         assert speeds
         for point, value in speeds.items():
             assert value == pytest.approx(abs(vector(points[point]["v"])), rel=1e-6, abs=1e-9), point
+        rates = entry["plans"]["acceleration"]["values"]
+        for quantity, value in rates.items():
+            if quantity[1:] in points:
+                assert value == pytest.approx(abs(vector(points[quantity[1:]]["a"])), rel=1e-6, abs=1e-9), quantity
+        # ω and ε read off the plans are signed, counter-clockwise positive, as the links' are: rad/s and rad/s².
+        for values, key in ((plan["values"], "omega"), (rates, "epsilon")):
+            for quantity, value in values.items():
+                link = quantity.removeprefix(key)
+                if quantity.startswith(key) and link in entry["links"]:
+                    assert value == pytest.approx(entry["links"][link][key], rel=1e-6, abs=1e-9), quantity
 
 
 FLYWHEELS = [name for name in SCENES if "delta" in tables_of(name).get("dynamics", {})]
@@ -449,6 +464,8 @@ def test_the_vibration_s_numbers_are_in_their_documented_units(name):
     assert vibration["amplitude"] == pytest.approx(tables["unbalance"] / mass * magnification)
     assert vibration["transmissibility"] == pytest.approx(
         math.hypot(1, 2 * zeta * ratio) / math.hypot(1 - ratio ** 2, 2 * zeta * ratio))
+    assert vibration["phase_deg"] == pytest.approx(math.degrees(math.atan2(2 * zeta * ratio, 1 - ratio ** 2)))
+    assert vibration["transmitted_force"] == pytest.approx(vibration["transmissibility"] * vibration["exciting_force"])
     isolation = vibration["isolation"]
     assert isolation["stiffness"] == pytest.approx(mass * (omega / isolation["frequency_ratio"]) ** 2)
 
@@ -636,3 +653,54 @@ def test_a_scene_without_plans_writes_an_empty_list_of_errors():
     analysis = analyse(scene)
     results = strict(dumps(document(scene, analysis, chosen(scene, analysis))).encode("utf-8"))
     assert results["errors"] == [] and results["warnings"] == []
+
+
+def test_the_balancing_moment_is_n_m_counter_clockwise_by_the_power_it_gives():
+    """With no masses and no weight, the crank's balancing moment gives the power the resisting moment takes:
+    Mb·ω2 = M·|ω4| in the working stroke (N·m, counter-clockwise positive), 0 in the idle one."""
+    tables = tomllib.loads(starter("crank-rocker"))
+    tables["scene"]["gravity"] = 0.0
+    del tables["links"]
+    load, = tables["loads"]
+    assert (load["kind"], load["link"], load["during"], load["resisting"]) == ("moment", 4, "working", True)
+    scene = graphplan.load(tables)
+    analysis = analyse(scene)
+    results = strict(dumps(document(scene, analysis, chosen(scene, analysis))).encode("utf-8"))
+    omega = crank_speed(tables["driver"])
+    for entry in results["positions"]:
+        taken = load["value"] * abs(entry["links"]["4"]["omega"]) if entry["stroke"] == "working" else 0.0
+        moment = entry["equilibrium"]["balancing_moment"]
+        assert moment * omega == pytest.approx(taken, rel=1e-9, abs=1e-9 * load["value"]), entry["index"]
+        if "forces" in entry:
+            assert entry["forces"]["balancing_moment"] == pytest.approx(moment, rel=1e-9)
+
+
+@pytest.mark.parametrize("name", [name for name in SCENES if "dynamics" in tables_of(name)])
+def test_the_works_are_joules_over_the_travel_in_radians(name):
+    """The works are the moments (N·m) integrated over `travel` (rad), the resistances' taken as positive, and ΔT
+    is what the driving work leaves over them."""
+    dynamics = results_of(name)["dynamics"]
+    travel = np.array(dynamics["travel"])
+    driving = np.array(dynamics["driving_work"])
+    resisting = np.array(dynamics["resisting_work"])
+    scale = max(abs(driving).max(), abs(resisting).max())
+    assert driving[-1] == pytest.approx(np.trapezoid(dynamics["driving_moment"], travel), abs=1e-4 * scale)
+    assert resisting[-1] == pytest.approx(-np.trapezoid(dynamics["resisting_moment"], travel), abs=1e-4 * scale)
+    assert dynamics["kinetic_energy_change"] == pytest.approx(driving - resisting, abs=1e-9 * scale)
+
+
+@pytest.mark.parametrize("name", [name for name in LINKAGES if tables_of(name).get("dynamics")])
+def test_a_plan_s_reduced_inertia_is_kg_m2_from_the_positions_speeds(name):
+    """Je = Σ (m·vS² + JS·ω²)/ω1², from the masses of the scene and the speeds results.json gives at the position."""
+    tables, results = tables_of(name), results_of(name)
+    positions = {entry["index"]: entry for entry in results["positions"]}
+    driving = crank_speed(tables["driver"])
+    plans = results["dynamics"]["plans"]
+    with_a_velocity_plan = sorted({*listed(tables, "velocity_plans"), *listed(tables, "plans")})
+    assert [plan["index"] for plan in plans] == with_a_velocity_plan   # "each position with a velocity plan"
+    for plan in plans:
+        entry = positions[plan["index"]]
+        energy = sum(link["mass"] * abs(vector(entry["points"][link["centre"]]["v"])) ** 2
+                     + link.get("inertia", 0.0) * entry["links"][number]["omega"] ** 2
+                     for number, link in tables["links"].items())
+        assert plan["reduced_inertia_exact"] == pytest.approx(energy / driving ** 2, rel=1e-9)
