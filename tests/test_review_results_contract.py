@@ -251,6 +251,8 @@ def test_every_position_holds_what_the_contract_promises(name):
                 entry["forces"])
             assert all(is_xy(force) for force in entry["forces"]["reactions"].values())
         assert ("velocity_plan" in entry) == (entry["index"] in velocity_plans)
+        if "velocity_plan" in entry:   # "as plans.velocity has them"
+            assert set(entry["velocity_plan"]) == {"scale", "points_mm", "values"}
         assert ("equilibrium" in entry) == forces
         for slide in entry.get("slides", []):
             assert set(slide) == {"slider", "guide", "joint", "velocity", "acceleration"}
@@ -263,7 +265,8 @@ def test_every_position_holds_what_the_contract_promises(name):
         assert set(warning) == {"position", "code", "detail"} and warning["position"] in numbers
     for row in results["errors"]:
         assert set(row) == {"position", "quantity", "analytic", "plan", "source", "percent"}
-        assert row["source"] in ("construction", "drafting", "measured") and row["position"] in numbers
+        assert row["source"] in ("construction", "drafting", "measured")
+        assert row["position"] in {*plans, *velocity_plans}   # numbered as `index` is, a position with a plan
     if "extremes_deg" in results:
         assert len(results["extremes_deg"]) == 2 and set(results["strokes"]) == {"working_deg", "idle_deg",
                                                                                   "time_ratio"}
@@ -319,6 +322,7 @@ def test_the_crank_pin_moves_at_omega_times_the_crank_length(name):
     for entry in results["positions"]:
         assert entry["driver"]["omega"] == pytest.approx(omega, rel=1e-11)
         assert entry["driver"]["epsilon"] == pytest.approx(epsilon, abs=1e-11)
+        assert 0 <= entry["driver"]["angle_deg"] < 360
         crank = length * cmath.exp(1j * math.radians(entry["driver"]["angle_deg"]))
         pin = entry["points"][driver["joint"]]
         scale = abs(omega) * length + abs(epsilon) * length + omega * omega * length
@@ -571,26 +575,27 @@ def tables_in(node, path=()):
             yield from tables_in(value, (*path, index))
 
 
-@pytest.mark.parametrize("name", SCENES)
-def test_an_unknown_key_in_any_table_is_refused_naming_it(name):
-    """A key added to any table of the scene, a `[measured.N]` plan's readings among them (read as a segment of
-    the plan, so refused by the analysis, not the reader), is refused with its key path."""
+def refuses_a_stray_key_in_every_table(tables: dict) -> None:
+    """A key added to any table of the scene is refused with its name; a `[measured.N]` plan's readings, which take
+    any segment's name, by the analysis that looks the segment up on the plan."""
     import copy
 
-    tables = tables_of(name)
     for path in tables_in(tables):
         scene = copy.deepcopy(tables)
         table = scene
         for key in path:
             table = table[key]
         table["stray_key"] = 1.0
-        where = ".".join(str(key) for key in path)
         with pytest.raises(GraphplanError) as refused:
             loaded = graphplan.load(scene)
             if loaded.has_linkage:
                 analyse(loaded)
-        message = str(refused.value)
-        assert "stray_key" in message, (where, message)
+        assert "stray_key" in str(refused.value), (path, str(refused.value))
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_an_unknown_key_in_any_table_is_refused_naming_it(name):
+    refuses_a_stray_key_in_every_table(tables_of(name))
 
 
 def test_the_keys_the_pages_add_beyond_the_fixtures_are_taken():
@@ -704,3 +709,77 @@ def test_a_plan_s_reduced_inertia_is_kg_m2_from_the_positions_speeds(name):
                      + link.get("inertia", 0.0) * entry["links"][number]["omega"] ** 2
                      for number, link in tables["links"].items())
         assert plan["reduced_inertia_exact"] == pytest.approx(energy / driving ** 2, rel=1e-9)
+
+
+@pytest.mark.parametrize("name", [name for name in LINKAGES if "working" in tables_of(name).get("positions", {})])
+def test_the_strokes_are_where_the_working_link_moves_in_its_sense(name):
+    """A position's `stroke` is `working` where the working link moves in `positions.working.sense`; the crank turns
+    `strokes.working_deg` from the first of `extremes_deg` to the second, in degrees."""
+    tables, results = tables_of(name), results_of(name)
+    working = tables["positions"]["working"]
+    ours = [entry for entry in results["positions"] if "stroke" in entry]
+    sense = 1.0 if working["sense"] in ("ccw", "forward") else -1.0
+    if working["sense"] in ("ccw", "cw"):
+        speeds = [entry["links"][str(working["link"])]["omega"] for entry in ours]
+    else:   # a slider's velocity along its guide's direction
+        speeds = [next((slide["velocity"] for slide in entry.get("slides", []) if slide["slider"] == working["link"]),
+                       None) for entry in ours]
+    if any(speed is not None for speed in speeds):
+        largest = max(abs(speed) for speed in speeds if speed is not None)
+        for entry, speed in zip(ours, speeds, strict=True):
+            if speed is not None and abs(speed) > 1e-6 * largest:
+                assert (entry["stroke"] == "working") == (sense * speed > 0), entry["index"]
+    if "extremes_deg" in results:
+        start, end = results["extremes_deg"]
+        turn = 1.0 if crank_speed(tables["driver"]) > 0 else -1.0
+        assert results["strokes"]["working_deg"] == pytest.approx((turn * (end - start)) % 360.0)
+
+
+@pytest.mark.parametrize("name", LINKAGES)
+def test_a_slider_on_the_frame_moves_at_its_slide_s_velocity(name):
+    """A slide's `velocity` and `acceleration` (m/s, m/s²) relative to a frame guide are its joint's whole motion."""
+    tables, results = tables_of(name), results_of(name)
+    frame = tables["frame"]["link"]
+    checked = 0
+    for entry in results["positions"]:
+        for slide in entry.get("slides", []):
+            if slide["guide"] != frame or slide["velocity"] is None:
+                continue
+            joint = entry["points"][slide["joint"]]
+            assert abs(vector(joint["v"])) == pytest.approx(abs(slide["velocity"]), rel=1e-9, abs=1e-12)
+            assert abs(vector(joint["a"])) == pytest.approx(abs(slide["acceleration"]), rel=1e-9, abs=1e-12)
+            checked += 1
+    has_frame_slides = any(slide["guide"] == frame for entry in results["positions"] for slide in entry.get("slides", []))
+    assert checked or not has_frame_slides
+
+
+def scenes_beyond_the_fixtures() -> dict[str, dict]:
+    """Tables no fixture or starter gives: a clutch, a brake and a start; a rotor on a shaft with named masses and
+    planes; a mechanism's [project], [forces], [output], a load's stroke, hand readings of every kind, friction."""
+    import datetime
+
+    flywheel = flywheel_starting({"rpm": 0.0, "driving_rpm": 60.0, "angle_deg": 10.0}, clutch=True)
+    flywheel["dynamics"]["brake"] = {"torque": 50.0, "at": 30.0}
+    rotor = tomllib.loads(starter("rotor"))
+    del rotor["vibration"]["stiffness"]
+    rotor["vibration"]["shaft"] = {"modulus": 2.1e11, "diameter": 0.03, "length": 0.8}
+    rotor["balancing"]["masses"][0]["name"] = "A"
+    rotor["balancing"]["plane_names"] = ["L", "R"]
+    mechanism = tomllib.loads(starter("crank-rocker"))
+    plan = mechanism["positions"]["plans"][0]
+    mechanism["project"] = {"author": "A", "date": datetime.date(2026, 12, 1)}
+    mechanism["forces"] = {"inertia": "displaced"}
+    mechanism["output"] = {"include": ["positions", "velocity", "forces", "errors"]}
+    mechanism["loads"][0]["stroke"] = {"link": 4, "sense": mechanism["positions"]["working"]["sense"]}
+    mechanism["measured"] = {str(plan): {"velocity": {"pa": 100.0}, "forces": {"R23": 10.0}, "balancing": 10.0}}
+    mechanism["friction"] = [{"joint": "A", "f": 0.1, "radius": 0.01}]
+    return {"flywheel": flywheel, "rotor": rotor, "crank-rocker": mechanism}
+
+
+@pytest.mark.parametrize("name", ["flywheel", "rotor", "crank-rocker"])
+def test_an_unknown_key_in_a_table_no_fixture_gives_is_refused_naming_it(name):
+    tables = scenes_beyond_the_fixtures()[name]
+    loaded = graphplan.load(tables)
+    if loaded.has_linkage:
+        analyse(loaded)   # the scene itself is taken
+    refuses_a_stray_key_in_every_table(tables)
