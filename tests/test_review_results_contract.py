@@ -783,3 +783,40 @@ def test_an_unknown_key_in_a_table_no_fixture_gives_is_refused_naming_it(name):
     if loaded.has_linkage:
         analyse(loaded)   # the scene itself is taken
     refuses_a_stray_key_in_every_table(tables)
+
+
+def test_the_friction_loads_are_f_times_the_reactions_against_the_motion():
+    """On the shaper starter, the one scene with friction (the ram's flat guide along x and the crank's journal): a
+    slide's `Ff` (N) is f·|R| against the sliding, a journal's `Mf` (N·m) f·r·|R| against the turning; η is Mb0/Mb
+    where the driver drives; over the cycle η = A0/A and the friction's work is A − A0 (J)."""
+    assert [name for name in LINKAGES if tables_of(name).get("friction")] == ["starter:shaper"]
+    tables, results = tables_of("starter:shaper"), results_of("starter:shaper")
+    frame, driver = tables["frame"]["link"], tables["driver"]["link"]
+    pairs = tables["friction"]
+    assert all("links" in pair or pair["joint"] == tables["driver"]["pivot"] for pair in pairs)
+    checked = 0
+    for entry in results["positions"]:
+        friction = entry.get("forces", {}).get("friction")
+        if friction is None or friction["self_locking"]:
+            continue
+        for pair in pairs:
+            later, earlier = pair.get("links", [driver, frame])
+            reaction = abs(vector(friction["reactions"][f"R{earlier}{later}"]))
+            if "radius" in pair:
+                moment = friction["loads"][f"Mf{earlier}{later}"]
+                assert abs(moment) == pytest.approx(pair["f"] * pair["radius"] * reaction, rel=1e-9)
+                assert moment * entry["links"][str(later)]["omega"] < 0   # the journal turns with the later link
+            else:
+                force = vector(friction["loads"][f"Ff{earlier}{later}"])
+                assert abs(force) == pytest.approx(pair["f"] * reaction, rel=1e-9)
+                sliding = next(slide for slide in entry["slides"] if slide["slider"] == later)
+                assert abs(force.imag) <= 1e-12 * abs(force)   # the starter's ram slides along x
+                assert force.real * sliding["velocity"] < 0
+            checked += 1
+        without, with_friction = entry["forces"]["balancing_moment"], friction["balancing_moment"]
+        if without * with_friction > 0 and abs(with_friction) >= abs(without):
+            assert friction["efficiency"] == pytest.approx(without / with_friction, rel=1e-9)
+    assert checked
+    cycle = results["cycle_efficiency"]
+    assert cycle["friction_work"] == pytest.approx(cycle["work_with_friction"] - cycle["work_without_friction"])
+    assert cycle["efficiency"] == pytest.approx(cycle["work_without_friction"] / cycle["work_with_friction"])
