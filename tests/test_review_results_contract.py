@@ -250,6 +250,9 @@ def test_every_position_holds_what_the_contract_promises(name):
             assert {"reactions", balancing, f"lever_{balancing}", "polygon_scale", "polygon_scales"} <= set(
                 entry["forces"])
             assert all(is_xy(force) for force in entry["forces"]["reactions"].values())
+            polygons, lever = entry["forces"][balancing], entry["forces"][f"lever_{balancing}"]
+            parted = 100 * (lever - polygons) / polygons if polygons else 0.0
+            assert entry["forces"]["lever_difference_percent"] == pytest.approx(parted, abs=1e-8)
         assert ("velocity_plan" in entry) == (entry["index"] in velocity_plans)
         if "velocity_plan" in entry:   # "as plans.velocity has them"
             assert set(entry["velocity_plan"]) == {"scale", "points_mm", "values"}
@@ -820,3 +823,38 @@ def test_the_friction_loads_are_f_times_the_reactions_against_the_motion():
     cycle = results["cycle_efficiency"]
     assert cycle["friction_work"] == pytest.approx(cycle["work_with_friction"] - cycle["work_without_friction"])
     assert cycle["efficiency"] == pytest.approx(cycle["work_without_friction"] / cycle["work_with_friction"])
+
+
+@cache
+def warning_codes_written() -> dict[str, str]:
+    """Each warning code graphplan can write, with one place: a position's (`PositionWarning(index, "singular", …)`) and
+    a rotor's or a machine's (`code = "couple-left"` on its caution's class)."""
+    codes: dict[str, str] = {}
+    for path, tree in parsed_sources():
+        for node in ast.walk(tree):
+            code = None
+            if isinstance(node, ast.Call) and getattr(node.func, "id", getattr(node.func, "attr", "")).endswith("Warning") \
+                    and len(node.args) > 1 and isinstance(node.args[1], ast.Constant):
+                code = node.args[1].value
+            elif isinstance(node, ast.Assign) and [getattr(t, "id", "") for t in node.targets] == ["code"] \
+                    and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str):
+                code = node.value.value
+            if code is not None:
+                codes.setdefault(code, f"{path.relative_to(ROOT)}:{node.lineno}")
+    return codes
+
+
+def test_every_warning_code_graphplan_writes_is_documented():
+    documented_codes = {code for _, spans in code_spans_by_row()["Results"] for span in spans
+                        for code in re.findall(r'code = "([a-z-]+)"', span)}
+    assert len(warning_codes_written()) >= 20
+    unnamed = {code: where for code, where in warning_codes_written().items() if code not in documented_codes}
+    assert not unnamed, unnamed
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_every_warning_a_results_file_holds_has_a_documented_code(name):
+    results = results_of(name)
+    written = [w["code"] for w in results.get("warnings", [])]
+    written += [w["code"] for section in ("balancing", "vibration") for w in results.get(section, {}).get("warnings", [])]
+    assert set(written) <= set(warning_codes_written())
