@@ -858,3 +858,22 @@ def test_every_warning_a_results_file_holds_has_a_documented_code(name):
     written = [w["code"] for w in results.get("warnings", [])]
     written += [w["code"] for section in ("balancing", "vibration") for w in results.get(section, {}).get("warnings", [])]
     assert set(written) <= set(warning_codes_written())
+
+
+@pytest.mark.parametrize("name", CRANKS)
+def test_the_positions_are_equally_spaced_from_where_the_scene_starts_them(name):
+    """`count` equally spaced driver positions in the crank's sense, the first at `start` (degrees), or at the start
+    of the working stroke for `"extreme"`; a swing's from φ0 to φ1 inclusive."""
+    tables, results = tables_of(name), results_of(name)
+    count = tables["positions"]["count"]
+    angles = np.array([entry["driver"]["angle_deg"] for entry in results["positions"]])
+    if "swing" in tables["driver"]:
+        first, last = tables["driver"]["swing"]
+        expected = np.linspace(first, last, count)
+    else:
+        start = tables["positions"].get("start", 0.0)
+        first = results["extremes_deg"][0] if start == "extreme" else start
+        turn = 1.0 if crank_speed(tables["driver"]) > 0 else -1.0
+        expected = first + turn * 360.0 / count * np.arange(count)
+    apart = np.remainder(angles - expected + 180.0, 360.0) - 180.0
+    assert np.abs(apart).max() < 1e-8
