@@ -250,6 +250,12 @@ def test_every_position_holds_what_the_contract_promises(name):
             assert {"reactions", balancing, f"lever_{balancing}", "polygon_scale", "polygon_scales"} <= set(
                 entry["forces"])
             assert all(is_xy(force) for force in entry["forces"]["reactions"].values())
+            # Each group's polygon and the driving link's, by the labels `groups` and `structure` give them; the
+            # position's one μF the coarsest, unless the scene sets one for all.
+            scales = entry["forces"]["polygon_scales"]
+            labels = {group["label"] for group in results["groups"]} | {results["structure"].split(" → ")[0]}
+            assert set(scales) == labels
+            assert entry["forces"]["polygon_scale"] == tables.get("drawing", {}).get("force_scale", max(scales.values()))
             polygons, lever = entry["forces"][balancing], entry["forces"][f"lever_{balancing}"]
             parted = 100 * (lever - polygons) / polygons if polygons else 0.0
             assert entry["forces"]["lever_difference_percent"] == pytest.approx(parted, abs=1e-8)
