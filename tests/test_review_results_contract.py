@@ -669,9 +669,15 @@ def test_a_scene_without_plans_writes_an_empty_list_of_errors():
     assert results["errors"] == [] and results["warnings"] == []
 
 
+def cross(arm: complex, force: complex) -> float:
+    """The moment (N·m) of ``force`` at the end of ``arm``, counter-clockwise positive."""
+    return arm.real * force.imag - arm.imag * force.real
+
+
 def test_the_balancing_moment_is_n_m_counter_clockwise_by_the_power_it_gives():
     """With no masses and no weight, the crank's balancing moment gives the power the resisting moment takes:
-    Mb·ω2 = M·|ω4| in the working stroke (N·m, counter-clockwise positive), 0 in the idle one."""
+    Mb·ω2 = M·|ω4| in the working stroke (N·m, counter-clockwise positive), 0 in the idle one; and the reactions
+    are named as the contract says, R23 the force of link 2 on link 3."""
     tables = tomllib.loads(starter("crank-rocker"))
     tables["scene"]["gravity"] = 0.0
     del tables["links"]
@@ -687,6 +693,20 @@ def test_the_balancing_moment_is_n_m_counter_clockwise_by_the_power_it_gives():
         assert moment * omega == pytest.approx(taken, rel=1e-9, abs=1e-9 * load["value"]), entry["index"]
         if "forces" in entry:
             assert entry["forces"]["balancing_moment"] == pytest.approx(moment, rel=1e-9)
+        # R23 is the force link 2 exerts on link 3 (N): the coupler 3 is pressed along AB by 2 and 4 alike, the
+        # rocker 4 held by R34 and the frame's R14 against the moment, the crank by R12 and R32 = −R23.
+        r = {name: vector(xy) for name, xy in entry["equilibrium"]["reactions"].items()}
+        points = {name: vector(entry["points"][name]["r"]) for name in ("O", "A", "B", "C")}
+        size = max(abs(force) for force in r.values()) or 1.0
+        assert abs(r["R23"] - r["R34"]) < 1e-9 * size and abs(r["R34"] + r["R14"]) < 1e-9 * size
+        assert abs(r["R12"] - r["R23"]) < 1e-9 * size
+        assert abs(cross(points["B"] - points["A"], r["R23"])) < 1e-9 * size
+        # Against the rocker's motion, or at its extreme the motion about to begin (ε's sense), as the page says.
+        rocker = entry["links"]["4"]
+        about_to = rocker["omega"] or rocker["epsilon"]
+        resisting = -math.copysign(load["value"], about_to) if entry["stroke"] == "working" else 0.0
+        assert resisting + cross(points["B"] - points["C"], r["R34"]) == pytest.approx(0, abs=1e-9 * load["value"])
+        assert moment + cross(points["A"] - points["O"], -r["R23"]) == pytest.approx(0, abs=1e-9 * load["value"])
 
 
 @pytest.mark.parametrize("name", [name for name in SCENES if "dynamics" in tables_of(name)])
