@@ -276,6 +276,9 @@ def test_every_position_holds_what_the_contract_promises(name):
         assert set(row) == {"position", "quantity", "analytic", "plan", "source", "percent"}
         assert row["source"] in ("construction", "drafting", "measured")
         assert row["position"] in {*plans, *velocity_plans}   # numbered as `index` is, a position with a plan
+        if row["analytic"]:   # δ = (analytic − plan)/analytic·100, the sign of the contract's example
+            relative = 100 * (row["analytic"] - row["plan"]) / row["analytic"]
+            assert row["percent"] == pytest.approx(relative, rel=1e-6, abs=1e-7), row
     if "extremes_deg" in results:
         assert len(results["extremes_deg"]) == 2 and set(results["strokes"]) == {"working_deg", "idle_deg",
                                                                                   "time_ratio"}
