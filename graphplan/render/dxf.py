@@ -46,6 +46,8 @@ LAYER_WORDS: dict[str, str] = {
     # angle marks and the extension line they are measured from
     "lines": CONSTRUCTION, "arms": CONSTRUCTION, "arm": CONSTRUCTION, "leaders": CONSTRUCTION,
     "paths": CONSTRUCTION, "rays": CONSTRUCTION, "friction": CONSTRUCTION, "reference": CONSTRUCTION,
+    # a load diagram's ordinates from its axis up to the load at each position, thin as the rays beside them
+    "ordinates": CONSTRUCTION,
     # a stroke's or a swing's dimension on the plan of positions
     "dimensions": CONSTRUCTION,
     # vectors and what marks them: plan vectors, forces, moments, senses of motion, plan points
