@@ -5,8 +5,9 @@ nearest first in the preferred direction; a spot costs for what the label's
 box would cover (the drawn lines, the boxes of labels already placed) and
 for standing nearer another point than its own.  Where nothing beside the
 point is free the label is set apart on a thin leader line.  A label left
-on a line once all stand tries finer spots, and a neighbour's.  Shapely does
-the intersection tests.
+on a line once all stand tries finer spots, and a neighbour's; one still on
+it reaches farther, for a spot clear of everything.  Shapely does the
+intersection tests.
 """
 
 from __future__ import annotations
@@ -51,6 +52,12 @@ class Anchor:
     # The height (mm) the label stays wholly under, where its side of a line means something: a position's number
     # under the φ axis, where one set above it beside the curve read as lettering the curve.  None: any side.
     under: float | None = None
+    # The ends of the line the label names (an arm), beside any point of which it reads as naming it: a label left
+    # on a line beside ``at`` may slide along it to a clear stretch.  None: the label names the point ``at``.
+    along: tuple[tuple[float, float], tuple[float, float]] | None = None
+    # A point and a distance (mm) the label's box keeps beyond wherever that costs less than lines covered
+    # (``KEPT_OFF``): a lever's pole, in whose reach an arm's name is read among the loads' names there.  None: none.
+    keep_off: tuple[tuple[float, float], float] | None = None
 
 
 def text_box(text: Text) -> BaseGeometry:
@@ -140,6 +147,22 @@ SPOTS_LOOKED_AT = 12
 MOVES_TRIED = 2
 # A leader starts this far from its point (mm), clear of the point's dot.
 LEADER_CLEARANCE = 0.9
+# What standing within an anchor's ``keep_off`` costs: as much as covering three lines, so that a label steps out of
+# it onto a line sooner (to reach out from there, below) and stands there only where that is crowded, not set well
+# apart among the labels round it (a lever's arms, so set, left the loads' names round the pole no room).
+KEPT_OFF = 3 * COVER
+# A label still on a line once all stand reaches out to a spot whose box covers nothing, if one is within reach: on a
+# short leader from its point, at these rings (letter heights beyond the gap, the last as far as the nearer ring set
+# apart), in twice the directions; or, naming a line (``Anchor.along``), beside another point of it, these points
+# SLIDE_STEP letter heights apart, as far as SLIDE either way.  Beside its line it reads as naming it without a
+# leader: a step along it costs SLIDE_COST.
+REACH_SHARES = (1.1, 1.8, 2.5, 3.2)
+SLIDE_STEP = 1.5
+SLIDE = 9.0
+SLIDE_COST = 1.5
+# How many of the cheapest clear spots are tried for one whose leader runs along no line (and, of those one neighbour
+# stands on, for one the neighbour gives up).
+REACH_TRIES = 8
 
 
 def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2,
@@ -163,7 +186,14 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     for a spot that covers less at a lower cost: among finer spots round
     its point (between two directions, where lines meeting at the point
     leave room), or where a single neighbour stands that can move without
-    covering more or taking a leader it had not.
+    covering more or taking a leader it had not.  A label still covering
+    a line, or another label, then takes the cheapest spot within reach that
+    covers nothing at all, where the costs above had let it lie on one line
+    sooner than lead it across two: beside another point of the arm it names
+    (``Anchor.along``), on a short leader (twice the directions, as far as a
+    spot set apart), or where a single neighbour stands that can itself
+    stand as clear elsewhere.  A label keeps out of its anchor's
+    ``keep_off`` wherever that costs less than three lines covered.
 
     ``standing`` are labels set already (the numbers round a crank's
     circle): the anchors' labels keep clear of them as of one another.
@@ -248,6 +278,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         cost[led[_box_distances(candidates[led], at[index:index + 1])[:, 0] == 0.0]] += OVERLAP
         if anchor.under is not None:
             cost[candidates[:, 3] > anchor.under + 1e-9] += OVERLAP
+        cost += KEPT_OFF * _kept_off(anchor, candidates, ~beside)
         covering = covers[:len(shapes)]
         if off_lines:
             cost[covering > 0] += LINE_COVERED
@@ -384,6 +415,83 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 return
             restore(state)
 
+    # The rings reached, numbered as the standard ones they fall between.
+    reach_rings = np.interp(REACH_SHARES, near_shares, np.arange(len(near_shares)))
+
+    def reach_out(index: int, moving: bool = True, leading: bool = True) -> bool:
+        """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
+        reach whose box covers nothing and whose leader crosses no label and runs along no line: beside another point
+        of the line it names, or (``leading``) on a short leader from its point; else (``moving``) to such a spot one
+        neighbouring label stands on, when that neighbour reaches such a spot too, beside its point if it stood there.
+        Such a spot costs more than the line it leaves by the rules of :func:`costed`, which let a letter lie on one
+        line sooner than lead it off across two.  Whether the label moved."""
+        anchor = anchors[index]
+        slid = _slide_points(anchor)
+        ring, turn, offsets = _candidates(anchor, gap, BESIDE_SHARES, 16, at=(0.0, 0.0))
+        beside_boxes = (offsets[None, :, :] + np.tile(slid, 2)[:, None, :]).reshape(-1, 4)
+        beside_points = np.repeat(slid, len(offsets), axis=0)
+        beside_cost = (RING * np.tile(ring, len(slid)) + 0.01 * np.tile(turn, len(slid))
+                       + SLIDE_COST * np.repeat(np.hypot(*(slid - anchor.at).T), len(offsets))
+                       / (SLIDE_STEP * anchor.size))
+        led_ring, led_turn, led_boxes = _candidates(anchor, gap, REACH_SHARES, 2 * 16)
+        candidates = np.concatenate((beside_boxes, led_boxes))
+        points = np.concatenate((beside_points, np.tile(anchor.at, (len(led_boxes), 1))))
+        is_led = np.arange(len(candidates)) >= len(beside_boxes)
+        led = np.flatnonzero(is_led)
+        lines = _leaders(anchor.at, led_boxes)
+        shapes = shapely.box(*candidates.T)
+        covers = covered(np.concatenate((shapes, lines)))
+        # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
+        open_ = (covers[:len(shapes)] == 0) & (crossing(shapes, leader_lines, index) == 0)
+        open_[led] &= crossing(lines, placed_boxes, index) == 0
+        # A long name set off obliquely reaches back over its own point: beside it already, with no leader to draw.
+        open_[led] &= _box_distances(led_boxes, np.array([anchor.at]))[:, 0] > 0.0
+        open_ &= ~_kept_off(anchor, candidates, is_led)
+        if anchor.under is not None:
+            open_ &= candidates[:, 3] <= anchor.under + 1e-9
+        if not leading:
+            open_ &= ~is_led
+        if not open_.any():
+            return False
+        labels_hit = crossing(shapes, placed_boxes, index)
+        # Standing about as near another labelled point as its own (the point of its line beside which it stands)
+        # would name the wrong one.
+        own = np.hypot(np.maximum(np.maximum(candidates[:, 0] - points[:, 0], points[:, 0] - candidates[:, 2]), 0.0),
+                       np.maximum(np.maximum(candidates[:, 1] - points[:, 1], points[:, 1] - candidates[:, 3]), 0.0))
+        misleading = (_box_distances(candidates, np.delete(at, index, axis=0)) < own[:, None] + 0.8).sum(axis=1)
+        cost = np.concatenate((beside_cost + MISLEADING * misleading[:len(beside_boxes)],
+                               RING * reach_rings[led_ring] + 0.01 * led_turn
+                               + SET_APART * (reach_rings[led_ring] >= apart_from)
+                               + LEADER_CROSSING * covers[len(shapes):]
+                               + LEADERS_CROSSING * crossing(lines, leader_lines, index)
+                               + MISLEADING / 2 * misleading[led]))
+        spot = _Spots(candidates, ~is_led, led, lines, cost, np.zeros(len(candidates)), np.zeros(len(candidates)))
+
+        def tried(usable: np.ndarray):
+            """The cheapest of the ``usable`` spots whose leader, if any, runs along no line (it would read as part
+            of it, not as leading to the label), as far as REACH_TRIES."""
+            for best in np.argsort(np.where(usable, cost, np.inf), kind="stable")[:REACH_TRIES]:
+                if not usable[best]:
+                    return
+                if not (is_led[best] and runs_along(lines[best - len(beside_boxes)])):
+                    yield int(best)
+
+        for best in tried(open_ & (labels_hit == 0)):
+            put(index, spot, best, "reach")
+            return True
+        if not moving:
+            return False
+        for best in tried(open_ & (labels_hit == 1)):
+            (neighbour,) = [k for k, other in placed_boxes.items() if k != index and other.intersects(shapes[best])]
+            if neighbour < 0:
+                continue  # a label standing already does not move
+            state = saved(index, neighbour)
+            put(index, spot, best, "reach")
+            if reach_out(neighbour, moving=False, leading=neighbour in leader_lines):
+                return True
+            restore(state)
+        return False
+
     order = _most_crowded_first(anchors, at)
     where: dict[int, tuple[str, int, float]] = {}
     for index in order:
@@ -403,6 +511,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     for index in order:
         if where[index][2] > 0 and paid[index] < OVERLAP:
             off_the_line(index)
+    # Those still on a line, or on another label, reach farther for a spot clear of everything.
+    for index in order:
+        if where[index][2] > 0 or paid[index] >= KEPT_OFF:
+            reach_out(index)
     leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
     return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
@@ -480,10 +592,10 @@ def _box_distances(boxes: np.ndarray, points: np.ndarray) -> np.ndarray:
     return np.hypot(dx, dy)
 
 
-def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...],
-                directions: int = 16) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(ring, order, box) of every spot: sixteen directions (or ``directions``) on each ring, the preferred
-    direction first.
+def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...], directions: int = 16,
+                at: tuple[float, float] | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(ring, order, box) of every spot round ``at`` (the anchor's point unless given): sixteen directions (or
+    ``directions``) on each ring, the preferred direction first.
 
     The rings of :data:`BESIDE_SHARES` stand beside the point; a label on
     those of :data:`LED_SHARES` and :data:`APART_SHARES` gets a leader line.
@@ -496,10 +608,40 @@ def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...],
     ring, order = np.divmod(np.arange(len(radii) * len(turns)), len(turns))
     direction = anchor.prefer + turns[order] * math.pi / half
     # Push the box's near edge, not its centre, out to the radius.
-    x = anchor.at[0] + np.cos(direction) * (radii[ring] + width / 2)
-    y = anchor.at[1] + np.sin(direction) * (radii[ring] + 0.55 * anchor.size) - 0.45 * anchor.size
+    at = anchor.at if at is None else at
+    x = at[0] + np.cos(direction) * (radii[ring] + width / 2)
+    y = at[1] + np.sin(direction) * (radii[ring] + 0.55 * anchor.size) - 0.45 * anchor.size
     boxes = np.stack((x - width / 2, y - 0.3 * anchor.size, x + width / 2, y + 1.15 * anchor.size), axis=1)
     return ring, order, boxes
+
+
+def _slide_points(anchor: Anchor) -> np.ndarray:
+    """The points of the line an anchor names (:attr:`Anchor.along`) beside which its label may stand, its own point
+    first: every SLIDE_STEP letter heights either way, as far as SLIDE, short of the line's ends by a letter height
+    (where the line meets the lines it runs between).  Its own point alone where it names a point."""
+    if anchor.along is None:
+        return np.array([anchor.at], dtype=float)
+    start, end = np.asarray(anchor.along, dtype=float)
+    length = math.hypot(*(end - start))
+    if length <= 2 * anchor.size:
+        return np.array([anchor.at], dtype=float)
+    unit = (end - start) / length
+    here = float(np.dot(np.asarray(anchor.at) - start, unit))
+    steps = np.arange(1, int(SLIDE / SLIDE_STEP) + 1) * SLIDE_STEP * anchor.size
+    along = np.ravel(np.column_stack((here + steps, here - steps)))
+    along = along[(along >= anchor.size) & (along <= length - anchor.size)]
+    return np.concatenate(([anchor.at], start + along[:, None] * unit))
+
+
+def _kept_off(anchor: Anchor, boxes: np.ndarray, led: np.ndarray) -> np.ndarray:
+    """Whether each spot ((xmin, ymin, xmax, ymax) rows; ``led``: those on a leader from the anchor's point) stands in
+    the reach of the anchor's ``keep_off`` point: its box nearer than the distance, or its leader starting there (a
+    name led out of the reach from a point within it still reads among the names there)."""
+    if anchor.keep_off is None:
+        return np.zeros(len(boxes), dtype=bool)
+    point, distance = anchor.keep_off
+    within = _box_distances(boxes, np.array([point], dtype=float))[:, 0] < distance
+    return within | (led & (math.dist(anchor.at, point) < distance))
 
 
 def _turns(directions: int) -> np.ndarray:

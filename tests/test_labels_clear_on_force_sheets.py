@@ -1,0 +1,73 @@
+"""Labels that found no clear spot beside their point reach farther for one, and stay near what they name.
+
+On the class III triad's force sheet of position 2 the names of three arms lay on drawn lines: h13 and h14 in the
+star of arms at Σ6, h17 at the middle of its arm, which runs along the link E–F through S5 and its moments' arcs.
+On the double rocker's lever of position 2 (drawn larger than its plan) the names of the arms h6, h8, h9 and h11,
+placed again each time one near the pole was dropped, took in turn the spot the one before left by the pole, and
+were all given under the drawing; h11's arm is 25 mm long.  A name still on a line once all stand now takes a spot
+clear of every line: beside another point of the arm it names, on a short leader, or where a single neighbour
+stands that can itself stand clear elsewhere; an arm's name on the lever keeps out of the pole's reach.
+"""
+
+import math
+from pathlib import Path
+
+import pytest
+import shapely
+from shapely.geometry import LineString
+
+import graphplan
+from graphplan import deliverables
+from graphplan.analysis import analyse
+from graphplan.render.labels import Anchor, cover_one_another, place_labels, text_box
+from graphplan.render.primitives import Text
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+# How far a label may stand from the point it names (mm): a short leader's reach, the gap and 3.2 letter heights
+# of 2.8 mm (an arm's name), and a little for the box's corner.
+LED_REACH_MM = 11.0
+# How far a name set beside its arm may stand from the arm (mm), and from the arm's middle along it.
+BESIDE_ARM_MM = 3.0
+ALONG_ARM_MM = 26.0
+
+
+def test_a_label_whose_point_is_ringed_by_lines_takes_a_clear_spot_on_a_short_leader():
+    # A point inside two squares: every spot beside it covers a side of the inner one, every spot on the nearer rings
+    # led to it a side of the outer one (the box pushed out to 1.8 letter heights beyond the gap reaches past 7 mm);
+    # outside them the paper is clear.  Lying on one side beside the point had cost less than a leader across both.
+    anchor = Anchor((0.0, 0.0), "h3", 2.8, prefer=math.pi / 2)
+    squares = [LineString([(-side, -side), (side, -side), (side, side), (-side, side), (-side, -side)])
+               for side in (3.8, 7.0)]
+    placement = place_labels([anchor], squares)
+    (text,) = placement.texts
+    assert not any(text_box(text).intersects(square) for square in squares)
+    assert text_box(text).distance(shapely.Point(anchor.at)) <= LED_REACH_MM
+    assert len(placement.leaders) == 1
+
+
+def test_a_name_crowded_at_its_arm_s_middle_slides_along_the_arm_beside_it():
+    # A horizontal arm 60 mm long, its name's point at the middle, where a stroke crosses it every 0.5 mm for 16 mm
+    # each way, so that the spots beside it and on short leaders all cover strokes; beyond that the arm runs clear.
+    arm = ((-30.0, 0.0), (30.0, 0.0))
+    strokes = [LineString([(x / 2, -20.0), (x / 2, 20.0)]) for x in range(-32, 33)]
+    anchor = Anchor((0.0, 0.0), "h7", 2.8, prefer=math.pi / 2, along=arm)
+    placement = place_labels([anchor], [LineString(arm), *strokes])
+    (text,) = placement.texts
+    box = text_box(text)
+    assert not any(box.intersects(stroke) for stroke in strokes)
+    assert not box.intersects(LineString(arm))
+    assert box.distance(LineString(arm)) <= BESIDE_ARM_MM, "set beside its arm"
+    assert not placement.leaders, "beside its arm, it needs no leader"
+
+
+@pytest.mark.parametrize("fixture", sorted(path.stem for path in FIXTURES.glob("*.toml")))
+def test_no_two_labels_of_a_drawing_cover_one_another(fixture):
+    scene = graphplan.load(FIXTURES / f"{fixture}.toml")
+    analysis = analyse(scene)
+    # Every drawing the run makes, the course sheets with it.
+    for made in deliverables.drawings(scene, analysis, deliverables.chosen(scene, analysis)):
+        for layer in made.layers:
+            if layer.name.endswith("labels"):
+                assert not cover_one_another([item for item in layer.items if isinstance(item, Text)]), (
+                    f"{made.stem}: {layer.name}")
+
