@@ -15,10 +15,13 @@ from pathlib import Path
 import pytest
 import shapely
 from shapely.geometry import LineString
+from test_labels_off_lines import labels_on_lines
 
 import graphplan
 from graphplan import deliverables
 from graphplan.analysis import analyse
+from graphplan.render import forces as force_layout
+from graphplan.render.drawings import force_sheet
 from graphplan.render.labels import Anchor, cover_one_another, place_labels, text_box
 from graphplan.render.primitives import Text
 
@@ -29,6 +32,91 @@ LED_REACH_MM = 11.0
 # How far a name set beside its arm may stand from the arm (mm), and from the arm's middle along it.
 BESIDE_ARM_MM = 3.0
 ALONG_ARM_MM = 26.0
+
+
+def laid_out(fixture: str, number: int) -> tuple[list, list[tuple[tuple[Anchor, ...], tuple[Text, ...]]]]:
+    """The force sheet of position ``number`` as the run lays it out without a course sheet, and every call of the
+    placer made for it: its anchors and the texts it placed (in the drawing's own frame, before the sheet's
+    arrangement moves it)."""
+    calls = []
+    original = force_layout.place_labels
+
+    def recording(anchors, obstacles, *args, **kwargs):
+        placement = original(anchors, obstacles, *args, **kwargs)
+        calls.append((tuple(anchors), placement.texts))
+        return placement
+
+    force_layout.place_labels = recording
+    try:
+        analysis = analyse(graphplan.load(FIXTURES / f"{fixture}.toml"))
+        (position,) = [plan for plan in analysis.plans if plan.number == number]
+        layers = force_layout.layout(force_sheet(analysis, position))
+    finally:
+        force_layout.place_labels = original
+    return layers, calls
+
+
+def drawing(layers, prefix: str) -> list:
+    return [layer for layer in layers if layer.name.startswith(prefix)]
+
+
+def placed(layers, prefix: str, calls) -> dict[str, tuple[Anchor, Text]]:
+    """The anchor and the placed text (in the drawing's own frame) of each label of the drawing ``prefix``: the last
+    call of the placer whose anchors are its labels, in their order."""
+    names = [item.text for layer in drawing(layers, prefix) if layer.name.endswith("-labels") for item in layer.items
+             if isinstance(item, Text)]
+    anchors, texts = [call for call in calls if [anchor.text for anchor in call[0]] == names][-1]
+    return {anchor.text: (anchor, text) for anchor, text in zip(anchors, texts, strict=True)}
+
+
+def near_what_it_names(anchor: Anchor, text: Text) -> bool:
+    """Whether the label's box stands within a short leader's reach of its point, or beside the arm it names
+    (``Anchor.along``) not far along it."""
+    box = text_box(text)
+    if box.distance(shapely.Point(anchor.at)) <= LED_REACH_MM:
+        return True
+    along = getattr(anchor, "along", None)
+    return (along is not None and box.distance(LineString(along)) <= BESIDE_ARM_MM
+            and box.distance(shapely.Point(anchor.at)) <= ALONG_ARM_MM)
+
+
+@pytest.fixture(scope="module")
+def triad_sheet():
+    return laid_out("triad_class_iii", 2)
+
+
+@pytest.mark.parametrize("name", ["h13", "h14", "h17"])
+def test_the_triad_s_arm_names_stand_clear_of_the_lines_near_their_arms(triad_sheet, name):
+    layers, calls = triad_sheet
+    body = drawing(layers, "body-III-3-4-5-6")
+    assert name not in labels_on_lines(body), f"{name} lies on a drawn line"
+    anchor, text = placed(layers, "body-III-3-4-5-6", calls)[name]
+    assert near_what_it_names(anchor, text), f"{name} stands {text_box(text).distance(shapely.Point(anchor.at)):.1f} mm off"
+
+
+def test_the_triad_s_force_sheet_has_no_label_on_a_line_where_its_arms_and_loads_are(triad_sheet):
+    layers, _ = triad_sheet
+    assert labels_on_lines(drawing(layers, "body-III-3-4-5-6")) == []
+
+
+@pytest.fixture(scope="module")
+def double_rocker_sheet():
+    return laid_out("double_rocker_swing", 2)
+
+
+def test_the_double_rocker_s_lever_letters_its_25_mm_arm_h11_clear_of_the_lines(double_rocker_sheet):
+    layers, calls = double_rocker_sheet
+    lever = drawing(layers, "lever")
+    caption = " ".join(item.text for layer in lever if layer.name.endswith("caption") for item in layer.items
+                       if isinstance(item, Text))
+    assert "h11 = " not in caption, "h11's length is given under the lever instead of its name on the arm"
+    lettered = placed(layers, "lever", calls)
+    assert "h11" in lettered
+    anchor, text = lettered["h11"]
+    assert "h11" not in labels_on_lines(lever)
+    assert near_what_it_names(anchor, text)
+    # Out of the pole's reach (the lever's own frame has the pole at its origin), where no load's name is read as it.
+    assert text_box(text).distance(shapely.Point(0.0, 0.0)) >= force_layout.POLE_CLEAR_MM
 
 
 def test_a_label_whose_point_is_ringed_by_lines_takes_a_clear_spot_on_a_short_leader():

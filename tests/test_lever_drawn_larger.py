@@ -164,10 +164,11 @@ def test_the_note_works_the_lever_on_the_drawing_it_stands_beside(name):
 
 
 def test_a_force_sheet_cut_into_parts_all_the_same_keeps_a_larger_lever_on_its_part(monkeypatch):
-    # The offset slider-crank's force sheets stand on A3 in parts whatever the lever's size; the lever of
-    # position 10 then keeps a larger μV on its own part, as no more parts come of it.
-    analysis = with_drawing(analysis_of("offset_slider_crank"), sheet="A3")
-    panels = force_panels(analysis, "A3")
+    # The offset slider-crank's force sheets stand on A4 in parts whatever the lever's size; the lever of
+    # position 3 then keeps a larger μV on its own part, as no more parts come of it.  (On A3, since the lever
+    # letters arms it gave under it before, with a shorter caption, every lever there stands at its plan's μV.)
+    analysis = with_drawing(analysis_of("offset_slider_crank"), sheet="A4")
+    panels = force_panels(analysis, "A4")
     drawn = {}
     for position in analysis.plans:
         holding = [panel for panel in panels if re.fullmatch(rf"forces-{position.number}(-\d+)?", panel.name)
@@ -178,7 +179,7 @@ def test_a_force_sheet_cut_into_parts_all_the_same_keeps_a_larger_lever_on_its_p
     for position in larger:
         assert expected_scale(position.velocity) - 1e-15 <= drawn[position.number]
     monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity: None)
-    assert [panel.name for panel in force_panels(analysis, "A3")] == [panel.name for panel in panels]
+    assert [panel.name for panel in force_panels(analysis, "A4")] == [panel.name for panel in panels]
 
 
 def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_drawn_at(tmp_path):

@@ -801,7 +801,7 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                 items += _perpendicular(centre, start, end, unit)
                 foot = _foot(centre, start, unit)
                 anchors.append(Anchor(_xy((centre + foot) / 2), name, NAME_SIZE - 0.4,
-                                      _angle(1j * (foot - centre)), _ARM.colour))
+                                      _angle(1j * (foot - centre)), _ARM.colour, along=(_xy(centre), _xy(foot))))
             else:
                 # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.
                 couple = any(load.name == term.name and not load.is_force for load in group.loads)
@@ -1181,7 +1181,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             undrawn.append(arm)
             continue
         arm_layers.append(Layer(svg_id("lever-arm", name), tuple(_perpendicular(0j, start, end, unit))))
-        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour))
+        # Named out of the pole's reach where the room round it allows; a name left within it is dropped (below).
+        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour,
+                                  along=((0.0, 0.0), _xy(foot)), keep_off=((0.0, 0.0), POLE_CLEAR_MM)))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
     parts += [f"{_sign(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
               if not term.image and stands(term)]
