@@ -80,7 +80,8 @@ _CJK_FONT = "Noto Sans CJK SC"
 _PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \usepackage[top=20mm,bottom=20mm,left=30mm,right=10mm]{geometry}
 \usepackage{fontspec}
-\setmainfont{%(font)s}
+%% No TeX ligatures: the note's text is Unicode as written, and a title's `, -- or << would be set as ‘, – or «.
+\setmainfont{%(font)s}[Ligatures=TeXOff]
 %(cjk_font)s\usepackage{array,longtable,booktabs}
 \usepackage[font=normalsize,justification=raggedright,singlelinecheck=false,skip=3pt]{caption}
 %% Tables flush left under their captions, which span the line (its width is geometry's once the document begins).
