@@ -237,6 +237,35 @@ def test_no_section_is_empty_and_no_placeholder_or_markup_is_left(case):
         assert not re.search(leftover, text), leftover
 
 
+# ---- the formulas ----
+
+def subscripted_everywhere(files: dict, base: str, index: str, after: str = "") -> None:
+    """``base`` with ``index`` set below the line (followed by ``after``) in the HTML, the LaTeX and the Word note."""
+    assert f"{base}<sub>{index}</sub>{after}" in files["note.html"]
+    assert f"{base}\\textsubscript{{{index}}}{after}" in files["note.tex"]
+    assert f"{base}_{{{index}}}{after}" in word_marked(docx.Document(io.BytesIO(files["note.docx"])))
+
+
+def test_the_structure_formula_sets_each_group_s_order_as_its_class_s_index():
+    """«II2(3,4)» read as a class «II2»: the textbooks write a group's order under its class, II₂(3,4)."""
+    files = written("shaper", "en", ("note",))
+    assert "I(1,2) → II2(3,4) → II2(5,6)" in files["note.md"]
+    subscripted_everywhere(files, "II", "2", "(3,4)")
+
+
+def test_the_lever_s_moments_about_its_pole_and_a_travel_along_a_guide_take_their_index():
+    files = written("shaper", "ru", ("note",))
+    assert "ΣMp" in files["note.md"] and "| sE, м |" in files["note.md"]
+    subscripted_everywhere(files, "ΣM", "p")
+    subscripted_everywhere(files, "s", "E")
+
+
+def test_a_rocker_s_angle_takes_its_link_s_index():
+    files = written("fixtures/ratchet_crank_rocker.toml", "ru", ("note",))
+    assert "ψ4" in files["note.md"]
+    subscripted_everywhere(files, "ψ", "4")
+
+
 # ---- PDF ----
 
 def pdf_reads(pdf: Path | bytes, note: str) -> list[str]:

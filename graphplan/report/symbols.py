@@ -27,15 +27,20 @@ _POINTS = f"[{CAPITALS}][{CAPITALS}0-9]*"
 SYMBOL = re.compile(
     # A derivative's d stands before the speed it differentiates: dωd/dt is d of ωd.
     r"(?:(?<![A-Za-z_])|(?<=(?<![A-Za-z_])d)(?=ω))(?:"
-    rf"(?P<base>[Va]|l)(?P<index>{_POINTS})(?P<component>ⁿ|ᵏ|ʳ|\^?τ|\^r)?"
+    # A point's travel along its guide (sE, the load diagrams' abscissa) is indexed as its velocity is.
+    rf"(?P<base>[Vas]|l)(?P<index>{_POINTS})(?P<component>ⁿ|ᵏ|ʳ|\^?τ|\^r)?"
     r"|(?P<base12>a)(?P<component12>\^?τ)"
-    r"|(?P<base2>[ωε])(?P<index2>\d+)"
+    # A rocker's angle (ψ4) is indexed by its link as its ω and ε are.
+    r"|(?P<base2>[ωεψ])(?P<index2>\d+)"
     r"|(?P<base3>μ)(?P<index3>[VaFl])"
     r"|(?P<base4>R)(?P<index4>\d+)(?P<component4>τ|n)?"
     r"|(?P<base5>[FM])(?P<index5>u\d*|b\d*|f\d+|\d+|[edr]|[пдст])"
     r"|(?P<base6>F)(?P<index6>y)"
     r"|(?P<base7>[GJ])(?P<index7>\d+|S|e,mean|e,m|[Fe]′?|п,ср|пI|[пм]′?)|(?P<base11>m)(?P<index11>\d+|e|п)"
-    rf"|(?<=Σ)(?P<base8>M)(?P<index8>{_POINTS})"
+    # ΣMp: Zhukovsky's lever's moments about its pole p.
+    rf"|(?<=Σ)(?P<base8>M)(?P<index8>{_POINTS}|p)"
+    # A group's class with its order in the structure formula (II2(3,4)), which the textbooks set as II₂.
+    r"|(?P<base27>III|II|I)(?P<index27>\d)(?=\()"
     r"|(?P<base9>p)(?P<index9>[45])"
     # The crank's speed in rev/min where the scene gives it: the cell of n2 and its conversion πn2/30.  Only there:
     # elsewhere n3 is the plans' letter for a normal component's end (πn3, через n3), which the drawings write flat.
