@@ -266,6 +266,13 @@ def test_a_rocker_s_angle_takes_its_link_s_index():
     subscripted_everywhere(files, "ψ", "4")
 
 
+def test_the_natural_frequency_of_a_machine_on_its_mounts_takes_its_index():
+    files = written("rotor", "en", ("note", "balancing", "vibration"))
+    assert "ωn = √(k/M)" in files["note.md"] and "sin ωt" in files["note.md"]
+    subscripted_everywhere(files, "ω", "n", " = √")
+    assert "ω<sub>t</sub>" not in files["note.html"] and " ωt" in plain_html(files["note.html"])   # ω times t
+
+
 # ---- PDF ----
 
 def pdf_reads(pdf: Path | bytes, note: str) -> list[str]:

@@ -58,9 +58,9 @@ SYMBOL = re.compile(
     r"|(?P<base15>ω)(?P<index15>max|min|m|ср)|(?P<base16>v)(?P<index16>S)"
     # The motor: its rated (MN, ωN, sN; Mн, ωн, sн), breakdown (Mmax; Mк) and critical (sk, sm; sк) values, its
     # synchronous and own speeds (ωs; ωдв, ωmot), its rotor (Jrot; Jрот); a clutch's driving half (Jcl, Mcl, ωd;
-    # Jмуф, Mмуф, ωд); a brake (Mt).
+    # Jмуф, Mмуф, ωд); a brake (Mt).  A machine's natural frequency on its mounts (ωn).
     r"|(?P<base22>M)(?P<index22>max|cl|муф|[Ntнк])|(?P<base23>s)(?P<index23>[kmNкн])"
-    r"|(?P<base24>ω)(?P<index24>mot|дв|[sNdнд])|(?P<base25>J)(?P<index25>rot|cl|рот|муф)"
+    r"|(?P<base24>ω)(?P<index24>mot|дв|[sNdnнд])|(?P<base25>J)(?P<index25>rot|cl|рот|муф)"
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
