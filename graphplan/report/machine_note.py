@@ -408,6 +408,9 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
              note.n(mass.radius), note.n(mass.angle_deg, 4), note.n(mass.plane), note.n(abs(mass.unbalance))]
             for mass in spec.masses]
     note.table(note.t("note_bal_masses"), note.t("note_bal_masses_header").split(" | "), rows, "lrrrrr")
+    # A correction's θ is set on the rotor from the line the masses' θ are counted from, and the same way round: the
+    # scene names neither, so the note says that the two agree, and which way the polygons count them.
+    note.para(note.t("note_bal_angles"))
     if (lengths := rotor_lengths(spec)) is not None:
         _lengths_caution(note, lengths)
     if on_axis(spec) is not None:
