@@ -496,3 +496,37 @@ def test_the_note_says_from_where_and_which_way_the_corrections_angles_are_count
     assert sense in before_corrections
     for plane in results["balancing"]["planes"]:
         assert f"θ = {plane['angle_deg']:.1f}°".replace(".", "," if locale == "ru" else ".") in section
+
+
+COUPLE = """
+[scene]
+title = "A couple"
+[balancing]
+masses = [ { mass = 2.0, radius = 0.1, angle = 30.0, plane = 0.2 },
+           { mass = 2.0, radius = 0.1, angle = 210.0, plane = 0.6 } ]
+planes = [0.0, 0.8]
+correction_radius = 0.1
+"""
+
+
+def test_a_couple_needs_equal_and_opposite_corrections_written_alike_on_the_polygons(tmp_path):
+    """Two equal masses half a turn apart, 0.4 m apart: the couple 0.2·0.4 = 0.08 kg·m² is taken by corrections
+    0.08/0.8 = 0.1 kg·m in each plane, opposite each mass's near side; each 1 kg at 0.1 m, whose quotient
+    0.1/0.1 came out 0.9999999999999999 in one plane and was written with five digits there ("1.0000 kg")."""
+    results, _, svgs = _written(tmp_path, COUPLE)
+    left, right = results["balancing"]["planes"]
+    assert left["mass_radius"] == pytest.approx(0.08 / 0.8) and right["mass_radius"] == pytest.approx(0.08 / 0.8)
+    assert left["angle_deg"] == pytest.approx(210.0) and right["angle_deg"] == pytest.approx(30.0)
+    svg = svgs["rotor_balancing"]
+    for plane in "LR":
+        caption = re.search(rf'<g id="plane-{plane}-caption">(.*?)</g>', svg, re.DOTALL).group(1)
+        assert f"m{plane} = 1.000 kg at r{plane} = 0.1 m" in caption
+
+
+@pytest.mark.parametrize(("value", "written"), [(0.9999999999999999, "1.000"), (9.99996, "10.00"),
+                                                (0.099996, "0.1000"), (99.99999, "100.0"), (1.23456, "1.235"),
+                                                (-0.0099999999, "−0.01000")])
+def test_a_value_rounding_up_to_a_power_of_ten_keeps_its_significant_digits(value, written):
+    from graphplan.render.numerals import significant
+
+    assert significant(value) == written

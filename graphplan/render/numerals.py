@@ -28,7 +28,9 @@ def significant(value: float, digits: int = 4) -> str:
         return "0"
     if abs(float(f"{value:.{digits}g}")) >= POWER_OF_TEN:
         return power_of_ten(value, digits)
-    decimals = max(0, digits - 1 - math.floor(math.log10(abs(value))))
+    # The digits counted from the value as rounded: 0.99999999 rounds to 1.000, whose first digit stands a place
+    # higher than its own, and counted from it gave one digit more (1.0000).
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(float(f"{value:.{digits}g}")))))
     text = f"{value:.{decimals}f}"
     return text.replace("-", "−") if text.strip("-0.") else "0"
 
