@@ -12,6 +12,7 @@ of graphplan's formulas is used for the expected values.
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 import re
@@ -231,6 +232,38 @@ def test_each_polygon_is_drawn_to_its_stated_scale_and_closes(tmp_path, text, ma
             assert _angle_gap(_degrees(tip - start), _degrees(vector)) < 0.2, name
         # Head to tail and closed: the drawn sides add up to nothing (to the file's thousandths of a millimetre).
         assert abs(sum(tip - start for start, tip in drawn.values())) < 0.02
+
+
+def test_a_discs_polygon_is_its_masses_products_head_to_tail_closed_by_the_correction(tmp_path):
+    _, _, svgs = _written(tmp_path, DISC)
+    svg = svgs["rotor_balancing"]
+    mu = _scale(svg, "b")
+    drawn = _drawn_vectors(svg, "b")
+    expected = {f"m{k + 1}r{k + 1}": _product(m, r, a) for k, (m, r, a, _) in enumerate(DISC_MASSES)}
+    expected["mbrb"] = -sum(expected.values())
+    assert set(drawn) == set(expected)
+    for name, vector in expected.items():
+        start, tip = drawn[name]
+        assert abs(tip - start) * mu == pytest.approx(abs(vector), rel=2e-3), name
+        assert _angle_gap(_degrees(tip - start), _degrees(vector)) < 0.2, name
+    # Laid off in order from the pole, each from the last one's tip, the correction back to the pole.
+    order = [*(f"m{k}r{k}" for k in (1, 2, 3)), "mbrb"]
+    for before, after in itertools.pairwise(order):
+        assert abs(drawn[before][1] - drawn[after][0]) < 0.01
+    assert abs(drawn["mbrb"][1] - drawn["m1r1"][0]) < 0.01
+
+
+def test_the_sheet_draws_the_polygons_at_the_scale_of_their_own_drawing(tmp_path):
+    folder = tmp_path / "out"
+    run(scene_from_text(LONG + '[drawing]\nsheet = "A3"\n'), folder)
+    own = (folder / "rotor_balancing.svg").read_text(encoding="utf-8")
+    sheet = (folder / "sheet_1.svg").read_text(encoding="utf-8").replace('id="balancing-plane-', 'id="plane-')
+    for plane in "LR":
+        assert _scale(sheet, plane) == _scale(own, plane)
+        alone, on_sheet = _drawn_vectors(own, plane), _drawn_vectors(sheet, plane)
+        assert set(alone) == set(on_sheet)
+        for name, (start, tip) in alone.items():
+            assert abs((tip - start) - (on_sheet[name][1] - on_sheet[name][0])) < 0.005
 
 
 def test_the_corrections_angle_is_drawn_from_a_dashed_x_direction_counter_clockwise(tmp_path):
