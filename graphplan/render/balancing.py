@@ -65,6 +65,10 @@ NAME_SIZE = 3.2
 BESIDE_MM = 6.0
 # Closer than this to the correction's line, over a common stretch longer than this, a mass vector is hidden (mm).
 ALONG_MM = 0.8
+# A mass vector within this angle of the correction's line, half or more of whose length runs that close to it, is
+# hidden too, though one end stands off it: a share leaving the pole a degree off the correction ran under it for
+# three quarters of its length.
+HIDDEN_DEG = 25.0
 # A share that turns back along the one before it, within this angle of straight back, and ends within
 # FOLDED_ONTO_MM of it (an arrowhead's length and width), runs over it from their common corner: its arrowhead sat on
 # the other's and its name by the other's head.  It is drawn BESIDE_MM beside the chain, parallel to where it lies,
@@ -215,11 +219,34 @@ def _beside(plane: CorrectionPlane, mm) -> complex:
         common = min(max(start.real, end.real), length) - max(min(start.real, end.real), 0.0)
         if abs(start.imag) < ALONG_MM and abs(end.imag) < ALONG_MM and common > ALONG_MM:
             break
+        if _hidden_share(start, end, length) >= 0.5:
+            break
     else:
         return 0j
     # Away from the chain's corners that stand off the line; to the right of the correction where none does.
     offside = sum(local(mm(vertex)).imag for vertex in plane.vertices)
     return along * 1j * (BESIDE_MM if offside < -ALONG_MM else -BESIDE_MM)
+
+
+def _hidden_share(start: complex, end: complex, length: float) -> float:
+    """The share of a mass vector's length (0 to 1) that runs within :data:`ALONG_MM` of a correction lying from 0 to
+    ``length`` along the real axis, ``start`` and ``end`` its ends in that frame; 0 for one crossing it steeper than
+    :data:`HIDDEN_DEG` or whose stretch there is no longer than :data:`ALONG_MM`."""
+    side = end - start
+    span = abs(side)
+    if span == 0 or abs(side.imag) > span * math.sin(math.radians(HIDDEN_DEG)) or side.real == 0:
+        return 0.0
+    # The stretch of the vector, start + t·side with t in [0, 1], inside the band across and the correction along.
+    low, high = 0.0, 1.0
+    for offset, rate, bound in ((start.imag, side.imag, ALONG_MM), (start.real - length / 2, side.real, length / 2)):
+        if rate == 0:
+            if abs(offset) >= bound:
+                return 0.0
+            continue
+        enter, leave = sorted(((-bound - offset) / rate, (bound - offset) / rate))
+        low, high = max(low, enter), min(high, leave)
+    stretch = max(0.0, high - low) * span
+    return stretch / span if stretch > ALONG_MM else 0.0
 
 
 def _folded_back(plane: CorrectionPlane, mm) -> dict[int, complex]:
