@@ -588,3 +588,15 @@ def test_a_share_leaving_the_pole_a_degree_off_the_correction_is_not_drawn_under
     for plane in "LR":
         hidden = _hidden_under_correction(svgs["rotor_balancing"], plane)
         assert max(hidden.values()) < 0.25, (plane, hidden)
+
+
+@pytest.mark.parametrize(("locale", "words"), [("en", "own mass is neglected"), ("ru", "массой вала пренебрегаем"),
+                                               ("zh", "轴的质量与圆盘相比忽略不计")])
+def test_the_note_says_the_shafts_own_mass_is_left_out_of_its_critical_speed(tmp_path, locale, words):
+    """ωc = √(k/M) with M the disc's mass alone holds for a shaft light beside its disc (Rao, whirling of shafts;
+    a heavy shaft lowers it, Dunkerley): the note must say the shaft's mass is neglected, not leave it unsaid."""
+    text = _vibration_scene(mass=20.0, unbalance=0.0004, damping_ratio=0.02, rpm=3000.0).replace(
+        "[vibration]", "[vibration]\nshaft = { modulus = 2.1e11, diameter = 0.03, length = 0.8 }").replace(
+        '[vibration]', f'locale = "{locale}"\n[vibration]', 1)
+    _, note, _ = _written(tmp_path, text)
+    assert words in note
