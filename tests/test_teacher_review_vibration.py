@@ -468,14 +468,17 @@ def test_a_discs_critical_speed_on_its_shaft_is_that_of_its_static_deflection(tm
 
 def _axis(svg: str, axis: str) -> tuple[np.ndarray, np.ndarray]:
     """The ticks of an axis: their positions in the SVG and the values they are lettered with."""
-    ticks = re.findall(rf'<g id="{axis}tick_\d+">(.*?)<!-- (.*?) -->', svg, re.DOTALL)
+    # A minor tick has no label: the body may not run on into the next tick's.
+    ticks = re.findall(rf'<g id="{axis}tick_\d+">((?:(?!tick_).)*?)<!-- (.*?) -->', svg, re.DOTALL)
     places, values = [], []
     for body, label in ticks:
         use = re.search(r'<use [^>]*x="([-\d.]+)" y="([-\d.]+)"', body)
-        if use is None or label.startswith("$"):
+        power = re.fullmatch(r"\$\\mathdefault\{10\^\{(−?-?\d+)\}\}\$", label)
+        # The last minor tick runs on to the axis's own label: only a number is a tick's.
+        if use is None or not (power or re.fullmatch(r"[−-]?[\d.]+", label)):
             continue
         places.append(float(use.group(1 if axis == "x" else 2)))
-        values.append(float(label))
+        values.append(10.0 ** int(power.group(1).replace("−", "-")) if power else float(label.replace("−", "-")))
     return np.array(places), np.array(values)
 
 
@@ -600,3 +603,23 @@ def test_the_note_says_the_shafts_own_mass_is_left_out_of_its_critical_speed(tmp
         '[vibration]', f'locale = "{locale}"\n[vibration]', 1)
     _, note, _ = _written(tmp_path, text)
     assert words in note
+
+
+def test_the_transmissibility_plot_puts_the_working_and_design_points_where_they_are(tmp_path):
+    zeta, wanted = 0.1, 0.2
+    _, _, svgs = _written(tmp_path, _vibration_scene(mass=100.0, unbalance=0.02, stiffness=1.0e5,
+                                                     damping_ratio=zeta, rpm=600.0, transmissibility=wanted))
+    svg = svgs["vibration_transmissibility"]
+    xs, rs = _axis(svg, "x")
+    ys, trs = _axis(svg, "y")
+    to_r, to_log_tr = np.polyfit(xs, rs, 1), np.polyfit(ys, np.log10(trs), 1)
+    marks = re.findall(r'<use [^>]*x="([\d.]+)" y="([\d.]+)" style="fill: #(a83a1f|1f7a3a)', svg)
+    # The first of each colour is on the plot; the second is its legend's key.
+    working = next((float(x), float(y)) for x, y, colour in marks if colour == "a83a1f")
+    design = next((float(x), float(y)) for x, y, colour in marks if colour == "1f7a3a")
+    ratio = 20 * math.pi / math.sqrt(1000.0)
+    assert np.polyval(to_r, working[0]) == pytest.approx(ratio, abs=0.01)
+    assert 10 ** np.polyval(to_log_tr, working[1]) == pytest.approx(_force_transmissibility(ratio, zeta), rel=0.01)
+    isolating = brentq(lambda r: _force_transmissibility(r, zeta) - wanted, 1.5, 100.0, xtol=1e-14)
+    assert np.polyval(to_r, design[0]) == pytest.approx(isolating, abs=0.01)
+    assert 10 ** np.polyval(to_log_tr, design[1]) == pytest.approx(wanted, rel=0.01)
