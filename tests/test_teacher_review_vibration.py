@@ -623,3 +623,34 @@ def test_the_transmissibility_plot_puts_the_working_and_design_points_where_they
     isolating = brentq(lambda r: _force_transmissibility(r, zeta) - wanted, 1.5, 100.0, xtol=1e-14)
     assert np.polyval(to_r, design[0]) == pytest.approx(isolating, abs=0.01)
     assert 10 ** np.polyval(to_log_tr, design[1]) == pytest.approx(wanted, rel=0.01)
+
+
+FOLDED_PAST = """
+[scene]
+title = "A share turning back past the one before"
+[balancing]
+masses = [ { mass = 1.0, radius = 0.1, angle = 45.0, plane = 0.5 },
+           { mass = 1.0, radius = 0.1, angle = 224.0, plane = -0.5 },
+           { mass = 1.0, radius = 0.05, angle = 90.0, plane = 0.0 } ]
+planes = [0.0, 1.0]
+correction_radius = 0.1
+"""
+
+
+@pytest.mark.parametrize("text", [FOLDED_PAST, LONG], ids=["folded-past", "long"])
+def test_no_share_is_drawn_over_another_for_most_of_its_length(tmp_path, text):
+    """Plane L: (m1r1)L, 0.05 kg·m at 45°, then (m2r2)L, 0.15 kg·m at 224°, turning back a degree off straight
+    over it and running on past the pole: (m1r1)L lay wholly under it.  Only a share ending on the one before it
+    was drawn beside the chain."""
+    from shapely.geometry import LineString
+
+    _, _, svgs = _written(tmp_path, text)
+    svg = svgs["rotor_balancing"]
+    for plane in "LR":
+        drawn = _drawn_vectors(svg, plane)
+        drawn.pop(f"m{plane}r{plane}")
+        lines = {name: LineString([(a.real, a.imag), (b.real, b.imag)]) for name, (a, b) in drawn.items()}
+        for name, line in lines.items():
+            for other, over in lines.items():
+                if other != name:
+                    assert line.intersection(over.buffer(0.5)).length < 0.5 * line.length, (plane, name, other)

@@ -158,8 +158,8 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     def mm(value: complex) -> complex:
         return value / scale
 
-    beside = _beside(plane, mm)
     folded = _folded_back(plane, mm)
+    beside = _beside(plane, mm, folded)
     arrows: list[Primitive] = []
     named: list[tuple[str, Arrow]] = []
     leaders: list[Primitive] = []
@@ -202,7 +202,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     return key, layers, extent, _caption(plane, None if empty else scale, text, placed)
 
 
-def _beside(plane: CorrectionPlane, mm) -> complex:
+def _beside(plane: CorrectionPlane, mm, folded: dict[int, complex] | None = None) -> complex:
     """Where the correction is drawn from where it closes the polygon (mm): 0, or :data:`BESIDE_MM` across it, away
     from the chain's corners, where a mass vector lies along it."""
     tail, head = mm(plane.vectors[-1].start), mm(plane.vectors[-1].end)
@@ -225,7 +225,14 @@ def _beside(plane: CorrectionPlane, mm) -> complex:
         return 0j
     # Away from the chain's corners that stand off the line; to the right of the correction where none does.
     offside = sum(local(mm(vertex)).imag for vertex in plane.vertices)
-    return along * 1j * (BESIDE_MM if offside < -ALONG_MM else -BESIDE_MM)
+    side = along * 1j * (BESIDE_MM if offside < -ALONG_MM else -BESIDE_MM)
+    # A share along the correction set beside the chain already (``folded``, :func:`_folded_back`) stands on that
+    # side: the correction goes to the other, not onto it.
+    for index, shift in (folded or {}).items():
+        share = mm(plane.vectors[index].vector)
+        if (shift / side).real > 0 and abs((share / along).imag) < abs(share) * math.sin(math.radians(HIDDEN_DEG)):
+            return -side
+    return side
 
 
 def _hidden_share(start: complex, end: complex, length: float) -> float:
@@ -267,7 +274,12 @@ def _folded_back(plane: CorrectionPlane, mm) -> dict[int, complex]:
             # How far its end stands from the share before, which runs from 0 to |before| along ``back`` here.
             reach = min(max(turned.real, 0.0), abs(before))
             onto = abs(turned - reach)
-            if abs(math.degrees(math.atan2(turned.imag, turned.real))) < FOLDED_BACK_DEG and onto < FOLDED_ONTO_MM:
+            # A longer one running back past the share before's start covers it whole: how far that start stands
+            # from it.
+            along = min(max((abs(before) * turned.conjugate()).real / abs(turned) ** 2, 0.0), 1.0)
+            over = abs(abs(before) - along * turned)
+            if (abs(math.degrees(math.atan2(turned.imag, turned.real))) < FOLDED_BACK_DEG
+                    and min(onto, over) < FOLDED_ONTO_MM):
                 across = turned.imag
                 if abs(across) < ALONG_MM:
                     start = mm(vector.start)
