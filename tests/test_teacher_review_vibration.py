@@ -654,3 +654,18 @@ def test_no_share_is_drawn_over_another_for_most_of_its_length(tmp_path, text):
             for other, over in lines.items():
                 if other != name:
                     assert line.intersection(over.buffer(0.5)).length < 0.5 * line.length, (plane, name, other)
+
+
+@pytest.mark.parametrize(("locale", "title"), [("en", "Force transmitted to the frame through the bearings"),
+                                               ("ru", "Сила, передаваемая через подшипники на станину"),
+                                               ("zh", "经轴承传给机架的力")])
+def test_a_shafts_transmissibility_plot_is_titled_for_the_frame_its_bearings_pass_the_force_to(tmp_path, locale,
+                                                                                             title):
+    """The note says a disc on its shaft passes TR·m·e·ω² through the bearings to the frame; its plot said the force
+    went to the base, as a machine's on its mounts does."""
+    text = _vibration_scene(mass=20.0, unbalance=0.0004, damping_ratio=0.02, rpm=3000.0).replace(
+        "[vibration]", "[vibration]\nshaft = { modulus = 2.1e11, diameter = 0.03, length = 0.8 }").replace(
+        "[vibration]", f'locale = "{locale}"\n[vibration]', 1)
+    _, note, svgs = _written(tmp_path, text)
+    assert f"<!-- {title} -->" in svgs["vibration_transmissibility"]
+    assert title in note

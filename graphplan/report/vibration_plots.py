@@ -94,13 +94,16 @@ def words_for(spec: VibrationSpec, text: Mapping[str, str] | None) -> Mapping[st
     """The plots' words for ``spec`` (``text`` as the figures take it; None: English): a machine with no unbalance
     on a moving base reads the magnification as its motion relative to the base, Z/Y, and the transmissibility as
     the motion passed to it, X/Y (the same curves), not as a rotating unbalance and a force.  A disc on a shaft
-    has its whole support designed, the shaft and any mounts under its bearings, not mounts alone."""
+    has its whole support designed, the shaft and any mounts under its bearings, not mounts alone, and passes the
+    force through its bearings to the frame."""
     moved = spec.unbalance == 0 and spec.base_amplitude is not None
     if not (moved or spec.on_shaft):
         return text
     words = {**locale_strings("en"), **(text or {})}
     if spec.on_shaft:
+        # Its bearings pass the force to the frame, as the note says, not mounts to a base.
         words["vib_design"] = words["vib_design_shaft"]
+        words["vib_transmissibility_title"] = words["vib_transmissibility_title_shaft"]
     if moved:
         words.update({"vib_magnification": words["vib_relative"], "vib_magnification_title": words["vib_relative_title"],
                       "vib_transmissibility": words["vib_motion"], "vib_transmissibility_title": words["vib_motion_title"],
