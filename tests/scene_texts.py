@@ -25,3 +25,55 @@ length = {rod}
 guide = {{ through = "O", angle = 0.0 }}
 assembly = "forward"
 """
+
+
+def slider_crank_with_masses(title: str, radius: float, rod: float, rpm: float, centres: tuple[float, float],
+                             masses: tuple[float, float, float], inertias: tuple[float, float],
+                             locale: str | None = None) -> str:
+    """A central slider-crank under gravity with its links' masses: the crank OA (link 2, ``radius``, its centre S2
+    ``centres[0]`` from O) at ``rpm``, the rod AB (link 3, ``rod``, S3 ``centres[1]`` from A) and the piston B (link
+    4); ``masses`` are links 2, 3, 4's, ``inertias`` links 2 and 3's.  The caller adds the loads and positions."""
+    locale_line = f'locale = "{locale}"\n' if locale is not None else ""
+    return f"""
+[scene]
+title = "{title}"
+{locale_line}gravity = 9.81
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = {radius}
+rpm = {rpm}
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = {rod}
+guide = {{ through = "O", angle = 0.0 }}
+assembly = "forward"
+[points]
+S2 = {{ link = 2, from = "O", toward = "A", at = {centres[0]} }}
+S3 = {{ link = 3, from = "A", toward = "B", at = {centres[1]} }}
+[links.2]
+mass = {masses[0]}
+centre = "S2"
+inertia = {inertias[0]}
+[links.3]
+mass = {masses[1]}
+centre = "S3"
+inertia = {inertias[1]}
+[links.4]
+mass = {masses[2]}
+centre = "B"
+"""
+
+
+def piston_compressor(radius: float = 0.075, rod: float = 0.30, rod_centre: float = 0.10) -> str:
+    """The horizontal piston compressor (crank 0.075 m at 600 rpm, rod 0.30 m, links of 8, 3 and 4 kg) whose lengths a
+    test may give in other units; the caller adds its gas load and positions."""
+    return slider_crank_with_masses("Piston compressor", radius, rod, 600.0, (0.0, rod_centre), (8.0, 3.0, 4.0),
+                                    (0.05, 0.03))

@@ -7,6 +7,7 @@ import json
 import tomllib
 
 import pytest
+from scene_texts import piston_compressor
 
 import graphplan
 from graphplan.analysis import analyse
@@ -125,41 +126,7 @@ def test_a_mechanism_of_plausible_lengths_that_cannot_turn_round_keeps_its_reach
 
 # A student's compressor with its lengths typed in millimetres (75, 300, 100 for 0.075, 0.30, 0.10 m), its
 # dynamics drawn on A1 sheets: its energy–mass diagram's tangents stand at ψ ≈ 89.9°.
-COMPRESSOR_IN_MM = """
-[scene]
-title = "Piston compressor"
-gravity = 9.81
-[frame]
-link = 1
-points = { O = [0.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 75.0
-rpm = 600.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 300.0
-guide = { through = "O", angle = 0.0 }
-assembly = "forward"
-[points]
-S2 = { link = 2, from = "O", toward = "A", at = 0.0 }
-S3 = { link = 3, from = "A", toward = "B", at = 100.0 }
-[links.2]
-mass = 8.0
-centre = "S2"
-inertia = 0.05
-[links.3]
-mass = 3.0
-centre = "S3"
-inertia = 0.03
-[links.4]
-mass = 4.0
-centre = "B"
+COMPRESSOR_IN_MM = piston_compressor(radius=75.0, rod=300.0, rod_centre=100.0) + """
 [[loads]]
 kind = "force"
 link = 4

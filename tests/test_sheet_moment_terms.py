@@ -9,6 +9,7 @@ sheet writes, name by name, against the force records.
 import re
 
 import pytest
+from scene_texts import piston_compressor
 
 import graphplan
 from graphplan.analysis import analyse
@@ -20,41 +21,7 @@ from graphplan.report.forces import markdown as forces_markdown
 FIXTURES = "fixtures"
 
 # A horizontal compressor whose 12 positions start at the piston's dead centre: position 7 is the other one.
-COMPRESSOR = """
-[scene]
-title = "Piston compressor"
-gravity = 9.81
-[frame]
-link = 1
-points = { O = [0.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.075
-rpm = 600.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.30
-guide = { through = "O", angle = 0.0 }
-assembly = "forward"
-[points]
-S2 = { link = 2, from = "O", toward = "A", at = 0.0 }
-S3 = { link = 3, from = "A", toward = "B", at = 0.10 }
-[links.2]
-mass = 8.0
-centre = "S2"
-inertia = 0.05
-[links.3]
-mass = 3.0
-centre = "S3"
-inertia = 0.03
-[links.4]
-mass = 4.0
-centre = "B"
+COMPRESSOR = piston_compressor() + """
 [positions]
 count = 12
 start = START
