@@ -77,3 +77,26 @@ def piston_compressor(radius: float = 0.075, rod: float = 0.30, rod_centre: floa
     test may give in other units; the caller adds its gas load and positions."""
     return slider_crank_with_masses("Piston compressor", radius, rod, 600.0, (0.0, rod_centre), (8.0, 3.0, 4.0),
                                     (0.05, 0.03))
+
+
+def engine(locale: str | None = None) -> str:
+    """The single-cylinder engine (crank 0.05 m at 1500 rpm, rod 0.19 m) whose gas force drives the piston by its
+    indicator diagram, expansion and compression; the caller adds its positions, consumer and dynamics."""
+    return slider_crank_with_masses("Engine", 0.05, 0.19, 1500.0, (0.006, 0.055), (4.5, 1.1, 0.9), (0.012, 0.0048),
+                                    locale) + """
+[[loads]]       # expansion: the gas pushes the piston toward the crank as it moves there
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+stroke = { link = 4, sense = "backward" }
+diagram = [[0.0, 9000.0], [0.1, 7000.0], [0.3, 4000.0], [0.6, 2000.0], [1.0, 800.0]]
+
+[[loads]]       # compression: the gas still pushes toward the crank as the piston moves away
+kind = "force"
+link = 4
+point = "B"
+angle = 180.0
+stroke = { link = 4, sense = "forward" }
+diagram = [[0.0, 200.0], [0.5, 500.0], [0.8, 1200.0], [1.0, 2500.0]]
+"""

@@ -14,6 +14,7 @@ import re
 
 import numpy as np
 import pytest
+from scene_texts import engine
 
 from graphplan.cli import main
 
@@ -23,68 +24,14 @@ G = 9.81
 EXPANSION = ([0.0, 0.1, 0.3, 0.6, 1.0], [9000.0, 7000.0, 4000.0, 2000.0, 800.0])
 COMPRESSION = ([0.0, 0.5, 0.8, 1.0], [200.0, 500.0, 1200.0, 2500.0])
 
-ENGINE = """
-[scene]
-title = "Engine"
-locale = "{locale}"
-gravity = 9.81
 
-[frame]
-link = 1
-points = {{ O = [0.0, 0.0] }}
-
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.05
-rpm = 1500.0
-
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.19
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
-
-[points]
-S2 = {{ link = 2, from = "O", toward = "A", at = 0.006 }}
-S3 = {{ link = 3, from = "A", toward = "B", at = 0.055 }}
-
-[links.2]
-mass = 4.5
-centre = "S2"
-inertia = 0.012
-[links.3]
-mass = 1.1
-centre = "S3"
-inertia = 0.0048
-[links.4]
-mass = 0.9
-centre = "B"
-
-[[loads]]
-kind = "force"
-link = 4
-point = "B"
-angle = 180.0
-stroke = {{ link = 4, sense = "backward" }}
-diagram = [[0.0, 9000.0], [0.1, 7000.0], [0.3, 4000.0], [0.6, 2000.0], [1.0, 800.0]]
-
-[[loads]]
-kind = "force"
-link = 4
-point = "B"
-angle = 180.0
-stroke = {{ link = 4, sense = "forward" }}
-diagram = [[0.0, 200.0], [0.5, 500.0], [0.8, 1200.0], [1.0, 2500.0]]
-
+def engine_scene(locale: str) -> str:
+    """The engine with a velocity plan at each of its 12 positions, its note in ``locale``."""
+    return engine(locale) + """
 [positions]
 count = 12
 start = "extreme"
-working = {{ link = 4, sense = "backward" }}
+working = { link = 4, sense = "backward" }
 velocity_plans = "all"
 
 [dynamics]
@@ -114,7 +61,7 @@ def loads_moment(phi: float) -> float:
 
 def note_of(tmp_path, locale: str) -> str:
     scene = tmp_path / f"engine_{locale}.toml"
-    scene.write_text(ENGINE.format(locale=locale), encoding="utf-8")
+    scene.write_text(engine_scene(locale), encoding="utf-8")
     out = tmp_path / locale
     assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
     return (out / "note.md").read_text(encoding="utf-8")

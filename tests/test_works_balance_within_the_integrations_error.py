@@ -16,6 +16,7 @@ import re
 
 import numpy as np
 import pytest
+from scene_texts import engine
 from scipy.integrate import cumulative_trapezoid
 from scipy.optimize import brentq
 
@@ -126,63 +127,7 @@ def test_a_crank_rocker_off_its_balance_by_a_thousandth_is_refused_with_the_mome
     assert f"value = {-missing / (2 * math.pi):.5g}" in str(refused.value)
 
 
-ENGINE = """
-[scene]
-title = "Engine"
-gravity = 9.81
-
-[frame]
-link = 1
-points = { O = [0.0, 0.0] }
-
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.05
-rpm = 1500.0
-
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.19
-guide = { through = "O", angle = 0.0 }
-assembly = "forward"
-
-[points]
-S2 = { link = 2, from = "O", toward = "A", at = 0.006 }
-S3 = { link = 3, from = "A", toward = "B", at = 0.055 }
-
-[links.2]
-mass = 4.5
-centre = "S2"
-inertia = 0.012
-[links.3]
-mass = 1.1
-centre = "S3"
-inertia = 0.0048
-[links.4]
-mass = 0.9
-centre = "B"
-
-[[loads]]       # expansion: the gas pushes the piston toward the crank as it moves there
-kind = "force"
-link = 4
-point = "B"
-angle = 180.0
-stroke = { link = 4, sense = "backward" }
-diagram = [[0.0, 9000.0], [0.1, 7000.0], [0.3, 4000.0], [0.6, 2000.0], [1.0, 800.0]]
-
-[[loads]]       # compression: the gas still pushes toward the crank as the piston moves away
-kind = "force"
-link = 4
-point = "B"
-angle = 180.0
-stroke = { link = 4, sense = "forward" }
-diagram = [[0.0, 200.0], [0.5, 500.0], [0.8, 1200.0], [1.0, 2500.0]]
-
+ENGINE = engine() + """
 [positions]
 count = 12
 start = "extreme"
