@@ -100,3 +100,28 @@ angle = 180.0
 stroke = { link = 4, sense = "forward" }
 diagram = [[0.0, 200.0], [0.5, 500.0], [0.8, 1200.0], [1.0, 2500.0]]
 """
+
+
+def four_bar_through_a_toggle() -> str:
+    """A four-bar (crank OA 0.2 m at 10 rad/s, coupler AB 0.5, rocker BC 0.7, OC 1.0) whose coupler and rocker lie in
+    one line at φ = 180°, where no plan can be drawn; the caller adds its positions."""
+    return """
+[scene]
+title = "Four-bar through a toggle"
+[frame]
+points = { O = [0.0, 0.0], C = [1.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.2
+omega = 10.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.5, 0.7]
+assembly = "left"
+"""
+

@@ -9,6 +9,7 @@ import dataclasses
 import re
 
 import pytest
+from scene_texts import four_bar_through_a_toggle
 
 import graphplan
 from graphplan.analysis import analyse
@@ -114,24 +115,7 @@ def test_readings_that_agree_at_one_unit_a_millimetre_are_told_both_explanations
 
 # A four-bar whose coupler and rocker lie in one line at φ = 180° (|AC| = 0.2 + 1.0 = AB + BC = 1.2), position 7 of
 # 12 numbered from 1: no plan can be drawn there.
-TOGGLE = """
-[scene]
-title = "Four-bar through a toggle"
-[frame]
-points = { O = [0.0, 0.0], C = [1.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.2
-omega = 10.0
-[[groups]]
-kind = "RRR"
-links = [3, 4]
-joints = ["A", "B", "C"]
-lengths = [0.5, 0.7]
-assembly = "left"
+TOGGLE = four_bar_through_a_toggle() + """
 [positions]
 count = 12
 """

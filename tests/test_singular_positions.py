@@ -5,6 +5,7 @@ import math
 import re
 
 import pytest
+from scene_texts import four_bar_through_a_toggle
 
 import graphplan
 from graphplan.cli import main
@@ -12,24 +13,7 @@ from graphplan.errors import SingularPositionError
 
 # A four-bar whose coupler and rocker lie in one line at φ = 180° (|AC| = 0.2 + 1.0 = AB + BC = 1.2):
 # at that position the velocity equations of group II(3,4) have no unique solution.
-TOGGLE = """
-[scene]
-title = "Four-bar through a toggle"
-[frame]
-points = { O = [0.0, 0.0], C = [1.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.2
-omega = 10.0
-[[groups]]
-kind = "RRR"
-links = [3, 4]
-joints = ["A", "B", "C"]
-lengths = [0.5, 0.7]
-assembly = "left"
+TOGGLE = four_bar_through_a_toggle() + """
 [positions]
 count = 12
 plans = [2, 7]
