@@ -125,3 +125,26 @@ lengths = [0.5, 0.7]
 assembly = "left"
 """
 
+
+def offset_slotted_lever(offset: float) -> str:
+    """A slotted lever about C = (0.06, −0.04) m driven by a crank OA = 0.15 m at 10 rad/s, its slide ``offset`` m to
+    the left of C, so that the block reaches it only while |CA| > |offset|; the caller adds its positions."""
+    return f"""
+[scene]
+title = "Slotted lever with an offset slide"
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0], C = [0.06, -0.04] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.15
+omega = 10.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = {offset}
+"""

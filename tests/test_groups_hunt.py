@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scene_texts import offset_slotted_lever
 
 import graphplan
 from graphplan.errors import AssemblyError
@@ -53,24 +54,7 @@ count = 12
 # A slotted lever whose slide runs 0.1 m to the left of its pivot C = (0.06, −0.04) m, driven by a crank
 # OA = 0.15 m: the block assembles while |CA| > 0.1 m, and at each end of the crank's reach |CA| = 0.1 m, the
 # block at the foot of the perpendicular from C on the slide.
-OFFSET_SLOT = """
-[scene]
-title = "Slotted lever with an offset slide"
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.06, -0.04] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.15
-omega = 10.0
-[[groups]]
-kind = "RPR"
-links = [3, 4]
-joints = ["A", "C"]
-offset = 0.1
+OFFSET_SLOT = offset_slotted_lever(0.1) + """
 [positions]
 count = 12
 start = 90.0

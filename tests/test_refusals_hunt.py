@@ -18,6 +18,7 @@ import unicodedata
 
 import numpy as np
 import pytest
+from scene_texts import offset_slotted_lever
 
 import graphplan
 from graphplan.errors import AssemblyError
@@ -118,35 +119,20 @@ def test_a_resisting_force_square_to_a_named_frame_line_is_refused():
 # 0.15 + |OC|, |OC| = √(0.06² + 0.04²) = 0.0721110 m: 0.0778890 m to 0.2221110 m, the farthest where A stands
 # opposite C across O, at φ = atan2(0.04, −0.06) = 146.3099°. The block pivoted at A reaches a slide |offset| m
 # from C only where |CA| > |offset|.
-OFFSET_SLOT = """
-[scene]
-title = "Slotted lever with an offset slide"
-[frame]
-link = 1
-points = {{ O = [0.0, 0.0], C = [0.06, -0.04] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.15
-omega = 10.0
-[[groups]]
-kind = "RPR"
-links = [3, 4]
-joints = ["A", "C"]
-offset = {offset}
+def offset_slot(offset: float) -> str:
+    return offset_slotted_lever(offset) + """
 [positions]
 count = 12
 start = 90.0
 """
+
 
 OC = math.hypot(0.06, 0.04)
 
 
 def _rpr_refusal(offset: float) -> AssemblyError:
     with pytest.raises(AssemblyError) as caught:
-        graphplan.solve(graphplan.load_text(OFFSET_SLOT.format(offset=offset)))
+        graphplan.solve(graphplan.load_text(offset_slot(offset)))
     return caught.value
 
 
