@@ -1,16 +1,21 @@
 """Scene texts that many tests start from, written once so that a change to the scene format changes them once."""
 
 
-def central_slider_crank(radius: float, rod: float, omega: float) -> str:
+def central_slider_crank(radius: float, rod: float, omega: float, named_guide: bool = False,
+                         locale: str | None = None) -> str:
     """A weightless central slider-crank: the crank OA (link 2, ``radius``) turning at ``omega`` rad/s about O, the
-    rod AB (link 3, ``rod``) and the slider B (link 4) on a guide through O along x.  The caller adds the loads,
-    positions and friction after it."""
+    rod AB (link 3, ``rod``) and the slider B (link 4) on a guide through O along x, given as the frame's line
+    ``axis`` where ``named_guide`` (as a friction test names it).  The caller adds the loads, positions and friction
+    after it."""
+    locale_line = f'locale = "{locale}"\n' if locale is not None else ""
+    axis_line = 'lines = { axis = { through = "O", angle = 0.0 } }\n' if named_guide else ""
+    guide = '"axis"' if named_guide else '{ through = "O", angle = 0.0 }'
     return f"""
 [scene]
 gravity = 0.0
-[frame]
+{locale_line}[frame]
 points = {{ O = [0.0, 0.0] }}
-[driver]
+{axis_line}[driver]
 kind = "crank"
 link = 2
 pivot = "O"
@@ -22,7 +27,7 @@ kind = "RRP"
 links = [3, 4]
 joints = ["A", "B"]
 length = {rod}
-guide = {{ through = "O", angle = 0.0 }}
+guide = {guide}
 assembly = "forward"
 """
 

@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 from scipy.integrate import quad
 
 from graphplan.analysis import analyse
@@ -46,27 +47,7 @@ PUSHING = "angle = 180.0"
 
 
 def scene_text(load: str, friction: str = FRICTION, locale: str = "en", omega: float = 10.0) -> str:
-    return f"""
-[scene]
-gravity = 0.0
-locale = "{locale}"
-[frame]
-points = {{ O = [0.0, 0.0] }}
-lines = {{ axis = {{ through = "O", angle = 0.0 }} }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {RADIUS}
-omega = {omega}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = "axis"
-assembly = "forward"
+    return central_slider_crank(RADIUS, ROD, omega, named_guide=True, locale=locale) + f"""
 [[loads]]
 kind = "force"
 link = 4

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank
 
 import graphplan
 from graphplan.analysis import analyse
@@ -39,26 +40,7 @@ def slider_crank(friction: str) -> graphplan.Scene:
 
 
 def slider_crank_text(friction: str) -> str:
-    return f"""
-[scene]
-gravity = 0.0
-[frame]
-points = {{ O = [0.0, 0.0] }}
-lines = {{ axis = {{ through = "O", angle = 0.0 }} }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {RADIUS}
-omega = {OMEGA}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = "axis"
-assembly = "forward"
+    return central_slider_crank(RADIUS, ROD, OMEGA, named_guide=True) + f"""
 [[loads]]
 kind = "force"
 link = 4
