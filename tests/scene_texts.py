@@ -153,3 +153,41 @@ links = [3, 4]
 joints = ["A", "C"]
 offset = {offset}
 """
+
+
+def slider_crank_with_a_resisting_force(title: str, guide_angle: float = 0.0, force_angle: float = 180.0,
+                                        link: int = 4, point: str = "B") -> str:
+    """A slider-crank (crank OA 0.1 m at 10 rad/s, rod AB 0.35 m, a slider of 2 kg on a guide through O at
+    ``guide_angle``) with a resisting force of 100 N at ``point`` of ``link`` along ``force_angle``, for the tests of a
+    load with no motion to resist; the caller adds any other loads and the positions."""
+    return f"""
+[scene]
+title = "{title}"
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 10.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.35
+guide = {{ through = [0.0, 0.0], angle = {guide_angle} }}
+assembly = "forward"
+[links.4]
+mass = 2.0
+centre = "B"
+[[loads]]
+kind = "force"
+link = {link}
+point = "{point}"
+value = 100.0
+angle = {force_angle}
+resisting = true
+"""

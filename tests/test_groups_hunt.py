@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from scene_texts import offset_slotted_lever
+from scene_texts import offset_slotted_lever, slider_crank_with_a_resisting_force
 
 import graphplan
 from graphplan.errors import AssemblyError
@@ -198,36 +198,7 @@ def test_a_slider_whose_rod_runs_out_of_reach_says_what_stops_it_at_the_end_of_t
 # --- a load that never acts ----------------------------------------------------------------------------------------
 
 # A slider-crank (crank 0.1 m, rod 0.35 m, the slider 4 on the x axis) with a resisting moment put on the slider.
-SLIDER_WITH_A_MOMENT = """
-[scene]
-title = "Slider-crank with a moment on its slider"
-[frame]
-link = 1
-points = { O = [0.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = 10.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.35
-guide = { through = [0.0, 0.0], angle = 0.0 }
-assembly = "forward"
-[links.4]
-mass = 2.0
-centre = "B"
-[[loads]]
-kind = "force"
-link = 4
-point = "B"
-value = 100.0
-angle = 180.0
-resisting = true
+SLIDER_WITH_A_MOMENT = slider_crank_with_a_resisting_force("Slider-crank with a moment on its slider") + """
 [[loads]]
 kind = "moment"
 link = %d

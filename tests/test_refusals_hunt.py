@@ -18,7 +18,7 @@ import unicodedata
 
 import numpy as np
 import pytest
-from scene_texts import offset_slotted_lever
+from scene_texts import offset_slotted_lever, slider_crank_with_a_resisting_force
 
 import graphplan
 from graphplan.errors import AssemblyError
@@ -28,43 +28,9 @@ from graphplan.errors import AssemblyError
 # A slider-crank: crank OA = 0.1 m about O, rod AB = 0.35 m, slider 4 at B on a frame guide through O at
 # `guide_deg`; a resisting force of 100 N at B along `force_deg`. B's velocity is along the guide at every crank
 # angle (the slider only translates along it), so its part along the force is |vB|·cos(force − guide).
-SLIDER_CRANK = """
-[scene]
-title = "Slider-crank with a resisting force on its slider"
-[frame]
-link = 1
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = 10.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.35
-guide = {{ through = [0.0, 0.0], angle = {guide_deg} }}
-assembly = "forward"
-[links.4]
-mass = 2.0
-centre = "B"
-[[loads]]
-kind = "force"
-link = {link}
-point = "{point}"
-value = 100.0
-angle = {force_deg}
-resisting = true
-[positions]
-count = 12
-"""
-
-
 def _slider_crank(guide_deg: float = 0.0, force_deg: float = 90.0, link: int = 4, point: str = "B") -> str:
-    return SLIDER_CRANK.format(guide_deg=guide_deg, force_deg=force_deg, link=link, point=point)
+    return slider_crank_with_a_resisting_force("Slider-crank with a resisting force on its slider", guide_deg,
+                                               force_deg, link, point) + "[positions]\ncount = 12\n"
 
 
 @pytest.mark.parametrize(("guide_deg", "force_deg"), [(0.0, 90.0), (0.0, -90.0), (30.0, 120.0), (30.0, 300.0)])
