@@ -91,6 +91,17 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     return raised("\n".join(note.lines).rstrip("\n") + "\n")
 
 
+def _turning_pairs(unit, joints: Sequence[str]) -> str:
+    """The names of a unit's own turning pairs, in the order of its joints: the structure table's column of them.
+
+    A pair counts once, with the unit that closes it: the crank's pin A is a pair of the group hung on it, not of
+    I(1,2); and a joint that is no pin (an RPP's B, where the slot crosses the guide; a sliding leg's point on its
+    guide) is no pair.  A unit whose pairs all slide (a driving slider) has none to name.
+    """
+    pins = {joint for joint, _, _ in unit.revolutes()}
+    return ", ".join(joint for joint in dict.fromkeys(joints) if joint in pins) or "—"
+
+
 def _equal_terms(clauses: Sequence[str]) -> dict[str, str]:
     """The terms a step's further clauses set equal, each to its like: ``aFF4ᵏ + aFF4^r = aE6E4ᵏ + aE6E4^r`` gives
     aFF4ᵏ = aE6E4ᵏ and aFF4^r = aE6E4^r."""
@@ -341,10 +352,10 @@ class _Note:
         # A crank that swings (a hand lever) is a rocker, as the textbooks name a link that does not turn round.
         kind = "rocker" if driver.kind == "crank" and not driver.cyclic else driver.kind
         rows = [[f"I({self.frame},{driver.link})", self.t("note_group_driver"), f"{self.frame}, {driver.link}",
-                 ", ".join(driver.known_joints() + driver.new_joints()), self.t(f"driver_{kind}")]]
+                 _turning_pairs(driver, driver.known_joints() + driver.new_joints()), self.t(f"driver_{kind}")]]
         for group in mechanism.groups:
             rows.append([group.label, self.t("note_class_order", klass=_ROMAN[group.klass], order=group.order),
-                         ", ".join(str(link) for link in group.links), ", ".join(group.joints),
+                         ", ".join(str(link) for link in group.links), _turning_pairs(group, group.joints),
                          self.kind_name(group.kind)])
         header = [self.t("column_group"), self.t("column_class_order"), self.t("column_links"),
                   self.t("column_joints"), self.t("column_kind")]
