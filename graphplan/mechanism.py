@@ -17,6 +17,7 @@ from types import MappingProxyType
 
 from .errors import SceneError, as_written
 from .groups import Driver, Group, Guide
+from .groups.sliding import guide_link
 from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
 from .reader import join_path
 from .scene import PointSpec, Scene, not_a_scene
@@ -71,10 +72,42 @@ class Mechanism:
 
     @property
     def structure(self) -> str:
-        """The structure formula, ``I(1,2) → II2(3,4)``: class, order, links of each group."""
-        parts = [f"I({self.scene.frame_link},{self.driver.link})"]
-        parts += [f"{_ROMAN[group.klass]}{group.order}({','.join(map(str, group.links))})" for group in self.groups]
-        return " → ".join(parts)
+        """The structure formula, ``I(1,2) → II2(3,4)``: class, order, links of each group.
+
+        Each arrow leads to a group from a unit it is attached to, so that a teacher reads the order the groups
+        attach in: a group not attached to the one written before it (two dyads both hung on the crank) starts
+        a branch from the latest unit it is attached to, ``I(1,2) → II2(3,4); I(1,2) → II2(5,6)``.
+        """
+        labels = [f"I({self.scene.frame_link},{self.driver.link})"]
+        labels += [f"{_ROMAN[group.klass]}{group.order}({','.join(map(str, group.links))})" for group in self.groups]
+        formula = labels[0]
+        for index, attached in enumerate(self.attached_to, start=1):
+            if index - 1 not in attached:
+                formula += f"; {labels[max(attached, default=0)]}"
+            formula += f" → {labels[index]}"
+        return formula
+
+    @property
+    def attached_to(self) -> tuple[frozenset[int], ...]:
+        """For each group, the units (0 the driver, k the k-th group) whose links its outer pairs join, the frame
+        aside: an outer joint is on the link that first carried it, a guide on its own link."""
+        frame = self.scene.frame_link
+        carriers: dict[str, int] = dict.fromkeys(self.scene.frame_points, frame)
+        unit_of: dict[int, int] = {}
+        attached = []
+        for index, unit in enumerate(self.units):
+            solver = unit.solver
+            if index > 0:
+                links = {carriers[name] for name in solver.known_joints()}
+                links.update(guide_link(self, guide) for guide in solver.guides())
+                attached.append(frozenset(unit_of[link] for link in links if link != frame))
+            unit_of.update(dict.fromkeys((solver.link,) if index == 0 else solver.links, index))  # type: ignore[union-attr]
+            for number, names in solver.fixed_points().items():
+                for name in names:
+                    carriers.setdefault(name, number)
+            for spec in unit.points:
+                carriers.setdefault(spec.name, spec.link)
+        return tuple(attached)
 
     @property
     def revolutes(self) -> tuple[tuple[str, int, int], ...]:
@@ -170,23 +203,34 @@ def build(scene: Scene) -> Mechanism:
 
 
 def _check_moves(scene: Scene, group: Group, carried_by: dict[str, int]) -> None:
-    """Refuse a group whose outer joints and guides are all on the frame: an Assur group has no freedom of its
-    own, so joined to the frame alone it stands still, a structure and no part of the mechanism (a joint's
-    name mistyped for a frame point's does this)."""
+    """Refuse a group whose outer joints and guides are all on one link: an Assur group has no freedom of its
+    own, so joined to the frame alone it stands still, and joined to one moving link alone it moves with that link
+    as one rigid body (a truss), no part of the mechanism's motion and no Assur group (a joint's name mistyped for
+    a frame point's, or for another point of the crank's, does this)."""
     frame = scene.frame_link
     joints, guides = group.known_joints(), group.guides()
-    if any(carried_by[name] != frame for name in joints) or not all(on_frame(scene, g) for g in guides):
+    links = {carried_by[name] for name in joints} | {frame if on_frame(scene, g) else g.link for g in guides}
+    if len(links) != 1:
         return
+    (link,) = links
+    on = "the frame" if link == frame else f"link {link}"
     parts = []
     if joints:
-        parts.append(f"its outer joints {', '.join(joints)} are frame points" if len(joints) > 1 else
-                     f"its outer joint {joints[0]} is a frame point")
+        one, many = ("frame point", "frame points") if link == frame else (f"point of link {link}",
+                                                                           f"points of link {link}")
+        parts.append(f"its outer joints {', '.join(joints)} are {many}" if len(joints) > 1 else
+                     f"its outer joint {joints[0]} is a {one}")
     if guides:
-        parts.append("its guides are on the frame" if len(guides) > 1 else "its guide is on the frame")
+        parts.append(f"its guides are on {on}" if len(guides) > 1 else f"its guide is on {on}")
     what = " and ".join(parts)
-    raise SceneError(f"{group.where}.joints" if joints else f"{group.where}.guides", (
-        f"joins the frame alone ({what}), so the group cannot move: join it to the driver or to an earlier "
-        f"group by a joint of theirs or a named point of one of their links"), list(joints))
+    if link == frame:
+        why = ("the group cannot move: join it to the driver or to an earlier group by a joint of theirs or a named "
+               "point of one of their links")
+    else:
+        why = (f"the group moves with link {link} as one rigid body, no Assur group: join an outer joint or a guide "
+               f"of it to another link (the frame, or another link of the driver or of an earlier group)")
+    raise SceneError(f"{group.where}.joints" if joints else f"{group.where}.guides",
+                     f"joins {on} alone ({what}), so {why}", list(joints))
 
 
 def _joint_where(solver: Driver | Group, name: str) -> str:
@@ -203,8 +247,8 @@ def _clash(solver: Driver | Group, name: str) -> tuple[str, str]:
     if name not in solver.joints:  # type: ignore[union-attr]
         first, lever = solver.joints[0], solver.links[1]  # type: ignore[union-attr]
         return (f"{solver.where}.joints",
-                f"graphplan names the point of lever {lever} that coincides with {first} {name!r}, "
-                f"but {name!r} is already a point; rename that point")
+                (f"graphplan names the point of lever {lever} that coincides with {first} {name!r}, "
+                 f"but {name!r} is already a point; rename that point"))
     return (f"{solver.where}.joints[{solver.joints.index(name)}]",  # type: ignore[union-attr]
             f"{name!r} is already a known point; a group's inner joint is new")
 
