@@ -461,3 +461,32 @@ def test_a_group_joined_to_one_moving_link_alone_is_refused_as_a_truss(name, tmp
     assert message in printed.err and "Traceback" not in printed.err
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_forces_md_ends_its_sentence_after_a_branched_formula(locale, tmp_path):
+    """forces.md wrote «Structure {formula}; groups from the last…»: after a formula whose branches a «; » parts,
+    the clause break read as one more branch."""
+    text = OWN["six-bar-in-parallel"] + """
+[links.3]
+mass = 1.0
+centre = "A"
+[[loads]]
+kind = "force"
+link = 6
+point = "D"
+value = 100.0
+angle = 180.0
+[positions]
+count = 8
+plans = [2]
+"""
+    formula = hand_count(tomllib.loads(text))["formula"]
+    assert formula == "I(1,2) → II2(3,4); I(1,2) → II2(5,6)"
+    scene = tmp_path / "parallel.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "forces", "--locale", locale]) == 0
+    forces = (out / "forces.md").read_text(encoding="utf-8")
+    assert f"{formula}{'。' if locale == 'zh' else '. '}" in forces
+    assert f"{formula};" not in forces and f"{formula}；" not in forces
