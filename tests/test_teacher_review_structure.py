@@ -199,6 +199,8 @@ assembly = "forward"
 [points]
 K = { link = 2, from = "O", toward = "A", at = 0.05 }
 """,
+    # The rocker turns about the crank's own pivot O: O joins the frame, the crank and the rocker, two pairs.
+    "rocker-on-the-crank-pivot": _CRANK + _FOUR_BAR.replace('"C"]', '"O"]'),
     "RPR-then-PRP": _CRANK + """
 [[groups]]
 kind = "RPR"
