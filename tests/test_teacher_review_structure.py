@@ -396,6 +396,7 @@ def test_the_notes_group_headings_name_each_kind_as_the_structure_table_does(nam
     heading = {"en": r"Group ({}), kind (.+?)\*", "ru": r"Группа ({}), вид: (.+?)\*", "zh": r"杆组 ({})，类型：(.+?)\*"}
     for locale in LOCALES:
         found = re.findall(heading[locale].format(r"I+\([\d,]+\)"), notes[locale])
+        assert found, locale
         for label, kind in found:
             assert kind == _kind_text(kinds[label], locale), (locale, label, kind)
 
