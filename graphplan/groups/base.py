@@ -175,7 +175,8 @@ class Group:
 
     @property
     def label(self) -> str:
-        """The group as the structure formula writes it: ``II(3,4)``."""
+        """The group's name on the sheets, in the tables and as results.json's key: its class and links, ``II(3,4)``
+        (the structure formula adds its order, ``II2(3,4)``)."""
         return f"II({self.links[0]},{self.links[1]})"
 
     @property
