@@ -113,6 +113,8 @@ HEAVY = 3.0
 # A thin leader crossing a drawn line hides less than a letter on it.
 LEADER_CROSSING = 4.0
 MISLEADING = 8.0
+# "About as near": a label this much farther (mm) from another point than from its own still misleads.
+MISLEADING_MARGIN = 0.8
 RING = 2.5
 # A label set well apart costs this much more, so that it goes there only when no nearer spot is clear.
 SET_APART = 12.0
@@ -253,10 +255,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         away = np.hypot(*(at - at[index]).T)
         off = np.abs(candidates - np.tile(at[index], 2))
         reach = np.hypot(off[:, [0, 2]].max(axis=1), off[:, [1, 3]].max(axis=1)).max()
-        neighbours = at[(away > 1e-9) & (away < 2 * reach + 0.8 + 1e-9)]
-        # Each spot's distance from its own point (column 0) and from those neighbours, in one call.
-        distance = _box_distances(candidates, np.concatenate(([at[index]], neighbours)))
-        misleading = (distance[:, 1:] < distance[:, :1] + 0.8).sum(axis=1)
+        neighbours = at[(away > 1e-9) & (away < 2 * reach + MISLEADING_MARGIN + 1e-9)]
+        misleading = _misleading(candidates, at[index], neighbours)
         beside = ring < led_from
         led = np.flatnonzero(~beside)
         lines = _leaders(anchor.at, candidates[led])
@@ -456,9 +456,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         labels_hit = crossing(shapes, placed_boxes, index)
         # Standing about as near another labelled point as its own (the point of its line beside which it stands)
         # would name the wrong one.
-        own = np.hypot(np.maximum(np.maximum(candidates[:, 0] - points[:, 0], points[:, 0] - candidates[:, 2]), 0.0),
-                       np.maximum(np.maximum(candidates[:, 1] - points[:, 1], points[:, 1] - candidates[:, 3]), 0.0))
-        misleading = (_box_distances(candidates, np.delete(at, index, axis=0)) < own[:, None] + 0.8).sum(axis=1)
+        misleading = _misleading(candidates, points, np.delete(at, index, axis=0))
         cost = np.concatenate((beside_cost + MISLEADING * misleading[:len(beside_boxes)],
                                RING * reach_rings[led_ring] + 0.01 * led_turn
                                + SET_APART * (reach_rings[led_ring] >= apart_from)
@@ -586,10 +584,22 @@ def _boxes_meet(one: np.ndarray, other: np.ndarray) -> np.ndarray:
 
 def _box_distances(boxes: np.ndarray, points: np.ndarray) -> np.ndarray:
     """The distance of each upright box ((xmin, ymin, xmax, ymax) rows) from each point: nought inside it."""
-    x, y = points[None, :, 0], points[None, :, 1]
-    dx = np.maximum(np.maximum(boxes[:, None, 0] - x, x - boxes[:, None, 2]), 0.0)
-    dy = np.maximum(np.maximum(boxes[:, None, 1] - y, y - boxes[:, None, 3]), 0.0)
+    return _box_distance(boxes[:, None, :], points[None, :, :])
+
+
+def _box_distance(boxes: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """The distance of upright boxes ((xmin, ymin, xmax, ymax) in the last axis) from points ((x, y) in the last
+    axis), broadcast against each other: nought inside."""
+    x, y = points[..., 0], points[..., 1]
+    dx = np.maximum(np.maximum(boxes[..., 0] - x, x - boxes[..., 2]), 0.0)
+    dy = np.maximum(np.maximum(boxes[..., 1] - y, y - boxes[..., 3]), 0.0)
     return np.hypot(dx, dy)
+
+
+def _misleading(boxes: np.ndarray, own: np.ndarray, others: np.ndarray) -> np.ndarray:
+    """For each box, how many of the points ``others`` it stands about as near as its own point ``own`` (one for all
+    the boxes, or one a box): a label there would read as naming the wrong one."""
+    return (_box_distances(boxes, others) < _box_distance(boxes, own)[:, None] + MISLEADING_MARGIN).sum(axis=1)
 
 
 def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...], directions: int = 16,
