@@ -241,7 +241,7 @@ def _hidden_share(start: complex, end: complex, length: float) -> float:
     :data:`HIDDEN_DEG` or whose stretch there is no longer than :data:`ALONG_MM`."""
     side = end - start
     span = abs(side)
-    if span == 0 or abs(side.imag) > span * math.sin(math.radians(HIDDEN_DEG)) or side.real == 0:
+    if span == 0 or abs(side.imag) > span * math.sin(math.radians(HIDDEN_DEG)):
         return 0.0
     # The stretch of the vector, start + t·side with t in [0, 1], inside the band across and the correction along.
     low, high = 0.0, 1.0
@@ -252,8 +252,8 @@ def _hidden_share(start: complex, end: complex, length: float) -> float:
             continue
         enter, leave = sorted(((-bound - offset) / rate, (bound - offset) / rate))
         low, high = max(low, enter), min(high, leave)
-    stretch = max(0.0, high - low) * span
-    return stretch / span if stretch > ALONG_MM else 0.0
+    share = max(0.0, high - low)
+    return share if share * span > ALONG_MM else 0.0
 
 
 def _folded_back(plane: CorrectionPlane, mm) -> dict[int, complex]:
