@@ -11,7 +11,7 @@ it, which the placement of named points needs.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -92,22 +92,29 @@ class Mechanism:
         """For each group, the units (0 the driver, k the k-th group) whose links its outer pairs join, the frame
         aside: an outer joint is on the link that first carried it, a guide on its own link."""
         frame = self.scene.frame_link
-        carriers: dict[str, int] = dict.fromkeys(self.scene.frame_points, frame)
         unit_of: dict[int, int] = {}
         attached = []
-        for index, unit in enumerate(self.units):
+        for index, (unit, carriers) in enumerate(self._carriers_at_each_unit()):
             solver = unit.solver
             if index > 0:
                 links = {carriers[name] for name in solver.known_joints()}
                 links.update(guide_link(self, guide) for guide in solver.guides())
                 attached.append(frozenset(unit_of[link] for link in links if link != frame))
             unit_of.update(dict.fromkeys((solver.link,) if index == 0 else solver.links, index))  # type: ignore[union-attr]
-            for number, names in solver.fixed_points().items():
+        return tuple(attached)
+
+    def _carriers_at_each_unit(self) -> Iterator[tuple[Unit, Mapping[str, int]]]:
+        """Each unit in solution order with the link that carries each point known before it: the first link that
+        carried it (a pin at a compound hinge is taken to belong to that link).  The mapping is read as it is
+        handed out; it grows by the unit's points after."""
+        carriers: dict[str, int] = dict.fromkeys(self.scene.frame_points, self.scene.frame_link)
+        for unit in self.units:
+            yield unit, carriers
+            for number, names in unit.solver.fixed_points().items():
                 for name in names:
                     carriers.setdefault(name, number)
             for spec in unit.points:
                 carriers.setdefault(spec.name, spec.link)
-        return tuple(attached)
 
     @property
     def revolutes(self) -> tuple[tuple[str, int, int], ...]:
@@ -116,17 +123,9 @@ class Mechanism:
         An outer joint joins its group to the first link that carried it: at a
         compound hinge the pin is taken to belong to that link.
         """
-        carriers: dict[str, int] = dict.fromkeys(self.scene.frame_points, self.scene.frame_link)
-        pairs = []
-        for unit in self.units:
-            for joint, link, other in unit.solver.revolutes():
-                pairs.append((joint, carriers[joint] if other is None else other, link))
-            for number, names in unit.solver.fixed_points().items():
-                for name in names:
-                    carriers.setdefault(name, number)
-            for spec in unit.points:
-                carriers.setdefault(spec.name, spec.link)
-        return tuple(pairs)
+        return tuple((joint, carriers[joint] if other is None else other, link)
+                     for unit, carriers in self._carriers_at_each_unit()
+                     for joint, link, other in unit.solver.revolutes())
 
     def point_names(self) -> tuple[str, ...]:
         """Every point with a motion, in solution order: frame points first."""
