@@ -229,7 +229,7 @@ def _check(given: str) -> int:
         raise
     print(f"{shown}: ok")
     print(f"structure: {mechanism.structure}")
-    print(f"W = 3·{n} − 2·{p5} = {w}")
+    print(f"W = 3n − 2p5 − p4 = 3·{n} − 2·{p5} − 0 = {w}")  # Chebyshev's formula as the note writes it; p4 = 0
     turns = analysis.positions.stroke_turns(mechanism.driver.sense)
     if turns is not None:
         working, idle = turns

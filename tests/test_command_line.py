@@ -218,7 +218,7 @@ def test_check_prints_the_structure_formula(capsys):
     assert main(["check", FIXTURE]) == 0
     printed = capsys.readouterr().out
     assert "structure: I(1,2) → II2(3,4)" in printed
-    assert "W = 3·3 − 2·4 = 1" in printed
+    assert "W = 3n − 2p5 − p4 = 3·3 − 2·4 − 0 = 1" in printed
 
 
 def test_the_driver_array_interface_matches_the_scene_positions():

@@ -98,7 +98,7 @@ def test_the_course_project_walk_through_runs_as_printed(tmp_path, monkeypatch, 
             assert words[0] == "graphplan"
             assert main(words[1:]) == 0, line
             printed.append(capsys.readouterr().out)
-    assert "structure: I(1,2) → II2(3,4) → II2(5,6)\nW = 3·5 − 2·7 = 1" in printed[1]
+    assert "structure: I(1,2) → II2(3,4) → II2(5,6)\nW = 3n − 2p5 − p4 = 3·5 − 2·7 − 0 = 1" in printed[1]
     shown = re.search(r"`(working φw = .*?)`", page)[1]
     assert f"strokes: {shown}" in printed[1]
     listed = set(re.findall(r"^\| `([^`]+)`", page, flags=re.MULTILINE))

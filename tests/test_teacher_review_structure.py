@@ -341,7 +341,7 @@ def test_the_console_and_results_json_count_as_the_hand_does(name, scenes, runs,
     assert counted["W"] == 1
     console, results, _ = runs(name, capsys)
     assert f"structure: {counted['formula']}\n" in console
-    assert f"W = 3·{counted['n']} − 2·{counted['p5']} = 1\n" in console
+    assert f"W = 3n − 2p5 − p4 = 3·{counted['n']} − 2·{counted['p5']} − 0 = 1\n" in console
     assert results["structure"] == counted["formula"]
     assert results["degrees_of_freedom"] == {"moving_links": counted["n"], "lower_pairs": counted["p5"], "W": 1}
     assert [group["kind"] for group in results["groups"]] == [unit["kind"] for unit in counted["units"][1:]]
