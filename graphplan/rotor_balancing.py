@@ -398,7 +398,8 @@ def _close_polygon(name: str, position: float, factors: tuple[float, ...], masse
     """Σ (mi·ri)plane + mb·rb = 0: the shares head to tail from 0, the correction back to 0.
 
     Where the masses are ``shared`` between two planes, a side is a mass's share, not its m·r, and is named as
-    one, ``(m1r1)L``: "m1r1 + m2r2 + mLrL = 0" would say what is false."""
+    one, ``(m1r1)L``: "m1r1 + m2r2 + mLrL = 0" would say what is false.  A mass turning in the other correction
+    plane has no share in this one: its side is nothing, drawn nowhere, and the equation leaves it out as well."""
     vectors = []
     tip = 0j
     for mass, factor in zip(masses, factors, strict=True):
@@ -406,7 +407,8 @@ def _close_polygon(name: str, position: float, factors: tuple[float, ...], masse
         vectors.append(PolygonVector(f"({mass.label}){name}" if shared else mass.label, tip, tip + share, "mass"))
         tip += share
     correction = PolygonVector(vector_name(name), tip, 0j, "correction")
-    equation = " + ".join([vector.name for vector in vectors] + [correction.name]) + " = 0"
+    terms = [vector.name for vector, factor in zip(vectors, factors, strict=True) if factor != 0.0]
+    equation = " + ".join([*terms, correction.name]) + " = 0"
     return CorrectionPlane(name=name, position=position, factors=factors, vectors=(*vectors, correction),
                            correction=-tip, radius=radius, equation=equation)
 

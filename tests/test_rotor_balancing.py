@@ -153,6 +153,17 @@ def test_a_mass_in_a_correction_plane_loads_only_that_plane():
     assert right.correction == pytest.approx(-masses[1].unbalance, abs=1e-15)
 
 
+def test_a_plane_equation_leaves_out_the_mass_that_turns_in_the_other_correction_plane():
+    # Its share there is nothing, and the polygon draws no side for it: the equation says what the drawing draws.
+    masses = [RotatingMass(1.0, 0.1, 90, 0.0), RotatingMass(2.0, 0.1, 0, 0.5), RotatingMass(1.5, 0.1, 200, 1.0)]
+    result = balance(BalancingSpec(masses, planes=(0.0, 1.0)))
+    left, right = result.planes
+    assert left.equation == "(m1r1)L + (m2r2)L + mLrL = 0"
+    assert right.equation == "(m2r2)R + (m3r3)R + mRrR = 0"
+    drawn = {text.text for layer in drawing.layout(result) for text in layer.items if isinstance(text, Text)}
+    assert {"(m1r1)L", "(m2r2)L", "(m2r2)R", "(m3r3)R"} <= drawn and not drawn & {"(m3r3)L", "(m1r1)R"}
+
+
 def test_an_overhung_mass_pulls_the_far_plane_against_its_sense():
     # A mass beyond plane R: plane L takes a share opposite to it, plane R more than all of it.
     masses = [RotatingMass(1.0, 0.2, 0, 1.5)]
