@@ -467,6 +467,36 @@ def test_the_russian_dynamics_symbols_take_their_indices_below_the_line():
         "M<sub>т</sub>(ω); J<sub>п′</sub>(φ), m<sub>п</sub>, F<sub>п</sub>, M<sub>п</sub>; Машина Mсила Aдрес")
 
 
+def test_a_rotors_products_shares_and_planes_take_their_indices_below_the_line():
+    """The balancing's m₁r₁, (m₁r₁)_L, m_i·r_i, m_L and z_R, set flat in the HTML, LaTeX and Word notes before; a
+    plane named A-A, whose products are written (m·r)A-A, and words that begin like the symbols stay as they are."""
+    assert symbols_html("(mi·ri)L = mi·ri·(zR − zi)/(zR − zL); Σ (mi·ri) + mb·rb = 0; (m1r1)L + (mArA)L + mLrL = 0; "
+                        "mL = 1.41/0.05; (m·r)R, kg·m; m12r12; (m·r)A-A + mA-ArA-A; mere mass mark") == (
+        "(m<sub>i</sub>·r<sub>i</sub>)<sub>L</sub> = m<sub>i</sub>·r<sub>i</sub>·(z<sub>R</sub> − z<sub>i</sub>)/"
+        "(z<sub>R</sub> − z<sub>L</sub>); Σ (m<sub>i</sub>·r<sub>i</sub>) + m<sub>b</sub>·r<sub>b</sub> = 0; "
+        "(m<sub>1</sub>r<sub>1</sub>)<sub>L</sub> + (m<sub>A</sub>r<sub>A</sub>)<sub>L</sub> + m<sub>L</sub>r<sub>L</sub>"
+        " = 0; m<sub>L</sub> = 1.41/0.05; (m·r)<sub>R</sub>, kg·m; m<sub>12</sub>r<sub>12</sub>; "
+        "(m·r)A-A + mA-ArA-A; mere mass mark")
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_rotors_note_sets_its_balancing_notation_as_the_textbook_does(tmp_path, locale):
+    from graphplan.cli import main
+    from graphplan.starters import starter
+
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(starter("rotor", locale), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "note,balancing"]) == 0
+    page = (tmp_path / "out" / "note.html").read_text(encoding="utf-8")
+    for symbol in ("(m<sub>i</sub>·r<sub>i</sub>)<sub>L</sub>", "(m<sub>1</sub>r<sub>1</sub>)<sub>R</sub>",
+                   "m<sub>L</sub>r<sub>L</sub>", "z<sub>R</sub>", "(m·r)<sub>L</sub>"):
+        assert symbol in page, symbol
+    text = re.sub(r"<sub>[^<]*</sub>", "", re.sub(r"<(?!/?sub>)[^>]*>", " ", page))
+    assert not re.findall(r"\bm\d+r\d+|\bm[LRb]r[LRb]\b|\bz[LRi]\b|\)[LR]\b", text)
+    latex = (tmp_path / "out" / "note.tex").read_text(encoding="utf-8")
+    assert r"(m\textsubscript{1}r\textsubscript{1})\textsubscript{L}" in latex
+
+
 # Determinism.
 
 def test_the_note_is_the_same_every_time():

@@ -23,6 +23,10 @@ CAPITALS = "A-ZА-ЯЁΑ-Ω"
 # A point's name, or two of them, as an index: a capital, then capitals and digits (B4, S3, ВА, Σ6C).
 _POINTS = f"[{CAPITALS}][{CAPITALS}0-9]*"
 
+# A rotor's mass or correction plane as an index: numbered (1, 12), lettered as the scenes letter them (A, Ab, L), the
+# static correction's b, or the textbook's running i.
+_ROTOR = f"\\d{{1,3}}|[{CAPITALS}][A-Za-z0-9]{{0,2}}|[bi]"
+
 # base, index, component: the symbols of the plan method and of the force analysis.
 SYMBOL = re.compile(
     # A derivative's d stands before the speed it differentiates: dωd/dt is d of ωd.
@@ -61,6 +65,13 @@ SYMBOL = re.compile(
     # Jмуф, Mмуф, ωд); a brake (Mt).  A machine's natural frequency on its mounts (ωn).
     r"|(?P<base22>M)(?P<index22>max|cl|муф|[Ntнк])|(?P<base23>s)(?P<index23>[kmNкн])"
     r"|(?P<base24>ω)(?P<index24>mot|дв|[sNdnнд])|(?P<base25>J)(?P<index25>rot|cl|рот|муф)"
+    # A rotor's balancing: a mass-radius product (m1r1, mArA, mi·ri, mb·rb), a plane's share of one ((m1r1)L, the
+    # table's (m·r)L), a correction mass (mL, mb) and a plane's place along the axis (zR, zi).  The products are two
+    # symbols each, m and r with one index, and a share's plane indexes its closing parenthesis.
+    # A name running on past a hyphen (a plane A-A) is no index of these: its product is written (m·r)A-A, flat.
+    rf"|\((?P<share28>m(?P<index28>{_ROTOR})·?r(?P=index28)|m·r)\)(?P<plane28>{_ROTOR})(?!-)"
+    rf"|m(?P<index29>{_ROTOR})(?P<dot29>·?)r(?P=index29)(?!-)"
+    rf"|(?P<base30>m)(?P<index30>[{CAPITALS}][A-Za-z0-9]{{0,2}}|b)(?!-)|(?P<base31>z)(?P<index31>[{CAPITALS}]|i)"
     # An index ends where a word would go on: Mс is a symbol, Mсила would be no word of a Russian note.
     r")(?![A-Za-z0-9_А-Яа-яЁё])")
 
@@ -84,6 +95,29 @@ def _symbol(match: re.Match[str]) -> Symbol:
     return Symbol(base, index, _SUPERSCRIPT.get(component, component.removeprefix("^")))
 
 
+def _symbols(match: re.Match[str]) -> Iterator[str | Symbol]:
+    """A match's symbol, or a rotor's product as its two (m₁r₁, m_i·r_i), a share's in its indexed parentheses."""
+    if match["plane28"] is not None:
+        yield "("
+        yield from _product(match["index28"], match["share28"])
+        yield Symbol(")", match["plane28"], "")
+    elif match["index29"] is not None:
+        yield from _product(match["index29"], match[0])
+    else:
+        yield _symbol(match)
+
+
+def _product(index: str | None, written: str) -> Iterator[str | Symbol]:
+    """A mass-radius product written as ``mIrI`` or ``mI·rI`` as m and r each with ``index``; ``m·r`` has none."""
+    if index is None:
+        yield written
+        return
+    yield Symbol("m", index, "")
+    if "·" in written:
+        yield "·"
+    yield Symbol("r", index, "")
+
+
 def pieces(text: str, verbatim: Collection[str] = ()) -> Iterator[str | Symbol]:
     """``text`` as its plain runs (str) and its symbols (:class:`Symbol`), in order; nothing is left out.
 
@@ -97,7 +131,7 @@ def pieces(text: str, verbatim: Collection[str] = ()) -> Iterator[str | Symbol]:
             continue
         if match.start() > done:
             yield text[done:match.start()]
-        yield _symbol(match)
+        yield from _symbols(match)
         done = match.end()
     if done < len(text):
         yield text[done:]
