@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import hashlib
 import os
 import shutil
 import stat
@@ -12,7 +13,8 @@ from pathlib import Path
 
 from .errors import OutputError
 
-# The names a run wrote in its folder, kept there (hidden) so that the next run replaces those alone.
+# The names a run wrote in its folder, each with the digest of what it wrote, kept there (hidden) so that the next run
+# replaces those alone, and of those only the ones nobody has changed since.
 WRITTEN = ".graphplan-written"
 
 
@@ -34,7 +36,7 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
     staging = folder.parent / f".{folder.name}.partial-{os.getpid()}"
     retired = folder.parent / f".{folder.name}.old-{os.getpid()}"
     written = sorted({name.split("/")[0] for name in files})
-    users = _not_written_by_a_run(folder, option) if folder.is_dir() else []
+    users, changed = _not_written_by_a_run(folder, option) if folder.is_dir() else ([], [])
     # A file of the user's named as the run names one (their own note.md) would be replaced without a word; so would
     # their Note.md on a disk that does not tell capitals apart (Windows', macOS's), where it is the run's note.md.
     ours = {name.casefold(): name for name in written}
@@ -43,8 +45,16 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
         them = "it" if len(theirs) == 1 else "them"
         shown = [name if name in written else f"{name} (the run's {ours[name.casefold()]} on a disk that does "
                  f"not tell capitals apart)" for name in theirs]
-        raise OutputError(f"{target}: holds {', '.join(shown)}, which no graphplan run wrote there and this run "
-                          f"would replace; move {them} away, or give {option} another folder")
+        edited = [name for name in theirs if name in changed]
+        if not edited:
+            whose = "which no graphplan run wrote there and this run would replace"
+        elif len(edited) == len(theirs):
+            whose = f"changed since a graphplan run wrote {them}: this run would replace {them}"
+        else:
+            whose = (f"which no graphplan run wrote there or which changed since one did ({', '.join(edited)}): this "
+                     f"run would replace {them}")
+        raise OutputError(f"{target}: holds {', '.join(shown)}, {whose}; move {them} away, or give {option} another "
+                          "folder")
     carried: list[str] = []
     try:
         folder.parent.mkdir(parents=True, exist_ok=True)
@@ -57,7 +67,8 @@ def write_folder(target: Path, files: Mapping[str, str | bytes], option: str = "
                 path.write_text(content, encoding="utf-8", newline="\n")
             else:
                 path.write_bytes(content)
-        (staging / WRITTEN).write_text("".join(f"{name}\n" for name in written), encoding="utf-8")
+        (staging / WRITTEN).write_text("".join(f"{name}\t{_digest(staging / name)}\n" for name in written),
+                                       encoding="utf-8")
         if folder.exists():
             for name in users:  # none the run writes: those were refused above
                 (folder / name).rename(staging / name)
@@ -161,22 +172,45 @@ def _refuse_a_link_to_nothing_on_the_way(target: Path, path: Path, option: str) 
                               f"folder, or give {option} another")
 
 
-def _not_written_by_a_run(folder: Path, option: str = "--out") -> list[str]:
-    """The entries of ``folder`` no run wrote (by its :data:`WRITTEN` list): the user's own.
+def _not_written_by_a_run(folder: Path, option: str = "--out") -> tuple[list[str], list[str]]:
+    """The entries of ``folder`` that are the user's own, by its :data:`WRITTEN` list: those no run wrote, and
+    those changed since a run wrote them (a sheet lettered by hand, a note finished in an editor); and the latter
+    apart.
 
     Only a name of an entry of ``folder`` counts: a list edited to name ``../thesis.docx`` or an absolute path
-    takes nothing outside it. A list that is not a run's text is refused, not guessed at.
+    takes nothing outside it, nor does one edited to name a file of the folder that no run wrote, whose digest it
+    cannot give. A list that is not a run's text is refused, not guessed at.
     """
     record = folder / WRITTEN
-    ours: set[str] = set()
+    listed: dict[str, str | None] = {}
     if record.is_file():
         try:
-            ours = set(record.read_text(encoding="utf-8").splitlines())
+            lines = record.read_text(encoding="utf-8").splitlines()
         except (UnicodeDecodeError, OSError) as error:
             why = "not text" if isinstance(error, UnicodeDecodeError) else error.strerror or str(error)
             raise OutputError(f"{record}: the list of the files runs wrote there cannot be read ({why}); give "
                               f"{option} another folder, or delete the list and the runs' files in {folder}") from None
-    return sorted(entry.name for entry in folder.iterdir() if entry.name != WRITTEN and entry.name not in ours)
+        # A list of names alone is an older run's, written before the digests: its names are taken at their word. In
+        # a list with digests a name without one was added by hand, and is no run's.
+        rows = [line.partition("\t") for line in lines]
+        dated = any(digest for _, _, digest in rows)
+        listed = {name: digest or None for name, _, digest in rows if digest or not dated}
+    entries = [entry for entry in folder.iterdir() if entry.name != WRITTEN]
+    unlisted = [entry.name for entry in entries if entry.name not in listed]
+    changed = [entry.name for entry in entries
+               if listed.get(entry.name) is not None and listed[entry.name] != _digest(entry)]
+    return sorted(unlisted + changed), sorted(changed)
+
+
+def _digest(entry: Path) -> str:
+    """The SHA-256 of what ``entry`` holds: a file's bytes, or a folder's files' names and bytes, in order."""
+    digest = hashlib.sha256()
+    files = sorted(path for path in entry.rglob("*") if path.is_file()) if entry.is_dir() else [entry]
+    for path in files:
+        if entry.is_dir():
+            digest.update(path.relative_to(entry).as_posix().encode("utf-8") + b"\0")
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
 
 
 def write_file(target: Path, content: str, replace: bool = True) -> Path:

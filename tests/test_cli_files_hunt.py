@@ -391,6 +391,48 @@ def test_a_list_of_what_runs_wrote_that_names_paths_outside_the_folder_touches_n
     assert sorted(path.name for path in tmp_path.iterdir()) == ["out", "outside.txt"]
 
 
+def test_a_file_of_a_run_changed_by_hand_since_is_kept_as_the_user_s(capsys, tmp_path):
+    """A sheet lettered by hand after a run was deleted by the next run that did not draw it (``--only errors``), and a
+    note finished in an editor was replaced without a word: both were on the list of what runs wrote there."""
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions,errors"]) == 0
+    lettered = (out / "positions.svg").read_text(encoding="utf-8").replace("</svg>", "<!-- my name --></svg>")
+    (out / "positions.svg").write_text(lettered, encoding="utf-8")
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "errors"]) == 0
+    assert (out / "positions.svg").read_text(encoding="utf-8") == lettered
+    capsys.readouterr()
+    (out / "errors.md").write_text("# my own errors table\n", encoding="utf-8")
+    before = {path.name: path.read_bytes() for path in out.iterdir()}
+    err = refused(capsys, ["run", str(FIXTURE), "--out", str(out), "--only", "errors"])
+    assert err == f"{out}: holds errors.md, changed since a graphplan run wrote it: this run would replace it; move " \
+                  "it away, or give --out another folder"
+    assert {path.name: path.read_bytes() for path in out.iterdir()} == before
+
+
+def test_a_run_replaces_its_own_files_unchanged_and_those_an_older_run_listed_without_digests(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions,errors"]) == 0
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions"]) == 0
+    assert not (out / "errors.md").exists()  # the earlier run's, untouched, so replaced
+    # The list as runs wrote it before it kept digests: names alone, taken at their word.
+    names = [line.split("\t")[0] for line in (out / WRITTEN).read_text(encoding="utf-8").splitlines()]
+    (out / WRITTEN).write_text("".join(f"{name}\n" for name in names), encoding="utf-8")
+    (out / "positions.svg").write_text("<svg/>", encoding="utf-8")
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "errors"]) == 0
+    assert not (out / "positions.svg").exists() and (out / "errors.md").is_file()
+
+
+def test_a_name_added_by_hand_to_the_list_of_what_runs_wrote_is_not_taken_for_a_run_s(tmp_path):
+    """A hand-edited list naming the user's own file of the folder had that file deleted by the next run."""
+    out = tmp_path / "out"
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "positions"]) == 0
+    (out / "thesis.docx").write_bytes(b"mine")
+    with (out / WRITTEN).open("a", encoding="utf-8") as listed:
+        listed.write("thesis.docx\n")
+    assert main(["run", str(FIXTURE), "--out", str(out), "--only", "errors"]) == 0
+    assert (out / "thesis.docx").read_bytes() == b"mine"
+
+
 def test_the_home_folder_given_as_the_output_is_refused(capsys, tmp_path, monkeypatch):
     """``--out ~`` meant "put it in my home": the run renamed the home folder away and a new one into its place."""
     home = tmp_path / "home"

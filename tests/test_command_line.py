@@ -291,7 +291,8 @@ def test_a_run_into_a_folder_keeps_what_no_run_wrote_there_and_replaces_its_own(
     left = {p.name for p in folder.iterdir()}
     assert {"ratchet.toml", "draft.txt", "figures", "note-latex.pdf", "positions.svg", "results.json"} <= left
     assert not {"errors.md", "errors.csv"} & left  # the earlier run's, replaced
-    assert set((folder / WRITTEN).read_text(encoding="utf-8").split()) == {"positions.svg", "results.json"}
+    listed = (folder / WRITTEN).read_text(encoding="utf-8").splitlines()
+    assert {line.split("\t")[0] for line in listed} == {"positions.svg", "results.json"}
 
 
 def test_a_run_will_not_replace_a_file_of_the_user_s_named_as_one_of_its_own(tmp_path, capsys):
