@@ -16,7 +16,14 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .errors import AssemblyError, GraphplanError, SceneError, SingularPositionError
+from .errors import (
+    AssemblyError,
+    GraphplanError,
+    PositionIndexError,
+    SceneError,
+    SingularPositionError,
+    UnknownNameError,
+)
 from .mechanism import Mechanism, build
 from .motion import Motion
 from .scene import Scene, load, missing_part, not_a_scene
@@ -138,9 +145,11 @@ __all__ = [
     "GraphplanError",
     "Mechanism",
     "Motion",
+    "PositionIndexError",
     "Scene",
     "SceneError",
     "SingularPositionError",
+    "UnknownNameError",
     "__version__",
     "build",
     "load",

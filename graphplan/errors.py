@@ -111,6 +111,21 @@ class SingularPositionError(GraphplanError, ArithmeticError):
         super().__init__(f"singular position at {position} in group {group}: {reason}")
 
 
+class UnknownNameError(GraphplanError, KeyError):
+    """A point, link, sliding pair or reaction asked of a result by a name or number it does not have.
+
+    Also a ``KeyError``, as a mapping's missing key is; the message names what was asked and what there is.
+    """
+
+    def __str__(self) -> str:
+        # KeyError's own str quotes its message as a key's repr: "\"no point 'Z'; points are …\"".
+        return str(self.args[0]) if self.args else ""
+
+
+class PositionIndexError(GraphplanError, IndexError):
+    """Positions picked from a motion by indices it does not have (``motion.at_positions``)."""
+
+
 class OutputError(GraphplanError, OSError):
     """An output could not be made (a PDF without its typesetter) or the output folder could not be written."""
 

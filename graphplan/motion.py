@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import AssemblyError, SceneError, SingularPositionError
+from .errors import AssemblyError, PositionIndexError, SceneError, SingularPositionError, UnknownNameError
 from .groups.base import Guide, GuideMotion
 from .kinematics import (
     LinkMotion,
@@ -144,22 +144,25 @@ class Motion:
 
     def point(self, name: str) -> PointArrays:
         """Point ``name``'s r (m), v (m/s) and a (m/s²), each an ``(N, 2)`` array of x, y; read-only, since they are
-        the motion's own (copy one to change it)."""
+        the motion's own (copy one to change it).  A name the motion does not have raises
+        :class:`~graphplan.errors.UnknownNameError` (a ``KeyError`` too) that lists the points."""
         if not isinstance(name, str):
             raise TypeError(f"a point is named by its name, a string: point('B'), not point({name!r})")
         if name not in self.points:
             # A Cyrillic В among Latin names: the B it meant stood in the list, looking the same.
-            raise KeyError(f"no point {name!r}; points are {', '.join(self.points)}{lookalike_hint(name, self.points)}")
+            raise UnknownNameError(f"no point {name!r}; points are {', '.join(self.points)}"
+                                   f"{lookalike_hint(name, self.points)}")
         motion = self.points[name]
         return PointArrays(*(_read_only(as_xy(value, self.count)) for value in (motion.r, motion.v, motion.a)))
 
     def link(self, number: int) -> LinkArrays:
         """Link ``number``'s angle (rad), ω (rad/s) and ε (rad/s²), each an ``(N,)`` array, counter-clockwise
-        positive; read-only, as :meth:`point`'s."""
+        positive; read-only, as :meth:`point`'s.  A number the motion does not have raises
+        :class:`~graphplan.errors.UnknownNameError`, as :meth:`point` does."""
         if isinstance(number, bool) or not isinstance(number, int | np.integer):
             raise TypeError(f"a link is named by its number, an integer: link(4), not link({number!r})")
         if number not in self.links:
-            raise KeyError(f"no link {number}; links are {', '.join(map(str, self.links))}")
+            raise UnknownNameError(f"no link {number}; links are {', '.join(map(str, self.links))}")
         motion = self.links[number]
         shape = (self.count,)
         return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
@@ -174,7 +177,8 @@ class Motion:
             mask = "; a mask picks them as np.flatnonzero(mask)" if chosen.dtype.kind == "b" else ""
             raise TypeError(f"positions are picked by their indices, a list of integers (got {indices!r}){mask}")
         if len(chosen) and not (np.all(chosen < self.count) and np.all(chosen >= -self.count)):
-            raise IndexError(f"the motion has {self.count} positions, indices 0 to {self.count - 1} (got {indices!r})")
+            raise PositionIndexError(f"the motion has {self.count} positions, indices 0 to {self.count - 1} "
+                                     f"(got {indices!r})")
         chosen = chosen % max(self.count, 1)
         renumbered = {int(old): new for new, old in enumerate(chosen)}
         points, links, slides, conditioning = _taken((self.points, self.links, self.slides, self.conditioning), chosen)
@@ -185,19 +189,22 @@ class Motion:
                       conditioning=conditioning, warnings=warnings, singular=singular)
 
     def slide(self, slider: int) -> SlideMotion:
-        """The sliding pair in which link ``slider`` slides."""
+        """The sliding pair in which link ``slider`` slides: its guide's unit direction ``u`` (complex, x + iy) and the
+        slider's coordinate ``s`` along it (m), its relative ``velocity`` and ``acceleration`` along ``u`` (m/s,
+        m/s²), each an ``(N,)`` array, read-only.  A link that slides in no pair raises :class:`~graphplan.errors.UnknownNameError`."""
         if isinstance(slider, bool) or not isinstance(slider, int | np.integer):
             # slide('6') compared a string with the links' numbers and told of a link 6 that slides in no pair.
             raise TypeError(f"a sliding pair is named by its slider's number, an integer: slide(6), "
                             f"not slide({slider!r})")
         for slide in self.slides:
             if slide.slider == slider:
-                # Views that cannot be written: a write would change the motion's own arrays.
-                return replace(slide, **{name: _read_only(np.asarray(getattr(slide, name)).view())
+                # Views that cannot be written: a write would change the motion's own arrays.  A frame guide's u is
+                # one number inside, handed out at every position as link() hands a link's constant ω.
+                return replace(slide, **{name: np.broadcast_to(getattr(slide, name), (self.count,))
                                          for name in ("u", "s", "velocity", "acceleration")})
         pairs = ", ".join(f"link {slide.slider} on link {slide.guide}" for slide in self.slides)
-        raise KeyError(f"link {slider} slides in no pair; " + (f"the sliding pairs are {pairs}" if pairs
-                                                                else "the mechanism has no sliding pair"))
+        raise UnknownNameError(f"link {slider} slides in no pair; " + (f"the sliding pairs are {pairs}" if pairs
+                                                                        else "the mechanism has no sliding pair"))
 
 
 class _Context:

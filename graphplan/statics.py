@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import UnknownNameError
 from .joint_friction import FrictionPair, friction_loads
 from .kinematics import Scalar, Vector, cross
 from .loads import Load, State, motion_state, power
@@ -84,7 +85,7 @@ class Equilibrium:
         for reaction in self.reactions:
             if reaction.name == name:
                 return reaction
-        raise KeyError(f"no reaction {name!r}; reactions are {', '.join(r.name for r in self.reactions)}")
+        raise UnknownNameError(f"no reaction {name!r}; reactions are {', '.join(r.name for r in self.reactions)}")
 
 
 @dataclass(frozen=True)
