@@ -76,6 +76,15 @@ class Equilibrium:
     iterations: np.ndarray
     locked: np.ndarray
 
+    def __post_init__(self) -> None:
+        # Handed out as they are (analysis.equilibrium.balancing): a write through them changed what the analysis's
+        # sheets, tables and note read after, as a motion's arrays, read-only, cannot.
+        arrays = [self.balancing, self.condition, self.singular, self.iterations, self.locked]
+        arrays += [value for reaction in self.reactions for value in (reaction.force, reaction.offset)]
+        for array in arrays:
+            if isinstance(array, np.ndarray):
+                array.flags.writeable = False
+
     def __repr__(self) -> str:
         # The dataclass's own repr printed every reaction's arrays.
         return (f"<Equilibrium at {np.size(self.balancing)} positions: reactions "

@@ -73,6 +73,18 @@ def test_a_slider_crank_s_slider_velocity_is_its_position_differentiated():
     assert np.allclose(slide.velocity, omega * dx, rtol=0, atol=1e-12)
 
 
+def test_the_equilibrium_s_arrays_cannot_be_written_through(ratchet):
+    """``analysis.equilibrium.balancing[:] = 0`` went through, and the analysis's drawings and tables then read
+    the zeros; the README's arrays are read-only."""
+    equilibrium = ratchet.analyse().equilibrium
+    with pytest.raises(ValueError, match="read-only"):
+        equilibrium.balancing[0] = 0.0
+    with pytest.raises(ValueError, match="read-only"):
+        equilibrium.reaction("R23").force[0] = 0.0
+    for array in (equilibrium.condition, equilibrium.singular, equilibrium.locked):
+        assert not array.flags.writeable
+
+
 def test_a_name_or_number_the_motion_has_not_is_graphplan_s_error_naming_what_there_is(ratchet):
     """They were bare KeyErrors, printed quoted ("'no link 9; …'") and missed by ``except GraphplanError``, as
     the README says bad input raises; still KeyErrors (and IndexError) for code that catches those."""
