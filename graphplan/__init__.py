@@ -65,6 +65,22 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     scene's ``[driver]`` table, the same at every position, as the plan method takes them.  ``Motion.warnings``
     names each position near a toggle, and each toggle between two of the positions, where the real mechanism
     may change its assembly and the positions beyond it keep the scene's.
+
+    Returns
+    -------
+    Motion
+        ``point(name)``'s r, v, a as ``(N, 2)`` arrays (m, m/s, m/s²), ``link(number)``'s angle, ω, ε as ``(N,)``
+        arrays (rad, rad/s, rad/s², counter-clockwise positive), ``slide(slider)``'s relative motion; N is the
+        number of values given (a single number is one position), all read-only.
+
+    Raises
+    ------
+    SceneError
+        ``driver`` no 1-D array of finite numbers (the message names the first bad value's index).
+    AssemblyError
+        a value the mechanism cannot reach, named by its index, with the driver's reach.
+    SingularPositionError
+        a value where the mechanism is at a toggle and its velocities are not determined.
     """
     from .analysis import PATH_SAMPLES
     from .motion import reference_at, with_toggles_between

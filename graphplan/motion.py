@@ -360,10 +360,17 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
         values = np.array(np.atleast_1d(given), dtype=float)
     except (TypeError, ValueError, OverflowError):  # OverflowError: a Python integer past float's range
         raise SceneError("driver", f"{numbers_only} (got {_shown(values)})") from None
-    if values.ndim != 1 or len(values) == 0:
-        raise SceneError("driver", "must be a non-empty 1-D array of driver positions")
+    if values.ndim != 1:  # a grid of angles from np.meshgrid, say: which axis is the sweep only the caller knows
+        raise SceneError("driver", f"must be a non-empty 1-D array of driver positions (got an array of shape "
+                                   f"{values.shape}): give np.ravel(driver) for all its values")
+    if len(values) == 0:
+        raise SceneError("driver", "must be a non-empty 1-D array of driver positions (got an empty one)")
     if not np.all(np.isfinite(values)):
-        raise SceneError("driver", "driver positions must be finite numbers")
+        # Among 36 000 angles the first bad one, by its index: "must be finite" alone left the caller to search.
+        bad = np.flatnonzero(~np.isfinite(values))
+        others = f"; {len(bad) - 1} more after it are not finite either" if len(bad) > 1 else ""
+        raise SceneError(f"driver[{bad[0]}]", "must be a finite number, a driver position", float(values[bad[0]]),
+                         hint=others)
     if reference is None:
         reference = reference_at(mechanism, float(values[0]))
     driver = mechanism.driver

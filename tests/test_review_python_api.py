@@ -103,6 +103,28 @@ def test_a_name_or_number_the_motion_has_not_is_graphplan_s_error_naming_what_th
     assert isinstance(raised.value, IndexError) and isinstance(raised.value, graphplan.GraphplanError)
 
 
+def test_a_nan_among_a_dense_sweep_is_told_by_its_index_and_how_many_more(ratchet):
+    angles = np.radians(np.arange(0.0, 360.0, 0.01))
+    angles[[20_000, 30_000, 30_001]] = np.nan
+    with pytest.raises(graphplan.SceneError) as raised:
+        graphplan.solve(ratchet, driver=angles)
+    assert str(raised.value) == ("driver[20000]: must be a finite number, a driver position (got nan); "
+                                 "2 more after it are not finite either")
+
+
+def test_a_grid_of_angles_is_told_by_its_shape(ratchet):
+    grid, _ = np.meshgrid(np.radians([0.0, 90.0, 180.0]), [1.0, 2.0])
+    with pytest.raises(graphplan.SceneError, match=r"^driver: must be a non-empty 1-D array of driver positions "
+                                                   r"\(got an array of shape \(2, 3\)\): give np\.ravel\(driver\)"):
+        graphplan.solve(ratchet, driver=grid)
+
+
+def test_one_angle_is_one_position_as_solve_s_docstring_says(ratchet):
+    motion = graphplan.solve(ratchet, driver=0.3)
+    assert motion.point("B").r.shape == (1, 2) and motion.link(4).omega.shape == (1,)
+    assert motion.point("B").r[0] == pytest.approx(graphplan.solve(ratchet, driver=[0.0, 0.3]).point("B").r[1])
+
+
 def _largest_slider_acceleration(rod: float) -> float:
     """A worker's share of a parameter sweep: the scene's tables changed, then checked by load, as the README's
     sweep does."""

@@ -1318,17 +1318,18 @@ def test_prp_guides_turning_parallel_take_b_off_to_infinity(swing, where) -> Non
     assert "(at each end its two guides run parallel)" in str(error)
 
 
-@pytest.mark.parametrize("driver, problem", [
-    ([], "must be a non-empty 1-D array of driver positions"),
-    ([[0.0, 1.0]], "must be a non-empty 1-D array of driver positions"),
-    ([0.0, float("nan")], "driver positions must be finite numbers"),
-    ([float("inf")], "driver positions must be finite numbers"),
+@pytest.mark.parametrize("driver, message", [
+    ([], "driver: must be a non-empty 1-D array of driver positions (got an empty one)"),
+    ([[0.0, 1.0]], "driver: must be a non-empty 1-D array of driver positions (got an array of shape (1, 2)): "
+                   "give np.ravel(driver) for all its values"),
+    ([0.0, float("nan")], "driver[1]: must be a finite number, a driver position (got nan)"),
+    ([float("inf")], "driver[0]: must be a finite number, a driver position (got inf)"),
 ], ids=["empty", "two-dimensional", "nan", "inf"])
-def test_solve_rejects_bad_driver_arrays(driver: list[Any], problem: str) -> None:
+def test_solve_rejects_bad_driver_arrays(driver: list[Any], message: str) -> None:
     scene = scene_module.loads(to_toml(FOUR_BAR))
     with pytest.raises(SceneError) as caught:
         graphplan.solve(scene, driver=driver)
-    assert str(caught.value) == f"driver: {problem}"
+    assert str(caught.value) == message
 
 
 def test_motion_lookups_name_what_exists() -> None:
