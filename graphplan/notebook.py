@@ -101,7 +101,8 @@ class PositionPlans:
     def values(self) -> dict[str, float]:
         """Every quantity read off the plans as constructed, SI, keyed as the error table names them: ``VB``,
         ``aB`` (magnitudes, m/s and m/s²), ``omega3``, ``epsilon4`` (rad/s and rad/s², signed, counter-clockwise
-        positive), and the sliding pairs' relative and Coriolis terms (``VA4A3``, ``aA4A3^r``)."""
+        positive), and the sliding pairs' relative velocity (``VA4A3``) and relative acceleration along the guide
+        (``aA4A3^r``); ``aA4A3`` without ``^r`` is the whole of aA4 − aA3, the Coriolis term 2·ω4·VA4A3 in it."""
         return {reading.quantity: reading.value(self.position.plans) for reading in self.position.readings}
 
     @property

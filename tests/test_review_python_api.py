@@ -12,8 +12,13 @@ arrays (``analysis.equilibrium.balancing``) could be written through, where the 
 
 from __future__ import annotations
 
+import copy
+import math
+import multiprocessing
+import pickle
 import textwrap
 import tomllib
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +26,7 @@ import pytest
 
 import graphplan
 import graphplan.notebook
+from graphplan.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "fixtures"
@@ -48,6 +54,54 @@ def literal_blocks(doc: str) -> list[str]:
     return [block for block in blocks if block]
 
 
+def test_every_docstring_example_runs_as_printed(tmp_path, monkeypatch, capsys):
+    """The package's and the notebook module's examples, in a student's folder with the fixtures and the
+    ``rotor.toml`` that ``graphplan new rotor`` writes, which the notebook's example names."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "fixtures").symlink_to(FIXTURES)
+    assert main(["new", "rotor"]) == 0
+    capsys.readouterr()
+    owners = [graphplan, graphplan.notebook, *(getattr(graphplan, name) for name in graphplan.__all__),
+              *(getattr(graphplan.Scene, verb) for verb in ("solve", "analyse", "plan", "balance", "write"))]
+    blocks = [block for owner in owners if isinstance(getattr(owner, "__doc__", None), str)
+              for block in literal_blocks(owner.__doc__)]
+    assert len(blocks) >= 2
+    for block in blocks:
+        namespace = {"np": np, "graphplan": graphplan}
+        exec(block, namespace)  # noqa: S102 - the docstring's own example, as printed
+    assert Path("polygons.png").read_bytes()[:4] == b"\x89PNG"   # the notebook example's rotor.drawing.save
+
+
+def test_a_crank_rocker_s_rates_are_the_four_bar_s_closed_form(ratchet):
+    """ω3, ω4 from A + AB = C + CB differentiated (the loop-closure velocity equations), ε from ω differentiated
+    along the crank's turn at constant ω2; clockwise negative, as the docs say (the scene's ω2 = −17 rad/s)."""
+    phi = np.radians(np.arange(0.0, 360.0, 0.05))
+    motion = graphplan.solve(ratchet, driver=phi)
+    crank, coupler, rocker, c = 0.175, 0.55, 0.325, 0.55j
+    omega2 = -17.0
+    a = crank * np.exp(1j * phi)
+    b = motion.point("B").r @ [1, 1j]
+    assert np.abs(b - a) == pytest.approx(coupler, abs=1e-12)
+    assert np.abs(b - c) == pytest.approx(rocker, abs=1e-12)
+    theta3, theta4 = np.angle(b - a), np.angle(b - c)
+    # crank·ω2·i·e^{iφ} + AB·ω3·i·e^{iθ3} = CB·ω4·i·e^{iθ4}, solved by Cramer's rule.
+    omega3 = crank * omega2 * np.sin(phi - theta4) / (coupler * np.sin(theta4 - theta3))
+    omega4 = crank * omega2 * np.sin(phi - theta3) / (rocker * np.sin(theta4 - theta3))
+    links = {n: motion.link(n) for n in (2, 3, 4)}
+    assert np.allclose(links[2].omega, omega2) and np.allclose(links[2].epsilon, 0.0)
+    assert np.allclose(links[3].omega, omega3, rtol=0, atol=1e-12)
+    assert np.allclose(links[4].omega, omega4, rtol=0, atol=1e-12)
+    assert np.allclose(np.exp(1j * links[3].angle), np.exp(1j * theta3), atol=1e-12)
+    assert np.all((links[4].angle > -np.pi) & (links[4].angle <= np.pi))
+    step = np.radians(0.05) / omega2   # seconds per sample: dφ/dt = ω2
+    for number, omega in ((3, omega3), (4, omega4)):
+        by_difference = np.gradient(omega, step)
+        assert np.allclose(links[number].epsilon[1:-1], by_difference[1:-1], rtol=0,
+                           atol=1e-5 * np.abs(by_difference).max())
+    vb = motion.point("B").v @ [1, 1j]
+    assert np.allclose(vb, 1j * omega4 * (b - c), rtol=0, atol=1e-12)   # v = ω × CB, m/s
+
+
 def test_a_slider_crank_s_slider_velocity_is_its_position_differentiated():
     """x_B = r·cos φ + √(l² − (e − r·sin φ)²) along the saw's guide, 80 mm above O; v = ω·dx/dφ, a = ω²·d²x/dφ²;
     the slide's own s, velocity and acceleration along its guide alike, each ``(N,)`` as the docs say."""
@@ -71,6 +125,61 @@ def test_a_slider_crank_s_slider_velocity_is_its_position_differentiated():
         assert not array.flags.writeable, name
     assert np.allclose(slide.u, 1.0) and np.allclose(slide.s, x, rtol=0, atol=1e-12)
     assert np.allclose(slide.velocity, omega * dx, rtol=0, atol=1e-12)
+
+
+def test_a_slotted_lever_s_slide_and_coriolis_term_are_the_textbook_s():
+    """The block on the crank pin A slides in the lever's slot through C: s = |CA|, ṡ = vA·(CA/|CA|), and
+    aA − aA4 = s̈·u + 2·ω4·ṡ·(i·u), the Coriolis term as the slide's docstring writes it."""
+    scene = graphplan.load(SLOTTED)
+    phi = np.radians(np.arange(0.0, 360.0, 1.0))
+    motion = graphplan.solve(scene, driver=phi)
+    a = 0.30j + 0.12 * np.exp(1j * phi)
+    va, aa = 8.0j * (a - 0.30j), -64.0 * (a - 0.30j)
+    along = a / np.abs(a)
+    slide = motion.slide(3)
+    assert slide.guide == 4
+    assert np.allclose(slide.s, np.abs(a), rtol=0, atol=1e-12)
+    assert np.allclose(slide.u, along, rtol=0, atol=1e-12)
+    assert np.allclose(slide.velocity, np.real(va * np.conj(along)), rtol=0, atol=1e-12)
+    assert np.allclose(motion.link(4).omega, np.imag(va * np.conj(a)) / np.abs(a) ** 2, rtol=0, atol=1e-12)
+    a4 = motion.point("A4").a @ [1, 1j]
+    coriolis = 2j * motion.link(4).omega * slide.velocity * along
+    assert np.allclose(aa - a4, slide.acceleration * along + coriolis, rtol=0, atol=1e-12)
+
+
+def test_a_plan_s_sliding_values_are_what_the_values_docstring_says_they_are():
+    """``VA4A3`` the slide's relative velocity, ``aA4A3^r`` its relative acceleration along the slot, ``aA4A3`` the
+    whole of aA4 − aA3 with the Coriolis term in it; the docstring promised "Coriolis terms" among the values,
+    which hold none apart."""
+    scene = graphplan.load(SLOTTED)
+    plans = scene.plan(4)
+    doc = type(plans).values.__doc__
+    named = {"VA4A3", "aA4A3^r", "aA4A3"}
+    assert all(f"``{key}``" in doc for key in named) and named <= set(plans.values)
+    motion = graphplan.solve(scene)
+    index = 4 - scene.positions.number_from
+    slide = motion.slide(3)
+    whole = (motion.point("A").a - motion.point("A4").a)[index]
+    assert plans.values["VA4A3"] == pytest.approx(abs(slide.velocity[index]), rel=1e-9)
+    assert plans.values["aA4A3^r"] == pytest.approx(abs(slide.acceleration[index]), rel=1e-9)
+    assert plans.values["aA4A3"] == pytest.approx(math.hypot(*whole), rel=1e-9)
+    coriolis = 2 * motion.link(4).omega[index] * slide.velocity[index]
+    assert plans.values["aA4A3"] == pytest.approx(math.hypot(slide.acceleration[index], coriolis), rel=1e-9)
+
+
+def test_the_balancing_moment_is_counter_clockwise_positive_by_the_power_balance():
+    """Without masses, the crank's Mb and the rocker's resisting 1500 N·m balance in power: Mb·ω2 = 1500·|ω4|;
+    with ω2 = −17 rad/s (clockwise) Mb comes out negative, clockwise, as "ccw positive" says it should."""
+    tables = tomllib.loads(RATCHET.read_text(encoding="utf-8"))
+    for massive in ("links", "measured", "points"):
+        del tables[massive]
+    del tables["loads"][0]["during"]
+    tables["positions"]["plans"] = []
+    analysis = graphplan.load(tables).analyse()
+    omega4 = analysis.motion.link(4).omega
+    balancing = analysis.equilibrium.balancing
+    assert np.allclose(balancing, 1500.0 * np.abs(omega4) / -17.0, rtol=1e-9, atol=1e-9)
+    assert balancing[np.abs(omega4) > 0.1].max() < 0
 
 
 def test_the_equilibrium_s_arrays_cannot_be_written_through(ratchet):
@@ -131,3 +240,20 @@ def _largest_slider_acceleration(rod: float) -> float:
     tables = tomllib.loads((FIXTURES / "engine_slider_crank.toml").read_text(encoding="utf-8"))
     tables["groups"][0]["length"] = rod
     return float(np.abs(graphplan.load(tables).solve(np.radians(np.arange(0.0, 360.0, 1.0))).point("B").a).max())
+
+
+def test_a_parameter_sweep_runs_in_a_process_pool_and_scenes_travel_to_it(ratchet):
+    """README: scenes and motions pickle (to a process pool's workers); the pool's answers are the ones the
+    notebook's own process gives, and a scene sent there and back solves as it did."""
+    rods = [0.2, 0.3, 0.4]
+    with ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("fork")) as pool:
+        swept = list(pool.map(_largest_slider_acceleration, rods))
+        travelled = pool.submit(copy.copy, ratchet).result()
+    assert swept == [_largest_slider_acceleration(rod) for rod in rods]
+    # a shorter rod swings the slider harder: ω²·r·(1 + r/l) at the dead centre grows as l shrinks
+    assert swept[0] > swept[1] > swept[2]
+    assert travelled == ratchet
+    motion = graphplan.solve(travelled, driver=[0.1, 0.2])
+    again = pickle.loads(pickle.dumps(motion))
+    assert np.array_equal(again.link(3).epsilon, graphplan.solve(ratchet, driver=[0.1, 0.2]).link(3).epsilon)
+    assert math.isclose(float(again.driver[1]), 0.2)
