@@ -371,8 +371,6 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
         others = f"; {len(bad) - 1} more after it are not finite either" if len(bad) > 1 else ""
         raise SceneError(f"driver[{bad[0]}]", "must be a finite number, a driver position", float(values[bad[0]]),
                          hint=others)
-    if reference is None:
-        reference = reference_at(mechanism, float(values[0]))
     driver = mechanism.driver
 
     def describe(index: int) -> str:
@@ -381,6 +379,14 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
             return f"position {numbers[index]} ({text})"
         # Which of the caller's values: a crank's is told within the turn (−1e-9 rad as φ = 360°).
         return f"{text} (driver[{index}])" if indexed and len(values) > 1 else text
+
+    if reference is None:
+        try:
+            reference = reference_at(mechanism, float(values[0]))
+        except AssemblyError as error:  # the first value, where the branches are taken, named as the others are
+            raise AssemblyError(error.joint, describe(0), error.group, error.reason) from None
+        except SingularPositionError as error:
+            raise SingularPositionError(describe(0), error.group, error.reason) from None
 
     solver = _solve_continued if any(group.continuation for group in mechanism.groups) else _solve
     if not tolerant:

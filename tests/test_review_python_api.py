@@ -103,7 +103,7 @@ def test_a_crank_rocker_s_rates_are_the_four_bar_s_closed_form(ratchet):
 
 
 def test_a_slider_crank_s_slider_velocity_is_its_position_differentiated():
-    """x_B = r·cos φ + √(l² − (e − r·sin φ)²) along the saw's guide, 80 mm above O; v = ω·dx/dφ, a = ω²·d²x/dφ²;
+    """x_B = r·cos φ + √(l² − (e − r·sin φ)²) along the saw's guide, 80 mm above O; v = ω·dx/dφ, a = dv/dt;
     the slide's own s, velocity and acceleration along its guide alike, each ``(N,)`` as the docs say."""
     scene = graphplan.load(HACKSAW)
     phi = np.radians(np.arange(0.0, 360.0, 0.5))
@@ -257,3 +257,22 @@ def test_a_parameter_sweep_runs_in_a_process_pool_and_scenes_travel_to_it(ratche
     again = pickle.loads(pickle.dumps(motion))
     assert np.array_equal(again.link(3).epsilon, graphplan.solve(ratchet, driver=[0.1, 0.2]).link(3).epsilon)
     assert math.isclose(float(again.driver[1]), 0.2)
+
+
+def test_the_first_value_is_named_by_its_index_as_the_others_are():
+    """The branches are taken at the first value: a value there the mechanism cannot reach, or a toggle, was told
+    as «φ = 360°» alone where the same value second was «φ = 360° (driver[1])»."""
+    swing = graphplan.load(FIXTURES / "double_rocker_swing.toml")
+    with pytest.raises(graphplan.AssemblyError, match=r"^B cannot be assembled at φ = 360° \(driver\[0\]\) in "
+                                                      r"group II\(3,4\): .*link 2 reaches only from 13\.10°"):
+        graphplan.solve(swing, driver=[-1e-9, 0.5])
+    # A parallelogram four-bar: at φ = 180° the coupler and rocker lie along the frame, a toggle.
+    tables = tomllib.loads(RATCHET.read_text(encoding="utf-8"))
+    tables["frame"]["points"]["C"] = [1.0, 0.0]
+    tables["driver"]["length"], tables["groups"][0]["lengths"] = 0.5, [1.0, 0.5]
+    for key in ("points", "links", "loads", "measured", "drawing"):
+        tables.pop(key)
+    tables["positions"] = {"count": 12}
+    parallelogram = graphplan.load(tables)
+    with pytest.raises(graphplan.SingularPositionError, match=r"^singular position at φ = 180° \(driver\[0\]\) "):
+        graphplan.solve(parallelogram, driver=[math.pi, 0.5])
