@@ -136,6 +136,13 @@ class MovedLoad:
     work: float
 
 
+def _read_only(values):
+    """``values`` made read-only where it is an array (a model's field may be a number where it is constant)."""
+    if isinstance(values, np.ndarray):
+        values.flags.writeable = False
+    return values
+
+
 @dataclass(frozen=True)
 class EquivalentModel:
     """The equivalent link of a machine over its cycle (a crank) or its travel (a slider driver).
@@ -203,6 +210,14 @@ class EquivalentModel:
     resisting_loads: tuple[str, ...] = ()
     moved: tuple[MovedLoad, ...] = ()
 
+    def __post_init__(self) -> None:
+        # Handed out as they are (scene.machine_dynamics().model.inertia): Je made its fluctuation in place
+        # (je -= je.mean()) changed the flywheel and the motion worked out from the model after.
+        for name in ("driver", "coordinate", "inertia", "inertia_slope", "driving", "resisting", "breaks"):
+            _read_only(getattr(self, name))
+        for share in self.link_inertia.values():
+            _read_only(share)
+
     def __repr__(self) -> str:
         # The dataclass's own repr printed every array: 28 000 characters on a notebook's line.
         unit = "kg·m²" if self.turning else "kg"
@@ -253,12 +268,12 @@ class EquivalentModel:
     @cached_property
     def driving_work(self) -> np.ndarray:
         """Ad(ψ) = ∫ Md dψ from the first sample (J)."""
-        return self.integral(self.driving)
+        return _read_only(self.integral(self.driving))
 
     @cached_property
     def resisting_work(self) -> np.ndarray:
         """Ar(ψ) = −∫ Mr dψ from the first sample (J): positive when the resistances take work."""
-        return -self.integral(self.resisting)
+        return _read_only(-self.integral(self.resisting))
 
     @property
     def energy(self) -> np.ndarray:

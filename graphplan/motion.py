@@ -191,7 +191,8 @@ class Motion:
     def slide(self, slider: int) -> SlideMotion:
         """The sliding pair in which link ``slider`` slides: its guide's unit direction ``u`` (complex, x + iy) and the
         slider's coordinate ``s`` along it (m), its relative ``velocity`` and ``acceleration`` along ``u`` (m/s,
-        m/s²), each an ``(N,)`` array, read-only.  A link that slides in no pair raises :class:`~graphplan.errors.UnknownNameError`."""
+        m/s²), each an ``(N,)`` array, read-only.  A link that slides in no pair raises
+        :class:`~graphplan.errors.UnknownNameError`."""
         if isinstance(slider, bool) or not isinstance(slider, int | np.integer):
             # slide('6') compared a string with the links' numbers and told of a link 6 that slides in no pair.
             raise TypeError(f"a sliding pair is named by its slider's number, an integer: slide(6), "

@@ -276,3 +276,17 @@ def test_the_first_value_is_named_by_its_index_as_the_others_are():
     parallelogram = graphplan.load(tables)
     with pytest.raises(graphplan.SingularPositionError, match=r"^singular position at φ = 180° \(driver\[0\]\) "):
         graphplan.solve(parallelogram, driver=[math.pi, 0.5])
+
+
+def test_the_equivalent_model_s_arrays_cannot_be_written_through():
+    """``je = model.inertia; je -= je.mean()`` (a student plotting Je's fluctuation) went through into the model,
+    and the flywheel worked out from it after was another."""
+    dynamics = graphplan.load(Path(__file__).parent / "scenes" / "compressor_indicator_diagram.toml").machine_dynamics()
+    model = dynamics.model
+    with pytest.raises(ValueError, match="read-only"):
+        je = model.inertia
+        je -= je.mean()
+    for array in (model.driver, model.coordinate, model.inertia_slope, model.driving, model.resisting,
+                  model.driving_work, model.resisting_work, *model.link_inertia.values()):
+        assert not array.flags.writeable
+    assert dynamics.flywheel.inertia > 0
