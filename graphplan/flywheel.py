@@ -234,6 +234,12 @@ class Flywheel:
     moved: float | None = None
     required: float = 0.0
 
+    def __post_init__(self) -> None:
+        # Handed out as it is (scene.machine_dynamics().flywheel.omega): written in place, it changed the speeds
+        # the results and the note read after.
+        if isinstance(self.omega, np.ndarray):
+            self.omega.flags.writeable = False
+
     def __repr__(self) -> str:
         # The dataclass's own repr printed the speed at every sample: 5 700 characters on a notebook's line.
         return (f"<Flywheel for δ = {self.delta:.4g} at ωm = {self.omega_mean:.4g} rad/s: JF = {self.inertia:.5g} "

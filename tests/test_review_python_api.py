@@ -290,3 +290,17 @@ def test_the_equivalent_model_s_arrays_cannot_be_written_through():
                   model.driving_work, model.resisting_work, *model.link_inertia.values()):
         assert not array.flags.writeable
     assert dynamics.flywheel.inertia > 0
+    with pytest.raises(ValueError, match="read-only"):
+        dynamics.flywheel.omega[0] = 0.0
+
+
+def test_the_machine_s_motion_cannot_be_written_through(tmp_path, capsys):
+    """``w = dynamics.motion.omega; w *= 30 / np.pi`` (ω in rpm for a plot) went through into the motion, whose
+    results, note and motion.svg then read rpm as rad/s."""
+    assert main(["new", "shaper", "--out", str(tmp_path / "shaper.toml")]) == 0
+    capsys.readouterr()
+    motion = graphplan.load(tmp_path / "shaper.toml").machine_dynamics().motion
+    with pytest.raises(ValueError, match="read-only"):
+        w = motion.omega
+        w *= 30 / np.pi
+    assert not (motion.t.flags.writeable or motion.phi.flags.writeable or motion.motor_torque.flags.writeable)

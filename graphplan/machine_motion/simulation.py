@@ -85,6 +85,13 @@ class MachineMotion:
     clutch: Clutch | None = None
     stall: Stall | None = None
 
+    def __post_init__(self) -> None:
+        # Handed out as they are (scene.machine_dynamics().motion.omega): ω turned into rpm in place changed what
+        # the results, the note and motion.svg read of the motion after.
+        for array in (self.t, self.phi, self.omega, self.driving_omega, self.motor_torque):
+            if isinstance(array, np.ndarray):
+                array.flags.writeable = False
+
     def __repr__(self) -> str:
         # The dataclass's own repr printed every step: 34 000 characters on a notebook's line.
         ending = (f", stalled at {self.stalled_at:.4g} s" if self.stalled_at is not None
