@@ -1320,8 +1320,8 @@ def test_prp_guides_turning_parallel_take_b_off_to_infinity(swing, where) -> Non
 
 @pytest.mark.parametrize("driver, message", [
     ([], "driver: must be a non-empty 1-D array of driver positions (got an empty one)"),
-    ([[0.0, 1.0]], "driver: must be a non-empty 1-D array of driver positions (got an array of shape (1, 2)): "
-                   "give np.ravel(driver) for all its values"),
+    ([[0.0, 1.0]], ("driver: must be a non-empty 1-D array of driver positions (got an array of shape (1, 2)): "
+                    "give np.ravel(driver) for all its values")),
     ([0.0, float("nan")], "driver[1]: must be a finite number, a driver position (got nan)"),
     ([float("inf")], "driver[0]: must be a finite number, a driver position (got inf)"),
 ], ids=["empty", "two-dimensional", "nan", "inf"])
