@@ -102,7 +102,8 @@ class Shaper:
     """The shaper's equivalent model by hand, over the travel ψ the crank turns clockwise from the working stroke's
     start (its ram's left extreme, where the crank is square to the lever)."""
 
-    def __init__(self):
+    def __init__(self, bodies=SHAPER_BODIES):
+        self.bodies = bodies
         ram_speed = lambda phi: float(_derivative(_shaper_positions, np.array([phi]))["E"][0][0])
         grid = np.radians(np.arange(0.0, 360.5, 0.5))
         speeds = _derivative(_shaper_positions, grid)["E"][0]
@@ -132,12 +133,12 @@ class Shaper:
     def inertia(self, psi):
         rates = self.ratios(psi)
         return sum(mass * (rates[centre] ** 2).sum(0) + (inertia * rates[angle] ** 2 if angle else 0.0)
-                   for centre, mass, angle, inertia in SHAPER_BODIES)
+                   for centre, mass, angle, inertia in self.bodies) + 0.0 * psi
 
     def moment(self, psi, cutting: bool):
         """The loads' and the weights' reduced moment: Σ F·dr/dψ, the cutting force (−2000, 0) N at E."""
         rates = self.ratios(psi)
-        weights = sum(-mass * G * rates[centre][1] for centre, mass, _, _ in SHAPER_BODIES)
+        weights = sum(-mass * G * rates[centre][1] for centre, mass, _, _ in self.bodies)
         return weights + (-2000.0 * rates["E"][0] if cutting else 0.0)
 
     def cutting_at(self, psi: float) -> bool:
@@ -246,7 +247,7 @@ def test_the_shapers_note_writes_my_numbers_and_its_arithmetic_holds(shaper):
     assert driving and _written_as(driving[1], model.driving)
     energy = re.search(r"ranges from " + NUMBER + " J to " + NUMBER + r" J: the largest surplus work ΔWmax = "
                        + NUMBER + " J", text)
-    psi, _, curve = shaper["curve"]
+    curve = shaper["curve"][2]
     assert energy and _written_as(energy[1], float(curve.min())) and _written_as(energy[2], float(curve.max()))
     assert _written_as(energy[3], witt.delta_w_max)
     approximate = re.search(r"JF = ΔWmax/\(ωm²·δ\) − Je,mean = " + NUMBER + r"/\(" + NUMBER + r"²·" + NUMBER
@@ -315,3 +316,242 @@ def test_je_read_off_the_velocity_plans_agrees_with_mine_within_the_plans_drafti
         assert _written_as(by_plan, exact)
         assert abs(_number(by_plan) - drafted) <= reach + 1e-4
     assert _number(rows[0][2]) == pytest.approx(0.0354)
+
+
+def _paths(group: ElementTree.Element, colour: str | None = None) -> list[np.ndarray]:
+    """The group's open paths (no fill) as arrays of (x, y) in the SVG's mm, y down."""
+    found = []
+    for path in group.iter(f"{SVG}path"):
+        if path.get("fill") != "none" or (colour and path.get("stroke") != colour):
+            continue
+        found.append(np.array([[float(v) for v in point.split(",")]
+                               for point in re.findall(r"[ML]([-\d.]+,[-\d.]+)", path.get("d"))]))
+    return found
+
+
+def _texts(group: ElementTree.Element) -> list[str]:
+    return ["".join(text.itertext()) for text in group.iter(f"{SVG}text")]
+
+
+def test_the_energy_mass_diagrams_tangents_touch_my_curve_at_my_slopes_and_cut_off_my_ab(shaper):
+    """Read back off dynamics.svg: the scales its line states, the origin where its Je axis starts; each tangent's
+    slope on paper is tan ψ = (μJ/μT)·ω²/2, its ψ written beside it, it passes through my intercept on the ΔT axis
+    (the red dot a or b there), no point of the drawn curve lies beyond it and the curve comes to it; the curve is
+    my ΔT(Je); ab is written in mm and the axes carry their quantities with units."""
+    drawing = ElementTree.parse(shaper["out"] / "dynamics.svg").getroot()
+    group = next(g for g in drawing.iter(f"{SVG}g") if g.get("id") == "energy-mass")
+    texts = _texts(group)
+    scales = next(text for text in texts if text.startswith("μJ"))
+    found = re.fullmatch(r"μJ = " + NUMBER + r" kg·m²/mm, μT = " + NUMBER + " J/mm", scales)
+    assert found, scales
+    inertia_scale, energy_scale = _number(found[1]), _number(found[2])
+    assert "ΔT, J" in texts and "Je, kg·m²" in texts
+    black = _paths(group, "black")
+    je_axis = max((p for p in black if len(p) == 2 and abs(p[0, 1] - p[1, 1]) < 1e-9), key=lambda p: p[1, 0] - p[0, 0])
+    x0, y0 = je_axis[0]
+    curve = max(black, key=len)
+    drawn_je, drawn_energy = (curve[:, 0] - x0) * inertia_scale, (y0 - curve[:, 1]) * energy_scale
+    witt = shaper["witt"]
+    _, inertia, energy = shaper["curve"]
+    # The drawn curve is mine: its extremes within a hundredth of a millimetre (the SVG's digits).
+    assert drawn_energy.max() == pytest.approx(energy.max(), abs=0.01 * energy_scale)
+    assert drawn_energy.min() == pytest.approx(energy.min(), abs=0.01 * energy_scale)
+    assert drawn_je.max() == pytest.approx(inertia.max(), abs=0.01 * inertia_scale)
+    tangents = [p for p in _paths(group, TANGENT_COLOUR) if len(p) == 2]
+    assert len(tangents) == 2
+    upper, lower = sorted(tangents, key=lambda p: p[0, 1])
+    dots = [(float(c.get("cx")), float(c.get("cy"))) for c in group.iter(f"{SVG}circle")
+            if c.get("fill") == TANGENT_COLOUR]
+    for line, omega, intercept, above, name in ((upper, witt.fastest, witt.upper, True, "ψmax"),
+                                               (lower, witt.slowest, witt.lower, False, "ψmin")):
+        (xa, ya), (xb, yb) = line
+        slope = -(yb - ya) / (xb - xa)
+        tangent = inertia_scale / energy_scale * omega ** 2 / 2
+        assert slope == pytest.approx(tangent, rel=2e-3)
+        label = next(text for text in texts if text.startswith(name))
+        assert _written_as(re.fullmatch(name + " = " + NUMBER + "°", label)[1], math.degrees(math.atan(tangent)))
+        at_axis = ya + (x0 - xa) * (yb - ya) / (xb - xa)
+        assert (y0 - at_axis) * energy_scale == pytest.approx(intercept, abs=0.01 * energy_scale)
+        assert any(math.hypot(x - x0, y - at_axis) < 0.01 for x, y in dots), f"no dot {name[1:]} at the intercept"
+        # Signed distance of each drawn point below the line (y down: positive is under it on paper).
+        under = (curve[:, 1] - (ya + (curve[:, 0] - xa) * (yb - ya) / (xb - xa))) / math.hypot(1.0, slope)
+        if not above:
+            under = -under
+        assert under.min() > -0.01 and under.min() < 0.01, f"{name}'s tangent misses or cuts the curve"
+    ab = next(text for text in texts if text.startswith("ab = "))
+    assert _written_as(re.fullmatch("ab = " + NUMBER + " mm", ab)[1], (witt.upper - witt.lower) / energy_scale)
+
+
+# --- a translating equivalent link: the lever driven by a cylinder (fixtures/slider_driven.toml) -------------------
+
+LEVER_PIVOT = np.array([0.15, 0.25])
+LEVER_BODIES = (("A", 6.0, None, 0.0), ("S3", 1.4, "th3", 0.006), ("S4", 4.0, "th4", 0.02))
+
+
+def _lever_positions(s: np.ndarray) -> dict:
+    """The rod's end A at (s, 0); B where the circles of AB = 0.225 m about A and CB = 0.15 m about C cross, right of
+    the directed line A→C; S3 halfway along AB, S4 0.06 m from C toward B."""
+    a = np.array([s, np.zeros_like(s)])
+    towards = LEVER_PIVOT[:, None] - a
+    distance = np.hypot(*towards)
+    unit = towards / distance
+    along = (0.225 ** 2 - 0.15 ** 2 + distance ** 2) / (2 * distance)
+    across = np.sqrt(0.225 ** 2 - along ** 2)
+    b = a + along * unit - across * np.array([-unit[1], unit[0]])
+    return {"A": a, "S3": (a + b) / 2, "S4": LEVER_PIVOT[:, None] + 0.4 * (b - LEVER_PIVOT[:, None]),
+            "th3": np.arctan2(b[1] - a[1], b[0] - a[0]), "th4": np.arctan2(b[1] - 0.25, b[0] - 0.15)}
+
+
+def _lever_model(s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """me(s) and the reduced force of the weights and the 150 N·m resisting the lever, Fr = Σ m·g·(−dy/ds) − 150·θ4′."""
+    rates = _derivative(_lever_positions, np.asarray(s, dtype=float), h=1e-6)
+    mass = sum(m * (rates[centre] ** 2).sum(0) + (inertia * rates[angle] ** 2 if angle else 0.0)
+               for centre, m, angle, inertia in LEVER_BODIES)
+    assert np.all(rates["th4"] > 0)   # the lever turns ccw all the travel: its working stroke, the moment on
+    force = sum(-m * G * rates[centre][1] for centre, m, _, _ in LEVER_BODIES) - 150.0 * rates["th4"]
+    return mass, force
+
+
+@pytest.fixture(scope="module")
+def lever(tmp_path_factory):
+    text = (ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8") + "\n[dynamics]\n"
+    results, note, out = _run(tmp_path_factory.mktemp("lever"), text)
+    return {"dynamics": results["dynamics"], "note": note, "out": out}
+
+
+def test_the_levers_reduced_mass_and_force_are_my_own_over_the_travel(lever):
+    dynamics = lever["dynamics"]
+    assert dynamics["equivalent_link"] == "translating"
+    s = np.asarray(dynamics["displacement"])
+    assert s[0] == 0.0 and s[-1] == pytest.approx(0.2)
+    mass, force = _lever_model(s)
+    assert np.asarray(dynamics["reduced_inertia"]) == pytest.approx(mass, rel=1e-7)
+    assert np.asarray(dynamics["resisting_moment"]) == pytest.approx(force, rel=1e-6)
+    # The cylinder's push taken constant does the work the resistances take over the travel: Fd = Ar/H.
+    work = -_simpson(lambda x: _lever_model(x)[1], 0.0, 0.2)
+    assert np.asarray(dynamics["driving_moment"]) == pytest.approx(work / 0.2, rel=1e-8)
+    energy = np.asarray(dynamics["kinetic_energy_change"])
+    assert energy[-1] == pytest.approx(0.0, abs=1e-9 * work)
+    assert float(np.ptp(energy)) == pytest.approx(
+        -min(_simpson(lambda x: _lever_model(x)[1] + work / 0.2, 0.0, end) for end in np.linspace(0, 0.2, 2001)[1:]),
+        rel=1e-5)
+
+
+def test_the_levers_note_gives_my_reduced_mass_and_force_at_its_plan_positions(lever):
+    text = _section(lever["note"], "Dynamics of the machine")
+    assert "me = Σ[m·(vS/v2)² + JS·(ω/v2)²]" in text and "Fe = Σ[F·v·cos α ± M·ω]/v2" in text
+    rows = re.findall(r"^\| (\d+) \| " + NUMBER + r" \| " + NUMBER + r" \| " + NUMBER + r" \| " + NUMBER + r" \| "
+                      + NUMBER + r" \| " + NUMBER + r" \|", text, flags=re.MULTILINE)
+    assert [int(row[0]) for row in rows] == [3, 9]
+    for number, s, by_plan, analytic, _, force_by_plan, force in rows:
+        travel = (int(number) - 1) * 0.2 / 11   # twelve positions over the travel, both ends among them
+        assert _written_as(s, travel)
+        mass, reduced = (float(value[0]) for value in _lever_model(np.array([travel])))
+        assert _written_as(analytic, mass) and _written_as(by_plan, mass)
+        assert _written_as(force, reduced) and _written_as(force_by_plan, reduced)
+
+
+def test_the_reduced_mass_read_off_each_velocity_plan_is_ringed_on_me_of_s_as_je_is_on_je_of_phi(lever):
+    """The shaper's Je(φ) rings Je read off each velocity plan on its curve, and the note tables both; the lever's
+    me(s) drew its curve alone, so that the sheet showed nothing of the plans' reduction the note tabulates beside
+    it.  Each plan position's me is ringed at its s on the curve, with the legend."""
+    drawing = ElementTree.parse(lever["out"] / "dynamics.svg").getroot()
+    group = next(g for g in drawing.iter(f"{SVG}g") if g.get("id") == "inertia")
+    texts = _texts(group)
+    assert "me read off the velocity plans" in texts
+    scales = next(text for text in texts if text.startswith("μm"))
+    found = re.fullmatch(r"μm = " + NUMBER + r" kg/mm, μs = " + NUMBER + " m/mm", scales)
+    assert found, scales
+    mass_scale, travel_scale = _number(found[1]), _number(found[2])
+    curve = max(_paths(group, "black"), key=len)
+    x0 = float(curve[0, 0])
+    # The ordinate starts at a round mass under the curve: the curve's first point stands at me(0) over it.
+    y_base = float(curve[0, 1]) + float(_lever_model(np.array([0.0]))[0][0]) / mass_scale
+    rings = [(float(c.get("cx")), float(c.get("cy"))) for c in group.iter(f"{SVG}circle") if c.get("fill") == "none"]
+    on_curve = []
+    for number in (3, 9):
+        travel = (number - 1) * 0.2 / 11
+        mass = float(_lever_model(np.array([travel]))[0][0])
+        x = x0 + travel / travel_scale
+        y_curve = float(np.interp(x, curve[:, 0], curve[:, 1]))
+        assert y_base - mass / mass_scale == pytest.approx(y_curve, abs=0.02)
+        on_curve.append(any(math.hypot(cx - x, cy - y_curve) < 0.02 for cx, cy in rings))
+    assert on_curve == [True, True]
+
+
+def test_with_the_crank_alone_heavy_je_is_constant_and_every_method_gives_my_one_flywheel(tmp_path, shaper):
+    """The shaper with the masses of links 3 to 6 left out: Je = J2 + m2·lOS2² all the cycle, so that the
+    energy–mass curve is a vertical segment, its tangents cut off ab = ΔWmax exactly, and the approximate,
+    Mertsalov's and Wittenbauer's flywheels are one, ΔWmax/(ωm²·δ) − Je; the sheet draws no energy–mass diagram
+    and says Je is constant.  With the shaper's own masses (variable Je) the three differ, as they should."""
+    text = re.sub(r"\[links\.3\].*?(?=\n\[\[loads\]\])", "", _starter("shaper", tmp_path), flags=re.DOTALL)
+    assert "[links.2]" in text and "[links.3]" not in text and "[links.6]" not in text
+    results, note, out = _run(tmp_path / "run", text)
+    dynamics = results["dynamics"]
+    model = Shaper(SHAPER_BODIES[:1])
+    psi, inertia, energy = model.curve()
+    witt = Wittenbauer(psi, inertia, energy, 2 * math.pi, 0.05)
+    assert np.asarray(dynamics["reduced_inertia"]) == pytest.approx(0.015 + 6.0 * 0.03 ** 2, rel=1e-9)
+    assert dynamics["delta_w_max"] == pytest.approx(witt.delta_w_max, rel=1e-8)
+    flywheel = witt.delta_w_max / ((2 * math.pi) ** 2 * 0.05) - 0.0204
+    assert witt.flywheel == pytest.approx(flywheel, rel=1e-12)
+    for key in ("flywheel_inertia", "flywheel_inertia_approximate", "flywheel_inertia_mertsalov"):
+        assert dynamics[key] == pytest.approx(flywheel, rel=1e-8), key
+    assert "JF = ΔWmax/(ωm²·δ) − Je = " in note and ", exactly (the energy–mass diagram" in note
+    drawing = ElementTree.parse(out / "dynamics.svg").getroot()
+    groups = {g.get("id") for g in drawing.iter(f"{SVG}g")}
+    assert "energy-mass" not in groups and "energy" in groups
+    assert any("(Je constant)" in text for text in _texts(drawing))
+    # The variable Je of the whole shaper: the energy–mass flywheel is neither of the other two.
+    variable = shaper["dynamics"]
+    assert abs(variable["flywheel_inertia"] - variable["flywheel_inertia_approximate"]) > 0.1
+    assert abs(variable["flywheel_inertia"] - variable["flywheel_inertia_mertsalov"]) > 0.1
+
+
+# --- the flywheel of `graphplan new flywheel`: a punching press known by its power over a turn -----------------------
+
+@pytest.mark.parametrize("inertia, shaft_rpm", [(0.0, 1440.0), (2.5, 750.0)])
+def test_the_press_flywheel_is_my_own_from_its_power_steps_and_moves_to_its_shaft(tmp_path, inertia, shaft_rpm):
+    """367.7 W for the first 120° of the turn and 3677 W for the rest, at 100 rpm: Mr = P/ωm, Md their mean, ΔT
+    rising by (Md − Mr1)·2π/3 to 120° and back, ΔWmax that; the press's own Je constant, so that J_F =
+    ΔWmax/(ωm²·δ) − Je exactly, ωmax at 120° and ωmin at 0°; on the motor's shaft J_F·(n/n′)².  The starter as
+    written (Je = 0, the flywheel on the 1440 rpm shaft), and with Je = 2.5 kg·m² and the flywheel on a 750 rpm
+    countershaft."""
+    text = _starter("flywheel", tmp_path)
+    text = re.sub(r"^inertia = 0\.0 ", f"inertia = {inertia} ", text, flags=re.MULTILINE)
+    text = re.sub(r"^flywheel_shaft_rpm = 1440 ", f"flywheel_shaft_rpm = {shaft_rpm} ", text, flags=re.MULTILINE)
+    assert f"inertia = {inertia}" in text and f"flywheel_shaft_rpm = {shaft_rpm}" in text
+    results, note, out = _run(tmp_path / "run", text)
+    dynamics = results["dynamics"]
+    omega_mean = 100 * math.pi / 30
+    idle, punching = 367.7 / omega_mean, 3677.0 / omega_mean
+    driving = (idle * 120 + punching * 240) / 360
+    delta_w_max = (driving - idle) * 2 * math.pi / 3
+    flywheel = delta_w_max / (omega_mean ** 2 * 0.05) - inertia
+    assert dynamics["driving_moment"][0] == pytest.approx(driving, rel=1e-9)
+    assert dynamics["delta_w_max"] == pytest.approx(delta_w_max, rel=1e-9)
+    assert dynamics["flywheel_inertia"] == pytest.approx(flywheel, rel=1e-9)
+    assert dynamics["flywheel_inertia_moved"] == pytest.approx(flywheel * (100 / shaft_rpm) ** 2, rel=1e-9)
+    assert dynamics["omega_max"] == pytest.approx(omega_mean * 1.025, rel=1e-9)
+    assert dynamics["omega_min"] == pytest.approx(omega_mean * 0.975, rel=1e-9)
+    assert dynamics["omega_max_angle_deg"] == pytest.approx(120.0)
+    assert dynamics["omega_min_angle_deg"] == pytest.approx(0.0)
+    # ω at every sample from the energy: ½·(Je + J_F)·ω² = ½·(Je + J_F)·ωmin² + ΔT, ΔT from 0 at φ = 0.
+    angle = np.radians(np.asarray(dynamics["angle_deg"]))
+    energy = np.where(angle <= 2 * math.pi / 3, (driving - idle) * angle,
+                      delta_w_max - (punching - driving) * (angle - 2 * math.pi / 3))
+    assert np.asarray(dynamics["kinetic_energy_change"]) == pytest.approx(energy, abs=1e-9 * delta_w_max)
+    omega = np.sqrt((omega_mean * 0.975) ** 2 + 2 * energy / (inertia + flywheel))
+    assert np.asarray(dynamics["omega"]) == pytest.approx(omega, rel=1e-9)
+    text = _section(note, "Dynamics of the machine")
+    worked = re.search(r"JF = ΔWmax/\(ωm²·δ\) − Je = " + NUMBER + r"/\(" + NUMBER + r"²·" + NUMBER + r"\) − "
+                       + NUMBER + " = " + NUMBER + " kg·m², exactly", text)
+    assert worked and _written_as(worked[1], delta_w_max) and _written_as(worked[2], omega_mean)
+    assert _number(worked[4]) == inertia and _written_as(worked[5], flywheel)
+    moved = re.search(r"n′ = " + NUMBER + r" rpm the flywheel is JF′ = JF·\(n/n′\)² = " + NUMBER + " kg·m²", text)
+    assert moved and _number(moved[1]) == shaft_rpm
+    assert _written_as(moved[2], flywheel * (100 / shaft_rpm) ** 2)
+    drawn = _texts(ElementTree.parse(out / "dynamics.svg").getroot())
+    line = next(text for text in drawn if text.startswith("on a shaft at"))
+    assert _number(re.search(r"= " + NUMBER + " kg·m²$", line)[1]) == pytest.approx(
+        flywheel * (100 / shaft_rpm) ** 2, rel=1e-3)

@@ -217,9 +217,11 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
         layers.append(_layer("inertia", turned, right, low - GAP_MM - bounds_of(turned)[3]))
     elif not model.turning:
         mass_scale = scales.mass or fit_scale(float(np.ptp(model.inertia)) or float(np.max(model.inertia)), WORKS_MM)
+        # me read off each velocity plan ringed on the curve of the exact me, as Je is on Je(φ): the note tables both.
+        rings = [(_travel(model, plan.driver) / scales.angle, plan.inertia) for plan in model.plans]
         mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, words["dyn_mass_axis"],
                         words["dyn_mass_scale"].format(value=format_scale(mass_scale)), words["dyn_mass"], scales,
-                        words, floor=True)
+                        words, floor=True, rings=rings, rings_legend=words["dyn_mass_plans"])
         layers.append(_layer("inertia", mass, 0.0, bottom - GAP_MM - bounds_of(mass)[3]))
         left_bottom = bounds_of(layers[-1].items)[1]
     results = _results(model, flywheel, words)
@@ -241,10 +243,13 @@ def _span(values: np.ndarray) -> float:
 
 
 def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: str, scale_text: str,
-             heading: str, scales: Scales, words: Mapping[str, str], floor: bool = False) -> list[Primitive]:
+             heading: str, scales: Scales, words: Mapping[str, str], floor: bool = False,
+             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "") -> list[Primitive]:
     """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
 
     ``floor`` starts the ordinate at the smallest value rather than at zero (a reduced mass far from zero).
+    ``rings`` are (abscissa in mm, value) of values read off the velocity plans, ringed on the curve and named in the
+    legend by ``rings_legend``.
     """
     values = np.concatenate([c[0] for c in curves])
     base = 0.0
@@ -279,6 +284,10 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items.append(Polyline(((cursor, scale_y + LABEL / 3), (cursor + 10.0, scale_y + LABEL / 3)), stroke))
         items.append(Text((cursor + 12.0, scale_y), name, LABEL, "start", stroke.colour))
         cursor += 12.0 + text_width(name, LABEL) + 6.0
+    if rings:
+        items += [Circle((at, (value - base) / scale), PLAN_RING_MM, THIN, None) for at, value in rings]
+        items.append(Circle((cursor + PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
+        items.append(Text((cursor + 2 * PLAN_RING_MM + 2.0, scale_y), rings_legend, LABEL, "start"))
     return items
 
 
