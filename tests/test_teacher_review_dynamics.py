@@ -555,3 +555,15 @@ def test_the_press_flywheel_is_my_own_from_its_power_steps_and_moves_to_its_shaf
     line = next(text for text in drawn if text.startswith("on a shaft at"))
     assert _number(re.search(r"= " + NUMBER + " kg·m²$", line)[1]) == pytest.approx(
         flywheel * (100 / shaft_rpm) ** 2, rel=1e-3)
+
+
+@pytest.mark.parametrize("locale, weights", [("en", "weights"), ("ru", "сил тяжести"), ("zh", "重力")])
+def test_a_press_known_by_its_load_diagram_is_not_told_of_weights_it_has_none_of(tmp_path, locale, weights):
+    """The press of `graphplan new flywheel` has no links and so no weights: its equation of motion's Mr(φ) is the
+    resisting diagram's moment, which the note called "the reduced moment of the loads and the weights"."""
+    text = _starter("flywheel", tmp_path).replace('locale = "en"', f'locale = "{locale}"')
+    _, note, _ = _run(tmp_path / "run", text)
+    equation = next(paragraph for paragraph in note.split("\n\n") if "Mr(φ)" in paragraph or "Mс(φ)" in paragraph)
+    assert weights not in equation
+    assert {"en": "load diagram", "ru": "диаграмм", "zh": "线图"}[locale] in equation
+

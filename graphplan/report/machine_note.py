@@ -327,8 +327,10 @@ def _equation(note: Writer, dynamics) -> None:
         terms += note.t("note_dyn_motion_clutch", value=note.n(clutch.inertia))
     if motor.rotor_inertia == 0:  # missing from the sum, which a reader would otherwise take for an oversight
         terms += note.text["note_dyn_motion_no_rotor"]
-    note.para(note.t("note_dyn_motion", equation=equation, terms=terms, method=dynamics.motion.method,
-                     reason=_method_reason(note, dynamics)))
+    # A machine known by its load diagrams alone has no links, so no weights: its Mr is the resisting diagram's.
+    resistance = note.text["note_dyn_motion_diagram" if dynamics.model.link == 0 else "note_dyn_motion_loads"]
+    note.para(note.t("note_dyn_motion", equation=equation, terms=terms, resistance=resistance,
+                     method=dynamics.motion.method, reason=_method_reason(note, dynamics)))
 
 
 def _clutch(note: Writer, dynamics) -> None:
