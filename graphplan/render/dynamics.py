@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+from shapely.geometry import box
 
 from ..locale import strings
 from ..scales import fit_scale, format_scale
@@ -41,6 +42,7 @@ from .primitives import (
     bounds_of,
     dot_marker,
     moved,
+    text_extent,
     text_width,
 )
 from .svg import to_svg
@@ -386,16 +388,39 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
         # ab ≤ 0 is a flywheel of negative inertia, which the machine's own spares: said so, not as a length.
         told = words["dyn_segment"].format(value=f"{ab:.1f}") if flywheel.inertia > 0 else words["dyn_segment_none"]
         items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), told, LABEL, "middle", _TANGENT.colour))
+    # Je graduated as on Je(φ) under it; lettered on the side of the axis where fewer of the diagram's lines and
+    # words run through its numbers, and of two alike the side the curve comes less near.  A number struck through
+    # there stands clear on the other side, or beside its tick, where it can, and is left out where it cannot (its
+    # tick kept, read off its neighbours and off Je(φ) under it, graduated alike): judged by the curve alone, a steep
+    # tangent (a fast machine's) crossing the axis among the numbers struck one through.
+    drawn = obstacles_of(items)
+    near = LABEL + TICK_MM + 2.0
+    ticks = _inertia_ticks(model, scales)
+    sides = []
+    for letter_y, crowd in ((TICK_MM + 1.0, (ys > 0) & (ys < near)), (-TICK_MM - 1.0 - LABEL, (ys < 0) & (ys > -near))):
+        struck = sum(any(_ink(Text((at, letter_y), short(value), LABEL, "middle")).intersects(shape)
+                         for shape in drawn) for value, at in ticks)
+        sides.append((struck, int(np.count_nonzero(crowd)), letter_y))
+    (_, _, letter_y), (_, _, other_y) = sorted(sides)
     items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
-    # Je graduated as on Je(φ) under it; lettered on the side of the axis the curve comes less near.
-    near = LABEL + TICK_MM + 2.0
-    above = int(np.count_nonzero((ys > 0) & (ys < near)))
-    below = int(np.count_nonzero((ys < 0) & (ys > -near)))
-    letter_y = TICK_MM + 1.0 if above <= below else -TICK_MM - 1.0 - LABEL
-    for value, at in _inertia_ticks(model, scales):
+    numbers: list[Text | None] = []
+    for k, (value, at) in enumerate(ticks):
+        spots = [(at, letter_y, "middle"), (at, other_y, "middle"), (at - 0.5, letter_y, "end"),
+                 (at + 0.5, letter_y, "start"), (at - 0.5, other_y, "end"), (at + 0.5, other_y, "start")]
+        # Clear of the lines, of the numbers set already and of the next one's usual spot.
+        kept = [*drawn, *(_ink(number) for number in numbers if number is not None)]
+        if k + 1 < len(ticks):
+            kept.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), LABEL, "middle")))
+        candidates = [Text((x, y), short(value), LABEL, anchor) for x, y, anchor in spots]
+        numbers.append(next((text for text in candidates if not any(_ink(text).intersects(shape)
+                                                                     for shape in kept)), None))
+    if all(number is None for number in numbers):   # an axis with no number at all is no scale: struck, but there
+        numbers = [Text((at, letter_y), short(value), LABEL, "middle") for value, at in ticks]
+    for (_, at), number in zip(ticks, numbers):
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        items.append(Text((at, letter_y), short(value), LABEL, "middle"))
+        if number is not None:
+            items.append(number)
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
@@ -463,6 +488,13 @@ def _travel(model: EquivalentModel, driver: float) -> float:
     """ψ of a driver position: its travel from the model's first sample in the driver's sense (within a turn)."""
     travel = model.sense * (driver - float(model.driver[0]))
     return travel % (2.0 * math.pi) if model.cyclic else travel
+
+
+def _ink(number: Text):
+    """The box a number's figures cover: from its baseline to its cap height (figures have neither descenders nor
+    accents, which :func:`~graphplan.render.labels.text_box` allows for), as wide as it is written."""
+    x0, _, x1, _ = text_extent(number)
+    return box(x0, number.at[1], x1, number.at[1] + number.size)
 
 
 def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float]]:
