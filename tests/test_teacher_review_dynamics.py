@@ -610,3 +610,31 @@ def test_the_je_numbers_of_the_energy_mass_diagram_stand_clear_of_its_tangents_a
     lines = [LineString(p) for p in (*_paths(group, TANGENT_COLOUR), max(black, key=len))]
     struck = [("".join(t.itertext()), k) for t in numbers for k, line in enumerate(lines) if _box(t).intersects(line)]
     assert not struck, f"Je's numbers crossed by the diagram's lines (0, 1 the tangents, 2 the curve): {struck}"
+
+
+def test_the_press_diagrams_name_their_axes_and_scales_and_draw_delta_w_max_between_the_extreme_speeds(tmp_path):
+    """Each diagram of the press names its ordinate with its unit and states its scales; on ΔT(φ) the ordinates at
+    ωmax and ωmin stand at 120° and 0° by μφ, and the first rises ΔWmax = (Md − Mr1)·2π/3 over the second at μT:
+    ΔWmax drawn where the hand calculation puts it."""
+    _, _, out = _run(tmp_path, _starter("flywheel", tmp_path), pieces="dynamics")
+    drawing = ElementTree.parse(out / "dynamics.svg").getroot()
+    groups = {g.get("id"): g for g in drawing.iter(f"{SVG}g")}
+    for name, axis, scale in (("moments", "M, N·m", r"μM = \d+ N·m/mm"), ("works", "A, J", r"μA = \d+ J/mm"),
+                              ("energy", "ΔT, J", r"μT = \d+ J/mm")):
+        texts = _texts(groups[name])
+        assert axis in texts and "φ, °" in texts, (name, texts)
+        assert any(re.fullmatch(scale + r", μφ = 2°/mm \(0\.03491 rad/mm\)", text) for text in texts), (name, texts)
+    texts = _texts(groups["energy"])
+    energy_scale = _number(re.search(r"μT = " + NUMBER + " J/mm", " ".join(texts))[1])
+    black = _paths(groups["energy"], "black")
+    axis = max((p for p in black if len(p) == 2 and abs(p[0, 1] - p[1, 1]) < 1e-9), key=lambda p: p[1, 0] - p[0, 0])
+    (x0, y0) = axis[0]
+    ordinates: dict[float, float] = {}
+    for p in _paths(groups["energy"], TANGENT_COLOUR):
+        if abs(p[0, 0] - p[1, 0]) < 1e-9 and max(p[:, 1]) <= y0 + 1e-9:   # an ordinate up from the axis, not a tick
+            at = round((p[0, 0] - x0) * 2.0, 3)
+            ordinates[at] = max(ordinates.get(at, 0.0), (y0 - min(p[:, 1])) * energy_scale)
+    omega_mean = 100 * math.pi / 30
+    delta_w_max = ((367.7 * 120 + 3677.0 * 240) / 360 - 367.7) / omega_mean * 2 * math.pi / 3
+    assert set(ordinates) == {0.0, 120.0}
+    assert ordinates[120.0] - ordinates[0.0] == pytest.approx(delta_w_max, abs=0.01 * energy_scale)
