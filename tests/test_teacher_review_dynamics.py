@@ -601,12 +601,14 @@ def test_the_je_numbers_of_the_energy_mass_diagram_stand_clear_of_its_tangents_a
                and t.get("text-anchor") == "middle" and abs(float(t.get("y")) - axis_y) < 8
                and t.get("font-size") == axis_name.get("font-size")]
     written = [float("".join(t.itertext())) for t in numbers]
-    assert set(written) <= {0.025, 0.05, 0.075} and len(written) >= 2, written
+    scales = re.fullmatch(r"μJ = " + NUMBER + r" kg·m²/mm, μT = " + NUMBER + " J/mm",
+                          next(text for text in _texts(group) if text.startswith("μJ")))
     origin = je_axis[0, 0]
-    ticks = sorted(round((p[0, 0] - origin) * 0.002, 6) for p in black
+    ticks = sorted(round((p[0, 0] - origin) * _number(scales[1]), 9) for p in black
                    if len(p) == 2 and abs(p[0, 0] - p[1, 0]) < 1e-9 and min(p[:, 1]) < axis_y < max(p[:, 1]))
-    assert ticks == [0.025, 0.05, 0.075]   # μJ = 0.002 kg·m²/mm, as the scale line says
-    assert "μJ = 0.002 kg·m²/mm, μT = 5 J/mm" in _texts(group)
+    # Every tick kept, at a round step; each number written is its tick's, and at most the struck one is left out.
+    assert ticks == pytest.approx([ticks[0] * k for k in range(1, len(ticks) + 1)]) and len(ticks) >= 3
+    assert set(written) <= {round(tick, 9) for tick in ticks} and len(written) >= len(ticks) - 1, (written, ticks)
     lines = [LineString(p) for p in (*_paths(group, TANGENT_COLOUR), max(black, key=len))]
     struck = [("".join(t.itertext()), k) for t in numbers for k, line in enumerate(lines) if _box(t).intersects(line)]
     assert not struck, f"Je's numbers crossed by the diagram's lines (0, 1 the tangents, 2 the curve): {struck}"
