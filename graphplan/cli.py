@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import difflib
 import math
 import os
 import re
@@ -25,6 +26,15 @@ if TYPE_CHECKING:
     from .analysis import Analysis
     from .scene import Scene
 
+# The same for every command, so that a script can tell a refusal from an interruption.
+EXIT_STATUS = """
+exit status:
+  0    done (check: the scene is ok, with its warnings or without)
+  2    refused: the command line, the scene or the output folder, told in one line on stderr; nothing is written
+  130  interrupted by Ctrl-C (143 killed, 129 the terminal closed, 141 the reader of its output gone); the
+       output folder is left as it was
+"""
+
 EXAMPLES = """\
 examples:
   graphplan run fixtures/ratchet_crank_rocker.toml              writes output/ratchet_crank_rocker/
@@ -37,7 +47,7 @@ examples:
   graphplan run - --only velocity < fixtures/ratchet_crank_rocker.toml    a scene piped in: writes output/stdin/
   graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
   graphplan new shaper --locale ru                              a starter whose sheets and note are in Russian
-"""
+""" + EXIT_STATUS
 
 
 # A scene piped in has no file name to name its output folder after.
@@ -70,12 +80,63 @@ def _sheet(text: str) -> str:
         raise argparse.ArgumentTypeError(str(error).removeprefix("--sheet: ")) from None
 
 
+def _given_path(text: str) -> str:
+    """A path typed on the command line: an empty one (a shell variable left unset) was taken for ".", the folder
+    the command runs in."""
+    if not text:
+        raise argparse.ArgumentTypeError("is empty: give a path")
+    return text
+
+
+def _locale(text: str) -> str:
+    """A locale as scene.locale takes it, with the same did-you-mean (RU, russian, cn)."""
+    from .reader import check_choice
+    from .scene import LOCALES
+
+    try:
+        return check_choice(text, "--locale", LOCALES)
+    except SceneError as error:
+        raise argparse.ArgumentTypeError(str(error).removeprefix("--locale: ")) from None
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, which names the command or kind meant beside one mistyped (rn for run, shapr for
+    shaper): argparse's own only lists them all."""
+
+    def _check_value(self, action: argparse.Action, value: object) -> None:
+        if action.choices is not None and value not in action.choices:
+            from .reader import suggestion
+
+            choices = ", ".join(map(repr, action.choices))
+            raise argparse.ArgumentError(
+                action, f"invalid choice: {value!r} (choose from {choices}){suggestion(str(value), list(action.choices))}")
+
+
+def _unknown_told(parser: argparse.ArgumentParser, unknown: list[str]) -> str:
+    """argparse's "unrecognized arguments", with the option meant beside the first mistyped (--onyl, -o)."""
+    told = f"unrecognized arguments: {' '.join(unknown)}"
+    options = [name for action in parser._actions for name in action.option_strings if name.startswith("--")]
+    for word in unknown:
+        if not word.startswith("-") or word == "-":
+            continue
+        typed = word.split("=", 1)[0]
+        # A single letter, as other programs shorten their options (-o for --out), where one option begins with it.
+        initial = [name for name in options if len(typed) == 2 and name[2:3] == typed[1:]]
+        if len(initial) == 1:
+            return f"{told}; did you mean {initial[0]}?"
+        # The dashes every option shares would make --bogus as near --out as --outt is.
+        close = difflib.get_close_matches(typed.lstrip("-"), [name[2:] for name in options], n=1, cutoff=0.7)
+        if close:
+            return f"{told}; did you mean --{close[0]}?"
+    return told
+
+
 def _parser() -> argparse.ArgumentParser:
     from .deliverables import FORMATS, PIECES
     from .scene import LOCALES, SHEETS
     from .starters import KINDS
 
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="graphplan",
         description="The plan method of the theory of machines, from one scene file.",
         epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -83,11 +144,11 @@ def _parser() -> argparse.ArgumentParser:
     run = commands.add_parser("run", help="analyse a scene and write results.json, the drawings and the tables",
                               epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
     # A string: a Path reads ./- as -, which names standard input, not the file ./- names.
-    run.add_argument("scene",
+    run.add_argument("scene", type=_given_path,
                      help=f"the scene file (TOML), or - to read it from standard input{_piped('run')}")
-    run.add_argument("--out", type=Path, default=None,
+    run.add_argument("--out", type=lambda text: Path(_given_path(text)), default=None,
                      help=f"output folder (default: output/<scene file name>, {Path('output', STDIN_FOLDER)} for -)")
-    run.add_argument("--locale", choices=LOCALES, default=None,
+    run.add_argument("--locale", type=_locale, default=None, metavar="{" + ",".join(LOCALES) + "}",
                      help="the language of the drawings and the text (default: the scene's [scene] locale)")
     run.add_argument("--sheet", type=_sheet, default=None, metavar="{" + ",".join(SHEETS) + "}",
                      help="the sheet format of the course-project sheets, which it then draws unless --only or the "
@@ -103,15 +164,17 @@ def _parser() -> argparse.ArgumentParser:
                           "note for Word)")
     run.add_argument("--figures", action="store_true",
                      help="also draw the report figures with matplotlib (the same as adding 'figures' to --only)")
-    check = commands.add_parser("check", help="validate a scene and print its structure formula")
-    check.add_argument("scene",
+    check = commands.add_parser("check", help="validate a scene and print its structure formula", epilog=EXIT_STATUS,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    check.add_argument("scene", type=_given_path,
                        help=f"the scene file (TOML), or - to read it from standard input{_piped('check')}")
-    new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine")
+    new = commands.add_parser("new", help="write a commented starter scene for a kind of mechanism or machine",
+                              epilog=EXIT_STATUS, formatter_class=argparse.RawDescriptionHelpFormatter)
     new.add_argument("kind", choices=KINDS, help="the kind of mechanism, or a flywheel or rotor without one")
     # A string, not a Path: a Path drops the trailing slash that says "a folder" of one not made yet.
-    new.add_argument("--out", default=None,
+    new.add_argument("--out", type=_given_path, default=None,
                      help="the scene file to write, or a folder to write KIND.toml in (default: KIND.toml here)")
-    new.add_argument("--locale", choices=LOCALES, default="en",
+    new.add_argument("--locale", type=_locale, default="en", metavar="{" + ",".join(LOCALES) + "}",
                      help="the language of its drawings and note (scene.locale; its comments stay English)")
     for command in (run, check, new):
         command.set_defaults(command_parser=command)
@@ -124,7 +187,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     arguments, unknown = _parser().parse_known_args(argv)
     if unknown:
         # argparse hands a command's unknown options up to the top parser, whose usage lists no options at all.
-        arguments.command_parser.error(f"unrecognized arguments: {' '.join(unknown)}")
+        arguments.command_parser.error(_unknown_told(arguments.command_parser, unknown))
     try:
         with _terminated_as_interrupted():
             if arguments.command == "check":

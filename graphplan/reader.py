@@ -193,7 +193,7 @@ def check_choice(value: Any, where: str, choices: tuple[str, ...]) -> str:
     text = check_str(value, where)
     if text not in choices:
         # A choice in look-alike letters (a Cyrillic о in "forward") reads on screen as the one it is told of.
-        raise SceneError(where, f"must be one of {', '.join(choices)}{_suggestion(text, choices)}", value,
+        raise SceneError(where, f"must be one of {', '.join(choices)}{suggestion(text, choices)}", value,
                          hint=lookalike_hint(text, choices))
     return text
 
@@ -213,7 +213,9 @@ ALIASES = {"clockwise": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw",
            "r": "length"}
 
 
-def _suggestion(word: str, choices: Any) -> str:
+def suggestion(word: str, choices: Any) -> str:
+    """"; did you mean 'ru'?" naming the choice ``word`` stands for (in other capitals or look-alike letters, by an
+    alias, or spelt near it), or "" where none is near: for the scene's keys and choices and the command line's."""
     names = [str(c) for c in choices]
     lowered = word.strip().lower()
     alias = lowered if lowered in names else ALIASES.get(lowered)
@@ -425,7 +427,7 @@ class Table:
         table whose keys are all read whatever it holds) every valid one when none is near."""
         for key in self.data:
             if key not in self._taken:
-                hint = _suggestion(key, sorted(self._taken))
+                hint = suggestion(key, sorted(self._taken))
                 if not hint and list_known:
                     hint = f"; the keys here are {', '.join(sorted(self._taken))}"
                 raise SceneError(self.where(key), "unknown key" + hint)

@@ -1,0 +1,115 @@
+"""A student's first use: the mistakes one makes at the command line, each told in a line that names where (the
+command, the flag, the key, the file) and what, with the near name meant, exit status 2, no traceback and nothing
+written; the help says what the exit statuses mean.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from console import without_progress
+
+from graphplan.cli import main
+from graphplan.starters import starter
+
+ROOT = Path(__file__).resolve().parent.parent
+SLIDER_CRANK = starter("slider-crank", "en")
+
+
+def usage_error(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
+    """The error line argparse ends a refused command line with (after the command's usage), exit status 2."""
+    with pytest.raises(SystemExit) as stopped:
+        main(argv)
+    assert stopped.value.code == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err
+    return err.rstrip("\n").splitlines()[-1]
+
+
+def refused(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
+    """The one error line of a command refused with exit status 2, with no traceback, without its prefix."""
+    status = main(argv)
+    err = without_progress(capsys.readouterr().err)
+    assert status == 2, err
+    lines = [line for line in err.splitlines() if not line.startswith("warning: ")]
+    assert "Traceback" not in err and len(lines) == 1 and lines[0].startswith("graphplan: error: "), err
+    return lines[0].removeprefix("graphplan: error: ")
+
+
+def scene_with(tmp_path: Path, old: str, new: str, name: str = "scene.toml") -> Path:
+    assert old in SLIDER_CRANK, old
+    path = tmp_path / name
+    path.write_text(SLIDER_CRANK.replace(old, new, 1), encoding="utf-8")
+    return path
+
+
+# --- a name typed wrong on the command line is answered with the name meant --------------------------------------
+
+
+@pytest.mark.parametrize(("argv", "meant"), [
+    (["rn", "scene.toml"], "'run'"),
+    (["chekc", "scene.toml"], "'check'"),
+    (["new", "shapr"], "'shaper'"),
+    (["new", "slider_crank"], "'slider-crank'"),
+])
+def test_a_command_or_kind_mistyped_is_answered_with_the_one_meant(capsys, argv, meant):
+    told = usage_error(capsys, argv)
+    assert "invalid choice" in told and told.endswith(f"did you mean {meant}?"), told
+
+
+@pytest.mark.parametrize(("argv", "meant"), [
+    (["run", "scene.toml", "--onyl", "velocity"], "--only"),
+    (["run", "scene.toml", "--formt=png"], "--format"),
+    (["run", "scene.toml", "--lcoale", "ru"], "--locale"),
+    (["new", "shaper", "--outt", "x.toml"], "--out"),
+    (["run", "scene.toml", "-l", "ru"], "--locale"),  # as other programs shorten their options
+])
+def test_an_option_mistyped_is_answered_with_the_one_meant(capsys, argv, meant):
+    command = argv[0]
+    told = usage_error(capsys, argv)
+    assert told.startswith(f"graphplan {command}: error: unrecognized arguments: ") and \
+        told.endswith(f"did you mean {meant}?"), told
+
+
+@pytest.mark.parametrize(("given", "meant"), [("RU", "ru"), ("russian", "ru"), ("cn", "zh")])
+def test_a_locale_written_otherwise_is_answered_as_the_scene_s_locale_is(capsys, given, meant):
+    """The scene's locale = "RU" is told "did you mean 'ru'?", --sheet a2 "did you mean 'A2'?"; --locale RU was told
+    the bare list of choices."""
+    told = usage_error(capsys, ["run", "scene.toml", "--locale", given])
+    assert told == f"graphplan run: error: argument --locale: must be one of en, ru, zh; did you mean {meant!r}? " \
+                   f"(got {given!r})"
+
+
+def test_the_help_of_every_command_says_what_its_exit_statuses_mean(capsys):
+    for argv in (["--help"], ["run", "--help"], ["check", "--help"], ["new", "--help"]):
+        with pytest.raises(SystemExit) as stopped:
+            main(argv)
+        assert stopped.value.code == 0
+        shown = capsys.readouterr().out
+        assert "exit status:" in shown, argv
+        for status in ("0 ", "2 ", "130 "):
+            assert f"\n  {status}" in shown.split("exit status:")[1], (argv, status)
+
+
+@pytest.mark.parametrize("argv", [["run", "scene.toml", "--out", ""], ["run", ""], ["check", ""],
+                                  ["new", "shaper", "--out", ""]])
+def test_an_empty_path_is_told_empty_not_taken_for_this_folder(capsys, argv):
+    """--out "" (a shell variable left unset) was told as ".": the folder the command runs in."""
+    told = usage_error(capsys, argv)
+    assert told.endswith("is empty: give a path"), told
+
+
+# --- as a student runs it -----------------------------------------------------------------------------------------
+
+
+def test_a_mistyped_command_run_as_a_program_prints_no_traceback_and_the_command_meant(tmp_path):
+    shown = subprocess.run([sys.executable, "-m", "graphplan", "runn", "scene.toml"], cwd=tmp_path, capture_output=True,
+                           text=True, timeout=120, check=False,
+                           env={**os.environ, "PYTHONPATH": str(ROOT)})
+    assert shown.returncode == 2 and shown.stdout == ""
+    assert "Traceback" not in shown.stderr and shown.stderr.rstrip().endswith("did you mean 'run'?"), shown.stderr
+    assert list(tmp_path.iterdir()) == []
