@@ -228,6 +228,13 @@ def suggestion(word: str, choices: Any) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
+def _swapped(typed: str, key: str) -> bool:
+    """``typed`` is ``key`` with two letters side by side swapped (rmp for rpm), which the similarity ratio of a
+    short key counts as far off as another key."""
+    return len(typed) == len(key) and typed != key and any(
+        typed == key[:at] + key[at + 1] + key[at] + key[at + 2:] for at in range(len(key) - 1))
+
+
 class Table:
     """A TOML table being read: each key is taken once, the rest are unknown.
 
@@ -267,7 +274,8 @@ class Table:
         strangers = [k for k in self.data if k not in self._taken]
         for key in keys:
             close = [k for k in strangers if k.lower() == key.lower() or ALIASES.get(k.strip().lower()) == key] \
-                or difflib.get_close_matches(key, strangers, n=1, cutoff=0.7)
+                or difflib.get_close_matches(key, strangers, n=1, cutoff=0.7) \
+                or [k for k in strangers if _swapped(k.lower(), key.lower())]
             if close:
                 raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
 

@@ -103,6 +103,15 @@ def test_an_empty_path_is_told_empty_not_taken_for_this_folder(capsys, argv):
     assert told.endswith("is empty: give a path"), told
 
 
+# --- the scene: a key misspelt, a length in millimetres -----------------------------------------------------------
+
+
+def test_a_required_key_with_two_letters_swapped_is_named_as_typed(tmp_path, capsys):
+    """rmp for rpm was told "driver.omega: is required but missing", naming neither the key typed nor the slip."""
+    scene = scene_with(tmp_path, "rpm     = 1500.0", "rmp     = 1500.0")
+    assert refused(capsys, ["check", str(scene)]) == "driver.rmp: unknown key; did you mean 'rpm'?"
+
+
 # --- as a student runs it -----------------------------------------------------------------------------------------
 
 
