@@ -141,7 +141,8 @@ def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
     above = _nearest_there(folder)
     if above is not None:
         if not above.is_dir():
-            raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it")
+            raise OutputError(f"{target}: {above} is not a folder, so the output cannot go in it; give {option} a "
+                              "folder elsewhere")
         # The new folder is made, and renamed into place, in the folder above it: one that may not be written in
         # (a read-only disk, another user's folder) refused the rename only once everything was drawn. Windows
         # is not asked: its read-only mark on a folder does not stop writing in it.
@@ -149,7 +150,12 @@ def _folder_to_replace(target: Path, resolved: Path, option: str) -> Path:
             raise OutputError(f"{target}: {above} may not be written in (a read-only disk, or another user's "
                               f"folder); give {option} another folder")
     if folder.exists() and not folder.is_dir():
-        raise OutputError(f"{target}: exists and is not a folder")
+        raise OutputError(f"{target}: exists and is not a folder; give {option} a folder")
+    # A folder made read-only, to keep it as it is, was swapped for a new one all the same (its parent may be written
+    # in), and another user than root, who may not delete its files, found them left in a hidden .NAME.old-PID.
+    if os.name == "posix" and folder.is_dir() and not os.access(folder, os.W_OK | os.X_OK):
+        raise OutputError(f"{target}: may not be written in (read-only, or another user's folder); give {option} "
+                          "another folder")
     if folder.is_dir() and os.path.ismount(folder):
         # The folder is replaced by renaming a new one into its place, which a disk's mount point refuses ("Device or
         # resource busy") once the run has analysed and drawn everything.

@@ -301,7 +301,7 @@ def test_an_output_path_under_a_file_names_the_file(capsys, tmp_path, under):
     status = main(["run", str(FIXTURE), "--out", str(blocking / under), "--only", "positions"])
     err = without_progress(capsys.readouterr().err)
     assert status == 2 and err == f"graphplan: error: {blocking / under}: {blocking} is not a folder, so the output " \
-                                  "cannot go in it\n"
+                                  "cannot go in it; give --out a folder elsewhere\n"
     assert blocking.read_text(encoding="utf-8") == "keep me"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
 

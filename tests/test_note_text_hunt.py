@@ -181,8 +181,9 @@ def test_an_out_that_is_a_file_is_refused_before_the_analysis(tmp_path, monkeypa
     monkeypatch.setattr(graphplan.analysis, "analyse", _analysis_refused)
     assert main(["run", str(scene), "--out", str(out)]) == 2
     told = capsys.readouterr().err.strip().splitlines()
-    assert told[-1] == (f"graphplan: error: {out}: {file} is not a folder, so the output cannot go in it" if inside
-                        else f"graphplan: error: {out}: exists and is not a folder")
+    assert told[-1] == (f"graphplan: error: {out}: {file} is not a folder, so the output cannot go in it; give --out "
+                        "a folder elsewhere" if inside
+                        else f"graphplan: error: {out}: exists and is not a folder; give --out a folder")
     # Nothing written beside it, the file as it was.
     assert sorted(path.name for path in tmp_path.iterdir()) == ["report", "scene.toml"]
     assert file.read_text(encoding="utf-8") == "the user's own"

@@ -112,6 +112,41 @@ def test_a_required_key_with_two_letters_swapped_is_named_as_typed(tmp_path, cap
     assert refused(capsys, ["check", str(scene)]) == "driver.rmp: unknown key; did you mean 'rpm'?"
 
 
+# --- the output folder: a file, a folder that may not be written in ----------------------------------------------
+
+
+@pytest.mark.parametrize("under", ["", "sub"])
+def test_an_output_that_is_a_file_is_refused_naming_the_option(tmp_path, capsys, under):
+    scene = scene_with(tmp_path, "", "")
+    mine = tmp_path / "report.txt"
+    mine.write_text("mine", encoding="utf-8")
+    given = mine / under if under else mine
+    told = refused(capsys, ["run", str(scene), "--out", str(given), "--only", "positions"])
+    assert told.startswith(f"{given}: ") and "give --out a folder" in told, told
+    assert mine.read_text(encoding="utf-8") == "mine"
+
+
+@pytest.mark.skipif(os.name != "posix", reason="asked of POSIX disks alone")
+def test_an_output_folder_that_may_not_be_written_in_is_left_as_it_is(tmp_path, capsys, monkeypatch):
+    """A folder made read-only (chmod a-w) was swapped for a new one, and for another user than root its old
+    files, which may not be deleted, stayed behind in a hidden .out.old-PID beside it. Root, who runs the tests,
+    may write anywhere: the disk's answer is asked through os.access."""
+    scene = scene_with(tmp_path, "", "")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "positions"]) == 0
+    capsys.readouterr()
+    before = {path.name: path.read_bytes() for path in out.iterdir()}
+    asked = os.access
+    monkeypatch.setattr(os, "access", lambda path, mode, **kw: Path(path) != out and asked(path, mode, **kw))
+    analysed = []
+    monkeypatch.setattr("graphplan.analysis.analyse", lambda *args, **kwargs: analysed.append(args))
+    told = refused(capsys, ["run", str(scene), "--out", str(out), "--only", "errors"])
+    assert told == f"{out}: may not be written in (read-only, or another user's folder); give --out another folder"
+    assert analysed == []
+    assert {path.name: path.read_bytes() for path in out.iterdir()} == before
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["out", "scene.toml"]
+
+
 # --- as a student runs it -----------------------------------------------------------------------------------------
 
 
