@@ -38,14 +38,21 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     told = []
     lengths = given_lengths(mechanism)
     key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
+    some = False
     if longest > LONGEST_LINK_M:
         told.append(f"{key} = {longest:g} m is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
     else:
         spread = _frame_spread(mechanism)
+        far_point = _farthest_point(mechanism)
         if spread is not None and spread[3] > LONGEST_LINK_M:
             first, name, far, apart = spread
             told.append(f"frame.points.{name} = [{far.real:g}, {far.imag:g}] lies {apart:.4g} m from "
                         f"{first}, farther apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
+        elif far_point is not None:
+            # A named point's at or offset alone in millimetres moves no joint, so the mechanism runs; its drawings
+            # are then refused at a scale or pole distance the student never gave, naming that key alone.
+            told.append(far_point)
+            some = True
     driver = mechanism.driver
     fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S
     if fast:
@@ -56,7 +63,18 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
         return ()
     unless = ", unless ω is too large: it is in rad/s, and rev/min are given as driver.rpm" if len(told) == 1 and fast \
         else ""
-    return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + f": {millimetres_question()}{unless}"),)
+    return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + f": {millimetres_question(some=some)}{unless}"),)
+
+
+def _farthest_point(mechanism: Mechanism) -> str | None:
+    """What to tell of the named point the scene places farthest from its link's joint, where that is farther
+    than any machine's link reaches; None where every named point is within reach."""
+    far = max(mechanism.scene.points, key=lambda spec: abs(complex(spec.at, spec.offset)), default=None)
+    if far is None or abs(complex(far.at, far.offset)) <= LONGEST_LINK_M:
+        return None
+    key, value = ("at", far.at) if abs(far.at) >= abs(far.offset) else ("offset", far.offset)
+    return (f"{far.where}.{key} = {value:g} m puts {far.name} {abs(complex(far.at, far.offset)):.4g} m from "
+            f"{far.start}, farther than any machine's link reaches (over {LONGEST_LINK_M:g} m)")
 
 
 def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | None:

@@ -112,6 +112,16 @@ def test_a_required_key_with_two_letters_swapped_is_named_as_typed(tmp_path, cap
     assert refused(capsys, ["check", str(scene)]) == "driver.rmp: unknown key; did you mean 'rpm'?"
 
 
+def test_a_named_point_placed_in_millimetres_is_warned_of_before_the_refusal_it_causes(tmp_path, capsys):
+    """S3 at 55 (mm meant) along a 0.19 m rod put it 55 m out: the check refused drawing.velocity_pole alone, a key
+    the student never changed, and said nothing of the length typed in millimetres."""
+    scene = scene_with(tmp_path, "at = 0.055", "at = 55")
+    assert main(["check", str(scene)]) == 2
+    err = without_progress(capsys.readouterr().err)
+    assert "points.S3.at = 55 m" in err and "millimetres" in err, err
+    assert err.index("points.S3.at") < err.index("graphplan: error: ")
+
+
 # --- the output folder: a file, a folder that may not be written in ----------------------------------------------
 
 
