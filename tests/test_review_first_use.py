@@ -20,6 +20,13 @@ ROOT = Path(__file__).resolve().parent.parent
 SLIDER_CRANK = starter("slider-crank", "en")
 
 
+@pytest.fixture(autouse=True)
+def in_a_folder_of_its_own(tmp_path, monkeypatch):
+    """Each command runs where a student's would, in a folder of its own: one that went wrong (new shaper --out "")
+    wrote its file into the checkout."""
+    monkeypatch.chdir(tmp_path)
+
+
 def usage_error(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
     """The error line argparse ends a refused command line with (after the command's usage), exit status 2."""
     with pytest.raises(SystemExit) as stopped:
@@ -97,10 +104,12 @@ def test_the_help_of_every_command_says_what_its_exit_statuses_mean(capsys):
 
 @pytest.mark.parametrize("argv", [["run", "scene.toml", "--out", ""], ["run", ""], ["check", ""],
                                   ["new", "shaper", "--out", ""]])
-def test_an_empty_path_is_told_empty_not_taken_for_this_folder(capsys, argv):
-    """--out "" (a shell variable left unset) was told as ".": the folder the command runs in."""
+def test_an_empty_path_is_told_empty_not_taken_for_this_folder(tmp_path, capsys, argv):
+    """--out "" (a shell variable left unset) was told as ".", the folder the command runs in, and new wrote
+    shaper.toml there."""
     told = usage_error(capsys, argv)
     assert told.endswith("is empty: give a path"), told
+    assert list(tmp_path.iterdir()) == []
 
 
 # --- the scene: a key misspelt, a length in millimetres -----------------------------------------------------------
