@@ -10,6 +10,7 @@ from __future__ import annotations
 import codecs
 import datetime
 import difflib
+import itertools
 import json
 import math
 import os
@@ -555,6 +556,9 @@ def _toml_hint(data: str, message: str) -> str:
     letter = line[column - 1:column]
     if not line[column - 1:].split("#")[0].strip():  # at the line's end: what was left open, or a key given again
         return _end_of_line_hint(line, message)
+    unit = _unit_hint(lines[:int(place[1])], column)
+    if unit:
+        return unit
     code = f"'{letter}' (U+{ord(letter):04X})"
     if letter in _DEGREE_SIGNS:
         written = (line[:column - 1] + line[column:]).split("#")[0].strip()
@@ -571,6 +575,39 @@ def _toml_hint(data: str, message: str) -> str:
     if letter and not letter.isascii():
         return _key_hint(line, column)
     return ""
+
+
+# Units typed after a number, by what one of them is in the scene's own: metres, kg, N, s, degrees; and the
+# drawing's and the readings' millimetres in [drawing] and [measured].
+_UNITS = {"m": 1.0, "mm": 1e-3, "cm": 1e-2, "kg": 1.0, "g": 1e-3, "n": 1.0, "kn": 1e3, "s": 1.0, "deg": 1.0,
+          "degrees": 1.0}
+_UNITS_ON_PAPER = {"mm": 1.0, "cm": 10.0, "m": 1e3}
+_SPEED_KEYS = {"rpm": "rpm", "rev/min": "rpm", "об/мин": "rpm", "rad/s": "omega", "1/s": "omega", "рад/с": "omega"}
+
+
+def _unit_hint(lines: list[str], column: int) -> str:
+    """The hint for a unit typed after a number (length = 0.05 m, 190 mm, rpm = 1500 rpm): the number in the
+    scene's unit, under the key that takes it, where the unit is one the scene has a key's unit for."""
+    line = lines[-1]
+    before = line[:column - 1]
+    number = re.search(r"(?:^|[=,\[{])\s*([-+]?\d[\d_]*(?:\.\d[\d_]*)?(?:[eE][-+]?\d+)?)\s*$", before)
+    typed = re.match(r"[^\s,}\]#]+", line[column - 1:])
+    keys = re.findall(r"([\w-]+)\s*=", before)
+    if number is None or typed is None or not keys or not (typed[0][0].isalpha() or typed[0][0] in "μµ"):
+        return ""
+    key, unit, value = keys[-1], typed[0], float(number[1].replace("_", ""))
+    tables = [found[1] for found in (re.match(r"\s*\[+\s*([\w.-]+)", text) for text in lines) if found]
+    on_paper = bool(tables) and tables[-1].split(".")[0] in ("drawing", "measured")
+    told = (f"; '{unit}' after the number: TOML takes the number alone, in "
+            + ("mm, as [drawing] and [measured] take lengths" if on_paper else "the scene's units (m, kg, N, s, "
+               "degrees)"))
+    if unit.casefold() in _SPEED_KEYS and key in ("rpm", "omega"):
+        return f"; '{unit}' after the number: TOML takes the number alone: write {_SPEED_KEYS[unit.casefold()]} = " \
+               f"{number[1]}"
+    factor = (_UNITS_ON_PAPER if on_paper else _UNITS).get(unit.casefold())
+    written = number[1] if factor is None else f"{value * factor:.12g}"
+    in_a_list = before.rfind("[") > before.rfind("]") and before.rfind("[") > before.rfind("=")
+    return f"{told}: write {written} in its place" if in_a_list else f"{told}: write {key} = {written}"
 
 
 def _decimal_comma(line: str) -> re.Match[str] | None:
@@ -920,7 +957,7 @@ def _read_load_diagram(table: Table) -> tuple[tuple[float, float], ...]:
     if len(points) < 2:
         raise SceneError(where, "must have at least two points [share of the working stroke, value]")
     shares = [share for share, _ in points]
-    if not 0.0 <= shares[0] or not shares[-1] <= 1.0 or any(b <= a for a, b in zip(shares, shares[1:])):
+    if not 0.0 <= shares[0] or not shares[-1] <= 1.0 or any(b <= a for a, b in itertools.pairwise(shares)):
         beyond = " (shares, not crank angles in degrees or the travel in metres or mm)" if shares[-1] > 1.0 else ""
         raise SceneError(where, f"shares of the working stroke must rise strictly within 0..1{beyond}: 0 where the "
                          "stroke starts, 1 where it ends", list(shares))

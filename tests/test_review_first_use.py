@@ -121,6 +121,25 @@ def test_a_required_key_with_two_letters_swapped_is_named_as_typed(tmp_path, cap
     assert refused(capsys, ["check", str(scene)]) == "driver.rmp: unknown key; did you mean 'rpm'?"
 
 
+@pytest.mark.parametrize(("old", "new", "written"), [
+    ("length   = 0.19", "length   = 190 mm", "write length = 0.19"),
+    ("length  = 0.05 ", "length  = 0.05 m", "write length = 0.05"),
+    ("rpm     = 1500.0", "omega   = 1500 rpm", "write rpm = 1500"),
+    ("mass    = 1.1", "mass    = 1100 g", "write mass = 1.1"),
+    ("value     = 4500.0", "value     = 4.5 kN", "write value = 4500"),
+    ("velocity_pole      = 100.0", "velocity_pole      = 100 mm", "write velocity_pole = 100"),
+])
+def test_a_unit_typed_after_a_number_is_told_with_the_number_in_the_scene_s_unit(tmp_path, capsys, old, new,
+                                                                                  written):
+    """TOML refused "length = 190 mm" as "Expected newline or end of document after a statement", which says
+    nothing of the unit a student typed."""
+    scene = scene_with(tmp_path, old, new)
+    line = 1 + SLIDER_CRANK[:SLIDER_CRANK.index(old)].count("\n")
+    told = refused(capsys, ["check", str(scene)])
+    assert told.startswith(f"{scene}: is not valid TOML: ") and f"(at line {line}, " in told, told
+    assert told.endswith(written), told
+
+
 def test_a_named_point_placed_in_millimetres_is_warned_of_before_the_refusal_it_causes(tmp_path, capsys):
     """S3 at 55 (mm meant) along a 0.19 m rod put it 55 m out: the check refused drawing.velocity_pole alone, a key
     the student never changed, and said nothing of the length typed in millimetres."""
