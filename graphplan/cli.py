@@ -47,7 +47,7 @@ examples:
   graphplan run - --only velocity < fixtures/ratchet_crank_rocker.toml    a scene piped in: writes output/stdin/
   graphplan new crank-rocker                                    writes a commented starter scene crank-rocker.toml
   graphplan new shaper --locale ru                              a starter whose sheets and note are in Russian
-""" + EXIT_STATUS
+"""
 
 
 # A scene piped in has no file name to name its output folder after.
@@ -139,10 +139,10 @@ def _parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="graphplan",
         description="The plan method of the theory of machines, from one scene file.",
-        epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
+        epilog=EXAMPLES + EXIT_STATUS, formatter_class=argparse.RawDescriptionHelpFormatter)
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     run = commands.add_parser("run", help="analyse a scene and write results.json, the drawings and the tables",
-                              epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
+                              epilog=EXAMPLES + EXIT_STATUS, formatter_class=argparse.RawDescriptionHelpFormatter)
     # A string: a Path reads ./- as -, which names standard input, not the file ./- names.
     run.add_argument("scene", type=_given_path,
                      help=f"the scene file (TOML), or - to read it from standard input{_piped('run')}")
