@@ -103,11 +103,15 @@ def run(scene: Scene, folder: Path, only: Iterable[str] | None = None, formats: 
 def _run(scene: Scene, folder: Path, only: Iterable[str] | None, formats: Iterable[str], figures: bool,
          options: Options, sheet_key: str, say: Callable[[str], None] | None) -> Run:
     from .analysis import analyse
-    from .deliverables import check_formats
+    from .deliverables import PIECES, check_formats
     from .output import check_folder
 
     tell = say if say is not None else (lambda stage: None)
     formats = check_formats(formats, options.formats)
+    if only is not None:
+        # A piece mistyped is told at once, as a format is, not once the mechanism is analysed; what the scene has
+        # data for is known only then.
+        only = [check_choice(piece, f"{options.only}[{k}]", PIECES) for k, piece in enumerate(only)]
     # A folder the run could never write is told at once, not once the analysis and the drawings are done.
     check_folder(folder, options.out)
     tell("analysing the mechanism" if scene.has_linkage else "analysing the machine")

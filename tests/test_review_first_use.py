@@ -112,6 +112,20 @@ def test_an_empty_path_is_told_empty_not_taken_for_this_folder(tmp_path, capsys,
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize(("argv", "told"), [
+    (["--only", "velocty"], "--only[0]: must be one of positions, "),
+    (["--only", "positions", "--only", "forcs"], "--only[1]: must be one of positions, "),
+])
+def test_a_piece_mistyped_is_told_before_the_mechanism_is_analysed(tmp_path, capsys, monkeypatch, argv, told):
+    """--format pnng was told at once, --only velocty only once the whole mechanism was analysed."""
+    scene = scene_with(tmp_path, "", "")
+    analysed = []
+    monkeypatch.setattr("graphplan.analysis.analyse", lambda *args, **kwargs: analysed.append(args))
+    said = refused(capsys, ["run", str(scene), "--out", "out", *argv])
+    assert said.startswith(told) and "did you mean" in said, said
+    assert analysed == [] and sorted(path.name for path in tmp_path.iterdir()) == ["scene.toml"]
+
+
 # --- the scene: a key misspelt, a length in millimetres -----------------------------------------------------------
 
 
