@@ -140,7 +140,8 @@ def _parser() -> argparse.ArgumentParser:
         prog="graphplan",
         description="The plan method of the theory of machines, from one scene file.",
         epilog=EXAMPLES + EXIT_STATUS, formatter_class=argparse.RawDescriptionHelpFormatter)
-    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    # Not required here: argparse's "the following arguments are required: COMMAND" named none of them.
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND")
     run = commands.add_parser("run", help="analyse a scene and write results.json, the drawings and the tables",
                               epilog=EXAMPLES + EXIT_STATUS, formatter_class=argparse.RawDescriptionHelpFormatter)
     # A string: a Path reads ./- as -, which names standard input, not the file ./- names.
@@ -184,7 +185,10 @@ def _parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
     _print_what_the_console_cannot_show_escaped()
-    arguments, unknown = _parser().parse_known_args(argv)
+    parser = _parser()
+    arguments, unknown = parser.parse_known_args(argv)
+    if arguments.command is None:
+        parser.error("give a command: run, check or new (graphplan --help tells what each does)")
     if unknown:
         # argparse hands a command's unknown options up to the top parser, whose usage lists no options at all.
         arguments.command_parser.error(_unknown_told(arguments.command_parser, unknown))

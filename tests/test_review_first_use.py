@@ -68,6 +68,12 @@ def test_a_command_or_kind_mistyped_is_answered_with_the_one_meant(capsys, argv,
     assert "invalid choice" in told and told.endswith(f"did you mean {meant}?"), told
 
 
+def test_no_command_at_all_is_told_with_the_commands_there_are(capsys):
+    """It said "the following arguments are required: COMMAND", naming none."""
+    assert usage_error(capsys, []) == "graphplan: error: give a command: run, check or new (graphplan --help tells " \
+                                      "what each does)"
+
+
 @pytest.mark.parametrize(("argv", "meant"), [
     (["run", "scene.toml", "--onyl", "velocity"], "--only"),
     (["run", "scene.toml", "--formt=png"], "--format"),
