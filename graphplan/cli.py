@@ -112,9 +112,16 @@ class _Parser(argparse.ArgumentParser):
                 action, f"invalid choice: {value!r} (choose from {choices}){suggestion(str(value), list(action.choices))}")
 
 
-def _unknown_told(parser: argparse.ArgumentParser, unknown: list[str]) -> str:
-    """argparse's "unrecognized arguments", with the option meant beside the first mistyped (--onyl, -o)."""
+def _unknown_told(parser: argparse.ArgumentParser, unknown: list[str], arguments: argparse.Namespace) -> str:
+    """argparse's "unrecognized arguments", with the option meant beside the first mistyped (--onyl, -o), or the
+    list a name left outside with a space was meant to be in (--only velocity acceleration)."""
+    from .deliverables import FORMATS, PIECES
+
     told = f"unrecognized arguments: {' '.join(unknown)}"
+    for option, dest, names in (("--only", "only", PIECES), ("--format", "formats", FORMATS)):
+        given, left_out = getattr(arguments, dest, None), [word for word in unknown if word in names]
+        if given and left_out:
+            return f"{told}; the names {option} takes are comma-separated: {option} {','.join(given + left_out)}"
     options = [name for action in parser._actions for name in action.option_strings if name.startswith("--")]
     for word in unknown:
         if not word.startswith("-") or word == "-":
@@ -191,7 +198,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.error("give a command: run, check or new (graphplan --help tells what each does)")
     if unknown:
         # argparse hands a command's unknown options up to the top parser, whose usage lists no options at all.
-        arguments.command_parser.error(_unknown_told(arguments.command_parser, unknown))
+        arguments.command_parser.error(_unknown_told(arguments.command_parser, unknown, arguments))
     try:
         with _terminated_as_interrupted():
             if arguments.command == "check":

@@ -88,6 +88,18 @@ def test_an_option_mistyped_is_answered_with_the_one_meant(capsys, argv, meant):
         told.endswith(f"did you mean {meant}?"), told
 
 
+@pytest.mark.parametrize(("argv", "meant"), [
+    (["--only", "velocity", "acceleration"], "--only velocity,acceleration"),
+    (["--only", "velocity", "acceleration", "forces"], "--only velocity,acceleration,forces"),
+    (["--format", "svg", "png", "--only", "velocity"], "--format svg,png"),
+])
+def test_a_list_given_with_spaces_between_its_own_words_is_told_to_take_commas(capsys, argv, meant):
+    """The shell hands "--only velocity acceleration" over as two words: argparse told "unrecognized arguments:
+    acceleration" alone."""
+    told = usage_error(capsys, ["run", "scene.toml", *argv])
+    assert told.endswith(f"comma-separated: {meant}"), told
+
+
 @pytest.mark.parametrize(("given", "meant"), [("RU", "ru"), ("russian", "ru"), ("cn", "zh")])
 def test_a_locale_written_otherwise_is_answered_as_the_scene_s_locale_is(capsys, given, meant):
     """The scene's locale = "RU" is told "did you mean 'ru'?", --sheet a2 "did you mean 'A2'?"; --locale RU was told
