@@ -6,6 +6,7 @@ written; the help says what the exit statuses mean.
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -215,6 +216,21 @@ def test_an_output_folder_that_may_not_be_written_in_is_left_as_it_is(tmp_path, 
     assert analysed == []
     assert {path.name: path.read_bytes() for path in out.iterdir()} == before
     assert sorted(path.name for path in tmp_path.iterdir()) == ["out", "scene.toml"]
+
+
+def test_the_course_project_s_table_names_the_parts_of_each_drawing_the_run_writes_in_parts(tmp_path, capsys):
+    """dynamics-1.svg … and forces_friction_3-1.svg … stood in the shaper's folder with nothing in the table of what
+    the run writes to say what they are (its test counts a part as its drawing's own)."""
+    table = (ROOT / "docs" / "course-project.md").read_text(encoding="utf-8").split("writes into `shaper/`:")[1]
+    table = table.split("\n\n", 2)[1]
+    assert main(["new", "shaper"]) == 0
+    # The parts of the drawings the note shows: those of the forces and the dynamics, written with the note.
+    assert main(["run", "shaper.toml", "--out", "shaper", "--only", "forces,dynamics,note"]) == 0
+    capsys.readouterr()
+    parts = {re.sub(r"\d+", "N", path.name) for path in (tmp_path / "shaper").iterdir()
+             if re.search(r"-\d+\.svg$", path.name)}
+    listed = {re.sub(r"\d+", "N", name) for name in re.findall(r"`([^`]+-\d+\.svg)`", table)}
+    assert parts and parts <= listed, parts - listed
 
 
 # --- as a student runs it -----------------------------------------------------------------------------------------
