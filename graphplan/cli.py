@@ -30,7 +30,8 @@ if TYPE_CHECKING:
 EXIT_STATUS = """
 exit status:
   0    done (check: the scene is ok, with its warnings or without)
-  2    refused: the command line, the scene or the output folder, told in one line on stderr; nothing is written
+  2    refused, in a line on stderr: the command line (under its usage), the scene or the output folder;
+       nothing is written
   130  interrupted by Ctrl-C (143 killed, 129 the terminal closed, 141 the reader of its output gone); the
        output folder is left as it was
 """
