@@ -1,6 +1,6 @@
 """A student's first use: the mistakes one makes at the command line, each told in a line that names where (the
 command, the flag, the key, the file) and what, with the near name meant, exit status 2, no traceback and nothing
-written; the help says what the exit statuses mean.
+written; the help says what the exit statuses mean, and the course project's table what each file the run writes is.
 """
 
 from __future__ import annotations
@@ -48,7 +48,8 @@ def refused(capsys: pytest.CaptureFixture[str], argv: list[str]) -> str:
     return lines[0].removeprefix("graphplan: error: ")
 
 
-def scene_with(tmp_path: Path, old: str, new: str, name: str = "scene.toml") -> Path:
+def scene_with(tmp_path: Path, old: str = "", new: str = "", name: str = "scene.toml") -> Path:
+    """The slider-crank starter, as `graphplan new slider-crank` writes it, with ``old`` changed to ``new``."""
     assert old in SLIDER_CRANK, old
     path = tmp_path / name
     path.write_text(SLIDER_CRANK.replace(old, new, 1), encoding="utf-8")
@@ -137,7 +138,7 @@ def test_an_empty_path_is_told_empty_not_taken_for_this_folder(tmp_path, capsys,
 ])
 def test_a_piece_mistyped_is_told_before_the_mechanism_is_analysed(tmp_path, capsys, monkeypatch, argv, told):
     """--format pnng was told at once, --only velocty only once the whole mechanism was analysed."""
-    scene = scene_with(tmp_path, "", "")
+    scene = scene_with(tmp_path)
     analysed = []
     monkeypatch.setattr("graphplan.analysis.analyse", lambda *args, **kwargs: analysed.append(args))
     said = refused(capsys, ["run", str(scene), "--out", "out", *argv])
@@ -188,7 +189,7 @@ def test_a_named_point_placed_in_millimetres_is_warned_of_before_the_refusal_it_
 
 @pytest.mark.parametrize("under", ["", "sub"])
 def test_an_output_that_is_a_file_is_refused_naming_the_option(tmp_path, capsys, under):
-    scene = scene_with(tmp_path, "", "")
+    scene = scene_with(tmp_path)
     mine = tmp_path / "report.txt"
     mine.write_text("mine", encoding="utf-8")
     given = mine / under if under else mine
@@ -202,7 +203,7 @@ def test_an_output_folder_that_may_not_be_written_in_is_left_as_it_is(tmp_path, 
     """A folder made read-only (chmod a-w) was swapped for a new one, and for another user than root its old
     files, which may not be deleted, stayed behind in a hidden .out.old-PID beside it. Root, who runs the tests,
     may write anywhere: the disk's answer is asked through os.access."""
-    scene = scene_with(tmp_path, "", "")
+    scene = scene_with(tmp_path)
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out), "--only", "positions"]) == 0
     capsys.readouterr()
@@ -216,6 +217,9 @@ def test_an_output_folder_that_may_not_be_written_in_is_left_as_it_is(tmp_path, 
     assert analysed == []
     assert {path.name: path.read_bytes() for path in out.iterdir()} == before
     assert sorted(path.name for path in tmp_path.iterdir()) == ["out", "scene.toml"]
+
+
+# --- what the docs say a run writes -------------------------------------------------------------------------------
 
 
 def test_the_course_project_s_table_names_the_parts_of_each_drawing_the_run_writes_in_parts(tmp_path, capsys):
