@@ -224,7 +224,10 @@ def suggestion(word: str, choices: Any) -> str:
     alias = alias if alias in names else folded.get(plain(word.strip()).casefold())
     if alias in names:
         return f"; did you mean {alias!r}?"
-    close = difflib.get_close_matches(word, names, n=1, cutoff=0.5)
+    # Two letters that share one with a name are half alike: de (German) was "did you mean 'en'?".
+    short = len(word.strip()) <= 2
+    close = difflib.get_close_matches(word, names, n=1, cutoff=0.51 if short else 0.5) \
+        or [name for name in names if _swapped(lowered, name.lower())]
     return f"; did you mean {close[0]!r}?" if close else ""
 
 

@@ -111,6 +111,16 @@ def test_a_locale_written_otherwise_is_answered_as_the_scene_s_locale_is(capsys,
                    f"(got {given!r})"
 
 
+@pytest.mark.parametrize("given", ["de", "fr"])
+def test_a_language_graphplan_has_not_is_told_the_ones_it_has_and_none_as_meant(tmp_path, capsys, given):
+    """Sharing one letter of two, de was "did you mean 'en'?" and fr "did you mean 'ru'?", in the scene and on the
+    command line."""
+    told = usage_error(capsys, ["run", "scene.toml", "--locale", given])
+    assert told == f"graphplan run: error: argument --locale: must be one of en, ru, zh (got {given!r})"
+    scene = scene_with(tmp_path, 'locale  = "en"', f'locale  = "{given}"')
+    assert refused(capsys, ["check", str(scene)]) == f"scene.locale: must be one of en, ru, zh (got {given!r})"
+
+
 def test_the_help_of_every_command_says_what_its_exit_statuses_mean(capsys):
     for argv in (["--help"], ["run", "--help"], ["check", "--help"], ["new", "--help"]):
         with pytest.raises(SystemExit) as stopped:
