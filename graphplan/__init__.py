@@ -10,11 +10,12 @@ The Python interface::
 from __future__ import annotations
 
 import copyreg
+import importlib
+import importlib.util
 import warnings
 from collections.abc import Sequence
 from types import MappingProxyType
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from .errors import (
     AssemblyError,
@@ -24,12 +25,34 @@ from .errors import (
     SingularPositionError,
     UnknownNameError,
 )
-from .mechanism import Mechanism, build
-from .motion import Motion
-from .scene import Scene, load, missing_part, not_a_scene
-from .scene import loads as _read_text  # graphplan.loads is the module of the mechanism's loads
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from .mechanism import Mechanism, build
+    from .motion import Motion
+    from .scene import Scene, load
 
 __version__ = "0.1.0"
+
+# The interface's names from the analysis's modules, each imported when first asked for (PEP 562): the command line
+# imports this package before any command, and `graphplan --help` or `graphplan new` needs none of the analysis.
+_LAZY = {"Mechanism": "mechanism", "build": "mechanism", "Motion": "motion", "Scene": "scene", "load": "scene"}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        value = getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    # A module the package imported with itself before (`import graphplan; graphplan.scene.loads(...)`) still is.
+    if not name.startswith("_") and importlib.util.find_spec(f"{__name__}.{name}") is not None:
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_LAZY})
 
 # Scenes and motions keep their tables in read-only mappings, which pickle and deepcopy cannot take apart by
 # themselves: a process pool's sweep of a parameter sends its scenes to the workers, a notebook copies one to vary.
@@ -45,7 +68,9 @@ copyreg.pickle(MappingProxyType, lambda proxy: (_read_only_mapping, (dict(proxy)
 def load_text(text: str | bytes, source: str = "<scene>") -> Scene:
     """Read and check a scene given as its TOML text (or bytes), as :func:`load` reads a file; ``source`` names
     it in the errors."""
-    return _read_text(text, source)
+    from .scene import loads as read_text  # graphplan.loads is the module of the mechanism's loads
+
+    return read_text(text, source)
 
 
 def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> Motion:
@@ -82,11 +107,15 @@ def solve(scene: Scene, driver: Sequence[float] | np.ndarray | None = None) -> M
     SingularPositionError
         a value where the mechanism is at a toggle and its velocities are not determined.
     """
+    import numpy as np
+
     from .analysis import PATH_SAMPLES
+    from .mechanism import build
     from .motion import reference_at, with_toggles_between
     from .motion import solve as solve_motion
     from .positions import make_positions
     from .reach_advice import reach_hint
+    from .scene import Scene, missing_part, not_a_scene
 
     if not isinstance(scene, Scene):
         raise not_a_scene("solve", scene)
@@ -136,6 +165,8 @@ def _unit_slip(mechanism: Mechanism, values: np.ndarray | None) -> str | None:
     """What to say of driver values that look given in the wrong unit, or None: a crank's whole numbers beyond a turn
     (degrees, read as radians: np.arange(0, 360, 30) is 52 turns), a slider's values outside its travel (metres,
     a thousand times it where they are millimetres).  Only said, never changed: 7 rad may be meant."""
+    import numpy as np
+
     if values is None or not values.size or not np.all(np.isfinite(values)):
         return None
     driver = mechanism.driver

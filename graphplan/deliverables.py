@@ -22,16 +22,16 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from . import kinematic_diagrams, load_diagrams
-from .analysis import Analysis
 from .errors import GraphplanError, SceneError
 from .locale import strings
-from .misreadings import FAR_OFF_PRECISIONS
 from .reader import check_choice
 from .render.primitives import Layer, in_language
 from .scene import OUTPUT_PIECES, Scene, guides_without_angle
 
+# The analysis and what reads it are imported where they are used: the command line's parser takes PIECES and
+# FORMATS from here, and `graphplan --help` need not load the analysis to list them.
 if TYPE_CHECKING:
+    from .analysis import Analysis
     from .dynamics import ConstantSideError
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
@@ -81,6 +81,8 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str 
         return f'needs a sheet format: {sheet_key} is "none"'
     if piece == "dynamics" and scene.dynamics is None:
         return "needs a [dynamics] table"
+    from . import kinematic_diagrams, load_diagrams
+
     if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene, analysis)) is not None:
         return reason
     if piece == "load_diagrams" and (reason := load_diagrams.unavailable(analysis)) is not None:
@@ -344,6 +346,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
 
 
 def _load_diagram_layers(analysis: Analysis) -> list[Layer]:
+    from . import load_diagrams
     from .render import load_diagrams as load_diagrams_layout
 
     return load_diagrams_layout.layout(load_diagrams.of_analysis(analysis), strings(analysis.scene.locale))
@@ -387,6 +390,7 @@ def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larg
     """The drawings of the sheets (:func:`graphplan.render.sheet.course_panels`), the diagrams fitted to the sheet,
     the dynamics drawing ``machine`` where the run draws one (drawn ``larger`` where the sheet has room), and the
     rotor's balancing where the scene has it."""
+    from . import load_diagrams
     from .render.sheet import balancing_panel, course_panels, diagrams_panel, dynamics_panel, load_diagrams_panel
 
     scene = analysis.scene
@@ -907,6 +911,8 @@ SENSIBLE_DRAFTING_PRECISION = (0.05, 2.0)
 def drafting_precision_warnings(scene: Scene) -> list[str]:
     """A line where the scene's ``drafting_precision`` is outside what a ruler reads, as a force_scale that draws a
     polygon too small to read is told: drawn as asked, but said."""
+    from .misreadings import FAR_OFF_PRECISIONS
+
     precision = scene.drawing.drafting_precision
     least, most = SENSIBLE_DRAFTING_PRECISION
     if least <= precision <= most:

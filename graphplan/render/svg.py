@@ -10,8 +10,6 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-import svgwrite
-
 from .primitives import (
     FONT_SIZE_PER_CAP,
     Arrow,
@@ -63,6 +61,10 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
 
     def xy(point: tuple[float, float]) -> tuple[str, str]:
         return _n(point[0] - left), _n(top - point[1])
+
+    # Imported here, not with the module: the layouts that import to_svg are also measured by check and the sheet
+    # packing, which write no SVG, and svgwrite (its validator's grammar built on import) is a good part of a start.
+    import svgwrite
 
     document = svgwrite.Drawing(size=(f"{_n(width)}mm", f"{_n(height)}mm"), profile="full", debug=False)
     document.viewbox(0, 0, float(_n(width)), float(_n(height)))

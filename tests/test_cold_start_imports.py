@@ -1,0 +1,81 @@
+"""What the command line loads before it works, and the work a run no longer does twice (bench/cold_run.py).
+
+Each command is started in a fresh interpreter, as a user starts it, and asked which modules it imported: `graphplan
+--help` lists the pieces and formats without the analysis; `graphplan check` measures the drawings against the sheet
+without the SVG writer (svgwrite builds its validator's grammar on import) or any exporter; `import graphplan`
+loads the analysis only when its interface is used.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+SCENE = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
+# The libraries of the drawing files and the plots: none serves a command that writes no drawing.
+DRAWING_STACK = ("svgwrite", "matplotlib", "scipy", "cairosvg", "docx", "ezdxf", "pylatexenc", "weasyprint")
+
+
+def _loaded_by(*arguments: str, before: str = "") -> tuple[int, set[str], str]:
+    """The exit status, the modules loaded and what was printed by ``graphplan ARGUMENTS`` in a fresh interpreter."""
+    code = (f"import contextlib, io, json, sys\n{before}\n"
+            "from graphplan.cli import main\n"
+            "printed = io.StringIO()\n"
+            "with contextlib.redirect_stdout(printed):\n"
+            "    try:\n"
+            f"        status = main({list(arguments)!r})\n"
+            "    except SystemExit as ended:\n"
+            "        status = ended.code\n"
+            "print(json.dumps([status, sorted(sys.modules), printed.getvalue()]))\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    status, modules, printed = json.loads(done.stdout.splitlines()[-1])
+    return status, set(modules), printed
+
+
+def _packages(modules: set[str], names: tuple[str, ...]) -> list[str]:
+    return sorted({module.split(".")[0] for module in modules} & set(names))
+
+
+def test_help_lists_the_pieces_without_the_analysis_or_the_drawings():
+    status, modules, printed = _loaded_by("--help")
+    assert status == 0
+    assert "run" in printed and "check" in printed
+    status, modules, printed = _loaded_by("run", "--help")
+    assert status == 0 and "load_diagrams" in printed and "docx" in printed  # PIECES and FORMATS, listed
+    loaded = sorted(module for module in modules if module.startswith(("graphplan.analysis", "graphplan.motion",
+                                                                        "graphplan.report", "graphplan.render.")))
+    assert not [module for module in loaded if module not in ("graphplan.render.primitives",
+                                                              "graphplan.render.numerals")], loaded
+    assert not _packages(modules, DRAWING_STACK)
+
+
+def test_check_measures_the_sheets_without_the_svg_writer(tmp_path):
+    status, modules, printed = _loaded_by("check", str(SCENE))
+    assert status == 0
+    assert "structure: I(1,2) → II2(3,4)" in printed and "run writes:" in printed
+    # It did measure the drawings against the sheet (the layouts are loaded): it only wrote no SVG.
+    assert "graphplan.render.sheet" in modules
+    assert not _packages(modules, DRAWING_STACK), _packages(modules, DRAWING_STACK)
+
+
+def test_the_package_loads_the_analysis_only_when_its_interface_is_used():
+    code = ("import sys, graphplan\n"
+            "before = 'numpy' in sys.modules or 'graphplan.scene' in sys.modules\n"
+            "scene = graphplan.load(sys.argv[1])\n"
+            "motion = graphplan.solve(scene)\n"
+            # A module that the package loaded with itself before is still an attribute of it.
+            "again = graphplan.scene.loads(open(sys.argv[1], encoding='utf-8').read())\n"
+            "print(before, type(scene).__name__, type(motion).__name__, again.title == scene.title,\n"
+            "      graphplan.Scene is type(scene), 'Mechanism' in dir(graphplan))\n")
+    done = subprocess.run([sys.executable, "-c", code, str(SCENE)], capture_output=True, text=True, cwd=ROOT,
+                          check=True)
+    assert done.stdout.split() == ["False", "Scene", "Motion", "True", "True", "True"]
+    import graphplan
+
+    with pytest.raises(AttributeError, match="no attribute 'nothing_of_the_kind'"):
+        graphplan.nothing_of_the_kind  # noqa: B018
