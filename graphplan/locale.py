@@ -17,6 +17,9 @@ def strings(locale: str) -> Mapping[str, str]:
     return {**english, **_read(locale)}
 
 
+# Remembered apart from strings(): every other locale's strings fall back on English's, which a run in Russian
+# asks for as well (the diagrams' words), and the file took a parse of its own each time.
+@cache
 def _read(locale: str) -> dict[str, str]:
     text = resources.files("graphplan").joinpath("locales", f"{locale}.toml").read_text(encoding="utf-8")
     return tomllib.loads(text)

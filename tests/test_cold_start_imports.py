@@ -79,3 +79,19 @@ def test_the_package_loads_the_analysis_only_when_its_interface_is_used():
 
     with pytest.raises(AttributeError, match="no attribute 'nothing_of_the_kind'"):
         graphplan.nothing_of_the_kind  # noqa: B018
+
+
+def test_a_russian_run_reads_the_english_strings_once():
+    """A locale's strings fall back on English's, which the diagrams ask for too: en.toml was parsed twice."""
+    code = ("import sys, tomllib\n"
+            "from graphplan import locale\n"
+            "parsed = []\n"
+            "real = tomllib.loads\n"
+            "locale.tomllib = type(sys)('counting')\n"
+            "locale.tomllib.loads = lambda text: parsed.append(len(text)) or real(text)\n"
+            "russian, english = locale.strings('ru'), locale.strings('en')\n"
+            "print(len(parsed), russian['tb_eskd_scale'] != english['tb_eskd_scale'], english['tb_eskd_scale'])\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    count, differ, english_scale = done.stdout.split(maxsplit=2)
+    assert (count, differ) == ("2", "True")  # en.toml and ru.toml, each once
+    assert english_scale.strip() == "Scale"
