@@ -8,6 +8,7 @@ loads the analysis only when its interface is used.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import subprocess
 import sys
@@ -95,3 +96,28 @@ def test_a_russian_run_reads_the_english_strings_once():
     count, differ, english_scale = done.stdout.split(maxsplit=2)
     assert (count, differ) == ("2", "True")  # en.toml and ru.toml, each once
     assert english_scale.strip() == "Scale"
+
+
+def test_the_title_block_is_fitted_once_for_every_sheet_it_is_drawn_on(monkeypatch):
+    """The same block on every sheet, and check's measure of it with each field left out, broke each text afresh:
+    a bisection of forty rounds a field. The second block is the first's texts, and breaks nothing again."""
+    from graphplan.render import title_block as block
+
+    filled = []
+    real = block._filled
+    monkeypatch.setattr(block, "_filled", lambda *given: filled.append(1) or real(*given))
+    fields = block.TitleBlockFields(title="Crank-rocker mechanism of a ratchet feed, unit 3 of the line",
+                                    author="A. Student", organization="Department of machine theory, group 21",
+                                    drawing="Kinematic analysis", scale="1:2", sheet=1, sheets=4)
+    first = block.title_block("eskd", fields, block.labels("en"), (0.0, 0.0))
+    breaks = len(filled)
+    assert breaks > 40  # the title and the organisation broke over lines by bisection
+    second = block.title_block("eskd", dataclasses.replace(fields, sheet=2), block.labels("en"), (0.0, 0.0))
+    assert len(filled) == breaks
+    texts = [item.text for item in first if isinstance(item, block.Text)]
+    assert [item.text for item in second if isinstance(item, block.Text)] == [text if text != "1" else "2"
+                                                                            for text in texts]
+    # Broken as the greedy fill breaks it at the narrowest width: no line of it is wider than the title's widest word
+    # would allow the other lines to be, and the words are all there, in order.
+    title_lines = [text for text in texts if text in fields.title]
+    assert " ".join(title_lines) == fields.title

@@ -30,7 +30,7 @@ import math
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from functools import cache
+from functools import cache, lru_cache
 from importlib import resources
 
 from ..locale import strings
@@ -477,11 +477,18 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
     is found by bisection: a line's width is the sum of its letters' widths.
     A line breaks before or after any ideograph, or ``at_spaces`` only.
     """
+    return list(_wrapped(value, lines, size, weight, at_spaces))
+
+
+# Remembered: a run draws the same title block on every sheet, and check and run measure it with each field left
+# out in turn (cramped), each field's bisection done afresh every time.
+@lru_cache(maxsize=4096)
+def _wrapped(value: str, lines: int, size: float, weight: str, at_spaces: bool) -> tuple[str, ...]:
     tokens = _tokens(value, at_spaces)
     if not tokens:
-        return []
+        return ()
     if lines <= 1 or len(tokens) == 1:
-        return [value.strip()]
+        return (value.strip(),)
     word = [text_width(token, size, weight) for token, _ in tokens]
     space = text_width(" ", size, weight)
     # The space a token is joined to the token before it by, where the two share a line.
@@ -503,7 +510,7 @@ def wrapped(value: str, lines: int, size: float, weight: str = "normal", at_spac
         from_end = _filled(tokens[::-1], word[::-1], [*joint[1:], 0.0][::-1], high)
         if len(from_end) == len(rows):
             rows = [row[::-1] for row in from_end[::-1]]
-    return [_joined(row) for row in rows]
+    return tuple(_joined(row) for row in rows)
 
 
 def _filled(tokens: Sequence[tuple[str, bool]], word: Sequence[float], joint: Sequence[float],
