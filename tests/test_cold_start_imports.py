@@ -121,3 +121,29 @@ def test_the_title_block_is_fitted_once_for_every_sheet_it_is_drawn_on(monkeypat
     # would allow the other lines to be, and the words are all there, in order.
     title_lines = [text for text in texts if text in fields.title]
     assert " ".join(title_lines) == fields.title
+
+
+def test_a_panel_replaced_in_another_field_is_not_measured_again(monkeypatch):
+    """The packing replaces its panels a hundred times and more (their alternatives left off, a heading named): the
+    layers stay the same, and so does their extent, which was measured once."""
+    from graphplan.render import packing
+    from graphplan.render.primitives import Circle, Layer, Polyline, Stroke
+
+    measured = []
+    real = packing.bounds
+    monkeypatch.setattr(packing, "bounds", lambda layers: measured.append(1) or real(layers))
+    layers = (Layer("lines", (Polyline(((0.0, 0.0), (30.0, 5.0)), Stroke(0.25)),)),
+              Layer("dots", (Circle((40.0, -2.0), 1.0, Stroke(0.25)),)))
+    panel = packing.Panel("drawing", layers)
+    assert panel.extent == (0.0, -3.0, 41.0, 5.0)
+    again = dataclasses.replace(panel, label="the same drawing", alternatives=(panel,))
+    assert again.extent == panel.extent
+    assert len(measured) == 1
+    # Other layers are measured: a panel of layers whose items can still change (a list) every time.
+    moved = packing.Panel("drawing", (Layer("lines", (Polyline(((5.0, 1.0), (9.0, 2.0)), Stroke(0.25)),)),))
+    assert moved.extent == (5.0, 1.0, 9.0, 2.0)
+    changing = [Polyline(((0.0, 0.0), (1.0, 1.0)), Stroke(0.25))]
+    open_layers = (Layer("open", changing),)  # type: ignore[arg-type]
+    packing.Panel("open", open_layers)
+    changing.append(Polyline(((0.0, 0.0), (7.0, 1.0)), Stroke(0.25)))
+    assert packing.Panel("open", open_layers).extent == (0.0, 0.0, 7.0, 1.0)

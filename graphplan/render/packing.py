@@ -99,7 +99,7 @@ class Panel:
 
     def __post_init__(self) -> None:
         # Computed once: the packing asks for it at every spot it tries.
-        object.__setattr__(self, "extent", tuple(float(value) for value in bounds(self.layers)))
+        object.__setattr__(self, "extent", _extent(self.layers))
 
     @property
     def ways(self) -> tuple[Panel, ...]:
@@ -110,6 +110,26 @@ class Panel:
         """The drawing with its heading left off, as it stands on the sheet of the part it goes on from."""
         return replace(self, layers=tuple(layer for layer in self.layers if layer.name != HEADING_LAYER),
                        alternatives=tuple(way.without_heading() for way in self.alternatives))
+
+
+# The extents of the layers of the panels made lately, by the layers' identity: a panel replaced in another field
+# alone (its alternatives left off, its heading named, its parts moved) keeps its layers, which were measured with
+# the panel it came from, and a sheet set replaces its panels a hundred times and more.
+_EXTENTS: dict[int, tuple[tuple[Layer, ...], Rect]] = {}
+_EXTENTS_KEPT = 256
+
+
+def _extent(layers: tuple[Layer, ...]) -> Rect:
+    known = _EXTENTS.get(id(layers))
+    if known is not None and known[0] is layers:
+        return known[1]
+    extent = tuple(float(value) for value in bounds(layers))
+    # Kept only where nothing in it can change: a tuple of layers whose items are tuples (of frozen primitives).
+    if type(layers) is tuple and all(type(layer.items) is tuple for layer in layers):
+        if len(_EXTENTS) >= _EXTENTS_KEPT:
+            del _EXTENTS[next(iter(_EXTENTS))]
+        _EXTENTS[id(layers)] = (layers, extent)
+    return extent
 
 
 def _headless(panel: Panel) -> bool:
