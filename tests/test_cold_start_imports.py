@@ -147,3 +147,26 @@ def test_a_panel_replaced_in_another_field_is_not_measured_again(monkeypatch):
     packing.Panel("open", open_layers)
     changing.append(Polyline(((0.0, 0.0), (7.0, 1.0)), Stroke(0.25)))
     assert packing.Panel("open", open_layers).extent == (0.0, 0.0, 7.0, 1.0)
+
+
+def test_a_page_measures_what_a_drawing_keeps_clear_of_once_for_all_the_spots_it_tries(monkeypatch):
+    """A sheet tries some twenty thousand spots; each took the title block's and the corner box's grown boxes
+    afresh. Where the drawing goes is what an exhaustive search of the same spots finds."""
+    from graphplan.render import packing
+    from graphplan.render.primitives import Layer, Polyline, Stroke
+
+    def drawing(name: str, width: float, height: float) -> packing.Panel:
+        return packing.Panel(name, (Layer(name, (Polyline(((0.0, 0.0), (width, height)), Stroke(0.25)),)),))
+
+    page = packing.Page(size=(420.0, 297.0), frame=(20.0, 5.0, 415.0, 292.0), block=(230.0, 5.0, 415.0, 60.0),
+                        area=(25.0, 10.0, 410.0, 287.0))
+    assert page.place(drawing("plan-5", 150.0, 120.0))
+    asked = []
+    real = packing.Page.obstacles
+    monkeypatch.setattr(packing.Page, "obstacles", lambda self: asked.append(1) or real(self))
+    assert page.place(drawing("plan-11", 150.0, 120.0))
+    assert len(asked) == 1
+    (_, first, _), (_, second, _) = page.placed
+    assert first == (25.0, 167.0, 175.0, 287.0)  # the top left corner of the area
+    # Beside the first, a gap away, level with its top: the most compact of the spots, clear of the title block.
+    assert second == (175.0 + packing.GAP_MM, 167.0, 340.0, 287.0)

@@ -43,6 +43,8 @@ from .primitives import Layer, bounds
 GAP_MM = 15.0
 # A free strip of an empty sheet narrower than this (mm) is no room a refusal offers.
 _LEAST_ROOM_MM = 10.0
+# A drawing may reach this far (mm) past the area's edge or into the room kept round another: rounding, not overlap.
+_EDGE = 1e-6
 # How a page's drawings grow as each is placed (:meth:`Page.place`): as a block of the sheet's shape, which
 # fills a page, or down a column or along a row, which a page is laid out afresh in where a block leaves no room
 # for the next drawing.
@@ -218,14 +220,19 @@ class Page:
         # Under a corner box is as high as beside it: a drawing put beside it, as high as can be, left the box's
         # width unused under it (the diagrams then found no room beside a plan sheet).
         highest = self.area[3] if self.corner is None or not self.tuck else self.corner[1] - PADDING_MM
+        # What a drawing keeps clear of, and the drawings' common bounds so far: found once, not at every spot tried
+        # (a sheet tries some twenty thousand).
+        blocked = [*self.obstacles(), *(_grown(other, GAP_MM - _EDGE) for other in rects)]
+        common = [min(r[0] for r in rects), min(r[1] for r in rects), max(r[2] for r in rects),
+                  max(r[3] for r in rects)] if rects else None
         best: tuple[tuple[float, ...], Rect] | None = None
         for top in tops:
             for left in xs:
                 rect = (left, top - height, left + width, top)
-                if not self._free(rect) or not all(_reads_after(rect, earlier) for earlier in same_kind):
+                if not self._free(rect, blocked) or not all(_reads_after(rect, earlier) for earlier in same_kind):
                     continue
-                union = (min(r[0] for r in [*rects, rect]), min(r[1] for r in [*rects, rect]),
-                         max(r[2] for r in [*rects, rect]), max(r[3] for r in [*rects, rect]))
+                union = rect if common is None else (min(common[0], rect[0]), min(common[1], rect[1]),
+                                                     max(common[2], rect[2]), max(common[3], rect[3]))
                 key = self._compactness((union[2] - union[0]) / area_width, (union[3] - union[1]) / area_height)
                 # Of two as high, the one level with the line under the corner box: drawings beside one another
                 # keep one top.
@@ -247,14 +254,13 @@ class Page:
         geometry = PageGeometry(self.size, self.frame, self.block, self.area, self.corner)
         return any(geometry.holds(width(way), height(way)) for way in panel.ways)
 
-    def _free(self, rect: Rect) -> bool:
+    def _free(self, rect: Rect, blocked: Sequence[Rect]) -> bool:
+        """Whether ``rect`` is within the area and clear of every box ``blocked`` (the title block and the corner
+        box, the drawings placed, each grown by the room kept from it)."""
         ax0, ay0, ax1, ay1 = self.area
-        eps = 1e-6
-        if rect[0] < ax0 - eps or rect[1] < ay0 - eps or rect[2] > ax1 + eps or rect[3] > ay1 + eps:
+        if rect[0] < ax0 - _EDGE or rect[1] < ay0 - _EDGE or rect[2] > ax1 + _EDGE or rect[3] > ay1 + _EDGE:
             return False
-        if any(_overlap(rect, box) for box in self.obstacles()):
-            return False
-        return not any(_overlap(rect, _grown(other, GAP_MM - eps)) for _, other, _ in self.placed)
+        return not any(_overlap(rect, box) for box in blocked)
 
 
 def _reads_after(rect: Rect, earlier: Rect) -> bool:
