@@ -170,3 +170,27 @@ def test_a_page_measures_what_a_drawing_keeps_clear_of_once_for_all_the_spots_it
     assert first == (25.0, 167.0, 175.0, 287.0)  # the top left corner of the area
     # Beside the first, a gap away, level with its top: the most compact of the spots, clear of the title block.
     assert second == (175.0 + packing.GAP_MM, 167.0, 340.0, 287.0)
+
+
+def test_a_text_set_in_several_reports_is_scanned_for_symbols_once(monkeypatch):
+    """The HTML, the LaTeX and the Word document set the same texts, a column's heading on every row: each was
+    scanned with the symbols' long pattern afresh."""
+    from graphplan.report import symbols
+
+    text = "ω3 = VB / lBC, as read off the plan of position 7"
+    first = list(symbols.pieces(text))
+    scanned = []
+    real = symbols.SYMBOL
+
+    class Counting:
+        def finditer(self, text: str):
+            scanned.append(text)
+            return real.finditer(text)
+
+    monkeypatch.setattr(symbols, "SYMBOL", Counting())
+    assert list(symbols.pieces(text)) == first
+    assert not scanned
+    # Nothing left out, in order; the symbols told apart from the plain runs.
+    assert "".join(piece if isinstance(piece, str) else piece.base + piece.index for piece in first) == text
+    assert symbols.Symbol("ω", "3", "") in first
+    assert " as read off the plan of position 7" in "".join(piece for piece in first if isinstance(piece, str))

@@ -124,17 +124,26 @@ def pieces(text: str, verbatim: Collection[str] = ()) -> Iterator[str | Symbol]:
     ``verbatim``: the user's own texts (a title, a ``[project]`` value) wherever they stand whole in ``text`` are
     plain runs: a title "Press F1" is no force F with an index 1.
     """
-    kept = [found.span() for found in _occurrences(tuple(verbatim)).finditer(text)] if verbatim else []
+    return iter(_pieces(text, tuple(verbatim)))
+
+
+# Remembered: the HTML, the LaTeX and the Word document set the same texts (the note's, the tables'), most of them
+# many times over (a column's heading on every row), and each was scanned with the symbols' long pattern afresh.
+@functools.lru_cache(maxsize=8192)
+def _pieces(text: str, verbatim: tuple[str, ...]) -> tuple[str | Symbol, ...]:
+    kept = [found.span() for found in _occurrences(verbatim).finditer(text)] if verbatim else []
+    found: list[str | Symbol] = []
     done = 0
     for match in SYMBOL.finditer(text):
         if any(start < match.end() and match.start() < end for start, end in kept):
             continue
         if match.start() > done:
-            yield text[done:match.start()]
-        yield from _symbols(match)
+            found.append(text[done:match.start()])
+        found.extend(_symbols(match))
         done = match.end()
     if done < len(text):
-        yield text[done:]
+        found.append(text[done:])
+    return tuple(found)
 
 
 @functools.lru_cache(maxsize=16)
