@@ -294,11 +294,12 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         found += _dynamics_drawings(machine, pieces)
     if "diagrams" in pieces:
         tell("drawing the kinematic diagrams")
-        from .kinematic_diagrams import of_analysis
+        from .kinematic_diagrams import AXIS_MM, FIELD_MM
         from .render import diagrams as diagrams_layout
+        from .render.sheet import diagram_parts
 
-        found.append(Drawing("diagrams", diagrams_layout.layout(of_analysis(analysis),
-                                                                strings(analysis.scene.locale))))
+        # At the usual size, as the sheet's usual way draws them: laid out once for both.
+        found.append(Drawing("diagrams", diagrams_layout.stacked(diagram_parts(analysis, AXIS_MM, FIELD_MM)[1])))
     if "load_diagrams" in pieces:
         tell("drawing the load diagrams")
         laid_out = panels.named("load-diagrams") if panels else None

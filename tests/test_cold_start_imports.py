@@ -194,3 +194,17 @@ def test_a_text_set_in_several_reports_is_scanned_for_symbols_once(monkeypatch):
     assert "".join(piece if isinstance(piece, str) else piece.base + piece.index for piece in first) == text
     assert symbols.Symbol("ω", "3", "") in first
     assert " as read off the plan of position 7" in "".join(piece for piece in first if isinstance(piece, str))
+
+
+def test_the_run_lays_out_the_usual_kinematic_diagrams_once_for_its_drawing_and_its_sheet(monkeypatch, tmp_path):
+    import graphplan
+    from graphplan.render import diagrams
+    from graphplan.run import run
+
+    drawn = []
+    real = diagrams.parts
+    monkeypatch.setattr(diagrams, "parts", lambda record, text=None: drawn.append(record.scales) or real(record, text))
+    done = run(graphplan.load(SCENE), tmp_path / "out", only=["diagrams", "sheets"])
+    assert (tmp_path / "out" / "diagrams.svg") in done.files
+    assert len(drawn) > 1  # the usual size and the larger ones the sheet tried
+    assert len(set(drawn)) == len(drawn), "a size of the diagrams was laid out twice"

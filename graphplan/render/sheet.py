@@ -584,14 +584,11 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     the panel's ways, largest first and the usual last, of which the
     packing takes the largest that the room left on a sheet holds.
     """
-    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, interval_count, of_analysis
+    from ..kinematic_diagrams import AXIS_MM, FIELD_MM, interval_count
     from . import diagrams as diagrams_layout
 
-    text = strings(analysis.scene.locale)
-
     def drawn_at(axis: float, field: float) -> tuple[str, list[list[Layer]]]:
-        record = of_analysis(analysis, axis_mm=axis, field_mm=field)
-        return text["kd_title"].format(link=record.link, point=record.point or ""), diagrams_layout.parts(record, text)
+        return diagram_parts(analysis, axis, field)
 
     form = form_of(analysis.scene.locale)
     intervals = interval_count(analysis.mechanism.driver.cyclic, analysis.scene.positions.count)
@@ -631,6 +628,25 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     # The parts are the usual diagrams': where no sheet holds a way whole, they stand apart at the usual size.
     first, *others = sorted(larger, key=lambda way: -width(way) * height(way))
     return replace(first, alternatives=(*others, usual))
+
+
+# The kinematic diagrams' parts by the φ axis and field they are drawn at, for an analysis: the run's own drawing
+# (diagrams.svg) is the sheet's usual way, which the sheet laid out already.
+_diagram_parts: OwnedMemo[tuple[str, list[list[Layer]]]] = OwnedMemo()
+
+
+def diagram_parts(analysis: Analysis, axis: float, field: float) -> tuple[str, list[list[Layer]]]:
+    """The title and the parts (:func:`graphplan.render.diagrams.parts`) of the kinematic diagrams of ``analysis``
+    drawn on a φ axis of ``axis`` mm and fields ``field`` mm tall, laid out once."""
+    from ..kinematic_diagrams import of_analysis
+    from . import diagrams as diagrams_layout
+
+    def drawn() -> tuple[str, list[list[Layer]]]:
+        text = strings(analysis.scene.locale)
+        record = of_analysis(analysis, axis_mm=axis, field_mm=field)
+        return text["kd_title"].format(link=record.link, point=record.point or ""), diagrams_layout.parts(record, text)
+
+    return _diagram_parts.get(analysis, (axis, field), drawn)
 
 
 # Diagrams drawn larger on a sheet with room are tried at these multiples of the usual φ axis and of the usual
