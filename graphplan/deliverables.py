@@ -745,6 +745,8 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     drawn at, ``lever_scales``), each in Markdown and LaTeX (the note also in HTML).  A scene without a linkage has
     only the note."""
     files: dict[str, str] = {}
+    if not {"note", "errors", "forces"} & set(pieces):
+        return files  # no text asked for: the LaTeX writer and its Markdown parser stay unloaded
     from .report.latex import latex_document, latex_fragment
     from .report.markdown import user_texts
 

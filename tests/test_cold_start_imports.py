@@ -208,3 +208,14 @@ def test_the_run_lays_out_the_usual_kinematic_diagrams_once_for_its_drawing_and_
     assert (tmp_path / "out" / "diagrams.svg") in done.files
     assert len(drawn) > 1  # the usual size and the larger ones the sheet tried
     assert len(set(drawn)) == len(drawn), "a size of the diagrams was laid out twice"
+
+
+def test_a_run_of_drawings_alone_loads_no_report_writer(tmp_path):
+    """`--only velocity` writes the plan sheets and results.json: the LaTeX writer and markdown-it were loaded for
+    the tables and the note it does not write."""
+    out = tmp_path / "velocity"
+    status, modules, _ = _loaded_by("run", str(SCENE), "--out", str(out), "--only", "velocity")
+    assert status == 0
+    assert sorted(path.name for path in out.iterdir()) == [".graphplan-written", "plan_11.svg", "plan_5.svg",
+                                                           "results.json"]
+    assert not {"graphplan.report.latex", "graphplan.report.markdown", "markdown_it"} & modules
