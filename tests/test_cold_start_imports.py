@@ -219,3 +219,32 @@ def test_a_run_of_drawings_alone_loads_no_report_writer(tmp_path):
     assert sorted(path.name for path in out.iterdir()) == [".graphplan-written", "plan_11.svg", "plan_5.svg",
                                                            "results.json"]
     assert not {"graphplan.report.latex", "graphplan.report.markdown", "markdown_it"} & modules
+
+
+def test_the_spots_round_a_label_share_their_directions_and_rings_with_every_other_label():
+    """A run places a thousand labels, each at ninety-six spots: the order the directions are tried in and each
+    spot's ring were built afresh for every one. Shared now, read-only, and the spots where they were."""
+    import math
+
+    import numpy as np
+
+    from graphplan.render import labels
+    from graphplan.render.primitives import text_width
+
+    assert labels._turns(16) is labels._turns(16)
+    assert labels._turns(16).tolist() == [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8]
+    ring, order = labels._rings_and_orders(2, 16)
+    assert labels._rings_and_orders(2, 16)[0] is ring
+    assert ring.tolist() == [0] * 16 + [1] * 16 and order.tolist() == list(range(16)) * 2
+    with pytest.raises(ValueError, match="read-only"):
+        ring[0] = 5
+    anchor = labels.Anchor((10.0, 20.0), "B", size=3.0, prefer=math.pi / 2)
+    rings, orders, boxes = labels._candidates(anchor, 1.2, (0.0, 0.5))
+    assert rings.tolist() == ring.tolist() and orders.tolist() == order.tolist()
+    # The second ring's third spot: a turn of one sixteenth back from straight up, its near edge 1.2 + 1.5 mm out.
+    width = text_width("B", 3.0)
+    direction = math.pi / 2 - math.pi / 8
+    x = 10.0 + math.cos(direction) * (1.2 + 0.5 * 3.0 + width / 2)
+    y = 20.0 + math.sin(direction) * (1.2 + 0.5 * 3.0 + 0.55 * 3.0) - 0.45 * 3.0
+    assert boxes[16 + 2] == pytest.approx([x - width / 2, y - 0.9, x + width / 2, y + 3.45], abs=1e-12)
+    assert np.all(boxes[:, 2] - boxes[:, 0] == pytest.approx(width))

@@ -12,6 +12,7 @@ intersection tests.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from collections.abc import Sequence
@@ -615,7 +616,7 @@ def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...], direction
     radii = np.array([gap + share * anchor.size for share in shares])
     half = directions // 2
     turns = _turns(directions)
-    ring, order = np.divmod(np.arange(len(radii) * len(turns)), len(turns))
+    ring, order = _rings_and_orders(len(radii), directions)
     direction = anchor.prefer + turns[order] * math.pi / half
     # Push the box's near edge, not its centre, out to the radius.
     at = anchor.at if at is None else at
@@ -654,11 +655,25 @@ def _kept_off(anchor: Anchor, boxes: np.ndarray, led: np.ndarray) -> np.ndarray:
     return within | (led & (math.dist(anchor.at, point) < distance))
 
 
+# The two below are the same for every label of every drawing: remembered, read-only, for the thousand labels a run
+# places.
+@functools.cache
 def _turns(directions: int) -> np.ndarray:
     """The steps of a full turn / ``directions`` from the preferred direction, in the order the spots are tried:
     nearest first, each way."""
     half = directions // 2
-    return np.array([0, *(turn for step in range(1, half) for turn in (step, -step)), half])
+    turns = np.array([0, *(turn for step in range(1, half) for turn in (step, -step)), half])
+    turns.flags.writeable = False
+    return turns
+
+
+@functools.cache
+def _rings_and_orders(rings: int, directions: int) -> tuple[np.ndarray, np.ndarray]:
+    """The ring and the place in :func:`_turns`' order of each of the ``rings`` × ``directions`` spots, ring by ring."""
+    ring, order = np.divmod(np.arange(rings * directions), directions)
+    ring.flags.writeable = False
+    order.flags.writeable = False
+    return ring, order
 
 
 def open_direction(at: tuple[float, float], items: Sequence[Primitive], default: float = math.pi / 4,
