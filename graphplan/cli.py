@@ -140,8 +140,8 @@ def _unknown_told(parser: argparse.ArgumentParser, unknown: list[str], arguments
 
 
 def _parser() -> argparse.ArgumentParser:
+    from .choices import LOCALES, SHEETS
     from .deliverables import FORMATS, PIECES
-    from .scene import LOCALES, SHEETS
     from .starters import KINDS
 
     parser = _Parser(

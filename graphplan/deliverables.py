@@ -22,17 +22,18 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from .choices import OUTPUT_PIECES
 from .errors import GraphplanError, SceneError
 from .locale import strings
 from .reader import check_choice
 from .render.primitives import Layer, in_language
-from .scene import OUTPUT_PIECES, Scene, guides_without_angle
 
-# The analysis and what reads it are imported where they are used: the command line's parser takes PIECES and
-# FORMATS from here, and `graphplan --help` need not load the analysis to list them.
+# The scene, the analysis and what reads them are imported where they are used: the command line's parser takes
+# PIECES and FORMATS from here, and `graphplan --help` need not load them to list the pieces.
 if TYPE_CHECKING:
     from .analysis import Analysis
     from .dynamics import ConstantSideError
+    from .scene import Scene
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
 PIECES = OUTPUT_PIECES
@@ -424,6 +425,7 @@ class MachineDynamics:
     def __init__(self, source: Analysis | Scene) -> None:
         from .dynamics import ConstantSideError, equivalent_model_of
         from .flywheel import diagram_model_of, flywheel_from_spec
+        from .scene import Scene
 
         with _scene_values("dynamics"):
             self.title = source.title if isinstance(source, Scene) else source.scene.title
@@ -930,6 +932,8 @@ def drafting_precision_warnings(scene: Scene) -> list[str]:
 def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[str]:
     """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
+    from .scene import guides_without_angle
+
     told = guides_without_angle(scene)
     if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
         from .flywheel import delta_warning

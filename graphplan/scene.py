@@ -23,6 +23,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, BinaryIO
 
+from .choices import LOCALES, OUTPUT_PIECES, SHEETS
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
@@ -44,8 +45,6 @@ if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
 # (bench/positions_count.py): 20 000 run in about a minute.  100 000 took 14 minutes and 2.8 GB on a shared
 # machine, with the console silent, which a student takes for a hang.
 MAX_POSITIONS = 20_000
-LOCALES = ("en", "ru", "zh")
-SHEETS = ("A1", "A2", "A3", "A4", "none")
 # A sheet of the ISO A series the drawings are not laid out on (A0, A5): told so, not guessed at as the nearest name.
 _OTHER_A_SIZE = re.compile(r"[AaАа][0-9]+")
 SENSES = ("ccw", "cw", "forward", "backward")
@@ -58,12 +57,6 @@ MOST_VELOCITY_PLANS = 48
 # ([dynamics] may do without one: a flywheel sized from a load diagram alone.)
 LINKAGE_KEYS = ("groups", "points", "links", "loads", "friction", "positions", "measured", "forces")
 INERTIA_FORMS = ("couple", "displaced")
-# Every piece a run can deliver, in the order a course project presents them (graphplan.deliverables):
-# the seven of the scene contract, then the kinematic diagrams, the load diagrams the force analysis reads, the
-# accuracy report, the machine's dynamics, the rotor's balancing, the vibration, the sheets and the report figures.
-OUTPUT_PIECES = ("positions", "velocity", "acceleration", "diagrams", "load_diagrams", "forces", "lever", "errors",
-                 "accuracy", "note",
-                 "dynamics", "balancing", "vibration", "sheets", "figures")
 
 
 @dataclass(frozen=True)

@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 from importlib import resources
 
+from .choices import LOCALES
 from .locale import strings
-from .scene import LOCALES
 
 # The kinds a newcomer starts from, each a scene under ``templates/``: mechanisms, and machines known without
 # a linkage (a flywheel from its load diagrams, a rotor to balance on its mounts).

@@ -55,6 +55,15 @@ def test_help_lists_the_pieces_without_the_analysis_or_the_drawings():
     assert not _packages(modules, DRAWING_STACK)
 
 
+def test_help_lists_the_languages_sheets_and_pieces_without_the_scene_reader():
+    """The choices the options list come from graphplan.choices: the scene's reader loads the groups' solvers, and
+    numpy and shapely under them, which listing them needs none of."""
+    status, modules, printed = _loaded_by("run", "--help")
+    assert status == 0
+    assert "{en,ru,zh}" in printed and "{A1,A2,A3,A4,none}" in printed and "positions, velocity" in printed
+    assert not {"graphplan.scene", "graphplan.groups", "numpy", "shapely"} & modules
+
+
 def test_check_measures_the_sheets_without_the_svg_writer(tmp_path):
     status, modules, printed = _loaded_by("check", str(SCENE))
     assert status == 0
