@@ -292,9 +292,25 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference, wor
     back, no extremes but its turns in the crank's (:attr:`PositionSet.working_link_turns`), where the scene asks
     for nothing that needs extremes.  Of ``working``'s link and sense where given (a load's own stroke), whose
     link turning round is its caller's to refuse."""
-    driver = mechanism.driver
     own = working is None
     working = working or mechanism.scene.positions.working
+    try:
+        return _extremes_over_turn(mechanism, start, reference, working, own)
+    except SingularPositionError as error:
+        # Met between the scene's positions, or at an extreme itself (a change-point linkage folds there): the
+        # positions alone would pass it with a warning, the strokes cannot be cut at it.
+        leave_out = "leave positions.working out" if own else f"leave {working.where} out"
+        if own and mechanism.scene.positions.start == "extreme":
+            leave_out += ", and number the positions from an angle (positions.start = 0.0)"
+        raise SingularPositionError(error.position, error.group, f"{error.reason}; {working.where}: link "
+                                    f"{working.link}'s extreme positions are sought over the crank's turn, which "
+                                    f"passes it, and a stroke cannot begin or end where the mechanism may fold either "
+                                    f"way: {leave_out}") from None
+
+
+def _extremes_over_turn(mechanism: Mechanism, start: float, reference: Reference, working: Working, own: bool
+                        ) -> tuple[tuple[float, float] | None, tuple[float, ...], int]:
+    driver = mechanism.driver
     # Half a step off the start, so that an extreme exactly at the start falls inside a bracket.
     steps = start + driver.sense * 2.0 * math.pi * (np.arange(_BRACKET_SWEEP + 1) - 0.5) / _BRACKET_SWEEP
     sweep = solve(mechanism, steps, reference)

@@ -223,3 +223,25 @@ def test_a_travel_wholly_past_the_reach_is_told_where_the_mechanism_does_assembl
     scene.write_text(PISTON_TO_DEAD_CENTRE.replace("travel = [0.02, 0.2]", f"travel = [{begin}, {end}]"),
                      encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "velocity"]) == 0
+
+
+def test_a_toggle_on_the_way_to_the_working_link_s_extremes_says_the_search_for_them_met_it(tmp_path, capsys):
+    """A change-point four-bar (here the crank and frame as long as coupler and rocker together) given a working
+    stroke was refused as "singular position at φ = 180°" alone, though the scene numbers its positions from 0°: the
+    toggle was met seeking the rocker's extremes, and the message said neither that nor what to change."""
+    scene = tmp_path / "toggle.toml"
+    scene.write_text(four_bar_through_a_toggle() + """
+[positions]
+count = 12
+start = 0.0
+working = { link = 4, sense = "ccw" }
+""", encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert "singular position at φ = 180° in group II(3,4): links 3 and 4 lie in one line (a toggle)" in err
+    assert "positions.working: link 4's extreme positions are sought over the crank's turn, which passes it" in err
+    assert "leave positions.working out" in err
+    without = scene.read_text(encoding="utf-8").replace('working = { link = 4, sense = "ccw" }\n', "")
+    scene.write_text(without, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0  # the positions themselves pass the toggle with a warning
