@@ -156,7 +156,7 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("scene", type=_given_path,
                      help=f"the scene file (TOML), or - to read it from standard input{_piped('run')}")
     run.add_argument("--out", type=lambda text: Path(_given_path(text)), default=None,
-                     help=f"output folder (default: output/<scene file name>, {Path('output', STDIN_FOLDER)} for -)")
+                     help=f"output folder (default: output/<the scene file's name without .toml>, {Path('output', STDIN_FOLDER)} for -)")
     run.add_argument("--locale", type=_locale, default=None, metavar="{" + ",".join(LOCALES) + "}",
                      help="the language of the drawings and the text (default: the scene's [scene] locale)")
     run.add_argument("--sheet", type=_sheet, default=None, metavar="{" + ",".join(SHEETS) + "}",

@@ -257,3 +257,14 @@ def test_a_mistyped_command_run_as_a_program_prints_no_traceback_and_the_command
     assert shown.returncode == 2 and shown.stdout == ""
     assert "Traceback" not in shown.stderr and shown.stderr.rstrip().endswith("did you mean 'run'?"), shown.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_run_s_help_names_the_default_folder_the_run_writes(tmp_path, capsys):
+    """The help said output/<scene file name>: the folder is the name without its .toml."""
+    with pytest.raises(SystemExit):
+        main(["run", "--help"])
+    helped = " ".join(capsys.readouterr().out.split())
+    assert "default: output/<the scene file's name without .toml>" in helped
+    (tmp_path / "press.toml").write_text(starter("crank-rocker", "en"), encoding="utf-8")
+    assert main(["run", "press.toml", "--only", "positions"]) == 0
+    assert [path.name for path in (tmp_path / "output").iterdir()] == ["press"]
