@@ -14,6 +14,7 @@
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import os
 from dataclasses import dataclass
@@ -224,10 +225,14 @@ class RotorBalancing:
         polygon's ``vectors`` as laid off (kg·m, complex numbers x + iy)."""
         return self.result.planes
 
-    @cached_property
+    @property
     def results(self) -> dict:
         """``results.json``'s ``balancing``, as the run writes it: ``kind``, ``planes``, ``unbalance``, ``residual``,
-        ``warnings``."""
+        ``warnings``; a copy of the script's own, which the next ask hands out as the run wrote it again."""
+        return copy.deepcopy(self._document)
+
+    @cached_property
+    def _document(self) -> dict:
         from .deliverables import balancing_document
 
         return balancing_document(self.scene)
@@ -266,9 +271,14 @@ class VibrationResponse:
         assert self.scene.vibration is not None
         return steady_state(self.scene.vibration)
 
-    @cached_property
+    @property
     def results(self) -> dict:
-        """``results.json``'s ``vibration``, as the run writes it (angles in degrees, speeds also in rpm)."""
+        """``results.json``'s ``vibration``, as the run writes it (angles in degrees, speeds also in rpm); a copy
+        of the script's own, which the next ask hands out as the run wrote it again."""
+        return copy.deepcopy(self._document)
+
+    @cached_property
+    def _document(self) -> dict:
         from .deliverables import vibration_document
 
         return vibration_document(self.scene)

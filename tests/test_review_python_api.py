@@ -13,6 +13,7 @@ arrays (``analysis.equilibrium.balancing``) could be written through, where the 
 from __future__ import annotations
 
 import copy
+import json
 import math
 import multiprocessing
 import pickle
@@ -304,3 +305,20 @@ def test_the_machine_s_motion_cannot_be_written_through(tmp_path, capsys):
         w = motion.omega
         w *= 30 / np.pi
     assert not (motion.t.flags.writeable or motion.phi.flags.writeable or motion.motor_torque.flags.writeable)
+
+
+def test_a_rotor_s_and_a_machine_s_results_changed_by_a_script_are_the_run_s_again_when_asked_again(tmp_path):
+    """rotor.results and shaking.results were one cached dict each: a script that zeroed a correction in what it
+    was handed (to tabulate, to plot) was handed the zero on every later ask."""
+    from graphplan.starters import starter
+
+    scene_file = tmp_path / "rotor.toml"
+    scene_file.write_text(starter("rotor", "en"), encoding="utf-8")
+    assert main(["run", str(scene_file), "--out", str(tmp_path / "out"), "--only", "balancing,vibration"]) == 0
+    written = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))
+    scene = graphplan.load(scene_file)
+    rotor, shaking = scene.balance(), scene.vibration_response()
+    rotor.results["planes"][0]["mass_radius"] = 0.0
+    shaking.results["amplitude"] = -1.0
+    assert rotor.results["planes"] == written["balancing"]["planes"]
+    assert shaking.results["amplitude"] == written["vibration"]["amplitude"]
