@@ -282,14 +282,16 @@ def _shaft_equation(note: Writer, dynamics, braking: str | None = None, slipping
     """The equation of motion of the driving shaft as the run integrates it: the machine's Je(φ) with the flywheel,
     and the motor's rotor and the clutch's driving half where they turn with it (not while a clutch slips: the
     driving half then has its own equation, and the machine is driven by the clutch's torque); ``braking`` is the
-    key of the brake's term, where one acts."""
+    key of the brake's term, where one acts.  A Je that does not vary has no Je′ term and is no function of φ: the
+    equation is then J·dω/dt = Md − Mr, as the textbooks write it for a constant inertia."""
     text = note.text
-    inertia = [text["note_dyn_inertia_symbol"] + "(φ)"]
+    constant = dynamics.model.inertia_is_constant
+    inertia = [text["note_dyn_inertia_symbol"] + ("" if constant else "(φ)")]
     if dynamics.flywheel_inertia > 0:
         inertia.append(text["note_dyn_flywheel_symbol"])
     if not slipping:
         inertia += _driving_half(note, dynamics)
-    return note.t("note_dyn_equation", inertia=_sum(inertia),
+    return note.t("note_dyn_equation_constant" if constant else "note_dyn_equation", inertia=_sum(inertia),
                   driving=text["note_dyn_clutch_torque_symbol" if slipping else "note_dyn_driving_symbol"],
                   braking=text[braking] if braking else "")
 
@@ -329,7 +331,9 @@ def _equation(note: Writer, dynamics) -> None:
         terms += note.text["note_dyn_motion_no_rotor"]
     # A machine known by its load diagrams alone has no links, so no weights: its Mr is the resisting diagram's.
     resistance = note.text["note_dyn_motion_diagram" if dynamics.model.link == 0 else "note_dyn_motion_loads"]
-    note.para(note.t("note_dyn_motion", equation=equation, terms=terms, resistance=resistance,
+    model = dynamics.model
+    note.para(note.t("note_dyn_motion_constant" if model.inertia_is_constant else "note_dyn_motion",
+                     equation=equation, value=note.n(model.mean_inertia), terms=terms, resistance=resistance,
                      method=dynamics.motion.method, reason=_method_reason(note, dynamics)))
 
 
