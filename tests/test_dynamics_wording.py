@@ -98,3 +98,66 @@ def test_a_varying_inertia_keeps_its_je_prime_term(tmp_path, locale):
     text = in_locale(RATCHET.read_text(encoding="utf-8"), locale) + "\n[dynamics]\ndelta = 0.05\n" + MOTOR
     note = run_note(tmp_path, text)
     assert f"({s['je']}(φ) + {s['flywheel']})·dω/dt + ½·{s['je']}′(φ)·ω² = {s['md']} − {s['mr']}" in note
+
+
+# What each language calls the reduced load of a crank (a moment) and of a slider (a force), and the words for the
+# other kind, which its texts must not use.
+MOMENT = {"en": "reduced moment", "ru": "приведённый момент", "zh": "等效力矩"}
+FORCE = {"en": "reduced force", "ru": "приведённая сила", "zh": "等效力"}
+NEITHER = {"en": ("reduced load", "moment (force)"), "ru": ("(сила)", "момент или сила"), "zh": ("等效载荷", "（力）")}
+
+
+def plans_paragraph(note: str, symbol: str) -> str:
+    """The paragraph after the dynamics table that says what its load column, headed ``symbol``, is."""
+    paragraph = next((line for line in note.splitlines() if line.startswith(f"{symbol} ")), None)
+    assert paragraph, f"the paragraph on {symbol}"
+    return paragraph
+
+
+def without_force_word(text: str, locale: str) -> str:
+    """``text`` with its moment words taken out, so that a force word left is one (Chinese 等效力矩 holds 等效力)."""
+    return text.replace(MOMENT[locale], "")
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_cranks_reduced_load_is_a_moment_in_the_table_and_its_paragraph(tmp_path, locale):
+    """The ratchet (a crank, its driving moment taken constant): the table's load column is Mr, a moment read off
+    the plans, and its title and paragraph say a moment, not a force or a load of no kind."""
+    text = in_locale(RATCHET.read_text(encoding="utf-8"), locale) + "\n[dynamics]\ndelta = 0.05\n"
+    note = run_note(tmp_path, text)
+    symbol = {"en": "Mr", "ru": "Mс", "zh": "Mr"}[locale]
+    paragraph = plans_paragraph(note, symbol)
+    assert MOMENT[locale] in paragraph
+    assert FORCE[locale] not in without_force_word(paragraph, locale)
+    assert not any(word in paragraph for word in NEITHER[locale])
+    lines = note.splitlines()
+    header = next(at for at, line in enumerate(lines) if line.startswith("| ") and f"{symbol}, " in line)
+    title = lines[header - 2]
+    assert MOMENT[locale] in title.lower() and not any(word in title for word in NEITHER[locale]), title
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_sliders_reduced_load_is_a_force(tmp_path, locale):
+    """The lever driven by a cylinder (a slider driver): its reduced load is a force, Fr, and its paragraph says so."""
+    text = in_locale(SLIDER.read_text(encoding="utf-8"), locale) + "\n[dynamics]\n"
+    note = run_note(tmp_path, text)
+    symbol = {"en": "Fr", "ru": "Fс", "zh": "Fr"}[locale]
+    paragraph = plans_paragraph(note, symbol)
+    assert FORCE[locale] in paragraph and MOMENT[locale] not in paragraph
+    assert not any(word in paragraph for word in NEITHER[locale])
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_every_cranks_plans_paragraph_and_table_title_name_a_moment_and_every_sliders_a_force(locale):
+    """All three cases of the paragraph (the driving side constant, the resisting side, neither), not only the ones a
+    scene above runs into: a crank's name a moment, a slider's a force, none both."""
+    import tomllib
+
+    text = tomllib.loads((ROOT / "graphplan" / "locales" / f"{locale}.toml").read_text(encoding="utf-8"))
+    for side in ("driving", "resisting", "none"):
+        crank, slider = text[f"note_dyn_plans_load_{side}"], text[f"note_dyn_plans_load_force_{side}"]
+        assert MOMENT[locale] in crank and FORCE[locale] not in without_force_word(crank, locale), (side, crank)
+        assert FORCE[locale] in slider and MOMENT[locale] not in slider, (side, slider)
+        assert not any(word in crank + slider for word in NEITHER[locale]), side
+    assert not any(word in text["note_dyn_table"] for word in NEITHER[locale])
+    assert MOMENT[locale] in text["note_dyn_table"].lower()

@@ -103,7 +103,7 @@ def test_the_equation_of_motion_says_which_sign_its_mr_has_against_the_table_s_s
     (the crank slows down in the cutting stroke, where Md + Mr of the table is below nought)."""
     scene, note, results = shaper("en")
     omega = abs(scene["driver"]["rpm"]) * math.pi / 30.0
-    table = note[note.index("Reduced inertia and reduced load at the plan positions"):]
+    table = note[note.index("Reduced moment of inertia and reduced moment at the plan positions"):]
     row = re.search(rf"^\| 3 \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \| {NUMBER} \|$",
                     table, re.MULTILINE)
     assert row, "the dynamics table's row of position 3"
