@@ -4,13 +4,19 @@
   linkage whose crank alone has mass) has no term ½·Je′(φ)·ω² and no Je(φ): its equation of motion is
   J·dω/dt = Md − Mr, as the textbooks write it for a constant inertia, with Je's own value beside it.
 - A crank's reduced load is a moment and a slider's a force: the Russian note called a crank's «момент (сила)».
+- A diagram whose ordinate does not start at nought says so as a draftsman does: the slider-driven lever's me(s)
+  ran from 6.5 kg at its abscissa with no mark; its abscissa is now nought and the ordinate broken by a zig-zag.
+  Je(φ) is drawn from Je = 0, and stays so.
 """
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
+from xml.etree import ElementTree
 
+import numpy as np
 import pytest
 
 from graphplan.cli import main
@@ -161,3 +167,101 @@ def test_every_cranks_plans_paragraph_and_table_title_name_a_moment_and_every_sl
         assert not any(word in crank + slider for word in NEITHER[locale]), side
     assert not any(word in text["note_dyn_table"] for word in NEITHER[locale])
     assert MOMENT[locale] in text["note_dyn_table"].lower()
+
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def drawing_group(out: Path, name: str) -> ElementTree.Element:
+    root = ElementTree.parse(out / "dynamics.svg").getroot()
+    return next(g for g in root.iter(f"{SVG}g") if g.get("id") == name)
+
+
+def open_paths(group: ElementTree.Element) -> list[np.ndarray]:
+    """The group's unfilled paths as (x, y) arrays in the SVG's mm, y down."""
+    return [np.array([[float(v) for v in point.split(",")] for point in re.findall(r"[ML]([-\d.]+,[-\d.]+)", path.get("d"))])
+            for path in group.iter(f"{SVG}path") if path.get("fill") == "none"]
+
+
+def numbers_at(group: ElementTree.Element, anchor: str) -> list[tuple[float, float, float]]:
+    """(value, x, y) of the group's texts set with ``anchor`` that are numbers alone."""
+    found = []
+    for text in group.iter(f"{SVG}text"):
+        words = "".join(text.itertext())
+        if text.get("text-anchor") == anchor and re.fullmatch(r"−?\d+(?:[.,]\d+)?", words):
+            found.append((value(words), float(text.get("x")), float(text.get("y"))))
+    return found
+
+
+def lever_reduced_mass(s: float) -> float:
+    """me(s) of the lever driven by a cylinder (fixtures/slider_driven.toml), from its own closure: the rod's end A at
+    (s, 0), B on the circles AB = 0.225 m about A and CB = 0.15 m about C = (0.15, 0.25), right of A→C; the rod 6 kg
+    at A, the coupler 1.4 kg at AB's middle with JS = 0.006, the lever 4 kg 0.06 m from C with JS = 0.02."""
+    pivot = np.array([0.15, 0.25])
+
+    def bodies(travel: float):
+        a = np.array([travel, 0.0])
+        towards = pivot - a
+        distance = float(np.hypot(*towards))
+        unit = towards / distance
+        along = (0.225 ** 2 - 0.15 ** 2 + distance ** 2) / (2 * distance)
+        b = a + along * unit - math.sqrt(0.225 ** 2 - along ** 2) * np.array([-unit[1], unit[0]])
+        return a, (a + b) / 2, pivot + 0.4 * (b - pivot), math.atan2(*(b - a)[::-1]), math.atan2(*(b - pivot)[::-1])
+
+    h = 1e-6
+    ahead, behind = bodies(s + h), bodies(s - h)
+    rates = [(np.asarray(p) - np.asarray(q)) / (2 * h) for p, q in zip(ahead, behind, strict=True)]
+    return (6.0 * rates[0] @ rates[0] + 1.4 * rates[1] @ rates[1] + 0.006 * rates[3] ** 2
+            + 4.0 * rates[2] @ rates[2] + 0.02 * rates[4] ** 2)
+
+
+def test_the_sliders_reduced_mass_diagram_breaks_its_ordinate_over_an_abscissa_at_nought(tmp_path):
+    """The lever's me(s) runs from 8.4 kg down to 6.9 kg (its own closure): its ordinate's ticks start at a round
+    mass under that, and the abscissa, where they would read 6.5 kg, stood unmarked.  The abscissa is numbered 0 on
+    the ordinate, a zig-zag crosses the ordinate between it and the lowest mass, and the curve stands at its masses
+    on the numbers above the break."""
+    text = SLIDER.read_text(encoding="utf-8") + "\n[dynamics]\n"
+    run_note(tmp_path, text)
+    group = drawing_group(tmp_path / "out", "inertia")
+    masses = sorted(numbers_at(group, "end"), key=lambda tick: -tick[2])   # the ordinate's, from the bottom up
+    assert len(masses) >= 3
+    curve = max(open_paths(group), key=len)
+    ordinate = float(curve[0, 0])   # the curve starts at s = 0
+    axis = max((path for path in open_paths(group) if len(path) == 2 and abs(path[0, 1] - path[1, 1]) < 1e-9),
+               key=lambda path: abs(path[1, 0] - path[0, 0]))
+    abscissa = float(axis[0, 1])
+    # Each number beside its tick, a short stroke left of the ordinate, from the bottom up.
+    ticks = sorted((float(path[0, 1]) for path in open_paths(group) if len(path) == 2
+                    and abs(path[0, 1] - path[1, 1]) < 1e-9 and abs(path[1, 0] - ordinate) < 1e-6
+                    and 0.5 < path[1, 0] - path[0, 0] < 2.0), reverse=True)
+    assert len(ticks) == len(masses) and all(abs(tick - y) < 2.0 for tick, (_, _, y) in zip(ticks, masses))
+    # The number at the abscissa says what the abscissa is: nought.
+    assert masses[0][0] == 0.0 and ticks[0] == pytest.approx(abscissa, abs=1e-6), masses
+    resumed = [(mass, tick) for (mass, _, _), tick in zip(masses[1:], ticks[1:])]
+    slope, intercept = np.polyfit([tick for _, tick in resumed], [mass for mass, _ in resumed], 1)
+    low, high = lever_reduced_mass(0.2), lever_reduced_mass(0.0)
+    assert slope * abscissa + intercept > 0.5 * low, "the numbers above resume far from nought"
+    # So the axis is broken: a zig-zag across the ordinate, between the abscissa and the lowest mass numbered.
+    lowest_numbered = resumed[0][1]
+    zigzags = [path for path in open_paths(group) if len(path) >= 4
+               and np.all(np.abs(path[:, 0] - ordinate) < 3.0)
+               and np.min(path[:, 0]) < ordinate - 0.5 and np.max(path[:, 0]) > ordinate + 0.5
+               and lowest_numbered < np.min(path[:, 1]) and np.max(path[:, 1]) < abscissa]
+    assert zigzags, "a break mark across the ordinate"
+    # The curve stands at the lever's own masses on the numbers above the break.
+    assert slope * float(curve[0, 1]) + intercept == pytest.approx(high, rel=5e-3)
+    assert slope * float(curve[-1, 1]) + intercept == pytest.approx(low, rel=5e-3)
+
+
+def test_je_of_phi_is_drawn_from_je_at_nought(tmp_path):
+    """The ratchet's Je(φ), turned under its energy–mass diagram: the numbers of its Je axis, read as a straight
+    scale, give nought at the φ axis it starts from, so that it needs no break."""
+    text = RATCHET.read_text(encoding="utf-8") + "\n[dynamics]\ndelta = 0.05\n"
+    run_note(tmp_path, text)
+    group = drawing_group(tmp_path / "out", "inertia")
+    inertias = numbers_at(group, "middle")
+    assert len(inertias) >= 2
+    slope, intercept = np.polyfit([x for _, x, _ in inertias], [v for v, _, _ in inertias], 1)
+    angles = numbers_at(group, "end")
+    phi_axis = float(np.median([x for _, x, _ in angles])) + 1.0 + 1.2   # the φ numbers end a tick and 1 mm short
+    assert slope * phi_axis + intercept == pytest.approx(0.0, abs=1e-3 * max(v for v, _, _ in inertias))

@@ -73,6 +73,11 @@ AXIS_RUN_MM = 8.0
 TICK_MM = 1.2
 # The ring round a value read off a velocity plan on the curve of the exact one (mm).
 PLAN_RING_MM = 1.2
+# An ordinate that starts far from nought (a reduced mass of 6.5 kg and more) is broken as a draftsman breaks it:
+# its abscissa stands at nought, a zig-zag crosses the ordinate this high over it, and the values resume above;
+# an axis cut off at 6.5 with no mark reads as one that starts at nought, and the curve's swing as a large one.
+BREAK_LIFT_MM = 9.0
+BREAK_HALF_WIDTH_MM = 1.5
 # A tangent of the energy–mass diagram is drawn to the ΔT axis unless its intercept lies further
 # than this many heights of the ΔT diagram from its abscissa; then it is cut short of the axis.
 INTERCEPT_REACH = 3.0
@@ -249,7 +254,8 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
              rings: Sequence[tuple[float, float]] = (), rings_legend: str = "") -> list[Primitive]:
     """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
 
-    ``floor`` starts the ordinate at the smallest value rather than at zero (a reduced mass far from zero).
+    ``floor`` starts the ordinate at a round value under the smallest rather than at zero (a reduced mass far from
+    zero), over a break of :data:`BREAK_LIFT_MM` above the abscissa, which stands at nought.
     ``rings`` are (abscissa in mm, value) of values read off the velocity plans, ringed on the curve and named in the
     legend by ``rings_legend``.
     """
@@ -258,6 +264,7 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     if floor:  # from a round value under the smallest, so that the abscissa is a tick
         step = nice_step(float(np.ptp(values)) / 4)
         base = math.floor(float(np.min(values)) / step + 1e-9) * step
+    lift = BREAK_LIFT_MM if base > 0 else 0.0
     top_mm = (max(float(np.max(values)), base) - base) / scale
     bottom_mm = min(float(np.min(values)) - base, 0.0) / scale
     # The ordinate runs on to the tick under the lowest value where that lies over half a step under the lowest
@@ -269,12 +276,12 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     if bottom_mm * scale < lowest_tick - step / 2:
         bottom_mm = (lowest_tick - step) / scale
     width = float(x[-1])
-    items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm, words)
-    items += ordinate_axis(0.0, bottom_mm, top_mm, scale, base, axis, step)
+    items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm + lift, words)
+    items += ordinate_axis(0.0, bottom_mm, top_mm, scale, base, axis, step, broken_mm=lift)
     for data, stroke, _ in curves:
-        y = (np.asarray(data) - base) / scale
+        y = lift + (np.asarray(data) - base) / scale
         items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
-    scale_y = top_mm + AXIS_RUN_MM + 3.0
+    scale_y = top_mm + lift + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), heading, HEADING, "start", weight="bold"))
     scale_line = f"{scale_text}, {_angle_scale(model, scales.angle, words)}"
     items.append(Text((0.0, scale_y), scale_line, LABEL, "start"))
@@ -287,7 +294,7 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items.append(Text((cursor + 12.0, scale_y), name, LABEL, "start", stroke.colour))
         cursor += 12.0 + text_width(name, LABEL) + 6.0
     if rings:
-        items += [Circle((at, (value - base) / scale), PLAN_RING_MM, THIN, None) for at, value in rings]
+        items += [Circle((at, lift + (value - base) / scale), PLAN_RING_MM, THIN, None) for at, value in rings]
         items.append(Circle((cursor + PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((cursor + 2 * PLAN_RING_MM + 2.0, scale_y), rings_legend, LABEL, "start"))
     return items
@@ -333,20 +340,34 @@ def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales,
 
 
 def ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str,
-                  step: float | None = None) -> list[Primitive]:
+                  step: float | None = None, broken_mm: float = 0.0) -> list[Primitive]:
     """A vertical axis at ``x`` from the lowest value to past the highest, ticked at round values (``step``, by
-    default about a quarter of the range)."""
-    items: list[Primitive] = [Polyline(((x, bottom_mm), (x, 0.0)), THIN),
-                              Arrow((x, 0.0), (x, top_mm + AXIS_RUN_MM), THIN, head=2.5)]
+    default about a quarter of the range).  ``base`` stands at ``broken_mm`` over the abscissa (``bottom_mm`` and
+    ``top_mm`` are counted from it); where that is above it, the abscissa is nought, ticked so, and the axis is
+    broken between them by a zig-zag."""
+    items: list[Primitive] = [Polyline(((x, bottom_mm + broken_mm), (x, broken_mm)), THIN),
+                              Arrow((x, broken_mm), (x, top_mm + broken_mm + AXIS_RUN_MM), THIN, head=2.5)]
+    if broken_mm > 0:
+        items += _break_mark(x, broken_mm)
     low, high = base + bottom_mm * scale, base + top_mm * scale
     step = step or nice_step((high - low) / 4)
     first = math.ceil(low / step - 1e-9) * step
     for value in np.arange(first, high + step * 1e-9, step):
-        at = (value - base) / scale
+        at = broken_mm + (value - base) / scale
         items.append(Polyline(((x - TICK_MM, at), (x, at)), THIN))
         items.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), short(value), LABEL, "end"))
-    items.append(Text((x + 2.0, top_mm + AXIS_RUN_MM - LABEL), name, LABEL, "start"))
+    items.append(Text((x + 2.0, top_mm + broken_mm + AXIS_RUN_MM - LABEL), name, LABEL, "start"))
     return items
+
+
+def _break_mark(x: float, lift: float) -> list[Primitive]:
+    """The axis from nought at the abscissa up to ``lift``, where its values resume, with a zig-zag halfway across
+    it: the values between are left out, as a draftsman marks it; nought ticked and numbered."""
+    middle = lift / 2
+    w = BREAK_HALF_WIDTH_MM
+    zigzag = ((x, middle - w), (x - w, middle - w / 2), (x + w, middle + w / 2), (x, middle + w))
+    return [Polyline(((x, 0.0), zigzag[0]), THIN), Polyline(zigzag, THIN), Polyline((zigzag[-1], (x, lift)), THIN),
+            Polyline(((x - TICK_MM, 0.0), (x, 0.0)), THIN), Text((x - TICK_MM - 1.0, -LABEL / 2), short(0.0), LABEL, "end")]
 
 
 def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scales,
