@@ -54,7 +54,8 @@ def described(character: str) -> str:
 def difference(typed: str, meant: str) -> str:
     """What sets ``typed`` apart from ``meant``, which looks the same, and what to type: "'О' has the Cyrillic 'О'
     (U+041E) where 'O' has the Latin 'O' (U+004F): type the Latin letter"."""
-    if unicodedata.normalize("NFKC", typed) == meant:  # a Chinese input method's full-width forms, all of them
+    wide = all(unicodedata.decomposition(mine).startswith("<wide>") for mine in typed if not mine.isascii())
+    if wide and unicodedata.normalize("NFKC", typed) == meant:  # a Chinese input method's full-width forms
         return f"it has full-width letters: write {meant}"
     return f"{contrast(typed, meant)}: {_advice(typed, meant)}"
 

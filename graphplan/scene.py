@@ -527,7 +527,10 @@ def _ascii_counterpart(character: str) -> tuple[str, str] | None:
     if character in _IDEOGRAPHIC:
         return _IDEOGRAPHIC[character], "a Chinese or Japanese input method's punctuation"
     plain = unicodedata.normalize("NFKC", character)
-    if character and not character.isascii() and len(plain) == 1 and plain.isascii() and plain.isprintable():
+    # Only an input method's wide forms: a subscript or superscript digit (E₁) folds to ASCII too, but is a letter
+    # of a name typed on purpose, which the key's hint tells how to quote.
+    wide = unicodedata.decomposition(character).startswith("<wide>")
+    if wide and len(plain) == 1 and plain.isascii() and plain.isprintable():
         return plain, "a full-width character (a Chinese or Japanese input method's)"
     return None
 
@@ -654,7 +657,12 @@ def _key_hint(line: str, column: int) -> str:
 
 
 def _in_key(character: str) -> bool:
-    return character.isalnum() or character in "_-"
+    # A name's mark that is no letter (the prime of E′, a combining accent, an emoji) is part of the name to quote:
+    # only a space, ASCII punctuation and an input method's wide or typographic punctuation end it.
+    if character.isalnum() or character in "_-":
+        return True
+    return not (character.isascii() or character.isspace() or _ascii_counterpart(character)
+                or character in _DASHES or character in _DEGREE_SIGNS)
 
 
 # The tables of a scene, and the Russian words a student writes for them and for their commonest keys (by the

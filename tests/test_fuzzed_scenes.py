@@ -1,0 +1,40 @@
+"""Scenes a mutation fuzzer (each fixture and starter with a key deleted, a value swapped, zero, inf, nan, a
+string for a number, lists a step short or long, a name given twice, counts and scales at their extremes) found
+answered wrongly: each as the small scene it came down to, and the answer a student should get instead."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from graphplan.cli import main
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+
+
+def _refusal(tmp_path: Path, text: str, capsys: pytest.CaptureFixture[str]) -> str:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    return capsys.readouterr().err.strip().splitlines()[-1]
+
+
+QUOTE = 'quote a name of your own in other letters ("{}" = …)'
+
+
+@pytest.mark.parametrize(("name", "hint"), [
+    ("🙂", QUOTE.format("🙂")),
+    ("E′", QUOTE.format("E′")),
+    ("E\u0303", QUOTE.format("E\u0303")),
+    ("E₁", "'E₁' has a subscript one '₁' (U+2081) where 'E1' has a digit one '1' (U+0031): type 'E1'"),
+], ids=["emoji", "prime", "combining-tilde", "subscript"])
+def test_a_bare_point_name_toml_cannot_read_is_quoted_whole(tmp_path, capsys, name: str, hint: str) -> None:
+    """A point's name in letters a bare TOML key cannot have was told to be quoted, but the hint's name stopped at
+    the first character that is not a letter: an emoji named nothing ("" = …), E′ came out as "E" (quoting which
+    loses the prime), and the subscript of E₁ was called an input method's full-width character."""
+    text = f'[scene]\ntitle = "t"\n[points]\n{name} = {{ link = 3, from = "A", toward = "B", at = 0.2 }}\n'
+    told = _refusal(tmp_path, text, capsys)
+    assert "is not valid TOML" in told and "line 4" in told
+    assert told.endswith(hint), told
+    assert "full-width" not in told
