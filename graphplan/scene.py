@@ -568,6 +568,10 @@ def _toml_hint(data: str, message: str) -> str:
     plain = _ascii_counterpart(letter)
     if plain:
         return f"; {code} is {plain[1]}: TOML reads the ASCII '{plain[0]}' where one belongs"
+    if letter and not letter.isascii() and message.startswith("Invalid value"):
+        # A value in other letters typed without its quotes (title = Привет): no key, so no key's hint.
+        typed = line[column - 1:].split("#")[0].rstrip()
+        return f'; a text is written in quotes: write {line[:column - 1]}"{typed}"'
     if letter and not letter.isascii():
         return _key_hint(line, column)
     return ""

@@ -38,3 +38,13 @@ def test_a_bare_point_name_toml_cannot_read_is_quoted_whole(tmp_path, capsys, na
     assert "is not valid TOML" in told and "line 4" in told
     assert told.endswith(hint), told
     assert "full-width" not in told
+
+
+@pytest.mark.parametrize("title", ["Привет", "🙂 press", "牛头刨床"], ids=["cyrillic", "emoji", "chinese"])
+def test_a_title_in_other_letters_without_its_quotes_is_told_to_quote_the_text(tmp_path, capsys, title) -> None:
+    """A value typed without its quotes in letters that are not ASCII was told "a key is an English word, not …:
+    quote a name of your own (… = …)", a hint for a key, where the line's key was right and its value wanted quotes
+    (and for an emoji it named '')."""
+    told = _refusal(tmp_path, f"[scene]\ntitle = {title}   # the press\n", capsys)
+    assert "line 2" in told and "a key is" not in told, told
+    assert told.endswith(f'; a text is written in quotes: write title = "{title}"'), told
