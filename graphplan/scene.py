@@ -580,8 +580,14 @@ def _toml_hint(data: str, message: str) -> str:
 # Units typed after a number, by what one of them is in the scene's own: metres, kg, N, s, degrees; and the
 # drawing's and the readings' millimetres in [drawing] and [measured].
 _UNITS = {"m": 1.0, "mm": 1e-3, "cm": 1e-2, "kg": 1.0, "g": 1e-3, "n": 1.0, "kn": 1e3, "s": 1.0, "deg": 1.0,
-          "degrees": 1.0}
-_UNITS_ON_PAPER = {"mm": 1.0, "cm": 10.0, "m": 1e3}
+          "degrees": 1.0,
+          # As a Russian or Chinese student writes them (the scene's locales): without these, 175 мм was told
+          # "write length = 175", a length a thousand times too long.
+          "м": 1.0, "мм": 1e-3, "см": 1e-2, "кг": 1.0, "г": 1e-3, "н": 1.0, "кн": 1e3, "с": 1.0, "град": 1.0,
+          "米": 1.0, "毫米": 1e-3, "厘米": 1e-2, "千克": 1.0, "公斤": 1.0, "克": 1e-3, "牛": 1.0, "千牛": 1e3, "秒": 1.0,
+          "度": 1.0}
+_UNITS_ON_PAPER = {"mm": 1.0, "cm": 10.0, "m": 1e3, "мм": 1.0, "см": 10.0, "м": 1e3, "毫米": 1.0, "厘米": 10.0,
+                   "米": 1e3}
 _SPEED_KEYS = {"rpm": "rpm", "rev/min": "rpm", "об/мин": "rpm", "rad/s": "omega", "1/s": "omega", "рад/с": "omega"}
 
 

@@ -48,3 +48,15 @@ def test_a_title_in_other_letters_without_its_quotes_is_told_to_quote_the_text(t
     told = _refusal(tmp_path, f"[scene]\ntitle = {title}   # the press\n", capsys)
     assert "line 2" in told and "a key is" not in told, told
     assert told.endswith(f'; a text is written in quotes: write title = "{title}"'), told
+
+
+@pytest.mark.parametrize(("typed", "meant"), [
+    ("length = 175 мм", "length = 0.175"), ("length = 17.5 см", "length = 0.175"),
+    ("length = 175 毫米", "length = 0.175"), ("mass = 2500 г", "mass = 2.5"),
+], ids=["russian-mm", "russian-cm", "chinese-mm", "russian-grams"])
+def test_a_unit_in_the_scenes_own_languages_is_converted_as_its_latin_one(tmp_path, capsys, typed, meant) -> None:
+    """A unit typed after a number in Russian or Chinese letters was dropped with the number kept as typed:
+    175 мм was told "write length = 175", a crank a thousand times too long, where 175 mm is told 0.175."""
+    told = _refusal(tmp_path, f"[driver]\n{typed}\n", capsys)
+    assert told.endswith(f"after the number: TOML takes the number alone, in the scene's units (m, kg, N, s, "
+                         f"degrees): write {meant}"), told
