@@ -662,6 +662,8 @@ def toggles_between(analysed: Motion, numbers: Sequence[int], reference: Referen
         if after < 0 or after >= len(values) - (0 if cyclic else 1):
             continue  # beyond the analysed positions: no position after it can be on the wrong branch
         following = (after + 1) % len(values)
+        if following == after:
+            continue  # a crank's one position: the turn comes back to it, and no position after it can change branch
         own = np.nan_to_num(analysed.conditioning[label], nan=0.0)
         if any(own[position] < limit and abs(ends[place] - along) <= sample
                for position, place in ((after, after), (following, after + 1))):

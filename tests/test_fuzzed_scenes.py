@@ -60,3 +60,43 @@ def test_a_unit_in_the_scenes_own_languages_is_converted_as_its_latin_one(tmp_pa
     told = _refusal(tmp_path, f"[driver]\n{typed}\n", capsys)
     assert told.endswith(f"after the number: TOML takes the number alone, in the scene's units (m, kg, N, s, "
                          f"degrees): write {meant}"), told
+
+
+ONE_POSITION_THROUGH_TOGGLES = """
+[scene]
+title = "A central slider-crank whose rod is as long as its crank: C passes A at 90° and 270°"
+[frame]
+link = 1
+points = { A = [0.0, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "A"
+joint = "B"
+length = 1.0
+omega = 1.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["B", "C"]
+length = 1.0
+guide = { through = "A", angle = 0.0 }
+assembly = "forward"
+[positions]
+count = 1
+start = 45.0
+plans = [1]
+[drawing]
+sheet = "none"
+"""
+
+
+def test_a_single_position_is_not_warned_of_a_toggle_between_it_and_itself(tmp_path, capsys) -> None:
+    """One position of a crank that passes two toggles over its turn was warned "between positions 1 and 1 the
+    lines of action … come within 0° of parallel …: the positions after it keep the assembly of the first": there
+    is no position after it, and the turn comes back to the one analysed."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(ONE_POSITION_THROUGH_TOGGLES, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    told = capsys.readouterr()
+    assert "between positions 1 and 1" not in told.out + told.err
