@@ -131,10 +131,16 @@ def refuse_as_run_would(scene: Scene, analysis: Analysis | None, pieces: tuple[s
     """Raise the :class:`SceneError` a run of ``pieces`` would meet only once it draws or integrates: a plan or
     polygon larger than any paper, a drawing no sheet holds at the scale the scene gives, a motor that outpulls
     the resistance at every speed.  For ``check``, so that its "ok" means the run goes through."""
-    if analysis is not None and {"velocity", "acceleration", "forces", "lever", "sheets"} & set(pieces):
+    drawn = {"positions", "velocity", "acceleration", "forces", "lever", "sheets"} & set(pieces)
+    if analysis is not None and drawn:
         from .render import drawings as draw
 
-        draw.refuse_beyond_paper(analysis)
+        if scene.drawing.length_scale is not None:
+            # Every drawing of the mechanism reads μl, which refuses one that draws it larger than any paper: with
+            # no sheet to fit (sheet = "none"), check said ok to a scene the run then refused.
+            draw.length_scale(analysis)
+        if drawn - {"positions"}:
+            draw.refuse_beyond_paper(analysis)
     if analysis is not None and "sheets" in pieces:
         from .render.sheet import refuse_overflows
 

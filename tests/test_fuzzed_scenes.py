@@ -100,3 +100,16 @@ def test_a_single_position_is_not_warned_of_a_toggle_between_it_and_itself(tmp_p
     assert main(["check", str(scene)]) == 0
     told = capsys.readouterr()
     assert "between positions 1 and 1" not in told.out + told.err
+
+
+def test_check_refuses_a_length_scale_beyond_any_paper_where_no_sheet_is_fitted(tmp_path, capsys) -> None:
+    """With sheet = "none" check said "ok" to a μl that draws the paths of the points 8 m across, and every run
+    that drew the mechanism then refused it: check's ok means the run goes through."""
+    text = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    text = text.replace("length_scale      = 0.0025", "length_scale = 0.0001").replace('sheet = "A1"', 'sheet = "none"')
+    told = _refusal(tmp_path, text, capsys)
+    assert told.startswith("graphplan: error: drawing.length_scale: draws the paths of the points 8.32e+03 mm across, "
+                           "more than any paper (5000 mm)"), told
+    assert main(["run", str(tmp_path / "scene.toml"), "--out", str(tmp_path / "out"), "--only", "positions"]) == 2
+    assert capsys.readouterr().err.strip().splitlines()[-1] == told
+    assert not (tmp_path / "out").exists()
