@@ -54,7 +54,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.integrate import cumulative_simpson, cumulative_trapezoid, trapezoid
 
-from .kinematics import dot, norm2
+from .kinematics import dot, norm2, read_only
 from .loads import (
     State,
     activity,
@@ -136,13 +136,6 @@ class MovedLoad:
     work: float
 
 
-def _read_only(values):
-    """``values`` made read-only where it is an array (a model's field may be a number where it is constant)."""
-    if isinstance(values, np.ndarray):
-        values.flags.writeable = False
-    return values
-
-
 @dataclass(frozen=True)
 class EquivalentModel:
     """The equivalent link of a machine over its cycle (a crank) or its travel (a slider driver).
@@ -214,9 +207,9 @@ class EquivalentModel:
         # Handed out as they are (scene.machine_dynamics().model.inertia): Je made its fluctuation in place
         # (je -= je.mean()) changed the flywheel and the motion worked out from the model after.
         for name in ("driver", "coordinate", "inertia", "inertia_slope", "driving", "resisting", "breaks"):
-            _read_only(getattr(self, name))
+            read_only(getattr(self, name))
         for share in self.link_inertia.values():
-            _read_only(share)
+            read_only(share)
 
     def __repr__(self) -> str:
         # The dataclass's own repr printed every array: 28 000 characters on a notebook's line.
@@ -268,12 +261,12 @@ class EquivalentModel:
     @cached_property
     def driving_work(self) -> np.ndarray:
         """Ad(ψ) = ∫ Md dψ from the first sample (J)."""
-        return _read_only(self.integral(self.driving))
+        return read_only(self.integral(self.driving))
 
     @cached_property
     def resisting_work(self) -> np.ndarray:
         """Ar(ψ) = −∫ Mr dψ from the first sample (J): positive when the resistances take work."""
-        return _read_only(-self.integral(self.resisting))
+        return read_only(-self.integral(self.resisting))
 
     @property
     def energy(self) -> np.ndarray:

@@ -40,6 +40,7 @@ from scipy.integrate import cumulative_trapezoid, trapezoid
 
 from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_model
 from .errors import SceneError
+from .kinematics import read_only
 from .reader import Table, check_xy
 from .units import RPM
 
@@ -237,8 +238,7 @@ class Flywheel:
     def __post_init__(self) -> None:
         # Handed out as it is (scene.machine_dynamics().flywheel.omega): written in place, it changed the speeds
         # the results and the note read after.
-        if isinstance(self.omega, np.ndarray):
-            self.omega.flags.writeable = False
+        read_only(self.omega)
 
     def __repr__(self) -> str:
         # The dataclass's own repr printed the speed at every sample: 5 700 characters on a notebook's line.

@@ -36,6 +36,15 @@ def at(value: Vector | Scalar, index: int):
     return np.atleast_1d(value)[index if np.ndim(value) else 0]
 
 
+def read_only(value):
+    """``value`` made read-only where it is an array, and handed back (a number, a constant field, as it is): what
+    a motion, an equilibrium or a machine's model hands out is theirs, and a write through it changed what was read
+    of them after."""
+    if isinstance(value, np.ndarray):
+        value.flags.writeable = False
+    return value
+
+
 def norm2(a: Vector) -> Scalar:
     total = a.real * a.real
     total += a.imag * a.imag

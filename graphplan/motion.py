@@ -29,6 +29,7 @@ from .kinematics import (
     as_xy,
     at,
     point_fixed_on,
+    read_only,
     unit,
 )
 from .lookalikes import lookalike_hint
@@ -117,14 +118,12 @@ class Motion:
 
     def __post_init__(self) -> None:
         # Handed out as it is (motion.driver): a view that cannot be written, as point() and link() hand theirs.
-        object.__setattr__(self, "driver", _read_only(np.asarray(self.driver).view()))
+        object.__setattr__(self, "driver", read_only(np.asarray(self.driver).view()))
         # The motion's own arrays and tables are public fields: motion.points["B"].v[0] = … changed what point("B")
         # gave after, and a slide's s written left its slider's point where it was.
         for owner in (*self.points.values(), *self.links.values(), *self.slides):
             for field_ in fields(owner):
-                value = getattr(owner, field_.name)
-                if isinstance(value, np.ndarray):
-                    value.flags.writeable = False
+                read_only(getattr(owner, field_.name))
         for name in ("points", "links", "conditioning", "singular"):
             object.__setattr__(self, name, MappingProxyType(dict(getattr(self, name))))
 
@@ -153,7 +152,7 @@ class Motion:
             raise UnknownNameError(f"no point {name!r}; points are {', '.join(self.points)}"
                                    f"{lookalike_hint(name, self.points)}")
         motion = self.points[name]
-        return PointArrays(*(_read_only(as_xy(value, self.count)) for value in (motion.r, motion.v, motion.a)))
+        return PointArrays(*(read_only(as_xy(value, self.count)) for value in (motion.r, motion.v, motion.a)))
 
     def link(self, number: int) -> LinkArrays:
         """Link ``number``'s angle (rad), ω (rad/s) and ε (rad/s²), each an ``(N,)`` array, counter-clockwise
@@ -451,11 +450,6 @@ def _solve_continued(mechanism: Mechanism, values: np.ndarray, reference: Refere
     return Motion(mechanism=mechanism, driver=values, points=points, links=links, slides=slides,
                   conditioning=conditioning, warnings=tuple(sorted(warnings + conditioned, key=lambda w: w.position)),
                   singular=singular)
-
-
-def _read_only(array: np.ndarray) -> np.ndarray:
-    array.flags.writeable = False  # a view: the motion's own array stays as it is
-    return array
 
 
 def _shown(values) -> str:

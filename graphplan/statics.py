@@ -24,7 +24,7 @@ import numpy as np
 
 from .errors import UnknownNameError
 from .joint_friction import FrictionPair, friction_loads
-from .kinematics import Scalar, Vector, cross
+from .kinematics import Scalar, Vector, cross, read_only
 from .loads import Load, State, motion_state, power
 from .mechanism import Mechanism
 from .motion import Motion
@@ -82,8 +82,7 @@ class Equilibrium:
         arrays = [self.balancing, self.condition, self.singular, self.iterations, self.locked]
         arrays += [value for reaction in self.reactions for value in (reaction.force, reaction.offset)]
         for array in arrays:
-            if isinstance(array, np.ndarray):
-                array.flags.writeable = False
+            read_only(array)
 
     def __repr__(self) -> str:
         # The dataclass's own repr printed every reaction's arrays.

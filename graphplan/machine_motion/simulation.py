@@ -13,6 +13,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
+from ..kinematics import read_only
 from ..rounding import noise_floor
 from .cycles import Cycle, SteadyState, find_cycles, find_steady_state, refined
 from .drive import REST, Brake, Clutch, ConstantTorque, Motor, Start, require_positive
@@ -89,8 +90,7 @@ class MachineMotion:
         # Handed out as they are (scene.machine_dynamics().motion.omega): ω turned into rpm in place changed what
         # the results, the note and motion.svg read of the motion after.
         for array in (self.t, self.phi, self.omega, self.driving_omega, self.motor_torque):
-            if isinstance(array, np.ndarray):
-                array.flags.writeable = False
+            read_only(array)
 
     def __repr__(self) -> str:
         # The dataclass's own repr printed every step: 34 000 characters on a notebook's line.
