@@ -51,10 +51,16 @@ def described(character: str) -> str:
     return f"{what} {code}"
 
 
+def full_width(character: str) -> bool:
+    """Whether ``character`` is a wide form (a Chinese or Japanese input method's Ａ, ＝, ０), not a letter that
+    folds to ASCII for another reason (a subscript ₁ or superscript ¹ typed on purpose)."""
+    return unicodedata.decomposition(character).startswith("<wide>")
+
+
 def difference(typed: str, meant: str) -> str:
     """What sets ``typed`` apart from ``meant``, which looks the same, and what to type: "'О' has the Cyrillic 'О'
     (U+041E) where 'O' has the Latin 'O' (U+004F): type the Latin letter"."""
-    wide = all(unicodedata.decomposition(mine).startswith("<wide>") for mine in typed if not mine.isascii())
+    wide = all(full_width(mine) for mine in typed if not mine.isascii())
     if wide and unicodedata.normalize("NFKC", typed) == meant:  # a Chinese input method's full-width forms
         return f"it has full-width letters: write {meant}"
     return f"{contrast(typed, meant)}: {_advice(typed, meant)}"

@@ -299,7 +299,7 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference, wor
     except SingularPositionError as error:
         # Met between the scene's positions, or at an extreme itself (a change-point linkage folds there): the
         # positions alone would pass it with a warning, the strokes cannot be cut at it.
-        leave_out = "leave positions.working out" if own else f"leave {working.where} out"
+        leave_out = f"leave {working.where} out"
         if own and mechanism.scene.positions.start == "extreme":
             leave_out += ", and number the positions from an angle (positions.start = 0.0)"
         raise SingularPositionError(error.position, error.group, f"{error.reason}; {working.where}: link "

@@ -27,7 +27,7 @@ from .choices import LOCALES, OUTPUT_PIECES, SHEETS
 from .errors import SceneError
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
-from .lookalikes import described, difference, lookalike_hint
+from .lookalikes import described, difference, full_width, lookalike_hint
 from .lookalikes import plain as lookalike_plain
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy, refuse_control_characters
 from .rotor_balancing import BalancingSpec, read_balancing
@@ -527,10 +527,7 @@ def _ascii_counterpart(character: str) -> tuple[str, str] | None:
     if character in _IDEOGRAPHIC:
         return _IDEOGRAPHIC[character], "a Chinese or Japanese input method's punctuation"
     plain = unicodedata.normalize("NFKC", character)
-    # Only an input method's wide forms: a subscript or superscript digit (E₁) folds to ASCII too, but is a letter
-    # of a name typed on purpose, which the key's hint tells how to quote.
-    wide = unicodedata.decomposition(character).startswith("<wide>")
-    if wide and len(plain) == 1 and plain.isascii() and plain.isprintable():
+    if full_width(character) and len(plain) == 1 and plain.isascii() and plain.isprintable():
         return plain, "a full-width character (a Chinese or Japanese input method's)"
     return None
 

@@ -330,8 +330,8 @@ def _equation(note: Writer, dynamics) -> None:
     if motor.rotor_inertia == 0:  # missing from the sum, which a reader would otherwise take for an oversight
         terms += note.text["note_dyn_motion_no_rotor"]
     # A machine known by its load diagrams alone has no links, so no weights: its Mr is the resisting diagram's.
-    resistance = note.text["note_dyn_motion_diagram" if dynamics.model.link == 0 else "note_dyn_motion_loads"]
     model = dynamics.model
+    resistance = note.text["note_dyn_motion_diagram" if model.link == 0 else "note_dyn_motion_loads"]
     note.para(note.t("note_dyn_motion_constant" if model.inertia_is_constant else "note_dyn_motion",
                      equation=equation, value=note.n(model.mean_inertia), terms=terms, resistance=resistance,
                      method=dynamics.motion.method, reason=_method_reason(note, dynamics)))
