@@ -267,11 +267,23 @@ def _terminated_as_interrupted() -> Iterator[None]:
             signal.signal(number, handler)
 
 
-def _load(given: str) -> Scene:
-    """The scene at the path ``given``, or piped into standard input for ``-`` (a file of that name is ``./-``)."""
-    from .scene import load, load_stdin
+def _load(given: str, command: str) -> Scene:
+    """The scene at the path ``given``, or piped into standard input for ``-`` (a file of that name is ``./-``).
 
-    return load_stdin() if given == "-" else load(Path(given))
+    The reader's advice to pipe a scene in names ``run``; for another ``command`` it is retold with that command,
+    which is the one the user typed.
+    """
+    from .errors import SceneError
+    from .scene import load, load_stdin
+    from .scene_file import pipe_in
+
+    try:
+        return load_stdin() if given == "-" else load(Path(given))
+    except SceneError as error:
+        if command == "run" or pipe_in() not in error.problem:
+            raise
+        raise SceneError(error.where, error.problem.replace(pipe_in(), pipe_in(command)), error.value,
+                         hint=error.hint) from None
 
 
 def _check(given: str) -> int:
@@ -280,7 +292,7 @@ def _check(given: str) -> int:
     from .run import note_warnings
     from .scene import STDIN
 
-    scene = _load(given)
+    scene = _load(given, "check")
     shown = STDIN if given == "-" else Path(given)
     if not scene.has_linkage:
         tables = [name for name in ("dynamics", "balancing", "vibration") if getattr(scene, name) is not None]
@@ -365,7 +377,7 @@ def _run(arguments: argparse.Namespace) -> int:
 
     progress = Progress()
     given: str = arguments.scene
-    scene = _load(given)
+    scene = _load(given, "run")
     # --out=~/report reaches us with its ~ (the shell expands none after an =): a folder named ~ was written here.
     default = Path("output") / (STDIN_FOLDER if given == "-" else Path(given).stem)
     out = arguments.out.expanduser() if arguments.out is not None else default

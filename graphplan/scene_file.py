@@ -57,7 +57,14 @@ def bytes_at(path: Path) -> bytes:
 # one, it waited for ever, silent. A writer started first is there at once, as a shell's <(…) is.
 FIFO_WAIT_SECONDS = 2.0
 STDIN = "<stdin>"
-_PIPE_IN = "pipe one in: graphplan run - < scene.toml, or cat scene.toml | graphplan run -"
+
+
+def pipe_in(command: str = "run") -> str:
+    """How to pipe a scene into ``command``: the advice every "no scene here" error ends with."""
+    return f"pipe one in: graphplan {command} - < scene.toml, or cat scene.toml | graphplan {command} -"
+
+
+_PIPE_IN = pipe_in()
 
 
 def _refuse_what_holds_no_file(source: str, mode: int) -> None:

@@ -101,7 +101,9 @@ def test_a_scene_piped_in_without_a_title_is_titled_as_its_folder_is_named(tmp_p
 
 @pytest.mark.parametrize("verb", ["run", "check"])
 @pytest.mark.parametrize(("given", "told"), [
-    (b"", "<stdin>: is empty: no scene was piped in; pipe one in: graphplan run - < scene.toml"),
+    # The advice names the command typed: `check -` was told to pipe the scene into `run -`.
+    (b"", "<stdin>: is empty: no scene was piped in; pipe one in: graphplan {verb} - < scene.toml, or cat scene.toml "
+          "| graphplan {verb} -"),
     (bytes((7 * index * index + 3) % 256 for index in range(3000)), "<stdin>: is not a text file but binary data"),
     (b"#" * (scene_module.MAX_SCENE_BYTES + 10),
      f"<stdin>: goes on past {scene_module.MAX_SCENE_BYTES} bytes, the most a scene may have"),
@@ -109,7 +111,7 @@ def test_a_scene_piped_in_without_a_title_is_titled_as_its_folder_is_named(tmp_p
 ], ids=["empty", "binary", "too-large", "not-toml"])  # a megabyte's id went into the command's environment: E2BIG
 def test_what_is_no_scene_piped_in_is_refused_naming_standard_input(tmp_path, verb, given, told):
     out = ["--out", "out"] if verb == "run" else []
-    assert refused(command(verb, "-", *out, cwd=tmp_path, input=given), tmp_path).startswith(told)
+    assert refused(command(verb, "-", *out, cwd=tmp_path, input=given), tmp_path).startswith(told.format(verb=verb))
 
 
 def test_standard_input_from_dev_null_is_told_empty(tmp_path):
@@ -140,6 +142,11 @@ def test_a_terminal_for_standard_input_is_refused_at_once_with_how_to_pipe_a_sce
     told = refused(on_a_terminal("run", "-", cwd=tmp_path), tmp_path)
     assert told.startswith("<stdin>: is the terminal: no scene was piped in; pipe one in: graphplan run - < "
                            "scene.toml, or cat scene.toml | graphplan run -")
+
+
+def test_a_device_given_to_check_is_told_to_pipe_the_scene_into_check(tmp_path):
+    told = refused(command("check", os.devnull, cwd=tmp_path), tmp_path)
+    assert told.endswith("pipe one in: graphplan check - < scene.toml, or cat scene.toml | graphplan check -")
 
 
 def test_dev_stdin_on_a_terminal_is_refused_at_once(tmp_path):
