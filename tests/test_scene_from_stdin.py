@@ -102,8 +102,8 @@ def test_a_scene_piped_in_without_a_title_is_titled_as_its_folder_is_named(tmp_p
 @pytest.mark.parametrize("verb", ["run", "check"])
 @pytest.mark.parametrize(("given", "told"), [
     # The advice names the command typed: `check -` was told to pipe the scene into `run -`.
-    (b"", "<stdin>: is empty: no scene was piped in; pipe one in: graphplan {verb} - < scene.toml, or cat scene.toml "
-          "| graphplan {verb} -"),
+    (b"", ("<stdin>: is empty: no scene was piped in; pipe one in: graphplan {verb} - < scene.toml, or cat scene.toml "
+           "| graphplan {verb} -")),
     (bytes((7 * index * index + 3) % 256 for index in range(3000)), "<stdin>: is not a text file but binary data"),
     (b"#" * (scene_module.MAX_SCENE_BYTES + 10),
      f"<stdin>: goes on past {scene_module.MAX_SCENE_BYTES} bytes, the most a scene may have"),
