@@ -599,6 +599,9 @@ def _unit_hint(lines: list[str], column: int) -> str:
     if number is None or typed is None or not keys or not (typed[0][0].isalpha() or typed[0][0] in "μµ"):
         return ""
     key, unit, value = keys[-1], typed[0], float(number[1].replace("_", ""))
+    if re.fullmatch(r"[eE][-+]?", unit):  # a power of ten begun and not finished, not a unit
+        return (f"; '{number[1]}{unit}' ends at its exponent's {unit[0]}, with no power of ten after it: TOML writes "
+                f"the power's digits, {number[1]}e-3 for {value * 1e-3:g}; or drop the {unit[0]}")
     tables = [found[1] for found in (re.match(r"\s*\[+\s*([\w.-]+)", text) for text in lines) if found]
     on_paper = bool(tables) and tables[-1].split(".")[0] in ("drawing", "measured")
     told = (f"; '{unit}' after the number: TOML takes the number alone, in "

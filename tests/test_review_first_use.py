@@ -184,6 +184,17 @@ def test_a_unit_typed_after_a_number_is_told_with_the_number_in_the_scene_s_unit
     assert told.endswith(written), told
 
 
+@pytest.mark.parametrize(("old", "new", "power"), [
+    ("at = 0.055", "at = 55e", "'55e' ends at its exponent's e, with no power of ten after it"),
+    ("length   = 0.19", "length   = 0.19E-", "'0.19E-' ends at its exponent's E, with no power of ten after it"),
+])
+def test_an_exponent_left_without_its_power_is_not_told_as_a_unit(tmp_path, capsys, old, new, power):
+    """"at = 55e" (55e-3 meant) was told "'e' after the number: TOML takes the number alone, in the scene's units":
+    a unit's advice for a power of ten begun and not finished."""
+    told = refused(capsys, ["check", str(scene_with(tmp_path, old, new))])
+    assert power in told and "e-3 for " in told and "after the number" not in told, told
+
+
 def test_a_named_point_placed_in_millimetres_is_warned_of_before_the_refusal_it_causes(tmp_path, capsys):
     """S3 at 55 (mm meant) along a 0.19 m rod put it 55 m out: the check refused drawing.velocity_pole alone, a key
     the student never changed, and said nothing of the length typed in millimetres."""
