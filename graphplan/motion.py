@@ -191,7 +191,13 @@ class Motion:
         """The sliding pair in which link ``slider`` slides: its guide's unit direction ``u`` (complex, x + iy) and the
         slider's coordinate ``s`` along it (m), its relative ``velocity`` and ``acceleration`` along ``u`` (m/s,
         m/s²), each an ``(N,)`` array, read-only.  A link that slides in no pair raises
-        :class:`~graphplan.errors.UnknownNameError`."""
+        :class:`~graphplan.errors.UnknownNameError`.
+
+        ``s`` counts from the line's own origin: a guide's ``through`` point (the frame's point, or the named point
+        of the link that carries the guide), from which a slider driver's values count too; in a slotted lever
+        (``RPR``) the foot of the perpendicular from the lever's pivot to the slot (the pivot itself at
+        ``offset = 0``); in an ``RPP``'s slot the point where the slot crosses the guide; in a triad's slotted leg
+        the ternary link's inner joint."""
         if isinstance(slider, bool) or not isinstance(slider, int | np.integer):
             # slide('6') compared a string with the links' numbers and told of a link 6 that slides in no pair.
             raise TypeError(f"a sliding pair is named by its slider's number, an integer: slide(6), "

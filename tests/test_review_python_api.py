@@ -148,6 +148,20 @@ def test_a_slotted_lever_s_slide_and_coriolis_term_are_the_textbook_s():
     assert np.allclose(aa - a4, slide.acceleration * along + coriolis, rtol=0, atol=1e-12)
 
 
+def test_an_offset_slot_s_coordinate_counts_from_the_foot_of_the_perpendicular_from_the_pivot():
+    """With the slot e off the lever's pivot C, s is what the slide's docstring says: measured along the slot from the
+    foot of the perpendicular from C, so A = C + s·u + e·(i·u) and s² + e² = |CA|²."""
+    e = 0.02
+    text = SLOTTED.read_text(encoding="utf-8").replace("offset = 0.0 ", f"offset = {e} ", 1)
+    motion = graphplan.solve(graphplan.load_text(text), driver=np.radians(np.arange(0.0, 360.0, 5.0)))
+    a, c = (motion.point(name).r @ [1, 1j] for name in ("A", "C"))
+    slide = motion.slide(3)
+    assert np.allclose(np.abs(slide.s) ** 2 + e ** 2, np.abs(a - c) ** 2, rtol=0, atol=1e-12)
+    foot = a - slide.s * slide.u
+    assert np.allclose(np.abs(foot - c), e, rtol=0, atol=1e-12)   # the foot is e from C, on the slot's normal
+    assert np.allclose(np.real((foot - c) * np.conj(slide.u)), 0.0, atol=1e-12)
+
+
 def test_a_plan_s_sliding_values_are_what_the_values_docstring_says_they_are():
     """``VA4A3`` the slide's relative velocity, ``aA4A3^r`` its relative acceleration along the slot, ``aA4A3`` the
     whole of aA4 − aA3 with the Coriolis term in it; the docstring promised "Coriolis terms" among the values,
