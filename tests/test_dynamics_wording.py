@@ -86,6 +86,30 @@ def test_a_machine_known_by_its_load_diagrams_has_the_equation_of_a_constant_ine
     assert_constant_inertia_equation(note, locale, [s["flywheel"], s["rotor"]], 2.5)
 
 
+# What each language says where the machine's own Je is left out: "Je = 0 kg·m² is the machine's reduced moment of
+# inertia" read as an inertia the machine has.
+LEFT_OUT = {"en": "the machine's own reduced moment of inertia is left out of it",
+            "ru": "собственный приведённый момент инерции машины в него не входит",
+            "zh": "不计机器自身的等效转动惯量"}
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_machine_whose_own_inertia_the_scene_takes_as_zero_is_written_without_the_je_term(tmp_path, locale):
+    """The flywheel starter as `graphplan new` writes it (inertia = 0.0): the equation is (JF + Jrot·u²)·dω/dt =
+    Md(ω) − Mr(φ), and JF = ΔWmax/(ωm²·δ) with no "− Je" and no "− 0"; JF is the work over ωm²·δ, recomputed."""
+    text = starter(tmp_path, locale)
+    assert re.search(r"^inertia\s*=\s*0\.0\b", text, flags=re.MULTILINE), "the starter's machine has no Je"
+    note = run_note(tmp_path, text)
+    s = SYMBOLS[locale]
+    assert f"({s['flywheel']} + {s['rotor']})·dω/dt = {s['md']} − {s['mr']}" in note
+    assert LEFT_OUT[locale] in note and f"{s['je']} = 0 " not in note and f"{s['je']}′ = 0" not in note
+    flywheel = re.search(rf"{s['flywheel']} = ΔW\w*/\(ω\w+²·δ\) = {NUMBER}/\({NUMBER}²·{NUMBER}\) = {NUMBER} {s['unit']}",
+                         note.replace("ΔTнб", "ΔWнб"))
+    assert flywheel, "JF = ΔWmax/(ωm²·δ) written out with its numbers"
+    work, omega, delta, inertia = (value(group) for group in flywheel.groups())
+    assert inertia == pytest.approx(work / (omega ** 2 * delta), rel=2e-4)
+
+
 def test_a_linkage_with_the_crank_alone_heavy_has_the_equation_of_a_constant_inertia(tmp_path):
     """The ratchet with its rocker's and its coupler's masses taken off: Je = m2·lOS2² = 16·0.08² kg·m² at every
     angle, so the equation is (Je + JF)·dω/dt = Md(ω) − Mr(φ); the motor's rotor is not given."""

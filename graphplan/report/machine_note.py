@@ -69,7 +69,8 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         # The points the scene gives, not the samples the model is worked on (362 for a diagram of 4).
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
-        note.para(note.t("note_dyn_model_diagrams", count=Count(given), inertia=note.n(model.mean_inertia)))
+        key = "note_dyn_model_diagrams_no_inertia" if model.mean_inertia == 0 else "note_dyn_model_diagrams"
+        note.para(note.t(key, count=Count(given), inertia=note.n(model.mean_inertia)))
     else:
         # The scene's steps: the samples are one more over a travel, and more again where a load switches on.
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
@@ -147,7 +148,8 @@ def _flywheel(note: Writer, flywheel, model) -> None:
         return
     omega = flywheel.omega_mean
     if model.inertia_is_constant:
-        note.para(note.t("note_dyn_flywheel_constant", delta=note.n(flywheel.delta), omega=note.n(omega),
+        key = "note_dyn_flywheel_no_inertia" if model.mean_inertia == 0 else "note_dyn_flywheel_constant"
+        note.para(note.t(key, delta=note.n(flywheel.delta), omega=note.n(omega),
                          rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
                          mean=note.n(model.mean_inertia), exact=note.n(flywheel.inertia)))
     else:
@@ -286,7 +288,7 @@ def _shaft_equation(note: Writer, dynamics, braking: str | None = None, slipping
     equation is then J·dω/dt = Md − Mr, as the textbooks write it for a constant inertia."""
     text = note.text
     constant = dynamics.model.inertia_is_constant
-    inertia = [text["note_dyn_inertia_symbol"] + ("" if constant else "(φ)")]
+    inertia = [] if _own_inertia_left_out(dynamics) else [text["note_dyn_inertia_symbol"] + ("" if constant else "(φ)")]
     if dynamics.flywheel_inertia > 0:
         inertia.append(text["note_dyn_flywheel_symbol"])
     if not slipping:
@@ -294,6 +296,13 @@ def _shaft_equation(note: Writer, dynamics, braking: str | None = None, slipping
     return note.t("note_dyn_equation_constant" if constant else "note_dyn_equation", inertia=_sum(inertia),
                   driving=text["note_dyn_clutch_torque_symbol" if slipping else "note_dyn_driving_symbol"],
                   braking=text[braking] if braking else "")
+
+
+def _own_inertia_left_out(dynamics) -> bool:
+    """A machine whose own reduced moment of inertia the scene takes as zero, turned by a flywheel: a teacher writes
+    its equation without the Je term (Je = 0 read as a value the machine has, not as one it is spared)."""
+    model = dynamics.model
+    return model.inertia_is_constant and model.mean_inertia == 0 and dynamics.flywheel_inertia > 0
 
 
 def _sum(terms: list[str]) -> str:
@@ -332,7 +341,9 @@ def _equation(note: Writer, dynamics) -> None:
     # A machine known by its load diagrams alone has no links, so no weights: its Mr is the resisting diagram's.
     model = dynamics.model
     resistance = note.text["note_dyn_motion_diagram" if model.link == 0 else "note_dyn_motion_loads"]
-    note.para(note.t("note_dyn_motion_constant" if model.inertia_is_constant else "note_dyn_motion",
+    key = "note_dyn_motion_no_inertia" if _own_inertia_left_out(dynamics) else \
+        "note_dyn_motion_constant" if model.inertia_is_constant else "note_dyn_motion"
+    note.para(note.t(key,
                      equation=equation, value=note.n(model.mean_inertia), terms=terms, resistance=resistance,
                      method=dynamics.motion.method, reason=_method_reason(note, dynamics)))
 
