@@ -141,7 +141,10 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         unaided = dataclasses.replace(flywheel, inertia=-1.0)
         # A Je the same all the cycle (a flywheel from load diagrams alone): one flywheel, no energy–mass diagram.
         steady = dataclasses.replace(crank, inertia=np.full(len(crank.inertia), crank.mean_inertia))
-        return [t for model, wheel in ((crank, flywheel), (crank, unaided), (steady, flywheel), (slider, None))
+        # One whose own Je the scene takes as zero (the flywheel starter's press): its JF has no Je subtracted.
+        unowned = dataclasses.replace(crank, inertia=np.zeros(len(crank.inertia)))
+        return [t for model, wheel in ((crank, flywheel), (crank, unaided), (steady, flywheel), (unowned, flywheel),
+                                       (slider, None))
                 for t in svg_texts(dynamics.dynamics_svg(model, wheel, text))]
     if kind == "balancing":
         two_planes = balance(BalancingSpec(SHAFT, planes=(0.04, 0.22), correction_radius=0.05))

@@ -108,6 +108,9 @@ def test_a_machine_whose_own_inertia_the_scene_takes_as_zero_is_written_without_
     assert flywheel, "JF = ΔWmax/(ωm²·δ) written out with its numbers"
     work, omega, delta, inertia = (value(group) for group in flywheel.groups())
     assert inertia == pytest.approx(work / (omega ** 2 * delta), rel=2e-4)
+    drawn = "".join(ElementTree.parse(tmp_path / "out" / "dynamics.svg").getroot().itertext())
+    assert f"δ) = {flywheel.group(4)} {s['unit']}" in drawn and f"δ) − {s['je']}" not in drawn, \
+        "the drawing's JF without a Je of 0 subtracted, as the note"
 
 
 def test_a_linkage_with_the_crank_alone_heavy_has_the_equation_of_a_constant_inertia(tmp_path):
