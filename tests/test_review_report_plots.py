@@ -17,6 +17,8 @@ from xml.etree import ElementTree
 import numpy as np
 import pytest
 
+import graphplan
+from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.locale import strings
 
@@ -302,6 +304,37 @@ def test_a_steady_turn_of_a_fast_heavy_flywheel_is_labelled_with_its_speeds_not_
     assert not [axis.get_offset_text().get_text() for axes in figure.axes for axis in (axes.xaxis, axes.yaxis)
                 if axis.get_offset_text().get_text()]
     assert not _tick_labels_say_their_values(figure)
+
+
+def _outside(figure) -> list[str]:
+    """The position numbers written over the points of the balancing plot that cross its frame."""
+    from matplotlib.text import Annotation
+
+    renderer = _drawn(figure)
+    (axes,) = figure.axes
+    frame = axes.get_window_extent(renderer)
+    out = []
+    for text in axes.texts:
+        if isinstance(text, Annotation):
+            box = text.get_window_extent(renderer)
+            if not (frame.x0 <= box.x0 and box.x1 <= frame.x1 and frame.y0 <= box.y0 and box.y1 <= frame.y1):
+                out.append(text.get_text())
+    return out
+
+
+@pytest.mark.parametrize("path", FIXTURES, ids=[path.stem for path in FIXTURES])
+def test_no_position_number_on_the_balancing_plot_runs_into_its_frame(path):
+    """The highest position's number, 5 pt over its point, crossed the frame's top line (slider_driven's 1, the
+    engine's 8, the quick return's 4)."""
+    import matplotlib
+
+    from graphplan.report.figures import _balancing_figure
+    from graphplan.report.plot_style import settings
+
+    with matplotlib.rc_context(settings()):
+        figure = _balancing_figure(analyse(graphplan.load(str(path))))
+        assert not _outside(figure)
+        assert not _tick_labels_say_their_values(figure)
 
 
 # --- the same bytes ------------------------------------------------------------------------------------------------
