@@ -337,6 +337,42 @@ def test_no_position_number_on_the_balancing_plot_runs_into_its_frame(path):
         assert not _tick_labels_say_their_values(figure)
 
 
+def _on_squares(figure) -> list[str]:
+    """The position numbers of the balancing plot drawn over the square that rings a force polygon's value."""
+    from matplotlib.text import Annotation
+
+    renderer = _drawn(figure)
+    (axes,) = figure.axes
+    squares = [line for line in axes.get_lines() if line.get_marker() == "s"]
+    over = []
+    for line in squares:
+        # A square marker reaches half its size and half its edge's width from its point (points → pixels).
+        reach = (line.get_markersize() + line.get_markeredgewidth()) / 2 * figure.dpi / 72
+        for x, y in zip(*line.get_data(), strict=True):
+            centre = axes.transData.transform((x, y))
+            for text in axes.texts:
+                if isinstance(text, Annotation) and np.allclose(text.xy, (x, y)):
+                    box = text.get_window_extent(renderer)
+                    if box.y0 < centre[1] + reach and box.x0 < centre[0] + reach and box.x1 > centre[0] - reach:
+                        over.append(text.get_text())
+    return over
+
+
+@pytest.mark.parametrize("path", FIXTURES, ids=[path.stem for path in FIXTURES])
+def test_a_position_number_stands_clear_of_the_square_of_its_force_polygon(path):
+    """The number 5 pt over its point sat on the square's top side (the crank-rocker's 11, the shaper's 10)."""
+    import matplotlib
+
+    from graphplan.report.figures import _balancing_figure
+    from graphplan.report.plot_style import settings
+
+    with matplotlib.rc_context(settings()):
+        figure = _balancing_figure(analyse(graphplan.load(str(path))))
+        assert [line for line in figure.axes[0].get_lines() if line.get_marker() == "s"]
+        assert not _on_squares(figure)
+        assert not _outside(figure)
+
+
 # --- the same bytes ------------------------------------------------------------------------------------------------
 
 

@@ -59,9 +59,12 @@ def _balancing_figure(analysis: Analysis):
             _clipped(plot, ideal.balancing, shown)
     exact = analysis.equilibrium
     plot.plot(marks, exact.balancing, "o", color="#1f5fa8", markersize=3.5)
-    for number, x, y in zip(positions.numbers, marks, exact.balancing, strict=True):
+    ringed = {plan.index for plan in analysis.plans if plan.forces is not None}
+    for k, (number, x, y) in enumerate(zip(positions.numbers, marks, exact.balancing, strict=True)):
         if math.isfinite(y):
-            plot.annotate(str(number), (x, y), textcoords="offset points", xytext=(0, 5), ha="center", fontsize=7)
+            # Over a force polygon's square (7 pt across) the number stands higher: at 5 pt it sat on its top side.
+            plot.annotate(str(number), (x, y), textcoords="offset points", xytext=(0, 7.5 if k in ringed else 5),
+                          ha="center", fontsize=7)
     drawn = [(marks[plan.index], plan.forces.balancing) for plan in analysis.plans if plan.forces is not None]
     if drawn:
         plot.plot(*zip(*drawn, strict=True), "s", markerfacecolor="none", color="black", markersize=7,
