@@ -373,6 +373,23 @@ def test_a_position_number_stands_clear_of_the_square_of_its_force_polygon(path)
         assert not _outside(figure)
 
 
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_small_damping_ratio_is_written_as_a_number_in_the_legend_not_in_e_notation(tmp_path, locale):
+    """ζ = 1e-05 in the legend is a program's way of writing, not a textbook's: 0.00001 (0,00001 in Russian)."""
+    from graphplan.report.vibration_plots import magnification_figure, transmissibility_figure
+
+    zeta, wanted = 0.00001, 0.00002
+    written = tmp_path / "magnification.svg"
+    magnification_figure(written, operating=(0.9, zeta), text=strings(locale))
+    labels = _comments(_tree(written))
+    transmissibility_figure(written, operating=(400.0, zeta), design=(300.0, wanted), text=strings(locale))
+    labels += _comments(_tree(written))
+    mark = strings(locale)["decimal_mark"]
+    assert not [label for label in labels if re.search(r"\de[-+]?\d", label)]
+    assert [label for label in labels if f"ζ = 0{mark}00001" in label]
+    assert [label for label in labels if f"0{mark}00002" in label]
+
+
 # --- the same bytes ------------------------------------------------------------------------------------------------
 
 

@@ -159,9 +159,10 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
             shown = np.where(np.isfinite(values), values, np.nan)
             if machine is not None and math.isclose(zeta, machine, rel_tol=1e-9, abs_tol=1e-12):
                 plot.plot(ratios, shown, color=MACHINE_COLOUR, linewidth=2.4, zorder=3,
-                          label=text["vib_zeta_machine"].format(value=f"{zeta:g}"))
+                          label=text["vib_zeta_machine"].format(value=short(zeta, 6)))
             else:
-                plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vib_zeta"].format(value=f"{zeta:g}"))
+                # A number as a textbook writes it, 0.00001, not 1e-05.
+                plot.plot(ratios, shown, color=colour, linewidth=1.3, label=text["vib_zeta"].format(value=short(zeta, 6)))
         if isolation:
             plot.axvspan(math.sqrt(2.0), ratios[-1], color="#1f7a3a", alpha=0.08, label=text["vib_isolation"])
             plot.axvline(math.sqrt(2.0), color="#1f7a3a", linewidth=0.8, linestyle="--")
@@ -177,7 +178,7 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
                       label=text["vib_operating_off"].format(value=short(operating[1], 3)))
         if design is not None:
             plot.plot([design[0]], [design[1]], "D", color="#1f7a3a", markeredgecolor="black", markersize=6, zorder=4,
-                      label=text["vib_design"].format(tr=f"{design[1]:g}", ratio=f"{design[0]:.3g}"))
+                      label=text["vib_design"].format(tr=short(design[1], 6), ratio=short(design[0], 3)))
         if log:
             plot.set_yscale("log")
         if ratios[0] > 0:  # sampled in log r (:func:`_ratios`)
