@@ -258,6 +258,48 @@ def test_the_steady_turn_is_drawn_between_the_results_extremes_beside_the_flywhe
     assert speed[-1, 0] == pytest.approx(motion["duration"], rel=1e-3)
 
 
+def _power(label: str) -> float:
+    """A log axis's tick label as a number: $\\mathdefault{10^{-3}}$, $\\mathdefault{3\\times10^{-4}}$."""
+    found = re.fullmatch(r"\$\\mathdefault\{(?:([\d.,]+)\\times)?10\^\{([−-]?\d+)\}\}\$", label)
+    assert found, label
+    return _number(found.group(1) or "1") * 10.0 ** int(found.group(2).replace("−", "-"))
+
+
+def _log_scale(axes, axis: str) -> np.ndarray:
+    """The straight line from SVG coordinates to the decimal logarithm of the values along a log axis."""
+    places, values = [], []
+    for tick in _groups(axes, f"{axis}tick_"):
+        labels = [label for label in _comments(tick) if label.startswith("$")]
+        marks = [use for use in tick.iter(f"{_SVG}use") if use.get("x") is not None]
+        if labels and marks:
+            places.append(float(marks[0].get(axis)))
+            values.append(np.log10(_power(labels[0])))
+    assert len(places) >= 2, f"{axis}: fewer than two labelled ticks"
+    return np.polyfit(places, values, 1)
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_the_accuracy_plot_puts_each_rows_time_and_largest_errors_where_the_csv_gives_them(starters, locale):
+    """Run times are measured, so the plot differs from run to run: but within a run, its points are the CSV's."""
+    import csv
+
+    out, _ = starters["shaper", locale]
+    rows = list(csv.DictReader((out / "accuracy.csv").read_text(encoding="utf-8").splitlines()))
+    (axes,) = _axes(out / "accuracy.svg")
+    to_time, to_error = _log_scale(axes, "x"), _log_scale(axes, "y")
+    skipped = {id(use) for prefix in ("xtick_", "ytick_", "legend_") for group in _groups(axes, prefix)
+               for use in group.iter(f"{_SVG}use")}
+    places = np.array([(float(use.get("x")), float(use.get("y"))) for use in axes.iter(f"{_SVG}use")
+                       if use.get("x") is not None and id(use) not in skipped])
+    drawn = np.column_stack([np.polyval(to_time, places[:, 0]), np.polyval(to_error, places[:, 1])])
+    assert len(rows) >= 8
+    for row in rows:
+        for family in ("velocity", "acceleration"):
+            wanted = np.log10([float(row["seconds"]), max(float(row[f"{family}_max"]), 1e-17)])
+            nearest = np.min(np.max(np.abs(drawn - wanted), axis=1))
+            assert nearest < 0.01, f"{row['method']} {row['parameter']} {family}: nothing drawn within 0.01 decade"
+
+
 # --- readable ------------------------------------------------------------------------------------------------------
 
 
