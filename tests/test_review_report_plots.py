@@ -256,6 +256,19 @@ def test_the_steady_turn_is_drawn_between_the_results_extremes_beside_the_flywhe
     assert after.min() >= motion["omega_min"] - 0.02 * spread
     assert after.max() <= motion["omega_max"] + 0.02 * spread
     assert speed[-1, 0] == pytest.approx(motion["duration"], rel=1e-3)
+    # The legends' numbers, to the four digits they are written to.
+    (integrated_words, estimate_words) = [_numbers(label) for label in _comments(_groups(turn, "legend_")[0])]
+    assert integrated_words[-1] == pytest.approx(motion["delta"], rel=5e-4)
+    assert estimate_words[-1] == pytest.approx(np.ptp(dynamics["omega"]) / dynamics["omega_mean"], rel=5e-3)
+    words = {label: _numbers(label) for label in _comments(_groups(run, "legend_")[0])}
+    band = next(found for found in words.values() if len(found) == 2)
+    assert band == pytest.approx([motion["omega_min"], motion["omega_max"]], rel=5e-4)
+    assert any(found and found[-1] == pytest.approx(motion["start_up_time"], rel=5e-4) for found in words.values())
+
+
+def _numbers(words: str) -> list[float]:
+    """The numbers written in ``words``, in any of the locales' decimal marks (5 in "5 %" left out)."""
+    return [_number(found) for found in re.findall(r"\d+[.,]\d+", words)]
 
 
 def _power(label: str) -> float:
