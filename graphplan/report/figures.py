@@ -72,7 +72,9 @@ def _balancing_figure(analysis: Analysis):
     plot.axhline(0.0, color="black", linewidth=0.5)
     # The positions' numbers stand above their points: the highest ran into the frame at the top.
     low, high = plot.get_ylim()
-    plot.set_ylim(low, high + NUMBER_ROOM * (high - low))
+    marked = exact.balancing[np.isfinite(exact.balancing)]
+    if marked.size:
+        plot.set_ylim(low, max(high, float(marked.max()) + NUMBER_ROOM * (high - low)))
     plot.set_xlabel(axis)
     plot.set_ylabel(f"{name}{text['comma']}{unit}")  # a Chinese name takes a full-width comma
     plot.set_title(analysis.scene.title, fontsize=10, parse_math=False)  # the user's text, not mathtext
@@ -83,9 +85,9 @@ def _balancing_figure(analysis: Analysis):
     return figure
 
 
-# The room above the value axis's top for a position's number written over its point, as a share of the axis (7 pt
-# digits 5 pt over the point, on an axis some 200 pt tall).
-NUMBER_ROOM = 0.08
+# The room above the highest marked point for its number, as a share of the value axis (7 pt digits up to 7.5 pt over
+# the point, on an axis some 200 pt tall).
+NUMBER_ROOM = 0.1
 # How far past the largest balancing load without friction the axis runs where a lock sends the one with it off.
 LOCKED_REACH = 3.0
 
