@@ -361,6 +361,26 @@ def test_a_steady_turn_of_a_fast_heavy_flywheel_is_labelled_with_its_speeds_not_
     assert not _tick_labels_say_their_values(figure)
 
 
+@pytest.mark.parametrize("locale", ["en", "ru"])
+def test_a_balancing_force_of_meganewtons_says_its_factor_as_a_textbook_writes_it(tmp_path, locale):
+    """A lever held against 1.5 MN·m: the force axis read 0 … 8 with «1e6» over it, a program's notation."""
+    text = Path("fixtures/slider_driven.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "press.toml"
+    scene.write_text(re.sub(r"value     = 150\.0", "value = 1.5e6", text), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "figures", "--locale", locale]) == 0
+    forces = [p["equilibrium"]["balancing_force"]
+              for p in json.loads((out / "results.json").read_text(encoding="utf-8"))["positions"]]
+    assert max(forces) > 1e6
+    (axes,) = _axes(out / "balancing.svg")
+    words = _comments(axes)
+    assert "×10⁶" in words and not [word for word in words if re.fullmatch(r"1e[-−+]?\d+", word)]
+    # The ticks times the factor are the forces: the marked points read back at that scale are the results'.
+    factor = np.array([[1.0, 1e6]])
+    drawn = _values(axes, _marks(axes, "fill: #1f5fa8")) * factor
+    np.testing.assert_allclose(drawn[:, 1], forces, atol=2e-3 * np.ptp(forces))
+
+
 def _outside(figure) -> list[str]:
     """The position numbers written over the points of the balancing plot that cross its frame."""
     from matplotlib.text import Annotation

@@ -41,22 +41,36 @@ _DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 
 
 def with_decimal_mark(figure, mark: str) -> None:
-    """Write the numbers of ``figure`` with ``mark`` (a comma in Russian): tick labels, legends, annotations.
+    """Write the numbers of ``figure`` with ``mark`` (a comma in Russian): tick labels, legends, annotations; and a
+    linear axis's factor as a textbook writes it, ×10⁶, not matplotlib's 1e6 (in any language).
 
     The axes' titles are left as they are: they quote the scene's title, which is the user's text.
     """
-    if mark == ".":
-        return
     from matplotlib.text import Text
+    from matplotlib.ticker import ScalarFormatter
 
-    titles = {id(axes.title) for axes in figure.axes}
-    for text in figure.findobj(Text):
-        if id(text) not in titles:
-            text.set_text(_DECIMAL_POINT.sub(mark, text.get_text()))
+    if mark != ".":
+        titles = {id(axes.title) for axes in figure.axes}
+        for text in figure.findobj(Text):
+            if id(text) not in titles:
+                text.set_text(_DECIMAL_POINT.sub(mark, text.get_text()))
     for axes in figure.axes:
         for axis in (axes.xaxis, axes.yaxis):
-            axis.set_major_formatter(_marked_formatter(axis.get_major_formatter(), mark))
-            axis.set_minor_formatter(_marked_formatter(axis.get_minor_formatter(), mark))
+            for inner, put in ((axis.get_major_formatter(), axis.set_major_formatter),
+                               (axis.get_minor_formatter(), axis.set_minor_formatter)):
+                if mark != "." or isinstance(inner, ScalarFormatter):
+                    put(_marked_formatter(inner, mark))
+
+
+# matplotlib's factor of a linear axis (its offset text without mathtext): 1e6, 1e−5.
+_FACTOR = re.compile(r"1e([-−+]?\d+)")
+_SUPERSCRIPT = str.maketrans("0123456789-−+", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁻⁺")
+
+
+def _factor(offset: str) -> str:
+    """matplotlib's factor ``1e6`` as ×10⁶ (mathtext would do it, but sets a decimal comma in the ticks as a list's)."""
+    found = _FACTOR.fullmatch(offset)
+    return f"×10{found.group(1).lstrip('+').translate(_SUPERSCRIPT)}" if found else offset
 
 
 def _marked_formatter(inner, mark: str):
@@ -71,7 +85,7 @@ def _marked_formatter(inner, mark: str):
             return _DECIMAL_POINT.sub(mark, inner(x, pos))
 
         def get_offset(self):
-            return _DECIMAL_POINT.sub(mark, inner.get_offset())
+            return _DECIMAL_POINT.sub(mark, _factor(inner.get_offset()))
 
     return Marked()
 
