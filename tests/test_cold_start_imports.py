@@ -211,11 +211,14 @@ def test_the_run_lays_out_the_usual_kinematic_diagrams_once_for_its_drawing_and_
 
     drawn = []
     real = diagrams.parts
-    monkeypatch.setattr(diagrams, "parts", lambda record, text=None: drawn.append(record.scales) or real(record, text))
+    monkeypatch.setattr(diagrams, "parts", lambda record, text=None, lettered=True: drawn.append(
+        (record.scales, lettered)) or real(record, text, lettered))
     done = run(graphplan.load(SCENE), tmp_path / "out", only=["diagrams", "sheets"])
     assert (tmp_path / "out" / "diagrams.svg") in done.files
     assert len(drawn) > 1  # the usual size and the larger ones the sheet tried
     assert len(set(drawn)) == len(drawn), "a size of the diagrams was laid out twice"
+    # The larger sizes are measured unlettered: the sheet letters the one it draws, and the usual for diagrams.svg.
+    assert sum(lettered for _, lettered in drawn) <= 2
 
 
 def test_a_run_of_drawings_alone_loads_no_report_writer(tmp_path):

@@ -22,11 +22,13 @@ import math
 from collections.abc import Mapping
 
 import numpy as np
+import shapely
+from shapely.strtree import STRtree
 
 from ..kinematic_diagrams import KinematicDiagrams
 from ..locale import strings
 from ..scales import format_scale
-from .labels import Anchor, obstacles_of, place_labels
+from .labels import obstacles_of, text_box
 from .numerals import scale_factor
 from .primitives import (
     Arrow,
@@ -61,8 +63,22 @@ CAPTION_SIZE = 4.0
 SCALE_SIZE = 3.2
 AXIS_LABEL_SIZE = 3.5
 NUMBER_SIZE = 2.5
-# A position's number stands at least this far (mm) under the φ axis.
-_NUMBER_CLEARANCE_MM = 0.5
+# The band the positions' numbers stand in, as a hand drawing keeps it: its top this far (mm) under the φ axis, its
+# depth a number's box (``text_extent``: 0.3 of the size under the baseline, 1.15 over it).  Fixed by the font
+# size alone, so that a diagram's extent is known before a number is placed (:func:`parts` ``lettered``).
+NUMBER_CLEARANCE_MM = 0.8
+BAND_DEPTH_MM = NUMBER_CLEARANCE_MM + 1.45 * NUMBER_SIZE
+# Where the curve takes a number's spot in the band, the number steps along it by these (mm), no farther than its
+# box's edge beyond its tick by NUMBER_REACH_MM (it reads as its tick's); failing that it stands at its tick in a
+# second row under the lowest point of the curves, LOW_ROW_CLEARANCE_MM under it (clear of a ringed value there);
+# failing both it is left out, its tick kept.  Never over the axis: a number there beside the curve read as
+# lettering the curve.
+NUMBER_STEP_MM = 0.25
+NUMBER_REACH_MM = 1.0
+LOW_ROW_CLEARANCE_MM = PLAN_RING_MM + 0.3
+# What a number keeps clear of the lines round it, and of its neighbour (mm).
+NUMBER_MARGIN_MM = 0.2
+NUMBER_SPACING_MM = 0.6
 # How far an axis runs past the curves, and its arrowhead (mm).
 AXIS_RUN_MM = 12.0
 AXIS_HEAD_MM = 3.0
@@ -97,14 +113,19 @@ def stacked(drawn: list[list[Layer]]) -> list[Layer]:
     return layers
 
 
-def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None) -> list[list[Layer]]:
+def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None,
+          lettered: bool = True) -> list[list[Layer]]:
     """The displacement, velocity and acceleration diagrams apart, each round the origin of its own φ axis.
 
     The title stands over the first, the legend and the φ scale under the
     last, where they stand when the three are stacked (:func:`layout`).
+    Not ``lettered``: without the positions' numbers and the pole distance's
+    H, whose spots are the only ones sought among the lines; their band and
+    spots lie inside what is drawn, so the extent is the lettered one's, for
+    a sheet to choose the diagrams' size by before it letters the one chosen.
     """
     words = {**strings("en"), **(text or {})}
-    drawn = [_panel(record, kind, words) for kind in KINDS]
+    drawn = [_panel(record, kind, words, lettered) for kind in KINDS]
     _, last_bottom, _, _ = _extent(drawn[-1])
     drawn[-1] = [*drawn[-1], _footer(record, words, last_bottom - GAP_MM)]
     left = min(_extent(part)[0] for part in drawn)
@@ -136,7 +157,7 @@ def _symbol(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> t
     return symbol, words[f"kd_unit_{letter}_{how}"]
 
 
-def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> list[Layer]:
+def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lettered: bool = True) -> list[Layer]:
     """One diagram with its origin at (0, 0): axes, pole and rays, curves, numbers, caption."""
     scales = record.scales
     along_mm = 1.0 / scales.along
@@ -151,9 +172,13 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     left = -(pole + 6.0) if pole is not None else -4.0
     symbol, unit = _symbol(record, kind, words)
 
+    # The numbers' rows: the band under the axis, and where the curves dip under it, one under their lowest point.
+    rows = _number_rows(low)
+    # The ordinate axis runs down past the numbers' rows too, which so lie within what is drawn.
     axes: list[Primitive] = [
         Arrow((left, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"{kind}-phi-axis"),
-        Arrow((0.0, low - 4.0), (0.0, high + AXIS_RUN_MM), _AXIS, AXIS_HEAD_MM, key=f"{kind}-ordinate-axis"),
+        Arrow((0.0, min(low - 4.0, rows[-1][0])), (0.0, high + AXIS_RUN_MM), _AXIS, AXIS_HEAD_MM,
+              key=f"{kind}-ordinate-axis"),
     ]
     # Every position is numbered when the numbers fit between the ticks, else every second, third, … one.
     widest = max(text_width(str(number), NUMBER_SIZE) for number in record.numbers)
@@ -199,14 +224,19 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     labels = [Text((-2.0, high + AXIS_RUN_MM - 1.0), words["kd_axis"].format(symbol=symbol, unit=unit),
                    AXIS_LABEL_SIZE, "end"),
               Text((length + AXIS_RUN_MM, -5.0), _abscissa(record, words), AXIS_LABEL_SIZE, "middle")]
-    # Each number under the axis, as its tick stands over it: one moved up off the curve stood on the axis line.
-    anchors = [Anchor((x, 0.0), str(number), NUMBER_SIZE, -math.pi / 2, under=-_NUMBER_CLEARANCE_MM)
-               for k, (x, number) in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True))
-               if ticked(k)]
     if pole is not None:
-        anchors.append(Anchor((-pole, 0.0), words["kd_pole"], AXIS_LABEL_SIZE, -3 * math.pi / 4))
-        anchors.append(Anchor((-pole / 2, 0.0), words["kd_pole_distance"], NUMBER_SIZE + 0.5, math.pi / 2))
-    placed = place_labels(anchors, obstacles_of(axes + rays + drawn + labels))
+        # The pole's letter under the axis, left of the pole: the rays all run to its right, so nothing is there.
+        labels.append(Text((-pole - 1.0, -0.8 - 1.15 * AXIS_LABEL_SIZE), words["kd_pole"], AXIS_LABEL_SIZE, "end"))
+    placed: tuple[Text, ...] = ()
+    if lettered:
+        obstacles = obstacles_of(axes + rays + drawn + labels)
+        ticks = [(x, str(number)) for k, (x, number)
+                 in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True)) if ticked(k)]
+        placed = _numbers(ticks, obstacles, rows)
+        if pole is not None:
+            numbers = [text_box(text) for text in placed]
+            placed += (_pole_distance(words["kd_pole_distance"], pole, axes[1].start[1], high,
+                                      obstacles + numbers),)
 
     strokes: list[Primitive] = []
     if kind == "displacement" and record.stroke_end is not None:
@@ -221,7 +251,8 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
     caption = (Text((0.0, lowest + raised + 5.5), title, CAPTION_SIZE, "start", weight="bold"),
                *(Text((8.0, lowest + raised - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
                  for k, line in enumerate(scale_lines)))
-    bottom = min(low - 4.0, *(t.at[1] - 2.0 for t in placed.texts), *(
+    # Under the numbers' band wherever they stand, so that the words under the diagram move with no label.
+    bottom = min(low - 4.0, rows[-1][0] + 0.3 * NUMBER_SIZE - 2.0, *(t.at[1] - 2.0 for t in labels[2:]), *(
         y for item in strokes if isinstance(item, Polyline) for _, y in item.points))
     peak = record.v_peak if kind == "velocity" else record.a_peak
     notes: tuple[Text, ...] = ()
@@ -248,9 +279,85 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str]) -> li
         key = (Circle((x + 6.0, ring_y), PLAN_RING_MM, _AXIS, None),
                Text((x + 14.0, ring_y - 1.2), words["kd_plans"], SCALE_SIZE, "start"))
     return [Layer(f"{kind}-axes", tuple(axes)), Layer(f"{kind}-rays", tuple(rays + strokes)),
-            Layer(f"{kind}-curves", tuple(drawn)), Layer(f"{kind}-leaders", placed.leaders),
-            Layer(f"{kind}-labels", tuple(labels) + placed.texts + notes + key),
+            Layer(f"{kind}-curves", tuple(drawn)), Layer(f"{kind}-leaders", ()),
+            Layer(f"{kind}-labels", tuple(labels) + placed + notes + key),
             Layer(f"{kind}-caption", caption)]
+
+
+def _number_rows(low: float) -> list[tuple[float, float]]:
+    """The (bottom, top) mm of the rows a diagram's numbers stand in: the band under the φ axis, then, where the
+    curves dip under the axis, the band under their lowest point (``low``, nought or less)."""
+    rows = [(-BAND_DEPTH_MM, -NUMBER_CLEARANCE_MM)]
+    if low < 0.0:
+        top = low - LOW_ROW_CLEARANCE_MM
+        rows.append((top - 1.45 * NUMBER_SIZE, top))
+    return rows
+
+
+def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[float, float]]) -> tuple[Text, ...]:
+    """The positions' numbers, each in the first of the ``rows`` (:func:`_number_rows`) where a spot at its tick
+    ``(x, number)``, or stepped a little along the row, covers none of the lines (``obstacles``) nor another
+    number; one with no such spot is left out, its tick kept.
+
+    Every spot lies in a row, within a number's reach of its tick: inside the diagram's extent, whatever the
+    curves do, and under the axis.
+    """
+    tree = STRtree(obstacles)
+    spots: list[tuple[int, float, float]] = []  # (tick, centre x, baseline) of every spot, in the order tried
+    boxes = []
+    for index, (x, number) in enumerate(ticks):
+        half = text_width(number, NUMBER_SIZE) / 2
+        most = int((half + NUMBER_REACH_MM) / NUMBER_STEP_MM)
+        steps = sorted(range(-most, most + 1), key=lambda k: (abs(k), -k))
+        for y0, y1 in rows:
+            for k in steps:
+                centre = x + k * NUMBER_STEP_MM
+                spots.append((index, centre, y0 + 0.3 * NUMBER_SIZE))
+                boxes.append((centre - half, y0, centre + half, y1))
+    grown = np.asarray(boxes, dtype=float) + np.array([-1.0, -1.0, 1.0, 1.0]) * NUMBER_MARGIN_MM
+    hit, _ = tree.query(shapely.box(*grown.T), predicate="intersects") if obstacles else (np.array([], int), None)
+    blocked = np.zeros(len(boxes), dtype=bool)
+    blocked[hit] = True
+    chosen: dict[int, int] = {}
+    taken: list[tuple[float, float, float, float]] = []
+    for spot, (index, _, _) in enumerate(spots):
+        if index in chosen or blocked[spot]:
+            continue
+        x0, y0, x1, y1 = boxes[spot]
+        if any(x0 < b1 + NUMBER_SPACING_MM and b0 < x1 + NUMBER_SPACING_MM and y0 < d1 and c0 < y1
+               for b0, c0, b1, d1 in taken):
+            continue
+        chosen[index] = spot
+        taken.append(boxes[spot])
+    return tuple(Text((spots[spot][1], spots[spot][2]), ticks[index][1], NUMBER_SIZE, "middle")
+                 for index, spot in sorted(chosen.items()))
+
+
+def _pole_distance(word: str, pole: float, foot: float, high: float, obstacles: list) -> Text:
+    """The pole distance's letter H between the pole and the ordinate axis, in the clear spot nearest the middle
+    of the distance just over the axis (between the rays where they fan over and under it); where the rays leave
+    none, the spot that covers fewest.  Every spot lies between the ordinate axis's ``foot`` and its top, and
+    within the distance: inside the diagram's extent."""
+    size = NUMBER_SIZE + 0.5
+    half = text_width(word, size) / 2
+    xs = np.arange(-pole + half + 1.5, -half - 1.0 + 1e-9, 0.5)
+    if not len(xs):
+        xs = np.array([-pole / 2])
+    # Baselines from just over the axis (the box 0.8 mm clear of it) up to under the ordinate's top, and from just
+    # under it down to the ordinate axis's foot.
+    over = np.arange(0.8 + 0.3 * size, high + AXIS_RUN_MM - 6.0, 0.5)
+    under = np.arange(-0.8 - 1.15 * size, foot + 0.3 * size - 1e-9, -0.5)
+    baselines = np.concatenate((over, under))
+    x, y = (grid.ravel() for grid in np.meshgrid(xs, baselines))
+    distance = np.hypot(x + pole / 2, y - over[0])
+    order = np.argsort(distance, kind="stable")
+    x, y = x[order], y[order]
+    boxes = shapely.box(x - half - 0.3, y - 0.3 * size - 0.3, x + half + 0.3, y + 1.15 * size + 0.3)
+    tree = STRtree(obstacles)
+    hit, _ = tree.query(boxes, predicate="intersects")
+    counts = np.bincount(hit, minlength=len(boxes))
+    best = int(np.argmin(counts))  # the first, nearest, of the fewest covered
+    return Text((float(x[best]), float(y[best])), word, size, "middle")
 
 
 def _strokes(record: KinematicDiagrams, words: Mapping[str, str], y: float) -> list[Primitive]:

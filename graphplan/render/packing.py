@@ -31,7 +31,7 @@ from __future__ import annotations
 import contextlib
 import itertools
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 
 from ..errors import SceneError
@@ -97,6 +97,10 @@ class Panel:
     # it (:attr:`force_rows.Heading.scales`): drawn naming those of every drawing that may stand under it, once
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
     heading_scales: tuple[tuple[str, str], ...] = ()
+    # The drawing as it goes on the sheet, where ``layers`` leaves out labels that only room was kept for: the
+    # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
+    # diagrams, measured by its unlettered layers).  None: ``layers`` as they are.
+    lettered: Callable[[], tuple[Layer, ...]] | None = field(default=None, repr=False, compare=False)
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -110,8 +114,18 @@ class Panel:
 
     def without_heading(self) -> Panel:
         """The drawing with its heading left off, as it stands on the sheet of the part it goes on from."""
-        return replace(self, layers=tuple(layer for layer in self.layers if layer.name != HEADING_LAYER),
-                       alternatives=tuple(way.without_heading() for way in self.alternatives))
+        lettered = self.lettered
+        return replace(self, layers=_headless_layers(self.layers),
+                       alternatives=tuple(way.without_heading() for way in self.alternatives),
+                       lettered=None if lettered is None else lambda: _headless_layers(lettered()))
+
+    def drawn_layers(self) -> tuple[Layer, ...]:
+        """The layers the sheet draws: lettered (:attr:`lettered`) where the labels wait for the way taken."""
+        return self.layers if self.lettered is None else self.lettered()
+
+
+def _headless_layers(layers: tuple[Layer, ...]) -> tuple[Layer, ...]:
+    return tuple(layer for layer in layers if layer.name != HEADING_LAYER)
 
 
 # The extents of the layers of the panels made lately, by the layers' identity: a panel replaced in another field

@@ -588,7 +588,9 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     from . import diagrams as diagrams_layout
 
     def drawn_at(axis: float, field: float) -> tuple[str, list[list[Layer]]]:
-        return diagram_parts(analysis, axis, field)
+        # Measured unlettered: the numbers' rows and H's spots lie within what is drawn, so the extent is the same;
+        # but the usual size, which diagrams.svg draws lettered anyway.
+        return diagram_parts(analysis, axis, field, lettered=(axis, field) == (AXIS_MM, FIELD_MM))
 
     form = form_of(analysis.scene.locale)
     intervals = interval_count(analysis.mechanism.driver.cyclic, analysis.scene.positions.count)
@@ -611,16 +613,20 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
                 break
             axis, field = axis + grown[0], field + grown[1]
             title, drawn = longer
+    # The size chosen lettered: its parts stand apart where no sheet holds a larger way.
+    title, drawn = diagram_parts(analysis, axis, field)
     parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
     usual = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
     if sheet == "none" or (axis, field) != (AXIS_MM, FIELD_MM) or not holds(sheet, form, *_size(usual.layers)):
         return usual
     # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
     # larger way that an empty sheet holds, largest first, for the packing to take the largest the room left holds.
+    # Each is measured unlettered and lettered only where the packing takes it (:attr:`Panel.lettered`).
     larger = []
     for axis, field in _larger_diagram_sizes(intervals):
         title, drawn = drawn_at(axis, field)
-        way = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+        way = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False,
+                    lettered=_lettered_diagrams(analysis, axis, field))
         if holds(sheet, form, width(way), height(way)):
             larger.append(way)
     if not larger:
@@ -630,23 +636,33 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     return replace(first, alternatives=(*others, usual))
 
 
-# The kinematic diagrams' parts by the φ axis and field they are drawn at, for an analysis: the run's own drawing
-# (diagrams.svg) is the sheet's usual way, which the sheet laid out already.
+def _lettered_diagrams(analysis: Analysis, axis: float, field: float) -> Callable[[], tuple[Layer, ...]]:
+    """The kinematic diagrams drawn at ``axis`` and ``field`` stacked with their labels, laid out when asked."""
+    from . import diagrams as diagrams_layout
+
+    return lambda: tuple(diagrams_layout.stacked(diagram_parts(analysis, axis, field)[1]))
+
+
+# The kinematic diagrams' parts by the φ axis and field they are drawn at, lettered or not, for an analysis: the
+# run's own drawing (diagrams.svg) is the sheet's usual way, which the sheet laid out already.
 _diagram_parts: OwnedMemo[tuple[str, list[list[Layer]]]] = OwnedMemo()
 
 
-def diagram_parts(analysis: Analysis, axis: float, field: float) -> tuple[str, list[list[Layer]]]:
+def diagram_parts(analysis: Analysis, axis: float, field: float,
+                  lettered: bool = True) -> tuple[str, list[list[Layer]]]:
     """The title and the parts (:func:`graphplan.render.diagrams.parts`) of the kinematic diagrams of ``analysis``
-    drawn on a φ axis of ``axis`` mm and fields ``field`` mm tall, laid out once."""
+    drawn on a φ axis of ``axis`` mm and fields ``field`` mm tall, laid out once; not ``lettered``, without the
+    labels whose room alone is kept (the extent is the same)."""
     from ..kinematic_diagrams import of_analysis
     from . import diagrams as diagrams_layout
 
     def drawn() -> tuple[str, list[list[Layer]]]:
         text = strings(analysis.scene.locale)
         record = of_analysis(analysis, axis_mm=axis, field_mm=field)
-        return text["kd_title"].format(link=record.link, point=record.point or ""), diagrams_layout.parts(record, text)
+        return (text["kd_title"].format(link=record.link, point=record.point or ""),
+                diagrams_layout.parts(record, text, lettered))
 
-    return _diagram_parts.get(analysis, (axis, field), drawn)
+    return _diagram_parts.get(analysis, (axis, field, lettered), drawn)
 
 
 # Diagrams drawn larger on a sheet with room are tried at these multiples of the usual φ axis and of the usual
@@ -1142,7 +1158,7 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         layers: list[Layer] = []
         placed: dict[str, Rect] = {}
         for panel, rect, (dx, dy) in page.placed:
-            layers.extend(prefixed(moved_layers(panel.layers, dx, dy), panel.name))
+            layers.extend(prefixed(moved_layers(panel.drawn_layers(), dx, dy), panel.name))
             placed[panel.name] = rect
         layers.append(Layer("sheet-frame", tuple(_frame(page, form))))
         layers.append(Layer("title-block", tuple(title_block(form, fields, words, (page.frame[2], page.frame[1])))))
@@ -1162,7 +1178,7 @@ def _drawing_name(page: Page) -> str:
 
 
 def _unframed(panel: Panel, number: int, count: int) -> Sheet:
-    layers = prefixed(list(panel.layers), panel.name)
+    layers = prefixed(list(panel.drawn_layers()), panel.name)
     return Sheet("none", None, layers, None, None, {panel.name: panel.extent}, number, count)
 
 
