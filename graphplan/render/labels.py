@@ -6,8 +6,8 @@ box would cover (the drawn lines, the boxes of labels already placed) and
 for standing nearer another point than its own.  Where nothing beside the
 point is free the label is set apart on a thin leader line.  A label left
 on a line once all stand tries finer spots, and a neighbour's; one still on
-it reaches farther, for a spot clear of everything.  Shapely does the
-intersection tests.
+it reaches farther, for a spot clear of everything, moving a few neighbours
+if it must.  Shapely does the intersection tests.
 """
 
 from __future__ import annotations
@@ -163,6 +163,10 @@ REACH_SHARES = (1.1, 1.8, 2.5, 3.2)
 SLIDE_STEP = 1.5
 SLIDE = 9.0
 SLIDE_COST = 1.5
+# How many neighbours a label left on a line may move to stand clear (``make_room``), and at how many of its
+# cheapest spots it tries.
+ROOM_MADE = 3
+ROOM_TRIES = 4
 # How many of the cheapest clear spots are tried for one whose leader runs along no line (and, of those one neighbour
 # stands on, for one the neighbour gives up).
 REACH_TRIES = 8
@@ -195,8 +199,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     sooner than lead it across two: beside another point of the arm it names
     (``Anchor.along``), on a short leader (twice the directions, as far as a
     spot set apart), or where a single neighbour stands that can itself
-    stand as clear elsewhere.  A label keeps out of its anchor's
-    ``keep_off`` wherever that costs less than three lines covered.
+    stand as clear elsewhere.  One on a line even so, whose clear spots
+    within reach a few neighbours hold (a crowd of names round a lever's
+    pole, none of which can move alone), takes one and the neighbours are
+    placed again round it, when fewer of them all then lie on lines.  A
+    label keeps out of its anchor's ``keep_off`` wherever that costs less
+    than three lines covered.
 
     ``standing`` are labels set already (the numbers round a crank's
     circle): the anchors' labels keep clear of them as of one another.
@@ -242,10 +250,27 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     led_from = len(BESIDE_SHARES)
     apart_from = led_from + len(LED_SHARES)
 
+    # What a label's spots cost for the drawing alone, which stays as it is while the labels move: found once for
+    # each anchor and kind of spot (a label is placed again in the repairs, and its neighbours with it).
+    drawn_costs: dict[tuple, tuple] = {}
+
     def costed(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int = 16):
         """The spots on the rings at ``shares`` round the anchor, numbered ``rings`` (a ring between two of the
         standard rings costs between them): their boxes, their rings, the leaders of those led, and what each
         costs."""
+        key = (index, shares, directions)
+        if key not in drawn_costs:
+            drawn_costs[key] = costed_on_drawing(index, shares, rings, directions)
+        candidates, beside, led, lines, shapes, covering, drawn_cost = drawn_costs[key]
+        clashing = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
+        # Two thin leaders crossing each other still lead each to its own label: less amiss than a leader
+        # through a label, yet more than any drawn line covered.
+        clashing[led] += (OVERLAP * crossing(lines, placed_boxes, index)
+                          + LEADERS_CROSSING * crossing(lines, leader_lines, index))
+        return _Spots(candidates, beside, led, lines, drawn_cost + clashing, covering, clashing)
+
+    def costed_on_drawing(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int):
+        """:func:`costed`'s spots and what they cost but for the labels and leaders placed."""
         anchor = anchors[index]
         ring, order, candidates = _candidates(anchor, gap, shares, directions)
         ring = np.asarray(rings, dtype=float)[ring]
@@ -263,16 +288,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         lines = _leaders(anchor.at, candidates[led])
         # What the boxes and the leaders cover, in one query of the tree.
         covers = covered(np.concatenate((shapes, lines)))
-        clashing = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
-        cost = clashing + COVER * covers[:len(shapes)] + RING * ring + order * 0.01
-        # Two thin leaders crossing each other still lead each to its own label: less amiss than a leader
-        # through a label, yet more than any drawn line covered.
-        crossings = (OVERLAP * crossing(lines, placed_boxes, index)
-                     + LEADERS_CROSSING * crossing(lines, leader_lines, index))
+        cost = COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         # The leader says which point the label names: standing near a neighbour misleads less.
         cost[beside] += MISLEADING * misleading[beside]
-        cost[led] += crossings + LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
-        clashing[led] += crossings
+        cost[led] += LEADER_CROSSING * covers[len(shapes):] + MISLEADING / 2 * misleading[led]
         cost[ring >= apart_from] += SET_APART
         # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
         # it: beside the point already, it has no leader to draw.
@@ -283,7 +302,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         covering = covers[:len(shapes)]
         if off_lines:
             cost[covering > 0] += LINE_COVERED
-        return _Spots(candidates, beside, led, lines, cost, covering, clashing)
+        for array in (candidates, beside, led, lines, shapes, covering, cost):
+            array.flags.writeable = False
+        return candidates, beside, led, lines, shapes, covering, cost
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
 
@@ -419,13 +440,23 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     # The rings reached, numbered as the standard ones they fall between.
     reach_rings = np.interp(REACH_SHARES, near_shares, np.arange(len(near_shares)))
 
-    def reach_out(index: int, moving: bool = True, leading: bool = True) -> bool:
-        """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
-        reach whose box covers nothing and whose leader crosses no label and runs along no line: beside another point
-        of the line it names, or (``leading``) on a short leader from its point; else (``moving``) to such a spot one
-        neighbouring label stands on, when that neighbour reaches such a spot too, beside its point if it stood there.
-        Such a spot costs more than the line it leaves by the rules of :func:`costed`, which let a letter lie on one
-        line sooner than lead it off across two.  Whether the label moved."""
+    reachable_on_drawing: dict[tuple[int, bool], tuple] = {}
+
+    def reachable(index: int, leading: bool = True):
+        """The spots within reach of the label of ``index`` (:func:`reach_out`'s): their costs (as :class:`_Spots`),
+        their boxes as shapes, which are led, and which may hold it as far as the drawing goes: the box covering
+        nothing, and standing where the anchor lets it (none within its ``keep_off``, none over its ``under``, no
+        leader where not ``leading``, no long name led from a spot that reaches back over its own point)."""
+        if (index, leading) not in reachable_on_drawing:
+            reachable_on_drawing[index, leading] = reachable_drawn(index, leading)
+        spot, shapes, is_led, usable = reachable_on_drawing[index, leading]
+        crossings = LEADERS_CROSSING * crossing(spot.leaders, leader_lines, index)
+        cost = spot.cost.copy()
+        cost[spot.led] += crossings
+        return spot._replace(cost=cost), shapes, is_led, usable
+
+    def reachable_drawn(index: int, leading: bool):
+        """:func:`reachable` but for the leaders placed."""
         anchor = anchors[index]
         slid = _slide_points(anchor)
         ring, turn, offsets = _candidates(anchor, gap, BESIDE_SHARES, 16, at=(0.0, 0.0))
@@ -442,19 +473,14 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         lines = _leaders(anchor.at, led_boxes)
         shapes = shapely.box(*candidates.T)
         covers = covered(np.concatenate((shapes, lines)))
-        # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
-        open_ = (covers[:len(shapes)] == 0) & (crossing(shapes, leader_lines, index) == 0)
-        open_[led] &= crossing(lines, placed_boxes, index) == 0
+        usable = covers[:len(shapes)] == 0
         # A long name set off obliquely reaches back over its own point: beside it already, with no leader to draw.
-        open_[led] &= _box_distances(led_boxes, np.array([anchor.at]))[:, 0] > 0.0
-        open_ &= ~_kept_off(anchor, candidates, is_led)
+        usable[led] &= _box_distances(led_boxes, np.array([anchor.at]))[:, 0] > 0.0
+        usable &= ~_kept_off(anchor, candidates, is_led)
         if anchor.under is not None:
-            open_ &= candidates[:, 3] <= anchor.under + 1e-9
+            usable &= candidates[:, 3] <= anchor.under + 1e-9
         if not leading:
-            open_ &= ~is_led
-        if not open_.any():
-            return False
-        labels_hit = crossing(shapes, placed_boxes, index)
+            usable &= ~is_led
         # Standing about as near another labelled point as its own (the point of its line beside which it stands)
         # would name the wrong one.
         misleading = _misleading(candidates, points, np.delete(at, index, axis=0))
@@ -462,25 +488,39 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                                RING * reach_rings[led_ring] + 0.01 * led_turn
                                + SET_APART * (reach_rings[led_ring] >= apart_from)
                                + LEADER_CROSSING * covers[len(shapes):]
-                               + LEADERS_CROSSING * crossing(lines, leader_lines, index)
                                + MISLEADING / 2 * misleading[led]))
         spot = _Spots(candidates, ~is_led, led, lines, cost, np.zeros(len(candidates)), np.zeros(len(candidates)))
+        return spot, shapes, is_led, usable
 
-        def tried(usable: np.ndarray):
-            """The cheapest of the ``usable`` spots whose leader, if any, runs along no line (it would read as part
-            of it, not as leading to the label), as far as REACH_TRIES."""
-            for best in np.argsort(np.where(usable, cost, np.inf), kind="stable")[:REACH_TRIES]:
-                if not usable[best]:
-                    return
-                if not (is_led[best] and runs_along(lines[best - len(beside_boxes)])):
-                    yield int(best)
+    def tried(spot: _Spots, is_led: np.ndarray, usable: np.ndarray, tries: int = REACH_TRIES):
+        """The cheapest of the ``usable`` spots whose leader, if any, runs along no line (it would read as part of
+        it, not as leading to the label), as far as ``tries``."""
+        for best in np.argsort(np.where(usable, spot.cost, np.inf), kind="stable")[:tries]:
+            if not usable[best]:
+                return
+            if not (is_led[best] and runs_along(spot.leaders[best - spot.led[0]])):
+                yield int(best)
 
-        for best in tried(open_ & (labels_hit == 0)):
+    def reach_out(index: int, moving: bool = True, leading: bool = True) -> bool:
+        """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
+        reach whose box covers nothing and whose leader crosses no label and runs along no line: beside another point
+        of the line it names, or (``leading``) on a short leader from its point; else (``moving``) to such a spot one
+        neighbouring label stands on, when that neighbour reaches such a spot too, beside its point if it stood there.
+        Such a spot costs more than the line it leaves by the rules of :func:`costed`, which let a letter lie on one
+        line sooner than lead it off across two.  Whether the label moved."""
+        spot, shapes, is_led, usable = reachable(index, leading)
+        # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
+        open_ = usable & (crossing(shapes, leader_lines, index) == 0)
+        open_[spot.led] &= crossing(spot.leaders, placed_boxes, index) == 0
+        if not open_.any():
+            return False
+        labels_hit = crossing(shapes, placed_boxes, index)
+        for best in tried(spot, is_led, open_ & (labels_hit == 0)):
             put(index, spot, best, "reach")
             return True
         if not moving:
             return False
-        for best in tried(open_ & (labels_hit == 1)):
+        for best in tried(spot, is_led, open_ & (labels_hit == 1)):
             (neighbour,) = [k for k, other in placed_boxes.items() if k != index and other.intersects(shapes[best])]
             if neighbour < 0:
                 continue  # a label standing already does not move
@@ -491,29 +531,85 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             restore(state)
         return False
 
+    # The farthest a label reaches from its point (letter heights beyond the gap): a neighbour it moves to make room
+    # is led no farther than that, or than it was.
+    reach_share = max(REACH_SHARES)
+
+    def make_room(index: int) -> bool:
+        """Move the label of ``index``, still on a line after :func:`reach_out`, to a spot within reach whose box
+        covers nothing of the drawing but the labels or leaders of up to ROOM_MADE neighbours, placing those again
+        round it (each where :func:`place` puts it, reaching out from a line there), when fewer of them all then lie
+        on lines and none covers another label, takes a leader along a line, or a longer one than it had beyond
+        the reach.  In a crowd of names round a lever's pole each spot off the lines near a label is taken by a
+        neighbour that could stand as well elsewhere, but not by one alone: moved one at a time, none moves.
+        Whether the label moved."""
+        spot, shapes, is_led, usable = reachable(index)
+        # Whose label or leader each spot's box or leader meets.
+        owners = [k for k in placed_boxes if k != index] + [k for k in leader_lines if k != index]
+        others = np.array([placed_boxes[k] for k in placed_boxes if k != index]
+                          + [leader_lines[k] for k in leader_lines if k != index], dtype=object)
+        if not len(others):
+            return False
+        mine = np.concatenate((shapes, spot.leaders))
+        hit, other = STRtree(others).query(mine, predicate="intersects")
+        # A leader's spot is the box's index, whether its box or its leader meets the neighbour.
+        hit = np.where(hit >= len(shapes), spot.led[np.clip(hit - len(shapes), 0, len(spot.led) - 1)], hit)
+        met: list[set[int]] = [set() for _ in range(len(shapes))]
+        for one, theirs in zip(hit.tolist(), other.tolist()):
+            met[one].add(owners[theirs])
+        crowded = np.array([0 < len(them) <= ROOM_MADE and min(them) >= 0 for them in met])
+        for best in tried(spot, is_led, usable & crowded, ROOM_TRIES):
+            neighbours = sorted(met[best], key=order.index)
+            state = saved(index, *neighbours)
+            lying = [where[k][2] > 0 for k in (index, *neighbours)]
+            covering = sum(where[k][2] for k in (index, *neighbours))
+            reaches = {k: max(leader_lines[k].length if k in leader_lines else 0.0,
+                              gap + reach_share * anchors[k].size) for k in neighbours}
+            put(index, spot, best, "room")
+            for k in neighbours:
+                place(k)
+                if where[k][2] > 0 or paid[k] >= KEPT_OFF:
+                    reach_out(k, moving=False)
+            if (sum(where[k][2] > 0 for k in neighbours) < sum(lying)
+                    and sum(where[k][2] for k in neighbours) <= covering + 1e-9
+                    and all(paid[k] < OVERLAP for k in neighbours)
+                    and all(k not in leader_lines or (leader_lines[k].length <= reaches[k] + 1e-9
+                                                      and not runs_along(leader_lines[k])) for k in neighbours)):
+                return True
+            restore(state)
+        return False
+
+    def letter() -> None:
+        """Place every label in ``order`` among those placed before it, and mend what that left."""
+        for index in order:
+            place(index)
+        # Lettered one by one, a label can take the only clear spot of a later one.  Each label that had to cover
+        # another is placed again among all the others, now that they all stand: it, or the one it covers, moves.
+        for _ in range(REPAIR_ROUNDS):
+            clashing = [index for index in order if paid[index] >= OVERLAP]
+            if not clashing:
+                break
+            covered_ones = [other for other in order if other not in clashing
+                            and any(_clash(index, other, placed_boxes, leader_lines) for index in clashing)]
+            for index in covered_ones + clashing:
+                place(index)
+        # Lettered one by one, a label can also be left on a line beside its point where a neighbour lettered before
+        # it took the clear spot, which the neighbour did not need: the two change places when that costs less.
+        for index in order:
+            if where[index][2] > 0 and paid[index] < OVERLAP:
+                off_the_line(index)
+        # Those still on a line, or on another label, reach farther for a spot clear of everything.
+        for index in order:
+            if where[index][2] > 0 or paid[index] >= KEPT_OFF:
+                reach_out(index)
+        # Those on a line still, where a clear spot within reach is held by a few neighbours, move them.
+        for index in order:
+            if where[index][2] > 0 and paid[index] < OVERLAP:
+                make_room(index)
+
     order = _most_crowded_first(anchors, at)
     where: dict[int, tuple[str, int, float]] = {}
-    for index in order:
-        place(index)
-    # Lettered one by one, a label can take the only clear spot of a later one.  Each label that had to cover
-    # another is placed again among all the others, now that they all stand: it, or the one it covers, moves.
-    for _ in range(REPAIR_ROUNDS):
-        clashing = [index for index in order if paid[index] >= OVERLAP]
-        if not clashing:
-            break
-        covered_ones = [other for other in order if other not in clashing
-                        and any(_clash(index, other, placed_boxes, leader_lines) for index in clashing)]
-        for index in covered_ones + clashing:
-            place(index)
-    # Lettered one by one, a label can also be left on a line beside its point where a neighbour lettered before
-    # it took the clear spot, which the neighbour did not need: the two change places when that costs less.
-    for index in order:
-        if where[index][2] > 0 and paid[index] < OVERLAP:
-            off_the_line(index)
-    # Those still on a line, or on another label, reach farther for a spot clear of everything.
-    for index in order:
-        if where[index][2] > 0 or paid[index] >= KEPT_OFF:
-            reach_out(index)
+    letter()
     leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
     return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
