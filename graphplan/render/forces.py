@@ -1011,7 +1011,10 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         across = 1j * (_c(arrow.end) - _c(arrow.start))
         if ((centre - middle) * across.conjugate()).real < 0:
             across = -across
-        anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, _angle(across), arrow.stroke.colour))
+        # Beside any stretch of its side the name reads as naming it: where sides crowd at the middle (a sliver
+        # of a polygon, R23n between R23 and R43), it slides along to a clear stretch rather than lie on one.
+        anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, _angle(across), arrow.stroke.colour,
+                              along=(arrow.start, arrow.end)))
     labels = _lettered(anchors, figure)
     return [Layer(f"{name}-lines", tuple(actions)), Layer(f"{name}-vectors", tuple(arrows + dots)),
             Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)]
