@@ -1200,12 +1200,16 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     labels = _lettered(anchors + arm_anchors, figure)
     # An arm lettered within reach of the pole (a short one, or one whose name found no room farther out) names
     # no arm there, among the names of the loads at p and every other arm's start: it is left unlettered and
-    # its length stands under the drawing, beside the equation that names its force.
+    # its length stands under the drawing, beside the equation that names its force.  So is one whose name found no
+    # spot beside its arm off the other lines (the arms and loads crowding round the pole of a triad's lever): a
+    # grey name lying on another line reads as naming that one.
     # Placed again without them, another arm's name may take the room they left: until none stands there.
+    drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     crowded: list[Anchor] = []
     lettered = list(arm_anchors)
     while near := [anchor for anchor, placed in zip(lettered, labels.texts[len(anchors):])
-                   if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM]:
+                   if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
+                   or _on_a_line(anchor, placed, drawn_lines, labels.leaders)]:
         crowded += near
         lettered = [anchor for anchor in lettered if anchor not in near]
         labels = _lettered(anchors + lettered, figure)
@@ -1239,6 +1243,14 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placeme
     centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
     return place_labels(anchors, obstacles_of(figure) + spots)
+
+
+def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline]) -> bool:
+    """Whether the placed label of ``anchor`` lies on one of the drawn ``lines`` or on another label's leader (its
+    own starts by its point)."""
+    box = text_box(text)
+    others = [LineString(leader.points) for leader in leaders if math.dist(leader.points[0], anchor.at) > 1.0]
+    return any(box.intersects(line) for line in [*lines, *others])
 
 
 def _negligible(force: complex, forces: Sequence[complex]) -> bool:
