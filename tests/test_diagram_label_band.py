@@ -144,6 +144,21 @@ def test_the_numbers_stand_in_the_band_by_their_ticks_off_every_line(name):
             seen.append((x0, y0, x1, y1))
 
 
+@pytest.mark.parametrize("name", WITH_DIAGRAMS)
+def test_the_numbers_rows_make_no_diagram_deeper_than_the_room_it_keeps_under_its_curves(name):
+    """The band and the row under the curves lie within the 4 mm every diagram keeps under its lowest point (and
+    under the axis), so that the band costs no sheet any room: 2.3 mm deeper, the triad with a slider's three
+    diagrams no longer stood on the sheet of its plans and took a fourth sheet of their own."""
+    _, lettered, _ = drawn(name)
+    for kind, part in zip(diagrams.KINDS, lettered, strict=True):
+        numbers, _ = numbers_and_lines(part, kind)
+        floor = lowest_of_the_curves(part, kind) - 4.0 - 0.3 * diagrams.NUMBER_SIZE
+        assert all(text_extent(number)[1] >= floor - 1e-9 for number in numbers), kind
+        layers = {layer.name: layer.items for layer in part}
+        ordinate = next(item for item in layers[f"{kind}-axes"] if isinstance(item, Arrow) and item.start[0] == 0.0)
+        assert ordinate.start[1] >= floor - 1e-9, kind
+
+
 @pytest.mark.parametrize("name", ["ratchet_crank_rocker", "slider_driven", "shaper_six_bar"])
 def test_most_numbers_stand_right_under_the_axis_and_none_over_it(name):
     """A number over the axis beside the curve read as lettering the curve: none stands there, and the row under

@@ -70,12 +70,14 @@ NUMBER_CLEARANCE_MM = 0.8
 BAND_DEPTH_MM = NUMBER_CLEARANCE_MM + 1.45 * NUMBER_SIZE
 # Where the curve takes a number's spot in the band, the number steps along it by these (mm), no farther than its
 # box's edge beyond its tick by NUMBER_REACH_MM (it reads as its tick's); failing that it stands at its tick in a
-# second row under the lowest point of the curves, LOW_ROW_CLEARANCE_MM under it (clear of a ringed value there);
-# failing both it is left out, its tick kept.  Never over the axis: a number there beside the curve read as
+# second row under the lowest point of the curves, LOW_ROW_CLEARANCE_MM under it (a ringed value there takes its
+# spots as the curve does); failing both it is left out, its tick kept.  The rows end within the 4 mm a diagram
+# kept under its curves before it had them: deeper, they made every diagram taller, and a sheet that held the
+# three beside the plans held them no more.  Never over the axis: a number there beside the curve read as
 # lettering the curve.
 NUMBER_STEP_MM = 0.25
 NUMBER_REACH_MM = 1.0
-LOW_ROW_CLEARANCE_MM = PLAN_RING_MM + 0.3
+LOW_ROW_CLEARANCE_MM = NUMBER_CLEARANCE_MM
 # How many of H's spots are tried at once (:func:`_pole_distance`).
 _H_SPOTS_AT_A_TIME = 256
 # What a number keeps clear of the lines round it, and of its neighbour (mm).
@@ -254,7 +256,7 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
                *(Text((8.0, lowest + raised - k * LINE_SPACING * SCALE_SIZE), line, SCALE_SIZE, "start")
                  for k, line in enumerate(scale_lines)))
     # Under the numbers' band wherever they stand, so that the words under the diagram move with no label.
-    bottom = min(low - 4.0, rows[-1][0] + 0.3 * NUMBER_SIZE - 2.0, *(t.at[1] - 2.0 for t in labels[2:]), *(
+    bottom = min(low - 4.0, rows[-1][0] + 0.3 * NUMBER_SIZE, *(t.at[1] - 2.0 for t in labels[2:]), *(
         y for item in strokes if isinstance(item, Polyline) for _, y in item.points))
     peak = record.v_peak if kind == "velocity" else record.a_peak
     notes: tuple[Text, ...] = ()
