@@ -25,7 +25,7 @@ from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from . import dimensions
-from .labels import LABEL_SPACING, Anchor, obstacles_of, place_labels, spaced_box, text_box
+from .labels import LABEL_SPACING, Anchor, Placement, obstacles_of, place_labels, spaced_box, text_box
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -49,6 +49,7 @@ from .primitives import (
     bounds,
     dot_marker,
     slider_block,
+    text_extent,
     text_width,
     to_complex,
     to_xy,
@@ -117,10 +118,13 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     paths = _paths(plan, paper)
     dimension: list[Primitive] = []
     swing_labels: list[Anchor] = []
+    swing_texts: list[Text] = []
     for travel in plan.travels:  # each kept clear of those before it
-        items, labels_of = _travel_dimension(plan, travel, paper, outlines, every + bold + frame + paths + dimension)
+        items, labels_of = _travel_dimension(plan, travel, paper, outlines, every + bold + frame + paths + dimension,
+                                             _breakable(every))
         dimension += items
         swing_labels += labels_of
+        swing_texts += [item for item in items if travel.swing and isinstance(item, Text)]
     drawn = every + bold + frame + paths + dimension
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
@@ -131,8 +135,10 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
-    labels = place_labels(anchors + swing_labels, obstacles_of(drawn + number_leaders) + _crowded_pins(plan, paper),
-                          standing=numbers)
+    labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, number_leaders, numbers,
+                                                  _crowded_pins(plan, paper))
+    # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number).
+    every = _broken_under(every, breaking + swing_texts)
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
               Layer("frame", tuple(frame)), Layer("dimensions", tuple(dimension)),
               Layer("leaders", tuple(number_leaders) + labels.leaders),
@@ -144,6 +150,70 @@ def layout(plan: PositionsPlan) -> list[Layer]:
                                          "start", weight="bold"),
                                     Text((xmin, scale_line), plan.caption, CAPTION_SIZE, "start"))))
     return layers
+
+
+def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], drawn: list[Primitive],
+                               number_leaders: list[Polyline], numbers: list[Text],
+                               pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
+    """The labels placed clear of the drawn lines, and those of them that the thin lines of the other positions
+    break under (:func:`_broken_under`).
+
+    Where the thin lines leave no clear spot near a point (the crank's pivot, that every crank position's line
+    leaves; a swing's ψ on its arc, across the rocker's positions; a centre of mass among the links' thin
+    outlines), a draughtsman letters it beside its point all the same, clear of the bold lines and the frame's
+    symbols, and breaks the thin lines under the letters, as ГОСТ 2.307 breaks thin lines under a dimension's
+    number: set farther out on a leader it was read as naming something else.  Those labels are placed again
+    without the thin lines, then the rest round them."""
+    obstacles = obstacles_of(drawn + number_leaders) + pins
+    first = place_labels(anchors, obstacles, standing=numbers)
+    lines = [shape for shape in obstacles_of(drawn + number_leaders + list(first.leaders))
+             if shape.geom_type == "LineString"]
+    tree = STRtree(lines)
+    breaking = [index for index, text in enumerate(first.texts)
+                if len(tree.query(text_box(text), predicate="intersects"))]
+    if not breaking:
+        return first, []
+    thin = {id(item) for item in _breakable(every)}
+    solid = [item for item in drawn if id(item) not in thin]
+    over = place_labels([anchors[index] for index in breaking], obstacles_of(solid + number_leaders) + pins,
+                        standing=numbers)
+    rest = [index for index in range(len(anchors)) if index not in breaking]
+    others = place_labels([anchors[index] for index in rest], obstacles + obstacles_of(list(over.leaders)),
+                          standing=[*numbers, *over.texts])
+    texts = dict(zip(breaking, over.texts)) | dict(zip(rest, others.texts))
+    return Placement(tuple(texts[index] for index in range(len(anchors))), over.leaders + others.leaders), \
+        list(over.texts)
+
+
+def _breakable(items: list[Primitive]) -> list[Polyline]:
+    """The lines of ``items`` that a label may break: open or unfilled outlines (not a slider's block)."""
+    return [item for item in items if isinstance(item, Polyline) and not item.fill and len(item.points) >= 2]
+
+
+# How far a thin line broken under a label stops short of its letters' box (mm).
+_BREAK_MM = 0.4
+
+
+def _broken_under(items: list[Primitive], texts: list[Text]) -> list[Primitive]:
+    """``items`` with their thin lines broken where they run under one of ``texts``."""
+    if not texts:
+        return items
+    gaps = shapely.union_all([spaced_box(text, _BREAK_MM) for text in texts])
+    breakable = {id(item) for item in _breakable(items)}
+    kept: list[Primitive] = []
+    for item in items:
+        if id(item) not in breakable:
+            kept.append(item)
+            continue
+        line = shapely.LineString(item.points + ((item.points[0],) if item.closed else ()))
+        if not line.intersects(gaps):
+            kept.append(item)
+            continue
+        left = line.difference(gaps)
+        for piece in getattr(left, "geoms", [left]):
+            if piece.geom_type == "LineString" and not piece.is_empty:
+                kept.append(Polyline(tuple(piece.coords), item.stroke))
+    return kept
 
 
 def _mechanism_at(motion: Motion, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
@@ -186,11 +256,13 @@ _SWING_LEAST_MM = 8.0
 
 
 def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outlines: dict[int, list[str]],
-                      drawn: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
+                      drawn: list[Primitive], thin: list[Primitive]) -> tuple[list[Primitive], list[Anchor]]:
     """The stroke H or the swing ψ between the two bold positions, dimensioned, and a swing's label to place at
     its arc's middle; nothing where there are not two.  A swing's arc is drawn at the radius where it crosses the
     fewest of the ``drawn`` lines (through the crank's circle, the quick-return lever's ran over the crank), a
-    stroke's on the side and at the offset where its lines and text cross fewest."""
+    stroke's on the side and at the offset where its lines and text cross fewest.  A swing's arc goes first where
+    its ψ, beside the arc's middle, meets none of the ``drawn`` lines but the ``thin`` ones, which break under it
+    (:func:`_broken_under`): across a rocker's extremes a long ψ inside a narrow angle lay on them."""
     bold = plan.emphasised
     if bold.count < 2:
         return [], []
@@ -221,14 +293,53 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
     start = cmath.phase(ends[0])
     sweep = cmath.phase(ends[1] / ends[0])
 
-    def crossings(share: float) -> int:
-        return crossed(dimensions.angular(to_xy(pivot), share * min(abs(end) for end in ends), start, sweep)[:1])
-
-    share = min(_SWING_SHARES, key=crossings)  # the first of the fewest: the nearest the middle share
-    radius = max(share * min(abs(end) for end in ends), _SWING_LEAST_MM)
     middle = start + sweep / 2
-    label = Anchor(to_xy(pivot + cmath.rect(radius, middle)), travel.text, _LABEL, prefer=middle)
-    return dimensions.angular(to_xy(pivot), radius, start, sweep), [label]
+    thin_ids = {id(item) for item in thin}
+    solid = STRtree(obstacles_of([item for item in drawn if id(item) not in thin_ids]))
+
+    def radius_of(share: float) -> float:
+        return max(share * min(abs(end) for end in ends), _SWING_LEAST_MM)
+
+    def label_sides(share: float) -> list[tuple[int, float]]:
+        """How many solid lines the ψ meets beside the arc's middle, outside the arc and inside it."""
+        own = obstacles_of(dimensions.angular(to_xy(pivot), radius_of(share), start, sweep))
+        sides = []
+        for side in (middle, middle + math.pi):
+            box = text_box(_beside_arc(pivot + cmath.rect(radius_of(share), middle), cmath.rect(1.0, side),
+                                       travel.text))
+            hits = len(solid.query(box, predicate="intersects")) + sum(box.intersects(shape) for shape in own)
+            sides.append((hits, side))
+        return sides
+
+    def cost(share: float) -> tuple[bool, int, int]:
+        arc = dimensions.angular(to_xy(pivot), radius_of(share), start, sweep)
+        # A solid line alongside the arc (a point's path at about its radius) reads as one with it.
+        alongside = len(solid.query(obstacles_of(arc[:1])[0].buffer(_ALONGSIDE_MM), predicate="intersects"))
+        return min(label_sides(share))[0] > 0, alongside, crossed(arc[:1])
+
+    share = min(_SWING_SHARES, key=cost)  # the first of the fewest: the nearest the middle share
+    radius = radius_of(share)
+    arc = dimensions.angular(to_xy(pivot), radius, start, sweep)
+    hits, side = min(label_sides(share))
+    if not hits:
+        # Written as a dimension's number is, by its arc's middle: left to the placer, it took a leader, the spot
+        # beside the arc too tight for its spaced box.
+        return [*arc, _beside_arc(pivot + cmath.rect(radius, middle), cmath.rect(1.0, side), travel.text)], []
+    return arc, [Anchor(to_xy(pivot + cmath.rect(radius, middle)), travel.text, _LABEL, prefer=middle)]
+
+
+def _beside_arc(at: complex, outward: complex, text: str) -> Text:
+    """``text`` set level with its box's near side the placer's gap clear of ``at`` along ``outward``."""
+    left, bottom, right, top = text_extent(Text((0.0, 0.0), text, _LABEL, "middle"))
+    reach = abs(outward.real) * (right - left) / 2 + abs(outward.imag) * (top - bottom) / 2 + _ARC_GAP_MM
+    centre = at + outward * reach
+    return Text((centre.real, centre.imag - (top + bottom) / 2), text, _LABEL, "middle")
+
+
+# The gap the placer leaves between a label and its point (``place_labels``' default).
+_ARC_GAP_MM = 1.2
+# How near a solid line runs alongside a swing's arc (mm).
+_ALONGSIDE_MM = 3.0
 
 
 def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:

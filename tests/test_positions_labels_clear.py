@@ -1,0 +1,97 @@
+"""The plan of positions' hardest labels read clear of every line drawn: the crank pivot's letter "O" that all the
+crank positions' lines leave, the swing's ψ across the rocker's positions, the centre of mass S6 among the triad's
+thin outlines.
+
+The labels and lines are read back from the positions.svg a run writes.  A letter's ink is measured independently
+of graphplan's own width rule, with matplotlib's DejaVu Sans outlines (the font the SVG names first) at the SVG's
+font size; a line is its path widened by half its stroke width.  The leaders' layer is left out: a label's own
+leader ends at it.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+import shapely
+from matplotlib.font_manager import FontProperties
+from matplotlib.textpath import TextPath, TextToPath
+
+from graphplan import cli
+
+ROOT = Path(__file__).resolve().parent.parent
+SVG = "{http://www.w3.org/2000/svg}"
+FONT = FontProperties(family="DejaVu Sans")
+
+# (fixture, locale, the labels that must stand clear of every line: a text, or "ψ" for every swing's ψ).
+CASES = [
+    ("ratchet_crank_rocker", "en", ("O", "ψ")),
+    ("ratchet_crank_rocker", "ru", ("O", "ψ")),
+    ("triad_class_iii", "en", ("O",)),
+    ("shaper_six_bar", "en", ("O",)),
+    ("scotch_yoke", "en", ("O",)),
+    ("triad_with_slider", "en", ("O", "S6")),
+    ("slider_driven", "en", ("ψ",)),
+    ("stephenson_six_bar", "en", ("ψ",)),
+    ("double_rocker_swing", "en", ("O",)),
+]
+
+
+def _ink(element: ET.Element) -> shapely.Polygon:
+    """The box round a text element's glyphs as drawn, in the SVG's coordinates (y down)."""
+    size = float(element.get("font-size"))
+    text = element.text or ""
+    x, y = float(element.get("x")), float(element.get("y"))
+    advance = TextToPath().get_text_width_height_descent(text, FontProperties(family="DejaVu Sans", size=size),
+                                                         ismath=False)[0]
+    start = x - {"start": 0.0, "middle": advance / 2, "end": advance}[element.get("text-anchor", "start")]
+    extent = TextPath((0, 0), text, size=size, prop=FONT).get_extents()
+    # The glyphs' y grows upward from the baseline; the SVG's downward.
+    return shapely.box(start + extent.x0, y - extent.y1, start + extent.x1, y - extent.y0)
+
+
+def _lines(root: ET.Element) -> list[shapely.Geometry]:
+    """Every stroked path and circle outside the leaders' layer, widened by half its stroke."""
+    shapes = []
+    for group in root.iter(f"{SVG}g"):
+        if group.get("id") == "leaders":
+            continue
+        for item in group:
+            width = float(item.get("stroke-width", "0"))
+            if item.tag == f"{SVG}path" and item.get("stroke", "none") != "none":
+                numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
+                points = list(zip(numbers[0::2], numbers[1::2]))
+                if item.get("d").rstrip().upper().endswith("Z"):
+                    points.append(points[0])
+                if len(points) >= 2:
+                    shapes.append(shapely.LineString(points).buffer(width / 2))
+            elif item.tag == f"{SVG}circle" and item.get("stroke", "none") != "none":
+                centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
+                radius = float(item.get("r"))
+                shapes.append(centre.buffer(radius + width / 2).exterior.buffer(width / 2))
+    return shapes
+
+
+@pytest.mark.parametrize(("fixture", "locale", "names"), CASES, ids=[f"{case[0]}-{case[1]}" for case in CASES])
+def test_named_labels_meet_no_drawn_line(fixture: str, locale: str, names: tuple[str, ...], tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    assert cli.main(["run", str(ROOT / "fixtures" / f"{fixture}.toml"), "--out", str(out), "--locale", locale,
+                     "--sheet", "none"]) == 0
+    root = ET.parse(out / "positions.svg").getroot()
+    texts = [element for element in root.iter(f"{SVG}text")]
+    lines = _lines(root)
+    tree = shapely.STRtree(lines)
+    checked = []
+    for name in names:
+        found = [element for element in texts
+                 if (element.text or "").startswith("ψ" if name == "ψ" else "\0") or element.text == name]
+        assert found, f"{fixture} ({locale}): no label {name!r} on the plan of positions"
+        for element in found:
+            ink = _ink(element)
+            met = tree.query(ink, predicate="intersects")
+            assert not len(met), (f"{fixture} ({locale}): {element.text!r} at ({element.get('x')}, {element.get('y')}) "
+                                  f"meets {len(met)} drawn line(s)")
+            checked.append(element.text)
+    assert checked
