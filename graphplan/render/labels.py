@@ -236,9 +236,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         if tree is None:
             return np.zeros(len(shapes))
         hit, piece = tree.query(shapes, predicate="intersects")
-        # A shape covers a line once however many of its segments it covers.
-        hit, obstacle = np.divmod(np.unique(hit * len(fixed) + owners[piece]), len(fixed))
-        return np.bincount(hit, weights[obstacle], minlength=len(shapes))
+        # A shape covers a line once however many of its segments it covers: which shape meets which obstacle, as a
+        # table (a few hundred spots by a few hundred obstacles), costs less than sorting the pairs to drop the
+        # repeated ones.  The weights are whole numbers, so their sum is exact in any order.
+        met = np.zeros((len(shapes), len(fixed)), dtype=bool)
+        met[hit, owners[piece]] = True
+        return met @ weights
 
     def crossing(shapes: np.ndarray, placed: dict[int, BaseGeometry], own: int) -> np.ndarray:
         others = np.array([shape for index, shape in placed.items() if index != own], dtype=object)
