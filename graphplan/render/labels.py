@@ -243,12 +243,23 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         met[hit, owners[piece]] = True
         return met @ weights
 
-    def crossing(shapes: np.ndarray, placed: dict[int, BaseGeometry], own: int) -> np.ndarray:
+    def others_than(placed: dict[int, BaseGeometry], own: int) -> tuple[np.ndarray, np.ndarray]:
+        """The shapes of ``placed`` but ``own``'s, and their bounds: found once for the boxes and the leaders of all
+        the spots a label tries."""
         others = np.array([shape for index, shape in placed.items() if index != own], dtype=object)
+        return others, shapely.bounds(others)
+
+    def crossing(shapes: np.ndarray, bounds: np.ndarray, others: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+        """How many of ``others`` (:func:`others_than`'s) each of ``shapes`` (whose ``bounds`` are given) meets."""
+        others, their_bounds = others
         # Only the pairs whose boxes meet are tested: of a few hundred labels placed, a spot is near a few.
-        mine, theirs = np.nonzero(_boxes_meet(shapely.bounds(shapes)[:, None], shapely.bounds(others)))
+        mine, theirs = np.nonzero(_boxes_meet(bounds[:, None], their_bounds))
         hit = shapely.intersects(shapes[mine], others[theirs])
         return np.bincount(mine[hit], minlength=len(shapes))
+
+    def crossing_placed(shapes: np.ndarray, placed: dict[int, BaseGeometry], own: int) -> np.ndarray:
+        """How many of the shapes ``placed`` but ``own``'s each of ``shapes`` meets."""
+        return crossing(shapes, shapely.bounds(shapes), others_than(placed, own))
 
     led_from = len(BESIDE_SHARES)
     apart_from = led_from + len(LED_SHARES)
@@ -264,12 +275,14 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         key = (index, shares, directions)
         if key not in drawn_costs:
             drawn_costs[key] = costed_on_drawing(index, shares, rings, directions)
-        candidates, beside, led, lines, shapes, covering, drawn_cost = drawn_costs[key]
-        clashing = OVERLAP * (crossing(shapes, placed_boxes, index) + crossing(shapes, leader_lines, index))
+        candidates, beside, led, lines, line_bounds, shapes, covering, drawn_cost = drawn_costs[key]
+        # A spot's box is its candidate's bounds.
+        labels, leaders = others_than(placed_boxes, index), others_than(leader_lines, index)
+        clashing = OVERLAP * (crossing(shapes, candidates, labels) + crossing(shapes, candidates, leaders))
         # Two thin leaders crossing each other still lead each to its own label: less amiss than a leader
         # through a label, yet more than any drawn line covered.
-        clashing[led] += (OVERLAP * crossing(lines, placed_boxes, index)
-                          + LEADERS_CROSSING * crossing(lines, leader_lines, index))
+        clashing[led] += (OVERLAP * crossing(lines, line_bounds, labels)
+                          + LEADERS_CROSSING * crossing(lines, line_bounds, leaders))
         return _Spots(candidates, beside, led, lines, drawn_cost + clashing, covering, clashing)
 
     def costed_on_drawing(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int):
@@ -305,9 +318,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         covering = covers[:len(shapes)]
         if off_lines:
             cost[covering > 0] += LINE_COVERED
-        for array in (candidates, beside, led, lines, shapes, covering, cost):
+        line_bounds = shapely.bounds(lines)
+        for array in (candidates, beside, led, lines, line_bounds, shapes, covering, cost):
             array.flags.writeable = False
-        return candidates, beside, led, lines, shapes, covering, cost
+        return candidates, beside, led, lines, line_bounds, shapes, covering, cost
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
 
@@ -453,7 +467,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         if (index, leading) not in reachable_on_drawing:
             reachable_on_drawing[index, leading] = reachable_drawn(index, leading)
         spot, shapes, is_led, usable = reachable_on_drawing[index, leading]
-        crossings = LEADERS_CROSSING * crossing(spot.leaders, leader_lines, index)
+        crossings = LEADERS_CROSSING * crossing_placed(spot.leaders, leader_lines, index)
         cost = spot.cost.copy()
         cost[spot.led] += crossings
         return spot._replace(cost=cost), shapes, is_led, usable
@@ -513,11 +527,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         line sooner than lead it off across two.  Whether the label moved."""
         spot, shapes, is_led, usable = reachable(index, leading)
         # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
-        open_ = usable & (crossing(shapes, leader_lines, index) == 0)
-        open_[spot.led] &= crossing(spot.leaders, placed_boxes, index) == 0
+        open_ = usable & (crossing_placed(shapes, leader_lines, index) == 0)
+        open_[spot.led] &= crossing_placed(spot.leaders, placed_boxes, index) == 0
         if not open_.any():
             return False
-        labels_hit = crossing(shapes, placed_boxes, index)
+        labels_hit = crossing_placed(shapes, placed_boxes, index)
         for best in tried(spot, is_led, open_ & (labels_hit == 0)):
             put(index, spot, best, "reach")
             return True
