@@ -21,8 +21,6 @@ from typing import NamedTuple
 
 import numpy as np
 import shapely
-from shapely.geometry import LineString, Point
-from shapely.geometry import Polygon as ShapelyPolygon
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
@@ -70,18 +68,20 @@ def text_box(text: Text) -> BaseGeometry:
 
 def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     """The shapes of drawn primitives that a label must not cover."""
+    # Made by shapely's functions, the same shapes as its classes make, in C: a sheet's drawings have a thousand.
     shapes: list[BaseGeometry] = []
     for item in items:
         if isinstance(item, Polyline) and item.closed and item.fill and len(item.points) >= 3:
             # A filled shape (a slider block, a pivot's triangle) hides what is written inside it.
-            shapes.append(ShapelyPolygon(item.points))
+            shapes.append(shapely.polygons(item.points))
         elif isinstance(item, Polyline) and len(item.points) >= 2:
-            shapes.append(LineString(item.points + ((item.points[0],) if item.closed else ())))
+            shapes.append(shapely.linestrings(item.points + ((item.points[0],) if item.closed else ())))
         elif isinstance(item, Arrow):
-            shapes.append(LineString((item.start, item.end)))
-            shapes.append(ShapelyPolygon(item.tip().points))
+            shapes.append(shapely.linestrings((item.start, item.end)))
+            shapes.append(shapely.polygons(item.tip().points))
         elif isinstance(item, Circle):
-            shapes.append(Point(item.centre).buffer(item.radius))
+            # Sixteen segments a quarter, as the geometry's buffer method draws it (the function's default is 8).
+            shapes.append(shapely.buffer(shapely.points(item.centre), item.radius, quad_segs=16))
         elif isinstance(item, Text):
             shapes.append(text_box(item))
     return shapes
