@@ -174,7 +174,11 @@ ROOM_TRIES = 4
 REACH_TRIES = 8
 
 
-def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = 1.2,
+# The clearance (mm) between a label's box and its point where nothing else asks for another.
+LABEL_GAP_MM = 1.2
+
+
+def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = LABEL_GAP_MM,
                  standing: Sequence[Text] = (), off_lines: bool = False) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 

@@ -25,7 +25,7 @@ from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from . import dimensions
-from .labels import LABEL_SPACING, Anchor, Placement, obstacles_of, place_labels, spaced_box, text_box
+from .labels import LABEL_GAP_MM, LABEL_SPACING, Anchor, Placement, obstacles_of, place_labels, spaced_box, text_box
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -331,13 +331,10 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
 def _beside_arc(at: complex, outward: complex, text: str) -> Text:
     """``text`` set level with its box's near side the placer's gap clear of ``at`` along ``outward``."""
     left, bottom, right, top = text_extent(Text((0.0, 0.0), text, _LABEL, "middle"))
-    reach = abs(outward.real) * (right - left) / 2 + abs(outward.imag) * (top - bottom) / 2 + _ARC_GAP_MM
+    reach = abs(outward.real) * (right - left) / 2 + abs(outward.imag) * (top - bottom) / 2 + LABEL_GAP_MM
     centre = at + outward * reach
     return Text((centre.real, centre.imag - (top + bottom) / 2), text, _LABEL, "middle")
 
-
-# The gap the placer leaves between a label and its point (``place_labels``' default).
-_ARC_GAP_MM = 1.2
 # How near a solid line runs alongside a swing's arc (mm).
 _ALONGSIDE_MM = 3.0
 
