@@ -236,7 +236,7 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
         obstacles = obstacles_of(axes + rays + drawn + labels)
         ticks = [(x, str(number)) for k, (x, number)
                  in enumerate(zip((record.nodes * along_mm).tolist(), record.numbers, strict=True)) if ticked(k)]
-        placed = _numbers(ticks, obstacles, rows)
+        placed = _numbers(ticks, obstacles, rows, [shapely.LineString(curve), shapely.LineString(points)])
         if pole is not None:
             numbers = [text_box(text) for text in placed]
             placed += (_pole_distance(words["kd_pole_distance"], pole, axes[1].start[1], high,
@@ -288,6 +288,12 @@ def _panel(record: KinematicDiagrams, kind: str, words: Mapping[str, str], lette
             Layer(f"{kind}-caption", caption)]
 
 
+def _under_the_curves(curves: list[shapely.LineString], x0: float, x1: float) -> float:
+    """The lowest point (mm, nought or under) of the ``curves`` between ``x0`` and ``x1``."""
+    span = shapely.box(x0, -1e9, x1, 1e9)
+    return min([0.0, *(piece.bounds[1] for piece in shapely.intersection(curves, span) if not piece.is_empty)])
+
+
 def _number_rows(low: float) -> list[tuple[float, float]]:
     """The (bottom, top) mm of the rows a diagram's numbers stand in: the band under the φ axis, then, where the
     curves dip under the axis, the band under their lowest point (``low``, nought or less)."""
@@ -298,22 +304,31 @@ def _number_rows(low: float) -> list[tuple[float, float]]:
     return rows
 
 
-def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[float, float]]) -> tuple[Text, ...]:
-    """The positions' numbers, each in the first of the ``rows`` (:func:`_number_rows`) where a spot at its tick
-    ``(x, number)``, or stepped a little along the row, covers none of the lines (``obstacles``) nor another
-    number; one with no such spot is left out, its tick kept.
+def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[float, float]],
+             curves: list[shapely.LineString]) -> tuple[Text, ...]:
+    """The positions' numbers, each in the first row where a spot at its tick ``(x, number)``, or stepped a little
+    along the row, covers none of the lines (``obstacles``) nor another number; one with no such spot is left out,
+    its tick kept.  The rows are tried in turn: the band under the axis, then right under the ``curves`` where
+    they cross the band within the number's reach of its tick (a number there still stands by its tick, where
+    the row under the curves' lowest point left it far under it: the shaper's 5, 16 mm down), then the other
+    ``rows`` (:func:`_number_rows`).
 
-    Every spot lies in a row, within a number's reach of its tick: inside the diagram's extent, whatever the
-    curves do, and under the axis.
+    Every spot lies in the band or between it and the row under the curves' lowest point, within a number's reach
+    of its tick: inside the diagram's extent, whatever the curves do, and under the axis.
     """
     tree = STRtree(obstacles)
     spots: list[tuple[int, float, float]] = []  # (tick, centre x, baseline) of every spot, in the order tried
     boxes = []
+    band, *lower = rows
     for index, (x, number) in enumerate(ticks):
         half = text_width(number, NUMBER_SIZE) / 2
         most = int((half + NUMBER_REACH_MM) / NUMBER_STEP_MM)
         steps = sorted(range(-most, most + 1), key=lambda k: (abs(k), -k))
-        for y0, y1 in rows:
+        reach = most * NUMBER_STEP_MM + half
+        under = _under_the_curves(curves, x - reach, x + reach) - LOW_ROW_CLEARANCE_MM
+        nearer = under < band[1] - 1e-9 and all(under > top + 1e-9 for _, top in lower)
+        by_the_tick = [(under - 1.45 * NUMBER_SIZE, under)] if nearer else []
+        for y0, y1 in [band, *by_the_tick, *lower]:
             for k in steps:
                 centre = x + k * NUMBER_STEP_MM
                 spots.append((index, centre, y0 + 0.3 * NUMBER_SIZE))
