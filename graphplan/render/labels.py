@@ -48,9 +48,6 @@ class Anchor:
     size: float = 3.0
     prefer: float = math.pi / 4
     colour: str = "black"
-    # The height (mm) the label stays wholly under, where its side of a line means something: a position's number
-    # under the φ axis, where one set above it beside the curve read as lettering the curve.  None: any side.
-    under: float | None = None
     # The ends of the line the label names (an arm), beside any point of which it reads as naming it: a label left
     # on a line beside ``at`` may slide along it to a clear stretch.  None: the label names the point ``at``.
     along: tuple[tuple[float, float], tuple[float, float]] | None = None
@@ -318,8 +315,6 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # A box as wide as a long name, set off obliquely, reaches back over its own point even on the rings led to
         # it: beside the point already, it has no leader to draw.
         cost[led[_box_distances(candidates[led], at[index:index + 1])[:, 0] == 0.0]] += OVERLAP
-        if anchor.under is not None:
-            cost[candidates[:, 3] > anchor.under + 1e-9] += OVERLAP
         cost += KEPT_OFF * _kept_off(anchor, candidates, ~beside)
         covering = covers[:len(shapes)]
         if off_lines:
@@ -468,8 +463,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     def reachable(index: int, leading: bool = True):
         """The spots within reach of the label of ``index`` (:func:`reach_out`'s): their costs (as :class:`_Spots`),
         their boxes as shapes, which are led, and which may hold it as far as the drawing goes: the box covering
-        nothing, and standing where the anchor lets it (none within its ``keep_off``, none over its ``under``, no
-        leader where not ``leading``, no long name led from a spot that reaches back over its own point)."""
+        nothing, and standing where the anchor lets it (none within its ``keep_off``, no leader where not
+        ``leading``, no long name led from a spot that reaches back over its own point)."""
         if (index, leading) not in reachable_on_drawing:
             reachable_on_drawing[index, leading] = reachable_drawn(index, leading)
         spot, shapes, is_led, usable = reachable_on_drawing[index, leading]
@@ -500,8 +495,6 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # A long name set off obliquely reaches back over its own point: beside it already, with no leader to draw.
         usable[led] &= _box_distances(led_boxes, np.array([anchor.at]))[:, 0] > 0.0
         usable &= ~_kept_off(anchor, candidates, is_led)
-        if anchor.under is not None:
-            usable &= candidates[:, 3] <= anchor.under + 1e-9
         if not leading:
             usable &= ~is_led
         # Standing about as near another labelled point as its own (the point of its line beside which it stands)
