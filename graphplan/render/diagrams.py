@@ -67,7 +67,8 @@ NUMBER_SIZE = 2.5
 # depth a number's box (``text_extent``: 0.3 of the size under the baseline, 1.15 over it).  Fixed by the font
 # size alone, so that a diagram's extent is known before a number is placed (:func:`parts` ``lettered``).
 NUMBER_CLEARANCE_MM = 0.8
-BAND_DEPTH_MM = NUMBER_CLEARANCE_MM + 1.45 * NUMBER_SIZE
+NUMBER_HEIGHT_MM = 1.45 * NUMBER_SIZE
+BAND_DEPTH_MM = NUMBER_CLEARANCE_MM + NUMBER_HEIGHT_MM
 # Where the curve takes a number's spot in the band, the number steps along it by these (mm), no farther than its
 # box's edge beyond its tick by NUMBER_REACH_MM (it reads as its tick's); failing that it stands at its tick in a
 # second row under the lowest point of the curves, LOW_ROW_CLEARANCE_MM under it (a ringed value there takes its
@@ -300,7 +301,7 @@ def _number_rows(low: float) -> list[tuple[float, float]]:
     rows = [(-BAND_DEPTH_MM, -NUMBER_CLEARANCE_MM)]
     if low < 0.0:
         top = low - LOW_ROW_CLEARANCE_MM
-        rows.append((top - 1.45 * NUMBER_SIZE, top))
+        rows.append((top - NUMBER_HEIGHT_MM, top))
     return rows
 
 
@@ -327,7 +328,7 @@ def _numbers(ticks: list[tuple[float, str]], obstacles: list, rows: list[tuple[f
         reach = most * NUMBER_STEP_MM + half
         under = _under_the_curves(curves, x - reach, x + reach) - LOW_ROW_CLEARANCE_MM
         nearer = under < band[1] - 1e-9 and all(under > top + 1e-9 for _, top in lower)
-        by_the_tick = [(under - 1.45 * NUMBER_SIZE, under)] if nearer else []
+        by_the_tick = [(under - NUMBER_HEIGHT_MM, under)] if nearer else []
         for y0, y1 in [band, *by_the_tick, *lower]:
             for k in steps:
                 centre = x + k * NUMBER_STEP_MM
