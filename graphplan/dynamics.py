@@ -254,6 +254,13 @@ class EquivalentModel:
         return float(np.ptp(self.inertia)) <= 1e-12 * float(np.max(np.abs(self.inertia), initial=0.0))
 
     @property
+    def inertia_is_nought(self) -> bool:
+        """Je nought all the cycle: the machine's own reduced moment of inertia taken as zero (the flywheel starter's
+        press), which the note and the drawing leave out of JF and of the equation of motion rather than write
+        "− 0" and "Je = 0 kg·m² is the machine's inertia"."""
+        return not np.any(self.inertia)
+
+    @property
     def mean_inertia(self) -> float:
         """Je,mean: Je averaged over the run."""
         return self.mean_over_run(self.inertia)

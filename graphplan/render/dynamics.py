@@ -550,8 +550,7 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
         words["dyn_delta_w_max"].format(value=short(flywheel.delta_w_max, 5)),
     ]
     if model.inertia_is_constant:
-        # A Je of 0 subtracted reads as an inertia the machine has; the note leaves it out too.
-        constant = "dyn_exact_no_inertia" if model.mean_inertia == 0 else "dyn_exact_constant"
+        constant = "dyn_exact_no_inertia" if model.inertia_is_nought else "dyn_exact_constant"
         lines.append(words[constant].format(value=short(flywheel.required, 5)))
     else:
         lines += [words["dyn_exact"].format(value=short(flywheel.required, 5)),

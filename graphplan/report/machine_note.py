@@ -69,7 +69,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         # The points the scene gives, not the samples the model is worked on (362 for a diagram of 4).
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
-        key = "note_dyn_model_diagrams_no_inertia" if model.mean_inertia == 0 else "note_dyn_model_diagrams"
+        key = "note_dyn_model_diagrams_no_inertia" if model.inertia_is_nought else "note_dyn_model_diagrams"
         note.para(note.t(key, count=Count(given), inertia=note.n(model.mean_inertia)))
     else:
         # The scene's steps: the samples are one more over a travel, and more again where a load switches on.
@@ -148,7 +148,7 @@ def _flywheel(note: Writer, flywheel, model) -> None:
         return
     omega = flywheel.omega_mean
     if model.inertia_is_constant:
-        key = "note_dyn_flywheel_no_inertia" if model.mean_inertia == 0 else "note_dyn_flywheel_constant"
+        key = "note_dyn_flywheel_no_inertia" if model.inertia_is_nought else "note_dyn_flywheel_constant"
         note.para(note.t(key, delta=note.n(flywheel.delta), omega=note.n(omega),
                          rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
                          mean=note.n(model.mean_inertia), exact=note.n(flywheel.inertia)))
@@ -301,8 +301,7 @@ def _shaft_equation(note: Writer, dynamics, braking: str | None = None, slipping
 def _own_inertia_left_out(dynamics) -> bool:
     """A machine whose own reduced moment of inertia the scene takes as zero, turned by a flywheel: a teacher writes
     its equation without the Je term (Je = 0 read as a value the machine has, not as one it is spared)."""
-    model = dynamics.model
-    return model.inertia_is_constant and model.mean_inertia == 0 and dynamics.flywheel_inertia > 0
+    return dynamics.model.inertia_is_nought and dynamics.flywheel_inertia > 0
 
 
 def _sum(terms: list[str]) -> str:
