@@ -1143,6 +1143,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     standing = {term.name for term in lever.terms if stands(term)} | {"Fb"}
     balancing = lever.balancing if len(standing) > 1 else 0.0
     undrawn: list[str] = []  # arms in the equation too short to draw, given under it
+    load_points: dict[str, str] = {}  # each named load's point on the lever, where its arrow stands
     # The lever's bars and rays, and every arm (from the pole square to its force's line wherever the arrow
     # stands on it), which an arrow pushing onto its point must not lie along.
     feet = [_foot(0j, mm(image) + shift, force / abs(force)) for _, image, force, _, shift in named if force != 0]
@@ -1169,6 +1170,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         # Named at its free end: its head, or its tail where it pushes onto its point.
         free, outward = (start, -unit) if _points_onto(start, end, at + beside) else (end, unit)
         anchors.append(Anchor(_xy(free), name, NAME_SIZE, _angle(outward), stroke.colour))
+        load_points[name] = image
         # The arm runs to the force's line, through its point, beside which the arrow may stand.
         start, end = start - beside, end - beside
         foot = _foot(0j, start, unit)
@@ -1197,23 +1199,38 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     for group in groups:
         where = _xy(mm(group[0]))
         anchors.append(Anchor(where, ", ".join(group), POINT_SIZE, open_direction(where, frame + arrows)))
-    labels = _lettered(anchors + arm_anchors, figure)
     # An arm lettered within reach of the pole (a short one, or one whose name found no room farther out) names
     # no arm there, among the names of the loads at p and every other arm's start: it is left unlettered and
     # its length stands under the drawing, beside the equation that names its force.  So is one whose name found no
     # spot beside its arm off the other lines (the arms and loads crowding round the pole of a triad's lever): a
     # grey name lying on another line reads as naming that one.
     # Placed again without them, another arm's name may take the room they left: until none stands there.
+    # Then a load's name that lies on a line even so (the crowd of a triad's lever round d, f and s6, where no spot
+    # within reach of its arrow is off the lines) is given under the lever too, by the point its arrow stands at,
+    # one at a time, each point keeping one arrow unnamed at most: the only arrow at s6 without a name is G6's.
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     crowded: list[Anchor] = []
     lettered = list(arm_anchors)
-    while near := [anchor for anchor, placed in zip(lettered, labels.texts[len(anchors):])
-                   if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
-                   or _on_a_line(anchor, placed, drawn_lines, labels.leaders)]:
-        crowded += near
-        lettered = [anchor for anchor in lettered if anchor not in near]
-        labels = _lettered(anchors + lettered, figure)
+    loads, points = anchors[:len(load_points)], anchors[len(load_points):]
+    unnamed: list[Anchor] = []
+    while True:
+        labels = _lettered(loads + points + lettered, figure)
+        if near := [anchor for anchor, placed in zip(lettered, labels.texts[len(loads) + len(points):])
+                    if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
+                    or _on_a_line(anchor, placed, drawn_lines, labels.leaders)]:
+            crowded += near
+            lettered = [anchor for anchor in lettered if anchor not in near]
+            continue
+        taken = {load_points[anchor.text] for anchor in unnamed}
+        lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != "Fb"
+                 and load_points[anchor.text] not in taken and _on_a_line(anchor, placed, drawn_lines, labels.leaders)]
+        if not lying:
+            break
+        unnamed.append(lying[0])
+        loads = [anchor for anchor in loads if anchor is not lying[0]]
     given = sorted([anchor.text for anchor in crowded] + undrawn, key=list(arm_lengths).index)
+    unnamed_at = _wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
+                           for anchor in unnamed])
     parts.append(f"{_sign(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
     equation = _leading(" ".join(parts))
     # Drawn turned as every lever is: a reader laying the velocity plan beside it must know which way.
@@ -1223,6 +1240,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
                *_wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
+               *([text["lever_unnamed"].format(loads=unnamed_at[0]), *unnamed_at[1:]] if unnamed_at else []),
                # The symbol alone: "balancing moment" said twice broke each line in two under a narrow lever (the
                # lever's title and its ΣMp say what Mb is).
                _balancing_line(sheet, balancing, "balancing_by_lever", named=False),
