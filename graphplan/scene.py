@@ -30,16 +30,18 @@ from .groups.base import read_guide
 from .lookalikes import described, difference, full_width, lookalike_hint
 from .lookalikes import plain as lookalike_plain
 from .reader import Table, check_choice, check_int, check_number, check_str, check_xy, refuse_control_characters
-from .rotor_balancing import BalancingSpec, read_balancing
 from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
-from .vibration import VibrationSpec, read_vibration
 
-if TYPE_CHECKING:  # the stages a scene's verbs run import the scene
+# The stages a scene's verbs run import the scene.  The rotor's and the vibration's readers are imported where a
+# scene has their tables: a linkage's cold run never needs them, and they cost it 30 ms.
+if TYPE_CHECKING:
     from .analysis import Analysis
     from .deliverables import MachineDynamics
     from .motion import Motion
     from .notebook import PositionPlans, RotorBalancing, VibrationResponse
+    from .rotor_balancing import BalancingSpec
     from .run import Run
+    from .vibration import VibrationSpec
 
 # A run's cost grows in step with its positions, about 2 ms of CPU and 28 kB of memory each beside 6 s of its own
 # (bench/positions_count.py): 20 000 run in about a minute.  100 000 took 14 minutes and 2.8 GB on a shared
@@ -702,10 +704,18 @@ def _read_scene(top: Table, source: str) -> Scene:
     scene.done()
     project = _read_project(top.table("project", None))
 
-    balancing = read_balancing(top.table("balancing")) if top.has("balancing") else None
+    balancing = None
+    if top.has("balancing"):
+        from .rotor_balancing import read_balancing
+
+        balancing = read_balancing(top.table("balancing"))
     linkage = top.has("frame") or top.has("driver")
     # With a linkage, [vibration] is read after the driver, whose speed it takes where it gives none.
-    vibration = read_vibration(top.table("vibration")) if top.has("vibration") and not linkage else None
+    vibration = None
+    if top.has("vibration"):
+        from .vibration import read_vibration
+
+        vibration = read_vibration(top.table("vibration")) if not linkage else None
     if not linkage and (balancing is not None or vibration is not None or top.has("dynamics")):
         # A rotor to balance, a machine on its springs, a flywheel from a load diagram: no linkage to read.
         for key in LINKAGE_KEYS:
@@ -731,6 +741,8 @@ def _read_scene(top: Table, source: str) -> Scene:
     frame_link, frame_points, frame_lines = _read_frame(top.table("frame"))
     driver = _read_driver(top.table("driver"))
     if top.has("vibration"):
+        from .vibration import read_vibration
+
         vibration = read_vibration(top.table("vibration"), driver_speed=_steady_crank_speed(driver))
     dynamics = None
     if top.has("dynamics"):

@@ -19,28 +19,18 @@ import numpy as np
 from ..loads import external_names
 from ..locale import Count
 from ..render.numerals import angle_in_turn, power_of_ten
-from ..rotor_balancing import BalancingResult, on_axis, planes_close, static_couple
-from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
-from ..rotor_lengths import LengthsInMillimetres
 from ..units import RPM
-from ..vibration import (
-    MOST_MOUNT_SAG,
-    MountsSag,
-    NearResonance,
-    Response,
-    Shaft,
-    VibrationSpec,
-    damping_ratio,
-    lengths_in_millimetres,
-    mounts_sag,
-    near_resonance,
-)
 from .markdown import literal
-from .vibration_plots import words_for
 
-if TYPE_CHECKING:  # the run's dynamics are worked out where the note is written from
+# The run's dynamics are worked out where the note is written from.  The rotor's and the vibration's modules (and
+# the plots') are imported by the sections that write them: every note imports this module, and a linkage's has
+# neither, whose cold run they cost 35 ms.
+if TYPE_CHECKING:
     from ..deliverables import MachineDynamics
+    from ..rotor_balancing import BalancingResult
+    from ..rotor_lengths import LengthsInMillimetres
     from ..scene import Scene
+    from ..vibration import MountsSag, NearResonance, Response, Shaft, VibrationSpec
 
 
 class Writer(Protocol):
@@ -418,6 +408,9 @@ def _run_down(note: Writer, dynamics) -> None:
 
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:
     """The rotor's masses, their products carried to the correction planes, each plane's polygon closed."""
+    from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
+    from ..rotor_balancing import on_axis, planes_close, static_couple
+
     spec = result.spec
     note.heading(2, note.t("note_balancing"), section)
     rows = [[literal(mass.name), note.n(mass.mass),
@@ -556,6 +549,9 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
 
     Each operand is written to as many digits as make the written operands give the written result
     (:func:`shown_operand`); a value used in several equations is written one way in all of them."""
+    from ..vibration import damping_ratio, lengths_in_millimetres, mounts_sag, near_resonance
+    from .vibration_plots import words_for
+
     # What excites the machine names the section: a machine on a moving base has no rotating unbalance to speak of.
     moved = spec.base_amplitude is not None
     title = "note_vibration" if not moved else "note_vibration_base" if spec.unbalance == 0 else "note_vibration_both"
@@ -688,6 +684,8 @@ def _shaft_isolation(note: Writer, spec: VibrationSpec, response: Response, *, m
     k it already isolates as asked, and no mount is needed (one in series could only soften it further).
     ``stiffness`` and ``ratio`` are the shaft's k_s and the present r as the note writes them; returns the isolating
     r as written."""
+    from ..vibration import damping_ratio
+
     designed = response.isolation_stiffness
     assert designed is not None and spec.transmissibility is not None and response.isolation_ratio is not None
     m, w, shaft = read_number(note, mass), read_number(note, omega), read_number(note, stiffness)
@@ -755,6 +753,8 @@ def _resonance_caution(note: Writer, close: NearResonance) -> None:
 def _sag_caution(note: Writer, sagging: MountsSag, ratio: str) -> None:
     """Mounts the formulas give but no spring could be (a sag of metres), with the ways to mounts that could:
     without it the note offers them as a design.  ``ratio`` is r as the isolation paragraph writes it."""
+    from ..vibration import MOST_MOUNT_SAG
+
     limit = note.n(MOST_MOUNT_SAG * 1000.0)
     at = "" if sagging.zeta == 0 else note.t("note_vib_caution_sag_damped", zeta=note.n(sagging.zeta),
                                              undamped=note.n(sagging.undamped_ratio))
