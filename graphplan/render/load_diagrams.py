@@ -111,11 +111,15 @@ def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, f
     unit = words["newton"] if diagram.kind == "force" else words["newton_metre"]
     letter = "F" if diagram.kind == "force" else "M"
     symbol = _travel_symbol(diagram, words)
+    # The abscissa named with its unit, as the ordinate is ("F, N") and the note's table heads it: "sB" alone
+    # left the reader to guess metres or millimetres of paper.
+    travel_axis = words["ld_travel_axis_translating" if diagram.translating else "ld_travel_axis_turning"].format(
+        symbol=symbol)
 
     axes: list[Primitive] = [
         Arrow((0.0, 0.0), (length + AXIS_RUN_MM, 0.0), _AXIS, AXIS_HEAD_MM, key=f"load-{diagram.link}-travel-axis"),
         *ordinate_axis(0.0, low, high, scale, 0.0, f"{letter}, {unit}"),
-        Text((length + AXIS_RUN_MM + 1.5, -SCALE_SIZE / 2), symbol, SCALE_SIZE, "start"),
+        Text((length + AXIS_RUN_MM + 1.5, -SCALE_SIZE / 2), travel_axis, SCALE_SIZE, "start"),
     ]
     count = len(xs)
     every = math.ceil(count / MOST_CONSTRUCTION_LINES)
@@ -148,7 +152,7 @@ def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, f
     rows, guides = _numbers(diagram, xs, shown, low)
     bottom = min(item.at[1] for item in rows if isinstance(item, Text)) - 4.0
     legend = _legend(diagram, words, bottom)
-    width = max(length + AXIS_RUN_MM + 4.0 + text_width(symbol, SCALE_SIZE),
+    width = max(length + AXIS_RUN_MM + 4.0 + text_width(travel_axis, SCALE_SIZE),
                 max((item.at[0] + text_width(item.text, SCALE_SIZE) / 2 for item in values if isinstance(item, Text)),
                     default=0.0))
     caption = _caption(diagram, words, symbol, along, scale, max(high, values_top - AXIS_RUN_MM), width)

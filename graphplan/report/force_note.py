@@ -79,11 +79,11 @@ def _load_diagrams(note: Writer) -> None:
         names = text["enumeration"].join(load.name for load in diagram.loads)
         if diagram.translating:
             symbol = note.t("ld_travel_translating", point=diagram.point or diagram.link)
-            travel = note.t("note_ld_travel_translating", symbol=symbol)
+            travel = note.t("ld_travel_axis_translating", symbol=symbol)
             coordinates = diagram.coordinates
         else:
             symbol = note.t("ld_travel_turning", link=diagram.link)
-            travel = note.t("note_ld_travel_turning", symbol=symbol)
+            travel = note.t("ld_travel_axis_turning", symbol=symbol)
             coordinates = np.degrees(diagram.coordinates)
         unit = text["newton"] if diagram.kind == "force" else text["newton_metre"]
         note.para(note.t("note_ld_intro", names=names, link=diagram.link, symbol=symbol, plans=plans or "—"))
