@@ -2,6 +2,8 @@
 
 - The load diagram's abscissa carries its unit as its ordinate does ("sB, m" beside "F, N"), in every language,
   in the words the note's table heads the same travel with.
+- On the energy–mass diagram the letters a and b, where the tangents at ψmax and ψmin cut the ΔT axis, stand
+  clear of the tangent they name: a steep tangent (a compressor at 600 rpm, ψ ≈ 38°) ran through its letter.
 """
 
 from __future__ import annotations
@@ -10,13 +12,19 @@ import re
 from pathlib import Path
 from xml.etree import ElementTree
 
+import numpy as np
 import pytest
+from shapely.geometry import LineString, box
 
 from graphplan.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 COMPRESSOR = ROOT / "tests" / "scenes" / "compressor_indicator_diagram.toml"
 SVG = "{http://www.w3.org/2000/svg}"
+TANGENT_COLOUR = "#b22222"
+# DejaVu Sans, in em of the font size: the advance of a and b, and b's ascender (over a's x-height).
+LETTER_WIDTH_EM = 0.64
+LETTER_HEIGHT_EM = 0.76
 
 
 def _scene(locale: str, source: Path = COMPRESSOR) -> str:
@@ -54,3 +62,36 @@ def test_the_load_diagrams_travel_axis_names_its_unit(tmp_path, locale, metre):
     assert "sB" not in labels
     # The note's table heads the same travel in the same words.
     assert f"sB, {metre}" in (out / "note.md").read_text(encoding="utf-8")
+
+
+def _tangents(group: ElementTree.Element) -> list[LineString]:
+    lines = []
+    for path in group.iter(f"{SVG}path"):
+        if path.get("fill") == "none" and path.get("stroke") == TANGENT_COLOUR:
+            points = [tuple(float(v) for v in point.split(","))
+                      for point in re.findall(r"[ML]([-\d.]+,[-\d.]+)", path.get("d"))]
+            if len(points) == 2:
+                lines.append(LineString(points))
+    return lines
+
+
+@pytest.mark.parametrize("locale", ["en", "zh"])
+def test_a_steep_tangent_runs_clear_of_the_letters_a_and_b(tmp_path, locale):
+    group = _group(_run(tmp_path, _scene(locale), "dynamics") / "dynamics.svg", "energy-mass")
+    tangents = _tangents(group)
+    assert len(tangents) == 2
+    # Steep indeed: the compressor's tangents stand at more than 30° on the paper.
+    for line in tangents:
+        (x0, y0), (x1, y1) = line.coords
+        assert abs(y1 - y0) > np.tan(np.radians(30.0)) * abs(x1 - x0)
+    letters = [text for text in _texts(group) if "".join(text.itertext()) in ("a", "b")]
+    assert sorted("".join(text.itertext()) for text in letters) == ["a", "b"]
+    for text in letters:
+        x, baseline, size = float(text.get("x")), float(text.get("y")), float(text.get("font-size"))
+        assert text.get("text-anchor") == "start"
+        glyph = box(x, baseline - LETTER_HEIGHT_EM * size, x + LETTER_WIDTH_EM * size, baseline)
+        for line in tangents:
+            assert not line.intersects(glyph), f"a tangent runs through the letter {''.join(text.itertext())}"
+        # Still by its own point: the letter within a few mm of the tangent's end on the ΔT axis.
+        ends = [min(line.coords, key=lambda point: point[0]) for line in tangents]
+        assert min(np.hypot(end[0] - x, end[1] - baseline) for end in ends) < 8.0

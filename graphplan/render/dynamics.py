@@ -402,7 +402,10 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                               _TANGENT.colour))
             if start_x == 0.0:
                 items.append(dot_marker((0.0, intercept), 0.7, _TANGENT.colour))
-                letter_y = intercept + 1.2 if letter == "a" else intercept - LABEL - 1.2
+                # Above a's tangent and below b's over the letter's whole width: set off the intercept alone, a
+                # steep tangent (ψ of 30° and more, a fast machine's) ran through the letter it names.
+                rise = slope * (1.2 + text_width(letter, LABEL))
+                letter_y = intercept + max(rise, 0.0) + 1.2 if letter == "a" else intercept + min(rise, 0.0) - LABEL - 1.2
                 items.append(Text((1.2, letter_y), letter, LABEL, "start", _TANGENT.colour))
             top_mm, bottom_mm = max(top_mm, line[0][1], line[1][1]), min(bottom_mm, line[0][1], line[1][1])
         ab = (flywheel.upper.intercept - flywheel.lower.intercept) / scales.energy
