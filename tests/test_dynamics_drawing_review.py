@@ -95,3 +95,53 @@ def test_a_steep_tangent_runs_clear_of_the_letters_a_and_b(tmp_path, locale):
         # Still by its own point: the letter within a few mm of the tangent's end on the ΔT axis.
         ends = [min(line.coords, key=lambda point: point[0]) for line in tangents]
         assert min(np.hypot(end[0] - x, end[1] - baseline) for end in ends) < 8.0
+
+
+def _kloss_starting_torque(power: float, overload: float, synchronous_rpm: float, rated_rpm: float) -> float:
+    """Kloss' M = 2·Mmax/(s/sk + sk/s) at s = 1, on the motor's own shaft (N·m)."""
+    rated_slip = 1.0 - rated_rpm / synchronous_rpm
+    rated_torque = power / (rated_rpm * np.pi / 30.0)
+    critical = rated_slip * (overload + np.sqrt(overload**2 - 1.0))
+    return 2.0 * overload * rated_torque / (1.0 / critical + critical)
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_machine_that_never_starts_shows_the_motors_torque_it_is_set_against(locale):
+    """The press's motor cut to 300 W gives 20.4 N·m at rest on the crank against 35.1 N·m: the plot of why it does
+    not start drew the motor's torque along a run of no length, a line at 0° seen nowhere that its legend named.
+    Held at rest the motor gives its starting torque at any angle: drawn across the turn, at my Kloss value."""
+    import tomllib
+
+    from matplotlib import pyplot
+
+    from graphplan.deliverables import MachineDynamics
+    from graphplan.locale import strings
+    from graphplan.report.motion_plots import motion_plot
+    from graphplan.scene import load
+    from graphplan.starters import starter
+
+    tables = tomllib.loads(starter("flywheel", locale))
+    motor = {**tables["dynamics"]["motor"], "power": 300.0}
+    tables["dynamics"]["motor"] = motor
+    dynamics = MachineDynamics(load(tables))
+    assert not dynamics.motion.turned
+    text = strings(locale)
+    mine = motor["gear_ratio"] * _kloss_starting_torque(motor["power"], motor["overload"], motor["synchronous_rpm"],
+                                                        motor["rated_rpm"])
+    figure = motion_plot(dynamics.motion, text, "press", resisting=dynamics.resisting,
+                         stall_angle_deg=dynamics.rest_angle_deg())
+    try:
+        lower = figure.axes[-1]
+        named = [line for line in lower.get_lines() if not line.get_label().startswith("_")]
+        for line in named:
+            if line.get_linestyle() in ("None", ""):
+                continue   # a marker: the point where it stands
+            along, values = (np.asarray(data, dtype=float) for data in line.get_data())
+            assert np.ptp(along) > 0 or np.ptp(values) > 0, f"{line.get_label()!r} is drawn as no line at all"
+        (motor_line,) = [line for line in named if line.get_label().startswith(("Md", "Mд"))]
+        along, values = (np.asarray(data, dtype=float) for data in motor_line.get_data())
+        assert along.min() == 0.0 and along.max() == 360.0
+        assert values == pytest.approx(mine, rel=1e-6)
+        assert mine < 35.0   # short of the punching press's idle resistance, 367.7 W at 100 rpm
+    finally:
+        pyplot.close(figure)

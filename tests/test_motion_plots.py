@@ -173,7 +173,8 @@ def test_a_machine_that_never_moves_gets_only_the_plot_of_why():
     figure = motion_plot(motion, text, resisting=(angles, resisting))
     (only,) = figure.axes
     labels = {line.get_label() for line in only.get_lines()}
-    assert {text["motion_resisting"], text["motion_motor_torque"]} <= labels
+    # The motor held at rest, at its starting torque across the turn (drawn along a run of no length, it was no line).
+    assert {text["motion_resisting"], text["motion_motor_torque_at_rest"]} <= labels
     assert text["motion_shaft"] not in labels
 
 

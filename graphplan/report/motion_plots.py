@@ -287,8 +287,15 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
         plot.plot(drawn, total, color=_BRAKE, linewidth=1.3,
                   label=text["motion_resisting_braked"].format(torque=number(brake.torque, 4, mark),
                                                                at=number(brake.at, 4, mark)))
-    plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
     held = float(motion.motor_torque[-1])
+    if motion.turned or motion.stalled_slipping:
+        plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
+    else:
+        # A shaft that never turned holds the motor at rest, at its starting torque, wherever it stands: drawn along
+        # the run it was a line of no length at 0°, named in the legend and seen nowhere; across the turn it shows
+        # where a start from another angle would go.
+        plot.plot(along, np.full_like(along, held), color=_SHAFT, linewidth=1.1,
+                  label=text["motion_motor_torque_at_rest"])
     if motion.stalled_slipping:
         held = motion.clutch.torque
         plot.axhline(held, color=_FLYWHEEL, linewidth=1.0, linestyle="--",
