@@ -145,3 +145,59 @@ def test_a_machine_that_never_starts_shows_the_motors_torque_it_is_set_against(l
         assert mine < 35.0   # short of the punching press's idle resistance, 367.7 W at 100 rpm
     finally:
         pyplot.close(figure)
+
+
+# DejaVu Sans, in em of the font size: its capitals' height, and how far ψ's tail and a g hang under the baseline.
+CAP_EM = 0.73
+DESCENT_EM = 0.24
+AVERAGE_EM = 0.62
+
+
+def _band(text: ElementTree.Element) -> tuple[float, float]:
+    """A text's ink from the top of its capitals to the foot of its tails, in the SVG's mm (y down)."""
+    baseline, size = float(text.get("y")), float(text.get("font-size"))
+    return baseline - CAP_EM * size, baseline + DESCENT_EM * size
+
+
+def _span(text: ElementTree.Element) -> tuple[float, float]:
+    """A start-anchored text's reach across, generously."""
+    x, size = float(text.get("x")), float(text.get("font-size"))
+    return x, x + AVERAGE_EM * size * len("".join(text.itertext()))
+
+
+def _meet(one: tuple[float, float], other: tuple[float, float]) -> bool:
+    return one[0] < other[1] and other[0] < one[1]
+
+
+@pytest.mark.parametrize(("source", "starter_kind"), [("fixtures/scotch_yoke.toml", None), (None, "triad")])
+def test_a_tangents_psi_written_near_the_je_axis_stands_off_the_axis_and_its_name(tmp_path, source, starter_kind):
+    """The scotch yoke's ψmax = 1.88° ends 1 mm over the Je axis and the triad's ψmin = 13.50° ends on it: each
+    was written level with its tangent's end, struck through by the axis line running on to its arrowhead and into
+    the axis's name "Je, kg·m²"."""
+    from graphplan.starters import starter
+
+    text = (ROOT / source).read_text(encoding="utf-8") if source else starter(starter_kind)
+    group = _group(_run(tmp_path, text + "\n[dynamics]\ndelta = 0.04\n", "dynamics") / "dynamics.svg", "energy-mass")
+    texts = _texts(group)
+    (name,) = [text for text in texts if "".join(text.itertext()).startswith("Je,")]
+    axes = []
+    for path in group.iter(f"{SVG}path"):
+        points = re.findall(r"[ML]([-\d.]+),([-\d.]+)", path.get("d"))
+        if path.get("fill") == "none" and path.get("stroke") == "black" and len(points) == 2:
+            (x0, y0), (x1, y1) = ((float(x), float(y)) for x, y in points)
+            if y0 == y1 and x1 - x0 > 20.0:
+                axes.append((x0, x1, y0))
+    ((axis_start, axis_end, axis_y),) = axes
+    psis = [text for text in texts if "".join(text.itertext()).startswith("ψm")]
+    assert len(psis) == 2
+    near = []
+    for psi in psis:
+        top, foot = _band(psi)
+        across = _span(psi)
+        assert not (_meet(across, (axis_start, axis_end)) and top < axis_y < foot), \
+            f"the Je axis runs through {''.join(psi.itertext())}"
+        assert not (_meet(across, _span(name)) and _meet((top, foot), _band(name))), \
+            f"{''.join(psi.itertext())} runs into the axis's name"
+        near.append(min(abs(top - axis_y), abs(foot - axis_y)))
+    # The scene is one whose tangent ends by the axis: its ψ stands within a line of it.
+    assert min(near) < 4.0

@@ -98,6 +98,10 @@ SPEED_TICK_MM = 2.0
 # A plan position's point on the energy–mass diagram and the size of its number.
 POSITION_DOT_MM = 0.5
 POSITION_NUMBER = 2.5
+# How far a letter's tail (ψ, the g of "kg") hangs under its baseline, in cap heights, and the gap kept between a
+# tangent's ψ and the Je axis with its name (mm).
+DESCENT = 0.3
+AXIS_WORDS_GAP_MM = 0.6
 
 @dataclass(frozen=True)
 class Scales:
@@ -398,8 +402,8 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
             items.append(Polyline(line, _TANGENT))
             items.append(dot_marker(touch, 0.7, _TANGENT.colour))
             angle = math.degrees(math.atan(slope))
-            items.append(Text((end_x + 1.0, line[1][1] - LABEL / 2), f"{name} = {angle:.2f}°", LABEL, "start",
-                              _TANGENT.colour))
+            items.append(Text((end_x + 1.0, _off_the_inertia_axis(line[1][1])), f"{name} = {angle:.2f}°", LABEL,
+                              "start", _TANGENT.colour))
             if start_x == 0.0:
                 items.append(dot_marker((0.0, intercept), 0.7, _TANGENT.colour))
                 # Above a's tangent and below b's over the letter's whole width: set off the intercept alone, a
@@ -452,6 +456,20 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                                       f"{words['dyn_energy_scale'].format(value=format_scale(scales.energy))}",
                       LABEL, "start"))
     return items + _numbered_positions(model, scales, items)
+
+
+def _off_the_inertia_axis(end_y: float) -> float:
+    """The baseline of a tangent's ψ, written level with the tangent's end unless that puts it on the Je axis, which
+    runs on under it to its arrowhead and name: a tangent ending near ΔT = 0 (a small intercept, a shallow slope) had
+    its "ψmax = 1.88°" struck through by the axis and run into "Je, kg·m²"; there it stands just above the axis, or
+    just below it where the tangent ends under it."""
+    baseline = end_y - LABEL / 2
+    descent = DESCENT * LABEL    # ψ's tail under its baseline, as the g of "kg" hangs under the axis's name
+    above = LABEL / 2 + AXIS_WORDS_GAP_MM
+    below = -LABEL / 2 - descent - AXIS_WORDS_GAP_MM
+    if baseline - descent >= above or baseline + LABEL <= below:
+        return baseline
+    return above + descent if end_y >= 0.0 else below - LABEL
 
 
 def _numbered_positions(model: EquivalentModel, scales: Scales, drawn: Sequence[Primitive]) -> list[Primitive]:
