@@ -201,3 +201,40 @@ def test_a_tangents_psi_written_near_the_je_axis_stands_off_the_axis_and_its_nam
         near.append(min(abs(top - axis_y), abs(foot - axis_y)))
     # The scene is one whose tangent ends by the axis: its ψ stands within a line of it.
     assert min(near) < 4.0
+
+
+FIVE_MASSES = [(18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08), (2.0, 0.04, 135.0, 0.16), (9.0, 0.05, 200.0, 0.12),
+               (1.0, 0.03, 90.0, 0.20)]
+
+
+@pytest.mark.parametrize(("locale", "unit"), [("en", "kg·m"), ("ru", "кг·м"), ("zh", "kg·m")])
+def test_every_share_in_a_planes_equation_is_drawn_named_or_told_with_its_value(tmp_path, locale, unit):
+    """m5 turns at z = 0.20 m, 0.02 m from plane R: its share in plane L, m5·r5·(zR − z5)/(zR − zL) = 0.00333 kg·m,
+    is 0.17 mm at that polygon's μ, under the 0.25 mm a polygon draws. It stood in plane L's equation and nowhere in
+    its polygon; it is told under it as a plan's short vectors are, with my value."""
+    from graphplan.starters import starter
+
+    masses = ",\n".join(f"  {{ mass = {m}, radius = {r}, angle = {angle}, plane = {z} }}"
+                        for m, r, angle, z in FIVE_MASSES)
+    scene = re.sub(r"(?ms)^masses = \[.*?\} \]", f"masses = [\n{masses} ]", starter("rotor"), count=1)
+    scene = re.sub(r'(?m)^locale(\s*)=\s*"en"', f'locale\\1= "{locale}"', scene, count=1)
+    out = _run(tmp_path, scene, "balancing")
+    left, right = 0.04, 0.22
+    svg = out / "rotor_balancing.svg"
+    for plane in ("L", "R"):
+        named = {"".join(text.itertext()) for text in _texts(_group(svg, f"plane-{plane}-labels"))}
+        caption = " ".join("".join(text.itertext()) for text in _texts(_group(svg, f"plane-{plane}-caption")))
+        scale = float(re.search(r"μ = ([\d.,]+)", caption).group(1).replace(",", "."))
+        for k, (m, r, _, z) in enumerate(FIVE_MASSES, start=1):
+            share = m * r * ((right - z) if plane == "L" else (z - left)) / (right - left)
+            name = f"(m{k}r{k}){plane}"
+            assert name in caption   # the equation's
+            if abs(share) / scale >= 0.25:
+                assert name in named
+            else:
+                assert name not in named
+                told = re.search(re.escape(name) + r" = ([\d.,]+) " + unit, caption)
+                assert told, f"{name} ({abs(share) / scale:.2f} mm) is neither drawn nor told: {caption}"
+                assert float(told.group(1).replace(",", ".")) == pytest.approx(abs(share), rel=5e-3)
+    # Plane L has one such share: the fifth mass's.
+    assert abs(FIVE_MASSES[4][0] * FIVE_MASSES[4][1] * (right - FIVE_MASSES[4][3]) / (right - left)) < 0.004
