@@ -386,6 +386,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     width = float(np.max(xs))
     if flywheel is not None:
         reach = INTERCEPT_REACH * max(top_mm - bottom_mm, 1.0)
+        written: list[float] = []   # the baselines of the ψ written so far
         for tangent, letter, name in ((flywheel.upper, "a", "ψmax"), (flywheel.lower, "b", "ψmin")):
             slope = tangent.slope * scales.inertia / scales.energy   # tan ψ on the paper
             touch = (float(xs[tangent.touch]), float(ys[tangent.touch]))
@@ -402,8 +403,9 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
             items.append(Polyline(line, _TANGENT))
             items.append(dot_marker(touch, 0.7, _TANGENT.colour))
             angle = math.degrees(math.atan(slope))
-            items.append(Text((end_x + 1.0, _off_the_inertia_axis(line[1][1])), f"{name} = {angle:.2f}°", LABEL,
-                              "start", _TANGENT.colour))
+            baseline = _off_the_inertia_axis(line[1][1], written)
+            written.append(baseline)
+            items.append(Text((end_x + 1.0, baseline), f"{name} = {angle:.2f}°", LABEL, "start", _TANGENT.colour))
             if start_x == 0.0:
                 items.append(dot_marker((0.0, intercept), 0.7, _TANGENT.colour))
                 # Above a's tangent and below b's over the letter's whole width: set off the intercept alone, a
@@ -458,18 +460,20 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     return items + _numbered_positions(model, scales, items)
 
 
-def _off_the_inertia_axis(end_y: float) -> float:
+def _off_the_inertia_axis(end_y: float, written: Sequence[float] = ()) -> float:
     """The baseline of a tangent's ψ, written level with the tangent's end unless that puts it on the Je axis, which
     runs on under it to its arrowhead and name: a tangent ending near ΔT = 0 (a small intercept, a shallow slope) had
     its "ψmax = 1.88°" struck through by the axis and run into "Je, kg·m²"; there it stands just above the axis, or
-    just below it where the tangent ends under it."""
+    just below it where the tangent ends under it, or where the other ψ, at ``written``, stands above it already."""
     baseline = end_y - LABEL / 2
     descent = DESCENT * LABEL    # ψ's tail under its baseline, as the g of "kg" hangs under the axis's name
     above = LABEL / 2 + AXIS_WORDS_GAP_MM
     below = -LABEL / 2 - descent - AXIS_WORDS_GAP_MM
     if baseline - descent >= above or baseline + LABEL <= below:
         return baseline
-    return above + descent if end_y >= 0.0 else below - LABEL
+    over, under = above + descent, below - LABEL
+    taken = any(abs(other - over) < LABEL + descent + AXIS_WORDS_GAP_MM for other in written)
+    return over if end_y >= 0.0 and not taken else under
 
 
 def _numbered_positions(model: EquivalentModel, scales: Scales, drawn: Sequence[Primitive]) -> list[Primitive]:
