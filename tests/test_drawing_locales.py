@@ -149,7 +149,10 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
     if kind == "balancing":
         two_planes = balance(BalancingSpec(SHAFT, planes=(0.04, 0.22), correction_radius=0.05))
         disc = balance(BalancingSpec([RotatingMass(1, 0.1, 30)], correction_radius=0.1))
-        return [t for result in (two_planes, disc) for t in svg_texts(balancing.balancing_svg(result, text))]
+        # A mass 0.02 m from plane R, whose share in plane L is too short to draw and is told under its polygon.
+        near_plane = balance(BalancingSpec([*SHAFT[:2], RotatingMass(1, 0.03, 90, 0.20)], planes=(0.04, 0.22),
+                                           correction_radius=0.05))
+        return [t for result in (two_planes, disc, near_plane) for t in svg_texts(balancing.balancing_svg(result, text))]
     from graphplan.vibration import Shaft, VibrationSpec
 
     found = []
