@@ -238,3 +238,39 @@ def test_every_share_in_a_planes_equation_is_drawn_named_or_told_with_its_value(
                 assert float(told.group(1).replace(",", ".")) == pytest.approx(abs(share), rel=5e-3)
     # Plane L has one such share: the fifth mass's.
     assert abs(FIVE_MASSES[4][0] * FIVE_MASSES[4][1] * (right - FIVE_MASSES[4][3]) / (right - left)) < 0.004
+
+
+def _leaders(root: ElementTree.Element) -> list[LineString]:
+    """The dotted leaders from the plan positions' rings up to their written values."""
+    found = []
+    for path in root.iter(f"{SVG}path"):
+        if path.get("fill") == "none" and path.get("stroke-dasharray"):
+            points = [tuple(float(v) for v in point.split(","))
+                      for point in re.findall(r"[ML]([-\d.]+,[-\d.]+)", path.get("d"))]
+            if len(points) == 2 and points[0][0] == points[1][0]:
+                found.append(LineString(points))
+    return found
+
+
+@pytest.mark.parametrize(("kind", "struck"), [("slotted-lever", "M4 = 120 N·m"), ("crank-rocker", "M, N·m")])
+def test_a_load_diagrams_leaders_run_clear_of_its_words(tmp_path, kind, struck):
+    """The slotted lever's plan positions 4 and 11 stand 3 mm apart on the travel: M4 = 0 N·m, written a line
+    higher, ran its dotted leader down through M4 = 120 N·m; the crank-rocker's position 11 by the ordinate ran
+    its leader through the axis's name "M, N·m". Each leader is broken under the words, as a draftsman breaks it."""
+    from graphplan.starters import starter
+
+    root = ElementTree.parse(_run(tmp_path, starter(kind), "load_diagrams") / "load_diagrams.svg").getroot()
+    leaders = _leaders(root)
+    assert leaders
+    texts = [text for text in _texts(root) if text.get("x") is not None]
+    assert struck in ["".join(text.itertext()) for text in texts]
+    for text in texts:
+        words = "".join(text.itertext())
+        x, baseline, size = float(text.get("x")), float(text.get("y")), float(text.get("font-size"))
+        width = 0.55 * size * len(words)
+        left = {"start": x, "middle": x - width / 2, "end": x - width}[text.get("text-anchor", "start")]
+        glyphs = box(left, baseline - CAP_EM * size, left + width, baseline)
+        for leader in leaders:
+            assert not leader.intersects(glyphs), f"a leader runs through {words!r}"
+    # Still leaders: each plan position's ring has one reaching up toward its words.
+    assert len({round(line.coords[0][0], 3) for line in leaders}) == 2
