@@ -297,7 +297,7 @@ def test_a_chinese_force_sheet_sets_its_scales_off_with_the_full_width_comma():
     # A caption's lines joined as they read, a line broken after 「，」 or before 「（」 with nothing lost.
     captions = "".join(item.text for layer in layers if layer.name.endswith("-caption")
                        for item in layer.items if isinstance(item, Text))
-    assert "μl = 0.0025 m/mm，力的比例尺 μF = 100 N/mm（箭头不短于 10 mm）" in captions
+    assert "μl = 0.0025 m/mm，力箭头的比例尺 μF = 100 N/mm（不短于 10 mm）" in captions
     assert "m/mm, " not in captions and "最短" not in captions
 
 
