@@ -99,3 +99,44 @@ def test_every_force_scale_on_a_force_sheet_says_which_drawing_it_is_for(tmp_pat
                     for value in SCALE.findall(text)}
         assert not headings or (len(polygons) == 1 and headings == polygons), (whole, polygons, headings)
 
+
+# An arm as an equation names it: «R23τ·AB» (a segment, drawn as the link) is not one; «G3·h7» and «R14n·h» are.
+ARM = re.compile(r"·(h\d*)(?![\w′″])")
+
+
+def drawn_and_given(path: Path) -> dict[str, tuple[set[str], set[str], str]]:
+    """For each drawing of a force sheet's SVG with equations (a group cut free, the lever): the names lettered on
+    it, the arms whose length its caption gives (``h1 = 11.78 mm``), and its caption's text."""
+    found: dict[str, tuple[set[str], set[str], str]] = {}
+    for group in ElementTree.parse(path).getroot().iter(f"{SVG}g"):
+        name = group.get("id", "")
+        drawing = re.match(r"(body-[\w-]+?|lever)-(labels|caption)$", name)
+        if drawing is None:
+            continue
+        texts = ["".join(text.itertext()) for text in group.iter(f"{SVG}text")]
+        labels, given, caption = found.get(drawing.group(1), (set(), set(), ""))
+        if drawing.group(2) == "labels":
+            labels |= set(texts)
+        else:
+            caption = " ".join(texts)
+            given |= set(re.findall(r"\b(h\d*) = [\d.,]+ (?:mm|мм)", caption))
+        found[drawing.group(1)] = (labels, given, caption)
+    return found
+
+
+@pytest.mark.parametrize("fixture", ["triad_class_iii", "triad_with_slider"])
+def test_every_arm_an_equation_names_is_drawn_and_lettered_or_given_its_length(tmp_path, fixture):
+    """The triad's moment equation about Assur's point Σ6 wrote its unknown's arm «R14n·h», an h neither drawn
+    nor given: a reader could not check the equation.  Every arm an equation names is lettered on its drawing or
+    its length stands under it."""
+    out = tmp_path / fixture
+    assert main(["run", str(FIXTURES / f"{fixture}.toml"), "--only", "forces,lever", "--format", "svg",
+                 "--out", str(out)]) == 0
+    checked = 0
+    for path in sorted(out.glob("forces_*.svg")):
+        for drawing, (labels, given, caption) in drawn_and_given(path).items():
+            for arm in ARM.findall(caption):
+                checked += 1
+                assert arm in labels or arm in given, (path.name, drawing, arm, caption)
+    assert checked
+

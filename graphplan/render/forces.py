@@ -817,7 +817,7 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
     """The moment equation as the note writes it: ``ΣMB(3): R23τ·AB − G3·h1 + Fu3·h2 + Mu3 = 0,  R23τ = 26.13 N``.
 
     The unknown's arm is named by its segment (its joint and the centre) where
-    it is square to that segment, else ``h``;
+    it is square to that segment, else ``h``, whose length follows the unknown's value;
     where the unknown is a couple (the balancing moment, the shift ``x`` of a
     normal reaction along its slide), the couple stands alone.  An equation
     with nothing in it (a load through the joint) is left out.
@@ -848,7 +848,11 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
         segment = abs(sheet.positions[joint] - sheet.positions[equation.about])
         if abs(segment - equation.arm) <= 1e-9 * segment:
             arm = "".join(sorted((joint, equation.about)))
-    return f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {significant(equation.value)} {text['newton']}"
+    # An arm h is no segment of the drawing: its length is given, or the equation names an h found nowhere.  Drawn,
+    # it crowded the arms round Assur's point until two names on the triad's A4 sheet ran together.
+    length = f",  h = {significant(equation.arm / sheet.length_scale)} {text['millimetre']}" if arm == "h" else ""
+    return (f"{about} {sign}{unknown}·{arm} {terms} = 0,  {unknown} = {significant(equation.value)} {text['newton']}"
+            f"{length}")
 
 
 def _projection(sheet: ForceSheet, equation: ProjectionEquation) -> str:
