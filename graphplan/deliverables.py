@@ -338,7 +338,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             found.append(Drawing(f"plan_{plan.number}", layers))
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
-            layers, scales = (list(laid_out.layers), laid_out.heading_scales) if laid_out \
+            layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                 else _force_sheet_layers(analysis, plan, pieces)
             found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None))
             found += _note_parts(f"forces_{plan.number}", layers, pieces, scales)
@@ -346,7 +346,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             # The sheet with friction comes with the sheet it repeats: with `lever` its lever with friction on it.
             if rubbing is not None and not rubbing.locked:
                 laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
-                layers, scales = (list(laid_out.layers), laid_out.heading_scales) if laid_out \
+                layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                     else _force_sheet_layers(analysis, plan, pieces, True)
                 found.append(Drawing(f"forces_friction_{plan.number}", layers))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces, scales)
@@ -370,20 +370,26 @@ def _dynamics_drawings(machine: list[Layer], pieces: tuple[str, ...]) -> list[Dr
     return [Drawing("dynamics", machine), *(Drawing(f"dynamics-{k}", part) for k, part in enumerate(parts or (), 1))]
 
 
-def _note_parts(stem: str, layers: list, pieces: tuple[str, ...], scales: tuple[tuple[str, str], ...]) -> list[Drawing]:
+def _scales_of(panel) -> tuple[tuple[tuple[str, str], ...], str]:
+    """The scales a force sheet's panel's heading names, with the comma that sets them apart."""
+    return panel.heading_scales, panel.heading_comma
+
+
+def _note_parts(stem: str, layers: list, pieces: tuple[str, ...],
+                scales: tuple[tuple[tuple[str, str], ...], str]) -> list[Drawing]:
     """A force sheet too tall for a page of the note, cut between its rows for the note to show part by part
     (``forces_3-1.svg``, ...), where the run writes the note; the heading over the first naming the ``scales`` of
-    its drawings alone."""
+    its drawings alone (with the comma that sets them apart)."""
     from .render.note_parts import note_parts
 
-    parts = note_parts(layers, scales) if "note" in pieces else None
+    parts = note_parts(layers, *scales) if "note" in pieces else None
     return [Drawing(f"{stem}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 
 def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],
-                        with_friction: bool = False) -> tuple[list, tuple[tuple[str, str], ...]]:
+                        with_friction: bool = False) -> tuple[list, tuple[tuple[tuple[str, str], ...], str]]:
     """The force sheet of a plan position, its lever left off unless the run asks for it, with the scales its
-    heading names (:attr:`~graphplan.render.force_rows.Heading.scales`)."""
+    heading names (:attr:`~graphplan.render.force_rows.Heading.scales`) and the comma that sets them apart."""
     from .render import drawings as draw
     from .render import forces as force_layout
 
@@ -391,7 +397,7 @@ def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],
     if "lever" not in pieces:
         sheet = dataclasses.replace(sheet, lever=None)
     rows = force_layout.rows(sheet)
-    return rows.arranged(rows.in_columns(1)).layers, rows.heading.scales
+    return rows.arranged(rows.in_columns(1)).layers, (rows.heading.scales, rows.heading.comma)
 
 
 def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larger | None = None):

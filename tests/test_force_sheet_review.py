@@ -140,3 +140,13 @@ def test_every_arm_an_equation_names_is_drawn_and_lettered_or_given_its_length(t
                 assert arm in labels or arm in given, (path.name, drawing, arm, caption)
     assert checked
 
+
+@pytest.mark.parametrize("fixture", ["engine_slider_crank", "quick_return_slotted_lever"])
+def test_a_chinese_force_sheets_heading_sets_its_scales_off_as_its_captions_do(tmp_path, fixture):
+    """Under «力分析，位置 2» the heading read «μl = 0.001 m/mm, μF = 40 N/mm» with a Latin comma, where every
+    caption under it sets its scales off with 「，」: the heading's line of scales now does too, on every part."""
+    headings = [text for _, kind, text in captions(sheets(fixture, "zh", tmp_path)) if kind == "heading"]
+    lines = [line for text in headings for line in text.split(LINE) if "μ" in line]
+    assert lines and any(line.count("μ") > 1 for line in lines), headings
+    for line in lines:
+        assert ", " not in line and line.count("，") == line.count("μ") - 1, line

@@ -96,6 +96,8 @@ class Heading:
     size: float
     part_title: str
     continued: str
+    # What sets the scales apart: the locale's comma, a full-width one in Chinese as its captions have it.
+    comma: str = ", "
 
     def __post_init__(self) -> None:
         if HEADLESS in (self.title, self.part_title, self.continued):
@@ -103,12 +105,12 @@ class Heading:
 
     def scales_of(self, names: Sequence[str]) -> str:
         """The line of the scales the drawings ``names`` are drawn at (:func:`scales_line`)."""
-        return scales_line(self.scales, names)
+        return scales_line(self.scales, names, self.comma)
 
     @property
     def whole_scales(self) -> str:
         """The line of all the sheet's scales, which every heading is measured with."""
-        return ", ".join(line for line, _ in self.scales)
+        return self.comma.join(line for line, _ in self.scales)
 
     @property
     def title_size(self) -> float:
@@ -116,11 +118,11 @@ class Heading:
         return next((size for size in LETTER_SIZES if size > self.size + 1e-9), self.size * math.sqrt(2))
 
 
-def scales_line(scales: Sequence[tuple[str, str]], names: Sequence[str]) -> str:
+def scales_line(scales: Sequence[tuple[str, str]], names: Sequence[str], comma: str = ", ") -> str:
     """The line of those of ``scales`` (:attr:`Heading.scales`) that the drawings ``names`` (or their layers) are
     drawn at; empty where none has one of the sheet's (force polygons each at its own μF, which their captions
     give)."""
-    return ", ".join(line for line, start in scales if any(name.startswith(start) for name in names))
+    return comma.join(line for line, start in scales if any(name.startswith(start) for name in names))
 
 
 def with_scales_line(heading: Layer, line: str) -> Layer:

@@ -247,7 +247,7 @@ def rows(sheet: ForceSheet, bodies: MutableMapping[tuple[int, float], Drawing] |
               *([(sheet.lever_scale_line, "lever")] if sheet.lever is not None else []))
     part_title = sheet.part_title or sheet.title
     return Rows(drawings, Heading(sheet.title, scales, sheet.caption_size, part_title,
-                                  text["force_sheet_continued"].format(title=part_title)))
+                                  text["force_sheet_continued"].format(title=part_title), text["comma"]))
 
 
 def _friction_summary(sheet: ForceSheet) -> list[str]:

@@ -20,7 +20,8 @@ PAGE_FIGURE_MM = (170.0, 200.0)
 LEAST_PRINT_SCALE = 0.5
 
 
-def note_parts(layers: Sequence[Layer], scales: Sequence[tuple[str, str]] = ()) -> list[list[Layer]] | None:
+def note_parts(layers: Sequence[Layer], scales: Sequence[tuple[str, str]] = (),
+               comma: str = ", ") -> list[list[Layer]] | None:
     """``layers`` cut between their rows into parts that each print on a page at :data:`LEAST_PRINT_SCALE` or
     larger, the heading with the first; None where the drawing prints so whole, or no cut between rows helps.
 
@@ -47,7 +48,7 @@ def note_parts(layers: Sequence[Layer], scales: Sequence[tuple[str, str]] = ()) 
     if len(parts) < 2:
         return None
     if scales:
-        line = scales_line(scales, [layer.name for layer in parts[0]])
+        line = scales_line(scales, [layer.name for layer in parts[0]], comma)
         parts[0] = [with_scales_line(layer, line) if layer.name == HEADING_LAYER else layer for layer in parts[0]]
     return parts
 

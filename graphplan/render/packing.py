@@ -97,6 +97,7 @@ class Panel:
     # it (:attr:`force_rows.Heading.scales`): drawn naming those of every drawing that may stand under it, once
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
     heading_scales: tuple[tuple[str, str], ...] = ()
+    heading_comma: str = ", "  # what sets those scales apart (:attr:`force_rows.Heading.comma`)
     # The drawing as it goes on the sheet, where ``layers`` leaves out labels that only room was kept for: the
     # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
     # diagrams, measured by its unlettered layers).  None: ``layers`` as they are.
@@ -393,7 +394,7 @@ def _headings_named(page: Page) -> None:
 
 def _with_scales_of(panel: Panel, names: Sequence[str]) -> Panel:
     """``panel`` with its heading's line of scales naming those the drawings (or layers) ``names`` are drawn at."""
-    line = scales_line(panel.heading_scales, names)
+    line = scales_line(panel.heading_scales, names, panel.heading_comma)
     return replace(panel, layers=tuple(with_scales_line(layer, line) if layer.name == HEADING_LAYER else layer
                                        for layer in panel.layers))
 

@@ -391,7 +391,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                 break
         names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
         return drawn, one, [replace(split(arrangement, name, one.label, _group_of_field),
-                                    continues=names[k - 1] if k else "", heading_scales=heading.scales)
+                                    continues=names[k - 1] if k else "", heading_scales=heading.scales,
+                                    heading_comma=heading.comma)
                             for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))], heading
 
     before: dict[str, tuple[float, float]] = {}
@@ -452,7 +453,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         drawn, one, panels, heading = cut(*headless)
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
     # The whole names its heading's scales for the note, which shows it in parts (:func:`note_parts.note_parts`).
-    one, panels = (replace(_at_no_length_scale(one), lever_scale=lever, heading_scales=heading.scales),
+    one, panels = (replace(_at_no_length_scale(one), lever_scale=lever, heading_scales=heading.scales,
+                           heading_comma=heading.comma),
                    [replace(_at_no_length_scale(part), lever_scale=lever) for part in panels])
     if drawn.length_scale == length_scale(analysis):
         return one, panels
