@@ -1,7 +1,7 @@
 """Long lines of a drawing's text broken to a width on the paper, where a reader expects the break.
 
-First after a comma, semicolon or colon, before the sign of a term, before a
-bracket; a piece still too wide is then broken between words, into pieces
+First after a comma, semicolon or colon (not one that ends a one-word name,
+which would end a line on it), before the sign of a term, before a bracket; a piece still too wide is then broken between words, into pieces
 as even as can be, never inside ``name = value unit`` nor after the sign
 of a term.  Widths are the generous estimate of
 :func:`~graphplan.render.primitives.text_width`.
@@ -20,6 +20,9 @@ from .primitives import text_width
 # one after a sign, which would end the line on the sign);
 # in Chinese, which puts no space there, after its full-width comma, semicolon and colon and before its bracket.
 PHRASE_BREAK = re.compile(r"(?<=[,;:])\s+|\s+(?=[+−] )|(?<![+−=])\s+(?=\()|(?<=[，；、：])(?=\S)|(?<=\S)(?=（)")
+# A colon that ends a one-word name ("arrows: μF = 100 N/mm", "ΣMp: G2·h1 + …") is no place for a break: the line
+# would end on the name, what it names on the next.
+NAME_BEFORE = re.compile(r"(?:^|[,;]\s+)[^\s,;:]+:$")
 # Where a piece still too wide breaks: between words, but not round "=", nor between a number and its unit,
 # nor between a sign and its term.
 WORD_BREAK = re.compile(r"(?<![\d=+−])\s+(?![=\d])")
@@ -33,25 +36,25 @@ def fitted(line: str, width: float, size: float, weight: str = "normal") -> list
     def span(text: str) -> float:
         return text_width(text, size, weight)
 
-    pieces = _broken(line, PHRASE_BREAK, width, span)
+    phrase_cuts = [cut for cut in PHRASE_BREAK.finditer(line) if not NAME_BEFORE.search(line, 0, cut.start())]
+    pieces = _broken(line, phrase_cuts, width, span)
     return [word_piece for piece in pieces
             for word_piece in (_evened(piece, WORD_BREAK, width, span) if span(piece) > width else [piece])]
 
 
 def _evened(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
     """``line`` cut at ``breaks`` into as few pieces as keep within ``width`` mm, the pieces as even as can be."""
-    pieces = _broken(line, breaks, width, span)
+    pieces = _broken(line, list(breaks.finditer(line)), width, span)
     narrowest = max(span(line) / len(pieces), *(span(piece) for piece in pieces[1:-1]), 0.0)
     for narrower in np.arange(narrowest, width, EVENING_STEP_MM):
-        even = _broken(line, breaks, float(narrower), span)
+        even = _broken(line, list(breaks.finditer(line)), float(narrower), span)
         if len(even) == len(pieces):
             return even
     return pieces
 
 
-def _broken(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
-    """``line`` cut greedily at ``breaks``: each piece as long as keeps within ``width`` mm, if it can."""
-    cuts = list(breaks.finditer(line))
+def _broken(line: str, cuts: list[re.Match[str]], width: float, span: Callable[[str], float]) -> list[str]:
+    """``line`` cut greedily at ``cuts``: each piece as long as keeps within ``width`` mm, if it can."""
     starts = [0, *(cut.end() for cut in cuts)]
     ends = [*(cut.start() for cut in cuts), len(line)]
     pieces: list[str] = []
