@@ -315,9 +315,9 @@ def test_on_a1_the_force_drawings_keep_the_mechanism_scale_and_the_usual_letteri
     captions = [text for sheet in sheets for item in sheet.layers
                 if item.name.startswith("forces-") and item.name.endswith("caption") for text in texts([item])]
     joined = " ".join(text.text for text in captions)
-    assert f"μl = {analysis.scene.drawing.length_scale:g} м/мм, силы" in joined
+    assert f"μl = {analysis.scene.drawing.length_scale:g} м/мм, стрелки сил" in joined
     for position in analysis.plans:
-        assert f"μV = {scale_factor(position.velocity.scale)} (м/с)/мм, силы" in joined
+        assert f"μV = {scale_factor(position.velocity.scale)} (м/с)/мм, стрелки сил" in joined
     assert {text.size for text in captions} == {plan_layout.CAPTION_SIZE}
 
 
