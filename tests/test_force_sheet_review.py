@@ -152,7 +152,7 @@ def test_a_chinese_force_sheets_heading_sets_its_scales_off_as_its_captions_do(t
         assert ", " not in line and line.count("，") == line.count("μ") - 1, line
 
 
-def test_a_line_is_not_broken_after_a_one_word_name_and_its_colon():
+def test_a_line_is_not_broken_after_a_short_name_and_its_colon():
     """«μV = 0.004 (m/s)/mm, arrows:» ended a lever's caption line, its μF on the next; a colon after a clause of
     several words is still a place to break."""
     from graphplan.render.primitives import text_width
@@ -161,6 +161,9 @@ def test_a_line_is_not_broken_after_a_one_word_name_and_its_colon():
     line = "μV = 0.004 (m/s)/mm, arrows: μF = 2 N/mm (no arrow shorter than 10 mm)"
     width = text_width("μV = 0.004 (m/s)/mm, arrows:", 2.5) + 1.0
     assert fitted(line, width, 2.5)[:2] == ["μV = 0.004 (m/s)/mm,", "arrows: μF = 2 N/mm"]
+    russian = "μV = 0,01983 (м/с)/мм, стрелки сил: μF = 2 Н/мм"
+    assert fitted(russian, text_width("μV = 0,01983 (м/с)/мм, стрелки сил:", 2.5) + 1.0, 2.5) == [
+        "μV = 0,01983 (м/с)/мм,", "стрелки сил: μF = 2 Н/мм"]
     clause = "without friction 6.48 N·m: the rest"
     assert fitted(clause, text_width("without friction 6.48 N·m:", 2.5) + 1.0, 2.5) == [
         "without friction 6.48 N·m:", "the rest"]

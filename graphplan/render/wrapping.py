@@ -1,7 +1,8 @@
 """Long lines of a drawing's text broken to a width on the paper, where a reader expects the break.
 
-First after a comma, semicolon or colon (not one that ends a one-word name,
-which would end a line on it), before the sign of a term, before a bracket; a piece still too wide is then broken between words, into pieces
+First after a comma, semicolon or colon (not one that ends a name of a word or
+two, which would end a line on it), before the sign of a term, before a
+bracket; a piece still too wide is then broken between words, into pieces
 as even as can be, never inside ``name = value unit`` nor after the sign
 of a term.  Widths are the generous estimate of
 :func:`~graphplan.render.primitives.text_width`.
@@ -20,9 +21,9 @@ from .primitives import text_width
 # one after a sign, which would end the line on the sign);
 # in Chinese, which puts no space there, after its full-width comma, semicolon and colon and before its bracket.
 PHRASE_BREAK = re.compile(r"(?<=[,;:])\s+|\s+(?=[+−] )|(?<![+−=])\s+(?=\()|(?<=[，；、：])(?=\S)|(?<=\S)(?=（)")
-# A colon that ends a one-word name ("arrows: μF = 100 N/mm", "ΣMp: G2·h1 + …") is no place for a break: the line
-# would end on the name, what it names on the next.
-NAME_BEFORE = re.compile(r"(?:^|[,;]\s+)[^\s,;:]+:$")
+# A colon that ends a name of a word or two, no number in it ("arrows: μF = 100 N/mm", "стрелки сил: μF = …",
+# "ΣMp: G2·h1 + …"), is no place for a break: the line would end on the name, what it names on the next.
+NAME_BEFORE = re.compile(r"(?:^|[,;]\s+)[^\s\d,;:]+(?: [^\s\d,;:]+)?:$")
 # Where a piece still too wide breaks: between words, but not round "=", nor between a number and its unit,
 # nor between a sign and its term.
 WORD_BREAK = re.compile(r"(?<![\d=+−])\s+(?![=\d])")
