@@ -638,6 +638,33 @@ def spaced_box(text: Text, spacing: float = LABEL_SPACING) -> BaseGeometry:
     return shapely.box(x0 - spacing, y0 - spacing, x1 + spacing, y1 + spacing)
 
 
+# How far a thin line broken under a label stops short of its letters' box (mm).
+BREAK_MM = 0.4
+
+
+def broken_under(items: Sequence[Primitive], texts: Sequence[Text], breakable: Sequence[Polyline]) -> list[Primitive]:
+    """``items`` with those of them in ``breakable`` (thin lines) broken where they run under one of ``texts``, as
+    ГОСТ 2.307 breaks a line under a dimension's number and a draftsman any thin line under a label."""
+    if not texts:
+        return list(items)
+    gaps = shapely.union_all([spaced_box(text, BREAK_MM) for text in texts])
+    breaking = {id(item) for item in breakable}
+    kept: list[Primitive] = []
+    for item in items:
+        if id(item) not in breaking:
+            kept.append(item)
+            continue
+        line = shapely.LineString(item.points + ((item.points[0],) if item.closed else ()))
+        if not line.intersects(gaps):
+            kept.append(item)
+            continue
+        left = line.difference(gaps)
+        for piece in getattr(left, "geoms", [left]):
+            if piece.geom_type == "LineString" and not piece.is_empty:
+                kept.append(Polyline(tuple(piece.coords), item.stroke))
+    return kept
+
+
 def _clash(one: int, other: int, boxes: dict[int, BaseGeometry], leaders: dict[int, BaseGeometry]) -> bool:
     """Whether the label of ``one`` (its box or leader) covers the box or the leader of ``other``'s."""
     mine = [boxes[one], *([leaders[one]] if one in leaders else [])]

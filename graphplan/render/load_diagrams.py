@@ -40,20 +40,9 @@ from .diagrams import (
     stacked,
 )
 from .dynamics import ordinate_axis
+from .labels import broken_under
 from .numerals import short
-from .primitives import (
-    Arrow,
-    Circle,
-    Layer,
-    Polyline,
-    Primitive,
-    Stroke,
-    Text,
-    bounds_of,
-    dot_marker,
-    text_extent,
-    text_width,
-)
+from .primitives import Arrow, Circle, Layer, Polyline, Primitive, Stroke, Text, bounds_of, dot_marker, text_width
 from .svg import to_svg
 from .wrapping import fitted
 
@@ -161,7 +150,10 @@ def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, f
             names = [load.name] if acting else [other.name for other in diagram.loads]
             written.append((xs[k], value / scale, f"{' = '.join(names)} = {short(value)} {unit}"))
     values_top, values = _written_values(written, high + AXIS_RUN_MM + 3.0)
-    values = _broken_under_words(values, [item for item in axes if isinstance(item, Text)])
+    # A value written on a higher line, over one whose words reach across its ordinate (two plan positions close on
+    # the travel), or one by the ordinate axis, had its leader struck through the other's words or the axis's name.
+    written_words = [item for item in values + axes if isinstance(item, Text)]
+    values = broken_under(values, written_words, [item for item in values if isinstance(item, Polyline)])
     rows, guides = _numbers(diagram, xs, shown, low)
     bottom = min(item.at[1] for item in rows if isinstance(item, Text)) - 4.0
     legend = _legend(diagram, words, bottom)
@@ -195,31 +187,6 @@ def _written_values(written: list[tuple[float, float, str]], base: float) -> tup
         items.append(Polyline(((x, y + PLAN_RING_MM), (x, at - 1.0)), _GUIDE))
         top = max(top, at + SCALE_SIZE)
     return top, items
-
-
-def _broken_under_words(values: list[Primitive], others: Sequence[Text]) -> list[Primitive]:
-    """The written values with each dotted leader broken where it runs under words, as a draftsman breaks a thin
-    line under a number: a value written on a higher line, over one whose words reach across its ordinate (two plan
-    positions close on the travel), or one by the ordinate axis, had its leader struck through the other's words or
-    the axis's name ("M, N·m")."""
-    words = [text for text in values if isinstance(text, Text)] + list(others)
-    boxes = [text_extent(text) for text in words]
-    kept: list[Primitive] = []
-    for item in values:
-        if isinstance(item, Text):
-            kept.append(item)
-            continue
-        (x, low), (_, high) = item.points
-        gaps = sorted((max(y0, low), min(y1, high)) for x0, y0, x1, y1 in boxes
-                      if x0 - 0.4 <= x <= x1 + 0.4 and y0 < high - 1e-6 and y1 > low + 1e-6)
-        start = low
-        for gap_low, gap_high in gaps:
-            if gap_low - start > 0.5:
-                kept.append(Polyline(((x, start), (x, gap_low)), item.stroke))
-            start = max(start, gap_high)
-        if high - start > 0.5:
-            kept.append(Polyline(((x, start), (x, high)), item.stroke))
-    return kept
 
 
 def _numbers(diagram: LoadDiagram, xs: list[float], shown: list[int], low: float) -> tuple[list[Primitive],

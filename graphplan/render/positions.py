@@ -25,7 +25,17 @@ from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
 from . import dimensions
-from .labels import LABEL_GAP_MM, LABEL_SPACING, Anchor, Placement, obstacles_of, place_labels, spaced_box, text_box
+from .labels import (
+    LABEL_GAP_MM,
+    LABEL_SPACING,
+    Anchor,
+    Placement,
+    broken_under,
+    obstacles_of,
+    place_labels,
+    spaced_box,
+    text_box,
+)
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -138,7 +148,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     labels, breaking = _place_breaking_thin_lines(anchors + swing_labels, every, drawn, number_leaders, numbers,
                                                   _crowded_pins(plan, paper))
     # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number).
-    every = _broken_under(every, breaking + swing_texts)
+    every = broken_under(every, breaking + swing_texts, _breakable(every))
     layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
               Layer("frame", tuple(frame)), Layer("dimensions", tuple(dimension)),
               Layer("leaders", tuple(number_leaders) + labels.leaders),
@@ -156,7 +166,7 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
                                number_leaders: list[Polyline], numbers: list[Text],
                                pins: list[BaseGeometry]) -> tuple[Placement, list[Text]]:
     """The labels placed clear of the drawn lines, and those of them that the thin lines of the other positions
-    break under (:func:`_broken_under`).
+    break under (:func:`~graphplan.render.labels.broken_under`).
 
     Where the thin lines leave no clear spot near a point (the crank's pivot, that every crank position's line
     leaves; a swing's ψ on its arc, across the rocker's positions; a centre of mass among the links' thin
@@ -188,32 +198,6 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
 def _breakable(items: list[Primitive]) -> list[Polyline]:
     """The lines of ``items`` that a label may break: open or unfilled outlines (not a slider's block)."""
     return [item for item in items if isinstance(item, Polyline) and not item.fill and len(item.points) >= 2]
-
-
-# How far a thin line broken under a label stops short of its letters' box (mm).
-_BREAK_MM = 0.4
-
-
-def _broken_under(items: list[Primitive], texts: list[Text]) -> list[Primitive]:
-    """``items`` with their thin lines broken where they run under one of ``texts``."""
-    if not texts:
-        return items
-    gaps = shapely.union_all([spaced_box(text, _BREAK_MM) for text in texts])
-    breakable = {id(item) for item in _breakable(items)}
-    kept: list[Primitive] = []
-    for item in items:
-        if id(item) not in breakable:
-            kept.append(item)
-            continue
-        line = shapely.LineString(item.points + ((item.points[0],) if item.closed else ()))
-        if not line.intersects(gaps):
-            kept.append(item)
-            continue
-        left = line.difference(gaps)
-        for piece in getattr(left, "geoms", [left]):
-            if piece.geom_type == "LineString" and not piece.is_empty:
-                kept.append(Polyline(tuple(piece.coords), item.stroke))
-    return kept
 
 
 def _mechanism_at(motion: Motion, outlines: dict[int, list[str]], paper: Paper, stroke: Stroke,
@@ -262,7 +246,7 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
     fewest of the ``drawn`` lines (through the crank's circle, the quick-return lever's ran over the crank), a
     stroke's on the side and at the offset where its lines and text cross fewest.  A swing's arc goes first where
     its ψ, beside the arc's middle, meets none of the ``drawn`` lines but the ``thin`` ones, which break under it
-    (:func:`_broken_under`): across a rocker's extremes a long ψ inside a narrow angle lay on them."""
+    (:func:`~graphplan.render.labels.broken_under`): across a rocker's extremes a long ψ inside a narrow angle lay on them."""
     bold = plan.emphasised
     if bold.count < 2:
         return [], []
