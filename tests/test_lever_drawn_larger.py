@@ -205,7 +205,7 @@ def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_dra
     smaller = 0
     for pa, position in zip(pas, analysis.plans, strict=True):
         figure = (tmp_path / "out" / f"forces_{position.number}.svg").read_text(encoding="utf-8")
-        drawn_at = float(re.search(r"μV = ([\d.]+) \(m/s\)/mm, forces", figure)[1])
+        drawn_at = float(re.search(r"μV = ([\d.]+) \(m/s\)/mm, arrows", figure)[1])
         velocity = position.velocity
         assert pa == pytest.approx(abs(velocity.points[velocity.images["A"]]) / drawn_at, abs=0.006)
         enlarged = force_layout.enlarged_lever_scale(velocity)
