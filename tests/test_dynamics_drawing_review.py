@@ -274,3 +274,17 @@ def test_a_load_diagrams_leaders_run_clear_of_its_words(tmp_path, kind, struck):
             assert not leader.intersects(glyphs), f"a leader runs through {words!r}"
     # Still leaders: each plan position's ring has one reaching up toward its words.
     assert len({round(line.coords[0][0], 3) for line in leaders}) == 2
+
+
+def test_the_russian_moments_legend_names_them_as_the_works_legend_and_the_note_do(tmp_path):
+    """The moments' legend read «движущих сил» and «сил сопротивления», genitives that only went on the heading
+    («Приведённые моменты движущих сил и сил сопротивления»); beside it the works' legend reads Aд and Aс, and the
+    note names the moments Mд and Mс."""
+    out = _run(tmp_path, _scene("ru"), "dynamics,note")
+    legends = {name: {"".join(text.itertext()) for text in _texts(_group(out / "dynamics.svg", name))}
+               for name in ("moments", "works")}
+    assert {"Aд", "Aс"} <= legends["works"]
+    assert {"Mд", "Mс"} <= legends["moments"], legends["moments"]
+    assert not {"движущих сил", "сил сопротивления"} & legends["moments"]
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert "Mд" in note and "Mс" in note

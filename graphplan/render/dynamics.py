@@ -193,8 +193,8 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
     x = model.coordinate / scales.angle
     # A slider driver has reduced forces (N) where a crank has reduced moments (N·m).
     moment = ("moment", "moments") if model.turning else ("force", "forces")
-    moments = _diagram(x, [(model.driving, _DRIVING, words["dyn_driving"]),
-                           (model.resisting, _RESISTING, words["dyn_resisting"])],
+    moments = _diagram(x, [(model.driving, _DRIVING, words[f"dyn_driving_{moment[0]}"]),
+                           (model.resisting, _RESISTING, words[f"dyn_resisting_{moment[0]}"])],
                        scales.moment, model, words[f"dyn_{moment[0]}_axis"],
                        words[f"dyn_{moment[0]}_scale"].format(value=format_scale(scales.moment)),
                        words[f"dyn_{moment[1]}"], scales, words)
