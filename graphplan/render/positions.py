@@ -183,9 +183,8 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
                 if len(tree.query(text_box(text), predicate="intersects"))]
     if not breaking:
         return first, []
-    thin = {id(item) for item in _breakable(every)}
-    solid = [item for item in drawn if id(item) not in thin]
-    over = place_labels([anchors[index] for index in breaking], obstacles_of(solid + number_leaders) + pins,
+    over = place_labels([anchors[index] for index in breaking],
+                        obstacles_of(_without(drawn, _breakable(every)) + number_leaders) + pins,
                         standing=numbers)
     rest = [index for index in range(len(anchors)) if index not in breaking]
     others = place_labels([anchors[index] for index in rest], obstacles + obstacles_of(list(over.leaders)),
@@ -193,6 +192,12 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
     texts = dict(zip(breaking, over.texts)) | dict(zip(rest, others.texts))
     return Placement(tuple(texts[index] for index in range(len(anchors))), over.leaders + others.leaders), \
         list(over.texts)
+
+
+def _without(items: list[Primitive], left_out: list[Primitive]) -> list[Primitive]:
+    """``items`` but those of ``left_out`` (the same objects): the drawing's solid lines without its thin ones."""
+    out = {id(item) for item in left_out}
+    return [item for item in items if id(item) not in out]
 
 
 def _breakable(items: list[Primitive]) -> list[Polyline]:
@@ -237,6 +242,8 @@ _STROKE_OFFSETS_MM = (10.0, 14.0, 18.0, 24.0, 30.0, 40.0, 50.0)
 # and the least radius it is drawn at (mm).
 _SWING_SHARES = (0.55, 0.5, 0.6, 0.45, 0.65, 0.4, 0.7, 0.35, 0.75, 0.8, 0.85)
 _SWING_LEAST_MM = 8.0
+# How near a solid line runs alongside a swing's arc (mm).
+_ALONGSIDE_MM = 3.0
 
 
 def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outlines: dict[int, list[str]],
@@ -278,33 +285,26 @@ def _travel_dimension(plan: PositionsPlan, travel: Travel, paper: Paper, outline
     sweep = cmath.phase(ends[1] / ends[0])
 
     middle = start + sweep / 2
-    thin_ids = {id(item) for item in thin}
-    solid = STRtree(obstacles_of([item for item in drawn if id(item) not in thin_ids]))
+    solid = STRtree(obstacles_of(_without(drawn, thin)))
 
-    def radius_of(share: float) -> float:
-        return max(share * min(abs(end) for end in ends), _SWING_LEAST_MM)
-
-    def label_sides(share: float) -> list[tuple[int, float]]:
-        """How many solid lines the ψ meets beside the arc's middle, outside the arc and inside it."""
-        own = obstacles_of(dimensions.angular(to_xy(pivot), radius_of(share), start, sweep))
+    def tried(share: float) -> tuple[tuple[bool, int, int], float, list[Primitive], tuple[int, float]]:
+        """A swing's arc at ``share`` of the lever's drawn length: its cost, its radius, the arc, and the fewest
+        solid lines its ψ meets beside the arc's middle (outside the arc or inside it) with the side it stands."""
+        radius = max(share * min(abs(end) for end in ends), _SWING_LEAST_MM)
+        arc = dimensions.angular(to_xy(pivot), radius, start, sweep)
+        own = obstacles_of(arc)
         sides = []
         for side in (middle, middle + math.pi):
-            box = text_box(_beside_arc(pivot + cmath.rect(radius_of(share), middle), cmath.rect(1.0, side),
-                                       travel.text))
-            hits = len(solid.query(box, predicate="intersects")) + sum(box.intersects(shape) for shape in own)
-            sides.append((hits, side))
-        return sides
-
-    def cost(share: float) -> tuple[bool, int, int]:
-        arc = dimensions.angular(to_xy(pivot), radius_of(share), start, sweep)
+            box = text_box(_beside_arc(pivot + cmath.rect(radius, middle), cmath.rect(1.0, side), travel.text))
+            sides.append((len(solid.query(box, predicate="intersects")) + sum(box.intersects(shape) for shape in own),
+                          side))
+        label = min(sides)
         # A solid line alongside the arc (a point's path at about its radius) reads as one with it.
-        alongside = len(solid.query(obstacles_of(arc[:1])[0].buffer(_ALONGSIDE_MM), predicate="intersects"))
-        return min(label_sides(share))[0] > 0, alongside, crossed(arc[:1])
+        alongside = len(solid.query(own[0].buffer(_ALONGSIDE_MM), predicate="intersects"))
+        return (label[0] > 0, alongside, crossed(arc[:1])), radius, arc, label
 
-    share = min(_SWING_SHARES, key=cost)  # the first of the fewest: the nearest the middle share
-    radius = radius_of(share)
-    arc = dimensions.angular(to_xy(pivot), radius, start, sweep)
-    hits, side = min(label_sides(share))
+    # The first of the fewest: the nearest the middle share.
+    _, radius, arc, (hits, side) = min((tried(share) for share in _SWING_SHARES), key=lambda option: option[0])
     if not hits:
         # Written as a dimension's number is, by its arc's middle: left to the placer, it took a leader, the spot
         # beside the arc too tight for its spaced box.
@@ -318,9 +318,6 @@ def _beside_arc(at: complex, outward: complex, text: str) -> Text:
     reach = abs(outward.real) * (right - left) / 2 + abs(outward.imag) * (top - bottom) / 2 + LABEL_GAP_MM
     centre = at + outward * reach
     return Text((centre.real, centre.imag - (top + bottom) / 2), text, _LABEL, "middle")
-
-# How near a solid line runs alongside a swing's arc (mm).
-_ALONGSIDE_MM = 3.0
 
 
 def _paths(plan: PositionsPlan, paper: Paper) -> list[Primitive]:
