@@ -712,10 +712,10 @@ def _read_scene(top: Table, source: str) -> Scene:
     linkage = top.has("frame") or top.has("driver")
     # With a linkage, [vibration] is read after the driver, whose speed it takes where it gives none.
     vibration = None
-    if top.has("vibration"):
+    if top.has("vibration") and not linkage:
         from .vibration import read_vibration
 
-        vibration = read_vibration(top.table("vibration")) if not linkage else None
+        vibration = read_vibration(top.table("vibration"))
     if not linkage and (balancing is not None or vibration is not None or top.has("dynamics")):
         # A rotor to balance, a machine on its springs, a flywheel from a load diagram: no linkage to read.
         for key in LINKAGE_KEYS:
