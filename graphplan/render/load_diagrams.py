@@ -63,6 +63,8 @@ _GUIDE = Stroke(0.15, "#9a9a9a", (1.0, 1.0))
 # The reference stroke's load solid, the other stroke's dashed (a piston's return), as the dynamics draws its
 # two moments.
 _STROKES = (Stroke(0.5), Stroke(0.5, "#1f5fa8", (3.0, 1.5)))
+# The arrow before each stroke's row of position numbers, the reference stroke's pointing along the travel.
+ROW_ARROWS = {True: "→", False: "←"}
 
 
 def load_diagrams_svg(diagrams: Sequence[LoadDiagram], text: Mapping[str, str] | None = None) -> str:
@@ -257,8 +259,11 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
         own = load.spec.stroke or diagram.reference
         sense = own.sense if load.spec.during != "idle" else OTHER_SENSE[own.sense]
         items.append(Polyline(((0.0, y + SCALE_SIZE / 3), (10.0, y + SCALE_SIZE / 3)), stroke))
+        # The stroke's row of numbers by its arrow: a "backward" stroke's positions may well run → along the
+        # travel, which counts from that stroke's start, and the reader would otherwise look for them in the ← row.
+        row = ROW_ARROWS[load.with_reference]
         items.append(Text((12.0, y), words["ld_legend"].format(name=load.name, stroke=words[f"ld_stroke_{sense}"],
-                                                              link=own.link), SCALE_SIZE, "start"))
+                                                              link=own.link, row=row), SCALE_SIZE, "start"))
         y -= LINE_SPACING * SCALE_SIZE + 1.0
     if diagram.plans:
         items.append(Circle((5.0, y + SCALE_SIZE / 3), PLAN_RING_MM, _AXIS, None))
