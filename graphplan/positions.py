@@ -415,10 +415,16 @@ def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray, wo
     still = finite & (np.abs(speed) <= _STILL * scale)
     if scale == 0.0 or not still.any():
         return
-    runs = np.flatnonzero(np.diff(np.concatenate([[0], still.astype(int), [0]])))
+    # The sweep's last step is its first a turn on: a dwell across the sweep's start is one stretch, not two
+    # that would each name a part of it (a quarter of the half turn a Whitworth ram rests in).
+    turn = len(still) - 1
+    shift = int(np.argmin(still[:turn])) if still[0] and still[turn - 1] and not still[:turn].all() else 0
+    around = np.roll(still[:turn], -shift) if shift else still
+    runs = np.flatnonzero(np.diff(np.concatenate([[0], around.astype(int), [0]])))
     first, last = max(zip(runs[::2], runs[1::2] - 1), key=lambda run: run[1] - run[0])
     if last - first < 2:
         return
+    first, last = (first + shift) % turn if shift else first, (last + shift) % turn if shift else last
     driver = mechanism.driver
     raise SceneError(working.where,
                      f"link {working.link} stands still from {driver.describe(float(steps[first]))} "
