@@ -98,8 +98,42 @@ def mixed_units(mechanism: Mechanism) -> str | None:
         lengths.append((f"frame.points.{name} ({apart:g} m from {first})", apart))
     if len(lengths) < 2:
         return None
-    (long_one, longest), (short_one, shortest) = max(lengths, key=lambda item: item[1]), min(
+    # A joint placed or a guide put near its reference point is no link's length: only as the longest are they told.
+    (long_one, longest), (short_one, shortest) = max(
+        lengths + _placed_joints(mechanism) + _guide_spread(mechanism), key=lambda item: item[1]), min(
         lengths, key=lambda item: item[1])
     if longest <= LONGEST_LINK_M and longest < MIXED_RATIO * shortest:
         return None
     return f"{long_one} beside {short_one}: {millimetres_question(some=True)}"
+
+
+def _placed_joints(mechanism: Mechanism) -> list[tuple[str, float]]:
+    """The distances at which the scene places a named point that a group joins on to (a coupler point driving a
+    rod): in millimetres it moves the group's joint as a link's length would."""
+    joined = {joint for group in mechanism.groups for joint in group.known_joints()}
+    found = []
+    for spec in mechanism.scene.points:
+        reach_m = abs(complex(spec.at, spec.offset))
+        if spec.name in joined and reach_m > 0:
+            key, value = ("at", spec.at) if abs(spec.at) >= abs(spec.offset) else ("offset", spec.offset)
+            found.append((f"{spec.where}.{key} = {value:g} m (puts {spec.name} {reach_m:.4g} m from {spec.start})",
+                          reach_m))
+    return found
+
+
+def _guide_spread(mechanism: Mechanism) -> list[tuple[str, float]]:
+    """How far a frame guide's point given by its coordinates lies from the frame's first point: typed in
+    millimetres, it puts the guide as far off as a frame point so typed puts a pivot."""
+    points = list(mechanism.scene.frame_points.items())
+    if not points:
+        return []
+    first, origin = points[0]
+    solvers = [mechanism.driver, *mechanism.groups]
+    guides = [*mechanism.scene.frame_lines.values(), *(guide for solver in solvers for guide in solver.guides())]
+    found = []
+    for guide in guides:
+        if guide.on_frame and isinstance(guide.through, tuple):
+            apart = abs(complex(*guide.through) - origin)
+            if apart > 0:
+                found.append((f"{guide.where}.through ({apart:g} m from {first})", apart))
+    return found

@@ -1,0 +1,153 @@
+"""Scenes a student writes from the docs alone for mechanisms the fixtures lack (a Whitworth quick-return, a
+four-bar whose coupler point drives a slider, a slotted lever driving a rocker), run as written and with the
+student's usual slips: each slip told where and what, no folder left behind, and the numbers checked against a
+hand calculation of the geometry."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.cli import main
+
+# After Khurmi & Gupta, Theory of Machines, the Whitworth quick-return example: OQ = 100 mm, OP = 200 mm,
+# QR = 150 mm, RS = 500 mm, the crank at 120 rpm clockwise.  The lever turns round about Q; R on its tail.
+WHITWORTH = """
+[scene]
+title = "Whitworth quick-return mechanism"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], Q = [0.0, -0.1] }
+lines = { ram = { through = "Q", angle = 0.0 } }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "P"
+length = 0.2
+rpm = -120.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["P", "Q"]
+[points]
+R = { link = 4, from = "Q", toward = "P", at = -0.15 }
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["R", "S"]
+length = 0.5
+guide = "ram"
+assembly = "forward"
+[positions]
+count = 12
+start = 0.0
+working = { link = 6, sense = "backward" }
+"""
+
+# A crank-rocker O-A-B-C whose coupler point E drives the slider F by the rod EF (my own dimensions of the
+# textbook kind: lOA = 100, lAB = 350, lBC = 250, lOC = 300, E 150 along AB and 120 to its left, lEF = 400 mm).
+SIX_BAR = """
+[scene]
+title = "Six-bar with a coupler-point slider"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.3, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+rpm = 150.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.35, 0.25]
+assembly = "left"
+[points]
+E = { link = 3, from = "A", toward = "B", at = 0.15, offset = 0.12 }
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["E", "F"]
+length = 0.4
+guide = { through = [0.0, 0.45], angle = 0.0 }
+assembly = "forward"
+[positions]
+count = 6
+start = 0.0
+"""
+
+
+def _refused(tmp_path, capsys, text: str) -> str:
+    """The one line ``run`` refuses ``text`` with, after checking that it left no folder and no traceback."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    lines = [line for line in err.splitlines() if line.startswith("graphplan: error: ")]
+    assert len(lines) == 1 and "Traceback" not in err, err
+    assert not out.exists()
+    return lines[0]
+
+
+def _whitworth_ram(phi: np.ndarray, rod: float = 0.5) -> np.ndarray:
+    """The ram's x by the geometry: R = Q − QR·(P − Q)/|P − Q|, S on the guide through Q ahead of R."""
+    p = 0.2 * np.exp(1j * phi)
+    q = -0.1j
+    r = q - 0.15 * (p - q) / np.abs(p - q)
+    return r.real + np.sqrt(rod ** 2 - (r.imag - q.imag) ** 2)
+
+
+def test_the_whitworth_ram_moves_as_the_geometry_says():
+    motion = analyse(graphplan.load_text(WHITWORTH)).motion
+    phi = np.asarray(motion.driver)
+    omega = -4.0 * math.pi
+    step = 1e-6
+    np.testing.assert_allclose(motion.point("S").r[:, 0], _whitworth_ram(phi), atol=1e-12)
+    central = (_whitworth_ram(phi + step) - _whitworth_ram(phi - step)) / (2 * step) * omega
+    np.testing.assert_allclose(motion.point("S").v[:, 0], central, atol=1e-6)
+
+
+def test_a_ram_rod_as_long_as_the_levers_tail_is_told_its_whole_dwell(tmp_path, capsys):
+    """RS = QR = 0.15 m folds the rod back along the lever's tail and rests the ram at Q while P is right of O
+    (x_S = 0.15·(|ux| − ux)), the crank from 90° clockwise round to 270°: half a turn.  The sweep that finds the
+    dwell starts at the crank's 0°, inside it, and told only the part after that start (0.25° to 270.25°)."""
+    told = _refused(tmp_path, capsys, WHITWORTH.replace("length = 0.5", "length = 0.15"))
+    assert told.startswith("graphplan: error: positions.working: link 6 stands still from φ = "), told
+    start, end = (float(value) for value in
+                  told.split("stands still from φ = ")[1].split(" (")[0].replace("°", "").split(" to φ = "))
+    # The samples half a degree apart: the first and last still ones lie within a step inside the dwell.
+    assert 89.5 <= start <= 90.0 and 270.0 <= end <= 270.5, told
+
+
+@pytest.mark.parametrize(("typed", "key"), [
+    ("at = 150.0, offset = 120.0", "points.E.at = 150 m"),
+    ("at = 0.15, offset = 120.0", "points.E.offset = 120 m"),
+])
+def test_a_coupler_point_placed_in_millimetres_is_named_where_it_stops_the_rod(tmp_path, capsys, typed, key):
+    """E typed in millimetres puts the rod's joint some 190 m off, so F cannot reach the guide at any angle; the
+    refusal said 'check the lengths' of a scene whose every link length was right."""
+    told = _refused(tmp_path, capsys, SIX_BAR.replace("at = 0.15, offset = 0.12", typed))
+    assert "F cannot be assembled" in told and key in told and "driver.length = 0.1 m" in told, told
+    assert "millimetres" in told, told
+
+
+def test_a_guide_put_in_millimetres_is_named_where_it_stops_the_rod(tmp_path, capsys):
+    told = _refused(tmp_path, capsys, SIX_BAR.replace("through = [0.0, 0.45]", "through = [0.0, 450.0]"))
+    assert "groups[1].guide.through (450 m from O)" in told and "millimetres" in told, told
+
+
+def test_a_short_coupler_point_is_not_taken_for_a_millimetre_slip(tmp_path, capsys):
+    """A joint placed a millimetre from its reference point is no link's length: a rod too short to reach the
+    guide is still told to check the lengths or to swing, not asked about millimetres."""
+    told = _refused(tmp_path, capsys, SIX_BAR.replace("at = 0.15, offset = 0.12", "at = 0.0005, offset = 0.0")
+                    .replace("length = 0.4", "length = 0.1"))
+    assert "F cannot be assembled" in told and "millimetres" not in told, told
