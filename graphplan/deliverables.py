@@ -944,9 +944,9 @@ def drafting_precision_warnings(scene: Scene) -> list[str]:
 def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDynamics | None) -> list[str]:
     """A line for each outcome of ``pieces`` that the files record but a user should not miss: a machine that
     stalls or never settles, a rotor left a couple, a speed near resonance; ``check`` tells them as ``run`` does."""
-    from .scene import guides_without_angle
+    from .scene import guides_without_angle, links_without_mass
 
-    told = guides_without_angle(scene)
+    told = guides_without_angle(scene) + links_without_mass(scene)
     if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
         from .flywheel import delta_warning
 

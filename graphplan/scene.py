@@ -499,6 +499,20 @@ def guides_without_angle(scene: Scene) -> list[str]:
     return told
 
 
+def links_without_mass(scene: Scene) -> list[str]:
+    """A line for each link given a centre of mass and a moment of inertia but no mass: no body has J > 0 and m = 0,
+    so the mass was forgotten, and the link's weight and inertia force are left out of the forces without a word.
+    A link with J alone (a crank's with its flywheel) or centred on a frame point is taken as meant."""
+    told = []
+    for number, link in sorted(scene.links.items()):
+        if link.mass == 0 and link.inertia > 0 and link.centre is not None and link.centre not in scene.frame_points:
+            told.append(f"{link.where}: inertia = {link.inertia:g} kg·m² about the centre {link.centre} but no mass: "
+                        f"link {number}'s weight and inertia force Fu{number} = −m{number}·a{link.centre} are left out (only "
+                        f"its moment "
+                        f"Mu{number} = −J{number}·ε{number} acts); give its mass")
+    return told
+
+
 def _utf16(data: bytes) -> bool:
     """Whether ``data`` is UTF-16 text: a byte-order mark, or zero bytes beside the letters of a Latin text (a TOML
     file has no zero byte of its own)."""

@@ -151,3 +151,59 @@ def test_a_short_coupler_point_is_not_taken_for_a_millimetre_slip(tmp_path, caps
     told = _refused(tmp_path, capsys, SIX_BAR.replace("at = 0.15, offset = 0.12", "at = 0.0005, offset = 0.0")
                     .replace("length = 0.4", "length = 0.1"))
     assert "F cannot be assembled" in told and "millimetres" not in told, told
+
+
+def test_a_point_at_below_zero_lies_behind_from_and_its_offset_to_the_left():
+    """The docs' row for a negative `at`: R 0.15 m behind Q from P, then `offset` to the left of Q→P."""
+    text = WHITWORTH.replace('at = -0.15 }', 'at = -0.15 }\nT = { link = 4, from = "Q", toward = "P", at = -0.15, '
+                                              'offset = 0.02 }')
+    motion = analyse(graphplan.load_text(text)).motion
+    p = 0.2 * np.exp(1j * np.asarray(motion.driver))
+    along = (p + 0.1j) / np.abs(p + 0.1j)
+    expected = -0.1j - 0.15 * along + 0.02 * 1j * along
+    found = motion.point("T").r
+    np.testing.assert_allclose(found[:, 0] + 1j * found[:, 1], expected, atol=1e-12)
+
+
+WITH_MASSES = WHITWORTH + """
+[points.S5]
+link = 5
+from = "R"
+toward = "S"
+at = 0.25
+[links.5]
+centre = "S5"
+inertia = 0.17
+[links.6]
+mass = 30.0
+centre = "S"
+[[loads]]
+kind = "force"
+link = 6
+point = "S"
+angle = 0.0
+value = 2500.0
+resisting = true
+during = "working"
+"""
+
+
+def test_a_link_given_its_inertia_and_centre_but_not_its_mass_is_warned_of(tmp_path, capsys):
+    """No body has J > 0 and m = 0: the rod's mass was forgotten, and its weight and inertia force were left out of
+    the force analysis without a word."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(WITH_MASSES, encoding="utf-8")
+    assert main(["check", str(scene)]) == 0
+    said = capsys.readouterr()
+    told = [line for line in (said.out + said.err).splitlines() if line.startswith("warning: links.5")]
+    assert len(told) == 1 and "no mass" in told[0] and "Fu5" in told[0], told
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "positions"]) == 0
+    said = capsys.readouterr()
+    assert any(line.startswith("warning: links.5") for line in (said.out + said.err).splitlines())
+    # With the mass given, or with the inertia alone (a crank's with its flywheel), nothing is said.
+    for meant in (WITH_MASSES.replace('centre = "S5"', 'mass = 8.0\ncentre = "S5"'),
+                  WITH_MASSES.replace('centre = "S5"\n', '')):
+        scene.write_text(meant, encoding="utf-8")
+        assert main(["check", str(scene)]) == 0
+        said = capsys.readouterr()
+        assert "warning: links.5" not in said.out + said.err
