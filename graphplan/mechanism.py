@@ -165,6 +165,11 @@ def build(scene: Scene) -> Mechanism:
                              scene.driver.pivot, hint=lookalike_hint(scene.driver.pivot, scene.frame_points))
         for name in solver.known_joints():
             if name not in known_points:
+                # A named point of a link already found that could not be placed: its own from or toward is the slip.
+                unplaced = [spec for spec in pending if spec.link in known_links]
+                if any(spec.name == name for spec in unplaced):
+                    unplaced.sort(key=lambda spec: spec.name != name)
+                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on)
                 raise _unknown_joint(solver, name, known_points, named_at)
         if index == 0 and scene.driver.kind == "slider" and not on_frame(scene, scene.driver.guide):
             raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
@@ -269,7 +274,9 @@ def _unknown_joint(solver: Driver | Group, name: str, known: set[str], named_at:
                           f"{difference(meant, name)}")
     if meant is not None:
         return SceneError(where, f"{name!r} is not known at this stage{lookalike_hint(name, known)}")
-    close = difflib.get_close_matches(name, sorted(known), n=1, cutoff=0.5)
+    # A one-letter name is no close match of another to difflib, but a joint typed in the other case is a slip.
+    close = [other for other in sorted(known) if other.casefold() == name.casefold()] or difflib.get_close_matches(
+        name, sorted(known), n=1, cutoff=0.5)
     hint = f"; did you mean {close[0]!r}?" if close else ""
     return SceneError(where, f"{name!r} is not known at this stage: it must be a frame point, a joint of the driver "
                              f"or of an earlier group, or a named point of a link already found{hint}")

@@ -207,3 +207,22 @@ def test_a_link_given_its_inertia_and_centre_but_not_its_mass_is_warned_of(tmp_p
         assert main(["check", str(scene)]) == 0
         said = capsys.readouterr()
         assert "warning: links.5" not in said.out + said.err
+
+
+def test_a_lever_point_with_a_misspelt_from_is_told_at_its_own_key(tmp_path, capsys):
+    """R's `from` typed "q" for Q left R unplaced, and the refusal blamed the rod's group for joining an unknown R."""
+    told = _refused(tmp_path, capsys, WHITWORTH.replace('from = "Q", toward = "P", at = -0.15',
+                                                        'from = "q", toward = "P", at = -0.15'))
+    assert told.startswith("graphplan: error: points.R.from: 'q' is not a point of link 4"), told
+    assert "Q" in told.split("its points are ")[1], told
+
+
+@pytest.mark.parametrize(("typed", "where", "meant"), [
+    ('joints = ["r", "S"]', "groups[1].joints[0]", "R"),
+    ('joints = ["P", "q"]', "groups[0].joints[1]", "Q"),
+])
+def test_a_joint_typed_in_the_other_case_is_told_the_name_meant(tmp_path, capsys, typed, where, meant):
+    """A one-letter name is no close match of another to difflib: 'r' for R was told no name to write."""
+    original = 'joints = ["R", "S"]' if meant == "R" else 'joints = ["P", "Q"]'
+    told = _refused(tmp_path, capsys, WHITWORTH.replace(original, typed))
+    assert told.startswith(f"graphplan: error: {where}: ") and told.endswith(f"did you mean {meant!r}?"), told
