@@ -156,8 +156,10 @@ def link_extremes(mechanism: Mechanism, positions: PositionSet, link: int) -> tu
 
 
 def stroke_extremes(positions: PositionSet, stroke: Working | None) -> tuple[float, float] | None:
-    """The driver coordinates where ``stroke`` (a load's own, or None: the working link's) starts and ends."""
-    return positions.extremes if stroke is None else positions.load_strokes[(stroke.link, stroke.sense)]
+    """The driver coordinates where ``stroke`` (a load's own, or None: the working link's) starts and ends; None
+    where the positions run once over a swing or a travel, which have no extremes (a load's stroke then goes by
+    its link's sense of motion alone, as the working link's does)."""
+    return positions.extremes if stroke is None else positions.load_strokes.get((stroke.link, stroke.sense))
 
 
 def _first_reference(mechanism: Mechanism, value: float, number: int, moved_by: str) -> Reference:

@@ -226,3 +226,44 @@ def test_a_joint_typed_in_the_other_case_is_told_the_name_meant(tmp_path, capsys
     original = 'joints = ["R", "S"]' if meant == "R" else 'joints = ["P", "Q"]'
     told = _refused(tmp_path, capsys, WHITWORTH.replace(original, typed))
     assert told.startswith(f"graphplan: error: {where}: ") and told.endswith(f"did you mean {meant!r}?"), told
+
+
+# The six-bar with masses and a resisting moment on the rocker in its own working stroke (its turning back is not
+# the slider's).  The rocker's AB = 0.25, BC = 0.12 make the crank stop short of a turn.
+SIX_BAR_LOADED = SIX_BAR.replace('start = 0.0\n', 'start = "extreme"\nworking = { link = 6, sense = "backward" }\n'
+                                 'plans = [2]\n') + """
+[points.S3]
+link = 3
+from = "A"
+toward = "B"
+at = 0.175
+[links.3]
+mass = 4.0
+centre = "S3"
+inertia = 0.05
+[[loads]]
+kind = "moment"
+link = 4
+value = 40.0
+resisting = true
+during = "working"
+stroke = { link = 4, sense = "ccw" }
+"""
+
+
+def test_a_crank_that_cannot_turn_round_under_a_load_of_the_rockers_stroke_is_advised_a_swing(tmp_path, capsys):
+    """The advice tries the swing it names by analysing the scene rocking over it; a load of another link's stroke
+    then looked up that stroke's extremes, which a swing has not, and the run ended in a KeyError traceback."""
+    stuck = SIX_BAR_LOADED.replace("lengths = [0.35, 0.25]", "lengths = [0.25, 0.12]")
+    told = _refused(tmp_path, capsys, stuck)
+    assert "B cannot be assembled" in told and "driver.swing = [" in told, told
+    # Rocking over the swing advised, as the advice says the scene then runs, the load acts while the rocker
+    # turns counter-clockwise, its sense of motion alone deciding, as the working link's does over a swing.
+    swing = told.rsplit("driver.swing = [", 1)[1].split("]")[0]
+    rocking = stuck.replace("rpm = 150.0", f"rpm = 150.0\nswing = [{swing}]").replace('start = "extreme"\n', "")
+    analysis = graphplan.load_text(rocking).analyse()
+    omega4 = analysis.motion.link(4).omega
+    moment = next(load for load in analysis.loads if load.name == "M4").moment
+    assert np.all(np.asarray(omega4) != 0.0)
+    np.testing.assert_array_equal(np.abs(moment) == 40.0, np.asarray(omega4) > 0)
+    np.testing.assert_array_equal(np.abs(moment) == 0.0, np.asarray(omega4) < 0)
