@@ -103,7 +103,7 @@ def _found_positions(mechanism: Mechanism) -> PositionSet:
     else:
         start = first_value(mechanism)
         # With start = "extreme" the first position is found later; the branches are chosen at 0° first.
-        reference = reference_at(mechanism, start) if spec.start == "extreme" else \
+        reference = _extreme_reference(mechanism, start) if spec.start == "extreme" else \
             _first_reference(mechanism, start, int(numbers[0]), "positions.start")
         extremes, reversals, turns = None, (), 0
         if spec.working is not None:
@@ -124,6 +124,22 @@ def _found_positions(mechanism: Mechanism) -> PositionSet:
     values.flags.writeable = numbers.flags.writeable = False
     return PositionSet(values=values, numbers=numbers, strokes=strokes, reference=reference, extremes=extremes,
                        reversals=reversals, working_link_turns=turns, load_strokes=MappingProxyType(load_strokes))
+
+
+def _extreme_reference(mechanism: Mechanism, start: float) -> Reference:
+    """The reference at the crank's 0°, where ``start = "extreme"`` chooses the assemblies: a toggle there (a
+    change-point four-bar folding) is told with why the run stood there, which the scene did not say, and what
+    runs instead: the extremes are sought over the turn, which passes it, so no stroke can be cut at it."""
+    try:
+        return reference_at(mechanism, start)
+    except SingularPositionError as error:
+        apart = 180.0 / mechanism.scene.positions.count
+        raise SingularPositionError(error.position, error.group, f'{error.reason}; positions.start = "extreme" '
+                                    "chooses the assemblies here and seeks the working link's extreme positions over "
+                                    "the crank's turn, which passes it, and a stroke cannot begin or end where the "
+                                    f"mechanism may fold either way: leave {mechanism.scene.positions.working.where} "
+                                    f"out and start the positions at an angle off it (positions.start = {apart:g})"
+                                    ) from None
 
 
 def _load_strokes(mechanism: Mechanism, start: float, reference: Reference) -> dict[tuple[int, str], tuple[float, float]]:

@@ -267,3 +267,20 @@ def test_a_crank_that_cannot_turn_round_under_a_load_of_the_rockers_stroke_is_ad
     assert np.all(np.asarray(omega4) != 0.0)
     np.testing.assert_array_equal(np.abs(moment) == 40.0, np.asarray(omega4) > 0)
     np.testing.assert_array_equal(np.abs(moment) == 0.0, np.asarray(omega4) < 0)
+
+
+def test_a_change_point_four_bar_started_at_the_extreme_is_told_why_it_stood_at_0_degrees(tmp_path, capsys):
+    """C moved to 0.2 m makes AB − BC = OC − OA: at the crank's 0° the coupler and the rocker fold into one line.
+    The scene asked for no 0°: start = "extreme" chooses the assemblies there, and the refusal named a toggle at a
+    position the student never gave, with nothing to change."""
+    folding = SIX_BAR_LOADED.replace("C = [0.3, 0.0]", "C = [0.2, 0.0]")
+    told = _refused(tmp_path, capsys, folding)
+    assert told.startswith("graphplan: error: singular position at φ = 0° in group II(3,4)"), told
+    assert 'positions.start = "extreme"' in told and "leave positions.working out" in told, told
+    angle = float(told.rsplit("positions.start = ", 1)[1].rstrip(")"))
+    # The angle advised is off the toggle: there, A (on the crank) and B stand off the line O–C.
+    assert 0.0 < angle < 360.0 / 6
+    advised = (folding.replace('start = "extreme"', f"start = {angle}")
+               .replace('working = { link = 6, sense = "backward" }\n', "")
+               .replace('during = "working"\nstroke = { link = 4, sense = "ccw" }', 'during = "always"'))
+    assert graphplan.load_text(advised).analyse().motion.count == 6
