@@ -94,6 +94,9 @@ class Slips:
     # By the plan a table of readings was given for (``acceleration``), the other plan (``velocity``) whose segments of
     # the same names every one of them is, to the drafting precision: that plan's readings typed under the wrong table.
     other_plan: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=lambda: MappingProxyType({}))
+    # Far-off readings a thousandth of their lengths as constructed, each with both lengths in mm: lengths typed in
+    # metres (one alone, or readings of polygons each at its own μF, which no one scale joins).  Not in ``misread``.
+    metres: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
 
 
 @dataclass(frozen=True)
@@ -152,6 +155,13 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     for _, read in other_plan.values():
         for reading in read:
             misread.pop(reading, None)
+    metres = {}
+    for reading, rows in list(misread.items()):
+        row, plan = rows[0]
+        constructed = abs(plan) / row.per_millimetre if row.per_millimetre else 0.0
+        if constructed > 0.0 and in_metres(_hand_millimetres(row) / constructed):
+            metres[reading] = (_hand_millimetres(row), constructed)
+            del misread[reading]
     named = {}
     for reading, rows in list(misread.items()):
         matches = _matching_segments(position, rows[0][0], precision)
@@ -161,7 +171,8 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     return Slips(tuple(rescaled), {reading: tuple(rows) for reading, rows in misread.items()},
                  MappingProxyType(named),
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
-                                   for kind, (other, read) in other_plan.items()}))
+                                   for kind, (other, read) in other_plan.items()}),
+                 MappingProxyType(metres))
 
 
 def _name(reading: str) -> str:
@@ -221,7 +232,9 @@ def _matching_segments(position: VelocityPosition, row: ErrorRow, precision: flo
                 continue
             seen.add(key)
             length = reading.millimetres(position.plans)
-            if abs(millimetres - length) <= precision:
+            # A segment no longer than the precision is a point on the drawing (ps4 of a centre on a fixed pivot):
+            # any small reading is it, which tells nothing of the reading.
+            if length > precision and abs(millimetres - length) <= precision:
                 matches.append(Segment(plan, "".join(reading.segment), length, plan != kind))
     return tuple(sorted(matches, key=lambda each: abs(millimetres - each.millimetres)))
 
@@ -444,6 +457,13 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             continue
         details = []
         for rescaled in found.rescaled:
+            if in_metres(rescaled.ratio):
+                what = (f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons") \
+                    if rescaled.kind == "forces" else f"the {rescaled.kind} plan"
+                details.append(f"every reading of {what} is {rescaled.ratio:.4g} times its length as constructed, "
+                               f"a thousandth: lengths typed in metres? give the millimetres measured (each reading "
+                               f"times 1000)")
+                continue
             if rescaled.kind == "forces":
                 caveat = "" if in_units(rescaled.drawn_at) else \
                     _shared_caveat(rescaled, position, drawn, drawing, joint)
@@ -480,6 +500,11 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                            f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
                            f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)"
                            f"{_shared_caveat(rescaled, position, drawn, drawing, joint)}")
+        if found.metres:
+            lengths = "; ".join(f"{reading} against {constructed:.4g} mm as constructed"
+                                for reading, (_, constructed) in found.metres.items())
+            details.append(f"readings a thousandth of their lengths on the drawings ({lengths}): lengths typed in "
+                           "metres? give the millimetres measured (each reading times 1000)")
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
@@ -532,6 +557,13 @@ def _polygons_detail(rescaled: Rescaled) -> str:
             f"every reading is within {rescaled.off * 100.0:.1f} % of the polygons as constructed)")
 
 
+def in_metres(ratio: float) -> bool:
+    """Whether readings ``ratio`` times their drawing's lengths are those lengths typed in metres for the millimetres
+    asked: a thousandth, within the spread a uniform slip is told at (a plan drawn a thousand times smaller, its pole
+    0.1 mm, is none a student draws or reads)."""
+    return abs(ratio * 1000.0 - 1.0) <= FAR_OFF_PERCENT / 100.0
+
+
 def in_units(drawn_at: float) -> bool:
     """Whether readings that agree at a plan scale of ``drawn_at`` (m/s or m/s² a millimetre) are the values
     themselves, typed in their units where a plan's millimetres were asked for: a scale of one unit a millimetre."""
@@ -550,5 +582,5 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_units", "misread", "on_grid", "read_at",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_metres", "in_units", "misread", "on_grid", "read_at",
            "setting", "sharing", "slips"]

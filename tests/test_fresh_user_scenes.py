@@ -5,6 +5,7 @@ hand calculation of the geometry."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -284,3 +285,73 @@ def test_a_change_point_four_bar_started_at_the_extreme_is_told_why_it_stood_at_
                .replace('working = { link = 6, sense = "backward" }\n', "")
                .replace('during = "working"\nstroke = { link = 4, sense = "ccw" }', 'during = "always"'))
     assert graphplan.load_text(advised).analyse().motion.count == 6
+
+
+# The Whitworth with what its force analysis needs and one plan position, 3 (the crank at 150°).
+WHITWORTH_PLANNED = WHITWORTH.replace("start = 0.0", "start = 210.0\nplans = [3]") + """
+[points.S5]
+link = 5
+from = "R"
+toward = "S"
+at = 0.25
+[links.5]
+mass = 8.0
+centre = "S5"
+inertia = 0.17
+[links.6]
+mass = 30.0
+centre = "S"
+[[loads]]
+kind = "force"
+link = 6
+point = "S"
+angle = 0.0
+value = 2500.0
+resisting = true
+during = "working"
+[drawing]
+velocity_pole = 100.0
+acceleration_pole = 100.0
+"""
+
+
+def _far_off_detail(tmp_path, capsys, text: str) -> str:
+    """The `measured.3` warning `check` gives of ``text``."""
+    scene = tmp_path / "measured.toml"
+    scene.write_text(text, encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(scene)]) == 0
+    said = capsys.readouterr()
+    told = [line for line in (said.out + said.err).splitlines() if line.startswith("warning: position 3: measured.3")]
+    assert len(told) == 1, said
+    return told[0]
+
+
+def test_plan_readings_typed_in_metres_are_told_so_not_a_pole_of_a_tenth_of_a_millimetre(tmp_path, capsys):
+    """ps and pr measured in metres (0.049 for 49 mm): the warning advised `velocity_pole = 0.1`, a plan a tenth
+    of a millimetre long that the run then calls too small to read."""
+    phi = math.radians(150.0)  # position 3: the crank from 210° two steps of 30° clockwise
+    step = 1e-6
+    ram_speed = abs(_whitworth_ram(np.array([phi + step])) - _whitworth_ram(np.array([phi - step])))[0] / (2 * step)
+    scale = 4.0 * math.pi * 0.2 / 100.0  # μV = ω2·lOP / pp′
+    ps = ram_speed * 4.0 * math.pi / scale
+    detail = _far_off_detail(tmp_path, capsys, WHITWORTH_PLANNED + f"[measured.3]\nvelocity = {{ ps = "
+                             f"{ps / 1000:.6f} }}\n")
+    assert "typed in metres" in detail and "times 1000" in detail and "velocity_pole" not in detail, detail
+
+
+def test_force_readings_typed_in_metres_are_told_so_not_taken_for_a_point_on_the_plans(tmp_path, capsys):
+    """R12 and R43 in metres (each polygon at its own μF, so no one scale joins them): each reading, a tenth of a
+    millimetre or less, was told to be the plans' ps4, 0 mm long (S4 on the fixed pivot Q)."""
+    text = WHITWORTH_PLANNED.replace('[points.S5]', '[points.S4]\nlink = 4\nfrom = "Q"\ntoward = "P"\nat = 0.0\n'
+                                     '[links.4]\nmass = 12.0\ncentre = "S4"\ninertia = 0.15\n[points.S5]')
+    out = tmp_path / "out"
+    done = graphplan.load_text(text).write(out, only=["forces"])
+    assert done.files
+    forces = json.loads((out / "results.json").read_text(encoding="utf-8"))["positions"][2]["forces"]
+    lengths = {name: abs(complex(*forces["reactions"][name])) / forces["polygon_scales"][label]
+               for name, label in (("R12", "I(1,2)"), ("R43", "II(3,4)"))}
+    assert forces["polygon_scales"]["I(1,2)"] != forces["polygon_scales"]["II(3,4)"]
+    readings = ", ".join(f"{name} = {length / 1000:.6f}" for name, length in lengths.items())
+    detail = _far_off_detail(tmp_path, capsys, text + f"[measured.3]\nforces = {{ {readings} }}\n")
+    assert "ps4" not in detail and "typed in metres" in detail and "times 1000" in detail, detail
