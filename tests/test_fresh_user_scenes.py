@@ -355,3 +355,64 @@ def test_force_readings_typed_in_metres_are_told_so_not_taken_for_a_point_on_the
     readings = ", ".join(f"{name} = {length / 1000:.6f}" for name, length in lengths.items())
     detail = _far_off_detail(tmp_path, capsys, text + f"[measured.3]\nforces = {{ {readings} }}\n")
     assert "ps4" not in detail and "typed in metres" in detail and "times 1000" in detail, detail
+
+
+# A crank, its block sliding in an oscillating lever (RPR, the slide 30 mm to the left of the pivot C), and a rocker
+# driven from the lever's end D (RRR): my own dimensions of the textbook kind, lOC = 300, lOA = 100, lCD = 500,
+# lDE = 350, lEF = 300 mm, n = 90 rpm.
+SLOTTED_LEVER_ROCKER = """
+[scene]
+title = "Slotted lever driving a rocker"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.0, -0.3], F = [0.45, 0.25] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+rpm = 90.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = 0.03
+[points]
+D = { link = 4, from = "C", toward = "A", at = 0.5 }
+[[groups]]
+kind = "RRR"
+links = [5, 6]
+joints = ["D", "E", "F"]
+lengths = [0.35, 0.3]
+assembly = "right"
+[positions]
+count = 8
+start = 0.0
+"""
+
+
+def _lever_and_rocker(phi: float) -> tuple[float, complex]:
+    """The lever's slide direction and E, by the geometry: A = C + s·u + e·(left of u), |DE| = 0.35, |EF| = 0.3,
+    E to the right of D→F."""
+    a, c, f = 0.1 * np.exp(1j * phi), -0.3j, 0.45 + 0.25j
+    theta = np.angle(a - c) - math.asin(0.03 / abs(a - c))
+    d = c + 0.5 * np.exp(1j * theta)
+    apart = abs(f - d)
+    along = (0.35 ** 2 - 0.3 ** 2 + apart ** 2) / (2 * apart)
+    across = math.sqrt(0.35 ** 2 - along ** 2)
+    return theta, d + (f - d) / apart * (along - 1j * across)
+
+
+def test_an_offset_slotted_lever_driving_a_rocker_moves_as_the_geometry_says():
+    """The lever's point D is placed toward the block: from C in the slide line's direction, not along C–A."""
+    motion = analyse(graphplan.load_text(SLOTTED_LEVER_ROCKER)).motion
+    omega, step = 3.0 * math.pi, 1e-6
+    for index, phi in enumerate(np.asarray(motion.driver)):
+        theta, e = _lever_and_rocker(phi)
+        (ahead, e_ahead), (behind, e_behind) = _lever_and_rocker(phi + step), _lever_and_rocker(phi - step)
+        assert abs(np.angle(np.exp(1j * (motion.link(4).angle[index] - theta)))) < 1e-9
+        assert motion.link(4).omega[index] == pytest.approx((ahead - behind) / (2 * step) * omega, abs=1e-6)
+        found = motion.point("E")
+        assert complex(*found.r[index]) == pytest.approx(e, abs=1e-12)
+        assert complex(*found.v[index]) == pytest.approx((e_ahead - e_behind) / (2 * step) * omega, abs=1e-6)
