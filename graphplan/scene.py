@@ -507,9 +507,8 @@ def links_without_mass(scene: Scene) -> list[str]:
     for number, link in sorted(scene.links.items()):
         if link.mass == 0 and link.inertia > 0 and link.centre is not None and link.centre not in scene.frame_points:
             told.append(f"{link.where}: inertia = {link.inertia:g} kg·m² about the centre {link.centre} but no mass: "
-                        f"link {number}'s weight and inertia force Fu{number} = −m{number}·a{link.centre} are left out (only "
-                        f"its moment "
-                        f"Mu{number} = −J{number}·ε{number} acts); give its mass")
+                        f"link {number}'s weight and inertia force Fu{number} = −m{number}·a{link.centre} are left out "
+                        f"(only its moment Mu{number} = −J{number}·ε{number} acts); give its mass")
     return told
 
 
