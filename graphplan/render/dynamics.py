@@ -27,7 +27,7 @@ from shapely.geometry import box
 from ..locale import strings
 from ..scales import fit_scale, format_scale
 from ..units import RPM
-from .labels import Anchor, obstacles_of, place_labels
+from .labels import Anchor, broken_under, obstacles_of, place_labels
 from .numerals import short
 from .primitives import (
     THIN,
@@ -275,7 +275,7 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     # tick, so that every value is read within half a step of a tick: a constant Mr of −71.6 N·m under ticks 0, 100,
     # 200 alone read as a second abscissa.  A dip just under a tick (ΔT of −9 J at steps of 100 J) is read against
     # it, and leaves no strip of empty paper.
-    step = nice_step((top_mm - bottom_mm) * scale / 4)
+    step = _ordinate_step(values, base)
     lowest_tick = math.ceil(bottom_mm * scale / step - 1e-9) * step
     if bottom_mm * scale < lowest_tick - step / 2:
         bottom_mm = (lowest_tick - step) / scale
@@ -302,6 +302,14 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items.append(Circle((cursor + PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((cursor + 2 * PLAN_RING_MM + 2.0, scale_y), rings_legend, LABEL, "start"))
     return items
+
+
+def _ordinate_step(values: np.ndarray, base: float = 0.0) -> float:
+    """The round step of a diagram's ordinate numbers: about a quarter of the span from ``base`` (nought, or a reduced
+    mass's round floor) to the values, that base among them."""
+    top = max(float(np.max(values)), base) - base
+    bottom = min(float(np.min(values)) - base, 0.0)
+    return nice_step((top - bottom) / 4)
 
 
 def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: float, top_mm: float,
@@ -380,7 +388,9 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     xs = model.inertia / scales.inertia
     ys = model.energy / scales.energy
     # A cycle closes on itself; a swing or a travel run once ends elsewhere, and a chord back would be a false arc.
-    items: list[Primitive] = [Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE, closed=model.cyclic)]
+    curve_line = Polyline(tuple(zip(xs.tolist(), ys.tolist())), _CURVE, closed=model.cyclic)
+    items: list[Primitive] = [curve_line]
+    tangents: list[Polyline] = []
     top_mm, bottom_mm = float(np.max(ys)), float(np.min(ys))
     curve = (bottom_mm - CUT_TANGENT_RUN_MM, top_mm + CUT_TANGENT_RUN_MM)
     width = float(np.max(xs))
@@ -400,7 +410,8 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                 ends = sorted(((low - intercept) / slope, (high - intercept) / slope))
                 start_x, end_x = max(start_x, ends[0]), min(end_x, ends[1])
             line = ((start_x, intercept + slope * start_x), (end_x, intercept + slope * end_x))
-            items.append(Polyline(line, _TANGENT))
+            tangents.append(Polyline(line, _TANGENT))
+            items.append(tangents[-1])
             items.append(dot_marker(touch, 0.7, _TANGENT.colour))
             angle = math.degrees(math.atan(slope))
             baseline = _off_the_inertia_axis(line[1][1], written)
@@ -420,10 +431,14 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
         items.append(Text((width / 2, bottom_mm - 2 * LABEL - 2.0), told, LABEL, "middle", _TANGENT.colour))
     # Je graduated as on Je(φ) under it; lettered on the side of the axis where fewer of the diagram's lines and
     # words run through its numbers, and of two alike the side the curve comes less near.  A number struck through
-    # there stands clear on the other side, or beside its tick, where it can, and is left out where it cannot (its
-    # tick kept, read off its neighbours and off Je(φ) under it, graduated alike): judged by the curve alone, a steep
-    # tangent (a fast machine's) crossing the axis among the numbers struck one through.
+    # there stands clear on the other side, or beside its tick, where it can.  Where no spot by its tick is clear (a
+    # steep tangent, a fast machine's, crossing the axis at the tick itself), it keeps a spot only a tangent runs
+    # through, and the tangent is broken under it, as ГОСТ 2.307 breaks a line under a dimension's number; the curve
+    # too, last of all.  Left out, as it was, the axis read 0.025, ·, 0.075 under a scale that says nothing of a gap.
     drawn = obstacles_of(items)
+    beside_the_tangents = obstacles_of([item for item in items if not any(item is line for line in tangents)])
+    beside_the_lines = obstacles_of([item for item in items if item is not curve_line
+                                     and not any(item is line for line in tangents)])
     near = LABEL + TICK_MM + 2.0
     ticks = _inertia_ticks(model, scales)
     sides = []
@@ -432,25 +447,37 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
                          for shape in drawn) for value, at in ticks)
         sides.append((struck, int(np.count_nonzero(crowd)), letter_y))
     (_, _, letter_y), (_, _, other_y) = sorted(sides)
-    items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"])
+    items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"],
+                           _ordinate_step(model.energy))
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
-    numbers: list[Text | None] = []
+    numbers: list[Text] = []
+    over_tangents: list[Text] = []
+    over_lines: list[Text] = []
     for k, (value, at) in enumerate(ticks):
         spots = [(at, letter_y, "middle"), (at, other_y, "middle"), (at - 0.5, letter_y, "end"),
                  (at + 0.5, letter_y, "start"), (at - 0.5, other_y, "end"), (at + 0.5, other_y, "start")]
         # Clear of the lines, of the numbers set already and of the next one's usual spot.
-        kept = [*drawn, *(_ink(number) for number in numbers if number is not None)]
+        others = [_ink(number) for number in numbers]
         if k + 1 < len(ticks):
-            kept.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), LABEL, "middle")))
+            others.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), LABEL, "middle")))
         candidates = [Text((x, y), short(value), LABEL, anchor) for x, y, anchor in spots]
-        numbers.append(next((text for text in candidates if not any(_ink(text).intersects(shape)
-                                                                     for shape in kept)), None))
-    if all(number is None for number in numbers):   # an axis with no number at all is no scale: struck, but there
-        numbers = [Text((at, letter_y), short(value), LABEL, "middle") for value, at in ticks]
+        number = None
+        for shapes, breaking in ((drawn, None), (beside_the_tangents, over_tangents), (beside_the_lines, over_lines)):
+            number = next((text for text in candidates
+                           if not any(_ink(text).intersects(shape) for shape in (*shapes, *others))), None)
+            if number is not None:
+                if breaking is not None:
+                    breaking.append(number)
+                break
+        if number is None:   # a spot every way crowded by words: its usual one, the lines broken under it
+            number = candidates[0]
+            over_lines.append(number)
+        numbers.append(number)
+    items = broken_under(items, over_tangents + over_lines, tangents)
+    items = broken_under(items, over_lines, [item for item in items if item is curve_line])
     for (_, at), number in zip(ticks, numbers):
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        if number is not None:
-            items.append(number)
+        items.append(number)
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))

@@ -1,0 +1,166 @@
+"""A teacher marks the dynamics and balancing drawings: axes of one quantity at one scale numbered alike, no number
+of an axis left out, the couple a one-plane balancing leaves said on its drawing, short shares named as a plan's.
+
+Every value is read back from the SVG written by ``graphplan run`` and checked against the scene's own numbers or
+against the other drawing of the same quantity; the couple Σ m·r·z is worked out here from the scene's masses.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from itertools import pairwise
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+from shapely.geometry import LineString, box
+
+from graphplan.cli import main
+from graphplan.starters import starter
+
+ROOT = Path(__file__).resolve().parent.parent
+SVG = "{http://www.w3.org/2000/svg}"
+NUMBER = re.compile(r"−?\d+(?:[.,]\d+)?")
+COMPRESSOR = ROOT / "tests" / "scenes" / "compressor_indicator_diagram.toml"
+
+
+def _run(folder: Path, scene_text: str, pieces: str, locale: str | None = None) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    scene = folder / "scene.toml"
+    scene.write_text(scene_text, encoding="utf-8")
+    out = folder / "out"
+    extra = ["--locale", locale] if locale else []
+    assert main(["run", str(scene), "--out", str(out), "--only", pieces, "--sheet", "none", *extra]) == 0
+    return out
+
+
+def _groups(svg: Path) -> dict[str, ElementTree.Element]:
+    return {g.get("id"): g for g in ElementTree.parse(svg).getroot().iter(f"{SVG}g") if g.get("id")}
+
+
+def _words(text: ElementTree.Element) -> str:
+    return "".join(text.itertext())
+
+
+def _value(words: str) -> float:
+    return float(words.replace("−", "-").replace(",", "."))
+
+
+def _numbers(group: ElementTree.Element, anchor: str) -> list[tuple[float, float, float]]:
+    """(value, x, y) of the texts of ``group`` that are a number alone, written with ``anchor``."""
+    return [(_value(_words(t)), float(t.get("x")), float(t.get("y"))) for t in group.iter(f"{SVG}text")
+            if NUMBER.fullmatch(_words(t)) and t.get("text-anchor") == anchor]
+
+
+def _ordinate(group: ElementTree.Element) -> list[tuple[float, float]]:
+    """(value, y on the paper) of a vertical axis's numbers: right-aligned against its ticks, all at one x."""
+    numbers = _numbers(group, "end")
+    x, _ = Counter(round(x, 3) for _, x, _ in numbers).most_common(1)[0]
+    return sorted((value, y) for value, at, y in numbers if round(at, 3) == x)
+
+
+def _abscissa(group: ElementTree.Element) -> list[tuple[float, float]]:
+    """(value, x on the paper) of the φ numbers under a diagram: centred, all on its lowest line of numbers."""
+    numbers = _numbers(group, "middle")
+    lowest = max(y for _, _, y in numbers)
+    return sorted((value, x) for value, x, y in numbers if abs(y - lowest) < 1e-6)
+
+
+def _step(numbers: list[tuple[float, float]]) -> tuple[float, float]:
+    """The one step of a row of numbers, in value and on the paper (mm); every gap the same."""
+    values = [value for value, _ in numbers]
+    places = [place for _, place in numbers]
+    assert len(values) >= 3, numbers
+    steps = {round(b - a, 9) for a, b in pairwise(values)}
+    paper = {round(abs(b - a), 3) for a, b in pairwise(places)}
+    assert len(steps) == 1 and len(paper) == 1, numbers
+    return steps.pop(), paper.pop()
+
+
+@pytest.fixture(scope="module", params=["shaper", "compressor"])
+def dynamics_svg(request, tmp_path_factory) -> Path:
+    text = starter("shaper") if request.param == "shaper" else COMPRESSOR.read_text(encoding="utf-8")
+    return _run(tmp_path_factory.mktemp(request.param), text, "dynamics") / "dynamics.svg"
+
+
+def test_delta_t_is_numbered_at_one_step_on_its_diagram_and_on_the_energy_mass_diagram(dynamics_svg):
+    """ΔT(φ) and the energy–mass diagram beside it draw ΔT at one μT, aligned: the shaper's were numbered 0, −100,
+    −200, −300 and 0, −200; the compressor's 0, −100, −200 and 0, −200."""
+    groups = _groups(dynamics_svg)
+    energy, energy_mass = _ordinate(groups["energy"]), _ordinate(groups["energy-mass"])
+    scales = [re.search(r"μT = ([\d.]+) J/mm", " ".join(_words(t) for t in groups[name].iter(f"{SVG}text")))[1]
+              for name in ("energy", "energy-mass")]
+    assert scales[0] == scales[1]
+    assert _step(energy) == _step(energy_mass), (energy, energy_mass)
+    # Aligned: each value the two write stands at one height on both.
+    heights = dict(energy)
+    assert all(abs(y - heights[value]) < 1e-3 for value, y in energy_mass if value in heights)
+    assert set(heights) <= {value for value, _ in energy_mass}
+
+
+def test_the_phi_axes_and_the_je_axes_are_numbered_alike(dynamics_svg):
+    """The three diagrams over the cycle number φ at one step and place, Je(φ) turned at the same step; the energy–mass
+    diagram and Je(φ) under it number Je alike, at one μJ."""
+    groups = _groups(dynamics_svg)
+    across = [_abscissa(groups[name]) for name in ("moments", "works", "energy")]
+    assert across[0] == across[1] == across[2]
+    assert _step(_ordinate(groups["inertia"]))[0] == _step(across[0])[0]
+    je = [_je_numbers(groups[name]) for name in ("energy-mass", "inertia")]
+    assert [value for value, _ in je[0]] == [value for value, _ in je[1]]
+    assert _step(je[0]) == _step(je[1]), je
+
+
+def _je_numbers(group: ElementTree.Element) -> list[tuple[float, float]]:
+    """(Je, x on the paper) of the Je axis's numbers: lettered as the axis's name, on either side of it."""
+    texts = list(group.iter(f"{SVG}text"))
+    name = next(t for t in texts if _words(t).startswith("Je,"))
+    axis_y = float(name.get("y"))
+    return sorted((_value(_words(t)), float(t.get("x"))) for t in texts
+                  if NUMBER.fullmatch(_words(t)) and _value(_words(t)) > 0 and t.get("font-size") == name.get("font-size")
+                  and abs(float(t.get("y")) - axis_y) < 6 and float(t.get("x")) < float(name.get("x")))
+
+
+def _paths(group: ElementTree.Element, colour: str | None = None) -> list[LineString]:
+    lines = []
+    for path in group.iter(f"{SVG}path"):
+        if path.get("fill") not in (None, "none") or (colour and path.get("stroke") != colour):
+            continue
+        points = [tuple(float(v) for v in pair.split(",")) for pair in re.findall(r"-?[\d.]+,-?[\d.]+", path.get("d"))]
+        if len(points) >= 2:
+            lines.append(LineString(points))
+    return lines
+
+
+def _ink(text: ElementTree.Element):
+    """A number's figures on the paper (y down), from its baseline up to its cap height."""
+    size = float(text.get("font-size"))
+    words = _words(text)
+    width = sum(0.318 if c in ".," else 0.636 for c in words) * size
+    x, y = float(text.get("x")), float(text.get("y"))
+    left = {"start": x, "middle": x - width / 2, "end": x - width}[text.get("text-anchor")]
+    return box(left, y - 0.72 * size, left + width, y)
+
+
+def test_every_je_tick_of_the_energy_mass_diagram_has_its_number_clear_of_the_lines(tmp_path):
+    """The compressor's upper tangent crosses the Je axis at 0.05's tick: 0.05 was left out, the axis reading 0.025,
+    (a bare tick), 0.075.  Every tick has its number, and no line of the diagram runs through one (broken under it)."""
+    groups = _groups(_run(tmp_path, COMPRESSOR.read_text(encoding="utf-8"), "dynamics") / "dynamics.svg")
+    group = groups["energy-mass"]
+    lines = _paths(group)
+    axis = max((line for line in lines if len(line.coords) == 2 and abs(line.coords[0][1] - line.coords[1][1]) < 1e-9),
+               key=lambda line: line.length)
+    axis_x, axis_y = axis.coords[0]
+    ticks = sorted(line.coords[0][0] for line in lines if len(line.coords) == 2
+                   and abs(line.coords[0][0] - line.coords[1][0]) < 1e-9 and line.length < 3
+                   and min(line.coords[0][1], line.coords[1][1]) < axis_y < max(line.coords[0][1], line.coords[1][1]))
+    scale = float(re.search(r"μJ = ([\d.]+)", " ".join(_words(t) for t in group.iter(f"{SVG}text")))[1])
+    name_size = next(t.get("font-size") for t in group.iter(f"{SVG}text") if _words(t).startswith("Je"))
+    numbers = [t for t in group.iter(f"{SVG}text") if NUMBER.fullmatch(_words(t)) and _value(_words(t)) > 0
+               and t.get("font-size") == name_size and abs(float(t.get("y")) - axis_y) < 8]
+    written = sorted(_value(_words(t)) for t in numbers)
+    assert written == pytest.approx([round((x - axis_x) * scale, 9) for x in ticks]), (written, ticks)
+    assert len(written) >= 3
+    struck = [_words(t) for t in numbers for line in lines if line is not axis and _ink(t).intersects(line)
+              and line.length > 3]
+    assert not struck, struck
