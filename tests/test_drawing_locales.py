@@ -152,7 +152,10 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         # A mass 0.02 m from plane R, whose share in plane L is too short to draw and is told under its polygon.
         near_plane = balance(BalancingSpec([*SHAFT[:2], RotatingMass(1, 0.03, 90, 0.20)], planes=(0.04, 0.22),
                                            correction_radius=0.05))
-        return [t for result in (two_planes, disc, near_plane) for t in svg_texts(balancing.balancing_svg(result, text))]
+        # One plane for masses in several: the couple it leaves told under its polygon.
+        one_plane = balance(BalancingSpec(SHAFT, planes=(0.04,), correction_radius=0.05))
+        return [t for result in (two_planes, disc, near_plane, one_plane)
+                for t in svg_texts(balancing.balancing_svg(result, text))]
     from graphplan.vibration import Shaft, VibrationSpec
 
     found = []

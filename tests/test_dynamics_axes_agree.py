@@ -7,6 +7,8 @@ against the other drawing of the same quantity; the couple Σ m·r·z is worked 
 
 from __future__ import annotations
 
+import cmath
+import math
 import re
 from collections import Counter
 from itertools import pairwise
@@ -164,3 +166,44 @@ def test_every_je_tick_of_the_energy_mass_diagram_has_its_number_clear_of_the_li
     struck = [_words(t) for t in numbers for line in lines if line is not axis and _ink(t).intersects(line)
               and line.length > 3]
     assert not struck, struck
+
+
+ROTOR_MASSES = re.compile(r"(?ms)^masses = \[.*?\} \]")
+ONE_PLANE = 0.04
+
+
+def _rotor_masses(scene_text: str) -> list[tuple[float, float, float, float]]:
+    block = ROTOR_MASSES.search(scene_text)[0]
+    return [tuple(float(re.search(key + r"\s*=\s*(-?[\d.]+)", entry)[1]) for key in ("mass", "radius", "angle", "plane"))
+            for entry in re.findall(r"\{[^}]*\}", block)]
+
+
+def _captions(svg: Path) -> dict[str, list[str]]:
+    return {name: [_words(t) for t in group.iter(f"{SVG}text")]
+            for name, group in _groups(svg).items() if name.endswith("-caption")}
+
+
+@pytest.mark.parametrize(("locale", "unit"), [("en", "kg·m²"), ("ru", "кг·м²"), ("zh", "kg·m²")])
+def test_a_one_plane_balancing_says_the_couple_it_leaves_under_its_polygon(tmp_path, locale, unit):
+    """The rotor's masses turn at z = 0, 0.08 and 0.16 m; one correction at z = 0.04 m closes the polygon of forces
+    but leaves Σ m·r·z. The warning and the note said so; the drawing, a closed polygon, read as a rotor balanced."""
+    text = re.sub(r"(?m)^planes = \[[^\]]*\]", f"planes = [{ONE_PLANE}]", starter("rotor"), count=1)
+    masses = _rotor_masses(text)
+    force = sum(m * r * cmath.exp(1j * math.radians(angle)) for m, r, angle, _ in masses)
+    # The correction −Σ m·r at z = 0.04 m; with the forces balanced the couple is the same about any point.
+    couple = abs(sum(m * r * cmath.exp(1j * math.radians(angle)) * z for m, r, angle, z in masses) - force * ONE_PLANE)
+    captions = _captions(_run(tmp_path, text, "balancing", locale) / "rotor_balancing.svg")
+    (caption,) = captions.values()
+    told = re.search(r"Σ m·r·z = ([\d.,]+) " + re.escape(unit) + "$", caption[-1])
+    assert told, caption
+    assert _value(told[1]) == pytest.approx(couple, rel=1e-4)
+    assert couple > 0.01
+
+
+def test_two_planes_and_a_disc_say_no_couple(tmp_path):
+    """Two planes balance the couple too, and a disc's correction turns in its masses' plane: no line of a couple."""
+    two = starter("rotor")
+    disc = re.sub(r"(?m)^planes = \[[^\]]*\].*$", "", re.sub(r"plane = [\d.]+", "plane = 0.1", two))
+    for k, text in enumerate((two, disc)):
+        for caption in _captions(_run(tmp_path / str(k), text, "balancing") / "rotor_balancing.svg").values():
+            assert not any("Σ m·r·z" in line for line in caption), caption

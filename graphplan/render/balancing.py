@@ -10,7 +10,8 @@ other plane's scale), each named beside its
 middle; then the closing vector, the correction mb·rb, drawn thicker in
 red from the last tip back to the pole, with its angle θ measured from a
 dashed x-direction at its tail.  Under each polygon its caption: the plane,
-its scale, its vector equation, the correction's product, angle and mass.  The layout
+its scale, its vector equation, the correction's product, angle and mass, and under the one plane of a static
+balancing the couple Σ m·r·z it leaves.  The layout
 reads the record and computes no mechanics.  Every word and unit comes from
 ``text``, the ``bal_`` keys of a locale (:func:`graphplan.locale.strings`);
 English when none is given.
@@ -25,7 +26,7 @@ from shapely.geometry import LineString
 from shapely.geometry import Point as ShapelyPoint
 
 from ..locale import Count, strings
-from ..rotor_balancing import BalancingResult, CorrectionPlane
+from ..rotor_balancing import BalancingResult, CorrectionPlane, static_couple
 from ..scales import format_scale, standard_scale
 from .force_rows import CAPTION_WIDTH_MM, caption_lines
 from .labels import Anchor, Placement, obstacles_of, place_labels
@@ -95,6 +96,11 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
     # A plane the scene places (two planes, or one at planes = [z]) is captioned with its z; a disc's is its masses'.
     placed = bool(result.spec.planes)
     panels = [_polygon(plane, plane_scale(plane), words, placed) for plane in result.planes]
+    if (couple := static_couple(result)) is not None:
+        # One plane balances the masses' forces, not their moments about it: the couple left was told in a warning
+        # and the note alone, and the drawing, its polygon closed, read as a rotor balanced.
+        key, drawing, extent, caption = panels[-1]
+        panels[-1] = (key, drawing, extent, (*caption, words["bal_couple_left"].format(value=significant(couple))))
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
         # Broken as a force polygon's caption is: a long equation of many named masses set no wider than the
