@@ -19,6 +19,7 @@ import pytest
 from shapely.geometry import LineString, box
 
 from graphplan.cli import main
+from graphplan.locale import strings
 from graphplan.starters import starter
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -207,3 +208,44 @@ def test_two_planes_and_a_disc_say_no_couple(tmp_path):
     for k, text in enumerate((two, disc)):
         for caption in _captions(_run(tmp_path / str(k), text, "balancing") / "rotor_balancing.svg").values():
             assert not any("Σ m·r·z" in line for line in caption), caption
+
+
+FIVE_MASSES = [(18.0, 0.05, 0.0, 0.0), (14.0, 0.06, -60.0, 0.08), (2.0, 0.04, 135.0, 0.16), (9.0, 0.05, 200.0, 0.12),
+               (1.0, 0.03, 90.0, 0.20)]
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_a_polygons_short_share_is_told_as_a_plans_short_vectors_are(tmp_path, locale):
+    """m5 turns 0.02 m from plane R: its share in plane L, 0.00333 kg·m, is too short to draw. A plan's caption puts
+    "not drawn, shorter than 0.25 mm:" on a line of its own and the values under it; the polygon's ran the words and
+    the values on one line."""
+    masses = ",\n".join(f"  {{ mass = {m}, radius = {r}, angle = {angle}, plane = {z} }}"
+                        for m, r, angle, z in FIVE_MASSES)
+    text = ROTOR_MASSES.sub(f"masses = [\n{masses} ]", starter("rotor"), count=1)
+    caption = _captions(_run(tmp_path, text, "balancing", locale) / "rotor_balancing.svg")["plane-L-caption"]
+    words = strings(locale)["plan_too_short"].format(least="0,25" if locale == "ru" else "0.25")
+    assert words in caption, caption
+    share = FIVE_MASSES[4][0] * FIVE_MASSES[4][1] * (0.22 - FIVE_MASSES[4][3]) / (0.22 - 0.04)
+    told = caption[caption.index(words) + 1]
+    found = re.fullmatch(r"\(m5r5\)L = ([\d.,]+) (kg·m|кг·м)", told)
+    assert found, told
+    assert _value(found[1]) == pytest.approx(share, rel=5e-3)
+
+
+def test_the_polygons_and_the_plans_name_their_short_vectors_with_one_function(tmp_path):
+    """The polygon's caption joined the words and the values on one line, which its width then broke after the colon
+    (the line never fits): the same lines as a plan's, by a second function that could drift from the first. The
+    polygon's short-share lines are now those the plans' function makes of its values, words and all."""
+    from graphplan.render.force_rows import CAPTION_WIDTH_MM
+    from graphplan.render.plans import too_short_lines
+
+    masses = ",\n".join(f"  {{ mass = {m}, radius = {r}, angle = {angle}, plane = {z} }}"
+                        for m, r, angle, z in (*FIVE_MASSES, (0.5, 0.03, 45.0, 0.21)))
+    text = ROTOR_MASSES.sub(f"masses = [\n{masses} ]", starter("rotor"), count=1)
+    caption = _captions(_run(tmp_path, text, "balancing") / "rotor_balancing.svg")["plane-L-caption"]
+    start = next(k for k, line in enumerate(caption) if line.startswith("not drawn"))
+    values = [value.strip() for line in caption[start + 1:] if line.startswith("(m")
+              for value in line.split(";") if value.strip()]
+    assert [value.split(" = ")[0] for value in values] == ["(m5r5)L", "(m6r6)L"]
+    lines = too_short_lines(values, strings("en"), CAPTION_WIDTH_MM)
+    assert caption[start:start + len(lines)] == lines

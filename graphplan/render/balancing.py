@@ -31,7 +31,7 @@ from ..scales import format_scale, standard_scale
 from .force_rows import CAPTION_WIDTH_MM, caption_lines
 from .labels import Anchor, Placement, obstacles_of, place_labels
 from .numerals import angle_in_turn, significant
-from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM
+from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM, too_short_lines
 from .primitives import (
     Arrow,
     Layer,
@@ -345,13 +345,8 @@ def _too_short(plane: CorrectionPlane, scale: float | None, text: Mapping[str, s
         return []
     short = [vector for vector in plane.vectors
              if vector.role == "mass" and 1e-9 < abs(vector.vector) / scale < ZERO_MM]
-    if not short:
-        return []
-    values = "; ".join(text["bal_share_value"].format(vector=vector.name, value=significant(abs(vector.vector), 3))
-                       for vector in short)
-    told = text["plan_too_short"].format(least=f"{ZERO_MM:g}")
-    # No space after a full-width colon (Chinese), as after a Latin one.
-    return [told + ("" if told.endswith("：") else " ") + values]
+    return too_short_lines([text["bal_share_value"].format(vector=vector.name, value=significant(abs(vector.vector), 3))
+                            for vector in short], text, CAPTION_WIDTH_MM)
 
 
 def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], heavy: Sequence[Primitive]) -> Placement:

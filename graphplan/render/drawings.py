@@ -27,7 +27,6 @@ from .numerals import scale_factor
 from .primitives import Layer, bounds, in_language
 from .svg import to_svg
 from .title_block import form_of
-from .wrapping import fitted
 
 # The plan of positions is scaled to fit this field when the scene gives no μl.
 POSITIONS_FIELD_MM = 200.0
@@ -412,10 +411,6 @@ def plan_sheet(analysis: Analysis, index: int, velocity: Plan | None = None,
         velocity_pole="p", acceleration_pole=text["acceleration_pole"])
 
 
-# Vectors named per caption line under a plan, so that a long list does not widen the sheet.
-_SHORT_PER_LINE = 3
-
-
 def velocity_plans_drawing(analysis: Analysis) -> velocity_plans.VelocityPlans:
     """What the drawing of the velocity plans of every position (``positions.velocity_plans``) shows."""
     text = strings(analysis.scene.locale)
@@ -432,17 +427,10 @@ def velocity_plans_drawing(analysis: Analysis) -> velocity_plans.VelocityPlans:
 
 def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str]:
     """Caption lines naming the plan's vectors too short to draw, with their values."""
-    short = plans.too_short(plan, kind)
-    if not short:
-        return []
     unit = text["unit_m_per_s" if kind == "velocity" else "unit_m_per_s2"]
     # Named as the note names them: aΣ6C^τ as aΣ6Cτ.
-    values = [f"{raised(name)} = {value:.3g} {unit}" for name, value in short]
-    lines = [text["plan_too_short"].format(least=f"{plans.ZERO_MM:g}")]
-    # A line too wide for the plan's field (long names such as aΣ6Bⁿ) breaks after a semicolon.
-    lines += [piece for k in range(0, len(values), _SHORT_PER_LINE)
-              for piece in fitted("; ".join(values[k:k + _SHORT_PER_LINE]), plans.plan_field_mm(), plans.CAPTION_SIZE)]
-    return lines
+    return plans.too_short_lines([f"{raised(name)} = {value:.3g} {unit}" for name, value in plans.too_short(plan, kind)],
+                                 text)
 
 
 def forces_svg(analysis: Analysis, plan_position: PlanPosition, with_friction: bool = False) -> str:

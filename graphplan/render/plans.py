@@ -15,7 +15,7 @@ it constructs its plans; it computes no mechanics.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -55,6 +55,7 @@ from .primitives import (
 )
 from .primitives import text_span as _width
 from .primitives import to_xy as _xy
+from .wrapping import fitted
 
 # A vector shorter than this on the paper (mm) is not drawn, and plan points closer than this share
 # one label: half the usual drafting precision, below what a pencil resolves.
@@ -408,6 +409,23 @@ def too_short(plan: Plan, kind: str) -> list[tuple[str, float]]:
         if 1e-9 < length < ZERO_MM:
             found.append((name, abs(plan.points[end] - plan.points[start])))
     return found
+
+
+# Vectors named per caption line under a drawing, so that a long list does not widen the sheet.
+SHORT_PER_LINE = 3
+
+
+def too_short_lines(values: Sequence[str], text: Mapping[str, str], width: float | None = None) -> list[str]:
+    """Caption lines naming the vectors too short to draw (shorter than :data:`ZERO_MM`), each written with its value
+    in ``values``: the words on a line of their own, then the values, :data:`SHORT_PER_LINE` a line, a line wider
+    than ``width`` (mm; a plan's field by default) broken after a semicolon.  The plans and the balancing polygons
+    both name theirs so."""
+    if not values:
+        return []
+    reach = plan_field_mm() if width is None else width
+    return [text["plan_too_short"].format(least=f"{ZERO_MM:g}"),
+            *(piece for k in range(0, len(values), SHORT_PER_LINE)
+              for piece in fitted("; ".join(values[k:k + SHORT_PER_LINE]), reach, CAPTION_SIZE))]
 
 
 def _laid(plan: Plan, kind: str) -> list[tuple[str, str, str]]:
