@@ -51,8 +51,9 @@ def _stroke_attributes(stroke: Stroke) -> dict[str, str]:
 
 def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, float] | None = None) -> str:
     """The SVG text of ``layers``; the page is the drawing's bounds plus ``margin`` unless given (mm)."""
-    xmin, ymin, xmax, ymax = bounds(layers)
     if page is None:
+        # Measured only here: a sheet's page is given, and its drawings' bounds, a walk over all their points, unused.
+        xmin, ymin, xmax, ymax = bounds(layers)
         left, top = xmin - margin, ymax + margin
         width, height = xmax - xmin + 2 * margin, ymax - ymin + 2 * margin
     else:
