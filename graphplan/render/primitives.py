@@ -219,7 +219,9 @@ def is_wide(character: str) -> bool:
 
 def has_wide(text: str) -> bool:
     """Whether ``text`` has a character of East Asian width: the rule every backend picks its fonts by."""
-    return any(map(is_wide, text))
+    # ASCII has no such character, and each other character is asked about once: the note's Markdown, asked about
+    # whole, is tens of thousands of characters of a few dozen kinds.
+    return not text.isascii() and any(map(is_wide, set(text)))
 
 
 def character_width(character: str) -> float:

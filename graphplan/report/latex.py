@@ -165,8 +165,11 @@ def _table_number(caption: str, text: Mapping[str, str]) -> str | None:
 
 def _escape(text: str) -> str:
     """Text with LaTeX's special characters escaped, each run of CJK characters marked for the CJK font."""
+    escaped = text.translate(_SPECIAL)
+    if not has_wide(escaped):  # most texts: one run, as it stands, without cutting it character by character
+        return escaped
     return "".join(f"\\notecjk{{{''.join(run)}}}" if wide else "".join(run)
-                   for wide, run in groupby(text.translate(_SPECIAL), key=is_wide))
+                   for wide, run in groupby(escaped, key=is_wide))
 
 
 def _text(text: str, verbatim: Collection[str] = ()) -> str:
