@@ -339,7 +339,9 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     for name in _named_points(sheet, group) + special_names:
         where = paper(sheet.positions[name])
         anchors.append(Anchor(where, name, POINT_SIZE, open_direction(where, figure)))
-    labels = _lettered(anchors + turning_anchors + circle_anchors + arm_anchors, figure)
+    # Left on a line, a name keeps its place beside its arrow: set far out on a leader among a group's arms and
+    # arcs it reads as naming another, and a group drawn with its names farther out stands larger on its sheet.
+    labels = _lettered(anchors + turning_anchors + circle_anchors + arm_anchors, figure, reach_farther=False)
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                                    text["body_force_scale"].format(value=format_scale(scale),
@@ -1218,7 +1220,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     loads, points = anchors[:len(load_points)], anchors[len(load_points):]
     unnamed: list[Anchor] = []
     while True:
-        labels = _lettered(loads + points + lettered, figure)
+        labels = _lettered(loads + points + lettered, figure, reach_farther=False)
         if near := [anchor for anchor, placed in zip(lettered, labels.texts[len(loads) + len(points):])
                     if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
                     or _on_a_line(anchor, placed, drawn_lines, labels.leaders)]:
@@ -1255,7 +1257,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                              Layer("lever-labels", labels.texts)], tuple(caption))
 
 
-def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placement:
+def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], reach_farther: bool = True) -> Placement:
     """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot.
 
     A label covering another one's anchor (the tail of a moment's arc)
@@ -1264,7 +1266,7 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive]) -> Placeme
     # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
     centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
-    return place_labels(anchors, obstacles_of(figure) + spots)
+    return place_labels(anchors, obstacles_of(figure) + spots, reach_farther=reach_farther)
 
 
 def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline]) -> bool:

@@ -7,7 +7,8 @@ for standing nearer another point than its own.  Where nothing beside the
 point is free the label is set apart on a thin leader line.  A label left
 on a line once all stand tries finer spots, and a neighbour's; one still on
 it reaches farther, for a spot clear of everything, moving a few neighbours
-if it must.  Shapely does the intersection tests.
+if it must, and farther out on its leader where that fails.  Shapely does
+the intersection tests.
 """
 
 from __future__ import annotations
@@ -159,6 +160,10 @@ KEPT_OFF = 3 * COVER
 # SLIDE_STEP letter heights apart, as far as SLIDE either way.  Beside its line it reads as naming it without a
 # leader: a step along it costs SLIDE_COST.
 REACH_SHARES = (1.1, 1.8, 2.5, 3.2)
+# A label on a line even so, every clear spot within that reach held by neighbours that cannot all stand clear
+# elsewhere (n6″ where a triad's plan crowds n3, n6 and σ6 at the end of its rays), reaches out farther on its leader,
+# ring by ring, as far as the farthest ring tried for a label that covers another (``place_labels``' reach_farther).
+FARTHER_SHARES = (4.0, 4.8, 5.7, 6.6, 8.6, 11.0)
 SLIDE_STEP = 1.5
 SLIDE = 9.0
 SLIDE_COST = 1.5
@@ -176,7 +181,7 @@ LABEL_GAP_MM = 1.2
 
 
 def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = LABEL_GAP_MM,
-                 standing: Sequence[Text] = (), off_lines: bool = False) -> Placement:
+                 standing: Sequence[Text] = (), off_lines: bool = False, reach_farther: bool = True) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 
     Another label or leader is never covered when any spot avoids it.  A
@@ -205,12 +210,25 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     stand as clear elsewhere.  One on a line even so, whose clear spots
     within reach a few neighbours hold (a crowd of names round a lever's
     pole, none of which can move alone), takes one and the neighbours are
-    placed again round it, when fewer of them all then lie on lines.  A
-    label keeps out of its anchor's ``keep_off`` wherever that costs less
-    than three lines covered.
+    placed again round it, when fewer of them all then lie on lines.  One
+    on a line after all that (every clear spot within reach held by
+    neighbours that cannot all stand clear elsewhere) reaches farther out
+    on its leader (``reach_farther``), as far as the rings tried for a
+    label that would cover another: on a line its letters are misread,
+    a leader across a few lines still leads to it.  A label keeps out of
+    its anchor's ``keep_off`` wherever that costs less than three lines
+    covered.
 
     ``standing`` are labels set already (the numbers round a crank's
     circle): the anchors' labels keep clear of them as of one another.
+
+    ``reach_farther`` False leaves a label on a line where the caller has a
+    way of its own for it: the plan of positions letters it beside its
+    point and breaks the thin lines under it, the lever names its arrow
+    under the drawing, and a group cut free keeps it beside its arrow
+    (far out among its arms and arcs a name reads as naming another
+    arrow, and the group, its μl chosen with its labels as placed, stood
+    larger on its sheet).
 
     ``off_lines`` keeps the labels off the drawn lines wherever any spot,
     farther out too, does, for a drawing of few lines with room round them
@@ -455,25 +473,25 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 return
             restore(state)
 
-    # The rings reached, numbered as the standard ones they fall between.
-    reach_rings = np.interp(REACH_SHARES, near_shares, np.arange(len(near_shares)))
+    # Every standard ring, near and far: those a label reaches to are numbered as the ones they fall between.
+    all_shares = (*near_shares, *FAR_SHARES)
 
-    reachable_on_drawing: dict[tuple[int, bool], tuple] = {}
+    reachable_on_drawing: dict[tuple[int, bool, tuple[float, ...]], tuple] = {}
 
-    def reachable(index: int, leading: bool = True):
+    def reachable(index: int, leading: bool = True, shares: tuple[float, ...] = REACH_SHARES):
         """The spots within reach of the label of ``index`` (:func:`reach_out`'s): their costs (as :class:`_Spots`),
         their boxes as shapes, which are led, and which may hold it as far as the drawing goes: the box covering
         nothing, and standing where the anchor lets it (none within its ``keep_off``, no leader where not
         ``leading``, no long name led from a spot that reaches back over its own point)."""
-        if (index, leading) not in reachable_on_drawing:
-            reachable_on_drawing[index, leading] = reachable_drawn(index, leading)
-        spot, shapes, is_led, usable = reachable_on_drawing[index, leading]
+        if (index, leading, shares) not in reachable_on_drawing:
+            reachable_on_drawing[index, leading, shares] = reachable_drawn(index, leading, shares)
+        spot, shapes, is_led, usable = reachable_on_drawing[index, leading, shares]
         crossings = LEADERS_CROSSING * crossing_placed(spot.leaders, leader_lines, index)
         cost = spot.cost.copy()
         cost[spot.led] += crossings
         return spot._replace(cost=cost), shapes, is_led, usable
 
-    def reachable_drawn(index: int, leading: bool):
+    def reachable_drawn(index: int, leading: bool, shares: tuple[float, ...]):
         """:func:`reachable` but for the leaders placed."""
         anchor = anchors[index]
         slid = _slide_points(anchor)
@@ -483,7 +501,9 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         beside_cost = (RING * np.tile(ring, len(slid)) + 0.01 * np.tile(turn, len(slid))
                        + SLIDE_COST * np.repeat(np.hypot(*(slid - anchor.at).T), len(offsets))
                        / (SLIDE_STEP * anchor.size))
-        led_ring, led_turn, led_boxes = _candidates(anchor, gap, REACH_SHARES, 2 * 16)
+        led_ring, led_turn, led_boxes = _candidates(anchor, gap, shares, 2 * 16)
+        # The rings reached, numbered as the standard ones they fall between.
+        reach_rings = np.interp(shares, all_shares, np.arange(len(all_shares)))
         candidates = np.concatenate((beside_boxes, led_boxes))
         points = np.concatenate((beside_points, np.tile(anchor.at, (len(led_boxes), 1))))
         is_led = np.arange(len(candidates)) >= len(beside_boxes)
@@ -517,14 +537,15 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
             if not (is_led[best] and runs_along(spot.leaders[best - spot.led[0]])):
                 yield int(best)
 
-    def reach_out(index: int, moving: bool = True, leading: bool = True) -> bool:
+    def reach_out(index: int, moving: bool = True, leading: bool = True,
+                  shares: tuple[float, ...] = REACH_SHARES) -> bool:
         """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
-        reach whose box covers nothing and whose leader crosses no label and runs along no line: beside another point
+        reach (its leader as long as the rings at ``shares`` letter heights) whose box covers nothing and whose leader crosses no label and runs along no line: beside another point
         of the line it names, or (``leading``) on a short leader from its point; else (``moving``) to such a spot one
         neighbouring label stands on, when that neighbour reaches such a spot too, beside its point if it stood there.
         Such a spot costs more than the line it leaves by the rules of :func:`costed`, which let a letter lie on one
         line sooner than lead it off across two.  Whether the label moved."""
-        spot, shapes, is_led, usable = reachable(index, leading)
+        spot, shapes, is_led, usable = reachable(index, leading, shares)
         # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
         open_ = usable & (crossing_placed(shapes, leader_lines, index) == 0)
         open_[spot.led] &= crossing_placed(spot.leaders, placed_boxes, index) == 0
@@ -622,6 +643,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         for index in order:
             if where[index][2] > 0 and paid[index] < OVERLAP:
                 make_room(index)
+        # Those on a line even so, every clear spot within reach held by neighbours that cannot all stand clear
+        # elsewhere, reach farther out on their leaders, where the caller gives them no other way.
+        if reach_farther:
+            for index in order:
+                if where[index][2] > 0 and paid[index] < OVERLAP:
+                    reach_out(index, shares=FARTHER_SHARES)
 
     order = _most_crowded_first(anchors, at)
     where: dict[int, tuple[str, int, float]] = {}

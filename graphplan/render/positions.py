@@ -175,7 +175,7 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
     number: set farther out on a leader it was read as naming something else.  Those labels are placed again
     without the thin lines, then the rest round them."""
     obstacles = obstacles_of(drawn + number_leaders) + pins
-    first = place_labels(anchors, obstacles, standing=numbers)
+    first = place_labels(anchors, obstacles, standing=numbers, reach_farther=False)
     lines = [shape for shape in obstacles_of(drawn + number_leaders + list(first.leaders))
              if shape.geom_type == "LineString"]
     tree = STRtree(lines)
