@@ -13,14 +13,13 @@ A label lies on a line as the bench counts it, by its own recorder: its box meet
 outline but a point's dot, a filled block's outline or another label's leader.
 """
 
-import importlib.util
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 import shapely
+from label_bench import label_clutter
 
 from graphplan.render import labels
 from graphplan.render.labels import Anchor, place_labels, text_box
@@ -34,16 +33,7 @@ LEADER_SLACK_MM = 0.35
 DOT_RADIUS = 1.5
 
 
-def bench():
-    """bench/label_clutter.py, loaded as the bench runs it."""
-    spec = importlib.util.spec_from_file_location("label_clutter", ROOT / "bench" / "label_clutter.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault(spec.name, module)
-    spec.loader.exec_module(module)
-    return module
-
-
-BENCH = bench()
+BENCH = label_clutter()
 
 
 @pytest.fixture(scope="module")

@@ -12,13 +12,12 @@ point's dot, or another label's leader.  The fixture's count of labels on lines 
 own recorder, must not rise above the count at the commit this work started from.
 """
 
-import importlib.util
 import re
-import sys
 from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from label_bench import label_clutter
 from shapely.geometry import LineString, Point, Polygon
 
 from graphplan.render import labels
@@ -37,19 +36,10 @@ NAMES = [("triad_class_iii", 8, "G6"), ("triad_class_iii", 8, "Mu6″"), ("triad
          ("stephenson_six_bar", 9, "Fu3"), ("triad_with_slider", 8, "Fu4")]
 
 
-def bench():
-    """bench/label_clutter.py, loaded as the bench runs it."""
-    spec = importlib.util.spec_from_file_location("label_clutter", ROOT / "bench" / "label_clutter.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault(spec.name, module)
-    spec.loader.exec_module(module)
-    return module
-
-
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
     """Each fixture run as the bench runs it (English, no sheets): its labels on lines counted, its folder."""
-    clutter = bench()
+    clutter = label_clutter()
     found = {}
     for fixture in ON_LINES_BEFORE:
         out = tmp_path_factory.mktemp("runs") / fixture
