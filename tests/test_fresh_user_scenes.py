@@ -288,27 +288,8 @@ def test_a_change_point_four_bar_started_at_the_extreme_is_told_why_it_stood_at_
 
 
 # The Whitworth with what its force analysis needs and one plan position, 3 (the crank at 150°).
-WHITWORTH_PLANNED = WHITWORTH.replace("start = 0.0", "start = 210.0\nplans = [3]") + """
-[points.S5]
-link = 5
-from = "R"
-toward = "S"
-at = 0.25
-[links.5]
-mass = 8.0
-centre = "S5"
-inertia = 0.17
-[links.6]
-mass = 30.0
-centre = "S"
-[[loads]]
-kind = "force"
-link = 6
-point = "S"
-angle = 0.0
-value = 2500.0
-resisting = true
-during = "working"
+WHITWORTH_PLANNED = WITH_MASSES.replace("[links.5]\n", "[links.5]\nmass = 8.0\n").replace(
+    "start = 0.0", "start = 210.0\nplans = [3]") + """
 [drawing]
 velocity_pole = 100.0
 acceleration_pole = 100.0
