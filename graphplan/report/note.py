@@ -316,8 +316,7 @@ class _Note:
                 intro = velocity_plans_intro(self.analysis, self.mark)
                 if not plans:
                     # No plan sheet, so no section on the plans' accuracy follows to say what δ and its columns are.
-                    intro += " " + self.t("note_errors_intro", formula=self.text["errors_formula"],
-                                          precision=self.n(self.analysis.scene.drawing.drafting_precision))
+                    intro += " " + self.errors_intro()
                 undefined = undefined_errors(self.analysis, self.analysis.velocity_plans)
                 self.para(intro + (f" {undefined}" if undefined else ""))
                 self.captioned(self.t("velocity_plans_heading"), velocity_plans_lines(self.analysis, self.mark))
@@ -1143,10 +1142,19 @@ class _Note:
         if slipped:
             self.para(*slipped)
 
+    def errors_intro(self) -> str:
+        """What δ and the error tables' columns are; the measured column only where a table has it, else the
+        reader looks for a column the intro names and finds none."""
+        intro = self.t("note_errors_intro", formula=self.text["errors_formula"],
+                       precision=self.n(self.analysis.scene.drawing.drafting_precision))
+        positions = (*self.analysis.plans, *self.analysis.velocity_plans)
+        if any(row.source == "measured" for position in positions for row in position.errors):
+            intro += " " + self.t("note_errors_measured")
+        return intro
+
     def errors(self, section: int) -> None:
-        precision = self.n(self.analysis.scene.drawing.drafting_precision)
         self.heading(2, self.t("note_errors"), section)
-        intro = self.t("note_errors_intro", formula=self.text["errors_formula"], precision=precision)
+        intro = self.errors_intro()
         undefined = undefined_errors(self.analysis, self.analysis.plans)
         intro += f" {undefined}" if undefined else ""
         self.para(f"{intro} {reactions_intro(self.analysis, in_note=True)}" if has_reactions(self.analysis) else intro)
