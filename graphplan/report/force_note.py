@@ -215,11 +215,15 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
         note.para(note.t("note_moment_equations"), *lines)
     polygon = group.polygon
     scale = group.scale
+    # Two unknowns of known lines are found where those lines cross; a single unknown, the polygon's last side,
+    # closes it from its end back to its start, with no line of action drawn for it.
+    crossed = {line.label for line in polygon.lines}
     rows = []
     for vector in polygon.vectors:
         force = vector.force
+        role = "closes" if vector.role == "closing" and vector.name not in crossed else vector.role
         rows.append([vector.name, force_report.polar(force, note.mark), note.mm(abs(force) / scale),
-                     note.text[f"note_role_{vector.role}"]])
+                     note.text[f"note_role_{role}"]])
     note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale), unit=text["unit_force_scale"]))
     header = [note.t("column_force"), f"{note.t('column_value')}{text['comma']}{text['newton']} ∠",
               f"{note.t('column_length')}{text['comma']}{text['millimetre']}", note.t("column_role")]
