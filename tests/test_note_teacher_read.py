@@ -399,11 +399,11 @@ def test_structure_and_time_ratio(read):
 def test_error_tables_delta_and_drafting_to_the_precision(read):
     scene, lines, _ = read
     precision = scene.drawing.drafting_precision
+    mu = scales(lines)
     lengths = {}
-    for position, plan, line in sections(lines):
-        if match := re.match(rf"\| (\S+) \| (\S+) \| ({NUMBER}) \| ({NUMBER}) \| ({NUMBER}) \| \S+ \|$", line):
-            lengths[(position, match.group(1))] = (match.group(3), value(match.group(4)) / value(match.group(3))
-                                                   if value(match.group(3)) else None)
+    for position, _, line in sections(lines):
+        if match := re.match(rf"\| ([Va]\S*) \| (\S+) \| ({NUMBER}) \| ({NUMBER}) \| ({NUMBER}) \| \S+ \|$", line):
+            lengths[(position, match.group(1))] = match.group(3)
     checked = 0
     current = None
     for line in lines:
@@ -420,7 +420,8 @@ def test_error_tables_delta_and_drafting_to_the_precision(read):
         rounding = 100 * (places(exact) + places(drafted)) / abs(value(exact)) + places(delta_drafted)
         assert abs((value(exact) - value(drafted)) / value(exact) * 100 - value(delta_drafted)) <= rounding, line
         if name[0] in "Va" and (current, name) in lengths:
-            length, per_mm = lengths[(current, name)]
+            length = lengths[(current, name)]
+            per_mm = mu[(current, "velocity" if name[0] == "V" else "acceleration")]
             rounded = {round(value(length) / precision) * precision,
                        round((value(length) + 0.006) / precision) * precision,
                        round((value(length) - 0.006) / precision) * precision}
