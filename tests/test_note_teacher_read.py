@@ -450,3 +450,15 @@ def test_coriolis_row_names_the_acceleration_as_the_textbooks_do(read):
     for row in rows:
         direction = row.strip("|").split("|")[3].strip()
         assert direction.startswith(("Coriolis", "ускорение Кориолиса")), row
+
+
+def test_the_strokes_paragraph_names_the_output_link_one_way(read):
+    """The paragraph on the strokes and K calls link 6 one thing throughout, as the section on the kinematic
+    diagrams does ("output link"), not "working link" in one sentence and "output link" in the next."""
+    scene, lines, _ = read
+    paragraph = next(line for line in lines if "K = φ" in line)
+    kinematic_diagrams = strings(scene.locale)["kd_title"].format(link="", point="").split()
+    if scene.locale == "en":
+        assert "working link" not in paragraph and "output link" in " ".join(kinematic_diagrams)
+    else:
+        assert "Выходное звено" in paragraph
