@@ -16,13 +16,17 @@ and puts what they hold on paper; it computes no mechanics.  Every word, symbol 
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+import shapely
 from shapely.geometry import box
+from shapely.geometry.base import BaseGeometry
 
 from ..locale import strings
 from ..scales import fit_scale, format_scale
@@ -102,6 +106,12 @@ POSITION_NUMBER = 2.5
 # tangent's ψ and the Je axis with its name (mm).
 DESCENT = 0.3
 AXIS_WORDS_GAP_MM = 0.6
+# A letter's width (mm): the least gap between two numbers of one axis, and how far a label keeps off an axis's
+# numbers.  Nearer, two numbers ran together into one ("0.05 0.075" read as one figure), and a label read as one of
+# the numbers (ωmin at φ = 0, hung left of the ΔT axis beside its "0", as the axis's numbering).
+NUMBER_GAP_MM = text_width("0", LABEL)
+# What an axis's numbers are written as: short()'s figures, a true minus, the locale's decimal mark.
+_NUMERAL = re.compile(r"[−-]?\d+(?:[.,]\d+)?")
 
 @dataclass(frozen=True)
 class Scales:
@@ -347,8 +357,22 @@ def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales,
         items.append(dot_marker((x, y), 0.6, _SPEED_EXTREME.colour))
         # Named on the side of the axis away from the curve there, where its ordinate does not run.
         anchors.append(Anchor((x, 0.0), name, LABEL, -math.pi / 3 if y > 0 else math.pi / 3, _SPEED_EXTREME.colour))
-    placed = place_labels(anchors, obstacles_of([*drawn, *items]))
+    placed = place_labels(anchors, obstacles_of([*drawn, *items]) + _numbering(drawn))
     return items + list(placed.leaders) + list(placed.texts)
+
+
+def _numbering(drawn: Sequence[Primitive]) -> list[BaseGeometry]:
+    """The bands an axis's numbers stand in, each a letter's width wider every way: an ordinate's column of numbers
+    (right-aligned at one x) from the lowest to the highest, an abscissa's row (at one baseline) from the first to the
+    last.  A label anywhere in such a band, between two numbers too, reads as one of them."""
+    bands: dict[tuple[str, float], list[tuple[float, float, float, float]]] = {}
+    for item in drawn:
+        if isinstance(item, Text) and _NUMERAL.fullmatch(item.text) is not None:
+            key = ("column", item.at[0]) if item.anchor == "end" else ("row", item.at[1])
+            bands.setdefault(key, []).append(text_extent(item))
+    return [shapely.box(min(b[0] for b in extents) - NUMBER_GAP_MM, min(b[1] for b in extents) - NUMBER_GAP_MM,
+                        max(b[2] for b in extents) + NUMBER_GAP_MM, max(b[3] for b in extents) + NUMBER_GAP_MM)
+            for extents in bands.values()]
 
 
 def ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str,
@@ -440,7 +464,8 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     beside_the_lines = obstacles_of([item for item in items if item is not curve_line
                                      and not any(item is line for line in tangents)])
     near = LABEL + TICK_MM + 2.0
-    ticks = _inertia_ticks(model, scales)
+    every_tick = _inertia_ticks(model, scales)
+    ticks = [(value, at) for value, at, numbered in every_tick if numbered]
     sides = []
     for letter_y, crowd in ((TICK_MM + 1.0, (ys > 0) & (ys < near)), (-TICK_MM - 1.0 - LABEL, (ys < 0) & (ys > -near))):
         struck = sum(any(_ink(Text((at, letter_y), short(value), LABEL, "middle")).intersects(shape)
@@ -456,10 +481,11 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     for k, (value, at) in enumerate(ticks):
         spots = [(at, letter_y, "middle"), (at, other_y, "middle"), (at - 0.5, letter_y, "end"),
                  (at + 0.5, letter_y, "start"), (at - 0.5, other_y, "end"), (at + 0.5, other_y, "start")]
-        # Clear of the lines, of the numbers set already and of the next one's usual spot.
-        others = [_ink(number) for number in numbers]
+        # Clear of the lines, and a letter's width clear of the numbers set already and of the next one's usual spot.
+        others = [_ink(number).buffer(NUMBER_GAP_MM, join_style="mitre") for number in numbers]
         if k + 1 < len(ticks):
-            others.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), LABEL, "middle")))
+            others.append(_ink(Text((ticks[k + 1][1], letter_y), short(ticks[k + 1][0]), LABEL, "middle"))
+                          .buffer(NUMBER_GAP_MM, join_style="mitre"))
         candidates = [Text((x, y), short(value), LABEL, anchor) for x, y, anchor in spots]
         number = None
         for shapes, breaking in ((drawn, None), (beside_the_tangents, over_tangents), (beside_the_lines, over_lines)):
@@ -475,9 +501,8 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
         numbers.append(number)
     items = broken_under(items, over_tangents + over_lines, tangents)
     items = broken_under(items, over_lines, [item for item in items if item is curve_line])
-    for (_, at), number in zip(ticks, numbers):
-        items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        items.append(number)
+    items += [Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN) for _, at, _ in every_tick]
+    items += numbers
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
@@ -537,9 +562,10 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
         items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), label, LABEL, "end"))
     items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
-    for value, at in _inertia_ticks(model, scales):
+    for value, at, numbered in _inertia_ticks(model, scales):
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        items.append(Text((at, TICK_MM + 1.0), short(value), LABEL, "middle"))
+        if numbered:
+            items.append(Text((at, TICK_MM + 1.0), short(value), LABEL, "middle"))
     items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     # Headed above its Je axis's lettering, as the other diagrams are above theirs.
     scale_y = TICK_MM + 1.0 + LABEL + 2.5
@@ -570,11 +596,19 @@ def _ink(number: Text):
     return box(x0, number.at[1], x1, number.at[1] + number.size)
 
 
-def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float]]:
-    """(Je, its abscissa in mm) of the ticks of Je: round steps, about four to the largest Je."""
+def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, float, bool]]:
+    """(Je, its abscissa in mm, whether it is numbered) of the ticks of Je: round steps, about four to the largest
+    Je; every one numbered where the numbers stand a letter's width apart (:data:`NUMBER_GAP_MM`) at that step,
+    else every second (third, ...) one, at the multiples of that many steps, as the kinematic diagrams number their
+    positions: 0.05 and 0.075 twelve millimetres apart at μJ = 0.002 ran together."""
     largest = float(np.max(model.inertia))
     step = nice_step(largest / 4)
-    return [(float(value), float(value) / scales.inertia) for value in np.arange(step, largest + step * 1e-9, step)]
+    values = [float(value) for value in np.arange(step, largest + step * 1e-9, step)]
+    halves = [text_width(short(value), LABEL) / 2 for value in values]
+    # Two neighbours' numbers, each centred on its tick, need half of each one's width and the gap between the ticks.
+    needed = max((sum(pair) + NUMBER_GAP_MM for pair in itertools.pairwise(halves)), default=0.0)
+    every = max(1, math.ceil(needed / (step / scales.inertia) - 1e-9))
+    return [(value, value / scales.inertia, round(value / step) % every == 0) for value in values]
 
 
 def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:
