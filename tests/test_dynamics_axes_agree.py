@@ -111,7 +111,10 @@ def test_the_phi_axes_and_the_je_axes_are_numbered_alike(dynamics_svg):
     assert _step(_ordinate(groups["inertia"]))[0] == _step(across[0])[0]
     je = [_je_numbers(groups[name]) for name in ("energy-mass", "inertia")]
     assert [value for value, _ in je[0]] == [value for value, _ in je[1]]
-    assert _step(je[0]) == _step(je[1]), je
+    # An axis numbered at every other tick (the compressor's, whose numbers would stand closer than a letter) may
+    # have one number alone, and no step to compare.
+    if len(je[0]) >= 3:
+        assert _step(je[0]) == _step(je[1]), je
 
 
 def _je_numbers(group: ElementTree.Element) -> list[tuple[float, float]]:
@@ -162,8 +165,12 @@ def test_every_je_tick_of_the_energy_mass_diagram_has_its_number_clear_of_the_li
     numbers = [t for t in group.iter(f"{SVG}text") if NUMBER.fullmatch(_words(t)) and _value(_words(t)) > 0
                and t.get("font-size") == name_size and abs(float(t.get("y")) - axis_y) < 8]
     written = sorted(_value(_words(t)) for t in numbers)
-    assert written == pytest.approx([round((x - axis_x) * scale, 9) for x in ticks]), (written, ticks)
-    assert len(written) >= 3
+    values = [round((x - axis_x) * scale, 9) for x in ticks]
+    assert len(values) >= 3
+    # Every tick numbered, or (numbers closer than a letter) every other one, at the multiples of the numbers' step
+    # from the origin: none of those left out, and none between them.
+    every = round(written[0] / values[0])
+    assert written == pytest.approx([value for k, value in enumerate(values, 1) if k % every == 0]), (written, ticks)
     struck = [_words(t) for t in numbers for line in lines if line is not axis and _ink(t).intersects(line)
               and line.length > 3]
     assert not struck, struck
