@@ -469,7 +469,9 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
                                  "over which [dynamics] gives the equivalent model only: leave it out")
     delta = table.number("delta", None, positive=True)
     if delta is not None and not delta < 2:
-        raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta)
+        # δ = 5 for 5 % is the slip a student makes; delta_warning tells it below 2, this refusal must as well.
+        raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta,
+                         hint=f"; a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
     omega = table.speed(None, positive=True)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     if shaft is not None and delta is None:

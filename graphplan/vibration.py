@@ -796,8 +796,11 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
     wanted = table.number("transmissibility", None, positive=True)
     base = table.number("base_amplitude", None, positive=True)
     if wanted is not None and not wanted < 1:
+        # "Isolate to 10 %" typed as 10: a TR up to 100 may be a percentage, and is told so.
+        percentage = (f"; a percentage typed for a fraction? ({wanted:g} % is TR = {wanted / 100:g})"
+                      if wanted < 100 else "")
         raise SceneError(table.where("transmissibility"), "must be below 1: a mount isolates only where TR < 1",
-                         wanted)
+                         wanted, hint=percentage)
     table.done()
     if zeta == 0 and at_resonance(omega, stiffness, mass):
         if not given:
