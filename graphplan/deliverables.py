@@ -70,6 +70,9 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str 
         return None if scene.vibration is not None else "needs a [vibration] table"
     if piece == "dynamics" and scene.dynamics is not None and scene.dynamics.diagrams:
         return None  # a load diagram needs no mechanism
+    if piece == "dynamics" and scene.dynamics is None:
+        # Asked first: a rotor's scene told it "needs a mechanism" where a load diagram alone would do.
+        return "needs a [dynamics] table"
     if piece == "note" and analysis is None and (
             scene.balancing is not None or scene.vibration is not None or missing(scene, None, "dynamics") is None):
         return None  # the note on the machine's flywheel, rotor or vibration alone
@@ -80,8 +83,6 @@ def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str 
         return _NO_LINKAGE
     if piece == "sheets" and scene.drawing.sheet == "none":
         return f'needs a sheet format: {sheet_key} is "none"'
-    if piece == "dynamics" and scene.dynamics is None:
-        return "needs a [dynamics] table"
     from . import kinematic_diagrams, load_diagrams
 
     if piece == "diagrams" and (reason := kinematic_diagrams.unavailable(scene, analysis)) is not None:
