@@ -700,6 +700,36 @@ def on_axis(spec: BalancingSpec) -> OnAxis | None:
     return OnAxis() if all(mass.radius == 0 for mass in spec.masses) else None
 
 
+@dataclass(frozen=True)
+class AnglesInRadians:
+    """Every mass's angle lies within a turn's radians, |θ| ≤ 2π, and one at least is no whole degree: ``angles``
+    typed in radians (π/2 for 90°), which the scene reads as degrees and which then put every mass within some 6° of
+    the line they are counted from."""
+
+    angles: tuple[float, ...]
+    code = "angles-in-radians"
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        given = ", ".join(f"{angle:g}" for angle in self.angles)
+        meant = ", ".join(f"{math.degrees(angle):.4g}" for angle in self.angles)
+        return (f"every mass's angle lies within 2π = 6.283 ({given}), and not all are whole degrees: radians? The "
+                f"scene's angles are in degrees: as radians these are {meant}° (multiply them by 180/π)")
+
+
+def angles_in_radians(spec: BalancingSpec) -> AnglesInRadians | None:
+    """:class:`AnglesInRadians` where two masses or more all turn within 2π of the line their angles are counted
+    from and one is no whole degree; else None.  A rotor's masses drawn a degree or two apart, at fractions of a
+    degree, are no textbook's and no balancing machine's."""
+    angles = tuple(mass.angle_deg for mass in spec.masses)
+    if len(angles) < 2 or not all(abs(angle) <= 2 * math.pi for angle in angles):
+        return None
+    if all(angle == round(angle) for angle in angles):
+        return None
+    return AnglesInRadians(angles)
+
+
 def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     """The rotor's lengths that no machine has as metres, each with its key (``balancing.masses[0].radius``), as
     lengths typed in millimetres make them; None where they are plausible.  A radius over
@@ -734,11 +764,13 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     return LengthsInMillimetres(tuple(found)) if found else None
 
 
-def cautions(result: BalancingResult) -> list[CoupleLeft | LengthsInMillimetres | OnAxis | PlanesClose]:
-    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres,
-    masses all on the axis, corrections dwarfing the masses, the couple of one plane."""
+def cautions(result: BalancingResult) -> list[AnglesInRadians | CoupleLeft | LengthsInMillimetres | OnAxis
+                                              | PlanesClose]:
+    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres, angles
+    that look typed in radians, masses all on the axis, corrections dwarfing the masses, the couple of one plane."""
     couple = static_couple(result)
-    return [found for found in (lengths_in_millimetres(result.spec), on_axis(result.spec), planes_close(result),
+    return [found for found in (lengths_in_millimetres(result.spec), angles_in_radians(result.spec),
+                                on_axis(result.spec), planes_close(result),
                                 None if couple is None else CoupleLeft(couple)) if found is not None]
 
 
@@ -746,6 +778,6 @@ def _above_noise(value: float, scale: float) -> float:
     return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
-__all__ = ["LARGE_CORRECTIONS", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "OnAxis", "PlanesClose",
-           "PolygonVector", "RotatingMass", "balance", "balancing_results", "cautions", "direction_deg", "label_clash",
+__all__ = ["LARGE_CORRECTIONS", "AnglesInRadians", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "OnAxis", "PlanesClose",
+           "PolygonVector", "RotatingMass", "angles_in_radians", "balance", "balancing_results", "cautions", "direction_deg", "label_clash",
            "lengths_in_millimetres", "on_axis", "planes_close", "read_balancing", "static_couple", "vector_name"]

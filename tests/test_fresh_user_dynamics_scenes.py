@@ -242,3 +242,34 @@ def test_dynamics_asked_of_a_rotor_names_the_table_it_lacks_not_a_mechanism(tmp_
     assert "--only[0]: 'dynamics' needs a [dynamics] table" in err
     assert "mechanism" not in err
     assert not (tmp_path / "out").exists()
+
+
+RADIANS = """\
+[balancing]
+masses = [ { mass = 2.0, radius = 0.10, angle = 0.0 }, { mass = 3.0, radius = 0.08, angle = 1.5708 },
+           { mass = 1.5, radius = 0.12, angle = 3.665 } ]
+correction_radius = 0.15
+"""
+
+
+def test_angles_typed_in_radians_are_warned_of_on_the_console_in_the_results_and_in_the_note(tmp_path, capsys):
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(RADIANS, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "balancing,note", "--locale", "ru"]) == 0
+    printed = capsys.readouterr().out
+    assert "warning: balancing: every mass's angle lies within 2π" in printed
+    assert "as radians these are 0, 90, 210°" in printed
+    (warning,) = json.loads((out / "results.json").read_text(encoding="utf-8"))["balancing"]["warnings"]
+    assert warning["code"] == "angles-in-radians"
+    note = (out / "note.md").read_text(encoding="utf-8")
+    # The Russian note's decimal commas must not run into the list's separators.
+    assert "в радианах они были бы 0; 90; 210°" in note
+    assert "(0; 1,5708; 3,665)" in note
+
+
+@pytest.mark.parametrize("angles", [(0.0, 90.0, 210.0), (0.0, 1.0, 5.0), (0.0, 7.5, 3.5)])
+def test_angles_in_degrees_are_not_taken_for_radians(tmp_path, angles):
+    rows = ", ".join(f"{{ mass = 2.0, radius = 0.1, angle = {angle} }}" for angle in angles)
+    found = results(tmp_path, f"[balancing]\nmasses = [ {rows} ]\n")["balancing"]
+    assert found["warnings"] == []

@@ -408,8 +408,8 @@ def _run_down(note: Writer, dynamics) -> None:
 
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:
     """The rotor's masses, their products carried to the correction planes, each plane's polygon closed."""
+    from ..rotor_balancing import angles_in_radians, on_axis, planes_close, static_couple
     from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
-    from ..rotor_balancing import on_axis, planes_close, static_couple
 
     spec = result.spec
     note.heading(2, note.t("note_balancing"), section)
@@ -422,6 +422,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
     note.para(note.t("note_bal_angles"))
     if (lengths := rotor_lengths(spec)) is not None:
         _lengths_caution(note, lengths)
+    if (radians := angles_in_radians(spec)) is not None:
+        # Set apart by semicolons: a Russian note's decimal comma would run "0, 1,5708" together.
+        note.para(note.t("note_bal_caution_radians", angles="; ".join(note.n(angle) for angle in radians.angles),
+                         degrees="; ".join(note.n(math.degrees(angle), 4) for angle in radians.angles)))
     if on_axis(spec) is not None:
         note.para(note.t("note_bal_caution_on_axis"))
     planes = result.planes
