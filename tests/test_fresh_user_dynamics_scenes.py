@@ -273,3 +273,18 @@ def test_angles_in_degrees_are_not_taken_for_radians(tmp_path, angles):
     rows = ", ".join(f"{{ mass = 2.0, radius = 0.1, angle = {angle} }}" for angle in angles)
     found = results(tmp_path, f"[balancing]\nmasses = [ {rows} ]\n")["balancing"]
     assert found["warnings"] == []
+
+
+def test_rated_slip_in_percent_is_refused_as_a_percentage(tmp_path, capsys):
+    err = refusal(tmp_path, capsys, MACHINE + 'motor = { kind = "kloss", power = 4000.0, overload = 2.2, '
+                  'synchronous_rpm = 1500, rated_slip = 4, gear_ratio = 14.4 }\n')
+    assert "dynamics.motor.rated_slip: must be between 0 and 1 (got 4.0)" in err
+    assert "4 % is rated_slip = 0.04" in err
+
+
+@pytest.mark.parametrize("key", ["brake = { torque = 300.0 }", "clutch = { torque = 500.0, inertia = 1.0 }"])
+def test_a_brake_or_a_clutch_without_a_motor_is_told_what_asks_for_the_motor(tmp_path, capsys, key):
+    err = refusal(tmp_path, capsys, MACHINE + key + "\n")
+    asking = key.split(" ")[0]
+    assert f"dynamics.motor: is required with dynamics.{asking}" in err
+    assert "off_at" in err

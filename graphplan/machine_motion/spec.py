@@ -137,7 +137,10 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         rated = table.number("rated_rpm", None, positive=True)
         slip = table.number("rated_slip", None)
         if slip is not None and not 0 < slip < 1:
-            raise SceneError(table.where("rated_slip"), "must be between 0 and 1", slip)
+            # A catalogue's "sN = 4 %" typed as 4, as δ and ζ are told.
+            percentage = (f"; a percentage typed for a fraction? ({slip:g} % is rated_slip = {slip / 100:g})"
+                          if 1 <= slip < 100 else "")
+            raise SceneError(table.where("rated_slip"), "must be between 0 and 1", slip, hint=percentage)
         if slip is None:
             if not rated < synchronous:
                 raise SceneError(table.where("rated_rpm"), f"must be below synchronous_rpm ({synchronous!r})", rated)
@@ -198,6 +201,13 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     owned = isinstance(table_or_dict, Table)
     table = table_or_dict if owned else Table(dict(table_or_dict) if isinstance(table_or_dict, Mapping)
                                               else table_or_dict, path)
+    if not table.has("motor"):
+        # A brake or a clutch alone was told only that the motor is missing, not what asked for it.
+        asking = next((key for key in ("brake", "clutch", "start", "duration") if table.has(key)), None)
+        if asking is not None:
+            raise SceneError(table.where("motor"), f"is required with {table.where(asking)}: the equation of motion "
+                             "is run with a motor (a run-down to rest: a motor with off_at, the time it is switched "
+                             "off)")
     motor_table = table.table("motor")
     motor, off_at = _read_motor(motor_table)
     brake_table = table.table("brake", None)
