@@ -609,8 +609,15 @@ class MachineDynamics:
             unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
                        f"{motion.torque_at_rest:.4g} N·m, does not overcome the resistance there")
             if stall is Stall.NEVER_STARTS:
+                power = getattr(self.spec.motion.motor, "power", None)
+                # Kloss' torque grows with P: a motor a thousand times as strong that would start it is one whose
+                # power was typed in kW ("4 kW" as power = 4), the likelier slip than a 4 W motor on a press.
+                in_kilowatts = (f"; power = {power:g} W: kilowatts typed for watts? (the scene's power is in W, "
+                                f"{power:g} kW is power = {power * 1000:g})"
+                                if power is not None and power < 1000 and 1000 * motion.torque_at_rest > resisting
+                                else "")
                 return (f"{unmoved}, {resisting:.4g} N·m (a stronger motor, a larger gear ratio, or a start from "
-                        "another angle)")
+                        f"another angle){in_kilowatts}")
             held = motion.brake.torque
             return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting:.4g} + "
                     f"{held:g} = {resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the "

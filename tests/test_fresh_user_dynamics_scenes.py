@@ -288,3 +288,25 @@ def test_a_brake_or_a_clutch_without_a_motor_is_told_what_asks_for_the_motor(tmp
     asking = key.split(" ")[0]
     assert f"dynamics.motor: is required with dynamics.{asking}" in err
     assert "off_at" in err
+
+
+def test_a_kloss_motor_whose_power_was_typed_in_kilowatts_is_told_so(tmp_path, capsys):
+    text = MACHINE + KLOSS.replace("power = 4000.0", "power = 4.0") % ""
+    assert main(["check", str(_written(tmp_path, text))]) == 0
+    printed = capsys.readouterr().out
+    assert "the machine does not start" in printed
+    assert "power = 4 W: kilowatts typed for watts? (the scene's power is in W, 4 kW is power = 4000)" in printed
+
+
+def test_a_motor_truly_too_weak_is_not_told_of_kilowatts(tmp_path, capsys):
+    text = MACHINE.replace("[[0, 200], [360, 200]]", "[[0, 2000], [360, 2000]]") + KLOSS % ""
+    assert main(["check", str(_written(tmp_path, text))]) == 0
+    printed = capsys.readouterr().out
+    assert "the machine does not start" in printed
+    assert "kilowatts" not in printed
+
+
+def _written(tmp_path: Path, text: str) -> Path:
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    return scene
