@@ -14,6 +14,7 @@ from xml.etree import ElementTree
 
 import numpy as np
 import pytest
+from drawn_lines import whole_lines
 from shapely.geometry import LineString, box
 
 from graphplan.cli import main
@@ -73,20 +74,7 @@ def _tangents(group: ElementTree.Element) -> list[LineString]:
             if len(points) == 2:
                 lines.append(LineString(points))
     # A tangent broken under a Je number it crosses is drawn in pieces on one line: taken whole again.
-    whole: list[LineString] = []
-    for line in lines:
-        k = next((k for k, other in enumerate(whole) if _collinear(other, line)), None)
-        if k is None:
-            whole.append(line)
-        else:
-            ends = sorted([*whole[k].coords, *line.coords])
-            whole[k] = LineString([ends[0], ends[-1]])
-    return whole
-
-
-def _collinear(one: LineString, other: LineString) -> bool:
-    (x0, y0), (x1, y1) = one.coords
-    return all(abs((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)) < 1e-3 * one.length for x, y in other.coords)
+    return whole_lines(lines)
 
 
 @pytest.mark.parametrize("locale", ["en", "zh"])
