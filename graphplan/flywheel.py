@@ -499,8 +499,9 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
         raise SceneError(table.where("constant"), 'is for a linkage\'s reduced moments; with a load diagram the side '
                          'not given is constant (write driving = "constant" or resisting = "constant")')
     if spec.omega is None:
-        raise SceneError(table.path, "needs rpm or omega: the mean speed of the shaft the load diagram is drawn "
-                         "over (there is no driver to take it from)")
+        table.misspelt("omega", "rpm")
+        raise SceneError(table.where("omega"), "is required but missing: give omega (rad/s) or rpm (rev/min), the "
+                         "mean speed of the shaft the load diagram is drawn over (there is no driver to take it from)")
     diagrams: dict[str, LoadDiagram] = {}
     for key in DIAGRAM_KEYS:
         if table.has(key):

@@ -238,6 +238,77 @@ def _swapped(typed: str, key: str) -> bool:
         typed == key[:at] + key[at + 1] + key[at] + key[at + 2:] for at in range(len(key) - 1))
 
 
+# What each required key is for, by its key path (``[]`` for any index, ``*`` for any one name): "is required but
+# missing" alone left a student who had not met the key guessing what to write.
+_GUIDE = "the line the slider moves along: a frame line's name, or { through = [x, y], angle = degrees }"
+_THROUGH = "a point the line runs through: [x, y], or a point's name"
+_SENSE = "ccw or cw for a turning link, forward or backward (along its guide) for a sliding one: its motion in the stroke"
+REQUIRED_PURPOSES = {
+    "frame": "the fixed link's table: link = 1 and its points, points = { O = [x, y], … }",
+    "driver": "the input link's table: kind = \"crank\" or \"slider\", its link, joint and speed",
+    "driver.kind": "crank (the input link turns about a frame point) or slider (it moves along a guide)",
+    "driver.link": "the number of the input link, as on the kinematic scheme",
+    "driver.pivot": "the frame point the crank turns about",
+    "driver.joint": "the joint the input link moves, at its end, where the first group joins on",
+    "driver.length": "the crank's length from pivot to joint, m",
+    "driver.guide": _GUIDE,
+    "driver.velocity": "the slider's velocity along its guide, m/s",
+    "driver.travel": "[s0, s1], the stroke the positions run over, m along the guide from its through point",
+    "driver.guide.through": _THROUGH,
+    "groups[].guide.through": _THROUGH,
+    "groups[].guides[].through": _THROUGH,
+    "frame.lines.*.through": _THROUGH,
+    "groups[].kind": "the group's kind: RRR, RRP, RPR, PRP, RPP or triad",
+    "groups[].links": "the numbers of the group's links, as on the kinematic scheme",
+    "groups[].joints": "the names of the group's joints, its outer ones known from the driver or a group before it",
+    "groups[].lengths": "the lengths of the group's links between its joints, m, in the order its kind lists them",
+    "groups[].length": "lAB, the length of link a from its outer joint A to the slider's joint B, m",
+    "groups[].guide": _GUIDE,
+    "groups[].guides": "[g1, g2], the lines the two sliders move along",
+    "groups[].sides": "[BD, DF, FB], the ternary link's sides, m",
+    "groups[].near": "where each inner joint lies in a sketch, { B = [x, y], D = [x, y], F = [x, y] }, which chooses "
+                     "among up to six assemblies",
+    "points.*.link": "the number of the link the point is fixed on",
+    "points.*.from": "the point it is placed from, at metres along from→toward",
+    "points.*.toward": "the point that gives, from `from`, the direction the point is placed along",
+    "points.*.at": "how far the point lies from `from` toward `toward`, m",
+    "loads[].kind": "moment (a couple on its link) or force (at a point of its link)",
+    "loads[].link": "the number of the link the load acts on",
+    "loads[].value": "the load's size, N·m for a moment, N for a force (or a diagram in its place)",
+    "loads[].during.from": "the share of the working stroke (0 to 1) where the load begins to act",
+    "loads[].during.to": "the share of the working stroke (0 to 1) where the load stops acting",
+    "loads[].stroke.link": "the number of the link whose motion makes the load's stroke",
+    "loads[].stroke.sense": _SENSE,
+    "positions.working.link": "the number of the link whose motion makes the working stroke",
+    "positions.working.sense": _SENSE,
+    "friction[].joint": "the joint whose pair the friction acts in",
+    "balancing.masses": "the rotor's masses, a list of { mass, radius, angle }",
+    "balancing.masses[].mass": "the mass, kg",
+    "balancing.masses[].radius": "its distance from the axis, m",
+    "balancing.masses[].angle": "its direction about the axis, degrees",
+    "dynamics.motor": "the motor's table: kind and its characteristic",
+    "dynamics.motor.kind": "the motor's characteristic: constant, linear or kloss",
+    "dynamics.motor.torque": "the motor's torque, N·m",
+    "dynamics.motor.stall_torque": "the linear characteristic's torque at rest, N·m",
+    "dynamics.motor.no_load_rpm": "the linear characteristic's speed where its torque is 0, rev/min",
+    "dynamics.motor.power": "the motor's rated power, W",
+    "dynamics.motor.overload": "the ratio Mmax/Mrated of the motor's torques (above 1)",
+    "dynamics.clutch.torque": "the torque the clutch passes at most, N·m",
+    "vibration.mass": "the machine's mass on its mounts, kg",
+    "vibration.shaft.modulus": "the shaft's Young's modulus, Pa",
+    "vibration.shaft.length": "the shaft's length between its bearings, m",
+}
+
+
+def required_purpose(where: str) -> str:
+    """": what the key is for" of the required key at ``where``, or "" where none is written down."""
+    shape = re.sub(r"\[\d+\]", "[]", where)
+    for pattern, purpose in REQUIRED_PURPOSES.items():
+        if re.fullmatch(re.escape(pattern).replace(r"\*", r"[^.]+"), shape):
+            return f": {purpose}"
+    return ""
+
+
 class Table:
     """A TOML table being read: each key is taken once, the rest are unknown.
 
@@ -269,7 +340,7 @@ class Table:
             return self.data[key]
         if default is _REQUIRED:
             self.misspelt(key)
-            raise SceneError(self.where(key), "is required but missing")
+            raise SceneError(self.where(key), f"is required but missing{required_purpose(self.where(key))}")
         return default
 
     def misspelt(self, *keys: str) -> None:

@@ -954,8 +954,12 @@ def _read_load(where: str, item: object) -> LoadSpec:
                          "diagram, or leave stroke out")
     point = table.string("point", None)
     angle = table.number("angle", None)
-    if kind == "force" and (point is None or angle is None):
-        raise SceneError(where, "a force needs point (where it acts) and angle (its direction, degrees)")
+    if kind == "force":
+        # Each missing key told at its own path: at loads[0] the student was left to find which of the two it was.
+        table.misspelt(*(key for key in ("point", "angle") if not table.has(key)))
+        for key, purpose in (("point", _FORCE_POINT), ("angle", _FORCE_ANGLE)):
+            if not table.has(key):
+                raise SceneError(table.where(key), f"is required but missing: a force needs {purpose}")
     if kind == "moment":
         # A couple acts alike wherever on its link it is put: a point or a direction would say otherwise.
         for key in ("point", "angle"):
@@ -964,6 +968,10 @@ def _read_load(where: str, item: object) -> LoadSpec:
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
                     point=point, angle_deg=angle, diagram=diagram, stroke=stroke)
+
+
+_FORCE_POINT = "point, where it acts: a point fixed on its link (a joint or one of [points])"
+_FORCE_ANGLE = "angle, its direction in degrees from +x (counter-clockwise)"
 
 
 def _read_working(table: Table) -> Working:
@@ -1051,7 +1059,10 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
     working_table = table.table("working", None)
     working = _read_working(working_table) if working_table is not None else None
     if start == "extreme" and working is None:
-        raise SceneError(table.where("start"), "\"extreme\" needs working = { link, sense } to know which extreme")
+        # Told at the key that is missing, with the one that asks for it.
+        table.misspelt("working")
+        raise SceneError(table.where("working"), 'is required by start = "extreme": working = { link, sense } names '
+                         "the motion whose extreme the positions start at (or give start a crank angle in degrees)")
     plans = _position_numbers(table, "plans", number_from, count, once_each=True)
     every = table.raw("velocity_plans", None)
     if isinstance(every, str):

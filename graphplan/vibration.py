@@ -818,13 +818,13 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
                          driver_speed=not given)
 
 
-def _one_of(table: Table, first: str, second: str) -> str:
+def _one_of(table: Table, first: str, second: str, purpose: str) -> str:
     """Which of two alternative keys the table gives; exactly one of them must be there."""
     if table.has(first) and table.has(second):
         raise SceneError(table.where(second), f"give either {first} or {second}, not both")
     if not table.has(first) and not table.has(second):
         table.misspelt(first, second)
-        raise SceneError(table.where(first), f"is required (or {second})")
+        raise SceneError(table.where(first), f"is required (or {second}): {purpose}")
     return first if table.has(first) else second
 
 
@@ -849,7 +849,8 @@ def _unbalance(table: Table, mass: float) -> tuple[float, float | None]:
 
 def _shaft(table: Table) -> Shaft | None:
     """The shaft whose stiffness the machine is on, or None where the table gives the mounts' stiffness."""
-    if _one_of(table, "stiffness", "shaft") == "stiffness":
+    if _one_of(table, "stiffness", "shaft", "the mounts' stiffness, N/m, or shaft = { modulus, diameter, length }, "
+               "the shaft the machine turns on") == "stiffness":
         return None
     shaft = table.table("shaft")
     assert shaft is not None

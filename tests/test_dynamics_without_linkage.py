@@ -169,7 +169,7 @@ DIAGRAM = "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]
      "dynamics.resisting_power: does -"),
     ((DIAGRAM, ""), "dynamics: needs a load diagram"),
     (("rpm = 100", "rpm = -100"), "dynamics.rpm: must be > 0"),
-    (("rpm = 100", ""), "dynamics: needs rpm or omega"),
+    (("rpm = 100", ""), "dynamics.omega: is required but missing: give omega (rad/s) or rpm (rev/min)"),
     (("delta = 0.05", "delta = 3"), "dynamics.delta: must be < 2"),
     (("inertia = 0.0", "inertia = -1.0"), "dynamics.inertia: must be >= 0"),
     (('driving = "constant"', 'driving = "motor"'), "dynamics.driving: must be one of constant"),

@@ -528,7 +528,7 @@ def test_read_motion_from_a_table_leaves_other_keys_to_their_owner():
      "dynamics.duration: must be > 0 (got -1.0)"),
     ({"motor": {"kind": "constant", "torque": 3.0}, "stat": "rest"},
      "dynamics.stat: unknown key; did you mean 'start'?"),
-    ({}, "dynamics.motor: is required but missing"),
+    ({}, "dynamics.motor: is required but missing: the motor's table: kind and its characteristic"),
 ])
 def test_read_motion_errors_name_the_key(data, message):
     with pytest.raises(SceneError) as caught:

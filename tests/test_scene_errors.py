@@ -249,8 +249,10 @@ UNKNOWN_AT_THIS_STAGE = ("is not known at this stage: it must be a frame point, 
 
 CASES: list[Case] = [
     # -- the document's own tables: missing, or of the wrong type
-    Case("top-frame-missing", {"frame": DELETE}, "frame", "is required but missing"),
-    Case("top-driver-missing", {"driver": DELETE}, "driver", "is required but missing"),
+    Case("top-frame-missing", {"frame": DELETE}, "frame", "is required but missing: the fixed link's table: link = 1 "
+         "and its points, points = { O = [x, y], … }"),
+    Case("top-driver-missing", {"driver": DELETE}, "driver", "is required but missing: the input link's table: kind "
+         "= \"crank\" or \"slider\", its link, joint and speed"),
     Case("top-frame-list", {"frame": [1, 2]}, "frame", "must be a table, not a list (got [1, 2])"),
     Case("top-driver-string", {"driver": "crank"}, "driver", "must be a table, not a string (got 'crank')"),
     Case("top-scene-string", {"scene": "ratchet"}, "scene", "must be a table, not a string (got 'ratchet')"),
@@ -324,7 +326,7 @@ CASES: list[Case] = [
          "a frame line needs through and angle, on the frame"),
     Case("frame-line-number", {"frame.lines": {"L": 0.0}}, "frame.lines.L", "must be a table, not a number (got 0.0)"),
     Case("frame-line-through-missing", {"frame.lines": {"L": {"angle": 0.0}}}, "frame.lines.L.through",
-         "is required but missing"),
+         "is required but missing: a point the line runs through: [x, y], or a point's name"),
     Case("frame-line-angle-nan", {"frame.lines": {"L": {"through": [0.0, 0.0], "angle": NAN}}}, "frame.lines.L.angle",
          "must be a finite number (got nan)"),
     Case("frame-line-unknown-key", {"frame.lines": {"L": {"through": [0.0, 0.0], "angel": 0.0}}},
@@ -340,28 +342,33 @@ CASES: list[Case] = [
          stage="build", base="SLIDER_CRANK"),
 
     # -- [driver], a crank
-    Case("crank-kind-missing", {"driver.kind": DELETE}, "driver.kind", "is required but missing"),
+    Case("crank-kind-missing", {"driver.kind": DELETE}, "driver.kind", "is required but missing: crank (the input "
+         "link turns about a frame point) or slider (it moves along a guide)"),
     Case("crank-kind-unknown", {"driver.kind": "rocker"}, "driver.kind", "must be one of crank, slider (got 'rocker')"),
     Case("crank-kind-near-miss", {"driver.kind": "crnak"}, "driver.kind",
          "must be one of crank, slider; did you mean 'crank'? (got 'crnak')"),
     Case("crank-kind-number", {"driver.kind": 1}, "driver.kind", "must be a string, not an integer (got 1)"),
-    Case("crank-link-missing", {"driver.link": DELETE}, "driver.link", "is required but missing"),
+    Case("crank-link-missing", {"driver.link": DELETE}, "driver.link", "is required but missing: the number of the "
+         "input link, as on the kinematic scheme"),
     Case("crank-link-zero", {"driver.link": 0}, "driver.link", "must be >= 1 (got 0)"),
     Case("crank-link-string", {"driver.link": "2"}, "driver.link",
          "must be an integer, not a string (got '2'); TOML numbers take no quotes: write 2"),
     Case("crank-link-is-frame", {"driver.link": 1}, "driver.link",
          "link 1 already belongs to the frame; a group's links are new", stage="build"),
-    Case("crank-pivot-missing", {"driver.pivot": DELETE}, "driver.pivot", "is required but missing"),
+    Case("crank-pivot-missing", {"driver.pivot": DELETE}, "driver.pivot", "is required but missing: the frame point "
+         "the crank turns about"),
     Case("crank-pivot-number", {"driver.pivot": 0}, "driver.pivot", "must be a string, not an integer (got 0)"),
     Case("crank-pivot-unknown", {"driver.pivot": "Q"}, "driver.pivot",
          "must be a point of [frame] points: O, C (got 'Q')", stage="build"),
-    Case("crank-joint-missing", {"driver.joint": DELETE}, "driver.joint", "is required but missing"),
+    Case("crank-joint-missing", {"driver.joint": DELETE}, "driver.joint", "is required but missing: the joint the "
+         "input link moves, at its end, where the first group joins on"),
     Case("crank-joint-empty", {"driver.joint": ""}, "driver.joint", "must not be empty"),
     Case("crank-joint-is-frame-point", {"driver.joint": "C"}, "driver.joint",
          "'C' is already a frame point; the driver's joint is new", stage="build"),
     Case("crank-joint-is-pivot", {"driver.joint": "O"}, "driver.joint",
          "'O' is already a frame point; the driver's joint is new", stage="build"),
-    Case("crank-length-missing", {"driver.length": DELETE}, "driver.length", "is required but missing"),
+    Case("crank-length-missing", {"driver.length": DELETE}, "driver.length", "is required but missing: the crank's "
+         "length from pivot to joint, m"),
     Case("crank-length-string", {"driver.length": "0.175"}, "driver.length",
          "must be a number, not a string (got '0.175'); TOML numbers take no quotes: write 0.175"),
     Case("crank-length-bool", {"driver.length": True}, "driver.length", "must be a number, not a boolean (got True)"),
@@ -394,7 +401,8 @@ CASES: list[Case] = [
     Case("crank-slider-key", {"driver.travel": [0.0, 1.0]}, "driver.travel", "unknown key"),
 
     # -- [driver], a slider
-    Case("slider-guide-missing", {"driver.guide": DELETE}, "driver.guide", "is required but missing",
+    Case("slider-guide-missing", {"driver.guide": DELETE}, "driver.guide", "is required but missing: the line the "
+         "slider moves along: a frame line's name, or { through = [x, y], angle = degrees }",
          base="SLIDER_DRIVEN"),
     Case("slider-guide-list", {"driver.guide": [0.0, 0.0]}, "driver.guide",
          "must be a table, not a list (got [0.0, 0.0])", base="SLIDER_DRIVEN"),
@@ -406,7 +414,8 @@ CASES: list[Case] = [
          "must be a point fixed on link 1: C, O (got 'Z')", stage="build", base="SLIDER_DRIVEN"),
     Case("slider-guide-unknown-key", {"driver.guide.angel": 0.0}, "driver.guide.angel",
          "unknown key; did you mean 'angle'?", base="SLIDER_DRIVEN"),
-    Case("slider-velocity-missing", {"driver.velocity": DELETE}, "driver.velocity", "is required but missing",
+    Case("slider-velocity-missing", {"driver.velocity": DELETE}, "driver.velocity", "is required but missing: the "
+         "slider's velocity along its guide, m/s",
          base="SLIDER_DRIVEN"),
     Case("slider-velocity-zero", {"driver.velocity": 0.0}, "driver.velocity",
          "must not be zero: the driver must move", base="SLIDER_DRIVEN"),
@@ -414,7 +423,8 @@ CASES: list[Case] = [
          base="SLIDER_DRIVEN"),
     Case("slider-acceleration-string", {"driver.acceleration": "0"}, "driver.acceleration",
          "must be a number, not a string (got '0'); TOML numbers take no quotes: write 0", base="SLIDER_DRIVEN"),
-    Case("slider-travel-missing", {"driver.travel": DELETE}, "driver.travel", "is required but missing",
+    Case("slider-travel-missing", {"driver.travel": DELETE}, "driver.travel", "is required but missing: [s0, s1], "
+         "the stroke the positions run over, m along the guide from its through point",
          base="SLIDER_DRIVEN"),
     Case("slider-travel-empty-stroke", {"driver.travel": [0.2, 0.2]}, "driver.travel",
          "must span a stroke: [from, to] with from ≠ to (got [0.2, 0.2])", base="SLIDER_DRIVEN"),
@@ -429,14 +439,16 @@ CASES: list[Case] = [
          "a slider driver's positions run over driver.travel: leave start out", base="SLIDER_DRIVEN"),
 
     # -- [[groups]]: what every kind shares
-    Case("group-kind-missing", {"groups.0.kind": DELETE}, "groups[0].kind", "is required but missing"),
+    Case("group-kind-missing", {"groups.0.kind": DELETE}, "groups[0].kind", "is required but missing: the group's "
+         "kind: RRR, RRP, RPR, PRP, RPP or triad"),
     Case("group-kind-unknown", {"groups.0.kind": "cam"}, "groups[0].kind",
          "must be one of RRR, RRP, RPR, PRP, RPP, triad (got 'cam')"),
     Case("group-kind-near-miss", {"groups.0.kind": "RRRR"}, "groups[0].kind",
          "must be one of RRR, RRP, RPR, PRP, RPP, triad; did you mean 'RRR'? (got 'RRRR')"),
     Case("group-triad-with-two-links", {"groups.0.kind": "triad"}, "groups[0].links",
          "must have 4 entries, not 2 (got [3, 4])"),
-    Case("group-links-missing", {"groups.0.links": DELETE}, "groups[0].links", "is required but missing"),
+    Case("group-links-missing", {"groups.0.links": DELETE}, "groups[0].links", "is required but missing: the numbers "
+         "of the group's links, as on the kinematic scheme"),
     Case("group-links-string", {"groups.0.links": "3,4"}, "groups[0].links", "must be a list, not a string (got '3,4')"),
     Case("group-links-one", {"groups.0.links": [3]}, "groups[0].links", "must have 2 entries, not 1 (got [3])"),
     Case("group-links-item-string", {"groups.0.links": [3, "4"]}, "groups[0].links[1]",
@@ -449,7 +461,8 @@ CASES: list[Case] = [
          "link 2 already belongs to an earlier group; a group's links are new", stage="build"),
     Case("group-links-reuse-frame", {"groups.0.links": [3, 1]}, "groups[0].links",
          "link 1 already belongs to the frame; a group's links are new", stage="build"),
-    Case("group-joints-missing", {"groups.0.joints": DELETE}, "groups[0].joints", "is required but missing"),
+    Case("group-joints-missing", {"groups.0.joints": DELETE}, "groups[0].joints", "is required but missing: the "
+         "names of the group's joints, its outer ones known from the driver or a group before it"),
     Case("group-joints-two", {"groups.0.joints": ["A", "B"]}, "groups[0].joints",
          "must have 3 entries, not 2 (got [\"A\", \"B\"])"),
     Case("group-joints-same", {"groups.0.joints": ["A", "A", "C"]}, "groups[0].joints",
@@ -465,7 +478,8 @@ CASES: list[Case] = [
          "'C' is already a known point; a group's inner joint is new", stage="build"),
 
     # -- RRR
-    Case("rrr-lengths-missing", {"groups.0.lengths": DELETE}, "groups[0].lengths", "is required but missing"),
+    Case("rrr-lengths-missing", {"groups.0.lengths": DELETE}, "groups[0].lengths", "is required but missing: the "
+         "lengths of the group's links between its joints, m, in the order its kind lists them"),
     Case("rrr-lengths-table", {"groups.0.lengths": {"AB": 0.55, "BC": 0.325}}, "groups[0].lengths",
          "must be a list, not a table (got { AB = 0.55, BC = 0.325 })"),
     Case("rrr-lengths-one", {"groups.0.lengths": [0.55]}, "groups[0].lengths", "must have 2 entries, not 1 (got [0.55])"),
@@ -487,27 +501,30 @@ CASES: list[Case] = [
     Case("rrr-assembly-of-rrp", {"groups.0.assembly": "forward"}, "groups[0].assembly",
          "must be one of left, right (got 'forward')"),
     Case("rrr-assembly-and-near", {"groups.0.near": [0.3, 0.6]}, "groups[0]", "give assembly or near, not both"),
-    Case("rrr-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0]",
-         "needs assembly (left or right) or near = [x, y] to choose the branch"),
+    Case("rrr-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0].assembly",
+         "is required but missing: left or right chooses the branch the group assembles in (or near = [x, y], where "
+         "its joint lies in a sketch)"),
     Case("rrr-near-short", {"groups.0.assembly": DELETE, "groups.0.near": [0.3]}, "groups[0].near",
          "must be a point [x, y] (got [0.3])"),
     Case("rrr-near-nan", {"groups.0.assembly": DELETE, "groups.0.near": [NAN, 0.6]}, "groups[0].near[0]",
          "must be a finite number (got nan)"),
 
     # -- RRP
-    Case("rrp-length-missing", {"groups.0.length": DELETE}, "groups[0].length", "is required but missing",
+    Case("rrp-length-missing", {"groups.0.length": DELETE}, "groups[0].length", "is required but missing: lAB, the "
+         "length of link a from its outer joint A to the slider's joint B, m",
          base="SLIDER_CRANK"),
     Case("rrp-length-zero", {"groups.0.length": 0.0}, "groups[0].length", "must be > 0 (got 0.0)", base="SLIDER_CRANK"),
     Case("rrp-length-negative", {"groups.0.length": -0.4}, "groups[0].length", "must be > 0 (got -0.4)",
          base="SLIDER_CRANK"),
     Case("rrp-length-list", {"groups.0.length": [0.4]}, "groups[0].length",
          "must be a number, not a list (got [0.4])", base="SLIDER_CRANK"),
-    Case("rrp-guide-missing", {"groups.0.guide": DELETE}, "groups[0].guide", "is required but missing",
+    Case("rrp-guide-missing", {"groups.0.guide": DELETE}, "groups[0].guide", "is required but missing: the line the "
+         "slider moves along: a frame line's name, or { through = [x, y], angle = degrees }",
          base="SLIDER_CRANK"),
     Case("rrp-guide-number", {"groups.0.guide": 0.0}, "groups[0].guide", "must be a table, not a number (got 0.0)",
          base="SLIDER_CRANK"),
     Case("rrp-guide-through-missing", {"groups.0.guide.through": DELETE}, "groups[0].guide.through",
-         "is required but missing", base="SLIDER_CRANK"),
+         "is required but missing: a point the line runs through: [x, y], or a point's name", base="SLIDER_CRANK"),
     Case("rrp-guide-through-short", {"groups.0.guide.through": [0.0]}, "groups[0].guide.through",
          "must be a point [x, y] (got [0.0])", base="SLIDER_CRANK"),
     Case("rrp-guide-angle-string", {"groups.0.guide.angle": "0"}, "groups[0].guide.angle",
@@ -536,8 +553,9 @@ CASES: list[Case] = [
          "must be a point fixed on link 1: O (got 'A')", stage="build", base="SLIDER_CRANK"),
     Case("rrp-assembly-of-rrr", {"groups.0.assembly": "left"}, "groups[0].assembly",
          "must be one of forward, backward (got 'left')", base="SLIDER_CRANK"),
-    Case("rrp-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0]",
-         "needs assembly (forward or backward) or near = [x, y] to choose the branch", base="SLIDER_CRANK"),
+    Case("rrp-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0].assembly",
+         "is required but missing: forward or backward chooses the branch the group assembles in (or near = [x, y], "
+         "where its joint lies in a sketch)", base="SLIDER_CRANK"),
     Case("rrp-unknown-key", {"groups.0.lenght": 0.4}, "groups[0].lenght", "unknown key; did you mean 'length'?",
          base="SLIDER_CRANK"),
     Case("rrp-joints-three", {"groups.0.joints": ["A", "B", "C"]}, "groups[0].joints",
@@ -554,7 +572,8 @@ CASES: list[Case] = [
          f"'D' {UNKNOWN_AT_THIS_STAGE}", stage="build", base="SLOTTED_LEVER"),
 
     # -- PRP
-    Case("prp-guides-missing", {"groups.0.guides": DELETE}, "groups[0].guides", "is required but missing",
+    Case("prp-guides-missing", {"groups.0.guides": DELETE}, "groups[0].guides", "is required but missing: [g1, g2], "
+         "the lines the two sliders move along",
          base="CROSSED_SLIDERS"),
     Case("prp-guides-one", {"groups.0.guides": [{"through": [0.0, 0.0]}]}, "groups[0].guides",
          "must have 2 entries, not 1 (got [{ through = [0.0, 0.0] }])", base="CROSSED_SLIDERS"),
@@ -580,7 +599,8 @@ CASES: list[Case] = [
          "the slot must not be parallel to the guide (got 180.0)", base="SCOTCH_YOKE"),
     Case("rpp-angle-nan", {"groups.0.angle": NAN}, "groups[0].angle", "must be a finite number (got nan)",
          base="SCOTCH_YOKE"),
-    Case("rpp-guide-missing", {"groups.0.guide": DELETE}, "groups[0].guide", "is required but missing",
+    Case("rpp-guide-missing", {"groups.0.guide": DELETE}, "groups[0].guide", "is required but missing: the line the "
+         "slider moves along: a frame line's name, or { through = [x, y], angle = degrees }",
          base="SCOTCH_YOKE"),
     Case("rpp-guide-unknown-point", {"groups.0.guide": {"link": 2, "through": "B"}}, "groups[0].guide.through",
          "must be a point fixed on link 2: A, O (got 'B')", stage="build", base="SCOTCH_YOKE"),
@@ -588,12 +608,16 @@ CASES: list[Case] = [
 
     # -- [points]
     Case("point-not-a-table", {"points.S2": 0.08}, "points.S2", "must be a table, not a number (got 0.08)"),
-    Case("point-link-missing", {"points.S3.link": DELETE}, "points.S3.link", "is required but missing"),
+    Case("point-link-missing", {"points.S3.link": DELETE}, "points.S3.link", "is required but missing: the number of "
+         "the link the point is fixed on"),
     Case("point-link-zero", {"points.S3.link": 0}, "points.S3.link", "must be >= 1 (got 0)"),
-    Case("point-from-missing", {"points.S3.from": DELETE}, "points.S3.from", "is required but missing"),
+    Case("point-from-missing", {"points.S3.from": DELETE}, "points.S3.from", "is required but missing: the point it "
+         "is placed from, at metres along from→toward"),
     Case("point-from-number", {"points.S3.from": 1}, "points.S3.from", "must be a string, not an integer (got 1)"),
-    Case("point-toward-missing", {"points.S3.toward": DELETE}, "points.S3.toward", "is required but missing"),
-    Case("point-at-missing", {"points.S3.at": DELETE}, "points.S3.at", "is required but missing"),
+    Case("point-toward-missing", {"points.S3.toward": DELETE}, "points.S3.toward", "is required but missing: the "
+         "point that gives, from `from`, the direction the point is placed along"),
+    Case("point-at-missing", {"points.S3.at": DELETE}, "points.S3.at", "is required but missing: how far the point "
+         "lies from `from` toward `toward`, m"),
     Case("point-at-string", {"points.S3.at": "0.24"}, "points.S3.at",
          "must be a number, not a string (got '0.24'); TOML numbers take no quotes: write 0.24"),
     Case("point-at-nan", {"points.S3.at": NAN}, "points.S3.at", "must be a finite number (got nan)"),
@@ -645,14 +669,17 @@ CASES: list[Case] = [
     Case("load-stroke-without-working", {"positions.working": DELETE, "positions.start": 0.0}, "loads[0].during",
          "a load that acts in one stroke needs positions.working (which motion of which link is the working stroke) "
          "(got { from = 0.0, to = 0.881 })", stage="build"),
-    Case("load-kind-missing", {"loads.0.kind": DELETE}, "loads[0].kind", "is required but missing"),
+    Case("load-kind-missing", {"loads.0.kind": DELETE}, "loads[0].kind", "is required but missing: moment (a couple "
+         "on its link) or force (at a point of its link)"),
     Case("load-kind-unknown", {"loads.0.kind": "pressure"}, "loads[0].kind",
          "must be one of moment, force (got 'pressure')"),
     Case("load-kind-near-miss", {"loads.0.kind": "momnet"}, "loads[0].kind",
          "must be one of moment, force; did you mean 'moment'? (got 'momnet')"),
-    Case("load-link-missing", {"loads.0.link": DELETE}, "loads[0].link", "is required but missing"),
+    Case("load-link-missing", {"loads.0.link": DELETE}, "loads[0].link", "is required but missing: the number of the "
+         "link the load acts on"),
     Case("load-link-zero", {"loads.0.link": 0}, "loads[0].link", "must be >= 1 (got 0)"),
-    Case("load-value-missing", {"loads.0.value": DELETE}, "loads[0].value", "is required but missing"),
+    Case("load-value-missing", {"loads.0.value": DELETE}, "loads[0].value", "is required but missing: the load's "
+         "size, N·m for a moment, N for a force (or a diagram in its place)"),
     Case("load-value-string", {"loads.0.value": "1500"}, "loads[0].value",
          "must be a number, not a string (got '1500'); TOML numbers take no quotes: write 1500"),
     Case("load-value-nan", {"loads.0.value": NAN}, "loads[0].value", "must be a finite number (got nan)"),
@@ -678,15 +705,16 @@ CASES: list[Case] = [
     Case("load-during-window-past-end", {"loads.0.during.to": 1.5}, "loads[0].during",
          "must be a window 0 <= from < to <= 1 of the working stroke (got { from = 0.0, to = 1.5 })"),
     Case("load-during-window-to-missing", {"loads.0.during.to": DELETE}, "loads[0].during.to",
-         "is required but missing"),
+         "is required but missing: the share of the working stroke (0 to 1) where the load stops acting"),
     Case("load-during-window-nan", {"loads.0.during.from": NAN}, "loads[0].during.from",
          "must be a finite number (got nan)"),
     Case("load-during-window-unknown-key", {"loads.0.during.too": 1.0}, "loads[0].during.too",
          "unknown key; did you mean 'to'?"),
-    Case("load-force-without-point", {"loads.0.kind": "force"}, "loads[0]",
-         "a force needs point (where it acts) and angle (its direction, degrees)"),
-    Case("load-force-without-angle", {"loads.0.kind": "force", "loads.0.point": "B"}, "loads[0]",
-         "a force needs point (where it acts) and angle (its direction, degrees)"),
+    Case("load-force-without-point", {"loads.0.kind": "force"}, "loads[0].point",
+         "is required but missing: a force needs point, where it acts: a point fixed on its link (a joint or one of "
+         "[points])"),
+    Case("load-force-without-angle", {"loads.0.kind": "force", "loads.0.point": "B"}, "loads[0].angle",
+         "is required but missing: a force needs angle, its direction in degrees from +x (counter-clockwise)"),
     Case("load-angle-string", {"loads.0.kind": "force", "loads.0.point": "B", "loads.0.angle": "90"},
          "loads[0].angle", "must be a number, not a string (got '90'); TOML numbers take no quotes: write 90"),
     Case("load-unknown-key", {"loads.0.resistant": True}, "loads[0].resistant",
@@ -744,17 +772,19 @@ CASES: list[Case] = [
     Case("positions-start-bool", {"positions.start": True}, "positions.start",
          "must be a number, not a boolean (got True)"),
     Case("positions-start-nan", {"positions.start": NAN}, "positions.start", "must be a finite number (got nan)"),
-    Case("positions-extreme-without-working", {"positions.working": DELETE}, "positions.start",
-         "\"extreme\" needs working = { link, sense } to know which extreme"),
+    Case("positions-extreme-without-working", {"positions.working": DELETE}, "positions.working",
+         "is required by start = \"extreme\": working = { link, sense } names the motion whose extreme the positions "
+         "start at (or give start a crank angle in degrees)"),
     Case("positions-number-from-two", {"positions.number_from": 2}, "positions.number_from", "must be <= 1 (got 2)"),
     Case("positions-number-from-negative", {"positions.number_from": -1}, "positions.number_from",
          "must be >= 0 (got -1)"),
     Case("positions-working-string", {"positions.working": "4"}, "positions.working",
          "must be a table, not a string (got '4')"),
     Case("positions-working-link-missing", {"positions.working.link": DELETE}, "positions.working.link",
-         "is required but missing"),
+         "is required but missing: the number of the link whose motion makes the working stroke"),
     Case("positions-working-sense-missing", {"positions.working.sense": DELETE}, "positions.working.sense",
-         "is required but missing"),
+         "is required but missing: ccw or cw for a turning link, forward or backward (along its guide) for a sliding "
+         "one: its motion in the stroke"),
     Case("positions-working-sense-unknown", {"positions.working.sense": "up"}, "positions.working.sense",
          "must be one of ccw, cw, forward, backward (got 'up')"),
     Case("positions-working-sense-near-miss", {"positions.working.sense": "cww"}, "positions.working.sense",

@@ -105,7 +105,7 @@ def test_assurs_point_lies_on_two_binary_links_and_moves_with_the_ternary_link()
 
 @pytest.mark.parametrize(("old", "new", "where", "message"), [
     ("sides   = [0.12, 0.108, 0.108]", "sides = [0.12, 0.05, 0.05]", "groups[0].sides", "must make a triangle"),
-    (SKETCH, 'near = { B = [0.14, 0.10], D = [0.26, 0.10] }', "groups[0].near", "missing F"),
+    (SKETCH, 'near = { B = [0.14, 0.10], D = [0.26, 0.10] }', "groups[0].near.F", "where F lies in the sketch"),
     (SKETCH, 'near = { B = [0.14, 0.10], D = [0.26, 0.10], F = [0.20, 0.19], A = [0, 0] }', "groups[0].near.A",
      "must name an inner joint"),
     (SKETCH, 'near = { B = [0.1, 0.1], D = [0.2, 0.2], F = [0.3, 0.3] }', "groups[0].near", "lie in a line"),

@@ -293,7 +293,9 @@ def read_branch(table: Table, choices: tuple[str, ...]) -> tuple[str | None, tup
     assembly = table.choice("assembly", choices, None)
     near = table.xy("near", None)
     if assembly is None and near is None:
-        raise SceneError(table.path, f"needs assembly ({' or '.join(choices)}) or near = [x, y] to choose the branch")
+        table.misspelt("assembly", "near")
+        raise SceneError(table.where("assembly"), f"is required but missing: {' or '.join(choices)} chooses the "
+                         "branch the group assembles in (or near = [x, y], where its joint lies in a sketch)")
     if assembly is not None and near is not None:
         raise SceneError(table.path, "give assembly or near, not both")
     return assembly, near

@@ -202,8 +202,9 @@ class Triad(Group):
             near.append((name, complex(x, y)))
         missing = [name for name in inner if name not in dict(near)]
         if missing:
-            raise SceneError(near_table.path, f"needs where each inner joint lies in the sketch, to choose among up to "
-                                              f"six assemblies; missing {', '.join(missing)}")
+            raise SceneError(near_table.where(missing[0]), f"is required but missing: where {missing[0]} lies in the "
+                             f"sketch, [x, y]; the sketch of every inner joint ({', '.join(inner)}) chooses among up "
+                             "to six assemblies")
         b, d, f = (dict(near)[name] for name in inner)
         if abs(((d - b).conjugate() * (f - b)).imag) <= 1e-9 * max(abs(d - b), abs(f - b)) ** 2:
             raise SceneError(near_table.path, f"the sketch's {', '.join(inner)} lie in a line; it must show which way "
