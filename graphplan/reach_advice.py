@@ -60,9 +60,12 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; the mechanism assembles "
                                 f"at no angle of link {driver.link}: {stopped}") from error
         # The caller's own values are theirs to keep within the reach; a scene's crank may rock instead.
-        advice = (_reach_advice(driver.link, ranges, False, stopping, "the values") if first is not None
-                  else _reach_advice(driver.link, ranges, driver.cyclic, stopping,
-                                     runs=functools.partial(_swing_that_runs, mechanism.scene)))
+        if first is not None:
+            advice = _reach_advice(driver.link, ranges, False, stopping, "the values")
+        else:
+            rocking, changes = _rocking_changes(mechanism.scene)
+            advice = _reach_advice(driver.link, ranges, driver.cyclic, stopping,
+                                   runs=functools.partial(_swing_that_runs, rocking), also=changes)
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
 
 
@@ -202,10 +205,11 @@ def _inward(end: float, rounding) -> str:
 
 def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bool,
                   stopping: str = Group.reach_ends, kept: str = "driver.swing",
-                  runs: Callable[[float, float], tuple[int, int] | None] | None = None) -> str:
+                  runs: Callable[[float, float], tuple[int, int] | None] | None = None,
+                  also: tuple[str, ...] = ()) -> str:
     """What a crank's reach allows, in degrees: the ranges and, for one meant to turn round, a swing to try (of
-    ``runs``, the swing within a range that the run takes, where given); ``stopping`` says what stops it at the
-    ends, ``kept`` what is to keep within them."""
+    ``runs``, the swing within a range that the run takes, where given) with what else the scene must change to
+    rock (``also``); ``stopping`` says what stops it at the ends, ``kept`` what is to keep within them."""
     if not ranges:
         return f"the mechanism assembles at no angle of link {link}: check the lengths"
     # Rounded inward: a swing to an end as written is then inside the reach (70.49° of a reach to 70.4907° was
@@ -222,7 +226,39 @@ def _reach_advice(link: int, ranges: tuple[tuple[float, float], ...], cyclic: bo
         first, last = math.ceil(math.degrees(low) + 1.0), math.floor(math.degrees(high) - 1.0)
         swing = (first, last) if last > first else None
     example = f", e.g. driver.swing = [{swing[0]}, {swing[1]}]" if swing is not None else ""
-    return f"{told}; since it cannot turn round, drive it as a rocker: driver.swing = [from, to] in degrees{example}"
+    changes = f"; a rocking crank's positions run once over its swing, so also {', and '.join(also)}" if also else ""
+    return (f"{told}; since it cannot turn round, drive it as a rocker: driver.swing = [from, to] in degrees{example}"
+            f"{changes}")
+
+
+def _rocking_changes(scene: Scene) -> tuple[Scene, tuple[str, ...]]:
+    """The scene as it must change, besides its swing, for its crank to rock, and those changes in words: the
+    start, a load's window or diagram of the working stroke, the flywheel and the equation of motion all need a
+    turn (the swing alone was advised, and the scene that followed it was refused at the next of them)."""
+    changes = []
+    if scene.positions.start != 0.0:
+        changes.append("leave positions.start out")
+    loads = []
+    for load in scene.loads:
+        if load.diagram is not None:
+            changes.append(f'give {load.where} a value in place of its diagram, with during = "working"')
+            load = replace(load, diagram=None, value=max((value for _, value in load.diagram), key=abs),
+                           during="working")
+        elif isinstance(load.during, tuple):
+            changes.append(f'give {load.where}.during = "working" (or "idle", "always") in place of its window')
+            load = replace(load, during="working")
+        loads.append(load)
+    dynamics = scene.dynamics
+    if dynamics is not None:
+        turning = [key for key, value in (("delta", dynamics.delta), ("rpm or omega", dynamics.omega),
+                                          ("flywheel_shaft_rpm", dynamics.flywheel_shaft_rpm),
+                                          ("motor, brake, clutch and the motion's other keys", dynamics.motion))
+                   if value is not None]
+        if turning:
+            changes.append(f"leave {', '.join(turning)} out of [dynamics]")
+        dynamics = replace(dynamics, delta=None, omega=None, flywheel_shaft_rpm=None, motion=None)
+    rocking = replace(scene, positions=replace(scene.positions, start=0.0), loads=tuple(loads), dynamics=dynamics)
+    return rocking, tuple(changes)
 
 
 # How far (degrees) inside the ends of a crank's reach the swing it is advised to rock over keeps, tried in turn:
@@ -244,9 +280,8 @@ def _swing_that_runs(scene: Scene, low: float, high: float) -> tuple[int, int] |
         first, last = math.ceil(math.degrees(low) + margin), math.floor(math.degrees(high) - margin)
         if last <= first:
             return None
-        # A rocking crank takes no positions.start and no flywheel: as the user who rocks it leaves them out.
-        rocking = replace(scene, driver=replace(driver, swing=(math.radians(first), math.radians(last))),
-                          positions=replace(scene.positions, start=0.0), dynamics=None)
+        # The scene as the advice changes it (_rocking_changes), rocking over the swing.
+        rocking = replace(scene, driver=replace(driver, swing=(math.radians(first), math.radians(last))))
         try:
             analysis = analyse(rocking)
             refuse_as_run_would(rocking, analysis, chosen(rocking, analysis))

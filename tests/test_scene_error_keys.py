@@ -176,3 +176,68 @@ def test_a_triad_sketch_without_a_joint_is_told_at_that_joint() -> None:
         load(data)
     assert caught.value.where == f"groups[{index}].near.{missing}"
     assert "[x, y]" in caught.value.problem
+
+
+_DOUBLE_ROCKER = """
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.3, 0.0] }
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.25
+omega = 4.0
+
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.12, 0.2]
+assembly = "right"
+
+[points]
+S4 = { link = 4, from = "C", toward = "B", at = 0.1 }
+
+[links.4]
+mass = 3.0
+centre = "S4"
+inertia = 0.01
+
+[[loads]]
+kind = "moment"
+link = 4
+resisting = true
+{load}
+
+[positions]
+count = 7
+start = 30.0
+working = { link = 4, sense = "ccw" }
+"""
+
+
+@pytest.mark.parametrize("load", [
+    "value = 20.0\nduring = { from = 0.1, to = 0.6 }",
+    "diagram = [[0.0, 20.0], [1.0, 10.0]]",
+], ids=["window", "diagram"])
+def test_a_crank_advised_to_rock_runs_once_the_advice_is_followed(tmp_path, load) -> None:
+    """A double rocker's crank cannot turn round, and was advised driver.swing alone, with no swing to try (none ran
+    with the load's window of the working stroke or its diagram, which a swing refuses); a student who added a
+    swing was then refused at positions.start, and again at the load."""
+    scene = _DOUBLE_ROCKER.replace("{load}", load)
+    told = _refused(scene, tmp_path)
+    swing = re.search(r"e\.g\. driver\.swing = (\[-?\d+, -?\d+\])", told)
+    assert swing is not None, told
+    assert "leave positions.start out" in told
+    followed = scene.replace('joint = "A"\n', f'joint = "A"\nswing = {swing.group(1)}\n', 1)
+    followed = followed.replace("start = 30.0\n", "")
+    if "diagram" in load:
+        assert 'give loads[0] a value in place of its diagram, with during = "working"' in told
+        followed = followed.replace(load, 'value = 20.0\nduring = "working"')
+    else:
+        assert 'give loads[0].during = "working"' in told
+        followed = followed.replace("during = { from = 0.1, to = 0.6 }", 'during = "working"')
+    _runs(followed, tmp_path, "followed")
