@@ -241,3 +241,18 @@ def test_a_crank_advised_to_rock_runs_once_the_advice_is_followed(tmp_path, load
         assert 'give loads[0].during = "working"' in told
         followed = followed.replace("during = { from = 0.1, to = 0.6 }", 'during = "working"')
     _runs(followed, tmp_path, "followed")
+
+
+@pytest.mark.parametrize(("key", "given"), [
+    ("force_scale", "0.001"),
+    ("length_scale", "0.00001"),
+    ("velocity_pole", "5000.0"),
+], ids=["force_scale", "length_scale", "velocity_pole"])
+def test_a_scale_too_large_for_any_paper_runs_at_the_value_advised(tmp_path, key, given) -> None:
+    """A scale a student mistypes is refused with a value to give: that value, written in, must run."""
+    scene = _FORCE_SCENE.replace("{force}", 'point = "B"\nangle = 90.0').replace(
+        "[positions]\ncount = 6", f'[positions]\ncount = 6\nplans = [1]\n\n[drawing]\nsheet = "A3"\n{key} = {given}')
+    told = _refused(scene, tmp_path)
+    advised = re.search(rf"^drawing\.{key}: .*: give ([\d.]+) \(", told)
+    assert advised is not None, told
+    _runs(scene.replace(f"{key} = {given}", f"{key} = {advised.group(1)}"), tmp_path, "followed")
