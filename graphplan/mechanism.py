@@ -522,7 +522,9 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
         if load.link not in known_links:
             raise SceneError(f"{load.where}.link", f"no link {load.link} in the mechanism", load.link)
         if load.point is not None and load.point not in mechanism.fixed_on.get(load.link, ()):
-            raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}", load.point,
+            # Named as a centre's are: "must be a point fixed on link 4" left the student to find which those are.
+            raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}: "
+                             f"{_known(sorted(mechanism.fixed_on.get(load.link, ())))}", load.point,
                              hint=lookalike_hint(load.point, mechanism.fixed_on.get(load.link, ())))
         if load.kind == "moment" and load.resisting and load.link in mechanism.translating:
             # Resisting is against the link's ω, or at rest the turning about to begin: a link that never turns has

@@ -256,3 +256,13 @@ def test_a_scale_too_large_for_any_paper_runs_at_the_value_advised(tmp_path, key
     advised = re.search(rf"^drawing\.{key}: .*: give ([\d.]+) \(", told)
     assert advised is not None, told
     _runs(scene.replace(f"{key} = {given}", f"{key} = {advised.group(1)}"), tmp_path, "followed")
+
+
+def test_a_force_on_a_point_off_its_link_names_the_points_it_may_act_at(tmp_path) -> None:
+    """It said "must be a point fixed on link 4" and no more; a point it names, written in, runs."""
+    told = _refused(_FORCE_SCENE.replace("{force}", 'point = "X"\nangle = 90.0'), tmp_path)
+    listed = re.search(r"^loads\[0\]\.point: must be a point fixed on link 4: (.+) \(got 'X'\)$", told)
+    assert listed is not None, told
+    names = listed.group(1).split(", ")
+    assert "B" in names and "C" in names and "A" not in names
+    _runs(_FORCE_SCENE.replace("{force}", f'point = "{names[0]}"\nangle = 90.0'), tmp_path, "followed")

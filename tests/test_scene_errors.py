@@ -745,7 +745,7 @@ CASES: list[Case] = [
     Case("load-on-missing-link", {"loads.0.link": 9}, "loads[0].link", "no link 9 in the mechanism (got 9)",
          stage="build"),
     Case("load-point-not-on-link", {"loads.0.kind": "force", "loads.0.point": "A", "loads.0.angle": 90.0},
-         "loads[0].point", "must be a point fixed on link 4 (got 'A')", stage="build"),
+         "loads[0].point", "must be a point fixed on link 4: B, C, S4 (got 'A')", stage="build"),
 
     # -- [positions]
     Case("positions-count-zero", {"positions.count": 0}, "positions.count", "must be >= 1 (got 0)"),
