@@ -242,7 +242,8 @@ def _swapped(typed: str, key: str) -> bool:
 # missing" alone left a student who had not met the key guessing what to write.
 _GUIDE = "the line the slider moves along: a frame line's name, or { through = [x, y], angle = degrees }"
 _THROUGH = "a point the line runs through: [x, y], or a point's name"
-_SENSE = "ccw or cw for a turning link, forward or backward (along its guide) for a sliding one: its motion in the stroke"
+_SENSE = ("ccw or cw for a turning link, forward or backward (along its guide) for a sliding one: its motion in the "
+          "stroke")
 REQUIRED_PURPOSES = {
     "frame": "the fixed link's table: link = 1 and its points, points = { O = [x, y], … }",
     "driver": "the input link's table: kind = \"crank\" or \"slider\", its link, joint and speed",

@@ -123,7 +123,8 @@ def _je_numbers(group: ElementTree.Element) -> list[tuple[float, float]]:
     name = next(t for t in texts if _words(t).startswith("Je,"))
     axis_y = float(name.get("y"))
     return sorted((_value(_words(t)), float(t.get("x"))) for t in texts
-                  if NUMBER.fullmatch(_words(t)) and _value(_words(t)) > 0 and t.get("font-size") == name.get("font-size")
+                  if NUMBER.fullmatch(_words(t)) and _value(_words(t)) > 0
+                  and t.get("font-size") == name.get("font-size")
                   and abs(float(t.get("y")) - axis_y) < 6 and float(t.get("x")) < float(name.get("x")))
 
 
@@ -182,7 +183,8 @@ ONE_PLANE = 0.04
 
 def _rotor_masses(scene_text: str) -> list[tuple[float, float, float, float]]:
     block = ROTOR_MASSES.search(scene_text)[0]
-    return [tuple(float(re.search(key + r"\s*=\s*(-?[\d.]+)", entry)[1]) for key in ("mass", "radius", "angle", "plane"))
+    keys = ("mass", "radius", "angle", "plane")
+    return [tuple(float(re.search(key + r"\s*=\s*(-?[\d.]+)", entry)[1]) for key in keys)
             for entry in re.findall(r"\{[^}]*\}", block)]
 
 

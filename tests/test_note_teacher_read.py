@@ -125,8 +125,8 @@ def test_angular_velocities_and_accelerations_are_the_relative_term_over_the_len
     _, lines, document = read
     checked = 0
     for position, _, line in sections(lines):
-        match = re.match(rf"- ([ωε])(\d+) = [^=]+= [^=]+= ({NUMBER})·({NUMBER})/({NUMBER}) = ({NUMBER}) [^,]+, (.+?)(?:;|$)",
-                         line)
+        match = re.match(rf"- ([ωε])(\d+) = [^=]+= [^=]+= ({NUMBER})·({NUMBER})/({NUMBER}) = ({NUMBER}) "
+                         r"[^,]+, (.+?)(?:;|$)", line)
         if not match:
             continue
         kind, link, length, scale, arm, printed, sense = match.groups()
@@ -159,9 +159,9 @@ def test_coriolis_term_is_twice_omega_times_the_sliding_and_turned_in_the_sense_
     checked = 0
     mu = scales(lines)
     for position, plan, line in sections(lines):
-        match = re.search(rf"\| a(\w+?)ᵏ \| 2·ω(\d+)·V\w+ \([^)]*\) = 2·({NUMBER})·({NUMBER}) = ({NUMBER}) \S+ \| (\w)(\w) = "
-                          rf"({NUMBER}) \| [^|]*?(clockwise|counter-clockwise|по часовой стрелке|против часовой стрелки)",
-                          line)
+        match = re.search(rf"\| a(\w+?)ᵏ \| 2·ω(\d+)·V\w+ \([^)]*\) = 2·({NUMBER})·({NUMBER}) = ({NUMBER}) \S+ "
+                          rf"\| (\w)(\w) = ({NUMBER}) \| [^|]*?"
+                          r"(clockwise|counter-clockwise|по часовой стрелке|против часовой стрелки)", line)
         if not match:
             continue
         _, link, omega, sliding, term, start, end, drawn, sense = match.groups()
@@ -243,8 +243,8 @@ def test_moment_equations_add_up_and_give_the_unknown(read):
         for found in re.finditer(rf"M\((\w+)\) = ({NUMBER}) ", line):
             moments[found.start()] = value(found.group(2))
         moments = dict(sorted(moments.items()))
-        match = re.search(rf"ΣM\S+ = (−?)(\S+?)(?:·({NUMBER}))? (.*?) = 0 ⇒ (\S+) = (−?)\(?({NUMBER})\)?(?:/({NUMBER}) = "
-                          rf"({NUMBER}))? ", line)
+        match = re.search(rf"ΣM\S+ = (−?)(\S+?)(?:·({NUMBER}))? (.*?) = 0 ⇒ (\S+) = (−?)\(?({NUMBER})\)?"
+                          rf"(?:/({NUMBER}) = ({NUMBER}))? ", line)
         if not match:
             continue
         sign, unknown, arm, rest, solved, minus, numerator, divisor, printed = match.groups()
@@ -258,8 +258,8 @@ def test_moment_equations_add_up_and_give_the_unknown(read):
         assert close(-total / coefficient, printed, *(t for t in moment_terms(rest)), *([arm] if arm else []),
                      rel=2e-4), line
         shown = value(numerator) * (-1.0 if minus else 1.0)
-        assert close(shown / (value(divisor) if divisor else 1.0), printed, numerator, *([divisor] if divisor else [])), \
-            line
+        read = [numerator, *([divisor] if divisor else [])]
+        assert close(shown / (value(divisor) if divisor else 1.0), printed, *read), line
         checked += 1
     assert checked >= 4
 
@@ -353,8 +353,8 @@ def test_zhukovsky_lever_sums_to_the_balancing_moment_of_the_polygons(read):
             assert close(value(force) * value(arm), moment.lstrip("−"), force, arm), name
         total = sum(value(row[4]) for row in rows)
         summed, pa, fb, fb_again, arm, mb = re.search(
-            rf"Fb = \|Σ\(F·h\)\|/pa = ({NUMBER})/({NUMBER}) = ({NUMBER}) \S+ \|Mb\| = Fb·l\S+ = ({NUMBER})·({NUMBER}) = ({NUMBER}) ",
-            line).groups()
+            rf"Fb = \|Σ\(F·h\)\|/pa = ({NUMBER})/({NUMBER}) = ({NUMBER}) \S+ "
+            rf"\|Mb\| = Fb·l\S+ = ({NUMBER})·({NUMBER}) = ({NUMBER}) ", line).groups()
         assert close(abs(total), summed, *(row[4] for row in rows)), line
         driver = position_of(document, position)
         velocity_a = abs(complex(*driver["points"][scene.driver.joint]["v"]))

@@ -612,7 +612,8 @@ def test_the_je_numbers_of_the_energy_mass_diagram_stand_clear_of_its_tangents_a
     # letter (tests/test_dynamics_labels_clear.py): every tick at a multiple of the numbers' step has its number.
     assert ticks == pytest.approx([ticks[0] * k for k in range(1, len(ticks) + 1)]) and len(ticks) >= 3
     every = round(min(written) / ticks[0])
-    assert sorted(written) == pytest.approx([tick for k, tick in enumerate(ticks, 1) if k % every == 0]), (written, ticks)
+    numbered = [tick for k, tick in enumerate(ticks, 1) if k % every == 0]
+    assert sorted(written) == pytest.approx(numbered), (written, ticks)
     lines = [LineString(p) for p in (*_paths(group, TANGENT_COLOUR), max(black, key=len))]
     struck = [("".join(t.itertext()), k) for t in numbers for k, line in enumerate(lines) if _box(t).intersects(line)]
     assert not struck, f"Je's numbers crossed by the diagram's lines (0, 1 the tangents, 2 the curve): {struck}"

@@ -429,8 +429,8 @@ def _too_short_lines(plan: Plan, kind: str, text: Mapping[str, str]) -> list[str
     """Caption lines naming the plan's vectors too short to draw, with their values."""
     unit = text["unit_m_per_s" if kind == "velocity" else "unit_m_per_s2"]
     # Named as the note names them: aΣ6C^τ as aΣ6Cτ.
-    return plans.too_short_lines([f"{raised(name)} = {value:.3g} {unit}" for name, value in plans.too_short(plan, kind)],
-                                 text)
+    values = [f"{raised(name)} = {value:.3g} {unit}" for name, value in plans.too_short(plan, kind)]
+    return plans.too_short_lines(values, text)
 
 
 def forces_svg(analysis: Analysis, plan_position: PlanPosition, with_friction: bool = False) -> str:

@@ -540,11 +540,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     def reach_out(index: int, moving: bool = True, leading: bool = True,
                   shares: tuple[float, ...] = REACH_SHARES) -> bool:
         """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
-        reach (its leader as long as the rings at ``shares`` letter heights) whose box covers nothing and whose leader crosses no label and runs along no line: beside another point
-        of the line it names, or (``leading``) on a short leader from its point; else (``moving``) to such a spot one
-        neighbouring label stands on, when that neighbour reaches such a spot too, beside its point if it stood there.
-        Such a spot costs more than the line it leaves by the rules of :func:`costed`, which let a letter lie on one
-        line sooner than lead it off across two.  Whether the label moved."""
+        reach (its leader as long as the rings at ``shares`` letter heights) whose box covers nothing and whose leader
+        crosses no label and runs along no line: beside another point of the line it names, or (``leading``) on a short
+        leader from its point; else (``moving``) to such a spot one neighbouring label stands on, when that neighbour
+        reaches such a spot too, beside its point if it stood there.  Such a spot costs more than the line it leaves by
+        the rules of :func:`costed`, which let a letter lie on one line sooner than lead it off across two.  Whether
+        the label moved."""
         spot, shapes, is_led, usable = reachable(index, leading, shares)
         # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
         open_ = usable & (crossing_placed(shapes, leader_lines, index) == 0)
