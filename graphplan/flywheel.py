@@ -42,7 +42,7 @@ from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_
 from .errors import SceneError
 from .kinematics import read_only
 from .reader import Table, check_xy
-from .units import RPM
+from .units import RPM, percentage_question
 
 # A cycle whose work is left over by more than this share of the work done is not steady: the floor under the
 # integration's own error (EquivalentModel.work_uncertainty), below which a mismatch is not told from it.
@@ -471,7 +471,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     if delta is not None and not delta < 2:
         # δ = 5 for 5 % is the slip a student makes; delta_warning tells it below 2, this refusal must as well.
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta,
-                         hint=f"; a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
+                         hint=f"; {percentage_question(delta, 'δ')}")
     omega = table.speed(None, positive=True)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     if shaft is not None and delta is None:
@@ -605,7 +605,7 @@ def delta_warning(spec: DynamicsSpec) -> str | None:
         return None
     return (f"{spec.where}.delta: {delta:g} is above the {LARGEST_USUAL_DELTA:g} of the most unevenly running "
             f"machines (crushers, punches): the speed swings ωmax/ωmin = (2 + δ)/(2 − δ) = {ratio:.3g} over the turn; "
-            f"a percentage typed for a fraction? ({delta:g} % is δ = {delta / 100:g})")
+            f"{percentage_question(delta, 'δ')}")
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:

@@ -45,7 +45,7 @@ from .rotor_lengths import (
     Implausible,
     LengthsInMillimetres,
 )
-from .units import RPM
+from .units import RPM, percentage_question
 
 Scalar = float | np.ndarray
 #: Without damping, a speed this close to ωn (relative) is resonance: its amplitude is rounding's, not the machine's.
@@ -594,7 +594,7 @@ def damping_warning(spec: VibrationSpec) -> str | None:
     zeta = spec.damping_ratio
     if spec.damping is not None or not zeta > 1:
         return None
-    percentage = f"; a percentage typed for a fraction? ({zeta:g} % is ζ = {zeta / 100:g})" if zeta >= 2 else ""
+    percentage = f"; {percentage_question(zeta, 'ζ')}" if zeta >= 2 else ""
     return (f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1): the machine would creep back to rest "
             f"without vibrating, which no mount's damping does (a few hundredths to a few tenths){percentage}")
 
@@ -797,8 +797,7 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
     base = table.number("base_amplitude", None, positive=True)
     if wanted is not None and not wanted < 1:
         # "Isolate to 10 %" typed as 10: a TR up to 100 may be a percentage, and is told so.
-        percentage = (f"; a percentage typed for a fraction? ({wanted:g} % is TR = {wanted / 100:g})"
-                      if wanted < 100 else "")
+        percentage = f"; {percentage_question(wanted, 'TR')}" if wanted < 100 else ""
         raise SceneError(table.where("transmissibility"), "must be below 1: a mount isolates only where TR < 1",
                          wanted, hint=percentage)
     table.done()

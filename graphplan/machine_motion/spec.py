@@ -11,7 +11,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..reader import Table, check_number
-from ..units import RPM
+from ..units import RPM, percentage_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .method import refuse_endless_run_down, refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
@@ -138,8 +138,7 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         slip = table.number("rated_slip", None)
         if slip is not None and not 0 < slip < 1:
             # A catalogue's "sN = 4 %" typed as 4, as δ and ζ are told.
-            percentage = (f"; a percentage typed for a fraction? ({slip:g} % is rated_slip = {slip / 100:g})"
-                          if 1 <= slip < 100 else "")
+            percentage = f"; {percentage_question(slip, 'rated_slip')}" if 1 <= slip < 100 else ""
             raise SceneError(table.where("rated_slip"), "must be between 0 and 1", slip, hint=percentage)
         if slip is None:
             if not rated < synchronous:
