@@ -29,7 +29,16 @@ from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
 from .lookalikes import described, difference, full_width, lookalike_hint
 from .lookalikes import plain as lookalike_plain
-from .reader import Table, check_choice, check_int, check_number, check_str, check_xy, refuse_control_characters
+from .reader import (
+    Table,
+    check_choice,
+    check_int,
+    check_number,
+    check_str,
+    check_xy,
+    refuse_control_characters,
+    required_purpose,
+)
 from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
 
 # The stages a scene's verbs run import the scene.  The rotor's and the vibration's readers are imported where a
@@ -957,9 +966,9 @@ def _read_load(where: str, item: object) -> LoadSpec:
     if kind == "force":
         # Each missing key told at its own path: at loads[0] the student was left to find which of the two it was.
         table.misspelt(*(key for key in ("point", "angle") if not table.has(key)))
-        for key, purpose in (("point", _FORCE_POINT), ("angle", _FORCE_ANGLE)):
+        for key in ("point", "angle"):
             if not table.has(key):
-                raise SceneError(table.where(key), f"is required but missing: a force needs {purpose}")
+                raise SceneError(table.where(key), f"is required but missing{required_purpose(table.where(key))}")
     if kind == "moment":
         # A couple acts alike wherever on its link it is put: a point or a direction would say otherwise.
         for key in ("point", "angle"):
@@ -968,10 +977,6 @@ def _read_load(where: str, item: object) -> LoadSpec:
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
                     point=point, angle_deg=angle, diagram=diagram, stroke=stroke)
-
-
-_FORCE_POINT = "point, where it acts: a point fixed on its link (a joint or one of [points])"
-_FORCE_ANGLE = "angle, its direction in degrees from +x (counter-clockwise)"
 
 
 def _read_working(table: Table) -> Working:
