@@ -95,12 +95,11 @@ def layout(result: BalancingResult, text: Mapping[str, str] | None = None) -> li
     cursor = 0.0
     # A plane the scene places (two planes, or one at planes = [z]) is captioned with its z; a disc's is its masses'.
     placed = bool(result.spec.planes)
-    panels = [_polygon(plane, plane_scale(plane), words, placed) for plane in result.planes]
-    if (couple := static_couple(result)) is not None:
-        # One plane balances the masses' forces, not their moments about it: the couple left was told in a warning
-        # and the note alone, and the drawing, its polygon closed, read as a rotor balanced.
-        key, drawing, extent, caption = panels[-1]
-        panels[-1] = (key, drawing, extent, (*caption, words["bal_couple_left"].format(value=significant(couple))))
+    # None but for a one-plane balancing, whose only plane says it under its caption.
+    couple = static_couple(result)
+    last = len(result.planes) - 1
+    panels = [_polygon(plane, plane_scale(plane), words, placed, couple if k == last else None)
+              for k, plane in enumerate(result.planes)]
     height = max(y1 - y0 for _, _, (_, y0, _, y1), _ in panels)
     for key, drawing, (x0, y0, x1, y1), caption in panels:
         # Broken as a force polygon's caption is: a long equation of many named masses set no wider than the
@@ -155,10 +154,10 @@ def _extent(plane: CorrectionPlane) -> float:
     return max(max(xs) - min(xs), max(ys) - min(ys))
 
 
-def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
-             placed: bool) -> tuple[str, list[Layer], tuple[float, float, float, float], tuple[str, ...]]:
+def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str], placed: bool, couple: float | None = None
+             ) -> tuple[str, list[Layer], tuple[float, float, float, float], tuple[str, ...]]:
     """One plane's polygon at μ: its key, its layers, their bounds (mm) and its caption lines (with its z where the
-    scene ``placed`` it)."""
+    scene ``placed`` it, and last the ``couple`` Σ m·r·z a one-plane balancing leaves, kg·m², where given)."""
     key = f"plane-{plane.name}"
 
     def mm(value: complex) -> complex:
@@ -205,7 +204,7 @@ def _polygon(plane: CorrectionPlane, scale: float, text: Mapping[str, str],
     layers = [Layer(f"{key}-reference", tuple(angle_marks + leaders)), Layer(f"{key}-vectors", tuple(arrows + pole)),
               Layer(f"{key}-leaders", labels.leaders), Layer(f"{key}-labels", labels.texts)]
     extent = bounds_of(item for layer in layers for item in layer.items)
-    return key, layers, extent, _caption(plane, None if empty else scale, text, placed)
+    return key, layers, extent, _caption(plane, None if empty else scale, text, placed, couple)
 
 
 def _beside(plane: CorrectionPlane, mm, folded: dict[int, complex] | None = None) -> complex:
@@ -323,8 +322,10 @@ def _angle_marks(plane: CorrectionPlane, correction: complex, tail: complex, rad
     return marks
 
 
-def _caption(plane: CorrectionPlane, scale: float | None, text: Mapping[str, str], placed: bool) -> tuple[str, ...]:
-    """The plane's caption lines; ``scale`` None for a polygon with nothing drawn, which has none."""
+def _caption(plane: CorrectionPlane, scale: float | None, text: Mapping[str, str], placed: bool,
+             couple: float | None = None) -> tuple[str, ...]:
+    """The plane's caption lines; ``scale`` None for a polygon with nothing drawn, which has none; the ``couple`` a
+    one-plane balancing leaves last, where given."""
     title = (text["bal_plane"].format(name=plane.name, position=_given(plane.position))
              if placed else text["bal_disc"].format(name=plane.name))
     lines = [title, *([] if scale is None else [text["bal_scale"].format(value=format_scale(scale))]), plane.equation,
@@ -334,6 +335,10 @@ def _caption(plane: CorrectionPlane, scale: float | None, text: Mapping[str, str
     if plane.mass is not None and plane.radius is not None:
         lines.append(text["bal_mass"].format(name=plane.name, mass=significant(plane.mass),
                                                    radius=_given(plane.radius)))
+    if couple is not None:
+        # One plane balances the masses' forces, not their moments about it: the couple left was told in a warning
+        # and the note alone, and the drawing, its polygon closed, read as a rotor balanced.
+        lines.append(text["bal_couple_left"].format(value=significant(couple)))
     return tuple(lines)
 
 
