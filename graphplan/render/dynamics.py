@@ -18,10 +18,9 @@ from __future__ import annotations
 
 import itertools
 import math
-import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 import shapely
@@ -110,8 +109,16 @@ AXIS_WORDS_GAP_MM = 0.6
 # numbers.  Nearer, two numbers ran together into one ("0.05 0.075" read as one figure), and a label read as one of
 # the numbers (ωmin at φ = 0, hung left of the ΔT axis beside its "0", as the axis's numbering).
 NUMBER_GAP_MM = text_width("0", LABEL)
-# What an axis's numbers are written as: short()'s figures, a true minus, the locale's decimal mark.
-_NUMERAL = re.compile(r"[−-]?\d+(?:[.,]\d+)?")
+
+
+class _Diagram(NamedTuple):
+    """A diagram's primitives, and among them the numbers of each of its axes, an axis's apart: told by the axis that
+    writes them, not guessed afterwards from the look of a text (figures alone) and its anchor, which any other text of
+    figures would pass."""
+
+    items: list[Primitive]
+    numberings: list[list[Text]]
+
 
 @dataclass(frozen=True)
 class Scales:
@@ -216,10 +223,10 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
                       words["dyn_energy_scale"].format(value=format_scale(scales.energy)), words["dyn_energy"], scales,
                       words)
     if flywheel is not None:
-        energy += _speed_extremes(model, flywheel, scales, energy)
+        energy.items.extend(_speed_extremes(model, flywheel, scales, energy))
     layers: list[Layer] = []
     bottom = GAP_MM
-    for name, items in (("moments", moments), ("works", works), ("energy", energy)):
+    for name, items in (("moments", moments.items), ("works", works.items), ("energy", energy.items)):
         dy = bottom - GAP_MM - bounds_of(items)[3]
         layers.append(_layer(name, items, 0.0, dy))
         bottom = bounds_of(layers[-1].items)[1]
@@ -242,7 +249,7 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
         rings = [(_travel(model, plan.driver) / scales.angle, plan.inertia) for plan in model.plans]
         mass = _diagram(x, [(model.inertia, _CURVE, "")], mass_scale, model, words["dyn_mass_axis"],
                         words["dyn_mass_scale"].format(value=format_scale(mass_scale)), words["dyn_mass"], scales,
-                        words, floor=True, rings=rings, rings_legend=words["dyn_mass_plans"])
+                        words, floor=True, rings=rings, rings_legend=words["dyn_mass_plans"]).items
         layers.append(_layer("inertia", mass, 0.0, bottom - GAP_MM - bounds_of(mass)[3]))
         left_bottom = bounds_of(layers[-1].items)[1]
     results = _results(model, flywheel, words)
@@ -265,7 +272,7 @@ def _span(values: np.ndarray) -> float:
 
 def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: str, scale_text: str,
              heading: str, scales: Scales, words: Mapping[str, str], floor: bool = False,
-             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "") -> list[Primitive]:
+             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "") -> _Diagram:
     """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
 
     ``floor`` starts the ordinate at a round value under the smallest rather than at zero (a reduced mass far from
@@ -290,8 +297,9 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     if bottom_mm * scale < lowest_tick - step / 2:
         bottom_mm = (lowest_tick - step) / scale
     width = float(x[-1])
-    items: list[Primitive] = _abscissa(model, scales, width, bottom_mm, top_mm + lift, words)
-    items += ordinate_axis(0.0, bottom_mm, top_mm, scale, base, axis, step, broken_mm=lift)
+    items, across = _abscissa(model, scales, width, bottom_mm, top_mm + lift, words)
+    ordinate, up = _ordinate_axis(0.0, bottom_mm, top_mm, scale, base, axis, step, broken_mm=lift)
+    items += ordinate
     for data, stroke, _ in curves:
         y = lift + (np.asarray(data) - base) / scale
         items.append(Polyline(tuple(zip(x.tolist(), y.tolist())), stroke))
@@ -311,7 +319,7 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items += [Circle((at, lift + (value - base) / scale), PLAN_RING_MM, THIN, None) for at, value in rings]
         items.append(Circle((cursor + PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((cursor + 2 * PLAN_RING_MM + 2.0, scale_y), rings_legend, LABEL, "start"))
-    return items
+    return _Diagram(items, [across, up])
 
 
 def _ordinate_step(values: np.ndarray, base: float = 0.0) -> float:
@@ -323,9 +331,11 @@ def _ordinate_step(values: np.ndarray, base: float = 0.0) -> float:
 
 
 def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: float, top_mm: float,
-              words: Mapping[str, str]) -> list[Primitive]:
-    """The φ axis at y = 0 (its arrow past the cycle), with a thin grid and the ticks' values under the diagram."""
+              words: Mapping[str, str]) -> tuple[list[Primitive], list[Text]]:
+    """The φ axis at y = 0 (its arrow past the cycle), with a thin grid and the ticks' values under the diagram; and
+    those values' texts apart."""
     items: list[Primitive] = [Arrow((0.0, 0.0), (width + AXIS_RUN_MM, 0.0), THIN, head=2.5)]
+    numbers: list[Text] = []
     if model.turning:
         ticks = [(psi / scales.angle, label) for psi, label in _angle_ticks(model)]
         name = words["dyn_angle_axis"]
@@ -338,15 +348,16 @@ def _abscissa(model: EquivalentModel, scales: Scales, width: float, bottom_mm: f
         if at > 0:
             items.append(Polyline(((at, bottom_mm), (at, top_mm)), _GRID))
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
-        items.append(Text((at, bottom_mm - LABEL - 2.5), label, LABEL, "middle"))
+        numbers.append(Text((at, bottom_mm - LABEL - 2.5), label, LABEL, "middle"))
+        items.append(numbers[-1])
     items.append(Text((width + AXIS_RUN_MM + 1.5, -LABEL / 2), name, LABEL, "start"))
-    return items
+    return items, numbers
 
 
-def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales,
-                    drawn: Sequence[Primitive]) -> list[Primitive]:
+def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales, diagram: _Diagram) -> list[Primitive]:
     """The crank angles of ωmax and ωmin on ΔT(φ): a tick across the φ axis, named, and a thin ordinate from it to
     the curve, as a course project marks them.  With Je varying they need not lie at the extremes of ΔT."""
+    drawn = diagram.items
     items: list[Primitive] = []
     anchors: list[Anchor] = []
     for name, index in (("ωmax", flywheel.index_max), ("ωmin", flywheel.index_min)):
@@ -361,22 +372,22 @@ def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales,
     # shaper's ωmin stood 0.16 mm from the 210° tick and the compressor's 0.15 mm from the 180° grid line.
     axes = [shapely.buffer(shapely.linestrings((item.start, item.end)), AXIS_WORDS_GAP_MM)
             for item in drawn if isinstance(item, Arrow)]
-    placed = place_labels(anchors, obstacles_of([*drawn, *items]) + _numbering(drawn) + axes)
+    placed = place_labels(anchors, obstacles_of([*drawn, *items]) + _numbering(diagram.numberings) + axes)
     return items + list(placed.leaders) + list(placed.texts)
 
 
-def _numbering(drawn: Sequence[Primitive]) -> list[BaseGeometry]:
-    """The bands an axis's numbers stand in, each a letter's width wider every way: an ordinate's column of numbers
-    (right-aligned at one x) from the lowest to the highest, an abscissa's row (at one baseline) from the first to the
-    last.  A label anywhere in such a band, between two numbers too, reads as one of them."""
-    bands: dict[tuple[str, float], list[tuple[float, float, float, float]]] = {}
-    for item in drawn:
-        if isinstance(item, Text) and _NUMERAL.fullmatch(item.text) is not None:
-            key = ("column", item.at[0]) if item.anchor == "end" else ("row", item.at[1])
-            bands.setdefault(key, []).append(text_extent(item))
-    return [shapely.box(min(b[0] for b in extents) - NUMBER_GAP_MM, min(b[1] for b in extents) - NUMBER_GAP_MM,
-                        max(b[2] for b in extents) + NUMBER_GAP_MM, max(b[3] for b in extents) + NUMBER_GAP_MM)
-            for extents in bands.values()]
+def _numbering(numberings: Sequence[Sequence[Text]]) -> list[BaseGeometry]:
+    """The bands the axes' numbers stand in, one an axis, each a letter's width wider every way: an ordinate's column
+    of numbers from the lowest to the highest, an abscissa's row from the first to the last.  A label anywhere in such
+    a band, between two numbers too, reads as one of them."""
+    bands = []
+    for numbers in numberings:
+        if not numbers:
+            continue
+        x0s, y0s, x1s, y1s = zip(*(text_extent(number) for number in numbers))
+        bands.append(shapely.box(min(x0s) - NUMBER_GAP_MM, min(y0s) - NUMBER_GAP_MM,
+                                 max(x1s) + NUMBER_GAP_MM, max(y1s) + NUMBER_GAP_MM))
+    return bands
 
 
 def ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str,
@@ -385,29 +396,40 @@ def ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base:
     default about a quarter of the range).  ``base`` stands at ``broken_mm`` over the abscissa (``bottom_mm`` and
     ``top_mm`` are counted from it); where that is above it, the abscissa is nought, ticked so, and the axis is
     broken between them by a zig-zag."""
+    return _ordinate_axis(x, bottom_mm, top_mm, scale, base, name, step, broken_mm)[0]
+
+
+def _ordinate_axis(x: float, bottom_mm: float, top_mm: float, scale: float, base: float, name: str,
+                   step: float | None = None, broken_mm: float = 0.0) -> tuple[list[Primitive], list[Text]]:
+    """:func:`ordinate_axis`, and its numbers' texts apart."""
     items: list[Primitive] = [Polyline(((x, bottom_mm + broken_mm), (x, broken_mm)), THIN),
                               Arrow((x, broken_mm), (x, top_mm + broken_mm + AXIS_RUN_MM), THIN, head=2.5)]
+    numbers: list[Text] = []
     if broken_mm > 0:
-        items += _break_mark(x, broken_mm)
+        lines, nought = _break_mark(x, broken_mm)
+        items += [*lines, nought]
+        numbers.append(nought)
     low, high = base + bottom_mm * scale, base + top_mm * scale
     step = step or nice_step((high - low) / 4)
     first = math.ceil(low / step - 1e-9) * step
     for value in np.arange(first, high + step * 1e-9, step):
         at = broken_mm + (value - base) / scale
         items.append(Polyline(((x - TICK_MM, at), (x, at)), THIN))
-        items.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), short(value), LABEL, "end"))
+        numbers.append(Text((x - TICK_MM - 1.0, at - LABEL / 2), short(value), LABEL, "end"))
+        items.append(numbers[-1])
     items.append(Text((x + 2.0, top_mm + broken_mm + AXIS_RUN_MM - LABEL), name, LABEL, "start"))
-    return items
+    return items, numbers
 
 
-def _break_mark(x: float, lift: float) -> list[Primitive]:
+def _break_mark(x: float, lift: float) -> tuple[list[Primitive], Text]:
     """The axis from nought at the abscissa up to ``lift``, where its values resume, with a zig-zag halfway across
-    it: the values between are left out, as a draftsman marks it; nought ticked and numbered."""
+    it: the values between are left out, as a draftsman marks it; nought ticked, and its number apart."""
     middle = lift / 2
     w = BREAK_HALF_WIDTH_MM
     zigzag = ((x, middle - w), (x - w, middle - w / 2), (x + w, middle + w / 2), (x, middle + w))
-    return [Polyline(((x, 0.0), zigzag[0]), THIN), Polyline(zigzag, THIN), Polyline((zigzag[-1], (x, lift)), THIN),
-            Polyline(((x - TICK_MM, 0.0), (x, 0.0)), THIN), Text((x - TICK_MM - 1.0, -LABEL / 2), short(0.0), LABEL, "end")]
+    lines: list[Primitive] = [Polyline(((x, 0.0), zigzag[0]), THIN), Polyline(zigzag, THIN),
+                              Polyline((zigzag[-1], (x, lift)), THIN), Polyline(((x - TICK_MM, 0.0), (x, 0.0)), THIN)]
+    return lines, Text((x - TICK_MM - 1.0, -LABEL / 2), short(0.0), LABEL, "end")
 
 
 def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scales,
@@ -463,10 +485,16 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     # steep tangent, a fast machine's, crossing the axis at the tick itself), it keeps a spot only a tangent runs
     # through, and the tangent is broken under it, as ГОСТ 2.307 breaks a line under a dimension's number; the curve
     # too, last of all.  Left out, as it was, the axis read 0.025, ·, 0.075 under a scale that says nothing of a gap.
-    drawn = obstacles_of(items)
-    beside_the_tangents = obstacles_of([item for item in items if not any(item is line for line in tangents)])
-    beside_the_lines = obstacles_of([item for item in items if item is not curve_line
-                                     and not any(item is line for line in tangents)])
+    # Each item's shapes kept with it (an arrow has two), so that the lines a number may stand over are left out
+    # of what was drawn by the items they come of.
+    shaped = [(item, obstacles_of([item])) for item in items]
+
+    def shapes_but(left_out: Sequence[Primitive]) -> list[BaseGeometry]:
+        return [shape for item, shapes in shaped if not any(item is line for line in left_out) for shape in shapes]
+
+    drawn = shapes_but(())
+    beside_the_tangents = shapes_but(tangents)
+    beside_the_lines = shapes_but([*tangents, curve_line])
     near = LABEL + TICK_MM + 2.0
     every_tick = _inertia_ticks(model, scales)
     ticks = [(value, at) for value, at, numbered in every_tick if numbered]
