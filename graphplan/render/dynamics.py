@@ -506,7 +506,9 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     (_, _, letter_y), (_, _, other_y) = sorted(sides)
     items += ordinate_axis(0.0, min(bottom_mm, 0.0), max(top_mm, 0.0), scales.energy, 0.0, words["dyn_energy_axis"],
                            _ordinate_step(model.energy))
-    items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
+    # Past the curve and past its last tick, which a coarser step may carry beyond the curve.
+    axis_to = max(width, every_tick[-1][1])
+    items.append(Arrow((0.0, 0.0), (axis_to + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
     numbers: list[Text] = []
     over_tangents: list[Text] = []
     over_lines: list[Text] = []
@@ -535,7 +537,7 @@ def _energy_mass(model: EquivalentModel, flywheel: Flywheel | None, scales: Scal
     items = broken_under(items, over_lines, [item for item in items if item is curve_line])
     items += [Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN) for _, at, _ in every_tick]
     items += numbers
-    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
+    items.append(Text((axis_to + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     scale_y = max(top_mm, 0.0) + AXIS_RUN_MM + 3.0
     items.append(Text((0.0, scale_y + LABEL + 2.5), words["dyn_energy_mass"], HEADING, "start", weight="bold"))
     items.append(Text((0.0, scale_y), f"{words['dyn_inertia_scale'].format(value=format_scale(scales.inertia))}, "
@@ -593,12 +595,15 @@ def _inertia_turned(model: EquivalentModel, scales: Scales, words: Mapping[str, 
         at = -psi / angle
         items.append(Polyline(((-TICK_MM, at), (TICK_MM, at)), THIN))
         items.append(Text((-TICK_MM - 1.0, at - LABEL / 2), label, LABEL, "end"))
-    items.append(Arrow((0.0, 0.0), (width + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
-    for value, at, numbered in _inertia_ticks(model, scales):
+    ticks = _inertia_ticks(model, scales)
+    # Past the curve and past its last tick, which a coarser step may carry beyond the curve.
+    axis_to = max(width, ticks[-1][1])
+    items.append(Arrow((0.0, 0.0), (axis_to + AXIS_RUN_MM + 12.0, 0.0), THIN, head=2.5))
+    for value, at, numbered in ticks:
         items.append(Polyline(((at, -TICK_MM), (at, TICK_MM)), THIN))
         if numbered:
             items.append(Text((at, TICK_MM + 1.0), short(value), LABEL, "middle"))
-    items.append(Text((width + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
+    items.append(Text((axis_to + AXIS_RUN_MM + 13.5, -LABEL / 2), words["dyn_inertia_axis"], LABEL, "start"))
     # Headed above its Je axis's lettering, as the other diagrams are above theirs.
     scale_y = TICK_MM + 1.0 + LABEL + 2.5
     if model.plans:
@@ -632,15 +637,40 @@ def _inertia_ticks(model: EquivalentModel, scales: Scales) -> list[tuple[float, 
     """(Je, its abscissa in mm, whether it is numbered) of the ticks of Je: round steps, about four to the largest
     Je; every one numbered where the numbers stand a letter's width apart (:data:`NUMBER_GAP_MM`) at that step,
     else every second (third, ...) one, at the multiples of that many steps, as the kinematic diagrams number their
-    positions: 0.05 and 0.075 twelve millimetres apart at μJ = 0.002 ran together."""
+    positions: 0.05 and 0.075 twelve millimetres apart at μJ = 0.002 ran together.
+
+    Where that leaves fewer than two numbers, the ticks go to the coarsest step of the 1-2-5 series that needs no
+    thinning, every one numbered, carried past the largest Je to a second tick where the curve stops short of it: one
+    number alone (0.05 between bare ticks at 0.025 and 0.075, the compressor's) gives no scale to read the axis by."""
     largest = float(np.max(model.inertia))
     step = nice_step(largest / 4)
     values = [float(value) for value in np.arange(step, largest + step * 1e-9, step)]
+    every = _numbered_every(values, step, scales.inertia)
+    ticks = [(value, value / scales.inertia, round(value / step) % every == 0) for value in values]
+    if sum(numbered for _, _, numbered in ticks) >= 2:
+        return ticks
+    while True:
+        step = _coarser(step)
+        count = max(2, math.floor(largest / step + 1e-9))
+        values = [k * step for k in range(1, count + 1)]
+        if _numbered_every(values, step, scales.inertia) == 1:
+            return [(value, value / scales.inertia, True) for value in values]
+
+
+def _numbered_every(values: Sequence[float], step: float, scale: float) -> int:
+    """How many ticks at ``step`` apart (``scale`` a unit per mm) each number of ``values`` written centred on its
+    tick takes so as to stand a letter's width (:data:`NUMBER_GAP_MM`) from its neighbour's: 1, or 2 for every other
+    tick, ..."""
     halves = [text_width(short(value), LABEL) / 2 for value in values]
     # Two neighbours' numbers, each centred on its tick, need half of each one's width and the gap between the ticks.
     needed = max((sum(pair) + NUMBER_GAP_MM for pair in itertools.pairwise(halves)), default=0.0)
-    every = max(1, math.ceil(needed / (step / scales.inertia) - 1e-9))
-    return [(value, value / scales.inertia, round(value / step) % every == 0) for value in values]
+    return max(1, math.ceil(needed / (step / scale) - 1e-9))
+
+
+def _coarser(step: float) -> float:
+    """The next step of the 1-2-5 series above ``step``: 0.05 after 0.025 or 0.02, 0.1 after 0.05."""
+    power = 10.0 ** math.floor(math.log10(step) + 1e-9)
+    return next(mantissa * power for mantissa in (1.0, 2.0, 5.0, 10.0) if mantissa * power > step * (1 + 1e-9))
 
 
 def _angle_ticks(model: EquivalentModel) -> list[tuple[float, str]]:
