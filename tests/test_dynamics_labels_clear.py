@@ -158,9 +158,10 @@ def test_the_numbers_of_one_axis_stand_a_letter_apart(drawings, kind, locale):
             assert _gap(a, b) >= LETTER - 1e-6, f"{kind} {locale}: numbers at {a.bounds} and {b.bounds}"
 
 
-def test_the_compressors_je_numbers_are_thinned_to_every_other_tick_and_keep_their_values(drawings):
-    """At μJ = 0.002 kg·m²/mm a step of 0.025 is 12.5 mm, and 0.05 beside 0.075 left under a letter between them:
-    every other tick numbered, each number still at its own tick (value / μJ from the Je axis's origin)."""
+def test_the_compressors_je_numbers_go_to_a_coarser_step_and_keep_their_values(drawings):
+    """At μJ = 0.002 kg·m²/mm a step of 0.025 is 12.5 mm, and 0.05 beside 0.075 left under a letter between them;
+    every other tick numbered left 0.05 alone.  The ticks go to the next step of 1-2-5, 0.05, and run on to 0.1,
+    each numbered at its own tick (value / μJ from the Je axis's origin)."""
     svg = drawings["compressor", "en"]
     groups = {g.get("id"): g for g in ElementTree.parse(svg).getroot().iter(f"{SVG}g") if g.get("id")}
     turned = groups["inertia"]
@@ -171,12 +172,12 @@ def test_the_compressors_je_numbers_are_thinned_to_every_other_tick_and_keep_the
                         and t.get("text-anchor") == "end")) + 1.0 + 1.2
     scale = 0.002
     values = [float(words) for words, _ in numbers]
-    assert values == [0.05]
+    assert values == [0.05, 0.1]
     for words, x in numbers:
         assert x - origin == pytest.approx(float(words) / scale, abs=0.01)
     ticks = [float(m.group(2)) - float(m.group(3)) for p in turned.iter(f"{SVG}path")
              if (m := re.fullmatch(r"M([\d.]+),([\d.]+) L\1,([\d.]+)", p.get("d")))]
-    assert sum(abs(length - 2.4) < 0.01 for length in ticks) == 3   # 0.025, 0.05 and 0.075 all ticked
+    assert sum(abs(length - 2.4) < 0.01 for length in ticks) == 2   # 0.05 and 0.1 ticked, each numbered
 
 
 @pytest.mark.parametrize(("kind", "locale"), DRAWINGS)

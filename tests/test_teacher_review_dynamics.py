@@ -609,8 +609,9 @@ def test_the_je_numbers_of_the_energy_mass_diagram_stand_clear_of_its_tangents_a
     ticks = sorted(round((p[0, 0] - origin) * _number(scales[1]), 9) for p in black
                    if len(p) == 2 and abs(p[0, 0] - p[1, 0]) < 1e-9 and min(p[:, 1]) < axis_y < max(p[:, 1]))
     # Every tick kept, at a round step, and numbered each, or every other where the numbers would stand closer than a
-    # letter (tests/test_dynamics_labels_clear.py): every tick at a multiple of the numbers' step has its number.
-    assert ticks == pytest.approx([ticks[0] * k for k in range(1, len(ticks) + 1)]) and len(ticks) >= 3
+    # letter (tests/test_dynamics_labels_clear.py): every tick at a multiple of the numbers' step has its number.  The
+    # compressor's, which every other tick left one number, is ticked at a coarser step, 0.05 and 0.1.
+    assert ticks == pytest.approx([ticks[0] * k for k in range(1, len(ticks) + 1)]) and len(ticks) >= 2
     every = round(min(written) / ticks[0])
     numbered = [tick for k, tick in enumerate(ticks, 1) if k % every == 0]
     assert sorted(written) == pytest.approx(numbered), (written, ticks)
