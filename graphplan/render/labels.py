@@ -129,6 +129,9 @@ LED_SHARES = (1.1, 1.8)
 APART_SHARES = (3.2, 4.8)
 # Farther still, tried only where every spot on those rings covers another label or a leader.
 FAR_SHARES = (6.6, 8.6, 11.0)
+# The rings whose spots a label is costed on first: those beside the point.  The spots farther out, a spot on ring r
+# costing RING × r and more, are costed only when none of these costs less (nought: all are costed at once).
+FIRST_RINGS = len(BESIDE_SHARES)
 # What covering another label or leader costs: more than any spot that covers only drawn lines.
 OVERLAP = 1000.0
 LEADERS_CROSSING = 60.0
@@ -236,8 +239,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     polygon has no clear spot near it, and read crossed by its own vector;
     on a longer leader it stands clear.
 
-    All spots of one anchor are costed at once by shapely's array
+    The spots of one anchor are costed at once by shapely's array
     functions: a sheet has a few hundred labels and ninety-six spots each.
+    Those beside the point are costed first, and the rest only when one
+    of them could cost less (:data:`FIRST_RINGS`): most labels stand beside
+    their points.
     """
     fixed = list(obstacles)
     weights = np.array([HEAVY if shape.geom_type in ("Polygon", "MultiPolygon") else 1.0 for shape in fixed])
@@ -289,14 +295,30 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     # each anchor and kind of spot (a label is placed again in the repairs, and its neighbours with it).
     drawn_costs: dict[tuple, tuple] = {}
 
-    def costed(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int = 16):
+    def costed(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int = 16, first: int = 0):
         """The spots on the rings at ``shares`` round the anchor, numbered ``rings`` (a ring between two of the
         standard rings costs between them): their boxes, their rings, the leaders of those led, and what each
-        costs."""
+        costs.  With ``first``, only the spots of the first rings when one of them costs less than any spot farther
+        out can (:data:`FIRST_RINGS`); the spots are numbered ring by ring, so theirs keep their numbers."""
+        if first and (index, shares, directions) not in drawn_costs:
+            spot = with_labels(index, on_drawing(index, shares[:first], rings[:first], directions))
+            # Most labels stand beside their points: the spots farther out, and their leaders, are then never
+            # costed, nor what they cover of the drawing asked of the tree.
+            if spot.cost.min() < RING * rings[first]:
+                return spot
+        return with_labels(index, on_drawing(index, shares, rings, directions))
+
+    def on_drawing(index: int, shares: tuple[float, ...], rings: np.ndarray, directions: int) -> tuple:
+        """:func:`costed_on_drawing`'s, found once."""
         key = (index, shares, directions)
         if key not in drawn_costs:
             drawn_costs[key] = costed_on_drawing(index, shares, rings, directions)
-        candidates, beside, led, lines, line_bounds, shapes, covering, drawn_cost = drawn_costs[key]
+        return drawn_costs[key]
+
+    def with_labels(index: int, drawn: tuple) -> _Spots:
+        """:func:`costed`'s spots with what they cost on the drawing (``drawn``, :func:`costed_on_drawing`'s) and what
+        covering the labels and the leaders placed (but the label of ``index``) adds."""
+        candidates, beside, led, lines, line_bounds, shapes, covering, drawn_cost = drawn
         # A spot's box is its candidate's bounds.
         labels, leaders = others_than(placed_boxes, index), others_than(leader_lines, index)
         clashing = OVERLAP * (crossing(shapes, candidates, labels) + crossing(shapes, candidates, leaders))
@@ -355,7 +377,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                         for share in (*BESIDE_SHARES, *LED_SHARES) for turn in standard_turns])
 
     def spots(index: int, kind: str = "near"):
-        return costed(index, *kinds[kind])
+        return costed(index, *kinds[kind], first=FIRST_RINGS if kind == "near" else 0)
 
     def put(index: int, spot: _Spots, best: int, kind: str) -> None:
         """Set the label of ``index`` at spot ``best`` of ``spot`` (what :func:`costed` gave)."""
