@@ -8,7 +8,9 @@ placed again here with every spot costed at once.
 
 from pathlib import Path
 
+import numpy as np
 import pytest
+import shapely
 from label_bench import label_clutter
 
 from graphplan.render import labels
@@ -76,3 +78,28 @@ def test_the_spots_farther_out_are_asked_of_the_drawing_for_few_labels(label_set
     all_at_once = shapes_asked()
     # The spots beside a point are a third of its boxes and none of its leaders (96 boxes and 64 leaders a label).
     assert first_rings_first < 0.6 * all_at_once
+
+
+def test_what_the_first_spots_cover_asked_at_once_is_what_each_covers_asked_alone(label_sets):
+    # The placer asks the drawing's tree (its lines cut into their segments, labels._pieces) which obstacles all the
+    # spots of a label's first rings meet, in one query, a line met once however many of its segments are met; asked
+    # here of each spot's box alone, against every obstacle whole.
+    spots = 0
+    for anchors, obstacles, args, kwargs, _ in label_sets[:12]:
+        if not obstacles:
+            continue
+        whole = np.array(obstacles, dtype=object)
+        pieces, owners = labels._pieces(obstacles)
+        tree = shapely.STRtree(pieces)
+        for anchor in anchors:
+            gap = args[0] if args else kwargs.get("gap", labels.LABEL_GAP_MM)
+            _, _, boxes = labels._candidates(anchor, gap, labels.BESIDE_SHARES[:labels.FIRST_RINGS])
+            shapes = shapely.box(*boxes.T)
+            spot, piece = tree.query(shapes, predicate="intersects")
+            at_once = [set() for _ in shapes]
+            for one, other in zip(spot.tolist(), owners[piece].tolist()):
+                at_once[one].add(other)
+            alone = [set(np.flatnonzero(shapely.intersects(box, whole)).tolist()) for box in shapes]
+            assert at_once == alone, anchor.text
+            spots += len(shapes)
+    assert spots > 1000
