@@ -325,9 +325,11 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
             near = min((start, end), key=lambda end_: abs(end_ - point))
             leaders.append(Polyline((_xy(point), _xy(near)), Stroke(_LEADER_WIDTH, force.stroke.colour)))
         drawn[force.name] = (start - shift, end - shift, unit)
-        # Named at the arrow's free end: its head, or its tail when it points onto its joint.
+        # Named at the arrow's free end: its head, or its tail when it points onto its joint; beside its shaft, or led
+        # from it, it names the arrow as well.
         free, outward = (start, -unit) if _points_onto(start, end, point + shift) else (end, unit)
-        anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour))
+        anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour,
+                              along=(arrow.start, arrow.end)))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
     circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
     arms, arm_anchors, equations = _arms(sheet, group, drawn, paper)
@@ -336,12 +338,15 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     arm_anchors += displaced_anchors
     arrows += leaders
     figure = links + arrows + turning + circles + arms
-    for name in _named_points(sheet, group) + special_names:
-        where = paper(sheet.positions[name])
-        anchors.append(Anchor(where, name, POINT_SIZE, open_direction(where, figure)))
-    # Left on a line, a name keeps its place beside its arrow: set far out on a leader among a group's arms and
-    # arcs it reads as naming another, and a group drawn with its names farther out stands larger on its sheet.
-    labels = _lettered(anchors + turning_anchors + circle_anchors + arm_anchors, figure, reach_farther=False)
+    # Left on a line, a load's name reaches farther out on a leader from its arrow's shaft (its anchor's ``along``),
+    # which ties it to its arrow among the group's arms and arcs (the triad with a slider's Fu6 lay on its own line
+    # of action run on to its arm, every leader from its head to a clear spot crossing another name); a point's,
+    # a moment's or an arm's name keeps its place: led far out from a thin arm in the star of arms at Σ6 (the class
+    # III triad's h3 and h8 on its A3 sheet of position 8), it reads as naming another.
+    points = [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
+              for name in _named_points(sheet, group) + special_names for where in [paper(sheet.positions[name])]]
+    others = points + turning_anchors + circle_anchors + arm_anchors
+    labels = _lettered(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others))
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                                    text["body_force_scale"].format(value=format_scale(scale),
@@ -1257,7 +1262,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                              Layer("lever-labels", labels.texts)], tuple(caption))
 
 
-def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], reach_farther: bool = True) -> Placement:
+def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
+              reach_farther: bool | Sequence[bool] = True) -> Placement:
     """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot.
 
     A label covering another one's anchor (the tail of a moment's arc)

@@ -165,7 +165,8 @@ KEPT_OFF = 3 * COVER
 REACH_SHARES = (1.1, 1.8, 2.5, 3.2)
 # A label on a line even so, every clear spot within that reach held by neighbours that cannot all stand clear
 # elsewhere (n6″ where a triad's plan crowds n3, n6 and σ6 at the end of its rays), reaches out farther on its leader,
-# ring by ring, as far as the farthest ring tried for a label that covers another (``place_labels``' reach_farther).
+# ring by ring, as far as the farthest ring tried for a label that covers another (``place_labels``' reach_farther); a
+# label naming a line led from any point of it beside which it may stand (a load's name from its arrow's shaft).
 FARTHER_SHARES = (4.0, 4.8, 5.7, 6.6, 8.6, 11.0)
 SLIDE_STEP = 1.5
 SLIDE = 9.0
@@ -184,7 +185,8 @@ LABEL_GAP_MM = 1.2
 
 
 def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = LABEL_GAP_MM,
-                 standing: Sequence[Text] = (), off_lines: bool = False, reach_farther: bool = True) -> Placement:
+                 standing: Sequence[Text] = (), off_lines: bool = False,
+                 reach_farther: bool | Sequence[bool] = True) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 
     Another label or leader is never covered when any spot avoids it.  A
@@ -217,8 +219,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     on a line after all that (every clear spot within reach held by
     neighbours that cannot all stand clear elsewhere) reaches farther out
     on its leader (``reach_farther``), as far as the rings tried for a
-    label that would cover another: on a line its letters are misread,
-    a leader across a few lines still leads to it.  A label keeps out of
+    label that would cover another, and one naming a line (a load's
+    arrow) from any point of it, as a draughtsman leads a crowded
+    arrow's name from its shaft: on a line its letters are misread, a
+    leader across a few lines still leads to it.  A label keeps out of
     its anchor's ``keep_off`` wherever that costs less than three lines
     covered.
 
@@ -227,11 +231,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 
     ``reach_farther`` False leaves a label on a line where the caller has a
     way of its own for it: the plan of positions letters it beside its
-    point and breaks the thin lines under it, the lever names its arrow
-    under the drawing, and a group cut free keeps it beside its arrow
-    (far out among its arms and arcs a name reads as naming another
-    arrow, and the group, its μl chosen with its labels as placed, stood
-    larger on its sheet).
+    point and breaks the thin lines under it, and the lever names its
+    arrow under the drawing.  Given anchor by anchor, it lets only some
+    reach farther: a group cut free leads a load's name out from its
+    arrow's shaft, but leaves an arm's name where it lies (led far out from
+    a thin arm among the star of arms at a point it reads as naming
+    another).
 
     ``off_lines`` keeps the labels off the drawn lines wherever any spot,
     farther out too, does, for a drawing of few lines with room round them
@@ -498,22 +503,25 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     # Every standard ring, near and far: those a label reaches to are numbered as the ones they fall between.
     all_shares = (*near_shares, *FAR_SHARES)
 
-    reachable_on_drawing: dict[tuple[int, bool, tuple[float, ...]], tuple] = {}
+    reachable_on_drawing: dict[tuple[int, bool, tuple[float, ...], bool], tuple] = {}
 
-    def reachable(index: int, leading: bool = True, shares: tuple[float, ...] = REACH_SHARES):
+    def reachable(index: int, leading: bool = True, shares: tuple[float, ...] = REACH_SHARES,
+                  from_line: bool = False):
         """The spots within reach of the label of ``index`` (:func:`reach_out`'s): their costs (as :class:`_Spots`),
         their boxes as shapes, which are led, and which may hold it as far as the drawing goes: the box covering
         nothing, and standing where the anchor lets it (none within its ``keep_off``, no leader where not
-        ``leading``, no long name led from a spot that reaches back over its own point)."""
-        if (index, leading, shares) not in reachable_on_drawing:
-            reachable_on_drawing[index, leading, shares] = reachable_drawn(index, leading, shares)
-        spot, shapes, is_led, usable = reachable_on_drawing[index, leading, shares]
+        ``leading``, no long name led from a spot that reaches back over its own point); led from its point alone, or
+        (``from_line``) from any point of the line it names beside which it may stand too."""
+        key = (index, leading, shares, from_line)
+        if key not in reachable_on_drawing:
+            reachable_on_drawing[key] = reachable_drawn(*key)
+        spot, shapes, is_led, usable = reachable_on_drawing[key]
         crossings = LEADERS_CROSSING * crossing_placed(spot.leaders, leader_lines, index)
         cost = spot.cost.copy()
         cost[spot.led] += crossings
         return spot._replace(cost=cost), shapes, is_led, usable
 
-    def reachable_drawn(index: int, leading: bool, shares: tuple[float, ...]):
+    def reachable_drawn(index: int, leading: bool, shares: tuple[float, ...], from_line: bool):
         """:func:`reachable` but for the leaders placed."""
         anchor = anchors[index]
         slid = _slide_points(anchor)
@@ -523,19 +531,27 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         beside_cost = (RING * np.tile(ring, len(slid)) + 0.01 * np.tile(turn, len(slid))
                        + SLIDE_COST * np.repeat(np.hypot(*(slid - anchor.at).T), len(offsets))
                        / (SLIDE_STEP * anchor.size))
-        led_ring, led_turn, led_boxes = _candidates(anchor, gap, shares, 2 * 16)
+        # Led from its point or, from_line, from another point of the line it names too, as a draughtsman names an
+        # arrow whose head is crowded by a leader from its shaft.
+        starts = slid if from_line else slid[:1]
+        led_ring, led_turn, led_offsets = _candidates(anchor, gap, shares, 2 * 16, at=(0.0, 0.0))
+        led_boxes = (led_offsets[None, :, :] + np.tile(starts, 2)[:, None, :]).reshape(-1, 4)
+        led_points = np.repeat(starts, len(led_offsets), axis=0)
+        led_ring, led_turn = np.tile(led_ring, len(starts)), np.tile(led_turn, len(starts))
+        led_slid = np.repeat(np.hypot(*(starts - anchor.at).T), len(led_offsets)) / (SLIDE_STEP * anchor.size)
         # The rings reached, numbered as the standard ones they fall between.
         reach_rings = np.interp(shares, all_shares, np.arange(len(all_shares)))
         candidates = np.concatenate((beside_boxes, led_boxes))
-        points = np.concatenate((beside_points, np.tile(anchor.at, (len(led_boxes), 1))))
+        points = np.concatenate((beside_points, led_points))
         is_led = np.arange(len(candidates)) >= len(beside_boxes)
         led = np.flatnonzero(is_led)
-        lines = _leaders(anchor.at, led_boxes)
+        lines = np.concatenate([_leaders(tuple(point), led_boxes[k * len(led_offsets):(k + 1) * len(led_offsets)])
+                                for k, point in enumerate(starts)])
         shapes = shapely.box(*candidates.T)
         covers = covered(np.concatenate((shapes, lines)))
         usable = covers[:len(shapes)] == 0
         # A long name set off obliquely reaches back over its own point: beside it already, with no leader to draw.
-        usable[led] &= _box_distances(led_boxes, np.array([anchor.at]))[:, 0] > 0.0
+        usable[led] &= _box_distance(led_boxes, led_points) > 0.0
         usable &= ~_kept_off(anchor, candidates, is_led)
         if not leading:
             usable &= ~is_led
@@ -543,7 +559,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # would name the wrong one.
         misleading = _misleading(candidates, points, np.delete(at, index, axis=0))
         cost = np.concatenate((beside_cost + MISLEADING * misleading[:len(beside_boxes)],
-                               RING * reach_rings[led_ring] + 0.01 * led_turn
+                               RING * reach_rings[led_ring] + 0.01 * led_turn + SLIDE_COST * led_slid
                                + SET_APART * (reach_rings[led_ring] >= apart_from)
                                + LEADER_CROSSING * covers[len(shapes):]
                                + MISLEADING / 2 * misleading[led]))
@@ -560,15 +576,16 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 yield int(best)
 
     def reach_out(index: int, moving: bool = True, leading: bool = True,
-                  shares: tuple[float, ...] = REACH_SHARES) -> bool:
+                  shares: tuple[float, ...] = REACH_SHARES, from_line: bool = False) -> bool:
         """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
         reach (its leader as long as the rings at ``shares`` letter heights) whose box covers nothing and whose leader
         crosses no label and runs along no line: beside another point of the line it names, or (``leading``) on a short
         leader from its point; else (``moving``) to such a spot one neighbouring label stands on, when that neighbour
-        reaches such a spot too, beside its point if it stood there.  Such a spot costs more than the line it leaves by
+        reaches such a spot too, beside its point if it stood there; ``from_line``, also on a leader from another
+        point of the line it names (:func:`reachable`).  Such a spot costs more than the line it leaves by
         the rules of :func:`costed`, which let a letter lie on one line sooner than lead it off across two.  Whether
         the label moved."""
-        spot, shapes, is_led, usable = reachable(index, leading, shares)
+        spot, shapes, is_led, usable = reachable(index, leading, shares, from_line)
         # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
         open_ = usable & (crossing_placed(shapes, leader_lines, index) == 0)
         open_[spot.led] &= crossing_placed(spot.leaders, placed_boxes, index) == 0
@@ -668,10 +685,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 make_room(index)
         # Those on a line even so, every clear spot within reach held by neighbours that cannot all stand clear
         # elsewhere, reach farther out on their leaders, where the caller gives them no other way.
-        if reach_farther:
-            for index in order:
-                if where[index][2] > 0 and paid[index] < OVERLAP:
-                    reach_out(index, shares=FARTHER_SHARES)
+        for index in order:
+            if farther[index] and where[index][2] > 0 and paid[index] < OVERLAP:
+                reach_out(index, shares=FARTHER_SHARES, from_line=True)
+
+    farther = np.broadcast_to(np.asarray(reach_farther, dtype=bool), len(anchors))
 
     order = _most_crowded_first(anchors, at)
     where: dict[int, tuple[str, int, float]] = {}
