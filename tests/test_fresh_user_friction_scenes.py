@@ -1,0 +1,367 @@
+"""A student's friction exercises run as `graphplan run` runs them, each checked against the statics worked by hand.
+
+The scenes are the course's textbook ones, massless and without weight so that the hand statics stays short: a
+slider-crank with friction in the slide only (the reaction of the guide tilted by φ = arctan f against the piston's
+velocity), the same with friction circles ρ = f·r in all three journals too, a crank-rocker with friction circles in
+its four journals, and a crank with a slotted lever and friction in the slot.  The hand statics here takes every
+pair's friction as the textbook does (I. I. Artobolevsky, *Theory of Mechanisms and Machines*, the force analysis
+with friction): a journal's reaction R tangent to its friction circle on the side whose moment −ρ·|R| opposes the
+relative rotation of the link it acts on, a slide's friction f·|N| against the relative velocity, and in a pair at
+relative rest (a dead centre) against the relative motion about to begin.  The kinematics is the closed forms of
+each mechanism and rates by central differences, the equilibrium solved with scipy's root finder: nothing of the
+package's own solution is read.  The efficiency of a driven mechanism is η = Mb0/Mb at a position and
+η = ∫Mb0 dφ / ∫Mb dφ over the cycle, as the results file defines it (`positions[].forces.friction.efficiency`,
+`cycle_efficiency`).
+
+Then the slips a student makes typing `[[friction]]`: each is told in one line naming the key path and what is
+wrong, with no traceback and no output folder.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.integrate import trapezoid
+
+from graphplan.cli import main
+
+STEP = 1e-6  # rad of the crank, for the rates by central differences
+
+
+def cross(a, b) -> float:
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
+def sense(rate: Callable[[float], float], phi: float, omega: float) -> float:
+    """The sign of a relative rate at φ; where it is zero (a dead centre), that of the motion about to begin."""
+    now = rate(phi)
+    if abs(now) > 1e-9:
+        return math.copysign(1.0, now)
+    return math.copysign(1.0, rate(phi + 1e-3 * math.copysign(1.0, omega)))
+
+
+def rate_of(angle: Callable[[float], float], omega: float) -> Callable[[float], float]:
+    """d(angle)/dt = d(angle)/dφ · ω, by central differences (the angle unwrapped over the step)."""
+    def rate(phi: float) -> float:
+        change = (angle(phi + STEP) - angle(phi - STEP) + math.pi) % (2 * math.pi) - math.pi
+        return change / (2 * STEP) * omega
+    return rate
+
+
+def solved(equations, sizes, unknowns: int) -> np.ndarray:
+    """The textbook's repetition: the equations are linear once the reactions' sizes that the friction takes are
+    fixed, so solve them with the last sizes until they settle; then the settled answer must hold exactly."""
+    answer = np.zeros(unknowns)
+    for _ in range(500):
+        held = sizes(answer)
+        at_zero = np.asarray(equations(np.zeros(unknowns), held))
+        matrix = np.column_stack([np.asarray(equations(column, held)) - at_zero for column in np.eye(unknowns)])
+        settled = np.linalg.solve(matrix, -at_zero)
+        if np.allclose(settled, answer, rtol=1e-14, atol=1e-12):
+            break
+        answer = settled
+    assert np.max(np.abs(equations(answer, sizes(answer)))) < 1e-8
+    return answer
+
+
+# ---------------------------------------------------------------- slider-crank: scenes 1 and 2
+
+CRANK, ROD, PUSH, OMEGA = 0.1, 0.4, 1000.0, 10.0
+SLIDER_CRANK = f"""
+[scene]
+title = "Slider-crank with friction"
+locale = "en"
+gravity = 0.0
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = {CRANK}
+omega = {OMEGA}
+epsilon = 0.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = {ROD}
+guide = {{ through = "O", angle = 0.0 }}
+assembly = "forward"
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = {PUSH}
+angle = 180.0
+resisting = true
+during = "always"
+[positions]
+count = 12
+start = 0.0
+plans = [2, 5]
+[drawing]
+sheet = "none"
+"""
+SLIDE_ONLY = """
+[[friction]]
+joint = "B"
+links = [4, 1]
+f = 0.15
+"""
+EVERY_PAIR = """
+[[friction]]
+joint = "B"
+links = [4, 1]
+f = 0.15
+[[friction]]
+joint = "O"
+f = 0.1
+radius = 0.02
+[[friction]]
+joint = "A"
+f = 0.1
+radius = 0.015
+[[friction]]
+joint = "B"
+links = [3, 4]
+f = 0.1
+radius = 0.012
+"""
+
+
+def slider_crank_points(phi: float):
+    a = np.array([CRANK * math.cos(phi), CRANK * math.sin(phi)])
+    b = np.array([a[0] + math.sqrt(ROD ** 2 - a[1] ** 2), 0.0])
+    return a, b
+
+
+def slider_crank_mb(phi: float, f_slide: float, rho_o: float = 0.0, rho_a: float = 0.0, rho_b: float = 0.0) -> float:
+    """Mb on the crank: the rod 3 carries F = R23 = R34 tangent to its circles at A and B; the piston 4 takes F, the
+    resisting push and the guide's N with f·|N| against its motion; the crank takes −F at A and its circle at O."""
+    a, b = slider_crank_points(phi)
+    rod_angle = rate_of(lambda q: math.atan2(*(lambda p: (p[1][1] - p[0][1], p[1][0] - p[0][0]))(
+        slider_crank_points(q))), OMEGA)
+    piston = lambda q: (slider_crank_points(q + STEP)[1][0] - slider_crank_points(q - STEP)[1][0]) / (2 * STEP) * OMEGA
+    s_piston = sense(piston, phi, OMEGA)
+    s_32 = sense(lambda q: rod_angle(q) - OMEGA, phi, OMEGA)   # link 3 turning relative to the crank 2
+    s_34 = sense(rod_angle, phi, OMEGA)                         # link 3 relative to the piston 4, which does not turn
+    s_21 = math.copysign(1.0, OMEGA)
+
+    def equations(unknowns, sizes):
+        fx, fy, normal = unknowns
+        force = np.array([fx, fy])
+        size, normal_size = sizes
+        return [
+            -cross(b - a, force) - rho_a * size * s_32 - rho_b * size * s_34,   # the rod about A
+            fx - PUSH * s_piston - f_slide * normal_size * s_piston,            # the piston along the guide
+            fy + normal,                                                        # the piston across it
+        ]
+
+    fx, fy, _ = solved(equations, lambda u: (math.hypot(u[0], u[1]), abs(u[2])), 3)
+    force = np.array([fx, fy])
+    return cross(a, force) - rho_a * math.hypot(fx, fy) * s_32 + rho_o * math.hypot(fx, fy) * s_21
+
+
+# ---------------------------------------------------------------- crank-rocker: scene 3
+
+RC_CRANK, RC_COUPLER, RC_ROCKER, RC_FRAME, RC_OMEGA, RC_MOMENT = 0.08, 0.30, 0.20, 0.28, -12.0, 50.0
+RC_CIRCLES = {"O": (0.12, 0.015), "A": (0.1, 0.012), "B": (0.1, 0.01), "C": (0.12, 0.015)}
+CRANK_ROCKER = f"""
+[scene]
+title = "Crank-rocker with friction circles"
+locale = "ru"
+gravity = 0.0
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0], C = [{RC_FRAME}, 0.0] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = {RC_CRANK}
+omega = {RC_OMEGA}
+epsilon = 0.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [{RC_COUPLER}, {RC_ROCKER}]
+assembly = "left"
+[[loads]]
+kind = "moment"
+link = 4
+value = {RC_MOMENT}
+resisting = true
+during = "always"
+[positions]
+count = 12
+start = 15.0
+plans = [3]
+[drawing]
+sheet = "none"
+""" + "".join(f'[[friction]]\njoint = "{joint}"\nf = {f}\nradius = {r}\n' for joint, (f, r) in RC_CIRCLES.items())
+
+
+def crank_rocker_points(phi: float):
+    a = np.array([RC_CRANK * math.cos(phi), RC_CRANK * math.sin(phi)])
+    c = np.array([RC_FRAME, 0.0])
+    chord = c - a
+    d = float(np.hypot(*chord))
+    along = (RC_COUPLER ** 2 - RC_ROCKER ** 2 + d ** 2) / (2 * d)
+    across = math.sqrt(RC_COUPLER ** 2 - along ** 2)
+    unit = chord / d
+    left = np.array([-unit[1], unit[0]])   # "left" of the directed line A→C
+    return a, a + along * unit + across * left, c
+
+
+def crank_rocker_mb(phi: float, friction: bool) -> float:
+    a, b, c = crank_rocker_points(phi)
+    rho = {joint: (f * r if friction else 0.0) for joint, (f, r) in RC_CIRCLES.items()}
+
+    def direction(first: int, second: int) -> Callable[[float], float]:
+        return lambda q: math.atan2(*(lambda p: (p[second][1] - p[first][1], p[second][0] - p[first][0]))(
+            crank_rocker_points(q)))
+
+    omega3, omega4 = rate_of(direction(0, 1), RC_OMEGA), rate_of(direction(2, 1), RC_OMEGA)
+    s_32 = sense(lambda q: omega3(q) - RC_OMEGA, phi, RC_OMEGA)
+    s_34 = sense(lambda q: omega3(q) - omega4(q), phi, RC_OMEGA)
+    s_41 = sense(omega4, phi, RC_OMEGA)
+    s_21 = math.copysign(1.0, RC_OMEGA)
+    resisting = -RC_MOMENT * s_41
+
+    def equations(force, size):
+        return [
+            -cross(b - a, force) - rho["A"] * size * s_32 - rho["B"] * size * s_34,     # the coupler about A
+            cross(b - c, force) + resisting + rho["B"] * size * s_34 - rho["C"] * size * s_41,   # the rocker about C
+        ]
+
+    force = solved(equations, lambda u: math.hypot(*u), 2)
+    size = math.hypot(*force)
+    return cross(a, force) - rho["A"] * size * s_32 + rho["O"] * size * s_21
+
+
+# ---------------------------------------------------------------- slotted lever: scene 4
+
+SL_CRANK, SL_CENTRES, SL_OMEGA, SL_MOMENT, SL_F = 0.1, 0.25, 8.0, 100.0, 0.2
+SLOTTED_LEVER = f"""
+[scene]
+title = "Slotted lever, friction in the slot"
+locale = "en"
+gravity = 0.0
+[frame]
+link = 1
+points = {{ C = [0.0, 0.0], O = [0.0, {SL_CENTRES}] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = {SL_CRANK}
+omega = {SL_OMEGA}
+epsilon = 0.0
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = 0.0
+[[loads]]
+kind = "moment"
+link = 4
+value = {SL_MOMENT}
+resisting = true
+during = "always"
+[[friction]]
+joint = "A"
+links = [3, 4]
+f = {SL_F}
+[positions]
+count = 12
+start = 10.0
+plans = [4]
+[drawing]
+sheet = "none"
+"""
+
+
+def slotted_lever_mb(phi: float, f: float) -> float:
+    """The block 3, massless on a pin without friction, takes the slot's N and f·|N| through A; the lever's moment
+    about C holds the resisting moment with N alone (the friction lies along CA), so f changes only the crank's."""
+    o = np.array([0.0, SL_CENTRES])
+    place = lambda q: o + SL_CRANK * np.array([math.cos(q), math.sin(q)])
+    a = place(phi)
+    along = a / np.hypot(*a)
+    across = np.array([-along[1], along[0]])
+    lever = rate_of(lambda q: math.atan2(place(q)[1], place(q)[0]), SL_OMEGA)
+    sliding = lambda q: (np.hypot(*place(q + STEP)) - np.hypot(*place(q - STEP))) / (2 * STEP) * SL_OMEGA
+    resisting = -SL_MOMENT * sense(lever, phi, SL_OMEGA)
+    # R34 = −(N·across + T·along) at A on the lever: the moment about C is −N·|CA|.
+    normal = resisting / float(np.hypot(*a))
+    friction = -f * abs(normal) * sense(sliding, phi, SL_OMEGA)
+    on_crank = normal * across + friction * along   # R32 = R43, the slot's on the block, passed on through the pin
+    return -cross(a - o, on_crank)
+
+
+# ---------------------------------------------------------------- running the scenes as the student does
+
+def run(tmp_path: Path, text: str, name: str) -> dict:
+    scene = tmp_path / f"{name}.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / name
+    assert main(["run", str(scene), "--out", str(out), "--only", "forces,note"]) == 0
+    return json.loads((out / "results.json").read_text(encoding="utf-8"))
+
+
+SCENES = {
+    "slider-crank, slide only": (SLIDER_CRANK + SLIDE_ONLY, OMEGA,
+                                 lambda q: slider_crank_mb(q, 0.0), lambda q: slider_crank_mb(q, 0.15)),
+    "slider-crank, every pair": (SLIDER_CRANK + EVERY_PAIR, OMEGA, lambda q: slider_crank_mb(q, 0.0),
+                                 lambda q: slider_crank_mb(q, 0.15, 0.1 * 0.02, 0.1 * 0.015, 0.1 * 0.012)),
+    "crank-rocker, friction circles": (CRANK_ROCKER, RC_OMEGA,
+                                       lambda q: crank_rocker_mb(q, False), lambda q: crank_rocker_mb(q, True)),
+    "slotted lever, slot": (SLOTTED_LEVER, SL_OMEGA,
+                            lambda q: slotted_lever_mb(q, 0.0), lambda q: slotted_lever_mb(q, SL_F)),
+}
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("friction_scenes")
+    return {name: run(folder, text, f"scene{i}") for i, (name, (text, *_)) in enumerate(SCENES.items())}
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_the_balancing_moment_and_efficiency_at_each_position_are_the_hand_statics(runs, name):
+    _, _, without, with_friction = SCENES[name]
+    for position in runs[name]["positions"]:
+        phi = math.radians(position["driver"]["angle_deg"])
+        equilibrium = position["equilibrium"]
+        mb0, mb = without(phi), with_friction(phi)
+        assert equilibrium["balancing_moment"] == pytest.approx(mb0, rel=1e-6, abs=1e-6), position["index"]
+        assert equilibrium["friction"]["balancing_moment"] == pytest.approx(mb, rel=1e-6, abs=1e-6), position["index"]
+        if abs(mb0) > 1e-6:
+            assert equilibrium["friction"]["efficiency"] == pytest.approx(mb0 / mb, rel=1e-6), position["index"]
+        if "forces" in position:   # the polygons with friction on the plan positions give the same
+            assert position["forces"]["friction"]["balancing_moment"] == pytest.approx(mb, rel=1e-6)
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_the_cycle_efficiency_is_the_ratio_of_the_hand_works(runs, name):
+    _, omega, without, with_friction = SCENES[name]
+    # The works the driver gives over a turn, taken in the sense it turns (dφ = ω·dt).
+    angles = np.linspace(0.0, 2 * math.pi, 7201) * math.copysign(1.0, omega)
+    work0 = trapezoid([without(q) for q in angles], angles)
+    work = trapezoid([with_friction(q) for q in angles], angles)
+    cycle = runs[name]["cycle_efficiency"]
+    assert cycle["work_without_friction"] == pytest.approx(work0, rel=2e-4)
+    assert cycle["work_with_friction"] == pytest.approx(work, rel=2e-4)
+    assert cycle["efficiency"] == pytest.approx(work0 / work, rel=2e-4)
+    assert 0 < cycle["efficiency"] < 1
