@@ -129,12 +129,18 @@ def _number_in_text(value: Any) -> str:
     text = value.strip()
     if _COMMA_DECIMAL.fullmatch(text):
         return f"; a decimal comma? TOML numbers take a point and no quotes: write {text.replace(',', '.')}"
+    percent = text.endswith("%")
     try:
-        number = float(text)
+        number = float(text[:-1] if percent else text)
     except ValueError:
         return ""
     # "inf" and "nan" read as floats too, and are no number a scene means.
-    return _UNQUOTED.format(text=text) if math.isfinite(number) else ""
+    if not math.isfinite(number):
+        return ""
+    if percent:
+        # "15%", a coefficient or a share as a handbook prints it: no scene key is in per cent, each takes the fraction.
+        return f"; TOML numbers take no quotes and no % sign: {number:g} % is written {number / 100:g}"
+    return _UNQUOTED.format(text=text)
 
 
 _UNQUOTED = "; TOML numbers take no quotes: write {text}"

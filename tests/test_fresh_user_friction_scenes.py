@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from collections.abc import Callable
 from pathlib import Path
 
@@ -51,6 +52,14 @@ def rate_of(angle: Callable[[float], float], omega: float) -> Callable[[float], 
         change = (angle(phi + STEP) - angle(phi - STEP) + math.pi) % (2 * math.pi) - math.pi
         return change / (2 * STEP) * omega
     return rate
+
+
+def direction(points: Callable[[float], tuple], first: int, second: int) -> Callable[[float], float]:
+    """The angle of the line from one of a mechanism's points to another, as the crank turns."""
+    def angle(phi: float) -> float:
+        start, end = points(phi)[first], points(phi)[second]
+        return math.atan2(end[1] - start[1], end[0] - start[0])
+    return angle
 
 
 def solved(equations, sizes, unknowns: int) -> np.ndarray:
@@ -147,8 +156,7 @@ def slider_crank_mb(phi: float, f_slide: float, rho_o: float = 0.0, rho_a: float
     """Mb on the crank: the rod 3 carries F = R23 = R34 tangent to its circles at A and B; the piston 4 takes F, the
     resisting push and the guide's N with f·|N| against its motion; the crank takes −F at A and its circle at O."""
     a, b = slider_crank_points(phi)
-    rod_angle = rate_of(lambda q: math.atan2(*(lambda p: (p[1][1] - p[0][1], p[1][0] - p[0][0]))(
-        slider_crank_points(q))), OMEGA)
+    rod_angle = rate_of(direction(slider_crank_points, 0, 1), OMEGA)
     piston = lambda q: (slider_crank_points(q + STEP)[1][0] - slider_crank_points(q - STEP)[1][0]) / (2 * STEP) * OMEGA
     s_piston = sense(piston, phi, OMEGA)
     s_32 = sense(lambda q: rod_angle(q) - OMEGA, phi, OMEGA)   # link 3 turning relative to the crank 2
@@ -227,11 +235,8 @@ def crank_rocker_mb(phi: float, friction: bool) -> float:
     a, b, c = crank_rocker_points(phi)
     rho = {joint: (f * r if friction else 0.0) for joint, (f, r) in RC_CIRCLES.items()}
 
-    def direction(first: int, second: int) -> Callable[[float], float]:
-        return lambda q: math.atan2(*(lambda p: (p[second][1] - p[first][1], p[second][0] - p[first][0]))(
-            crank_rocker_points(q)))
-
-    omega3, omega4 = rate_of(direction(0, 1), RC_OMEGA), rate_of(direction(2, 1), RC_OMEGA)
+    omega3 = rate_of(direction(crank_rocker_points, 0, 1), RC_OMEGA)
+    omega4 = rate_of(direction(crank_rocker_points, 2, 1), RC_OMEGA)
     s_32 = sense(lambda q: omega3(q) - RC_OMEGA, phi, RC_OMEGA)
     s_34 = sense(lambda q: omega3(q) - omega4(q), phi, RC_OMEGA)
     s_41 = sense(omega4, phi, RC_OMEGA)
@@ -365,3 +370,66 @@ def test_the_cycle_efficiency_is_the_ratio_of_the_hand_works(runs, name):
     assert cycle["work_with_friction"] == pytest.approx(work, rel=2e-4)
     assert cycle["efficiency"] == pytest.approx(work0 / work, rel=2e-4)
     assert 0 < cycle["efficiency"] < 1
+
+
+# ---------------------------------------------------------------- the slips
+
+def run_slip(tmp_path: Path, capsys, text: str) -> tuple[int, str, str, Path]:
+    scene = tmp_path / "slip.toml"
+    scene.write_text(text, encoding="utf-8")
+    out = tmp_path / "slip"
+    status = main(["run", str(scene), "--out", str(out), "--only", "forces"])
+    told = capsys.readouterr()
+    return status, told.out, told.err, out
+
+
+SLIPS = {
+    "a negative coefficient": (SLIDER_CRANK + SLIDE_ONLY.replace("f = 0.15", "f = -0.15"),
+                               r"friction\[0\]\.f: must be >= 0 \(got -0\.15\)"),
+    "a percentage written as text": (SLIDER_CRANK + SLIDE_ONLY.replace("f = 0.15", 'f = "15%"'),
+                                     (r"friction\[0\]\.f: must be a number, not a string \(got '15%'\); .*no % sign.*"
+                                     r"15 % is written 0\.15")),
+    "a percentage that makes the friction circle wider than the links": (
+        SLIDER_CRANK + EVERY_PAIR.replace("f = 0.1\nradius = 0.02", "f = 10\nradius = 0.02"),
+        (r"friction\[1\]\.f: makes the friction circle at O ρ = f·r = 10 × 0\.02 m = 0\.2 m, larger than the links.*"
+        r"not a percentage \(10 % is f = 0\.1\)")),
+    "a joint with no pair": (SLIDER_CRANK + SLIDE_ONLY + '[[friction]]\njoint = "D"\nf = 0.1\nradius = 0.01\n',
+                             (r"friction\[1\]\.joint: names no pair of the mechanism; its pairs are O \(1–2\), A \(2–3\), "
+                             r"B \(3–4\), B \(1–4\) \(got 'D'\)")),
+    "links that no pair at the joint joins": (SLIDER_CRANK + SLIDE_ONLY.replace("[4, 1]", "[3, 1]"),
+                                              r"friction\[0\]\.links: joint B joins links 3–4 and 1–4, not these"),
+    "a turning pair without its radius": (SLIDER_CRANK + SLIDE_ONLY + '[[friction]]\njoint = "O"\nf = 0.1\n',
+                                          (r"friction\[1\]\.radius: the pair at O turns: give its journal radius \(m\) "
+                                          r"for the friction circle")),
+    "a radius on a slide": (SLIDER_CRANK + SLIDE_ONLY.replace("f = 0.15", "f = 0.15\nradius = 0.01"),
+                            r"friction\[0\]\.radius: the pair at B slides: a radius is for a turning pair"),
+    "a radius in millimetres": (SLIDER_CRANK + SLIDE_ONLY + '[[friction]]\njoint = "O"\nf = 0.1\nradius = 20\n',
+                                (r"friction\[1\]\.radius: a journal of radius 20 m at O is larger than the links.*"
+                                r"20 mm is 0\.02 m")),
+    "mu for f": (SLIDER_CRANK + SLIDE_ONLY.replace("f = 0.15", "mu = 0.15"),
+                 r"friction\[0\]\.mu: unknown key; the coefficient of friction is given as f: write f = 0\.15"),
+}
+
+
+@pytest.mark.parametrize("slip", SLIPS)
+def test_a_slip_in_the_friction_is_told_in_one_line_with_its_key_and_no_folder(tmp_path, capsys, slip):
+    text, told = SLIPS[slip]
+    status, _, err, out = run_slip(tmp_path, capsys, text)
+    assert status == 2
+    assert "Traceback" not in err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert re.match(r"graphplan: error: " + told, lines[0]), lines[0]
+    assert not out.exists()
+
+
+def test_a_percentage_typed_for_a_slides_f_is_warned_of_and_its_locking_named(tmp_path, capsys):
+    # f above 1 is taken (a few pairs reach it), so the run goes on; the warning names the key and the percentage.
+    status, printed, err, _out = run_slip(tmp_path, capsys, SLIDER_CRANK + SLIDE_ONLY.replace("f = 0.15", "f = 15"))
+    assert status == 0
+    err = printed + err
+    assert "warning: friction[0].f = 15 (at B): few pairs of materials rub with an f above 1" in err
+    assert "(15 % is f = 0.15)" in err
+    assert re.search(r"warning: positions [0-9–, ]+: the friction in the slide at B \(links 1–4, f = 15\) locks the "
+                     r"mechanism here", err)
+    assert "Traceback" not in err
