@@ -433,3 +433,22 @@ def test_a_percentage_typed_for_a_slides_f_is_warned_of_and_its_locking_named(tm
     assert re.search(r"warning: positions [0-9–, ]+: the friction in the slide at B \(links 1–4, f = 15\) locks the "
                      r"mechanism here", err)
     assert "Traceback" not in err
+
+
+# ---------------------------------------------------------------- the note's friction section
+
+@pytest.mark.parametrize(("locale", "arctangent", "worked"), [
+    ("en", "arctan", "fB = 0.15; Ff14 = fB·R14 = 0.15·"),
+    ("ru", "arctg", "fB = 0,15; Ff14 = fB·R14 = 0,15·"),
+])
+def test_the_note_gives_each_slides_friction_angle_as_the_force_sheet_does(tmp_path, locale, arctangent, worked):
+    text = (SLIDER_CRANK + SLIDE_ONLY).replace('locale = "en"', f'locale = "{locale}"')
+    run(tmp_path, text, "note")
+    note = (tmp_path / "note" / "note.md").read_text(encoding="utf-8")
+    angle = f"{math.degrees(math.atan(0.15)):.4f}"   # φ = arctan f, 8.5308°
+    if locale == "ru":
+        angle = angle.replace(".", ",")
+    lines = [line for line in note.splitlines() if worked in line]
+    assert len(lines) == 2   # each plan position's friction loads
+    for line in lines:
+        assert line.endswith(f"; φ = {arctangent} fB = {angle}°"), line

@@ -165,9 +165,12 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
             if pair.in_vee:
                 symbol = "f′"
                 reduced = f" = f/sin θ = {note.n(pair.spec.f)}/sin {note.n(math.degrees(pair.spec.groove_half_angle))}°"
+            # The friction angle, as the force sheet gives it: the normal reaction and Ff lean together by φ.
+            angle = f"φ = {text['arctangent']} {symbol}{where} = {note.n(math.degrees(math.atan(row.factor)))}°"
             lines.append(f"- {symbol}{where}{reduced} = {note.n(row.factor)}{text['semicolon']}{name} = "
                          f"{symbol}{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))}"
-                         f" = {note.n(row.value)}{_direction(note, row.acting)} {text['newton']}")
+                         f" = {note.n(row.value)}{_direction(note, row.acting)} {text['newton']}{text['semicolon']}"
+                         f"{angle}")
         else:
             lines.append(f"- ρ{where} = f·r = {note.product(note.n(pair.spec.f), note.n(pair.spec.radius))} = "
                          f"{note.n(row.factor)} {text['unit_m']}{text['semicolon']}{name} = "
