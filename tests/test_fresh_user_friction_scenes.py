@@ -3,7 +3,8 @@
 The scenes are the course's textbook ones, massless and without weight so that the hand statics stays short: a
 slider-crank with friction in the slide only (the reaction of the guide tilted by φ = arctan f against the piston's
 velocity), the same with friction circles ρ = f·r in all three journals too, a crank-rocker with friction circles in
-its four journals, and a crank with a slotted lever and friction in the slot.  The hand statics here takes every
+its four journals, a crank with a slotted lever and friction in the slot, and a wedge lift rubbing on its floor
+and its incline.  The hand statics here takes every
 pair's friction as the textbook does (I. I. Artobolevsky, *Theory of Mechanisms and Machines*, the force analysis
 with friction): a journal's reaction R tangent to its friction circle on the side whose moment −ρ·|R| opposes the
 relative rotation of the link it acts on, a slide's friction f·|N| against the relative velocity, and in a pair at
@@ -452,3 +453,74 @@ def test_the_note_gives_each_slides_friction_angle_as_the_force_sheet_does(tmp_p
     assert len(lines) == 2   # each plan position's friction loads
     for line in lines:
         assert line.endswith(f"; φ = {arctangent} fB = {angle}°"), line
+
+
+# ---------------------------------------------------------------- a wedge lift: scene 5
+
+WEDGE_ANGLE, WEDGE_LOAD, FLOOR_F, INCLINE_F = 20.0, 2000.0, 0.12, 0.15
+
+
+def wedge_lift(velocity: float) -> str:
+    return f"""
+[scene]
+title = "Wedge lift with friction on both faces"
+locale = "en"
+gravity = 0.0
+[frame]
+points = {{ G = [0.0, 0.0], P = [0.3, 0.0] }}
+lines = {{ post = {{ through = "P", angle = 90.0 }} }}
+[driver]
+kind = "slider"
+link = 2
+joint = "A"
+guide = {{ through = "G", angle = 0.0 }}
+travel = [0.0, 0.1]
+velocity = {velocity}
+[[groups]]
+kind = "PRP"
+links = [3, 4]
+joints = ["B"]
+guides = [{{ link = 2, through = "A", angle = {WEDGE_ANGLE} }}, "post"]
+offsets = [0.0, 0.0]
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = {WEDGE_LOAD}
+angle = 270.0
+[positions]
+count = 5
+plans = [2]
+[[friction]]
+joint = "A"
+links = [1, 2]
+f = {FLOOR_F}
+[[friction]]
+joint = "B"
+links = [2, 3]
+f = {INCLINE_F}
+[drawing]
+sheet = "none"
+"""
+
+
+@pytest.mark.parametrize(("velocity", "stroke"), [(-0.05, "raising"), (0.05, "lowering")])
+def test_a_wedge_with_friction_on_both_faces_takes_the_textbooks_force_and_efficiency(tmp_path, velocity, stroke):
+    """The incline's reaction leans by φ2 = arctan f2 against the sliding, so the load W on the post (frictionless)
+    takes W·tan(α ± φ2) across; the floor's, by φ1 under the wedge's W: the push that raises the load is
+    W·(tan(α + φ2) + tan φ1) at η = tan α / (tan(α + φ2) + tan φ1), the hold that lowers it W·(tan(α − φ2) − tan φ1)
+    at η′ = (tan(α − φ2) − tan φ1) / tan α, which the results write as η where the load drives (Fb/Fb0)."""
+    alpha, floor, incline = math.radians(WEDGE_ANGLE), math.atan(FLOOR_F), math.atan(INCLINE_F)
+    if stroke == "raising":
+        ideal = WEDGE_LOAD * math.tan(alpha)
+        rubbing = WEDGE_LOAD * (math.tan(alpha + incline) + math.tan(floor))
+        efficiency = ideal / rubbing
+    else:
+        ideal = WEDGE_LOAD * math.tan(alpha)
+        rubbing = WEDGE_LOAD * (math.tan(alpha - incline) - math.tan(floor))
+        efficiency = rubbing / ideal
+    for position in run(tmp_path, wedge_lift(velocity), stroke)["positions"]:
+        equilibrium = position["equilibrium"]
+        assert abs(equilibrium["balancing_force"]) == pytest.approx(ideal, rel=1e-9)
+        assert abs(equilibrium["friction"]["balancing_force"]) == pytest.approx(rubbing, rel=1e-9)
+        assert equilibrium["friction"]["efficiency"] == pytest.approx(efficiency, rel=1e-9)
