@@ -3,14 +3,14 @@
 The scenes are the course's textbook ones, massless and without weight so that the hand statics stays short: a
 slider-crank with friction in the slide only (the reaction of the guide tilted by φ = arctan f against the piston's
 velocity), the same with friction circles ρ = f·r in all three journals too, a crank-rocker with friction circles in
-its four journals, a crank with a slotted lever and friction in the slot, and a wedge lift rubbing on its floor
-and its incline.  The hand statics here takes every
-pair's friction as the textbook does (I. I. Artobolevsky, *Theory of Mechanisms and Machines*, the force analysis
-with friction): a journal's reaction R tangent to its friction circle on the side whose moment −ρ·|R| opposes the
-relative rotation of the link it acts on, a slide's friction f·|N| against the relative velocity, and in a pair at
-relative rest (a dead centre) against the relative motion about to begin.  The kinematics is the closed forms of
-each mechanism and rates by central differences, the equilibrium solved with scipy's root finder: nothing of the
-package's own solution is read.  The efficiency of a driven mechanism is η = Mb0/Mb at a position and
+its four journals, a crank with a slotted lever and friction in the slot, and a wedge lift rubbing on its floor and
+its incline.  The hand statics here takes every pair's friction as the textbook does (I. I. Artobolevsky, *Theory of
+Mechanisms and Machines*, the force analysis with friction): a journal's reaction R tangent to its friction circle on
+the side whose moment −ρ·|R| opposes the relative rotation of the link it acts on, a slide's friction f·|N| against
+the relative velocity, and in a pair at relative rest (a dead centre) against the relative motion about to begin.
+The kinematics is the closed forms of each mechanism with rates by central differences, the equilibrium solved by
+the textbook's repetition (the reactions' sizes of the last solve in the friction): nothing of the package's own
+solution is read.  The efficiency of a driven mechanism is η = Mb0/Mb at a position and
 η = ∫Mb0 dφ / ∫Mb dφ over the cycle, as the results file defines it (`positions[].forces.friction.efficiency`,
 `cycle_efficiency`).
 
