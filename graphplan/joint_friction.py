@@ -84,8 +84,12 @@ def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[Fri
         matching = [pair for pair in at_joint if spec.links is None or set(spec.links) == {pair.source, pair.target}]
         if not at_joint:
             known = ", ".join(f"{p.joint} ({p.source}–{p.target})" for p in pairs)
+            joints = [pair.joint for pair in pairs]
+            # A joint typed in the other case (b, the plans' letter for B) is a slip, as a group's is (mechanism.py).
+            other_case = next((joint for joint in joints if joint.casefold() == spec.joint.casefold()), None)
+            hint = lookalike_hint(spec.joint, joints) or (f"; did you mean {other_case!r}?" if other_case else "")
             raise SceneError(f"{spec.where}.joint", f"names no pair of the mechanism; its pairs are {known}", spec.joint,
-                             hint=lookalike_hint(spec.joint, [pair.joint for pair in pairs]))
+                             hint=hint)
         if not matching:
             joined = " and ".join(f"{p.source}–{p.target}" for p in at_joint)
             raise SceneError(f"{spec.where}.links", f"joint {spec.joint} joins links {joined}, not these",

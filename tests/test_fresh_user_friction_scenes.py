@@ -397,6 +397,9 @@ SLIPS = {
     "a joint with no pair": (SLIDER_CRANK + SLIDE_ONLY + '[[friction]]\njoint = "D"\nf = 0.1\nradius = 0.01\n',
                              (r"friction\[1\]\.joint: names no pair of the mechanism; its pairs are O \(1–2\), A \(2–3\), "
                              r"B \(3–4\), B \(1–4\) \(got 'D'\)")),
+    "a joint typed as its plan's letter": (SLIDER_CRANK + SLIDE_ONLY.replace('joint = "B"', 'joint = "b"'),
+                                           (r"friction\[0\]\.joint: names no pair of the mechanism; its pairs are "
+                                            r".* \(got 'b'\); did you mean 'B'\?$")),
     "links that no pair at the joint joins": (SLIDER_CRANK + SLIDE_ONLY.replace("[4, 1]", "[3, 1]"),
                                               r"friction\[0\]\.links: joint B joins links 3–4 and 1–4, not these"),
     "a turning pair without its radius": (SLIDER_CRANK + SLIDE_ONLY + '[[friction]]\njoint = "O"\nf = 0.1\n',
