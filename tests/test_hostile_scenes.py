@@ -96,7 +96,7 @@ REQUIRED = {"driver.kind": "driver.kind", "driver.link": "driver.link", "driver.
             "groups[0].assembly": "groups[0]", "points.S3.link": "points.S3.link", "points.S3.from": "points.S3.from",
             "points.S3.at": "points.S3.at", "loads[0].kind": "loads[0].kind", "loads[0].value": "loads[0].value",
             "links.3.centre": "links.3.centre", "frame": "frame", "driver": "driver",
-            "positions.working": "positions.start"}
+            "positions.working": "positions.working"}
 BY_PATH = {where: keys for where, keys, _ in LEAVES} | {where: keys for where, keys in TABLES}
 BY_PATH |= {"frame": ("frame",), "driver": ("driver",), "groups[0].links": ("groups", 0, "links"),
             "groups[0].joints": ("groups", 0, "joints"), "groups[0].lengths": ("groups", 0, "lengths")}
@@ -211,6 +211,15 @@ def hostile(draw):
 def test_a_hostile_scene_is_refused_in_one_clear_line(capsys, case):
     text, names = case
     assert_refused(capsys, text, names)
+
+
+@pytest.mark.parametrize("where", sorted(REQUIRED))
+def test_a_missing_key_is_told_where_it_belongs(capsys, where):
+    """Each required key, removed, is told at its path: the property test above draws one now and then, and a
+    message moved to another path (positions.working's, from the start that needs it) failed it only on the draw."""
+    document = copy.deepcopy(BASE)
+    _delete(document, BY_PATH[where])
+    assert_refused(capsys, to_toml(document), REQUIRED[where])
 
 
 # --- one explicit case per category ------------------------------------------------------------------
