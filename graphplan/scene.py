@@ -1148,7 +1148,7 @@ def _read_drawing(table: Table) -> Drawing:
     )
     for plan in ("velocity", "acceleration"):
         if table.has(f"{plan}_pole") and table.has(f"{plan}_scale"):
-            raise SceneError(table.path, f"give {plan}_pole or {plan}_scale, not both")
+            raise SceneError(table.where(f"{plan}_scale"), f"give either {plan}_pole or {plan}_scale, not both")
     table.done()
     return drawing
 

@@ -838,6 +838,14 @@ def _unbalance(table: Table, mass: float) -> tuple[float, float | None]:
         if not whole:
             raise SceneError(table.where("unbalance"), "is required (m·e, kg·m), or unbalanced_mass and eccentricity")
         return table.number("unbalance", non_negative=True), None
+    # One of the pair without the other is told with the pair's purpose and the whole m·e it stands for, not as a
+    # key "required but missing" that the scene need not give at all.
+    for key, other, what in (("unbalanced_mass", "eccentricity", "the unbalanced mass m, kg"),
+                             ("eccentricity", "unbalanced_mass", "the unbalanced mass's distance e from the axis, m")):
+        if not table.has(key):
+            table.misspelt(key)
+            raise SceneError(table.where(key), f"is required with {other}: {what}; or give unbalance (m·e, kg·m) "
+                             f"alone in place of both")
     small = table.number("unbalanced_mass", positive=True)
     eccentricity = table.number("eccentricity", non_negative=True)
     if small > mass:

@@ -297,7 +297,8 @@ def read_branch(table: Table, choices: tuple[str, ...]) -> tuple[str | None, tup
         raise SceneError(table.where("assembly"), f"is required but missing: {' or '.join(choices)} chooses the "
                          "branch the group assembles in (or near = [x, y], where its joint lies in a sketch)")
     if assembly is not None and near is not None:
-        raise SceneError(table.path, "give assembly or near, not both")
+        # Told at a key, as a speed given both ways is: the path alone named no key to take out.
+        raise SceneError(table.where("near"), "give either assembly or near, not both")
     return assembly, near
 
 

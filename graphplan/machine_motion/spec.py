@@ -130,6 +130,10 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         if not overload > 1:
             raise SceneError(table.where("overload"), "must be > 1 (it is Mmax/Mrated)", overload)
         given = [k for k in ("synchronous_rpm", "rated_rpm", "rated_slip") if table.has(k)]
+        if len(given) > 2:
+            # All three are told at the last: any two fix the third, which may disagree with them.
+            raise SceneError(table.where(given[-1]), "give two of synchronous_rpm, rated_rpm, rated_slip, not all "
+                             "three (any two fix the third)")
         if len(given) != 2:
             raise SceneError(table.path, "give two of synchronous_rpm, rated_rpm, rated_slip "
                              f"(got {', '.join(given) or 'none'})")
