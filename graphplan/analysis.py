@@ -42,6 +42,7 @@ from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import OTHER_SENSE, Scene
 from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
+from .unit_slips import masses_in_grams, speed_in_rpm
 from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
@@ -208,7 +209,8 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every))
-    in_order = tuple(sorted(lengths_in_millimetres(mechanism) + motion.warnings + stepped_over
+    in_order = tuple(sorted(lengths_in_millimetres(mechanism) + speed_in_rpm(mechanism)
+                            + masses_in_grams(mechanism, motion) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
                             + strokes_of_other_links(mechanism, positions)
@@ -226,7 +228,7 @@ def analyse(scene: Scene) -> Analysis:
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
-                                 "diagram-in-travel", "high-friction"})
+                                 "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

@@ -956,9 +956,9 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
     told = guides_without_angle(scene) + links_without_mass(scene)
     if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
-        from .flywheel import delta_warning
+        from .flywheel import delta_warning, speed_warning
 
-        told += [line for line in (delta_warning(scene.dynamics),) if line is not None]
+        told += [line for line in (delta_warning(scene.dynamics), speed_warning(scene.dynamics)) if line is not None]
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),
                                    dynamics.unsettled_warning(), dynamics.off_design_warning()) if line is not None]
@@ -986,10 +986,11 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
     if "errors" in pieces or "note" in pieces:
         told += drafting_precision_warnings(scene)
     if "vibration" in pieces:
-        from .vibration import damping_warning, isolation_warning, lengths_warning, resonance_warning
+        from .vibration import damping_warning, isolation_warning, lengths_warning, resonance_warning, speed_warning
 
         assert scene.vibration is not None
-        told += [line for line in (damping_warning(scene.vibration), lengths_warning(scene.vibration),
+        told += [line for line in (damping_warning(scene.vibration), speed_warning(scene.vibration),
+                                   lengths_warning(scene.vibration),
                                    resonance_warning(scene.vibration), isolation_warning(scene.vibration))
                  if line is not None]
     return told

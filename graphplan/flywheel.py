@@ -42,7 +42,7 @@ from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_
 from .errors import SceneError
 from .kinematics import read_only
 from .reader import Table, check_xy
-from .units import RPM, percentage_question
+from .units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 
 # A cycle whose work is left over by more than this share of the work done is not steady: the floor under the
 # integration's own error (EquivalentModel.work_uncertainty), below which a mismatch is not told from it.
@@ -608,6 +608,14 @@ def delta_warning(spec: DynamicsSpec) -> str | None:
             f"{percentage_question(delta, 'δ')}")
 
 
+def speed_warning(spec: DynamicsSpec) -> str | None:
+    """A line for the command line where ``omega`` reads as a motor's speed in rev/min typed for rad/s
+    (:func:`~graphplan.units.motor_speed_in_rpm`), else None."""
+    if spec.omega is None or not motor_speed_in_rpm(spec.omega):
+        return None
+    return rpm_question(f"{spec.where}.omega", spec.omega, f"{spec.where}.rpm")
+
+
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
     """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
     if spec.delta is None:
@@ -717,7 +725,29 @@ def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     return np.concatenate([x, zeros])[order], np.concatenate([net, np.zeros(len(zeros))])[order]
 
 
-__all__ = ["DIAGRAM_KEYS", "LARGEST_USUAL_DELTA", "MOTION_KEYS", "DynamicsSpec", "Fluctuation", "Flywheel",
-           "LoadDiagram", "Tangent", "delta_warning", "diagram_model_of", "dynamics_results", "fluctuation",
-           "fluctuation_from_areas", "flywheel_for", "flywheel_from_spec", "flywheel_inertia", "moved_inertia",
-           "omega_to_rpm", "read_dynamics", "rpm_to_omega", "speed_fluctuation", "speed_limits", "unusual_speed_swing"]
+__all__ = [
+    "DIAGRAM_KEYS",
+    "LARGEST_USUAL_DELTA",
+    "MOTION_KEYS",
+    "DynamicsSpec",
+    "Fluctuation",
+    "Flywheel",
+    "LoadDiagram",
+    "Tangent",
+    "delta_warning",
+    "diagram_model_of",
+    "dynamics_results",
+    "fluctuation",
+    "fluctuation_from_areas",
+    "flywheel_for",
+    "flywheel_from_spec",
+    "flywheel_inertia",
+    "moved_inertia",
+    "omega_to_rpm",
+    "read_dynamics",
+    "rpm_to_omega",
+    "speed_fluctuation",
+    "speed_limits",
+    "speed_warning",
+    "unusual_speed_swing",
+]

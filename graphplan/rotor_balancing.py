@@ -46,7 +46,14 @@ from typing import Any
 from .errors import SceneError
 from .lookalikes import contrast, plain, twin
 from .reader import Table, check_number, check_str, join_path
-from .rotor_lengths import LARGEST_RADIUS_M, LONGEST_ROTOR_M, MIXED_RATIO, Implausible, LengthsInMillimetres
+from .rotor_lengths import (
+    FLATTEST_ROTOR,
+    LARGEST_RADIUS_M,
+    LONGEST_ROTOR_M,
+    MIXED_RATIO,
+    Implausible,
+    LengthsInMillimetres,
+)
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
 NEGLIGIBLE = 1e-12
@@ -735,7 +742,8 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     lengths typed in millimetres make them; None where they are plausible.  A radius over
     :data:`~graphplan.rotor_lengths.LARGEST_RADIUS_M`, a mass :data:`~graphplan.rotor_lengths.MIXED_RATIO` times
     farther out than the nearest correction, planes farther apart than
-    :data:`~graphplan.rotor_lengths.LONGEST_ROTOR_M`."""
+    :data:`~graphplan.rotor_lengths.LONGEST_ROTOR_M`; with two planes, a mass turning
+    :data:`~graphplan.rotor_lengths.FLATTEST_ROTOR` times farther out than the rotor is long."""
     found = []
     for k, mass in enumerate(spec.masses):
         if mass.radius > LARGEST_RADIUS_M:
@@ -761,6 +769,11 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     (low_key, low), (high_key, high) = min(along, key=lambda item: item[1]), max(along, key=lambda item: item[1])
     if high - low > LONGEST_ROTOR_M:
         found.append(Implausible("rotor_length", high_key, high, LONGEST_ROTOR_M, other_key=low_key, other=low))
+    elif len(spec.planes) == 2 and not found:
+        k, mass = max(enumerate(spec.masses), key=lambda item: item[1].radius)
+        if mass.radius > FLATTEST_ROTOR * (high - low):
+            found.append(Implausible("flat_rotor", f"balancing.masses[{k}].radius", mass.radius, FLATTEST_ROTOR,
+                                     name=mass.name, other_key=f"{low_key} to {high_key}", other=high - low))
     return LengthsInMillimetres(tuple(found)) if found else None
 
 

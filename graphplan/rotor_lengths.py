@@ -26,20 +26,42 @@ LARGEST_SECOND_MOMENT_M4 = math.pi * THICKEST_SHAFT_M ** 4 / 64.0
 # A correction mass is fixed near the rim, where it does the most: a mass turning MIXED_RATIO (units') times farther
 # out than the corrections is one in millimetres among metres, as a linkage's length that many times another is.
 # (The other way round is real: a disc's eccentricity of 0.1 mm, corrected at 0.2 m.)
+# The unbalanced mass of a machine on its mounts turns on a rotor that reaches out to it: were that rotor but a steel
+# sheet THINNEST_ROTOR_SHEET_M thick (a fan's blades, a drum's wall, a disc are thicker, and fill much of the circle
+# they sweep), a rotor reaching e from its axis weighs ρ·π·e²·t, 24.7 kg at e = 1 m, 617 kg at 5 m.  A machine
+# lighter than that (its mass includes the rotor) has its eccentricity in millimetres: e = 5 meant as 5 mm.
+STEEL_DENSITY = 7850.0
+THINNEST_ROTOR_SHEET_M = 0.001
+# A rotor balanced in two planes is a long one (a shaft with its discs, a drum, a crankshaft); a wide disc is
+# balanced in one.  Its masses turn within a few times its length along the axis of it (a car's wheel some 2, a fan's
+# impeller 5 or so): a mass FLATTEST_ROTOR times farther out than the masses and planes lie apart along the axis is
+# one whose radius was typed in millimetres among planes in metres.
+FLATTEST_ROTOR = 20.0
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
+
+
+# The findings of some lengths in millimetres among others in metres: dividing every length would spoil the rest.
+SOME_IN_MILLIMETRES = frozenset({"mixed", "flat_rotor"})
+
+
+def lightest_rotor(eccentricity: float) -> float:
+    """The least mass (kg) of a rotor that reaches ``eccentricity`` (m) from its axis: a steel sheet
+    :data:`THINNEST_ROTOR_SHEET_M` thick filling the circle it sweeps."""
+    return STEEL_DENSITY * math.pi * eccentricity ** 2 * THINNEST_ROTOR_SHEET_M
 
 
 @dataclass(frozen=True)
 class Implausible:
     """One length of the scene that no machine has, as metres.
 
-    ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``rotor_length``, ``eccentricity``,
-    ``diameter``, ``second_moment``, ``span``, ``base``); ``key`` its key path and ``value`` what it gives;
-    ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it belongs to; ``other_key`` and
+    ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``flat_rotor``, ``rotor_length``,
+    ``eccentricity``, ``light_machine``, ``diameter``, ``second_moment``, ``span``, ``base``); ``key`` its key path
+    and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it belongs to; ``other_key`` and
     ``other`` the second key it is judged against (``mixed``: the correction radius; ``rotor_length``: the farthest
-    plane), or for ``base`` ω (rad/s).
+    plane; ``flat_rotor``: the masses' and planes' span along the axis, ``limit`` the ratio; ``light_machine``: the
+    machine's mass, ``limit`` the lightest rotor's), or for ``base`` ω (rad/s).
     """
 
     kind: str
@@ -64,6 +86,16 @@ class Implausible:
         if self.kind == "base":
             return (f"{given} m at ω = {self.other:.4g} rad/s moves the base at Y·ω = {self.value * self.other:.4g} "
                     f"m/s, faster than any floor or shaking table (over {self.limit:g} m/s)")
+        if self.kind == "light_machine":
+            return (f"{given} m puts the unbalanced mass on a rotor that, even as a steel sheet "
+                    f"{THINNEST_ROTOR_SHEET_M * 1000:g} mm thick, weighs {self.limit:.3g} kg, more than the whole "
+                    f"machine, {self.other_key} = {self.other:g} kg (as millimetres, {self.key} = "
+                    f"{self.value / 1000:g})")
+        if self.kind == "flat_rotor":
+            return (f"{given} m is {self.value / self.other:.3g} times the rotor's length along its axis, "
+                    f"{self.other:g} m from {self.other_key} (a rotor balanced in two planes is long: its masses "
+                    f"turn no farther than {self.limit:g} times its length from the axis; as millimetres, "
+                    f"{self.key} = {self.value / 1000:g})")
         if self.kind == "second_moment":
             return (f"{given} m⁴ is more than any shaft's (over {self.limit:.3g} m⁴, a {THICKEST_SHAFT_M:g} m round "
                     "shaft's)")
@@ -91,10 +123,11 @@ class LengthsInMillimetres:
         """The warning in a line (English, as the command line prints it)."""
         unless = ", unless ω is too large: it is in rad/s, and rev/min are given as vibration.rpm" if self.only_speed \
             else ""
-        asked = millimetres_question(some=any(item.kind == "mixed" for item in self.found),
+        asked = millimetres_question(some=any(item.kind in SOME_IN_MILLIMETRES for item in self.found),
                                      second_moment=any(item.kind == "second_moment" for item in self.found))
         return "; ".join(item.detail for item in self.found) + f": {asked}{unless}"
 
 
-__all__ = ["FASTEST_BASE_M_S", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4", "LONGEST_ROTOR_M", "MIXED_RATIO",
-           "THICKEST_SHAFT_M", "Implausible", "LengthsInMillimetres"]
+__all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4", "LONGEST_ROTOR_M",
+           "MIXED_RATIO", "SOME_IN_MILLIMETRES", "STEEL_DENSITY", "THICKEST_SHAFT_M", "THINNEST_ROTOR_SHEET_M",
+           "Implausible", "LengthsInMillimetres", "lightest_rotor"]

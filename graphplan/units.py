@@ -29,3 +29,29 @@ def millimetres_question(*, some: bool = False, second_moment: bool = False) -> 
         return "are some lengths in millimetres? The scene's lengths are all in metres (divide millimetres by 1000)"
     also = ", a second moment of area by 10¹²" if second_moment else ""
     return f"are the lengths in millimetres? The scene's lengths are in metres (divide them by 1000{also})"
+
+
+#: The synchronous speeds (rev/min) of the induction motors most machines are driven by, at 50 Hz (3000/p) and
+#: 60 Hz (3600/p); a motor's nameplate speed lies a few per cent of slip below one (1450 under 1500, 960 under 1000).
+MOTOR_SYNCHRONOUS_RPM = (3600, 3000, 1800, 1500, 1200, 1000, 900, 750, 720)
+#: The most a nameplate speed lies below its synchronous speed: small motors slip 5–8 %.
+MOST_MOTOR_SLIP = 0.1
+
+
+def motor_speed_in_rpm(omega: float) -> bool:
+    """Whether ``omega`` (rad/s, as typed) reads as a motor's speed in rev/min: a whole multiple of 5 within
+    :data:`MOST_MOTOR_SLIP` below one of :data:`MOTOR_SYNCHRONOUS_RPM` (1450, 2900, 960).  As rad/s these are 6200
+    rev/min and more, beyond a course's linkages (an engine's crank turns at 2000–6000 rev/min) and the flywheel
+    shafts and machines on mounts the course works out, while a speed given as rpm converts to no such whole
+    number."""
+    size = abs(omega)
+    if size != round(size) or round(size) % 5:
+        return False
+    return any((1.0 - MOST_MOTOR_SLIP) * synchronous <= size <= synchronous for synchronous in MOTOR_SYNCHRONOUS_RPM)
+
+
+def rpm_question(key: str, omega: float, rpm_key: str) -> str:
+    """The warning of a speed ``key = omega`` that reads as rev/min typed for rad/s, with what it is as rad/s and
+    what it would be as rev/min, and the key that takes rev/min."""
+    return (f"{key} = {omega:g} rad/s is {abs(omega) / RPM:.0f} rpm: a motor's speed in rev/min typed for rad/s? "
+            f"{abs(omega):g} rpm is {abs(omega) * RPM:.4g} rad/s: write {rpm_key} = {omega:g}")

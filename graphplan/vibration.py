@@ -44,8 +44,9 @@ from .rotor_lengths import (
     THICKEST_SHAFT_M,
     Implausible,
     LengthsInMillimetres,
+    lightest_rotor,
 )
-from .units import RPM, percentage_question
+from .units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 
 Scalar = float | np.ndarray
 #: Without damping, a speed this close to ωn (relative) is resonance: its amplitude is rounding's, not the machine's.
@@ -543,7 +544,8 @@ def mounts_sag(spec: VibrationSpec) -> MountsSag | None:
 
 def lengths_in_millimetres(spec: VibrationSpec) -> LengthsInMillimetres | None:
     """The machine's lengths that no machine has as metres, each with its key (``vibration.shaft.diameter``), as
-    lengths typed in millimetres make them; None where they are plausible (limits in :mod:`graphplan.rotor_lengths`)."""
+    lengths typed in millimetres make them (an eccentricity too, where a rotor reaching so far would outweigh the
+    whole machine); None where they are plausible (limits in :mod:`graphplan.rotor_lengths`)."""
     found = []
     if spec.eccentricity is not None and spec.eccentricity > LARGEST_RADIUS_M:
         found.append(Implausible("eccentricity", "vibration.eccentricity", spec.eccentricity, LARGEST_RADIUS_M))
@@ -559,6 +561,10 @@ def lengths_in_millimetres(spec: VibrationSpec) -> LengthsInMillimetres | None:
     base = spec.base_amplitude
     if base is not None and base * spec.omega > FASTEST_BASE_M_S:
         found.append(Implausible("base", "vibration.base_amplitude", base, FASTEST_BASE_M_S, other=spec.omega))
+    eccentric = spec.eccentricity
+    if eccentric is not None and eccentric <= LARGEST_RADIUS_M and lightest_rotor(eccentric) > spec.mass:
+        found.append(Implausible("light_machine", "vibration.eccentricity", eccentric, lightest_rotor(eccentric),
+                                 other_key="vibration.mass", other=spec.mass))
     return LengthsInMillimetres(tuple(found)) if found else None
 
 
@@ -573,6 +579,15 @@ def lengths_warning(spec: VibrationSpec) -> str | None:
     """The command line's line for :func:`lengths_in_millimetres`, or None."""
     found = lengths_in_millimetres(spec)
     return None if found is None else f"vibration: {found.detail}"
+
+
+def speed_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line where ``omega`` reads as a motor's speed in rev/min typed for rad/s
+    (:func:`~graphplan.units.motor_speed_in_rpm`); None where it does not, or where the machine turns at the crank's
+    speed (the driver's own key is warned of with the linkage)."""
+    if spec.driver_speed or not motor_speed_in_rpm(spec.omega):
+        return None
+    return f"vibration: {rpm_question('vibration.omega', spec.omega, 'vibration.rpm')}"
 
 
 def resonance_warning(spec: VibrationSpec) -> str | None:
@@ -928,6 +943,7 @@ __all__ = [
     "resonance_warning",
     "series_mount_stiffness",
     "shaft_stiffness",
+    "speed_warning",
     "steady_state",
     "transmissibility",
     "unbalance_magnification",

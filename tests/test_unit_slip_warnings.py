@@ -48,24 +48,24 @@ KLOSS = ('motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_
     (_edited("crank-rocker", "omega   = -17.0", ""),
      "driver.omega: is required but missing: give omega (rad/s) or rpm (rev/min)"),
     (MACHINE + "unbalance = 0.02\nrpm = 600\n", "vibration.stiffness: is required (or shaft)"),
-    (MACHINE + "unbalance = 0.02\nstiffness = 1e5\n", "vibration.omega: is required but missing: give omega (rad/s) "
-                                                     "or rpm (rev/min)"),
-    (MACHINE + "stiffness = 1e5\nrpm = 600\n", "vibration.unbalance: is required (m·e, kg·m), or unbalanced_mass "
-                                               "and eccentricity"),
+    (MACHINE + "unbalance = 0.02\nstiffness = 1e5\n",
+     "vibration.omega: is required but missing: give omega (rad/s) or rpm (rev/min)"),
+    (MACHINE + "stiffness = 1e5\nrpm = 600\n",
+     "vibration.unbalance: is required (m·e, kg·m), or unbalanced_mass and eccentricity"),
     (MACHINE + "unbalance = 0.02\nshaft = { modulus = 2e11, length = 1.0 }\nrpm = 600\n",
      "vibration.shaft.diameter: is required (the shaft's diameter, m), or second_moment (I, m⁴)"),
     ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\n' + SHEET,
      "dynamics.omega: is required but missing: give omega (rad/s) or rpm (rev/min)"),
     (_edited("crank-rocker", 'assembly = "left"', ""),
-     "groups[0].assembly: is required but missing: left or right chooses the branch the group assembles in (or "
-     "near = [x, y]"),
+     ("groups[0].assembly: is required but missing: left or right chooses the branch the group assembles in (or "
+      "near = [x, y]")),
     # Half of a pair: told at the half left out, with the other way to give it.
     (MACHINE + "unbalanced_mass = 1.0\nstiffness = 1e5\nrpm = 600\n",
-     "vibration.eccentricity: is required with unbalanced_mass: the unbalanced mass's distance e from the axis, m; "
-     "or give unbalance (m·e, kg·m) alone in place of both"),
+     ("vibration.eccentricity: is required with unbalanced_mass: the unbalanced mass's distance e from the axis, "
+      "m; or give unbalance (m·e, kg·m) alone in place of both")),
     (MACHINE + "eccentricity = 0.01\nstiffness = 1e5\nrpm = 600\n",
-     "vibration.unbalanced_mass: is required with eccentricity: the unbalanced mass m, kg; or give unbalance (m·e, "
-     "kg·m) alone in place of both"),
+     ("vibration.unbalanced_mass: is required with eccentricity: the unbalanced mass m, kg; or give unbalance "
+      "(m·e, kg·m) alone in place of both")),
     # Both: told at a key, never at the table alone, naming both.
     (_edited("crank-rocker", "omega   = -17.0", "omega = -17.0\nrpm = 160"),
      "driver.rpm: give either omega or rpm, not both"),
@@ -86,8 +86,106 @@ KLOSS = ('motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_
     (MACHINE + "unbalance = 0.02\nstiffness = 1e5\nomega = -3\n", "vibration.omega: must be > 0"),
     ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = -100\n' + SHEET, "dynamics.rpm: must be > 0"),
     (_edited("crank-rocker", 'assembly = "left"', "near = 5"), "groups[0].near: must be a point [x, y]"),
-    (_edited("crank-rocker", 'assembly = "left"', 'assembly = "up"'), "groups[0].assembly: must be one of left, "
-                                                                      "right"),
+    (_edited("crank-rocker", 'assembly = "left"', 'assembly = "up"'), "groups[0].assembly: must be one of left, right"),
 ])
 def test_a_choice_got_wrong_is_told_at_the_key_at_fault(tmp_path, capsys, text, told):
     assert told in _refusal(tmp_path, text, capsys)
+
+
+# --- values typed in another unit ----------------------------------------------------------------------------------
+
+def _run(tmp_path: Path, text: str, capsys, only: str = "note") -> tuple[str, dict, str]:
+    """Run the scene: the warnings on the console, results.json and the note; the run still completes."""
+    out = tmp_path / "out"
+    assert main(["run", str(_scene(tmp_path, text)), "--out", str(out), "--only", only]) == 0
+    told = capsys.readouterr().out
+    return (told, json.loads((out / "results.json").read_text(encoding="utf-8")),
+            (out / "note.md").read_text(encoding="utf-8"))
+
+
+def _rpm_words(key: str, omega: float) -> str:
+    """What the warning says of ``key = omega`` typed in rev/min, worked out here: the speed as rad/s in rev/min,
+    and the rev/min as rad/s."""
+    as_rpm = abs(omega) * 30.0 / math.pi
+    return (f"{key} = {omega:g} rad/s is {as_rpm:.0f} rpm: a motor's speed in rev/min typed for rad/s? "
+            f"{abs(omega):g} rpm is {abs(omega) * math.pi / 30.0:.4g} rad/s")
+
+
+@pytest.mark.parametrize("omega", [-1450.0, 2900.0, 960.0])
+def test_a_cranks_rpm_typed_as_omega_is_warned_of_with_the_speed_it_would_be(tmp_path, capsys, omega):
+    told, results, note = _run(tmp_path, _edited("crank-rocker", "omega   = -17.0", f"omega = {omega!r}"), capsys)
+    words = _rpm_words("driver.omega", omega)
+    assert f"warning: {words}: write driver.rpm = {omega:g}" in told
+    assert any(warning["code"] == "speed-in-rpm" and words in warning["detail"] for warning in results["warnings"])
+    assert "a motor's speed in revolutions per minute" in note
+
+
+def test_a_cranks_rpm_given_as_rpm_is_not_warned_of(tmp_path, capsys):
+    told, results, _ = _run(tmp_path, _edited("crank-rocker", "omega   = -17.0", "rpm = -1450"), capsys)
+    assert "rev/min typed for rad/s" not in told
+    assert "speed-in-rpm" not in {warning["code"] for warning in results["warnings"]}
+
+
+def test_a_flywheel_shafts_and_a_machines_rpm_typed_as_omega_are_warned_of(tmp_path, capsys):
+    flywheel = starter("flywheel", "en").replace("rpm   = 100 ", "omega = 1440", 1)
+    assert "omega = 1440" in flywheel
+    told, _, _ = _run(tmp_path, flywheel, capsys, "note,dynamics")
+    assert f"warning: {_rpm_words('dynamics.omega', 1440.0)}: write dynamics.rpm = 1440" in told
+    machine = MACHINE + "unbalance = 0.02\nstiffness = 1e5\ndamping_ratio = 0.1\nomega = 2880\n"
+    told, _, _ = _run(tmp_path, machine, capsys, "note,vibration")
+    assert f"warning: vibration: {_rpm_words('vibration.omega', 2880.0)}: write vibration.rpm = 2880" in told
+
+
+def test_a_links_mass_in_grams_is_warned_of(tmp_path, capsys):
+    # The rocker BC is 0.325 m long: a solid steel bar of it, 0.325 m square, is 7850·0.325³ = 269 kg.
+    text = _edited("crank-rocker", 'mass    = 17.0\ncentre  = "S4"', 'mass    = 300.0\ncentre  = "S4"')
+    told, results, note = _run(tmp_path, text, capsys)
+    bar = 7850.0 * 0.325 ** 3
+    words = (f"links.4.mass = 300 kg on a link 0.325 m long (B–C), heavier than a solid steel bar of that length "
+             f"({bar:.3g} kg): grams typed for kg? 300 g is links.4.mass = 0.3")
+    assert words in told
+    assert any(warning["code"] == "masses-in-grams" and words in warning["detail"] for warning in results["warnings"])
+    assert "the masses were probably given in grams" in note
+
+
+def test_an_eccentricity_in_millimetres_is_warned_of(tmp_path, capsys):
+    machine = MACHINE + "unbalanced_mass = 1.0\neccentricity = 5.0\nstiffness = 1e5\ndamping_ratio = 0.1\nrpm = 600\n"
+    told, results, note = _run(tmp_path, machine, capsys, "note,vibration")
+    sheet = 7850.0 * math.pi * 5.0 ** 2 * 0.001  # a steel sheet 1 mm thick sweeping a 5 m circle
+    words = (f"vibration.eccentricity = 5 m puts the unbalanced mass on a rotor that, even as a steel sheet 1 mm "
+             f"thick, weighs {sheet:.3g} kg, more than the whole machine, vibration.mass = 100 kg (as millimetres, "
+             "vibration.eccentricity = 0.005)")
+    assert f"warning: vibration: {words}" in told
+    assert any(warning["code"] == "lengths-in-mm" and words in warning["detail"]
+               for warning in results["vibration"]["warnings"])
+    assert f"weighs {sheet:.3g} kg, more than the whole machine, 100 kg" in note
+
+
+def test_a_rotors_radius_in_millimetres_among_planes_in_metres_is_warned_of(tmp_path, capsys):
+    rotor = starter("rotor", "en").replace("radius = 0.05, angle = 0.0", "radius = 5.0, angle = 0.0", 1)
+    told, results, note = _run(tmp_path, rotor, capsys, "note,balancing")
+    # The starter's masses and planes lie from z = 0 to z = 0.22 m.
+    words = (f"balancing.masses[0].radius = 5 m is {5.0 / 0.22:.3g} times the rotor's length along its axis, 0.22 m "
+             "from balancing.masses[0].plane to balancing.planes[1]")
+    assert f"warning: balancing: {words}" in told and "balancing.masses[0].radius = 0.005" in told
+    assert any(warning["code"] == "lengths-in-mm" and words in warning["detail"]
+               for warning in results["balancing"]["warnings"])
+    assert f"mass 1's radius, 5 m, is {5.0 / 0.22:.3g} times the 0.22 m" in note
+
+
+_SLIPS = ("rev/min typed for rad/s", "grams typed for kg", "as millimetres,")
+
+
+@pytest.mark.parametrize("scene", [*SCENES, *STARTERS], ids=str)
+def test_no_fixture_test_scene_or_starter_is_told_of_a_unit_slip(tmp_path, capsys, scene):
+    from graphplan.analysis import analyse
+    from graphplan.deliverables import outcome_warnings
+    from graphplan.scene import load
+
+    path = _scene(tmp_path, starter(scene, "en")) if isinstance(scene, str) else scene
+    loaded = load(path)
+    pieces = ("note", *(piece for piece in ("dynamics", "vibration", "balancing") if getattr(loaded, piece)))
+    told = outcome_warnings(loaded, pieces, None)
+    if loaded.driver is not None:
+        told += [warning.detail for warning in analyse(loaded).warnings]
+    assert not [line for line in told if any(slip in line for slip in _SLIPS)]

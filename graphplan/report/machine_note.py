@@ -725,14 +725,16 @@ def _lengths_caution(note: Writer, lengths: LengthsInMillimetres) -> None:
     for item in lengths.found:
         values = {"name": item.name, "value": note.n(item.value), "limit": note.n(item.limit, 3),
                   "other": note.n(item.other), "other_name": item.other_name}
-        if item.kind == "mixed":
+        if item.kind in ("mixed", "flat_rotor"):
             values["ratio"] = note.n(item.value / item.other, 3)
         elif item.kind == "rotor_length":
             values["apart"] = note.n(item.value - item.other)
         elif item.kind == "base":
             values["speed"] = note.n(item.value * item.other, 4)
         found.append(note.t(f"note_len_{item.kind}", **values))
-    mixed = any(item.kind == "mixed" for item in lengths.found)
+    from ..rotor_lengths import SOME_IN_MILLIMETRES
+
+    mixed = any(item.kind in SOME_IN_MILLIMETRES for item in lengths.found)
     key = "_speed" if lengths.only_speed else "_mixed" if mixed else ""
     note.para(note.t("note_lengths_caution" + key, found=note.text["note_len_separator"].join(found)))
 

@@ -1,0 +1,66 @@
+"""Values of a linkage typed in another unit than the scene's that still run: a crank's speed in rev/min given as
+``omega`` (1450 rad/s for a 1450 rpm motor), a link's mass in grams (a 0.3 m rocker of 300 kg).  Every result
+follows them a thousand or ten times off, so the run warns at its first position, naming the key, its value and
+what was likely meant, as it warns of lengths in millimetres (:mod:`graphplan.length_units`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from .mechanism import Mechanism
+from .motion import Motion, PositionWarning
+from .units import motor_speed_in_rpm, rpm_question
+
+# A link is a bar between its joints.  A course's links weigh q·l, q some 10–40 kg/m (a 0.3 m rocker 3–12 kg);
+# even a solid steel bar as thick and as wide as it is long, or 0.1 m square where it is shorter (78.5 kg/m, twice
+# the heaviest q), weighs less than ρ·l·max(l, 0.1 m)² (212 kg for 0.3 m, 3.9 kg for 0.05 m), and the same masses
+# typed in grams, a thousand times q·l, pass it.  The driving crank is left out: it carries a flywheel, a gear or
+# counterweights beyond its pin, a mass its length does not bound.
+STEEL_DENSITY = 7850.0
+THINNEST_SECTION_M = 0.1
+
+
+def heaviest_bar(length: float) -> float:
+    """The most a link of ``length`` (m) between its joints weighs, kg: a solid steel bar as thick and as wide as it
+    is long, or :data:`THINNEST_SECTION_M` square where it is shorter."""
+    return STEEL_DENSITY * length * max(length, THINNEST_SECTION_M) ** 2
+
+
+def speed_in_rpm(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
+    """A ``speed-in-rpm`` warning, at the first position, where the crank's ``omega`` reads as a motor's speed in
+    rev/min (:func:`~graphplan.units.motor_speed_in_rpm`)."""
+    driver = mechanism.driver
+    if driver.kind != "crank" or driver.rpm is not None or not motor_speed_in_rpm(driver.omega):
+        return ()
+    return (PositionWarning(0, "speed-in-rpm", rpm_question(f"{driver.where}.omega", driver.omega,
+                                                            f"{driver.where}.rpm")),)
+
+
+def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
+    """A ``masses-in-grams`` warning, at the first position, naming each link but the driver whose mass is more
+    than :func:`heaviest_bar` of its span (the largest distance between two of its points), with the mass it would
+    be in grams."""
+    told = []
+    for number, link in sorted(mechanism.scene.links.items()):
+        span = _span(mechanism, motion, number)
+        if number == mechanism.driver.link or span is None or not link.mass > heaviest_bar(span[0]):
+            continue
+        length, between = span
+        told.append(f"{link.where}.mass = {link.mass:g} kg on a link {length:.3g} m long ({between}), heavier than a "
+                    f"solid steel bar of that length ({heaviest_bar(length):.3g} kg): grams typed for kg? "
+                    f"{link.mass:g} g is {link.where}.mass = {link.mass / 1000:g}")
+    if not told:
+        return ()
+    return (PositionWarning(0, "masses-in-grams", "; ".join(told) + ": the scene's masses are in kg (divide grams "
+                                                                    "by 1000)"),)
+
+
+def _span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[float, str] | None:
+    """The largest distance between two points of ``link`` (the same at every position: the first's), with the two
+    points; None for a link with one point (a slider's block)."""
+    names = sorted(name for name in mechanism.fixed_on.get(link, ()) if name in motion.points)
+    where = {name: complex(*motion.point(name).r[0]) for name in names}
+    spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
+             if math.isfinite(abs(where[a] - where[b]))]
+    return max(spans) if spans else None
