@@ -78,6 +78,32 @@ KLOSS = ('motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_
     ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = 100\n' + SHEET
      + KLOSS.replace("rated_rpm = 1440", "rated_rpm = 1440, rated_slip = 0.04") + "\n",
      "dynamics.motor.rated_slip: give two of synchronous_rpm, rated_rpm, rated_slip, not all three"),
+    (MACHINE + "unbalance = 0.02\nstiffness = 1e5\nrpm = 600\ndamping = 3\ndamping_ratio = 0.1\n",
+     "vibration.damping: give either damping_ratio or damping (c), not both"),
+    (MACHINE + "unbalance = 0.02\nshaft = { modulus = 2e11, length = 1.0, diameter = 0.05, second_moment = 3e-7 }\n"
+               "rpm = 600\n", "vibration.shaft.diameter: give either second_moment or diameter, not both"),
+    (_edited("crank-rocker", "acceleration_pole  = 100.0", "acceleration_pole = 100.0\nacceleration_scale = 0.5"),
+     "drawing.acceleration_scale: give either acceleration_pole or acceleration_scale, not both"),
+    ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = 100\n' + SHEET
+     + "resisting_torque = [[0, 10], [360, 10]]\n",
+     "dynamics.resisting_power: give resisting_torque or resisting_power, not both"),
+    ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = 100\n' + SHEET
+     + 'motor = { kind = "linear", stall_torque = 400, points = [[0, 400], [150, 0]] }\n',
+     "dynamics.motor.stall_torque: give either points or stall_torque with no_load_rpm, not both"),
+    ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = 100\n' + SHEET
+     + 'motor = { kind = "constant", torque = 400 }\nstart = { omega = 5, rpm = 50 }\n',
+     "dynamics.start.rpm: give either omega or rpm, not both"),
+    ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = 100\n' + SHEET
+     + 'motor = { kind = "constant", torque = 400 }\nstart = { driving_rpm = 50 }\n',
+     "dynamics.start.driving_rpm: only with a clutch"),
+    ('[scene]\ntitle = "Press"\n[dynamics]\ndelta = 0.05\nrpm = 100\n' + SHEET
+     + KLOSS.replace("synchronous_rpm = 1500, rated_rpm = 1440, ", "") + "\n",
+     "dynamics.motor: give two of synchronous_rpm, rated_rpm, rated_slip (got none)"),
+    ('[scene]\ntitle = "Press"\n[dynamics]\nrpm = 100\n' + SHEET + 'motor = { kind = "constant", torque = 400 }\n',
+     ("dynamics.inertia: the equation of motion needs the machine's inertia: give inertia (kg·m², the machine's "
+      "own, > 0) or delta")),
+    (_edited("crank-rocker", "value     = 1500.0", "value = 1500.0\ndiagram = [[0, 0], [1, 1500]]"),
+     "loads[0].diagram: a load diagram gives the values and the window itself: leave out value and during"),
     # A bad value in one: told at that one, not at the other.
     (_edited("crank-rocker", "omega   = -17.0", 'rpm = "160"'), "driver.rpm: must be a number, not a string"),
     (MACHINE + "unbalance = 0.02\nstiffness = -1e5\nrpm = 600\n", "vibration.stiffness: must be > 0"),
