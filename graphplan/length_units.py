@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from .mechanism import Mechanism
 from .motion import PositionWarning
-from .units import MIXED_RATIO, millimetres_question
+from .units import MIXED_RATIO, millimetres_question, motor_speed_in_rpm
 
 # Lengths typed in millimetres where the scene asks for metres make a mechanism a thousand times too large, and
 # every result follows it (a crank pin at 750 m/s, μl = 2.5 m/mm).  The linkages this method serves are a course
@@ -54,7 +54,10 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
             told.append(far_point)
             some = True
     driver = mechanism.driver
-    fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S
+    # An omega that reads as a motor's rpm explains a fast crank pin by itself, and is told so (``speed-in-rpm``):
+    # asking of millimetres too would send the student to lengths that are right.
+    rpm_typed = driver.kind == "crank" and driver.rpm is None and motor_speed_in_rpm(driver.omega)
+    fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S and not rpm_typed
     if fast:
         told.append(f"driver.length = {driver.length:g} m at ω = {abs(driver.omega):.4g} rad/s moves the crank pin "
                     f"{driver.joint} at {abs(driver.omega) * driver.length:.4g} m/s, faster than any machine's (over "
