@@ -608,12 +608,18 @@ def delta_warning(spec: DynamicsSpec) -> str | None:
             f"{percentage_question(delta, 'δ')}")
 
 
-def speed_warning(spec: DynamicsSpec) -> str | None:
-    """A line for the command line where ``omega`` reads as a motor's speed in rev/min typed for rad/s
-    (:func:`~graphplan.units.motor_speed_in_rpm`), else None."""
-    if spec.omega is None or not motor_speed_in_rpm(spec.omega):
-        return None
-    return rpm_question(f"{spec.where}.omega", spec.omega, f"{spec.where}.rpm")
+def speed_warnings(spec: DynamicsSpec) -> list[str]:
+    """A line for the command line for each speed of the table given in rad/s that reads as a motor's speed in
+    rev/min (:func:`~graphplan.units.motor_speed_in_rpm`): the mean ``omega``, and a run's ``start.omega`` and
+    ``start.driving_omega``, which a student types off the same nameplate."""
+    where = spec.where
+    speeds = [(f"{where}.omega", spec.omega, f"{where}.rpm")]
+    start = getattr(spec.motion, "start", None)
+    if start is not None:
+        speeds += [(f"{where}.start.omega", start.omega, f"{where}.start.rpm"),
+                   (f"{where}.start.driving_omega", start.driving_omega, f"{where}.start.driving_rpm")]
+    return [rpm_question(key, omega, rpm_key) for key, omega, rpm_key in speeds
+            if omega is not None and motor_speed_in_rpm(omega)]
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
@@ -748,6 +754,6 @@ __all__ = [
     "rpm_to_omega",
     "speed_fluctuation",
     "speed_limits",
-    "speed_warning",
+    "speed_warnings",
     "unusual_speed_swing",
 ]

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..reader import Table, check_number
-from ..units import RPM, percentage_question
+from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
 from .method import refuse_endless_run_down, refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
@@ -70,12 +70,19 @@ class MotionSpec:
                              f"{MOST_TURNS} turns")
         # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
         # than a run integrates, each resolved step by step: the run would hang rather than fail.
-        fastest = max(self.start.omega, self.start.driving_omega or 0.0)
+        driving = self.start.driving_omega or 0.0
+        fastest = max(self.start.omega, driving)
         span = self.duration if self.duration is not None else MOST_CYCLES * TWO_PI / omega_run
         if fastest * span > TWO_PI * MOST_TURNS:
+            # Such a start is most often a nameplate's rpm typed as omega: the refusal asks it, as the warning would
+            # of a run short enough to integrate.
+            key = "driving_omega" if driving > self.start.omega else "omega"
+            rpm_key = "driving_rpm" if key == "driving_omega" else "rpm"
+            typed = (f"; {rpm_question(f'start.{key}', fastest, f'start.{rpm_key}')}"
+                     if motor_speed_in_rpm(fastest) else "")
             raise ValueError(f"start: {fastest:.4g} rad/s is {fastest / omega_run:.3g} times the running speed, "
                              f"{omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} turns, "
-                             f"and it integrates at most {MOST_TURNS}")
+                             f"and it integrates at most {MOST_TURNS}{typed}")
 
 
     def _refuse_stiff_brake(self, machine: Machine, period: float) -> None:
