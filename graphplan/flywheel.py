@@ -608,18 +608,23 @@ def delta_warning(spec: DynamicsSpec) -> str | None:
             f"{percentage_question(delta, 'δ')}")
 
 
-def speed_warnings(spec: DynamicsSpec) -> list[str]:
-    """A line for the command line for each speed of the table given in rad/s that reads as a motor's speed in
-    rev/min (:func:`~graphplan.units.motor_speed_in_rpm`): the mean ``omega``, and a run's ``start.omega`` and
-    ``start.driving_omega``, which a student types off the same nameplate."""
+def rpm_typed_speeds(spec: DynamicsSpec) -> list[tuple[str, str, float]]:
+    """Each speed of the table given in rad/s that reads as a motor's speed in rev/min
+    (:func:`~graphplan.units.motor_speed_in_rpm`), as (what it is: ``mean``, ``start`` or ``driving``, its key
+    path, its value): the mean ``omega``, and a run's ``start.omega`` and ``start.driving_omega``, which a student
+    types off the same nameplate."""
     where = spec.where
-    speeds = [(f"{where}.omega", spec.omega, f"{where}.rpm")]
+    speeds = [("mean", f"{where}.omega", spec.omega)]
     start = getattr(spec.motion, "start", None)
     if start is not None:
-        speeds += [(f"{where}.start.omega", start.omega, f"{where}.start.rpm"),
-                   (f"{where}.start.driving_omega", start.driving_omega, f"{where}.start.driving_rpm")]
-    return [rpm_question(key, omega, rpm_key) for key, omega, rpm_key in speeds
-            if omega is not None and motor_speed_in_rpm(omega)]
+        speeds += [("start", f"{where}.start.omega", start.omega),
+                   ("driving", f"{where}.start.driving_omega", start.driving_omega)]
+    return [(role, key, omega) for role, key, omega in speeds if omega is not None and motor_speed_in_rpm(omega)]
+
+
+def speed_warnings(spec: DynamicsSpec) -> list[str]:
+    """A line for the command line for each of :func:`rpm_typed_speeds`, with the rpm key to write instead."""
+    return [rpm_question(key, omega, key.removesuffix("omega") + "rpm") for _, key, omega in rpm_typed_speeds(spec)]
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
@@ -752,6 +757,7 @@ __all__ = [
     "omega_to_rpm",
     "read_dynamics",
     "rpm_to_omega",
+    "rpm_typed_speeds",
     "speed_fluctuation",
     "speed_limits",
     "speed_warnings",

@@ -568,11 +568,33 @@ def lengths_in_millimetres(spec: VibrationSpec) -> LengthsInMillimetres | None:
     return LengthsInMillimetres(tuple(found)) if found else None
 
 
-def cautions(spec: VibrationSpec) -> list[LengthsInMillimetres | NearResonance | MountsSag]:
-    """What the results hold that a reader should not take at face value: lengths that look typed in millimetres,
-    a speed near resonance, isolating mounts no spring could be."""
-    return [found for found in (lengths_in_millimetres(spec), near_resonance(spec), mounts_sag(spec))
-            if found is not None]
+@dataclass(frozen=True)
+class SpeedInRpm:
+    """The table's ``omega`` (rad/s, as typed) that reads as a motor's speed in rev/min."""
+
+    omega: float
+    code = "speed-in-rpm"
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        return rpm_question("vibration.omega", self.omega, "vibration.rpm")
+
+
+def speed_in_rpm(spec: VibrationSpec) -> SpeedInRpm | None:
+    """The table's ``omega`` where it reads as a motor's speed in rev/min typed for rad/s
+    (:func:`~graphplan.units.motor_speed_in_rpm`); None where it does not, or where the machine turns at the crank's
+    speed (the driver's own key is warned of with the linkage)."""
+    if spec.driver_speed or not motor_speed_in_rpm(spec.omega):
+        return None
+    return SpeedInRpm(spec.omega)
+
+
+def cautions(spec: VibrationSpec) -> list[SpeedInRpm | LengthsInMillimetres | NearResonance | MountsSag]:
+    """What the results hold that a reader should not take at face value: a speed that looks typed in rev/min,
+    lengths that look typed in millimetres, a speed near resonance, isolating mounts no spring could be."""
+    return [found for found in (speed_in_rpm(spec), lengths_in_millimetres(spec), near_resonance(spec),
+                                mounts_sag(spec)) if found is not None]
 
 
 def lengths_warning(spec: VibrationSpec) -> str | None:
@@ -582,12 +604,9 @@ def lengths_warning(spec: VibrationSpec) -> str | None:
 
 
 def speed_warning(spec: VibrationSpec) -> str | None:
-    """The command line's line where ``omega`` reads as a motor's speed in rev/min typed for rad/s
-    (:func:`~graphplan.units.motor_speed_in_rpm`); None where it does not, or where the machine turns at the crank's
-    speed (the driver's own key is warned of with the linkage)."""
-    if spec.driver_speed or not motor_speed_in_rpm(spec.omega):
-        return None
-    return f"vibration: {rpm_question('vibration.omega', spec.omega, 'vibration.rpm')}"
+    """The command line's line for :func:`speed_in_rpm`, or None."""
+    found = speed_in_rpm(spec)
+    return None if found is None else f"vibration: {found.detail}"
 
 
 def resonance_warning(spec: VibrationSpec) -> str | None:
@@ -918,6 +937,7 @@ __all__ = [
     "NearResonance",
     "Response",
     "Shaft",
+    "SpeedInRpm",
     "VibrationSpec",
     "at_resonance",
     "cautions",
@@ -943,6 +963,7 @@ __all__ = [
     "resonance_warning",
     "series_mount_stiffness",
     "shaft_stiffness",
+    "speed_in_rpm",
     "speed_warning",
     "steady_state",
     "transmissibility",

@@ -56,6 +56,12 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     # The texts of a run once over a swing or a travel, not over a cycle, say so.
     run = "" if model.cyclic else "_swing" if turning else "_travel"
     note.heading(2, note.t("note_dynamics"), section)
+    from ..flywheel import rpm_typed_speeds
+
+    # The file outlives the console: a speed typed off a motor's nameplate spoils all worked out from it.
+    for role, _, omega in rpm_typed_speeds(note.scene.dynamics):
+        note.para(note.t("note_dyn_caution_speed_in_rpm", speed=note.text[f"note_dyn_speed_{role}"],
+                         omega=note.n(omega), rpm=note.n(omega / RPM), meant=note.n(omega * RPM)))
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         # The points the scene gives, not the samples the model is worked on (362 for a diagram of 4).
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
@@ -553,7 +559,7 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
 
     Each operand is written to as many digits as make the written operands give the written result
     (:func:`shown_operand`); a value used in several equations is written one way in all of them."""
-    from ..vibration import damping_ratio, lengths_in_millimetres, mounts_sag, near_resonance
+    from ..vibration import damping_ratio, lengths_in_millimetres, mounts_sag, near_resonance, speed_in_rpm
     from .vibration_plots import words_for
 
     # What excites the machine names the section: a machine on a moving base has no rotating unbalance to speak of.
@@ -580,6 +586,10 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
     if spec.driver_speed:
         # The table gave no speed: the reader is told whose it is, not left to think it typed.
         note.para(note.t("note_vib_driver_speed", rpm=note.n(spec.omega / RPM), omega=omega))
+    if speed_in_rpm(spec) is not None:
+        # The file outlives the console: every amplitude and force below follows a speed ten times too high.
+        note.para(note.t("note_vib_caution_speed_in_rpm", omega=omega, rpm=note.n(spec.omega / RPM),
+                         meant=note.n(spec.omega * RPM)))
     # The unbalance and a moving base excite one linear system: each is worked out alone, then the two added.
     both = response.combined
     base_text = "" if response.base is None else note.n(response.base.base_amplitude)
