@@ -482,8 +482,15 @@ def _laid_off(plan: Plan, segment: tuple[str, str]) -> str:
     arithmetic, not the drawing; the tangential part beside a normal one gives ε (the table's list says which)."""
     written = f"{segment[0]}{segment[1]}"
     # The Coriolis vector is laid off from 2·ω·v, not found by the construction: nothing to read.
-    if set(segment) & _coriolis_ends(plan):
+    coriolis = _coriolis_vectors(plan)
+    if set(segment) in [set(ends) for ends in coriolis]:
         return f" ({written} is the Coriolis component, laid off from 2·ω·v, not read off)"
+    # A segment that only ends where the Coriolis vector does (pk) is no vector of the plan: calling it the
+    # Coriolis component would send the student to the wrong segment.
+    ending = next((ends for ends in coriolis if ends[1] in segment), None)
+    if ending is not None:
+        return (f" ({written} is no vector of the plan: {ending[1]} ends the Coriolis component {''.join(ending)}, "
+                "laid off from 2·ω·v, not read off)")
     normal = next((vector.meaning for step in plan.steps for vector in step.vectors
                    if vector.meaning.endswith("ⁿ") and {vector.start, vector.end} == set(segment)), None)
     if normal is not None:
@@ -511,9 +518,10 @@ def _refuse_a_value(name: str, table: list[Reading], where: str) -> None:
                      f"its length on the {reading.plan} plan in mm")
 
 
-def _coriolis_ends(plan: Plan) -> set[str]:
-    """The letters that end the plan's Coriolis components (``k``, ``k3``); a point named K has the image k."""
-    return {vector.end for step in plan.steps for vector in step.vectors if vector.meaning.endswith("ᵏ")}
+def _coriolis_vectors(plan: Plan) -> list[tuple[str, str]]:
+    """The (start, end) letters of the plan's Coriolis components (``a``, ``k``); a point named K has the image k."""
+    return [(vector.start, vector.end) for step in plan.steps for vector in step.vectors
+            if vector.meaning.endswith("ᵏ")]
 
 
 def split_segment(name: str, letters: list[str], where: str) -> tuple[str, str]:
