@@ -314,3 +314,29 @@ def test_lengths_typed_in_metres_are_warned_of(tmp_path):
     assert "warning" in done.stdout + done.stderr
     said = done.stdout + done.stderr
     assert "ab = 0.149" in said and "metres" in said and "1000" in said
+
+
+# --- the table as a teacher reads it -----------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("locale", "largest", "formula"), [
+    ("en", "largest δ in magnitude", "δ = (analytic − plan) / analytic · 100 %"),
+    ("ru", "наибольшая по модулю δ", "δ = (Xа − Xпл) / Xа · 100 %"),
+])
+def test_the_worst_hand_reading_is_named_under_its_tables_delta_column(locale, largest, formula, tmp_path):
+    """A teacher checks the worst reading first; it was to be found by scanning every δ of a 30-row table."""
+    text, number, expected = _shaper_case(locale)
+    done, out = _run(tmp_path, text, only="errors,note")
+    assert done.returncode == 0, done.stderr
+    errors_md = (out / "errors.md").read_text(encoding="utf-8")
+    assert formula in errors_md and formula in (out / "note.md").read_text(encoding="utf-8")
+    header, rows = _table(errors_md, number)
+    assert header[1] in ("unit", "ед. изм.")
+    assert rows[next(iter(rows))][header[1]]  # every quantity's unit written beside it
+    worst_quantity = max(expected, key=lambda name: abs((expected[name][0] - expected[name][1]) / expected[name][0]))
+    exact, plan = expected[worst_quantity]
+    worst = f"{(exact - plan) / exact * 100.0:.3f} ({_symbol(worst_quantity)})"
+    if locale == "ru":
+        worst = worst.replace(".", ",")
+    measured_column = next(name for name in header if name.startswith("δ") and ("measured" in name or "замер" in name))
+    assert rows[largest][measured_column].replace("−", "-") == worst
+    assert rows[largest][header[1]] == "%"

@@ -85,7 +85,22 @@ def error_table_lines(analysis: Analysis, plan: PlanPosition | VelocityPosition,
         cells += [number(rows[s].plan, mark=mark) if s in rows else "" for s in sources]
         cells += [_percent(rows[s].percent, mark) if s in rows else "" for s in sources]
         lines.append("| " + " | ".join([quantity_symbol(quantity), unit_of(quantity, text), *cells]) + " |")
+    # A teacher looks for the worst reading first: under each δ column its largest, signed, and whose it is.
+    worst = [_worst(table, source, mark) for source in sources]
+    lines.append("| " + " | ".join([text["errors_largest"], "%", "", *([""] * len(sources)), *worst]) + " |")
     return lines
+
+
+def _worst(table: dict[str, dict[str, ErrorRow]], source: str, mark: str) -> str:
+    """The error of ``source`` largest in magnitude, signed as its row writes it, with its quantity's symbol
+    (``−11.820 (ε3)``); none named where it rounds to 0.000 (the construction's), since any row would do."""
+    errors = {quantity: rows[source].percent for quantity, rows in table.items()
+              if source in rows and math.isfinite(rows[source].percent)}
+    if not errors:
+        return ""
+    quantity = max(errors, key=lambda name: abs(errors[name]))
+    written = _percent(errors[quantity], mark)
+    return written if round(errors[quantity], 3) == 0 else f"{written} ({quantity_symbol(quantity)})"
 
 
 def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_note: bool = False) -> list[str]:
