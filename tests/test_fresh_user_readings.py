@@ -31,6 +31,7 @@ def _without_readings(fixture):
 
 
 def _run(tmp_path, text, only="errors"):
+    tmp_path.mkdir(parents=True, exist_ok=True)
     scene = tmp_path / "scene.toml"
     scene.write_text(text, encoding="utf-8")
     out = tmp_path / "out"
@@ -340,3 +341,21 @@ def test_the_worst_hand_reading_is_named_under_its_tables_delta_column(locale, l
     measured_column = next(name for name in header if name.startswith("δ") and ("measured" in name or "замер" in name))
     assert rows[largest][measured_column].replace("−", "-") == worst
     assert rows[largest][header[1]] == "%"
+
+
+@pytest.mark.parametrize(("locale", "bound"), [
+    ("en", "more than 15 % and more than 1 mm off the plan as constructed"),
+    ("ru", "более чем на 15 % и более чем на 1 мм"),
+])
+def test_the_one_bound_set_on_hand_readings_is_said_where_the_tables_have_them(locale, bound, tmp_path):
+    """The only verdict the program gives on a reading is the misread warning (15 % and twice the 0.5 mm drafting
+    precision); without the sentence a teacher could take a silent δ of 12 % for one the program passed."""
+    text, _, _ = _shaper_case(locale)
+    done, out = _run(tmp_path, text, only="errors,note")
+    assert done.returncode == 0, done.stderr
+    assert bound in (out / "errors.md").read_text(encoding="utf-8")
+    assert bound in (out / "note.md").read_text(encoding="utf-8")
+    plain, _ = _run(tmp_path / "plain", _without_readings("shaper_six_bar.toml").replace(
+        'locale  = "en"', f'locale  = "{locale}"'))
+    assert plain.returncode == 0
+    assert bound not in (tmp_path / "plain" / "out" / "errors.md").read_text(encoding="utf-8")

@@ -56,6 +56,7 @@ from .symbols import CAPITALS
 from .tables import (
     error_table_lines,
     has_reactions,
+    measured_bound,
     measured_velocity_plans,
     quantity_symbol,
     reactions_intro,
@@ -1150,7 +1151,8 @@ class _Note:
         positions = (*self.analysis.plans, *self.analysis.velocity_plans)
         if any(row.source == "measured" for position in positions for row in position.errors):
             intro += " " + self.t("note_errors_measured")
-        return intro
+        bound = measured_bound(self.analysis, self.mark)
+        return f"{intro} {bound}" if bound else intro
 
     def errors(self, section: int) -> None:
         self.heading(2, self.t("note_errors"), section)

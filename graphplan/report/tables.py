@@ -220,6 +220,17 @@ def _percent(value: float, mark: str) -> str:
     return text.replace("-", "−").replace(".", mark)
 
 
+def measured_bound(analysis: Analysis, mark: str = ".") -> str:
+    """Where the tables have hand readings, the one bound the program sets on them (a reading told as misread),
+    so that a teacher does not take the absence of a verdict on a δ of 12 % for one; else nothing."""
+    positions = (*analysis.plans, *measured_velocity_plans(analysis))
+    if not any(row.source == "measured" for position in positions for row in position.errors):
+        return ""
+    millimetres = FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision
+    return strings(analysis.scene.locale)["errors_measured_bound"].format(
+        percent=f"{FAR_OFF_PERCENT:g}", millimetres=f"{millimetres:g}".replace(".", mark))
+
+
 def undefined_errors(analysis: Analysis, positions: tuple[VelocityPosition, ...]) -> str:
     """What a δ written — means, where the tables of ``positions`` write one: a hand reading of a quantity that
     is zero at its position has no relative error (its δ would divide by that zero); else nothing."""
@@ -286,9 +297,10 @@ def markdown(analysis: Analysis) -> str:
     mark = text["decimal_mark"]
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
     undefined = undefined_errors(analysis, (*analysis.plans, *measured_velocity_plans(analysis)))
+    bound = measured_bound(analysis, mark)
     lines = [f"# {text['errors_title'].format(title=literal(analysis.scene.title))}", "",
              f"{text['errors_formula']}{text['semicolon']}{text['errors_drafting'].format(precision=precision)}"
-             + (f" {undefined}" if undefined else ""), ""]
+             + (f" {undefined}" if undefined else "") + (f" {bound}" if bound else ""), ""]
     if has_reactions(analysis):
         lines += [reactions_intro(analysis), ""]
     if analysis.scene.locale == "zh":  # its sentences, joined with a Latin space, set close as the note's are
