@@ -20,6 +20,7 @@ from ..analysis import Analysis, PlanPosition
 from ..mechanism import Mechanism
 from ..plans import Plan
 from ..render.forces import enlarged_lever_scale
+from ..render.plans import ZERO_MM
 from ..scales import format_scale
 from ..wording import balancing_load
 from . import forces as force_report
@@ -225,12 +226,21 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
     for vector in polygon.vectors:
         force = vector.force
         role = "closes" if vector.role == "closing" and vector.name not in crossed else vector.role
-        rows.append([vector.name, force_report.polar(force, note.mark), note.mm(abs(force) / scale),
-                     note.text[f"note_role_{role}"]])
-    note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale), unit=text["unit_force_scale"]))
+        length, words = note.mm(abs(force) / scale), note.text[f"note_role_{role}"]
+        # The drawing leaves out a vector shorter than ZERO_MM (a link's inertia force of a hundredth of a newton
+        # at μF = 10 N/mm): the table says so beside its value in newtons, not "0.00 mm, laid off".
+        if abs(force) > force_report.ROUNDING_NOISE and abs(force) / scale < ZERO_MM:
+            least = note.n(ZERO_MM)
+            length = "—"
+            words = note.t("note_role_load_short", least=least) if role == "load" else \
+                words + text["semicolon"] + note.t("note_role_short", least=least)
+        rows.append([vector.name, force_report.polar(force, note.mark), length, words])
+    note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale),
+                     unit=text["unit_force_scale"]) + " " + note.t("note_polygon_table_lead", number=note.next_table))
     header = [note.t("column_force"), f"{note.t('column_value')}{text['comma']}{text['newton']} ∠",
               f"{note.t('column_length')}{text['comma']}{text['millimetre']}", note.t("column_role")]
-    note.table(None, header, rows, "lrrl")
+    caption = note.t("note_polygon_table_driver" if driver else "note_polygon_table", group=group.label, number=plan.number)
+    note.table(caption, header, rows, "lrrl", lead=None)
     if group.found:
         found = note.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, note.mark)} {text['newton']}"
                           for item in group.found)

@@ -201,18 +201,26 @@ class _Note:
             title = self.t("heading_numbered", number=number, title=title)
         self.lines += ["#" * level + " " + title, ""]
 
-    def numbered_table(self, caption: str, lead: str = "table_lead") -> None:
+    def numbered_table(self, caption: str, lead: str | None = "table_lead") -> None:
         """The next table's number, the sentence that refers to it (the locale's ``lead``) and its caption.
 
         GOST 2.105 and 7.32 want every table and figure referred to in the text before it: the reference is
-        written here and in :meth:`figure`, with the number the caption takes, so that the two never differ."""
+        written here and in :meth:`figure`, with the number the caption takes, so that the two never differ.
+        ``lead`` None: the paragraph before already refers to it, by :meth:`next_table`."""
         self.tables += 1
-        self.para(self.t(lead, number=self.tables))
+        if lead is not None:
+            self.para(self.t(lead, number=self.tables))
         self.para(self.t("table_caption", number=self.tables, caption=caption))
 
+    @property
+    def next_table(self) -> int:
+        """The number the next captioned table takes, for a sentence that refers to it from its own paragraph."""
+        return self.tables + 1
+
     def table(self, caption: str | None, header: Sequence[str], rows: Sequence[Sequence[str]],
-              align: str | None = None, lead: str = "table_lead") -> None:
-        """``lead``: the locale's sentence that refers to a captioned table by its number."""
+              align: str | None = None, lead: str | None = "table_lead") -> None:
+        """``lead``: the locale's sentence that refers to a captioned table by its number (None: one written
+        before, with :attr:`next_table`)."""
         if caption is not None:
             self.numbered_table(caption, lead)
         align = align or "l" * len(header)
@@ -773,11 +781,15 @@ class _Note:
         if len(sides) < 3 and all(len(side) == 1 for side in sides):
             self.para(f"{shown}{extra}" + (f" — {explanation}" if explanation else "") + self.text["full_stop"])
             return
-        self.para(self.t("note_vector_equation", equation=shown + extra) + (f" ({explanation})" if explanation else ""))
+        # Numbered and captioned as every other table of the note, a reference to it before it (GOST 2.105).
+        self.para(self.t("note_vector_equation", equation=shown + extra) + (f" ({explanation})" if explanation else "")
+                  + self.text["full_stop"] + " " + self.t("note_equation_table_lead", number=self.next_table))
         terms = self.terms(pp, plan, step, sides, _equal_terms(clauses[1:]))
         header = [self.t("column_vector"), self.t("column_modulus"), self.t("column_on_plan"),
                   self.t("column_direction")]
-        self.table(None, header, [[term.name, term.modulus, term.segment, term.direction] for term in terms])
+        caption = self.t("note_equation_table", vector=self.equation(sides[0][0]), number=pp.number)
+        self.table(caption, header, [[term.name, term.modulus, term.segment, term.direction] for term in terms],
+                   lead=None)
         if step.lines and step.fixes:
             lines = self.text["semicolon"].join(self.t("note_line_through", line=self.line(line.along),
                                      point=self.letter(plan, line.through)) for line in step.lines)

@@ -1,0 +1,154 @@
+"""A teacher's reading of the explanatory note, each fault checked on the notes the fixtures' runs write.
+
+- Every table of the note is numbered and captioned in one series, each referred to by its number before it: the
+  vector equations' tables and the force polygons' were left bare among "Table 9. …" ones.
+- A force polygon's vector too short to draw (shorter than the drawings' 0.25 mm) is told so beside its value in
+  newtons, not written as a vector of "0.00 mm" laid off.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from graphplan.cli import main
+from graphplan.locale import strings
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+# The drawings leave out a vector shorter than this (render.plans.ZERO_MM), a length the sheets' captions state.
+SHORTEST_DRAWN_MM = 0.25
+
+
+def run_note(folder: Path, fixture: str, locale: str, *extra: str, scene: Path | None = None) -> str:
+    """The note.md a run of ``fixture`` (or of ``scene``) writes in ``locale``."""
+    out = folder / f"{fixture}-{locale}"
+    source = scene if scene is not None else FIXTURES / f"{fixture}.toml"
+    assert main(["run", str(source), "--out", str(out), "--only", "note", "--locale", locale, *extra]) == 0
+    return (out / "note.md").read_text(encoding="utf-8")
+
+
+@pytest.fixture(scope="module")
+def notes(tmp_path_factory):
+    """Notes of fixtures, each written once for the module: ``notes(fixture, locale)``."""
+    folder = tmp_path_factory.mktemp("notes")
+    written: dict[tuple[str, str], str] = {}
+
+    def note(fixture: str, locale: str) -> str:
+        if (fixture, locale) not in written:
+            written[fixture, locale] = run_note(folder, fixture, locale)
+        return written[fixture, locale]
+
+    return note
+
+
+def number_pattern(template: str) -> re.Pattern:
+    """A locale's sentence about a table (its caption, its continuation, a reference) as a pattern catching the
+    number; the rest of it (a caption's words) anything."""
+    escaped = re.escape(template).replace(r"\{number\}", r"(\d+)").replace(r"\{caption\}", ".*")
+    return re.compile(escaped)
+
+
+def table_starts(lines: list[str]) -> list[int]:
+    return [k for k, line in enumerate(lines) if line.startswith("|") and (k == 0 or not lines[k - 1].startswith("|"))]
+
+
+def check_tables(markdown: str, locale: str) -> int:
+    """Every table under a caption or a continuation of the one before; the captions numbered 1, 2, … in order;
+    every number the text refers to that of a table captioned after the reference, the next one captioned.
+    The count of tables captioned."""
+    text = strings(locale)
+    caption = number_pattern(text["table_caption"])
+    continued = number_pattern(text["table_continued"])
+    lines = markdown.split("\n")
+    captions: list[int] = []
+    for k in table_starts(lines):
+        above = next(line for line in reversed(lines[:k]) if line.strip())
+        numbered = caption.fullmatch(above) or continued.fullmatch(above)
+        assert numbered, f"a table with no number under {above!r}"
+    # Each reference by number (the leads' words, any locale's key that names a table) is to the next table.
+    references = [number_pattern(text[key]) for key in text if key.endswith("table_lead") or key == "note_groups_lead"]
+    for line in lines:
+        if match := caption.fullmatch(line):
+            captions.append(int(match.group(1)))
+            continue
+        if continued.fullmatch(line):
+            assert int(continued.fullmatch(line).group(1)) == captions[-1]
+            continue
+        for pattern in references:
+            for match in pattern.finditer(line):
+                assert int(match.group(1)) == len(captions) + 1, f"{line!r} after Table {len(captions)}"
+    assert captions == list(range(1, len(captions) + 1))
+    # No reference is left unmatched to a reference pattern: every "Table N" in the text is a caption's, a
+    # continuation's or one of the leads checked above.
+    word = {"en": r"Table", "ru": r"[Тт]аблиц\w*", "zh": r"表"}[locale]
+    mentions = sum(len(re.findall(rf"{word}\s*\d+", line)) for line in lines)
+    leads = sum(len(pattern.findall(line)) for line in lines for pattern in references)
+    continuations = sum(1 for line in lines if continued.fullmatch(line))
+    assert mentions == len(captions) + continuations + leads
+    return len(captions)
+
+
+def caption_of(locale: str, key: str) -> re.Pattern:
+    """The pattern of a numbered caption whose words are the locale's ``key``, its fields anything."""
+    text = strings(locale)
+    words = re.sub(r"\\\{\w+\\\}", ".*", re.escape(text[key]))
+    return re.compile(re.escape(text["table_caption"]).replace(r"\{number\}", r"\d+").replace(r"\{caption\}", words))
+
+
+@pytest.mark.parametrize(("fixture", "locale"), [
+    ("triad_class_iii", "en"), ("triad_with_slider", "ru"), ("slider_driven", "en"), ("engine_slider_crank", "ru"),
+    ("ratchet_crank_rocker", "ru"), ("shaper_six_bar", "zh")])
+def test_every_table_of_the_note_is_numbered_and_referred_to_before_it(notes, fixture, locale):
+    markdown = notes(fixture, locale)
+    check_tables(markdown, locale)
+    # Each vector equation written with its terms' table, and each force polygon, has its own numbered caption.
+    text = strings(locale)
+    lines = markdown.split("\n")
+    equation, polygon = text["note_vector_equation"].split("{")[0], text["note_polygon"].split("{")[0]
+    tabled = [line for line in lines if line.startswith(equation) and "|" not in line
+              and number_pattern(text["note_equation_table_lead"]).search(line)]
+    polygons = [line for line in lines if line.startswith(polygon)]
+    equation_captions = [line for line in lines if caption_of(locale, "note_equation_table").fullmatch(line)]
+    polygon_captions = [line for line in lines if caption_of(locale, "note_polygon_table").fullmatch(line)
+                        or caption_of(locale, "note_polygon_table_driver").fullmatch(line)]
+    assert tabled and polygons
+    assert len(equation_captions) == len(tabled) and len(polygon_captions) == len(polygons)
+
+
+def polygon_rows(markdown: str, locale: str):
+    """(μF, force's name, value in N, length cell, role cell) of every row of every force polygon's table: the
+    table that follows the paragraph of its polygon's equation and μF."""
+    polygon = strings(locale)["note_polygon"].split("{")[0]
+    scale, inside = None, False
+    for line in markdown.split("\n"):
+        if line.startswith(polygon):
+            scale = float(re.search(r"μF = ([\d.,]+) ", line).group(1).replace(",", "."))
+            continue
+        if line.startswith("|"):
+            inside = True
+            cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
+            if scale is not None and re.match(r"−?\d", cells[1]):
+                value = float(cells[1].split("∠")[0].replace(",", ".").replace("−", "-").strip())
+                yield scale, cells[0], value, cells[2], cells[3]
+        elif inside:
+            scale, inside = None, False
+
+
+@pytest.mark.parametrize("locale", ["en", "ru"])
+def test_a_polygon_vector_too_short_to_draw_is_told_so_with_its_value_not_as_a_nought_mm_vector(notes, locale):
+    """The slider-driven four-bar's links 3 and 4 move so slowly that their inertia forces, hundredths of a newton,
+    are under 0.25 mm at μF = 10 N/mm."""
+    text = strings(locale)
+    rows = list(polygon_rows(notes("slider_driven", locale), locale))
+    short = [row for row in rows if 0 < abs(row[2]) / row[0] < SHORTEST_DRAWN_MM]
+    assert {name for _, name, _, _, _ in short} >= {"Fu3", "Fu4"}
+    least = text["note_role_short"].format(least=str(SHORTEST_DRAWN_MM).replace(".", text["decimal_mark"]))
+    for scale, name, value, length, role in rows:
+        if abs(value) / scale < SHORTEST_DRAWN_MM and value != 0:
+            assert length == "—", (name, length)
+            assert least.split(":")[-1].strip() in role and text["note_role_load"] not in role, (name, role)
+        else:
+            # A vector drawn: its length is its value over μF, as the drawing lays it.
+            assert float(length.replace(",", ".")) == pytest.approx(abs(value) / scale, abs=0.006), name
