@@ -97,7 +97,8 @@ class Strokes:
 
     @property
     def time_ratio(self) -> float:
-        """K = φw/φi, the coefficient of the change of the output link's mean speed."""
+        """K = φw/φi, the time ratio (advance-to-return; in Russian texts the coefficient of the change of the output
+        link's mean speed)."""
         return self.working / self.idle
 
 

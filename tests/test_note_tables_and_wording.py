@@ -152,3 +152,17 @@ def test_a_polygon_vector_too_short_to_draw_is_told_so_with_its_value_not_as_a_n
         else:
             # A vector drawn: its length is its value over μF, as the drawing lays it.
             assert float(length.replace(",", ".")) == pytest.approx(abs(value) / scale, abs=0.006), name
+
+
+@pytest.mark.parametrize("fixture", ["shaper_six_bar", "ratchet_crank_rocker"])
+def test_k_is_the_time_ratio_in_english_and_keeps_its_russian_name(notes, fixture):
+    """English textbooks call K = φw/φi the time ratio (advance-to-return); Russian ones «коэффициент изменения
+    средней скорости выходного звена». Each note's K is its own φw over φi."""
+    english, russian = notes(fixture, "en"), notes(fixture, "ru")
+    working, idle, ratio = map(float, re.search(
+        r"φw = ([\d.]+)° in the working stroke and φi = ([\d.]+)° in the idle stroke\. The time ratio "
+        r"\(advance-to-return\) K = φw/φi = ([\d.]+)\.", english).groups())
+    assert ratio == pytest.approx(working / idle, rel=1e-3)   # the angles written to a tenth of a degree
+    assert "coefficient of the change" not in english and "mean speed" not in english
+    assert re.search(r"Коэффициент изменения средней скорости выходного звена: K = φр\.х/φх\.х = ([\d,]+)\.",
+                     russian)[1].replace(",", ".") == f"{ratio:g}"

@@ -161,6 +161,6 @@ def test_check_and_the_note_say_the_link_turns_round_and_has_no_k(tmp_path, caps
     assert main(["check", str(path)]) == 0
     assert "(ccw, against positions.working's cw)" in capsys.readouterr().out
     note = note_markdown(analyse(loads(scene_text())))
-    assert ("The working link 3 turns round, 1 turn to a turn of the crank, and never turns back: it has no extreme "
-            "positions, and so no working and idle strokes and no coefficient K of the change of its mean speed.") in note
+    assert ("The output link 3 turns round, 1 turn to a turn of the crank, and never turns back: it has no extreme "
+            "positions, and so no working and idle strokes and no time ratio K.") in note
     assert "φw" not in note and "K = " not in note
