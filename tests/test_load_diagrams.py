@@ -141,7 +141,7 @@ def test_every_word_of_the_drawing_is_the_locale_s(locale):
     texts = " ".join(item.text for layer in layout.layout(of_analysis(compressor()), words)
                      for item in layer.items if isinstance(item, Text))
     assert words["ld_title"] in texts
-    assert words["ld_stroke_backward"] in texts
+    assert words["working_stroke"] in texts and words["idle_stroke"] in texts
     assert "{" not in texts
 
 
@@ -201,4 +201,4 @@ def test_the_note_tables_each_position_s_value_and_shows_the_figure():
     assert table is not None
     rows = [line.strip("| ").split(" | ") for line in table.group(0).splitlines()[2:] if line]
     assert len(rows) == 12
-    assert rows[2][-2:] == ["407.69", "0"] and rows[9][1] == "backward stroke"
+    assert rows[2][-2:] == ["407.69", "0"] and rows[9][1] == "idle stroke"

@@ -8,6 +8,8 @@
 
 from __future__ import annotations
 
+import itertools
+import json
 import re
 from pathlib import Path
 
@@ -22,7 +24,7 @@ SHORTEST_DRAWN_MM = 0.25
 
 
 def run_note(folder: Path, fixture: str, locale: str, *extra: str, scene: Path | None = None) -> str:
-    """The note.md a run of ``fixture`` (or of ``scene``) writes in ``locale``."""
+    """The note.md a run of ``fixture`` (or of ``scene``) writes in ``locale``, its results.json beside it."""
     out = folder / f"{fixture}-{locale}"
     source = scene if scene is not None else FIXTURES / f"{fixture}.toml"
     assert main(["run", str(source), "--out", str(out), "--only", "note", "--locale", locale, *extra]) == 0
@@ -40,6 +42,7 @@ def notes(tmp_path_factory):
             written[fixture, locale] = run_note(folder, fixture, locale)
         return written[fixture, locale]
 
+    note.folder = folder
     return note
 
 
@@ -166,3 +169,29 @@ def test_k_is_the_time_ratio_in_english_and_keeps_its_russian_name(notes, fixtur
     assert "coefficient of the change" not in english and "mean speed" not in english
     assert re.search(r"Коэффициент изменения средней скорости выходного звена: K = φр\.х/φх\.х = ([\d,]+)\.",
                      russian)[1].replace(",", ".") == f"{ratio:g}"
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_load_diagram_table_names_the_strokes_working_and_idle_as_the_rest_of_the_note(notes, locale):
+    """The engine's gas force acts in the working stroke, the piston moving toward the crank ("backward" along its
+    guide): the table of the loads read off its diagram said "backward stroke" at position 2, whose heading says
+    "working stroke". Each position's stroke is results.json's."""
+    text = strings(locale)
+    markdown = notes("engine_slider_crank", locale)
+    results = json.loads((notes.folder / f"engine_slider_crank-{locale}" / "results.json").read_text())
+    strokes = {position["index"]: position["stroke"] for position in results["positions"]}
+    lines = markdown.split("\n")
+    (at,) = [k for k, line in enumerate(lines) if caption_of(locale, "note_ld_table").fullmatch(line)]
+    table = list(itertools.takewhile(lambda line: line.startswith("|"), lines[at + 2:]))[2:]
+    rows = [[cell.strip() for cell in row.strip("|").split("|")] for row in table]
+    assert [int(row[0]) for row in rows] == sorted(strokes)
+    for row in rows:
+        assert row[1] == text[f"{strokes[int(row[0])]}_stroke"], row
+    # The headings of the plan positions name the same strokes.
+    headings = re.findall(rf"{re.escape(text['position_heading'].format(number='@'))}".replace("@", r"(\d+)")
+                          + rf"{re.escape(text['colon'])}[^\n]*{re.escape(text['comma'])}([^\n]+)$",
+                          "\n".join(line for line in lines if line.startswith("### ")), flags=re.MULTILINE)
+    assert len(headings) == 2
+    for number, words in headings:
+        assert words == text[f"{strokes[int(number)]}_stroke"]
+        assert rows[int(number)][1] == words

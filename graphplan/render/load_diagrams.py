@@ -25,7 +25,6 @@ from collections.abc import Mapping, Sequence
 from ..load_diagrams import LoadDiagram
 from ..locale import strings
 from ..scales import fit_scale, format_scale
-from ..scene import OTHER_SENSE
 from .diagrams import (
     AXIS_HEAD_MM,
     AXIS_RUN_MM,
@@ -257,12 +256,15 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
     for load in diagram.loads:
         stroke = _STROKES[0 if load.with_reference else 1]
         own = load.spec.stroke or diagram.reference
-        sense = own.sense if load.spec.during != "idle" else OTHER_SENSE[own.sense]
+        # Working and idle, as the note's table beside it and the kinematic diagrams name the strokes: the
+        # diagram's reference stroke is its link's working stroke (a compressor's suction load, given over the
+        # piston's backward stroke, acts in the idle one).
+        named = words["working_stroke" if load.with_reference else "idle_stroke"]
         items.append(Polyline(((0.0, y + SCALE_SIZE / 3), (10.0, y + SCALE_SIZE / 3)), stroke))
         # The stroke's row of numbers by its arrow: a "backward" stroke's positions may well run → along the
         # travel, which counts from that stroke's start, and the reader would otherwise look for them in the ← row.
         row = ROW_ARROWS[load.with_reference]
-        items.append(Text((12.0, y), words["ld_legend"].format(name=load.name, stroke=words[f"ld_stroke_{sense}"],
+        items.append(Text((12.0, y), words["ld_legend"].format(name=load.name, stroke=named,
                                                               link=own.link, row=row), SCALE_SIZE, "start"))
         y -= LINE_SPACING * SCALE_SIZE + 1.0
     if diagram.plans:

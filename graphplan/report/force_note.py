@@ -91,9 +91,17 @@ def _load_diagrams(note: Writer) -> None:
         header = [text["column_position"], text["note_ld_stroke"], travel, text["note_ld_share"],
                   *(f"{load.name}, {unit}" for load in diagram.loads)]
         rows = []
+        # The strokes named as the positions' headings, the strokes paragraph and the kinematic diagrams name
+        # them, working and idle, not by the link's sense of motion (a piston's "backward" working stroke); those
+        # of a link other than the working link named with it.
+        working = note.analysis.scene.positions.working
+        own = working is not None and working.link == diagram.link
         for k, number in enumerate(diagram.numbers):
-            sense, share = diagram.stroke_at(k)
-            rows.append([str(number), text[f"ld_stroke_{sense}"], note.n(float(coordinates[k]), 4),
+            _, share = diagram.stroke_at(k)
+            stroke = text["working_stroke" if diagram.in_reference[k] else "idle_stroke"]
+            if not own:
+                stroke = note.t("ld_stroke_of_link", stroke=stroke, link=diagram.link)
+            rows.append([str(number), stroke, note.n(float(coordinates[k]), 4),
                          note.n(share, 4), *(note.n(float(load.values[k])) for load in diagram.loads)])
         note.table(note.t("note_ld_table", names=names, link=diagram.link), header, rows, "llrr" + "r" * len(diagram.loads))
     note.figure("load_diagrams.svg", text["ld_title"], lead="plot_lead")
