@@ -195,3 +195,35 @@ def test_the_load_diagram_table_names_the_strokes_working_and_idle_as_the_rest_o
     for number, words in headings:
         assert words == text[f"{strokes[int(number)]}_stroke"]
         assert rows[int(number)][1] == words
+
+
+FRICTION = '\n[[friction]]\njoint = "O"\nf = 0.1\nradius = 0.02\n'
+
+
+def errors_intro(markdown: str, locale: str) -> str:
+    """The paragraph under the note's heading of the plans' accuracy."""
+    heading = next(line for line in markdown.split("\n") if line.startswith("## ") and strings(locale)["note_errors"]
+                   in line)
+    return markdown.split(heading, 1)[1].strip().split("\n\n", 1)[0]
+
+
+@pytest.mark.parametrize("locale", ["en", "ru"])
+def test_with_friction_the_errors_intro_speaks_of_hand_measured_polygons_only_where_the_scene_gives_them(
+        tmp_path, locale):
+    """The ratchet's scene gives hand readings of its plans but none of its force polygons: with friction added, the
+    note said the reactions measured on the hand-drawn polygons were checked against the polygons without friction.
+    With a reaction measured ([measured.5] forces) it says so."""
+    text = strings(locale)
+    original = (FIXTURES / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    plain = tmp_path / "rubbing.toml"
+    plain.write_text(original + FRICTION, encoding="utf-8")
+    unmeasured = errors_intro(run_note(tmp_path, "rubbing", locale, scene=plain), locale)
+    # The words of the hand-drawn polygons ("measured on the hand-drawn", «измеренные на планах сил»).
+    hand_drawn = {"en": "hand-drawn polygons", "ru": "начерченных вручную"}[locale]
+    assert hand_drawn not in unmeasured
+    assert text["note_forces_without_friction_unmeasured"] in unmeasured
+    measured = tmp_path / "measured.toml"
+    measured.write_text(original.replace("[measured.5]\n", "[measured.5]\nforces = { R23 = 50.0 }\n") + FRICTION,
+                        encoding="utf-8")
+    told = errors_intro(run_note(tmp_path, "measured", locale, scene=measured), locale)
+    assert text["note_forces_without_friction"] in told and hand_drawn in told

@@ -251,7 +251,11 @@ def reactions_intro(analysis: Analysis, in_note: bool = False) -> str:
     has neither, the polygons in words alone."""
     text = strings(analysis.scene.locale)
     if in_note:
-        without = text["note_forces_without_friction"]
+        # Only reactions the scene gives as measured are checked against these polygons: the note's reader, with no
+        # hand-drawn polygon to look for, is told of none where none was given.
+        measured = any(row.source == "measured" and is_reaction(row.quantity)
+                       for plan in analysis.plans for row in plan.errors)
+        without = text["note_forces_without_friction" if measured else "note_forces_without_friction_unmeasured"]
     else:
         # The file names and the key are written as they are in every language: placeholders keep them out of
         # the words.
