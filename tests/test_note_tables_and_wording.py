@@ -11,6 +11,7 @@ from __future__ import annotations
 import itertools
 import json
 import re
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -227,3 +228,37 @@ def test_with_friction_the_errors_intro_speaks_of_hand_measured_polygons_only_wh
                         encoding="utf-8")
     told = errors_intro(run_note(tmp_path, "measured", locale, scene=measured), locale)
     assert text["note_forces_without_friction"] in told and hand_drawn in told
+
+
+@pytest.mark.parametrize("locale", ["en", "ru"])
+@pytest.mark.parametrize("fixture", ["triad_class_iii", "triad_with_slider"])
+def test_the_triads_assur_point_of_the_forces_is_told_by_its_own_lines(notes, fixture, locale):
+    """The force section's paragraph on Assur's point said, at the triad with a slider's position 8, "the part of
+    an outer reaction along its binary link, or a guide's reaction on its slider": an either/or of every triad. It
+    names the two unknowns' own lines, each as the scene's triad has it: a turning leg's along that leg (its joints
+    as the scene lists them), a sliding leg's square to its guide at the slider's pin."""
+    text = strings(locale)
+    (group,) = tomllib.loads((FIXTURES / f"{fixture}.toml").read_text(encoding="utf-8"))["groups"]
+    joints, links = group["joints"], group["links"]
+    sliding = set(group.get("guides", {}))   # by the leg's inner joint
+    legs = {links[n]: (joints[2 * n], joints[2 * n + 1]) for n in range(3)}
+    lead = text["note_assur_forces"].split("{")[0]
+    paragraphs = [line for line in notes(fixture, locale).split("\n") if line.startswith(lead)]
+    assert len(paragraphs) == 2   # one a plan position
+    for paragraph in paragraphs:
+        point = re.match(re.escape(lead) + r"(Σ\d+)", paragraph)[1]
+        closing = re.search(re.escape(text["note_assur_forces"].split("{closing}")[0].split("{unknown}")[1])
+                            + r"(.+?)" + re.escape(text["note_assur_forces"].split("{closing}")[1]), paragraph)[1]
+        names = closing.split(text["enumeration"])
+        assert len(names) == 2
+        for name in names:
+            link = int(re.fullmatch(r"R\d(\d)n?", name)[1])
+            outer, inner = legs[link]
+            if inner in sliding:
+                told = text["note_assur_force_guide"].format(name=name, link=link, pin=inner)
+            else:
+                told = text["note_assur_force_leg"].format(name=name, line=outer + inner)
+            assert told in paragraph, (name, paragraph)
+        assert point == f"Σ{links[3]}"
+        # No either/or of kinds of legs the triad may not have.
+        assert {"en": " or a guide's", "ru": " или реакция"}[locale] not in paragraph

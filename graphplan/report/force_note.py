@@ -207,13 +207,7 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
     note.para(f"**{note.t(key, group=group.label)}**")
     whole = next((equation for equation in group.moments if equation.links), None)
     if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
-        closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
-        # A turning leg's unknown is the part along it (R34n); a sliding leg's, its guide's reaction (R14); a
-        # slotted leg's, the part of its pin's reaction square to the slot (its block's loads give the rest).
-        key = "note_assur_forces" if all(name.endswith("n") for name in closing) else "note_assur_forces_sliding"
-        if group.projections:
-            key = "note_assur_forces_slot"
-        note.para(note.t(key, point=whole.about, unknown=whole.unknown, closing=text["enumeration"].join(closing)))
+        note.para(_assur_point(note, group, whole))
     if group.projections:
         note.para(note.t("note_slot_projections"), *(f"- {_projection(note, equation)}" for equation in group.projections))
     loads = {load.name: load for load in group.loads}
@@ -253,6 +247,38 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
         found = note.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, note.mark)} {text['newton']}"
                           for item in group.found)
         note.para(note.t("note_found", reactions=found))
+
+
+def _assur_point(note: Writer, group, whole) -> str:
+    """Which point the whole triad's moment equation is taken about and how it is found: where the lines of the two
+    unknowns the polygon closes on cross, each named with its own line (a turning leg's part along the leg, R34n
+    along CD; a sliding leg's guide reaction square to its guide at the slider's pin; a slotted leg's part of its
+    block's reaction square to the slot); a guide reaction's shift along its guide, where it has one, with it."""
+    triad = next(unit.solver for unit in note.mechanism.units if getattr(unit.solver, "label", None) == group.label)
+    closing = [vector.name for vector in group.polygon.vectors if vector.role == "closing"]
+    found = {reaction.name: reaction for reaction in group.found}
+
+    def line_of(name: str) -> str:
+        # A turning or slotted leg's unknown is a part of its reaction (R34n), a sliding leg's the whole (R15).
+        reaction = found.get(name) or found[name.removesuffix("n")]
+        leg = next(n for n, (_, _, link) in enumerate(triad.arms()) if link == reaction.target)
+        outer, inner, link = triad.arms()[leg]
+        if triad.leg_guides[leg] is not None:
+            return note.t("note_assur_force_guide", name=name, link=link, pin=inner)
+        if leg in triad.slotted_legs:
+            return note.t("note_assur_force_slot", name=name, pin=outer, link=triad.ternary)
+        return note.t("note_assur_force_leg", name=name, line=f"{outer}{inner}")
+
+    sentence = note.t("note_assur_forces", point=whole.about, unknown=whole.unknown, first=line_of(closing[0]),
+                      second=line_of(closing[1]), closing=note.text["enumeration"].join(closing))
+    for term in whole.terms:
+        # A guide's reaction off its slider's pin (R·x ≠ 0): its moment about Σ, known, is in the equation.
+        if term.name.endswith("·x"):
+            name = term.name.removesuffix("·x")
+            reaction = found[name]
+            sentence += " " + note.t("note_assur_force_shift", name=name, pin=reaction.joint, link=reaction.target,
+                                     point=whole.about)
+    return sentence
 
 
 def _projection(note: Writer, equation) -> str:
