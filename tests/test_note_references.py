@@ -144,6 +144,9 @@ def sequence(lines: list[str], text) -> list[tuple[str, str, int]]:
     """What each line is, in order: ("caption" or "lead", "table" or "figure", number); other lines left out."""
     leads = {kind: [template(text[key]) for key in keys] for kind, keys in
              (("table", ("table_lead", "note_groups_lead")), ("figure", ("figure_lead", "plot_lead")))}
+    # A vector equation's and a force polygon's paragraph ends with the sentence that refers to its table.
+    leads["table"] += [re.compile(".*" + template(text[key]).pattern)
+                       for key in ("note_equation_table_lead", "note_polygon_table_lead")]
     captions = {kind: re.compile(template(text[f"{kind}_caption"]).pattern.removesuffix(".*"))
                 for kind in ("table", "figure")}
     found = []

@@ -170,7 +170,9 @@ def test_the_note_says_why_assurs_point_is_on_a_guides_normal():
     text = note_markdown(analyse(square_guides()))
     assert "where the normal at D to the guide of the slider pinned there and the normal at F" in text
     assert "along the guide relative to the guide's point under D" in text
-    assert "a guide's reaction on its slider, square to the guide at the slider's pin" in text
+    # The force paragraph names each of its two unknowns' own lines, the guides' normals at D and F.
+    assert ("the line of R15 (the guide's reaction on slider 5) square to the guide at the slider's pin F and the line "
+            "of R14 (the guide's reaction on slider 4) square to the guide at the slider's pin D") in text
     assert "Both lines run through the pole: VΣ6 = 0, and Σ6 is the instant centre of link 6." in text
     # The ratchet's scene is written in Russian.
     text = note_markdown(analyse(CASES[VARIANT]()))
