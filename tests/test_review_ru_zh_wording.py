@@ -61,7 +61,7 @@ def test_the_chinese_structure_table_counts_a_triad_s_outer_pairs_and_names_its_
     assert "个构件" not in note and " 型**" not in note
     assert "Ⅲ" not in note  # one way of writing a Roman numeral, as the class column writes it
     # The two lines that close the triad's polygon, listed in a Chinese sentence, take its enumeration comma.
-    closing = re.findall(r"外反力分量（([^）]*)）", note)
+    closing = re.findall(r"然后由 (\S*) 的作用线封闭力多边形", note)
     assert closing and all(re.fullmatch(r"R\d+n、R\d+n", pair) for pair in closing), closing
 
 
