@@ -58,10 +58,10 @@ class Implausible:
 
     ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``flat_rotor``, ``rotor_length``,
     ``eccentricity``, ``light_machine``, ``diameter``, ``second_moment``, ``span``, ``base``); ``key`` its key path
-    and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it belongs to; ``other_key`` and
-    ``other`` the second key it is judged against (``mixed``: the correction radius; ``rotor_length``: the farthest
-    plane; ``flat_rotor``: the masses' and planes' span along the axis, ``limit`` the ratio; ``light_machine``: the
-    machine's mass, ``limit`` the lightest rotor's), or for ``base`` ω (rad/s).
+    and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it
+    belongs to; ``other_key`` and ``other`` the second key it is judged against (``mixed``: the correction radius;
+    ``rotor_length``: the farthest plane; ``flat_rotor``: the masses' and planes' span along the axis, ``limit`` the
+    ratio; ``light_machine``: the machine's mass, ``limit`` the lightest rotor's), or for ``base`` ω (rad/s).
     """
 
     kind: str

@@ -395,8 +395,8 @@ SLIPS = {
         (r"friction\[1\]\.f: makes the friction circle at O ρ = f·r = 10 × 0\.02 m = 0\.2 m, larger than the links.*"
         r"not a percentage \(10 % is f = 0\.1\)")),
     "a joint with no pair": (SLIDER_CRANK + SLIDE_ONLY + '[[friction]]\njoint = "D"\nf = 0.1\nradius = 0.01\n',
-                             (r"friction\[1\]\.joint: names no pair of the mechanism; its pairs are O \(1–2\), A \(2–3\), "
-                             r"B \(3–4\), B \(1–4\) \(got 'D'\)")),
+                             (r"friction\[1\]\.joint: names no pair of the mechanism; its pairs are "
+                              r"O \(1–2\), A \(2–3\), B \(3–4\), B \(1–4\) \(got 'D'\)")),
     "a joint typed as its plan's letter": (SLIDER_CRANK + SLIDE_ONLY.replace('joint = "B"', 'joint = "b"'),
                                            (r"friction\[0\]\.joint: names no pair of the mechanism; its pairs are "
                                             r".* \(got 'b'\); did you mean 'B'\?$")),

@@ -241,7 +241,8 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
                      unit=text["unit_force_scale"]) + " " + note.t("note_polygon_table_lead", number=note.next_table))
     header = [note.t("column_force"), f"{note.t('column_value')}{text['comma']}{text['newton']} ∠",
               f"{note.t('column_length')}{text['comma']}{text['millimetre']}", note.t("column_role")]
-    caption = note.t("note_polygon_table_driver" if driver else "note_polygon_table", group=group.label, number=plan.number)
+    caption = note.t("note_polygon_table_driver" if driver else "note_polygon_table", group=group.label,
+                     number=plan.number)
     note.table(caption, header, rows, "lrrl", lead=None)
     if group.found:
         found = note.text["semicolon"].join(f"{item.name} = {force_report.polar(item.force, note.mark)} {text['newton']}"
