@@ -85,7 +85,7 @@ def unavailable(analysis: Analysis) -> str | None:
     if not any(drawn(spec) for spec in scene.loads):
         return "needs a load given over a stroke: a [[loads]] diagram, during window or stroke"
     if not _drawn_rows(analysis):
-        return ("needs the extremes of the loads' strokes: the working link turns round, or the positions run once "
+        return ("needs the extremes of the loads' strokes: the output link turns round, or the positions run once "
                 "over a slider's travel or a rocking crank's swing")
     return None
 

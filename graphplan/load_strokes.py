@@ -51,7 +51,7 @@ def strokes_of_other_links(mechanism: Mechanism, positions: PositionSet) -> tupl
             # Turning back together, a second piston may still run the other way (an in-line twin's crank pins
             # half a turn apart): which of its strokes the load is of, only the scene can say.
             told.append(PositionWarning(0, "stroke-of-another-link", (
-                f"{load.where} acts on link {load.link}, a slider other than the working link {working.link}: its "
+                f"{load.where} acts on link {load.link}, a slider other than the output link {working.link}: its "
                 f"{read} is read along link {working.link}'s working stroke (positions.working), in which link "
                 f"{load.link} moves {_sense_in_working_stroke(mechanism, positions, load.link)} along its guide; "
                 f"if that is not the stroke the load is of, {give}")))

@@ -135,7 +135,7 @@ def _extreme_reference(mechanism: Mechanism, start: float) -> Reference:
     except SingularPositionError as error:
         apart = 180.0 / mechanism.scene.positions.count
         raise SingularPositionError(error.position, error.group, f'{error.reason}; positions.start = "extreme" '
-                                    "chooses the assemblies here and seeks the working link's extreme positions over "
+                                    "chooses the assemblies here and seeks the output link's extreme positions over "
                                     "the crank's turn, which passes it, and a stroke cannot begin or end where the "
                                     f"mechanism may fold either way: leave {mechanism.scene.positions.working.where} "
                                     f"out and start the positions at an angle off it (positions.start = {apart:g})"
@@ -405,18 +405,18 @@ def _refuse_needing_extremes(mechanism: Mechanism) -> None:
     assert working is not None
     told = f"link {working.link} turns round and never reverses its motion, so it has no extreme position"
     if scene.positions.start == "extreme":
-        raise SceneError("positions.start", f'"extreme" needs the extreme positions of the working link, but '
+        raise SceneError("positions.start", f'"extreme" needs the extreme positions of the output link, but '
                          f"{told}: start the positions at a crank angle in degrees", "extreme")
     for load in scene.loads:
         if load.diagram is not None:
             raise SceneError(f"{load.where}.diagram", "a load diagram over the working stroke needs the strokes "
-                             f"of the working link, but {told} for one to begin at: make the load a value that "
+                             f"of the output link, but {told} for one to begin at: make the load a value that "
                              "acts always")
         if load.during != "always":
             what = f"a load of the {load.during} stroke" if isinstance(load.during, str) else \
                 "a window of the working stroke"
             written = load.during if isinstance(load.during, str) else dict(zip(("from", "to"), load.during))
-            raise SceneError(f"{load.where}.during", f"{what} needs the strokes of the working link, but {told} "
+            raise SceneError(f"{load.where}.during", f"{what} needs the strokes of the output link, but {told} "
                              "for one to begin at: use always", written)
 
 
@@ -446,7 +446,7 @@ def _refuse_dwell(mechanism: Mechanism, steps: np.ndarray, speed: np.ndarray, wo
     driver = mechanism.driver
     raise SceneError(working.where,
                      f"link {working.link} stands still from {driver.describe(float(steps[first]))} "
-                     f"to {driver.describe(float(steps[last]))} (its speed there is rounding's): a working link that "
+                     f"to {driver.describe(float(steps[last]))} (its speed there is rounding's): an output link that "
                      "dwells has no one extreme position for its stroke to start at; two links lie along each other "
                      "there (a rod as long as its crank?): change the lengths, or leave positions.working out")
 

@@ -92,7 +92,7 @@ def test_the_in_line_twin_s_balancing_moment_repeats_every_half_turn():
 
 @pytest.mark.parametrize(("pin", "guide", "said"), [
     (0.0, 90.0, "loads[1] acts on link 6, which turns back at φ = 270.0° and φ = 90.0°, not where link 4 does"),
-    (180.0, 0.0, ("loads[1] acts on link 6, a slider other than the working link 4: its diagram is read along link "
+    (180.0, 0.0, ("loads[1] acts on link 6, a slider other than the output link 4: its diagram is read along link "
                   "4's working stroke (positions.working), in which link 6 moves backward along its guide")),
 ], ids=["V-twin", "in-line twin"])
 def test_a_second_piston_s_load_without_its_own_stroke_is_warned_of(pin, guide, said):

@@ -118,12 +118,12 @@ def test_a_link_that_turns_against_its_working_sense_counts_its_turn_negative():
 
 TOLD = "link 3 turns round and never reverses its motion, so it has no extreme position"
 START_TOLD = "start the positions at a crank angle in degrees (got 'extreme')"
-STROKES_TOLD = f"needs the strokes of the working link, but {TOLD} for one to begin at"
+STROKES_TOLD = f"needs the strokes of the output link, but {TOLD} for one to begin at"
 
 
 @pytest.mark.parametrize(("start", "extra", "where", "problem"), [
     ('"extreme"', "", "positions.start",
-     f"\"extreme\" needs the extreme positions of the working link, but {TOLD}: {START_TOLD}"),
+     f"\"extreme\" needs the extreme positions of the output link, but {TOLD}: {START_TOLD}"),
     ("0.0", LOAD + 'during = "working"\n', "loads[0].during",
      f"a load of the working stroke {STROKES_TOLD}: use always (got 'working')"),
     ("0.0", LOAD + 'during = "idle"\n', "loads[0].during",

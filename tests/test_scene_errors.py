@@ -803,12 +803,12 @@ CASES: list[Case] = [
          "link 3 turns: use ccw or cw (got 'forward')", stage="build", base="SLIDER_CRANK"),
     # The crank itself turns round: its diagrams may be drawn, but it has no extreme to start at, nor strokes.
     Case("positions-working-turns-round-start-extreme", {"positions.working.link": 2, "positions.working.sense": "cw"},
-         "positions.start", '"extreme" needs the extreme positions of the working link, but link 2 turns round and '
+         "positions.start", '"extreme" needs the extreme positions of the output link, but link 2 turns round and '
          "never reverses its motion, so it has no extreme position: start the positions at a crank angle in degrees "
          "(got 'extreme')", stage="solve"),
     Case("positions-working-turns-round-load-window", {"positions.working.link": 2, "positions.working.sense": "cw",
                                                        "positions.start": 0.0},
-         "loads[0].during", "a window of the working stroke needs the strokes of the working link, but link 2 turns "
+         "loads[0].during", "a window of the working stroke needs the strokes of the output link, but link 2 turns "
          "round and never reverses its motion, so it has no extreme position for one to begin at: use always "
          "(got { from = 0.0, to = 0.881 })", stage="solve"),
     Case("positions-plans-past-end", {"positions.plans": [5, 12]}, "positions.plans[1]",
