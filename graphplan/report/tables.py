@@ -250,16 +250,17 @@ def reactions_intro(analysis: Analysis, in_note: bool = False) -> str:
     student who ran the program is told the files and the scene's key too; the note's reader (``in_note``), who
     has neither, the polygons in words alone."""
     text = strings(analysis.scene.locale)
+    # Only reactions the scene gives as measured are checked against these polygons: neither reader, with no
+    # hand-drawn polygon to look for, is told of one where none was given.
+    measured = any(row.source == "measured" and is_reaction(row.quantity)
+                   for plan in analysis.plans for row in plan.errors)
     if in_note:
-        # Only reactions the scene gives as measured are checked against these polygons: the note's reader, with no
-        # hand-drawn polygon to look for, is told of none where none was given.
-        measured = any(row.source == "measured" and is_reaction(row.quantity)
-                       for plan in analysis.plans for row in plan.errors)
         without = text["note_forces_without_friction" if measured else "note_forces_without_friction_unmeasured"]
     else:
         # The file names and the key are written as they are in every language: placeholders keep them out of
         # the words.
-        without = text["errors_forces_without_friction"].format(
+        key = "errors_forces_without_friction" if measured else "errors_forces_without_friction_unmeasured"
+        without = text[key].format(
             plain="forces_N.svg", with_friction="forces_friction_N.svg", measured="[measured] forces")
     # The balancing load found by hand, checked beside the reactions: what its rows compare, and its sense's source.
     balancing = next((row.quantity for plan in analysis.plans for row in plan.errors
