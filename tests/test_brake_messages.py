@@ -186,7 +186,7 @@ def test_a_viscous_brake_far_too_stiff_to_integrate_is_refused_at_once_naming_th
     assert _run(tmp_path, STIFF + "brake = { damping = 1.0e12, at = 0.5 }\n", "check") != 0
     assert time.perf_counter() - began < 20.0
     told = _said(capsys)
-    assert "dynamics: brake.damping: 1e+12 N·m·s" in told
+    assert "dynamics.brake.damping: 1e+12 N·m·s" in told
     assert f"J/c = {INERTIA / 1e12:.3g} s" in told and f"{PERIOD:.4g} s" in told
     # The stiffest it takes: a time constant of a hundredth of the period.
     assert f"at most {INERTIA / (0.01 * PERIOD):.3g} N·m·s" in told

@@ -42,6 +42,15 @@ class MotionSpec:
     method: str = "auto"
     rtol: float = DEFAULT_RTOL
     steady_tolerance: float = 1e-4
+    # Where the scene gave these (its [dynamics] table's path, and the keys of the start's speed and its driving
+    # half's, rev/min's where it gave those), for the refusals to name the key as typed; a spec built in Python
+    # names its own fields.
+    where: str = ""
+    start_keys: tuple[str, str] = ("omega", "driving_omega")
+
+    def _key(self, name: str) -> str:
+        """The key path of ``name`` (``"brake.damping"``) as the scene wrote it."""
+        return f"{self.where}.{name}" if self.where else name
 
     def run(self, machine: Machine) -> MachineMotion:
         self._refuse_long_run(machine)  # simulate refuses a runaway motor itself
@@ -60,14 +69,14 @@ class MotionSpec:
             refuse_endless_run_down(machine, self.brake)
 
     def _refuse_long_run(self, machine: Machine) -> None:
-        """Raise :class:`ValueError` for a run of more turns than a run integrates, or a brake's damping too stiff
-        to integrate."""
+        """Raise :class:`SceneError` (a :class:`ValueError`) at the key for a run of more turns than a run
+        integrates, or a brake's damping too stiff to integrate."""
         omega_run = running_speed(machine, self.motor, self.start, self.duration)
         self._refuse_stiff_brake(machine, TWO_PI / omega_run)
         if self.duration is not None and self.duration * omega_run > TWO_PI * MOST_TURNS:
-            raise ValueError(f"duration: {self.duration:g} s is some {self.duration * omega_run / TWO_PI:.3g} "
-                             f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
-                             f"{MOST_TURNS} turns")
+            raise SceneError(self._key("duration"), f"{self.duration:g} s is some "
+                             f"{self.duration * omega_run / TWO_PI:.3g} turns at the running speed, {omega_run:.4g} "
+                             f"rad/s; a run integrates at most {MOST_TURNS} turns")
         # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
         # than a run integrates, each resolved step by step: the run would hang rather than fail.
         driving = self.start.driving_omega or 0.0
@@ -76,18 +85,20 @@ class MotionSpec:
         if fastest * span > TWO_PI * MOST_TURNS:
             # Such a start is most often a nameplate's rpm typed as omega: the refusal asks it, as the warning would
             # of a run short enough to integrate.
-            key = "driving_omega" if driving > self.start.omega else "omega"
-            rpm_key = "driving_rpm" if key == "driving_omega" else "rpm"
-            typed = (f"; {rpm_question(f'start.{key}', fastest, f'start.{rpm_key}')}"
-                     if motor_speed_in_rpm(fastest) else "")
-            raise ValueError(f"start: {fastest:.4g} rad/s is {fastest / omega_run:.3g} times the running speed, "
-                             f"{omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} turns, "
-                             f"and it integrates at most {MOST_TURNS}{typed}")
+            key = self.start_keys[1] if driving > self.start.omega else self.start_keys[0]
+            in_rpm = not key.endswith("omega")
+            rpm_key = self._key(f"start.{key.removesuffix('omega')}rpm")
+            typed = (f"; {rpm_question(self._key(f'start.{key}'), fastest, rpm_key)}"
+                     if not in_rpm and motor_speed_in_rpm(fastest) else "")
+            given = f"{fastest / RPM:.4g} rpm ({fastest:.4g} rad/s)" if in_rpm else f"{fastest:.4g} rad/s"
+            raise SceneError(self._key(f"start.{key}"), f"{given} is {fastest / omega_run:.3g} times the running "
+                             f"speed, {omega_run:.4g} rad/s; the run could take some {fastest * span / TWO_PI:.3g} "
+                             f"turns, and it integrates at most {MOST_TURNS}{typed}")
 
 
     def _refuse_stiff_brake(self, machine: Machine, period: float) -> None:
-        """Raise :class:`ValueError` for a brake's damping whose time constant J/c, J the least inertia it brakes,
-        is below :data:`SHORTEST_BRAKE_TIME_CONSTANT` of a turn's ``period``."""
+        """Raise :class:`SceneError` at ``brake.damping`` for a brake's damping whose time constant J/c, J the least
+        inertia it brakes, is below :data:`SHORTEST_BRAKE_TIME_CONSTANT` of a turn's ``period``."""
         brake = self.brake
         if brake is None or brake.damping == 0:
             return
@@ -98,12 +109,13 @@ class MotionSpec:
         if time_constant >= SHORTEST_BRAKE_TIME_CONSTANT * period:
             return
         stiffest = inertia / (SHORTEST_BRAKE_TIME_CONSTANT * period)
-        raise ValueError(f"brake.damping: {brake.damping:g} N·m·s brakes the shaft's {inertia:.4g} kg·m² with the "
-                         f"time constant J/c = {time_constant:.3g} s, {time_constant / period:.3g} of a turn's "
-                         f"period at the running speed, {period:.4g} s: it stops the machine dead within a sliver "
-                         "of a turn and leaves it creeping at (Md − Mr)/c, which the run cannot follow turn by "
+        raise SceneError(self._key("brake.damping"), f"{brake.damping:g} N·m·s brakes the shaft's {inertia:.4g} "
+                         f"kg·m² with the time constant J/c = {time_constant:.3g} s, {time_constant / period:.3g} of a "
+                         f"turn's period at the running speed, {period:.4g} s: it stops the machine dead within a "
+                         "sliver of a turn and leaves it creeping at (Md − Mr)/c, which the run cannot follow turn by "
                          f"turn; give a damping of at most {stiffest:.3g} N·m·s (a time constant of "
-                         f"{SHORTEST_BRAKE_TIME_CONSTANT:g} of the period), or brake.torque to hold the machine")
+                         f"{SHORTEST_BRAKE_TIME_CONSTANT:g} of the period), or {self._key('brake.torque')} to hold the "
+                         "machine")
 
 
 def _read_motor(table: Table) -> tuple[Motor, float | None]:
@@ -228,6 +240,8 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
         raise SceneError(clutch_table.where("inertia"), "the clutch's driving half needs an inertia: "
                          "give clutch.inertia or motor.rotor_inertia")
     raw_start = table.raw("start", "rest")
+    given = raw_start if isinstance(raw_start, Mapping) else {}
+    start_keys = ("rpm" if "rpm" in given else "omega", "driving_rpm" if "driving_rpm" in given else "driving_omega")
     start = _read_start(raw_start, table.where("start"), clutch)
     if off_at == 0 and start.omega == 0 and not start.driving_omega:
         # Nothing would ever move: the run would integrate a machine at rest to the longest run it allows.
@@ -246,4 +260,5 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
         table.done()
     return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start,
                       start_angle_given=isinstance(raw_start, Mapping) and "angle_deg" in raw_start, duration=duration,
-                      method=method, rtol=rtol, steady_tolerance=steady_tolerance)
+                      method=method, rtol=rtol, steady_tolerance=steady_tolerance, where=table.path,
+                      start_keys=start_keys)
