@@ -55,11 +55,11 @@ from ..motion import Motion
 from ..plans import Plan
 from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
-from .force_rows import Drawing, Heading, Rows
+from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows
 from .labels import Anchor, Placement, cover_one_another, obstacles_of, open_direction, place_labels, text_box
 from .linkage import link_outlines, outline_points
 from .numerals import short, significant
-from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement
+from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement, too_short_lines
 from .plans import _coincident as coincident_letters
 from .primitives import (
     MAIN,
@@ -919,9 +919,24 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
         x0, _, x1, _ = bounds_of(item for layer in drawing for item in layer.items)
         layers.extend(moved_layers(drawing, cursor - x0, 0.0))
         cursor += x1 - x0 + POLYGON_GAP_MM
+    short = [f"{vector.name} = {significant(abs(vector.force))} {text['newton']}"
+             for vector in group.polygon.vectors if too_short_to_draw(vector.force, scale)]
     caption = (text["force_polygon_title"], *group.polygon.equations,
-               text["force_scale"].format(value=format_scale(scale)))
+               text["force_scale"].format(value=format_scale(scale)),
+               *too_short_lines(short, text, CAPTION_WIDTH_MM))
     return Drawing(f"polygon-{key}", layers, caption)
+
+
+# A force this small (N) is what the arithmetic leaves of a nought (the note writes it 0, report/forces.py's
+# ROUNDING_NOISE): no vector left out, so none named as too short to draw.
+NOUGHT_N = 1e-10
+
+
+def too_short_to_draw(force: complex, scale: float) -> bool:
+    """Whether a polygon's vector of ``force`` (N) at μF ``scale`` (N/mm) is left out of the drawing but is no
+    nought: the polygon's caption names it with its value, and the note's polygon table says it is not drawn, so
+    that a student measuring the polygon knows why a side is missing."""
+    return abs(force) > NOUGHT_N and abs(force) / scale < ZERO_MM
 
 
 def _chains(vectors: Sequence[PolygonVector], scale: float) -> list[list[PolygonVector]]:
@@ -1354,4 +1369,4 @@ def group_id(label: str) -> str:
     return svg_id(label).strip("-")
 
 
-__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "rows", "svg_id"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "rows", "svg_id", "too_short_to_draw"]

@@ -397,6 +397,12 @@ def _vectors(plan: Plan, kind: str) -> list[Primitive]:
     return arrows
 
 
+def too_short_to_draw_mm(millimetres: float) -> bool:
+    """Whether a plan's vector this long on the drawing (mm) is left out of it but is no nought (a point at the
+    pole): the plan's caption names it and the note's equation tables say it is not drawn."""
+    return 1e-9 < millimetres < ZERO_MM
+
+
 def too_short(plan: Plan, kind: str) -> list[tuple[str, float]]:
     """The vectors of the plan too short to draw but not zero: each one's name and magnitude (SI).
 
@@ -406,7 +412,7 @@ def too_short(plan: Plan, kind: str) -> list[tuple[str, float]]:
     found = []
     for start, end, name in _laid(plan, kind):
         length = abs(plan.mm(end) - plan.mm(start))
-        if 1e-9 < length < ZERO_MM:
+        if too_short_to_draw_mm(length):
             found.append((name, abs(plan.points[end] - plan.points[start])))
     return found
 
@@ -530,4 +536,4 @@ def caption_texts(lines: Sequence[str], at: tuple[float, float]) -> tuple[Text, 
 
 
 
-__all__ = ["ZERO_MM", "PlanSheet", "caption_texts", "layout", "plan_layers", "title_texts", "too_short"]
+__all__ = ["ZERO_MM", "PlanSheet", "caption_texts", "layout", "plan_layers", "title_texts", "too_short", "too_short_to_draw_mm"]

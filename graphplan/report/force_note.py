@@ -19,7 +19,7 @@ from .. import load_diagrams
 from ..analysis import Analysis, PlanPosition
 from ..mechanism import Mechanism
 from ..plans import Plan
-from ..render.forces import enlarged_lever_scale
+from ..render.forces import enlarged_lever_scale, too_short_to_draw
 from ..render.plans import ZERO_MM
 from ..scales import format_scale
 from ..wording import balancing_load
@@ -231,7 +231,7 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
         length, words = note.mm(abs(force) / scale), note.text[f"note_role_{role}"]
         # The drawing leaves out a vector shorter than ZERO_MM (a link's inertia force of a hundredth of a newton
         # at μF = 10 N/mm): the table says so beside its value in newtons, not "0.00 mm, laid off".
-        if abs(force) > force_report.ROUNDING_NOISE and abs(force) / scale < ZERO_MM:
+        if too_short_to_draw(force, scale):
             least = note.n(ZERO_MM)
             length = "—"
             words = note.t("note_role_load_short", least=least) if role == "load" else \

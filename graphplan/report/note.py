@@ -45,6 +45,7 @@ from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
 from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.drawings import dimensioned_travels, length_scale
+from ..render.plans import ZERO_MM, too_short_to_draw_mm
 from ..scales import format_scale, standard_scale
 from ..scene import Scene
 from ..wording import driver_at, raised
@@ -173,6 +174,14 @@ class _Note:
     def mm(self, value: float) -> str:
         """A length on a drawing, to a hundredth of a millimetre."""
         return f"{value:.2f}".replace(".", self.mark)
+
+    def on_plan(self, millimetres: float) -> str:
+        """A vector's length on its plan, and where the plan leaves it out as too short to draw, that it is not
+        drawn: the reader measuring the plan finds no such segment on it."""
+        written = self.mm(millimetres)
+        if too_short_to_draw_mm(millimetres):
+            written += self.text["semicolon"] + self.t("note_segment_short", least=self.n(ZERO_MM))
+        return written
 
     def product(self, *factors: str) -> str:
         """Factors joined by the locale's sign of multiplication, a negative one after the first in brackets."""
@@ -872,8 +881,8 @@ class _Note:
             return _Term(shown, "?", "—", "—")
         source, source_step = found
         value = abs(plan.points[source.end] - plan.points[source.start])
-        segment = "—" if laid is None else \
-            f"{self.segment(plan, laid.start, laid.end)} = {self.mm(abs(plan.points[laid.end] - plan.points[laid.start]) / plan.scale)}"
+        segment = "—" if laid is None else f"{self.segment(plan, laid.start, laid.end)} = " \
+            f"{self.on_plan(abs(plan.points[laid.end] - plan.points[laid.start]) / plan.scale)}"
         if name.endswith(_CORIOLIS):
             modulus, direction = self.coriolis(pp, name, value)
             return _Term(shown, modulus, segment, direction)
@@ -890,7 +899,7 @@ class _Note:
         if letter == "p":
             return _Term(shown, "0", self.letter(plan, "p"), self.text["note_at_pole"])
         value = abs(plan.points[letter])
-        segment = f"{self.segment(plan, 'p', letter)} = {self.mm(value / plan.scale)}"
+        segment = f"{self.segment(plan, 'p', letter)} = {self.on_plan(value / plan.scale)}"
         return _Term(shown, f"{self.n(value)} {unit}", segment, self.text["note_known"])
 
     def component(self, pp: PlanPosition, plan: Plan, step: Step, name: str, start: str | None, end: str | None,
@@ -899,7 +908,7 @@ class _Note:
         segment = self.segment(plan, start, end) if start and end else "—"
         if name.endswith((_NORMAL, _CORIOLIS)) and vector is not None:
             value = abs(plan.points[vector.end] - plan.points[vector.start])
-            segment += f" = {self.mm(value / plan.scale)}"
+            segment += f" = {self.on_plan(value / plan.scale)}"
             if name.endswith(_NORMAL):
                 modulus, direction = self.normal(pp, plan, name, value)
             else:
@@ -927,7 +936,7 @@ class _Note:
         else:
             pair = self.split(name[1:].removesuffix(_TANGENTIAL), pp)
             direction = self.line(LineMeaning("perpendicular", (pair[1], pair[0]))) if pair is not None else "—"
-        return _Term(self.equation(name), modulus, f"{segment} = {self.mm(value / plan.scale)}", direction)
+        return _Term(self.equation(name), modulus, f"{segment} = {self.on_plan(value / plan.scale)}", direction)
 
     def normal(self, pp: PlanPosition, plan: Plan, name: str, value: float) -> tuple[str, str]:
         """aBAⁿ = ω3²·lAB, directed from B to A."""
