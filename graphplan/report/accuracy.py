@@ -16,7 +16,7 @@ from collections.abc import Iterable, Mapping
 from ..accuracy import Row, Study, draw_study
 from ..locale import Count, strings
 from .markdown import literal
-from .plot_style import settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, settings, svg_text, with_decimal_mark
 
 FAMILIES = ("velocity", "acceleration")
 
@@ -90,7 +90,7 @@ def figure(study: Study, locale: str, title: str) -> str:
 
     text = strings(locale)
     with matplotlib.rc_context(settings()):
-        drawn = Figure(figsize=(7.0, 4.6), dpi=100)
+        drawn = Figure(figsize=(PAGE_WIDTH_INCHES, 5.0), dpi=100)
         axes = drawn.subplots()
         names = {key.removeprefix("accuracy_legend_"): word for key, word in text.items()
                  if key.startswith("accuracy_legend_")}
@@ -98,7 +98,9 @@ def figure(study: Study, locale: str, title: str) -> str:
         axes.set_xlabel(text["accuracy_axis_time"].format(count=Count(len(study.case.compared))), fontsize=9)
         axes.set_ylabel(text["accuracy_axis_error"], fontsize=9)
         axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9, parse_math=False)  # the user's title
-        axes.legend(fontsize=8, loc="best")
+        # Under the plot, not on it: "best" shuns the markers but not their labels (1 mm, 3600), and the run times
+        # that place them change from run to run; the legend sat on a label as often as not.
+        axes.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=4, frameon=False)
         drawn.tight_layout()
         with_decimal_mark(drawn, text["decimal_mark"])
         return svg_text(drawn)

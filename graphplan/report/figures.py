@@ -15,7 +15,7 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
-from .plot_style import settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, settings, svg_text, with_decimal_mark
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -45,7 +45,7 @@ def _balancing_figure(analysis: Analysis):
         along, marks = sweep.driver, positions.values
         axis, unit = text["diagram_displacement"], text["newton"]
         name = text["balancing_force"]
-    figure = Figure(figsize=(7.0, 3.6), dpi=100)
+    figure = Figure(figsize=(PAGE_WIDTH_INCHES, 3.6), dpi=100)
     plot = figure.subplots()
     plot.plot(along, ideal.balancing, color="#1f5fa8", linewidth=1.4, label=text["diagram_ideal"])
     if analysis.scene.friction and analysis.with_friction is not None:

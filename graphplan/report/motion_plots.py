@@ -21,15 +21,15 @@ from ..machine_motion import MachineMotion
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
 from .forces import number
-from .plot_style import settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, settings, svg_text, with_decimal_mark
 
 # Points of the dense solution drawn over the run, besides the solver's own steps: enough for a
 # smooth fluctuation at a few hundred turns.
 _RUN_SAMPLES = 6000
 _TURN_SAMPLES = 721
 _SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT, _BRAKE = "#1f4e79", "#a83a1f", "#1f7a3a", "#555555", "#6a2c91"
-# The width a plot's title and words may take (mm): its axes' on the 7.5-inch figure, less a margin.
-_WORDS_MM = 150.0
+# The width a plot's title and words may take (mm): its axes' on the figure (PAGE_WIDTH_INCHES), less a margin.
+_WORDS_MM = 130.0
 _MM_PER_POINT = 25.4 / 72.0
 
 
@@ -69,7 +69,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
         run_down = motion.stalled_at is None and motion.stopped_at is not None
         if _moved(motion) and not below:
             # A run-down, or a run with no steady state: the speed in time says it all, no empty half below.
-            figure = Figure(figsize=(7.5, 5.5))
+            figure = Figure(figsize=(PAGE_WIDTH_INCHES, 5.5))
             run = figure.subplots(1, 1)
             _speed_over_time(run, motion, text)
             if not run_down:
@@ -77,12 +77,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
         else:
             if _moved(motion):
-                figure = Figure(figsize=(7.5, 8.5))
+                figure = Figure(figsize=(PAGE_WIDTH_INCHES, 8.5))
                 run, turn = figure.subplots(2, 1, height_ratios=(3, 2))
                 _speed_over_time(run, motion, text)
             else:
                 # A speed zero throughout is an empty plot along its axis: only why it stands still is drawn.
-                figure = Figure(figsize=(7.5, 4.5))
+                figure = Figure(figsize=(PAGE_WIDTH_INCHES, 4.5))
                 turn = figure.subplots(1, 1)
             if motion.steady is not None:
                 _steady_turn(turn, motion, text, flywheel)

@@ -6,8 +6,19 @@ import io
 import re
 from typing import Any
 
-# Latin and Cyrillic first, then CJK: matplotlib falls back along the list glyph by glyph.
-_FONTS = ("DejaVu Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "WenQuanYi Zen Hei", "Droid Sans Fallback")
+# Latin and Cyrillic first, then CJK: matplotlib falls back along the list glyph by glyph.  The CJK fonts are those
+# Linux, Windows and macOS ship (the note's HTML names the same): with Linux's alone, a Chinese plot made on Windows
+# or a Mac found no CJK font and drew every character as an empty box.
+_FONTS = ("DejaVu Sans", "Noto Sans CJK SC", "Noto Sans CJK JP", "Noto Sans SC", "Source Han Sans SC",
+          "WenQuanYi Zen Hei", "Droid Sans Fallback", "Microsoft YaHei", "SimHei", "PingFang SC", "Hiragino Sans GB",
+          "Heiti SC", "Arial Unicode MS")
+# Parts of the CJK fonts' file names, by which fonts installed after matplotlib's cache was built are found.
+_CJK_FILES = ("CJK", "wqy", "DroidSansFallback", "SourceHanSans", "NotoSansSC", "msyh", "simhei", "PingFang",
+              "Hiragino Sans GB", "STHeiti", "Arial Unicode")
+
+#: The widest a figure is drawn (inches): the note's line, 170 mm (report/word), less a little, so that a figure
+#: pasted into a report keeps its type at the sizes it was set in (8.4 inches wide, its 8 pt legend printed at 6 pt).
+PAGE_WIDTH_INCHES = 6.6
 
 
 def font_families() -> list[str]:
@@ -20,7 +31,7 @@ def font_families() -> list[str]:
         # matplotlib's font cache is built once and misses fonts installed after it (CJK fonts put in
         # by apt after the first plot): the system's own CJK files are added to it here.
         for path in font_manager.findSystemFonts():
-            if any(mark in path for mark in ("CJK", "wqy", "DroidSansFallback")):
+            if any(mark.lower() in path.lower() for mark in _CJK_FILES):
                 try:
                     manager.addfont(path)
                 except (OSError, RuntimeError, ValueError):

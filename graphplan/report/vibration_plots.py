@@ -24,7 +24,7 @@ import numpy as np
 from ..locale import strings as locale_strings
 from ..render.numerals import short
 from ..vibration import LARGE_MAGNIFICATION, VibrationSpec, transmissibility, unbalance_magnification
-from .plot_style import settings, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
@@ -152,7 +152,7 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
     # A stream takes the SVG text as it is (a run writes its whole folder at once).
     target = path if hasattr(path, "write") else Path(path)
     with matplotlib.rc_context(settings()):
-        figure = Figure(figsize=(8.4, 4.2), dpi=100)
+        figure = Figure(figsize=(PAGE_WIDTH_INCHES, 5.0), dpi=100)
         plot = figure.add_subplot()
         colours = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.85, len(curves)))
         for (zeta, values), colour in zip(curves, colours, strict=True):
@@ -193,8 +193,9 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         plot.set_ylabel(ylabel)
         plot.set_title(title, fontsize=11)
         plot.grid(True, which="both", linewidth=0.3)
-        # Beside the plot, not on it: inside, it hid a curve wherever the curves ran (ζ = 1 at r ≈ 3.3–4.3).
-        plot.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+        # Under the plot, not on it: inside, it hid a curve wherever the curves ran (ζ = 1 at r ≈ 3.3–4.3); beside it,
+        # on a figure as wide as a report's page, it left the curves half the width.
+        plot.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, frameon=False)
         figure.tight_layout()
         with_decimal_mark(figure, text["decimal_mark"])
         if isinstance(target, Path):
