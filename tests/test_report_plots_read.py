@@ -8,6 +8,7 @@ The plots are made as a user makes them (`graphplan new`, `graphplan run`) in En
 from __future__ import annotations
 
 import dataclasses
+import functools
 import io
 from pathlib import Path
 
@@ -181,12 +182,14 @@ def test_the_accuracy_plots_legend_covers_no_marker_and_no_label_however_long_th
 # --- every character in a font that has it --------------------------------------------------------------------------
 
 
-def _cmap(path: str) -> set[int]:
+# Read once a file: a CJK collection's cmaps took some forty seconds a text, minutes a plot.
+@functools.cache
+def _cmap(path: str) -> frozenset[int]:
     """The characters of every face of the font file at ``path``."""
     from fontTools.ttLib import TTCollection, TTFont
 
     faces = TTCollection(path).fonts if path.lower().endswith((".ttc", ".otc")) else [TTFont(path)]
-    return {code for face in faces for code in face.getBestCmap()}
+    return frozenset(code for face in faces for code in face.getBestCmap())
 
 
 def _missing_glyphs(figure) -> dict[str, str]:
