@@ -973,8 +973,8 @@ def test_second_group_guide_on_a_link_of_the_first() -> None:
      "groups[1].joints: joins the frame alone (its outer joints O, C are frame points), so the group cannot move"),
     ({"kind": "RRP", "links": [5, 6], "joints": ["O", "D"], "length": 0.3, "guide": {"through": "C", "angle": 10.0},
       "assembly": "forward"},
-     "groups[1].joints: joins the frame alone (its outer joint O is a frame point and its guide is on the frame), "
-     "so the group cannot move"),
+     ("groups[1].joints: joins the frame alone (its outer joint O is a frame point and its guide is on the frame), "
+      "so the group cannot move")),
     ({"kind": "PRP", "links": [5, 6], "joints": ["D"], "guides": [{"through": "O", "angle": 0.0},
                                                                  {"through": "C", "angle": 90.0}]},
      "groups[1].guides: joins the frame alone (its guides are on the frame), so the group cannot move"),
@@ -1078,8 +1078,8 @@ def test_a_students_misnamed_reading_is_told_what_to_type(measured, where, probl
     # A Russian word for the key: no letter of it looks Latin, the key is the English word.
     ('[[группы]]\nkind = "RRR"\n', "; a key is the English word, not the Russian 'группы': write [[groups]]"),
     ("[links.шатун]\nmass = 1.0\n", "; links are numbered: write [links.3]"),
-    ("[foo]\nшатун = 1\n", "; a key is an English word, not 'шатун': quote a name of your own in other letters "
-     '("шатун" = …)'),
+    ("[foo]\nшатун = 1\n", ("; a key is an English word, not 'шатун': quote a name of your own in other letters "
+                            '("шатун" = …)')),
     # What a value cannot hold: a degree sign, the typographic minus graphplan's own notes print, a non-breaking
     # space from Word or a PDF (no input method's full-width character).
     ("[positions]\nstart = 30°   # the first\n", ("; '°' (U+00B0) is a degree sign: an angle is a number, in "
@@ -1448,8 +1448,8 @@ def test_a_group_kind_in_russian_notation_or_small_letters_is_told_the_latin_one
     """The ru note titles a group "ВВВ (RRR)", and a student copies it."""
     meant = kind.upper().translate(str.maketrans("ВПР", "RPR"))
     stage, error = first_error(to_toml(variant(RATCHET, {"groups.0.kind": kind})))
-    assert (stage, str(error)) == ("load", f"groups[0].kind: must be one of RRR, RRP, RPR, PRP, RPP, triad; did you "
-                                           f"mean {meant!r}? (got {kind!r}){hint}")
+    told = f"groups[0].kind: must be one of RRR, RRP, RPR, PRP, RPP, triad; did you mean {meant!r}? (got {kind!r}){hint}"
+    assert (stage, str(error)) == ("load", told)
 
 
 def test_frame_line_through_unknown_point() -> None:
@@ -1480,7 +1480,7 @@ def test_point_depending_on_an_unplaceable_point_is_not_called_cyclic() -> None:
 
 
 def test_point_reference_errors_name_the_key() -> None:
-    stage, error = first_error(to_toml(variant(RATCHET, {"points.S3.from": "C"})))
+    _stage, error = first_error(to_toml(variant(RATCHET, {"points.S3.from": "C"})))
     assert error.where == "points.S3.from"
 
 
@@ -1491,7 +1491,7 @@ def test_unknown_pivot_lists_the_frame_points() -> None:
 
 
 def test_rrp_toggle_message_describes_the_geometry() -> None:
-    stage, error = first_error(_rrp_toggle(), driver=[math.pi / 2])
+    _stage, error = first_error(_rrp_toggle(), driver=[math.pi / 2])
     assert type(error) is SingularPositionError
     assert "are parallel" not in str(error) or "lines of action" in str(error)
 
@@ -1537,7 +1537,7 @@ def test_slider_driver_on_explicit_frame_link() -> None:
 
 
 def test_clockwise_is_not_suggested_as_ccw() -> None:
-    stage, error = first_error(to_toml(variant(RATCHET, {"positions.working.sense": "clockwise"})))
+    _stage, error = first_error(to_toml(variant(RATCHET, {"positions.working.sense": "clockwise"})))
     assert type(error) is SceneError and "'ccw'" not in str(error)
 
 
@@ -1553,7 +1553,7 @@ def test_text_over_the_size_limit() -> None:
 
 
 def test_toml_date_is_named_in_words() -> None:
-    stage, error = first_error('[scene]\ngravity = 2024-01-01\n')
+    _stage, error = first_error('[scene]\ngravity = 2024-01-01\n')
     assert str(error) == "scene.gravity: must be a number, not a date (got 2024-01-01)"
 
 
