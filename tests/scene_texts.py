@@ -191,3 +191,40 @@ value = 100.0
 angle = {force_angle}
 resisting = true
 """
+
+
+def wedge_lift(angle: float, load: float, velocity: float, count: int, title: str = "Wedge lift") -> str:
+    """A wedge lift: the wedge (link 2, its point A) driven along the floor's line through G at ``velocity`` m/s
+    over 0.1 m, under a block 3 on its incline rising at ``angle`` degrees, pinned at B to a rod 4 that slides in the
+    frame's vertical post through P and carries ``load`` N down; ``count`` positions, position 2's plans.  The caller
+    adds the friction and anything else after it."""
+    return f"""
+[scene]
+title = "{title}"
+gravity = 0.0
+[frame]
+points = {{ G = [0.0, 0.0], P = [0.3, 0.0] }}
+lines = {{ post = {{ through = "P", angle = 90.0 }} }}
+[driver]
+kind = "slider"
+link = 2
+joint = "A"
+guide = {{ through = "G", angle = 0.0 }}
+travel = [0.0, 0.1]
+velocity = {velocity}
+[[groups]]
+kind = "PRP"
+links = [3, 4]
+joints = ["B"]
+guides = [{{ link = 2, through = "A", angle = {angle} }}, "post"]
+offsets = [0.0, 0.0]
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = {load}
+angle = 270.0
+[positions]
+count = {count}
+plans = [2]
+"""

@@ -28,6 +28,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scene_texts import central_slider_crank, wedge_lift
 from scipy.integrate import trapezoid
 
 from graphplan.cli import main
@@ -82,29 +83,7 @@ def solved(equations, sizes, unknowns: int) -> np.ndarray:
 # ---------------------------------------------------------------- slider-crank: scenes 1 and 2
 
 CRANK, ROD, PUSH, OMEGA = 0.1, 0.4, 1000.0, 10.0
-SLIDER_CRANK = f"""
-[scene]
-title = "Slider-crank with friction"
-locale = "en"
-gravity = 0.0
-[frame]
-link = 1
-points = {{ O = [0.0, 0.0] }}
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = {CRANK}
-omega = {OMEGA}
-epsilon = 0.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = {ROD}
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
+SLIDER_CRANK = central_slider_crank(CRANK, ROD, OMEGA, locale="en") + f"""
 [[loads]]
 kind = "force"
 link = 4
@@ -463,37 +442,8 @@ def test_the_note_gives_each_slides_friction_angle_as_the_force_sheet_does(tmp_p
 WEDGE_ANGLE, WEDGE_LOAD, FLOOR_F, INCLINE_F = 20.0, 2000.0, 0.12, 0.15
 
 
-def wedge_lift(velocity: float) -> str:
-    return f"""
-[scene]
-title = "Wedge lift with friction on both faces"
-locale = "en"
-gravity = 0.0
-[frame]
-points = {{ G = [0.0, 0.0], P = [0.3, 0.0] }}
-lines = {{ post = {{ through = "P", angle = 90.0 }} }}
-[driver]
-kind = "slider"
-link = 2
-joint = "A"
-guide = {{ through = "G", angle = 0.0 }}
-travel = [0.0, 0.1]
-velocity = {velocity}
-[[groups]]
-kind = "PRP"
-links = [3, 4]
-joints = ["B"]
-guides = [{{ link = 2, through = "A", angle = {WEDGE_ANGLE} }}, "post"]
-offsets = [0.0, 0.0]
-[[loads]]
-kind = "force"
-link = 4
-point = "B"
-value = {WEDGE_LOAD}
-angle = 270.0
-[positions]
-count = 5
-plans = [2]
+def wedge_with_friction_on_both_faces(velocity: float) -> str:
+    return wedge_lift(WEDGE_ANGLE, WEDGE_LOAD, velocity, count=5, title="Wedge lift with friction on both faces") + f"""
 [[friction]]
 joint = "A"
 links = [1, 2]
@@ -522,7 +472,7 @@ def test_a_wedge_with_friction_on_both_faces_takes_the_textbooks_force_and_effic
         ideal = WEDGE_LOAD * math.tan(alpha)
         rubbing = WEDGE_LOAD * (math.tan(alpha - incline) - math.tan(floor))
         efficiency = rubbing / ideal
-    for position in run(tmp_path, wedge_lift(velocity), stroke)["positions"]:
+    for position in run(tmp_path, wedge_with_friction_on_both_faces(velocity), stroke)["positions"]:
         equilibrium = position["equilibrium"]
         assert abs(equilibrium["balancing_force"]) == pytest.approx(ideal, rel=1e-9)
         assert abs(equilibrium["friction"]["balancing_force"]) == pytest.approx(rubbing, rel=1e-9)

@@ -15,6 +15,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import wedge_lift
 
 from graphplan.analysis import analyse
 from graphplan.report.note import note_markdown
@@ -25,36 +26,7 @@ ALPHA_DEG, WEIGHT = 30.0, 1000.0
 
 
 def wedge(f: float, velocity: float, extra: str = "") -> str:
-    return f"""
-[scene]
-title = "Wedge lift"
-gravity = 0.0
-[frame]
-points = {{ G = [0.0, 0.0], P = [0.3, 0.0] }}
-lines = {{ post = {{ through = "P", angle = 90.0 }} }}
-[driver]
-kind = "slider"
-link = 2
-joint = "A"
-guide = {{ through = "G", angle = 0.0 }}
-travel = [0.0, 0.1]
-velocity = {velocity}
-[[groups]]
-kind = "PRP"
-links = [3, 4]
-joints = ["B"]
-guides = [{{ link = 2, through = "A", angle = {ALPHA_DEG} }}, "post"]
-offsets = [0.0, 0.0]
-[[loads]]
-kind = "force"
-link = 4
-point = "B"
-value = {WEIGHT}
-angle = 270.0
-[positions]
-count = 6
-plans = [2]
-[[friction]]
+    return wedge_lift(ALPHA_DEG, WEIGHT, velocity, count=6) + f"""[[friction]]
 joint = "B"
 links = [2, 3]
 f = {f}
