@@ -7,12 +7,15 @@ The plots are made as a user makes them, from the starters (`graphplan new`), in
 
 from __future__ import annotations
 
+import io
+import math
 import re
 from pathlib import Path
 
 import pytest
 
 from graphplan.cli import main
+from graphplan.locale import strings
 
 pytest.importorskip("matplotlib")
 
@@ -90,3 +93,74 @@ def test_the_natural_frequency_on_the_plots_axis_has_its_n_as_a_subscript(tmp_pa
             assert re.search(r"\\omega_\{?n", words), words
         else:
             assert "ωₙ" in words and _font_has(label, "ₙ"), words
+
+
+# --- the log axis numbered within its decades ----------------------------------------------------------------------
+
+
+def _numbered(axis) -> list[tuple[float, str]]:
+    """(value, label) of ``axis``'s numbered major ticks within its view."""
+    low, high = sorted(axis.get_view_interval())
+    pairs = zip(axis.get_majorticklocs(), axis.get_majorticklabels(), strict=False)
+    return [(float(value), text.get_text()) for value, text in pairs
+            if low * (1 - 1e-9) <= value <= high * (1 + 1e-9) and text.get_text().strip()]
+
+
+def _one_two_five(low: float, high: float) -> list[float]:
+    """1, 2 and 5 of every decade from ``low`` to ``high``."""
+    return [mark * 10.0**power for power in range(math.floor(math.log10(low)) - 1, math.ceil(math.log10(high)) + 1)
+            for mark in (1.0, 2.0, 5.0) if low * (1 - 1e-9) <= mark * 10.0**power <= high * (1 + 1e-9)]
+
+
+def _read(label: str, mark: str) -> float:
+    """A tick label's number: the locale's decimal mark, a true minus, no exponent."""
+    assert re.fullmatch(r"−?\d+(" + re.escape(mark) + r"\d+)?", label), f"{label!r}: not a number written with {mark}"
+    return float(label.replace(mark, ".").replace("−", "-"))
+
+
+def _crowded(axis, renderer) -> list[str]:
+    """Labels of ``axis`` whose drawn boxes overlap a neighbour's."""
+    boxes = [(text.get_text(), text.get_window_extent(renderer)) for text in axis.get_majorticklabels()
+             if text.get_visible() and text.get_text().strip()]
+    return [f"{one} / {other}" for k, (one, box) in enumerate(boxes) for other, box2 in boxes[k + 1:]
+            if box.overlaps(box2)]
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_the_transmissibility_axis_is_numbered_at_2_and_5_within_each_decade_in_the_languages_decimal_mark(
+        tmp_path, monkeypatch, locale):
+    """Numbered at 10⁻², 10⁻¹, 1 and 10 alone, TR = 0.05 was read by counting the grid's unnumbered lines."""
+    mark = strings(locale)["decimal_mark"]
+    figures = _vibration(tmp_path, monkeypatch, locale)
+    (transmissibility,) = [(figure, renderer) for figure, renderer in figures if figure.axes[0].get_yscale() == "log"]
+    figure, renderer = transmissibility
+    axis = figure.axes[0].yaxis
+    numbered = _numbered(axis)
+    low, high = sorted(axis.get_view_interval())
+    assert high / low > 100, "the starter's transmissibility runs over decades"
+    assert [value for value, _ in numbered] == pytest.approx(_one_two_five(low, high), rel=1e-9)
+    for value, label in numbered:
+        assert _read(label, mark) == pytest.approx(value, rel=1e-9)
+    assert not _crowded(axis, renderer)
+
+
+def test_a_log_axis_over_many_decades_is_numbered_within_them_only_where_the_numbers_have_room(monkeypatch):
+    """A working point at r = 60 and mounts designed for TR = 0.0005 at r = 150: the abscissa, three decades over the
+    page's width, has room for 2 and 5; the ordinate, five decades over the plot's height, numbered so would set
+    each number against the next; there every decade is numbered and nothing overlaps."""
+    from graphplan.report.vibration_plots import transmissibility_figure
+
+    ((figure, renderer),) = _made(monkeypatch, lambda: transmissibility_figure(
+        io.StringIO(), operating=(60.0, 0.05), design=(150.0, 0.0005), text=strings("ru")))
+    (axes,) = figure.axes
+    assert axes.get_xscale() == "log" and axes.get_yscale() == "log"
+    x_low, x_high = sorted(axes.xaxis.get_view_interval())
+    assert [value for value, _ in _numbered(axes.xaxis)] == pytest.approx(_one_two_five(x_low, x_high), rel=1e-9)
+    y_low, y_high = sorted(axes.yaxis.get_view_interval())
+    decades = [10.0**power for power in range(math.ceil(math.log10(y_low)), math.floor(math.log10(y_high)) + 1)]
+    numbered = [value for value, _ in _numbered(axes.yaxis)]
+    assert all(any(math.isclose(value, decade, rel_tol=1e-9) for value in numbered) for decade in decades), numbered
+    for axis in (axes.xaxis, axes.yaxis):
+        assert not _crowded(axis, renderer)
+        for value, label in _numbered(axis):
+            assert _read(label, ",") == pytest.approx(value, rel=1e-9)

@@ -101,6 +101,52 @@ def _marked_formatter(inner, mark: str):
     return Marked()
 
 
+# Within a decade a log axis is numbered at 1, 2 and 5, as a printed chart is; where that crowds, at 1 alone.
+_ONE_TWO_FIVE = (1.0, 2.0, 5.0)
+# The least room between two numbers along a log axis, in the tick labels' font size: on the value axis their
+# height and a gap; along the abscissa each number's width (a digit some 0.6 em) and a gap of one em.
+_ROOM_ACROSS = 1.8
+_DIGIT_WIDTH = 0.6
+
+
+def number_log_axis(axis, length_points: float) -> None:
+    """Number the log ``axis`` (a matplotlib ``XAxis`` or ``YAxis`` of ``length_points``, as laid out) at 1, 2 and 5
+    of each decade where the numbers have room, else at each decade; the numbers written as numbers, 0.02 … 20, not
+    10⁻² … 10¹ (the decimal mark is put in by :func:`with_decimal_mark`).  Only decades numbered, a reader had to
+    count the grid's unlabelled lines to read TR = 0.05."""
+    import math
+
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    from ..render.numerals import short
+
+    low, high = sorted(axis.get_view_interval())
+    decades = math.log10(high / low)
+    size = axis.get_major_ticks()[0].label1.get_size()
+    shown = [mark * 10.0**power for power in range(math.floor(math.log10(low)), math.ceil(math.log10(high)) + 1)
+             for mark in _ONE_TWO_FIVE if low <= mark * 10.0**power <= high]
+    if axis.axis_name == "y":
+        needed = _ROOM_ACROSS * size
+    else:
+        needed = (max(len(short(value, 3)) for value in shown) * _DIGIT_WIDTH + 1.0) * size
+    # The closest numbers, 1 and 2 or 5 and 10, are log10(2) of a decade apart.
+    roomy = decades > 0 and math.log10(2.0) / decades * length_points >= needed
+    axis.set_major_locator(LogLocator(base=10.0, subs=_ONE_TWO_FIVE if roomy else (1.0,), numticks=1000))
+    axis.set_major_formatter(FuncFormatter(lambda value, _: short(value, 3)))
+    # Under a decade matplotlib would number the minor ticks too, over the ones above.
+    axis.set_minor_formatter(NullFormatter())
+
+
+def number_log_axes(figure) -> None:
+    """Every log axis of ``figure`` (laid out) numbered by :func:`number_log_axis`."""
+    for axes in figure.axes:
+        box = axes.get_position()
+        width, height = figure.get_size_inches() * 72.0
+        for axis, length in ((axes.xaxis, box.width * width), (axes.yaxis, box.height * height)):
+            if axis.get_scale() == "log":
+                number_log_axis(axis, length)
+
+
 def svg_text(figure) -> str:
     """``figure`` as SVG without a date (the same scene gives the same file).
 

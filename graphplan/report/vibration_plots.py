@@ -24,7 +24,7 @@ import numpy as np
 from ..locale import strings as locale_strings
 from ..render.numerals import short
 from ..vibration import LARGE_MAGNIFICATION, VibrationSpec, transmissibility, unbalance_magnification
-from .plot_style import PAGE_WIDTH_INCHES, settings, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, number_log_axes, settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
@@ -182,11 +182,7 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         if log:
             plot.set_yscale("log")
         if ratios[0] > 0:  # sampled in log r (:func:`_ratios`)
-            from matplotlib.ticker import FuncFormatter
-
             plot.set_xscale("log")
-            # r as a number, 0.1 … 100, as the linear axis writes it: not 10⁻¹ … 10².
-            plot.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
         plot.set_xlim(ratios[0], ratios[-1])
         plot.set_ylim(*ylim)
         plot.set_xlabel(text["vib_ratio"])
@@ -196,6 +192,9 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         # Under the plot, not on it: inside, it hid a curve wherever the curves ran (ζ = 1 at r ≈ 3.3–4.3); beside it,
         # on a figure as wide as a report's page, it left the curves half the width.
         plot.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, frameon=False)
+        figure.tight_layout()
+        # Numbered once laid out, where the room between the numbers is known; laid out again for their widths.
+        number_log_axes(figure)
         figure.tight_layout()
         with_decimal_mark(figure, text["decimal_mark"])
         if isinstance(target, Path):
