@@ -12,6 +12,7 @@ import math
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from graphplan.cli import main
@@ -164,3 +165,49 @@ def test_a_log_axis_over_many_decades_is_numbered_within_them_only_where_the_num
         assert not _crowded(axis, renderer)
         for value, label in _numbered(axis):
             assert _read(label, ",") == pytest.approx(value, rel=1e-9)
+
+
+# --- the balancing plot's legend -------------------------------------------------------------------------------------
+
+
+def _legend_clear(figure, renderer) -> list[str]:
+    """What the legend of ``figure``'s one axes covers: a curve's or a marker's point, a text; and whether it lies
+    under the axes and the abscissa's numbers and name, inside the image."""
+    (axes,) = figure.axes
+    legend = axes.get_legend().get_window_extent(renderer)
+    faults = []
+    under = axes.xaxis.get_tightbbox(renderer)
+    if not legend.y1 <= min(axes.get_window_extent(renderer).y0, under.y0):
+        faults.append("not under the plot and its abscissa")
+    page = figure.bbox
+    if not (page.x0 <= legend.x0 and legend.x1 <= page.x1 and page.y0 <= legend.y0 and legend.y1 <= page.y1):
+        faults.append("cut off by the image's edge")
+    for text in [*axes.texts, axes.xaxis.label, axes.yaxis.label, *axes.get_xticklabels(), *axes.get_yticklabels()]:
+        if text.get_visible() and text.get_text().strip() and legend.overlaps(text.get_window_extent(renderer)):
+            faults.append(f"covers the text {text.get_text()}")
+    for line in axes.get_lines():
+        points = axes.transData.transform(np.column_stack(line.get_data()).astype(float))
+        points = points[np.isfinite(points).all(axis=1)]
+        if ((points[:, 0] > legend.x0) & (points[:, 0] < legend.x1)
+                & (points[:, 1] > legend.y0) & (points[:, 1] < legend.y1)).any():
+            faults.append(f"covers {line.get_label()}")
+    return faults
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+@pytest.mark.parametrize("kind", ["crank-rocker", "shaper"])
+def test_the_balancing_plots_legend_lies_under_it_as_the_other_plots_do(tmp_path, monkeypatch, kind, locale):
+    """"best" put it in a corner the curve left free, a different one scene by scene (and none is free where a curve
+    fills the plot); under the plot, as the vibration and accuracy plots have theirs, it is over nothing on any.
+    The shaper's has friction, three lines to place."""
+    import matplotlib
+
+    from graphplan.analysis import analyse
+    from graphplan.report.figures import _balancing_figure
+    from graphplan.report.plot_style import settings
+    from graphplan.scene import load
+
+    analysis = analyse(load(_starter(tmp_path, kind, locale)))
+    with matplotlib.rc_context(settings()):
+        ((figure, renderer),) = _made(monkeypatch, lambda: _balancing_figure(analysis).savefig(io.BytesIO(), format="svg"))
+        assert not _legend_clear(figure, renderer)
