@@ -30,6 +30,7 @@ from .errors import SceneError
 from .forces import ForcePlan
 from .motion import solve
 from .plans import Plan
+from .report.plot_style import PLOT_DPI
 from .rotor_balancing import BalancingResult, CorrectionPlane
 from .scene import Scene, missing_part, not_a_scene
 from .vibration import Response
@@ -40,6 +41,8 @@ class Drawing:
     """An SVG drawing that Jupyter shows inline and that can be saved."""
 
     svg: str
+    #: The PNG's resolution: the drawings' export's, or a plot's (plot_style.PLOT_DPI), as the command line writes.
+    png_dpi: float | None = None
 
     def __repr__(self) -> str:
         # The whole SVG, some 25 000 characters, was its repr; Jupyter shows the drawing itself.
@@ -64,7 +67,8 @@ class Drawing:
             path.write_text(self.svg, encoding="utf-8")
         elif suffix in (".png", ".pdf"):
             # Converted before the file is opened: a failed conversion leaves no empty file behind.
-            path.write_bytes(svg_to_png(self.svg) if suffix == ".png" else svg_to_pdf(self.svg))
+            path.write_bytes(svg_to_pdf(self.svg) if suffix == ".pdf"
+                             else svg_to_png(self.svg) if self.png_dpi is None else svg_to_png(self.svg, self.png_dpi))
         else:
             raise ValueError(f"a drawing is saved as .svg, .png or .pdf, as its name's suffix says (got {path.name!r})")
         return path
@@ -292,13 +296,13 @@ class VibrationResponse:
     @property
     def magnification_plot(self) -> Drawing:
         """M·X/(m·e) against ω/ωn, the machine marked on its curve: the run's ``vibration_magnification.svg``."""
-        return Drawing(self._plots["vibration_magnification.svg"])
+        return Drawing(self._plots["vibration_magnification.svg"], png_dpi=PLOT_DPI)
 
     @property
     def transmissibility_plot(self) -> Drawing:
         """TR against ω/ωn, the machine and the isolation's design marked: the run's
         ``vibration_transmissibility.svg``."""
-        return Drawing(self._plots["vibration_transmissibility.svg"])
+        return Drawing(self._plots["vibration_transmissibility.svg"], png_dpi=PLOT_DPI)
 
 
 __all__ = ["Drawing", "PositionPlans", "RotorBalancing", "VibrationResponse", "plan"]

@@ -101,6 +101,9 @@ def _marked_formatter(inner, mark: str):
     return Marked()
 
 
+#: The plots' PNG resolution: a report prints its figures at 300 dpi.  The drawings keep the export's own
+#: (render.export.DEFAULT_DPI): an A1 sheet at 300 dpi is 70 million pixels.
+PLOT_DPI = 300.0
 # Within a decade a log axis is numbered at 1, 2 and 5, as a printed chart is; where that crowds, at 1 alone.
 _ONE_TWO_FIVE = (1.0, 2.0, 5.0)
 # The least room between two numbers along a log axis, in the tick labels' font size: on the value axis their
