@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import sys
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
@@ -338,6 +339,14 @@ def reference_at(mechanism: Mechanism, value: float, slides: Mapping[str, comple
     return Reference(tuple(branches), local, float(value), MappingProxyType(slides))
 
 
+def _masked(values: object) -> bool:
+    """Whether ``values`` is a masked array with something masked."""
+    # Asked of numpy.ma only once something has imported it, as whoever made a masked array has: numpy imports it
+    # lazily, and a run that never meets one would pay some 30 ms of its start-up for the question.
+    masked_arrays = sys.modules.get("numpy.ma")
+    return masked_arrays is not None and bool(masked_arrays.is_masked(values))
+
+
 def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference: Reference | None = None,
           numbers: Sequence[int] | None = None, tolerant: bool = False, indexed: bool = False) -> Motion:
     """The motion at every driver coordinate in ``values`` (rad for a crank, m for a slider).
@@ -352,7 +361,7 @@ def solve(mechanism: Mechanism, values: Sequence[float] | np.ndarray, reference:
     are then not numbers and must not be read).
     """
     numbers_only = "must be an array of numbers (crank angles in rad, or slider positions in m)"
-    if np.ma.is_masked(values):  # np.asarray keeps what the mask hides: the motion came out at those values
+    if _masked(values):  # np.asarray keeps what the mask hides: the motion came out at those values
         hidden = ", ".join(f"driver[{index}]" for index in np.flatnonzero(np.ma.getmaskarray(values))[:3])
         raise SceneError("driver", f"has masked values ({hidden}), which the solve cannot leave out: give "
                                    f"driver.compressed(), the values the mask shows")

@@ -3,7 +3,9 @@
 Each command is started in a fresh interpreter, as a user starts it, and asked which modules it imported: `graphplan
 --help` lists the pieces and formats without the analysis; `graphplan check` measures the drawings against the sheet
 without the SVG writer (svgwrite builds its validator's grammar on import) or any exporter; `import graphplan`
-loads the analysis only when its interface is used.
+loads the analysis only when its interface is used; a run of the bundled scene loads neither numpy.ma (np.median,
+np.unique and np.setdiff1d import it to ask whether an array is masked) nor fontTools (the drawings' font is read
+straight from its file), some 80 ms of its start between them.
 """
 
 from __future__ import annotations
@@ -259,3 +261,48 @@ def test_the_spots_round_a_label_share_their_directions_and_rings_with_every_oth
     y = 20.0 + math.sin(direction) * (1.2 + 0.5 * 3.0 + 0.55 * 3.0) - 0.45 * 3.0
     assert boxes[16 + 2] == pytest.approx([x - width / 2, y - 0.9, x + width / 2, y + 3.45], abs=1e-12)
     assert np.all(boxes[:, 2] - boxes[:, 0] == pytest.approx(width))
+
+
+@pytest.fixture(scope="module")
+def bundled_run(tmp_path_factory) -> tuple[set[str], Path]:
+    """The modules a fresh interpreter loaded for `graphplan run` of the bundled scene with every piece it writes,
+    and the folder written."""
+    out = tmp_path_factory.mktemp("cold") / "ratchet"
+    status, modules, _ = _loaded_by("run", str(SCENE), "--out", str(out))
+    assert status == 0
+    return modules, out
+
+
+def test_a_run_asks_no_array_whether_it_is_masked(bundled_run):
+    """np.median (the positions' middling speed), np.unique (a table's column widths) and np.setdiff1d (the label
+    placer's whole shapes) each import numpy.ma to ask; nothing in a run is masked."""
+    modules, out = bundled_run
+    assert (out / "sheet_1.svg").is_file() and (out / "note.tex").is_file()
+    assert "numpy.ma" not in modules
+    assert not _packages(modules, ("matplotlib", "mpmath", "scipy"))
+
+
+def test_the_positions_median_is_numpys():
+    import numpy as np
+
+    from graphplan.positions import _median
+
+    generator = np.random.default_rng(7)
+    for count in (1, 2, 3, 4, 35, 36, 360, 361):
+        speeds = np.abs(generator.normal(size=count)) * 10.0 ** generator.integers(-6, 6, size=count)
+        assert _median(speeds) == np.median(speeds)
+    assert _median(np.array([3.0, 1.0, 2.0, 10.0])) == 2.5
+    assert np.isnan(_median(np.array([])))
+
+
+def test_a_driver_with_masked_values_is_still_refused_in_a_fresh_interpreter():
+    """The solve asks numpy.ma only once something has imported it: a masked array's maker has."""
+    code = ("import numpy as np, graphplan, sys\n"
+            "scene = graphplan.load(sys.argv[1])\n"
+            "try:\n"
+            "    graphplan.solve(scene, driver=np.ma.masked_array([0.1, 0.2, 0.3], mask=[False, True, False]))\n"
+            "except graphplan.SceneError as refused:\n"
+            "    print(refused)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(SCENE)], capture_output=True, text=True, cwd=ROOT,
+                          check=True)
+    assert done.stdout.startswith("driver: has masked values (driver[1])")

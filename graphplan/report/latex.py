@@ -225,7 +225,9 @@ def _layout(header: list[str], rows: list[list[str]], sides: tuple[str, ...]) ->
     if sum(natural) > room(points) and sum(least) < room(points):
         # The columns' total is piecewise linear and rising in the cap, bending only where a column stops
         # narrowing or widening: read off at those caps, it is inverted exactly by interpolation.
-        caps = np.unique([0.0, *least, *natural])
+        # Sorted without their repeats by hand: np.unique asks numpy.ma whether the caps are masked, and importing
+        # it costs a cold run some 30 ms.
+        caps = np.array(sorted({0.0, *least, *natural}), dtype=float)
         cap = float(np.interp(room(points), [sum(widths_at(c)) for c in caps], caps))
         widths = widths_at(cap)
     elif sum(natural) > room(points):  # too wide even narrowed: the least it can be
