@@ -3,9 +3,8 @@
 Each command is started in a fresh interpreter, as a user starts it, and asked which modules it imported: `graphplan
 --help` lists the pieces and formats without the analysis; `graphplan check` measures the drawings against the sheet
 without the SVG writer (svgwrite builds its validator's grammar on import) or any exporter; `import graphplan`
-loads the analysis only when its interface is used; a run of the bundled scene loads neither numpy.ma (np.median,
-np.unique and np.setdiff1d import it to ask whether an array is masked) nor fontTools (the drawings' font is read
-straight from its file), some 80 ms of its start between them.
+loads the analysis only when its interface is used; a run of the bundled scene does not load numpy.ma (np.median,
+np.unique and np.setdiff1d import it to ask whether an array is masked), some 30 ms of its start.
 """
 
 from __future__ import annotations
@@ -290,7 +289,7 @@ def test_the_positions_median_is_numpys():
     generator = np.random.default_rng(7)
     for count in (1, 2, 3, 4, 35, 36, 360, 361):
         speeds = np.abs(generator.normal(size=count)) * 10.0 ** generator.integers(-6, 6, size=count)
-        assert _median(speeds) == np.median(speeds)
+        assert _median(speeds) == pytest.approx(np.median(speeds), rel=1e-15, abs=0.0)
     assert _median(np.array([3.0, 1.0, 2.0, 10.0])) == 2.5
     assert np.isnan(_median(np.array([])))
 
@@ -306,3 +305,83 @@ def test_a_driver_with_masked_values_is_still_refused_in_a_fresh_interpreter():
     done = subprocess.run([sys.executable, "-c", code, str(SCENE)], capture_output=True, text=True, cwd=ROOT,
                           check=True)
     assert done.stdout.startswith("driver: has masked values (driver[1])")
+
+
+def _crowded_labels():
+    """A drawing's worth of labels crowded among lines, points and texts: some named on a line, some kept off a
+    point, of several sizes and preferred directions."""
+    import math
+
+    from graphplan.render import labels
+    from graphplan.render.primitives import Circle, Polyline, Stroke, Text
+
+    items = [Polyline(((0.0, 0.0), (60.0 * math.cos(k * 0.7), 60.0 * math.sin(k * 0.7))), Stroke(0.35))
+             for k in range(9)]
+    items += [Circle((float(x), float(y)), 0.8, Stroke(0.25), fill="black") for x, y in ((10, 5), (-20, 12), (30, -8))]
+    items += [Polyline(((-30.0, -30.0), (40.0, -30.0), (40.0, 30.0)), Stroke(0.25), closed=True),
+              Text((5.0, 25.0), "a standing text", 3.5, "middle")]
+    anchors = [labels.Anchor((4.0 * (k % 7) - 12.0, 3.5 * (k // 7) - 6.0), f"P{k}", size=2.5 + (k % 3) * 0.5,
+                             prefer=k * 0.9, keep_off=((0.0, 0.0), 6.0) if k % 5 == 0 else None)
+               for k in range(28)]
+    anchors.append(labels.Anchor((30.0, 0.0), "F23", along=((20.0, 0.0), (45.0, 0.0))))
+    return anchors, labels.obstacles_of(items), [Text((0.0, -3.0), "1", 3.0)]
+
+
+@pytest.mark.parametrize("off_lines", [False, True])
+def test_the_labels_first_spots_costed_together_are_placed_where_each_costed_alone_puts_them(monkeypatch, off_lines):
+    """The spots beside every label's point are costed on the drawing for all the labels at once, in one query of the
+    drawing's tree: where a label stands is where costing its spots one label at a time put it."""
+    from graphplan.render import labels
+
+    anchors, obstacles, standing = _crowded_labels()
+    queries: list[int] = []
+
+    class Counted(labels.STRtree):
+        def query(self, geometry, *arguments, **keywords):
+            queries.append(1)
+            return super().query(geometry, *arguments, **keywords)
+
+    monkeypatch.setattr(labels, "STRtree", Counted)
+    placed = {}
+    for together in (False, True):
+        monkeypatch.setattr(labels, "FIRST_RINGS_TOGETHER", together)
+        queries.clear()
+        placed[together] = labels.place_labels(anchors, obstacles, standing=standing, off_lines=off_lines)
+        placed[together, "queries"] = len(queries)
+    assert placed[True] == placed[False]
+    texts = placed[True].texts
+    assert [text.text for text in texts] == [anchor.text for anchor in anchors]
+    # Crowded enough that some are led out beyond their first rings, where each label's spots are costed alone.
+    assert placed[True].leaders
+    # A query of the tree a label, and more, one at a time; one for all the first spots together.
+    assert placed[False, "queries"] >= len(anchors)
+    assert placed[True, "queries"] <= placed[False, "queries"] - len(anchors) + 1
+
+
+def test_real_labels_first_spots_costed_together_stand_where_each_costed_alone_puts_them(tmp_path, monkeypatch):
+    """Every call of the placer in runs of the bundled scene and of a crowded triad (tests/label_bench.py's loader of
+    bench/label_clutter.py records them), placed again with each label's first spots costed alone."""
+    sys.path.insert(0, str(ROOT / "tests"))
+    try:
+        from label_bench import label_clutter
+    finally:
+        sys.path.remove(str(ROOT / "tests"))
+    from graphplan.render import labels
+
+    clutter = label_clutter()
+    calls: list = []
+
+    class Keeping(clutter.Recorder):
+        def __call__(self, anchors, obstacles, *arguments, **keywords):
+            placement = super().__call__(anchors, obstacles, *arguments, **keywords)
+            calls.append((list(anchors), list(obstacles), arguments, keywords, placement))
+            return placement
+
+    for fixture in ("ratchet_crank_rocker", "triad_class_iii"):
+        clutter.run_fixture(ROOT / "fixtures" / f"{fixture}.toml", "en", Keeping(labels.place_labels),
+                            tmp_path / fixture)
+    assert len(calls) > 30 and sum(len(call[0]) for call in calls) > 300
+    assert sum(len(call[4].leaders) for call in calls) > 20 and any(call[3].get("standing") for call in calls)
+    monkeypatch.setattr(labels, "FIRST_RINGS_TOGETHER", False)
+    for anchors, obstacles, arguments, keywords, placement in calls:
+        assert labels.place_labels(anchors, obstacles, *arguments, **keywords) == placement, [a.text for a in anchors]

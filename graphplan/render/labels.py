@@ -132,6 +132,10 @@ FAR_SHARES = (6.6, 8.6, 11.0)
 # The rings whose spots a label is costed on first: those beside the point.  The spots farther out, a spot on ring r
 # costing RING × r and more, are costed only when none of these costs less (nought: all are costed at once).
 FIRST_RINGS = len(BESIDE_SHARES)
+# Whether the first rings of all the labels of a drawing are costed on the drawing together, before any is placed: the
+# same numbers as each label's own costing gives, in a few array operations and one query of the tree for them all,
+# where each label took some thirty operations of its own (a run places a few hundred labels).
+FIRST_RINGS_TOGETHER = True
 # What covering another label or leader costs: more than any spot that covers only drawn lines.
 OVERLAP = 1000.0
 LEADERS_CROSSING = 60.0
@@ -370,6 +374,65 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         return candidates, beside, led, lines, line_bounds, shapes, covering, cost
 
     near_shares = (*BESIDE_SHARES, *LED_SHARES, *APART_SHARES)
+
+    def first_rings_on_drawing() -> None:
+        """:func:`costed_on_drawing`'s of the spots on the first rings (:data:`FIRST_RINGS`) of every anchor, which
+        every label is costed on first, found for all of them at once, each number by the same arithmetic."""
+        shares = near_shares[:FIRST_RINGS]
+        sizes = np.array([anchor.size for anchor in anchors], dtype=float)[:, None]
+        half_widths = np.array([text_width(anchor.text, anchor.size) for anchor in anchors], dtype=float)[:, None] / 2
+        prefer = np.array([anchor.prefer for anchor in anchors], dtype=float)[:, None]
+        # _candidates', for every anchor: a row each.
+        radii = gap + np.array(shares)[None, :] * sizes
+        ring, order = _rings_and_orders(len(shares), 16)
+        direction = prefer + _turns(16)[order] * math.pi / 8
+        x = at[:, :1] + np.cos(direction) * (radii[:, ring] + half_widths)
+        y = at[:, 1:] + np.sin(direction) * (radii[:, ring] + 0.55 * sizes) - 0.45 * sizes
+        boxes = np.stack((x - half_widths, y - 0.3 * sizes, x + half_widths, y + 1.15 * sizes), axis=-1)
+        spots_each = boxes.shape[1]
+        shapes = shapely.box(*boxes.reshape(-1, 4).T)
+        # The labelled points each spot stands about as near to as to its own (_misleading's), among those within
+        # reach of its label's spots.
+        away = np.hypot(*(at[None, :, :] - at[:, None, :]).transpose(2, 0, 1))
+        off = np.abs(boxes - np.concatenate((at, at), axis=1)[:, None, :])
+        reach = np.hypot(off[:, :, [0, 2]].max(axis=2), off[:, :, [1, 3]].max(axis=2)).max(axis=1)
+        neighbours = (away > 1e-9) & (away < (2 * reach + MISLEADING_MARGIN + 1e-9)[:, None])
+        own = _box_distance(boxes, at[:, None, :])
+        misleading = np.zeros(own.shape, dtype=np.int64)
+        block = max(1, 250_000 // (spots_each * len(anchors)))  # a few megabytes of distances at a time
+        for first in range(0, len(anchors), block):
+            rows = slice(first, first + block)
+            near = _box_distance(boxes[rows, :, None, :], at[None, None, :, :]) < own[rows, :, None] + MISLEADING_MARGIN
+            misleading[rows] = (near & neighbours[rows, None, :]).sum(axis=2)
+        if tree is None:
+            covers = np.zeros(len(shapes))
+        else:
+            # covered()'s, its table of which spot meets which obstacle as the pairs sorted without repeats: a table
+            # for every spot of a drawing would take megabytes.  The weights are whole numbers: the sums are exact.
+            hit, piece = tree.query(shapes, predicate="intersects")
+            pairs = np.sort(hit * len(fixed) + owners[piece])
+            pairs = pairs[np.concatenate(([True], pairs[1:] != pairs[:-1]))]
+            covers = np.bincount(pairs // len(fixed), weights=weights[pairs % len(fixed)], minlength=len(shapes))
+        covering = covers.reshape(boxes.shape[:2])
+        cost = COVER * covering + RING * np.asarray(ring, dtype=float) + order * 0.01
+        cost += MISLEADING * misleading  # every spot stands beside its point: none is led
+        beside = np.ones(spots_each, dtype=bool)
+        for index, anchor in enumerate(anchors):
+            if anchor.keep_off is not None:  # added where costed_on_drawing adds it (nought elsewhere)
+                cost[index] += KEPT_OFF * _kept_off(anchor, boxes[index], ~beside)
+        if off_lines:
+            cost[covering > 0] += LINE_COVERED
+        led = np.flatnonzero(~beside)
+        lines = _leaders(anchors[0].at, boxes[0][led])
+        line_bounds = shapely.bounds(lines)
+        for array in (beside, led, lines, line_bounds):
+            array.flags.writeable = False
+        for index in range(len(anchors)):
+            own_shapes = shapes[index * spots_each:(index + 1) * spots_each]
+            drawn = (boxes[index], beside, led, lines, line_bounds, own_shapes, covering[index], cost[index])
+            for array in drawn:
+                array.flags.writeable = False
+            drawn_costs[(index, shares, 16)] = drawn
 
     fine_rings = np.interp(FINE_SHARES, (*BESIDE_SHARES, *LED_SHARES), np.arange(apart_from))
     kinds = {"near": (near_shares, np.arange(len(near_shares)), 16),
@@ -658,6 +721,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 
     def letter() -> None:
         """Place every label in ``order`` among those placed before it, and mend what that left."""
+        if FIRST_RINGS and FIRST_RINGS_TOGETHER and anchors:
+            first_rings_on_drawing()
         for index in order:
             place(index)
         # Lettered one by one, a label can take the only clear spot of a later one.  Each label that had to cover
