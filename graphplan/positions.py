@@ -14,6 +14,7 @@ that a scene can be given a swing inside it.
 from __future__ import annotations
 
 import math
+import statistics
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -327,13 +328,9 @@ def _find_extremes(mechanism: Mechanism, start: float, reference: Reference, wor
 
 
 def _median(values: np.ndarray) -> float:
-    """np.median's value of a 1-D array of finite numbers: the middle one, or the mean of the middle two (nan for
-    none).  np.median asks numpy.ma whether its answer is masked, and importing that costs a cold run some 30 ms."""
-    ordered = np.sort(np.asarray(values, dtype=float))
-    middle = len(ordered) // 2
-    if not len(ordered):
-        return math.nan
-    return float(ordered[middle]) if len(ordered) % 2 else float((ordered[middle - 1] + ordered[middle]) / 2)
+    """The median of a 1-D array of finite numbers (nan for none), by the standard library: np.median asks numpy.ma
+    whether its answer is masked, and importing that costs a cold run some 30 ms."""
+    return float(statistics.median(values.tolist())) if len(values) else math.nan
 
 
 def _extremes_over_turn(mechanism: Mechanism, start: float, reference: Reference, working: Working, own: bool
