@@ -27,7 +27,6 @@ from .errors import GraphplanError, SceneError
 from .locale import strings
 from .reader import check_choice
 from .render.primitives import Layer, in_language
-from .report.plot_style import PLOT_DPI
 
 # The scene, the analysis and what reads them are imported where they are used: the command line's parser takes
 # PIECES and FORMATS from here, and `graphplan --help` need not load them to list the pieces.
@@ -1008,6 +1007,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     ``warn`` is told, in a line, of an outcome the files record but a user should not miss (a machine
     that stalls); ``say`` of each stage as it begins, so that a long run's progress line names the piece
     it is making (a note of 20 000 positions takes a minute), not the first of them."""
+    from .report.plot_style import PLOT_DPI
     from .report.results import dumps
 
     # The model, the flywheel and the integrated motion serve the results, the drawing, the plot and the note,
