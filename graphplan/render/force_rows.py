@@ -56,12 +56,41 @@ def has_heading(layers: Sequence[Layer]) -> bool:
 
 
 @dataclass(frozen=True)
+class RunOn:
+    """The end of a caption that goes on at the end of the line before it where the caption's field has the room
+    (:func:`caption_lines`): a force polygon's vectors too short to draw after its μF.
+
+    Each of its lines apart took a line of lettering under the polygon, and on
+    the engine's Chinese sheet those two lines left no room beside position 2's
+    polygon for the driving link's group, which went on to a sheet of its own.
+    """
+
+    # The words and the values on one line, and what sets them off from the line before ("; ").
+    alone: str
+    joint: str
+    # Its lines where no line holds it whole: the words, then the values (render.plans.too_short_lines).
+    apart: tuple[str, ...]
+
+    def lines(self, before: str, width: float, room: float, size: float) -> list[str]:
+        """The lines that stand for ``before`` (the caption's line before it) and this: one line where ``room`` mm
+        holds the two at ``size``, else ``before`` over this line alone where that fits, else over its lines apart,
+        each broken to ``width`` as the caption's other lines are."""
+        joined = before + self.joint + self.alone
+        if text_width(joined, size) <= room:
+            return [joined]
+        if text_width(self.alone, size) <= room:
+            return [before, self.alone]
+        return [before, *(piece for line in self.apart for piece in fitted(line, width, size))]
+
+
+@dataclass(frozen=True)
 class Drawing:
-    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption, the first its title."""
+    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption, the first its title;
+    its last may run on from the line before it (:class:`RunOn`)."""
 
     name: str
     layers: list[Layer]
-    caption: tuple[str, ...]
+    caption: tuple[str | RunOn, ...]
     # The drawing under the head of its caption, and the rest of its caption (a group's equations) as a drawing of
     # its own to go on from it: for a sheet that holds the drawing only without them at a scale its labels stand
     # apart at (:meth:`Rows.parted`).  None where the caption stays whole under its drawing.
@@ -410,6 +439,10 @@ def _stacked(row: Sequence[Drawing], size: float) -> _Block:
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     width = max(max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
                 for (x0, _, x1, _), caption in zip(extents, captions, strict=True))
+    # A caption's end that runs on (:class:`RunOn`) may take the whole width the group above the polygon has
+    # already made the field: the line costs no paper there, and a line saved is a line less of the column.
+    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, width)
+                for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     layers: list[Layer] = []
     fields: dict[str, tuple[float, float, float, float]] = {}
     top = 0.0
@@ -429,25 +462,38 @@ def _caption_layer(name: str, middle: float, under: float, caption: Sequence[tup
         for k, (line, weight) in enumerate(caption)))
 
 
-def caption_lines(caption: Sequence[str], width: float, size: float) -> list[tuple[str, str]]:
+def caption_lines(caption: Sequence[str | RunOn], width: float, size: float,
+                  room: float | None = None) -> list[tuple[str, str]]:
     """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm; a line
-    that only says again what an equation above it found is left out."""
-    return [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(_unrepeated(caption))
-            for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]
+    that only says again what an equation above it found is left out; an end that runs on (:class:`RunOn`) goes
+    on the line before it where ``room`` mm (``width`` by default) holds the two."""
+    lines: list[tuple[str, str]] = []
+    for k, line in enumerate(_unrepeated(caption)):
+        weight = "bold" if k == 0 else "normal"
+        if isinstance(line, RunOn):
+            before, before_weight = lines.pop()
+            lines.extend((piece, before_weight if piece == before else "normal")
+                         for piece in line.lines(before, width, max(width, room or 0.0), size))
+        else:
+            lines.extend((piece, weight) for piece in fitted(line, width, size, weight))
+    return lines
 
 
 # What an equation's line finds, at its end: "ΣMO(2): Mb − G2·h1 − R32·h2 = 0,  Mb = 96.55 N·m".
 _FOUND = re.compile(r"= 0,\s+(\S+ = \S+(?: \S+)?)$")
 
 
-def _unrepeated(caption: Sequence[str]) -> list[str]:
+def _unrepeated(caption: Sequence[str | RunOn]) -> list[str | RunOn]:
     """``caption`` without the lines that give nothing but a value an equation above already found: the
     crank's "balancing moment Mb = 96.55 N·m (force polygons)" under its ΣMO(2) that ends "Mb = 96.55 N·m".
     A line that goes on with a number of its own is kept: the sheet with friction's "Mb = −2.00 N·m after 10
     solves; without friction 6.48 N·m: …" gives the load without friction, though no "=" is left in it."""
     found: list[str] = []
-    kept = []
+    kept: list[str | RunOn] = []
     for line in caption:
+        if isinstance(line, RunOn):
+            kept.append(line)
+            continue
         rest = line
         for value in found:
             rest = rest.replace(value, "")

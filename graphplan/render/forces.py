@@ -34,6 +34,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+import unicodedata
 from collections.abc import Callable, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass
 
@@ -55,7 +56,7 @@ from ..motion import Motion
 from ..plans import Plan
 from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
-from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows
+from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
 from .labels import Anchor, Placement, cover_one_another, obstacles_of, open_direction, place_labels, text_box
 from .linkage import link_outlines, outline_points
 from .numerals import short, significant
@@ -922,9 +923,21 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
     short = [f"{vector.name} = {significant(abs(vector.force))} {text['newton']}"
              for vector in group.polygon.vectors if too_short_to_draw(vector.force, scale)]
     caption = (text["force_polygon_title"], *group.polygon.equations,
-               text["force_scale"].format(value=format_scale(scale)),
-               *too_short_lines(short, text, CAPTION_WIDTH_MM))
+               text["force_scale"].format(value=format_scale(scale)), *_short_run_on(short, text))
     return Drawing(f"polygon-{key}", layers, caption)
+
+
+def _short_run_on(values: Sequence[str], text: Mapping[str, str]) -> tuple[RunOn, ...]:
+    """The polygon's vectors too short to draw (``values``, each named with its value) going on after its μF, where the
+    field has the room, as the plans' words name them: they are too short at that μF.  The words and the values on
+    one line take the locale's semicolon between values, as a line with Chinese words in it does (；)."""
+    if not values:
+        return ()
+    apart = too_short_lines(values, text, CAPTION_WIDTH_MM)
+    words = apart[0]
+    # A full-width colon ends the Chinese words with its own space.
+    space = "" if unicodedata.east_asian_width(words[-1]) in ("F", "W") else " "
+    return (RunOn(alone=words + space + text["semicolon"].join(values), joint=text["semicolon"], apart=tuple(apart)),)
 
 
 # A force this small (N) is what the arithmetic leaves of a nought (the note writes it 0, report/forces.py's
