@@ -57,44 +57,34 @@ def has_heading(layers: Sequence[Layer]) -> bool:
 
 @dataclass(frozen=True)
 class RunOn:
-    """The end of a caption that goes on at the end of the line before it where the caption's field has the room
-    (:func:`caption_lines`): a force polygon's vectors too short to draw after its μF.
+    """How the last ``lines`` lines of a drawing's caption (a force polygon's vectors too short to draw: the words,
+    then the values) may take fewer (:func:`caption_lines`): ``alone``, the words and the values on one line, going
+    on after ``joint`` at the end of the line before them where the caption's field has the room, else on a line of
+    its own where it fits so.
 
-    Each of its lines apart took a line of lettering under the polygon, and on
-    the engine's Chinese sheet those two lines left no room beside position 2's
-    polygon for the driving link's group, which went on to a sheet of its own.
+    Apart, they took two lines of lettering under the engine's polygon of
+    position 2, and its Chinese sheet then had no room beside the polygon for
+    the driving link's group, which went on to a sheet of its own.
     """
 
-    # The words and the values on one line, and what sets them off from the line before ("; ").
+    lines: int
     alone: str
     joint: str
-    # Its lines where no line holds it whole: the words, then the values (render.plans.too_short_lines).
-    apart: tuple[str, ...]
-
-    def lines(self, before: str, width: float, room: float, size: float) -> list[str]:
-        """The lines that stand for ``before`` (the caption's line before it) and this: one line where ``room`` mm
-        holds the two at ``size``, else ``before`` over this line alone where that fits, else over its lines apart,
-        each broken to ``width`` as the caption's other lines are."""
-        joined = before + self.joint + self.alone
-        if text_width(joined, size) <= room:
-            return [joined]
-        if text_width(self.alone, size) <= room:
-            return [before, self.alone]
-        return [before, *(piece for line in self.apart for piece in fitted(line, width, size))]
 
 
 @dataclass(frozen=True)
 class Drawing:
-    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption, the first its title;
-    its last may run on from the line before it (:class:`RunOn`)."""
+    """One drawing of the sheet: its layers (paper mm, anywhere) and the lines of its caption, the first its title."""
 
     name: str
     layers: list[Layer]
-    caption: tuple[str | RunOn, ...]
+    caption: tuple[str, ...]
     # The drawing under the head of its caption, and the rest of its caption (a group's equations) as a drawing of
     # its own to go on from it: for a sheet that holds the drawing only without them at a scale its labels stand
     # apart at (:meth:`Rows.parted`).  None where the caption stays whole under its drawing.
     parted: tuple[Drawing, Drawing] | None = None
+    # The caption's last lines as they may stand in fewer where its field has the room.
+    run_on: RunOn | None = None
 
 
 @dataclass(frozen=True)
@@ -416,7 +406,7 @@ def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
     extents = [_extent(drawing) for drawing in row]
     height = max(y1 - y0 for _, y0, _, y1 in extents)
-    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
+    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     layers: list[Layer] = []
     fields: dict[str, tuple[float, float, float, float]] = {}
@@ -435,13 +425,13 @@ def _stacked(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` one under another (the polygon under its group), each with its caption, in
     the middle of a field as wide as the widest."""
     extents = [_extent(drawing) for drawing in row]
-    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size)
+    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     width = max(max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
                 for (x0, _, x1, _), caption in zip(extents, captions, strict=True))
     # A caption's end that runs on (:class:`RunOn`) may take the whole width the group above the polygon has
     # already made the field: the line costs no paper there, and a line saved is a line less of the column.
-    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, width)
+    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on, width)
                 for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
     layers: list[Layer] = []
     fields: dict[str, tuple[float, float, float, float]] = {}
@@ -462,38 +452,39 @@ def _caption_layer(name: str, middle: float, under: float, caption: Sequence[tup
         for k, (line, weight) in enumerate(caption)))
 
 
-def caption_lines(caption: Sequence[str | RunOn], width: float, size: float,
+def caption_lines(caption: Sequence[str], width: float, size: float, run_on: RunOn | None = None,
                   room: float | None = None) -> list[tuple[str, str]]:
     """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm; a line
-    that only says again what an equation above it found is left out; an end that runs on (:class:`RunOn`) goes
-    on the line before it where ``room`` mm (``width`` by default) holds the two."""
-    lines: list[tuple[str, str]] = []
-    for k, line in enumerate(_unrepeated(caption)):
-        weight = "bold" if k == 0 else "normal"
-        if isinstance(line, RunOn):
-            before, before_weight = lines.pop()
-            lines.extend((piece, before_weight if piece == before else "normal")
-                         for piece in line.lines(before, width, max(width, room or 0.0), size))
-        else:
-            lines.extend((piece, weight) for piece in fitted(line, width, size, weight))
-    return lines
+    that only says again what an equation above it found is left out.  The last lines ``run_on`` stands for go on
+    at the end of the line before them where ``room`` mm (``width`` by default) holds the two, else stand as its
+    one line where that fits, else as they are."""
+    tail = caption[len(caption) - run_on.lines:] if run_on is not None else ()
+    head = caption[:len(caption) - len(tail)]
+    lines = [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(_unrepeated(head))
+             for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]
+    if run_on is None or not tail or not lines:
+        return lines + [(piece, "normal") for line in tail for piece in fitted(line, width, size)]
+    reach = max(width, room or 0.0)
+    before, weight = lines[-1]
+    if text_width(before + run_on.joint + run_on.alone, size, weight) <= reach:
+        return [*lines[:-1], (before + run_on.joint + run_on.alone, weight)]
+    if text_width(run_on.alone, size) <= reach:
+        return [*lines, (run_on.alone, "normal")]
+    return lines + [(piece, "normal") for line in tail for piece in fitted(line, width, size)]
 
 
 # What an equation's line finds, at its end: "ΣMO(2): Mb − G2·h1 − R32·h2 = 0,  Mb = 96.55 N·m".
 _FOUND = re.compile(r"= 0,\s+(\S+ = \S+(?: \S+)?)$")
 
 
-def _unrepeated(caption: Sequence[str | RunOn]) -> list[str | RunOn]:
+def _unrepeated(caption: Sequence[str]) -> list[str]:
     """``caption`` without the lines that give nothing but a value an equation above already found: the
     crank's "balancing moment Mb = 96.55 N·m (force polygons)" under its ΣMO(2) that ends "Mb = 96.55 N·m".
     A line that goes on with a number of its own is kept: the sheet with friction's "Mb = −2.00 N·m after 10
     solves; without friction 6.48 N·m: …" gives the load without friction, though no "=" is left in it."""
     found: list[str] = []
-    kept: list[str | RunOn] = []
+    kept = []
     for line in caption:
-        if isinstance(line, RunOn):
-            kept.append(line)
-            continue
         rest = line
         for value in found:
             rest = rest.replace(value, "")

@@ -922,22 +922,23 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
         cursor += x1 - x0 + POLYGON_GAP_MM
     short = [f"{vector.name} = {significant(abs(vector.force))} {text['newton']}"
              for vector in group.polygon.vectors if too_short_to_draw(vector.force, scale)]
+    apart = too_short_lines(short, text, CAPTION_WIDTH_MM)
     caption = (text["force_polygon_title"], *group.polygon.equations,
-               text["force_scale"].format(value=format_scale(scale)), *_short_run_on(short, text))
-    return Drawing(f"polygon-{key}", layers, caption)
+               text["force_scale"].format(value=format_scale(scale)), *apart)
+    return Drawing(f"polygon-{key}", layers, caption, run_on=_short_run_on(short, apart, text))
 
 
-def _short_run_on(values: Sequence[str], text: Mapping[str, str]) -> tuple[RunOn, ...]:
-    """The polygon's vectors too short to draw (``values``, each named with its value) going on after its μF, where the
-    field has the room, as the plans' words name them: they are too short at that μF.  The words and the values on
-    one line take the locale's semicolon between values, as a line with Chinese words in it does (；)."""
+def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str, str]) -> RunOn | None:
+    """The polygon's vectors too short to draw (``values``, each named with its value; ``apart``, the caption's
+    lines of them) going on after its μF where the field has the room: they are too short at that μF.  The words
+    and the values on one line take the locale's semicolon between values, as a line with Chinese words in it does
+    (；), where the values alone on theirs take a Latin one."""
     if not values:
-        return ()
-    apart = too_short_lines(values, text, CAPTION_WIDTH_MM)
+        return None
     words = apart[0]
     # A full-width colon ends the Chinese words with its own space.
     space = "" if unicodedata.east_asian_width(words[-1]) in ("F", "W") else " "
-    return (RunOn(alone=words + space + text["semicolon"].join(values), joint=text["semicolon"], apart=tuple(apart)),)
+    return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"])
 
 
 # A force this small (N) is what the arithmetic leaves of a nought (the note writes it 0, report/forces.py's
