@@ -180,8 +180,25 @@ class _Note:
         drawn: the reader measuring the plan finds no such segment on it."""
         written = self.mm(millimetres)
         if too_short_to_draw_mm(millimetres):
-            written += self.text["semicolon"] + self.t("note_segment_short", least=self.n(ZERO_MM))
+            written += self.text["semicolon"] + self.not_drawn()
         return written
+
+    def not_drawn(self, segment: str = "") -> str:
+        """The words that say a segment is left out of its plan as too short to draw; ``segment`` names it where
+        the sentence has another subject (``VB = pb·μV = …``: pb is not drawn, not VB's value)."""
+        words = self.t("note_segment_short", least=self.n(ZERO_MM))
+        return f"{segment} {words}" if segment else words
+
+    def drawn_mm(self, millimetres: float, written: str | None = None) -> str:
+        """A plan's length in a sentence, with its unit (``written``: the number as the sentence gives it), and
+        where the plan leaves that segment out as too short to draw, that it is not drawn, in brackets: the same
+        words as the equation tables', which the reader finds on the plan's caption too."""
+        text = f"{self.mm(millimetres) if written is None else written} {self.text['millimetre']}"
+        return text + self.short_mark(millimetres)
+
+    def short_mark(self, millimetres: float, segment: str = "") -> str:
+        """`` (not drawn: shorter than 0.25 mm)`` after a plan's length the plan leaves out, else nothing."""
+        return self.t("bracketed", words=self.not_drawn(segment)) if too_short_to_draw_mm(millimetres) else ""
 
     def product(self, *factors: str) -> str:
         """Factors joined by the locale's sign of multiplication, a negative one after the first in brackets."""
@@ -761,10 +778,10 @@ class _Note:
         if given is not None and math.isclose(given, plan.scale, rel_tol=_SAME):
             self.para(self.t("note_scale_given", symbol=symbol, scale=scale, unit=unit,
                              equation=f"{segment} = {quantity}/{symbol} = {self.n(value)}/{scale} = "
-                                      f"{self.mm(value / plan.scale)} {self.text['millimetre']}"))
+                                      f"{self.drawn_mm(value / plan.scale)}"))
         elif pole is not None and value > 0 and math.isclose(value / pole, plan.scale, rel_tol=_SAME):
-            self.para(self.t("note_scale_pole", segment=segment, pole=self.n(pole), quantity=quantity,
-                             unit=unit, millimetre=self.text["millimetre"],
+            self.para(self.t("note_scale_pole", segment=segment, pole=self.drawn_mm(pole, self.n(pole)),
+                             quantity=quantity, unit=unit, millimetre=self.text["millimetre"],
                              equation=f"{symbol} = {quantity}/{segment} = {self.n(value)}/{self.n(pole)} = {scale}"))
         else:
             extent = max(abs(a - b) for a in plan.points.values() for b in plan.points.values())
@@ -777,7 +794,7 @@ class _Note:
                 self.para(f"{symbol} = {scale} {unit}{self.text['full_stop']}")
             if value > 0:
                 self.para(f"{segment} = {quantity}/{symbol} = {self.n(value)}/{scale} = "
-                          f"{self.mm(value / plan.scale)} {self.text['millimetre']}{self.text['full_stop']}")
+                          f"{self.drawn_mm(value / plan.scale)}{self.text['full_stop']}")
 
     # A group's vector equation.
 
@@ -1045,7 +1062,7 @@ class _Note:
                 return fallback
             parts.append(f"{self.segment(plan, start, letter)} = {self.segment(plan, la, lb)}·l{name}{target}/l{na}{nb}"
                          f" = {self.mm(base_mm)}{self.text['times']}{self.n(length)}/{self.n(span)} = "
-                         f"{self.mm(value)} {self.text['millimetre']}")
+                         f"{self.drawn_mm(value)}")
         line = self.letter(plan, letter) + self.text["colon"] + self.text["semicolon"].join(parts)
         if off_line:
             line += self.text["semicolon"] + self.t("note_similar_triangle", plan=self.segment(plan, la, lb) + self.letter(plan, letter),
@@ -1078,7 +1095,7 @@ class _Note:
             through = f"{name}/{length} = " if name else ""
             text = (f"{quantity_symbol(reading.quantity)} = {through}{segment}·{symbol}/{length} = "
                     f"{self.mm(millimetres)}{self.text['times']}{scale}/{self.n(reading.length)} = "
-                    f"{self.n(abs(value))} {unit}{self.with_sense(value)}")
+                    f"{self.n(abs(value))} {unit}{self.with_sense(value)}{self.short_mark(millimetres, segment)}")
             if not angular:
                 # Accelerated or decelerated only where both ω and ε are more than the plans' rounding: an ε of
                 # 1e-16 where it is nought (a lever passing its greatest ω) is written 0 and has no sense. Every ε
@@ -1092,7 +1109,7 @@ class _Note:
             return text
         unit = self.text["unit_m_per_s" if plan.kind == "velocity" else "unit_m_per_s2"]
         return (f"{reading.quantity} = {segment}·{symbol} = {self.mm(millimetres)}{self.text['times']}{scale} = "
-                f"{self.n(abs(value))} {unit}")
+                f"{self.n(abs(value))} {unit}{self.short_mark(millimetres, segment)}")
 
     def angular_names(self, pp: PlanPosition, plan: Plan, reading: Reading, link: int) -> tuple[str, str]:
         """The relative vector and the length an ω or ε is read from: (VBA, lAB), (aBA^τ, lAB)."""
@@ -1144,7 +1161,7 @@ class _Note:
             if reading.plan != kind:
                 continue
             rows.append([quantity_symbol(reading.quantity), self.segment(plan, *reading.segment),
-                         self.mm(reading.millimetres(pp.plans)), self.n(reading.value(pp.plans)),
+                         self.on_plan(reading.millimetres(pp.plans)), self.n(reading.value(pp.plans)),
                          self.n(exact[reading.quantity]) if reading.quantity in exact else "—",
                          unit_of(reading.quantity, self.text)])
         if not rows:
