@@ -271,3 +271,39 @@ def test_every_note_format_says_not_drawn(tmp_path, locale):
     cells = [cell.text for table in document.tables for row in table.rows for cell in row.cells]
     assert any(words(locale) in paragraph for paragraph in paragraphs)
     assert any(words(locale) in cell for cell in cells)
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_an_arm_on_zhukovsky_s_lever_too_short_to_draw_says_not_drawn(locale):
+    """The lever is the velocity plan turned by 90°, and its sheet leaves out an arm shorter than 0.25 mm as the
+    plans leave out a vector: at 0.1° the piston's image b stands 0.22 mm from the pole, so F4 and Fu4 at b have
+    arms shorter than that. Each arm is worked out here from the velocity plan: the image turned clockwise, the
+    perpendicular from the pole to the force's line through it, at the μV the note says the lever is drawn at."""
+    from graphplan.render.forces import enlarged_lever_scale
+
+    analysis = analysis_of("slider-crank", locale)
+    text = strings(locale)
+    note = note_markdown(analysis)
+    position = next(position for position in analysis.plans if position.number == 0)
+    velocity, lever = position.velocity, position.lever
+    # The lever's own scale where it is drawn larger than the plan, as its note paragraph says.
+    drawn_at = enlarged_lever_scale(velocity) or velocity.scale
+    caption = text["note_lever_table"].format(number=position.number)
+    rows = note.split(caption, 1)[1].split("\n\n")[1].splitlines()[2:]
+    cells = {row.strip("|").split("|")[0].strip(): [cell.strip() for cell in row.strip("|").split("|")]
+             for row in rows}
+    seen = set()
+    for term in lever.terms:
+        if not term.image or term.name not in cells or term.shift:
+            continue
+        place = velocity.points[term.image] * -1j
+        direction = term.force / abs(term.force)
+        millimetres = abs((place * direction.conjugate()).imag) / drawn_at
+        cell = cells[term.name][3]
+        assert written_mm(cell, locale) == pytest.approx(millimetres, abs=0.006), (term.name, cell)
+        expected = f"{millimetres:.2f}".replace(".", text["decimal_mark"])
+        if is_short(millimetres):
+            expected += text["semicolon"] + words(locale)
+        assert cell == expected.strip(), (term.name, cell)
+        seen.add(is_short(millimetres))
+    assert seen == {True, False}
