@@ -137,3 +137,59 @@ def test_every_row_of_the_docs_tables_stands_in_a_table(page):
     html = MarkdownIt("commonmark").enable("table").render((ROOT / "docs" / page).read_text(encoding="utf-8"))
     assert "<table>" in html
     assert not re.findall(r"<p>\|", html)
+
+
+# A fixture of each group kind, and the line its group is written on, to put the contract's `assembly` beside.
+GROUP_OF_EACH_KIND = {
+    "RRR": ("ratchet_crank_rocker.toml", 'kind     = "RRR"'),
+    "RRP": ("engine_slider_crank.toml", 'kind     = "RRP"'),
+    "RPR": ("quick_return_slotted_lever.toml", 'kind   = "RPR"'),
+    "PRP": ("tangent_mechanism_prp.toml", 'kind    = "PRP"'),
+    "RPP": ("scotch_yoke.toml", 'kind   = "RPP"'),
+    "triad": ("triad_class_iii.toml", 'kind    = "triad"'),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(GROUP_OF_EACH_KIND))
+def test_the_contract_s_assembly_is_taken_or_refused_with_what_chooses_the_branch(kind):
+    """The contract says every group chooses its branch by ``assembly`` (left/right) or ``near``; written so on a PRP,
+    an RPP or a triad it was told only 'unknown key', and on an RRP 'must be one of forward, backward', leaving the
+    student to guess what does choose there."""
+    import graphplan
+
+    name, line = GROUP_OF_EACH_KIND[kind]
+    text = (ROOT / "fixtures" / name).read_text(encoding="utf-8")
+    assert text.count(line) == 1
+    text = re.sub(r'(?m)^assembly\s*=.*$', "", text)   # the fixture's own choice, where it has one
+    for side in ("left", "right"):
+        written = text.replace(line, f'{line}\nassembly = "{side}"')
+        if kind == "RRR":
+            graphplan.load_text(written).solve()   # an RRR's B on that side of A→C: the contract's own case
+            continue
+        with pytest.raises(graphplan.SceneError) as refused:
+            graphplan.load_text(written)
+        told = str(refused.value)
+        assert re.match(r"groups\[\d+\]\.assembly: ", told), told
+        assert told.split(": ", 1)[1] not in ("unknown key", "must be one of forward, backward (got 'left')")
+        if kind == "RRP":
+            assert "forward" in told and "backward" in told and "foot of A" in told
+        elif kind == "triad":
+            assert "near = { B = [x, y], D = [x, y], F = [x, y] }" in told
+        else:
+            assert f"{'an' if kind[0] == 'R' else 'a'} {kind} has one assembly" in told
+
+
+def test_an_rrp_s_forward_is_what_its_refusal_of_left_says():
+    """The refusal of ``assembly = "left"`` on an RRP says forward is B ahead of the foot of A on the guide, along the
+    guide's direction: so it is, at every position, and backward behind it."""
+    import graphplan
+
+    text = (ROOT / "fixtures" / "engine_slider_crank.toml").read_text(encoding="utf-8")
+    with pytest.raises(graphplan.SceneError, match="ahead of the foot of A on the guide, along the guide's direction"):
+        graphplan.load_text(re.sub(r'(?m)^assembly\s*=.*$', 'assembly = "left"', text))
+    guide = 1.0 + 0.0j   # the fixture's cylinder axis: through O along +x
+    for side, sign in (("forward", 1), ("backward", -1)):
+        motion = graphplan.load_text(re.sub(r'(?m)^assembly\s*=.*$', f'assembly = "{side}"', text)).solve()
+        a, b = (motion.point(joint).r @ np.array([1.0, 1.0j]) for joint in ("A", "B"))
+        foot = (a * guide.conjugate()).real * guide
+        assert np.all(sign * ((b - foot) * guide.conjugate()).real > 0)

@@ -553,7 +553,9 @@ CASES: list[Case] = [
     Case("rrp-guide-point-not-on-frame", {"groups.0.guide": {"through": "A"}}, "groups[0].guide.through",
          "must be a point fixed on link 1: O (got 'A')", stage="build", base="SLIDER_CRANK"),
     Case("rrp-assembly-of-rrr", {"groups.0.assembly": "left"}, "groups[0].assembly",
-         "must be one of forward, backward (got 'left')", base="SLIDER_CRANK"),
+         "must be one of forward, backward: an RRP's B stands ahead of the foot of A on the guide, along the guide's "
+         "direction (forward), or behind it (backward); left and right are the sides of an RRR's line A→C (got 'left')",
+         base="SLIDER_CRANK"),
     Case("rrp-neither-assembly-nor-near", {"groups.0.assembly": DELETE}, "groups[0].assembly",
          "is required but missing: forward or backward chooses the branch the group assembles in (or near = [x, y], "
          "where its joint lies in a sketch)", base="SLIDER_CRANK"),

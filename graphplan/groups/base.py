@@ -302,6 +302,14 @@ def read_branch(table: Table, choices: tuple[str, ...]) -> tuple[str | None, tup
     return assembly, near
 
 
+def refuse_branch(table: Table, why: str) -> None:
+    """``assembly`` and ``near`` refused in a group of one assembly, saying ``why``: the contract gives every group one
+    of them, so a bare "unknown key" sent the student looking for another name."""
+    for key in ("assembly", "near"):
+        if table.has(key):
+            raise SceneError(table.where(key), f"unknown key: {why}")
+
+
 def nearest_branch(candidates: dict[int, Vector], near: tuple[float, float]) -> int:
     """The branch whose joint lies nearest ``near`` at the first position."""
     target = complex(*near)

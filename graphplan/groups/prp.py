@@ -25,7 +25,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
-from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide
+from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch
 from .sliding import (
     coriolis,
     coriolis_letter,
@@ -52,6 +52,8 @@ class PRP(Group):
         assert pairs is not None
         guide_pair = (read_guide(pairs[0][1], pairs[0][0]), read_guide(pairs[1][1], pairs[1][0]))
         offsets = table.numbers("offsets", 2, (0.0, 0.0))
+        refuse_branch(table, "a PRP has one assembly: B is where its two sliders' lines cross, each guide moved its "
+                      "offset to its left (a negative offset, to its right)")
         table.done()
         return cls(where=table.path, links=links, joints=joints, guide_pair=guide_pair, offsets=offsets)
 

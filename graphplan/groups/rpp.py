@@ -31,7 +31,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, unit
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, image_name
 from ..reader import Table
-from .base import Context, Group, GroupMotion, Guide, read_guide, turns
+from .base import Context, Group, GroupMotion, Guide, read_guide, refuse_branch, turns
 from .sliding import (
     coriolis,
     coriolis_letter,
@@ -58,6 +58,8 @@ class RPP(Group):
         angle_deg = table.number("angle", 90.0)
         if abs(math.sin(math.radians(angle_deg))) < 1e-9:
             raise SceneError(table.where("angle"), "the slot must not be parallel to the guide", angle_deg)
+        refuse_branch(table, "an RPP has one assembly: B is where link b's slot, through A at angle degrees to the guide, "
+                      "crosses the guide")
         table.done()
         return cls(where=table.path, links=links, joints=joints, guide=guide, angle=math.radians(angle_deg))
 
@@ -130,7 +132,7 @@ class RPP(Group):
         A3 is the block's point A (image ``a``), A4 link b's point under it,
         Ag the guide link's point under it (the pole on a frame guide).
         """
-        a_name, b_name = self.joints
+        a_name, _ = self.joints
         block, slotted = self.links
         along_guide, along_slot, carrier = self._lines(board)
         on_slot, on_guide = self._meanings()
@@ -158,7 +160,7 @@ class RPP(Group):
         the relative velocity read off the velocity plan turned 90° in the
         sense of ω; the lines along the slot and the guide go through their ends.
         """
-        a_name, b_name = self.joints
+        a_name, _ = self.joints
         block, slotted = self.links
         along_guide, along_slot, carrier = self._lines(board)
         on_slot, on_guide = self._meanings()

@@ -25,13 +25,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..errors import AssemblyError, SceneError, SingularPositionError
+from ..errors import AssemblyError, SingularPositionError
 from ..forces import ForceBoard, PolygonBuilder, Term
 from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, norm2
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step
 from ..reader import Table
-from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross
+from .base import SINGULAR_SINE, Context, Group, GroupMotion, check_lines_cross, refuse_branch
 from .sliding import coriolis, coriolis_letter
 
 if TYPE_CHECKING:
@@ -49,14 +49,11 @@ class RPR(Group):
     @classmethod
     def read(cls, table: Table, links: tuple[int, int], joints: tuple[str, ...]) -> RPR:
         offset = table.number("offset", 0.0)
-        # The other dyads pick one of two assemblies; a lever through its block has one, and only an offset slide
-        # has a side to choose, which offset's sign gives: "unknown key" left the student looking for another name.
-        for key in ("assembly", "near"):
-            if table.has(key):
-                raise SceneError(f"{table.path}.{key}", "unknown key: an RPR has one assembly, its lever laid "
-                                 "through the block; an offset slide's side is the sign of offset (m: the slide runs "
-                                 "that far to the left of C, looking along the lever toward the block; negative, to "
-                                 "its right)")
+        # The RRR and RRP pick one of two assemblies; a lever through its block has one, and only an offset slide
+        # has a side to choose, which offset's sign gives.
+        refuse_branch(table, "an RPR has one assembly, its lever laid through the block; an offset slide's side is "
+                      "the sign of offset (m: the slide runs that far to the left of C, looking along the lever "
+                      "toward the block; negative, to its right)")
         table.done()
         return cls(where=table.path, links=links, joints=joints, offset=offset)
 

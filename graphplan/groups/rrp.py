@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import AssemblyError
+from ..errors import AssemblyError, SceneError
 from ..forces import ForceBoard, PolygonBuilder
 from ..kinematics import (
     LinkMotion,
@@ -67,6 +67,12 @@ class RRP(Group):
     def read(cls, table: Table, links: tuple[int, int], joints: tuple[str, ...]) -> RRP:
         length = table.number("length", positive=True)
         guide = read_guide(table.raw("guide"), table.where("guide"))
+        # The contract names a group's branches left and right, which an RRR's line A→C has sides for; an RRP's are
+        # along its guide, and "must be one of forward, backward" did not say what those are.
+        if table.data.get("assembly") in ("left", "right"):
+            raise SceneError(table.where("assembly"), "must be one of forward, backward: an RRP's B stands ahead of "
+                             "the foot of A on the guide, along the guide's direction (forward), or behind it "
+                             "(backward); left and right are the sides of an RRR's line A→C", table.data["assembly"])
         assembly, near = read_branch(table, tuple(_BRANCHES))
         table.done()
         return cls(where=table.path, links=links, joints=joints, length=length, guide=guide,

@@ -193,6 +193,12 @@ class Triad(Group):
             raise SceneError(table.where("sides"), f"the ternary link's sides BD, DF, FB must make a triangle: "
                                                    f"the longest, {longest:g} m, must be shorter than the other two together",
                              list(sides))
+        # The contract chooses a group's branch by assembly or near; of a triad's up to six assemblies no left or right
+        # names one, and a bare "unknown key" sent the student looking for another name.
+        if table.has("assembly"):
+            sketch = ", ".join(f"{name} = [x, y]" for name in inner)
+            raise SceneError(table.where("assembly"), f"unknown key: a triad has up to six assemblies, chosen by near = "
+                             f"{{ {sketch} }}, where its inner joints lie in a sketch")
         near_table = table.table("near")
         near = []
         for name in near_table.data:
