@@ -193,3 +193,217 @@ def test_an_rrp_s_forward_is_what_its_refusal_of_left_says():
         a, b = (motion.point(joint).r @ np.array([1.0, 1.0j]) for joint in ("A", "B"))
         foot = (a * guide.conjugate()).real * guide
         assert np.all(sign * ((b - foot) * guide.conjugate()).real > 0)
+
+
+EXTENSIONS = ROOT / "docs" / "scene-format-extensions.md"
+README = ROOT / "README.md"
+
+
+def code_names(text: str) -> set[str]:
+    """The names written in the text's code spans (a span may open with several backquotes: ``` `` ` `` ```)."""
+    spans = " ".join(span for _, span in re.findall(r"(`+)(.+?)\1", text))
+    return set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", spans))
+
+
+def results_row(key: str) -> str:
+    """The row of the extensions' table of results.json that describes ``key``."""
+    (row,) = [line for line in EXTENSIONS.read_text(encoding="utf-8").splitlines() if line.startswith(f"| `{key}` |")]
+    return row
+
+
+def named(name: str, names: set[str]) -> bool:
+    """``name`` is among ``names``, or made of one and a suffix the docs give alone (``_exact``, ``_mertsalov``)."""
+    return name in names or any(name.endswith(suffix) and name[:-len(suffix)] and suffix.startswith("_")
+                                for suffix in names)
+
+
+# Keys under these are the scene's own names (points, links, reactions, plan letters), not the file's.
+NAMED_BY_THE_SCENE = {"points", "links", "reactions", "values", "points_mm", "polygon_scales", "loads", "offsets"}
+
+
+def keys_under(node, path=""):
+    """(path, key) of every key of a JSON document below ``path``, those under a table named by the scene left out."""
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield path, key
+            if key not in NAMED_BY_THE_SCENE:
+                yield from keys_under(value, f"{path}.{key}")
+    elif isinstance(node, list):
+        for value in node:
+            yield from keys_under(value, f"{path}[]")
+
+
+@pytest.fixture(scope="module")
+def documented_runs(tmp_path_factory):
+    """results.json of real runs that between them write every table the docs describe: the shaper starter (friction,
+    the velocity plans of every position, a flywheel and a motor), the rotor starter on a shaft and a shaken floor
+    (its isolation in series with the shaft, the base's motion and both responses together) and a slider driver with
+    the report figures."""
+    from graphplan.starters import starter
+
+    folder = tmp_path_factory.mktemp("documented")
+    rotor = starter("rotor").replace("stiffness     = 1.0e5",
+                                      "shaft = { modulus = 2.1e11, diameter = 0.03, length = 0.8 }")
+    rotor = rotor.replace("transmissibility = 0.2", "transmissibility = 0.2\nbase_amplitude = 0.0005")
+    scenes = {"shaper": (starter("shaper"), "dynamics"), "rotor": (rotor, "balancing,vibration"),
+              "slider": ((ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8"), "forces,figures")}
+    runs = {}
+    for name, (text, pieces) in scenes.items():
+        scene = folder / f"{name}.toml"
+        scene.write_text(text, encoding="utf-8")
+        assert main(["run", str(scene), "--out", str(folder / name), "--only", pieces]) == 0
+        runs[name] = (scene, json.loads((folder / name / "results.json").read_text(encoding="utf-8")))
+    return runs
+
+
+def test_every_key_a_run_writes_is_described_where_the_docs_describe_its_table(documented_runs):
+    """results.json's ``dynamics`` wrote ``omega_mean`` beside the flywheel, which the extensions' row of the
+    dynamics named only in the motion's steady state: every key is named in the docs, and a key of one of the tables
+    the extensions describe row by row in that table's own row (the dynamics' motion in the part after ``motion``)."""
+    contract, extensions = PAGE.read_text(encoding="utf-8"), EXTENSIONS.read_text(encoding="utf-8")
+    everywhere = code_names(contract + extensions + README.read_text(encoding="utf-8"))
+    in_the_example = set(re.findall(r'"(\w+)":', "".join(fenced("json"))))
+    everywhere |= in_the_example
+    dynamics, motion = results_row("dynamics").split("with a motor, `motion`:")
+    rows = {".dynamics": code_names(dynamics) | {"motion"}, ".dynamics.motion": code_names(motion),
+            ".versions": set(re.findall(r"\w+", results_row("versions").lower())),   # the packages, in words
+            ".balancing": code_names(results_row("balancing") + results_row("balancing.warnings[]")),
+            ".vibration": code_names(results_row("vibration") + results_row("vibration.warnings[]")),
+            ".cycle_efficiency": code_names(results_row("cycle_efficiency")),
+            ".positions[].equilibrium": code_names(results_row("positions[].equilibrium")),
+            ".positions[].forces": code_names(results_row("positions[].forces") + contract) | in_the_example}
+    unnamed = set()
+    for name, (_, written) in documented_runs.items():
+        for path, key in keys_under(written):
+            table = max((table for table in rows if (path + ".").startswith(table + ".")), key=len, default=None)
+            if not named(key, rows[table] if table else everywhere):
+                unnamed.add(f"{name}: {path}.{key}")
+    assert not unnamed, sorted(unnamed)
+
+
+def test_every_key_the_results_table_and_the_readme_name_is_written(documented_runs):
+    """The other way round: each key path the extensions' results table describes, and each the README says
+    results.json holds, stands in a real run's file."""
+    written = set()
+    for _, document in documented_runs.values():
+        written |= {f"{path}.{key}" for path, key in keys_under(document)}
+    described = re.findall(r"^\| `([\w.\[\]]+)`", EXTENSIONS.read_text(encoding="utf-8").split("\n## Results", 1)[1],
+                           flags=re.MULTILINE)
+    assert len(described) > 20
+    readme = re.search(r"Writes `results.json` \((.*?)\)", README.read_text(encoding="utf-8"), flags=re.DOTALL)[1]
+    top, per_position = readme.split("for every position")
+    told = ([f".{key}" for key in re.findall(r"`(\w+)`", top)]
+            + [f".positions[].{key}" for key in re.findall(r"`(\w+)`", per_position) if key != "warnings"]
+            + [".warnings"])
+    missing = [path for path in [f".{key.removesuffix('[]')}" for key in described] + told if path not in written]
+    assert not missing
+
+
+def test_the_notebook_s_results_are_the_files_as_the_readme_says(documented_runs):
+    """README: ``balancing.results`` is results.json's "balancing" and ``shaking.results`` its "vibration", as the run
+    writes them; the same numbers, to the digit, from the same scene."""
+    import graphplan
+
+    scene, written = documented_runs["rotor"]
+    rotor = graphplan.load(scene)
+    assert rotor.balance().results == written["balancing"]
+    assert rotor.vibration_response().results == written["vibration"]
+
+
+def test_the_results_are_what_the_docs_formulas_make_of_the_scene(documented_runs):
+    """The relations the results table states between its keys and the scene's data, worked out from the scene."""
+    import math
+    import tomllib
+
+    scene, written = documented_runs["rotor"]
+    machine = tomllib.loads(scene.read_text(encoding="utf-8"))["vibration"]
+    vibration = written["vibration"]
+    omega, mass, unbalance = machine["rpm"] * math.pi / 30, machine["mass"], machine["unbalance"]
+    shaft = machine["shaft"]
+    length, second_moment = shaft["length"], math.pi * shaft["diameter"] ** 4 / 64
+    a = b = length / 2   # the disc midway between the bearings, simply supported
+    shaft_stiffness = 3 * shaft["modulus"] * second_moment * length / (a * a * b * b)
+    assert vibration["stiffness"] == pytest.approx(shaft_stiffness, rel=1e-9)
+    assert vibration["natural_frequency"] == pytest.approx(math.sqrt(shaft_stiffness / mass), rel=1e-9)
+    assert vibration["critical_speed_rpm"] == pytest.approx(vibration["critical_speed"] * 30 / math.pi, rel=1e-9)
+    assert vibration["exciting_force"] == pytest.approx(unbalance * omega ** 2, rel=1e-9)
+    ratio = omega / vibration["natural_frequency"]
+    zeta = machine["damping_ratio"]
+    transmissibility = math.hypot(1, 2 * zeta * ratio) / math.hypot(1 - ratio ** 2, 2 * zeta * ratio)
+    assert vibration["transmissibility"] == pytest.approx(transmissibility, rel=1e-9)
+    assert vibration["transmitted_force"] == pytest.approx(transmissibility * unbalance * omega ** 2, rel=1e-9)
+    isolation = vibration["isolation"]
+    support = mass * (omega / isolation["frequency_ratio"]) ** 2
+    assert isolation["stiffness"] == pytest.approx(support, rel=1e-9)
+    assert isolation["mount_stiffness"] == pytest.approx(support * shaft_stiffness / (shaft_stiffness - support),
+                                                         rel=1e-9)
+    base = machine["base_amplitude"]
+    assert vibration["base_excitation"]["transmitted_force"] == pytest.approx(
+        transmissibility * mass * omega ** 2 * base, rel=1e-9)
+    assert vibration["combined"]["transmitted_force"] == pytest.approx(
+        transmissibility * omega ** 2 * (unbalance + mass * base), rel=1e-9)
+
+    scene, written = documented_runs["shaper"]
+    dynamics = written["dynamics"]
+    driving, resisting = np.array(dynamics["driving_moment"]), np.array(dynamics["resisting_moment"])
+    scale = np.abs(dynamics["reduced_moment"]).max()
+    assert np.allclose(driving + resisting, dynamics["reduced_moment"], rtol=0, atol=1e-11 * scale)
+    work = np.array(dynamics["driving_work"]) - np.array(dynamics["resisting_work"])
+    assert np.allclose(work, dynamics["kinetic_energy_change"], rtol=0, atol=1e-11 * np.abs(work).max())
+    assert dynamics["delta_w_max"] == pytest.approx(np.ptp(dynamics["kinetic_energy_change"]), rel=1e-9)
+    flywheel = dynamics["flywheel_inertia"]
+    assert dynamics["kinetic_energy_start"] == pytest.approx(
+        (dynamics["reduced_inertia"][0] + flywheel) * dynamics["omega"][0] ** 2 / 2, rel=1e-9)
+    mean_rpm = dynamics["omega_mean"] * 30 / math.pi
+    assert dynamics["flywheel_inertia_moved"] == pytest.approx(
+        flywheel * (mean_rpm / dynamics["flywheel_shaft_rpm"]) ** 2, rel=1e-9)
+    assert dynamics["omega_max"] - dynamics["omega_min"] == pytest.approx(
+        dynamics["delta_reached"] * dynamics["omega_mean"], rel=1e-9)
+    cycle = written["cycle_efficiency"]
+    assert cycle["efficiency"] == pytest.approx(cycle["work_without_friction"] / cycle["work_with_friction"], rel=1e-9)
+    assert cycle["friction_work"] == pytest.approx(cycle["work_with_friction"] - cycle["work_without_friction"],
+                                                   rel=1e-9)
+    for row in written["errors"]:
+        if row["analytic"]:
+            assert row["percent"] == pytest.approx((row["analytic"] - row["plan"]) / row["analytic"] * 100,
+                                                   rel=1e-6, abs=1e-9)
+    plans = tomllib.loads(scene.read_text(encoding="utf-8"))["positions"]["plans"]
+    assert [p["index"] for p in written["positions"] if "forces" in p] == sorted(plans)
+    for position in written["positions"]:
+        if "forces" in position:
+            forces = position["forces"]
+            for table in (forces, forces["friction"]):
+                assert table["lever_difference_percent"] == pytest.approx(
+                    (table["lever_balancing_moment"] - table["balancing_moment"]) / table["balancing_moment"] * 100,
+                    abs=1e-6)
+            assert forces["friction"]["efficiency"] == pytest.approx(
+                forces["balancing_moment"] / forces["friction"]["balancing_moment"], rel=1e-9)
+            assert forces["polygon_scale"] == max(forces["polygon_scales"].values())
+
+
+def test_a_scene_without_a_linkage_writes_the_results_its_row_says(documented_runs):
+    """The results table said ``errors`` is always a list, as ``warnings`` is; a rotor's results.json has neither,
+    nor any other key of the linkage: its row now says what the file holds."""
+    row = next(line for line in EXTENSIONS.read_text(encoding="utf-8").splitlines()
+               if line.startswith("| a scene with `[balancing]`, `[vibration]` or a `[dynamics]` load diagram"))
+    holds, lacks = re.search(r"which then holds (.*?), none of the linkage's keys \((.*?)\)", row).groups()
+    _, written = documented_runs["rotor"]
+    assert set(written) <= set(re.findall(r"`(\w+)`", holds))
+    assert {"graphplan", "versions", "scene", "balancing", "vibration"} <= set(written)
+    assert not set(written) & set(re.findall(r"`(\w+)`", lacks))
+    assert "always a list in a scene with a linkage" in results_row("errors")
+
+
+def test_the_plots_the_readme_names_are_files_a_run_writes(documented_runs):
+    """README named the plots ``balancing`` among them, a name a rotor's run writes no file of (its polygons are
+    the drawing ``rotor_balancing``): each name it gives is a file of the runs that make it."""
+    from fnmatch import fnmatch
+
+    sentence = re.search(r"and the plots \((.*?)\) as PNG or PDF", README.read_text(encoding="utf-8"), re.DOTALL)[1]
+    names = re.findall(r"`([\w*]+)`", sentence)
+    assert {"motion", "balancing", "rotor_balancing"} <= set(names)
+    files = {path.stem for scene, _ in documented_runs.values() for path in scene.parent.glob("*/*.svg")}
+    # The accuracy report, the one output with run times of its own, is run by tests/test_accuracy_report.py.
+    missing = [name for name in names if name != "accuracy" and not any(fnmatch(stem, name) for stem in files)]
+    assert not missing
+    assert "--figures" in sentence.split("`balancing`")[0]   # balancing.svg is the figures' plot
