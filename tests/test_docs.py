@@ -126,6 +126,12 @@ def test_the_course_project_s_stall_warning_is_the_one_printed(tmp_path, capsys)
     scene.write_text(starter("shaper").replace("power = 3000.0", "power = 1500.0"), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "dynamics"]) == 0
     assert shown in capsys.readouterr().out
+    # "results.json gives dynamics.motion.stalled_at (s) and stalled_at_angle_deg", the φ printed, the crank's own.
+    motion = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    at, angle = re.search(r"stalls at t = ([\d.]+) s, φ = ([\d.]+)°", shown).groups()
+    assert motion["stalled_at"] == pytest.approx(float(at), abs=5e-4)
+    assert motion["stalled_at_angle_deg"] == pytest.approx(float(angle), abs=0.05)
+    assert not motion["steady"]
 
 
 @pytest.mark.parametrize("page", ["scene-format-extensions.md", "course-project.md"])
