@@ -296,6 +296,17 @@ def test_the_readme_names_every_bundled_scene():
     assert listed == {path.name for path in (ROOT / "fixtures").glob("*.toml")}
 
 
+def test_the_readme_names_every_benchmark():
+    """The README's benchmarks left out bench/positions_count.py, whose results the extensions cite for the limit of
+    20 000 positions, and bench/label_clutter.py: each script a user runs is named with the command that runs it."""
+    section = README.split("## Benchmarks", 1)[1].split("\n## ", 1)[0]
+    named = set(re.findall(r"`python (bench/\w+\.py)`", section))
+    # peers.py is the peer packages' solvers, which sweep.py runs through; its own main is a self-check.
+    scripts = {f"bench/{path.name}" for path in (ROOT / "bench").glob("*.py")
+               if '__name__ == "__main__"' in path.read_text(encoding="utf-8") and path.stem != "peers"}
+    assert len(scripts) >= 10 and named == scripts
+
+
 def test_a_machine_run_down_to_rest_shows_its_speed_as_0_not_rounding():
     """``scene.machine_dynamics().motion``, which the README offers, showed ``ω -1.11e-15 … 6.377 rad/s`` of the
     shaper switched off and run down to rest: the integration's rounding, which results.json writes as 0."""
