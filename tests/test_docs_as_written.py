@@ -287,6 +287,12 @@ def test_the_sheet_option_draws_the_sheets_as_its_help_says(student_folder, caps
     assert not list(Path("only").glob("sheet_*"))
     run_as_printed(["run", str(scene), "--sheet", "A1", "--out", "all"], capsys)
     assert ElementTree.parse(Path("all", "sheet_1.svg")).getroot().get("width") == "841mm"
+    # README: the sheets "when the scene names [drawing] sheet or --sheet a format, or with --only sheets, on A1 where
+    # neither names one"; a scene that names none asked for them alone got A1 sheets without a word of it.
+    assert "or with `--only sheets`, on A1 where neither names one" in " ".join(README.split())
+    scene.write_text(re.sub(r'(?m)^sheet\s*=.*$', "", text), encoding="utf-8")
+    run_as_printed(["run", str(scene), "--only", "sheets", "--out", "asked"], capsys)
+    assert ElementTree.parse(Path("asked", "sheet_1.svg")).getroot().get("width") == "841mm"
 
 
 def test_the_readme_names_every_bundled_scene():
