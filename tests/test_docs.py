@@ -413,3 +413,17 @@ def test_the_plots_the_readme_names_are_files_a_run_writes(documented_runs):
     missing = [name for name in names if name != "accuracy" and not any(fnmatch(stem, name) for stem in files)]
     assert not missing
     assert "--figures" in sentence.split("`balancing`")[0]   # balancing.svg is the figures' plot
+
+
+def test_every_warning_code_the_program_writes_is_a_documented_one():
+    """The warnings' codes are the contract's way for a script to tell warnings apart: each code the source can
+    write (a position's warning, a rotor's or a vibration's caution) has its row or its words in the results table,
+    and each code documented there is one the source writes."""
+    source = "\n".join(path.read_text(encoding="utf-8") for path in (ROOT / "graphplan").rglob("*.py"))
+    written = set(re.findall(r'PositionWarning\(\s*[^,]+,\s*"([a-z-]+)"', source))
+    written |= set(re.findall(r'^\s+code = "([a-z-]+)"$', source, flags=re.MULTILINE))
+    extensions = EXTENSIONS.read_text(encoding="utf-8")
+    documented = set(re.findall(r'^\| `warnings\[\]\.code = "([a-z-]+)"`', extensions, flags=re.MULTILINE))
+    cautions = results_row("balancing.warnings[]") + results_row("vibration.warnings[]")
+    documented |= set(re.findall(r'`code = "([a-z-]+)"`', cautions))
+    assert len(written) > 20 and written == documented
