@@ -322,3 +322,18 @@ def test_a_machine_run_down_to_rest_shows_its_speed_as_0_not_rounding():
     assert motion.stopped_at is not None
     assert abs(float(motion.omega.min())) < 1e-12 * float(motion.omega.max())
     assert re.search(r", ω 0 … [\d.]+ rad/s, at rest from ", repr(motion)), repr(motion)
+
+
+def test_scene_write_s_locale_and_sheet_write_what_the_command_line_s_do(student_folder, capsys):
+    """README: ``scene.write`` takes ``locale`` and ``sheet`` as ``graphplan run`` takes ``--locale`` and ``--sheet``,
+    through the same code, to the same files: byte for byte, a Chinese note and A3 sheets of a scene in English on
+    A1, with the GB/T title block the Chinese sheets carry."""
+    scene = "fixtures/engine_slider_crank.toml"
+    run_as_printed(["run", scene, "--only", "positions,note,sheets", "--locale", "zh", "--sheet", "A3",
+                    "--out", "by_command"], capsys)
+    graphplan.load(scene).write("by_python", only=["positions", "note", "sheets"], locale="zh", sheet="A3")
+    written = {path.name: path.read_bytes() for path in Path("by_command").iterdir()}
+    assert {path.name: path.read_bytes() for path in Path("by_python").iterdir()} == written
+    assert "sheet_1.svg" in written and re.search("[\u4e00-\u9fff]", written["note.md"].decode("utf-8"))
+    sheet = ElementTree.parse(Path("by_python", "sheet_1.svg")).getroot()
+    assert sheet.get("width") == "420mm" and "设计" in svg_texts(Path("by_python", "sheet_1.svg"))
