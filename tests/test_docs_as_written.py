@@ -327,7 +327,7 @@ def test_a_machine_run_down_to_rest_shows_its_speed_as_0_not_rounding():
 def test_scene_write_s_locale_and_sheet_write_what_the_command_line_s_do(student_folder, capsys):
     """README: ``scene.write`` takes ``locale`` and ``sheet`` as ``graphplan run`` takes ``--locale`` and ``--sheet``,
     through the same code, to the same files: byte for byte, a Chinese note and A3 sheets of a scene in English on
-    A1, with the GB/T title block the Chinese sheets carry."""
+    A2, with the GB/T title block the Chinese sheets carry."""
     scene = "fixtures/engine_slider_crank.toml"
     run_as_printed(["run", scene, "--only", "positions,note,sheets", "--locale", "zh", "--sheet", "A3",
                     "--out", "by_command"], capsys)
