@@ -337,3 +337,20 @@ def test_scene_write_s_locale_and_sheet_write_what_the_command_line_s_do(student
     assert "sheet_1.svg" in written and re.search("[\u4e00-\u9fff]", written["note.md"].decode("utf-8"))
     sheet = ElementTree.parse(Path("by_python", "sheet_1.svg")).getroot()
     assert sheet.get("width") == "420mm" and "设计" in svg_texts(Path("by_python", "sheet_1.svg"))
+
+
+def test_the_title_blocks_carry_the_project_s_people_as_the_extensions_say():
+    """The extensions listed the boxes each title block fills; an English project's checked_by was on no sheet and
+    the page did not say so: ESKD's and GB/T's blocks carry the checker, ISO 7200's, which has no box for one, not."""
+    from graphplan.render.primitives import Text
+    from graphplan.render.title_block import TitleBlockFields, labels, title_block
+
+    extensions = (ROOT / "docs" / "scene-format-extensions.md").read_text(encoding="utf-8")
+    assert "ISO 7200 has no box for who checked the drawing, so an English sheet leaves `checked_by`" in extensions
+    fields = TitleBlockFields(title="Shaper", author="Author", checked_by="Checker", approved_by="Approver",
+                              drawing="Kinematic analysis", scale="1:2", sheet=1, sheets=1)
+    for form, locale in (("eskd", "ru"), ("gb", "zh"), ("iso", "en")):
+        texts = " ".join(item.text for item in title_block(form, fields, labels(locale), (420.0, 0.0))
+                         if isinstance(item, Text))
+        assert "Author" in texts and "Approver" in texts
+        assert ("Checker" in texts) == (form != "iso"), form
