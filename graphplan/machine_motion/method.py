@@ -24,6 +24,20 @@ _TURN = np.linspace(0.0, TWO_PI, 64, endpoint=False)
 _FINE_TURN = np.linspace(0.0, TWO_PI, 4096, endpoint=False)
 
 
+class EndlessRun(ValueError):
+    """A run that could not end, refused before anything is integrated.
+
+    ``problem`` says why in words; ``key`` is the argument of :func:`~graphplan.machine_motion.simulate` it is told
+    at, ``scene_key`` the key below the scene's ``[dynamics]`` table that asked for it (``motor.off_at``), so that a
+    scene's refusal names the key as the user typed it rather than the argument."""
+
+    def __init__(self, key: str, scene_key: str, problem: str) -> None:
+        self.key = key
+        self.scene_key = scene_key
+        self.problem = problem
+        super().__init__(f"{key}: {problem}")
+
+
 def _over_a_turn(function: Callable[[float], float]) -> float:
     """The mean of ``function`` of the crank angle over a turn, on equal steps (the trapezoidal rule of a periodic
     function)."""
@@ -97,7 +111,7 @@ def stalls_in_its_first_turn(machine: Machine, motor: Motor, start: Start = REST
 
 def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = True, start: Start = REST,
                    clutch: Clutch | None = None) -> None:
-    """Raise :class:`ValueError` where a run goes on ``to_the_steady_state`` (no duration, brake or switching off
+    """Raise :class:`EndlessRun` (a :class:`ValueError`) where a run goes on ``to_the_steady_state`` (no duration, brake or switching off
     ends it) and the motor outpulls the resistance at every speed (:func:`speeds_up_without_end`): it would
     never end.  A motor that outpulls the mean resistance but not its peaks may stall from ``start`` before it
     gains the speed to carry the machine past them (:func:`stalls_in_its_first_turn`): that run ends at the
@@ -109,15 +123,16 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
             and stalls_in_its_first_turn(machine, motor, start):
         return
     if outpulled is not None:
-        raise ValueError(f"motor: its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean resistance, "
-                         f"{outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and has no "
-                         "steady state; give a duration, more resistance, or a motor whose torque falls with speed "
-                         "(linear, kloss)")
+        # The torque on the shaft is the motor's times its gear ratio: the motor's table as a whole is told.
+        raise EndlessRun("motor", "motor", f"its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean "
+                         f"resistance, {outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and "
+                         "has no steady state; give a duration, more resistance, or a motor whose torque falls with "
+                         "speed (linear, kloss)")
 
 
 def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
-    """Raise :class:`ValueError` for a run-down (the motor switched off, no duration) that nothing brings to rest:
-    the resistance at rest takes no work over a turn on the average (the weights alone give back on the way down
+    """Raise :class:`EndlessRun` (a :class:`ValueError`) for a run-down (the motor switched off, no duration) that
+    nothing brings to rest: the resistance at rest takes no work over a turn on the average (the weights alone give back on the way down
     what they take on the way up) and no brake's torque holds the machine, so that it turns, or swings, for ever.
     A brake's damping alone slows it only in the limit."""
     brake_torque, brake_damping = (brake.torque, brake.damping) if brake is not None else (0.0, 0.0)
@@ -131,10 +146,11 @@ def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
         resisting = 0.0
     damping = (f"; the brake's damping, {brake_damping:g} N·m·s, slows it only in the limit and never to rest"
                if brake_damping > 0 else "")
-    raise ValueError(f"motor: switched off, the machine has nothing to take its energy: its resistance, {resisting:.4g} N·m "
-                     f"on the average over a turn, takes no work from it turn by turn (weights give back on the way "
-                     f"down what they take on the way up) and no brake holds it{damping}, so it never comes to rest; "
-                     "give a brake with a torque (brake = { torque, at }) or a duration")
+    raise EndlessRun("motor_off_at", "motor.off_at", "switches the motor off, and the machine has nothing to take "
+                     f"its energy: its resistance, {resisting:.4g} N·m on the average over a turn, takes no work from "
+                     "it turn by turn (weights give back on the way down what they take on the way up) and no brake "
+                     f"holds it{damping}, so it never comes to rest; give a brake with a torque "
+                     "(brake = { torque, at }) or a duration")
 
 
 def _mean_surplus(machine: Machine, motor: Motor):

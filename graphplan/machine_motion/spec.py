@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
 import math
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -13,7 +14,7 @@ from ..errors import SceneError
 from ..reader import Table, check_number
 from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
-from .method import refuse_endless_run_down, refuse_runaway, running_speed
+from .method import EndlessRun, refuse_endless_run_down, refuse_runaway, running_speed
 from .shaft import TWO_PI, Machine
 from .simulation import DEFAULT_RTOL, METHODS, MOST_CYCLES, SMALLEST_RTOL, MachineMotion, simulate
 
@@ -53,20 +54,33 @@ class MotionSpec:
         return f"{self.where}.{name}" if self.where else name
 
     def run(self, machine: Machine) -> MachineMotion:
-        self._refuse_long_run(machine)  # simulate refuses a runaway motor itself
-        return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
-                        clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
-                        steady_tolerance=self.steady_tolerance)
+        self._refuse_long_run(machine)
+        with self._told_at_its_key():  # simulate refuses a runaway motor and an endless run-down itself
+            return simulate(machine, self.motor, duration=self.duration, start=self.start, brake=self.brake,
+                            clutch=self.clutch, motor_off_at=self.motor_off_at, method=self.method, rtol=self.rtol,
+                            steady_tolerance=self.steady_tolerance)
 
     def refuse(self, machine: Machine) -> None:
-        """Raise :class:`ValueError` for a run of ``machine`` that could not end: a motor that outpulls the
-        resistance at every speed from a start that carries the machine past its peaks, or more turns than a run
-        integrates; found before integrating anything."""
+        """Raise :class:`SceneError` (a :class:`ValueError`) at its key for a run of ``machine`` that could not end: a
+        motor that outpulls the resistance at every speed from a start that carries the machine past its peaks, a
+        run-down that nothing brings to rest, or more turns than a run integrates; found before integrating
+        anything."""
         self._refuse_long_run(machine)
-        refuse_runaway(machine, self.motor, self.duration is None and self.brake is None and self.motor_off_at is None,
-                       self.start, self.clutch)
-        if self.duration is None and self.motor_off_at is not None:
-            refuse_endless_run_down(machine, self.brake)
+        with self._told_at_its_key():
+            refuse_runaway(machine, self.motor,
+                           self.duration is None and self.brake is None and self.motor_off_at is None, self.start,
+                           self.clutch)
+            if self.duration is None and self.motor_off_at is not None:
+                refuse_endless_run_down(machine, self.brake)
+
+    @contextlib.contextmanager
+    def _told_at_its_key(self) -> Iterator[None]:
+        """A run that could not end (:class:`EndlessRun`, told at the argument of ``simulate``) as a
+        :class:`SceneError` at the scene's key that asked for it (``dynamics.motor.off_at``)."""
+        try:
+            yield
+        except EndlessRun as endless:
+            raise SceneError(self._key(endless.scene_key), endless.problem) from None
 
     def _refuse_long_run(self, machine: Machine) -> None:
         """Raise :class:`SceneError` (a :class:`ValueError`) at the key for a run of more turns than a run
