@@ -110,3 +110,17 @@ def test_the_python_interface_names_its_own_arguments():
         simulate(Machine(inertia=1.0, resisting=4.0), ConstantTorque(10.0))
     with pytest.raises(ValueError, match=r"^motor_off_at: switches the motor off"):
         simulate(Machine(inertia=1.0, resisting=0.0), ConstantTorque(10.0), motor_off_at=1.0)
+
+
+@pytest.mark.parametrize(("points", "told"), [
+    ("[[100, 40], [100, 30]]", "the two points need different speeds (got 100 rpm twice)"),
+    ("[[100, 40], [200, 50]]", "the torque must fall as the speed rises (got 40 N·m at 100 rpm, 50 N·m at 200 rpm)"),
+    # The line through them: M = −5 − 0.05·(n − 100), nought at 0 rpm.
+    ("[[100, -5], [200, -10]]", "the line through them gives the motor no torque at rest, 0 N·m at 0 rpm"),
+])
+def test_a_linear_motors_points_are_told_in_the_units_they_were_typed_in(tmp_path, capsys, points, told):
+    """They were told in rad/s (10.471975511965976 twice), and a line that gives no torque at rest as 'must be a
+    finite number > 0 (got 0.0)'."""
+    assert main(["check", str(_scene(tmp_path, _flywheel(f'{{ kind = "linear", points = {points} }}')))]) == 2
+    err = without_progress(capsys.readouterr().err).strip()
+    assert err.startswith(f"graphplan: error: dynamics.motor.points: {told}")

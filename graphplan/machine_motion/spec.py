@@ -149,7 +149,9 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
             for where, item in pairs:
                 if not isinstance(item, list) or len(item) != 2:
                     raise SceneError(where, "must be a point [rpm, torque N·m]", item)
-                points.append((check_number(item[0], f"{where}[0]") * RPM, check_number(item[1], f"{where}[1]")))
+                points.append((check_number(item[0], f"{where}[0]"), check_number(item[1], f"{where}[1]")))
+            _refuse_points(table.where("points"), points)
+            points = [(rpm * RPM, torque) for rpm, torque in points]
             try:
                 motor = LinearMotor.through(points[0], points[1], **drive)
             except ValueError as error:
@@ -186,6 +188,21 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         motor = KlossMotor(power, synchronous * RPM, slip, overload, **drive)
     table.done()
     return motor, off_at
+
+
+def _refuse_points(where: str, points: list[tuple[float, float]]) -> None:
+    """Raise :class:`SceneError` at ``where`` for a linear motor's two points ``[rpm, N·m]`` that give no motor,
+    told in the units they were typed in (the motor's class would tell rad/s)."""
+    (n1, m1), (n2, m2) = points
+    typed = f"{m1:g} N·m at {n1:g} rpm, {m2:g} N·m at {n2:g} rpm"
+    if n1 == n2:
+        raise SceneError(where, f"the two points need different speeds (got {n1:g} rpm twice)")
+    slope = (m2 - m1) / (n2 - n1)
+    if not slope < 0:
+        raise SceneError(where, f"the torque must fall as the speed rises (got {typed})")
+    if not m1 - slope * n1 > 0:
+        raise SceneError(where, f"the line through them gives the motor no torque at rest, {m1 - slope * n1:.4g} N·m "
+                         f"at 0 rpm: a motor's torque is > 0 from rest up to its no-load speed (got {typed})")
 
 
 def _read_brake(table: Table) -> Brake:
