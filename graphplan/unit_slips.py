@@ -15,16 +15,28 @@ from .units import motor_speed_in_rpm, rpm_question
 # A link is a bar between its joints.  A course's links weigh q·l, q some 10–40 kg/m (a 0.3 m rocker 3–12 kg);
 # even a solid steel bar as thick and as wide as it is long, or 0.1 m square where it is shorter (78.5 kg/m, twice
 # the heaviest q), weighs less than ρ·l·max(l, 0.1 m)² (212 kg for 0.3 m, 3.9 kg for 0.05 m), and the same masses
-# typed in grams, a thousand times q·l, pass it.  The driving crank is left out: it carries a flywheel, a gear or
-# counterweights beyond its pin, a mass its length does not bound.
+# typed in grams, a thousand times q·l, pass it.  No link is thicker than THICKEST_SECTION_M, however long: beyond
+# it the bar is that square, 7850 kg a metre (the heaviest links, a large press's connecting rod or a pumpjack's
+# walking beam, weigh some 1–5 t a metre), which a course's 10 kg a metre in grams passes at every length, where
+# the cube of a 2 m link, 62.8 t, let a 20 t link of 10 kg/m in grams by.
 STEEL_DENSITY = 7850.0
 THINNEST_SECTION_M = 0.1
+THICKEST_SECTION_M = 1.0
+# The driving crank may carry a flywheel, a gear, counterweights, an eccentric's sheave or a crankshaft's webs and
+# journals, a mass its length does not bound; its inertia J, where given, bounds it instead.  A steel body of mass m
+# whose radius of gyration in the plane is k = √(J/m) covers at most 2π·k² of the plane (a disc covers the most for
+# its k), so it reaches at least m/(2π·ρ·k²) = m²/(2π·ρ·J) along its axis: 0.05 m for a 400 kg flywheel of J = 60
+# kg·m², 0.8 m for 20 kg lumped near the pin of a 0.06 m crank at J = 0.01 (a crankshaft's throws), while 4 kg of a
+# 0.175 m crank typed in grams, at its J = 0.0102, would reach 32 km.  A crank heavier than a bar that reaches more
+# than LONGEST_CRANK times its length (or 0.1 m) along its axis has its mass in grams.  Without J (a crank turning
+# at constant ω needs none) nothing tells its sheave or flywheel from a slip.
+LONGEST_CRANK = 50.0
 
 
 def heaviest_bar(length: float) -> float:
     """The most a link of ``length`` (m) between its joints weighs, kg: a solid steel bar as thick and as wide as it
-    is long, or :data:`THINNEST_SECTION_M` square where it is shorter."""
-    return STEEL_DENSITY * length * max(length, THINNEST_SECTION_M) ** 2
+    is long, but at least :data:`THINNEST_SECTION_M` and at most :data:`THICKEST_SECTION_M` square."""
+    return STEEL_DENSITY * length * min(max(length, THINNEST_SECTION_M), THICKEST_SECTION_M) ** 2
 
 
 def speed_in_rpm(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
@@ -38,22 +50,38 @@ def speed_in_rpm(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
 
 
 def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
-    """A ``masses-in-grams`` warning, at the first position, naming each link but the driver whose mass is more
-    than :func:`heaviest_bar` of its span (the largest distance between two of its points), with the mass it would
-    be in grams."""
+    """A ``masses-in-grams`` warning, at the first position, naming each link whose mass is more than
+    :func:`heaviest_bar` of its span (the largest distance between two of its points), with the mass it would be in
+    grams; the driving crank only where its inertia, given, makes it too compact to carry a flywheel or counterweights
+    (:data:`LONGEST_CRANK`)."""
     told = []
     for number, link in sorted(mechanism.scene.links.items()):
         span = _span(mechanism, motion, number)
-        if number == mechanism.driver.link or span is None or not link.mass > heaviest_bar(span[0]):
+        if span is None or not link.mass > heaviest_bar(span[0]):
             continue
         length, between = span
+        why = ""
+        if number == mechanism.driver.link:
+            depth = _crank_depth(link.mass, link.inertia)
+            if depth is None or not depth > LONGEST_CRANK * max(length, THINNEST_SECTION_M):
+                continue
+            why = (f", and too compact for a flywheel or counterweights: with {link.where}.inertia = "
+                   f"{link.inertia:g} kg·m², as steel it would reach {depth:.3g} m along its axis")
         told.append(f"{link.where}.mass = {link.mass:g} kg on a link {length:.3g} m long ({between}), heavier than a "
-                    f"solid steel bar of that length ({heaviest_bar(length):.3g} kg): grams typed for kg? "
+                    f"solid steel bar of that length ({heaviest_bar(length):.3g} kg){why}: grams typed for kg? "
                     f"{link.mass:g} g is {link.where}.mass = {link.mass / 1000:g}")
     if not told:
         return ()
     return (PositionWarning(0, "masses-in-grams", "; ".join(told) + ": the scene's masses are in kg (divide grams "
                                                                     "by 1000)"),)
+
+
+def _crank_depth(mass: float, inertia: float) -> float | None:
+    """How far along its axis a steel body of ``mass`` (kg) reaches at least, whose moment of inertia about its centre
+    is ``inertia`` (kg·m²): m²/(2π·ρ·J), m; None where no inertia is given."""
+    if not inertia > 0:
+        return None
+    return mass ** 2 / (2.0 * math.pi * STEEL_DENSITY * inertia)
 
 
 def _span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[float, str] | None:

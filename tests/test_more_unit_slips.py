@@ -124,3 +124,115 @@ def test_a_linear_motors_points_are_told_in_the_units_they_were_typed_in(tmp_pat
     assert main(["check", str(_scene(tmp_path, _flywheel(f'{{ kind = "linear", points = {points} }}')))]) == 2
     err = without_progress(capsys.readouterr().err).strip()
     assert err.startswith(f"graphplan: error: dynamics.motor.points: {told}")
+
+
+# --- masses in grams -----------------------------------------------------------------------------------------------
+
+STEEL = 7850.0
+
+
+def _run(tmp_path: Path, text: str, capsys) -> tuple[str, dict, str]:
+    import json
+
+    out = tmp_path / "out"
+    assert main(["run", str(_scene(tmp_path, text)), "--out", str(out), "--only", "note"]) == 0
+    told = capsys.readouterr().out  # the warnings, under what the run wrote
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    return told, results, (out / "note.md").read_text(encoding="utf-8")
+
+
+def _in_grams(results: dict) -> list[str]:
+    return [warning["detail"] for warning in results["warnings"] if warning["code"] == "masses-in-grams"]
+
+
+def _with_crank(mass: float, inertia: float, centre: str = "S2") -> str:
+    """The crank-rocker starter with its crank OA = 0.175 m given a mass; S2 lies 0.08 m out along it."""
+    text = starter("crank-rocker", "en")
+    crank = f'[links.2]\nmass    = {mass!r}\ncentre  = "{centre}"\ninertia = {inertia!r}\n'
+    return text.replace("[links.3]", crank + "[links.3]", 1)
+
+
+@pytest.mark.parametrize("inertia", [0.0102, 1000 * 0.0102])  # J from the true mass, or from the grams as well
+def test_a_cranks_mass_in_grams_is_warned_of_by_its_inertia(tmp_path, capsys, inertia):
+    """A 4 kg steel crank, 0.175 m, J = m·l²/12 = 0.0102 kg·m², its mass typed as 4000 (grams): the crank was left
+    out of the bound, for the flywheel or counterweights it may carry. A steel body of mass m whose J about its
+    centre is J covers at most the disc of radius √(2J/m) (area 2π·J/m) in the plane, so it is at least
+    m / (ρ·2π·J/m) long along its axis: 31.8 km, or 31.8 m with J in grams too, no crank's 0.175 m × 50."""
+    bar = STEEL * 0.175 * 0.175 ** 2  # a solid steel bar 0.175 m square, 42.1 kg
+    depth = 4000.0 / (STEEL * 2 * math.pi * inertia / 4000.0)
+    words = (f"links.2.mass = 4000 kg on a link 0.175 m long (A–O), heavier than a solid steel bar of that length "
+             f"({bar:.3g} kg), and too compact for a flywheel or counterweights: with links.2.inertia = {inertia:g} "
+             f"kg·m², as steel it would reach {depth:.3g} m along its axis: grams typed for kg? 4000 g is "
+             "links.2.mass = 4")
+    told, results, note = _run(tmp_path, _with_crank(4000.0, inertia), capsys)
+    assert words in told and any(words in detail for detail in _in_grams(results))
+    assert "the masses were probably given in grams" in note
+    told, results, _ = _run(tmp_path, _with_crank(4.0, 0.0102), capsys)
+    assert not _in_grams(results) and "grams typed for kg" not in told
+
+
+@pytest.mark.parametrize(("mass", "inertia", "centre", "what"), [
+    (400.0, 60.0, "O", "a flywheel of 400 kg on the crank, its centre on the axis"),
+    (400.0, 60.0, "S2", "the same flywheel lumped with its centre left at the crank's"),
+    (60.0, 0.6, "A", "an eccentric's sheave 0.2 m in radius, 0.06 m thick, its centre at the pin"),
+    (60.0, 0.02, "A", "a crankshaft's throw lumped at the pin, 3.6 m long as steel"),
+    (60.0, 0.0, "S2", "a heavy crank given no inertia: nothing tells a bar from a sheave"),
+])
+def test_a_crank_that_carries_more_than_a_bar_is_not_warned_of(tmp_path, capsys, mass, inertia, centre, what):
+    assert mass > STEEL * 0.175 ** 3  # each is heavier than the bar bound, 42.1 kg
+    _, results, _ = _run(tmp_path, _with_crank(mass, inertia, centre), capsys)
+    assert not _in_grams(results), what
+
+
+def _long_crank_rocker(rocker_mass: float, lever_mass: float) -> str:
+    """The crank-rocker starter ten times as large (a pumpjack's size), its links 40 kg a metre."""
+    text = starter("crank-rocker", "en")
+    for old, new in [("C = [0.0, 0.55]", "C = [0.0, 5.5]"), ("length  = 0.175", "length  = 1.75"),
+                     ("omega   = -17.0", "omega   = -1.7"), ("lengths  = [0.55, 0.325]", "lengths  = [5.5, 3.25]"),
+                     ("at = 0.08", "at = 0.8"), ("at = 0.24", "at = 2.4"), ("at = 0.14", "at = 1.4"),
+                     ("mass    = 17.0\ncentre  = \"S3\"\ninertia = 0.51",
+                      f"mass    = {rocker_mass!r}\ncentre  = \"S3\"\ninertia = 555.0"),
+                     ("mass    = 17.0\ncentre  = \"S4\"\ninertia = 0.18",
+                      f"mass    = {lever_mass!r}\ncentre  = \"S4\"\ninertia = 115.0"),
+                     ("value     = 1500.0", "value     = 150000.0")]:
+        assert old in text, old
+        text = text.replace(old, new, 1)
+    return text
+
+
+def test_a_long_links_mass_in_grams_is_warned_of(tmp_path, capsys):
+    """220 kg over 5.5 m and 130 kg over 3.25 m typed in grams: the cube bound, ρ·l³ (1.31e6 and 2.69e5 kg), let
+    both by; no link is thicker than a metre square, 7850 kg a metre."""
+    told, results, _ = _run(tmp_path, _long_crank_rocker(220000.0, 130000.0), capsys)
+    details = " ".join(_in_grams(results))
+    for key, mass, length in (("links.3", 220000.0, 5.5), ("links.4", 130000.0, 3.25)):
+        bar = f"({STEEL * length:.3g} kg): grams typed for kg? {mass:g} g is {key}.mass = {mass / 1000:g}"
+        words = (f"{key}.mass = {mass:g} kg on a link {length:.3g} m long", bar)
+        assert all(part in details and part in told for part in words)
+    _, results, _ = _run(tmp_path, _long_crank_rocker(220.0, 130.0), capsys)
+    assert not _in_grams(results)
+
+
+# --- no real scene told --------------------------------------------------------------------------------------------
+
+ROOT = Path(__file__).resolve().parent.parent
+SCENES = sorted((ROOT / "fixtures").glob("*.toml")) + sorted((ROOT / "tests" / "scenes").glob("*.toml"))
+STARTERS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad", "flywheel", "rotor")
+
+
+@pytest.mark.parametrize("scene", [*SCENES, *STARTERS], ids=lambda scene: getattr(scene, "name", scene))
+def test_no_fixture_test_scene_or_starter_is_told_of_these_slips(tmp_path, scene):
+    """Among them the engine's and the compressor's counterweighted cranks, 1.1 and 1.4 times the bar of their
+    length, and the rotor starter's masses 0.16 m apart at radii to 0.06 m."""
+    from graphplan.analysis import analyse
+    from graphplan.deliverables import outcome_warnings
+    from graphplan.scene import load
+
+    loaded = load(_scene(tmp_path, starter(scene, "en")) if isinstance(scene, str) else scene)
+    pieces = ("note", *(piece for piece in ("dynamics", "vibration", "balancing") if getattr(loaded, piece)))
+    told = list(outcome_warnings(loaded, pieces, None))
+    if loaded.driver is not None:
+        warnings = analyse(loaded).warnings
+        assert not [warning for warning in warnings if warning.code == "masses-in-grams"]
+        told += [warning.detail for warning in warnings]
+    assert not [line for line in told if "too compact for a flywheel" in line or "lie apart along the axis" in line]
