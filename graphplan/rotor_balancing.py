@@ -51,6 +51,7 @@ from .rotor_lengths import (
     LARGEST_RADIUS_M,
     LONGEST_ROTOR_M,
     MIXED_RATIO,
+    THINNEST_DISC,
     Implausible,
     LengthsInMillimetres,
 )
@@ -743,7 +744,8 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     :data:`~graphplan.rotor_lengths.LARGEST_RADIUS_M`, a mass :data:`~graphplan.rotor_lengths.MIXED_RATIO` times
     farther out than the nearest correction, planes farther apart than
     :data:`~graphplan.rotor_lengths.LONGEST_ROTOR_M`; with two planes, a mass turning
-    :data:`~graphplan.rotor_lengths.FLATTEST_ROTOR` times farther out than the rotor is long."""
+    :data:`~graphplan.rotor_lengths.FLATTEST_ROTOR` times farther out than the rotor is long; with one, whose masses
+    lie in planes apart, :data:`~graphplan.rotor_lengths.THINNEST_DISC` times farther out than they lie apart."""
     found = []
     for k, mass in enumerate(spec.masses):
         if mass.radius > LARGEST_RADIUS_M:
@@ -773,6 +775,11 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
         k, mass = max(enumerate(spec.masses), key=lambda item: item[1].radius)
         if mass.radius > FLATTEST_ROTOR * (high - low):
             found.append(Implausible("flat_rotor", f"balancing.masses[{k}].radius", mass.radius, FLATTEST_ROTOR,
+                                     name=mass.name, other_key=f"{low_key} to {high_key}", other=high - low))
+    elif len(spec.planes) == 1 and not found and high > low:
+        k, mass = max(enumerate(spec.masses), key=lambda item: item[1].radius)
+        if mass.radius > THINNEST_DISC * (high - low):
+            found.append(Implausible("thin_disc", f"balancing.masses[{k}].radius", mass.radius, THINNEST_DISC,
                                      name=mass.name, other_key=f"{low_key} to {high_key}", other=high - low))
     return LengthsInMillimetres(tuple(found)) if found else None
 

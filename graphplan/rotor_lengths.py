@@ -37,13 +37,19 @@ THINNEST_ROTOR_SHEET_M = 0.001
 # impeller 5 or so): a mass FLATTEST_ROTOR times farther out than the masses and planes lie apart along the axis is
 # one whose radius was typed in millimetres among planes in metres.
 FLATTEST_ROTOR = 20.0
+# A rotor balanced in one plane is a disc (a wheel, a pulley, a fan's impeller, a grinding wheel): where its masses
+# lie in planes apart along its axis, they lie within its thickness, and no disc is thinner than THINNEST_DISC of its
+# radius (a circular saw's blade or a cut-off wheel, the thinnest, some 1/60–1/120).  A mass that far out has its
+# radius in millimetres among planes in metres: the two-plane rotor's 20 would tell a grinding wheel or a flywheel
+# its radius is millimetres.  A disc with every mass in one plane gives no length along its axis to judge by.
+THINNEST_DISC = 200.0
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
 
 
 # The findings of some lengths in millimetres among others in metres: dividing every length would spoil the rest.
-SOME_IN_MILLIMETRES = frozenset({"mixed", "flat_rotor"})
+SOME_IN_MILLIMETRES = frozenset({"mixed", "flat_rotor", "thin_disc"})
 
 
 def lightest_rotor(eccentricity: float) -> float:
@@ -56,12 +62,13 @@ def lightest_rotor(eccentricity: float) -> float:
 class Implausible:
     """One length of the scene that no machine has, as metres.
 
-    ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``flat_rotor``, ``rotor_length``,
+    ``kind`` names the check (``radius``, ``correction_radius``, ``mixed``, ``flat_rotor``, ``thin_disc``,
+    ``rotor_length``,
     ``eccentricity``, ``light_machine``, ``diameter``, ``second_moment``, ``span``, ``base``); ``key`` its key path
     and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it
     belongs to; ``other_key`` and ``other`` the second key it is judged against (``mixed``: the correction radius;
-    ``rotor_length``: the farthest plane; ``flat_rotor``: the masses' and planes' span along the axis, ``limit`` the
-    ratio; ``light_machine``: the machine's mass, ``limit`` the lightest rotor's), or for ``base`` ω (rad/s).
+    ``rotor_length``: the farthest plane; ``flat_rotor``, ``thin_disc``: the masses' and planes' span along the axis,
+    ``limit`` the ratio; ``light_machine``: the machine's mass, ``limit`` the lightest rotor's), or for ``base`` ω (rad/s).
     """
 
     kind: str
@@ -96,6 +103,11 @@ class Implausible:
                     f"{self.other:g} m from {self.other_key} (a rotor balanced in two planes is long: its masses "
                     f"turn no farther than {self.limit:g} times its length from the axis; as millimetres, "
                     f"{self.key} = {self.value / 1000:g})")
+        if self.kind == "thin_disc":
+            return (f"{given} m is {self.value / self.other:.3g} times the {self.other:g} m its masses and correction "
+                    f"plane lie apart along the axis, from {self.other_key} (a rotor balanced in one plane is a disc, "
+                    f"its masses within its thickness, and no disc's radius is over {self.limit:g} times its "
+                    f"thickness; as millimetres, {self.key} = {self.value / 1000:g})")
         if self.kind == "second_moment":
             return (f"{given} m⁴ is more than any shaft's (over {self.limit:.3g} m⁴, a {THICKEST_SHAFT_M:g} m round "
                     "shaft's)")
@@ -129,5 +141,5 @@ class LengthsInMillimetres:
 
 
 __all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4", "LONGEST_ROTOR_M",
-           "MIXED_RATIO", "SOME_IN_MILLIMETRES", "STEEL_DENSITY", "THICKEST_SHAFT_M", "THINNEST_ROTOR_SHEET_M",
+           "MIXED_RATIO", "SOME_IN_MILLIMETRES", "STEEL_DENSITY", "THICKEST_SHAFT_M", "THINNEST_DISC", "THINNEST_ROTOR_SHEET_M",
            "Implausible", "LengthsInMillimetres", "lightest_rotor"]

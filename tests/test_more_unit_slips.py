@@ -213,6 +213,66 @@ def test_a_long_links_mass_in_grams_is_warned_of(tmp_path, capsys):
     assert not _in_grams(results)
 
 
+# --- a disc's radius in millimetres --------------------------------------------------------------------------------
+
+def _disc(radii: tuple[float, float, float], correction: float | None, planes: str = "0.0, 0.08, 0.16",
+          plane: float = 0.04) -> str:
+    """The rotor starter balanced in one plane, at z = ``plane``, its masses at the radii given and in the planes
+    given."""
+    text = starter("rotor", "en")
+    zs = [z.strip() for z in planes.split(",")]
+    for old, radius, z in zip(("radius = 0.05, angle = 0.0, plane = 0.0", "radius = 0.06, angle = -60.0, plane = 0.08",
+                               "radius = 0.04, angle = 135.0, plane = 0.16"), radii, zs, strict=True):
+        assert old in text
+        angle = old.split("angle = ")[1].split(",")[0]
+        text = text.replace(old, f"radius = {radius!r}, angle = {angle}, plane = {z}", 1)
+    text = text.replace("planes = [0.04, 0.22]", f"planes = [{plane!r}]", 1)
+    line = "correction_radius = 0.05"
+    return text.replace(line, "" if correction is None else f"correction_radius = {correction!r}", 1)
+
+
+def _run_rotor(tmp_path: Path, text: str, capsys) -> tuple[str, list[dict], str]:
+    import json
+
+    out = tmp_path / "out"
+    assert main(["run", str(_scene(tmp_path, text)), "--out", str(out), "--only", "note,balancing"]) == 0
+    told = capsys.readouterr().out
+    results = json.loads((out / "results.json").read_text(encoding="utf-8"))
+    in_mm = [warning for warning in results["balancing"]["warnings"] if warning["code"] == "lengths-in-mm"]
+    return told, in_mm, (out / "note.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("correction", [None, 50.0])
+def test_a_discs_radii_in_millimetres_among_planes_in_metres_are_warned_of(tmp_path, capsys, correction):
+    """Radii 50, 60, 40 (mm) over masses 0.16 m apart along the axis, corrected in one plane: below the 150 m of any
+    rotor, and with no correction radius in metres to set them against; a disc 0.16 m thick is no 60 m across."""
+    told, in_mm, note = _run_rotor(tmp_path, _disc((50.0, 60.0, 40.0), correction), capsys)
+    words = (f"balancing.masses[1].radius = 60 m is {60.0 / 0.16:.3g} times the 0.16 m its masses and correction "
+             "plane lie apart along the axis, from balancing.masses[0].plane to balancing.masses[2].plane")
+    assert f"warning: balancing: {words}" in told and "as millimetres, balancing.masses[1].radius = 0.06" in told
+    assert any(words in warning["detail"] for warning in in_mm)
+    assert f"mass 2's radius, 60 m, is {60.0 / 0.16:.3g} times the 0.16 m" in note
+
+
+@pytest.mark.parametrize(("radii", "planes", "plane", "what"), [
+    ((0.05, 0.06, 0.04), "0.0, 0.08, 0.16", 0.04, "the starter's rotor in metres, statically balanced"),
+    # A circular saw's blade, 0.3 m in radius and 3 mm thick, its masses on both faces: 100 times.
+    ((0.3, 0.25, 0.3), "0.0, 0.003, 0.0", 0.0015, "a saw blade"),
+    ((0.4, 0.5, 0.45), "0.0, 0.02, 0.01", 0.01, "a flywheel's rim 1 m across, 20 mm wide"),
+])
+def test_a_real_disc_is_not_told_its_radii_are_millimetres(tmp_path, capsys, radii, planes, plane, what):
+    _, in_mm, _ = _run_rotor(tmp_path, _disc(radii, None, planes, plane), capsys)
+    assert not in_mm, what
+
+
+def test_the_disc_warning_is_in_every_language_of_the_note():
+    from graphplan.locale import strings
+
+    for locale in ("en", "ru", "zh"):
+        text = strings(locale)["note_len_thin_disc"]
+        assert all(field in text for field in ("{name}", "{value}", "{ratio}", "{other}", "{limit}")), locale
+
+
 # --- no real scene told --------------------------------------------------------------------------------------------
 
 ROOT = Path(__file__).resolve().parent.parent
