@@ -15,7 +15,7 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
-from .plot_style import PAGE_WIDTH_INCHES, settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, settings, svg_text, with_decimal_mark
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -80,29 +80,9 @@ def _balancing_figure(analysis: Analysis):
     plot.set_ylabel(f"{name}{text['comma']}{unit}")  # a Chinese name takes a full-width comma
     plot.set_title(analysis.scene.title, fontsize=10, parse_math=False)  # the user's text, not mathtext
     plot.grid(True, linewidth=0.3)
-    _legend_under(figure, plot)
+    legend_under(figure, plot)
     with_decimal_mark(figure, text["decimal_mark"])
     return figure
-
-
-# The gap between the abscissa's name and the legend under it (pt).
-LEGEND_GAP = 4.0
-
-
-def _legend_under(figure, plot) -> None:
-    """The legend under the plot, below the abscissa's numbers and name, the figure laid out round it.
-
-    Where the vibration and accuracy plots put theirs, not "best": that looks for a corner free of the curves, the
-    positions' numbers and the polygons' squares scene by scene, and a plot with no such corner has its legend on
-    one.  Its drop is measured in points from the laid-out axis, not as a share of the plot's height (the others'
-    0.13), which under this shorter plot would put it on the axis's name."""
-    from matplotlib.transforms import ScaledTranslation
-
-    figure.tight_layout()
-    drop = (plot.get_window_extent().y0 - plot.xaxis.get_tightbbox().y0) / figure.dpi + LEGEND_GAP / 72.0
-    plot.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=2, frameon=False,
-                bbox_transform=plot.transAxes + ScaledTranslation(0.0, -drop, figure.dpi_scale_trans))
-    figure.tight_layout()
 
 
 # The room above the highest marked point for its number, as a share of the value axis (7 pt digits up to 7.5 pt over

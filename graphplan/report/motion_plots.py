@@ -21,7 +21,7 @@ from ..machine_motion import MachineMotion
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
 from .forces import number
-from .plot_style import PAGE_WIDTH_INCHES, settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, settings, svg_text, with_decimal_mark
 
 # Points of the dense solution drawn over the run, besides the solver's own steps: enough for a
 # smooth fluctuation at a few hundred turns.
@@ -97,7 +97,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
         # "$5 to $10" was set in italics, and "$\frac$" stopped the run).
         figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
                         fontsize=11, parse_math=False)
-        figure.tight_layout()
+        if motion.steady is not None and below:
+            # Under the plot, as the run's: "best" put it on the flywheel's estimate where no corner was clear of the
+            # two curves.  Laid out last, with the suptitle, so that the figure grows by just its room.
+            legend_under(figure, turn, fontsize=7, keep_heights=True)
+        else:
+            figure.tight_layout()
     return figure
 
 
@@ -243,7 +248,6 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     plot.set_ylabel(text["motion_speed_axis"])
     plot.set_title(text["motion_turn"].format(time=number(cycle.start, 4, mark)), fontsize=10)
     plot.grid(True, linewidth=0.3)
-    plot.legend(fontsize=7, loc="best")
 
 
 def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tuple[np.ndarray, np.ndarray],

@@ -150,6 +150,42 @@ def number_log_axes(figure) -> None:
                 number_log_axis(axis, length)
 
 
+# The gap between an abscissa's name and the legend under it (pt).
+LEGEND_GAP = 4.0
+
+
+def legend_under(figure, plot, *, fontsize: float = 8.0, ncol: int = 2, keep_heights: bool = False):
+    """The legend of ``plot`` under it, below the abscissa's numbers and name, ``figure`` laid out round it; returned.
+
+    Not "best": that looks for a corner free of the curves scene by scene, and a plot with no such corner has its
+    legend on one.  Its drop is measured in points from the laid-out axis, not as a share of the plot's height, which
+    under a short plot would put it on the axis's name.  ``keep_heights`` grows the figure by the room the legend
+    takes, so that its plots keep the heights they had without it (the figure is laid out as it stands: its
+    suptitle, if any, already set)."""
+    from matplotlib.transforms import ScaledTranslation
+
+    figure.tight_layout()
+    before = _plot_heights(figure)
+    drop = (plot.get_window_extent().y0 - plot.xaxis.get_tightbbox().y0) / figure.dpi + LEGEND_GAP / 72.0
+    legend = plot.legend(fontsize=fontsize, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=ncol, frameon=False,
+                         bbox_transform=plot.transAxes + ScaledTranslation(0.0, -drop, figure.dpi_scale_trans))
+    figure.tight_layout()
+    # tight_layout's margins and the gaps between plots do not grow with the figure in step: a few rounds make up
+    # what is short to within a hundredth of a point.
+    for _ in range(4 if keep_heights else 0):
+        short = sum(was - now for was, now in zip(before, _plot_heights(figure), strict=True))
+        if short < 0.01 / 72.0:
+            break
+        figure.set_figheight(figure.get_figheight() + short)
+        figure.tight_layout()
+    return legend
+
+
+def _plot_heights(figure) -> list[float]:
+    """The heights of ``figure``'s plots (inches)."""
+    return [axes.get_position().height * figure.get_figheight() for axes in figure.axes]
+
+
 def svg_text(figure) -> str:
     """``figure`` as SVG without a date (the same scene gives the same file).
 
