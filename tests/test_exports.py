@@ -170,8 +170,8 @@ def test_svg_alone_imports_neither_cairosvg_nor_ezdxf():
     ("rotor", "balancing,vibration", "rotor_balancing", ("vibration_magnification", "vibration_transmissibility"))])
 def test_the_plots_come_as_png_and_pdf_of_their_own_size_beside_the_drawings(tmp_path, kind, pieces, drawing, plots):
     """A report takes the plots (matplotlib's SVG, sized in pt) in the formats asked for, as it takes the drawings:
-    each PNG is the SVG's size at 150 dpi with the plot's lines inked across it, each PDF one page of that size;
-    DXF, a drafting format, stays with the drawings."""
+    each PNG is the SVG's size at a print's 300 dpi (plot_style.PLOT_DPI) with the plot's lines inked across it, each
+    PDF one page of that size; DXF, a drafting format, stays with the drawings."""
     from graphplan.cli import main
     from graphplan.starters import starter
 
@@ -184,7 +184,7 @@ def test_the_plots_come_as_png_and_pdf_of_their_own_size_beside_the_drawings(tmp
         svg = (out / f"{name}.svg").read_text(encoding="utf-8")
         width, height = (float(v) for v in re.search(r'<svg[^>]* width="([\d.]+)pt" height="([\d.]+)pt"', svg).groups())
         pixels = np.asarray(Image.open(out / f"{name}.png").convert("L"))
-        assert pixels.shape == (round(height / 72 * 150), round(width / 72 * 150))
+        assert pixels.shape == (round(height / 72 * 300), round(width / 72 * 300))
         inked = pixels < 128
         # Ink in every tenth of the width and of the height: axes, curves and lettering, not a blank page.
         assert all(band.any() for band in np.array_split(inked, 10, axis=1))
