@@ -57,19 +57,21 @@ def has_heading(layers: Sequence[Layer]) -> bool:
 
 @dataclass(frozen=True)
 class RunOn:
-    """How the last ``lines`` lines of a drawing's caption (a force polygon's vectors too short to draw: the words,
-    then the values) may take fewer (:func:`caption_lines`): ``alone``, the words and the values on one line, going
-    on after ``joint`` at the end of the line before them where the caption's field has the room, else on a line of
-    its own where it fits so.
+    """How ``lines`` lines of a drawing's caption, the last but ``after`` (a force polygon's vectors too short to
+    draw, or the lever's arms: the words, then the values), may take fewer (:func:`caption_lines`): ``alone``, the
+    words and the values on one line, going on after ``joint`` at the end of the line before them where the
+    caption's field has the room, else on a line of its own where it fits so.
 
     Apart, they took two lines of lettering under the engine's polygon of
     position 2, and its Chinese sheet then had no room beside the polygon for
-    the driving link's group, which went on to a sheet of its own.
+    the driving link's group, which went on to a sheet of its own.  The lever's
+    short arms stand before its balancing loads, which ``after`` counts.
     """
 
     lines: int
     alone: str
     joint: str
+    after: int = 0
 
 
 @dataclass(frozen=True)
@@ -455,22 +457,33 @@ def _caption_layer(name: str, middle: float, under: float, caption: Sequence[tup
 def caption_lines(caption: Sequence[str], width: float, size: float, run_on: RunOn | None = None,
                   room: float | None = None) -> list[tuple[str, str]]:
     """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm; a line
-    that only says again what an equation above it found is left out.  The last lines ``run_on`` stands for go on
+    that only says again what an equation above it found is left out.  The lines ``run_on`` stands for go on
     at the end of the line before them where ``room`` mm (``width`` by default) holds the two, else stand as its
-    one line where that fits, else as they are."""
-    tail = caption[len(caption) - run_on.lines:] if run_on is not None else ()
-    head = caption[:len(caption) - len(tail)]
-    lines = [(piece, "bold" if k == 0 else "normal") for k, line in enumerate(_unrepeated(head))
-             for piece in fitted(line, width, size, "bold" if k == 0 else "normal")]
+    one line broken to ``room`` where that takes fewer lines than they do, else as they are."""
+    end = len(caption) - (run_on.after if run_on is not None else 0)
+    start = end - (run_on.lines if run_on is not None else 0)
+    tail = caption[start:end]
+    # Whether a line repeats a value depends only on the lines above it: the head's kept lines begin the whole's.
+    kept_head = _unrepeated(caption[:start])
+    kept_rest = _unrepeated([*caption[:start], *caption[end:]])[len(kept_head):]
+
+    def broken(texts: Sequence[str], first: int) -> list[tuple[str, str]]:
+        return [(piece, "bold" if first + k == 0 else "normal") for k, line in enumerate(texts)
+                for piece in fitted(line, width, size, "bold" if first + k == 0 else "normal")]
+
+    lines = broken(kept_head, 0)
+    rest = broken(kept_rest, len(kept_head) + len(tail))
     if run_on is None or not tail or not lines:
-        return lines + [(piece, "normal") for line in tail for piece in fitted(line, width, size)]
+        return lines + [(piece, "normal") for line in tail for piece in fitted(line, width, size)] + rest
     reach = max(width, room or 0.0)
     before, weight = lines[-1]
     if text_width(before + run_on.joint + run_on.alone, size, weight) <= reach:
-        return [*lines[:-1], (before + run_on.joint + run_on.alone, weight)]
-    if text_width(run_on.alone, size) <= reach:
-        return [*lines, (run_on.alone, "normal")]
-    return lines + [(piece, "normal") for line in tail for piece in fitted(line, width, size)]
+        return [*lines[:-1], (before + run_on.joint + run_on.alone, weight), *rest]
+    apart = [piece for line in tail for piece in fitted(line, width, size)]
+    # Broken at its semicolons where it takes fewer lines so: the lever's four short arms took a line of words and
+    # three of values, the two values a line at the sheet's lettering.
+    alone = fitted(run_on.alone, reach, size)
+    return [*lines, *((piece, "normal") for piece in (alone if len(alone) < len(apart) else apart)), *rest]
 
 
 # What an equation's line finds, at its end: "ΣMO(2): Mb − G2·h1 − R32·h2 = 0,  Mb = 96.55 N·m".

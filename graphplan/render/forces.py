@@ -928,17 +928,18 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
     return Drawing(f"polygon-{key}", layers, caption, run_on=_short_run_on(short, apart, text))
 
 
-def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str, str]) -> RunOn | None:
+def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str, str], after: int = 0) -> RunOn | None:
     """The polygon's vectors too short to draw (``values``, each named with its value; ``apart``, the caption's
-    lines of them) going on after its μF where the field has the room: they are too short at that μF.  The words
-    and the values on one line take the locale's semicolon between values, as a line with Chinese words in it does
-    (；), where the values alone on theirs take a Latin one."""
+    lines of them, ``after`` lines under them) going on after its μF where the field has the room: they are too short
+    at that μF; the lever's arms so after its equation.  The words and the values on one line take the locale's
+    semicolon between values, as a line with Chinese words in it does (；), where the values alone on theirs take a
+    Latin one."""
     if not values:
         return None
     words = apart[0]
     # A full-width colon ends the Chinese words with its own space.
     space = "" if unicodedata.east_asian_width(words[-1]) in ("F", "W") else " "
-    return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"])
+    return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"], after)
 
 
 # A force this small (N) is what the arithmetic leaves of a nought (the note writes it 0, report/forces.py's
@@ -1268,7 +1269,11 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             break
         unnamed.append(lying[0])
         loads = [anchor for anchor in loads if anchor is not lying[0]]
-    given = sorted([anchor.text for anchor in crowded] + undrawn, key=list(arm_lengths).index)
+    given = sorted([anchor.text for anchor in crowded], key=list(arm_lengths).index)
+    # An arm too short to draw is said to be so, in the words the plans and the polygons use for their vectors: given
+    # among the arms drawn but left unlettered, h5 = 0.2205 mm read as an arm the reader should find on the lever.
+    short = [f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in undrawn]
+    apart = too_short_lines(short, text, CAPTION_WIDTH_MM)
     unnamed_at = _wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
                            for anchor in unnamed])
     parts.append(f"{_sign(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
@@ -1280,15 +1285,17 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
                *_wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
-               *([text["lever_unnamed"].format(loads=unnamed_at[0]), *unnamed_at[1:]] if unnamed_at else []),
-               # The symbol alone: "balancing moment" said twice broke each line in two under a narrow lever (the
-               # lever's title and its ΣMp say what Mb is).
-               _balancing_line(sheet, balancing, "balancing_by_lever", named=False),
-               _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
-               text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
+               *apart]
+    under = [*([text["lever_unnamed"].format(loads=unnamed_at[0]), *unnamed_at[1:]] if unnamed_at else []),
+             # The symbol alone: "balancing moment" said twice broke each line in two under a narrow lever (the
+             # lever's title and its ΣMp say what Mb is).
+             _balancing_line(sheet, balancing, "balancing_by_lever", named=False),
+             _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
+             text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
     return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
                              Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
-                             Layer("lever-labels", labels.texts)], tuple(caption))
+                             Layer("lever-labels", labels.texts)], (*caption, *under),
+                   run_on=_short_run_on(short, apart, text, after=len(under)))
 
 
 def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],

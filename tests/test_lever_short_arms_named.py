@@ -1,0 +1,149 @@
+"""Zhukovsky's lever says why it lists an arm under its drawing: the arm is too short to draw.
+
+The lever is the velocity plan turned by 90°, and its sheet leaves out an arm shorter than 0.25 mm, as the plans
+leave out a vector, listing it under the drawing as "h5 = 0.2205 mm".  The plans, the force polygons and the note
+say "not drawn, shorter than 0.25 mm" of theirs; the lever said nothing, and a reader of the sheet did not know why an
+arm stood there.  A slider-crank a tenth of a degree from its dead centre has its piston's image b 0.22 mm from the
+pole: the arms of F4 and Fu4 at b are that short.
+
+Each arm is worked out here from the velocity plan: its point's image turned clockwise, the perpendicular from the
+pole to the force's line through it, at the μV the lever's caption on the sheet says it is drawn at.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+import pytest
+
+import graphplan
+from graphplan.analysis import analyse
+from graphplan.locale import strings
+from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
+from graphplan.run import run
+from graphplan.starters import starter
+
+# The drawings leave out a segment shorter than this (mm); one this short is a point on the pole: nought.
+SHORTEST_DRAWN_MM = 0.25
+NOUGHT_MM = 1e-9
+LOCALES = ("en", "ru", "zh")
+
+
+def near_dead_centre(locale: str) -> dict:
+    """The slider-crank starter with plans and force sheets at φ = 0.1° (the slider a hair from its dead centre)
+    and 90.1°."""
+    tables = tomllib.loads(starter("slider-crank", locale))
+    tables["positions"].update(count=4, start=0.1, number_from=0, plans=[0, 1])
+    return tables
+
+
+@pytest.fixture(scope="module", params=LOCALES)
+def drawn(request, tmp_path_factory):
+    locale = request.param
+    scene = graphplan.load(near_dead_centre(locale))
+    folder = tmp_path_factory.mktemp(locale) / "out"
+    run(scene, folder, only=["sheets"])
+    return locale, folder, analyse(scene)
+
+
+def texts(source: str) -> list[tuple[float, float, float, str, str]]:
+    """(x, y, font size, anchor, text) of each text of an SVG, its runs in a script's font joined."""
+    found = []
+    for attributes, body in re.findall(r"<text([^>]*)>(.*?)</text>", source):
+        values = dict(re.findall(r'([\w-]+)="([^"]*)"', attributes))
+        text = re.sub(r"<[^>]+>", "", body).replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">")
+        found.append((float(values["x"]), float(values["y"]), float(values["font-size"]),
+                      values.get("text-anchor", "start"), text))
+    return found
+
+
+def box(x: float, y: float, font_size: float, anchor: str, text: str) -> tuple[float, float, float, float]:
+    """The box a text takes on the sheet (mm), as wide as the drawings measure a text, a cap height tall."""
+    cap = font_size / FONT_SIZE_PER_CAP
+    width = text_width(text, cap)
+    left = {"start": x, "middle": x - width / 2, "end": x - width}[anchor]
+    return left, y - cap, left + width, y
+
+
+def lever_sheet(folder: Path, number: int) -> tuple[Path, str]:
+    """The sheet that holds the lever of position ``number`` and its caption group's source."""
+    for path in sorted(folder.glob("sheet_*.svg")):
+        source = path.read_text(encoding="utf-8")
+        if match := re.search(rf'<g id="forces-{number}-lever-caption">(.*?)</g>', source, re.DOTALL):
+            return path, match.group(1)
+    raise AssertionError(f"no lever of position {number} on the sheets")
+
+
+def number(value: str, locale: str) -> float:
+    return float(value.replace(strings(locale)["decimal_mark"], "."))
+
+
+def arms_mm(analysis, number_: int, caption: list[str], locale: str) -> dict[str, float]:
+    """Each arm the lever's equation names (h1, h2, …), by its force, worked out from the velocity plan."""
+    position = next(position for position in analysis.plans if position.number == number_)
+    velocity, lever = position.velocity, position.lever
+    joined = " ".join(caption)
+    drawn_at = number(re.search(r"μV = ([\d.,]+)", joined).group(1), locale)
+    equation = re.search(r"ΣMp:(.*?)= 0(?![\d.,])", joined).group(1)
+    named = {name: arm for name, arm in re.findall(r"([^\s−+]+)·(h\d+)\b", equation)}
+    arms = {}
+    for term in lever.terms:
+        if term.name not in named:
+            continue
+        place = -1j * (velocity.points[term.image] + term.shift)  # turned clockwise about the pole
+        direction = term.force / abs(term.force)
+        arms[named[term.name]] = abs((place * direction.conjugate()).imag) / drawn_at
+    return arms
+
+
+def test_a_short_arm_on_the_sheet_says_it_is_not_drawn_with_its_value(drawn):
+    locale, folder, analysis = drawn
+    text = strings(locale)
+    words = text["plan_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
+    _, group = lever_sheet(folder, 0)
+    caption = [item[4] for item in texts(group)]
+    arms = arms_mm(analysis, 0, caption, locale)
+    short = {arm for arm, millimetres in arms.items() if NOUGHT_MM < millimetres < SHORTEST_DRAWN_MM}
+    # The scene's case: F4 and Fu4 at b, 0.22 mm from the pole, among others; and arms the lever draws.
+    assert len(short) >= 2 and len(arms) > len(short), arms
+    said = next((k for k, line in enumerate(caption) if words in line), None)
+    assert said is not None, caption
+    balancing = next(k for k, line in enumerate(caption) if line.startswith("Mb ="))
+    assert said < balancing, caption
+    # The arms given after the words, before the balancing loads: each short one, at its length.
+    listed = dict(re.findall(r"(?<!\w)(h\d+) = ([\d.,]+) " + re.escape(text["millimetre"]),
+                             " ".join(caption[said:balancing]).replace(words, "")))
+    assert set(listed) == short, (listed, short)
+    for arm in short:
+        assert number(listed[arm], locale) == pytest.approx(arms[arm], rel=1e-3), (arm, listed[arm])
+    # An arm the lever draws is listed nowhere under it, at the dead centre or at 90.1°.
+    for number_ in (0, 1):
+        caption = [item[4] for item in texts(lever_sheet(folder, number_)[1])]
+        arms = arms_mm(analysis, number_, caption, locale)
+        given = set(re.findall(r"(?<!\w)(h\d+) = ", " ".join(caption)))
+        assert arms and not {arm for arm, millimetres in arms.items() if millimetres >= SHORTEST_DRAWN_MM} & given, (
+            arms, given)
+
+
+def test_the_lever_s_words_for_its_short_arms_stand_within_the_frame_over_no_other_text(drawn):
+    locale, folder, _ = drawn
+    text = strings(locale)
+    words = text["plan_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
+    path, group = lever_sheet(folder, 0)
+    source = path.read_text(encoding="utf-8")
+    frame = re.search(r'<g id="sheet-frame"><path[^>]*/><path d="M([\d.]+),([\d.]+) L([\d.]+),[\d.]+ '
+                      r'L[\d.]+,([\d.]+)', source)
+    assert frame is not None, path.name
+    left, bottom, right, top = (float(value) for value in frame.groups())
+    found = texts(source)
+    assert any(words in item[4] for item in texts(group)), [item[4] for item in texts(group)]
+    for item in texts(group):
+        x0, y0, x1, y1 = box(*item)
+        assert left <= x0 and x1 <= right and top <= y0 and y1 <= bottom, (path.name, item[4])
+        for other in found:
+            if other == item:
+                continue
+            u0, v0, u1, v1 = box(*other)
+            assert u1 <= x0 or x1 <= u0 or v1 <= y0 or y1 <= v0, (path.name, item[4], other[4])
