@@ -147,3 +147,30 @@ def test_the_lever_s_words_for_its_short_arms_stand_within_the_frame_over_no_oth
                 continue
             u0, v0, u1, v1 = box(*other)
             assert u1 <= x0 or x1 <= u0 or v1 <= y0 or y1 <= v0, (path.name, item[4], other[4])
+
+
+def test_the_short_arms_run_on_before_the_lines_under_them_in_no_more_lines_than_apart():
+    """The lever's short arms stand between its equation and its balancing loads: they go on as a polygon's short
+    vectors do, the balancing loads kept under them in order; where neither the equation's line nor one line holds
+    them, the values fill the lines under the words rather than three a line with the third broken off."""
+    from graphplan.render.force_rows import RunOn, caption_lines
+    from graphplan.render.plans import too_short_lines
+
+    text = strings("en")
+    values = ["h2 = 0.1060 mm", "h3 = 0.0001013 mm", "h5 = 0.2205 mm", "h6 = 0.2205 mm"]
+    apart = too_short_lines(values, text, 160.0)
+    words = apart[0]
+    under = ["Mb = 0.1060 N·m (Zhukovsky's lever)", "Mb = 0.1060 N·m (force polygons)"]
+    caption = ["Zhukovsky's lever", "ΣMp: −Fu4·h5 + F4·h6 + Fb·hb = 0", *apart, *under]
+    run_on = RunOn(len(apart), f"{words} {'; '.join(values)}", "; ", len(under), tuple(values))
+    width = max(text_width(line, 5.0) for line in ("h2 = 0.1060 mm; h3 = 0.0001013 mm;", *under)) + 1.0
+    lines = [line for line, _ in caption_lines(caption, width, 5.0, run_on)]
+    plain = [line for line, _ in caption_lines(caption, width, 5.0)]
+    assert lines[-2:] == under and plain[-2:] == under
+    assert words in lines and len(lines) < len(plain), (lines, plain)
+    assert " ".join(lines[lines.index(words) + 1:-2]) == "; ".join(values)
+    for line in lines:
+        assert text_width(line, 5.0) <= width, line
+    # Where the equation's line has the room, they go on at its end and take no line of their own.
+    wide = [line for line, _ in caption_lines(caption, 1000.0, 5.0, run_on)]
+    assert wide == ["Zhukovsky's lever", f"ΣMp: −Fu4·h5 + F4·h6 + Fb·hb = 0; {words} {'; '.join(values)}", *under]

@@ -60,7 +60,8 @@ class RunOn:
     """How ``lines`` lines of a drawing's caption, the last but ``after`` (a force polygon's vectors too short to
     draw, or the lever's arms: the words, then the values), may take fewer (:func:`caption_lines`): ``alone``, the
     words and the values on one line, going on after ``joint`` at the end of the line before them where the
-    caption's field has the room, else on a line of its own where it fits so.
+    caption's field has the room, else on a line of its own where it fits so, else the words on their line and
+    ``values`` filling the lines after where that takes fewer lines than ``lines``' own.
 
     Apart, they took two lines of lettering under the engine's polygon of
     position 2, and its Chinese sheet then had no room beside the polygon for
@@ -72,6 +73,8 @@ class RunOn:
     alone: str
     joint: str
     after: int = 0
+    # The values the lines name, each whole: broken to the room where they do not go on.
+    values: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -459,7 +462,8 @@ def caption_lines(caption: Sequence[str], width: float, size: float, run_on: Run
     """A drawing's caption as (line, weight) pairs, its title bold, each line broken to ``width`` mm; a line
     that only says again what an equation above it found is left out.  The lines ``run_on`` stands for go on
     at the end of the line before them where ``room`` mm (``width`` by default) holds the two, else stand as its
-    one line broken to ``room`` where that takes fewer lines than they do, else as they are."""
+    one line where that fits, else as the words and the values filling each line of ``room`` where that takes fewer
+    lines than they do, else as they are."""
     end = len(caption) - (run_on.after if run_on is not None else 0)
     start = end - (run_on.lines if run_on is not None else 0)
     tail = caption[start:end]
@@ -479,11 +483,15 @@ def caption_lines(caption: Sequence[str], width: float, size: float, run_on: Run
     before, weight = lines[-1]
     if text_width(before + run_on.joint + run_on.alone, size, weight) <= reach:
         return [*lines[:-1], (before + run_on.joint + run_on.alone, weight), *rest]
+    if text_width(run_on.alone, size) <= reach:
+        return [*lines, (run_on.alone, "normal"), *rest]
     apart = [piece for line in tail for piece in fitted(line, width, size)]
-    # Broken at its semicolons where it takes fewer lines so: the lever's four short arms took a line of words and
-    # three of values, the two values a line at the sheet's lettering.
-    alone = fitted(run_on.alone, reach, size)
-    return [*lines, *((piece, "normal") for piece in (alone if len(alone) < len(apart) else apart)), *rest]
+    # The values filling each line of the room where that takes fewer lines: the lever's four short arms took a line
+    # of words and three of values (three a line, the third broken off), two of values so.  A line of values alone
+    # keeps the Latin semicolon, as in Chinese a line with no Chinese words in it does.
+    filled = [*fitted(tail[0], width, size), *fitted("; ".join(run_on.values), reach, size)]
+    return [*lines, *((piece, "normal") for piece in (filled if run_on.values and len(filled) < len(apart) else apart)),
+            *rest]
 
 
 # What an equation's line finds, at its end: "ΣMO(2): Mb − G2·h1 − R32·h2 = 0,  Mb = 96.55 N·m".

@@ -939,7 +939,7 @@ def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str
     words = apart[0]
     # A full-width colon ends the Chinese words with its own space.
     space = "" if unicodedata.east_asian_width(words[-1]) in ("F", "W") else " "
-    return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"], after)
+    return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"], after, tuple(values))
 
 
 # A force this small (N) is what the arithmetic leaves of a nought (the note writes it 0, report/forces.py's
