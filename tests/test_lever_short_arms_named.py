@@ -101,7 +101,7 @@ def arms_mm(analysis, number_: int, caption: list[str], locale: str) -> dict[str
 def test_a_short_arm_on_the_sheet_says_it_is_not_drawn_with_its_value(drawn):
     locale, folder, analysis = drawn
     text = strings(locale)
-    words = text["plan_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
+    words = text["arms_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
     _, group = lever_sheet(folder, 0)
     caption = [item[4] for item in texts(group)]
     arms = arms_mm(analysis, 0, caption, locale)
@@ -130,7 +130,7 @@ def test_a_short_arm_on_the_sheet_says_it_is_not_drawn_with_its_value(drawn):
 def test_the_lever_s_words_for_its_short_arms_stand_within_the_frame_over_no_other_text(drawn):
     locale, folder, _ = drawn
     text = strings(locale)
-    words = text["plan_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
+    words = text["arms_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
     path, group = lever_sheet(folder, 0)
     source = path.read_text(encoding="utf-8")
     frame = re.search(r'<g id="sheet-frame"><path[^>]*/><path d="M([\d.]+),([\d.]+) L([\d.]+),[\d.]+ '
@@ -174,3 +174,24 @@ def test_the_short_arms_run_on_before_the_lines_under_them_in_no_more_lines_than
     # Where the equation's line has the room, they go on at its end and take no line of their own.
     wide = [line for line, _ in caption_lines(caption, 1000.0, 5.0, run_on)]
     assert wide == ["Zhukovsky's lever", f"ΣMp: −Fu4·h5 + F4·h6 + Fb·hb = 0; {words} {'; '.join(values)}", *under]
+
+
+def test_a_group_cut_free_says_which_of_its_arms_are_too_short_to_draw(drawn):
+    """Group II(3,4) at 0.1°: the inertia force Fu3, along −aS3 through S3, passes 0.11 mm from B on the drawing;
+    its arm is listed under the words the lever uses, at the length worked out from the motion."""
+    locale, folder, analysis = drawn
+    text = strings(locale)
+    words = text["arms_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}".replace(".", text["decimal_mark"]))
+    source = lever_sheet(folder, 0)[0].read_text(encoding="utf-8")
+    group = re.search(r'<g id="forces-0-body-II-3-4-caption">(.*?)</g>', source, re.DOTALL).group(1)
+    caption = " ".join(item[4] for item in texts(group))
+    drawn_at = number(re.search(r"μl = ([\d.,]+)", caption).group(1), locale)
+    arm = re.search(r"Fu3·(h\d+)", caption).group(1)
+    motion, index = analysis.motion, analysis.plans[0].index
+    point = {name: complex(*motion.point(name).r[index]) for name in ("S3", "B")}
+    along = complex(*motion.point("S3").a[index])
+    expected = abs(((point["S3"] - point["B"]) * (along / abs(along)).conjugate()).imag) / drawn_at
+    assert NOUGHT_MM < expected < SHORTEST_DRAWN_MM
+    said = re.search(re.escape(words) + rf" {arm} = ([\d.,]+) " + re.escape(text["millimetre"]), caption)
+    assert said is not None, caption
+    assert number(said.group(1), locale) == pytest.approx(expected, rel=1e-3)

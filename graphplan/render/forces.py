@@ -817,7 +817,9 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
         line = _equation(sheet, group, equation, parts)
         if line:
             lines.append(line)
-            lines += _wrapped(undrawn)
+            # Said to be too short, as the lever says it of its arms: a bare h2 = 0.1088 mm sent the reader looking
+            # for an arm on the drawing.
+            lines += too_short_lines(undrawn, sheet.text, CAPTION_WIDTH_MM, words="arms_too_short")
     return items, anchors, lines
 
 
@@ -1270,10 +1272,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         unnamed.append(lying[0])
         loads = [anchor for anchor in loads if anchor is not lying[0]]
     given = sorted([anchor.text for anchor in crowded], key=list(arm_lengths).index)
-    # An arm too short to draw is said to be so, in the words the plans and the polygons use for their vectors: given
-    # among the arms drawn but left unlettered, h5 = 0.2205 mm read as an arm the reader should find on the lever.
+    # An arm too short to draw is said to be so, as the plans and the polygons say it of their vectors: given among
+    # the arms drawn but left unlettered, h5 = 0.2205 mm read as an arm the reader should find on the lever.
     short = [f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in undrawn]
-    apart = too_short_lines(short, text, CAPTION_WIDTH_MM)
+    apart = too_short_lines(short, text, CAPTION_WIDTH_MM, words="arms_too_short")
     unnamed_at = _wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
                            for anchor in unnamed])
     parts.append(f"{_sign(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")

@@ -421,15 +421,16 @@ def too_short(plan: Plan, kind: str) -> list[tuple[str, float]]:
 SHORT_PER_LINE = 3
 
 
-def too_short_lines(values: Sequence[str], text: Mapping[str, str], width: float | None = None) -> list[str]:
+def too_short_lines(values: Sequence[str], text: Mapping[str, str], width: float | None = None,
+                    words: str = "plan_too_short") -> list[str]:
     """Caption lines naming the vectors too short to draw (shorter than :data:`ZERO_MM`), each written with its value
-    in ``values``: the words on a line of their own, then the values, :data:`SHORT_PER_LINE` a line, a line wider
-    than ``width`` (mm; a plan's field by default) broken after a semicolon.  The plans and the balancing polygons
-    both name theirs so."""
+    in ``values``: the words (the locale's ``words``: ``arms_too_short`` for a drawing's arms h) on a line of their
+    own, then the values, :data:`SHORT_PER_LINE` a line, a line wider than ``width`` (mm; a plan's field by default)
+    broken after a semicolon.  The plans, the balancing polygons and the force sheets all name theirs so."""
     if not values:
         return []
     reach = plan_field_mm() if width is None else width
-    return [text["plan_too_short"].format(least=f"{ZERO_MM:g}"),
+    return [text[words].format(least=f"{ZERO_MM:g}"),
             *(piece for k in range(0, len(values), SHORT_PER_LINE)
               for piece in fitted("; ".join(values[k:k + SHORT_PER_LINE]), reach, CAPTION_SIZE))]
 
