@@ -26,12 +26,21 @@ LARGEST_SECOND_MOMENT_M4 = math.pi * THICKEST_SHAFT_M ** 4 / 64.0
 # A correction mass is fixed near the rim, where it does the most: a mass turning MIXED_RATIO (units') times farther
 # out than the corrections is one in millimetres among metres, as a linkage's length that many times another is.
 # (The other way round is real: a disc's eccentricity of 0.1 mm, corrected at 0.2 m.)
-# The unbalanced mass of a machine on its mounts turns on a rotor that reaches out to it: were that rotor but a steel
-# sheet THINNEST_ROTOR_SHEET_M thick (a fan's blades, a drum's wall, a disc are thicker, and fill much of the circle
-# they sweep), a rotor reaching e from its axis weighs ρ·π·e²·t, 24.7 kg at e = 1 m, 617 kg at 5 m.  A machine
-# lighter than that (its mass includes the rotor) has its eccentricity in millimetres: e = 5 meant as 5 mm.
-STEEL_DENSITY = 7850.0
-THINNEST_ROTOR_SHEET_M = 0.001
+# The unbalanced mass of a machine on its mounts turns on a rotor that reaches out to it, and the machine (its mass
+# includes the rotor) weighs at least LIGHTEST_AT_ONE_METRE·(e / 1 m)**LIGHTNESS_EXPONENT: a machine lighter than
+# that has its eccentricity in millimetres, e = 5 meant as 5 mm (112 kg at e = 5 m).  A rotor's blades or spokes fill
+# little of the circle they sweep and are plastic, aluminium or carbon, so no sheet filling it bounds the mass (a 1 mm
+# steel sheet, 24.7 kg at e = 1 m, outweighed a 5 kg ceiling fan reaching 0.66 m); and a larger rotor is built
+# thicker as well as wider, its mass growing faster than the circle it sweeps (e²) and slower than its volume at
+# one shape (e³): wind turbines' blades, for one, as R^2.5.  The lightest real machines for their reach, as mass
+# over e^2.5: a 450-size model helicopter (0.7 kg, 0.355 m) 9, a propeller on its motor (67 g, 0.127 m) 12, a
+# plastic fan (0.5 kg, 0.3 m) 10, a road bicycle's wheel (1 kg, 0.336 m) 15, a ceiling fan (5 kg, 0.66 m) 14, a
+# micro wind turbine (6 kg, 0.585 m) 23, an ultralight gyroplane (some 110 kg, 3 m) 7, NREL's 5 MW turbine with its
+# nacelle (350 t, 63 m) 11, the largest turbines (some 600 t at 110 m) 5: all above 2, the slip of a 100 kg machine
+# with e = 5 mm below it.  (Record-breaking human-powered helicopters, 50 kg under rotors 10 m long, are not
+# machines on mounts.)
+LIGHTEST_AT_ONE_METRE = 2.0
+LIGHTNESS_EXPONENT = 2.5
 # A rotor balanced in two planes is a long one (a shaft with its discs, a drum, a crankshaft); a wide disc is
 # balanced in one.  Its masses turn within a few times its length along the axis of it (a car's wheel some 2, a fan's
 # impeller 5 or so): a mass FLATTEST_ROTOR times farther out than the masses and planes lie apart along the axis is
@@ -53,9 +62,9 @@ SOME_IN_MILLIMETRES = frozenset({"mixed", "flat_rotor", "thin_disc"})
 
 
 def lightest_rotor(eccentricity: float) -> float:
-    """The least mass (kg) of a rotor that reaches ``eccentricity`` (m) from its axis: a steel sheet
-    :data:`THINNEST_ROTOR_SHEET_M` thick filling the circle it sweeps."""
-    return STEEL_DENSITY * math.pi * eccentricity ** 2 * THINNEST_ROTOR_SHEET_M
+    """The least mass (kg) of a machine whose rotor reaches ``eccentricity`` (m) from its axis, below every real
+    one's for its reach (:data:`LIGHTEST_AT_ONE_METRE`, :data:`LIGHTNESS_EXPONENT`)."""
+    return LIGHTEST_AT_ONE_METRE * eccentricity ** LIGHTNESS_EXPONENT
 
 
 @dataclass(frozen=True)
@@ -68,7 +77,8 @@ class Implausible:
     and ``value`` what it gives; ``limit`` the most a machine has.  ``name`` is the mass's or the plane's name it
     belongs to; ``other_key`` and ``other`` the second key it is judged against (``mixed``: the correction radius;
     ``rotor_length``: the farthest plane; ``flat_rotor``, ``thin_disc``: the masses' and planes' span along the axis,
-    ``limit`` the ratio; ``light_machine``: the machine's mass, ``limit`` the lightest rotor's), or for ``base`` ω (rad/s).
+    ``limit`` the ratio; ``light_machine``: the machine's mass, ``limit`` the lightest machine's for its reach), or
+    for ``base`` ω (rad/s).
     """
 
     kind: str
@@ -94,10 +104,10 @@ class Implausible:
             return (f"{given} m at ω = {self.other:.4g} rad/s moves the base at Y·ω = {self.value * self.other:.4g} "
                     f"m/s, faster than any floor or shaking table (over {self.limit:g} m/s)")
         if self.kind == "light_machine":
-            return (f"{given} m puts the unbalanced mass on a rotor that, even as a steel sheet "
-                    f"{THINNEST_ROTOR_SHEET_M * 1000:g} mm thick, weighs {self.limit:.3g} kg, more than the whole "
-                    f"machine, {self.other_key} = {self.other:g} kg (as millimetres, {self.key} = "
-                    f"{self.value / 1000:g})")
+            return (f"{given} m puts the unbalanced mass that far from the axis, and the lightest machines that "
+                    f"reach so far (a propeller on its motor, a fan, a bicycle's wheel, a wind turbine) weigh at "
+                    f"least {self.limit:.3g} kg, more than the whole machine, {self.other_key} = {self.other:g} kg "
+                    f"(as millimetres, {self.key} = {self.value / 1000:g})")
         if self.kind == "flat_rotor":
             return (f"{given} m is {self.value / self.other:.3g} times the rotor's length along its axis, "
                     f"{self.other:g} m from {self.other_key} (a rotor balanced in two planes is long: its masses "
@@ -140,6 +150,6 @@ class LengthsInMillimetres:
         return "; ".join(item.detail for item in self.found) + f": {asked}{unless}"
 
 
-__all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4", "LONGEST_ROTOR_M",
-           "MIXED_RATIO", "SOME_IN_MILLIMETRES", "STEEL_DENSITY", "THICKEST_SHAFT_M", "THINNEST_DISC", "THINNEST_ROTOR_SHEET_M",
-           "Implausible", "LengthsInMillimetres", "lightest_rotor"]
+__all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
+           "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "SOME_IN_MILLIMETRES",
+           "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible", "LengthsInMillimetres", "lightest_rotor"]
