@@ -111,11 +111,11 @@ def stalls_in_its_first_turn(machine: Machine, motor: Motor, start: Start = REST
 
 def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = True, start: Start = REST,
                    clutch: Clutch | None = None) -> None:
-    """Raise :class:`EndlessRun` (a :class:`ValueError`) where a run goes on ``to_the_steady_state`` (no duration, brake or switching off
-    ends it) and the motor outpulls the resistance at every speed (:func:`speeds_up_without_end`): it would
-    never end.  A motor that outpulls the mean resistance but not its peaks may stall from ``start`` before it
-    gains the speed to carry the machine past them (:func:`stalls_in_its_first_turn`): that run ends at the
-    stall, and is not refused."""
+    """Raise :class:`EndlessRun` (a :class:`ValueError`) where a run goes on ``to_the_steady_state`` (no duration,
+    brake or switching off ends it) and the motor outpulls the resistance at every speed
+    (:func:`speeds_up_without_end`): it would never end.  A motor that outpulls the mean resistance but not its
+    peaks may stall from ``start`` before it gains the speed to carry the machine past them
+    (:func:`stalls_in_its_first_turn`): that run ends at the stall, and is not refused."""
     if not to_the_steady_state:
         return
     outpulled = speeds_up_without_end(machine, motor)
@@ -132,9 +132,9 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
 
 def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
     """Raise :class:`EndlessRun` (a :class:`ValueError`) for a run-down (the motor switched off, no duration) that
-    nothing brings to rest: the resistance at rest takes no work over a turn on the average (the weights alone give back on the way down
-    what they take on the way up) and no brake's torque holds the machine, so that it turns, or swings, for ever.
-    A brake's damping alone slows it only in the limit."""
+    nothing brings to rest: the resistance at rest takes no work over a turn on the average (the weights alone give
+    back on the way down what they take on the way up) and no brake's torque holds the machine, so that it turns,
+    or swings, for ever.  A brake's damping alone slows it only in the limit."""
     brake_torque, brake_damping = (brake.torque, brake.damping) if brake is not None else (0.0, 0.0)
     values = [machine.mr(phi, 0.0) for phi in _FINE_TURN]
     resisting = float(np.mean(values))
@@ -149,8 +149,9 @@ def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
     raise EndlessRun("motor_off_at", "motor.off_at", "switches the motor off, and the machine has nothing to take "
                      f"its energy: its resistance, {resisting:.4g} N·m on the average over a turn, takes no work from "
                      "it turn by turn (weights give back on the way down what they take on the way up) and no brake "
-                     f"holds it{damping}, so it never comes to rest; give a brake with a torque "
-                     "(brake = { torque, at }) or a duration")
+                     f"holds it{damping}, so it never comes to rest; give a brake that holds it, dynamics.brake = "
+                     "{ torque, damping, at } with torque > 0 (N·m; at: when it comes on, s), or a "
+                     "dynamics.duration (s)")
 
 
 def _mean_surplus(machine: Machine, motor: Motor):
