@@ -370,8 +370,8 @@ def test_a_constant_motor_against_a_constant_resistance_is_refused_as_a_runaway_
     assert status == 2 and not out.exists()
     assert err == (f"graphplan: error: dynamics.motor: its torque on the shaft, {17.5 * 14.4:.6g} N·m, exceeds the "
                    "mean resistance, 245.789 N·m, at every speed: the machine speeds up without end and has no "
-                   "steady state; give a duration, more resistance, or a motor whose torque falls with speed "
-                   "(linear, kloss)")
+                   "steady state; give a dynamics.duration (s), more resistance, or a motor whose torque falls with "
+                   'speed (dynamics.motor kind = "linear" or "kloss")')
 
 
 BORDER = f"""\

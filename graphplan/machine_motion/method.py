@@ -126,8 +126,8 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
         # The torque on the shaft is the motor's times its gear ratio: the motor's table as a whole is told.
         raise EndlessRun("motor", "motor", f"its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean "
                          f"resistance, {outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and "
-                         "has no steady state; give a duration, more resistance, or a motor whose torque falls with "
-                         "speed (linear, kloss)")
+                         "has no steady state; give a dynamics.duration (s), more resistance, or a motor whose torque "
+                         "falls with speed (dynamics.motor kind = \"linear\" or \"kloss\")")
 
 
 def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
