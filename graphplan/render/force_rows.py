@@ -35,6 +35,8 @@ HEADING_GAP_MM = 8.0
 ESTIMATE_SLACK_MM = 10.0
 # Beyond this many rows, rows are not tried stacked: the ways to stand grow as 4 to the rows.
 MOST_ROWS_TRIED_STACKED = 6
+# The cuts of a force sheet into as many parts that the sheets try packing (:meth:`Rows.cuts`), least paper first.
+MOST_CUTS = 4
 
 # The lettering sizes of GOST 2.304 and ISO 3098 (mm), each √2 times the one before.
 LETTER_SIZES = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)
@@ -253,13 +255,28 @@ class Rows:
         (a polygon may then stand apart from its group, where no cut of as many parts keeps them together),
         and a drawing too big to stand under a heading stands alone without one where ``headless`` allows it;
         None where a drawing does not fit even so (:meth:`unheld`)."""
+        found = self.cuts(fits, headless)
+        return found[0] if found else None
+
+    def cuts(self, fits: Fits, headless: bool = True) -> list[list[Arrangement]]:
+        """:meth:`parts` first, then the other cuts into as many parts that cut as few rows apart, by the paper
+        they take, :data:`MOST_CUTS` in all; none where a drawing does not fit.
+
+        The least paper of the parts alone does not tell the fewest sheets:
+        the engine's force sheet of position 2 in Russian took group II on a
+        part and group I with the lever on the next, a tenth less paper than
+        both groups on one and the lever alone (its part as wide as its long
+        heading "(продолжение)"), and the lever's part with group I left no
+        room beside it for position 8's sheet, which took a sheet more; the
+        sheets choose among these by packing them
+        (:func:`graphplan.render.sheet.fewest_sheets_cuts`)."""
         found = self._parts(fits)
-        if found is not None:
+        if found:
             return found
         apart = self._apart()
         if any(len(row) > 1 for row in self.drawings):
             found = apart._parts(fits)
-        return found if found is not None or not headless else apart._parts(fits, headless=True)
+        return found if found or not headless else apart._parts(fits, headless=True)
 
     def parted(self, names: Collection[str]) -> Rows:
         """The rows with each drawing of ``names`` that may be parted (:attr:`Drawing.parted`) ending its row
@@ -298,8 +315,8 @@ class Rows:
         return Rows([[drawing] for row in self.drawings for drawing in row], self.heading,
                     [origin for origin, row in zip(self.origins, self.drawings, strict=True) for _ in row])
 
-    def _parts(self, fits: Fits, headless: bool = False) -> list[Arrangement] | None:
-        """:meth:`parts` with the rows as they are; where ``headless``, a row that fits under no heading stands
+    def _parts(self, fits: Fits, headless: bool = False) -> list[list[Arrangement]]:
+        """:meth:`cuts` with the rows as they are; where ``headless``, a row that fits under no heading stands
         alone without one (rows that fit only so together stand apart under their headings instead: a part
         without a heading is for a drawing that has no room for one, not a way to save a sheet)."""
         heading = self.heading
@@ -307,7 +324,7 @@ class Rows:
         for title in (heading.title, heading.part_title):
             whole = self._least(0, count, fits, title)
             if whole is not None:
-                return [self.arranged(whole[1], title, whole[2], part=True)]
+                return [[self.arranged(whole[1], title, whole[2], part=True)]]
         best_of: dict[tuple[int, int], tuple[float, Shape, bool, str] | None] = {}
 
         def best(start: int, stop: int) -> tuple[float, Shape, bool, str] | None:
@@ -318,7 +335,7 @@ class Rows:
             return best_of[start, stop]
 
         for pieces in range(2, count + 1):
-            least: tuple[tuple[int, float], list[tuple[Shape, str, bool]]] | None = None
+            found: list[tuple[tuple[int, float], list[tuple[Shape, str, bool]]]] = []
             for cuts in itertools.combinations(range(1, count), pieces - 1):
                 chosen = [best(a, b) for a, b in itertools.pairwise((0, *cuts, count))]
                 if any(choice is None for choice in chosen):
@@ -326,14 +343,19 @@ class Rows:
                 # Of as many parts, the fewest that cut a row of the sheet apart, then the least paper.
                 cost = (sum(self.origins[cut - 1] == self.origins[cut] for cut in cuts),
                         sum(choice[0] for choice in chosen if choice is not None))
-                if least is None or cost < least[0]:
-                    least = (cost, [(choice[1], choice[3], choice[2]) for choice in chosen if choice is not None])
-            if least is not None:
-                # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
-                headed = next((k for k, (_, title, _) in enumerate(least[1]) if title != HEADLESS), None)
-                return [self.arranged(shape, self.heading.part_title if k == headed else title, one_line, part=True)
-                        for k, (shape, title, one_line) in enumerate(least[1])]
-        return None
+                found.append((cost, [(choice[1], choice[3], choice[2]) for choice in chosen if choice is not None]))
+            if found:
+                fewest_apart = min(cost[0] for cost, _ in found)
+                kept = sorted((item for item in found if item[0][0] == fewest_apart), key=lambda item: item[0])
+                return [self._arranged_parts(ways) for _, ways in kept[:MOST_CUTS]]
+        return []
+
+    def _arranged_parts(self, ways: Sequence[tuple[Shape, str, bool]]) -> list[Arrangement]:
+        """The parts of one cut, each (shape, title, one_line), arranged under their headings."""
+        # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
+        headed = next((k for k, (_, title, _) in enumerate(ways) if title != HEADLESS), None)
+        return [self.arranged(shape, self.heading.part_title if k == headed else title, one_line, part=True)
+                for k, (shape, title, one_line) in enumerate(ways)]
 
     def _title_of(self, start: int) -> str:
         """The heading of the part of several that begins with row ``start``."""
