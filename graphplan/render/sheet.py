@@ -333,11 +333,47 @@ def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
     ``sheet`` holds whole in any arrangement of its rows stands in parts, in
     order, each whole under its heading: ``forces-5``, ``forces-5-2``, ...
     """
-    return [part for _, parts in _force_sheets(analysis, sheet) for part in parts]
+    chosen = analysis.scene.drawing.sheet if sheet is None else sheet
+    return fewest_sheets_cuts([cuts for _, cuts in _force_sheets(analysis, chosen)], (), chosen,
+                              form_of(analysis.scene.locale))
 
 
-def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[tuple[Panel, list[Panel]]]:
-    """Each force sheet of :func:`force_panels` whole (its rows down one column) and as it stands on sheets."""
+def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequence[Panel], sheet: str,
+                       form: str) -> list[Panel]:
+    """The force sheets' parts, each sheet cut the way of its ``cuts`` (:meth:`force_rows.Rows.cuts`, least paper
+    first) that packs them, with the drawings ``after`` them, on the fewest ``sheet`` s: each in turn takes the
+    first of its cuts that saves a sheet on those chosen so far.
+
+    The least paper of a sheet's parts alone does not tell: the engine's
+    force sheet of position 2 in Russian took a part with group I and the
+    lever 351 mm wide, which left no room beside it on its A2 for the sheet
+    of position 8, and the force sheets took four A2 where the cut with the
+    lever on a part of its own packs them on three.  One pack per cut tried,
+    a sheet after another, not one per combination of cuts.
+    """
+    chosen = [list(ways[0]) for ways in cuts]
+    if sheet == "none" or all(len(ways) == 1 for ways in cuts):
+        return [part for parts in chosen for part in parts]
+
+    def sheets_taken(parts: Sequence[Sequence[Panel]]) -> float:
+        try:
+            return len(pack([*(part for panels in parts for part in panels), *after], sheet, form))
+        except SceneError:  # packed with the cut least paper first, the run says why no sheet holds a drawing
+            return math.inf
+
+    fewest = sheets_taken(chosen)
+    for k, ways in enumerate(cuts):
+        for way in ways[1:]:
+            tried = [*chosen[:k], list(way), *chosen[k + 1:]]
+            taken = sheets_taken(tried)
+            if taken < fewest:
+                chosen, fewest = tried, taken
+    return [part for parts in chosen for part in parts]
+
+
+def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[tuple[Panel, list[list[Panel]]]]:
+    """Each force sheet of :func:`force_panels` whole (its rows down one column) and the ways it may stand on
+    sheets (:func:`fewest_sheets_cuts` chooses)."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     found = []
     for position in analysis.plans:
@@ -355,9 +391,10 @@ def _headless(part: Arrangement) -> bool:
 
 
 def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
-                  with_friction: bool = False) -> tuple[Panel, list[Panel]]:
-    """The force sheet of ``position`` whole, and as it stands on sheets: whole, or its parts in order where
-    no empty ``sheet`` holds it whole in any way (each part whole under its heading, continued)."""
+                  with_friction: bool = False) -> tuple[Panel, list[list[Panel]]]:
+    """The force sheet of ``position`` whole, and the ways it may stand on sheets: whole, or its parts in order
+    where no empty ``sheet`` holds it whole in any way (each part whole under its heading, continued), cut as
+    :meth:`force_rows.Rows.cuts` has them."""
     words = labels(analysis.scene.locale)
     form = form_of(analysis.scene.locale)
     drawn = force_sheet(analysis, position, with_friction)
@@ -377,38 +414,40 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def laid(rows: force_rows.Rows) -> force_rows.Rows:
         return rows.parted(parted) if parted else rows
 
-    def cut(drawn: force_layout.ForceSheet, one: Panel, parts: list[Arrangement], heading: force_rows.Heading
-            ) -> tuple[force_layout.ForceSheet, Panel, list[Panel], force_rows.Heading]:
-        """The parts as panels, each going on from the one before, their headings to name the scales of the
-        drawings the packing puts under them (``heading``'s); the lever drawn larger where the sheet holds it so
-        on its part without adding a part."""
+    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[Arrangement]], heading: force_rows.Heading
+            ) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Heading]:
+        """Each cut's parts as panels, each going on from the one before, their headings to name the scales of
+        the drawings the packing puts under them (``heading``'s); the lever drawn larger where the sheet holds it
+        so on its part without adding a part."""
+        parts = cuts[0]
         for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
             larger_rows = force_layout.rows(larger, groups_cut_free)
-            larger_parts = laid(larger_rows).parts(fits, headless=any(_headless(part) for part in parts))
-            if larger_parts is not None and len(larger_parts) == len(parts):
-                drawn, parts, heading = larger, larger_parts, larger_rows.heading
+            larger_cuts = laid(larger_rows).cuts(fits, headless=any(_headless(part) for part in parts))
+            if larger_cuts and len(larger_cuts[0]) == len(parts):
+                drawn, cuts, heading = larger, larger_cuts, larger_rows.heading
                 one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
                 break
         names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
-        return drawn, one, [replace(split(arrangement, name, one.label, _group_of_field),
-                                    continues=names[k - 1] if k else "", heading_scales=heading.scales,
-                                    heading_comma=heading.comma)
-                            for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))], heading
+        return drawn, one, [[replace(split(arrangement, name, one.label, _group_of_field),
+                                     continues=names[k - 1] if k else "", heading_scales=heading.scales,
+                                     heading_comma=heading.comma)
+                             for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
+                            for parts in cuts], heading
 
     before: dict[str, tuple[float, float]] = {}
     # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
     # gives every part its heading (a part with none says whose it is by its title block alone).
-    headless: tuple[force_layout.ForceSheet, Panel, list[Arrangement], force_rows.Heading] | None = None
+    headless: tuple[force_layout.ForceSheet, Panel, list[list[Arrangement]], force_rows.Heading] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn, groups_cut_free)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
         heading = rows.heading
         if sheet == "none":
-            return one, [one]
+            return one, [[one]]
         # Its rows in two columns where a sheet is too low for them in one.
-        panels = [replace(one, alternatives=(two,) if two.extent != one.extent else ())]
-        if any(fits(width(way), height(way)) for way in panels[0].ways):
+        cuts = [[replace(one, alternatives=(two,) if two.extent != one.extent else ())]]
+        if any(fits(width(way), height(way)) for way in cuts[0][0].ways):
             headless = None
             break
         # A lever drawn larger than its plan gives the room back, a step at a time, before the sheet is cut up.
@@ -417,14 +456,14 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             continue
         # Else stacked, in more columns, or in parts on several sheets, each part under the heading.
         placed = laid(rows)  # the groups parted so far set apart from their equations, laid out once for the step
-        parts = placed.parts(fits, headless=False)
-        if parts is not None:
-            drawn, one, panels, heading = cut(drawn, one, parts, rows.heading)
+        found = placed.cuts(fits, headless=False)
+        if found:
+            drawn, one, cuts, heading = cut(drawn, one, found, rows.heading)
             headless = None
             break
         if headless is None:
-            parts = placed.parts(fits)
-            headless = (drawn, one, parts, rows.heading) if parts is not None else None
+            found = placed.cuts(fits)
+            headless = (drawn, one, found, rows.heading) if found else None
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
         unheld = placed.unheld(fits)
@@ -450,15 +489,16 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         else:
             break
     if headless is not None:
-        drawn, one, panels, heading = cut(*headless)
+        drawn, one, cuts, heading = cut(*headless)
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
     # The whole names its heading's scales for the note, which shows it in parts (:func:`note_parts.note_parts`).
-    one, panels = (replace(_at_no_length_scale(one), lever_scale=lever, heading_scales=heading.scales,
-                           heading_comma=heading.comma),
-                   [replace(_at_no_length_scale(part), lever_scale=lever) for part in panels])
+    one, cuts = (replace(_at_no_length_scale(one), lever_scale=lever, heading_scales=heading.scales,
+                         heading_comma=heading.comma),
+                 [[replace(_at_no_length_scale(part), lever_scale=lever) for part in panels] for panels in cuts])
     if drawn.length_scale == length_scale(analysis):
-        return one, panels
-    return _drawn_at(one, drawn.length_scale), [_drawn_at(part, drawn.length_scale) for part in panels]
+        return one, cuts
+    return _drawn_at(one, drawn.length_scale), [[_drawn_at(part, drawn.length_scale) for part in panels]
+                                                for panels in cuts]
 
 
 def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet,
@@ -798,12 +838,14 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
                   balancing: Sequence[Panel] = (), loads: Sequence[Panel] = ()) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own; ``loads``, the
     load diagrams (:func:`load_diagrams_panel`), stand among the force sheets, whose values they give."""
-    linkage, forces = _laid_out(analysis, analysis.scene.drawing.sheet if sheet is None else sheet)
+    chosen = analysis.scene.drawing.sheet if sheet is None else sheet
+    linkage, forces = _laid_out(analysis, chosen)
     kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
     # Placed after the force sheets, the load diagrams take the first room left beside one (the first sheet of
     # forces that has it); placed first, one took an A1 alone where the force sheet after it needed a whole sheet.
-    return CoursePanels(tuple(kinematics), (*(part for _, parts in forces for part in parts), *loads),
-                        tuple(whole for whole, _ in forces), tuple(dynamics), tuple(balancing))
+    parts = fewest_sheets_cuts([cuts for _, cuts in forces], loads, chosen, form_of(analysis.scene.locale))
+    return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _ in forces), tuple(dynamics),
+                        tuple(balancing))
 
 
 def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str | None = None) -> Panel:
@@ -831,7 +873,7 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
 # analysis it is made from: the panels are kept by that motion while it lives.
 # The kinematics panels are kept apart from the force sheets: the refusal of drawings no sheet holds reads them
 # alone, before any force sheet is laid out, and the sheets then take them as laid out for it.
-_LaidOut = tuple[list[Panel], list[tuple[Panel, list[Panel]]]]
+_LaidOut = tuple[list[Panel], list[tuple[Panel, list[list[Panel]]]]]
 _laid_out_panels: OwnedMemo[_LaidOut] = OwnedMemo()
 _laid_out_kinematics: OwnedMemo[list[Panel]] = OwnedMemo()
 
