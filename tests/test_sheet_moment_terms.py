@@ -13,6 +13,7 @@ from scene_texts import piston_compressor
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.locale import strings
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
 from graphplan.render.plans import ZERO_MM
@@ -72,8 +73,9 @@ def test_the_crank_s_equation_at_a_dead_centre_keeps_the_reaction_whose_arm_is_t
     caption = _drawings(analysis, position)[f"body-{force_layout.group_id(crank.label)}"].caption
     line = next(line for line in caption if line.startswith("ΣMO(2):"))
     assert line.startswith("ΣMO(2): Mb − R32·h1 = 0,")
-    # Not drawn, the arm is given under the equation at its length on the drawing.
-    given = caption[caption.index(line) + 1]
+    # Not drawn, the arm is given under the equation, under the words that say why, at its length on the drawing.
+    words, given = caption[caption.index(line) + 1:caption.index(line) + 3]
+    assert words == strings(analysis.scene.locale)["arms_too_short"].format(least=f"{ZERO_MM:g}")
     assert re.fullmatch(r"h1 = [\d.]+ mm", given)
     assert float(given.split()[2]) == pytest.approx(term.arm / analysis.scene.drawing.length_scale, rel=1e-3)
     # forces.md writes the same terms as the sheet in every equation: those it gives a moment other than 0.
