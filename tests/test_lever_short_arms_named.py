@@ -17,11 +17,12 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from sheet_texts import box, texts
 
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.locale import strings
-from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
+from graphplan.render.primitives import text_width
 from graphplan.run import run
 from graphplan.starters import starter
 
@@ -46,25 +47,6 @@ def drawn(request, tmp_path_factory):
     folder = tmp_path_factory.mktemp(locale) / "out"
     run(scene, folder, only=["sheets"])
     return locale, folder, analyse(scene)
-
-
-def texts(source: str) -> list[tuple[float, float, float, str, str]]:
-    """(x, y, font size, anchor, text) of each text of an SVG, its runs in a script's font joined."""
-    found = []
-    for attributes, body in re.findall(r"<text([^>]*)>(.*?)</text>", source):
-        values = dict(re.findall(r'([\w-]+)="([^"]*)"', attributes))
-        text = re.sub(r"<[^>]+>", "", body).replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">")
-        found.append((float(values["x"]), float(values["y"]), float(values["font-size"]),
-                      values.get("text-anchor", "start"), text))
-    return found
-
-
-def box(x: float, y: float, font_size: float, anchor: str, text: str) -> tuple[float, float, float, float]:
-    """The box a text takes on the sheet (mm), as wide as the drawings measure a text, a cap height tall."""
-    cap = font_size / FONT_SIZE_PER_CAP
-    width = text_width(text, cap)
-    left = {"start": x, "middle": x - width / 2, "end": x - width}[anchor]
-    return left, y - cap, left + width, y
 
 
 def lever_sheet(folder: Path, number: int) -> tuple[Path, str]:

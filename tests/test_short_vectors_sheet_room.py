@@ -16,6 +16,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from sheet_texts import box, texts
 
 import graphplan
 import graphplan.render.forces as force_layout
@@ -23,7 +24,6 @@ from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.locale import strings
 from graphplan.render.drawings import force_sheet
-from graphplan.render.primitives import FONT_SIZE_PER_CAP, text_width
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
 ENGINE = FIXTURES / "engine_slider_crank.toml"
@@ -64,25 +64,6 @@ def too_short(position) -> dict[str, float]:
             if abs(vector.force) > NOUGHT_N and abs(vector.force) / group.scale < SHORTEST_DRAWN_MM}
 
 
-def texts(path: Path) -> list[tuple[float, float, float, str, str]]:
-    """(x, y, font size, anchor, text) of each text of an SVG sheet, its runs in a script's font joined."""
-    found = []
-    for attributes, body in re.findall(r"<text([^>]*)>(.*?)</text>", path.read_text(encoding="utf-8")):
-        values = dict(re.findall(r'([\w-]+)="([^"]*)"', attributes))
-        text = re.sub(r"<[^>]+>", "", body).replace("&amp;", "&").replace("&lt;", "<").replace("&gt;", ">")
-        found.append((float(values["x"]), float(values["y"]), float(values["font-size"]),
-                      values.get("text-anchor", "start"), text))
-    return found
-
-
-def box(x: float, y: float, font_size: float, anchor: str, text: str) -> tuple[float, float, float, float]:
-    """The box a text takes on the sheet (mm), as wide as the drawings measure a text, a cap height tall."""
-    cap = font_size / FONT_SIZE_PER_CAP
-    width = text_width(text, cap)
-    left = {"start": x, "middle": x - width / 2, "end": x - width}[anchor]
-    return left, y - cap, left + width, y
-
-
 def test_the_engine_s_chinese_sheets_take_no_more_sheets_for_naming_the_short_vectors(
         engine_zh, engine_zh_naming_nothing):
     assert len(sheets_of(engine_zh)) <= len(sheets_of(engine_zh_naming_nothing)), (
@@ -96,7 +77,7 @@ def test_each_short_vector_is_named_with_its_value_on_a_sheet(engine_zh, engine_
     scene = tomllib.loads(ENGINE.read_text(encoding="utf-8"))
     assert expected["G4"] == pytest.approx(scene["links"]["4"]["mass"] * 9.81, rel=1e-12)
     words = strings("zh")["plan_too_short"].format(least=f"{SHORTEST_DRAWN_MM:g}")
-    lines = [text for path in sheets_of(engine_zh) for *_, text in texts(path)]
+    lines = [text for path in sheets_of(engine_zh) for *_, text in texts(path.read_text(encoding="utf-8"))]
     for name, force in expected.items():
         found = [(k, match) for k, line in enumerate(lines)
                  for match in re.finditer(rf"(?<![\w′″]){re.escape(name)} = ([\d.]+) N\b", line)]
@@ -116,7 +97,7 @@ def test_the_line_that_names_them_stands_within_the_frame_over_no_other_text_ful
                           r'L[\d.]+,([\d.]+)', source)
         assert frame is not None, path.name
         left, bottom, right, top = (float(value) for value in frame.groups())
-        found = texts(path)
+        found = texts(path.read_text(encoding="utf-8"))
         for k, item in enumerate(found):
             if words not in item[4]:
                 continue

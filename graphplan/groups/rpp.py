@@ -58,8 +58,8 @@ class RPP(Group):
         angle_deg = table.number("angle", 90.0)
         if abs(math.sin(math.radians(angle_deg))) < 1e-9:
             raise SceneError(table.where("angle"), "the slot must not be parallel to the guide", angle_deg)
-        refuse_branch(table, "an RPP has one assembly: B is where link b's slot, through A at angle degrees to the guide, "
-                      "crosses the guide")
+        refuse_branch(table, "an RPP has one assembly: B is where link b's slot, through A at angle degrees to the "
+                      "guide, crosses the guide")
         table.done()
         return cls(where=table.path, links=links, joints=joints, guide=guide, angle=math.radians(angle_deg))
 

@@ -197,8 +197,8 @@ class Triad(Group):
         # names one, and a bare "unknown key" sent the student looking for another name.
         if table.has("assembly"):
             sketch = ", ".join(f"{name} = [x, y]" for name in inner)
-            raise SceneError(table.where("assembly"), f"unknown key: a triad has up to six assemblies, chosen by near = "
-                             f"{{ {sketch} }}, where its inner joints lie in a sketch")
+            raise SceneError(table.where("assembly"), f"unknown key: a triad has up to six assemblies, chosen by "
+                             f"near = {{ {sketch} }}, where its inner joints lie in a sketch")
         near_table = table.table("near")
         near = []
         for name in near_table.data:
