@@ -19,6 +19,11 @@ RELATIVE_NOISE = 10.0 ** -SIGNIFICANT
 # whatever the largest of them happens to be.
 ANGLE_FLOOR_DEG = 360.0 * RELATIVE_NOISE
 PERCENT_FLOOR = 100.0 * RELATIVE_NOISE
+# A number this small (SI units, degrees, per cent) is what the arithmetic leaves of a nought: a dead centre's
+# acceleration, a reaction no load calls for, the difference of two methods that agree, a direction of
+# 1e−14°.  No quantity of a machine's analysis is this small, so the note writes it 0, as a student writes it, and
+# the force sheets leave out no vector for it.
+ROUNDING_NOISE = 1e-10
 
 
 def largest_finite(values: Any) -> float:
@@ -34,4 +39,4 @@ def noise_floor(values: Any) -> float:
     return largest_finite(values) * RELATIVE_NOISE
 
 
-__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor"]
+__all__ = ["ANGLE_FLOOR_DEG", "PERCENT_FLOOR", "RELATIVE_NOISE", "ROUNDING_NOISE", "SIGNIFICANT", "largest_finite", "noise_floor"]

@@ -54,6 +54,7 @@ from ..mechanism import Mechanism
 from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import Plan
+from ..rounding import ROUNDING_NOISE
 from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
@@ -944,16 +945,11 @@ def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str
     return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"], after, tuple(values))
 
 
-# A force this small (N) is what the arithmetic leaves of a nought (the note writes it 0, report/forces.py's
-# ROUNDING_NOISE): no vector left out, so none named as too short to draw.
-NOUGHT_N = 1e-10
-
-
 def too_short_to_draw(force: complex, scale: float) -> bool:
     """Whether a polygon's vector of ``force`` (N) at μF ``scale`` (N/mm) is left out of the drawing but is no
     nought: the polygon's caption names it with its value, and the note's polygon table says it is not drawn, so
     that a student measuring the polygon knows why a side is missing."""
-    return abs(force) > NOUGHT_N and abs(force) / scale < ZERO_MM
+    return abs(force) > ROUNDING_NOISE and abs(force) / scale < ZERO_MM
 
 
 def _chains(vectors: Sequence[PolygonVector], scale: float) -> list[list[PolygonVector]]:

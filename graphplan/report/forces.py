@@ -31,6 +31,7 @@ from ..joint_friction import FrictionPair, pair_name
 from ..loads import motion_state
 from ..locale import Count, strings
 from ..render.numerals import POWER_OF_TEN, power_of_ten
+from ..rounding import ROUNDING_NOISE
 from ..statics import balancing_by_power, delivers_power, efficiency, rounded_zero, turned_round
 from .markdown import literal
 
@@ -38,10 +39,6 @@ from .markdown import literal
 ROUNDING = 1e-12
 
 
-# A number this small (SI units, degrees, per cent) is what the arithmetic leaves of a nought: a dead centre's
-# acceleration, a reaction no load calls for, the difference of two methods that agree, a direction of
-# 1e−14°.  No quantity of a machine's analysis is this small, so it is written 0, as a student writes it.
-ROUNDING_NOISE = 1e-10
 
 
 def number(value: float, digits: int = 5, mark: str = ".") -> str:
