@@ -16,7 +16,7 @@ from collections.abc import Iterable, Mapping
 from ..accuracy import Row, Study, draw_study
 from ..locale import Count, strings
 from .markdown import literal
-from .plot_style import PAGE_WIDTH_INCHES, settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, settings, svg_text, with_decimal_mark
 
 FAMILIES = ("velocity", "acceleration")
 
@@ -100,7 +100,6 @@ def figure(study: Study, locale: str, title: str) -> str:
         axes.set_title(f"{title}\n{text['accuracy_plot_note']}", fontsize=9, parse_math=False)  # the user's title
         # Under the plot, not on it: "best" shuns the markers but not their labels (1 mm, 3600), and the run times
         # that place them change from run to run; the legend sat on a label as often as not.
-        axes.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=4, frameon=False)
-        drawn.tight_layout()
+        legend_under(drawn, axes, ncol=4)
         with_decimal_mark(drawn, text["decimal_mark"])
         return svg_text(drawn)

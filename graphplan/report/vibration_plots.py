@@ -24,7 +24,7 @@ import numpy as np
 from ..locale import strings as locale_strings
 from ..render.numerals import short
 from ..vibration import LARGE_MAGNIFICATION, VibrationSpec, transmissibility, unbalance_magnification
-from .plot_style import PAGE_WIDTH_INCHES, number_log_axes, settings, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, number_log_axes, settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
@@ -189,13 +189,12 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
         plot.set_ylabel(ylabel)
         plot.set_title(title, fontsize=11)
         plot.grid(True, which="both", linewidth=0.3)
+        figure.tight_layout()
+        # Numbered once laid out, where the room between the numbers is known.
+        number_log_axes(figure)
         # Under the plot, not on it: inside, it hid a curve wherever the curves ran (ζ = 1 at r ≈ 3.3–4.3); beside it,
         # on a figure as wide as a report's page, it left the curves half the width.
-        plot.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, frameon=False)
-        figure.tight_layout()
-        # Numbered once laid out, where the room between the numbers is known; laid out again for their widths.
-        number_log_axes(figure)
-        figure.tight_layout()
+        legend_under(figure, plot, ncol=3)
         with_decimal_mark(figure, text["decimal_mark"])
         if isinstance(target, Path):
             target.parent.mkdir(parents=True, exist_ok=True)
