@@ -31,6 +31,10 @@ _SHAFT, _DRIVING_HALF, _FLYWHEEL, _EVENT, _BRAKE = "#1f4e79", "#a83a1f", "#1f7a3
 # The width a plot's title and words may take (mm): its axes' on the figure (PAGE_WIDTH_INCHES), less a margin.
 _WORDS_MM = 130.0
 _MM_PER_POINT = 25.4 / 72.0
+# The legends' columns, each under its plot (inside a plot no corner is clear: the run's legend would hide part of
+# a run-down or a start-up, the stall's a resistance that swings over the turn and a brake's curve above it).  The
+# stall's entries are long sentences, one to a line.
+_RUN_COLUMNS, _TURN_COLUMNS, _STALL_COLUMNS = 2, 2, 1
 
 
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
@@ -67,11 +71,14 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     with matplotlib.rc_context(settings()):
         below = motion.steady is not None or (motion.stalled_at is not None and resisting is not None)
         run_down = motion.stalled_at is None and motion.stopped_at is not None
+        # Each plot with a legend under it, and the legend's columns: placed once the figure is laid out.
+        legends = []
         if _moved(motion) and not below:
             # A run-down, or a run with no steady state: the speed in time says it all, no empty half below.
             figure = Figure(figsize=(PAGE_WIDTH_INCHES, 5.5))
             run = figure.subplots(1, 1)
             _speed_over_time(run, motion, text)
+            legends.append((run, _RUN_COLUMNS))
             if not run_down:
                 why = _why_not_steady(motion, text, stall_deg)
                 run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
@@ -80,14 +87,19 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 figure = Figure(figsize=(PAGE_WIDTH_INCHES, 8.5))
                 run, turn = figure.subplots(2, 1, height_ratios=(3, 2))
                 _speed_over_time(run, motion, text)
+                legends.append((run, _RUN_COLUMNS))
             else:
                 # A speed zero throughout is an empty plot along its axis: only why it stands still is drawn.
                 figure = Figure(figsize=(PAGE_WIDTH_INCHES, 4.5))
                 turn = figure.subplots(1, 1)
             if motion.steady is not None:
                 _steady_turn(turn, motion, text, flywheel)
+                # Under the plot, as the run's: "best" put it on the flywheel's estimate where no corner was clear of
+                # the two curves.
+                legends.append((turn, _TURN_COLUMNS))
             elif motion.stalled_at is not None and resisting is not None:
                 _stall(turn, motion, text, resisting, stall_deg)
+                legends.append((turn, _STALL_COLUMNS))
             else:
                 turn.set_axis_off()
                 turn.text(0.5, 0.5, _broken(_why_not_steady(motion, text, stall_deg), 10), ha="center", va="center",
@@ -97,11 +109,12 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
         # "$5 to $10" was set in italics, and "$\frac$" stopped the run).
         figure.suptitle(text["motion_title"].format(title=title) if title else text["motion_title_plain"],
                         fontsize=11, parse_math=False)
-        if motion.steady is not None and below:
-            # Under the plot, as the run's: "best" put it on the flywheel's estimate where no corner was clear of the
-            # two curves.  Laid out last, with the suptitle, so that the figure grows by just its room.
-            legend_under(figure, turn, fontsize=7, keep_heights=True)
-        else:
+        # Laid out last, with the suptitle and the decimal mark (the legends' own numbers carry it already): each
+        # legend dropped below its abscissa's numbers and name as they came out, where a share of the plot's height
+        # put it on them under a short plot or a long name; the figure grows by just their room.
+        for plot, columns in legends:
+            legend_under(figure, plot, fontsize=7, ncol=columns, keep_heights=True)
+        if not legends:
             figure.tight_layout()
     return figure
 
@@ -159,8 +172,6 @@ def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> No
     plot.set_ylabel(text["motion_speed_axis"])
     plot.set_title(text["motion_run"], fontsize=10)
     plot.grid(True, linewidth=0.3)
-    # Under the plot: inside, the legend would hide part of a run-down or a start-up.
-    plot.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
 
 
 # A clutch that slips again this many times after it first locks (every turn, where it cannot pass the resistance's
@@ -317,9 +328,6 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     plot.set_title(_broken(text["motion_stall_title" if motion.turned else "motion_never_starts_title"], 10),
                    fontsize=10)
     plot.grid(True, linewidth=0.3)
-    # Under the plot, below the axis's words: inside, no corner is clear of a resistance that swings over the turn,
-    # and a brake's curve above it.
-    plot.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1, frameon=False)
 
 
 __all__ = ["motion_figure", "motion_plot"]
