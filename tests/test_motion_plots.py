@@ -327,7 +327,8 @@ def scene_mr(turned_deg: np.ndarray) -> np.ndarray:
 
 def brake_line(axes, text):
     """The lower plot's line of Mr + Mt, found by its label's words before the numbers; None where there is none."""
-    words = text["motion_resisting_braked"].split("{")[0]
+    # Cut at the first number filled in: the words before it are mathtext, whose own braces the locale doubles.
+    words = text["motion_resisting_braked"].format(torque="\0", at="\0").split("\0")[0]
     found = [line for line in axes.get_lines() if line.get_label().startswith(words)]
     assert len(found) <= 1
     return found[0] if found else None
