@@ -22,7 +22,7 @@ matplotlib = pytest.importorskip("matplotlib")
 
 LOCALES = ("en", "ru", "zh")
 # Each case: the figure's height as the module sets it before its legends (inches), the plots laid out in it.
-CASES = {"steady": 8.5, "braked": 8.5, "never starts": 4.5}
+CASES = {"steady": 8.0, "braked": 7.75, "never starts": 4.5}
 # The subscripts of the resisting moment, the motor's and the brake's, as the locales' textbooks write them.
 SUBSCRIPTS = {"en": {"motion_resisting": "r", "motion_motor_torque": "d", "motion_motor_torque_at_rest": "d"},
               "ru": {"motion_resisting": "с", "motion_motor_torque": "д", "motion_motor_torque_at_rest": "д"}}

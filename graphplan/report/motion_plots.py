@@ -35,6 +35,10 @@ _MM_PER_POINT = 25.4 / 72.0
 # a run-down or a start-up, the stall's a resistance that swings over the turn and a brake's curve above it).  The
 # stall's entries are long sentences, one to a line.
 _RUN_COLUMNS, _TURN_COLUMNS, _STALL_COLUMNS = 2, 2, 1
+# The two plots' figure before the legends under them (inches), by whether the lower one is the steady turn: the
+# legends then add their room, and the whole stays within the 230 mm the note gives a figure on its page (html.py,
+# word.py), which would otherwise shrink it, words and all; the stall's legend, a sentence a line, takes the most.
+_TWO_PLOTS_HEIGHT = {True: 8.0, False: 7.75}
 
 
 def motion_figure(motion: MachineMotion, text: Mapping[str, str], title: str = "",
@@ -84,7 +88,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
         else:
             if _moved(motion):
-                figure = Figure(figsize=(PAGE_WIDTH_INCHES, 8.5))
+                figure = Figure(figsize=(PAGE_WIDTH_INCHES, _TWO_PLOTS_HEIGHT[motion.steady is not None]))
                 run, turn = figure.subplots(2, 1, height_ratios=(3, 2))
                 _speed_over_time(run, motion, text)
                 legends.append((run, _RUN_COLUMNS))
