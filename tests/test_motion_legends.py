@@ -27,6 +27,8 @@ CASES = {"steady": 8.0, "braked": 7.75, "never starts": 4.5}
 SUBSCRIPTS = {"en": {"motion_resisting": "r", "motion_motor_torque": "d", "motion_motor_torque_at_rest": "d"},
               "ru": {"motion_resisting": "с", "motion_motor_torque": "д", "motion_motor_torque_at_rest": "д"}}
 BRAKED_SUBSCRIPTS = {"en": ("r", "t"), "ru": ("с", "т")}
+# The tallest figure the notes show at its size: an A4 page's 297 mm less its margins and a caption.
+NOTE_FIGURE_HEIGHT_MM = 230.0
 
 
 def _dynamics(case: str, locale: str):
@@ -94,6 +96,16 @@ def test_each_legend_lies_under_its_plots_abscissa_clear_of_the_other_plot(case,
         assert _assert_legends_under_their_plots(figure) == len(figure.axes)
     finally:
         pyplot.close(figure)
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_figure_with_its_legends_fits_the_height_the_note_gives_a_figure(case, locale):
+    """The legends' room added, the figure is no taller than the 230 mm the HTML and Word notes give a figure on an
+    A4 page, which would shrink a taller one, its words with it."""
+    figure = _figure(case, locale)
+    _drawn(figure)
+    assert figure.get_figheight() * 25.4 <= NOTE_FIGURE_HEIGHT_MM
 
 
 @pytest.mark.parametrize("locale", LOCALES)
