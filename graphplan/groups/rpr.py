@@ -102,7 +102,9 @@ class RPR(Group):
         return ((a, self.links[0], None), (c, self.links[1], None))
 
     def sliding_points(self) -> dict[int, dict[str, complex]]:
-        return {self.links[1]: {self.joints[0]: 1.0 + 0j}}
+        # The block turns with the lever, so the slide's line is fixed in the block too: a point of the block (the
+        # piston rod of an oscillating cylinder, whose one joint is A) is placed along it toward the lever's pivot.
+        return {self.links[1]: {self.joints[0]: 1.0 + 0j}, self.links[0]: {self.joints[1]: 1.0 + 0j}}
 
     def solve(self, context: Context, branch: int) -> GroupMotion:
         a_name, c_name = self.joints
