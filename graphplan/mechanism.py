@@ -169,7 +169,7 @@ def build(scene: Scene) -> Mechanism:
                 unplaced = [spec for spec in pending if spec.link in known_links]
                 if any(spec.name == name for spec in unplaced):
                     unplaced.sort(key=lambda spec: spec.name != name)
-                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on)
+                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on, frame)
                 raise _unknown_joint(solver, name, known_points, named_at)
         if index == 0 and scene.driver.kind == "slider" and not on_frame(scene, scene.driver.guide):
             raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
@@ -193,7 +193,7 @@ def build(scene: Scene) -> Mechanism:
             carried_by.setdefault(spec.name, spec.link)
         units.append(Unit(solver, placed))
     if pending:
-        raise _unplaceable(pending, known_links, fixed_on, sliding_on)
+        raise _unplaceable(pending, known_links, fixed_on, sliding_on, frame)
     _refuse_unused_frame_lines(scene, solvers)
     mechanism = Mechanism(
         scene=scene,
@@ -423,7 +423,18 @@ def _place_points(pending, known_links, fixed_on, sliding_on, known_points):
     return tuple(placed), pending
 
 
-def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on) -> SceneError:
+def _carriers(name: str, link: int, fixed_on, frame: int) -> str:
+    """Where a point named for a link that has it not is: "; C is a point of the frame and of link 3". The slip is
+    most often the link's number, or a group's joints or links given in the other order (an RPR's lever pivot
+    written first), which the links that do carry it show."""
+    links = sorted(other for other, names in fixed_on.items() if name in names and other != link)
+    if not links:
+        return ""
+    parts = (["the frame"] if frame in links else []) + [f"link {other}" for other in links if other != frame]
+    return f"; {name} is a point of {' and of '.join(parts)}"
+
+
+def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, frame: int) -> SceneError:
     """Why the named points left over cannot be placed: a missing reference, or else a cycle."""
     pending_names = {spec.name for spec in pending}
     for spec in pending:
@@ -436,7 +447,8 @@ def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on) ->
             usable = name in on_link or (key == "toward" and name in sliding_on.get(spec.link, {}))
             if not usable and name not in pending_names:
                 return SceneError(f"{spec.where}.{key}", f"{name!r} is not a point of link {spec.link}; its points "
-                                  f"are {_known(sorted(on_link))}{lookalike_hint(name, on_link)}")
+                                  f"are {_known(sorted(on_link))}{lookalike_hint(name, on_link)}"
+                                  f"{_carriers(name, spec.link, fixed_on, frame)}")
     spec = pending[0]
     key, name = ("from", spec.start) if spec.start in pending_names else ("toward", spec.toward)
     if name == spec.name:

@@ -295,3 +295,23 @@ def test_crank_rocker_balancing_moment_by_the_power_balance():
         lost = sum(rho * abs(analysis.with_friction.reaction(name).force[index])
                    * abs(omegas[int(name[1])] - omegas[int(name[2])]) for name, rho in journals.items())
         assert analysis.with_friction.balancing[index] == pytest.approx((-power + lost) / omega1, abs=1e-4), index
+
+
+@pytest.mark.parametrize(("change", "told"), [
+    # The RPR's joints in the other order: the block pinned at C, the lever turning about A.
+    (('joints = ["A", "C"]', 'joints = ["C", "A"]'),
+     "points.D.from: 'C' is not a point of link 4; its points are A; C is a point of the frame and of link 3"),
+])
+def test_a_point_named_on_the_wrong_link_is_told_where_it_is(change, told):
+    """Before, only "its points are A": nothing said where C was, so the slip (the group's joints in the other order,
+    or the point's link number) had to be guessed."""
+    with pytest.raises(graphplan.GraphplanError) as error:
+        graphplan.load_text(WHITWORTH.replace(*change)).solve()
+    assert str(error.value) == told
+
+
+def test_a_point_of_the_rocker_given_the_couplers_number_is_told_the_rocker():
+    with pytest.raises(graphplan.GraphplanError) as error:
+        graphplan.load_text(WATT_II.replace('D = { link = 4', 'D = { link = 3')).solve()
+    assert str(error.value) == ("points.D.from: 'C' is not a point of link 3; its points are A, B; "
+                                "C is a point of the frame and of link 4")
