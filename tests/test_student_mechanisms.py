@@ -315,3 +315,19 @@ def test_a_point_of_the_rocker_given_the_couplers_number_is_told_the_rocker():
         graphplan.load_text(WATT_II.replace('D = { link = 4', 'D = { link = 3')).solve()
     assert str(error.value) == ("points.D.from: 'C' is not a point of link 3; its points are A, B; "
                                 "C is a point of the frame and of link 4")
+
+
+def test_the_note_lays_off_the_whitworth_levers_tail_beyond_the_pole(tmp_path):
+    """D on the lever's tail lies behind the pivot C from the block's A4, so on the velocity plan (the lever's
+    images turned by 90° and scaled by ω4 about p, C's image) d lies beyond p from a4. The note gave only
+    pd = pa4·lCD/lCA4, which a student lays off from p toward a4, on the wrong side."""
+    scene = graphplan.load_text(WHITWORTH)
+    c = np.array([0.0, -0.05])
+    for phi in np.asarray(scene.solve().driver):
+        where = _whitworth(float(phi))
+        assert (where["D"] - c) @ (where["A"] - c) < 0
+    scene.write(tmp_path / "out", only=["velocity", "acceleration", "note"])
+    lines = [line for line in (tmp_path / "out" / "note.md").read_text(encoding="utf-8").splitlines()
+             if line.startswith("- d: pd = pa4")]
+    assert lines and all(line.endswith("; d lies on the line a4p beyond p, as D lies on A4C beyond C")
+                         for line in lines), lines

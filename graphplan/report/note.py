@@ -1064,6 +1064,12 @@ class _Note:
                          f" = {self.mm(base_mm)}{self.text['times']}{self.n(length)}/{self.n(span)} = "
                          f"{self.drawn_mm(value)}")
         line = self.letter(plan, letter) + self.text["colon"] + self.text["semicolon"].join(parts)
+        if not off_line and ((where - pa) * (pb - pa).conjugate()).real < 0:
+            # Laid off from the first image toward the second, the length alone would put the image on the wrong
+            # side: a Whitworth lever's tail D behind its pivot C, whose d lies beyond p from a4.
+            line += self.text["semicolon"] + self.t("note_similar_beyond", point=self.letter(plan, letter),
+                                                    line=self.segment(plan, lb, la), start=self.letter(plan, la),
+                                                    target=target, link_line=f"{nb}{na}", start_point=na)
         if off_line:
             line += self.text["semicolon"] + self.t("note_similar_triangle", plan=self.segment(plan, la, lb) + self.letter(plan, letter),
                                   link=f"{na}{nb}{target}")
