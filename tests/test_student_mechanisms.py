@@ -7,6 +7,7 @@ Mb·ω1 = −Σ(F·v + M·ω)."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -331,3 +332,18 @@ def test_the_note_lays_off_the_whitworth_levers_tail_beyond_the_pole(tmp_path):
              if line.startswith("- d: pd = pa4")]
     assert lines and all(line.endswith("; d lies on the line a4p beyond p, as D lies on A4C beyond C")
                          for line in lines), lines
+
+
+def test_the_note_lays_off_the_piston_rods_point_from_its_one_image(tmp_path):
+    """E on the rod turns with the cylinder: ae on the velocity plan is |vE − vA| (here by the differences) at μV.
+    The note said only that its image "follows from that of link 4", leaving the student no length to lay off."""
+    text = OSCILLATING_CYLINDER.replace("OFFSET", "0.0")
+    scene = graphplan.load_text(text)
+    plan = scene.plan(4)
+    v, _ = _differences(_oscillating_cylinder(0.0), float(scene.solve().driver[3]), 120 * 2 * math.pi / 60)
+    scene.write(tmp_path / "out", only=["velocity", "acceleration", "note"])
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    line = next(line for line in note.splitlines() if line.startswith("- e: link 3 turns with link 4"))
+    laid = re.search(r"ae = pa4·lAE/lCA4 = [0-9.·/]+ = ([0-9.]+) mm, turned from AE as pa4 is from CA4$", line)
+    assert laid, line
+    assert float(laid.group(1)) == pytest.approx(math.hypot(*(v["E"] - v["A"])) / plan.velocity.scale, abs=0.006)

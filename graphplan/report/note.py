@@ -1038,7 +1038,8 @@ class _Note:
         triangle for a point off it; the two similar figures when it cannot be read that way."""
         letter = similar.letter
         if not similar.basis:
-            return self.t("note_turns_with", point=letter, link=similar.link, other=similar.turns_with)
+            return (self.turning_with(pp, plan, similar)
+                    or self.t("note_turns_with", point=letter, link=similar.link, other=similar.turns_with))
         fallback = letter + self.text["colon"] + similar.figures
         (la, lb), (na, nb), target = similar.basis, similar.basis_points, similar.point
         pa, pb, where = self.position(pp, na), self.position(pp, nb), self.position(pp, target)
@@ -1074,6 +1075,37 @@ class _Note:
             line += self.text["semicolon"] + self.t("note_similar_triangle", plan=self.segment(plan, la, lb) + self.letter(plan, letter),
                                   link=f"{na}{nb}{target}")
         return line
+
+    def turning_with(self, pp: PlanPosition, plan: Plan, similar: Similarity) -> str | None:
+        """A point of a link that turns with another (a point of an RPR's block on the lever) laid off as a student
+        lays it: from its link's one image, ``ae = pa4·lAE/lCA4`` turned from AE as pa4 is from CA4; None where
+        the plan's members do not give that."""
+        other = similar.turns_with
+        target = self.position(pp, similar.point)
+        own = [(where, mark) for where, mark in plan.members.get(similar.link, ()) if mark != similar.letter]
+        pairs = [(first, second) for k, first in enumerate(plan.members.get(other, ()))
+                 for second in plan.members.get(other, ())[k + 1:] if first[0] != second[0]]
+        if other is None or target is None or not own or not pairs:
+            return None
+        (start, start_mark) = own[0]
+        (pa, la), (pb, lb) = max(pairs, key=lambda pair: abs(pair[1][0] - pair[0][0]))
+        name = {mark: self.name_of(pp, plan, mark, where) for where, mark in ((start, start_mark), (pa, la), (pb, lb))}
+        span, reach = abs(pb - pa), abs(target - start)
+        value = self.length_mm(plan, la, lb) * reach / span
+        if reach == 0 or not math.isclose(value, self.length_mm(plan, start_mark, similar.letter), rel_tol=_SAME):
+            return None
+        own_line, other_line = f"{name[start_mark]}{similar.point}", f"{name[la]}{name[lb]}"
+        laid = (f"{self.segment(plan, start_mark, similar.letter)} = {self.segment(plan, la, lb)}·l{own_line}/"
+                f"l{other_line} = {self.mm(self.length_mm(plan, la, lb))}{self.text['times']}{self.n(reach)}/"
+                f"{self.n(span)} = {self.drawn_mm(value)}")
+        return self.t("note_turns_with_laid", point=self.letter(plan, similar.letter), link=similar.link,
+                      other=other, laid=laid, own=own_line, other_segment=self.segment(plan, la, lb),
+                      others=other_line)
+
+    def name_of(self, pp: PlanPosition, plan: Plan, mark: str, where: complex) -> str:
+        """The mechanism's name of the point at ``where`` whose image is ``mark`` (``A4`` for ``a4``)."""
+        return next((name for name, image in plan.images.items()
+                     if image == mark and self.position(pp, name) == where), mark.upper())
 
     # Values read off the plan.
 
