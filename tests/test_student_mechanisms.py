@@ -347,3 +347,35 @@ def test_the_note_lays_off_the_piston_rods_point_from_its_one_image(tmp_path):
     laid = re.search(r"ae = pa4·lAE/lCA4 = [0-9.·/]+ = ([0-9.]+) mm, turned from AE as pa4 is from CA4$", line)
     assert laid, line
     assert float(laid.group(1)) == pytest.approx(math.hypot(*(v["E"] - v["A"])) / plan.velocity.scale, abs=0.006)
+
+
+def test_a_piston_rod_centred_off_its_pin_is_drawn_out_to_its_centre():
+    """The rod 3 has one joint, A, and its centre E: leaving the centre out of its outline, as a link's centre inside
+    it is, left the rod undrawn and its loads at E joined to nothing on the force sheet."""
+    from graphplan.mechanism import build
+    from graphplan.render.linkage import outline_points
+
+    text = OSCILLATING_CYLINDER.replace("OFFSET", "0.0") + """
+[links.3]
+mass = 3.0
+centre = "E"
+inertia = 0.02
+[links.4]
+mass = 5.0
+centre = "C"
+inertia = 0.05
+"""
+    scene = graphplan.load_text(text)
+    assert outline_points(build(scene), scene.solve())[3] == ["A", "E"]
+    # And its balancing moment by the power balance: the rod's weight, d'Alembert's force at E, and the couples
+    # −J·ε of the rod and the cylinder, which turn together (C, the cylinder's centre, does not move).
+    omega1 = 120 * 2 * math.pi / 60
+    analysis = scene.analyse()
+    for index, phi in enumerate(np.asarray(analysis.motion.driver)):
+        v, a = _differences(_oscillating_cylinder(0.0), float(phi), omega1)
+        (ahead, here, behind) = (_oscillating_cylinder(0.0)(float(phi) + step) for step in (H, 0.0, -H))
+        turn = [math.atan2(0.0 - p["A"][1], 0.30 - p["A"][0]) for p in (ahead, here, behind)]
+        omega = (turn[0] - turn[2]) / (2 * H) * omega1
+        epsilon = (turn[0] - 2 * turn[1] + turn[2]) / H**2 * omega1**2
+        power = 3.0 * np.array([0.0, -9.81]) @ v["E"] - 3.0 * a["E"] @ v["E"] - (0.02 + 0.05) * epsilon * omega
+        assert analysis.equilibrium.balancing[index] == pytest.approx(-power / omega1, abs=1e-4), index

@@ -38,7 +38,7 @@ def outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]
     """For every moving link, the points whose convex hull is its outline.
 
     A link's own centre of mass lies inside it and is left out, unless it
-    is a joint; the line a slider runs on is drawn long enough to carry the
+    is a joint or the link has no other point but one; the line a slider runs on is drawn long enough to carry the
     slider, so sliding joints count.
     """
     named = {spec.name for spec in mechanism.scene.points}
@@ -49,8 +49,13 @@ def outline_points(mechanism: Mechanism, motion: Motion) -> dict[int, list[str]]
         jointed = any(name in points for other, points in mechanism.fixed_on.items() if other != link)
         return spec is not None and spec.centre == name and name in named and not jointed
 
-    outlines = {link: [name for name in sorted(mechanism.fixed_on.get(link, ())) if not inside(link, name)]
-                for link in mechanism.moving_links}
+    outlines = {}
+    for link in mechanism.moving_links:
+        names = sorted(mechanism.fixed_on.get(link, ()))
+        kept = [name for name in names if not inside(link, name)]
+        # A link of one joint whose centre stands off it (a piston rod pinned at A, centred along the rod) is drawn
+        # out to its centre: else its loads there stood on the force sheet joined to nothing.
+        outlines[link] = kept if len(kept) > 1 else names
     for slide in motion.slides:
         if slide.guide in outlines and slide.joint not in outlines[slide.guide]:
             outlines[slide.guide].append(slide.joint)
