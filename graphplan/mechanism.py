@@ -149,6 +149,7 @@ def build(scene: Scene) -> Mechanism:
     # The link each known point is pinned to where a group joins it: the first link that carried it.
     carried_by: dict[str, int] = dict.fromkeys(scene.frame_points, frame)
     sliding_on: dict[int, dict[str, complex]] = {}
+    under_pins: dict[str, tuple[str, int]] = {}  # a link's point under a pin (A4), with the pin and the link
     pending = list(scene.points)
     named_at = _check_point_names(scene)
     units = []
@@ -169,7 +170,7 @@ def build(scene: Scene) -> Mechanism:
                 unplaced = [spec for spec in pending if spec.link in known_links]
                 if any(spec.name == name for spec in unplaced):
                     unplaced.sort(key=lambda spec: spec.name != name)
-                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on, frame)
+                    raise _unplaceable(unplaced, known_links, fixed_on, sliding_on, frame, under_pins)
                 raise _unknown_joint(solver, name, known_points, named_at)
         if index == 0 and scene.driver.kind == "slider" and not on_frame(scene, scene.driver.guide):
             raise SceneError(f"{where}.guide", "a driving slider must slide on a frame guide")
@@ -188,12 +189,13 @@ def build(scene: Scene) -> Mechanism:
                 carried_by.setdefault(name, number)
         for number, slides in solver.sliding_points().items():
             sliding_on.setdefault(number, {}).update(slides)
+        under_pins.update({name: (pin, link) for name, pin, _, link in getattr(solver, "coincident_points", tuple)()})
         placed, pending = _place_points(pending, known_links, fixed_on, sliding_on, known_points)
         for spec in placed:
             carried_by.setdefault(spec.name, spec.link)
         units.append(Unit(solver, placed))
     if pending:
-        raise _unplaceable(pending, known_links, fixed_on, sliding_on, frame)
+        raise _unplaceable(pending, known_links, fixed_on, sliding_on, frame, under_pins)
     _refuse_unused_frame_lines(scene, solvers)
     mechanism = Mechanism(
         scene=scene,
@@ -434,7 +436,19 @@ def _carriers(name: str, link: int, fixed_on, frame: int) -> str:
     return f"; {name} is a point of {' and of '.join(parts)}"
 
 
-def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, frame: int) -> SceneError:
+def _under_pin(name: str, key: str, link: int, under_pins, sliding_on) -> str:
+    """Why a link's point under a pin (an RPR lever's A4) cannot place a point: it is a different material point of
+    the link at each instant, as the pin slides along it; toward the pin itself gives the slide's direction."""
+    if under_pins.get(name, (None, None))[1] != link:
+        return ""
+    pin = under_pins[name][0]
+    advice = (f": give toward = {pin!r}, the pin, whose slide gives the direction"
+              if key == "toward" and pin in sliding_on.get(link, {}) else "")
+    return f"; {name} is link {link}'s point under {pin} at each instant, a different point of it as {pin} slides{advice}"
+
+
+def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, frame: int,
+                 under_pins: Mapping[str, tuple[str, int]]) -> SceneError:
     """Why the named points left over cannot be placed: a missing reference, or else a cycle."""
     pending_names = {spec.name for spec in pending}
     for spec in pending:
@@ -446,9 +460,12 @@ def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, fr
         for key, name in (("from", spec.start), ("toward", spec.toward)):
             usable = name in on_link or (key == "toward" and name in sliding_on.get(spec.link, {}))
             if not usable and name not in pending_names:
+                under = _under_pin(name, key, spec.link, under_pins, sliding_on)
+                sliders = sorted(sliding_on.get(spec.link, {})) if key == "toward" and not under else []
+                also = f" (toward may also name {', '.join(sliders)}, along the slide)" if sliders else ""
                 return SceneError(f"{spec.where}.{key}", f"{name!r} is not a point of link {spec.link}; its points "
-                                  f"are {_known(sorted(on_link))}{lookalike_hint(name, on_link)}"
-                                  f"{_carriers(name, spec.link, fixed_on, frame)}")
+                                  f"are {_known(sorted(on_link))}{also}{lookalike_hint(name, on_link)}"
+                                  f"{_carriers(name, spec.link, fixed_on, frame)}{under}")
     spec = pending[0]
     key, name = ("from", spec.start) if spec.start in pending_names else ("toward", spec.toward)
     if name == spec.name:

@@ -302,6 +302,10 @@ def test_crank_rocker_balancing_moment_by_the_power_balance():
     # The RPR's joints in the other order: the block pinned at C, the lever turning about A.
     (('joints = ["A", "C"]', 'joints = ["C", "A"]'),
      "points.D.from: 'C' is not a point of link 4; its points are A; C is a point of the frame and of link 3"),
+    # The lever's point under the block, which the note and results name, taken for a point fixed on the lever.
+    (('toward = "A", at', 'toward = "A4", at'),
+     ("points.D.toward: 'A4' is not a point of link 4; its points are C; A4 is link 4's point under A at each "
+      "instant, a different point of it as A slides: give toward = 'A', the pin, whose slide gives the direction")),
 ])
 def test_a_point_named_on_the_wrong_link_is_told_where_it_is(change, told):
     """Before, only "its points are A": nothing said where C was, so the slip (the group's joints in the other order,
@@ -379,3 +383,11 @@ inertia = 0.05
         epsilon = (turn[0] - 2 * turn[1] + turn[2]) / H**2 * omega1**2
         power = 3.0 * np.array([0.0, -9.81]) @ v["E"] - 3.0 * a["E"] @ v["E"] - (0.02 + 0.05) * epsilon * omega
         assert analysis.equilibrium.balancing[index] == pytest.approx(-power / omega1, abs=1e-4), index
+
+
+def test_a_wrong_toward_on_the_piston_rod_is_told_the_slide_it_may_follow():
+    text = OSCILLATING_CYLINDER.replace("OFFSET", "0.0").replace('toward = "C", at = 0.12', 'toward = "O", at = 0.12')
+    with pytest.raises(graphplan.GraphplanError) as error:
+        graphplan.load_text(text).solve()
+    assert str(error.value) == ("points.E.toward: 'O' is not a point of link 3; its points are A (toward may also "
+                                "name C, along the slide); O is a point of the frame and of link 2")
