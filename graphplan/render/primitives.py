@@ -268,6 +268,10 @@ def _dejavu_advances(weight: str):
     matplotlib = Path(importlib.util.find_spec("matplotlib").submodule_search_locations[0])
     name = "DejaVuSans-Bold.ttf" if weight == "bold" else "DejaVuSans.ttf"
     font = TTFont(matplotlib / "mpl-data" / "fonts" / "ttf" / name, lazy=True)
+    # The glyphs named by their numbers: the cmap and hmtx tables key them by name, which fontTools reads from the
+    # 'post' table (six thousand names a font, a third of reading it) unless a glyph order is set; the advances,
+    # found by glyph number, are the same.
+    font.setGlyphOrder([f"glyph{number}" for number in range(font["maxp"].numGlyphs)])
     glyphs, metrics, units = font.getBestCmap(), font["hmtx"], font["head"].unitsPerEm
 
     def advance(character: str) -> float | None:
@@ -314,25 +318,24 @@ def bounds(layers: Sequence[Layer]) -> tuple[float, float, float, float]:
 
 def bounds_of(items: Iterable[Primitive]) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of ``items``; a unit square for none."""
-    # Each item's extent, then theirs: a sheet is measured often, and its curves have hundreds of points each.
-    extents: list[tuple[float, float, float, float]] = []
+    # Every item's points and corners in one list, then their least and greatest: a sheet is measured often, and its
+    # curves have hundreds of points each, whose bounds one at a time took a call of zip, min and max an item.
+    corners: list[Point] = []
     for item in items:
         if isinstance(item, Polyline):
-            if item.points:
-                xs, ys = zip(*item.points, strict=True)
-                extents.append((min(xs), min(ys), max(xs), max(ys)))
+            corners += item.points
         elif isinstance(item, Arrow):
-            extents.append((min(item.start[0], item.end[0]), min(item.start[1], item.end[1]),
-                            max(item.start[0], item.end[0]), max(item.start[1], item.end[1])))
+            corners += (item.start, item.end)
         elif isinstance(item, Circle):
-            extents.append((item.centre[0] - item.radius, item.centre[1] - item.radius,
-                            item.centre[0] + item.radius, item.centre[1] + item.radius))
+            (x, y), radius = item.centre, item.radius
+            corners += ((x - radius, y - radius), (x + radius, y + radius))
         else:
-            extents.append(text_extent(item))
-    if not extents:
+            x0, y0, x1, y1 = text_extent(item)
+            corners += ((x0, y0), (x1, y1))
+    if not corners:
         return (0.0, 0.0, 1.0, 1.0)
-    x0, y0, x1, y1 = zip(*extents, strict=True)
-    return (min(x0), min(y0), max(x1), max(y1))
+    xs, ys = zip(*corners, strict=True)
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def moved(item: Primitive, dx: float, dy: float) -> Primitive:
