@@ -29,6 +29,7 @@ sheets of its own whose title block names it.
 from __future__ import annotations
 
 import contextlib
+import functools
 import itertools
 import re
 from collections.abc import Callable, Iterator, Sequence
@@ -240,11 +241,21 @@ class Page:
         blocked = [*self.obstacles(), *(_grown(other, GAP_MM - _EDGE) for other in rects)]
         common = [min(r[0] for r in rects), min(r[1] for r in rects), max(r[2] for r in rects),
                   max(r[3] for r in rects)] if rects else None
+        ax0, ay0, ax1, ay1 = self.area
+        # A spot is within the area and clear of every box blocked (the title block and the corner box, the drawings
+        # placed, each grown by the room kept from it): a left and a top are each held to the area once, and a row
+        # of spots tried only against the boxes level with it.  A sheet tries some twenty thousand spots.
+        lefts = [left for left in xs if left >= ax0 - _EDGE and left + width <= ax1 + _EDGE]
         best: tuple[tuple[float, ...], Rect] | None = None
         for top in tops:
-            for left in xs:
-                rect = (left, top - height, left + width, top)
-                if not self._free(rect, blocked) or not all(_reads_after(rect, earlier) for earlier in same_kind):
+            bottom = top - height
+            if bottom < ay0 - _EDGE or top > ay1 + _EDGE:
+                continue
+            level = [box for box in blocked if bottom < box[3] and box[1] < top]
+            for left in lefts:
+                rect = (left, bottom, left + width, top)
+                if any(left < box[2] and box[0] < rect[2] for box in level) \
+                        or not all(_reads_after(rect, earlier) for earlier in same_kind):
                     continue
                 union = rect if common is None else (min(common[0], rect[0]), min(common[1], rect[1]),
                                                      max(common[2], rect[2]), max(common[3], rect[3]))
@@ -268,14 +279,6 @@ class Page:
     def fits_empty(self, panel: Panel) -> bool:
         geometry = PageGeometry(self.size, self.frame, self.block, self.area, self.corner)
         return any(geometry.holds(width(way), height(way)) for way in panel.ways)
-
-    def _free(self, rect: Rect, blocked: Sequence[Rect]) -> bool:
-        """Whether ``rect`` is within the area and clear of every box ``blocked`` (the title block and the corner
-        box, the drawings placed, each grown by the room kept from it)."""
-        ax0, ay0, ax1, ay1 = self.area
-        if rect[0] < ax0 - _EDGE or rect[1] < ay0 - _EDGE or rect[2] > ax1 + _EDGE or rect[3] > ay1 + _EDGE:
-            return False
-        return not any(_overlap(rect, box) for box in blocked)
 
 
 def _reads_after(rect: Rect, earlier: Rect) -> bool:
@@ -460,7 +463,13 @@ def _arrangements(ways: Sequence[int]) -> Iterator[tuple[int, ...]]:
 def _kind(panel: Panel) -> str:
     """What ``panel`` draws, whichever position it is of: ``plan`` of ``plan-11``, ``forces`` of ``forces-5``
     and of its second part ``forces-5-2``."""
-    return re.sub(r"(?<=.)(-\d+)+$", "", panel.name)
+    return _kind_of(panel.name)
+
+
+# Remembered: every spot a drawing is put at asks the kind of each drawing placed on the page.
+@functools.lru_cache(maxsize=1024)
+def _kind_of(name: str) -> str:
+    return re.sub(r"(?<=.)(-\d+)+$", "", name)
 
 
 def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:
