@@ -66,23 +66,46 @@ def text_box(text: Text) -> BaseGeometry:
 
 def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     """The shapes of drawn primitives that a label must not cover."""
-    # Made by shapely's functions, the same shapes as its classes make, in C: a sheet's drawings have a thousand.
-    shapes: list[BaseGeometry] = []
+    # Made by shapely's functions, the same shapes as its classes make, in C, and each kind of shape for all the items
+    # in one call: a sheet's drawings have a thousand, and a call an item took longer than the shapes' making.
+    kinds: list[tuple[str, int]] = []  # each shape's kind and its number among the shapes of that kind
+    made: dict[str, list] = {"line": [], "polygon": [], "circle": [], "box": []}
+
+    def add(kind: str, what) -> None:
+        kinds.append((kind, len(made[kind])))
+        made[kind].append(what)
+
     for item in items:
         if isinstance(item, Polyline) and item.closed and item.fill and len(item.points) >= 3:
             # A filled shape (a slider block, a pivot's triangle) hides what is written inside it.
-            shapes.append(shapely.polygons(item.points))
+            add("polygon", item.points)
         elif isinstance(item, Polyline) and len(item.points) >= 2:
-            shapes.append(shapely.linestrings(item.points + ((item.points[0],) if item.closed else ())))
+            add("line", item.points + ((item.points[0],) if item.closed else ()))
         elif isinstance(item, Arrow):
-            shapes.append(shapely.linestrings((item.start, item.end)))
-            shapes.append(shapely.polygons(item.tip().points))
+            add("line", (item.start, item.end))
+            add("polygon", item.tip().points)
         elif isinstance(item, Circle):
-            # Sixteen segments a quarter, as the geometry's buffer method draws it (the function's default is 8).
-            shapes.append(shapely.buffer(shapely.points(item.centre), item.radius, quad_segs=16))
+            add("circle", item)
         elif isinstance(item, Text):
-            shapes.append(text_box(item))
-    return shapes
+            add("box", text_extent(item))
+    shapes = {kind: _shapes(kind, given) for kind, given in made.items() if given}
+    return [shapes[kind][number] for kind, number in kinds]
+
+
+def _shapes(kind: str, given: list) -> np.ndarray:
+    """:func:`obstacles_of`'s shapes of one ``kind``, each of its ``given`` (points, a circle, a text's extent)."""
+    if kind == "circle":
+        # Sixteen segments a quarter, as the geometry's buffer method draws it (the function's default is 8).
+        return shapely.buffer(shapely.points([circle.centre for circle in given]),
+                              [circle.radius for circle in given], quad_segs=16)
+    if kind == "box":
+        return shapely.box(*np.array(given, dtype=float).T)
+    # A line or a ring of each item's points, told apart by their indices.
+    points = np.array([point for points in given for point in points], dtype=float)
+    indices = np.repeat(np.arange(len(given)), [len(each) for each in given])
+    if kind == "line":
+        return shapely.linestrings(points, indices=indices)
+    return shapely.polygons(shapely.linearrings(points, indices=indices))
 
 
 @dataclass(frozen=True)
