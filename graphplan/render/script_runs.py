@@ -15,7 +15,6 @@ from __future__ import annotations
 import functools
 import itertools
 import shutil
-import subprocess
 
 from .primitives import is_wide
 
@@ -71,6 +70,10 @@ def _font_file(family: str, weight: str) -> tuple[str, int] | None:
     """The file and face index fontconfig gives for ``family`` at ``weight``, if it is that family."""
     if shutil.which("fc-match") is None:
         return None
+    # Imported here: only a text that mixes Chinese with Latin letters asks fontconfig, and a run of none loads no
+    # subprocess machinery.
+    import subprocess
+
     try:
         found = subprocess.run(["fc-match", "-f", "%{family}\t%{file}\t%{index}", f"{family}:{weight}"],
                                capture_output=True, text=True, timeout=10, check=True).stdout

@@ -72,7 +72,8 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
     document.add(document.rect(insert=(0, 0), size=(_n(width), _n(height)), fill="white", id="background"))
     def polyline(item: Polyline):
         # A path with our own number formatting: svgwrite's polyline formats points itself.
-        path = "M" + " L".join(",".join(xy(p)) for p in item.points) + (" Z" if item.closed else "")
+        # Each point written in place, not through xy(): the drawings have some ten thousand.
+        path = "M" + " L".join(f"{_n(x - left)},{_n(top - y)}" for x, y in item.points) + (" Z" if item.closed else "")
         element = document.path(d=path)
         element.update({"fill": item.fill or "none", **_stroke_attributes(item.stroke)})
         return element

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import math
 import platform
-from importlib import metadata
+import sys
 from typing import Any
 
 import numpy as np
@@ -174,6 +174,15 @@ def versions() -> dict[str, str]:
     """The versions of Python, graphplan and its main dependencies, so that a result can be reproduced."""
     found = {"python": platform.python_version(), "graphplan": __version__}
     for name in DEPENDENCIES:
+        # A library the run has imported tells its version itself (numpy and shapely, always): importlib.metadata
+        # would search the installed distributions for it.  One not imported (scipy, svgwrite before the drawings) is
+        # asked of its distribution: importing it would cost a run that needs none of it.
+        module = sys.modules.get(name)
+        if module is not None and isinstance(getattr(module, "__version__", None), str):
+            found[name] = module.__version__
+            continue
+        from importlib import metadata
+
         try:
             found[name] = metadata.version(name)
         except metadata.PackageNotFoundError:  # run from a source tree without the package installed
