@@ -27,8 +27,14 @@ _POINTS = f"[{CAPITALS}][{CAPITALS}0-9]*"
 # static correction's b, or the textbook's running i.
 _ROTOR = f"\\d{{1,3}}|[{CAPITALS}][A-Za-z0-9]{{0,2}}|[bi]"
 
+# Every character a symbol below begins with: asked first, so that the shapes are tried only where one may begin (the
+# note's and the tables' texts were scanned nine times slower, every shape tried at every character).  A shape added
+# with another first character adds it here (tests/test_run_speed_paths.py holds the symbols found to the shapes').
+FIRST_CHARACTERS = "VaslωεψμRFMGJmIpnPφXfρΔAWv(z"
+
 # base, index, component: the symbols of the plan method and of the force analysis.
 SYMBOL = re.compile(
+    rf"(?=[{re.escape(FIRST_CHARACTERS)}])"
     # A derivative's d stands before the speed it differentiates: dωd/dt is d of ωd.
     r"(?:(?<![A-Za-z_])|(?<=(?<![A-Za-z_])d)(?=ω))(?:"
     # A point's travel along its guide (sE, the load diagrams' abscissa) is indexed as its velocity is.
