@@ -352,7 +352,8 @@ def moved(item: Primitive, dx: float, dy: float) -> Primitive:
         return (p[0] + dx, p[1] + dy)
 
     if isinstance(item, Polyline):
-        return replace(item, points=tuple(shift(p) for p in item.points))
+        # Its points shifted in place, not through shift(): a diagram's curves have hundreds each.
+        return replace(item, points=tuple([(x + dx, y + dy) for x, y in item.points]))
     if isinstance(item, Arrow):
         return replace(item, start=shift(item.start), end=shift(item.end))
     if isinstance(item, Circle):
