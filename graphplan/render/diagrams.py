@@ -131,17 +131,27 @@ def parts(record: KinematicDiagrams, text: Mapping[str, str] | None = None,
     """
     words = {**strings("en"), **(text or {})}
     drawn = [_panel(record, kind, words, lettered) for kind in KINDS]
-    _, last_bottom, _, _ = _extent(drawn[-1])
-    drawn[-1] = [*drawn[-1], _footer(record, words, last_bottom - GAP_MM)]
-    left = min(_extent(part)[0] for part in drawn)
+    # Each diagram measured once, its curves of hundreds of points each: the last with its footer is its own extent
+    # and the footer's together.
+    extents = [_extent(part) for part in drawn]
+    footer = _footer(record, words, extents[-1][1] - GAP_MM)
+    drawn[-1] = [*drawn[-1], footer]
+    extents[-1] = _together(extents[-1], _extent([footer]))
+    left = min(extent[0] for extent in extents)
     title = words["kd_title"].format(link=record.link, point=record.point or "")
-    heading = Text((left, _extent(drawn[0])[3] + 6.0), title, TITLE_SIZE, "start", weight="bold")
+    heading = Text((left, extents[0][3] + 6.0), title, TITLE_SIZE, "start", weight="bold")
     drawn[0] = [*drawn[0], Layer("sheet-title", (heading,))]
     return drawn
 
 
 def _extent(layers: list[Layer]) -> tuple[float, float, float, float]:
     return bounds_of(item for layer in layers for item in layer.items)
+
+
+def _together(first: tuple[float, float, float, float],
+              second: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
+    """The extent of what has the extents ``first`` and ``second``: :func:`bounds_of` of both's items."""
+    return (min(first[0], second[0]), min(first[1], second[1]), max(first[2], second[2]), max(first[3], second[3]))
 
 
 def _values(record: KinematicDiagrams, kind: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
