@@ -45,6 +45,24 @@ def test_a_run_of_the_bundled_scene_loads_no_subprocess_machinery(tmp_path):
     assert not loaded
 
 
+def test_a_scene_loads_the_solvers_of_its_own_group_kinds_alone(tmp_path):
+    """The bundled scene's RRR loads rrr.py (and the driver's module) of the seven kinds' modules; a triad's scene
+    loads triad.py; every kind the registry names is the class of that kind."""
+    from graphplan.groups import GROUPS
+
+    assert {kind: GROUPS[kind].kind for kind in GROUPS} == {kind: kind for kind in GROUPS}
+    assert set(GROUPS) == {"RRR", "RRP", "RPR", "PRP", "RPP", "triad"}
+    loaded = {}
+    for name in ("ratchet_crank_rocker", "triad_class_iii"):
+        loaded[name] = _fresh("import json, sys, graphplan\n"
+                              f"graphplan.solve(graphplan.load({str(ROOT / 'fixtures' / f'{name}.toml')!r}))\n"
+                              "print(json.dumps(sorted(m for m in sys.modules if m.startswith('graphplan.groups.'))))")
+    kinds = ("rrr", "rrp", "rpr", "prp", "rpp", "triad")
+    assert [m for m in loaded["ratchet_crank_rocker"] if m.rsplit(".", 1)[1] in kinds] == ["graphplan.groups.rrr"]
+    assert "graphplan.groups.triad" in loaded["triad_class_iii"]
+    assert "graphplan.groups.rpp" not in loaded["triad_class_iii"]
+
+
 def test_the_versions_of_imported_libraries_are_their_own_and_only_the_others_are_searched_for():
     """numpy's and shapely's versions from their __version__; scipy (which a run never imports) and svgwrite (not
     yet imported when results.json is written) from their distributions, without importing them."""
