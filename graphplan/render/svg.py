@@ -83,22 +83,24 @@ def to_svg(layers: Sequence[Layer], margin: float = 8.0, page: tuple[float, floa
         size = item.size * FONT_SIZE_PER_CAP
         runs = script_runs(item.text)
         width = width_em(runs, item.weight) if is_mixed(runs) else None
+        # The attributes gathered in the order they are written and set at once: svgwrite sets each in a call.
         if width is None:
             element = document.text(item.text, insert=(x, y))
-            element.update({"font-family": font_family(item.text), "text-anchor": item.anchor})
+            attributes = {"font-family": font_family(item.text), "text-anchor": item.anchor}
         else:
             # Set from its start, run by run in each script's font: cairosvg would anchor every run on its own.
             start = {"start": 0.0, "middle": -width / 2, "end": -width}[item.anchor] * size
             element = document.text("", insert=(_n(float(x) + start), y))
-            element.update({"font-family": CJK_FONT_FAMILY, "text-anchor": "start"})
+            attributes = {"font-family": CJK_FONT_FAMILY, "text-anchor": "start"}
             for run, wide in runs:
                 element.add(document.tspan(run, font_family=CJK_FONT_FAMILY if wide else FONT_FAMILY))
-        element.update({"font-size": _n(size), "fill": item.colour})
+        attributes.update({"font-size": _n(size), "fill": item.colour})
         if item.weight != "normal":
-            element.update({"font-weight": item.weight})
+            attributes["font-weight"] = item.weight
         if item.rotation:
             # Counter-clockwise on the paper is clockwise once y points down; about the anchor, not the start.
-            element.update({"transform": f"rotate({_n(-item.rotation)} {x} {y})"})
+            attributes["transform"] = f"rotate({_n(-item.rotation)} {x} {y})"
+        element.update(attributes)
         return element
 
     for layer in layers:
