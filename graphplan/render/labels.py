@@ -101,7 +101,7 @@ def _shapes(kind: str, given: list) -> np.ndarray:
     if kind == "box":
         return shapely.box(*np.array(given, dtype=float).T)
     # A line or a ring of each item's points, told apart by their indices.
-    points = np.array([point for points in given for point in points], dtype=float)
+    points = np.array([point for each in given for point in each], dtype=float)
     indices = np.repeat(np.arange(len(given)), [len(each) for each in given])
     if kind == "line":
         return shapely.linestrings(points, indices=indices)
