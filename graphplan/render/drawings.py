@@ -298,7 +298,7 @@ def positions_plan(analysis: Analysis, scale: float | None = None) -> positions.
         paths=analysis.paths, length_scale=scale, title=text["positions_title"], caption=caption,
         extremes=extreme_names(analysis, drawn),
         marked=tuple(sorted({int(analysis.positions.numbers[plan.index]) for plan in analysis.plans})),
-        travels=dimensioned_travels(analysis, text))
+        travels=dimensioned_travels(analysis, text), working_extremes=analysis.positions.extremes is not None)
 
 
 def dimensioned_travels(analysis: Analysis, text: Mapping[str, str]) -> tuple[positions.Travel, ...]:

@@ -85,8 +85,11 @@ class PositionsPlan:
     ``extremes`` names each of them that is no numbered position drawn, as
     Russian course projects mark an extreme: the number of the position it
     follows with a prime (8′), its points lettered with a prime (A′, D′);
-    empty for one that is a numbered position.  ``marked`` holds the numbers
-    always lettered however the numbers are thinned: the plan sheets' positions.
+    empty for one that is a numbered position.  ``working_extremes`` says
+    the bold positions are the working link's extremes: the second's points
+    are then lettered with a prime where it is a numbered position too.
+    ``marked`` holds the numbers always lettered however the numbers are
+    thinned: the plan sheets' positions.
     """
 
     mechanism: Mechanism
@@ -100,6 +103,7 @@ class PositionsPlan:
     extremes: tuple[str, ...] = ()
     marked: tuple[int, ...] = ()
     travels: tuple[Travel, ...] = ()
+    working_extremes: bool = False
 
 
 @dataclass(frozen=True)
@@ -509,7 +513,9 @@ def _driver_centre(plan: PositionsPlan) -> complex:
 def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> list[Anchor]:
     """An extreme that is no numbered position: its name (8′) at the driver's joint, as the positions are
     numbered (unless ``names`` is false: round a crank's circle they are set with the numbers), and its points
-    lettered with a prime; it stood bold with neither."""
+    lettered with a prime; it stood bold with neither.  An extreme that is a numbered position keeps its number
+    and is lettered with a prime too (``PositionsPlan.working_extremes``): lettered with neither, as it was, a
+    reader could not tell which bold outline was which end of the stroke."""
     driver = plan.mechanism.driver
     motion = plan.emphasised
     centre = _driver_centre(plan)
@@ -519,11 +525,11 @@ def _extreme_anchors(plan: PositionsPlan, paper: Paper, names: bool = True) -> l
     drawn = {name for names in plan.mechanism.fixed_on.values() for name in names} - centres
     anchors = []
     for index, label in enumerate(plan.extremes):
-        if not label or index >= motion.count:
+        if index >= motion.count or not (label or plan.working_extremes):
             continue
         joint = complex(at(motion.points[driver.joint].r, index))
         outward = joint - centre
-        if names:
+        if names and label:
             anchors.append(Anchor(paper(joint), label, _LABEL, math.atan2(outward.imag, outward.real), "#333333"))
         moving = [name for name in motion.points if name in drawn
                   and abs(complex(at(motion.points[name].r, index)) - complex(at(motion.points[name].r, 0)))
