@@ -566,15 +566,17 @@ def _read_load_diagram(table: Table, key: str, side: str, quantity: str) -> Load
     if len(points) < 2:
         raise SceneError(where, "must have at least two points [crank angle in degrees, value]")
     angles = [angle for angle, _ in points]
-    if angles[0] != 0.0 or angles[-1] != 360.0:
-        raise SceneError(where, "must run over the whole turn: its angles from 0 to 360 degrees",
-                         [angles[0], angles[-1]])
+    # The order first: two points typed the wrong way round leave the ends misread, and the turn's ends told of
+    # them would send the student to the first and last points, which are right.
     for k in range(1, len(angles)):
         if angles[k] < angles[k - 1]:
             raise SceneError(f"{where}[{k}]", "crank angles must not fall (an angle given twice is a jump)", angles[k])
         if k >= 2 and angles[k] == angles[k - 1] == angles[k - 2]:
             raise SceneError(f"{where}[{k}]", "an angle may be given at most twice (the two sides of a jump)",
                              angles[k])
+    if angles[0] != 0.0 or angles[-1] != 360.0:
+        raise SceneError(where, "must run over the whole turn: its angles from 0 to 360 degrees",
+                         [angles[0], angles[-1]])
     return LoadDiagram(key=key, side=side, quantity=quantity, angles_deg=tuple(angles),
                        values=tuple(value for _, value in points))
 

@@ -29,6 +29,7 @@ import math
 from pathlib import Path
 
 import pytest
+from console import without_progress
 
 from graphplan.cli import main
 
@@ -145,3 +146,34 @@ def test_khurmi_machine_on_springs_shaken_by_its_piston(tmp_path):
     assert vibration["amplitude"] * 1000 == pytest.approx(1.25, abs=0.005)
     assert vibration["phase_deg"] == pytest.approx(169.1, abs=0.05)
     assert vibration["transmitted_force"] / 1000 == pytest.approx(2.1, abs=0.05)
+
+
+# --- a student's slips, each told at its key ---------------------------------------------------------------------
+
+PRESS = """\
+[scene]
+title = "A press from its power cycle"
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = {diagram}
+driving = "constant"
+"""
+
+
+def check(capsys, tmp_path: Path, text: str) -> tuple[int, str]:
+    """``graphplan check`` of ``text``: its exit status and what it printed on stderr, progress left out."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text, encoding="utf-8")
+    code = main(["check", str(scene)])
+    return code, without_progress(capsys.readouterr().err)
+
+
+def test_a_load_diagrams_point_out_of_order_is_told_where_its_angle_falls(capsys, tmp_path):
+    # The idle stroke's two points typed the wrong way round: the diagram does run from 0 to 360°, so the refusal
+    # names the point whose angle falls, not the turn's ends.
+    diagram = "[[120, 367.7], [0, 367.7], [120, 3677], [360, 3677]]"
+    code, err = check(capsys, tmp_path, PRESS.format(diagram=diagram))
+    assert code == 2
+    assert err.startswith("graphplan: error: dynamics.resisting_power[1]: crank angles must not fall")
+    assert "whole turn" not in err
