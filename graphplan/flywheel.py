@@ -575,8 +575,12 @@ def _read_load_diagram(table: Table, key: str, side: str, quantity: str) -> Load
             raise SceneError(f"{where}[{k}]", "an angle may be given at most twice (the two sides of a jump)",
                              angles[k])
     if angles[0] != 0.0 or angles[-1] != 360.0:
+        # A turn that ends at 2π, as rounded to a few digits, is the diagram typed in radians.
+        radians = math.isclose(angles[-1], 2 * math.pi, rel_tol=1e-3)
+        hint = (f"; radians? {angles[-1]:g} rad is 360°: the diagram's crank angles are in degrees (multiply them "
+                "by 180/π)") if radians else ""
         raise SceneError(where, "must run over the whole turn: its angles from 0 to 360 degrees",
-                         [angles[0], angles[-1]])
+                         [angles[0], angles[-1]], hint=hint)
     return LoadDiagram(key=key, side=side, quantity=quantity, angles_deg=tuple(angles),
                        values=tuple(value for _, value in points))
 

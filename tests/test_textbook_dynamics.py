@@ -177,3 +177,12 @@ def test_a_load_diagrams_point_out_of_order_is_told_where_its_angle_falls(capsys
     assert code == 2
     assert err.startswith("graphplan: error: dynamics.resisting_power[1]: crank angles must not fall")
     assert "whole turn" not in err
+
+
+def test_a_load_diagram_in_radians_is_asked_about_its_unit(capsys, tmp_path):
+    # The turn typed as 2π = 6.283: the refusal names the unit, not only the ends the angles should have.
+    diagram = "[[0, 367.7], [2.094, 367.7], [2.094, 3677], [6.283, 3677]]"
+    code, err = check(capsys, tmp_path, PRESS.format(diagram=diagram))
+    assert code == 2
+    assert err.startswith("graphplan: error: dynamics.resisting_power: must run over the whole turn")
+    assert "radians? 6.283 rad is 360°: the diagram's crank angles are in degrees" in err
