@@ -186,3 +186,19 @@ def test_a_load_diagram_in_radians_is_asked_about_its_unit(capsys, tmp_path):
     assert code == 2
     assert err.startswith("graphplan: error: dynamics.resisting_power: must run over the whole turn")
     assert "radians? 6.283 rad is 360°: the diagram's crank angles are in degrees" in err
+
+
+MOTOR = PRESS.format(diagram="[[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]") + (
+    'motor = {{ kind = "kloss", power = 4000.0, overload = {overload}, synchronous_rpm = 1500, rated_rpm = 1440, '
+    'gear_ratio = 14.4 }}\n')
+
+
+def test_a_motors_overload_typed_as_a_percentage_is_refused_saying_so(capsys, tmp_path):
+    # A catalogue's Mmax/MN = 220 % typed as 220: no induction motor pulls out at 220 times its rated torque (they
+    # do at some 1.6 to 3.5 times), and the run went on with it as if it did.
+    code, err = check(capsys, tmp_path, MOTOR.format(overload=220))
+    assert code == 2
+    assert err.startswith("graphplan: error: dynamics.motor.overload: must be below 10")
+    assert "(got 220.0); a percentage typed for the ratio? (220 % is overload = 2.2)" in err
+    code, err = check(capsys, tmp_path, MOTOR.format(overload=2.2))
+    assert code == 0 and "overload" not in err

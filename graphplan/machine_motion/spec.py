@@ -25,6 +25,9 @@ MOST_TURNS = 100_000
 # damping far stiffer stops the shaft within a sliver of a turn and then lets it creep at (Md − Mr)/c: a rigid stop
 # the run cannot integrate turn by turn (a hundred-thousandth of the period took a minute and then gave up).
 SHORTEST_BRAKE_TIME_CONSTANT = 0.01
+# The overload capacity λ = Mmax/MN a Kloss motor may have: catalogues give 1.6 to 3.5 (crane motors some 4), so one
+# of 10 or more is no induction motor, most likely the percentage (220 for λ = 2.2) typed for the ratio.
+LARGEST_OVERLOAD = 10.0
 
 
 @dataclass(frozen=True)
@@ -164,6 +167,12 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         overload = table.number("overload")
         if not overload > 1:
             raise SceneError(table.where("overload"), "must be > 1 (it is Mmax/Mrated)", overload)
+        if not overload < LARGEST_OVERLOAD:
+            # A catalogue's "Mmax/MN = 220 %" typed as 220; Kloss' formula would take it without a murmur.
+            typed = (f"; a percentage typed for the ratio? ({overload:g} % is overload = {overload / 100:g})"
+                     if overload >= 100 else "")
+            raise SceneError(table.where("overload"), f"must be below {LARGEST_OVERLOAD:g}: an induction motor's "
+                             "breakdown torque is some 1.6 to 3.5 times its rated one", overload, hint=typed)
         given = [k for k in ("synchronous_rpm", "rated_rpm", "rated_slip") if table.has(k)]
         if len(given) > 2:
             # All three are told at the last: any two fix the third, which may disagree with them.
