@@ -989,10 +989,18 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
     if "errors" in pieces or "note" in pieces:
         told += drafting_precision_warnings(scene)
     if "vibration" in pieces:
-        from .vibration import damping_warning, isolation_warning, lengths_warning, resonance_warning, speed_warning
+        from .vibration import (
+            damping_warning,
+            isolation_warning,
+            lengths_warning,
+            resonance_warning,
+            speed_warning,
+            stiffness_warning,
+        )
 
         assert scene.vibration is not None
-        told += [line for line in (damping_warning(scene.vibration), speed_warning(scene.vibration),
+        told += [line for line in (damping_warning(scene.vibration), stiffness_warning(scene.vibration),
+                                   speed_warning(scene.vibration),
                                    lengths_warning(scene.vibration),
                                    resonance_warning(scene.vibration), isolation_warning(scene.vibration))
                  if line is not None]

@@ -633,6 +633,21 @@ def damping_warning(spec: VibrationSpec) -> str | None:
             f"without vibrating, which no mount's damping does (a few hundredths to a few tenths){percentage}")
 
 
+def stiffness_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line for mounts given so soft for the machine that it would sink more than
+    :data:`MOST_MOUNT_SAG` on them, M·g/k, as a stiffness typed in kN/m or N/mm, or a mass in grams, makes them;
+    else None. A shaft's bending stiffness is left alone: a slender shaft does bend that far under its disc."""
+    if spec.on_shaft:
+        return None
+    sag = spec.mass * STANDARD_GRAVITY / spec.stiffness
+    if sag <= MOST_MOUNT_SAG:
+        return None
+    return (f"vibration.stiffness: k = {spec.stiffness:g} N/m would let the machine, vibration.mass = {spec.mass:g} kg, "
+            f"sag M·g/k = {sag:.3g} m under its weight, more than any spring mount ({MOST_MOUNT_SAG * 1000:g} mm): a "
+            f"stiffness typed in kN/m or N/mm, or a mass in grams? ({spec.stiffness:g} kN/m is stiffness = "
+            f"{spec.stiffness * 1000:g}; {spec.mass:g} g is mass = {spec.mass / 1000:g})")
+
+
 def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
     """``value`` to ``digits`` significant digits, rounded down or up (a bound offered must keep what it bounds), with
     no exponent."""
@@ -966,6 +981,7 @@ __all__ = [
     "speed_in_rpm",
     "speed_warning",
     "steady_state",
+    "stiffness_warning",
     "transmissibility",
     "unbalance_magnification",
     "vibration_results",

@@ -162,11 +162,13 @@ driving = "constant"
 
 
 def check(capsys, tmp_path: Path, text: str) -> tuple[int, str]:
-    """``graphplan check`` of ``text``: its exit status and what it printed on stderr, progress left out."""
+    """``graphplan check`` of ``text``: its exit status and what it printed, its report and warnings (on stdout) after
+    its refusals (on stderr), progress left out."""
     scene = tmp_path / "scene.toml"
     scene.write_text(text, encoding="utf-8")
     code = main(["check", str(scene)])
-    return code, without_progress(capsys.readouterr().err)
+    printed = capsys.readouterr()
+    return code, without_progress(printed.err) + printed.out
 
 
 def test_a_load_diagrams_point_out_of_order_is_told_where_its_angle_falls(capsys, tmp_path):
@@ -201,4 +203,31 @@ def test_a_motors_overload_typed_as_a_percentage_is_refused_saying_so(capsys, tm
     assert err.startswith("graphplan: error: dynamics.motor.overload: must be below 10")
     assert "(got 220.0); a percentage typed for the ratio? (220 % is overload = 2.2)" in err
     code, err = check(capsys, tmp_path, MOTOR.format(overload=2.2))
-    assert code == 0 and "overload" not in err
+    assert code == 0 and "dynamics.motor.overload" not in err
+
+
+@pytest.mark.parametrize(("change", "said"), [
+    # The springs' 1200 kN/m typed as kN/m: the machine would sit 0.613 m down on them.
+    (("stiffness = 1.2e6", "stiffness = 1200"), ("vibration.stiffness: k = 1200 N/m would let the machine, "
+                                                  "vibration.mass = 75 kg, sag M·g/k = 0.613 m under its weight")),
+    # The machine's 75 kg typed in grams: as heavy a sag on the same springs.
+    (("mass = 75.0", "mass = 75000"), ("vibration.stiffness: k = 1.2e+06 N/m would let the machine, "
+                                       "vibration.mass = 75000 kg, sag M·g/k = 0.613 m under its weight")),
+], ids=["stiffness-in-kN-per-m", "mass-in-grams"])
+def test_mounts_no_spring_could_be_are_asked_about_their_units(capsys, tmp_path, change, said):
+    code, err = check(capsys, tmp_path, MACHINE_ON_SPRINGS.replace(*change))
+    assert code == 0
+    (line,) = [line for line in err.splitlines() if "sag" in line]
+    assert line.startswith("warning: " + said)
+    assert "more than any spring mount (100 mm): a stiffness typed in kN/m or N/mm, or a mass in grams?" in line
+    # The book's own springs sag 0.6 mm: nothing to say.
+    code, err = check(capsys, tmp_path, MACHINE_ON_SPRINGS)
+    assert code == 0 and "sag" not in err
+
+
+def test_a_shafts_bending_is_not_taken_for_mounts_that_sag(capsys, tmp_path):
+    # A slender shaft bends under its disc more than any mount sags, and that is no slip of a unit.
+    text = MACHINE_ON_SPRINGS.replace("stiffness = 1.2e6", 'shaft = { modulus = 2.1e11, diameter = 0.01, length = 1.0 }')
+    code, err = check(capsys, tmp_path, text)
+    assert code == 0 and "sag" not in err
+
