@@ -776,6 +776,11 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
         if mass.radius > FLATTEST_ROTOR * (high - low):
             found.append(Implausible("flat_rotor", f"balancing.masses[{k}].radius", mass.radius, FLATTEST_ROTOR,
                                      name=mass.name, other_key=f"{low_key} to {high_key}", other=high - low))
+        elif radii and max(radii) > FLATTEST_ROTOR * (high - low):
+            # The corrections are masses on the same long rotor: Khurmi's 100 mm typed as 100 among metres.
+            j = max(range(len(radii)), key=lambda index: radii[index])
+            found.append(Implausible("flat_rotor_correction", keys[j], radii[j], FLATTEST_ROTOR,
+                                     name=spec.plane_names[j], other_key=f"{low_key} to {high_key}", other=high - low))
     elif len(spec.planes) == 1 and not found and high > low:
         k, mass = max(enumerate(spec.masses), key=lambda item: item[1].radius)
         if mass.radius > THINNEST_DISC * (high - low):

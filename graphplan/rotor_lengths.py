@@ -58,7 +58,7 @@ FASTEST_BASE_M_S = 20.0
 
 
 # The findings of some lengths in millimetres among others in metres: dividing every length would spoil the rest.
-SOME_IN_MILLIMETRES = frozenset({"mixed", "flat_rotor", "thin_disc"})
+SOME_IN_MILLIMETRES = frozenset({"mixed", "flat_rotor", "flat_rotor_correction", "thin_disc"})
 
 
 def lightest_rotor(eccentricity: float) -> float:
@@ -108,9 +108,10 @@ class Implausible:
                     f"reach so far (a propeller on its motor, a fan, a bicycle's wheel, a wind turbine) weigh at "
                     f"least {self.limit:.3g} kg, more than the whole machine, {self.other_key} = {self.other:g} kg "
                     f"(as millimetres, {self.key} = {self.value / 1000:g})")
-        if self.kind == "flat_rotor":
+        if self.kind in ("flat_rotor", "flat_rotor_correction"):
+            turning = "masses" if self.kind == "flat_rotor" else "corrections"
             return (f"{given} m is {self.value / self.other:.3g} times the rotor's length along its axis, "
-                    f"{self.other:g} m from {self.other_key} (a rotor balanced in two planes is long: its masses "
+                    f"{self.other:g} m from {self.other_key} (a rotor balanced in two planes is long: its {turning} "
                     f"turn no farther than {self.limit:g} times its length from the axis; as millimetres, "
                     f"{self.key} = {self.value / 1000:g})")
         if self.kind == "thin_disc":

@@ -231,3 +231,24 @@ def test_a_shafts_bending_is_not_taken_for_mounts_that_sag(capsys, tmp_path):
     code, err = check(capsys, tmp_path, text)
     assert code == 0 and "sag" not in err
 
+
+@pytest.mark.parametrize(("radius", "key", "plane"), [
+    ("100", "balancing.correction_radius", "X"),
+    ("[0.1, 100]", "balancing.correction_radius[1]", "Y"),
+], ids=["one", "per-plane"])
+def test_a_correction_radius_in_millimetres_on_a_long_rotor_is_asked_about(capsys, tmp_path, radius, key, plane):
+    # Khurmi's 100 mm typed as 100 beside masses and planes in metres: corrections 143 times as far out as the rotor
+    # is long, as the masses' own radii are told, were worked out at 100 m without a word.
+    text = KHURMI_21_2.replace("correction_radius = 0.1", f"correction_radius = {radius}")
+    code, err = check(capsys, tmp_path, text)
+    assert code == 0
+    assert (f"warning: balancing: {key} = 100 m is 143 times the rotor's length along its axis, 0.7 m from "
+            "balancing.masses[0].plane to balancing.masses[3].plane (a rotor balanced in two planes is long: its "
+            f"corrections turn no farther than 20 times its length from the axis; as millimetres, {key} = 0.1): are "
+            "some lengths in millimetres?") in err
+    code, results = run(tmp_path, text)
+    (caution,) = results["balancing"]["warnings"]
+    assert caution["code"] == "lengths-in-mm"
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert (f"the correction radius in plane {plane}, 100 m, is 143 times the 0.7 m the masses and correction planes span "
+            "along the axis") in note

@@ -737,7 +737,7 @@ def _lengths_caution(note: Writer, lengths: LengthsInMillimetres) -> None:
     for item in lengths.found:
         values = {"name": item.name, "value": note.n(item.value), "limit": note.n(item.limit, 3),
                   "other": note.n(item.other), "other_name": item.other_name}
-        if item.kind in ("mixed", "flat_rotor", "thin_disc"):
+        if item.kind in ("mixed", "flat_rotor", "flat_rotor_correction", "thin_disc"):
             values["ratio"] = note.n(item.value / item.other, 3)
         elif item.kind == "rotor_length":
             values["apart"] = note.n(item.value - item.other)
