@@ -616,8 +616,14 @@ class MachineDynamics:
                                 f"{power:g} kW is power = {power * 1000:g})"
                                 if power is not None and power < 1000 and 1000 * motion.torque_at_rest > resisting
                                 else "")
+                # At rest the shaft gets u·M(0): a ratio typed the wrong way up (the shaft's speed over the motor's)
+                # gives it u² of what 1/u would, and is asked about where 1/u would start the machine.
+                u = self.spec.motion.motor.gear_ratio
+                inverted = (f"; gear_ratio = {u:g} turns the shaft faster than the motor: the ratio inverted? (it is "
+                            f"the motor's speed over the shaft's: 1/{u:g} = {1 / u:.4g})"
+                            if u < 1 and motion.torque_at_rest / u ** 2 > resisting else "")
                 return (f"{unmoved}, {resisting:.4g} N·m (a stronger motor, a larger gear ratio, or a start from "
-                        f"another angle){in_kilowatts}")
+                        f"another angle){in_kilowatts}{inverted}")
             held = motion.brake.torque
             return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting:.4g} + "
                     f"{held:g} = {resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the "

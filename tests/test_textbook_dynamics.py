@@ -252,3 +252,20 @@ def test_a_correction_radius_in_millimetres_on_a_long_rotor_is_asked_about(capsy
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert (f"the correction radius in plane {plane}, 100 m, is 143 times the 0.7 m the masses and correction planes span "
             "along the axis") in note
+
+
+def test_a_gear_ratio_typed_the_wrong_way_up_is_asked_about_where_the_machine_does_not_start(capsys, tmp_path):
+    # The press's gearbox from 1440 to 100 rpm typed as the shaft's speed over the motor's, 1/14.4: the motor then
+    # gives the shaft a fourteenth of its torque at rest, and the warning only asked for "a larger gear ratio".
+    text = MOTOR.format(overload=2.2).replace("gear_ratio = 14.4", "gear_ratio = 0.0694")
+    code, err = check(capsys, tmp_path, text)
+    assert code == 0
+    (line,) = [line for line in err.splitlines() if "does not start" in line]
+    assert line.endswith("; gear_ratio = 0.0694 turns the shaft faster than the motor: the ratio inverted? (it is "
+                         "the motor's speed over the shaft's: 1/0.0694 = 14.41)")
+    # The right way up the press starts, and a speed-up gear too weak to start it is not asked about.
+    code, err = check(capsys, tmp_path, MOTOR.format(overload=2.2))
+    assert "does not start" not in err
+    code, err = check(capsys, tmp_path, text.replace("power = 4000.0", "power = 40.0"))
+    (line,) = [line for line in err.splitlines() if "does not start" in line]
+    assert "inverted" not in line
