@@ -269,3 +269,17 @@ def test_a_gear_ratio_typed_the_wrong_way_up_is_asked_about_where_the_machine_do
     code, err = check(capsys, tmp_path, text.replace("power = 4000.0", "power = 40.0"))
     (line,) = [line for line in err.splitlines() if "does not start" in line]
     assert "inverted" not in line
+
+
+@pytest.mark.parametrize(("locale", "said", "unsaid"), [
+    ("en", "ωmax = 63.774 rad/s at φ = 51.43°", "into the cycle"),
+    ("ru", "ωmax = 63,774 рад/с при φ = 51,43°", "от начала цикла"),
+    ("zh", "φ = 51.43°", "自循环起点"),
+])
+def test_a_speeds_angle_is_not_said_twice_where_the_cycle_starts_at_nought(tmp_path, locale, said, unsaid):
+    # Khurmi's diagram runs from 0°: the flywheel's box wrote "at φ = 51.43° (51.43° into the cycle)", the same angle
+    # twice, which a reader takes for two different things.
+    code, _ = run(tmp_path, khurmi_16_5_scene(), "--locale", locale)
+    assert code == 0
+    drawing = (tmp_path / "out" / "dynamics.svg").read_text(encoding="utf-8")
+    assert said in drawing and unsaid not in drawing

@@ -709,9 +709,11 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
         # The speed as the scene gives it: 1462.5 rpm, which four digits drew as 1462 beside the note's 1462.5.
         lines.append(words["dyn_moved"].format(rpm=short(flywheel.shaft_rpm, 6), value=short(flywheel.moved, 4)))
     for key, index in (("dyn_omega_max", flywheel.index_max), ("dyn_omega_min", flywheel.index_min)):
-        lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5),
-                                       angle=short(math.degrees(model.driver[index]) % 360.0, 4),
-                                       travel=short(math.degrees(model.coordinate[index]), 4)))
+        angle = short(math.degrees(model.driver[index]) % 360.0, 4)
+        travel = short(math.degrees(model.coordinate[index]), 4)
+        # A cycle that starts at 0° (a load diagram's, a crank's from 0°) has the two angles alike: said once.
+        key = key if travel != angle else f"{key}_at"
+        lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5), angle=angle, travel=travel))
     if flywheel.inertia <= 0:
         lines.append(words["dyn_no_flywheel"])
     items: list[Primitive] = [Text((0.0, 0.0), words["dyn_results"], HEADING, "start", weight="bold")]
