@@ -19,7 +19,7 @@ from typing import Any
 
 from .errors import SceneError, as_written
 from .lookalikes import lookalike_hint, plain
-from .units import RPM
+from .units import RPM, STANDARD_GRAVITY
 
 _REQUIRED = object()
 
@@ -356,11 +356,24 @@ class Table:
         """A required key that is missing is often there, misspelt: name the misspelling of one of ``keys``."""
         strangers = [k for k in self.data if k not in self._taken]
         for key in keys:
+            if key == "mass":
+                self._weight_for_mass(strangers)
             close = [k for k in strangers if k.lower() == key.lower() or ALIASES.get(k.strip().lower()) == key] \
                 or difflib.get_close_matches(key, strangers, n=1, cutoff=0.7) \
                 or [k for k in strangers if _swapped(k.lower(), key.lower())]
             if close:
                 raise SceneError(self.where(close[0]), f"unknown key; did you mean {key!r}?")
+
+    def _weight_for_mass(self, strangers: list[str]) -> None:
+        """A weight given where the mass is asked for: named with the mass it stands for, as a weight in N is no
+        mass in kg ("did you mean 'mass'?" alone would have the newtons typed as kilograms)."""
+        for key in strangers:
+            if key.strip().lower() in ("weight", "w"):
+                value = self.data[key]
+                number = value if isinstance(value, int | float) and not isinstance(value, bool) else None
+                meant = f" = {number / STANDARD_GRAVITY:.4g}" if number is not None else " = W/g"
+                raise SceneError(self.where(key), "unknown key; the mass is given as mass, in kg: a weight W in N is "
+                                 f"mass = W/g (g = {STANDARD_GRAVITY} m/s²), here mass{meant}")
 
     def named_otherwise(self, key: str, names: frozenset[str], what: str) -> None:
         """A key that is another name people use for ``key`` (μ, mu or coefficient for a friction coefficient's
@@ -516,6 +529,8 @@ class Table:
     def done(self, *, list_known: bool = False) -> None:
         """Reject the first key that nobody took, suggesting the nearest valid one, or with ``list_known`` (a
         table whose keys are all read whatever it holds) every valid one when none is near."""
+        if "mass" in self._taken:
+            self._weight_for_mass([key for key in self.data if key not in self._taken])
         for key in self.data:
             if key not in self._taken:
                 hint = suggestion(key, sorted(self._taken))

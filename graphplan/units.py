@@ -8,6 +8,8 @@ import math
 
 #: rad/s in one revolution per minute.
 RPM = math.pi / 30.0
+# Standard gravity (m/s²), by which a weight in N is told as the mass in kg it stands for.
+STANDARD_GRAVITY = 9.80665
 
 #: A length this many times another of the same machine is one typed in millimetres among metres: a linkage's
 #: lengths stand within some 1:50 of each other (a shaper's 0.1 m crank beside its 0.6 m rocker is 1:6), and a

@@ -46,7 +46,7 @@ from .rotor_lengths import (
     LengthsInMillimetres,
     lightest_rotor,
 )
-from .units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
+from .units import RPM, STANDARD_GRAVITY, motor_speed_in_rpm, percentage_question, rpm_question
 
 Scalar = float | np.ndarray
 #: Without damping, a speed this close to ωn (relative) is resonance: its amplitude is rounding's, not the machine's.
@@ -58,7 +58,6 @@ NEAR_RESONANCE = 0.1
 LARGE_MAGNIFICATION = 10.0
 # The most a machine's isolating mounts sag under its weight (m): steel springs reach some 50–100 mm, rubber less.
 MOST_MOUNT_SAG = 0.1
-STANDARD_GRAVITY = 9.80665
 Support = Literal["simply_supported", "cantilever"]
 SUPPORTS = ("simply_supported", "cantilever")
 
