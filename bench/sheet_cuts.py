@@ -1,0 +1,236 @@
+"""How many sheets the force sheets take as the run chooses their cuts, against more cuts tried and a search of
+every combination of cuts.
+
+    python bench/sheet_cuts.py [--sheet SHEET ...] [--budget SECONDS]
+
+A force sheet that no sheet holds whole stands in parts; `force_rows.Rows.cuts` offers the first
+`force_rows.MOST_CUTS` cuts into as many parts (least paper first), and `render/sheet.py`
+`fewest_sheets_cuts` chooses among them greedily, a force sheet after another, each taking the first cut that
+saves a sheet.  For every fixture and every starter that has force sheets, in en, ru and zh, on the scene's own
+sheet (and each `--sheet` given), a fresh interpreter runs `graphplan run` (`run.run`) three times: as it is,
+with `MOST_CUTS = 8` and with every cut (`MOST_CUTS` patched), after an untimed run that loads the modules.  The
+last run's call of `fewest_sheets_cuts` (its cuts, the load diagrams packed after them) is then answered again by
+the package's own functions: greedy over the first 4, the first 8 and all the cuts (the same function, each
+sheet's cuts cut short), and every combination of the cuts packed in turn (`render/packing.pack`), stopped after
+`--budget` processor seconds (the search then says how far it came).  Every figure counts the sheets that
+`pack` lays the chosen parts on, as the run's sheet_N.svg of forces are packed.
+
+Times are processor times (the machine is shared): each run's own, and each choice's as a fraction of the run
+as it is.  Results go to bench/results/sheet_cuts.json and sheet_cuts.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import itertools
+import json
+import math
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+sys.path.insert(0, str(ROOT))
+
+from cold_run import write_results
+
+LOCALES = ("en", "ru", "zh")
+# The starters that make force sheets (`graphplan new KIND`); the flywheel and the rotor have no linkage.
+STARTERS = ("crank-rocker", "slider-crank", "slotted-lever", "shaper", "triad", "flywheel", "rotor")
+MORE_CUTS = 8
+ALL_CUTS = 10**9
+BUDGET_S = 60.0
+
+
+def scene_of(name: str, scratch: Path):
+    """The scene of a fixture (its path) or a starter (``new:KIND``), read from a file as a user's is."""
+    import graphplan
+    from graphplan.starters import starter
+
+    if name.startswith("new:"):
+        path = scratch / f"{name[4:]}.toml"
+        path.write_text(starter(name[4:]), encoding="utf-8")
+        return graphplan.load(path)
+    return graphplan.load(ROOT / name)
+
+
+def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
+    """The measurement of one scene in one locale on one sheet (``None``: the scene's own), in this interpreter."""
+    from graphplan import run as run_module
+    from graphplan.errors import SceneError
+    from graphplan.render import force_rows
+    from graphplan.render import sheet as sheet_module
+    from graphplan.render.packing import pack
+
+    own = sheet_module.fewest_sheets_cuts
+    calls: list[tuple] = []
+
+    def recorded(cuts, after, chosen, form):
+        calls.append((cuts, after, chosen, form))
+        return own(cuts, after, chosen, form)
+
+    def timed_run(most: int, scratch: Path) -> float:
+        calls.clear()
+        force_rows.MOST_CUTS = most
+        scratch.mkdir(parents=True)
+        scene = scene_of(name, scratch)
+        start = time.process_time()
+        run_module.run(scene, scratch / f"out-{most}", locale=locale, sheet=sheet)
+        return time.process_time() - start
+
+    usual = force_rows.MOST_CUTS
+    sheet_module.fewest_sheets_cuts = recorded
+    with tempfile.TemporaryDirectory() as scratch_name:
+        scratch = Path(scratch_name)
+        timed_run(usual, scratch / "warm")  # the modules loaded, as every later run finds them
+        runs = {"4": timed_run(usual, scratch / "a"), str(MORE_CUTS): timed_run(MORE_CUTS, scratch / "b"),
+                "all": timed_run(ALL_CUTS, scratch / "c")}
+    force_rows.MOST_CUTS = usual
+    sheet_module.fewest_sheets_cuts = own
+    result: dict = {"scene": name, "locale": locale, "sheet": sheet or "scene's", "run_cpu_s": runs}
+    if not calls:
+        result["force_sheets"] = 0
+        return result
+    cuts, after, chosen, form = calls[-1]  # the run's own: the μl choice's calls come before it
+    result.update(force_sheets=len(cuts), ways=[len(ways) for ways in cuts], sheet=chosen)
+
+    def sheets_taken(parts) -> float:
+        """The sheets the parts (a flat list) take with the drawings after them."""
+        try:
+            return len(pack([*parts, *after], chosen, form))
+        except SceneError:
+            return math.inf
+
+    base = runs["4"]
+    choices = {}
+    for label, most in (("greedy/4", usual), (f"greedy/{MORE_CUTS}", MORE_CUTS), ("greedy/all", ALL_CUTS)):
+        start = time.process_time()
+        parts = own([ways[:most] for ways in cuts], after, chosen, form)
+        used = time.process_time() - start
+        choices[label] = {"sheets": sheets_taken(parts), "cpu_s": used, "of_run": used / base}
+    # Every combination of the cuts, those of the sheets with one way fixed, until the budget is spent.
+    varied = [k for k, ways in enumerate(cuts) if len(ways) > 1]
+    total = math.prod(len(cuts[k]) for k in varied)
+    start = time.process_time()
+    best, tried = math.inf, 0
+    for combination in itertools.product(*(range(len(cuts[k])) for k in varied)):
+        if time.process_time() - start > budget:
+            break
+        picked = [ways[0] for ways in cuts]
+        for k, index in zip(varied, combination, strict=True):
+            picked[k] = cuts[k][index]
+        best = min(best, sheets_taken([part for parts in picked for part in parts]))
+        tried += 1
+    used = time.process_time() - start
+    choices["exhaustive"] = {"sheets": best, "cpu_s": used, "of_run": used / base, "combinations": total,
+                             "tried": tried, "complete": tried == total}
+    result["choices"] = choices
+    result["run_sheets"] = choices["greedy/4"]["sheets"]
+    return result
+
+
+def measured(name: str, locale: str, sheet: str | None, budget: float) -> dict:
+    """:func:`one` in a fresh interpreter, so that no scene's layouts or caches reach another's."""
+    command = [sys.executable, str(Path(__file__).resolve()), "--one", name, locale, "--budget", str(budget)]
+    if sheet:
+        command += ["--sheet", sheet]
+    done = subprocess.run(command, capture_output=True, text=True, check=False, cwd=ROOT)
+    if done.returncode != 0:
+        return {"scene": name, "locale": locale, "sheet": sheet or "scene's", "error": done.stderr.strip()[-400:]}
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+def table(rows: list[dict]) -> str:
+    lines = [("| scene | locale | sheet | force sheets (ways each) | greedy/4 | greedy/8 | greedy/all | exhaustive "
+              "(tried of all) | run s (4 / 8 / all cuts) | choice's time of the run: greedy/4, /8, /all, exhaustive |"),
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for row in rows:
+        if "error" in row:
+            said = row["error"].splitlines()[-1] if row["error"] else "?"
+            lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | refused: "
+                         f"{said.split(': ', 2)[-1].split(' (')[0][:100]} | | | | | | |")
+            continue
+        runs = row["run_cpu_s"]
+        timing = " / ".join(f"{runs[key]:.2f}" for key in ("4", str(MORE_CUTS), "all"))
+        if "choices" not in row:
+            lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | none | | | | | {timing} | |")
+            continue
+        c = row["choices"]
+        ex = c["exhaustive"]
+        shares = ", ".join(f"{100 * c[key]['of_run']:.2g} %" for key in ("greedy/4", f"greedy/{MORE_CUTS}",
+                                                                           "greedy/all", "exhaustive"))
+        lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | {row['force_sheets']} "
+                     f"({' '.join(map(str, row['ways']))}) | {c['greedy/4']['sheets']} | "
+                     f"{c[f'greedy/{MORE_CUTS}']['sheets']} | {c['greedy/all']['sheets']} | {ex['sheets']} "
+                     f"({ex['tried']} of {ex['combinations']}) | {timing} | {shares} |")
+    return "\n".join(lines)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sheet", action="append", default=[], help="also measure on this sheet (A4, A3, ...)")
+    parser.add_argument("--budget", type=float, default=BUDGET_S,
+                        help="processor seconds the exhaustive search may take per scene")
+    parser.add_argument("--one", nargs=2, metavar=("SCENE", "LOCALE"), help=argparse.SUPPRESS)
+    arguments = parser.parse_args()
+    if arguments.one:
+        sheet = arguments.sheet[0] if arguments.sheet else None
+        print(json.dumps(one(*arguments.one, sheet, arguments.budget), default=str))
+        return
+    names = [str(path.relative_to(ROOT)) for path in sorted((ROOT / "fixtures").glob("*.toml"))]
+    names += [f"new:{kind}" for kind in STARTERS]
+    rows = []
+    for sheet in (None, *arguments.sheet):
+        for name in names:
+            for locale in LOCALES:
+                rows.append(measured(name, locale, sheet, arguments.budget))
+                print(json.dumps(rows[-1]), flush=True)
+    summarised(rows, arguments.budget)
+
+
+def summarised(rows: list[dict], budget: float) -> None:
+    """The rows, with what they add up to, written as bench/results/sheet_cuts.json and .md."""
+    drawn = [row for row in rows if "choices" in row]
+    chosen = [row for row in drawn if any(ways > 1 for ways in row["ways"])]
+    refused = [row for row in rows if "error" in row]
+    worse = {label: sum(row["choices"][label]["sheets"] > row["choices"]["exhaustive"]["sheets"] for row in drawn)
+             for label in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all")}
+    incomplete = [row for row in drawn if not row["choices"]["exhaustive"]["complete"]]
+    most_ways = max((ways for row in drawn for ways in row["ways"]), default=0)
+    past = {most: sum(ways > most for row in drawn for ways in row["ways"]) for most in (4, MORE_CUTS)}
+    shares = {label: max((row["choices"][label]["of_run"] for row in drawn), default=0.0)
+              for label in ("greedy/4", f"greedy/{MORE_CUTS}", "greedy/all", "exhaustive")}
+    run_ratios = {key: statistics.median(row["run_cpu_s"][key] / row["run_cpu_s"]["4"] for row in drawn)
+                  for key in (str(MORE_CUTS), "all")} if drawn else {}
+    result = {"budget_s": budget, "rows": rows, "with_force_sheets": len(drawn), "with_a_choice": len(chosen),
+              "refused": len(refused), "worse_than_exhaustive": worse, "exhaustive_incomplete": len(incomplete),
+              "most_cuts_of_a_sheet": most_ways, "sheets_past": past, "most_share_of_run": shares,
+              "median_run_ratio_to_4": run_ratios}
+    markdown = (
+        "# The cuts of force sheets: greedy over 4 cuts against more cuts and every combination\n\n"
+        f"{len(rows)} runs (every fixture and starter in en, ru, zh, on each sheet measured), {len(drawn)} with "
+        f"force sheets, {len(chosen)} of them with a force sheet cut more than one way, {len(refused)} refused (the "
+        f"scene's μl or a drawing no such sheet holds). A force sheet had at most **{most_ways}** cuts; "
+        f"{past[4]} force sheets had more than 4, {past[MORE_CUTS]} more than {MORE_CUTS}. Sheets taken beyond "
+        "the best that every combination of the cuts gives: "
+        + ", ".join(f"{label} in **{count}** runs" for label, count in worse.items())
+        + f"; the exhaustive search stopped at its budget ({budget:g} processor s) in {len(incomplete)} runs "
+        "(its row says how many combinations it tried of how many).\n\n"
+        "Processor time, the most any run's choice took as a share of the run with 4 cuts: "
+        + ", ".join(f"{label} {100 * share:.2g} %" for label, share in shares.items())
+        + "; the whole run with 8 and with every cut, median of its ratio to the run with 4: "
+        + ", ".join(f"{key} {ratio:.3f}" for key, ratio in run_ratios.items()) + ".\n\n"
+        + table(rows) + "\n\n"
+        "Sheets: the force sheets' (with the load diagrams) as `render/packing.pack` lays them. Run s: the processor "
+        "seconds of `run.run` with `force_rows.MOST_CUTS` 4, 8 and every cut; a choice's time: the processor time "
+        "of choosing (and packing) alone, as a share of the run with 4.\n"
+        "Regenerate with `python bench/sheet_cuts.py --sheet A3 --sheet A4 --budget 20`.\n")
+    write_results("sheet_cuts", result, markdown)
+
+
+if __name__ == "__main__":
+    main()
