@@ -103,6 +103,16 @@ class Panel:
     # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
     # diagrams, measured by its unlettered layers).  None: ``layers`` as they are.
     lettered: Callable[[], tuple[Layer, ...]] | None = field(default=None, repr=False, compare=False)
+    # A sequence no sheet holds whole that a sheet's room takes run by run (the velocity plans of every position):
+    # ``runs(start, stop)`` draws its items start to stop - 1 as one drawing in each of its ways, the first under
+    # the title, a later one under its own heading; ``run_count`` is how many items there are.  Cut into fixed
+    # parts instead (a grid's rows), a sheet with room for a row and a half took one row, and the grid went one
+    # row to a sheet.
+    runs: Callable[[int, int], Panel] | None = field(default=None, repr=False, compare=False)
+    run_count: int = 0
+    # True for such a run as placed: it stands below every run of its drawing before it on the sheet, so that the
+    # sheet reads as one grid, row after row.
+    in_rows: bool = False
     extent: Rect = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -201,7 +211,10 @@ class Page:
         # A part too big to stand under its heading says whose it is only by its sheet's title block: beside
         # another drawing it read as that one's (position 2's lever under "position 7"), so the two never share.
         others = [drawing for drawing in self.drawings if _whole_of(drawing) != _whole_of(panel)]
-        if others and (_headless(panel) or any(_headless(drawing) for drawing in others)):
+        names = {placed.name for placed, _, _ in self.placed}
+        # A run headless only because it stands under the run it goes on from reads as that one's: no ambiguity.
+        if others and (_headless(panel) or any(_headless(drawing) and not (drawing.in_rows and drawing.continues in names)
+                                               for drawing in others)):
             return False
         if panel.continues and any(placed.name == panel.continues for placed, _, _ in self.placed):
             # Under the heading of the part it goes on from, which it would only repeat as "continued".
@@ -256,6 +269,8 @@ class Page:
                 rect = (left, bottom, left + width, top)
                 if any(left < box[2] and box[0] < rect[2] for box in level) \
                         or not all(_reads_after(rect, earlier) for earlier in same_kind):
+                    continue
+                if panel.in_rows and not all(rect[3] <= earlier[1] + 1e-6 for earlier in same_kind):
                     continue
                 union = rect if common is None else (min(common[0], rect[0]), min(common[1], rect[1]),
                                                      max(common[2], rect[2]), max(common[3], rect[3]))
@@ -358,6 +373,9 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
         page = _empty_page(sheet, form, _turn_holding(panel, sheet, form, turns))
         if page.place(panel):
             pages.append(page)
+        elif panel.runs is not None:
+            last_of_kind[kind] = _flowed(pages, earliest, panel, sheet, form, turns)
+            continue
         elif not panel.parts:
             raise _too_big(panel, sheet, form, turns)
         else:
@@ -368,6 +386,46 @@ def _pack_on(panels: Sequence[Panel], sheet: str, form: str, turns: Sequence[boo
         _centre(page)
         _headings_named(page)
     return pages
+
+
+def _flowed(pages: list[Page], earliest: int, panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> int:
+    """``panel``'s items (:attr:`Panel.runs`) placed in order as a draftsman fills sheets: on each sheet from
+    ``earliest`` on, beside the drawings already there, as long a run as its room holds, the next run below it
+    (narrower, beside the title block) or on the next sheet; the index of the last page taken."""
+    assert panel.runs is not None
+    start, at, previous = 0, earliest, ""
+    while start < panel.run_count:
+        for k in range(at, len(pages) + 1):
+            if k == len(pages):
+                first = panel.runs(start, start + 1)
+                page = _empty_page(sheet, form, _turn_holding(first, sheet, form, turns))
+            elif pages[k].label:
+                continue
+            else:
+                page = pages[k]
+            stop = _longest_run(page, panel, start, previous)
+            if stop is not None:
+                break
+            if k == len(pages):
+                raise _too_big(first, sheet, form, turns, panel.label)
+        if k == len(pages):
+            pages.append(page)
+        previous, start, at = page.placed[-1][0].name, stop, k
+    return at
+
+
+def _longest_run(page: Page, panel: Panel, start: int, previous: str) -> int | None:
+    """Where the longest run of ``panel``'s items from ``start`` that ``page`` holds ends (placed there), going on
+    from the run named ``previous``; None where not even one item fits."""
+    assert panel.runs is not None
+    for stop in range(panel.run_count, start, -1):
+        run = panel.runs(start, stop)
+        if not page.fits_empty(run):
+            continue
+        ways = tuple(replace(way, in_rows=True, alternatives=(), continues=previous) for way in run.ways)
+        if page.place(replace(ways[0], alternatives=ways[1:])):
+            return stop
+    return None
 
 
 def _headings_named(page: Page) -> None:

@@ -283,7 +283,35 @@ def velocity_plans_panel(analysis: Analysis) -> Panel:
                       for arrangement in velocity_plans_layout.arrangements(drawing, counts))
     others = [way for way in others if _size(way.layers) != _size(first.layers)]
     # Plans drawn at μV, no length: a sheet of them alone leaves its title block's scale box empty.
-    return _to_no_length_scale(replace(first, alternatives=tuple(others)))
+    return _to_no_length_scale(replace(first, alternatives=tuple(others), runs=_grid_runs(drawing, label, continued),
+                                       run_count=len(drawing.plans)))
+
+
+def _grid_runs(drawing: velocity_plans_layout.VelocityPlans, label: str, continued: str) -> Callable[[int, int], Panel]:
+    """The grid's plans ``start`` to ``stop`` - 1 as one drawing, for a sheet that holds as many as its room does
+    (:attr:`Panel.runs`): in as many columns as they are, up to the most tried, and in each fewer; a run after the
+    first under the title "continued" with μV, as a grader measures each sheet's plans by the μV on it."""
+    arranged = velocity_plans_layout.runs(drawing)
+    # Broken to no narrower than the title, which a sheet holds, nor than the run's plans.
+    least = text_width(drawing.title, plan_layout.TITLE_SIZE, "bold")
+
+    def run(start: int, stop: int) -> Panel:
+        ways = []
+        name = f"velocity-plans-from-{start + 1}"
+        for arrangement in arranged(start, stop, range(min(stop - start, _MOST_VELOCITY_PLAN_COLUMNS), 0, -1)):
+            way = split(arrangement, name, label)
+            if not start:
+                ways.append(_to_no_length_scale(way))
+                continue
+            x0, _, x1, top = way.extent
+            # On one line where the sheet has the room, else broken to the title's or the plans' width.
+            for lines in dict.fromkeys(((continued,), tuple(fitted(continued, max(least, x1 - x0),
+                                                                  plan_layout.TITLE_SIZE, "bold")))):
+                heading = Layer(HEADING_LAYER, velocity_plans_layout.heading_texts(lines, drawing.scale_line, (x0, top)))
+                ways.append(_to_no_length_scale(replace(way, layers=(*way.layers, heading))))
+        return replace(ways[0], alternatives=tuple(ways[1:]))
+
+    return run
 
 
 def _rows_continued(panel: Panel, drawing: velocity_plans_layout.VelocityPlans, continued: str) -> Panel:

@@ -15,8 +15,8 @@ apart (:func:`graphplan.render.sheet.split`), the title with the first.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
 
 from ..mechanism import Mechanism
 from ..plans import Plan
@@ -83,7 +83,22 @@ def arrangements(drawing: VelocityPlans, column_counts: Sequence[int | None]) ->
     return [_grid_arrangement(drawing, drawn, columns) for columns in column_counts]
 
 
-def _grid_arrangement(drawing: VelocityPlans, drawn: Sequence[Sequence[Layer]], columns: int | None) -> Arrangement:
+def runs(drawing: VelocityPlans) -> Callable[[int, int, Sequence[int]], list[Arrangement]]:
+    """The grids of the plans ``start`` to ``stop`` (a run of them, in order) in each of ``column_counts``, the
+    plans drawn once for all: a sheet that holds no grid whole takes it run by run, as many plans as its room
+    holds.  Only the run from the first plan carries the title and μV; a later one's heading is the sheet's."""
+    drawn = [prefixed(plan_layers(plan, "velocity", drawing.pole, drawing.mechanism), field_name(number))
+             for number, plan in drawing.plans]
+
+    def arranged(start: int, stop: int, column_counts: Sequence[int]) -> list[Arrangement]:
+        run = replace(drawing, plans=drawing.plans[start:stop], captions=drawing.captions[start:stop])
+        return [_grid_arrangement(run, drawn[start:stop], columns, titled=start == 0) for columns in column_counts]
+
+    return arranged
+
+
+def _grid_arrangement(drawing: VelocityPlans, drawn: Sequence[Sequence[Layer]], columns: int | None,
+                      titled: bool = True) -> Arrangement:
     extents = [bounds(layers) for layers in drawn]
     widths = [max(x1 - x0, *(text_width(line, CAPTION_SIZE, "bold") for line in caption))
               for (x0, _, x1, _), caption in zip(extents, drawing.captions, strict=True)]
@@ -104,6 +119,8 @@ def _grid_arrangement(drawing: VelocityPlans, drawn: Sequence[Sequence[Layer]], 
         layers.extend(moved_layers(layers_of, left + (width - x0 - x1) / 2, top - height / 2 - (y0 + y1) / 2))
         layers.append(Layer(f"{field_name(number)}-caption",
                             caption_texts(caption, (left + width / 2, top - height - CAPTION_GAP_MM))))
+    if not titled:
+        return Arrangement(layers, fields)
     left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
     # The title goes with the first plan, over it: where a sheet takes the plans apart, μV stays in view.
     layers.append(Layer(f"{field_name(drawing.plans[0][0])}-title",
@@ -138,4 +155,4 @@ def _aspect(columns: int, widths: Sequence[float], heights: Sequence[float], dep
     return width / height / SHEET_ASPECT
 
 
-__all__ = ["VelocityPlans", "arrange", "arrangements", "field_name", "heading_texts", "layout"]
+__all__ = ["VelocityPlans", "arrange", "arrangements", "field_name", "heading_texts", "layout", "runs"]
