@@ -6,6 +6,7 @@ against the analytic solution at its position, and every vector drawn against th
 divided by μV.
 """
 
+import itertools
 import json
 import math
 import re
@@ -177,7 +178,7 @@ def test_on_a_small_sheet_the_plans_stand_apart_each_once_in_the_order_of_the_po
         for sheet_number, _, rect in placed:
             by_sheet.setdefault(sheet_number, []).append(rect)
         for rects in by_sheet.values():
-            assert all(later[3] <= earlier[1] for earlier, later in zip(rects, rects[1:]))
+            assert all(later[3] <= earlier[1] for earlier, later in itertools.pairwise(rects))
 
 
 def test_a_grid_no_sheet_holds_stands_row_by_row_in_the_order_of_the_positions():
