@@ -8,8 +8,8 @@ this module only sets them out: in a grid read left to right and top to
 bottom, each column as wide as its widest plan and each row as tall as its
 tallest, its columns chosen so that the grid is about as wide against its
 height as a sheet of the A series, under the drawing's title and its μV.  Each plan stands in a field of its own,
-``position-N``, so that a sheet too small for the whole takes the plans
-apart (:func:`graphplan.render.sheet.split`), the title with the first.
+``position-N``, the title with the first.  Sheets too small for the whole
+take it in runs (:func:`runs`), each as long as a sheet's room holds.
 """
 
 from __future__ import annotations
