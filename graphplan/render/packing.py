@@ -418,11 +418,17 @@ def _longest_run(page: Page, panel: Panel, start: int, previous: str) -> int | N
     """Where the longest run of ``panel``'s items from ``start`` that ``page`` holds ends (placed there), going on
     from the run named ``previous``; None where not even one item fits."""
     assert panel.runs is not None
-    for stop in range(panel.run_count, start, -1):
-        run = panel.runs(start, stop)
-        if not page.fits_empty(run):
-            continue
-        ways = tuple(replace(way, in_rows=True, alternatives=(), continues=previous) for way in run.ways)
+    # The longest run an empty sheet holds, counted up from one: a long sequence (48 plans) is not drawn whole to
+    # find that a sheet holds ten.
+    runs = {start + 1: panel.runs(start, start + 1)}
+    longest = start + 1
+    while longest < panel.run_count:
+        runs[longest + 1] = panel.runs(start, longest + 1)
+        if not page.fits_empty(runs[longest + 1]):
+            break
+        longest += 1
+    for stop in range(longest, start, -1):
+        ways = tuple(replace(way, in_rows=True, alternatives=(), continues=previous) for way in runs[stop].ways)
         if page.place(replace(ways[0], alternatives=ways[1:])):
             return stop
     return None
