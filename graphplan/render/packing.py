@@ -329,6 +329,24 @@ def pack(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
     it upright only where it opens with a drawing too tall for it across.
     """
     check_sheet(sheet)
+    if not any(panel.runs is not None for panel in panels):
+        return _packed(panels, sheet, form)
+    # A sequence taken in runs fills each sheet, but each run that opens a sheet stands under its heading, which
+    # on a narrow sheet (an upright A4) takes the room of a plan: where its plans apart, bare, as they stood before,
+    # need fewer sheets, they stand so.
+    apart = [replace(panel, runs=None) for panel in panels]
+    try:
+        flowed = _packed(panels, sheet, form)
+    except SceneError:
+        return _packed(apart, sheet, form)
+    with contextlib.suppress(SceneError):
+        fewer = _packed(apart, sheet, form)
+        if len(fewer) < len(flowed):
+            return fewer
+    return flowed
+
+
+def _packed(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
     turns = orientations(sheet)
     if len(turns) == 1:
         return _pack_on(panels, sheet, form, turns)

@@ -304,11 +304,18 @@ def _grid_runs(drawing: velocity_plans_layout.VelocityPlans, label: str, continu
                 ways.append(_to_no_length_scale(way))
                 continue
             x0, _, x1, top = way.extent
-            # On one line where the sheet has the room, else broken to the title's or the plans' width.
-            for lines in dict.fromkeys(((continued,), tuple(fitted(continued, max(least, x1 - x0),
-                                                                  plan_layout.TITLE_SIZE, "bold")))):
+            # On one line where the sheet has the room, else broken to the title's width, or narrower down to the
+            # plans' (an upright A4 is narrower than the title), the fewest lines the sheet holds.
+            rooms = sorted({max(least * share, x1 - x0) for share in (1.0, 0.75, 0.5, 0.0)}, reverse=True)
+            for lines in dict.fromkeys((continued,) if room is None
+                                       else tuple(fitted(continued, room, plan_layout.TITLE_SIZE, "bold"))
+                                       for room in (None, *rooms)):
                 heading = Layer(HEADING_LAYER, velocity_plans_layout.heading_texts(lines, drawing.scale_line, (x0, top)))
                 ways.append(_to_no_length_scale(replace(way, layers=(*way.layers, heading))))
+            if stop - start == 1:
+                # Last of all a plan bare, as the plans stood apart before: on a sheet that holds it under no heading
+                # (a Russian A4's) it shares that sheet with nothing, whose title block names it.
+                ways.append(_to_no_length_scale(way))
         return replace(ways[0], alternatives=tuple(ways[1:]))
 
     return run
