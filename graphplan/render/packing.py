@@ -213,7 +213,8 @@ class Page:
         others = [drawing for drawing in self.drawings if _whole_of(drawing) != _whole_of(panel)]
         names = {placed.name for placed, _, _ in self.placed}
         # A run headless only because it stands under the run it goes on from reads as that one's: no ambiguity.
-        if others and (_headless(panel) or any(_headless(drawing) and not (drawing.in_rows and drawing.continues in names)
+        if others and (_headless(panel) or any(_headless(drawing)
+                                               and not (drawing.in_rows and drawing.continues in names)
                                                for drawing in others)):
             return False
         if panel.continues and any(placed.name == panel.continues for placed, _, _ in self.placed):
