@@ -228,3 +228,44 @@ angle = 270.0
 count = {count}
 plans = [2]
 """
+
+
+def watt_ii(*, every_velocity_plan: bool = False, sheet: str | None = None) -> str:
+    """A Watt II six-bar: two four-bars in series, O-A-B-C and, from D on the ternary rocker CBD, D-E-F; its
+    output link 6 works turning ccw.  ``every_velocity_plan`` asks for the velocity plans of every position, and
+    ``sheet`` for the course-project sheets in that format."""
+    drawing = f'[drawing]\nsheet = "{sheet}"\n' if sheet is not None else ""
+    every = 'velocity_plans = "all"\n' if every_velocity_plan else ""
+    return f"""
+[scene]
+title = "Watt II six-bar linkage"
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0], C = [0.35, 0.0], F = [0.60, 0.25] }}
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.10
+omega = 12.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.35, 0.25]
+assembly = "left"
+[points]
+D = {{ link = 4, from = "C", toward = "B", at = 0.12, offset = -0.10 }}
+[[groups]]
+kind = "RRR"
+links = [5, 6]
+joints = ["D", "E", "F"]
+lengths = [0.30, 0.20]
+assembly = "right"
+[positions]
+count = 12
+start = "extreme"
+working = {{ link = 6, sense = "ccw" }}
+plans = [3, 9]
+{every}{drawing}"""

@@ -11,6 +11,7 @@ import re
 
 import numpy as np
 import pytest
+from scene_texts import watt_ii
 
 import graphplan
 
@@ -155,39 +156,7 @@ def test_whitworth_quick_return():
     assert strokes.time_ratio == pytest.approx((360 - idle) / idle, rel=1e-9)
 
 
-WATT_II = """
-[scene]
-title = "Watt II six-bar linkage"
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.35, 0.0], F = [0.60, 0.25] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.10
-omega = 12.0
-[[groups]]
-kind = "RRR"
-links = [3, 4]
-joints = ["A", "B", "C"]
-lengths = [0.35, 0.25]
-assembly = "left"
-[points]
-D = { link = 4, from = "C", toward = "B", at = 0.12, offset = -0.10 }
-[[groups]]
-kind = "RRR"
-links = [5, 6]
-joints = ["D", "E", "F"]
-lengths = [0.30, 0.20]
-assembly = "right"
-[positions]
-count = 12
-start = "extreme"
-working = { link = 6, sense = "ccw" }
-plans = [3, 9]
-"""
+WATT_II = watt_ii()
 
 
 def _watt_ii(phi: float) -> dict[str, np.ndarray]:

@@ -15,6 +15,7 @@ import xml.etree.ElementTree as ET
 from itertools import combinations, pairwise
 
 import pytest
+from scene_texts import watt_ii
 from sheet_texts import box as text_box
 from sheet_texts import texts
 
@@ -24,51 +25,7 @@ from graphplan.render.packing import GAP_MM
 from graphplan.render.sheet import course_sheets
 from graphplan.scene import loads
 
-WATT_II = """
-[scene]
-title = "Watt II six-bar linkage"
-locale = "en"
-gravity = 9.81
-
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.35, 0.0], F = [0.60, 0.25] }
-
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.10
-omega = 12.0
-
-[[groups]]
-kind = "RRR"
-links = [3, 4]
-joints = ["A", "B", "C"]
-lengths = [0.35, 0.25]
-assembly = "left"
-
-[points]
-D = { link = 4, from = "C", toward = "B", at = 0.12, offset = -0.10 }
-
-[[groups]]
-kind = "RRR"
-links = [5, 6]
-joints = ["D", "E", "F"]
-lengths = [0.30, 0.20]
-assembly = "right"
-
-[positions]
-count = 12
-start = "extreme"
-working = { link = 6, sense = "ccw" }
-plans = [3, 9]
-velocity_plans = "all"
-
-[drawing]
-sheet = "A3"
-"""
+WATT_II = watt_ii(every_velocity_plan=True, sheet="A3")
 
 SVG = "{http://www.w3.org/2000/svg}"
 Box = tuple[float, float, float, float]  # x0, y0, x1, y1 in the SVG's millimetres, y down
