@@ -140,7 +140,7 @@ def test_a_machine_that_never_starts_shows_the_motors_torque_it_is_set_against(l
                 continue   # a marker: the point where it stands
             along, values = (np.asarray(data, dtype=float) for data in line.get_data())
             assert np.ptp(along) > 0 or np.ptp(values) > 0, f"{line.get_label()!r} is drawn as no line at all"
-        (motor_line,) = [line for line in named if line.get_label() == text["motion_motor_torque_at_rest"]]
+        (motor_line,) = [line for line in named if line.get_label() == text["motion_motor_torque_at_rest"].format()]
         along, values = (np.asarray(data, dtype=float) for data in motor_line.get_data())
         assert along.min() == 0.0 and along.max() == 360.0
         assert values == pytest.approx(mine, rel=1e-6)

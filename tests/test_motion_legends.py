@@ -185,8 +185,8 @@ def test_the_stalls_moments_have_their_letters_as_subscripts_in_dejavu_sans(case
         labels = {item.get_text(): item for item in legend.get_texts()}
         subscripted = 0
         for key, letter in SUBSCRIPTS[locale].items():
-            if text[key] in labels:
-                _assert_subscripted(labels[text[key]], letter)
+            if text[key].format() in labels:
+                _assert_subscripted(labels[text[key].format()], letter)
                 subscripted += 1
         assert subscripted == 2
         braked = [item for words, item in labels.items() if words.count("$") == 4]

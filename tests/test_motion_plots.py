@@ -148,7 +148,7 @@ def test_a_stalled_run_shows_the_motors_torque_falling_short_of_the_resistance_w
     figure = motion_plot(motion, text, "Пресс", resisting=(angles, resisting))
     lower = figure.axes[1]
     lines = {line.get_label(): line for line in lower.get_lines()}
-    mr, md = lines[text["motion_resisting"]], lines[text["motion_motor_torque"]]
+    mr, md = lines[text["motion_resisting"].format()], lines[text["motion_motor_torque"].format()]
     (point,) = [line for label, line in lines.items() if label.startswith("остановка при t")]
     x, y = (float(value[0]) for value in point.get_data())
     assert x == pytest.approx(math.degrees(motion.phi[-1]))
@@ -174,7 +174,7 @@ def test_a_machine_that_never_moves_gets_only_the_plot_of_why():
     (only,) = figure.axes
     labels = {line.get_label() for line in only.get_lines()}
     # The motor held at rest, at its starting torque across the turn (drawn along a run of no length, it was no line).
-    assert {text["motion_resisting"], text["motion_motor_torque_at_rest"]} <= labels
+    assert {text["motion_resisting"].format(), text["motion_motor_torque_at_rest"].format()} <= labels
     assert text["motion_shaft"] not in labels
 
 
@@ -217,7 +217,7 @@ def test_a_stall_from_a_start_off_position_1_is_drawn_over_the_angle_turned_from
     (point,) = [line for label, line in lines.items() if label.startswith("stalls at t")]
     assert float(point.get_xdata()[0]) == pytest.approx(turned)
     assert f"{turned:.4g}° from the start (φ = 123.4°)" in point.get_label()
-    along, drawn = lines[text["motion_resisting"]].get_data()
+    along, drawn = lines[text["motion_resisting"].format()].get_data()
     assert along[0] == 0.0 and along[-1] == 360.0
     assert float(np.interp(45.0, along, drawn)) == pytest.approx(10.0)
     assert float(np.interp(turned, along, drawn)) == pytest.approx(100.0)
@@ -366,7 +366,7 @@ def test_a_brake_that_brings_the_machine_to_rest_is_drawn_on_top_of_mr_from_wher
         assert after[-1] == 720.0 and np.any((after % 360.0 > 200.0) & (after % 360.0 < 300.0))
         # Mr is still drawn alone over the whole plot, and the motor's torque falls short of the brake's line only.
         mr_along, mr = (np.asarray(values, dtype=float) for values in lower.get_lines()[0].get_data())
-        assert lower.get_lines()[0].get_label() == text["motion_resisting"] and mr_along[0] == 0.0
+        assert lower.get_lines()[0].get_label() == text["motion_resisting"].format() and mr_along[0] == 0.0
         clear = np.all(np.abs(mr_along[:, None] % 360.0 - np.array([200.0, 300.0])) > 1e-6, axis=1)
         assert mr[clear] == pytest.approx(scene_mr(mr_along[clear]))
         assert np.all(motion.motor_torque > scene_mr(np.degrees(motion.phi)))
@@ -412,7 +412,7 @@ def test_a_machine_no_brake_holds_draws_no_brake_curve(brake):
     figure = motion_plot(motion, text, "braked", resisting=dynamics.resisting)
     try:
         lower = figure.axes[-1]
-        assert text["motion_resisting"] in legend_texts(lower) and brake_line(lower, text) is None
+        assert text["motion_resisting"].format() in legend_texts(lower) and brake_line(lower, text) is None
         # It never ran, so it did not stall: the plot says why it does not start, and where it stands.
         assert re.sub(r"\s", "", lower.get_title()) == re.sub(r"\s", "", text["motion_never_starts_title"])
         assert text["motion_rest_point"].format(angle="0") in legend_texts(lower)

@@ -712,8 +712,8 @@ def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[s
         angle = short(math.degrees(model.driver[index]) % 360.0, 4)
         travel = short(math.degrees(model.coordinate[index]), 4)
         # A cycle that starts at 0° (a load diagram's, a crank's from 0°) has the two angles alike: said once.
-        key = key if travel != angle else f"{key}_at"
-        lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5), angle=angle, travel=travel))
+        into = words["dyn_into_cycle"].format(travel=travel) if travel != angle else ""
+        lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5), angle=angle, into=into))
     if flywheel.inertia <= 0:
         lines.append(words["dyn_no_flywheel"])
     items: list[Primitive] = [Text((0.0, 0.0), words["dyn_results"], HEADING, "start", weight="bold")]

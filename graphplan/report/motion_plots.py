@@ -291,7 +291,7 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
         phi = angles[0] + np.mod(start + np.radians(turned_deg) - angles[0], 2.0 * np.pi)
         return np.interp(phi, turn_angles, turn_moments)
 
-    plot.plot(along, resisting_at(along), color=_DRIVING_HALF, linewidth=1.0, label=text["motion_resisting"])
+    plot.plot(along, resisting_at(along), color=_DRIVING_HALF, linewidth=1.0, label=text["motion_resisting"].format())
     brake = motion.stall_brake
     if brake is not None:
         # The brake's torque joins Mr where it came on, a step up from Mr there; on from the start (where the machine
@@ -308,13 +308,13 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
                                                                at=number(brake.at, 4, mark)))
     held = float(motion.motor_torque[-1])
     if motion.turned or motion.stalled_slipping:
-        plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"])
+        plot.plot(turned, motion.motor_torque, color=_SHAFT, linewidth=1.1, label=text["motion_motor_torque"].format())
     else:
         # A shaft that never turned holds the motor at rest, at its starting torque, wherever it stands: drawn along
         # the run it was a line of no length at 0°, named in the legend and seen nowhere; across the turn it shows
         # where a start from another angle would go.
         plot.plot(along, np.full_like(along, held), color=_SHAFT, linewidth=1.1,
-                  label=text["motion_motor_torque_at_rest"])
+                  label=text["motion_motor_torque_at_rest"].format())
     if motion.stalled_slipping:
         held = motion.clutch.torque
         plot.axhline(held, color=_FLYWHEEL, linewidth=1.0, linestyle="--",
