@@ -1174,7 +1174,12 @@ def _read_measured(table: Table | None) -> dict[int, Mapping[str, Mapping[str, f
                                                for name in list(lengths.data)})
         # The balancing moment (a crank, N·m) or force (a slider, N) the student found by hand: a value, not a length,
         # its size alone (its sense is the force analysis's, as ω's is the plan's).
-        balancing = entry.number("balancing", None, non_negative=True)
+        balancing = entry.number("balancing", None)
+        if balancing is not None and balancing < 0:
+            # A student signs Mb as drawn (cw negative) or takes it off the lever with its sense: the size was meant.
+            raise SceneError(entry.where("balancing"), f"must be >= 0: give its size, balancing = {-balancing:g}; "
+                             "its sense is taken from the force analysis, as a plan reading's ω takes the plan's",
+                             balancing)
         if balancing is not None:
             readings["balancing"] = balancing
         entry.done(list_known=True)
