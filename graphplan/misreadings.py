@@ -97,6 +97,8 @@ class Slips:
     # Far-off readings a thousandth of their lengths as constructed, each with both lengths in mm: lengths typed in
     # metres (one alone, or readings of polygons each at its own μF, which no one scale joins).  Not in ``misread``.
     metres: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
+    # The same, a tenth of their lengths: lengths typed in centimetres.  Not in ``misread``.
+    centimetres: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
 
 
 @dataclass(frozen=True)
@@ -155,12 +157,15 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     for _, read in other_plan.values():
         for reading in read:
             misread.pop(reading, None)
-    metres = {}
+    metres, centimetres = {}, {}
     for reading, rows in list(misread.items()):
         row, plan = rows[0]
         constructed = abs(plan) / row.per_millimetre if row.per_millimetre else 0.0
         if constructed > 0.0 and in_metres(_hand_millimetres(row) / constructed):
             metres[reading] = (_hand_millimetres(row), constructed)
+            del misread[reading]
+        elif constructed > 0.0 and in_centimetres(_hand_millimetres(row) / constructed):
+            centimetres[reading] = (_hand_millimetres(row), constructed)
             del misread[reading]
     named = {}
     for reading, rows in list(misread.items()):
@@ -172,7 +177,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
                  MappingProxyType(named),
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
                                    for kind, (other, read) in other_plan.items()}),
-                 MappingProxyType(metres))
+                 MappingProxyType(metres), MappingProxyType(centimetres))
 
 
 def _name(reading: str) -> str:
@@ -464,6 +469,13 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                                f"a thousandth: lengths typed in metres? give the millimetres measured (each reading "
                                f"times 1000)")
                 continue
+            if in_centimetres(rescaled.ratio):
+                what = (f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons") \
+                    if rescaled.kind == "forces" else f"the {rescaled.kind} plan"
+                details.append(f"every reading of {what} is {rescaled.ratio:.4g} times its length as constructed, "
+                               f"a tenth: lengths typed in centimetres? give the millimetres measured (each reading "
+                               f"times 10); or, drawn at that scale, give {setting(rescaled)}")
+                continue
             if rescaled.kind == "forces":
                 caveat = "" if in_units(rescaled.drawn_at) else \
                     _shared_caveat(rescaled, position, drawn, drawing, joint)
@@ -505,6 +517,11 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                                 for reading, (_, constructed) in found.metres.items())
             details.append(f"readings a thousandth of their lengths on the drawings ({lengths}): lengths typed in "
                            "metres? give the millimetres measured (each reading times 1000)")
+        if found.centimetres:
+            lengths = "; ".join(f"{reading} against {constructed:.4g} mm as constructed"
+                                for reading, (_, constructed) in found.centimetres.items())
+            details.append(f"readings a tenth of their lengths on the drawings ({lengths}): lengths typed in "
+                           "centimetres? give the millimetres measured (each reading times 10)")
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
@@ -564,6 +581,12 @@ def in_metres(ratio: float) -> bool:
     return abs(ratio * 1000.0 - 1.0) <= FAR_OFF_PERCENT / 100.0
 
 
+def in_centimetres(ratio: float) -> bool:
+    """Whether readings ``ratio`` times their drawing's lengths are those lengths typed in centimetres: a tenth, to
+    within a uniform slip's spread (a ruler read in cm; a plan drawn at a tenth of its pole, pa = 8 mm, none draws)."""
+    return abs(ratio * 10.0 - 1.0) <= UNIFORM_SLIP_PERCENT / 100.0
+
+
 def in_units(drawn_at: float) -> bool:
     """Whether readings that agree at a plan scale of ``drawn_at`` (m/s or m/s² a millimetre) are the values
     themselves, typed in their units where a plan's millimetres were asked for: a scale of one unit a millimetre."""
@@ -582,5 +605,5 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_metres", "in_units", "misread", "on_grid", "read_at",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "on_grid", "read_at",
            "setting", "sharing", "slips"]

@@ -6,9 +6,14 @@ test from the scene's scales and the exact solution, never taken from a warning'
 """
 
 
+import dataclasses
+import math
+
 import pytest
 
 import graphplan
+from graphplan.analysis import analyse
+from graphplan.report.tables import markdown
 
 FIXTURE = "fixtures/offset_slider_crank.toml"
 POSITION = 3
@@ -25,3 +30,64 @@ def test_a_balancing_moment_signed_as_drawn_is_refused_with_its_size_to_give():
     assert message.startswith(f"measured.{POSITION}.balancing: must be >= 0"), message
     assert "give its size, balancing = 35.5" in message, message
     assert "sense is taken from the force analysis" in message, message
+
+
+def _velocity_plan_lengths():
+    """pb, ab, ps3 (mm) of position 3's velocity plan, worked out here from the offset slider-crank's closed form:
+    A on the crank (r = 0.08 m at ω = 6.3 rad/s), B on the guide y = 0.08 m ahead of A (AB = 0.26 m), S3 AB's middle,
+    μV = ω·r / 80 mm (velocity_pole = 80)."""
+    analysis = analyse(dataclasses.replace(graphplan.load(FIXTURE), measured={}))
+    phi = float(analysis.motion.driver[next(p for p in analysis.plans if p.number == POSITION).index])
+    r, length, e, omega = 0.08, 0.26, 0.08, 6.3
+    ax, ay = r * math.cos(phi), r * math.sin(phi)
+    bx = ax + math.sqrt(length**2 - (e - ay) ** 2)
+    vax, vay = -omega * ay, omega * ax
+    omega3 = -vay / (bx - ax)  # B moves along the guide: its velocity has no y part
+    vbx = vax - omega3 * (e - ay)
+    vs3 = (vax - omega3 * (e - ay) / 2, vay + omega3 * (bx - ax) / 2)
+    scale = omega * r / 80.0
+    return {"pb": abs(vbx) / scale, "ab": abs(omega3) * length / scale, "ps3": math.hypot(*vs3) / scale}
+
+
+def _far_off(measured, locale="en"):
+    scene = dataclasses.replace(graphplan.load(FIXTURE), locale=locale, measured={POSITION: measured})
+    analysis = analyse(scene)
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    return warning.detail, markdown(analysis)
+
+
+def test_a_velocity_plan_typed_in_centimetres_is_told_so_not_as_a_pole_of_8_mm():
+    lengths = _velocity_plan_lengths()
+    detail, table = _far_off({"velocity": {name: round(value / 10.0, 2) for name, value in lengths.items()}})
+    assert "a tenth: lengths typed in centimetres? give the millimetres measured (each reading times 10)" in detail
+    assert "velocity_pole ≈" not in detail, detail
+    assert ("Every reading of the velocity plan is 0.1 times its length as constructed, a tenth: lengths typed in "
+            "centimetres? Give the millimetres measured (each reading times 10)") in table, table
+    _, table = _far_off({"velocity": {name: round(value / 10.0, 2) for name, value in lengths.items()}}, "ru")
+    assert "не введены ли длины в сантиметрах?" in table, table
+
+
+def test_one_reading_typed_in_centimetres_is_told_so():
+    lengths = _velocity_plan_lengths()
+    readings = {name: round(value, 1) for name, value in lengths.items()}
+    readings["ps3"] = round(lengths["ps3"] / 10.0, 2)
+    detail, table = _far_off({"velocity": readings})
+    assert (f"readings a tenth of their lengths on the drawings (ps3 = {readings['ps3']:g} mm against "
+            f"{lengths['ps3']:.4g} mm as constructed): lengths typed in centimetres?") in detail, detail
+    assert "a length misread" not in detail
+    assert f"ps3 = {readings['ps3']:g} mm against {lengths['ps3']:.4g} mm as constructed" in table, table
+    _, table = _far_off({"velocity": readings}, "zh")
+    assert "长度是否按厘米输入" in table, table
+
+
+def test_the_error_table_tells_readings_in_metres_as_the_console_does_not_as_a_pole_of_0_1_mm():
+    lengths = _velocity_plan_lengths()
+    detail, table = _far_off({"velocity": {name: round(value / 1000.0, 5) for name, value in lengths.items()}})
+    assert "lengths typed in metres?" in detail
+    assert "lengths typed in metres? Give the millimetres measured (each reading times 1000)" in table, table
+    assert "velocity_pole = 0.1" not in table, table
+    readings = {name: round(value, 1) for name, value in lengths.items()}
+    readings["pb"] = round(lengths["pb"] / 1000.0, 5)
+    _, table = _far_off({"velocity": readings})
+    assert (f"Readings a thousandth of their lengths on the drawings (pb = {readings['pb']:g} mm against "
+            f"{lengths['pb']:.4g} mm as constructed): lengths typed in metres?") in table, table

@@ -23,6 +23,8 @@ from ..misreadings import (
     FAR_OFF_PRECISIONS,
     Rescaled,
     factor_text,
+    in_centimetres,
+    in_metres,
     in_units,
     on_grid,
     read_at,
@@ -115,6 +117,15 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     lines = nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
     for rescaled in found.rescaled:
+        typed = "metres" if in_metres(rescaled.ratio) else "centimetres" if in_centimetres(rescaled.ratio) else None
+        if typed is not None:
+            # Lengths typed in another unit than mm, not a drawing at a pole of 0.1 or 8 mm: said as the console says it.
+            what = (text["errors_what_polygon"].format(label=rescaled.polygon) if rescaled.polygon
+                    else text["errors_what_polygons"]) if rescaled.kind == "forces" \
+                else text["errors_what_plan"].format(plan=text[f"{rescaled.kind}_plan_title"].lower())
+            lines.append(text[f"errors_typed_{typed}"].format(what=what, ratio=number(rescaled.ratio, 4, mark),
+                                                              setting=setting(rescaled)))
+            continue
         if rescaled.kind == "forces":
             caveat = "" if in_units(rescaled.drawn_at) else _shared_caveat(analysis, plan, drawn, rescaled, text, mark)
             lines.append(_polygons_line(rescaled, text, mark) + caveat)
@@ -150,6 +161,12 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
         lines.append(text["errors_misread"].format(
             percent=f"{FAR_OFF_PERCENT:g}", readings=readings,
             millimetres=f"{FAR_OFF_PRECISIONS * analysis.scene.drawing.drafting_precision:g}".replace(".", mark)))
+    for typed, readings in (("metres", found.metres), ("centimetres", found.centimetres)):
+        if readings:
+            lines.append(text[f"errors_readings_{typed}"].format(readings="; ".join(
+                text["errors_reading_against"].format(reading=_written(reading, text, mark),
+                                                      millimetres=f"{constructed:.4g}".replace(".", mark))
+                for reading, (_, constructed) in readings.items())))
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
     for other, names in found.other_plan.values():
         # Readings of the other plan typed under this one's table: named, with the other plan's segments they are.
