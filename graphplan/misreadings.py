@@ -241,6 +241,18 @@ def _matching_segments(position: VelocityPosition, row: ErrorRow, precision: flo
             # any small reading is it, which tells nothing of the reading.
             if length > precision and abs(millimetres - length) <= precision:
                 matches.append(Segment(plan, "".join(reading.segment), length, plan != kind))
+        # A normal or Coriolis component is laid off, not read, so no reading names it; but a student who measured
+        # it (ak, an3) and typed it under the segment beside it (ka4, n3b) is told which component it is.
+        for step in position.plans[plan].steps:
+            for vector in step.vectors:
+                key = (plan, frozenset((vector.start, vector.end)))
+                if key in seen or not any(mark in vector.meaning for mark in ("ᵏ", "ⁿ")):
+                    continue
+                seen.add(key)
+                length = abs(position.plans[plan].mm(vector.end) - position.plans[plan].mm(vector.start))
+                if length > precision and abs(millimetres - length) <= precision:
+                    matches.append(Segment(plan, f"{vector.start}{vector.end} ({vector.meaning})", length,
+                                           plan != kind))
     return tuple(sorted(matches, key=lambda each: abs(millimetres - each.millimetres)))
 
 

@@ -91,3 +91,39 @@ def test_the_error_table_tells_readings_in_metres_as_the_console_does_not_as_a_p
     _, table = _far_off({"velocity": readings})
     assert (f"Readings a thousandth of their lengths on the drawings (pb = {readings['pb']:g} mm against "
             f"{lengths['pb']:.4g} mm as constructed): lengths typed in metres?") in table, table
+
+
+def _crank_angle(fixture, number):
+    analysis = analyse(dataclasses.replace(graphplan.load(fixture), measured={}))
+    return float(analysis.motion.driver[next(p for p in analysis.plans if p.number == number).index])
+
+
+def test_a_coriolis_component_typed_under_the_relative_segment_s_name_is_named():
+    # The slotted lever's position 4 worked out here: crank OA = 0.12 m at ω = 8 rad/s about O = (0, 0.3), the lever
+    # about C = (0, 0) through A; μa = ω²·OA / 100 mm (acceleration_pole = 100).
+    fixture = "fixtures/quick_return_slotted_lever.toml"
+    phi = _crank_angle(fixture, 4)
+    r, omega = 0.12, 8.0
+    ax, ay = r * math.cos(phi), 0.3 + r * math.sin(phi)
+    vax, vay = -omega * r * math.sin(phi), omega * r * math.cos(phi)
+    ca = math.hypot(ax, ay)
+    sliding = (vax * ax + vay * ay) / ca
+    omega4 = (ax * vay - ay * vax) / ca**2
+    coriolis = 2.0 * abs(omega4 * sliding) / (omega**2 * r / 100.0)
+    reading = round(coriolis, 1)
+    scene = dataclasses.replace(graphplan.load(fixture), measured={4: {"acceleration": {"ka4": reading}}})
+    analysis = analyse(scene)
+    (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
+    assert f"ka4 = {reading:g} mm is the acceleration plan's ak (aA4A3ᵏ) ({coriolis:.2f} mm as constructed)" \
+        in warning.detail, warning.detail
+    assert "a length misread" not in warning.detail
+    scene = dataclasses.replace(scene, locale="ru")
+    assert f"ka4 = {reading:g} мм — это отрезок ak (aA4A3ᵏ)".replace(".", ",") in markdown(analyse(scene))
+
+
+def test_a_normal_component_typed_as_the_tangential_one_is_named():
+    lengths = _velocity_plan_lengths()
+    # aBAⁿ = VBA² / AB at μa = ω²·r / 80 mm, VBA = ab·μV.
+    normal = (lengths["ab"] * 6.3 * 0.08 / 80.0) ** 2 / 0.26 / (6.3**2 * 0.08 / 80.0)
+    detail, _ = _far_off({"acceleration": {"n3b": round(normal, 1)}})
+    assert f"n3b = {round(normal, 1):g} mm is the acceleration plan's an3 (aBAⁿ) ({normal:.2f} mm" in detail, detail
