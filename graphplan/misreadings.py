@@ -99,6 +99,9 @@ class Slips:
     metres: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
     # The same, a tenth of their lengths: lengths typed in centimetres.  Not in ``misread``.
     centimetres: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
+    # Far-off readings of a reaction that are, to the drafting precision, its length at another standard μF than its
+    # polygon's: by the reading, (that μF, the length there in mm).  Not in ``misread``.
+    force_scale: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
 
 
 @dataclass(frozen=True)
@@ -167,6 +170,20 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
         elif constructed > 0.0 and in_centimetres(_hand_millimetres(row) / constructed):
             centimetres[reading] = (_hand_millimetres(row), constructed)
             del misread[reading]
+    force_scale = {}
+    for reading, rows in list(misread.items()):
+        row, plan = rows[0]
+        millimetres = _hand_millimetres(row)
+        if _plan_of(row) != "forces" or not plan or not millimetres > 0.0:
+            continue
+        # One reaction read at another μF than its polygon's, the free-body arrows' that the force sheet draws beside
+        # it at their own, say: the standard μF it is the reaction's length at.
+        scale = nearest_standard_scale(abs(plan) / millimetres)
+        # Within the precision and 2 % both: a short reading is near some standard μF's length by chance.
+        there = abs(plan) / scale
+        if not math.isclose(scale, row.per_millimetre) and abs(there - millimetres) <= min(precision, 0.02 * there):
+            force_scale[reading] = (scale, abs(plan) / scale)
+            del misread[reading]
     named = {}
     for reading, rows in list(misread.items()):
         matches = _matching_segments(position, rows[0][0], precision)
@@ -177,7 +194,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
                  MappingProxyType(named),
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
                                    for kind, (other, read) in other_plan.items()}),
-                 MappingProxyType(metres), MappingProxyType(centimetres))
+                 MappingProxyType(metres), MappingProxyType(centimetres), MappingProxyType(force_scale))
 
 
 def _name(reading: str) -> str:
@@ -534,6 +551,13 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                                 for reading, (_, constructed) in found.centimetres.items())
             details.append(f"readings a tenth of their lengths on the drawings ({lengths}): lengths typed in "
                            "centimetres? give the millimetres measured (each reading times 10)")
+        if found.force_scale:
+            details.append("; ".join(
+                f"{reading} is {row_name} at μF = {scale:g} N/mm ({length:.2f} mm there), not at its polygon's"
+                for reading, (scale, length), row_name in ((reading, value, _name(reading))
+                                                           for reading, value in found.force_scale.items()))
+                + ": read off the free-body arrows, which the force sheet draws at a μF of their own, or off a "
+                  "polygon drawn at that μF?")
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(

@@ -127,3 +127,19 @@ def test_a_normal_component_typed_as_the_tangential_one_is_named():
     normal = (lengths["ab"] * 6.3 * 0.08 / 80.0) ** 2 / 0.26 / (6.3**2 * 0.08 / 80.0)
     detail, _ = _far_off({"acceleration": {"n3b": round(normal, 1)}})
     assert f"n3b = {round(normal, 1):g} mm is the acceleration plan's an3 (aBAⁿ) ({normal:.2f} mm" in detail, detail
+
+
+def test_a_reaction_read_at_the_free_body_arrows_scale_is_named_with_that_scale():
+    # The force sheet of position 3 draws both polygons at μF = 4 N/mm and the group's free-body arrows at 20 N/mm;
+    # R23 from all the equilibrium equations solved at once (the error table's reference), read at 20 N/mm.
+    scene = graphplan.load(FIXTURE)
+    index = next(p for p in analyse(dataclasses.replace(scene, measured={})).plans if p.number == POSITION).index
+    r23 = abs(scene.analyse().equilibrium.reaction("R23").force[index])
+    reading = round(r23 / 20.0, 1)
+    others = {name: round(abs(scene.analyse().equilibrium.reaction(name).force[index]) / 4.0, 1)
+              for name in ("R34", "R14", "R12")}
+    detail, table = _far_off({"forces": {"R23": reading, **others}})
+    assert (f"R23 = {reading:g} mm at μF = 4 N/mm is R23 at μF = 20 N/mm ({r23 / 20.0:.2f} mm there), not at its "
+            "polygon's: read off the free-body arrows") in detail, detail
+    assert "velocity plan" not in detail, detail
+    assert f"R23 = {reading:g} mm is R23 at μF = 20 N/mm ({r23 / 20.0:.2f} mm there)" in table, table

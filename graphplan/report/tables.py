@@ -167,6 +167,12 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
                 text["errors_reading_against"].format(reading=_written(reading, text, mark),
                                                       millimetres=f"{constructed:.4g}".replace(".", mark))
                 for reading, (_, constructed) in readings.items())))
+    if found.force_scale:
+        lines.append(text["errors_force_scale"].format(readings="; ".join(
+            text["errors_force_scale_item"].format(
+                reading=_written(reading, text, mark), name=reading.split(" = ")[0],
+                scale=f"{scale:g}".replace(".", mark), millimetres=f"{length:.2f}".replace(".", mark))
+            for reading, (scale, length) in found.force_scale.items())))
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
     for other, names in found.other_plan.values():
         # Readings of the other plan typed under this one's table: named, with the other plan's segments they are.
