@@ -143,3 +143,10 @@ def test_a_reaction_read_at_the_free_body_arrows_scale_is_named_with_that_scale(
             "polygon's: read off the free-body arrows") in detail, detail
     assert "velocity plan" not in detail, detail
     assert f"R23 = {reading:g} mm is R23 at μF = 20 N/mm ({r23 / 20.0:.2f} mm there)" in table, table
+
+
+def test_errors_md_letters_the_relative_acceleration_as_the_note_does_not_with_a_caret():
+    scene = graphplan.load("fixtures/quick_return_slotted_lever.toml")
+    table = markdown(analyse(dataclasses.replace(scene, measured={4: {"acceleration": {"ka4": 69.0}}})))
+    assert "| aA4A3ʳ | m/s² |" in table, table
+    assert "^r" not in table, table

@@ -48,6 +48,9 @@ def quantity_symbol(quantity: str) -> str:
     for word, letter in _GREEK.items():
         if quantity.startswith(word) and quantity[len(word):].isdigit():
             return letter + quantity[len(word):]
+    if quantity.endswith("^r"):
+        # The relative acceleration as the note and the plans letter it (aBB4ʳ), not a caret Markdown shows as typed.
+        return quantity.removesuffix("^r") + "ʳ"
     return quantity
 
 
