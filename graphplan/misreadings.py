@@ -576,12 +576,24 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                 for segment in segments) for reading, segments in found.named.items())
             question = ("a segment taken for another, or read off the other plan?" if any(
                 segment.other for segments in found.named.values() for segment in segments)
-                else "segments taken for one another?")
+                and not swapped(found.named) else "segments taken for one another?")
             details.append(f"readings far off their own segments that are other segments of the plans as constructed, "
                            f"to the drafting precision ({precision:g} mm): {named}: {question}")
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
+
+
+def swapped(named: Mapping[str, tuple[Segment, ...]]) -> bool:
+    """Whether two of the ``named`` readings are each the other's segment on their own plan (pb = ab's length and
+    ab = pb's): segments swapped, whatever else of the other plan either also matches."""
+    def letters(name: str) -> str:
+        return "".join(sorted(name.replace("π", "p")))
+
+    own = {reading: {letters(segment.name) for segment in segments if not segment.other}
+           for reading, segments in named.items()}
+    return any(letters(_name(second)) in own[first] and letters(_name(first)) in own[second]
+               for first in named for second in named if first < second)
 
 
 def setting(rescaled: Rescaled) -> str:
@@ -642,4 +654,4 @@ def _plan_of(row: ErrorRow) -> str:
 
 
 __all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "on_grid", "read_at",
-           "setting", "sharing", "slips"]
+           "setting", "sharing", "slips", "swapped"]

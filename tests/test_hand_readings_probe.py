@@ -150,3 +150,23 @@ def test_errors_md_letters_the_relative_acceleration_as_the_note_does_not_with_a
     table = markdown(analyse(dataclasses.replace(scene, measured={4: {"acceleration": {"ka4": 69.0}}})))
     assert "| aA4A3ʳ | m/s² |" in table, table
     assert "^r" not in table, table
+
+
+def test_two_segments_of_the_acceleration_plan_swapped_are_asked_as_swapped():
+    # pb and ab of position 3's acceleration plan worked out here: aA = −ω²·rA, ε2 = 0; B keeps to the guide, so
+    # aB's y part is 0: ε3 = (ω3²·(e − yA) − aAy) / (xB − xA); μa = ω²·r / 80 mm.
+    phi = _crank_angle(FIXTURE, POSITION)
+    r, length, e, omega = 0.08, 0.26, 0.08, 6.3
+    ax, ay = r * math.cos(phi), r * math.sin(phi)
+    bx = ax + math.sqrt(length**2 - (e - ay) ** 2)
+    omega3 = -omega * ax / (bx - ax)
+    aax, aay = -omega**2 * ax, -omega**2 * ay
+    epsilon3 = (omega3**2 * (e - ay) - aay) / (bx - ax)
+    abx = aax - epsilon3 * (e - ay) - omega3**2 * (bx - ax)
+    scale = omega**2 * r / 80.0
+    pb, ab = abs(abx) / scale, math.hypot(epsilon3, omega3**2) * length / scale
+    detail, table = _far_off({"acceleration": {"pb": round(ab, 1), "ab": round(pb, 1)}})
+    assert f"pb = {round(ab, 1):g} mm is the acceleration plan's ab ({ab:.2f} mm as constructed)" in detail, detail
+    assert f"ab = {round(pb, 1):g} mm is the acceleration plan's pb ({pb:.2f} mm as constructed)" in detail, detail
+    assert detail.endswith("segments taken for one another?"), detail
+    assert "Segments taken for one another?" in table and "read off the other plan" not in table, table

@@ -31,6 +31,7 @@ from ..misreadings import (
     setting,
     sharing,
     slips,
+    swapped,
 )
 from ..render.numerals import scale_factor
 from ..wording import balancing_load
@@ -186,7 +187,8 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
                 reading=_written(reading, text, mark), segment=segment.name,
                 millimetres=f"{segment.millimetres:.2f}".replace(".", mark))
             for segment in segments) for reading, segments in found.named.items())
-        other = any(segment.other for segments in found.named.values() for segment in segments)
+        other = any(segment.other for segments in found.named.values() for segment in segments) \
+            and not swapped(found.named)
         lines.append(text["errors_named"].format(
             precision=precision, readings=items,
             question=text["errors_named_other" if other else "errors_named_swapped"]))
