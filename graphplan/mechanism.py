@@ -444,7 +444,8 @@ def _under_pin(name: str, key: str, link: int, under_pins, sliding_on) -> str:
     pin = under_pins[name][0]
     advice = (f": give toward = {pin!r}, the pin, whose slide gives the direction"
               if key == "toward" and pin in sliding_on.get(link, {}) else "")
-    return f"; {name} is link {link}'s point under {pin} at each instant, a different point of it as {pin} slides{advice}"
+    return (f"; {name} is link {link}'s point under {pin} at each instant, a different point of it as {pin} "
+            f"slides{advice}")
 
 
 def _unplaceable(pending: list[PointSpec], known_links, fixed_on, sliding_on, frame: int,

@@ -653,5 +653,6 @@ def _plan_of(row: ErrorRow) -> str:
     return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "on_grid", "read_at",
-           "setting", "sharing", "slips", "swapped"]
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips",
+           "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "on_grid", "read_at", "setting",
+           "sharing", "slips", "swapped"]

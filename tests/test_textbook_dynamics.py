@@ -227,7 +227,8 @@ def test_mounts_no_spring_could_be_are_asked_about_their_units(capsys, tmp_path,
 
 def test_a_shafts_bending_is_not_taken_for_mounts_that_sag(capsys, tmp_path):
     # A slender shaft bends under its disc more than any mount sags, and that is no slip of a unit.
-    text = MACHINE_ON_SPRINGS.replace("stiffness = 1.2e6", 'shaft = { modulus = 2.1e11, diameter = 0.01, length = 1.0 }')
+    text = MACHINE_ON_SPRINGS.replace("stiffness = 1.2e6",
+                                      'shaft = { modulus = 2.1e11, diameter = 0.01, length = 1.0 }')
     code, err = check(capsys, tmp_path, text)
     assert code == 0 and "sag" not in err
 
@@ -250,8 +251,8 @@ def test_a_correction_radius_in_millimetres_on_a_long_rotor_is_asked_about(capsy
     (caution,) = results["balancing"]["warnings"]
     assert caution["code"] == "lengths-in-mm"
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
-    assert (f"the correction radius in plane {plane}, 100 m, is 143 times the 0.7 m the masses and correction planes span "
-            "along the axis") in note
+    assert (f"the correction radius in plane {plane}, 100 m, is 143 times the 0.7 m the masses and correction "
+            "planes span along the axis") in note
 
 
 def test_a_gear_ratio_typed_the_wrong_way_up_is_asked_about_where_the_machine_does_not_start(capsys, tmp_path):

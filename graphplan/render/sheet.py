@@ -310,7 +310,8 @@ def _grid_runs(drawing: velocity_plans_layout.VelocityPlans, label: str, continu
             for lines in dict.fromkeys((continued,) if room is None
                                        else tuple(fitted(continued, room, plan_layout.TITLE_SIZE, "bold"))
                                        for room in (None, *rooms)):
-                heading = Layer(HEADING_LAYER, velocity_plans_layout.heading_texts(lines, drawing.scale_line, (x0, top)))
+                heading = Layer(HEADING_LAYER,
+                                velocity_plans_layout.heading_texts(lines, drawing.scale_line, (x0, top)))
                 ways.append(_to_no_length_scale(replace(way, layers=(*way.layers, heading))))
             if stop - start == 1:
                 # Last of all a plan bare, as the plans stood apart before: on a sheet that holds it under no heading

@@ -123,7 +123,8 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     for rescaled in found.rescaled:
         typed = "metres" if in_metres(rescaled.ratio) else "centimetres" if in_centimetres(rescaled.ratio) else None
         if typed is not None:
-            # Lengths typed in another unit than mm, not a drawing at a pole of 0.1 or 8 mm: said as the console says it.
+            # Lengths typed in another unit than mm, not a drawing at a pole of 0.1 or 8 mm: said as the console
+            # says it.
             what = (text["errors_what_polygon"].format(label=rescaled.polygon) if rescaled.polygon
                     else text["errors_what_polygons"]) if rescaled.kind == "forces" \
                 else text["errors_what_plan"].format(plan=text[f"{rescaled.kind}_plan_title"].lower())
