@@ -88,7 +88,7 @@ def test_every_drawing_and_plot_written_is_a_numbered_figure_in_its_section(shap
         for file in (f"plan_{position}.svg", f"forces_{position}.svg", f"forces_friction_{position}.svg"):
             assert heading_above(note, shown_as(file, shaper), 3).split(": ")[0].endswith(f"Position {position}")
     assert heading_above(note, shown_as("forces_3.svg", shaper), 2).endswith("Force analysis")
-    assert heading_above(note, "plan_3.svg", 2).endswith("Kinematic analysis by the plan method")
+    assert heading_above(note, shown_as("plan_3.svg", shaper), 2).endswith("Kinematic analysis by the plan method")
     assert heading_above(note, "positions.svg", 2).endswith("Initial data")
     assert heading_above(note, "diagrams.svg", 3).endswith("Kinematic diagrams of the output link 6")
     for file in ("dynamics.svg", "motion.svg"):
@@ -106,7 +106,9 @@ def test_the_html_sets_each_figure_with_its_caption_and_links_it_to_its_drawing(
 
 def test_the_pdf_shows_each_drawing_on_the_page_of_its_caption(shaper):
     # Lettering of the drawings that the note's text never writes: their captions.
-    for caption, lettering in (("Figure 2. Velocity and acceleration plans, position 3", "Mechanism in position 3"),
+    # A plan sheet in a row too wide for a page is shown in parts, its mechanism in the first.
+    for caption, lettering in (("Figure 2. Velocity and acceleration plans, position 3 (part 1 of",
+                                "Mechanism in position 3"),
                                ("Figure 7. Force analysis, position 3 (part 1 of", "Force polygon"),
                                ("Figure 6. Load diagrams", "Load diagram F6(sE) of link 6")):
         pages = pages_with(shaper / "note.pdf", caption)
@@ -140,7 +142,7 @@ def test_the_latex_note_takes_each_drawing_from_its_pdf_beside_it(shaper, tmp_pa
     (folder / "note.pdf").unlink()
     subprocess.run(["xelatex", "-interaction=nonstopmode", "-halt-on-error", "note.tex"], cwd=folder,
                    capture_output=True, timeout=300, check=True)
-    pages = pages_with(folder / "note.pdf", "Figure 2. Velocity and acceleration plans, position 3")
+    pages = pages_with(folder / "note.pdf", "Figure 2. Velocity and acceleration plans, position 3 (part 1 of")
     assert len(pages) == 1 and "Mechanism in position 3" in pages[0]
     assert "not found" not in (folder / "note.log").read_text(encoding="utf-8", errors="replace")
 

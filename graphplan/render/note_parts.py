@@ -8,7 +8,7 @@ the first; the drawing itself, forces_N.svg, stays whole.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from .force_rows import HEADING_LAYER, scales_line, with_scales_line
 from .primitives import Layer, bounds
@@ -70,6 +70,29 @@ def note_parts_in_order(layers: Sequence[Layer], heading: str) -> list[list[Laye
         current.append(layer)
     parts.append(current)
     return parts if len(parts) > 1 else None
+
+
+def note_parts_of_drawings(drawings: Sequence[str], laid_out: Callable[[tuple[str, ...]], list[Layer]],
+                           title: str) -> list[list[Layer]] | None:
+    """A sheet of ``drawings`` side by side (a plan sheet: the mechanism, the velocity plan, the acceleration plan)
+    too wide for a page of the note, gathered in their order into parts that each print on a page at
+    :data:`LEAST_PRINT_SCALE` or larger; None where the sheet prints so whole, or no part holds two drawings.
+
+    ``laid_out`` lays out the sheet of the drawings it is given, each under its caption, the layer ``title``
+    over them; the title is kept over the first part alone.  Each part is laid out afresh rather than cut out
+    of the whole, so that its drawings stand together and its captions under them."""
+    if not drawings or _prints(laid_out(tuple(drawings))):
+        return None
+    groups: list[tuple[str, ...]] = []
+    for name in drawings:
+        if groups and _prints(laid_out((*groups[-1], name))):
+            groups[-1] = (*groups[-1], name)
+        else:
+            groups.append((name,))
+    if len(groups) < 2:
+        return None
+    parts = [[layer for layer in laid_out(group) if layer.items] for group in groups]
+    return [parts[0]] + [[layer for layer in part if layer.name != title] for part in parts[1:]]
 
 
 def _prints(layers: Sequence[Layer]) -> bool:
