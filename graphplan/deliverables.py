@@ -337,7 +337,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             else:
                 layers = list(laid_out.layers)
             found.append(Drawing(f"plan_{plan.number}", layers))
-            found += _plan_note_parts(analysis, plan, shown, pieces)
+            found += _plan_note_parts(analysis, plan, shown, pieces, layers)
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
             layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
@@ -388,9 +388,11 @@ def _note_parts(stem: str, layers: list, pieces: tuple[str, ...],
     return [Drawing(f"{stem}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 
-def _plan_note_parts(analysis: Analysis, plan, shown: tuple[str, ...], pieces: tuple[str, ...]) -> list[Drawing]:
-    """A plan sheet too wide for a page of the note (its three drawings in a row, 650 mm for a six-bar), in parts
-    for the note to show (``plan_3-1.svg``, ...), where the run writes the note; the drawing itself stays whole."""
+def _plan_note_parts(analysis: Analysis, plan, shown: tuple[str, ...], pieces: tuple[str, ...],
+                     whole: list) -> list[Drawing]:
+    """The plan sheet ``whole`` where it is too wide for a page of the note (its three drawings in a row, 650 mm for
+    a six-bar), in parts for the note to show (``plan_3-1.svg``, ...), where the run writes the note; the drawing
+    itself stays whole."""
     if "note" not in pieces:
         return []
     from .render import drawings as draw
@@ -402,7 +404,7 @@ def _plan_note_parts(analysis: Analysis, plan, shown: tuple[str, ...], pieces: t
     def laid_out(names: tuple[str, ...]) -> list:
         return plan_layout.layout(dataclasses.replace(sheet, drawings=names))
 
-    parts = note_parts_of_drawings(("mechanism", *shown), laid_out, plan_layout.TITLE_LAYER)
+    parts = note_parts_of_drawings(("mechanism", *shown), laid_out, plan_layout.TITLE_LAYER, whole)
     return [Drawing(f"plan_{plan.number}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 

@@ -73,15 +73,16 @@ def note_parts_in_order(layers: Sequence[Layer], heading: str) -> list[list[Laye
 
 
 def note_parts_of_drawings(drawings: Sequence[str], laid_out: Callable[[tuple[str, ...]], list[Layer]],
-                           title: str) -> list[list[Layer]] | None:
+                           title: str, whole: Sequence[Layer] | None = None) -> list[list[Layer]] | None:
     """A sheet of ``drawings`` side by side (a plan sheet: the mechanism, the velocity plan, the acceleration plan)
     too wide for a page of the note, gathered in their order into parts that each print on a page at
     :data:`LEAST_PRINT_SCALE` or larger; None where the sheet prints so whole, or no part holds two drawings.
 
     ``laid_out`` lays out the sheet of the drawings it is given, each under its caption, the layer ``title``
     over them; the title is kept over the first part alone.  Each part is laid out afresh rather than cut out
-    of the whole, so that its drawings stand together and its captions under them."""
-    if not drawings or _prints(laid_out(tuple(drawings))):
+    of the whole, so that its drawings stand together and its captions under them.  ``whole`` is the sheet as
+    drawn, where it is not ``laid_out`` of all the drawings (a plan sheet arranged for a course-project sheet)."""
+    if not drawings or _prints(whole if whole is not None else laid_out(tuple(drawings))):
         return None
     groups: list[tuple[str, ...]] = []
     for name in drawings:
