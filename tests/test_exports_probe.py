@@ -69,3 +69,24 @@ def test_a_plan_sheet_too_wide_for_a_page_is_shown_in_the_note_in_parts_that_pri
         kinds = [name.split("-")[0] for name in drawn if not name.endswith("-caption")]
         assert kinds == sorted(kinds, key=["mechanism", "velocity", "acceleration"].index)
         assert ["sheet-title" in group_ids(part) for part in parts] == [True] + [False] * (len(parts) - 1)
+
+
+def test_a_plan_sheet_drawn_in_a_way_a_page_holds_is_not_cut_for_the_note():
+    """On a course-project run plan_N.svg is the sheet's own arrangement (the mechanism above or beside its plans),
+    which may print on a page whole though the three drawings in a row would not: it is then shown whole."""
+    from graphplan.render.note_parts import note_parts_of_drawings
+    from graphplan.render.primitives import Layer, Polyline
+
+    def box(name: str, x: float, y: float, width: float, height: float) -> Layer:
+        return Layer(name, (Polyline(((x, y), (x + width, y), (x + width, y + height), (x, y + height)), closed=True),))
+
+    def in_a_row(names: tuple[str, ...]) -> list[Layer]:   # each drawing 200 × 100 mm, side by side
+        return [box(name, 210.0 * k, 0.0, 200.0, 100.0) for k, name in enumerate(names)]
+
+    drawings = ("mechanism", "velocity", "acceleration")
+    # 620 mm in a row prints at 170/620 < 0.5, two of them (410 mm) at 170/410 < 0.5; one alone at 170/200.
+    assert [[layer.name for layer in part] for part in note_parts_of_drawings(drawings, in_a_row, "title")] == \
+        [["mechanism"], ["velocity"], ["acceleration"]]
+    # The same drawings one above the other on 200 × 320 mm print at 200/320 > 0.5: whole.
+    stacked = [box(name, 0.0, 110.0 * k, 200.0, 100.0) for k, name in enumerate(drawings)]
+    assert note_parts_of_drawings(drawings, in_a_row, "title", whole=stacked) is None
