@@ -337,7 +337,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             else:
                 layers = list(laid_out.layers)
             found.append(Drawing(f"plan_{plan.number}", layers))
-            found += _plan_note_parts(analysis, plan, shown, pieces, layers)
+            found += _plan_note_parts(plan, shown, pieces, layers)
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
             layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
@@ -388,23 +388,37 @@ def _note_parts(stem: str, layers: list, pieces: tuple[str, ...],
     return [Drawing(f"{stem}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 
-def _plan_note_parts(analysis: Analysis, plan, shown: tuple[str, ...], pieces: tuple[str, ...],
-                     whole: list) -> list[Drawing]:
+def _plan_note_parts(plan, shown: tuple[str, ...], pieces: tuple[str, ...], whole: list) -> list[Drawing]:
     """The plan sheet ``whole`` where it is too wide for a page of the note (its three drawings in a row, 650 mm for
     a six-bar), in parts for the note to show (``plan_3-1.svg``, ...), where the run writes the note; the drawing
     itself stays whole."""
     if "note" not in pieces:
         return []
-    from .render import drawings as draw
     from .render import plans as plan_layout
     from .render.note_parts import note_parts_of_drawings
+    from .render.primitives import bounds, moved_layers
 
-    sheet = draw.plan_sheet(analysis, plan.index, plan.velocity, plan.acceleration)
+    drawings = ("mechanism", *shown)
+    own = {name: [layer for layer in whole if layer.name.startswith(f"{name}-")] for name in drawings}
+    # Each caption raised to its drawing: in a row they all stand under the tallest, which a part may not hold.
+    drawn = {name: bounds([layer for layer in layers if layer.name != f"{name}-caption" and layer.items])
+             for name, layers in own.items()}
+    captions = {name: bounds(caption) for name, layers in own.items()
+                if (caption := [layer for layer in layers if layer.name == f"{name}-caption" and layer.items])}
+    gap = min((drawn[name][1] - captions[name][3] for name in captions), default=0.0)
+    for name, layers in own.items():
+        rise = drawn[name][1] - captions[name][3] - gap if name in captions else 0.0
+        own[name] = [moved_layers([layer], 0.0, rise)[0] if layer.name == f"{name}-caption" else layer
+                     for layer in layers]
 
     def laid_out(names: tuple[str, ...]) -> list:
-        return plan_layout.layout(dataclasses.replace(sheet, drawings=names))
+        # The drawings' own layers, each named after its drawing (velocity-lines, velocity-caption), taken out of
+        # the sheet as it is drawn: laid out afresh, the plans' labels were placed a second time, a tenth of a run.
+        # The title stands over the first drawing, and goes with it.
+        title = [layer for layer in whole if layer.name == plan_layout.TITLE_LAYER and drawings[0] in names]
+        return [layer for name in drawings if name in names for layer in own[name]] + title
 
-    parts = note_parts_of_drawings(("mechanism", *shown), laid_out, plan_layout.TITLE_LAYER, whole)
+    parts = note_parts_of_drawings(drawings, laid_out, plan_layout.TITLE_LAYER, whole)
     return [Drawing(f"plan_{plan.number}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 

@@ -78,10 +78,10 @@ def note_parts_of_drawings(drawings: Sequence[str], laid_out: Callable[[tuple[st
     too wide for a page of the note, gathered in their order into parts that each print on a page at
     :data:`LEAST_PRINT_SCALE` or larger; None where the sheet prints so whole, or no part holds two drawings.
 
-    ``laid_out`` lays out the sheet of the drawings it is given, each under its caption, the layer ``title``
-    over them; the title is kept over the first part alone.  Each part is laid out afresh rather than cut out
-    of the whole, so that its drawings stand together and its captions under them.  ``whole`` is the sheet as
-    drawn, where it is not ``laid_out`` of all the drawings (a plan sheet arranged for a course-project sheet)."""
+    ``laid_out`` gives the layers of the drawings it is given, each under its caption, the layer ``title`` over
+    them (the deliverables take them out of the sheet as drawn); the title is kept over the first part alone.
+    ``whole`` is the sheet as drawn, where it is not ``laid_out`` of all the drawings (a plan sheet arranged for a
+    course-project sheet)."""
     if not drawings or _prints(whole if whole is not None else laid_out(tuple(drawings))):
         return None
     groups: list[tuple[str, ...]] = []
