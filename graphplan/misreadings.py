@@ -491,19 +491,16 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             continue
         details = []
         for rescaled in found.rescaled:
-            if in_metres(rescaled.ratio):
+            typed = _typed_unit(rescaled.ratio)
+            if typed is not None:
+                unit, share, factor = typed
                 what = (f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons") \
                     if rescaled.kind == "forces" else f"the {rescaled.kind} plan"
+                # A plan drawn at a tenth of its pole is a drawing one might make; at a thousandth, none.
+                drawn_so = f"; or, drawn at that scale, give {setting(rescaled)}" if unit == "centimetres" else ""
                 details.append(f"every reading of {what} is {rescaled.ratio:.4g} times its length as constructed, "
-                               f"a thousandth: lengths typed in metres? give the millimetres measured (each reading "
-                               f"times 1000)")
-                continue
-            if in_centimetres(rescaled.ratio):
-                what = (f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons") \
-                    if rescaled.kind == "forces" else f"the {rescaled.kind} plan"
-                details.append(f"every reading of {what} is {rescaled.ratio:.4g} times its length as constructed, "
-                               f"a tenth: lengths typed in centimetres? give the millimetres measured (each reading "
-                               f"times 10); or, drawn at that scale, give {setting(rescaled)}")
+                               f"{share}: lengths typed in {unit}? give the millimetres measured (each reading "
+                               f"times {factor}){drawn_so}")
                 continue
             if rescaled.kind == "forces":
                 caveat = "" if in_units(rescaled.drawn_at) else \
@@ -541,16 +538,12 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                            f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
                            f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)"
                            f"{_shared_caveat(rescaled, position, drawn, drawing, joint)}")
-        if found.metres:
-            lengths = "; ".join(f"{reading} against {constructed:.4g} mm as constructed"
-                                for reading, (_, constructed) in found.metres.items())
-            details.append(f"readings a thousandth of their lengths on the drawings ({lengths}): lengths typed in "
-                           "metres? give the millimetres measured (each reading times 1000)")
-        if found.centimetres:
-            lengths = "; ".join(f"{reading} against {constructed:.4g} mm as constructed"
-                                for reading, (_, constructed) in found.centimetres.items())
-            details.append(f"readings a tenth of their lengths on the drawings ({lengths}): lengths typed in "
-                           "centimetres? give the millimetres measured (each reading times 10)")
+        for (unit, share, factor), readings in ((_TYPED_UNITS[0], found.metres), (_TYPED_UNITS[1], found.centimetres)):
+            if readings:
+                lengths = "; ".join(f"{reading} against {constructed:.4g} mm as constructed"
+                                    for reading, (_, constructed) in readings.items())
+                details.append(f"readings {share} of their lengths on the drawings ({lengths}): lengths typed in "
+                               f"{unit}? give the millimetres measured (each reading times {factor})")
         if found.force_scale:
             details.append("; ".join(
                 f"{reading} is {row_name} at μF = {scale:g} N/mm ({length:.2f} mm there), not at its polygon's"
@@ -627,6 +620,16 @@ def in_metres(ratio: float) -> bool:
     asked: a thousandth, within the spread a uniform slip is told at (a plan drawn a thousand times smaller, its pole
     0.1 mm, is none a student draws or reads)."""
     return abs(ratio * 1000.0 - 1.0) <= FAR_OFF_PERCENT / 100.0
+
+
+# The units other than millimetres that readings are typed in, each as the console names it: the unit, the share of
+# a millimetre it reads as, and the factor that makes it millimetres.
+_TYPED_UNITS = (("metres", "a thousandth", 1000), ("centimetres", "a tenth", 10))
+
+
+def _typed_unit(ratio: float) -> tuple[str, str, int] | None:
+    """Of :data:`_TYPED_UNITS`, the unit in which readings ``ratio`` times their drawing's lengths were typed."""
+    return _TYPED_UNITS[0] if in_metres(ratio) else _TYPED_UNITS[1] if in_centimetres(ratio) else None
 
 
 def in_centimetres(ratio: float) -> bool:
