@@ -491,7 +491,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             continue
         details = []
         for rescaled in found.rescaled:
-            typed = _typed_unit(rescaled.ratio)
+            typed = typed_unit(rescaled.ratio)
             if typed is not None:
                 unit, share, factor = typed
                 what = (f"the force polygon {rescaled.polygon}" if rescaled.polygon else "the force polygons") \
@@ -567,9 +567,8 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
             named = "; ".join(f"{reading} is " + " or ".join(
                 f"the {segment.plan} plan's {segment.name} ({segment.millimetres:.2f} mm as constructed)"
                 for segment in segments) for reading, segments in found.named.items())
-            question = ("a segment taken for another, or read off the other plan?" if any(
-                segment.other for segments in found.named.values() for segment in segments)
-                and not swapped(found.named) else "segments taken for one another?")
+            question = ("a segment taken for another, or read off the other plan?" if off_the_other_plan(found.named)
+                        else "segments taken for one another?")
             details.append(f"readings far off their own segments that are other segments of the plans as constructed, "
                            f"to the drafting precision ({precision:g} mm): {named}: {question}")
         warnings.append(PositionWarning(position.index, "measured-far-off",
@@ -577,7 +576,13 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
     return tuple(warnings)
 
 
-def swapped(named: Mapping[str, tuple[Segment, ...]]) -> bool:
+def off_the_other_plan(named: Mapping[str, tuple[Segment, ...]]) -> bool:
+    """Whether the ``named`` readings may have been read off the other plan: one matches a segment of it, and no
+    two are each the other's segment on their own plan (swapped, whatever else of the other plan either matches)."""
+    return any(segment.other for segments in named.values() for segment in segments) and not _swapped(named)
+
+
+def _swapped(named: Mapping[str, tuple[Segment, ...]]) -> bool:
     """Whether two of the ``named`` readings are each the other's segment on their own plan (pb = ab's length and
     ab = pb's): segments swapped, whatever else of the other plan either also matches."""
     def letters(name: str) -> str:
@@ -627,7 +632,7 @@ def in_metres(ratio: float) -> bool:
 _TYPED_UNITS = (("metres", "a thousandth", 1000), ("centimetres", "a tenth", 10))
 
 
-def _typed_unit(ratio: float) -> tuple[str, str, int] | None:
+def typed_unit(ratio: float) -> tuple[str, str, int] | None:
     """Of :data:`_TYPED_UNITS`, the unit in which readings ``ratio`` times their drawing's lengths were typed."""
     return _TYPED_UNITS[0] if in_metres(ratio) else _TYPED_UNITS[1] if in_centimetres(ratio) else None
 
@@ -657,5 +662,5 @@ def _plan_of(row: ErrorRow) -> str:
 
 
 __all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips",
-           "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "on_grid", "read_at", "setting",
-           "sharing", "slips", "swapped"]
+           "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "off_the_other_plan", "on_grid",
+           "read_at", "setting", "sharing", "slips", "typed_unit"]

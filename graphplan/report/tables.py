@@ -23,15 +23,14 @@ from ..misreadings import (
     FAR_OFF_PRECISIONS,
     Rescaled,
     factor_text,
-    in_centimetres,
-    in_metres,
     in_units,
+    off_the_other_plan,
     on_grid,
     read_at,
     setting,
     sharing,
     slips,
-    swapped,
+    typed_unit,
 )
 from ..render.numerals import scale_factor
 from ..wording import balancing_load
@@ -121,14 +120,14 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     lines = nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
     for rescaled in found.rescaled:
-        typed = "metres" if in_metres(rescaled.ratio) else "centimetres" if in_centimetres(rescaled.ratio) else None
+        typed = typed_unit(rescaled.ratio)
         if typed is not None:
             # Lengths typed in another unit than mm, not a drawing at a pole of 0.1 or 8 mm: said as the console
             # says it.
             what = (text["errors_what_polygon"].format(label=rescaled.polygon) if rescaled.polygon
                     else text["errors_what_polygons"]) if rescaled.kind == "forces" \
                 else text["errors_what_plan"].format(plan=text[f"{rescaled.kind}_plan_title"].lower())
-            lines.append(text[f"errors_typed_{typed}"].format(what=what, ratio=number(rescaled.ratio, 4, mark),
+            lines.append(text[f"errors_typed_{typed[0]}"].format(what=what, ratio=number(rescaled.ratio, 4, mark),
                                                               setting=setting(rescaled)))
             continue
         if rescaled.kind == "forces":
@@ -188,8 +187,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
                 reading=_written(reading, text, mark), segment=segment.name,
                 millimetres=f"{segment.millimetres:.2f}".replace(".", mark))
             for segment in segments) for reading, segments in found.named.items())
-        other = any(segment.other for segments in found.named.values() for segment in segments) \
-            and not swapped(found.named)
+        other = off_the_other_plan(found.named)
         lines.append(text["errors_named"].format(
             precision=precision, readings=items,
             question=text["errors_named_other" if other else "errors_named_swapped"]))
