@@ -642,9 +642,10 @@ def stiffness_warning(spec: VibrationSpec) -> str | None:
     if sag <= MOST_MOUNT_SAG:
         return None
     return (f"vibration.stiffness: k = {spec.stiffness:g} N/m would let the machine, vibration.mass = "
-            f"{spec.mass:g} kg, sag M·g/k = {sag:.3g} m under its weight, more than any spring mount ({MOST_MOUNT_SAG * 1000:g} mm): a "
-            f"stiffness typed in kN/m or N/mm, or a mass in grams? ({spec.stiffness:g} kN/m is stiffness = "
-            f"{spec.stiffness * 1000:g}; {spec.mass:g} g is mass = {spec.mass / 1000:g})")
+            f"{spec.mass:g} kg, sag M·g/k = {sag:.3g} m under its weight, more than any spring mount "
+            f"({MOST_MOUNT_SAG * 1000:g} mm): a stiffness typed in kN/m or N/mm, or a mass in grams? "
+            f"({spec.stiffness:g} kN/m is stiffness = {spec.stiffness * 1000:g}; {spec.mass:g} g is mass = "
+            f"{spec.mass / 1000:g})")
 
 
 def _rounded(value: float, *, down: bool, digits: int = 3) -> str:
