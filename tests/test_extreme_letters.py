@@ -8,11 +8,17 @@ import cmath
 import itertools
 import math
 import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
 
+import shapely
 from scipy.optimize import brentq
 
 from graphplan.cli import main
 from tests.sheet_texts import box, texts
+
+ROOT = Path(__file__).resolve().parent.parent
+SVG = "{http://www.w3.org/2000/svg}"
 
 # The Whitworth quick-return mechanism: crank OA, slotted lever turning about C with its tail D behind C, rod DE, ram
 # E on a guide through C.  With 12 positions from the first extreme, the second falls on position 9.
@@ -131,3 +137,84 @@ def test_an_extreme_on_a_numbered_position_is_lettered_with_primes_and_keeps_its
     boxes = [(entry[4], box(*entry)) for entry in written]
     for (one, a), (other, b) in itertools.combinations(boxes, 2):
         assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]), (one, other)
+
+
+# The Scotch yoke fixture: crank r = 75 mm from its first extreme at φ = 270°, 12 positions, so position 7 is φ = 90°,
+# the yoke's top extreme.  There the crank pin A and B (the slot's centre line on the vertical guide through O, at
+# (0, r sin φ)) are one point, r straight above O: the number 7 and the letters A′ and B′ all name it.
+YOKE_CRANK = 0.075
+YOKE_TOP = "7"
+
+
+def _drawn_lines(root: ET.Element) -> list[shapely.Geometry]:
+    """Every stroked path and circle of the drawing but the leaders (a label's own leader ends at it), widened by
+    half its stroke."""
+    shapes = []
+    for group in root.iter(f"{SVG}g"):
+        if group.get("id") in ("leaders", "labels", "caption"):
+            continue
+        for item in group:
+            width = float(item.get("stroke-width", "0"))
+            if item.get("stroke", "none") == "none":
+                continue
+            if item.tag == f"{SVG}path":
+                numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
+                points = list(zip(numbers[0::2], numbers[1::2]))
+                if item.get("d").rstrip().upper().endswith("Z"):
+                    points.append(points[0])
+                if len(points) >= 2:
+                    shapes.append(shapely.LineString(points).buffer(width / 2))
+            elif item.tag == f"{SVG}circle":
+                centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
+                shapes.append(centre.buffer(float(item.get("r"))).exterior.buffer(width / 2))
+    return shapes
+
+
+def _directions(corners: tuple[float, float, float, float], at: tuple[float, float]) -> tuple[float, float]:
+    """The least and greatest direction (radians, y up) from ``at`` to the corners of a box beside it."""
+    x0, y0, x1, y1 = corners
+    middle = math.atan2(at[1] - (y0 + y1) / 2, (x0 + x1) / 2 - at[0])
+    turns = [math.remainder(math.atan2(at[1] - y, x - at[0]) - middle, math.tau)
+             for x, y in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+    return middle + min(turns), middle + max(turns)
+
+
+def test_the_number_and_the_primed_letters_of_one_pin_stand_each_in_its_own_direction(tmp_path):
+    """A number that cannot stand on its radius (the yoke's rod runs out along it) and two primed letters all name the
+    Scotch yoke's top pin: each stands clear of the others and of the lines, near the pin, and in a direction of its
+    own from it, so that the leader to one never runs past another (7 and B′ stood one behind the other up to the
+    left of the pin, B′'s leader passing under the 7)."""
+    assert main(["run", str(ROOT / "fixtures" / "scotch_yoke.toml"), "--out", str(tmp_path / "out"),
+                 "--only", "positions"]) == 0
+    source = (tmp_path / "out" / "positions.svg").read_text(encoding="utf-8")
+    root = ET.fromstring(source)
+    scale = float(re.search(r"μl = ([\d.]+) m/mm", source).group(1))
+    # The pins and the pivot O, drawn as open circles: O the one with a pin r above it and r below.
+    circles = {(round(float(item.get("cx")), 2), round(float(item.get("cy")), 2)) for item in root.iter(f"{SVG}circle")
+               if item.get("fill") == "white"}
+    reach = YOKE_CRANK / scale
+    (pivot,) = [(x, y) for x, y in circles
+                if any(abs(u - x) < 0.01 and abs(v - (y - reach)) < 0.01 for u, v in circles)
+                and any(abs(u - x) < 0.01 and abs(v - (y + reach)) < 0.01 for u, v in circles)]
+    pin = (pivot[0], pivot[1] - reach)  # φ = 90°: straight above O (the SVG's y runs down)
+    written = {entry[4]: box(*entry) for entry in texts(source) if entry[4] in (YOKE_TOP, "A′", "B′")}
+    assert set(written) == {YOKE_TOP, "A′", "B′"}
+    letter = max(y1 - y0 for _, y0, _, y1 in written.values())
+    lines = shapely.STRtree(_drawn_lines(root))
+    for name, corners in written.items():
+        label = shapely.box(*corners)
+        assert label.distance(shapely.Point(pin)) < 4 * letter, name
+        assert not len(lines.query(label, predicate="intersects")), f"{name} stands on a drawn line"
+    for (one, a), (other, b) in itertools.combinations(written.items(), 2):
+        assert not shapely.box(*a).intersects(shapely.box(*b)), (one, other)
+        # Seen from the pin, neither stands behind the other.
+        (a0, a1), (b0, b1) = _directions(a, pin), _directions(b, pin)
+        apart = math.remainder((b0 + b1) / 2 - (a0 + a1) / 2, math.tau)
+        assert abs(apart) > (a1 - a0) / 2 + (b1 - b0) / 2, (one, other)
+    # The line from the pin to each label, as its leader runs, keeps a letter's height from the other labels.
+    for name, corners in written.items():
+        near = shapely.shortest_line(shapely.Point(pin), shapely.box(*corners)).coords[1]
+        sight = shapely.LineString([pin, near])
+        for other, theirs in written.items():
+            if other != name:
+                assert sight.distance(shapely.box(*theirs)) >= letter, (name, other)

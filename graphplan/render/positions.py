@@ -12,6 +12,7 @@ from __future__ import annotations
 import cmath
 import itertools
 import math
+from collections.abc import Collection
 from dataclasses import dataclass
 
 import numpy as np
@@ -143,9 +144,15 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
         # the frame's pivots too: round a crank drawn a few millimetres long they fell on its pivot's triangle.
-        numbers, number_leaders = _numbers_round_the_circle(
-            plan, paper, obstacles_of(bold + dimension + frame_pivots(plan.mechanism, paper)))
-        anchors = _point_anchors(plan, paper) + _extreme_anchors(plan, paper, names=False)
+        primed = _extreme_anchors(plan, paper, names=False)
+        numbers, number_leaders, crowded = _numbers_round_the_circle(
+            plan, paper, obstacles_of(bold + dimension + frame_pivots(plan.mechanism, paper)),
+            [anchor.at for anchor in primed])
+        # A number that cannot stand on its radius at a pin lettered with primes is lettered with those letters, round
+        # the pin: set aside first on its own, it took the nearest spot beside the pin and left its letters the spots
+        # behind it (the Scotch yoke's 7 and B′, up to the left of its top pin, B′'s leader run under the 7).  Given
+        # first among them, it takes the spot nearest its radius, and the letters stand round it.
+        anchors = crowded + _point_anchors(plan, paper) + primed
     else:
         numbers, number_leaders = [], []
         anchors = _position_anchors(plan, paper) + _point_anchors(plan, paper) + _extreme_anchors(plan, paper)
@@ -365,8 +372,9 @@ class _Number:
     block: BaseGeometry | None = None
 
 
-def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
-                              bold: list[BaseGeometry]) -> tuple[list[Text], list[Polyline]]:
+def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper, bold: list[BaseGeometry],
+                              lettered: Collection[tuple[float, float]] = ()
+                              ) -> tuple[list[Text], list[Polyline], list[Anchor]]:
     """The positions' numbers round the crank pin's circle (or a rocking crank's arc), each just outside it on the
     line from the pivot through its pin, as a draughtsman numbers them, and the leaders of those set aside.
 
@@ -376,6 +384,9 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
     rest, one in every few is numbered, the fewest skipped that keep every number clear of its neighbours
     (36 positions on a small crank are numbered 1, 3, 5, …); where they are thinned so, one that would run into a
     number always given is left out, and where every position is numbered, it is set aside as those are.
+
+    A number (or an extreme's name) that would be set aside at a pin where letters with primes stand (``lettered``,
+    the points of :func:`_extreme_anchors`' anchors) is given back as an anchor instead, to be placed with them.
     """
     driver = plan.mechanism.driver
     centre = complex(*paper(plan.mechanism.scene.frame_points[driver.pivot]))
@@ -394,8 +405,21 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
     texts: list[Text] = []
     leaders: list[Polyline] = []
     boxes: list[BaseGeometry] = []
+    crowded: list[Anchor] = []
+
+    def with_its_letters(item: _Number) -> bool:
+        """Whether ``item``, whose number stands off its radius, is left to be placed with the letters of its pin."""
+        pin = next((point for point in lettered if abs(complex(*point) - item.pin) < _SAME_PIN_MM), None)
+        if pin is None:
+            return False
+        crowded.append(Anchor(pin, item.text, _LABEL,
+                              math.atan2(item.outward.imag, item.outward.real), _NUMBER_COLOUR))
+        return True
+
     for item in always:
         text, leader = _set_aside(item, centre, boxes, bold)
+        if leader is not None and with_its_letters(item):
+            continue
         texts.append(text)
         boxes.append(spaced_box(text, LABEL_SPACING / 2))
         if leader is not None:
@@ -415,6 +439,8 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
                      if not any(text_box(text).intersects(line) for line in bold)), None)
         leader = None
         if text is None:
+            if with_its_letters(item):
+                continue
             text, leader = _set_aside(item, centre, boxes, bold)
         spaced = spaced_box(text, LABEL_SPACING / 2)
         if any(spaced.intersects(other) for other in boxes):
@@ -429,7 +455,7 @@ def _numbers_round_the_circle(plan: PositionsPlan, paper: Paper,
         boxes.append(spaced)
         if leader is not None:
             leaders.append(leader)
-    return texts, leaders
+    return texts, leaders, crowded
 
 
 def _set_aside(item: _Number, centre: complex, boxes: list[BaseGeometry],
@@ -458,6 +484,8 @@ def _set_aside(item: _Number, centre: complex, boxes: list[BaseGeometry],
     return _number_text(item, 0.0), None  # nowhere near is clear: beside its pin after all
 
 
+# A crank pin nearer than this (mm) to a point lettered with a prime is that point.
+_SAME_PIN_MM = 1e-6
 # How far round the circle a number set aside is tried at a time (radians).
 _ROUND_STEP = math.radians(4.0)
 
