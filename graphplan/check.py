@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import re
 import unicodedata
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 
 from .errors import SceneError
@@ -284,6 +284,32 @@ def _point_pair(text: str, names: list[str]) -> tuple[str, str] | None:
         if text.startswith(first) and text[len(first):] in names:
             return first, text[len(first):]
     return None
+
+
+def epsilon_of_another(plans: Mapping[str, Plan], table: Iterable[Reading]) -> dict[int, int]:
+    """The links whose ε is another link's reading: ``{3: 4}`` where link 3 turns with link 4 and has no ε of its own.
+
+    A link that turns with another (an RPR's block carrying a point of its rod, ``ae = pa4·lAE/lCA4`` turned as
+    pa4 is) has its ω read off its own two images, ``ae`` being square to AE on the velocity plan; on the
+    acceleration plan its image is laid off similar to the other link's, with no tangential component of its own
+    to read, so its ε is the other's by the kinematics alone (``ε3 = ε4``), followed to the link whose ε is read.
+    """
+    if "acceleration" not in plans:
+        return {}
+    read = {reading.quantity for reading in table}
+    turns_with = {step.similarity.link: step.similarity.turns_with for step in plans["acceleration"].steps
+                  if step.similarity is not None and step.similarity.turns_with is not None}
+    found = {}
+    for link, other in turns_with.items():
+        if f"epsilon{link}" in read:
+            continue
+        seen = {link}
+        while f"epsilon{other}" not in read and other in turns_with and other not in seen:
+            seen.add(other)
+            other = turns_with[other]
+        if f"epsilon{other}" in read:
+            found[link] = other
+    return found
 
 
 def drafted(millimetres: float, precision: float) -> float:

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..analysis import SCENE_WIDE_WARNINGS, Analysis, PlanPosition, VelocityPosition
-from ..check import Reading
+from ..check import Reading, epsilon_of_another
 from ..errors import SceneError
 from ..kinematics import cross
 from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
@@ -55,6 +55,7 @@ from .machine_note import balancing_section, dynamics_section, vibration_section
 from .markdown import literal, set_close, user_texts
 from .symbols import CAPITALS
 from .tables import (
+    epsilons_of_others,
     error_table_lines,
     has_reactions,
     measured_bound,
@@ -1114,6 +1115,9 @@ class _Note:
         if not chosen:
             return
         lines = [f"- {self.reading(pp, plan, reading)}" for reading in chosen]
+        if plan.kind == "acceleration":
+            lines += [f"- {self.epsilon_of_another(pp, link, other)}"
+                      for link, other in sorted(epsilon_of_another(pp.plans, pp.readings).items())]
         self.para(self.t("note_read_off"), *lines)
         key = "note_omega_sense" if plan.kind == "velocity" else "note_epsilon_sense"
         if any(reading.quantity.startswith(("omega", "epsilon")) for reading in chosen):
@@ -1148,6 +1152,13 @@ class _Note:
         unit = self.text["unit_m_per_s" if plan.kind == "velocity" else "unit_m_per_s2"]
         return (f"{reading.quantity} = {segment}·{symbol} = {self.mm(millimetres)}{self.text['times']}{scale} = "
                 f"{self.n(abs(value))} {unit}{self.short_mark(millimetres, segment)}")
+
+    def epsilon_of_another(self, pp: PlanPosition, link: int, other: int) -> str:
+        """``ε3 = ε4 = …``: link ``link`` turns with link ``other``, whose tangential component is the only one the
+        plan lays off for either, so a student takes ε3 for the inertia loads from ε4's reading."""
+        value = next(reading for reading in pp.readings if reading.quantity == f"epsilon{other}").value(pp.plans)
+        return self.t("note_epsilon_of_another", link=link, other=other,
+                      value=f"{self.n(abs(value))} {self.text['unit_rad_per_s2']}", sense=self.with_sense(value))
 
     def angular_names(self, pp: PlanPosition, plan: Plan, reading: Reading, link: int) -> tuple[str, str]:
         """The relative vector and the length an ω or ε is read from: (VBA, lAB), (aBA^τ, lAB)."""
@@ -1235,6 +1246,8 @@ class _Note:
         intro = self.errors_intro()
         undefined = undefined_errors(self.analysis, self.analysis.plans)
         intro += f" {undefined}" if undefined else ""
+        others = epsilons_of_others(self.analysis)
+        intro += f" {others}" if others else ""
         self.para(f"{intro} {reactions_intro(self.analysis, in_note=True)}" if has_reactions(self.analysis) else intro)
         for plan in self.analysis.plans:
             self.captioned(self.t("note_errors_table", number=plan.number),

@@ -16,7 +16,7 @@ import math
 from collections import defaultdict
 
 from ..analysis import Analysis, PlanPosition, VelocityPosition
-from ..check import SOURCES, ErrorRow, is_balancing, is_reaction
+from ..check import SOURCES, ErrorRow, epsilon_of_another, is_balancing, is_reaction
 from ..locale import strings
 from ..misreadings import (
     FAR_OFF_PERCENT,
@@ -266,6 +266,14 @@ def undefined_errors(analysis: Analysis, positions: tuple[VelocityPosition, ...]
     return ""
 
 
+def epsilons_of_others(analysis: Analysis) -> str:
+    """Why a turning link has an ω row and no ε row, where one has: it turns with another link (a point of an RPR's
+    rod), whose ε is its own and the only one the acceleration plan lays off; else nothing."""
+    pairs = {pair for plan in analysis.plans for pair in epsilon_of_another(plan.plans, plan.readings).items()}
+    text = strings(analysis.scene.locale)
+    return " ".join(text["errors_epsilon_of_another"].format(link=link, other=other) for link, other in sorted(pairs))
+
+
 def has_reactions(analysis: Analysis) -> bool:
     """Whether the error tables compare the force polygons' reactions too."""
     return any(is_reaction(row.quantity) for plan in analysis.plans for row in plan.errors)
@@ -330,9 +338,11 @@ def markdown(analysis: Analysis) -> str:
     precision = f"{analysis.scene.drawing.drafting_precision:g}".replace(".", mark)
     undefined = undefined_errors(analysis, (*analysis.plans, *measured_velocity_plans(analysis)))
     bound = measured_bound(analysis, mark)
+    others = epsilons_of_others(analysis)
     lines = [f"# {text['errors_title'].format(title=literal(analysis.scene.title))}", "",
              f"{text['errors_formula']}{text['semicolon']}{text['errors_drafting'].format(precision=precision)}"
-             + (f" {undefined}" if undefined else "") + (f" {bound}" if bound else ""), ""]
+             + (f" {undefined}" if undefined else "") + (f" {others}" if others else "")
+             + (f" {bound}" if bound else ""), ""]
     if has_reactions(analysis):
         lines += [reactions_intro(analysis), ""]
     if analysis.scene.locale == "zh":  # its sentences, joined with a Latin space, set close as the note's are
