@@ -621,12 +621,21 @@ def isolation_warning(spec: VibrationSpec) -> str | None:
 
 
 def damping_warning(spec: VibrationSpec) -> str | None:
-    """The command line's line for a ``damping_ratio`` above 1, else None: over-critical damping lets a mount creep
-    back with no vibration at all, which no machine's mount does (they damp at a few hundredths to a few tenths),
-    so such a ζ is rather a percentage typed for a fraction, as ``f`` and ``delta`` are told."""
+    """The command line's line for a ``damping_ratio`` of 1 or above, else None: critical or over-critical damping
+    lets a mount creep back with no vibration at all, which no machine's mount does (they damp at a few hundredths
+    to a few tenths), so such a ζ is rather a percentage typed for a fraction, as ``f`` and ``delta`` are told."""
     zeta = spec.damping_ratio
-    if spec.damping is not None or not zeta > 1:
+    if spec.damping is not None or not zeta >= 1:
         return None
+    # ζ = 1 exactly is critical damping, which a mount reaches only by design (an instrument's or a door closer's
+    # dashpot, and those are tuned to some 0.6–0.7, the flattest response): typed as 1 it is far likelier 1 % than the
+    # one ratio that marks the edge of vibrating at all, so it is asked as ζ = 2, 5, 10 are.  Below 1 nothing is told:
+    # 0.7 is an instrument's design damping and 0.2–0.4 a viscous damper's.  Between 1 and 2 (1.5) the over-critical
+    # line alone: 1.5 % is as likely a slip as an over-damped dashpot, and the line already says ζ is over 1.
+    if zeta == 1:
+        return (f"vibration.damping_ratio: ζ = 1 is read as a ratio, critical damping: the machine would creep back to "
+                f"rest without vibrating, which no mount's damping does (a few hundredths to a few tenths); "
+                f"{percentage_question(zeta, 'ζ')}")
     percentage = f"; {percentage_question(zeta, 'ζ')}" if zeta >= 2 else ""
     return (f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1): the machine would creep back to rest "
             f"without vibrating, which no mount's damping does (a few hundredths to a few tenths){percentage}")
