@@ -29,8 +29,24 @@ THICKEST_SECTION_M = 1.0
 # kg·m², 0.8 m for 20 kg lumped near the pin of a 0.06 m crank at J = 0.01 (a crankshaft's throws), while 4 kg of a
 # 0.175 m crank typed in grams, at its J = 0.0102, would reach 32 km.  A crank heavier than a bar that reaches more
 # than LONGEST_CRANK times its length (or 0.1 m) along its axis has its mass in grams.  Without J (a crank turning
-# at constant ω needs none) nothing tells its sheave or flywheel from a slip.
+# at constant ω needs none) its length bounds it more loosely (:func:`heaviest_crank`).
 LONGEST_CRANK = 50.0
+# A crank given no J is bounded by the heaviest thing a crank of its length carries but a flywheel (which has a J the
+# scene would give): a crankshaft's throw, its webs, counterweights and journals, or an eccentric's sheave.  Their
+# counterweights sweep some 1.3–1.5 crank radii out and a throw spans about one cylinder's pitch, some 2 crank radii,
+# along the shaft; a solid steel cylinder twice the crank's length in radius and twice it long holds either whole:
+# ρ·π·(2·l)²·(2·l) = 8π·ρ·l³, l taken at least THINNEST_SECTION_M as for the bar, so 197 kg for a crank up to 0.1 m,
+# 1060 kg at 0.175 m.  A truck engine's throw (some 17 kg at a 0.075 m crank) fills a tenth of it, a course's crank
+# of 0.1 m (some 2–4 kg) a hundredth; the same crank typed in grams (2000, 500 for 0.5 kg) passes it.
+CRANK_REACH = 2.0
+
+
+def heaviest_crank(length: float) -> float:
+    """The most a driving crank of ``length`` (m) given no inertia weighs, kg: a solid steel cylinder
+    :data:`CRANK_REACH` times its length (at least :data:`THINNEST_SECTION_M`) in radius and as many times long,
+    which holds a crankshaft's throw with its counterweights or an eccentric's sheave."""
+    reach = CRANK_REACH * max(length, THINNEST_SECTION_M)
+    return STEEL_DENSITY * math.pi * reach ** 2 * reach
 
 
 def heaviest_bar(length: float) -> float:
@@ -53,7 +69,7 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
     """A ``masses-in-grams`` warning, at the first position, naming each link whose mass is more than
     :func:`heaviest_bar` of its span (the largest distance between two of its points), with the mass it would be in
     grams; the driving crank only where its inertia, given, makes it too compact to carry a flywheel or counterweights
-    (:data:`LONGEST_CRANK`)."""
+    (:data:`LONGEST_CRANK`), or, given none, where it is heavier than :func:`heaviest_crank` too."""
     told = []
     for number, link in sorted(mechanism.scene.links.items()):
         span = _span(mechanism, motion, number)
@@ -63,10 +79,18 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
         why = ""
         if number == mechanism.driver.link:
             depth = _crank_depth(link.mass, link.inertia)
-            if depth is None or not depth > LONGEST_CRANK * max(length, THINNEST_SECTION_M):
+            if depth is None:
+                if not link.mass > heaviest_crank(length):
+                    continue
+                reach = CRANK_REACH * max(length, THINNEST_SECTION_M)
+                why = (f", and than a steel cylinder {reach:.3g} m in radius and long ({CRANK_REACH:g} × max(l, "
+                       f"{THINNEST_SECTION_M:g} m)), which holds a crankshaft's throw with its counterweights "
+                       f"({heaviest_crank(length):.3g} kg; a flywheel on the crank: give {link.where}.inertia)")
+            elif not depth > LONGEST_CRANK * max(length, THINNEST_SECTION_M):
                 continue
-            why = (f", and too compact for a flywheel or counterweights: with {link.where}.inertia = "
-                   f"{link.inertia:g} kg·m², as steel it would reach {depth:.3g} m along its axis")
+            else:
+                why = (f", and too compact for a flywheel or counterweights: with {link.where}.inertia = "
+                       f"{link.inertia:g} kg·m², as steel it would reach {depth:.3g} m along its axis")
         told.append(f"{link.where}.mass = {link.mass:g} kg on a link {length:.3g} m long ({between}), heavier than a "
                     f"solid steel bar of that length ({heaviest_bar(length):.3g} kg){why}: grams typed for kg? "
                     f"{link.mass:g} g is {link.where}.mass = {link.mass / 1000:g}")
