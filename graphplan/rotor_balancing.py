@@ -54,6 +54,7 @@ from .rotor_lengths import (
     THINNEST_DISC,
     Implausible,
     LengthsInMillimetres,
+    heaviest_rotor,
 )
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
@@ -789,13 +790,63 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
     return LengthsInMillimetres(tuple(found)) if found else None
 
 
-def cautions(result: BalancingResult) -> list[AnglesInRadians | CoupleLeft | LengthsInMillimetres | OnAxis
-                                              | PlanesClose]:
-    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres, angles
-    that look typed in radians, masses all on the axis, corrections dwarfing the masses, the couple of one plane."""
+@dataclass(frozen=True)
+class MassesInGrams:
+    """The rotor's masses weigh together more than solid steel filling a cylinder twice as large as the rotor's
+    largest length (:func:`~graphplan.rotor_lengths.heaviest_rotor`), as masses typed in grams make them: 200 for
+    0.2 kg on a rotor 0.1 m across."""
+
+    masses: tuple[float, ...]
+    size: float
+    size_key: str
+    code = "masses-in-grams"
+
+    @property
+    def limit(self) -> float:
+        """The most the masses of a rotor of this size weigh together, kg."""
+        return heaviest_rotor(self.size)
+
+    @property
+    def detail(self) -> str:
+        """The warning in a line (English, as the command line prints it)."""
+        k = max(range(len(self.masses)), key=lambda index: self.masses[index])
+        heaviest = self.masses[k]
+        return (f"balancing.masses[{k}].mass = {heaviest:g} kg, the masses {sum(self.masses):.4g} kg together, on a "
+                f"rotor whose largest length is {self.size:g} m ({self.size_key}): heavier than solid steel filling "
+                f"a cylinder twice that in radius and in length ({self.limit:.3g} kg): grams typed for kg? "
+                f"{heaviest:g} g is balancing.masses[{k}].mass = {heaviest / 1000:g}; the scene's masses are in kg "
+                "(divide grams by 1000)")
+
+
+def masses_in_grams(spec: BalancingSpec) -> MassesInGrams | None:
+    """:class:`MassesInGrams` where two masses or more weigh together more than
+    :func:`~graphplan.rotor_lengths.heaviest_rotor` of the rotor's largest length: a mass's or a correction's radius,
+    or its masses' and planes' span along the axis; else None.  One mass alone is not judged: its radius may be a
+    heavy disc's eccentricity, and nothing else gives the rotor's size."""
+    if len(spec.masses) < 2:
+        return None
+    lengths = [(mass.radius, f"balancing.masses[{k}].radius") for k, mass in enumerate(spec.masses)]
+    radii = tuple(spec.correction_radius or ())
+    lengths += [(radius, "balancing.correction_radius" if len(set(radii)) == 1 else f"balancing.correction_radius[{k}]")
+                for k, radius in enumerate(radii)]
+    along = [mass.plane for mass in spec.masses] + list(spec.planes)
+    lengths.append((max(along) - min(along), "the masses' and planes' span along the axis"))
+    size, key = max(lengths, key=lambda item: item[0])
+    masses = tuple(mass.mass for mass in spec.masses)
+    # A rotor of no size (every mass on its axis, in one plane) is told so (on_axis), not weighed.
+    if not size > 0 or not sum(masses) > heaviest_rotor(size):
+        return None
+    return MassesInGrams(masses, size, key)
+
+
+def cautions(result: BalancingResult) -> list[AnglesInRadians | CoupleLeft | LengthsInMillimetres | MassesInGrams
+                                              | OnAxis | PlanesClose]:
+    """What the balanced rotor is left that a reader should not miss: lengths that look typed in millimetres, masses
+    that look typed in grams, angles that look typed in radians, masses all on the axis, corrections dwarfing the
+    masses, the couple of one plane."""
     couple = static_couple(result)
-    return [found for found in (lengths_in_millimetres(result.spec), angles_in_radians(result.spec),
-                                on_axis(result.spec), planes_close(result),
+    return [found for found in (lengths_in_millimetres(result.spec), masses_in_grams(result.spec),
+                                angles_in_radians(result.spec), on_axis(result.spec), planes_close(result),
                                 None if couple is None else CoupleLeft(couple)) if found is not None]
 
 
@@ -803,6 +854,7 @@ def _above_noise(value: float, scale: float) -> float:
     return 0.0 if value <= NEGLIGIBLE * scale else value
 
 
-__all__ = ["LARGE_CORRECTIONS", "AnglesInRadians", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft", "OnAxis", "PlanesClose",
-           "PolygonVector", "RotatingMass", "angles_in_radians", "balance", "balancing_results", "cautions", "direction_deg", "label_clash",
-           "lengths_in_millimetres", "on_axis", "planes_close", "read_balancing", "static_couple", "vector_name"]
+__all__ = ["LARGE_CORRECTIONS", "AnglesInRadians", "BalancingResult", "BalancingSpec", "CorrectionPlane", "CoupleLeft",
+           "MassesInGrams", "OnAxis", "PlanesClose", "PolygonVector", "RotatingMass", "angles_in_radians", "balance",
+           "balancing_results", "cautions", "direction_deg", "label_clash", "lengths_in_millimetres",
+           "masses_in_grams", "on_axis", "planes_close", "read_balancing", "static_couple", "vector_name"]

@@ -52,6 +52,17 @@ FLATTEST_ROTOR = 20.0
 # radius in millimetres among planes in metres: the two-plane rotor's 20 would tell a grinding wheel or a flywheel
 # its radius is millimetres.  A disc with every mass in one plane gives no length along its axis to judge by.
 THINNEST_DISC = 200.0
+# A rotor's masses are bolted, welded or cast on it, within its body, and no body is heavier than solid steel: the
+# masses of one rotor together weigh at most a steel cylinder ROTOR_REACH times as large in radius and in length as
+# the largest of its lengths the scene gives (a mass's or a correction's radius, its masses' and planes' span along
+# the axis), 8π·ρ·S³ for S = that length: 197 kg at S = 0.1 m.  The lengths are where the masses' centres turn, not
+# the rim, and a textbook's "mass" is often a whole disc off its centre, hence twice: Khurmi's four masses of 1000 kg
+# in one plane within 0.3 m of the axis, among the heaviest for their size of textbook exercises, fill a fifth of it
+# (5330 kg), his shaft's 1100 kg within 0.7 m along it 2 %, the rotor starter's 42 kg over 0.22 m 2 %.  Masses typed
+# in grams on a rotor some 0.1 m across (200, 150, 250 for 0.2, 0.15, 0.25 kg) pass it three times over.  A rotor of
+# one mass gives it no bound: its radius may be a heavy disc's eccentricity (a 500 kg flywheel 2 mm off its axis).
+ROTOR_REACH = 2.0
+STEEL_DENSITY = 7850.0
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
@@ -65,6 +76,14 @@ def lightest_rotor(eccentricity: float) -> float:
     """The least mass (kg) of a machine whose rotor reaches ``eccentricity`` (m) from its axis, below every real
     one's for its reach (:data:`LIGHTEST_AT_ONE_METRE`, :data:`LIGHTNESS_EXPONENT`)."""
     return LIGHTEST_AT_ONE_METRE * eccentricity ** LIGHTNESS_EXPONENT
+
+
+def heaviest_rotor(size: float) -> float:
+    """The most (kg) the masses of a rotor weigh together whose largest length the scene gives (a radius, its span
+    along the axis) is ``size`` (m): solid steel filling a cylinder :data:`ROTOR_REACH` times as large in radius and
+    in length, 8π·ρ·S³ (:data:`STEEL_DENSITY`)."""
+    reach = ROTOR_REACH * size
+    return STEEL_DENSITY * math.pi * reach ** 2 * reach
 
 
 @dataclass(frozen=True)
@@ -152,5 +171,6 @@ class LengthsInMillimetres:
 
 
 __all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
-           "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "SOME_IN_MILLIMETRES",
-           "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible", "LengthsInMillimetres", "lightest_rotor"]
+           "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "ROTOR_REACH",
+           "SOME_IN_MILLIMETRES", "STEEL_DENSITY", "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible",
+           "LengthsInMillimetres", "heaviest_rotor", "lightest_rotor"]
