@@ -81,12 +81,16 @@ DISC_BOUND = math.pi * 0.2 ** 2 * 0.2 * STEEL  # 197.3 kg
 def test_a_discs_masses_in_grams_are_warned_of(tmp_path, capsys) -> None:
     """200, 150 and 250 g on a disc 0.1 m in radius typed as kg: 600 kg, three times the cylinder's 197 kg."""
     assert 600.0 > DISC_BOUND
-    told, results = _run(tmp_path, _disc((200.0, 150.0, 250.0), (0.1, 0.08, 0.1)), capsys, "balancing")
+    told, results = _run(tmp_path, _disc((200.0, 150.0, 250.0), (0.1, 0.08, 0.1)), capsys, "balancing,note")
     words = (f"balancing.masses[2].mass = 250 kg, the masses 600 kg together, on a rotor whose largest length is 0.1 m "
              f"(balancing.masses[0].radius): heavier than solid steel filling a cylinder twice that in radius and in "
              f"length ({DISC_BOUND:.3g} kg): grams typed for kg? 250 g is balancing.masses[2].mass = 0.25")
     assert f"warning: balancing: {words}" in told
     assert any(words in detail for detail in _in_grams(results))
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert (f"Caution: the masses weigh 600 kg together, more than solid steel filling a cylinder twice the rotor's "
+            f"largest length (0.1 m) in radius and in length, {DISC_BOUND:.3g} kg: they look typed in grams. As grams "
+            "the heaviest, 250 g, is 0.25 kg.") in note
 
 
 @pytest.mark.parametrize(("masses", "told"), [((70.0, 60.0, 70.0), True), ((65.0, 60.0, 65.0), False),

@@ -416,7 +416,7 @@ def _run_down(note: Writer, dynamics) -> None:
 
 def balancing_section(note: Writer, section: int, result: BalancingResult) -> None:
     """The rotor's masses, their products carried to the correction planes, each plane's polygon closed."""
-    from ..rotor_balancing import angles_in_radians, on_axis, planes_close, static_couple
+    from ..rotor_balancing import angles_in_radians, masses_in_grams, on_axis, planes_close, static_couple
     from ..rotor_balancing import lengths_in_millimetres as rotor_lengths
 
     spec = result.spec
@@ -430,6 +430,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
     note.para(note.t("note_bal_angles"))
     if (lengths := rotor_lengths(spec)) is not None:
         _lengths_caution(note, lengths)
+    if (grams := masses_in_grams(spec)) is not None:
+        heaviest = max(grams.masses)
+        note.para(note.t("note_bal_caution_grams", total=note.n(sum(grams.masses)), size=note.n(grams.size),
+                         limit=note.n(grams.limit, 3), mass=note.n(heaviest), kilograms=note.n(heaviest / 1000)))
     if (radians := angles_in_radians(spec)) is not None:
         # Set apart by semicolons: a Russian note's decimal comma would run "0, 1,5708" together.
         note.para(note.t("note_bal_caution_radians", angles="; ".join(note.n(angle) for angle in radians.angles),
