@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .units import MIXED_RATIO, millimetres_question
+from .units import MIXED_RATIO, millimetres_question, solid_steel_cylinder
 
 # The largest rotors are wind turbines', whose blade tips turn some 120 m from the axis (a hydro-turbine runner or a
 # generator rotor, balanced in planes, a few metres): a radius or an eccentricity over LARGEST_RADIUS_M is no
@@ -62,7 +62,6 @@ THINNEST_DISC = 200.0
 # in grams on a rotor some 0.1 m across (200, 150, 250 for 0.2, 0.15, 0.25 kg) pass it three times over.  A rotor of
 # one mass gives it no bound: its radius may be a heavy disc's eccentricity (a 500 kg flywheel 2 mm off its axis).
 ROTOR_REACH = 2.0
-STEEL_DENSITY = 7850.0
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
 FASTEST_BASE_M_S = 20.0
@@ -81,9 +80,9 @@ def lightest_rotor(eccentricity: float) -> float:
 def heaviest_rotor(size: float) -> float:
     """The most (kg) the masses of a rotor weigh together whose largest length the scene gives (a radius, its span
     along the axis) is ``size`` (m): solid steel filling a cylinder :data:`ROTOR_REACH` times as large in radius and
-    in length, 8π·ρ·S³ (:data:`STEEL_DENSITY`)."""
+    in length, 8π·ρ·S³."""
     reach = ROTOR_REACH * size
-    return STEEL_DENSITY * math.pi * reach ** 2 * reach
+    return solid_steel_cylinder(reach, reach)
 
 
 @dataclass(frozen=True)
@@ -172,5 +171,5 @@ class LengthsInMillimetres:
 
 __all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
            "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "ROTOR_REACH",
-           "SOME_IN_MILLIMETRES", "STEEL_DENSITY", "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible",
+           "SOME_IN_MILLIMETRES", "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible",
            "LengthsInMillimetres", "heaviest_rotor", "lightest_rotor"]

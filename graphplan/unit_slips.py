@@ -10,7 +10,7 @@ import math
 
 from .mechanism import Mechanism
 from .motion import Motion, PositionWarning
-from .units import motor_speed_in_rpm, rpm_question
+from .units import STEEL_DENSITY, motor_speed_in_rpm, rpm_question, solid_steel_cylinder
 
 # A link is a bar between its joints.  A course's links weigh q·l, q some 10–40 kg/m (a 0.3 m rocker 3–12 kg);
 # even a solid steel bar as thick and as wide as it is long, or 0.1 m square where it is shorter (78.5 kg/m, twice
@@ -19,7 +19,6 @@ from .units import motor_speed_in_rpm, rpm_question
 # it the bar is that square, 7850 kg a metre (the heaviest links, a large press's connecting rod or a pumpjack's
 # walking beam, weigh some 1–5 t a metre), which a course's 10 kg a metre in grams passes at every length, where
 # the cube of a 2 m link, 62.8 t, let a 20 t link of 10 kg/m in grams by.
-STEEL_DENSITY = 7850.0
 THINNEST_SECTION_M = 0.1
 THICKEST_SECTION_M = 1.0
 # The driving crank may carry a flywheel, a gear, counterweights, an eccentric's sheave or a crankshaft's webs and
@@ -46,7 +45,7 @@ def heaviest_crank(length: float) -> float:
     :data:`CRANK_REACH` times its length (at least :data:`THINNEST_SECTION_M`) in radius and as many times long,
     which holds a crankshaft's throw with its counterweights or an eccentric's sheave."""
     reach = CRANK_REACH * max(length, THINNEST_SECTION_M)
-    return STEEL_DENSITY * math.pi * reach ** 2 * reach
+    return solid_steel_cylinder(reach, reach)
 
 
 def heaviest_bar(length: float) -> float:

@@ -10,6 +10,15 @@ import math
 RPM = math.pi / 30.0
 # Standard gravity (m/s²), by which a weight in N is told as the mass in kg it stands for.
 STANDARD_GRAVITY = 9.80665
+#: Steel's density (kg/m³): a machine's parts are no heavier than solid steel of their size, so a mass beyond that
+#: is one typed in grams (a link's, a crank's, a rotor's masses).
+STEEL_DENSITY = 7850.0
+
+
+def solid_steel_cylinder(radius: float, length: float) -> float:
+    """The mass (kg) of a solid steel cylinder of ``radius`` and ``length`` (m), the bound a mass typed in grams
+    passes where a body of that size could weigh no more."""
+    return STEEL_DENSITY * math.pi * radius ** 2 * length
 
 #: A length this many times another of the same machine is one typed in millimetres among metres: a linkage's
 #: lengths stand within some 1:50 of each other (a shaper's 0.1 m crank beside its 0.6 m rocker is 1:6), and a
