@@ -31,7 +31,7 @@ from ..locale import strings
 from ..scales import fit_scale, format_scale
 from ..units import RPM
 from .labels import Anchor, broken_under, obstacles_of, place_labels
-from .numerals import short
+from .numerals import short, worked_out
 from .primitives import (
     THIN,
     Arrow,
@@ -689,31 +689,73 @@ def _angle_scale(model: EquivalentModel, angle: float, words: Mapping[str, str])
     return words["dyn_travel_scale"].format(value=format_scale(angle))
 
 
+class FlywheelNumbers(NamedTuple):
+    """The flywheel's numbers as the drawing's results and the note both write them, with a decimal point.
+
+    Written once, here, so that a reader who compares the two finds the same digits: the drawing wrote JF′ to
+    four (0.3881) beside the note's five (0.38808).  A result worked out keeps its trailing noughts
+    (:func:`~graphplan.render.numerals.worked_out`: ωmin = 10.210 beside ωmax = 10.734); a value the scene gives
+    (δ, ωm and its rpm, the other shaft's n′) and an angle of the cycle are written short, as typed (δ = 0.05).
+    """
+
+    delta: str
+    omega_mean: str
+    rpm: str
+    delta_w_max: str
+    required: str
+    approximate: str
+    mertsalov: str
+    omega_max: str
+    omega_min: str
+    angle_max: str
+    angle_min: str
+    # None where the scene names no other shaft.
+    shaft_rpm: str | None
+    moved: str | None
+
+
+def flywheel_numbers(model: EquivalentModel, flywheel: Flywheel) -> FlywheelNumbers:
+    """The numbers of ``flywheel`` the dynamics drawing's results and the note's flywheel both write."""
+    def angle(index: int) -> str:
+        return short(math.degrees(model.driver[index]) % 360.0, 4)
+
+    other_shaft = flywheel.moved is not None and flywheel.shaft_rpm is not None
+    return FlywheelNumbers(
+        delta=short(flywheel.delta, 5), omega_mean=short(flywheel.omega_mean, 5),
+        rpm=short(flywheel.omega_mean / RPM, 5), delta_w_max=worked_out(flywheel.delta_w_max),
+        required=worked_out(flywheel.required), approximate=worked_out(flywheel.approximate),
+        mertsalov=worked_out(flywheel.mertsalov), omega_max=worked_out(flywheel.omega[flywheel.index_max]),
+        omega_min=worked_out(flywheel.omega[flywheel.index_min]), angle_max=angle(flywheel.index_max),
+        angle_min=angle(flywheel.index_min),
+        # The speed as the scene gives it: 1462.5 rpm, which four digits drew as 1462 beside the note's 1462.5.
+        shaft_rpm=short(flywheel.shaft_rpm, 6) if other_shaft else None,
+        moved=worked_out(flywheel.moved) if other_shaft else None)
+
+
 def _results(model: EquivalentModel, flywheel: Flywheel | None, words: Mapping[str, str]) -> list[Primitive]:
     if flywheel is None:
         return []
+    numbers = flywheel_numbers(model, flywheel)
     lines = [
-        words["dyn_delta"].format(delta=short(flywheel.delta), omega=short(flywheel.omega_mean, 5),
-                              rpm=short(flywheel.omega_mean / RPM, 5)),
-        words["dyn_delta_w_max"].format(value=short(flywheel.delta_w_max, 5)),
+        words["dyn_delta"].format(delta=numbers.delta, omega=numbers.omega_mean, rpm=numbers.rpm),
+        words["dyn_delta_w_max"].format(value=numbers.delta_w_max),
     ]
     if model.inertia_is_constant:
         constant = "dyn_exact_no_inertia" if model.inertia_is_nought else "dyn_exact_constant"
-        lines.append(words[constant].format(value=short(flywheel.required, 5)))
+        lines.append(words[constant].format(value=numbers.required))
     else:
-        lines += [words["dyn_exact"].format(value=short(flywheel.required, 5)),
-                  words["dyn_approximate"].format(value=short(flywheel.approximate, 5)),
-                  words["dyn_mertsalov"].format(value=short(flywheel.mertsalov, 5),
+        lines += [words["dyn_exact"].format(value=numbers.required),
+                  words["dyn_approximate"].format(value=numbers.approximate),
+                  words["dyn_mertsalov"].format(value=numbers.mertsalov,
                                                 constant=short(flywheel.constant_inertia, 4))]
-    if flywheel.moved is not None and flywheel.shaft_rpm is not None:
-        # The speed as the scene gives it: 1462.5 rpm, which four digits drew as 1462 beside the note's 1462.5.
-        lines.append(words["dyn_moved"].format(rpm=short(flywheel.shaft_rpm, 6), value=short(flywheel.moved, 4)))
-    for key, index in (("dyn_omega_max", flywheel.index_max), ("dyn_omega_min", flywheel.index_min)):
-        angle = short(math.degrees(model.driver[index]) % 360.0, 4)
+    if numbers.moved is not None:
+        lines.append(words["dyn_moved"].format(rpm=numbers.shaft_rpm, value=numbers.moved))
+    for key, index, value, angle in (("dyn_omega_max", flywheel.index_max, numbers.omega_max, numbers.angle_max),
+                                     ("dyn_omega_min", flywheel.index_min, numbers.omega_min, numbers.angle_min)):
         travel = short(math.degrees(model.coordinate[index]), 4)
         # A cycle that starts at 0° (a load diagram's, a crank's from 0°) has the two angles alike: said once.
         into = words["dyn_into_cycle"].format(travel=travel) if travel != angle else ""
-        lines.append(words[key].format(value=short(float(flywheel.omega[index]), 5), angle=angle, into=into))
+        lines.append(words[key].format(value=value, angle=angle, into=into))
     if flywheel.inertia <= 0:
         lines.append(words["dyn_no_flywheel"])
     items: list[Primitive] = [Text((0.0, 0.0), words["dyn_results"], HEADING, "start", weight="bold")]
@@ -733,4 +775,4 @@ def nice_step(rough: float) -> float:
     return 10.0 * power
 
 
-__all__ = ["Scales", "dynamics_svg", "larger_layouts", "layout", "nice_step", "ordinate_axis", "scales_for"]
+__all__ = ["FlywheelNumbers", "Scales", "dynamics_svg", "flywheel_numbers", "larger_layouts", "layout", "nice_step", "ordinate_axis", "scales_for"]

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from ..rounding import ROUNDING_NOISE
+
 # From this magnitude on a number is written as a power of ten (a steel's E = 2.1·10¹¹ Pa): whole, it would run to
 # more digits than are read.
 POWER_OF_TEN = 1e9
@@ -33,6 +35,19 @@ def significant(value: float, digits: int = 4) -> str:
     decimals = max(0, digits - 1 - math.floor(math.log10(abs(float(f"{value:.{digits}g}")))))
     text = f"{value:.{decimals}f}"
     return text.replace("-", "−") if text.strip("-0.") else "0"
+
+
+def worked_out(value: float, digits: int = 5) -> str:
+    """A result worked out to ``digits`` significant digits, its trailing noughts kept; rounding noise
+    (:data:`~graphplan.rounding.ROUNDING_NOISE`) is 0 and a value that is not a number a dash, as the note writes them.
+
+    ωmin = 10.210 beside ωmax = 10.734: written 10.21, it reads as a value known to a digit less than the other,
+    and the drawing and the note that write it so say the same number to different digits.
+    """
+    value = float(value)
+    if not math.isfinite(value):
+        return "—"
+    return "0" if abs(value) < ROUNDING_NOISE else significant(value, digits)
 
 
 def angle_in_turn(angle_deg: float) -> str:

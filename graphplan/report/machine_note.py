@@ -18,7 +18,7 @@ import numpy as np
 
 from ..loads import external_names
 from ..locale import Count
-from ..render.numerals import angle_in_turn, power_of_ten
+from ..render.numerals import angle_in_turn, power_of_ten, worked_out
 from ..units import RPM
 from .markdown import literal
 
@@ -88,8 +88,10 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
         # every switch and corner would weigh twice (40.752 N·m for an engine's 256 J/2π = 40.744).
         note.para(note.t(f"note_dyn_constant_{model.constant}{run}", value=note.n(model.mean_over_run(side))))
     energy = model.energy
-    note.para(note.t(f"note_dyn_energy{run}", low=note.n(float(energy.min())), high=note.n(float(energy.max())),
-                     value=note.n(float(np.ptp(energy)))))
+    # Worked out as the flywheel's ΔWmax is, on the drawing and below: 441.20 J, not 441.2.
+    ends = (float(energy.min()), float(energy.max()), float(np.ptp(energy)))
+    low, high, value = (worked_out(end).replace(".", note.mark) for end in ends)
+    note.para(note.t(f"note_dyn_energy{run}", low=low, high=high, value=value))
     if flywheel is not None:
         _flywheel(note, flywheel, model)
     note.figure("dynamics.svg", note.text["dyn_title" if flywheel is not None else "dyn_title_model"])
@@ -133,41 +135,36 @@ def _percent(note: Writer, value: float) -> str:
 
 
 def _flywheel(note: Writer, flywheel, model) -> None:
-    from ..flywheel import LARGEST_USUAL_DELTA, omega_to_rpm, unusual_speed_swing
+    from ..flywheel import LARGEST_USUAL_DELTA, unusual_speed_swing
+    from ..render.dynamics import flywheel_numbers
 
     delta = flywheel.delta
     if (swing := unusual_speed_swing(delta)) is not None:
         note.para(note.t("note_dyn_caution_delta", delta=note.n(delta), usual=note.n(LARGEST_USUAL_DELTA),
                          ratio=note.n(swing, 3), fraction=note.n(delta / 100)))
+    # The numbers the dynamics drawing writes beside the same quantities, to the same digits.
+    numbers = {name: None if value is None else value.replace(".", note.mark)
+               for name, value in flywheel_numbers(model, flywheel)._asdict().items()}
+    speeds = {"high": numbers["omega_max"], "low": numbers["omega_min"], "high_angle": numbers["angle_max"],
+              "low_angle": numbers["angle_min"]}
     if flywheel.inertia <= 0:
-        note.para(note.t("note_dyn_no_flywheel", delta=note.n(flywheel.delta), required=note.n(flywheel.required),
-                         reached=note.n(flywheel.reached, 4), high=note.n(flywheel.omega_max),
-                         low=note.n(flywheel.omega_min), **_speed_extreme_angles(note, flywheel, model)))
+        note.para(note.t("note_dyn_no_flywheel", delta=numbers["delta"], required=numbers["required"],
+                         reached=note.n(flywheel.reached, 4), **speeds))
         return
-    omega = flywheel.omega_mean
+    given = {"delta": numbers["delta"], "omega": numbers["omega_mean"], "rpm": numbers["rpm"],
+             "work": numbers["delta_w_max"], "mean": note.n(model.mean_inertia), "exact": numbers["required"]}
     if model.inertia_is_constant:
         key = "note_dyn_flywheel_no_inertia" if model.inertia_is_nought else "note_dyn_flywheel_constant"
-        note.para(note.t(key, delta=note.n(flywheel.delta), omega=note.n(omega),
-                         rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
-                         mean=note.n(model.mean_inertia), exact=note.n(flywheel.inertia)))
+        note.para(note.t(key, **given))
     else:
-        note.para(note.t("note_dyn_flywheel", delta=note.n(flywheel.delta), omega=note.n(omega),
-                         rpm=note.n(omega_to_rpm(omega)), work=note.n(flywheel.delta_w_max),
-                         mean=note.n(model.mean_inertia), approximate=note.n(flywheel.approximate),
-                         exact=note.n(flywheel.inertia), mertsalov=note.n(flywheel.mertsalov)))
+        note.para(note.t("note_dyn_flywheel", approximate=numbers["approximate"], mertsalov=numbers["mertsalov"],
+                         **given))
         if flywheel.approximate < 0:   # the constant-Je estimate spares what the varying Je does not
             note.para(note.t("note_dyn_approximate_negative", low=note.n(float(np.min(model.inertia))),
-                             high=note.n(float(np.max(model.inertia))), exact=note.n(flywheel.inertia)))
-    note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", high=note.n(flywheel.omega_max),
-                     low=note.n(flywheel.omega_min), **_speed_extreme_angles(note, flywheel, model)))
-    if flywheel.moved is not None:
-        note.para(note.t("note_dyn_moved", rpm=note.n(flywheel.shaft_rpm), value=note.n(flywheel.moved)))
-
-
-def _speed_extreme_angles(note: Writer, flywheel, model) -> dict[str, str]:
-    """The crank angles φ (°, within a turn) of ωmax and ωmin, as the note's sentences on the speeds name them."""
-    return {"high_angle": note.n(math.degrees(model.driver[flywheel.index_max]) % 360.0, 4),
-            "low_angle": note.n(math.degrees(model.driver[flywheel.index_min]) % 360.0, 4)}
+                             high=note.n(float(np.max(model.inertia))), exact=numbers["required"]))
+    note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", **speeds))
+    if numbers["moved"] is not None:
+        note.para(note.t("note_dyn_moved", rpm=numbers["shaft_rpm"], value=numbers["moved"]))
 
 
 def _method_reason(note: Writer, dynamics) -> str:
@@ -212,9 +209,12 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
             _stall(note, dynamics)
         return
     cycle = steady.cycle
+    # The speeds worked out, each to its five digits (ωmax = 6.3770 beside ωmin = 6.2289, not 6.377).
+    speeds = {name: worked_out(speed).replace(".", note.mark) for name, speed in
+              (("mean", steady.mean_speed), ("high", cycle.max_speed), ("low", cycle.min_speed),
+               ("middle", cycle.middle_speed))}
     note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),
-                     mean=note.n(steady.mean_speed), high=note.n(cycle.max_speed), low=note.n(cycle.min_speed),
-                     delta=note.n(cycle.delta, 4), middle=note.n(cycle.middle_speed)))
+                     delta=note.n(cycle.delta, 4), **speeds))
     if flywheel is not None and flywheel.inertia > 0:
         note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
     if run_down:
@@ -326,7 +326,8 @@ def _equation(note: Writer, dynamics) -> None:
         equation = note.t("note_dyn_equation_clutch", machine=_shaft_equation(note, dynamics, slipping=True),
                           driving=note.t("note_dyn_equation_half", inertia=_sum(_driving_half(note, dynamics))),
                           locked=_shaft_equation(note, dynamics))
-    terms = note.t("note_dyn_motion_flywheel", value=note.n(dynamics.flywheel_inertia)) \
+    # The flywheel's JF as its section and the dynamics drawing write it (189.90, not 189.9).
+    terms = note.t("note_dyn_motion_flywheel", value=worked_out(dynamics.flywheel_inertia).replace(".", note.mark)) \
         if dynamics.flywheel_inertia > 0 else ""
     if motor.rotor_inertia > 0:
         terms += note.t("note_dyn_motion_rotor", rotor=note.n(motor.rotor_inertia), ratio=note.n(motor.gear_ratio),
