@@ -209,14 +209,16 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
             _stall(note, dynamics)
         return
     cycle = steady.cycle
-    # The speeds worked out, each to its five digits (ωmax = 6.3770 beside ωmin = 6.2289, not 6.377).
+    # Worked out, each to its digits: ωmax = 6.3770 beside ωmin = 6.2289, δ = 0.02350 (the simulation's four), where
+    # 6.377 and 0.0235 read as known to a digit less.
     speeds = {name: worked_out(speed).replace(".", note.mark) for name, speed in
               (("mean", steady.mean_speed), ("high", cycle.max_speed), ("low", cycle.min_speed),
                ("middle", cycle.middle_speed))}
+    reached = worked_out(cycle.delta, 4).replace(".", note.mark)
     note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),
-                     delta=note.n(cycle.delta, 4), **speeds))
+                     delta=reached, **speeds))
     if flywheel is not None and flywheel.inertia > 0:
-        note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=note.n(cycle.delta, 4)))
+        note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=reached))
     if run_down:
         _run_down(note, dynamics)
 
