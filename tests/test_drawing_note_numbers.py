@@ -58,8 +58,10 @@ def _in(value: str, text: str) -> bool:
     return re.search(rf"(?<![\d.,]){re.escape(value)}(?![\d]|[.,]\d)", text) is not None
 
 
-@pytest.fixture(scope="module", params=[(kind, locale) for kind in ("flywheel", "shaper") for locale in ("en", "ru", "zh")],
-                ids=lambda param: "-".join(param))
+CASES = [(kind, locale) for kind in ("flywheel", "shaper") for locale in ("en", "ru", "zh")]
+
+
+@pytest.fixture(scope="module", params=CASES, ids=lambda param: "-".join(param))
 def run(request, tmp_path_factory) -> tuple[str, str, Path]:
     kind, locale = request.param
     return kind, locale, _run(tmp_path_factory.mktemp(f"{kind}_{locale}"), kind, locale)

@@ -775,4 +775,5 @@ def nice_step(rough: float) -> float:
     return 10.0 * power
 
 
-__all__ = ["FlywheelNumbers", "Scales", "dynamics_svg", "flywheel_numbers", "larger_layouts", "layout", "nice_step", "ordinate_axis", "scales_for"]
+__all__ = ["FlywheelNumbers", "Scales", "dynamics_svg", "flywheel_numbers", "larger_layouts", "layout", "nice_step",
+           "ordinate_axis", "scales_for"]
