@@ -525,8 +525,22 @@ def _laid_off(plan: Plan, segment: tuple[str, str]) -> str:
     return ""
 
 
+# A quantity's key (results.json's, the scene's) spells the Greek letter out; the tables, the note and the console
+# write the letter.
+_GREEK = {"omega": "ω", "epsilon": "ε"}
 # How a student may type a value's name: the table's own (VE, omega4) or the textbook's letters (ω4, ε3).
-_GREEK_NAMES = {"ω": "omega", "ε": "epsilon"}
+_GREEK_NAMES = {letter: word for word, letter in _GREEK.items()}
+
+
+def quantity_symbol(quantity: str) -> str:
+    """A quantity as the textbook writes it, for a person to read: ``omega3`` → ``ω3``, ``VB`` unchanged."""
+    for word, letter in _GREEK.items():
+        if quantity.startswith(word) and quantity[len(word):].isdigit():
+            return letter + quantity[len(word):]
+    if quantity.endswith("^r"):
+        # The relative acceleration as the note and the plans letter it (aBB4ʳ), not a caret Markdown shows as typed.
+        return quantity.removesuffix("^r") + "ʳ"
+    return quantity
 
 
 def _refuse_a_value(name: str, table: list[Reading], where: str) -> None:

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..analysis import SCENE_WIDE_WARNINGS, Analysis, PlanPosition, VelocityPosition
-from ..check import Reading, epsilon_of_another
+from ..check import Reading, epsilon_of_another, quantity_symbol
 from ..errors import SceneError
 from ..kinematics import cross
 from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
@@ -60,7 +60,6 @@ from .tables import (
     has_reactions,
     measured_bound,
     measured_velocity_plans,
-    quantity_symbol,
     reactions_intro,
     slip_lines,
     undefined_errors,

@@ -16,7 +16,7 @@ import math
 from collections import defaultdict
 
 from ..analysis import Analysis, PlanPosition, VelocityPosition
-from ..check import SOURCES, ErrorRow, epsilon_of_another, is_balancing, is_reaction
+from ..check import SOURCES, ErrorRow, epsilon_of_another, is_balancing, is_reaction, quantity_symbol
 from ..locale import strings
 from ..misreadings import (
     FAR_OFF_PERCENT,
@@ -39,20 +39,6 @@ from .markdown import literal, set_close
 from .results import PERCENT_FLOOR
 
 FORMULA = "δ = (analytic − plan) / analytic · 100 %"
-
-_GREEK = {"omega": "ω", "epsilon": "ε"}
-
-
-def quantity_symbol(quantity: str) -> str:
-    """A quantity of the error table as the textbook writes it: ``omega3`` → ``ω3``, ``VB`` unchanged."""
-    for word, letter in _GREEK.items():
-        if quantity.startswith(word) and quantity[len(word):].isdigit():
-            return letter + quantity[len(word):]
-    if quantity.endswith("^r"):
-        # The relative acceleration as the note and the plans letter it (aBB4ʳ), not a caret Markdown shows as typed.
-        return quantity.removesuffix("^r") + "ʳ"
-    return quantity
-
 
 def unit_of(quantity: str, text: dict[str, str]) -> str:
     """The unit of an error table's quantity in the locale ``text``: rad/s for ω, N for a reaction, ..."""
