@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
-from .check import ErrorRow, is_balancing, is_reaction, segment_millimetres
+from .check import ErrorRow, is_balancing, is_reaction, quantity_symbol, segment_millimetres
 from .motion import PositionWarning
 from .scales import nearest_standard_scale
 
@@ -554,7 +554,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
         if found.misread:
             # + 0.0 makes the −0.0 a reading of 0 mm gives a turning link's ω (signed as constructed) plain 0.
             readings = "; ".join(f"{reading} gives " + ", ".join(
-                f"{row.quantity} = {row.plan + 0.0:.4g} against {plan + 0.0:.4g}, "
+                f"{quantity_symbol(row.quantity)} = {row.plan + 0.0:.4g} against {plan + 0.0:.4g}, "
                 + (f"{abs(row.plan - plan) / abs(plan) * 100.0:.1f} % off" if plan else "where the plan has none")
                 for row, plan in rows) for reading, rows in found.misread.items())
             details.append(f"readings more than {FAR_OFF_PERCENT:g} % and {FAR_OFF_PRECISIONS * precision:g} mm off "

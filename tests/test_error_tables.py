@@ -256,7 +256,7 @@ def test_a_reading_of_nothing_gives_no_negative_zero():
     analysis = analyse(with_measured({11: {"velocity": {"pb": 0.0}}}))
     assert rows(analysis, 11, "construction")["omega4"].plan < 0
     (warning,) = [w for w in analysis.warnings if w.code == "measured-far-off"]
-    assert "omega4 = 0 against " in warning.detail and "-0 " not in warning.detail
+    assert "ω4 = 0 against " in warning.detail and "-0 " not in warning.detail
 
 
 def test_a_velocity_plan_drawn_at_another_scale_is_named_as_such_not_as_misread_lengths():
