@@ -416,13 +416,16 @@ def _strokes(record: KinematicDiagrams, words: Mapping[str, str], y: float) -> l
 def _scale_line(record: KinematicDiagrams, kind: str, words: Mapping[str, str], unit: str) -> str:
     scales = record.scales
     per_mm = words["kd_per_mm"].format(unit=f"({unit})" if "/" in unit else unit)
+    # A turning output link's diagrams are of ψ, ω and ε, whose scales the textbooks (and the load diagram beside
+    # them) write μψ, μω, με: a slider's μs, μv, μa over a unit in radians read as a misprint.
+    turning = "" if record.translating else "_turning"
     if kind == "displacement":
-        return words["kd_displacement_scale"].format(value=format_scale(scales.displacement), unit=per_mm)
+        return words[f"kd_displacement_scale{turning}"].format(value=format_scale(scales.displacement), unit=per_mm)
     if kind == "velocity":
-        return words["kd_velocity_scale"].format(value=scale_factor(scales.velocity), unit=per_mm,
-                                                 pole=f"{scales.velocity_pole:g}")
-    return words["kd_acceleration_scale"].format(value=scale_factor(scales.acceleration), unit=per_mm,
-                                                 pole=f"{scales.acceleration_pole:g}")
+        return words[f"kd_velocity_scale{turning}"].format(value=scale_factor(scales.velocity), unit=per_mm,
+                                                           pole=f"{scales.velocity_pole:g}")
+    return words[f"kd_acceleration_scale{turning}"].format(value=scale_factor(scales.acceleration), unit=per_mm,
+                                                           pole=f"{scales.acceleration_pole:g}")
 
 
 def _footer(record: KinematicDiagrams, words: Mapping[str, str], top: float) -> Layer:
