@@ -449,12 +449,21 @@ def _course_panels(analysis: Analysis, machine: list | None = None, larger: Larg
         diagrams = (diagrams_panel(analysis, scene.drawing.sheet),)
     # The load diagrams stand on the force sheets wherever the scene has them, as the kinematic diagrams do on theirs.
     loads = ()
+    smaller_loads = None
     if missing(scene, analysis, "load_diagrams") is None:
-        loads = (load_diagrams_panel(load_diagrams.of_analysis(analysis), scene.locale, scene.drawing.sheet),)
+        drawn = load_diagrams.of_analysis(analysis)
+        loads = (load_diagrams_panel(drawn, scene.locale, scene.drawing.sheet),)
+
+        def smaller_loads():
+            # Smaller only where that saves a sheet: at the usual size they took an A1 alone beside the forces.
+            from .render.load_diagrams import SMALLER_FIELDS
+
+            return ((load_diagrams_panel(drawn, scene.locale, field=field),) for field in SMALLER_FIELDS)
     dynamics = (dynamics_panel(machine, scene.locale, larger, scene.drawing.sheet),) if machine is not None else ()
     # The sheets hold the rotor's balancing wherever the scene has it, as they hold the dynamics.
     balancing = (balancing_panel(_balancing_layers(scene), scene.locale),) if scene.balancing is not None else ()
-    return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing, loads=loads)
+    return course_panels(analysis, diagrams, dynamics=dynamics, balancing=balancing, loads=loads,
+                         smaller_loads=smaller_loads)
 
 
 class MachineDynamics:

@@ -75,3 +75,107 @@ def test_the_russian_and_chinese_rocker_diagrams_write_mu_psi_too():
     for locale in ("ru", "zh"):
         _, svg = _rocker_diagrams(locale)
         assert "μψ = " in svg and "μω = μψ/(μt·H₁)" in svg and "με = μω/(μt·H₂)" in svg
+
+
+# A knee-lever press (crank 2, RRR 3-4, RRP 5-6 pinned at the knee B), its press force over the last 30 % of the
+# down-stroke: a student's scene, written from the docs alone.
+KNEE_PRESS = """
+[scene]
+title = "肘杆压力机"
+locale = "zh"
+gravity = 9.81
+[frame]
+link = 1
+points = { O = [0.48, 0.28], C = [0.0, 0.60] }
+lines = { ram = { through = [0.0, 0.0], angle = -90.0 } }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.06
+rpm = -90.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.40, 0.30]
+near = [0.08, 0.32]
+[[groups]]
+kind = "RRP"
+links = [5, 6]
+joints = ["B", "D"]
+length = 0.32
+guide = "ram"
+assembly = "forward"
+[points]
+S3 = { link = 3, from = "A", toward = "B", at = 0.20 }
+S4 = { link = 4, from = "C", toward = "B", at = 0.15 }
+S5 = { link = 5, from = "B", toward = "D", at = 0.16 }
+[links.2]
+mass = 8.0
+centre = "O"
+inertia = 0.04
+[links.3]
+mass = 10.0
+centre = "S3"
+inertia = 0.15
+[links.4]
+mass = 8.0
+centre = "S4"
+inertia = 0.07
+[links.5]
+mass = 9.0
+centre = "S5"
+inertia = 0.08
+[links.6]
+mass = 40.0
+centre = "D"
+[[loads]]
+kind = "force"
+link = 6
+point = "D"
+angle = 90.0
+resisting = true
+diagram = [[0.7, 0.0], [0.85, 15000.0], [1.0, 30000.0]]
+[[friction]]
+joint = "D"
+links = [6, 1]
+f = 0.1
+[[friction]]
+joint = "O"
+f = 0.08
+radius = 0.03
+[[friction]]
+joint = "C"
+f = 0.08
+radius = 0.03
+[positions]
+count = 12
+start = "extreme"
+working = { link = 6, sense = "forward" }
+plans = [5, 6]
+[drawing]
+velocity_pole = 100.0
+acceleration_pole = 100.0
+sheet = "A1"
+"""
+
+
+def test_a_load_diagram_is_drawn_smaller_beside_a_force_sheet_rather_than_alone_on_a_sheet(tmp_path):
+    scene = graphplan.load_text(KNEE_PRESS)
+    done = scene.write(tmp_path / "press", only=["sheets", "load_diagrams"])
+    sheets = sorted(path for path in map(Path, done.files) if path.name.startswith("sheet_"))
+    holding = [path.read_text(encoding="utf-8") for path in sheets if 'id="load-diagrams' in path.read_text("utf-8")]
+    assert len(holding) == 1
+    # At its usual 150 by 60 mm it took an A1 of its own; it stands beside a force sheet's drawings instead.
+    assert 'id="forces-' in holding[0]
+    # Drawn smaller, at the standard scales it states: the ram's stroke within 120 mm and the 30 kN within 45 mm.
+    drawn = holding[0][holding[0].index('id="load-diagrams'):]
+    motion = graphplan.solve(scene, driver=np.radians(np.arange(0.0, 360.0, 0.05)))
+    stroke = float(np.ptp(motion.point("D").r[:, 1]))
+    mu_f = _number(r"μF = " + NUMBER + r" N/mm", drawn)
+    mu_s = _number(r"μs = " + NUMBER + r" m/mm", drawn)
+    assert math.isclose(_number(r"H = " + NUMBER + " m", drawn), stroke, rel_tol=1e-3)
+    assert stroke / mu_s <= 120.0 + 1e-6 and 30000.0 / mu_f <= 45.0 + 1e-6
+    assert stroke / mu_s > 150.0 / 5 and 30000.0 / mu_f > 45.0 / 5   # not shrunk past what the room needs

@@ -871,33 +871,60 @@ class CoursePanels:
 
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
                   sheet: str | None = None, dynamics: Sequence[Panel] = (),
-                  balancing: Sequence[Panel] = (), loads: Sequence[Panel] = ()) -> CoursePanels:
+                  balancing: Sequence[Panel] = (), loads: Sequence[Panel] = (),
+                  smaller_loads: Callable[[], Iterator[Sequence[Panel]]] | None = None) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own; ``loads``, the
-    load diagrams (:func:`load_diagrams_panel`), stand among the force sheets, whose values they give."""
+    load diagrams (:func:`load_diagrams_panel`), stand among the force sheets, whose values they give;
+    ``smaller_loads`` the same drawn smaller, largest first, the first of which that saves a sheet is taken."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     linkage, forces = _laid_out(analysis, chosen)
     kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
     # Placed after the force sheets, the load diagrams take the first room left beside one (the first sheet of
     # forces that has it); placed first, one took an A1 alone where the force sheet after it needed a whole sheet.
-    parts = fewest_sheets_cuts([cuts for _, cuts in forces], loads, chosen, form_of(analysis.scene.locale))
+    form = form_of(analysis.scene.locale)
+    parts = fewest_sheets_cuts([cuts for _, cuts in forces], loads, chosen, form)
+    if loads and parts and smaller_loads is not None and chosen != "none":
+        loads = _loads_saving_a_sheet(parts, loads, smaller_loads, chosen, form)
     return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _ in forces), tuple(dynamics),
                         tuple(balancing))
 
 
-def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str | None = None) -> Panel:
+def _loads_saving_a_sheet(parts: Sequence[Panel], loads: Sequence[Panel],
+                          smaller: Callable[[], Iterator[Sequence[Panel]]], sheet: str, form: str) -> Sequence[Panel]:
+    """``loads``, or the first of ``smaller`` that stands in the room the force sheets leave where ``loads`` would
+    take a sheet of their own: a knee press's load diagram, 199 by 156 mm, took a fifth A1 alone beside four force
+    sheets whose room holds it at 120 by 45 mm."""
+    count = len(pack([*parts, *loads], sheet, form))
+    if count <= len(pack(parts, sheet, form)):
+        return loads
+    for drawn in smaller():
+        try:
+            if len(pack([*parts, *drawn], sheet, form)) < count:
+                return drawn
+        except SceneError:  # a size no sheet holds saves none
+            continue
+    return loads
+
+
+def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str | None = None,
+                        field: tuple[float, float] | None = None) -> Panel:
     """The load diagrams (:func:`graphplan.render.load_diagrams.parts`) as a panel to no length scale, each
     diagram a part of its own where no sheet holds them together; on a ``sheet`` too small for a diagram at the
-    usual fields, at the first of the smaller ones that it holds (the scales stated follow)."""
+    usual fields, at the first of the smaller ones that it holds (the scales stated follow); at ``field`` where
+    that is given."""
     from . import load_diagrams as load_layout
     from .diagrams import stacked
 
     text = strings(locale)
     form = form_of(locale)
-    drawn = load_layout.parts(diagrams, text)
-    for field in load_layout.SMALLER_FIELDS:
-        if sheet is None or sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
-            break
+    if field is not None:
         drawn = load_layout.parts(diagrams, text, field)
+    else:
+        drawn = load_layout.parts(diagrams, text)
+        for smaller in load_layout.SMALLER_FIELDS:
+            if sheet is None or sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
+                break
+            drawn = load_layout.parts(diagrams, text, smaller)
     parts = tuple(Panel(f"load-diagrams-{k + 1}", tuple(part), to_scale=False)
                   for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
     return Panel("load-diagrams", tuple(stacked(drawn)), parts, label=text["ld_title"], to_scale=False)
