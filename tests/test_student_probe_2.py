@@ -2,7 +2,8 @@
 
 The kinematic diagrams of a rocker output are of its angle ψ, its ω and its ε: their scales are μψ, μω = μψ/(μt·H₁)
 and με = μω/(μt·H₂), as the textbooks write them and as the load diagram beside them already writes μψ, not the
-slider's μs, μv, μa with a unit in radians.
+slider's μs, μv, μa with a unit in radians.  A knee press's load diagram took an A1 of its own at its usual size
+beside four force sheets whose room holds it smaller: it is drawn smaller there rather than alone on a sheet.
 """
 
 from __future__ import annotations
