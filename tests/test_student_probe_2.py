@@ -180,3 +180,28 @@ def test_a_load_diagram_is_drawn_smaller_beside_a_force_sheet_rather_than_alone_
     assert math.isclose(_number(r"H = " + NUMBER + " m", drawn), stroke, rel_tol=1e-3)
     assert stroke / mu_s <= 120.0 + 1e-6 and 30000.0 / mu_f <= 45.0 + 1e-6
     assert stroke / mu_s > 150.0 / 5 and 30000.0 / mu_f > 45.0 / 5   # not shrunk past what the room needs
+
+
+def test_each_ringed_load_value_names_its_position_and_is_the_load_there():
+    from graphplan import load_diagrams
+    from graphplan.render import load_diagrams as layout
+    from graphplan.render.primitives import Text
+
+    scene = graphplan.load_text(KNEE_PRESS)
+    (diagram,) = load_diagrams.of_analysis(scene.analyse())
+    texts = [item.text for layer in layout.parts([diagram], strings("zh"))[0] for item in layer.items
+             if isinstance(item, Text)]
+    written = {int(found.group(2)): float(found.group(1)) for text in texts
+               if (found := re.fullmatch(r"F6 = " + NUMBER + r" N \((\d+)\)", text))}
+    assert sorted(written) == [5, 6]
+    # The press force at each plan position from the ram's share of its down-stroke, read off the scene's diagram.
+    motion = graphplan.solve(scene, driver=np.radians(np.arange(0.0, 360.0, 0.01)))
+    heights = motion.point("D").r[:, 1]
+    top, bottom = heights.max(), heights.min()
+    analysis = scene.analyse()
+    for number, value in written.items():
+        position = next(plan for plan in analysis.plans if plan.number == number)
+        ram = graphplan.solve(scene, driver=analysis.motion.driver[position.index:position.index + 1]).point("D").r[0, 1]
+        share = (top - ram) / (top - bottom)
+        expected = float(np.interp(share, [0.7, 0.85, 1.0], [0.0, 15000.0, 30000.0], left=0.0, right=0.0))
+        assert math.isclose(value, expected, rel_tol=1e-3)

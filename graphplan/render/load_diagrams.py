@@ -149,7 +149,10 @@ def _panel(diagram: LoadDiagram, words: Mapping[str, str], field: tuple[float, f
             value = float(load.values[k])
             rings.append(Circle((xs[k], value / scale), PLAN_RING_MM, _AXIS, None))
             names = [load.name] if acting else [other.name for other in diagram.loads]
-            written.append((xs[k], value / scale, f"{' = '.join(names)} = {short(value)} {unit}"))
+            # The position's number with it: a ring of the idle stroke stands over another number of the working
+            # stroke's row, and a jaw crusher's "F6 = 0 N" read as position 6's, where the load acts.
+            label = f"{' = '.join(names)} = {short(value)} {unit} ({diagram.numbers[k]})"
+            written.append((xs[k], value / scale, label))
     values_top, values = _written_values(written, high + AXIS_RUN_MM + 3.0)
     # A value written on a higher line, over one whose words reach across its ordinate (two plan positions close on
     # the travel), or one by the ordinate axis, had its leader struck through the other's words or the axis's name.
