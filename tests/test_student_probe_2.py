@@ -205,3 +205,32 @@ def test_each_ringed_load_value_names_its_position_and_is_the_load_there():
         share = (top - ram) / (top - bottom)
         expected = float(np.interp(share, [0.7, 0.85, 1.0], [0.0, 15000.0, 30000.0], left=0.0, right=0.0))
         assert math.isclose(value, expected, rel_tol=1e-3)
+
+
+def test_the_legend_of_the_position_numbers_keeps_the_load_diagram_as_wide_as_its_longest_line_was():
+    """The ring's legend said "(the position in brackets)" after its words: the Russian line ran 47 mm past the
+    diagram, and the ratchet's and the tangent mechanism's load diagrams left the force sheet they had shared for an
+    A1 of their own.  The bracket is told on a line of its own, no longer than the ring's."""
+    from graphplan import load_diagrams
+    from graphplan.render import load_diagrams as layout
+    from graphplan.render.primitives import Text, text_width
+
+    for fixture, locale in (("ratchet_crank_rocker", "ru"), ("tangent_mechanism_prp", "en"),
+                            ("ratchet_crank_rocker", "zh")):
+        scene = graphplan.load(FIXTURES / f"{fixture}.toml")
+        words = strings(locale)
+        diagrams = load_diagrams.of_analysis(scene.analyse())
+        texts = [item for layer in layout.parts(diagrams, words)[0] for item in layer.items if isinstance(item, Text)]
+        ring, number = (next(item for item in texts if item.text == words[key])
+                        for key in ("ld_plans", "ld_plans_number"))
+        assert number.at[1] < ring.at[1]   # under the ring's line
+        assert text_width(number.text, number.size) <= text_width(ring.text, ring.size)
+        assert "(k)" in [item.text for item in texts]
+
+
+def test_the_fixtures_load_diagrams_stand_beside_a_force_sheet(tmp_path):
+    for fixture in ("ratchet_crank_rocker", "tangent_mechanism_prp"):
+        done = graphplan.load(FIXTURES / f"{fixture}.toml").write(tmp_path / fixture, only=["sheets", "load_diagrams"])
+        sheets = [Path(path).read_text(encoding="utf-8") for path in done.files if Path(path).name.startswith("sheet_")]
+        (holding,) = [sheet for sheet in sheets if 'id="load-diagrams' in sheet]
+        assert 'id="forces-' in holding, fixture

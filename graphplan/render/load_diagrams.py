@@ -273,6 +273,11 @@ def _legend(diagram: LoadDiagram, words: Mapping[str, str], top: float) -> tuple
     if diagram.plans:
         items.append(Circle((5.0, y + SCALE_SIZE / 3), PLAN_RING_MM, _AXIS, None))
         items.append(Text((12.0, y), words["ld_plans"], SCALE_SIZE, "start"))
+        # The bracket's meaning on a line of its own: said after the ring's words, the legend ran 47 mm wider than
+        # the diagram and took a sheet of its own beside the force sheets it had stood among.
+        y -= LINE_SPACING * SCALE_SIZE + 1.0
+        items.append(Text((5.0, y), "(k)", SCALE_SIZE, "middle"))
+        items.append(Text((12.0, y), words["ld_plans_number"], SCALE_SIZE, "start"))
     return tuple(items)
 
 
