@@ -197,8 +197,13 @@ class Differences:
     def __init__(self, scene_: graphplan.Scene, values: np.ndarray) -> None:
         assert scene_.driver.kind == "crank" and scene_.driver.epsilon == 0.0
         self.omega = scene_.driver.omega
+        self._scene, self._values = scene_, values
         self.near = [graphplan.solve(scene_, driver=values + k * H_VELOCITY) for k in OFFSETS]
-        self.far = [graphplan.solve(scene_, driver=values + k * H_ACCELERATION) for k in OFFSETS]
+
+    @functools.cached_property
+    def far(self) -> list:
+        # Solved only when an acceleration is asked for: a speed's root (Brent's method) reads velocities alone.
+        return [graphplan.solve(self._scene, driver=self._values + k * H_ACCELERATION) for k in OFFSETS]
 
     @staticmethod
     def _difference(weights, path) -> np.ndarray:
@@ -354,6 +359,7 @@ def test_the_reduced_moment_read_off_the_velocity_plans_carries_the_loads_power(
         assert plan.moment == pytest.approx(expected[plan.index], abs=1e-7 * np.max(np.abs(expected))), plan.number
 
 
+@functools.cache
 def _path_work(case: str) -> tuple[float, float]:
     """The loads' work over the crank's turn from the first position, ∮F·ds along the path at PATH_SAMPLES steps
     (each step's force against that step's motion along its line where it resists), and ∮|F·ds|.  Where a load's
@@ -363,7 +369,7 @@ def _path_work(case: str) -> tuple[float, float]:
     start = float(analysis(case).motion.driver[0])
     sense = math.copysign(1.0, scene_.driver.omega)
     sweep = start + sense * np.linspace(0.0, 2.0 * math.pi, PATH_SAMPLES + 1)
-    sweep = np.sort(np.concatenate([sweep, *(_stroke_ends(scene_, load, sweep) for load in scene_.loads
+    sweep = np.sort(np.concatenate([sweep, *(_stroke_ends(case, _stroke_of(scene_, load)) for load in scene_.loads
                                              if load.during != "always")]))[::int(sense)]
     path = graphplan.solve(scene_, driver=sweep)
     work = given = 0.0
@@ -382,8 +388,23 @@ def _path_work(case: str) -> tuple[float, float]:
     return work, given
 
 
-def _stroke_ends(scene_: graphplan.Scene, load, sweep: np.ndarray) -> np.ndarray:
-    """The crank's angles in ``sweep`` where ``load``'s stroke's link turns back."""
+def _stroke_of(scene_: graphplan.Scene, load) -> tuple[bool, int, str]:
+    """What :func:`_stroke_speed` reads of ``load`` (its own stroke's or the working stroke's link and sense; not
+    the key path the stroke was read at): loads of one stroke share their stroke's ends."""
+    stroke = load.stroke if load.stroke is not None else scene_.positions.working
+    return load.stroke is not None, stroke.link, stroke.sense
+
+
+@functools.cache
+def _stroke_ends(case: str, stroke) -> np.ndarray:
+    """The crank's angles of the turn :func:`_path_work` sums over where the link of ``stroke`` (a load's, as
+    :func:`_stroke_of` gives it) turns back; the same for every load of that stroke, so found once."""
+    scene_ = scene(case)
+    load = next(load for load in scene_.loads if load.during != "always" and _stroke_of(scene_, load) == stroke)
+    start = float(analysis(case).motion.driver[0])
+    sense = math.copysign(1.0, scene_.driver.omega)
+    sweep = start + sense * np.linspace(0.0, 2.0 * math.pi, PATH_SAMPLES + 1)
+
     def speed(angles) -> np.ndarray:
         moving = Differences(scene_, np.atleast_1d(np.asarray(angles, dtype=float)))
         return _stroke_speed(scene_, load, moving.v, moving.omega_of)
