@@ -8,6 +8,7 @@ lever's rays against the velocities.
 """
 
 import dataclasses
+import functools
 import itertools
 import math
 import re
@@ -59,9 +60,16 @@ MECHANISM_SCALE = 0.005  # m/mm, the ratchet's scene gives 0.0025
 CAPTION = plan_layout.CAPTION_SIZE
 
 
+@functools.cache
+def analysis_of(name):
+    """One analysis of a fixture for the module (it is frozen, and the same file analyses alike): the ratchet's is
+    read by its A4 and A1 sheets and its diagrams, the slotted lever's by its captions and its diagrams."""
+    return analyses_of(name)
+
+
 @pytest.fixture(scope="module")
 def ratchet_a4():
-    analysis = with_drawing(analyses_of("ratchet_crank_rocker"), length_scale=MECHANISM_SCALE, sheet="A4")
+    analysis = with_drawing(analysis_of("ratchet_crank_rocker"), length_scale=MECHANISM_SCALE, sheet="A4")
     return analysis, course_sheets(analysis, diagrams=(diagrams_panel(analysis, "A4"),))
 
 
@@ -310,7 +318,7 @@ def part_named(sheet, position, name):
 
 
 def test_on_a1_the_force_drawings_keep_the_mechanism_scale_and_the_usual_lettering():
-    analysis = analyses_of("ratchet_crank_rocker")
+    analysis = analysis_of("ratchet_crank_rocker")
     sheets = course_sheets(analysis, "A1")
     captions = [text for sheet in sheets for item in sheet.layers
                 if item.name.startswith("forces-") and item.name.endswith("caption") for text in texts([item])]
@@ -379,7 +387,7 @@ def test_a_value_is_never_parted_from_its_name_or_its_unit():
 
 
 def test_every_caption_line_of_a_force_sheet_keeps_within_its_drawing_or_the_caption_width():
-    analysis = analyses_of("quick_return_slotted_lever")
+    analysis = analysis_of("quick_return_slotted_lever")
     for position in analysis.plans:
         arranged = force_layout.arrange(force_sheet(analysis, position))
         for name in arranged.fields:
@@ -396,7 +404,7 @@ def test_every_caption_line_of_a_force_sheet_keeps_within_its_drawing_or_the_cap
 
 @pytest.mark.parametrize("name", FIXTURES)
 def test_the_kinematic_diagrams_of_every_fixture_fit_a4_with_their_long_lines_broken(name):
-    analysis = analyses_of(name)
+    analysis = analysis_of(name)
     if analysis.scene.positions.working is None or analysis.scene.driver.kind != "crank":
         pytest.skip("no kinematic diagrams without a working stroke of a crank")
     panel = diagrams_panel(analysis, "A4")
