@@ -292,10 +292,16 @@ def _inertia_power(scene_: graphplan.Scene, moving: Differences) -> np.ndarray:
 
 
 @functools.cache
+def at_positions(case: str) -> Differences:
+    """The differences at the analysed positions, solved once for the tests that read them there."""
+    return Differences(scene(case), np.asarray(analysis(case).motion.driver, dtype=float))
+
+
+@functools.cache
 def virtual_work(case: str) -> np.ndarray:
     """The balancing moment of virtual work at the analysed positions."""
     scene_ = scene(case)
-    moving = Differences(scene_, np.asarray(analysis(case).motion.driver, dtype=float))
+    moving = at_positions(case)
     total = sum(_load_powers(scene_, moving), _weights_power(scene_, moving) + _inertia_power(scene_, moving))
     return -total / scene_.driver.omega
 
@@ -351,7 +357,7 @@ def test_the_reduced_moment_read_off_the_velocity_plans_carries_the_loads_power(
     """The equivalent model's Me at the plan positions, from the velocity plans as constructed."""
     scene_ = scene(case)
     analysed = analysis(case)
-    moving = Differences(scene_, np.asarray(analysed.motion.driver, dtype=float))
+    moving = at_positions(case)
     expected = sum(_load_powers(scene_, moving), _weights_power(scene_, moving)) / abs(scene_.driver.omega)
     reductions = equivalent_model_of(analysed, 12, constant="none").plans
     assert reductions
@@ -440,7 +446,7 @@ def test_the_pair_in_the_yoke_takes_the_power_of_the_sliding():
     less the yoke's point B's), all the cycle: 4·F·r over a turn."""
     case = "pair between the block and the yoke"
     scene_ = scene(case)
-    moving = Differences(scene_, np.asarray(analysis(case).motion.driver, dtype=float))
+    moving = at_positions(case)
     sliding = moving.v("A") - moving.v("B")
     assert np.max(np.abs(sliding.imag)) < 1e-9
     np.testing.assert_allclose(sum(_load_powers(scene_, moving)), -_CYLINDER * np.abs(sliding.real), atol=1e-9)
