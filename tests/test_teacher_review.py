@@ -10,8 +10,8 @@ import tomllib
 
 import numpy as np
 import pytest
+from light_runs import notes_in_markdown_alone, on_no_sheet
 from scipy.optimize import minimize_scalar
-from test_teacher_review_structure import notes_in_markdown_alone, on_no_sheet
 
 from graphplan.cli import main
 

@@ -13,13 +13,13 @@ in en, ru and zh must say the same, the note in each language's textbook terms.
 
 from __future__ import annotations
 
-import contextlib
 import json
 import re
 import tomllib
 from pathlib import Path
 
 import pytest
+from light_runs import notes_in_markdown_alone, on_no_sheet
 from test_motion_against_finite_differences import _HUNG_ON_THE_RATCHET
 
 from graphplan.cli import main
@@ -312,38 +312,6 @@ def _kind_text(kind: str, locale: str) -> str:
     if locale == "ru":
         return f"{kind.translate(RUSSIAN_LETTERS)} ({kind})"
     return kind
-
-
-@contextlib.contextmanager
-def notes_in_markdown_alone():
-    """Runs that write their note.md and results.json as a full run does, and their note.html and note.tex empty.
-
-    The HTML and the LaTeX are made from the finished note.md (deliverables.tables), so leaving them out changes
-    no byte of what a test reads: diffed for every scene of this file's runs in en, ru and zh, note.md and
-    results.json came out identical.  They were two thirds of a note's run (markdown-it and the LaTeX writer over
-    the whole note), and the tests that read the note's Markdown read neither.
-    """
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr("graphplan.report.note.note_html", lambda *args, **kwargs: "")
-        patch.setattr("graphplan.report.latex.latex_document", lambda *args, **kwargs: "")
-        yield
-
-
-def on_no_sheet(path: Path, folder: Path) -> Path:
-    """The scene at ``path`` drawn on no sheet ([drawing] sheet = "none"), written in ``folder``.
-
-    The structure is the analysis's, made from [frame], [driver], [[groups]] and [points] before anything is drawn
-    or any μl chosen; a sheet only makes `check` lay out the course sheets to refuse one that overflows, and makes a
-    note whose scene gives no μl choose it by laying the sheets out at a few μl, once in each language: most of
-    these runs' time.  Diffed for every scene here in en, ru and zh against the scene as written: the "structure:"
-    and "W = " lines of `check`, results.json's structure, degrees_of_freedom and groups' kinds and links, the
-    note's structural analysis and its group headings are the same (the Chinese notes, compared whole, were).
-    """
-    text = re.sub(r"^sheet *=.*\n", "", path.read_text(encoding="utf-8"), flags=re.MULTILINE)
-    text, drawn = re.subn(r"^\[drawing\][^\n]*\n", '\\g<0>sheet = "none"\n', text, count=1, flags=re.MULTILINE)
-    lighter = folder / path.name
-    lighter.write_text(text if drawn else text + '\n[drawing]\nsheet = "none"\n', encoding="utf-8")
-    return lighter
 
 
 @pytest.fixture(scope="module")
