@@ -321,11 +321,54 @@ def to_xy(value: complex) -> Point:
 
 def bounds(layers: Sequence[Layer]) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of every primitive, text by its estimated extent."""
-    return bounds_of(item for layer in layers for item in layer.items)
+    # Layer by layer, each layer's bounds remembered (:func:`_measured`): the least of the layers' least values is
+    # the least of all, the first of equal ones as bounds_of would find it, and a sheet measures the same layers,
+    # and the same layers moved, thousands of times while it packs.
+    boxes = [box for layer in layers if (box := _measured(layer)[1]) is not None]
+    if not boxes:
+        return (0.0, 0.0, 1.0, 1.0)
+    return (min(box[0] for box in boxes), min(box[1] for box in boxes),
+            max(box[2] for box in boxes), max(box[3] for box in boxes))
+
+
+Rect = tuple[float, float, float, float]
+# The attribute a layer's measure is remembered in: a Layer is frozen, and its items (a tuple of frozen primitives)
+# never change, so the measure of one layer object holds as long as the object does.
+_MEASURE = "_measure"
+
+
+def _measured(layer: Layer) -> tuple[Rect | None, Rect | None]:
+    """The bounds of ``layer``'s polylines and arrows, and of all its items (None for none): the first shifts
+    exactly with the layer (:func:`moved_layers`), since adding dx to every point keeps their order."""
+    known = layer.__dict__.get(_MEASURE)
+    if known is None:
+        points = [item for item in layer.items if isinstance(item, (Polyline, Arrow))]
+        known = (_bounds_or_none(points), _bounds_or_none(layer.items))
+        # A list of items could change under the layer: only a tuple's measure is kept.
+        if type(layer.items) is tuple:
+            object.__setattr__(layer, _MEASURE, known)
+    return known
+
+
+def _remember(layer: Layer, points: Rect | None, others: Sequence[Primitive]) -> Layer:
+    """``layer`` with its measure kept: ``points`` the bounds of its polylines and arrows, already known, and
+    ``others`` its texts and circles, measured here."""
+    rest = _bounds_or_none(others)
+    if points is None or rest is None:
+        whole = points or rest
+    else:
+        whole = (min(points[0], rest[0]), min(points[1], rest[1]), max(points[2], rest[2]), max(points[3], rest[3]))
+    object.__setattr__(layer, _MEASURE, (points, whole))
+    return layer
 
 
 def bounds_of(items: Iterable[Primitive]) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of ``items``; a unit square for none."""
+    return _bounds_or_none(items) or (0.0, 0.0, 1.0, 1.0)
+
+
+def _bounds_or_none(items: Iterable[Primitive]) -> Rect | None:
+    """(xmin, ymin, xmax, ymax) of ``items``; None where they have no point (no items, or empty polylines)."""
     # Every item's points and corners in one list, then their least and greatest: a sheet is measured often, and its
     # curves have hundreds of points each, whose bounds one at a time took a call of zip, min and max an item.
     corners: list[Point] = []
@@ -341,7 +384,7 @@ def bounds_of(items: Iterable[Primitive]) -> tuple[float, float, float, float]:
             x0, y0, x1, y1 = text_extent(item)
             corners += ((x0, y0), (x1, y1))
     if not corners:
-        return (0.0, 0.0, 1.0, 1.0)
+        return None
     xs, ys = zip(*corners, strict=True)
     return (min(xs), min(ys), max(xs), max(ys))
 
@@ -351,14 +394,16 @@ def moved(item: Primitive, dx: float, dy: float) -> Primitive:
     def shift(p: Point) -> Point:
         return (p[0] + dx, p[1] + dy)
 
+    # Made by their constructors, not dataclasses.replace, which takes several times as long: a sheet moves its
+    # drawings' items hundreds of thousands of times while it packs them.
     if isinstance(item, Polyline):
         # Its points shifted in place, not through shift(): a diagram's curves have hundreds each.
-        return replace(item, points=tuple([(x + dx, y + dy) for x, y in item.points]))
+        return Polyline(tuple([(x + dx, y + dy) for x, y in item.points]), item.stroke, item.closed, item.fill)
     if isinstance(item, Arrow):
-        return replace(item, start=shift(item.start), end=shift(item.end))
+        return Arrow(shift(item.start), shift(item.end), item.stroke, item.head, item.key)
     if isinstance(item, Circle):
-        return replace(item, centre=shift(item.centre))
-    return replace(item, at=shift(item.at))
+        return Circle(shift(item.centre), item.radius, item.stroke, item.fill)
+    return Text(shift(item.at), item.text, item.size, item.anchor, item.colour, item.weight, item.rotation)
 
 
 # A point between two digits is a decimal point: no other text of a drawing puts one there.
@@ -400,7 +445,18 @@ def in_language(layers: Sequence[Layer], locale: str, own_words: Iterable[str] =
 
 def moved_layers(layers: Sequence[Layer], dx: float, dy: float) -> list[Layer]:
     """``layers`` shifted by (dx, dy) mm."""
-    return [Layer(layer.name, tuple(moved(item, dx, dy) for item in layer.items)) for layer in layers]
+    return [_moved_layer(layer, dx, dy) for layer in layers]
+
+
+def _moved_layer(layer: Layer, dx: float, dy: float) -> Layer:
+    shifted = Layer(layer.name, tuple(moved(item, dx, dy) for item in layer.items))
+    known = layer.__dict__.get(_MEASURE)
+    if known is None:
+        return shifted
+    # The polylines' and arrows' bounds shifted, bit for bit those of their shifted points (rounding keeps the order
+    # of sums with one dx); a text's and a circle's corners are sums of two terms besides, and are measured again.
+    points = known[0] and (known[0][0] + dx, known[0][1] + dy, known[0][2] + dx, known[0][3] + dy)
+    return _remember(shifted, points, [item for item in shifted.items if isinstance(item, (Text, Circle))])
 
 
 # Characters of a name that an id spells out: the textbook's τ and primes, and the brackets and signs of a moment's

@@ -30,7 +30,7 @@ from .plans import (
     plan_layers,
     title_texts,
 )
-from .primitives import Layer, Text, bounds, bounds_of, moved_layers, prefixed, text_width
+from .primitives import Layer, Text, bounds, moved_layers, prefixed, text_width
 
 # Between two cells of the grid (mm): less than between a plan sheet's drawings, as the plans are one set.
 CELL_GAP_MM = 15.0
@@ -121,7 +121,7 @@ def _grid_arrangement(drawing: VelocityPlans, drawn: Sequence[Sequence[Layer]], 
                             caption_texts(caption, (left + width / 2, top - height - CAPTION_GAP_MM))))
     if not titled:
         return Arrangement(layers, fields)
-    left, _, _, top = bounds_of(item for layer in layers for item in layer.items)
+    left, _, _, top = bounds(layers)
     # The title goes with the first plan, over it: where a sheet takes the plans apart, μV stays in view.
     layers.append(Layer(f"{field_name(drawing.plans[0][0])}-title",
                         heading_texts((drawing.title,), drawing.scale_line, (left, top))))
