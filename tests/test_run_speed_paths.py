@@ -170,22 +170,53 @@ def test_a_drawings_obstacles_and_bounds_are_each_items_own():
                 alone.append(shapely.box(*primitives.text_extent(item)))
         made = labels.obstacles_of(items)
         assert [shapely.to_wkb(shape) for shape in made] == [shapely.to_wkb(shape) for shape in alone]
-        extents = []
-        for item in items:
-            if isinstance(item, Polyline) and item.points:
-                extents.append((min(x for x, _ in item.points), min(y for _, y in item.points),
-                                max(x for x, _ in item.points), max(y for _, y in item.points)))
-            elif isinstance(item, Arrow):
-                extents.append((min(item.start[0], item.end[0]), min(item.start[1], item.end[1]),
-                                max(item.start[0], item.end[0]), max(item.start[1], item.end[1])))
-            elif isinstance(item, Circle):
-                extents.append((item.centre[0] - item.radius, item.centre[1] - item.radius,
-                                item.centre[0] + item.radius, item.centre[1] + item.radius))
-            elif isinstance(item, Text):
-                extents.append(primitives.text_extent(item))
-        expected = (min(e[0] for e in extents), min(e[1] for e in extents), max(e[2] for e in extents),
-                    max(e[3] for e in extents)) if extents else (0.0, 0.0, 1.0, 1.0)
-        assert primitives.bounds_of(items) == expected
+        assert primitives.bounds_of(items) == _each_items_bounds(items)
+
+
+def _each_items_bounds(items) -> tuple[float, float, float, float]:
+    """The least and greatest of every item's own extent, each item measured alone; a unit square for none."""
+    extents = []
+    for item in items:
+        if isinstance(item, Polyline) and item.points:
+            extents.append((min(x for x, _ in item.points), min(y for _, y in item.points),
+                            max(x for x, _ in item.points), max(y for _, y in item.points)))
+        elif isinstance(item, Arrow):
+            extents.append((min(item.start[0], item.end[0]), min(item.start[1], item.end[1]),
+                            max(item.start[0], item.end[0]), max(item.start[1], item.end[1])))
+        elif isinstance(item, Circle):
+            extents.append((item.centre[0] - item.radius, item.centre[1] - item.radius,
+                            item.centre[0] + item.radius, item.centre[1] + item.radius))
+        elif isinstance(item, Text):
+            extents.append(primitives.text_extent(item))
+    return (min(e[0] for e in extents), min(e[1] for e in extents), max(e[2] for e in extents),
+            max(e[3] for e in extents)) if extents else (0.0, 0.0, 1.0, 1.0)
+
+
+def test_moved_layers_are_measured_by_shifting_their_lines_and_are_bit_for_bit_their_items_bounds(monkeypatch):
+    """A measured layer moved (again and again, and renamed) keeps its lines' and arrows' bounds shifted, not
+    measured again: the bounds of layers so moved are exactly those of their moved items each measured alone,
+    turned texts and circles included, whose corners do not shift bit for bit and are measured anew."""
+    measured: list = []
+    whole = primitives._bounds_or_none
+
+    def recorded(items):
+        items = list(items)
+        measured.extend(items)
+        return whole(items)
+
+    monkeypatch.setattr(primitives, "_bounds_or_none", recorded)
+    generator = random.Random(5)
+    for _ in range(40):
+        layers = [primitives.Layer(f"layer-{k}", tuple(_random_items(generator, generator.randrange(0, 8))))
+                  for k in range(generator.randrange(1, 5))]
+        assert primitives.bounds(layers) == _each_items_bounds([item for layer in layers for item in layer.items])
+        for _ in range(3):
+            dx, dy = generator.uniform(-300, 300) / 7, generator.uniform(-300, 300) / 3
+            layers = primitives.prefixed(primitives.moved_layers(layers, dx, dy), "field")
+            measured.clear()
+            got = primitives.bounds(layers)
+            assert got == _each_items_bounds([item for layer in layers for item in layer.items])
+            assert not [item for item in measured if isinstance(item, (Polyline, Arrow))]
 
 
 def test_a_page_puts_each_drawing_where_trying_every_spot_against_every_box_puts_it():

@@ -362,6 +362,16 @@ def _remember(layer: Layer, points: Rect | None, others: Sequence[Primitive]) ->
     return layer
 
 
+def renamed_layer(layer: Layer, name: str, items: Sequence[Primitive]) -> Layer:
+    """``layer`` named ``name`` with ``items``, which are its own items renamed (an arrow's key), not moved: its
+    measure, if known, is theirs too."""
+    named = Layer(name, tuple(items))
+    known = layer.__dict__.get(_MEASURE)
+    if known is not None:
+        object.__setattr__(named, _MEASURE, known)
+    return named
+
+
 def bounds_of(items: Iterable[Primitive]) -> tuple[float, float, float, float]:
     """(xmin, ymin, xmax, ymax) of ``items``; a unit square for none."""
     return _bounds_or_none(items) or (0.0, 0.0, 1.0, 1.0)
@@ -496,5 +506,6 @@ def prefixed(layers: Sequence[Layer], prefix: str) -> list[Layer]:
     def named(value: str) -> str:
         return f"{prefix}-{value}" if value else prefix
 
-    return [Layer(named(layer.name), tuple(replace(item, key=named(item.key)) if isinstance(item, Arrow) and item.key
-                                           else item for item in layer.items)) for layer in layers]
+    return [renamed_layer(layer, named(layer.name), [replace(item, key=named(item.key))
+                                                     if isinstance(item, Arrow) and item.key else item
+                                                     for item in layer.items]) for layer in layers]

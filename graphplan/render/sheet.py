@@ -80,6 +80,7 @@ from .primitives import (
     bounds,
     moved_layers,
     prefixed,
+    renamed_layer,
     text_width,
 )
 from .svg import to_svg
@@ -238,8 +239,9 @@ def _renamed(layers: Sequence[Layer], field_name: str) -> list[Layer]:
     def short(value: str) -> str:
         return value[len(field_name) + 1:] if value.startswith(field_name + "-") else value
 
-    return [Layer(short(layer.name), tuple(replace(item, key=short(item.key)) if isinstance(item, Arrow) and item.key
-                                           else item for item in layer.items)) for layer in layers]
+    return [renamed_layer(layer, short(layer.name), [replace(item, key=short(item.key))
+                                                     if isinstance(item, Arrow) and item.key else item
+                                                     for item in layer.items]) for layer in layers]
 
 
 def kinematics_panels(analysis: Analysis) -> list[Panel]:
