@@ -24,6 +24,7 @@ from .joint_friction import (
     described,
     friction_loads,
     friction_pairs,
+    rubbing_senses,
     unusual_coefficients,
 )
 from .kinematics import at
@@ -510,7 +511,8 @@ def _plans(mechanism: Mechanism, positions: PositionSet, motion: Motion, acting:
                 forces = force_plan(mechanism, where, directions, loads, scene.drawing.force_scale)
                 if friction:
                     rubbing = force_plan(mechanism, where, directions, loads, forces.group_scales,
-                                         functools.partial(friction_loads, friction, state))
+                                         functools.partial(friction_loads, friction, state,
+                                                           senses=rubbing_senses(friction, state)))
             except ParallelLinesError as error:
                 if measured_forces or measured_balancing is not None:
                     _refuse_singular(number, error, "force polygon", "forces" if measured_forces else "balancing")

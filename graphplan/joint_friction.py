@@ -196,34 +196,49 @@ def _longest_span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[int,
     return link, length, between
 
 
-def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping[str, Vector]) -> tuple[Load, ...]:
+def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping[str, Vector],
+                   senses: tuple | None = None) -> tuple[Load, ...]:
     """The friction loads of the pairs, given their reactions: a moment per turning pair on each of its
     links, a force along the slide per sliding pair (``Mf23`` acts on 3 from 2, ``Mf32`` on 2).
 
-    Loads on the frame are among them; the equations of moving links skip them.
+    Loads on the frame are among them; the equations of moving links skip them.  ``senses``: the pairs'
+    :func:`rubbing_senses` at ``state``, for a solve that repeats this with other reactions only.
     """
     loads: list[Load] = []
-    moving_scale = state.moving_scale
-    for pair in friction:
+    senses = rubbing_senses(friction, state) if senses is None else senses
+    for pair, sense in zip(friction, senses, strict=True):
         magnitude = np.abs(reactions[pair.reaction])
         if not pair.sliding:
-            moment = -turning_sense(pair, state) * pair.radius * magnitude
+            moment = sense * pair.radius * magnitude
             on_target, on_source = pair.load_names
             loads.append(Load(on_target, pair.target, None, 0j, moment))
             loads.append(Load(on_source, pair.source, None, 0j, -moment))
         else:
-            relative = state.sliding[pair.target]
-            # At rest in its pair (an extreme position), against the sliding about to begin.
-            relative = np.where(at_rest(relative, moving_scale), state.sliding_acceleration.get(pair.target, 0j),
-                                relative)
-            speed = np.abs(relative)
-            with np.errstate(invalid="ignore", divide="ignore"):
-                direction = np.where(speed > 0, relative / np.where(speed > 0, speed, 1.0), 0j)
-            force = -pair.coefficient * magnitude * direction
+            force = -pair.coefficient * magnitude * sense
             on_target, on_source = pair.load_names
             loads.append(Load(on_target, pair.target, pair.joint, force, 0.0))
             loads.append(Load(on_source, pair.source, pair.joint, -force, 0.0))
     return tuple(loads)
+
+
+def rubbing_senses(friction: tuple[FrictionPair, ...], state) -> tuple:
+    """What of each pair's friction load its reaction does not change: a turning pair's −sense of turning
+    (:func:`turning_sense`), a sliding pair's unit direction of sliding (0 where it neither slides nor is about
+    to).  The friction solves repeat :func:`friction_loads` thousands of times at one state."""
+    senses: list = []
+    moving_scale = state.moving_scale
+    for pair in friction:
+        if not pair.sliding:
+            senses.append(-turning_sense(pair, state))
+            continue
+        relative = state.sliding[pair.target]
+        # At rest in its pair (an extreme position), against the sliding about to begin.
+        relative = np.where(at_rest(relative, moving_scale), state.sliding_acceleration.get(pair.target, 0j),
+                            relative)
+        speed = np.abs(relative)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            senses.append(np.where(speed > 0, relative / np.where(speed > 0, speed, 1.0), 0j))
+    return tuple(senses)
 
 
 def turning_sense(pair: FrictionPair, state) -> Scalar:
@@ -240,6 +255,7 @@ __all__ = [
     "friction_loads",
     "friction_pairs",
     "pair_name",
+    "rubbing_senses",
     "turning_sense",
     "unusual_coefficients",
 ]

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import UnknownNameError
-from .joint_friction import FrictionPair, friction_loads
+from .joint_friction import FrictionPair, friction_loads, rubbing_senses
 from .kinematics import Scalar, Vector, cross, read_only
 from .loads import Load, State, motion_state, power
 from .mechanism import Mechanism
@@ -147,9 +147,13 @@ def equilibrium(mechanism: Mechanism, motion: Motion, loads: tuple[Load, ...],
     if friction:
         state = motion_state(motion)
 
+        # The loads without friction are summed once: each repetition adds only the friction's on to them, in
+        # the order known(loads + extra) would, so the sums are the same to the last bit.
+        summed, senses = system.summed(loads), rubbing_senses(friction, state)
+
         def repeat(last: np.ndarray) -> np.ndarray:
-            extra = friction_loads(friction, state, system.forces(last))
-            return system.apply(inverse, system.known(loads + extra), singular)
+            extra = friction_loads(friction, state, system.forces(last), senses)
+            return system.apply(inverse, -system.summed(extra, summed), singular)
 
         unknowns, iterations, locked = settle(repeat, unknowns, singular)
     with np.errstate(over="ignore", invalid="ignore"):   # the locked positions' reactions are inf or NaN
@@ -199,7 +203,11 @@ class _System:
 
     def known(self, loads: tuple[Load, ...]) -> np.ndarray:
         """ΣFx, ΣFy, ΣM of the known loads of every link, moved to the right-hand side."""
-        known = np.zeros((self.count, self.matrix.shape[1]))
+        return -self.summed(loads)
+
+    def summed(self, loads: tuple[Load, ...], start: np.ndarray | None = None) -> np.ndarray:
+        """ΣFx, ΣFy, ΣM of ``loads`` on every link, added on to ``start`` (the sums of loads before them)."""
+        known = np.zeros((self.count, self.matrix.shape[1])) if start is None else start.copy()
         for load in loads:
             if load.link not in self.row_of:
                 continue  # on the frame
@@ -211,8 +219,9 @@ class _System:
                 line = _full(self.motion.points[load.point].r + load.offset, self.count)
                 known[:, row + 2] += cross(line - self.origins[load.link], force)
             else:
-                known[:, row + 2] += np.broadcast_to(np.asarray(load.moment, dtype=float), (self.count,))
-        return -known
+                # Added as broadcast_to would give it, without building the view each of the friction's solves.
+                known[:, row + 2] += np.asarray(load.moment, dtype=float)
+        return known
 
     def solve(self, rhs: np.ndarray):
         """Solve every position's system once; a singular or undefined one gives NaN and is marked."""
