@@ -35,13 +35,37 @@ XELATEX = shutil.which("xelatex")
 needs_xelatex = pytest.mark.skipif(XELATEX is None, reason="XeLaTeX is not installed (Debian: texlive-xetex)")
 
 
+_notes: dict[tuple[str, str], tuple] = {}
+
+
+def note_of(path: str, locale: str) -> tuple:
+    """The case's analysis and note.md, made once in a process: test_word reads the same notes as Word writes them,
+    and shares them where it runs in the same worker."""
+    if (path, locale) not in _notes:
+        analysis = analyse(dataclasses.replace(graphplan.load(path), locale=locale))
+        _notes[path, locale] = analysis, note_markdown(analysis)
+    return _notes[path, locale]
+
+
 @pytest.fixture(scope="module", params=CASES, ids=[f"{Path(path).stem}-{locale}" for path, locale in CASES])
 def case(request):
     path, locale = request.param
-    scene = graphplan.load(path)
-    analysis = analyse(dataclasses.replace(scene, locale=locale))
-    note = note_markdown(analysis)
+    analysis, note = note_of(path, locale)
     return analysis, note, latex_document(note, analysis.scene.title, locale)
+
+
+@pytest.fixture(scope="module")
+def typeset_note(tmp_path_factory):
+    """A note's LaTeX typeset once for the module (two XeLaTeX runs): the tests of one case read the same log and
+    PDF, which the same source gives again."""
+    done: dict[str, tuple[str, Path]] = {}
+
+    def typeset_once(latex: str) -> tuple[str, Path]:
+        if latex not in done:
+            done[latex] = typeset(tmp_path_factory.mktemp("note"), "note", latex)
+        return done[latex]
+
+    return typeset_once
 
 
 def plain(latex: str) -> str:
@@ -235,9 +259,9 @@ def pdf_text(path: Path) -> str:
 
 
 @needs_xelatex
-def test_the_note_typesets_with_every_glyph_inside_the_margins(case, tmp_path):
+def test_the_note_typesets_with_every_glyph_inside_the_margins(case, typeset_note):
     _, note, latex = case
-    log, pdf = typeset(tmp_path, "note", latex)
+    log, pdf = typeset_note(latex)
     assert "Missing character" not in log
     assert "Overfull \\hbox" not in log
     assert "Table widths have changed" not in log
@@ -252,12 +276,12 @@ def test_the_note_typesets_with_every_glyph_inside_the_margins(case, tmp_path):
 
 
 @needs_xelatex
-def test_a_table_running_onto_another_page_says_whose_continuation_it_is(case, tmp_path):
+def test_a_table_running_onto_another_page_says_whose_continuation_it_is(case, typeset_note):
     """GOST 2.105 puts «Продолжение таблицы 3» over the header repeated on each page a table runs onto; a reader
     of page 9 otherwise had a header and numbers with no table to look up."""
     analysis, _, latex = case
     text = strings(analysis.scene.locale)
-    _, pdf = typeset(tmp_path, "note", latex)
+    _, pdf = typeset_note(latex)
     def pattern(template: str) -> re.Pattern:
         return re.compile(re.escape(template).replace(r"\{number\}", r"(\d+)").replace(r"\ ", r"\s*"))
 
@@ -339,7 +363,7 @@ def test_a_note_with_a_cjk_name_in_it_is_set_in_the_cjk_font_whatever_its_langua
 
 
 @needs_xelatex
-def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns(case, tmp_path):
+def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns(case, tmp_path, typeset_note):
     analysis, note, latex = case
     if analysis.scene.locale != "ru":
         pytest.skip("Russian only")
@@ -349,7 +373,7 @@ def test_a_russian_note_breaks_its_words_at_syllables_where_tex_has_the_patterns
     log, _ = typeset(tmp_path, "probe", probe)
     if "ме-ха-низ-ма" not in log:
         pytest.skip("this TeX has no Russian hyphenation patterns (Debian: texlive-lang-cyrillic)")
-    _, pdf = typeset(tmp_path, "note", latex)
+    _, pdf = typeset_note(latex)
     # PDFium marks a hyphen TeX put at a line's end with U+FFFE; the word joined again is one of the note's.
     broken = re.findall(r"([а-яё]+)\ufffe\s*([а-яё]+)", pdf_text(pdf))
     assert broken

@@ -8,7 +8,6 @@ running text word for word, and each symbol's index and component as the sub- an
 
 from __future__ import annotations
 
-import dataclasses
 import io
 import zipfile
 from pathlib import Path
@@ -18,12 +17,9 @@ import docx
 import pytest
 from docx.oxml.ns import qn
 from markdown_it import MarkdownIt
-from test_latex import CASES, flat, markdown_tables
+from test_latex import CASES, flat, markdown_tables, note_of
 
-import graphplan
-from graphplan.analysis import analyse
 from graphplan.cli import main
-from graphplan.report.note import note_markdown
 from graphplan.report.symbols import Symbol, pieces
 from graphplan.report.word import note_docx
 from graphplan.starters import starter
@@ -32,8 +28,7 @@ from graphplan.starters import starter
 @pytest.fixture(scope="module", params=CASES, ids=[f"{Path(path).stem}-{locale}" for path, locale in CASES])
 def case(request):
     path, locale = request.param
-    analysis = analyse(dataclasses.replace(graphplan.load(path), locale=locale))
-    note = note_markdown(analysis)
+    analysis, note = note_of(path, locale)
     written = note_docx(note, analysis.scene.title, locale)
     return locale, note, written, docx.Document(io.BytesIO(written))
 
