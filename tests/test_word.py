@@ -8,6 +8,7 @@ running text word for word, and each symbol's index and component as the sub- an
 
 from __future__ import annotations
 
+import functools
 import io
 import zipfile
 from pathlib import Path
@@ -199,6 +200,8 @@ def package_parts(written: bytes) -> dict[str, ElementTree.Element]:
                 if name.endswith((".xml", ".rels"))}
 
 
+# Kept by the document's bytes: each case's test reads the two wide notes twice, and the package parsed once will do.
+@functools.cache
 def tables_and_line(written: bytes) -> tuple[list[list[int]], int]:
     """Each table's grid column widths and the width of the text between the margins, twips, from the XML."""
     body = package_parts(written)["word/document.xml"].find(f"{WORD}body")
