@@ -269,3 +269,34 @@ start = "extreme"
 working = {{ link = 6, sense = "ccw" }}
 plans = [3, 9]
 {every}{drawing}"""
+
+
+def oscillating_cylinder(offset: float) -> str:
+    """An inverted slider-crank (RPR): a crank drives the piston rod 3 in the cylinder 4 that rocks about C, the rod's
+    axis ``offset`` m from A; E is a point of the rod, laid off from A toward C."""
+    return """
+[scene]
+title = "Oscillating-cylinder mechanism"
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.30, 0.0] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.08
+rpm = 120
+[[groups]]
+kind = "RPR"
+links = [3, 4]
+joints = ["A", "C"]
+offset = OFFSET
+[points]
+E = { link = 3, from = "A", toward = "C", at = 0.12, offset = 0.03 }
+[positions]
+count = 12
+start = "extreme"
+working = { link = 4, sense = "ccw" }
+plans = [4, 10]
+""".replace("OFFSET", repr(offset))

@@ -11,38 +11,13 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import oscillating_cylinder
 
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.report.note import note_markdown
 from graphplan.report.tables import markdown
 
-CYLINDER = """
-[scene]
-title = "Oscillating-cylinder mechanism"
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.30, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.08
-rpm = 120
-[[groups]]
-kind = "RPR"
-links = [3, 4]
-joints = ["A", "C"]
-offset = OFFSET
-[points]
-E = { link = 3, from = "A", toward = "C", at = 0.12, offset = 0.03 }
-[positions]
-count = 12
-start = "extreme"
-working = { link = 4, sense = "ccw" }
-plans = [4, 10]
-"""
 CRANK_OMEGA = 120 * 2 * math.pi / 60  # rpm, uniform: d²φ3/dt² = ω2²·d²φ3/dφ2²
 STEP = 1e-3  # rad of the crank
 
@@ -57,7 +32,7 @@ def _rod_rates(scene, crank: float) -> tuple[float, float]:
 
 @pytest.mark.parametrize("offset", [0.0, 0.02])
 def test_the_rods_epsilon_is_read_as_the_cylinders_and_the_tables_say_so(offset):
-    scene = graphplan.load_text(CYLINDER.replace("OFFSET", repr(offset)))
+    scene = graphplan.load_text(oscillating_cylinder(offset))
     analysis = analyse(scene)
     table, note = markdown(analysis), note_markdown(analysis)
     precision = scene.drawing.drafting_precision

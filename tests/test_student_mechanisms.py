@@ -11,7 +11,7 @@ import re
 
 import numpy as np
 import pytest
-from scene_texts import watt_ii
+from scene_texts import oscillating_cylinder, watt_ii
 
 import graphplan
 
@@ -53,32 +53,6 @@ def _check_kinematics(scene_text: str, positions, omega: float) -> None:
             assert point.a[index] == pytest.approx(a[name], abs=2e-3 * max(1.0, np.abs(a[name]).max())), (name, index)
 
 
-OSCILLATING_CYLINDER = """
-[scene]
-title = "Oscillating-cylinder mechanism"
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.30, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.08
-rpm = 120
-[[groups]]
-kind = "RPR"
-links = [3, 4]
-joints = ["A", "C"]
-offset = OFFSET
-[points]
-E = { link = 3, from = "A", toward = "C", at = 0.12, offset = 0.03 }
-[positions]
-count = 12
-start = "extreme"
-working = { link = 4, sense = "ccw" }
-plans = [4, 10]
-"""
 
 
 def _oscillating_cylinder(offset: float):
@@ -99,7 +73,7 @@ def test_a_point_on_an_oscillating_cylinders_piston_rod(offset):
     """The piston rod (the RPR's block, whose only joint is A) turns with the cylinder, so the slide's line is fixed
     in it: a coupler point on the rod is placed from A toward the cylinder's pivot C. Refused before ('C' is not a
     point of link 3), with no way to name a point of the rod at all."""
-    text = OSCILLATING_CYLINDER.replace("OFFSET", repr(offset))
+    text = oscillating_cylinder(offset)
     _check_kinematics(text, _oscillating_cylinder(offset), 120 * 2 * math.pi / 60)
     plan = graphplan.load_text(text).plan(4)
     assert plan.values["VE"] == pytest.approx(math.hypot(*graphplan.load_text(text).solve().point("E").v[3]), rel=1e-9)
@@ -310,7 +284,7 @@ def test_the_note_lays_off_the_whitworth_levers_tail_beyond_the_pole(tmp_path):
 def test_the_note_lays_off_the_piston_rods_point_from_its_one_image(tmp_path):
     """E on the rod turns with the cylinder: ae on the velocity plan is |vE − vA| (here by the differences) at μV.
     The note said only that its image "follows from that of link 4", leaving the student no length to lay off."""
-    text = OSCILLATING_CYLINDER.replace("OFFSET", "0.0")
+    text = oscillating_cylinder(0.0)
     scene = graphplan.load_text(text)
     plan = scene.plan(4)
     v, _ = _differences(_oscillating_cylinder(0.0), float(scene.solve().driver[3]), 120 * 2 * math.pi / 60)
@@ -328,7 +302,7 @@ def test_a_piston_rod_centred_off_its_pin_is_drawn_out_to_its_centre():
     from graphplan.mechanism import build
     from graphplan.render.linkage import outline_points
 
-    text = OSCILLATING_CYLINDER.replace("OFFSET", "0.0") + """
+    text = oscillating_cylinder(0.0) + """
 [links.3]
 mass = 3.0
 centre = "E"
@@ -355,7 +329,7 @@ inertia = 0.05
 
 
 def test_a_wrong_toward_on_the_piston_rod_is_told_the_slide_it_may_follow():
-    text = OSCILLATING_CYLINDER.replace("OFFSET", "0.0").replace('toward = "C", at = 0.12', 'toward = "O", at = 0.12')
+    text = oscillating_cylinder(0.0).replace('toward = "C", at = 0.12', 'toward = "O", at = 0.12')
     with pytest.raises(graphplan.GraphplanError) as error:
         graphplan.load_text(text).solve()
     assert str(error.value) == ("points.E.toward: 'O' is not a point of link 3; its points are A (toward may also "
