@@ -3,9 +3,14 @@ a draftsman breaks it) is drawn in pieces, which are one line to the reader."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Collection, Iterable
 
+import shapely
 from shapely.geometry import LineString
+
+SVG = "{http://www.w3.org/2000/svg}"
 
 
 def whole_lines(pieces: Iterable[LineString]) -> list[LineString]:
@@ -24,3 +29,27 @@ def whole_lines(pieces: Iterable[LineString]) -> list[LineString]:
 def _collinear(one: LineString, other: LineString) -> bool:
     (x0, y0), (x1, y1) = one.coords
     return all(abs((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)) < 1e-3 * one.length for x, y in other.coords)
+
+
+def stroked_shapes(root: ET.Element, skipped: Collection[str] = ("leaders",)) -> list[shapely.Geometry]:
+    """Every stroked path and circle of an SVG drawing outside the groups whose ids are ``skipped`` (the leaders: a
+    label's own leader ends at it), each widened by half its stroke, as the ink a label must keep clear of."""
+    shapes = []
+    for group in root.iter(f"{SVG}g"):
+        if group.get("id") in skipped:
+            continue
+        for item in group:
+            width = float(item.get("stroke-width", "0"))
+            if item.get("stroke", "none") == "none":
+                continue
+            if item.tag == f"{SVG}path":
+                numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
+                points = list(zip(numbers[0::2], numbers[1::2]))
+                if item.get("d").rstrip().upper().endswith("Z"):
+                    points.append(points[0])
+                if len(points) >= 2:
+                    shapes.append(shapely.LineString(points).buffer(width / 2))
+            elif item.tag == f"{SVG}circle":
+                centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
+                shapes.append(centre.buffer(float(item.get("r"))).exterior.buffer(width / 2))
+    return shapes

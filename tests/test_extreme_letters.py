@@ -12,10 +12,11 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import shapely
+from drawn_lines import stroked_shapes
 from scipy.optimize import brentq
+from sheet_texts import box, texts
 
 from graphplan.cli import main
-from tests.sheet_texts import box, texts
 
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"
@@ -146,30 +147,6 @@ YOKE_CRANK = 0.075
 YOKE_TOP = "7"
 
 
-def _drawn_lines(root: ET.Element) -> list[shapely.Geometry]:
-    """Every stroked path and circle of the drawing but the leaders (a label's own leader ends at it), widened by
-    half its stroke."""
-    shapes = []
-    for group in root.iter(f"{SVG}g"):
-        if group.get("id") in ("leaders", "labels", "caption"):
-            continue
-        for item in group:
-            width = float(item.get("stroke-width", "0"))
-            if item.get("stroke", "none") == "none":
-                continue
-            if item.tag == f"{SVG}path":
-                numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
-                points = list(zip(numbers[0::2], numbers[1::2]))
-                if item.get("d").rstrip().upper().endswith("Z"):
-                    points.append(points[0])
-                if len(points) >= 2:
-                    shapes.append(shapely.LineString(points).buffer(width / 2))
-            elif item.tag == f"{SVG}circle":
-                centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
-                shapes.append(centre.buffer(float(item.get("r"))).exterior.buffer(width / 2))
-    return shapes
-
-
 def _directions(corners: tuple[float, float, float, float], at: tuple[float, float]) -> tuple[float, float]:
     """The least and greatest direction (radians, y up) from ``at`` to the corners of a box beside it."""
     x0, y0, x1, y1 = corners
@@ -200,7 +177,7 @@ def test_the_number_and_the_primed_letters_of_one_pin_stand_each_in_its_own_dire
     written = {entry[4]: box(*entry) for entry in texts(source) if entry[4] in (YOKE_TOP, "A′", "B′")}
     assert set(written) == {YOKE_TOP, "A′", "B′"}
     letter = max(y1 - y0 for _, y0, _, y1 in written.values())
-    lines = shapely.STRtree(_drawn_lines(root))
+    lines = shapely.STRtree(stroked_shapes(root, ("leaders", "labels", "caption")))
     for name, corners in written.items():
         label = shapely.box(*corners)
         assert label.distance(shapely.Point(pin)) < 4 * letter, name

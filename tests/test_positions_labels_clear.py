@@ -10,12 +10,12 @@ leader ends at it.
 
 from __future__ import annotations
 
-import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
 import shapely
+from drawn_lines import stroked_shapes
 from matplotlib.font_manager import FontProperties
 from matplotlib.textpath import TextPath, TextToPath
 
@@ -52,28 +52,6 @@ def _ink(element: ET.Element) -> shapely.Polygon:
     return shapely.box(start + extent.x0, y - extent.y1, start + extent.x1, y - extent.y0)
 
 
-def _lines(root: ET.Element) -> list[shapely.Geometry]:
-    """Every stroked path and circle outside the leaders' layer, widened by half its stroke."""
-    shapes = []
-    for group in root.iter(f"{SVG}g"):
-        if group.get("id") == "leaders":
-            continue
-        for item in group:
-            width = float(item.get("stroke-width", "0"))
-            if item.tag == f"{SVG}path" and item.get("stroke", "none") != "none":
-                numbers = [float(value) for value in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", item.get("d"))]
-                points = list(zip(numbers[0::2], numbers[1::2]))
-                if item.get("d").rstrip().upper().endswith("Z"):
-                    points.append(points[0])
-                if len(points) >= 2:
-                    shapes.append(shapely.LineString(points).buffer(width / 2))
-            elif item.tag == f"{SVG}circle" and item.get("stroke", "none") != "none":
-                centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
-                radius = float(item.get("r"))
-                shapes.append(centre.buffer(radius + width / 2).exterior.buffer(width / 2))
-    return shapes
-
-
 @pytest.mark.parametrize(("fixture", "locale", "names"), CASES, ids=[f"{case[0]}-{case[1]}" for case in CASES])
 def test_named_labels_meet_no_drawn_line(fixture: str, locale: str, names: tuple[str, ...], tmp_path: Path) -> None:
     out = tmp_path / "out"
@@ -81,7 +59,7 @@ def test_named_labels_meet_no_drawn_line(fixture: str, locale: str, names: tuple
                      "--sheet", "none"]) == 0
     root = ET.parse(out / "positions.svg").getroot()
     texts = [element for element in root.iter(f"{SVG}text")]
-    lines = _lines(root)
+    lines = stroked_shapes(root)
     tree = shapely.STRtree(lines)
     checked = []
     for name in names:
