@@ -16,7 +16,7 @@ from collections.abc import Iterable, Mapping
 from ..accuracy import Row, Study, draw_study
 from ..locale import Count, strings
 from .markdown import literal
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, settings, svg_text, with_decimal_mark
 
 FAMILIES = ("velocity", "acceleration")
 
@@ -86,11 +86,10 @@ def figure(study: Study, locale: str, title: str) -> str:
     """``accuracy.svg``: largest error against run time on log-log axes (filled: accelerations; ringed: the plans
     read to the scene's own drafting precision)."""
     import matplotlib
-    from matplotlib.figure import Figure
 
     text = strings(locale)
     with matplotlib.rc_context(settings()):
-        drawn = Figure(figsize=(PAGE_WIDTH_INCHES, 5.0), dpi=100)
+        drawn = new_figure(figsize=(PAGE_WIDTH_INCHES, 5.0), dpi=100)
         axes = drawn.subplots()
         names = {key.removeprefix("accuracy_legend_"): word for key, word in text.items()
                  if key.startswith("accuracy_legend_")}

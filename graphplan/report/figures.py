@@ -15,7 +15,7 @@ from ..analysis import Analysis
 from ..loads import activity, link_loads, motion_state
 from ..locale import strings
 from ..statics import equilibrium
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, settings, svg_text, with_decimal_mark
 
 
 def balancing_diagram(analysis: Analysis) -> str:
@@ -29,7 +29,6 @@ def balancing_diagram(analysis: Analysis) -> str:
 
 
 def _balancing_figure(analysis: Analysis):
-    from matplotlib.figure import Figure
 
     text = strings(analysis.scene.locale)
     mechanism, positions, sweep = analysis.mechanism, analysis.positions, analysis.paths
@@ -46,7 +45,7 @@ def _balancing_figure(analysis: Analysis):
         axis, unit = text["diagram_displacement"], text["newton"]
         name = text["balancing_force"]
     # Taller than the 3.6 in it was with the legend on the plot: the legend under it keeps the plot its height.
-    figure = Figure(figsize=(PAGE_WIDTH_INCHES, 4.1), dpi=100)
+    figure = new_figure(figsize=(PAGE_WIDTH_INCHES, 4.1), dpi=100)
     plot = figure.subplots()
     plot.plot(along, ideal.balancing, color="#1f5fa8", linewidth=1.4, label=text["diagram_ideal"])
     if analysis.scene.friction and analysis.with_friction is not None:

@@ -21,7 +21,7 @@ from ..machine_motion import MachineMotion
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
 from .forces import number
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, settings, svg_text, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, settings, svg_text, with_decimal_mark
 
 # Points of the dense solution drawn over the run, besides the solver's own steps: enough for a
 # smooth fluctuation at a few hundred turns.
@@ -70,7 +70,6 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
     """
     stall_deg = stall_angle_deg if stall_angle_deg is not None else motion.stalled_at_angle_deg
     import matplotlib
-    from matplotlib.figure import Figure
 
     with matplotlib.rc_context(settings()):
         below = motion.steady is not None or (motion.stalled_at is not None and resisting is not None)
@@ -79,7 +78,7 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
         legends = []
         if _moved(motion) and not below:
             # A run-down, or a run with no steady state: the speed in time says it all, no empty half below.
-            figure = Figure(figsize=(PAGE_WIDTH_INCHES, 5.5))
+            figure = new_figure(figsize=(PAGE_WIDTH_INCHES, 5.5))
             run = figure.subplots(1, 1)
             _speed_over_time(run, motion, text)
             legends.append((run, _RUN_COLUMNS))
@@ -88,13 +87,13 @@ def motion_plot(motion: MachineMotion, text: Mapping[str, str], title: str = "",
                 run.set_title(_broken(f"{run.get_title()}: {why}" if run.get_title() else why, 10), fontsize=10)
         else:
             if _moved(motion):
-                figure = Figure(figsize=(PAGE_WIDTH_INCHES, _TWO_PLOTS_HEIGHT[motion.steady is not None]))
+                figure = new_figure(figsize=(PAGE_WIDTH_INCHES, _TWO_PLOTS_HEIGHT[motion.steady is not None]))
                 run, turn = figure.subplots(2, 1, height_ratios=(3, 2))
                 _speed_over_time(run, motion, text)
                 legends.append((run, _RUN_COLUMNS))
             else:
                 # A speed zero throughout is an empty plot along its axis: only why it stands still is drawn.
-                figure = Figure(figsize=(PAGE_WIDTH_INCHES, 4.5))
+                figure = new_figure(figsize=(PAGE_WIDTH_INCHES, 4.5))
                 turn = figure.subplots(1, 1)
             if motion.steady is not None:
                 _steady_turn(turn, motion, text, flywheel)

@@ -24,7 +24,7 @@ import numpy as np
 from ..locale import strings as locale_strings
 from ..render.numerals import short
 from ..vibration import LARGE_MAGNIFICATION, VibrationSpec, transmissibility, unbalance_magnification
-from .plot_style import PAGE_WIDTH_INCHES, legend_under, number_log_axes, settings, with_decimal_mark
+from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, number_log_axes, settings, with_decimal_mark
 
 #: Damping ratios drawn when none are asked for (as in the textbooks' charts).
 DEFAULT_ZETAS = (0.05, 0.1, 0.15, 0.25, 0.375, 0.5, 1.0)
@@ -147,12 +147,11 @@ def _plot(path: str | Path, ratios: np.ndarray, curves: list[tuple[float, np.nda
           operating: tuple[float, float] | None, isolation: bool = False, machine: float | None = None,
           design: tuple[float, float] | None = None) -> Path:
     import matplotlib
-    from matplotlib.figure import Figure
 
     # A stream takes the SVG text as it is (a run writes its whole folder at once).
     target = path if hasattr(path, "write") else Path(path)
     with matplotlib.rc_context(settings()):
-        figure = Figure(figsize=(PAGE_WIDTH_INCHES, 5.0), dpi=100)
+        figure = new_figure(figsize=(PAGE_WIDTH_INCHES, 5.0), dpi=100)
         plot = figure.add_subplot()
         colours = matplotlib.colormaps["viridis"](np.linspace(0.0, 0.85, len(curves)))
         for (zeta, values), colour in zip(curves, colours, strict=True):
