@@ -201,7 +201,8 @@ def test_each_ringed_load_value_names_its_position_and_is_the_load_there():
     analysis = scene.analyse()
     for number, value in written.items():
         position = next(plan for plan in analysis.plans if plan.number == number)
-        ram = graphplan.solve(scene, driver=analysis.motion.driver[position.index:position.index + 1]).point("D").r[0, 1]
+        at_position = analysis.motion.driver[position.index:position.index + 1]
+        ram = graphplan.solve(scene, driver=at_position).point("D").r[0, 1]
         share = (top - ram) / (top - bottom)
         expected = float(np.interp(share, [0.7, 0.85, 1.0], [0.0, 15000.0, 30000.0], left=0.0, right=0.0))
         assert math.isclose(value, expected, rel_tol=1e-3)
