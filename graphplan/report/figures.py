@@ -29,7 +29,6 @@ def balancing_diagram(analysis: Analysis) -> str:
 
 
 def _balancing_figure(analysis: Analysis):
-
     text = strings(analysis.scene.locale)
     mechanism, positions, sweep = analysis.mechanism, analysis.positions, analysis.paths
     loads = link_loads(mechanism, motion_state(sweep), activity(mechanism, positions, sweep))
