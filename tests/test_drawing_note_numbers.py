@@ -124,3 +124,30 @@ def test_the_flywheel_starters_numbers_are_the_worked_out_ones_to_five_digits(ru
     note = _flywheel_section(out)
     for value in (work, inertia, omega * (1 + delta / 2), omega * (1 - delta / 2), inertia * (rpm / other) ** 2):
         assert _in(five(value), drawing) and _in(five(value), note), (five(value), drawing)
+
+
+def _legend_numbers(out: Path, template: str) -> list[str]:
+    """The numbers the motion plot's legend entry of ``template`` writes (its ``{…}`` fields), as written: in a text
+    element, or, where matplotlib draws the glyphs as paths (a font it embeds), in the comment it writes over them."""
+    root = ElementTree.parse(out / "motion.svg").getroot()
+    texts = ["".join(text.itertext()) for text in root.iter(f"{SVG}text")]
+    texts += re.findall(r"<!--(.*?)-->", (out / "motion.svg").read_text(encoding="utf-8"), re.DOTALL)
+    pattern = re.compile(re.sub(r"\\\{\w+\\\}", lambda _: f"({NUMBER.pattern})", re.escape(template)))
+    (found,) = [match.groups() for text in texts if (match := pattern.fullmatch(text.strip()))]
+    return list(found)
+
+
+def test_the_motion_plots_steady_speeds_and_delta_are_the_notes(run):
+    """The plot's steady range read 10.52…10.83 rad/s and δ = 0.02902 to four digits, where the note writes
+    ωmin = 10.518, ωmax = 10.827: the same run's numbers to the same digits, as the note's sentence gives them."""
+    _, locale, out = run
+    if not (out / "motion.svg").exists():
+        pytest.skip("no motor: no motion plot")
+    words = strings(locale)
+    note = (out / "note.md").read_text(encoding="utf-8")
+    low, high = _legend_numbers(out, words["motion_steady_band"])
+    (delta,) = _legend_numbers(out, words["motion_integrated"])
+    steady = next(line for line in note.splitlines() if _in(high, line) and _in(low, line))
+    assert _in(delta, steady), (delta, steady)
+    # Five digits for a speed, four for δ (the integration's), noughts kept.
+    assert [len(re.sub(r"\D", "", value).lstrip("0")) for value in (low, high, delta)] == [5, 5, 4]

@@ -18,6 +18,7 @@ import numpy as np
 
 from ..locale import Count
 from ..machine_motion import MachineMotion
+from ..render.numerals import worked_out
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
 from .forces import number
@@ -161,8 +162,8 @@ def _speed_over_time(plot, motion: MachineMotion, text: Mapping[str, str]) -> No
         # The band runs from where the steady state was reached to the first switch after it (a run-down).
         until = min([when for when, _ in motion.events if when > steady.reached_at] + [end])
         plot.fill_between([steady.reached_at, until], cycle.min_speed, cycle.max_speed, color=_FLYWHEEL, alpha=0.15,
-                          linewidth=0, label=text["motion_steady_band"].format(low=number(cycle.min_speed, 4, mark),
-                                                                               high=number(cycle.max_speed, 4, mark)))
+                          linewidth=0, label=text["motion_steady_band"].format(low=_worked_out(cycle.min_speed, mark),
+                                                                               high=_worked_out(cycle.max_speed, mark)))
         started = motion.start_up_time(5.0)
         if started is not None:
             plot.axvline(started, color=_FLYWHEEL, linewidth=0.8, linestyle="-.",
@@ -243,7 +244,7 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     state = motion.state_at(times)
     angles, speeds = _within_turn(np.degrees(state[0]), state[1])
     plot.plot(angles, speeds, color=_SHAFT, linewidth=1.1,
-              label=text["motion_integrated"].format(delta=number(cycle.delta, 4, mark)))
+              label=text["motion_integrated"].format(delta=_worked_out(cycle.delta, mark, 4)))
     if flywheel is not None:
         along, omega = flywheel
         estimate = (float(np.max(omega)) - float(np.min(omega))) / (0.5 * (float(np.max(omega)) + float(np.min(omega))))
@@ -331,6 +332,12 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     plot.set_title(_broken(text["motion_stall_title" if motion.turned else "motion_never_starts_title"], 10),
                    fontsize=10)
     plot.grid(True, linewidth=0.3)
+
+
+def _worked_out(value: float, mark: str, digits: int = 5) -> str:
+    """A speed or δ of the steady run as the note writes it (its noughts kept: ωmin = 10.210, δ = 0.02350), with the
+    locale's mark: the legend wrote four digits, 10.21, beside the note's 10.210."""
+    return worked_out(value, digits).replace(".", mark)
 
 
 __all__ = ["motion_figure", "motion_plot"]
