@@ -160,15 +160,13 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     for _, read in other_plan.values():
         for reading in read:
             misread.pop(reading, None)
-    metres, centimetres = {}, {}
+    typed_in: dict[str, dict[str, tuple[float, float]]] = {unit: {} for unit, _, _ in _TYPED_UNITS}
     for reading, rows in list(misread.items()):
         row, plan = rows[0]
         constructed = abs(plan) / row.per_millimetre if row.per_millimetre else 0.0
-        if constructed > 0.0 and in_metres(_hand_millimetres(row) / constructed):
-            metres[reading] = (_hand_millimetres(row), constructed)
-            del misread[reading]
-        elif constructed > 0.0 and in_centimetres(_hand_millimetres(row) / constructed):
-            centimetres[reading] = (_hand_millimetres(row), constructed)
+        typed = typed_unit(_hand_millimetres(row) / constructed) if constructed > 0.0 else None
+        if typed is not None:
+            typed_in[typed[0]][reading] = (_hand_millimetres(row), constructed)
             del misread[reading]
     force_scale = {}
     for reading, rows in list(misread.items()):
@@ -194,7 +192,8 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
                  MappingProxyType(named),
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
                                    for kind, (other, read) in other_plan.items()}),
-                 MappingProxyType(metres), MappingProxyType(centimetres), MappingProxyType(force_scale))
+                 MappingProxyType(typed_in["metres"]), MappingProxyType(typed_in["centimetres"]),
+                 MappingProxyType(force_scale))
 
 
 def _name(reading: str) -> str:

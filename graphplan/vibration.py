@@ -632,13 +632,13 @@ def damping_warning(spec: VibrationSpec) -> str | None:
     # one ratio that marks the edge of vibrating at all, so it is asked as ζ = 2, 5, 10 are.  Below 1 nothing is told:
     # 0.7 is an instrument's design damping and 0.2–0.4 a viscous damper's.  Between 1 and 2 (1.5) the over-critical
     # line alone: 1.5 % is as likely a slip as an over-damped dashpot, and the line already says ζ is over 1.
+    creeps = ("the machine would creep back to rest without vibrating, which no mount's damping does (a few "
+              "hundredths to a few tenths)")
     if zeta == 1:
-        return (f"vibration.damping_ratio: ζ = 1 is read as a ratio, critical damping: the machine would creep back to "
-                f"rest without vibrating, which no mount's damping does (a few hundredths to a few tenths); "
-                f"{percentage_question(zeta, 'ζ')}")
+        return f"vibration.damping_ratio: ζ = 1 is read as a ratio, critical damping: {creeps}; " \
+               f"{percentage_question(zeta, 'ζ')}"
     percentage = f"; {percentage_question(zeta, 'ζ')}" if zeta >= 2 else ""
-    return (f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1): the machine would creep back to rest "
-            f"without vibrating, which no mount's damping does (a few hundredths to a few tenths){percentage}")
+    return f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1): {creeps}{percentage}"
 
 
 def stiffness_warning(spec: VibrationSpec) -> str | None:
