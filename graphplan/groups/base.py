@@ -63,6 +63,10 @@ class Guide:
         return self.link is None
 
 
+# The guide a group's dataclass starts with before ``read`` puts the scene's in its place; frozen, so one serves all.
+UNREAD_GUIDE = Guide(where="")
+
+
 def read_guide(value: object, where: str) -> Guide:
     """A guide as the scene writes it: a frame line's name or a table."""
     if isinstance(value, str):

@@ -25,7 +25,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, angle_of, cross
 from ..plans import Builder, DrawnLine, LaidVector, Plan, Step
 from ..reader import Table
-from .base import SINGULAR_SINE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch
+from .base import SINGULAR_SINE, UNREAD_GUIDE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch
 from .sliding import (
     coriolis,
     coriolis_letter,
@@ -43,7 +43,7 @@ class PRP(Group):
     kind = "PRP"
     reach_ends = "its two guides run parallel"
     joint_roles = ("inner B",)
-    guide_pair: tuple[Guide, Guide] = (Guide(where=""), Guide(where=""))
+    guide_pair: tuple[Guide, Guide] = (UNREAD_GUIDE, UNREAD_GUIDE)
     offsets: tuple[float, float] = (0.0, 0.0)
 
     @classmethod

@@ -31,7 +31,7 @@ from ..geometry import Line
 from ..kinematics import LinkMotion, PointMotion, SlideMotion, TwoLines, cross, unit
 from ..plans import Builder, DrawnLine, LaidVector, LineMeaning, Plan, Step, image_name
 from ..reader import Table
-from .base import Context, Group, GroupMotion, Guide, read_guide, refuse_branch, turns
+from .base import UNREAD_GUIDE, Context, Group, GroupMotion, Guide, read_guide, refuse_branch, turns
 from .sliding import (
     coriolis,
     coriolis_letter,
@@ -49,7 +49,7 @@ _SPAN = 1e-6
 class RPP(Group):
     kind = "RPP"
     joint_roles = ("outer A (block, link a)", "B (link b, where its slot crosses the guide)")
-    guide: Guide = Guide(where="")
+    guide: Guide = UNREAD_GUIDE
     angle: float = math.pi / 2
 
     @classmethod

@@ -34,6 +34,7 @@ from ..kinematics import (
 from ..plans import Builder, Plan
 from ..reader import Table
 from .base import (
+    UNREAD_GUIDE,
     Context,
     Group,
     GroupMotion,
@@ -59,7 +60,7 @@ class RRP(Group):
     reach_ends = "the rod stands square to the guide"
     joint_roles = ("outer A (link a)", "inner B (slider, link b)")
     length: float = 0.0
-    guide: Guide = Guide(where="")
+    guide: Guide = UNREAD_GUIDE
     assembly: str | None = None
     near: tuple[float, float] | None = None
 
