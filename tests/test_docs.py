@@ -224,7 +224,8 @@ def named(name: str, names: set[str]) -> bool:
 
 
 # Keys under these are the scene's own names (points, links, reactions, plan letters), not the file's.
-NAMED_BY_THE_SCENE = {"points", "links", "reactions", "values", "points_mm", "polygon_scales", "loads", "offsets"}
+NAMED_BY_THE_SCENE = {"points", "links", "reactions", "values", "points_mm", "polygon_scales", "loads", "offsets",
+                      "same_as"}
 
 
 def keys_under(node, path=""):
@@ -243,8 +244,10 @@ def keys_under(node, path=""):
 def documented_runs(tmp_path_factory):
     """results.json of real runs that between them write every table the docs describe: the shaper starter (friction,
     the velocity plans of every position, a flywheel and a motor), the rotor starter on a shaft and a shaken floor
-    (its isolation in series with the shaft, the base's motion and both responses together) and a slider driver with
-    the report figures."""
+    (its isolation in series with the shaft, the base's motion and both responses together), a slider driver with
+    the report figures and an oscillating cylinder (its rod's ε the cylinder's: ``same_as``)."""
+    from scene_texts import oscillating_cylinder
+
     from graphplan.starters import starter
 
     folder = tmp_path_factory.mktemp("documented")
@@ -252,7 +255,8 @@ def documented_runs(tmp_path_factory):
                                       "shaft = { modulus = 2.1e11, diameter = 0.03, length = 0.8 }")
     rotor = rotor.replace("transmissibility = 0.2", "transmissibility = 0.2\nbase_amplitude = 0.0005")
     scenes = {"shaper": (starter("shaper"), "dynamics"), "rotor": (rotor, "balancing,vibration"),
-              "slider": ((ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8"), "forces,figures")}
+              "slider": ((ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8"), "forces,figures"),
+              "cylinder": (oscillating_cylinder(0.0), "errors")}
     runs = {}
     for name, (text, pieces) in scenes.items():
         scene = folder / f"{name}.toml"

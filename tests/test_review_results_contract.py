@@ -96,7 +96,7 @@ def code_spans_by_row() -> dict[str, list[tuple[list[str], list[str]]]]:
 # Objects whose keys are the scene's own names (points, links, reactions, the plans' letters and values, the groups'
 # labels, the friction pairs' loads), or the packages of `versions`: their keys are data, not the contract's words.
 NAMED_BY_THE_SCENE = {"points", "links", "reactions", "points_mm", "values", "polygon_scales", "offsets", "loads",
-                      "versions"}
+                      "versions", "same_as"}
 
 
 def key_paths(node, path: str = ""):
@@ -242,7 +242,8 @@ def test_every_position_holds_what_the_contract_promises(name):
         if "plans" in entry:
             assert set(entry["plans"]) == {"velocity", "acceleration"}
             for plan in entry["plans"].values():
-                assert set(plan) == {"scale", "points_mm", "values"} and plan["scale"] > 0
+                # same_as: where a link's ε is another's reading (an RPR's rod), beside the values.
+                assert set(plan) - {"same_as"} == {"scale", "points_mm", "values"} and plan["scale"] > 0
                 assert all(is_xy(mm) for mm in plan["points_mm"].values())
             assert ("forces" in entry) == forces
         if "forces" in entry:

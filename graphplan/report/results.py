@@ -19,6 +19,7 @@ import numpy as np
 
 from .. import __version__
 from ..analysis import Analysis, PlanPosition, VelocityPosition
+from ..check import epsilon_of_another
 from ..cycle_work import CycleWork
 from ..forces import Load
 from ..joint_friction import FrictionPair, friction_loads
@@ -219,16 +220,26 @@ def results_without_linkage(scene) -> dict[str, Any]:
 
 
 def _plans(plan: VelocityPosition) -> dict[str, Any]:
-    """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed."""
+    """``plans`` of one position: scale, the plan points in mm, the values read off the plan as constructed.
+
+    A link that turns with another (an RPR's rod in its cylinder) has no tangential component of its own on the
+    acceleration plan, yet a script reading its ε for the inertia loads looks for it under its own name: it is
+    written with the other's value, and ``same_as`` says whose reading it is.
+    """
     result = {}
     for kind, drawn in plan.plans.items():
         values = {reading.quantity: reading.value(plan.plans) for reading in plan.readings if reading.plan == kind}
+        same_as = {f"epsilon{link}": f"epsilon{other}" for link, other in
+                   sorted(epsilon_of_another(plan.plans, plan.readings).items())} if kind == "acceleration" else {}
+        values.update({quantity: values[other] for quantity, other in same_as.items()})
         points_mm = {letter: drawn.mm(letter) for letter in drawn.points}
         points_floor, values_floor = noise_floor(list(points_mm.values())), noise_floor(list(values.values()))
         result[kind] = {"scale": number(drawn.scale),
                         "points_mm": {letter: _pair(np.array([mm.real, mm.imag]), points_floor)
                                       for letter, mm in points_mm.items()},
                         "values": {quantity: number(value, values_floor) for quantity, value in values.items()}}
+        if same_as:
+            result[kind]["same_as"] = same_as
     return result
 
 
