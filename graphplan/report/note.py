@@ -40,7 +40,7 @@ import numpy as np
 from ..analysis import SCENE_WIDE_WARNINGS, Analysis, PlanPosition, VelocityPosition
 from ..check import Reading, epsilon_of_another, quantity_symbol
 from ..errors import SceneError
-from ..kinematics import cross
+from ..kinematics import at, cross
 from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
 from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
@@ -1204,14 +1204,22 @@ class _Note:
         """The plan's values beside the analytic solution, as constructed."""
         plan = pp.plans[kind]
         exact = {row.quantity: row.analytic for row in pp.errors if row.source == "construction"}
+        others = epsilon_of_another(pp.plans, pp.readings) if kind == "acceleration" else {}
         rows = []
         for reading in pp.readings:
             if reading.plan != kind:
                 continue
-            rows.append([quantity_symbol(reading.quantity), self.segment(plan, *reading.segment),
-                         self.on_plan(reading.millimetres(pp.plans)), self.n(reading.value(pp.plans)),
+            cells = [self.segment(plan, *reading.segment), self.on_plan(reading.millimetres(pp.plans)),
+                     self.n(reading.value(pp.plans))]
+            rows.append([quantity_symbol(reading.quantity), *cells,
                          self.n(exact[reading.quantity]) if reading.quantity in exact else "—",
                          unit_of(reading.quantity, self.text)])
+            # A link that turns with this one (an RPR's rod) has its ω row on the velocity plan; its ε is this
+            # reading, written as such under it, beside its own exact value, so that the table lists every link's ε.
+            for link in sorted(link for link, other in others.items() if f"epsilon{other}" == reading.quantity):
+                epsilon = float(at(self.analysis.motion.link(link).epsilon, pp.index))
+                rows.append([f"{quantity_symbol(f'epsilon{link}')} = {rows[-1][0]}", *cells, self.n(epsilon),
+                             unit_of(reading.quantity, self.text)])
         if not rows:
             return
         length = f"{self.t('column_length')}{self.text['comma']}{self.text['millimetre']}"
