@@ -635,72 +635,78 @@ class MachineDynamics:
         return text["angle_and_turned"].format(angle=crank, turned=turned, number=self.first_position)
 
     def stall_warning(self) -> str | None:
-        """One line for the command line when the motor cannot keep the machine turning."""
+        """One line for the command line when the motor cannot keep the machine turning; its numbers the note's
+        (:func:`~graphplan.render.numerals.number`), given ones as typed."""
         from .machine_motion import Stall
+        from .render.numerals import number
 
         motion = self.motion
         if motion is None or motion.stalled_at is None:
             return None
-        where = self.stall_place(strings("en"), lambda value: f"{value:.1f}")
+        where = self.stall_place(strings("en"), lambda value: number(value, 4))
+        stalled = number(motion.stalled_at, 4)
         # Where it stands at the end of the run: where it never started, where it stood from the start.
-        resisting = self.machine.mr(float(motion.phi[-1]), 0.0)
+        mr = self.machine.mr(float(motion.phi[-1]), 0.0)
+        resisting = number(mr)
         stall = motion.stall
         if stall is Stall.NEVER_STARTS_CLUTCH:
             return (f"dynamics: the machine does not start: at rest at φ = {where} the clutch, slipping at its "
-                    f"{motion.clutch.torque:g} N·m, does not overcome the resistance there, {resisting:.4g} N·m (a "
+                    f"{motion.clutch.torque:g} N·m, does not overcome the resistance there, {resisting} N·m (a "
                     "clutch of more torque)")
         if stall in (Stall.NEVER_STARTS, Stall.NEVER_STARTS_BRAKED):
             unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
-                       f"{motion.torque_at_rest:.4g} N·m, does not overcome the resistance there")
+                       f"{number(motion.torque_at_rest)} N·m, does not overcome the resistance there")
             if stall is Stall.NEVER_STARTS:
                 power = getattr(self.spec.motion.motor, "power", None)
                 # Kloss' torque grows with P: a motor a thousand times as strong that would start it is one whose
                 # power was typed in kW ("4 kW" as power = 4), the likelier slip than a 4 W motor on a press.
                 in_kilowatts = (f"; power = {power:g} W: kilowatts typed for watts? (the scene's power is in W, "
                                 f"{power:g} kW is power = {power * 1000:g})"
-                                if power is not None and power < 1000 and 1000 * motion.torque_at_rest > resisting
+                                if power is not None and power < 1000 and 1000 * motion.torque_at_rest > mr
                                 else "")
                 # At rest the shaft gets u·M(0): a ratio typed the wrong way up (the shaft's speed over the motor's)
                 # gives it u² of what 1/u would, and is asked about where 1/u would start the machine.
                 u = self.spec.motion.motor.gear_ratio
                 inverted = (f"; gear_ratio = {u:g} turns the shaft faster than the motor: the ratio inverted? (it is "
                             f"the motor's speed over the shaft's: 1/{u:g} = {1 / u:.4g})"
-                            if u < 1 and motion.torque_at_rest / u ** 2 > resisting else "")
-                return (f"{unmoved}, {resisting:.4g} N·m (a stronger motor, a larger gear ratio, or a start from "
+                            if u < 1 and motion.torque_at_rest / u ** 2 > mr else "")
+                return (f"{unmoved}, {resisting} N·m (a stronger motor, a larger gear ratio, or a start from "
                         f"another angle){in_kilowatts}{inverted}")
             held = motion.brake.torque
-            return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting:.4g} + "
-                    f"{held:g} = {resisting + held:.4g} N·m: the brake's torque (dynamics.brake.torque) holds the "
+            return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting} + "
+                    f"{held:g} = {number(mr + held)} N·m: the brake's torque (dynamics.brake.torque) holds the "
                     "machine from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
         if stall is Stall.CLUTCH:
-            return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: the clutch, "
+            return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: the clutch, "
                     f"slipping at its {motion.clutch.torque:g} N·m, cannot carry it past the resistance "
-                    f"there, {resisting:.4g} N·m (a clutch of more torque)")
+                    f"there, {resisting} N·m (a clutch of more torque)")
         if stall is Stall.BRAKE_CLUTCH:
             return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
-                    f"at t = {motion.stalled_at:.4g} s, φ = {where}, where the clutch, slipping at its "
+                    f"at t = {stalled} s, φ = {where}, where the clutch, slipping at its "
                     f"{motion.clutch.torque:g} N·m, cannot turn it against the brake's {motion.brake.torque:g} N·m "
-                    f"and the resistance there, {resisting:.4g} N·m (a smaller dynamics.brake.torque keeps it "
+                    f"and the resistance there, {resisting} N·m (a smaller dynamics.brake.torque keeps it "
                     "turning; dynamics.motor.off_at switches the motor off to stop it)")
         if stall is Stall.BRAKE:
             return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
-                    f"at t = {motion.stalled_at:.4g} s, φ = {where}, and the motor stalls: it cannot turn the machine "
-                    f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting:.4g} N·m "
+                    f"at t = {stalled} s, φ = {where}, and the motor stalls: it cannot turn the machine "
+                    f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting} N·m "
                     "(a smaller dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off "
                     "to stop it)")
-        return (f"dynamics: the machine stalls at t = {motion.stalled_at:.4g} s, φ = {where}: "
+        return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: "
                 f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
                 f"or a start unloaded through a clutch)")
 
     def slipping_warning(self) -> str | None:
         """One line for the command line when the clutch slips in every steady turn: it cannot pass the peaks of
         the resistance, and wears for as long as the machine runs."""
+        from .render.numerals import number
+
         motion = self.motion
         if motion is None or not motion.steady_slip_energy:
             return None
-        return (f"dynamics: the clutch slips in every steady turn, losing {motion.steady_slip_energy:.4g} J a turn "
-                f"({motion.steady_slip_power:.4g} W): its {self.spec.motion.clutch.torque:g} N·m cannot pass the resistance's peaks "
-                "(a clutch of more torque)")
+        return (f"dynamics: the clutch slips in every steady turn, losing {number(motion.steady_slip_energy)} J a turn "
+                f"({number(motion.steady_slip_power)} W): its {self.spec.motion.clutch.torque:g} N·m cannot pass the "
+                "resistance's peaks (a clutch of more torque)")
 
     def unsettled_warning(self) -> str | None:
         """One line for the command line when a run with the motor on ends short of a steady state: the results
@@ -717,10 +723,13 @@ class MachineDynamics:
         head = f"dynamics: no steady state within the run, t = {end:.4g} s ({limit}): "
         runaway = self.runaway()
         if runaway is not None:
+            from .render.numerals import number
+
+            # The torques as the note's runaway line writes them.
             return (head + f"the machine speeds up without end, at ω = {speed:.4g} rad/s by then: the motor's torque on "
-                    f"the shaft, {runaway[0]:.6g} N·m, exceeds the mean resistance, {runaway[1]:.6g} N·m, at every "
-                    "speed, so no duration reaches a steady state (more resistance, or a motor whose torque falls "
-                    "with speed: linear, kloss)")
+                    f"the shaft, {number(runaway[0])} N·m, exceeds the mean resistance, {number(runaway[1])} N·m, at "
+                    "every speed, so no duration reaches a steady state (more resistance, or a motor whose torque "
+                    "falls with speed: linear, kloss)")
         return (head + f"the machine is still {'speeding up' if self.speeding_up() else 'slowing down'} at "
                 f"ω = {speed:.4g} rad/s, so the results have no ωm, δ or start-up time; a longer [dynamics] "
                 "duration (s) runs it on")
@@ -749,16 +758,22 @@ class MachineDynamics:
 
     def off_design_warning(self) -> str | None:
         """One line for the command line when the motor settles the machine away from the speed its flywheel
-        was sized at (more than :data:`OFF_DESIGN` apart): δ then differs from the one asked for."""
+        was sized at (more than :data:`OFF_DESIGN` apart): δ then differs from the one asked for.  The speeds and δ
+        are written as the note writes them (ωm = 10.210, δ = 0.02350): the console's 10.21 beside the note's 10.210
+        read as two numbers."""
         motion, flywheel = self.motion, self.flywheel
         if motion is None or motion.steady is None or flywheel is None or flywheel.inertia <= 0:
             return None
         settled, sized = motion.steady.mean_speed, flywheel.omega_mean
         if abs(settled - sized) <= OFF_DESIGN * sized:
             return None
-        return (f"dynamics: the motor runs the machine at ωm = {settled:.4g} rad/s, {abs(settled / sized - 1):.0%} "
-                f"off the {sized:.4g} rad/s its flywheel was sized at for δ = {flywheel.delta:g}; steady, δ = "
-                f"{motion.steady.cycle.delta:.4g} (a motor, gear ratio or speed that agree with each other)")
+        from .render.dynamics import flywheel_numbers
+        from .render.numerals import steady_delta, worked_out
+
+        return (f"dynamics: the motor runs the machine at ωm = {worked_out(settled)} rad/s, "
+                f"{abs(settled / sized - 1):.0%} off the {flywheel_numbers(self.model, flywheel).omega_mean} rad/s its "
+                f"flywheel was sized at for δ = {flywheel.delta:g}; steady, δ = "
+                f"{steady_delta(motion.steady.cycle.delta)} (a motor, gear ratio or speed that agree with each other)")
 
 
 # The share by which the steady speed may differ from the one the flywheel was sized at before a run warns.

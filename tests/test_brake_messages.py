@@ -103,7 +103,7 @@ def test_a_brake_that_stops_the_machine_against_its_slipping_clutch_is_named_for
     told = _warning(capsys)
     stop, angle = 0.5 + 2.5 / 15.0, math.degrees(0.625 + 2.5 ** 2 / 30.0)
     assert told == (f"warning: dynamics: the brake applied at t = 0.5 s brings the machine to rest at t = {stop:.4g} "
-                    f"s, φ = {angle:.1f}°, where the clutch, slipping at its 60 N·m, cannot turn it against the "
+                    f"s, φ = {angle:.4g}°, where the clutch, slipping at its 60 N·m, cannot turn it against the "
                     "brake's 40 N·m and the resistance there, 50 N·m (a smaller dynamics.brake.torque keeps it "
                     "turning; dynamics.motor.off_at switches the motor off to stop it)")
     assert sentence in (tmp_path / "out" / "note.md").read_text(encoding="utf-8")

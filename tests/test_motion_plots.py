@@ -274,7 +274,7 @@ def test_a_clutch_slipping_with_the_shaft_never_turned_is_told_the_machine_does_
     stalled, coming to rest at t = 0, where it never moved."""
     clutch, resisting = 30.0, 50.0
     told, note = held_by_clutch(tmp_path, capsys, clutch, brake)
-    assert told == (f"warning: dynamics: the machine does not start: at rest at φ = 0.0° the clutch, slipping at its "
+    assert told == (f"warning: dynamics: the machine does not start: at rest at φ = 0° the clutch, slipping at its "
                     f"{clutch:g} N·m, does not overcome the resistance there, {resisting:g} N·m (a clutch of more "
                     "torque)")
     text = strings("en")
@@ -288,7 +288,7 @@ def test_a_clutch_that_would_start_the_machine_but_for_the_brake_on_from_the_sta
     and holds it.  The warning and the note said the clutch's 60 N·m could not pass 50 N·m and advised a larger
     clutch."""
     told, note = held_by_clutch(tmp_path, capsys, 60.0, "brake = { torque = 40 }\n")
-    assert told == ("warning: dynamics: the machine does not start: at rest at φ = 0.0° the driving torque, 60 N·m, "
+    assert told == ("warning: dynamics: the machine does not start: at rest at φ = 0° the driving torque, 60 N·m, "
                     "does not overcome the resistance there and the brake applied at t = 0 s, 50 + 40 = 90 N·m: the "
                     "brake's torque (dynamics.brake.torque) holds the machine from the start (a later "
                     "dynamics.brake.at, after the start-up, or a smaller brake torque)")

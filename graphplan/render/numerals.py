@@ -37,6 +37,29 @@ def significant(value: float, digits: int = 4) -> str:
     return text.replace("-", "−") if text.strip("-0.") else "0"
 
 
+def number(value: float, digits: int = 5, mark: str = ".") -> str:
+    """``value`` to ``digits`` significant digits with a true minus sign and the locale's decimal mark.
+
+    A value of :data:`ROUNDING_NOISE` or less is 0; others are written without an exponent: one of
+    ``digits`` places before the point or more whole (868600, not 8.686e+05), a small one in decimals
+    (0.000036362, not 3.6362e−05), one of 10⁹ or more as a power of ten (2.1·10¹¹).  The note's numbers, and the
+    command line's where a warning writes a quantity the note writes too: a reader sees one number in both.
+    """
+    if not math.isfinite(value):
+        return "—"
+    if abs(value) < ROUNDING_NOISE:
+        return "0"
+    text = f"{value:.{digits}g}"
+    if abs(float(text)) >= POWER_OF_TEN:
+        return power_of_ten(value, digits).replace(".", mark)
+    if "e+" in text:
+        text = f"{float(text):.0f}"
+    elif "e-" in text:
+        text = f"{float(text):.{digits - 1 - math.floor(math.log10(abs(float(text))))}f}".rstrip("0")
+    text = "0" if text in ("-0", "0") else text.replace("-", "−")
+    return text.replace(".", mark)
+
+
 def worked_out(value: float, digits: int = 5) -> str:
     """A result worked out to ``digits`` significant digits, its trailing noughts kept; rounding noise
     (:data:`~graphplan.rounding.ROUNDING_NOISE`) is 0 and a value that is not a number a dash, as the note writes them.
@@ -48,6 +71,13 @@ def worked_out(value: float, digits: int = 5) -> str:
     if not math.isfinite(value):
         return "—"
     return "0" if abs(value) < ROUNDING_NOISE else significant(value, digits)
+
+
+def steady_delta(delta: float) -> str:
+    """The δ = (ωmax − ωmin)/ωm of an integrated steady run as the note, the motion plot and the command line write
+    it: four significant digits, the simulation's, noughts kept (0.02350, where 0.0235 reads as known to a digit
+    less)."""
+    return worked_out(delta, 4)
 
 
 def angle_in_turn(angle_deg: float) -> str:

@@ -30,37 +30,13 @@ from ..forces import ForcePlan, GroupForces, MomentEquation
 from ..joint_friction import FrictionPair, pair_name
 from ..loads import motion_state
 from ..locale import Count, strings
-from ..render.numerals import POWER_OF_TEN, power_of_ten
+from ..render.numerals import number
 from ..rounding import ROUNDING_NOISE
 from ..statics import balancing_by_power, delivers_power, efficiency, rounded_zero, turned_round
 from .markdown import literal
 
 # A rate or a load this small against the largest of its kind is the plan's rounding, not a value.
 ROUNDING = 1e-12
-
-
-
-
-def number(value: float, digits: int = 5, mark: str = ".") -> str:
-    """``value`` to ``digits`` significant digits with a true minus sign and the locale's decimal mark.
-
-    A value of :data:`ROUNDING_NOISE` or less is 0; others are written without an exponent: one of
-    ``digits`` places before the point or more whole (868600, not 8.686e+05), a small one in decimals
-    (0.000036362, not 3.6362e−05), one of 10⁹ or more as a power of ten (2.1·10¹¹).
-    """
-    if not math.isfinite(value):
-        return "—"
-    if abs(value) < ROUNDING_NOISE:
-        return "0"
-    text = f"{value:.{digits}g}"
-    if abs(float(text)) >= POWER_OF_TEN:
-        return power_of_ten(value, digits).replace(".", mark)
-    if "e+" in text:
-        text = f"{float(text):.0f}"
-    elif "e-" in text:
-        text = f"{float(text):.{digits - 1 - math.floor(math.log10(abs(float(text))))}f}".rstrip("0")
-    text = "0" if text in ("-0", "0") else text.replace("-", "−")
-    return text.replace(".", mark)
 
 
 def polar(force: complex, mark: str = ".") -> str:

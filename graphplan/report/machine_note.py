@@ -18,7 +18,7 @@ import numpy as np
 
 from ..loads import external_names
 from ..locale import Count
-from ..render.numerals import angle_in_turn, power_of_ten, worked_out
+from ..render.numerals import angle_in_turn, power_of_ten, steady_delta, worked_out
 from ..units import RPM
 from .markdown import literal
 
@@ -214,7 +214,7 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
     speeds = {name: worked_out(speed).replace(".", note.mark) for name, speed in
               (("mean", steady.mean_speed), ("high", cycle.max_speed), ("low", cycle.min_speed),
                ("middle", cycle.middle_speed))}
-    reached = worked_out(cycle.delta, 4).replace(".", note.mark)
+    reached = steady_delta(cycle.delta).replace(".", note.mark)
     note.para(note.t("note_dyn_steady", start_up=note.n(motion.start_up_time(5.0), 4), after=note.n(steady.reached_at, 4),
                      delta=reached, **speeds))
     if flywheel is not None and flywheel.inertia > 0:

@@ -18,7 +18,7 @@ import numpy as np
 
 from ..locale import Count
 from ..machine_motion import MachineMotion
-from ..render.numerals import worked_out
+from ..render.numerals import steady_delta, worked_out
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
 from .forces import number
@@ -244,7 +244,7 @@ def _steady_turn(plot, motion: MachineMotion, text: Mapping[str, str],
     state = motion.state_at(times)
     angles, speeds = _within_turn(np.degrees(state[0]), state[1])
     plot.plot(angles, speeds, color=_SHAFT, linewidth=1.1,
-              label=text["motion_integrated"].format(delta=_worked_out(cycle.delta, mark, 4)))
+              label=text["motion_integrated"].format(delta=steady_delta(cycle.delta).replace(".", mark)))
     if flywheel is not None:
         along, omega = flywheel
         estimate = (float(np.max(omega)) - float(np.min(omega))) / (0.5 * (float(np.max(omega)) + float(np.min(omega))))
@@ -334,10 +334,10 @@ def _stall(plot, motion: MachineMotion, text: Mapping[str, str], resisting: tupl
     plot.grid(True, linewidth=0.3)
 
 
-def _worked_out(value: float, mark: str, digits: int = 5) -> str:
-    """A speed or δ of the steady run as the note writes it (its noughts kept: ωmin = 10.210, δ = 0.02350), with the
-    locale's mark: the legend wrote four digits, 10.21, beside the note's 10.210."""
-    return worked_out(value, digits).replace(".", mark)
+def _worked_out(value: float, mark: str) -> str:
+    """A speed of the steady run as the note writes it (its noughts kept: ωmin = 10.210), with the locale's mark: the
+    legend wrote four digits, 10.21, beside the note's 10.210."""
+    return worked_out(value).replace(".", mark)
 
 
 __all__ = ["motion_figure", "motion_plot"]
