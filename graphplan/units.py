@@ -28,8 +28,10 @@ MIXED_RATIO = 200.0
 
 def percentage_question(value: float, symbol: str) -> str:
     """The question a refusal or a warning asks of a fraction typed as its percentage (δ = 5 for 5 %), with the
-    fraction that percentage is."""
-    return f"a percentage typed for a fraction? ({value:g} % is {symbol} = {value / 100:g})"
+    fraction that percentage is.  Its words are the locale's, which the note asks it in too (a damping ratio of 1)."""
+    from .locale import strings
+
+    return strings("en")["percentage_question"].format(value=f"{value:g}", symbol=symbol, fraction=f"{value / 100:g}")
 
 
 def millimetres_question(*, some: bool = False, second_moment: bool = False) -> str:

@@ -28,6 +28,7 @@ together and return a float for scalars and an array otherwise.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -620,25 +621,39 @@ def isolation_warning(spec: VibrationSpec) -> str | None:
     return None if found is None else f"vibration: {found.detail}"
 
 
-def damping_warning(spec: VibrationSpec) -> str | None:
-    """The command line's line for a ``damping_ratio`` of 1 or above, else None: critical or over-critical damping
-    lets a mount creep back with no vibration at all, which no machine's mount does (they damp at a few hundredths
-    to a few tenths), so such a ζ is rather a percentage typed for a fraction, as ``f`` and ``delta`` are told."""
+def unlikely_damping(spec: VibrationSpec) -> float | None:
+    """The ``damping_ratio`` ζ where it is 1 or above, else None: critical or over-critical damping lets a mount creep
+    back with no vibration at all, which no machine's mount does (they damp at a few hundredths to a few tenths), so
+    such a ζ is rather a percentage typed for a fraction, as ``f`` and ``delta`` are told.  A damping c given in N·s/m
+    is no ratio to mistype."""
     zeta = spec.damping_ratio
-    if spec.damping is not None or not zeta >= 1:
-        return None
+    return zeta if spec.damping is None and zeta >= 1 else None
+
+
+def damping_words(zeta: float, text: Mapping[str, str], written: Callable[[float], str]) -> str:
+    """What the command line and the note say of an :func:`unlikely_damping` ζ, in ``text``'s language, its numbers
+    as ``written`` writes them: one source of the words for both."""
     # ζ = 1 exactly is critical damping, which a mount reaches only by design (an instrument's or a door closer's
     # dashpot, and those are tuned to some 0.6–0.7, the flattest response): typed as 1 it is far likelier 1 % than the
     # one ratio that marks the edge of vibrating at all, so it is asked as ζ = 2, 5, 10 are.  Below 1 nothing is told:
     # 0.7 is an instrument's design damping and 0.2–0.4 a viscous damper's.  Between 1 and 2 (1.5) the over-critical
     # line alone: 1.5 % is as likely a slip as an over-damped dashpot, and the line already says ζ is over 1.
-    creeps = ("the machine would creep back to rest without vibrating, which no mount's damping does (a few "
-              "hundredths to a few tenths)")
+    creeps = text["note_vib_damping_creeps"]
+    question = text["percentage_question"].format(value=written(zeta), symbol="ζ", fraction=written(zeta / 100))
     if zeta == 1:
-        return f"vibration.damping_ratio: ζ = 1 is read as a ratio, critical damping: {creeps}; " \
-               f"{percentage_question(zeta, 'ζ')}"
-    percentage = f"; {percentage_question(zeta, 'ζ')}" if zeta >= 2 else ""
-    return f"vibration.damping_ratio: ζ = {zeta:g} is over-critical (above 1): {creeps}{percentage}"
+        return text["note_vib_damping_critical"].format(zeta=written(zeta), creeps=creeps, question=question)
+    asked = text["semicolon"] + question if zeta >= 2 else ""
+    return text["note_vib_damping_over_critical"].format(zeta=written(zeta), creeps=creeps, question=asked)
+
+
+def damping_warning(spec: VibrationSpec) -> str | None:
+    """The command line's line for an :func:`unlikely_damping` ζ, else None."""
+    zeta = unlikely_damping(spec)
+    if zeta is None:
+        return None
+    from .locale import strings
+
+    return "vibration.damping_ratio: " + damping_words(zeta, strings("en"), lambda value: f"{value:g}")
 
 
 def stiffness_warning(spec: VibrationSpec) -> str | None:
@@ -971,6 +986,7 @@ __all__ = [
     "damping_from_resonance",
     "damping_ratio",
     "damping_warning",
+    "damping_words",
     "displacement_transmissibility",
     "displacement_transmissibility_phase",
     "force_magnification",
@@ -993,5 +1009,6 @@ __all__ = [
     "stiffness_warning",
     "transmissibility",
     "unbalance_magnification",
+    "unlikely_damping",
     "vibration_results",
 ]

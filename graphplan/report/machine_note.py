@@ -568,7 +568,15 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
 
     Each operand is written to as many digits as make the written operands give the written result
     (:func:`shown_operand`); a value used in several equations is written one way in all of them."""
-    from ..vibration import damping_ratio, lengths_in_millimetres, mounts_sag, near_resonance, speed_in_rpm
+    from ..vibration import (
+        damping_ratio,
+        damping_words,
+        lengths_in_millimetres,
+        mounts_sag,
+        near_resonance,
+        speed_in_rpm,
+        unlikely_damping,
+    )
     from .vibration_plots import words_for
 
     # What excites the machine names the section: a machine on a moving base has no rotating unbalance to speak of.
@@ -599,6 +607,10 @@ def vibration_section(note: Writer, section: int, spec: VibrationSpec, response:
         # The file outlives the console: every amplitude and force below follows a speed ten times too high.
         note.para(note.t("note_vib_caution_speed_in_rpm", omega=omega, rpm=note.n(spec.omega / RPM),
                          meant=note.n(spec.omega * RPM)))
+    if (unlikely := unlikely_damping(spec)) is not None:
+        # The file outlives the console, in the console's words: ζ = 1 read as critical damping (1 % meant?) or ζ
+        # over 1 shapes every amplitude and force below, as the ζ of the sentence above.
+        note.para(note.t("note_vib_caution_damping", words=damping_words(unlikely, note.text, note.n)))
     # The unbalance and a moving base excite one linear system: each is worked out alone, then the two added.
     both = response.combined
     base_text = "" if response.base is None else note.n(response.base.base_amplitude)
