@@ -1,0 +1,160 @@
+"""The command line's warnings write a quantity as the note writes it, so that a user comparing them sees one number.
+
+The dynamics' warnings printed speeds and δ to four digits (ωm = 11.74, φ = 47.7°, 245.789 N·m) beside the note's
+11.745, 47.75° and 245.79; a damping ratio of 1 (1 % meant?) or above was told on the command line only, and the note,
+which outlives it, worked every amplitude out of it without a word.  Each number is checked against the note's and
+against a calculation of its own.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+from scipy.optimize import brentq
+
+from graphplan.cli import main
+
+RPM = 2.0 * math.pi / 60.0
+# The flywheel starter's press: 367.7 W idling for a third of the turn, 3677 W punching for two thirds, at 100 rpm.
+MEAN_RESISTANCE = (367.7 * 120.0 + 3677.0 * 240.0) / 360.0 / (100.0 * RPM)
+
+
+def _printed(capsys) -> str:
+    printed = capsys.readouterr()
+    return printed.out + printed.err
+
+
+def _warning(printed: str, start: str) -> str:
+    return next(line for line in printed.splitlines() if line.startswith(f"warning: {start}"))
+
+
+def _four_digits_kept(value: float) -> str:
+    """``value`` to four significant digits, its trailing noughts kept (0.02350)."""
+    return f"{value:.{3 - math.floor(math.log10(abs(value)))}f}"
+
+
+def _flywheel_scene(tmp_path: Path, old: str, new: str) -> Path:
+    """The flywheel starter as ``graphplan new`` writes it, ``old`` (a pattern of a line) made ``new``."""
+    scene = tmp_path / "press.toml"
+    assert main(["new", "flywheel", "--out", str(scene)]) == 0
+    text, count = re.subn(old, new, scene.read_text(encoding="utf-8"), count=1, flags=re.MULTILINE)
+    assert count == 1
+    scene.write_text(text, encoding="utf-8")
+    return scene
+
+
+def _kloss_steady_speed(gear_ratio: float) -> float:
+    """The shaft's speed where the starter's Kloss motor (4 kW, λ = 2.2, 1500/1440 rpm) through ``gear_ratio`` gives
+    the press's mean resistance: u·M(s) = Mr with M(s) = 2·Mmax/(s/sk + sk/s), by hand."""
+    synchronous, rated = 1500.0 * RPM, 1440.0 * RPM
+    overload, rated_slip = 2.2, 1.0 - rated / synchronous
+    most = overload * 4000.0 / rated
+    critical = rated_slip * (overload + math.sqrt(overload ** 2 - 1.0))
+
+    def surplus(omega: float) -> float:
+        slip = 1.0 - gear_ratio * omega / synchronous
+        return gear_ratio * 2.0 * most / (slip / critical + critical / slip) - MEAN_RESISTANCE
+
+    top = synchronous / gear_ratio
+    return brentq(surplus, 0.5 * top, top * (1.0 - 1e-9))
+
+
+def test_the_off_design_warning_writes_the_steady_speed_and_delta_as_the_note(tmp_path, capsys):
+    """Through 13:1 in place of 14.4:1 the motor settles the press at some 11.75 rad/s, 12 % above the 100 rpm its
+    flywheel was sized at: the warning wrote ωm = 11.74 and 10.47 rad/s beside the note's 11.745 and 10.472."""
+    scene = _flywheel_scene(tmp_path, r"gear_ratio = 14\.4", "gear_ratio = 13.0")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+    line = _warning(_printed(capsys), "dynamics: the motor runs the machine at")
+    settled, off, sized, steady = re.search(r"ωm = ([\d.]+) rad/s, (\d+)% off the ([\d.]+) rad/s its flywheel was "
+                                            r"sized at for δ = 0\.05; steady, δ = ([\d.]+) ", line).groups()
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert f"mean speed in time 2π/T = {settled} rad/s" in note
+    assert f"δ = (ωmax − ωmin)/ωm = {steady}." in note
+    assert f"the integration gives {steady}," in note
+    assert f"ωm = {sized} rad/s (100 rpm)" in note
+    # Five significant digits as the note writes a speed worked out; the speed the flywheel was sized at, 100 rpm.
+    assert len(settled.replace(".", "").lstrip("0")) == 5
+    assert float(settled) == pytest.approx(_kloss_steady_speed(13.0), rel=1e-3)
+    assert sized == f"{100.0 * RPM:.5g}"
+    assert int(off) == round(100 * (float(settled) / float(sized) - 1))
+    # δ = (ωmax − ωmin)/ωm with the textbook's ωm = (ωmax + ωmin)/2, from the run's speeds in results.json.
+    motion = json.loads((out / "results.json").read_text(encoding="utf-8"))["dynamics"]["motion"]
+    high, low = motion["omega_max"], motion["omega_min"]
+    assert steady == _four_digits_kept((high - low) / ((high + low) / 2.0))
+
+
+def test_the_runaway_warning_writes_the_torques_as_the_note(tmp_path, capsys):
+    """A constant 18 N·m through 14.4:1, 259.2 N·m on the shaft, against the press's mean 245.79 N·m: the warning
+    wrote 245.789 beside the note's 245.79."""
+    scene = _flywheel_scene(tmp_path, r"^motor = .*$", 'motor = { kind = "constant", torque = 18.0, gear_ratio = 14.4 }'
+                            "\nduration = 5.0")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+    line = _warning(_printed(capsys), "dynamics: no steady state within the run")
+    torque, resisting = re.search(r"the motor's torque on the shaft, ([\d.]+) N·m, exceeds the mean resistance, "
+                                  r"([\d.]+) N·m", line).groups()
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert f"Md = {torque} N·m, exceeds the mean resistance, {resisting} N·m" in note
+    assert (torque, resisting) == (f"{18.0 * 14.4:.5g}", f"{MEAN_RESISTANCE:.5g}")
+
+
+def test_the_stall_warning_writes_the_time_and_angle_as_the_note(tmp_path, capsys):
+    """2 kg·m² behind a 60 N·m clutch against 50 N·m runs at 2.5 rad/s by 0.5 s, 0.625 rad on; a 40 N·m brake then
+    stops it at (60 − 90)/2 = −15 rad/s², at 0.5 + 2.5/15 = 0.6667 s, 0.625 + 2.5²/30 rad = 47.746° on: the warning
+    wrote φ = 47.7° beside the note's 47.75°."""
+    scene = tmp_path / "held.toml"
+    scene.write_text('[scene]\ntitle = "clutched"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+                     'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }\nclutch = { torque = 60.0 }\n'
+                     "duration = 2.0\nresisting_torque = [[0, 50], [360, 50]]\nbrake = { torque = 40.0, at = 0.5 }\n",
+                     encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    line = _warning(_printed(capsys), "dynamics: the brake applied")
+    time, angle = re.search(r"to rest at t = ([\d.]+) s, φ = ([\d.]+)°", line).groups()
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert f"brings it to rest at t = {time} s at φ = {angle}°" in note
+    assert time == f"{0.5 + 2.5 / 15.0:.4g}"
+    assert angle == f"{math.degrees(0.625 + 2.5 ** 2 / 30.0):.4g}"
+
+
+def _rotor_note(tmp_path: Path, zeta: str, locale: str, capsys) -> tuple[str, str]:
+    scene = tmp_path / f"rotor_{zeta}_{locale}.toml"
+    assert main(["new", "rotor", "--out", str(scene)]) == 0
+    text = scene.read_text(encoding="utf-8")
+    assert "damping_ratio = 0.1 " in text
+    scene.write_text(text.replace("damping_ratio = 0.1 ", f"damping_ratio = {zeta} ", 1), encoding="utf-8")
+    _printed(capsys)
+    out = tmp_path / f"out_{locale}"
+    assert main(["run", str(scene), "--locale", locale, "--out", str(out), "--only", "vibration,note"]) == 0
+    return _printed(capsys), (out / "note.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(("locale", "asked"), [
+    ("en", "Caution: ζ = 1 is read as a ratio, critical damping: the machine would creep back to rest"),
+    ("ru", "Внимание: ζ = 1 понимается как относительный коэффициент демпфирования, а это критическое демпфирование"),
+    ("zh", "注意：ζ = 1 按阻尼比理解，即临界阻尼"),
+])
+def test_a_damping_ratio_of_one_is_asked_about_in_the_note_too(tmp_path, capsys, locale, asked):
+    """ζ = 1, critical damping, which no mount has: 1 % (ζ = 1/100 = 0.01) meant?  The console asked; the note
+    said nothing."""
+    printed, note = _rotor_note(tmp_path, "1", locale, capsys)
+    line = _warning(printed, "vibration.damping_ratio: ")
+    fraction = f"{1 / 100:g}".replace(".", "," if locale == "ru" else ".")
+    paragraph = next(para for para in note.split("\n\n") if para.startswith(asked))
+    assert f"1 % {({'en': 'is', 'ru': '— это', 'zh': '即'})[locale]} ζ = {fraction}" in paragraph
+    if locale == "en":   # the console's words, after its key path
+        assert paragraph == f"Caution: {line.removeprefix('warning: vibration.damping_ratio: ')}."
+
+
+def test_an_over_critical_damping_ratio_is_told_in_the_note_and_a_real_one_is_not(tmp_path, capsys):
+    printed, note = _rotor_note(tmp_path, "1.5", "en", capsys)
+    line = _warning(printed, "vibration.damping_ratio: ")
+    assert f"Caution: {line.removeprefix('warning: vibration.damping_ratio: ')}." in note.split("\n\n")
+    assert "percentage" not in line
+    printed, note = _rotor_note(tmp_path, "0.7", "en", capsys)
+    assert "vibration.damping_ratio" not in printed and "creep back" not in note
