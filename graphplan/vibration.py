@@ -37,6 +37,7 @@ from numpy.typing import ArrayLike
 
 from .errors import SceneError
 from .reader import Table, check_choice
+from .render.numerals import number
 from .rotor_lengths import (
     FASTEST_BASE_M_S,
     LARGEST_RADIUS_M,
@@ -388,17 +389,19 @@ class NearResonance:
         at = f"{self.ratio:.6g}" == "1"
         if self.zeta > 0:
             # On a moving base X is not the magnification times m·e/M: the base's motion is in it.
-            times = (f", the magnification {self.magnification:.4g}" if self.base_moves
-                     else f" is {self.magnification:.4g} times m·e/M")
+            times = (f", the magnification {number(self.magnification)}" if self.base_moves
+                     else f" is {number(self.magnification)} times m·e/M")
             where = ("ω at the natural frequency (r = 1): the machine runs at resonance" if at
                      else f"ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g})")
-            return (f"{where} with little damping (ζ = {self.zeta:.3g}): the amplitude X = {self.amplitude:.4g} "
-                    f"m{times}; run the machine {'away from' if at else 'farther from'} resonance or damp it more")
+            return (f"{where} with little damping (ζ = {number(self.zeta)}): the amplitude X = "
+                    f"{number(self.amplitude)} m{times}; run the machine {'away from' if at else 'farther from'} "
+                    "resonance or damp it more")
         if at:
             return (f"no damping and ω at the natural frequency to six digits (r = 1): the machine runs at resonance, "
-                    f"and the amplitude X = {self.amplitude:.4g} m hangs on how near; give damping_ratio or damping")
+                    f"and the amplitude X = {number(self.amplitude)} m hangs on how near; give damping_ratio or "
+                    "damping")
         return (f"no damping and ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}): the amplitude "
-                f"X = {self.amplitude:.4g} m grows without bound nearer it; give damping_ratio or damping")
+                f"X = {number(self.amplitude)} m grows without bound nearer it; give damping_ratio or damping")
 
     def _instrument_detail(self) -> str:
         """The warning of an instrument shaken near its resonance: the base's frequency, not a speed it runs at, is
@@ -408,11 +411,11 @@ class NearResonance:
                  "the instrument is shaken at resonance" if at else
                  f"the base's ω within {abs(self.ratio - 1.0):.2g} of the natural frequency (r = {self.ratio:.6g})")
         if self.zeta > 0:
-            return (f"{where} with little damping (ζ = {self.zeta:.3g}): the instrument moves X = "
-                    f"{self.amplitude:.4g} m, {self.transmissibility:.4g} times the base's Y; mount it with its natural "
-                    "frequency farther from the base's (softer mounts) or damp the mounts more")
+            return (f"{where} with little damping (ζ = {number(self.zeta)}): the instrument moves X = "
+                    f"{number(self.amplitude)} m, {number(self.transmissibility)} times the base's Y; mount it with "
+                    "its natural frequency farther from the base's (softer mounts) or damp the mounts more")
         grows = "hangs on how near" if at else "grows without bound nearer it"
-        return (f"no damping and {where}: the instrument's amplitude X = {self.amplitude:.4g} m {grows}; give "
+        return (f"no damping and {where}: the instrument's amplitude X = {number(self.amplitude)} m {grows}; give "
                 "damping_ratio or damping")
 
 
@@ -449,27 +452,30 @@ class MountsSag:
         """The warning in a line (English, as the command line prints it)."""
         limit = f"{MOST_MOUNT_SAG * 1000:g} mm"
         if self.shaft_sag > 0:
-            line = (f"the mounts under the shaft's bearings, k_m = {self.stiffness:.4g} N/m at the disc, would sag by "
-                    f"M·g/k_m = {self.sag:.3g} m under the rotor's weight, more than any spring mount ({limit}); "
-                    f"the sag is g·r²/ω² less the shaft's own bending M·g/k_s = {self.shaft_sag:.3g} m, and ")
+            line = (f"the mounts under the shaft's bearings, k_m = {number(self.stiffness)} N/m at the disc, would sag "
+                    f"by M·g/k_m = {number(self.sag, 3)} m under the rotor's weight, more than any spring mount "
+                    f"({limit}); the sag is g·r²/ω² less the shaft's own bending M·g/k_s = {number(self.shaft_sag, 3)} "
+                    "m, and ")
         else:
-            line = (f"the isolating mounts, k = {self.stiffness:.4g} N/m, would sag by M·g/k = {self.sag:.3g} m "
-                    f"under the machine's weight, more than any spring mount ({limit}); the sag is g·r²/ω², and ")
+            line = (f"the isolating mounts, k = {number(self.stiffness)} N/m, would sag by M·g/k = "
+                    f"{number(self.sag, 3)} m under the machine's weight, more than any spring mount ({limit}); the "
+                    "sag is g·r²/ω², and ")
         if self.zeta > 0:
-            line += (f"TR = {self.wanted:g} needs r = {self.ratio:.4g} at the mounts' damping ratio ζ = {self.zeta:g} "
-                     f"(more damping, a larger r; undamped, r = {self.undamped_ratio:.4g})")
+            line += (f"TR = {self.wanted:g} needs r = {number(self.ratio)} at the mounts' damping ratio ζ = "
+                     f"{self.zeta:g} (more damping, a larger r; undamped, r = {number(self.undamped_ratio)})")
         else:
-            line += f"TR = {self.wanted:g} needs r = {self.ratio:.4g} without damping"
+            line += f"TR = {self.wanted:g} needs r = {number(self.ratio)} without damping"
         ways = []
         if self.most_damping is not None:
             ways.append(f"damping ζ ≤ {self.most_damping}")
         if self.undamped_sag is not None:
-            line += f"; even undamped mounts would sag {self.undamped_sag:.3g} m at this speed"
+            line += f"; even undamped mounts would sag {number(self.undamped_sag, 3)} m at this speed"
         if self.least_transmissibility is not None:
             ways.append(f"TR ≥ {self.least_transmissibility}" + (f" at ζ = {self.zeta:g}" if self.zeta > 0 else ""))
         if self.root_two_sag is not None:
-            line += f"; at this speed no mount isolates within {limit} (r = √2 already sags {self.root_two_sag:.3g} m)"
-        ways.append(f"a speed of {self.least_rpm} rpm or more (now {self.rpm:.4g} rpm)")
+            line += (f"; at this speed no mount isolates within {limit} (r = √2 already sags "
+                     f"{number(self.root_two_sag, 3)} m)")
+        ways.append(f"a speed of {self.least_rpm} rpm or more (now {number(self.rpm)} rpm)")
         return line + f"; within {limit}: " + ", or ".join(ways)
 
 

@@ -576,8 +576,8 @@ def test_a_damping_too_small_to_matter_near_resonance_is_warned_of_as_none_is(tm
     code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = {omega!r}\n"
                                 f"damping_ratio = {zeta}\n", capsys)
     assert code == 0
-    assert f"with little damping (ζ = 1e-09): the amplitude X = {0.02 / 100.0 * magnification:.4g} m is " \
-           f"{magnification:.4g} times m·e/M" in told.out
+    assert f"with little damping (ζ = 0.000000001): the amplitude X = {0.02 / 100.0 * magnification:.5g} m is " \
+           f"{magnification:.5g} times m·e/M" in told.out
     from graphplan.cli import main
 
     assert main(["check", str(tmp_path / "machine.toml")]) == 0   # check warns as run does
@@ -607,7 +607,7 @@ def test_an_undamped_speed_near_resonance_gives_its_amplitude_and_a_warning(tmp_
     code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.02\nstiffness = 1e5\nomega = {omega}\n", capsys)
     assert code == 0
     assert f"warning: vibration: no damping and ω within {abs(r - 1):.2g} of the natural frequency" in told.out
-    assert f"X = {amplitude:.4g} m" in told.out
+    assert f"X = {amplitude:.5g} m" in told.out
     document = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]
     assert document["amplitude"] == pytest.approx(amplitude, rel=1e-11)
     (tmp_path / "far").mkdir()  # r = 1.26: no warning
@@ -819,7 +819,7 @@ def test_a_speed_near_resonance_is_recorded_in_the_results_and_cautioned_in_the_
     (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["warnings"]
     assert found["code"] == "near-resonance" and f"(r = {r:.6g})" in found["detail"]
     amplitude = 0.02 / 100.0 * r * r / abs(1 - r * r)
-    assert f"X = {amplitude:.4g} m" in found["detail"]
+    assert f"X = {amplitude:.5g} m" in found["detail"]
     from graphplan.cli import main
 
     assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
@@ -869,7 +869,7 @@ def test_a_balanced_machine_on_a_shaken_base_near_resonance_warns_of_the_motion_
                                 "base_amplitude = 0.01\n", capsys)
     assert code == 0
     r = 0.99
-    assert f"X = {0.01 / abs(1 - r * r):.4g} m grows without bound" in told.out
+    assert f"X = {0.01 / abs(1 - r * r):.5g} m grows without bound" in told.out
 
 
 @pytest.mark.parametrize(("locale", "base", "both", "rotor"), [
@@ -1002,7 +1002,7 @@ def test_mounts_under_a_shafts_bearings_sag_what_the_shafts_own_bending_leaves(t
     sag = 20.0 * g / mounts
     assert sag == pytest.approx(g * _ratio_for(0.1, 0.05) ** 2 / omega ** 2 - 20.0 * g / shaft, rel=1e-9)
     (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["warnings"]
-    assert found["code"] == "mounts-sag" and f"k_m = {mounts:.4g} N/m" in found["detail"]
+    assert found["code"] == "mounts-sag" and f"k_m = {mounts:.5g} N/m" in found["detail"]
     assert f"M·g/k_m = {sag:.3g} m" in found["detail"]
     # The speed that brings the mounts within 0.1 m: g·r²/ω² − M·g/ks = 0.1.
     least = _ratio_for(0.1, 0.05) * math.sqrt(g / (0.1 + 20.0 * g / shaft)) * 30.0 / math.pi
@@ -1047,7 +1047,7 @@ def test_a_machine_at_resonance_is_said_to_run_at_it_not_within_nought_of_it(tmp
     assert code == 0
     magnification = 1.0 / (2.0 * 0.002)  # r²/√((1 − r²)² + (2ζr)²) at r = 1
     assert "ω at the natural frequency (r = 1): the machine runs at resonance" in told.out and "within 0" not in told.out
-    assert f"X = {0.01 / 100.0 * magnification:.4g} m is {magnification:.4g} times m·e/M" in told.out
+    assert f"X = {0.01 / 100.0 * magnification:.5g} m is {magnification:.5g} times m·e/M" in told.out
     from graphplan.cli import main
 
     assert main(["run", str(tmp_path / "machine.toml"), "--locale", locale, "--out", str(tmp_path / locale)]) == 0
@@ -1065,7 +1065,7 @@ def test_an_undamped_machine_at_resonance_to_the_digits_shown_is_said_to_run_at_
     code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.01\nstiffness = 1.0e6\nomega = {100.0 * r!r}\n", capsys)
     assert code == 0 and f"{r:.6g}" == "1"
     assert "no damping and ω at the natural frequency to six digits (r = 1)" in told.out
-    assert f"X = {0.01 / 100.0 * r * r / abs(1 - r * r):.4g} m" in told.out
+    assert f"X = {0.01 / 100.0 * r * r / abs(1 - r * r):.5g} m" in told.out
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert "Caution: there is no damping and the machine runs at resonance to the digits shown (r = 1)" in note
 
@@ -1147,7 +1147,7 @@ def test_an_instrument_shaken_near_resonance_is_told_of_its_base_not_of_a_speed_
     assert ratio == pytest.approx(35.63, rel=1e-3)
     (line,) = [line for line in told.out.splitlines() if "warning: vibration:" in line]
     assert "the base's ω within 0.01 of the natural frequency" in line
-    assert f"the instrument moves X = {0.01 * ratio:.4g} m, {ratio:.4g} times the base's Y" in line
+    assert f"the instrument moves X = {0.01 * ratio:.5g} m, {ratio:.5g} times the base's Y" in line
     assert "run the machine" not in line
     from graphplan.cli import main
 
