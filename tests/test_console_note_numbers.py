@@ -2,8 +2,8 @@
 
 The dynamics' warnings printed speeds and δ to four digits (ωm = 11.74, φ = 47.7°, 245.789 N·m) beside the note's
 11.745, 47.75° and 245.79; a damping ratio of 1 (1 % meant?) or above was told on the command line only, and the note,
-which outlives it, worked every amplitude out of it without a word.  Each number is checked against the note's and
-against a calculation of its own.
+which outlives it, worked every amplitude out of it without a word; the mounts' sag wrote k = 4018 beside 4018.4.
+Each number is checked against the note's and against a calculation of its own.
 """
 
 from __future__ import annotations
@@ -158,3 +158,22 @@ def test_an_over_critical_damping_ratio_is_told_in_the_note_and_a_real_one_is_no
     assert "percentage" not in line
     printed, note = _rotor_note(tmp_path, "0.7", "en", capsys)
     assert "vibration.damping_ratio" not in printed and "creep back" not in note
+
+
+def test_the_mounts_sag_warning_writes_k_and_r_as_the_note(tmp_path, capsys):
+    """TR = 0.2 at ζ = 1 on the rotor's 100 kg at 600 rpm needs r = 9.9118 and mounts of M·(ω/r)² = 4018.4 N/m, which
+    sag 0.244 m: the warning wrote k = 4018 and r = 9.912 beside the note's 4018.4 and 9.9118."""
+    printed, note = _rotor_note(tmp_path, "1", "en", capsys)
+    line = _warning(printed, "vibration: the isolating mounts")
+    stiffness, ratio = re.search(r"k = ([\d.]+) N/m, would sag .* needs r = ([\d.]+) at", line).groups()
+    assert f"the isolating mounts worked out above, k = {stiffness} N/m, would sag" in note
+    assert f"needs r = {ratio} at ζ = 1" in note
+    # TR² = (1 + (2ζr)²)/((1 − r²)² + (2ζr)²) = 0.2² solved for r > √2 at ζ = 1, by bisection of its own.
+    def excess(r: float) -> float:
+        return (1 + (2 * r) ** 2) / ((1 - r * r) ** 2 + (2 * r) ** 2) - 0.2 ** 2
+
+    isolating = brentq(excess, math.sqrt(2.0) * 1.001, 1e3)
+    omega = 600.0 * RPM
+    assert float(ratio) == pytest.approx(isolating, abs=5e-5)
+    assert float(stiffness) == pytest.approx(100.0 * (omega / isolating) ** 2, abs=0.05)
+    assert len(ratio.replace(".", "")) == 5 and len(stiffness.replace(".", "")) == 5
