@@ -65,6 +65,10 @@ def motor_speed_in_rpm(omega: float) -> bool:
 
 def rpm_question(key: str, omega: float, rpm_key: str) -> str:
     """The warning of a speed ``key = omega`` that reads as rev/min typed for rad/s, with what it is as rad/s and
-    what it would be as rev/min, and the key that takes rev/min."""
-    return (f"{key} = {omega:g} rad/s is {abs(omega) / RPM:.0f} rpm: a motor's speed in rev/min typed for rad/s? "
-            f"{abs(omega):g} rpm is {abs(omega) * RPM:.4g} rad/s: write {rpm_key} = {omega:g}")
+    what it would be as rev/min, and the key that takes rev/min; the two written as the note's caution writes them
+    (1450 rpm is 151.84 rad/s, where the console's 151.8 stood beside the note's 151.84)."""
+    # Here, not above: numerals brings numpy (by rounding), which this module of constants does without.
+    from .render.numerals import number
+
+    return (f"{key} = {omega:g} rad/s is {number(abs(omega) / RPM)} rpm: a motor's speed in rev/min typed for rad/s? "
+            f"{abs(omega):g} rpm is {number(abs(omega) * RPM)} rad/s: write {rpm_key} = {omega:g}")

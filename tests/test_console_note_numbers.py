@@ -122,12 +122,15 @@ def test_the_stall_warning_writes_the_time_and_angle_as_the_note(tmp_path, capsy
     assert angle == f"{math.degrees(0.625 + 2.5 ** 2 / 30.0):.4g}"
 
 
-def _rotor_note(tmp_path: Path, zeta: str, locale: str, capsys) -> tuple[str, str]:
+def _rotor_note(tmp_path: Path, zeta: str, locale: str, capsys, speed: str = "rpm           = 600.0") -> tuple[str, str]:
+    """What ``graphplan run`` of the rotor starter, its ζ made ``zeta`` (and its speed ``speed``), printed, and its
+    note."""
     scene = tmp_path / f"rotor_{zeta}_{locale}.toml"
     assert main(["new", "rotor", "--out", str(scene)]) == 0
     text = scene.read_text(encoding="utf-8")
-    assert "damping_ratio = 0.1 " in text
-    scene.write_text(text.replace("damping_ratio = 0.1 ", f"damping_ratio = {zeta} ", 1), encoding="utf-8")
+    assert "damping_ratio = 0.1 " in text and "rpm           = 600.0" in text
+    text = text.replace("damping_ratio = 0.1 ", f"damping_ratio = {zeta} ", 1).replace("rpm           = 600.0", speed)
+    scene.write_text(text, encoding="utf-8")
     _printed(capsys)
     out = tmp_path / f"out_{locale}"
     assert main(["run", str(scene), "--locale", locale, "--out", str(out), "--only", "vibration,note"]) == 0
@@ -177,3 +180,12 @@ def test_the_mounts_sag_warning_writes_k_and_r_as_the_note(tmp_path, capsys):
     assert float(ratio) == pytest.approx(isolating, abs=5e-5)
     assert float(stiffness) == pytest.approx(100.0 * (omega / isolating) ** 2, abs=0.05)
     assert len(ratio.replace(".", "")) == 5 and len(stiffness.replace(".", "")) == 5
+
+
+def test_a_speed_typed_in_rpm_is_asked_about_with_the_note_s_numbers(tmp_path, capsys):
+    """ω = 1450 rad/s, a motor's 1450 rpm: the warning wrote 1450 rpm as 151.8 rad/s beside the note's 151.84."""
+    printed, note = _rotor_note(tmp_path, "0.1", "en", capsys, speed="omega = 1450.0")
+    line = _warning(printed, "vibration: vibration.omega = 1450 rad/s")
+    as_rpm, meant = re.search(r"is ([\d.]+) rpm: .* 1450 rpm is ([\d.]+) rad/s", line).groups()
+    assert f"ω = 1450 rad/s ({as_rpm} rpm)" in note and f"(1450 rpm is ω = {meant} rad/s)" in note
+    assert (as_rpm, meant) == (f"{1450.0 * 30.0 / math.pi:.5g}", f"{1450.0 * math.pi / 30.0:.5g}")

@@ -41,8 +41,8 @@ def _run(tmp_path: Path, text: str, capsys, only: str) -> tuple[str, dict, str]:
 
 def _rpm_words(key: str, omega: float) -> str:
     """The console's words on ``key = omega`` typed in rev/min, worked out here."""
-    return (f"{key} = {omega:g} rad/s is {omega * 30.0 / math.pi:.0f} rpm: a motor's speed in rev/min typed for "
-            f"rad/s? {omega:g} rpm is {omega * math.pi / 30.0:.4g} rad/s: write {key.removesuffix('omega')}rpm = "
+    return (f"{key} = {omega:g} rad/s is {omega * 30.0 / math.pi:.5g} rpm: a motor's speed in rev/min typed for "
+            f"rad/s? {omega:g} rpm is {omega * math.pi / 30.0:.5g} rad/s: write {key.removesuffix('omega')}rpm = "
             f"{omega:g}")
 
 

@@ -133,8 +133,8 @@ def _rpm_words(key: str, omega: float) -> str:
     """What the warning says of ``key = omega`` typed in rev/min, worked out here: the speed as rad/s in rev/min,
     and the rev/min as rad/s."""
     as_rpm = abs(omega) * 30.0 / math.pi
-    return (f"{key} = {omega:g} rad/s is {as_rpm:.0f} rpm: a motor's speed in rev/min typed for rad/s? "
-            f"{abs(omega):g} rpm is {abs(omega) * math.pi / 30.0:.4g} rad/s")
+    return (f"{key} = {omega:g} rad/s is {as_rpm:.5g} rpm: a motor's speed in rev/min typed for rad/s? "
+            f"{abs(omega):g} rpm is {abs(omega) * math.pi / 30.0:.5g} rad/s")
 
 
 @pytest.mark.parametrize("omega", [-1450.0, 2900.0, 960.0])
