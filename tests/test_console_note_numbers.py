@@ -122,7 +122,8 @@ def test_the_stall_warning_writes_the_time_and_angle_as_the_note(tmp_path, capsy
     assert angle == f"{math.degrees(0.625 + 2.5 ** 2 / 30.0):.4g}"
 
 
-def _rotor_note(tmp_path: Path, zeta: str, locale: str, capsys, speed: str = "rpm           = 600.0") -> tuple[str, str]:
+def _rotor_note(tmp_path: Path, zeta: str, locale: str, capsys,
+                speed: str = "rpm           = 600.0") -> tuple[str, str]:
     """What ``graphplan run`` of the rotor starter, its ζ made ``zeta`` (and its speed ``speed``), printed, and its
     note."""
     scene = tmp_path / f"rotor_{zeta}_{locale}.toml"
