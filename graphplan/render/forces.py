@@ -107,6 +107,9 @@ BALANCING_RADIUS_MM = 9.0
 LEAST_FRICTION_CIRCLE_MM = 3.0
 # The whole reaction on the friction circle's tangent runs this far past the circle each way (mm).
 TANGENT_RUN_MM = 9.0
+# A load's arrow on the lever passes no other point's dot nearer than this (mm) where another way of drawing it
+# passes none: a head by another point reads as a load at that point.
+POINT_CLEAR_MM = 1.5
 # An arm on the lever whose name would stand nearer the pole than this (mm) is not lettered.
 POLE_CLEAR_MM = 10.0
 # Two sides of a force polygon on one line in opposite senses are drawn this far apart (mm), side by side.
@@ -459,7 +462,8 @@ def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Pr
 
 
 def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive],
-                        lines: Callable[[], BaseGeometry]) -> tuple[complex, complex, complex]:
+                        lines: Callable[[], BaseGeometry],
+                        others: Sequence[complex] = ()) -> tuple[complex, complex, complex]:
     """The arrow of a load on the lever at its point ``at``: from it, or onto it where a load drawn before
     already lies along that line from it and the other side of the point is clear of ``lines()``, or else
     :data:`BESIDE_MM` beside that line; with the shift that sets it beside (0 on its line).
@@ -472,26 +476,48 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     in), the second stands beside the first, tied to the point; where that
     too is taken, it runs on beyond the first (:func:`_unstacked`).  Set
     beside, it keeps to its line's side of the pole where either side is clear.
-    """
-    def clear(start: complex, end: complex) -> bool:
-        return (_unstacked(start, end, at, arrows) == (start, end)
-                and LineString((_xy(start), _xy(end))).intersection(lines()).length < 1.0)
 
-    away = (at, at + vector)
-    if _unstacked(*away, at, arrows) == away:
-        return (*away, 0j)
-    onto = (at - vector, at)
-    if clear(*onto):
-        return (*onto, 0j)
+    An arrow so drawn that passes another point of the lever, ``others``,
+    within :data:`POINT_CLEAR_MM` is drawn the first of these ways that
+    passes none, or else one that passes none and crosses lines without
+    lying along one: the knee press's Fu4, drawn from s4 toward s5, ended
+    with its head on s5's dot and on G5's tail, and read as a load at s5.
+    """
     unit = vector / abs(vector)
+
+    def off_points(start: complex, end: complex) -> bool:
+        shaft = LineString((_xy(start), _xy(end)))
+        return all(shaft.distance(ShapelyPoint(_xy(point))) >= POINT_CLEAR_MM for point in others)
+
+    def clear(start: complex, end: complex, along: float = 1.0) -> bool:
+        return (_unstacked(start, end, at, arrows) == (start, end)
+                and LineString((_xy(start), _xy(end))).intersection(lines()).length < along)
 
     def crosses_pole(shift: complex) -> bool:  # the lever's moments are about the pole, at 0
         return (at * unit.conjugate()).imag * ((at + shift) * unit.conjugate()).imag < 0
 
-    for shift in sorted((1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM), key=crosses_pole):
-        if clear(away[0] + shift, away[1] + shift):
-            return (away[0] + shift, away[1] + shift, shift)
-    return (*_unstacked(*away, at, arrows), 0j)
+    away, onto = (at, at + vector), (at - vector, at)
+    sides = sorted((1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM), key=crosses_pole)
+
+    def first_way(keep_off: bool, along: float = 1.0) -> tuple[complex, complex, complex] | None:
+        def fits(start: complex, end: complex, ok: Callable[[complex, complex], bool]) -> bool:
+            return ok(start, end) and (not keep_off or off_points(start, end))
+
+        if fits(*away, lambda start, end: _unstacked(start, end, at, arrows) == (start, end)):
+            return (*away, 0j)
+        if fits(*onto, lambda start, end: clear(start, end, along)):
+            return (*onto, 0j)
+        for shift in sides:
+            if fits(away[0] + shift, away[1] + shift, lambda start, end: clear(start, end, along)):
+                return (away[0] + shift, away[1] + shift, shift)
+        return None
+
+    chosen = first_way(False) or (*_unstacked(*away, at, arrows), 0j)
+    if off_points(*chosen[:2]):
+        return chosen
+    # Kept off the other points where no way is clear of the lines, an arrow may cross the lever's thin lines as long
+    # as it lies along none (ALONG_BAR_MM, as on a group cut free): s4's Fu4 pushes onto s4 across the rays there.
+    return first_way(True) or first_way(True, ALONG_BAR_MM) or chosen
 
 
 def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]) -> list[Primitive]:
@@ -1187,6 +1213,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # stands on it), which an arrow pushing onto its point must not lie along.
     feet = [_foot(0j, mm(image) + shift, force / abs(force)) for _, image, force, _, shift in named if force != 0]
 
+    # The points of the lever, one for each spot its letters stand at, which another point's load keeps clear of.
+    spots = [mm(group[0]) for group in coincident_letters(velocity)]
+
     @functools.cache
     def lines() -> BaseGeometry:
         # Made only for a load drawn onto its point or beside, which few are: grown from the union of all the
@@ -1202,7 +1231,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         length = abs(force) / scale
         unit = force / abs(force)
         at = mm(image) + shift
-        start, end, beside = _pushing_or_pulling(at, max(length, LEAST_ARROW_MM) * unit, arrows, lines)
+        others = [spot for spot in spots if abs(spot - mm(image)) >= ZERO_MM]
+        start, end, beside = _pushing_or_pulling(at, max(length, LEAST_ARROW_MM) * unit, arrows, lines, others)
         arrows.append(Arrow(_xy(start), _xy(end), stroke, 3.0, svg_id("lever", name)))
         if beside:
             leaders.append(Polyline((_xy(at), _xy(start)), Stroke(_LEADER_WIDTH, stroke.colour)))
