@@ -61,7 +61,7 @@ def forces_section(note: Writer, section: int) -> None:
         name, _ = force_report.balancing_symbol(note.analysis)
         load = balancing_load(note.mechanism, note.text)
         note.heading(3, note.t("note_cycle", load=load), f"{section}.{number}")
-        note.captioned(note.t("note_cycle_table", load=load, name=name),
+        note.captioned(note.t("note_cycle_table", load=load, name=name, convention=_convention(note, name)),
                        force_report.cycle_lines(note.analysis, note.mark))
         for sentence in [*force_report.cycle_notes(note.analysis),
                          *force_report.locked_between_lines(note.analysis, note.mark),
@@ -334,12 +334,20 @@ def _sign(value: float) -> str:
     return "−" if value < 0 else ""
 
 
+def _convention(note: Writer, name: str) -> str:
+    """The balancing load's sign convention, as forces.md states it: Mb counter-clockwise positive, Fb along the
+    driving slider's guide."""
+    return note.text["forces_sense_moment" if name == "Mb" else "forces_sense_force"]
+
+
 def _balancing(note: Writer, plan: PlanPosition) -> None:
     text, analysis = note.text, note.analysis
     name, unit = force_report.balancing_symbol(analysis)
     driver = note.mechanism.driver
     polygons = plan.forces.balancing
+    # The sign convention with the value: the dynamics' reduced moments, signed by their power, stand beside Mb.
     note.para(note.t("note_balancing_polygons", name=name, value=note.n(polygons, 6), unit=unit,
+                     convention=_convention(note, name),
                      sense=note.with_sense(polygons) if driver.kind == "crank" else ""))
     lever = plan.lever
     if lever is not None:
