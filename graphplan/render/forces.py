@@ -109,7 +109,7 @@ LEAST_FRICTION_CIRCLE_MM = 3.0
 TANGENT_RUN_MM = 9.0
 # A load's arrow on the lever passes no other point's dot nearer than this (mm) where another way of drawing it
 # passes none: a head by another point reads as a load at that point.
-POINT_CLEAR_MM = 1.5
+POINT_CLEAR_MM = 2.5
 # An arm on the lever whose name would stand nearer the pole than this (mm) is not lettered.
 POLE_CLEAR_MM = 10.0
 # Two sides of a force polygon on one line in opposite senses are drawn this far apart (mm), side by side.
