@@ -81,8 +81,8 @@ def test_no_load_arrow_on_the_press_lever_passes_over_another_point(levers):
 
 
 # The convention stated beside Mb, and beside the plans' Mr, in each language (as the textbooks of each put it).
-MB_CONVENTION = {"en": "(Mb counter-clockwise positive)", "ru": "(Mb: положительное направление — против часовой стрелки)",
-                 "zh": "（Mb 以逆时针为正）"}
+MB_CONVENTION = {"en": "(Mb counter-clockwise positive)",
+                 "ru": "(Mb: положительное направление — против часовой стрелки)", "zh": "（Mb 以逆时针为正）"}
 MR_CONVENTION = {"en": "positive where they drive, negative where they resist",
                  "ru": "положителен, где силы движущие, и отрицателен, где они сопротивляются",
                  "zh": "载荷驱动处为正，阻抗处为负"}
@@ -103,7 +103,8 @@ def _powers(results: dict, scene: dict, number: int, press: float) -> tuple[floa
     for link, data in scene["links"].items():
         v, a = np.array(points[data["centre"]]["v"]), np.array(points[data["centre"]]["a"])
         loads += data["mass"] * -gravity * v[1]
-        inertia += -data["mass"] * float(a @ v) - data.get("inertia", 0.0) * links[link]["epsilon"] * links[link]["omega"]
+        turning = links[link]["epsilon"] * links[link]["omega"]
+        inertia += -data["mass"] * float(a @ v) - data.get("inertia", 0.0) * turning
     loads += press * points["D"]["v"][1]
     return position["driver"]["omega"], loads, inertia
 
