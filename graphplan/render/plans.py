@@ -26,6 +26,7 @@ from shapely.ops import unary_union
 
 from ..kinematics import at
 from ..mechanism import Mechanism
+from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
 from .labels import Anchor, obstacles_of, open_direction, place_labels
@@ -364,8 +365,23 @@ def _clear_spot(start: tuple[float, float], end: tuple[float, float], others: Ba
 
 # A plan.
 
+# A plan is drawn at its own μV or μa, whatever μl the mechanism beside it is drawn at: the choice of μl lays the plan
+# sheets and the velocity plans of every position out at each μl it tries (the latter twice, whole and in runs), and
+# the plans' lettering was placed again each time.  The mechanism is kept with its plan's layers, so that its id in
+# the key names no other mechanism while they are kept.
+_PLANS: OwnedMemo[tuple[Mechanism, tuple[Layer, ...]]] = OwnedMemo()
+
+
 def plan_layers(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list[Layer]:
-    """The plan's lines of action, similar figures, vectors, points and letters."""
+    """The plan's lines of action, similar figures, vectors, points and letters, drawn once for each plan, kind,
+    pole and mechanism while the plan lives."""
+    _, layers = _PLANS.get(plan, (kind, pole, id(mechanism)),
+                           lambda: (mechanism, tuple(_plan_layers(plan, kind, pole, mechanism))))
+    return list(layers)
+
+
+def _plan_layers(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list[Layer]:
+    """The layers of :func:`plan_layers`."""
     actions = _lines_of_action(plan)
     figures = _similar_figures(plan, mechanism)
     vectors = _vectors(plan, kind)
