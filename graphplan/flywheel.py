@@ -390,6 +390,27 @@ DIAGRAM_KEYS = ("resisting_torque", "resisting_power", "driving_torque", "drivin
 _DIAGRAM_ONLY = (*DIAGRAM_KEYS, "driving", "resisting", "inertia")
 # The keys that size a flywheel: its δ, the mean speed it is sized at, the shaft it may be moved to.
 _FLYWHEEL_KEYS = ("delta", "rpm", "omega", "flywheel_shaft_rpm")
+
+# Keys of one table of [dynamics]' motion that a student writes in another, the motor's gear_ratio beside delta
+# or a start inside the motor's braces (the docs list them in one row): each is told where it goes.
+_MOTOR_KEYS = ("kind", "gear_ratio", "rotor_inertia", "off_at", "stall_torque", "no_load_rpm", "points", "power",
+               "overload", "synchronous_rpm", "rated_rpm", "rated_slip")
+_OWN_KEYS = ("motor", "brake", "clutch", "start", "duration", "method", "rtol", "steady_tolerance", "delta",
+             "flywheel_shaft_rpm", "constant", "count")
+_NESTED_KEYS = {"brake": ("damping",), "clutch": ("engage_at",), "start": ("angle_deg", "driving_rpm", "driving_omega")}
+
+
+def misplaced_keys(where: str, path: str) -> dict[str, str]:
+    """The keys the table at ``where`` (``path``, the ``[dynamics]`` table, or one nested in it) does not take but
+    another of ``path``'s tables does, each with the path of that table, for :meth:`Table.done`'s ``elsewhere``."""
+    homes = {key: f"{path}.motor" for key in _MOTOR_KEYS}
+    for table, keys in _NESTED_KEYS.items():
+        homes.update({key: f"{path}.{table}" for key in keys})
+    if where != path:
+        homes.update({key: path for key in _OWN_KEYS})
+    return {key: home for key, home in homes.items() if home != where}
+
+
 _SIDES = ("driving", "resisting")
 
 
@@ -488,7 +509,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         from .machine_motion import read_motion
 
         motion = read_motion(table, table.path)
-    table.done()
+    table.done(elsewhere=misplaced_keys(table.path, table.path))
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
                         count=count, motion=motion)
 
@@ -520,7 +541,7 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
                                  "gives its diagram: leave one out")
     inertia = table.number("inertia", 0.0, non_negative=True)
     motion = _read_diagram_motion(table, diagrams, inertia, spec.delta)
-    table.done()
+    table.done(elsewhere=misplaced_keys(table.path, table.path))
     omega = spec.omega
     if len(diagrams) == 2:
         constant = "none"
@@ -759,6 +780,7 @@ __all__ = [
     "flywheel_for",
     "flywheel_from_spec",
     "flywheel_inertia",
+    "misplaced_keys",
     "moved_inertia",
     "omega_to_rpm",
     "read_dynamics",

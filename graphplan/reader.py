@@ -14,7 +14,7 @@ import json
 import math
 import re
 import unicodedata
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
 from .errors import SceneError, as_written
@@ -387,6 +387,17 @@ class Table:
                 raise SceneError(self.where(other), f"unknown key; {what} is given as {key}: write "
                                  f"{key} = {as_written(self.data[other])}")
 
+    def _misplaced(self, key: str, home: str) -> None:
+        """Raise at ``key``, a key of the table ``home`` (nested in this one, or this one's owner), saying how to
+        write it there."""
+        value = f"{key} = {as_written(self.data[key])}"
+        if self.path.startswith(home + "."):
+            how = f"write it under [{home}], not inside {self.path.removeprefix(home + '.')} = {{ … }}: {value}"
+        else:  # nested in this table, or beside it in their owner
+            inside = home.removeprefix(self.path + ".") if home.startswith(self.path + ".") else home.rpartition(".")[2]
+            how = f"write it inside {inside} = {{ …, {value} }}"
+        raise SceneError(self.where(key), f"unknown key; {key} is a key of {home}, not of {self.path}: {how}")
+
     def take(self, key: str, default: Any, check: Callable[[Any, str], Any]) -> Any:
         """The value of ``key`` as ``check(value, where)`` returns it, or ``default`` where the key is absent."""
         value = self.raw(key, default)
@@ -526,12 +537,18 @@ class Table:
         for key in list(self.data):
             yield key, self.table(key)  # type: ignore[misc]
 
-    def done(self, *, list_known: bool = False) -> None:
+    def done(self, *, list_known: bool = False, elsewhere: Mapping[str, str] | None = None) -> None:
         """Reject the first key that nobody took, suggesting the nearest valid one, or with ``list_known`` (a
-        table whose keys are all read whatever it holds) every valid one when none is near."""
+        table whose keys are all read whatever it holds) every valid one when none is near.
+
+        ``elsewhere`` maps keys of a table nested in this one, or of the one this is nested in, to that table's
+        path: such a key here is told where it goes, for the nearest key here would send the user astray
+        (``dynamics.gear_ratio`` was asked "did you mean 'duration'?", the motor's key written beside it)."""
         if "mass" in self._taken:
             self._weight_for_mass([key for key in self.data if key not in self._taken])
         for key in self.data:
+            if key not in self._taken and elsewhere and key in elsewhere:
+                self._misplaced(key, elsewhere[key])
             if key not in self._taken:
                 hint = suggestion(key, sorted(self._taken))
                 if not hint and list_known:

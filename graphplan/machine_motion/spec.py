@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SceneError
+from ..flywheel import misplaced_keys
 from ..reader import Table, check_number
 from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
@@ -195,8 +196,13 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
         elif synchronous is None:
             synchronous = rated / (1.0 - slip)
         motor = KlossMotor(power, synchronous * RPM, slip, overload, **drive)
-    table.done()
+    table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return motor, off_at
+
+
+def _owner(table: Table) -> str:
+    """The path of the ``[dynamics]`` table a motion's table (``dynamics.motor``) is nested in."""
+    return table.path.rpartition(".")[0]
 
 
 def _refuse_points(where: str, points: list[tuple[float, float]]) -> None:
@@ -221,14 +227,14 @@ def _read_brake(table: Table) -> Brake:
     at = table.number("at", 0.0, non_negative=True)
     if torque == 0 and damping == 0:
         raise SceneError(table.path, "needs torque > 0 or damping > 0")
-    table.done()
+    table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return Brake(torque=torque, damping=damping, at=at)
 
 
 def _read_clutch(table: Table) -> Clutch:
     clutch = Clutch(torque=table.number("torque", positive=True), engage_at=table.number("engage_at", 0.0),
                     inertia=table.number("inertia", 0.0, non_negative=True))
-    table.done()
+    table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return clutch
 
 
@@ -249,7 +255,7 @@ def _read_start(value: Any, where: str, clutch: Clutch | None) -> Start:
     if driving is not None and clutch is None:
         key = "driving_omega" if table.has("driving_omega") else "driving_rpm"
         raise SceneError(table.where(key), "only with a clutch")
-    table.done()
+    table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return Start(omega=omega, angle=angle, driving_omega=driving)
 
 
@@ -297,7 +303,7 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
                          "least the solvers take", rtol)
     steady_tolerance = table.number("steady_tolerance", 1e-4, positive=True)
     if not owned:
-        table.done()
+        table.done(elsewhere=misplaced_keys(table.path, table.path))
     return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start,
                       start_angle_given=isinstance(raw_start, Mapping) and "angle_deg" in raw_start, duration=duration,
                       method=method, rtol=rtol, steady_tolerance=steady_tolerance, where=table.path,
