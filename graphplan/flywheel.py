@@ -461,6 +461,8 @@ class DynamicsSpec:
     motion: Any = None
     diagrams: tuple[LoadDiagram, ...] = ()
     inertia: float = 0.0
+    # The key the mean speed was given under, rpm or omega (None: not given), to name it where it looks mistyped.
+    speed_key: str | None = None
 
 
 def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = None) -> DynamicsSpec:
@@ -493,6 +495,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         # δ = 5 for 5 % is the slip a student makes; delta_warning tells it below 2, this refusal must as well.
         raise SceneError(table.where("delta"), "must be < 2: ωmin = ωm·(1 − δ/2) must stay > 0", delta,
                          hint=f"; {percentage_question(delta, 'δ')}")
+    speed_key = next((key for key in ("rpm", "omega") if table.has(key)), None)
     omega = table.speed(None, positive=True)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     if shaft is not None and delta is None:
@@ -502,7 +505,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     count = table.integer("count", DEFAULT_COUNT, minimum=12, maximum=100_000)
     if not linkage:
         return _read_diagram_dynamics(table, DynamicsSpec(where=table.path, delta=delta, omega=omega,
-                                                          flywheel_shaft_rpm=shaft, count=count))
+                                                          flywheel_shaft_rpm=shaft, count=count, speed_key=speed_key))
     constant = table.choice("constant", CONSTANT_CHOICES, "auto")
     motion = None
     if any(table.has(key) for key in MOTION_KEYS):
@@ -511,7 +514,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         motion = read_motion(table, table.path)
     table.done(elsewhere=misplaced_keys(table.path, table.path))
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
-                        count=count, motion=motion)
+                        count=count, motion=motion, speed_key=speed_key)
 
 
 def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
@@ -654,6 +657,67 @@ def speed_warnings(spec: DynamicsSpec) -> list[str]:
     return [rpm_question(key, omega, key.removesuffix("omega") + "rpm") for _, key, omega in rpm_typed_speeds(spec)]
 
 
+#: How near (relative) the [dynamics] mean speed must come to the crank's speed in the other unit to be told as it:
+#: a student rounds 25.1327 rad/s to 25.13, 25.1 or 25; a flywheel sized at 9.55 times the crank's speed, or at
+#: its 9.55th part, within that, is no machine's design.
+UNIT_SLIP_TOLERANCE = 0.02
+
+
+@dataclass(frozen=True)
+class SpeedUnitSlip:
+    """``[dynamics]``' mean speed typed as the crank's own in the other unit: ``key`` (``rpm`` or ``omega``) is
+    given ``typed``, the number the crank's speed has in the unit of the other key; ``crank_omega`` (rad/s) and
+    ``crank_rpm`` are the driver's speed; the flywheel is sized at ``sized`` rad/s instead."""
+
+    where: str
+    key: str
+    typed: float
+    crank_omega: float
+    crank_rpm: float
+    sized: float
+
+    @property
+    def meant_key(self) -> str:
+        return "omega" if self.key == "rpm" else "rpm"
+
+    @property
+    def ratio(self) -> float:
+        """How many times faster (above 1) or slower (below 1) than the crank the flywheel is sized at."""
+        return self.sized / self.crank_omega
+
+
+def speed_unit_slip(spec: DynamicsSpec, crank_omega: float | None) -> SpeedUnitSlip | None:
+    """The ``[dynamics]`` mean speed where it is the crank's speed ``crank_omega`` (rad/s, the driver's; None
+    without a crank that turns round) as a number in the other unit, within :data:`UNIT_SLIP_TOLERANCE`:
+    ``rpm = 25.13`` beside a crank of 25.13 rad/s (240 rev/min), or ``omega = 240`` beside one of 240 rev/min.
+    The flywheel is then sized at a tenth of the crank's speed or ten times it, J_F some 91 times too large or too
+    small, without another word: a motor's run, where there is one, only finds the speed off."""
+    if spec.speed_key is None or spec.omega is None or not crank_omega:
+        return None
+    crank = abs(crank_omega)
+    typed = spec.omega / RPM if spec.speed_key == "rpm" else spec.omega
+    other = crank if spec.speed_key == "rpm" else crank / RPM  # the crank's speed in the unit of the other key
+    if not abs(typed / other - 1.0) <= UNIT_SLIP_TOLERANCE:
+        return None
+    return SpeedUnitSlip(where=spec.where, key=spec.speed_key, typed=typed, crank_omega=crank, crank_rpm=crank / RPM,
+                         sized=spec.omega)
+
+
+def speed_unit_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
+    """The command line's line for :func:`speed_unit_slip`, or None."""
+    slip = speed_unit_slip(spec, crank_omega)
+    if slip is None:
+        return None
+    given, meant = ("rev/min", "rad/s") if slip.key == "rpm" else ("rad/s", "rev/min")
+    pace = f"{1 / slip.ratio:.3g} times slower" if slip.ratio < 1 else f"{slip.ratio:.3g} times faster"
+    size = "large" if slip.ratio < 1 else "small"
+    return (f"{slip.where}.{slip.key} = {slip.typed:g} {given} is the crank's speed in {meant} (driver: "
+            f"{slip.crank_omega:.4g} rad/s, {slip.crank_rpm:.4g} rpm): typed in the wrong unit? The flywheel is sized "
+            f"at {slip.sized:.4g} rad/s, {pace} than the crank turns, and J_F comes out some "
+            f"{max(slip.ratio, 1 / slip.ratio) ** 2:.0f} times too {size}: write {slip.where}.{slip.meant_key} = "
+            f"{slip.typed:g}, or leave the speed out for the driver's")
+
+
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
     """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
     if spec.delta is None:
@@ -767,10 +831,12 @@ __all__ = [
     "DIAGRAM_KEYS",
     "LARGEST_USUAL_DELTA",
     "MOTION_KEYS",
+    "UNIT_SLIP_TOLERANCE",
     "DynamicsSpec",
     "Fluctuation",
     "Flywheel",
     "LoadDiagram",
+    "SpeedUnitSlip",
     "Tangent",
     "delta_warning",
     "diagram_model_of",
@@ -788,6 +854,8 @@ __all__ = [
     "rpm_typed_speeds",
     "speed_fluctuation",
     "speed_limits",
+    "speed_unit_slip",
+    "speed_unit_warning",
     "speed_warnings",
     "unusual_speed_swing",
 ]

@@ -6,6 +6,8 @@ The scene is a crank-slider compressor written from scratch (not a starter): cra
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 import graphplan
@@ -113,3 +115,59 @@ def test_a_motor_key_in_the_start_table_is_sent_beside_it_into_the_motor():
 def test_a_misspelt_key_is_still_told_its_spelling():
     told = refusal(COMPRESSOR + MOTOR.replace("gear_ratio", "gear_ration"))
     assert told == "dynamics.motor.gear_ration: unknown key; did you mean 'gear_ratio'?"
+
+
+# --- the mean speed typed in the other unit ------------------------------------------------------------------------
+
+
+def flywheel_inertia(scene_text: str) -> float:
+    return graphplan.load_text(scene_text).machine_dynamics().flywheel.inertia
+
+
+def test_rad_per_second_typed_as_rpm_is_warned_with_the_key_and_said_in_the_note(tmp_path):
+    # 240 rev/min is 25.1327 rad/s; the student copies 25.13 under rpm. Nothing said so: the flywheel came out
+    # some (30/π)² = 91 times too large, and only a motor's run, where there was one, found the speed off.
+    crank = 240.0 * math.pi / 30.0
+    typed = 25.13
+    assert abs(typed / crank - 1) < 0.01
+    text = COMPRESSOR + f"rpm = {typed}\n"
+    sized = typed * math.pi / 30.0
+    done = graphplan.load_text(text).write(tmp_path / "out", only=["dynamics", "note"])
+    told = [line for line in done.warnings if line.startswith("dynamics.rpm")]
+    assert len(told) == 1, done.warnings
+    line = told[0]
+    assert "dynamics.rpm = 25.13 rev/min is the crank's speed in rad/s" in line
+    assert f"sized at {sized:.4g} rad/s" in line
+    assert f"{crank / sized:.3g} times slower" in line
+    assert f"some {(30 / math.pi) ** 2:.0f} times too large" in line
+    assert "write dynamics.omega = 25.13" in line
+    # The claim checked: the flywheel for the same δ, sized at 2.63 rad/s and at 25.13, differs by about ω².
+    right = flywheel_inertia(COMPRESSOR + f"omega = {typed}\n")
+    wrong = flywheel_inertia(text)
+    assert 0.95 * (crank / sized) ** 2 < wrong / right < 1.05 * (crank / sized) ** 2
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    caution = next(par for par in note.split("\n\n") if par.startswith("Внимание: средняя угловая скорость"))
+    assert "задана частотой вращения n = 25,13 об/мин" in caution
+    assert f"ωср = {sized:.4f}".replace(".", ",") in caution
+    assert f"примерно в {(30 / math.pi) ** 2:.0f} раз больше нужного" in caution
+    assert "dynamics." not in caution  # the note's reader has no scene to look a key up in
+
+
+def test_rpm_typed_as_rad_per_second_is_warned():
+    text = COMPRESSOR + "omega = 240.0\n"
+    scene = graphplan.load_text(text)
+    from graphplan.flywheel import speed_unit_warning
+
+    line = speed_unit_warning(scene.dynamics, scene.driver.omega)
+    assert line is not None
+    assert line.startswith("dynamics.omega = 240 rad/s is the crank's speed in rev/min")
+    assert f"{240.0 / (240.0 * math.pi / 30.0):.3g} times faster" in line
+    assert "times too small: write dynamics.rpm = 240" in line
+
+
+@pytest.mark.parametrize("speed", ["rpm = 240.0", "omega = 25.13", "rpm = 250.0", "omega = 30.0", ""])
+def test_a_speed_in_its_own_unit_is_not_told(speed):
+    from graphplan.flywheel import speed_unit_warning
+
+    scene = graphplan.load_text(COMPRESSOR + speed + "\n")
+    assert speed_unit_warning(scene.dynamics, scene.driver.omega) is None
