@@ -718,6 +718,38 @@ def speed_unit_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | N
             f"{slip.typed:g}, or leave the speed out for the driver's")
 
 
+#: How far (a factor either way) the motor's speed through its gear may lie from the machine's mean speed before
+#: it is told: a Kloss motor runs a few per cent of slip below its rated speed, a linear one below its no-load speed
+#: by its load, never by half; a gear_ratio left out (1) or turned round is off by the whole ratio.
+GEAR_MISMATCH = 1.5
+
+
+def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
+    """A line for the command line where ``[dynamics]``' motor, through its ``gear_ratio``, would turn the driving
+    shaft at a speed far (:data:`GEAR_MISMATCH`) from the machine's mean speed (``rpm`` or ``omega``, else the
+    crank's ``crank_omega``), with the gear ratio that fits; None where it fits, or the motor has no speed of its
+    own (a constant torque).  A motor of 955 rpm with the gear_ratio left out stalls the machine, or runs it four
+    times too fast, and the stall's advice (a stronger motor) leads astray."""
+    from .machine_motion import KlossMotor, LinearMotor
+
+    motor = getattr(spec.motion, "motor", None)
+    mean = spec.omega if spec.omega is not None else abs(crank_omega) if crank_omega else None
+    if mean is None or not isinstance(motor, KlossMotor | LinearMotor):
+        return None
+    speed, what = ((motor.synchronous_speed * (1.0 - motor.rated_slip), "rated") if isinstance(motor, KlossMotor)
+                   else (motor.no_load, "no-load"))
+    at_shaft = speed / motor.gear_ratio
+    # A linear motor loaded to half its stall torque runs at half its no-load speed: told only well above that.
+    most = GEAR_MISMATCH if isinstance(motor, KlossMotor) else 2 * GEAR_MISMATCH
+    if 1.0 / GEAR_MISMATCH <= at_shaft / mean <= most:
+        return None
+    unset = " (the default where it is left out)" if motor.gear_ratio == 1.0 else ""
+    return (f"{spec.where}.motor.gear_ratio = {motor.gear_ratio:g}{unset}: the motor's {what} speed, "
+            f"{speed / RPM:.4g} rpm, turns the driving shaft at {at_shaft / RPM:.4g} rpm through it, "
+            f"{at_shaft / mean:.3g} times the {mean / RPM:.4g} rpm the machine runs at; gear_ratio is "
+            f"ω_motor/ω_shaft, here {speed / mean:.3g} (or a motor of another speed)")
+
+
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
     """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
     if spec.delta is None:
@@ -829,6 +861,7 @@ def _with_zeros(x: np.ndarray, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]
 
 __all__ = [
     "DIAGRAM_KEYS",
+    "GEAR_MISMATCH",
     "LARGEST_USUAL_DELTA",
     "MOTION_KEYS",
     "UNIT_SLIP_TOLERANCE",
@@ -846,6 +879,7 @@ __all__ = [
     "flywheel_for",
     "flywheel_from_spec",
     "flywheel_inertia",
+    "gear_warning",
     "misplaced_keys",
     "moved_inertia",
     "omega_to_rpm",

@@ -171,3 +171,37 @@ def test_a_speed_in_its_own_unit_is_not_told(speed):
 
     scene = graphplan.load_text(COMPRESSOR + speed + "\n")
     assert speed_unit_warning(scene.dynamics, scene.driver.omega) is None
+
+
+# --- a motor whose speed the gear ratio does not bring to the machine's -------------------------------------------
+
+
+def gear_line(text: str) -> str | None:
+    from graphplan.flywheel import gear_warning
+
+    scene = graphplan.load_text(text)
+    return gear_warning(scene.dynamics, scene.driver.omega)
+
+
+def test_a_gear_ratio_left_out_is_told_with_the_one_that_fits():
+    # The motor's nameplate copied without its gearbox: u = 1, the crank driven at the motor's 955 rpm where the
+    # compressor turns at 240. The run stalls, and the stall's advice (a stronger motor) alone led astray.
+    line = gear_line(COMPRESSOR + MOTOR.replace(", gear_ratio = 4.0", ""))
+    assert line is not None
+    assert line.startswith("dynamics.motor.gear_ratio = 1 (the default where it is left out): the motor's rated speed, "
+                           "955 rpm,")
+    rated = 1000.0 * (1 - 0.045)          # synchronous_rpm·(1 − sN), sN = 1 − 955/1000
+    assert f"{rated / 240.0:.3g} times the 240 rpm" in line
+    assert f"here {rated / 240.0:.3g}" in line
+
+
+def test_a_gear_ratio_turned_round_is_told():
+    line = gear_line(COMPRESSOR + MOTOR.replace("gear_ratio = 4.0", "gear_ratio = 0.25"))
+    assert line is not None and line.startswith("dynamics.motor.gear_ratio = 0.25: ")
+    assert f"at {955.0 / 0.25:.4g} rpm through it" in line
+    assert f"here {955.0 / 240.0:.3g}" in line
+
+
+def test_a_gear_ratio_that_fits_is_not_told():
+    assert gear_line(COMPRESSOR + MOTOR) is None          # 955/4 = 239 rpm for the machine's 240
+    assert gear_line(COMPRESSOR + 'motor = { kind = "constant", torque = 30.0, gear_ratio = 1.0 }\n') is None
