@@ -205,3 +205,9 @@ def test_a_gear_ratio_turned_round_is_told():
 def test_a_gear_ratio_that_fits_is_not_told():
     assert gear_line(COMPRESSOR + MOTOR) is None          # 955/4 = 239 rpm for the machine's 240
     assert gear_line(COMPRESSOR + 'motor = { kind = "constant", torque = 30.0, gear_ratio = 1.0 }\n') is None
+
+
+@pytest.mark.parametrize("kind", ["asynchronous", "induction", "асинхронный"])
+def test_an_induction_motor_by_its_name_is_sent_to_kloss(kind):
+    told = refusal(COMPRESSOR + MOTOR.replace('kind = "kloss"', f'kind = "{kind}"'))
+    assert told == f"dynamics.motor.kind: must be one of constant, linear, kloss; did you mean 'kloss'? (got '{kind}')"
