@@ -62,15 +62,21 @@ def test_every_fixture_s_links_reach_their_joints(path):
     assert unreached == []
 
 
-def test_a_joint_inside_its_ternary_link_s_hull_is_tied_to_it():
-    analysis = analyse(loads(TRIAD_WITH_A_POINT_PAST_D))
+@pytest.fixture(scope="module")
+def triad_with_a_point_past_d():
+    """The triad with K past D, analysed once for the two tests that read it (neither changes the analysis)."""
+    return analyse(loads(TRIAD_WITH_A_POINT_PAST_D))
+
+
+def test_a_joint_inside_its_ternary_link_s_hull_is_tied_to_it(triad_with_a_point_past_d):
+    analysis = triad_with_a_point_past_d
     unreached, inside = _unreached(analysis)
     assert inside == analysis.motion.count  # D stands inside B, F, K in every position: the case is exercised
     assert unreached == []
 
 
-def test_the_bars_to_an_inner_joint_run_to_the_link_s_other_joints():
-    analysis = analyse(loads(TRIAD_WITH_A_POINT_PAST_D))
+def test_the_bars_to_an_inner_joint_run_to_the_link_s_other_joints(triad_with_a_point_past_d):
+    analysis = triad_with_a_point_past_d
     motion = analysis.motion
     outlines = linkage.outline_points(analysis.mechanism, motion)
     items = linkage.link_outlines(motion, 0, {6: outlines[6]}, _paper, linkage.THIN)
