@@ -8,6 +8,7 @@ can paste back (the swing advised is one the run itself accepts, found by analys
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import functools
 import math
 from collections.abc import Callable, Iterator
@@ -24,6 +25,11 @@ from .positions import first_value, reach, travel_reach
 from .rounding import noise_floor
 from .scene import Scene
 
+# Set while _swing_that_runs tries the scene rocking over a swing: a trial's refusal only says to try the next
+# swing, and its words are dropped, so the reach and advice a refusal is told with are not worked out for it (they
+# took the crank's reach again, some 720 solves of a triad, for every swing tried).
+_TRYING_SWINGS: contextvars.ContextVar[bool] = contextvars.ContextVar("trying_swings", default=False)
+
 
 @contextlib.contextmanager
 def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[None]:
@@ -32,6 +38,8 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
     try:
         yield
     except AssemblyError as error:
+        if _TRYING_SWINGS.get():
+            raise
         # A length in millimetres among metres: the reach and the swing it allows would be advice about a typo.
         if (units := mixed_units(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {units}") from error
@@ -282,10 +290,13 @@ def _swing_that_runs(scene: Scene, low: float, high: float) -> tuple[int, int] |
             return None
         # The scene as the advice changes it (_rocking_changes), rocking over the swing.
         rocking = replace(scene, driver=replace(driver, swing=(math.radians(first), math.radians(last))))
+        trying = _TRYING_SWINGS.set(True)
         try:
             analysis = analyse(rocking)
             refuse_as_run_would(rocking, analysis, chosen(rocking, analysis))
         except GraphplanError:
             continue
+        finally:
+            _TRYING_SWINGS.reset(trying)
         return first, last
     return None
