@@ -87,7 +87,8 @@ def refusal(text: str) -> str:
 
 def test_start_inside_the_motor_is_sent_to_dynamics():
     # The docs list start with the motor's keys; written inside its braces it was "unknown key", no more.
-    told = refusal(COMPRESSOR + MOTOR.replace("rotor_inertia = 0.02 }", "rotor_inertia = 0.02, start = { angle_deg = 0.0 } }"))
+    started = "rotor_inertia = 0.02, start = { angle_deg = 0.0 } }"
+    told = refusal(COMPRESSOR + MOTOR.replace("rotor_inertia = 0.02 }", started))
     assert told.startswith("dynamics.motor.start: unknown key; start is a key of dynamics, not of dynamics.motor")
     assert "write it under [dynamics]" in told and "start = { angle_deg = 0.0 }" in told
 
