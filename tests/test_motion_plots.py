@@ -84,6 +84,34 @@ def test_the_steady_turn_is_one_whole_turn_between_the_steady_extremes(motion):
         pyplot.close(figure)
 
 
+@pytest.mark.parametrize("switched_off", [False, True])
+def test_the_steady_turns_title_says_it_is_the_last_whole_steady_turn_and_gives_its_start(motion, switched_off):
+    """The note says the machine runs steadily from t = 1.655 s; the plot's turn, titled "the steady turn (from
+    t = 4.57 s)", read as a second, later start of the steady state.  It is the last whole turn before the steady
+    run ends (the run's end, or the motor switched off): no whole turn more fits after it."""
+    from matplotlib import pyplot
+
+    if not switched_off:
+        machine = Machine(INERTIA, resisting=lambda phi, omega: LOAD + SWING * math.sin(phi))
+        motion = simulate(machine, LinearMotor(200.0, 30.0, rotor_inertia=0.2), rtol=1e-8)
+    steady_end = motion.event_time("motor off") if switched_off else float(motion.t[-1])
+    text = strings("en")
+    figure = motion_plot(motion, text)
+    _, turn = figure.axes
+    try:
+        title = turn.get_title()
+        assert title.startswith(text["motion_turn"].split("{")[0]) and "last whole steady turn" in title
+        start = float(re.search(r"t = ([\d.]+) s", title).group(1))
+        # A whole turn by the integrated angle itself, not by the program's cycle: φ advances 2π from the start.
+        phi = lambda time: float(np.interp(time, motion.t, motion.phi))
+        end = float(motion.t[np.searchsorted(motion.phi, phi(start) + 2 * math.pi)])
+        period = end - start
+        assert start >= motion.steady.reached_at - 1e-3
+        assert end <= steady_end + 1e-3 < end + period
+    finally:
+        pyplot.close(figure)
+
+
 @pytest.mark.parametrize("start_deg", [180.0, 97.0])
 def test_the_steady_turn_of_a_run_started_away_from_position_1_spans_the_whole_turn(start_deg):
     """A run that starts at 180° from position 1 has its steady turn from 180° to 540°: drawn over 0…360°, the
