@@ -1024,9 +1024,9 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
     told = guides_without_angle(scene) + links_without_mass(scene)
     if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
-        from .flywheel import delta_warning, gear_warning, speed_unit_warning, speed_warnings
+        from .flywheel import crank_omega, delta_warning, gear_warning, speed_unit_warning, speed_warnings
 
-        crank = scene.driver.omega if scene.driver is not None and scene.driver.kind == "crank" else None
+        crank = crank_omega(scene.driver)
         told += [line for line in (delta_warning(scene.dynamics), speed_unit_warning(scene.dynamics, crank),
                                    gear_warning(scene.dynamics, crank)) if line is not None] + \
             speed_warnings(scene.dynamics)

@@ -685,6 +685,17 @@ class SpeedUnitSlip:
         """How many times faster (above 1) or slower (below 1) than the crank the flywheel is sized at."""
         return self.sized / self.crank_omega
 
+    @property
+    def times_off(self) -> float:
+        """How many times off the crank's speed the flywheel is sized at, faster or slower (1 or more)."""
+        return max(self.ratio, 1 / self.ratio)
+
+
+def crank_omega(driver) -> float | None:
+    """The driver's ω (rad/s) where it is a crank, which a ``[dynamics]`` mean speed or a motor through its gear is
+    compared with; None for a slider driver or no driver."""
+    return driver.omega if driver is not None and driver.kind == "crank" else None
+
 
 def speed_unit_slip(spec: DynamicsSpec, crank_omega: float | None) -> SpeedUnitSlip | None:
     """The ``[dynamics]`` mean speed where it is the crank's speed ``crank_omega`` (rad/s, the driver's; None
@@ -709,12 +720,12 @@ def speed_unit_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | N
     if slip is None:
         return None
     given, meant = ("rev/min", "rad/s") if slip.key == "rpm" else ("rad/s", "rev/min")
-    pace = f"{1 / slip.ratio:.3g} times slower" if slip.ratio < 1 else f"{slip.ratio:.3g} times faster"
+    pace = f"{slip.times_off:.3g} times {'slower' if slip.ratio < 1 else 'faster'}"
     size = "large" if slip.ratio < 1 else "small"
     return (f"{slip.where}.{slip.key} = {slip.typed:g} {given} is the crank's speed in {meant} (driver: "
             f"{slip.crank_omega:.4g} rad/s, {slip.crank_rpm:.4g} rpm): typed in the wrong unit? The flywheel is sized "
             f"at {slip.sized:.4g} rad/s, {pace} than the crank turns, and J_F comes out some "
-            f"{max(slip.ratio, 1 / slip.ratio) ** 2:.0f} times too {size}: write {slip.where}.{slip.meant_key} = "
+            f"{slip.times_off ** 2:.0f} times too {size}: write {slip.where}.{slip.meant_key} = "
             f"{slip.typed:g}, or leave the speed out for the driver's")
 
 
@@ -871,6 +882,7 @@ __all__ = [
     "LoadDiagram",
     "SpeedUnitSlip",
     "Tangent",
+    "crank_omega",
     "delta_warning",
     "diagram_model_of",
     "dynamics_results",

@@ -58,20 +58,19 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     # The texts of a run once over a swing or a travel, not over a cycle, say so.
     run = "" if model.cyclic else "_swing" if turning else "_travel"
     note.heading(2, note.t("note_dynamics"), section)
-    from ..flywheel import rpm_typed_speeds, speed_unit_slip
+    from ..flywheel import crank_omega, rpm_typed_speeds, speed_unit_slip
 
     # The file outlives the console: a speed typed off a motor's nameplate spoils all worked out from it.
     for role, _, omega in rpm_typed_speeds(note.scene.dynamics):
         note.para(note.t("note_dyn_caution_speed_in_rpm", speed=note.text[f"note_dyn_speed_{role}"],
                          omega=note.n(omega), rpm=note.n(omega / RPM), meant=note.n(omega * RPM)))
-    driver = note.scene.driver
-    slip = speed_unit_slip(note.scene.dynamics, driver.omega if driver is not None and driver.kind == "crank" else None)
+    slip = speed_unit_slip(note.scene.dynamics, crank_omega(note.scene.driver))
     if slip is not None:  # so is the crank's own speed typed in the other unit, and the flywheel sized from it
         # In words, not the scene's keys: the note's reader has the note, not the scene.
         note.para(note.t("note_dyn_caution_rpm_as_rad" if slip.key == "rpm" else "note_dyn_caution_rad_as_rpm",
                          typed=note.n(slip.typed), omega=note.n(slip.crank_omega), rpm=note.n(slip.crank_rpm),
-                         sized=note.n(slip.sized), ratio=note.n(max(slip.ratio, 1 / slip.ratio), 3),
-                         square=f"{max(slip.ratio, 1 / slip.ratio) ** 2:.0f}"))
+                         sized=note.n(slip.sized), ratio=note.n(slip.times_off, 3),
+                         square=f"{slip.times_off ** 2:.0f}"))
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         # The points the scene gives, not the samples the model is worked on (362 for a diagram of 4).
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)

@@ -18,10 +18,9 @@ import numpy as np
 
 from ..locale import Count
 from ..machine_motion import MachineMotion
-from ..render.numerals import steady_delta, worked_out
+from ..render.numerals import number, steady_delta, worked_out
 from ..render.primitives import FONT_SIZE_PER_CAP
 from ..render.wrapping import fitted
-from .forces import number
 from .plot_style import PAGE_WIDTH_INCHES, legend_under, new_figure, settings, svg_text, with_decimal_mark
 
 # Points of the dense solution drawn over the run, besides the solver's own steps: enough for a

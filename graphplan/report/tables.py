@@ -32,9 +32,8 @@ from ..misreadings import (
     slips,
     typed_unit,
 )
-from ..render.numerals import scale_factor
+from ..render.numerals import number, scale_factor
 from ..wording import balancing_load
-from .forces import number
 from .markdown import literal, set_close
 from .results import PERCENT_FLOOR
 
