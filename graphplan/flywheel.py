@@ -719,12 +719,16 @@ def speed_unit_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | N
     slip = speed_unit_slip(spec, crank_omega)
     if slip is None:
         return None
+    from .render.numerals import number
+
     given, meant = ("rev/min", "rad/s") if slip.key == "rpm" else ("rad/s", "rev/min")
-    pace = f"{slip.times_off:.3g} times {'slower' if slip.ratio < 1 else 'faster'}"
+    # The note's digits (its caution says the same): 25.13 rad/s here beside the note's 25.133 read as two speeds.
+    pace = f"{number(slip.times_off, 3)} times {'slower' if slip.ratio < 1 else 'faster'}"
     size = "large" if slip.ratio < 1 else "small"
+    # The typed value as the scene has it (to six digits), a key's own number.
     return (f"{slip.where}.{slip.key} = {slip.typed:g} {given} is the crank's speed in {meant} (driver: "
-            f"{slip.crank_omega:.4g} rad/s, {slip.crank_rpm:.4g} rpm): typed in the wrong unit? The flywheel is sized "
-            f"at {slip.sized:.4g} rad/s, {pace} than the crank turns, and J_F comes out some "
+            f"{number(slip.crank_omega)} rad/s, {number(slip.crank_rpm)} rpm): typed in the wrong unit? The flywheel is "
+            f"sized at {number(slip.sized)} rad/s, {pace} than the crank turns, and J_F comes out some "
             f"{slip.times_off ** 2:.0f} times too {size}: write {slip.where}.{slip.meant_key} = "
             f"{slip.typed:g}, or leave the speed out for the driver's")
 

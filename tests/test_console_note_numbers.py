@@ -190,3 +190,20 @@ def test_a_speed_typed_in_rpm_is_asked_about_with_the_note_s_numbers(tmp_path, c
     as_rpm, meant = re.search(r"is ([\d.]+) rpm: .* 1450 rpm is ([\d.]+) rad/s", line).groups()
     assert f"ω = 1450 rad/s ({as_rpm} rpm)" in note and f"(1450 rpm is ω = {meant} rad/s)" in note
     assert (as_rpm, meant) == (f"{1450.0 * 30.0 / math.pi:.5g}", f"{1450.0 * math.pi / 30.0:.5g}")
+
+
+def test_a_crank_speed_typed_in_the_other_unit_is_warned_with_the_note_s_numbers(tmp_path, capsys):
+    """rpm = 25.13 beside a crank of 240 rpm (25.133 rad/s): the warning wrote the driver as 25.13 rad/s, the note
+    25.133, and the flywheel's speed as 2.632 rad/s beside the note's 2.6316."""
+    from tests.test_student_probe_dynamics_ru import COMPRESSOR
+
+    scene = tmp_path / "compressor.toml"
+    scene.write_text(COMPRESSOR.replace('locale  = "ru"', 'locale  = "en"') + "rpm = 25.13\n", encoding="utf-8")
+    _printed(capsys)
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "note"]) == 0
+    line = _warning(_printed(capsys), "dynamics.rpm = 25.13 rev/min is the crank's speed in rad/s")
+    omega, rpm, sized = re.search(r"\(driver: ([\d.]+) rad/s, ([\d.]+) rpm\).* sized at ([\d.]+) rad/s", line).groups()
+    assert (omega, rpm, sized) == (f"{240.0 * RPM:.5g}", "240", f"{25.13 * RPM:.5g}")
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert f"(ω = {omega} rad/s, n = {rpm} rpm)" in note and f"sized at ωm = {sized} rad/s" in note

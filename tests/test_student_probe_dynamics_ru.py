@@ -138,7 +138,7 @@ def test_rad_per_second_typed_as_rpm_is_warned_with_the_key_and_said_in_the_note
     assert len(told) == 1, done.warnings
     line = told[0]
     assert "dynamics.rpm = 25.13 rev/min is the crank's speed in rad/s" in line
-    assert f"sized at {sized:.4g} rad/s" in line
+    assert f"sized at {sized:.5g} rad/s" in line
     assert f"{crank / sized:.3g} times slower" in line
     assert f"some {(30 / math.pi) ** 2:.0f} times too large" in line
     assert "write dynamics.omega = 25.13" in line
