@@ -380,36 +380,42 @@ class NearResonance:
     code = "near-resonance"
 
     @property
+    def resonant_as_written(self) -> bool:
+        """Whether r is 1 to the digits the note and the command line write it to (:func:`number`): r = 1.000003 is
+        resonance to them, and "within 3e−06 of the natural frequency (r = 1)" said it in riddles."""
+        return number(self.ratio) == "1"
+
+    @property
     def detail(self) -> str:
-        """The warning in a line (English, as the command line prints it)."""
+        """The warning in a line (English, as the command line prints it), r written as the note writes it."""
         if self.instrument:
             return self._instrument_detail()
         off = abs(self.ratio - 1.0)
         # r = 1 to the digits written is resonance itself: "within 0 of the natural frequency" said it in riddles.
-        at = f"{self.ratio:.6g}" == "1"
+        at = self.resonant_as_written
         if self.zeta > 0:
             # On a moving base X is not the magnification times m·e/M: the base's motion is in it.
             times = (f", the magnification {number(self.magnification)}" if self.base_moves
                      else f" is {number(self.magnification)} times m·e/M")
             where = ("ω at the natural frequency (r = 1): the machine runs at resonance" if at
-                     else f"ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g})")
+                     else f"ω within {off:.2g} of the natural frequency (r = {number(self.ratio)})")
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the amplitude X = "
                     f"{number(self.amplitude)} m{times}; run the machine {'away from' if at else 'farther from'} "
                     "resonance or damp it more")
         if at:
-            return (f"no damping and ω at the natural frequency to six digits (r = 1): the machine runs at resonance, "
+            return (f"no damping and ω at the natural frequency to five digits (r = 1): the machine runs at resonance, "
                     f"and the amplitude X = {number(self.amplitude)} m hangs on how near; give damping_ratio or "
                     "damping")
-        return (f"no damping and ω within {off:.2g} of the natural frequency (r = {self.ratio:.6g}): the amplitude "
+        return (f"no damping and ω within {off:.2g} of the natural frequency (r = {number(self.ratio)}): the amplitude "
                 f"X = {number(self.amplitude)} m grows without bound nearer it; give damping_ratio or damping")
 
     def _instrument_detail(self) -> str:
         """The warning of an instrument shaken near its resonance: the base's frequency, not a speed it runs at, is
         near ωn, and the way out is its mounts (another natural frequency) or their damping."""
-        at = f"{self.ratio:.6g}" == "1"
-        where = ("the base's ω at the natural frequency" + (" to six digits" if self.zeta == 0 else "") + " (r = 1): "
+        at = self.resonant_as_written
+        where = ("the base's ω at the natural frequency" + (" to five digits" if self.zeta == 0 else "") + " (r = 1): "
                  "the instrument is shaken at resonance" if at else
-                 f"the base's ω within {abs(self.ratio - 1.0):.2g} of the natural frequency (r = {self.ratio:.6g})")
+                 f"the base's ω within {abs(self.ratio - 1.0):.2g} of the natural frequency (r = {number(self.ratio)})")
         if self.zeta > 0:
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the instrument moves X = "
                     f"{number(self.amplitude)} m, {number(self.transmissibility)} times the base's Y; mount it with "

@@ -207,3 +207,28 @@ def test_a_crank_speed_typed_in_the_other_unit_is_warned_with_the_note_s_numbers
     assert (omega, rpm, sized) == (f"{240.0 * RPM:.5g}", "240", f"{25.13 * RPM:.5g}")
     note = (out / "note.md").read_text(encoding="utf-8")
     assert f"(ω = {omega} rad/s, n = {rpm} rpm)" in note and f"sized at ωm = {sized} rad/s" in note
+
+
+
+@pytest.mark.parametrize(("omega", "ratio", "said"), [
+    (100.003, "1", "ω at the natural frequency (r = 1): the machine runs at resonance"),
+    (98.76543, "0.98765", "ω within 0.012 of the natural frequency (r = 0.98765)"),
+])
+def test_the_resonance_warning_writes_r_as_the_note(tmp_path, capsys, omega, ratio, said):
+    """r = 1.00003 was "within 3e-05 of the natural frequency (r = 1.00003)" on the console beside the note's "runs
+    at resonance (r = 1)"; r = 0.9876543 was 0.987654 beside 0.98765."""
+    scene = tmp_path / "machine.toml"
+    scene.write_text('[scene]\ntitle = "Machine"\n[vibration]\nmass = 100.0\nunbalance = 0.01\nstiffness = 1.0e6\n'
+                     f"damping_ratio = 0.002\nomega = {omega}\n", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    line = _warning(_printed(capsys), "vibration: ")
+    r = omega / math.sqrt(1.0e6 / 100.0)   # ω/ωn, ωn = √(k/M), by hand
+    assert ratio == f"{r:.5g}"
+    assert said in line
+    note = (out / "note.md").read_text(encoding="utf-8")
+    (caution,) = [para for para in note.split("\n\n") if para.startswith("Caution:")]
+    assert f"(r = {ratio})" in caution
+    # Magnification r²/√((1 − r²)² + (2ζr)²) as both write it.
+    magnification = f"{r * r / math.hypot(1 - r * r, 2 * 0.002 * r):.5g}"
+    assert magnification in line and magnification in caution

@@ -817,7 +817,8 @@ def test_a_speed_near_resonance_is_recorded_in_the_results_and_cautioned_in_the_
     assert code == 0 and "warning: vibration: no damping" in told.out
     r = 30.0 / math.sqrt(1e5 / 100.0)
     (found,) = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["vibration"]["warnings"]
-    assert found["code"] == "near-resonance" and f"(r = {r:.6g})" in found["detail"]
+    # r to the note's five digits (0.94868), where the detail wrote 0.948683 beside it.
+    assert found["code"] == "near-resonance" and f"(r = {r:.5g})" in found["detail"]
     amplitude = 0.02 / 100.0 * r * r / abs(1 - r * r)
     assert f"X = {amplitude:.5g} m" in found["detail"]
     from graphplan.cli import main
@@ -827,7 +828,7 @@ def test_a_speed_near_resonance_is_recorded_in_the_results_and_cautioned_in_the_
     caution = {"en": "Caution: there is no damping", "ru": "Внимание: демпфирования нет", "zh": "注意：系统无阻尼"}
     share = f"{abs(r - 1) * 100:.2g}".replace(".", "," if locale == "ru" else ".")
     (line,) = [line for line in note.splitlines() if line.startswith(caution[locale])]
-    assert f"{share} %" in line
+    assert f"{share} %" in line and f"r = {r:.5g}".replace(".", "," if locale == "ru" else ".") in line
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])
@@ -1059,12 +1060,12 @@ def test_a_machine_at_resonance_is_said_to_run_at_it_not_within_nought_of_it(tmp
 
 
 def test_an_undamped_machine_at_resonance_to_the_digits_shown_is_said_to_run_at_it(tmp_path, capsys):
-    """r = 1.000003: outside the 10⁻⁶ that is refused as resonance, but r = 1 to six digits on the console and to
-    five in the note."""
+    """r = 1.000003: outside the 10⁻⁶ that is refused as resonance, but r = 1 to the five digits the console and the
+    note write it to."""
     r = 1.000003
     code, told = _run(tmp_path, f"mass = 100.0\nunbalance = 0.01\nstiffness = 1.0e6\nomega = {100.0 * r!r}\n", capsys)
-    assert code == 0 and f"{r:.6g}" == "1"
-    assert "no damping and ω at the natural frequency to six digits (r = 1)" in told.out
+    assert code == 0 and f"{r:.5g}" == "1"
+    assert "no damping and ω at the natural frequency to five digits (r = 1)" in told.out
     assert f"X = {0.01 / 100.0 * r * r / abs(1 - r * r):.5g} m" in told.out
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert "Caution: there is no damping and the machine runs at resonance to the digits shown (r = 1)" in note
