@@ -209,6 +209,21 @@ def test_a_crank_speed_typed_in_the_other_unit_is_warned_with_the_note_s_numbers
     assert f"(ω = {omega} rad/s, n = {rpm} rpm)" in note and f"sized at ωm = {sized} rad/s" in note
 
 
+def test_the_runaway_refusal_writes_the_torques_as_the_note_of_a_run_given_a_duration(tmp_path, capsys):
+    """The same 259.2 N·m against 245.79 N·m with no duration is refused: the refusal wrote 245.789, the note and the
+    warning of the run with a duration 245.79."""
+    motor = 'motor = { kind = "constant", torque = 18.0, gear_ratio = 14.4 }'
+    refused = _flywheel_scene(tmp_path, r"^motor = .*$", motor)
+    _printed(capsys)
+    assert main(["check", str(refused)]) == 2
+    torque, resisting = re.search(r"dynamics\.motor: its torque on the shaft, ([\d.]+) N·m, exceeds the mean "
+                                  r"resistance, ([\d.]+) N·m", _printed(capsys)).groups()
+    assert (torque, resisting) == (f"{18.0 * 14.4:.5g}", f"{MEAN_RESISTANCE:.5g}")
+    out = tmp_path / "out"
+    refused.write_text(refused.read_text(encoding="utf-8") + "duration = 5.0\n", encoding="utf-8")
+    assert main(["run", str(refused), "--out", str(out), "--only", "dynamics,note"]) == 0
+    assert f"Md = {torque} N·m, exceeds the mean resistance, {resisting} N·m" in (out / "note.md").read_text("utf-8")
+
 
 @pytest.mark.parametrize(("omega", "ratio", "said"), [
     (100.003, "1", "ω at the natural frequency (r = 1): the machine runs at resonance"),

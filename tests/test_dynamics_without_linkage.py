@@ -367,12 +367,13 @@ def test_a_machine_with_no_fluctuation_turns_at_its_mean_speed_without_a_flywhee
 
 
 def test_a_constant_motor_against_a_constant_resistance_is_refused_as_a_runaway_not_for_its_inertia(tmp_path, capsys):
-    """inertia = 1 was given: the −1 kg·m² flywheel no longer cancels it; 17.5·14.4 = 252 N·m > 245.789 N·m."""
+    """inertia = 1 was given: the −1 kg·m² flywheel no longer cancels it; 17.5·14.4 = 252 N·m > 245.79 N·m, the mean
+    resistance to the note's five digits."""
     status, out = run(tmp_path, FLAT + 'motor = { kind = "constant", torque = 17.5, gear_ratio = 14.4 }\n')
     err = without_progress(capsys.readouterr().err).strip()
     assert status == 2 and not out.exists()
-    assert err == (f"graphplan: error: dynamics.motor: its torque on the shaft, {17.5 * 14.4:.6g} N·m, exceeds the "
-                   "mean resistance, 245.789 N·m, at every speed: the machine speeds up without end and has no "
+    assert err == (f"graphplan: error: dynamics.motor: its torque on the shaft, {17.5 * 14.4:.5g} N·m, exceeds the "
+                   "mean resistance, 245.79 N·m, at every speed: the machine speeds up without end and has no "
                    "steady state; give a dynamics.duration (s), more resistance, or a motor whose torque falls with "
                    'speed (dynamics.motor kind = "linear" or "kloss")')
 

@@ -42,8 +42,8 @@ def test_a_runaway_constant_motor_is_told_at_the_motors_key(tmp_path, capsys, co
     argv = [command, str(scene)] + (["--out", str(out)] if command == "run" else [])
     assert main(argv) == 2
     err = without_progress(capsys.readouterr().err).strip()
-    assert err.startswith(f"graphplan: error: dynamics.motor: its torque on the shaft, {25.0 * 20.0:.6g} N·m, "
-                          f"exceeds the mean resistance, {_press_mean_resistance():.6g} N·m, at every speed")
+    assert err.startswith(f"graphplan: error: dynamics.motor: its torque on the shaft, {25.0 * 20.0:.5g} N·m, "
+                          f"exceeds the mean resistance, {_press_mean_resistance():.5g} N·m, at every speed")
     assert "dynamics: motor" not in err and not out.exists()
 
 

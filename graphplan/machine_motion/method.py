@@ -123,9 +123,13 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
             and stalls_in_its_first_turn(machine, motor, start):
         return
     if outpulled is not None:
-        # The torque on the shaft is the motor's times its gear ratio: the motor's table as a whole is told.
-        raise EndlessRun("motor", "motor", f"its torque on the shaft, {outpulled[0]:.6g} N·m, exceeds the mean "
-                         f"resistance, {outpulled[1]:.6g} N·m, at every speed: the machine speeds up without end and "
+        from ..render.numerals import number
+
+        # The torque on the shaft is the motor's times its gear ratio: the motor's table as a whole is told.  Both
+        # as the note and the console's warning of a run given a duration write them: 245.79, where 245.789 read
+        # as another number.
+        raise EndlessRun("motor", "motor", f"its torque on the shaft, {number(outpulled[0])} N·m, exceeds the mean "
+                         f"resistance, {number(outpulled[1])} N·m, at every speed: the machine speeds up without end and "
                          "has no steady state; give a dynamics.duration (s), more resistance, or a motor whose torque "
                          "falls with speed (dynamics.motor kind = \"linear\" or \"kloss\")")
 
