@@ -481,11 +481,12 @@ class MachineDynamics:
 
     def __init__(self, source: Analysis | Scene) -> None:
         from .dynamics import ConstantSideError, equivalent_model_of
-        from .flywheel import diagram_model_of, flywheel_from_spec
+        from .flywheel import crank_omega, diagram_model_of, flywheel_from_spec, gear_mismatch
         from .scene import Scene
 
         with _scene_values("dynamics"):
-            self.title = source.title if isinstance(source, Scene) else source.scene.title
+            scene = source if isinstance(source, Scene) else source.scene
+            self.title = scene.title
             if isinstance(source, Scene):
                 self.spec = source.dynamics
                 self.model = diagram_model_of(self.spec)
@@ -498,6 +499,9 @@ class MachineDynamics:
                     raise _constant_refused(refused) from refused
                 self.first_position = int(source.positions.numbers[0])
             self.flywheel = flywheel_from_spec(self.model, self.spec)
+            # The motor's speed through its gear far from the machine's, which gear_warning tells: a stall's and an
+            # off-design run's advice leave the gear ratio to it.
+            self.gear = gear_mismatch(self.spec, crank_omega(scene.driver))
 
     @functools.cached_property
     def motion(self):
@@ -670,8 +674,8 @@ class MachineDynamics:
                 inverted = (f"; gear_ratio = {u:g} turns the shaft faster than the motor: the ratio inverted? (it is "
                             f"the motor's speed over the shaft's: 1/{u:g} = {1 / u:.4g})"
                             if u < 1 and motion.torque_at_rest / u ** 2 > mr else "")
-                return (f"{unmoved}, {resisting} N·m (a stronger motor, a larger gear ratio, or a start from "
-                        f"another angle){in_kilowatts}{inverted}")
+                return (f"{unmoved}, {resisting} N·m ({self.stall_advice('or a start from another angle')})"
+                        f"{in_kilowatts}{inverted}")
             held = motion.brake.torque
             return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting} + "
                     f"{held:g} = {number(mr + held)} N·m: the brake's torque (dynamics.brake.torque) holds the "
@@ -692,9 +696,20 @@ class MachineDynamics:
                     f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting} N·m "
                     "(a smaller dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off "
                     "to stop it)")
-        return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: "
-                f"the motor cannot carry it past the resistance there (a stronger motor, a larger gear ratio, "
-                f"or a start unloaded through a clutch)")
+        return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: the motor cannot carry it past the "
+                f"resistance there ({self.stall_advice('or a start unloaded through a clutch')})")
+
+    def stall_advice(self, last: str) -> str:
+        """What lets a machine the motor stalls run, ending with ``last``: a larger gear ratio (more torque on the
+        shaft) where the gear fits the speed; where :func:`~graphplan.flywheel.gear_warning` tells the ratio, not
+        one it already says is too large, nor again the larger one it gives with its number."""
+        gear = self.gear
+        if gear is None:
+            return f"a stronger motor, a larger gear ratio, {last}"
+        if gear.too_large:
+            return (f"a stronger motor, {last}; not a larger gear ratio: {gear.where}.motor.gear_ratio = "
+                    f"{gear.gear_ratio:g} already turns the shaft well below the machine's speed")
+        return f"the gear ratio told for {gear.where}.motor.gear_ratio, a stronger motor, {last}"
 
     def slipping_warning(self) -> str | None:
         """One line for the command line when the clutch slips in every steady turn: it cannot pass the peaks of
@@ -770,10 +785,15 @@ class MachineDynamics:
         from .render.dynamics import flywheel_numbers
         from .render.numerals import steady_delta, worked_out
 
-        return (f"dynamics: the motor runs the machine at ωm = {worked_out(settled)} rad/s, "
+        # A gear ratio far off the machine's speed is told on its own line, with the ratio that fits: this one
+        # names it and leaves the advice to that line.
+        gear = self.gear
+        through = "" if gear is None else f"through {gear.where}.motor.gear_ratio = {gear.gear_ratio:g} "
+        advice = "" if gear is not None else " (a motor, gear ratio or speed that agree with each other)"
+        return (f"dynamics: {through}the motor runs the machine at ωm = {worked_out(settled)} rad/s, "
                 f"{abs(settled / sized - 1):.0%} off the {flywheel_numbers(self.model, flywheel).omega_mean} rad/s its "
                 f"flywheel was sized at for δ = {flywheel.delta:g}; steady, δ = "
-                f"{steady_delta(motion.steady.cycle.delta)} (a motor, gear ratio or speed that agree with each other)")
+                f"{steady_delta(motion.steady.cycle.delta)}{advice}")
 
 
 # The share by which the steady speed may differ from the one the flywheel was sized at before a run warns.

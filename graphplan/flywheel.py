@@ -739,12 +739,33 @@ def speed_unit_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | N
 GEAR_MISMATCH = 1.5
 
 
-def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
-    """A line for the command line where ``[dynamics]``' motor, through its ``gear_ratio``, would turn the driving
-    shaft at a speed far (:data:`GEAR_MISMATCH`) from the machine's mean speed (``rpm`` or ``omega``, else the
-    crank's ``crank_omega``), with the gear ratio that fits; None where it fits, or the motor has no speed of its
-    own (a constant torque).  A motor of 955 rpm with the gear_ratio left out stalls the machine, or runs it four
-    times too fast, and the stall's advice (a stronger motor) leads astray."""
+@dataclass(frozen=True)
+class GearMismatch:
+    """``[dynamics]``' motor whose ``speed`` (its ``what``: rated or no-load, rad/s) through its ``gear_ratio`` turns
+    the driving shaft ``at_shaft`` (rad/s), far (:data:`GEAR_MISMATCH`) from the machine's ``mean`` speed."""
+
+    where: str
+    gear_ratio: float
+    what: str
+    speed: float
+    at_shaft: float
+    mean: float
+
+    @property
+    def fitting_ratio(self) -> float:
+        """The gear ratio that brings the motor's speed to the machine's: ω_motor/ω_shaft."""
+        return self.speed / self.mean
+
+    @property
+    def too_large(self) -> bool:
+        """Whether the ratio turns the shaft too slowly: a larger one, which a stall would call for, slows it more."""
+        return self.at_shaft < self.mean
+
+
+def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch | None:
+    """Where ``[dynamics]``' motor, through its ``gear_ratio``, would turn the driving shaft at a speed far
+    (:data:`GEAR_MISMATCH`) from the machine's mean speed (``rpm`` or ``omega``, else the crank's ``crank_omega``);
+    None where it fits, or the motor has no speed of its own (a constant torque)."""
     from .machine_motion import KlossMotor, LinearMotor
 
     motor = getattr(spec.motion, "motor", None)
@@ -758,11 +779,22 @@ def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
     most = GEAR_MISMATCH if isinstance(motor, KlossMotor) else 2 * GEAR_MISMATCH
     if 1.0 / GEAR_MISMATCH <= at_shaft / mean <= most:
         return None
-    unset = " (the default where it is left out)" if motor.gear_ratio == 1.0 else ""
-    return (f"{spec.where}.motor.gear_ratio = {motor.gear_ratio:g}{unset}: the motor's {what} speed, "
-            f"{speed / RPM:.4g} rpm, turns the driving shaft at {at_shaft / RPM:.4g} rpm through it, "
-            f"{at_shaft / mean:.3g} times the {mean / RPM:.4g} rpm the machine runs at; gear_ratio is "
-            f"ω_motor/ω_shaft, here {speed / mean:.3g} (or a motor of another speed)")
+    return GearMismatch(where=spec.where, gear_ratio=motor.gear_ratio, what=what, speed=speed, at_shaft=at_shaft,
+                        mean=mean)
+
+
+def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
+    """The command line's line for :func:`gear_mismatch`, with the gear ratio that fits, or None.  A motor of 955 rpm
+    with the gear_ratio left out stalls the machine, or runs it four times too fast, and the stall's advice (a
+    stronger motor) leads astray."""
+    found = gear_mismatch(spec, crank_omega)
+    if found is None:
+        return None
+    unset = " (the default where it is left out)" if found.gear_ratio == 1.0 else ""
+    return (f"{found.where}.motor.gear_ratio = {found.gear_ratio:g}{unset}: the motor's {found.what} speed, "
+            f"{found.speed / RPM:.4g} rpm, turns the driving shaft at {found.at_shaft / RPM:.4g} rpm through it, "
+            f"{found.at_shaft / found.mean:.3g} times the {found.mean / RPM:.4g} rpm the machine runs at; "
+            f"gear_ratio is ω_motor/ω_shaft, here {found.fitting_ratio:.3g} (or a motor of another speed)")
 
 
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
@@ -883,6 +915,7 @@ __all__ = [
     "DynamicsSpec",
     "Fluctuation",
     "Flywheel",
+    "GearMismatch",
     "LoadDiagram",
     "SpeedUnitSlip",
     "Tangent",
@@ -895,6 +928,7 @@ __all__ = [
     "flywheel_for",
     "flywheel_from_spec",
     "flywheel_inertia",
+    "gear_mismatch",
     "gear_warning",
     "misplaced_keys",
     "moved_inertia",

@@ -386,14 +386,17 @@ def _stall(note: Writer, dynamics) -> None:
     mr = dynamics.machine.mr(float(motion.phi[-1]), 0.0)
     resisting = note.n(mr)
     stall = motion.stall
+    # The console's advice: not a larger gear ratio where the one given already turns the shaft too slowly.
+    too_large = "_gear_too_large" if dynamics.gear is not None and dynamics.gear.too_large else ""
+    ratio = note.n(dynamics.spec.motion.motor.gear_ratio)
     if stall is Stall.NEVER_STARTS_BRAKED:
         held = motion.brake.torque
         note.para(note.t("note_dyn_never_starts_braked", angle=angle, torque=note.n(motion.torque_at_rest),
                          resisting=resisting, brake=note.n(held), at=note.n(motion.brake.at, 4),
                          total=note.n(mr + held)))
     elif stall is Stall.NEVER_STARTS:
-        note.para(note.t("note_dyn_never_starts", angle=angle, torque=note.n(motion.torque_at_rest),
-                         resisting=resisting))
+        note.para(note.t(f"note_dyn_never_starts{too_large}", angle=angle, torque=note.n(motion.torque_at_rest),
+                         resisting=resisting, ratio=ratio))
     elif stall is Stall.NEVER_STARTS_CLUTCH:
         note.para(note.t("note_dyn_never_starts_clutch", angle=angle, torque=note.n(motion.clutch.torque),
                          resisting=resisting))
@@ -408,7 +411,7 @@ def _stall(note: Writer, dynamics) -> None:
         note.para(note.t("note_dyn_stalled_clutch", time=note.n(motion.stalled_at, 4), angle=angle,
                          torque=note.n(motion.clutch.torque), resisting=resisting))
     else:
-        note.para(note.t("note_dyn_stalled", time=note.n(motion.stalled_at, 4), angle=angle))
+        note.para(note.t(f"note_dyn_stalled{too_large}", time=note.n(motion.stalled_at, 4), angle=angle, ratio=ratio))
 
 
 def _run_down(note: Writer, dynamics) -> None:
