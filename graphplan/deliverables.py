@@ -640,7 +640,8 @@ class MachineDynamics:
 
     def stall_warning(self) -> str | None:
         """One line for the command line when the motor cannot keep the machine turning; its numbers the note's
-        (:func:`~graphplan.render.numerals.number`), given ones as typed."""
+        (:func:`~graphplan.render.numerals.number`), a clutch's and a brake's given ones too (a brake on at
+        t = 0.12345 s, which the note writes 0.1235), a scene's key offered as it is typed."""
         from .machine_motion import Stall
         from .render.numerals import number
 
@@ -655,7 +656,7 @@ class MachineDynamics:
         stall = motion.stall
         if stall is Stall.NEVER_STARTS_CLUTCH:
             return (f"dynamics: the machine does not start: at rest at φ = {where} the clutch, slipping at its "
-                    f"{motion.clutch.torque:g} N·m, does not overcome the resistance there, {resisting} N·m (a "
+                    f"{number(motion.clutch.torque)} N·m, does not overcome the resistance there, {resisting} N·m (a "
                     "clutch of more torque)")
         if stall in (Stall.NEVER_STARTS, Stall.NEVER_STARTS_BRAKED):
             unmoved = (f"dynamics: the machine does not start: at rest at φ = {where} the driving torque, "
@@ -677,23 +678,23 @@ class MachineDynamics:
                 return (f"{unmoved}, {resisting} N·m ({self.stall_advice('or a start from another angle')})"
                         f"{in_kilowatts}{inverted}")
             held = motion.brake.torque
-            return (f"{unmoved} and the brake applied at t = {motion.brake.at:g} s, {resisting} + "
-                    f"{held:g} = {number(mr + held)} N·m: the brake's torque (dynamics.brake.torque) holds the "
+            return (f"{unmoved} and the brake applied at t = {number(motion.brake.at, 4)} s, {resisting} + "
+                    f"{number(held)} = {number(mr + held)} N·m: the brake's torque (dynamics.brake.torque) holds the "
                     "machine from the start (a later dynamics.brake.at, after the start-up, or a smaller brake torque)")
         if stall is Stall.CLUTCH:
             return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: the clutch, "
-                    f"slipping at its {motion.clutch.torque:g} N·m, cannot carry it past the resistance "
+                    f"slipping at its {number(motion.clutch.torque)} N·m, cannot carry it past the resistance "
                     f"there, {resisting} N·m (a clutch of more torque)")
         if stall is Stall.BRAKE_CLUTCH:
-            return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
+            return (f"dynamics: the brake applied at t = {number(motion.brake.at, 4)} s brings the machine to rest "
                     f"at t = {stalled} s, φ = {where}, where the clutch, slipping at its "
-                    f"{motion.clutch.torque:g} N·m, cannot turn it against the brake's {motion.brake.torque:g} N·m "
+                    f"{number(motion.clutch.torque)} N·m, cannot turn it against the brake's {number(motion.brake.torque)} N·m "
                     f"and the resistance there, {resisting} N·m (a smaller dynamics.brake.torque keeps it "
                     "turning; dynamics.motor.off_at switches the motor off to stop it)")
         if stall is Stall.BRAKE:
-            return (f"dynamics: the brake applied at t = {motion.brake.at:g} s brings the machine to rest "
+            return (f"dynamics: the brake applied at t = {number(motion.brake.at, 4)} s brings the machine to rest "
                     f"at t = {stalled} s, φ = {where}, and the motor stalls: it cannot turn the machine "
-                    f"against the brake's {motion.brake.torque:g} N·m and the resistance there, {resisting} N·m "
+                    f"against the brake's {number(motion.brake.torque)} N·m and the resistance there, {resisting} N·m "
                     "(a smaller dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off "
                     "to stop it)")
         return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: the motor cannot carry it past the "
@@ -720,7 +721,7 @@ class MachineDynamics:
         if motion is None or not motion.steady_slip_energy:
             return None
         return (f"dynamics: the clutch slips in every steady turn, losing {number(motion.steady_slip_energy)} J a turn "
-                f"({number(motion.steady_slip_power)} W): its {self.spec.motion.clutch.torque:g} N·m cannot pass the "
+                f"({number(motion.steady_slip_power)} W): its {number(self.spec.motion.clutch.torque)} N·m cannot pass the "
                 "resistance's peaks (a clutch of more torque)")
 
     def unsettled_warning(self) -> str | None:
@@ -783,7 +784,7 @@ class MachineDynamics:
         if abs(settled - sized) <= OFF_DESIGN * sized:
             return None
         from .render.dynamics import flywheel_numbers
-        from .render.numerals import steady_delta, worked_out
+        from .render.numerals import number, steady_delta, worked_out
 
         # A gear ratio far off the machine's speed is told on its own line, with the ratio that fits: this one
         # names it and leaves the advice to that line.
@@ -792,7 +793,7 @@ class MachineDynamics:
         advice = "" if gear is not None else " (a motor, gear ratio or speed that agree with each other)"
         return (f"dynamics: {through}the motor runs the machine at ωm = {worked_out(settled)} rad/s, "
                 f"{abs(settled / sized - 1):.0%} off the {flywheel_numbers(self.model, flywheel).omega_mean} rad/s its "
-                f"flywheel was sized at for δ = {flywheel.delta:g}; steady, δ = "
+                f"flywheel was sized at for δ = {number(flywheel.delta)}; steady, δ = "
                 f"{steady_delta(motion.steady.cycle.delta)}{advice}")
 
 

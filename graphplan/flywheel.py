@@ -790,10 +790,14 @@ def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
     found = gear_mismatch(spec, crank_omega)
     if found is None:
         return None
+    from .render.numerals import number
+
     unset = " (the default where it is left out)" if found.gear_ratio == 1.0 else ""
+    # The motor's speed and the machine's as the note writes them (1455.5 rpm, not 1456); the shaft's speed in rpm
+    # and the ratios the note does not write.
     return (f"{found.where}.motor.gear_ratio = {found.gear_ratio:g}{unset}: the motor's {found.what} speed, "
-            f"{found.speed / RPM:.4g} rpm, turns the driving shaft at {found.at_shaft / RPM:.4g} rpm through it, "
-            f"{found.at_shaft / found.mean:.3g} times the {found.mean / RPM:.4g} rpm the machine runs at; "
+            f"{number(found.speed / RPM)} rpm, turns the driving shaft at {found.at_shaft / RPM:.4g} rpm through it, "
+            f"{found.at_shaft / found.mean:.3g} times the {number(found.mean / RPM)} rpm the machine runs at; "
             f"gear_ratio is ω_motor/ω_shaft, here {found.fitting_ratio:.3g} (or a motor of another speed)")
 
 

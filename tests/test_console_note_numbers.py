@@ -225,6 +225,62 @@ def test_the_runaway_refusal_writes_the_torques_as_the_note_of_a_run_given_a_dur
     assert f"Md = {torque} N·m, exceeds the mean resistance, {resisting} N·m" in (out / "note.md").read_text("utf-8")
 
 
+def test_the_off_design_warning_writes_the_delta_it_was_sized_for_as_the_note(tmp_path, capsys):
+    """δ = 0.0512347 typed: the note sized the flywheel for 0.051235, the warning wrote 0.0512347."""
+    scene = _flywheel_scene(tmp_path, r"gear_ratio = 14\.4", "gear_ratio = 13.0")
+    scene.write_text(re.sub(r"^delta = 0\.05 ", "delta = 0.0512347 ", scene.read_text(encoding="utf-8"),
+                            flags=re.MULTILINE), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+    line = _warning(_printed(capsys), "dynamics: the motor runs the machine at")
+    sized = re.search(r"sized at for δ = ([\d.]+);", line).group(1)
+    assert f"The flywheel was sized for δ = {sized};" in (out / "note.md").read_text(encoding="utf-8")
+    assert sized == "0.051235"   # 0.0512347 to five significant digits, by hand
+
+
+def test_the_gear_warning_writes_the_motor_s_and_the_machine_s_speed_as_the_note(tmp_path, capsys):
+    """A motor rated 1455.5 rpm through 40 on a press at 97.125 rpm: the gear line wrote 1456 and 97.12 (or 97.13)
+    beside the note's 1455.5 and 97.125."""
+    scene = _flywheel_scene(tmp_path, r"rated_rpm = 1440, gear_ratio = 14\.4", "rated_rpm = 1455.5, gear_ratio = 40")
+    scene.write_text(re.sub(r"^rpm   = 100 ", "rpm   = 97.125 ", scene.read_text(encoding="utf-8"),
+                            flags=re.MULTILINE), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+    line = _warning(_printed(capsys), "dynamics.motor.gear_ratio = 40:")
+    rated, machine, fitting = re.search(r"rated speed, ([\d.]+) rpm, .* times the ([\d.]+) rpm the machine runs at; "
+                                        r"gear_ratio is ω_motor/ω_shaft, here ([\d.]+)", line).groups()
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert f"rad/s ({rated} rpm), and overload capacity" in note and f"rad/s ({machine} rpm)" in note
+    assert (rated, machine) == ("1455.5", "97.125")
+    # The ratio that fits, rated over the machine's speed, the note does not write: three digits, as before.
+    assert fitting == f"{1455.5 / 97.125:.3g}"
+
+
+def test_the_stall_warning_writes_a_brake_s_and_a_clutch_s_given_numbers_as_the_note(tmp_path, capsys):
+    """A brake on at t = 0.51237 s: the note wrote 0.5124, the console the 0.51237 typed.  The clutch's 60.00004 N·m
+    and the brake's 40.00004 N·m, 60 and 40 in the note, were 60.00004 and 40.00004."""
+    scene = tmp_path / "held.toml"
+    scene.write_text('[scene]\ntitle = "clutched"\n[dynamics]\ninertia = 2.0\nrpm = 90\n'
+                     'motor = { kind = "constant", torque = 150.0, rotor_inertia = 1.0 }\n'
+                     "clutch = { torque = 60.00004 }\nduration = 2.0\nresisting_torque = [[0, 50], [360, 50]]\n"
+                     "brake = { torque = 40.00004, at = 0.51237 }\n", encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    line = _warning(_printed(capsys), "dynamics: the brake applied")
+    at, time, angle, clutch, brake = re.search(
+        r"applied at t = ([\d.]+) s brings the machine to rest at t = ([\d.]+) s, φ = ([\d.]+)°, where the clutch, "
+        r"slipping at its ([\d.]+) N·m, cannot turn it against the brake's ([\d.]+) N·m", line).groups()
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert (f"the brake applied at t = {at} s brings it to rest at t = {time} s at φ = {angle}°, where the clutch, "
+            f"slipping at its {clutch} N·m, cannot turn it against the brake's {brake} N·m") in note
+    # (60 − 50)/2 rad/s² up to the brake, (60 − 50 − 40)/2 after it, by hand.
+    speed = (60.00004 - 50.0) / 2.0 * 0.51237
+    slowing = (60.00004 - 50.0 - 40.00004) / 2.0
+    turned = (60.00004 - 50.0) / 4.0 * 0.51237 ** 2 + speed ** 2 / (2.0 * -slowing)
+    assert (at, time, angle) == ("0.5124", f"{0.51237 - speed / slowing:.4g}", f"{math.degrees(turned):.4g}")
+    assert (clutch, brake) == ("60", "40")
+
+
 @pytest.mark.parametrize(("omega", "ratio", "said"), [
     (100.003, "1", "ω at the natural frequency (r = 1): the machine runs at resonance"),
     (98.76543, "0.98765", "ω within 0.012 of the natural frequency (r = 0.98765)"),
