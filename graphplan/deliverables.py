@@ -688,9 +688,9 @@ class MachineDynamics:
         if stall is Stall.BRAKE_CLUTCH:
             return (f"dynamics: the brake applied at t = {number(motion.brake.at, 4)} s brings the machine to rest "
                     f"at t = {stalled} s, φ = {where}, where the clutch, slipping at its "
-                    f"{number(motion.clutch.torque)} N·m, cannot turn it against the brake's {number(motion.brake.torque)} N·m "
-                    f"and the resistance there, {resisting} N·m (a smaller dynamics.brake.torque keeps it "
-                    "turning; dynamics.motor.off_at switches the motor off to stop it)")
+                    f"{number(motion.clutch.torque)} N·m, cannot turn it against the brake's "
+                    f"{number(motion.brake.torque)} N·m and the resistance there, {resisting} N·m (a smaller "
+                    "dynamics.brake.torque keeps it turning; dynamics.motor.off_at switches the motor off to stop it)")
         if stall is Stall.BRAKE:
             return (f"dynamics: the brake applied at t = {number(motion.brake.at, 4)} s brings the machine to rest "
                     f"at t = {stalled} s, φ = {where}, and the motor stalls: it cannot turn the machine "
@@ -721,8 +721,8 @@ class MachineDynamics:
         if motion is None or not motion.steady_slip_energy:
             return None
         return (f"dynamics: the clutch slips in every steady turn, losing {number(motion.steady_slip_energy)} J a turn "
-                f"({number(motion.steady_slip_power)} W): its {number(self.spec.motion.clutch.torque)} N·m cannot pass the "
-                "resistance's peaks (a clutch of more torque)")
+                f"({number(motion.steady_slip_power)} W): its {number(self.spec.motion.clutch.torque)} N·m cannot pass "
+                "the resistance's peaks (a clutch of more torque)")
 
     def unsettled_warning(self) -> str | None:
         """One line for the command line when a run with the motor on ends short of a steady state: the results

@@ -129,9 +129,9 @@ def refuse_runaway(machine: Machine, motor: Motor, to_the_steady_state: bool = T
         # as the note and the console's warning of a run given a duration write them: 245.79, where 245.789 read
         # as another number.
         raise EndlessRun("motor", "motor", f"its torque on the shaft, {number(outpulled[0])} N·m, exceeds the mean "
-                         f"resistance, {number(outpulled[1])} N·m, at every speed: the machine speeds up without end and "
-                         "has no steady state; give a dynamics.duration (s), more resistance, or a motor whose torque "
-                         "falls with speed (dynamics.motor kind = \"linear\" or \"kloss\")")
+                         f"resistance, {number(outpulled[1])} N·m, at every speed: the machine speeds up without end "
+                         "and has no steady state; give a dynamics.duration (s), more resistance, or a motor whose "
+                         "torque falls with speed (dynamics.motor kind = \"linear\" or \"kloss\")")
 
 
 def refuse_endless_run_down(machine: Machine, brake: Brake | None) -> None:
