@@ -869,8 +869,11 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
         found = sheet.forces.reactions.get(unknown[:-2])
         shift = ""
         if found is not None and found.offset and abs(found.force) / sheet.forces.scale_of(found.name) >= ZERO_MM:
-            shift = f",  x = {significant(1000.0 * found.offset)} {text['millimetre']}"
-        return f"{about} {unknown} {terms} = 0{shift}"
+            # x is an arm, as every h is: a length, its term signed by the moment it gives, as the others are.  The
+            # offset along the guide written here put x = −3.301 mm under a +R16·x on a press's downward guide,
+            # which read with R16 = 2224 N doubled the friction moment Mf56 where it should balance it.
+            shift = f",  x = {significant(1000.0 * abs(found.offset))} {text['millimetre']}"
+        return f"{about} {'−' if equation.value < 0 else ''}{unknown} {terms} = 0{shift}"
     if unknown == "Mb":
         return f"{about} {' '.join(['Mb', *parts])} = 0,  Mb = {significant(equation.value)} {text['newton_metre']}"
     # The unknown's sense as first assumed: its moment balances the others'.
