@@ -10,6 +10,7 @@ tail on the polygon of the group 5–6), Zhukovsky's lever with friction (from t
 the ram's moment equation as the sheet writes it, read with its numbers.
 """
 
+import itertools
 import json
 import math
 import re
@@ -293,8 +294,6 @@ def statics(machine, phi: float, friction: bool = True) -> dict:
     links = [2, 3, 4, 5, 6]
     row = {k: 3 * n for n, k in enumerate(links)}
     rho = {joint: (machine.rho.get(joint, 0.0) if friction else 0.0) for joint, _, _ in revolutes}
-    if slot is not None:
-        rho["A"] = 0.0
     slide_f = machine.slide_f if friction else 0.0
     reactions = {name: 0j for name in names}
     normal = 0.0
@@ -480,3 +479,23 @@ def test_a_run_writes_the_press_s_friction_as_the_statics_worked_here_gives_it(t
         written_arm = re.search(r"x = (−?[\d.,]+)", sheet[sheet.index("ΣME(6)"):]).group(1)
         assert float(written_arm.replace(",", ".").replace("−", "-")) == pytest.approx(1000.0 * abs(own["offset"]),
                                                                                       rel=1e-3)
+
+
+ARM = re.compile(r"h\d+ = [\d.]+ mm")
+
+
+def test_the_lever_s_arms_listed_over_several_lines_are_parted_by_commas_at_each_break():
+    """Five arms left unlettered on the shaper's lever with friction: listed four to a line, the fourth ran on to
+    the fifth with no comma between ("h14 = 6.917 mm,  h17 = 6.917 mm" over "h18 = 19.22 mm")."""
+    listed = 0
+    for name in MACHINES:
+        analysis = analysis_of(name)
+        for position in analysis.plans:
+            layers = force_layout.layout(force_sheet(analysis, position, True))
+            lines = [item.text for layer in layers if layer.name == "lever-caption" for item in layer.items]
+            arms = [line for line in lines if ARM.fullmatch(line.rstrip(",").split(",  ")[-1].strip())]
+            for line, after in itertools.pairwise(lines):
+                if line in arms and after in arms:
+                    assert line.endswith(","), (line, after)
+            listed = max(listed, sum(len(ARM.findall(line)) for line in arms))
+    assert listed > 4  # more than the four a caption line lists: the break between the lists is seen

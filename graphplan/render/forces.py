@@ -1379,8 +1379,12 @@ def _balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = Tru
 
 
 def _wrapped(items: Sequence[str]) -> list[str]:
-    """Values listed ``PER_LINE`` to a caption line."""
-    return [VALUE_SEPARATOR.join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
+    """Values listed ``PER_LINE`` to a caption line, each line but the last ending in the comma between values.
+
+    Without it the lever's fifth arm ran on from the fourth as one value: "h18 = 0.2587 mm" over "h19 = 21.21 mm",
+    where a line the caption breaks keeps its comma ("R45 = 2141 N," over "R16 = 362.5 N")."""
+    lines = [VALUE_SEPARATOR.join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
+    return [line + VALUE_SEPARATOR.rstrip() for line in lines[:-1]] + lines[-1:]
 
 
 def _percent(value: float) -> str:
