@@ -29,7 +29,7 @@ from ..locale import Count, strings
 from ..rotor_balancing import BalancingResult, CorrectionPlane, static_couple
 from ..scales import format_scale, standard_scale
 from .force_rows import CAPTION_WIDTH_MM, caption_lines
-from .labels import Anchor, Placement, obstacles_of, place_labels
+from .labels import Anchor, Placement, obstacles_of, place_labels, remembered
 from .numerals import angle_in_turn, significant
 from .plans import CAPTION_GAP_MM, CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE, ZERO_MM, too_short_lines
 from .primitives import (
@@ -363,7 +363,7 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive], heavy: Seq
     stands farther out on a leader (``off_lines``) rather than on a line."""
     spots = [ShapelyPoint(anchor.at).buffer(0.8) for anchor in anchors]
     marks = [shape.buffer(0.4) for shape in obstacles_of(heavy)]
-    return place_labels(anchors, obstacles_of(figure) + spots + marks, off_lines=True)
+    return remembered(place_labels, anchors, obstacles_of(figure) + spots + marks, off_lines=True)
 
 
 def _angle(angle_deg: float | None) -> str:

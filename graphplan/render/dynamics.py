@@ -30,7 +30,7 @@ from shapely.geometry.base import BaseGeometry
 from ..locale import strings
 from ..scales import fit_scale, format_scale
 from ..units import RPM
-from .labels import Anchor, broken_under, obstacles_of, place_labels
+from .labels import Anchor, broken_under, obstacles_of, place_labels, remembered
 from .numerals import short, worked_out
 from .primitives import (
     THIN,
@@ -372,7 +372,7 @@ def _speed_extremes(model: EquivalentModel, flywheel: Flywheel, scales: Scales, 
     # shaper's ωmin stood 0.16 mm from the 210° tick and the compressor's 0.15 mm from the 180° grid line.
     axes = [shapely.buffer(shapely.linestrings((item.start, item.end)), AXIS_WORDS_GAP_MM)
             for item in drawn if isinstance(item, Arrow)]
-    placed = place_labels(anchors, obstacles_of([*drawn, *items]) + _numbering(diagram.numberings) + axes)
+    placed = remembered(place_labels, anchors, obstacles_of([*drawn, *items]) + _numbering(diagram.numberings) + axes)
     return items + list(placed.leaders) + list(placed.texts)
 
 
@@ -577,7 +577,7 @@ def _numbered_positions(model: EquivalentModel, scales: Scales, drawn: Sequence[
     middle = np.mean([at for _, at in points], axis=0)
     anchors = [Anchor(at, str(number), POSITION_NUMBER, math.atan2(at[1] - middle[1], at[0] - middle[0]))
                for number, at in points]
-    placed = place_labels(anchors, obstacles_of([*drawn, *dots]))
+    placed = remembered(place_labels, anchors, obstacles_of([*drawn, *dots]))
     return dots + list(placed.leaders) + list(placed.texts)
 
 

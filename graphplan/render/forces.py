@@ -58,7 +58,16 @@ from ..rounding import ROUNDING_NOISE
 from ..scales import fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
-from .labels import Anchor, Placement, cover_one_another, obstacles_of, open_direction, place_labels, text_box
+from .labels import (
+    Anchor,
+    Placement,
+    cover_one_another,
+    obstacles_of,
+    open_direction,
+    place_labels,
+    remembered,
+    text_box,
+)
 from .linkage import link_outlines, outline_points
 from .numerals import short, significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement, too_short_lines
@@ -1339,7 +1348,7 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
     centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
-    return place_labels(anchors, obstacles_of(figure) + spots, reach_farther=reach_farther)
+    return remembered(place_labels, anchors, obstacles_of(figure) + spots, reach_farther=reach_farther)
 
 
 def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline]) -> bool:

@@ -14,9 +14,11 @@ the intersection tests.
 from __future__ import annotations
 
 import functools
+import hashlib
 import itertools
 import math
-from collections.abc import Sequence
+from collections import OrderedDict
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -790,6 +792,60 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     leaders = tuple(Polyline(tuple(leader_lines[k].coords), Stroke(LEADER_WIDTH, anchors[k].colour))
                     for k in order if k in leader_lines)
     return Placement(tuple(texts[k] for k in range(len(anchors))), leaders)
+
+
+# How many placements :func:`remembered` keeps, the least recently asked given up first: a test module draws the same
+# scenes some hundreds of times, a few dozen placements each.
+PLACEMENTS_KEPT = 4096
+_placements: OrderedDict[bytes, Placement] = OrderedDict()
+
+
+def remembered(placer: Callable[..., Placement], anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry],
+               *arguments, **keywords) -> Placement:
+    """``placer(anchors, obstacles, *arguments, **keywords)``, the same placement given again where
+    :func:`place_labels` was asked it before with the very same arguments.
+
+    The placer is a function of its arguments alone, and the drawings ask it
+    the same again and again: the tests draw each scene many times in one
+    process (two thirds of the placements of the force sheets' tests were
+    ones made before, 21 s of 32), and a run letters a sheet's plans again
+    for each format it tries.  The key is every argument as it is written (a
+    float's repr is exact, an array's bytes, a shape's WKB its coordinates'
+    bytes, with its type, which WKB writes a ring's as a line's), and the
+    tuning of this module, which the tests change to compare placements made
+    other ways.  A placer other than :func:`place_labels` (a recorder of the
+    calls, a test's) is asked every time, as is one whose tree a test has
+    replaced (to count its queries).
+    """
+    if placer is not place_labels or STRtree is not shapely.STRtree or PLACEMENTS_KEPT <= 0:
+        return placer(anchors, obstacles, *arguments, **keywords)
+    shapes = np.array(list(obstacles), dtype=object)
+    written = shapely.to_wkb(shapes).tolist() if len(shapes) else []
+    key = hashlib.sha256(repr((_as_written(tuple(anchors)), _as_written(arguments),
+                               sorted((name, _as_written(value)) for name, value in keywords.items()),
+                               [(name, value) for name, value in globals().items() if name.isupper()])).encode())
+    key.update(np.asarray(shapely.get_type_id(shapes) if len(shapes) else [], dtype=np.int64).tobytes())
+    key.update(np.array([len(each) for each in written], dtype=np.int64).tobytes())
+    key.update(b"".join(written))
+    digest = key.digest()
+    if digest in _placements:
+        _placements.move_to_end(digest)
+        return _placements[digest]
+    placement = placer(anchors, obstacles, *arguments, **keywords)
+    _placements[digest] = placement
+    while len(_placements) > PLACEMENTS_KEPT:
+        _placements.popitem(last=False)
+    return placement
+
+
+def _as_written(value: object) -> object:
+    """``value`` for :func:`remembered`'s key: an array by its type, shape and bytes (its repr elides a long one's
+    middle), a sequence item by item."""
+    if isinstance(value, np.ndarray):
+        return ("array", value.dtype.str, value.shape, value.tobytes())
+    if isinstance(value, (list, tuple)):
+        return (type(value).__name__, *(_as_written(item) for item in value))
+    return value
 
 
 def spaced_box(text: Text, spacing: float = LABEL_SPACING) -> BaseGeometry:

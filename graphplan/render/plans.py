@@ -29,7 +29,7 @@ from ..mechanism import Mechanism
 from ..memo import OwnedMemo
 from ..motion import Motion
 from ..plans import PLAN_FIELD_MM, Plan, image_name
-from .labels import Anchor, obstacles_of, open_direction, place_labels
+from .labels import Anchor, obstacles_of, open_direction, place_labels, remembered
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
@@ -277,7 +277,7 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn))
                for name in names]
     anchors += [Anchor(paper(r), name, LETTER_SIZE, open_direction(paper(r), drawn)) for name, r in special_at.items()]
-    labels = place_labels(anchors + turn_anchors, obstacles_of(drawn))
+    labels = remembered(place_labels, anchors + turn_anchors, obstacles_of(drawn))
     return [Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
             Layer("mechanism-senses", tuple(senses)), Layer("mechanism-points", tuple(marks)),
             Layer("mechanism-leaders", labels.leaders), Layer("mechanism-labels", labels.texts)]
@@ -393,7 +393,7 @@ def _plan_layers(plan: Plan, kind: str, pole: str, mechanism: Mechanism) -> list
         at = _xy(plan.mm(group[0]))
         text = ", ".join(pole if letter == "p" else letter for letter in group)
         anchors.append(Anchor(at, text, LETTER_SIZE, open_direction(at, actions + figures + vectors)))
-    labels = place_labels(anchors, obstacles_of(drawn))
+    labels = remembered(place_labels, anchors, obstacles_of(drawn))
     return [Layer(f"{kind}-lines", tuple(actions + figures)), Layer(f"{kind}-vectors", tuple(vectors)),
             Layer(f"{kind}-points", tuple(dots)), Layer(f"{kind}-leaders", labels.leaders),
             Layer(f"{kind}-labels", labels.texts)]

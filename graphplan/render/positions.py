@@ -34,6 +34,7 @@ from .labels import (
     broken_under,
     obstacles_of,
     place_labels,
+    remembered,
     spaced_box,
     text_box,
 )
@@ -186,7 +187,7 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
     number: set farther out on a leader it was read as naming something else.  Those labels are placed again
     without the thin lines, then the rest round them."""
     obstacles = obstacles_of(drawn + number_leaders) + pins
-    first = place_labels(anchors, obstacles, standing=numbers, reach_farther=False)
+    first = remembered(place_labels, anchors, obstacles, standing=numbers, reach_farther=False)
     lines = [shape for shape in obstacles_of(drawn + number_leaders + list(first.leaders))
              if shape.geom_type == "LineString"]
     tree = STRtree(lines)
@@ -194,12 +195,11 @@ def _place_breaking_thin_lines(anchors: list[Anchor], every: list[Primitive], dr
                 if len(tree.query(text_box(text), predicate="intersects"))]
     if not breaking:
         return first, []
-    over = place_labels([anchors[index] for index in breaking],
-                        obstacles_of(_without(drawn, _breakable(every)) + number_leaders) + pins,
-                        standing=numbers)
+    over = remembered(place_labels, [anchors[index] for index in breaking],
+                      obstacles_of(_without(drawn, _breakable(every)) + number_leaders) + pins, standing=numbers)
     rest = [index for index in range(len(anchors)) if index not in breaking]
-    others = place_labels([anchors[index] for index in rest], obstacles + obstacles_of(list(over.leaders)),
-                          standing=[*numbers, *over.texts])
+    others = remembered(place_labels, [anchors[index] for index in rest],
+                        obstacles + obstacles_of(list(over.leaders)), standing=[*numbers, *over.texts])
     texts = dict(zip(breaking, over.texts)) | dict(zip(rest, others.texts))
     return Placement(tuple(texts[index] for index in range(len(anchors))), over.leaders + others.leaders), \
         list(over.texts)
