@@ -32,9 +32,11 @@ what they hold on paper and computes no mechanics.
 from __future__ import annotations
 
 import functools
+import hashlib
 import math
 import re
 import unicodedata
+from collections import OrderedDict
 from collections.abc import Callable, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass
 
@@ -304,9 +306,9 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     anchors: list[Anchor] = []
     # Only the links' heavy lines hide an arrow laid over them: a slide's thin axis is the line a slider's
     # loads act along, and the textbooks draw them on it; a slider's block is crossed every way from its pin.
-    bars = unary_union([LineString(item.points + item.points[:1] if item.closed else item.points) for item in links
-                        if isinstance(item, Polyline) and len(item.points) > 1 and item.stroke.width >= _LINK.width
-                        and item.fill is None]).buffer(1.0)
+    bars = _grown([LineString(item.points + item.points[:1] if item.closed else item.points) for item in links
+                   if isinstance(item, Polyline) and len(item.points) > 1 and item.stroke.width >= _LINK.width
+                   and item.fill is None], 1.0)
     blocks = unary_union([Polygon(item.points) for item in links
                           if isinstance(item, Polyline) and item.closed and item.fill is not None])
     shown = [force for force in forces if not _negligible(force.force, [other.force for other in forces])]
@@ -439,6 +441,32 @@ def _beside(point: complex, vector: complex, bars: BaseGeometry,
     middle = _c(bars.centroid.coords[0]) if not bars.is_empty else point
     return min(sides, key=lambda side: (crossed(side[2]), round(covered(side[0], side[1]), 6),
                                         ((middle - point) * side[2].conjugate()).real > 0))
+
+
+# How many grown unions :func:`_grown` keeps, the least recently asked given up first.
+GROWN_KEPT = 512
+_grown_unions: OrderedDict[bytes, BaseGeometry] = OrderedDict()
+
+
+def _grown(lines: Sequence[LineString], distance: float) -> BaseGeometry:
+    """The union of ``lines`` grown by ``distance`` (mm): the same shape given again for the very same lines.
+
+    Growing the union of a lever's lines takes a tenth of a second and more (its rays and bars overlap), and the
+    same lever is drawn again and again: for each force sheet tried, each locale, each test of a module.  Keyed by
+    the lines' WKB (their coordinates' bytes) and the distance's exact repr; GEOS grows the same lines the same.
+    """
+    if GROWN_KEPT <= 0:
+        return unary_union(list(lines)).buffer(distance)
+    written = shapely.to_wkb(np.array(list(lines), dtype=object)).tolist() if len(lines) else []
+    key = hashlib.sha256(repr((distance, [len(each) for each in written])).encode())
+    key.update(b"".join(written))
+    digest = key.digest()
+    if digest not in _grown_unions:
+        _grown_unions[digest] = unary_union(list(lines)).buffer(distance)
+        while len(_grown_unions) > GROWN_KEPT:
+            _grown_unions.popitem(last=False)
+    _grown_unions.move_to_end(digest)
+    return _grown_unions[digest]
 
 
 def _points_onto(start: complex, end: complex, point: complex) -> bool:
@@ -1232,10 +1260,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     def lines() -> BaseGeometry:
         # Made only for a load drawn onto its point or beside, which few are: grown from the union of all the
         # lever's lines, it took a quarter of a second a lever.
-        return unary_union([LineString(item.points + item.points[:1] if item.closed else item.points)
-                            for item in frame if isinstance(item, Polyline)]
-                           + [LineString(((0.0, 0.0), _xy(foot))) for foot in feet if abs(foot) >= ZERO_MM]
-                           ).buffer(0.8)
+        return _grown([LineString(item.points + item.points[:1] if item.closed else item.points)
+                       for item in frame if isinstance(item, Polyline)]
+                      + [LineString(((0.0, 0.0), _xy(foot))) for foot in feet if abs(foot) >= ZERO_MM], 0.8)
 
     for name, image, force, stroke, shift in named:
         if _negligible(force, [other for _, _, other, _, _ in named]):
