@@ -798,6 +798,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 # scenes some hundreds of times, a few dozen placements each.
 PLACEMENTS_KEPT = 4096
 _placements: OrderedDict[bytes, Placement] = OrderedDict()
+# The placer as this module defines it: one a test puts in its place (to record or count its calls) is asked every time.
+_PLACER = place_labels
 
 
 def remembered(placer: Callable[..., Placement], anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry],
@@ -814,10 +816,11 @@ def remembered(placer: Callable[..., Placement], anchors: Sequence[Anchor], obst
     bytes, with its type, which WKB writes a ring's as a line's), and the
     tuning of this module, which the tests change to compare placements made
     other ways.  A placer other than :func:`place_labels` (a recorder of the
-    calls, a test's) is asked every time, as is one whose tree a test has
-    replaced (to count its queries).
+    calls, a test's, also one set in its place in this module) is asked
+    every time, as is one whose tree a test has replaced (to count its
+    queries).
     """
-    if placer is not place_labels or STRtree is not shapely.STRtree or PLACEMENTS_KEPT <= 0:
+    if placer is not _PLACER or place_labels is not _PLACER or STRtree is not shapely.STRtree or PLACEMENTS_KEPT <= 0:
         return placer(anchors, obstacles, *arguments, **keywords)
     shapes = np.array(list(obstacles), dtype=object)
     written = shapely.to_wkb(shapes).tolist() if len(shapes) else []
