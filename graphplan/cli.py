@@ -367,7 +367,8 @@ def _turning_round(analysis: Analysis) -> str:
 def _print_outcomes(scene: Scene, analysis: Analysis | None) -> None:
     """The warnings ``run`` gives of its outcomes (a machine that stalls, a speed near resonance), which
     ``check`` gave none of: the dynamics integrated as the run integrates them."""
-    from .deliverables import MachineDynamics, chosen, outcome_warnings, scale_warnings
+    from .deliverables import chosen, outcome_warnings, scale_warnings
+    from .machine_dynamics import MachineDynamics
 
     pieces = chosen(scene, analysis)
     dynamics = MachineDynamics(analysis if analysis is not None else scene) if "dynamics" in pieces else None

@@ -45,7 +45,7 @@ from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
 # scene has their tables: a linkage's cold run never needs them, and they cost it 30 ms.
 if TYPE_CHECKING:
     from .analysis import Analysis
-    from .deliverables import MachineDynamics
+    from .machine_dynamics import MachineDynamics
     from .motion import Motion
     from .notebook import PositionPlans, RotorBalancing, VibrationResponse
     from .rotor_balancing import BalancingSpec
@@ -252,7 +252,7 @@ class Scene:
     def machine_dynamics(self) -> MachineDynamics:
         """The scene's ``[dynamics]`` worked out as a run works it out: ``.model`` (Je, Me over the cycle),
         ``.flywheel`` (None without δ) and ``.motion`` (the equation of motion integrated; None without a motor)."""
-        from .deliverables import MachineDynamics
+        from .machine_dynamics import MachineDynamics
 
         if self.dynamics is None:
             raise missing_part(self, "dynamics")

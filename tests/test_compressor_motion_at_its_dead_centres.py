@@ -19,7 +19,7 @@ import pytest
 from scipy.integrate import cumulative_trapezoid, quad, solve_ivp
 
 from graphplan.analysis import analyse
-from graphplan.deliverables import MachineDynamics
+from graphplan.machine_dynamics import MachineDynamics
 from graphplan.machine_motion import PiecewiseMoment
 from graphplan.machine_motion.moment import exact_jumps
 from graphplan.scene import loads

@@ -116,7 +116,7 @@ def test_a_machine_that_never_starts_shows_the_motors_torque_it_is_set_against(l
 
     from matplotlib import pyplot
 
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.locale import strings
     from graphplan.report.motion_plots import motion_plot
     from graphplan.scene import load

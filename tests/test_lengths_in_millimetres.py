@@ -157,7 +157,7 @@ def _compressor_in_mm(tmp_path, drawing: str = ""):
 def test_the_energy_mass_diagram_of_steep_tangents_stays_about_its_curve(tmp_path):
     """Tangents at ψ ≈ 89.9° cut three heights of ΔT beyond the curve each way made the diagram 685 mm tall, which no
     A1 sheet held, and the run was refused; cut a little past the curve's band, it stays near the curve's size."""
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.render import dynamics as dynamics_layout
     from graphplan.render.primitives import Polyline, bounds_of
 

@@ -32,7 +32,7 @@ NOTE_FIGURE_HEIGHT_MM = 230.0
 
 
 def _dynamics(case: str, locale: str):
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.scene import load
     from graphplan.starters import starter
 

@@ -24,7 +24,7 @@ FIGURE_HEIGHT_WITH_LEGEND_ON_THE_PLOT = 8.0
 def press():
     """The flywheel starter's punching press: Mr steps up over a third of the turn, and the flywheel's estimate of
     the speed runs beside the integrated one, the two curves across the whole plot."""
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.scene import load
     from graphplan.starters import starter
 

@@ -336,7 +336,7 @@ BRAKE_TORQUE, BRAKE_AT, MOTOR_TORQUE, BRAKED_INERTIA = 80.0, 0.5, 150.0, 2.0
 def braked_dynamics(brake: str, motor_torque: float = MOTOR_TORQUE):
     import tomllib
 
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.scene import load
 
     table = ", ".join(f"[{angle:g}, {moment:g}]" for angle, moment in BRAKED_TABLE)

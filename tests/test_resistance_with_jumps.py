@@ -174,7 +174,7 @@ def test_a_linkage_whose_load_acts_over_part_of_the_stroke_gives_the_equation_of
     from pathlib import Path
 
     from graphplan.analysis import analyse
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.loads import activity
     from graphplan.motion import solve
     from graphplan.scene import loads

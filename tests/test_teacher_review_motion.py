@@ -153,7 +153,7 @@ def _triangle(degrees):
 
 def test_a_load_diagrams_vertices_are_corners_of_mr_not_splined_through():
     from graphplan import load_text
-    from graphplan.deliverables import MachineDynamics
+    from graphplan.machine_dynamics import MachineDynamics
 
     machine = MachineDynamics(load_text(TRIANGLE_SCENE)).machine
     for degrees in (0.5, 89.5, 90.5, 179.5, 180.5, 359.5, 45.0, 270.0):

@@ -22,7 +22,7 @@ from scipy.optimize import brentq
 
 from graphplan.analysis import analyse
 from graphplan.cli import main
-from graphplan.deliverables import MachineDynamics
+from graphplan.machine_dynamics import MachineDynamics
 from graphplan.errors import SceneError
 from graphplan.scene import loads
 

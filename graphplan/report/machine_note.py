@@ -26,7 +26,7 @@ from .markdown import literal
 # the plots') are imported by the sections that write them: every note imports this module, and a linkage's has
 # neither, whose cold run they cost 35 ms.
 if TYPE_CHECKING:
-    from ..deliverables import MachineDynamics
+    from ..machine_dynamics import MachineDynamics
     from ..rotor_balancing import BalancingResult
     from ..rotor_lengths import LengthsInMillimetres
     from ..scene import Scene

@@ -79,7 +79,7 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
                   figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
-    ``dynamics`` (a :class:`graphplan.deliverables.MachineDynamics`) adds the section on the
+    ``dynamics`` (a :class:`graphplan.machine_dynamics.MachineDynamics`) adds the section on the
     machine's dynamics: the equivalent model, the flywheel and, with a motor, the motion; a scene
     with ``[balancing]`` or ``[vibration]`` has a section on its rotor or on its vibration too.  A
     scene without a linkage has no ``analysis``: its note is those sections alone, of ``scene``.
