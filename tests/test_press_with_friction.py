@@ -499,3 +499,28 @@ def test_the_lever_s_arms_listed_over_several_lines_are_parted_by_commas_at_each
                     assert line.endswith(","), (line, after)
             listed = max(listed, sum(len(ARM.findall(line)) for line in arms))
     assert listed > 4  # more than the four a caption line lists: the break between the lists is seen
+
+
+def test_a_couple_alone_on_a_guide_is_written_signed_as_the_note_writes_it(tmp_path):
+    """The Scotch yoke's guide at B holds R34's moment with R14 = 0, a couple alone with no line and no x: the note
+    writes ΣMB(4) = R14·x + 95.518 = 0 ⇒ R14·x = −95.518, R14·x the couple, signed.  The sheet's sign turned by the
+    moment, as for an x it writes as a length, wrote −R14·x + M(R34) = 0 beside it: R14·x = +95.518."""
+    analysis = analyse(load_text(Path("fixtures/scotch_yoke.toml").read_text(encoding="utf-8")))
+    checked = 0
+    for position in analysis.plans:
+        equation = next(each for group in position.forces.groups for each in group.moments
+                        if each.unknown == "R14·x")
+        if equation.value == 0:
+            continue
+        others = sum(term.moment for term in equation.terms)
+        assert math.isclose(equation.value, -others, rel_tol=1e-12)   # the couple is the rest's moment turned round
+        layers = force_layout.layout(force_sheet(analysis, position))
+        caption = " ".join(item.text for layer in layers if layer.name.endswith("-caption") for item in layer.items)
+        line = re.search(r"ΣMB\(4\):[^=]*= 0", caption).group(0)
+        # R14·x + M(R34) = 0 with M(R34) signed by its moment: R14·x = −M(R34), the value the note gives.
+        sign = re.match(r"ΣMB\(4\): (−?)R14·x ([+−]) M\(R34\) = 0$", line)
+        assert sign is not None, line
+        assert sign.group(1) == ""
+        assert (sign.group(2) == "+") == (others > 0)
+        checked += 1
+    assert checked == 2

@@ -910,7 +910,10 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
             # offset along the guide written here put x = −3.301 mm under a +R16·x on a press's downward guide,
             # which read with R16 = 2224 N doubled the friction moment Mf56 where it should balance it.
             shift = f",  x = {significant(1000.0 * abs(found.offset))} {text['millimetre']}"
-        return f"{about} {'−' if equation.value < 0 else ''}{unknown} {terms} = 0{shift}"
+        # Where the reaction is nought the guide holds a couple alone, with no line and no x: R14·x then stands for
+        # that couple, signed, as the note writes it (ΣMB(4) = R14·x + 95.518 = 0 ⇒ R14·x = −95.518).
+        sign = "−" if shift and equation.value < 0 else ""
+        return f"{about} {sign}{unknown} {terms} = 0{shift}"
     if unknown == "Mb":
         return f"{about} {' '.join(['Mb', *parts])} = 0,  Mb = {significant(equation.value)} {text['newton_metre']}"
     # The unknown's sense as first assumed: its moment balances the others'.
