@@ -133,7 +133,7 @@ def test_forces_md_gives_the_lever_with_friction_once_per_settled_position_and_t
     assert written.count("Zhukovsky's lever with the pairs' friction loads") == len(analysis.plans)
     # The note works the loads out and gives the lever in its own words, not twice.
     assert "Zhukovsky's lever with the pairs' friction loads" not in note
-    assert note.count("Zhukovsky's lever with these loads") == len(analysis.plans)
+    assert note.count("Zhukovsky's lever with the friction loads above") == len(analysis.plans)
 
 
 @pytest.mark.parametrize(("only", "lever"), [("lever", True), ("forces", False), ("forces,lever", True)])

@@ -562,7 +562,7 @@ def test_the_note_works_out_each_friction_load_and_checks_them_on_the_lever():
                 assert f"ρ{at} = f·r = {n(pair.spec.f)}·{n(pair.spec.radius)} = {n(pair.radius)} m" in note
         lever = plan.lever_with_friction.balancing
         assert lever == pytest.approx(rubbing.balancing, rel=1e-9)
-        assert f"Zhukovsky's lever with these loads gives Mb = {n(lever)} N·m" in note
+        assert f"Zhukovsky's lever with the friction loads above gives Mb = {n(lever)} N·m" in note
 
 
 @pytest.mark.parametrize("given", [True, False])

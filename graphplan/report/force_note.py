@@ -10,12 +10,13 @@ plan letters it shares; the tables are those ``forces.md`` prints (:mod:`graphpl
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 from typing import Protocol
 
 import numpy as np
 
-from .. import load_diagrams
+from .. import load_diagrams, settling
 from ..analysis import Analysis, PlanPosition
 from ..mechanism import Mechanism
 from ..plans import Plan
@@ -155,13 +156,20 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
         note.para(f"**{text['forces_friction']}{text['full_stop']}** " + " ".join(lines))
         if not plan.with_friction.locked:
             _friction_loads(note, plan)
+            # The same writer as without friction, given the records of the last construction with friction: each
+            # group's moment equations and polygon with the pairs' friction loads among its loads.
+            for group in plan.with_friction.groups:
+                _force_group(note, plan, group, friction=True)
+            _friction_lever(note, plan)
             note.figure(f"forces_friction_{plan.number}.svg",
                         note.t("tb_sheet_forces_friction_position", number=plan.number))
 
 
 def _friction_loads(note: Writer, plan: PlanPosition) -> None:
-    """Each pair's friction load worked out at the settled reactions, and the lever that checks them."""
+    """How the friction loads were found (the construction repeated until the reactions settle), and each pair's
+    friction load worked out at the settled reactions."""
     text, rubbing = note.text, plan.with_friction
+    note.para(_settling(note, rubbing.iterations))
     lines = []
     for row in force_report.friction_load_rows(note.analysis, plan):
         pair, where, name = row.pair, row.where, row.name
@@ -187,6 +195,25 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
                          f"ρ{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))} = "
                          f"{note.n(row.value)} {text['newton_metre']}{note.with_sense(row.acting.real)}")
     note.para(note.t("note_friction_loads"), *lines)
+
+
+def _settling(note: Writer, solves: int) -> str:
+    """What settling.settle did: the construction repeated, each time with the friction loads of the reactions the
+    last one found, from those without friction; or, where that had not settled after its most repetitions, the
+    friction brought in by shares with Newton's method."""
+    tolerance = f"10{_superscript(round(math.log10(settling.CONVERGED)))}"
+    if solves <= settling.MAX_ITERATIONS:
+        return note.t("note_friction_passes", passes=solves, tolerance=tolerance)
+    return note.t("note_friction_shares", most=settling.MAX_ITERATIONS, shares=settling.SHARE_STEPS, solves=solves)
+
+
+def _superscript(exponent: int) -> str:
+    return str(exponent).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+
+
+def _friction_lever(note: Writer, plan: PlanPosition) -> None:
+    """Zhukovsky's lever with the friction loads, against the polygons with friction."""
+    rubbing = plan.with_friction
     lever = plan.lever_with_friction
     name, unit = force_report.balancing_symbol(note.analysis)
     note.para(note.t("note_friction_lever", name=name, value=note.n(lever.balancing), unit=unit,
@@ -201,11 +228,15 @@ def _direction(note: Writer, force: complex) -> str:
     return f" {force_report.direction(force, note.mark)}"
 
 
-def _force_group(note: Writer, plan: PlanPosition, group) -> None:
+def _force_group(note: Writer, plan: PlanPosition, group, friction: bool = False) -> None:
+    """A group's moment equations, polygon and reactions, of the analysis without friction or (``friction``) of the
+    last construction with it, whose loads hold the pairs' friction loads."""
     text = note.text
     driver = group.label.startswith("I(")
+    # With friction the headings and captions say so: the same group is worked out twice in a position.
+    kind = "_friction" if friction else ""
     key = "note_driver_forces" if driver else "note_group_forces"
-    note.para(f"**{note.t(key, group=group.label)}**")
+    note.para(f"**{note.t(key + kind, group=group.label)}**")
     whole = next((equation for equation in group.moments if equation.links), None)
     if whole is not None:  # a triad: about Assur's point, through which two unknown lines pass
         note.para(_assur_point(note, group, whole))
@@ -214,7 +245,7 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
     loads = {load.name: load for load in group.loads}
     lines = []
     for equation in group.moments:
-        line = f"- {_moment_equation(note, equation, loads)}"
+        line = f"- {_moment_equation(note, equation, loads, group)}"
         if reaction := force_report.held_as_couple_alone(group, equation):
             line += note.text["semicolon"] + note.t("note_couple_alone", name=reaction)
         lines.append(line)
@@ -238,11 +269,14 @@ def _force_group(note: Writer, plan: PlanPosition, group) -> None:
             words = note.t("note_role_load_short", least=least) if role == "load" else \
                 words + text["semicolon"] + note.t("note_role_short", least=least)
         rows.append([vector.name, force_report.polar(force, note.mark), length, words])
+    sums = _polygon_sums(note, group)
     note.para(note.t("note_polygon", equation=text["separator"].join(polygon.equations), scale=note.n(scale),
-                     unit=text["unit_force_scale"]) + " " + note.t("note_polygon_table_lead", number=note.next_table))
+                     unit=text["unit_force_scale"])
+              + (" " + note.t("note_polygon_sums", sums=sums) if sums else "")
+              + " " + note.t("note_polygon_table_lead", number=note.next_table))
     header = [note.t("column_force"), f"{note.t('column_value')}{text['comma']}{text['newton']} ∠",
               f"{note.t('column_length')}{text['comma']}{text['millimetre']}", note.t("column_role")]
-    caption = note.t("note_polygon_table_driver" if driver else "note_polygon_table", group=group.label,
+    caption = note.t(("note_polygon_table_driver" if driver else "note_polygon_table") + kind, group=group.label,
                      number=plan.number)
     note.table(caption, header, rows, "lrrl", lead=None)
     if group.found:
@@ -291,7 +325,18 @@ def _projection(note: Writer, equation) -> str:
             f"{equation.unknown} = {note.n(equation.value)} {note.text['newton']}")
 
 
-def _moment_equation(note: Writer, equation, loads: Mapping[str, object]) -> str:
+def _polygon_sums(note: Writer, group) -> str:
+    """``ΣF5 = G5 + Fu5; ΣF6 = G6 + Fu6 + F6 + Ff16``: the forces each ΣF of the polygon's equations lays off, the
+    reactions handed back and the pairs' friction forces among them, as the polygon's table lists them."""
+    sums = []
+    for link in dict.fromkeys(int(found) for found in re.findall(r"ΣF(\d+)", group.polygon.equation)):
+        names = [load.name for load in group.loads if load.link == link and load.is_force and load.force != 0]
+        if names:
+            sums.append(f"ΣF{link} = {' + '.join(names)}")
+    return note.text["semicolon"].join(sums)
+
+
+def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=None) -> str:
     """ΣMB(3) = −R23τ·0.55 − 34.254 + 39.287 + 9.34 = 0 ⇒ R23τ = … with every load's moment F·h."""
     text = note.text
     total = sum(term.moment for term in equation.terms)
@@ -316,6 +361,13 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object]) -> str
         # A slide's normal reaction with no couple to carry: it passes through the moment centre, its joint.
         line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
                 + note.t("note_couple_through", name=equation.unknown[:-2], point=equation.about))
+    elif (shifted := _shifted_reaction(group, equation)) is not None:
+        # A slide's normal reaction off its joint by x, a length, as on the force sheet: R·x signed by its moment,
+        # which balances the rest (a pin's friction moment Mf56 on the ram), and x its size over |R|.
+        size, force = abs(equation.value), abs(shifted.force)
+        line = (f"ΣM{equation.about}({equation.bodies}) = {_sign(equation.value)}{equation.unknown}{terms} = 0 ⇒ "
+                f"{equation.unknown} = {note.n(size)} {unit}{text['comma']}x = {note.n(size)}/{note.n(force)} = "
+                f"{note.n(size / force)} {text['unit_m']} = {note.n(1000.0 * size / force)} {text['millimetre']}")
     elif couple:
         line = (f"ΣM{equation.about}({equation.bodies}) = {equation.unknown}{terms} = 0 ⇒ "
                 f"{equation.unknown} = {note.n(equation.value)} {unit}")
@@ -328,6 +380,15 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object]) -> str
         if equation.value < 0:
             line += " " + note.t("note_sense_reversed", name=equation.unknown)
     return note.text["semicolon"].join([*parts, line])
+
+
+def _shifted_reaction(group, equation):
+    """The reaction of an ``R16·x`` equation where it is off its joint by x (its couple and itself not nought), or
+    None: where the reaction is nought the guide holds the couple alone, and R·x stands for it, signed."""
+    if group is None or not equation.unknown.endswith("·x") or force_report.held_as_couple_alone(group, equation):
+        return None
+    found = next((item for item in group.found if item.name == equation.unknown[:-2]), None)
+    return found if found is not None and abs(found.force) > 0 else None
 
 
 def _sign(value: float) -> str:
