@@ -156,3 +156,19 @@ def test_the_russian_and_chinese_notes_carry_the_same_equations_with_friction(na
     note = "".join(friction_blocks(name, locale))
     assert text["note_group_forces_friction"].format(group="II(5,6)") in note
     assert math.isfinite(analysis_of(name, locale).plans[0].with_friction.balancing)
+
+
+@pytest.mark.parametrize(("name", "k"), CASES)
+def test_the_ram_s_couple_is_signed_and_its_x_measured_as_the_force_sheet_with_friction_writes_them(name, k):
+    """ΣME(6) = R16·x − 7.3395 = 0 in the note beside ΣME(6): R16·x − Mf56 = 0, x = 3.301 mm on the sheet: the same
+    sign before R16·x, the same length x."""
+    from test_press_with_friction import analysis_of as drawn_analysis_of
+    from test_press_with_friction import ram_equation
+
+    drawn = drawn_analysis_of(name)
+    sheet = re.match(r"ΣME\(6\): (−?)R16·x [+−] Mf56 = 0,\s+x = ([\d.]+) mm", ram_equation(drawn, drawn.plans[k]))
+    assert sheet
+    note = next(match for match, _ in equations(friction_blocks(name, "en")[k]) if match["unknown"] == "R16·x")
+    assert note["sign"] == sheet[1]
+    x = re.search(rf"= ({NUMBER}) mm", note["rest"])
+    assert value_of(x[1]) == pytest.approx(float(sheet[2]), rel=1e-3)

@@ -21,6 +21,7 @@ from ..analysis import Analysis, PlanPosition
 from ..mechanism import Mechanism
 from ..plans import Plan
 from ..render.forces import enlarged_lever_scale, too_short_to_draw
+from ..render.numerals import power_of_ten
 from ..render.plans import ZERO_MM
 from ..scales import format_scale
 from ..wording import balancing_load
@@ -195,20 +196,28 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
                          f"ρ{where}·{pair.reaction} = {note.product(note.n(row.factor), note.n(row.reaction))} = "
                          f"{note.n(row.value)} {text['newton_metre']}{note.with_sense(row.acting.real)}")
     note.para(note.t("note_friction_loads"), *lines)
+    if both := _both_links(note, plan):
+        note.para(both.strip())
 
 
 def _settling(note: Writer, solves: int) -> str:
     """What settling.settle did: the construction repeated, each time with the friction loads of the reactions the
     last one found, from those without friction; or, where that had not settled after its most repetitions, the
     friction brought in by shares with Newton's method."""
-    tolerance = f"10{_superscript(round(math.log10(settling.CONVERGED)))}"
     if solves <= settling.MAX_ITERATIONS:
-        return note.t("note_friction_passes", passes=solves, tolerance=tolerance)
+        return note.t("note_friction_passes", passes=solves, tolerance=power_of_ten(settling.CONVERGED, 1))
     return note.t("note_friction_shares", most=settling.MAX_ITERATIONS, shares=settling.SHARE_STEPS, solves=solves)
 
 
-def _superscript(exponent: int) -> str:
-    return str(exponent).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+def _both_links(note: Writer, plan: PlanPosition) -> str:
+    """That a pair's friction load acts back on its other link, named with the links swapped (Mf65 = −Mf56), as the
+    groups' equations take it on the link each group holds; said with the first pair whose load back is in them."""
+    acting = {load.name for group in plan.with_friction.groups for load in group.loads}
+    for pair in note.analysis.friction:
+        on_target, on_source = pair.load_names
+        if on_source in acting:
+            return " " + note.t("note_friction_both_links", load=on_target, back=on_source, link=pair.source)
+    return ""
 
 
 def _friction_lever(note: Writer, plan: PlanPosition) -> None:
