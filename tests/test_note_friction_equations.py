@@ -75,7 +75,11 @@ def test_each_moment_equation_with_friction_balances_with_the_value_the_analysis
     plan = analysis.plans[k]
     rubbing = plan.with_friction
     assert rubbing is not None and not rubbing.locked
-    written = equations(friction_blocks(name, "en")[k])
+    block = friction_blocks(name, "en")[k]
+    # How the friction loads were found: the passes the analysis with friction records, each from the last one's.
+    assert rubbing.iterations > 1
+    assert f"settled after {rubbing.iterations} passes" in block
+    written = equations(block)
     # Every equation of every group of the last pass with friction is written, in the order solved.
     records = [equation for group in rubbing.groups for equation in group.moments]
     assert [match["unknown"] for match, _ in written] == [equation.unknown for equation in records]

@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import load_diagrams, settling
 from ..analysis import Analysis, PlanPosition
+from ..locale import Count
 from ..mechanism import Mechanism
 from ..plans import Plan
 from ..render.forces import enlarged_lever_scale, too_short_to_draw
@@ -161,6 +162,10 @@ def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
             # group's moment equations and polygon with the pairs' friction loads among its loads.
             for group in plan.with_friction.groups:
                 _force_group(note, plan, group, friction=True)
+            # Checked as the polygons without friction are: against every equilibrium equation with friction at once.
+            if analysis.with_friction is not None:
+                note.captioned(note.t("note_friction_reactions_table", number=plan.number),
+                               force_report.friction_reaction_lines(analysis, plan, note.mark))
             _friction_lever(note, plan)
             note.figure(f"forces_friction_{plan.number}.svg",
                         note.t("tb_sheet_forces_friction_position", number=plan.number))
@@ -205,8 +210,8 @@ def _settling(note: Writer, solves: int) -> str:
     last one found, from those without friction; or, where that had not settled after its most repetitions, the
     friction brought in by shares with Newton's method."""
     if solves <= settling.MAX_ITERATIONS:
-        return note.t("note_friction_passes", passes=solves, tolerance=power_of_ten(settling.CONVERGED, 1))
-    return note.t("note_friction_shares", most=settling.MAX_ITERATIONS, shares=settling.SHARE_STEPS, solves=solves)
+        return note.t("note_friction_passes", passes=Count(solves), tolerance=power_of_ten(settling.CONVERGED, 1))
+    return note.t("note_friction_shares", most=settling.MAX_ITERATIONS, shares=settling.SHARE_STEPS, solves=Count(solves))
 
 
 def _both_links(note: Writer, plan: PlanPosition) -> str:
