@@ -63,6 +63,7 @@ from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
 from .labels import (
     Anchor,
     Placement,
+    arrow_shafts,
     cover_one_another,
     obstacles_of,
     open_direction,
@@ -1320,6 +1321,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # within reach of its arrow is off the lines) is given under the lever too, by the point its arrow stands at,
     # one at a time, each point keeping one arrow unnamed at most: the only arrow at s6 without a name is G6's.
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
+    shafts = [LineString((item.start, item.end)) for item in arrows if isinstance(item, Arrow)]
     crowded: list[Anchor] = []
     lettered = list(arm_anchors)
     loads, points = anchors[:len(load_points)], anchors[len(load_points):]
@@ -1328,13 +1330,14 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         labels = _lettered(loads + points + lettered, figure, reach_farther=False)
         if near := [anchor for anchor, placed in zip(lettered, labels.texts[len(loads) + len(points):])
                     if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
-                    or _on_a_line(anchor, placed, drawn_lines, labels.leaders)]:
+                    or _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]:
             crowded += near
             lettered = [anchor for anchor in lettered if anchor not in near]
             continue
         taken = {load_points[anchor.text] for anchor in unnamed}
         lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != "Fb"
-                 and load_points[anchor.text] not in taken and _on_a_line(anchor, placed, drawn_lines, labels.leaders)]
+                 and load_points[anchor.text] not in taken
+                 and _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
         if not lying:
             break
         unnamed.append(lying[0])
@@ -1378,15 +1381,24 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
     centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
-    return remembered(place_labels, anchors, obstacles_of(figure) + spots, reach_farther=reach_farther)
+    # A leader across an arrow reads as part of it, or as naming its load: it costs as one across its head.
+    return remembered(place_labels, anchors, obstacles_of(figure) + spots, reach_farther=reach_farther,
+                      shafts=arrow_shafts(figure))
 
 
-def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline]) -> bool:
+def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline],
+               shafts: Sequence[BaseGeometry] = ()) -> bool:
     """Whether the placed label of ``anchor`` lies on one of the drawn ``lines`` or on another label's leader (its
-    own starts by its point)."""
+    own starts by its point), or is led to across one of the ``shafts`` (the loads' arrows)."""
     box = text_box(text)
     others = [LineString(leader.points) for leader in leaders if math.dist(leader.points[0], anchor.at) > 1.0]
-    return any(box.intersects(line) for line in [*lines, *others])
+    if any(box.intersects(line) for line in [*lines, *others]):
+        return True
+    # Its own leader: from by its point to by its box (the placer stops it short of the box).  Across an arrow it
+    # reads as part of that arrow, or as naming that load, as a name on a line reads as naming the line.
+    own = [LineString(leader.points) for leader in leaders if math.dist(leader.points[0], anchor.at) <= 1.0
+           and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
+    return any(leader.intersects(shaft) for leader in own for shaft in shafts)
 
 
 def _negligible(force: complex, forces: Sequence[complex]) -> bool:

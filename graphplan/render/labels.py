@@ -94,6 +94,18 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     return [shapes[kind][number] for kind, number in kinds]
 
 
+def arrow_shafts(items: Sequence[Primitive]) -> list[bool]:
+    """Which of the shapes :func:`obstacles_of` makes of ``items``, in its order, are arrows' shafts (``place_labels``'
+    ``shafts``)."""
+    shafts: list[bool] = []
+    for item in items:
+        if isinstance(item, Arrow):
+            shafts += (True, False)  # the shaft, the head
+        elif (isinstance(item, Polyline) and len(item.points) >= 2) or isinstance(item, (Circle, Text)):
+            shafts.append(False)
+    return shafts
+
+
 def _shapes(kind: str, given: list) -> np.ndarray:
     """:func:`obstacles_of`'s shapes of one ``kind``, each of its ``given`` (points, a circle, a text's extent)."""
     if kind == "circle":
@@ -138,6 +150,9 @@ COVER = 10.0
 HEAVY = 3.0
 # A thin leader crossing a drawn line hides less than a letter on it.
 LEADER_CROSSING = 4.0
+# A leader across a load's arrow (``place_labels``' ``shafts``) counts as crossing this many thin lines, as it does
+# the arrow's head: it reads as part of the arrow, or as pointing at that load, where it crosses a thin line plainly.
+SHAFT_CROSSED = 15.0
 MISLEADING = 8.0
 # "About as near": a label this much farther (mm) from another point than from its own still misleads.
 MISLEADING_MARGIN = 0.8
@@ -215,7 +230,7 @@ LABEL_GAP_MM = 1.2
 
 def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], gap: float = LABEL_GAP_MM,
                  standing: Sequence[Text] = (), off_lines: bool = False,
-                 reach_farther: bool | Sequence[bool] = True) -> Placement:
+                 reach_farther: bool | Sequence[bool] = True, shafts: Sequence[bool] = ()) -> Placement:
     """Texts for ``anchors``, each at the cheapest spot around its point, and the leader lines of those led to it.
 
     Another label or leader is never covered when any spot avoids it.  A
@@ -267,6 +282,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     a thin arm among the star of arms at a point it reads as naming
     another).
 
+    ``shafts`` says which of the ``obstacles`` (the first ones, in their
+    order; :func:`arrow_shafts`) are arrows' shafts: a leader across one
+    costs as much as across its head (:data:`SHAFT_CROSSED` lines), for a
+    name led across a load's arrow reads as naming that load.
+
     ``off_lines`` keeps the labels off the drawn lines wherever any spot,
     farther out too, does, for a drawing of few lines with room round them
     (a balancing polygon): a long name on the middle of a side inside the
@@ -281,6 +301,11 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     """
     fixed = list(obstacles)
     weights = np.array([HEAVY if shape.geom_type in ("Polygon", "MultiPolygon") else 1.0 for shape in fixed])
+    # What each obstacle weighs crossed by a leader: as covered by a box, but an arrow's shaft as its head.
+    shafts_met = np.flatnonzero(np.asarray(shafts, dtype=bool)[:len(fixed)])
+    fixed_shafts = np.array([fixed[k] for k in shafts_met], dtype=object)
+    crossed_weights = weights.copy()
+    crossed_weights[shafts_met] = SHAFT_CROSSED
     pieces, owners = _pieces(fixed)
     tree = STRtree(pieces) if fixed else None
     at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
@@ -293,16 +318,23 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     for number, text in enumerate(standing):
         placed_boxes[-1 - number] = spaced_box(text)
 
-    def covered(shapes: np.ndarray) -> np.ndarray:
+    def met(shapes: np.ndarray) -> np.ndarray:
+        """Which drawn shapes each of ``shapes`` meets, as a table (a shape by an obstacle)."""
+        table = np.zeros((len(shapes), len(fixed)), dtype=bool)
         if tree is None:
-            return np.zeros(len(shapes))
-        hit, piece = tree.query(shapes, predicate="intersects")
+            return table
         # A shape covers a line once however many of its segments it covers: which shape meets which obstacle, as a
         # table (a few hundred spots by a few hundred obstacles), costs less than sorting the pairs to drop the
-        # repeated ones.  The weights are whole numbers, so their sum is exact in any order.
-        met = np.zeros((len(shapes), len(fixed)), dtype=bool)
-        met[hit, owners[piece]] = True
-        return met @ weights
+        # repeated ones.
+        hit, piece = tree.query(shapes, predicate="intersects")
+        table[hit, owners[piece]] = True
+        return table
+
+    def covered(table: np.ndarray, leaders_from: int) -> np.ndarray:
+        """What the drawn shapes each shape of ``table`` (:func:`met`'s) meets weigh together: those before
+        ``leaders_from`` covering them, the leaders after it crossing them (``crossed_weights``).  The weights are
+        whole numbers, so their sums are exact in any order."""
+        return np.concatenate((table[:leaders_from] @ weights, table[leaders_from:] @ crossed_weights))
 
     def others_than(placed: dict[int, BaseGeometry], own: int) -> tuple[np.ndarray, np.ndarray]:
         """The shapes of ``placed`` but ``own``'s, and their bounds: found once for the boxes and the leaders of all
@@ -385,7 +417,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         led = np.flatnonzero(~beside)
         lines = _leaders(anchor.at, candidates[led])
         # What the boxes and the leaders cover, in one query of the tree.
-        covers = covered(np.concatenate((shapes, lines)))
+        table = met(np.concatenate((shapes, lines)))
+        covers = covered(table, len(shapes))
         cost = COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         # The leader says which point the label names: standing near a neighbour misleads less.
         cost[beside] += MISLEADING * misleading[beside]
@@ -395,7 +428,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # it: beside the point already, it has no leader to draw.
         cost[led[_box_distances(candidates[led], at[index:index + 1])[:, 0] == 0.0]] += OVERLAP
         cost += KEPT_OFF * _kept_off(anchor, candidates, ~beside)
-        covering = covers[:len(shapes)]
+        covering = covers[:len(shapes)].copy()
+        # A leader across a load's arrow counts as a line covered, as its name on the arrow would: the label is moved
+        # off it, or reaches out, as one lying on a line is (``letter``).
+        covering[led] += table[len(shapes):, shafts_met].sum(axis=1)
         if off_lines:
             cost[covering > 0] += LINE_COVERED
         line_bounds = shapely.bounds(lines)
@@ -489,7 +525,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         if not beside[best]:
             leader_lines[index] = lines[best - led[0]]
         paid[index] = float(cost[best])
-        where[index] = (kind, best, float(spot.covering[best]))
+        # What it covers, its leader crossing loads' arrows counted as lines covered (:func:`costed_on_drawing`), and
+        # what its box covers alone.
+        across = 0.0
+        if index in leader_lines and len(shafts_met):
+            across = float(shapely.intersects(leader_lines[index], fixed_shafts).sum())
+        where[index] = (kind, best, float(spot.covering[best]), float(spot.covering[best]) - across)
 
     def place(index: int) -> None:
         """Put the label of ``index`` at its cheapest spot among the labels placed so far (but itself)."""
@@ -532,7 +573,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         cheapest of finer spots round its point (twice the directions, a ring between the two beside it, no farther
         out than those led to it), and else to one of those that a single neighbouring label stands on, when that
         neighbour finds another spot covering no more, and the two cost less together."""
-        kind, best, covers = where[index]
+        kind, best, covers, _ = where[index]
         # Between lines meeting at a point a clear spot often lies between two of the standard ones.
         spot = spots(index, "fine")
         cost, covering, clashing = spot.cost, spot.covering, spot.clashing
@@ -599,16 +640,19 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     reachable_on_drawing: dict[tuple[int, bool, tuple[float, ...], bool], tuple] = {}
 
     def reachable(index: int, leading: bool = True, shares: tuple[float, ...] = REACH_SHARES,
-                  from_line: bool = False):
+                  from_line: bool = False, across_shafts: bool = False):
         """The spots within reach of the label of ``index`` (:func:`reach_out`'s): their costs (as :class:`_Spots`),
         their boxes as shapes, which are led, and which may hold it as far as the drawing goes: the box covering
         nothing, and standing where the anchor lets it (none within its ``keep_off``, no leader where not
         ``leading``, no long name led from a spot that reaches back over its own point); led from its point alone, or
-        (``from_line``) from any point of the line it names beside which it may stand too."""
+        (``from_line``) from any point of the line it names beside which it may stand too; its leader crossing no
+        load's arrow (``shafts``) but ``across_shafts``."""
         key = (index, leading, shares, from_line)
         if key not in reachable_on_drawing:
             reachable_on_drawing[key] = reachable_drawn(*key)
-        spot, shapes, is_led, usable = reachable_on_drawing[key]
+        spot, shapes, is_led, usable, across = reachable_on_drawing[key]
+        if not across_shafts:
+            usable = usable & ~across
         crossings = LEADERS_CROSSING * crossing_placed(spot.leaders, leader_lines, index)
         cost = spot.cost.copy()
         cost[spot.led] += crossings
@@ -641,8 +685,13 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         lines = np.concatenate([_leaders(tuple(point), led_boxes[k * len(led_offsets):(k + 1) * len(led_offsets)])
                                 for k, point in enumerate(starts)])
         shapes = shapely.box(*candidates.T)
-        covers = covered(np.concatenate((shapes, lines)))
+        table = met(np.concatenate((shapes, lines)))
+        covers = covered(table, len(shapes))
         usable = covers[:len(shapes)] == 0
+        # Which spots' leaders cross a load's arrow, reading as part of it or as naming its load: not clear either
+        # unless nothing else is (:func:`reachable`).
+        across = np.zeros(len(candidates), dtype=bool)
+        across[led] = table[len(shapes):, shafts_met].any(axis=1)
         # A long name set off obliquely reaches back over its own point: beside it already, with no leader to draw.
         usable[led] &= _box_distance(led_boxes, led_points) > 0.0
         usable &= ~_kept_off(anchor, candidates, is_led)
@@ -656,8 +705,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                                + SET_APART * (reach_rings[led_ring] >= apart_from)
                                + LEADER_CROSSING * covers[len(shapes):]
                                + MISLEADING / 2 * misleading[led]))
-        spot = _Spots(candidates, ~is_led, led, lines, cost, np.zeros(len(candidates)), np.zeros(len(candidates)))
-        return spot, shapes, is_led, usable
+        # A usable spot's box covers nothing: it covers what its leader crosses of the loads' arrows, as the spots
+        # costed_on_drawing costs.
+        spot = _Spots(candidates, ~is_led, led, lines, cost, across.astype(float), np.zeros(len(candidates)))
+        return spot, shapes, is_led, usable, across
 
     def tried(spot: _Spots, is_led: np.ndarray, usable: np.ndarray, tries: int = REACH_TRIES):
         """The cheapest of the ``usable`` spots whose leader, if any, runs along no line (it would read as part of
@@ -669,16 +720,17 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                 yield int(best)
 
     def reach_out(index: int, moving: bool = True, leading: bool = True,
-                  shares: tuple[float, ...] = REACH_SHARES, from_line: bool = False) -> bool:
+                  shares: tuple[float, ...] = REACH_SHARES, from_line: bool = False, across_shafts: bool = False) -> bool:
         """Move the label of ``index``, left on a line (or another label) once all stand, to the cheapest spot within
         reach (its leader as long as the rings at ``shares`` letter heights) whose box covers nothing and whose leader
         crosses no label and runs along no line: beside another point of the line it names, or (``leading``) on a short
         leader from its point; else (``moving``) to such a spot one neighbouring label stands on, when that neighbour
         reaches such a spot too, beside its point if it stood there; ``from_line``, also on a leader from another
-        point of the line it names (:func:`reachable`).  Such a spot costs more than the line it leaves by
+        point of the line it names (:func:`reachable`); ``across_shafts``, led across a load's arrow too.  Such a spot
+        costs more than the line it leaves by
         the rules of :func:`costed`, which let a letter lie on one line sooner than lead it off across two.  Whether
         the label moved."""
-        spot, shapes, is_led, usable = reachable(index, leading, shares, from_line)
+        spot, shapes, is_led, usable = reachable(index, leading, shares, from_line, across_shafts)
         # Clear of the drawing, of every leader, and where it may stand; then clear of the labels too, or of one.
         open_ = usable & (crossing_placed(shapes, leader_lines, index) == 0)
         open_[spot.led] &= crossing_placed(spot.leaders, placed_boxes, index) == 0
@@ -705,15 +757,15 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     # is led no farther than that, or than it was.
     reach_share = max(REACH_SHARES)
 
-    def make_room(index: int) -> bool:
+    def make_room(index: int, across_shafts: bool = False) -> bool:
         """Move the label of ``index``, still on a line after :func:`reach_out`, to a spot within reach whose box
         covers nothing of the drawing but the labels or leaders of up to ROOM_MADE neighbours, placing those again
         round it (each where :func:`place` puts it, reaching out from a line there), when fewer of them all then lie
         on lines and none covers another label, takes a leader along a line, or a longer one than it had beyond
         the reach.  In a crowd of names round a lever's pole each spot off the lines near a label is taken by a
         neighbour that could stand as well elsewhere, but not by one alone: moved one at a time, none moves.
-        Whether the label moved."""
-        spot, shapes, is_led, usable = reachable(index)
+        ``across_shafts``: its own leader may cross a load's arrow.  Whether the label moved."""
+        spot, shapes, is_led, usable = reachable(index, across_shafts=across_shafts)
         # Whose label or leader each spot's box or leader meets.
         owners = [k for k in placed_boxes if k != index] + [k for k in leader_lines if k != index]
         others = np.array([placed_boxes[k] for k in placed_boxes if k != index]
@@ -783,6 +835,12 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         for index in order:
             if farther[index] and where[index][2] > 0 and paid[index] < OVERLAP:
                 reach_out(index, shares=FARTHER_SHARES, from_line=True)
+        # Those whose names lie on a line even so, every clear spot within reach led across a load's arrow, take the
+        # cheapest of those: the leader still leads to the name, which on the line is misread.
+        for index in order:
+            if (len(shafts_met) and where[index][3] > 0 and paid[index] < OVERLAP
+                    and not reach_out(index, across_shafts=True)):
+                make_room(index, across_shafts=True)
 
     farther = np.broadcast_to(np.asarray(reach_farther, dtype=bool), len(anchors))
 
