@@ -104,14 +104,18 @@ def double_rocker_sheet():
     return laid_out("double_rocker_swing", 2)
 
 
-def test_the_double_rocker_s_lever_letters_its_25_mm_arm_h11_clear_of_the_lines(double_rocker_sheet):
+def test_the_double_rocker_s_lever_letters_its_25_mm_arm_h11_clear_of_the_lines_or_gives_it_under(double_rocker_sheet):
+    # Its one spot clear of the lines round b was led across the arrows of M4′ and Mu4′, reading as naming one of
+    # them (tests/test_lever_leaders_off_arrows.py): then its length is given under the lever, as an arm's whose
+    # name finds no spot off the lines is.
     layers, calls = double_rocker_sheet
     lever = drawing(layers, "lever")
     caption = " ".join(item.text for layer in lever if layer.name.endswith("caption") for item in layer.items
                        if isinstance(item, Text))
-    assert "h11 = " not in caption, "h11's length is given under the lever instead of its name on the arm"
     lettered = placed(layers, "lever", calls)
-    assert "h11" in lettered
+    assert ("h11" in lettered) != ("h11 = " in caption), "h11 is both lettered and given under the lever, or neither"
+    if "h11" not in lettered:
+        return
     anchor, text = lettered["h11"]
     assert "h11" not in labels_on_lines(lever)
     assert near_what_it_names(anchor, text)

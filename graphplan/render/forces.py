@@ -1381,7 +1381,7 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
     centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
-    # A leader across an arrow reads as part of it, or as naming its load: it costs as one across its head.
+    # A leader across an arrow reads as part of it, or as naming its load: the placer costs it as two leaders crossing.
     return remembered(place_labels, anchors, obstacles_of(figure) + spots, reach_farther=reach_farther,
                       shafts=arrow_shafts(figure))
 

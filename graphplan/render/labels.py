@@ -150,8 +150,9 @@ COVER = 10.0
 HEAVY = 3.0
 # A thin leader crossing a drawn line hides less than a letter on it.
 LEADER_CROSSING = 4.0
-# A leader across a load's arrow (``place_labels``' ``shafts``) counts as crossing this many thin lines, as it does
-# the arrow's head: it reads as part of the arrow, or as pointing at that load, where it crosses a thin line plainly.
+# A leader across a load's arrow (``place_labels``' ``shafts``) counts as crossing this many thin lines, costing as
+# much as two leaders crossing (LEADERS_CROSSING, below): it reads as part of the arrow, or as pointing at that load,
+# where it crosses a thin line plainly.  (As the head's three lines, four more lever names of the bench went under.)
 SHAFT_CROSSED = 15.0
 MISLEADING = 8.0
 # "About as near": a label this much farther (mm) from another point than from its own still misleads.
@@ -284,8 +285,10 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 
     ``shafts`` says which of the ``obstacles`` (the first ones, in their
     order; :func:`arrow_shafts`) are arrows' shafts: a leader across one
-    costs as much as across its head (:data:`SHAFT_CROSSED` lines), for a
-    name led across a load's arrow reads as naming that load.
+    costs as much as two leaders crossing (:data:`SHAFT_CROSSED` lines),
+    for a name led across a load's arrow reads as naming that load; such
+    a spot counts as a line covered, and is reached out to only by a label
+    whose name would lie on a line otherwise.
 
     ``off_lines`` keeps the labels off the drawn lines wherever any spot,
     farther out too, does, for a drawing of few lines with room round them
@@ -301,7 +304,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     """
     fixed = list(obstacles)
     weights = np.array([HEAVY if shape.geom_type in ("Polygon", "MultiPolygon") else 1.0 for shape in fixed])
-    # What each obstacle weighs crossed by a leader: as covered by a box, but an arrow's shaft as its head.
+    # What each obstacle weighs crossed by a leader: as covered by a box, but an arrow's shaft SHAFT_CROSSED lines.
     shafts_met = np.flatnonzero(np.asarray(shafts, dtype=bool)[:len(fixed)])
     fixed_shafts = np.array([fixed[k] for k in shafts_met], dtype=object)
     crossed_weights = weights.copy()
@@ -838,9 +841,8 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # Those whose names lie on a line even so, every clear spot within reach led across a load's arrow, take the
         # cheapest of those: the leader still leads to the name, which on the line is misread.
         for index in order:
-            if (len(shafts_met) and where[index][3] > 0 and paid[index] < OVERLAP
-                    and not reach_out(index, across_shafts=True)):
-                make_room(index, across_shafts=True)
+            if len(shafts_met) and where[index][3] > 0 and paid[index] < OVERLAP:
+                reach_out(index, across_shafts=True)
 
     farther = np.broadcast_to(np.asarray(reach_farther, dtype=bool), len(anchors))
 
