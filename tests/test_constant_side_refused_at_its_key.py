@@ -17,8 +17,8 @@ import pytest
 
 from graphplan.analysis import analyse
 from graphplan.cli import main
-from graphplan.machine_dynamics import MachineDynamics
 from graphplan.errors import SceneError
+from graphplan.machine_dynamics import MachineDynamics
 from graphplan.scene import loads
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -116,8 +116,8 @@ def test_a_machine_that_never_starts_shows_the_motors_torque_it_is_set_against(l
 
     from matplotlib import pyplot
 
-    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.locale import strings
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.report.motion_plots import motion_plot
     from graphplan.scene import load
     from graphplan.starters import starter

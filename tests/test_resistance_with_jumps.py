@@ -16,7 +16,13 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from graphplan.cli import main
-from graphplan.machine_motion import ConstantTorque, KlossMotor, Machine, PiecewiseMoment, simulate
+from graphplan.machine_motion import (
+    ConstantTorque,
+    KlossMotor,
+    Machine,
+    PiecewiseMoment,
+    simulate,
+)
 
 TWO_PI = 2.0 * math.pi
 PUNCH = (math.radians(200.0), math.radians(300.0))  # the punching's window on the turn
@@ -174,8 +180,8 @@ def test_a_linkage_whose_load_acts_over_part_of_the_stroke_gives_the_equation_of
     from pathlib import Path
 
     from graphplan.analysis import analyse
-    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.loads import activity
+    from graphplan.machine_dynamics import MachineDynamics
     from graphplan.motion import solve
     from graphplan.scene import loads
 

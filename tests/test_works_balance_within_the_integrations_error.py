@@ -22,8 +22,8 @@ from scipy.optimize import brentq
 
 from graphplan.analysis import analyse
 from graphplan.cli import main
-from graphplan.machine_dynamics import MachineDynamics
 from graphplan.errors import SceneError
+from graphplan.machine_dynamics import MachineDynamics
 from graphplan.scene import loads
 
 CRANK, COUPLER, ROCKER, FRAME = 0.175, 0.55, 0.325, 0.55   # m; O at the origin, C at (0, 0.55)
