@@ -7,7 +7,7 @@
   under it, ezdxf for DXF, python-docx for the Word document) is refused as the WeasyPrint of note.pdf is: one line
   naming the format, the package and how to install it, exit 2, no folder written. It came out as a traceback
   after the whole analysis.
-* A friction settled at its first solve is told "after 1 solve", not "after 1 solves": the friction in a driving
+* A friction settled at its first pass is told "after 1 pass", not "after 1 passes": the friction in a driving
   slider's own guide changes no reaction it is taken from, so the linear system needs no second solve.
 * A scene of loads alone (no link given a mass) has no table of the links' masses and inertia loads in forces.md
   and the note: it was a header over no row, numbered as a table in the note.
@@ -144,14 +144,14 @@ def test_a_format_whose_tool_cannot_be_loaded_is_refused_naming_it_and_writes_no
     assert sorted(path.name for path in tmp_path.iterdir()) == ["scene.toml"]
 
 
-def test_a_friction_settled_at_its_first_solve_is_told_after_one_solve():
+def test_a_friction_settled_at_its_first_pass_is_told_after_one_pass():
     # The cylinder's rod on its own guide: its normal reaction comes from the rod's link and the weights, which the
     # friction along the guide does not change (the balancing force takes it all).
     text = (ROOT / "fixtures" / "slider_driven.toml").read_text(encoding="utf-8")
     analysis = analyse(loads(text + '\n[[friction]]\njoint = "A"\nlinks = [1, 2]\nf = 0.15\n'))
     assert {plan.with_friction.iterations for plan in analysis.plans} == {1}
     written = markdown(analysis)
-    assert "after 1 solve;" in written and "1 solves" not in written
+    assert "after 1 pass;" in written and "1 passes" not in written
 
 
 def _tables(text: str) -> list[list[str]]:

@@ -527,7 +527,7 @@ def _unrepeated(caption: Sequence[str]) -> list[str]:
     """``caption`` without the lines that give nothing but a value an equation above already found: the
     crank's "balancing moment Mb = 96.55 N·m (force polygons)" under its ΣMO(2) that ends "Mb = 96.55 N·m".
     A line that goes on with a number of its own is kept: the sheet with friction's "Mb = −2.00 N·m after 10
-    solves; without friction 6.48 N·m: …" gives the load without friction, though no "=" is left in it."""
+    passes; without friction 6.48 N·m: …" gives the load without friction, though no "=" is left in it."""
     found: list[str] = []
     kept = []
     for line in caption:
