@@ -20,7 +20,7 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
-from graphplan.render.labels import arrow_shafts, obstacles_of
+from graphplan.render.labels import obstacles_and_shafts, obstacles_of
 from graphplan.render.primitives import Arrow, Circle, Polyline, Stroke, Text
 
 # The levers where leaders crossed arrows at the commit this work started from (4, 2 and 3 crossings).
@@ -68,7 +68,8 @@ def test_the_shafts_are_told_among_the_obstacles_in_their_order():
     arrow = Arrow((0.0, 0.0), (10.0, 5.0), Stroke(0.45), 3.0)
     items = [Polyline(((0.0, 0.0), (1.0, 1.0)), Stroke(0.2)), arrow, Circle((3.0, 3.0), 0.5),
              Text((5.0, 5.0), "p", 3.0), Polyline(((9.0, 9.0),), Stroke(0.2)), arrow]
-    shapes, shafts = obstacles_of(items), arrow_shafts(items)
+    shapes, shafts = obstacles_and_shafts(items)
+    assert [shape.wkb for shape in shapes] == [shape.wkb for shape in obstacles_of(items)]
     assert len(shapes) == len(shafts)
     shaft = LineString((arrow.start, arrow.end))
     assert [index for index, flag in enumerate(shafts) if flag] == [

@@ -1,13 +1,13 @@
 """The placements and grown lines remembered (labels.remembered, forces._grown) are what the placer and GEOS make for
 the very same arguments, and nothing made for other arguments, another placer or other tuning is given instead."""
 import math
-from collections import OrderedDict
 
 import pytest
 import shapely
 from shapely.geometry import LineString
 from shapely.ops import unary_union
 
+from graphplan.memo import RecentMemo
 from graphplan.render import forces, labels
 from graphplan.render.labels import Anchor
 
@@ -15,8 +15,8 @@ from graphplan.render.labels import Anchor
 @pytest.fixture(autouse=True)
 def _empty_memos(monkeypatch):
     """Memos of their own, empty and never full: in a worker that ran other tests the module's may be full."""
-    monkeypatch.setattr(labels, "_placements", OrderedDict())
-    monkeypatch.setattr(forces, "_grown_unions", OrderedDict())
+    monkeypatch.setattr(labels, "_placements", RecentMemo())
+    monkeypatch.setattr(forces, "_grown_unions", RecentMemo())
 
 
 def _crowd(shift: float = 0.0):

@@ -32,11 +32,9 @@ what they hold on paper and computes no mechanics.
 from __future__ import annotations
 
 import functools
-import hashlib
 import math
 import re
 import unicodedata
-from collections import OrderedDict
 from collections.abc import Callable, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass
 
@@ -53,7 +51,7 @@ from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
 from ..lever import Lever, LeverTerm, turned
 from ..mechanism import Mechanism
-from ..memo import OwnedMemo
+from ..memo import OwnedMemo, RecentMemo
 from ..motion import Motion
 from ..plans import Plan
 from ..rounding import ROUNDING_NOISE
@@ -63,12 +61,13 @@ from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
 from .labels import (
     Anchor,
     Placement,
-    arrow_shafts,
     cover_one_another,
+    obstacles_and_shafts,
     obstacles_of,
     open_direction,
     place_labels,
     remembered,
+    shapes_digest,
     text_box,
 )
 from .linkage import link_outlines, outline_points
@@ -446,7 +445,7 @@ def _beside(point: complex, vector: complex, bars: BaseGeometry,
 
 # How many grown unions :func:`_grown` keeps, the least recently asked given up first.
 GROWN_KEPT = 512
-_grown_unions: OrderedDict[bytes, BaseGeometry] = OrderedDict()
+_grown_unions: RecentMemo[BaseGeometry] = RecentMemo()
 
 
 def _grown(lines: Sequence[LineString], distance: float) -> BaseGeometry:
@@ -454,20 +453,13 @@ def _grown(lines: Sequence[LineString], distance: float) -> BaseGeometry:
 
     Growing the union of a lever's lines takes a tenth of a second and more (its rays and bars overlap), and the
     same lever is drawn again and again: for each force sheet tried, each locale, each test of a module.  Keyed by
-    the lines' WKB (their coordinates' bytes) and the distance's exact repr; GEOS grows the same lines the same.
+    the lines as they are (:func:`~graphplan.render.labels.shapes_digest`) and the distance's exact repr; GEOS grows
+    the same lines the same.
     """
     if GROWN_KEPT <= 0:
         return unary_union(list(lines)).buffer(distance)
-    written = shapely.to_wkb(np.array(list(lines), dtype=object)).tolist() if len(lines) else []
-    key = hashlib.sha256(repr((distance, [len(each) for each in written])).encode())
-    key.update(b"".join(written))
-    digest = key.digest()
-    if digest not in _grown_unions:
-        _grown_unions[digest] = unary_union(list(lines)).buffer(distance)
-        while len(_grown_unions) > GROWN_KEPT:
-            _grown_unions.popitem(last=False)
-    _grown_unions.move_to_end(digest)
-    return _grown_unions[digest]
+    return _grown_unions.get(shapes_digest(lines, repr(distance)), lambda: unary_union(list(lines)).buffer(distance),
+                             GROWN_KEPT)
 
 
 def _points_onto(start: complex, end: complex, point: complex) -> bool:
@@ -1382,8 +1374,8 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
     # A leader across an arrow reads as part of it, or as naming its load: the placer costs it as two leaders crossing.
-    return remembered(place_labels, anchors, obstacles_of(figure) + spots, reach_farther=reach_farther,
-                      shafts=arrow_shafts(figure))
+    obstacles, shafts = obstacles_and_shafts(figure)
+    return remembered(place_labels, anchors, obstacles + spots, reach_farther=reach_farther, shafts=shafts)
 
 
 def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline],

@@ -17,7 +17,6 @@ import functools
 import hashlib
 import itertools
 import math
-from collections import OrderedDict
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -27,6 +26,7 @@ import shapely
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
+from ..memo import RecentMemo
 from .primitives import (
     Arrow,
     Circle,
@@ -68,14 +68,22 @@ def text_box(text: Text) -> BaseGeometry:
 
 def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
     """The shapes of drawn primitives that a label must not cover."""
+    return obstacles_and_shafts(items)[0]
+
+
+def obstacles_and_shafts(items: Sequence[Primitive]) -> tuple[list[BaseGeometry], list[bool]]:
+    """:func:`obstacles_of`'s shapes of ``items`` and, shape by shape, whether it is an arrow's shaft (``place_labels``'
+    ``shafts``): one pass, so that the two lists keep one order."""
     # Made by shapely's functions, the same shapes as its classes make, in C, and each kind of shape for all the items
     # in one call: a sheet's drawings have a thousand, and a call an item took longer than the shapes' making.
     kinds: list[tuple[str, int]] = []  # each shape's kind and its number among the shapes of that kind
     made: dict[str, list] = {"line": [], "polygon": [], "circle": [], "box": []}
+    shafts: list[bool] = []
 
-    def add(kind: str, what) -> None:
+    def add(kind: str, what, shaft: bool = False) -> None:
         kinds.append((kind, len(made[kind])))
         made[kind].append(what)
+        shafts.append(shaft)
 
     for item in items:
         if isinstance(item, Polyline) and item.closed and item.fill and len(item.points) >= 3:
@@ -84,26 +92,14 @@ def obstacles_of(items: Sequence[Primitive]) -> list[BaseGeometry]:
         elif isinstance(item, Polyline) and len(item.points) >= 2:
             add("line", item.points + ((item.points[0],) if item.closed else ()))
         elif isinstance(item, Arrow):
-            add("line", (item.start, item.end))
+            add("line", (item.start, item.end), shaft=True)
             add("polygon", item.tip().points)
         elif isinstance(item, Circle):
             add("circle", item)
         elif isinstance(item, Text):
             add("box", text_extent(item))
     shapes = {kind: _shapes(kind, given) for kind, given in made.items() if given}
-    return [shapes[kind][number] for kind, number in kinds]
-
-
-def arrow_shafts(items: Sequence[Primitive]) -> list[bool]:
-    """Which of the shapes :func:`obstacles_of` makes of ``items``, in its order, are arrows' shafts (``place_labels``'
-    ``shafts``)."""
-    shafts: list[bool] = []
-    for item in items:
-        if isinstance(item, Arrow):
-            shafts += (True, False)  # the shaft, the head
-        elif (isinstance(item, Polyline) and len(item.points) >= 2) or isinstance(item, (Circle, Text)):
-            shafts.append(False)
-    return shafts
+    return [shapes[kind][number] for kind, number in kinds], shafts
 
 
 def _shapes(kind: str, given: list) -> np.ndarray:
@@ -284,7 +280,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     another).
 
     ``shafts`` says which of the ``obstacles`` (the first ones, in their
-    order; :func:`arrow_shafts`) are arrows' shafts: a leader across one
+    order; :func:`obstacles_and_shafts`) are arrows' shafts: a leader across one
     costs as much as two leaders crossing (:data:`SHAFT_CROSSED` lines),
     for a name led across a load's arrow reads as naming that load; such
     a spot counts as a line covered, and is reached out to only by a label
@@ -857,7 +853,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
 # How many placements :func:`remembered` keeps, the least recently asked given up first: a test module draws the same
 # scenes some hundreds of times, a few dozen placements each.
 PLACEMENTS_KEPT = 4096
-_placements: OrderedDict[bytes, Placement] = OrderedDict()
+_placements: RecentMemo[Placement] = RecentMemo()
 # The placer as this module defines it: one a test puts in its place (to record or count its calls) is asked every time.
 _PLACER = place_labels
 
@@ -872,33 +868,32 @@ def remembered(placer: Callable[..., Placement], anchors: Sequence[Anchor], obst
     process (two thirds of the placements of the force sheets' tests were
     ones made before, 21 s of 32), and a run letters a sheet's plans again
     for each format it tries.  The key is every argument as it is written (a
-    float's repr is exact, an array's bytes, a shape's WKB its coordinates'
-    bytes, with its type, which WKB writes a ring's as a line's), and the
-    tuning of this module, which the tests change to compare placements made
-    other ways.  A placer other than :func:`place_labels` (a recorder of the
-    calls, a test's, also one set in its place in this module) is asked
-    every time, as is one whose tree a test has replaced (to count its
-    queries).
+    float's repr is exact, an array's bytes, the shapes by
+    :func:`shapes_digest`), and the tuning of this module, which the tests
+    change to compare placements made other ways.  A placer other than
+    :func:`place_labels` (a recorder of the calls, a test's, also one set in
+    its place in this module) is asked every time, as is one whose tree a
+    test has replaced (to count its queries).
     """
     if placer is not _PLACER or place_labels is not _PLACER or STRtree is not shapely.STRtree or PLACEMENTS_KEPT <= 0:
         return placer(anchors, obstacles, *arguments, **keywords)
-    shapes = np.array(list(obstacles), dtype=object)
-    written = shapely.to_wkb(shapes).tolist() if len(shapes) else []
-    key = hashlib.sha256(repr((_as_written(tuple(anchors)), _as_written(arguments),
-                               sorted((name, _as_written(value)) for name, value in keywords.items()),
-                               [(name, value) for name, value in globals().items() if name.isupper()])).encode())
-    key.update(np.asarray(shapely.get_type_id(shapes) if len(shapes) else [], dtype=np.int64).tobytes())
+    head = repr((_as_written(tuple(anchors)), _as_written(arguments),
+                 sorted((name, _as_written(value)) for name, value in keywords.items()),
+                 [(name, value) for name, value in globals().items() if name.isupper()]))
+    return _placements.get(shapes_digest(obstacles, head), lambda: placer(anchors, obstacles, *arguments, **keywords),
+                           PLACEMENTS_KEPT)
+
+
+def shapes_digest(shapes: Sequence[BaseGeometry], head: str) -> bytes:
+    """A key for ``shapes`` as they are, after ``head``: each shape's type (WKB writes a ring's as a line's) and its
+    WKB, its coordinates' exact bytes."""
+    given = np.array(list(shapes), dtype=object)
+    written = shapely.to_wkb(given).tolist() if len(given) else []
+    key = hashlib.sha256(head.encode())
+    key.update(np.asarray(shapely.get_type_id(given) if len(given) else [], dtype=np.int64).tobytes())
     key.update(np.array([len(each) for each in written], dtype=np.int64).tobytes())
     key.update(b"".join(written))
-    digest = key.digest()
-    if digest in _placements:
-        _placements.move_to_end(digest)
-        return _placements[digest]
-    placement = placer(anchors, obstacles, *arguments, **keywords)
-    _placements[digest] = placement
-    while len(_placements) > PLACEMENTS_KEPT:
-        _placements.popitem(last=False)
-    return placement
+    return key.digest()
 
 
 def _as_written(value: object) -> object:
