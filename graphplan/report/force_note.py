@@ -202,7 +202,7 @@ def _friction_loads(note: Writer, plan: PlanPosition) -> None:
                          f"{note.n(row.value)} {text['newton_metre']}{note.with_sense(row.acting.real)}")
     note.para(note.t("note_friction_loads"), *lines)
     if both := _both_links(note, plan):
-        note.para(both.strip())
+        note.para(both)
 
 
 def _settling(note: Writer, solves: int) -> str:
@@ -221,7 +221,7 @@ def _both_links(note: Writer, plan: PlanPosition) -> str:
     for pair in note.analysis.friction:
         on_target, on_source = pair.load_names
         if on_source in acting:
-            return " " + note.t("note_friction_both_links", load=on_target, back=on_source, link=pair.source)
+            return note.t("note_friction_both_links", load=on_target, back=on_source, link=pair.source)
     return ""
 
 
