@@ -192,6 +192,23 @@ class GroupForces:
     scale: float = 1.0
     projections: tuple[ProjectionEquation, ...] = ()
 
+    def held_as_couple_alone(self, equation: MomentEquation) -> str | None:
+        """The reaction whose moment R·x its guide holds as a couple alone, or None.
+
+        Where a guide's normal reaction is nought (the Scotch yoke's) and its moment is not, R·x beside R = 0
+        would put the line of R at infinity: the guide carries the moment as a couple.  The sheet and the note
+        both ask here, so that neither writes an x the other calls absent.
+        """
+        if not equation.unknown.endswith("·x"):
+            return None
+        reaction = equation.unknown[:-2]
+        found = {item.name: item.force for item in self.found}
+        strongest = max((abs(force) for force in found.values()), default=0.0)
+        if reaction in found and abs(found[reaction]) <= TERM_ROUNDING * strongest and \
+                abs(equation.value) > TERM_ROUNDING * max(strongest, 1.0):
+            return reaction
+        return None
+
 
 @dataclass(frozen=True)
 class ForcePlan:

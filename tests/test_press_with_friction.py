@@ -10,6 +10,7 @@ tail on the polygon of the group 5–6), Zhukovsky's lever with friction (from t
 the ram's moment equation as the sheet writes it, read with its numbers.
 """
 
+import dataclasses
 import itertools
 import json
 import math
@@ -504,7 +505,8 @@ def test_the_lever_s_arms_listed_over_several_lines_are_parted_by_commas_at_each
 def test_a_couple_alone_on_a_guide_is_written_signed_as_the_note_writes_it(tmp_path):
     """The Scotch yoke's guide at B holds R34's moment with R14 = 0, a couple alone with no line and no x: the note
     writes ΣMB(4) = R14·x + 95.518 = 0 ⇒ R14·x = −95.518, R14·x the couple, signed.  The sheet's sign turned by the
-    moment, as for an x it writes as a length, wrote −R14·x + M(R34) = 0 beside it: R14·x = +95.518."""
+    moment, as for an x it writes as a length, wrote −R14·x + M(R34) = 0 beside it: R14·x = +95.518.  The sheet
+    gives the couple's value, as the note does."""
     analysis = analyse(load_text(Path("fixtures/scotch_yoke.toml").read_text(encoding="utf-8")))
     checked = 0
     for position in analysis.plans:
@@ -522,5 +524,25 @@ def test_a_couple_alone_on_a_guide_is_written_signed_as_the_note_writes_it(tmp_p
         assert sign is not None, line
         assert sign.group(1) == ""
         assert (sign.group(2) == "+") == (others > 0)
+        # and gives the couple's value, saying why R14 has no line: the sheet once wrote the equation bare.
+        written = re.search(r"R14·x = (−?\d+(?:\.\d+)?) N·m,\s+R14 = 0: the guide holds a couple alone", caption)
+        assert written is not None, caption
+        assert float(written.group(1).replace("−", "-")) == pytest.approx(equation.value, rel=1e-3)
         checked += 1
     assert checked == 2
+
+
+def test_x_is_written_for_a_reaction_too_short_to_draw_as_the_note_writes_it(case):
+    """Whether R16·x comes with its x is the analysis's word (the reaction nought, a couple alone, or not), not the
+    drawing's: at a μF that draws R16 shorter than a line can show, the sheet dropped x and its sign, where the note
+    beside it writes x = 3.301 mm."""
+    _, analysis, position, own = case
+    friction = position.with_friction
+    group = next(each for each in friction.groups if any(found.name == "R16" for found in each.found))
+    reaction = next(found for found in group.found if found.name == "R16")
+    undrawable = 10.0 * abs(reaction.force) / force_layout.ZERO_MM    # R16 drawn 0.1 mm long
+    shrunk = dataclasses.replace(position, with_friction=friction.at_scale(undrawable))
+    line = ram_equation(analysis, shrunk)
+    match = re.match(r"ΣME\(6\): −?R16·x [+−] Mf56 = 0,\s+x = (\d+(?:\.\d+)?) mm", line)
+    assert match, line
+    assert float(match.group(1)) / 1000.0 == pytest.approx(abs(own["offset"]), rel=1e-3)

@@ -896,15 +896,20 @@ def _equation(sheet: ForceSheet, group: GroupForces, equation: MomentEquation, p
     if unknown.endswith("·x"):
         if equation.value == 0 and total == 0:
             return ""
+        if (reaction := group.held_as_couple_alone(equation)) is not None:
+            # The reaction is nought and the guide holds a couple alone, with no line and no x: R14·x stands for
+            # that couple, signed, and its value is the answer, as the note writes it (R14·x = −95.518 N·m).  Bare,
+            # the equation gave the Scotch yoke's sheet no value and no word of why R14 is missing.
+            return (f"{about} {unknown} {terms} = 0{VALUE_SEPARATOR}{unknown} = {significant(equation.value)} "
+                    f"{text['newton_metre']}{VALUE_SEPARATOR}{text['sheet_couple_alone'].format(name=reaction)}")
         found = sheet.forces.reactions.get(unknown[:-2])
         shift = ""
-        if found is not None and found.offset and abs(found.force) / sheet.forces.scale_of(found.name) >= ZERO_MM:
+        if found is not None and found.offset and abs(found.force) > 0:
             # x is an arm, as every h is: a length, its term signed by the moment it gives, as the others are.  The
             # offset along the guide written here put x = −3.301 mm under a +R16·x on a press's downward guide,
-            # which read with R16 = 2224 N doubled the friction moment Mf56 where it should balance it.
+            # which read with R16 = 2224 N doubled the friction moment Mf56 where it should balance it.  Written
+            # wherever the note writes it, the reaction drawn or too short to draw.
             shift = f",  x = {significant(1000.0 * abs(found.offset))} {text['millimetre']}"
-        # Where the reaction is nought the guide holds a couple alone, with no line and no x: R14·x then stands for
-        # that couple, signed, as the note writes it (ΣMB(4) = R14·x + 95.518 = 0 ⇒ R14·x = −95.518).
         sign = "−" if shift and equation.value < 0 else ""
         return f"{about} {sign}{unknown} {terms} = 0{shift}"
     if unknown == "Mb":

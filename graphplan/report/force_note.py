@@ -260,7 +260,7 @@ def _force_group(note: Writer, plan: PlanPosition, group, friction: bool = False
     lines = []
     for equation in group.moments:
         line = f"- {_moment_equation(note, equation, loads, group)}"
-        if reaction := force_report.held_as_couple_alone(group, equation):
+        if reaction := group.held_as_couple_alone(equation):
             line += note.text["semicolon"] + note.t("note_couple_alone", name=reaction)
         lines.append(line)
     if lines:
@@ -399,7 +399,7 @@ def _moment_equation(note: Writer, equation, loads: Mapping[str, object], group=
 def _shifted_reaction(group, equation):
     """The reaction of an ``R16·x`` equation where it is off its joint by x (its couple and itself not nought), or
     None: where the reaction is nought the guide holds the couple alone, and R·x stands for it, signed."""
-    if group is None or not equation.unknown.endswith("·x") or force_report.held_as_couple_alone(group, equation):
+    if group is None or not equation.unknown.endswith("·x") or group.held_as_couple_alone(equation):
         return None
     found = next((item for item in group.found if item.name == equation.unknown[:-2]), None)
     return found if found is not None and abs(found.force) > 0 else None

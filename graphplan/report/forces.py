@@ -26,7 +26,7 @@ import numpy as np
 
 from .. import wording
 from ..analysis import Analysis, PlanPosition
-from ..forces import ForcePlan, GroupForces, MomentEquation
+from ..forces import ForcePlan
 from ..joint_friction import FrictionPair, pair_name
 from ..loads import motion_state
 from ..locale import Count, strings
@@ -103,23 +103,6 @@ class LinkData:
     def weight(self) -> float:
         """G = m·g, N."""
         return self.mass * self.gravity
-
-
-def held_as_couple_alone(group: GroupForces, equation: MomentEquation) -> str | None:
-    """The reaction whose moment R·x its guide holds as a couple alone, or None.
-
-    Where a guide's normal reaction is nought (the Scotch yoke's) and its moment is not, R·x beside R = 0 would
-    put the line of R at infinity: the guide carries the moment as a couple.
-    """
-    if not equation.unknown.endswith("·x"):
-        return None
-    reaction = equation.unknown[:-2]
-    found = {item.name: item.force for item in group.found}
-    strongest = max((abs(force) for force in found.values()), default=0.0)
-    if reaction in found and abs(found[reaction]) <= ROUNDING * strongest and \
-            abs(equation.value) > ROUNDING * max(strongest, 1.0):
-        return reaction
-    return None
 
 
 def initial_data(analysis: Analysis, plan: PlanPosition) -> list[LinkData]:
@@ -500,7 +483,7 @@ def _position(analysis: Analysis, plan: PlanPosition, text: Mapping[str, str]) -
             unit = newton_metre if equation.couple else text["newton"]
             line = (f"- {group.label}: ΣM{equation.about}({equation.bodies}) = 0 → {equation.unknown} = "
                     f"{number(equation.value, mark=mark)} {unit}" + (f"; {terms}" if terms else ""))
-            if reaction := held_as_couple_alone(group, equation):
+            if reaction := group.held_as_couple_alone(equation):
                 line += text["semicolon"] + text["note_couple_alone"].format(name=reaction)
             lines.append(line)
     lines += ["", f"### {text['forces_reactions']}", "",
