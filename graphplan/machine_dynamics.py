@@ -288,6 +288,7 @@ class MachineDynamics:
         then have no ωm, δ or start-up time, which only the note said (a machine of great inertia still speeding
         up after its 2000 turns' time)."""
         from .machine_motion.simulation import MOST_CYCLES
+        from .render.numerals import number
 
         motion, asked = self.motion, self.spec.motion
         if (motion is None or motion.steady is not None or motion.stalled_at is not None or motion.stopped_at is not None
@@ -295,18 +296,17 @@ class MachineDynamics:
             return None
         end, speed = float(motion.t[-1]), float(motion.omega[-1])
         limit = "its duration" if asked.duration is not None else f"{MOST_CYCLES} turns' time at the running speed"
-        head = f"dynamics: no steady state within the run, t = {end:.4g} s ({limit}): "
+        # Written as every number on the console is: a heavy machine's 2000 turns' time read "t = 1.257e+04 s".
+        head = f"dynamics: no steady state within the run, t = {number(end)} s ({limit}): "
         runaway = self.runaway()
         if runaway is not None:
-            from .render.numerals import number
-
             # The torques as the note's runaway line writes them.
-            return (head + f"the machine speeds up without end, at ω = {speed:.4g} rad/s by then: the motor's torque on "
-                    f"the shaft, {number(runaway[0])} N·m, exceeds the mean resistance, {number(runaway[1])} N·m, at "
+            return (head + f"the machine speeds up without end, at ω = {number(speed)} rad/s by then: the motor's "
+                    f"torque on the shaft, {number(runaway[0])} N·m, exceeds the mean resistance, {number(runaway[1])} N·m, at "
                     "every speed, so no duration reaches a steady state (more resistance, or a motor whose torque "
                     "falls with speed: linear, kloss)")
         return (head + f"the machine is still {'speeding up' if self.speeding_up() else 'slowing down'} at "
-                f"ω = {speed:.4g} rad/s, so the results have no ωm, δ or start-up time; a longer [dynamics] "
+                f"ω = {number(speed)} rad/s, so the results have no ωm, δ or start-up time; a longer [dynamics] "
                 "duration (s) runs it on")
 
     def runaway(self) -> tuple[float, float] | None:

@@ -391,6 +391,8 @@ class NearResonance:
         if self.instrument:
             return self._instrument_detail()
         off = abs(self.ratio - 1.0)
+        # The share in per cent to two digits, as the note's caution gives it: "within 0.012" beside the note's
+        # "within 1.2 %" read as two different distances.
         # r = 1 to the digits written is resonance itself: "within 0 of the natural frequency" said it in riddles.
         at = self.resonant_as_written
         if self.zeta > 0:
@@ -398,7 +400,7 @@ class NearResonance:
             times = (f", the magnification {number(self.magnification)}" if self.base_moves
                      else f" is {number(self.magnification)} times m·e/M")
             where = ("ω at the natural frequency (r = 1): the machine runs at resonance" if at
-                     else f"ω within {off:.2g} of the natural frequency (r = {number(self.ratio)})")
+                     else f"ω within {number(off * 100.0, 2)} % of the natural frequency (r = {number(self.ratio)})")
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the amplitude X = "
                     f"{number(self.amplitude)} m{times}; run the machine {'away from' if at else 'farther from'} "
                     "resonance or damp it more")
@@ -406,7 +408,7 @@ class NearResonance:
             return (f"no damping and ω at the natural frequency to five digits (r = 1): the machine runs at resonance, "
                     f"and the amplitude X = {number(self.amplitude)} m hangs on how near; give damping_ratio or "
                     "damping")
-        return (f"no damping and ω within {off:.2g} of the natural frequency (r = {number(self.ratio)}): the amplitude "
+        return (f"no damping and ω within {number(off * 100.0, 2)} % of the natural frequency (r = {number(self.ratio)}): the amplitude "
                 f"X = {number(self.amplitude)} m grows without bound nearer it; give damping_ratio or damping")
 
     def _instrument_detail(self) -> str:
@@ -415,7 +417,7 @@ class NearResonance:
         at = self.resonant_as_written
         where = ("the base's ω at the natural frequency" + (" to five digits" if self.zeta == 0 else "") + " (r = 1): "
                  "the instrument is shaken at resonance" if at else
-                 f"the base's ω within {abs(self.ratio - 1.0):.2g} of the natural frequency (r = {number(self.ratio)})")
+                 f"the base's ω within {number(abs(self.ratio - 1.0) * 100.0, 2)} % of the natural frequency (r = {number(self.ratio)})")
         if self.zeta > 0:
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the instrument moves X = "
                     f"{number(self.amplitude)} m, {number(self.transmissibility)} times the base's Y; mount it with "

@@ -283,11 +283,11 @@ def test_the_stall_warning_writes_a_brake_s_and_a_clutch_s_given_numbers_as_the_
 
 @pytest.mark.parametrize(("omega", "ratio", "said"), [
     (100.003, "1", "ω at the natural frequency (r = 1): the machine runs at resonance"),
-    (98.76543, "0.98765", "ω within 0.012 of the natural frequency (r = 0.98765)"),
+    (98.76543, "0.98765", "ω within 1.2 % of the natural frequency (r = 0.98765)"),
 ])
 def test_the_resonance_warning_writes_r_as_the_note(tmp_path, capsys, omega, ratio, said):
     """r = 1.00003 was "within 3e-05 of the natural frequency (r = 1.00003)" on the console beside the note's "runs
-    at resonance (r = 1)"; r = 0.9876543 was 0.987654 beside 0.98765."""
+    at resonance (r = 1)"; r = 0.9876543 was 0.987654 beside 0.98765, and "within 0.012" beside "within 1.2 %"."""
     scene = tmp_path / "machine.toml"
     scene.write_text('[scene]\ntitle = "Machine"\n[vibration]\nmass = 100.0\nunbalance = 0.01\nstiffness = 1.0e6\n'
                      f"damping_ratio = 0.002\nomega = {omega}\n", encoding="utf-8")
@@ -300,6 +300,21 @@ def test_the_resonance_warning_writes_r_as_the_note(tmp_path, capsys, omega, rat
     note = (out / "note.md").read_text(encoding="utf-8")
     (caution,) = [para for para in note.split("\n\n") if para.startswith("Caution:")]
     assert f"(r = {ratio})" in caution
+    if ratio != "1":   # the distance from resonance, in per cent to two digits, in both
+        share = f"{abs(r - 1) * 100:.2g} %"
+        assert f"within {share} of the natural" in line and f"within {share} of the natural" in caution
     # Magnification r²/√((1 − r²)² + (2ζr)²) as both write it.
     magnification = f"{r * r / math.hypot(1 - r * r, 2 * 0.002 * r):.5g}"
     assert magnification in line and magnification in caution
+
+
+def test_the_unsettled_warning_writes_a_long_run_s_time_without_an_exponent(tmp_path, capsys):
+    """A machine of 10⁸ kg·m² run for 12345.6 s ends still speeding up: the warning wrote "t = 1.235e+04 s" where
+    every other number on the console and in the note is written whole, to five digits."""
+    scene = _flywheel_scene(tmp_path, r"^rpm   = 100 ", "duration = 12345.6\nrpm = 100 ")
+    scene.write_text(scene.read_text(encoding="utf-8").replace("inertia = 0.0 ", "inertia = 1e8 ", 1), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "dynamics"]) == 0
+    line = _warning(_printed(capsys), "dynamics: no steady state within the run")
+    assert "t = 12346 s (its duration)" in line
+    speed = re.search(r"still speeding up at ω = (\S+) rad/s", line).group(1)
+    assert "e" not in speed and float(speed) > 0
