@@ -1177,3 +1177,24 @@ def test_an_instrument_s_plots_name_the_instrument_not_a_machine(locale):
     # A machine with an unbalance keeps its own words.
     unbalanced = VibrationSpec(mass=100.0, unbalance=0.02, stiffness=1e5, damping_ratio=0.1, omega=20.0)
     assert words_for(unbalanced, text) is text
+
+
+@pytest.mark.parametrize(("rpm", "warned"), [(600.0, True), (590.0, False)])
+def test_an_instrument_is_warned_of_by_the_times_its_base_s_motion_it_makes(tmp_path, capsys, rpm, warned):
+    """50 kg on 2·10⁵ N/m with ζ = 0.05, its floor shaking 1 mm at 600 rpm, r = 0.9935: it moves 10.03 times as far
+    as its floor, and was not warned of, its growth judged by M·X/(m·e) = 9.85 of an unbalance it has not.  At 590
+    rpm it moves less than 10 times as far, as a machine's magnification below 10 is not warned of."""
+    omega = rpm * 2 * math.pi / 60
+    r, zeta = omega / math.sqrt(2e5 / 50.0), 0.05
+    times = math.hypot(1.0, 2 * zeta * r) / math.hypot(1 - r * r, 2 * zeta * r)   # X/Y, by hand
+    assert (times >= 10) == warned
+    code, told = _run(tmp_path, f"mass = 50.0\nunbalance = 0.0\nstiffness = 2e5\ndamping_ratio = {zeta}\n"
+                                f"rpm = {rpm}\nbase_amplitude = 0.001\n", capsys)
+    assert code == 0
+    lines = [line for line in told.out.splitlines() if "warning: vibration:" in line]
+    assert bool(lines) == warned
+    if warned:
+        assert f"{times:.5g} times the base's Y" in lines[0]
+        codes = [each["code"] for each in json.loads((tmp_path / "out" / "results.json").read_text(
+            encoding="utf-8"))["vibration"]["warnings"]]
+        assert codes == ["near-resonance"]
