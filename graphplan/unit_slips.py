@@ -10,6 +10,7 @@ import math
 
 from .mechanism import Mechanism
 from .motion import Motion, PositionWarning
+from .render.numerals import number as written
 from .units import STEEL_DENSITY, motor_speed_in_rpm, rpm_question, solid_steel_cylinder
 
 # A link is a bar between its joints.  A course's links weigh q·l, q some 10–40 kg/m (a 0.3 m rocker 3–12 kg);
@@ -72,7 +73,17 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
     told = []
     for number, link in sorted(mechanism.scene.links.items()):
         span = _span(mechanism, motion, number)
-        if span is None or not link.mass > heaviest_bar(span[0]):
+        if span is None:
+            # A slider's block has no span of its own, and is often a mechanism's heaviest link: 50 kg typed in
+            # grams passed.  No block outweighs a steel bar as long as the whole mechanism is across.
+            span = _span(mechanism, motion, None)
+            if span is not None and link.mass > heaviest_bar(span[0]):
+                told.append(f"{link.where}.mass = {link.mass:g} kg on a slider of a mechanism "
+                            f"{written(span[0], 3)} m across ({span[1]}), heavier than a solid steel bar of that "
+                            f"length ({written(heaviest_bar(span[0]), 3)} kg): grams typed for kg? {link.mass:g} g is "
+                            f"{link.where}.mass = {link.mass / 1000:g}")
+            continue
+        if not link.mass > heaviest_bar(span[0]):
             continue
         length, between = span
         why = ""
@@ -82,17 +93,17 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
                 if not link.mass > heaviest_crank(length):
                     continue
                 reach = CRANK_REACH * max(length, THINNEST_SECTION_M)
-                why = (f", and than a steel cylinder {reach:.3g} m in radius and long ({CRANK_REACH:g} × max(l, "
-                       f"{THINNEST_SECTION_M:g} m)), which holds a crankshaft's throw with its counterweights "
-                       f"({heaviest_crank(length):.3g} kg; a flywheel on the crank: give {link.where}.inertia)")
+                why = (f", and than a steel cylinder {written(reach, 3)} m in radius and long ({CRANK_REACH:g} × "
+                       f"max(l, {THINNEST_SECTION_M:g} m)), which holds a crankshaft's throw with its counterweights "
+                       f"({written(heaviest_crank(length), 3)} kg; a flywheel on the crank: give {link.where}.inertia)")
             elif not depth > LONGEST_CRANK * max(length, THINNEST_SECTION_M):
                 continue
             else:
                 why = (f", and too compact for a flywheel or counterweights: with {link.where}.inertia = "
-                       f"{link.inertia:g} kg·m², as steel it would reach {depth:.3g} m along its axis")
-        told.append(f"{link.where}.mass = {link.mass:g} kg on a link {length:.3g} m long ({between}), heavier than a "
-                    f"solid steel bar of that length ({heaviest_bar(length):.3g} kg){why}: grams typed for kg? "
-                    f"{link.mass:g} g is {link.where}.mass = {link.mass / 1000:g}")
+                       f"{link.inertia:g} kg·m², as steel it would reach {written(depth, 3)} m along its axis")
+        told.append(f"{link.where}.mass = {link.mass:g} kg on a link {written(length, 3)} m long ({between}), heavier "
+                    f"than a solid steel bar of that length ({written(heaviest_bar(length), 3)} kg){why}: grams typed "
+                    f"for kg? {link.mass:g} g is {link.where}.mass = {link.mass / 1000:g}")
     if not told:
         return ()
     return (PositionWarning(0, "masses-in-grams", "; ".join(told) + ": the scene's masses are in kg (divide grams "
@@ -107,10 +118,14 @@ def _crank_depth(mass: float, inertia: float) -> float | None:
     return mass ** 2 / (2.0 * math.pi * STEEL_DENSITY * inertia)
 
 
-def _span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[float, str] | None:
-    """The largest distance between two points of ``link`` (the same at every position: the first's), with the two
-    points; None for a link with one point (a slider's block)."""
-    names = sorted(name for name in mechanism.fixed_on.get(link, ()) if name in motion.points)
+def _span(mechanism: Mechanism, motion: Motion, link: int | None) -> tuple[float, str] | None:
+    """The largest distance between two points of ``link`` (the same at every position: the first's), or of the
+    whole mechanism at the first position where ``link`` is None, with the two points; None for a link with one
+    point (a slider's block)."""
+    if link is None:
+        names = sorted(motion.points)
+    else:
+        names = sorted(name for name in mechanism.fixed_on.get(link, ()) if name in motion.points)
     where = {name: complex(*motion.point(name).r[0]) for name in names}
     spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
              if math.isfinite(abs(where[a] - where[b]))]

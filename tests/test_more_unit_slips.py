@@ -16,6 +16,11 @@ from graphplan.starters import starter
 RPM = math.pi / 30.0
 
 
+def _three(value: float) -> str:
+    """Three significant digits written whole, as the warnings write them: 31800, not 3.18e+04."""
+    return f"{float(f'{value:.3g}'):.12g}"
+
+
 def _scene(tmp_path: Path, text: str, name: str = "scene.toml") -> Path:
     path = tmp_path / name
     path.write_text(text, encoding="utf-8")
@@ -161,8 +166,8 @@ def test_a_cranks_mass_in_grams_is_warned_of_by_its_inertia(tmp_path, capsys, in
     bar = STEEL * 0.175 * 0.175 ** 2  # a solid steel bar 0.175 m square, 42.1 kg
     depth = 4000.0 / (STEEL * 2 * math.pi * inertia / 4000.0)
     words = (f"links.2.mass = 4000 kg on a link 0.175 m long (A–O), heavier than a solid steel bar of that length "
-             f"({bar:.3g} kg), and too compact for a flywheel or counterweights: with links.2.inertia = {inertia:g} "
-             f"kg·m², as steel it would reach {depth:.3g} m along its axis: grams typed for kg? 4000 g is "
+             f"({_three(bar)} kg), and too compact for a flywheel or counterweights: with links.2.inertia = {inertia:g} "
+             f"kg·m², as steel it would reach {_three(depth)} m along its axis: grams typed for kg? 4000 g is "
              "links.2.mass = 4")
     told, results, note = _run(tmp_path, _with_crank(4000.0, inertia), capsys)
     assert words in told and any(words in detail for detail in _in_grams(results))
@@ -206,8 +211,8 @@ def test_a_long_links_mass_in_grams_is_warned_of(tmp_path, capsys):
     told, results, _ = _run(tmp_path, _long_crank_rocker(220000.0, 130000.0), capsys)
     details = " ".join(_in_grams(results))
     for key, mass, length in (("links.3", 220000.0, 5.5), ("links.4", 130000.0, 3.25)):
-        bar = f"({STEEL * length:.3g} kg): grams typed for kg? {mass:g} g is {key}.mass = {mass / 1000:g}"
-        words = (f"{key}.mass = {mass:g} kg on a link {length:.3g} m long", bar)
+        bar = f"({_three(STEEL * length)} kg): grams typed for kg? {mass:g} g is {key}.mass = {mass / 1000:g}"
+        words = (f"{key}.mass = {mass:g} kg on a link {_three(length)} m long", bar)
         assert all(part in details and part in told for part in words)
     _, results, _ = _run(tmp_path, _long_crank_rocker(220.0, 130.0), capsys)
     assert not _in_grams(results)

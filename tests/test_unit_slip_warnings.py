@@ -218,3 +218,22 @@ def test_no_fixture_test_scene_or_starter_is_told_of_a_unit_slip(tmp_path, capsy
     if loaded.driver is not None:
         told += [warning.detail for warning in analyse(loaded).warnings]
     assert not [line for line in told if any(slip in line for slip in _SLIPS)]
+
+
+def test_a_slider_s_mass_in_grams_is_warned_of_by_the_mechanism_s_size(tmp_path, capsys):
+    """A slider's block has no span of its own, and its mass in grams (the piston's 0.9 kg as 900) passed with no
+    word, where every other link's is told.  No block outweighs a solid steel bar as long as its mechanism is across,
+    the largest distance between two of its points: at the first position O to B, 0.24 m."""
+    text = _edited("slider-crank", 'mass    = 0.9\ncentre  = "B"', 'mass    = 900.0\ncentre  = "B"')
+    told, results, _ = _run(tmp_path, text, capsys)
+    points = [complex(*point["r"]) for point in results["positions"][0]["points"].values()]
+    across = max(abs(a - b) for a in points for b in points)
+    assert across == pytest.approx(0.24)
+    bar = 7850.0 * across * max(across, 0.1) ** 2
+    words = (f"links.4.mass = 900 kg on a slider of a mechanism {across:.3g} m across (B–O), heavier than a solid "
+             f"steel bar of that length ({bar:.3g} kg): grams typed for kg? 900 g is links.4.mass = 0.9")
+    assert words in told
+    assert any(warning["code"] == "masses-in-grams" and words in warning["detail"] for warning in results["warnings"])
+    # The piston as the starter has it, 0.9 kg, is no slip.
+    told, results, _ = _run(tmp_path, starter("slider-crank", "en"), capsys)
+    assert "grams typed for kg" not in told
