@@ -74,7 +74,47 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
             rocking, changes = _rocking_changes(mechanism.scene)
             advice = _reach_advice(driver.link, ranges, driver.cyclic, stopping,
                                    runs=functools.partial(_swing_that_runs, rocking), also=changes)
+            if driver.cyclic and ranges and (slipped := _slipped_digit(mechanism, error.group)) is not None:
+                advice += f"; or, if link {driver.link} is meant to turn round, check the lengths: {slipped}"
         raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {advice}") from error
+
+
+# A length typed a digit off, 0.05 for 0.5: each of the stopping group's lengths is tried this many times longer
+# and shorter, alone.
+_SLIPS = (10.0, 0.1)
+
+
+def _slipped_digit(mechanism: Mechanism, label: str) -> str | None:
+    """Which length of the group ``label``, a digit off (:data:`_SLIPS`), would let the crank turn round, in words;
+    None where none alone would.  A student's DE = 0.05 for 0.5 was advised to rock the crank over the part of the
+    turn it reaches, when the crank of a course's mechanism is meant to turn round."""
+    scene = mechanism.scene
+    found = []
+    for n, group in enumerate(scene.groups):
+        if group.label != label:
+            continue
+        for key, value, changed in _lengths_of(group):
+            for slip in _SLIPS:
+                other = replace(scene, groups=(*scene.groups[:n], changed(value * slip), *scene.groups[n + 1:]))
+                try:
+                    turns = reach(build(other)) == ((0.0, 2.0 * math.pi),)
+                except GraphplanError:
+                    continue
+                if turns:
+                    found.append(f"{key} = {value * slip:.6g}, a digit off the {value:.6g} m given, turns it round")
+    return "; ".join(found) or None
+
+
+def _lengths_of(group: Group) -> Iterator[tuple[str, float, Callable[[float], Group]]]:
+    """Each length the group's table gives, with its key and a maker of the group with it changed: its ``length``,
+    and its ``lengths`` where none is left out (a triad's list only its turning legs, at other indices)."""
+    if getattr(group, "length", 0.0):
+        yield f"{group.where}.length", group.length, lambda value: replace(group, length=value)
+    lengths = getattr(group, "lengths", ())
+    if lengths and all(lengths):
+        for k, length in enumerate(lengths):
+            yield (f"{group.where}.lengths[{k}]", length,
+                   lambda value, k=k: replace(group, lengths=(*lengths[:k], value, *lengths[k + 1:])))
 
 
 # A hundredth of a degree: the farthest or nearest a group reads off the sweep of the crank is then the true one to

@@ -1203,6 +1203,22 @@ def test_rrr_too_short_to_reach() -> None:
     assert isinstance(error, ValueError)
 
 
+@pytest.mark.parametrize(("base", "key", "typed", "meant"), [
+    ("SLIDER_CRANK", "groups.0.length", 0.04, "groups[0].length = 0.4, a digit off the 0.04 m given"),
+    ("FOUR_BAR", "groups.0.lengths", [0.04, 0.35], "groups[0].lengths[0] = 0.4, a digit off the 0.04 m given"),
+])
+def test_a_length_a_digit_off_is_named_beside_the_rocker_advised(base, key, typed, meant) -> None:
+    """A student's DE = 0.05 for 0.5 was told only to rock the crank over the part of its turn it reaches: the
+    length that, a digit off, lets it turn round is named too, and the scene with it runs round."""
+    scene = globals()[base]
+    stage, error = first_error(to_toml(variant(scene, {key: typed})))
+    assert stage == "solve" and type(error) is AssemblyError
+    assert "drive it as a rocker" in str(error)
+    assert str(error).endswith(f"; or, if link 2 is meant to turn round, check the lengths: {meant}, turns it round")
+    # The length as meant: the mechanism turns round (it is the scene this file starts from).
+    analyse(scene_module.loads(to_toml(scene)))
+
+
 def test_rrr_too_short_position_numbers_follow_number_from() -> None:
     text = to_toml(variant(FOUR_BAR, {"groups.0.lengths": [0.4, 0.2], "positions.number_from": 0}))
     stage, error = first_error(text)
