@@ -38,6 +38,9 @@ UNIFORM_SLIP_PERCENT = 5.0
 FAR_OFF_PERCENT = 15.0
 # ... and this many drafting precisions off in millimetres, a short segment's reading being as good as its two ends.
 FAR_OFF_PRECISIONS = 2.0
+# A far-off reading within this share of the value it stands for (m/s, m/s², N) is that value typed: a student's
+# own plan gives it to a few per cent.
+VALUE_TYPED_SHARE = 0.05
 
 _SCALES = {"velocity": ("μV", "(m/s)/mm"), "acceleration": ("μa", "(m/s²)/mm")}
 
@@ -102,6 +105,10 @@ class Slips:
     # Far-off readings of a reaction that are, to the drafting precision, its length at another standard μF than its
     # polygon's: by the reading, (that μF, the length there in mm).  Not in ``misread``.
     force_scale: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
+    # Far-off readings that are the value they stand for (VE = 1.147 m/s typed as pe = 1.147), by the reading: the
+    # quantity (a velocity, an acceleration, a reaction), the value typed and its length as constructed in mm.  Not
+    # in ``misread``.
+    values: Mapping[str, tuple[str, float, float]] = field(default_factory=lambda: MappingProxyType({}))
 
 
 @dataclass(frozen=True)
@@ -168,6 +175,18 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
         if typed is not None:
             typed_in[typed[0]][reading] = (_hand_millimetres(row), constructed)
             del misread[reading]
+    values = {}
+    for reading, rows in list(misread.items()):
+        millimetres = _hand_millimetres(rows[0][0])
+        # One reading typed as its value, as a whole plan's are told (every reading the value it stands for): by
+        # itself it was named another segment it happened to be near, or a length misread.
+        # A segment's ω or ε is no value a segment stands for: its length gives the link's V or a first.
+        quantity = next((row.quantity for row, plan in rows
+                         if plan and not row.quantity.startswith(("omega", "epsilon"))
+                         and abs(millimetres - abs(plan)) <= VALUE_TYPED_SHARE * abs(plan)), None)
+        if quantity is not None:
+            values[reading] = (quantity, millimetres, abs(rows[0][1]) / rows[0][0].per_millimetre)
+            del misread[reading]
     force_scale = {}
     for reading, rows in list(misread.items()):
         row, plan = rows[0]
@@ -193,7 +212,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
                                    for kind, (other, read) in other_plan.items()}),
                  MappingProxyType(typed_in["metres"]), MappingProxyType(typed_in["centimetres"]),
-                 MappingProxyType(force_scale))
+                 MappingProxyType(force_scale), MappingProxyType(values))
 
 
 def _name(reading: str) -> str:
@@ -543,6 +562,12 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                                     for reading, (_, constructed) in readings.items())
                 details.append(f"readings {share} of their lengths on the drawings ({lengths}): lengths typed in "
                                f"{unit}? give the millimetres measured (each reading times {factor})")
+        if found.values:
+            typed = "; ".join(f"{reading} is {quantity_symbol(quantity)} = {value:.4g} "
+                              f"{_VALUE_UNITS[value_kind(quantity)]} ({constructed:.4g} mm as constructed)"
+                              for reading, (quantity, value, constructed) in found.values.items())
+            details.append(f"readings that are the values they stand for, not their lengths on the drawings "
+                           f"({typed}): give the millimetres measured (each value over its drawing's scale)")
         if found.force_scale:
             details.append("; ".join(
                 f"{reading} is {row_name} at μF = {scale:g} N/mm ({length:.2f} mm there), not at its polygon's"
@@ -655,11 +680,20 @@ def _far_off(row: ErrorRow, plan: float, precision: float) -> bool:
 
 def _plan_of(row: ErrorRow) -> str:
     """The plan a row's quantity is read off: V… and ω off the velocity plan, a… and ε off the acceleration plan."""
-    if is_reaction(row.quantity):
+    return value_kind(row.quantity)
+
+
+def value_kind(quantity: str) -> str:
+    """The drawing a quantity is read off: ``velocity``, ``acceleration`` or ``forces``."""
+    if is_reaction(quantity):
         return "forces"
-    return "velocity" if row.quantity.startswith(("V", "omega")) else "acceleration"
+    return "velocity" if quantity.startswith(("V", "omega")) else "acceleration"
+
+
+# The unit of the value a segment of each drawing stands for.
+_VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 
 __all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips",
            "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "off_the_other_plan", "on_grid",
-           "read_at", "setting", "sharing", "slips", "typed_unit"]
+           "read_at", "setting", "sharing", "slips", "typed_unit", "value_kind"]

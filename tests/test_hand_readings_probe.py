@@ -93,6 +93,23 @@ def test_the_error_table_tells_readings_in_metres_as_the_console_does_not_as_a_p
             f"{lengths['pb']:.4g} mm as constructed): lengths typed in metres?") in table, table
 
 
+def test_one_reading_typed_as_the_value_it_stands_for_is_told_so():
+    """A student typed VE = 1.147 m/s for pe among readings in mm: it was named the acceleration plan's dn5, a segment
+    it happened to be near.  Here pb is typed as VB in m/s, its length times μV = ω·r/80 (velocity_pole = 80)."""
+    lengths = _velocity_plan_lengths()
+    scale = 6.3 * 0.08 / 80.0
+    readings = {name: round(value, 1) for name, value in lengths.items()}
+    readings["pb"] = round(lengths["pb"] * scale, 4)
+    detail, table = _far_off({"velocity": readings})
+    told = (f"pb = {readings['pb']:g} mm is VB = {readings['pb']:.4g} m/s ({lengths['pb']:.4g} mm as constructed)")
+    assert (f"readings that are the values they stand for, not their lengths on the drawings ({told}): give the "
+            "millimetres measured") in detail, detail
+    assert "a length misread" not in detail and "segment taken for another" not in detail, detail
+    assert f"{told.replace(' (', ', ').rstrip(')')}" in table, table
+    _, table = _far_off({"velocity": readings}, "ru")
+    assert "Замеры, равные самим величинам" in table, table
+
+
 def _crank_angle(fixture, number):
     analysis = analyse(dataclasses.replace(graphplan.load(fixture), measured={}))
     return float(analysis.motion.driver[next(p for p in analysis.plans if p.number == number).index])

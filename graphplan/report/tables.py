@@ -31,6 +31,7 @@ from ..misreadings import (
     sharing,
     slips,
     typed_unit,
+    value_kind,
 )
 from ..render.numerals import number, scale_factor
 from ..wording import balancing_load
@@ -156,6 +157,14 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
                 text["errors_reading_against"].format(reading=_written(reading, text, mark),
                                                       millimetres=f"{constructed:.4g}".replace(".", mark))
                 for reading, (_, constructed) in readings.items())))
+    if found.values:
+        units = {"velocity": text["unit_m_per_s"], "acceleration": text["unit_m_per_s2"], "forces": text["newton"]}
+        lines.append(text["errors_readings_values"].format(readings="; ".join(
+            text["errors_reading_value"].format(
+                reading=_written(reading, text, mark), symbol=quantity_symbol(quantity),
+                value=f"{value:.4g}".replace(".", mark), unit=units[value_kind(quantity)],
+                millimetres=f"{constructed:.4g}".replace(".", mark))
+            for reading, (quantity, value, constructed) in found.values.items())))
     if found.force_scale:
         lines.append(text["errors_force_scale"].format(readings="; ".join(
             text["errors_force_scale_item"].format(
