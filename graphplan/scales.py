@@ -45,6 +45,13 @@ def next_standard_scale(scale: float) -> float:
     return standard_scale(scale * (1.0 + 1e-9))
 
 
+def finer_standard_scale(scale: float) -> float:
+    """The standard scale factor just below ``scale``: the drawing a step larger (0.004 → 0.0025, 5 → 4)."""
+    exponent = math.floor(math.log10(scale))
+    below = [float(f"{mantissa}e{power}") for power in (exponent - 1, exponent) for mantissa in STANDARD_MANTISSAS]
+    return max(value for value in below if value < scale * (1.0 - 1e-9))
+
+
 def fit_scale(extent: float, field_mm: float) -> float:
     """The standard scale at which ``extent`` (SI units) fits in ``field_mm`` millimetres."""
     return standard_scale(max(extent, 1e-300) / field_mm)

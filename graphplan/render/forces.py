@@ -36,7 +36,7 @@ import math
 import re
 import unicodedata
 from collections.abc import Callable, Mapping, MutableMapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
@@ -55,7 +55,7 @@ from ..memo import OwnedMemo, RecentMemo
 from ..motion import Motion
 from ..plans import Plan
 from ..rounding import ROUNDING_NOISE
-from ..scales import fit_scale, format_scale, standard_scale
+from ..scales import finer_standard_scale, fit_scale, format_scale, standard_scale
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
 from .labels import (
@@ -969,6 +969,26 @@ def _foot(centre: complex, through: complex, unit: complex) -> complex:
 _POLYGONS: OwnedMemo[Drawing] = OwnedMemo()
 
 
+# The polygons drawn finer on a sheet with room for them, by the record and the steps: the same groups each time, so
+# that each group's polygon is lettered once at its finer μF (:data:`_POLYGONS` keeps it by the group).
+_FINER: OwnedMemo[ForcePlan] = OwnedMemo()
+
+
+def with_finer_polygons(forces: ForcePlan, steps: int) -> ForcePlan:
+    """``forces`` with every group's polygon drawn ``steps`` standard steps larger (μF 5 → 4 → 2.5 → 2 N/mm): a
+    polygon at any μF closes alike and gives the same reactions; the sheet's captions then name the μF drawn."""
+    def finer(scale: float) -> float:
+        for _ in range(steps):
+            scale = finer_standard_scale(scale)
+        return scale
+
+    def made() -> ForcePlan:
+        return replace(forces, groups=tuple(replace(group, scale=finer(group.scale)) for group in forces.groups),
+                       scale=finer(forces.scale))
+
+    return forces if steps <= 0 else _FINER.get(forces, steps, made)
+
+
 def _polygons_drawing(sheet: ForceSheet, group: GroupForces) -> Drawing:
     """The polygons of :func:`_polygons`, made once for each group and language while the group lives."""
     return _POLYGONS.get(group, tuple(sheet.text.items()), lambda: _polygons(sheet, group))
@@ -1473,4 +1493,4 @@ def group_id(label: str) -> str:
     return svg_id(label).strip("-")
 
 
-__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "rows", "svg_id", "too_short_to_draw"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "rows", "svg_id", "too_short_to_draw", "with_finer_polygons"]

@@ -35,7 +35,7 @@ from ..errors import SceneError
 from ..load_diagrams import LoadDiagram
 from ..locale import strings
 from ..memo import OwnedMemo
-from ..scales import format_scale, next_standard_scale, standard_scale
+from ..scales import finer_standard_scale, format_scale, next_standard_scale, standard_scale
 from . import force_rows
 from . import forces as force_layout
 from . import plans as plan_layout
@@ -372,7 +372,7 @@ def force_panels(analysis: Analysis, sheet: str | None = None) -> list[Panel]:
     order, each whole under its heading: ``forces-5``, ``forces-5-2``, ...
     """
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
-    return fewest_sheets_cuts([cuts for _, cuts in _force_sheets(analysis, chosen)], (), chosen,
+    return fewest_sheets_cuts([cuts for _, cuts, _ in _force_sheets(analysis, chosen)], (), chosen,
                               form_of(analysis.scene.locale))
 
 
@@ -409,9 +409,15 @@ def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequenc
     return [part for parts in chosen for part in parts]
 
 
-def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[tuple[Panel, list[list[Panel]]]]:
-    """Each force sheet of :func:`force_panels` whole (its rows down one column) and the ways it may stand on
-    sheets (:func:`fewest_sheets_cuts` chooses)."""
+# A force sheet whole, the ways it may stand on sheets, and the same sheet drawn larger, largest first (made when
+# first asked for: :func:`course_panels` takes the first that costs no sheet).
+_ForceSheetWays = tuple[Panel, list[list[Panel]], Callable[[], Iterator[Panel]]]
+
+
+def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[_ForceSheetWays]:
+    """Each force sheet of :func:`force_panels` whole (its rows down one column), the ways it may stand on
+    sheets (:func:`fewest_sheets_cuts` chooses), and the same sheet drawn larger where an empty sheet holds it so
+    whole (:func:`_larger_force_sheets`)."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     found = []
     for position in analysis.plans:
@@ -429,10 +435,11 @@ def _headless(part: Arrangement) -> bool:
 
 
 def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
-                  with_friction: bool = False) -> tuple[Panel, list[list[Panel]]]:
+                  with_friction: bool = False) -> _ForceSheetWays:
     """The force sheet of ``position`` whole, and the ways it may stand on sheets: whole, or its parts in order
     where no empty ``sheet`` holds it whole in any way (each part whole under its heading, continued), cut as
-    :meth:`force_rows.Rows.cuts` has them."""
+    :meth:`force_rows.Rows.cuts` has them; and, where it stands whole as first drawn, the same sheet drawn larger
+    (:func:`_larger_force_sheets`)."""
     words = labels(analysis.scene.locale)
     form = form_of(analysis.scene.locale)
     drawn = force_sheet(analysis, position, with_friction)
@@ -443,6 +450,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         return holds(sheet, form, width, height)
 
     enlarged = drawn if drawn.lever_enlarged else None
+    first = drawn
     # The groups cut free, drawn once for all the versions of the sheet tried (:func:`force_layout.rows`).
     groups_cut_free: dict[tuple[int, float], force_layout.Drawing] = {}
     # The groups cut free that stand on a part of their own, their equations going on after them: drawn smaller
@@ -482,7 +490,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
         heading = rows.heading
         if sheet == "none":
-            return one, [[one]]
+            return one, [[one]], lambda: iter(())
         # Its rows in two columns where a sheet is too low for them in one.
         cuts = [[replace(one, alternatives=(two,) if two.extent != one.extent else ())]]
         if any(fits(width(way), height(way)) for way in cuts[0][0].ways):
@@ -528,6 +536,26 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             break
     if headless is not None:
         drawn, one, cuts, heading = cut(*headless)
+    whole, ways = _finished(analysis, drawn, one, cuts, heading)
+    # Only a sheet an empty sheet held whole as first drawn, at its lettering and scales, has room to spare.
+    roomy = drawn == first and not parted and len(ways) == 1 and len(ways[0]) == 1
+
+    def larger() -> Iterator[Panel]:
+        for bigger in _larger_force_sheets(analysis, drawn, groups_cut_free) if roomy else ():
+            rows = force_layout.rows(bigger, groups_cut_free)
+            way, other = (split(rows.arranged(rows.in_columns(count)), one.name, one.label, _group_of_field)
+                          for count in (1, 2))
+            if fits(width(way), height(way)) or fits(width(other), height(other)):
+                panel = replace(way, alternatives=(other,) if other.extent != way.extent else ())
+                yield _finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0]
+
+    return whole, ways, larger
+
+
+def _finished(analysis: Analysis, drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[Panel]],
+              heading: force_rows.Heading) -> tuple[Panel, list[list[Panel]]]:
+    """The force sheet ``one`` whole and its ways ``cuts`` as drawn by ``drawn``: the lever's μV and the groups' μl
+    they stand at, the polygons and the lever to no length scale, the heading's scales named."""
     lever = drawn.lever_drawn_scale if drawn.lever is not None else None
     # The whole names its heading's scales for the note, which shows it in parts (:func:`note_parts.note_parts`).
     one, cuts = (replace(_at_no_length_scale(one), lever_scale=lever, heading_scales=heading.scales,
@@ -537,6 +565,28 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         return one, cuts
     return _drawn_at(one, drawn.length_scale), [[_drawn_at(part, drawn.length_scale) for part in panels]
                                                 for panels in cuts]
+
+
+# The standard steps finer the groups cut free (μl) and their polygons (μF) are tried at on a sheet with room for
+# them, largest first: a student's A1 draws them about twice the mechanism's μl (0.004 → 0.002 m/mm, 5 → 2 N/mm).
+LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1, 0), (0, 1))
+
+
+def _larger_force_sheets(analysis: Analysis, drawn: force_layout.ForceSheet,
+                         groups_cut_free: dict[tuple[int, float], force_layout.Drawing]
+                         ) -> Iterator[force_layout.ForceSheet]:
+    """``drawn`` with its groups cut free and its polygons drawn larger, by :data:`LARGER_FORCE_STEPS`; the
+    polygons at the μF the scene sets are left at it, as the drawing a hand fixed."""
+    fixed_polygons = analysis.scene.drawing.force_scale is not None
+    steps = dict.fromkeys((bodies, 0 if fixed_polygons else polygons) for bodies, polygons in LARGER_FORCE_STEPS)
+    for bodies, polygons in steps:
+        if not bodies and not polygons:
+            continue
+        scale = drawn.length_scale
+        for _ in range(bodies):
+            scale = finer_standard_scale(scale)
+        yield replace(drawn, length_scale=scale,
+                      forces=force_layout.with_finer_polygons(drawn.forces, polygons))
 
 
 def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet,
@@ -627,7 +677,7 @@ def fewest_sheets_length_scale(analysis: Analysis, sheet: str, largest: float) -
     fewest: tuple[int, float] | None = None
     for scale in candidates:
         try:
-            panels = course_panels(at_length_scale(analysis, scale), diagrams, sheet)
+            panels = course_panels(at_length_scale(analysis, scale), diagrams, sheet, larger=False)
             count = sum(len(pack(drawings, sheet, form)) for drawings in (panels.kinematics, panels.forces)
                         if drawings)
         except SceneError:  # at this μl; the run at the μl chosen says why where none will do
@@ -874,21 +924,63 @@ class CoursePanels:
 def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]] = (),
                   sheet: str | None = None, dynamics: Sequence[Panel] = (),
                   balancing: Sequence[Panel] = (), loads: Sequence[Panel] = (),
-                  smaller_loads: Callable[[], Iterator[Sequence[Panel]]] | None = None) -> CoursePanels:
+                  smaller_loads: Callable[[], Iterator[Sequence[Panel]]] | None = None,
+                  larger: bool = True) -> CoursePanels:
     """The panels of :func:`course_sheets`, for a caller that also writes the drawings on their own; ``loads``, the
     load diagrams (:func:`load_diagrams_panel`), stand among the force sheets, whose values they give;
-    ``smaller_loads`` the same drawn smaller, largest first, the first of which that saves a sheet is taken."""
+    ``smaller_loads`` the same drawn smaller, largest first, the first of which that saves a sheet is taken;
+    ``larger`` draws a force sheet larger where the sheets have the room (:func:`_larger_where_room`): the choice
+    of μl, which counts sheets alone, leaves it out."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     linkage, forces = _laid_out(analysis, chosen)
     kinematics = [*linkage, *(panel_of(d, f"diagram-{k + 1}") for k, d in enumerate(diagrams))]
     # Placed after the force sheets, the load diagrams take the first room left beside one (the first sheet of
     # forces that has it); placed first, one took an A1 alone where the force sheet after it needed a whole sheet.
     form = form_of(analysis.scene.locale)
-    parts = fewest_sheets_cuts([cuts for _, cuts in forces], loads, chosen, form)
+    parts = fewest_sheets_cuts([cuts for _, cuts, _ in forces], loads, chosen, form)
     if loads and parts and smaller_loads is not None and chosen != "none":
         loads = _loads_saving_a_sheet(parts, loads, smaller_loads, chosen, form)
-    return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _ in forces), tuple(dynamics),
+    if larger and chosen != "none":
+        parts = _larger_where_room(parts, loads, [ways for _, _, ways in forces], chosen, form)
+    return CoursePanels(tuple(kinematics), (*parts, *loads), tuple(whole for whole, _, _ in forces), tuple(dynamics),
                         tuple(balancing))
+
+
+def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel], larger: Sequence[Callable[[], Iterator[Panel]]],
+                       sheet: str, form: str) -> list[Panel]:
+    """``parts``, each force sheet that stands whole among them drawn larger (its groups cut free at a finer μl,
+    its polygons at a finer μF) where the sheets hold it so: the first of its ``larger`` ways, largest first, that
+    packs with the drawings ``after`` them on no more sheets, and puts no two μl on one sheet, whose title block
+    gives one scale.  A force sheet with room to spare on its A1 drew its groups and polygons a third of the way
+    across it, as small as the mechanism's own μl and the polygons' 150 mm fields make them."""
+    chosen = list(parts)
+
+    def packed(tried: Sequence[Panel]) -> list[Page] | None:
+        try:
+            return pack([*tried, *after], sheet, form)
+        except SceneError:
+            return None
+
+    pages = packed(chosen)
+    if pages is None:
+        return chosen
+    count = len(pages)
+    for ways in larger:
+        for way in ways():
+            at = next((k for k, part in enumerate(chosen) if part.name == way.name), None)
+            if at is None:
+                break
+            tried = [*chosen[:at], way, *chosen[at + 1:]]
+            found = packed(tried)
+            if found is not None and len(found) <= count and all(_one_length_scale(page) for page in found):
+                chosen = tried
+                break
+    return chosen
+
+
+def _one_length_scale(page: Page) -> bool:
+    """Whether the drawings to scale on ``page`` share one μl (those of no μl of their own at the analysis's)."""
+    return len({panel.length_scale for panel, _, _ in page.placed if panel.to_scale}) <= 1
 
 
 def _loads_saving_a_sheet(parts: Sequence[Panel], loads: Sequence[Panel],
