@@ -972,10 +972,19 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel], larger: S
                 break
             tried = [*chosen[:at], way, *chosen[at + 1:]]
             found = packed(tried)
-            if found is not None and len(found) <= count and all(_one_length_scale(page) for page in found):
+            if found is not None and len(found) <= count and _in_order(found, [part.name for part in tried]) \
+                    and all(_one_length_scale(page) for page in found):
                 chosen = tried
                 break
     return chosen
+
+
+def _in_order(pages: Sequence[Page], names: Sequence[str]) -> bool:
+    """Whether the drawings ``names`` stand on ``pages`` in their order: a force sheet drawn larger that moves on to
+    a later sheet leaves its sheet with friction on the sheet before it."""
+    page_of = {panel.name: k for k, page in enumerate(pages) for panel, _, _ in page.placed}
+    standing = [page_of[name] for name in names if name in page_of]
+    return standing == sorted(standing)
 
 
 def _one_length_scale(page: Page) -> bool:
