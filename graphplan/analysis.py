@@ -30,7 +30,7 @@ from .joint_friction import (
 from .kinematics import at
 from .length_units import lengths_in_millimetres
 from .lever import Lever, lever
-from .load_strokes import diagrams_in_travel, strokes_of_other_links
+from .load_strokes import diagrams_in_travel, resisting_forces_turning, strokes_of_other_links
 from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
@@ -217,6 +217,7 @@ def analyse(scene: Scene) -> Analysis:
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
                             + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
+                            + resisting_forces_turning(mechanism, positions, motion)
                             + _self_locking(mechanism, positions, friction, with_friction)
                             + _turned_round(mechanism, balance, with_friction)
                             + _locked_between(mechanism, positions, friction, locked_spans)
@@ -230,7 +231,8 @@ def analyse(scene: Scene) -> Analysis:
 # Warnings about the scene as a whole, recorded at its first position (results.json's warnings are by position):
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
-                                 "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams"})
+                                 "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
+                                 "resisting-turns-round"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

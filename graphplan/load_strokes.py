@@ -5,7 +5,8 @@ A window or a diagram of a load is read along the working link's stroke (``posit
 strokes turn back elsewhere, a second cylinder's piston, that reading is silently another cylinder's: the load
 acts while the first piston compresses, and not while its own does.  The scene then names the load's own stroke
 (``loads[].stroke``); where it does not, it is warned of.  A diagram whose shares end at the stroke's travel in
-metres was typed in metres, not shares: warned of too.
+metres was typed in metres, not shares: warned of too.  So is a resisting force whose point, within its window,
+moves both ways along the force's line: it turns round with the motion, which a weight typed resisting does not.
 """
 
 from __future__ import annotations
@@ -15,9 +16,9 @@ import math
 import numpy as np
 
 from .kinematics import dot
-from .loads import stroke_travel
+from .loads import activity, external_names, motion_state, resisted_sense, stroke_travel
 from .mechanism import Mechanism
-from .motion import PositionWarning, solve
+from .motion import Motion, PositionWarning, solve
 from .positions import PositionSet, link_extremes
 
 # Strokes that turn back within this of each other (degrees of the crank) are one stroke, read alike.
@@ -97,3 +98,37 @@ def _same_ends(one: tuple[float, float], other: tuple[float, float]) -> bool:
 
 def _angles(ends: tuple[float, float]) -> str:
     return " and ".join(f"φ = {round(math.degrees(end), 1) % 360.0:.1f}°" for end in ends)
+
+
+def resisting_forces_turning(mechanism: Mechanism, positions: PositionSet,
+                             motion: Motion) -> tuple[PositionWarning, ...]:
+    """A ``resisting-turns-round`` warning for each resisting force whose point moves both ways along its line
+    within its window of one stroke, at the analysed positions: it turns round with the motion there.  A lifted load typed
+    ``resisting = true`` pushed a lever's end up once the end passed the top of its arc, with no word of it."""
+    told = []
+    state = motion_state(motion)
+    acting = activity(mechanism, positions, motion) > 0
+    for load, name, on in zip(mechanism.scene.loads, external_names(mechanism.scene.loads), acting, strict=True):
+        # Acting always, a resistance turns round with a link that swings to and fro, as it should (a sieve's); in a
+        # window of one stroke its point moving back along its line is the surprise.
+        if not load.resisting or load.kind == "moment" or load.during == "always":
+            continue
+        sense = np.broadcast_to(np.nan_to_num(resisted_sense(load, state)), (motion.count,))
+        along = [int(number) for number, acts, each in zip(positions.numbers, on, sense, strict=True)
+                 if acts and each < 0]
+        against = [int(number) for number, acts, each in zip(positions.numbers, on, sense, strict=True)
+                   if acts and each > 0]
+        if along and against:
+            turned = (load.angle_deg + 180.0) % 360.0
+            told.append(PositionWarning(0, "resisting-turns-round", (
+                f"{load.where} ({name}) resists {load.point}'s motion along its line, and within its window "
+                f"{load.point} moves both ways along it: {name} acts at {load.angle_deg:g}° at positions "
+                f"{_numbers(along)} and turns round to {turned:g}° at positions {_numbers(against)}; a load of "
+                f"one direction whatever the motion (a weight lifted) is resisting = false")))
+    return tuple(told)
+
+
+def _numbers(numbers: list[int]) -> str:
+    """Position numbers as a list: 2, 3, 4, 7."""
+    return ", ".join(map(str, numbers))
+

@@ -25,6 +25,12 @@ def _note(scene, locale: str) -> str:
     return note_markdown(analyse(dataclasses.replace(scene, locale=locale)))
 
 
+def _other_cautions(note: str, locale: str) -> str:
+    """The note without its caution that the slotted link's resisting load turns round within its working stroke
+    (its point D on the arc rises and then sinks there): true of the scene, and not the caution these tests ask."""
+    return note.replace(strings(locale)["note_warning_resisting_turns_round"], "")
+
+
 @pytest.mark.parametrize("locale", LOCALES)
 def test_lengths_in_millimetres_are_told_in_the_note_under_the_initial_data(locale):
     note = _note(graphplan.load(scaled(1000.0)), locale)
@@ -40,7 +46,8 @@ def test_a_working_sense_never_taken_is_told_in_the_note(locale):
     idle = graphplan.scene.loads(SLOTTED_BY_A_SLIDER.replace("SENSE", "cw"))
     note = _note(idle, locale)
     assert strings(locale)["note_warning_idle_throughout"].format(link=4) in note
-    assert CAUTION[locale] not in _note(graphplan.scene.loads(SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")), locale)
+    assert CAUTION[locale] not in _other_cautions(
+        _note(graphplan.scene.loads(SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")), locale), locale)
 
 
 @pytest.mark.parametrize("locale", LOCALES)
@@ -54,7 +61,7 @@ def test_a_load_of_an_idle_stroke_never_reached_is_told_in_the_note(locale):
     scene = SLOTTED_BY_A_SLIDER.replace("SENSE", "ccw")
     note = _note(graphplan.scene.loads(scene.replace('during = "working"', 'during = "idle"')), locale)
     assert strings(locale)["note_warning_working_throughout"].format(link=4) in note
-    assert CAUTION[locale] not in _note(graphplan.scene.loads(scene), locale)
+    assert CAUTION[locale] not in _other_cautions(_note(graphplan.scene.loads(scene), locale), locale)
 
 
 @pytest.mark.parametrize("locale", LOCALES)

@@ -237,3 +237,60 @@ def test_a_slider_s_mass_in_grams_is_warned_of_by_the_mechanism_s_size(tmp_path,
     # The piston as the starter has it, 0.9 kg, is no slip.
     told, results, _ = _run(tmp_path, starter("slider-crank", "en"), capsys)
     assert "grams typed for kg" not in told
+
+
+LIFT = """[scene]
+title = "Lift"
+[frame]
+link = 1
+points = { G = [0.0, 0.0], C = [0.45, 0.30] }
+lines = { cylinder = { through = "G", angle = 30.0 } }
+[driver]
+kind = "slider"
+link = 2
+joint = "A"
+guide = "cylinder"
+travel = [0.05, 0.30]
+velocity = 0.10
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.30, 0.20]
+assembly = "right"
+[points]
+E = { link = 4, from = "C", toward = "B", at = -0.35 }
+[[loads]]
+kind = "force"
+link = 4
+point = "E"
+value = 900.0
+angle = -90.0
+resisting = true
+during = "{during}"
+[positions]
+count = 12
+number_from = 1
+working = { link = 4, sense = "ccw" }
+"""
+
+
+def test_a_resisting_force_whose_point_turns_back_along_its_line_in_its_window_is_warned_of(tmp_path, capsys):
+    """A lifted weight typed resisting = true: the lever's end E rises, passes the top of its arc and sinks within
+    the working stroke, and the 900 N pushed it up from there on, with no word (a student's lift)."""
+    told, results, note = _run(tmp_path, LIFT.replace("{during}", "working"), capsys)
+    # E's vertical velocity at each position: rising, the load resists it pointing down (−90°); sinking, up.
+    rising, sinking = [], []
+    for number, position in enumerate(results["positions"], start=1):
+        (rising if position["points"]["E"]["v"][1] > 0 else sinking).append(str(number))
+    assert rising and sinking
+    words = (f"loads[0] (F4) resists E's motion along its line, and within its window E moves both ways along it: F4 "
+             f"acts at -90° at positions {', '.join(rising)} and turns round to 90° at positions {', '.join(sinking)}; "
+             "a load of one direction whatever the motion (a weight lifted) is resisting = false")
+    assert words in told
+    assert any(warning["code"] == "resisting-turns-round" and warning["detail"] == words
+               for warning in results["warnings"])
+    assert "so the force turns round with the motion there" in note
+    # Acting always, a resistance turns round with the motion as it should: no word.
+    told, results, _ = _run(tmp_path, LIFT.replace("{during}", "always"), capsys)
+    assert "resists E's motion" not in told
