@@ -401,6 +401,19 @@ def test_structure_and_time_ratio(read):
     assert value(ratio) == pytest.approx(document["strokes"]["time_ratio"], abs=6e-4)
 
 
+def test_time_ratio_angle_written_to_the_places_of_the_crank_angles(read):
+    """θ = |φw − φi|/2 is worked from the two φ the note writes to five digits (187.7°, 213.2°: to hundredths at
+    most); θ written to five digits of its own (7.7047°) claimed places those angles do not have."""
+    _, lines, document = read
+    text = "\n".join(lines)
+    working, theta = re.search(rf"= ({NUMBER})°[^=]+= {NUMBER}°.*?θ = \|[^=]+= ({NUMBER})°", text).groups()
+    whole = working.replace("−", "").replace(",", ".").partition(".")[0]
+    written_places = len(theta.replace(",", ".").partition(".")[2])
+    assert written_places <= 5 - len(whole), (working, theta)
+    exact = abs(document["strokes"]["working_deg"] - 180.0)
+    assert value(theta) == pytest.approx(exact, abs=0.5 * 10.0 ** -(5 - len(whole)) + 1e-9)
+
+
 def test_error_tables_delta_and_drafting_to_the_precision(read):
     scene, lines, _ = read
     precision = scene.drawing.drafting_precision

@@ -441,8 +441,13 @@ class _Note:
             # rod's angle between its extremes in a four-bar or slider-crank, the swing ψ of a slotted lever).
             quicker_working = working < idle
             formula = "(180° − θ)/(180° + θ)" if quicker_working else "(180° + θ)/(180° − θ)"
-            theta = self.t("note_strokes_theta", theta=self.n(math.degrees(abs(working - idle)) / 2.0),
-                           formula=formula, ratio=self.n(working / idle, 4))
+            # θ is half the difference of the two φ written beside it, so it is written to their decimal places
+            # (φw = 187.7°, θ = 7.7°): to five digits of its own it read 7.7047°, finer than the angles it comes from.
+            larger_deg = math.degrees(max(working, idle))
+            decimals = max(0, 4 - math.floor(math.log10(float(self.n(larger_deg).replace(self.mark, ".")))))
+            theta_deg = round(math.degrees(abs(working - idle)) / 2.0, decimals)
+            theta = self.t("note_strokes_theta", theta=self.n(theta_deg), formula=formula,
+                           ratio=self.n(working / idle, 4))
             # K ≥ 1 where the working stroke is the slower one, as a machine that works in one stroke is laid out.
             quicker = f" {self.t('note_strokes_quicker')}" if working / idle < 1.0 - 1e-6 else ""
             # The stroke H or swing ψ the plan of positions dimensions, which the note handed in alone would lack.
