@@ -234,7 +234,8 @@ def test_the_scale_arithmetic_reproduces_the_scales_of_the_plans(name):
     analysis = analysis_of(name, "en")
     note = note_of(name, "en")
     pole = r"μ(V|a) = (?:VA|aA)/pa = ([\d.]+)/([\d.]+) = ([\d.]+)"
-    standard = r"μ(V|a) ≥ ([\d.e−]+)/150 = [\d.e−]+; the nearest standard scale factor is μ[Va] = ([\d.e−]+)"
+    standard = (r"μ(V|a) ≥ ([\d.e−]+)/150 = [\d.e−]+, and the next larger standard scale factor is taken: "
+                r"μ[Va] = ([\d.e−]+)")
     matches = sorted([*re.finditer(pole, note), *re.finditer(standard, note)], key=lambda match: match.start())
     scales = [scale for plan in analysis.plans for scale in (plan.velocity.scale, plan.acceleration.scale)]
     assert len(matches) == len(scales)
