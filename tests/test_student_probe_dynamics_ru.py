@@ -212,3 +212,16 @@ def test_a_gear_ratio_that_fits_is_not_told():
 def test_an_induction_motor_by_its_name_is_sent_to_kloss(kind):
     told = refusal(COMPRESSOR + MOTOR.replace('kind = "kloss"', f'kind = "{kind}"'))
     assert told == f"dynamics.motor.kind: must be one of constant, linear, kloss; did you mean 'kloss'? (got '{kind}')"
+
+
+# --- the count of the model's steps in words --------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("count", "words"), [(361, "361 шаг"), (362, "362 шага"), (360, "360 шагов")])
+def test_the_steps_of_the_cycle_are_counted_in_the_form_the_number_takes(tmp_path, count, words):
+    # Was "по циклу (шагов: 360)", a form's label where a note writes the count with its noun; and the noun
+    # follows the number as Russian declines it (1, 21 … шаг; 2–4 шага; 5–20 шагов).
+    graphplan.load_text(COMPRESSOR + f"count = {count}\n").write(tmp_path / "out", only=["dynamics", "note"])
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert f"по циклу ({words}) они взяты из аналитического решения" in note
+    assert "шагов:" not in note

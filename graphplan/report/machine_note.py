@@ -79,7 +79,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
     else:
         # The scene's steps: the samples are one more over a travel, and more again where a load switches on.
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
-                         count=note.scene.dynamics.count))
+                         count=Count(note.scene.dynamics.count)))
         if note.scene.friction:   # the force analysis takes it in, and a reader would think these numbers do too
             note.para(note.text["note_dyn_without_friction"])
     if model.plans:
