@@ -91,7 +91,8 @@ def _load_diagrams(note: Writer) -> None:
             travel = note.t("ld_travel_axis_turning", symbol=symbol)
             coordinates = np.degrees(diagram.coordinates)
         unit = text["newton"] if diagram.kind == "force" else text["newton_metre"]
-        note.para(note.t("note_ld_intro", names=names, link=diagram.link, symbol=symbol, plans=plans or "—"))
+        given = text["semicolon"].join(_given(note, load, unit) for load in diagram.loads)
+        note.para(note.t("note_ld_intro", link=diagram.link, given=given, symbol=symbol, plans=plans or "—"))
         header = [text["column_position"], text["note_ld_stroke"], travel, text["note_ld_share"],
                   *(f"{load.name}, {unit}" for load in diagram.loads)]
         rows = []
@@ -109,6 +110,20 @@ def _load_diagrams(note: Writer) -> None:
                          note.n(share, 4), *(note.n(float(load.values[k])) for load in diagram.loads)])
         note.table(note.t("note_ld_table", names=names, link=diagram.link), header, rows, "llrr" + "r" * len(diagram.loads))
     note.figure("load_diagrams.svg", text["ld_title"], lead="plot_lead")
+
+
+def _given(note: Writer, load: load_diagrams.DrawnLoad, unit: str) -> str:
+    """How the scene gives a load of a load diagram: by a diagram of its own, or as one value over a stroke or a
+    window of it, which the diagram draws as a rectangle; the note called every one a diagram the scene gave."""
+    spec = load.spec
+    if spec.diagram is not None:
+        return note.t("note_ld_given_diagram", name=load.name)
+    value = note.n(abs(spec.value) if spec.resisting else spec.value)
+    if isinstance(spec.during, str):
+        return note.t(f"note_ld_given_{spec.during}", name=load.name, value=value, unit=unit)
+    start, end = spec.during
+    return note.t("note_ld_given_window", name=load.name, value=value, unit=unit, start=note.n(start),
+                  end=note.n(end))
 
 
 def _forces_position(note: Writer, section: str, plan: PlanPosition) -> None:
