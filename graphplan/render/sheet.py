@@ -1363,7 +1363,7 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         if not any(panel.to_scale for panel, _, _ in page.placed):
             page_scale = None
         scale_box = scale_text(page_scale, form, text["length_scale"], text["decimal_mark"]) if page_scale is not None else ""
-        fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page) or words[kind], scale=scale_box,
+        fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page, kind) or words[kind], scale=scale_box,
                                   sheet=first + k, sheets=count, language=locale)
         layers: list[Layer] = []
         placed: dict[str, Rect] = {}
@@ -1378,13 +1378,26 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
     return sheets
 
 
-def _drawing_name(page: Page) -> str:
+# The panels that are a sheet kind's own drawings, by their names' start: beside them a page may hold drawings of
+# another kind that have a heading of their own (the load diagrams in the room a force sheet leaves).
+_OWN_PANELS = {"sheet_forces": "forces"}
+
+
+def _drawing_name(page: Page, kind: str = "") -> str:
     """What a page shows, when it is one drawing's: the parts of one (on pages of their own, or parts that
-    share a page), or one whole alone."""
+    share a page), or one whole alone; or one force analysis beside drawings of another kind.
+
+    A page with the force analysis of position 8 and the load diagrams was named only "Force analysis", where the
+    page of position 2 alone was named "Force analysis, position 2"; a page of two positions' force analyses
+    names neither (the kind's word), which two names in the title block's two lines would not hold."""
     if page.label:
         return page.label
     names = {panel.label for panel, _, _ in page.placed}
-    return names.pop() if len(names) == 1 else ""
+    if len(names) == 1:
+        return names.pop()
+    own = _OWN_PANELS.get(kind)
+    labels = {panel.label for panel, _, _ in page.placed if own is not None and panel.name.startswith(own)}
+    return labels.pop() if len(labels) == 1 else ""
 
 
 def _unframed(panel: Panel, number: int, count: int) -> Sheet:
