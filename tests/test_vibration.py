@@ -1198,3 +1198,25 @@ def test_an_instrument_is_warned_of_by_the_times_its_base_s_motion_it_makes(tmp_
         codes = [each["code"] for each in json.loads((tmp_path / "out" / "results.json").read_text(
             encoding="utf-8"))["vibration"]["warnings"]]
         assert codes == ["near-resonance"]
+
+
+@pytest.mark.parametrize(("locale", "said"), [
+    ("en", r"TR ≥ ([\d.]+) at ζ = 8"), ("ru", r"TR ≥ ([\d,]+) при ζ = 8"), ("zh", r"，或在 ζ = 8 时 TR ≥ ([\d.]+)")])
+def test_the_note_gives_the_least_transmissibility_at_the_damping_it_holds_at(tmp_path, capsys, locale, said):
+    """The note's sag caution wrote "TR ≥ 0.786" bare where the console wrote "TR ≥ 0.786 at ζ = 8": the bound holds
+    at the scene's ζ alone (undamped, TR ≥ 0.786 is another r).  The Chinese ran its "or" into the symbol, "或TR"."""
+    g, most, zeta, wanted, rpm = 9.80665, 0.1, 8.0, 0.1, 1200.0
+    omega = rpm * math.pi / 30
+    body = (f"mass = 200.0\nunbalanced_mass = 0.5\neccentricity = 0.01\nstiffness = 4.0e5\ndamping_ratio = {zeta:g}\n"
+            f"rpm = {rpm}\ntransmissibility = {wanted}\n")
+    scene = tmp_path / "machine.toml"
+    scene.write_text(f'[scene]\ntitle = "Machine"\nlocale = "{locale}"\n[vibration]\n' + body, encoding="utf-8")
+    from graphplan.cli import main
+
+    assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--only", "note"]) == 0
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    found = re.search(said, note)
+    assert found, note
+    least = float(found.group(1).replace(",", "."))
+    assert g * _ratio_for(least, zeta) ** 2 / omega ** 2 <= most < g * _ratio_for(0.99 * least, zeta) ** 2 / omega ** 2
+    assert "或TR" not in note

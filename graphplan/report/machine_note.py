@@ -818,7 +818,9 @@ def _sag_caution(note: Writer, sagging: MountsSag, ratio: str) -> None:
     if sagging.most_damping is not None:
         ways.append(note.t("note_vib_caution_way_damping", value=sagging.most_damping.replace(".", note.mark)))
     if sagging.least_transmissibility is not None:
-        ways.append(note.t("note_vib_caution_way_transmissibility",
+        # The least TR holds at the scene's ζ alone: the console says "at ζ = 8", and so must the note.
+        damped = "_damped" if sagging.zeta > 0 else ""
+        ways.append(note.t(f"note_vib_caution_way_transmissibility{damped}", zeta=note.n(sagging.zeta),
                            value=sagging.least_transmissibility.replace(".", note.mark)))
     ways.append(note.t("note_vib_caution_way_speed", value=sagging.least_rpm.replace(".", note.mark),
                        rpm=note.n(sagging.rpm)))
