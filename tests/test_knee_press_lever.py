@@ -84,8 +84,8 @@ def test_no_load_arrow_on_the_press_lever_passes_over_another_point(levers):
 MB_CONVENTION = {"en": "(Mb counter-clockwise positive)",
                  "ru": "(Mb: положительное направление — против часовой стрелки)", "zh": "（Mb 以逆时针为正）"}
 MR_CONVENTION = {"en": "positive where they drive, negative where they resist",
-                 "ru": "положителен, где силы движущие, и отрицателен, где они сопротивляются",
-                 "zh": "载荷驱动处为正，阻抗处为负"}
+                 "ru": "положителен там, где силы движущие, и отрицателен там, где они сопротивляются",
+                 "zh": "载荷起驱动作用处为正，起阻力作用处为负"}
 MR_SYMBOL = {"en": "Mr", "ru": "Mс", "zh": "Mr"}
 
 

@@ -27,9 +27,9 @@ SVG = "{http://www.w3.org/2000/svg}"
 FIXTURE = Path(__file__).parent.parent / "fixtures" / "ratchet_crank_rocker.toml"
 # Written alike in every language: functions (Russian's arctg among them), Rij (the reaction of link i on link j),
 # the Latin subscripts of ωmax, Jrot, Mcl and the like, and the unit rad and r/min that Chinese texts write in Latin
-# letters, as GB 3100 has them.
+# letters, as GB 3100 has them; and a name Chinese gives in Latin after its transcription, 克洛斯（Kloss）.
 ALIKE = frozenset({"Rij", "sin", "cos", "tan", "arctan", "arctg", "max", "min", "rot", "mot", "rad", "Wmax", "Mmax",
-                   "Jrot", "Mcl", "Jcl", "mpmath"})
+                   "Jrot", "Mcl", "Jcl", "mpmath", "Kloss"})
 WORD = re.compile(r"(?<![A-Za-z0-9_])[A-Za-z_]{3,}(?![A-Za-z_])")
 # matplotlib's mathtext ($\mathdefault{10^{-1}}$), the figures' file names and a scene table's key ([measured] forces).
 NOT_PROSE = re.compile(r"\$[^$]*\$|[\w.-]+\.(?:svg|png|pdf|csv|md|json|tex|toml)\b|\[[\w.]+\]\s*\w+")
@@ -131,3 +131,13 @@ def test_a_rotor_near_its_resonance_is_cautioned_of_it_in_its_own_language(root,
     assert any(line.startswith(caution) and "ζ = 0" in line for line in note.splitlines())
     assert any(folder.glob("vibration_*.svg")) and (folder / "rotor_balancing.svg").exists()
     assert english_of_run(folder, scene) == {}
+
+
+def test_the_chinese_strings_keep_one_textbook_term_for_each_thing():
+    """阻抗 is an electrical impedance: a resisting load, its work and moment are 阻力, 阻力功, 阻力矩; Kloss is
+    克洛斯（Kloss）, not 克罗斯; Wittenbauer's curve is 能量–质量曲线 in every sentence (one note said 能量–质量图法)."""
+    from graphplan.locale import strings
+
+    text = "\n".join(strings("zh").values())
+    assert "阻抗" not in text and "克罗斯" not in text and "能量–质量图法" not in text
+    assert "阻力矩" in text and "阻力功" in text and "克洛斯（Kloss）公式" in text and "能量–质量曲线" in text

@@ -312,10 +312,10 @@ def test_the_equation_of_motion_is_the_one_integrated_with_the_rotor_reduced_thr
             r"sm = sN·\(λ \+ √\(λ² − 1\)\) = {N}·\({N} \+ √\({N}² − 1\)\) = {N}",
             r"\(Je \+ JF \+ Jrot·i²\)·dω/dt = Md\(ω\) − Mr\(φ\)", r"Jrot·i² = {N}·{N}² = {N} kg·m²"))])
 def test_the_motor_and_the_equation_are_written_as_the_language_s_textbooks_write_them(tmp_path, locale, patterns):
-    """Russian: Mн, Mк, sк, sн, Jрот by формула Клосса; Chinese: MN, Mmax, sm, sN and the gear ratio i by 克罗斯公式;
+    """Russian: Mн, Mк, sк, sн, Jрот by формула Клосса; Chinese: MN, Mmax, sm, sN and the gear ratio i by 克洛斯（Kloss）公式;
     the numbers those of the English note's closed forms."""
     note, _, _ = machine_note(tmp_path, KLOSS, locale)
-    assert ("формулой Клосса" if locale == "ru" else "克罗斯公式") in note
+    assert ("формулой Клосса" if locale == "ru" else "克洛斯（Kloss）公式") in note
     rated = 3000.0 / (1440 * math.pi / 30)
     _, _, mn = numbers(patterns[0], note)
     _, _, mmax = numbers(patterns[1], note)
