@@ -54,7 +54,7 @@ from graphplan.render.sheet import (
 from graphplan.render.title_block import form_of, scale_text
 from graphplan.render.wrapping import fitted
 from graphplan.run import run
-from graphplan.scales import format_scale
+from graphplan.scales import format_scale, standard_scale
 
 MECHANISM_SCALE = 0.005  # m/mm, the ratchet's scene gives 0.0025
 CAPTION = plan_layout.CAPTION_SIZE
@@ -317,13 +317,17 @@ def part_named(sheet, position, name):
                 if piece.name == f"forces-{position.number}-{name}")
 
 
-def test_on_a1_the_force_drawings_keep_the_mechanism_scale_and_the_usual_lettering():
+def test_on_a1_the_force_drawings_keep_the_mechanism_scale_or_a_finer_one_and_the_usual_lettering():
+    """A1 has room: the groups cut free are drawn at the mechanism's μl or larger (a finer standard μl, where the
+    sheet holds them so), never smaller, and lettered as usual."""
     analysis = analysis_of("ratchet_crank_rocker")
     sheets = course_sheets(analysis, "A1")
     captions = [text for sheet in sheets for item in sheet.layers
                 if item.name.startswith("forces-") and item.name.endswith("caption") for text in texts([item])]
     joined = " ".join(text.text for text in captions)
-    assert f"μl = {analysis.scene.drawing.length_scale:g} м/мм, стрелки сил" in joined
+    drawn = [float(value) for value in re.findall(r"μl = ([\d.]+) м/мм, стрелки сил", joined)]
+    assert drawn and all(value <= analysis.scene.drawing.length_scale for value in drawn)
+    assert all(standard_scale(value) == pytest.approx(value) for value in drawn)
     for position in analysis.plans:
         assert f"μV = {scale_factor(position.velocity.scale)} (м/с)/мм, стрелки сил" in joined
     assert {text.size for text in captions} == {plan_layout.CAPTION_SIZE}
