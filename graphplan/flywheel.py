@@ -605,6 +605,15 @@ def _read_load_diagram(table: Table, key: str, side: str, quantity: str) -> Load
                 "by 180/π)") if radians else ""
         raise SceneError(where, "must run over the whole turn: its angles from 0 to 360 degrees",
                          [angles[0], angles[-1]], hint=hint)
+    if side == "resisting":
+        # The resisting side is turned against the shaft as it stands, so a negative value would drive it; a [[loads]]
+        # resisting diagram is refused for the same sign.  A driving diagram may go negative (an engine's compression).
+        for k, ((_, value), (_, item)) in enumerate(zip(points, table.items(key), strict=True)):
+            if value < 0:
+                raise SceneError(f"{where}[{k}]", "must be >= 0: a resisting diagram gives what the resistance takes",
+                                 item[1], hint="; a load that helps the shaft over part of the turn drives it: a "
+                                 "driving diagram (driving_torque or driving_power) may go negative, a resisting one "
+                                 "may not")
     return LoadDiagram(key=key, side=side, quantity=quantity, angles_deg=tuple(angles),
                        values=tuple(value for _, value in points))
 

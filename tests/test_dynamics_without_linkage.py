@@ -165,8 +165,13 @@ DIAGRAM = "resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]
      "dynamics.resisting_power[3]: an angle may be given at most twice"),
     ((DIAGRAM, DIAGRAM + "\nresisting_torque = [[0, 1], [360, 1]]"),
      "dynamics.resisting_power: give resisting_torque or resisting_power, not both"),
-    ((DIAGRAM, "resisting_power = [[0, -5], [360, -5]]"),
-     "dynamics.resisting_power: does -"),
+    ((DIAGRAM + '\ndriving = "constant"', "driving_torque = [[0, -5], [360, -5]]"),
+     "dynamics.driving_torque: does -"),
+    # What the resistance takes is never negative, as a [[loads]] resisting diagram's value: its index is named.
+    ((DIAGRAM, "resisting_power = [[0, 500], [200, -100], [360, 500]]"),
+     "dynamics.resisting_power[1]: must be >= 0: a resisting diagram gives what the resistance takes (got -100)"),
+    ((DIAGRAM, "resisting_torque = [[0, 5], [120, 5], [120, -0.5], [360, 3]]"),
+     "dynamics.resisting_torque[2]: must be >= 0"),
     ((DIAGRAM, ""), "dynamics: needs a load diagram"),
     (("rpm = 100", "rpm = -100"), "dynamics.rpm: must be > 0"),
     (("rpm = 100", ""), "dynamics.omega: is required but missing: give omega (rad/s) or rpm (rev/min)"),
@@ -198,6 +203,17 @@ def test_bad_input_exits_2_naming_the_key_and_writes_nothing(tmp_path, capsys, c
     assert status == 2 and not out.exists()
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith(f"graphplan: error: {message}"), err
+
+
+def test_a_driving_diagram_may_go_negative_as_an_engine_s_compression_stroke_does(tmp_path):
+    # The docs let a driving value be negative: an engine's torque over its compression stroke.  Its mean over the turn,
+    # (−100 + 300)/2 = 100 N·m for the triangle, is the constant resisting moment that balances it.
+    text = PRESS.replace(DIAGRAM + '\ndriving = "constant"',
+                         'driving_torque = [[0, -100], [180, 300], [360, -100]]\nresisting = "constant"')
+    found = dynamics_of(tmp_path, text)
+    assert found["constant"] == "resisting"
+    assert min(found["driving_moment"]) == pytest.approx(-100.0)
+    assert found["resisting_moment"] == pytest.approx([-100.0] * len(found["resisting_moment"]), rel=1e-9)
 
 
 def test_a_linkage_with_a_load_diagram_is_refused(tmp_path, capsys):
