@@ -670,12 +670,19 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
     told = guides_without_angle(scene) + links_without_mass(scene)
     if scene.dynamics is not None and ("dynamics" in pieces or "note" in pieces):
-        from .flywheel import crank_omega, delta_warning, gear_warning, speed_unit_warning, speed_warnings
+        from .flywheel import (
+            crank_omega,
+            delta_warning,
+            gear_warning,
+            speed_unit_warning,
+            speed_warnings,
+            synchronous_warning,
+        )
 
         crank = crank_omega(scene.driver)
         told += [line for line in (delta_warning(scene.dynamics), speed_unit_warning(scene.dynamics, crank),
-                                   gear_warning(scene.dynamics, crank)) if line is not None] + \
-            speed_warnings(scene.dynamics)
+                                   synchronous_warning(scene.dynamics), gear_warning(scene.dynamics, crank))
+                 if line is not None] + speed_warnings(scene.dynamics)
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),
                                    dynamics.unsettled_warning(), dynamics.off_design_warning()) if line is not None]

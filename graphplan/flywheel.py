@@ -42,7 +42,7 @@ from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_
 from .errors import SceneError
 from .kinematics import read_only
 from .reader import Table, check_xy
-from .units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
+from .units import MOST_MOTOR_SLIP, RPM, motor_speed_in_rpm, nearest_synchronous_rpm, percentage_question, rpm_question
 
 # A cycle whose work is left over by more than this share of the work done is not steady: the floor under the
 # integration's own error (EquivalentModel.work_uncertainty), below which a mismatch is not told from it.
@@ -810,6 +810,74 @@ def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
             f"gear_ratio is ω_motor/ω_shaft, here {found.fitting_ratio:.3g} (or a motor of another speed)")
 
 
+@dataclass(frozen=True)
+class OddSynchronousSpeed:
+    """``[dynamics]``' Kloss motor given a ``synchronous_rpm`` (``typed``) that no 50 or 60 Hz motor has, 60·f/p:
+    ``nearest`` is the one nearest it.  ``rated_typed``: it lies a nameplate's slip below that one (1450 under 1500),
+    a rated speed typed for the synchronous one.  ``motor`` is the motor as given and ``corrected`` the one with the
+    nearest synchronous speed and its other key kept as typed (rated_rpm or rated_slip), None where the rated speed
+    typed is not below it."""
+
+    where: str
+    typed: float
+    nearest: float
+    motor: Any
+    corrected: Any
+
+    @property
+    def rated_typed(self) -> bool:
+        return (1.0 - MOST_MOTOR_SLIP) * self.nearest <= self.typed < self.nearest
+
+    def torques_at_rest(self) -> tuple[float, float] | None:
+        """The motor's torque at rest on the driving shaft (N·m), as given and with the nearest synchronous speed,
+        where the nearest gives it more (the slip typed too small, sk with it); None where it does not."""
+        if self.corrected is None:
+            return None
+        given, corrected = (motor.gear_ratio * motor.characteristic(0.0) for motor in (self.motor, self.corrected))
+        return (given, corrected) if corrected > given else None
+
+
+def odd_synchronous_speed(spec: DynamicsSpec) -> OddSynchronousSpeed | None:
+    """Where ``[dynamics]``' Kloss motor is given a ``synchronous_rpm`` that is no synchronous speed 60·f/p of a 50 or
+    60 Hz motor (:func:`~graphplan.units.nearest_synchronous_rpm`): a rated 1450 typed for the synchronous 1500 gives
+    the motor a slip, and so a starting torque, far too small, and the stall that follows was advised a stronger
+    motor.  None where it is one, or the scene gave the motor no synchronous_rpm."""
+    from .machine_motion import KlossMotor
+
+    motion = spec.motion
+    motor = getattr(motion, "motor", None)
+    if not isinstance(motor, KlossMotor) or "synchronous_rpm" not in motion.kloss_keys:
+        return None
+    typed = motor.synchronous_speed / RPM
+    nearest = nearest_synchronous_rpm(typed)
+    if nearest is None:
+        return None
+    synchronous = nearest * RPM
+    drive = {"gear_ratio": motor.gear_ratio, "rotor_inertia": motor.rotor_inertia}
+    if "rated_slip" in motion.kloss_keys:
+        corrected = KlossMotor(motor.power, synchronous, motor.rated_slip, motor.overload, **drive)
+    elif motor.rated_speed < synchronous:
+        corrected = KlossMotor(motor.power, synchronous, 1.0 - motor.rated_speed / synchronous, motor.overload,
+                               **drive)
+    else:
+        corrected = None
+    return OddSynchronousSpeed(where=spec.where, typed=typed, nearest=nearest, motor=motor, corrected=corrected)
+
+
+def synchronous_warning(spec: DynamicsSpec) -> str | None:
+    """The command line's line for :func:`odd_synchronous_speed`, naming the nearest synchronous speed, or None."""
+    odd = odd_synchronous_speed(spec)
+    if odd is None:
+        return None
+    from .render.numerals import number
+
+    typed, nearest = number(odd.typed), number(odd.nearest)
+    # The typed value as the note writes it: 1450, not the 1450.0 a float's repr gives.
+    asked = f"; {nearest} with a rated {typed}? " if odd.rated_typed else f"; the nearest is {nearest}: "
+    return (f"{odd.where}.motor.synchronous_rpm = {typed} is no synchronous speed of a 50 or 60 Hz motor (60·f/p)"
+            f"{asked}Kloss' slip, s = 1 − ω/ωs, and the motor's whole characteristic are reckoned from it")
+
+
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
     """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
     if spec.delta is None:
@@ -930,6 +998,7 @@ __all__ = [
     "Flywheel",
     "GearMismatch",
     "LoadDiagram",
+    "OddSynchronousSpeed",
     "SpeedUnitSlip",
     "Tangent",
     "crank_omega",
@@ -945,6 +1014,7 @@ __all__ = [
     "gear_warning",
     "misplaced_keys",
     "moved_inertia",
+    "odd_synchronous_speed",
     "omega_to_rpm",
     "read_dynamics",
     "rpm_to_omega",
@@ -954,5 +1024,6 @@ __all__ = [
     "speed_unit_slip",
     "speed_unit_warning",
     "speed_warnings",
+    "synchronous_warning",
     "unusual_speed_swing",
 ]

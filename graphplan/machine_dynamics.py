@@ -40,7 +40,7 @@ class MachineDynamics:
 
     def __init__(self, source: Analysis | Scene) -> None:
         from .dynamics import ConstantSideError, equivalent_model_of
-        from .flywheel import crank_omega, diagram_model_of, flywheel_from_spec, gear_mismatch
+        from .flywheel import crank_omega, diagram_model_of, flywheel_from_spec, gear_mismatch, odd_synchronous_speed
         from .scene import Scene
 
         with _scene_values("dynamics"):
@@ -61,6 +61,9 @@ class MachineDynamics:
             # The motor's speed through its gear far from the machine's, which gear_warning tells: a stall's and an
             # off-design run's advice leave the gear ratio to it.
             self.gear = gear_mismatch(self.spec, crank_omega(scene.driver))
+            # A Kloss motor's synchronous speed that no motor has: a stall's advice puts it first where the
+            # nearest true one would give the motor more torque at rest.
+            self.synchronous = odd_synchronous_speed(self.spec)
 
     @functools.cached_property
     def motion(self):
@@ -259,17 +262,33 @@ class MachineDynamics:
         return (f"dynamics: the machine stalls at t = {stalled} s, φ = {where}: the motor cannot carry it past the "
                 f"resistance there ({self.stall_advice('or a start unloaded through a clutch')})")
 
+    def synchronous_torques_at_rest(self) -> tuple[float, float] | None:
+        """The motor's torque at rest on the driving shaft as given and with the nearest true synchronous speed,
+        where the scene's synchronous_rpm is none and the true one gives more (:mod:`graphplan.flywheel`'s
+        :class:`~graphplan.flywheel.OddSynchronousSpeed`); None otherwise."""
+        return None if self.synchronous is None else self.synchronous.torques_at_rest()
+
     def stall_advice(self, last: str) -> str:
         """What lets a machine the motor stalls run, ending with ``last``: a larger gear ratio (more torque on the
         shaft) where the gear fits the speed; where :func:`~graphplan.flywheel.gear_warning` tells the ratio, not
-        one it already says is too large, nor again the larger one it gives with its number."""
+        one it already says is too large, nor again the larger one it gives with its number.  A synchronous speed no
+        motor has that starves the motor of torque at rest (a rated 1450 typed for 1500) is named first: a stronger
+        motor would be bought for a slip mistyped."""
+        from .render.numerals import number
+
+        torques = self.synchronous_torques_at_rest()
+        first = ""
+        if torques is not None:
+            odd = self.synchronous
+            first = (f"first the synchronous speed told for {odd.where}.motor.synchronous_rpm: at {number(odd.nearest)} "
+                     f"rpm the motor gives the shaft {number(torques[1])} N·m at rest, not {number(torques[0])}; then ")
         gear = self.gear
         if gear is None:
-            return f"a stronger motor, a larger gear ratio, {last}"
+            return f"{first}a stronger motor, a larger gear ratio, {last}"
         if gear.too_large:
-            return (f"a stronger motor, {last}; not a larger gear ratio: {gear.where}.motor.gear_ratio = "
+            return (f"{first}a stronger motor, {last}; not a larger gear ratio: {gear.where}.motor.gear_ratio = "
                     f"{gear.gear_ratio:g} already turns the shaft well below the machine's speed")
-        return f"the gear ratio told for {gear.where}.motor.gear_ratio, a stronger motor, {last}"
+        return f"{first}the gear ratio told for {gear.where}.motor.gear_ratio, a stronger motor, {last}"
 
     def slipping_warning(self) -> str | None:
         """One line for the command line when the clutch slips in every steady turn: it cannot pass the peaks of

@@ -44,11 +44,39 @@ def millimetres_question(*, some: bool = False, second_moment: bool = False) -> 
     return f"are the lengths in millimetres? The scene's lengths are in metres (divide them by 1000{also})"
 
 
+#: The mains frequencies (Hz) induction motors are built for: their synchronous speeds are 60·f/p rev/min.
+MAINS_FREQUENCIES = (50, 60)
+#: The most pole pairs of the induction motors a machine is driven by (16 poles: 375 rev/min at 50 Hz); below the
+#: synchronous speeds of these the 60·f/p lie so close together that every speed is near one.
+MOST_POLE_PAIRS = 8
+
+
+def synchronous_speeds_rpm(most_pole_pairs: int = MOST_POLE_PAIRS) -> tuple[float, ...]:
+    """The synchronous speeds 60·f/p (rev/min) of 50 and 60 Hz induction motors of up to ``most_pole_pairs`` pairs of
+    poles, fastest first (3600, 3000, 1800, 1500, …)."""
+    speeds = {60.0 * frequency / pairs for frequency in MAINS_FREQUENCIES for pairs in range(1, most_pole_pairs + 1)}
+    return tuple(sorted(speeds, reverse=True))
+
+
 #: The synchronous speeds (rev/min) of the induction motors most machines are driven by, at 50 Hz (3000/p) and
-#: 60 Hz (3600/p); a motor's nameplate speed lies a few per cent of slip below one (1450 under 1500, 960 under 1000).
-MOTOR_SYNCHRONOUS_RPM = (3600, 3000, 1800, 1500, 1200, 1000, 900, 750, 720)
+#: 60 Hz (3600/p) down to 720; a motor's nameplate speed lies a few per cent of slip below one (1450 under 1500, 960
+#: under 1000).
+MOTOR_SYNCHRONOUS_RPM = tuple(speed for speed in synchronous_speeds_rpm(5) if speed >= 720)
 #: The most a nameplate speed lies below its synchronous speed: small motors slip 5–8 %.
 MOST_MOTOR_SLIP = 0.1
+#: How near (relative) a motor's synchronous speed must come to a 60·f/p to be one: 428.6 for 3000/7 is.
+SYNCHRONOUS_TOLERANCE = 0.002
+
+
+def nearest_synchronous_rpm(rpm: float) -> float | None:
+    """The synchronous speed 60·f/p (:func:`synchronous_speeds_rpm`) nearest ``rpm``, where ``rpm`` is given as a
+    motor's synchronous speed but is none (1500 for 1450, a nameplate's speed typed for it); None where it is one,
+    or lies below the slowest (where the 60·f/p crowd together)."""
+    speeds = synchronous_speeds_rpm()
+    if rpm < (1.0 - MOST_MOTOR_SLIP) * speeds[-1]:
+        return None
+    nearest = min(speeds, key=lambda speed: abs(rpm / speed - 1.0))
+    return None if abs(rpm / nearest - 1.0) <= SYNCHRONOUS_TOLERANCE else nearest
 
 
 def motor_speed_in_rpm(omega: float) -> bool:

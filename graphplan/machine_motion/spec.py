@@ -52,6 +52,9 @@ class MotionSpec:
     # names its own fields.
     where: str = ""
     start_keys: tuple[str, str] = ("omega", "driving_omega")
+    # The two of a Kloss motor's synchronous_rpm, rated_rpm and rated_slip the scene gave, for the warning of a
+    # synchronous speed no motor has to name what was typed and to keep the other as typed.
+    kloss_keys: tuple[str, ...] = ()
 
     def _key(self, name: str) -> str:
         """The key path of ``name`` (``"brake.damping"``) as the scene wrote it."""
@@ -307,4 +310,6 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
     return MotionSpec(motor=motor, motor_off_at=off_at, brake=brake, clutch=clutch, start=start,
                       start_angle_given=isinstance(raw_start, Mapping) and "angle_deg" in raw_start, duration=duration,
                       method=method, rtol=rtol, steady_tolerance=steady_tolerance, where=table.path,
-                      start_keys=start_keys)
+                      start_keys=start_keys,
+                      kloss_keys=tuple(key for key in ("synchronous_rpm", "rated_rpm", "rated_slip")
+                                       if motor_table.has(key)))

@@ -71,6 +71,10 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
                          typed=note.n(slip.typed), omega=note.n(slip.crank_omega), rpm=note.n(slip.crank_rpm),
                          sized=note.n(slip.sized), ratio=note.n(slip.times_off, 3),
                          square=f"{slip.times_off ** 2:.0f}"))
+    odd = dynamics.synchronous
+    if odd is not None:  # the console's line, for the motor's whole characteristic below is reckoned from it
+        note.para(note.t("note_dyn_caution_synchronous_rated" if odd.rated_typed else "note_dyn_caution_synchronous",
+                         typed=note.n(odd.typed), nearest=note.n(odd.nearest)))
     if model.link == 0:  # known by its load diagrams alone, no linkage reduced to a link
         # The points the scene gives, not the samples the model is worked on (362 for a diagram of 4).
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
@@ -412,6 +416,11 @@ def _stall(note: Writer, dynamics) -> None:
                          torque=note.n(motion.clutch.torque), resisting=resisting))
     else:
         note.para(note.t(f"note_dyn_stalled{too_large}", time=note.n(motion.stalled_at, 4), angle=angle, ratio=ratio))
+    torques = dynamics.synchronous_torques_at_rest()
+    if torques is not None and stall in (Stall.MOTOR, Stall.NEVER_STARTS):  # the console's advice names it first
+        note.para(note.t("note_dyn_stalled_synchronous", typed=note.n(dynamics.synchronous.typed),
+                         nearest=note.n(dynamics.synchronous.nearest), given=note.n(torques[0]),
+                         corrected=note.n(torques[1])))
 
 
 def _run_down(note: Writer, dynamics) -> None:
