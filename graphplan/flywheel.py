@@ -735,11 +735,18 @@ def speed_unit_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | N
     pace = f"{number(slip.times_off, 3)} times {'slower' if slip.ratio < 1 else 'faster'}"
     size = "large" if slip.ratio < 1 else "small"
     # The typed value as the scene has it (to six digits), a key's own number.
+    # A motor whose gear brings it to the crank's speed bears the reading out (and the gear is weighed against the
+    # crank's speed, gear_mismatch, not against the one typed).
+    motor = getattr(spec.motion, "motor", None)
+    own = _motor_own_speed(motor)
+    fits = (f"; the motor's {own[1]} speed through {slip.where}.motor.gear_ratio = {motor.gear_ratio:g} turns the "
+            f"shaft at {number(own[0] / motor.gear_ratio / RPM)} rpm, near the crank's {number(slip.crank_rpm)}"
+            if own is not None and gear_mismatch(spec, crank_omega) is None else "")
     return (f"{slip.where}.{slip.key} = {slip.typed:g} {given} is the crank's speed in {meant} (driver: "
             f"{number(slip.crank_omega)} rad/s, {number(slip.crank_rpm)} rpm): typed in the wrong unit? The flywheel is "
             f"sized at {number(slip.sized)} rad/s, {pace} than the crank turns, and J_F comes out some "
             f"{slip.times_off ** 2:.0f} times too {size}: write {slip.where}.{slip.meant_key} = "
-            f"{slip.typed:g}, or leave the speed out for the driver's")
+            f"{slip.typed:g}, or leave the speed out for the driver's{fits}")
 
 
 #: How far (a factor either way) the motor's speed through its gear may lie from the machine's mean speed before
@@ -759,6 +766,9 @@ class GearMismatch:
     speed: float
     at_shaft: float
     mean: float
+    # The mean speed is the crank's, where [dynamics]' own was typed in the other unit (speed_unit_slip): a ratio
+    # fitted to the mistyped speed would be advised for a machine that does not run at it.
+    against_crank: bool = False
 
     @property
     def fitting_ratio(self) -> float:
@@ -775,21 +785,36 @@ def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch
     """Where ``[dynamics]``' motor, through its ``gear_ratio``, would turn the driving shaft at a speed far
     (:data:`GEAR_MISMATCH`) from the machine's mean speed (``rpm`` or ``omega``, else the crank's ``crank_omega``);
     None where it fits, or the motor has no speed of its own (a constant torque)."""
-    from .machine_motion import KlossMotor, LinearMotor
+    from .machine_motion import KlossMotor
 
     motor = getattr(spec.motion, "motor", None)
-    mean = spec.omega if spec.omega is not None else abs(crank_omega) if crank_omega else None
-    if mean is None or not isinstance(motor, KlossMotor | LinearMotor):
+    # A mean speed typed in the other unit is told on its own line: the gear is weighed against the crank's.
+    against_crank = speed_unit_slip(spec, crank_omega) is not None
+    mean = abs(crank_omega) if against_crank else spec.omega if spec.omega is not None else \
+        abs(crank_omega) if crank_omega else None
+    own = _motor_own_speed(motor)
+    if mean is None or own is None:
         return None
-    speed, what = ((motor.synchronous_speed * (1.0 - motor.rated_slip), "rated") if isinstance(motor, KlossMotor)
-                   else (motor.no_load, "no-load"))
+    speed, what = own
     at_shaft = speed / motor.gear_ratio
     # A linear motor loaded to half its stall torque runs at half its no-load speed: told only well above that.
     most = GEAR_MISMATCH if isinstance(motor, KlossMotor) else 2 * GEAR_MISMATCH
     if 1.0 / GEAR_MISMATCH <= at_shaft / mean <= most:
         return None
     return GearMismatch(where=spec.where, gear_ratio=motor.gear_ratio, what=what, speed=speed, at_shaft=at_shaft,
-                        mean=mean)
+                        mean=mean, against_crank=against_crank)
+
+
+def _motor_own_speed(motor) -> tuple[float, str] | None:
+    """A motor's own speed (rad/s, on its shaft) and what it is, its rated or no-load speed; None for a motor of no
+    speed of its own (a constant torque) or none."""
+    from .machine_motion import KlossMotor, LinearMotor
+
+    if isinstance(motor, KlossMotor):
+        return motor.synchronous_speed * (1.0 - motor.rated_slip), "rated"
+    if isinstance(motor, LinearMotor):
+        return motor.no_load, "no-load"
+    return None
 
 
 def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
@@ -802,11 +827,13 @@ def gear_warning(spec: DynamicsSpec, crank_omega: float | None) -> str | None:
     from .render.numerals import number
 
     unset = " (the default where it is left out)" if found.gear_ratio == 1.0 else ""
+    runs = (f"the crank turns at (not the {spec.where}.{spec.speed_key} typed in the other unit, told above)"
+            if found.against_crank else "the machine runs at")
     # The motor's speed and the machine's as the note writes them (1455.5 rpm, not 1456); the shaft's speed in rpm
     # and the ratios the note does not write.
     return (f"{found.where}.motor.gear_ratio = {found.gear_ratio:g}{unset}: the motor's {found.what} speed, "
             f"{number(found.speed / RPM)} rpm, turns the driving shaft at {found.at_shaft / RPM:.4g} rpm through it, "
-            f"{found.at_shaft / found.mean:.3g} times the {number(found.mean / RPM)} rpm the machine runs at; "
+            f"{found.at_shaft / found.mean:.3g} times the {number(found.mean / RPM)} rpm {runs}; "
             f"gear_ratio is ω_motor/ω_shaft, here {found.fitting_ratio:.3g} (or a motor of another speed)")
 
 

@@ -40,7 +40,14 @@ class MachineDynamics:
 
     def __init__(self, source: Analysis | Scene) -> None:
         from .dynamics import ConstantSideError, equivalent_model_of
-        from .flywheel import crank_omega, diagram_model_of, flywheel_from_spec, gear_mismatch, odd_synchronous_speed
+        from .flywheel import (
+            crank_omega,
+            diagram_model_of,
+            flywheel_from_spec,
+            gear_mismatch,
+            odd_synchronous_speed,
+            speed_unit_slip,
+        )
         from .scene import Scene
 
         with _scene_values("dynamics"):
@@ -64,6 +71,9 @@ class MachineDynamics:
             # A Kloss motor's synchronous speed that no motor has: a stall's advice puts it first where the
             # nearest true one would give the motor more torque at rest.
             self.synchronous = odd_synchronous_speed(self.spec)
+            # The mean speed typed as the crank's in the other unit: the flywheel run with is sized at the wrong
+            # speed, which a stall's and an off-design run's advice put first.
+            self.speed_slip = speed_unit_slip(self.spec, crank_omega(scene.driver))
 
     @functools.cached_property
     def motion(self):
@@ -278,7 +288,12 @@ class MachineDynamics:
 
         torques = self.synchronous_torques_at_rest()
         first = ""
-        if torques is not None:
+        slip = self.speed_slip
+        if slip is not None:
+            size = "large" if slip.ratio < 1 else "small"
+            first = (f"first the mean speed told for {slip.where}.{slip.key}: the flywheel run with, sized at "
+                     f"{number(slip.sized)} rad/s, is some {slip.times_off ** 2:.0f} times too {size}; then ")
+        elif torques is not None:
             odd = self.synchronous
             first = (f"first the synchronous speed told for {odd.where}.motor.synchronous_rpm: at {number(odd.nearest)} "
                      f"rpm the motor gives the shaft {number(torques[1])} N·m at rest, not {number(torques[0])}; then ")
@@ -366,9 +381,11 @@ class MachineDynamics:
 
         # A gear ratio far off the machine's speed is told on its own line, with the ratio that fits: this one
         # names it and leaves the advice to that line.
-        gear = self.gear
+        gear, slip = self.gear, self.speed_slip
         through = "" if gear is None else f"through {gear.where}.motor.gear_ratio = {gear.gear_ratio:g} "
-        advice = "" if gear is not None else " (a motor, gear ratio or speed that agree with each other)"
+        advice = "" if gear is not None else \
+            f" (the mean speed told for {slip.where}.{slip.key} first)" if slip is not None else \
+            " (a motor, gear ratio or speed that agree with each other)"
         return (f"dynamics: {through}the motor runs the machine at ωm = {worked_out(settled)} rad/s, "
                 f"{abs(settled / sized - 1):.0%} off the {flywheel_numbers(self.model, flywheel).omega_mean} rad/s its "
                 f"flywheel was sized at for δ = {number(flywheel.delta)}; steady, δ = "

@@ -416,8 +416,12 @@ def _stall(note: Writer, dynamics) -> None:
                          torque=note.n(motion.clutch.torque), resisting=resisting))
     else:
         note.para(note.t(f"note_dyn_stalled{too_large}", time=note.n(motion.stalled_at, 4), angle=angle, ratio=ratio))
+    slip = dynamics.speed_slip
+    if slip is not None and stall in (Stall.MOTOR, Stall.NEVER_STARTS):  # the console's advice names it first
+        note.para(note.t("note_dyn_stalled_rpm_as_rad" if slip.key == "rpm" else "note_dyn_stalled_rad_as_rpm",
+                         sized=note.n(slip.sized), square=f"{slip.times_off ** 2:.0f}"))
     torques = dynamics.synchronous_torques_at_rest()
-    if torques is not None and stall in (Stall.MOTOR, Stall.NEVER_STARTS):  # the console's advice names it first
+    if slip is None and torques is not None and stall in (Stall.MOTOR, Stall.NEVER_STARTS):
         note.para(note.t("note_dyn_stalled_synchronous", typed=note.n(dynamics.synchronous.typed),
                          nearest=note.n(dynamics.synchronous.nearest), given=note.n(torques[0]),
                          corrected=note.n(torques[1])))
