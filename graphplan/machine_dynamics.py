@@ -365,17 +365,26 @@ class MachineDynamics:
         travel, span = float(motion.phi[-1] - motion.phi[0]), float(motion.t[-1] - motion.t[0])
         return span <= 0 or float(motion.omega[-1]) >= travel / span
 
+    def off_design(self) -> tuple[float, float] | None:
+        """(the steady mean speed, the speed the flywheel was sized at), rad/s, where the motor settles the machine
+        more than :data:`OFF_DESIGN` away from the speed its flywheel was sized at, which the command line's line and
+        the note's caution tell; None where it settles near it, or there is no steady run or no flywheel."""
+        motion, flywheel = self.motion, self.flywheel
+        if motion is None or motion.steady is None or flywheel is None or flywheel.inertia <= 0:
+            return None
+        settled, sized = motion.steady.mean_speed, flywheel.omega_mean
+        return None if abs(settled - sized) <= OFF_DESIGN * sized else (settled, sized)
+
     def off_design_warning(self) -> str | None:
         """One line for the command line when the motor settles the machine away from the speed its flywheel
         was sized at (more than :data:`OFF_DESIGN` apart): δ then differs from the one asked for.  The speeds and δ
         are written as the note writes them (ωm = 10.210, δ = 0.02350): the console's 10.21 beside the note's 10.210
         read as two numbers."""
+        off = self.off_design()
+        if off is None:
+            return None
         motion, flywheel = self.motion, self.flywheel
-        if motion is None or motion.steady is None or flywheel is None or flywheel.inertia <= 0:
-            return None
-        settled, sized = motion.steady.mean_speed, flywheel.omega_mean
-        if abs(settled - sized) <= OFF_DESIGN * sized:
-            return None
+        settled, sized = off
         from .render.dynamics import flywheel_numbers
         from .render.numerals import number, steady_delta, worked_out
 

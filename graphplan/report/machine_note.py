@@ -80,6 +80,7 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
         given = sum(len(diagram.angles_deg) for diagram in note.scene.dynamics.diagrams)
         key = "note_dyn_model_diagrams_no_inertia" if model.inertia_is_nought else "note_dyn_model_diagrams"
         note.para(note.t(key, count=Count(given), inertia=note.n(model.mean_inertia)))
+        _powers_to_moments(note, note.scene.dynamics)
     else:
         # The scene's steps: the samples are one more over a travel, and more again where a load switches on.
         note.para(note.t("note_dyn_model" + run if turning else "note_dyn_model_slider", link=model.link,
@@ -230,8 +231,44 @@ def _motion(note: Writer, dynamics, flywheel) -> None:
                      delta=reached, **speeds))
     if flywheel is not None and flywheel.inertia > 0:
         note.para(note.t("note_dyn_steady_sized", sized=note.n(flywheel.delta), delta=reached))
+        _off_design(note, dynamics, speeds["mean"], reached)
     if run_down:
         _run_down(note, dynamics)
+
+
+def _powers_to_moments(note: Writer, spec) -> None:
+    """How a diagram given in watts became the moments the model is worked on, M = P/ωm, shown on its peak: the note
+    said only that the moments were given as diagrams."""
+    for diagram in spec.diagrams:
+        if diagram.quantity != "power":
+            continue
+        peak = max(diagram.values, key=abs)
+        note.para(note.t(f"note_dyn_power_to_moment_{diagram.side}", omega=note.n(spec.omega), power=note.n(peak),
+                         moment=note.n(peak / spec.omega)))
+
+
+def _off_design(note: Writer, dynamics, settled: str, reached: str) -> None:
+    """The command line's off-design line, where the motor settles the machine away from the speed its flywheel was
+    sized at: the file outlives the console.  ``settled`` and ``reached`` are ωm and δ as the steady paragraph wrote
+    them."""
+    from ..render.dynamics import flywheel_numbers
+
+    off = dynamics.off_design()
+    if off is None:
+        return
+    flywheel, gear, slip = dynamics.flywheel, dynamics.gear, dynamics.speed_slip
+    given = {"settled": settled, "percent": f"{abs(off[0] / off[1] - 1.0) * 100:.0f}", "delta": reached,
+             "sized": flywheel_numbers(dynamics.model, flywheel).omega_mean.replace(".", note.mark),
+             "asked": note.n(flywheel.delta)}
+    # As the console: a mistyped speed first; else a gear far off the machine's speed, with the ratio that fits.
+    if slip is not None:
+        note.para(note.t("note_dyn_off_design_speed", **given))
+    elif gear is not None:
+        note.para(note.t("note_dyn_off_design_gear", **given, ratio=note.n(gear.gear_ratio),
+                         at_shaft=note.n(gear.at_shaft / RPM, 4), motor=note.n(gear.speed / RPM),
+                         mean=note.n(gear.mean / RPM), fitting=note.n(gear.fitting_ratio, 3)))
+    else:
+        note.para(note.t("note_dyn_off_design", **given))
 
 
 def _motor(note: Writer, motor) -> None:
