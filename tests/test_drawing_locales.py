@@ -143,8 +143,11 @@ def drawn(kind: str, text=None, labels=None) -> list[str]:
         steady = dataclasses.replace(crank, inertia=np.full(len(crank.inertia), crank.mean_inertia))
         # One whose own Je the scene takes as zero (the flywheel starter's press): its JF has no Je subtracted.
         unowned = dataclasses.replace(crank, inertia=np.zeros(len(crank.inertia)))
+        # A resisting moment (force) the same all the run, its value written beside its line.
+        crank_resists_level = dataclasses.replace(crank, resisting=np.full(len(crank.resisting), -100.0))
+        slider_resists_level = dataclasses.replace(slider, resisting=np.full(len(slider.resisting), -100.0))
         return [t for model, wheel in ((crank, flywheel), (crank, unaided), (steady, flywheel), (unowned, flywheel),
-                                       (slider, None))
+                                       (slider, None), (crank_resists_level, None), (slider_resists_level, None))
                 for t in svg_texts(dynamics.dynamics_svg(model, wheel, text))]
     if kind == "balancing":
         two_planes = balance(BalancingSpec(SHAFT, planes=(0.04, 0.22), correction_radius=0.05))

@@ -31,6 +31,7 @@ from ..locale import strings
 from ..scales import fit_scale, format_scale
 from ..units import RPM
 from .labels import Anchor, broken_under, obstacles_of, place_labels, remembered
+from .numerals import number as note_number
 from .numerals import short, worked_out
 from .primitives import (
     THIN,
@@ -109,6 +110,11 @@ AXIS_WORDS_GAP_MM = 0.6
 # numbers.  Nearer, two numbers ran together into one ("0.05 0.075" read as one figure), and a label read as one of
 # the numbers (ωmin at φ = 0, hung left of the ΔT axis beside its "0", as the axis's numbering).
 NUMBER_GAP_MM = text_width("0", LABEL)
+# How far the field runs past a level line at its edge (mm): ended at the line, the grid's and the
+# ordinate's ends made it read as the plot's frame (the engine's Mr = 206.25 N·m along the bottom of its diagram).
+LEVEL_MARGIN_MM = 3.0
+# A curve runs along an edge when it does so this far (mm): one that only touches it at a peak leaves no line there.
+LEVEL_RUN_MM = 10.0
 
 
 class _Diagram(NamedTuple):
@@ -214,7 +220,8 @@ def layout(model: EquivalentModel, flywheel: Flywheel | None = None, text: Mappi
                            (model.resisting, _RESISTING, words[f"dyn_resisting_{moment[0]}"])],
                        scales.moment, model, words[f"dyn_{moment[0]}_axis"],
                        words[f"dyn_{moment[0]}_scale"].format(value=format_scale(scales.moment)),
-                       words[f"dyn_{moment[1]}"], scales, words)
+                       words[f"dyn_{moment[1]}"], scales, words,
+                       levels=[constant_level(model, side, words) for side in ("driving", "resisting")])
     works = _diagram(x, [(model.driving_work, _DRIVING, words["dyn_driving_work"]),
                          (model.resisting_work, _RESISTING, words["dyn_resisting_work"])],
                      scales.work, model, words["dyn_work_axis"],
@@ -270,15 +277,30 @@ def _span(values: np.ndarray) -> float:
     return max(float(np.max(values)), 0.0) - min(float(np.min(values)), 0.0) or 1.0
 
 
+def constant_level(model: EquivalentModel, side: str, words: Mapping[str, str]) -> str:
+    """The words written beside the ``side``'s ("driving" or "resisting") reduced moment (force) where it is the same
+    all the run ("Mr = 206.25 N·m", its size as the note gives it, to five digits), else "".  A level line between the
+    ticks of a round step (0, 500 on the engine's axis, 0, −1000, −2000 on the press's) has no value to read it by."""
+    values = model.driving if side == "driving" else model.resisting
+    largest = float(np.max(np.abs(values), initial=0.0))
+    if not largest or float(np.ptp(values)) > 1e-9 * largest:
+        return ""
+    size = model.mean_over_run(values if side == "driving" else -values)
+    kind = "moment" if model.turning else "force"
+    return words[f"dyn_constant_{side}_{kind}"].format(value=note_number(size))
+
+
 def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: str, scale_text: str,
              heading: str, scales: Scales, words: Mapping[str, str], floor: bool = False,
-             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "") -> _Diagram:
+             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "", levels: Sequence[str] = ()) -> _Diagram:
     """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
 
     ``floor`` starts the ordinate at a round value under the smallest rather than at zero (a reduced mass far from
     zero), over a break of :data:`BREAK_LIFT_MM` above the abscissa, which stands at nought.
     ``rings`` are (abscissa in mm, value) of values read off the velocity plans, ringed on the curve and named in the
     legend by ``rings_legend``.
+    ``levels`` are the words written beside each curve that is a level line ("" for the others): its value, which the
+    axis's round ticks seldom give; the field then runs a little past such a line at its edge.
     """
     values = np.concatenate([c[0] for c in curves])
     base = 0.0
@@ -296,6 +318,16 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     lowest_tick = math.ceil(bottom_mm * scale / step - 1e-9) * step
     if bottom_mm * scale < lowest_tick - step / 2:
         bottom_mm = (lowest_tick - step) / scale
+    # A curve that runs level along the field's edge (a constant moment, the press's Ar once the stroke's work is
+    # done) is given a strip beyond it, so that it does not read as the frame the grid's ends draw there.
+    for data, _, _ in curves:
+        y = (np.asarray(data) - base) / scale
+        if bottom_mm < 0.0 and _length_along(x, y, bottom_mm) >= LEVEL_RUN_MM:
+            bottom_mm -= LEVEL_MARGIN_MM
+        if top_mm > 0.0 and _length_along(x, y, top_mm) >= LEVEL_RUN_MM:
+            top_mm += LEVEL_MARGIN_MM
+    level_lines = [((float(curve[0][0]) - base) / scale, curve, words_of)
+                   for curve, words_of in zip(curves, levels) if words_of]
     width = float(x[-1])
     items, across = _abscissa(model, scales, width, bottom_mm, top_mm + lift, words)
     ordinate, up = _ordinate_axis(0.0, bottom_mm, top_mm, scale, base, axis, step, broken_mm=lift)
@@ -319,7 +351,33 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items += [Circle((at, lift + (value - base) / scale), PLAN_RING_MM, THIN, None) for at, value in rings]
         items.append(Circle((cursor + PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((cursor + 2 * PLAN_RING_MM + 2.0, scale_y), rings_legend, LABEL, "start"))
+    if level_lines:
+        items = _levels_written(items, [(lift + at, curve[1].colour, said) for at, curve, said in level_lines],
+                                width, [across, up])
     return _Diagram(items, [across, up])
+
+
+def _length_along(x: np.ndarray, y: np.ndarray, edge: float) -> float:
+    """How far (mm of abscissa) the polyline through ``x``, ``y`` runs along the level ``edge``."""
+    on = np.abs(y - edge) < 1e-6 * max(abs(edge), 1.0)
+    return float(np.sum(np.diff(x)[on[:-1] & on[1:]]))
+
+
+def _levels_written(items: list[Primitive], levels: Sequence[tuple[float, str, str]], width: float,
+                    numberings: Sequence[Sequence[Text]]) -> list[Primitive]:
+    """``items`` with each level line's words (its height in mm, colour, words) written beside it, anywhere along it,
+    clear of the curves, the axes and their numbers, the legend and each other; the grid, a dotted guide to the
+    eye, is broken under them rather than kept clear of, which no spot a line's value is long between its lines was."""
+    grid = [item for item in items if isinstance(item, Polyline) and item.stroke == _GRID]
+    solid = [item for item in items if not any(item is line for line in grid)]
+    # The axes kept off by the gap ωmax and ωmin keep: a value hugging the ordinate reads as one of its numbers.
+    axes = [shapely.buffer(shapely.linestrings(item.points if isinstance(item, Polyline) else (item.start, item.end)),
+                           AXIS_WORDS_GAP_MM)
+            for item in solid if isinstance(item, (Arrow, Polyline)) and item.stroke == THIN]
+    anchors = [Anchor((width / 2, at), said, LABEL, math.pi / 2, colour, along=((0.0, at), (width, at)))
+               for at, colour, said in levels]
+    placed = remembered(place_labels, anchors, obstacles_of(solid) + _numbering(numberings) + axes)
+    return broken_under(items, list(placed.texts), grid) + list(placed.leaders) + list(placed.texts)
 
 
 def _ordinate_step(values: np.ndarray, base: float = 0.0) -> float:

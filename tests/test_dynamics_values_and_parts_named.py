@@ -1,0 +1,202 @@
+"""The dynamics drawing read on its own: a constant reduced moment's line carries its value and stands clear of the
+field's edge.
+
+The axis of the moments is numbered at a round step (0 and 500 for the engine, 0, −1000, −2000 for the press), so a
+level line between the ticks had no value to read it by, and the engine's Mr ran along the ends of the grid as the
+plot's frame.  The value is worked out here by hand: an engine's Mr is the work of its torque diagram over the turn
+over 2π, the press's Md the work of its punching force over 2π; its words are read back from the SVG ``graphplan run``
+writes, and their box (from position, anchor and size, as wide as DejaVu Sans sets them) is checked against the
+curves, the axes and the other words of the diagram.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+from shapely.geometry import LineString, box
+
+from graphplan.cli import main
+from graphplan.render.primitives import text_width
+
+SVG = "{http://www.w3.org/2000/svg}"
+CAP_PER_EM = 0.72
+# The constant line's words stand this near it (mm): farther, they read as a note of the diagram, not its value.
+NEAR_MM = 6.0
+
+# A torque diagram over the turn (degrees, N·m); the resisting moment taken constant.
+ENGINE_TORQUE = [(0, 0), (40, 900), (180, 0), (180, -150), (270, 0), (360, 0)]
+ENGINE = f"""
+[scene]
+title = "Single-cylinder engine flywheel"
+
+[dynamics]
+rpm = 300
+delta = 0.02
+driving_torque = {[list(point) for point in ENGINE_TORQUE]}
+resisting = "constant"
+inertia = 0.3
+"""
+
+# A crank press: crank 0.1 m, rod 0.4 m, the slider's guide through the crank's pivot (stroke 2·0.1 m), punching
+# 20 kN over the last 30 % of its working stroke; the driving moment taken constant.
+PRESS_FORCE, PRESS_SHARE, PRESS_STROKE = 20000.0, 0.3, 0.2
+PRESS = f"""
+[scene]
+title = "Crank press flywheel"
+gravity = 9.81
+
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+rpm = 60.0
+epsilon = 0.0
+
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.4
+guide = {{ through = "O", angle = 0.0 }}
+assembly = "forward"
+
+[links.2]
+inertia = 0.5
+
+[links.4]
+mass = 5.0
+centre = "B"
+
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = {PRESS_FORCE}
+angle = 180.0
+resisting = true
+during = {{ from = {1 - PRESS_SHARE}, to = 1.0 }}
+
+[positions]
+count = 12
+start = "extreme"
+working = {{ link = 4, sense = "forward" }}
+
+[dynamics]
+delta = 0.1
+count = 720
+"""
+
+
+def _engine_mr() -> float:
+    """Mr = Ad/2π: the torque diagram's area by trapezoids (straight between its vertices), in N·m·rad, over 2π."""
+    work = sum((m0 + m1) / 2 * math.radians(p1 - p0)
+               for (p0, m0), (p1, m1) in itertools.pairwise(ENGINE_TORQUE))
+    return work / (2 * math.pi)
+
+
+def _press_md() -> float:
+    """Md = Ar/2π: the punching force times the share of the stroke it acts over; the slider's weight does no work
+    along a level guide."""
+    return PRESS_FORCE * PRESS_SHARE * PRESS_STROKE / (2 * math.pi)
+
+
+def _moments(folder: Path, scene: str, locale: str) -> ElementTree.Element:
+    path = folder / "scene.toml"
+    path.write_text(scene, encoding="utf-8")
+    out = folder / f"out-{locale}"
+    assert main(["run", str(path), "--out", str(out), "--only", "dynamics", "--sheet", "none",
+                 "--locale", locale]) == 0
+    root = ElementTree.parse(out / "dynamics.svg").getroot()
+    return next(group for group in root.iter(f"{SVG}g") if group.get("id") == "moments")
+
+
+def _text_box(text: ElementTree.Element):
+    words = "".join(text.itertext())
+    cap = float(text.get("font-size")) * CAP_PER_EM
+    x, y = float(text.get("x")), float(text.get("y"))
+    width = text_width(words, cap, text.get("font-weight") or "normal")
+    left = {"start": x, "middle": x - width / 2, "end": x - width}[text.get("text-anchor")]
+    return words, box(left, y - cap, left + width, y)
+
+
+def _paths(group: ElementTree.Element) -> list[tuple[ElementTree.Element, list[tuple[float, float]]]]:
+    found = []
+    for path in group.iter(f"{SVG}path"):
+        points = [tuple(map(float, pair.split(","))) for pair in re.findall(r"-?[\d.]+,-?[\d.]+", path.get("d"))]
+        found.append((path, points))
+    return found
+
+
+@pytest.mark.parametrize(("scene", "locale", "symbol", "unit", "value"), [
+    (ENGINE, "en", "Mr", "N·m", _engine_mr()),
+    (ENGINE, "ru", "Mс", "Н·м", _engine_mr()),
+    (ENGINE, "zh", "Mr", "N·m", _engine_mr()),
+    (PRESS, "en", "Md", "N·m", _press_md()),
+    (PRESS, "ru", "Mд", "Н·м", _press_md()),
+])
+def test_a_constant_moment_is_written_beside_its_line_clear_of_everything(tmp_path, scene, locale, symbol, unit,
+                                                                          value):
+    group = _moments(tmp_path, scene, locale)
+    texts = [_text_box(text) for text in group.iter(f"{SVG}text")]
+    written = [(words, shape) for words, shape in texts if words.startswith(f"{symbol} = ")]
+    assert len(written) == 1, [words for words, _ in texts]
+    words, label = written[0]
+    match = re.fullmatch(rf"{symbol} = (\d+)([.,])(\d+) {unit}", words)
+    assert match, words
+    # The note's five digits, in the locale's decimal mark.
+    assert match[2] == ("," if locale == "ru" else ".")
+    assert float(f"{match[1]}.{match[3]}") == pytest.approx(value, abs=0.006)
+    assert len(match[1] + match[3]) == 5
+
+    paths = _paths(group)
+    curves = [points for path, points in paths if path.get("stroke-width") == "0.5"]
+    # The legend's strokes are level too, but a few millimetres long.
+    level = [points for points in curves if len({round(y, 3) for _, y in points}) == 1
+             and points[-1][0] - points[0][0] > 50.0]
+    assert len(level) == 1, "one level line over the cycle: the constant moment's"
+    line_y = level[0][0][1]
+    assert label.distance(LineString(level[0])) < NEAR_MM
+    # Clear of every curve, of the axes and their ticks, and of every other word and number of the diagram.
+    for points in curves:
+        assert not label.intersects(LineString(points)), words
+    thin = [points for path, points in paths
+            if path.get("stroke-width") == "0.25" and path.get("stroke") == "black" and len(points) >= 2]
+    for points in thin:
+        assert not label.intersects(LineString(points)), (words, points)
+    for other, shape in texts:
+        if other != words:
+            assert not label.intersects(shape), (words, other)
+
+    # The line stands at its value on the axis: the abscissa is the longest level thin line.
+    abscissa_y = max(thin, key=lambda points: abs(points[-1][0] - points[0][0]))[0][1]
+    scale = float(re.search(r"μM = ([\d.,]+)", " ".join(words for words, _ in texts))[1].replace(",", "."))
+    sign = -1.0 if symbol.startswith("M") and symbol[1:] in ("r", "с") else 1.0
+    assert abscissa_y - line_y == pytest.approx(sign * value / scale, abs=0.01)
+    # And inside the field, not on its edge: the grid and the ordinate run on past it.
+    grid = [points for path, points in paths if path.get("stroke") == "#9a9a9a"]
+    ordinate = [points for points in thin if len(points) == 2 and abs(points[0][0] - points[1][0]) < 1e-9
+                and abs(points[0][1] - points[1][1]) > 5.0]
+    ends = [y for points in grid + ordinate for _, y in points]
+    if sign < 0:
+        assert max(ends) > line_y + 2.0
+    else:
+        assert min(ends) < line_y - 2.0
+
+
+def test_a_moment_that_varies_is_given_no_value(tmp_path):
+    """The press's resisting moment, its punching stroke alone, is a curve the axis reads: no "Mr =" beside it."""
+    group = _moments(tmp_path, PRESS, "en")
+    words = ["".join(text.itertext()) for text in group.iter(f"{SVG}text")]
+    assert not any(word.startswith("Mr =") for word in words)
+
