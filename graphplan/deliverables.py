@@ -57,6 +57,9 @@ class Drawing:
     page: tuple[float, float] | None = None
     # A force sheet's lever μV where it is drawn at another than the plan's enlarged one (on a small sheet).
     lever_scale: float | None = None
+    # The headings of the diagrams a part of a drawing cut for the note shows, which its caption names: "Figure 6
+    # (part 2 of 3)" alone left the reader to find which of the dynamics' diagrams each part holds.
+    shows: tuple[str, ...] = ()
 
 
 def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str = "drawing.sheet") -> str | None:
@@ -363,11 +366,17 @@ def _load_diagram_layers(analysis: Analysis) -> list[Layer]:
 def _dynamics_drawings(machine: list[Layer], pieces: tuple[str, ...]) -> list[Drawing]:
     """The dynamics drawing, and where the run writes the note, the parts it shows it in (``dynamics-1.svg``, ...):
     whole, 400 mm wide, it printed on the note's page with letters 1 mm high."""
-    from .render.dynamics import TITLE_LAYER
+    from .render.dynamics import HEADING, TITLE_LAYER
     from .render.note_parts import note_parts_in_order
+    from .render.primitives import Text
+
+    def headings(part: list[Layer]) -> tuple[str, ...]:
+        return tuple(item.text for layer in part if layer.name != TITLE_LAYER for item in layer.items
+                     if isinstance(item, Text) and item.weight == "bold" and item.size == HEADING)
 
     parts = note_parts_in_order(machine, TITLE_LAYER) if "note" in pieces else None
-    return [Drawing("dynamics", machine), *(Drawing(f"dynamics-{k}", part) for k, part in enumerate(parts or (), 1))]
+    return [Drawing("dynamics", machine),
+            *(Drawing(f"dynamics-{k}", part, shows=headings(part)) for k, part in enumerate(parts or (), 1))]
 
 
 def _scales_of(panel) -> tuple[tuple[tuple[str, str], ...], str]:
@@ -471,12 +480,13 @@ def _dynamics_of(scene: Scene, analysis: Analysis | None, dynamics: MachineDynam
 
 def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
            dynamics: MachineDynamics | None = None, pictures: tuple[str, ...] = (),
-           lever_scales: Mapping[str, float] | None = None) -> dict[str, str]:
+           lever_scales: Mapping[str, float] | None = None,
+           shown_in_parts: Mapping[str, tuple[str, ...]] | None = None) -> dict[str, str]:
     """The text files of ``pieces``: the error tables, the force analysis, the explanatory note (with its sections
     on the machine's ``dynamics``, its rotor's balancing and its vibration when the run has them, and the
     drawings and plots written beside it that ``pictures`` names, each force sheet's lever worked at the μV it is
-    drawn at, ``lever_scales``), each in Markdown and LaTeX (the note also in HTML).  A scene without a linkage has
-    only the note."""
+    drawn at, ``lever_scales``; the diagrams each part of a drawing cut for it shows, ``shown_in_parts``), each in
+    Markdown and LaTeX (the note also in HTML).  A scene without a linkage has only the note."""
     files: dict[str, str] = {}
     if not {"note", "errors", "forces"} & set(pieces):
         return files  # no text asked for: the LaTeX writer and its Markdown parser stay unloaded
@@ -488,7 +498,7 @@ def tables(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if "note" in pieces:
         from .report.note import note_html, note_markdown
 
-        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales)
+        files["note.md"] = note_markdown(analysis, dynamics, scene, pictures, lever_scales, shown_in_parts)
         files["note.html"] = note_html(analysis, markdown=files["note.md"], scene=scene)
         files["note.tex"] = latex_document(files["note.md"], scene.title, locale, verbatim)
     if analysis is None:
@@ -750,6 +760,7 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
     lever_scales: dict[str, float] = {}
     made = drawings(scene, analysis, pieces, dynamics, say=say)
+    shown_in_parts = {f"{drawing.stem}.svg": drawing.shows for drawing in made if drawing.shows}
     if made:
         say("writing the drawings")
     for drawing in made:
@@ -772,7 +783,8 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     pictures = {name: str(text) for name, text in found.items() if name.endswith(".svg")}
     if {"note", "errors", "forces"} & set(pieces):
         say("writing the note and the tables" if "note" in pieces else "writing the tables")
-    found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures), lever_scales=lever_scales))
+    found.update(tables(scene, analysis, pieces, dynamics, pictures=tuple(pictures), lever_scales=lever_scales,
+                        shown_in_parts=shown_in_parts))
     if "pdf" in formats and "note.html" in found:
         from .report.pdf import note_pdf
 

@@ -1,5 +1,5 @@
 """The dynamics drawing read on its own: a constant reduced moment's line carries its value and stands clear of the
-field's edge.
+field's edge; each part of the drawing cut for the note is captioned with the diagrams it shows.
 
 The axis of the moments is numbered at a round step (0 and 500 for the engine, 0, −1000, −2000 for the press), so a
 level line between the ticks had no value to read it by, and the engine's Mr ran along the ends of the grid as the
@@ -200,3 +200,39 @@ def test_a_moment_that_varies_is_given_no_value(tmp_path):
     words = ["".join(text.itertext()) for text in group.iter(f"{SVG}text")]
     assert not any(word.startswith("Mr =") for word in words)
 
+
+HEADING_CAP = 3.8
+PART_CAPTION = {
+    "en": re.compile(r"Figure (\d+)\. (.+) \(part (\d) of (\d)\): (.+)"),
+    "ru": re.compile(r"Рисунок (\d+) — (.+) \(часть (\d) из (\d)\): (.+)"),
+}
+
+
+@pytest.mark.parametrize("locale", ["en", "ru"])
+def test_each_part_of_the_dynamics_in_the_note_names_the_diagrams_it_shows(tmp_path, locale):
+    """The press's dynamics, too big for a page, goes into the note in parts: each part's caption names the
+    diagrams drawn in that part's SVG (their headings, read back from it), and no two parts' captions are alike."""
+    path = tmp_path / "scene.toml"
+    path.write_text(PRESS, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--out", str(out), "--only", "dynamics,note", "--sheet", "none",
+                 "--locale", locale]) == 0
+    parts = sorted(out.glob("dynamics-*.svg"))
+    assert len(parts) >= 2
+    captions = [match for line in (out / "note.md").read_text(encoding="utf-8").splitlines()
+                if (match := PART_CAPTION[locale].fullmatch(line))]
+    assert [int(match[3]) for match in captions] == list(range(1, len(parts) + 1))
+    assert {int(match[4]) for match in captions} == {len(parts)}
+    assert len({match[1] for match in captions}) == 1, "one figure"
+    assert len({match[5] for match in captions}) == len(parts)
+    for part, caption in zip(parts, captions):
+        headings = [text for text in ElementTree.parse(part).getroot().iter(f"{SVG}text")
+                    if text.get("font-weight") == "bold"
+                    and abs(float(text.get("font-size")) * CAP_PER_EM - HEADING_CAP) < 0.01]
+        assert headings, part.name
+        named = caption[5].split("; ")
+        assert len(named) == len(headings)
+        for name, heading in zip(named, headings):
+            words = "".join(heading.itertext())
+            # Set in the running text's small letters ("works of ...", "маховик"), the rest as the drawing writes it.
+            assert name == words[0].lower() + words[1:], (name, words)

@@ -76,7 +76,8 @@ _ROMAN = {1: "I", 2: "II", 3: "III"}
 
 
 def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None = None,
-                  figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None) -> str:
+                  figures: Collection[str] = (), lever_scales: Mapping[str, float] | None = None,
+                  shown_in_parts: Mapping[str, Sequence[str]] | None = None) -> str:
     """The explanatory note of ``analysis`` as Markdown, in the scene's language.
 
     ``dynamics`` (a :class:`graphplan.machine_dynamics.MachineDynamics`) adds the section on the
@@ -85,12 +86,23 @@ def note_markdown(analysis: Analysis | None, dynamics=None, scene: Scene | None 
     scene without a linkage has no ``analysis``: its note is those sections alone, of ``scene``.
     ``figures`` names the drawings and plots written beside the note (``plan_2.svg``): each stands
     in the section it illustrates, numbered, its caption under it; ``lever_scales`` the μV each force sheet's
-    lever is drawn at there where a small sheet draws it at its own (``forces_5.svg``: 0.01).
+    lever is drawn at there where a small sheet draws it at its own (``forces_5.svg``: 0.01); ``shown_in_parts`` the
+    headings of the diagrams a part of a figure holds (``dynamics-2.svg``), which its caption names.
     """
     note = _Note(analysis, dynamics=dynamics, scene=scene, figures=frozenset(figures),
-                 lever_scales=dict(lever_scales or {}))
+                 lever_scales=dict(lever_scales or {}),
+                 shown_in_parts={name: tuple(shown) for name, shown in (shown_in_parts or {}).items()})
     note.write()
     return raised("\n".join(note.lines).rstrip("\n") + "\n")
+
+
+def _in_running_text(heading: str) -> str:
+    """A heading as words within a sentence: its first letter small where it begins a word of small letters
+    ("Works of ..." → "works of ..."), a symbol or a name kept ("ΔT(φ)", "Je", "JF")."""
+    first = heading.split(" ", 1)[0]
+    if len(first) > 1 and first[0].isupper() and first[1:].islower():
+        return heading[0].lower() + heading[1:]
+    return heading
 
 
 def _turning_pairs(unit, joints: Sequence[str]) -> str:
@@ -153,6 +165,8 @@ class _Note:
     figures_shown: int = 0
     # μV of each force sheet's lever where the figure beside the note draws it at its own (``forces_5.svg``).
     lever_scales: Mapping[str, float] = field(default_factory=dict)
+    # The headings of the diagrams each part of a figure shows (``dynamics-2.svg``), named in its caption.
+    shown_in_parts: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if self.analysis is not None:
@@ -269,13 +283,22 @@ class _Note:
         parts = list(itertools.takewhile(lambda part: part in self.figures,
                                          (f"{stem}-{k}.svg" for k in itertools.count(1))))
         shown = [(file, caption)] if not parts else [
-            (part, self.t("figure_part", caption=caption, part=k, count=len(parts)))
-            for k, part in enumerate(parts, start=1)]
+            (part, self.part_caption(caption, part, k, len(parts))) for k, part in enumerate(parts, start=1)]
         for picture, words in shown:
             # A bracket of the note's own words must not close it; the title's come escaped (``literal``).
             alternative = re.sub(r"(?<!\\)([\[\]])", r"\\\1", words)
             self.para(f"![{alternative}]({picture})")
             self.para(self.t("figure_caption", number=self.figures_shown, caption=words))
+
+    def part_caption(self, caption: str, part: str, number: int, count: int) -> str:
+        """The caption of the ``number``-th of ``count`` parts of a figure, naming the diagrams the part ``part``
+        shows where the run says which (their headings, set in the caption's lower case: "Figure 6. Dynamics ...
+        (part 2 of 3): energy–mass diagram ΔT(Je); reduced moment of inertia Je(φ)")."""
+        shows = self.shown_in_parts.get(part, ())
+        if not shows:
+            return self.t("figure_part", caption=caption, part=number, count=count)
+        return self.t("figure_part_named", caption=caption, part=number, count=count,
+                      shows=self.text["semicolon"].join(_in_running_text(heading) for heading in shows))
 
     def captioned(self, caption: str, table_lines: list[str]) -> None:
         """A table another report wrote, with the note's numbered caption; a part it goes on in after the first
