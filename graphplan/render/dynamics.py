@@ -113,6 +113,9 @@ NUMBER_GAP_MM = text_width("0", LABEL)
 # How far the field runs past a level line at its edge (mm): ended at the line, the grid's and the
 # ordinate's ends made it read as the plot's frame (the engine's Mr = 206.25 N·m along the bottom of its diagram).
 LEVEL_MARGIN_MM = 3.0
+# The strip beyond a level line at the edge that holds its value under (over) it, where the field inside has no room
+# for it: a slider's Fr of 100 N, 5 mm under the abscissa, was led past the travel's numbers to a spot below them.
+LEVEL_ROOM_FOR_WORDS_MM = LABEL + 3.0
 # A curve runs along an edge when it does so this far (mm): one that only touches it at a peak leaves no line there.
 LEVEL_RUN_MM = 10.0
 
@@ -292,7 +295,8 @@ def constant_level(model: EquivalentModel, side: str, words: Mapping[str, str]) 
 
 def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: str, scale_text: str,
              heading: str, scales: Scales, words: Mapping[str, str], floor: bool = False,
-             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "", levels: Sequence[str] = ()) -> _Diagram:
+             rings: Sequence[tuple[float, float]] = (), rings_legend: str = "", levels: Sequence[str] = (),
+             level_room: float = LEVEL_MARGIN_MM) -> _Diagram:
     """A diagram over the cycle with its abscissa at y = 0: curves, axes, ticks, a legend, heading and scale.
 
     ``floor`` starts the ordinate at a round value under the smallest rather than at zero (a reduced mass far from
@@ -300,7 +304,8 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
     ``rings`` are (abscissa in mm, value) of values read off the velocity plans, ringed on the curve and named in the
     legend by ``rings_legend``.
     ``levels`` are the words written beside each curve that is a level line ("" for the others): its value, which the
-    axis's round ticks seldom give; the field then runs a little past such a line at its edge.
+    axis's round ticks seldom give; the field then runs ``level_room`` past such a line at its edge, and further where
+    its words find no spot near it.
     """
     values = np.concatenate([c[0] for c in curves])
     base = 0.0
@@ -320,12 +325,13 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         bottom_mm = (lowest_tick - step) / scale
     # A curve that runs level along the field's edge (a constant moment, the press's Ar once the stroke's work is
     # done) is given a strip beyond it, so that it does not read as the frame the grid's ends draw there.
-    for data, _, _ in curves:
+    for (data, _, _), said in itertools.zip_longest(curves, levels, fillvalue=""):
         y = (np.asarray(data) - base) / scale
+        room = level_room if said else LEVEL_MARGIN_MM
         if bottom_mm < 0.0 and _length_along(x, y, bottom_mm) >= LEVEL_RUN_MM:
-            bottom_mm -= LEVEL_MARGIN_MM
+            bottom_mm -= room
         if top_mm > 0.0 and _length_along(x, y, top_mm) >= LEVEL_RUN_MM:
-            top_mm += LEVEL_MARGIN_MM
+            top_mm += room
     level_lines = [((float(curve[0][0]) - base) / scale, curve, words_of)
                    for curve, words_of in zip(curves, levels) if words_of]
     width = float(x[-1])
@@ -352,8 +358,12 @@ def _diagram(x: np.ndarray, curves, scale: float, model: EquivalentModel, axis: 
         items.append(Circle((cursor + PLAN_RING_MM, scale_y + LABEL / 3), PLAN_RING_MM, THIN, None))
         items.append(Text((cursor + 2 * PLAN_RING_MM + 2.0, scale_y), rings_legend, LABEL, "start"))
     if level_lines:
-        items = _levels_written(items, [(lift + at, curve[1].colour, said) for at, curve, said in level_lines],
-                                width, [across, up])
+        drawn = [lift + (np.asarray(data) - base) / scale for data, _, _ in curves]
+        items, led = _levels_written(items, [(lift + at, curve[1].colour, said) for at, curve, said in level_lines],
+                                     x, drawn, [across, up])
+        if led and level_room < LEVEL_ROOM_FOR_WORDS_MM:
+            return _diagram(x, curves, scale, model, axis, scale_text, heading, scales, words, floor, rings,
+                            rings_legend, levels, LEVEL_ROOM_FOR_WORDS_MM)
     return _Diagram(items, [across, up])
 
 
@@ -363,21 +373,42 @@ def _length_along(x: np.ndarray, y: np.ndarray, edge: float) -> float:
     return float(np.sum(np.diff(x)[on[:-1] & on[1:]]))
 
 
-def _levels_written(items: list[Primitive], levels: Sequence[tuple[float, str, str]], width: float,
-                    numberings: Sequence[Sequence[Text]]) -> list[Primitive]:
+def _levels_written(items: list[Primitive], levels: Sequence[tuple[float, str, str]], x: np.ndarray,
+                    curves: Sequence[np.ndarray], numberings: Sequence[Sequence[Text]]) -> tuple[list[Primitive], bool]:
     """``items`` with each level line's words (its height in mm, colour, words) written beside it, anywhere along it,
     clear of the curves, the axes and their numbers, the legend and each other; the grid, a dotted guide to the
-    eye, is broken under them rather than kept clear of, which no spot a line's value is long between its lines was."""
+    eye, is broken under them rather than kept clear of, which no spot a line's value is long between its lines was.
+    And whether any of them had to be led to a spot away from its line.  Each is first tried over the stretch of
+    its line the other ``curves`` (their heights at ``x``) keep farthest from: set in the middle of the run, the
+    engine's Mr stood wedged under the corner of Md's dip at 180°, with the open half of the run beside it."""
+    width = float(x[-1])
     grid = [item for item in items if isinstance(item, Polyline) and item.stroke == _GRID]
     solid = [item for item in items if not any(item is line for line in grid)]
     # The axes kept off by the gap ωmax and ωmin keep: a value hugging the ordinate reads as one of its numbers.
     axes = [shapely.buffer(shapely.linestrings(item.points if isinstance(item, Polyline) else (item.start, item.end)),
                            AXIS_WORDS_GAP_MM)
             for item in solid if isinstance(item, (Arrow, Polyline)) and item.stroke == THIN]
-    anchors = [Anchor((width / 2, at), said, LABEL, math.pi / 2, colour, along=((0.0, at), (width, at)))
-               for at, colour, said in levels]
+    anchors = [Anchor((_most_open(x, curves, at, text_width(said, LABEL)), at), said, LABEL, math.pi / 2, colour,
+                      along=((0.0, at), (width, at))) for at, colour, said in levels]
     placed = remembered(place_labels, anchors, obstacles_of(solid) + _numbering(numberings) + axes)
-    return broken_under(items, list(placed.texts), grid) + list(placed.leaders) + list(placed.texts)
+    return broken_under(items, list(placed.texts), grid) + list(placed.leaders) + list(placed.texts), bool(placed.leaders)
+
+
+def _most_open(x: np.ndarray, curves: Sequence[np.ndarray], level: float, length: float) -> float:
+    """The abscissa (mm) of the middle of the stretch ``length`` long, within the run, over which the ``curves`` other
+    than the level line at ``level`` come least near it; of stretches alike, the one nearest the run's middle."""
+    width = float(x[-1])
+    others = [y for y in curves if not np.allclose(y, level)]
+    half = min(length / 2 + 2.0, width / 2)
+    middles = np.linspace(half, width - half, max(2, int(width - 2 * half) + 1))
+    if not others:
+        return width / 2
+    # Each curve's distance from the level at every millimetre, then the nearest within each stretch.
+    grid = np.linspace(0.0, width, int(width) + 1)
+    distance = np.min([np.abs(np.interp(grid, x, y) - level) for y in others], axis=0)
+    clearance = np.array([np.min(distance[(grid >= middle - half) & (grid <= middle + half)]) for middle in middles])
+    best = np.flatnonzero(clearance >= np.max(clearance) - 0.5)
+    return float(middles[best[np.argmin(np.abs(middles[best] - width / 2))]])
 
 
 def _ordinate_step(values: np.ndarray, base: float = 0.0) -> float:
