@@ -26,6 +26,7 @@ drawings were before sheets.
 from __future__ import annotations
 
 import contextlib
+import functools
 import math
 from collections.abc import Callable, Collection, Iterator, Sequence
 from dataclasses import asdict, dataclass, replace
@@ -409,15 +410,15 @@ def fewest_sheets_cuts(cuts: Sequence[Sequence[Sequence[Panel]]], after: Sequenc
     return [part for parts in chosen for part in parts]
 
 
-# A force sheet whole, the ways it may stand on sheets, and the same sheet drawn larger, largest first (made when
-# first asked for: :func:`course_panels` takes the first that costs no sheet).
-_ForceSheetWays = tuple[Panel, list[list[Panel]], Callable[[], Iterator[Panel]]]
+# A force sheet whole, the ways it may stand on sheets, and the same sheet drawn larger by given standard steps of
+# μl and μF (made when first asked for, None where no empty sheet holds it so: :func:`_larger_where_room` asks).
+_ForceSheetWays = tuple[Panel, list[list[Panel]], Callable[[tuple[int, int]], Panel | None]]
 
 
 def _force_sheets(analysis: Analysis, sheet: str | None = None) -> list[_ForceSheetWays]:
     """Each force sheet of :func:`force_panels` whole (its rows down one column), the ways it may stand on
     sheets (:func:`fewest_sheets_cuts` chooses), and the same sheet drawn larger where an empty sheet holds it so
-    whole (:func:`_larger_force_sheets`)."""
+    whole (:func:`_larger_force_sheet`)."""
     chosen = analysis.scene.drawing.sheet if sheet is None else sheet
     found = []
     for position in analysis.plans:
@@ -439,7 +440,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     """The force sheet of ``position`` whole, and the ways it may stand on sheets: whole, or its parts in order
     where no empty ``sheet`` holds it whole in any way (each part whole under its heading, continued), cut as
     :meth:`force_rows.Rows.cuts` has them; and, where it stands whole as first drawn, the same sheet drawn larger
-    (:func:`_larger_force_sheets`)."""
+    (:func:`_larger_force_sheet`)."""
     words = labels(analysis.scene.locale)
     form = form_of(analysis.scene.locale)
     drawn = force_sheet(analysis, position, with_friction)
@@ -490,7 +491,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
         heading = rows.heading
         if sheet == "none":
-            return one, [[one]], lambda: iter(())
+            return one, [[one]], lambda steps: None
         # Its rows in two columns where a sheet is too low for them in one.
         cuts = [[replace(one, alternatives=(two,) if two.extent != one.extent else ())]]
         if any(fits(width(way), height(way)) for way in cuts[0][0].ways):
@@ -540,14 +541,22 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     # Only a sheet an empty sheet held whole as first drawn, at its lettering and scales, has room to spare.
     roomy = drawn == first and not parted and len(ways) == 1 and len(ways[0]) == 1
 
-    def larger() -> Iterator[Panel]:
-        for bigger in _larger_force_sheets(analysis, drawn, groups_cut_free) if roomy else ():
-            rows = force_layout.rows(bigger, groups_cut_free)
-            way, other = (split(rows.arranged(rows.in_columns(count)), one.name, one.label, _group_of_field)
-                          for count in (1, 2))
-            if fits(width(way), height(way)) or fits(width(other), height(other)):
-                panel = replace(way, alternatives=(other,) if other.extent != way.extent else ())
-                yield _finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0]
+    fixed_polygons = analysis.scene.drawing.force_scale is not None
+
+    @functools.cache
+    def larger(steps: tuple[int, int]) -> Panel | None:
+        bodies, polygons = steps
+        # The polygons at the μF the scene sets are left at it, as the drawing a hand fixed.
+        bigger = _larger_force_sheet(drawn, bodies, 0 if fixed_polygons else polygons) if roomy else None
+        if bigger is None:
+            return None
+        rows = force_layout.rows(bigger, groups_cut_free)
+        way, other = (split(rows.arranged(rows.in_columns(count)), one.name, one.label, _group_of_field)
+                      for count in (1, 2))
+        if not (fits(width(way), height(way)) or fits(width(other), height(other))):
+            return None
+        panel = replace(way, alternatives=(other,) if other.extent != way.extent else ())
+        return _finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0]
 
     return whole, ways, larger
 
@@ -567,26 +576,24 @@ def _finished(analysis: Analysis, drawn: force_layout.ForceSheet, one: Panel, cu
                                                 for panels in cuts]
 
 
-# The standard steps finer the groups cut free (μl) and their polygons (μF) are tried at on a sheet with room for
-# them, largest first: a student's A1 draws them about twice the mechanism's μl (0.004 → 0.002 m/mm, 5 → 2 N/mm).
+# The standard steps finer the groups cut free (μl) and their polygons (μF) a sheet with room for them may draw them
+# at, largest first: a student's A1 draws them about twice the mechanism's μl (0.004 → 0.002 m/mm, 5 → 2 N/mm).
 LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1, 0), (0, 1))
+# The way tried first: where it packs, only the larger ways are tried, else only the smaller.  Each way is a force
+# sheet laid out afresh, its labels placed; trying all nine, largest first, made a run's sheets a third slower.
+PROBE_STEPS = (1, 1)
 
 
-def _larger_force_sheets(analysis: Analysis, drawn: force_layout.ForceSheet,
-                         groups_cut_free: dict[tuple[int, float], force_layout.Drawing]
-                         ) -> Iterator[force_layout.ForceSheet]:
-    """``drawn`` with its groups cut free and its polygons drawn larger, by :data:`LARGER_FORCE_STEPS`; the
-    polygons at the μF the scene sets are left at it, as the drawing a hand fixed."""
-    fixed_polygons = analysis.scene.drawing.force_scale is not None
-    steps = dict.fromkeys((bodies, 0 if fixed_polygons else polygons) for bodies, polygons in LARGER_FORCE_STEPS)
-    for bodies, polygons in steps:
-        if not bodies and not polygons:
-            continue
-        scale = drawn.length_scale
-        for _ in range(bodies):
-            scale = finer_standard_scale(scale)
-        yield replace(drawn, length_scale=scale,
-                      forces=force_layout.with_finer_polygons(drawn.forces, polygons))
+def _larger_force_sheet(drawn: force_layout.ForceSheet, bodies: int,
+                        polygons: int) -> force_layout.ForceSheet | None:
+    """``drawn`` with its groups cut free ``bodies`` standard steps larger (finer μl) and its polygons ``polygons``
+    steps larger (finer μF); None for no step at all."""
+    if not bodies and not polygons:
+        return None
+    scale = drawn.length_scale
+    for _ in range(bodies):
+        scale = finer_standard_scale(scale)
+    return replace(drawn, length_scale=scale, forces=force_layout.with_finer_polygons(drawn.forces, polygons))
 
 
 def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet,
@@ -946,7 +953,8 @@ def course_panels(analysis: Analysis, diagrams: Sequence[Panel | Sequence[Layer]
                         tuple(balancing))
 
 
-def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel], larger: Sequence[Callable[[], Iterator[Panel]]],
+def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
+                       larger: Sequence[Callable[[tuple[int, int]], Panel | None]],
                        sheet: str, form: str) -> list[Panel]:
     """``parts``, each force sheet that stands whole among them drawn larger (its groups cut free at a finer μl,
     its polygons at a finer μF) where the sheets hold it so: the first of its ``larger`` ways, largest first, that
@@ -962,20 +970,28 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel], larger: S
             return None
 
     pages = packed(chosen)
-    if pages is None:
+    if pages is None or not LARGER_FORCE_STEPS:
         return chosen
     count = len(pages)
-    for ways in larger:
-        for way in ways():
-            at = next((k for k, part in enumerate(chosen) if part.name == way.name), None)
+    probe = PROBE_STEPS if PROBE_STEPS in LARGER_FORCE_STEPS else LARGER_FORCE_STEPS[-1]
+    above = LARGER_FORCE_STEPS[:LARGER_FORCE_STEPS.index(probe)]
+    below = LARGER_FORCE_STEPS[LARGER_FORCE_STEPS.index(probe) + 1:]
+    for way_at in larger:
+        def taken(steps: tuple[int, int], way_at=way_at, current=chosen) -> list[Panel] | None:
+            way = way_at(steps)
+            at = None if way is None else next((k for k, part in enumerate(current) if part.name == way.name), None)
             if at is None:
-                break
-            tried = [*chosen[:at], way, *chosen[at + 1:]]
+                return None
+            tried = [*current[:at], way, *current[at + 1:]]
             found = packed(tried)
-            if found is not None and len(found) <= count and _in_order(found, [part.name for part in tried]) \
-                    and all(_one_length_scale(page) for page in found):
-                chosen = tried
-                break
+            fitting = found is not None and len(found) <= count and \
+                _in_order(found, [part.name for part in tried]) and all(_one_length_scale(page) for page in found)
+            return tried if fitting else None
+
+        # A larger way that does not pack is taken to mean that none larger still does.
+        probed = taken(probe)
+        chosen = next((tried for tried in map(taken, above if probed is not None else below) if tried is not None),
+                      probed) or chosen
     return chosen
 
 
