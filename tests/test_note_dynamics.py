@@ -372,3 +372,24 @@ def test_a_clutch_gives_each_half_its_equation_while_it_slips_and_one_when_it_lo
     locked, = numbers(r"its halves slip until t = {N} s", note)
     assert half == 2.0 and locked == pytest.approx(100.0 / (20.0 / half + 19.0 / 4.0), rel=1e-3)
     assert "J<sub>cl</sub>·dω<sub>d</sub>/dt = M<sub>d</sub>(ω<sub>d</sub>) − M<sub>cl</sub>" in html
+
+
+@pytest.mark.parametrize("locale", ["en", "ru", "zh"])
+def test_the_note_says_which_flywheel_to_mount(with_dynamics, locale):
+    """The note gave the approximate, the energy–mass and Mertsalov's flywheels and no word of which to mount: a
+    student took the approximate one, 24 % short.  It now takes the energy–mass diagram's, the value results.json
+    gives, and says how far the approximate one is off it, worked out here from the operands the note writes."""
+    note, results, _ = with_dynamics(locale)
+    note = note.replace(",", ".") if locale == "ru" else note
+    work, omega, delta, mean = map(value, re.search(
+        rf"= {NUMBER}/\({NUMBER}²·{NUMBER}\) − {NUMBER} = {NUMBER}", note).groups()[:4])
+    approximate = work / (omega * omega * delta) - mean
+    exact = results["dynamics"]["flywheel_inertia"]
+    off = abs(exact - approximate) / exact * 100.0
+    taken = {"en": r"the flywheel taken is JF = {} kg·m².*?the approximate value is {} % off it",
+             "ru": r"принимаем Jм = {} кг·м².*?приближённое значение отличается от него на {} %",
+             "zh": r"取飞轮转动惯量 JF = {} kg·m².*?近似值与之相差 {} %"}[locale]
+    found = re.search(taken.format(NUMBER, NUMBER), note)
+    assert found, note
+    assert value(found.group(1)) == pytest.approx(exact, rel=1e-4)
+    assert value(found.group(2)) == pytest.approx(off, rel=0.05, abs=0.01)

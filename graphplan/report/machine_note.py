@@ -174,6 +174,10 @@ def _flywheel(note: Writer, flywheel, model) -> None:
         if flywheel.approximate < 0:   # the constant-Je estimate spares what the varying Je does not
             note.para(note.t("note_dyn_approximate_negative", low=note.n(float(np.min(model.inertia))),
                              high=note.n(float(np.max(model.inertia))), exact=numbers["required"]))
+        else:
+            # Three values and no word of which to mount: a student took the approximate one, 24 % short.
+            off = abs(flywheel.required - flywheel.approximate) / flywheel.required * 100.0
+            note.para(note.t("note_dyn_flywheel_taken", exact=numbers["required"], off=note.n(off, 2)))
     note.para(note.t("note_dyn_speeds_shaft" if model.link == 0 else "note_dyn_speeds", **speeds))
     if numbers["moved"] is not None:
         note.para(note.t("note_dyn_moved", rpm=numbers["shaft_rpm"], value=numbers["moved"]))
