@@ -54,3 +54,22 @@ def test_a_diagram_is_said_to_be_one():
     scene = graphplan.load_text(COMPRESSOR)
     said = paragraph(note_markdown(analyse(scene)), "Нагрузки звена 4")
     assert "F4 — диаграммой нагрузок" in said and "ходу" not in said
+
+
+@pytest.mark.parametrize(("locale", "start", "one", "two"), [
+    ("en", "The loads of link 4", "the plan position {} is the one with force sheets",
+     "the plan positions {} are those with force sheets"),
+    ("ru", "Нагрузки звена 4", "для положения {} построен лист силового расчёта",
+     "для положений {} построены листы силового расчёта"),
+])
+def test_the_plan_positions_with_force_sheets_are_counted_in_the_words(locale, start, one, two):
+    """«для положений 3 построены листы» of one position: the words follow how many there are."""
+    scene = dataclasses.replace(graphplan.load(FIXTURES / "engine_slider_crank.toml"), locale=locale)
+    numbers = [plan.number for plan in analyse(scene).plans if plan.forces is not None]
+    assert len(numbers) >= 2
+    said = paragraph(note_markdown(analyse(scene)), start)
+    mark = ", "
+    assert two.format(mark.join(map(str, numbers))) in said, said
+    single = dataclasses.replace(scene, positions=dataclasses.replace(scene.positions, plans=(numbers[0],)))
+    said = paragraph(note_markdown(analyse(single)), start)
+    assert one.format(numbers[0]) in said, said

@@ -79,7 +79,8 @@ def _load_diagrams(note: Writer) -> None:
     if load_diagrams.unavailable(note.analysis) is not None:
         return
     text = note.text
-    plans = text["enumeration"].join(str(plan.number) for plan in note.analysis.plans if plan.forces is not None)
+    numbers = [str(plan.number) for plan in note.analysis.plans if plan.forces is not None]
+    plans = text["enumeration"].join(numbers)
     for diagram in load_diagrams.of_analysis(note.analysis):
         names = text["enumeration"].join(load.name for load in diagram.loads)
         if diagram.translating:
@@ -92,7 +93,8 @@ def _load_diagrams(note: Writer) -> None:
             coordinates = np.degrees(diagram.coordinates)
         unit = text["newton"] if diagram.kind == "force" else text["newton_metre"]
         given = text["semicolon"].join(_given(note, load, unit) for load in diagram.loads)
-        note.para(note.t("note_ld_intro", link=diagram.link, given=given, symbol=symbol, plans=plans or "—"))
+        note.para(note.t("note_ld_intro", link=diagram.link, given=given, symbol=symbol, plans=plans or "—",
+                         count=Count(len(numbers))))
         header = [text["column_position"], text["note_ld_stroke"], travel, text["note_ld_share"],
                   *(f"{load.name}, {unit}" for load in diagram.loads)]
         rows = []
