@@ -103,8 +103,8 @@ def _angles(ends: tuple[float, float]) -> str:
 def resisting_forces_turning(mechanism: Mechanism, positions: PositionSet,
                              motion: Motion) -> tuple[PositionWarning, ...]:
     """A ``resisting-turns-round`` warning for each resisting force whose point moves both ways along its line
-    within its window of one stroke, at the analysed positions: it turns round with the motion there.  A lifted load typed
-    ``resisting = true`` pushed a lever's end up once the end passed the top of its arc, with no word of it."""
+    within its window of one stroke, at the analysed positions: it turns round with the motion there.  A lifted load
+    typed ``resisting = true`` pushed a lever's end up once the end passed the top of its arc, with no word of it."""
     told = []
     state = motion_state(motion)
     acting = activity(mechanism, positions, motion) > 0

@@ -295,8 +295,8 @@ class MachineDynamics:
                      f"{number(slip.sized)} rad/s, is some {slip.times_off ** 2:.0f} times too {size}; then ")
         elif torques is not None:
             odd = self.synchronous
-            first = (f"first the synchronous speed told for {odd.where}.motor.synchronous_rpm: at {number(odd.nearest)} "
-                     f"rpm the motor gives the shaft {number(torques[1])} N·m at rest, not {number(torques[0])}; then ")
+            first = (f"first the synchronous speed told for {odd.where}.motor.synchronous_rpm: at "
+                     f"{number(odd.nearest)} rpm the motor gives the shaft {number(torques[1])} N·m at rest, not {number(torques[0])}; then ")
         gear = self.gear
         if gear is None:
             return f"{first}a stronger motor, a larger gear ratio, {last}"
@@ -336,8 +336,8 @@ class MachineDynamics:
         if runaway is not None:
             # The torques as the note's runaway line writes them.
             return (head + f"the machine speeds up without end, at ω = {number(speed)} rad/s by then: the motor's "
-                    f"torque on the shaft, {number(runaway[0])} N·m, exceeds the mean resistance, {number(runaway[1])} N·m, at "
-                    "every speed, so no duration reaches a steady state (more resistance, or a motor whose torque "
+                    f"torque on the shaft, {number(runaway[0])} N·m, exceeds the mean resistance, "
+                    f"{number(runaway[1])} N·m, at every speed, so no duration reaches a steady state (more resistance, or a motor whose torque "
                     "falls with speed: linear, kloss)")
         return (head + f"the machine is still {'speeding up' if self.speeding_up() else 'slowing down'} at "
                 f"ω = {number(speed)} rad/s, so the results have no ωm, δ or start-up time; a longer [dynamics] "

@@ -408,8 +408,9 @@ class NearResonance:
             return (f"no damping and ω at the natural frequency to five digits (r = 1): the machine runs at resonance, "
                     f"and the amplitude X = {number(self.amplitude)} m hangs on how near; give damping_ratio or "
                     "damping")
-        return (f"no damping and ω within {number(off * 100.0, 2)} % of the natural frequency (r = {number(self.ratio)}): the amplitude "
-                f"X = {number(self.amplitude)} m grows without bound nearer it; give damping_ratio or damping")
+        return (f"no damping and ω within {number(off * 100.0, 2)} % of the natural frequency "
+                f"(r = {number(self.ratio)}): the amplitude X = {number(self.amplitude)} m grows without bound nearer "
+                "it; give damping_ratio or damping")
 
     def _instrument_detail(self) -> str:
         """The warning of an instrument shaken near its resonance: the base's frequency, not a speed it runs at, is
@@ -417,7 +418,8 @@ class NearResonance:
         at = self.resonant_as_written
         where = ("the base's ω at the natural frequency" + (" to five digits" if self.zeta == 0 else "") + " (r = 1): "
                  "the instrument is shaken at resonance" if at else
-                 f"the base's ω within {number(abs(self.ratio - 1.0) * 100.0, 2)} % of the natural frequency (r = {number(self.ratio)})")
+                 f"the base's ω within {number(abs(self.ratio - 1.0) * 100.0, 2)} % of the natural frequency "
+                 f"(r = {number(self.ratio)})")
         if self.zeta > 0:
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the instrument moves X = "
                     f"{number(self.amplitude)} m, {number(self.transmissibility)} times the base's Y; mount it with "

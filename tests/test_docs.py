@@ -116,7 +116,8 @@ def test_the_course_project_walk_through_runs_as_printed(tmp_path, monkeypatch, 
     root = ElementTree.parse(tmp_path / "shaper-ru" / "sheet_1.svg").getroot()
     assert root.get("width") == "594mm"
     # The page says the scene's title stays as typed under --locale ru, and names the Russian starter's title.
-    typed = re.search(r'^title\s*=\s*"([^"]+)"', (tmp_path / "shaper.toml").read_text(encoding="utf-8"), re.MULTILINE)[1]
+    starter_text = (tmp_path / "shaper.toml").read_text(encoding="utf-8")
+    typed = re.search(r'^title\s*=\s*"([^"]+)"', starter_text, re.MULTILINE)[1]
     assert f'starter\'s "{typed}" heads the title block' in " ".join(page.split())
     assert set(typed.split()) <= set(" ".join(root.itertext()).split())
     from graphplan.starters import starter

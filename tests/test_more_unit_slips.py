@@ -166,9 +166,9 @@ def test_a_cranks_mass_in_grams_is_warned_of_by_its_inertia(tmp_path, capsys, in
     bar = STEEL * 0.175 * 0.175 ** 2  # a solid steel bar 0.175 m square, 42.1 kg
     depth = 4000.0 / (STEEL * 2 * math.pi * inertia / 4000.0)
     words = (f"links.2.mass = 4000 kg on a link 0.175 m long (A–O), heavier than a solid steel bar of that length "
-             f"({_three(bar)} kg), and too compact for a flywheel or counterweights: with links.2.inertia = {inertia:g} "
-             f"kg·m², as steel it would reach {_three(depth)} m along its axis: grams typed for kg? 4000 g is "
-             "links.2.mass = 4")
+             f"({_three(bar)} kg), and too compact for a flywheel or counterweights: with links.2.inertia = "
+             f"{inertia:g} kg·m², as steel it would reach {_three(depth)} m along its axis: grams typed for kg? "
+             "4000 g is links.2.mass = 4")
     told, results, note = _run(tmp_path, _with_crank(4000.0, inertia), capsys)
     assert words in told and any(words in detail for detail in _in_grams(results))
     assert "the masses were probably given in grams" in note

@@ -96,8 +96,8 @@ def test_a_mean_speed_typed_in_the_wrong_unit_is_put_first_where_the_run_settles
     told, note = _run(tmp_path, capsys, PRESS.replace("power = 2200.0", "power = 22000.0"))
     (line,) = [line for line in told if "its flywheel was sized at" in line]
     # Sized at 6.2832 rev/min = 0.65797 rad/s; the motor's gear brings it to the crank's 6.2832 rad/s, less its slip.
-    assert f"the {6.2832 * RPM:.5g} rad/s its flywheel" in line and line.endswith("(the mean speed told for dynamics.rpm "
-                                                                                    "first)")
+    assert f"the {6.2832 * RPM:.5g} rad/s its flywheel" in line
+    assert line.endswith("(the mean speed told for dynamics.rpm first)")
     assert not [line for line in told if line.startswith("dynamics.motor.gear_ratio")]
     (caution,) = [para for para in note.split("\n\n") if "its flywheel was sized at" in para]
     assert caution.endswith("The mean speed given in the wrong unit (see the caution at the head of this section) is "

@@ -38,7 +38,10 @@ def test_the_nearest_synchronous_speed_is_named_only_where_the_typed_one_is_none
     # Below 0.9 of the slowest (375) the 60·f/p crowd together and nothing is said.
     expected = None if is_one or typed < 0.9 * 375.0 else min(speeds, key=lambda speed: abs(typed / speed - 1.0))
     assert expected == nearest
-    assert nearest_synchronous_rpm(typed) == pytest.approx(nearest) if nearest else nearest_synchronous_rpm(typed) is None
+    if nearest:
+        assert nearest_synchronous_rpm(typed) == pytest.approx(nearest)
+    else:
+        assert nearest_synchronous_rpm(typed) is None
 
 
 def test_the_speed_in_rpm_warning_keeps_its_speeds_down_to_720():

@@ -391,7 +391,8 @@ def _levels_written(items: list[Primitive], levels: Sequence[tuple[float, str, s
     anchors = [Anchor((_most_open(x, curves, at, text_width(said, LABEL)), at), said, LABEL, math.pi / 2, colour,
                       along=((0.0, at), (width, at))) for at, colour, said in levels]
     placed = remembered(place_labels, anchors, obstacles_of(solid) + _numbering(numberings) + axes)
-    return broken_under(items, list(placed.texts), grid) + list(placed.leaders) + list(placed.texts), bool(placed.leaders)
+    drawn = broken_under(items, list(placed.texts), grid) + list(placed.leaders) + list(placed.texts)
+    return drawn, bool(placed.leaders)
 
 
 def _most_open(x: np.ndarray, curves: Sequence[np.ndarray], level: float, length: float) -> float:
