@@ -391,14 +391,14 @@ def test_a_crank_weight_set_beside_the_crank_turns_about_o_as_its_equation_signs
 
 
 def test_a_lever_load_set_beside_another_keeps_to_its_lines_side_of_the_pole():
-    """Two loads at one image on one line: the second stands 2.5 mm beside the first where its other side is taken.
+    """Two loads at one image on one line: the second stands 6 mm beside the first where its other side is taken.
     Its line 1 mm left of the pole, the side to the right would carry it across the pole the lever's moments are
     taken about, turning it on the drawing against its term in ΣMp."""
     image, load = complex(-1.0, 5.0), complex(0.0, -10.0)
     first = [Arrow((-1.0, 5.0), (-1.0, -5.0))]  # drawn before from the same image down the same line
     taken = LineString(((-1.0, 5.0), (-1.0, 20.0))).buffer(0.8)  # the line's other side, an arm there
     start, end, shift = force_layout._pushing_or_pulling(image, load, first, lambda: taken)
-    assert abs(shift) == pytest.approx(force_layout.BESIDE_MM)
+    assert abs(shift) == pytest.approx(force_layout.LEVER_BESIDE_MM)
     assert start.real < 0 and end.real < 0, f"drawn at x = {start.real:.1f} mm, its line at x = −1 mm, the pole at 0"
 
 

@@ -109,6 +109,11 @@ NEGLIGIBLE = 1e-9
 ALONG_BAR_MM = 4.5
 ALONG_BAR_SHARE = 0.4
 BESIDE_MM = 2.5
+# On the lever a load set beside stands by another load's arrow parallel to it at the same point (two couples' forces
+# at one end of their link: Mf14″ and Mf34″ at b), their heads level: this far apart (mm) each head has its name
+# beside it (a name's box is 4.6 mm high, kept 0.8 mm off another's), where at BESIDE_MM the two arrows read as one
+# and one name stood by the other's head.
+LEVER_BESIDE_MM = 6.0
 _LEADER_WIDTH = 0.18
 # Radii of the curved arrows of moments on the links (mm).
 MOMENT_RADIUS_MM = 6.0
@@ -496,7 +501,8 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
                         others: Sequence[complex] = ()) -> tuple[complex, complex, complex]:
     """The arrow of a load on the lever at its point ``at``: from it, or onto it where a load drawn before
     already lies along that line from it and the other side of the point is clear of ``lines()``, or else
-    :data:`BESIDE_MM` beside that line; with the shift that sets it beside (0 on its line).
+    :data:`LEVER_BESIDE_MM` beside that line (:data:`BESIDE_MM` where only that is clear); with the shift that sets
+    it beside (0 on its line).
 
     Two loads at one point on one line (F6 and Fu6 at e, a couple's forces
     M4′ and Mu4′ at d) drawn one after another read as one arrow broken
@@ -527,7 +533,11 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
         return (at * unit.conjugate()).imag * ((at + shift) * unit.conjugate()).imag < 0
 
     away, onto = (at, at + vector), (at - vector, at)
-    sides = sorted((1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM), key=crosses_pole)
+    # A side is taken where it is clear at BESIDE_MM, and drawn there LEVER_BESIDE_MM off where that is clear too: a
+    # side clear only that far off (the knee press's F6 at d, past Fu6 and G6 on its line) left the next load along
+    # the line (Ff16) no side, and it stood beyond another on its line, the two reading as one arrow broken by a head.
+    sides = [(shift * LEVER_BESIDE_MM / BESIDE_MM, shift)
+             for shift in sorted((1j * unit * BESIDE_MM, -1j * unit * BESIDE_MM), key=crosses_pole)]
 
     def first_way(keep_off: bool, along: float = 1.0) -> tuple[complex, complex, complex] | None:
         def fits(start: complex, end: complex, ok: Callable[[complex, complex], bool]) -> bool:
@@ -537,8 +547,10 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
             return (*away, 0j)
         if fits(*onto, lambda start, end: clear(start, end, along)):
             return (*onto, 0j)
-        for shift in sides:
+        for wide, shift in sides:
             if fits(away[0] + shift, away[1] + shift, lambda start, end: clear(start, end, along)):
+                if fits(away[0] + wide, away[1] + wide, lambda start, end: clear(start, end, along)):
+                    shift = wide
                 return (away[0] + shift, away[1] + shift, shift)
         return None
 
@@ -1335,8 +1347,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # grey name lying on another line reads as naming that one.
     # Placed again without them, another arm's name may take the room they left: until none stands there.
     # Then a load's name that lies on a line even so (the crowd of a triad's lever round d, f and s6, where no spot
-    # within reach of its arrow is off the lines) is given under the lever too, by the point its arrow stands at,
-    # one at a time, each point keeping one arrow unnamed at most: the only arrow at s6 without a name is G6's.
+    # within reach of its arrow is off the lines), or that stands nearer another load's free end than its own with no
+    # leader to say whose it is (G3 by Mu4″'s head on the lift's lever), is given under the lever too, by the point its
+    # arrow stands at, one at a time, each point keeping one arrow unnamed at most: the only arrow at s6 without a name
+    # is G6's.
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     shafts = [LineString((item.start, item.end)) for item in arrows if isinstance(item, Arrow)]
     crowded: list[Anchor] = []
@@ -1352,9 +1366,12 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             lettered = [anchor for anchor in lettered if anchor not in near]
             continue
         taken = {load_points[anchor.text] for anchor in unnamed}
+        # Fb's head is left out: drawn and named in its own colour, it is not taken for a load's.
+        heads = [anchor.at for anchor in loads if anchor.text != "Fb"]
         lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != "Fb"
                  and load_points[anchor.text] not in taken
-                 and _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
+                 and (_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
+                      or _by_another_head(anchor, placed, heads, labels.leaders))]
         if not lying:
             break
         unnamed.append(lying[0])
@@ -1416,6 +1433,24 @@ def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leader
     own = [LineString(leader.points) for leader in leaders if math.dist(leader.points[0], anchor.at) <= 1.0
            and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
     return any(leader.intersects(shaft) for leader in own for shaft in shafts)
+
+
+# A load's name standing beside its arrow's free end (no leader) this much (mm) nearer another load's free end than
+# its own names that load: the friction lever of the lift's position 3 had G3 by Mu4″'s head, 0.8 mm from it and
+# 2.4 mm from G3's own.
+OTHER_HEAD_MARGIN_MM = 0.5
+
+
+def _by_another_head(anchor: Anchor, text: Text, heads: Sequence[tuple[float, float]],
+                     leaders: Sequence[Polyline]) -> bool:
+    """Whether the placed name of ``anchor``, standing beside its point without a leader, stands nearer another of
+    the loads' free ends ``heads`` than its own: a reader takes it for that load's name."""
+    if any(math.dist(leader.points[0], anchor.at) <= 1.0 for leader in leaders):
+        return False
+    box = text_box(text)
+    own = box.distance(ShapelyPoint(anchor.at))
+    return any(box.distance(ShapelyPoint(head)) < own - OTHER_HEAD_MARGIN_MM for head in heads
+               if math.dist(head, anchor.at) > 1e-6)
 
 
 def _negligible(force: complex, forces: Sequence[complex]) -> bool:
