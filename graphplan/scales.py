@@ -45,11 +45,14 @@ def next_standard_scale(scale: float) -> float:
     return standard_scale(scale * (1.0 + 1e-9))
 
 
-def finer_standard_scale(scale: float) -> float:
-    """The standard scale factor just below ``scale``: the drawing a step larger (0.004 → 0.0025, 5 → 4)."""
-    exponent = math.floor(math.log10(scale))
-    below = [float(f"{mantissa}e{power}") for power in (exponent - 1, exponent) for mantissa in STANDARD_MANTISSAS]
-    return max(value for value in below if value < scale * (1.0 - 1e-9))
+def finer_standard_scale(scale: float, steps: int = 1) -> float:
+    """The standard scale factor ``steps`` standard steps below ``scale``: the drawing that many steps larger
+    (0.004 → 0.0025 → 0.002, 5 → 4)."""
+    for _ in range(steps):
+        exponent = math.floor(math.log10(scale))
+        below = [float(f"{mantissa}e{power}") for power in (exponent - 1, exponent) for mantissa in STANDARD_MANTISSAS]
+        scale = max(value for value in below if value < scale * (1.0 - 1e-9))
+    return scale
 
 
 def fit_scale(extent: float, field_mm: float) -> float:

@@ -989,14 +989,10 @@ _FINER: OwnedMemo[ForcePlan] = OwnedMemo()
 def with_finer_polygons(forces: ForcePlan, steps: int) -> ForcePlan:
     """``forces`` with every group's polygon drawn ``steps`` standard steps larger (μF 5 → 4 → 2.5 → 2 N/mm): a
     polygon at any μF closes alike and gives the same reactions; the sheet's captions then name the μF drawn."""
-    def finer(scale: float) -> float:
-        for _ in range(steps):
-            scale = finer_standard_scale(scale)
-        return scale
-
     def made() -> ForcePlan:
-        return replace(forces, groups=tuple(replace(group, scale=finer(group.scale)) for group in forces.groups),
-                       scale=finer(forces.scale))
+        return replace(forces, groups=tuple(replace(group, scale=finer_standard_scale(group.scale, steps))
+                                            for group in forces.groups),
+                       scale=finer_standard_scale(forces.scale, steps))
 
     return forces if steps <= 0 else _FINER.get(forces, steps, made)
 
@@ -1425,14 +1421,19 @@ def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leader
     """Whether the placed label of ``anchor`` lies on one of the drawn ``lines`` or on another label's leader (its
     own starts by its point), or is led to across one of the ``shafts`` (the loads' arrows)."""
     box = text_box(text)
-    others = [LineString(leader.points) for leader in leaders if math.dist(leader.points[0], anchor.at) > 1.0]
+    others = [LineString(leader.points) for leader in leaders if not _led_from(leader, anchor)]
     if any(box.intersects(line) for line in [*lines, *others]):
         return True
     # Its own leader: from by its point to by its box (the placer stops it short of the box).  Across an arrow it
     # reads as part of that arrow, or as naming that load, as a name on a line reads as naming the line.
-    own = [LineString(leader.points) for leader in leaders if math.dist(leader.points[0], anchor.at) <= 1.0
+    own = [LineString(leader.points) for leader in leaders if _led_from(leader, anchor)
            and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
     return any(leader.intersects(shaft) for leader in own for shaft in shafts)
+
+
+def _led_from(leader: Polyline, anchor: Anchor) -> bool:
+    """Whether ``leader`` is the one led from ``anchor``'s point: a placed leader starts by the point it names."""
+    return math.dist(leader.points[0], anchor.at) <= 1.0
 
 
 # A load's name standing beside its arrow's free end (no leader) this much (mm) nearer another load's free end than
@@ -1445,7 +1446,7 @@ def _by_another_head(anchor: Anchor, text: Text, heads: Sequence[tuple[float, fl
                      leaders: Sequence[Polyline]) -> bool:
     """Whether the placed name of ``anchor``, standing beside its point without a leader, stands nearer another of
     the loads' free ends ``heads`` than its own: a reader takes it for that load's name."""
-    if any(math.dist(leader.points[0], anchor.at) <= 1.0 for leader in leaders):
+    if any(_led_from(leader, anchor) for leader in leaders):
         return False
     box = text_box(text)
     own = box.distance(ShapelyPoint(anchor.at))

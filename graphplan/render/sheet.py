@@ -590,10 +590,8 @@ def _larger_force_sheet(drawn: force_layout.ForceSheet, bodies: int,
     steps larger (finer μF); None for no step at all."""
     if not bodies and not polygons:
         return None
-    scale = drawn.length_scale
-    for _ in range(bodies):
-        scale = finer_standard_scale(scale)
-    return replace(drawn, length_scale=scale, forces=force_layout.with_finer_polygons(drawn.forces, polygons))
+    return replace(drawn, length_scale=finer_standard_scale(drawn.length_scale, bodies),
+                   forces=force_layout.with_finer_polygons(drawn.forces, polygons))
 
 
 def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet,
@@ -957,9 +955,10 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
                        larger: Sequence[Callable[[tuple[int, int]], Panel | None]],
                        sheet: str, form: str) -> list[Panel]:
     """``parts``, each force sheet that stands whole among them drawn larger (its groups cut free at a finer μl,
-    its polygons at a finer μF) where the sheets hold it so: the first of its ``larger`` ways, largest first, that
-    packs with the drawings ``after`` them on no more sheets, and puts no two μl on one sheet, whose title block
-    gives one scale.  A force sheet with room to spare on its A1 drew its groups and polygons a third of the way
+    its polygons at a finer μF) where the sheets hold it so: of its ``larger`` ways, searched from
+    :data:`PROBE_STEPS` (the larger ones, largest first, where that packs, else the smaller), the first that packs
+    with the drawings ``after`` them on no more sheets, keeps the drawings in order, and puts no two μl on one
+    sheet, whose title block gives one scale.  A force sheet with room to spare on its A1 drew its groups and polygons a third of the way
     across it, as small as the mechanism's own μl and the polygons' 150 mm fields make them."""
     chosen = list(parts)
 
