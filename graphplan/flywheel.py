@@ -790,8 +790,7 @@ def gear_mismatch(spec: DynamicsSpec, crank_omega: float | None) -> GearMismatch
     motor = getattr(spec.motion, "motor", None)
     # A mean speed typed in the other unit is told on its own line: the gear is weighed against the crank's.
     against_crank = speed_unit_slip(spec, crank_omega) is not None
-    mean = abs(crank_omega) if against_crank else spec.omega if spec.omega is not None else \
-        abs(crank_omega) if crank_omega else None
+    mean = spec.omega if spec.omega is not None and not against_crank else abs(crank_omega) if crank_omega else None
     own = _motor_own_speed(motor)
     if mean is None or own is None:
         return None

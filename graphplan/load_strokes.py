@@ -105,19 +105,24 @@ def resisting_forces_turning(mechanism: Mechanism, positions: PositionSet,
     """A ``resisting-turns-round`` warning for each resisting force whose point moves both ways along its line
     within its window of one stroke, at the analysed positions: it turns round with the motion there.  A lifted load
     typed ``resisting = true`` pushed a lever's end up once the end passed the top of its arc, with no word of it."""
+    loads = mechanism.scene.loads
+    # Acting always, a resistance turns round with a link that swings to and fro, as it should (a sieve's); in a
+    # window of one stroke its point moving back along its line is the surprise.
+    windowed = [row for row, load in enumerate(loads)
+                if load.resisting and load.kind != "moment" and load.during != "always"]
+    if not windowed:   # most scenes: no motion state nor activity worked out for nothing
+        return ()
     told = []
     state = motion_state(motion)
     acting = activity(mechanism, positions, motion) > 0
-    for load, name, on in zip(mechanism.scene.loads, external_names(mechanism.scene.loads), acting, strict=True):
-        # Acting always, a resistance turns round with a link that swings to and fro, as it should (a sieve's); in a
-        # window of one stroke its point moving back along its line is the surprise.
-        if not load.resisting or load.kind == "moment" or load.during == "always":
-            continue
+    names = external_names(loads)
+    for row in windowed:
+        load, name = loads[row], names[row]
         sense = np.broadcast_to(np.nan_to_num(resisted_sense(load, state)), (motion.count,))
-        along = [int(number) for number, acts, each in zip(positions.numbers, on, sense, strict=True)
-                 if acts and each < 0]
-        against = [int(number) for number, acts, each in zip(positions.numbers, on, sense, strict=True)
-                   if acts and each > 0]
+        senses = [(int(number), each) for number, acts, each in zip(positions.numbers, acting[row], sense, strict=True)
+                  if acts]
+        along = [number for number, each in senses if each < 0]
+        against = [number for number, each in senses if each > 0]
         if along and against:
             turned = (load.angle_deg + 180.0) % 360.0
             told.append(PositionWarning(0, "resisting-turns-round", (

@@ -296,7 +296,8 @@ class MachineDynamics:
         elif torques is not None:
             odd = self.synchronous
             first = (f"first the synchronous speed told for {odd.where}.motor.synchronous_rpm: at "
-                     f"{number(odd.nearest)} rpm the motor gives the shaft {number(torques[1])} N·m at rest, not {number(torques[0])}; then ")
+                     f"{number(odd.nearest)} rpm the motor gives the shaft {number(torques[1])} N·m at rest, not "
+                     f"{number(torques[0])}; then ")
         gear = self.gear
         if gear is None:
             return f"{first}a stronger motor, a larger gear ratio, {last}"
@@ -337,8 +338,8 @@ class MachineDynamics:
             # The torques as the note's runaway line writes them.
             return (head + f"the machine speeds up without end, at ω = {number(speed)} rad/s by then: the motor's "
                     f"torque on the shaft, {number(runaway[0])} N·m, exceeds the mean resistance, "
-                    f"{number(runaway[1])} N·m, at every speed, so no duration reaches a steady state (more resistance, or a motor whose torque "
-                    "falls with speed: linear, kloss)")
+                    f"{number(runaway[1])} N·m, at every speed, so no duration reaches a steady state (more "
+                    "resistance, or a motor whose torque falls with speed: linear, kloss)")
         return (head + f"the machine is still {'speeding up' if self.speeding_up() else 'slowing down'} at "
                 f"ω = {number(speed)} rad/s, so the results have no ωm, δ or start-up time; a longer [dynamics] "
                 "duration (s) runs it on")

@@ -491,6 +491,10 @@ def _stroke_length(turn: np.ndarray, index: int, rising: bool) -> int:
     return int(stops[0]) if len(stops) else len(following)
 
 
+# The reach of a crank that turns round: one range, the whole turn.
+FULL_TURN = ((0.0, 2.0 * math.pi),)
+
+
 def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tuple[float, float], ...]:
     """The ranges of crank angle (rad, lower end first) in which the mechanism assembles.
 
@@ -506,7 +510,7 @@ def reach(mechanism: Mechanism, reference: Reference | None = None) -> tuple[tup
     grid = 2.0 * math.pi * np.arange(_REACH_GRID) / _REACH_GRID
     found = _assembled_ranges(_assembles(mechanism, reference), grid, wraps=True, tolerance=1e-9)
     if found is None:
-        return ((0.0, 2.0 * math.pi),)
+        return FULL_TURN
     ranges = []
     for lower, upper in found:
         if lower >= math.pi and upper > 2.0 * math.pi:  # through 0: from a negative angle

@@ -21,7 +21,7 @@ from .groups.base import Group
 from .length_units import given_lengths, mixed_units
 from .mechanism import Mechanism, build
 from .motion import reference_at, solve
-from .positions import first_value, reach, travel_reach
+from .positions import FULL_TURN, first_value, reach, travel_reach
 from .rounding import noise_floor
 from .scene import Scene
 
@@ -58,7 +58,7 @@ def reach_hint(mechanism: Mechanism, first: float | None = None) -> Iterator[Non
             with contextlib.suppress(AssemblyError, SingularPositionError):
                 taken = reference_at(mechanism, first)
         ranges = reach(mechanism, taken)
-        if ranges == ((0.0, 2.0 * math.pi),):  # it turns round in the scene's assembly: the solve lost its branch
+        if ranges == FULL_TURN:  # it turns round in the scene's assembly: the solve lost its branch
             raise
         if not ranges and (copied := _frame_points_at_one_place(mechanism)) is not None:
             raise AssemblyError(error.joint, error.position, error.group, f"{error.reason}; {copied}") from error
@@ -97,7 +97,7 @@ def _slipped_digit(mechanism: Mechanism, label: str) -> str | None:
             for slip in _SLIPS:
                 other = replace(scene, groups=(*scene.groups[:n], changed(value * slip), *scene.groups[n + 1:]))
                 try:
-                    turns = reach(build(other)) == ((0.0, 2.0 * math.pi),)
+                    turns = reach(build(other)) == FULL_TURN
                 except GraphplanError:
                     continue
                 if turns:
@@ -234,7 +234,7 @@ def _mirrored_sketch(mechanism: Mechanism) -> str | None:
             else "clockwise"
         other_way = {"clockwise": "counter-clockwise", "counter-clockwise": "clockwise"}[running]
         where = mirrored[f]
-        reaches = "" if ranges == ((0.0, 2.0 * math.pi),) else " (" + "; ".join(
+        reaches = "" if ranges == FULL_TURN else " (" + "; ".join(
             f"link {mechanism.driver.link} then reaches from {_inward(low, math.ceil)}° to {_inward(high, math.floor)}°"
             for low, high in ranges) + ")"
         return (f"the mechanism assembles at no angle of link {mechanism.driver.link} as sketched: {group.where}.near "

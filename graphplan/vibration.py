@@ -386,13 +386,17 @@ class NearResonance:
         return number(self.ratio) == "1"
 
     @property
+    def percent_off(self) -> float:
+        """How far ω lies from the natural frequency, in per cent of it: the command line and the note both give it
+        so ("within 0.012" on the console beside the note's "within 1.2 %" read as two different distances)."""
+        return abs(self.ratio - 1.0) * 100.0
+
+    @property
     def detail(self) -> str:
         """The warning in a line (English, as the command line prints it), r written as the note writes it."""
         if self.instrument:
             return self._instrument_detail()
-        off = abs(self.ratio - 1.0)
-        # The share in per cent to two digits, as the note's caution gives it: "within 0.012" beside the note's
-        # "within 1.2 %" read as two different distances.
+        off = number(self.percent_off, 2)
         # r = 1 to the digits written is resonance itself: "within 0 of the natural frequency" said it in riddles.
         at = self.resonant_as_written
         if self.zeta > 0:
@@ -400,7 +404,7 @@ class NearResonance:
             times = (f", the magnification {number(self.magnification)}" if self.base_moves
                      else f" is {number(self.magnification)} times m·e/M")
             where = ("ω at the natural frequency (r = 1): the machine runs at resonance" if at
-                     else f"ω within {number(off * 100.0, 2)} % of the natural frequency (r = {number(self.ratio)})")
+                     else f"ω within {off} % of the natural frequency (r = {number(self.ratio)})")
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the amplitude X = "
                     f"{number(self.amplitude)} m{times}; run the machine {'away from' if at else 'farther from'} "
                     "resonance or damp it more")
@@ -408,7 +412,7 @@ class NearResonance:
             return (f"no damping and ω at the natural frequency to five digits (r = 1): the machine runs at resonance, "
                     f"and the amplitude X = {number(self.amplitude)} m hangs on how near; give damping_ratio or "
                     "damping")
-        return (f"no damping and ω within {number(off * 100.0, 2)} % of the natural frequency "
+        return (f"no damping and ω within {off} % of the natural frequency "
                 f"(r = {number(self.ratio)}): the amplitude X = {number(self.amplitude)} m grows without bound nearer "
                 "it; give damping_ratio or damping")
 
@@ -418,7 +422,7 @@ class NearResonance:
         at = self.resonant_as_written
         where = ("the base's ω at the natural frequency" + (" to five digits" if self.zeta == 0 else "") + " (r = 1): "
                  "the instrument is shaken at resonance" if at else
-                 f"the base's ω within {number(abs(self.ratio - 1.0) * 100.0, 2)} % of the natural frequency "
+                 f"the base's ω within {number(self.percent_off, 2)} % of the natural frequency "
                  f"(r = {number(self.ratio)})")
         if self.zeta > 0:
             return (f"{where} with little damping (ζ = {number(self.zeta)}): the instrument moves X = "

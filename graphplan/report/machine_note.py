@@ -837,7 +837,7 @@ def _lengths_caution(note: Writer, lengths: LengthsInMillimetres) -> None:
 def _resonance_caution(note: Writer, close: NearResonance) -> None:
     """What the command line warns of a speed near resonance, said where the amplitude is: the file outlives the
     console."""
-    share = note.n(abs(close.ratio - 1.0) * 100.0, 2)
+    share = note.n(close.percent_off, 2)
     ratio = note.n(close.ratio)
     # r = 1 as written is resonance itself, not "within 0 % of" it.
     at = "_at" if ratio == note.n(1.0) else ""
