@@ -300,3 +300,59 @@ start = "extreme"
 working = { link = 4, sense = "ccw" }
 plans = [4, 10]
 """.replace("OFFSET", repr(offset))
+
+
+def crank_press(dynamics: str, force: float = 20000.0, share: float = 0.3, header: str = "",
+                positions: str = "") -> str:
+    """A crank press (crank OA 0.1 m at 60 rpm, rod AB 0.4 m, a slider of 5 kg on a guide through O) whose
+    ``force`` N resists the slider over the last ``share`` of its working stroke, 0.2 m long; ``dynamics`` is its
+    [dynamics] table's body, ``header`` more lines of [scene], ``positions`` more lines of [positions]."""
+    return f"""
+[scene]
+title = "Crank press flywheel"
+gravity = 9.81
+{header}
+[frame]
+link = 1
+points = {{ O = [0.0, 0.0] }}
+
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+rpm = 60.0
+epsilon = 0.0
+
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.4
+guide = {{ through = "O", angle = 0.0 }}
+assembly = "forward"
+
+[links.2]
+inertia = 0.5
+
+[links.4]
+mass = 5.0
+centre = "B"
+
+[[loads]]
+kind = "force"
+link = 4
+point = "B"
+value = {force}
+angle = 180.0
+resisting = true
+during = {{ from = {1 - share}, to = 1.0 }}
+
+[positions]
+count = 12
+start = "extreme"
+working = {{ link = 4, sense = "forward" }}
+{positions}
+[dynamics]
+{dynamics}"""

@@ -18,6 +18,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from scene_texts import crank_press
 from shapely.geometry import LineString, box
 
 from graphplan.cli import main
@@ -53,57 +54,7 @@ ENGINE, SPIKE = _engine(ENGINE_TORQUE), _engine(SPIKE_TORQUE)
 # A crank press: crank 0.1 m, rod 0.4 m, the slider's guide through the crank's pivot (stroke 2·0.1 m), punching
 # 20 kN over the last 30 % of its working stroke; the driving moment taken constant.
 PRESS_FORCE, PRESS_SHARE, PRESS_STROKE = 20000.0, 0.3, 0.2
-PRESS = f"""
-[scene]
-title = "Crank press flywheel"
-gravity = 9.81
-
-[frame]
-link = 1
-points = {{ O = [0.0, 0.0] }}
-
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-rpm = 60.0
-epsilon = 0.0
-
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.4
-guide = {{ through = "O", angle = 0.0 }}
-assembly = "forward"
-
-[links.2]
-inertia = 0.5
-
-[links.4]
-mass = 5.0
-centre = "B"
-
-[[loads]]
-kind = "force"
-link = 4
-point = "B"
-value = {PRESS_FORCE}
-angle = 180.0
-resisting = true
-during = {{ from = {1 - PRESS_SHARE}, to = 1.0 }}
-
-[positions]
-count = 12
-start = "extreme"
-working = {{ link = 4, sense = "forward" }}
-
-[dynamics]
-delta = 0.1
-count = 720
-"""
+PRESS = crank_press("delta = 0.1\ncount = 720\n", PRESS_FORCE, PRESS_SHARE)
 
 
 def _engine_mr(torque=ENGINE_TORQUE) -> float:

@@ -14,67 +14,15 @@ import re
 from pathlib import Path
 
 import pytest
+from scene_texts import crank_press
 
 from graphplan.cli import main
 
 RPM = 2.0 * math.pi / 60.0
 
-PRESS = """\
-[scene]
-title   = "Crank press flywheel"
-locale  = "en"
-gravity = 9.81
-
-[frame]
-link   = 1
-points = { O = [0.0, 0.0] }
-
-[driver]
-kind    = "crank"
-link    = 2
-pivot   = "O"
-joint   = "A"
-length  = 0.1
-rpm     = 60.0
-epsilon = 0.0
-
-[[groups]]
-kind     = "RRP"
-links    = [3, 4]
-joints   = ["A", "B"]
-length   = 0.4
-guide    = { through = "O", angle = 0.0 }
-assembly = "forward"
-
-[links.2]
-inertia = 0.5
-
-[links.4]
-mass    = 5.0
-centre  = "B"
-
-[[loads]]
-kind      = "force"
-link      = 4
-point     = "B"
-value     = 20000.0
-angle     = 180.0
-resisting = true
-during    = { from = 0.7, to = 1.0 }
-
-[positions]
-count   = 12
-start   = "extreme"
-working = { link = 4, sense = "forward" }
-plans   = [3]
-
-[dynamics]
-delta = 0.1
-rpm = 6.2832
-count = 720
-flywheel_shaft_rpm = 1430.0
-motor = { kind = "kloss", power = 2200.0, overload = 2.3, synchronous_rpm = 1500.0, rated_rpm = 1430.0, gear_ratio = 23.8333333, rotor_inertia = 0.005 }
-"""
+PRESS = crank_press("delta = 0.1\nrpm = 6.2832\ncount = 720\nflywheel_shaft_rpm = 1430.0\nmotor = { kind = \"kloss\", "
+                    "power = 2200.0, overload = 2.3, synchronous_rpm = 1500.0, rated_rpm = 1430.0, "
+                    "gear_ratio = 23.8333333, rotor_inertia = 0.005 }\n", header='locale = "en"', positions="plans = [3]")
 
 
 def _run(tmp_path: Path, capsys, text: str) -> tuple[list[str], str]:
