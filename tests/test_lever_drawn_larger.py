@@ -1,10 +1,11 @@
 """Zhukovsky's lever is drawn larger than its velocity plan where the plan's points crowd round the pole.
 
 A similar figure at any scale gives the same balancing load, so the lever may be drawn at its own μV. Where
-two points of the plan stand closer than 15 mm, the loads, their arms and their names ran together at the
-plan's size (the triad's lever: b, d, f, s4, s5, s6 all within 21 mm of p, with a 125 mm from it); the lever
-is then drawn at the standard μV that makes its longest ray at most 250 mm. On a sheet it gives that room
-back, a standard step at a time, before the force sheet would be cut into more parts.
+two points of the plan stand closer than 15 mm, or than 3 mm for each load drawn at either (a friction lever's
+forces of couples put five at a point), the loads, their arms and their names ran together at the plan's size
+(the triad's lever: b, d, f, s4, s5, s6 all within 21 mm of p, with a 125 mm from it); the lever is then drawn
+at the standard μV that makes its longest ray at most 250 mm. On a sheet it gives that room back, a standard
+step at a time, before the force sheet would be cut into more parts.
 
 The scales are found here from the plans' own numbers and the standard series, and read back off the
 drawings: the caption's μV, and the rays, which must be the velocities at that μV.
@@ -31,7 +32,10 @@ from graphplan.report.note import note_markdown
 SCENES = ["ratchet_crank_rocker", "engine_slider_crank", "quick_return_slotted_lever", "shaper_six_bar",
           "scotch_yoke", "double_rocker_swing", "triad_class_iii"]
 CROWDED_MM = 15.0
+ROOM_PER_LOAD_MM = 3.0
 LONGEST_RAY_MM = 250.0
+# A force this small beside the lever's largest is rounding, not drawn.
+ROUNDING_SHARE = 1e-9
 
 _analyses = {}
 
@@ -42,20 +46,34 @@ def analysis_of(name):
     return _analyses[name]
 
 
-def crowded(velocity):
-    """Whether two of the plan's points (those less than ZERO_MM apart counted as one) stand closer than 15 mm."""
+def crowded(velocity, lever=None):
+    """Whether two of the plan's points (those less than ZERO_MM apart counted as one) stand closer than 15 mm, or
+    than 3 mm for each of ``lever``'s load arrows (the balancing force's among them) at the two."""
     spots = []
     for value in velocity.points.values():
         where = value / velocity.scale
         if all(abs(where - spot) >= ZERO_MM for spot in spots):
             spots.append(where)
-    return any(abs(a - b) < CROWDED_MM for i, a in enumerate(spots) for b in spots[i + 1:])
+    loads = [0] * len(spots)
+    if lever is not None:
+        drawn = [(term.image, term.force) for term in lever.terms if term.image]
+        drawn.append((lever.balancing_image, lever.balancing_force))
+        largest = max(abs(force) for _, force in drawn)
+        for image, force in drawn:
+            if abs(force) > ROUNDING_SHARE * largest:
+                where = velocity.points[image] / velocity.scale
+                loads[min(range(len(spots)), key=lambda k: abs(spots[k] - where))] += 1
+
+    def room(i, j):
+        return max(CROWDED_MM, ROOM_PER_LOAD_MM * (loads[i] + loads[j]))
+
+    return any(abs(spots[i] - spots[j]) < room(i, j) for i in range(len(spots)) for j in range(i + 1, len(spots)))
 
 
-def expected_scale(velocity):
+def expected_scale(velocity, lever=None):
     """The plan's μV, or the smallest standard one at which the longest ray is at most 250 mm where that is
     larger and the plan crowds."""
-    if not crowded(velocity):
+    if not crowded(velocity, lever):
         return velocity.scale
     longest = max(abs(value) for value in velocity.points.values())
     larger = min(value for value in STANDARD if longest / value <= LONGEST_RAY_MM * (1 + 1e-12))
@@ -85,13 +103,14 @@ def test_the_lever_is_drawn_larger_exactly_where_its_plan_crowds(name):
             continue
         layers = force_layout.layout(force_sheet(analysis, position))
         scale, caption = drawn_scale(layers, position.velocity)
-        assert scale == pytest.approx(expected_scale(position.velocity), rel=1e-12), (name, position.number)
+        assert scale == pytest.approx(expected_scale(position.velocity, position.lever), rel=1e-12), \
+            (name, position.number)
         # Drawn at any scale, the lever finds the same balancing moment.
         assert caption.count(f"Mb = {significant(position.lever.balancing)} ") == 2  # the lever's, the polygons'
 
 
 def test_the_fixtures_have_levers_drawn_larger_and_levers_left_at_the_plans_size():
-    kinds = {expected_scale(position.velocity) < position.velocity.scale
+    kinds = {expected_scale(position.velocity, position.lever) < position.velocity.scale
              for name in SCENES for position in analysis_of(name).plans if position.lever is not None}
     assert kinds == {True, False}
 
@@ -126,7 +145,7 @@ def test_on_a1_an_enlarged_lever_steps_back_only_as_far_as_the_sheet_needs_and_c
                    and any(layer.name.endswith("lever-caption") for layer in panel.layers)]
         assert len(holding) == 1
         scale, _ = drawn_scale(holding[0].layers, position.velocity)
-        enlarged = expected_scale(position.velocity)
+        enlarged = expected_scale(position.velocity, position.lever)
         assert enlarged < position.velocity.scale, "the triad's plans crowd"
         assert scale in STANDARD and enlarged - 1e-15 <= scale < position.velocity.scale
         sheet = force_sheet(analysis, position)
@@ -139,7 +158,7 @@ def test_on_a1_an_enlarged_lever_steps_back_only_as_far_as_the_sheet_needs_and_c
             kept += 1
     assert stepped_back and kept, "position 2 steps back (pa 250 mm is too long beside its group), 8 does not"
     # Drawn at the plan's size, the force sheets stand in as many parts.
-    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity: None)
+    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity, lever=None: None)
     assert [panel.name for panel in force_panels(analysis, "A1")] == [panel.name for panel in panels]
 
 
@@ -177,8 +196,8 @@ def test_a_force_sheet_cut_into_parts_all_the_same_keeps_a_larger_lever_on_its_p
     larger = [position for position in analysis.plans if drawn[position.number] < position.velocity.scale]
     assert larger, "some lever stands larger on its part"
     for position in larger:
-        assert expected_scale(position.velocity) - 1e-15 <= drawn[position.number]
-    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity: None)
+        assert expected_scale(position.velocity, position.lever) - 1e-15 <= drawn[position.number]
+    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity, lever=None: None)
     assert [panel.name for panel in force_panels(analysis, "A4")] == [panel.name for panel in panels]
 
 
@@ -208,7 +227,7 @@ def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_dra
         drawn_at = float(re.search(r"μV = ([\d.]+) \(m/s\)/mm, arrows", figure)[1])
         velocity = position.velocity
         assert pa == pytest.approx(abs(velocity.points[velocity.images["A"]]) / drawn_at, abs=0.006)
-        enlarged = force_layout.enlarged_lever_scale(velocity)
+        enlarged = force_layout.enlarged_lever_scale(velocity, position.lever)
         smaller += enlarged is not None and drawn_at > enlarged
     assert smaller  # the case in point: a lever drawn smaller than enlarged for the small sheet
 

@@ -183,15 +183,44 @@ def test_each_load_named_beside_its_arrow_stands_nearest_its_own_free_end(levers
 
 def test_the_lift_levers_are_drawn_larger_by_the_fixtures_rule():
     # Position 3's plan: its nearest points (a, b and s3) 19.2 mm apart, no closer than 15 mm: drawn at the plan's
-    # μV.  Position 9's: a and s3 6.9 mm apart: drawn at the standard μV whose longest ray is at most 250 mm.
+    # μV without friction, with 3 + 2 loads at a and s3; with friction, 5 + 2 there want 21 mm and it is drawn larger.
+    # Position 9's: a and s3 6.9 mm apart: drawn at the standard μV whose longest ray is at most 250 mm.
     analysis = analyse(graphplan.load_text(LIFT))
     found = {}
     for position in analysis.plans:
         for friction in (False, True):
+            lever = position.lever_with_friction if friction else position.lever
             scale, _ = drawn_scale(force_layout.layout(force_sheet(analysis, position, friction)), position.velocity)
-            assert scale == pytest.approx(expected_scale(position.velocity), rel=1e-12)
-            found[position.number] = (crowded(position.velocity), scale < position.velocity.scale)
-    assert found == {3: (False, False), 9: (True, True)}
+            assert scale == pytest.approx(expected_scale(position.velocity, lever), rel=1e-12)
+            found[position.number, friction] = (crowded(position.velocity), crowded(position.velocity, lever),
+                                                scale < position.velocity.scale)
+    assert found == {(3, False): (False, False, False), (3, True): (False, True, True),
+                     (9, False): (True, True, True), (9, True): (True, True, True)}
+
+
+# Two points of the lever need this much room between them (mm) for each load arrow drawn at either.
+ROOM_PER_LOAD_MM = 3.0
+
+
+def test_the_friction_lever_whose_points_crowd_with_loads_is_drawn_larger_than_the_15_mm_rule_gives(levers):
+    """Position 3's lever with friction: 18 loads at points no closer than 19.2 mm on the plan, which the 15 mm rule
+    alone left at the plan's size, the arrows and names at a, b and s3 running together.  Read off the drawing: its
+    points stand farther apart than the plan's, and every two of them as far as 3 mm for each arrow drawn at either."""
+    analysis = analyse(graphplan.load_text(LIFT))
+    position = next(position for position in analysis.plans if position.number == 3)
+    velocity = position.velocity
+    on_plan = [value / velocity.scale for value in velocity.points.values()]
+    assert min(abs(a - b) for i, a in enumerate(on_plan) for b in on_plan[i + 1:] if abs(a - b) > 0.25) >= 15.0
+    arrows, dots, _, _ = _lever(levers["forces_friction_3.svg"])
+    at = [0] * len(dots)
+    for tail, tip in arrows.values():
+        at[min(range(len(dots)), key=lambda k: min(math.dist(dots[k], tail), math.dist(dots[k], tip)))] += 1
+    assert sum(at) >= 18
+    apart = [(math.dist(dots[i], dots[j]), at[i] + at[j]) for i in range(len(dots)) for j in range(i + 1, len(dots))]
+    nearest = min(distance for distance, _ in apart)
+    assert nearest > 19.2 * 1.5
+    for distance, count in apart:
+        assert distance >= ROOM_PER_LOAD_MM * count, (distance, count)
 
 
 def test_a_load_set_beside_stands_nearer_where_the_wider_side_is_taken():

@@ -287,7 +287,7 @@ def test_an_arm_on_zhukovsky_s_lever_too_short_to_draw_says_not_drawn(locale):
     position = next(position for position in analysis.plans if position.number == 0)
     velocity, lever = position.velocity, position.lever
     # The lever's own scale where it is drawn larger than the plan, as its note paragraph says.
-    drawn_at = enlarged_lever_scale(velocity) or velocity.scale
+    drawn_at = enlarged_lever_scale(velocity, lever) or velocity.scale
     caption = text["note_lever_table"].format(number=position.number)
     rows = note.split(caption, 1)[1].split("\n\n")[1].splitlines()[2:]
     cells = {row.strip("|").split("|")[0].strip(): [cell.strip() for cell in row.strip("|").split("|")]

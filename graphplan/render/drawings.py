@@ -472,5 +472,6 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         lever=lever, velocity=velocity, length_scale=length_scale(analysis),
         # As on the plan sheets, every word is the locale's: the scene's title stays off the sheet.
         title=text[title].format(number=plan_position.number), text=text, friction=friction,
-        without_friction=ideal, efficiency=eta, locked_with_friction=locked, lever_scale=force_layout.enlarged_lever_scale(velocity),
+        without_friction=ideal, efficiency=eta, locked_with_friction=locked,
+        lever_scale=force_layout.enlarged_lever_scale(velocity, lever),
         velocity_scale=text["velocity_scale"].format(value=scale_factor(velocity.scale)))

@@ -1195,17 +1195,45 @@ def _side_by_side(start: complex, end: complex, arrows: Sequence[Arrow], middle:
 # and at the plan's own size the loads, their arms and their names at the crowded points run together.
 LEVER_CROWDED_MM = 15.0
 LEVER_LONGEST_RAY_MM = 250.0
+# Two points of the lever need this much room between them (mm) for each load drawn at either, where that is more
+# than LEVER_CROWDED_MM: about a name's height, each load's name standing by its arrow's free end, so that the 15 mm
+# is the room of the usual five (a centre of mass's weight and inertia force, a link's end with a couple's force, and
+# one more).  With friction a couple of friction at each end of a link puts a force at each: the lift's friction lever
+# of position 3, 18 loads at points 19.2 mm apart, kept at its plan's size by the 15 mm alone, ran its arrows and
+# names together.
+LEVER_ROOM_PER_LOAD_MM = 3.0
 
 
-def enlarged_lever_scale(velocity: Plan) -> float | None:
+def lever_loads_at(velocity: Plan, lever: Lever | None) -> dict[str, int]:
+    """How many load arrows the lever draws at each point of the plan, by the point's first letter (its spot's,
+    :func:`coincident_letters`): its loads' and the balancing force's, none too small beside the others to be
+    drawn."""
+    if lever is None:
+        return {}
+    spot_of = {letter: group[0] for group in coincident_letters(velocity) for letter in group}
+    drawn = [(term.image, term.force) for term in lever.terms if term.image and term.force != 0]
+    drawn.append((lever.balancing_image, lever.balancing_force))
+    counts: dict[str, int] = {}
+    for image, force in drawn:
+        if image in spot_of and not _negligible(force, [other for _, other in drawn]):
+            counts[spot_of[image]] = counts.get(spot_of[image], 0) + 1
+    return counts
+
+
+def enlarged_lever_scale(velocity: Plan, lever: Lever | None = None) -> float | None:
     """The standard μV that draws the lever of ``velocity`` larger than the plan, where its points crowd.
 
-    None where the plan is drawn clear enough or already as large.
+    Two points crowd where they stand closer than :data:`LEVER_CROWDED_MM`, or than the room the loads ``lever``
+    draws at both take (:data:`LEVER_ROOM_PER_LOAD_MM` each).  None where the plan is drawn clear enough or already
+    as large.
     """
     spots = [group[0] for group in coincident_letters(velocity)]
-    closest = min((abs(velocity.mm(a) - velocity.mm(b)) for i, a in enumerate(spots) for b in spots[i + 1:]),
-                  default=math.inf)
-    if closest >= LEVER_CROWDED_MM:
+    loads = lever_loads_at(velocity, lever)
+
+    def room(one: str, other: str) -> float:
+        return max(LEVER_CROWDED_MM, LEVER_ROOM_PER_LOAD_MM * (loads.get(one, 0) + loads.get(other, 0)))
+
+    if not any(abs(velocity.mm(a) - velocity.mm(b)) < room(a, b) for i, a in enumerate(spots) for b in spots[i + 1:]):
         return None
     larger = fit_scale(max(abs(value) for value in velocity.points.values()), LEVER_LONGEST_RAY_MM)
     return larger if draws_larger(larger, velocity.scale) else None
@@ -1529,4 +1557,4 @@ def group_id(label: str) -> str:
     return svg_id(label).strip("-")
 
 
-__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "rows", "svg_id", "too_short_to_draw", "with_finer_polygons"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "lever_loads_at", "rows", "svg_id", "too_short_to_draw", "with_finer_polygons"]

@@ -445,7 +445,8 @@ def _balancing(note: Writer, plan: PlanPosition) -> None:
     if lever is not None:
         velocity = plan.velocity
         # As the force sheet beside the note draws it: a small sheet may draw it smaller than enlarged.
-        drawn_at = note.lever_scales.get(f"forces_{plan.number}.svg") or enlarged_lever_scale(velocity) or velocity.scale
+        drawn_at = (note.lever_scales.get(f"forces_{plan.number}.svg") or enlarged_lever_scale(velocity, lever)
+                    or velocity.scale)
         rows = []
         total = 0.0
         largest = max((abs(term.moment) for term in lever.terms), default=0.0)
