@@ -80,6 +80,56 @@ def test_no_load_arrow_on_the_press_lever_passes_over_another_point(levers):
                     assert not taken.intersects(ink), (name, words, load)
 
 
+
+# A name standing this much (mm) nearer another load's free end than its own reads as that load's; led to its
+# arrow by a leader, it does where that free end stands by the name, this near.
+NEARER_MM = 0.5
+BY_THE_NAME_MM = 2.5
+
+
+def _own_load(words: str, arrows: dict) -> str | None:
+    """The arrow a load's name names (a couple's two forces Mu3-1, Mu3-2 named Mu3′ and Mu3″); None for a point's
+    letter or an arm's name."""
+    own = [load for load in arrows if load.split("-")[0] == words.rstrip("′″")
+           and (words[-1] not in "′″" or load.endswith("-1" if words[-1] == "′" else "-2"))]
+    return own[0] if len(own) == 1 else None
+
+
+def _leaders(source: str) -> list[list[tuple[float, float]]]:
+    groups = {group.get("id"): group for group in ET.fromstring(source).iter(f"{SVG}g")}
+    return [_path_points(item) for item in groups["lever-leaders"].iter() if item.tag == f"{SVG}path"]
+
+
+def test_every_load_name_on_the_press_lever_stands_nearest_its_own_arrow_led_or_not(levers):
+    """On the lever with friction of position 5 Fu6's name, led by a short leader from its tail, stood 1.9 mm from
+    Ff16's head and 6.9 mm from its own tail, and its leader ran to that head: it read as Ff16's name (and Mu5′ at
+    position 6, 1.6 mm from G2's head).  A name stands no nearer another load's free end than its own (less a hair), a
+    leader from its arrow excusing that only where the other free end is not by the name; or it is given under the
+    lever."""
+    for name, source in levers.items():
+        arrows, dots, labels = _lever(source)
+        leaders = _leaders(source)
+        # An arrow's ends that stand off the lever's points: a free end, or both ends of one drawn beside its point.
+        free_ends = {load: [end for end in (tail, tip) if min(math.dist(end, dot) for dot in dots) > 1.0]
+                     for load, (tail, tip, _) in arrows.items()}
+        for words, taken in labels:
+            load = _own_load(words, arrows)
+            if load is None or load == "Fb":
+                continue  # a point's letter or an arm's name; Fb is drawn and named in its own colour
+            tail, tip, _ = arrows[load]
+            mine = min(taken.distance(shapely.Point(end)) for end in (tail, tip))
+            led = any(min(math.dist(points[0], end) for end in (tail, tip)) <= 1.0
+                      and taken.distance(shapely.LineString(points)) < 3.0 for points in leaders)
+            for other, ends in free_ends.items():
+                for end in ends if other not in (load, "Fb") else ():
+                    apart = taken.distance(shapely.Point(end))
+                    assert apart >= mine - NEARER_MM or (led and apart >= BY_THE_NAME_MM), (name, words, other)
+    # Fu6's arrow is named all the same: on the lever, or under it as the arrow at d left unnamed ("d 处的 Fu6").
+    _, _, labels = _lever(levers["forces_friction_5.svg"])
+    assert ("Fu6" in [words for words, _ in labels]
+            or re.search(r"d\s*(?:<[^>]*>\s*)*处的\s*(?:<[^>]*>\s*)*Fu6", levers["forces_friction_5.svg"]))
+
+
 # The convention stated beside Mb, and beside the plans' Mr, in each language (as the textbooks of each put it).
 MB_CONVENTION = {"en": "(Mb counter-clockwise positive)",
                  "ru": "(Mb: положительное направление — против часовой стрелки)", "zh": "（Mb 以逆时针为正）"}

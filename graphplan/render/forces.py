@@ -1371,10 +1371,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # grey name lying on another line reads as naming that one.
     # Placed again without them, another arm's name may take the room they left: until none stands there.
     # Then a load's name that lies on a line even so (the crowd of a triad's lever round d, f and s6, where no spot
-    # within reach of its arrow is off the lines), or that stands nearer another load's free end than its own with no
-    # leader to say whose it is (G3 by Mu4″'s head on the lift's lever), is given under the lever too, by the point its
-    # arrow stands at, one at a time, each point keeping one arrow unnamed at most: the only arrow at s6 without a name
-    # is G6's.
+    # within reach of its arrow is off the lines), or that stands nearer another load's free end than its own, led to
+    # it or not (G3 by Mu4″'s head on the lift's lever, Fu6 by Ff16's on the knee press's), is given under the lever
+    # too, by the point its arrow stands at, one at a time, each point keeping one arrow unnamed at most: the only
+    # arrow at s6 without a name is G6's.
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     shafts = [LineString((item.start, item.end)) for item in arrows if isinstance(item, Arrow)]
     crowded: list[Anchor] = []
@@ -1382,7 +1382,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     loads, points = anchors[:len(load_points)], anchors[len(load_points):]
     unnamed: list[Anchor] = []
     while True:
-        labels = _lettered(loads + points + lettered, figure, reach_farther=False)
+        labels = _lettered(loads + points + lettered, figure, reach_farther=False, unnamed=unnamed)
         if near := [anchor for anchor, placed in zip(lettered, labels.texts[len(loads) + len(points):])
                     if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
                     or _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]:
@@ -1390,8 +1390,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             lettered = [anchor for anchor in lettered if anchor not in near]
             continue
         taken = {load_points[anchor.text] for anchor in unnamed}
-        # Fb's head is left out: drawn and named in its own colour, it is not taken for a load's.
-        heads = [anchor.at for anchor in loads if anchor.text != "Fb"]
+        # Fb's head is left out: drawn and named in its own colour, it is not taken for a load's.  An arrow left unnamed
+        # keeps its head on the drawing, by which another's name reads as its.
+        heads = [anchor.at for anchor in anchors[:len(load_points)] if anchor.text != "Fb"]
         lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != "Fb"
                  and load_points[anchor.text] not in taken
                  and (_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
@@ -1430,14 +1431,16 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
 
 
 def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
-              reach_farther: bool | Sequence[bool] = True) -> Placement:
-    """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot.
+              reach_farther: bool | Sequence[bool] = True, unnamed: Sequence[Anchor] = ()) -> Placement:
+    """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot, and of the spots of the
+    ``unnamed`` (a lever's arrows whose names are given under it).
 
     A label covering another one's anchor (the tail of a moment's arc)
     would leave that one no room beside it, so the anchors count as points.
     """
-    # The discs of shapely's Point.buffer (16 segments a quarter), made at once.
-    centres = np.reshape([anchor.at for anchor in anchors], (-1, 2))   # (0, 2) for a figure with no names
+    # The discs of shapely's Point.buffer (16 segments a quarter), made at once.  An arrow left unnamed keeps its head:
+    # a name placed again over it (G2 on Fu3's head, the lift's friction lever of position 9) reads as its.
+    centres = np.reshape([anchor.at for anchor in [*anchors, *unnamed]], (-1, 2))   # (0, 2) with no names
     spots = list(shapely.buffer(shapely.points(centres), 0.8, quad_segs=16))
     # A leader across an arrow reads as part of it, or as naming its load: the placer costs it as two leaders crossing.
     obstacles, shafts = obstacles_and_shafts(figure)
@@ -1464,22 +1467,30 @@ def _led_from(leader: Polyline, anchor: Anchor) -> bool:
     return math.dist(leader.points[0], anchor.at) <= 1.0
 
 
-# A load's name standing beside its arrow's free end (no leader) this much (mm) nearer another load's free end than
-# its own names that load: the friction lever of the lift's position 3 had G3 by Mu4″'s head, 0.8 mm from it and
-# 2.4 mm from G3's own.
+# A load's name standing this much (mm) nearer another load's free end than its own names that load: the friction
+# lever of the lift's position 3 had G3 by Mu4″'s head, 0.8 mm from it and 2.4 mm from G3's own.
 OTHER_HEAD_MARGIN_MM = 0.5
+# A leader ties a name to its own arrow, but not against another load's free end this near the name (mm): on the knee
+# press's friction lever of position 5 Fu6's name stood 1.9 mm from Ff16's head and 6.9 mm from its own tail, its
+# leader running from its tail to that head, and it read as Ff16's; on its lever of position 6 Mu5′ stood 1.6 mm
+# from G2's head.  Farther off, the leader says whose the name is (a triad's Mu4″, 5.6 mm from Mu5″'s head).
+LED_NAME_HEAD_CLEAR_MM = 2.5
 
 
 def _by_another_head(anchor: Anchor, text: Text, heads: Sequence[tuple[float, float]],
                      leaders: Sequence[Polyline]) -> bool:
-    """Whether the placed name of ``anchor``, standing beside its point without a leader, stands nearer another of
-    the loads' free ends ``heads`` than its own: a reader takes it for that load's name."""
-    if any(_led_from(leader, anchor) for leader in leaders):
-        return False
+    """Whether the placed name of ``anchor`` stands nearer another of the loads' free ends ``heads`` than its own: a
+    reader takes it for that load's name, where it stands by that head even on a leader of its own."""
+    led = any(_led_from(leader, anchor) for leader in leaders)
     box = text_box(text)
     own = box.distance(ShapelyPoint(anchor.at))
-    return any(box.distance(ShapelyPoint(head)) < own - OTHER_HEAD_MARGIN_MM for head in heads
-               if math.dist(head, anchor.at) > 1e-6)
+    for head in heads:
+        if math.dist(head, anchor.at) <= 1e-6:
+            continue
+        apart = box.distance(ShapelyPoint(head))
+        if apart < own - OTHER_HEAD_MARGIN_MM and (not led or apart < LED_NAME_HEAD_CLEAR_MM):
+            return True
+    return False
 
 
 def _negligible(force: complex, forces: Sequence[complex]) -> bool:
