@@ -35,6 +35,9 @@ HEADING_GAP_MM = 8.0
 ESTIMATE_SLACK_MM = 10.0
 # Beyond this many rows, rows are not tried stacked: the ways to stand grow as 4 to the rows.
 MOST_ROWS_TRIED_STACKED = 6
+# A caption set beside its drawing (:func:`_captions_beside`) is broken to the narrowest of these widths (mm) that
+# keeps it no taller than the drawing, so that it widens the row least; the widest where none does.
+CAPTION_BESIDE_WIDTHS_MM = (70.0, 85.0, 100.0, 120.0, 140.0, CAPTION_WIDTH_MM)
 # The cuts of a force sheet into as many parts that the sheets try packing (:meth:`Rows.cuts`), least paper first.
 # Measured, bench/results/sheet_cuts.md: over every fixture and starter in en, ru and zh, on its own sheet, A3 and
 # A4, no force sheet had more than 3 such cuts, and the greedy choice among them (`sheet.fewest_sheets_cuts`) took
@@ -186,8 +189,24 @@ class _Block:
     height: float
 
 
+@dataclass(frozen=True)
+class Part(Arrangement):
+    """A part of a force sheet as arranged, its captions under its drawings, and ``aside``: the same part with the
+    long captions (a group's equations, the lever's) beside their drawings, for a sheet whose room left is too low
+    for it so (None where that is no lower); the packing takes it where only that makes room.
+
+    On an A3 a drawing with its equations under it often misses the 216 mm
+    above the title block by a few lines: the engine's force sheet of
+    position 8 took two A3, its groups and polygons with their equations
+    beside them stand on one.
+    """
+
+    aside: Arrangement | None = None
+
+
 class Rows:
-    """The rows of one force sheet, each laid out once side by side and once stacked."""
+    """The rows of one force sheet, each laid out once side by side, once stacked and once with its long captions
+    beside their drawings."""
 
     def __init__(self, rows: Sequence[Sequence[Drawing]], heading: Heading, origins: Sequence[int] = ()) -> None:
         self.drawings = [tuple(row) for row in rows]
@@ -199,32 +218,38 @@ class Rows:
         self.beside = [_side_by_side(row, heading.size) for row in rows]
         # A row of one drawing (the lever) stands the same either way.
         self.stacked = [_stacked(row, heading.size) if len(row) > 1 else None for row in rows]
+        # Each row with its long captions beside their drawings, where that makes it lower (:class:`Part`).
+        self.aside = [_captions_beside(row, heading.size, beside.height) for row, beside in zip(rows, self.beside,
+                                                                                               strict=True)]
 
     def __len__(self) -> int:
         return len(self.beside)
 
-    def block(self, index: int, stacked: bool) -> _Block:
+    def block(self, index: int, stacked: bool, aside: bool = False) -> _Block:
         block = self.stacked[index] if stacked else None
+        if block is None and aside:
+            block = self.aside[index]
         return block if block is not None else self.beside[index]
 
     def arranged(self, shape: Shape, title: str | None = None, one_line: bool = False,
-                 part: bool = False) -> Arrangement:
+                 part: bool = False, aside: bool = False) -> Arrangement:
         """The rows as ``shape`` has them, under the heading: the sheet's title on one line, or ``title`` (a
         part's) on one line too where ``one_line``, else broken to the drawings' width where it is wider than
         they are; over the line of all the sheet's scales, or where ``part`` (a part as it is drawn, once
-        chosen), of those of the drawings that may stand under it."""
+        chosen), of those of the drawings that may stand under it; the rows side by side with their long
+        captions beside their drawings where ``aside``."""
         layers: list[Layer] = []
         fields: dict[str, tuple[float, float, float, float]] = {}
         left = 0.0
         for column in shape:
             top = 0.0
             for index, stacked in column:
-                block = self.block(index, stacked)
+                block = self.block(index, stacked, aside)
                 layers.extend(moved_layers(block.layers, left, top))
                 fields.update({name: (x0 + left, y0 + top, x1 + left, y1 + top)
                                for name, (x0, y0, x1, y1) in block.fields.items()})
                 top -= block.height + GAP_MM
-            left += max(self.block(index, stacked).width for index, stacked in column) + GAP_MM
+            left += max(self.block(index, stacked, aside).width for index, stacked in column) + GAP_MM
         left, _, right, upper = bounds(layers)
         if title != HEADLESS:
             width = math.inf if title is None or one_line else right - left
@@ -251,7 +276,7 @@ class Rows:
         cut = min(range(1, len(heights)), key=lambda k: max(sum(heights[:k]), sum(heights[k:])))
         return (tuple((k, False) for k in range(cut)), tuple((k, False) for k in range(cut, len(heights))))
 
-    def parts(self, fits: Fits, headless: bool = True) -> list[Arrangement] | None:
+    def parts(self, fits: Fits, headless: bool = True) -> list[Part] | None:
         """The rows in the fewest parts in order, each standing the way that ``fits`` and takes least paper
         (of as many parts, those that cut fewest rows apart); the first part under the heading's title, the
         others under its ``continued``.  Where a row fits in no way, every drawing stands as a row of its own
@@ -261,7 +286,7 @@ class Rows:
         found = self.cuts(fits, headless)
         return found[0] if found else None
 
-    def cuts(self, fits: Fits, headless: bool = True) -> list[list[Arrangement]]:
+    def cuts(self, fits: Fits, headless: bool = True) -> list[list[Part]]:
         """:meth:`parts` first, then the other cuts into as many parts that cut as few rows apart, by the paper
         they take, :data:`MOST_CUTS` in all; none where a drawing does not fit.
 
@@ -318,7 +343,7 @@ class Rows:
         return Rows([[drawing] for row in self.drawings for drawing in row], self.heading,
                     [origin for origin, row in zip(self.origins, self.drawings, strict=True) for _ in row])
 
-    def _parts(self, fits: Fits, headless: bool = False) -> list[list[Arrangement]]:
+    def _parts(self, fits: Fits, headless: bool = False) -> list[list[Part]]:
         """:meth:`cuts` with the rows as they are; where ``headless``, a row that fits under no heading stands
         alone without one (rows that fit only so together stand apart under their headings instead: a part
         without a heading is for a drawing that has no room for one, not a way to save a sheet)."""
@@ -327,7 +352,7 @@ class Rows:
         for title in (heading.title, heading.part_title):
             whole = self._least(0, count, fits, title)
             if whole is not None:
-                return [[self.arranged(whole[1], title, whole[2], part=True)]]
+                return [[self._part(whole[1], title, whole[2])]]
         best_of: dict[tuple[int, int], tuple[float, Shape, bool, str] | None] = {}
 
         def best(start: int, stop: int) -> tuple[float, Shape, bool, str] | None:
@@ -353,12 +378,20 @@ class Rows:
                 return [self._arranged_parts(ways) for _, ways in kept[:MOST_CUTS]]
         return []
 
-    def _arranged_parts(self, ways: Sequence[tuple[Shape, str, bool]]) -> list[Arrangement]:
-        """The parts of one cut, each (shape, title, one_line), arranged under their headings."""
+    def _arranged_parts(self, ways: Sequence[tuple[Shape, str, bool]]) -> list[Part]:
+        """The parts of one cut, each (shape, title, one_line), arranged under their headings, each with the same
+        part with its long captions beside their drawings where that is lower."""
         # After parts with no heading, the first heading is the sheet's, not "continued" (no longer).
         headed = next((k for k, (_, title, _) in enumerate(ways) if title != HEADLESS), None)
-        return [self.arranged(shape, self.heading.part_title if k == headed else title, one_line, part=True)
+        return [self._part(shape, self.heading.part_title if k == headed else title, one_line)
                 for k, (shape, title, one_line) in enumerate(ways)]
+
+    def _part(self, shape: Shape, title: str, one_line: bool) -> Part:
+        """A part as ``shape`` has it under ``title``, and as it stands with its long captions beside its drawings
+        where that is lower."""
+        usual = self.arranged(shape, title, one_line, part=True)
+        aside = self.arranged(shape, title, one_line, part=True, aside=True)
+        return Part(usual.layers, usual.fields, aside if _height(aside) < _height(usual) - 1e-6 else None)
 
     def _title_of(self, start: int) -> str:
         """The heading of the part of several that begins with row ``start``."""
@@ -474,6 +507,71 @@ def _stacked(row: Sequence[Drawing], size: float) -> _Block:
         # A drawing's caption and the next drawing stand as close as a drawing and its caption: one group.
         top -= height + CAPTION_GAP_MM + len(caption) * CAPTION_LINE * size + CAPTION_GAP_MM
     return _Block(layers, fields, width, -top - CAPTION_GAP_MM)
+
+
+def _height(arrangement: Arrangement) -> float:
+    _, y0, _, y1 = bounds(arrangement.layers)
+    return y1 - y0
+
+
+def _captions_beside(row: Sequence[Drawing], size: float, under_height: float) -> _Block | None:
+    """The drawings of ``row`` side by side, each caption that makes its drawing taller than the row needs be
+    (a group's equations, the lever's) set beside the drawing, on its right, the others under theirs; None where
+    that makes the row no lower than ``under_height``, its height with every caption under its drawing
+    (:func:`_side_by_side`).
+
+    A caption beside its drawing is broken to the narrowest width of
+    :data:`CAPTION_BESIDE_WIDTHS_MM` that keeps it no taller than the
+    drawing, and set from the left, level with the drawing's middle; the
+    row is as tall as the tallest drawing or caption beside one, and a
+    caption under its drawing stays there wherever the two are no taller.
+    """
+    extents = [_extent(drawing) for drawing in row]
+    under = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
+             for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    beside = [_caption_beside(drawing, y1 - y0, size) for drawing, (_, y0, _, y1) in zip(row, extents, strict=True)]
+    height = max(max(y1 - y0, _lines_height(caption, size))
+                 for (_, y0, _, y1), caption in zip(extents, beside, strict=True))
+    moved = [y1 - y0 + CAPTION_GAP_MM + _lines_height(caption, size) > height + 1e-9
+             for (_, y0, _, y1), caption in zip(extents, under, strict=True)]
+    if not any(moved) or height >= under_height - 1e-9:
+        return None
+    # The drawings that keep their captions under them stand over one line of captions, as side by side.
+    kept_lines = max((len(caption) for caption, aside in zip(under, moved, strict=True) if not aside), default=0)
+    kept_height = height - (CAPTION_GAP_MM + kept_lines * CAPTION_LINE * size if kept_lines else 0.0)
+    layers: list[Layer] = []
+    fields: dict[str, tuple[float, float, float, float]] = {}
+    cursor = 0.0
+    for drawing, (x0, y0, x1, y1), below, aside, caption in zip(row, extents, under, moved, beside, strict=True):
+        if aside:
+            text_left = cursor + x1 - x0 + CAPTION_GAP_MM
+            width = text_left - cursor + max(text_width(line, size, weight) for line, weight in caption)
+            layers.extend(moved_layers(drawing.layers, cursor - x0, -height / 2 - (y0 + y1) / 2))
+            # The first line's capitals stand a letter under the top of the caption's lines (:func:`_lines_height`).
+            top = -height / 2 + _lines_height(caption, size) / 2 - size
+            layers.append(Layer(f"{drawing.name}-caption", tuple(
+                Text((text_left, top - k * CAPTION_LINE * size), line, size, "start", weight=weight)
+                for k, (line, weight) in enumerate(caption))))
+        else:
+            width = max(x1 - x0, *(text_width(line, size, weight) for line, weight in below))
+            layers.extend(moved_layers(drawing.layers, cursor + (width - (x1 - x0)) / 2 - x0,
+                                       -kept_height / 2 - (y0 + y1) / 2))
+            layers.append(_caption_layer(drawing.name, cursor + width / 2, -kept_height, below, size))
+        fields[drawing.name] = (cursor, -height, cursor + width, 0.0)
+        cursor += width + GAP_MM
+    return _Block(layers, fields, cursor - GAP_MM, height)
+
+
+def _caption_beside(drawing: Drawing, height: float, size: float) -> list[tuple[str, str]]:
+    """``drawing``'s caption broken to the narrowest width that keeps it no taller than ``height`` mm, the
+    drawing's, and to the widest where none does."""
+    ways = [caption_lines(drawing.caption, width, size, drawing.run_on) for width in CAPTION_BESIDE_WIDTHS_MM]
+    return next((lines for lines in ways if _lines_height(lines, size) <= height), ways[-1])
+
+
+def _lines_height(lines: Sequence[tuple[str, str]], size: float) -> float:
+    """The height a caption's lines take, a line of lettering each (as under a drawing, :func:`_side_by_side`)."""
+    return len(lines) * CAPTION_LINE * size
 
 
 def _caption_layer(name: str, middle: float, under: float, caption: Sequence[tuple[str, str]], size: float) -> Layer:

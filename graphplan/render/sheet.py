@@ -461,11 +461,12 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def laid(rows: force_rows.Rows) -> force_rows.Rows:
         return rows.parted(parted) if parted else rows
 
-    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[Arrangement]], heading: force_rows.Heading
-            ) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Heading]:
+    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[force_rows.Part]],
+            heading: force_rows.Heading) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Heading]:
         """Each cut's parts as panels, each going on from the one before, their headings to name the scales of
-        the drawings the packing puts under them (``heading``'s); the lever drawn larger where the sheet holds it
-        so on its part without adding a part."""
+        the drawings the packing puts under them (``heading``'s), each with its long captions beside its drawings
+        as its other way (:class:`force_rows.Part`); the lever drawn larger where the sheet holds it so on its part
+        without adding a part."""
         parts = cuts[0]
         for larger in _larger_levers(enlarged, drawn) if enlarged is not None else ():
             larger_rows = force_layout.rows(larger, groups_cut_free)
@@ -475,16 +476,19 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                 one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
                 break
         names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
-        return drawn, one, [[replace(split(arrangement, name, one.label, _group_of_field),
-                                     continues=names[k - 1] if k else "", heading_scales=heading.scales,
-                                     heading_comma=heading.comma)
-                             for k, (name, arrangement) in enumerate(zip(names, parts, strict=True))]
-                            for parts in cuts], heading
+
+        def panel(k: int, part: force_rows.Part) -> Panel:
+            ways = [replace(split(way, names[k], one.label, _group_of_field), continues=names[k - 1] if k else "",
+                            heading_scales=heading.scales, heading_comma=heading.comma)
+                    for way in (part, part.aside) if way is not None]
+            return replace(ways[0], alternatives=tuple(ways[1:]))
+
+        return drawn, one, [[panel(k, part) for k, part in enumerate(parts)] for parts in cuts], heading
 
     before: dict[str, tuple[float, float]] = {}
     # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
     # gives every part its heading (a part with none says whose it is by its title block alone).
-    headless: tuple[force_layout.ForceSheet, Panel, list[list[Arrangement]], force_rows.Heading] | None = None
+    headless: tuple[force_layout.ForceSheet, Panel, list[list[force_rows.Part]], force_rows.Heading] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn, groups_cut_free)
         one, two = (split(rows.arranged(rows.in_columns(count)), f"{name}-{position.number}",
