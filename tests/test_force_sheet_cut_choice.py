@@ -45,7 +45,8 @@ def force_sheets_packed(name: str, locale: str) -> int:
 
 def cuts_keeping_groups(rows: Rows, fits, pieces: int) -> list[list]:
     """Every cut of ``rows`` into ``pieces`` parts in order that keeps each group with its polygon, each part
-    under its heading as small as it stands (a cut with a part that fits no way left out)."""
+    under its heading as small as it stands, and as it stands with its equations beside its drawings, as the sheets'
+    parts are (a cut with a part that fits no way left out)."""
     found = []
     for cuts in itertools.combinations(range(1, len(rows)), pieces - 1):
         if any(rows.origins[cut - 1] == rows.origins[cut] for cut in cuts):
@@ -56,7 +57,7 @@ def cuts_keeping_groups(rows: Rows, fits, pieces: int) -> list[list]:
             least = rows._least(start, stop, fits, title)
             if least is None:
                 break
-            parts.append(rows.arranged(least[1], title, least[2], part=True))
+            parts.append(rows._part(least[1], title, least[2]))  # with its equations beside, for the packing
         else:
             found.append(parts)
     return found
