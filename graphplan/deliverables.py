@@ -31,6 +31,7 @@ from .render.primitives import Layer, in_language
 # PIECES and FORMATS from here, and `graphplan --help` need not load them to list the pieces.
 if TYPE_CHECKING:
     from .analysis import Analysis
+    from .misreadings import SheetPolygons
     from .scene import Scene
 
 # ``figures`` are the report figures of the force analysis (matplotlib).
@@ -60,6 +61,8 @@ class Drawing:
     # The headings of the diagrams a part of a drawing cut for the note shows, which its caption names: "Figure 6
     # (part 2 of 3)" alone left the reader to find which of the dynamics' diagrams each part holds.
     shows: tuple[str, ...] = ()
+    # A course sheet's force polygons drawn larger than the record, by position number (:func:`larger_polygons`).
+    larger_polygons: tuple[tuple[int, SheetPolygons], ...] = ()
 
 
 def missing(scene: Scene, analysis: Analysis | None, piece: str, sheet_key: str = "drawing.sheet") -> str | None:
@@ -315,11 +318,14 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         layers = list(laid_out.layers) if laid_out else _load_diagram_layers(analysis)
         found.append(Drawing("load_diagrams", layers))
     if panels is not None:
-        from .render.sheet import course_sheets
+        from .render.sheet import course_sheets, larger_polygons
 
         tell("drawing the sheets")
-        for sheet in course_sheets(analysis, panels=panels):
-            found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size))
+        sheets = course_sheets(analysis, panels=panels)
+        larger = larger_polygons(panels, sheets)
+        for sheet in sheets:
+            found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size, larger_polygons=tuple(
+                (number, polygons) for number, polygons in larger.items() if polygons.sheet == sheet.number)))
     if "velocity" in pieces and analysis.velocity_plans:
         tell("drawing the velocity plans of the positions")
         laid_out = panels.named("velocity-plans") if panels else None
@@ -740,12 +746,15 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
 def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
           formats: tuple[str, ...] = ("svg",), warn: Callable[[str], None] | None = None,
-          say: Callable[[str], None] = _silent) -> dict[str, str | bytes]:
+          say: Callable[[str], None] = _silent,
+          checked: Callable[[Analysis], None] | None = None) -> dict[str, str | bytes]:
     """Every file of the run: ``results.json``, the drawings in ``formats``, the tables and the plots.
 
     ``warn`` is told, in a line, of an outcome the files record but a user should not miss (a machine
     that stalls); ``say`` of each stage as it begins, so that a long run's progress line names the piece
-    it is making (a note of 20 000 positions takes a minute), not the first of them."""
+    it is making (a note of 20 000 positions takes a minute), not the first of them; ``checked`` of the
+    analysis as the files tell it, where the course sheets drawn change what it says of the hand readings
+    (:func:`~graphplan.analysis.read_off_sheets`)."""
     from .report.plot_style import PLOT_DPI
     from .report.results import dumps
 
@@ -756,10 +765,20 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     if warn is not None:
         for told in outcome_warnings(scene, pieces, dynamics) + scale_warnings(analysis, pieces):
             warn(told)
-    say("writing the results")
-    found: dict[str, str | bytes] = {"results.json": dumps(document(scene, analysis, pieces, dynamics))}
+    found: dict[str, str | bytes] = {"results.json": ""}  # written first, once the sheets have said what they drew
     lever_scales: dict[str, float] = {}
     made = drawings(scene, analysis, pieces, dynamics, say=say)
+    # Readings measured on a course sheet's polygons, drawn larger than the record, are known for what they are
+    # only once the sheets are packed: the results, the tables and the note tell them so.
+    larger = {number: polygons for drawing in made for number, polygons in drawing.larger_polygons}
+    if analysis is not None and larger:
+        from .analysis import read_off_sheets
+
+        analysis = read_off_sheets(analysis, larger)
+        if checked is not None:
+            checked(analysis)
+    say("writing the results")
+    found["results.json"] = dumps(document(scene, analysis, pieces, dynamics))
     shown_in_parts = {f"{drawing.stem}.svg": drawing.shows for drawing in made if drawing.shows}
     if made:
         say("writing the drawings")

@@ -109,6 +109,47 @@ class Slips:
     # quantity (a velocity, an acceleration, a reaction), the value typed and its length as constructed in mm.  Not
     # in ``misread``.
     values: Mapping[str, tuple[str, float, float]] = field(default_factory=lambda: MappingProxyType({}))
+    # Reactions read off the course sheet, which draws the position's polygons larger than the record where it has
+    # room: not in ``rescaled`` nor ``misread``.
+    on_sheet: OnSheet | None = None
+
+
+@dataclass(frozen=True)
+class SheetPolygons:
+    """A position's force polygons as a course sheet draws them, larger than the record (``forces_N.svg``,
+    results.json's ``polygon_scales``) where the sheet has room: the sheet's number, and by each group's label the μF
+    there of each polygon drawn at another than the record's."""
+
+    sheet: int
+    scales: Mapping[str, float]
+
+
+@dataclass(frozen=True)
+class OnSheet:
+    """Force readings that fit the polygons of the course sheet ``sheet`` rather than the record's they are checked
+    against: by polygon label, (its μF on the sheet, its μF in the record); ``every`` whether they are the readings of
+    every polygon read; ``off`` the largest share by which a reading taken at the sheet's μF is off the
+    construction."""
+
+    sheet: int
+    polygons: Mapping[str, tuple[float, float]]
+    every: bool
+    off: float
+
+    def scales(self, which: int, mark: str = ".") -> str:
+        """The sheet's μF (``which`` 0) or the record's (1): ``4``, or ``II(3,4) 4, I(1,2) 10`` where they differ."""
+        values = {label: scales[which] for label, scales in self.polygons.items()}
+        if len(set(values.values())) == 1:
+            return f"{next(iter(values.values())):g}".replace(".", mark)
+        return ", ".join(f"{label} {value:g}".replace(".", mark) for label, value in values.items())
+
+    def factor(self, mark: str = ".") -> str:
+        """What turns a length on the sheet's polygon into the same on the record's: ``0.8``, or ``0.8 (II(3,4)), 0.5
+        (I(1,2))`` where the polygons differ."""
+        values = {label: sheet / record for label, (sheet, record) in self.polygons.items()}
+        if len({f"{value:.4g}" for value in values.values()}) == 1:
+            return f"{next(iter(values.values())):.4g}".replace(".", mark)
+        return ", ".join(f"{value:.4g} ({label})".replace(".", mark) for label, value in values.items())
 
 
 @dataclass(frozen=True)
@@ -122,11 +163,13 @@ class Segment:
     other: bool = False
 
 
-def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | None:
+def slips(position: VelocityPosition, drawing: Drawing, joint: str,
+          sheet: SheetPolygons | None = None) -> Slips | None:
     """The hand readings of ``position`` far off its constructed plans and polygons, or None where all are near.
 
     ``drawing`` is the scene's (its precision and the keys a rescaled drawing is set by), ``joint`` the driver's
-    point, whose vector on a plan is its pole distance.
+    point, whose vector on a plan is its pole distance; ``sheet`` the position's polygons as the course sheet draws
+    them larger, where the run drew the sheets so.
     """
     precision = drawing.drafting_precision
     constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
@@ -134,6 +177,11 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
     measured = [(row, constructed[row.quantity]) for row in position.errors
                 if row.source == "measured" and row.quantity in constructed and not is_balancing(row.quantity)]
     far = [(row, plan) for row, plan in measured if _far_off(row, plan, precision)]
+    # Polygons measured on the course sheet, drawn larger there: no scale of the scene's is off, the drawing read is.
+    on_sheet = _on_sheet(measured, far, sheet, precision)
+    if on_sheet is not None:
+        measured = [(row, plan) for row, plan in measured if not _read_on_sheet(row, on_sheet)]
+        far = [(row, plan) for row, plan in far if not _read_on_sheet(row, on_sheet)]
     # One rule for every drawing: the plans, then every force polygon together (the scene's one force_scale
     # sets them all, so a student who drew them all at one μF is told that one key), then each polygon alone.
     reactions = [(row, plan) for row, plan in measured if _plan_of(row) == "forces"]
@@ -156,7 +204,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
         if drawn_at is not None:
             rescaled.append(_rescaled(kind, polygon, read, drawn_at, position, drawing, joint))
             far = [(row, plan) for row, plan in far if not any(row is each for each, _ in rows)]
-    if not rescaled and not far:
+    if not rescaled and not far and on_sheet is None:
         return None
     misread: dict[str, list[tuple[ErrorRow, float]]] = {}
     for row, plan in far:
@@ -212,7 +260,56 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str) -> Slips | N
                  MappingProxyType({kind: (other, tuple(_name(reading) for reading in read))
                                    for kind, (other, read) in other_plan.items()}),
                  MappingProxyType(typed_in["metres"]), MappingProxyType(typed_in["centimetres"]),
-                 MappingProxyType(force_scale), MappingProxyType(values))
+                 MappingProxyType(force_scale), MappingProxyType(values), on_sheet)
+
+
+def _read_on_sheet(row: ErrorRow, on_sheet: OnSheet) -> bool:
+    """Whether a measured row is a reading of a polygon found read off the course sheet."""
+    return _plan_of(row) == "forces" and row.polygon in on_sheet.polygons
+
+
+def _on_sheet(measured: list[tuple[ErrorRow, float]], far: list[tuple[ErrorRow, float]],
+              sheet: SheetPolygons | None, precision: float) -> OnSheet | None:
+    """The polygons whose readings fit their μF on the course ``sheet`` (drawn larger there than the record), where
+    one reading of them at least is far off the record's: a student who printed the course sheet measured it.
+
+    Two readings of a polygon or more fit as :func:`_one_scale` has readings fit one scale (each within
+    :data:`FAR_OFF_PERCENT` of it, the scale they agree at within 5 % of the sheet's, as :func:`on_grid` has a
+    small plan's); one alone as a reading at another standard μF is told (within the drafting ``precision`` and 2 %
+    of the reaction's length on the sheet).  None where the run drew no sheet so or no polygon's readings fit it."""
+    if sheet is None:
+        return None
+    by_polygon: dict[str, list[tuple[ErrorRow, float]]] = {}
+    for row, plan in measured:
+        if _plan_of(row) == "forces":
+            by_polygon.setdefault(row.polygon, []).append((row, plan))
+    fitting = {}
+    for label, rows in by_polygon.items():
+        at, record = sheet.scales.get(label), rows[0][0].per_millimetre
+        if at is not None and record and not math.isclose(at, record) and _fit_at(rows, at, record, precision):
+            fitting[label] = (at, record)
+    if not any(row.polygon in fitting for row, _ in far if _plan_of(row) == "forces"):
+        return None
+    off = max((abs(row.plan * fitting[row.polygon][0] / row.per_millimetre - plan) / abs(plan)
+               for row, plan in measured if _plan_of(row) == "forces" and row.polygon in fitting and plan),
+              default=0.0)
+    return OnSheet(sheet.sheet, MappingProxyType(fitting), len(fitting) == len(by_polygon), off)
+
+
+def _fit_at(rows: list[tuple[ErrorRow, float]], at: float, record: float, precision: float) -> bool:
+    """Whether the readings ``rows`` of one polygon, read at its ``record`` μF, fit the polygon drawn at ``at``
+    better than at the record's: see :func:`_on_sheet`."""
+    rows = [(row, plan) for row, plan in rows if plan]
+    if not rows or any(row.plan / plan <= 0 for row, plan in rows):
+        return False
+    if len({row.reading for row, _ in rows}) == 1:
+        row, plan = rows[0]
+        there = abs(plan) / at
+        return abs(there - _hand_millimetres(row)) <= min(precision, 0.02 * there)
+    implied = [record * plan / row.plan for row, plan in rows]
+    drawn_at = statistics.median(implied)
+    return (all(abs(each / at - 1.0) <= FAR_OFF_PERCENT / 100.0 for each in implied)
+            and abs(drawn_at / at - 1.0) <= _ROUND_SHARE and abs(drawn_at / at - 1.0) < abs(drawn_at / record - 1.0))
 
 
 def _name(reading: str) -> str:
@@ -403,7 +500,7 @@ _ROUND_SHARE = 0.05
 
 
 def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[VelocityPosition], drawing: Drawing,
-            joint: str) -> tuple[tuple[int, ...], dict[int, float]]:
+            joint: str, sheets: Mapping[int, SheetPolygons] | None = None) -> tuple[tuple[int, ...], dict[int, float]]:
     """The other positions whose drawings the key of ``rescaled`` sets too: those whose readings of them fit the
     present scale, and (by number) the value of the key those found drawn at another scale ask, where it is not this
     one's.  The key is the scene's, one for every position (every plan sheet's pole or scale, ``force_scale`` for
@@ -417,7 +514,9 @@ def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[Velo
             continue
         if not any(row.source == "measured" and _plan_of(row) == rescaled.kind for row in other.errors):
             continue
-        found = slips(other, drawing, joint)
+        found = slips(other, drawing, joint, _sheet_of(other, sheets or {}))
+        if found is not None and found.on_sheet is not None and rescaled.kind == "forces":
+            continue  # read off the course sheet's polygons: no scale of the key's either
         theirs = [each for each in (found.rescaled if found else ()) if each.key == rescaled.key]
         if any(on_grid(each, other, drawn) is not None for each in theirs):
             continue  # read off its small plan among the velocity plans of every position: no scale of the key's
@@ -480,10 +579,10 @@ def factor_text(rescaled: Rescaled, mark: str = ".") -> str:
 
 
 def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[VelocityPosition, ...],
-                   drawing: Drawing, joint: str) -> str:
+                   drawing: Drawing, joint: str, sheets: Mapping[int, SheetPolygons] | None = None) -> str:
     """Where the key of ``rescaled`` sets other positions whose readings fit it as it is, or ask it another value
     (:func:`sharing`): that said, with how to keep it; else nothing.  Asked only where the warning gives the key."""
-    fitting, asking = sharing(rescaled, position, drawn, drawing, joint)
+    fitting, asking = sharing(rescaled, position, drawn, drawing, joint, sheets)
     if not (fitting or asking):
         return ""
     name = rescaled.key.removeprefix("drawing.")
@@ -496,18 +595,23 @@ def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[
             f"position {position.number} times {factor_text(rescaled)}")
 
 
-def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[PositionWarning, ...]:
-    """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans."""
+def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
+            sheets: Mapping[int, SheetPolygons] | None = None) -> tuple[PositionWarning, ...]:
+    """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans; ``sheets``
+    the polygons the course sheets draw larger than the record, by position number, where the run drew them."""
     drawing = mechanism.scene.drawing
     precision = drawing.drafting_precision
     joint = mechanism.driver.joint
     drawn = tuple(drawn)
+    sheets = sheets or {}
     warnings = []
     for position in drawn:
-        found = slips(position, drawing, joint)
+        found = slips(position, drawing, joint, _sheet_of(position, sheets))
         if found is None:
             continue
         details = []
+        if found.on_sheet is not None:
+            details.append(on_sheet_detail(found.on_sheet, position.number))
         for rescaled in found.rescaled:
             typed = typed_unit(rescaled.ratio)
             if typed is not None:
@@ -522,7 +626,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                 continue
             if rescaled.kind == "forces":
                 caveat = "" if in_units(rescaled.drawn_at) else \
-                    _shared_caveat(rescaled, position, drawn, drawing, joint)
+                    _shared_caveat(rescaled, position, drawn, drawing, joint, sheets)
                 details.append(_polygons_detail(rescaled) + caveat)
                 continue
             symbol, unit = _SCALES[rescaled.kind]
@@ -555,7 +659,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
                            f"{symbol} = {position.plans[kind].scale:.4g} {unit}: a plan drawn at {symbol} = "
                            f"{drawn_at:.4g} {unit}{fit}? give {setting(rescaled)} (taken at it, every reading is "
                            f"within {rescaled.off * 100.0:.1f} % of the plan as constructed)"
-                           f"{_shared_caveat(rescaled, position, drawn, drawing, joint)}")
+                           f"{_shared_caveat(rescaled, position, drawn, drawing, joint, sheets)}")
         for (unit, share, factor), readings in ((_TYPED_UNITS[0], found.metres), (_TYPED_UNITS[1], found.centimetres)):
             if readings:
                 lengths = "; ".join(f"{reading} against {constructed:.4g} mm as constructed"
@@ -598,6 +702,24 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition]) -> tuple[Po
         warnings.append(PositionWarning(position.index, "measured-far-off",
                                         f"measured.{position.number}: " + "; ".join(details)))
     return tuple(warnings)
+
+
+def _sheet_of(position: VelocityPosition, sheets: Mapping[int, SheetPolygons]) -> SheetPolygons | None:
+    """The course sheet's polygons of a position of plans (a position among the velocity plans alone has none)."""
+    return sheets.get(position.number) if hasattr(position, "acceleration") else None
+
+
+def on_sheet_detail(found: OnSheet, number: int) -> str:
+    """The warning's words for force readings that fit the course sheet's polygons of position ``number``, drawn
+    larger there than the record's they are checked against."""
+    what = ("the force polygons" if found.every and len(found.polygons) > 1
+            else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
+    return (f"every reading of {what} fits the polygons of position {number} on the course sheet (sheet_{found.sheet}"
+            f".svg, at μF = {found.scales(0)} N/mm; taken at it, every reading is within {found.off * 100.0:.1f} % "
+            f"of the polygons as constructed), which draws them larger where it has room, not those of its force "
+            f"sheet (forces_{number}.svg, at μF = {found.scales(1)} N/mm), which they are checked against: readings "
+            f"of the course sheet's polygons? measure forces_{number}.svg, or give these readings times "
+            f"{found.factor()}")
 
 
 def off_the_other_plan(named: Mapping[str, tuple[Segment, ...]]) -> bool:
@@ -694,6 +816,7 @@ def value_kind(quantity: str) -> str:
 _VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "Rescaled", "Segment", "Slips",
-           "factor_text", "in_centimetres", "in_metres", "in_units", "misread", "off_the_other_plan", "on_grid",
-           "read_at", "setting", "sharing", "slips", "typed_unit", "value_kind"]
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet", "Rescaled", "Segment",
+           "SheetPolygons", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread",
+           "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "slips", "typed_unit",
+           "value_kind"]

@@ -144,7 +144,10 @@ def _deliver(scene: Scene, analysis: Analysis | None, folder: Path, only: Iterab
         asked = [*(asked if asked is not None else chosen(scene, analysis)), "figures"]
     pieces = chosen(scene, analysis, asked, options.only, sheet_key)
     outcomes: list[str] = []
-    found = files(scene, analysis, pieces, formats, warn=outcomes.append, say=tell)
+    # The analysis as the files tell it: the course sheets drawn may say more of the hand readings.
+    checked: list[Analysis] = []
+    found = files(scene, analysis, pieces, formats, warn=outcomes.append, say=tell, checked=checked.append)
+    analysis = checked[-1] if checked else analysis
     # A sheet asked for that the scene has nothing to draw on (a vibration alone) is said, not dropped.
     if scene.drawing.sheet_given and scene.drawing.sheet != "none" and "sheets" not in pieces \
             and (reason := missing(scene, analysis, "sheets")) is not None:

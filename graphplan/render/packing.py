@@ -99,6 +99,9 @@ class Panel:
     # packed it names those of the drawings that do (:func:`_headings_named`).  None given: the heading as drawn.
     heading_scales: tuple[tuple[str, str], ...] = ()
     heading_comma: str = ", "  # what sets those scales apart (:attr:`force_rows.Heading.comma`)
+    # A force sheet drawn larger for a course sheet with room (:func:`sheet._larger_where_room`): the μF of each of its
+    # polygons drawn at another than the record's, by its group's label, for the check of readings measured on it.
+    polygon_scales: tuple[tuple[str, float], ...] = ()
     # The drawing as it goes on the sheet, where ``layers`` leaves out labels that only room was kept for: the
     # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
     # diagrams, measured by its unlettered layers).  None: ``layers`` as they are.

@@ -36,6 +36,7 @@ from ..errors import SceneError
 from ..load_diagrams import LoadDiagram
 from ..locale import strings
 from ..memo import OwnedMemo
+from ..misreadings import SheetPolygons
 from ..scales import finer_standard_scale, format_scale, next_standard_scale, standard_scale
 from . import force_rows
 from . import forces as force_layout
@@ -560,7 +561,10 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         if not (fits(width(way), height(way)) or fits(width(other), height(other))):
             return None
         panel = replace(way, alternatives=(other,) if other.extent != way.extent else ())
-        return _finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0]
+        record = drawn.forces.group_scales
+        return replace(_finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0],
+                       polygon_scales=tuple((label, scale) for label, scale in bigger.forces.group_scales.items()
+                                            if scale != record.get(label)))
 
     return whole, ways, larger
 
@@ -1145,6 +1149,21 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
              ("sheet_dynamics", panels.dynamics, None),  # no μl: the dynamics draws no linkage
              ("sheet_balancing", panels.balancing, None))
     return _numbered_set(kinds, chosen, scene.locale, details)
+
+
+def larger_polygons(panels: CoursePanels, sheets: Sequence[Sheet]) -> dict[int, SheetPolygons]:
+    """By position number, the force polygons the course ``sheets`` draw larger than the record (the sheet each
+    stands on, their μF there), for the check of readings measured on them
+    (:func:`~graphplan.analysis.read_off_sheets`): the polygons without friction, which the readings are checked
+    against."""
+    drawn = {panel.name: panel for panel in panels.forces if panel.polygon_scales}
+    found = {}
+    for sheet in sheets:
+        for name in sheet.panels:
+            number = name.removeprefix("forces-")
+            if name in drawn and number.isdigit():
+                found[int(number)] = SheetPolygons(sheet.number, dict(drawn[name].polygon_scales))
+    return found
 
 
 def machine_sheets(dynamics: Sequence[Panel], balancing: Sequence[Panel], sheet: str, locale: str,

@@ -21,6 +21,7 @@ from ..locale import strings
 from ..misreadings import (
     FAR_OFF_PERCENT,
     FAR_OFF_PRECISIONS,
+    OnSheet,
     Rescaled,
     factor_text,
     in_units,
@@ -98,13 +99,16 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     """The hand readings of a position far off its construction (:mod:`graphplan.misreadings`), said under its
     error table in the scene's language: a plan drawn at another scale, or each misread length.  ``in_note``:
     for the explanatory note's reader, who knows the sheets by their captions, not by the files they are in."""
-    found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint)
+    found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint,
+                  analysis.sheet_polygons.get(plan.number) if hasattr(plan, "acceleration") else None)
     nearer = _nearer_with_friction(analysis, plan, mark, in_note)
     if found is None:
         return nearer
     text = strings(analysis.scene.locale)
     lines = nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
+    if found.on_sheet is not None:
+        lines.append(_on_sheet_line(found.on_sheet, plan.number, text, mark, in_note))
     for rescaled in found.rescaled:
         typed = typed_unit(rescaled.ratio)
         if typed is not None:
@@ -193,7 +197,8 @@ def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[Velo
     """Where the key of ``rescaled`` sets other positions whose readings fit it as it is, or ask it another value
     (:func:`~graphplan.misreadings.sharing`): that said, with how to keep it; else nothing.  Asked only where the
     line gives the key."""
-    fitting, asking = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint)
+    fitting, asking = sharing(rescaled, plan, drawn, analysis.scene.drawing, analysis.mechanism.driver.joint,
+                              analysis.sheet_polygons)
     shared = fitting or tuple(asking)
     if not shared:
         return ""
@@ -203,6 +208,19 @@ def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[Velo
         values=", ".join(f"{key} = {value:g}".replace(".", mark) for value in asking.values()),
         positions=text["errors_shared_positions" if len(shared) > 1 else "errors_shared_position"].format(
             numbers=", ".join(map(str, shared))))
+
+
+def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str, in_note: bool) -> str:
+    """Force readings that fit the course sheet's polygons, drawn larger there than the record's, in the locale's
+    words; ``in_note`` names the drawings by what they are, not by their files."""
+    labels = ", ".join(found.polygons)
+    polygons = (text["errors_polygons"] if found.every and len(found.polygons) > 1
+                else text["errors_polygons_named" if len(found.polygons) > 1 else "errors_polygon"].format(
+                    label=labels, labels=labels))
+    return text["note_on_sheet" if in_note else "errors_on_sheet"].format(
+        polygons=polygons, number=number, sheet=found.sheet, drawn=found.scales(0, mark),
+        record=found.scales(1, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), factor=found.factor(mark),
+        sheet_file=f"sheet_{found.sheet}.svg", forces_file=f"forces_{number}.svg")
 
 
 def _written(reading: str, text: dict[str, str], mark: str) -> str:
