@@ -244,6 +244,9 @@ def read_off_sheets(analysis: Analysis, sheets: Mapping[int, SheetPolygons]) -> 
     # The polygons read off a sheet are found only among readings far off the record: the same positions are told,
     # in the same order.
     warnings = tuple(next(told) if warning.code == "measured-far-off" else warning for warning in analysis.warnings)
+    # Readings that fit no course sheet are told as before: the analysis kept, with what the drawings remember of it.
+    if warnings == analysis.warnings:
+        return analysis
     return replace(analysis, warnings=warnings, sheet_polygons=sheets)
 
 
