@@ -24,7 +24,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, BinaryIO
 
 from .choices import LOCALES, OUTPUT_PIECES, SHEETS
-from .errors import SceneError
+from .errors import SceneError, as_written
 from .groups import DRIVERS, GROUPS, Driver, Group, Guide
 from .groups.base import read_guide
 from .lookalikes import described, difference, full_width, lookalike_hint
@@ -40,6 +40,7 @@ from .reader import (
     required_purpose,
 )
 from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
+from .units import HEAVIEST_GRAVITY, gravity_unit
 
 # The stages a scene's verbs run import the scene.  The rotor's and the vibration's readers are imported where a
 # scene has their tables: a linkage's cold run never needs them, and they cost it 30 ms.
@@ -723,6 +724,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     title = scene.string("title", stem)
     locale = scene.choice("locale", LOCALES, "en")
     gravity = scene.number("gravity", 9.81, non_negative=True)
+    _refuse_heavy_gravity(gravity, scene.data.get("gravity"))
     scene.done()
     project = _read_project(top.table("project", None))
 
@@ -1121,6 +1123,18 @@ def _position_numbers(table: Table, key: str, number_from: int, count: int, once
                              number)
         numbers.append(number)
     return numbers
+
+
+def _refuse_heavy_gravity(gravity: float, typed: object) -> None:
+    """Refuse a g no planet has: Earth's in another unit (32.2 ft/s², 9810 mm/s²) would make every weight, and
+    every reaction and balancing load with it, that many times too large, and the run would say nothing."""
+    if not gravity > HEAVIEST_GRAVITY:
+        return
+    unit = gravity_unit(gravity)
+    hint = (f"; {as_written(typed)} is Earth's g in {unit}: the scene's is in m/s², write gravity = 9.81" if unit
+            else "; Earth's is 9.81, 0 switches weight off")
+    raise SceneError("scene.gravity", f"must be at most {HEAVIEST_GRAVITY:g} m/s², more than any planet's (Jupiter's "
+                     "is 24.8)", typed, hint=hint)
 
 
 def _read_project(table: Table | None) -> Project:

@@ -10,6 +10,19 @@ import math
 RPM = math.pi / 30.0
 # Standard gravity (m/s²), by which a weight in N is told as the mass in kg it stands for.
 STANDARD_GRAVITY = 9.80665
+#: No planet's surface pulls harder than Jupiter's 24.8 m/s²; above this the scene's g is Earth's in other units: in
+#: ft/s² (32.2), cm/s² (981), mm/s² (9810). Every weight, and every reaction and balancing load with it, would follow.
+HEAVIEST_GRAVITY = 30.0
+# The other units g is written in, each with its factor to m/s², for the refusal to say which one a value is in.
+GRAVITY_UNITS = (("ft/s²", 0.3048), ("cm/s²", 0.01), ("mm/s²", 0.001))
+
+
+def gravity_unit(value: float) -> str | None:
+    """The unit of :data:`GRAVITY_UNITS` in which ``value`` is Earth's g, within 2 %; None where it is in none."""
+    for unit, factor in GRAVITY_UNITS:
+        if abs(value * factor / STANDARD_GRAVITY - 1.0) < 0.02:
+            return unit
+    return None
 #: Steel's density (kg/m³): a machine's parts are no heavier than solid steel of their size, so a mass beyond that
 #: is one typed in grams (a link's, a crank's, a rotor's masses).
 STEEL_DENSITY = 7850.0

@@ -304,6 +304,15 @@ CASES: list[Case] = [
     Case("scene-gravity-negative", {"scene.gravity": -9.81}, "scene.gravity", "must be >= 0 (got -9.81)"),
     Case("scene-gravity-nan", {"scene.gravity": NAN}, "scene.gravity", "must be a finite number (got nan)"),
     Case("scene-gravity-inf", {"scene.gravity": INF}, "scene.gravity", "must be a finite number (got inf)"),
+    Case("scene-gravity-in-mm", {"scene.gravity": 9810.0}, "scene.gravity",
+         "must be at most 30 m/s², more than any planet's (Jupiter's is 24.8) (got 9810.0); 9810.0 is Earth's g in "
+         "mm/s²: the scene's is in m/s², write gravity = 9.81"),
+    Case("scene-gravity-in-feet", {"scene.gravity": 32.174}, "scene.gravity",
+         "must be at most 30 m/s², more than any planet's (Jupiter's is 24.8) (got 32.174); 32.174 is Earth's g in "
+         "ft/s²: the scene's is in m/s², write gravity = 9.81"),
+    Case("scene-gravity-no-planets", {"scene.gravity": 50.0}, "scene.gravity",
+         "must be at most 30 m/s², more than any planet's (Jupiter's is 24.8) (got 50.0); Earth's is 9.81, 0 "
+         "switches weight off"),
     Case("scene-unknown-key", {"scene.titel": "x"}, "scene.titel", "unknown key; did you mean 'title'?"),
 
     # -- [frame]
@@ -1595,3 +1604,24 @@ def test_a_misspelt_table_or_key_of_a_scene_without_a_linkage_is_named_not_blame
     with pytest.raises(SceneError) as caught:
         scene_module.loads(text)
     assert str(caught.value) == f"{where}: unknown key; did you mean {meant!r}?"
+
+
+@pytest.mark.parametrize(("gravity", "unit"), [(9810, "mm/s²"), (981, "cm/s²"), (32.2, "ft/s²")])
+def test_gravity_in_another_unit_is_refused_before_anything_is_written(tmp_path, capsys, gravity, unit) -> None:
+    """A g typed in mm/s², cm/s² or ft/s² ran without a word, every weight and with it every reaction and the
+    balancing moment 1000, 100 or 3.3 times off; Earth's 9.81 m/s² is that many of each: 9.81 / 0.001 = 9810,
+    9.81 / 0.01 = 981, 9.81 / 0.3048 = 32.2."""
+    assert abs(gravity * {"mm/s²": 0.001, "cm/s²": 0.01, "ft/s²": 0.3048}[unit] - 9.81) < 0.02 * 9.81
+    scene = tmp_path / "heavy.toml"
+    scene.write_text(to_toml(variant(RATCHET, {"scene.gravity": gravity})), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert line.startswith("graphplan: error: scene.gravity: must be at most 30 m/s²"), line
+    assert line.endswith(f"is Earth's g in {unit}: the scene's is in m/s², write gravity = 9.81"), line
+    assert list(tmp_path.iterdir()) == [scene]
+
+
+def test_the_heaviest_planet_gravity_still_runs() -> None:
+    """Jupiter's 24.8 m/s² is a g a scene may give: the refusal starts above it."""
+    loaded = scene_module.loads(to_toml(variant(FOUR_BAR, {"scene": {"gravity": 24.8}})))
+    assert loaded.gravity == 24.8
