@@ -42,6 +42,7 @@ from .dynamics import CONSTANT_CHOICES, DEFAULT_COUNT, EquivalentModel, diagram_
 from .errors import SceneError
 from .kinematics import read_only
 from .reader import Table, check_xy
+from .rounding import RELATIVE_NOISE
 from .units import MOST_MOTOR_SLIP, RPM, motor_speed_in_rpm, nearest_synchronous_rpm, percentage_question, rpm_question
 
 # A cycle whose work is left over by more than this share of the work done is not steady: the floor under the
@@ -316,6 +317,14 @@ def flywheel_for(model: EquivalentModel, delta: float, omega_mean: float | None 
         raise ValueError(f"the driving and resisting work differ by {model.imbalance:.6g} J over the cycle, so the "
                          f"motion is not periodic; {_balancing_advice(model)}")
     delta_w_max = float(np.max(energy) - np.min(energy))
+    if delta_w_max <= RELATIVE_NOISE * work and not np.any(inertia > 0):
+        # No flywheel is needed where ΔT never changes, but with no Je of its own the machine's kinetic energy is 0 at
+        # every speed: its start T0 and its speed are 0/0, and the rounding left in ΔT (10⁻¹⁶ J) sized a flywheel of
+        # 10⁻¹⁵ kg·m² that "held" the speed within δ, or the root search met NaN where ΔT is 0 exactly.
+        raise ValueError("the driving and resisting moments balance at every angle (ΔT = 0 over the cycle) and the "
+                         "machine has no moment of inertia of its own (Je = 0): nothing fixes its kinetic energy, so "
+                         "neither its speed nor a flywheel can be found; give its inertia (dynamics.inertia without "
+                         "a linkage, the links' mass and inertia with one), or loads that vary over the cycle")
     approximate = flywheel_inertia(delta_w_max, omega_mean, delta, model.mean_inertia)
 
     peak = float(np.max(inertia))

@@ -1625,3 +1625,28 @@ def test_the_heaviest_planet_gravity_still_runs() -> None:
     """Jupiter's 24.8 m/s² is a g a scene may give: the refusal starts above it."""
     loaded = scene_module.loads(to_toml(variant(FOUR_BAR, {"scene": {"gravity": 24.8}})))
     assert loaded.gravity == 24.8
+
+
+@pytest.mark.parametrize("resisting", ["resisting_torque = [[0, 10.0], [360, 10.0]]",
+                                       "resisting_power = [[0, 1000.0], [360, 1000.0]]"], ids=["torque", "power"])
+def test_a_machine_of_no_inertia_whose_moments_balance_everywhere_is_refused_not_given_a_flywheel(
+        tmp_path, capsys, resisting) -> None:
+    """A constant resistance against the constant driving moment that balances it leaves ΔT = 0 at every angle; with
+    the machine's Je = 0 its kinetic energy is 0 at any speed.  The torque ended in scipy's "The function value at
+    x=-0.0 is NaN", under dynamics alone; the power (1000 W at 100 rpm: 95.5 N·m, whose work leaves ΔT ~ 1e-15 J of
+    rounding) was given a flywheel of 1e-15 kg·m² and a speed that swung by δ = 0.05 on that rounding alone."""
+    scene = tmp_path / "even.toml"
+    scene.write_text(f'[scene]\ntitle = "even"\n[dynamics]\nrpm = 100\ndelta = 0.05\n{resisting}\n'
+                     'driving = "constant"\ninertia = 0.0\n', encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    line = capsys.readouterr().err.strip().splitlines()[-1]
+    assert line.startswith("graphplan: error: dynamics: the driving and resisting moments balance at every angle"), line
+    assert "(dynamics.inertia without a linkage" in line and "NaN" not in line
+    assert list(tmp_path.iterdir()) == [scene]
+    # Any inertia of its own fixes its speed: no flywheel is needed, and the speed is the mean one throughout.
+    scene.write_text(scene.read_text(encoding="utf-8").replace("inertia = 0.0", "inertia = 0.5"), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    dynamics = json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["dynamics"]
+    assert dynamics["flywheel_inertia"] == pytest.approx(0.0, abs=1e-12)
+    assert dynamics["omega_max"] == pytest.approx(100 * math.pi / 30, rel=1e-9)
+    assert dynamics["omega_min"] == pytest.approx(100 * math.pi / 30, rel=1e-9)
