@@ -393,7 +393,9 @@ class Table:
         """Raise at ``key``, a key of the table ``home`` (nested in this one, or this one's owner), saying how to
         write it there."""
         value = f"{key} = {as_written(self.data[key])}"
-        if self.path.startswith(home + "."):
+        if "." not in home and "." not in self.path:  # two tables of the scene's own, side by side
+            how = f"write it under [{home}]: {value}"
+        elif self.path.startswith(home + "."):
             how = f"write it under [{home}], not inside {self.path.removeprefix(home + '.')} = {{ … }}: {value}"
         else:  # nested in this table, or beside it in their owner
             inside = home.removeprefix(self.path + ".") if home.startswith(self.path + ".") else home.rpartition(".")[2]

@@ -1650,3 +1650,25 @@ def test_a_machine_of_no_inertia_whose_moments_balance_everywhere_is_refused_not
     assert dynamics["flywheel_inertia"] == pytest.approx(0.0, abs=1e-12)
     assert dynamics["omega_max"] == pytest.approx(100 * math.pi / 30, rel=1e-9)
     assert dynamics["omega_min"] == pytest.approx(100 * math.pi / 30, rel=1e-9)
+
+
+@pytest.mark.parametrize(("changes", "where", "home", "value"), [
+    ({"drawing.sheet": DELETE, "scene.sheet": "A1"}, "scene.sheet", "drawing", "'A1'"),
+    ({"drawing.velocity_pole": DELETE, "positions.velocity_pole": 150.0}, "positions.velocity_pole", "drawing",
+     "150.0"),
+    ({"scene.gravity": DELETE, "drawing.gravity": 9.81}, "drawing.gravity", "scene", "9.81"),
+    ({"output.include": DELETE, "positions.include": ["note"]}, "positions.include", "output", '["note"]'),
+    ({"positions.plans": DELETE, "frame.plans": [5, 11]}, "frame.plans", "positions", "[5, 11]"),
+], ids=["sheet-in-scene", "pole-in-positions", "gravity-in-drawing", "include-in-positions", "plans-in-frame"])
+def test_a_key_written_in_another_of_the_scenes_tables_is_told_where_it_goes(
+        tmp_path, capsys, changes, where, home, value) -> None:
+    """A key moved into the wrong table was told "unknown key", or sent astray by the nearest key of that table:
+    sheet under [scene] "did you mean 'title'?", velocity_pole under [positions] "did you mean 'velocity_plans'?"."""
+    table, _, key = where.partition(".")
+    scene = tmp_path / "moved.toml"
+    scene.write_text(to_toml(variant(RATCHET, changes)), encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert line == (f"graphplan: error: {where}: unknown key; {key} is a key of {home}, not of {table}: write it "
+                    f"under [{home}]: {key} = {value}")
+    assert list(tmp_path.iterdir()) == [scene]
