@@ -23,6 +23,8 @@ def gravity_unit(value: float) -> str | None:
         if abs(value * factor / STANDARD_GRAVITY - 1.0) < 0.02:
             return unit
     return None
+
+
 #: Steel's density (kg/m³): a machine's parts are no heavier than solid steel of their size, so a mass beyond that
 #: is one typed in grams (a link's, a crank's, a rotor's masses).
 STEEL_DENSITY = 7850.0
