@@ -209,6 +209,10 @@ REACH_SHARES = (1.1, 1.8, 2.5, 3.2)
 # ring by ring, as far as the farthest ring tried for a label that covers another (``place_labels``' reach_farther); a
 # label naming a line led from any point of it beside which it may stand (a load's name from its arrow's shaft).
 FARTHER_SHARES = (4.0, 4.8, 5.7, 6.6, 8.6, 11.0)
+# Led from another point of its line, a label is tried on the short leaders first, as from its own point: the slider
+# driven mechanism's sliver of a polygon at position 3 had R43 clear on a 2 mm leader from a stretch of its side
+# farther along, and, never tried there, led it across R14's and R14τ's arrows.
+FROM_LINE_SHARES = (*REACH_SHARES, *FARTHER_SHARES)
 SLIDE_STEP = 1.5
 SLIDE = 9.0
 SLIDE_COST = 1.5
@@ -833,7 +837,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # elsewhere, reach farther out on their leaders, where the caller gives them no other way.
         for index in order:
             if farther[index] and where[index][2] > 0 and paid[index] < OVERLAP:
-                reach_out(index, shares=FARTHER_SHARES, from_line=True)
+                reach_out(index, shares=FROM_LINE_SHARES, from_line=True)
         # Those whose names lie on a line even so, every clear spot within reach led across a load's arrow, take the
         # cheapest of those: the leader still leads to the name, which on the line is misread.
         for index in order:
