@@ -194,6 +194,8 @@ SPOTS_LOOKED_AT = 12
 MOVES_TRIED = 2
 # A leader starts this far from its point (mm), clear of the point's dot.
 LEADER_CLEARANCE = 0.9
+# And stops this far short of its label's box (mm), a gap before the letters.
+LEADER_GAP = 0.3
 # What standing within an anchor's ``keep_off`` costs: as much as covering three lines, so that a label steps out of
 # it onto a line sooner (to reach out from there, below) and stands there only where that is crowded, not set well
 # apart among the labels round it (a lever's arms, so set, left the loads' names round the pole no room).
@@ -311,6 +313,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
     crossed_weights[shafts_met] = SHAFT_CROSSED
     pieces, owners = _pieces(fixed)
     tree = STRtree(pieces) if fixed else None
+    shaft_tree = STRtree(fixed_shafts) if len(fixed_shafts) else None
     at = np.array([anchor.at for anchor in anchors], dtype=float).reshape(-1, 2)
     # Each placed label's box (kept apart by a little more than touching) and leader, by its anchor's index.
     placed_boxes: dict[int, BaseGeometry] = {}
@@ -332,6 +335,14 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         hit, piece = tree.query(shapes, predicate="intersects")
         table[hit, owners[piece]] = True
         return table
+
+    def across_gap(table: np.ndarray, lines: np.ndarray, leaders_from: int) -> None:
+        """Mark in ``table`` (:func:`met`'s, the leaders ``lines`` from row ``leaders_from``) the arrows' shafts each
+        leader meets run on to its box (:func:`_to_the_box`), as well as those it meets as drawn."""
+        if shaft_tree is None or not len(lines):
+            return
+        hit, shaft = shaft_tree.query(_to_the_box(lines), predicate="intersects")
+        table[leaders_from + hit, shafts_met[shaft]] = True
 
     def covered(table: np.ndarray, leaders_from: int) -> np.ndarray:
         """What the drawn shapes each shape of ``table`` (:func:`met`'s) meets weigh together: those before
@@ -421,6 +432,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         lines = _leaders(anchor.at, candidates[led])
         # What the boxes and the leaders cover, in one query of the tree.
         table = met(np.concatenate((shapes, lines)))
+        across_gap(table, lines, len(shapes))
         covers = covered(table, len(shapes))
         cost = COVER * covers[:len(shapes)] + RING * ring + order * 0.01
         # The leader says which point the label names: standing near a neighbour misleads less.
@@ -532,7 +544,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         # what its box covers alone.
         across = 0.0
         if index in leader_lines and len(shafts_met):
-            across = float(shapely.intersects(leader_lines[index], fixed_shafts).sum())
+            across = float(shapely.intersects(_to_the_box(np.array([leader_lines[index]]))[0], fixed_shafts).sum())
         where[index] = (kind, best, float(spot.covering[best]), float(spot.covering[best]) - across)
 
     def place(index: int) -> None:
@@ -689,6 +701,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
                                 for k, point in enumerate(starts)])
         shapes = shapely.box(*candidates.T)
         table = met(np.concatenate((shapes, lines)))
+        across_gap(table, lines, len(shapes))
         covers = covered(table, len(shapes))
         usable = covers[:len(shapes)] == 0
         # Which spots' leaders cross a load's arrow, reading as part of it or as naming its load: not clear either
@@ -969,7 +982,17 @@ def _leaders(at: tuple[float, float], boxes: np.ndarray) -> np.ndarray:
     length = np.hypot(*along.T)[:, None]
     unit = np.divide(along, length, out=np.zeros_like(along), where=length > 0)
     start = np.asarray(at) + unit * LEADER_CLEARANCE
-    return shapely.linestrings(np.stack((start, near - unit * 0.3), axis=1))
+    return shapely.linestrings(np.stack((start, near - unit * LEADER_GAP), axis=1))
+
+
+def _to_the_box(leaders: np.ndarray) -> np.ndarray:
+    """``leaders`` (:func:`_leaders`' lines) run on to their labels' boxes over the gap they stop short by: an arrow
+    passing through that gap, between a leader's end and its letters, reads as crossed by the leader."""
+    ends = shapely.get_coordinates(leaders).reshape(-1, 2, 2)
+    along = ends[:, 1] - ends[:, 0]
+    length = np.hypot(*along.T)[:, None]
+    unit = np.divide(along, length, out=np.zeros_like(along), where=length > 0)
+    return shapely.linestrings(np.stack((ends[:, 0], ends[:, 1] + unit * LEADER_GAP), axis=1))
 
 
 def _pieces(shapes: Sequence[BaseGeometry]) -> tuple[np.ndarray, np.ndarray]:
