@@ -22,7 +22,6 @@ from __future__ import annotations
 import argparse
 import json
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -33,7 +32,7 @@ ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
 
 from cold_run import write_results
-from sheet_cuts import STARTERS, scene_of
+from sheet_cuts import STARTERS, in_fresh_interpreter, refused, scene_of
 
 WAYS = ("as it is", "no search", "largest first")
 
@@ -86,13 +85,7 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
 
 def measured(name: str, locale: str, sheet: str | None) -> dict:
     """:func:`one` in a fresh interpreter, so that no scene's layouts or caches reach another's."""
-    command = [sys.executable, str(Path(__file__).resolve()), "--one", name, locale]
-    if sheet:
-        command += ["--sheet", sheet]
-    done = subprocess.run(command, capture_output=True, text=True, check=False, cwd=ROOT)
-    if done.returncode != 0:
-        return {"scene": name, "locale": locale, "sheet": sheet or "scene's", "error": done.stderr.strip()[-400:]}
-    return json.loads(done.stdout.splitlines()[-1])
+    return in_fresh_interpreter(Path(__file__), name, locale, sheet)
 
 
 def table(rows: list[dict]) -> str:
@@ -101,9 +94,7 @@ def table(rows: list[dict]) -> str:
              "|---|---|---|---|---|---|---|"]
     for row in rows:
         if "error" in row:
-            said = row["error"].splitlines()[-1] if row["error"] else "?"
-            lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | refused: "
-                         f"{said.split(': ', 2)[-1].split(' (')[0][:100]} | | | |")
+            lines.append(refused(row, 3))
             continue
         runs = row["runs"]
         lines.append(

@@ -135,7 +135,12 @@ def one(name: str, locale: str, sheet: str | None, budget: float) -> dict:
 
 def measured(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     """:func:`one` in a fresh interpreter, so that no scene's layouts or caches reach another's."""
-    command = [sys.executable, str(Path(__file__).resolve()), "--one", name, locale, "--budget", str(budget)]
+    return in_fresh_interpreter(Path(__file__), name, locale, sheet, "--budget", str(budget))
+
+
+def in_fresh_interpreter(script: Path, name: str, locale: str, sheet: str | None, *options: str) -> dict:
+    """The row ``script --one name locale`` prints, run in a fresh interpreter, or the error it ends with."""
+    command = [sys.executable, str(script.resolve()), "--one", name, locale, *options]
     if sheet:
         command += ["--sheet", sheet]
     done = subprocess.run(command, capture_output=True, text=True, check=False, cwd=ROOT)
@@ -144,15 +149,20 @@ def measured(name: str, locale: str, sheet: str | None, budget: float) -> dict:
     return json.loads(done.stdout.splitlines()[-1])
 
 
+def refused(row: dict, columns: int) -> str:
+    """The table's line of a run refused: the error's last words, then ``columns`` empty cells."""
+    said = row["error"].splitlines()[-1] if row["error"] else "?"
+    return (f"| {row['scene']} | {row['locale']} | {row['sheet']} | refused: "
+            f"{said.split(': ', 2)[-1].split(' (')[0][:100]} |" + " |" * columns)
+
+
 def table(rows: list[dict]) -> str:
     lines = [("| scene | locale | sheet | force sheets (ways each) | greedy/4 | greedy/8 | greedy/all | exhaustive "
               "(tried of all) | run s (4 / 8 / all cuts) | choice's time of the run: greedy/4, /8, /all, exhaustive |"),
              "|---|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
         if "error" in row:
-            said = row["error"].splitlines()[-1] if row["error"] else "?"
-            lines.append(f"| {row['scene']} | {row['locale']} | {row['sheet']} | refused: "
-                         f"{said.split(': ', 2)[-1].split(' (')[0][:100]} | | | | | | |")
+            lines.append(refused(row, 6))
             continue
         runs = row["run_cpu_s"]
         timing = " / ".join(f"{runs[key]:.2f}" for key in ("4", str(MORE_CUTS), "all"))
