@@ -587,8 +587,8 @@ def _finished(analysis: Analysis, drawn: force_layout.ForceSheet, one: Panel, cu
 # The standard steps finer the groups cut free (μl) and their polygons (μF) a sheet with room for them may draw them
 # at, largest first: a student's A1 draws them about twice the mechanism's μl (0.004 → 0.002 m/mm, 5 → 2 N/mm).
 LARGER_FORCE_STEPS = ((3, 3), (3, 2), (2, 3), (2, 2), (2, 1), (1, 2), (1, 1), (1, 0), (0, 1))
-# The way tried first: where it packs, only the larger ways are tried, else only the smaller.  Each way is a force
-# sheet laid out afresh, its labels placed; trying all nine, largest first, made a run's sheets a third slower.
+# The way tried first (:func:`_first_fitting`).  Each way is a force sheet laid out afresh, its labels placed: trying
+# all nine, largest first, made a run's sheets a third slower.
 PROBE_STEPS = (1, 1)
 
 
@@ -963,11 +963,11 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
                        larger: Sequence[Callable[[tuple[int, int]], Panel | None]],
                        sheet: str, form: str) -> list[Panel]:
     """``parts``, each force sheet that stands whole among them drawn larger (its groups cut free at a finer μl,
-    its polygons at a finer μF) where the sheets hold it so: of its ``larger`` ways, searched from
-    :data:`PROBE_STEPS` (the larger ones, largest first, where that packs, else the smaller), the first that packs
-    with the drawings ``after`` them on no more sheets, keeps the drawings in order, and puts no two μl on one
-    sheet, whose title block gives one scale.  A force sheet with room to spare on its A1 drew its groups and polygons a third of the way
-    across it, as small as the mechanism's own μl and the polygons' 150 mm fields make them."""
+    its polygons at a finer μF) where the sheets hold it so: of its ``larger`` ways, the first of
+    :data:`LARGER_FORCE_STEPS` (:func:`_first_fitting`) that packs with the drawings ``after`` them on no more
+    sheets, keeps the drawings in order, and puts no two μl on one sheet, whose title block gives one scale.  A
+    force sheet with room to spare on its A1 drew its groups and polygons a third of the way across it, as small as
+    the mechanism's own μl and the polygons' 150 mm fields make them."""
     chosen = list(parts)
 
     def packed(tried: Sequence[Panel]) -> list[Page] | None:
@@ -980,9 +980,6 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
     if pages is None or not LARGER_FORCE_STEPS:
         return chosen
     count = len(pages)
-    probe = PROBE_STEPS if PROBE_STEPS in LARGER_FORCE_STEPS else LARGER_FORCE_STEPS[-1]
-    above = LARGER_FORCE_STEPS[:LARGER_FORCE_STEPS.index(probe)]
-    below = LARGER_FORCE_STEPS[LARGER_FORCE_STEPS.index(probe) + 1:]
     for way_at in larger:
         def taken(steps: tuple[int, int], way_at=way_at, current=chosen) -> list[Panel] | None:
             way = way_at(steps)
@@ -995,11 +992,31 @@ def _larger_where_room(parts: Sequence[Panel], after: Sequence[Panel],
                 _in_order(found, [part.name for part in tried]) and all(_one_length_scale(page) for page in found)
             return tried if fitting else None
 
-        # A larger way that does not pack is taken to mean that none larger still does.
-        probed = taken(probe)
-        chosen = next((tried for tried in map(taken, above if probed is not None else below) if tried is not None),
-                      probed) or chosen
+        chosen = _first_fitting(LARGER_FORCE_STEPS, taken) or chosen
     return chosen
+
+
+def _first_fitting(ways: Sequence[tuple[int, int]], taken: Callable[[tuple[int, int]], list[Panel] | None]
+                   ) -> list[Panel] | None:
+    """What ``taken`` gives for the first of ``ways`` (the preferred first) that it takes, None where it takes none.
+
+    Tried from :data:`PROBE_STEPS`, then the way in the middle of those
+    left: a way not taken is taken to mean that no way at least as many
+    steps larger in both does either (a larger drawing needs more room), and
+    one taken leaves only the ways before it.  Where only the probe packs,
+    four ways are laid out of the nine, not seven.
+    """
+    left = list(ways)
+    found = None
+    way = PROBE_STEPS if PROBE_STEPS in left else left[len(left) // 2]
+    while left:
+        tried = taken(way)
+        if tried is not None:
+            found, left = tried, left[:left.index(way)]
+        else:
+            left = [other for other in left if not (other[0] >= way[0] and other[1] >= way[1])]
+        way = left[len(left) // 2] if left else None
+    return found
 
 
 def _in_order(pages: Sequence[Page], names: Sequence[str]) -> bool:
