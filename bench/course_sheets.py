@@ -1,17 +1,18 @@
 """What drawing the force analysis larger on the course sheets costs: the sheets' run with the search for room as it
-is, with no search, and with the search as it was before (every way tried, largest first).
+is, with no search, and with every way tried, largest first, until one packs.
 
     python bench/course_sheets.py [--sheet SHEET ...] [--locale LOCALE ...]
 
 A course sheet with room for it draws a force sheet's groups cut free and polygons a standard step or more larger
-(`render/sheet.py` `_larger_where_room`): it tries the ways of `LARGER_FORCE_STEPS` from `PROBE_STEPS`, each a
-force sheet laid out afresh with its labels placed and the sheets packed again.  For every fixture and every
-starter, in each locale, on the scene's own sheet (and each `--sheet` given), a fresh interpreter runs
-`graphplan run --only sheets` (`run.run`) after an untimed run that loads the modules, each run with the label
-placements remembered by the run before forgotten: as it is; with
-`LARGER_FORCE_STEPS` empty (no search: the record's scales); and with `PROBE_STEPS` the largest way (every way
-tried from the largest down until one packs, as the search began).  Each run gives its processor time, the time
-spent in `_larger_where_room` alone, the sheets written, and how many force sheets it drew larger.
+(`render/sheet.py` `_larger_where_room`): it tries ways of `LARGER_FORCE_STEPS` (`_first_fitting`: from
+`PROBE_STEPS`, then the middle of those a failure or a fit leaves), each a force sheet laid out afresh with its
+labels placed and the sheets packed again.  For every fixture and every starter, in each locale, on the scene's own
+sheet (and each `--sheet` given), a fresh interpreter runs `graphplan run --only sheets` (`run.run`) after an
+untimed run that loads the modules, each run with the label placements remembered by the run before forgotten: as
+it is; with `LARGER_FORCE_STEPS` empty (no search: the record's scales); and with `_first_fitting` trying every way
+in order, largest first, until one packs (the first search, with none of its ways ruled out by another's).  Each
+run gives its processor time, the time spent in `_larger_where_room` alone, the sheets written, and how many force
+sheets it drew larger; the two searches must draw the same ones larger.
 
 Times are processor times (the machine is shared), compared as ratios within one interpreter.  Results go to
 bench/results/course_sheets.json and course_sheets.md.
@@ -44,8 +45,8 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
     from graphplan.render import forces, labels
     from graphplan.render import sheet as sheet_module
 
-    own_search = sheet_module._larger_where_room
-    usual = sheet_module.LARGER_FORCE_STEPS, sheet_module.PROBE_STEPS
+    own_search, own_first = sheet_module._larger_where_room, sheet_module._first_fitting
+    usual = sheet_module.LARGER_FORCE_STEPS
     spent = {"search_s": 0.0, "larger": 0}
 
     def timed_search(parts, *rest):
@@ -55,8 +56,11 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
         spent["larger"] += sum(new is not old for new, old in zip(chosen, parts, strict=True))
         return chosen
 
-    def timed_run(steps, probe, scratch: Path) -> dict:
-        sheet_module.LARGER_FORCE_STEPS, sheet_module.PROBE_STEPS = steps, probe
+    def every_way(ways, taken):
+        return next((tried for tried in map(taken, ways) if tried is not None), None)
+
+    def timed_run(steps, first, scratch: Path) -> dict:
+        sheet_module.LARGER_FORCE_STEPS, sheet_module._first_fitting = steps, first
         spent.update(search_s=0.0, larger=0)
         # Placements remembered from the run before would make a way laid out there free here.
         labels._placements, forces._grown_unions = RecentMemo(), RecentMemo()
@@ -73,13 +77,13 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
     try:
         with tempfile.TemporaryDirectory() as scratch_name:
             scratch = Path(scratch_name)
-            timed_run(*usual, scratch / "warm")
-            runs = {"as it is": timed_run(*usual, scratch / "a"),
-                    "no search": timed_run((), usual[1], scratch / "b"),
-                    "largest first": timed_run(usual[0], usual[0][0], scratch / "c")}
+            timed_run(usual, own_first, scratch / "warm")
+            runs = {"as it is": timed_run(usual, own_first, scratch / "a"),
+                    "no search": timed_run((), own_first, scratch / "b"),
+                    "largest first": timed_run(usual, every_way, scratch / "c")}
     finally:
-        sheet_module._larger_where_room = own_search
-        sheet_module.LARGER_FORCE_STEPS, sheet_module.PROBE_STEPS = usual
+        sheet_module._larger_where_room, sheet_module._first_fitting = own_search, own_first
+        sheet_module.LARGER_FORCE_STEPS = usual
     return {"scene": name, "locale": locale, "sheet": sheet or "scene's", "runs": runs}
 
 
