@@ -409,6 +409,13 @@ _OWN_KEYS = ("motor", "brake", "clutch", "start", "duration", "method", "rtol", 
 _NESTED_KEYS = {"brake": ("damping",), "clutch": ("engage_at",), "start": ("angle_deg", "driving_rpm", "driving_omega")}
 
 
+# The flywheel moved to another shaft is J·(n/n_shaft)²: a shaft speed no flywheel turns at (1e-6 rpm, a slip of
+# the exponent) made it 1e16 times the crank's without a word.  The slowest flywheels, a large press's or a rolling
+# mill's, turn at tens of rev/min; the fastest, a storage flywheel's of composite, at some 50 000.
+SLOWEST_FLYWHEEL_SHAFT_RPM = 1.0
+FASTEST_FLYWHEEL_SHAFT_RPM = 100_000.0
+
+
 def misplaced_keys(where: str, path: str) -> dict[str, str]:
     """The keys the table at ``where`` (``path``, the ``[dynamics]`` table, or one nested in it) does not take but
     another of ``path``'s tables does, each with the path of that table, for :meth:`Table.done`'s ``elsewhere``."""
@@ -507,6 +514,11 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     speed_key = next((key for key in ("rpm", "omega") if table.has(key)), None)
     omega = table.speed(None, positive=True)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
+    if shaft is not None and not SLOWEST_FLYWHEEL_SHAFT_RPM <= shaft <= FASTEST_FLYWHEEL_SHAFT_RPM:
+        raise SceneError(table.where("flywheel_shaft_rpm"), f"must be within {SLOWEST_FLYWHEEL_SHAFT_RPM:g}–"
+                         f"{FASTEST_FLYWHEEL_SHAFT_RPM:g} rpm, as a flywheel's shaft turns (a press's some 100–500, "
+                         "a storage flywheel's up to some 50 000): the flywheel moved there is (n/n_shaft)² times "
+                         "the one on the crank", shaft)
     if shaft is not None and delta is None:
         raise SceneError(table.where("flywheel_shaft_rpm"), "moves the flywheel sized for delta to another shaft, but "
                          "no delta is given, so no flywheel is sized: give delta (the coefficient of speed "

@@ -284,6 +284,9 @@ def test_dynamics_table_is_read_with_its_keys_checked():
     ({"constant": "motor"}, "dynamics.constant: must be one of auto, driving, resisting, none"),
     ({"count": 5}, "dynamics.count: must be >= 12 (got 5)"),
     ({"flywheel_shaft_rpm": "fast"}, "dynamics.flywheel_shaft_rpm: must be a number, not a string"),
+    # A shaft speed no flywheel turns at moved a flywheel 1e16 times the crank's (1e-6 rpm) without a word.
+    ({"delta": 0.05, "flywheel_shaft_rpm": 1e-6}, "dynamics.flywheel_shaft_rpm: must be within 1–100000 rpm"),
+    ({"delta": 0.05, "flywheel_shaft_rpm": 2e6}, "dynamics.flywheel_shaft_rpm: must be within 1–100000 rpm"),
     # Without δ no flywheel is sized, and the shaft it was to be moved to was passed over without a word.
     ({"flywheel_shaft_rpm": 1450.0}, ("dynamics.flywheel_shaft_rpm: moves the flywheel sized for delta to another "
                                       "shaft, but no delta is given")),
