@@ -44,7 +44,7 @@ from .reach_advice import reach_hint
 from .scales import standard_scale
 from .scene import OTHER_SENSE, Scene
 from .statics import Equilibrium, balancing_scale, equilibrium, pairs, turned_round
-from .unit_slips import masses_in_grams, speed_in_rpm
+from .unit_slips import inertia_too_large, masses_in_grams, speed_in_rpm
 from .wording import balancing_symbol
 
 # Driver positions per cycle for the paths drawn on the plan of positions.
@@ -216,7 +216,8 @@ def analyse(scene: Scene) -> Analysis:
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every))
     in_order = tuple(sorted(lengths_in_millimetres(mechanism) + speed_in_rpm(mechanism)
-                            + masses_in_grams(mechanism, motion) + motion.warnings + stepped_over
+                            + masses_in_grams(mechanism, motion)
+                            + inertia_too_large(mechanism, motion) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)
                             + _idle_throughout(mechanism, positions) + _working_throughout(mechanism, positions)
                             + strokes_of_other_links(mechanism, positions)
@@ -254,7 +255,7 @@ def read_off_sheets(analysis: Analysis, sheets: Mapping[int, SheetPolygons]) -> 
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
-                                 "resisting-turns-round"})
+                                 "inertia-too-large", "resisting-turns-round"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

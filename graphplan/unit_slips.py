@@ -1,5 +1,6 @@
 """Values of a linkage typed in another unit than the scene's that still run: a crank's speed in rev/min given as
-``omega`` (1450 rad/s for a 1450 rpm motor), a link's mass in grams (a 0.3 m rocker of 300 kg).  Every result
+``omega`` (1450 rad/s for a 1450 rpm motor), a link's mass in grams (a 0.3 m rocker of 300 kg), its moment of
+inertia in kg·mm² (a 0.55 m coupler turning about a radius of gyration of 5.5 m).  Every result
 follows them a thousand or ten times off, so the run warns at its first position, naming the key, its value and
 what was likely meant, as it warns of lengths in millimetres (:mod:`graphplan.length_units`).
 """
@@ -39,6 +40,15 @@ LONGEST_CRANK = 50.0
 # 1060 kg at 0.175 m.  A truck engine's throw (some 17 kg at a 0.075 m crank) fills a tenth of it, a course's crank
 # of 0.1 m (some 2–4 kg) a hundredth; the same crank typed in grams (2000, 500 for 0.5 kg) passes it.
 CRANK_REACH = 2.0
+# A link's mass lies between its joints, about its centre: its radius of gyration k = √(J/m) is at most half its
+# span (two masses at its ends), a uniform bar's l/√12 = 0.29·l.  A link whose k is more than WIDEST_GYRATION times its
+# span would have its mass farther out than its joints reach, as J typed in kg·cm² or kg·mm² makes it (a thousand times
+# a 0.55 m coupler's 0.51 kg·m² puts k at 5.5 m); a counterweight on an arm beyond the named points is left room.
+WIDEST_GYRATION = 2.0
+# The units a J is likely typed in for kg·m², with their factor to kg·m².  A reading is offered where it puts k within
+# the link as a link's mass lies: from a twentieth of its span (a mass lumped at its centre) to its span.
+INERTIA_UNITS = (("kg·cm²", 1e-4), ("kg·mm²", 1e-6), ("g·cm²", 1e-7), ("g·mm²", 1e-9))
+NARROWEST_GYRATION = 0.05
 
 
 def heaviest_crank(length: float) -> float:
@@ -108,6 +118,48 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
         return ()
     return (PositionWarning(0, "masses-in-grams", "; ".join(told) + ": the scene's masses are in kg (divide grams "
                                                                     "by 1000)"),)
+
+
+def inertia_too_large(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarning, ...]:
+    """An ``inertia-too-large`` warning, at the first position, naming each link whose radius of gyration √(J/m) is
+    more than :data:`WIDEST_GYRATION` times its span (the largest distance between two of its points), with what its
+    J would be in kg·m² as the units it was likely typed in (:data:`INERTIA_UNITS`)."""
+    told = []
+    driver = mechanism.driver
+    for number, link in sorted(mechanism.scene.links.items()):
+        if not (link.mass > 0 and link.inertia > 0):
+            continue  # no radius of gyration: a J alone (a flywheel's) or no J at all
+        if driver.kind == "crank" and number == driver.link:
+            # The driving crank may carry a flywheel far wider than the crank is long (a 0.06 m crank with a
+            # 400 kg, 60 kg·m² flywheel has k = 0.39 m); masses_in_grams judges its mass against its J instead.
+            continue
+        span = _span(mechanism, motion, number)
+        body = "link"
+        if span is None:
+            # A slider's block has no span of its own; a block that turns with its guide (a slotted lever's) has its
+            # J in the results, and none turns about a radius of gyration wider than the mechanism is across.
+            span, body = _span(mechanism, motion, None), "slider of a mechanism"
+            if span is None:
+                continue
+        length, between = span
+        gyration = math.sqrt(link.inertia / link.mass)
+        if not gyration > WIDEST_GYRATION * length:
+            continue
+        plausible = [(unit, factor) for unit, factor in INERTIA_UNITS
+                     if NARROWEST_GYRATION * length <= gyration * math.sqrt(factor) <= length]
+        readings = "; ".join(f"{link.inertia:g} {unit} is {link.where}.inertia = {link.inertia * factor:.3g}"
+                             for unit, factor in plausible)
+        guess = (f"{' or '.join(unit for unit, _ in plausible)} typed for kg·m²? {readings}" if plausible
+                 else "no unit explains it: a mistaken value?")
+        told.append(f"{link.where}.inertia = {link.inertia:g} kg·m² with mass = {link.mass:g} kg gives a radius of "
+                    f"gyration √(J/m) = {written(gyration, 3)} m, {written(gyration / length, 3)} times the "
+                    f"{body} {written(length, 3)} m {'long' if body == 'link' else 'across'} ({between}), where a "
+                    f"uniform bar of that length has {written(length / math.sqrt(12.0), 3)} m "
+                    f"(J = m·l²/12 = {written(link.mass * length ** 2 / 12.0, 3)} kg·m²): {guess}")
+    if not told:
+        return ()
+    return (PositionWarning(0, "inertia-too-large", "; ".join(told) + ": the scene's moments of inertia are in "
+                                                                      "kg·m²"),)
 
 
 def _crank_depth(mass: float, inertia: float) -> float | None:

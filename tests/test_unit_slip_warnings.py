@@ -294,3 +294,30 @@ def test_a_resisting_force_whose_point_turns_back_along_its_line_in_its_window_i
     # Acting always, a resistance turns round with the motion as it should: no word.
     told, results, _ = _run(tmp_path, LIFT.replace("{during}", "always"), capsys)
     assert "resists E's motion" not in told
+
+
+def test_a_links_inertia_in_another_unit_is_warned_of_by_its_radius_of_gyration(tmp_path, capsys):
+    """A coupler's J a thousand times its own (510 for 0.51 kg·m²) ran without a word: only the crank's was judged.
+    Its radius of gyration √(J/m), worked out here from the starter's mass and the coupler's length A–B, lies ten
+    times beyond the link, which no link's mass does."""
+    text = _edited("crank-rocker", "inertia = 0.51", "inertia = 510.0")
+    told, results, note = _run(tmp_path, text, capsys)
+    first = results["positions"][0]["points"]
+    length = abs(complex(*first["A"]["r"]) - complex(*first["B"]["r"]))
+    assert length == pytest.approx(0.55)
+    gyration = math.sqrt(510.0 / 17.0)
+    assert gyration > 2.0 * length
+    words = (f"links.3.inertia = 510 kg·m² with mass = 17 kg gives a radius of gyration √(J/m) = {gyration:.3g} m, "
+             f"{gyration / length:.3g} times the link {length:.3g} m long (A–B), where a uniform bar of that length has "
+             f"{length / math.sqrt(12.0):.3g} m (J = m·l²/12 = {17.0 * length ** 2 / 12.0:.3g} kg·m²)")
+    assert words in told
+    # As kg·cm² it is 0.051 kg·m², a radius of gyration a tenth of the link; as kg·mm² 0.01 of it, too small to offer.
+    assert "kg·cm² typed for kg·m²? 510 kg·cm² is links.3.inertia = 0.051" in told and "kg·mm² is" not in told
+    assert any(warning["code"] == "inertia-too-large" and words in warning["detail"]
+               for warning in results["warnings"])
+    assert "kg·cm² or kg·mm² where kg·m² are asked for" in note
+    # The coupler as the starter has it, and a J ten times it (k = 0.55 m, the link's length), are no slip.
+    for inertia in ("0.51", "5.1"):
+        told, results, _ = _run(tmp_path, _edited("crank-rocker", "inertia = 0.51", f"inertia = {inertia}"), capsys)
+        assert "radius of gyration" not in told
+        assert "inertia-too-large" not in {warning["code"] for warning in results["warnings"]}
