@@ -43,6 +43,7 @@ from .errors import SceneError
 from .kinematics import read_only
 from .reader import Table, check_xy
 from .rounding import RELATIVE_NOISE
+from .table_keys import keys_of_other_tables
 from .units import MOST_MOTOR_SLIP, RPM, motor_speed_in_rpm, nearest_synchronous_rpm, percentage_question, rpm_question
 
 # A cycle whose work is left over by more than this share of the work done is not steady: the floor under the
@@ -533,7 +534,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         from .machine_motion import read_motion
 
         motion = read_motion(table, table.path)
-    table.done(elsewhere=misplaced_keys(table.path, table.path))
+    table.done(elsewhere={**keys_of_other_tables("dynamics"), **misplaced_keys(table.path, table.path)})
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
                         count=count, motion=motion, speed_key=speed_key)
 
@@ -565,7 +566,7 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
                                  "gives its diagram: leave one out")
     inertia = table.number("inertia", 0.0, non_negative=True)
     motion = _read_diagram_motion(table, diagrams, inertia, spec.delta)
-    table.done(elsewhere=misplaced_keys(table.path, table.path))
+    table.done(elsewhere={**keys_of_other_tables("dynamics"), **misplaced_keys(table.path, table.path)})
     omega = spec.omega
     if len(diagrams) == 2:
         constant = "none"

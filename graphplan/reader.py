@@ -239,6 +239,11 @@ def suggestion(word: str, choices: Any) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
+# How alike a key of several other tables must be to one of the table it is written in to be asked about it: mass
+# is masses (0.8), count is not joint (0.6).
+_ALMOST_THE_SAME = 0.75
+
+
 def _swapped(typed: str, key: str) -> bool:
     """``typed`` is ``key`` with two letters side by side swapped (rmp for rpm), which the similarity ratio of a
     short key counts as far off as another key."""
@@ -393,7 +398,7 @@ class Table:
         """Raise at ``key``, a key of the table ``home`` (nested in this one, or this one's owner), saying how to
         write it there."""
         value = f"{key} = {as_written(self.data[key])}"
-        if "." not in home and "." not in self.path:  # two tables of the scene's own, side by side
+        if "." not in home and not self.path.startswith(home + "."):  # a table of the scene's own, from another
             how = f"write it under [{home}]: {value}"
         elif self.path.startswith(home + "."):
             how = f"write it under [{home}], not inside {self.path.removeprefix(home + '.')} = {{ … }}: {value}"
@@ -541,18 +546,26 @@ class Table:
         for key in list(self.data):
             yield key, self.table(key)  # type: ignore[misc]
 
-    def done(self, *, list_known: bool = False, elsewhere: Mapping[str, str] | None = None) -> None:
+    def done(self, *, list_known: bool = False, elsewhere: Mapping[str, str | tuple[str, ...]] | None = None) -> None:
         """Reject the first key that nobody took, suggesting the nearest valid one, or with ``list_known`` (a
         table whose keys are all read whatever it holds) every valid one when none is near.
 
         ``elsewhere`` maps keys of a table nested in this one, or of the one this is nested in, to that table's
         path: such a key here is told where it goes, for the nearest key here would send the user astray
-        (``dynamics.gear_ratio`` was asked "did you mean 'duration'?", the motor's key written beside it)."""
+        (``dynamics.gear_ratio`` was asked "did you mean 'duration'?", the motor's key written beside it).  A key
+        mapped to several tables (:func:`~graphplan.table_keys.keys_of_other_tables`) is told whose it is, with a
+        key of this table only where one is all but the same (masses for mass)."""
         if "mass" in self._taken:
             self._weight_for_mass([key for key in self.data if key not in self._taken])
         for key in self.data:
             if key not in self._taken and elsewhere and key in elsewhere:
-                self._misplaced(key, elsewhere[key])
+                home = elsewhere[key]
+                if isinstance(home, str):
+                    self._misplaced(key, home)
+                # driver.count was asked "did you mean 'joint'?": a key of two other tables, near none here.
+                near = difflib.get_close_matches(key, sorted(self._taken), n=1, cutoff=_ALMOST_THE_SAME)
+                raise SceneError(self.where(key), f"unknown key; {key} is a key of {', '.join(home[:-1])} or {home[-1]}, not of "
+                                 f"{self.path}" + (f"; did you mean {near[0]!r}?" if near else ""))
             if key not in self._taken:
                 hint = suggestion(key, sorted(self._taken))
                 if not hint and list_known:

@@ -56,6 +56,7 @@ from .rotor_lengths import (
     LengthsInMillimetres,
     heaviest_rotor,
 )
+from .table_keys import keys_of_other_tables
 
 #: A correction below this share of its polygon's perimeter is rounding: the plane needs none, its angle is 0.
 NEGLIGIBLE = 1e-12
@@ -479,7 +480,7 @@ def read_balancing(table: Table) -> BalancingSpec:
                                                     "[zL, zR] for dynamic balancing, or [z] to balance the force only")
     radius = _correction_radius(table, count)
     plane_names = _plane_names(table, count)
-    table.done()
+    table.done(elsewhere=keys_of_other_tables("balancing"))
     _refuse_label_clash(table, named, plane_names, count)
     spec = BalancingSpec(masses=tuple(masses), planes=planes, correction_radius=radius, plane_names=plane_names)
     _check_computable(balance(spec), table.where("planes"))

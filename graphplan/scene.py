@@ -40,6 +40,7 @@ from .reader import (
     required_purpose,
 )
 from .scene_file import MAX_SCENE_BYTES, STDIN, bytes_at, stdin_bytes
+from .table_keys import keys_of_other_tables
 from .units import HEAVIEST_GRAVITY, gravity_unit
 
 # The stages a scene's verbs run import the scene.  The rotor's and the vibration's readers are imported where a
@@ -725,7 +726,7 @@ def _read_scene(top: Table, source: str) -> Scene:
     locale = scene.choice("locale", LOCALES, "en")
     gravity = scene.number("gravity", 9.81, non_negative=True)
     _refuse_heavy_gravity(gravity, scene.data.get("gravity"))
-    scene.done(elsewhere=_keys_of_other_tables("scene"))
+    scene.done(elsewhere=keys_of_other_tables("scene"))
     project = _read_project(top.table("project", None))
 
     balancing = None
@@ -823,7 +824,7 @@ def _read_frame(frame: Table | None) -> tuple[int, dict[str, complex], dict[str,
                 raise SceneError(f"{table.where(name)}.through", f"must be a point of [frame] points: {', '.join(points) or 'none'}",
                                  guide.through, hint=lookalike_hint(guide.through, points))
             lines[name] = guide
-    frame.done(elsewhere=_keys_of_other_tables("frame"))
+    frame.done(elsewhere=keys_of_other_tables("frame"))
     return link, points, lines
 
 
@@ -928,7 +929,7 @@ def _read_links(table: Table | None) -> dict[int, LinkSpec]:
             centre=entry.string("centre", None),
             inertia=entry.number("inertia", 0.0, non_negative=True),
         )
-        entry.done()  # a centre given as center is named before it is missed
+        entry.done(elsewhere=keys_of_other_tables("links.N"))  # a centre given as center is named before it is missed
         if links[number].mass > 0 and links[number].centre is None:
             raise SceneError(f"{entry.path}.centre", "a link with a mass needs its centre of mass: a point fixed on it")
     return links
@@ -1081,7 +1082,7 @@ def _read_positions(table: Table, driver: Driver) -> Positions:
     if len(velocity_plans) > MOST_VELOCITY_PLANS:
         raise SceneError(table.where("velocity_plans"), f"draws {len(velocity_plans)} velocity plans: at most "
                          f"{MOST_VELOCITY_PLANS} make a readable drawing; list the positions to draw")
-    table.done(elsewhere=_keys_of_other_tables("positions"))
+    table.done(elsewhere=keys_of_other_tables("positions"))
     return Positions(count=count, start=start, number_from=number_from, working=working, plans=tuple(plans),
                      velocity_plans=tuple(velocity_plans))
 
@@ -1125,23 +1126,6 @@ def _position_numbers(table: Table, key: str, number_from: int, count: int, once
     return numbers
 
 
-# Keys that one table of the scene alone takes, each told where it goes when written in another of the scene's own
-# tables: drawing.sheet written under [scene] was asked "did you mean 'title'?", velocity_pole under [positions]
-# "did you mean 'velocity_plans'?", a key that is right, in the wrong table. (count and start are [dynamics]' too.)
-_ONE_TABLES_KEYS = {
-    "scene": ("title", "locale", "gravity"),
-    "positions": ("number_from", "working", "plans", "velocity_plans"),
-    "drawing": ("length_scale", "velocity_pole", "acceleration_pole", "velocity_scale", "acceleration_scale",
-                "velocity_plans_pole", "force_scale", "drafting_precision", "sheet"),
-    "output": ("include",),
-}
-
-
-def _keys_of_other_tables(table: str) -> dict[str, str]:
-    """Each key of :data:`_ONE_TABLES_KEYS` that is not ``table``'s, with the table it is a key of."""
-    return {key: home for home, keys in _ONE_TABLES_KEYS.items() if home != table for key in keys}
-
-
 def _refuse_heavy_gravity(gravity: float, typed: object) -> None:
     """Refuse a g no planet has: Earth's in another unit (32.2 ft/s², 9810 mm/s²) would make every weight, and
     every reaction and balancing load with it, that many times too large, and the run would say nothing."""
@@ -1180,7 +1164,7 @@ def _read_drawing(table: Table) -> Drawing:
     for plan in ("velocity", "acceleration"):
         if table.has(f"{plan}_pole") and table.has(f"{plan}_scale"):
             raise SceneError(table.where(f"{plan}_scale"), f"give either {plan}_pole or {plan}_scale, not both")
-    table.done(elsewhere=_keys_of_other_tables("drawing"))
+    table.done(elsewhere=keys_of_other_tables("drawing"))
     return drawing
 
 
@@ -1230,7 +1214,7 @@ def _read_output(table: Table | None) -> tuple[str, ...] | None:
     if table is None:
         return None
     pieces = table.items("include", default=None)
-    table.done(elsewhere=_keys_of_other_tables("output"))
+    table.done(elsewhere=keys_of_other_tables("output"))
     if pieces is None:
         return None
     return tuple(check_choice(item, where, OUTPUT_PIECES) for where, item in pieces)

@@ -48,6 +48,7 @@ from .rotor_lengths import (
     LengthsInMillimetres,
     lightest_rotor,
 )
+from .table_keys import keys_of_other_tables
 from .units import RPM, STANDARD_GRAVITY, motor_speed_in_rpm, percentage_question, rpm_question
 
 Scalar = float | np.ndarray
@@ -896,7 +897,7 @@ def read_vibration(table: Table, driver_speed: float | None = None) -> Vibration
         percentage = f"; {percentage_question(wanted, 'TR')}" if wanted < 100 else ""
         raise SceneError(table.where("transmissibility"), "must be below 1: a mount isolates only where TR < 1",
                          wanted, hint=percentage)
-    table.done()
+    table.done(elsewhere=keys_of_other_tables("vibration"))
     if zeta == 0 and at_resonance(omega, stiffness, mass):
         if not given:
             raise SceneError(table.path, f"turns at the crank's speed, ω = {omega:.6g} rad/s, which is the natural "

@@ -1659,12 +1659,17 @@ def test_a_machine_of_no_inertia_whose_moments_balance_everywhere_is_refused_not
     ({"scene.gravity": DELETE, "drawing.gravity": 9.81}, "drawing.gravity", "scene", "9.81"),
     ({"output.include": DELETE, "positions.include": ["note"]}, "positions.include", "output", '["note"]'),
     ({"positions.plans": DELETE, "frame.plans": [5, 11]}, "frame.plans", "positions", "[5, 11]"),
-], ids=["sheet-in-scene", "pole-in-positions", "gravity-in-drawing", "include-in-positions", "plans-in-frame"])
+    # frame.pivot was asked "did you mean 'points'?", scene.planes "did you mean 'locale'?".
+    ({"driver.pivot": DELETE, "frame.pivot": "O"}, "frame.pivot", "driver", "'O'"),
+    ({"scene.planes": [0.0, 0.2]}, "scene.planes", "balancing", "[0.0, 0.2]"),
+    ({"links.3.swing": [0, 90]}, "links.3.swing", "driver", "[0, 90]"),
+], ids=["sheet-in-scene", "pole-in-positions", "gravity-in-drawing", "include-in-positions", "plans-in-frame",
+        "pivot-in-frame", "planes-in-scene", "swing-in-a-link"])
 def test_a_key_written_in_another_of_the_scenes_tables_is_told_where_it_goes(
         tmp_path, capsys, changes, where, home, value) -> None:
     """A key moved into the wrong table was told "unknown key", or sent astray by the nearest key of that table:
     sheet under [scene] "did you mean 'title'?", velocity_pole under [positions] "did you mean 'velocity_plans'?"."""
-    table, _, key = where.partition(".")
+    table, _, key = where.rpartition(".")
     scene = tmp_path / "moved.toml"
     scene.write_text(to_toml(variant(RATCHET, changes)), encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
@@ -1672,3 +1677,34 @@ def test_a_key_written_in_another_of_the_scenes_tables_is_told_where_it_goes(
     assert line == (f"graphplan: error: {where}: unknown key; {key} is a key of {home}, not of {table}: write it "
                     f"under [{home}]: {key} = {value}")
     assert list(tmp_path.iterdir()) == [scene]
+
+
+def test_a_key_of_the_machines_tables_written_in_another_is_told_where_it_goes(tmp_path, capsys) -> None:
+    """[balancing] and [vibration] were asked about their own nearest key: balancing.unbalance (the vibration's m·e)
+    "did you mean 'planes'?"."""
+    from graphplan.starters import starter
+
+    rotor = starter("rotor", "en")
+    assert "[balancing]\n" in rotor
+    scene = tmp_path / "rotor.toml"
+    scene.write_text(rotor.replace("[balancing]\n", "[balancing]\nunbalance = 0.01\n", 1), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    line = capsys.readouterr().err.strip().splitlines()[-1]
+    assert line == ("graphplan: error: balancing.unbalance: unknown key; unbalance is a key of vibration, not of "
+                    "balancing: write it under [vibration]: unbalance = 0.01")
+
+
+@pytest.mark.parametrize(("key", "value", "homes"), [
+    ("count", 12, "positions or dynamics"),
+    ("start", 0, "positions or dynamics"),
+    ("inertia", 0.5, "forces, dynamics or links.N"),
+])
+def test_a_key_of_several_tables_written_in_the_driver_is_sent_to_none_of_them(tmp_path, capsys, key, value,
+                                                                                homes) -> None:
+    """driver.count and driver.inertia were asked "did you mean 'joint'?", a key they are nothing like; a key that
+    several tables take is told whose it is, and no one table is named to write it under."""
+    scene = tmp_path / "driver.toml"
+    scene.write_text(to_toml(variant(RATCHET, {f"driver.{key}": value})), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    line = capsys.readouterr().err.strip().splitlines()[-1]
+    assert line == f"graphplan: error: driver.{key}: unknown key; {key} is a key of {homes}, not of driver"

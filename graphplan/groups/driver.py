@@ -31,6 +31,7 @@ from ..kinematics import (
 from ..plans import Builder, LaidVector, Plan, Step
 from ..reader import Table
 from ..rounding import ANGLE_FLOOR_DEG
+from ..table_keys import keys_of_other_tables
 from .base import Context, GroupMotion, Guide, read_guide
 
 
@@ -67,7 +68,7 @@ class Crank:
                 raise SceneError(table.where("swing"), "must span less than a turn: [from, to] in degrees with "
                                  "0 < |to − from| < 360 (leave swing out for a crank that turns round)", list(ends))
             swing = (math.radians(ends[0]), math.radians(ends[1]))
-        table.done()
+        table.done(elsewhere=keys_of_other_tables("driver"))
         return cls(where=table.path, link=link, pivot=pivot, joint=joint, length=length, omega=omega,
                    epsilon=epsilon, swing=swing, rpm=float(table.raw("rpm")) if table.has("rpm") else None)
 
@@ -194,7 +195,7 @@ class Slider:
         travel = table.numbers("travel", 2)
         if travel[0] == travel[1]:
             raise SceneError(table.where("travel"), "must span a stroke: [from, to] with from ≠ to", list(travel))
-        table.done()
+        table.done(elsewhere=keys_of_other_tables("driver"))
         return cls(where=table.path, link=link, joint=joint, guide=guide, velocity=velocity,
                    acceleration=acceleration, travel=travel)
 
