@@ -85,14 +85,14 @@ class MachineDynamics:
         """
         if self.spec.motion is None:
             return None
-        with _scene_values("dynamics"):
+        with _scene_values("dynamics", _MOTION):
             return self._motion_spec.run(self.machine)
 
     def refuse(self) -> None:
         """Raise :class:`SceneError` for a motion the run could not integrate to its end (a motor that outpulls
         the resistance at every speed): found before anything is integrated, as ``check`` does."""
         if self.spec.motion is not None:
-            with _scene_values("dynamics"):
+            with _scene_values("dynamics", _MOTION):
                 self._motion_spec.refuse(self.machine)
 
     @property
@@ -432,13 +432,47 @@ def _constant_refused(refused: ConstantSideError) -> SceneError:
                       refused.constant)
 
 
+# What each step of the dynamics works out, and the keys of the scene that feed it, for an error a library raises
+# there: numpy's or scipy's words alone ("The function value at x=-0.0 is NaN") read as the project's and named no
+# value of the scene to change.
+_MODEL = ("working out the equivalent model and the flywheel",
+          ("the load diagrams or the linkage's loads and masses, inertia, rpm or omega, delta, flywheel_shaft_rpm, "
+           "count"))
+_MOTION = ("integrating the machine's motion",
+           "motor, brake, clutch, start, duration, method, rtol, steady_tolerance, with the model's inertia and loads")
+
+
 @contextlib.contextmanager
-def _scene_values(where: str) -> Iterator[None]:
+def _scene_values(where: str, step: tuple[str, str] = _MODEL) -> Iterator[None]:
     """The dynamics' own refusals of the values they are given (Je that vanishes, work that does not balance, an
-    integration that cannot go on) as the scene's errors at ``where``: they are what the scene asked for."""
+    integration that cannot go on) as the scene's errors at ``where``: they are what the scene asked for.  An error a
+    library raises instead (its message is its own, not the project's) is told as what ``step`` was doing when it
+    stopped and which keys feed it, with the library's words quoted as its."""
     try:
         yield
     except GraphplanError:
         raise
     except (ValueError, ArithmeticError) as error:
-        raise SceneError(where, str(error)) from error
+        library = _library_of(error)
+        if library is None:
+            raise SceneError(where, str(error)) from error
+        doing, keys = step
+        raise SceneError(where, f"{doing} stopped in {library} ({type(error).__name__}: \"{error}\"): a value of the "
+                         f"scene lies beyond what it can be worked out with; check {where}'s {keys}") from error
+
+
+def _library_of(error: BaseException) -> str | None:
+    """The package outside graphplan whose code raised ``error`` (numpy, scipy), or None where graphplan's did."""
+    import os
+
+    package = os.path.dirname(os.path.abspath(__file__))
+    frame = error.__traceback__
+    while frame is not None and frame.tb_next is not None:
+        frame = frame.tb_next
+    if frame is None:
+        return None
+    filename = os.path.abspath(frame.tb_frame.f_code.co_filename)
+    if filename.startswith(package + os.sep):
+        return None
+    name = frame.tb_frame.f_globals.get("__name__", "")
+    return name.partition(".")[0] or "a library"

@@ -1708,3 +1708,22 @@ def test_a_key_of_several_tables_written_in_the_driver_is_sent_to_none_of_them(t
     assert main(["check", str(scene)]) == 2
     line = capsys.readouterr().err.strip().splitlines()[-1]
     assert line == f"graphplan: error: driver.{key}: unknown key; {key} is a key of {homes}, not of driver"
+
+
+def test_a_librarys_error_in_the_dynamics_is_told_as_the_step_it_stopped_and_the_keys_that_feed_it() -> None:
+    """The [dynamics] wrapper passed any ValueError on as "dynamics: <its message>", a library's words ("f(a) and f(b)
+    must have different signs") read as the project's and named no key; its own refusals it passes on as they are."""
+    import scipy.optimize
+
+    from graphplan.dynamics import equivalent_model_of
+    from graphplan.machine_dynamics import _MOTION, _scene_values
+
+    with pytest.raises(SceneError) as caught, _scene_values("dynamics", _MOTION):
+        scipy.optimize.brentq(lambda x: x, 1.0, 2.0)
+    message = str(caught.value)
+    assert message.startswith("dynamics: integrating the machine's motion stopped in scipy (ValueError: \"f(a) and "
+                              "f(b) must have different signs\")"), message
+    assert "check dynamics's motor, brake, clutch, start, duration" in message
+    with pytest.raises(SceneError) as caught, _scene_values("dynamics"):
+        equivalent_model_of(None, 1)
+    assert str(caught.value) == "dynamics: count must be an integer >= 2, not 1"
