@@ -218,9 +218,9 @@ class Rows:
         self.beside = [_side_by_side(row, heading.size) for row in rows]
         # A row of one drawing (the lever) stands the same either way.
         self.stacked = [_stacked(row, heading.size) if len(row) > 1 else None for row in rows]
-        # Each row with its long captions beside their drawings, where that makes it lower (:class:`Part`).
-        self.aside = [_captions_beside(row, heading.size, beside.height) for row, beside in zip(rows, self.beside,
-                                                                                               strict=True)]
+        # Each row with its long captions beside their drawings, where that makes it lower (:class:`Part`), laid
+        # out when a part is first arranged so: most rows tried for a cut never are.
+        self._aside: dict[int, _Block | None] = {}
 
     def __len__(self) -> int:
         return len(self.beside)
@@ -228,7 +228,10 @@ class Rows:
     def block(self, index: int, stacked: bool, aside: bool = False) -> _Block:
         block = self.stacked[index] if stacked else None
         if block is None and aside:
-            block = self.aside[index]
+            if index not in self._aside:
+                self._aside[index] = _captions_beside(self.drawings[index], self.heading.size,
+                                                      self.beside[index].height)
+            block = self._aside[index]
         return block if block is not None else self.beside[index]
 
     def arranged(self, shape: Shape, title: str | None = None, one_line: bool = False,
@@ -565,8 +568,13 @@ def _captions_beside(row: Sequence[Drawing], size: float, under_height: float) -
 def _caption_beside(drawing: Drawing, height: float, size: float) -> list[tuple[str, str]]:
     """``drawing``'s caption broken to the narrowest width that keeps it no taller than ``height`` mm, the
     drawing's, and to the widest where none does."""
-    ways = [caption_lines(drawing.caption, width, size, drawing.run_on) for width in CAPTION_BESIDE_WIDTHS_MM]
-    return next((lines for lines in ways if _lines_height(lines, size) <= height), ways[-1])
+    # Broken width by width, the narrowest first, as far as the first that fits: breaking every caption of a sheet's
+    # rows six ways was an eighth of an A3 set's sheets.
+    for width in CAPTION_BESIDE_WIDTHS_MM:
+        lines = caption_lines(drawing.caption, width, size, drawing.run_on)
+        if _lines_height(lines, size) <= height:
+            break
+    return lines
 
 
 def _lines_height(lines: Sequence[tuple[str, str]], size: float) -> float:
