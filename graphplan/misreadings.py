@@ -514,7 +514,7 @@ def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[Velo
             continue
         if not any(row.source == "measured" and _plan_of(row) == rescaled.kind for row in other.errors):
             continue
-        found = slips(other, drawing, joint, _sheet_of(other, sheets or {}))
+        found = slips(other, drawing, joint, sheet_of(other, sheets or {}))
         if found is not None and found.on_sheet is not None and rescaled.kind == "forces":
             continue  # read off the course sheet's polygons: no scale of the key's either
         theirs = [each for each in (found.rescaled if found else ()) if each.key == rescaled.key]
@@ -606,7 +606,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
     sheets = sheets or {}
     warnings = []
     for position in drawn:
-        found = slips(position, drawing, joint, _sheet_of(position, sheets))
+        found = slips(position, drawing, joint, sheet_of(position, sheets))
         if found is None:
             continue
         details = []
@@ -704,7 +704,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
     return tuple(warnings)
 
 
-def _sheet_of(position: VelocityPosition, sheets: Mapping[int, SheetPolygons]) -> SheetPolygons | None:
+def sheet_of(position: VelocityPosition, sheets: Mapping[int, SheetPolygons]) -> SheetPolygons | None:
     """The course sheet's polygons of a position of plans (a position among the velocity plans alone has none)."""
     return sheets.get(position.number) if hasattr(position, "acceleration") else None
 
@@ -818,5 +818,5 @@ _VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 __all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet", "Rescaled", "Segment",
            "SheetPolygons", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread",
-           "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "slips", "typed_unit",
-           "value_kind"]
+           "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "sheet_of", "slips",
+           "typed_unit", "value_kind"]

@@ -30,6 +30,7 @@ from ..misreadings import (
     read_at,
     setting,
     sharing,
+    sheet_of,
     slips,
     typed_unit,
     value_kind,
@@ -100,7 +101,7 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     error table in the scene's language: a plan drawn at another scale, or each misread length.  ``in_note``:
     for the explanatory note's reader, who knows the sheets by their captions, not by the files they are in."""
     found = slips(plan, analysis.scene.drawing, analysis.mechanism.driver.joint,
-                  analysis.sheet_polygons.get(plan.number) if hasattr(plan, "acceleration") else None)
+                  sheet_of(plan, analysis.sheet_polygons))
     nearer = _nearer_with_friction(analysis, plan, mark, in_note)
     if found is None:
         return nearer
