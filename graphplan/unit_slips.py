@@ -82,20 +82,18 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
     (:data:`LONGEST_CRANK`), or, given none, where it is heavier than :func:`heaviest_crank` too."""
     told = []
     for number, link in sorted(mechanism.scene.links.items()):
-        span = _span(mechanism, motion, number)
-        if span is None:
-            # A slider's block has no span of its own, and is often a mechanism's heaviest link: 50 kg typed in
-            # grams passed.  No block outweighs a steel bar as long as the whole mechanism is across.
-            span = _span(mechanism, motion, None)
-            if span is not None and link.mass > heaviest_bar(span[0]):
-                told.append(f"{link.where}.mass = {link.mass:g} kg on a slider of a mechanism "
-                            f"{written(span[0], 3)} m across ({span[1]}), heavier than a solid steel bar of that "
-                            f"length ({written(heaviest_bar(span[0]), 3)} kg): grams typed for kg? {link.mass:g} g is "
-                            f"{link.where}.mass = {link.mass / 1000:g}")
+        span = _body_span(mechanism, motion, number)
+        if span is None or not link.mass > heaviest_bar(span[0]):
             continue
-        if not link.mass > heaviest_bar(span[0]):
+        length, between, own = span
+        if not own:
+            # A slider's block is often a mechanism's heaviest link: 50 kg typed in grams passed.  No block
+            # outweighs a steel bar as long as the whole mechanism is across.
+            told.append(f"{link.where}.mass = {link.mass:g} kg on a slider of a mechanism "
+                        f"{written(length, 3)} m across ({between}), heavier than a solid steel bar of that "
+                        f"length ({written(heaviest_bar(length), 3)} kg): grams typed for kg? {link.mass:g} g is "
+                        f"{link.where}.mass = {link.mass / 1000:g}")
             continue
-        length, between = span
         why = ""
         if number == mechanism.driver.link:
             depth = _crank_depth(link.mass, link.inertia)
@@ -133,15 +131,13 @@ def inertia_too_large(mechanism: Mechanism, motion: Motion) -> tuple[PositionWar
             # The driving crank may carry a flywheel far wider than the crank is long (a 0.06 m crank with a
             # 400 kg, 60 kg·m² flywheel has k = 0.39 m); masses_in_grams judges its mass against its J instead.
             continue
-        span = _span(mechanism, motion, number)
-        body = "link"
+        # A block that turns with its guide (a slotted lever's) has its J in the results, and none turns about a
+        # radius of gyration wider than the mechanism is across.
+        span = _body_span(mechanism, motion, number)
         if span is None:
-            # A slider's block has no span of its own; a block that turns with its guide (a slotted lever's) has its
-            # J in the results, and none turns about a radius of gyration wider than the mechanism is across.
-            span, body = _span(mechanism, motion, None), "slider of a mechanism"
-            if span is None:
-                continue
-        length, between = span
+            continue
+        length, between, own = span
+        body = "link" if own else "slider of a mechanism"
         gyration = math.sqrt(link.inertia / link.mass)
         if not gyration > WIDEST_GYRATION * length:
             continue
@@ -168,6 +164,16 @@ def _crank_depth(mass: float, inertia: float) -> float | None:
     if not inertia > 0:
         return None
     return mass ** 2 / (2.0 * math.pi * STEEL_DENSITY * inertia)
+
+
+def _body_span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[float, str, bool] | None:
+    """``link``'s span (:func:`_span`) and True, or for a slider's block, which has no span of its own, the whole
+    mechanism's at the first position and False: what a link's mass and inertia are weighed against."""
+    own = _span(mechanism, motion, link)
+    if own is not None:
+        return (*own, True)
+    whole = _span(mechanism, motion, None)
+    return None if whole is None else (*whole, False)
 
 
 def _span(mechanism: Mechanism, motion: Motion, link: int | None) -> tuple[float, str] | None:
