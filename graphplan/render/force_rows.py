@@ -468,12 +468,19 @@ def _extent(drawing: Drawing) -> tuple[float, float, float, float]:
     return bounds(drawing.layers) if any(layer.items for layer in drawing.layers) else (0.0, 0.0, 0.0, 0.0)
 
 
+def _captions_under(row: Sequence[Drawing], extents: Sequence[tuple[float, float, float, float]],
+                    size: float) -> list[list[tuple[str, str]]]:
+    """Each drawing's caption of ``row`` broken to stand under it: as wide as the drawing, at least
+    :data:`CAPTION_WIDTH_MM`."""
+    return [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
+            for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+
+
 def _side_by_side(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` side by side, each in the middle of a field as tall as the tallest."""
     extents = [_extent(drawing) for drawing in row]
     height = max(y1 - y0 for _, y0, _, y1 in extents)
-    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
-                for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    captions = _captions_under(row, extents, size)
     layers: list[Layer] = []
     fields: dict[str, tuple[float, float, float, float]] = {}
     cursor = 0.0
@@ -491,8 +498,7 @@ def _stacked(row: Sequence[Drawing], size: float) -> _Block:
     """The drawings of ``row`` one under another (the polygon under its group), each with its caption, in
     the middle of a field as wide as the widest."""
     extents = [_extent(drawing) for drawing in row]
-    captions = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
-                for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    captions = _captions_under(row, extents, size)
     width = max(max(x1 - x0, *(text_width(line, size, weight) for line, weight in caption))
                 for (x0, _, x1, _), caption in zip(extents, captions, strict=True))
     # A caption's end that runs on (:class:`RunOn`) may take the whole width the group above the polygon has
@@ -530,8 +536,7 @@ def _captions_beside(row: Sequence[Drawing], size: float, under_height: float) -
     caption under its drawing stays there wherever the two are no taller.
     """
     extents = [_extent(drawing) for drawing in row]
-    under = [caption_lines(drawing.caption, max(x1 - x0, CAPTION_WIDTH_MM), size, drawing.run_on)
-             for drawing, (x0, _, x1, _) in zip(row, extents, strict=True)]
+    under = _captions_under(row, extents, size)
     beside = [_caption_beside(drawing, y1 - y0, size) for drawing, (_, y0, _, y1) in zip(row, extents, strict=True)]
     height = max(max(y1 - y0, _lines_height(caption, size))
                  for (_, y0, _, y1), caption in zip(extents, beside, strict=True))
