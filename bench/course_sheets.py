@@ -93,8 +93,9 @@ def measured(name: str, locale: str, sheet: str | None) -> dict:
 
 
 def table(rows: list[dict]) -> str:
-    lines = [("| scene | locale | sheet | sheets (as it is / no search / largest first) | force sheets drawn larger "
-              "| run s (as it is / no search / largest first) | search's share of the run (as it is / largest first) |"),
+    lines = [("| scene | locale | sheet | sheets (as it is / no search / largest first) | force sheets drawn larger | "
+              "run s (as it is / no search / largest first) | search's share of the run (as it is / largest first) "
+              "|"),
              "|---|---|---|---|---|---|---|"]
     for row in rows:
         if "error" in row:

@@ -564,8 +564,8 @@ class Table:
                     self._misplaced(key, home)
                 # driver.count was asked "did you mean 'joint'?": a key of two other tables, near none here.
                 near = difflib.get_close_matches(key, sorted(self._taken), n=1, cutoff=_ALMOST_THE_SAME)
-                raise SceneError(self.where(key), f"unknown key; {key} is a key of {', '.join(home[:-1])} or {home[-1]}, not of "
-                                 f"{self.path}" + (f"; did you mean {near[0]!r}?" if near else ""))
+                raise SceneError(self.where(key), f"unknown key; {key} is a key of {', '.join(home[:-1])} or "
+                                 f"{home[-1]}, not of {self.path}" + (f"; did you mean {near[0]!r}?" if near else ""))
             if key not in self._taken:
                 hint = suggestion(key, sorted(self._taken))
                 if not hint and list_known:

@@ -22,7 +22,8 @@ RPM = 2.0 * math.pi / 60.0
 
 PRESS = crank_press("delta = 0.1\nrpm = 6.2832\ncount = 720\nflywheel_shaft_rpm = 1430.0\nmotor = { kind = \"kloss\", "
                     "power = 2200.0, overload = 2.3, synchronous_rpm = 1500.0, rated_rpm = 1430.0, "
-                    "gear_ratio = 23.8333333, rotor_inertia = 0.005 }\n", header='locale = "en"', positions="plans = [3]")
+                    "gear_ratio = 23.8333333, rotor_inertia = 0.005 }\n", header='locale = "en"',
+                    positions="plans = [3]")
 
 
 def _run(tmp_path: Path, capsys, text: str) -> tuple[list[str], str]:

@@ -124,7 +124,8 @@ def test_one_polygon_read_on_the_sheet_is_named_alone(tmp_path_factory):
     mixed = _millimetres({"II(3,4)": drawn["II(3,4)"], "I(1,2)": record["I(1,2)"]})
     done = run(_scene({POSITION: {"forces": mixed}}), tmp_path_factory.mktemp("mixed"), only=["sheets"])
     (warning,) = _far_off(done.warnings)
-    assert f"every reading of the force polygon II(3,4) fits the polygons of position {POSITION} on the course" in warning
+    assert (f"every reading of the force polygon II(3,4) fits the polygons of position {POSITION} on the course"
+            in warning)
     assert f"at μF = {drawn['II(3,4)']:g} N/mm" in warning and "R12" not in warning
 
 

@@ -308,8 +308,8 @@ def test_a_links_inertia_in_another_unit_is_warned_of_by_its_radius_of_gyration(
     gyration = math.sqrt(510.0 / 17.0)
     assert gyration > 2.0 * length
     words = (f"links.3.inertia = 510 kg·m² with mass = 17 kg gives a radius of gyration √(J/m) = {gyration:.3g} m, "
-             f"{gyration / length:.3g} times the link {length:.3g} m long (A–B), where a uniform bar of that length has "
-             f"{length / math.sqrt(12.0):.3g} m (J = m·l²/12 = {17.0 * length ** 2 / 12.0:.3g} kg·m²)")
+             f"{gyration / length:.3g} times the link {length:.3g} m long (A–B), where a uniform bar of that length "
+             f"has {length / math.sqrt(12.0):.3g} m (J = m·l²/12 = {17.0 * length ** 2 / 12.0:.3g} kg·m²)")
     assert words in told
     # As kg·cm² it is 0.051 kg·m², a radius of gyration a tenth of the link; as kg·mm² 0.01 of it, too small to offer.
     assert "kg·cm² typed for kg·m²? 510 kg·cm² is links.3.inertia = 0.051" in told and "kg·mm² is" not in told

@@ -1568,4 +1568,5 @@ def group_id(label: str) -> str:
     return svg_id(label).strip("-")
 
 
-__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale", "group_id", "layout", "lever_loads_at", "rows", "svg_id", "too_short_to_draw", "with_finer_polygons"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale",
+           "group_id", "layout", "lever_loads_at", "rows", "svg_id", "too_short_to_draw", "with_finer_polygons"]

@@ -462,8 +462,8 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
     def laid(rows: force_rows.Rows) -> force_rows.Rows:
         return rows.parted(parted) if parted else rows
 
-    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[force_rows.Part]],
-            heading: force_rows.Heading) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Heading]:
+    def cut(drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[force_rows.Part]], heading: force_rows.Heading
+            ) -> tuple[force_layout.ForceSheet, Panel, list[list[Panel]], force_rows.Heading]:
         """Each cut's parts as panels, each going on from the one before, their headings to name the scales of
         the drawings the packing puts under them (``heading``'s), each with its long captions beside its drawings
         as its other way (:class:`force_rows.Part`); the lever drawn larger where the sheet holds it so on its part
