@@ -11,6 +11,7 @@ import contextlib
 import dataclasses
 import functools
 import math
+import os
 from collections.abc import Callable, Iterator, Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -463,8 +464,6 @@ def _scene_values(where: str, step: tuple[str, str] = _MODEL) -> Iterator[None]:
 
 def _library_of(error: BaseException) -> str | None:
     """The package outside graphplan whose code raised ``error`` (numpy, scipy), or None where graphplan's did."""
-    import os
-
     package = os.path.dirname(os.path.abspath(__file__))
     frame = error.__traceback__
     while frame is not None and frame.tb_next is not None:
