@@ -133,8 +133,7 @@ def check_journals(friction: tuple[FrictionPair, ...], mechanism: Mechanism, mot
     for pair in friction:
         if pair.sliding:
             continue
-        spans = [span for link in (pair.source, pair.target)
-                 if (span := _longest_span(mechanism, motion, link)) is not None]
+        spans = [(link, *span) for link in (pair.source, pair.target) if (span := motion.span(link)) is not None]
         if not spans:
             continue
         longest = max(length for _, length, _ in spans)
@@ -181,19 +180,6 @@ def described(pair: FrictionPair) -> str:
         coefficient = f"f′ = {pair.coefficient:.4g}" if pair.in_vee else f"f = {pair.coefficient:.4g}"
         return f"the slide at {pair.joint} (links {pair.source}–{pair.target}, {coefficient})"
     return f"the journal at {pair.joint} (links {pair.source}–{pair.target}, ρ = {pair.radius:.4g} m)"
-
-
-def _longest_span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[int, float, str] | None:
-    """The largest distance between two points of ``link`` (the same at every position: take the first), with the
-    two points, or None for a link with one point (a slider's block)."""
-    names = sorted(name for name in mechanism.fixed_on.get(link, ()) if name in motion.points)
-    where = {name: complex(*motion.point(name).r[0]) for name in names}
-    spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
-             if np.isfinite(abs(where[a] - where[b]))]
-    if not spans:
-        return None
-    length, between = max(spans)
-    return link, length, between
 
 
 def friction_loads(friction: tuple[FrictionPair, ...], state, reactions: Mapping[str, Vector],

@@ -168,6 +168,19 @@ class Motion:
         return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
                             for value in (motion.angle, motion.omega, motion.epsilon)))
 
+    def span(self, link: int | None = None) -> tuple[float, str] | None:
+        """The largest distance (m) between two points of ``link`` (the same at every position: the first's), or
+        of the whole mechanism at the first position where ``link`` is None, with the two points (``"A–C"``); None
+        for a link with one point (a slider's block).  What a link's mass, inertia or journal is weighed against."""
+        if link is None:
+            names = sorted(self.points)
+        else:
+            names = sorted(name for name in self.mechanism.fixed_on.get(link, ()) if name in self.points)
+        where = {name: complex(*self.point(name).r[0]) for name in names}
+        spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
+                 if math.isfinite(abs(where[a] - where[b]))]
+        return max(spans) if spans else None
+
     def at_positions(self, indices: Sequence[int]) -> Motion:
         """The motion at some of its positions only, in the order given (their warnings renumbered)."""
         chosen = np.asarray(indices)

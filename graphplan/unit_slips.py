@@ -82,7 +82,7 @@ def masses_in_grams(mechanism: Mechanism, motion: Motion) -> tuple[PositionWarni
     (:data:`LONGEST_CRANK`), or, given none, where it is heavier than :func:`heaviest_crank` too."""
     told = []
     for number, link in sorted(mechanism.scene.links.items()):
-        span = _body_span(mechanism, motion, number)
+        span = _body_span(motion, number)
         if span is None or not link.mass > heaviest_bar(span[0]):
             continue
         length, between, own = span
@@ -133,7 +133,7 @@ def inertia_too_large(mechanism: Mechanism, motion: Motion) -> tuple[PositionWar
             continue
         # A block that turns with its guide (a slotted lever's) has its J in the results, and none turns about a
         # radius of gyration wider than the mechanism is across.
-        span = _body_span(mechanism, motion, number)
+        span = _body_span(motion, number)
         if span is None:
             continue
         length, between, own = span
@@ -166,25 +166,12 @@ def _crank_depth(mass: float, inertia: float) -> float | None:
     return mass ** 2 / (2.0 * math.pi * STEEL_DENSITY * inertia)
 
 
-def _body_span(mechanism: Mechanism, motion: Motion, link: int) -> tuple[float, str, bool] | None:
-    """``link``'s span (:func:`_span`) and True, or for a slider's block, which has no span of its own, the whole
+def _body_span(motion: Motion, link: int) -> tuple[float, str, bool] | None:
+    """``link``'s span (:meth:`Motion.span`) and True, or for a slider's block, which has no span of its own, the whole
     mechanism's at the first position and False: what a link's mass and inertia are weighed against."""
-    own = _span(mechanism, motion, link)
+    own = motion.span(link)
     if own is not None:
         return (*own, True)
-    whole = _span(mechanism, motion, None)
+    whole = motion.span()
     return None if whole is None else (*whole, False)
 
-
-def _span(mechanism: Mechanism, motion: Motion, link: int | None) -> tuple[float, str] | None:
-    """The largest distance between two points of ``link`` (the same at every position: the first's), or of the
-    whole mechanism at the first position where ``link`` is None, with the two points; None for a link with one
-    point (a slider's block)."""
-    if link is None:
-        names = sorted(motion.points)
-    else:
-        names = sorted(name for name in mechanism.fixed_on.get(link, ()) if name in motion.points)
-    where = {name: complex(*motion.point(name).r[0]) for name in names}
-    spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
-             if math.isfinite(abs(where[a] - where[b]))]
-    return max(spans) if spans else None
