@@ -301,11 +301,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     key = group_id(group.label)
     paper = _paper(sheet.length_scale)
     is_driver = group is sheet.forces.groups[-1]
-    links = _links(sheet, group, paper)
-    special, special_names = _special_points(sheet, group, paper)
-    links += special
-    forces = _forces_on(sheet, group)
-    scale = _arrow_scale([force.force for force in forces], links)
+    links, special_names, forces, scale = _body_frame(sheet, group, paper)
     arrows: list[Primitive] = []
     drawn: dict[str, tuple[complex, complex, complex]] = {}  # name → (arrow start, arrow end, unit), mm
     anchors: list[Anchor] = []
@@ -390,6 +386,32 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     parted = (Drawing(f"body-{key}", layers, tuple(caption[:2])),
               Drawing(f"equations-{key}", [], (caption[0], *caption[2:]))) if len(caption) > 2 else None
     return Drawing(f"body-{key}", layers, tuple(caption), parted)
+
+
+def _body_frame(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
+                ) -> tuple[list[Primitive], list[str], list[_Force], float]:
+    """The group cut free's links (and its special points) on the paper, those points' names, the forces on it and
+    the μF its arrows are drawn at, which the links' extent sets."""
+    links = _links(sheet, group, paper)
+    special, special_names = _special_points(sheet, group, paper)
+    links += special
+    forces = _forces_on(sheet, group)
+    return links, special_names, forces, _arrow_scale([force.force for force in forces], links)
+
+
+def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...]]]:
+    """By each group's label, the μF (N/mm) its group cut free draws its forces' arrows at, and the reactions drawn
+    whole there at their length at it (a component, R23τ, is no whole reaction; an arrow lengthened to
+    :data:`LEAST_ARROW_MM` is at no scale): what a hand reading of a reaction off the arrows measures."""
+    paper = _paper(sheet.length_scale)
+    found = {}
+    for group in sheet.forces.groups:
+        _, _, forces, scale = _body_frame(sheet, group, paper)
+        whole = tuple(force.name for force in forces if re.fullmatch(r"R\d+", force.name)
+                      and not _negligible(force.force, [other.force for other in forces])
+                      and abs(force.force) / scale >= LEAST_ARROW_MM)
+        found[group.label] = (scale, whole)
+    return found
 
 
 def labels_cover_one_another(drawing: Drawing) -> bool:
@@ -1569,4 +1591,5 @@ def group_id(label: str) -> str:
 
 
 __all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "draws_larger", "enlarged_lever_scale",
-           "group_id", "layout", "lever_loads_at", "rows", "svg_id", "too_short_to_draw", "with_finer_polygons"]
+           "free_body_arrows", "group_id", "layout", "lever_loads_at", "rows", "svg_id", "too_short_to_draw",
+           "with_finer_polygons"]
