@@ -36,7 +36,7 @@ from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
-from .misreadings import SheetPolygons, misread
+from .misreadings import SheetsDrawn, misread
 from .motion import Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions
@@ -125,9 +125,9 @@ class Analysis:
     cycle: CycleWork | None = None
     # Where, between two analysed positions, the friction holds loads that would drive the mechanism (η′ ≤ 0).
     turned_round_spans: tuple[LockedSpan, ...] = ()
-    # By position number, the force polygons the course sheets draw larger than the record, where the run drew them
-    # (:func:`read_off_sheets`): the hand readings are checked against them too.
-    sheet_polygons: Mapping[int, SheetPolygons] = field(default_factory=lambda: MappingProxyType({}))
+    # By position number, the force sheets the course sheets draw larger than the record (without friction and with),
+    # where the run drew them (:func:`read_off_sheets`): the hand readings are checked against them too.
+    sheet_polygons: SheetsDrawn = field(default_factory=lambda: MappingProxyType({}))
 
     def __repr__(self) -> str:
         # The dataclass's own repr ran to hundreds of thousands of characters.
@@ -233,11 +233,11 @@ def analyse(scene: Scene) -> Analysis:
                     loads, balance, with_friction, friction, every, locked_spans, cycle, held_spans)
 
 
-def read_off_sheets(analysis: Analysis, sheets: Mapping[int, SheetPolygons]) -> Analysis:
-    """``analysis`` with the course sheets' polygons drawn larger than the record, ``sheets`` by position number,
-    known to the check of the hand readings: readings measured on a course sheet are told so, not given a
-    ``force_scale`` that would redraw every polygon.  Known only once the sheets are packed, so told only by a run
-    that draws them."""
+def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
+    """``analysis`` with the course sheets' force drawings drawn larger than the record (polygons, groups cut free),
+    ``sheets`` by position number, known to the check of the hand readings: readings measured on a course sheet are
+    told so, not given a ``force_scale`` that would redraw every polygon.  Known only once the sheets are packed, so
+    told only by a run that draws them."""
     if not sheets:
         return analysis
     sheets = MappingProxyType(dict(sheets))

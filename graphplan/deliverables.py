@@ -61,7 +61,8 @@ class Drawing:
     # The headings of the diagrams a part of a drawing cut for the note shows, which its caption names: "Figure 6
     # (part 2 of 3)" alone left the reader to find which of the dynamics' diagrams each part holds.
     shows: tuple[str, ...] = ()
-    # A course sheet's force polygons drawn larger than the record, by position number (:func:`larger_polygons`).
+    # A course sheet's force drawings drawn larger than the record, by position number (:func:`larger_polygons`): a
+    # position's force sheet and its sheet with friction each give one.
     larger_polygons: tuple[tuple[int, SheetPolygons], ...] = ()
 
 
@@ -325,7 +326,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         larger = larger_polygons(panels, sheets)
         for sheet in sheets:
             found.append(Drawing(f"sheet_{sheet.number}", sheet.layers, sheet.size, larger_polygons=tuple(
-                (number, polygons) for number, polygons in larger.items() if polygons.sheet == sheet.number)))
+                (number, polygons) for number, drawn in larger.items() for polygons in drawn
+                if polygons.sheet == sheet.number)))
     if "velocity" in pieces and analysis.velocity_plans:
         tell("drawing the velocity plans of the positions")
         laid_out = panels.named("velocity-plans") if panels else None
@@ -770,7 +772,10 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     made = drawings(scene, analysis, pieces, dynamics, say=say)
     # Readings measured on a course sheet's polygons, drawn larger than the record, are known for what they are
     # only once the sheets are packed: the results, the tables and the note tell them so.
-    larger = {number: polygons for drawing in made for number, polygons in drawing.larger_polygons}
+    larger: dict[int, tuple[SheetPolygons, ...]] = {}
+    for drawing in made:
+        for number, polygons in drawing.larger_polygons:
+            larger[number] = (*larger.get(number, ()), polygons)
     if analysis is not None and larger:
         from .analysis import read_off_sheets
 

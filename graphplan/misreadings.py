@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import statistics
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import TYPE_CHECKING
@@ -116,25 +116,46 @@ class Slips:
 
 @dataclass(frozen=True)
 class SheetPolygons:
-    """A position's force polygons as a course sheet draws them, larger than the record (``forces_N.svg``,
-    results.json's ``polygon_scales``) where the sheet has room: the sheet's number, and by each group's label the μF
-    there of each polygon drawn at another than the record's."""
+    """A position's force sheet as a course sheet draws it, larger than the record (``forces_N.svg``, results.json's
+    ``polygon_scales``) where the sheet has room: the sheet's number; by each group's label the μF there of each
+    polygon drawn at another than the record's; whether it is the force sheet with friction
+    (``forces_friction_N.svg``), whose reactions a hand that measured it read; and by each group's label the μF its
+    group cut free draws its arrows at there, with the reactions drawn whole at their length: a hand reading a
+    reaction off an arrow reads it as off its polygon, at another μF."""
 
     sheet: int
     scales: Mapping[str, float]
+    friction: bool = False
+    arrows: Mapping[str, tuple[float, tuple[str, ...]]] = field(default_factory=lambda: MappingProxyType({}))
+
+    def drawings(self) -> Iterator[tuple[str, Mapping[str, float], Mapping[str, tuple[str, ...]] | None]]:
+        """Each drawing of the sheet a reading may be measured on: its kind (``polygons``, ``arrows``), by group label
+        its μF, and by the same the reactions it draws whole at their length (None: every reaction its polygon
+        draws)."""
+        yield "polygons", self.scales, None
+        yield ("arrows", {label: scale for label, (scale, _) in self.arrows.items()},
+               {label: whole for label, (_, whole) in self.arrows.items()})
+
+
+# By position number, its force sheets drawn larger on the course sheets: one, or several (without friction and with).
+SheetsDrawn = Mapping[int, SheetPolygons | tuple[SheetPolygons, ...]]
 
 
 @dataclass(frozen=True)
 class OnSheet:
-    """Force readings that fit the polygons of the course sheet ``sheet`` rather than the record's they are checked
-    against: by polygon label, (its μF on the sheet, its μF in the record); ``every`` whether they are the readings of
-    every polygon read; ``off`` the largest share by which a reading taken at the sheet's μF is off the
-    construction."""
+    """Force readings that fit a drawing of the course sheet ``sheet`` rather than the record's polygons they are
+    checked against: by polygon label, (its μF on the sheet, its μF in the record); ``every`` whether they are the
+    readings of every polygon read; ``off`` the largest share by which a reading taken at the sheet's μF is off the
+    construction.  ``drawing`` is what of the sheet they fit (``polygons``, or ``arrows``: the groups cut free),
+    ``friction`` whether of the force sheet with friction, ``readings`` the readings that fit it."""
 
     sheet: int
     polygons: Mapping[str, tuple[float, float]]
     every: bool
     off: float
+    drawing: str = "polygons"
+    friction: bool = False
+    readings: frozenset[str] = frozenset()
 
     def scales(self, which: int, mark: str = ".") -> str:
         """The sheet's μF (``which`` 0) or the record's (1): ``4``, or ``II(3,4) 4, I(1,2) 10`` where they differ."""
@@ -151,6 +172,11 @@ class OnSheet:
             return f"{next(iter(values.values())):.4g}".replace(".", mark)
         return ", ".join(f"{value:.4g} ({label})".replace(".", mark) for label, value in values.items())
 
+    @property
+    def kind(self) -> str:
+        """The locale's key of what the readings fit (:data:`ON_SHEET_KINDS`)."""
+        return f"sheet_drawn_{self.drawing}" + ("_friction" if self.friction else "")
+
 
 @dataclass(frozen=True)
 class Segment:
@@ -164,12 +190,12 @@ class Segment:
 
 
 def slips(position: VelocityPosition, drawing: Drawing, joint: str,
-          sheet: SheetPolygons | None = None) -> Slips | None:
+          sheet: SheetPolygons | Iterable[SheetPolygons] | None = None) -> Slips | None:
     """The hand readings of ``position`` far off its constructed plans and polygons, or None where all are near.
 
     ``drawing`` is the scene's (its precision and the keys a rescaled drawing is set by), ``joint`` the driver's
-    point, whose vector on a plan is its pole distance; ``sheet`` the position's polygons as the course sheet draws
-    them larger, where the run drew the sheets so.
+    point, whose vector on a plan is its pole distance; ``sheet`` the position's force sheets as the course sheets
+    draw them larger (:class:`SheetPolygons`, one or several), where the run drew the sheets so.
     """
     precision = drawing.drafting_precision
     constructed = {row.quantity: row.plan for row in position.errors if row.source == "construction"}
@@ -178,7 +204,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
                 if row.source == "measured" and row.quantity in constructed and not is_balancing(row.quantity)]
     far = [(row, plan) for row, plan in measured if _far_off(row, plan, precision)]
     # Polygons measured on the course sheet, drawn larger there: no scale of the scene's is off, the drawing read is.
-    on_sheet = _on_sheet(measured, far, sheet, precision)
+    on_sheet = _on_sheet(position, measured, far, _drawn_sheets(sheet), precision)
     if on_sheet is not None:
         measured = [(row, plan) for row, plan in measured if not _read_on_sheet(row, on_sheet)]
         far = [(row, plan) for row, plan in far if not _read_on_sheet(row, on_sheet)]
@@ -264,36 +290,51 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
 
 
 def _read_on_sheet(row: ErrorRow, on_sheet: OnSheet) -> bool:
-    """Whether a measured row is a reading of a polygon found read off the course sheet."""
-    return _plan_of(row) == "forces" and row.polygon in on_sheet.polygons
+    """Whether a measured row is a reading found read off the course sheet."""
+    return _plan_of(row) == "forces" and row.reading in on_sheet.readings
 
 
-def _on_sheet(measured: list[tuple[ErrorRow, float]], far: list[tuple[ErrorRow, float]],
-              sheet: SheetPolygons | None, precision: float) -> OnSheet | None:
-    """The polygons whose readings fit their μF on the course ``sheet`` (drawn larger there than the record), where
-    one reading of them at least is far off the record's: a student who printed the course sheet measured it.
+def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]], far: list[tuple[ErrorRow, float]],
+              sheets: tuple[SheetPolygons, ...], precision: float) -> OnSheet | None:
+    """The readings that fit a drawing of the course ``sheets`` drawn larger there than the record (its polygons, or
+    its groups cut free's arrows; of the force sheet, or of the force sheet with friction, taken at the reactions with
+    friction), where one reading of them at least is far off the record's: a student who printed the course sheet
+    measured it.  Of the drawings they fit, the one fitting the most readings, then the nearest.
 
-    Two readings of a polygon or more fit as :func:`_one_scale` has readings fit one scale (each within
+    By polygon label, two readings or more fit as :func:`_one_scale` has readings fit one scale (each within
     :data:`FAR_OFF_PERCENT` of it, the scale they agree at within 5 % of the sheet's, as :func:`on_grid` has a
     small plan's); one alone as a reading at another standard μF is told (within the drafting ``precision`` and 2 %
-    of the reaction's length on the sheet).  None where the run drew no sheet so or no polygon's readings fit it."""
-    if sheet is None:
-        return None
-    by_polygon: dict[str, list[tuple[ErrorRow, float]]] = {}
-    for row, plan in measured:
-        if _plan_of(row) == "forces":
-            by_polygon.setdefault(row.polygon, []).append((row, plan))
-    fitting = {}
-    for label, rows in by_polygon.items():
-        at, record = sheet.scales.get(label), rows[0][0].per_millimetre
-        if at is not None and record and not math.isclose(at, record) and _fit_at(rows, at, record, precision):
-            fitting[label] = (at, record)
-    if not any(row.polygon in fitting for row, _ in far if _plan_of(row) == "forces"):
-        return None
-    off = max((abs(row.plan * fitting[row.polygon][0] / row.per_millimetre - plan) / abs(plan)
-               for row, plan in measured if _plan_of(row) == "forces" and row.polygon in fitting and plan),
-              default=0.0)
-    return OnSheet(sheet.sheet, MappingProxyType(fitting), len(fitting) == len(by_polygon), off)
+    of the reaction's length on the sheet).  None where the run drew no sheet so or no readings fit it."""
+    reactions = [(row, plan) for row, plan in measured if _plan_of(row) == "forces"]
+    rubbing = getattr(position, "with_friction", None)
+    best = None
+    for sheet in sheets:
+        if sheet.friction and rubbing is None:
+            continue
+        # Readings of the force sheet with friction measure its reactions, not those they are checked against.
+        values = [(row, abs(rubbing.reactions[row.quantity].force) if sheet.friction else plan)
+                  for row, plan in reactions if not sheet.friction or row.quantity in rubbing.reactions]
+        for drawing, scales, whole in sheet.drawings():
+            by_polygon: dict[str, list[tuple[ErrorRow, float]]] = {}
+            for row, value in values:
+                if whole is None or _name(row.reading) in whole.get(row.polygon, ()):
+                    by_polygon.setdefault(row.polygon, []).append((row, value))
+            fitting = {}
+            for label, rows in by_polygon.items():
+                at, record = scales.get(label), rows[0][0].per_millimetre
+                if at is not None and record and not math.isclose(at, record) and _fit_at(rows, at, record,
+                                                                                          precision):
+                    fitting[label] = (at, record)
+            read = [(row, value) for label in fitting for row, value in by_polygon[label]]
+            if not any(row is each for row, _ in read for each, _ in far):
+                continue
+            off = max((abs(row.plan * fitting[row.polygon][0] / row.per_millimetre - value) / abs(value)
+                       for row, value in read if value), default=0.0)
+            found = OnSheet(sheet.sheet, MappingProxyType(fitting), len(read) == len(reactions), off, drawing,
+                            sheet.friction, frozenset(row.reading for row, _ in read))
+            if best is None or (len(found.readings), -found.off) > (len(best.readings), -best.off):
+                best = found
+    return best
 
 
 def _fit_at(rows: list[tuple[ErrorRow, float]], at: float, record: float, precision: float) -> bool:
@@ -500,7 +541,7 @@ _ROUND_SHARE = 0.05
 
 
 def sharing(rescaled: Rescaled, position: VelocityPosition, drawn: Iterable[VelocityPosition], drawing: Drawing,
-            joint: str, sheets: Mapping[int, SheetPolygons] | None = None) -> tuple[tuple[int, ...], dict[int, float]]:
+            joint: str, sheets: SheetsDrawn | None = None) -> tuple[tuple[int, ...], dict[int, float]]:
     """The other positions whose drawings the key of ``rescaled`` sets too: those whose readings of them fit the
     present scale, and (by number) the value of the key those found drawn at another scale ask, where it is not this
     one's.  The key is the scene's, one for every position (every plan sheet's pole or scale, ``force_scale`` for
@@ -579,7 +620,7 @@ def factor_text(rescaled: Rescaled, mark: str = ".") -> str:
 
 
 def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[VelocityPosition, ...],
-                   drawing: Drawing, joint: str, sheets: Mapping[int, SheetPolygons] | None = None) -> str:
+                   drawing: Drawing, joint: str, sheets: SheetsDrawn | None = None) -> str:
     """Where the key of ``rescaled`` sets other positions whose readings fit it as it is, or ask it another value
     (:func:`sharing`): that said, with how to keep it; else nothing.  Asked only where the warning gives the key."""
     fitting, asking = sharing(rescaled, position, drawn, drawing, joint, sheets)
@@ -596,7 +637,7 @@ def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[
 
 
 def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
-            sheets: Mapping[int, SheetPolygons] | None = None) -> tuple[PositionWarning, ...]:
+            sheets: SheetsDrawn | None = None) -> tuple[PositionWarning, ...]:
     """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans; ``sheets``
     the polygons the course sheets draw larger than the record, by position number, where the run drew them."""
     drawing = mechanism.scene.drawing
@@ -704,21 +745,38 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
     return tuple(warnings)
 
 
-def sheet_of(position: VelocityPosition, sheets: Mapping[int, SheetPolygons]) -> SheetPolygons | None:
-    """The course sheet's polygons of a position of plans (a position among the velocity plans alone has none)."""
-    return sheets.get(position.number) if hasattr(position, "acceleration") else None
+def sheet_of(position: VelocityPosition, sheets: SheetsDrawn) -> tuple[SheetPolygons, ...]:
+    """The course sheets' force drawings of a position of plans (a position among the velocity plans alone has
+    none): its force sheet's and its sheet with friction's, where drawn larger."""
+    return _drawn_sheets(sheets.get(position.number)) if hasattr(position, "acceleration") else ()
+
+
+def _drawn_sheets(sheet: SheetPolygons | Iterable[SheetPolygons] | None) -> tuple[SheetPolygons, ...]:
+    """One force sheet drawn larger, or several (a position's without friction and with), as several."""
+    if sheet is None:
+        return ()
+    return (sheet,) if isinstance(sheet, SheetPolygons) else tuple(sheet)
+
+
+# What of a course sheet readings fit, in the warning's words, by :attr:`OnSheet.kind`.
+ON_SHEET_KINDS = {"sheet_drawn_polygons": "the polygons",
+                  "sheet_drawn_polygons_friction": "the polygons with friction",
+                  "sheet_drawn_arrows": "the arrows of the groups cut free",
+                  "sheet_drawn_arrows_friction": "the arrows of the groups cut free with friction"}
 
 
 def on_sheet_detail(found: OnSheet, number: int) -> str:
-    """The warning's words for force readings that fit the course sheet's polygons of position ``number``, drawn
-    larger there than the record's they are checked against."""
+    """The warning's words for force readings that fit a drawing of the course sheet of position ``number``, drawn
+    larger there than the record's polygons they are checked against."""
     what = ("the force polygons" if found.every and len(found.polygons) > 1
             else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
-    return (f"every reading of {what} fits the polygons of position {number} on the course sheet (sheet_{found.sheet}"
-            f".svg, at μF = {found.scales(0)} N/mm; taken at it, every reading is within {found.off * 100.0:.1f} % "
-            f"of the polygons as constructed), which draws them larger where it has room, not those of its force "
-            f"sheet (forces_{number}.svg, at μF = {found.scales(1)} N/mm), which they are checked against: readings "
-            f"of the course sheet's polygons? measure forces_{number}.svg, or give these readings times "
+    plain = found.kind == "sheet_drawn_polygons"
+    return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} on the course sheet "
+            f"(sheet_{found.sheet}.svg, at μF = {found.scales(0)} N/mm; taken at it, every reading is within "
+            f"{found.off * 100.0:.1f} % of the polygons as constructed), which draws them larger where it has room, "
+            f"not {'those' if plain else 'the polygons'} of its force sheet (forces_{number}.svg, at μF = "
+            f"{found.scales(1)} N/mm), which they are checked against: readings of the course sheet's "
+            f"{'polygons' if plain else 'drawing'}? measure forces_{number}.svg, or give these readings times "
             f"{found.factor()}")
 
 
@@ -816,7 +874,7 @@ def value_kind(quantity: str) -> str:
 _VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet", "Rescaled", "Segment",
-           "SheetPolygons", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "ON_SHEET_KINDS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet",
+           "Rescaled", "Segment", "SheetPolygons", "SheetsDrawn", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread",
            "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "sheet_of", "slips",
            "typed_unit", "value_kind"]

@@ -102,6 +102,9 @@ class Panel:
     # A force sheet drawn larger for a course sheet with room (:func:`sheet._larger_where_room`): the μF of each of its
     # polygons drawn at another than the record's, by its group's label, for the check of readings measured on it.
     polygon_scales: tuple[tuple[str, float], ...] = ()
+    # Of the same, the μF each group cut free (drawn larger too, or as the record) draws its arrows at, by its label,
+    # with the reactions drawn whole at their length (:func:`forces.free_body_arrows`): readings measured on them too.
+    body_arrows: tuple[tuple[str, float, tuple[str, ...]], ...] = ()
     # The drawing as it goes on the sheet, where ``layers`` leaves out labels that only room was kept for: the
     # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
     # diagrams, measured by its unlettered layers).  None: ``layers`` as they are.

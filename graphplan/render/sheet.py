@@ -564,7 +564,9 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         record = drawn.forces.group_scales
         return replace(_finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0],
                        polygon_scales=tuple((label, scale) for label, scale in bigger.forces.group_scales.items()
-                                            if scale != record.get(label)))
+                                            if scale != record.get(label)),
+                       body_arrows=tuple((label, scale, whole) for label, (scale, whole)
+                                         in force_layout.free_body_arrows(bigger).items() if whole))
 
     return whole, ways, larger
 
@@ -1168,19 +1170,22 @@ def course_sheets(analysis: Analysis, sheet: str | None = None, details: Details
     return _numbered_set(kinds, chosen, scene.locale, details)
 
 
-def larger_polygons(panels: CoursePanels, sheets: Sequence[Sheet]) -> dict[int, SheetPolygons]:
-    """By position number, the force polygons the course ``sheets`` draw larger than the record (the sheet each
-    stands on, their μF there), for the check of readings measured on them
-    (:func:`~graphplan.analysis.read_off_sheets`): the polygons without friction, which the readings are checked
-    against."""
-    drawn = {panel.name: panel for panel in panels.forces if panel.polygon_scales}
-    found = {}
+def larger_polygons(panels: CoursePanels, sheets: Sequence[Sheet]) -> dict[int, tuple[SheetPolygons, ...]]:
+    """By position number, the force drawings the course ``sheets`` draw larger than the record (the sheet each
+    stands on, the μF there of its polygons and of its groups' arrows), for the check of readings measured on them
+    (:func:`~graphplan.analysis.read_off_sheets`): the force sheet's and, with friction, the force sheet with
+    friction's, whose reactions a hand that measured it read."""
+    drawn = {panel.name: panel for panel in panels.forces if panel.polygon_scales or panel.body_arrows}
+    found: dict[int, list[SheetPolygons]] = {}
     for sheet in sheets:
         for name in sheet.panels:
-            number = name.removeprefix("forces-")
+            friction = name.startswith("forces-friction-")
+            number = name.removeprefix("forces-friction-" if friction else "forces-")
             if name in drawn and number.isdigit():
-                found[int(number)] = SheetPolygons(sheet.number, dict(drawn[name].polygon_scales))
-    return found
+                found.setdefault(int(number), []).append(SheetPolygons(
+                    sheet.number, dict(drawn[name].polygon_scales), friction,
+                    {label: (scale, whole) for label, scale, whole in drawn[name].body_arrows}))
+    return {number: tuple(each) for number, each in found.items()}
 
 
 def machine_sheets(dynamics: Sequence[Panel], balancing: Sequence[Panel], sheet: str, locale: str,
