@@ -137,8 +137,8 @@ class SheetPolygons:
                {label: whole for label, (_, whole) in self.arrows.items()})
 
 
-# By position number, its force sheets drawn larger on the course sheets: one, or several (without friction and with).
-SheetsDrawn = Mapping[int, SheetPolygons | tuple[SheetPolygons, ...]]
+# By position number, its force sheets drawn larger on the course sheets (without friction, with friction, or both).
+SheetsDrawn = Mapping[int, tuple[SheetPolygons, ...]]
 
 
 @dataclass(frozen=True)
@@ -190,11 +190,11 @@ class Segment:
 
 
 def slips(position: VelocityPosition, drawing: Drawing, joint: str,
-          sheet: SheetPolygons | Iterable[SheetPolygons] | None = None) -> Slips | None:
+          sheets: tuple[SheetPolygons, ...] = ()) -> Slips | None:
     """The hand readings of ``position`` far off its constructed plans and polygons, or None where all are near.
 
     ``drawing`` is the scene's (its precision and the keys a rescaled drawing is set by), ``joint`` the driver's
-    point, whose vector on a plan is its pole distance; ``sheet`` the position's force sheets as the course sheets
+    point, whose vector on a plan is its pole distance; ``sheets`` the position's force sheets as the course sheets
     draw them larger (:class:`SheetPolygons`, one or several), where the run drew the sheets so.
     """
     precision = drawing.drafting_precision
@@ -204,7 +204,7 @@ def slips(position: VelocityPosition, drawing: Drawing, joint: str,
                 if row.source == "measured" and row.quantity in constructed and not is_balancing(row.quantity)]
     far = [(row, plan) for row, plan in measured if _far_off(row, plan, precision)]
     # Polygons measured on the course sheet, drawn larger there: no scale of the scene's is off, the drawing read is.
-    on_sheet = _on_sheet(position, measured, far, _drawn_sheets(sheet), precision)
+    on_sheet = _on_sheet(position, measured, far, sheets, precision)
     if on_sheet is not None:
         measured = [(row, plan) for row, plan in measured if not _read_on_sheet(row, on_sheet)]
         far = [(row, plan) for row, plan in far if not _read_on_sheet(row, on_sheet)]
@@ -748,14 +748,7 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
 def sheet_of(position: VelocityPosition, sheets: SheetsDrawn) -> tuple[SheetPolygons, ...]:
     """The course sheets' force drawings of a position of plans (a position among the velocity plans alone has
     none): its force sheet's and its sheet with friction's, where drawn larger."""
-    return _drawn_sheets(sheets.get(position.number)) if hasattr(position, "acceleration") else ()
-
-
-def _drawn_sheets(sheet: SheetPolygons | Iterable[SheetPolygons] | None) -> tuple[SheetPolygons, ...]:
-    """One force sheet drawn larger, or several (a position's without friction and with), as several."""
-    if sheet is None:
-        return ()
-    return (sheet,) if isinstance(sheet, SheetPolygons) else tuple(sheet)
+    return sheets.get(position.number, ()) if hasattr(position, "acceleration") else ()
 
 
 # What of a course sheet readings fit, in the warning's words, by :attr:`OnSheet.kind`.
@@ -875,6 +868,6 @@ _VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 
 __all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "ON_SHEET_KINDS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet",
-           "Rescaled", "Segment", "SheetPolygons", "SheetsDrawn", "Slips", "factor_text", "in_centimetres", "in_metres", "in_units", "misread",
-           "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "sheet_of", "slips",
+           "Rescaled", "Segment", "SheetPolygons", "SheetsDrawn", "Slips", "factor_text", "in_centimetres", "in_metres",
+           "in_units", "misread", "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "sheet_of", "slips",
            "typed_unit", "value_kind"]

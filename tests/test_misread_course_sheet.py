@@ -139,5 +139,5 @@ def test_without_the_sheets_drawn_the_advice_is_as_before():
     # Readings at a μF neither the sheet's nor the record's are advised the key, the sheet known or not.
     other = analyse(_scene({POSITION: {"forces": _millimetres({"II(3,4)": 2.5, "I(1,2)": 20.0})}}))
     drawn_plans = (*other.plans, *other.velocity_plans)
-    (told,) = misread(other.mechanism, drawn_plans, {POSITION: SheetPolygons(3, drawn)})
+    (told,) = misread(other.mechanism, drawn_plans, {POSITION: (SheetPolygons(3, drawn),)})
     assert "course sheet" not in told.detail and "force_scale = 2.5" in told.detail

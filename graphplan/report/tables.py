@@ -220,7 +220,8 @@ def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str,
                 else text["errors_polygons_named" if len(found.polygons) > 1 else "errors_polygon"].format(
                     label=labels, labels=labels))
     return text["note_on_sheet" if in_note else "errors_on_sheet"].format(
-        polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet, drawn=found.scales(0, mark),
+        polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet,
+        drawn=found.scales(0, mark),
         record=found.scales(1, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), factor=found.factor(mark),
         sheet_file=f"sheet_{found.sheet}.svg", forces_file=f"forces_{number}.svg")
 
