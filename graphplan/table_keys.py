@@ -8,7 +8,9 @@ are listed here, a module that imports nothing, for every reader to ask.
 
 from __future__ import annotations
 
-# The tables a key is told to be written under, with every key each takes (whatever its kind or mode).
+# The tables a key is told to be written under, with every key each takes (whatever its kind or mode).  Written out
+# here, not gathered from the readers, which import this module; tests/test_table_keys_agree.py reads scenes of every
+# kind and mode and checks that these are the keys the readers take, no more and no fewer.
 TABLE_KEYS = {
     "scene": ("title", "locale", "gravity"),
     "project": ("author", "checked_by", "approved_by", "organization", "designation", "date"),
@@ -24,8 +26,8 @@ TABLE_KEYS = {
                  "start", "duration", "method", "rtol", "steady_tolerance", "resisting_torque", "resisting_power",
                  "driving_torque", "driving_power", "driving", "resisting", "inertia"),
     "balancing": ("masses", "planes", "plane_names", "correction_radius"),
-    "vibration": ("mass", "stiffness", "shaft", "damping_ratio", "omega", "rpm", "transmissibility", "base_amplitude",
-                  "unbalance", "unbalanced_mass", "eccentricity"),
+    "vibration": ("mass", "stiffness", "shaft", "damping_ratio", "damping", "omega", "rpm", "transmissibility",
+                  "base_amplitude", "unbalance", "unbalanced_mass", "eccentricity"),
 }
 # Tables a key is not told to be written under (one of several of their kind: a link's, a group's, a load's), whose
 # keys still make a key another table's alone no longer: ``inertia`` is [dynamics]' and [forces]' and a link's.
