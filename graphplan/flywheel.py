@@ -415,6 +415,11 @@ _NESTED_KEYS = {"brake": ("damping",), "clutch": ("engage_at",), "start": ("angl
 # mill's, turn at tens of rev/min; the fastest, a storage flywheel's of composite, at some 50 000.
 SLOWEST_FLYWHEEL_SHAFT_RPM = 1.0
 FASTEST_FLYWHEEL_SHAFT_RPM = 100_000.0
+# The flywheel for δ is ΔWmax/(ωm²·δ): a mean speed no shaft with a flywheel turns at (rpm = 1e-12, a slip of the
+# exponent) made it 1e24 times the one at 1 rpm without a word.  The shafts a flywheel evens out turn within the
+# flywheel's own bounds: a large press's main shaft at some 10 rev/min, an engine's crank at up to some 10 000.
+SLOWEST_MEAN_RPM = SLOWEST_FLYWHEEL_SHAFT_RPM
+FASTEST_MEAN_RPM = FASTEST_FLYWHEEL_SHAFT_RPM
 
 
 def misplaced_keys(where: str, path: str) -> dict[str, str]:
@@ -514,6 +519,8 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
                          hint=f"; {percentage_question(delta, 'δ')}")
     speed_key = next((key for key in ("rpm", "omega") if table.has(key)), None)
     omega = table.speed(None, positive=True)
+    if speed_key is not None:
+        _refuse_mean_speed(table, speed_key, omega)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     if shaft is not None and not SLOWEST_FLYWHEEL_SHAFT_RPM <= shaft <= FASTEST_FLYWHEEL_SHAFT_RPM:
         raise SceneError(table.where("flywheel_shaft_rpm"), f"must be within {SLOWEST_FLYWHEEL_SHAFT_RPM:g}–"
@@ -537,6 +544,24 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     table.done(elsewhere={**keys_of_other_tables("dynamics"), **misplaced_keys(table.path, table.path)})
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
                         count=count, motion=motion, speed_key=speed_key)
+
+
+def _refuse_mean_speed(table: Table, key: str, omega: float) -> None:
+    """Raise :class:`SceneError` at ``key`` (``rpm`` or ``omega``, ``omega`` rad/s as read) for a mean speed outside
+    :data:`SLOWEST_MEAN_RPM`–:data:`FASTEST_MEAN_RPM`, told in the unit it was typed in."""
+    typed = table.data[key]
+    in_rpm = key == "rpm"
+    rpm = typed if in_rpm else omega / RPM
+    if SLOWEST_MEAN_RPM <= rpm <= FASTEST_MEAN_RPM:
+        return
+    bounds = (f"{SLOWEST_MEAN_RPM:g}–{FASTEST_MEAN_RPM:g} rpm" if in_rpm else
+              f"{SLOWEST_MEAN_RPM * RPM:.4g}–{FASTEST_MEAN_RPM * RPM:.5g} rad/s ({SLOWEST_MEAN_RPM:g}–"
+              f"{FASTEST_MEAN_RPM:g} rpm)")
+    nearest = SLOWEST_MEAN_RPM if rpm < SLOWEST_MEAN_RPM else FASTEST_MEAN_RPM
+    slip = "; a slip of the exponent?" if not SLOWEST_MEAN_RPM / 1000 <= rpm <= FASTEST_MEAN_RPM * 1000 else ""
+    raise SceneError(table.where(key), f"must be within {bounds}, as a shaft a flywheel evens out turns (a press's "
+                     "some 10–100 rpm, an engine's up to some 10 000): the flywheel for delta is ΔWmax/(ωm²·δ), "
+                     f"{(nearest / rpm) ** 2:.3g} times the one at {nearest:g} rpm here", typed, hint=slip)
 
 
 def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:

@@ -29,6 +29,26 @@ SHORTEST_BRAKE_TIME_CONSTANT = 0.01
 # The overload capacity λ = Mmax/MN a Kloss motor may have: catalogues give 1.6 to 3.5 (crane motors some 4), so one
 # of 10 or more is no induction motor, most likely the percentage (220 for λ = 2.2) typed for the ratio.
 LARGEST_OVERLOAD = 10.0
+# The motor's speed over the driving shaft's, u.  A ratio no gear has (1e12, or 1e-12, a slip of the exponent) ran
+# without a word: the shaft turned at the motor's speed over u, and the rotor's inertia came to it times u².  The
+# strongest reducers a machine is driven through, a multi-stage worm gear's or a slewing drive's, reach some 1:10 000;
+# the fastest step-up gears, a centrifuge's or a wind turbine's generator's, some 100:1.
+SMALLEST_GEAR_RATIO = 0.001
+LARGEST_GEAR_RATIO = 100_000.0
+# A Kloss motor's rated power (W): the smallest induction motors, a fan's shaded-pole ones, give a few watts, the
+# largest, a compressor station's or a rolling mill's, some tens of megawatts.  Kloss' torques follow P, so
+# power = 1e-12 gave a motor of no torque, and a stall told as the motor's weakness.
+SMALLEST_MOTOR_POWER = 1.0
+LARGEST_MOTOR_POWER = 1e9
+# A motor's speeds (rev/min): its synchronous and rated speeds, a linear one's no-load speed and its points'.  The
+# slowest motors, low-speed hydraulic ones and many-poled induction ones, turn at some tens of rev/min; the fastest,
+# a high-speed spindle's or a turbo-compressor's, at some 100 000 to 200 000.
+SLOWEST_MOTOR_RPM = 1.0
+FASTEST_MOTOR_RPM = 1_000_000.0
+# An induction motor's rated slip: the largest motors slip some 0.3 %, small and high-slip ones (crane motors, NEMA
+# design D) up to some 15 %.  A slip of 1e-12 made Kloss' characteristic a wall the run could not integrate.
+SMALLEST_RATED_SLIP = 0.001
+LARGEST_RATED_SLIP = 0.5
 
 
 @dataclass(frozen=True)
@@ -141,8 +161,15 @@ class MotionSpec:
 
 def _read_motor(table: Table) -> tuple[Motor, float | None]:
     kind = table.choice("kind", MOTOR_KINDS)
-    drive = {"gear_ratio": table.number("gear_ratio", 1.0, positive=True),
-             "rotor_inertia": table.number("rotor_inertia", 0.0, non_negative=True)}
+    gear_ratio = table.number("gear_ratio", 1.0, positive=True)
+    if not SMALLEST_GEAR_RATIO <= gear_ratio <= LARGEST_GEAR_RATIO:
+        raise SceneError(table.where("gear_ratio"), f"must be within {SMALLEST_GEAR_RATIO:g}–{LARGEST_GEAR_RATIO:g}, "
+                         "the motor's speed over the driving shaft's, as a machine's gears go (a reducer's some "
+                         "2–1000, 14.4 from a motor's 1440 rpm to a press's 100; a step-up gear's down to some "
+                         "0.01): the shaft turns at the motor's speed over it, and the rotor's inertia comes to it "
+                         "times its square", gear_ratio,
+                         hint=_exponent_slip(gear_ratio, SMALLEST_GEAR_RATIO, LARGEST_GEAR_RATIO))
+    drive = {"gear_ratio": gear_ratio, "rotor_inertia": table.number("rotor_inertia", 0.0, non_negative=True)}
     off_at = table.number("off_at", None, non_negative=True)
     if kind == "constant":
         motor: Motor = ConstantTorque(table.number("torque"), **drive)
@@ -163,11 +190,24 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
                 motor = LinearMotor.through(points[0], points[1], **drive)
             except ValueError as error:
                 raise SceneError(table.where("points"), str(error).split(": ", 1)[1]) from None
+            # A point at rest is the stall torque's: the line's no-load speed is the motor's speed that is bounded.
+            _refuse_motor_speed(table.where("points"), motor.no_load / RPM, table.data["points"],
+                                f" (their line gives no torque at {motor.no_load / RPM:.4g} rpm, its no-load speed)")
         else:
-            motor = LinearMotor(table.number("stall_torque", positive=True),
-                                table.number("no_load_rpm", positive=True) * RPM, **drive)
+            stall_torque = table.number("stall_torque", positive=True)
+            no_load_rpm = table.number("no_load_rpm", positive=True)
+            _refuse_motor_speed(table.where("no_load_rpm"), no_load_rpm)
+            motor = LinearMotor(stall_torque, no_load_rpm * RPM, **drive)
     else:
         power = table.number("power", positive=True)
+        if not SMALLEST_MOTOR_POWER <= power <= LARGEST_MOTOR_POWER:
+            # 0.75 for a 0.75 kW motor is the likelier slip than a motor of under a watt driving a machine.
+            kilowatts = (f"; kilowatts typed for watts? (the scene's power is in W, {power:g} kW is power = "
+                         f"{power * 1000:g})" if SMALLEST_MOTOR_POWER <= power * 1000 < 1000 else "")
+            raise SceneError(table.where("power"), f"must be within {SMALLEST_MOTOR_POWER:g} W–"
+                             f"{LARGEST_MOTOR_POWER / 1e6:g} MW, as induction motors are built (a fan's some watts, a "
+                             "rolling mill's some tens of megawatts): Kloss' torques are in proportion to it", power,
+                             hint=kilowatts or _exponent_slip(power, SMALLEST_MOTOR_POWER, LARGEST_MOTOR_POWER))
         overload = table.number("overload")
         if not overload > 1:
             raise SceneError(table.where("overload"), "must be > 1 (it is Mmax/Mrated)", overload)
@@ -187,20 +227,57 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
                              f"(got {', '.join(given) or 'none'})")
         synchronous = table.number("synchronous_rpm", None, positive=True)
         rated = table.number("rated_rpm", None, positive=True)
+        for key, speed in (("synchronous_rpm", synchronous), ("rated_rpm", rated)):
+            if speed is not None:
+                _refuse_motor_speed(table.where(key), speed)
         slip = table.number("rated_slip", None)
         if slip is not None and not 0 < slip < 1:
             # A catalogue's "sN = 4 %" typed as 4, as δ and ζ are told.
             percentage = f"; {percentage_question(slip, 'rated_slip')}" if 1 <= slip < 100 else ""
             raise SceneError(table.where("rated_slip"), "must be between 0 and 1", slip, hint=percentage)
+        if slip is not None:
+            _refuse_rated_slip(table.where("rated_slip"), slip, slip)
         if slip is None:
             if not rated < synchronous:
                 raise SceneError(table.where("rated_rpm"), f"must be below synchronous_rpm ({synchronous!r})", rated)
             slip = 1.0 - rated / synchronous
+            # Two speeds typed a hair apart (1499.9999 under 1500) give a slip no motor has, told at the rated one.
+            _refuse_rated_slip(table.where("rated_rpm"), slip, rated, f" (with synchronous_rpm = {synchronous:g}, "
+                               f"the slip 1 − rated_rpm/synchronous_rpm is {slip:.3g})")
         elif synchronous is None:
             synchronous = rated / (1.0 - slip)
         motor = KlossMotor(power, synchronous * RPM, slip, overload, **drive)
     table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return motor, off_at
+
+
+def _exponent_slip(value: float, smallest: float, largest: float) -> str:
+    """The hint of a value a thousand times or more beyond its bounds, which is no machine's but a slip of the
+    exponent (1e12 for 12); "" for one nearer, which may be another unit and is told so where it is checked."""
+    return "; a slip of the exponent?" if value < smallest / 1000 or value > largest * 1000 else ""
+
+
+def _refuse_motor_speed(where: str, rpm: float, typed: object = None, derived: str = "") -> None:
+    """Raise :class:`SceneError` at ``where`` for a motor's speed (rev/min) outside the speeds motors turn at: the
+    value typed there, or one ``typed`` there gives, as ``derived`` says."""
+    if SLOWEST_MOTOR_RPM <= rpm <= FASTEST_MOTOR_RPM:
+        return
+    bounds = f"{SLOWEST_MOTOR_RPM:g}–{FASTEST_MOTOR_RPM:.0f} rpm"
+    raise SceneError(where, (f"gives a speed outside {bounds}" if derived else f"must be within {bounds}") +
+                     ", as motors turn (a low-speed hydraulic one some tens, a 50 Hz induction one up to 3000, a "
+                     f"high-speed spindle some 100 000){derived}", rpm if typed is None else typed,
+                     hint=_exponent_slip(rpm, SLOWEST_MOTOR_RPM, FASTEST_MOTOR_RPM))
+
+
+def _refuse_rated_slip(where: str, slip: float, typed: float, derived: str = "") -> None:
+    """Raise :class:`SceneError` at ``where`` (``rated_slip``, or ``rated_rpm`` where the slip follows from the two
+    speeds, said in ``derived``) for a rated slip outside the slips of induction motors."""
+    if SMALLEST_RATED_SLIP <= slip <= LARGEST_RATED_SLIP:
+        return
+    bounds = f"{SMALLEST_RATED_SLIP:g}–{LARGEST_RATED_SLIP:g}"
+    raise SceneError(where, (f"gives a rated slip outside {bounds}" if derived else f"must be within {bounds}") +
+                     ", as induction motors slip (a large one some 0.003, a small or high-slip one up to some 0.15)"
+                     f"{derived}: Kloss' characteristic is drawn through it", typed)
 
 
 def _owner(table: Table) -> str:
