@@ -121,9 +121,11 @@ class SheetPolygons:
     polygon drawn at another than the record's; whether it is the force sheet with friction
     (``forces_friction_N.svg``), whose reactions a hand that measured it read; and by each group's label the μF its
     group cut free draws its arrows at there, with the reactions drawn whole at their length: a hand reading a
-    reaction off an arrow reads it as off its polygon, at another μF."""
+    reaction off an arrow reads it as off its polygon, at another μF.  ``sheet`` None is the record itself, its
+    groups cut free in ``forces_N.svg`` (:func:`~graphplan.render.drawings.record_arrows`): no polygon of its own
+    drawn larger, its arrows at theirs."""
 
-    sheet: int
+    sheet: int | None
     scales: Mapping[str, float]
     friction: bool = False
     arrows: Mapping[str, tuple[float, tuple[str, ...]]] = field(default_factory=lambda: MappingProxyType({}))
@@ -147,9 +149,10 @@ class OnSheet:
     checked against: by polygon label, (its μF on the sheet, its μF in the record); ``every`` whether they are the
     readings of every polygon read; ``off`` the largest share by which a reading taken at the sheet's μF is off the
     construction.  ``drawing`` is what of the sheet they fit (``polygons``, or ``arrows``: the groups cut free),
-    ``friction`` whether of the force sheet with friction, ``readings`` the readings that fit it."""
+    ``friction`` whether of the force sheet with friction, ``readings`` the readings that fit it.  ``sheet`` None:
+    the record's own arrows, in ``forces_N.svg``."""
 
-    sheet: int
+    sheet: int | None
     polygons: Mapping[str, tuple[float, float]]
     every: bool
     off: float
@@ -745,6 +748,12 @@ def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
     return tuple(warnings)
 
 
+def reads_forces(position: VelocityPosition) -> bool:
+    """Whether a hand read a reaction of ``position`` off a drawing (the balancing load is a value, not a length)."""
+    return any(row.source == "measured" and _plan_of(row) == "forces" and not is_balancing(row.quantity)
+               for row in position.errors)
+
+
 def sheet_of(position: VelocityPosition, sheets: SheetsDrawn) -> tuple[SheetPolygons, ...]:
     """The course sheets' force drawings of a position of plans (a position among the velocity plans alone has
     none): its force sheet's and its sheet with friction's, where drawn larger."""
@@ -763,6 +772,13 @@ def on_sheet_detail(found: OnSheet, number: int) -> str:
     larger there than the record's polygons they are checked against."""
     what = ("the force polygons" if found.every and len(found.polygons) > 1
             else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
+    if found.sheet is None:
+        # The record's own groups cut free: forces_N.svg draws their arrows beside its polygons, at a μF of their own.
+        return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} in forces_{number}.svg "
+                f"at μF = {found.scales(0)} N/mm (taken at it, every reading is within {found.off * 100.0:.1f} % of "
+                f"the polygons as constructed), drawn at a μF of their own, not its polygons (at μF = "
+                f"{found.scales(1)} N/mm), which they are checked against: readings of the arrows? measure the "
+                f"polygons, or give these readings times {found.factor()}")
     plain = found.kind == "sheet_drawn_polygons"
     return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} on the course sheet "
             f"(sheet_{found.sheet}.svg, at μF = {found.scales(0)} N/mm; taken at it, every reading is within "
@@ -869,5 +885,5 @@ _VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 __all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "ON_SHEET_KINDS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet",
            "Rescaled", "Segment", "SheetPolygons", "SheetsDrawn", "Slips", "factor_text", "in_centimetres", "in_metres",
-           "in_units", "misread", "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "setting", "sharing", "sheet_of", "slips",
-           "typed_unit", "value_kind"]
+           "in_units", "misread", "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "reads_forces",
+           "setting", "sharing", "sheet_of", "slips", "typed_unit", "value_kind"]

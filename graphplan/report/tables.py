@@ -213,13 +213,15 @@ def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[Velo
 
 def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str, in_note: bool) -> str:
     """Force readings that fit a drawing of the course sheet (its polygons, its groups cut free's arrows, of the force
-    sheet or of the one with friction), drawn larger there than the record's polygons, in the locale's words;
-    ``in_note`` names the drawings by what they are, not by their files."""
+    sheet or of the one with friction), drawn larger there than the record's polygons, or the arrows the record's force
+    sheet draws at a μF of their own, in the locale's words; ``in_note`` names the drawings by what they are, not by their files."""
     labels = ", ".join(found.polygons)
     polygons = (text["errors_polygons"] if found.every and len(found.polygons) > 1
                 else text["errors_polygons_named" if len(found.polygons) > 1 else "errors_polygon"].format(
                     label=labels, labels=labels))
-    return text["note_on_sheet" if in_note else "errors_on_sheet"].format(
+    # The record's own arrows (no course sheet): forces_N.svg draws them beside its polygons at a μF of their own.
+    which = "record" if found.sheet is None else "sheet"
+    return text[f"note_on_{which}" if in_note else f"errors_on_{which}"].format(
         polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet,
         drawn=found.scales(0, mark),
         record=found.scales(1, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), factor=found.factor(mark),
