@@ -251,8 +251,9 @@ def _read_off_record(analysis: Analysis) -> Analysis:
     except SceneError:
         return analysis  # a μl that draws on no paper: no force sheet drawn, nothing read off it (the run refuses it)
     read = read_off_sheets(analysis, arrows, always=True)
-    # The run draws the analysis told so: the μl its sheets were laid out for is not chosen a second time.
-    keep_length_scale(analysis, read)
+    if read is not analysis:
+        # The run draws the analysis told so: the μl its sheets were laid out for is not chosen a second time.
+        keep_length_scale(analysis, read)
     return read
 
 
