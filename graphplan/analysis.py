@@ -16,7 +16,7 @@ import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, balancing_error_rows, error_rows, force_error_rows, readings
 from .cycle_work import CycleWork, cycle_work
-from .errors import SceneError
+from .errors import GraphplanError, SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .joint_friction import (
@@ -248,8 +248,10 @@ def _read_off_record(analysis: Analysis) -> Analysis:
 
     try:
         arrows = record_arrows(analysis, numbers)
-    except SceneError:
-        return analysis  # a μl that draws on no paper: no force sheet drawn, nothing read off it (the run refuses it)
+    except GraphplanError:
+        # A μl that draws on no paper, drawings that fit no sheet: no force sheet drawn, nothing read off it (the run
+        # refuses the scene), and the analysis is not refused for it.
+        return analysis
     read = read_off_sheets(analysis, arrows, always=True)
     if read is not analysis:
         # The run draws the analysis told so: the μl its sheets were laid out for is not chosen a second time.

@@ -325,6 +325,10 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
             fitting = {}
             for label, rows in by_polygon.items():
                 at, record = scales.get(label), rows[0][0].per_millimetre
+                # The record's arrows at 1 N/mm are the forces' values in N: readings that fit them are told typed as
+                # values, as they were before the record's arrows were known (a course sheet's stand on paper apart).
+                if sheet.sheet is None and at is not None and in_units(at):
+                    continue
                 if at is not None and record and not math.isclose(at, record) and _fit_at(rows, at, record,
                                                                                           precision):
                     fitting[label] = (at, record)

@@ -138,3 +138,20 @@ def test_right_readings_are_not_told_and_a_wrong_force_scale_still_is():
     wrong = {name: round(exact[name] / other, 2) for name in CRANK_ARROWS}
     (detail,) = [w.detail for w in analyse(_scene({5: wrong})).warnings if w.code == "measured-far-off"]
     assert f"force_scale = {other:g}" in detail and "arrows of the groups cut free" not in detail
+
+
+def test_readings_that_fit_arrows_drawn_at_one_newton_a_millimetre_are_still_told_typed_as_values():
+    """The class III triad's crank at position 8 draws its arrows at 1 N/mm: readings there are the forces' values in
+    N, told so as before (give the millimetres measured), not the arrows."""
+    scene = dataclasses.replace(loads(Path("fixtures/triad_class_iii.toml").read_text(encoding="utf-8")), locale="en")
+    analysis = analyse(scene)
+    position = next(plan for plan in analysis.plans if plan.number == 8)
+    from graphplan.render.drawings import force_sheet
+    from graphplan.render.forces import free_body_arrows
+
+    assert free_body_arrows(force_sheet(analysis, position))["I(1,2)"][0] == 1.0
+    values = {name: round(abs(complex(analysis.equilibrium.reaction({"R32": "R23"}.get(name, name))
+                                      .force[position.index])), 2) for name in CRANK_ARROWS}
+    told = analyse(dataclasses.replace(scene, measured={**scene.measured, 8: {"forces": values}}))
+    (detail,) = [w.detail for w in told.warnings if w.code == "measured-far-off" and "measured.8:" in w.detail]
+    assert "is the force it stands for, in N" in detail and "arrows of the groups cut free" not in detail
