@@ -126,7 +126,8 @@ class Analysis:
     # Where, between two analysed positions, the friction holds loads that would drive the mechanism (η′ ≤ 0).
     turned_round_spans: tuple[LockedSpan, ...] = ()
     # By position number, the force sheets the course sheets draw larger than the record (without friction and with),
-    # where the run drew them (:func:`read_off_sheets`): the hand readings are checked against them too.
+    # where the run drew them (:func:`read_off_sheets`), and the record's own arrows of the groups cut free where a
+    # reaction was read by hand (:func:`_read_off_record`): the hand readings are checked against them too.
     sheet_polygons: SheetsDrawn = field(default_factory=lambda: MappingProxyType({}))
 
     def __repr__(self) -> str:

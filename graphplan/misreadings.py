@@ -301,8 +301,9 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
               sheets: tuple[SheetPolygons, ...], precision: float) -> OnSheet | None:
     """The readings that fit a drawing of the course ``sheets`` drawn larger there than the record (its polygons, or
     its groups cut free's arrows; of the force sheet, or of the force sheet with friction, taken at the reactions with
-    friction), where one reading of them at least is far off the record's: a student who printed the course sheet
-    measured it.  Of the drawings they fit, the one fitting the most readings, then the nearest.
+    friction), or the record's own groups cut free's arrows, where one reading of them at least is far off the
+    record's polygons: a student who printed the course sheet, or the force sheet, measured it.  Of the drawings they
+    fit, the one fitting the most readings, then the nearest, then the first (the course sheets come first).
 
     By polygon label, two readings or more fit as :func:`_one_scale` has readings fit one scale (each within
     :data:`FAR_OFF_PERCENT` of it, the scale they agree at within 5 % of the sheet's, as :func:`on_grid` has a
@@ -646,7 +647,8 @@ def _shared_caveat(rescaled: Rescaled, position: VelocityPosition, drawn: tuple[
 def misread(mechanism: Mechanism, drawn: Iterable[VelocityPosition],
             sheets: SheetsDrawn | None = None) -> tuple[PositionWarning, ...]:
     """A ``measured-far-off`` warning at each position with hand readings far off its constructed plans; ``sheets``
-    the polygons the course sheets draw larger than the record, by position number, where the run drew them."""
+    the polygons the course sheets draw larger than the record, by position number, where the run drew them, and the
+    record's own arrows of the groups cut free (:class:`SheetPolygons` with no sheet)."""
     drawing = mechanism.scene.drawing
     precision = drawing.drafting_precision
     joint = mechanism.driver.joint
