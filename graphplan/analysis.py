@@ -16,7 +16,7 @@ import numpy as np
 
 from .check import ErrorRow, Reading, analytic_values, balancing_error_rows, error_rows, force_error_rows, readings
 from .cycle_work import CycleWork, cycle_work
-from .errors import GraphplanError, SceneError
+from .errors import SceneError
 from .forces import ForcePlan, Load, force_plan
 from .geometry import ParallelLinesError
 from .joint_friction import (
@@ -36,7 +36,7 @@ from .loads import activity, has_loads, link_loads, motion_state, plan_state
 from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
-from .misreadings import SheetsDrawn, misread, reads_forces
+from .misreadings import SheetsDrawn, misread
 from .motion import Motion, PositionWarning, solve, toggles_between
 from .plans import SHALLOW_CROSSING_DEG, Plan, acceleration_plan, spread, velocity_plan
 from .positions import PositionSet, make_positions
@@ -126,8 +126,8 @@ class Analysis:
     # Where, between two analysed positions, the friction holds loads that would drive the mechanism (η′ ≤ 0).
     turned_round_spans: tuple[LockedSpan, ...] = ()
     # By position number, the force sheets the course sheets draw larger than the record (without friction and with),
-    # where the run drew them (:func:`read_off_sheets`), and the record's own arrows of the groups cut free where a
-    # reaction was read by hand (:func:`_read_off_record`): the hand readings are checked against them too.
+    # and the record's own arrows of the groups cut free where a reaction was read by hand, where the run drew them
+    # (:func:`read_off_sheets`): the hand readings are checked against them too.
     sheet_polygons: SheetsDrawn = field(default_factory=lambda: MappingProxyType({}))
 
     def __repr__(self) -> str:
@@ -229,61 +229,26 @@ def analyse(scene: Scene) -> Analysis:
                             + _locked_between(mechanism, positions, friction, locked_spans)
                             + _turned_round_between(mechanism, positions, held_spans),
                             key=lambda warning: warning.position))
-    done = Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
+    return Analysis(scene, mechanism, positions, motion, emphasised, paths, plans,
                     in_order + warnings + tuple(unplanned),
                     loads, balance, with_friction, friction, every, locked_spans, cycle, held_spans)
-    return _read_off_record(done)
 
 
-def _read_off_record(analysis: Analysis) -> Analysis:
-    """``analysis`` with its hand readings of reactions checked against the arrows of the groups cut free that each
-    force sheet (forces_N.svg) draws beside its polygons, at a μF of their own: readings measured on them are told so,
-    not given a ``force_scale`` that would redraw every polygon, whether the course sheets are drawn or not.
-
-    The arrows' μF is the force sheet's layout's, which sizes them to the group drawn at μl: the drawings are imported
-    here, against the modules' order, and only where a reaction was read by hand."""
-    numbers = {plan.number for plan in analysis.plans if plan.forces is not None and reads_forces(plan)}
-    if not numbers:
-        return analysis
-    from .render.drawings import keep_length_scale, record_arrows
-
-    try:
-        arrows = record_arrows(analysis, numbers)
-    except GraphplanError:
-        # A μl that draws on no paper, drawings that fit no sheet: no force sheet drawn, nothing read off it (the run
-        # refuses the scene), and the analysis is not refused for it.
-        return analysis
-    read = read_off_sheets(analysis, arrows, always=True)
-    if read is not analysis:
-        # The run draws the analysis told so: the μl its sheets were laid out for is not chosen a second time.
-        keep_length_scale(analysis, read)
-    return read
-
-
-def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn, always: bool = False) -> Analysis:
-    """``analysis`` with the course sheets' force drawings drawn larger than the record (polygons, groups cut free),
-    ``sheets`` by position number, known to the check of the hand readings: readings measured on a course sheet are
-    told so, not given a ``force_scale`` that would redraw every polygon.  Known only once the sheets are packed, so
-    told only by a run that draws them; the record's own arrows the analysis knows already are kept (``always``:
-    known to the tables even where the warnings come out the same)."""
+def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
+    """``analysis`` with the force drawings the run drew at a μF other than the record's polygons, ``sheets`` by
+    position number, known to the check of the hand readings: the course sheets' polygons and groups cut free drawn
+    larger, and the arrows of the groups cut free in forces_N.svg itself.  Readings measured on them are told so, not
+    given a ``force_scale`` that would redraw every polygon.  Known only once the drawings are made, so told only by a
+    run that draws them."""
     if not sheets:
         return analysis
-    # The record's own arrows (sheet None), known since the analysis, are tried after the course sheets: readings
-    # that fit both, a course sheet drawing a group cut free as the record does, are told the course sheet.
-    known = {number: tuple(each for each in drawn if each.sheet is None)
-             for number, drawn in analysis.sheet_polygons.items()}
-    merged = {}
-    for number in dict.fromkeys((*sheets, *known)):
-        given = tuple(sheets.get(number, ()))
-        record = tuple(each for each in given if each.sheet is None) or known.get(number, ())
-        merged[number] = (*(each for each in given if each.sheet is not None), *record)
-    sheets = MappingProxyType(merged)
+    sheets = MappingProxyType(dict(sheets))
     told = iter(misread(analysis.mechanism, (*analysis.plans, *analysis.velocity_plans), sheets))
     # The polygons read off a sheet are found only among readings far off the record: the same positions are told,
     # in the same order.
     warnings = tuple(next(told) if warning.code == "measured-far-off" else warning for warning in analysis.warnings)
     # Readings that fit no course sheet are told as before: the analysis kept, with what the drawings remember of it.
-    if warnings == analysis.warnings and not always:
+    if warnings == analysis.warnings:
         return analysis
     return replace(analysis, warnings=warnings, sheet_polygons=sheets)
 

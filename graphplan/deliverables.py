@@ -62,7 +62,8 @@ class Drawing:
     # (part 2 of 3)" alone left the reader to find which of the dynamics' diagrams each part holds.
     shows: tuple[str, ...] = ()
     # A course sheet's force drawings drawn larger than the record, by position number (:func:`larger_polygons`): a
-    # position's force sheet and its sheet with friction each give one.
+    # position's force sheet and its sheet with friction each give one; a force sheet's own arrows of the groups cut
+    # free, where a reaction was read by hand (:func:`_record_arrows`).
     larger_polygons: tuple[tuple[int, SheetPolygons], ...] = ()
 
 
@@ -351,7 +352,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
             layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                 else _force_sheet_layers(analysis, plan, pieces)
-            found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None))
+            found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None,
+                                 larger_polygons=_record_arrows(analysis, plan)))
             found += _note_parts(f"forces_{plan.number}", layers, pieces, scales)
             rubbing = plan.with_friction
             # The sheet with friction comes with the sheet it repeats: with `lever` its lever with friction on it.
@@ -435,6 +437,22 @@ def _plan_note_parts(plan, shown: tuple[str, ...], pieces: tuple[str, ...], whol
 
     parts = note_parts_of_drawings(drawings, laid_out, plan_layout.TITLE_LAYER, whole)
     return [Drawing(f"plan_{plan.number}-{k}", part) for k, part in enumerate(parts or (), start=1)]
+
+
+def _record_arrows(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons], ...]:
+    """The arrows of the groups cut free that forces_N.svg draws beside its polygons at a μF of their own, where a
+    reaction of ``plan`` was read by hand (:func:`~graphplan.render.forces.free_body_arrows`): readings measured on
+    them are told so (a :class:`SheetPolygons` of no sheet), after the course sheets' drawings, drawn before them."""
+    from .misreadings import SheetPolygons, reads_forces
+
+    if not reads_forces(plan):
+        return ()
+    from .render import drawings as draw
+    from .render import forces as force_layout
+
+    arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan))
+    drawn = {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole}
+    return ((plan.number, SheetPolygons(None, {}, arrows=drawn)),) if drawn else ()
 
 
 def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],
@@ -770,8 +788,8 @@ def files(scene: Scene, analysis: Analysis | None, pieces: tuple[str, ...],
     found: dict[str, str | bytes] = {"results.json": ""}  # written first, once the sheets have said what they drew
     lever_scales: dict[str, float] = {}
     made = drawings(scene, analysis, pieces, dynamics, say=say)
-    # Readings measured on a course sheet's polygons, drawn larger than the record, are known for what they are
-    # only once the sheets are packed: the results, the tables and the note tell them so.
+    # Readings measured on a course sheet's polygons drawn larger than the record, or on the arrows of the groups cut
+    # free, are known for what they are only once those are drawn: the results, the tables and the note tell them so.
     larger: dict[int, tuple[SheetPolygons, ...]] = {}
     for drawing in made:
         for number, polygons in drawing.larger_polygons:

@@ -1,7 +1,7 @@
 """Force readings measured on the arrows of the groups cut free in the record's own force sheet, forces_N.svg, which
 draws them beside its polygons at a μF of their own (the ratchet's crank at position 5: arrows at 100 N/mm, its polygon
 at 20). Two readings or more of them were advised `[drawing] force_scale = 100`, which would redraw every polygon; they
-are now told the arrows, their μF and the factor, whether the course sheets are drawn or not.
+are now told the arrows, their μF and the factor, by every run that draws the force sheets, course sheets or none.
 
 The μF are read off the captions of forces_5.svg, the readings are the linear system's reactions over the arrows' μF,
 and the test's ruler on the SVG's arrows gives the same lengths.
@@ -107,40 +107,37 @@ def test_readings_of_the_records_arrows_are_told_the_arrows_with_no_sheet_drawn(
     assert ".svg" not in said
 
 
-def test_the_python_interface_tells_them_too():
-    arrows, _ = _scales()
-    details = [w.detail for w in analyse(_scene({5: _arrow_readings()})).warnings if w.code == "measured-far-off"]
-    (detail,) = details
-    assert f"fits the arrows of the groups cut free of position 5 in forces_5.svg at μF = {arrows:g} N/mm" in detail
-    assert "force_scale" not in detail
-
-
 def test_every_locale_tells_the_arrows_in_its_words(tmp_path):
     arrows, polygon = _scales()
     for locale, words in (("ru", "стрелками сил на отсоединённых группах положения 5"),
                           ("zh", "第 5 位置各分离杆组上的力箭头")):
         folder = tmp_path / locale
-        run(_scene({5: _arrow_readings()}, locale), folder, only=["errors"])
+        run(_scene({5: _arrow_readings()}, locale), folder, only=["forces", "errors"])
         errors = (folder / "errors.md").read_text(encoding="utf-8")
         line = next(line for line in errors.splitlines() if words in line)
         assert "forces_5.svg" in line and f"μF = {arrows:g}" in line and f"μF = {polygon:g}" in line
         assert f"{arrows / polygon:.4g}" in line and "force_scale" not in errors
 
 
-def test_right_readings_are_not_told_and_a_wrong_force_scale_still_is():
+def _told(scene, tmp_path, number=5):
+    """The measured-far-off warnings of position ``number`` a run that draws the force sheets gives."""
+    return [line for line in run(scene, tmp_path, only=["forces"]).warnings if f"measured.{number}:" in line]
+
+
+def test_right_readings_are_not_told_and_a_wrong_force_scale_still_is(tmp_path):
     _, exact = _record()
     arrows, polygon = _scales()
     right = {name: round(exact[name] / polygon, 2) for name in CRANK_ARROWS}
-    assert not [w for w in analyse(_scene({5: right})).warnings if w.code == "measured-far-off"]
+    assert not _told(_scene({5: right}), tmp_path / "right")
     # Drawn at 50 N/mm, neither the polygon's μF nor the arrows': the key is told.
     other = 50.0
     assert other not in (arrows, polygon)
     wrong = {name: round(exact[name] / other, 2) for name in CRANK_ARROWS}
-    (detail,) = [w.detail for w in analyse(_scene({5: wrong})).warnings if w.code == "measured-far-off"]
+    (detail,) = _told(_scene({5: wrong}), tmp_path / "wrong")
     assert f"force_scale = {other:g}" in detail and "arrows of the groups cut free" not in detail
 
 
-def test_readings_that_fit_arrows_drawn_at_one_newton_a_millimetre_are_still_told_typed_as_values():
+def test_readings_that_fit_arrows_drawn_at_one_newton_a_millimetre_are_still_told_typed_as_values(tmp_path):
     """The class III triad's crank at position 8 draws its arrows at 1 N/mm: readings there are the forces' values in
     N, told so as before (give the millimetres measured), not the arrows."""
     scene = dataclasses.replace(loads(Path("fixtures/triad_class_iii.toml").read_text(encoding="utf-8")), locale="en")
@@ -152,6 +149,5 @@ def test_readings_that_fit_arrows_drawn_at_one_newton_a_millimetre_are_still_tol
     assert free_body_arrows(force_sheet(analysis, position))["I(1,2)"][0] == 1.0
     values = {name: round(abs(complex(analysis.equilibrium.reaction({"R32": "R23"}.get(name, name))
                                       .force[position.index])), 2) for name in CRANK_ARROWS}
-    told = analyse(dataclasses.replace(scene, measured={**scene.measured, 8: {"forces": values}}))
-    (detail,) = [w.detail for w in told.warnings if w.code == "measured-far-off" and "measured.8:" in w.detail]
+    (detail,) = _told(dataclasses.replace(scene, measured={**scene.measured, 8: {"forces": values}}), tmp_path, 8)
     assert "is the force it stands for, in N" in detail and "arrows of the groups cut free" not in detail

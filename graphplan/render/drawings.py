@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Collection, Mapping, Sequence
-from types import MappingProxyType
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -15,7 +14,6 @@ from ..forces import POLYGON_FIELD_MM, GroupForces, polygon_extent
 from ..kinematics import at
 from ..locale import strings
 from ..memo import OwnedMemo
-from ..misreadings import SheetPolygons
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
 from ..positions import working_speed
 from ..scales import fit_scale, format_scale, next_standard_scale, standard_scale
@@ -203,29 +201,6 @@ def with_length_scale(analysis: Analysis) -> Analysis:
     if analysis.scene.drawing.length_scale is not None:
         return analysis
     return at_length_scale(analysis, length_scale(analysis))
-
-
-def keep_length_scale(analysis: Analysis, same: Analysis) -> None:
-    """Let ``same``, a copy of ``analysis`` that draws alike (its warnings told anew), take the μl chosen for
-    ``analysis`` without laying the sheets out again."""
-    sheet = analysis.scene.drawing.sheet
-    if analysis.scene.drawing.length_scale is None and sheet != "none":
-        _chosen_scales.get(same, sheet, lambda: length_scale(analysis))
-
-
-def record_arrows(analysis: Analysis, numbers: Collection[int]) -> dict[int, tuple[SheetPolygons, ...]]:
-    """By position number (of ``numbers``, those with force readings), the arrows of the groups cut free as the
-    position's force sheet (``forces_N.svg``) draws them, each group's at a μF of its own beside its polygon, with the
-    reactions drawn whole at their length (:func:`~graphplan.render.forces.free_body_arrows`): a hand that measured
-    them read its reactions at another μF than the polygons'.  The record's, so known whether the course sheets are
-    drawn or not (:func:`~graphplan.analysis.analyse`)."""
-    found = {}
-    for position in analysis.plans:
-        if position.number in numbers and position.forces is not None:
-            arrows = force_layout.free_body_arrows(force_sheet(analysis, position))
-            found[position.number] = (SheetPolygons(None, MappingProxyType({}), arrows=MappingProxyType(
-                {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole})),)
-    return found
 
 
 def at_length_scale(analysis: Analysis, scale: float) -> Analysis:
