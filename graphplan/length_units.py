@@ -4,6 +4,9 @@ length a thousand times too long, the results with them), and the hint where one
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
+from .errors import SceneError
 from .mechanism import Mechanism
 from .motion import PositionWarning
 from .units import MIXED_RATIO, millimetres_question, motor_speed_in_rpm
@@ -32,27 +35,58 @@ def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
     return found
 
 
+@dataclass(frozen=True)
+class LengthSlip:
+    """One length the scene gives that no machine's linkage has in metres: its key, its value as typed (a frame
+    point's ``[x, y]``), and what it does there (``puts E 240 m from A, …``), told after ``key = value m``."""
+
+    key: str
+    value: float | tuple[float, float]
+    does: str
+
+    @property
+    def typed(self) -> str:
+        """``key = value m``, as the warning opens."""
+        return f"{self.key} = {_written(self.value)} m"
+
+    @property
+    def meant(self) -> str:
+        """The value read as millimetres, and the key with what was likely meant."""
+        value = self.value
+        meant = (value[0] / 1000, value[1] / 1000) if isinstance(value, tuple) else value / 1000
+        return f"{_written(value)} mm is {self.key} = {_written(meant)}"
+
+
+def _written(value: float | tuple[float, float]) -> str:
+    return f"[{value[0]:g}, {value[1]:g}]" if isinstance(value, tuple) else f"{value:g}"
+
+
+def length_slip(mechanism: Mechanism) -> LengthSlip | None:
+    """The length :func:`lengths_in_millimetres` names as too long for metres: the longest link's, else the frame
+    point farthest from the first, else the named point placed farthest from its link's joint; None where none
+    is beyond :data:`LONGEST_LINK_M`."""
+    lengths = given_lengths(mechanism)
+    key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
+    if longest > LONGEST_LINK_M:
+        return LengthSlip(key, longest, f"is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
+    spread = _frame_spread(mechanism)
+    if spread is not None and spread[3] > LONGEST_LINK_M:
+        first, name, far, apart = spread
+        return LengthSlip(f"frame.points.{name}", (far.real, far.imag), f"lies {apart:.4g} m from {first}, farther "
+                          f"apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
+    return _farthest_point(mechanism)
+
+
 def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     """A ``lengths-in-mm`` warning, at the first position, where the scene's lengths are implausible as metres: a
     link or the frame larger than any machine's, or a crank turning its pin faster than any machine does."""
     told = []
-    lengths = given_lengths(mechanism)
-    key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
-    some = False
-    if longest > LONGEST_LINK_M:
-        told.append(f"{key} = {longest:g} m is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
-    else:
-        spread = _frame_spread(mechanism)
-        far_point = _farthest_point(mechanism)
-        if spread is not None and spread[3] > LONGEST_LINK_M:
-            first, name, far, apart = spread
-            told.append(f"frame.points.{name} = [{far.real:g}, {far.imag:g}] lies {apart:.4g} m from "
-                        f"{first}, farther apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
-        elif far_point is not None:
-            # A named point's at or offset alone in millimetres moves no joint, so the mechanism runs; its drawings
-            # are then refused at a scale or pole distance the student never gave, naming that key alone.
-            told.append(far_point)
-            some = True
+    slip = length_slip(mechanism)
+    # A named point's at or offset alone in millimetres moves no joint, so the mechanism runs: only that length is
+    # in millimetres among metres, and the drawings it swells are refused at it (:func:`refused_at_slip`).
+    some = slip is not None and slip.key.startswith("points.")
+    if slip is not None:
+        told.append(f"{slip.typed} {slip.does}")
     driver = mechanism.driver
     # An omega that reads as a motor's rpm explains a fast crank pin by itself, and is told so (``speed-in-rpm``):
     # asking of millimetres too would send the student to lengths that are right.
@@ -69,15 +103,31 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + f": {millimetres_question(some=some)}{unless}"),)
 
 
-def _farthest_point(mechanism: Mechanism) -> str | None:
-    """What to tell of the named point the scene places farthest from its link's joint, where that is farther
-    than any machine's link reaches; None where every named point is within reach."""
+def refused_at_slip(mechanism: Mechanism, drawn: str, across_mm: float, largest_mm: float) -> SceneError | None:
+    """The refusal of a drawing ``across_mm`` wide, more than ``largest_mm``, at the length typed in millimetres
+    that swells it, where :func:`length_slip` finds one and the drawing would fit were it a thousand times smaller;
+    None otherwise, the drawing's own scale then the key to change.
+
+    ``drawn`` says what the drawing is and at which key's value (``draws the velocity plan of position 5 6.52e+04
+    mm across at drawing.velocity_pole = 150``).  Refused at that key alone, the student was sent to a scale never
+    changed, while the warning just before named the length."""
+    slip = length_slip(mechanism)
+    if slip is None or not across_mm / 1000 <= largest_mm:
+        return None
+    value = list(slip.value) if isinstance(slip.value, tuple) else slip.value
+    return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm): millimetres "
+                      f"typed for metres? {slip.meant}", value)
+
+
+def _farthest_point(mechanism: Mechanism) -> LengthSlip | None:
+    """The named point the scene places farthest from its link's joint, where that is farther than any machine's
+    link reaches; None where every named point is within reach."""
     far = max(mechanism.scene.points, key=lambda spec: abs(complex(spec.at, spec.offset)), default=None)
     if far is None or abs(complex(far.at, far.offset)) <= LONGEST_LINK_M:
         return None
     key, value = ("at", far.at) if abs(far.at) >= abs(far.offset) else ("offset", far.offset)
-    return (f"{far.where}.{key} = {value:g} m puts {far.name} {abs(complex(far.at, far.offset)):.4g} m from "
-            f"{far.start}, farther than any machine's link reaches (over {LONGEST_LINK_M:g} m)")
+    return LengthSlip(f"{far.where}.{key}", value, f"puts {far.name} {abs(complex(far.at, far.offset)):.4g} m from "
+                      f"{far.start}, farther than any machine's link reaches (over {LONGEST_LINK_M:g} m)")
 
 
 def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | None:

@@ -12,6 +12,7 @@ from ..analysis import VELOCITY_PLANS_FIELD_MM, Analysis, PlanPosition, Velocity
 from ..errors import SceneError
 from ..forces import POLYGON_FIELD_MM, GroupForces, polygon_extent
 from ..kinematics import at
+from ..length_units import refused_at_slip
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
@@ -64,6 +65,8 @@ def length_scale(analysis: Analysis) -> float:
     extent = paths_extent(analysis)
     if given is not None:
         if extent / given > LARGEST_PAPER_MM:
+            _refuse_at_length_slip(analysis, f"draws the paths of the points {extent / given:.3g} mm across at "
+                                   f"drawing.length_scale = {format_scale(given)}", extent / given)
             raise SceneError("drawing.length_scale", f"draws the paths of the points {extent / given:.3g} mm across, "
                              f"more than any paper ({LARGEST_PAPER_MM:g} mm): give "
                              f"{format_scale(fit_scale(extent, POSITIONS_FIELD_MM))} (a {POSITIONS_FIELD_MM:g} mm "
@@ -110,6 +113,9 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
         grid = isinstance(position, VelocityPosition) and analysis.scene.drawing.velocity_plans_pole is not None
         field = VELOCITY_PLANS_FIELD_MM if grid else PLAN_FIELD_MM
         key, given, fix = _plan_scale(analysis, kind, plan, grid)
+        at_key = f" at {key} = {given:g}" if given is not None else ""
+        _refuse_at_length_slip(analysis, f"draws the {kind} plan of position {position.number} {across:.3g} mm "
+                               f"across{at_key}", across)
         raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
                          f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {field:g} mm "
                          "plan), or leave it out for the program to choose", given)
@@ -117,12 +123,24 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
     for position, group in polygons:
         across = polygon_extent(group.polygon) / group.scale
         if across > LARGEST_PAPER_MM:
+            _refuse_at_length_slip(analysis, f"draws the force polygon of group {group.label} in position "
+                                   f"{position.number} {across:.3g} mm across at drawing.force_scale = "
+                                   f"{format_scale(group.scale)}", across)
             largest = max(polygon_extent(other.polygon) for _, other in polygons)
             raise SceneError("drawing.force_scale", f"draws the force polygon of group {group.label} in position "
                              f"{position.number} {across:.3g} mm across, more than any paper ({LARGEST_PAPER_MM:g} "
                              f"mm): give {format_scale(standard_scale(largest / POLYGON_FIELD_MM))} (the largest "
                              f"polygon {POLYGON_FIELD_MM:g} mm), or leave it out for the program to choose",
                              analysis.scene.drawing.force_scale)
+
+
+def _refuse_at_length_slip(analysis: Analysis, drawn: str, across: float) -> None:
+    """Refuse a drawing larger than any paper at the length typed in millimetres that swells it, where a length is
+    (:func:`graphplan.length_units.refused_at_slip`): the scale the drawing is refused at is one the student never
+    changed, and fits once the length is in metres."""
+    refused = refused_at_slip(analysis.mechanism, drawn, across, LARGEST_PAPER_MM)
+    if refused is not None:
+        raise refused
 
 
 def below_reading(analysis: Analysis) -> list[str]:
