@@ -38,16 +38,19 @@ def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
 @dataclass(frozen=True)
 class LengthSlip:
     """One length the scene gives that no machine's linkage has in metres: its key, its value as typed (a frame
-    point's ``[x, y]``), and what it does there (``puts E 240 m from A, …``), told after ``key = value m``."""
+    point's ``[x, y]``), what it does there (``puts E 240 m from A, …``), told after ``key = value m``, and whether
+    it stands alone among lengths in metres (a named point's, or one :data:`MIXED_RATIO` times the shortest) or
+    with them all in millimetres."""
 
     key: str
     value: float | tuple[float, float]
     does: str
+    alone: bool
 
     @property
     def typed(self) -> str:
         """``key = value m``, as the warning opens."""
-        return f"{self.key} = {_written(self.value)} m"
+        return f"{self.key} = {_written(self.value)}" + ("" if isinstance(self.value, tuple) else " m")
 
     @property
     def meant(self) -> str:
@@ -67,13 +70,15 @@ def length_slip(mechanism: Mechanism) -> LengthSlip | None:
     is beyond :data:`LONGEST_LINK_M`."""
     lengths = given_lengths(mechanism)
     key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
+    shortest = min((value for _, value in lengths if value > 0), default=0.0)
     if longest > LONGEST_LINK_M:
-        return LengthSlip(key, longest, f"is longer than any machine's link (over {LONGEST_LINK_M:g} m)")
+        return LengthSlip(key, longest, f"is longer than any machine's link (over {LONGEST_LINK_M:g} m)",
+                          longest >= MIXED_RATIO * shortest)
     spread = _frame_spread(mechanism)
     if spread is not None and spread[3] > LONGEST_LINK_M:
         first, name, far, apart = spread
         return LengthSlip(f"frame.points.{name}", (far.real, far.imag), f"lies {apart:.4g} m from {first}, farther "
-                          f"apart than any machine's pivots (over {LONGEST_LINK_M:g} m)")
+                          f"apart than any machine's pivots (over {LONGEST_LINK_M:g} m)", apart >= MIXED_RATIO * shortest)
     return _farthest_point(mechanism)
 
 
@@ -84,7 +89,7 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     slip = length_slip(mechanism)
     # A named point's at or offset alone in millimetres moves no joint, so the mechanism runs: only that length is
     # in millimetres among metres, and the drawings it swells are refused at it (:func:`refused_at_slip`).
-    some = slip is not None and slip.key.startswith("points.")
+    some = slip is not None and slip.alone
     if slip is not None:
         told.append(f"{slip.typed} {slip.does}")
     driver = mechanism.driver
@@ -112,7 +117,9 @@ def refused_at_slip(mechanism: Mechanism, drawn: str, across_mm: float, largest_
     mm across at drawing.velocity_pole = 150``).  Refused at that key alone, the student was sent to a scale never
     changed, while the warning just before named the length."""
     slip = length_slip(mechanism)
-    if slip is None or not across_mm / 1000 <= largest_mm:
+    # Every length in millimetres is no one key's slip: the warning asks to divide them all, and a μl given for
+    # them is refused at its own key.
+    if slip is None or not slip.alone or not across_mm / 1000 <= largest_mm:
         return None
     value = list(slip.value) if isinstance(slip.value, tuple) else slip.value
     return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm): millimetres "
@@ -127,7 +134,7 @@ def _farthest_point(mechanism: Mechanism) -> LengthSlip | None:
         return None
     key, value = ("at", far.at) if abs(far.at) >= abs(far.offset) else ("offset", far.offset)
     return LengthSlip(f"{far.where}.{key}", value, f"puts {far.name} {abs(complex(far.at, far.offset)):.4g} m from "
-                      f"{far.start}, farther than any machine's link reaches (over {LONGEST_LINK_M:g} m)")
+                      f"{far.start}, farther than any machine's link reaches (over {LONGEST_LINK_M:g} m)", True)
 
 
 def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | None:
