@@ -66,11 +66,14 @@ def _written(value: float | tuple[float, float]) -> str:
 
 def length_slip(mechanism: Mechanism) -> LengthSlip | None:
     """The length :func:`lengths_in_millimetres` names as too long for metres: the longest link's, else the frame
-    point farthest from the first, else the named point placed farthest from its link's joint; None where none
-    is beyond :data:`LONGEST_LINK_M`."""
+    point farthest from the first, else the frame guide's point farthest from it, else the named point placed
+    farthest from its link's joint; None where none is beyond :data:`LONGEST_LINK_M`."""
     lengths = given_lengths(mechanism)
     key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
-    shortest = min((value for _, value in lengths if value > 0), default=0.0)
+    # A named point's reach counts among the lengths a long one stands alone among: a Scotch yoke's crank is its
+    # only link's length, and its centre of mass 25 mm out is in metres as well.
+    reaches = [abs(complex(spec.at, spec.offset)) for spec in mechanism.scene.points]
+    shortest = min((value for value in [*(value for _, value in lengths), *reaches] if value > 0), default=0.0)
     if longest > LONGEST_LINK_M:
         return LengthSlip(key, longest, f"is longer than any machine's link (over {LONGEST_LINK_M:g} m)",
                           longest >= MIXED_RATIO * shortest)
@@ -79,6 +82,13 @@ def length_slip(mechanism: Mechanism) -> LengthSlip | None:
         first, name, far, apart = spread
         return LengthSlip(f"frame.points.{name}", (far.real, far.imag), f"lies {apart:.4g} m from {first}, farther "
                           f"apart than any machine's pivots (over {LONGEST_LINK_M:g} m)", apart >= MIXED_RATIO * shortest)
+    # A guide so far off that the mechanism still assembles along it (a PRP's, whose sliders follow it anywhere)
+    # swells every drawing as a frame point would.
+    guide = max(_frame_guides(mechanism), key=lambda found: found[2], default=None)
+    if guide is not None and guide[2] > LONGEST_LINK_M:
+        key, through, apart, first = guide
+        return LengthSlip(key, through, f"lies {apart:.4g} m from {first}, farther than any machine's frame reaches "
+                          f"(over {LONGEST_LINK_M:g} m)", apart >= MIXED_RATIO * shortest)
     return _farthest_point(mechanism)
 
 
@@ -184,6 +194,12 @@ def _placed_joints(mechanism: Mechanism) -> list[tuple[str, float]]:
 def _guide_spread(mechanism: Mechanism) -> list[tuple[str, float]]:
     """How far a frame guide's point given by its coordinates lies from the frame's first point: typed in
     millimetres, it puts the guide as far off as a frame point so typed puts a pivot."""
+    return [(f"{key} ({apart:g} m from {first})", apart) for key, _, apart, first in _frame_guides(mechanism)]
+
+
+def _frame_guides(mechanism: Mechanism) -> list[tuple[str, tuple[float, float], float, str]]:
+    """Each frame guide's point given by its coordinates: its key, the point, how far it lies from the frame's
+    first point, and that point's name."""
     points = list(mechanism.scene.frame_points.items())
     if not points:
         return []
@@ -195,5 +211,5 @@ def _guide_spread(mechanism: Mechanism) -> list[tuple[str, float]]:
         if guide.on_frame and isinstance(guide.through, tuple):
             apart = abs(complex(*guide.through) - origin)
             if apart > 0:
-                found.append((f"{guide.where}.through ({apart:g} m from {first})", apart))
+                found.append((f"{guide.where}.through", guide.through, apart, first))
     return found

@@ -9,6 +9,7 @@ typed divided by 1000 (worked out here, not read off the message), and with it t
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -18,6 +19,14 @@ from graphplan.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 RATCHET = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
+ENGINE = ROOT / "fixtures" / "engine_slider_crank.toml"
+YOKE = ROOT / "fixtures" / "scotch_yoke.toml"
+SLOTTED = ROOT / "fixtures" / "quick_return_slotted_lever.toml"
+TANGENT = ROOT / "fixtures" / "tangent_mechanism_prp.toml"
+
+
+def _written(value: float | list[float]) -> str:
+    return "[" + ", ".join(f"{item:g}" for item in value) + "]" if isinstance(value, list) else f"{value:g}"
 
 
 def _slipped(text: str, old: str, new: str) -> str:
@@ -25,19 +34,26 @@ def _slipped(text: str, old: str, new: str) -> str:
     return text.replace(old, new)
 
 
-# (fixture, the line as written, the line with the slip, the key slipped, its value typed, the drawing's own key)
+# (fixture, the line as written, the line with the slip, the key slipped, its value typed)
 CASES = [
-    pytest.param(RATCHET, 'at = 0.24, offset = 0.125', 'at = 240.0, offset = 0.125', "points.E.at", 240.0,
-                 ("drawing.velocity_pole", "drawing.length_scale"), id="coupler-point-at"),
-    pytest.param(RATCHET, 'at = 0.24, offset = 0.125', 'at = 0.24, offset = 125.0', "points.E.offset", 125.0,
-                 ("drawing.velocity_pole", "drawing.length_scale"), id="coupler-point-offset"),
+    pytest.param(RATCHET, "at = 0.24, offset = 0.125", "at = 240.0, offset = 0.125", "points.E.at", 240.0,
+                 id="coupler-point-at"),
+    pytest.param(RATCHET, "at = 0.24, offset = 0.125", "at = 0.24, offset = 125.0", "points.E.offset", 125.0,
+                 id="coupler-point-offset"),
+    # A rod 190 m long beside a 0.05 m crank still assembles: its paths are what no paper holds.
+    pytest.param(ENGINE, "length   = 0.19", "length   = 190.0", "groups[0].length", 190.0, id="connecting-rod"),
+    # The yoke's crank is its only link's length: its centre of mass, 25 mm out, is what it stands alone among.
+    pytest.param(YOKE, "length  = 0.075", "length  = 75.0", "driver.length", 75.0, id="scotch-yoke-crank"),
+    pytest.param(SLOTTED, "O = [0.0, 0.30]", "O = [0.0, 300.0]", "frame.points.O", [0.0, 300.0], id="frame-point"),
+    # The ram's guide 550 m up: the PRP's sliders follow it there, and nothing had warned of it.
+    pytest.param(TANGENT, "through = [0.0, 0.55]", "through = [0.0, 550.0]", "frame.lines.ram.through",
+                 [0.0, 550.0], id="frame-guide"),
 ]
 
 
 @pytest.mark.parametrize("command", ["check", "run"])
-@pytest.mark.parametrize(("fixture", "old", "new", "key", "typed", "drawing_keys"), CASES)
-def test_the_refusal_names_the_length_typed_in_millimetres(tmp_path, capsys, command, fixture, old, new, key, typed,
-                                                           drawing_keys):
+@pytest.mark.parametrize(("fixture", "old", "new", "key", "typed"), CASES)
+def test_the_refusal_names_the_length_typed_in_millimetres(tmp_path, capsys, command, fixture, old, new, key, typed):
     text = fixture.read_text(encoding="utf-8")
     scene = tmp_path / "slipped.toml"
     scene.write_text(_slipped(text, old, new), encoding="utf-8")
@@ -47,13 +63,14 @@ def test_the_refusal_names_the_length_typed_in_millimetres(tmp_path, capsys, com
     err = without_progress(capsys.readouterr().err)
     error = err.strip().splitlines()[-1]
     assert error.startswith(f"graphplan: error: {key}: "), error
-    assert f"{key} = {typed / 1000:g}" in error and f"(got {typed!r})" in error, error
+    meant_value = [value / 1000 for value in typed] if isinstance(typed, list) else typed / 1000
+    assert f"{key} = {_written(meant_value)}" in error and f"(got {typed!r})" in error, error
     # The drawing that showed the slip is still said, with the key it is drawn at.
-    assert "more than any paper" in error and any(f"at {drawing} = " in error for drawing in drawing_keys), error
+    assert "more than any paper" in error and re.search(r" at drawing\.\w+ = ", error), error
     assert not out.exists()
     # The warning named the same key before the refusal.
-    assert err.index(f"warning: {key} = {typed:g} m") < err.index("graphplan: error: ")
+    assert err.index(f"warning: {key} = {_written(typed)}") < err.index("graphplan: error: ")
     # What the refusal offers is what was meant: the scene as the fixture has it.
     meant = tmp_path / "meant.toml"
-    meant.write_text(_slipped(text, old, new.replace(f"{typed!r}", f"{typed / 1000!r}")), encoding="utf-8")
+    meant.write_text(_slipped(text, old, new.replace(repr(typed), repr(meant_value))), encoding="utf-8")
     assert main(["check", str(meant)]) == 0, capsys.readouterr().err
