@@ -81,7 +81,8 @@ def length_slip(mechanism: Mechanism) -> LengthSlip | None:
     if spread is not None and spread[3] > LONGEST_LINK_M:
         first, name, far, apart = spread
         return LengthSlip(f"frame.points.{name}", (far.real, far.imag), f"lies {apart:.4g} m from {first}, farther "
-                          f"apart than any machine's pivots (over {LONGEST_LINK_M:g} m)", apart >= MIXED_RATIO * shortest)
+                          f"apart than any machine's pivots (over {LONGEST_LINK_M:g} m)",
+                          apart >= MIXED_RATIO * shortest)
     # A guide so far off that the mechanism still assembles along it (a PRP's, whose sliders follow it anywhere)
     # swells every drawing as a frame point would.
     guide = max(_frame_guides(mechanism), key=lambda found: found[2], default=None)
