@@ -24,6 +24,7 @@ from numpy.polynomial import Chebyshev
 
 from .errors import AssemblyError, SceneError, SingularPositionError
 from .kinematics import dot
+from .length_units import mixed_units
 from .mechanism import Mechanism
 from .memo import OwnedMemo
 from .motion import Motion, Reference, reference_at, solve
@@ -411,20 +412,24 @@ def _refuse_needing_extremes(mechanism: Mechanism) -> None:
     working = scene.positions.working
     assert working is not None
     told = f"link {working.link} turns round and never reverses its motion, so it has no extreme position"
+    # A length in millimetres among metres turns a rocker round (a slotted lever's crank longer than the distance
+    # between the pivots): refused here, before the warning that would name it, the key to change is that length.
+    units = mixed_units(mechanism)
+    slip = f"; link {working.link} may turn round only because {units}" if units is not None else ""
     if scene.positions.start == "extreme":
         raise SceneError("positions.start", f'"extreme" needs the extreme positions of the output link, but '
-                         f"{told}: start the positions at a crank angle in degrees", "extreme")
+                         f"{told}: start the positions at a crank angle in degrees", "extreme", hint=slip)
     for load in scene.loads:
         if load.diagram is not None:
             raise SceneError(f"{load.where}.diagram", "a load diagram over the working stroke needs the strokes "
                              f"of the output link, but {told} for one to begin at: make the load a value that "
-                             "acts always")
+                             f"acts always{slip}")
         if load.during != "always":
             what = f"a load of the {load.during} stroke" if isinstance(load.during, str) else \
                 "a window of the working stroke"
             written = load.during if isinstance(load.during, str) else dict(zip(("from", "to"), load.during))
             raise SceneError(f"{load.where}.during", f"{what} needs the strokes of the output link, but {told} "
-                             "for one to begin at: use always", written)
+                             "for one to begin at: use always", written, hint=slip)
 
 
 # A working link's speed this small beside its largest is rounding's: the link stands still.

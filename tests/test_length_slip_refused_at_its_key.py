@@ -74,3 +74,18 @@ def test_the_refusal_names_the_length_typed_in_millimetres(tmp_path, capsys, com
     meant = tmp_path / "meant.toml"
     meant.write_text(_slipped(text, old, new.replace(repr(typed), repr(meant_value))), encoding="utf-8")
     assert main(["check", str(meant)]) == 0, capsys.readouterr().err
+
+
+@pytest.mark.parametrize(("old", "new", "said"), [
+    ("length  = 0.12\n", "length  = 120.0\n", "driver.length = 120 m beside frame.points.O (0.3 m from C)"),
+    ("O = [0.0, 0.30]", "O = [0.0, 0.0003]", "frame.points.O (0.0003 m from C)"),
+], ids=["crank-in-millimetres", "pivots-a-thousandth-apart"])
+def test_a_lever_turned_round_by_a_slipped_length_says_which(tmp_path, capsys, old, new, said):
+    """The Whitworth lever's crank at 120 m (or its pivots 0.3 mm apart) turns the lever round, and
+    `start = "extreme"` was refused for a lever with no extremes, before any warning named the length."""
+    scene = tmp_path / "slipped.toml"
+    scene.write_text(_slipped(SLOTTED.read_text(encoding="utf-8"), old, new), encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    error = without_progress(capsys.readouterr().err).strip().splitlines()[-1]
+    assert error.startswith("graphplan: error: positions.start: "), error
+    assert "link 4 turns round" in error and said in error and "millimetres" in error, error
