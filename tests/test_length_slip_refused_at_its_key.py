@@ -89,3 +89,15 @@ def test_a_lever_turned_round_by_a_slipped_length_says_which(tmp_path, capsys, o
     error = without_progress(capsys.readouterr().err).strip().splitlines()[-1]
     assert error.startswith("graphplan: error: positions.start: "), error
     assert "link 4 turns round" in error and said in error and "millimetres" in error, error
+
+
+def test_a_crank_a_thousand_times_too_short_is_named_beside_the_pole_distance(tmp_path, capsys):
+    """A crank of 0.175 mm draws pa, which velocity_pole fixes at 150 mm, beside links 3000 times as long: the plan
+    was refused at the pole distance alone, and nothing named the crank."""
+    scene = tmp_path / "slipped.toml"
+    scene.write_text(_slipped(RATCHET.read_text(encoding="utf-8"), "length  = 0.175 ", "length  = 0.000175 "),
+                     encoding="utf-8")
+    assert main(["check", str(scene)]) == 2
+    error = without_progress(capsys.readouterr().err).strip().splitlines()[-1]
+    assert error.startswith("graphplan: error: drawing.velocity_pole: "), error
+    assert "driver.length = 0.000175 m" in error, error

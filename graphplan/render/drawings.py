@@ -12,7 +12,7 @@ from ..analysis import VELOCITY_PLANS_FIELD_MM, Analysis, PlanPosition, Velocity
 from ..errors import SceneError
 from ..forces import POLYGON_FIELD_MM, GroupForces, polygon_extent
 from ..kinematics import at
-from ..length_units import refused_at_slip
+from ..length_units import mixed_units, refused_at_slip
 from ..locale import strings
 from ..memo import OwnedMemo
 from ..plans import PLAN_FIELD_MM, Plan, acceleration_plan, spread, velocity_plan
@@ -116,9 +116,13 @@ def refuse_beyond_paper(analysis: Analysis) -> None:
         at_key = f" at {key} = {given:g}" if given is not None else ""
         _refuse_at_length_slip(analysis, f"draws the {kind} plan of position {position.number} {across:.3g} mm "
                                f"across{at_key}", across)
+        # A crank a thousand times shorter than its links draws pa, which the pole distance fixes, as a dot beside
+        # the rest of the plan: the length is the key to change, which nothing else names.
+        units = mixed_units(analysis.mechanism)
         raise SceneError(key, f"draws the {kind} plan of position {position.number} {across:.3g} mm across, "
                          f"more than any paper ({LARGEST_PAPER_MM:g} mm): give {fix} (a {field:g} mm "
-                         "plan), or leave it out for the program to choose", given)
+                         "plan), or leave it out for the program to choose", given,
+                         hint=f"; or {units}" if units is not None else "")
     polygons = _drawn_polygons(analysis)
     for position, group in polygons:
         across = polygon_extent(group.polygon) / group.scale
