@@ -40,42 +40,9 @@ _NUMBERED_PATHS = (
 # The scene's own top-level keys for the numbered tables above: [links.N], [[groups]], …
 _NUMBERED_TOPS = {"links", "groups", "loads", "friction", "points", "measured"}
 
-_CRANK_SLIDER = """
-[scene]
-gravity = 9.81
-[frame]
-points = { O = [0.0, 0.0] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-{speed}
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.4
-guide = { through = "O", angle = 0.0 }
-assembly = "forward"
-[points.S3]
-link = 3
-from = "A"
-toward = "B"
-at = 0.15
-[links.3]
-mass = 2.0
-centre = "S3"
-inertia = 0.03
-[links.4]
-mass = 3.0
-centre = "B"
-"""
-
-
 def _crank_slider(tail: str, speed: str = "rpm = 120.0") -> str:
-    return _CRANK_SLIDER.replace("{speed}", speed) + tail
+    scene = scene_texts.slider_crank_with_masses("Keys", 0.1, 0.4, 120.0, (0.05, 0.15), (1.0, 2.0, 3.0), (0.01, 0.03))
+    return scene.replace("rpm = 120.0", speed) + tail
 
 
 _RESISTING_FORCE = """
