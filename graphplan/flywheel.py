@@ -433,6 +433,12 @@ def misplaced_keys(where: str, path: str) -> dict[str, str]:
     return {key: home for key, home in homes.items() if home != where}
 
 
+def _done(table: Table) -> None:
+    """Reject the ``[dynamics]`` table's first key nobody took, telling a key of another table, or of a table
+    nested in it, where it goes."""
+    table.done(elsewhere={**keys_of_other_tables("dynamics"), **misplaced_keys(table.path, table.path)})
+
+
 _SIDES = ("driving", "resisting")
 
 
@@ -541,7 +547,7 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         from .machine_motion import read_motion
 
         motion = read_motion(table, table.path)
-    table.done(elsewhere={**keys_of_other_tables("dynamics"), **misplaced_keys(table.path, table.path)})
+    _done(table)
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
                         count=count, motion=motion, speed_key=speed_key)
 
@@ -591,7 +597,7 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
                                  "gives its diagram: leave one out")
     inertia = table.number("inertia", 0.0, non_negative=True)
     motion = _read_diagram_motion(table, diagrams, inertia, spec.delta)
-    table.done(elsewhere={**keys_of_other_tables("dynamics"), **misplaced_keys(table.path, table.path)})
+    _done(table)
     omega = spec.omega
     if len(diagrams) == 2:
         constant = "none"
