@@ -138,6 +138,10 @@ def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, f
     drawn = texts(fields)
     found = {}
     for name in ("title", "author", "checked_by", "approved_by", "organization", "designation", "date"):
+        # A field left empty draws no line of its own: the block without it is the block already drawn, and laying
+        # it out again (six of the eight layouts of a scene with no [project]) finds nothing.
+        if not getattr(fields, name):
+            continue
         # A field's lines are what the block draws with it and not without it.
         sizes = [item.size for item in drawn - texts(replace(fields, **{name: ""}))]
         if sizes and min(sizes) < SMALLEST_LETTERING:
