@@ -216,8 +216,9 @@ class Rows:
         self.origins = tuple(origins) or tuple(range(len(self.drawings)))
         self._heading_sizes: dict[tuple[str, float], tuple[float, float]] = {}
         self.beside = [_side_by_side(row, heading.size) for row in rows]
-        # A row of one drawing (the lever) stands the same either way.
-        self.stacked = [_stacked(row, heading.size) if len(row) > 1 else None for row in rows]
+        # Each row stacked, laid out when a shape first stacks it (:meth:`_stacked_block`): a sheet that stands
+        # whole in one or two columns of rows side by side (and each of its versions drawn larger) never does.
+        self._stacked_blocks: dict[int, _Block | None] = {}
         # Each row with its long captions beside their drawings, where that makes it lower (:class:`Part`), laid
         # out when a part is first arranged so: most rows tried for a cut never are.
         self._aside: dict[int, _Block | None] = {}
@@ -225,8 +226,20 @@ class Rows:
     def __len__(self) -> int:
         return len(self.beside)
 
+    @property
+    def stacked(self) -> list[_Block | None]:
+        """Each row with its drawings one under another; None for a row of one drawing (the lever), which stands
+        the same either way."""
+        return [self._stacked_block(index) for index in range(len(self.drawings))]
+
+    def _stacked_block(self, index: int) -> _Block | None:
+        if index not in self._stacked_blocks:
+            row = self.drawings[index]
+            self._stacked_blocks[index] = _stacked(row, self.heading.size) if len(row) > 1 else None
+        return self._stacked_blocks[index]
+
     def block(self, index: int, stacked: bool, aside: bool = False) -> _Block:
-        block = self.stacked[index] if stacked else None
+        block = self._stacked_block(index) if stacked else None
         if block is None and aside:
             if index not in self._aside:
                 self._aside[index] = _captions_beside(self.drawings[index], self.heading.size,
@@ -423,7 +436,7 @@ class Rows:
         """Every way rows ``start``..``stop`` may stand: each column a run of them, each row side by side or
         stacked; all side by side in one column first."""
         indices = range(start, stop)
-        stackable = [k for k in indices if self.stacked[k] is not None]
+        stackable = [k for k in indices if len(self.drawings[k]) > 1]
         if len(indices) > MOST_ROWS_TRIED_STACKED:
             stackable = []
         for stacks in itertools.chain.from_iterable(itertools.combinations(stackable, n)
