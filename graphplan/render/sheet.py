@@ -556,10 +556,13 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         if bigger is None:
             return None
         rows = force_layout.rows(bigger, groups_cut_free)
-        way, other = (split(rows.arranged(rows.in_columns(count)), one.name, one.label, _group_of_field)
-                      for count in (1, 2))
-        if not (fits(width(way), height(way)) or fits(width(other), height(other))):
+        arranged = [rows.arranged(rows.in_columns(count)) for count in (1, 2)]
+        # Measured as a panel of its layers would be, before it is cut into its parts: most ways tried stand on no
+        # empty sheet, in one column or in two, and are thrown away.
+        if not any(fits(x1 - x0, y1 - y0) for x0, y0, x1, y1 in
+                   (tuple(float(value) for value in bounds(arrangement.layers)) for arrangement in arranged)):
             return None
+        way, other = (split(arrangement, one.name, one.label, _group_of_field) for arrangement in arranged)
         panel = replace(way, alternatives=(other,) if other.extent != way.extent else ())
         record = drawn.forces.group_scales
         return replace(_finished(analysis, bigger, panel, [[panel]], rows.heading)[1][0][0],
