@@ -7,6 +7,7 @@ and exit status 2, never a traceback.
 from __future__ import annotations
 
 import argparse
+import atexit
 import contextlib
 import difflib
 import gc
@@ -193,6 +194,8 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
+    if argv is None:  # the command line's own process, which ends when the command does
+        atexit.register(_nothing_collected_at_exit)
     _print_what_the_console_cannot_show_escaped()
     parser = _parser()
     arguments, unknown = parser.parse_known_args(argv)
@@ -257,6 +260,18 @@ class _Terminated(BaseException):
 # then held few of a run's many short-lived arrays and geometries (its passes fell from 0.025 s to 0.006 s).
 YOUNG_COLLECTION_AT = 20_000
 FULL_COLLECTION_EVERY = 100
+
+
+def _nothing_collected_at_exit() -> None:
+    """Every object kept out of the collector's passes as the interpreter ends.
+
+    Those passes walk everything a command made (the modules, the analysis,
+    the drawings and their memos) to free memory that the process hands back
+    whole a moment later: a seventh of a cold run of the bundled scene
+    (0.15 s of about 1.3).  Run at exit, once every file is written and
+    closed; what is not in a cycle is still freed as the modules are.
+    """
+    gc.freeze()
 
 
 @contextlib.contextmanager
