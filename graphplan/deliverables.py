@@ -352,7 +352,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
             layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                 else _force_sheet_layers(analysis, plan, pieces)
-            found.append(Drawing(f"forces_{plan.number}", layers, lever_scale=laid_out.lever_scale if laid_out else None,
+            found.append(Drawing(f"forces_{plan.number}", layers,
+                                 lever_scale=laid_out.lever_scale if laid_out else None,
                                  larger_polygons=_record_arrows(analysis, plan)))
             found += _note_parts(f"forces_{plan.number}", layers, pieces, scales)
             rubbing = plan.with_friction

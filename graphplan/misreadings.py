@@ -780,7 +780,8 @@ def on_sheet_detail(found: OnSheet, number: int) -> str:
             else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
     if found.sheet is None:
         # The record's own groups cut free: forces_N.svg draws their arrows beside its polygons, at a μF of their own.
-        return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} in forces_{number}.svg "
+        return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} in "
+                f"forces_{number}.svg "
                 f"at μF = {found.scales(0)} N/mm (taken at it, every reading is within {found.off * 100.0:.1f} % of "
                 f"the polygons as constructed), drawn at a μF of their own, not its polygons (at μF = "
                 f"{found.scales(1)} N/mm), which they are checked against: readings of the arrows? measure the "

@@ -213,8 +213,9 @@ def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[Velo
 
 def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str, in_note: bool) -> str:
     """Force readings that fit a drawing of the course sheet (its polygons, its groups cut free's arrows, of the force
-    sheet or of the one with friction), drawn larger there than the record's polygons, or the arrows the record's force
-    sheet draws at a μF of their own, in the locale's words; ``in_note`` names the drawings by what they are, not by their files."""
+    sheet or of the one with friction), drawn larger there than the record's polygons, or the arrows the record's
+    force sheet draws at a μF of their own, in the locale's words; ``in_note`` names the drawings by what they are,
+    not by their files."""
     labels = ", ".join(found.polygons)
     polygons = (text["errors_polygons"] if found.every and len(found.polygons) > 1
                 else text["errors_polygons_named" if len(found.polygons) > 1 else "errors_polygon"].format(
