@@ -301,7 +301,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     key = group_id(group.label)
     paper = _paper(sheet.length_scale)
     is_driver = group is sheet.forces.groups[-1]
-    links, special_names, forces, scale = _body_frame(sheet, group, paper)
+    links, special_names, shown, scale = _body_frame(sheet, group, paper)
     arrows: list[Primitive] = []
     drawn: dict[str, tuple[complex, complex, complex]] = {}  # name → (arrow start, arrow end, unit), mm
     anchors: list[Anchor] = []
@@ -312,7 +312,6 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
                    and item.fill is None], 1.0)
     blocks = unary_union([Polygon(item.points) for item in links
                           if isinstance(item, Polyline) and item.closed and item.fill is not None])
-    shown = [force for force in forces if not _negligible(force.force, [other.force for other in forces])]
     # The points the equations take each force's moment about: an arrow set beside its line stays on its line's
     # side of them, so that it turns about each as its term in the equation is signed.
     centres: dict[str, list[complex]] = {}
@@ -390,13 +389,15 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
 
 def _body_frame(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
                 ) -> tuple[list[Primitive], list[str], list[_Force], float]:
-    """The group cut free's links (and its special points) on the paper, those points' names, the forces on it and
-    the μF its arrows are drawn at, which the links' extent sets."""
+    """The group cut free's links (and its special points) on the paper, those points' names, the forces on it that
+    are drawn (a rounding error's is not, :func:`_negligible`) and the μF their arrows are drawn at, which the links'
+    extent sets."""
     links = _links(sheet, group, paper)
     special, special_names = _special_points(sheet, group, paper)
     links += special
     forces = _forces_on(sheet, group)
-    return links, special_names, forces, _arrow_scale([force.force for force in forces], links)
+    shown = [force for force in forces if not _negligible(force.force, [other.force for other in forces])]
+    return links, special_names, shown, _arrow_scale([force.force for force in forces], links)
 
 
 def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...]]]:
@@ -406,9 +407,8 @@ def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...
     paper = _paper(sheet.length_scale)
     found = {}
     for group in sheet.forces.groups:
-        _, _, forces, scale = _body_frame(sheet, group, paper)
-        whole = tuple(force.name for force in forces if re.fullmatch(r"R\d+", force.name)
-                      and not _negligible(force.force, [other.force for other in forces])
+        _, _, shown, scale = _body_frame(sheet, group, paper)
+        whole = tuple(force.name for force in shown if re.fullmatch(r"R\d+", force.name)
                       and abs(force.force) / scale >= LEAST_ARROW_MM)
         found[group.label] = (scale, whole)
     return found
