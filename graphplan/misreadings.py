@@ -22,6 +22,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from .check import ErrorRow, is_balancing, is_reaction, quantity_symbol, segment_millimetres
+from .locale import strings
 from .motion import PositionWarning
 from .scales import nearest_standard_scale
 
@@ -122,7 +123,7 @@ class SheetPolygons:
     (``forces_friction_N.svg``), whose reactions a hand that measured it read; and by each group's label the μF its
     group cut free draws its arrows at there, with the reactions drawn whole at their length: a hand reading a
     reaction off an arrow reads it as off its polygon, at another μF.  ``sheet`` None is the record itself, its
-    groups cut free in ``forces_N.svg`` (:func:`~graphplan.render.drawings.record_arrows`): no polygon of its own
+    groups cut free in ``forces_N.svg`` (:func:`~graphplan.deliverables._record_arrows`): no polygon of its own
     drawn larger, its arrows at theirs."""
 
     sheet: int | None
@@ -177,7 +178,7 @@ class OnSheet:
 
     @property
     def kind(self) -> str:
-        """The locale's key of what the readings fit (:data:`ON_SHEET_KINDS`)."""
+        """The locale's key of what the readings fit (``sheet_drawn_arrows_friction``)."""
         return f"sheet_drawn_{self.drawing}" + ("_friction" if self.friction else "")
 
 
@@ -766,28 +767,21 @@ def sheet_of(position: VelocityPosition, sheets: SheetsDrawn) -> tuple[SheetPoly
     return sheets.get(position.number, ()) if hasattr(position, "acceleration") else ()
 
 
-# What of a course sheet readings fit, in the warning's words, by :attr:`OnSheet.kind`.
-ON_SHEET_KINDS = {"sheet_drawn_polygons": "the polygons",
-                  "sheet_drawn_polygons_friction": "the polygons with friction",
-                  "sheet_drawn_arrows": "the arrows of the groups cut free",
-                  "sheet_drawn_arrows_friction": "the arrows of the groups cut free with friction"}
-
-
 def on_sheet_detail(found: OnSheet, number: int) -> str:
     """The warning's words for force readings that fit a drawing of the course sheet of position ``number``, drawn
     larger there than the record's polygons they are checked against."""
     what = ("the force polygons" if found.every and len(found.polygons) > 1
             else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
+    # The console's warnings are in English whatever the scene's locale, as are the others here.
+    drawn_as = strings("en")[found.kind].format(number=number)
     if found.sheet is None:
         # The record's own groups cut free: forces_N.svg draws their arrows beside its polygons, at a μF of their own.
-        return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} in "
-                f"forces_{number}.svg "
-                f"at μF = {found.scales(0)} N/mm (taken at it, every reading is within {found.off * 100.0:.1f} % of "
-                f"the polygons as constructed), drawn at a μF of their own, not its polygons (at μF = "
-                f"{found.scales(1)} N/mm), which they are checked against: readings of the arrows? measure the "
+        return (f"every reading of {what} fits {drawn_as} in forces_{number}.svg at μF = {found.scales(0)} N/mm "
+                f"(taken at it, every reading is within {found.off * 100.0:.1f} % of the polygons as constructed), "
+                f"drawn at a μF of their own, not its polygons (at μF = {found.scales(1)} N/mm), which they are checked against: readings of the arrows? measure the "
                 f"polygons, or give these readings times {found.factor()}")
     plain = found.kind == "sheet_drawn_polygons"
-    return (f"every reading of {what} fits {ON_SHEET_KINDS[found.kind]} of position {number} on the course sheet "
+    return (f"every reading of {what} fits {drawn_as} on the course sheet "
             f"(sheet_{found.sheet}.svg, at μF = {found.scales(0)} N/mm; taken at it, every reading is within "
             f"{found.off * 100.0:.1f} % of the polygons as constructed), which draws them larger where it has room, "
             f"not {'those' if plain else 'the polygons'} of its force sheet (forces_{number}.svg, at μF = "
@@ -890,7 +884,7 @@ def value_kind(quantity: str) -> str:
 _VALUE_UNITS = {"velocity": "m/s", "acceleration": "m/s²", "forces": "N"}
 
 
-__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "ON_SHEET_KINDS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet",
+__all__ = ["FAR_OFF_PERCENT", "FAR_OFF_PRECISIONS", "UNIFORM_SLIP_PERCENT", "OnGrid", "OnSheet",
            "Rescaled", "Segment", "SheetPolygons", "SheetsDrawn", "Slips", "factor_text", "in_centimetres", "in_metres",
            "in_units", "misread", "off_the_other_plan", "on_grid", "on_sheet_detail", "read_at", "reads_forces",
            "setting", "sharing", "sheet_of", "slips", "typed_unit", "value_kind"]
