@@ -51,6 +51,7 @@ from .rotor_lengths import (
     LARGEST_RADIUS_M,
     LONGEST_ROTOR_M,
     MIXED_RATIO,
+    ROTOR_REACH,
     THINNEST_DISC,
     Implausible,
     LengthsInMillimetres,
@@ -793,51 +794,74 @@ def lengths_in_millimetres(spec: BalancingSpec) -> LengthsInMillimetres | None:
 
 @dataclass(frozen=True)
 class MassesInGrams:
-    """The rotor's masses weigh together more than solid steel filling a cylinder twice as large as the rotor's
-    largest length (:func:`~graphplan.rotor_lengths.heaviest_rotor`), as masses typed in grams make them: 200 for
-    0.2 kg on a rotor 0.1 m across."""
+    """The rotor's masses weigh together more than solid steel filling a cylinder twice as large in radius as the
+    farthest out a mass or a correction turns and twice as long as its masses and planes span along the axis
+    (:func:`~graphplan.rotor_lengths.heaviest_rotor`), as masses typed in grams make them: 200 for 0.2 kg on a rotor
+    0.1 m across.
+
+    ``radius`` is that radius and ``radius_key`` where it is given (the span, where no correction radius is given and
+    the masses' radii, which may be eccentricities, are shorter); ``span`` the masses' and planes' span along the axis.
+    """
 
     masses: tuple[float, ...]
-    size: float
-    size_key: str
+    radius: float
+    radius_key: str
+    span: float
     code = "masses-in-grams"
+
+    @property
+    def length(self) -> float:
+        """The rotor's length the cylinder is twice as long as: its span, or a disc's radius where that is longer, m."""
+        return max(self.span, self.radius)
+
+    @property
+    def cylinder(self) -> tuple[float, float]:
+        """The steel cylinder's radius and length, m: :data:`~graphplan.rotor_lengths.ROTOR_REACH` times the rotor's."""
+        return ROTOR_REACH * self.radius, ROTOR_REACH * self.length
 
     @property
     def limit(self) -> float:
         """The most the masses of a rotor of this size weigh together, kg."""
-        return heaviest_rotor(self.size)
+        return heaviest_rotor(self.radius, self.span)
 
     @property
     def detail(self) -> str:
         """The warning in a line (English, as the command line prints it)."""
         k = max(range(len(self.masses)), key=lambda index: self.masses[index])
         heaviest = self.masses[k]
+        along = ("the masses' and planes' span along the axis" if self.span >= self.radius
+                 else f"its radius: its masses and planes lie {self.span:g} m apart along the axis, within a disc's "
+                      "thickness")
         return (f"balancing.masses[{k}].mass = {heaviest:g} kg, the masses {sum(self.masses):.4g} kg together, on a "
-                f"rotor whose largest length is {self.size:g} m ({self.size_key}): heavier than solid steel filling "
-                f"a cylinder twice that in radius and in length ({self.limit:.3g} kg): grams typed for kg? "
-                f"{heaviest:g} g is balancing.masses[{k}].mass = {heaviest / 1000:g}; the scene's masses are in kg "
-                "(divide grams by 1000)")
+                f"rotor {self.radius:g} m in radius ({self.radius_key}) and {self.length:g} m long ({along}): heavier "
+                f"than solid steel filling a cylinder twice that in radius and in length ({self.limit:.3g} kg): grams "
+                f"typed for kg? {heaviest:g} g is balancing.masses[{k}].mass = {heaviest / 1000:g}; the scene's masses "
+                "are in kg (divide grams by 1000)")
 
 
 def masses_in_grams(spec: BalancingSpec) -> MassesInGrams | None:
     """:class:`MassesInGrams` where two masses or more weigh together more than
-    :func:`~graphplan.rotor_lengths.heaviest_rotor` of the rotor's largest length: a mass's or a correction's radius,
-    or its masses' and planes' span along the axis; else None.  One mass alone is not judged: its radius may be a
-    heavy disc's eccentricity, and nothing else gives the rotor's size."""
+    :func:`~graphplan.rotor_lengths.heaviest_rotor` of the rotor's radius (the farthest out a mass or a correction
+    turns) and its masses' and planes' span along the axis; else None.  One mass alone is not judged: its radius may be
+    a heavy disc's eccentricity, and nothing else gives the rotor's size; nor, without a correction radius, do the
+    masses' radii alone give the rotor's radius (they may all be eccentricities), which is then taken as its span."""
     if len(spec.masses) < 2:
         return None
-    lengths = [(mass.radius, f"balancing.masses[{k}].radius") for k, mass in enumerate(spec.masses)]
-    radii = tuple(spec.correction_radius or ())
-    lengths += [(radius, "balancing.correction_radius" if len(set(radii)) == 1 else f"balancing.correction_radius[{k}]")
-                for k, radius in enumerate(radii)]
+    radii = [(mass.radius, f"balancing.masses[{k}].radius") for k, mass in enumerate(spec.masses)]
+    corrections = tuple(spec.correction_radius or ())
+    radii += [(radius, "balancing.correction_radius" if len(set(corrections)) == 1
+               else f"balancing.correction_radius[{k}]") for k, radius in enumerate(corrections)]
     along = [mass.plane for mass in spec.masses] + list(spec.planes)
-    lengths.append((max(along) - min(along), "the masses' and planes' span along the axis"))
-    size, key = max(lengths, key=lambda item: item[0])
+    span = max(along) - min(along)
+    radius, key = max(radii, key=lambda item: item[0])
+    if not corrections and span > radius:
+        radius, key = span, ("taken as its span: no correction_radius is given, and the masses' radii may be "
+                             "eccentricities")
     masses = tuple(mass.mass for mass in spec.masses)
     # A rotor of no size (every mass on its axis, in one plane) is told so (on_axis), not weighed.
-    if not size > 0 or not sum(masses) > heaviest_rotor(size):
+    if not radius > 0 or not sum(masses) > heaviest_rotor(radius, span):
         return None
-    return MassesInGrams(masses, size, key)
+    return MassesInGrams(masses, radius, key, span)
 
 
 def cautions(result: BalancingResult) -> list[AnglesInRadians | CoupleLeft | LengthsInMillimetres | MassesInGrams

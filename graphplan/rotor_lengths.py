@@ -53,14 +53,20 @@ FLATTEST_ROTOR = 20.0
 # its radius is millimetres.  A disc with every mass in one plane gives no length along its axis to judge by.
 THINNEST_DISC = 200.0
 # A rotor's masses are bolted, welded or cast on it, within its body, and no body is heavier than solid steel: the
-# masses of one rotor together weigh at most a steel cylinder ROTOR_REACH times as large in radius and in length as
-# the largest of its lengths the scene gives (a mass's or a correction's radius, its masses' and planes' span along
-# the axis), 8π·ρ·S³ for S = that length: 197 kg at S = 0.1 m.  The lengths are where the masses' centres turn, not
-# the rim, and a textbook's "mass" is often a whole disc off its centre, hence twice: Khurmi's four masses of 1000 kg
-# in one plane within 0.3 m of the axis, among the heaviest for their size of textbook exercises, fill a fifth of it
-# (5330 kg), his shaft's 1100 kg within 0.7 m along it 2 %, the rotor starter's 42 kg over 0.22 m 2 %.  Masses typed
-# in grams on a rotor some 0.1 m across (200, 150, 250 for 0.2, 0.15, 0.25 kg) pass it three times over.  A rotor of
-# one mass gives it no bound: its radius may be a heavy disc's eccentricity (a 500 kg flywheel 2 mm off its axis).
+# masses of one rotor together weigh at most a steel cylinder ROTOR_REACH times as large in radius as the farthest
+# out a mass or a correction turns, R, and ROTOR_REACH times as long as its masses and planes span along the axis, L
+# (a disc's, shorter than R, taken as R: a rim, a hub and the web between reach farther along the axis than the
+# masses a textbook puts in one plane), ρ·π·(2R)²·2·max(L, R): 197 kg for a disc of R = 0.1 m, 148 kg for a rotor
+# of R = 0.05 m over L = 0.3 m.  Radius and length are weighed apart, for a long rotor's largest length, its span,
+# would bound it by a cylinder as wide as it is long (8·π·ρ·L³, 5330 kg over 0.3 m), which masses in grams on a
+# rotor some 0.1 m across (200, 150, 250 for 0.2, 0.15, 0.25 kg) pass.  The radii are where the masses' centres
+# turn, not the rim, and a textbook's "mass" is often a whole disc off its centre, hence twice: Khurmi's four masses
+# of 1000 kg in one plane within 0.3 m of the axis, among the heaviest for their size of textbook exercises, fill a
+# fifth of it (5330 kg), his shaft's 1100 kg within 0.1 m of the axis over 0.7 m along it four fifths (1380 kg), the
+# rotor starter's 42 kg within 0.06 m over 0.22 m a quarter (156 kg).  Without a correction_radius the masses'
+# radii may all be eccentricities, discs keyed off their centres on a long shaft (500 kg each 2 mm off the axis),
+# which bound no rotor's radius: it is then taken as large as the span, 8·π·ρ·max(R, L)³.  A rotor of one mass gives
+# it no bound at all: its radius may be a heavy disc's eccentricity (a 500 kg flywheel 2 mm off its axis).
 ROTOR_REACH = 2.0
 # The strongest earthquakes move the ground at some 1–3 m/s at their peak, shaking tables a few m/s: a base moving
 # faster than FASTEST_BASE_M_S (Y·ω) has its amplitude in millimetres, or ω in rev/min.
@@ -77,12 +83,11 @@ def lightest_rotor(eccentricity: float) -> float:
     return LIGHTEST_AT_ONE_METRE * eccentricity ** LIGHTNESS_EXPONENT
 
 
-def heaviest_rotor(size: float) -> float:
-    """The most (kg) the masses of a rotor weigh together whose largest length the scene gives (a radius, its span
-    along the axis) is ``size`` (m): solid steel filling a cylinder :data:`ROTOR_REACH` times as large in radius and
-    in length, 8π·ρ·S³."""
-    reach = ROTOR_REACH * size
-    return solid_steel_cylinder(reach, reach)
+def heaviest_rotor(radius: float, span: float) -> float:
+    """The most (kg) the masses of a rotor weigh together that turn within ``radius`` (m) of its axis, its masses and
+    planes ``span`` (m) apart along it: solid steel filling a cylinder :data:`ROTOR_REACH` times that radius, and
+    :data:`ROTOR_REACH` times the span long, or the radius where the span is shorter (a disc), ρ·π·(2R)²·2·max(L, R)."""
+    return solid_steel_cylinder(ROTOR_REACH * radius, ROTOR_REACH * max(span, radius))
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ import pytest
 import graphplan
 from graphplan.cli import main
 from graphplan.starters import starter
+from graphplan.units import STEEL_DENSITY
 from graphplan.vibration import damping_warning
 
 STEEL = 7850.0  # kg/m³
@@ -82,15 +83,16 @@ def test_a_discs_masses_in_grams_are_warned_of(tmp_path, capsys) -> None:
     """200, 150 and 250 g on a disc 0.1 m in radius typed as kg: 600 kg, three times the cylinder's 197 kg."""
     assert 600.0 > DISC_BOUND
     told, results = _run(tmp_path, _disc((200.0, 150.0, 250.0), (0.1, 0.08, 0.1)), capsys, "balancing,note")
-    words = (f"balancing.masses[2].mass = 250 kg, the masses 600 kg together, on a rotor whose largest length is 0.1 m "
-             f"(balancing.masses[0].radius): heavier than solid steel filling a cylinder twice that in radius and in "
-             f"length ({DISC_BOUND:.3g} kg): grams typed for kg? 250 g is balancing.masses[2].mass = 0.25")
+    words = (f"balancing.masses[2].mass = 250 kg, the masses 600 kg together, on a rotor 0.1 m in radius "
+             f"(balancing.masses[0].radius) and 0.1 m long (its radius: its masses and planes lie 0 m apart along the "
+             f"axis, within a disc's thickness): heavier than solid steel filling a cylinder twice that in radius and "
+             f"in length ({DISC_BOUND:.3g} kg): grams typed for kg? 250 g is balancing.masses[2].mass = 0.25")
     assert f"warning: balancing: {words}" in told
     assert any(words in detail for detail in _in_grams(results))
     note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
     assert (f"Caution: the masses weigh 600 kg together, more than solid steel filling a cylinder twice the rotor's "
-            f"largest length (0.1 m) in radius and in length, {DISC_BOUND:.3g} kg: they look typed in grams. As grams "
-            "the heaviest, 250 g, is 0.25 kg.") in note
+            f"size, 0.2 m in radius and 0.2 m long, {DISC_BOUND:.3g} kg: they look typed in grams. As grams the "
+            "heaviest, 250 g, is 0.25 kg.") in note
 
 
 @pytest.mark.parametrize(("masses", "told"), [((70.0, 60.0, 70.0), True), ((65.0, 60.0, 65.0), False),
@@ -127,6 +129,58 @@ def test_heavy_textbook_rotors_are_not_told_their_masses_are_grams(tmp_path, cap
     heavy for their size but in kg; a single mass's radius may be a whole disc's eccentricity, which bounds nothing."""
     _, results = _run(tmp_path, text, capsys, "balancing")
     assert not _in_grams(results)
+
+
+def _shaft(masses: tuple[float, ...], radii: tuple[float, ...], correction: float | None) -> str:
+    """A rotor balanced in two planes 0.3 m apart, its masses in planes 0, 0.15 and 0.3 m along the axis."""
+    listed = ",\n           ".join(f"{{ mass = {mass!r}, radius = {radius!r}, angle = {angle!r}, plane = {plane!r} }}"
+                                   for mass, radius, angle, plane in zip(masses, radii, (0.0, 100.0, 230.0),
+                                                                         (0.0, 0.15, 0.3)))
+    corrected = "" if correction is None else f"correction_radius = {correction!r}\n"
+    return (f'[scene]\ntitle = "Shaft"\nlocale = "en"\n\n[balancing]\nmasses = [ {listed} ]\n'
+            f"planes = [0.0, 0.3]\n{corrected}")
+
+
+# A rotor whose masses and corrections turn within 0.05 m of its axis over 0.3 m along it: the masses of a rotor weigh
+# together at most solid steel filling a cylinder twice that radius and twice that length, π·(0.1 m)²·0.6 m·ρ.  Its
+# largest length, the span, would bound it by a cylinder 0.6 m in radius, π·(0.6 m)²·0.6 m·ρ = 5327 kg.
+SHAFT_BOUND = math.pi * 0.1 ** 2 * 0.6 * STEEL_DENSITY  # 148.0 kg
+
+
+def test_a_two_plane_rotors_masses_in_grams_are_warned_of(tmp_path, capsys) -> None:
+    """200, 150 and 250 g at 0.03–0.05 m over 0.3 m typed as kg: 600 kg, four times the cylinder's 148 kg, though
+    less than one as wide as the rotor is long."""
+    assert 600.0 > SHAFT_BOUND and 600.0 < math.pi * 0.6 ** 2 * 0.6 * STEEL_DENSITY
+    told, results = _run(tmp_path, _shaft((200.0, 150.0, 250.0), (0.03, 0.05, 0.04), 0.05), capsys, "balancing,note")
+    words = (f"balancing.masses[2].mass = 250 kg, the masses 600 kg together, on a rotor 0.05 m in radius "
+             f"(balancing.masses[1].radius) and 0.3 m long (the masses' and planes' span along the axis): heavier than "
+             f"solid steel filling a cylinder twice that in radius and in length ({SHAFT_BOUND:.3g} kg): grams typed "
+             f"for kg? 250 g is balancing.masses[2].mass = 0.25")
+    assert f"warning: balancing: {words}" in told
+    assert [detail for detail in _in_grams(results) if words in detail] == _in_grams(results) != []
+    note = (tmp_path / "out" / "note.md").read_text(encoding="utf-8")
+    assert (f"Caution: the masses weigh 600 kg together, more than solid steel filling a cylinder twice the rotor's "
+            f"size, 0.1 m in radius and 0.6 m long, {SHAFT_BOUND:.3g} kg: they look typed in grams.") in note
+
+
+@pytest.mark.parametrize(("masses", "told"), [((50.0, 50.0, 50.0), True), ((45.0, 50.0, 45.0), False),
+                                              ((0.2, 0.15, 0.25), False)])
+def test_the_two_plane_rotors_bound_weighs_its_radius_and_length_apart(tmp_path, capsys, masses, told) -> None:
+    """150 kg in all is over the hand-computed 148.0 kg, 140 kg under it; 0.2 kg at 0.05 m is a real rotor's mass."""
+    assert (sum(masses) > SHAFT_BOUND) == told
+    _, results = _run(tmp_path, _shaft(masses, (0.03, 0.05, 0.04), 0.05), capsys, "balancing")
+    assert bool(_in_grams(results)) == told
+
+
+def test_eccentric_discs_on_a_shaft_without_a_correction_radius_are_not_told(tmp_path, capsys) -> None:
+    """Discs of 500, 400 and 500 kg keyed 2–3 mm off their centres: the eccentricities bound no rotor's radius
+    (π·(0.006 m)²·0.6 m·ρ = 0.53 kg), so without a correction radius the rotor is taken as wide as it is long,
+    π·(0.6 m)²·0.6 m·ρ = 5327 kg; with one of 0.2 m, π·(0.4 m)²·0.6 m·ρ = 2367 kg, more than their 1400 kg."""
+    eccentric = (500.0, 400.0, 500.0), (0.002, 0.003, 0.002)
+    assert 1400.0 < math.pi * 0.6 ** 2 * 0.6 * STEEL_DENSITY and 1400.0 < math.pi * 0.4 ** 2 * 0.6 * STEEL_DENSITY
+    for correction in (None, 0.2):
+        _, results = _run(tmp_path, _shaft(*eccentric, correction), capsys, "balancing")
+        assert not _in_grams(results)
 
 
 # --- a crank's mass in grams, no inertia given ---------------------------------------------------------------------

@@ -499,8 +499,10 @@ def balancing_section(note: Writer, section: int, result: BalancingResult) -> No
         _lengths_caution(note, lengths)
     if (grams := masses_in_grams(spec)) is not None:
         heaviest = max(grams.masses)
-        note.para(note.t("note_bal_caution_grams", total=note.n(sum(grams.masses)), size=note.n(grams.size),
-                         limit=note.n(grams.limit, 3), mass=note.n(heaviest), kilograms=note.n(heaviest / 1000)))
+        radius, length = grams.cylinder
+        note.para(note.t("note_bal_caution_grams", total=note.n(sum(grams.masses)), radius=note.n(radius),
+                         length=note.n(length), limit=note.n(grams.limit, 3), mass=note.n(heaviest),
+                         kilograms=note.n(heaviest / 1000)))
     if (radians := angles_in_radians(spec)) is not None:
         # Set apart by semicolons: a Russian note's decimal comma would run "0, 1,5708" together.
         note.para(note.t("note_bal_caution_radians", angles="; ".join(note.n(angle) for angle in radians.angles),
