@@ -243,11 +243,14 @@ class MachineDynamics:
                                 if power is not None and power < 1000 and 1000 * motion.torque_at_rest > mr
                                 else "")
                 # At rest the shaft gets u·M(0): a ratio typed the wrong way up (the shaft's speed over the motor's)
-                # gives it u² of what 1/u would, and is asked about where 1/u would start the machine.
+                # gives it u² of what 1/u would, and is asked about where 1/u would start the machine.  Where the gear
+                # line (self.gear) tells the ratio that fits the machine's speed, and the advice points to it, the
+                # question would give that ratio a second time: it is asked only of a motor the gear line cannot
+                # weigh (one of no speed of its own, a constant torque) or whose speed the ratio fits either way up.
                 u = self.spec.motion.motor.gear_ratio
                 inverted = (f"; gear_ratio = {u:g} turns the shaft faster than the motor: the ratio inverted? (it is "
                             f"the motor's speed over the shaft's: 1/{u:g} = {1 / u:.4g})"
-                            if u < 1 and motion.torque_at_rest / u ** 2 > mr else "")
+                            if u < 1 and self.gear is None and motion.torque_at_rest / u ** 2 > mr else "")
                 return (f"{unmoved}, {resisting} N·m ({self.stall_advice('or a start from another angle')})"
                         f"{in_kilowatts}{inverted}")
             held = motion.brake.torque

@@ -104,3 +104,29 @@ def test_a_gear_ratio_that_fits_keeps_the_off_design_advice(tmp_path, capsys):
     (off,) = told
     assert off.startswith("dynamics: the motor runs the machine at ωm = ")
     assert off.endswith(" (a motor, gear ratio or speed that agree with each other)")
+
+
+def test_a_gear_ratio_typed_the_wrong_way_up_is_given_the_ratio_that_fits_once(tmp_path, capsys):
+    # The starter's gearbox typed as the shaft's speed over the motor's, 1/14.4: the motor's 1440 rpm turns the shaft
+    # at some 20 700 rpm, and at rest gives it u·M(0), short of the idling resistance.  The gear line gives the ratio
+    # that fits, 14.4, the motor's speed over the shaft's, and the stall's advice points to it; the stall's line then
+    # asked whether the ratio was inverted, 1/0.0694 = 14.41: the same advice a second time, in check as in run.
+    slip = 1.0 - 1440.0 / 1500.0
+    critical = slip * (2.2 + math.sqrt(2.2 ** 2 - 1.0))
+    starting = 2.0 * 2.2 * 4000.0 / RATED / (1.0 / critical + critical)
+    assert 0.0694 * starting < IDLING < starting / 0.0694
+    told, note = _run(tmp_path, capsys, _kloss(4000.0, ", gear_ratio = 0.0694"))
+    assert main(["check", str(tmp_path / "press.toml")]) == 0
+    checked = [line.removeprefix("warning: ") for line in _printed(capsys).splitlines()
+               if line.startswith("warning: dynamics")]
+    assert checked == told
+    gear = _gear_line(told, "0.0694")
+    (unmoved,) = [line for line in told if line.startswith("dynamics: the machine does not start")]
+    assert unmoved.endswith("(the gear ratio told for dynamics.motor.gear_ratio, a stronger motor, or a start from "
+                            "another angle)")
+    # The ratio that fits, and the words that say which way up a ratio is, once among the lines: the gear line's.
+    assert [line for line in told if "14.4" in line] == [gear] and gear.count("14.4") == 1
+    assert sum(line.count("ω_motor/ω_shaft") + line.count("the motor's speed over the shaft's") for line in told) == 1
+    assert not [line for line in told if "inverted" in line]
+    # The note has no gear line: it advises a larger ratio once, as for a ratio left out.
+    assert note.count("a larger gear ratio") == 1

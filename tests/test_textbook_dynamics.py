@@ -256,18 +256,23 @@ def test_a_correction_radius_in_millimetres_on_a_long_rotor_is_asked_about(capsy
 
 
 def test_a_gear_ratio_typed_the_wrong_way_up_is_asked_about_where_the_machine_does_not_start(capsys, tmp_path):
-    # The press's gearbox from 1440 to 100 rpm typed as the shaft's speed over the motor's, 1/14.4: the motor then
-    # gives the shaft a fourteenth of its torque at rest, and the warning only asked for "a larger gear ratio".
-    text = MOTOR.format(overload=2.2).replace("gear_ratio = 14.4", "gear_ratio = 0.0694")
-    code, err = check(capsys, tmp_path, text)
+    # The press's gearbox from 1440 to 100 rpm typed as the shaft's speed over the motor's, 1/14.4, on a motor of no
+    # speed of its own (a constant 17 N·m), which no gear line weighs: it gives the shaft u·17 = 1.18 N·m at rest,
+    # under the press's 35.1, and 1/u would give it 245 (just under the mean resistance, 245.8, so that it does not
+    # run away); nothing else tells the ratio, and the advice only asked for "a larger gear ratio".
+    constant = MOTOR.format(overload=2.2).replace(
+        'kind = "kloss", power = 4000.0, overload = 2.2, synchronous_rpm = 1500, rated_rpm = 1440, gear_ratio = 14.4',
+        'kind = "constant", torque = 17.0, gear_ratio = 0.0694')
+    assert 0.0694 * 17.0 < 35.113 < 17.0 / 0.0694
+    code, err = check(capsys, tmp_path, constant)
     assert code == 0
     (line,) = [line for line in err.splitlines() if "does not start" in line]
     assert line.endswith("; gear_ratio = 0.0694 turns the shaft faster than the motor: the ratio inverted? (it is "
                          "the motor's speed over the shaft's: 1/0.0694 = 14.41)")
     # The right way up the press starts, and a speed-up gear too weak to start it is not asked about.
-    code, err = check(capsys, tmp_path, MOTOR.format(overload=2.2))
-    assert "does not start" not in err
-    code, err = check(capsys, tmp_path, text.replace("power = 4000.0", "power = 40.0"))
+    code, err = check(capsys, tmp_path, constant.replace("gear_ratio = 0.0694", "gear_ratio = 14.4"))
+    assert code == 0 and "does not start" not in err
+    code, err = check(capsys, tmp_path, constant.replace("torque = 17.0", "torque = 1.0"))
     (line,) = [line for line in err.splitlines() if "does not start" in line]
     assert "inverted" not in line
 
