@@ -216,7 +216,7 @@ def analyse(scene: Scene) -> Analysis:
     every, unplanned = _velocity_plans(mechanism, motion)
     plans, warnings = _plans(mechanism, positions, motion, acting, friction, balance)
     warnings += misread(mechanism, (*plans, *every))
-    in_order = tuple(sorted(lengths_in_millimetres(mechanism) + speed_in_rpm(mechanism)
+    in_order = tuple(sorted(lengths_in_millimetres(motion) + speed_in_rpm(mechanism)
                             + masses_in_grams(mechanism, motion)
                             + inertia_too_large(mechanism, motion) + motion.warnings + stepped_over
                             + _extra_reversals(mechanism, positions)

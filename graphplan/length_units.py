@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from .errors import SceneError
 from .mechanism import Mechanism
-from .motion import PositionWarning
+from .motion import Motion, PositionWarning
 from .units import MIXED_RATIO, millimetres_question, motor_speed_in_rpm
 
 # Lengths typed in millimetres where the scene asks for metres make a mechanism a thousand times too large, and
@@ -20,6 +20,11 @@ LONGEST_LINK_M = 20.0
 # linkages' crank pins (an engine's at 6000 rev/min, a racing engine's) make some 20–40 m/s, so a crank pin over
 # FASTEST_CRANK_PIN_M_S is a length a thousand times too long (or a speed not in rad/s).
 FASTEST_CRANK_PIN_M_S = 100.0
+# A named point lies on its link's body: a centre of mass within the span of the link's joints, a coupler point or a
+# lever's handle a few spans out (a hand lever's some 10).  One FARTHEST_POINT_SPANS times the span from its joint is
+# a length typed in millimetres (a crank's centre 6 m out on a 0.05 m crank), or the link's own length typed a
+# thousandth of itself (a 75 µm crank with its centre 25 mm out): the fixtures' named points lie within 1.1 spans.
+FARTHEST_POINT_SPANS = 20.0
 
 
 def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
@@ -40,12 +45,14 @@ class LengthSlip:
     """One length the scene gives that no machine's linkage has in metres: its key, its value as typed (a frame
     point's ``[x, y]``), what it does there (``puts E 240 m from A, …``), told after ``key = value m``, and whether
     it stands alone among lengths in metres (a named point's, or one :data:`MIXED_RATIO` times the shortest) or
-    with them all in millimetres."""
+    with them all in millimetres.  ``shorter``: typed a thousand times too short, metres divided by 1000 again (a
+    crank of 7.5e-05 for 0.075), not millimetres typed for metres."""
 
     key: str
     value: float | tuple[float, float]
     does: str
     alone: bool
+    shorter: bool = False
 
     @property
     def typed(self) -> str:
@@ -54,20 +61,25 @@ class LengthSlip:
 
     @property
     def meant(self) -> str:
-        """The value read as millimetres, and the key with what was likely meant."""
+        """The question the refusal asks: the value read as millimetres (or as metres divided once too often), and
+        the key with what was likely meant."""
         value = self.value
+        if self.shorter and not isinstance(value, tuple):
+            return f"metres divided by 1000 again? {self.key} = {value * 1000:g} was likely meant"
         meant = (value[0] / 1000, value[1] / 1000) if isinstance(value, tuple) else value / 1000
-        return f"{_written(value)} mm is {self.key} = {_written(meant)}"
+        return f"millimetres typed for metres? {_written(value)} mm is {self.key} = {_written(meant)}"
 
 
 def _written(value: float | tuple[float, float]) -> str:
     return f"[{value[0]:g}, {value[1]:g}]" if isinstance(value, tuple) else f"{value:g}"
 
 
-def length_slip(mechanism: Mechanism) -> LengthSlip | None:
-    """The length :func:`lengths_in_millimetres` names as too long for metres: the longest link's, else the frame
-    point farthest from the first, else the frame guide's point farthest from it, else the named point placed
-    farthest from its link's joint; None where none is beyond :data:`LONGEST_LINK_M`."""
+def length_slip(motion: Motion) -> LengthSlip | None:
+    """The length :func:`lengths_in_millimetres` names as typed in another unit: beyond :data:`LONGEST_LINK_M`, the
+    longest link's, else the frame point farthest from the first, else the frame guide's point farthest from it,
+    else the named point placed farthest from its link's joint; where none is, a named point placed
+    :data:`FARTHEST_POINT_SPANS` times its link's span from its joint (:func:`_point_off_its_link`); else None."""
+    mechanism = motion.mechanism
     lengths = given_lengths(mechanism)
     key, longest = max(lengths, key=lambda item: item[1]) if lengths else ("", 0.0)
     # A named point's reach counts among the lengths a long one stands alone among: a Scotch yoke's crank is its
@@ -90,14 +102,18 @@ def length_slip(mechanism: Mechanism) -> LengthSlip | None:
         key, through, apart, first = guide
         return LengthSlip(key, through, f"lies {apart:.4g} m from {first}, farther than any machine's frame reaches "
                           f"(over {LONGEST_LINK_M:g} m)", apart >= MIXED_RATIO * shortest)
-    return _farthest_point(mechanism)
+    return _farthest_point(mechanism) or _point_off_its_link(motion)
 
 
-def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
+def lengths_in_millimetres(motion: Motion) -> tuple[PositionWarning, ...]:
     """A ``lengths-in-mm`` warning, at the first position, where the scene's lengths are implausible as metres: a
-    link or the frame larger than any machine's, or a crank turning its pin faster than any machine does."""
+    link or the frame larger than any machine's, a named point far off its link (or its link a thousandth of the
+    rest), or a crank turning its pin faster than any machine does."""
+    mechanism = motion.mechanism
+    if (slip := length_slip(motion)) is not None and slip.shorter:
+        # A length a thousandth of itself asks nothing of millimetres: dividing them by 1000 would shrink it further.
+        return (PositionWarning(0, "lengths-in-mm", f"{slip.typed} {slip.does}: {slip.meant}"),)
     told = []
-    slip = length_slip(mechanism)
     # A named point's at or offset alone in millimetres moves no joint, so the mechanism runs: only that length is
     # in millimetres among metres, and the drawings it swells are refused at it (:func:`refused_at_slip`).
     some = slip is not None and slip.alone
@@ -119,7 +135,7 @@ def lengths_in_millimetres(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
     return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + f": {millimetres_question(some=some)}{unless}"),)
 
 
-def refused_at_slip(mechanism: Mechanism, drawn: str, across_mm: float, largest_mm: float) -> SceneError | None:
+def refused_at_slip(motion: Motion, drawn: str, across_mm: float, largest_mm: float) -> SceneError | None:
     """The refusal of a drawing ``across_mm`` wide, more than ``largest_mm``, at the length typed in millimetres
     that swells it, where :func:`length_slip` finds one and the drawing would fit were it a thousand times smaller;
     None otherwise, the drawing's own scale then the key to change.
@@ -127,14 +143,14 @@ def refused_at_slip(mechanism: Mechanism, drawn: str, across_mm: float, largest_
     ``drawn`` says what the drawing is and at which key's value (``draws the velocity plan of position 5 6.52e+04
     mm across at drawing.velocity_pole = 150``).  Refused at that key alone, the student was sent to a scale never
     changed, while the warning just before named the length."""
-    slip = length_slip(mechanism)
+    slip = length_slip(motion)
     # Every length in millimetres is no one key's slip: the warning asks to divide them all, and a μl given for
     # them is refused at its own key.
     if slip is None or not slip.alone or not across_mm / 1000 <= largest_mm:
         return None
     value = list(slip.value) if isinstance(slip.value, tuple) else slip.value
-    return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm): millimetres "
-                      f"typed for metres? {slip.meant}", value)
+    return SceneError(slip.key, f"{slip.does}, and {drawn}, more than any paper ({largest_mm:g} mm): {slip.meant}",
+                      value)
 
 
 def _farthest_point(mechanism: Mechanism) -> LengthSlip | None:
@@ -146,6 +162,76 @@ def _farthest_point(mechanism: Mechanism) -> LengthSlip | None:
     key, value = ("at", far.at) if abs(far.at) >= abs(far.offset) else ("offset", far.offset)
     return LengthSlip(f"{far.where}.{key}", value, f"puts {far.name} {abs(complex(far.at, far.offset)):.4g} m from "
                       f"{far.start}, farther than any machine's link reaches (over {LONGEST_LINK_M:g} m)", True)
+
+
+def _point_off_its_link(motion: Motion) -> LengthSlip | None:
+    """A named point placed :data:`FARTHEST_POINT_SPANS` times its link's span (its joints', the named points left
+    out) from its joint, told at the length of the two that stands alone beyond the mechanism's other lengths: the
+    point's ``at`` or ``offset`` where it reaches beyond every one of them (millimetres typed for metres), the link's
+    own length where it falls short of every one (metres divided by 1000 again); None where no point is so far
+    off, or neither stands alone (nothing to tell which is the slip)."""
+    mechanism = motion.mechanism
+    named = {spec.name for spec in mechanism.scene.points}
+    given = given_lengths(mechanism)
+    for spec in sorted(mechanism.scene.points, key=lambda spec: -abs(complex(spec.at, spec.offset))):
+        reach = abs(complex(spec.at, spec.offset))
+        span = _joints_span(motion, spec.link, named, spec.start)
+        if span is None or not reach >= FARTHEST_POINT_SPANS * span[0]:
+            continue
+        length = _length_of_link(mechanism, spec.link, span[0], given)
+        # Told by the lengths that are neither: the point's reach beyond every one of them, or the link's length
+        # short of every one.  A crank with only its centre to go by tells neither.
+        rest = [abs(complex(other.at, other.offset)) for other in mechanism.scene.points if other is not spec]
+        rest += [apart for _, _, apart, _ in _frame_guides(mechanism)]
+        if (spread := _frame_spread(mechanism)) is not None:
+            rest.append(spread[3])
+        rest += [value for key, value in given if length is None or key != length[0]]
+        rest = [value for value in rest if value > 0]
+        if not rest:
+            continue
+        beyond, short_of = reach / max(rest), min(rest) / span[0]
+        if beyond > 1 and beyond >= short_of:
+            key, value = ("at", spec.at) if abs(spec.at) >= abs(spec.offset) else ("offset", spec.offset)
+            return LengthSlip(f"{spec.where}.{key}", value, f"puts {spec.name} {reach:.4g} m from {spec.start}, "
+                              f"{_times(reach / span[0])} times the {span[0]:.4g} m its link {spec.link} spans "
+                              f"({span[1]}) and beyond every other length of the mechanism "
+                              f"({max(*rest, span[0]):.4g} m at most)", True)
+        if length is not None and short_of > 1:
+            shortest = min(*rest, reach)
+            return LengthSlip(length[0], length[1], f"is {_times(shortest / span[0])} times shorter than every other "
+                              f"length of the mechanism ({shortest:.4g} m and up; {spec.name} lies {reach:.4g} m from "
+                              f"{spec.start} on link {spec.link})", True, shorter=True)
+    return None
+
+
+def _times(ratio: float) -> str:
+    """A ratio as the warnings write how many times: whole from 10 on (2133, not 2.13e+03)."""
+    return f"{ratio:.0f}" if ratio >= 10 else f"{ratio:.2g}"
+
+
+def _joints_span(motion: Motion, link: int, named: set[str], start: str) -> tuple[float, str] | None:
+    """The largest distance (m) between two of ``link``'s points that are no named points (its joints, a frame's
+    pivots), with the two, ``start`` first where it is one (``"O–A"``); None for a link with one such point (a
+    slider's block, a yoke)."""
+    names = sorted(name for name in motion.mechanism.fixed_on.get(link, ()) if name not in named and name in
+                   motion.points)
+    where = {name: complex(*motion.point(name).r[0]) for name in names}
+    spans = [(abs(where[a] - where[b]), f"{b}–{a}" if b == start else f"{a}–{b}") for n, a in enumerate(names)
+             for b in names[n + 1:] if abs(where[a] - where[b]) > 0]
+    return max(spans) if spans else None
+
+
+def _length_of_link(mechanism: Mechanism, link: int, span: float,
+                    given: list[tuple[str, float]]) -> tuple[str, float] | None:
+    """The key and value of the length the scene gives that is ``link``'s span: the crank's, or the one given length
+    of that value; None where none is (a span between joints no one length gives), or several are (which of them
+    was typed is not to be told)."""
+    # The span is measured on the solved positions: a class III group's by Newton's method, to some 1e-12.
+    found = [(key, value) for key, value in given if abs(value - span) <= 1e-6 * span]
+    driver = mechanism.driver
+    if driver.kind == "crank" and driver.link == link and ("driver.length", driver.length) in found:
+        return "driver.length", driver.length
+    return found[0] if len(found) == 1 else None
 
 
 def _frame_spread(mechanism: Mechanism) -> tuple[str, str, complex, float] | None:

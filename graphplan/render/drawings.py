@@ -142,7 +142,7 @@ def _refuse_at_length_slip(analysis: Analysis, drawn: str, across: float) -> Non
     """Refuse a drawing larger than any paper at the length typed in millimetres that swells it, where a length is
     (:func:`graphplan.length_units.refused_at_slip`): the scale the drawing is refused at is one the student never
     changed, and fits once the length is in metres."""
-    refused = refused_at_slip(analysis.mechanism, drawn, across, LARGEST_PAPER_MM)
+    refused = refused_at_slip(analysis.motion, drawn, across, LARGEST_PAPER_MM)
     if refused is not None:
         raise refused
 
