@@ -46,13 +46,24 @@ class LengthSlip:
     point's ``[x, y]``), what it does there (``puts E 240 m from A, …``), told after ``key = value m``, and whether
     it stands alone among lengths in metres (a named point's, or one :data:`MIXED_RATIO` times the shortest) or
     with them all in millimetres.  ``shorter``: typed a thousand times too short, metres divided by 1000 again (a
-    crank of 7.5e-05 for 0.075), not millimetres typed for metres."""
+    crank of 7.5e-05 for 0.075), not millimetres typed for metres.  ``spans``: where a named point far off its link
+    gives the slip away, how many times the point's link, as typed, is shorter than the length beside it the slip
+    is judged by (the point's reach, or for a link too short the mechanism's shortest other length); 0 otherwise."""
 
     key: str
     value: float | tuple[float, float]
     does: str
     alone: bool
     shorter: bool = False
+    spans: float = 0.0
+
+    @property
+    def meant_value(self) -> float | tuple[float, float]:
+        """What was likely meant: the value a thousand times smaller (or, ``shorter``, larger)."""
+        value = self.value
+        if isinstance(value, tuple):
+            return value[0] / 1000, value[1] / 1000
+        return value * 1000 if self.shorter else value / 1000
 
     @property
     def typed(self) -> str:
@@ -63,11 +74,9 @@ class LengthSlip:
     def meant(self) -> str:
         """The question the refusal asks: the value read as millimetres (or as metres divided once too often), and
         the key with what was likely meant."""
-        value = self.value
-        if self.shorter and not isinstance(value, tuple):
-            return f"metres divided by 1000 again? {self.key} = {value * 1000:g} was likely meant"
-        meant = (value[0] / 1000, value[1] / 1000) if isinstance(value, tuple) else value / 1000
-        return f"millimetres typed for metres? {_written(value)} mm is {self.key} = {_written(meant)}"
+        if self.shorter:
+            return f"metres divided by 1000 again? {self.key} = {_written(self.meant_value)} was likely meant"
+        return f"millimetres typed for metres? {_written(self.value)} mm is {self.key} = {_written(self.meant_value)}"
 
 
 def _written(value: float | tuple[float, float]) -> str:
@@ -120,11 +129,7 @@ def lengths_in_millimetres(motion: Motion) -> tuple[PositionWarning, ...]:
     if slip is not None:
         told.append(f"{slip.typed} {slip.does}")
     driver = mechanism.driver
-    # An omega that reads as a motor's rpm explains a fast crank pin by itself, and is told so (``speed-in-rpm``):
-    # asking of millimetres too would send the student to lengths that are right.
-    rpm_typed = driver.kind == "crank" and driver.rpm is None and motor_speed_in_rpm(driver.omega)
-    fast = driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S and not rpm_typed
-    if fast:
+    if fast := crank_pin_too_fast(mechanism):
         told.append(f"driver.length = {driver.length:g} m at ω = {abs(driver.omega):.4g} rad/s moves the crank pin "
                     f"{driver.joint} at {abs(driver.omega) * driver.length:.4g} m/s, faster than any machine's (over "
                     f"{FASTEST_CRANK_PIN_M_S:g} m/s)")
@@ -133,6 +138,15 @@ def lengths_in_millimetres(motion: Motion) -> tuple[PositionWarning, ...]:
     unless = ", unless ω is too large: it is in rad/s, and rev/min are given as driver.rpm" if len(told) == 1 and fast \
         else ""
     return (PositionWarning(0, "lengths-in-mm", "; ".join(told) + f": {millimetres_question(some=some)}{unless}"),)
+
+
+def crank_pin_too_fast(mechanism: Mechanism) -> bool:
+    """Whether the crank turns its pin faster than :data:`FASTEST_CRANK_PIN_M_S`, its ω not a motor's rpm."""
+    driver = mechanism.driver
+    # An omega that reads as a motor's rpm explains a fast crank pin by itself, and is told so (``speed-in-rpm``):
+    # asking of millimetres too would send the student to lengths that are right.
+    rpm_typed = driver.kind == "crank" and driver.rpm is None and motor_speed_in_rpm(driver.omega)
+    return bool(driver.kind == "crank" and abs(driver.omega) * driver.length > FASTEST_CRANK_PIN_M_S and not rpm_typed)
 
 
 def refused_at_slip(motion: Motion, drawn: str, across_mm: float, largest_mm: float) -> SceneError | None:
@@ -195,12 +209,12 @@ def _point_off_its_link(motion: Motion) -> LengthSlip | None:
             return LengthSlip(f"{spec.where}.{key}", value, f"puts {spec.name} {reach:.4g} m from {spec.start}, "
                               f"{_times(reach / span[0])} times the {span[0]:.4g} m its link {spec.link} spans "
                               f"({span[1]}) and beyond every other length of the mechanism "
-                              f"({max(*rest, span[0]):.4g} m at most)", True)
+                              f"({max(*rest, span[0]):.4g} m at most)", True, spans=reach / span[0])
         if length is not None and short_of > 1:
             shortest = min(*rest, reach)
             return LengthSlip(length[0], length[1], f"is {_times(shortest / span[0])} times shorter than every other "
                               f"length of the mechanism ({shortest:.4g} m and up; {spec.name} lies {reach:.4g} m from "
-                              f"{spec.start} on link {spec.link})", True, shorter=True)
+                              f"{spec.start} on link {spec.link})", True, shorter=True, spans=shortest / span[0])
     return None
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -39,6 +40,45 @@ def test_lengths_in_millimetres_are_told_in_the_note_under_the_initial_data(loca
     # Under the table of the dimensions it is about, before the plans.
     assert note.index("| 550 ") < note.index(told) < note.index("\n## 3")
     assert CAUTION[locale] not in _note(graphplan.load(scaled(1.0)), locale)
+
+
+def _fixture_slipped(path: str, old: str, new: str, *drop: str) -> graphplan.scene.Scene:
+    text = Path(path).read_text(encoding="utf-8")
+    assert text.count(old) == 1
+    text = text.replace(old, new)
+    for line in drop:  # the scales that would refuse the drawings the slip swells: the run then writes its note
+        text = "\n".join(row for row in text.split("\n") if not row.startswith(line))
+    return graphplan.load_text(text)
+
+
+# (fixture, the line as written, the line with the slip, the note's sentence, the key, typed, meant, times)
+ONE_LENGTH_SLIPS = [
+    # The yoke's crank 7.5e-05 m, its centre 0.025 m out: 0.025 / 7.5e-05 = 333 times; 0.075 meant.
+    pytest.param("fixtures/scotch_yoke.toml", "length  = 0.075", "length  = 7.5e-05",
+                 "note_warning_length_a_thousandth", "driver.length", 7.5e-05, 0.075, 0.025 / 7.5e-05,
+                 id="crank-a-thousandth"),
+    # The triad's S6 3 m to the left of B on a link whose sides are 0.12, 0.108 and 0.108 m: |0.06 + 3j| / 0.12.
+    pytest.param("fixtures/triad_class_iii.toml", "at = 0.06, offset = 0.03 }", "at = 0.06, offset = 3.0 }",
+                 "note_warning_point_far_off", "points.S6.offset", 3.0, 0.003, abs(0.06 + 3j) / 0.12,
+                 id="centre-far-off"),
+]
+
+
+@pytest.mark.parametrize("locale", LOCALES)
+@pytest.mark.parametrize(("fixture", "old", "new", "sentence", "key", "typed", "meant", "times"), ONE_LENGTH_SLIPS)
+def test_one_length_a_thousand_times_off_is_told_in_the_note_with_what_was_meant(
+        locale, fixture, old, new, sentence, key, typed, meant, times):
+    """A length slip the drawings do not refuse (the program chooses their scales) is handed in with a note: it says
+    which length and what was likely meant, not "dimensions larger than any machine's", which none of these is."""
+    note = _note(_fixture_slipped(fixture, old, new, "length_scale", "velocity_pole", "acceleration_pole"), locale)
+    mark = "," if locale == "ru" else "."
+    def written(value: float) -> str:  # 7.5e-05 as 0.000075, 3.0 as 3: the note writes no powers of ten here
+        return f"{value:.6f}".rstrip("0").rstrip(".").replace(".", mark)
+
+    told = strings(locale)[sentence].format(length=key, value=written(typed), meant=written(meant),
+                                            times=round(times))
+    assert told in note
+    assert strings(locale)["note_warning_lengths_in_mm"].split("{")[0] not in note
 
 
 @pytest.mark.parametrize("locale", LOCALES)

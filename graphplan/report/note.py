@@ -41,7 +41,7 @@ from ..analysis import SCENE_WIDE_WARNINGS, Analysis, PlanPosition, VelocityPosi
 from ..check import Reading, epsilon_of_another, quantity_symbol
 from ..errors import SceneError
 from ..kinematics import at, cross
-from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M
+from ..length_units import FASTEST_CRANK_PIN_M_S, LONGEST_LINK_M, crank_pin_too_fast, length_slip
 from ..locale import Count, strings
 from ..plans import PLAN_FIELD_MM, LaidVector, LineMeaning, Plan, Similarity, Step, image_name
 from ..render.drawings import dimensioned_travels, length_scale
@@ -501,9 +501,8 @@ class _Note:
         codes = sorted({warning.code for warning in self.analysis.warnings if warning.code in SCENE_WIDE_WARNINGS})
         working = self.analysis.scene.positions.working
         if codes:
-            self.para(" ".join(self.t("note_warning_" + code.replace("-", "_"), link=working.link if working else "",
-                                      longest=self.n(LONGEST_LINK_M), fastest=self.n(FASTEST_CRANK_PIN_M_S))
-                               for code in codes))
+            self.para(" ".join(self.lengths_in_mm() if code == "lengths-in-mm" else self.t(
+                "note_warning_" + code.replace("-", "_"), link=working.link if working else "") for code in codes))
         # Near a singular position the plans, and a hand drawing of them, magnify every slip: a note that hands in
         # their values must say where, as the console did.
         numbers = self.analysis.positions.numbers
@@ -517,6 +516,20 @@ class _Note:
         if toggles:
             pairs = (f"{numbers[after]}–{numbers[(after + 1) % len(numbers)]}" for after in toggles)
             self.para(self.t("note_warning_toggle_between", pairs=self.text["enumeration"].join(pairs)))
+
+    def lengths_in_mm(self) -> str:
+        """The caution of the ``lengths-in-mm`` warning: dimensions larger than any machine's, or the one length a
+        named point far off its link gives away, with what was likely meant (a crank a thousandth of itself is no
+        millimetres, and a point 6 m off a 0.05 m crank no dimension over 20 m)."""
+        larger = self.t("note_warning_lengths_in_mm", longest=self.n(LONGEST_LINK_M),
+                        fastest=self.n(FASTEST_CRANK_PIN_M_S))
+        slip = length_slip(self.analysis.motion)
+        if slip is None or not slip.spans or isinstance(slip.value, tuple):
+            return larger
+        told = self.t("note_warning_length_a_thousandth" if slip.shorter else "note_warning_point_far_off",
+                      length=literal(slip.key), value=self.n(slip.value), meant=self.n(slip.meant_value),
+                      times=self.n(round(slip.spans)) if slip.spans >= 10 else self.n(slip.spans, 2))
+        return f"{told} {larger}" if crank_pin_too_fast(self.mechanism) else told
 
     def frame_rows(self) -> list[list[str]]:
         """The frame's dimensions: how far apart its points are (lOC), and where each of its named lines runs:
