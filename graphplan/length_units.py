@@ -41,21 +41,36 @@ def given_lengths(mechanism: Mechanism) -> list[tuple[str, float]]:
 
 
 @dataclass(frozen=True)
+class FarOff:
+    """The named point far off its link that gives a length slip away: its name, the joint it is placed from, how
+    far (m), the link's two joints that span it (``"O–A"``), how many times the slipped length, as typed, is off
+    the length beside it that it is judged by (the link's span, for a point's; the mechanism's next shortest
+    length, for a link's), and how far the point lies with the slip put right (its ``at`` or ``offset`` a
+    thousandth, the other as typed; for a link's, as far as typed)."""
+
+    point: str
+    start: str
+    reach: float
+    joints: str
+    times: float
+    reach_meant: float
+
+
+@dataclass(frozen=True)
 class LengthSlip:
     """One length the scene gives that no machine's linkage has in metres: its key, its value as typed (a frame
     point's ``[x, y]``), what it does there (``puts E 240 m from A, …``), told after ``key = value m``, and whether
     it stands alone among lengths in metres (a named point's, or one :data:`MIXED_RATIO` times the shortest) or
     with them all in millimetres.  ``shorter``: typed a thousand times too short, metres divided by 1000 again (a
-    crank of 7.5e-05 for 0.075), not millimetres typed for metres.  ``spans``: where a named point far off its link
-    gives the slip away, how many times the point's link, as typed, is shorter than the length beside it the slip
-    is judged by (the point's reach, or for a link too short the mechanism's shortest other length); 0 otherwise."""
+    crank of 7.5e-05 for 0.075), not millimetres typed for metres.  ``far_off``: the named point far off its link
+    that gives the slip away, where one does."""
 
     key: str
     value: float | tuple[float, float]
     does: str
     alone: bool
     shorter: bool = False
-    spans: float = 0.0
+    far_off: FarOff | None = None
 
     @property
     def meant_value(self) -> float | tuple[float, float]:
@@ -206,15 +221,18 @@ def _point_off_its_link(motion: Motion) -> LengthSlip | None:
         beyond, short_of = reach / max(rest), min(rest) / span[0]
         if beyond > 1 and beyond >= short_of:
             key, value = ("at", spec.at) if abs(spec.at) >= abs(spec.offset) else ("offset", spec.offset)
+            meant = complex(spec.at / 1000, spec.offset) if key == "at" else complex(spec.at, spec.offset / 1000)
             return LengthSlip(f"{spec.where}.{key}", value, f"puts {spec.name} {reach:.4g} m from {spec.start}, "
                               f"{_times(reach / span[0])} times the {span[0]:.4g} m its link {spec.link} spans "
                               f"({span[1]}) and beyond every other length of the mechanism "
-                              f"({max(*rest, span[0]):.4g} m at most)", True, spans=reach / span[0])
+                              f"({max(*rest, span[0]):.4g} m at most)", True,
+                              far_off=FarOff(spec.name, spec.start, reach, span[1], reach / span[0], abs(meant)))
         if length is not None and short_of > 1:
             shortest = min(*rest, reach)
             return LengthSlip(length[0], length[1], f"is {_times(shortest / span[0])} times shorter than every other "
                               f"length of the mechanism ({shortest:.4g} m and up; {spec.name} lies {reach:.4g} m from "
-                              f"{spec.start} on link {spec.link})", True, shorter=True, spans=shortest / span[0])
+                              f"{spec.start} on link {spec.link})", True, shorter=True,
+                              far_off=FarOff(spec.name, spec.start, reach, span[1], shortest / span[0], reach))
     return None
 
 

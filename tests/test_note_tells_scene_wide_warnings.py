@@ -51,33 +51,34 @@ def _fixture_slipped(path: str, old: str, new: str, *drop: str) -> graphplan.sce
     return graphplan.load_text(text)
 
 
-# (fixture, the line as written, the line with the slip, the note's sentence, the key, typed, meant, times)
-ONE_LENGTH_SLIPS = [
-    # The yoke's crank 7.5e-05 m, its centre 0.025 m out: 0.025 / 7.5e-05 = 333 times; 0.075 meant.
-    pytest.param("fixtures/scotch_yoke.toml", "length  = 0.075", "length  = 7.5e-05",
-                 "note_warning_length_a_thousandth", "driver.length", 7.5e-05, 0.075, 0.025 / 7.5e-05,
-                 id="crank-a-thousandth"),
-    # The triad's S6 3 m to the left of B on a link whose sides are 0.12, 0.108 and 0.108 m: |0.06 + 3j| / 0.12.
-    pytest.param("fixtures/triad_class_iii.toml", "at = 0.06, offset = 0.03 }", "at = 0.06, offset = 3.0 }",
-                 "note_warning_point_far_off", "points.S6.offset", 3.0, 0.003, abs(0.06 + 3j) / 0.12,
-                 id="centre-far-off"),
-]
+def _written(value: float, locale: str) -> str:
+    """A length as the note writes it here, to its fifth digit (7.5e-05 as 0.000075, 3.0 as 3)."""
+    return f"{float(f'{value:.5g}'):.8f}".rstrip("0").rstrip(".").replace(".", "," if locale == "ru" else ".")
 
 
 @pytest.mark.parametrize("locale", LOCALES)
-@pytest.mark.parametrize(("fixture", "old", "new", "sentence", "key", "typed", "meant", "times"), ONE_LENGTH_SLIPS)
-def test_one_length_a_thousand_times_off_is_told_in_the_note_with_what_was_meant(
-        locale, fixture, old, new, sentence, key, typed, meant, times):
-    """A length slip the drawings do not refuse (the program chooses their scales) is handed in with a note: it says
-    which length and what was likely meant, not "dimensions larger than any machine's", which none of these is."""
-    note = _note(_fixture_slipped(fixture, old, new, "length_scale", "velocity_pole", "acceleration_pole"), locale)
-    mark = "," if locale == "ru" else "."
-    def written(value: float) -> str:  # 7.5e-05 as 0.000075, 3.0 as 3: the note writes no powers of ten here
-        return f"{value:.6f}".rstrip("0").rstrip(".").replace(".", mark)
+def test_a_crank_a_thousandth_of_itself_is_told_in_the_note_with_what_was_meant(locale):
+    """The yoke's crank typed 7.5e-05 m, its centre 0.025 m out, the scales left to the program: the drawings fit,
+    the run writes its note, which said the dimensions were larger than any machine's and probably millimetres.  It
+    names the length as the note does (lOA), 0.025 / 7.5e-05 = 333 times shorter, and the 0.075 m meant."""
+    note = _note(_fixture_slipped("fixtures/scotch_yoke.toml", "length  = 0.075", "length  = 7.5e-05",
+                                  "length_scale", "velocity_pole", "acceleration_pole"), locale)
+    told = strings(locale)["note_warning_length_a_thousandth"].format(
+        length="lOA", value=_written(7.5e-05, locale), meant=_written(0.075, locale), times=round(0.025 / 7.5e-05))
+    assert told in note and "driver.length" not in note  # the note's reader has no scene to look a key up in
+    assert strings(locale)["note_warning_lengths_in_mm"].split("{")[0] not in note
 
-    told = strings(locale)[sentence].format(length=key, value=written(typed), meant=written(meant),
-                                            times=round(times))
-    assert told in note
+
+@pytest.mark.parametrize("locale", LOCALES)
+def test_a_centre_far_off_its_link_is_told_in_the_note_with_where_it_was_meant(locale):
+    """The triad's S6 3 m to the left of B (0.06 m along BD) on a link whose sides are 0.12, 0.108 and 0.108 m:
+    |0.06 + 3j| / 0.12 = 25 times the link's span; with the offset in metres, |0.06 + 0.003j| from B."""
+    note = _note(_fixture_slipped("fixtures/triad_class_iii.toml", "at = 0.06, offset = 0.03 }",
+                                  "at = 0.06, offset = 3.0 }"), locale)
+    told = strings(locale)["note_warning_point_far_off"].format(
+        point="S6", start="B", reach=_written(abs(0.06 + 3j), locale), meant=_written(abs(0.06 + 0.003j), locale),
+        times=round(abs(0.06 + 3j) / 0.12))
+    assert told in note and "points.S6" not in note
     assert strings(locale)["note_warning_lengths_in_mm"].split("{")[0] not in note
 
 

@@ -520,15 +520,21 @@ class _Note:
     def lengths_in_mm(self) -> str:
         """The caution of the ``lengths-in-mm`` warning: dimensions larger than any machine's, or the one length a
         named point far off its link gives away, with what was likely meant (a crank a thousandth of itself is no
-        millimetres, and a point 6 m off a 0.05 m crank no dimension over 20 m)."""
+        millimetres, and a point 6 m off a 0.05 m crank no dimension over 20 m), said in the note's own terms (lOA,
+        point S2), not the scene's keys, which its reader does not have."""
         larger = self.t("note_warning_lengths_in_mm", longest=self.n(LONGEST_LINK_M),
                         fastest=self.n(FASTEST_CRANK_PIN_M_S))
         slip = length_slip(self.analysis.motion)
-        if slip is None or not slip.spans or isinstance(slip.value, tuple):
+        if slip is None or slip.far_off is None or isinstance(slip.value, tuple):
             return larger
-        told = self.t("note_warning_length_a_thousandth" if slip.shorter else "note_warning_point_far_off",
-                      length=literal(slip.key), value=self.n(slip.value), meant=self.n(slip.meant_value),
-                      times=self.n(round(slip.spans)) if slip.spans >= 10 else self.n(slip.spans, 2))
+        far = slip.far_off
+        times = self.n(round(far.times)) if far.times >= 10 else self.n(far.times, 2)
+        if slip.shorter:
+            told = self.t("note_warning_length_a_thousandth", length="l" + far.joints.replace("–", ""),
+                          value=self.n(slip.value), meant=self.n(slip.value * 1000), times=times)
+        else:
+            told = self.t("note_warning_point_far_off", point=far.point, start=far.start, reach=self.n(far.reach),
+                          meant=self.n(far.reach_meant), times=times)
         return f"{told} {larger}" if crank_pin_too_fast(self.mechanism) else told
 
     def frame_rows(self) -> list[list[str]]:
