@@ -420,6 +420,11 @@ FASTEST_FLYWHEEL_SHAFT_RPM = 100_000.0
 # flywheel's own bounds: a large press's main shaft at some 10 rev/min, an engine's crank at up to some 10 000.
 SLOWEST_MEAN_RPM = SLOWEST_FLYWHEEL_SHAFT_RPM
 FASTEST_MEAN_RPM = FASTEST_FLYWHEEL_SHAFT_RPM
+# A run's start speed (the shaft's, or a clutch's driving half's) over the machine's mean speed: a machine starts from
+# rest, or runs down from about its running speed (an overspeed trip's 1.1–1.2).  A nameplate's 1450 rpm typed as
+# start.omega under a press's 100 rpm is some 140 times it, which the run still integrates and the rpm warning asks
+# about; 200 times it and more no run means, where the run could still be short enough to be integrated.
+FASTEST_START_OVER_MEAN = 200.0
 
 
 def misplaced_keys(where: str, path: str) -> dict[str, str]:
@@ -493,14 +498,15 @@ class DynamicsSpec:
     speed_key: str | None = None
 
 
-def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = None) -> DynamicsSpec:
+def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = None, driver: Any = None) -> DynamicsSpec:
     """The ``[dynamics]`` table, every key checked; the equation of motion's by its own reader.
 
     Without a ``linkage`` the table must give a load diagram (:data:`DIAGRAM_KEYS`), and may not
     give ``constant``; with one, no diagram.  ``once_over`` names the driver's key whose range its
     positions run over once (``driver.swing``, ``driver.travel``), None for a crank that turns
     round: such a run has an equivalent model, but neither a flywheel, which evens out the speed
-    from turn to turn, nor the equation of motion, which is integrated over the turns.
+    from turn to turn, nor the equation of motion, which is integrated over the turns.  ``driver``, a crank's
+    record (``where``, ``omega``, ``rpm``), gives the mean speed where the table gives none, bounded as the table's.
     """
     if linkage:
         for key in _DIAGRAM_ONLY:
@@ -527,6 +533,8 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     omega = table.speed(None, positive=True)
     if speed_key is not None:
         _refuse_mean_speed(table, speed_key, omega)
+    elif driver is not None and once_over is None:
+        _refuse_driver_mean_speed(driver, table.path)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     if shaft is not None and not SLOWEST_FLYWHEEL_SHAFT_RPM <= shaft <= FASTEST_FLYWHEEL_SHAFT_RPM:
         raise SceneError(table.where("flywheel_shaft_rpm"), f"must be within {SLOWEST_FLYWHEEL_SHAFT_RPM:g}–"
@@ -547,6 +555,10 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
         from .machine_motion import read_motion
 
         motion = read_motion(table, table.path)
+        if omega is not None:
+            _refuse_start_over_mean(motion, omega, table.where(speed_key))
+        elif driver is not None:
+            _refuse_start_over_mean(motion, abs(driver.omega), f"{driver.where}.{_driver_speed_key(driver)}")
     _done(table)
     return DynamicsSpec(where=table.path, delta=delta, omega=omega, flywheel_shaft_rpm=shaft, constant=constant,
                         count=count, motion=motion, speed_key=speed_key)
@@ -555,9 +567,30 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
 def _refuse_mean_speed(table: Table, key: str, omega: float) -> None:
     """Raise :class:`SceneError` at ``key`` (``rpm`` or ``omega``, ``omega`` rad/s as read) for a mean speed outside
     :data:`SLOWEST_MEAN_RPM`–:data:`FASTEST_MEAN_RPM`, told in the unit it was typed in."""
-    typed = table.data[key]
-    in_rpm = key == "rpm"
-    rpm = typed if in_rpm else omega / RPM
+    _refuse_mean_speed_at(table.where(key), table.data[key], key == "rpm", omega)
+
+
+def _driver_speed_key(driver: Any) -> str:
+    """The key the crank's speed was typed under: ``rpm`` where the scene gave it so, else ``omega``."""
+    return "omega" if driver.rpm is None else "rpm"
+
+
+def _refuse_driver_mean_speed(driver: Any, path: str) -> None:
+    """Raise :class:`SceneError` at the crank's ``omega`` or ``rpm`` where ``[dynamics]`` (at ``path``), giving no
+    mean speed of its own, takes the crank's, and that is outside the mean speeds a flywheel is sized at: a crank
+    turned slowly or fast for its plans alone gives the flywheel and the run nothing a machine has."""
+    key = _driver_speed_key(driver)
+    typed = driver.omega if driver.rpm is None else driver.rpm
+    _refuse_mean_speed_at(f"{driver.where}.{key}", typed, key == "rpm", abs(driver.omega),
+                          f"; {path} gives no rpm or omega of its own and takes the crank's as the machine's mean "
+                          f"speed (give {path}.rpm for the machine's own)")
+
+
+def _refuse_mean_speed_at(where: str, typed: float, in_rpm: bool, omega: float, taken: str = "") -> None:
+    """Raise :class:`SceneError` at ``where`` for a mean speed (``omega`` rad/s, its size, ``typed`` in rpm or rad/s
+    as ``in_rpm`` says) outside :data:`SLOWEST_MEAN_RPM`–:data:`FASTEST_MEAN_RPM`, told in the unit it was typed in;
+    ``taken`` says where it was taken as the mean speed from."""
+    rpm = abs(typed) if in_rpm else omega / RPM
     if SLOWEST_MEAN_RPM <= rpm <= FASTEST_MEAN_RPM:
         return
     bounds = (f"{SLOWEST_MEAN_RPM:g}–{FASTEST_MEAN_RPM:g} rpm" if in_rpm else
@@ -565,9 +598,28 @@ def _refuse_mean_speed(table: Table, key: str, omega: float) -> None:
               f"{FASTEST_MEAN_RPM:g} rpm)")
     nearest = SLOWEST_MEAN_RPM if rpm < SLOWEST_MEAN_RPM else FASTEST_MEAN_RPM
     slip = "; a slip of the exponent?" if not SLOWEST_MEAN_RPM / 1000 <= rpm <= FASTEST_MEAN_RPM * 1000 else ""
-    raise SceneError(table.where(key), f"must be within {bounds}, as a shaft a flywheel evens out turns (a press's "
+    raise SceneError(where, f"must be within {bounds}, as a shaft a flywheel evens out turns (a press's "
                      "some 10–100 rpm, an engine's up to some 10 000): the flywheel for delta is ΔWmax/(ωm²·δ), "
-                     f"{(nearest / rpm) ** 2:.3g} times the one at {nearest:g} rpm here", typed, hint=slip)
+                     f"{(nearest / rpm) ** 2:.3g} times the one at {nearest:g} rpm here{taken}", typed, hint=slip)
+
+
+def _refuse_start_over_mean(motion: Any, mean: float, mean_key: str) -> None:
+    """Raise :class:`SceneError` at the start's speed (``start.omega``, ``start.rpm``, or a clutch's driving half's)
+    where it is more than :data:`FASTEST_START_OVER_MEAN` times the machine's ``mean`` speed (rad/s, ``mean_key``'s),
+    asking whether rev/min were typed for rad/s where it reads as a motor's speed."""
+    start = motion.start
+    for key, omega in zip(motion.start_keys, (start.omega, start.driving_omega), strict=True):
+        if omega is None or omega <= FASTEST_START_OVER_MEAN * mean:
+            continue
+        where = f"{motion.where}.start.{key}"
+        in_rpm = not key.endswith("omega")
+        given = f"{omega / RPM:.4g} rpm ({omega:.4g} rad/s)" if in_rpm else f"{omega:.4g} rad/s"
+        typed = (f"; {rpm_question(where, omega, where.removesuffix('omega') + 'rpm')}"
+                 if not in_rpm and motor_speed_in_rpm(omega) else "")
+        value = float(f"{omega / RPM:.12g}") if in_rpm else omega
+        raise SceneError(where, f"{given} is {omega / mean:.3g} times the machine's mean speed, {mean:.4g} rad/s "
+                         f"({mean_key}): a run starts from rest or runs down from about its speed, and one from more "
+                         f"than {FASTEST_START_OVER_MEAN:g} times it is no machine's", value, hint=typed)
 
 
 def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
@@ -597,6 +649,8 @@ def _read_diagram_dynamics(table: Table, spec: DynamicsSpec) -> DynamicsSpec:
                                  "gives its diagram: leave one out")
     inertia = table.number("inertia", 0.0, non_negative=True)
     motion = _read_diagram_motion(table, diagrams, inertia, spec.delta)
+    if motion is not None:
+        _refuse_start_over_mean(motion, spec.omega, table.where(spec.speed_key))
     _done(table)
     omega = spec.omega
     if len(diagrams) == 2:

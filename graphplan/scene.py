@@ -774,7 +774,8 @@ def _read_scene(top: Table, source: str) -> Scene:
         # Imported here: the machine's dynamics are built on the analysis, which reads scenes.
         from .flywheel import read_dynamics
 
-        dynamics = read_dynamics(top.table("dynamics"), once_over=None if driver.cyclic else f"driver.{driver.run_key}")
+        dynamics = read_dynamics(top.table("dynamics"), once_over=None if driver.cyclic else f"driver.{driver.run_key}",
+                                 driver=driver)
     groups = tuple(_read_group(where, item) for where, item in top.items("groups", default=[]) or [])
     points = _read_points(top.table("points", None))
     links = _read_links(top.table("links", None))

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SceneError
-from ..flywheel import misplaced_keys
+from ..flywheel import FASTEST_MEAN_RPM, misplaced_keys
 from ..reader import Table, check_number
 from ..units import RPM, motor_speed_in_rpm, percentage_question, rpm_question
 from .drive import MOTOR_KINDS, REST, Brake, Clutch, ConstantTorque, KlossMotor, LinearMotor, Motor, Start
@@ -49,6 +49,18 @@ FASTEST_MOTOR_RPM = 1_000_000.0
 # design D) up to some 15 %.  A slip of 1e-12 made Kloss' characteristic a wall the run could not integrate.
 SMALLEST_RATED_SLIP = 0.001
 LARGEST_RATED_SLIP = 0.5
+# A motor's torque on its own shaft (N·m): a constant one's, a linear one's stall torque (typed, or the one its two
+# points give) and the torques of its points.  The weakest motors that drive a mechanism, a quartz watch's stepper,
+# give some micronewton-metres; the strongest, a grinding mill's gearless ring motor or a ship's slow-speed diesel,
+# some 10 MN·m.  A torque of 1e-12 stalled every machine, told as the motor's weakness; one of 1e12 ran it away.
+SMALLEST_MOTOR_TORQUE = 1e-6
+LARGEST_MOTOR_TORQUE = 1e8
+# A motor's rotor inertia (kg·m²): a small induction motor's some 0.001–0.02 (the flywheel starter's 4 kW one
+# 0.02), a megawatt one's some tens, the heaviest rotors run as motors, a pumped-storage plant's motor-generators,
+# some 1e7.  No least one is asked: 0 leaves the rotor out, and one far lighter is as harmless.  A servo catalogue's
+# kg·cm² typed for kg·m² (10 000 times too heavy) is within these: only the time the motor takes to run its own rotor
+# up, J·ω/M, would tell it, and that blames the rotor for a power typed in kilowatts as well.
+LARGEST_ROTOR_INERTIA = 1e8
 
 
 @dataclass(frozen=True)
@@ -118,6 +130,15 @@ class MotionSpec:
             raise SceneError(self._key("duration"), f"{self.duration:g} s is some "
                              f"{self.duration * omega_run / TWO_PI:.3g} turns at the running speed, {omega_run:.4g} "
                              f"rad/s; a run integrates at most {MOST_TURNS} turns")
+        # Without a duration a run goes on to its off_at and then runs down: the time to it is bounded as a
+        # duration is (with one, an off_at is refused past its end as it is read).
+        off_at = self.motor_off_at
+        if off_at is not None and off_at * omega_run > TWO_PI * MOST_TURNS:
+            raise SceneError(self._key("motor.off_at"), f"{off_at:g} s is some {off_at * omega_run / TWO_PI:.3g} "
+                             f"turns at the running speed, {omega_run:.4g} rad/s; a run integrates at most "
+                             f"{MOST_TURNS} turns, and runs down once the motor is off: give an off_at of at most "
+                             f"{TWO_PI * MOST_TURNS / omega_run:.3g} s", off_at,
+                             hint=_exponent_slip(off_at * omega_run / TWO_PI, 0.0, MOST_TURNS))
         # A start far above the running speed (rpm given as rad/s a thousandfold) slows down over more turns
         # than a run integrates, each resolved step by step: the run would hang rather than fail.
         driving = self.start.driving_omega or 0.0
@@ -169,10 +190,19 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
                          "0.01): the shaft turns at the motor's speed over it, and the rotor's inertia comes to it "
                          "times its square", gear_ratio,
                          hint=_exponent_slip(gear_ratio, SMALLEST_GEAR_RATIO, LARGEST_GEAR_RATIO))
-    drive = {"gear_ratio": gear_ratio, "rotor_inertia": table.number("rotor_inertia", 0.0, non_negative=True)}
+    rotor_inertia = table.number("rotor_inertia", 0.0, non_negative=True)
+    if not rotor_inertia <= LARGEST_ROTOR_INERTIA:
+        raise SceneError(table.where("rotor_inertia"), f"must be at most {LARGEST_ROTOR_INERTIA:g} kg·m², as motors' "
+                         "rotors are built (a 4 kW induction motor's some 0.02, a megawatt one's some tens, a "
+                         "pumped-storage motor-generator's some 1e7): it comes to the driving shaft times the gear "
+                         "ratio's square", rotor_inertia,
+                         hint=_exponent_slip(rotor_inertia, 0.0, LARGEST_ROTOR_INERTIA))
+    drive = {"gear_ratio": gear_ratio, "rotor_inertia": rotor_inertia}
     off_at = table.number("off_at", None, non_negative=True)
     if kind == "constant":
-        motor: Motor = ConstantTorque(table.number("torque"), **drive)
+        torque = table.number("torque")
+        _refuse_motor_torque(table.where("torque"), torque)
+        motor: Motor = ConstantTorque(torque, **drive)
     elif kind == "linear":
         if table.has("points"):
             for key in ("stall_torque", "no_load_rpm"):
@@ -193,8 +223,14 @@ def _read_motor(table: Table) -> tuple[Motor, float | None]:
             # A point at rest is the stall torque's: the line's no-load speed is the motor's speed that is bounded.
             _refuse_motor_speed(table.where("points"), motor.no_load / RPM, table.data["points"],
                                 f" (their line gives no torque at {motor.no_load / RPM:.4g} rpm, its no-load speed)")
+            _refuse_motor_torque(table.where("points"), motor.stall_torque, table.data["points"],
+                                 f" (their line gives {motor.stall_torque:.4g} N·m at rest, its stall torque)")
+            # A line of a motor's size through a point no motor has: two slips of the exponent that cancel.
+            for (where, item), (rpm, torque) in zip(pairs, points, strict=True):
+                _refuse_point(where, rpm / RPM, torque, item)
         else:
             stall_torque = table.number("stall_torque", positive=True)
+            _refuse_motor_torque(table.where("stall_torque"), stall_torque)
             no_load_rpm = table.number("no_load_rpm", positive=True)
             _refuse_motor_speed(table.where("no_load_rpm"), no_load_rpm)
             motor = LinearMotor(stall_torque, no_load_rpm * RPM, **drive)
@@ -269,6 +305,40 @@ def _refuse_motor_speed(where: str, rpm: float, typed: object = None, derived: s
                      hint=_exponent_slip(rpm, SLOWEST_MOTOR_RPM, FASTEST_MOTOR_RPM))
 
 
+def _refuse_motor_torque(where: str, torque: float, typed: object = None, derived: str = "") -> None:
+    """Raise :class:`SceneError` at ``where`` for a motor's torque (N·m, on its own shaft) outside the torques motors
+    give: the value typed there, or one ``typed`` there gives, as ``derived`` says."""
+    if SMALLEST_MOTOR_TORQUE <= torque <= LARGEST_MOTOR_TORQUE:
+        return
+    if not torque > 0:
+        # Only a constant motor's torque is typed with any sign: nought or less drives nothing.
+        raise SceneError(where, "must be > 0, the torque the motor drives the machine with (a run-down with the motor "
+                         "off is off_at's)", torque if typed is None else typed)
+    bounds = f"{SMALLEST_MOTOR_TORQUE:g}–{LARGEST_MOTOR_TORQUE:g} N·m"
+    # A drawing's or a small motor's catalogue's N·mm is a thousand times the N·m; within the bounds it runs (and
+    # the machine is told of it, too strong a motor running away), beyond them it is asked here.
+    newton_millimetres = (f"; N·mm typed for N·m? (the scene's torques are in N·m: {torque:g} N·mm is "
+                          f"{torque / 1000:g} N·m)" if LARGEST_MOTOR_TORQUE < torque <= 1000 * LARGEST_MOTOR_TORQUE
+                          else "")
+    raise SceneError(where, (f"gives a torque outside {bounds}" if derived else f"must be within {bounds}") +
+                     ", as motors drive machines (a watch's stepper some micronewton-metres, a 4 kW induction motor "
+                     f"some 26 N·m, a grinding mill's ring motor some 10 MN·m){derived}",
+                     torque if typed is None else typed,
+                     hint=newton_millimetres or _exponent_slip(torque, SMALLEST_MOTOR_TORQUE, LARGEST_MOTOR_TORQUE))
+
+
+def _refuse_point(where: str, rpm: float, torque: float, typed: object) -> None:
+    """Raise :class:`SceneError` at ``where`` (``points[k]``) for a linear motor's point ``[rpm, N·m]`` beyond the
+    speeds motors turn at or the torques they give, either way (a point past the no-load speed has a negative
+    torque)."""
+    if abs(rpm) <= FASTEST_MOTOR_RPM and abs(torque) <= LARGEST_MOTOR_TORQUE:
+        return
+    raise SceneError(where, f"must be within ±{FASTEST_MOTOR_RPM:.0f} rpm and ±{LARGEST_MOTOR_TORQUE:g} N·m, the "
+                     "speeds motors turn at and the torques they give", typed,
+                     hint=("; a slip of the exponent?" if abs(rpm) > 1000 * FASTEST_MOTOR_RPM
+                           or abs(torque) > 1000 * LARGEST_MOTOR_TORQUE else ""))
+
+
 def _refuse_rated_slip(where: str, slip: float, typed: float, derived: str = "") -> None:
     """Raise :class:`SceneError` at ``where`` (``rated_slip``, or ``rated_rpm`` where the slip follows from the two
     speeds, said in ``derived``) for a rated slip outside the slips of induction motors."""
@@ -330,13 +400,30 @@ def _read_start(value: Any, where: str, clutch: Clutch | None) -> Start:
         return REST
     table = Table(value, where)
     omega = table.speed(0.0, non_negative=True, sense=_SIZE_ONLY)
+    _refuse_start_speed(table, "omega", "rpm", omega)
     angle = math.radians(table.number("angle_deg", 0.0))
     driving = table.speed(None, omega_key="driving_omega", rpm_key="driving_rpm", non_negative=True, sense=_SIZE_ONLY)
+    _refuse_start_speed(table, "driving_omega", "driving_rpm", driving)
     if driving is not None and clutch is None:
         key = "driving_omega" if table.has("driving_omega") else "driving_rpm"
         raise SceneError(table.where(key), "only with a clutch")
     table.done(elsewhere=misplaced_keys(table.path, _owner(table)))
     return Start(omega=omega, angle=angle, driving_omega=driving)
+
+
+def _refuse_start_speed(table: Table, omega_key: str, rpm_key: str, omega: float | None) -> None:
+    """Raise :class:`SceneError` at the start's ``omega_key`` or ``rpm_key``, as typed, for a speed (``omega``, rad/s
+    as read) above :data:`~graphplan.flywheel.FASTEST_MEAN_RPM`, the fastest a shaft with a flywheel turns: the
+    driving shaft starts at no more than it runs (a start far above the machine's own mean speed is refused where
+    that is known, :func:`~graphplan.flywheel.read_dynamics`)."""
+    if omega is None or omega / RPM <= FASTEST_MEAN_RPM:
+        return
+    in_rpm = table.has(rpm_key)
+    key = rpm_key if in_rpm else omega_key
+    bounds = f"{FASTEST_MEAN_RPM:g} rpm" if in_rpm else f"{FASTEST_MEAN_RPM * RPM:.5g} rad/s ({FASTEST_MEAN_RPM:g} rpm)"
+    raise SceneError(table.where(key), f"must be at most {bounds}, as the driving shaft of a machine turns (a press's "
+                     "some 10–100 rpm, an engine's up to some 10 000): the run starts the shaft at this speed",
+                     table.data[key], hint=_exponent_slip(omega / RPM, 0.0, FASTEST_MEAN_RPM))
 
 
 def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics") -> MotionSpec:
@@ -374,6 +461,11 @@ def read_motion(table_or_dict: Table | Mapping[str, Any], path: str = "dynamics"
         raise SceneError(motor_table.where("off_at"), "switches the motor off as a run from rest begins, so the "
                          "machine never turns: give off_at > 0, or a start with a speed to run down from", off_at)
     duration = table.number("duration", None, positive=True)
+    if off_at is not None and duration is not None and off_at >= duration:
+        # The run ends before the motor is switched off: the run-down asked for would never be seen.
+        raise SceneError(motor_table.where("off_at"), f"is at or past the run's end, {table.where('duration')} = "
+                         f"{duration:g} s, so the motor is never switched off: give an off_at below the duration to "
+                         "see the run-down, or leave it out", off_at)
     method = table.choice("method", METHODS, "auto")
     rtol = table.number("rtol", DEFAULT_RTOL, positive=True)
     if not rtol < 1:

@@ -1,0 +1,247 @@
+"""[dynamics]' motor torques, rotor inertia, off_at, start speed, and the crank's speed the dynamics takes as its mean
+speed, took any number: a torque of 1e-12 N·m stalled every machine and was told as the motor's weakness, an off_at
+past the run's end switched nothing off, a start of 1e5 rad/s and a crank of 1e-3 rad/s sized and ran machines no
+one builds.  Each is now refused beyond what machines have, at its key with its value; values near the bounds, every
+fixture and test scene and the starters still load, and the flywheel starter runs."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from graphplan import scene
+from graphplan.cli import main
+from graphplan.errors import SceneError
+from graphplan.starters import starter
+
+# A press known by its resisting power, driven through a gear by a motor: the flywheel starter's numbers.
+PRESS = """
+[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+driving = "constant"
+inertia = 0.0
+{extra}
+[dynamics.motor]
+{motor}
+"""
+KLOSS = {"kind": '"kloss"', "power": "4000.0", "overload": "2.2", "synchronous_rpm": "1500", "rated_rpm": "1440",
+         "gear_ratio": "14.4", "rotor_inertia": "0.02"}
+LINEAR = {"kind": '"linear"', "stall_torque": "600.0", "no_load_rpm": "1500", "gear_ratio": "14.4"}
+CONSTANT = {"kind": '"constant"', "torque": "30.0", "gear_ratio": "14.4"}
+MEAN_OMEGA = 100 * math.pi / 30  # the press's rpm = 100 in rad/s
+
+
+def _press(motor: dict[str, str], extra: str = "", **changed: str | None) -> str:
+    keys = {**motor, **changed}
+    return PRESS.format(extra=extra, motor="\n".join(f"{key} = {value}" for key, value in keys.items()
+                                                     if value is not None))
+
+
+def _refusal(text: str) -> str:
+    with pytest.raises(SceneError) as refused:
+        scene.loads(text)
+    return str(refused.value)
+
+
+# --- the motor's torques ------------------------------------------------------------------------------------------
+
+TORQUE_BOUNDS = ("must be within 1e-06–1e+08 N·m, as motors drive machines (a watch's stepper some micronewton-metres, "
+                 "a 4 kW induction motor some 26 N·m, a grinding mill's ring motor some 10 MN·m)")
+
+
+@pytest.mark.parametrize(("motor", "key", "value", "hint"), [
+    (CONSTANT, "torque", "1e-12", "; a slip of the exponent?"),
+    (CONSTANT, "torque", "3e8", "; N·mm typed for N·m? (the scene's torques are in N·m: 3e+08 N·mm is 300000 N·m)"),
+    (CONSTANT, "torque", "1e12", "; a slip of the exponent?"),
+    (LINEAR, "stall_torque", "1e-10", "; a slip of the exponent?"),
+    (LINEAR, "stall_torque", "5e-7", ""),
+    (LINEAR, "stall_torque", "6e10", "; N·mm typed for N·m? (the scene's torques are in N·m: 6e+10 N·mm is 6e+07 N·m)"),
+])
+def test_a_motor_torque_no_motor_gives_is_refused_at_its_key(motor, key, value, hint):
+    assert _refusal(_press(motor, **{key: value})) == f"dynamics.motor.{key}: {TORQUE_BOUNDS} (got {float(value)!r}){hint}"
+
+
+@pytest.mark.parametrize("torque", ["0.0", "-30.0"])
+def test_a_constant_motor_driving_nothing_or_backwards_is_refused(torque):
+    assert _refusal(_press(CONSTANT, torque=torque)) == ("dynamics.motor.torque: must be > 0, the torque the motor "
+                                                         "drives the machine with (a run-down with the motor off is "
+                                                         f"off_at's) (got {float(torque)!r})")
+
+
+@pytest.mark.parametrize(("motor", "key", "value"), [
+    (CONSTANT, "torque", "2e-6"), (CONSTANT, "torque", "9e7"), (LINEAR, "stall_torque", "2e-6"),
+    (LINEAR, "stall_torque", "9e7"),
+])
+def test_a_motor_torque_near_the_bounds_is_the_motors_torque_at_rest(motor, key, value):
+    loaded = scene.loads(_press(motor, **{key: value})).dynamics.motion.motor
+    assert loaded.characteristic(0.0) == float(value)
+
+
+def test_a_linear_motors_points_giving_a_stall_torque_no_motor_has_are_refused_with_it():
+    # The line through 6e10 N·m at rest and nought at 1500 rpm: its stall torque is the first point's.
+    message = _refusal(_press(LINEAR, stall_torque=None, no_load_rpm=None, points="[[0.0, 6e10], [1500.0, 0.0]]"))
+    assert message.startswith("dynamics.motor.points: gives a torque outside 1e-06–1e+08 N·m, as motors drive machines")
+    assert "(their line gives 6e+10 N·m at rest, its stall torque) (got [[0.0, 60000000000.0], [1500.0, 0.0]])" \
+        in message
+    # 3e7 N·m at 750 rpm, half the no-load speed, puts the stall torque at twice it, 6e7: within the bounds.
+    points = "[[750.0, 3e7], [1500.0, 0.0]]"
+    assert scene.loads(_press(LINEAR, stall_torque=None, no_load_rpm=None, points=points)).dynamics.motion.motor \
+        .stall_torque == pytest.approx(6e7, rel=1e-12)
+
+
+def test_a_linear_motors_point_no_motor_has_is_refused_even_where_its_line_is_a_motors():
+    # 60 N·m at rest and −4e10 N·m at 1e12 rpm: the line's no-load speed is 60·1e12/(4e10 + 60), some 1500 rpm, and
+    # its stall torque 60 N·m, both a motor's; the second point is two exponents' slips.
+    assert 60 * 1e12 / (4e10 + 60) == pytest.approx(1500, rel=1e-6)
+    message = _refusal(_press(LINEAR, stall_torque=None, no_load_rpm=None, points="[[0.0, 60.0], [1e12, -4e10]]"))
+    assert message == ("dynamics.motor.points[1]: must be within ±1000000 rpm and ±1e+08 N·m, the speeds motors turn "
+                       "at and the torques they give (got [1000000000000.0, -40000000000.0]); a slip of the exponent?")
+
+
+# --- the rotor's inertia ------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("inertia", "hint"), [("2e8", ""), ("1e12", "; a slip of the exponent?")])
+def test_a_rotor_inertia_no_motor_has_is_refused_at_its_key(inertia, hint):
+    message = _refusal(_press(CONSTANT, rotor_inertia=inertia))
+    assert message == ("dynamics.motor.rotor_inertia: must be at most 1e+08 kg·m², as motors' rotors are built (a 4 kW "
+                       "induction motor's some 0.02, a megawatt one's some tens, a pumped-storage motor-generator's "
+                       "some 1e7): it comes to the driving shaft times the gear ratio's square "
+                       f"(got {float(inertia)!r}){hint}")
+
+
+@pytest.mark.parametrize("inertia", ["0.0", "1e-12", "9e7"])
+def test_a_rotor_inertia_within_the_bound_comes_to_the_shaft_times_the_gears_square(inertia):
+    motor = scene.loads(_press(CONSTANT, rotor_inertia=inertia)).dynamics.motion.motor
+    assert motor.reduced_inertia == pytest.approx(float(inertia) * 14.4 ** 2, rel=1e-12)
+
+
+# --- off_at -------------------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("off_at", ["5.0", "7.5"])
+def test_an_off_at_at_or_past_the_runs_end_is_refused_at_the_motors_key(off_at):
+    message = _refusal(_press(KLOSS, extra="duration = 5.0", off_at=off_at))
+    assert message == (f"dynamics.motor.off_at: is at or past the run's end, dynamics.duration = 5 s, so the motor is "
+                       "never switched off: give an off_at below the duration to see the run-down, or leave it out "
+                       f"(got {float(off_at)!r})")
+
+
+def test_an_off_at_before_the_runs_end_is_kept():
+    assert scene.loads(_press(KLOSS, extra="duration = 5.0", off_at="4.9")).dynamics.motion.motor_off_at == 4.9
+
+
+def test_an_off_at_of_more_turns_than_a_run_integrates_is_refused_before_integrating():
+    refused = scene.loads(_press(KLOSS, off_at="1e6")).machine_dynamics()
+    with pytest.raises(SceneError) as told:
+        refused.refuse()
+    message = str(told.value)
+    found = re.fullmatch(r"dynamics\.motor\.off_at: 1e\+06 s is some (\S+) turns at the running speed, (\S+) rad/s; "
+                         r"a run integrates at most 100000 turns, and runs down once the motor is off: give an off_at "
+                         r"of at most (\S+) s \(got 1000000\.0\)", message)
+    assert found, message
+    turns, speed, most = (float(group) for group in found.groups())
+    # The motor runs the press near its rated 1440 rpm through the gear of 14.4: 100 rpm at the shaft.
+    assert speed == pytest.approx(MEAN_OMEGA, rel=0.05)
+    assert turns == pytest.approx(1e6 * speed / (2 * math.pi), rel=5e-3)
+    assert most == pytest.approx(2 * math.pi * 100_000 / speed, rel=1e-2)
+    # An off_at within the turns a run takes is let be.
+    scene.loads(_press(KLOSS, off_at=f"{0.9 * most:g}")).machine_dynamics().refuse()
+
+
+# --- the start's speed --------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("start", "key", "bounds", "hint"), [
+    ("{ omega = 2e4 }", "omega", "10472 rad/s (100000 rpm)", ""),
+    ("{ rpm = 2e5 }", "rpm", "100000 rpm", ""),
+    ("{ rpm = 1e12 }", "rpm", "100000 rpm", "; a slip of the exponent?"),
+    ("{ omega = 0.0, driving_omega = 1e9 }", "driving_omega", "10472 rad/s (100000 rpm)", "; a slip of the exponent?"),
+])
+def test_a_start_faster_than_any_shaft_turns_is_refused_at_its_key(start, key, bounds, hint):
+    clutch = "clutch = { torque = 500, engage_at = 0.1 }\n" if "driving" in key else ""
+    message = _refusal(_press(KLOSS, extra=f"{clutch}start = {start}"))
+    typed = float(start.split(f"{key} = ")[1].rstrip(" }"))
+    assert message == (f"dynamics.start.{key}: must be at most {bounds}, as the driving shaft of a machine turns (a "
+                       "press's some 10–100 rpm, an engine's up to some 10 000): the run starts the shaft at this speed "
+                       f"(got {typed!r}){hint}")
+
+
+def test_a_start_far_beyond_the_mean_speed_typed_in_rpm_is_refused_with_the_rpm_question():
+    # 2900 rad/s, a 2-pole motor's rev/min, is 2900/10.472 = 277 times the press's 100 rpm.
+    message = _refusal(_press(KLOSS, extra="duration = 1.0\nstart = { omega = 2900 }"))
+    assert message.startswith(f"dynamics.start.omega: 2900 rad/s is {2900 / MEAN_OMEGA:.3g} times the machine's mean "
+                              f"speed, {MEAN_OMEGA:.4g} rad/s (dynamics.rpm): a run starts from rest or runs down from "
+                              "about its speed, and one from more than 200 times it is no machine's (got 2900.0); ")
+    assert message.endswith("dynamics.start.omega = 2900 rad/s is 27693 rpm: a motor's speed in rev/min typed for "
+                            "rad/s? 2900 rpm is 303.69 rad/s: write dynamics.start.rpm = 2900")
+
+
+def test_a_start_far_beyond_the_mean_speed_in_rpm_is_told_in_rpm_without_the_question():
+    message = _refusal(_press(KLOSS, extra="duration = 1.0\nstart = { rpm = 25000 }"))
+    assert message == (f"dynamics.start.rpm: 2.5e+04 rpm ({25000 * math.pi / 30:.4g} rad/s) is 250 times the "
+                       f"machine's mean speed, {MEAN_OMEGA:.4g} rad/s (dynamics.rpm): a run starts from rest or runs "
+                       "down from about its speed, and one from more than 200 times it is no machine's (got 25000.0)")
+
+
+def test_a_start_within_the_bound_of_the_mean_speed_is_read_as_typed():
+    # 190 times the mean: a slip still, but one the run integrates over a short duration and the rpm warning asks.
+    start = scene.loads(_press(KLOSS, extra=f"duration = 0.1\nstart = {{ omega = {190 * MEAN_OMEGA!r} }}")) \
+        .dynamics.motion.start
+    assert start.omega == pytest.approx(190 * MEAN_OMEGA, rel=1e-15)
+
+
+# --- the crank's speed, where [dynamics] takes it as the mean speed -----------------------------------------------
+
+def _shaper(driver_speed: str, dynamics_extra: str = "") -> str:
+    text = starter("shaper", "en")
+    assert "rpm     = -60.0" in text and "[dynamics]" in text
+    return text.replace("rpm     = -60.0", driver_speed, 1).replace("[dynamics]", "[dynamics]\n" + dynamics_extra, 1)
+
+
+@pytest.mark.parametrize(("speed", "key", "bounds", "hint"), [
+    ("omega = 1e-3", "omega", "0.1047–10472 rad/s (1–100000 rpm)", ""),
+    ("rpm = -0.5", "rpm", "1–100000 rpm", ""),
+    ("rpm = 1e9", "rpm", "1–100000 rpm", "; a slip of the exponent?"),
+])
+def test_a_crank_speed_the_dynamics_takes_is_bounded_as_its_own_mean_speed(speed, key, bounds, hint):
+    message = _refusal(_shaper(speed))
+    assert message.startswith(f"driver.{key}: must be within {bounds}, as a shaft a flywheel evens out turns")
+    typed = float(speed.split(" = ")[1])
+    assert message.endswith("; dynamics gives no rpm or omega of its own and takes the crank's as the machine's mean "
+                            f"speed (give dynamics.rpm for the machine's own) (got {typed!r}){hint}")
+
+
+def test_a_crank_turned_slowly_for_its_plans_alone_is_let_be_where_the_dynamics_gives_its_own_speed():
+    loaded = scene.loads(_shaper("omega = 1e-3", "rpm = 60.0"))
+    assert loaded.driver.omega == 1e-3 and loaded.dynamics.omega == pytest.approx(2 * math.pi, rel=1e-15)
+
+
+def test_a_start_far_beyond_the_cranks_speed_is_told_against_the_crank():
+    # The crank turns at 60 rpm, 2π rad/s: a start of 1450 rad/s is 1450/2π = 231 times it.
+    message = _refusal(_shaper("rpm     = -60.0", "duration = 1.0\nstart = { omega = 1450 }"))
+    assert message.startswith(f"dynamics.start.omega: 1450 rad/s is {1450 / (2 * math.pi):.3g} times the machine's "
+                              "mean speed, 6.283 rad/s (driver.rpm)")
+
+
+# --- what must still load and run ---------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("path", sorted(Path("fixtures").glob("*.toml")) + sorted(Path("tests/scenes").glob("*.toml")),
+                         ids=str)
+def test_every_fixture_and_test_scene_still_loads(path):
+    scene.load(path)
+
+
+@pytest.mark.parametrize("kind", ["flywheel", "shaper", "slider-crank", "crank-rocker", "slotted-lever", "triad",
+                                  "rotor"])
+def test_every_starter_still_loads(kind):
+    scene.loads(starter(kind, "en"))
+
+
+def test_the_flywheel_starter_written_by_new_still_runs(tmp_path, capsys):
+    written = tmp_path / "flywheel.toml"
+    assert main(["new", "flywheel", "--out", str(written)]) == 0
+    assert main(["run", str(written), "--out", str(tmp_path / "out"), "--only", "dynamics"]) == 0
+    assert "error" not in capsys.readouterr().err
