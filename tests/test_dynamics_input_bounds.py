@@ -63,7 +63,8 @@ TORQUE_BOUNDS = ("must be within 1e-06–1e+08 N·m, as motors drive machines (a
     (LINEAR, "stall_torque", "6e10", "; N·mm typed for N·m? (the scene's torques are in N·m: 6e+10 N·mm is 6e+07 N·m)"),
 ])
 def test_a_motor_torque_no_motor_gives_is_refused_at_its_key(motor, key, value, hint):
-    assert _refusal(_press(motor, **{key: value})) == f"dynamics.motor.{key}: {TORQUE_BOUNDS} (got {float(value)!r}){hint}"
+    expected = f"dynamics.motor.{key}: {TORQUE_BOUNDS} (got {float(value)!r}){hint}"
+    assert _refusal(_press(motor, **{key: value})) == expected
 
 
 @pytest.mark.parametrize("torque", ["0.0", "-30.0"])
@@ -165,8 +166,8 @@ def test_a_start_faster_than_any_shaft_turns_is_refused_at_its_key(start, key, b
     message = _refusal(_press(KLOSS, extra=f"{clutch}start = {start}"))
     typed = float(start.split(f"{key} = ")[1].rstrip(" }"))
     assert message == (f"dynamics.start.{key}: must be at most {bounds}, as the driving shaft of a machine turns (a "
-                       "press's some 10–100 rpm, an engine's up to some 10 000): the run starts the shaft at this speed "
-                       f"(got {typed!r}){hint}")
+                       "press's some 10–100 rpm, an engine's up to some 10 000): the run starts the shaft at this "
+                       f"speed (got {typed!r}){hint}")
 
 
 def test_a_start_far_beyond_the_mean_speed_typed_in_rpm_is_refused_with_the_rpm_question():
