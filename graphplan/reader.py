@@ -19,6 +19,7 @@ from typing import Any
 
 from .errors import SceneError, as_written
 from .lookalikes import lookalike_hint, plain
+from .table_keys import TABLE_KEYS
 from .units import RPM, STANDARD_GRAVITY
 
 _REQUIRED = object()
@@ -546,6 +547,16 @@ class Table:
         for key in list(self.data):
             yield key, self.table(key)  # type: ignore[misc]
 
+    def _refuse_undeclared(self) -> None:
+        """Raise :class:`RuntimeError` where a scene's table (by its path, one of ``TABLE_KEYS``) was read for a key
+        table_keys.py does not list: a key added to a reader and not there would be sent elsewhere when written in
+        another table, so the first test that reads the table fails, not only tests/test_table_keys_agree.py."""
+        declared = TABLE_KEYS.get(self.path)
+        undeclared = sorted(self._taken.difference(declared)) if declared is not None else []
+        if undeclared:
+            raise RuntimeError(f"[{self.path}] was read for {', '.join(undeclared)}, which "
+                               f"graphplan/table_keys.py's TABLE_KEYS[{self.path!r}] does not list: add it there")
+
     def done(self, *, list_known: bool = False, elsewhere: Mapping[str, str | tuple[str, ...]] | None = None) -> None:
         """Reject the first key that nobody took, suggesting the nearest valid one, or with ``list_known`` (a
         table whose keys are all read whatever it holds) every valid one when none is near.
@@ -555,6 +566,7 @@ class Table:
         (``dynamics.gear_ratio`` was asked "did you mean 'duration'?", the motor's key written beside it).  A key
         mapped to several tables (:func:`~graphplan.table_keys.keys_of_other_tables`) is told whose it is, with a
         key of this table only where one is all but the same (masses for mass)."""
+        self._refuse_undeclared()
         if "mass" in self._taken:
             self._weight_for_mass([key for key in self.data if key not in self._taken])
         for key in self.data:

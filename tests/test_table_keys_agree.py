@@ -326,3 +326,14 @@ def test_a_machines_damping_written_in_another_table_is_sent_to_vibration():
         scene.loads(text)
     assert str(refused.value).startswith("scene.damping: unknown key; damping is a key of vibration")
     assert "write it under [vibration]: damping = 20.0" in str(refused.value)
+
+
+def test_a_key_read_that_table_keys_does_not_list_fails_as_the_table_is_done(monkeypatch):
+    """A key added to a reader and forgotten in table_keys.py fails the first test that reads its table, not only
+    this file's survey of the scenes."""
+    monkeypatch.setitem(TABLE_KEYS, "scene", tuple(key for key in TABLE_KEYS["scene"] if key != "gravity"))
+    with pytest.raises(RuntimeError, match=r"^\[scene\] was read for gravity, which graphplan/table_keys\.py's "
+                                           r"TABLE_KEYS\['scene'\] does not list: add it there$"):
+        scene.loads(starters.starter("crank-rocker"))
+    monkeypatch.undo()
+    assert scene.loads(starters.starter("crank-rocker")).gravity is not None
