@@ -533,8 +533,10 @@ def read_dynamics(table: Table, linkage: bool = True, once_over: str | None = No
     omega = table.speed(None, positive=True)
     if speed_key is not None:
         _refuse_mean_speed(table, speed_key, omega)
-    elif driver is not None and once_over is None:
-        _refuse_driver_mean_speed(driver, table.path)
+    elif driver is not None and once_over is None and (delta is not None or any(map(table.has, MOTION_KEYS))):
+        # The equivalent model alone takes no speed (Je and Me are ratios of speeds): a crank turned slowly for its
+        # plans is let be until a flywheel is sized at its speed or a motor run about it.
+        _refuse_driver_mean_speed(driver, table.path, sized=delta is not None)
     shaft = table.number("flywheel_shaft_rpm", None, positive=True)
     if shaft is not None and not SLOWEST_FLYWHEEL_SHAFT_RPM <= shaft <= FASTEST_FLYWHEEL_SHAFT_RPM:
         raise SceneError(table.where("flywheel_shaft_rpm"), f"must be within {SLOWEST_FLYWHEEL_SHAFT_RPM:g}–"
@@ -575,21 +577,24 @@ def _driver_speed_key(driver: Any) -> str:
     return "omega" if driver.rpm is None else "rpm"
 
 
-def _refuse_driver_mean_speed(driver: Any, path: str) -> None:
+def _refuse_driver_mean_speed(driver: Any, path: str, sized: bool) -> None:
     """Raise :class:`SceneError` at the crank's ``omega`` or ``rpm`` where ``[dynamics]`` (at ``path``), giving no
-    mean speed of its own, takes the crank's, and that is outside the mean speeds a flywheel is sized at: a crank
-    turned slowly or fast for its plans alone gives the flywheel and the run nothing a machine has."""
+    mean speed of its own, takes the crank's, and that is outside the mean speeds a flywheel is sized at (``sized``:
+    one is, for its delta) or a motor runs a machine about: a crank turned slowly or fast for its plans alone gives
+    the flywheel and the run nothing a machine has."""
     key = _driver_speed_key(driver)
     typed = driver.omega if driver.rpm is None else driver.rpm
     _refuse_mean_speed_at(f"{driver.where}.{key}", typed, key == "rpm", abs(driver.omega),
                           f"; {path} gives no rpm or omega of its own and takes the crank's as the machine's mean "
-                          f"speed (give {path}.rpm for the machine's own)")
+                          f"speed (give {path}.rpm for the machine's own)", sized=sized)
 
 
-def _refuse_mean_speed_at(where: str, typed: float, in_rpm: bool, omega: float, taken: str = "") -> None:
+def _refuse_mean_speed_at(where: str, typed: float, in_rpm: bool, omega: float, taken: str = "",
+                          sized: bool = True) -> None:
     """Raise :class:`SceneError` at ``where`` for a mean speed (``omega`` rad/s, its size, ``typed`` in rpm or rad/s
     as ``in_rpm`` says) outside :data:`SLOWEST_MEAN_RPM`–:data:`FASTEST_MEAN_RPM`, told in the unit it was typed in;
-    ``taken`` says where it was taken as the mean speed from."""
+    ``taken`` says where it was taken as the mean speed from; ``sized``: a flywheel is sized at it (else only the
+    equation of motion is run about it)."""
     rpm = abs(typed) if in_rpm else omega / RPM
     if SLOWEST_MEAN_RPM <= rpm <= FASTEST_MEAN_RPM:
         return
@@ -598,9 +603,10 @@ def _refuse_mean_speed_at(where: str, typed: float, in_rpm: bool, omega: float, 
               f"{FASTEST_MEAN_RPM:g} rpm)")
     nearest = SLOWEST_MEAN_RPM if rpm < SLOWEST_MEAN_RPM else FASTEST_MEAN_RPM
     slip = "; a slip of the exponent?" if not SLOWEST_MEAN_RPM / 1000 <= rpm <= FASTEST_MEAN_RPM * 1000 else ""
+    why = (f"the flywheel for delta is ΔWmax/(ωm²·δ), {(nearest / rpm) ** 2:.3g} times the one at {nearest:g} rpm "
+           "here" if sized else "the equation of motion runs the motor through its gear about it")
     raise SceneError(where, f"must be within {bounds}, as a shaft a flywheel evens out turns (a press's "
-                     "some 10–100 rpm, an engine's up to some 10 000): the flywheel for delta is ΔWmax/(ωm²·δ), "
-                     f"{(nearest / rpm) ** 2:.3g} times the one at {nearest:g} rpm here{taken}", typed, hint=slip)
+                     f"some 10–100 rpm, an engine's up to some 10 000): {why}{taken}", typed, hint=slip)
 
 
 def _refuse_start_over_mean(motion: Any, mean: float, mean_key: str) -> None:

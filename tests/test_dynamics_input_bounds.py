@@ -220,6 +220,30 @@ def test_a_crank_turned_slowly_for_its_plans_alone_is_let_be_where_the_dynamics_
     assert loaded.driver.omega == 1e-3 and loaded.dynamics.omega == pytest.approx(2 * math.pi, rel=1e-15)
 
 
+def _model_only(driver_speed: str) -> str:
+    """The shaper with a [dynamics] of the equivalent model alone: no delta, no motor."""
+    text = _shaper(driver_speed)
+    head, dynamics = text.split("[dynamics]", 1)
+    kept = [line for line in dynamics.split("\n") if not re.match(r"(delta|flywheel_shaft_rpm|motor|start|duration)\b",
+                                                                    line)]
+    return head + "[dynamics]" + "\n".join(kept)
+
+
+def test_a_crank_turned_slowly_is_let_be_where_the_dynamics_gives_only_the_equivalent_model():
+    # Je = Σ m·(vS/ω1)² + JS·(ω/ω1)² and Me = Σ F·v·cos α/ω1 are ratios of speeds: no mean speed enters them.
+    loaded = scene.loads(_model_only("omega = 1e-3"))
+    assert loaded.dynamics.delta is None and loaded.dynamics.motion is None and loaded.driver.omega == 1e-3
+
+
+def test_a_crank_speed_a_motor_alone_runs_about_is_refused_without_a_flywheel_in_the_words():
+    text = _model_only("omega = 1e-3").replace("[dynamics]", "[dynamics]\nmotor = { kind = \"constant\", torque = 5.0 }"
+                                                 "\nduration = 1.0", 1)
+    message = _refusal(text)
+    assert message.startswith("driver.omega: must be within 0.1047–10472 rad/s (1–100000 rpm)")
+    assert "the equation of motion runs the motor through its gear about it" in message
+    assert "delta" not in message.split("(got")[0]
+
+
 def test_a_start_far_beyond_the_cranks_speed_is_told_against_the_crank():
     # The crank turns at 60 rpm, 2π rad/s: a start of 1450 rad/s is 1450/2π = 231 times it.
     message = _refusal(_shaper("rpm     = -60.0", "duration = 1.0\nstart = { omega = 1450 }"))
