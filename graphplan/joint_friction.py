@@ -27,7 +27,6 @@ import numpy as np
 
 from .errors import SceneError
 from .forces import Load
-from .friction import friction_circle_radius, vee_groove_coefficient
 from .kinematics import Scalar, Vector
 from .loads import at_rest, sense_of_motion
 from .lookalikes import lookalike_hint
@@ -79,6 +78,9 @@ def friction_pairs(scene_friction: tuple[FrictionSpec, ...], pairs) -> tuple[Fri
     """Each ``[[friction]]`` entry matched with its pair (``statics.pairs``); a mismatch is a scene error."""
     found = []
     given: dict[tuple[str, int, int], str] = {}
+    if scene_friction:
+        # The classic formulas' module (inclines, threads, clutches and their records) only for a scene with friction.
+        from .friction import friction_circle_radius, vee_groove_coefficient
     for spec in scene_friction:
         at_joint = [pair for pair in pairs if pair.joint == spec.joint]
         matching = [pair for pair in at_joint if spec.links is None or set(spec.links) == {pair.source, pair.target}]

@@ -8,9 +8,12 @@ a linkage's run 35 ms more.
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -68,3 +71,22 @@ def test_a_rotor_on_mounts_still_finds_its_modules(tmp_path):
     assert ROTOR_AND_VIBRATION <= modules
     note = (tmp_path / "rotor" / "note.md").read_text(encoding="utf-8")
     assert "balanc" in note.lower() and "vibration" in note.lower()
+
+
+def test_the_classic_friction_formulas_load_only_for_a_scene_with_friction(tmp_path):
+    """The bundled scene has no [[friction]]: its run never loads friction.py (inclines, threads, clutches); a scene
+    with a journal's friction does, and the pair's friction circle is ρ = f·r."""
+    assert "graphplan.friction" not in _imported_by_a_run(ROOT / "fixtures" / "ratchet_crank_rocker.toml",
+                                                          tmp_path / "ratchet")
+    text = (ROOT / "fixtures" / "ratchet_crank_rocker.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "with_friction.toml"
+    scene.write_text(text.replace("[positions]", '[[friction]]\njoint = "O"\nf = 0.2\nradius = 0.05\n\n[positions]', 1),
+                     encoding="utf-8")
+    code = ("import json, sys\nfrom graphplan.analysis import analyse\nfrom graphplan.scene import load\n"
+            "before = 'graphplan.friction' in sys.modules\n"
+            f"analysis = analyse(load({str(scene)!r}))\n"
+            "print(json.dumps([before, 'graphplan.friction' in sys.modules, [p.radius for p in analysis.friction]]))")
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
+    before, after, radii = json.loads(found.stdout.splitlines()[-1])
+    assert not before and after
+    assert radii == [pytest.approx(0.2 * 0.05)]
