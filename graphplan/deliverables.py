@@ -362,7 +362,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
                 laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
                 layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                     else _force_sheet_layers(analysis, plan, pieces, True)
-                found.append(Drawing(f"forces_friction_{plan.number}", layers))
+                found.append(Drawing(f"forces_friction_{plan.number}", layers,
+                                     larger_polygons=_record_friction_polygons(plan)))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces, scales)
     return found
 
@@ -454,6 +455,18 @@ def _record_arrows(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons],
     arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan))
     drawn = {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole}
     return ((plan.number, SheetPolygons(None, {}, arrows=drawn)),) if drawn else ()
+
+
+def _record_friction_polygons(plan) -> tuple[tuple[int, SheetPolygons], ...]:
+    """The polygons with friction that forces_friction_N.svg draws (at the μF of the record's polygons where they fit
+    two fields there), where a reaction of ``plan`` was read by hand: readings measured on them are the reactions
+    with friction, not those the tables compare with, and are told so (a :class:`SheetPolygons` of no sheet, with
+    friction), not advised a ``force_scale``."""
+    from .misreadings import SheetPolygons, reads_forces
+
+    if not reads_forces(plan):
+        return ()
+    return ((plan.number, SheetPolygons(None, dict(plan.with_friction.group_scales), friction=True)),)
 
 
 def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],

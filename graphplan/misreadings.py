@@ -124,7 +124,8 @@ class SheetPolygons:
     group cut free draws its arrows at there, with the reactions drawn whole at their length: a hand reading a
     reaction off an arrow reads it as off its polygon, at another μF.  ``sheet`` None is the record itself, its
     groups cut free in ``forces_N.svg`` (:func:`~graphplan.deliverables._record_arrows`): no polygon of its own
-    drawn larger, its arrows at theirs."""
+    drawn larger, its arrows at theirs; or, with ``friction``, its polygons with friction in ``forces_friction_N.svg``
+    (:func:`~graphplan.deliverables._record_friction_polygons`), at their μF, the record's own as a rule."""
 
     sheet: int | None
     scales: Mapping[str, float]
@@ -151,7 +152,7 @@ class OnSheet:
     readings of every polygon read; ``off`` the largest share by which a reading taken at the sheet's μF is off the
     construction.  ``drawing`` is what of the sheet they fit (``polygons``, or ``arrows``: the groups cut free),
     ``friction`` whether of the force sheet with friction, ``readings`` the readings that fit it.  ``sheet`` None:
-    the record's own arrows, in ``forces_N.svg``."""
+    the record's own arrows, in ``forces_N.svg``, or with ``friction`` its polygons in ``forces_friction_N.svg``."""
 
     sheet: int | None
     polygons: Mapping[str, tuple[float, float]]
@@ -319,6 +320,7 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
         # Readings of the force sheet with friction measure its reactions, not those they are checked against.
         values = [(row, abs(rubbing.reactions[row.quantity].force) if sheet.friction else plan)
                   for row, plan in reactions if not sheet.friction or row.quantity in rubbing.reactions]
+        plain = {row.reading: plan for row, plan in reactions}
         for drawing, scales, whole in sheet.drawings():
             by_polygon: dict[str, list[tuple[ErrorRow, float]]] = {}
             for row, value in values:
@@ -331,8 +333,9 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
                 # values, as they were before the record's arrows were known (a course sheet's stand on paper apart).
                 if sheet.sheet is None and at is not None and in_units(at):
                     continue
-                if at is not None and record and not math.isclose(at, record) and _fit_at(rows, at, record,
-                                                                                          precision):
+                # The polygons with friction find other reactions: at the record's μF too they are another drawing.
+                if (at is not None and record and (sheet.friction or not math.isclose(at, record))
+                        and _fit_at(rows, at, record, precision, plain)):
                     fitting[label] = (at, record)
             read = [(row, value) for label in fitting for row, value in by_polygon[label]]
             if not any(row is each for row, _ in read for each, _ in far):
@@ -346,9 +349,11 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
     return best
 
 
-def _fit_at(rows: list[tuple[ErrorRow, float]], at: float, record: float, precision: float) -> bool:
+def _fit_at(rows: list[tuple[ErrorRow, float]], at: float, record: float, precision: float,
+            plain: Mapping[str, float]) -> bool:
     """Whether the readings ``rows`` of one polygon, read at its ``record`` μF, fit the polygon drawn at ``at``
-    better than at the record's: see :func:`_on_sheet`."""
+    (its reactions each row's value) better than the record's, whose reactions are ``plain`` by reading: see
+    :func:`_on_sheet`."""
     rows = [(row, plan) for row, plan in rows if plan]
     if not rows or any(row.plan / plan <= 0 for row, plan in rows):
         return False
@@ -358,8 +363,11 @@ def _fit_at(rows: list[tuple[ErrorRow, float]], at: float, record: float, precis
         return abs(there - _hand_millimetres(row)) <= min(precision, 0.02 * there)
     implied = [record * plan / row.plan for row, plan in rows]
     drawn_at = statistics.median(implied)
+    # The record's polygons as the readings imply them: the same reactions, unless the drawing's are with friction.
+    recorded_at = statistics.median(record * plain[row.reading] / row.plan for row, _ in rows)
     return (all(abs(each / at - 1.0) <= FAR_OFF_PERCENT / 100.0 for each in implied)
-            and abs(drawn_at / at - 1.0) <= _ROUND_SHARE and abs(drawn_at / at - 1.0) < abs(drawn_at / record - 1.0))
+            and abs(drawn_at / at - 1.0) <= _ROUND_SHARE
+            and abs(drawn_at / at - 1.0) < abs(recorded_at / record - 1.0))
 
 
 def _name(reading: str) -> str:
@@ -774,12 +782,21 @@ def on_sheet_detail(found: OnSheet, number: int) -> str:
             else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
     # The console's warnings are in English whatever the scene's locale, as are the others here.
     drawn_as = strings("en")[found.kind].format(number=number)
+    if found.sheet is None and found.friction:
+        # The record's own polygons with friction: their reactions are others than those the tables compare with, so
+        # no factor turns the readings into the polygons without friction's.
+        return (f"every reading of {what} fits {drawn_as} in forces_friction_{number}.svg at μF = {found.scales(0)} "
+                f"N/mm (taken at it, every reading is within {found.off * 100.0:.1f} % of the reactions with friction "
+                f"as constructed), not the polygons without friction of forces_{number}.svg (at μF = "
+                f"{found.scales(1)} N/mm), whose reactions they are checked against: readings of the polygons with "
+                f"friction? measure the polygons of forces_{number}.svg")
     if found.sheet is None:
         # The record's own groups cut free: forces_N.svg draws their arrows beside its polygons, at a μF of their own.
         return (f"every reading of {what} fits {drawn_as} in forces_{number}.svg at μF = {found.scales(0)} N/mm "
                 f"(taken at it, every reading is within {found.off * 100.0:.1f} % of the polygons as constructed), "
-                f"drawn at a μF of their own, not its polygons (at μF = {found.scales(1)} N/mm), which they are checked against: readings of the arrows? measure the "
-                f"polygons, or give these readings times {found.factor()}")
+                f"drawn at a μF of their own, not its polygons (at μF = {found.scales(1)} N/mm), which they are "
+                f"checked against: readings of the arrows? measure the polygons, or give these readings times "
+                f"{found.factor()}")
     plain = found.kind == "sheet_drawn_polygons"
     return (f"every reading of {what} fits {drawn_as} on the course sheet "
             f"(sheet_{found.sheet}.svg, at μF = {found.scales(0)} N/mm; taken at it, every reading is within "

@@ -106,7 +106,9 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     if found is None:
         return nearer
     text = strings(analysis.scene.locale)
-    lines = nearer
+    # Readings found on the record's polygons with friction are told that once, with the drawing and its μF.
+    on_friction = found.on_sheet is not None and found.on_sheet.sheet is None and found.on_sheet.friction
+    lines = [] if on_friction else nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
     if found.on_sheet is not None:
         lines.append(_on_sheet_line(found.on_sheet, plan.number, text, mark, in_note))
@@ -213,20 +215,22 @@ def _shared_caveat(analysis: Analysis, plan: VelocityPosition, drawn: tuple[Velo
 
 def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str, in_note: bool) -> str:
     """Force readings that fit a drawing of the course sheet (its polygons, its groups cut free's arrows, of the force
-    sheet or of the one with friction), drawn larger there than the record's polygons, or the arrows the record's
-    force sheet draws at a μF of their own, in the locale's words; ``in_note`` names the drawings by what they are,
-    not by their files."""
+    sheet or of the one with friction), drawn larger there than the record's polygons, the arrows the record's
+    force sheet draws at a μF of their own, or the record's polygons with friction, in the locale's words;
+    ``in_note`` names the drawings by what they are, not by their files."""
     labels = ", ".join(found.polygons)
     polygons = (text["errors_polygons"] if found.every and len(found.polygons) > 1
                 else text["errors_polygons_named" if len(found.polygons) > 1 else "errors_polygon"].format(
                     label=labels, labels=labels))
-    # The record's own arrows (no course sheet): forces_N.svg draws them beside its polygons at a μF of their own.
-    which = "record" if found.sheet is None else "sheet"
+    # The record's own arrows (no course sheet): forces_N.svg draws them beside its polygons at a μF of their own;
+    # or its polygons with friction, forces_friction_N.svg, whose reactions no factor turns into those compared with.
+    which = "sheet" if found.sheet is not None else "record_friction" if found.friction else "record"
     return text[f"note_on_{which}" if in_note else f"errors_on_{which}"].format(
         polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet,
         drawn=found.scales(0, mark),
         record=found.scales(1, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), factor=found.factor(mark),
-        sheet_file=f"sheet_{found.sheet}.svg", forces_file=f"forces_{number}.svg")
+        sheet_file=f"sheet_{found.sheet}.svg", forces_file=f"forces_{number}.svg",
+        friction_file=f"forces_friction_{number}.svg")
 
 
 def _written(reading: str, text: dict[str, str], mark: str) -> str:
