@@ -126,3 +126,17 @@ def test_a_run_that_draws_no_force_sheet_says_what_it_said(tmp_path, scales):
     friction, _ = scales
     (detail,) = _far_off(run(_scene(_readings(friction)), tmp_path, only=["errors"]).warnings)
     assert "forces_friction" not in detail
+
+
+def test_one_reading_alone_of_a_polygon_with_friction_is_told_that_polygon(tmp_path, scales):
+    """R45, 38 % longer with friction, the one reading of its polygon, read off forces_friction_10.svg; the other
+    polygons' readings off forces_10.svg."""
+    friction, plain = scales
+    plain_share = _exact()["R45"][1] / _exact()["R45"][0] - 1.0
+    assert plain_share > 0.15
+    readings = {name: length for name, length in _readings(plain, False).items() if POLYGON_OF[name] != "II-5-6"}
+    readings["R45"] = _readings(friction)["R45"]
+    (detail,) = _far_off(run(_scene(readings), tmp_path, only=["forces"]).warnings)
+    assert (f"every reading of the force polygon II(5,6) fits the polygons with friction of position {NUMBER} in "
+            f"forces_friction_{NUMBER}.svg at μF = {friction['II-5-6']:g} N/mm") in detail, detail
+    assert "force_scale" not in detail and "misread" not in detail
