@@ -356,3 +356,15 @@ working = {{ link = 4, sense = "forward" }}
 {positions}
 [dynamics]
 {dynamics}"""
+
+
+# The flywheel starter's press known by its power cycle (driving constant; 367.7 W for a third of the turn and 3677 W
+# for two thirds, n = 100 rpm, δ = 0.05), the published example test_textbook_dynamics checks: the [dynamics] table's
+# own lines, which the caller follows with its motor, flywheel shaft or another key of the table.
+POWER_CYCLE_PRESS = """[dynamics]
+rpm = 100
+delta = 0.05
+resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
+driving = "constant"
+inertia = 0.0
+"""

@@ -11,6 +11,7 @@ import re
 from pathlib import Path
 
 import pytest
+from scene_texts import POWER_CYCLE_PRESS
 
 from graphplan import scene
 from graphplan.cli import main
@@ -18,17 +19,7 @@ from graphplan.errors import SceneError
 from graphplan.starters import starter
 
 # A press known by its resisting power, driven through a gear by a motor: the flywheel starter's numbers.
-PRESS = """
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-driving = "constant"
-inertia = 0.0
-{extra}
-[dynamics.motor]
-{motor}
-"""
+PRESS = "\n" + POWER_CYCLE_PRESS + "{extra}\n[dynamics.motor]\n{motor}\n"
 KLOSS = {"kind": '"kloss"', "power": "4000.0", "overload": "2.2", "synchronous_rpm": "1500", "rated_rpm": "1440",
          "gear_ratio": "14.4", "rotor_inertia": "0.02"}
 LINEAR = {"kind": '"linear"', "stall_torque": "600.0", "no_load_rpm": "1500", "gear_ratio": "14.4"}

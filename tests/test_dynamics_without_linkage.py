@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from console import without_progress
+from scene_texts import POWER_CYCLE_PRESS
 
 from graphplan.cli import main
 from graphplan.dynamics import diagram_model
@@ -24,17 +25,8 @@ from graphplan.dynamics import diagram_model
 ROOT = Path(__file__).resolve().parent.parent
 RATCHET = ROOT / "fixtures" / "ratchet_crank_rocker.toml"
 
-PRESS = """\
-[scene]
-title = "Flywheel of a punching press from its power cycle"
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-driving = "constant"
-inertia = 0.0
-flywheel_shaft_rpm = 1440
-"""
+PRESS = ('[scene]\ntitle = "Flywheel of a punching press from its power cycle"\n' + POWER_CYCLE_PRESS
+         + "flywheel_shaft_rpm = 1440\n")
 
 
 def run(tmp_path: Path, text: str) -> tuple[int, Path]:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from scene_texts import POWER_CYCLE_PRESS
 
 from graphplan import scene
 from graphplan.errors import SceneError
@@ -28,16 +29,7 @@ inertia = 0.0
 DELTA_W_MAX = 100.0 * math.pi
 
 # A press known by its resisting power, driven through a gear by a Kloss motor: the flywheel starter's numbers.
-PRESS = """
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-driving = "constant"
-inertia = 0.0
-[dynamics.motor]
-{motor}
-"""
+PRESS = "\n" + POWER_CYCLE_PRESS + "[dynamics.motor]\n{motor}\n"
 KLOSS = {"kind": '"kloss"', "power": "4000.0", "overload": "2.2", "synchronous_rpm": "1500", "rated_rpm": "1440",
          "gear_ratio": "14.4"}
 LINEAR = {"kind": '"linear"', "stall_torque": "60.0", "no_load_rpm": "1500", "gear_ratio": "14.4",

@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_texts import POWER_CYCLE_PRESS
 from scipy.integrate import solve_ivp
 
 from graphplan.cli import main
@@ -90,16 +91,9 @@ def test_the_plot_of_a_uniform_turn_does_not_stretch_its_creep_over_the_axis():
 
 def test_a_fluctuating_steady_turn_keeps_its_delta_against_my_own_integration(tmp_path):
     # The flywheel starter's press: Mr steps between two values; the Kloss motor through a gear.
-    motion, _ = _run(tmp_path, """[scene]
-title = "Press"
-[dynamics]
-rpm = 100
-delta = 0.05
-resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
-driving = "constant"
-inertia = 0.0
-motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_rpm = 1500, rated_rpm = 1440, gear_ratio = 14.4, rotor_inertia = 0.02 }
-""")
+    motion, _ = _run(tmp_path, '[scene]\ntitle = "Press"\n' + POWER_CYCLE_PRESS + (
+        'motor = { kind = "kloss", power = 4000.0, overload = 2.2, synchronous_rpm = 1500, rated_rpm = 1440, '
+        "gear_ratio = 14.4, rotor_inertia = 0.02 }\n"))
     synchronous, rated = 1500 * math.pi / 30, 1440 * math.pi / 30
     slip, overload, gear = 1 - rated / synchronous, 2.2, 14.4
     breakdown = overload * 4000.0 / rated
