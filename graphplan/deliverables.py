@@ -363,7 +363,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
                 layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                     else _force_sheet_layers(analysis, plan, pieces, True)
                 found.append(Drawing(f"forces_friction_{plan.number}", layers,
-                                     larger_polygons=_record_friction_polygons(plan)))
+                                     larger_polygons=_record_friction_polygons(analysis, plan)))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces, scales)
     return found
 
@@ -457,16 +457,22 @@ def _record_arrows(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons],
     return ((plan.number, SheetPolygons(None, {}, arrows=drawn)),) if drawn else ()
 
 
-def _record_friction_polygons(plan) -> tuple[tuple[int, SheetPolygons], ...]:
+def _record_friction_polygons(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons], ...]:
     """The polygons with friction that forces_friction_N.svg draws (at the μF of the record's polygons where they fit
-    two fields there), where a reaction of ``plan`` was read by hand: readings measured on them are the reactions
-    with friction, not those the tables compare with, and are told so (a :class:`SheetPolygons` of no sheet, with
-    friction), not advised a ``force_scale``."""
+    two fields there), and the arrows of its groups cut free, at a μF of their own
+    (:func:`~graphplan.render.forces.free_body_arrows`), where a reaction of ``plan`` was read by hand: readings
+    measured on either are the reactions with friction, not those the tables compare with, and are told so (a
+    :class:`SheetPolygons` of no sheet, with friction), not advised a ``force_scale`` nor a factor."""
     from .misreadings import SheetPolygons, reads_forces
 
     if not reads_forces(plan):
         return ()
-    return ((plan.number, SheetPolygons(None, dict(plan.with_friction.group_scales), friction=True)),)
+    from .render import drawings as draw
+    from .render import forces as force_layout
+
+    arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan, True))
+    drawn = {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole}
+    return ((plan.number, SheetPolygons(None, dict(plan.with_friction.group_scales), friction=True, arrows=drawn)),)
 
 
 def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],

@@ -125,7 +125,8 @@ class SheetPolygons:
     reaction off an arrow reads it as off its polygon, at another μF.  ``sheet`` None is the record itself, its
     groups cut free in ``forces_N.svg`` (:func:`~graphplan.deliverables._record_arrows`): no polygon of its own
     drawn larger, its arrows at theirs; or, with ``friction``, its polygons with friction in ``forces_friction_N.svg``
-    (:func:`~graphplan.deliverables._record_friction_polygons`), at their μF, the record's own as a rule."""
+    (:func:`~graphplan.deliverables._record_friction_polygons`), at their μF, the record's own as a rule, and that
+    sheet's groups cut free's arrows at theirs."""
 
     sheet: int | None
     scales: Mapping[str, float]
@@ -152,7 +153,8 @@ class OnSheet:
     readings of every polygon read; ``off`` the largest share by which a reading taken at the sheet's μF is off the
     construction.  ``drawing`` is what of the sheet they fit (``polygons``, or ``arrows``: the groups cut free),
     ``friction`` whether of the force sheet with friction, ``readings`` the readings that fit it.  ``sheet`` None:
-    the record's own arrows, in ``forces_N.svg``, or with ``friction`` its polygons in ``forces_friction_N.svg``."""
+    the record's own arrows, in ``forces_N.svg``, or with ``friction`` its polygons or arrows in
+    ``forces_friction_N.svg``."""
 
     sheet: int | None
     polygons: Mapping[str, tuple[float, float]]
@@ -782,14 +784,23 @@ def on_sheet_detail(found: OnSheet, number: int) -> str:
             else f"the force polygon{'s' if len(found.polygons) > 1 else ''} {', '.join(found.polygons)}")
     # The console's warnings are in English whatever the scene's locale, as are the others here.
     drawn_as = strings("en")[found.kind].format(number=number)
-    if found.sheet is None and found.friction:
-        # The record's own polygons with friction: their reactions are others than those the tables compare with, so
-        # no factor turns the readings into the polygons without friction's.
+    if found.friction:
+        # Readings of a drawing with friction measure the reactions with friction, others than those the tables
+        # compare with: no factor turns them into the polygons without friction's, on a course sheet or off it.
+        within = (f"taken at it, every reading is within {found.off * 100.0:.1f} % of the reactions with friction as "
+                  f"constructed")
+        checked = (f"at μF = {found.scales(1)} N/mm), whose reactions they are checked against: readings of the "
+                   f"reactions with friction, off the")
+        if found.sheet is not None:
+            return (f"every reading of {what} fits {drawn_as} on the course sheet (sheet_{found.sheet}.svg, at μF = "
+                    f"{found.scales(0)} N/mm; {within}), which draws them larger where it has room, not the polygons "
+                    f"without friction of its force sheet (forces_{number}.svg, {checked} course sheet? measure the "
+                    f"polygons of forces_{number}.svg")
+        arrows = found.drawing == "arrows"
         return (f"every reading of {what} fits {drawn_as} in forces_friction_{number}.svg at μF = {found.scales(0)} "
-                f"N/mm (taken at it, every reading is within {found.off * 100.0:.1f} % of the reactions with friction "
-                f"as constructed), not the polygons without friction of forces_{number}.svg (at μF = "
-                f"{found.scales(1)} N/mm), whose reactions they are checked against: readings of the polygons with "
-                f"friction? measure the polygons of forces_{number}.svg")
+                f"N/mm ({within}){', drawn there at a μF of their own' if arrows else ''}, not the polygons "
+                f"without friction of forces_{number}.svg ({checked} "
+                f"{'arrows' if arrows else 'polygons with friction'}? measure the polygons of forces_{number}.svg")
     if found.sheet is None:
         # The record's own groups cut free: forces_N.svg draws their arrows beside its polygons, at a μF of their own.
         return (f"every reading of {what} fits {drawn_as} in forces_{number}.svg at μF = {found.scales(0)} N/mm "

@@ -3,7 +3,9 @@ with friction (the ratchet's position 10 with a journal's friction at C: its she
 sheet of its own, against 10 in forces_10.svg), and the arrows of the groups cut free (the ratchet's crank at position
 5, its arrows at 100 N/mm on sheet 3, its polygon at 20 in forces_5.svg). Both were told "drawn at another μF, give
 `[drawing] force_scale = …`", as the plain polygons were before they were known; they are now told which sheet and
-which of its drawings they fit, with its μF and the factor to the record's polygons.
+which of its drawings they fit, with its μF and the factor to the record's polygons; the sheet with friction's with
+no factor, only to measure forces_N.svg: its readings are reactions with friction, which times any factor are still
+not the reactions without friction the error tables compare with.
 
 Each μF is read in the test off the caption under its drawing in the sheet's SVG, and each reading is the reaction of
 the linear system (with friction, for the sheet with friction) over it, as a hand measuring the sheet would give it.
@@ -102,19 +104,40 @@ def test_readings_of_the_sheet_with_frictions_larger_polygons_are_told_that_shee
     # Lengths on the sheet with friction's polygons, as a ruler gives them.
     readings = {name: round(_exact(name, True, 10, True) / drawn[polygon], 2) for name, polygon in POLYGON_OF.items()}
     folder = tmp_path_factory.mktemp("read")
-    done = run(_scene({10: {"forces": readings}}, friction=True), folder, only=["sheets", "errors"])
+    done = run(_scene({10: {"forces": readings}}, friction=True), folder, only=["sheets", "errors", "note"])
     (warning,) = _far_off(done.warnings, 10)
-    (factor,) = {round(drawn[label] / record[label], 4) for label in record}
     (sheet_scale,) = set(drawn.values())
     (record_scale,) = set(record.values())
     assert (f"every reading of the force polygons fits the polygons with friction of position 10 on the course sheet "
             f"(sheet_{sheet}.svg, at μF = {sheet_scale:g} N/mm") in warning, warning
-    assert f"not the polygons of its force sheet (forces_10.svg, at μF = {record_scale:g} N/mm)" in warning
-    assert f"measure forces_10.svg, or give these readings times {factor:g}" in warning
-    assert "force_scale" not in warning
+    assert (f"not the polygons without friction of its force sheet (forces_10.svg, at μF = {record_scale:g} N/mm), "
+            f"whose reactions they are checked against") in warning
+    # Reactions with friction times a factor are still reactions with friction: no factor is given, no key.
+    assert "measure the polygons of forces_10.svg" in warning
+    assert "times" not in warning and "force_scale" not in warning
+    results = json.loads((folder / "results.json").read_text(encoding="utf-8"))
+    assert [w["detail"] for w in results["warnings"] if w["code"] == "measured-far-off"] == [
+        warning.split(": ", 1)[1]]
     errors = (folder / "errors.md").read_text(encoding="utf-8")
-    assert (f"fits the polygons with friction of position 10 on the course sheet (sheet_{sheet}.svg, sheet {sheet}, "
-            f"at μF = {sheet_scale:g} N/mm") in errors
+    (line,) = [line for line in errors.splitlines() if "fits the polygons with friction of position 10" in line]
+    assert (f"on the course sheet (sheet_{sheet}.svg, sheet {sheet}, at μF = {sheet_scale:g} N/mm; taken at it, every "
+            f"reading is within") in line
+    assert f"not the polygons without friction of its force sheet (forces_10.svg, at μF = {record_scale:g}" in line
+    assert line.endswith("Measure the polygons of forces_10.svg.") and "times" not in line
+    (said,) = [line for line in (folder / "note.md").read_text(encoding="utf-8").splitlines()
+               if "of the course project draws them" in line]
+    assert f"fits the polygons with friction of position 10 as sheet {sheet} of the course project" in said
+    assert "readings of the reactions with friction" in said and "multiplied" not in said and ".svg" not in said
+    ru = tmp_path_factory.mktemp("ru")
+    run(dataclasses.replace(_scene({10: {"forces": readings}}, friction=True), locale="ru"), ru,
+        only=["sheets", "errors", "note"])
+    (line,) = [line for line in (ru / "errors.md").read_text(encoding="utf-8").splitlines()
+               if "согласуются с многоугольниками положения 10 с учётом трения на листе" in line]
+    assert f"лист {sheet}, μF = {sheet_scale:g} Н/мм" in line and "умножьте" not in line
+    assert line.endswith("Измерьте многоугольники forces_10.svg.")
+    (said,) = [line for line in (ru / "note.md").read_text(encoding="utf-8").splitlines()
+               if "согласуются с многоугольниками положения 10 с учётом трения, как их чертит лист" in line]
+    assert "умножить" not in said and "без учёта трения" in said and ".svg" not in said
     # Readings of the record's polygons, without friction or with, are right: nothing is said of them.
     for with_friction in (False, True):
         right = {name: round(_exact(name, True, 10, with_friction) / record[polygon], 2)
@@ -179,3 +202,39 @@ def test_readings_of_the_sheets_free_body_arrows_are_told_that_sheet(tmp_path_fa
     right = {name: round(_exact(name, False, 5, False) / record, 2) for name in CRANK_ARROWS}
     assert not _far_off(run(_scene({5: {"forces": right}}), tmp_path_factory.mktemp("right"),
                             only=["sheets"]).warnings, 5)
+
+
+def test_readings_of_the_sheet_with_frictions_arrows_are_told_that_sheet_with_no_factor(tmp_path_factory,
+                                                                                        friction_sheets):
+    """The crank cut free as the sheet with friction draws it at position 10 (its arrows at their own μF, on a sheet
+    of its own): told that sheet's arrows with friction and to measure forces_10.svg, with no factor, in English and
+    in Russian (со стрелками)."""
+    captions = friction_sheets
+    sheet, caption = captions["forces-friction-10-body-I-1-2"]
+    arrows = _scale_of(caption, "arrows: ")
+    record = _record_scales(True, 10)["I(1,2)"]
+    assert arrows != record
+    readings = {name: round(_exact(name, True, 10, True) / arrows, 2) for name in CRANK_ARROWS}
+    folder = tmp_path_factory.mktemp("arrows")
+    done = run(_scene({10: {"forces": readings}}, friction=True), folder, only=["sheets", "errors", "note"])
+    svg = (folder / f"sheet_{sheet}.svg").read_text(encoding="utf-8")
+    for name in CRANK_ARROWS:
+        assert abs(_arrow_length(svg, f"forces-friction-10-body-I-1-2-{name}") - readings[name]) < 0.05
+    (warning,) = _far_off(done.warnings, 10)
+    assert (f"every reading of the force polygon I(1,2) fits the arrows of the groups cut free with friction of "
+            f"position 10 on the course sheet (sheet_{sheet}.svg, at μF = {arrows:g} N/mm") in warning, warning
+    assert f"not the polygons without friction of its force sheet (forces_10.svg, at μF = {record:g} N/mm)" in warning
+    assert warning.endswith("measure the polygons of forces_10.svg")
+    assert "times" not in warning and "force_scale" not in warning
+    errors = (folder / "errors.md").read_text(encoding="utf-8")
+    (line,) = [line for line in errors.splitlines() if "arrows of the groups cut free with friction" in line]
+    assert f"(sheet_{sheet}.svg, sheet {sheet}, at μF = {arrows:g} N/mm" in line and "times" not in line
+    (said,) = [line for line in (folder / "note.md").read_text(encoding="utf-8").splitlines()
+               if "of the course project draws them" in line]
+    assert "multiplied" not in said and "without friction" in said
+    ru = tmp_path_factory.mktemp("ru")
+    run(dataclasses.replace(_scene({10: {"forces": readings}}, friction=True), locale="ru"), ru,
+        only=["sheets", "errors"])
+    (line,) = [line for line in (ru / "errors.md").read_text(encoding="utf-8").splitlines()
+               if "согласуются со стрелками сил на отсоединённых группах положения 10 с учётом трения на листе" in line]
+    assert f"лист {sheet}, μF = {arrows:g} Н/мм" in line and "умножьте" not in line

@@ -222,9 +222,12 @@ def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str,
     polygons = (text["errors_polygons"] if found.every and len(found.polygons) > 1
                 else text["errors_polygons_named" if len(found.polygons) > 1 else "errors_polygon"].format(
                     label=labels, labels=labels))
-    # The record's own arrows (no course sheet): forces_N.svg draws them beside its polygons at a μF of their own;
-    # or its polygons with friction, forces_friction_N.svg, whose reactions no factor turns into those compared with.
-    which = "sheet" if found.sheet is not None else "record_friction" if found.friction else "record"
+    # The record's own arrows (no course sheet): forces_N.svg draws them beside its polygons at a μF of their own.
+    # A drawing with friction (forces_friction_N.svg's polygons or arrows, or the course sheet's) draws reactions no
+    # factor turns into those compared with: told to measure the polygons without friction, with none.
+    which = "sheet" if found.sheet is not None else "record"
+    if found.friction:
+        which += "_friction" + ("_arrows" if found.sheet is None and found.drawing == "arrows" else "")
     return text[f"note_on_{which}" if in_note else f"errors_on_{which}"].format(
         polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet,
         drawn=found.scales(0, mark),
