@@ -3,6 +3,7 @@ a draftsman breaks it) is drawn in pieces, which are one line to the reader."""
 
 from __future__ import annotations
 
+import math
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Collection, Iterable
@@ -53,3 +54,16 @@ def stroked_shapes(root: ET.Element, skipped: Collection[str] = ("leaders",)) ->
                 centre = shapely.Point(float(item.get("cx")), float(item.get("cy")))
                 shapes.append(centre.buffer(float(item.get("r"))).exterior.buffer(width / 2))
     return shapes
+
+
+def caption_text(svg: str, element: str) -> str:
+    """The words of the caption of the drawing's group ``element`` (``II(3,4)-caption``), its lines joined by spaces."""
+    return " ".join(re.findall(r">([^<]*)</text>", re.search(f'id="{element}-caption">(.*?)</g>', svg).group(1)))
+
+
+def arrow_length(svg: str, element: str) -> float:
+    """The length (mm) of the arrow drawn as the SVG's group ``element``, from its tail to its head's tip, as a ruler
+    measures it off the paper."""
+    group = re.search(f'<g id="{element}">(.*?)</g>', svg).group(1)
+    (tail, *_), head = (re.findall(r"[ML]([-0-9.]+),([-0-9.]+)", path) for path in re.findall(r'd="([^"]+)"', group))
+    return math.dist(tuple(map(float, tail)), tuple(map(float, head[0])))

@@ -14,11 +14,11 @@ the linear system (with friction, for the sheet with friction) over it, as a han
 import dataclasses
 import functools
 import json
-import math
 import re
 from pathlib import Path
 
 import pytest
+from drawn_lines import arrow_length
 
 from graphplan.analysis import analyse
 from graphplan.run import run
@@ -165,13 +165,6 @@ def test_readings_of_either_of_two_sheets_drawn_alike_are_told_the_one_they_were
         assert f"fits {words} position 5 on the course sheet (sheet_{sheet}.svg" in warning, warning
 
 
-def _arrow_length(svg, element):
-    """The length (mm) of an arrow of the sheet's SVG from its tail to its head's tip, as a ruler measures it."""
-    group = re.search(f'<g id="{element}">(.*?)</g>', svg).group(1)
-    (tail, *_), head = (re.findall(r"[ML]([-0-9.]+),([-0-9.]+)", path) for path in re.findall(r'd="([^"]+)"', group))
-    return math.dist(tuple(map(float, tail)), tuple(map(float, head[0])))
-
-
 def test_readings_of_the_sheets_free_body_arrows_are_told_that_sheet(tmp_path_factory, plain):
     folder, captions = plain
     sheet, caption = captions["forces-5-body-I-1-2"]
@@ -182,7 +175,7 @@ def test_readings_of_the_sheets_free_body_arrows_are_told_that_sheet(tmp_path_fa
     for name in CRANK_ARROWS:
         readings[name] = round(_exact(name, False, 5, False) / arrows, 2)
         # The ruler on the sheet's arrow gives the same length.
-        assert abs(_arrow_length(svg, f"forces-5-body-I-1-2-{name}") - readings[name]) < 0.05
+        assert abs(arrow_length(svg, f"forces-5-body-I-1-2-{name}") - readings[name]) < 0.05
     read = tmp_path_factory.mktemp("read")
     done = run(_scene({5: {"forces": readings}}), read, only=["sheets", "errors", "note"])
     (warning,) = _far_off(done.warnings, 5)
@@ -219,7 +212,7 @@ def test_readings_of_the_sheet_with_frictions_arrows_are_told_that_sheet_with_no
     done = run(_scene({10: {"forces": readings}}, friction=True), folder, only=["sheets", "errors", "note"])
     svg = (folder / f"sheet_{sheet}.svg").read_text(encoding="utf-8")
     for name in CRANK_ARROWS:
-        assert abs(_arrow_length(svg, f"forces-friction-10-body-I-1-2-{name}") - readings[name]) < 0.05
+        assert abs(arrow_length(svg, f"forces-friction-10-body-I-1-2-{name}") - readings[name]) < 0.05
     (warning,) = _far_off(done.warnings, 10)
     assert (f"every reading of the force polygon I(1,2) fits the arrows of the groups cut free with friction of "
             f"position 10 on the course sheet (sheet_{sheet}.svg, at μF = {arrows:g} N/mm") in warning, warning

@@ -9,11 +9,11 @@ and the test's ruler on the SVG's arrows gives the same lengths.
 
 import dataclasses
 import json
-import math
 import re
 from pathlib import Path
 
 import pytest
+from drawn_lines import arrow_length, caption_text
 
 from graphplan.analysis import analyse
 from graphplan.run import run
@@ -50,21 +50,10 @@ def _record():
     return _RECORD["svg"], _RECORD["exact"]
 
 
-def _caption(svg, element):
-    return " ".join(re.findall(r">([^<]*)</text>", re.search(f'id="{element}-caption">(.*?)</g>', svg).group(1)))
-
-
-def _arrow_length(svg, element):
-    """The length (mm) of an arrow of the SVG from its tail to its head's tip, as a ruler measures it."""
-    group = re.search(f'<g id="{element}">(.*?)</g>', svg).group(1)
-    (tail, *_), head = (re.findall(r"[ML]([-0-9.]+),([-0-9.]+)", path) for path in re.findall(r'd="([^"]+)"', group))
-    return math.dist(tuple(map(float, tail)), tuple(map(float, head[0])))
-
-
 def _scales():
     svg, _ = _record()
-    arrows = float(re.search(r"arrows: μF = ([0-9.]+) N/mm", _caption(svg, "body-I-1-2")).group(1))
-    polygon = float(re.search(r"μF = ([0-9.]+) N/mm", _caption(svg, "polygon-I-1-2")).group(1))
+    arrows = float(re.search(r"arrows: μF = ([0-9.]+) N/mm", caption_text(svg, "body-I-1-2")).group(1))
+    polygon = float(re.search(r"μF = ([0-9.]+) N/mm", caption_text(svg, "polygon-I-1-2")).group(1))
     return arrows, polygon
 
 
@@ -83,7 +72,7 @@ def _arrow_readings():
     readings = {name: round(exact[name] / arrows, 2) for name in CRANK_ARROWS}
     for name in CRANK_ARROWS:
         # The ruler on forces_5.svg's arrow gives the same length.
-        assert abs(_arrow_length(svg, f"body-I-1-2-{name}") - readings[name]) < 0.05
+        assert abs(arrow_length(svg, f"body-I-1-2-{name}") - readings[name]) < 0.05
     return readings
 
 

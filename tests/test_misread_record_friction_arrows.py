@@ -16,6 +16,7 @@ import math
 import re
 
 import pytest
+from drawn_lines import arrow_length, caption_text
 
 from graphplan.run import run
 from graphplan.scene import loads
@@ -34,17 +35,6 @@ def _scene(readings=None, locale="en"):
     scene = loads(text.replace("f     = 0.1\n", "f     = 0.3\n"))
     measured = {NUMBER: {"forces": readings}} if readings else {}
     return dataclasses.replace(scene, measured=measured, locale=locale)
-
-
-def _caption(svg, element):
-    return " ".join(re.findall(r">([^<]*)</text>", re.search(f'id="{element}-caption">(.*?)</g>', svg).group(1)))
-
-
-def _arrow_length(svg, element):
-    """The length (mm) of an arrow of the SVG from its tail to its head's tip, as a ruler measures it."""
-    group = re.search(f'<g id="{element}">(.*?)</g>', svg).group(1)
-    (tail, *_), head = (re.findall(r"[ML]([-0-9.]+),([-0-9.]+)", path) for path in re.findall(r'd="([^"]+)"', group))
-    return math.dist(tuple(map(float, tail)), tuple(map(float, head[0])))
 
 
 @pytest.fixture(scope="module")
@@ -68,7 +58,7 @@ def drawn(tmp_path_factory):
 
 
 def _scales(svg, word):
-    return {group: float(re.search(word + r"μF = ([0-9.]+) N/mm", _caption(svg, f"{element}-{group}")).group(1))
+    return {group: float(re.search(word + r"μF = ([0-9.]+) N/mm", caption_text(svg, f"{element}-{group}")).group(1))
             for group, element in (("II-3-4", "body" if word else "polygon"), ("I-1-2", "body" if word else "polygon"))}
 
 
@@ -92,7 +82,7 @@ def test_the_arrows_with_friction_are_drawn_at_another_uf_and_length_than_the_ot
     polygons = _scales(svgs[f"forces_{NUMBER}"], "")
     for name, group in ARROW_OF.items():
         # The ruler on the arrow with friction gives the reading.
-        assert abs(_arrow_length(svgs[f"forces_friction_{NUMBER}"], f"body-{group}-{name}") - readings[name]) < 0.05
+        assert abs(arrow_length(svgs[f"forces_friction_{NUMBER}"], f"body-{group}-{name}") - readings[name]) < 0.05
         # Far off the polygon without friction, and off the arrows without friction by twice the drafting
         # precision (0.5 mm) and more.
         assert abs(readings[name] * polygons[group] / exact[name][0] - 1.0) > 0.15
