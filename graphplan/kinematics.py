@@ -13,12 +13,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Union
 
 import numpy as np
 
-Vector = Union[complex, np.ndarray]
-Scalar = Union[float, np.ndarray]
+Vector = complex | np.ndarray
+Scalar = float | np.ndarray
 
 
 def dot(a: Vector, b: Vector) -> Scalar:

@@ -82,7 +82,7 @@ def test_results_json_names_the_versions_it_was_made_with(run_folder):
 
 def test_a_bad_scene_exits_2_with_one_line_and_writes_nothing(tmp_path, capsys):
     scene = tmp_path / "bad.toml"
-    text = open(FIXTURE, encoding="utf-8").read().replace("lengths  = [0.55, 0.325]", "lengths  = [0.55, -0.325]")
+    text = Path(FIXTURE).read_text(encoding="utf-8").replace("lengths  = [0.55, 0.325]", "lengths  = [0.55, -0.325]")
     scene.write_text(text, encoding="utf-8")
     out = tmp_path / "out"
     assert main(["run", str(scene), "--out", str(out)]) == 2
@@ -94,7 +94,7 @@ def test_a_bad_scene_exits_2_with_one_line_and_writes_nothing(tmp_path, capsys):
 
 def test_an_unreachable_position_names_the_position_and_the_group(tmp_path, capsys):
     scene = tmp_path / "short.toml"
-    text = open(FIXTURE, encoding="utf-8").read().replace("lengths  = [0.55, 0.325]", "lengths  = [0.35, 0.325]")
+    text = Path(FIXTURE).read_text(encoding="utf-8").replace("lengths  = [0.55, 0.325]", "lengths  = [0.35, 0.325]")
     scene.write_text(text, encoding="utf-8")
     assert main(["run", str(scene), "--out", str(tmp_path / "out")]) == 2
     error = capsys.readouterr().err
@@ -422,6 +422,6 @@ def test_a_format_none_of_the_pieces_comes_in_is_said_not_dropped(tmp_path, caps
     assert main(["run", "fixtures/ratchet_crank_rocker.toml", "--out", str(out), "--only", only,
                  "--format", f"{kind},png"]) == 0
     told = [line for line in capsys.readouterr().out.splitlines() if line.startswith("warning: --format")]
-    assert told == [f"warning: --format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
-                    f"{only})"]
+    assert told == [(f"warning: --format {kind}: nothing this run writes comes as {kind} (the pieces it writes: "
+                     f"{only})")]
     assert not list(out.glob(f"*.{kind}")) and list(out.glob("*.png"))

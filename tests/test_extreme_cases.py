@@ -28,7 +28,7 @@ from graphplan.report.results import dumps, results
 BENCH = Path(__file__).resolve().parent.parent / "bench"
 sys.path.insert(0, str(BENCH))
 
-import stability  # noqa: E402  (bench/stability.py)
+import stability  # bench/stability.py, put on the path above
 
 EXTREME = sorted((BENCH / "extreme").glob("*.toml"))
 REFUSED = {

@@ -48,12 +48,12 @@ def loaded(scene):
     mechanism = build(scene)
     links = {}
     for rank, number in enumerate(mechanism.moving_links):
-        centre = sorted(mechanism.fixed_on[number])[-1]
+        centre = max(mechanism.fixed_on[number])
         links[number] = LinkSpec(number, f"links.{number}", 2.0 + rank, centre, 0.05 * (rank + 1))
     last = mechanism.moving_links[-1]
     # The resisting moment on a link that turns: one that never turns (a slider) has no sense for it, and is refused.
     before = next(link for link in reversed(mechanism.moving_links[:-1]) if link not in mechanism.translating)
-    external = (LoadSpec("loads[0]", "force", last, 300.0, False, "always", sorted(mechanism.fixed_on[last])[0], 30.0),
+    external = (LoadSpec("loads[0]", "force", last, 300.0, False, "always", min(mechanism.fixed_on[last]), 30.0),
                 LoadSpec("loads[1]", "moment", before, 50.0, True, "always", None, None))
     return dataclasses.replace(scene, links=MappingProxyType(links), loads=external)
 
@@ -316,9 +316,10 @@ def test_the_balancing_diagram_is_drawn_only_when_asked_and_the_same_every_time(
     import subprocess
     import sys
 
-    plain = subprocess.run([sys.executable, "-c", "import sys; from graphplan.cli import main; "
-                            f"main(['run', {str(RATCHET)!r}, '--out', {str(tmp_path / 'plain')!r}]); "
-                            "print('matplotlib' in sys.modules)"], capture_output=True, text=True, check=True)
+    script = ("import sys; from graphplan.cli import main; "
+              f"main(['run', {str(RATCHET)!r}, '--out', {str(tmp_path / 'plain')!r}]); "
+              "print('matplotlib' in sys.modules)")
+    plain = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
     assert plain.stdout.strip().endswith("False")
     assert not (tmp_path / "plain" / "balancing.svg").exists()
     import matplotlib

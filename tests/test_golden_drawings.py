@@ -10,8 +10,8 @@ and look at the new PNGs before committing them.
 
 import os
 import re
-import xml.etree.ElementTree as ElementTree
 from pathlib import Path
+from xml.etree import ElementTree
 
 import pytest
 

@@ -113,7 +113,7 @@ def test_a_unit_in_a_narrow_table_column_stays_on_one_line(notes):
 
 
 def test_chinese_text_comes_out_as_chinese_not_as_missing_glyphs(notes):
-    html, data = notes["zh"]
+    _, data = notes["zh"]
     text = pdf_text(data)[1]
     chinese = [c for c in text if "\u4e00" <= c <= "\u9fff"]
     assert len(chinese) > 500

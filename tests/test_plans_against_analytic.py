@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from test_motion_against_finite_differences import (
-    _HUNG_ON_THE_RATCHET as GROUPS_ON_THE_RATCHET,  # noqa: E402
+    _HUNG_ON_THE_RATCHET as GROUPS_ON_THE_RATCHET,
 )
 from test_motion_against_finite_differences import square_guides
 
@@ -145,7 +145,7 @@ def _positions(case: str) -> int:
 ALL = [pytest.param(case, i, id=f"{case}-{i}") for case in CASES for i in range(_positions(case))]
 
 
-def _close(found: complex | float, expected: complex | float, scale: float, what: str) -> None:
+def _close(found: complex, expected: complex, scale: float, what: str) -> None:
     assert abs(found - expected) <= RELATIVE * scale, f"{what}: plan {found}, analytic {expected} (scale {scale:.3g})"
 
 
@@ -252,7 +252,7 @@ CORIOLIS_CASES = ["quick_return_slotted_lever", "shaper_six_bar", "shaper+crank-
 
 @pytest.mark.parametrize(("case", "index"), [p for p in ALL if p.values[0] in CORIOLIS_CASES])
 def test_the_coriolis_component_of_the_lever_is_present_with_its_sense(case, index):
-    m, pos, _, vp, ap, exact = constructed(case, index)
+    m, pos, _, _, ap, exact = constructed(case, index)
     (rpr,) = [g for g in m.groups if g.kind == "RPR"]
     block, lever = rpr.links
     omega = exact["omega"][lever]
@@ -324,7 +324,7 @@ TRIANGLES = [
 @pytest.mark.parametrize(("case", "link", "names"), TRIANGLES, ids=[f"{t[0]}-{t[1]}" for t in TRIANGLES])
 def test_similar_images_keep_the_orientation_and_the_ratio(case, link, names):
     for index in range(_positions(case)):
-        m, pos, _, vp, ap, exact = constructed(case, index)
+        _, pos, _, vp, ap, exact = constructed(case, index)
         figure = [pos[n] if isinstance(n, str) else pos[n[0]] for n in names]
         orientation = (np.conj(figure[1] - figure[0]) * (figure[2] - figure[0])).imag
         assert abs(orientation) > 1e-6, "the three points must not lie in a line"

@@ -101,7 +101,7 @@ def ref_fourbar(O2, O4, a, b, c, th2_deg, w2, al2, upper=True):
     w3, w4 = np.linalg.solve(M, -_kx(w2, r2))
     al3, al4 = np.linalg.solve(M, -(_kx(al2, r2) - w2**2 * r2) + w3**2 * r3 - w4**2 * r4)
     vB = _kx(w2, r2) + _kx(w3, r3)
-    return dict(A=A, B=B, w3=w3, w4=w4, al3=al3, al4=al4, vB=vB)
+    return {"A": A, "B": B, "w3": w3, "w4": w4, "al3": al3, "al4": al4, "vB": vB}
 
 
 def ref_slider_crank(O, r, l, th2_deg, w2, al2, guide_deg, side):
@@ -117,8 +117,8 @@ def ref_slider_crank(O, r, l, th2_deg, w2, al2, guide_deg, side):
     M = np.column_stack([_kx(1, r3), -g])
     w3, sd = np.linalg.solve(M, -_kx(w2, r2))
     al3, sdd = np.linalg.solve(M, -(_kx(al2, r2) - w2**2 * r2) + w3**2 * r3)
-    return dict(A=O + r2, P=P, r3=r3, s=s, sd=sd, sdd=sdd, w3=w3, al3=al3,
-                vA=_kx(w2, r2), aA=_kx(al2, r2) - w2**2 * r2)
+    return {"A": O + r2, "P": P, "r3": r3, "s": s, "sd": sd, "sdd": sdd, "w3": w3, "al3": al3,
+            "vA": _kx(w2, r2), "aA": _kx(al2, r2) - w2**2 * r2}
 
 
 def ref_crank_slotted_link(O2, O4, R, th2_deg, w2, al2):
@@ -134,8 +134,8 @@ def ref_crank_slotted_link(O2, O4, R, th2_deg, w2, al2):
     M = np.column_stack([u, s * n])
     sd, w4 = np.linalg.solve(M, _kx(w2, r2))
     sdd, al4 = np.linalg.solve(M, _kx(al2, r2) - w2**2 * r2 - 2 * sd * w4 * n + s * w4**2 * u)
-    return dict(A=O2 + r2, s=s, th4=th4, w4=w4, al4=al4, sd=sd, sdd=sdd,
-                vA=_kx(w2, r2), aA=_kx(al2, r2) - w2**2 * r2)
+    return {"A": O2 + r2, "s": s, "th4": th4, "w4": w4, "al4": al4, "sd": sd, "sdd": sdd,
+            "vA": _kx(w2, r2), "aA": _kx(al2, r2) - w2**2 * r2}
 
 
 def close(value, reference, rel=REF):
