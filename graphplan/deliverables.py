@@ -730,6 +730,7 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
             crank_omega,
             delta_warning,
             gear_warning,
+            rotor_inertia_warning,
             speed_unit_warning,
             speed_warnings,
             synchronous_warning,
@@ -737,7 +738,8 @@ def outcome_warnings(scene: Scene, pieces: tuple[str, ...], dynamics: MachineDyn
 
         crank = crank_omega(scene.driver)
         told += [line for line in (delta_warning(scene.dynamics), speed_unit_warning(scene.dynamics, crank),
-                                   synchronous_warning(scene.dynamics), gear_warning(scene.dynamics, crank))
+                                   synchronous_warning(scene.dynamics), gear_warning(scene.dynamics, crank),
+                                   rotor_inertia_warning(scene.dynamics))
                  if line is not None] + speed_warnings(scene.dynamics)
     if dynamics is not None:
         told += [line for line in (dynamics.stall_warning(), dynamics.slipping_warning(),

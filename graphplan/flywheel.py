@@ -1017,6 +1017,46 @@ def synchronous_warning(spec: DynamicsSpec) -> str | None:
             f"{asked}Kloss' slip, s = 1 − ω/ωs, and the motor's whole characteristic are reckoned from it")
 
 
+# A motor runs its own rotor up to speed at its own torque in some milliseconds (a servo) to a few seconds (a large
+# induction motor, whose inertia constant H = J·ω²/2P stays under some 1.5 s): t = J·ω/M, 0.11 s for the flywheel
+# starter's 4 kW motor.  A rotor_inertia that takes over SLOWEST_OWN_RUN_UP_S is one typed in kg·cm² (10 000 times
+# the kg·m², the servo catalogues' unit: 1100 s for that motor), or the motor's torque is a thousandth of its own,
+# its power typed in kilowatts; within the bounds either way, so it is asked, not refused.
+SLOWEST_OWN_RUN_UP_S = 60.0
+
+
+def rotor_inertia_warning(spec: DynamicsSpec) -> str | None:
+    """The command line's line where ``[dynamics]``' motor would take more than :data:`SLOWEST_OWN_RUN_UP_S` to run
+    its own rotor up to its speed at its own torque (a Kloss motor's rated ones, a linear one's no-load speed and
+    stall torque, J·ω/M): the rotor's inertia typed in kg·cm²; None for a constant motor, which has no speed of its
+    own, a motor with no rotor given, one that runs it up in time, or a Kloss motor whose power in kilowatts would
+    explain it (under 1000 W, and in time at a thousand times it)."""
+    from .machine_motion import KlossMotor, LinearMotor
+
+    motor = getattr(spec.motion, "motor", None)
+    if isinstance(motor, KlossMotor):
+        speed, torque, named = motor.rated_speed, motor.rated_torque, "J·ωN/MN"
+    elif isinstance(motor, LinearMotor):
+        speed, torque, named = motor.no_load, motor.stall_torque, "J·ω0/M0"
+    else:
+        return None
+    inertia = motor.rotor_inertia
+    seconds = inertia * speed / torque
+    if not seconds > SLOWEST_OWN_RUN_UP_S:
+        return None
+    # A Kloss motor's power in kilowatts (4 for 4000 W) makes its torque a thousandth and the time a thousandfold:
+    # where that alone explains it, the kilowatts are asked where they show, the stall's line, not here as well.
+    if isinstance(motor, KlossMotor) and motor.power < 1000 and seconds / 1000 <= SLOWEST_OWN_RUN_UP_S:
+        return None
+    from .render.numerals import number
+
+    key = f"{spec.where}.motor"
+    return (f"{key}.rotor_inertia = {number(inertia)} kg·m² takes the motor {number(seconds, 4)} s to run its own "
+            f"rotor up at its own torque ({named} = {number(inertia)}·{number(speed, 4)}/{number(torque, 4)}), "
+            f"where a motor's takes some milliseconds to a few seconds: kg·cm² typed for kg·m²? ({number(inertia)} "
+            f"kg·cm² is {key}.rotor_inertia = {number(inertia / 10_000)})")
+
+
 def flywheel_from_spec(model: EquivalentModel, spec: DynamicsSpec) -> Flywheel | None:
     """The flywheel the scene's ``[dynamics]`` asks for, or None when it gives no δ."""
     if spec.delta is None:

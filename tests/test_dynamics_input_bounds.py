@@ -261,3 +261,46 @@ def test_the_flywheel_starter_written_by_new_still_runs(tmp_path, capsys):
     assert main(["new", "flywheel", "--out", str(written)]) == 0
     assert main(["run", str(written), "--out", str(tmp_path / "out"), "--only", "dynamics"]) == 0
     assert "error" not in capsys.readouterr().err
+
+
+# --- a rotor's inertia in kg·cm², told by the time the motor takes to run its own rotor up ---------------------------
+
+def _warnings(tmp_path, capsys, text: str) -> list[str]:
+    scene_file = tmp_path / "press.toml"
+    scene_file.write_text('[scene]\ntitle = "Press"\n' + text, encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(scene_file)]) == 0
+    return [line for line in capsys.readouterr().out.splitlines() if line.startswith("warning: ")]
+
+
+def _run_up(line: str) -> float:
+    return float(re.search(r"takes the motor ([0-9.e+]+) s to run its own rotor up", line).group(1))
+
+
+def test_a_kloss_motors_rotor_in_kg_cm2_is_asked_of_by_its_run_up_time(tmp_path, capsys):
+    # The rotor alone at the rated torque: ωN = 1440 rpm, MN = P/ωN, t = J·ωN/MN = 200·150.80/26.526 = 1137 s.
+    rated = 1440 * math.pi / 30
+    seconds = 200.0 * rated / (4000.0 / rated)
+    (line,) = [line for line in _warnings(tmp_path, capsys, _press(KLOSS, rotor_inertia="200.0"))
+               if "rotor_inertia" in line]
+    assert _run_up(line) == pytest.approx(seconds, rel=1e-3)
+    assert line.endswith("kg·cm² typed for kg·m²? (200 kg·cm² is dynamics.motor.rotor_inertia = 0.02)")
+    # As given, 0.02 kg·m², the rotor runs up in 0.11 s: nothing to ask.
+    assert not [line for line in _warnings(tmp_path, capsys, _press(KLOSS)) if "rotor_inertia" in line]
+
+
+@pytest.mark.parametrize(("inertia", "told"), [(300.0, True), (200.0, False)])
+def test_a_linear_motors_rotor_is_weighed_at_its_stall_torque_and_no_load_speed(tmp_path, capsys, inertia, told):
+    # t = J·ω0/M0 with ω0 = 1500 rpm and M0 = 600 N·m: 78.5 s for 300 kg·m², over the 60 s; 52.4 s for 200, under.
+    seconds = inertia * (1500 * math.pi / 30) / 600.0
+    assert (seconds > 60.0) == told
+    lines = [line for line in _warnings(tmp_path, capsys, _press(LINEAR, rotor_inertia=repr(inertia)))
+             if "rotor_inertia" in line]
+    assert [_run_up(line) == pytest.approx(seconds, rel=1e-3) for line in lines] == ([True] if told else [])
+
+
+def test_a_kloss_motors_power_in_kilowatts_is_left_to_the_stall_not_blamed_on_its_rotor(tmp_path, capsys):
+    # power = 4 for 4 kW: the rotor takes 1000 times its 0.11 s, 114 s, which the kilowatts explain alone.
+    lines = _warnings(tmp_path, capsys, _press(KLOSS, power="4.0"))
+    assert not [line for line in lines if "rotor_inertia" in line]
+    assert sum("kilowatts typed for watts?" in line for line in lines) == 1
