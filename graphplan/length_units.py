@@ -242,15 +242,14 @@ def _times(ratio: float) -> str:
 
 
 def _joints_span(motion: Motion, link: int, named: set[str], start: str) -> tuple[float, str] | None:
-    """The largest distance (m) between two of ``link``'s points that are no named points (its joints, a frame's
-    pivots), with the two, ``start`` first where it is one (``"O–A"``); None for a link with one such point (a
-    slider's block, a yoke)."""
-    names = sorted(name for name in motion.mechanism.fixed_on.get(link, ()) if name not in named and name in
-                   motion.points)
-    where = {name: complex(*motion.point(name).r[0]) for name in names}
-    spans = [(abs(where[a] - where[b]), f"{b}–{a}" if b == start else f"{a}–{b}") for n, a in enumerate(names)
-             for b in names[n + 1:] if abs(where[a] - where[b]) > 0]
-    return max(spans) if spans else None
+    """The span (:meth:`~graphplan.motion.Motion.span`) of ``link``'s points that are no named points (its joints,
+    a frame's pivots), with the two, ``start`` first where it is one (``"O–A"``); None for a link with one such point
+    (a slider's block, a yoke), or whose such points stand at one place."""
+    span = motion.span(link, leaving_out=named)
+    if span is None or not span[0] > 0:
+        return None
+    first, second = span[1].split("–")
+    return span[0], f"{second}–{first}" if second == start else span[1]
 
 
 def _length_of_link(mechanism: Mechanism, link: int, span: float,

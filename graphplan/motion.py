@@ -14,7 +14,7 @@ from __future__ import annotations
 import contextlib
 import math
 import sys
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
 from typing import Any
@@ -168,14 +168,16 @@ class Motion:
         return LinkArrays(*(np.broadcast_to(np.asarray(value, dtype=float), shape)
                             for value in (motion.angle, motion.omega, motion.epsilon)))
 
-    def span(self, link: int | None = None) -> tuple[float, str] | None:
+    def span(self, link: int | None = None, leaving_out: Collection[str] = ()) -> tuple[float, str] | None:
         """The largest distance (m) between two points of ``link`` (the same at every position: the first's), or
         of the whole mechanism at the first position where ``link`` is None, with the two points (``"A–C"``); None
-        for a link with one point (a slider's block).  What a link's mass, inertia or journal is weighed against."""
+        for a link with one point (a slider's block).  What a link's mass, inertia or journal is weighed against;
+        ``leaving_out`` names points not to measure (the scene's named points, for the span of a link's joints)."""
         if link is None:
-            names = sorted(self.points)
+            names = sorted(name for name in self.points if name not in leaving_out)
         else:
-            names = sorted(name for name in self.mechanism.fixed_on.get(link, ()) if name in self.points)
+            names = sorted(name for name in self.mechanism.fixed_on.get(link, ())
+                           if name in self.points and name not in leaving_out)
         where = {name: complex(*self.point(name).r[0]) for name in names}
         spans = [(abs(where[a] - where[b]), f"{a}–{b}") for n, a in enumerate(names) for b in names[n + 1:]
                  if math.isfinite(abs(where[a] - where[b]))]
