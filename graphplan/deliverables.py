@@ -63,7 +63,8 @@ class Drawing:
     shows: tuple[str, ...] = ()
     # A course sheet's force drawings drawn larger than the record, by position number (:func:`larger_polygons`): a
     # position's force sheet and its sheet with friction each give one; a force sheet's own arrows of the groups cut
-    # free, where a reaction was read by hand (:func:`_record_arrows`).
+    # free, and the sheet with friction's polygons and arrows, where a reaction was read by hand
+    # (:func:`_record_drawings`).
     larger_polygons: tuple[tuple[int, SheetPolygons], ...] = ()
 
 
@@ -354,7 +355,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
                 else _force_sheet_layers(analysis, plan, pieces)
             found.append(Drawing(f"forces_{plan.number}", layers,
                                  lever_scale=laid_out.lever_scale if laid_out else None,
-                                 larger_polygons=_record_arrows(analysis, plan)))
+                                 larger_polygons=_record_drawings(analysis, plan)))
             found += _note_parts(f"forces_{plan.number}", layers, pieces, scales)
             rubbing = plan.with_friction
             # The sheet with friction comes with the sheet it repeats: with `lever` its lever with friction on it.
@@ -363,7 +364,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
                 layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                     else _force_sheet_layers(analysis, plan, pieces, True)
                 found.append(Drawing(f"forces_friction_{plan.number}", layers,
-                                     larger_polygons=_record_friction_polygons(analysis, plan)))
+                                     larger_polygons=_record_drawings(analysis, plan, True)))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces, scales)
     return found
 
@@ -441,10 +442,14 @@ def _plan_note_parts(plan, shown: tuple[str, ...], pieces: tuple[str, ...], whol
     return [Drawing(f"plan_{plan.number}-{k}", part) for k, part in enumerate(parts or (), start=1)]
 
 
-def _record_arrows(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons], ...]:
-    """The arrows of the groups cut free that forces_N.svg draws beside its polygons at a μF of their own, where a
-    reaction of ``plan`` was read by hand (:func:`~graphplan.render.forces.free_body_arrows`): readings measured on
-    them are told so (a :class:`SheetPolygons` of no sheet), after the course sheets' drawings, drawn before them."""
+def _record_drawings(analysis: Analysis, plan, with_friction: bool = False) -> tuple[tuple[int, SheetPolygons], ...]:
+    """What hand readings of ``plan``'s reactions may have been measured on besides the polygons they are checked
+    against, where a reaction was read by hand: the arrows of the groups cut free that ``forces_N.svg`` draws
+    beside its polygons at a μF of their own (:func:`~graphplan.render.forces.free_body_arrows`), told so (a
+    :class:`SheetPolygons` of no sheet) after the course sheets' drawings, drawn before them; ``with_friction``,
+    the polygons with friction of ``forces_friction_N.svg`` (at the record's μF where they fit two fields there) and
+    its own arrows, whose readings are the reactions with friction, not those the tables compare with, told so with
+    no ``force_scale`` nor a factor."""
     from .misreadings import SheetPolygons, reads_forces
 
     if not reads_forces(plan):
@@ -452,27 +457,12 @@ def _record_arrows(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons],
     from .render import drawings as draw
     from .render import forces as force_layout
 
-    arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan))
+    arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan, with_friction))
     drawn = {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole}
+    if with_friction:
+        return ((plan.number, SheetPolygons(None, dict(plan.with_friction.group_scales), friction=True,
+                                            arrows=drawn)),)
     return ((plan.number, SheetPolygons(None, {}, arrows=drawn)),) if drawn else ()
-
-
-def _record_friction_polygons(analysis: Analysis, plan) -> tuple[tuple[int, SheetPolygons], ...]:
-    """The polygons with friction that forces_friction_N.svg draws (at the μF of the record's polygons where they fit
-    two fields there), and the arrows of its groups cut free, at a μF of their own
-    (:func:`~graphplan.render.forces.free_body_arrows`), where a reaction of ``plan`` was read by hand: readings
-    measured on either are the reactions with friction, not those the tables compare with, and are told so (a
-    :class:`SheetPolygons` of no sheet, with friction), not advised a ``force_scale`` nor a factor."""
-    from .misreadings import SheetPolygons, reads_forces
-
-    if not reads_forces(plan):
-        return ()
-    from .render import drawings as draw
-    from .render import forces as force_layout
-
-    arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan, True))
-    drawn = {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole}
-    return ((plan.number, SheetPolygons(None, dict(plan.with_friction.group_scales), friction=True, arrows=drawn)),)
 
 
 def _force_sheet_layers(analysis: Analysis, plan, pieces: tuple[str, ...],

@@ -122,11 +122,11 @@ class SheetPolygons:
     polygon drawn at another than the record's; whether it is the force sheet with friction
     (``forces_friction_N.svg``), whose reactions a hand that measured it read; and by each group's label the μF its
     group cut free draws its arrows at there, with the reactions drawn whole at their length: a hand reading a
-    reaction off an arrow reads it as off its polygon, at another μF.  ``sheet`` None is the record itself, its
-    groups cut free in ``forces_N.svg`` (:func:`~graphplan.deliverables._record_arrows`): no polygon of its own
-    drawn larger, its arrows at theirs; or, with ``friction``, its polygons with friction in ``forces_friction_N.svg``
-    (:func:`~graphplan.deliverables._record_friction_polygons`), at their μF, the record's own as a rule, and that
-    sheet's groups cut free's arrows at theirs."""
+    reaction off an arrow reads it as off its polygon, at another μF.  ``sheet`` None is the record itself
+    (:func:`~graphplan.deliverables._record_drawings`): its groups cut free in ``forces_N.svg``, no polygon of its
+    own drawn larger, its arrows at theirs; or, with ``friction``, its polygons with friction in
+    ``forces_friction_N.svg``, at their μF, the record's own as a rule, and that sheet's groups cut free's arrows at
+    theirs."""
 
     sheet: int | None
     scales: Mapping[str, float]
