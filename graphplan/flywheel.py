@@ -583,7 +583,7 @@ def _refuse_driver_mean_speed(driver: Any, path: str, sized: bool) -> None:
     one is, for its delta) or a motor runs a machine about: a crank turned slowly or fast for its plans alone gives
     the flywheel and the run nothing a machine has."""
     key = _driver_speed_key(driver)
-    typed = driver.omega if driver.rpm is None else driver.rpm
+    typed = driver.rpm if key == "rpm" else driver.omega
     _refuse_mean_speed_at(f"{driver.where}.{key}", typed, key == "rpm", abs(driver.omega),
                           f"; {path} gives no rpm or omega of its own and takes the crank's as the machine's mean "
                           f"speed (give {path}.rpm for the machine's own)", sized=sized)

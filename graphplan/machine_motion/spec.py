@@ -58,8 +58,8 @@ LARGEST_MOTOR_TORQUE = 1e8
 # A motor's rotor inertia (kg·m²): a small induction motor's some 0.001–0.02 (the flywheel starter's 4 kW one
 # 0.02), a megawatt one's some tens, the heaviest rotors run as motors, a pumped-storage plant's motor-generators,
 # some 1e7.  No least one is asked: 0 leaves the rotor out, and one far lighter is as harmless.  A servo catalogue's
-# kg·cm² typed for kg·m² (10 000 times too heavy) is within these: only the time the motor takes to run its own rotor
-# up, J·ω/M, would tell it, and that blames the rotor for a power typed in kilowatts as well.
+# kg·cm² typed for kg·m² (10 000 times too heavy) is within these: the time the motor takes to run its own rotor up,
+# J·ω/M, tells it, and flywheel.rotor_inertia_warning asks of it by that, not refused here.
 LARGEST_ROTOR_INERTIA = 1e8
 
 
