@@ -51,11 +51,12 @@ from .rotor_lengths import (
     LARGEST_RADIUS_M,
     LONGEST_ROTOR_M,
     MIXED_RATIO,
-    ROTOR_REACH,
     THINNEST_DISC,
     Implausible,
     LengthsInMillimetres,
+    bounding_cylinder,
     heaviest_rotor,
+    rotor_length,
 )
 from .table_keys import keys_of_other_tables
 
@@ -812,12 +813,12 @@ class MassesInGrams:
     @property
     def length(self) -> float:
         """The rotor's length the cylinder is twice as long as: its span, or a disc's radius where that is longer, m."""
-        return max(self.span, self.radius)
+        return rotor_length(self.radius, self.span)
 
     @property
     def cylinder(self) -> tuple[float, float]:
-        """The steel cylinder's radius and length, m: :data:`~graphplan.rotor_lengths.ROTOR_REACH` times the rotor's."""
-        return ROTOR_REACH * self.radius, ROTOR_REACH * self.length
+        """The steel cylinder's radius and length, m (:func:`~graphplan.rotor_lengths.bounding_cylinder`)."""
+        return bounding_cylinder(self.radius, self.span)
 
     @property
     def limit(self) -> float:

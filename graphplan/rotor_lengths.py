@@ -83,11 +83,22 @@ def lightest_rotor(eccentricity: float) -> float:
     return LIGHTEST_AT_ONE_METRE * eccentricity ** LIGHTNESS_EXPONENT
 
 
+def rotor_length(radius: float, span: float) -> float:
+    """The length (m) a rotor turning within ``radius`` of its axis, its masses and planes ``span`` apart along it, is
+    weighed by: its span, or a disc's radius where the span is shorter."""
+    return max(span, radius)
+
+
+def bounding_cylinder(radius: float, span: float) -> tuple[float, float]:
+    """The radius and length (m) of the cylinder no such rotor's masses outweigh as solid steel: :data:`ROTOR_REACH`
+    times its radius and :data:`ROTOR_REACH` times its :func:`rotor_length`."""
+    return ROTOR_REACH * radius, ROTOR_REACH * rotor_length(radius, span)
+
+
 def heaviest_rotor(radius: float, span: float) -> float:
     """The most (kg) the masses of a rotor weigh together that turn within ``radius`` (m) of its axis, its masses and
-    planes ``span`` (m) apart along it: solid steel filling a cylinder :data:`ROTOR_REACH` times that radius, and
-    :data:`ROTOR_REACH` times the span long, or the radius where the span is shorter (a disc), ρ·π·(2R)²·2·max(L, R)."""
-    return solid_steel_cylinder(ROTOR_REACH * radius, ROTOR_REACH * max(span, radius))
+    planes ``span`` (m) apart along it: solid steel filling its :func:`bounding_cylinder`, ρ·π·(2R)²·2·max(L, R)."""
+    return solid_steel_cylinder(*bounding_cylinder(radius, span))
 
 
 @dataclass(frozen=True)
@@ -177,4 +188,4 @@ class LengthsInMillimetres:
 __all__ = ["FASTEST_BASE_M_S", "FLATTEST_ROTOR", "LARGEST_RADIUS_M", "LARGEST_SECOND_MOMENT_M4",
            "LIGHTEST_AT_ONE_METRE", "LIGHTNESS_EXPONENT", "LONGEST_ROTOR_M", "MIXED_RATIO", "ROTOR_REACH",
            "SOME_IN_MILLIMETRES", "THICKEST_SHAFT_M", "THINNEST_DISC", "Implausible",
-           "LengthsInMillimetres", "heaviest_rotor", "lightest_rotor"]
+           "LengthsInMillimetres", "bounding_cylinder", "heaviest_rotor", "lightest_rotor", "rotor_length"]
