@@ -10,31 +10,20 @@ The μF are read off the captions of the SVGs, the arrows drawn whole off its el
 reading), and each reading is the reaction with friction of results.json over its arrows' μF.
 """
 
-import dataclasses
 import json
 import math
 import re
 
 import pytest
 from drawn_lines import arrow_length, caption_text
+from test_misread_record_friction_polygons import NUMBER, _far_off, _scene
 
 from graphplan.run import run
-from graphplan.scene import loads
-from graphplan.starters import starter
 
-NUMBER = 10
 # Group II(3,4) cut free draws R23 and R14 whole, the crank R12 (and R32, R23 again, which a scene reads once); group
 # II(5,6) draws R45 in components, and its R16 is moved by under 1 % by the friction: it tells nothing apart.
 ARROW_OF = {"R23": "II-3-4", "R14": "II-3-4", "R12": "I-1-2"}
 LABEL = {"II-3-4": "II(3,4)", "I-1-2": "I(1,2)"}
-
-
-def _scene(readings=None, locale="en"):
-    text = starter("shaper")
-    assert "f     = 0.1\n" in text  # the ram's slide
-    scene = loads(text.replace("f     = 0.1\n", "f     = 0.3\n"))
-    measured = {NUMBER: {"forces": readings}} if readings else {}
-    return dataclasses.replace(scene, measured=measured, locale=locale)
 
 
 @pytest.fixture(scope="module")
@@ -69,10 +58,6 @@ def _readings(svgs, exact):
 
 def _listed(scales):
     return ", ".join(f"{LABEL[group]} {scales[group]:g}" for group in ("II-3-4", "I-1-2"))
-
-
-def _far_off(warnings):
-    return [line for line in warnings if f"measured.{NUMBER}:" in line]
 
 
 def test_the_arrows_with_friction_are_drawn_at_another_uf_and_length_than_the_others(drawn):

@@ -15,6 +15,7 @@ import json
 import re
 
 import pytest
+from drawn_lines import caption_text
 
 from graphplan.analysis import analyse
 from graphplan.run import run
@@ -54,9 +55,8 @@ def scales(tmp_path_factory):
         svg = (folder / f"{stem}.svg").read_text(encoding="utf-8")
         found[stem] = {}
         for group in set(POLYGON_OF.values()):
-            caption = re.search(f'id="polygon-{group}-caption">(.*?)</g>', svg).group(1)
-            text = " ".join(re.findall(r">([^<]*)</text>", caption))
-            found[stem][group] = float(re.search(r"μF = ([0-9.]+) N/mm", text).group(1))
+            caption = caption_text(svg, f"polygon-{group}")
+            found[stem][group] = float(re.search(r"μF = ([0-9.]+) N/mm", caption).group(1))
     return found[f"forces_friction_{NUMBER}"], found[f"forces_{NUMBER}"]
 
 
