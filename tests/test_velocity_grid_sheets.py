@@ -6,6 +6,11 @@ stood alone and small on the first.  The grid's rows now go on each sheet
 as long as its room holds, beside the drawings already there.  What fits is
 worked out here from the sheet as drawn (its frame, its title block, the
 plans' boxes read from the SVG), not from the packing.
+
+In Russian the first sheet again held the plan of positions alone: set under
+ESKD's графа 26 in the frame's top left corner, it left no room under it for
+the grid's first run, whose heading is wider in Russian than the strip beside
+the title block; beside графа 26 it leaves a row of plans, as in English.
 """
 
 from __future__ import annotations
@@ -26,6 +31,7 @@ from graphplan.render.sheet import course_sheets
 from graphplan.scene import loads
 
 WATT_II = watt_ii(every_velocity_plan=True, sheet="A3")
+TITLE_LINE = 'title = "Watt II six-bar linkage"\n'
 
 SVG = "{http://www.w3.org/2000/svg}"
 Box = tuple[float, float, float, float]  # x0, y0, x1, y1 in the SVG's millimetres, y down
@@ -76,6 +82,8 @@ class _Sheet:
                      if path.get("stroke") == "black" and path.get("d", "").endswith("Z"))
         self.frame = frame
         self.block = _group_box(groups["title-block"])
+        # ESKD's графа 26, which drawings keep clear of as of the title block.
+        self.corner = _group_box(groups["sheet-designation"]) if "sheet-designation" in groups else None
         self.area = (frame[0] + PADDING_MM, frame[1] + PADDING_MM, frame[2] - PADDING_MM, frame[3] - PADDING_MM)
         drawings: dict[str, list[Box]] = {}
         for name, group in groups.items():
@@ -104,16 +112,22 @@ def _room_for(sheet: _Sheet, size: tuple[float, float]) -> str | None:
     """Where a plan of ``size`` (width, height with its caption) would still go on ``sheet`` after the grid's last
     plan there: as a new row under all the sheet's drawings, or at the end of the last row; None where nowhere.
 
-    The drawings are taken up to the area's top left corner first (the sheet sets them in its middle)."""
+    The drawings are taken up to the area's top left corner first (the sheet sets them in its middle), no higher
+    than the room kept under a corner box (графа 26) lets those under it go."""
     ax0, ay0, _, _ = sheet.area
     content = _union(list(sheet.drawings.values()))
     dx, dy = ax0 - content[0], ay0 - content[1]
+    corner = None if sheet.corner is None else _grown(sheet.corner, PADDING_MM)
+    if corner is not None:
+        dy = max([dy, *(corner[3] - b[1] for b in sheet.drawings.values() if b[0] + dx < corner[2])])
     boxes = {name: (b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy) for name, b in sheet.drawings.items()}
     block_top, block_left = sheet.block[1] - PADDING_MM, sheet.block[0] - PADDING_MM
     width, height = size
 
     def clear(rect: Box) -> bool:
         if not _in(rect, sheet.area) or (rect[3] > block_top and rect[2] > block_left):
+            return False
+        if corner is not None and _overlap(rect, corner):
             return False
         return not any(_overlap(rect, (b[0] - GAP_MM, b[1] - GAP_MM, b[2] + GAP_MM, b[3] + GAP_MM))
                        for b in boxes.values())
@@ -129,9 +143,17 @@ def _room_for(sheet: _Sheet, size: tuple[float, float]) -> str | None:
     return None
 
 
-@pytest.fixture(scope="module")
-def sheets() -> list[_Sheet]:
-    return [_Sheet(page.svg()) for page in course_sheets(analyse(loads(WATT_II)), "A3")]
+def _grown(b: Box, by: float) -> Box:
+    return b[0] - by, b[1] - by, b[2] + by, b[3] + by
+
+
+# Russian sheets (ESKD) have графа 26 in the frame's corner and a taller title block; Chinese ones (GB/T) are ISO's
+# shape with other margins.
+@pytest.fixture(scope="module", params=["en", "ru", "zh"])
+def sheets(request) -> list[_Sheet]:
+    scene = WATT_II.replace(TITLE_LINE, f'{TITLE_LINE}locale = "{request.param}"\n', 1)
+    assert f'locale = "{request.param}"' in scene
+    return [_Sheet(page.svg()) for page in course_sheets(analyse(loads(scene)), "A3")]
 
 
 def test_each_sheet_of_the_grid_holds_as_many_plans_as_its_room_does(sheets):
@@ -152,5 +174,7 @@ def test_no_two_drawings_overlap_and_no_text_leaves_the_frame_or_runs_over_the_t
             assert not _overlap(a, b), (k + 1, one, other)
         for name, b in sheet.drawings.items():
             assert _in(b, sheet.frame) and not _overlap(b, sheet.block), (k + 1, name)
+            assert sheet.corner is None or not _overlap(b, sheet.corner), (k + 1, name)
         for text, b in sheet.texts:
             assert _in(b, sheet.frame) and not _overlap(b, sheet.block), (k + 1, text)
+            assert sheet.corner is None or not _overlap(b, sheet.corner), (k + 1, text)

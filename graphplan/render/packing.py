@@ -428,20 +428,24 @@ def _flowed(pages: list[Page], earliest: int, panel: Panel, sheet: str, form: st
                 continue
             else:
                 page = pages[k]
-            stop = _longest_run(page, panel, start, previous)
-            if stop is not None:
+            found = _longest_run(page, panel, start, previous)
+            if found is not None:
                 break
             if k == len(pages):
                 raise _too_big(first, sheet, form, turns, panel.label)
+        stop, page = found
         if k == len(pages):
             pages.append(page)
+        else:
+            pages[k] = page
         previous, start, at = page.placed[-1][0].name, stop, k
     return at
 
 
-def _longest_run(page: Page, panel: Panel, start: int, previous: str) -> int | None:
-    """Where the longest run of ``panel``'s items from ``start`` that ``page`` holds ends (placed there), going on
-    from the run named ``previous``; None where not even one item fits."""
+def _longest_run(page: Page, panel: Panel, start: int, previous: str) -> tuple[int, Page] | None:
+    """Where the longest run of ``panel``'s items from ``start`` that ``page`` holds ends, going on from the run
+    named ``previous``, and the page with it placed: ``page`` itself, or where only that makes room for the run,
+    ``page`` laid out afresh (:func:`_rearranged`); None where not even one item fits either way."""
     assert panel.runs is not None
     # The longest run an empty sheet holds, counted up from one: a long sequence (48 plans) is not drawn whole to
     # find that a sheet holds ten.
@@ -454,8 +458,17 @@ def _longest_run(page: Page, panel: Panel, start: int, previous: str) -> int | N
         longest += 1
     for stop in range(longest, start, -1):
         ways = tuple(replace(way, in_rows=True, alternatives=(), continues=previous) for way in runs[stop].ways)
-        if page.place(replace(ways[0], alternatives=ways[1:])):
-            return stop
+        run = replace(ways[0], alternatives=ways[1:])
+        if page.place(run):
+            return stop, page
+        # The drawings already there set otherwise: an ESKD sheet's plan of positions put under графа 26 left a
+        # run of the grid, its heading wider in Russian, no room under it or beside the title block, where beside
+        # графа 26 it left a row of three plans under it.  Not the runs before it: set afresh they stood beside the
+        # plan of positions, the next one under it, out of the order of the rows.
+        fresh = _rearranged(page, run) if page.drawings and not any(
+            _kind(drawing) == _kind(run) for drawing in page.drawings) else None
+        if fresh is not None:
+            return stop, fresh
     return None
 
 
