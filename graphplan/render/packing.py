@@ -336,6 +336,10 @@ def pack(panels: Sequence[Panel], sheet: str, form: str) -> list[Page]:
     it upright only where it opens with a drawing too tall for it across.
     """
     check_sheet(sheet)
+    if not panels:
+        # No sheets, as every format gives: an A4's choice between its turns asked the first sheet of none (a scene
+        # without forces, whose force sheets are none, failed `run --sheet A4`).
+        return []
     if not any(panel.runs is not None for panel in panels):
         return _packed(panels, sheet, form)
     # A sequence taken in runs fills each sheet, but each run that opens a sheet stands under its heading, which
