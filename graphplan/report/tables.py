@@ -106,8 +106,9 @@ def slip_lines(analysis: Analysis, plan: VelocityPosition, mark: str = ".", in_n
     if found is None:
         return nearer
     text = strings(analysis.scene.locale)
-    # Readings found on the record's polygons with friction are told that once, with the drawing and its μF.
-    on_friction = found.on_sheet is not None and found.on_sheet.sheet is None and found.on_sheet.friction
+    # Readings found on a drawing with friction (the record's or a course sheet's) are told that once, with the
+    # drawing and its μF: "nearer the polygons with friction" would say it again.
+    on_friction = found.on_sheet is not None and found.on_sheet.friction
     lines = [] if on_friction else nearer
     drawn = (*analysis.plans, *analysis.velocity_plans)
     if found.on_sheet is not None:
