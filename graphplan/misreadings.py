@@ -180,6 +180,12 @@ class OnSheet:
         return ", ".join(f"{value:.4g} ({label})".replace(".", mark) for label, value in values.items())
 
     @property
+    def same_scales(self) -> bool:
+        """Whether the drawing the readings fit is at the μF of the polygons they are checked against, polygon by
+        polygon (a drawing with friction, the record's as a rule): those μF are then said once."""
+        return self.scales(0) == self.scales(1)
+
+    @property
     def kind(self) -> str:
         """The locale's key of what the readings fit (``sheet_drawn_arrows_friction``)."""
         return f"sheet_drawn_{self.drawing}" + ("_friction" if self.friction else "")
@@ -789,8 +795,11 @@ def on_sheet_detail(found: OnSheet, number: int) -> str:
         # compare with: no factor turns them into the polygons without friction's, on a course sheet or off it.
         within = (f"taken at it, every reading is within {found.off * 100.0:.1f} % of the reactions with friction as "
                   f"constructed")
-        checked = (f"at μF = {found.scales(1)} N/mm), whose reactions they are checked against: readings of the "
-                   f"reactions with friction, off the")
+        english = strings("en")
+        record_at = (english["record_at_same_scale"] if found.same_scales
+                     else english["record_at_scale"].format(scale=found.scales(1)))
+        checked = (f"{record_at}), whose reactions they are checked against: readings of the reactions with friction, "
+                   f"off the")
         if found.sheet is not None:
             return (f"every reading of {what} fits {drawn_as} on the course sheet (sheet_{found.sheet}.svg, at μF = "
                     f"{found.scales(0)} N/mm; {within}), which draws them larger where it has room, not the polygons "

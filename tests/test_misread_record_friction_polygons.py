@@ -80,11 +80,14 @@ def test_the_friction_moves_the_reactions_beyond_the_bound_of_a_misreading():
 
 def test_readings_of_the_polygons_with_friction_are_told_that_drawing(tmp_path, scales):
     friction, plain = scales
+    # Both sheets draw every polygon at one μF: it is listed once, the polygons without friction "at the same μF".
+    assert friction == plain
     done = run(_scene(_readings(friction)), tmp_path, only=["forces", "errors", "note"])
     (warning,) = _far_off(done.warnings)
     assert (f"every reading of the force polygons fits the polygons with friction of position {NUMBER} in "
             f"forces_friction_{NUMBER}.svg at μF = {_listed(friction)} N/mm") in warning, warning
-    assert f"not the polygons without friction of forces_{NUMBER}.svg (at μF = {_listed(plain)} N/mm)" in warning
+    assert f"not the polygons without friction of forces_{NUMBER}.svg (at the same μF)" in warning
+    assert warning.count(_listed(friction)) == 1
     assert f"measure the polygons of forces_{NUMBER}.svg" in warning
     assert "force_scale" not in warning and "times" not in warning and "misread" not in warning
     results = json.loads((tmp_path / "results.json").read_text(encoding="utf-8"))
@@ -93,23 +96,26 @@ def test_readings_of_the_polygons_with_friction_are_told_that_drawing(tmp_path, 
     errors = (tmp_path / "errors.md").read_text(encoding="utf-8")
     (line,) = [line for line in errors.splitlines() if "polygons with friction of position" in line]
     assert f"forces_friction_{NUMBER}.svg at μF = {_listed(friction)} N/mm" in line
+    assert f"forces_{NUMBER}.svg (at the same μF)" in line and line.count(_listed(friction)) == 1
     assert f"Measure the polygons of forces_{NUMBER}.svg." in line
     assert "force_scale" not in errors and "stands nearer the polygons with friction" not in errors
     (said,) = [line for line in (tmp_path / "note.md").read_text(encoding="utf-8").splitlines()
                if "as the force analysis with friction draws them" in line]
     assert f"μF = {_listed(friction)} N/mm" in said and ".svg" not in said
+    assert "without friction (at the same μF)" in said and said.count(_listed(friction)) == 1
 
 
 def test_every_locale_tells_the_polygons_with_friction_in_its_words(tmp_path, scales):
     friction, _ = scales
-    for locale, words in (("ru", "многоугольниками положения 10 с учётом трения"),
-                          ("zh", "第 10 位置计摩擦的力多边形")):
+    for locale, words, words_same in (("ru", "многоугольниками положения 10 с учётом трения", "(в том же масштабе)"),
+                                      ("zh", "第 10 位置计摩擦的力多边形", "（比例尺相同）")):
         folder = tmp_path / locale
         run(_scene(_readings(friction), locale), folder, only=["forces", "errors"])
         errors = (folder / "errors.md").read_text(encoding="utf-8")
         line = next(line for line in errors.splitlines() if words in line)
         assert f"forces_friction_{NUMBER}.svg" in line and f"forces_{NUMBER}.svg" in line
-        assert f"II(3,4) {friction['II-3-4']:g}" in line and "force_scale" not in errors
+        assert line.count(f"II(3,4) {friction['II-3-4']:g}") == 1 and "force_scale" not in errors
+        assert words_same in line
 
 
 def test_readings_of_the_polygons_without_friction_are_told_as_before(tmp_path, scales):

@@ -229,7 +229,11 @@ def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str,
     which = "sheet" if found.sheet is not None else "record"
     if found.friction:
         which += "_friction" + ("_arrows" if found.sheet is None and found.drawing == "arrows" else "")
-    return text[f"note_on_{which}" if in_note else f"errors_on_{which}"].format(
+    # A drawing with friction at the μF of the polygons the readings are checked against (the record's, as a rule)
+    # has its μF said once.
+    record_at = (text["record_at_same_scale"] if found.same_scales
+                 else text["record_at_scale"].format(scale=found.scales(1, mark)))
+    return text[f"note_on_{which}" if in_note else f"errors_on_{which}"].format(record_at=record_at,
         polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet,
         drawn=found.scales(0, mark),
         record=found.scales(1, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), factor=found.factor(mark),
