@@ -163,6 +163,10 @@ class OnSheet:
     drawing: str = "polygons"
     friction: bool = False
     readings: frozenset[str] = frozenset()
+    # Where a polygon's readings fit a drawing with friction only in part, the others the polygon without friction
+    # they are checked against (one reaction measured on the wrong drawing): every reading that fits it, in the scene's
+    # order, each named, as "every reading of the polygon" is not.  Empty where whole polygons fit.
+    named: tuple[str, ...] = ()
 
     def scales(self, which: int, mark: str = ".") -> str:
         """The sheet's μF (``which`` 0) or the record's (1): ``4``, or ``II(3,4) 4, I(1,2) 10`` where they differ."""
@@ -318,7 +322,9 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
     By polygon label, two readings or more fit as :func:`_one_scale` has readings fit one scale (each within
     :data:`FAR_OFF_PERCENT` of it, the scale they agree at within 5 % of the sheet's, as :func:`on_grid` has a
     small plan's); one alone as a reading at another standard μF is told (within the drafting ``precision`` and 2 %
-    of the reaction's length on the sheet).  None where the run drew no sheet so or no readings fit it."""
+    of the reaction's length on the sheet).  On a drawing with friction, a polygon's readings that fit it one by one
+    where the polygon's others are near the polygon without friction fit it too, each named
+    (:func:`_partly_with_friction`).  None where the run drew no sheet so or no readings fit it."""
     reactions = [(row, plan) for row, plan in measured if _plan_of(row) == "forces"]
     rubbing = getattr(position, "with_friction", None)
     best = None
@@ -334,7 +340,7 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
             for row, value in values:
                 if whole is None or _name(row.reading) in whole.get(row.polygon, ()):
                     by_polygon.setdefault(row.polygon, []).append((row, value))
-            fitting = {}
+            fitting, partly = {}, {}
             for label, rows in by_polygon.items():
                 at, record = scales.get(label), rows[0][0].per_millimetre
                 # The record's arrows at 1 N/mm are the forces' values in N: readings that fit them are told typed as
@@ -342,19 +348,43 @@ def _on_sheet(position: VelocityPosition, measured: list[tuple[ErrorRow, float]]
                 if sheet.sheet is None and at is not None and in_units(at):
                     continue
                 # The polygons with friction find other reactions: at the record's μF too they are another drawing.
-                if (at is not None and record and (sheet.friction or not math.isclose(at, record))
-                        and _fit_at(rows, at, record, precision, plain)):
+                if at is None or not record or (not sheet.friction and math.isclose(at, record)):
+                    continue
+                if _fit_at(rows, at, record, precision, plain):
                     fitting[label] = (at, record)
-            read = [(row, value) for label in fitting for row, value in by_polygon[label]]
+                elif sheet.friction:
+                    some = _partly_with_friction(rows, at, precision, far, reactions)
+                    if some:
+                        fitting[label], partly[label] = (at, record), some
+            read = [(row, value) for label in fitting for row, value in partly.get(label, by_polygon[label])]
             if not any(row is each for row, _ in read for each, _ in far):
                 continue
             off = max((abs(row.plan * fitting[row.polygon][0] / row.per_millimetre - value) / abs(value)
                        for row, value in read if value), default=0.0)
             found = OnSheet(sheet.sheet, MappingProxyType(fitting), len(read) == len(reactions), off, drawing,
-                            sheet.friction, frozenset(row.reading for row, _ in read))
+                            sheet.friction, frozenset(row.reading for row, _ in read),
+                            tuple(dict.fromkeys(row.reading for row, _ in read)) if partly else ())
             if best is None or (len(found.readings), -found.off) > (len(best.readings), -best.off):
                 best = found
     return best
+
+
+def _partly_with_friction(rows: list[tuple[ErrorRow, float]], at: float, precision: float,
+                          far: list[tuple[ErrorRow, float]],
+                          reactions: list[tuple[ErrorRow, float]]) -> list[tuple[ErrorRow, float]]:
+    """Of one polygon's readings ``rows`` (each with its reaction with friction), those that fit a drawing with
+    friction at ``at`` one by one (as one reading alone fits, :func:`_fit_at`), far off the polygon without friction,
+    where every other reading of the polygon among ``reactions`` is near that polygon: one reaction measured on the
+    drawing with friction, the others on the polygon they are checked against.  Empty where the readings are not so
+    (some reading far off both), or where all fit it."""
+    far_off = {row.reading for row, _ in far}
+    fitting = [(row, value) for row, value in rows
+               if row.reading in far_off and _fit_at([(row, value)], at, row.per_millimetre, precision, {})]
+    named = {row.reading for row, _ in fitting}
+    polygon = {row.reading for row, _ in reactions if row.polygon == rows[0][0].polygon}
+    if not named or named == polygon or any(reading in far_off for reading in polygon - named):
+        return []
+    return fitting
 
 
 def _fit_at(rows: list[tuple[ErrorRow, float]], at: float, record: float, precision: float,
@@ -800,6 +830,16 @@ def on_sheet_detail(found: OnSheet, number: int) -> str:
                      else english["record_at_scale"].format(scale=found.scales(1)))
         checked = (f"{record_at}), whose reactions they are checked against: readings of the reactions with friction, "
                    f"off the")
+        if found.named:
+            # Some readings of a polygon off the drawing with friction, the others where they should be: those named.
+            where = (f"on the course sheet (sheet_{found.sheet}.svg)" if found.sheet is not None
+                     else f"in forces_friction_{number}.svg")
+            readings = ", ".join(reading.split(" at μF")[0] for reading in found.named)
+            return (f"readings of {what} that fit {drawn_as} {where} at μF = {found.scales(0)} N/mm (taken at it, each "
+                    f"is within {found.off * 100.0:.1f} % of its reaction with friction as constructed), where the "
+                    f"other readings fit the polygons without friction of forces_{number}.svg ({record_at}), which "
+                    f"they are all checked against: {readings}; readings of the reactions with friction, off the "
+                    f"drawing with friction? measure these on the polygons of forces_{number}.svg")
         if found.sheet is not None:
             return (f"every reading of {what} fits {drawn_as} on the course sheet (sheet_{found.sheet}.svg, at μF = "
                     f"{found.scales(0)} N/mm; {within}), which draws them larger where it has room, not the polygons "

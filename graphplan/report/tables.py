@@ -233,9 +233,19 @@ def _on_sheet_line(found: OnSheet, number: int, text: dict[str, str], mark: str,
     # has its μF said once.
     record_at = (text["record_at_same_scale"] if found.same_scales
                  else text["record_at_scale"].format(scale=found.scales(1, mark)))
-    return text[f"note_on_{which}" if in_note else f"errors_on_{which}"].format(record_at=record_at,
+    prefix = "note" if in_note else "errors"
+    if found.named:
+        # Some readings of a polygon off the drawing with friction, the others where they should be: those named.
+        where = text[f"{prefix}_where_{'sheet' if found.sheet is not None else 'record_friction'}"].format(
+            sheet=found.sheet, sheet_file=f"sheet_{found.sheet}.svg", friction_file=f"forces_friction_{number}.svg")
+        return text[f"{prefix}_on_friction_some"].format(
+            polygons=polygons, drawn_as=text[found.kind].format(number=number), where=where,
+            drawn=found.scales(0, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), record_at=record_at,
+            forces_file=f"forces_{number}.svg",
+            readings=text["comma"].join(_written(each, text, mark) for each in found.named))
+    return text[f"{prefix}_on_{which}"].format(
         polygons=polygons, drawn_as=text[found.kind].format(number=number), sheet=found.sheet,
-        drawn=found.scales(0, mark),
+        drawn=found.scales(0, mark), record_at=record_at,
         record=found.scales(1, mark), off=f"{found.off * 100.0:.1f}".replace(".", mark), factor=found.factor(mark),
         sheet_file=f"sheet_{found.sheet}.svg", forces_file=f"forces_{number}.svg",
         friction_file=f"forces_friction_{number}.svg")
