@@ -32,7 +32,7 @@ from .kinematics import at
 from .length_units import lengths_in_millimetres
 from .lever import Lever, lever
 from .load_strokes import diagrams_in_travel, resisting_forces_turning, strokes_of_other_links
-from .loads import activity, has_loads, link_loads, motion_state, plan_state
+from .loads import activity, has_loads, link_loads, motion_state, plan_state, refuse_lines_without_length
 from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
@@ -188,6 +188,9 @@ def analyse(scene: Scene) -> Analysis:
     with reach_hint(mechanism):
         paths = solve(mechanism, sweep, positions.reference, tolerant=True)
     stepped_over = toggles_between(motion, positions.numbers, positions.reference, paths)
+    # A force along a point that meets its own point has no line there: told at the position, else in the sweep.
+    refuse_lines_without_length(mechanism, motion, positions.numbers)
+    refuse_lines_without_length(mechanism, paths)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
     # Checked with no force analysis too, which leaves the friction out (check says why): a pair it names wrongly
     # is refused all the same, not only once masses are given.

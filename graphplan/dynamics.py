@@ -613,9 +613,12 @@ def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarra
 
 
 def _line(load) -> tuple:
-    """What makes loads one force: its kind, link, point and direction (a moment: its kind and link)."""
+    """What makes loads one force: its kind, link, point and direction, or the point its line runs to (a moment: its
+    kind and link)."""
     if load.kind == "moment":
         return load.kind, load.link
+    if load.along is not None:   # a line that turns is the one through the point it is along
+        return load.kind, load.link, load.point, "along", load.along
     return load.kind, load.link, load.point, round((load.angle_deg or 0.0) % 360.0, 9) % 360.0
 
 

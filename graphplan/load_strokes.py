@@ -124,11 +124,15 @@ def resisting_forces_turning(mechanism: Mechanism, positions: PositionSet,
         along = [number for number, each in senses if each < 0]
         against = [number for number, each in senses if each > 0]
         if along and against:
-            turned = (load.angle_deg + 180.0) % 360.0
+            if load.along is not None:
+                # Its line turns: the sense is told as toward or away from the point it runs to.
+                away, toward = f"away from {load.along}", f"toward {load.along}"
+            else:
+                away, toward = f"at {load.angle_deg:g}°", f"to {(load.angle_deg + 180.0) % 360.0:g}°"
             told.append(PositionWarning(0, "resisting-turns-round", (
                 f"{load.where} ({name}) resists {load.point}'s motion along its line, and within its window "
-                f"{load.point} moves both ways along it: {name} acts at {load.angle_deg:g}° at positions "
-                f"{_numbers(along)} and turns round to {turned:g}° at positions {_numbers(against)}; a load of "
+                f"{load.point} moves both ways along it: {name} acts {away} at positions "
+                f"{_numbers(along)} and turns round {toward} at positions {_numbers(against)}; a load of "
                 f"one direction whatever the motion (a weight lifted) is resisting = false")))
     return tuple(told)
 

@@ -15,12 +15,14 @@ the centre of mass, the inertia moment ``Mu = −J·ε`` on the link; weight is
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
 
+from .errors import SceneError
 from .forces import Load
 from .kinematics import PointMotion, Scalar, Vector, at, dot, unit
 from .mechanism import Mechanism
@@ -388,7 +390,7 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             value = -abs(load.value) * resisted_sense(load, state) if load.resisting else load.value
             found.append(Load(name, load.link, None, 0j, on * value))
         else:
-            direction = unit(np.radians(load.angle_deg))
+            direction = line_of_action(load, state)
             force = load.value * direction
             if load.resisting:
                 force = -abs(load.value) * direction * resisted_sense(load, state)
@@ -404,9 +406,61 @@ def resisted_sense(load, state: State) -> Scalar:
     if load.kind == "moment":
         turning = state.links[load.link]
         return sense_of_motion(turning.omega, turning.epsilon, state.turning_scale, state.turning_rate_scale)
-    direction, point = unit(np.radians(load.angle_deg)), state.points[load.point]
-    return sense_of_motion(dot(direction, point.v), dot(direction, point.a), state.moving_scale,
-                           state.moving_rate_scale)
+    direction, point = line_of_action(load, state), state.points[load.point]
+    rate = dot(direction, point.a)
+    if load.along is not None:
+        # The line turns: d(v·e)/dt = a·e + v·ė, ė = (ḋ − e·(e·ḋ))/|d| with d from the far end to the point.
+        far = state.points[load.along]
+        reach, closing = point.r - far.r, point.v - far.v
+        length = np.abs(reach)
+        turning = (closing - direction * dot(direction, closing)) / np.where(length > 0, length, 1.0)
+        rate = rate + dot(point.v, turning)
+    return sense_of_motion(dot(direction, point.v), rate, state.moving_scale, state.moving_rate_scale)
+
+
+def line_of_action(load: LoadSpec, state: State) -> Vector:
+    """The unit vector of a force's line in its positive sense: at its fixed angle, or (``along``) from the point
+    it acts along to its own point, a line that turns as the mechanism moves (a cylinder or a spring pinned there).
+
+    Where the two points meet there is no line, and no force: an analysed position where they do is refused
+    (:func:`refuse_lines_without_length`), but a sweep between positions may pass one.
+    """
+    if load.along is None:
+        return unit(np.radians(load.angle_deg))
+    reach = state.points[load.point].r - state.points[load.along].r
+    length = np.abs(reach)
+    direction = np.where(length > 0, reach / np.where(length > 0, length, 1.0), 0j)
+    return complex(direction) if np.ndim(direction) == 0 else direction
+
+
+# Two points this near (against the farthest they come apart) meet: the line between them has no direction.
+_MEET = 1e-9
+
+
+def refuse_lines_without_length(mechanism: Mechanism, motion: Motion, numbers: np.ndarray | None = None) -> None:
+    """Refuse a force ``along`` a point that meets its own point somewhere in ``motion``: the line it acts along is
+    then no line.  ``numbers`` names ``motion``'s positions; without them (a sweep) the driver's value is named."""
+    for load in mechanism.scene.loads:
+        if load.along is None:
+            continue
+        reach = np.abs(np.asarray(motion.points[load.point].r - motion.points[load.along].r))
+        apart = reach[np.isfinite(reach)]
+        if not apart.size:
+            continue
+        met = np.flatnonzero(reach <= _MEET * max(float(np.max(apart)), 1e-300))
+        if not met.size:
+            continue
+        index = int(met[0])
+        if numbers is not None:
+            at = f"at position {int(numbers[index])}"
+        elif mechanism.driver.cyclic:
+            at = f"at the crank's {math.degrees(float(motion.driver[index])) % 360.0:.4g}°"
+        else:
+            at = f"at the slider's {float(motion.driver[index]):.6g} m"
+        where = complex(np.ravel(motion.points[load.point].r)[index])
+        raise SceneError(f"{load.where}.along", f"{load.along} meets {load.point} {at}, at ({where.real:.6g}, "
+                         f"{where.imag:.6g}) m, where there is no line between them for the force to act along: "
+                         f"name a point that stays clear of {load.point}, or give the force an angle", load.along)
 
 
 def sense_of_motion(speed: Scalar, rate: Scalar, scale: float, rate_scale: float = 0.0) -> Scalar:
@@ -449,5 +503,6 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
 
 
 __all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "external_names",
-           "has_loads", "link_loads", "load_at", "motion_state", "plan_state", "power", "resisted_sense",
-           "sense_of_motion", "stroke_ends", "stroke_share", "stroke_travel", "with_switches"]
+           "has_loads", "line_of_action", "link_loads", "load_at", "motion_state", "plan_state", "power",
+           "refuse_lines_without_length", "resisted_sense", "sense_of_motion", "stroke_ends", "stroke_share",
+           "stroke_travel", "with_switches"]

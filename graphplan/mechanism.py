@@ -19,7 +19,7 @@ from .errors import SceneError, as_written
 from .groups import Driver, Group, Guide
 from .groups.sliding import guide_link
 from .lookalikes import construction_letter_clash, contrast, difference, lookalike_hint, plain, plan_letter, twin
-from .reader import join_path
+from .reader import join_path, suggestion
 from .scene import PointSpec, Scene, not_a_scene
 
 _ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -527,7 +527,8 @@ def _refuse_force_with_no_motion(mechanism: Mechanism, load) -> None:
                          "about it), so it never moves and a force there has no motion to resist: put the force at a "
                          "point that moves, or give it a set sense (resisting = false)")
     guide = _frame_guides(scene).get(load.link)
-    if guide is None or abs(math.cos(math.radians(load.angle_deg) - guide.angle)) > _SQUARE:
+    # A force along a point's line turns with the mechanism: square to the guide at a position or two, no more.
+    if guide is None or load.along is not None or abs(math.cos(math.radians(load.angle_deg) - guide.angle)) > _SQUARE:
         return
     raise SceneError(f"{load.where}.resisting", f"{load.point} on link {load.link} moves only along its frame guide "
                      f"(at {math.degrees(guide.angle):g}°), square to the force's line (at {load.angle_deg:g}°), so "
@@ -556,6 +557,11 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
             raise SceneError(f"{load.where}.point", f"must be a point fixed on link {load.link}: "
                              f"{_known(sorted(mechanism.fixed_on.get(load.link, ())))}", load.point,
                              hint=lookalike_hint(load.point, mechanism.fixed_on.get(load.link, ())))
+        if load.along is not None and load.along not in known_points:
+            # Any named point will do, on any link: the line to it turns with whatever carries it.
+            raise SceneError(f"{load.where}.along", "must be a named point of the mechanism (a frame point, a joint "
+                             f"or one of [points]): {_known(sorted(known_points))}", load.along,
+                             hint=lookalike_hint(load.along, known_points) or suggestion(load.along, sorted(known_points)))
         if load.kind == "moment" and load.resisting and load.link in mechanism.translating:
             # Resisting is against the link's ω, or at rest the turning about to begin: a link that never turns has
             # neither, and the load was dropped at every position without a word.

@@ -290,7 +290,8 @@ REQUIRED_PURPOSES = {
     "loads[].kind": "moment (a couple on its link) or force (at a point of its link)",
     "loads[].link": "the number of the link the load acts on",
     "loads[].point": "a force needs point, where it acts: a point fixed on its link (a joint or one of [points])",
-    "loads[].angle": "a force needs angle, its direction in degrees from +x (counter-clockwise)",
+    "loads[].angle": "a force needs angle, its direction in degrees from +x (counter-clockwise), or along, the point "
+                     "whose line to its point it acts along",
     "loads[].value": "the load's size, N·m for a moment, N for a force (or a diagram in its place)",
     "loads[].during.from": "the share of the working stroke (0 to 1) where the load begins to act",
     "loads[].during.to": "the share of the working stroke (0 to 1) where the load stops acting",

@@ -115,6 +115,9 @@ class LoadSpec:
     angle_deg: float | None
     diagram: tuple[tuple[float, float], ...] | None = None
     stroke: Working | None = None
+    # A force along the line from this point to its own (a cylinder or a spring pinned there), in place of an angle:
+    # the line turns as the mechanism moves.
+    along: str | None = None
 
 
 @dataclass(frozen=True)
@@ -967,20 +970,31 @@ def _read_load(where: str, item: object) -> LoadSpec:
                          "diagram, or leave stroke out")
     point = table.string("point", None)
     angle = table.number("angle", None)
+    along = table.string("along", None)
     if kind == "force":
         # Each missing key told at its own path: at loads[0] the student was left to find which of the two it was.
-        table.misspelt(*(key for key in ("point", "angle") if not table.has(key)))
-        for key in ("point", "angle"):
+        # A direction is an angle or a point to act along, one of the two.
+        needed = ("point",) if along is not None else ("point", "angle")
+        table.misspelt(*(key for key in (*needed, "along") if not table.has(key)))
+        for key in needed:
             if not table.has(key):
                 raise SceneError(table.where(key), f"is required but missing{required_purpose(table.where(key))}")
+        if along is not None and angle is not None:
+            raise SceneError(table.where("along"), "a force's line is given once: along a point (a line that turns "
+                             "with the mechanism) or at an angle (a fixed direction), not both", along)
+        if along is not None and along == point:
+            raise SceneError(table.where("along"), f"names the force's own point {point!r}, which makes no line: "
+                             "name the other end of the line the force acts along (a cylinder's or spring's pin)",
+                             along)
     if kind == "moment":
         # A couple acts alike wherever on its link it is put: a point or a direction would say otherwise.
-        for key in ("point", "angle"):
+        for key in ("point", "angle", "along"):
             if table.has(key):
-                raise SceneError(table.where(key), "a moment acts on its whole link: leave point and angle out")
+                raise SceneError(table.where(key), "a moment acts on its whole link: leave point, angle and along "
+                                 "out")
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
-                    point=point, angle_deg=angle, diagram=diagram, stroke=stroke)
+                    point=point, angle_deg=angle, diagram=diagram, stroke=stroke, along=along)
 
 
 def _read_working(table: Table) -> Working:

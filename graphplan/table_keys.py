@@ -35,7 +35,7 @@ NUMBERED_TABLE_KEYS = {
     "links.N": ("mass", "centre", "inertia"),
     "[[groups]]": ("kind", "links", "joints", "lengths", "length", "assembly", "near", "guide", "guides", "angle",
                    "offset", "offsets", "sides", "slots"),
-    "[[loads]]": ("kind", "link", "point", "value", "angle", "resisting", "during", "diagram", "stroke"),
+    "[[loads]]": ("kind", "link", "point", "value", "angle", "along", "resisting", "during", "diagram", "stroke"),
     "[[friction]]": ("joint", "links", "f", "radius", "groove_half_angle"),
     "points.NAME": ("link", "from", "toward", "at", "offset"),
     "measured.N": ("velocity", "acceleration", "forces", "balancing"),

@@ -28,7 +28,7 @@ from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..joint_friction import FrictionPair, pair_name
-from ..loads import motion_state
+from ..loads import external_names, motion_state
 from ..locale import Count, strings
 from ..render.numerals import number
 from ..rounding import ROUNDING_NOISE
@@ -195,6 +195,7 @@ def initial_data_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") 
 
 def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".") -> list[str]:
     text = strings(analysis.scene.locale)
+    specs = dict(zip(external_names(analysis.scene.loads), analysis.scene.loads, strict=True))
     lines = []
     for load in external_loads(plan):
         acting = load.force != 0 if load.is_force else load.moment != 0
@@ -204,7 +205,13 @@ def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
             value = f"{polar(load.force, mark)} {text['newton']}"
         else:
             value = f"{number(load.moment, mark=mark)} {text['newton_metre']}"
-        lines.append(text["forces_external"].format(name=load.name, link=load.link, value=value) + "  ")
+        spec = specs.get(load.name)
+        if spec is not None and spec.along is not None:
+            # Its angle is this position's alone: the line it keeps is the one to the point it acts along.
+            lines.append(text["forces_external_along"].format(name=load.name, link=load.link,
+                                                             line=f"{spec.along}{spec.point}", value=value) + "  ")
+        else:
+            lines.append(text["forces_external"].format(name=load.name, link=load.link, value=value) + "  ")
     return lines
 
 
