@@ -32,7 +32,15 @@ from .kinematics import at
 from .length_units import lengths_in_millimetres
 from .lever import Lever, lever
 from .load_strokes import diagrams_in_travel, resisting_forces_turning, strokes_of_other_links
-from .loads import activity, has_loads, link_loads, motion_state, plan_state, refuse_lines_without_length
+from .loads import (
+    activity,
+    has_loads,
+    link_loads,
+    motion_state,
+    plan_state,
+    refuse_lines_without_length,
+    refuse_resisting_along_no_motion,
+)
 from .locale import strings
 from .locking import LockedSpan, locked_between, pairs_that_lock, turned_round_between
 from .mechanism import Mechanism, build
@@ -191,6 +199,7 @@ def analyse(scene: Scene) -> Analysis:
     # A force along a point that meets its own point has no line there: told at the position, else in the sweep.
     refuse_lines_without_length(mechanism, motion, positions.numbers)
     refuse_lines_without_length(mechanism, paths)
+    refuse_resisting_along_no_motion(mechanism, motion)
     acting = activity(mechanism, positions, motion) if has_loads(mechanism) else None
     # Checked with no force analysis too, which leaves the friction out (check says why): a pair it names wrongly
     # is refused all the same, not only once masses are given.

@@ -463,6 +463,23 @@ def refuse_lines_without_length(mechanism: Mechanism, motion: Motion, numbers: n
                          f"name a point that stays clear of {load.point}, or give the force an angle", load.along)
 
 
+def refuse_resisting_along_no_motion(mechanism: Mechanism, motion: Motion) -> None:
+    """Refuse a resisting force ``along`` a point whose own point never moves along the line between them, nor is
+    about to, at any position of ``motion`` (a point of a link that turns about the point it is along): the force
+    acted nowhere, without a word, as one square to its point's only guide would (which the mechanism refuses)."""
+    state = None
+    for load in mechanism.scene.loads:
+        if load.kind != "force" or load.along is None or not load.resisting:
+            continue
+        state = state or motion_state(motion)
+        if np.any(np.nan_to_num(np.asarray(resisted_sense(load, state), dtype=float)) != 0):
+            continue
+        raise SceneError(f"{load.where}.resisting", f"{load.point} never moves along the line from {load.along} at "
+                         f"any position (it moves square to it, as a point of a link turning about {load.along} "
+                         "does), so a force along that line has no motion to resist: name another point for it to "
+                         "act along, or give it a set sense (resisting = false)")
+
+
 def sense_of_motion(speed: Scalar, rate: Scalar, scale: float, rate_scale: float = 0.0) -> Scalar:
     """+1 or −1: the sense of motion, or at rest (against the mechanism's ``scale`` of speeds)
     the sense of the motion about to begin; 0 at rest with nothing about to begin (a ``rate`` that is
@@ -504,5 +521,6 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
 
 __all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "external_names",
            "has_loads", "line_of_action", "link_loads", "load_at", "motion_state", "plan_state", "power",
-           "refuse_lines_without_length", "resisted_sense", "sense_of_motion", "stroke_ends", "stroke_share",
+           "refuse_lines_without_length", "refuse_resisting_along_no_motion",
+           "resisted_sense", "sense_of_motion", "stroke_ends", "stroke_share",
            "stroke_travel", "with_switches"]

@@ -280,3 +280,27 @@ def test_a_point_that_meets_the_force_s_point_is_refused_with_the_position():
         analyse(scene_of_text(_with_loads(text, _force(4, "B", 800.0, 'along = "B3"'))))
     assert caught.value.where == "loads[0].along"
     assert "B3 meets B at position 1" in str(caught.value)
+
+
+def test_a_resisting_force_along_the_pivot_its_point_turns_about_is_refused():
+    # B turns about C: it moves square to CB at every position, and the force would act nowhere.
+    with pytest.raises(SceneError) as caught:
+        analyse(scene_of_text(_with_loads(CRANK_ROCKER, _force(4, "B", 800.0, 'along = "C"', "resisting = true\n"))))
+    assert caught.value.where == "loads[0].resisting" and "never moves along the line from C" in str(caught.value)
+
+
+def test_a_resisting_force_that_turns_round_in_its_window_is_told_toward_and_away_from_its_point():
+    base = CRANK_ROCKER.replace("plans = [2, 7]", 'plans = [2, 7]\nworking = { link = 4, sense = "ccw" }')
+    swing = np.angle(_xy(analyse(scene_of_text(base)).motion.point("B").r) - 0.35)
+    # D on the rocker's line at the middle of its swing, beyond B: B moves toward D, then away from it.
+    middle = 0.35 + 0.6 * np.exp(1j * (swing.max() + swing.min()) / 2)
+    text = base.replace("D = [0.05, 0.42]", f"D = [{float(middle.real)!r}, {float(middle.imag)!r}]")
+    found = analyse(scene_of_text(_with_loads(text, _force(4, "B", 800.0, 'along = "D"',
+                                                           'resisting = true\nduring = "working"\n'))))
+    (warning,) = [warning for warning in found.warnings if warning.code == "resisting-turns-round"]
+    speed = _along(_line(found.motion, "B", "D"), _xy(found.motion.point("B").v))
+    acting = np.asarray(found.loads[-1].force) != 0
+    toward = [str(number) for number, each, on in zip(found.positions.numbers, speed, acting, strict=True)
+              if on and each < 0]
+    assert toward and f"acts away from D at positions {', '.join(toward)}" in warning.detail
+    assert "turns round toward D at positions" in warning.detail
