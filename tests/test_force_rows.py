@@ -146,9 +146,9 @@ def test_a_last_part_whose_drawings_have_none_of_the_sheet_s_scales_is_headed_by
 
 
 def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_tall_for_a_heading_alone():
-    """A group 100 × 300 mm beside its polygon is too wide for a 180 mm sheet and, stacked, too tall; alone
-    the group fits the 330 mm height only without the heading's 30 mm."""
-    rows = Rows([[box("body", 100.0, 300.0), box("polygon", 150.0, 100.0)]], HEADING)
+    """A group 100 × 310 mm beside its polygon is too wide for a 180 mm sheet and, stacked, too tall; alone
+    the group fits the 330 mm height only without the heading's 30 mm, its caption under it or beside it."""
+    rows = Rows([[box("body", 100.0, 310.0), box("polygon", 150.0, 100.0)]], HEADING)
     fits = within(180.0, 330.0)
     parts = rows.parts(fits)
     assert parts is not None and [list(part.fields) for part in parts] == [["body"], ["polygon"]]
@@ -162,7 +162,7 @@ def test_a_row_too_wide_for_a_sheet_stands_drawing_by_drawing_and_a_drawing_too_
 def test_only_a_drawing_with_no_room_for_a_heading_stands_without_one(height):
     """After a group too tall for a heading, the driver and its polygon fit on one sheet only without a heading:
     they stand under headings in more parts instead, and the first heading is the sheet's, the rest continued."""
-    rows = Rows([[box("body", 100.0, 300.0), box("polygon", 150.0, 100.0)],
+    rows = Rows([[box("body", 100.0, 310.0), box("polygon", 150.0, 100.0)],
                  [box("driver", 100.0, height), box("driver-polygon", 100.0, height)]], HEADING)
     fits = within(180.0, 330.0)
     parts = rows.parts(fits)
@@ -172,6 +172,27 @@ def test_only_a_drawing_with_no_room_for_a_heading_stands_without_one(height):
     assert headless == [["body"]]
     titles = [" ".join(heading_of(part)) for part in parts if heading_of(part)]
     assert titles[0] == HEADING.part_title and set(titles[1:]) == {HEADING.continued}
+
+
+def test_a_drawing_too_tall_for_a_heading_over_its_caption_stands_under_one_with_its_caption_beside_it():
+    """A group 100 × 300 mm misses the 330 mm under the heading with its caption under it (300 mm, the gap and
+    a line of caption, the heading's 30 mm) but not with its caption beside it: it stands under the heading so,
+    not on a part with none (the crank-rocker's group with friction on a Russian A3)."""
+    rows = Rows([[box("body", 100.0, 300.0), box("polygon", 150.0, 100.0)]], HEADING)
+    fits = within(180.0, 330.0)
+    alone = Rows([[box("body", 100.0, 300.0)]], HEADING)
+    title = HEADING.part_title
+    assert not fits(*size(alone.arranged(alone.in_columns(1), title)))
+    parts = rows.parts(fits)
+    assert parts is not None and [list(part.fields) for part in parts] == [["body"], ["polygon"]]
+    assert [" ".join(heading_of(part)) for part in parts] == [title, HEADING.continued]
+    body = parts[0]
+    # The way a sheet holds it: its caption level with the drawing, right of it, the heading over both.
+    assert body.aside is not None and fits(*size(body.aside)) and not fits(*size(body))
+    caption = next(item for layer in body.aside.layers if layer.name == "body-caption" for item in layer.items)
+    drawing = bounds([layer for layer in body.aside.layers if layer.name == "body-lines"])
+    assert caption.at[0] > drawing[2] and drawing[1] < caption.at[1] < drawing[3]
+    assert bounds(body.aside.layers)[3] > drawing[3] + HEADING.size
 
 
 def test_a_drawing_no_sheet_holds_even_alone_is_named_with_its_size():

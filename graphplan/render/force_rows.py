@@ -361,8 +361,10 @@ class Rows:
 
     def _parts(self, fits: Fits, headless: bool = False) -> list[list[Part]]:
         """:meth:`cuts` with the rows as they are; where ``headless``, a row that fits under no heading stands
-        alone without one (rows that fit only so together stand apart under their headings instead: a part
-        without a heading is for a drawing that has no room for one, not a way to save a sheet)."""
+        under one with its long captions beside its drawings (:class:`Part`'s other way, which the packing takes
+        where the usual one fits no sheet), else alone without one (rows that fit only so together stand apart
+        under their headings instead: a part without a heading is for a drawing that has no room for one, not a
+        way to save a sheet)."""
         heading = self.heading
         count = len(self)
         for title in (heading.title, heading.part_title):
@@ -373,9 +375,14 @@ class Rows:
 
         def best(start: int, stop: int) -> tuple[float, Shape, bool, str] | None:
             if (start, stop) not in best_of:
-                titles = (self._title_of(start), HEADLESS) if headless and stop == start + 1 else (self._title_of(start),)
-                best_of[start, stop] = next(((*found, title) for title in titles
-                                             for found in [self._least(start, stop, fits, title)] if found), None)
+                title = self._title_of(start)
+                # A group cut free with friction, its equations under it, missed an A3 under its heading by 4 mm
+                # and stood on a sheet with no heading at all, where beside it they leave the heading room.
+                ways = ((title, False), (title, True), (HEADLESS, False)) if headless and stop == start + 1 \
+                    else ((title, False),)
+                best_of[start, stop] = next(((*found, title) for title, aside in ways
+                                             for found in [self._least(start, stop, fits, title, aside)] if found),
+                                            None)
             return best_of[start, stop]
 
         for pieces in range(2, count + 1):
@@ -413,21 +420,22 @@ class Rows:
         """The heading of the part of several that begins with row ``start``."""
         return self.heading.part_title if start == 0 else self.heading.continued
 
-    def _least(self, start: int, stop: int, fits: Fits, title: str) -> tuple[float, Shape, bool] | None:
-        """Of the ways rows ``start``..``stop`` may stand under ``title``, the one taking least paper that
-        ``fits`` once drawn (the estimate of its size may be a little off), with its area and whether its title
-        stands on one line; None when none does.
+    def _least(self, start: int, stop: int, fits: Fits, title: str, aside: bool = False
+               ) -> tuple[float, Shape, bool] | None:
+        """Of the ways rows ``start``..``stop`` may stand under ``title`` (``aside``: with their long captions
+        beside their drawings), the one taking least paper that ``fits`` once drawn (the estimate of its size may
+        be a little off), with its area and whether its title stands on one line; None when none does.
 
         The title stands on one line where that fits: broken to drawings
         narrower than it, it went onto two lines though the sheet had room.
         """
-        sized = [(self._size(shape, title), shape) for shape in self._shapes(start, stop)]
+        sized = [(self._size(shape, title, aside=aside), shape) for shape in self._shapes(start, stop)]
         for _, shape in sorted(sized, key=lambda item: item[0][0] * item[0][1]):
             for one_line in (True, False):
-                width, height = self._size(shape, title, one_line)
+                width, height = self._size(shape, title, one_line, aside)
                 if not fits(width - ESTIMATE_SLACK_MM, height - ESTIMATE_SLACK_MM):
                     continue
-                x0, y0, x1, y1 = bounds(self.arranged(shape, title, one_line).layers)
+                x0, y0, x1, y1 = bounds(self.arranged(shape, title, one_line, aside=aside).layers)
                 if fits(x1 - x0, y1 - y0):
                     return (x1 - x0) * (y1 - y0), shape, one_line
         return None
@@ -446,10 +454,11 @@ class Rows:
                 bounds = (start, *cuts, stop)
                 yield tuple(tuple((k, k in stacks) for k in range(a, b)) for a, b in itertools.pairwise(bounds))
 
-    def _size(self, shape: Shape, title: str, one_line: bool = False) -> tuple[float, float]:
-        """The size ``shape`` takes under ``title``, estimated from the rows' sizes without drawing it."""
-        widths = [max(self.block(k, stacked).width for k, stacked in column) for column in shape]
-        heights = [sum(self.block(k, stacked).height for k, stacked in column) + GAP_MM * (len(column) - 1)
+    def _size(self, shape: Shape, title: str, one_line: bool = False, aside: bool = False) -> tuple[float, float]:
+        """The size ``shape`` takes under ``title`` (``aside``: its long captions beside its drawings), estimated
+        from the rows' sizes without drawing it."""
+        widths = [max(self.block(k, stacked, aside).width for k, stacked in column) for column in shape]
+        heights = [sum(self.block(k, stacked, aside).height for k, stacked in column) + GAP_MM * (len(column) - 1)
                    for column in shape]
         width = sum(widths) + GAP_MM * (len(shape) - 1)
         if title == HEADLESS:

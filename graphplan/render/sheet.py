@@ -436,6 +436,11 @@ def _headless(part: Arrangement) -> bool:
     return not has_heading(part.layers)
 
 
+def _fewer_parts_or_headings_missing(parts: Sequence[Arrangement], kept: Sequence[Arrangement]) -> bool:
+    """Whether the cut ``parts`` takes fewer parts than ``kept``, or as many with fewer standing without a heading."""
+    return (len(parts), sum(map(_headless, parts))) < (len(kept), sum(map(_headless, kept)))
+
+
 def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                   with_friction: bool = False) -> _ForceSheetWays:
     """The force sheet of ``position`` whole, and the ways it may stand on sheets: whole, or its parts in order
@@ -487,8 +492,9 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
         return drawn, one, [[panel(k, part) for k, part in enumerate(parts)] for parts in cuts], heading
 
     before: dict[str, tuple[float, float]] = {}
-    # The first way in parts with a drawing standing without a heading: taken only where no smaller lettering
-    # gives every part its heading (a part with none says whose it is by its title block alone).
+    # The first way in parts with a drawing that stands under its heading only with its equations beside it, or
+    # under none: taken only where no smaller lettering gives every part its heading over its equations under its
+    # drawings (a part with none says whose it is by its title block alone).
     headless: tuple[force_layout.ForceSheet, Panel, list[list[force_rows.Part]], force_rows.Heading] | None = None
     for _ in range(_LARGER_SCALES_TRIED + _steps_to_plan_size(drawn)):
         rows = force_layout.rows(drawn, groups_cut_free)
@@ -513,9 +519,12 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             drawn, one, cuts, heading = cut(drawn, one, found, rows.heading)
             headless = None
             break
-        if headless is None:
-            found = placed.cuts(fits)
-            headless = (drawn, one, found, rows.heading) if found else None
+        # Lettered smaller, a part that stands under its heading only with its equations beside it may share a
+        # part again: the crank-rocker's sheet with friction on a Russian A3 took five parts at the usual lettering,
+        # four at the smaller one that the same run's other force sheets are lettered at.
+        found = placed.cuts(fits) if headless is None or len(headless[2][0]) > 1 else []
+        if found and (headless is None or _fewer_parts_or_headings_missing(found[0], headless[2][0])):
+            headless = (drawn, one, found, rows.heading)
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
         unheld = placed.unheld(fits)
