@@ -125,6 +125,20 @@ def test_a_part_without_a_heading_shares_no_sheet_with_another_drawing():
         assert sum(len(page.drawings) for page in pages) == 3
 
 
+def test_the_first_part_of_a_force_sheet_without_a_heading_shares_no_sheet_with_another_drawing():
+    """The English crank-rocker with friction on A3: its sheet with friction of position 5 began with group II(3,4)
+    too tall for a heading, which stood beside position 5's lever under "Force analysis, position 5 (continued)",
+    read as the analysis without friction.  A first part goes on from no part, but it has a heading to name the
+    scales of (:attr:`Panel.heading_scales`) and stands without it."""
+    scales = (("μl = 0.005 m/mm", "body-"),)
+    group = Panel("forces-friction-5", (box("drawing", 120.0, 150.0),), heading_scales=scales, label="friction, 5")
+    lever = Panel("forces-5-4", (box(HEADING_LAYER, 100.0, HEADING_MM, HEADING_MM), box("drawing", 100.0, 60.0)),
+                  continues="forces-5-3", heading_scales=(("μV = 0.01983 (m/s)/mm", "lever"),), label="position 5")
+    for order in ([lever, group], [group, lever]):
+        pages = pack(order, SHEET, FORM)
+        assert [[drawing.name for drawing in page.drawings] for page in pages] == [[panel.name] for panel in order]
+
+
 def test_no_drawings_take_no_sheets_on_every_format():
     # An A4, which chooses between its turns by its first sheet, failed on none: a scene without forces on A4.
     for sheet in ("A4", "A3", "A1"):

@@ -167,8 +167,11 @@ def _extent(layers: tuple[Layer, ...]) -> Rect:
 
 
 def _headless(panel: Panel) -> bool:
-    """Whether ``panel`` is a part that goes on from another with no heading of its own."""
-    return bool(panel.continues) and not has_heading(panel.layers)
+    """Whether ``panel`` is a part that goes on from another, or a force sheet's first part (one with a heading's
+    scales to name), with no heading of its own."""
+    # The first part of the crank-rocker's sheet with friction of position 5, going on from none, stood headless
+    # beside the lever of the sheet without friction on an English A3, under that one's heading.
+    return bool(panel.continues or panel.heading_scales) and not has_heading(panel.layers)
 
 
 def _whole_of(panel: Panel) -> str:
