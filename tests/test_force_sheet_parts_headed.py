@@ -71,12 +71,14 @@ def test_every_sheet_with_a_part_of_a_force_sheet_has_its_heading(locale):
     assert seen == {"forces-5", "forces-friction-5", "forces-11", "forces-friction-11"}
 
 
-def test_the_force_sheets_of_a_run_on_a3_are_lettered_alike():
+@pytest.mark.parametrize("locale", ["ru", "en"])
+def test_the_force_sheets_of_a_run_on_a3_are_lettered_alike(locale):
     """The sheet with friction of position 5, its group under its heading only with its equations beside it, was
-    first lettered at the usual size in five parts, where lettered as the run's other force sheets it stands in
-    four."""
+    first lettered at the usual size: in Russian in five parts, where lettered as the run's other force sheets it
+    stands in four; in English in four either way, its group alone on a sheet, where lettered smaller it stands
+    beside its polygon."""
     sizes = {}
-    for sheet in sheets_of("ru", "A3"):
+    for sheet in sheets_of(locale, "A3"):
         for layer in sheet.layers:
             whole = force_sheet_of(layer.name)
             if whole and layer.name.endswith("-sheet-title"):

@@ -436,9 +436,9 @@ def _headless(part: Arrangement) -> bool:
     return not has_heading(part.layers)
 
 
-def _fewer_parts_or_headings_missing(parts: Sequence[Arrangement], kept: Sequence[Arrangement]) -> bool:
-    """Whether the cut ``parts`` takes fewer parts than ``kept``, or as many with fewer standing without a heading."""
-    return (len(parts), sum(map(_headless, parts))) < (len(kept), sum(map(_headless, kept)))
+def _no_more_parts_or_headings_missing(parts: Sequence[Arrangement], kept: Sequence[Arrangement]) -> bool:
+    """Whether the cut ``parts`` takes no more parts than ``kept`` and leaves no more of them without a heading."""
+    return len(parts) <= len(kept) and sum(map(_headless, parts)) <= sum(map(_headless, kept))
 
 
 def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
@@ -520,10 +520,11 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
             headless = None
             break
         # Lettered smaller, a part that stands under its heading only with its equations beside it may share a
-        # part again: the crank-rocker's sheet with friction on a Russian A3 took five parts at the usual lettering,
-        # four at the smaller one that the same run's other force sheets are lettered at.
-        found = placed.cuts(fits) if headless is None or len(headless[2][0]) > 1 else []
-        if found and (headless is None or _fewer_parts_or_headings_missing(found[0], headless[2][0])):
+        # part again, or a sheet: the crank-rocker's sheet with friction on a Russian A3 took five parts at the usual
+        # lettering, four at the smaller one that the run's other force sheets are lettered at, and on an English A3
+        # four at either, its group alone on a sheet at the usual lettering and beside its polygon at the smaller.
+        found = placed.cuts(fits) if headless is None or drawn.caption_size < headless[0].caption_size else []
+        if found and (headless is None or _no_more_parts_or_headings_missing(found[0], headless[2][0])):
             headless = (drawn, one, found, rows.heading)
         # A drawing too big for a sheet: smaller lettering, then a larger scale.  One too big for a sheet under
         # its heading only: smaller lettering, but not a smaller drawing (1:2 made 1:4 for a heading).
