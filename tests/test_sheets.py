@@ -631,18 +631,17 @@ def test_a_force_sheet_no_sheet_holds_whole_goes_in_parts_in_order_each_under_it
 
 
 def test_a_sheet_of_parts_of_one_drawing_is_named_after_it_in_the_title_block(analyses):
-    """On A3 a force sheet of the triad goes in parts, the first two on one sheet (which position's depends on how
-    tall its drawings stand: position 2's, once position 8's): its title block names the drawing they are parts of,
-    as the sheets with one part on them do, not the kind of drawing."""
+    """On A3 each force sheet of the triad goes in parts: the title block of each sheet of its parts names the
+    drawing they are parts of, not the kind of drawing.  (Its first two parts of position 2 or 8 shared a sheet
+    while the first stood without a heading; under its heading, its equations beside it, it takes a sheet alone.  A
+    sheet of two parts of one drawing: tests/test_force_sheet_parts_headed.py.)"""
     _, sheets = on_a3("triad_class_iii")
-    shared = [number for number in (2, 8) for sheet in sheets if len(sheet.panels) > 1
-              and all(re.fullmatch(rf"forces-{number}(-\d+)?", name) for name in sheet.panels)]
-    assert shared
-    number = shared[0]
-    parts = [sheet for sheet in sheets if all(re.fullmatch(rf"forces-{number}(-\d+)?", name) for name in sheet.panels)]
-    assert len(parts) > 1
-    for sheet in parts:
-        assert f"Force analysis, position {number}" in [text.text for text in texts([layer(sheet, "title-block")])]
+    for number in (2, 8):
+        parts = [sheet for sheet in sheets
+                 if sheet.panels and all(re.fullmatch(rf"forces-{number}(-\d+)?", name) for name in sheet.panels)]
+        assert len(parts) > 1
+        for sheet in parts:
+            assert f"Force analysis, position {number}" in [text.text for text in texts([layer(sheet, "title-block")])]
 
 
 def test_a_force_sheet_part_that_fits_under_its_heading_in_smaller_lettering_is_given_its_heading(analyses):
