@@ -617,6 +617,8 @@ def _line(load) -> tuple:
     kind and link)."""
     if load.kind == "moment":
         return load.kind, load.link
+    if load.spring:   # a spring's force is its length's, one force of its own beside any other on its line
+        return load.kind, load.link, load.point, "spring", load.along
     if load.along is not None:   # a line that turns is the one through the point it is along
         return load.kind, load.link, load.point, "along", load.along
     return load.kind, load.link, load.point, round((load.angle_deg or 0.0) % 360.0, 9) % 360.0

@@ -391,11 +391,24 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
             found.append(Load(name, load.link, None, 0j, on * value))
         else:
             direction = line_of_action(load, state)
-            force = load.value * direction
+            force = spring_value(load, state) * direction if load.spring else load.value * direction
             if load.resisting:
                 force = -abs(load.value) * direction * resisted_sense(load, state)
             found.append(Load(name, load.link, load.point, on * force, 0.0))
     return found
+
+
+def spring_length(load: LoadSpec, state: State) -> Scalar:
+    """A spring's length L: how far its ``point`` is from the point it is ``along``, m."""
+    length = np.abs(state.points[load.point].r - state.points[load.along].r)
+    return float(length) if np.ndim(length) == 0 else length
+
+
+def spring_value(load: LoadSpec, state: State) -> Scalar:
+    """A spring's force along its line from ``along`` to its point, N: −k·(L − L0), so that stretched past its free
+    length it pulls its point toward ``along`` (negative, as a force's value pulling there is) and squeezed short of
+    it pushes its point away."""
+    return -load.stiffness * (spring_length(load, state) - load.free_length)
 
 
 def resisted_sense(load, state: State) -> Scalar:
@@ -522,5 +535,5 @@ def power(loads: tuple[Load, ...], state: State) -> Scalar:
 __all__ = ["SWITCH_TOLERANCE", "Load", "Rates", "State", "activity", "activity_at", "at_rest", "external_names",
            "has_loads", "line_of_action", "link_loads", "load_at", "motion_state", "plan_state", "power",
            "refuse_lines_without_length", "refuse_resisting_along_no_motion",
-           "resisted_sense", "sense_of_motion", "stroke_ends", "stroke_share",
+           "resisted_sense", "sense_of_motion", "spring_length", "spring_value", "stroke_ends", "stroke_share",
            "stroke_travel", "with_switches"]

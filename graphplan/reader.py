@@ -293,6 +293,8 @@ REQUIRED_PURPOSES = {
     "loads[].angle": "a force needs angle, its direction in degrees from +x (counter-clockwise), or along, the point "
                      "whose line to its point it acts along",
     "loads[].value": "the load's size, N·m for a moment, N for a force (or a diagram in its place)",
+    "loads[].stiffness": "a spring's stiffness k, N/m (its force k·(L − L0), pulling its ends together where longer)",
+    "loads[].free_length": "a spring's free length L0, m, at which it neither pushes nor pulls",
     "loads[].during.from": "the share of the working stroke (0 to 1) where the load begins to act",
     "loads[].during.to": "the share of the working stroke (0 to 1) where the load stops acting",
     "loads[].stroke.link": "the number of the link whose motion makes the load's stroke",

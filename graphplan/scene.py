@@ -118,6 +118,15 @@ class LoadSpec:
     # A force along the line from this point to its own (a cylinder or a spring pinned there), in place of an angle:
     # the line turns as the mechanism moves.
     along: str | None = None
+    # A spring along that line (N/m, m), in place of a value: its force is its length's, k·(L − L0) at each position,
+    # so ``value`` is 0 and means nothing for it.
+    stiffness: float | None = None
+    free_length: float | None = None
+
+    @property
+    def spring(self) -> bool:
+        """Whether the load is a spring, whose force k·(L − L0) its length sets, not a value."""
+        return self.stiffness is not None
 
 
 @dataclass(frozen=True)
@@ -943,17 +952,30 @@ def _read_load(where: str, item: object) -> LoadSpec:
     table = Table(item, where)
     kind = table.choice("kind", ("moment", "force"))
     link = table.integer("link", minimum=1)
+    stiffness = table.number("stiffness", None, positive=True)
+    free_length = table.number("free_length", None, non_negative=True)
+    spring = stiffness is not None or free_length is not None
+    if spring:
+        _refuse_beside_a_spring(table, kind)
     diagram = _read_load_diagram(table) if table.has("diagram") else None
-    if diagram is not None:
+    if spring:
+        # Its force is its length's at each position, and it acts always: no value, window or stroke to give.
+        value: float = 0.0
+        during: str | tuple[float, float] = "always"
+    elif diagram is not None:
         if table.has("value") or table.has("during"):
             raise SceneError(table.where("diagram"), "a load diagram gives the values and the window itself: "
                                                       "leave out value and during")
         value = max(abs(v) for _, v in diagram)
-        during: str | tuple[float, float] = (diagram[0][0], diagram[-1][0])
+        during = (diagram[0][0], diagram[-1][0])
     else:
         value = table.number("value")
         during = _read_during(table)
     resisting = table.boolean("resisting", False)
+    if resisting and spring:
+        raise SceneError(table.where("resisting"), "a spring's sense is its length's (it pushes its ends apart where "
+                         "shorter than its free length and pulls them together where longer), not the motion's: "
+                         "leave resisting out", resisting)
     if resisting and diagram is None and value < 0:
         # Its sense is taken from the motion at each position, so a sign would be dropped without a word.
         raise SceneError(table.where("value"), "a resisting load's value is its magnitude (resisting = true turns it "
@@ -971,6 +993,10 @@ def _read_load(where: str, item: object) -> LoadSpec:
     point = table.string("point", None)
     angle = table.number("angle", None)
     along = table.string("along", None)
+    if spring and along is None:
+        raise SceneError(table.where("along"), "is required but missing: a spring acts along the line between its "
+                         "two ends, so name the point its other end is pinned at (along = \"D\"), whose distance from "
+                         "point is its length L")
     if kind == "force":
         # Each missing key told at its own path: at loads[0] the student was left to find which of the two it was.
         # A direction is an angle or a point to act along, one of the two.
@@ -994,7 +1020,29 @@ def _read_load(where: str, item: object) -> LoadSpec:
                                  "out")
     table.done()
     return LoadSpec(where=where, kind=kind, link=link, value=value, resisting=resisting, during=during,
-                    point=point, angle_deg=angle, diagram=diagram, stroke=stroke, along=along)
+                    point=point, angle_deg=angle, diagram=diagram, stroke=stroke, along=along,
+                    stiffness=stiffness, free_length=free_length)
+
+
+def _refuse_beside_a_spring(table: Table, kind: str) -> None:
+    """Refuse what a spring (``stiffness`` and ``free_length``) cannot take, each at its own key: a moment, a value
+    beside its length's force, a window, diagram or stroke (it acts always), one of its two keys without the other."""
+    given = next(key for key in ("stiffness", "free_length") if table.has(key))
+    if kind == "moment":
+        raise SceneError(table.where(given), "a spring is a force between two points: give kind = \"force\", its "
+                         "point and along, or leave stiffness and free_length out of a moment")
+    if table.has("value"):
+        raise SceneError(table.where("value"), "a spring's force is k·(L − L0) at each position, from its stiffness "
+                         "and free length: leave value out, or leave stiffness and free_length out for a force of "
+                         "a set value", table.raw("value"))
+    for key in ("during", "diagram", "stroke"):
+        if table.has(key):
+            raise SceneError(table.where(key), "a spring acts always, its force set by its length at each "
+                             f"position: leave {key} out")
+    for key, other in (("stiffness", "free_length"), ("free_length", "stiffness")):
+        if not table.has(key):
+            raise SceneError(table.where(key), f"is required but missing{required_purpose(table.where(key))} (a "
+                             f"spring given its {other} needs its {key} too)")
 
 
 def _read_working(table: Table) -> Working:

@@ -28,7 +28,7 @@ from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..joint_friction import FrictionPair, pair_name
-from ..loads import external_names, motion_state
+from ..loads import external_names, motion_state, spring_length
 from ..locale import Count, strings
 from ..render.numerals import number
 from ..rounding import ROUNDING_NOISE
@@ -206,7 +206,15 @@ def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
         else:
             value = f"{number(load.moment, mark=mark)} {text['newton_metre']}"
         spec = specs.get(load.name)
-        if spec is not None and spec.along is not None:
+        if spec is not None and spec.spring:
+            # Its value is its length's here: k·(L − L0) written out, that the force can be checked by hand.
+            length = float(np.ravel(spring_length(spec, motion_state(analysis.motion)))[plan.index])
+            lines.append(text["forces_external_spring"].format(
+                name=load.name, link=load.link, line=f"{spec.along}{spec.point}", point=spec.point, along=spec.along,
+                stiffness=number(spec.stiffness, mark=mark), length=number(length, mark=mark),
+                free_length=number(spec.free_length, mark=mark),
+                tension=number(spec.stiffness * (length - spec.free_length), mark=mark), value=value) + "  ")
+        elif spec is not None and spec.along is not None:
             # Its angle is this position's alone: the line it keeps is the one to the point it acts along.
             lines.append(text["forces_external_along"].format(name=load.name, link=load.link,
                                                              line=f"{spec.along}{spec.point}", value=value) + "  ")
