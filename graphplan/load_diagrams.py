@@ -83,7 +83,10 @@ def unavailable(analysis: Analysis) -> str | None:
     """Why the run has no load diagram to draw, or None where it has one."""
     scene = analysis.scene
     if not any(drawn(spec) for spec in scene.loads):
-        return "needs a load given over a stroke: a [[loads]] diagram, during window or stroke"
+        # A spring acts always, by its length: it has no stroke to draw a diagram over.
+        springs = [spec.where for spec in scene.loads if spec.spring]
+        besides = f" ({', '.join(springs)}: a spring acts always, its force set by its length)" if springs else ""
+        return f"needs a load given over a stroke: a [[loads]] diagram, during window or stroke{besides}"
     if not _drawn_rows(analysis):
         return ("needs the extremes of the loads' strokes: the output link turns round, or the positions run once "
                 "over a slider's travel or a rocking crank's swing")

@@ -1,0 +1,308 @@
+"""A spring between two points: ``[[loads]] kind = "force"`` with ``along = "D"``, ``stiffness`` and ``free_length``.
+
+Its force at each position is −k·(L − L0)·e, e the unit vector from D to its point and L their distance: stretched
+past its free length it pulls its point toward D, squeezed short of it it pushes it away.  Nothing here reads
+graphplan's loads: L and e are worked out in the test from the analytic positions (``motion``'s r), and
+
+* the balancing moment of the linear system at every position is that of virtual work, Mb = −F·vB/ω1;
+* the spring is conservative: its work over a whole turn is zero, and the dynamics' reduced moment of it, integrated
+  over the crank's angle from the first sample, is −ΔU with U = ½·k·(L − L0)² (trapezoids on a fine sweep);
+* the force polygons and Zhukovsky's lever at the plan positions give the linear system's balancing moment, and the
+  polygons its reactions;
+* a plain force along D of the value −k·(L − L0) the test works out at one position gives the same reactions there;
+* forces.md writes k·(L − L0) with k, L and L0; a spring has no load diagram;
+* each key a spring cannot take is refused at its own key path.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+
+import numpy as np
+import pytest
+
+import graphplan
+from graphplan import load_diagrams
+from graphplan.analysis import analyse
+from graphplan.dynamics import equivalent_model_of
+from graphplan.errors import SceneError
+from graphplan.report.forces import external_load_lines
+from graphplan.scene import loads as scene_of_text
+
+# A crank-rocker (lOA = 0.1, lAB = 0.4, lBC = 0.3, lOC = 0.35) with a frame pin D for a spring's far end and E on the
+# coupler; no gravity and no masses, so that the loads' power is the spring's alone.
+CRANK_ROCKER = """
+[scene]
+gravity = 0.0
+[frame]
+link = 1
+points = { O = [0.0, 0.0], C = [0.35, 0.0], D = [0.05, 0.42] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 12.0
+[[groups]]
+kind = "RRR"
+links = [3, 4]
+joints = ["A", "B", "C"]
+lengths = [0.4, 0.3]
+assembly = "left"
+[points]
+E = { link = 3, from = "A", toward = "B", at = 0.2, offset = 0.08 }
+[positions]
+count = 12
+plans = [2, 7]
+"""
+
+# A slider-crank (r = 0.1, l = 0.35) turning clockwise, whose slider a spring pinned at D, above and behind the
+# guide, holds: L runs from some 0.43 m to 0.6 m, so that a free length of 0.5 m has it squeezed and stretched.
+SLIDER_CRANK = """
+[scene]
+gravity = 0.0
+[frame]
+link = 1
+points = { O = [0.0, 0.0], D = [-0.1, 0.25] }
+[driver]
+kind = "crank"
+link = 2
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = -9.0
+[[groups]]
+kind = "RRP"
+links = [3, 4]
+joints = ["A", "B"]
+length = 0.35
+guide = { through = "O", angle = 0.0 }
+assembly = "forward"
+[positions]
+count = 12
+plans = [3, 8]
+"""
+
+# Each case: its scene and its spring as (link, point, the point it is along, stiffness N/m, free length m).
+CASES = {
+    "stretched spring from the frame on the rocker": (CRANK_ROCKER, (4, "B", "D", 4000.0, 0.1)),
+    "squeezed spring from the frame on the coupler": (CRANK_ROCKER, (3, "E", "D", 2500.0, 0.6)),
+    "spring on the slider squeezed and stretched": (SLIDER_CRANK, (4, "B", "D", 3000.0, 0.5)),
+}
+
+
+def _with_loads(base: str, added: str) -> str:
+    """``base`` with ``added`` loads put before its [positions] table."""
+    at = base.index("\n[positions]")
+    return base[:at] + added + base[at:]
+
+
+def _spring(link: int, point: str, far: str, stiffness: float, free_length: float, extra: str = "") -> str:
+    return (f'\n[[loads]]\nkind = "force"\nlink = {link}\npoint = "{point}"\nalong = "{far}"\n'
+            f"stiffness = {stiffness!r}\nfree_length = {free_length!r}\n{extra}")
+
+
+def _text(case: str, count: int | None = None) -> str:
+    base, spring = CASES[case]
+    text = _with_loads(base, _spring(*spring))
+    return text if count is None else text.replace("count = 12", f"count = {count}")
+
+
+@functools.cache
+def analysis(case: str):
+    return analyse(scene_of_text(_text(case)))
+
+
+def _xy(array) -> np.ndarray:
+    array = np.asarray(array, dtype=float)
+    return array[..., 0] + 1j * array[..., 1]
+
+
+def _spring_force(case: str, motion) -> tuple[np.ndarray, np.ndarray]:
+    """The spring's force (as x + iy, N) and its length L (m) at each position of ``motion``: −k·(L − L0)·e."""
+    _, (_, point, far, stiffness, free_length) = CASES[case]
+    reach = _xy(motion.point(point).r) - _xy(motion.point(far).r)
+    length = np.abs(reach)
+    return -stiffness * (length - free_length) * reach / length, length
+
+
+def _power(force: np.ndarray, velocity: np.ndarray) -> np.ndarray:
+    return (np.conj(force) * velocity).real
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_the_balancing_moment_at_every_position_is_that_of_virtual_work(case):
+    found = analysis(case)
+    point = CASES[case][1][1]
+    force, _ = _spring_force(case, found.motion)
+    expected = -_power(force, _xy(found.motion.point(point).v)) / found.scene.driver.omega
+    scale = float(np.max(np.abs(expected)))
+    assert scale > 1.0
+    np.testing.assert_allclose(found.equilibrium.balancing, expected, rtol=0, atol=1e-9 * scale)
+
+
+def test_the_cases_hold_a_stretched_a_squeezed_and_a_crossing_spring():
+    """The cases are what their names say: the sign convention is tried both ways, and through L = L0."""
+    lengths = {case: _spring_force(case, analysis(case).motion)[1] - CASES[case][1][4] for case in CASES}
+    assert np.all(lengths["stretched spring from the frame on the rocker"] > 0)
+    assert np.all(lengths["squeezed spring from the frame on the coupler"] < 0)
+    crossing = lengths["spring on the slider squeezed and stretched"]
+    assert np.any(crossing > 0) and np.any(crossing < 0)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_a_stretched_spring_pulls_its_point_toward_the_far_end_and_a_squeezed_one_pushes_it_away(case):
+    found = analysis(case)
+    (_, point, far, _, free_length) = CASES[case][1]
+    (load,) = [each for each in found.loads if each.name.startswith("F")]
+    reach = _xy(found.motion.point(point).r) - _xy(found.motion.point(far).r)
+    outward = (np.conj(reach) * np.asarray(load.force)).real
+    stretched = np.abs(reach) > free_length
+    assert np.all(outward[stretched] < 0) and np.all(outward[~stretched] > 0)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_the_spring_s_work_is_minus_the_rise_of_its_energy_and_none_over_a_turn(case):
+    scene = scene_of_text(_text(case))
+    model = equivalent_model_of(scene, count=720, constant="none")
+    motion = graphplan.solve(scene, driver=np.asarray(model.driver))
+    (_, point, _, stiffness, free_length) = CASES[case][1]
+    force, length = _spring_force(case, motion)
+    # The reduced moment is the spring's power over the crank's speed: ∫ M dψ is its work.
+    expected = _power(force, _xy(motion.point(point).v)) / abs(scene.driver.omega)
+    np.testing.assert_allclose(model.moment, expected, rtol=0, atol=1e-9 * float(np.max(np.abs(expected))))
+    angle = np.asarray(model.coordinate)
+    assert angle[-1] - angle[0] == pytest.approx(2 * np.pi)
+    steps = np.diff(angle) * (model.moment[1:] + model.moment[:-1]) / 2
+    work = np.concatenate(([0.0], np.cumsum(steps)))
+    energy = 0.5 * stiffness * (length - free_length) ** 2
+    # The trapezoids' error is some (Δψ)²/12 · ∫|M''| dψ: under 1e-4 of the energy's swing at 720 steps.
+    swing = float(np.max(energy) - np.min(energy))
+    assert swing > 1.0
+    np.testing.assert_allclose(work, -(energy - energy[0]), rtol=0, atol=1e-4 * swing)
+    assert abs(work[-1]) <= 1e-6 * swing
+    assert abs(float(model.integral(model.moment)[-1])) <= 1e-6 * swing
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_the_polygons_and_the_lever_agree_with_the_linear_system(case):
+    found = analysis(case)
+    drawn = [plan for plan in found.plans if plan.forces is not None]
+    assert len(drawn) == 2
+    scale = float(np.max(np.abs(found.equilibrium.balancing)))
+    for plan in drawn:
+        exact = float(found.equilibrium.balancing[plan.index])
+        assert plan.forces.balancing == pytest.approx(exact, abs=1e-7 * scale), plan.number
+        assert plan.lever.balancing == pytest.approx(exact, abs=1e-7 * scale), plan.number
+        for reaction in plan.forces.reactions.values():
+            solved = complex(found.equilibrium.reaction(reaction.name).force[plan.index])
+            assert abs(reaction.force - solved) <= 1e-7 * max(abs(solved), 1.0), (plan.number, reaction.name)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+@pytest.mark.parametrize("index", [0, 7])
+def test_a_plain_force_of_the_spring_s_value_there_gives_the_same_reactions(case, index):
+    spring = analysis(case)
+    base, (link, point, far, stiffness, free_length) = CASES[case]
+    length = _spring_force(case, spring.motion)[1][index]
+    value = float(-stiffness * (length - free_length))
+    plain = analyse(scene_of_text(_with_loads(base, f'\n[[loads]]\nkind = "force"\nlink = {link}\npoint = "{point}"'
+                                                    f'\nalong = "{far}"\nvalue = {value!r}\n')))
+    assert plain.equilibrium.balancing[index] == pytest.approx(spring.equilibrium.balancing[index], rel=1e-12)
+    for reaction in spring.equilibrium.reactions:
+        there = complex(plain.equilibrium.reaction(reaction.name).force[index])
+        assert abs(complex(reaction.force[index]) - there) <= 1e-9 * abs(there), reaction.name
+
+
+def test_forces_md_writes_k_times_the_stretch_with_its_numbers():
+    case = "stretched spring from the frame on the rocker"
+    found = analysis(case)
+    plan = next(plan for plan in found.plans if plan.forces is not None)
+    (line,) = [line for line in external_load_lines(found, plan) if "F4" in line]
+    written = re.search(r"k·\(L − L0\) = 4000 N/m · \(([\d.]+) m − 0\.1 m\) = ([\d.]+) N of tension", line)
+    assert written, line
+    length = _spring_force(case, found.motion)[1][plan.index]
+    assert float(written.group(1)) == pytest.approx(length, rel=1e-4)
+    assert float(written.group(2)) == pytest.approx(4000.0 * (length - 0.1), rel=1e-4)
+    assert "along the line DB" in line and "pulling B toward D" in line
+
+
+@pytest.mark.parametrize("locale", ["ru", "zh"])
+def test_forces_md_writes_the_spring_in_the_scene_s_language(locale):
+    text = _text("stretched spring from the frame on the rocker").replace("[scene]", f'[scene]\nlocale = "{locale}"')
+    found = analyse(scene_of_text(text))
+    plan = next(plan for plan in found.plans if plan.forces is not None)
+    (line,) = [line for line in external_load_lines(found, plan) if "F4" in line]
+    assert "k·(L − L0) = 4000" in line and "DB" in line and "External" not in line
+
+
+def test_a_spring_alone_has_no_load_diagram_and_beside_a_windowed_load_is_left_out_of_it():
+    alone = analysis("stretched spring from the frame on the rocker")
+    assert "a spring acts always" in load_diagrams.unavailable(alone)
+    text = _text("stretched spring from the frame on the rocker").replace(
+        "plans = [2, 7]", 'plans = [2, 7]\nworking = { link = 4, sense = "ccw" }')
+    text = _with_loads(text, '\n[[loads]]\nkind = "moment"\nlink = 4\nvalue = 40.0\nresisting = true\n'
+                             'during = "working"\n')
+    found = analyse(scene_of_text(text))
+    assert load_diagrams.unavailable(found) is None
+    (diagram,) = load_diagrams.of_analysis(found)
+    assert [load.name for load in diagram.loads] == ["M4.2"]
+
+
+def test_a_spring_is_sorted_apart_from_a_cylinder_on_its_line():
+    """A cylinder and a spring along one line are two forces, not one given over several strokes: each is sorted by
+    its own work.  Over a turn both do none (a force of set value along a line from a frame point does F·ΔL), so
+    each goes with the weights on its own."""
+    text = _with_loads(_text("stretched spring from the frame on the rocker"),
+                       '\n[[loads]]\nkind = "force"\nlink = 4\npoint = "B"\nalong = "D"\nvalue = 300.0\n')
+    model = equivalent_model_of(scene_of_text(text), constant="none")
+    assert model.driving_loads == ()
+    assert sorted(load.loads for load in model.moved) == [("loads[0]",), ("loads[1]",)]
+    assert all(load.work == 0.0 for load in model.moved)
+
+
+def _refused(extra: str, kind: str = "force") -> SceneError:
+    text = _with_loads(CRANK_ROCKER, f'\n[[loads]]\nkind = "{kind}"\nlink = 4\n{extra}\n')
+    with pytest.raises(SceneError) as caught:
+        scene_of_text(text)
+    return caught.value
+
+
+_SPRING = 'point = "B"\nalong = "D"\nstiffness = 4000.0\nfree_length = 0.1'
+
+
+@pytest.mark.parametrize(("extra", "where", "told"), [
+    (_SPRING + "\nvalue = 300.0", "loads[0].value", "leave value out"),
+    ('point = "B"\nalong = "D"\nstiffness = 4000.0', "loads[0].free_length", "is required but missing"),
+    ('point = "B"\nalong = "D"\nfree_length = 0.1', "loads[0].stiffness", "is required but missing"),
+    ('point = "B"\nangle = 30.0\nstiffness = 4000.0\nfree_length = 0.1', "loads[0].along", "is required but missing"),
+    ('point = "B"\nstiffness = 4000.0\nfree_length = 0.1', "loads[0].along", "is required but missing"),
+    (_SPRING + "\nresisting = true", "loads[0].resisting", "sense is its length's"),
+    (_SPRING + '\nduring = "working"', "loads[0].during", "acts always"),
+    (_SPRING + "\ndiagram = [[0.0, 100.0], [1.0, 200.0]]", "loads[0].diagram", "acts always"),
+    (_SPRING + '\nstroke = { link = 4, sense = "ccw" }', "loads[0].stroke", "acts always"),
+    ('point = "B"\nalong = "D"\nstiffness = 0.0\nfree_length = 0.1', "loads[0].stiffness", "(got 0"),
+    ('point = "B"\nalong = "D"\nstiffness = -4000.0\nfree_length = 0.1', "loads[0].stiffness", "(got -4000"),
+    ('point = "B"\nalong = "D"\nstiffness = 4000.0\nfree_length = -0.1', "loads[0].free_length", "(got -0.1"),
+], ids=["value", "no free length", "no stiffness", "angle", "no along", "resisting", "during", "diagram", "stroke",
+        "zero stiffness", "negative stiffness", "negative free length"])
+def test_what_a_spring_cannot_take_is_refused_at_its_own_key(extra, where, told):
+    error = _refused(extra)
+    assert error.where == where, str(error)
+    assert told in str(error), str(error)
+
+
+def test_a_spring_on_a_moment_is_refused_at_its_stiffness():
+    error = _refused("stiffness = 4000.0\nfree_length = 0.1", kind="moment")
+    assert error.where == "loads[0].stiffness" and "kind = \"force\"" in str(error)
+
+
+def test_a_free_length_of_zero_is_a_spring_that_always_pulls():
+    """L0 = 0 (a zero-length spring, as a counterbalance's is drawn) is allowed: its force is k·L toward D."""
+    text = _with_loads(CRANK_ROCKER, _spring(4, "B", "D", 1000.0, 0.0))
+    found = analyse(scene_of_text(text))
+    reach = _xy(found.motion.point("B").r) - _xy(found.motion.point("D").r)
+    (load,) = [each for each in found.loads if each.name == "F4"]
+    np.testing.assert_allclose(np.asarray(load.force), -1000.0 * reach, rtol=1e-12)
