@@ -727,7 +727,8 @@ CASES: list[Case] = [
          "is required but missing: a force needs point, where it acts: a point fixed on its link (a joint or one of "
          "[points])"),
     Case("load-force-without-angle", {"loads.0.kind": "force", "loads.0.point": "B"}, "loads[0].angle",
-         "is required but missing: a force needs angle, its direction in degrees from +x (counter-clockwise)"),
+         "is required but missing: a force needs angle, its direction in degrees from +x (counter-clockwise), or "
+         "along, the point whose line to its point it acts along"),
     Case("load-angle-string", {"loads.0.kind": "force", "loads.0.point": "B", "loads.0.angle": "90"},
          "loads[0].angle", "must be a number, not a string (got '90'); TOML numbers take no quotes: write 90"),
     Case("load-unknown-key", {"loads.0.resistant": True}, "loads[0].resistant",
