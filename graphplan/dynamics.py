@@ -130,7 +130,8 @@ class ConstantSideError(ValueError):
 class MovedLoad:
     """A load the scene gives as driving (``resisting = false``) that gives no work over the run, counted with the
     resistances: ``loads``, its key paths (a force given over several strokes, or a window each, along one line at
-    one point, is their sum, and is sorted as one), and ``work``, its work over the run (J), zero or negative."""
+    one point, is their sum, and is sorted as one), and ``work``, its work over the run (J), zero or negative (a
+    spring's, which goes with the weights whatever its work, of either sign)."""
 
     loads: tuple[str, ...]
     work: float
@@ -592,7 +593,8 @@ def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarra
     A load given as resisting resists.  The other loads along one line at one point (a moment: on one link) are
     one force, given over several strokes or windows (a gas force as its indicator diagram, one load a stroke),
     and are sorted as one: they drive where their work is positive, and go with the weights where it is zero
-    (within :data:`NO_WORK` of the work they give and take) or negative.
+    (within :data:`NO_WORK` of the work they give and take) or negative.  A spring goes with the weights whatever
+    its work: like them it is the machine's own, giving back what it takes, and no constant moment stands for it.
     """
     forces: dict[tuple, list[int]] = {}
     for row, load in enumerate(loads):
@@ -603,7 +605,7 @@ def _sides(loads: Sequence, moments: Sequence[np.ndarray], coordinate: np.ndarra
     for rows in forces.values():
         work = sum(float(_integral(moments[row], coordinate, breaks)[-1]) for row in rows)
         given = sum(float(_integral(np.abs(moments[row]), coordinate, breaks)[-1]) for row in rows)
-        if work > NO_WORK * given:
+        if work > NO_WORK * given and not loads[rows[0]].spring:
             for row in rows:
                 drives[row] = True
         else:

@@ -221,12 +221,24 @@ def test_forces_md_writes_k_times_the_stretch_with_its_numbers():
     found = analysis(case)
     plan = next(plan for plan in found.plans if plan.forces is not None)
     (line,) = [line for line in external_load_lines(found, plan) if "F4" in line]
-    written = re.search(r"k·\(L − L0\) = 4000 N/m · \(([\d.]+) m − 0\.1 m\) = ([\d.]+) N of tension", line)
+    written = re.search(r"k·\(L − L0\) = 4000 N/m · \(([\d.]+) m − 0\.1 m\) = ([\d.]+) N; stretched, it pulls B "
+                        r"toward D: ", line)
     assert written, line
     length = _spring_force(case, found.motion)[1][plan.index]
     assert float(written.group(1)) == pytest.approx(length, rel=1e-4)
     assert float(written.group(2)) == pytest.approx(4000.0 * (length - 0.1), rel=1e-4)
-    assert "along the line DB" in line and "pulling B toward D" in line
+    assert "along the line DB" in line
+
+
+def test_forces_md_writes_a_squeezed_spring_pushing_its_point_away():
+    case = "squeezed spring from the frame on the coupler"
+    found = analysis(case)
+    plan = next(plan for plan in found.plans if plan.forces is not None)
+    (line,) = [line for line in external_load_lines(found, plan) if "F3" in line]
+    length = _spring_force(case, found.motion)[1][plan.index]
+    written = re.search(r"\(([\d.]+) m − 0\.6 m\) = −([\d.]+) N; squeezed, it pushes E away from D: ", line)
+    assert written, line
+    assert float(written.group(2)) == pytest.approx(2500.0 * (0.6 - length), rel=1e-4)
 
 
 @pytest.mark.parametrize("locale", ["ru", "zh"])
@@ -261,6 +273,47 @@ def test_a_spring_is_sorted_apart_from_a_cylinder_on_its_line():
     assert model.driving_loads == ()
     assert sorted(load.loads for load in model.moved) == [("loads[0]",), ("loads[1]",)]
     assert all(load.work == 0.0 for load in model.moved)
+
+
+def _swinging(stiffness: float, free_length: float) -> str:
+    """The crank-rocker's crank rocking over 80°, a spring from the frame on the rocker, a resistance on it."""
+    text = CRANK_ROCKER.replace("omega = 12.0", "omega = -3.0\nswing = [120.0, 40.0]")
+    text = text.replace("plans = [2, 7]", 'plans = [2, 7]\nworking = { link = 4, sense = "cw" }')
+    text = _with_loads(text, _spring(4, "B", "D", stiffness, free_length)
+                       + '\n[[loads]]\nkind = "moment"\nlink = 4\nvalue = 2.0\nresisting = true\n')
+    return text + "\n[dynamics]\ncount = 81\n"
+
+
+def test_a_spring_that_gives_work_over_a_swing_goes_with_the_weights_all_the_same():
+    """Squeezed (L0 = 1 m) and let out over the swing, the spring gives work; it is the machine's own, as a weight
+    is, and is not made a driving load that a constant driving moment would stand in for."""
+    scene = scene_of_text(_swinging(1000.0, 1.0))
+    model = equivalent_model_of(scene, constant="none")
+    motion = graphplan.solve(scene, driver=np.asarray(model.driver))
+    length = np.abs(_xy(motion.point("B").r) - _xy(motion.point("D").r))
+    energy = 0.5 * 1000.0 * (length - 1.0) ** 2
+    given = float(energy[0] - energy[-1])
+    assert given > 10.0
+    assert model.driving_loads == ()
+    (moved,) = model.moved
+    assert moved.loads == ("loads[0]",) and moved.work == pytest.approx(given, rel=1e-6)
+
+
+@pytest.mark.parametrize(("locale", "said"), [
+    ("en", "The spring F4.1 is counted with the resistances, as the weights are: its work over the swing, A = "),
+    ("ru", "Пружина F4.1 отнесена к силам сопротивления, как и силы тяжести: её работа за качание A = "),
+    ("zh", "弹簧 F4.1 与重力一样计入阻力：其在整个摆角内的功 W = "),
+])
+def test_the_note_says_a_spring_goes_with_the_weights(tmp_path, locale, said):
+    from graphplan.cli import main
+
+    scene = tmp_path / "spring.toml"
+    scene.write_text(_swinging(1000.0, 1.0).replace("[scene]", f'[scene]\nlocale = "{locale}"'), encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--out", str(out), "--only", "dynamics,note"]) == 0
+    note = (out / "note.md").read_text(encoding="utf-8")
+    assert said in note
+    assert "F4.1" in note and "задана как движущая" not in note and "given as a driving load" not in note
 
 
 def _refused(extra: str, kind: str = "force") -> SceneError:

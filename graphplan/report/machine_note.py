@@ -91,8 +91,11 @@ def dynamics_section(note: Writer, section: int, dynamics: MachineDynamics) -> N
         _reductions(note, model)
     if model.moved:  # a load the scene gives as driving that takes work: counted with the resistances
         names = dict(zip((load.where for load in note.scene.loads), external_names(note.scene.loads), strict=True))
+        springs = {load.where for load in note.scene.loads if load.spring}
         for moved in model.moved:  # a force given over several strokes is their sum
-            note.para(note.t(f"note_dyn_reclassified{run}", name=" + ".join(names[where] for where in moved.loads),
+            # A spring was given as no driving load: it goes with the weights as the machine's own.
+            told = "note_dyn_spring" if set(moved.loads) <= springs else "note_dyn_reclassified"
+            note.para(note.t(f"{told}{run}", name=" + ".join(names[where] for where in moved.loads),
                              work=note.n(moved.work)))
     if model.constant in ("driving", "resisting"):
         side = model.driving if model.constant == "driving" else -model.resisting
