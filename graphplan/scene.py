@@ -994,9 +994,11 @@ def _read_load(where: str, item: object) -> LoadSpec:
     angle = table.number("angle", None)
     along = table.string("along", None)
     if spring and along is None:
+        # A fixed angle gives no length: the spring's force is its length's, the distance to its other end.
+        instead = ", in place of angle" if angle is not None else ""
         raise SceneError(table.where("along"), "is required but missing: a spring acts along the line between its "
-                         "two ends, so name the point its other end is pinned at (along = \"D\"), whose distance from "
-                         "point is its length L")
+                         "two ends, so name the point its other end is pinned at (along = \"D\")" + instead
+                         + ", whose distance from point is its length L")
     if kind == "force":
         # Each missing key told at its own path: at loads[0] the student was left to find which of the two it was.
         # A direction is an angle or a point to act along, one of the two.

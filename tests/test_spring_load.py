@@ -330,7 +330,7 @@ _SPRING = 'point = "B"\nalong = "D"\nstiffness = 4000.0\nfree_length = 0.1'
     (_SPRING + "\nvalue = 300.0", "loads[0].value", "leave value out"),
     ('point = "B"\nalong = "D"\nstiffness = 4000.0', "loads[0].free_length", "is required but missing"),
     ('point = "B"\nalong = "D"\nfree_length = 0.1', "loads[0].stiffness", "is required but missing"),
-    ('point = "B"\nangle = 30.0\nstiffness = 4000.0\nfree_length = 0.1', "loads[0].along", "is required but missing"),
+    ('point = "B"\nangle = 30.0\nstiffness = 4000.0\nfree_length = 0.1', "loads[0].along", "in place of angle"),
     ('point = "B"\nstiffness = 4000.0\nfree_length = 0.1', "loads[0].along", "is required but missing"),
     (_SPRING + "\nresisting = true", "loads[0].resisting", "sense is its length's"),
     (_SPRING + '\nduring = "working"', "loads[0].during", "acts always"),
