@@ -21,6 +21,7 @@ import re
 
 import numpy as np
 import pytest
+from test_force_along_a_turning_line import CRANK_ROCKER, SLIDER_CRANK, _with_loads
 
 import graphplan
 from graphplan import load_diagrams
@@ -30,73 +31,15 @@ from graphplan.errors import SceneError
 from graphplan.report.forces import external_load_lines
 from graphplan.scene import loads as scene_of_text
 
-# A crank-rocker (lOA = 0.1, lAB = 0.4, lBC = 0.3, lOC = 0.35) with a frame pin D for a spring's far end and E on the
-# coupler; no gravity and no masses, so that the loads' power is the spring's alone.
-CRANK_ROCKER = """
-[scene]
-gravity = 0.0
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.35, 0.0], D = [0.05, 0.42] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = 12.0
-[[groups]]
-kind = "RRR"
-links = [3, 4]
-joints = ["A", "B", "C"]
-lengths = [0.4, 0.3]
-assembly = "left"
-[points]
-E = { link = 3, from = "A", toward = "B", at = 0.2, offset = 0.08 }
-[positions]
-count = 12
-plans = [2, 7]
-"""
-
-# A slider-crank (r = 0.1, l = 0.35) turning clockwise, whose slider a spring pinned at D, above and behind the
-# guide, holds: L runs from some 0.43 m to 0.6 m, so that a free length of 0.5 m has it squeezed and stretched.
-SLIDER_CRANK = """
-[scene]
-gravity = 0.0
-[frame]
-link = 1
-points = { O = [0.0, 0.0], D = [-0.1, 0.25] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = -9.0
-[[groups]]
-kind = "RRP"
-links = [3, 4]
-joints = ["A", "B"]
-length = 0.35
-guide = { through = "O", angle = 0.0 }
-assembly = "forward"
-[positions]
-count = 12
-plans = [3, 8]
-"""
-
-# Each case: its scene and its spring as (link, point, the point it is along, stiffness N/m, free length m).
+# The crank-rocker with a frame pin D (and E on the coupler) and the slider-crank whose slider is held from D, above
+# and behind the guide (L runs from some 0.43 m to 0.6 m, so that a free length of 0.5 m has it squeezed and
+# stretched), of the force along a turning line; no gravity and no masses, so that the loads' power is the spring's
+# alone.  Each case: its scene and its spring as (link, point, the point it is along, stiffness N/m, free length m).
 CASES = {
     "stretched spring from the frame on the rocker": (CRANK_ROCKER, (4, "B", "D", 4000.0, 0.1)),
     "squeezed spring from the frame on the coupler": (CRANK_ROCKER, (3, "E", "D", 2500.0, 0.6)),
     "spring on the slider squeezed and stretched": (SLIDER_CRANK, (4, "B", "D", 3000.0, 0.5)),
 }
-
-
-def _with_loads(base: str, added: str) -> str:
-    """``base`` with ``added`` loads put before its [positions] table."""
-    at = base.index("\n[positions]")
-    return base[:at] + added + base[at:]
 
 
 def _spring(link: int, point: str, far: str, stiffness: float, free_length: float, extra: str = "") -> str:
