@@ -18,17 +18,22 @@ from shapely.geometry import MultiPoint, Point, Polygon
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
+from ..scene import LoadSpec
 from .primitives import (
+    LEAD_PAST_PIN_MM,
     MAIN,
+    PIN_RADIUS_MM,
     THIN,
     Polyline,
     Primitive,
     Stroke,
+    cylinder,
     dot_marker,
     frame_pivot,
     hatching,
     pin,
     slider_block,
+    spring,
 )
 
 Paper = Callable[[complex], tuple[float, float]]
@@ -208,7 +213,7 @@ def frame_points_along(mechanism: Mechanism, through: complex, u: complex) -> li
 
 def loose_frame_points(mechanism: Mechanism, paper: Paper) -> list[Primitive]:
     """Frame points that no link turns about (a guide's end), as dots: their labels mark something drawn."""
-    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
+    pivots = _pivots(mechanism)
     return [dot_marker(paper(r)) for name, r in mechanism.scene.frame_points.items() if name not in pivots]
 
 
@@ -221,11 +226,68 @@ def ground_side(points: Iterable[complex], through: complex, u: complex) -> floa
 
 
 def frame_pivots(mechanism: Mechanism, paper: Paper) -> list[Primitive]:
-    """The fixed revolutes: frame points that a moving link turns about."""
-    pivots = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
+    """The fixed revolutes: frame points that a moving link turns about, or a spring or a cylinder is pinned at."""
+    pivots = _pivots(mechanism)
     items: list[Primitive] = []
     for name, r in mechanism.scene.frame_points.items():
         if name in pivots:
             items.extend(frame_pivot(paper(r)))
     return items
 
+
+
+def _pivots(mechanism: Mechanism) -> set[str]:
+    """The points a moving link turns about, and those a spring or a cylinder (:func:`along_loads`) is pinned at."""
+    turned_about = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
+    return turned_about | {name for load in _along(mechanism) for name in (load.along, load.point)}
+
+
+def _along(mechanism: Mechanism) -> list[LoadSpec]:
+    """The forces along a turning line (``[[loads]]`` with ``along``), one of each spring or cylinder: a cylinder
+    between two moving links is two loads, one at each end along the other's point, and is drawn once."""
+    found: dict[tuple[frozenset[str], bool], LoadSpec] = {}
+    for load in mechanism.scene.loads:
+        if load.kind == "force" and load.along is not None and load.point is not None:
+            found.setdefault((frozenset((load.along, load.point)), load.spring), load)
+    return list(found.values())
+
+
+def along_loads(motion: Motion, index: int, paper: Paper, letter: float, stroke: Stroke,
+                span: Motion | None = None) -> tuple[list[Primitive], list[Primitive]]:
+    """The springs and cylinders of the forces along a turning line at position ``index`` of ``motion``, each
+    between the point it is along and its own point, and the pins at their ends that no link's pin or frame pivot
+    (:func:`frame_pivots`) marks already (a centre of mass a spring pulls), to draw over the links.
+
+    A spring is a thin zig-zag (:func:`~graphplan.render.primitives.spring`), sized to the drawing's ``letter``.
+    A cylinder (a force of a set value along the line) is drawn in ``stroke``, its barrel pinned at the point it
+    is along and its rod at its own point; the barrel and the rod keep their lengths over the positions of
+    ``span`` (``motion`` by default): the barrel a little longer than the stroke between its shortest and longest
+    there (and no shorter than near half the shortest, nor longer than the shortest leaves room for), the rod so
+    that the piston stands near the barrel's open end at the longest and near its closed end at the shortest, as a
+    cylinder that carries the mechanism through them would.
+    """
+    mechanism = motion.mechanism
+    pinned = set(joints(mechanism)) | set(mechanism.scene.frame_points)
+    span = span or motion
+    lines: list[Primitive] = []
+    pins: list[Primitive] = []
+    for load in _along(mechanism):
+        assert load.along is not None and load.point is not None
+        far, near = complex(at(motion.points[load.along].r, index)), complex(at(motion.points[load.point].r, index))
+        start, end = paper(far), paper(near)
+        length = math.dist(start, end)
+        if length == 0.0:
+            continue
+        if load.spring:
+            lines.append(spring(start, end, letter))
+        else:
+            mm_per_m = length / abs(near - far)
+            reach = np.abs(np.atleast_1d(span.points[load.point].r - span.points[load.along].r)) * mm_per_m
+            shortest, longest = float(reach.min()), float(reach.max())
+            lead = LEAD_PAST_PIN_MM + PIN_RADIUS_MM
+            # Room for the piston's stroke between a tenth of the barrel from either end, within the shortest.
+            barrel = min(max(0.45 * shortest, 1.25 * (longest - shortest)), shortest - lead - PIN_RADIUS_MM)
+            rod = longest - lead - 0.9 * barrel
+            lines.extend(cylinder(start, end, barrel, length - rod, letter, stroke))
+        pins.extend(pin(where) for name, where in ((load.along, start), (load.point, end)) if name not in pinned)
+    return lines, pins

@@ -33,6 +33,7 @@ from .labels import Anchor, obstacles_of, open_direction, place_labels, remember
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
+    along_loads,
     frame_guide,
     frame_pivots,
     frame_points_along,
@@ -87,6 +88,8 @@ _ACTION = Stroke(0.25, "#333333")
 _ACTION_RUN_ON = Stroke(0.25, "#333333", (2.5, 1.5))
 _FIGURE = Stroke(0.3)
 _LINK = Stroke(0.8)
+# A cylinder's barrel and rod: a little lighter than the links, its barrel only a letter wide.
+_CYLINDER = Stroke(0.6)
 _VELOCITY_COLOUR = "#1f5fa8"
 _ACCELERATION_COLOUR = "#a83a1f"
 
@@ -249,6 +252,8 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
 
     outlines = outline_points(mechanism, motion)
     links = links_at(motion, index, outlines, paper, _LINK, bold=True)
+    loaded, load_pins = along_loads(motion, index, paper, LETTER_SIZE, _CYLINDER)
+    links += load_pins
     frame: list[Primitive] = []
     for slide in motion.slides:
         if slide.guide == mechanism.scene.frame_link:
@@ -268,17 +273,19 @@ def _mechanism(sheet: PlanSheet) -> list[Layer]:
     # Named points, and frame points that are no pivot (the end of a guide), as dots.
     marks = [dot_marker(paper(where(spec.name))) for spec in mechanism.scene.points]
     marks += loose_frame_points(mechanism, paper)
-    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame)
+    senses, turn_anchors = _senses(sheet, outlines, where, paper, frame + loaded)
     special, special_at = _special_points(sheet.velocity, where, paper)
     marks += special
-    drawn = links + frame + marks + senses
+    drawn = loaded + links + frame + marks + senses
     # Points fixed on a link only: an RPR lever's point under the block would just repeat a label.
     names = [name for name in motion.points if any(name in on for on in mechanism.fixed_on.values())]
     anchors = [Anchor(paper(where(name)), name, LETTER_SIZE, open_direction(paper(where(name)), drawn))
                for name in names]
     anchors += [Anchor(paper(r), name, LETTER_SIZE, open_direction(paper(r), drawn)) for name, r in special_at.items()]
     labels = remembered(place_labels, anchors + turn_anchors, obstacles_of(drawn))
-    return [Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
+    # Under the frame and the links: their pins stand over the ends of the springs and cylinders.
+    return [*([Layer("mechanism-load-links", tuple(loaded))] if loaded else []),
+            Layer("mechanism-frame", tuple(frame)), Layer("mechanism-links", tuple(links)),
             Layer("mechanism-senses", tuple(senses)), Layer("mechanism-points", tuple(marks)),
             Layer("mechanism-leaders", labels.leaders), Layer("mechanism-labels", labels.texts)]
 

@@ -41,6 +41,7 @@ from .labels import (
 from .linkage import (
     GROUND_MARGIN_MM,
     Paper,
+    along_loads,
     frame_guide,
     frame_pivots,
     frame_points_along,
@@ -52,6 +53,7 @@ from .linkage import (
 from .plans import CAPTION_LINE, CAPTION_SIZE, TITLE_SIZE
 from .primitives import (
     BOLD,
+    MAIN,
     PIN_RADIUS_MM,
     Layer,
     Polyline,
@@ -130,24 +132,27 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     outlines = outline_points(plan.mechanism, plan.positions)
     every = _mechanism_at(plan.positions, outlines, paper, _POSITION_STROKE, bold=False)
     bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
+    # A spring's or a cylinder's at the first bold position alone: at every position they hid the links.
+    loaded, load_pins = along_loads(plan.emphasised, 0, paper, _LABEL, MAIN, span=plan.paths)
+    bold += load_pins
     frame = _frame(plan, paper)
     paths = _paths(plan, paper)
     dimension: list[Primitive] = []
     swing_labels: list[Anchor] = []
     swing_texts: list[Text] = []
     for travel in plan.travels:  # each kept clear of those before it
-        items, labels_of = _travel_dimension(plan, travel, paper, outlines, every + bold + frame + paths + dimension,
-                                             _breakable(every))
+        items, labels_of = _travel_dimension(plan, travel, paper, outlines,
+                                             every + loaded + bold + frame + paths + dimension, _breakable(every))
         dimension += items
         swing_labels += labels_of
         swing_texts += [item for item in items if travel.swing and isinstance(item, Text)]
-    drawn = every + bold + frame + paths + dimension
+    drawn = every + loaded + bold + frame + paths + dimension
     if plan.mechanism.driver.kind == "crank":
         # Round the crank pin's circle: set outside it, one in every few where they would run together. Clear of
         # the frame's pivots too: round a crank drawn a few millimetres long they fell on its pivot's triangle.
         primed = _extreme_anchors(plan, paper, names=False)
         numbers, number_leaders, crowded = _numbers_round_the_circle(
-            plan, paper, obstacles_of(bold + dimension + frame_pivots(plan.mechanism, paper)),
+            plan, paper, obstacles_of(loaded + bold + dimension + frame_pivots(plan.mechanism, paper)),
             [anchor.at for anchor in primed])
         # A number that cannot stand on its radius at a pin lettered with primes is lettered with those letters, round
         # the pin: set aside first on its own, it took the nearest spot beside the pin and left its letters the spots
@@ -161,7 +166,9 @@ def layout(plan: PositionsPlan) -> list[Layer]:
                                                   _crowded_pins(plan, paper))
     # A swing's ψ set by its arc breaks the thin lines under it too (ГОСТ 2.307: no line crosses a dimension's number).
     every = broken_under(every, breaking + swing_texts, _breakable(every))
-    layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)), Layer("extremes", tuple(bold)),
+    # Under the bold links and the frame: the pins they draw stand over the ends of the springs and cylinders.
+    layers = [Layer("paths", tuple(paths)), Layer("positions", tuple(every)),
+              *([Layer("load-links", tuple(loaded))] if loaded else []), Layer("extremes", tuple(bold)),
               Layer("frame", tuple(frame)), Layer("dimensions", tuple(dimension)),
               Layer("leaders", tuple(number_leaders) + labels.leaders),
               Layer("labels", tuple(numbers) + labels.texts + tuple(_centre_marks(plan, paper)))]

@@ -199,6 +199,50 @@ def slider_block(at: Point, angle: float, length: float = 10.0, height: float = 
     return Polyline(place(corners, at, angle), stroke, closed=True, fill="white")
 
 
+# A spring's zig-zag: this many waves, each as long as the lettering beside it is high and as wide, whatever the
+# spring's length: a long spring's drawn across its whole length read as a hatched bar.
+SPRING_WAVES = 5
+# The straight lead at each end of a spring and before a cylinder's barrel reaches this far past its pin (mm).
+LEAD_PAST_PIN_MM = 1.0
+
+
+def spring(start: Point, end: Point, letter: float, stroke: Stroke = THIN) -> Polyline:
+    """A spring from ``start`` to ``end`` (paper mm): a straight lead at each end and between them a zig-zag of
+    :data:`SPRING_WAVES` waves, each ``letter`` long and ``letter`` wide; squeezed to fit between leads clear of
+    the pins where the spring is shorter, a straight line where there is no room for it at all."""
+    length = math.dist(start, end)
+    least_lead = PIN_RADIUS_MM + LEAD_PAST_PIN_MM
+    body = min(SPRING_WAVES * letter, length - 2 * least_lead)
+    if body <= 0.0:
+        return Polyline((start, end), stroke)
+    lead = (length - body) / 2
+    halves = 2 * SPRING_WAVES
+    zigzag = [(lead + (k + 0.5) * body / halves, (letter / 2) * (1 if k % 2 == 0 else -1)) for k in range(halves)]
+    angle = math.atan2(end[1] - start[1], end[0] - start[0])
+    return Polyline(place(((0.0, 0.0), (lead, 0.0), *zigzag, (lead + body, 0.0), (length, 0.0)), start, angle), stroke)
+
+
+def cylinder(start: Point, end: Point, barrel: float, piston: float, letter: float, stroke: Stroke = MAIN
+             ) -> list[Polyline]:
+    """A hydraulic cylinder pinned at ``start`` with its rod pinned at ``end`` (paper mm), as a kinematic scheme
+    draws one: a short lead from ``start`` to the barrel's closed end, the barrel a narrow rectangle ``barrel`` mm
+    long and as wide as the lettering is high, the piston across it ``piston`` mm from ``start`` (kept inside the
+    barrel), and the rod from the piston to ``end``."""
+    length = math.dist(start, end)
+    lead = PIN_RADIUS_MM + LEAD_PAST_PIN_MM
+    barrel = min(barrel, length - lead - PIN_RADIUS_MM)
+    if barrel <= 0.0:
+        return [Polyline((start, end), stroke)]
+    piston = min(max(piston, lead + 0.1 * barrel), lead + 0.9 * barrel)
+    half = 0.5 * letter
+    angle = math.atan2(end[1] - start[1], end[0] - start[0])
+    return [Polyline(place(((0.0, 0.0), (lead, 0.0)), start, angle), stroke),
+            Polyline(place(((lead, -half), (lead + barrel, -half), (lead + barrel, half), (lead, half)), start, angle),
+                     stroke, closed=True),
+            Polyline(place(((piston, -0.8 * half), (piston, 0.8 * half)), start, angle), stroke),
+            Polyline(place(((piston, 0.0), (length, 0.0)), start, angle), stroke)]
+
+
 def dot_marker(at: Point, radius: float = 0.6, colour: str = "black") -> Circle:
     return Circle(at, radius, Stroke(0.1, colour), colour)
 
