@@ -26,7 +26,7 @@ from test_spring_load import _spring
 
 from graphplan.analysis import analyse
 from graphplan.render import drawings, plans, positions
-from graphplan.render.primitives import Circle, Layer, Polyline, Text
+from graphplan.render.primitives import PIN_RADIUS_MM, Circle, Layer, Polyline, Text, spring
 from graphplan.render.svg import to_svg
 from graphplan.scene import loads as scene_of_text
 
@@ -237,3 +237,15 @@ def test_no_label_sits_on_the_spring_or_the_cylinder(drawing, scene):
     assert texts
     met = [element.text for element in texts if _ink(element).intersects(lines)]
     assert not met
+
+
+def test_a_short_spring_squeezes_its_zig_zag_between_leads_clear_of_its_pins_and_a_shorter_one_is_a_line():
+    letter, start, end = 3.0, (10.0, 5.0), (10.0, 17.0)  # mm: 12 mm upward, too short for five waves of 3 mm
+    points = [_xy(point) for point in spring(start, end, letter).points]
+    assert points[0] == _xy(start) and points[-1] == pytest.approx(_xy(end))
+    # Each lead reaches past its pin's circle; the waves share what is left and keep their width.
+    assert abs(points[1] - points[0]) == pytest.approx(abs(points[-1] - points[-2]))
+    assert abs(points[1] - points[0]) > PIN_RADIUS_MM
+    assert abs(points[-2] - points[1]) == pytest.approx(12.0 - 2 * abs(points[1] - points[0]))
+    assert max(point.real for point in points) - min(point.real for point in points) == pytest.approx(letter)
+    assert len(spring((0.0, 0.0), (2 * PIN_RADIUS_MM, 0.0), letter).points) == 2
