@@ -1,4 +1,5 @@
-"""The mechanism drawn at one instant: link outlines, pins, slider blocks, frame pivots and guides.
+"""The mechanism drawn at one instant: link outlines, pins, slider blocks, frame pivots and guides, and the springs
+and cylinders of the forces along a turning line.
 
 Shared by the drawings that show the linkage itself: the plan of positions
 overlays every position (:mod:`graphplan.render.positions`), the plan sheet
@@ -18,7 +19,6 @@ from shapely.geometry import MultiPoint, Point, Polygon
 from ..kinematics import at
 from ..mechanism import Mechanism
 from ..motion import Motion
-from ..scene import LoadSpec
 from .primitives import (
     LEAD_PAST_PIN_MM,
     MAIN,
@@ -235,20 +235,20 @@ def frame_pivots(mechanism: Mechanism, paper: Paper) -> list[Primitive]:
     return items
 
 
-
 def _pivots(mechanism: Mechanism) -> set[str]:
     """The points a moving link turns about, and those a spring or a cylinder (:func:`along_loads`) is pinned at."""
     turned_about = {name for link in mechanism.moving_links for name in mechanism.fixed_on.get(link, ())}
-    return turned_about | {name for load in _along(mechanism) for name in (load.along, load.point)}
+    return turned_about | {name for far, near, _ in _along(mechanism) for name in (far, near)}
 
 
-def _along(mechanism: Mechanism) -> list[LoadSpec]:
-    """The forces along a turning line (``[[loads]]`` with ``along``), one of each spring or cylinder: a cylinder
-    between two moving links is two loads, one at each end along the other's point, and is drawn once."""
-    found: dict[tuple[frozenset[str], bool], LoadSpec] = {}
+def _along(mechanism: Mechanism) -> list[tuple[str, str, bool]]:
+    """The forces along a turning line (``[[loads]]`` with ``along``), one of each spring or cylinder, as the point
+    it is along, its own point and whether it is a spring: a cylinder between two moving links is two loads, one at
+    each end along the other's point, and is drawn once."""
+    found: dict[tuple[frozenset[str], bool], tuple[str, str, bool]] = {}
     for load in mechanism.scene.loads:
         if load.kind == "force" and load.along is not None and load.point is not None:
-            found.setdefault((frozenset((load.along, load.point)), load.spring), load)
+            found.setdefault((frozenset((load.along, load.point)), load.spring), (load.along, load.point, load.spring))
     return list(found.values())
 
 
@@ -271,23 +271,22 @@ def along_loads(motion: Motion, index: int, paper: Paper, letter: float, stroke:
     span = span or motion
     lines: list[Primitive] = []
     pins: list[Primitive] = []
-    for load in _along(mechanism):
-        assert load.along is not None and load.point is not None
-        far, near = complex(at(motion.points[load.along].r, index)), complex(at(motion.points[load.point].r, index))
+    for along, point, is_spring in _along(mechanism):
+        far, near = complex(at(motion.points[along].r, index)), complex(at(motion.points[point].r, index))
         start, end = paper(far), paper(near)
         length = math.dist(start, end)
         if length == 0.0:
             continue
-        if load.spring:
+        if is_spring:
             lines.append(spring(start, end, letter))
         else:
             mm_per_m = length / abs(near - far)
-            reach = np.abs(np.atleast_1d(span.points[load.point].r - span.points[load.along].r)) * mm_per_m
+            reach = np.abs(np.atleast_1d(span.points[point].r - span.points[along].r)) * mm_per_m
             shortest, longest = float(reach.min()), float(reach.max())
             lead = LEAD_PAST_PIN_MM + PIN_RADIUS_MM
             # Room for the piston's stroke between a tenth of the barrel from either end, within the shortest.
             barrel = min(max(0.45 * shortest, 1.25 * (longest - shortest)), shortest - lead - PIN_RADIUS_MM)
             rod = longest - lead - 0.9 * barrel
             lines.extend(cylinder(start, end, barrel, length - rod, letter, stroke))
-        pins.extend(pin(where) for name, where in ((load.along, start), (load.point, end)) if name not in pinned)
+        pins.extend(pin(where) for name, where in ((along, start), (point, end)) if name not in pinned)
     return lines, pins

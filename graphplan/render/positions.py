@@ -132,7 +132,7 @@ def layout(plan: PositionsPlan) -> list[Layer]:
     outlines = outline_points(plan.mechanism, plan.positions)
     every = _mechanism_at(plan.positions, outlines, paper, _POSITION_STROKE, bold=False)
     bold = _mechanism_at(plan.emphasised, outlines, paper, BOLD, bold=True)
-    # A spring's or a cylinder's at the first bold position alone: at every position they hid the links.
+    # The springs and cylinders at the first bold position alone: drawn at every position they would hide the links.
     loaded, load_pins = along_loads(plan.emphasised, 0, paper, _LABEL, MAIN, span=plan.paths)
     bold += load_pins
     frame = _frame(plan, paper)

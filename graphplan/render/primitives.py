@@ -200,7 +200,7 @@ def slider_block(at: Point, angle: float, length: float = 10.0, height: float = 
 
 
 # A spring's zig-zag: this many waves, each as long as the lettering beside it is high and as wide, whatever the
-# spring's length: a long spring's drawn across its whole length read as a hatched bar.
+# spring's length, as a scheme draws the symbol: spread over a long spring they flatten into a wavy line.
 SPRING_WAVES = 5
 # The straight lead at each end of a spring and before a cylinder's barrel reaches this far past its pin (mm).
 LEAD_PAST_PIN_MM = 1.0
