@@ -1032,20 +1032,25 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
     layers: list[Layer] = []
     cursor = 0.0
     chains = _chains(group.polygon.vectors, scale)
+    unnamed: list[str] = []
     for number, chain in enumerate(chains):
-        drawing = _polygon(chain, [line for line in group.polygon.lines
-                                   if any(v.name == line.label for v in chain)], scale,
-                           f"polygon-{key}" + (f"-{number + 1}" if len(chains) > 1 else ""),
-                           _wholes(group, chain, scale))
+        drawing, left = _polygon(chain, [line for line in group.polygon.lines
+                                         if any(v.name == line.label for v in chain)], scale,
+                                 f"polygon-{key}" + (f"-{number + 1}" if len(chains) > 1 else ""),
+                                 _wholes(group, chain, scale))
+        unnamed += [_unnamed_vector(vector, chain, scale, text) for vector in left]
         x0, _, x1, _ = bounds_of(item for layer in drawing for item in layer.items)
         layers.extend(moved_layers(drawing, cursor - x0, 0.0))
         cursor += x1 - x0 + POLYGON_GAP_MM
     short = [f"{vector.name} = {significant(abs(vector.force))} {text['newton']}"
              for vector in group.polygon.vectors if too_short_to_draw(vector.force, scale)]
     apart = too_short_lines(short, text, CAPTION_WIDTH_MM)
+    # One a line: broken where it runs over the polygon's width, a sum broke before its "+ R14n".
+    told = _wrapped(unnamed, per_line=1)
+    under = [text["polygon_unnamed"].format(sides=told[0]), *told[1:]] if told else []
     caption = (text["force_polygon_title"], *group.polygon.equations,
-               text["force_scale"].format(value=format_scale(scale)), *apart)
-    return Drawing(f"polygon-{key}", layers, caption, run_on=_short_run_on(short, apart, text))
+               text["force_scale"].format(value=format_scale(scale)), *apart, *under)
+    return Drawing(f"polygon-{key}", layers, caption, run_on=_short_run_on(short, apart, text, after=len(under)))
 
 
 def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str, str], after: int = 0) -> RunOn | None:
@@ -1124,8 +1129,9 @@ def _wholes(group: GroupForces, chain: Sequence[PolygonVector], scale: float) ->
 
 
 def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float, name: str,
-             wholes: Sequence[PolygonVector]) -> list[Layer]:
-    """One closed polygon: its lines of action, its vectors as arrows, each named beside its middle."""
+             wholes: Sequence[PolygonVector]) -> tuple[list[Layer], list[PolygonVector]]:
+    """One closed polygon: its lines of action, its vectors as arrows, each named beside its middle but those left
+    unnamed, which are handed back for the caption to say."""
     def mm(value: complex) -> complex:
         return value / scale
 
@@ -1171,9 +1177,42 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         # of a polygon, R23n between R23 and R43), it slides along to a clear stretch rather than lie on one.
         anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, _angle(across), arrow.stroke.colour,
                               along=(arrow.start, arrow.end)))
-    labels = _lettered(anchors, figure)
+    # A name led across another vector's arrow reads as naming that one, as it does on the lever (or on a line, as
+    # one lying there would): where the placer finds it no other spot (a sliver of sides side by side, the crank-rocker
+    # starter's of position 5 leading R23, R23n and R23τ across R43), the arrow is left unnamed, one at a time, and the
+    # caption says which it is, as the lever's does (the placer still leads one across an arrow where that is all
+    # that keeps it off a line, which is no better here).
+    drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
+    shafts = [LineString((arrow.start, arrow.end)) for _, arrow in named]
+    vector_of = {id(anchor): vector for anchor, (vector, _) in zip(anchors, named)}
+    unnamed: list[Anchor] = []
+    while True:
+        labels = _lettered(anchors, figure, unnamed=unnamed)
+        lying = [anchor for anchor, placed in zip(anchors, labels.texts)
+                 if _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
+        if not lying:
+            break
+        unnamed.append(lying[0])
+        anchors = [anchor for anchor in anchors if anchor is not unnamed[-1]]
     return [Layer(f"{name}-lines", tuple(actions)), Layer(f"{name}-vectors", tuple(arrows + dots)),
-            Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)]
+            Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)], [
+        vector_of[id(anchor)] for anchor in unnamed]
+
+
+def _unnamed_vector(vector: PolygonVector, chain: Sequence[PolygonVector], scale: float, text: Mapping[str, str]
+                    ) -> str:
+    """Which arrow of the polygon ``chain`` (at μF ``scale``) the vector left unnamed is, for its caption: a reaction
+    drawn whole as the sum of its components (R23 = R23τ + R23n, drawn from the first one's tail to the other's head),
+    any other by the side drawn whose head it starts from (the sides run head to tail in the equation's order; one
+    too short to draw, the slider driven mechanism's Fu3 at position 3, is no side to find it by)."""
+    parts = sorted((side for side in chain if side.name in (f"{vector.name}τ", f"{vector.name}n")),
+                   key=lambda side: abs(side.start - vector.start))
+    if vector.role == "whole" and len(parts) == 2:
+        return f"{vector.name} = {parts[0].name} + {parts[1].name}"
+    sides = [side for side in chain if side.role != "inner" and side is not vector
+             and not too_short_to_draw(side.force, scale)]
+    before = min(sides, key=lambda side: abs(side.end - vector.start), default=None)
+    return vector.name if before is None else text["polygon_side_from"].format(name=vector.name, before=before.name)
 
 
 def _side_by_side(start: complex, end: complex, arrows: Sequence[Arrow], middle: complex) -> tuple[complex, complex]:
@@ -1485,8 +1524,12 @@ def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leader
 
 
 def _led_from(leader: Polyline, anchor: Anchor) -> bool:
-    """Whether ``leader`` is the one led from ``anchor``'s point: a placed leader starts by the point it names."""
-    return math.dist(leader.points[0], anchor.at) <= 1.0
+    """Whether ``leader`` is the one led from ``anchor``'s point: a placed leader starts by the point it names, or by
+    another point of the line it names (its ``along``: a polygon's side's name led from a clear stretch of it)."""
+    start = leader.points[0]
+    if math.dist(start, anchor.at) <= 1.0:
+        return True
+    return anchor.along is not None and LineString(anchor.along).distance(ShapelyPoint(start)) <= 1.0
 
 
 # A load's name standing this much (mm) nearer another load's free end than its own names that load: the friction
@@ -1543,12 +1586,12 @@ def _balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = Tru
     return text[how].format(what=what, name=name, value=significant(value), unit=unit).strip()
 
 
-def _wrapped(items: Sequence[str]) -> list[str]:
-    """Values listed ``PER_LINE`` to a caption line, each line but the last ending in the comma between values.
+def _wrapped(items: Sequence[str], per_line: int = PER_LINE) -> list[str]:
+    """Values listed ``per_line`` to a caption line, each line but the last ending in the comma between values.
 
     Without it the lever's fifth arm ran on from the fourth as one value: "h18 = 0.2587 mm" over "h19 = 21.21 mm",
     where a line the caption breaks keeps its comma ("R45 = 2141 N," over "R16 = 362.5 N")."""
-    lines = [VALUE_SEPARATOR.join(items[k:k + PER_LINE]) for k in range(0, len(items), PER_LINE)]
+    lines = [VALUE_SEPARATOR.join(items[k:k + per_line]) for k in range(0, len(items), per_line)]
     return [line + VALUE_SEPARATOR.rstrip() for line in lines[:-1]] + lines[-1:]
 
 
