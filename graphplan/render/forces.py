@@ -59,6 +59,9 @@ from ..scales import finer_standard_scale, fit_scale, format_scale, standard_sca
 from ..wording import balancing_symbol, friction_summary
 from .force_rows import CAPTION_WIDTH_MM, Drawing, Heading, Rows, RunOn
 from .labels import (
+    LEADER_CLEARANCE,
+    LEADER_GAP,
+    LEADER_WIDTH,
     Anchor,
     Placement,
     cover_one_another,
@@ -68,6 +71,7 @@ from .labels import (
     place_labels,
     remembered,
     shapes_digest,
+    spaced_box,
     text_box,
 )
 from .linkage import link_outlines, outline_points
@@ -90,6 +94,7 @@ from .primitives import (
     pin,
     slider_block,
     svg_id,
+    text_width,
 )
 from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
@@ -130,6 +135,17 @@ POINT_CLEAR_MM = 2.5
 POLE_CLEAR_MM = 10.0
 # Two sides of a force polygon on one line in opposite senses are drawn this far apart (mm), side by side.
 SIDE_BY_SIDE_MM = 1.5
+# A polygon's name on a leader shorter than this (mm) across arrows within SLIVER_DEG of its own line, side by side
+# with it in a sliver, reads as naming its own: the crank-rocker starter's R23n at position 5, 1.6 mm across R43.
+# Longer, it reads as naming one it crosses (the class III triad's R14 at position 2, 15 mm across Fu3 and R64).
+SLIVER_LEADER_MM = 3.0
+SLIVER_DEG = 5.0
+# So set, a name stands off the lines it is led across, its leader at least this long (mm): beside them without one
+# it reads as naming the nearest.
+SLIVER_LEADER_LEAST_MM = 0.8
+# The names of components and given loads standing within this (mm) of a whole reaction's name that lies on a line
+# or across an arrow crowd it: they are left unnamed, nearest first, till it finds a clear spot.
+CROWDING_MM = 8.0
 # Space between two polygons of one group (mm).
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
@@ -1178,22 +1194,54 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, _angle(across), arrow.stroke.colour,
                               along=(arrow.start, arrow.end)))
     # A name led across another vector's arrow reads as naming that one, as it does on the lever (or on a line, as
-    # one lying there would): where the placer finds it no other spot (a sliver of sides side by side, the crank-rocker
-    # starter's of position 5 leading R23, R23n and R23τ across R43), the arrow is left unnamed, one at a time, and the
-    # caption says which it is, as the lever's does (the placer still leads one across an arrow where that is all
-    # that keeps it off a line, which is no better here).
+    # one lying there would): where the placer finds it no other spot (a sliver of sides side by side), the arrow is
+    # left unnamed, one at a time, and the caption says which it is, as the lever's does (the placer still leads one
+    # across an arrow where that is all that keeps it off a line, which is no better here).  A whole reaction, which
+    # the student reads off the polygon, is never left unnamed: the components and given loads whose names crowd it
+    # go first, and where none is left to go it keeps its leader (_whole_reaction).  Before either, a name is set on a
+    # short leader across the sides side by side with its own, where one reaches out of the sliver (_sliver_spot).
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
+    drawn = obstacles_of(figure)
     shafts = [LineString((arrow.start, arrow.end)) for _, arrow in named]
     vector_of = {id(anchor): vector for anchor, (vector, _) in zip(anchors, named)}
     unnamed: list[Anchor] = []
+    kept: list[Anchor] = []
+    # Names set on a short leader across the sides side by side with their own (_sliver_spot), which the others are
+    # lettered round.
+    set_by: list[tuple[Anchor, Text, Polyline]] = []
     while True:
-        labels = _lettered(anchors, figure, unnamed=unnamed)
-        lying = [anchor for anchor, placed in zip(anchors, labels.texts)
-                 if _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]
+        standing = [item for _, text, leader in set_by for item in (text, leader)]
+        labels = _lettered(anchors, [*figure, *standing], unnamed=[*unnamed, *(anchor for anchor, _, _ in set_by)])
+        lying = [anchor for anchor, placed in zip(anchors, labels.texts) if anchor not in kept
+                 and _on_a_line(anchor, placed, drawn_lines, labels.leaders,
+                                _crossed_apart(anchor, placed, labels.leaders, shafts))]
         if not lying:
             break
-        unnamed.append(lying[0])
-        anchors = [anchor for anchor in anchors if anchor is not unnamed[-1]]
+        first = min(lying, key=lambda anchor: not _whole_reaction(anchor.text))
+        placed = labels.texts[anchors.index(first)]
+        own = _own_leaders(first, placed, labels.leaders)
+        spot = _sliver_spot(first, drawn, [text for anchor, text in zip(anchors, labels.texts) if anchor is not first]
+                            + [text for _, text, _ in set_by],
+                            [leader for leader in labels.leaders if leader not in own]
+                            + [leader for _, _, leader in set_by])
+        gone = first
+        if spot is not None:
+            set_by.append((first, *spot))
+        elif not _whole_reaction(first.text):
+            unnamed.append(first)
+        else:
+            box = text_box(placed)
+            crowding = sorted((anchor for anchor, text in zip(anchors, labels.texts)
+                               if not _whole_reaction(anchor.text) and text_box(text).distance(box) < CROWDING_MM),
+                              key=lambda anchor: text_box(labels.texts[anchors.index(anchor)]).distance(box))
+            if not crowding:
+                kept.append(first)
+                continue
+            gone = crowding[0]
+            unnamed.append(gone)
+        anchors = [anchor for anchor in anchors if anchor is not gone]
+    labels = Placement((*labels.texts, *(text for _, text, _ in set_by)),
+                       (*labels.leaders, *(leader for _, _, leader in set_by)))
     return [Layer(f"{name}-lines", tuple(actions)), Layer(f"{name}-vectors", tuple(arrows + dots)),
             Layer(f"{name}-leaders", labels.leaders), Layer(f"{name}-labels", labels.texts)], [
         vector_of[id(anchor)] for anchor in unnamed]
@@ -1213,6 +1261,87 @@ def _unnamed_vector(vector: PolygonVector, chain: Sequence[PolygonVector], scale
              and not too_short_to_draw(side.force, scale)]
     before = min(sides, key=lambda side: abs(side.end - vector.start), default=None)
     return vector.name if before is None else text["polygon_side_from"].format(name=vector.name, before=before.name)
+
+
+def _whole_reaction(name: str) -> bool:
+    """Whether ``name`` is a whole reaction's (R23, R43), which a student reads off the polygon, not a component's
+    (R23n, R23τ) or a given load's (G3, Fu3), steps of the construction its caption may tell."""
+    return re.fullmatch(r"R\d+", name) is not None
+
+
+def _crossed_apart(anchor: Anchor, text: Text, leaders: Sequence[Polyline], shafts: Sequence[LineString]
+                   ) -> list[LineString]:
+    """The arrows' ``shafts`` that ``anchor``'s leader, led to its placed ``text``, would be misread across: all, but
+    where the leader is shorter than :data:`SLIVER_LEADER_MM` those side by side with the line the name names (within
+    :data:`SLIVER_DEG` of it)."""
+    own = _own_leaders(anchor, text, leaders)
+    if anchor.along is None or not own or max(LineString(leader.points).length for leader in own) >= SLIVER_LEADER_MM:
+        return list(shafts)
+    return [shaft for shaft in shafts if not _side_by_side_with(anchor, shaft)]
+
+
+def _own_leaders(anchor: Anchor, text: Text, leaders: Sequence[Polyline]) -> list[Polyline]:
+    """The leader led from ``anchor``'s point or line to its placed ``text`` (none where it stands beside it): one
+    that starts by its line and stops short of its box (another side's by the line in a sliver stops elsewhere)."""
+    box = text_box(text)
+    return [leader for leader in leaders
+            if _led_from(leader, anchor) and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
+
+
+def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[Text], leaders: Sequence[Polyline]
+                 ) -> tuple[Text, Polyline] | None:
+    """A spot for the name of a polygon's side ``anchor`` that the placer left on a line or led across an arrow: its
+    text and leader, the leader shorter than :data:`SLIVER_LEADER_MM` and across no ``drawn`` shape but lines side by
+    side with the side it names, the text clear of every drawn shape and of the other ``texts`` and ``leaders``; None
+    where there is none.
+
+    In a sliver of sides the placer, costing a leader across an arrow as two leaders crossing, led a name the long way
+    round (the crank-rocker starter's R23 at position 5, 7 mm across R23n and R43) where a hand drawing leads it a
+    little way across the sides side by side with its own, out of the sliver."""
+    if anchor.along is None:
+        return None
+    start, end = _c(anchor.along[0]), _c(anchor.along[1])
+    width = text_width(anchor.text, anchor.size)
+    shapes = np.array(drawn, dtype=object)
+    others = np.array([spaced_box(text) for text in texts], dtype=object)
+    led = np.array([LineString(leader.points) for leader in leaders], dtype=object)
+    # What a leader may cross: the sides side by side with the one it names (and the lines of action along them).
+    uncrossable = shapes[[not (shape.geom_type == "LineString" and _side_by_side_with(anchor, shape))
+                          for shape in drawn]]
+    # Nearest the side first (a box set out square to a slanting side comes nearer it by a corner: the leader's
+    # length, not the reach, decides how far out it may stand); along it from its middle outwards, either side of it.
+    for reach in np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, SLIVER_LEADER_MM + 2 * anchor.size, 0.2):
+        for share in (0.5, 0.625, 0.375, 0.75, 0.25, 0.875, 0.125):
+            point = start + (end - start) * share
+            for side in (1j, -1j):
+                out = side * (end - start) / abs(end - start)
+                # As the placer sets a box out from its point (labels._candidates): its near edge ``reach`` off.
+                x = point.real + out.real * (reach + width / 2)
+                y = point.imag + out.imag * (reach + 0.55 * anchor.size) - 0.45 * anchor.size
+                text = Text((x, y), anchor.text, anchor.size, "middle", anchor.colour)
+                box = text_box(text)
+                x0, y0, x1, y1 = box.bounds
+                near = complex(min(max(point.real, x0), x1), min(max(point.imag, y0), y1))
+                if abs(near - point) < LEADER_CLEARANCE + LEADER_GAP + SLIVER_LEADER_LEAST_MM:
+                    continue
+                toward = (near - point) / abs(near - point)
+                leader = LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near - toward * LEADER_GAP)))
+                # Run on to the box: an arrow in the gap between the leader's end and the letters reads as crossed.
+                reaching = LineString((_xy(point), _xy(near)))
+                if (leader.length >= SLIVER_LEADER_MM or shapely.intersects(box, shapes).any()
+                        or shapely.intersects(box, others).any() or shapely.intersects(box, led).any()
+                        or shapely.intersects(leader, led).any() or shapely.intersects(reaching, uncrossable).any()):
+                    continue
+                return text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
+    return None
+
+
+def _side_by_side_with(anchor: Anchor, line: LineString) -> bool:
+    """Whether ``line`` runs within :data:`SLIVER_DEG` of the line ``anchor`` names (its ``along``)."""
+    (x0, y0), (x1, y1) = line.coords[0], line.coords[-1]
+    turn = complex(x1 - x0, y1 - y0) * (_c(anchor.along[1]) - _c(anchor.along[0])).conjugate()
+    apart = abs(math.degrees(math.atan2(turn.imag, turn.real)))
+    return min(apart, 180.0 - apart) < SLIVER_DEG
 
 
 def _side_by_side(start: complex, end: complex, arrows: Sequence[Arrow], middle: complex) -> tuple[complex, complex]:
