@@ -35,7 +35,7 @@ import functools
 import math
 import re
 import unicodedata
-from collections.abc import Callable, Mapping, MutableMapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -140,6 +140,15 @@ SIDE_BY_SIDE_MM = 1.5
 # Longer, it reads as naming one it crosses (the class III triad's R14 at position 2, 15 mm across Fu3 and R64).
 SLIVER_LEADER_MM = 3.0
 SLIVER_DEG = 5.0
+# A whole reaction's name, which the eye reads as naming the nearest line, may instead stand on a leader up to this
+# long (mm) across sides side by side with its own, ending on its own line: the crank-rocker starter's R23 at position
+# 5, on a 0.8 mm leader across R14 just above R14's own name, read as naming R14; led 7 mm across R23n and R43, as at
+# b76b78f, it was followed to its own line without doubt.  Shorter than SLIVER_LEADER_MM a leader is not followed.
+WHOLE_LEADER_MM = 8.0
+# A name no more than this (mm) farther from its own arrow than from the nearest reads as its own: the eye tells no
+# nearer of two lines this close, and the name has its own arrow's colour (the crank-rocker starter's R14 at position
+# 5, 0.4 mm from R14 and 0.05 mm from R14τ, between the two, as at b76b78f).
+TIE_MM = 0.5
 # So set, a name stands off the lines it is led across, its leader at least this long (mm): beside them without one
 # it reads as naming the nearest.
 SLIVER_LEADER_LEAST_MM = 0.8
@@ -1203,6 +1212,7 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     drawn = obstacles_of(figure)
     shafts = [LineString((arrow.start, arrow.end)) for _, arrow in named]
+    shaft_of = {vector.name: shaft for (vector, _), shaft in zip(named, shafts)}
     vector_of = {id(anchor): vector for anchor, (vector, _) in zip(anchors, named)}
     unnamed: list[Anchor] = []
     kept: list[Anchor] = []
@@ -1212,9 +1222,14 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     while True:
         standing = [item for _, text, leader in set_by for item in (text, leader)]
         labels = _lettered(anchors, [*figure, *standing], unnamed=[*unnamed, *(anchor for anchor, _, _ in set_by)])
-        lying = [anchor for anchor, placed in zip(anchors, labels.texts) if anchor not in kept
-                 and _on_a_line(anchor, placed, drawn_lines, labels.leaders,
-                                _crossed_apart(anchor, placed, labels.leaders, shafts))]
+        on_a_line = [anchor for anchor, placed in zip(anchors, labels.texts) if anchor not in kept
+                     and _on_a_line(anchor, placed, drawn_lines, labels.leaders,
+                                    _crossed_apart(anchor, placed, labels.leaders, shafts))]
+        # A whole reaction's name whose nearest arrow is another's reads as naming that one: it is set again where
+        # a spot is found (_sliver_spot), but other names go for it only where it lies on a line.
+        lying = on_a_line + [anchor for anchor, placed in zip(anchors, labels.texts)
+                             if anchor not in kept and anchor not in on_a_line and _whole_reaction(anchor.text)
+                             and not _reads_as_own(anchor, placed, labels.leaders, shaft_of)]
         if not lying:
             break
         first = min(lying, key=lambda anchor: not _whole_reaction(anchor.text))
@@ -1223,12 +1238,15 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         spot = _sliver_spot(first, drawn, [text for anchor, text in zip(anchors, labels.texts) if anchor is not first]
                             + [text for _, text, _ in set_by],
                             [leader for leader in labels.leaders if leader not in own]
-                            + [leader for _, _, leader in set_by])
+                            + [leader for _, _, leader in set_by], shaft_of)
         gone = first
         if spot is not None:
             set_by.append((first, *spot))
         elif not _whole_reaction(first.text):
             unnamed.append(first)
+        elif first not in on_a_line:
+            kept.append(first)
+            continue
         else:
             box = text_box(placed)
             crowding = sorted((anchor for anchor, text in zip(anchors, labels.texts)
@@ -1288,18 +1306,46 @@ def _own_leaders(anchor: Anchor, text: Text, leaders: Sequence[Polyline]) -> lis
             if _led_from(leader, anchor) and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
 
 
-def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[Text], leaders: Sequence[Polyline]
-                 ) -> tuple[Text, Polyline] | None:
+def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[Text], leaders: Sequence[Polyline],
+                 shaft_of: Mapping[str, LineString]) -> tuple[Text, Polyline] | None:
     """A spot for the name of a polygon's side ``anchor`` that the placer left on a line or led across an arrow: its
     text and leader, the leader shorter than :data:`SLIVER_LEADER_MM` and across no ``drawn`` shape but lines side by
     side with the side it names, the text clear of every drawn shape and of the other ``texts`` and ``leaders``; None
-    where there is none.
+    where there is none.  A whole reaction's name is set only where it reads as naming its own arrow of those in
+    ``shaft_of`` (_reads_as_own), on a leader up to :data:`WHOLE_LEADER_MM` where a short one finds no such spot.
 
     In a sliver of sides the placer, costing a leader across an arrow as two leaders crossing, led a name the long way
     round (the crank-rocker starter's R23 at position 5, 7 mm across R23n and R43) where a hand drawing leads it a
     little way across the sides side by side with its own, out of the sliver."""
     if anchor.along is None:
         return None
+    if not _whole_reaction(anchor.text):
+        return next(_sliver_spots(anchor, drawn, texts, leaders, SLIVER_LEADER_MM), None)
+
+    def nearest_box(text: Text) -> str:
+        box = text_box(text)
+        return min(shaft_of, key=lambda name: shaft_of[name].distance(box))
+
+    # A whole reaction's name stands beside its own arrow where it can; else on a leader that is followed to its own
+    # line, beside one of its own components, or beside an arrow side by side with its own, the leader across the
+    # sliver (the crank-rocker starter's R23 at position 5 beyond R23n and R43, as at b76b78f), sooner than beside any
+    # other arrow (beyond R14, by R14τ and just above R14's own name, it read as naming R14).
+    own = {anchor.text, f"{anchor.text}n", f"{anchor.text}τ"}
+    for longest, fits in ((SLIVER_LEADER_MM, lambda text, leader: _reads_as_own(anchor, text, [], shaft_of)),
+                          (WHOLE_LEADER_MM, lambda text, leader: nearest_box(text) in own
+                           and _reads_as_own(anchor, text, [leader], shaft_of)),
+                          (WHOLE_LEADER_MM, lambda text, leader: _side_by_side_with(anchor, shaft_of[nearest_box(text)])
+                           and _reads_as_own(anchor, text, [leader], shaft_of)),
+                          (WHOLE_LEADER_MM, lambda text, leader: _reads_as_own(anchor, text, [leader], shaft_of))):
+        spot = next((spot for spot in _sliver_spots(anchor, drawn, texts, leaders, longest) if fits(*spot)), None)
+        if spot is not None:
+            return spot
+    return None
+
+
+def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[Text], leaders: Sequence[Polyline],
+                  longest: float) -> Iterator[tuple[Text, Polyline]]:
+    """The spots _sliver_spot chooses from, nearest the side first, their leaders shorter than ``longest`` (mm)."""
     start, end = _c(anchor.along[0]), _c(anchor.along[1])
     width = text_width(anchor.text, anchor.size)
     shapes = np.array(drawn, dtype=object)
@@ -1310,7 +1356,7 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
                           for shape in drawn]]
     # Nearest the side first (a box set out square to a slanting side comes nearer it by a corner: the leader's
     # length, not the reach, decides how far out it may stand); along it from its middle outwards, either side of it.
-    for reach in np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, SLIVER_LEADER_MM + 2 * anchor.size, 0.2):
+    for reach in np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, longest + 2 * anchor.size, 0.2):
         for share in (0.5, 0.625, 0.375, 0.75, 0.25, 0.875, 0.125):
             point = start + (end - start) * share
             for side in (1j, -1j):
@@ -1328,12 +1374,31 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
                 leader = LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near - toward * LEADER_GAP)))
                 # Run on to the box: an arrow in the gap between the leader's end and the letters reads as crossed.
                 reaching = LineString((_xy(point), _xy(near)))
-                if (leader.length >= SLIVER_LEADER_MM or shapely.intersects(box, shapes).any()
+                if (leader.length >= longest or shapely.intersects(box, shapes).any()
                         or shapely.intersects(box, others).any() or shapely.intersects(box, led).any()
                         or shapely.intersects(leader, led).any() or shapely.intersects(reaching, uncrossable).any()):
                     continue
-                return text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
-    return None
+                yield text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
+
+
+def _reads_as_own(anchor: Anchor, text: Text, leaders: Sequence[Polyline], shaft_of: Mapping[str, LineString]
+                  ) -> bool:
+    """Whether ``anchor``'s placed ``text`` reads as naming its own of the polygon's arrows (``shaft_of``, by name):
+    the eye takes the arrow nearest the name (its own, no more than :data:`TIE_MM` farther), or, on a leader long
+    enough to be followed (:data:`SLIVER_LEADER_MM`), the first one the leader, run on past its end by the line, meets
+    (its own components apart)."""
+    followed = [leader for leader in _own_leaders(anchor, text, leaders)
+                if LineString(leader.points).length >= SLIVER_LEADER_MM]
+    if followed:
+        start, end = _c(followed[0].points[0]), _c(followed[0].points[-1])
+        run_on = LineString((_xy(start), _xy(start + (start - end) / abs(start - end) * 3 * LEADER_CLEARANCE)))
+        # Its own components, drawn from its tail or to its head, may run between it and the leader's end.
+        parts = (f"{anchor.text}n", f"{anchor.text}τ")
+        met = [(ShapelyPoint(_xy(start)).distance(shaft.intersection(run_on)), name)
+               for name, shaft in shaft_of.items() if name not in parts and shaft.intersects(run_on)]
+        return bool(met) and min(met)[1] == anchor.text
+    box = text_box(text)
+    return shaft_of[anchor.text].distance(box) <= min(shaft.distance(box) for shaft in shaft_of.values()) + TIE_MM
 
 
 def _side_by_side_with(anchor: Anchor, line: LineString) -> bool:
