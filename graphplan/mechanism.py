@@ -561,7 +561,8 @@ def _check_references(mechanism: Mechanism, known_points: set[str], known_links:
             # Any named point will do, on any link: the line to it turns with whatever carries it.
             raise SceneError(f"{load.where}.along", "must be a named point of the mechanism (a frame point, a joint "
                              f"or one of [points]): {_known(sorted(known_points))}", load.along,
-                             hint=lookalike_hint(load.along, known_points) or suggestion(load.along, sorted(known_points)))
+                             hint=(lookalike_hint(load.along, known_points)
+                                   or suggestion(load.along, sorted(known_points))))
         if load.kind == "moment" and load.resisting and load.link in mechanism.translating:
             # Resisting is against the link's ω, or at rest the turning about to begin: a link that never turns has
             # neither, and the load was dropped at every position without a word.

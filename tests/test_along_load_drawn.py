@@ -182,8 +182,9 @@ def test_d_is_drawn_as_a_fixed_pivot_where_it_was_a_dot(drawing, scene):
         apexes = [_xy(item.points[0]) for item in items
                   if isinstance(item, Polyline) and item.closed and item.fill == "white" and len(item.points) == 3]
         # The drawing's offset: where O's apex stands, C's 0.35 m to its right.
-        offset = next(apex for apex in apexes
-                      if any(abs(other - apex - FRAME["C"] / scale) < CLOSE_MM for other in apexes)) - FRAME["O"] / scale
+        o_apex = next(apex for apex in apexes
+                      if any(abs(other - apex - FRAME["C"] / scale) < CLOSE_MM for other in apexes))
+        offset = o_apex - FRAME["O"] / scale
         at_d = [apex for apex in apexes if abs(apex - offset - FRAME["D"] / scale) < CLOSE_MM]
         marks = items if drawing == "positions" else _layer(layers, "mechanism-points").items
         dots = [item for item in marks if isinstance(item, Circle) and item.fill == "black"

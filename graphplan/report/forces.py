@@ -213,8 +213,8 @@ def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
             state = "pulls" if tension > 0 else "pushes" if tension < 0 else "free"
             sense = text[f"forces_spring_{state}"].format(point=spec.point, along=spec.along)
             lines.append(text["forces_external_spring"].format(
-                name=load.name, link=load.link, line=f"{spec.along}{spec.point}", stiffness=number(spec.stiffness, mark=mark),
-                length=number(length, mark=mark), free_length=number(spec.free_length, mark=mark),
+                name=load.name, link=load.link, line=f"{spec.along}{spec.point}",
+                stiffness=number(spec.stiffness, mark=mark), length=number(length, mark=mark), free_length=number(spec.free_length, mark=mark),
                 tension=number(tension, mark=mark), sense=sense, value=value) + "  ")
         elif spec is not None and spec.along is not None:
             # Its angle is this position's alone: the line it keeps is the one to the point it acts along.
