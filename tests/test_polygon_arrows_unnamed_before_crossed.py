@@ -272,3 +272,28 @@ def test_the_crank_rocker_s_sliver_keeps_r23_and_r23n_named_on_short_leaders_acr
                if led_to(leader, arrows, names, prefix)[0].text == "R23")
     assert f"{prefix}-R43" in {key for _, key in crossings([r23], arrows)}
     checked(drawing, strings("en"))
+
+
+def test_the_offset_slider_crank_names_r23n_on_its_polygon_of_position_10_on_a_leader_across_nothing():
+    """At b76b78f R23n was led 10 mm across R23 and R14's line; left to the caption, its two lines made the force
+    sheet of position 10 too tall for one A1 sheet with its lever.  Right of its head, beyond G3's name, it has room
+    on a leader that crosses nothing, which starts by its own arrow and by no other."""
+    (drawing,) = [drawing for drawing in polygons("offset_slider_crank", 10) if drawing.name == "polygon-II-3-4"]
+    prefix = "polygon-II-3-4"
+    layers = {layer.name: layer.items for layer in drawing.layers}
+    arrows = [item for item in layers[f"{prefix}-vectors"] if isinstance(item, Arrow)]
+    names = [item for item in layers[f"{prefix}-labels"] if isinstance(item, Text)]
+    leaders = [item for item in layers[f"{prefix}-leaders"] if isinstance(item, Polyline)]
+    assert "R23n" in {name.text for name in names}
+    assert unnamed_arrows(drawing.caption, strings("en")) == set()
+    (leader,) = [leader for leader in leaders if led_to(leader, arrows, names, prefix)[0].text == "R23n"]
+    assert crossings([leader], arrows) == []
+    shafts = {arrow.key: LineString((arrow.start, arrow.end)) for arrow in arrows}
+    start = ShapelyPoint(leader.points[0])
+    assert [key for key, shaft in shafts.items() if shaft.distance(start) <= LED_FROM_MM] == [f"{prefix}-R23n"]
+    # Its box stands clear of every arrow and line drawn.
+    box = text_box(next(name for name in names if name.text == "R23n"))
+    lines = [item for item in layers[f"{prefix}-lines"] if isinstance(item, Polyline)]
+    assert all(not box.intersects(shaft) for shaft in shafts.values())
+    assert all(not box.intersects(LineString(line.points)) for line in lines)
+    checked(drawing, strings("en"))

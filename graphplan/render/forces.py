@@ -155,6 +155,10 @@ SLIVER_LEADER_LEAST_MM = 0.8
 # The names of components and given loads standing within this (mm) of a whole reaction's name that lies on a line
 # or across an arrow crowd it: they are left unnamed, nearest first, till it finds a clear spot.
 CROWDING_MM = 8.0
+# A component's or load's name on a leader that crosses nothing stands square out from its side or turned this much
+# (degrees) toward either end, where G3's name, say, stands square to the side (the offset slider-crank's R23n at
+# position 10).
+CLEAR_TURNS_DEG = (0.0, 30.0, -30.0, 60.0, -60.0)
 # Space between two polygons of one group (mm).
 POLYGON_GAP_MM = 15.0
 # How many values a caption line lists before it wraps.
@@ -1310,9 +1314,11 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
                  shaft_of: Mapping[str, LineString]) -> tuple[Text, Polyline] | None:
     """A spot for the name of a polygon's side ``anchor`` that the placer left on a line or led across an arrow: its
     text and leader, the leader shorter than :data:`SLIVER_LEADER_MM` and across no ``drawn`` shape but lines side by
-    side with the side it names, the text clear of every drawn shape and of the other ``texts`` and ``leaders``; None
-    where there is none.  A whole reaction's name is set only where it reads as naming its own arrow of those in
-    ``shaft_of`` (_reads_as_own), on a leader up to :data:`WHOLE_LEADER_MM` where a short one finds no such spot.
+    side with the side it names, the text clear of every drawn shape and of the other ``texts`` and ``leaders``, or,
+    where there is none, on a leader up to :data:`WHOLE_LEADER_MM` across nothing where the name reads as naming its
+    own arrow; None where there is neither.  A whole reaction's name is set only where it reads as naming its own
+    arrow of those in ``shaft_of`` (_reads_as_own), on a leader up to :data:`WHOLE_LEADER_MM` where a short one finds
+    no such spot.
 
     In a sliver of sides the placer, costing a leader across an arrow as two leaders crossing, led a name the long way
     round (the crank-rocker starter's R23 at position 5, 7 mm across R23n and R43) where a hand drawing leads it a
@@ -1320,7 +1326,15 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
     if anchor.along is None:
         return None
     if not _whole_reaction(anchor.text):
-        return next(_sliver_spots(anchor, drawn, texts, leaders, SLIVER_LEADER_MM), None)
+        # Where no short leader reaches out of a sliver, a leader that crosses nothing may be longer, and the name
+        # may stand off the side obliquely or by its ends: the offset slider-crank's R23n at position 10, led 10 mm
+        # across R23 and R14's line at b76b78f, stands right of its head, beyond G3's name, which stands square to
+        # the side (left to the caption, it made that force sheet too tall to share an A1 sheet with its lever).
+        short_leader = next(_sliver_spots(anchor, drawn, texts, leaders, SLIVER_LEADER_MM), None)
+        if short_leader is not None:
+            return short_leader
+        return next((spot for spot in _sliver_spots(anchor, drawn, texts, leaders, WHOLE_LEADER_MM, clear=True)
+                     if _reads_as_own(anchor, spot[0], [spot[1]], shaft_of)), None)
 
     def nearest_box(text: Text) -> str:
         box = text_box(text)
@@ -1344,8 +1358,10 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
 
 
 def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[Text], leaders: Sequence[Polyline],
-                  longest: float) -> Iterator[tuple[Text, Polyline]]:
-    """The spots _sliver_spot chooses from, nearest the side first, their leaders shorter than ``longest`` (mm)."""
+                  longest: float, clear: bool = False) -> Iterator[tuple[Text, Polyline]]:
+    """The spots _sliver_spot chooses from, nearest the side first, their leaders shorter than ``longest`` (mm); with
+    ``clear``, leaders that cross no drawn shape at all, their boxes set out square to the side or turned toward
+    either end of it, from more points along it."""
     start, end = _c(anchor.along[0]), _c(anchor.along[1])
     width = text_width(anchor.text, anchor.size)
     shapes = np.array(drawn, dtype=object)
@@ -1356,10 +1372,13 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
                           for shape in drawn]]
     # Nearest the side first (a box set out square to a slanting side comes nearer it by a corner: the leader's
     # length, not the reach, decides how far out it may stand); along it from its middle outwards, either side of it.
+    shares = (0.5, 0.625, 0.375, 0.75, 0.25, 0.875, 0.125) + ((0.9375, 0.0625) if clear else ())
+    sides = [1j, -1j] if not clear else [side * np.exp(1j * math.radians(turn)) for side in (1j, -1j)
+                                         for turn in CLEAR_TURNS_DEG]
     for reach in np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, longest + 2 * anchor.size, 0.2):
-        for share in (0.5, 0.625, 0.375, 0.75, 0.25, 0.875, 0.125):
+        for share in shares:
             point = start + (end - start) * share
-            for side in (1j, -1j):
+            for side in sides:
                 out = side * (end - start) / abs(end - start)
                 # As the placer sets a box out from its point (labels._candidates): its near edge ``reach`` off.
                 x = point.real + out.real * (reach + width / 2)
@@ -1377,6 +1396,14 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
                 if (leader.length >= longest or shapely.intersects(box, shapes).any()
                         or shapely.intersects(box, others).any() or shapely.intersects(box, led).any()
                         or shapely.intersects(leader, led).any() or shapely.intersects(reaching, uncrossable).any()):
+                    continue
+                # Off the side's own shapes (its shaft, head and line) the leader, run on to the box, meets nothing,
+                # and it runs along no other line: its middle stands as far off them as two sides set side by side.
+                if clear and (shapely.intersects(LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near))),
+                                                 shapes).any()
+                              or (shapely.distance(leader.interpolate(0.5, normalized=True),
+                                                   shapes[shapely.distance(ShapelyPoint(_xy(point)), shapes) > ZERO_MM])
+                                  < SIDE_BY_SIDE_MM).any()):
                     continue
                 yield text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
 
