@@ -28,7 +28,7 @@ from .. import wording
 from ..analysis import Analysis, PlanPosition
 from ..forces import ForcePlan
 from ..joint_friction import FrictionPair, pair_name
-from ..loads import external_names, motion_state, spring_length
+from ..loads import external_names, motion_state, spring_length, spring_value
 from ..locale import Count, strings
 from ..render.numerals import number
 from ..rounding import ROUNDING_NOISE
@@ -208,13 +208,16 @@ def external_load_lines(analysis: Analysis, plan: PlanPosition, mark: str = ".")
         spec = specs.get(load.name)
         if spec is not None and spec.spring:
             # Its value is its length's here: k·(L − L0) written out, that the force can be checked by hand.
-            length = float(np.ravel(spring_length(spec, motion_state(analysis.motion)))[plan.index])
-            tension = spec.stiffness * (length - spec.free_length)
+            state_at = motion_state(analysis.motion)
+            length = float(np.ravel(spring_length(spec, state_at))[plan.index])
+            # The force spring_value gives along DB, pushing B away, is the tension's opposite.
+            tension = -float(np.ravel(spring_value(spec, state_at))[plan.index])
             state = "pulls" if tension > 0 else "pushes" if tension < 0 else "free"
             sense = text[f"forces_spring_{state}"].format(point=spec.point, along=spec.along)
             lines.append(text["forces_external_spring"].format(
                 name=load.name, link=load.link, line=f"{spec.along}{spec.point}",
-                stiffness=number(spec.stiffness, mark=mark), length=number(length, mark=mark), free_length=number(spec.free_length, mark=mark),
+                stiffness=number(spec.stiffness, mark=mark), length=number(length, mark=mark),
+                free_length=number(spec.free_length, mark=mark),
                 tension=number(tension, mark=mark), sense=sense, value=value) + "  ")
         elif spec is not None and spec.along is not None:
             # Its angle is this position's alone: the line it keeps is the one to the point it acts along.
