@@ -70,6 +70,7 @@ from .labels import (
     open_direction,
     place_labels,
     remembered,
+    set_out,
     shapes_digest,
     spaced_box,
     text_box,
@@ -437,7 +438,7 @@ def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...
     found = {}
     for group in sheet.forces.groups:
         _, _, shown, scale = _body_frame(sheet, group, paper)
-        whole = tuple(force.name for force in shown if re.fullmatch(r"R\d+", force.name)
+        whole = tuple(force.name for force in shown if _whole_reaction(force.name)
                       and abs(force.force) / scale >= LEAST_ARROW_MM)
         found[group.label] = (scale, whole)
     return found
@@ -1381,8 +1382,7 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
             for side in sides:
                 out = side * (end - start) / abs(end - start)
                 # As the placer sets a box out from its point (labels._candidates): its near edge ``reach`` off.
-                x = point.real + out.real * (reach + width / 2)
-                y = point.imag + out.imag * (reach + 0.55 * anchor.size) - 0.45 * anchor.size
+                x, y = set_out(point.real, point.imag, out.real, out.imag, reach, width / 2, anchor.size)
                 text = Text((x, y), anchor.text, anchor.size, "middle", anchor.colour)
                 box = text_box(text)
                 x0, y0, x1, y1 = box.bounds

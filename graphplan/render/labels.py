@@ -19,7 +19,7 @@ import itertools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 import shapely
@@ -467,8 +467,7 @@ def place_labels(anchors: Sequence[Anchor], obstacles: Sequence[BaseGeometry], g
         radii = gap + np.array(shares)[None, :] * sizes
         ring, order = _rings_and_orders(len(shares), 16)
         direction = prefer + _turns(16)[order] * math.pi / 8
-        x = at[:, :1] + np.cos(direction) * (radii[:, ring] + half_widths)
-        y = at[:, 1:] + np.sin(direction) * (radii[:, ring] + 0.55 * sizes) - 0.45 * sizes
+        x, y = set_out(at[:, :1], at[:, 1:], np.cos(direction), np.sin(direction), radii[:, ring], half_widths, sizes)
         boxes = np.stack((x - half_widths, y - 0.3 * sizes, x + half_widths, y + 1.15 * sizes), axis=-1)
         spots_each = boxes.shape[1]
         shapes = shapely.box(*boxes.reshape(-1, 4).T)
@@ -1047,6 +1046,13 @@ def _misleading(boxes: np.ndarray, own: np.ndarray, others: np.ndarray) -> np.nd
     return (_box_distances(boxes, others) < _box_distance(boxes, own)[:, None] + MISLEADING_MARGIN).sum(axis=1)
 
 
+def set_out(x: Any, y: Any, cos: Any, sin: Any, radius: Any, half_width: Any, size: Any) -> tuple[Any, Any]:
+    """Where a label's text (its anchor point, as :class:`Text` takes it) stands set out from the point (``x``,
+    ``y``) along the direction (``cos``, ``sin``), its box's near edge ``radius`` off: scalars or numpy arrays alike,
+    for every spot the placer tries and for a spot chosen outside it (a polygon's name out of a sliver)."""
+    return x + cos * (radius + half_width), y + sin * (radius + 0.55 * size) - 0.45 * size
+
+
 def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...], directions: int = 16,
                 at: tuple[float, float] | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(ring, order, box) of every spot round ``at`` (the anchor's point unless given): sixteen directions (or
@@ -1064,8 +1070,7 @@ def _candidates(anchor: Anchor, gap: float, shares: tuple[float, ...], direction
     direction = anchor.prefer + turns[order] * math.pi / half
     # Push the box's near edge, not its centre, out to the radius.
     at = anchor.at if at is None else at
-    x = at[0] + np.cos(direction) * (radii[ring] + width / 2)
-    y = at[1] + np.sin(direction) * (radii[ring] + 0.55 * anchor.size) - 0.45 * anchor.size
+    x, y = set_out(at[0], at[1], np.cos(direction), np.sin(direction), radii[ring], width / 2, anchor.size)
     boxes = np.stack((x - width / 2, y - 0.3 * anchor.size, x + width / 2, y + 1.15 * anchor.size), axis=1)
     return ring, order, boxes
 
