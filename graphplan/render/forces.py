@@ -44,6 +44,7 @@ from shapely.geometry import LineString, MultiPoint, Polygon
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
+from shapely.strtree import STRtree
 
 from ..forces import TERM_ROUNDING, ForcePlan, GroupForces, MomentEquation, PolygonVector, ProjectionEquation
 from ..geometry import Line
@@ -95,6 +96,7 @@ from .primitives import (
     pin,
     slider_block,
     svg_id,
+    text_extent,
     text_width,
 )
 from .primitives import to_complex as _c
@@ -1366,17 +1368,23 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
     start, end = _c(anchor.along[0]), _c(anchor.along[1])
     width = text_width(anchor.text, anchor.size)
     shapes = np.array(drawn, dtype=object)
-    others = np.array([spaced_box(text) for text in texts], dtype=object)
-    led = np.array([LineString(leader.points) for leader in leaders], dtype=object)
+    # Thousands of candidate spots are each tested against every shape: trees answer by the shapes near them.
+    shape_tree = STRtree(shapes)
+    box_blockers = STRtree([*drawn, *(spaced_box(text) for text in texts),
+                            *(LineString(leader.points) for leader in leaders)])
+    led = STRtree([LineString(leader.points) for leader in leaders])
     # What a leader may cross: the sides side by side with the one it names (and the lines of action along them).
-    uncrossable = shapes[[not (shape.geom_type == "LineString" and _side_by_side_with(anchor, shape))
-                          for shape in drawn]]
+    uncrossable = STRtree([shape for shape in drawn
+                           if not (shape.geom_type == "LineString" and _side_by_side_with(anchor, shape))])
     # Nearest the side first (a box set out square to a slanting side comes nearer it by a corner: the leader's
     # length, not the reach, decides how far out it may stand); along it from its middle outwards, either side of it.
     shares = (0.5, 0.625, 0.375, 0.75, 0.25, 0.875, 0.125) + ((0.9375, 0.0625) if clear else ())
     sides = [1j, -1j] if not clear else [side * np.exp(1j * math.radians(turn)) for side in (1j, -1j)
                                          for turn in CLEAR_TURNS_DEG]
     for reach in np.arange(LEADER_CLEARANCE + LEADER_GAP + 0.2, longest + 2 * anchor.size, 0.2):
+        # The leader's length first, from the box's corners alone: most spots fail it, before any shape is made; the
+        # boxes of one reach then asked of the tree at once.
+        spots = []
         for share in shares:
             point = start + (end - start) * share
             for side in sides:
@@ -1384,28 +1392,37 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
                 # As the placer sets a box out from its point (labels._candidates): its near edge ``reach`` off.
                 x, y = set_out(point.real, point.imag, out.real, out.imag, reach, width / 2, anchor.size)
                 text = Text((x, y), anchor.text, anchor.size, "middle", anchor.colour)
-                box = text_box(text)
-                x0, y0, x1, y1 = box.bounds
-                near = complex(min(max(point.real, x0), x1), min(max(point.imag, y0), y1))
-                if abs(near - point) < LEADER_CLEARANCE + LEADER_GAP + SLIVER_LEADER_LEAST_MM:
-                    continue
-                toward = (near - point) / abs(near - point)
-                leader = LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near - toward * LEADER_GAP)))
-                # Run on to the box: an arrow in the gap between the leader's end and the letters reads as crossed.
-                reaching = LineString((_xy(point), _xy(near)))
-                if (leader.length >= longest or shapely.intersects(box, shapes).any()
-                        or shapely.intersects(box, others).any() or shapely.intersects(box, led).any()
-                        or shapely.intersects(leader, led).any() or shapely.intersects(reaching, uncrossable).any()):
-                    continue
-                # Off the side's own shapes (its shaft, head and line) the leader, run on to the box, meets nothing,
-                # and it runs along no other line: its middle stands as far off them as two sides set side by side.
-                if clear and (shapely.intersects(LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near))),
-                                                 shapes).any()
-                              or (shapely.distance(leader.interpolate(0.5, normalized=True),
-                                                   shapes[shapely.distance(ShapelyPoint(_xy(point)), shapes) > ZERO_MM])
-                                  < SIDE_BY_SIDE_MM).any()):
-                    continue
-                yield text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
+                extent = text_extent(text)
+                near = complex(min(max(point.real, extent[0]), extent[2]), min(max(point.imag, extent[1]), extent[3]))
+                reach_to_box = abs(near - point)
+                if (LEADER_CLEARANCE + LEADER_GAP + SLIVER_LEADER_LEAST_MM <= reach_to_box
+                        <= longest + LEADER_CLEARANCE + LEADER_GAP + 1e-9):
+                    spots.append((point, text, extent, near, reach_to_box))
+        if not spots:
+            continue
+        blocked = set(box_blockers.query(shapely.box(*np.array([spot[2] for spot in spots]).T),
+                                         predicate="intersects")[0].tolist())
+        for index, (point, text, extent, near, reach_to_box) in enumerate(spots):
+            if index in blocked:
+                continue
+            toward = (near - point) / reach_to_box
+            leader = LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near - toward * LEADER_GAP)))
+            # Run on to the box: an arrow in the gap between the leader's end and the letters reads as crossed.
+            reaching = LineString((_xy(point), _xy(near)))
+            if leader.length >= longest or _meets(led, leader) or _meets(uncrossable, reaching):
+                continue
+            # Off the side's own shapes (its shaft, head and line) the leader, run on to the box, meets nothing, and
+            # it runs along no other line: its middle stands as far off them as two sides set side by side.
+            if clear and (_meets(shape_tree, LineString((_xy(point + toward * LEADER_CLEARANCE), _xy(near))))
+                          or (shapely.distance(leader.interpolate(0.5, normalized=True),
+                                               shapes[shapely.distance(ShapelyPoint(_xy(point)), shapes) > ZERO_MM])
+                              < SIDE_BY_SIDE_MM).any()):
+                continue
+            yield text, Polyline(tuple(leader.coords), Stroke(LEADER_WIDTH, anchor.colour))
+
+
+def _meets(tree: STRtree, geometry: BaseGeometry) -> bool:
+    return tree.query(geometry, predicate="intersects").size > 0
 
 
 def _reads_as_own(anchor: Anchor, text: Text, leaders: Sequence[Polyline], shaft_of: Mapping[str, LineString]
