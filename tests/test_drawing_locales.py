@@ -241,7 +241,7 @@ def test_every_key_of_the_drawings_prefixes_is_drawn():
     english = strings("en")
     # Named by render/sheet.py for the block's drawing name, not by a form.
     by_the_sheets = {"tb_sheet_forces", "tb_sheet_forces_position", "tb_sheet_forces_friction_position",
-                     "tb_sheet_dynamics", "tb_sheet_balancing"}
+                     "tb_sheet_with_load_diagrams", "tb_sheet_dynamics", "tb_sheet_balancing"}
     for kind, prefix in PREFIXES.items():
         keys = {key for key in english if key.startswith(prefix)}
         marked = {key: f"[[{key}]]{value}" for key, value in english.items() if key.startswith(prefix)}

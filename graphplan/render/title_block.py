@@ -149,6 +149,28 @@ def cramped(details: Details, form: str, text: Mapping[str, str]) -> dict[str, f
     return found
 
 
+def drawing_size(form: str, drawing: str, text: Mapping[str, str]) -> float:
+    """The size (mm) ``form``'s block sets ``drawing``, the kind of drawing, at: the smallest of its lines, below the
+    usual where its cell holds it only smaller."""
+    fields = TitleBlockFields(title="", drawing=drawing, scale="", sheet=1, sheets=1)
+
+    def texts(of: TitleBlockFields) -> set[Text]:
+        return {item for item in title_block(form, of, text, (0.0, 0.0)) if isinstance(item, Text)}
+
+    return min((item.size for item in texts(fields) - texts(replace(fields, drawing=""))), default=0.0)
+
+
+def fitting_name(form: str, names: Sequence[str], text: Mapping[str, str]) -> str:
+    """The first of ``names`` that ``form``'s block sets at :data:`SMALLEST_LETTERING` or more; where none fits so,
+    the one it sets largest.
+
+    A sheet that holds two kinds of drawing is named by both where its cell
+    holds the longer name legibly, else by the shorter names after it.
+    """
+    sizes = {name: drawing_size(form, name, text) for name in names}
+    return next((name for name in names if sizes[name] >= SMALLEST_LETTERING), max(names, key=sizes.__getitem__))
+
+
 @dataclass(frozen=True, kw_only=True)
 class TitleBlockFields(Details):
     """What the title block says: the :class:`Details`, and what the sheet itself gives.
