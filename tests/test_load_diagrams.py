@@ -25,7 +25,7 @@ from graphplan.errors import SceneError
 from graphplan.load_diagrams import of_analysis
 from graphplan.locale import strings
 from graphplan.render import load_diagrams as layout
-from graphplan.render.primitives import Circle, Polyline, Text
+from graphplan.render.primitives import Arrow, Circle, Polyline, Text, text_extent
 from graphplan.report.note import note_markdown
 from graphplan.scales import STANDARD_MANTISSAS
 from graphplan.starters import starter
@@ -134,6 +134,29 @@ def test_the_drawing_rings_and_writes_each_plan_position_s_value_at_its_travel_a
              and item.points[0][1] == 0.0 and item.points[1][1] == layout.TICK_MM]
     assert len(ticks) == 12
     assert any("μF = 100 N/mm" in text and "μs = 0.001 m/mm" in text for text in texts)
+
+
+def test_each_row_s_sense_arrow_is_headed_as_the_axes_are_and_clear_of_its_numbers():
+    """The arrows before the rows of numbers had 1.8 mm heads in thin grey, beside 2.5 mm numbers and the axes'
+    3 mm heads: they are drawn as the axes are, each at its row's height, pointing the row's way, and stand off
+    every number by a millimetre or more."""
+    (diagram,) = of_analysis(compressor())
+    layers = layout.parts([diagram], strings("en"))[0]
+    items = [item for layer in layers for item in layer.items]
+    (axis,) = [item for item in items if isinstance(item, Arrow) and item.key == "load-4-travel-axis"]
+    rows = [item for item in items if isinstance(item, Arrow) and item.start[1] == item.end[1] < 0]
+    assert len(rows) == 2   # the forward stroke's and the return's
+    numbers = [item for item in items if isinstance(item, Text) and item.text.isdigit()
+               and item.size == layout.NUMBER_SIZE]
+    for arrow in rows:
+        assert arrow.head_length == axis.head_length and arrow.stroke == axis.stroke
+        # At the middle of its row's first line of numbers, to the left of all of them.
+        assert any(abs(number.at[1] + layout.NUMBER_SIZE / 2 - arrow.start[1]) < 1e-9 for number in numbers)
+        for number in numbers:
+            x0, y0, _, y1 = text_extent(number)
+            assert max(arrow.start[0], arrow.end[0]) + 1.0 <= x0 or not y0 - 1.0 <= arrow.start[1] <= y1 + 1.0
+    senses = sorted(arrow.end[0] - arrow.start[0] > 0 for arrow in rows)
+    assert senses == [False, True]
 
 
 @pytest.mark.parametrize("locale", ["en", "ru", "zh"])

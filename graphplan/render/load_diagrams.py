@@ -53,6 +53,9 @@ FIELD_MM = 60.0
 SMALLER_FIELDS = ((120.0, 45.0), (100.0, 40.0), (80.0, 30.0))
 # The rows of the positions' numbers under the diagram, and between them (mm).
 ROW_GAP_MM = 5.0
+# The arrow before each row, giving its sense of travel (mm from the ordinate): drawn as the axes are, long enough
+# that its head is theirs (an arrow's head takes at most primitives.HEAD_SHARE of it), and clear of the first number.
+ROW_ARROW_FROM_MM, ROW_ARROW_TO_MM = -12.0, -4.0
 # The drawing's title, laid over its first diagram.
 TITLE_LAYER = "title"
 
@@ -214,7 +217,8 @@ def _numbers(diagram: LoadDiagram, xs: list[float], shown: list[int], low: float
             ends[line] = xs[k] + half
             items.append(Text((xs[k], top - NUMBER_SIZE - line * (NUMBER_SIZE + 1.2)), label, NUMBER_SIZE, "middle"))
         y = top - NUMBER_SIZE / 2
-        items.append(Arrow((-12.0, y), (-5.0, y), _THIN, 1.8) if reference else Arrow((-5.0, y), (-12.0, y), _THIN, 1.8))
+        tail, tip = (ROW_ARROW_FROM_MM, ROW_ARROW_TO_MM) if reference else (ROW_ARROW_TO_MM, ROW_ARROW_FROM_MM)
+        items.append(Arrow((tail, y), (tip, y), _AXIS, AXIS_HEAD_MM))
         top -= len(ends) * (NUMBER_SIZE + 1.2) + ROW_GAP_MM - 1.2
     guides: list[Primitive] = []
     if low < 0:
