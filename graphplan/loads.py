@@ -386,16 +386,22 @@ def _external(mechanism: Mechanism, state: State, acting: np.ndarray | None) -> 
         if load.resisting:
             # A resisting load opposes the motion whatever the sign its diagram is drawn with.
             on = np.abs(on)
+        value = given_value(load, state)
         if load.kind == "moment":
-            value = -abs(load.value) * resisted_sense(load, state) if load.resisting else load.value
+            value = -abs(value) * resisted_sense(load, state) if load.resisting else value
             found.append(Load(name, load.link, None, 0j, on * value))
         else:
             direction = line_of_action(load, state)
-            force = spring_value(load, state) * direction if load.spring else load.value * direction
-            if load.resisting:
-                force = -abs(load.value) * direction * resisted_sense(load, state)
+            force = -abs(value) * direction * resisted_sense(load, state) if load.resisting else value * direction
             found.append(Load(name, load.link, load.point, on * force, 0.0))
     return found
+
+
+def given_value(load: LoadSpec, state: State) -> Scalar:
+    """A load's value at the positions of ``state``, before its window and a resisting load's sense: a spring's its
+    length's (:func:`spring_value`), which the scene gives no value for; any other's as the scene gives it (a
+    diagram's largest magnitude, which its shares scale)."""
+    return spring_value(load, state) if load.spring else load.value
 
 
 def spring_length(load: LoadSpec, state: State) -> Scalar:

@@ -100,7 +100,9 @@ class LoadSpec:
 
     With a ``diagram`` (share of the working stroke, value) the load follows
     it piecewise-linearly over the window its shares span, and ``value`` is
-    its largest magnitude.  ``stroke`` names the link and sense whose strokes
+    its largest magnitude.  A spring has no ``value`` (None): its force is its
+    length's at each position (:func:`graphplan.loads.given_value` gives any
+    load's there).  ``stroke`` names the link and sense whose strokes
     ``during`` and the diagram are of, where they are not the working link's
     (a second cylinder's piston, whose strokes come at other crank angles).
     """
@@ -108,7 +110,7 @@ class LoadSpec:
     where: str
     kind: str
     link: int
-    value: float
+    value: float | None
     resisting: bool
     during: str | tuple[float, float]
     point: str | None
@@ -119,7 +121,7 @@ class LoadSpec:
     # the line turns as the mechanism moves.
     along: str | None = None
     # A spring along that line (N/m, m), in place of a value: its force is its length's, k·(L − L0) at each position,
-    # so ``value`` is 0 and means nothing for it.
+    # so ``value`` is None for it, which no sum takes for a force of 0 N.
     stiffness: float | None = None
     free_length: float | None = None
 
@@ -960,7 +962,7 @@ def _read_load(where: str, item: object) -> LoadSpec:
     diagram = _read_load_diagram(table) if table.has("diagram") else None
     if spring:
         # Its force is its length's at each position, and it acts always: no value, window or stroke to give.
-        value: float = 0.0
+        value: float | None = None
         during: str | tuple[float, float] = "always"
     elif diagram is not None:
         if table.has("value") or table.has("during"):

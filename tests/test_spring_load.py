@@ -28,6 +28,7 @@ from graphplan import load_diagrams
 from graphplan.analysis import analyse
 from graphplan.dynamics import equivalent_model_of
 from graphplan.errors import SceneError
+from graphplan.loads import given_value, motion_state
 from graphplan.report.forces import external_load_lines
 from graphplan.scene import loads as scene_of_text
 
@@ -93,6 +94,25 @@ def test_the_cases_hold_a_stretched_a_squeezed_and_a_crossing_spring():
     assert np.all(lengths["squeezed spring from the frame on the coupler"] < 0)
     crossing = lengths["spring on the slider squeezed and stretched"]
     assert np.any(crossing > 0) and np.any(crossing < 0)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_a_spring_has_no_value_to_take_for_a_force_and_its_given_value_is_its_length_s(case):
+    """A spring stored value = 0.0, which code reading ``value`` without asking whether the load is a spring would
+    take for a force of 0 N: it holds None, which no sum takes, and :func:`graphplan.loads.given_value` gives its
+    force along D at each position, −k·(L − L0), as any other load's value."""
+    found = analysis(case)
+    (spec,) = found.scene.loads
+    assert spec.spring and spec.value is None
+    with pytest.raises(TypeError):
+        abs(spec.value)
+    _, length = _spring_force(case, found.motion)
+    stiffness, free_length = CASES[case][1][3:]
+    np.testing.assert_allclose(given_value(spec, motion_state(found.motion)), -stiffness * (length - free_length),
+                               rtol=1e-12, atol=1e-9)
+    plain = scene_of_text(_with_loads(CASES[case][0], '\n[[loads]]\nkind = "force"\nlink = 2\npoint = "A"\n'
+                                      'angle = 30.0\nvalue = -125.0\n'))
+    assert given_value(plain.loads[0], motion_state(found.motion)) == -125.0
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
