@@ -34,6 +34,7 @@ from .lever import Lever, lever
 from .load_strokes import diagrams_in_travel, resisting_forces_turning, strokes_of_other_links
 from .loads import (
     activity,
+    along_moving_points,
     has_loads,
     link_loads,
     motion_state,
@@ -236,6 +237,7 @@ def analyse(scene: Scene) -> Analysis:
                             + strokes_of_other_links(mechanism, positions)
                             + diagrams_in_travel(mechanism, positions) + unusual
                             + resisting_forces_turning(mechanism, positions, motion)
+                            + along_moving_points(mechanism)
                             + _self_locking(mechanism, positions, friction, with_friction)
                             + _turned_round(mechanism, balance, with_friction)
                             + _locked_between(mechanism, positions, friction, locked_spans)
@@ -269,7 +271,7 @@ def read_off_sheets(analysis: Analysis, sheets: SheetsDrawn) -> Analysis:
 # the console gives them without one.
 SCENE_WIDE_WARNINGS = frozenset({"lengths-in-mm", "idle-throughout", "working-throughout", "stroke-of-another-link",
                                  "diagram-in-travel", "high-friction", "speed-in-rpm", "masses-in-grams",
-                                 "inertia-too-large", "resisting-turns-round"})
+                                 "inertia-too-large", "resisting-turns-round", "along-moving-point"})
 
 
 def _self_locking(mechanism: Mechanism, positions: PositionSet, friction: tuple[FrictionPair, ...],

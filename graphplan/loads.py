@@ -26,7 +26,7 @@ from .errors import SceneError
 from .forces import Load
 from .kinematics import PointMotion, Scalar, Vector, at, dot, unit
 from .mechanism import Mechanism
-from .motion import Motion, solve
+from .motion import Motion, PositionWarning, solve
 from .plans import Plan
 from .positions import PositionSet, in_working_stroke, stroke_extremes
 from .rounding import largest_finite
@@ -480,6 +480,36 @@ def refuse_lines_without_length(mechanism: Mechanism, motion: Motion, numbers: n
         raise SceneError(f"{load.where}.along", f"{load.along} meets {load.point} {at}, at ({where.real:.6g}, "
                          f"{where.imag:.6g}) m, where there is no line between them for the force to act along: "
                          f"name a point that stays clear of {load.point}, or give the force an angle", load.along)
+
+
+def along_moving_points(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
+    """An ``along-moving-point`` warning for each force ``along`` a point of a moving link: a spring or a cylinder
+    pinned there pushes that link back, which the scene gives no load for (a cylinder between two moving links is
+    two loads, one at each end along the other's point), or, where the point is on the load's own link, pushes the
+    link on itself and moves nothing: the force is taken as one from outside, turning with the line."""
+    scene = mechanism.scene
+    told = []
+    for load in scene.loads:
+        if load.kind != "force" or load.along is None or load.along in scene.frame_points:
+            continue
+        carriers = sorted(link for link in mechanism.moving_links if load.along in mechanism.fixed_on.get(link, ()))
+        what = "spring" if load.spring else "cylinder"
+        if load.link in carriers:
+            told.append(PositionWarning(0, "along-moving-point", (
+                f"{load.where} acts along {load.along}, a point of link {load.link}, the link it acts on: a {what} "
+                f"between two points of one link pushes it on itself and moves nothing; the force is taken as one "
+                f"from outside along {load.along}→{load.point}, turning with link {load.link}")))
+            continue
+        if not carriers or any(other.kind == "force" and other.point == load.along and other.along == load.point
+                               and other.link in carriers for other in scene.loads):
+            continue
+        given = "stiffness and free_length" if load.spring else "value"
+        told.append(PositionWarning(0, "along-moving-point", (
+            f"{load.where} acts along {load.along}, a point of moving link {carriers[0]}: a {what} pinned there "
+            f"pushes link {carriers[0]} back at {load.along}, which no load of the scene does; give it as "
+            f"[[loads]] kind = \"force\", link = {carriers[0]}, point = \"{load.along}\", along = \"{load.point}\" "
+            f"with the same {given}, or pin the {what} at a frame point")))
+    return tuple(told)
 
 
 def refuse_resisting_along_no_motion(mechanism: Mechanism, motion: Motion) -> None:
