@@ -51,6 +51,7 @@ from ..geometry import Line
 from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
 from ..lever import Lever, LeverTerm, turned
+from ..loads import external_names
 from ..mechanism import Mechanism
 from ..memo import OwnedMemo, RecentMemo
 from ..motion import Motion
@@ -189,6 +190,12 @@ _ACTION_RUN_ON = Stroke(0.25, "#333333", (2.5, 1.5))
 _ARM = Stroke(0.2, "#555555")
 _ARM_RUN_ON = Stroke(0.2, "#555555", (1.5, 1.0))
 _AXIS = Stroke(0.2, "#333333", (6.0, 1.5, 1.0, 1.5))
+# A force along a turning line (a cylinder's or a spring's) has its line drawn on its group cut free, thin dash-dot,
+# from its point to the point it is along: the cylinder or spring is cut away with the frame or the other link.
+_ALONG_LINE = Stroke(0.25, "#333333", (6.0, 1.5, 1.0, 1.5))
+# The line is run to the point it is along where that lies within this many times the group's size of it; farther,
+# it stops at that length, where the drawing would grow mostly to show one line.
+ALONG_REACH = 1.5
 _LEVER = Stroke(0.6)
 _RAY = Stroke(0.25, "#555555")
 _MOMENT = Stroke(0.4)
@@ -385,7 +392,8 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     arms += displaced
     arm_anchors += displaced_anchors
     arrows += leaders
-    figure = links + arrows + turning + circles + arms
+    along, along_names = _along_lines(sheet, group, paper)
+    figure = links + arrows + turning + circles + arms + along
     # Left on a line, a load's name reaches farther out on a leader from its arrow's shaft (its anchor's ``along``),
     # which ties it to its arrow among the group's arms and arcs (the triad with a slider's Fu6 lay on its own line
     # of action run on to its arm, every leader from its head to a clear spot crossing another name); a point's,
@@ -393,6 +401,8 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     # III triad's h3 and h8 on its A3 sheet of position 8), it reads as naming another.
     points = [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
               for name in _named_points(sheet, group) + special_names for where in [paper(sheet.positions[name])]]
+    points += [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
+               for name, where in along_names if name not in {anchor.text for anchor in points}]
     others = points + turning_anchors + circle_anchors + arm_anchors
     labels = _lettered(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others))
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
@@ -410,6 +420,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption += _wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
+    friction += [Layer(f"body-{key}-along", tuple(along))] if along else []
     layers = [Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
               Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
               Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)]
@@ -417,6 +428,58 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     parted = (Drawing(f"body-{key}", layers, tuple(caption[:2])),
               Drawing(f"equations-{key}", [], (caption[0], *caption[2:]))) if len(caption) > 2 else None
     return Drawing(f"body-{key}", layers, tuple(caption), parted)
+
+
+def _along_lines(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
+                 ) -> tuple[list[Primitive], list[tuple[str, tuple[float, float]]]]:
+    """The line of each force along a turning line (``[[loads]]`` with ``along``) on the group, from its point to
+    the point it is along, and that point's name and place on the paper where the group's drawing does not show it.
+
+    Cut free, the group keeps no cylinder, spring or frame: the line to D is what shows that the force acts along
+    DB, as the hand drawing shows it.  A cylinder between two links of the group (two loads, one at each end) is
+    one line.  A point farther off than :data:`ALONG_REACH` times the group's size is not reached: its line stops
+    there, unnamed, its direction still DB's.
+    """
+    specs = dict(zip(external_names(sheet.mechanism.scene.loads), sheet.mechanism.scene.loads, strict=True))
+    drawn_points = set(_named_points(sheet, group))
+    reach = ALONG_REACH * max(_group_size_mm(sheet, group), 1.0)
+    lines: list[Primitive] = []
+    names: list[tuple[str, tuple[float, float]]] = []
+    done: set[frozenset[str]] = set()
+    for load in group.loads:
+        spec = specs.get(load.name)
+        if spec is None or spec.along is None or load.point is None or not load.is_force or load.force == 0:
+            continue
+        if frozenset((spec.along, load.point)) in done:
+            continue
+        done.add(frozenset((spec.along, load.point)))
+        near = _c(paper(_load_point(sheet, load.point)))
+        far = _c(paper(_position(sheet, spec.along)))
+        if abs(far - near) == 0.0:
+            continue
+        if abs(far - near) > reach:
+            far = near + reach * (far - near) / abs(far - near)
+        elif spec.along not in drawn_points:
+            names.append((spec.along, _xy(far)))
+            lines.append(dot_marker(_xy(far)))
+        lines.append(Polyline((_xy(near), _xy(far)), _ALONG_LINE))
+    return lines, names
+
+
+def _position(sheet: ForceSheet, name: str) -> complex:
+    """A point of the mechanism at the sheet's instant (m), whether or not the sheet's positions list it."""
+    if name in sheet.positions:
+        return sheet.positions[name]
+    return complex(at(sheet.motion.points[name].r, sheet.index))
+
+
+def _group_size_mm(sheet: ForceSheet, group: GroupForces) -> float:
+    """The larger side of the box round the group's points on the paper (mm)."""
+    points = [sheet.positions[name] for name in _named_points(sheet, group)]
+    if not points:
+        return 0.0
+    xs, ys = [point.real for point in points], [point.imag for point in points]
+    return max(max(xs) - min(xs), max(ys) - min(ys)) / sheet.length_scale
 
 
 def _body_frame(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
