@@ -17,6 +17,7 @@ sliding pair enters with the relative velocity, as its power loss does.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .forces import TERM_ROUNDING, Load
@@ -64,6 +65,39 @@ class Lever:
     def difference_percent(self, polygons: float) -> float:
         """(lever − polygons)/polygons · 100: how far the two methods part."""
         return (self.balancing - polygons) / polygons * 100.0 if polygons else 0.0
+
+
+def arm_foot(velocity: Plan, image: str, force: complex, shift: complex = 0j) -> complex:
+    """The foot of the arm from the pole to the line of ``force`` at the image ``image`` (shifted by ``shift``) on the
+    turned plan, in the plan's units (m/s): the arm is the segment from the pole to it."""
+    at = turned(velocity.points[image] + shift)
+    unit = force / abs(force)
+    return at - (at * unit.conjugate()).real * unit
+
+
+def shared_arms(velocity: Plan, loads: Sequence[tuple[str, str, complex, complex]], tolerance: float
+                ) -> list[tuple[str, ...]]:
+    """The loads of the lever (name, image, force, shift) gathered by their arm: loads whose lines are one line
+    (their arms' feet within ``tolerance``, m/s on the plan: the drafting precision at the lever's scale, and
+    farther than that from the pole, where a foot fixes the line square to its arm) have one arm, the same
+    perpendicular from the pole, which the student draws and names once.  An arm within ``tolerance`` of the pole
+    stays each load's own: lines through the pole's neighbourhood may run every way.
+
+    Several couples on one link put their forces at the same two images across it (the inertia moment's and the
+    friction moments' at the link's joints), and a crank's couples lie on the balancing force's line: on the friction
+    lever three arms of one perpendicular were named h4, h11, h15 at one foot.  Each gathering keeps the loads'
+    order, and the gatherings are in the order of their first loads.
+    """
+    gathered: list[tuple[list[str], complex]] = []  # names, foot
+    for name, image, force, shift in loads:
+        foot = arm_foot(velocity, image, force, shift)
+        for names, first_foot in gathered:
+            if abs(foot) > tolerance and abs(first_foot) > tolerance and abs(foot - first_foot) <= tolerance:
+                names.append(name)
+                break
+        else:
+            gathered.append(([name], foot))
+    return [tuple(names) for names, _ in gathered]
 
 
 def turned(velocity: complex) -> complex:
@@ -141,4 +175,4 @@ def _couple(load: Load, positions: dict[str, complex], velocity: Plan) -> list[L
             _term(f"{load.name}″", first_letter, -force, velocity.points[first_letter])]
 
 
-__all__ = ["Lever", "LeverTerm", "lever", "turned"]
+__all__ = ["Lever", "LeverTerm", "arm_foot", "lever", "shared_arms", "turned"]

@@ -250,7 +250,10 @@ def test_a_chinese_sheet_uses_its_own_strings():
 
 
 def test_the_lever_arms_as_drawn_give_the_lever_moments(case):
-    """|F|·h·μV of every force on the lever is its term's moment; the arm runs from the pole square to the force."""
+    """|F|·h·μV of every force on the lever is its term's moment; the arm runs from the pole square to the force.
+
+    Forces on one line have one arm, drawn once (in the layer of the first of them): a force whose own arm layer
+    does not start at the pole takes the arm from the pole whose foot is on its line."""
     analysis, position, layers = case
     lever = position.lever
     scale = force_sheet(analysis, position).lever_scale or position.velocity.scale  # a crowded plan drawn larger
@@ -261,24 +264,34 @@ def test_the_lever_arms_as_drawn_give_the_lever_moments(case):
     entries = [(term.name, term.force, term.moment) for term in lever.terms if term.image and term.force != 0]
     entries.append(("Fb", lever.balancing_force, -total))
     largest = max(abs(force) for _, force, _ in entries)
+    # The arms from the pole: the first line of each arm's layer, the most of which start at one point, the pole.
+    firsts = [items[0] for key, items in layers.items()
+              if key.startswith("lever-arm-") and isinstance(items[0], Polyline)]
+    starts = max((complex(*item.points[0]) for item in firsts),
+                 key=lambda start: sum(abs(complex(*item.points[0]) - start) < CLOSE_MM for item in firsts))
+    arms = [item for item in firsts if abs(complex(*item.points[0]) - starts) < CLOSE_MM]
     for name, force, moment in entries:
         if abs(force) <= 1e-9 * largest:
             continue
         arrow = arrows[force_layout.svg_id("lever", name)]
+        along = (complex(*arrow.end) - complex(*arrow.start)) / arrow.length
+        # An arrow set beside its line (a second load on one line at one point) is tied to its point by a leader.
+        through = next((complex(*leader.points[0]) for leader in layers["lever-forces"]
+                        if isinstance(leader, Polyline) and leader.points[-1] == arrow.start), complex(*arrow.start))
         layer = layers.get(force_layout.svg_id("lever-arm", name))
-        if layer is None:  # the force's line passes through the pole
-            assert abs(moment) / abs(force) / scale < ZERO_MM, name
+        if layer is None and abs(moment) / abs(force) / scale < ZERO_MM:  # the force's line passes through the pole
             continue
+        if layer is None or abs(complex(*layer[0].points[0]) - starts) >= CLOSE_MM:
+            # Its line is another force's: the arm drawn from the pole whose foot is on it.
+            layer = next(([item] for item in arms
+                          if abs(((complex(*item.points[-1]) - through) * along.conjugate()).imag) < CLOSE_MM), None)
+        assert layer is not None, f"{name}: no arm drawn to its line"
         arm = layer[0]
         assert isinstance(arm, Polyline)
         start, foot = (complex(*p) for p in arm.points)
         pole = start if pole is None else pole
         assert abs(start - pole) < CLOSE_MM, "every arm starts at the pole"
-        along = (complex(*arrow.end) - complex(*arrow.start)) / arrow.length
         assert abs(((foot - start) * along.conjugate()).real) < CLOSE_MM, f"{name}: the arm is not square"
-        # An arrow set beside its line (a second load on one line at one point) is tied to its point by a leader.
-        through = next((complex(*leader.points[0]) for leader in layers["lever-forces"]
-                        if isinstance(leader, Polyline) and leader.points[-1] == arrow.start), complex(*arrow.start))
         assert abs(((foot - through) * along.conjugate()).imag) < CLOSE_MM, f"{name}: foot off the line"
         assert abs(foot - start) * scale * abs(force) == pytest.approx(abs(moment), rel=1e-6, abs=1e-9), name
         checked += 1
@@ -582,22 +595,17 @@ def test_the_lever_s_arms_are_lettered_clear_of_the_pole_or_given_under_it(scene
     for name, label in arms.items():
         assert text_box(label).distance(shapely_point(pole.real, pole.imag)) >= 8.0, name
     equation = next(line for line in lever.caption if line.startswith("ΣMp:"))
-    named = re.findall(r"·(h\d+)\b", equation)
+    # Each term with its arm's name: loads on one line share one arm, named once.
+    named = re.findall(r"([^\s+−]+)·(h\d+)\b", equation)
     assert len(named) >= 5
     given = dict(re.findall(r"(h\d+) = ([\d.,]+)", " ".join(lever.caption[lever.caption.index(equation) + 1:])))
     assert given, "some arm by the pole is left unlettered"
-    lengths = {}
-    count = 0
-    largest = max(abs(position.lever.balancing_force), *(abs(term.force) for term in position.lever.terms))
-    for term in position.lever.terms:  # a force that is rounding noise is not drawn, nor its arm numbered
-        if (term.image and abs(term.force) > 1e-9 * largest
-                and abs(term.moment) / abs(term.force) / scale >= ZERO_MM):
-            count += 1
-            lengths[f"h{count}"] = abs(term.moment) / abs(term.force) / scale
-    for name in named:
+    lengths = {term.name: abs(term.moment) / abs(term.force) / scale for term in position.lever.terms
+               if term.image and term.force}
+    for load, name in named:
         assert name in arms or name in given, name
         if name in given:
-            assert float(given[name].replace(",", ".")) == pytest.approx(lengths[name], rel=2e-3), name
+            assert float(given[name].replace(",", ".")) == pytest.approx(lengths[load], rel=2e-3), name
 
 
 @pytest.mark.parametrize("scene, number, locale", [("shaper_six_bar", 3, "en"), ("quick_return_slotted_lever", 4, "zh"),

@@ -50,7 +50,7 @@ from ..forces import TERM_ROUNDING, ForcePlan, GroupForces, MomentEquation, Poly
 from ..geometry import Line
 from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
-from ..lever import Lever, LeverTerm, turned
+from ..lever import Lever, LeverTerm, shared_arms, turned
 from ..loads import external_names
 from ..mechanism import Mechanism
 from ..memo import OwnedMemo, RecentMemo
@@ -1615,7 +1615,8 @@ def _lever_drawing(sheet: ForceSheet, lever: Lever) -> Drawing:
     """The lever of :func:`_lever`, made once for each lever, plan and scale while the lever lives."""
     # What _lever reads of the sheet besides the lever (a lever's plan position holds its velocity plan).
     key = (id(sheet.velocity), sheet.lever_drawn_scale, sheet.lever_scale_line, sheet.forces.balancing,
-           sheet.mechanism.scene.frame_link, tuple(sheet.text.items()))
+           sheet.mechanism.scene.frame_link, sheet.mechanism.scene.drawing.drafting_precision,
+           tuple(sheet.text.items()))
     return _LEVERS.get(lever, key, lambda: _lever(sheet, lever))
 
 
@@ -1653,7 +1654,6 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     arm_anchors: list[Anchor] = []
     arm_lengths: dict[str, float] = {}  # on the drawing, mm
     parts: list[str] = []
-    count = 0
     moments = {term.name: term.moment for term in lever.terms}
     # Beside the loads' powers at the plan's fastest point, a term's is rounding where its point stands still or moves
     # square to it: at a Scotch yoke's dead centre every one is, and the lever wrote h1 = 0.000000000000006661 mm
@@ -1665,6 +1665,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         return lever.stands(term) and abs(term.moment) > TERM_ROUNDING * reach
 
     standing = {term.name for term in lever.terms if stands(term)} | {"Fb"}
+    arm_of = _arm_names(sheet, lever, [(name, image, force) for name, image, force, _, _ in named if name in standing
+                                       and not _negligible(force, [other for _, _, other, _, _ in named])])
     balancing = lever.balancing if len(standing) > 1 else 0.0
     undrawn: list[str] = []  # arms in the equation too short to draw, given under it
     load_points: dict[str, str] = {}  # each named load's point on the lever, where its arrow stands
@@ -1703,11 +1705,15 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         foot = _foot(0j, start, unit)
         if name not in standing:
             continue
-        count += 1
-        arm = "hb" if name == "Fb" else f"h{count}"
-        arm_lengths[arm] = abs(foot)
+        arm = arm_of[name]
         if name != "Fb":
             parts.append(f"{_sign(moments[name])} {name}·{arm}")
+        if arm in arm_lengths:
+            # Its arm is drawn and named with the first load on its line: only the line is run on to its foot.
+            if run_on := _perpendicular(0j, start, end, unit)[1:]:
+                arm_layers.append(Layer(svg_id("lever-arm", name), tuple(run_on)))
+            continue
+        arm_lengths[arm] = abs(foot)
         if abs(foot) < ZERO_MM:
             # Too short to draw (a point's image by the pole, near a dead centre), its moment is still in Mb.
             undrawn.append(arm)
@@ -1790,6 +1796,25 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                              Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
                              Layer("lever-labels", labels.texts)], (*caption, *under),
                    run_on=_short_run_on(short, apart, text, after=len(under)))
+
+
+def _arm_names(sheet: ForceSheet, lever: Lever, loads: Sequence[tuple[str, str, complex]]) -> dict[str, str]:
+    """The name of each standing load's arm on the lever (``loads``: name, image, force, in the order they are drawn,
+    the balancing force Fb last): h1, h2, … in order, hb the balancing force's, one name for the loads whose lines
+    are one line within the drafting precision (:func:`~graphplan.lever.shared_arms`), hb where Fb is among them."""
+    shifts = {term.name: term.shift for term in lever.terms}
+    tolerance = sheet.mechanism.scene.drawing.drafting_precision * sheet.lever_drawn_scale
+    names: dict[str, str] = {}
+    count = 0
+    for gathered in shared_arms(sheet.velocity, [(name, image, force, shifts.get(name, 0j))
+                                                 for name, image, force in loads], tolerance):
+        if "Fb" in gathered:
+            arm = "hb"
+        else:
+            count += 1
+            arm = f"h{count}"
+        names.update(dict.fromkeys(gathered, arm))
+    return names
 
 
 def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
