@@ -95,7 +95,7 @@ def test_the_line_of_action_runs_from_the_point_to_d(name, which):
     point_name, where = CASES[name]
     point, d = paper(where(angle)), paper(FRAME["D"])
     paths = [item for item in groups[f"{GROUP}-along"] if item.tag == f"{SVG}path"]
-    (line,) = paths
+    (line,) = [path for path in paths if path.get("stroke-dasharray")]
     start, end = _path_points(line)
     assert abs(start - point) < CLOSE_MM and abs(end - d) < CLOSE_MM, point_name
     # Thin and dash-dot: four dashes to a period, a long one and a dot.
@@ -114,8 +114,8 @@ def test_the_line_of_action_runs_from_the_point_to_d(name, which):
 def test_no_label_of_the_group_lies_on_the_line(name, which):
     sheet, _ = _sheet(name, which)
     layers = {layer.name: layer for layer in force_layout.layout(sheet)}
-    (line,) = [item for item in layers[f"{GROUP}-along"].items if isinstance(item, Polyline)]
-    drawn = shapely.LineString(line.points)
+    drawn = shapely.MultiLineString([item.points for item in layers[f"{GROUP}-along"].items
+                                     if isinstance(item, Polyline)])
     texts = [item for item in layers[f"{GROUP}-labels"].items if isinstance(item, Text)]
     assert texts
     for text in texts:
@@ -133,7 +133,7 @@ def test_the_line_is_along_the_force():
     for name in CASES:
         sheet, _ = _sheet(name, 0)
         layers = {layer.name: layer for layer in force_layout.layout(sheet)}
-        (line,) = [item for item in layers[f"{GROUP}-along"].items if isinstance(item, Polyline)]
+        (line,) = [item for item in layers[f"{GROUP}-along"].items if isinstance(item, Polyline) and item.stroke.dash]
         (start, end) = (complex(*line.points[0]), complex(*line.points[1]))
         load = next(item for item in layers[f"{GROUP}-forces"].items if item.key.endswith(("F4", "F3")))
         unit = (end - start) / abs(end - start)
@@ -141,3 +141,39 @@ def test_the_line_is_along_the_force():
             across = ((complex(*tip) - start) / unit).imag
             assert abs(across) < 1e-6 * max(1.0, abs(complex(*tip) - start)), name
         assert math.isfinite(abs(end - start))
+
+
+@pytest.mark.parametrize("which", [0, 1])
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_the_cylinder_or_spring_is_cut_off_at_its_point_where_its_arrow_leaves_the_line_to_d_free(name, which):
+    """Where the force's arrow stands on the far side of its point from D (a push drawn from its point, or onto it
+    from beyond), a short piece of the rod or of the spring runs from the point toward D and ends in a cut; where
+    the arrow runs toward D (a pull) it would lie on it, and there is none."""
+    sheet, _ = _sheet(name, which)
+    layers = {layer.name: layer for layer in force_layout.layout(sheet)}
+    items = [item for item in layers[f"{GROUP}-along"].items if isinstance(item, Polyline)]
+    (line,) = [item for item in items if item.stroke.dash]
+    point, d = complex(*line.points[0]), complex(*line.points[-1])
+    unit = (d - point) / abs(d - point)
+    load = next(item for item in layers[f"{GROUP}-forces"].items if item.key.endswith(("F4", "F3")))
+    toward_d = max(((complex(*tip) - point) / unit).real for tip in (load.start, load.end))
+    pieces = [item for item in items if not item.stroke.dash]
+    if toward_d > 0.5:
+        assert not pieces
+        return
+    assert pieces, "the arrow leaves the line to D free"
+    piece, cut = pieces
+    # From the point toward D, within a few millimetres of it, its middle on the line DB (a spring zig-zags across).
+    along = [((complex(*p) - point) / unit).real for p in piece.points]
+    across = [((complex(*p) - point) / unit).imag for p in piece.points]
+    assert along[0] == pytest.approx(0.0, abs=1e-9) and 0.0 < along[-1] <= 8.0
+    assert across[0] == pytest.approx(0.0, abs=1e-9) and across[-1] == pytest.approx(0.0, abs=1e-9)
+    assert max(abs(value) for value in across) < 2.0
+    is_spring = "spring" in name
+    assert (len(piece.points) > 2) == is_spring
+    # The cut crosses the line at the piece's end.
+    ends = [complex(*p) for p in cut.points]
+    sides = [((end - point) / unit).imag for end in ends]
+    assert sides[0] * sides[1] < 0
+    middle = (ends[0] + ends[1]) / 2
+    assert abs(middle - (point + along[-1] * unit)) < 0.01

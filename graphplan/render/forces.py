@@ -82,7 +82,9 @@ from .numerals import short, significant
 from .plans import CAPTION_SIZE, RUN_ON_MM, ZERO_MM, Arrangement, too_short_lines
 from .plans import _coincident as coincident_letters
 from .primitives import (
+    LEAD_PAST_PIN_MM,
     MAIN,
+    PIN_RADIUS_MM,
     Arrow,
     Circle,
     Layer,
@@ -95,6 +97,7 @@ from .primitives import (
     dot_marker,
     moved_layers,
     pin,
+    place,
     slider_block,
     svg_id,
     text_extent,
@@ -191,8 +194,17 @@ _ARM = Stroke(0.2, "#555555")
 _ARM_RUN_ON = Stroke(0.2, "#555555", (1.5, 1.0))
 _AXIS = Stroke(0.2, "#333333", (6.0, 1.5, 1.0, 1.5))
 # A force along a turning line (a cylinder's or a spring's) has its line drawn on its group cut free, thin dash-dot,
-# from its point to the point it is along: the cylinder or spring is cut away with the frame or the other link.
+# from its point to the point it is along: the cylinder or spring is cut away with the frame or the other link, all but
+# a piece at its point.
 _ALONG_LINE = Stroke(0.25, "#333333", (6.0, 1.5, 1.0, 1.5))
+# Of a cylinder or spring cut away from a group, the length of its rod drawn from its point (at most), a spring's wave
+# (as long as it is wide), and the short slanted cut across where it ends (mm): what a hand drawing keeps of it.
+CUT_OFF_MM = 7.0
+CUT_SPRING_WAVE_MM = 2.5
+CUT_MARK_MM = 2.5
+_ALONG_ROD = Stroke(0.5)
+_ALONG_SPRING = Stroke(0.25)
+_ALONG_CUT = Stroke(0.25)
 # The line is run to the point it is along where that lies within this many times the group's size of it; farther,
 # it stops at that length, where the drawing would grow mostly to show one line.
 ALONG_REACH = 1.5
@@ -392,7 +404,7 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     arms += displaced
     arm_anchors += displaced_anchors
     arrows += leaders
-    along, along_names = _along_lines(sheet, group, paper)
+    along, along_names = _along_lines(sheet, group, paper, stacked)
     figure = links + arrows + turning + circles + arms + along
     # Left on a line, a load's name reaches farther out on a leader from its arrow's shaft (its anchor's ``along``),
     # which ties it to its arrow among the group's arms and arcs (the triad with a slider's Fu6 lay on its own line
@@ -420,8 +432,9 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption += _wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
-    friction += [Layer(f"body-{key}-along", tuple(along))] if along else []
-    layers = [Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
+    # Under the links, whose pins cover its lines' ends.
+    under = [Layer(f"body-{key}-along", tuple(along))] if along else []
+    layers = [*under, Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
               Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
               Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)]
     # Its title and scales stay with the group; its equations, under its title again, may go on after it.
@@ -430,15 +443,19 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     return Drawing(f"body-{key}", layers, tuple(caption), parted)
 
 
-def _along_lines(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
-                 ) -> tuple[list[Primitive], list[tuple[str, tuple[float, float]]]]:
+def _along_lines(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]],
+                 arrows: Mapping[str, Arrow]) -> tuple[list[Primitive], list[tuple[str, tuple[float, float]]]]:
     """The line of each force along a turning line (``[[loads]]`` with ``along``) on the group, from its point to
     the point it is along, and that point's name and place on the paper where the group's drawing does not show it.
 
-    Cut free, the group keeps no cylinder, spring or frame: the line to D is what shows that the force acts along
-    DB, as the hand drawing shows it.  A cylinder between two links of the group (two loads, one at each end) is
-    one line.  A point farther off than :data:`ALONG_REACH` times the group's size is not reached: its line stops
-    there, unnamed, its direction still DB's.
+    Cut free, the group keeps no frame and no more of the cylinder or spring than a piece at its point: the line to
+    D is what shows that the force acts along DB, as the hand drawing shows it.  A cylinder between two links of the
+    group (two loads, one at each end) is one line.  A point farther off than :data:`ALONG_REACH` times the group's
+    size is not reached: its line stops there, unnamed, its direction still DB's.
+
+    Where the force's arrow (in ``arrows``, by name) leaves the side of its point toward D free, the spring or
+    cylinder is drawn cut off at its point, as the group is cut free of it (:func:`_cut_off`); where the arrow runs
+    toward D (a pull) the piece would lie under it, and the line alone shows it.
     """
     specs = dict(zip(external_names(sheet.mechanism.scene.loads), sheet.mechanism.scene.loads, strict=True))
     drawn_points = set(_named_points(sheet, group))
@@ -463,7 +480,33 @@ def _along_lines(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex
             names.append((spec.along, _xy(far)))
             lines.append(dot_marker(_xy(far)))
         lines.append(Polyline((_xy(near), _xy(far)), _ALONG_LINE))
+        unit = (far - near) / abs(far - near)
+        arrow = arrows.get(load.name)
+        if arrow is not None and max(((_c(end) - near) * unit.conjugate()).real
+                                     for end in (arrow.start, arrow.end)) < ZERO_MM:
+            lines.extend(_cut_off(near, unit, spec.spring, min(CUT_OFF_MM, 0.4 * abs(far - near))))
     return lines, names
+
+
+def _cut_off(point: complex, unit: complex, is_spring: bool, length: float) -> list[Primitive]:
+    """A cylinder's rod or a spring from its ``point`` (mm) along ``unit`` toward the point it is along, ``length``
+    mm of it, ending in a short slanted cut: the part of it a hand drawing keeps to show what the group was cut
+    free of.  A spring keeps a lead past its pin and a wave and a half of its zig-zag."""
+    lead = PIN_RADIUS_MM + LEAD_PAST_PIN_MM
+    if is_spring:
+        wave = CUT_SPRING_WAVE_MM
+        body = [(lead, 0.0), *((lead + (k + 0.5) * wave / 2, (wave / 2) * (1 if k % 2 == 0 else -1)) for k in range(3))]
+        end = lead + 1.5 * wave
+        shape = [(0.0, 0.0), *body, (end, 0.0)]
+        stroke = _ALONG_SPRING
+    else:
+        end = max(length, lead + 1.0)
+        shape = [(0.0, 0.0), (end, 0.0)]
+        stroke = _ALONG_ROD
+    angle = math.atan2(unit.imag, unit.real)
+    half = CUT_MARK_MM / 2
+    cut = ((end - 0.5 * half, -half), (end + 0.5 * half, half))
+    return [Polyline(place(shape, _xy(point), angle), stroke), Polyline(place(cut, _xy(point), angle), _ALONG_CUT)]
 
 
 def _position(sheet: ForceSheet, name: str) -> complex:
