@@ -94,14 +94,14 @@ def test_the_line_of_action_runs_from_the_point_to_d(name, which):
     paper = _paper(offset, scale)
     point_name, where = CASES[name]
     point, d = paper(where(angle)), paper(FRAME["D"])
-    paths = [item for item in groups[f"{GROUP}-along"] if item.tag == f"{SVG}path"]
+    paths = [item for item in groups[f"{GROUP}-along-lines"] if item.tag == f"{SVG}path"]
     (line,) = [path for path in paths if path.get("stroke-dasharray")]
     start, end = _path_points(line)
     assert abs(start - point) < CLOSE_MM and abs(end - d) < CLOSE_MM, point_name
     # Thin and dash-dot: four dashes to a period, a long one and a dot.
     assert float(line.get("stroke-width")) < 0.3 and len(line.get("stroke-dasharray").split()) == 4
     # D marked with a dot at the line's end and lettered nearby; no other pin or pivot drawn there.
-    dots = [complex(float(item.get("cx")), float(item.get("cy"))) for item in groups[f"{GROUP}-along"]
+    dots = [complex(float(item.get("cx")), float(item.get("cy"))) for item in groups[f"{GROUP}-along-lines"]
             if item.tag == f"{SVG}circle"]
     assert len(dots) == 1 and abs(dots[0] - d) < CLOSE_MM
     assert not any(abs(pin - d) < 1.0 for pin in pins)
@@ -114,7 +114,7 @@ def test_the_line_of_action_runs_from_the_point_to_d(name, which):
 def test_no_label_of_the_group_lies_on_the_line(name, which):
     sheet, _ = _sheet(name, which)
     layers = {layer.name: layer for layer in force_layout.layout(sheet)}
-    drawn = shapely.MultiLineString([item.points for item in layers[f"{GROUP}-along"].items
+    drawn = shapely.MultiLineString([item.points for item in layers[f"{GROUP}-along-lines"].items
                                      if isinstance(item, Polyline)])
     texts = [item for item in layers[f"{GROUP}-labels"].items if isinstance(item, Text)]
     assert texts
@@ -124,7 +124,7 @@ def test_no_label_of_the_group_lies_on_the_line(name, which):
 
 def test_a_scene_without_a_load_along_a_line_draws_none():
     groups, _, _ = _svg_groups("at an angle", 0)
-    assert not [name for name in groups if name and name.endswith("-along")]
+    assert not [name for name in groups if name and name.endswith("-along-lines")]
     assert f"{GROUP}-links" in groups
 
 
@@ -133,7 +133,8 @@ def test_the_line_is_along_the_force():
     for name in CASES:
         sheet, _ = _sheet(name, 0)
         layers = {layer.name: layer for layer in force_layout.layout(sheet)}
-        (line,) = [item for item in layers[f"{GROUP}-along"].items if isinstance(item, Polyline) and item.stroke.dash]
+        (line,) = [item for item in layers[f"{GROUP}-along-lines"].items
+                   if isinstance(item, Polyline) and item.stroke.dash]
         (start, end) = (complex(*line.points[0]), complex(*line.points[1]))
         load = next(item for item in layers[f"{GROUP}-forces"].items if item.key.endswith(("F4", "F3")))
         unit = (end - start) / abs(end - start)
@@ -151,7 +152,7 @@ def test_the_cylinder_or_spring_is_cut_off_at_its_point_where_its_arrow_leaves_t
     the arrow runs toward D (a pull) it would lie on it, and there is none."""
     sheet, _ = _sheet(name, which)
     layers = {layer.name: layer for layer in force_layout.layout(sheet)}
-    items = [item for item in layers[f"{GROUP}-along"].items if isinstance(item, Polyline)]
+    items = [item for item in layers[f"{GROUP}-along-lines"].items if isinstance(item, Polyline)]
     (line,) = [item for item in items if item.stroke.dash]
     point, d = complex(*line.points[0]), complex(*line.points[-1])
     unit = (d - point) / abs(d - point)

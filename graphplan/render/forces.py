@@ -432,8 +432,8 @@ def _body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption += _wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
-    # Under the links, whose pins cover its lines' ends.
-    under = [Layer(f"body-{key}-along", tuple(along))] if along else []
+    # Under the links, whose pins cover its lines' ends; named for lines, as a CAD file's construction lines.
+    under = [Layer(f"body-{key}-along-lines", tuple(along))] if along else []
     layers = [*under, Layer(f"body-{key}-links", tuple(links)), Layer(f"body-{key}-arms", tuple(arms)),
               Layer(f"body-{key}-moments", tuple(turning)), *friction, Layer(f"body-{key}-forces", tuple(arrows)),
               Layer(f"body-{key}-leaders", labels.leaders), Layer(f"body-{key}-labels", labels.texts)]
