@@ -144,3 +144,22 @@ def test_no_drawings_take_no_sheets_on_every_format():
     for sheet in ("A4", "A3", "A1"):
         for form in ("iso", "eskd", "gb"):
             assert pack([], sheet, form) == [], (sheet, form)
+
+
+def test_a_force_sheet_with_friction_goes_on_no_sheet_before_the_last_part_of_the_sheet_without():
+    """The sheet with friction is read after its position's sheet without it: it fills no room left on a sheet
+    before that sheet's last part, though the room there holds it (in Chinese on A3 the crank-rocker's sheet of
+    position 11 began on a sheet before the one with friction of position 5 went on)."""
+    width, height = room_above_the_title_block()
+    first_height = height - HEADING_MM - 100.0  # leaves 100 mm under it, a gap and 85 mm of room
+    second_height = 120.0  # too tall for that room even under the first's heading: a sheet of its own
+    friction_height = 20.0
+    assert HEADING_MM + friction_height <= 100.0 - GAP_MM
+    assert HEADING_MM + friction_height <= height - (HEADING_MM + second_height) - GAP_MM
+    pages = pack([part("forces-5", width - 1.0, first_height),
+                  part("forces-5-2", width - 1.0, second_height, continues="forces-5"),
+                  part("forces-friction-5", width - 1.0, friction_height)], SHEET, FORM)
+    assert [[panel.name for panel, _, _ in page.placed] for page in pages] == \
+        [["forces-5"], ["forces-5-2", "forces-friction-5"]]
+    (_, second_rect, _), (_, friction_rect, _) = pages[1].placed
+    assert friction_rect[3] <= second_rect[1] - GAP_MM + 1e-9

@@ -578,7 +578,9 @@ def _kind(panel: Panel) -> str:
 # Remembered: every spot a drawing is put at asks the kind of each drawing placed on the page.
 @functools.lru_cache(maxsize=1024)
 def _kind_of(name: str) -> str:
-    return re.sub(r"(?<=.)(-\d+)+$", "", name)
+    # A force sheet with friction is read after the one without of its position, before the next position's.
+    kind = re.sub(r"(?<=.)(-\d+)+$", "", name)
+    return "forces" if kind == "forces-friction" else kind
 
 
 def _turn_holding(panel: Panel, sheet: str, form: str, turns: Sequence[bool]) -> bool:
