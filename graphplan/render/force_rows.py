@@ -304,7 +304,9 @@ class Rows:
 
     def cuts(self, fits: Fits, headless: bool = True) -> list[list[Part]]:
         """:meth:`parts` first, then the other cuts into as many parts that cut as few rows apart, by the paper
-        they take, :data:`MOST_CUTS` in all; none where a drawing does not fit.
+        they take, :data:`MOST_CUTS` in all, and last, where there are several parts, every drawing a part of its
+        own (a group cut free apart from its polygon), which the sheets take only where it saves one; none where
+        a drawing does not fit.
 
         The least paper of the parts alone does not tell the fewest sheets:
         the engine's force sheet of position 2 in Russian took group II on a
@@ -315,12 +317,29 @@ class Rows:
         sheets choose among these by packing them
         (:func:`graphplan.render.sheet.fewest_sheets_cuts`)."""
         found = self._parts(fits)
-        if found:
-            return found
         apart = self._apart()
-        if any(len(row) > 1 for row in self.drawings):
-            found = apart._parts(fits)
-        return found if found or not headless else apart._parts(fits, headless=True)
+        if not found:
+            if any(len(row) > 1 for row in self.drawings):
+                found = apart._parts(fits)
+            found = found if found or not headless else apart._parts(fits, headless=True)
+        # Last, every drawing a part of its own, each put where a sheet has room for it: the crank-rocker's group I
+        # with friction beside its polygon, a part too wide for the room any sheet had left on an A3, stood alone on
+        # one, a fifth of it drawn on; apart, group I stands under group II's polygon and its own polygon beside the
+        # lever, and the Russian A3 sheets went from 18 to 15.
+        each = apart._each_apart(fits) if found and len(found[0]) > 1 else []
+        return [*found, each] if each and len(each) > len(found[0]) else found
+
+    def _each_apart(self, fits: Fits) -> list[Part]:
+        """Every row a part of its own under its heading (where it stands in parts, the rows are each a drawing:
+        :meth:`_apart`); none where a row fits under no heading."""
+        ways = []
+        for start in range(len(self)):
+            title = self._title_of(start)
+            least = self._least(start, start + 1, fits, title)
+            if least is None:
+                return []
+            ways.append((least[1], title, least[2]))
+        return self._arranged_parts(ways)
 
     def parted(self, names: Collection[str]) -> Rows:
         """The rows with each drawing of ``names`` that may be parted (:attr:`Drawing.parted`) ending its row

@@ -481,7 +481,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                 drawn, cuts, heading = larger, larger_cuts, larger_rows.heading
                 one = split(larger_rows.arranged(larger_rows.in_columns(1)), one.name, one.label, _group_of_field)
                 break
-        names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, len(parts)))]
+        names = [one.name, *(f"{one.name}-{k + 1}" for k in range(1, max(map(len, cuts))))]
 
         def panel(k: int, part: force_rows.Part) -> Panel:
             ways = [replace(split(way, names[k], one.label, _group_of_field), continues=names[k - 1] if k else "",
