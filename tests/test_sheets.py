@@ -841,28 +841,35 @@ def test_diagrams_too_big_for_a_sheet_whole_stand_apart_on_it(analyses):
 
 
 def test_a_part_that_shares_its_sheet_with_the_part_it_goes_on_from_stands_without_a_continued_heading():
-    """The crank-rocker starter's force sheet of position 11 fits A2 only in parts, and both parts fit the one
-    sheet beside the title block: they read as one drawing under one heading. A part on a sheet of its own
-    keeps its heading, which says it goes on from an earlier sheet."""
+    """The crank-rocker starter's force sheets fit A2 and A3 only in parts: a part on the sheet of the part it goes
+    on from reads as one drawing with it under one heading; a part that opens a sheet keeps its heading, which says
+    it goes on from an earlier sheet.  (On A2 each force sheet's parts now share one sheet: those that open one
+    are on A3.)"""
     from importlib import resources
 
     scene = graphplan.scene.loads(resources.files("graphplan").joinpath("templates/crank-rocker.toml").read_text(
         encoding="utf-8"))
-    sheets = course_sheets(analyse(scene), "A2")
     marker = strings(scene.locale)["force_sheet_continued"].format(title="").strip()
 
-    def headings(sheet):
-        return [text.text for layer in sheet.layers if layer.name.endswith("sheet-title")
+    def heading(sheet, name):
+        return [text.text for layer in sheet.layers if layer.name == f"{name}-sheet-title"
                 for text in layer.items if isinstance(text, Text)]
 
-    shared = [sheet for sheet in sheets if any(f"{name}-2" in sheet.panels for name in sheet.panels)]
-    alone = [sheet for sheet in sheets if sheet not in shared and any(name.endswith("-2") for name in sheet.panels)]
-    assert shared and alone
-    for sheet in shared:
-        assert not any(marker in text for text in headings(sheet))
-        assert any(name.endswith("-2") for name in sheet.panels)
-    for sheet in alone:
-        assert any(marker in text for text in headings(sheet))
+    shared, alone = [], []
+    for sheet_format in ("A2", "A3"):
+        for sheet in course_sheets(analyse(scene), sheet_format):
+            for name in sheet.panels:
+                found = re.fullmatch(r"(forces-\d+)-(\d+)", name)
+                if found is None:
+                    continue
+                before = found.group(1) if found.group(2) == "2" else f"{found.group(1)}-{int(found.group(2)) - 1}"
+                (shared if before in sheet.panels else alone).append((sheet_format, sheet.number, name))
+                texts_of_its_heading = heading(sheet, name)
+                if before in sheet.panels:
+                    assert not texts_of_its_heading, (sheet_format, sheet.number, name)
+                else:
+                    assert any(marker in text for text in texts_of_its_heading), (sheet_format, sheet.number, name)
+    assert any(sheet_format == "A2" for sheet_format, _, _ in shared) and alone
 
 
 def test_a_sheet_of_the_kinematic_diagrams_alone_has_no_scale_in_its_title_block():
