@@ -28,7 +28,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
-from collections.abc import Callable, Collection, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
 
 from ..analysis import Analysis, PlanPosition
@@ -91,6 +91,7 @@ from .title_block import (
     TitleBlockFields,
     corner_box,
     details_of,
+    fitting_name,
     form_of,
     labels,
     scale_text,
@@ -1443,8 +1444,8 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
         if not any(panel.to_scale for panel, _, _ in page.placed):
             page_scale = None
         scale_box = scale_text(page_scale, form, text["length_scale"], text["decimal_mark"]) if page_scale is not None else ""
-        fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page, kind) or words[kind], scale=scale_box,
-                                  sheet=first + k, sheets=count, language=locale)
+        fields = TitleBlockFields(**asdict(details), drawing=_drawing_name(page, kind, form, words) or words[kind],
+                                  scale=scale_box, sheet=first + k, sheets=count, language=locale)
         layers: list[Layer] = []
         placed: dict[str, Rect] = {}
         for panel, rect, (dx, dy) in page.placed:
@@ -1461,15 +1462,20 @@ def _drawn(pages: Sequence[Page], sheet: str, locale: str, kind: str, scale: flo
 # The panels that are a sheet kind's own drawings, by their names' start: beside them a page may hold drawings of
 # another kind that have a heading of their own (the load diagrams in the room a force sheet leaves).
 _OWN_PANELS = {"sheet_forces": "forces"}
+# The drawings of another kind a sheet kind's page may hold, by their names' start, with the title block's name of
+# the page that holds them too (its ``{name}``, the page's own drawings').
+_SHARING_PANELS = {"sheet_forces": ("load-diagrams", "sheet_with_load_diagrams")}
 
 
-def _drawing_name(page: Page, kind: str = "") -> str:
+def _drawing_name(page: Page, kind: str = "", form: str = "", words: Mapping[str, str] | None = None) -> str:
     """What a page shows, when it is one drawing's: the parts of one (on pages of their own, or parts that
-    share a page), or one whole alone; or one force analysis beside drawings of another kind.
+    share a page), or one whole alone; or one force analysis beside drawings of another kind, named with them in
+    ``form``'s title block's ``words`` where its cell holds that (:func:`~graphplan.render.title_block.fitting_name`).
 
     A page with the force analysis of position 8 and the load diagrams was named only "Force analysis", where the
     page of position 2 alone was named "Force analysis, position 2"; a page of two positions' force analyses
-    names neither (the kind's word), which two names in the title block's two lines would not hold."""
+    names neither (the kind's word), which two names in the title block's two lines would not hold.  A page of
+    the rest of a force analysis and the load diagrams was named by the force analysis alone."""
     if page.label:
         return page.label
     names = {panel.label for panel, _, _ in page.placed}
@@ -1477,7 +1483,13 @@ def _drawing_name(page: Page, kind: str = "") -> str:
         return names.pop()
     own = _OWN_PANELS.get(kind)
     labels = {panel.label for panel, _, _ in page.placed if own is not None and panel.name.startswith(own)}
-    return labels.pop() if len(labels) == 1 else ""
+    named = labels.pop() if len(labels) == 1 else ""
+    sharing, shared_name = _SHARING_PANELS.get(kind, ("", ""))
+    if words is None or not sharing or not any(panel.name.startswith(sharing) for panel, _, _ in page.placed):
+        return named
+    # Named by both where the cell holds that legibly, else by the kind's word and the other drawings.
+    both = [words[shared_name].format(name=name) for name in (named, words[kind]) if name]
+    return fitting_name(form, both, words)
 
 
 def _unframed(panel: Panel, number: int, count: int) -> Sheet:
