@@ -10,38 +10,13 @@ from __future__ import annotations
 
 import pytest
 
+# The crank-rocker with a frame pin D, E on the coupler (link 3) and S4 on the rocker (link 4).
+from test_force_along_a_turning_line import CRANK_ROCKER
+
 from graphplan.analysis import SCENE_WIDE_WARNINGS, analyse
 from graphplan.locale import strings
 from graphplan.report.note import note_markdown
 from graphplan.scene import loads as scene_of_text
-
-# A crank-rocker with a frame pin D, E on the coupler (link 3), S4 on the rocker (link 4); no gravity.
-CRANK_ROCKER = """
-[scene]
-gravity = 0.0
-[frame]
-link = 1
-points = { O = [0.0, 0.0], C = [0.35, 0.0], D = [0.05, 0.42] }
-[driver]
-kind = "crank"
-link = 2
-pivot = "O"
-joint = "A"
-length = 0.1
-omega = 12.0
-[[groups]]
-kind = "RRR"
-links = [3, 4]
-joints = ["A", "B", "C"]
-lengths = [0.4, 0.3]
-assembly = "left"
-[points]
-E = { link = 3, from = "A", toward = "B", at = 0.2, offset = 0.08 }
-S4 = { link = 4, from = "C", toward = "B", at = 0.15 }
-[positions]
-count = 12
-plans = [2, 7]
-"""
 
 
 def _force(link: int, point: str, along: str, how: str = "value = 500.0") -> str:

@@ -22,59 +22,10 @@ from graphplan.render import drawings
 from graphplan.render import forces as force_layout
 from graphplan.render.primitives import Polyline, svg_id
 from graphplan.scene import loads as scene_of_text
+from graphplan.starters import starter
 
 # A crank-rocker (`graphplan new crank-rocker`) with friction in its four journals.
-CRANK_ROCKER_WITH_FRICTION = """
-[scene]
-title   = "Crank-rocker with friction"
-locale  = "en"
-gravity = 9.81
-[frame]
-link   = 1
-points = { O = [0.0, 0.0], C = [0.0, 0.55] }
-[driver]
-kind    = "crank"
-link    = 2
-pivot   = "O"
-joint   = "A"
-length  = 0.175
-omega   = -17.0
-epsilon = 0.0
-[[groups]]
-kind     = "RRR"
-links    = [3, 4]
-joints   = ["A", "B", "C"]
-lengths  = [0.55, 0.325]
-assembly = "left"
-[points]
-S2 = { link = 2, from = "O", toward = "A", at = 0.08 }
-S3 = { link = 3, from = "A", toward = "B", at = 0.24 }
-S4 = { link = 4, from = "C", toward = "B", at = 0.14 }
-[links.3]
-mass    = 17.0
-centre  = "S3"
-inertia = 0.51
-[links.4]
-mass    = 17.0
-centre  = "S4"
-inertia = 0.18
-[[loads]]
-kind      = "moment"
-link      = 4
-value     = 1500.0
-resisting = true
-during    = "working"
-[positions]
-count       = 12
-start       = "extreme"
-number_from = 0
-working     = { link = 4, sense = "ccw" }
-plans       = [5, 11]
-[drawing]
-velocity_pole      = 150.0
-acceleration_pole  = 100.0
-drafting_precision = 0.5
-sheet              = "A1"
+CRANK_ROCKER_WITH_FRICTION = starter("crank-rocker") + """
 [[friction]]
 joint = "O"
 f = 0.1
