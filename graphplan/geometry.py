@@ -85,6 +85,11 @@ def similar_point(image_a: complex, image_b: complex, a: complex, b: complex, p:
     return image_a + (image_b - image_a) * (p - a) / (b - a)
 
 
+def perpendicular_foot(centre: complex, through: complex, unit: complex) -> complex:
+    """The foot of the perpendicular from ``centre`` to the line through ``through`` along ``unit``."""
+    return through + ((centre - through) * unit.conjugate()).real * unit
+
+
 def turned(vector: complex, sense: float) -> complex:
     """``vector`` turned by 90° counter-clockwise (``sense`` > 0) or clockwise (``sense`` < 0)."""
     return vector * (1j if sense > 0 else -1j)

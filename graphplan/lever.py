@@ -21,6 +21,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .forces import TERM_ROUNDING, Load
+from .geometry import perpendicular_foot
 from .kinematics import cross
 from .mechanism import Mechanism
 from .plans import Plan
@@ -70,9 +71,7 @@ class Lever:
 def arm_foot(velocity: Plan, image: str, force: complex, shift: complex = 0j) -> complex:
     """The foot of the arm from the pole to the line of ``force`` at the image ``image`` (shifted by ``shift``) on the
     turned plan, in the plan's units (m/s): the arm is the segment from the pole to it."""
-    at = turned(velocity.points[image] + shift)
-    unit = force / abs(force)
-    return at - (at * unit.conjugate()).real * unit
+    return perpendicular_foot(0j, turned(velocity.points[image] + shift), force / abs(force))
 
 
 def shared_arms(velocity: Plan, loads: Sequence[tuple[str, str, complex, complex]], tolerance: float

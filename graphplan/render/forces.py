@@ -47,7 +47,7 @@ from shapely.ops import unary_union
 from shapely.strtree import STRtree
 
 from ..forces import TERM_ROUNDING, ForcePlan, GroupForces, MomentEquation, PolygonVector, ProjectionEquation
-from ..geometry import Line
+from ..geometry import Line, perpendicular_foot
 from ..joint_friction import FrictionPair, pair_name
 from ..kinematics import at
 from ..lever import Lever, LeverTerm, shared_arms, turned
@@ -1036,7 +1036,7 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                     undrawn.append(f"{name} = {significant(term.arm / sheet.length_scale)} {sheet.text['millimetre']}")
                     continue
                 items += _perpendicular(centre, start, end, unit)
-                foot = _foot(centre, start, unit)
+                foot = perpendicular_foot(centre, start, unit)
                 anchors.append(Anchor(_xy((centre + foot) / 2), name, NAME_SIZE - 0.4,
                                       _angle(1j * (foot - centre)), _ARM.colour, along=(_xy(centre), _xy(foot))))
             else:
@@ -1118,7 +1118,7 @@ def _projection(sheet: ForceSheet, equation: ProjectionEquation) -> str:
 
 def _perpendicular(centre: complex, start: complex, end: complex, unit: complex) -> list[Primitive]:
     """The arm from ``centre`` to the line of the arrow ``start``→``end``, and the line run on to its foot."""
-    foot = _foot(centre, start, unit)
+    foot = perpendicular_foot(centre, start, unit)
     items: list[Primitive] = [Polyline((_xy(centre), _xy(foot)), _ARM)]
     along = ((foot - start) * unit.conjugate()).real
     length = abs(end - start)
@@ -1127,11 +1127,6 @@ def _perpendicular(centre: complex, start: complex, end: complex, unit: complex)
     elif along > length + ZERO_MM:
         items.append(Polyline((_xy(end), _xy(foot)), _ARM_RUN_ON))
     return items
-
-
-def _foot(centre: complex, through: complex, unit: complex) -> complex:
-    """The foot of the perpendicular from ``centre`` to the line through ``through`` along ``unit``."""
-    return through + ((centre - through) * unit.conjugate()).real * unit
 
 
 # The force polygon of a group.
@@ -1715,7 +1710,8 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     load_points: dict[str, str] = {}  # each named load's point on the lever, where its arrow stands
     # The lever's bars and rays, and every arm (from the pole square to its force's line wherever the arrow
     # stands on it), which an arrow pushing onto its point must not lie along.
-    feet = [_foot(0j, mm(image) + shift, force / abs(force)) for _, image, force, _, shift in named if force != 0]
+    feet = [perpendicular_foot(0j, mm(image) + shift, force / abs(force))
+            for _, image, force, _, shift in named if force != 0]
 
     # The points of the lever, one for each spot its letters stand at, which another point's load keeps clear of.
     spots = [mm(group[0]) for group in coincident_letters(velocity)]
@@ -1745,7 +1741,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         load_points[name] = image
         # The arm runs to the force's line, through its point, beside which the arrow may stand.
         start, end = start - beside, end - beside
-        foot = _foot(0j, start, unit)
+        foot = perpendicular_foot(0j, start, unit)
         if name not in standing:
             continue
         arm = arm_of[name]
