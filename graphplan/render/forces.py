@@ -102,6 +102,7 @@ from .primitives import (
     svg_id,
     text_extent,
     text_width,
+    zigzag,
 )
 from .primitives import to_complex as _c
 from .primitives import to_xy as _xy
@@ -495,9 +496,8 @@ def _cut_off(point: complex, unit: complex, is_spring: bool, length: float) -> l
     lead = PIN_RADIUS_MM + LEAD_PAST_PIN_MM
     if is_spring:
         wave = CUT_SPRING_WAVE_MM
-        body = [(lead, 0.0), *((lead + (k + 0.5) * wave / 2, (wave / 2) * (1 if k % 2 == 0 else -1)) for k in range(3))]
         end = lead + 1.5 * wave
-        shape = [(0.0, 0.0), *body, (end, 0.0)]
+        shape = [(0.0, 0.0), (lead, 0.0), *zigzag(lead, 1.5 * wave, 3, wave), (end, 0.0)]
         stroke = _ALONG_SPRING
     else:
         end = max(length, lead + 1.0)
@@ -1471,9 +1471,9 @@ def _sliver_spots(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence
     shapes = np.array(drawn, dtype=object)
     # Thousands of candidate spots are each tested against every shape: trees answer by the shapes near them.
     shape_tree = STRtree(shapes)
-    box_blockers = STRtree([*drawn, *(spaced_box(text) for text in texts),
-                            *(LineString(leader.points) for leader in leaders)])
-    led = STRtree([LineString(leader.points) for leader in leaders])
+    leader_lines = [LineString(leader.points) for leader in leaders]
+    box_blockers = STRtree([*drawn, *(spaced_box(text) for text in texts), *leader_lines])
+    led = STRtree(leader_lines)
     # What a leader may cross: the sides side by side with the one it names (and the lines of action along them).
     uncrossable = STRtree([shape for shape in drawn
                            if not (shape.geom_type == "LineString" and _side_by_side_with(anchor, shape))])

@@ -216,10 +216,15 @@ def spring(start: Point, end: Point, letter: float, stroke: Stroke = THIN) -> Po
     if body <= 0.0:
         return Polyline((start, end), stroke)
     lead = (length - body) / 2
-    halves = 2 * SPRING_WAVES
-    zigzag = [(lead + (k + 0.5) * body / halves, (letter / 2) * (1 if k % 2 == 0 else -1)) for k in range(halves)]
     angle = math.atan2(end[1] - start[1], end[0] - start[0])
-    return Polyline(place(((0.0, 0.0), (lead, 0.0), *zigzag, (lead + body, 0.0), (length, 0.0)), start, angle), stroke)
+    waves = zigzag(lead, body, 2 * SPRING_WAVES, letter)
+    return Polyline(place(((0.0, 0.0), (lead, 0.0), *waves, (lead + body, 0.0), (length, 0.0)), start, angle), stroke)
+
+
+def zigzag(lead: float, body: float, halves: int, width: float) -> list[Point]:
+    """A spring's zig-zag in its unit frame: ``halves`` half waves ``width`` wide over ``body`` along +x from
+    ``lead``, without the straight ends (a spring drawn whole, or a piece of one cut off a group cut free)."""
+    return [(lead + (k + 0.5) * body / halves, (width / 2) * (1 if k % 2 == 0 else -1)) for k in range(halves)]
 
 
 def cylinder(start: Point, end: Point, barrel: float, piston: float, letter: float, stroke: Stroke = MAIN
