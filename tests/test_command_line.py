@@ -341,8 +341,11 @@ def test_ctrl_c_while_cairo_writes_a_png_is_an_interruption_too(tmp_path, capsys
     """cairo writes a PNG through a Python callback that no exception leaves: Ctrl-C there printed cffi's
     traceback and ended in cairo's write error (OSError, exit status 1). Now the run says it was interrupted
     and leaves no folder, as an interruption anywhere else does."""
-    cairocffi_surfaces = pytest.importorskip("cairocffi.surfaces")
-    make_write_func = cairocffi_surfaces._make_write_func
+    # The callback is made by the module whose write_to_png cairosvg calls, patched there: a test on the same worker
+    # that takes cairo's packages out of sys.modules and puts them back can leave another module under that name.
+    cairo_surface = pytest.importorskip("cairosvg.surface").cairo.Surface
+    cairocffi_surfaces = cairo_surface.write_to_png.__globals__
+    make_write_func = cairocffi_surfaces["_make_write_func"]
 
     def interrupted_while_writing(target):
         class Interrupted:
@@ -352,7 +355,8 @@ def test_ctrl_c_while_cairo_writes_a_png_is_an_interruption_too(tmp_path, capsys
 
         return make_write_func(Interrupted())
 
-    monkeypatch.setattr(cairocffi_surfaces, "_make_write_func", interrupted_while_writing)
+    monkeypatch.setitem(cairocffi_surfaces, "_make_write_func", interrupted_while_writing)
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler, "a test before left its Ctrl-C handler"
     folder = tmp_path / "project"
     assert main(["run", FIXTURE, "--out", str(folder), "--only", "positions", "--format", "png"]) == 130
     assert without_progress(capsys.readouterr().err) == "graphplan: interrupted\n"
