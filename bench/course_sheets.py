@@ -42,7 +42,7 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
     """The three runs of one scene in one locale on one sheet (``None``: the scene's own), in this interpreter."""
     from graphplan import run as run_module
     from graphplan.memo import RecentMemo
-    from graphplan.render import forces, labels
+    from graphplan.render import force_marks, labels
     from graphplan.render import sheet as sheet_module
 
     own_search, own_first = sheet_module._larger_where_room, sheet_module._first_fitting
@@ -63,7 +63,7 @@ def one(name: str, locale: str, sheet: str | None) -> dict:
         sheet_module.LARGER_FORCE_STEPS, sheet_module._first_fitting = steps, first
         spent.update(search_s=0.0, larger=0)
         # Placements remembered from the run before would make a way laid out there free here.
-        labels._placements, forces._grown_unions = RecentMemo(), RecentMemo()
+        labels._placements, force_marks._grown_unions = RecentMemo(), RecentMemo()
         scratch.mkdir(parents=True)
         scene = scene_of(name, scratch)
         out = scratch / "out"

@@ -4,10 +4,10 @@
 
 What is remembered: the label placements
 (:func:`graphplan.render.labels.remembered`) and the grown unions of a
-lever's or a group's lines (``forces._grown``), each for the very same
+lever's or a group's lines (``force_marks._grown``), each for the very same
 arguments. Two workloads, each a fresh interpreter started with both memos
 as they are and with both off (``labels.PLACEMENTS_KEPT = 0``,
-``forces.GROWN_KEPT = 0``), in turn, so that both see the same load on the
+``force_marks.GROWN_KEPT = 0``), in turn, so that both see the same load on the
 shared machine:
 
 * tests: a few of the test files of the force drawings, single process
@@ -42,8 +42,8 @@ TEST_FILES = ("tests/test_lever_drawn_larger.py", "tests/test_force_drawing.py")
 SCENE = "fixtures/double_rocker_swing.toml"
 
 # Each child switches the memo off (or leaves it) before graphplan draws anything.
-PRELUDE = ("import sys; import graphplan.render.labels as labels; import graphplan.render.forces as forces; "
-           "labels.PLACEMENTS_KEPT = {kept}; forces.GROWN_KEPT = {grown}; ")
+PRELUDE = ("import sys; import graphplan.render.labels as labels; import graphplan.render.force_marks as force_marks; "
+           "labels.PLACEMENTS_KEPT = {kept}; force_marks.GROWN_KEPT = {grown}; ")
 WORKLOADS = {
     "tests": PRELUDE + "import pytest; sys.exit(pytest.main(['-p', 'no:cacheprovider', '-n', '0', '-q', *{files!r}]))",
     "run": PRELUDE + "from graphplan import cli; sys.exit(cli.main(['run', {scene!r}, '--out', {out!r}]))",
@@ -72,7 +72,7 @@ def main() -> None:
             times: dict[str, list[float]] = {"on": [], "off": []}
             walls: dict[str, list[float]] = {"on": [], "off": []}
             for _ in range(rounds):
-                for way, kept, grown in (("off", 0, 0), ("on", "labels.PLACEMENTS_KEPT", "forces.GROWN_KEPT")):
+                for way, kept, grown in (("off", 0, 0), ("on", "labels.PLACEMENTS_KEPT", "force_marks.GROWN_KEPT")):
                     code = template.format(kept=kept, grown=grown, files=TEST_FILES, scene=SCENE,
                                            out=str(Path(scratch) / way))
                     cpu, wall = processor_seconds(code)

@@ -445,7 +445,7 @@ def _plan_note_parts(plan, shown: tuple[str, ...], pieces: tuple[str, ...], whol
 def _record_drawings(analysis: Analysis, plan, with_friction: bool = False) -> tuple[tuple[int, SheetPolygons], ...]:
     """What hand readings of ``plan``'s reactions may have been measured on besides the polygons they are checked
     against, where a reaction was read by hand: the arrows of the groups cut free that ``forces_N.svg`` draws
-    beside its polygons at a μF of their own (:func:`~graphplan.render.forces.free_body_arrows`), told so (a
+    beside its polygons at a μF of their own (:func:`~graphplan.render.force_bodies.free_body_arrows`), told so (a
     :class:`SheetPolygons` of no sheet) after the course sheets' drawings, drawn before them; ``with_friction``,
     the polygons with friction of ``forces_friction_N.svg`` (at the record's μF where they fit two fields there) and
     its own arrows, whose readings are the reactions with friction, not those the tables compare with, told so with
@@ -455,9 +455,9 @@ def _record_drawings(analysis: Analysis, plan, with_friction: bool = False) -> t
     if not reads_forces(plan):
         return ()
     from .render import drawings as draw
-    from .render import forces as force_layout
+    from .render import force_bodies
 
-    arrows = force_layout.free_body_arrows(draw.force_sheet(analysis, plan, with_friction))
+    arrows = force_bodies.free_body_arrows(draw.force_sheet(analysis, plan, with_friction))
     drawn = {label: (scale, whole) for label, (scale, whole) in arrows.items() if whole}
     if with_friction:
         return ((plan.number, SheetPolygons(None, dict(plan.with_friction.group_scales), friction=True,

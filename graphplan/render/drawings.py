@@ -21,8 +21,8 @@ from ..scales import fit_scale, format_scale, next_standard_scale, standard_scal
 from ..scene import Working
 from ..statics import efficiency, rounded_zero
 from ..wording import raised
+from . import force_lever, plans, positions, velocity_plans
 from . import forces as force_layout
-from . import plans, positions, velocity_plans
 from .formats import holds
 from .numerals import scale_factor
 from .primitives import Layer, bounds, in_language
@@ -495,5 +495,5 @@ def force_sheet(analysis: Analysis, plan_position: PlanPosition,
         # As on the plan sheets, every word is the locale's: the scene's title stays off the sheet.
         title=text[title].format(number=plan_position.number), text=text, friction=friction,
         without_friction=ideal, efficiency=eta, locked_with_friction=locked,
-        lever_scale=force_layout.enlarged_lever_scale(velocity, lever),
+        lever_scale=force_lever.enlarged_lever_scale(velocity, lever),
         velocity_scale=text["velocity_scale"].format(value=scale_factor(velocity.scale)))

@@ -38,7 +38,7 @@ from ..locale import strings
 from ..memo import OwnedMemo
 from ..misreadings import SheetPolygons
 from ..scales import finer_standard_scale, format_scale, next_standard_scale, standard_scale
-from . import force_rows
+from . import force_bodies, force_marks, force_polygons, force_rows
 from . import forces as force_layout
 from . import plans as plan_layout
 from . import positions as positions_layout
@@ -587,7 +587,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                        polygon_scales=tuple((label, scale) for label, scale in bigger.forces.group_scales.items()
                                             if scale != record.get(label)),
                        body_arrows=tuple((label, scale, whole) for label, (scale, whole)
-                                         in force_layout.free_body_arrows(bigger).items() if whole))
+                                         in force_bodies.free_body_arrows(bigger).items() if whole))
 
     return whole, ways, larger
 
@@ -622,7 +622,7 @@ def _larger_force_sheet(drawn: force_layout.ForceSheet, bodies: int,
     if not bodies and not polygons:
         return None
     return replace(drawn, length_scale=finer_standard_scale(drawn.length_scale, bodies),
-                   forces=force_layout.with_finer_polygons(drawn.forces, polygons))
+                   forces=force_polygons.with_finer_polygons(drawn.forces, polygons))
 
 
 def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet,
@@ -640,7 +640,7 @@ def _parted_for_legibility(rows: force_rows.Rows, drawn: force_layout.ForceSheet
     held = {body.name for body in bodies if not any(piece.name in still_unheld for piece in body.parted or ())}
     smaller = force_layout.rows(replace(drawn, length_scale=next_standard_scale(drawn.length_scale)), groups_cut_free)
     return {drawing.name for row in smaller.drawings for drawing in row
-            if drawing.name in held and force_layout.labels_cover_one_another(drawing)}
+            if drawing.name in held and force_bodies.labels_cover_one_another(drawing)}
 
 
 def _at_no_length_scale(panel: Panel) -> Panel:
@@ -662,7 +662,7 @@ def _drawn_to_no_length_scale(name: str) -> bool:
 def _smaller_lever(drawn: force_layout.ForceSheet) -> float | None:
     """The lever's μV a standard step smaller than ``drawn``'s enlarged one; None back at the plan's own."""
     smaller = next_standard_scale(drawn.lever_drawn_scale)
-    return smaller if force_layout.draws_larger(smaller, drawn.velocity.scale) else None
+    return smaller if force_marks.draws_larger(smaller, drawn.velocity.scale) else None
 
 
 def _larger_levers(enlarged: force_layout.ForceSheet, drawn: force_layout.ForceSheet) -> Iterator[force_layout.ForceSheet]:

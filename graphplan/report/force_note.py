@@ -21,7 +21,8 @@ from ..analysis import Analysis, PlanPosition
 from ..locale import Count
 from ..mechanism import Mechanism
 from ..plans import Plan
-from ..render.forces import enlarged_lever_scale, too_short_to_draw
+from ..render.force_lever import enlarged_lever_scale
+from ..render.force_polygons import too_short_to_draw
 from ..render.numerals import power_of_ten
 from ..render.plans import ZERO_MM
 from ..scales import format_scale
