@@ -22,12 +22,14 @@ from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.kinematics import at
 from graphplan.locale import strings
+from graphplan.render import force_bodies, force_polygons
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg
 from graphplan.render.labels import text_box
 from graphplan.render.numerals import significant
 from graphplan.render.plans import ZERO_MM
 from graphplan.render.primitives import Arrow, Circle, Polyline, Text
+from graphplan.scales import format_scale, standard_scale
 
 FIXTURES = "fixtures"
 SCENES = ["ratchet_crank_rocker", "engine_slider_crank", "quick_return_slotted_lever", "shaper_six_bar",
@@ -89,7 +91,7 @@ def test_every_polygon_closes_on_the_paper(case):
                 # A side running back along another is drawn beside its line, square to itself, both heads seen.
                 step = complex(*second.start) - complex(*first.end)
                 aside = [arrow for arrow in (first, second)
-                         if abs(abs(step) - force_layout.SIDE_BY_SIDE_MM) < CLOSE_MM + gap
+                         if abs(abs(step) - force_polygons.SIDE_BY_SIDE_MM) < CLOSE_MM + gap
                          and abs(((complex(*arrow.end) - complex(*arrow.start)) * step.conjugate()).real)
                          < CLOSE_MM * arrow.length]
                 assert aside, (prefix, first.key, second.key)
@@ -133,17 +135,17 @@ def test_each_polygon_is_drawn_as_large_as_its_field_at_its_own_standard_scale(c
         vectors = group.polygon.vectors
         span = max(abs(v.end - w.end) for v in vectors for w in vectors) / group.scale
         assert 150.0 / STANDARD_STEP < span <= 150.0 + 1e-9, group.label
-        assert group.scale == force_layout.standard_scale(group.scale)
+        assert group.scale == standard_scale(group.scale)
     assert position.forces.scale == max(group.scale for group in position.forces.groups)
     # Each polygon's caption gives its μF; the sheet's head gives one only when they share it.
     captions = [item.text for name, items in layers.items() if name.endswith("-caption") and "polygon" in name
                 for item in items if isinstance(item, Text)]
     words = strings(analysis.scene.locale)
     for group in position.forces.groups:
-        assert words["force_scale"].format(value=force_layout.format_scale(group.scale)) in captions
+        assert words["force_scale"].format(value=format_scale(group.scale)) in captions
     head = " ".join(item.text for item in layers["sheet-title"] if isinstance(item, Text))
     shared = len(set(position.forces.group_scales.values())) == 1
-    assert (words["force_scale"].format(value=force_layout.format_scale(position.forces.scale)) in head) == shared
+    assert (words["force_scale"].format(value=format_scale(position.forces.scale)) in head) == shared
 
 
 def test_a_scene_s_force_scale_draws_every_polygon_at_it():
@@ -381,7 +383,7 @@ def test_a_reaction_acting_off_its_joint_along_a_guide_stands_on_the_guide_s_axi
     assert abs(shift_mm) > 50.0  # far past the block
     layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position))}
     items = layers[f"body-{force_layout.group_id(group.label)}-links"]
-    axes = [item for item in items if isinstance(item, Polyline) and item.stroke == force_layout._AXIS]
+    axes = [item for item in items if isinstance(item, Polyline) and item.stroke == force_bodies._AXIS]
     (axis,) = axes
     start, end = (complex(*point) for point in axis.points)
     slide = next(s for s in analysis.motion.slides if s.joint == found.joint and s.slider == 4)
@@ -431,7 +433,7 @@ def test_loads_along_a_slider_s_guide_stand_one_after_another_on_the_guide_clear
     layers = {layer.name: layer.items for layer in force_layout.layout(sheet)}
     arrows = {item.key.rsplit("-", 1)[1]: item for item in layers[f"body-{key}-forces"] if isinstance(item, Arrow)}
     heavy = [item for item in layers[f"body-{key}-links"]  # the links' outlines, not the blocks they cross
-             if isinstance(item, Polyline) and item.stroke == force_layout._LINK and item.fill is None]
+             if isinstance(item, Polyline) and item.stroke == force_bodies._LINK and item.fill is None]
     assert heavy
     slide = next(slide for slide in analysis.motion.slides if slide.slider == 6)
     u = complex(at(slide.u, position.index))
@@ -504,7 +506,7 @@ def test_a_load_along_its_own_link_at_a_point_inside_it_is_drawn_beside_the_link
     (body,) = [drawing for row in force_layout.rows(sheet).drawings for drawing in row if drawing.name == f"body-{key}"]
     layers = {layer.name: layer.items for layer in body.layers}
     outlines = [item for item in layers[f"body-{key}-links"]
-                if isinstance(item, Polyline) and item.stroke == force_layout._LINK and item.fill is None]
+                if isinstance(item, Polyline) and item.stroke == force_bodies._LINK and item.fill is None]
     forces = {item.key: item for item in layers[f"body-{key}-forces"] if isinstance(item, Arrow)}
     leaders = [item for item in layers[f"body-{key}-forces"] if isinstance(item, Polyline)]
     loads = {load.name: load for load in group.loads}

@@ -24,6 +24,7 @@ import graphplan
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.kinematics import cross
+from graphplan.render import force_bodies
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, forces_svg, length_scale, with_length_scale
 from graphplan.render.primitives import Circle, Polyline, Text
@@ -68,7 +69,7 @@ def test_each_journal_with_friction_has_its_circle_at_scale_or_enlarged(case):
     for group in position.with_friction.groups:
         drawn = layers.get(f"body-{force_layout.group_id(group.label)}-friction", ())
         circles = [item for item in drawn if isinstance(item, Circle)]
-        expected = sorted(max(pair.radius / scale, force_layout.LEAST_FRICTION_CIRCLE_MM)
+        expected = sorted(max(pair.radius / scale, force_bodies.LEAST_FRICTION_CIRCLE_MM)
                           for pair in journals_of(analysis, group).values())
         assert sorted(circle.radius for circle in circles) == pytest.approx(expected, abs=CLOSE_MM)
         # Each is centred on a pin of the group's drawing: on its joint.
@@ -156,7 +157,7 @@ def test_the_crank_takes_its_rod_s_reaction_on_the_rod_s_tangent_and_its_moment_
     layers = {layer.name: layer.items for layer in force_layout.layout(force_sheet(analysis, position, True))}
     forces, driver, motion, i = position.with_friction, analysis.mechanism.driver, analysis.motion, position.index
     scale = length_scale(analysis)
-    assert all(pair.radius / scale > force_layout.LEAST_FRICTION_CIRCLE_MM for pair in analysis.friction
+    assert all(pair.radius / scale > force_bodies.LEAST_FRICTION_CIRCLE_MM for pair in analysis.friction
                if not pair.sliding)
     crank, rod = forces.groups[-1], next(group for group in forces.groups
                                          if any(found.source == driver.link for found in group.found))

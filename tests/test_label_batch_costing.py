@@ -80,7 +80,7 @@ def test_the_spots_farther_out_are_asked_of_the_drawing_for_few_labels(label_set
     # Both counts hold the same queries of the labels reaching out and making room, which the first rings do not
     # change: since a leader across a load's arrow moves its label as a line covered does, those were some 60 000 of
     # about 300 000 (the costing's own, 123 000 against 235 000, kept its ratio of 0.52).  The force polygons are now
-    # lettered again where a name is left off or set on a leader out of a sliver (render/forces._polygon): those
+    # lettered again where a name is left off or set on a leader out of a sliver (render/force_polygons._polygon): those
     # calls' crowded labels reach out, queries both counts share, and the two came to 334 000 against 504 000.
     assert first_rings_first < 0.7 * all_at_once
 

@@ -21,6 +21,7 @@ from test_labels_off_lines import labels_on_lines
 import graphplan
 from graphplan import deliverables
 from graphplan.analysis import analyse
+from graphplan.render import force_lever, force_marks
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
 from graphplan.render.labels import Anchor, cover_one_another, place_labels, text_box
@@ -40,20 +41,20 @@ def laid_out(fixture: str, number: int) -> tuple[list, list[tuple[tuple[Anchor, 
     placer made for it: its anchors and the texts it placed (in the drawing's own frame, before the sheet's
     arrangement moves it)."""
     calls = []
-    original = force_layout.place_labels
+    original = force_marks.place_labels
 
     def recording(anchors, obstacles, *args, **kwargs):
         placement = original(anchors, obstacles, *args, **kwargs)
         calls.append((tuple(anchors), placement.texts))
         return placement
 
-    force_layout.place_labels = recording
+    force_marks.place_labels = recording
     try:
         analysis = analyse(graphplan.load(FIXTURES / f"{fixture}.toml"))
         (position,) = [plan for plan in analysis.plans if plan.number == number]
         layers = force_layout.layout(force_sheet(analysis, position))
     finally:
-        force_layout.place_labels = original
+        force_marks.place_labels = original
     return layers, calls
 
 
@@ -122,7 +123,7 @@ def test_the_double_rocker_s_lever_letters_its_25_mm_arm_h9_clear_of_the_lines_o
     assert "h9" not in labels_on_lines(lever)
     assert near_what_it_names(anchor, text)
     # Out of the pole's reach (the lever's own frame has the pole at its origin), where no load's name is read as it.
-    assert text_box(text).distance(shapely.Point(0.0, 0.0)) >= force_layout.POLE_CLEAR_MM
+    assert text_box(text).distance(shapely.Point(0.0, 0.0)) >= force_lever.POLE_CLEAR_MM
 
 
 def test_a_label_whose_point_is_ringed_by_lines_takes_a_clear_spot_on_a_short_leader():

@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 from test_sheets import STANDARD, analyses_of, with_drawing
 
+from graphplan.render import force_lever
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
 from graphplan.render.formats import holds
@@ -158,7 +159,7 @@ def test_on_a1_an_enlarged_lever_steps_back_only_as_far_as_the_sheet_needs_and_c
             kept += 1
     assert stepped_back and kept, "position 2 steps back (pa 250 mm is too long beside its group), 8 does not"
     # Drawn at the plan's size, the force sheets stand in as many parts.
-    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity, lever=None: None)
+    monkeypatch.setattr(force_lever, "enlarged_lever_scale", lambda velocity, lever=None: None)
     assert [panel.name for panel in force_panels(analysis, "A1")] == [panel.name for panel in panels]
 
 
@@ -197,7 +198,7 @@ def test_a_force_sheet_cut_into_parts_all_the_same_keeps_a_larger_lever_on_its_p
     assert larger, "some lever stands larger on its part"
     for position in larger:
         assert expected_scale(position.velocity, position.lever) - 1e-15 <= drawn[position.number]
-    monkeypatch.setattr(force_layout, "enlarged_lever_scale", lambda velocity, lever=None: None)
+    monkeypatch.setattr(force_lever, "enlarged_lever_scale", lambda velocity, lever=None: None)
     assert [panel.name for panel in force_panels(analysis, "A4")] == [panel.name for panel in panels]
 
 
@@ -227,7 +228,7 @@ def test_on_a_small_sheet_the_note_works_the_lever_at_the_mu_v_its_figure_is_dra
         drawn_at = float(re.search(r"μV = ([\d.]+) \(m/s\)/mm, arrows", figure)[1])
         velocity = position.velocity
         assert pa == pytest.approx(abs(velocity.points[velocity.images["A"]]) / drawn_at, abs=0.006)
-        enlarged = force_layout.enlarged_lever_scale(velocity, position.lever)
+        enlarged = force_lever.enlarged_lever_scale(velocity, position.lever)
         smaller += enlarged is not None and drawn_at > enlarged
     assert smaller  # the case in point: a lever drawn smaller than enlarged for the small sheet
 
@@ -238,8 +239,8 @@ def test_the_lever_is_laid_out_once_whatever_the_length_scale_its_sheet_is_tried
     analysis = analysis_of("triad_class_iii")
     position = next(position for position in analysis.plans if position.lever is not None)
     drawn = []
-    original = force_layout._lever
-    monkeypatch.setattr(force_layout, "_lever", lambda sheet, lever: drawn.append(sheet) or original(sheet, lever))
+    original = force_lever._lever
+    monkeypatch.setattr(force_lever, "_lever", lambda sheet, lever: drawn.append(sheet) or original(sheet, lever))
     sheet = force_sheet(analysis, position)
     first = force_layout.rows(sheet)
     before = len(drawn)

@@ -20,6 +20,7 @@ from test_lever_drawn_larger import crowded, drawn_scale, expected_scale
 
 import graphplan
 from graphplan.analysis import analyse
+from graphplan.render import force_lever, force_marks
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
 
@@ -234,10 +235,10 @@ def test_a_load_set_beside_stands_nearer_where_the_wider_side_is_taken():
     image, load = complex(-1.0, 5.0), complex(0.0, -10.0)
     first = [Arrow((-1.0, 5.0), (-1.0, -5.0))]  # drawn before from the same image down the same line
     taken = LineString(((-1.0, 5.0), (-1.0, 20.0))).buffer(0.8)  # the line's other side, an arm there
-    _, _, shift = force_layout._pushing_or_pulling(image, load, first, lambda: taken)
-    assert shift == pytest.approx(-force_layout.LEVER_BESIDE_MM)  # on the pole's side of its line, x < −1
+    _, _, shift = force_lever._pushing_or_pulling(image, load, first, lambda: taken)
+    assert shift == pytest.approx(-force_lever.LEVER_BESIDE_MM)  # on the pole's side of its line, x < −1
     # A load drawn before 6 mm off on that side too: the second stands between them, 2.5 mm off.
-    wider = [*first, Arrow((-1.0 - force_layout.LEVER_BESIDE_MM, 5.0), (-1.0 - force_layout.LEVER_BESIDE_MM, -5.0))]
-    start, end, shift = force_layout._pushing_or_pulling(image, load, wider, lambda: taken)
-    assert shift == pytest.approx(-force_layout.BESIDE_MM)
+    wider = [*first, Arrow((-1.0 - force_lever.LEVER_BESIDE_MM, 5.0), (-1.0 - force_lever.LEVER_BESIDE_MM, -5.0))]
+    start, end, shift = force_lever._pushing_or_pulling(image, load, wider, lambda: taken)
+    assert shift == pytest.approx(-force_marks.BESIDE_MM)
     assert (start, end) == (pytest.approx(image + shift), pytest.approx(image + load + shift))

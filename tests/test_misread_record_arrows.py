@@ -133,7 +133,7 @@ def test_readings_that_fit_arrows_drawn_at_one_newton_a_millimetre_are_still_tol
     analysis = analyse(scene)
     position = next(plan for plan in analysis.plans if plan.number == 8)
     from graphplan.render.drawings import force_sheet
-    from graphplan.render.forces import free_body_arrows
+    from graphplan.render.force_bodies import free_body_arrows
 
     assert free_body_arrows(force_sheet(analysis, position))["I(1,2)"][0] == 1.0
     values = {name: round(abs(complex(analysis.equilibrium.reaction({"R32": "R23"}.get(name, name))

@@ -279,7 +279,7 @@ def test_an_arm_on_zhukovsky_s_lever_too_short_to_draw_says_not_drawn(locale):
     plans leave out a vector: at 0.1° the piston's image b stands 0.22 mm from the pole, so F4 and Fu4 at b have
     arms shorter than that. Each arm is worked out here from the velocity plan: the image turned clockwise, the
     perpendicular from the pole to the force's line through it, at the μV the note says the lever is drawn at."""
-    from graphplan.render.forces import enlarged_lever_scale
+    from graphplan.render.force_lever import enlarged_lever_scale
 
     analysis = analysis_of("slider-crank", locale)
     text = strings(locale)

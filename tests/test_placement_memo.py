@@ -1,5 +1,5 @@
-"""The placements and grown lines remembered (labels.remembered, forces._grown) are what the placer and GEOS make for
-the very same arguments, and nothing made for other arguments, another placer or other tuning is given instead."""
+"""The placements and grown lines remembered (labels.remembered, force_marks._grown) are what the placer and GEOS make
+for the very same arguments, and nothing made for other arguments, another placer or other tuning is given instead."""
 import math
 
 import pytest
@@ -8,7 +8,7 @@ from shapely.geometry import LineString
 from shapely.ops import unary_union
 
 from graphplan.memo import RecentMemo
-from graphplan.render import forces, labels
+from graphplan.render import force_marks, labels
 from graphplan.render.labels import Anchor
 
 
@@ -16,7 +16,7 @@ from graphplan.render.labels import Anchor
 def _empty_memos(monkeypatch):
     """Memos of their own, empty and never full: in a worker that ran other tests the module's may be full."""
     monkeypatch.setattr(labels, "_placements", RecentMemo())
-    monkeypatch.setattr(forces, "_grown_unions", RecentMemo())
+    monkeypatch.setattr(force_marks, "_grown_unions", RecentMemo())
 
 
 def _crowd(shift: float = 0.0):
@@ -100,9 +100,9 @@ def test_the_tuning_changed_places_anew(monkeypatch):
 
 def test_lines_grown_remembered_are_geos_own():
     _, lines = _crowd()
-    grown = forces._grown(lines, 0.8)
+    grown = force_marks._grown(lines, 0.8)
     assert grown.equals_exact(unary_union(lines).buffer(0.8), 0.0)
-    assert forces._grown(list(lines), 0.8) is grown
-    wider = forces._grown(lines, 1.0)
+    assert force_marks._grown(list(lines), 0.8) is grown
+    wider = force_marks._grown(lines, 1.0)
     assert wider.equals_exact(unary_union(lines).buffer(1.0), 0.0) and wider.area > grown.area
-    assert forces._grown([], 0.8).is_empty
+    assert force_marks._grown([], 0.8).is_empty

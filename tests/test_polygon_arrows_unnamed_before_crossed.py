@@ -8,9 +8,9 @@ R14 at position 2, 15 mm across Fu3 and R64).  The polygons now do as Zhukovsky'
 (tests/test_lever_leaders_off_arrows.py): the arrow goes unnamed and its caption names it, by the side from whose head
 it starts (the sides run head to tail, in the equation's order), or as the sum of its components for a reaction drawn
 whole.  But a whole reaction (R23, R43), which the student reads off the polygon, stays on it: the components and
-given loads that crowd it go to the caption first, and a short leader (under forces.SLIVER_LEADER_MM) across sides
-side by side with its own line (within forces.SLIVER_DEG) reads as naming its own, as the crank-rocker starter's
-R23n at position 5 does across R43, and stays.
+given loads that crowd it go to the caption first, and a short leader (under force_polygons.SLIVER_LEADER_MM) across
+sides side by side with its own line (within force_polygons.SLIVER_DEG) reads as naming its own, as the crank-rocker
+starter's R23n at position 5 does across R43, and stays.
 
 The crossings are found from the polygons' primitives with the lever test's check: each leader of a polygon's
 ``-leaders`` layer against the shaft and head of each arrow of its ``-vectors`` layer, away from the leader's ends;
@@ -31,6 +31,7 @@ from test_lever_leaders_off_arrows import crossings
 import graphplan
 from graphplan.analysis import analyse
 from graphplan.locale import strings
+from graphplan.render import force_polygons
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet
 from graphplan.render.labels import text_box
@@ -42,9 +43,9 @@ from graphplan.starters import starter
 # starter's, where R23, R23n, R23τ and G3 were all led across R43.
 SCENES = [*sorted(path.stem for path in Path("fixtures").glob("*.toml")), "new:crank-rocker"]
 # How far (mm) an arrow's tail may stand from the head it starts from: a side run back along another is drawn beside
-# it, moved square to itself by up to twice forces.SIDE_BY_SIDE_MM.
-BESIDE_MM = 2 * force_layout.SIDE_BY_SIDE_MM + 0.01
-# A leader starts within this (mm) of the line whose name it leads to (forces._led_from's reach).
+# it, moved square to itself by up to twice force_polygons.SIDE_BY_SIDE_MM.
+BESIDE_MM = 2 * force_polygons.SIDE_BY_SIDE_MM + 0.01
+# A leader starts within this (mm) of the line whose name it leads to (force_marks._led_from's reach).
 LED_FROM_MM = 1.0
 
 _analyses: dict = {}
@@ -105,9 +106,9 @@ def length(leader: Polyline) -> float:
 
 def checked(drawing, text, misread: list[str] | None = None) -> set[str]:
     """Check one polygon drawing: no leader but a short one across sides side by side with its own crosses an arrow
-    (a whole reaction's up to forces.WHOLE_LEADER_MM), every whole reaction is named on it and reads as naming its own
-    arrow (or, given a ``misread`` list, is put in it where it does not), and each arrow is named once, on it or in its
-    caption, found where the caption says.  The names the caption tells, handed back."""
+    (a whole reaction's up to force_polygons.WHOLE_LEADER_MM), every whole reaction is named on it and reads as naming
+    its own arrow (or, given a ``misread`` list, is put in it where it does not), and each arrow is named once, on it or
+    in its caption, found where the caption says.  The names the caption tells, handed back."""
     said = said_unnamed(drawing.caption, text)
     told = dict(told_apart(item, text) for item in said)
     layers = {layer.name: layer.items for layer in drawing.layers}
@@ -121,10 +122,10 @@ def checked(drawing, text, misread: list[str] | None = None) -> set[str]:
         for leader in leaders:
             name, own = led_to(leader, arrows, names, prefix)
             leader_of[name.text] = leader
-            longest = force_layout.WHOLE_LEADER_MM if whole(name.text) else force_layout.SLIVER_LEADER_MM
+            longest = force_polygons.WHOLE_LEADER_MM if whole(name.text) else force_polygons.SLIVER_LEADER_MM
             for crossed in {key for _, key in crossings([leader], arrows)} - {own.key}:
                 assert length(leader) < longest, f"{name.text}'s leader, {length(leader):.2f} mm, crosses {crossed}"
-                assert lines_apart_deg(own, by_key[crossed]) < force_layout.SLIVER_DEG, (
+                assert lines_apart_deg(own, by_key[crossed]) < force_polygons.SLIVER_DEG, (
                     f"{name.text}'s leader crosses {crossed} at {lines_apart_deg(own, by_key[crossed]):.1f}°")
         # The whole reactions the student reads off the polygon are named on it.
         wholes = [arrow.key for arrow in arrows if whole(arrow.key.removeprefix(f"{prefix}-"))]
@@ -161,16 +162,16 @@ def whole(name: str) -> bool:
 
 def read_as(name: Text, leader: Polyline | None, arrows: Sequence[Arrow], prefix: str) -> str:
     """The key of the arrow a name reads as naming: the eye takes the arrow whose shaft is nearest its box (its own
-    where that is no more than forces.TIE_MM farther), or, where it is led on a leader long enough to be followed
-    (forces.SLIVER_LEADER_MM), the arrow the leader points at: the first shaft that the leader, run on from its far
-    end (the one by the line) away from the name, meets, its own components apart."""
+    where that is no more than force_polygons.TIE_MM farther), or, where it is led on a leader long enough to be
+    followed (force_polygons.SLIVER_LEADER_MM), the arrow the leader points at: the first shaft that the leader, run on
+    from its far end (the one by the line) away from the name, meets, its own components apart."""
     shafts = {arrow.key: LineString((arrow.start, arrow.end)) for arrow in arrows}
-    if leader is None or length(leader) < force_layout.SLIVER_LEADER_MM:
+    if leader is None or length(leader) < force_polygons.SLIVER_LEADER_MM:
         box = text_box(name)
         nearest = min(shafts, key=lambda key: shafts[key].distance(box))
         own = svg_id(prefix, name.text)
         # Two lines this near alike the eye does not tell apart, and the name has its own arrow's colour.
-        return own if shafts[own].distance(box) <= shafts[nearest].distance(box) + force_layout.TIE_MM else nearest
+        return own if shafts[own].distance(box) <= shafts[nearest].distance(box) + force_polygons.TIE_MM else nearest
     (x0, y0), (x1, y1) = leader.points[0], leader.points[-1]
     run = 3.0 / math.hypot(x0 - x1, y0 - y1)
     run_on = LineString(((x0, y0), (x0 + (x0 - x1) * run, y0 + (y0 - y1) * run)))
@@ -266,8 +267,8 @@ def test_the_crank_rocker_s_sliver_keeps_r23_and_r23n_named_on_short_leaders_acr
     # R23's beyond R43 too (and R23n, which runs all but on R23), on a leader long enough to be followed to its own
     # line.
     assert "R23n" in across and "R23" in across
-    assert all(mm < force_layout.SLIVER_LEADER_MM for name, mm in across.items() if not whole(name))
-    assert force_layout.SLIVER_LEADER_MM <= across["R23"] < force_layout.WHOLE_LEADER_MM
+    assert all(mm < force_polygons.SLIVER_LEADER_MM for name, mm in across.items() if not whole(name))
+    assert force_polygons.SLIVER_LEADER_MM <= across["R23"] < force_polygons.WHOLE_LEADER_MM
     r23 = next(leader for leader in layers[f"{prefix}-leaders"]
                if led_to(leader, arrows, names, prefix)[0].text == "R23")
     assert f"{prefix}-R43" in {key for _, key in crossings([r23], arrows)}

@@ -26,6 +26,7 @@ from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.render import forces as force_layout
 from graphplan.render.drawings import force_sheet, with_length_scale
+from graphplan.render.plans import ZERO_MM
 
 GRAVITY = 9.81
 
@@ -544,7 +545,7 @@ def test_x_is_written_for_a_reaction_too_short_to_draw_as_the_note_writes_it(cas
     friction = position.with_friction
     group = next(each for each in friction.groups if any(found.name == "R16" for found in each.found))
     reaction = next(found for found in group.found if found.name == "R16")
-    undrawable = 10.0 * abs(reaction.force) / force_layout.ZERO_MM    # R16 drawn 0.1 mm long
+    undrawable = 10.0 * abs(reaction.force) / ZERO_MM    # R16 drawn 0.1 mm long
     shrunk = dataclasses.replace(position, with_friction=friction.at_scale(undrawable))
     line = ram_equation(analysis, shrunk)
     match = re.match(r"ΣME\(6\): −?R16·x [+−] Mf56 = 0,\s+x = (\d+(?:\.\d+)?) mm", line)

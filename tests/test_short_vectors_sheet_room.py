@@ -23,6 +23,7 @@ import graphplan.render.forces as force_layout
 from graphplan.analysis import analyse
 from graphplan.cli import main
 from graphplan.locale import strings
+from graphplan.render import force_polygons
 from graphplan.render.drawings import force_sheet
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
@@ -48,7 +49,7 @@ def engine_zh_naming_nothing(tmp_path_factory) -> Path:
     """The same run with no vector taken as too short to draw: captions that name none."""
     out = tmp_path_factory.mktemp("unnamed") / "engine"
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(force_layout, "too_short_to_draw", lambda force, scale: False)
+        patch.setattr(force_polygons, "too_short_to_draw", lambda force, scale: False)
         assert main(["run", str(ENGINE), "--only", "sheets", "--locale", "zh", "--out", str(out)]) == 0
     return out
 

@@ -177,7 +177,7 @@ def check_lever_scale(analysis, sheets):
         drawn = sorted(math.dist(*ray.points) * drawn_at for ray in rays)
         images = {letter for letter in position.velocity.images.values() if letter != "p"}
         velocities = sorted(abs(position.velocity.points[letter]) for letter in images
-                            if abs(position.velocity.points[letter]) / drawn_at >= force_layout.ZERO_MM)
+                            if abs(position.velocity.points[letter]) / drawn_at >= plan_layout.ZERO_MM)
         assert drawn == pytest.approx(velocities, rel=1e-6)
         assert f"Mb = {significant(position.lever.balancing)} Н·м" in caption
         scales.append(drawn_at)

@@ -16,7 +16,7 @@ import pytest
 from shapely.geometry import LineString
 
 from graphplan.cli import main
-from graphplan.render import forces as force_layout
+from graphplan.render import force_lever
 from graphplan.render.primitives import Arrow
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
@@ -397,8 +397,8 @@ def test_a_lever_load_set_beside_another_keeps_to_its_lines_side_of_the_pole():
     image, load = complex(-1.0, 5.0), complex(0.0, -10.0)
     first = [Arrow((-1.0, 5.0), (-1.0, -5.0))]  # drawn before from the same image down the same line
     taken = LineString(((-1.0, 5.0), (-1.0, 20.0))).buffer(0.8)  # the line's other side, an arm there
-    start, end, shift = force_layout._pushing_or_pulling(image, load, first, lambda: taken)
-    assert abs(shift) == pytest.approx(force_layout.LEVER_BESIDE_MM)
+    start, end, shift = force_lever._pushing_or_pulling(image, load, first, lambda: taken)
+    assert abs(shift) == pytest.approx(force_lever.LEVER_BESIDE_MM)
     assert start.real < 0 and end.real < 0, f"drawn at x = {start.real:.1f} mm, its line at x = −1 mm, the pole at 0"
 
 

@@ -426,7 +426,8 @@ def _links(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tup
                       if found.offset and found.joint == slide.joint
                       and {found.source, found.target} == {slide.guide, slide.slider}
                       and abs(found.force) / sheet.forces.scale_of(found.name) >= ZERO_MM]
-            back, ahead = min([-14.0, *(shift - 6.0 for shift in shifts)]), max([14.0, *(shift + 6.0 for shift in shifts)])
+            back = min([-14.0, *(shift - 6.0 for shift in shifts)])
+            ahead = max([14.0, *(shift + 6.0 for shift in shifts)])
             items.append(Polyline((_xy(centre + back * u), _xy(centre + ahead * u)), _AXIS))
         items.append(slider_block(_xy(centre), math.atan2(u.imag, u.real), stroke=MAIN))
     joints = {name for name, first, second in mechanism.revolutes if first in group.links or second in group.links}
