@@ -40,11 +40,22 @@ ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
 
 from graphplan import cli
-from graphplan.render import balancing, diagrams, dynamics, forces, labels, plans, positions
+from graphplan.render import (
+    balancing,
+    diagrams,
+    dynamics,
+    force_lever,
+    force_marks,
+    force_polygons,
+    labels,
+    plans,
+    positions,
+)
 
-# The modules that letter with the placer (the diagrams place their numbers themselves since 0794f7b).
-CALLERS = tuple(module for module in (balancing, diagrams, dynamics, forces, plans, positions)
-                if hasattr(module, "place_labels"))
+# The modules that letter with the placer (the diagrams place their numbers themselves since 0794f7b); the force
+# sheet's drawings letter through force_marks, and its polygons and lever measure their labels against their lines.
+CALLERS = (*(module for module in (balancing, diagrams, dynamics, plans, positions) if hasattr(module, "place_labels")),
+           force_marks, force_polygons, force_lever)
 LOCALES = ("en", "ru")
 
 
@@ -170,15 +181,16 @@ def accepting(place):
 
 def run_fixture(scene: Path, locale: str, place, out: Path) -> Clutter:
     recorder = Recorder(place)
-    originals = {caller: (caller.place_labels, caller.obstacles_of) for caller in CALLERS}
+    wrapped = {"place_labels": recorder, "obstacles_of": recording_obstacles_of}
+    originals = {(caller, name): getattr(caller, name) for caller in CALLERS for name in wrapped
+                 if hasattr(caller, name)}
     try:
-        for caller in CALLERS:
-            caller.place_labels = recorder
-            caller.obstacles_of = recording_obstacles_of
+        for caller, name in originals:
+            setattr(caller, name, wrapped[name])
         code = cli.main(["run", str(scene), "--out", str(out), "--locale", locale, "--sheet", "none"])
     finally:
-        for caller, (placer, obstacles) in originals.items():
-            caller.place_labels, caller.obstacles_of = placer, obstacles
+        for (caller, name), original in originals.items():
+            setattr(caller, name, original)
     if code:
         raise SystemExit(f"{scene.name} ({locale}): graphplan run exited with {code}")
     total = Clutter()
