@@ -4,7 +4,7 @@
 
 What is remembered: the label placements
 (:func:`graphplan.render.labels.remembered`) and the grown unions of a
-lever's or a group's lines (``force_marks._grown``), each for the very same
+lever's or a group's lines (``force_marks.grown_union``), each for the very same
 arguments. Two workloads, each a fresh interpreter started with both memos
 as they are and with both off (``labels.PLACEMENTS_KEPT = 0``,
 ``force_marks.GROWN_KEPT = 0``), in turn, so that both see the same load on the

@@ -1,5 +1,6 @@
-"""The placements and grown lines remembered (labels.remembered, force_marks._grown) are what the placer and GEOS make
-for the very same arguments, and nothing made for other arguments, another placer or other tuning is given instead."""
+"""The placements and grown lines remembered (labels.remembered, force_marks.grown_union) are what the placer and GEOS
+make for the very same arguments, and nothing made for other arguments, another placer or other tuning is given
+instead."""
 import math
 
 import pytest
@@ -100,9 +101,9 @@ def test_the_tuning_changed_places_anew(monkeypatch):
 
 def test_lines_grown_remembered_are_geos_own():
     _, lines = _crowd()
-    grown = force_marks._grown(lines, 0.8)
+    grown = force_marks.grown_union(lines, 0.8)
     assert grown.equals_exact(unary_union(lines).buffer(0.8), 0.0)
-    assert force_marks._grown(list(lines), 0.8) is grown
-    wider = force_marks._grown(lines, 1.0)
+    assert force_marks.grown_union(list(lines), 0.8) is grown
+    wider = force_marks.grown_union(lines, 1.0)
     assert wider.equals_exact(unary_union(lines).buffer(1.0), 0.0) and wider.area > grown.area
-    assert force_marks._grown([], 0.8).is_empty
+    assert force_marks.grown_union([], 0.8).is_empty

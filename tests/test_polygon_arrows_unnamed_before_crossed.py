@@ -45,7 +45,7 @@ SCENES = [*sorted(path.stem for path in Path("fixtures").glob("*.toml")), "new:c
 # How far (mm) an arrow's tail may stand from the head it starts from: a side run back along another is drawn beside
 # it, moved square to itself by up to twice force_polygons.SIDE_BY_SIDE_MM.
 BESIDE_MM = 2 * force_polygons.SIDE_BY_SIDE_MM + 0.01
-# A leader starts within this (mm) of the line whose name it leads to (force_marks._led_from's reach).
+# A leader starts within this (mm) of the line whose name it leads to (force_marks.led_from's reach).
 LED_FROM_MM = 1.0
 
 _analyses: dict = {}

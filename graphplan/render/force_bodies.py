@@ -37,37 +37,36 @@ from ..loads import external_names
 from ..scales import format_scale
 from ..wording import friction_summary
 from .force_marks import (
-    _ACTION_RUN_ON,
-    _ARM,
-    _BALANCING,
-    _LEADER_WIDTH,
-    _LOAD,
+    ACTION_RUN_ON,
     ALONG_BAR_MM,
     ALONG_BAR_SHARE,
+    ARM,
+    BALANCING,
     BESIDE_MM,
     LEAST_ARROW_MM,
+    LOAD,
     NAME_SIZE,
     NEGLIGIBLE,
     PER_LINE,
     POINT_SIZE,
     VALUE_SEPARATOR,
     ForceSheet,
-    _angle,
-    _arrow_scale,
-    _balancing_line,
-    _grown,
-    _lettered,
-    _negligible,
-    _perpendicular,
-    _points_onto,
-    _sign,
-    _unstacked,
-    _whole_reaction,
-    _wrapped,
+    arm_with_run_on,
+    arrow_scale,
+    balancing_line,
+    direction_rad,
     group_id,
+    grown_union,
+    letters_placed,
+    negligible,
+    points_onto,
+    sign_mark,
+    unstacked,
+    whole_reaction,
+    wrapped,
 )
 from .force_rows import CAPTION_WIDTH_MM, Drawing
-from .labels import Anchor, cover_one_another, open_direction
+from .labels import LEADER_WIDTH, Anchor, cover_one_another, open_direction
 from .linkage import link_outlines, outline_points
 from .numerals import short, significant
 from .plans import ZERO_MM, too_short_lines
@@ -159,7 +158,7 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     anchors: list[Anchor] = []
     # Only the links' heavy lines hide an arrow laid over them: a slide's thin axis is the line a slider's
     # loads act along, and the textbooks draw them on it; a slider's block is crossed every way from its pin.
-    bars = _grown([LineString(item.points + item.points[:1] if item.closed else item.points) for item in links
+    bars = grown_union([LineString(item.points + item.points[:1] if item.closed else item.points) for item in links
                    if isinstance(item, Polyline) and len(item.points) > 1 and item.stroke.width >= _LINK.width
                    and item.fill is None], 1.0)
     blocks = unary_union([Polygon(item.points) for item in links
@@ -176,9 +175,9 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     # Arrows pointing onto their joint are set first, so that where several share a line the others run on
     # beyond their tails, not head against head.
     stacked: dict[str, Arrow] = {}
-    for force in sorted(shown, key=lambda force: not _points_onto(*beside[force.name][:2], _c(paper(force.point)))):
+    for force in sorted(shown, key=lambda force: not points_onto(*beside[force.name][:2], _c(paper(force.point)))):
         start, end, shift = beside[force.name]
-        start, end = _unstacked(start, end, _c(paper(force.point)) + shift, list(stacked.values()))
+        start, end = unstacked(start, end, _c(paper(force.point)) + shift, list(stacked.values()))
         stacked[force.name] = Arrow(_xy(start), _xy(end), force.stroke, 3.0, svg_id("body", key, force.name))
     leaders: list[Primitive] = []
     for force in shown:
@@ -191,12 +190,12 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
         if shift:
             # Set beside its link, the arrow is tied to its point; its arm is still taken to its true line.
             near = min((start, end), key=lambda end_: abs(end_ - point))
-            leaders.append(Polyline((_xy(point), _xy(near)), Stroke(_LEADER_WIDTH, force.stroke.colour)))
+            leaders.append(Polyline((_xy(point), _xy(near)), Stroke(LEADER_WIDTH, force.stroke.colour)))
         drawn[force.name] = (start - shift, end - shift, unit)
         # Named at the arrow's free end: its head, or its tail when it points onto its joint; beside its shaft, or led
         # from it, it names the arrow as well.
-        free, outward = (start, -unit) if _points_onto(start, end, point + shift) else (end, unit)
-        anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, _angle(outward), force.stroke.colour,
+        free, outward = (start, -unit) if points_onto(start, end, point + shift) else (end, unit)
+        anchors.append(Anchor(_xy(free), force.name, NAME_SIZE, direction_rad(outward), force.stroke.colour,
                               along=(arrow.start, arrow.end)))
     turning, turning_anchors = _moments(sheet, group, paper, is_driver, links + arrows)
     circles, circle_anchors, circle_caption = _friction_circles(sheet, group, paper)
@@ -217,7 +216,7 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     points += [Anchor(where, name, POINT_SIZE, open_direction(where, figure))
                for name, where in along_names if name not in {anchor.text for anchor in points}]
     others = points + turning_anchors + circle_anchors + arm_anchors
-    labels = _lettered(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others))
+    labels = letters_placed(anchors + others, figure, reach_farther=[True] * len(anchors) + [False] * len(others))
     caption = [text["driver_forces_title" if is_driver else "group_forces_title"].format(group=group.label),
                text["comma"].join((text["length_scale"].format(value=format_scale(sheet.length_scale)),
                                    text["body_force_scale"].format(value=format_scale(scale),
@@ -227,10 +226,10 @@ def body(sheet: ForceSheet, group: GroupForces) -> Drawing:
     caption += circle_caption
     caption += _slide_friction(sheet, group)
     if is_driver:
-        caption.append(_balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
+        caption.append(balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons"))
         # Under the load it balances, so that a sheet set part by part keeps it.
         caption += _friction_summary(sheet)
-    caption += _wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
+    caption += wrapped([f"{found.name} = {significant(abs(found.force))} {text['newton']}" for found in group.found
                          if abs(found.force) / group.scale >= ZERO_MM])
     friction = [Layer(f"body-{key}-friction", tuple(circles))] if circles else []
     # Under the links, whose pins cover its lines' ends; named for lines, as a CAD file's construction lines.
@@ -328,14 +327,14 @@ def _group_size_mm(sheet: ForceSheet, group: GroupForces) -> float:
 def _body_frame(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex], tuple[float, float]]
                 ) -> tuple[list[Primitive], list[str], list[_Force], float]:
     """The group cut free's links (and its special points) on the paper, those points' names, the forces on it that
-    are drawn (a rounding error's is not, :func:`_negligible`) and the μF their arrows are drawn at, which the links'
+    are drawn (a rounding error's is not, :func:`negligible`) and the μF their arrows are drawn at, which the links'
     extent sets."""
     links = _links(sheet, group, paper)
     special, special_names = _special_points(sheet, group, paper)
     links += special
     forces = _forces_on(sheet, group)
-    shown = [force for force in forces if not _negligible(force.force, [other.force for other in forces])]
-    return links, special_names, shown, _arrow_scale([force.force for force in forces], links)
+    shown = [force for force in forces if not negligible(force.force, [other.force for other in forces])]
+    return links, special_names, shown, arrow_scale([force.force for force in forces], links)
 
 
 def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...]]]:
@@ -346,7 +345,7 @@ def free_body_arrows(sheet: ForceSheet) -> dict[str, tuple[float, tuple[str, ...
     found = {}
     for group in sheet.forces.groups:
         _, _, shown, scale = _body_frame(sheet, group, paper)
-        whole = tuple(force.name for force in shown if _whole_reaction(force.name)
+        whole = tuple(force.name for force in shown if whole_reaction(force.name)
                       and abs(force.force) / scale >= LEAST_ARROW_MM)
         found[group.label] = (scale, whole)
     return found
@@ -464,14 +463,14 @@ def _special_points(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[
             if abs(((where - ends[0]) * unit.conjugate()).imag) > 1e-9 * max(abs(where - ends[0]), 1.0):
                 continue
             nearer = min(ends, key=lambda end: abs(end - where))
-            items.append(Polyline((paper(nearer), paper(where)), _ACTION_RUN_ON))
+            items.append(Polyline((paper(nearer), paper(where)), ACTION_RUN_ON))
         for slide in sheet.motion.slides:
             if slide.slider not in group.links:
                 continue
             pin = sheet.positions[slide.joint]
             u = complex(at(slide.u, sheet.index))
             if abs(((where - pin) * u.conjugate()).real) <= 1e-9 * max(abs(where - pin), 1.0):
-                items.append(Polyline((paper(pin), paper(where)), _ACTION_RUN_ON))
+                items.append(Polyline((paper(pin), paper(where)), ACTION_RUN_ON))
     return items, names
 
 
@@ -488,7 +487,7 @@ def _forces_on(sheet: ForceSheet, group: GroupForces) -> list[_Force]:
     A reaction is split as the group's polygon splits it (R23τ, R23n);
     reactions between the group's own links are inner and not drawn here.
     """
-    forces = [_Force(load.name, _load_point(sheet, load.point) + load.offset, load.force, _LOAD)
+    forces = [_Force(load.name, _load_point(sheet, load.point) + load.offset, load.force, LOAD)
               for load in group.loads if load.is_force and load.force != 0]
     polygon = {vector.name: vector for vector in group.polygon.vectors if vector.role != "inner"}
     for found in group.found:
@@ -501,7 +500,7 @@ def _forces_on(sheet: ForceSheet, group: GroupForces) -> list[_Force]:
         else:
             forces.append(_Force(found.name, point, found.force, _REACTION))
     if "Fb" in polygon:
-        forces.append(_Force("Fb", sheet.positions[sheet.mechanism.driver.joint], polygon["Fb"].force, _BALANCING))
+        forces.append(_Force("Fb", sheet.positions[sheet.mechanism.driver.joint], polygon["Fb"].force, BALANCING))
     return forces
 
 
@@ -557,7 +556,7 @@ def _moments(sheet: ForceSheet, group: GroupForces, paper, is_driver: bool,
     if is_driver and driver.kind == "crank" and sheet.forces.balancing != 0:
         centre = _c(paper(sheet.positions[driver.pivot]))
         items_, anchor = _turn(centre, BALANCING_RADIUS_MM, sheet.forces.balancing, "Mb",
-                               Stroke(0.5, _BALANCING.colour), open_direction(_xy(centre), drawn))
+                               Stroke(0.5, BALANCING.colour), open_direction(_xy(centre), drawn))
         items += items_
         anchors.append(anchor)
     return items, anchors
@@ -620,11 +619,12 @@ def _friction_circles(sheet: ForceSheet, group: GroupForces, paper) -> tuple[lis
         run = radius + TANGENT_RUN_MM
         items.append(Polyline((_xy(touch - run * unit), _xy(touch + run * unit)), _ON_TANGENT))
         if f"{found.name}n" in split:  # split into τ and n on the drawing, the whole reaction is named only here
-            anchors.append(Anchor(_xy(touch + run * unit), found.name, NAME_SIZE, _angle(unit), _ON_TANGENT.colour))
+            anchors.append(Anchor(_xy(touch + run * unit), found.name, NAME_SIZE, direction_rad(unit),
+                                  _ON_TANGENT.colour))
     text = sheet.text
     values = [f"ρ{_pair_name(sheet, pair)} = {significant(1000.0 * pair.radius)} {text['millimetre']}"
               for pair in sorted(journals, key=lambda pair: (pair.joint, pair.source, pair.target))]
-    caption = _wrapped([text["friction_circles"].format(values=values[0]), *values[1:]])
+    caption = wrapped([text["friction_circles"].format(values=values[0]), *values[1:]])
     if any(pair.radius / sheet.length_scale < LEAST_FRICTION_CIRCLE_MM for pair in journals):
         caption.append(text["friction_circles_enlarged"].format(least=f"{LEAST_FRICTION_CIRCLE_MM:g}"))
     return items, anchors, caption
@@ -661,7 +661,7 @@ def _slide_friction(sheet: ForceSheet, group: GroupForces) -> list[str]:
     comma = text["comma"]
     spaced = VALUE_SEPARATOR if comma == ", " else comma
     first = text["sliding_friction"].format(values=spaced.join(comma.join(value) for value in values[:PER_LINE]))
-    return [first, *_wrapped([", ".join(value) for value in values[PER_LINE:]])]
+    return [first, *wrapped([", ".join(value) for value in values[PER_LINE:]])]
 
 
 def _pair_name(sheet: ForceSheet, pair: FrictionPair) -> str:
@@ -687,9 +687,9 @@ def _displacements(sheet: ForceSheet, group: GroupForces, paper) -> tuple[list[P
             continue
         centre = _c(paper(sheet.positions[load.point]))
         shifted = _c(paper(sheet.positions[load.point] + load.offset))
-        items.append(Polyline((_xy(centre), _xy(shifted)), _ARM))
+        items.append(Polyline((_xy(centre), _xy(shifted)), ARM))
         anchors.append(Anchor(_xy((centre + shifted) / 2), f"hu{load.link}", NAME_SIZE - 0.4,
-                              _angle(1j * (shifted - centre)), _ARM.colour))
+                              direction_rad(1j * (shifted - centre)), ARM.colour))
     return items, anchors
 
 
@@ -718,18 +718,18 @@ def _arms(sheet: ForceSheet, group: GroupForces, drawn: Mapping[str, tuple[compl
                 start, end, unit = drawn[term.name]
                 count += 1
                 name = f"h{count}"
-                parts.append(f"{_sign(term.moment)} {term.name}·{name}")
+                parts.append(f"{sign_mark(term.moment)} {term.name}·{name}")
                 if term.arm / sheet.length_scale < ZERO_MM:
                     undrawn.append(f"{name} = {significant(term.arm / sheet.length_scale)} {sheet.text['millimetre']}")
                     continue
-                items += _perpendicular(centre, start, end, unit)
+                items += arm_with_run_on(centre, start, end, unit)
                 foot = perpendicular_foot(centre, start, unit)
                 anchors.append(Anchor(_xy((centre + foot) / 2), name, NAME_SIZE - 0.4,
-                                      _angle(1j * (foot - centre)), _ARM.colour, along=(_xy(centre), _xy(foot))))
+                                      direction_rad(1j * (foot - centre)), ARM.colour, along=(_xy(centre), _xy(foot))))
             else:
                 # A couple stands as itself; a force not drawn (or a term the group adds) by its moment.
                 couple = any(load.name == term.name and not load.is_force for load in group.loads)
-                parts.append(f"{_sign(term.moment)} {term.name if couple else f'M({term.name})'}")
+                parts.append(f"{sign_mark(term.moment)} {term.name if couple else f'M({term.name})'}")
         line = _equation(sheet, group, equation, parts)
         if line:
             lines.append(line)
@@ -796,7 +796,7 @@ def _projection(sheet: ForceSheet, equation: ProjectionEquation) -> str:
     """``ΣFτ(5): R35τ + G5τ − Fu5τ = 0,  R35τ = 8.7 N``: a block's loads along its slot, each by its part along it;
     left out where the block has none."""
     largest = max((abs(value) for _, value in equation.components), default=0.0)
-    parts = [f"{_sign(value)} {name}τ" for name, value in equation.components if abs(value) > NEGLIGIBLE * largest]
+    parts = [f"{sign_mark(value)} {name}τ" for name, value in equation.components if abs(value) > NEGLIGIBLE * largest]
     if not parts:
         return ""
     return (f"ΣFτ({equation.link}): {equation.unknown} {' '.join(parts)} = 0,  {equation.unknown} = "

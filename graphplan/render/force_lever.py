@@ -25,34 +25,33 @@ from ..memo import OwnedMemo
 from ..plans import Plan
 from ..scales import fit_scale, format_scale
 from .force_marks import (
-    _ARM,
-    _BALANCING,
-    _LEADER_WIDTH,
-    _LOAD,
     ALONG_BAR_MM,
+    ARM,
+    BALANCING,
     BESIDE_MM,
     LEAST_ARROW_MM,
+    LOAD,
     NAME_SIZE,
     POINT_SIZE,
     ForceSheet,
-    _angle,
-    _arrow_scale,
-    _balancing_line,
-    _grown,
-    _led_from,
-    _lettered,
-    _negligible,
-    _on_a_line,
-    _perpendicular,
-    _points_onto,
-    _short_run_on,
-    _sign,
-    _unstacked,
-    _wrapped,
+    arm_with_run_on,
+    arrow_scale,
+    balancing_line,
+    direction_rad,
     draws_larger,
+    grown_union,
+    label_on_a_line,
+    led_from,
+    letters_placed,
+    negligible,
+    points_onto,
+    short_run_on,
+    sign_mark,
+    unstacked,
+    wrapped,
 )
 from .force_rows import CAPTION_WIDTH_MM, Drawing
-from .labels import Anchor, obstacles_of, open_direction, text_box
+from .labels import LEADER_WIDTH, Anchor, obstacles_of, open_direction, text_box
 from .numerals import significant
 from .plans import ZERO_MM, too_short_lines
 from .plans import _coincident as coincident_letters
@@ -88,7 +87,7 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
     two, and both at their point, as a hand drawing shows them.  Where the
     other side is taken (the arms run from the pole, another load comes
     in), the second stands beside the first, tied to the point; where that
-    too is taken, it runs on beyond the first (:func:`_unstacked`).  Set
+    too is taken, it runs on beyond the first (:func:`unstacked`).  Set
     beside, it keeps to its line's side of the pole where either side is clear.
 
     An arrow so drawn that passes another point of the lever, ``others``,
@@ -104,7 +103,7 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
         return all(shaft.distance(ShapelyPoint(_xy(point))) >= POINT_CLEAR_MM for point in others)
 
     def clear(start: complex, end: complex, along: float = 1.0) -> bool:
-        return (_unstacked(start, end, at, arrows) == (start, end)
+        return (unstacked(start, end, at, arrows) == (start, end)
                 and LineString((_xy(start), _xy(end))).intersection(lines()).length < along)
 
     def crosses_pole(shift: complex) -> bool:  # the lever's moments are about the pole, at 0
@@ -121,7 +120,7 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
         def fits(start: complex, end: complex, ok: Callable[[complex, complex], bool]) -> bool:
             return ok(start, end) and (not keep_off or off_points(start, end))
 
-        if fits(*away, lambda start, end: _unstacked(start, end, at, arrows) == (start, end)):
+        if fits(*away, lambda start, end: unstacked(start, end, at, arrows) == (start, end)):
             return (*away, 0j)
         if fits(*onto, lambda start, end: clear(start, end, along)):
             return (*onto, 0j)
@@ -132,7 +131,7 @@ def _pushing_or_pulling(at: complex, vector: complex, arrows: Sequence[Primitive
                 return (away[0] + shift, away[1] + shift, shift)
         return None
 
-    chosen = first_way(False) or (*_unstacked(*away, at, arrows), 0j)
+    chosen = first_way(False) or (*unstacked(*away, at, arrows), 0j)
     if off_points(*chosen[:2]):
         return chosen
     # Kept off the other points where no way is clear of the lines, an arrow may cross the lever's thin lines as long
@@ -165,7 +164,7 @@ def lever_loads_at(velocity: Plan, lever: Lever | None) -> dict[str, int]:
     drawn.append((lever.balancing_image, lever.balancing_force))
     counts: dict[str, int] = {}
     for image, force in drawn:
-        if image in spot_of and not _negligible(force, [other for _, other in drawn]):
+        if image in spot_of and not negligible(force, [other for _, other in drawn]):
             counts[spot_of[image]] = counts.get(spot_of[image], 0) + 1
     return counts
 
@@ -226,10 +225,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             frame.append(Polyline(tuple(hull.exterior.coords)[:-1], _LEVER, closed=True))
         elif hull.geom_type == "LineString" and hull.length >= ZERO_MM:
             frame.append(Polyline(tuple(hull.coords), _LEVER))
-    named = [(term.name, term.image, term.force, _LOAD, turned(term.shift) / drawn_at)
+    named = [(term.name, term.image, term.force, LOAD, turned(term.shift) / drawn_at)
              for term in lever.terms if term.image and term.force != 0]
-    named.append(("Fb", lever.balancing_image, lever.balancing_force, _BALANCING, 0j))
-    scale = _arrow_scale([force for _, _, force, _, _ in named], frame)
+    named.append(("Fb", lever.balancing_image, lever.balancing_force, BALANCING, 0j))
+    scale = arrow_scale([force for _, _, force, _, _ in named], frame)
     arrows: list[Primitive] = []
     leaders: list[Primitive] = []
     anchors: list[Anchor] = []
@@ -249,7 +248,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
 
     standing = {term.name for term in lever.terms if stands(term)} | {"Fb"}
     arm_of = _arm_names(sheet, lever, [(name, image, force) for name, image, force, _, _ in named if name in standing
-                                       and not _negligible(force, [other for _, _, other, _, _ in named])])
+                                       and not negligible(force, [other for _, _, other, _, _ in named])])
     balancing = lever.balancing if len(standing) > 1 else 0.0
     undrawn: list[str] = []  # arms in the equation too short to draw, given under it
     load_points: dict[str, str] = {}  # each named load's point on the lever, where its arrow stands
@@ -265,12 +264,12 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     def lines() -> BaseGeometry:
         # Made only for a load drawn onto its point or beside, which few are: grown from the union of all the
         # lever's lines, it took a quarter of a second a lever.
-        return _grown([LineString(item.points + item.points[:1] if item.closed else item.points)
+        return grown_union([LineString(item.points + item.points[:1] if item.closed else item.points)
                        for item in frame if isinstance(item, Polyline)]
                       + [LineString(((0.0, 0.0), _xy(foot))) for foot in feet if abs(foot) >= ZERO_MM], 0.8)
 
     for name, image, force, stroke, shift in named:
-        if _negligible(force, [other for _, _, other, _, _ in named]):
+        if negligible(force, [other for _, _, other, _, _ in named]):
             continue
         length = abs(force) / scale
         unit = force / abs(force)
@@ -279,10 +278,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         start, end, beside = _pushing_or_pulling(at, max(length, LEAST_ARROW_MM) * unit, arrows, lines, others)
         arrows.append(Arrow(_xy(start), _xy(end), stroke, 3.0, svg_id("lever", name)))
         if beside:
-            leaders.append(Polyline((_xy(at), _xy(start)), Stroke(_LEADER_WIDTH, stroke.colour)))
+            leaders.append(Polyline((_xy(at), _xy(start)), Stroke(LEADER_WIDTH, stroke.colour)))
         # Named at its free end: its head, or its tail where it pushes onto its point.
-        free, outward = (start, -unit) if _points_onto(start, end, at + beside) else (end, unit)
-        anchors.append(Anchor(_xy(free), name, NAME_SIZE, _angle(outward), stroke.colour))
+        free, outward = (start, -unit) if points_onto(start, end, at + beside) else (end, unit)
+        anchors.append(Anchor(_xy(free), name, NAME_SIZE, direction_rad(outward), stroke.colour))
         load_points[name] = image
         # The arm runs to the force's line, through its point, beside which the arrow may stand.
         start, end = start - beside, end - beside
@@ -291,10 +290,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             continue
         arm = arm_of[name]
         if name != "Fb":
-            parts.append(f"{_sign(moments[name])} {name}·{arm}")
+            parts.append(f"{sign_mark(moments[name])} {name}·{arm}")
         if arm in arm_lengths:
             # Its arm is drawn and named with the first load on its line: only the line is run on to its foot.
-            if run_on := _perpendicular(0j, start, end, unit)[1:]:
+            if run_on := arm_with_run_on(0j, start, end, unit)[1:]:
                 arm_layers.append(Layer(svg_id("lever-arm", name), tuple(run_on)))
             continue
         arm_lengths[arm] = abs(foot)
@@ -302,12 +301,12 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             # Too short to draw (a point's image by the pole, near a dead centre), its moment is still in Mb.
             undrawn.append(arm)
             continue
-        arm_layers.append(Layer(svg_id("lever-arm", name), tuple(_perpendicular(0j, start, end, unit))))
+        arm_layers.append(Layer(svg_id("lever-arm", name), tuple(arm_with_run_on(0j, start, end, unit))))
         # Named out of the pole's reach where the room round it allows; a name left within it is dropped (below).
-        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, _angle(1j * foot), _ARM.colour,
+        arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, direction_rad(1j * foot), ARM.colour,
                                   along=((0.0, 0.0), _xy(foot)), keep_off=((0.0, 0.0), POLE_CLEAR_MM)))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
-    parts += [f"{_sign(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
+    parts += [f"{sign_mark(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
               if not term.image and stands(term)]
     arrows += leaders
     groups = coincident_letters(velocity)  # a turn keeps distances: the plan's own grouping
@@ -334,10 +333,10 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     loads, points = anchors[:len(load_points)], anchors[len(load_points):]
     unnamed: list[Anchor] = []
     while True:
-        labels = _lettered(loads + points + lettered, figure, reach_farther=False, unnamed=unnamed)
+        labels = letters_placed(loads + points + lettered, figure, reach_farther=False, unnamed=unnamed)
         if near := [anchor for anchor, placed in zip(lettered, labels.texts[len(loads) + len(points):])
                     if text_box(placed).distance(ShapelyPoint(0.0, 0.0)) < POLE_CLEAR_MM
-                    or _on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]:
+                    or label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)]:
             crowded += near
             lettered = [anchor for anchor in lettered if anchor not in near]
             continue
@@ -347,7 +346,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         heads = [anchor.at for anchor in anchors[:len(load_points)] if anchor.text != "Fb"]
         lying = [anchor for anchor, placed in zip(loads, labels.texts) if anchor.text != "Fb"
                  and load_points[anchor.text] not in taken
-                 and (_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
+                 and (label_on_a_line(anchor, placed, drawn_lines, labels.leaders, shafts)
                       or _by_another_head(anchor, placed, heads, labels.leaders))]
         if not lying:
             break
@@ -358,9 +357,9 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     # the arms drawn but left unlettered, h5 = 0.2205 mm read as an arm the reader should find on the lever.
     short = [f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in undrawn]
     apart = too_short_lines(short, text, CAPTION_WIDTH_MM, words="arms_too_short")
-    unnamed_at = _wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
+    unnamed_at = wrapped([text["lever_load_at"].format(name=anchor.text, point=load_points[anchor.text])
                            for anchor in unnamed])
-    parts.append(f"{_sign(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
+    parts.append(f"{sign_mark(-sum(moments[name] for name in standing - {'Fb'}))} Fb·hb")
     equation = _leading(" ".join(parts))
     # Drawn turned as every lever is: a reader laying the velocity plan beside it must know which way.
     caption = [text["lever_title"], text["lever_turned"],
@@ -368,18 +367,18 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
                                    text["body_force_scale"].format(value=format_scale(scale),
                                                                    least=f"{LEAST_ARROW_MM:g}"))),
                f"ΣMp: {equation} = 0",
-               *_wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
+               *wrapped([f"{arm} = {significant(arm_lengths[arm])} {text['millimetre']}" for arm in given]),
                *apart]
     under = [*([text["lever_unnamed"].format(loads=unnamed_at[0]), *unnamed_at[1:]] if unnamed_at else []),
              # The symbol alone: "balancing moment" said twice broke each line in two under a narrow lever (the
              # lever's title and its ΣMp say what Mb is).
-             _balancing_line(sheet, balancing, "balancing_by_lever", named=False),
-             _balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
+             balancing_line(sheet, balancing, "balancing_by_lever", named=False),
+             balancing_line(sheet, sheet.forces.balancing, "balancing_by_polygons", named=False),
              text["lever_difference"].format(value=_percent(lever.difference_percent(sheet.forces.balancing)))]
     return Drawing("lever", [Layer("lever-plan", tuple(frame)), *arm_layers, Layer("lever-forces", tuple(arrows)),
                              Layer("lever-points", tuple(dots)), Layer("lever-leaders", labels.leaders),
                              Layer("lever-labels", labels.texts)], (*caption, *under),
-                   run_on=_short_run_on(short, apart, text, after=len(under)))
+                   run_on=short_run_on(short, apart, text, after=len(under)))
 
 
 def _arm_names(sheet: ForceSheet, lever: Lever, loads: Sequence[tuple[str, str, complex]]) -> dict[str, str]:
@@ -415,7 +414,7 @@ def _by_another_head(anchor: Anchor, text: Text, heads: Sequence[tuple[float, fl
                      leaders: Sequence[Polyline]) -> bool:
     """Whether the placed name of ``anchor`` stands nearer another of the loads' free ends ``heads`` than its own: a
     reader takes it for that load's name, where it stands by that head even on a leader of its own."""
-    led = any(_led_from(leader, anchor) for leader in leaders)
+    led = any(led_from(leader, anchor) for leader in leaders)
     box = text_box(text)
     own = box.distance(ShapelyPoint(anchor.at))
     for head in heads:

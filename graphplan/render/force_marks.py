@@ -4,15 +4,15 @@ The groups cut free (:mod:`graphplan.render.force_bodies`), their force
 polygons (:mod:`graphplan.render.force_polygons`) and Zhukovsky's lever
 (:mod:`graphplan.render.force_lever`) each read the :class:`ForceSheet`
 and draw with what is here: forces as arrows at a standard scale that draws
-the largest about a quarter of the drawing's size (:func:`_arrow_scale`),
+the largest about a quarter of the drawing's size (:func:`arrow_scale`),
 never shorter than :data:`LEAST_ARROW_MM`, a rounding error's not at all
-(:func:`_negligible`), two at one point on one line one beyond the other
-(:func:`_unstacked`), an arm as the perpendicular from its centre to the
-force's line (:func:`_perpendicular`); names placed clear of the figure
-(:func:`_lettered`) and the tests of whether one reads as naming what it
-should (:func:`_on_a_line`, :func:`_led_from`); the captions' values
-listed a few to a line (:func:`_wrapped`) and the balancing load's line
-(:func:`_balancing_line`).
+(:func:`negligible`), two at one point on one line one beyond the other
+(:func:`unstacked`), an arm as the perpendicular from its centre to the
+force's line (:func:`arm_with_run_on`); names placed clear of the figure
+(:func:`letters_placed`) and the tests of whether one reads as naming what it
+should (:func:`label_on_a_line`, :func:`led_from`); the captions' values
+listed a few to a line (:func:`wrapped`) and the balancing load's line
+(:func:`balancing_line`).
 """
 
 from __future__ import annotations
@@ -71,7 +71,6 @@ NEGLIGIBLE = 1e-9
 ALONG_BAR_MM = 4.5
 ALONG_BAR_SHARE = 0.4
 BESIDE_MM = 2.5
-_LEADER_WIDTH = 0.18
 # How many values a caption line lists before it wraps.
 PER_LINE = 4
 # Between the values a caption line lists: a comma and two spaces, so that a value with a comma of its own (fE =
@@ -81,10 +80,10 @@ VALUE_SEPARATOR = ",  "
 POINT_SIZE = 3.5
 NAME_SIZE = 3.2
 
-_LOAD = Stroke(0.45)
-_BALANCING = Stroke(0.6, "#1f7a3a")
-_ACTION_RUN_ON = Stroke(0.25, "#333333", (2.5, 1.5))
-_ARM = Stroke(0.2, "#555555")
+LOAD = Stroke(0.45)
+BALANCING = Stroke(0.6, "#1f7a3a")
+ACTION_RUN_ON = Stroke(0.25, "#333333", (2.5, 1.5))
+ARM = Stroke(0.2, "#555555")
 _ARM_RUN_ON = Stroke(0.2, "#555555", (1.5, 1.0))
 
 
@@ -156,12 +155,12 @@ def draws_larger(scale: float, than: float) -> bool:
     return scale < than * (1.0 - 1e-9)
 
 
-# How many grown unions :func:`_grown` keeps, the least recently asked given up first.
+# How many grown unions :func:`grown_union` keeps, the least recently asked given up first.
 GROWN_KEPT = 512
 _grown_unions: RecentMemo[BaseGeometry] = RecentMemo()
 
 
-def _grown(lines: Sequence[LineString], distance: float) -> BaseGeometry:
+def grown_union(lines: Sequence[LineString], distance: float) -> BaseGeometry:
     """The union of ``lines`` grown by ``distance`` (mm): the same shape given again for the very same lines.
 
     Growing the union of a lever's lines takes a tenth of a second and more (its rays and bars overlap), and the
@@ -175,12 +174,12 @@ def _grown(lines: Sequence[LineString], distance: float) -> BaseGeometry:
                              GROWN_KEPT)
 
 
-def _points_onto(start: complex, end: complex, point: complex) -> bool:
+def points_onto(start: complex, end: complex, point: complex) -> bool:
     """Whether the arrow from ``start`` to ``end`` points onto ``point``, its head the nearer end."""
     return abs(end - point) < abs(start - point)
 
 
-def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Primitive]) -> tuple[complex, complex]:
+def unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Primitive]) -> tuple[complex, complex]:
     """The arrow moved on along its own line, away from its point, until it covers no arrow drawn before.
 
     Two forces at one point in one direction (a weight and a load on a
@@ -188,7 +187,7 @@ def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Pr
     action, the second stands beyond the first and keeps its line.
     """
     unit = (end - start) / abs(end - start)
-    away = -unit if _points_onto(start, end, point) else unit
+    away = -unit if points_onto(start, end, point) else unit
 
     def along(item: Arrow) -> bool:  # an arrow crossing this one hides nothing of it
         other = (_c(item.end) - _c(item.start)) / max(item.length, 1e-12)
@@ -204,10 +203,10 @@ def _unstacked(start: complex, end: complex, point: complex, arrows: Sequence[Pr
     return start, end
 
 
-def _perpendicular(centre: complex, start: complex, end: complex, unit: complex) -> list[Primitive]:
+def arm_with_run_on(centre: complex, start: complex, end: complex, unit: complex) -> list[Primitive]:
     """The arm from ``centre`` to the line of the arrow ``start``→``end``, and the line run on to its foot."""
     foot = perpendicular_foot(centre, start, unit)
-    items: list[Primitive] = [Polyline((_xy(centre), _xy(foot)), _ARM)]
+    items: list[Primitive] = [Polyline((_xy(centre), _xy(foot)), ARM)]
     along = ((foot - start) * unit.conjugate()).real
     length = abs(end - start)
     if along < -ZERO_MM:
@@ -217,7 +216,7 @@ def _perpendicular(centre: complex, start: complex, end: complex, unit: complex)
     return items
 
 
-def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str, str], after: int = 0) -> RunOn | None:
+def short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str, str], after: int = 0) -> RunOn | None:
     """The polygon's vectors too short to draw (``values``, each named with its value; ``apart``, the caption's
     lines of them, ``after`` lines under them) going on after its μF where the field has the room: they are too short
     at that μF; the lever's arms so after its equation.  The words and the values on one line take the locale's
@@ -231,13 +230,13 @@ def _short_run_on(values: Sequence[str], apart: Sequence[str], text: Mapping[str
     return RunOn(len(apart), words + space + text["semicolon"].join(values), text["semicolon"], after, tuple(values))
 
 
-def _whole_reaction(name: str) -> bool:
+def whole_reaction(name: str) -> bool:
     """Whether ``name`` is a whole reaction's (R23, R43), which a student reads off the polygon, not a component's
     (R23n, R23τ) or a given load's (G3, Fu3), steps of the construction its caption may tell."""
     return re.fullmatch(r"R\d+", name) is not None
 
 
-def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
+def letters_placed(anchors: Sequence[Anchor], figure: Sequence[Primitive],
               reach_farther: bool | Sequence[bool] = True, unnamed: Sequence[Anchor] = ()) -> Placement:
     """The labels of ``anchors`` placed clear of the figure and of every anchor's own spot, and of the spots of the
     ``unnamed`` (a lever's arrows whose names are given under it).
@@ -254,22 +253,22 @@ def _lettered(anchors: Sequence[Anchor], figure: Sequence[Primitive],
     return remembered(place_labels, anchors, obstacles + spots, reach_farther=reach_farther, shafts=shafts)
 
 
-def _on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline],
+def label_on_a_line(anchor: Anchor, text: Text, lines: Sequence[BaseGeometry], leaders: Sequence[Polyline],
                shafts: Sequence[BaseGeometry] = ()) -> bool:
     """Whether the placed label of ``anchor`` lies on one of the drawn ``lines`` or on another label's leader (its
     own starts by its point), or is led to across one of the ``shafts`` (the loads' arrows)."""
     box = text_box(text)
-    others = [LineString(leader.points) for leader in leaders if not _led_from(leader, anchor)]
+    others = [LineString(leader.points) for leader in leaders if not led_from(leader, anchor)]
     if any(box.intersects(line) for line in [*lines, *others]):
         return True
     # Its own leader: from by its point to by its box (the placer stops it short of the box).  Across an arrow it
     # reads as part of that arrow, or as naming that load, as a name on a line reads as naming the line.
-    own = [LineString(leader.points) for leader in leaders if _led_from(leader, anchor)
+    own = [LineString(leader.points) for leader in leaders if led_from(leader, anchor)
            and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
     return any(leader.intersects(shaft) for leader in own for shaft in shafts)
 
 
-def _led_from(leader: Polyline, anchor: Anchor) -> bool:
+def led_from(leader: Polyline, anchor: Anchor) -> bool:
     """Whether ``leader`` is the one led from ``anchor``'s point: a placed leader starts by the point it names, or by
     another point of the line it names (its ``along``: a polygon's side's name led from a clear stretch of it)."""
     start = leader.points[0]
@@ -278,7 +277,7 @@ def _led_from(leader: Polyline, anchor: Anchor) -> bool:
     return anchor.along is not None and LineString(anchor.along).distance(ShapelyPoint(start)) <= 1.0
 
 
-def _negligible(force: complex, forces: Sequence[complex]) -> bool:
+def negligible(force: complex, forces: Sequence[complex]) -> bool:
     """Whether a force is nought beside the others (a rounding error): it is not drawn.
 
     A small force that is there (a link's weight beside the inertia loads)
@@ -287,7 +286,7 @@ def _negligible(force: complex, forces: Sequence[complex]) -> bool:
     return abs(force) <= NEGLIGIBLE * max((abs(other) for other in forces), default=0.0)
 
 
-def _arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> float:
+def arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> float:
     """The standard force scale (N/mm) that draws the largest of ``forces`` about a quarter of the figure's size."""
     largest = max((abs(force) for force in forces), default=0.0)
     x0, y0, x1, y1 = bounds_of(figure)
@@ -295,7 +294,7 @@ def _arrow_scale(forces: Sequence[complex], figure: Sequence[Primitive]) -> floa
     return standard_scale(largest / longest) if largest > 0 else 1.0
 
 
-def _balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = True) -> str:
+def balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = True) -> str:
     """The balancing load found ``how``, with its words (``balancing moment Mb = …``) or, not ``named``, its
     symbol alone."""
     text = sheet.text
@@ -304,7 +303,7 @@ def _balancing_line(sheet: ForceSheet, value: float, how: str, named: bool = Tru
     return text[how].format(what=what, name=name, value=significant(value), unit=unit).strip()
 
 
-def _wrapped(items: Sequence[str], per_line: int = PER_LINE) -> list[str]:
+def wrapped(items: Sequence[str], per_line: int = PER_LINE) -> list[str]:
     """Values listed ``per_line`` to a caption line, each line but the last ending in the comma between values.
 
     Without it the lever's fifth arm ran on from the fourth as one value: "h18 = 0.2587 mm" over "h19 = 21.21 mm",
@@ -313,11 +312,11 @@ def _wrapped(items: Sequence[str], per_line: int = PER_LINE) -> list[str]:
     return [line + VALUE_SEPARATOR.rstrip() for line in lines[:-1]] + lines[-1:]
 
 
-def _sign(value: float) -> str:
+def sign_mark(value: float) -> str:
     return "−" if value < 0 else "+"
 
 
-def _angle(value: complex) -> float:
+def direction_rad(value: complex) -> float:
     return math.atan2(value.imag, value.real)
 
 

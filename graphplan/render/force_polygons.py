@@ -30,17 +30,17 @@ from ..memo import OwnedMemo
 from ..rounding import ROUNDING_NOISE
 from ..scales import finer_standard_scale, format_scale
 from .force_marks import (
-    _ACTION_RUN_ON,
+    ACTION_RUN_ON,
     NAME_SIZE,
     ForceSheet,
-    _angle,
-    _led_from,
-    _lettered,
-    _on_a_line,
-    _short_run_on,
-    _whole_reaction,
-    _wrapped,
+    direction_rad,
     group_id,
+    label_on_a_line,
+    led_from,
+    letters_placed,
+    short_run_on,
+    whole_reaction,
+    wrapped,
 )
 from .force_rows import CAPTION_WIDTH_MM, Drawing
 from .labels import (
@@ -157,11 +157,11 @@ def _polygons(sheet: ForceSheet, group: GroupForces) -> Drawing:
              for vector in group.polygon.vectors if too_short_to_draw(vector.force, scale)]
     apart = too_short_lines(short, text, CAPTION_WIDTH_MM)
     # One a line: broken where it runs over the polygon's width, a sum broke before its "+ R14n".
-    told = _wrapped(unnamed, per_line=1)
+    told = wrapped(unnamed, per_line=1)
     under = [text["polygon_unnamed"].format(sides=told[0]), *told[1:]] if told else []
     caption = (text["force_polygon_title"], *group.polygon.equations,
                text["force_scale"].format(value=format_scale(scale)), *apart, *under)
-    return Drawing(f"polygon-{key}", layers, caption, run_on=_short_run_on(short, apart, text, after=len(under)))
+    return Drawing(f"polygon-{key}", layers, caption, run_on=short_run_on(short, apart, text, after=len(under)))
 
 
 def too_short_to_draw(force: complex, scale: float) -> bool:
@@ -244,11 +244,11 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         if crossing is not None and abs(crossing - through) < ZERO_MM:
             crossing = None
         if crossing is None:
-            actions.append(Polyline((_xy(through - RUN_ON_MM * unit), _xy(through + RUN_ON_MM * unit)), _ACTION_RUN_ON))
+            actions.append(Polyline((_xy(through - RUN_ON_MM * unit), _xy(through + RUN_ON_MM * unit)), ACTION_RUN_ON))
             continue
         onward = (crossing - through) / abs(crossing - through)
         actions.append(Polyline((_xy(through), _xy(crossing)), _ACTION))
-        actions.append(Polyline((_xy(crossing), _xy(crossing + RUN_ON_MM * onward)), _ACTION_RUN_ON))
+        actions.append(Polyline((_xy(crossing), _xy(crossing + RUN_ON_MM * onward)), ACTION_RUN_ON))
     styles = {"load": _KNOWN, "closing": _CLOSING, "inner": _INNER, "whole": _WHOLE}
     arrows: list[Primitive] = []
     named: list[tuple[PolygonVector, Arrow]] = []
@@ -272,14 +272,14 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
             across = -across
         # Beside any stretch of its side the name reads as naming it: where sides crowd at the middle (a sliver
         # of a polygon, R23n between R23 and R43), it slides along to a clear stretch rather than lie on one.
-        anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, _angle(across), arrow.stroke.colour,
+        anchors.append(Anchor(_xy(centre), vector.name, NAME_SIZE, direction_rad(across), arrow.stroke.colour,
                               along=(arrow.start, arrow.end)))
     # A name led across another vector's arrow reads as naming that one, as it does on the lever (or on a line, as
     # one lying there would): where the placer finds it no other spot (a sliver of sides side by side), the arrow is
     # left unnamed, one at a time, and the caption says which it is, as the lever's does (the placer still leads one
     # across an arrow where that is all that keeps it off a line, which is no better here).  A whole reaction, which
     # the student reads off the polygon, is never left unnamed: the components and given loads whose names crowd it
-    # go first, and where none is left to go it keeps its leader (_whole_reaction).  Before either, a name is set on a
+    # go first, and where none is left to go it keeps its leader (whole_reaction).  Before either, a name is set on a
     # short leader across the sides side by side with its own, where one reaches out of the sliver (_sliver_spot).
     drawn_lines = obstacles_of([item for item in figure if not isinstance(item, Circle)])
     drawn = obstacles_of(figure)
@@ -293,18 +293,18 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
     set_by: list[tuple[Anchor, Text, Polyline]] = []
     while True:
         standing = [item for _, text, leader in set_by for item in (text, leader)]
-        labels = _lettered(anchors, [*figure, *standing], unnamed=[*unnamed, *(anchor for anchor, _, _ in set_by)])
+        labels = letters_placed(anchors, [*figure, *standing], unnamed=[*unnamed, *(anchor for anchor, _, _ in set_by)])
         on_a_line = [anchor for anchor, placed in zip(anchors, labels.texts) if anchor not in kept
-                     and _on_a_line(anchor, placed, drawn_lines, labels.leaders,
+                     and label_on_a_line(anchor, placed, drawn_lines, labels.leaders,
                                     _crossed_apart(anchor, placed, labels.leaders, shafts))]
         # A whole reaction's name whose nearest arrow is another's reads as naming that one: it is set again where
         # a spot is found (_sliver_spot), but other names go for it only where it lies on a line.
         lying = on_a_line + [anchor for anchor, placed in zip(anchors, labels.texts)
-                             if anchor not in kept and anchor not in on_a_line and _whole_reaction(anchor.text)
+                             if anchor not in kept and anchor not in on_a_line and whole_reaction(anchor.text)
                              and not _reads_as_own(anchor, placed, labels.leaders, shaft_of)]
         if not lying:
             break
-        first = min(lying, key=lambda anchor: not _whole_reaction(anchor.text))
+        first = min(lying, key=lambda anchor: not whole_reaction(anchor.text))
         placed = labels.texts[anchors.index(first)]
         own = _own_leaders(first, placed, labels.leaders)
         spot = _sliver_spot(first, drawn, [text for anchor, text in zip(anchors, labels.texts) if anchor is not first]
@@ -314,7 +314,7 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         gone = first
         if spot is not None:
             set_by.append((first, *spot))
-        elif not _whole_reaction(first.text):
+        elif not whole_reaction(first.text):
             unnamed.append(first)
         elif first not in on_a_line:
             kept.append(first)
@@ -322,7 +322,7 @@ def _polygon(chain: Sequence[PolygonVector], lines: Sequence[Line], scale: float
         else:
             box = text_box(placed)
             crowding = sorted((anchor for anchor, text in zip(anchors, labels.texts)
-                               if not _whole_reaction(anchor.text) and text_box(text).distance(box) < CROWDING_MM),
+                               if not whole_reaction(anchor.text) and text_box(text).distance(box) < CROWDING_MM),
                               key=lambda anchor: text_box(labels.texts[anchors.index(anchor)]).distance(box))
             if not crowding:
                 kept.append(first)
@@ -369,7 +369,7 @@ def _own_leaders(anchor: Anchor, text: Text, leaders: Sequence[Polyline]) -> lis
     that starts by its line and stops short of its box (another side's by the line in a sliver stops elsewhere)."""
     box = text_box(text)
     return [leader for leader in leaders
-            if _led_from(leader, anchor) and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
+            if led_from(leader, anchor) and box.distance(ShapelyPoint(leader.points[-1])) < 0.5]
 
 
 def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[Text], leaders: Sequence[Polyline],
@@ -387,7 +387,7 @@ def _sliver_spot(anchor: Anchor, drawn: Sequence[BaseGeometry], texts: Sequence[
     little way across the sides side by side with its own, out of the sliver."""
     if anchor.along is None:
         return None
-    if not _whole_reaction(anchor.text):
+    if not whole_reaction(anchor.text):
         # Where no short leader reaches out of a sliver, a leader that crosses nothing may be longer, and the name
         # may stand off the side obliquely or by its ends: the offset slider-crank's R23n at position 10, led 10 mm
         # across R23 and R14's line at b76b78f, stands right of its head, beyond G3's name, which stands square to

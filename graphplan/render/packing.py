@@ -103,7 +103,8 @@ class Panel:
     # polygons drawn at another than the record's, by its group's label, for the check of readings measured on it.
     polygon_scales: tuple[tuple[str, float], ...] = ()
     # Of the same, the μF each group cut free (drawn larger too, or as the record) draws its arrows at, by its label,
-    # with the reactions drawn whole at their length (:func:`forces.free_body_arrows`): readings measured on them too.
+    # with the reactions drawn whole at their length (:func:`force_bodies.free_body_arrows`): readings measured on
+    # them too.
     body_arrows: tuple[tuple[str, float, tuple[str, ...]], ...] = ()
     # The drawing as it goes on the sheet, where ``layers`` leaves out labels that only room was kept for: the
     # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
