@@ -39,6 +39,9 @@ if TYPE_CHECKING:
 POLYGON_FIELD_MM = 150.0
 # A polygon drawn at another analysis's μF (with friction, at the one without) keeps it up to this many fields.
 _KEPT_FIELDS = 2.0
+# A polygon whose vertices all lie this close to one line (a share of its extent) has no area: vectors on one line
+# (R32 and R12 of a crank with no weight) are that far off it by the arithmetic's rounding alone, some 1e-16.
+_FLAT = 1e-9
 # A force whose line passes this close to a moment centre (a share of the mechanism's size) passes through it.
 _THROUGH = 1e-12
 # A term's moment this small beside its equation's largest is the plan's rounding (an inertia moment of a link at
@@ -218,7 +221,8 @@ class ForcePlan:
     field, the contract's ``polygon_scale``; each group's polygon is drawn
     at its own ``GroupForces.scale``, the same unless the scene leaves μF to
     the program, which then draws each polygon as large as its field allows,
-    as a student sets each group's force plan at its own scale.
+    as a student sets each group's force plan at its own scale (but one of
+    no area, its vectors on one line, at the others' coarsest μF).
     ``iterations`` is how many times the construction was repeated for the
     friction in the pairs (0 without); ``locked`` says that it never settled.
     ``auxiliary`` holds the moment centres that are no point of the scene
@@ -435,7 +439,8 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
     its label (another analysis's :attr:`ForcePlan.group_scales`, kept while
     the polygon spans no more than two fields at it); None
     draws each polygon at the least standard μF at which it spans
-    :data:`POLYGON_FIELD_MM`.
+    :data:`POLYGON_FIELD_MM`, but one of no area at the coarsest μF of the
+    others where that is coarser (:func:`_chosen_scales`).
     ``friction`` gives the pairs' friction loads for given reactions
     (``joint_friction.friction_loads`` bound to the instant): the whole
     construction is then repeated with the friction loads of the last one
@@ -448,10 +453,7 @@ def force_plan(mechanism: Mechanism, positions: Mapping[str, complex], direction
         plan, iterations, locked = _with_friction(plan, lambda extra: _construct(
             mechanism, positions, directions, loads + extra), friction)
     if scale is None:
-        fitting = {group.label: _fitting_scale(group.polygon) for group in plan.groups}
-        # A polygon of no length (a group with nothing to balance) takes the others' μF.
-        coarsest = max((value for value in fitting.values() if value is not None), default=1.0)
-        scales = {label: coarsest if value is None else value for label, value in fitting.items()}
+        scales = _chosen_scales(plan.groups)
     elif isinstance(scale, Mapping):
         # Another analysis's μF (the one without friction), kept for the two to be compared while the polygon
         # stays about its field: near a lock friction grows the reactions tenfold and more, and the polygon
@@ -497,6 +499,35 @@ def _with_friction(ideal: ForcePlan, construct: Callable[[tuple[Load, ...]], For
     if plan is None:  # Newton's method settled between constructions
         plan = construct(friction(dict(zip(names, settled[0], strict=True))))
     return plan, int(iterations[0]), False
+
+
+def _chosen_scales(groups: tuple[GroupForces, ...]) -> dict[str, float]:
+    """μF of each group's polygon, by its label, where the scene sets none: the least standard one at which it spans
+    :data:`POLYGON_FIELD_MM` (:func:`_fitting_scale`), except for a polygon of no area.
+
+    A polygon of no area, its vectors all on one line (a crank with no weight of its own: R32 and R12 opposite,
+    ΣF2 + R12 = 0), shows no more at its field than at the μF of the polygon whose reaction it carries, and at its
+    field its thin diagonal takes a sheet's room on its own: it is drawn at the coarsest μF of the polygons that
+    have an area, where that is coarser than its own, never larger than its field.  A polygon of no length (a group
+    with nothing to balance) takes the coarsest of all the others'.
+    """
+    fitting = {group.label: _fitting_scale(group.polygon) for group in groups}
+    flat = {group.label for group in groups if fitting[group.label] is not None and _has_no_area(group.polygon)}
+    with_area = [value for label, value in fitting.items() if value is not None and label not in flat]
+    coarsest = max((value for value in fitting.values() if value is not None), default=1.0)
+    coarsest_with_area = max(with_area, default=0.0)
+    return {label: coarsest if value is None else max(value, coarsest_with_area) if label in flat else value
+            for label, value in fitting.items()}
+
+
+def _has_no_area(polygon: Polygon) -> bool:
+    """Whether every vertex of ``polygon`` lies on the line through its two farthest apart, to :data:`_FLAT` of
+    their distance."""
+    vertices = [vector.start for vector in polygon.vectors] + [vector.end for vector in polygon.vectors]
+    first, second = max(((one, other) for one in vertices for other in vertices), key=lambda pair: abs(pair[1] - pair[0]))
+    extent = abs(second - first)
+    along = (second - first) / extent
+    return all(abs(((vertex - first) / along).imag) <= _FLAT * extent for vertex in vertices)
 
 
 def _fitting_scale(polygon: Polygon) -> float | None:
