@@ -323,9 +323,12 @@ def test_plan_readings_typed_in_metres_are_told_so_not_a_pole_of_a_tenth_of_a_mi
 
 def test_force_readings_typed_in_metres_are_told_so_not_taken_for_a_point_on_the_plans(tmp_path, capsys):
     """R12 and R43 in metres (each polygon at its own μF, so no one scale joins them): each reading, a tenth of a
-    millimetre or less, was told to be the plans' ps4, 0 mm long (S4 on the fixed pivot Q)."""
+    millimetre or less, was told to be the plans' ps4, 0 mm long (S4 on the fixed pivot Q).  The crank is given a
+    weight: without one its polygon, R32 and R12 on one line, would be drawn at group II(3,4)'s μF."""
     text = WHITWORTH_PLANNED.replace('[points.S5]', '[points.S4]\nlink = 4\nfrom = "Q"\ntoward = "P"\nat = 0.0\n'
-                                     '[links.4]\nmass = 12.0\ncentre = "S4"\ninertia = 0.15\n[points.S5]')
+                                     '[links.4]\nmass = 12.0\ncentre = "S4"\ninertia = 0.15\n'
+                                     '[points.S2]\nlink = 2\nfrom = "O"\ntoward = "P"\nat = 0.1\n'
+                                     '[links.2]\nmass = 5.0\ncentre = "S2"\n[points.S5]')
     out = tmp_path / "out"
     done = graphplan.load_text(text).write(out, only=["forces"])
     assert done.files
