@@ -524,7 +524,8 @@ def _has_no_area(polygon: Polygon) -> bool:
     """Whether every vertex of ``polygon`` lies on the line through its two farthest apart, to :data:`_FLAT` of
     their distance."""
     vertices = [vector.start for vector in polygon.vectors] + [vector.end for vector in polygon.vectors]
-    first, second = max(((one, other) for one in vertices for other in vertices), key=lambda pair: abs(pair[1] - pair[0]))
+    first, second = max(((one, other) for one in vertices for other in vertices),
+                        key=lambda pair: abs(pair[1] - pair[0]))
     extent = abs(second - first)
     along = (second - first) / extent
     return all(abs(((vertex - first) / along).imag) <= _FLAT * extent for vertex in vertices)

@@ -63,7 +63,8 @@ def _fitting(span: float) -> float:
     """The least of the standard μF 1, 2, 2.5, 4, 5 × 10ᵏ N/mm at which ``span`` N is at most 150 mm long."""
     least = span / 150.0
     exponent = math.floor(math.log10(least))
-    candidates = [mantissa * 10.0 ** power for power in range(exponent - 1, exponent + 2) for mantissa in (1, 2, 2.5, 4, 5)]
+    candidates = [mantissa * 10.0 ** power for power in range(exponent - 1, exponent + 2)
+                  for mantissa in (1, 2, 2.5, 4, 5)]
     return min(value for value in candidates if value >= least * (1 - 1e-12))
 
 
