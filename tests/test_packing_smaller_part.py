@@ -9,10 +9,18 @@ The sizes here are those parts' (mm), each of its ways, the later ones without t
 first one's.
 """
 
+import dataclasses
+from importlib import resources
+
 import pytest
 from test_packing import box
 
+import graphplan
+from graphplan import forces, load_diagrams
+from graphplan.analysis import analyse
 from graphplan.render.packing import GAP_MM, Panel, pack
+from graphplan.render.sheet import course_panels, load_diagrams_panel
+from graphplan.render.title_block import form_of
 
 SHEET, FORM = "A3", "iso"
 
@@ -51,3 +59,32 @@ def test_a_part_made_narrower_takes_no_more_sheets(fourth):
         assert page.area[1] - 1e-6 <= rect[1] and rect[3] <= page.area[3] + 1e-6
         assert rect[2] <= page.block[0] or rect[1] >= page.block[3]
         assert not any(overlapping(rect, other) for other in rects[k + 1:])
+
+
+def _fitting_scales(groups):
+    """μF of each polygon as drawn before a polygon of no area took the others' coarsest: each at its own field,
+    a polygon of no length at the coarsest of all."""
+    fitting = {group.label: forces._fitting_scale(group.polygon) for group in groups}
+    coarsest = max((value for value in fitting.values() if value is not None), default=1.0)
+    return {label: coarsest if value is None else value for label, value in fitting.items()}
+
+
+def force_sheets_taken(scene) -> int:
+    """How many sheets the run's force sheets, with the load diagrams after them, take."""
+    analysis = analyse(scene)
+    sheet = scene.drawing.sheet
+    loads = (load_diagrams_panel(load_diagrams.of_analysis(analysis), scene.locale, sheet),)
+    return len(pack(list(course_panels(analysis, sheet=sheet, loads=loads).forces), sheet, form_of(scene.locale)))
+
+
+def test_the_slotted_lever_starter_takes_no_more_a3_sheets_with_its_crank_polygon_drawn_smaller(monkeypatch):
+    """The starter's crank polygon of no area drawn at its own 150 mm field is the larger drawing: drawn at the
+    other polygons' μF, its force sheets take no more A3 sheets than so."""
+    text = resources.files("graphplan").joinpath("templates/slotted-lever.toml").read_text(encoding="utf-8")
+    scene = graphplan.scene.loads(text)
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(scene.drawing, sheet="A3"))
+    smaller = force_sheets_taken(scene)
+    with monkeypatch.context() as patched:
+        patched.setattr(forces, "_chosen_scales", _fitting_scales)
+        larger = force_sheets_taken(scene)
+    assert smaller <= larger
