@@ -277,10 +277,6 @@ class Page:
         self.placed.pop()
         self.drawings.pop()
 
-    def _best_spot(self, panel: Panel) -> Rect | None:
-        """Where ``panel`` as arranged keeps the drawings most compact; None when it fits nowhere."""
-        return next(iter(self._spots(panel, 1)), None)
-
     def _spots(self, panel: Panel, most: int) -> list[Rect]:
         """The ``most`` spots where ``panel`` as arranged keeps the drawings most compact, the best first; none
         where it fits nowhere."""
@@ -603,7 +599,7 @@ def _rearranged(page: Page, panel: Panel, moves: int = _MOST_MOVES) -> Page | No
     # it stood only so, and the sheet took a sheet more for a drawing made smaller.  So in the page's own growth
     # only: in every growth, the slotted lever's run on A3 took 1.6 times as long for no sheet fewer.
     own = [layout for layout in layouts if layout[:2] == (page.tuck, page.growth)]
-    for most, tried in ((0, layouts), (moves, own) if moves else (0, [])):
+    for most, tried in [(0, layouts), *([(moves, own)] if moves else [])]:
         for tuck, growth, picked in tried:
             fresh = Page(page.size, page.frame, page.block, page.area, growth=growth, corner=page.corner, tuck=tuck)
             if fresh.place_all([ways[k] for ways, k in zip(choices, picked, strict=True)], most):
