@@ -28,7 +28,7 @@ from graphplan.render.drawings import force_sheet, forces_svg
 from graphplan.render.labels import text_box
 from graphplan.render.numerals import significant
 from graphplan.render.plans import ZERO_MM
-from graphplan.render.primitives import Arrow, Circle, Polyline, Text
+from graphplan.render.primitives import Arrow, Circle, Polyline, Text, svg_id
 from graphplan.scales import format_scale, standard_scale
 
 FIXTURES = "fixtures"
@@ -67,7 +67,7 @@ def polygon_layers(layers, group):
 
 
 def keyed_vectors(prefix, group):
-    return {force_layout.svg_id(prefix, vector.name): vector for vector in group.polygon.vectors}
+    return {svg_id(prefix, vector.name): vector for vector in group.polygon.vectors}
 
 
 def test_every_polygon_closes_on_the_paper(case):
@@ -109,7 +109,7 @@ def test_every_polygon_vector_is_its_force_over_the_force_scale(case):
             for arrow in arrows:
                 vector = vectors.get(arrow.key)
                 if vector is None:  # a reaction drawn whole, R23 = R23τ + R23n
-                    found = next(f for f in group.found if arrow.key == force_layout.svg_id(prefix, f.name))
+                    found = next(f for f in group.found if arrow.key == svg_id(prefix, f.name))
                     assert arrow.length == pytest.approx(abs(found.force) / scale, abs=CLOSE_MM)
                     assert abs(complex(*arrow.end) - complex(*arrow.start) - found.force / scale) < CLOSE_MM
                     continue
@@ -275,12 +275,12 @@ def test_the_lever_arms_as_drawn_give_the_lever_moments(case):
     for name, force, moment in entries:
         if abs(force) <= 1e-9 * largest:
             continue
-        arrow = arrows[force_layout.svg_id("lever", name)]
+        arrow = arrows[svg_id("lever", name)]
         along = (complex(*arrow.end) - complex(*arrow.start)) / arrow.length
         # An arrow set beside its line (a second load on one line at one point) is tied to its point by a leader.
         through = next((complex(*leader.points[0]) for leader in layers["lever-forces"]
                         if isinstance(leader, Polyline) and leader.points[-1] == arrow.start), complex(*arrow.start))
-        layer = layers.get(force_layout.svg_id("lever-arm", name))
+        layer = layers.get(svg_id("lever-arm", name))
         if layer is None and abs(moment) / abs(force) / scale < ZERO_MM:  # the force's line passes through the pole
             continue
         if layer is None or abs(complex(*layer[0].points[0]) - starts) >= CLOSE_MM:
@@ -477,7 +477,7 @@ def test_a_reaction_along_a_plate_s_closing_edge_is_drawn_off_the_plate():
     (plate,) = [item for item in layers[f"body-{key}-links"]
                 if isinstance(item, Polyline) and item.closed and item.fill is None]
     corners = [complex(*point) for point in plate.points]
-    (arrow,) = [item for item in layers[f"body-{key}-forces"] if item.key == force_layout.svg_id("body", key, "R23n")]
+    (arrow,) = [item for item in layers[f"body-{key}-forces"] if item.key == svg_id("body", key, "R23n")]
     start, end = complex(*arrow.start), complex(*arrow.end)
     a = min(corners, key=lambda corner: min(abs(corner - start), abs(corner - end)))
     edges = [corner - a for corner in corners if corner != a]
@@ -511,7 +511,7 @@ def test_a_load_along_its_own_link_at_a_point_inside_it_is_drawn_beside_the_link
     leaders = [item for item in layers[f"body-{key}-forces"] if isinstance(item, Polyline)]
     loads = {load.name: load for load in group.loads}
     for name in names:
-        arrow = forces[force_layout.svg_id("body", key, name)]
+        arrow = forces[svg_id("body", key, name)]
         start, end = complex(*arrow.start), complex(*arrow.end)
         load = loads[name]
         point = sheet.positions[load.point] / sheet.length_scale
@@ -555,7 +555,7 @@ def test_loads_at_one_point_of_the_lever_on_one_line_are_drawn_apart_each_at_its
             if abs((force * other.conjugate()).imag) > math.sin(math.radians(10.0)) * abs(force) * abs(other):
                 continue  # not along one line
             pairs += 1
-            a, b = arrows[force_layout.svg_id("lever", first)], arrows[force_layout.svg_id("lever", second)]
+            a, b = arrows[svg_id("lever", first)], arrows[svg_id("lever", second)]
             a0, a1, b0, b1 = (complex(*p) for p in (a.start, a.end, b.start, b.end))
             assert _overlap_mm(a0, a1, b0, b1) < 1.0 and _overlap_mm(b0, b1, a0, a1) < 1.0, (first, second)
             # Neither head in the other's stroke, but where one pushes onto the point the other pulls from.
@@ -564,7 +564,7 @@ def test_loads_at_one_point_of_the_lever_on_one_line_are_drawn_apart_each_at_its
     assert pairs >= 2
     for name, arrow in arrows.items():
         start, end = complex(*arrow.start), complex(*arrow.end)
-        loads = [load for loads in at_points.values() for load in loads if force_layout.svg_id("lever", load[0]) == name]
+        loads = [load for loads in at_points.values() for load in loads if svg_id("lever", load[0]) == name]
         if not loads:
             continue
         point = loads[0][1]

@@ -28,7 +28,7 @@ from .force_marks import ForceSheet, group_id
 from .force_polygons import polygons_drawing
 from .force_rows import Drawing, Heading, Rows
 from .plans import Arrangement
-from .primitives import Layer, svg_id
+from .primitives import Layer
 
 # The captions' lettering where the usual does not fit a small sheet: the next size down of GOST 2.304 and
 # ISO 3098 (the usual is plans.CAPTION_SIZE, 5 mm).
@@ -79,4 +79,4 @@ def rows(sheet: ForceSheet, bodies: MutableMapping[tuple[int, float], Drawing] |
                                   text["force_sheet_continued"].format(title=part_title), text["comma"]))
 
 
-__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "group_id", "layout", "rows", "svg_id"]
+__all__ = ["Arrangement", "Drawing", "ForceSheet", "arrange", "arrangements", "group_id", "layout", "rows"]
