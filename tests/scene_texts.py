@@ -368,3 +368,10 @@ resisting_power = [[0, 367.7], [120, 367.7], [120, 3677], [360, 3677]]
 driving = "constant"
 inertia = 0.0
 """
+
+
+def journal_friction(radii: dict[str, float], f: float = 0.1) -> str:
+    """A ``[[friction]]`` table for each journal of ``radii`` (joint: its radius, m) at the coefficient ``f``, in
+    that order, to add to a scene: the friction circles a course project gives a linkage's pairs."""
+    return "".join(f'\n[[friction]]\njoint = "{joint}"\nf = {f}\nradius = {radius}\n'
+                   for joint, radius in radii.items())

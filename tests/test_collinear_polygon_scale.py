@@ -14,6 +14,7 @@ from itertools import pairwise
 from pathlib import Path
 
 import pytest
+from scene_texts import journal_friction
 
 import graphplan
 from graphplan.analysis import analyse
@@ -24,8 +25,7 @@ from graphplan.starters import starter
 FIXTURES = Path(__file__).parent.parent / "fixtures"
 DRIVER = "I(1,2)"
 # The crank-rocker starter's pairs with friction circles, as a course project gives them.
-FRICTION = "".join(f'\n[[friction]]\njoint = "{joint}"\nf = 0.1\nradius = {radius}\n'
-                   for joint, radius in (("O", 0.02), ("A", 0.015), ("B", 0.015), ("C", 0.02)))
+FRICTION = journal_friction({"O": 0.02, "A": 0.015, "B": 0.015, "C": 0.02})
 
 
 @cache

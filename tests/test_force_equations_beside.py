@@ -11,6 +11,7 @@ import dataclasses
 import functools
 
 import pytest
+from scene_texts import journal_friction
 from test_sheets import overlap
 
 import graphplan
@@ -23,8 +24,7 @@ from graphplan.scene import loads
 from graphplan.starters import starter
 
 # The crank-rocker the starter writes, its four journals with friction (as the fresh-user friction scenes give them).
-FRICTION = "".join(f'\n[[friction]]\njoint = "{joint}"\nf = 0.1\nradius = {radius}\n'
-                   for joint, radius in (("O", 0.02), ("A", 0.015), ("B", 0.012), ("C", 0.02)))
+FRICTION = journal_friction({"O": 0.02, "A": 0.015, "B": 0.012, "C": 0.02})
 CRANK_ROCKER_WITH_FRICTION = "crank-rocker with friction"
 # Where the fixtures' force sheets have parts that the room left on a sheet holds only with their equations beside.
 SAVING = [("engine_slider_crank", "A3"), ("quick_return_slotted_lever", "A3"), ("quick_return_slotted_lever", "A2")]

@@ -16,6 +16,7 @@ import math
 import re
 
 import pytest
+from scene_texts import journal_friction
 
 from graphplan.analysis import analyse
 from graphplan.render import drawings
@@ -25,24 +26,7 @@ from graphplan.scene import loads as scene_of_text
 from graphplan.starters import starter
 
 # A crank-rocker (`graphplan new crank-rocker`) with friction in its four journals.
-CRANK_ROCKER_WITH_FRICTION = starter("crank-rocker") + """
-[[friction]]
-joint = "O"
-f = 0.1
-radius = 0.02
-[[friction]]
-joint = "A"
-f = 0.1
-radius = 0.015
-[[friction]]
-joint = "B"
-f = 0.1
-radius = 0.015
-[[friction]]
-joint = "C"
-f = 0.1
-radius = 0.02
-"""
+CRANK_ROCKER_WITH_FRICTION = starter("crank-rocker") + journal_friction({"O": 0.02, "A": 0.015, "B": 0.015, "C": 0.02})
 # The scene's drafting precision (mm): two perpendiculars whose feet are closer are one on the drawing.
 PRECISION_MM = 0.5
 
