@@ -640,3 +640,16 @@ def test_every_drawing_the_scene_s_scales_make_too_big_is_named_in_one_error_who
 def test_a_sign_is_never_left_alone_at_the_end_of_a_line():
     """Found by hypothesis: '+ Am00·h0 = 0' is a hair wider than 60 mm, and was broken after its '+'."""
     assert fitted("ΣMp: + A0·h0 + Am00·h0 = 0", 60.0, CAPTION) == ["ΣMp: + A0·h0", "+ Am00·h0 = 0"]
+
+
+def test_a_factored_term_is_broken_inside_its_brackets_only_where_it_fits_no_line_alone():
+    equation = "ΣMp: G3·h1 + Fu3·h2 − (Mu3′ − Mf23′ + Mf43′)·h3 + G4·h5 = 0"
+    whole = text_width("− (Mu3′ − Mf23′ + Mf43′)·h3", CAPTION)
+    # Room for the bracket and more on a line, not for the whole equation: it goes to a line of its own whole.
+    for width in (whole + 1.0, 1.4 * whole, text_width(equation, CAPTION) - 10.0):
+        pieces = fitted(equation, width, CAPTION)
+        assert " ".join(pieces) == equation and all(piece.count("(") == piece.count(")") for piece in pieces), pieces
+    # Narrower than the bracket alone, it is broken inside, between its names, never after a sign.
+    narrow = fitted(equation, whole - 5.0, CAPTION)
+    assert " ".join(narrow) == equation and not any(piece.endswith(("+", "−")) for piece in narrow), narrow
+    assert any(piece.count("(") != piece.count(")") for piece in narrow), narrow

@@ -2,9 +2,9 @@
 
 First after a comma, semicolon or colon (not one that ends a name of a word or
 two, which would end a line on it), before the sign of a term, before a
-bracket; a piece still too wide is then broken between words, into pieces
-as even as can be, never inside ``name = value unit`` nor after the sign
-of a term.  Widths are the generous estimate of
+bracket, none of them inside brackets; a piece still too wide is then broken
+between words, into pieces as even as can be, never inside
+``name = value unit`` nor after the sign of a term.  Widths are the generous estimate of
 :func:`~graphplan.render.primitives.text_width`.
 """
 
@@ -37,10 +37,18 @@ def fitted(line: str, width: float, size: float, weight: str = "normal") -> list
     def span(text: str) -> float:
         return text_width(text, size, weight)
 
-    phrase_cuts = [cut for cut in PHRASE_BREAK.finditer(line) if not NAME_BEFORE.search(line, 0, cut.start())]
+    phrase_cuts = [cut for cut in PHRASE_BREAK.finditer(line)
+                   if not NAME_BEFORE.search(line, 0, cut.start()) and not _in_brackets(line, cut.start())]
     pieces = _broken(line, phrase_cuts, width, span)
     return [word_piece for piece in pieces
             for word_piece in (_evened(piece, WORD_BREAK, width, span) if span(piece) > width else [piece])]
+
+
+def _in_brackets(line: str, at: int) -> bool:
+    """Whether ``at`` stands inside brackets in ``line``: a break there (``− (Mu3″`` ending a line of ΣMp, its
+    ``− Mf23″ + Mf43″)·h4`` on the next) parts a factored term, which a reader takes in as one."""
+    before = line[:at]
+    return before.count("(") + before.count("（") > before.count(")") + before.count("）")
 
 
 def _evened(line: str, breaks: re.Pattern[str], width: float, span: Callable[[str], float]) -> list[str]:
