@@ -11,11 +11,13 @@ as distinct perpendiculars, numbered h1, h2, … without a gap.
 
 from __future__ import annotations
 
+import collections
 import functools
 import math
 import re
 
 import pytest
+from lever_equation import unfactored
 from scene_texts import journal_friction
 
 from graphplan.analysis import analyse
@@ -57,7 +59,7 @@ def _feet(sheet) -> dict[str, complex]:
 
 def _equation(drawing) -> list[tuple[str, str]]:
     (line,) = [line for line in drawing.caption if line.startswith("ΣMp:")]
-    return re.findall(r"([^\s+−]+)·(h\w+)", line)
+    return re.findall(r"([^\s+−]+)·(h\w+)", unfactored(line))
 
 
 def _arm_lengths(drawing, terms: list[tuple[str, str]]) -> dict[str, float]:
@@ -121,6 +123,21 @@ def test_the_friction_lever_shares_arms_at_position_5():
     terms = _equation(drawing)
     assert len({arm for _, arm in terms}) < len(terms)
     assert sum(arm == "hb" for _, arm in terms) > 1
+
+
+@pytest.mark.parametrize("number", [5, 11])
+def test_a_shared_arm_is_taken_out_of_brackets_once_each_load_keeping_its_moment_s_sign(number):
+    """ΣMp writes the loads on one perpendicular as one term, (A − B)·h: each arm once, hb once for the loads and
+    once for the unknown Fb; multiplied out, every load's sign is its moment's about the pole."""
+    _, sheet, drawing = lever_drawing(number)
+    (line,) = [line for line in drawing.caption if line.startswith("ΣMp:")]
+    written = collections.Counter(re.findall(r"·(h\w+)", line))
+    assert all(count == 1 for arm, count in written.items() if arm != "hb") and written["hb"] <= 2, line
+    assert "(" in line  # the journals' friction couples share their links' inertia couples' lines
+    moments = {term.name: term.moment for term in sheet.lever.terms}
+    for sign, name in re.findall(r"([+−]) ([^\s+−]+)·h\w+", unfactored(line.replace("ΣMp: ", "ΣMp: + "))):
+        if name != "Fb":
+            assert (sign == "−") == (moments[name] < 0), (name, line)
 
 
 @pytest.mark.parametrize("number", [5, 11])

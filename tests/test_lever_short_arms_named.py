@@ -17,6 +17,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from lever_equation import unfactored
 from sheet_texts import box, texts
 
 import graphplan
@@ -69,7 +70,7 @@ def arms_mm(analysis, number_: int, caption: list[str], locale: str) -> dict[str
     joined = " ".join(caption)
     drawn_at = number(re.search(r"μV = ([\d.,]+)", joined).group(1), locale)
     equation = re.search(r"ΣMp:(.*?)= 0(?![\d.,])", joined).group(1)
-    named = {name: arm for name, arm in re.findall(r"([^\s−+]+)·(h\d+)\b", equation)}
+    named = {name: arm for name, arm in re.findall(r"([^\s−+]+)·(h\d+)\b", unfactored(equation))}
     arms = {}
     for term in lever.terms:
         if term.name not in named:

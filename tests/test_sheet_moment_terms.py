@@ -9,6 +9,7 @@ sheet writes, name by name, against the force records.
 import re
 
 import pytest
+from lever_equation import unfactored
 from scene_texts import piston_compressor
 
 import graphplan
@@ -48,7 +49,7 @@ def _drawings(analysis, position):
 
 def _written(line, head, unknown=True):
     """The names an equation ``head: unknown ± A·h1 ± M(B) ± C = 0, …`` writes (beside its unknown)."""
-    body = line[len(head):].split(" = 0")[0]
+    body = unfactored(line[len(head):].split(" = 0")[0])
     terms = [term for term in re.split(r"\s*[+−]\s*", body.strip()) if term][1 if unknown else 0:]
     return [re.sub(r"^M\((.*)\)$", r"\1", term.split("·")[0]) for term in terms]
 

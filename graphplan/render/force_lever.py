@@ -235,7 +235,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
     arm_layers: list[Layer] = []
     arm_anchors: list[Anchor] = []
     arm_lengths: dict[str, float] = {}  # on the drawing, mm
-    parts: list[str] = []
+    by_arm: dict[str, list[tuple[str, str]]] = {}  # each arm's loads in ΣMp, as (sign, name), in the order drawn
     moments = {term.name: term.moment for term in lever.terms}
     # Beside the loads' powers at the plan's fastest point, a term's is rounding where its point stands still or moves
     # square to it: at a Scotch yoke's dead centre every one is, and the lever wrote h1 = 0.000000000000006661 mm
@@ -290,7 +290,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
             continue
         arm = arm_of[name]
         if name != "Fb":
-            parts.append(f"{sign_mark(moments[name])} {name}·{arm}")
+            by_arm.setdefault(arm, []).append((sign_mark(moments[name]), name))
         if arm in arm_lengths:
             # Its arm is drawn and named with the first load on its line: only the line is run on to its foot.
             if run_on := arm_with_run_on(0j, start, end, unit)[1:]:
@@ -306,6 +306,7 @@ def _lever(sheet: ForceSheet, lever: Lever) -> Drawing:
         arm_anchors.append(Anchor(_xy(0.8 * foot), arm, NAME_SIZE - 0.4, direction_rad(1j * foot), ARM.colour,
                                   along=((0.0, 0.0), _xy(foot)), keep_off=((0.0, 0.0), POLE_CLEAR_MM)))
     # M·ω is a power (W); the lever's terms F·h are N·mm at μV: a block's moment enters as M·ω/μV.
+    parts = [_factored(terms, arm) for arm, terms in by_arm.items()]
     parts += [f"{sign_mark(term.moment)} {term.name}·ω{term.link}/μV" for term in lever.terms
               if not term.image and stands(term)]
     arrows += leaders
@@ -430,6 +431,16 @@ def _percent(value: float) -> str:
     """A percentage to two decimals, a true minus sign, no minus on a nought."""
     text = f"{value:.2f}"
     return "0.00" if text in ("-0.00", "0.00") else text.replace("-", "−")
+
+
+def _factored(terms: Sequence[tuple[str, str]], arm: str) -> str:
+    """The ``(sign, name)`` loads whose forces share ``arm`` as one term of ΣMp, the arm taken out of brackets as a
+    hand calculation does: ``+ (Mu4′ − M4′ − Mf34′)·h7``, not three terms each times h7."""
+    (sign, name), *others = terms
+    if not others:
+        return f"{sign} {name}·{arm}"
+    inside = " ".join(f"{'+' if other_sign == sign else '−'} {other}" for other_sign, other in others)
+    return f"{sign} ({name} {inside})·{arm}"
 
 
 def _leading(terms: str) -> str:
