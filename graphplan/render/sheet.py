@@ -108,6 +108,9 @@ CENTRING_REACH_MM = 5.0
 # The kinematic diagrams are shortened for a small sheet in at most this many rounds, to no less of a field.
 _SHORTENING_ROUNDS = 8
 _LEAST_FIELD_MM = 10
+# Where the kinematic diagrams stand apart, their fields are lowered to this share of their height at most to put
+# them on fewer sheets: a fifth lower still reads as the same diagram, a sheet less is a sheet less to draw.
+_FIELD_GIVEN_FOR_A_SHEET = 0.8
 # A force sheet's drawing is drawn at most this many standard scales smaller to fit a small sheet.
 _LARGER_SCALES_TRIED = 12
 # A "none" page has this margin round its drawing, as the drawings before sheets had.
@@ -781,8 +784,15 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
             title, drawn = longer
     # The size chosen lettered: its parts stand apart where no sheet holds a larger way.
     title, drawn = diagram_parts(analysis, axis, field)
+    stacked = diagrams_layout.stacked(drawn)
+    if sheet != "none" and not holds(sheet, form, *_size(stacked)):
+        lower = _field_saving_a_sheet(drawn_at, sheet, form, axis, field)
+        if lower != field:
+            field = lower
+            title, drawn = diagram_parts(analysis, axis, field)
+            stacked = diagrams_layout.stacked(drawn)
     parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
-    usual = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+    usual = Panel("diagrams", tuple(stacked), parts, title, to_scale=False)
     if sheet == "none" or (axis, field) != (AXIS_MM, FIELD_MM) or not holds(sheet, form, *_size(usual.layers)):
         return usual
     # A sheet that holds them with room to spare has them drawn larger, as a course project fills its sheet: each
@@ -800,6 +810,31 @@ def _diagrams_panel(analysis: Analysis, sheet: str) -> Panel:
     # The parts are the usual diagrams': where no sheet holds a way whole, they stand apart at the usual size.
     first, *others = sorted(larger, key=lambda way: -width(way) * height(way))
     return replace(first, alternatives=(*others, usual))
+
+
+def _field_saving_a_sheet(drawn_at: Callable[[float, float], tuple[str, list[list[Layer]]]], sheet: str, form: str,
+                         axis: float, field: float) -> float:
+    """``field`` (mm), or the largest field down to :data:`_FIELD_GIVEN_FOR_A_SHEET` of it at which the kinematic
+    diagrams stand on fewer sheets of their own: on A3 the three stood one to a sheet, each a third full, where
+    fields 4 mm lower put two on one sheet.  ``drawn_at(axis, field)`` draws them unlettered."""
+    from . import diagrams as diagrams_layout
+
+    def sheets_taken(at: float) -> float:
+        title, drawn = drawn_at(axis, at)
+        # A lower field draws the chords' pole farther left (the pole distance follows the field): a part may
+        # come out wider than the sheet.
+        if not all(holds(sheet, form, *_size(part)) for part in drawn):
+            return math.inf
+        parts = tuple(Panel(f"diagrams-{k + 1}", tuple(part), to_scale=False) for k, part in enumerate(drawn))
+        stacked = Panel("diagrams", tuple(diagrams_layout.stacked(drawn)), parts, title, to_scale=False)
+        return len(pack([stacked], sheet, form))
+
+    taken = sheets_taken(field)
+    if taken == 1:
+        return field
+    lowest = max(_LEAST_FIELD_MM, math.ceil(_FIELD_GIVEN_FOR_A_SHEET * field))
+    return next((float(lower) for lower in range(math.ceil(field) - 1, lowest - 1, -1) if sheets_taken(lower) < taken),
+                field)
 
 
 def _lettered_diagrams(analysis: Analysis, axis: float, field: float) -> Callable[[], tuple[Layer, ...]]:
