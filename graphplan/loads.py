@@ -500,7 +500,8 @@ def along_moving_points(mechanism: Mechanism) -> tuple[PositionWarning, ...]:
                 f"between two points of one link pushes it on itself and moves nothing; the force is taken as one "
                 f"from outside along {load.along}→{load.point}, turning with link {load.link}")))
             continue
-        if not carriers or any(other.kind == "force" and other.point == load.along and other.along == load.point
+        # The load at the cylinder's other end, on the link that carries the point this one is along.
+        if not carriers or any(other.kind == "force" and other.ends == load.ends and other.point == load.along
                                and other.link in carriers for other in scene.loads):
             continue
         given = "stiffness and free_length" if load.spring else "value"

@@ -130,6 +130,15 @@ class LoadSpec:
         """Whether the load is a spring, whose force k·(L − L0) its length sets, not a value."""
         return self.stiffness is not None
 
+    @property
+    def ends(self) -> frozenset[str] | None:
+        """The two points of the spring or cylinder of a force ``along`` a line, None for another load.
+
+        A cylinder between two moving links is two loads, one at each end along the other's point: the two have
+        the same ends, and are one cylinder to draw.
+        """
+        return frozenset((self.along, self.point)) if self.along is not None and self.point is not None else None
+
 
 @dataclass(frozen=True)
 class FrictionSpec:

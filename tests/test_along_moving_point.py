@@ -15,6 +15,7 @@ from test_force_along_a_turning_line import CRANK_ROCKER
 
 from graphplan.analysis import SCENE_WIDE_WARNINGS, analyse
 from graphplan.locale import strings
+from graphplan.render import linkage as linkage_drawing
 from graphplan.report.note import note_markdown
 from graphplan.scene import loads as scene_of_text
 
@@ -47,6 +48,16 @@ def test_a_spring_asks_for_its_stiffness_at_the_other_end():
 
 def test_a_cylinder_given_at_both_ends_is_not_told():
     assert _warnings(_force(4, "S4", "E"), _force(3, "E", "S4")) == []
+
+
+def test_a_cylinder_given_at_both_ends_is_drawn_once_and_a_spring_beside_it_too():
+    at = CRANK_ROCKER.index("\n[positions]")
+    both = _force(4, "S4", "E") + _force(3, "E", "S4") + _force(4, "B", "D", "stiffness = 2000.0\nfree_length = 0.2")
+    mechanism = analyse(scene_of_text(CRANK_ROCKER[:at] + both + CRANK_ROCKER[at:])).mechanism
+    drawn = linkage_drawing._along(mechanism)
+    assert len(drawn) == 2
+    assert {(frozenset((along, point)), spring) for along, point, spring in drawn} == {
+        (frozenset(("S4", "E")), False), (frozenset(("B", "D")), True)}
 
 
 @pytest.mark.parametrize("along", ["C", "S4"])

@@ -267,9 +267,9 @@ def _along_lines(sheet: ForceSheet, group: GroupForces, paper: Callable[[complex
         spec = specs.get(load.name)
         if spec is None or spec.along is None or load.point is None or not load.is_force or load.force == 0:
             continue
-        if frozenset((spec.along, load.point)) in done:
+        if spec.ends in done:
             continue
-        done.add(frozenset((spec.along, load.point)))
+        done.add(spec.ends)
         near = _c(paper(_load_point(sheet, load.point)))
         far = _c(paper(_position(sheet, spec.along)))
         if abs(far - near) == 0.0:

@@ -247,8 +247,8 @@ def _along(mechanism: Mechanism) -> list[tuple[str, str, bool]]:
     each end along the other's point, and is drawn once."""
     found: dict[tuple[frozenset[str], bool], tuple[str, str, bool]] = {}
     for load in mechanism.scene.loads:
-        if load.kind == "force" and load.along is not None and load.point is not None:
-            found.setdefault((frozenset((load.along, load.point)), load.spring), (load.along, load.point, load.spring))
+        if load.kind == "force" and load.ends is not None:
+            found.setdefault((load.ends, load.spring), (load.along, load.point, load.spring))
     return list(found.values())
 
 
