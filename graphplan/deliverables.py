@@ -297,7 +297,8 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         tell("drawing the dynamics")
         dynamics = _dynamics_of(analysis.scene, analysis, dynamics)
         machine, larger = _machine_layouts(dynamics, _dynamics_words(analysis.scene, analysis, dynamics))
-    # The sheets hold the drawings that are also written on their own: each is laid out once.
+    # The sheets hold the drawings that are also written on their own: each is laid out once, where the sheets hold
+    # it as it is on its own (:func:`_drawn_alone`).
     if "sheets" in pieces:
         tell("laying out the sheets")
     panels = _course_panels(analysis, machine, larger) if "sheets" in pieces else None
@@ -317,7 +318,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
         found.append(Drawing("diagrams", diagrams_layout.stacked(diagram_parts(analysis, AXIS_MM, FIELD_MM)[1])))
     if "load_diagrams" in pieces:
         tell("drawing the load diagrams")
-        laid_out = panels.named("load-diagrams") if panels else None
+        laid_out = _drawn_alone(panels, "load-diagrams")
         layers = list(laid_out.layers) if laid_out else _load_diagram_layers(analysis)
         found.append(Drawing("load_diagrams", layers))
     if panels is not None:
@@ -350,7 +351,7 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             found.append(Drawing(f"plan_{plan.number}", layers))
             found += _plan_note_parts(plan, shown, pieces, layers)
         if plan.forces is not None and ("forces" in pieces or "lever" in pieces):
-            laid_out = panels.named(f"forces-{plan.number}") if panels and "lever" in pieces else None
+            laid_out = _drawn_alone(panels, f"forces-{plan.number}") if "lever" in pieces else None
             layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                 else _force_sheet_layers(analysis, plan, pieces)
             found.append(Drawing(f"forces_{plan.number}", layers,
@@ -360,13 +361,21 @@ def _linkage_drawings(analysis: Analysis, pieces: tuple[str, ...], dynamics: Mac
             rubbing = plan.with_friction
             # The sheet with friction comes with the sheet it repeats: with `lever` its lever with friction on it.
             if rubbing is not None and not rubbing.locked:
-                laid_out = panels.named(f"forces-friction-{plan.number}") if panels and "lever" in pieces else None
+                laid_out = _drawn_alone(panels, f"forces-friction-{plan.number}") if "lever" in pieces else None
                 layers, scales = (list(laid_out.layers), _scales_of(laid_out)) if laid_out \
                     else _force_sheet_layers(analysis, plan, pieces, True)
                 found.append(Drawing(f"forces_friction_{plan.number}", layers,
                                      larger_polygons=_record_drawings(analysis, plan, True)))
                 found += _note_parts(f"forces_friction_{plan.number}", layers, pieces, scales)
     return found
+
+
+def _drawn_alone(panels, name: str):
+    """The sheets' drawing ``name`` where it is the drawing as written in its own file, else None: the sheets may
+    alter a force sheet or the load diagrams to fit their format (a lever a step smaller, smaller lettering, smaller
+    fields), and the file on its own is the same whatever the sheets' format, or without them."""
+    laid_out = panels.named(name) if panels is not None else None
+    return laid_out if laid_out is not None and laid_out.drawn_alone else None
 
 
 def _load_diagram_layers(analysis: Analysis) -> list[Layer]:

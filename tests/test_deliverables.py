@@ -642,6 +642,44 @@ def test_the_drawings_on_their_own_are_the_same_with_or_without_the_sheets(tmp_p
     assert all((together / name).read_bytes() == (alone / name).read_bytes() for name in drawn)
 
 
+def test_a_drawing_the_sheets_alter_to_fit_is_written_on_its_own_as_without_the_sheets(tmp_path):
+    """On A3 the crank-rocker's sheets draw its lever a standard step smaller than the velocity plan and its load
+    diagrams at smaller fields: forces_2.svg and load_diagrams.svg, and the note that works the lever at the μV
+    forces_2.svg draws it at, stay as a run without the sheets writes them."""
+    document = tomllib.loads(starter("crank-rocker"))
+    document["positions"]["plans"] = [2]  # one force sheet is enough, and keeps the runs to a few seconds
+    scene = tmp_path / "crank_rocker.toml"
+    scene.write_text(to_toml(document), encoding="utf-8")
+    status, sheets = run(tmp_path / "sheets", "--only", "forces,lever,load_diagrams,note,sheets", "--sheet", "A3",
+                         scene=scene)
+    assert status == 0
+    status, alone = run(tmp_path / "alone", "--only", "forces,lever,load_diagrams,note", scene=scene)
+    assert status == 0
+    own = sorted(name for name in names(alone) if name.endswith(".svg"))
+    assert "forces_2.svg" in own and "load_diagrams.svg" in own
+    assert sorted(name for name in names(sheets) if name.endswith(".svg") and not name.startswith("sheet_")) == own
+    assert [name for name in own if (sheets / name).read_bytes() != (alone / name).read_bytes()] == []
+
+    def texts(path: Path, pattern: str) -> set[str]:
+        return set(re.findall(pattern, path.read_text(encoding="utf-8")))
+
+    # The lever on its own at the velocity plan's μV, |ω|·lOA over the pole's 150 mm; the sheets' a step coarser.
+    driver = document["driver"]
+    plan_scale = abs(driver["omega"]) * driver["length"] / document["drawing"]["velocity_pole"]
+    lever = r"μV = ([0-9.]+) \(m/s\)/mm"
+    assert [float(value) for value in texts(alone / "forces_2.svg", lever)] == [pytest.approx(plan_scale, rel=1e-3)]
+    drawn = set().union(*(texts(sheet, lever) for sheet in sheets.glob("sheet_*.svg")))
+    assert any(float(value) > 1.1 * plan_scale for value in drawn)
+    # The note says the lever is drawn at another μV than the plan's only where forces_2.svg draws it so.
+    assert "The lever is drawn larger" not in (alone / "note.md").read_text(encoding="utf-8")
+    assert (sheets / "note.md").read_bytes() == (alone / "note.md").read_bytes()
+    # The load diagrams' scales on the sheets are not those of load_diagrams.svg: their fields were made smaller.
+    moments = r"μM = [0-9.]+ N·m/mm"
+    assert texts(alone / "load_diagrams.svg", moments)
+    assert not texts(alone / "load_diagrams.svg", moments) & set().union(
+        *(texts(sheet, moments) for sheet in sheets.glob("sheet_*.svg")))
+
+
 def test_a_scene_whose_plan_of_positions_fits_no_named_sheet_is_refused_with_the_scale_that_fits(tmp_path, capsys):
     document = tomllib.loads(RATCHET.read_text(encoding="utf-8"))
     document["drawing"].update(sheet="A4", length_scale=0.001)

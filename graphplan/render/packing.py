@@ -108,6 +108,11 @@ class Panel:
     # with the reactions drawn whole at their length (:func:`force_bodies.free_body_arrows`): readings measured on
     # them too.
     body_arrows: tuple[tuple[str, float, tuple[str, ...]], ...] = ()
+    # True where ``layers`` are the drawing as the run writes it in a file of its own (a force sheet at its own
+    # scales and lettering, the load diagrams at their usual fields), which the run then takes from here instead of
+    # laying it out twice; a drawing the sheets altered to fit (a lever stepped back, smaller lettering, a larger
+    # scale) is laid out again for its file, which no sheet format may change.
+    drawn_alone: bool = False
     # The drawing as it goes on the sheet, where ``layers`` leaves out labels that only room was kept for: the
     # same extent, its labels placed only for the way the packing takes (each larger size of the kinematic
     # diagrams, measured by its unlettered layers).  None: ``layers`` as they are.

@@ -513,7 +513,7 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                           words[label].format(number=position.number), _group_of_field) for count in (1, 2))
         heading = rows.heading
         if sheet == "none":
-            return one, [[one]], lambda steps: None
+            return replace(one, drawn_alone=True), [[one]], lambda steps: None
         # Its rows in two columns where a sheet is too low for them in one.
         cuts = [[replace(one, alternatives=(two,) if two.extent != one.extent else ())]]
         if any(fits(width(way), height(way)) for way in cuts[0][0].ways):
@@ -592,7 +592,9 @@ def _force_panels(analysis: Analysis, position: PlanPosition, sheet: str,
                        body_arrows=tuple((label, scale, whole) for label, (scale, whole)
                                          in force_bodies.free_body_arrows(bigger).items() if whole))
 
-    return whole, ways, larger
+    # The whole as the run writes it on its own only where nothing was changed to fit the sheet: its parts stand as
+    # cut, but a lever stepped back, smaller lettering or a group at a larger μl would change the file with the format.
+    return replace(whole, drawn_alone=drawn == first), ways, larger
 
 
 def _finished(analysis: Analysis, drawn: force_layout.ForceSheet, one: Panel, cuts: list[list[Panel]],
@@ -1118,6 +1120,7 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
 
     text = strings(locale)
     form = form_of(locale)
+    usual = field is None
     if field is not None:
         drawn = load_layout.parts(diagrams, text, field)
     else:
@@ -1125,10 +1128,12 @@ def load_diagrams_panel(diagrams: Sequence[LoadDiagram], locale: str, sheet: str
         for smaller in load_layout.SMALLER_FIELDS:
             if sheet is None or sheet == "none" or all(holds(sheet, form, *_size(part)) for part in drawn):
                 break
-            drawn = load_layout.parts(diagrams, text, smaller)
+            drawn, usual = load_layout.parts(diagrams, text, smaller), False
     parts = tuple(Panel(f"load-diagrams-{k + 1}", tuple(part), to_scale=False)
                   for k, part in enumerate(drawn)) if len(drawn) > 1 else ()
-    return Panel("load-diagrams", tuple(stacked(drawn)), parts, label=text["ld_title"], to_scale=False)
+    # At the usual fields, the drawing load_diagrams.svg is (:func:`graphplan.render.load_diagrams.layout`).
+    return Panel("load-diagrams", tuple(stacked(drawn)), parts, label=text["ld_title"], to_scale=False,
+                 drawn_alone=usual)
 
 
 # The linkage's panels laid out for an analysis, by all they depend on: a μl choice lays out the sheets at a
