@@ -194,7 +194,9 @@ def note_heading_faults(folder: Path) -> list[str]:
 def test_the_heading_over_the_first_part_the_note_shows_a_force_sheet_in_names_its_drawings_scales(tmp_path, only):
     """The note shows a force sheet too tall for its page in parts, the heading over the first: that heading named
     every scale of the whole sheet, the lever's μV over the triad's groups, its lever in the next part.  Written
-    with the sheets, the note's force sheet is the sheets' own (laid out for them); without, drawn for itself."""
+    with the sheets, the note's force sheet is the sheets' own (laid out for them) where they draw it as it is
+    alone (the triad's A1 draws its lever a step smaller, and the note's is drawn for itself); without, drawn for
+    itself."""
     out = tmp_path / "out"
     assert main(["run", "fixtures/triad_class_iii.toml", *only, "--out", str(out)]) == 0
     assert list(out.glob("forces_*-1.svg")), "the case: the note shows the force sheets in parts"
